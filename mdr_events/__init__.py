@@ -1,0 +1,45 @@
+"""mdr_events: adhesive indentation and detachment at an angle with the MDR.
+
+Reproduces and extends section 4 of Lyashenko, Popov & Borysiuk,
+Biomimetics 2023, 8(6), 477 (doi:10.3390/biomimetics8060477): a rigid
+paraboloid pressed into and pulled off an elastomer along a straight path at
+an angle, with Heß's adhesion rule (two works of adhesion) and a
+spring-slip criterion.
+
+Layers (data flows one way):
+``parameters`` → ``symbolic`` (SymPy derivations) → ``analytic``
+(closed forms, phase diagrams) → ``datasets`` (xarray, netCDF) → ``plotting``
+and ``cli``.
+"""
+
+from ._version import __version__
+from .analytic import (
+    critical_angle,
+    critical_shift,
+    d_crit,
+    jkr_contact_radius,
+    jkr_depth,
+    jkr_normal_force,
+    jump_off,
+    pull_off_force,
+)
+from .datasets import DOI, open_result, write_netcdf
+from .parameters import Parameters
+from .phase import phase_diagram
+
+__all__ = [
+    "__version__",
+    "DOI",
+    "Parameters",
+    "critical_angle",
+    "critical_shift",
+    "d_crit",
+    "jkr_contact_radius",
+    "jkr_depth",
+    "jkr_normal_force",
+    "jump_off",
+    "open_result",
+    "phase_diagram",
+    "pull_off_force",
+    "write_netcdf",
+]

@@ -1,0 +1,400 @@
+"""Closed-form layer: JKR contact, slip-onset depths ``d_crit(α)``, critical angles.
+
+Every formula is evaluated through the SymPy-derived relations of
+:mod:`mdr_events.symbolic` (lambdified once). Where a relation is a
+polynomial (the cubic of (18), the quartics of (9) and (21)), its unique
+physical root is found by :func:`positive_polynomial_root`, a vectorised
+safeguarded Newton iteration: no Python loop over angles.
+
+Angles are in degrees, lengths in metres, forces in newtons.
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+import numpy as np
+
+from . import symbolic
+from .parameters import Parameters
+
+__all__ = [
+    "d_crit",
+    "critical_angle",
+    "critical_shift",
+    "jkr_depth",
+    "jkr_contact_radius",
+    "jkr_normal_force",
+    "normal_force",
+    "hertz_contact_radius",
+    "pull_off_force",
+    "jump_off",
+    "jump_in_radius",
+    "positive_polynomial_root",
+    "SCENARIOS",
+    "BRANCHES",
+]
+
+SCENARIOS = ("A", "B")
+BRANCHES = ("pull-off", "indentation")
+
+_EPS = np.finfo(float).eps
+
+
+def _rel(key: str):
+    return symbolic.relation(key)
+
+
+def _validate_alpha(alpha) -> np.ndarray:
+    """Angles in degrees as a float array; every entry finite and in [0, 90]."""
+    try:
+        values = np.asarray(alpha, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"alpha={alpha!r} must be a number or an array of numbers in degrees") from None
+    bad = ~np.isfinite(values) | (values < 0.0) | (values > 90.0)
+    if np.any(bad):
+        first = float(values[bad].flat[0])
+        raise ValueError(f"alpha={first!r} (degrees) is not allowed; allowed: finite angles in [0, 90]")
+    return values
+
+
+def _tan_degrees(alpha_deg: np.ndarray) -> np.ndarray:
+    """tan α with α = 90° exactly mapped to +inf (no tangential motion)."""
+    with np.errstate(divide="ignore"):
+        return np.where(alpha_deg == 90.0, np.inf, np.tan(np.deg2rad(alpha_deg)))
+
+
+def _check_choice(name: str, value, allowed) -> None:
+    if value not in allowed:
+        raise ValueError(f"{name}={value!r} is not allowed; allowed: {', '.join(map(repr, allowed))}")
+
+
+def _as_output(values: np.ndarray, like: np.ndarray):
+    return float(values) if np.ndim(like) == 0 else values
+
+
+# ----------------------------------------------------------------------------
+# polynomial roots
+def _horner(coefficients, x):
+    """Value and derivative of the polynomial at ``x`` (Horner's scheme)."""
+    value = coefficients[0] * x + coefficients[1]
+    slope = coefficients[0]
+    for coefficient in coefficients[2:]:
+        slope = slope * x + value
+        value = value * x + coefficient
+    return value, slope
+
+
+_ROOTS = {1: lambda v: v, 2: np.sqrt, 3: np.cbrt}
+
+
+def _upper_root_bound(coeffs: list) -> np.ndarray:
+    """An upper bound of the positive roots of a monic polynomial, elementwise.
+
+    For every positive term ``c_j s^j`` above which no coefficient is
+    negative, ``p(s) > 0`` as soon as ``c_j s^j`` beats each of the ``m``
+    lower terms ``m |c_i| s^i``, i.e. for
+    ``s >= max_i (m |c_i| / c_j)^(1/(j-i))``; the smallest such bound is used.
+    It is tight where one positive term dominates, e.g. ``P s²`` of (21) near
+    α = 90°, where a bound on all root moduli (Fujiwara) would be orders of
+    magnitude too large. Coefficients that are the scalar 0 are skipped.
+    """
+    present = [i for i, cf in enumerate(coeffs) if not (np.ndim(cf) == 0 and cf == 0)]
+    bound = np.inf
+    nothing_negative_above = True
+    for j in present[:-1]:
+        cj = coeffs[j]
+        lower = [i for i in present if i > j]
+        m = float(len(lower))
+        candidate = 0.0
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for i in lower:
+                ratio = m * np.abs(coeffs[i]) / cj
+                root = _ROOTS.get(i - j, lambda v, e=1.0 / (i - j): v**e)
+                candidate = np.maximum(candidate, root(ratio))
+        if j == 0:
+            bound = candidate
+        else:
+            usable = nothing_negative_above & (cj > 0.0)
+            bound = np.where(usable, np.minimum(bound, candidate), bound)
+        nothing_negative_above = nothing_negative_above & (cj >= 0.0)
+    return bound
+
+
+def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100) -> np.ndarray:
+    """Largest positive root of monic polynomials, vectorised over their coefficients.
+
+    Parameters
+    ----------
+    coefficients : sequence of array_like
+        ``[1, c_{n-1}, ..., c_0]`` (highest power first), each broadcastable
+        to the common shape of the problem.
+    lower : array_like
+        A point with ``p(lower) <= 0``: the root sought is the largest root,
+        which lies above it (0 where ``c_0 <= 0``; the minimum of ``p`` for a
+        polynomial with two positive roots).
+    max_iterations : int
+        Safety bound; convergence takes 4–8 iterations in practice.
+
+    Returns
+    -------
+    numpy.ndarray
+        The root, converged to a few ulps.
+
+    Notes
+    -----
+    Newton's method starts from an upper bound of the roots
+    (:func:`_upper_root_bound`). Where ``p`` is convex between the root and
+    the start (true for every polynomial of this model), the iterates descend
+    monotonically onto the largest root. An element whose iterate ever falls
+    where ``p < 0`` (an overshoot, so not convex there) is solved again with
+    a bracketed Newton–bisection iteration on ``[lower, bound]``.
+    """
+    coeffs = [np.asarray(cf, dtype=float) for cf in coefficients]
+    if len(coeffs) < 2:
+        raise ValueError("positive_polynomial_root needs a polynomial of degree >= 1")
+    shape = np.broadcast_shapes(*[cf.shape for cf in coeffs], np.shape(lower))
+    lower = np.broadcast_to(np.asarray(lower, dtype=float), shape)
+    start = np.maximum(_upper_root_bound(coeffs), lower) * (1.0 + 8 * _EPS)
+    x = np.broadcast_to(start, shape).copy()
+    # in-place buffers: for large arrays allocation, not arithmetic, is the cost
+    value, slope, step, tolerance = (np.empty(shape) for _ in range(4))
+    overshoot = np.zeros(shape, dtype=bool)
+    for _ in range(max_iterations):
+        np.multiply(x, coeffs[0], out=value)
+        value += coeffs[1]
+        slope[...] = coeffs[0]
+        for coefficient in coeffs[2:]:
+            slope *= x
+            slope += value
+            value *= x
+            value += coefficient
+        np.divide(value, slope, out=step)
+        x -= step
+        np.abs(x, out=tolerance)
+        tolerance *= 4 * _EPS
+        overshoot |= step < -tolerance  # an upward step: p < 0 beyond rounding
+        np.abs(step, out=step)
+        if np.all(step <= tolerance):
+            break
+    redo = overshoot | ~np.isfinite(x)
+    if np.any(redo):
+        x[redo] = _bracketed_root([np.broadcast_to(cf, shape)[redo] for cf in coeffs],
+                                  lower[redo], start[redo], max_iterations)
+    return x
+
+
+def _bracketed_root(coeffs, lo, hi, max_iterations):
+    """Newton steps kept inside ``[lo, hi]`` (``p(lo) <= 0 < p(hi)``), bisection otherwise."""
+    lo, hi = lo.copy(), hi.copy()
+    x = hi.copy()
+    for _ in range(4 * max_iterations):
+        value, slope = _horner(coeffs, x)
+        below = value <= 0.0
+        lo = np.where(below, x, lo)
+        hi = np.where(below, hi, x)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            candidate = x - value / slope
+        inside = (candidate >= lo) & (candidate <= hi)
+        candidate = np.where(inside, candidate, 0.5 * (lo + hi))
+        done = np.all(np.abs(candidate - x) <= 4 * _EPS * np.abs(candidate))
+        x = candidate
+        if done:
+            break
+    return x
+
+
+# ----------------------------------------------------------------------------
+# normal contact, eqs. (7)-(10), (16)
+def jkr_depth(contact_radius, params: Parameters, work_of_adhesion: float):
+    """Indentation depth of the adhesive contact of radius ``a``, eq. (9)."""
+    return _rel("jkr_depth").numeric(contact_radius, params.R, params.E_star, work_of_adhesion)
+
+
+def jkr_normal_force(contact_radius, params: Parameters, work_of_adhesion: float):
+    """Normal force of the adhesive contact of radius ``a``, eq. (10)."""
+    return _rel("jkr_normal_force").numeric(contact_radius, params.R, params.E_star, work_of_adhesion)
+
+
+def normal_force(depth, contact_radius, params: Parameters):
+    """Normal force of the springs in ``|x| < a`` at depth ``d`` (any, e.g. pinned ``a``), eq. (10)."""
+    return _rel("normal_force").numeric(depth, contact_radius, params.R, params.E_star)
+
+
+def hertz_contact_radius(depth, params: Parameters):
+    """Non-adhesive contact radius ``a = sqrt(R d)``, eq. (16)."""
+    return _rel("hertz_radius").numeric(np.maximum(depth, 0.0), params.R)
+
+
+def jump_off(params: Parameters, work_of_adhesion: float) -> dict[str, float]:
+    """Jump-off point under displacement control (``∂d/∂a = 0`` on the branch).
+
+    Returns ``contact_radius``, ``depth`` and ``normal_force`` at the jump-off.
+    """
+    args = (params.R, params.E_star, work_of_adhesion)
+    return {
+        "contact_radius": float(_rel("jump_off_radius").numeric(*args)),
+        "depth": float(_rel("jump_off_depth").numeric(*args)),
+        "normal_force": float(_rel("jump_off_force").numeric(params.R, work_of_adhesion)),
+    }
+
+
+def jump_in_radius(params: Parameters, work_of_adhesion: float) -> float:
+    """Contact radius on first touch (``d = 0`` on the stable branch of (9))."""
+    return float(_rel("jump_in_radius").numeric(params.R, params.E_star, work_of_adhesion))
+
+
+def pull_off_force(params: Parameters, work_of_adhesion: float) -> float:
+    """JKR pull-off force ``−(3/2) π Δγ R``: the minimum of (10) along the branch."""
+    return float(_rel("pull_off_force").numeric(params.R, work_of_adhesion))
+
+
+def jkr_contact_radius(depth, params: Parameters, work_of_adhesion: float):
+    """Contact radius on the stable branch of (9) for a depth ``d``.
+
+    The stable branch is ``a >= a_jump-off`` (``∂d/∂a >= 0``). Depths below the
+    jump-off depth have no contact: the result is ``nan`` there.
+    """
+    depth_arr = np.asarray(depth, dtype=float)
+    if work_of_adhesion == 0.0:
+        return _as_output(np.where(depth_arr >= 0, hertz_contact_radius(depth_arr, params), np.nan), depth_arr)
+    rel = _rel("jkr_radius_quartic")
+    coefficients = rel.coefficients(depth_arr, params.R, params.E_star, work_of_adhesion)
+    point = jump_off(params, work_of_adhesion)
+    s_min = np.sqrt(point["contact_radius"])
+    root = positive_polynomial_root(coefficients, lower=s_min)
+    radius = np.where(depth_arr >= point["depth"], root**2, np.nan)
+    return _as_output(radius, depth_arr)
+
+
+# ----------------------------------------------------------------------------
+# tangential springs, eq. (13)
+def critical_shift(contact_radius, params: Parameters):
+    """Critical spring shift ``ū(a) = π a τ0 / (2 G*)``, eq. (13)."""
+    return _rel("critical_shift").numeric(contact_radius, params.tau0, params.G_star)
+
+
+# ----------------------------------------------------------------------------
+# slip onset, eqs. (17), (18), (20), (21)
+def d_crit(
+    alpha,
+    params: Parameters,
+    scenario: Literal["A", "B"] = "A",
+    adhesion: bool = False,
+    branch: Literal["pull-off", "indentation"] = "pull-off",
+):
+    """Indentation depth at which the springs start to slide, eqs. (17)–(21).
+
+    Parameters
+    ----------
+    alpha : float or array_like
+        Path angle to the surface in degrees, in [0, 90].
+    params : Parameters
+        Material, indenter and adhesion.
+    scenario : {"A", "B"}
+        ``"A"``: indentation at angle α from first contact, eqs. (14), (17),
+        (18). ``"B"``: vertical indentation to ``d_max`` then motion at angle α,
+        eqs. (19)–(21).
+    adhesion : bool
+        ``False``: non-adhesive contact radius (16), eqs. (17) and (20).
+        ``True``: JKR radius (9), eqs. (18) and (21) with ``Δγ0`` on the way
+        in and ``Δγ1`` on the way out.
+    branch : {"pull-off", "indentation"}
+        Scenario B only: from ``d_max`` out at angle α (the "−" sign of (21),
+        smaller root of (20)) or further in at angle α (the "+" sign, larger
+        root of (20)).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ``d_crit`` in metres, the same shape as ``alpha``.
+
+    Notes
+    -----
+    Root choice: each reduced polynomial (the cubic of (18) and the quartics
+    of (21) in ``s = sqrt(a)``) has exactly one sign change, hence exactly one
+    positive root (Descartes), and that is the one returned. In scenario A it
+    lies on the stable JKR branch (``d = K a > 0``). On the pull-off branch of
+    scenario B it may lie on the unstable branch ``a < a_jump-off(Δγ1)``: the
+    contact then comes apart (jump-off at depth ``d_jump-off < 0``) before any
+    spring slides, and ``-inf`` is returned.
+
+    "Never slides" is encoded so that ``d > d_crit`` (indentation) or
+    ``d < d_crit`` (pull-off) is the sliding region: α = 90° gives ``+inf``
+    for scenario A and the indentation branch, ``-inf`` for the pull-off
+    branch. α → 0 gives ``d_crit → 0`` (A) and ``→ d_max`` (B).
+
+    Scenario B (21) assumes the contact radius follows (9) with ``Δγ1`` from
+    the start of pull-off; in the model it is pinned first (see
+    :mod:`mdr_events` docs on the continuum method).
+    """
+    _check_choice("scenario", scenario, SCENARIOS)
+    _check_choice("branch", branch, BRANCHES)
+    if not isinstance(adhesion, (bool, np.bool_)):
+        raise TypeError(f"adhesion={adhesion!r} must be True or False")
+    alpha_deg = _validate_alpha(alpha)
+    tan = _tan_degrees(alpha_deg)
+    vertical = np.isinf(tan)
+    tan_finite = np.where(vertical, 1.0, tan)
+    p = params
+
+    if scenario == "A":
+        if not adhesion:
+            depth = _rel("d_crit_A_hertz").numeric(tan_finite, p.R, p.tau0, p.G_star)
+        else:
+            coefficients = _rel("slip_A_jkr_cubic").coefficients(
+                tan_finite, p.R, p.tau0, p.G_star, p.E_star, p.dgamma0)
+            radius = positive_polynomial_root(coefficients) ** 2
+            depth = _rel("slip_depth_A").numeric(radius, tan_finite, p.tau0, p.G_star)
+        result = np.where(vertical, np.inf, depth)
+        return _as_output(result, alpha_deg)
+
+    pulling = branch == "pull-off"
+    never = -np.inf if pulling else np.inf
+    key = "pull_off" if pulling else "indentation"
+    if not adhesion:
+        k = _rel("slip_B_hertz_k").numeric(tan_finite, p.R, p.tau0, p.G_star)
+        depth = _rel(f"d_crit_B_hertz_{key}").numeric(p.d_max, k)
+    else:
+        work = p.dgamma1 if pulling else p.dgamma0
+        coefficients = _rel(f"slip_B_jkr_quartic_{key}").coefficients(
+            tan_finite, p.d_max, p.R, p.tau0, p.G_star, p.E_star, work)
+        radius = positive_polynomial_root(coefficients) ** 2
+        depth = _rel(f"slip_depth_B_{key}").numeric(radius, tan_finite, p.d_max, p.tau0, p.G_star)
+        if pulling and work > 0.0:
+            unstable = radius < jump_off(p, work)["contact_radius"]
+            depth = np.where(unstable, never, depth)
+    result = np.where(vertical, never, depth)
+    return _as_output(result, alpha_deg)
+
+
+def critical_angle(params: Parameters, scenario: Literal["A", "B"] = "A", adhesion: bool = True) -> float:
+    """Critical path angle in degrees.
+
+    Scenario A: the angle at which slip begins exactly at ``d_max``
+    (``d_crit(α_c) = d_max``); for α < α_c the springs slide during
+    indentation. Non-adhesive: eq. (17) at ``d_max``; adhesive: eq. (18) with
+    the JKR radius at ``d_max`` on the ``Δγ0`` branch.
+
+    Scenario B: ``d_crit`` of the pull-off branch equals ``d_max`` only at
+    α = 0, so the meaningful threshold is the other end: the angle above which
+    the contact comes apart (jump-off on the ``Δγ1`` branch) before any spring
+    slides, eq. (21) at the jump-off point. Without adhesion the radius
+    shrinks to zero and slip always comes first: 90°.
+    """
+    _check_choice("scenario", scenario, SCENARIOS)
+    p = params
+    if scenario == "A":
+        if adhesion:
+            radius = jkr_contact_radius(p.d_max, p, p.dgamma0)
+        else:
+            radius = float(hertz_contact_radius(p.d_max, p))
+        with np.errstate(divide="ignore"):
+            angle = _rel("critical_angle_A").numeric(radius, p.d_max, p.tau0, p.G_star)
+        return float(np.rad2deg(angle))
+    if not adhesion or p.dgamma1 == 0.0:
+        return 90.0
+    point = jump_off(p, p.dgamma1)
+    with np.errstate(divide="ignore"):
+        angle = _rel("critical_angle_B").numeric(point["contact_radius"], point["depth"], p.d_max, p.tau0, p.G_star)
+    return float(np.rad2deg(angle))

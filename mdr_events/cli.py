@@ -1,0 +1,128 @@
+"""Command line: ``mdr-events derive | phase-diagram | reproduce``.
+
+Bad arguments print one line ``mdr-events: error: ...`` on stderr and exit
+with status 2 (no traceback).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+from typing import Sequence
+
+from .parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
+
+PRESETS = {"paper-R30": 0.03, "paper-R100": 0.1}
+
+
+class UsageError(Exception):
+    """A user error: reported in one line, exit status 2."""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str) -> None:  # one line, no usage block
+        raise UsageError(message)
+
+
+def _parameter_options(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--preset", choices=sorted(PRESETS), default="paper-R30",
+                        help="parameter set of the paper (default paper-R30); the options below override it")
+    for name, long_name in PARAMETER_LONG_NAMES.items():
+        parser.add_argument(f"--{name}", type=float, default=None, metavar="VALUE",
+                            help=f"{long_name} [{PARAMETER_UNITS[name]}]")
+
+
+def _parameters(args: argparse.Namespace) -> Parameters:
+    base = Parameters.paper(R=PRESETS[args.preset])
+    changes = {name: getattr(args, name) for name in PARAMETER_UNITS if getattr(args, name) is not None}
+    return base.replace(**changes) if changes else base
+
+
+def _progress(message: str) -> None:
+    print(message, file=sys.stderr, flush=True)
+
+
+def _command_derive(args: argparse.Namespace) -> None:
+    from . import symbolic
+
+    rels = symbolic.relations()
+    keys = [args.key] if args.key else list(rels)
+    for key in keys:
+        rel = symbolic.relation(key)
+        number = f" {rel.equation}" if rel.equation else ""
+        print(f"# {rel.key}{number}: {rel.title}")
+        print(rel.latex() if args.latex else rel.pretty())
+        print()
+
+
+def _write_phase_diagram(params: Parameters, scenario: str, out: Path, stem: str) -> list[Path]:
+    from .datasets import write_netcdf
+    from .phase import phase_diagram
+    from .plotting import plot_phase_diagram, save_figure
+
+    dataset = phase_diagram(params, scenario=scenario)
+    written = [write_netcdf(dataset, out / f"{stem}.nc")]
+    axes = plot_phase_diagram(dataset)
+    written.append(save_figure(axes.figure, out / f"{stem}.png"))
+    return written
+
+
+def _command_phase_diagram(args: argparse.Namespace) -> None:
+    params = _parameters(args)
+    stem = f"phase_diagram_{args.scenario}"
+    for path in _write_phase_diagram(params, args.scenario, Path(args.out), stem):
+        print(path)
+
+
+def _command_reproduce(args: argparse.Namespace) -> None:
+    from .report import reproduce
+
+    reproduce(Path(args.out), progress=_progress)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(prog="mdr-events", description=__doc__.splitlines()[0])
+    from ._version import __version__
+
+    parser.add_argument("--version", action="version", version=f"mdr_events {__version__}")
+    commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
+
+    derive = commands.add_parser("derive", help="print every relation derived by SymPy")
+    derive.add_argument("--latex", action="store_true", help="LaTeX instead of pretty printing")
+    derive.add_argument("--key", default=None, help="only this relation (e.g. jkr_depth)")
+    derive.set_defaults(run=_command_derive)
+
+    phase = commands.add_parser("phase-diagram", help="write the phase diagram (Fig. 9a/9b) as .nc and .png")
+    phase.add_argument("--scenario", choices=["A", "B"], required=True)
+    phase.add_argument("--out", required=True, help="output directory")
+    _parameter_options(phase)
+    phase.set_defaults(run=_command_phase_diagram)
+
+    reproduce = commands.add_parser("reproduce", help="regenerate results/ (figures, datasets, report)")
+    reproduce.add_argument("--out", default="results", help="output directory (default results)")
+    reproduce.set_defaults(run=_command_reproduce)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of ``mdr-events``; returns the exit status."""
+    try:
+        args = build_parser().parse_args(argv)
+        if getattr(args, "key", None):
+            from . import symbolic
+
+            symbolic.relation(args.key)
+        args.run(args)
+    except UsageError as error:
+        print(f"mdr-events: error: {error}", file=sys.stderr)
+        return 2
+    except (ValueError, TypeError, KeyError) as error:
+        message = str(error.args[0]) if isinstance(error, KeyError) and error.args else str(error)
+        print(f"mdr-events: error: {message}".splitlines()[0], file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,115 @@
+"""Labelled results: stamping, atomic netCDF writing and reading back.
+
+Every dataset the package writes carries ``units`` and ``long_name`` on each
+variable and, in its attributes, the program, its version, the paper's DOI
+and every model parameter (tamaas-style provenance), all netCDF-safe (str,
+float, int), so that :func:`open_result` can rebuild the :class:`Parameters`.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+import xarray as xr
+
+from ._version import __version__
+from .parameters import Parameters
+
+__all__ = ["DOI", "REFERENCE", "stamp", "atomic_write", "write_netcdf", "open_result", "parameters_of"]
+
+DOI = "10.3390/biomimetics8060477"
+REFERENCE = (
+    "I. A. Lyashenko, V. L. Popov, V. Borysiuk, Indentation and Detachment in Adhesive "
+    "Contacts between Soft Elastomer and Rigid Indenter at Simultaneous Motion in Normal "
+    "and Tangential Direction: Experiments and Simulations, Biomimetics 8(6), 477 (2023), section 4"
+)
+PROGRAM = "mdr_events"
+
+
+def _netcdf_safe(value: Any) -> Any:
+    if isinstance(value, (bool, np.bool_)):
+        return int(value)
+    if isinstance(value, (int, np.integer)):
+        return int(value)
+    if isinstance(value, (float, np.floating)):
+        return float(value)
+    if isinstance(value, str):
+        return value
+    raise TypeError(f"attribute value {value!r} of type {type(value).__name__} is not netCDF-safe")
+
+
+def stamp(dataset: xr.Dataset, params: Parameters, **attrs: Any) -> xr.Dataset:
+    """Attach provenance and parameters to ``dataset`` (in place) and return it.
+
+    ``attrs`` are extra netCDF-safe attributes (str, int, float; bools are
+    stored as 0/1).
+    """
+    dataset.attrs.update(
+        {
+            "program": PROGRAM,
+            "program_version": __version__,
+            "doi": DOI,
+            "reference": REFERENCE,
+            "Conventions": "CF-1.8",
+        }
+    )
+    dataset.attrs.update(params.to_attrs())
+    dataset.attrs.update({key: _netcdf_safe(value) for key, value in attrs.items()})
+    for name, variable in dataset.variables.items():
+        missing = [key for key in ("units", "long_name") if key not in variable.attrs]
+        if missing:
+            raise ValueError(f"variable {name!r} lacks attribute(s) {missing}")
+    return dataset
+
+
+def atomic_write(path: str | os.PathLike, write: Callable[[str], Any], suffix: str = ".tmp") -> Path:
+    """Call ``write(temporary_path)``, then rename the file onto ``path``.
+
+    An interrupted or failing writer leaves the old file (or none), never a
+    half-written one; the temporary file sits beside the target so that the
+    rename is atomic.
+    """
+    target = Path(path)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=suffix, dir=target.parent)
+    os.close(handle)
+    try:
+        write(temporary)
+        os.replace(temporary, target)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
+    return target
+
+
+def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
+    """Write ``dataset`` as netCDF to ``path`` atomically (see :func:`atomic_write`).
+
+    The scipy backend (netCDF3, 64-bit offset) is used so that no further
+    dependency is needed.
+    """
+    return atomic_write(path, lambda temporary: dataset.to_netcdf(
+        temporary, engine="scipy", format="NETCDF3_64BIT"), suffix=".nc")
+
+
+def open_result(path: str | os.PathLike) -> xr.Dataset:
+    """Read a file written by this package, fully loaded, and check its stamp.
+
+    Raises ``ValueError`` naming what is missing when the file is not one of
+    ours (no ``program`` attribute, or parameters missing).
+    """
+    with xr.open_dataset(path, engine="scipy") as handle:
+        dataset = handle.load()
+    if dataset.attrs.get("program") != PROGRAM:
+        raise ValueError(f"{os.fspath(path)!r} was not written by {PROGRAM} (attribute 'program' missing)")
+    parameters_of(dataset)
+    return dataset
+
+
+def parameters_of(dataset: xr.Dataset) -> Parameters:
+    """The :class:`Parameters` a dataset was computed with."""
+    return Parameters.from_attrs(dataset.attrs)

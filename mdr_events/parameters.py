@@ -1,0 +1,214 @@
+"""Model parameters of section 4: one immutable object, validated once.
+
+Every other layer of :mod:`mdr_events` takes a :class:`Parameters` instead of
+loose numbers, so that a dataset or a figure can always say exactly which
+material, indenter and adhesion it was computed for.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import numbers
+from dataclasses import dataclass
+from typing import Any, Mapping
+
+__all__ = ["Parameters", "PARAMETER_UNITS", "PARAMETER_LONG_NAMES"]
+
+#: SI unit of every field, used for dataset attributes and the CLI help.
+PARAMETER_UNITS: dict[str, str] = {
+    "E": "Pa",
+    "nu": "1",
+    "R": "m",
+    "tau0": "Pa",
+    "dgamma0": "J m-2",
+    "dgamma1": "J m-2",
+    "d_max": "m",
+    "v": "m s-1",
+}
+
+#: Human-readable name of every field.
+PARAMETER_LONG_NAMES: dict[str, str] = {
+    "E": "Young's modulus of the elastomer",
+    "nu": "Poisson's ratio of the elastomer",
+    "R": "radius of the (paraboloidal) indenter",
+    "tau0": "critical mean shear stress in stationary sliding",
+    "dgamma0": "work of adhesion of springs attaching on the way in",
+    "dgamma1": "work of adhesion used for detachment on the way out",
+    "d_max": "maximum indentation depth",
+    "v": "speed of the indenter along its path",
+}
+
+#: Allowed ranges, in words, for the error messages.
+_ALLOWED: dict[str, str] = {
+    "E": "a finite number > 0",
+    "nu": "a finite number in (-1, 0.5]",
+    "R": "a finite number > 0",
+    "tau0": "a finite number >= 0",
+    "dgamma0": "a finite number >= 0",
+    "dgamma1": "a finite number >= 0",
+    "d_max": "a finite number > 0",
+    "v": "a finite number > 0",
+}
+
+
+def _is_allowed(name: str, value: float) -> bool:
+    if name == "nu":
+        return -1.0 < value <= 0.5
+    if name in ("tau0", "dgamma0", "dgamma1"):
+        return value >= 0.0
+    return value > 0.0
+
+
+@dataclass(frozen=True)
+class Parameters:
+    """Material, indenter, adhesion and kinematics of the model (SI units).
+
+    Parameters
+    ----------
+    E : float
+        Young's modulus of the elastomer in Pa.
+    nu : float
+        Poisson's ratio of the elastomer, in (-1, 0.5].
+    R : float
+        Radius of the indenter in m; the sphere is replaced by the paraboloid
+        ``f(r) = r**2 / (2 R)``, eq. (4).
+    tau0 : float
+        Critical mean shear stress of stationary sliding in Pa; fixes the
+        critical spring shift ``ū(a) = π a τ0 / (2 G*)``, eq. (13).
+    dgamma0 : float
+        Work of adhesion ``Δγ0`` (J/m²) of springs attaching while the indenter
+        goes in (Heß's rule, eq. (8)).
+    dgamma1 : float
+        Work of adhesion ``Δγ1`` (J/m²) of the detachment criterion while the
+        indenter comes out.
+    d_max : float
+        Maximum indentation depth in m (turning point of both scenarios).
+    v : float
+        Speed of the indenter along its path in m/s, eqs. (14) and (19).
+
+    Notes
+    -----
+    The effective moduli of a rigid indenter on an elastic half-space are
+    ``E* = E / (1 - ν²)`` and ``G* = 4 G / (2 - ν)`` with
+    ``G = E / (2 (1 + ν))`` (the definitions next to eqs. (5), (6)).
+
+    Invalid values raise :class:`ValueError` naming the field, the value and
+    the allowed range.
+    """
+
+    E: float
+    nu: float
+    R: float
+    tau0: float
+    dgamma0: float
+    dgamma1: float
+    d_max: float
+    v: float
+
+    def __post_init__(self) -> None:
+        for field in dataclasses.fields(self):
+            value = getattr(self, field.name)
+            if isinstance(value, bool) or not isinstance(value, numbers.Real):
+                raise TypeError(
+                    f"Parameters.{field.name}={value!r} has type "
+                    f"{type(value).__name__}; allowed: {_ALLOWED[field.name]}"
+                )
+            value = float(value)
+            if not math.isfinite(value) or not _is_allowed(field.name, value):
+                raise ValueError(
+                    f"Parameters.{field.name}={value!r} is not allowed; "
+                    f"allowed: {_ALLOWED[field.name]} ({PARAMETER_UNITS[field.name]})"
+                )
+            object.__setattr__(self, field.name, value)
+
+    # ------------------------------------------------------------------
+    # derived elastic constants
+    @property
+    def G(self) -> float:
+        """Shear modulus ``G = E / (2 (1 + ν))`` in Pa."""
+        return self.E / (2.0 * (1.0 + self.nu))
+
+    @property
+    def E_star(self) -> float:
+        """Effective normal modulus ``E* = E / (1 - ν²)`` in Pa (eq. (5))."""
+        return self.E / (1.0 - self.nu**2)
+
+    @property
+    def G_star(self) -> float:
+        """Effective tangential modulus ``G* = 4 G / (2 - ν)`` in Pa (eq. (6))."""
+        return 4.0 * self.G / (2.0 - self.nu)
+
+    # ------------------------------------------------------------------
+    # construction helpers
+    @classmethod
+    def paper(cls, R: float = 0.03) -> "Parameters":
+        """The parameter set of section 4 (Lyashenko, Popov & Borysiuk 2023).
+
+        Quoted in the section: ``R`` = 30 mm (100 mm in the supplementary
+        material), ``d_max`` = 0.3 mm, ``τ0`` = 42 kPa, ``Δγ0`` = 0.01 J/m²,
+        ``Δγ1`` = 0.15 J/m².
+
+        **Inferred, not quoted** (the section's text does not state them; they
+        were in a figure caption): ``ν = 0.5`` and ``E = 0.324 MPa``, which
+        reproduce both stated critical angles α_c(Hertz) ≈ 23.59° and
+        α_c(JKR) ≈ 22.87° to within 0.01°, and ``v = 1 µm/s``. The model is
+        rate independent, so ``v`` only sets the time axis.
+
+        Parameters
+        ----------
+        R : float
+            Indenter radius in m: 0.03 or 0.1 (the two radii of the paper).
+            For another radius use ``Parameters.paper().replace(R=...)``.
+        """
+        if not any(math.isclose(R, allowed, rel_tol=1e-12) for allowed in (0.03, 0.1)):
+            raise ValueError(
+                f"Parameters.paper(R={R!r}): the paper uses R = 0.03 m or 0.1 m; "
+                "for another radius use Parameters.paper().replace(R=...)"
+            )
+        return cls(
+            E=0.324e6,
+            nu=0.5,
+            R=R,
+            tau0=42e3,
+            dgamma0=0.01,
+            dgamma1=0.15,
+            d_max=0.3e-3,
+            v=1e-6,
+        )
+
+    #: Fields of :meth:`paper` that are inferred rather than quoted.
+    INFERRED_FIELDS = ("E", "nu", "v")
+
+    def replace(self, **changes: float) -> "Parameters":
+        """A copy with some fields changed (validated again)."""
+        unknown = set(changes) - {f.name for f in dataclasses.fields(self)}
+        if unknown:
+            raise TypeError(
+                f"Parameters.replace got unknown field(s) {sorted(unknown)}; "
+                f"allowed: {[f.name for f in dataclasses.fields(self)]}"
+            )
+        return dataclasses.replace(self, **changes)
+
+    def as_dict(self) -> dict[str, float]:
+        """The eight fields as a plain ``dict`` (SI units)."""
+        return {f.name: getattr(self, f.name) for f in dataclasses.fields(self)}
+
+    def to_attrs(self) -> dict[str, Any]:
+        """netCDF-safe attributes: ``param_<name>`` (float) and its units."""
+        attrs: dict[str, Any] = {}
+        for name, value in self.as_dict().items():
+            attrs[f"param_{name}"] = float(value)
+            attrs[f"param_{name}_units"] = PARAMETER_UNITS[name]
+        attrs["param_E_star"] = self.E_star
+        attrs["param_G_star"] = self.G_star
+        return attrs
+
+    @classmethod
+    def from_attrs(cls, attrs: Mapping[str, Any]) -> "Parameters":
+        """Rebuild the parameters from :meth:`to_attrs` output (e.g. a file)."""
+        names = [f.name for f in dataclasses.fields(cls)]
+        missing = [f"param_{n}" for n in names if f"param_{n}" not in attrs]
+        if missing:
+            raise ValueError(f"attrs lack the parameter attribute(s) {missing}")
+        return cls(**{n: float(attrs[f"param_{n}"]) for n in names})

@@ -1,0 +1,87 @@
+"""Phase diagrams of Fig. 9a (scenario A) and Fig. 9b (scenario B) as datasets."""
+
+from __future__ import annotations
+
+from typing import Literal
+
+import numpy as np
+import xarray as xr
+
+from . import analytic
+from .datasets import stamp
+from .parameters import Parameters
+
+__all__ = ["phase_diagram", "default_angles"]
+
+
+def default_angles(count: int = 901) -> np.ndarray:
+    """Evenly spaced angles 0°…90° (0.1° apart by default)."""
+    return np.linspace(0.0, 90.0, count)
+
+
+def phase_diagram(
+    params: Parameters,
+    alpha=None,
+    scenario: Literal["A", "B"] = "A",
+) -> xr.Dataset:
+    """Slip-onset depth against path angle: the phase diagram of Fig. 9a or 9b.
+
+    Parameters
+    ----------
+    params : Parameters
+        Material, indenter and adhesion.
+    alpha : array_like, optional
+        Angles in degrees, in [0, 90]; default 0°, 0.1°, …, 90°.
+    scenario : {"A", "B"}
+        ``"A"``: Fig. 9a, eqs. (17) and (18). ``"B"``: Fig. 9b, eqs. (20)
+        and (21), with a dimension ``branch`` = ``pull-off``, ``indentation``.
+
+    Returns
+    -------
+    xarray.Dataset
+        Coordinate ``alpha`` (degree); variables ``d_crit_hertz`` and
+        ``d_crit_jkr`` in m (``±inf`` where no spring slides, see
+        :func:`mdr_events.d_crit`), the scalars ``d_max``,
+        ``critical_angle_hertz`` and ``critical_angle_jkr`` (degree) and, for
+        scenario B, ``jump_off_depth`` (the displacement-controlled pull-off
+        depth on the ``Δγ1`` branch).
+    """
+    analytic._check_choice("scenario", scenario, analytic.SCENARIOS)
+    angles = analytic._validate_alpha(default_angles() if alpha is None else alpha)
+    if angles.ndim != 1 or angles.size == 0:
+        raise ValueError(f"alpha must be a non-empty 1-D array of angles, got shape {angles.shape}")
+    coords = {"alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})}
+    variables = {}
+    if scenario == "A":
+        for key, adhesive, eq in (("hertz", False, "(17)"), ("jkr", True, "(18)")):
+            variables[f"d_crit_{key}"] = (
+                "alpha",
+                analytic.d_crit(angles, params, "A", adhesion=adhesive),
+                {"units": "m", "long_name": f"slip-onset depth, {'adhesive' if adhesive else 'non-adhesive'}, eq. {eq}"},
+            )
+    else:
+        coords["branch"] = ("branch", np.array(analytic.BRANCHES), {"units": "1", "long_name": "motion at angle from d_max"})
+        for key, adhesive, eq in (("hertz", False, "(20)"), ("jkr", True, "(21)")):
+            values = np.stack([analytic.d_crit(angles, params, "B", adhesion=adhesive, branch=b)
+                               for b in analytic.BRANCHES])
+            variables[f"d_crit_{key}"] = (
+                ("branch", "alpha"),
+                values,
+                {"units": "m", "long_name": f"slip-onset depth, {'adhesive' if adhesive else 'non-adhesive'}, eq. {eq}"},
+            )
+        variables["jump_off_depth"] = (
+            (),
+            analytic.jump_off(params, params.dgamma1)["depth"],
+            {"units": "m", "long_name": "jump-off depth on the pull-off branch (displacement control)"},
+        )
+    variables["d_max"] = ((), params.d_max, {"units": "m", "long_name": "maximum indentation depth"})
+    for key, adhesive in (("hertz", False), ("jkr", True)):
+        meaning = "slip at d_max" if scenario == "A" else "no slip before jump-off above it"
+        variables[f"critical_angle_{key}"] = (
+            (),
+            analytic.critical_angle(params, scenario, adhesion=adhesive),
+            {"units": "degree", "long_name": f"critical angle, {'adhesive' if adhesive else 'non-adhesive'} ({meaning})"},
+        )
+    dataset = xr.Dataset(variables, coords=coords)
+    return stamp(dataset, params, scenario=scenario, figure="9a" if scenario == "A" else "9b",
+                 content="phase diagram of slip onset")

@@ -1,0 +1,409 @@
+"""SymPy derivation of every relation of section 4, eqs. (3)–(21).
+
+Nothing here is typed in as a result: each relation is *derived* from the
+model's statements (the Abel transform (3), the spring displacement (7),
+Heß's rule (8), the stationary-sliding sum (12), the trajectories (14) and
+(19)) by integration, differentiation, ``solve`` and polynomial reduction.
+The numerical layers (:mod:`mdr_events.analytic`, and later the continuum and
+discrete simulators) evaluate these very expressions through
+:attr:`Relation.numeric`, built once with :func:`sympy.lambdify` and cached.
+
+Use
+---
+>>> from mdr_events import symbolic
+>>> rel = symbolic.relation("jkr_depth")
+>>> rel.equation, rel.eq                                    # doctest: +SKIP
+('(9)', Eq(d, a**2/R - sqrt(2)*sqrt(pi)*sqrt(a)*sqrt(dgamma)/sqrt(E_star)))
+>>> rel.numeric(a=3e-3, R=0.03, E_star=4.32e5, dgamma=0.01)  # doctest: +SKIP
+
+Symbols (all SI): ``x`` MDR coordinate, ``r`` radial coordinate, ``R``
+indenter radius, ``E_star``/``G_star`` effective moduli, ``tau0`` critical
+shear stress, ``dgamma`` work of adhesion, ``d`` indentation depth, ``d_max``
+turning depth, ``a`` contact radius, ``s = sqrt(a)``, ``alpha`` path angle.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+import sympy as sp
+
+__all__ = [
+    "Relation",
+    "derive",
+    "relation",
+    "relations",
+    "abel_transform",
+    "SYMBOLS",
+]
+
+# ----------------------------------------------------------------------------
+# symbols
+x = sp.Symbol("x", positive=True)
+r = sp.Symbol("r", positive=True)
+t = sp.Symbol("t", positive=True)
+n = sp.Symbol("n", positive=True)
+c = sp.Symbol("c", positive=True)
+theta = sp.Symbol("theta", positive=True)
+R = sp.Symbol("R", positive=True)
+E_star = sp.Symbol("E_star", positive=True)
+G_star = sp.Symbol("G_star", positive=True)
+tau0 = sp.Symbol("tau0", positive=True)
+dgamma = sp.Symbol("dgamma", positive=True)
+d = sp.Symbol("d", real=True)
+d_max = sp.Symbol("d_max", positive=True)
+a = sp.Symbol("a", positive=True)
+s = sp.Symbol("s", positive=True)
+alpha = sp.Symbol("alpha", positive=True)
+tan_alpha = sp.Symbol("tan_alpha", positive=True)
+u_bar = sp.Symbol("u_bar", positive=True)
+dx = sp.Symbol("Delta_x", positive=True)
+n_springs = sp.Symbol("n", positive=True, integer=True)
+g = sp.Function("g")
+f = sp.Function("f")
+u_z = sp.Symbol("u_z", real=True)
+dl_max = sp.Symbol("Delta_l_max", positive=True)
+F_N = sp.Symbol("F_N", real=True)
+tau = sp.Symbol("tau", real=True)
+k = sp.Symbol("k", positive=True)
+
+#: Every symbol by its name, for users building their own expressions.
+SYMBOLS: dict[str, sp.Symbol] = {
+    sym.name: sym
+    for sym in (x, r, R, E_star, G_star, tau0, dgamma, d, d_max, a, s, alpha,
+                tan_alpha, u_bar, dx, c, n, theta, k)
+}
+
+#: Pretty LaTeX names (``sympy.latex(..., symbol_names=LATEX_NAMES)``).
+LATEX_NAMES: dict[sp.Symbol, str] = {
+    E_star: r"E^{*}",
+    G_star: r"G^{*}",
+    tau0: r"\tau_{0}",
+    dgamma: r"\Delta\gamma",
+    d_max: r"d_{\max}",
+    u_bar: r"\bar{u}",
+    dx: r"\Delta x",
+    tan_alpha: r"\tan\alpha",
+    dl_max: r"\Delta l_{\max}",
+}
+
+
+@dataclass(frozen=True)
+class Relation:
+    """One derived relation ``lhs = rhs`` of the model.
+
+    Attributes
+    ----------
+    key : str
+        Stable identifier, e.g. ``"jkr_depth"``.
+    equation : str
+        The paper's equation number, e.g. ``"(9)"`` (``""`` for consequences
+        the paper uses without numbering them).
+    title : str
+        What the relation says, in words.
+    lhs, rhs : sympy.Expr
+        The two sides. For a polynomial reduction ``lhs`` is the polynomial
+        and ``rhs`` is ``0``.
+    args : tuple of sympy.Symbol
+        The arguments, in order, of :attr:`numeric` (keyword names are the
+        symbol names).
+    variable : sympy.Symbol or None
+        For a polynomial relation, its unknown (:attr:`coefficients` are the
+        coefficients in that variable, highest power first).
+    """
+
+    key: str
+    equation: str
+    title: str
+    lhs: sp.Expr
+    rhs: sp.Expr
+    args: tuple[sp.Symbol, ...] = field(default=())
+    variable: sp.Symbol | None = None
+
+    @property
+    def eq(self) -> sp.Eq:
+        """The relation as a SymPy equation (for notebooks and printing)."""
+        return sp.Eq(self.lhs, self.rhs, evaluate=False)
+
+    def latex(self) -> str:
+        """LaTeX of the relation with the paper's symbols."""
+        return sp.latex(self.eq, symbol_names=LATEX_NAMES)
+
+    def pretty(self) -> str:
+        """Unicode pretty print of the relation."""
+        return sp.pretty(self.eq, use_unicode=True)
+
+    @functools.cached_property
+    def _numeric(self) -> Callable[..., object]:
+        expr = self.lhs if self.variable is not None else self.rhs
+        return sp.lambdify(self.args, expr, modules="numpy", cse=True)
+
+    def numeric(self, *values, **named):
+        """Evaluate the right-hand side with NumPy (vectorised, built once).
+
+        Arguments are given positionally in the order of :attr:`args` or by
+        the symbol names. For a polynomial relation the polynomial itself is
+        evaluated (its :attr:`variable` must be among the arguments).
+        """
+        return self._numeric(*self._ordered(values, named))
+
+    @functools.cached_property
+    def _coefficients(self) -> Callable[..., list]:
+        if self.variable is None:
+            raise TypeError(f"relation {self.key!r} is not a polynomial")
+        coeffs = sp.Poly(self.lhs, self.variable).all_coeffs()
+        args = tuple(a_ for a_ in self.args if a_ != self.variable)
+        return args, sp.lambdify(args, coeffs, modules="numpy", cse=True)
+
+    def coefficients(self, *values, **named) -> list:
+        """Coefficients of the polynomial in :attr:`variable`, highest first.
+
+        Arguments as for :meth:`numeric`, without the polynomial's variable.
+        """
+        args, fn = self._coefficients
+        return fn(*self._ordered(values, named, args))
+
+    def _ordered(self, values, named, args=None):
+        args = self.args if args is None else args
+        if values and named:
+            raise TypeError(f"{self.key}: give arguments by position or by name, not both")
+        if named:
+            names = [a_.name for a_ in args]
+            unknown = set(named) - set(names)
+            missing = [nm for nm in names if nm not in named]
+            if unknown or missing:
+                raise TypeError(
+                    f"{self.key}: arguments are {names}; "
+                    f"unknown {sorted(unknown)}, missing {missing}"
+                )
+            return [_as_numpy_scalar(named[nm]) for nm in names]
+        if len(values) != len(args):
+            raise TypeError(
+                f"{self.key}: expected {len(args)} arguments {[a_.name for a_ in args]}, "
+                f"got {len(values)}"
+            )
+        return [_as_numpy_scalar(value) for value in values]
+
+
+def _as_numpy_scalar(value):
+    """Python ints and floats become NumPy floats, so 1/0 gives inf, not ZeroDivisionError."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return np.float64(value)
+    return value
+
+
+# ----------------------------------------------------------------------------
+# the Abel transform (3)
+def abel_transform(profile: sp.Expr, radial: sp.Symbol = r, coordinate: sp.Symbol = x) -> sp.Expr:
+    """MDR equivalent profile of an axisymmetric profile ``f(r)``, eq. (3).
+
+    ``g(x) = |x| ∫_0^{|x|} f'(r) / sqrt(x² − r²) dr`` (for ``x > 0``),
+    evaluated with the substitution ``r = x t`` so that SymPy meets a
+    Beta-type integral for power laws.
+    """
+    integrand = sp.diff(profile, radial).subs(radial, coordinate * t) / sp.sqrt(1 - t**2)
+    value = coordinate * sp.integrate(integrand, (t, 0, 1))
+    return sp.simplify(sp.gammasimp(sp.hyperexpand(value)))
+
+
+def _single_positive(solutions: list[sp.Expr], what: str) -> sp.Expr:
+    nonzero = [sol for sol in solutions if sol != 0]
+    if len(nonzero) != 1:
+        raise RuntimeError(f"derivation of {what}: expected one nonzero solution, got {solutions}")
+    return sp.simplify(nonzero[0])
+
+
+# ----------------------------------------------------------------------------
+@functools.cache
+def derive() -> dict[str, Relation]:
+    """Derive every relation once; returns them by key in derivation order."""
+    out: dict[str, Relation] = {}
+
+    def add(rel: Relation) -> Relation:
+        out[rel.key] = rel
+        return rel
+
+    # --- (3), (4): profiles -------------------------------------------------
+    g_abel = sp.Eq(
+        g(x),
+        x * sp.Integral(sp.Derivative(f(r), r) / sp.sqrt(x**2 - r**2), (r, 0, x)),
+    )
+    add(Relation("abel_transform", "(3)", "Abel transform to the MDR profile", g_abel.lhs, g_abel.rhs))
+    g_parab = abel_transform(r**2 / (2 * R))
+    add(Relation("profile_paraboloid", "(4)", "MDR profile of the paraboloid f = r^2/(2R)", g(x), g_parab, (x, R)))
+    g_cone = abel_transform(r * sp.tan(theta))
+    add(Relation("profile_cone", "(3)", "MDR profile of the cone f = r tan(theta)", g(x), g_cone, (x, theta)))
+
+    # --- (7), (8), (9): Heß's rule gives JKR ---------------------------------
+    displacement = d - g_parab  # (7), positive = compressed
+    add(Relation("normal_displacement", "(7)", "normal spring displacement u_z = d - g(x)",
+                 u_z, displacement, (d, x, R)))
+    hess = sp.sqrt(2 * sp.pi * a * dgamma / E_star)  # (8)
+    add(Relation("hess_max_elongation", "(8)", "Heß: maximum elongation of the boundary spring",
+                 dl_max, hess, (a, dgamma, E_star)))
+    # the boundary spring at x = a is stretched by exactly Δl_max: -u_z(a) = Δl_max
+    depth_of_radius = sp.solve(sp.Eq(-displacement.subs(x, a), hess), d)[0]
+    add(Relation("jkr_depth", "(9)", "indentation depth of the adhesive contact of radius a",
+                 d, depth_of_radius, (a, R, E_star, dgamma)))
+
+    # --- (10): normal force --------------------------------------------------
+    force_pinned = sp.expand(2 * E_star * sp.integrate(displacement, (x, 0, a)))
+    add(Relation("normal_force", "(10)", "normal force of the springs in contact, any d and a",
+                 F_N, force_pinned, (d, a, R, E_star)))
+    force_jkr = sp.simplify(sp.expand(force_pinned.subs(d, depth_of_radius)))
+    add(Relation("jkr_normal_force", "(10)", "normal force of the adhesive contact of radius a",
+                 F_N, force_jkr, (a, R, E_star, dgamma)))
+
+    # --- consequences of (9), (10) -------------------------------------------
+    hertz_radius = sp.solve(sp.Eq(d, depth_of_radius.subs(dgamma, 0)), a)[0]
+    add(Relation("hertz_radius", "(16)", "non-adhesive (Hertz) contact radius", a, hertz_radius, (d, R)))
+    hertz_force = sp.simplify(force_pinned.subs(a, hertz_radius))
+    add(Relation("hertz_normal_force", "", "Hertz normal force", F_N, hertz_force, (d, R, E_star)))
+    jump_in = _single_positive(sp.solve(sp.Eq(depth_of_radius, 0), a), "jump-in radius")
+    add(Relation("jump_in_radius", "", "contact radius at zero depth (JKR jump-in)",
+                 a, jump_in, (R, E_star, dgamma)))
+    a_force_control = _single_positive(sp.solve(sp.diff(force_jkr, a), a), "pull-off radius")
+    add(Relation("pull_off_radius", "", "radius of minimal force, dF_N/da = 0 (force control)",
+                 a, a_force_control, (R, E_star, dgamma)))
+    add(Relation("pull_off_force", "", "JKR pull-off force (minimum of F_N on a branch)",
+                 F_N, sp.simplify(force_jkr.subs(a, a_force_control)), (R, dgamma)))
+    a_jump_off = _single_positive(sp.solve(sp.diff(depth_of_radius, a), a), "jump-off radius")
+    add(Relation("jump_off_radius", "", "radius where dd/da = 0: jump-off under displacement control",
+                 a, a_jump_off, (R, E_star, dgamma)))
+    add(Relation("jump_off_depth", "", "depth at the jump-off under displacement control",
+                 d, sp.simplify(depth_of_radius.subs(a, a_jump_off)), (R, E_star, dgamma)))
+    add(Relation("jump_off_force", "", "normal force at the jump-off under displacement control",
+                 F_N, sp.simplify(force_jkr.subs(a, a_jump_off)), (R, dgamma)))
+
+    # --- (11)-(13): tangential springs ---------------------------------------
+    # (11) τ = Σ G* Δx u_x / (π a²); stationary sliding: n springs all at ū, n Δx = 2a
+    tau_stationary = (G_star * dx * n_springs * u_bar / (sp.pi * a**2)).subs(n_springs, 2 * a / dx)
+    add(Relation("stationary_shear_stress", "(12)", "mean shear stress with every spring at ū",
+                 tau0, sp.simplify(tau_stationary), (u_bar, a, G_star)))
+    critical_shift = sp.solve(sp.Eq(tau0, tau_stationary), u_bar)[0]
+    add(Relation("critical_shift", "(13)", "critical spring shift ū(a)",
+                 u_bar, critical_shift, (a, tau0, G_star)))
+
+    # --- (14), (17), (18): scenario A -----------------------------------------
+    # on the path (14) x = d / tan α; slip starts when x reaches ū(a)
+    onset_A = sp.Eq(d / tan_alpha, critical_shift)
+    d_crit_A_hertz = _single_positive(sp.solve(onset_A.subs(a, hertz_radius), d), "(17)")
+    add(Relation("d_crit_A_hertz", "(17)", "slip-onset depth, scenario A, non-adhesive",
+                 d, d_crit_A_hertz, (tan_alpha, R, tau0, G_star)))
+    cubic = _reduce_to_polynomial(tan_alpha * critical_shift, depth_of_radius, divide_by=s)
+    add(Relation("slip_A_jkr_cubic", "(18)", "scenario A with adhesion, cubic in s = sqrt(a)",
+                 cubic, sp.Integer(0), (s, tan_alpha, R, tau0, G_star, E_star, dgamma), variable=s))
+    add(Relation("slip_A_jkr_cardano", "(18)", "positive root of the cubic (Cardano)",
+                 s, _positive_cubic_root(cubic), (tan_alpha, R, tau0, G_star, E_star, dgamma)))
+    add(Relation("slip_depth_A", "(18)", "depth of slip onset from its contact radius, scenario A",
+                 d, tan_alpha * critical_shift, (a, tan_alpha, tau0, G_star)))
+    critical_angle = sp.atan(sp.solve(sp.Eq(d_max / tan_alpha, critical_shift), tan_alpha)[0])
+    add(Relation("critical_angle_A", "", "critical angle: slip onset exactly at d_max, scenario A",
+                 alpha, critical_angle, (a, d_max, tau0, G_star)))
+    critical_angle_B = sp.atan(sp.solve(sp.Eq(d, d_max - tan_alpha * critical_shift), tan_alpha)[0])
+    add(Relation("critical_angle_B", "(21)",
+                 "angle of a pull-off path (19) from d_max that reaches slip onset at (a, d)",
+                 alpha, critical_angle_B, (a, d, d_max, tau0, G_star)))
+    depth_quartic = _reduce_to_polynomial(d, depth_of_radius)
+    add(Relation("jkr_radius_quartic", "(9)", "contact radius at a given depth, quartic in s = sqrt(a)",
+                 depth_quartic, sp.Integer(0), (s, d, R, E_star, dgamma), variable=s))
+
+    # --- (19), (20), (21): scenario B -----------------------------------------
+    onset_B = sp.Eq((d_max - d) / tan_alpha, critical_shift.subs(a, hertz_radius))
+    kk = sp.pi * tau0 * sp.sqrt(R) * tan_alpha / (2 * G_star)
+    squared = sp.expand((onset_B.lhs**2 - onset_B.rhs**2) * tan_alpha**2)
+    quadratic = sp.expand(squared.subs(tau0, k * 2 * G_star / (sp.pi * sp.sqrt(R) * tan_alpha)))
+    add(Relation("slip_B_hertz_quadratic", "(20)", "scenario B non-adhesive, squared slip condition",
+                 sp.collect(quadratic, d), sp.Integer(0), (d, d_max, k), variable=d))
+    add(Relation("slip_B_hertz_k", "(20)", "k of the quadratic (20)", k, kk, (tan_alpha, R, tau0, G_star)))
+    roots = sp.solve(quadratic, d)
+    lower, upper = sorted(roots, key=lambda e: float(e.subs({d_max: 1, k: 1})))
+    add(Relation("d_crit_B_hertz_pull_off_textbook", "(20)", "smaller root of (20), as the quadratic formula gives it",
+                 d, lower, (d_max, k)))
+    # Vieta: the product of the roots is the constant coefficient d_max²; dividing it by the
+    # larger root avoids the cancellation of the quadratic formula when k² >> d_max (α → 90°).
+    product = sp.Poly(quadratic, d).all_coeffs()[-1]
+    add(Relation("d_crit_B_hertz_pull_off", "(20)", "smaller root of (20): pull-off at angle α (Vieta form)",
+                 d, product / upper, (d_max, k)))
+    add(Relation("d_crit_B_hertz_indentation", "(20)", "larger root of (20): indentation at angle α from d_max",
+                 d, upper, (d_max, k)))
+    for sign, branch in ((-1, "pull_off"), (+1, "indentation")):
+        quartic = _reduce_to_polynomial(d_max + sign * tan_alpha * critical_shift, depth_of_radius)
+        add(Relation(f"slip_B_jkr_quartic_{branch}", "(21)",
+                     f"scenario B with adhesion ({'−' if sign < 0 else '+'} sign), quartic in s = sqrt(a)",
+                     quartic, sp.Integer(0), (s, tan_alpha, d_max, R, tau0, G_star, E_star, dgamma), variable=s))
+        add(Relation(f"slip_depth_B_{branch}", "(21)", "depth of slip onset from its contact radius, scenario B",
+                     d, d_max + sign * tan_alpha * critical_shift, (a, tan_alpha, d_max, tau0, G_star)))
+    return out
+
+
+@functools.cache
+def derive_power_law() -> Relation:
+    """The MDR profile of ``f = c r^n`` for general ``n`` (eq. (3)).
+
+    Kept apart from :func:`derive` because SymPy needs several seconds for
+    the general Beta-type integral; the paraboloid (4) and the cone are its
+    cases ``n = 2, c = 1/(2R)`` and ``n = 1, c = tan θ`` (the tests check it).
+    """
+    return Relation("profile_power_law", "(3)", "MDR profile of f = c r^n", g(x),
+                    abel_transform(c * r**n), (x, c, n))
+
+
+def _reduce_to_polynomial(depth_a: sp.Expr, depth_b: sp.Expr, divide_by: sp.Expr | None = None) -> sp.Expr:
+    """Eliminate ``d`` from ``d = depth_a(a)`` and ``d = depth_b(a)``.
+
+    Returns the monic polynomial in ``s = sqrt(a)`` whose positive roots are
+    the solutions, optionally divided by a trivial factor (``s``).
+    """
+    difference = (depth_a - depth_b).subs(a, s**2)
+    poly_expr = sp.expand(sp.powsimp(difference, force=True))
+    if divide_by is not None:
+        poly_expr = sp.expand(sp.cancel(poly_expr / divide_by))
+    poly = sp.Poly(poly_expr, s)
+    monic = poly.monic()
+    return sp.expand(monic.as_expr())
+
+
+def _positive_cubic_root(cubic: sp.Expr) -> sp.Expr:
+    """Cardano's root of the depressed cubic ``s³ − p s − q`` (p, q > 0) that is positive.
+
+    Descartes' rule (one sign change) gives exactly one positive root. With
+    principal complex branches it is ``u + p/(3u)``, ``u = (q/2 + sqrt(q²/4 − p³/27))^(1/3)``,
+    also when all three roots are real (then it equals ``2 Re u``). Which of
+    SymPy's three solutions that is depends on its ordering, so it is picked
+    by evaluation at one point of each regime (three real roots, one real root).
+    """
+    free = sorted(cubic.free_symbols - {s}, key=lambda sym: sym.name)
+    samples = [
+        {sym: (3.0 if sym == tan_alpha else 1.0) for sym in free},   # three real roots
+        {sym: (0.1 if sym == tan_alpha else 1.0) for sym in free},   # one real root
+    ]
+    for root in sp.solve(cubic, s):
+        values = [complex(root.evalf(subs=sample)) for sample in samples]
+        if all(abs(v.imag) < 1e-12 * abs(v) and v.real > 0 for v in values):
+            return root
+    raise RuntimeError("no Cardano root of the cubic (18) is positive in both regimes")
+
+
+def relations() -> dict[str, Relation]:
+    """All derived relations by key, in derivation order (derived once, then cached)."""
+    model = derive()
+    power_law = derive_power_law()
+    ordered = {"abel_transform": model["abel_transform"], power_law.key: power_law}
+    ordered.update(model)
+    return ordered
+
+
+def relation(key: str) -> Relation:
+    """One derived relation by key; ``KeyError`` lists the known keys."""
+    if key == "profile_power_law":
+        return derive_power_law()
+    rels = derive()
+    try:
+        return rels[key]
+    except KeyError:
+        known = sorted([*rels, "profile_power_law"])
+        raise KeyError(f"unknown relation {key!r}; known: {known}") from None

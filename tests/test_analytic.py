@@ -1,0 +1,190 @@
+"""Closed forms against brentq on the unreduced system, limits and the paper's numbers."""
+
+import math
+
+import numpy as np
+import pytest
+from scipy import optimize
+
+import mdr_events as me
+from mdr_events import analytic
+
+ANGLES = np.linspace(0.5, 85.0, 60)
+
+
+# --- an independent, hand-typed statement of the model, used only as a check -----
+def jkr_depth(a, p, dgamma):
+    return a**2 / p.R - math.sqrt(2 * math.pi * a * dgamma / p.E_star)
+
+
+def u_bar(a, p):
+    return math.pi * a * p.tau0 / (2 * p.G_star)
+
+
+def brentq_d_crit_A(alpha, p):
+    tan = math.tan(math.radians(alpha))
+    f = lambda a: jkr_depth(a, p, p.dgamma0) - tan * u_bar(a, p)  # noqa: E731
+    lo = (2 * math.pi * p.dgamma0 * p.R**2 / p.E_star) ** (1 / 3) * 0.999  # below: f < 0
+    hi = 1.0
+    a = optimize.brentq(f, lo * 1e-3, hi, xtol=1e-16, rtol=1e-15)
+    return tan * u_bar(a, p)
+
+
+def brentq_d_crit_B(alpha, p, branch):
+    tan = math.tan(math.radians(alpha))
+    sign, dgamma = (-1, p.dgamma1) if branch == "pull-off" else (1, p.dgamma0)
+    f = lambda a: jkr_depth(a, p, dgamma) - (p.d_max + sign * tan * u_bar(a, p))  # noqa: E731
+    a_jo = (math.pi * dgamma * p.R**2 / (8 * p.E_star)) ** (1 / 3)
+    if f(a_jo) > 0:  # the line meets only the unstable branch: jump-off first
+        return -math.inf
+    a = optimize.brentq(f, a_jo, 1.0, xtol=1e-16, rtol=1e-15)
+    return p.d_max + sign * tan * u_bar(a, p)
+
+
+# ------------------------------------------------------------------------------------
+def test_scenario_A_hertz_is_eq_17(paper):
+    tan = np.tan(np.radians(ANGLES))
+    expected = math.pi**2 * paper.tau0**2 * paper.R * tan**2 / (4 * paper.G_star**2)
+    np.testing.assert_allclose(me.d_crit(ANGLES, paper, "A"), expected, rtol=1e-13)
+
+
+@pytest.mark.parametrize("params", ["paper", "paper_r100"])
+def test_scenario_A_adhesive_against_brentq(params, request):
+    p = request.getfixturevalue(params)
+    ours = me.d_crit(ANGLES, p, "A", adhesion=True)
+    expected = [brentq_d_crit_A(a, p) for a in ANGLES]
+    np.testing.assert_allclose(ours, expected, rtol=1e-11)
+
+
+@pytest.mark.parametrize("branch", ["pull-off", "indentation"])
+@pytest.mark.parametrize("params", ["paper", "paper_r100"])
+def test_scenario_B_adhesive_against_brentq(branch, params, request):
+    p = request.getfixturevalue(params)
+    ours = me.d_crit(ANGLES, p, "B", adhesion=True, branch=branch)
+    expected = np.array([brentq_d_crit_B(a, p, branch) for a in ANGLES])
+    assert np.array_equal(np.isinf(ours), np.isinf(expected))
+    finite = np.isfinite(expected)
+    np.testing.assert_allclose(ours[finite], expected[finite], rtol=1e-10, atol=1e-18)
+    if branch == "pull-off":
+        assert np.any(ours[finite] < 0), "the adhesive pull-off curve goes below d = 0 (paper, Fig. 9b)"
+
+
+@pytest.mark.parametrize("branch, sign", [("pull-off", 1), ("indentation", -1)])
+def test_scenario_B_hertz_against_brentq_on_the_unsquared_equation(paper, branch, sign):
+    for alpha in ANGLES:
+        tan = math.tan(math.radians(alpha))
+        f = lambda d: sign * (paper.d_max - d) / tan - u_bar(math.sqrt(paper.R * d), paper)  # noqa: E731
+        bracket = (1e-30, paper.d_max) if branch == "pull-off" else (paper.d_max, 1e3)
+        expected = optimize.brentq(f, *bracket, xtol=1e-20, rtol=1e-14)
+        assert me.d_crit(alpha, paper, "B", branch=branch) == pytest.approx(expected, rel=1e-9)
+
+
+def test_product_of_the_roots_of_20_is_d_max_squared(paper):
+    lower = me.d_crit(ANGLES, paper, "B", branch="pull-off")
+    upper = me.d_crit(ANGLES, paper, "B", branch="indentation")
+    np.testing.assert_allclose(lower * upper, paper.d_max**2, rtol=1e-11)
+
+
+def test_zero_adhesion_gives_the_non_adhesive_curves(paper):
+    p0 = paper.replace(dgamma0=0.0, dgamma1=0.0)
+    np.testing.assert_allclose(me.d_crit(ANGLES, p0, "A", adhesion=True), me.d_crit(ANGLES, p0, "A"), rtol=1e-12)
+    for branch in analytic.BRANCHES:
+        np.testing.assert_allclose(me.d_crit(ANGLES, p0, "B", adhesion=True, branch=branch),
+                                   me.d_crit(ANGLES, p0, "B", branch=branch), rtol=1e-11)
+    # and small adhesion converges to them
+    gaps = [np.max(np.abs(me.d_crit(ANGLES, paper.replace(dgamma0=g), "A", adhesion=True)
+                          - me.d_crit(ANGLES, paper, "A"))) for g in (1e-4, 1e-6, 1e-8)]
+    assert gaps[0] > gaps[1] > gaps[2]
+
+
+def test_limits_at_90_and_0_degrees(paper):
+    for adhesion in (False, True):
+        assert me.d_crit(90.0, paper, "A", adhesion=adhesion) == math.inf
+        assert me.d_crit(90.0, paper, "B", adhesion=adhesion, branch="indentation") == math.inf
+        assert me.d_crit(90.0, paper, "B", adhesion=adhesion, branch="pull-off") == -math.inf
+        assert me.d_crit(0.0, paper, "A", adhesion=adhesion) == 0.0
+        small = me.d_crit(1e-7, paper, "A", adhesion=adhesion)
+        assert 0.0 < small < 1e-12
+        for branch in analytic.BRANCHES:
+            assert me.d_crit(0.0, paper, "B", adhesion=adhesion, branch=branch) == pytest.approx(paper.d_max, rel=1e-12)
+            assert me.d_crit(1e-6, paper, "B", adhesion=adhesion, branch=branch) == pytest.approx(paper.d_max, rel=1e-6)
+    # Hertz pull-off tends to 0 as α → 90° like d_max²/k²: slip just before the contact vanishes
+    for alpha in (89.0, 89.99, 89.9999):
+        k = math.pi * paper.tau0 * math.sqrt(paper.R) * math.tan(math.radians(alpha)) / (2 * paper.G_star)
+        expected = paper.d_max**2 / (math.sqrt(paper.d_max + k**2 / 4) + k / 2) ** 2
+        assert me.d_crit(alpha, paper, "B", branch="pull-off") == pytest.approx(expected, rel=1e-13)
+
+
+def test_monotone_in_angle(paper):
+    for adhesion in (False, True):
+        assert np.all(np.diff(me.d_crit(ANGLES, paper, "A", adhesion=adhesion)) > 0)
+        assert np.all(np.diff(me.d_crit(ANGLES, paper, "B", adhesion=adhesion, branch="indentation")) > 0)
+        pull = me.d_crit(ANGLES, paper, "B", adhesion=adhesion, branch="pull-off")
+        assert np.all(np.diff(pull[np.isfinite(pull)]) < 0)
+
+
+def test_critical_angles_of_the_paper(paper, paper_r100):
+    assert me.critical_angle(paper, "A", adhesion=False) == pytest.approx(23.59, abs=0.02)
+    assert me.critical_angle(paper, "A", adhesion=True) == pytest.approx(22.87, abs=0.02)
+    for adhesion in (False, True):
+        alpha_c = me.critical_angle(paper, "A", adhesion=adhesion)
+        assert me.d_crit(alpha_c, paper, "A", adhesion=adhesion) == pytest.approx(paper.d_max, rel=1e-11)
+        larger = me.critical_angle(paper_r100, "A", adhesion=adhesion)
+        assert math.isfinite(larger) and 0 < larger < alpha_c
+
+
+def test_critical_angle_of_scenario_B(paper):
+    assert me.critical_angle(paper, "B", adhesion=False) == 90.0
+    alpha_b = me.critical_angle(paper, "B", adhesion=True)
+    jump = me.jump_off(paper, paper.dgamma1)
+    assert me.d_crit(alpha_b - 1e-6, paper, "B", adhesion=True) == pytest.approx(jump["depth"], rel=1e-5)
+    assert me.d_crit(alpha_b + 1e-6, paper, "B", adhesion=True) == -math.inf
+
+
+def test_no_shear_strength_means_immediate_slip(paper):
+    p = paper.replace(tau0=0.0)
+    assert me.d_crit(30.0, p, "A") == 0.0
+    assert me.d_crit(30.0, p, "A", adhesion=True) == 0.0
+    assert me.critical_angle(p, "A") == 90.0
+
+
+def test_shapes_scalars_and_bad_input(paper):
+    assert isinstance(me.d_crit(30.0, paper), float)
+    grid = np.linspace(0, 90, 12).reshape(3, 4)
+    assert me.d_crit(grid, paper, "B", adhesion=True).shape == (3, 4)
+    with pytest.raises(ValueError, match=r"alpha=91.0 .*\[0, 90\]"):
+        me.d_crit([10.0, 91.0], paper)
+    with pytest.raises(ValueError, match="alpha=nan"):
+        me.d_crit(np.nan, paper)
+    with pytest.raises(ValueError, match="scenario='C'"):
+        me.d_crit(10.0, paper, scenario="C")
+    with pytest.raises(ValueError, match="branch='up'"):
+        me.d_crit(10.0, paper, scenario="B", branch="up")
+    with pytest.raises(TypeError, match="adhesion"):
+        me.d_crit(10.0, paper, adhesion="yes")
+
+
+def test_jkr_round_trip_radius_depth_force(paper):
+    g = paper.dgamma1
+    jump = me.jump_off(paper, g)
+    radius = np.geomspace(jump["contact_radius"] * 1.0001, 5e-3, 50)
+    depth = me.jkr_depth(radius, paper, g)
+    np.testing.assert_allclose(me.jkr_contact_radius(depth, paper, g), radius, rtol=1e-9)
+    force = me.jkr_normal_force(radius, paper, g)
+    assert force.min() >= me.pull_off_force(paper, g) * (1 + 1e-12)
+    assert me.pull_off_force(paper, g) == pytest.approx(-1.5 * math.pi * g * paper.R, rel=1e-14)
+    assert np.isnan(me.jkr_contact_radius(jump["depth"] * 1.01, paper, g))
+    assert me.jkr_contact_radius(0.0, paper, g) == pytest.approx(analytic.jump_in_radius(paper, g), rel=1e-12)
+    # Hertz limit
+    assert me.jkr_contact_radius(1e-4, paper, 0.0) == pytest.approx(math.sqrt(paper.R * 1e-4), rel=1e-14)
+
+
+def test_polynomial_root_solver_against_numpy_roots():
+    rng = np.random.default_rng(1)
+    for _ in range(200):
+        coeffs = [1.0, *rng.normal(size=3)]
+        coeffs[-1] = -abs(coeffs[-1]) - 1e-3  # p(0) < 0: a positive root exists
+        roots = np.roots(coeffs)
+        real = roots[np.abs(roots.imag) < 1e-9].real
+        ours = analytic.positive_polynomial_root(coeffs)
+        assert ours == pytest.approx(real.max(), rel=1e-9)

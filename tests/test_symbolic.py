@@ -1,0 +1,185 @@
+"""SymPy results against quadrature, finite differences and the unreduced statements."""
+
+import math
+
+import numpy as np
+import pytest
+import sympy as sp
+from scipy import integrate, optimize
+
+from mdr_events import symbolic
+from mdr_events.symbolic import relation
+
+R, E_STAR, G_STAR, TAU0, DGAMMA, D_MAX = 0.03, 0.432e6, 0.288e6, 42e3, 0.15, 0.3e-3
+
+
+def abel_quadrature(df, x):
+    """g(x) = x ∫_0^x f'(r)/sqrt(x²−r²) dr with r = x sin φ (no endpoint singularity)."""
+    value, _ = integrate.quad(lambda phi: df(x * np.sin(phi)), 0.0, np.pi / 2, epsabs=0, epsrel=1e-13)
+    return x * value
+
+
+@pytest.mark.parametrize("n", [1.0, 1.5, 2.0, 3.0, 4.5])
+def test_power_law_abel_transform_against_quadrature(n):
+    c, x = 2.7, 0.8
+    rel = relation("profile_power_law")
+    expected = abel_quadrature(lambda r: c * n * r ** (n - 1), x)
+    assert float(rel.numeric(x, c, n)) == pytest.approx(expected, rel=1e-11)
+
+
+def test_paraboloid_and_cone_are_cases_of_the_power_law():
+    power = relation("profile_power_law").rhs
+    s = symbolic
+    paraboloid = power.subs({s.n: 2, s.c: 1 / (2 * s.R)})
+    assert sp.simplify(paraboloid - relation("profile_paraboloid").rhs) == 0
+    assert sp.simplify(relation("profile_paraboloid").rhs - s.x**2 / s.R) == 0
+    cone = power.subs({s.n: 1, s.c: sp.tan(s.theta)})
+    assert sp.simplify(cone - relation("profile_cone").rhs) == 0
+    x = 1.3e-3
+    assert float(relation("profile_paraboloid").numeric(x, R)) == pytest.approx(
+        abel_quadrature(lambda r: r / R, x), rel=1e-12)
+
+
+def test_jkr_depth_satisfies_hess_rule_at_the_boundary():
+    """(9): the boundary spring's elongation −u_z(a) equals Δl_max(a) of (8)."""
+    for a in (1e-4, 1e-3, 3e-3):
+        d = relation("jkr_depth").numeric(a, R, E_STAR, DGAMMA)
+        elongation = -relation("normal_displacement").numeric(d, a, R)
+        assert elongation == pytest.approx(math.sqrt(2 * math.pi * a * DGAMMA / E_STAR), rel=1e-13)
+
+
+def test_normal_force_is_the_integral_of_the_springs():
+    """(10): F_N = 2 E* ∫_0^a (d − g(x)) dx, checked by quadrature and by a fine spring sum."""
+    for a in (5e-4, 2e-3):
+        d = relation("jkr_depth").numeric(a, R, E_STAR, DGAMMA)
+        quad, _ = integrate.quad(lambda x: E_STAR * (d - x**2 / R), -a, a, epsrel=1e-13)
+        assert relation("jkr_normal_force").numeric(a, R, E_STAR, DGAMMA) == pytest.approx(quad, rel=1e-11)
+        n = 200_000
+        dx = 2 * a / n
+        x = -a + dx * (np.arange(n) + 0.5)
+        springs = np.sum(E_STAR * dx * (d - x**2 / R))
+        assert springs == pytest.approx(quad, rel=1e-8)
+
+
+def test_pull_off_force_is_the_minimum_of_the_jkr_force():
+    force = lambda a: relation("jkr_normal_force").numeric(a, R, E_STAR, DGAMMA)  # noqa: E731
+    res = optimize.minimize_scalar(force, bounds=(1e-5, 1e-2), method="bounded",
+                                   options={"xatol": 1e-12})
+    assert res.fun == pytest.approx(-1.5 * math.pi * DGAMMA * R, rel=1e-9)
+    assert relation("pull_off_force").numeric(R, DGAMMA) == pytest.approx(-1.5 * math.pi * DGAMMA * R, rel=1e-14)
+    assert relation("pull_off_radius").numeric(R, E_STAR, DGAMMA) == pytest.approx(res.x, rel=1e-5)
+
+
+def test_jump_off_radius_zeroes_the_finite_difference_slope():
+    a = relation("jump_off_radius").numeric(R, E_STAR, DGAMMA)
+    assert a**3 == pytest.approx(math.pi * DGAMMA * R**2 / (8 * E_STAR), rel=1e-13)
+    depth = lambda x: relation("jkr_depth").numeric(x, R, E_STAR, DGAMMA)  # noqa: E731
+    h = a * 1e-5
+    slope = (depth(a + h) - depth(a - h)) / (2 * h)
+    scale = abs(depth(a)) / a
+    assert abs(slope) < 1e-8 * scale
+    assert relation("jump_off_depth").numeric(R, E_STAR, DGAMMA) == pytest.approx(depth(a), rel=1e-13)
+    assert relation("jump_off_force").numeric(R, DGAMMA) == pytest.approx(
+        relation("jkr_normal_force").numeric(a, R, E_STAR, DGAMMA), rel=1e-12)
+
+
+def test_jump_in_radius_is_the_zero_depth_radius():
+    a0 = relation("jump_in_radius").numeric(R, E_STAR, DGAMMA)
+    assert relation("jkr_depth").numeric(a0, R, E_STAR, DGAMMA) == pytest.approx(0.0, abs=1e-15)
+
+
+def test_hertz_limits_of_the_jkr_relations():
+    d = 2e-4
+    a = relation("hertz_radius").numeric(d, R)
+    assert a == pytest.approx(math.sqrt(R * d), rel=1e-15)
+    assert relation("jkr_depth").numeric(a, R, E_STAR, 0.0) == pytest.approx(d, rel=1e-14)
+    assert relation("hertz_normal_force").numeric(d, R, E_STAR) == pytest.approx(
+        4 * E_STAR * math.sqrt(R) * d**1.5 / 3, rel=1e-14)
+
+
+def test_critical_shift_makes_a_uniform_spring_field_carry_tau0():
+    """(11)–(13): n discrete springs all at ū(a) give the mean shear stress τ0."""
+    a = 2e-3
+    u_bar = relation("critical_shift").numeric(a, TAU0, G_STAR)
+    for n in (10, 101, 4000):
+        dx = 2 * a / n
+        force = np.sum(np.full(n, G_STAR * dx * u_bar))
+        assert force / (math.pi * a**2) == pytest.approx(TAU0, rel=1e-12)
+
+
+def test_d_crit_17_solves_the_unreduced_statement():
+    for tan in (0.1, 0.5, 2.0):
+        d = relation("d_crit_A_hertz").numeric(tan, R, TAU0, G_STAR)
+        shift = relation("critical_shift").numeric(math.sqrt(R * d), TAU0, G_STAR)
+        assert d / tan == pytest.approx(shift, rel=1e-13)
+
+
+@pytest.mark.parametrize("tan", [0.05, 0.4, 3.0])
+def test_cubic_18_roots_solve_the_system(tan):
+    rel = relation("slip_A_jkr_cubic")
+    coeffs = [complex(c) for c in np.broadcast_arrays(*rel.coefficients(tan, R, TAU0, G_STAR, E_STAR, 0.01))]
+    roots = np.roots([c.real for c in coeffs])
+    positive = [r.real for r in roots if abs(r.imag) < 1e-12 and r.real > 0]
+    assert len(positive) == 1
+    a = positive[0] ** 2
+    d_path = tan * math.pi * a * TAU0 / (2 * G_STAR)
+    d_jkr = a**2 / R - math.sqrt(2 * math.pi * a * 0.01 / E_STAR)
+    assert d_path == pytest.approx(d_jkr, rel=1e-10)
+    cardano = complex(relation("slip_A_jkr_cardano").numeric(complex(tan), R, TAU0, G_STAR, E_STAR, 0.01))
+    assert cardano.real == pytest.approx(positive[0], rel=1e-10)
+    assert abs(cardano.imag) < 1e-10 * abs(cardano)
+
+
+def test_vieta_form_of_the_smaller_root_equals_the_quadratic_formula():
+    s = symbolic
+    vieta = relation("d_crit_B_hertz_pull_off").rhs
+    textbook = relation("d_crit_B_hertz_pull_off_textbook").rhs
+    assert sp.simplify(sp.radsimp(vieta - textbook)) == 0
+    assert s.d_max in vieta.free_symbols
+
+
+def test_quadratic_20_roots_and_their_product():
+    for k in (1e-3, 1e-2, 0.05):
+        lower = relation("d_crit_B_hertz_pull_off").numeric(D_MAX, k)
+        upper = relation("d_crit_B_hertz_indentation").numeric(D_MAX, k)
+        assert lower * upper == pytest.approx(D_MAX**2, rel=1e-12)
+        assert lower <= D_MAX <= upper
+        # the paper's form (sqrt(d_max + k²/4) ± k/2)²
+        assert lower == pytest.approx((math.sqrt(D_MAX + k**2 / 4) - k / 2) ** 2, rel=1e-10)
+        assert upper == pytest.approx((math.sqrt(D_MAX + k**2 / 4) + k / 2) ** 2, rel=1e-12)
+        # and the unsquared statement (d_max − d)/tan α = ū(sqrt(R d)) with k = π τ0 sqrt(R) tan α/(2G*)
+        tan = k * 2 * G_STAR / (math.pi * TAU0 * math.sqrt(R))
+        for d, sign in ((lower, 1), (upper, -1)):
+            shift = relation("critical_shift").numeric(math.sqrt(R * d), TAU0, G_STAR)
+            assert sign * (D_MAX - d) / tan == pytest.approx(shift, rel=1e-9)
+
+
+@pytest.mark.parametrize("branch, sign, dgamma", [("pull_off", -1, 0.15), ("indentation", +1, 0.01)])
+def test_quartics_21_have_one_positive_root_solving_the_system(branch, sign, dgamma):
+    rel = relation(f"slip_B_jkr_quartic_{branch}")
+    for tan in (0.1, 0.7, 4.0):
+        coeffs = np.array([float(c) for c in rel.coefficients(tan, D_MAX, R, TAU0, G_STAR, E_STAR, dgamma)])
+        roots = np.roots(coeffs)
+        positive = [r.real for r in roots if abs(r.imag) < 1e-9 * abs(r) and r.real > 0]
+        assert len(positive) == 1
+        a = positive[0] ** 2
+        d_path = D_MAX + sign * tan * math.pi * a * TAU0 / (2 * G_STAR)
+        d_jkr = a**2 / R - math.sqrt(2 * math.pi * a * dgamma / E_STAR)
+        assert d_path == pytest.approx(d_jkr, rel=1e-8, abs=1e-15)
+
+
+def test_relations_print_and_numeric_argument_checks():
+    rels = symbolic.relations()
+    for key in ("jkr_depth", "slip_A_jkr_cubic", "slip_B_jkr_quartic_pull_off", "profile_power_law"):
+        assert key in rels
+        assert rels[key].latex()
+        assert rels[key].pretty()
+    assert r"\Delta\gamma" in relation("jkr_depth").latex()
+    rel = relation("jkr_depth")
+    assert rel.numeric(a=1e-3, R=R, E_star=E_STAR, dgamma=DGAMMA) == rel.numeric(1e-3, R, E_STAR, DGAMMA)
+    with pytest.raises(TypeError, match="missing"):
+        rel.numeric(a=1e-3)
+    with pytest.raises(TypeError, match="not a polynomial"):
+        rel.coefficients(1.0)
+    with pytest.raises(KeyError, match="unknown relation"):
+        relation("nope")
