@@ -1,0 +1,97 @@
+# ---
+# jupyter:
+#   jupytext:
+#     formats: py:percent
+#     text_representation:
+#       extension: .py
+#       format_name: percent
+# ---
+
+# %% [markdown]
+# # 3. Slip onset and the phase diagrams, eqs. (17), (18), (20), (21)
+#
+# On a straight path the indenter's tangential travel is tied to its depth,
+# `x = d / tan α` (scenario A, (14)) or `x = (d_max − d) / tan α` (scenario B,
+# (19)). The springs attached first carry the largest shift, so slip starts
+# when that travel equals `ū(a)` (13), with `a` from Hertz (16) or JKR (9).
+
+# %%
+import math
+
+import numpy as np
+
+import mdr_events as me
+from mdr_events.symbolic import relation
+
+p = me.Parameters.paper()
+tan = math.tan(math.radians(30.0))
+
+# %% [markdown]
+# ## (17): scenario A, non-adhesive — solved for `d`
+
+# %%
+relation("d_crit_A_hertz").eq
+
+# %% [markdown]
+# ## (18): scenario A with adhesion
+# Eliminating `d` between `d = tan α · ū(a)` and (9) and writing `a = s²`
+# leaves, after dividing by `s`, a cubic with one sign change, hence exactly
+# one positive root (Descartes). Cardano's formula gives it in closed form.
+
+# %%
+cubic = relation("slip_A_jkr_cubic")
+cubic.eq
+
+# %%
+relation("slip_A_jkr_cardano").eq
+
+# %%
+s = complex(relation("slip_A_jkr_cardano").numeric(complex(tan), p.R, p.tau0, p.G_star, p.E_star, p.dgamma0)).real
+a = s**2
+assert math.isclose(tan * me.critical_shift(a, p), float(me.jkr_depth(a, p, p.dgamma0)), rel_tol=1e-10)
+assert math.isclose(me.d_crit(30.0, p, "A", adhesion=True), tan * me.critical_shift(a, p), rel_tol=1e-10)
+
+# %% [markdown]
+# ## (20): scenario B, non-adhesive — a quadratic in `d`
+# Squaring `(d_max − d)/tan α = ū(sqrt(R d))` gives
+# `d² − (2 d_max + k²) d + d_max² = 0`; the smaller root is pull-off at α,
+# the larger continued indentation at α from `d_max`. Their product is `d_max²`.
+
+# %%
+relation("slip_B_hertz_quadratic").eq, relation("slip_B_hertz_k").eq
+
+# %%
+lower = me.d_crit(30.0, p, "B", branch="pull-off")
+upper = me.d_crit(30.0, p, "B", branch="indentation")
+assert math.isclose(lower * upper, p.d_max**2, rel_tol=1e-12)
+
+# %% [markdown]
+# ## (21): scenario B with adhesion — a quartic in `s`
+# `±(d − d_max)/tan α = ū(a)` with (9); "−" (pull-off) uses `Δγ1`, "+"
+# (indentation) `Δγ0`. Each quartic again has exactly one positive root. On
+# the pull-off branch it may lie below the jump-off radius: then the contact
+# separates before anything slides.
+
+# %%
+relation("slip_B_jkr_quartic_pull_off").eq
+
+# %%
+relation("slip_B_jkr_quartic_indentation").eq
+
+# %%
+alpha = np.linspace(0, 90, 10)
+print(np.round(me.d_crit(alpha, p, "B", adhesion=True) * 1e3, 4), "mm")
+d_pull = me.d_crit(40.0, p, "B", adhesion=True)
+a_pull = float(me.jkr_contact_radius(d_pull, p, p.dgamma1))
+assert math.isclose((p.d_max - d_pull) / math.tan(math.radians(40.0)), me.critical_shift(a_pull, p), rel_tol=1e-9)
+
+# %% [markdown]
+# ## Critical angles
+# Scenario A: `d_crit(α_c) = d_max`. With the inferred `E = 0.324 MPa`,
+# `ν = 0.5`, both numbers the paper states come out:
+
+# %%
+print("alpha_c Hertz", round(me.critical_angle(p, "A", adhesion=False), 3), "(paper 23.59)")
+print("alpha_c JKR  ", round(me.critical_angle(p, "A", adhesion=True), 3), "(paper 22.87)")
+assert abs(me.critical_angle(p, "A", adhesion=False) - 23.59) < 0.02
+assert abs(me.critical_angle(p, "A", adhesion=True) - 22.87) < 0.02

@@ -1,0 +1,64 @@
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import mdr_events as me
+from mdr_events.cli import main
+
+
+def run(capsys, *argv):
+    status = main(list(argv))
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+@pytest.mark.parametrize(
+    "argv, fragment",
+    [
+        (["phase-diagram", "--scenario", "C", "--out", "x"], "--scenario"),
+        (["phase-diagram", "--scenario", "A", "--E", "-1", "--out", "x"], "Parameters.E=-1.0"),
+        (["phase-diagram", "--scenario", "A", "--nu", "0.7", "--out", "x"], "Parameters.nu=0.7"),
+        (["phase-diagram", "--scenario", "A", "--E", "abc", "--out", "x"], "--E"),
+        (["phase-diagram", "--scenario", "A"], "--out"),
+        (["phase-diagram", "--scenario", "A", "--preset", "paper-R50", "--out", "x"], "--preset"),
+        (["derive", "--key", "nope"], "unknown relation 'nope'"),
+        (["frobnicate"], "frobnicate"),
+        ([], "command"),
+    ],
+)
+def test_bad_arguments_one_line_exit_2(capsys, tmp_path, argv, fragment):
+    status, out, err = run(capsys, *argv)
+    assert status == 2
+    assert err.count("\n") == 1 and err.startswith("mdr-events: error:")
+    assert fragment in err
+    assert "Traceback" not in err
+
+
+def test_derive_pretty_and_latex(capsys):
+    status, out, _ = run(capsys, "derive", "--key", "jkr_depth")
+    assert status == 0 and "jkr_depth (9)" in out
+    status, out, _ = run(capsys, "derive", "--latex", "--key", "slip_A_jkr_cubic")
+    assert status == 0 and r"\tau_{0}" in out
+
+
+@pytest.mark.parametrize("scenario", ["A", "B"])
+def test_phase_diagram_writes_nc_and_png(capsys, tmp_path, scenario):
+    status, out, _ = run(capsys, "phase-diagram", "--scenario", scenario, "--preset", "paper-R100",
+                         "--tau0", "30000", "--out", str(tmp_path))
+    assert status == 0
+    ds = me.open_result(tmp_path / f"phase_diagram_{scenario}.nc")
+    assert ds.attrs["param_R"] == 0.1 and ds.attrs["param_tau0"] == 30000.0
+    assert (tmp_path / f"phase_diagram_{scenario}.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_console_script_is_installed_and_exits_2():
+    exe = shutil.which("mdr-events") or str(Path(sys.executable).parent / "mdr-events")
+    if not Path(exe).exists():
+        pytest.skip("console script not installed (package not pip-installed)")
+    result = subprocess.run([exe, "phase-diagram", "--scenario", "Z", "--out", "x"],
+                            capture_output=True, text=True)
+    assert result.returncode == 2
+    assert result.stderr.count("\n") == 1
