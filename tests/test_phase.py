@@ -66,3 +66,9 @@ def test_figures_are_drawn_and_deterministic(paper, scenario, tmp_path):
         assert ax.get_xlabel().endswith("(°)") and "(mm)" in ax.get_ylabel()
         paths.append(save_figure(ax.figure, tmp_path / name))
     assert paths[0].read_bytes() == paths[1].read_bytes()
+
+
+def test_same_input_same_bytes(paper, tmp_path):
+    first = me.write_netcdf(me.phase_diagram(paper, scenario="B"), tmp_path / "a.nc").read_bytes()
+    second = me.write_netcdf(me.phase_diagram(paper, scenario="B"), tmp_path / "b.nc").read_bytes()
+    assert first == second
