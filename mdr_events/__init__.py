@@ -25,12 +25,15 @@ from .analytic import (
 )
 from .datasets import DOI, open_result, write_netcdf
 from .parameters import Parameters
+from .paths import Path
 from .phase import phase_diagram
+from .simulate import simulate
 
 __all__ = [
     "__version__",
     "DOI",
     "Parameters",
+    "Path",
     "critical_angle",
     "critical_shift",
     "d_crit",
@@ -41,5 +44,6 @@ __all__ = [
     "open_result",
     "phase_diagram",
     "pull_off_force",
+    "simulate",
     "write_netcdf",
 ]

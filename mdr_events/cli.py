@@ -1,4 +1,4 @@
-"""Command line: ``mdr-events derive | phase-diagram | reproduce``.
+"""Command line: ``mdr-events derive | phase-diagram | simulate | reproduce``.
 
 Bad arguments print one line ``mdr-events: error: ...`` on stderr and exit
 with status 2 (no traceback).
@@ -75,6 +75,27 @@ def _command_phase_diagram(args: argparse.Namespace) -> None:
         print(path)
 
 
+def write_simulation(dataset, out: Path, stem: str, overlay=None) -> list[Path]:
+    """Write a simulation dataset as ``stem.nc`` and its figure as ``stem.png``."""
+    from .datasets import write_netcdf
+    from .plotting import plot_simulation, save_figure
+
+    written = [write_netcdf(dataset, out / f"{stem}.nc")]
+    written.append(save_figure(plot_simulation(dataset, overlay=overlay), out / f"{stem}.png"))
+    return written
+
+
+def _command_simulate(args: argparse.Namespace) -> None:
+    from .simulate import simulate
+
+    params = _parameters(args)
+    dataset = simulate(params, args.scenario, alpha=args.alpha, method=args.method, dx=args.dx,
+                       dt=args.dt, n_steps=args.n_steps)
+    stem = f"simulation_{args.scenario.replace('+', 'plus')}_{args.method}"
+    for path in write_simulation(dataset, Path(args.out), stem):
+        print(path)
+
+
 def _command_reproduce(args: argparse.Namespace) -> None:
     from .report import reproduce
 
@@ -98,6 +119,21 @@ def build_parser() -> argparse.ArgumentParser:
     phase.add_argument("--out", required=True, help="output directory")
     _parameter_options(phase)
     phase.set_defaults(run=_command_phase_diagram)
+
+    from .simulate import DEFAULT_DX, METHODS, SCENARIO_NAMES
+
+    sim = commands.add_parser("simulate", help="simulate Fig. 8 (A) / Fig. 10 (B); write .nc and .png")
+    sim.add_argument("--scenario", choices=list(SCENARIO_NAMES), required=True)
+    sim.add_argument("--method", choices=list(METHODS), default="discrete")
+    sim.add_argument("--alpha", type=float, nargs="+", default=None, metavar="DEG",
+                     help="angles in degrees (default 10 20 ... 80)")
+    sim.add_argument("--dx", type=float, default=DEFAULT_DX, help=f"spring spacing in m (default {DEFAULT_DX:g})")
+    steps = sim.add_mutually_exclusive_group()
+    steps.add_argument("--dt", type=float, default=None, help="time step in s")
+    steps.add_argument("--n-steps", type=int, default=None, help="time steps of the longest case (default 10000)")
+    sim.add_argument("--out", required=True, help="output directory")
+    _parameter_options(sim)
+    sim.set_defaults(run=_command_simulate)
 
     reproduce = commands.add_parser("reproduce", help="regenerate results/ (figures, datasets, report)")
     reproduce.add_argument("--out", default="results", help="output directory (default results)")

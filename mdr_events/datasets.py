@@ -113,3 +113,50 @@ def open_result(path: str | os.PathLike) -> xr.Dataset:
 def parameters_of(dataset: xr.Dataset) -> Parameters:
     """The :class:`Parameters` a dataset was computed with."""
     return Parameters.from_attrs(dataset.attrs)
+
+
+#: The schema of a simulation result, shared by every method: name -> (units, long_name).
+SIMULATION_VARIABLES: dict[str, tuple[str, str]] = {
+    "indentation_depth": ("m", "indentation depth d"),
+    "tangential_displacement": ("m", "tangential displacement of the indenter x"),
+    "normal_force": ("N", "normal force F_N"),
+    "tangential_force": ("N", "tangential force F_x"),
+    "contact_radius": ("m", "contact radius a"),
+    "contact_area": ("m2", "contact area A"),
+    "mean_pressure": ("Pa", "mean contact pressure <p> = F_N / A"),
+    "mean_shear_stress": ("Pa", "mean shear stress tau = F_x / A"),
+    "sliding_fraction": ("1", "share of the springs in contact that are at the critical shift"),
+}
+
+
+def simulation_dataset(
+    params: Parameters,
+    alpha: np.ndarray,
+    time: np.ndarray,
+    values: dict[str, np.ndarray],
+    **attrs: Any,
+) -> xr.Dataset:
+    """Assemble a simulation result with dims ``("alpha", "time")``.
+
+    ``values`` holds the kinematics, forces, radius and sliding fraction of
+    :data:`SIMULATION_VARIABLES` (shape (n_alpha, n_time), ``nan`` after a
+    case has ended); the area, mean pressure and mean shear stress are
+    derived here, identically for every method.
+    """
+    radius = values["contact_radius"]
+    area = np.pi * radius**2
+    with np.errstate(invalid="ignore", divide="ignore"):
+        derived = {
+            "contact_area": area,
+            "mean_pressure": np.where(area > 0, values["normal_force"] / area, np.nan),
+            "mean_shear_stress": np.where(area > 0, values["tangential_force"] / area, np.nan),
+        }
+    data = {}
+    for name, (units, long_name) in SIMULATION_VARIABLES.items():
+        array = derived[name] if name in derived else values[name]
+        data[name] = (("alpha", "time"), np.asarray(array, dtype=float), {"units": units, "long_name": long_name})
+    coords = {
+        "alpha": ("alpha", np.asarray(alpha, dtype=float), {"units": "degree", "long_name": "path angle to the surface"}),
+        "time": ("time", np.asarray(time, dtype=float), {"units": "s", "long_name": "time from first contact"}),
+    }
+    return stamp(xr.Dataset(data, coords=coords), params, **attrs)

@@ -1,4 +1,4 @@
-"""Figures drawn from the datasets (never recomputed here): Fig. 9a, 9b."""
+"""Figures drawn from the datasets (never recomputed here): Fig. 8, 9a, 9b, 10."""
 
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ import xarray as xr  # noqa: E402
 
 from .datasets import atomic_write  # noqa: E402
 
-__all__ = ["plot_phase_diagram", "save_figure"]
+__all__ = ["plot_phase_diagram", "plot_simulation", "save_figure"]
 
 _MM = 1e3
 
@@ -90,3 +90,47 @@ def save_figure(figure, path: str | os.PathLike) -> Path:
             temporary, format="png", dpi=120, metadata={"Software": None}), suffix=".png")
     finally:
         plt.close(figure)
+
+
+#: Panels of Fig. 8 / Fig. 10: variable, scale to display units, axis label.
+SIMULATION_PANELS = (
+    ("normal_force", 1e3, "$F_N$ (mN)"),
+    ("tangential_force", 1e3, "$F_x$ (mN)"),
+    ("contact_area", 1e6, "$A$ (mm²)"),
+    ("mean_pressure", 1e-3, "$\\langle p \\rangle$ (kPa)"),
+    ("mean_shear_stress", 1e-3, "$\\tau$ (kPa)"),
+)
+
+
+def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, title: str | None = None):
+    """Fig. 8 (scenario A) or Fig. 10 (scenario B): panels a–e against time, one line per angle.
+
+    ``overlay`` (e.g. another method) is drawn as thin black lines.
+    Returns the figure.
+    """
+    figure, axes = plt.subplots(5, 1, figsize=(7.0, 12.0), sharex=True, constrained_layout=True)
+    colours = plt.cm.viridis(np.linspace(0.0, 0.9, dataset.sizes["alpha"]))
+    time = dataset["time"].values
+    for letter, ax, (name, scale, label) in zip("abcde", axes, SIMULATION_PANELS):
+        for colour, alpha in zip(colours, dataset["alpha"].values):
+            values = dataset[name].sel(alpha=alpha).values * scale
+            text = "custom path" if np.isnan(alpha) else f"α = {alpha:g}°"
+            ax.plot(time, values, color=colour, lw=1.4, label=text)
+        if overlay is not None:
+            for alpha in overlay["alpha"].values:
+                ax.plot(overlay["time"].values, overlay[name].sel(alpha=alpha).values * scale,
+                        color="k", lw=0.6, ls="--",
+                        label=f"{overlay.attrs.get('method', 'overlay')}" if alpha == overlay["alpha"].values[0] else None)
+        ax.set_ylabel(label)
+        ax.text(0.01, 0.92, f"({letter})", transform=ax.transAxes, fontsize=10, va="top")
+        ax.grid(alpha=0.3)
+    handles, labels = axes[0].get_legend_handles_labels()
+    figure.legend(handles, labels, loc="outside lower center", ncol=5, fontsize=8)
+    axes[-1].set_xlabel("time t (s)")
+    if title is None:
+        scenario = dataset.attrs.get("scenario", "")
+        figure_number = {"A": "Fig. 8", "B": "Fig. 10"}.get(scenario, "Simulation")
+        title = (f"{figure_number}: scenario {scenario}, R = {dataset.attrs['param_R'] * 1e3:g} mm, "
+                 f"{dataset.attrs.get('method', '')}")
+    figure.suptitle(title)
+    return figure

@@ -62,3 +62,26 @@ def test_console_script_is_installed_and_exits_2():
                             capture_output=True, text=True)
     assert result.returncode == 2
     assert result.stderr.count("\n") == 1
+
+
+def test_simulate_writes_nc_and_png(capsys, tmp_path):
+    status, out, err = run(capsys, "simulate", "--scenario", "B", "--alpha", "20", "60", "--dx", "4e-6",
+                           "--n-steps", "400", "--out", str(tmp_path))
+    assert status == 0, err
+    ds = me.open_result(tmp_path / "simulation_B_discrete.nc")
+    assert list(ds["alpha"].values) == [20.0, 60.0] and ds.attrs["dx"] == 4e-6
+    assert (tmp_path / "simulation_B_discrete.png").exists()
+
+
+@pytest.mark.parametrize(
+    "argv, fragment",
+    [
+        (["--dx", "1e-3"], "dx=0.001"),
+        (["--alpha", "100"], "alpha=100.0"),
+        (["--dt", "1", "--n-steps", "10"], "not allowed with argument"),
+        (["--method", "magic"], "--method"),
+    ],
+)
+def test_simulate_bad_arguments(capsys, tmp_path, argv, fragment):
+    status, _, err = run(capsys, "simulate", "--scenario", "A", "--out", str(tmp_path), *argv)
+    assert status == 2 and err.count("\n") == 1 and fragment in err

@@ -1,0 +1,164 @@
+"""Indenter trajectories as data: straight segments in the (x, d) plane.
+
+A :class:`Path` is a list of waypoints ``(x, d)`` (tangential position and
+indentation depth, metres) joined by straight segments traversed at the
+constant speed ``v``. The paper's scenarios are constructors on it:
+
+- :meth:`Path.scenario_A`, eq. (14): in at angle α to ``d_max``, then out
+  vertically;
+- :meth:`Path.scenario_B`, eq. (19): in vertically to ``d_max``, then out at
+  angle α;
+- :meth:`Path.scenario_B_indentation`: the "+" branch of Fig. 9b, in
+  vertically to ``d_max``, further in at angle α, then out vertically.
+
+Every constructor ends the path below the jump-off depth of the ``Δγ1``
+branch, so that the contact certainly comes apart before the path ends.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import analytic
+from .parameters import Parameters
+
+__all__ = ["Path", "exit_depth"]
+
+
+def exit_depth(params: Parameters) -> float:
+    """A depth safely below the displacement-controlled jump-off of the ``Δγ1`` branch."""
+    jump = analytic.jump_off(params, params.dgamma1)["depth"] if params.dgamma1 > 0 else 0.0
+    return 1.5 * jump - 0.05 * params.d_max
+
+
+def _check_angle(alpha: float, scenario: str) -> float:
+    values = analytic._validate_alpha(alpha)
+    if values.ndim != 0:
+        raise TypeError(f"alpha={alpha!r}: a path takes one angle (degrees)")
+    return float(values)
+
+
+@dataclass(frozen=True)
+class Path:
+    """Straight segments through ``waypoints`` (``(x, d)`` pairs, m) at speed ``speed`` (m/s).
+
+    Parameters
+    ----------
+    waypoints : array_like, shape (n, 2)
+        ``(x, d)`` of each corner; ``d > 0`` is into the elastomer. At least
+        two points, all finite, consecutive points distinct.
+    speed : float
+        Speed along the path, > 0.
+    alpha : float
+        The path angle in degrees, for the paper's scenarios (``nan`` for a
+        custom path); only a label.
+    """
+
+    waypoints: np.ndarray
+    speed: float
+    alpha: float = math.nan
+
+    def __post_init__(self) -> None:
+        points = np.array(self.waypoints, dtype=float)
+        if points.ndim != 2 or points.shape[1] != 2 or points.shape[0] < 2:
+            raise ValueError(f"waypoints of shape {points.shape} are not allowed; allowed: (n >= 2, 2) pairs (x, d)")
+        if not np.all(np.isfinite(points)):
+            raise ValueError("waypoints must be finite (x, d) pairs")
+        lengths = np.hypot(*np.diff(points, axis=0).T)
+        if np.any(lengths == 0.0):
+            index = int(np.argmin(lengths))
+            raise ValueError(f"waypoints {index} and {index + 1} coincide; consecutive waypoints must differ")
+        if not (math.isfinite(self.speed) and self.speed > 0):
+            raise ValueError(f"speed={self.speed!r} is not allowed; allowed: a finite number > 0 (m/s)")
+        points.setflags(write=False)
+        object.__setattr__(self, "waypoints", points)
+
+    # ------------------------------------------------------------------
+    @classmethod
+    def scenario_A(cls, alpha: float, params: Parameters) -> "Path":
+        """Eq. (14): in at angle α from the surface to ``d_max``, then vertically out."""
+        angle = _check_angle(alpha, "A")
+        if angle == 0.0:
+            raise ValueError("alpha=0.0 in scenario A: a path parallel to the surface never reaches d_max; "
+                             "allowed: 0 < alpha <= 90")
+        x1 = 0.0 if angle == 90.0 else params.d_max / math.tan(math.radians(angle))
+        return cls([(0.0, 0.0), (x1, params.d_max), (x1, exit_depth(params))], params.v, angle)
+
+    @classmethod
+    def scenario_B(cls, alpha: float, params: Parameters, slide_length: float | None = None) -> "Path":
+        """Eq. (19): vertically to ``d_max``, then out at angle α below the jump-off depth.
+
+        At α = 0 the motion is purely tangential at ``d_max`` and never comes
+        out: it then ends after ``slide_length`` (default: four times the
+        critical shift ``ū`` of the contact at ``d_max``).
+        """
+        angle = _check_angle(alpha, "B")
+        end = exit_depth(params)
+        if angle == 0.0:
+            if slide_length is None:
+                radius = analytic.jkr_contact_radius(params.d_max, params, params.dgamma0)
+                slide_length = 4.0 * float(analytic.critical_shift(radius, params))
+                if slide_length == 0.0:
+                    slide_length = params.d_max
+            return cls([(0.0, 0.0), (0.0, params.d_max), (slide_length, params.d_max)], params.v, angle)
+        x2 = 0.0 if angle == 90.0 else (params.d_max - end) / math.tan(math.radians(angle))
+        return cls([(0.0, 0.0), (0.0, params.d_max), (x2, end)], params.v, angle)
+
+    @classmethod
+    def scenario_B_indentation(cls, alpha: float, params: Parameters, final_depth: float | None = None) -> "Path":
+        """The "+" branch of Fig. 9b: vertically to ``d_max``, further in at angle α to
+        ``final_depth`` (default ``2 d_max``), then vertically out."""
+        angle = _check_angle(alpha, "B")
+        final = 2.0 * params.d_max if final_depth is None else float(final_depth)
+        if not final > params.d_max:
+            raise ValueError(f"final_depth={final!r} is not allowed; allowed: > d_max = {params.d_max!r}")
+        if angle == 0.0:
+            raise ValueError("alpha=0.0: a path parallel to the surface never goes deeper than d_max; "
+                             "allowed: 0 < alpha <= 90")
+        x2 = 0.0 if angle == 90.0 else (final - params.d_max) / math.tan(math.radians(angle))
+        return cls([(0.0, 0.0), (0.0, params.d_max), (x2, final), (x2, exit_depth(params))], params.v, angle)
+
+    # ------------------------------------------------------------------
+    @property
+    def segment_lengths(self) -> np.ndarray:
+        return np.hypot(*np.diff(self.waypoints, axis=0).T)
+
+    @property
+    def corner_times(self) -> np.ndarray:
+        """Times at the waypoints (s), starting at 0."""
+        return np.concatenate([[0.0], np.cumsum(self.segment_lengths) / self.speed])
+
+    @property
+    def duration(self) -> float:
+        return float(self.corner_times[-1])
+
+    @property
+    def max_depth(self) -> float:
+        return float(self.waypoints[:, 1].max())
+
+    def position(self, time) -> tuple[np.ndarray, np.ndarray]:
+        """``(x, d)`` at the given times (s, clipped to the path), vectorised."""
+        t = np.clip(np.asarray(time, dtype=float), 0.0, self.duration)
+        corners = self.corner_times
+        x = np.interp(t, corners, self.waypoints[:, 0])
+        d = np.interp(t, corners, self.waypoints[:, 1])
+        return x, d
+
+    def first_contact_time(self) -> float:
+        """The first time at which ``d >= 0`` (the indenter reaches the surface)."""
+        depths = self.waypoints[:, 1]
+        if depths[0] >= 0.0:
+            return 0.0
+        corners = self.corner_times
+        for i in range(len(depths) - 1):
+            if depths[i + 1] >= 0.0:
+                fraction = -depths[i] / (depths[i + 1] - depths[i])
+                return float(corners[i] + fraction * (corners[i + 1] - corners[i]))
+        raise ValueError("the path never reaches the surface (d >= 0); there is no contact to simulate")
+
+    def describe(self) -> str:
+        """The waypoints as a netCDF-safe string."""
+        return "; ".join(f"({x:.9g}, {d:.9g})" for x, d in self.waypoints)

@@ -1,0 +1,103 @@
+"""``simulate``: one entry point for every simulation method, one result schema."""
+
+from __future__ import annotations
+
+import math
+from typing import Literal, Sequence
+
+import numpy as np
+import xarray as xr
+
+from .datasets import simulation_dataset
+from .discrete import check_spacing, run_discrete
+from .parameters import Parameters
+from .paths import Path
+
+__all__ = ["simulate", "scenario_paths", "FIGURE_ANGLES", "METHODS", "SCENARIO_NAMES"]
+
+#: The angles of Fig. 8 and Fig. 10.
+FIGURE_ANGLES = (10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0)
+METHODS = ("discrete",)
+SCENARIO_NAMES = ("A", "B", "B+")
+DEFAULT_DX = 1e-6
+DEFAULT_STEPS = 10_000
+
+
+def scenario_paths(params: Parameters, scenario: str | Path, alpha) -> tuple[list[Path], np.ndarray]:
+    """The paths of a scenario for each angle (or the one custom path)."""
+    if isinstance(scenario, Path):
+        if alpha is not None:
+            raise ValueError("alpha is not allowed with a custom path (its waypoints fix the motion)")
+        return [scenario], np.array([scenario.alpha])
+    if scenario not in SCENARIO_NAMES:
+        raise ValueError(f"scenario={scenario!r} is not allowed; allowed: 'A', 'B', 'B+' or a Path")
+    angles = np.atleast_1d(np.asarray(FIGURE_ANGLES if alpha is None else alpha, dtype=float))
+    if angles.ndim != 1 or angles.size == 0:
+        raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: one angle or a 1-D list")
+    build = {"A": Path.scenario_A, "B": Path.scenario_B, "B+": Path.scenario_B_indentation}[scenario]
+    return [build(float(angle), params) for angle in angles], angles
+
+
+def _time_step(paths: list[Path], dt: float | None, n_steps: int | None) -> float:
+    if dt is not None and n_steps is not None:
+        raise ValueError("give dt or n_steps, not both")
+    longest = max(path.duration - path.first_contact_time() for path in paths)
+    if dt is not None:
+        if not (isinstance(dt, (int, float)) and math.isfinite(dt) and dt > 0):
+            raise ValueError(f"dt={dt!r} is not allowed; allowed: a finite time step > 0 (s)")
+        return float(dt)
+    steps = DEFAULT_STEPS if n_steps is None else n_steps
+    if isinstance(steps, bool) or not isinstance(steps, (int, np.integer)) or steps < 10:
+        raise ValueError(f"n_steps={steps!r} is not allowed; allowed: an integer >= 10")
+    return longest / int(steps)
+
+
+def simulate(
+    params: Parameters,
+    scenario: Literal["A", "B", "B+"] | Path = "A",
+    alpha: float | Sequence[float] | None = None,
+    method: Literal["discrete"] = "discrete",
+    dx: float = DEFAULT_DX,
+    dt: float | None = None,
+    n_steps: int | None = None,
+) -> xr.Dataset:
+    """Simulate indentation and detachment along straight paths.
+
+    Parameters
+    ----------
+    params : Parameters
+    scenario : {"A", "B", "B+"} or Path
+        ``"A"``: eq. (14); ``"B"``: eq. (19); ``"B+"``: the "+" branch of
+        Fig. 9b (:meth:`Path.scenario_B_indentation`); or any :class:`Path`.
+    alpha : float or sequence of float, optional
+        Angles in degrees (default 10°, 20°, …, 80°, as in Fig. 8 and 10);
+        not with a custom path.
+    method : {"discrete"}
+        ``"discrete"``: the paper's spring array (:mod:`mdr_events.discrete`).
+    dx : float
+        Spring spacing Δx in m (default 1 µm); at least 10 springs per side
+        must be in contact at ``d_max``.
+    dt, n_steps :
+        Time step in s, or the number of steps of the longest case
+        (default 10 000); not both.
+
+    Returns
+    -------
+    xarray.Dataset
+        Dims ``("alpha", "time")``; variables of
+        :data:`mdr_events.datasets.SIMULATION_VARIABLES`, ``nan`` after a case
+        has ended (pull-off, or the end of its path); time from first contact.
+    """
+    if method not in METHODS:
+        raise ValueError(f"method={method!r} is not allowed; allowed: {', '.join(map(repr, METHODS))}")
+    paths, angles = scenario_paths(params, scenario, alpha)
+    check_spacing(params, dx)
+    step = _time_step(paths, dt, n_steps)
+    raw = run_discrete(params, paths, dx, step)
+    scenario_name = "custom" if isinstance(scenario, Path) else scenario
+    attrs = dict(method=method, scenario=scenario_name, dx=float(dx), dt=step,
+                 spring_count_per_side=int(raw["spring_count"]),
+                 content="simulation of indentation and detachment along straight paths")
+    if isinstance(scenario, Path):
+        attrs["path_waypoints"] = scenario.describe()
+    return simulation_dataset(params, angles, raw["time"], raw, **attrs)

@@ -1,0 +1,199 @@
+"""The discrete spring model against what section 4 says its figures show, and exact limits."""
+
+import math
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import mdr_events as me
+from mdr_events.convergence import discrete_errors, exact_references_A, observed_orders
+from mdr_events.datasets import SIMULATION_VARIABLES
+from mdr_events.paths import Path
+from mdr_events.simulate import FIGURE_ANGLES, simulate
+
+DX = 2e-6  # 1 550 springs per side at d_max for R = 30 mm
+
+
+@pytest.fixture(scope="module")
+def fig8(paper):
+    return simulate(paper, "A", dx=DX, n_steps=6000)
+
+
+@pytest.fixture(scope="module")
+def fig10(paper):
+    return simulate(paper, "B", dx=DX, n_steps=6000)
+
+
+def pinned_radius(p):
+    return float(me.jkr_contact_radius(p.d_max, p, p.dgamma0))
+
+
+def test_schema(fig8, paper, tmp_path):
+    assert fig8["normal_force"].dims == ("alpha", "time")
+    assert list(fig8["alpha"].values) == list(FIGURE_ANGLES)
+    for name, (units, _) in SIMULATION_VARIABLES.items():
+        assert fig8[name].attrs["units"] == units and fig8[name].attrs["long_name"]
+    assert fig8.attrs["method"] == "discrete" and fig8.attrs["dx"] == DX and fig8.attrs["dt"] > 0
+    assert fig8.attrs["program_version"] == me.__version__ and fig8.attrs["doi"] == me.DOI
+    assert fig8["time"].values[0] == 0.0
+    path = me.write_netcdf(fig8, tmp_path / "fig8.nc")
+    xr.testing.assert_identical(me.open_result(path), fig8)
+
+
+def test_pull_off_force_is_the_same_for_every_angle_and_jkr(fig8, fig10, paper):
+    """Section 4.2 (1): |F_N,min| equal for all angles, the JKR pull-off (3/2)πΔγ1R."""
+    jkr = 1.5 * math.pi * paper.dgamma1 * paper.R
+    # discretisation error: the boundary threshold sits Δx/2 inside a = mΔx, so
+    # |ΔF| <~ E* a_F (∂d/∂a) Δx (about 1e-3 of F per µm here); allow 2 Δx worth
+    a_F = float(me.symbolic.relation("pull_off_radius").numeric(paper.R, paper.E_star, paper.dgamma1))
+    slope = 2 * a_F / paper.R - 0.5 * math.sqrt(2 * math.pi * paper.dgamma1 / (paper.E_star * a_F))
+    tolerance = 2 * paper.E_star * a_F * slope * DX
+    for ds in (fig8, fig10):
+        minima = -ds["normal_force"].min("time").values
+        assert np.all(np.abs(minima - jkr) < tolerance), (minima, jkr, tolerance)
+
+
+def test_scenario_A_constant_area_and_force_at_the_start_of_pull_off(fig8, paper):
+    """Section 4.2 (1): A is constant at the start of pull-off, and F_x too."""
+    a_max = pinned_radius(paper)
+    # the radius stays pinned until d falls to the Δγ1 branch at that radius
+    d_release = float(me.jkr_depth(a_max, paper, paper.dgamma1))
+    for alpha in fig8["alpha"].values:
+        case = fig8.sel(alpha=alpha)
+        t_turn = paper.d_max / (paper.v * math.sin(math.radians(alpha)))
+        pulling = (case["time"] > t_turn) & (case["contact_radius"] == case["contact_radius"].max())
+        depth = case["indentation_depth"].where(pulling, drop=True)
+        assert depth.size > 10
+        assert float(depth.min()) == pytest.approx(d_release, abs=2 * DX * 0.2 + paper.v * fig8.attrs["dt"])
+        force = case["tangential_force"].where(pulling, drop=True).values
+        assert np.all(force == force[0])
+
+
+def test_shear_stress_reaches_tau0_in_pull_off_where_the_model_says(fig8, paper):
+    """Section 4.2 (3): during pull-off τ rises to τ0 — once the shrinking radius makes
+    ū(a) smaller than the indenter's travel x1 before the jump-off radius is reached."""
+    a_jump = me.jump_off(paper, paper.dgamma1)["contact_radius"]
+    for alpha in fig8["alpha"].values:
+        x1 = paper.d_max / math.tan(math.radians(alpha))
+        reaches = me.critical_shift(a_jump, paper) < x1
+        tau_max = float(fig8["mean_shear_stress"].sel(alpha=alpha).max())
+        if reaches:
+            assert tau_max == pytest.approx(paper.tau0, rel=1e-12)
+        else:
+            assert tau_max < 0.99 * paper.tau0
+    assert fig8["mean_shear_stress"].max() <= paper.tau0 * (1 + 1e-12)
+
+
+def test_first_slip_during_indentation_is_at_d_crit_18(paper):
+    alpha_c = me.critical_angle(paper, "A", adhesion=True)
+    angles = [8.0, 15.0, 21.0, 24.0, 40.0, 70.0]
+    ds = simulate(paper, "A", alpha=angles, dx=1e-6, n_steps=20000)
+    for alpha in angles:
+        case = ds.sel(alpha=alpha)
+        t_turn = paper.d_max / (paper.v * math.sin(math.radians(alpha)))
+        indentation = case.where(case["time"] <= t_turn, drop=True)
+        sliding = indentation["sliding_fraction"].values > 0
+        if alpha > alpha_c:
+            assert not sliding.any(), alpha
+            continue
+        first = int(np.argmax(sliding))
+        assert sliding[first]
+        depth = float(indentation["indentation_depth"][first])
+        expected = me.d_crit(alpha, paper, "A", adhesion=True)
+        # d = K a on the slip line: a radius error of a few Δx is K·Δx each, plus one time step of depth
+        K = math.tan(math.radians(alpha)) * math.pi * paper.tau0 / (2 * paper.G_star)
+        step = paper.v * ds.attrs["dt"] * math.sin(math.radians(alpha))
+        assert abs(depth - expected) <= 3 * K * ds.attrs["dx"] + step, (alpha, depth, expected)
+
+
+def test_vertical_path_has_no_tangential_force(paper):
+    ds = simulate(paper, "A", alpha=[90.0], dx=DX, n_steps=2000)
+    forces = ds["tangential_force"].values
+    assert np.all(forces[np.isfinite(forces)] == 0.0)
+    assert np.all(ds["sliding_fraction"].values[np.isfinite(forces) & (ds["contact_radius"].values > 0)] == 0.0)
+
+
+def test_without_adhesion_loading_is_hertz(paper):
+    p = paper.replace(dgamma0=0.0, dgamma1=0.0)
+    ds = simulate(p, "A", alpha=[90.0], dx=DX, n_steps=3000).sel(alpha=90.0)
+    t_turn = p.d_max / p.v
+    loading = ds.where((ds["time"] <= t_turn) & (ds["indentation_depth"] > 0.2 * p.d_max), drop=True)
+    d = loading["indentation_depth"].values
+    hertz = 4 * p.E_star * math.sqrt(p.R) * d**1.5 / 3
+    a = np.sqrt(p.R * d)
+    # the radius is resolved to Δx: |ΔF|/F <~ (3/2)·Δx/a
+    np.testing.assert_array_less(np.abs(loading["normal_force"].values - hertz) / hertz, 1.5 * DX / a + 1e-12)
+    # no jump-in, no jump-off: the contact ends at d = 0
+    assert np.nanmin(ds["normal_force"].values) >= 0.0
+
+
+def test_scenario_B_slips_all_at_once_at_d_crit_21_where_radius_follows_jkr(fig10, paper):
+    """Scenario B: every spring has the same shift, so the contact goes from stick to full slip."""
+    for alpha in fig10["alpha"].values:
+        fraction = fig10["sliding_fraction"].sel(alpha=alpha).values
+        values = fraction[np.isfinite(fraction)]
+        assert set(np.unique(values)) <= {0.0, 1.0}
+
+
+def test_convergence_order_against_exact_references(paper):
+    spacings = [8e-6, 4e-6, 2e-6]
+    errors = discrete_errors(paper, 30.0, spacings, steps_per_spacing=0.5)
+    forces = errors["tangential_force_max"]
+    assert np.all(np.diff(forces) < 0)
+    assert np.all(observed_orders(spacings, forces) > 0.8)
+    assert np.all(errors["contact_area_max"] <= 2 * np.array(spacings) / pinned_radius(paper))
+    reference = exact_references_A(paper, 30.0)
+    assert reference["normal_force_min"] == pytest.approx(-1.5 * math.pi * paper.dgamma1 * paper.R)
+
+
+def test_same_input_same_output(paper):
+    one = simulate(paper, "B", alpha=[20.0, 50.0], dx=4e-6, n_steps=500)
+    two = simulate(paper, "B", alpha=[20.0, 50.0], dx=4e-6, n_steps=500)
+    xr.testing.assert_identical(one, two)
+    for name in SIMULATION_VARIABLES:
+        assert one[name].values.tobytes() == two[name].values.tobytes()
+
+
+def test_custom_path_and_scenario_B_indentation(paper):
+    path = Path([(0.0, -1e-5), (0.0, paper.d_max), (2e-4, paper.d_max), (2e-4, -1e-4)], paper.v)
+    ds = simulate(paper, path, dx=4e-6, n_steps=2000)
+    assert ds.sizes["alpha"] == 1 and np.isnan(ds["alpha"].values[0])
+    assert ds.attrs["scenario"] == "custom" and "(0.0002" in ds.attrs["path_waypoints"]
+    # time runs from first contact (d = 0 at t = 0)
+    assert ds["indentation_depth"].values[0, 0] == pytest.approx(0.0, abs=1e-15)
+    plus = simulate(paper, "B+", alpha=[30.0], dx=4e-6, n_steps=3000)
+    assert float(plus["indentation_depth"].max()) == pytest.approx(2 * paper.d_max, rel=1e-3)
+
+
+def test_bad_input(paper):
+    with pytest.raises(ValueError, match=r"dx=0.0005 m puts 6 springs .* dx <= 0.00031"):
+        simulate(paper, "A", alpha=[30.0], dx=5e-4)
+    with pytest.raises(ValueError, match="scenario='C'"):
+        simulate(paper, "C")
+    with pytest.raises(ValueError, match="method='magic'"):
+        simulate(paper, "A", method="magic")
+    with pytest.raises(ValueError, match="alpha=0.0 in scenario A"):
+        simulate(paper, "A", alpha=[0.0])
+    with pytest.raises(ValueError, match="alpha=95.0"):
+        simulate(paper, "B", alpha=[95.0])
+    with pytest.raises(ValueError, match="dt or n_steps"):
+        simulate(paper, "A", dt=1.0, n_steps=100)
+    with pytest.raises(ValueError, match="n_steps=5"):
+        simulate(paper, "A", n_steps=5)
+    with pytest.raises(ValueError, match="coincide"):
+        Path([(0.0, 0.0), (0.0, 0.0)], 1.0)
+    with pytest.raises(ValueError, match="never reaches the surface"):
+        simulate(paper, Path([(0.0, -1.0), (1.0, -1.0)], 1.0))
+
+
+def test_path_kinematics(paper):
+    path = Path.scenario_A(30.0, paper)
+    t_turn = paper.d_max / (paper.v * math.sin(math.radians(30.0)))
+    assert path.corner_times[1] == pytest.approx(t_turn)
+    x, d = path.position([0.0, t_turn / 2, t_turn])
+    np.testing.assert_allclose(d, [0.0, paper.d_max / 2, paper.d_max])
+    np.testing.assert_allclose(x, [0.0, paper.d_max / 2 / math.tan(math.radians(30.0)),
+                                   paper.d_max / math.tan(math.radians(30.0))])
+    b = Path.scenario_B(0.0, paper)  # purely tangential: ends after a few ū
+    assert b.waypoints[-1, 1] == paper.d_max
