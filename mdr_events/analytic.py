@@ -64,6 +64,11 @@ def _tan_degrees(alpha_deg: np.ndarray) -> np.ndarray:
         return np.where(alpha_deg == 90.0, np.inf, np.tan(np.deg2rad(alpha_deg)))
 
 
+def _check_flag(name: str, value) -> None:
+    if not isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name}={value!r} is not allowed; allowed: True or False")
+
+
 def _check_choice(name: str, value, allowed) -> None:
     if value not in allowed:
         raise ValueError(f"{name}={value!r} is not allowed; allowed: {', '.join(map(repr, allowed))}")
@@ -281,7 +286,7 @@ def d_crit(
     params: Parameters,
     scenario: Literal["A", "B"] = "A",
     adhesion: bool = False,
-    branch: Literal["pull-off", "indentation"] = "pull-off",
+    branch: Literal["pull-off", "indentation"] | None = None,
 ):
     """Indentation depth at which the springs start to slide, eqs. (17)–(21).
 
@@ -299,8 +304,8 @@ def d_crit(
         ``False``: non-adhesive contact radius (16), eqs. (17) and (20).
         ``True``: JKR radius (9), eqs. (18) and (21) with ``Δγ0`` on the way
         in and ``Δγ1`` on the way out.
-    branch : {"pull-off", "indentation"}
-        Scenario B only: from ``d_max`` out at angle α (the "−" sign of (21),
+    branch : {"pull-off", "indentation"}, optional
+        Scenario B only (default "pull-off"): from ``d_max`` out at angle α (the "−" sign of (21),
         smaller root of (20)) or further in at angle α (the "+" sign, larger
         root of (20)).
 
@@ -329,9 +334,11 @@ def d_crit(
     :mod:`mdr_events` docs on the continuum method).
     """
     _check_choice("scenario", scenario, SCENARIOS)
+    if scenario == "A" and branch is not None:
+        raise ValueError(f"branch={branch!r} is not allowed with scenario 'A'; allowed: None (branch is for scenario B)")
+    branch = "pull-off" if branch is None else branch
     _check_choice("branch", branch, BRANCHES)
-    if not isinstance(adhesion, (bool, np.bool_)):
-        raise TypeError(f"adhesion={adhesion!r} must be True or False")
+    _check_flag("adhesion", adhesion)
     alpha_deg = _validate_alpha(alpha)
     tan = _tan_degrees(alpha_deg)
     vertical = np.isinf(tan)
@@ -344,7 +351,9 @@ def d_crit(
         else:
             coefficients = _rel("slip_A_jkr_cubic").coefficients(
                 tan_finite, p.R, p.tau0, p.G_star, p.E_star, p.dgamma0)
-            radius = positive_polynomial_root(coefficients) ** 2
+            with np.errstate(invalid="ignore", divide="ignore"):  # 0/0 at the double root s = 0 (α = 0, Δγ = 0)
+                root = positive_polynomial_root(coefficients)
+            radius = np.where(np.isfinite(root), root, 0.0) ** 2
             depth = _rel("slip_depth_A").numeric(radius, tan_finite, p.tau0, p.G_star)
         result = np.where(vertical, np.inf, depth)
         return _as_output(result, alpha_deg)
@@ -383,6 +392,7 @@ def critical_angle(params: Parameters, scenario: Literal["A", "B"] = "A", adhesi
     shrinks to zero and slip always comes first: 90°.
     """
     _check_choice("scenario", scenario, SCENARIOS)
+    _check_flag("adhesion", adhesion)
     p = params
     if scenario == "A":
         if adhesion:

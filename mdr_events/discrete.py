@@ -13,8 +13,11 @@ Rules, applied at every time step (all vectorised over springs and cases):
   (``d >= g(x_0)``) and then every spring with
   ``d >= g(x_j) − Δl_max(x_j; Δγ0)``; while it comes out, boundary springs
   detach, from the edge inwards, while ``d < g(x_j) − Δl_max(x_j; Δγ1)``.
-  Both sets are contiguous from the centre, so each is a ``searchsorted``
-  on the increasing part of ``g − Δl_max``.
+  The threshold ``g − Δl_max`` falls to a minimum and then rises, so the
+  contact stays contiguous: growth beyond the minimum and detachment from it
+  are a ``searchsorted`` on the rising part; a boundary spring inside the
+  minimum takes every spring up to it along (jump-in) or, detaching, the
+  whole contact off (jump-off).
 - **Tangential springs.** A spring's shift is 0 when it attaches and then
   follows the indenter's tangential motion; where ``|u| > ū(a)`` (13) it is
   set to ``±ū(a)``; a detached spring forgets its shift.
@@ -59,6 +62,7 @@ class _Threshold:
     def __init__(self, g: np.ndarray, positions: np.ndarray, params: Parameters, work_of_adhesion: float):
         elongation = symbolic.relation("hess_max_elongation").numeric(positions, work_of_adhesion, params.E_star)
         threshold = g - elongation
+        self.threshold = np.append(threshold, np.inf)  # a spring beyond the array never qualifies
         self.lowest = int(np.argmin(threshold))
         self.minimum = float(threshold[self.lowest])
         self.rising = threshold[self.lowest + 1:]
@@ -66,6 +70,23 @@ class _Threshold:
     def count(self, depth: np.ndarray) -> np.ndarray:
         above = self.lowest + 1 + np.searchsorted(self.rising, depth, side="right")
         return np.where(depth >= self.minimum, above, 0)
+
+    def grow(self, m: np.ndarray, depth: np.ndarray) -> np.ndarray:
+        """Going in: the next spring attaches if ``depth`` reaches its threshold, then all that follow.
+
+        If the next spring is inside the minimum of the threshold, every spring up to
+        the minimum has a lower threshold and attaches with it (a jump-in).
+        """
+        return np.where(depth >= self.threshold[m], np.maximum(m, self.count(depth)), m)
+
+    def shrink(self, m: np.ndarray, depth: np.ndarray) -> np.ndarray:
+        """Going out: the boundary spring detaches if ``depth`` falls below its threshold, then
+        the next inner one, and so on. On the falling side of the threshold every inner spring
+        has a higher threshold, so the whole contact comes off (a jump-off)."""
+        boundary = np.maximum(m - 1, 0)
+        holds = (m == 0) | (depth >= self.threshold[boundary])
+        inner = np.where(boundary > self.lowest, np.minimum(m, self.count(depth)), 0)
+        return np.where(holds, m, inner)
 
 
 def _spring_count(params: Parameters, dx: float, max_depth: float, profile) -> int:
@@ -80,14 +101,17 @@ def _spring_count(params: Parameters, dx: float, max_depth: float, profile) -> i
         count *= 2
 
 
-def check_spacing(params: Parameters, dx: float) -> None:
-    """Reject a spring spacing that puts fewer than 10 springs per side in contact at ``d_max``."""
+def check_spacing(params: Parameters, dx: float, depth: float | None = None) -> None:
+    """Reject a spring spacing that puts fewer than 10 springs per side in contact at the
+    deepest point (``d_max``, or the given ``depth`` of a custom path)."""
     if not (isinstance(dx, (int, float)) and math.isfinite(dx) and dx > 0):
         raise ValueError(f"dx={dx!r} is not allowed; allowed: a finite spring spacing > 0 (m)")
-    radius = float(analytic.jkr_contact_radius(params.d_max, params, params.dgamma0))
-    if radius / dx < MIN_SPRINGS_IN_CONTACT:
+    depth = params.d_max if depth is None else depth
+    radius = float(analytic.jkr_contact_radius(depth, params, params.dgamma0))
+    if not radius / dx >= MIN_SPRINGS_IN_CONTACT:
         raise ValueError(
-            f"dx={dx!r} m puts {int(radius // dx)} springs per side in contact at d_max; "
+            f"dx={dx!r} m puts {int(radius // dx) if radius == radius else 0} springs per side in contact "
+            f"at the deepest point d = {depth!r} m; "
             f"allowed: at least {MIN_SPRINGS_IN_CONTACT}, i.e. dx <= {radius / MIN_SPRINGS_IN_CONTACT:.6g} m"
         )
 
@@ -165,8 +189,9 @@ def run_discrete(
         d_new = d_path[k, rows]
         step_x = x_path[k, rows] - x_path[k - 1, rows]
         step_depth = d_new - d_path[k - 1, rows]
-        grow = np.where((m > 0) | (d_new >= first_touch), np.maximum(m, attach.count(d_new)), m)
-        shrink = np.minimum(m, detach.count(d_new))
+        grow = np.where(m > 0, attach.grow(m, d_new),
+                        np.where(d_new >= first_touch, attach.count(d_new), 0))
+        shrink = detach.shrink(m, d_new)
         m_new = np.where(step_depth > 0, grow, np.where(step_depth < 0, shrink, m))
         width = int(max(m.max(), m_new.max()))
         if width:

@@ -91,7 +91,9 @@ def simulate(
     if method not in METHODS:
         raise ValueError(f"method={method!r} is not allowed; allowed: {', '.join(map(repr, METHODS))}")
     paths, angles = scenario_paths(params, scenario, alpha)
-    check_spacing(params, dx)
+    for path in paths:
+        path.first_contact_time()  # a path that never touches the surface is an error first
+    check_spacing(params, dx, depth=min(params.d_max, max(path.max_depth for path in paths)))
     step = _time_step(paths, dt, n_steps)
     raw = run_discrete(params, paths, dx, step)
     scenario_name = "custom" if isinstance(scenario, Path) else scenario
@@ -100,4 +102,7 @@ def simulate(
                  content="simulation of indentation and detachment along straight paths")
     if isinstance(scenario, Path):
         attrs["path_waypoints"] = scenario.describe()
+        attrs["path_speed"] = scenario.speed
+        attrs["path_speed_units"] = "m s-1"
+        attrs["note"] = "custom path: its speed path_speed replaces param_v"
     return simulation_dataset(params, angles, raw["time"], raw, **attrs)

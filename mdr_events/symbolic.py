@@ -249,6 +249,9 @@ def derive() -> dict[str, Relation]:
     add(Relation("jkr_depth", "(9)", "indentation depth of the adhesive contact of radius a",
                  d, depth_of_radius, (a, R, E_star, dgamma)))
 
+    add(Relation("jkr_depth_slope", "(9)", "slope dd/da of the adhesive branch (9)",
+                 sp.Derivative(d, a), sp.diff(depth_of_radius, a), (a, R, E_star, dgamma)))
+
     # --- (10): normal force --------------------------------------------------
     force_pinned = sp.expand(2 * E_star * sp.integrate(displacement, (x, 0, a)))
     add(Relation("normal_force", "(10)", "normal force of the springs in contact, any d and a",
@@ -284,8 +287,12 @@ def derive() -> dict[str, Relation]:
     add(Relation("stationary_shear_stress", "(12)", "mean shear stress with every spring at ū",
                  tau0, sp.simplify(tau_stationary), (u_bar, a, G_star)))
     critical_shift = sp.solve(sp.Eq(tau0, tau_stationary), u_bar)[0]
+    jkr_depth_integral = sp.integrate(depth_of_radius.subs(a, x), (x, 0, a))
     add(Relation("critical_shift", "(13)", "critical spring shift ū(a)",
                  u_bar, critical_shift, (a, tau0, G_star)))
+
+    add(Relation("jkr_depth_integral", "(9)", "integral of the branch (9) over the radius, for attach maps",
+                 sp.Integral(d, (a, 0, a)), jkr_depth_integral, (a, R, E_star, dgamma)))
 
     # --- (14), (17), (18): scenario A -----------------------------------------
     # on the path (14) x = d / tan α; slip starts when x reaches ū(a)

@@ -188,3 +188,19 @@ def test_polynomial_root_solver_against_numpy_roots():
         real = roots[np.abs(roots.imag) < 1e-9].real
         ours = analytic.positive_polynomial_root(coeffs)
         assert ours == pytest.approx(real.max(), rel=1e-9)
+
+
+def test_branch_only_for_scenario_B_and_flags_checked(paper):
+    with pytest.raises(ValueError, match="branch='indentation' is not allowed with scenario 'A'"):
+        me.d_crit(10.0, paper, "A", branch="indentation")
+    with pytest.raises(TypeError, match="adhesion='no'"):
+        me.critical_angle(paper, "A", adhesion="no")
+    assert me.d_crit(20.0, paper, "B") == me.d_crit(20.0, paper, "B", branch="pull-off")
+
+
+def test_no_warning_at_the_double_root(paper):
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert me.d_crit(0.0, paper.replace(dgamma0=0.0), "A", adhesion=True) == 0.0

@@ -167,7 +167,7 @@ def test_custom_path_and_scenario_B_indentation(paper):
 
 
 def test_bad_input(paper):
-    with pytest.raises(ValueError, match=r"dx=0.0005 m puts 6 springs .* dx <= 0.00031"):
+    with pytest.raises(ValueError, match=r"dx=0.0005 m puts 6 springs per side .* dx <= 0.00031"):
         simulate(paper, "A", alpha=[30.0], dx=5e-4)
     with pytest.raises(ValueError, match="scenario='C'"):
         simulate(paper, "C")
@@ -197,3 +197,22 @@ def test_path_kinematics(paper):
                                    paper.d_max / math.tan(math.radians(30.0))])
     b = Path.scenario_B(0.0, paper)  # purely tangential: ends after a few ū
     assert b.waypoints[-1, 1] == paper.d_max
+
+
+def test_pinned_radius_below_the_jump_off_radius_comes_off_at_once(paper):
+    """A shallow indentation (held radius a0 < jump-off radius of Δγ1) separates when d falls to
+    g(a0) − Δl_max(a0; Δγ1), whatever other, deeper paths run in the same batch."""
+    p = paper.replace(dgamma1=1.0, d_max=10e-6)
+    shallow = Path([(0.0, 0.0), (0.0, p.d_max), (0.0, -3e-4)], p.v)
+    deep = Path([(0.0, 0.0), (0.0, 3e-4), (0.0, -3e-4)], p.v)
+    a0 = float(me.jkr_contact_radius(p.d_max, p, p.dgamma0))
+    assert a0 < me.jump_off(p, p.dgamma1)["contact_radius"]
+    release = float(me.jkr_depth(a0, p, p.dgamma1))
+    for batch in ([shallow], [shallow, deep]):
+        from mdr_events.discrete import run_discrete
+        raw = run_discrete(p, batch, 0.5e-6, 0.05e-6 / p.v)
+        radius = raw["contact_radius"][0]
+        depth = raw["indentation_depth"][0]
+        in_contact = depth[radius > 0]
+        assert in_contact.min() == pytest.approx(release, abs=0.2e-6)
+
