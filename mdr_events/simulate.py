@@ -17,7 +17,7 @@ __all__ = ["simulate", "scenario_paths", "FIGURE_ANGLES", "METHODS", "SCENARIO_N
 
 #: The angles of Fig. 8 and Fig. 10.
 FIGURE_ANGLES = (10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0)
-METHODS = ("discrete",)
+METHODS = ("discrete", "continuum")
 SCENARIO_NAMES = ("A", "B", "B+")
 DEFAULT_DX = 1e-6
 DEFAULT_STEPS = 10_000
@@ -56,10 +56,11 @@ def simulate(
     params: Parameters,
     scenario: Literal["A", "B", "B+"] | Path = "A",
     alpha: float | Sequence[float] | None = None,
-    method: Literal["discrete"] = "discrete",
+    method: Literal["discrete", "continuum"] = "discrete",
     dx: float = DEFAULT_DX,
     dt: float | None = None,
     n_steps: int | None = None,
+    t: Sequence[float] | None = None,
 ) -> xr.Dataset:
     """Simulate indentation and detachment along straight paths.
 
@@ -72,14 +73,19 @@ def simulate(
     alpha : float or sequence of float, optional
         Angles in degrees (default 10°, 20°, …, 80°, as in Fig. 8 and 10);
         not with a custom path.
-    method : {"discrete"}
+    method : {"discrete", "continuum"}
         ``"discrete"``: the paper's spring array (:mod:`mdr_events.discrete`).
+        ``"continuum"``: its Δx → 0 limit integrated between events
+        (:mod:`mdr_events.continuum`); adds the event log along ``event``.
     dx : float
         Spring spacing Δx in m (default 1 µm); at least 10 springs per side
         must be in contact at ``d_max``.
     dt, n_steps :
-        Time step in s, or the number of steps of the longest case
-        (default 10 000); not both.
+        Discrete method: time step in s, or the number of steps of the
+        longest case (default 10 000); not both.
+    t : sequence of float, optional
+        Continuum method: the output times in s from first contact
+        (increasing, >= 0); default 2001 points to the end of the longest run.
 
     Returns
     -------
@@ -91,6 +97,8 @@ def simulate(
     if method not in METHODS:
         raise ValueError(f"method={method!r} is not allowed; allowed: {', '.join(map(repr, METHODS))}")
     paths, angles = scenario_paths(params, scenario, alpha)
+    if method == "continuum":
+        return _simulate_continuum(params, scenario, paths, angles, t)
     for path in paths:
         path.first_contact_time()  # a path that never touches the surface is an error first
     check_spacing(params, dx, depth=min(params.d_max, max(path.max_depth for path in paths)))
@@ -106,3 +114,44 @@ def simulate(
         attrs["path_speed_units"] = "m s-1"
         attrs["note"] = "custom path: its speed path_speed replaces param_v"
     return simulation_dataset(params, angles, raw["time"], raw, **attrs)
+
+
+def _simulate_continuum(params, scenario, paths, angles, t) -> xr.Dataset:
+    from .continuum import Tolerances, run_continuum
+
+    times = None
+    if t is not None:
+        times = np.asarray(t, dtype=float)
+        if times.ndim != 1 or times.size == 0 or not np.all(np.isfinite(times)) or times[0] < 0 \
+                or np.any(np.diff(times) <= 0):
+            raise ValueError(f"t of shape {times.shape} is not allowed; allowed: a non-empty, strictly "
+                             "increasing 1-D grid of finite times >= 0 (s)")
+    tolerances = Tolerances()
+    raw = run_continuum(params, paths, times, tolerances=tolerances)
+    attrs = dict(method="continuum", scenario="custom" if isinstance(scenario, Path) else scenario,
+                 rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
+                 content="simulation of indentation and detachment along straight paths")
+    if isinstance(scenario, Path):
+        attrs.update(path_waypoints=scenario.describe(), path_speed=scenario.speed, path_speed_units="m s-1")
+    dataset = simulation_dataset(params, angles, raw["time"], raw, **attrs)
+    return dataset.merge(event_log(raw["events"]))
+
+
+def event_log(events: list[list[tuple]]) -> xr.Dataset:
+    """The continuum event log: one row per event per case along ``event`` (padded with nan / "")."""
+    rows = max(len(case) for case in events)
+    table = {name: np.full((len(events), rows), np.nan) for name in ("time", "depth", "radius", "x")}
+    kinds = np.full((len(events), rows), "", dtype=object)
+    for i, case in enumerate(events):
+        for j, (time, kind, depth, radius, x) in enumerate(case):
+            table["time"][i, j], table["depth"][i, j] = time, depth
+            table["radius"][i, j], table["x"][i, j] = radius, x
+            kinds[i, j] = kind
+    dims = ("alpha", "event")
+    return xr.Dataset({
+        "event_time": (dims, table["time"], {"units": "s", "long_name": "time of the event from first contact"}),
+        "event_kind": (dims, kinds.astype(str), {"units": "1", "long_name": "kind of event"}),
+        "event_depth": (dims, table["depth"], {"units": "m", "long_name": "indentation depth at the event"}),
+        "event_radius": (dims, table["radius"], {"units": "m", "long_name": "contact radius at the event"}),
+        "event_x": (dims, table["x"], {"units": "m", "long_name": "tangential displacement at the event"}),
+    }, coords={"event": ("event", np.arange(rows), {"units": "1", "long_name": "event number"})})

@@ -1,0 +1,95 @@
+"""The continuum method against the closed forms, the exact references and the discrete model."""
+
+import math
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import mdr_events as me
+from mdr_events.continuum import solve_path
+from mdr_events.convergence import exact_references_A
+from mdr_events.datasets import SIMULATION_VARIABLES
+from mdr_events.paths import Path
+
+
+def events_of(solution, kind):
+    return [event for event in solution.events if event[1] == kind]
+
+
+@pytest.mark.parametrize("alpha", [5.0, 10.0, 15.0, 20.0, 22.0])
+def test_scenario_A_slip_onset_is_eq_18(paper, alpha):
+    solution = solve_path(paper, Path.scenario_A(alpha, paper))
+    (onset,) = events_of(solution, "slip_onset")
+    assert onset[2] == pytest.approx(me.d_crit(alpha, paper, "A", adhesion=True), rel=1e-9)
+
+
+def test_scenario_A_above_the_critical_angle_no_slip_during_indentation(paper):
+    alpha = me.critical_angle(paper, "A", adhesion=True) + 0.5
+    solution = solve_path(paper, Path.scenario_A(alpha, paper))
+    corner = events_of(solution, "corner")[0][0]
+    assert all(event[0] > corner for event in events_of(solution, "slip_onset"))
+
+
+@pytest.mark.parametrize("alpha", [10.0, 30.0, 60.0])
+def test_scenario_A_tangential_force_at_d_max_is_exact(paper, alpha):
+    solution = solve_path(paper, Path.scenario_A(alpha, paper))
+    corner = events_of(solution, "corner")[0][0]
+    out = me.continuum.evaluate(solution, np.array([corner]))
+    assert out["tangential_force"][0] == pytest.approx(exact_references_A(paper, alpha)["tangential_force_max"], rel=1e-8)
+    # and the integrated F_x equals the algebraic form with the final anchor map
+    solver = solution.solver
+    a = out["contact_radius"][0]
+    assert a == pytest.approx(float(me.jkr_contact_radius(paper.d_max, paper, paper.dgamma0)), rel=1e-12)
+
+
+def test_pull_off_happens_at_the_jump_off_depth(paper):
+    solution = solve_path(paper, Path.scenario_A(40.0, paper))
+    (pull,) = events_of(solution, "pull_off")
+    jump = me.jump_off(paper, paper.dgamma1)
+    assert pull[2] == pytest.approx(jump["depth"], rel=1e-12)
+    assert pull[3] == pytest.approx(jump["contact_radius"], rel=1e-12)
+
+
+def test_scenario_B_slip_onset_eq_21_or_the_pinned_radius(paper):
+    """(21) assumes the radius follows the Δγ1 branch from d_max; in the model it is pinned at
+    a0 until d falls to d_1(a0). Where slip comes first, it happens at d_max − tan α ū(a0)."""
+    a0 = float(me.jkr_contact_radius(paper.d_max, paper, paper.dgamma0))
+    release = float(me.jkr_depth(a0, paper, paper.dgamma1))
+    for alpha in (1.0, 3.0, 10.0, 30.0, 60.0):
+        solution = solve_path(paper, Path.scenario_B(alpha, paper))
+        (onset,) = events_of(solution, "slip_onset")
+        assert events_of(solution, "full_slip")[0][0] == onset[0]  # uniform field: all at once
+        pinned = paper.d_max - math.tan(math.radians(alpha)) * me.critical_shift(a0, paper)
+        expected = pinned if pinned >= release else me.d_crit(alpha, paper, "B", adhesion=True)
+        assert onset[2] == pytest.approx(expected, rel=1e-9)
+        if alpha == 1.0:
+            assert pinned > release and abs(pinned - me.d_crit(alpha, paper, "B", adhesion=True)) > 1e-7
+
+
+def test_schema_event_log_and_round_trip(paper, tmp_path):
+    ds = me.simulate(paper, "B", alpha=[20.0, 70.0], method="continuum", t=np.linspace(0, 1500, 301))
+    for name, (units, _) in SIMULATION_VARIABLES.items():
+        assert ds[name].dims == ("alpha", "time") and ds[name].attrs["units"] == units
+    assert ds["event_kind"].dims == ("alpha", "event")
+    assert list(ds["event_kind"].sel(alpha=20.0).values[:3]) == ["first_contact", "corner", "detachment_starts"]
+    path = me.write_netcdf(ds, tmp_path / "c.nc")
+    xr.testing.assert_identical(me.open_result(path), ds)
+    with pytest.raises(ValueError, match="strictly"):
+        me.simulate(paper, "A", alpha=[30.0], method="continuum", t=[0.0, 2.0, 1.0])
+
+
+def test_discrete_converges_to_the_continuum(paper):
+    path = Path.scenario_A(30.0, paper)
+    errors = []
+    spacings = (8e-6, 4e-6, 2e-6)
+    for dx in spacings:
+        discrete = me.simulate(paper, path, dx=dx, dt=0.5 * dx / paper.v)
+        times = discrete["time"].values
+        continuum = me.simulate(paper, path, method="continuum", t=times)
+        both = np.isfinite(discrete["tangential_force"].values) & np.isfinite(continuum["tangential_force"].values)
+        errors.append(np.max(np.abs(discrete["tangential_force"].values[both]
+                                    - continuum["tangential_force"].values[both])))
+    assert errors[0] > errors[1] > errors[2]
+    orders = np.log(np.array(errors[:-1]) / np.array(errors[1:])) / np.log(2.0)
+    assert np.all(orders > 0.7), orders
