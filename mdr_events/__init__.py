@@ -23,6 +23,7 @@ from .analytic import (
     jump_off,
     pull_off_force,
 )
+from .crosscheck import cross_check
 from .datasets import DOI, open_result, write_netcdf
 from .parameters import Parameters
 from .paths import Path
@@ -36,6 +37,7 @@ __all__ = [
     "Path",
     "critical_angle",
     "critical_shift",
+    "cross_check",
     "d_crit",
     "jkr_contact_radius",
     "jkr_depth",

@@ -89,11 +89,34 @@ def _command_simulate(args: argparse.Namespace) -> None:
     from .simulate import simulate
 
     params = _parameters(args)
-    dataset = simulate(params, args.scenario, alpha=args.alpha, method=args.method, dx=args.dx,
-                       dt=args.dt, n_steps=args.n_steps)
+    if args.method == "continuum":
+        dataset = simulate(params, args.scenario, alpha=args.alpha, method="continuum")
+    else:
+        dataset = simulate(params, args.scenario, alpha=args.alpha, method=args.method, dx=args.dx,
+                           dt=args.dt, n_steps=args.n_steps)
     stem = f"simulation_{args.scenario.replace('+', 'plus')}_{args.method}"
-    for path in write_simulation(dataset, Path(args.out), stem):
+    written = write_simulation(dataset, Path(args.out), stem)
+    if "event_kind" in dataset:
+        written.append(write_event_log(dataset, Path(args.out) / f"{stem}_events.csv"))
+    for path in written:
         print(path)
+
+
+def write_event_log(dataset, path: Path) -> Path:
+    """The continuum event log as CSV (one row per event per angle), written atomically."""
+    from .datasets import atomic_write
+
+    lines = ["alpha_degree,event,time_s,kind,depth_m,radius_m,x_m"]
+    for alpha in dataset["alpha"].values:
+        case = dataset.sel(alpha=alpha)
+        for number in dataset["event"].values:
+            kind = str(case["event_kind"].values[number])
+            if not kind:
+                continue
+            values = [float(case[name].values[number]) for name in ("event_time", "event_depth", "event_radius", "event_x")]
+            lines.append(f"{alpha:.17g},{number},{values[0]:.17g},{kind},{values[1]:.17g},{values[2]:.17g},{values[3]:.17g}")
+    text = "\n".join(lines) + "\n"
+    return atomic_write(path, lambda temporary: Path(temporary).write_text(text), suffix=".csv")
 
 
 def _command_reproduce(args: argparse.Namespace) -> None:

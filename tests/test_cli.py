@@ -85,3 +85,18 @@ def test_simulate_writes_nc_and_png(capsys, tmp_path):
 def test_simulate_bad_arguments(capsys, tmp_path, argv, fragment):
     status, _, err = run(capsys, "simulate", "--scenario", "A", "--out", str(tmp_path), *argv)
     assert status == 2 and err.count("\n") == 1 and fragment in err
+
+
+def test_simulate_continuum_writes_the_event_log_csv(capsys, tmp_path):
+    status, out, err = run(capsys, "simulate", "--scenario", "A", "--method", "continuum", "--alpha", "15", "60",
+                           "--out", str(tmp_path))
+    assert status == 0, err
+    ds = me.open_result(tmp_path / "simulation_A_continuum.nc")
+    rows = (tmp_path / "simulation_A_continuum_events.csv").read_text().splitlines()
+    assert rows[0].startswith("alpha_degree,event,time_s,kind")
+    onset = [r.split(",") for r in rows[1:] if r.split(",")[3] == "slip_onset" and r.startswith("15,")]
+    assert float(onset[0][4]) == pytest.approx(me.d_crit(15.0, ds_params(ds), "A", adhesion=True), rel=1e-9)
+
+
+def ds_params(ds):
+    return me.Parameters.from_attrs(ds.attrs)

@@ -93,3 +93,17 @@ def test_discrete_converges_to_the_continuum(paper):
     assert errors[0] > errors[1] > errors[2]
     orders = np.log(np.array(errors[:-1]) / np.array(errors[1:])) / np.log(2.0)
     assert np.all(orders > 0.7), orders
+
+
+def test_cross_check(paper):
+    a = me.cross_check(paper, "A", (8.0, 20.0), dx=2e-6, n_steps=8000)
+    np.testing.assert_allclose(a["d_crit_continuum"], a["d_crit_closed_form"], rtol=1e-9)
+    assert np.all(np.abs(a["discrete_minus_continuum"]) <= a["discrete_tolerance"])
+    assert np.all(a["disagree"] == 0)
+    b = me.cross_check(paper, "B", (1.0, 30.0), dx=2e-6, n_steps=8000)
+    assert list(b["pinned_radius"].values) == [1, 0]
+    assert list(b["disagree"].values) == [1, 0]  # (21) ignores the pinned radius at 1°
+    assert np.all(np.abs(b["discrete_minus_continuum"]) <= b["discrete_tolerance"])
+    for unit_check in (a, b):
+        for var in unit_check.data_vars.values():
+            assert var.attrs["units"] and var.attrs["long_name"]
