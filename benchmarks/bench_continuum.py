@@ -13,25 +13,16 @@ Run: ``python benchmarks/bench_continuum.py``.
 
 from __future__ import annotations
 
-import statistics
 import time
 
 import numpy as np
 
 import mdr_events as me
+from _timing import median_time
 from mdr_events.continuum import evaluate, solve_path
 from mdr_events.convergence import exact_references_A
 from mdr_events.discrete import run_discrete
 from mdr_events.paths import Path
-
-
-def median_time(function, repeat=7):
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
 
 
 def main() -> None:

@@ -15,24 +15,14 @@ from __future__ import annotations
 
 import argparse
 import math
-import statistics
-import time
 
 import numpy as np
 from scipy import optimize
 
 import mdr_events as me
+from _timing import median_time
 
 N_ANGLES = 100_000
-
-
-def median_time(function, repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
 
 
 def brentq_curves(alphas: np.ndarray, p: me.Parameters, scenario: str) -> None:
