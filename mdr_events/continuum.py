@@ -382,6 +382,13 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                     regime, t_end, end_kind = "pinned", min(seg.t1, seg.time_at_depth(threshold)), "growth_resumes"
             elif seg.vd < 0:
                 threshold = solver.shrink.depth(a)
+                if d <= threshold + scale and a <= solver.shrink.jump_off_radius:
+                    # the held radius is inside the fold of the Δγ1 branch: every inner spring has a
+                    # higher threshold than the boundary one, so the whole contact comes off at once
+                    result.spans.append(_Span(t, t, seg, "pinned", pinned_radius=a, force=force))
+                    log(t, "pull_off", seg, a)
+                    contact, finished, a, force = False, True, 0.0, 0.0
+                    continue
                 if d <= threshold + scale:
                     regime = "shrinking"
                     t_end = min(seg.t1, seg.time_at_depth(solver.shrink.jump_off_depth))

@@ -107,3 +107,13 @@ def test_cross_check(paper):
     for unit_check in (a, b):
         for var in unit_check.data_vars.values():
             assert var.attrs["units"] and var.attrs["long_name"]
+
+
+def test_held_radius_inside_the_fold_comes_off_at_once(paper):
+    p = paper.replace(dgamma1=1.0, d_max=10e-6)
+    a0 = float(me.jkr_contact_radius(p.d_max, p, p.dgamma0))
+    assert a0 < me.jump_off(p, p.dgamma1)["contact_radius"]
+    solution = solve_path(p, Path([(0.0, 0.0), (1e-6, p.d_max), (1e-6, -3e-4)], p.v))
+    (pull,) = events_of(solution, "pull_off")
+    assert pull[2] == pytest.approx(float(me.jkr_depth(a0, p, p.dgamma1)), rel=1e-12)
+    assert pull[3] == pytest.approx(a0, rel=1e-12)
