@@ -293,30 +293,9 @@ class _Solver:
             return self.shrink.radius(span.segment.d(t), self.tol.radius_rtol)
         return span.pinned_radius
 
-    def radius_rate(self, span: _Span, a: float) -> float:
-        if span.regime == "growing":
-            return span.segment.vd / self.grow.slope(a) if a > 0 else math.inf
-        if span.regime == "shrinking":
-            return span.segment.vd / self.shrink.slope(a)
-        return 0.0
-
     # --- tangential quantities ------------------------------------------------------
     def slip_front(self, x: float, a: float) -> float:
         return self.Y.front(x - self.K * a, a) if a > 0 else 0.0
-
-    def force_rate(self, span: _Span, t: float) -> float:
-        a = self.radius(span, t)
-        if not a > 0:
-            return 0.0
-        x = span.segment.x(t)
-        rate = self.radius_rate(span, a)
-        c = self.slip_front(x, a)
-        total = (a - c) * span.segment.vx
-        if c > 0.0:
-            total += c * self.K * rate  # the slip zone follows the cap ū(a)
-        if span.regime == "shrinking":
-            total += rate * min(x - self.Y.value(a), self.K * a)  # springs leave with their shift
-        return 2.0 * self.p.G_star * total
 
     def algebraic_force(self, x: float, a: float) -> float:
         """``F_x = 2G* [c ū + ∫_c^a (x − Y) dξ]`` (the check of the integration)."""
@@ -344,7 +323,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     contact = False
     a = 0.0
     force = 0.0
-    last_kind: tuple[str, ...] = ()
+    holding: frozenset[str] = frozenset()  # slip events that have happened and still hold
     segments = _segments(path, mirror)
     finished = False
     for index, seg in enumerate(segments):
@@ -362,7 +341,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                     solver.Y.extend(0.0, _Piece(0.0, a, seg.x(t)))
                     contact = True
                     force = 0.0
-                    last_kind = ()
+                    holding = frozenset()
                     log(t, "first_contact", seg, a)
                     continue
                 t_next = seg.time_at_depth(0.0) if seg.vd > 0 else seg.t1
@@ -376,7 +355,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                 threshold = solver.grow.depth(a)
                 if d >= threshold - scale:
                     regime, t_end = "growing", seg.t1
-                    last_kind = tuple(k for k in last_kind if k != "full_slip")  # new springs stick
+                    holding -= {"full_slip"}  # new springs stick
                     solver.Y.extend(a, _Piece(a, math.inf, seg.xs, seg.vx / seg.vd, seg.ds))
                 else:
                     regime, t_end, end_kind = "pinned", min(seg.t1, seg.time_at_depth(threshold)), "growth_resumes"
@@ -400,7 +379,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
             if t_end >= seg.t1:
                 end_kind = ""  # the segment ends first
             span = _Span(t, t_end, seg, regime, pinned_radius=a)
-            fired, t_stop, force = _integrate_span(solver, span, force, last_kind, tolerances)
+            fired, t_stop, force = _integrate_span(solver, span, force, holding, tolerances)
             span.t_end = t_stop
             result.spans.append(span)
             a_stop = solver.radius(span, t_stop)
@@ -408,10 +387,10 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                 solver.Y.close(a_stop)
             span.pieces = [_Piece(p.start, p.end, p.x0, p.ratio, p.d_ref) for p in solver.Y.pieces]
             if fired:
-                last_kind = tuple(set(last_kind) | set(fired))
+                holding |= set(fired)
                 x_stop = seg.x(t_stop)
                 if "re_stick" in fired:
-                    last_kind = ()
+                    holding = frozenset()
                     c = solver.slip_front(x_stop, a_stop)
                     solver.Y.restick(c, x_stop - solver.K * a_stop)
                 for kind in fired:
@@ -455,6 +434,7 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
     after_end = np.flatnonzero(times > solution.end_time)
     keep_one = after_end[:1] if ended_by_contact else after_end[:0]
     sign = -1.0 if solution.mirrored else 1.0
+    anchor_maps: dict[int, AnchorMap] = {}  # the anchor map in force during each span
     for i, t_rel in enumerate(times):
         if t_rel > solution.end_time:
             if i in keep_one:
@@ -481,15 +461,17 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
         else:
             force = float(span.solution(a if span.variable == "radius" else t)[0])
         out["tangential_force"][i] = sign * force
-        anchors = AnchorMap(solver.grow, solver.tol.radius_rtol)
-        anchors.pieces = span.pieces
+        if index not in anchor_maps:
+            anchor_maps[index] = AnchorMap(solver.grow, solver.tol.radius_rtol)
+            anchor_maps[index].pieces = span.pieces
+        anchors = anchor_maps[index]
         if a > 0:
             front = anchors.front(x - solver.K * a, a)
             out["sliding_fraction"][i] = front / a
     return out
 
 
-def _integrate_span(solver: _Solver, span: _Span, force: float, last_kind: str, tol: Tolerances):
+def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozenset, tol: Tolerances):
     """Integrate ``F_x`` over a span; stop at the first slip event. Returns (event, t_stop, F_x).
 
     A pinned span is integrated in time. A growing or shrinking span is
@@ -559,10 +541,10 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, last_kind: str, 
 
     candidates = []
     if K > 0 and start != stop:
-        # last_kind: the slip events that have happened and still hold (a state, not a guess)
-        if "slip_onset" not in last_kind and onset0 < 0:
+        # holding: the slip events that have happened and still hold (a state, not a guess)
+        if "slip_onset" not in holding and onset0 < 0:
             candidates.append(("slip_onset", onset))
-        if "full_slip" not in last_kind and full0 < 0:
+        if "full_slip" not in holding and full0 < 0:
             candidates.append(("full_slip", full))
         if sliding and span.regime == "growing" and restick(start, None) > 0:
             candidates.append(("re_stick", restick))

@@ -34,7 +34,7 @@ def exit_depth(params: Parameters) -> float:
     return 1.5 * jump - 0.05 * params.d_max
 
 
-def _check_angle(alpha: float, scenario: str) -> float:
+def _check_angle(alpha: float) -> float:
     values = analytic._validate_alpha(alpha)
     if values.ndim != 0:
         raise TypeError(f"alpha={alpha!r}: a path takes one angle (degrees)")
@@ -80,7 +80,7 @@ class Path:
     @classmethod
     def scenario_A(cls, alpha: float, params: Parameters) -> "Path":
         """Eq. (14): in at angle α from the surface to ``d_max``, then vertically out."""
-        angle = _check_angle(alpha, "A")
+        angle = _check_angle(alpha)
         if angle == 0.0:
             raise ValueError("alpha=0.0 in scenario A: a path parallel to the surface never reaches d_max; "
                              "allowed: 0 < alpha <= 90")
@@ -95,7 +95,7 @@ class Path:
         out: it then ends after ``slide_length`` (default: four times the
         critical shift ``ū`` of the contact at ``d_max``).
         """
-        angle = _check_angle(alpha, "B")
+        angle = _check_angle(alpha)
         end = exit_depth(params)
         if angle == 0.0:
             if slide_length is None:
@@ -111,7 +111,7 @@ class Path:
     def scenario_B_indentation(cls, alpha: float, params: Parameters, final_depth: float | None = None) -> "Path":
         """The "+" branch of Fig. 9b: vertically to ``d_max``, further in at angle α to
         ``final_depth`` (default ``2 d_max``), then vertically out."""
-        angle = _check_angle(alpha, "B")
+        angle = _check_angle(alpha)
         final = 2.0 * params.d_max if final_depth is None else float(final_depth)
         if not final > params.d_max:
             raise ValueError(f"final_depth={final!r} is not allowed; allowed: > d_max = {params.d_max!r}")

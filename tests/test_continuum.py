@@ -37,10 +37,12 @@ def test_scenario_A_tangential_force_at_d_max_is_exact(paper, alpha):
     corner = events_of(solution, "corner")[0][0]
     out = me.continuum.evaluate(solution, np.array([corner]))
     assert out["tangential_force"][0] == pytest.approx(exact_references_A(paper, alpha)["tangential_force_max"], rel=1e-8)
-    # and the integrated F_x equals the algebraic form with the final anchor map
-    solver = solution.solver
+    # and the integrated F_x equals the algebraic form F_x = 2G* [c ū + ∫_c^a (x − Y) dξ]
+    # (no re-sticking in scenario A, so the final anchor map is the one at d_max)
     a = out["contact_radius"][0]
     assert a == pytest.approx(float(me.jkr_contact_radius(paper.d_max, paper, paper.dgamma0)), rel=1e-12)
+    algebraic = solution.solver.algebraic_force(out["tangential_displacement"][0], a)
+    assert out["tangential_force"][0] == pytest.approx(algebraic, rel=1e-9)
 
 
 def test_pull_off_happens_at_the_jump_off_depth(paper):
@@ -73,6 +75,8 @@ def test_schema_event_log_and_round_trip(paper, tmp_path):
         assert ds[name].dims == ("alpha", "time") and ds[name].attrs["units"] == units
     assert ds["event_kind"].dims == ("alpha", "event")
     assert list(ds["event_kind"].sel(alpha=20.0).values[:3]) == ["first_contact", "corner", "detachment_starts"]
+    logged = {str(kind) for kind in ds["event_kind"].values.ravel() if kind}
+    assert logged <= set(me.continuum.EVENT_KINDS)
     path = me.write_netcdf(ds, tmp_path / "c.nc")
     xr.testing.assert_identical(me.open_result(path), ds)
     with pytest.raises(ValueError, match="strictly"):
