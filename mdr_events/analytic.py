@@ -202,7 +202,11 @@ def _bracketed_root(coeffs, lo, hi, max_iterations):
             candidate = x - value / slope
         inside = (candidate >= lo) & (candidate <= hi)
         candidate = np.where(inside, candidate, 0.5 * (lo + hi))
-        done = np.all(np.abs(candidate - x) <= 4 * _EPS * np.abs(candidate))
+        # converged; or the bracket has closed, or p(x) is zero to its evaluation error (near a
+        # double root, e.g. at the pull-off fold, Newton is slow and the root is only this accurate)
+        noise, _ = _horner([np.abs(cf) for cf in coeffs], np.abs(x))
+        done = np.all((np.abs(candidate - x) <= 4 * _EPS * np.abs(candidate)) | (hi - lo <= 4 * _EPS * np.abs(hi))
+                      | (np.abs(value) <= 8 * _EPS * noise))
         x = candidate
         if done:
             break

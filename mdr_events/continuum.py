@@ -46,7 +46,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from . import symbolic
+from . import analytic, symbolic
 from .parameters import Parameters
 from .paths import Path
 
@@ -67,6 +67,13 @@ EVENT_KINDS = (
 )
 
 
+#: Restarts allowed at one instant before the solver reports it is stuck (each restart handles one event).
+_MAX_RESTARTS = 50
+
+#: An internal event, not logged: the slip front passes from one piece of the anchor map to the next.
+_FRONT_CROSSES = "front_crosses_piece"
+
+
 @dataclass(frozen=True)
 class Tolerances:
     """Solver tolerances of the continuum method.
@@ -85,31 +92,52 @@ class Tolerances:
 
 
 class _Branch:
-    """Scalar evaluation of one adhesive branch (9) with work of adhesion ``γ``."""
+    """Scalar evaluation of one adhesive branch (9) with work of adhesion ``γ``.
+
+    Uses the derived relations compiled for Python floats
+    (:attr:`symbolic.Relation.scalar`): these are called thousands of times
+    per run from the right-hand side and the event functions.
+    """
 
     def __init__(self, params: Parameters, work: float):
         self.params = params
         self.work = work
         args = (params.R, params.E_star, work)
-        self._depth = lambda a: symbolic.relation("jkr_depth")._numeric(a, *args)
-        self._slope = lambda a: symbolic.relation("jkr_depth_slope")._numeric(a, *args)
-        self._integral = lambda a: symbolic.relation("jkr_depth_integral")._numeric(a, *args)
-        self._quartic = symbolic.relation("jkr_radius_quartic")
+        depth = symbolic.relation("jkr_depth").scalar
+        slope = symbolic.relation("jkr_depth_slope").scalar
+        integral = symbolic.relation("jkr_depth_integral").scalar
+        coefficients = symbolic.relation("jkr_radius_quartic").scalar_coefficients
+        self._depth = lambda a: depth(a, *args)
+        self._slope = lambda a: slope(a, *args)
+        self._integral = lambda a: integral(a, *args)
+        self._coefficients = lambda d: coefficients(d, *args)
         if work > 0:
             self.jump_off_radius = float(symbolic.relation("jump_off_radius").numeric(*args))
             self.jump_off_depth = float(symbolic.relation("jump_off_depth").numeric(*args))
         else:
             self.jump_off_radius = 0.0
             self.jump_off_depth = 0.0
+        self._floor = math.sqrt(self.jump_off_radius)
 
     def depth(self, a: float) -> float:
-        return float(self._depth(a)) if a > 0 else 0.0
+        return self._depth(a) if a > 0 else 0.0
 
     def slope(self, a: float) -> float:
-        return float(self._slope(a))
+        return self._slope(a)
 
     def integral(self, a: float) -> float:
-        return float(self._integral(a)) if a > 0 else 0.0
+        return self._integral(a) if a > 0 else 0.0
+
+    def depths(self, a: np.ndarray) -> np.ndarray:
+        """:meth:`depth` for an array of radii (vectorised)."""
+        a = np.asarray(a, dtype=float)
+        value = symbolic.relation("jkr_depth").numeric(np.where(a > 0, a, 1.0), self.params.R,
+                                                        self.params.E_star, self.work)
+        return np.where(a > 0, value, 0.0)
+
+    def radii(self, depth: np.ndarray) -> np.ndarray:
+        """:meth:`radius` for an array of depths (vectorised; ``nan`` below the jump-off depth)."""
+        return np.asarray(analytic.jkr_contact_radius(np.asarray(depth, dtype=float), self.params, self.work))
 
     def radius(self, depth: float, rtol: float) -> float:
         """Stable-branch radius at ``depth`` (Newton from above on the quartic in ``s``)."""
@@ -117,15 +145,13 @@ class _Branch:
             return math.nan
         if self.work == 0.0:
             return math.sqrt(self.params.R * depth) if depth > 0 else 0.0
-        _, _, _, c1, c0 = (float(v) for v in self._quartic.coefficients(depth, self.params.R,
-                                                                         self.params.E_star, self.work))
-        negatives = [(1, -c1)] + ([(0, -c0)] if c0 < 0 else [])
-        s = max((len(negatives) * coefficient) ** (1.0 / (4 - power)) for power, coefficient in negatives)
+        _, _, _, c1, c0 = self._coefficients(depth)
+        # term-dominance upper bound on the single positive root (one sign change)
+        s = (-c1) ** (1.0 / 3.0) if c0 >= 0 else max((-2.0 * c1) ** (1.0 / 3.0), (-2.0 * c0) ** 0.25)
         s *= 1.0 + 1e-12
-        floor = math.sqrt(self.jump_off_radius)
+        floor = self._floor
         for _ in range(100):
-            value = s**4 + c1 * s + c0
-            step = value / (4 * s**3 + c1)
+            step = (s**4 + c1 * s + c0) / (4 * s**3 + c1)
             s_new = max(s - step, floor)
             if abs(s_new - s) <= rtol * s_new:
                 s = s_new
@@ -162,7 +188,10 @@ class AnchorMap:
         for p in self.pieces:
             if p.start < start:
                 kept.append(_Piece(p.start, min(p.end, start), p.x0, p.ratio, p.d_ref))
-        kept.append(piece)
+        if kept and (kept[-1].x0, kept[-1].ratio, kept[-1].d_ref) == (piece.x0, piece.ratio, piece.d_ref):
+            kept[-1].end = piece.end  # the same growth resumed (a restart after an event): one piece
+        else:
+            kept.append(piece)
         self.pieces = kept
 
     def close(self, end: float) -> None:
@@ -209,6 +238,47 @@ class AnchorMap:
             xi = self.attach.radius(depth, self.rtol)
             return min(max(xi, p.start), end, radius)
         return radius
+
+    def fronts(self, levels: np.ndarray, radii: np.ndarray) -> np.ndarray:
+        """:meth:`front` for arrays of levels and radii (vectorised over points, looped over pieces)."""
+        levels = np.asarray(levels, dtype=float)
+        radii = np.asarray(radii, dtype=float)
+        fronts = radii.copy()  # a point no piece stops slides everywhere
+        done = ~(radii > 0)
+        fronts[done] = 0.0
+        last = len(self.pieces) - 1
+        for i, p in enumerate(self.pieces):
+            end = radii if i == last else np.minimum(p.end, radii)
+            stops_before = ~done & (self._value(p, p.start) > levels)
+            fronts[stops_before] = p.start
+            done |= stops_before
+            end_values = p.x0 + p.ratio * (self.attach.depths(end) - p.d_ref) if p.ratio else np.full_like(end, p.x0)
+            within = ~done & (end_values > levels)
+            if p.ratio and within.any():
+                xi = self.attach.radii(p.d_ref + (levels[within] - p.x0) / p.ratio)
+                fronts[within] = np.minimum(np.maximum(np.nan_to_num(xi, nan=p.start), p.start), end[within])
+            elif within.any():
+                fronts[within] = end[within]
+            done |= within | (end >= radii)
+        return fronts
+
+    def piece_of_front(self, level: float, radius: float, tolerance: float = 0.0) -> int:
+        """Index of the piece that holds the slip front at ``level``: the first whose end value
+        exceeds it by more than ``tolerance`` (a front at a piece's end to rounding is in the next)."""
+        last = len(self.pieces) - 1
+        for i, p in enumerate(self.pieces):
+            end = radius if i == last else min(p.end, radius)
+            if end >= radius or self._value(p, end) > level + tolerance:
+                return i
+        return last
+
+    def front_in_piece(self, index: int, level: float, radius: float) -> float:
+        """The slip front continued smoothly within piece ``index`` (the inverse of its ``Y``, unclipped)."""
+        p = self.pieces[index]
+        if p.ratio == 0.0:
+            return min(p.end, radius)
+        xi = self.attach.radius(p.d_ref + (level - p.x0) / p.ratio, self.rtol)
+        return xi if xi == xi else p.start  # below the branch's fold: no continuation, hold the start
 
     def restick(self, front: float, anchor: float) -> None:
         """Sliding springs in ``[0, front]`` stick again with the common anchor ``x − ū``."""
@@ -332,7 +402,14 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
         t = max(seg.t0, result.t_contact)
         if t >= seg.t1:
             continue
+        stalled, t_last = 0, -math.inf
         while t < seg.t1 and not finished:
+            stalled = stalled + 1 if t <= t_last else 0
+            if stalled > _MAX_RESTARTS:
+                raise RuntimeError(f"the continuum method made no progress at t = {t!r} s after "
+                                   f"{_MAX_RESTARTS} event restarts (events {sorted(holding)}); please report "
+                                   f"the parameters and path")
+            t_last = t
             d = seg.d(t)
             if not contact:
                 if seg.vd > 0 and d >= -scale:
@@ -387,6 +464,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                 solver.Y.close(a_stop)
             span.pieces = [_Piece(p.start, p.end, p.x0, p.ratio, p.d_ref) for p in solver.Y.pieces]
             if fired:
+                fired = tuple(kind for kind in fired if kind != _FRONT_CROSSES)  # restart, log nothing
                 holding |= set(fired)
                 x_stop = seg.x(t_stop)
                 if "re_stick" in fired:
@@ -419,65 +497,82 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
 
 
 def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]:
-    """Fill a time grid (s from first contact) from the spans' dense output.
+    """Fill a time grid (s from first contact) from the spans' dense output, span by span.
 
-    Samples after the end of the run are ``nan``, except the first sample
-    after a pull-off, which shows the contact gone (forces and radius 0).
+    Within a span every quantity is a vectorised function of time: the
+    kinematics are linear, the radius follows its branch of (9) (or is
+    pinned), ``F_N`` is (10), ``F_x`` is the span's dense output and the
+    sliding fraction is the slip front of the span's anchor map. Samples
+    after the end of the run are ``nan``, except the first sample after a
+    pull-off, which shows the contact gone (forces and radius 0).
     """
     solver = solution.solver
+    params = solution.params
+    times = np.asarray(times, dtype=float)
     names = ("indentation_depth", "tangential_displacement", "normal_force", "tangential_force",
              "contact_radius", "sliding_fraction")
     out = {name: np.full(len(times), np.nan) for name in names}
     spans = solution.spans
-    ends = np.array([span.t_end for span in spans]) - solution.t_contact
-    ended_by_contact = bool(solution.events) and solution.events[-1][1] in ("pull_off", "contact_ends")
-    after_end = np.flatnonzero(times > solution.end_time)
-    keep_one = after_end[:1] if ended_by_contact else after_end[:0]
     sign = -1.0 if solution.mirrored else 1.0
-    anchor_maps: dict[int, AnchorMap] = {}  # the anchor map in force during each span
-    for i, t_rel in enumerate(times):
-        if t_rel > solution.end_time:
-            if i in keep_one:
-                last = spans[-1]
-                out["indentation_depth"][i] = last.segment.d(solution.t_contact + t_rel)
-                out["tangential_displacement"][i] = sign * last.segment.x(solution.t_contact + t_rel)
-                for name in ("normal_force", "tangential_force", "contact_radius"):
-                    out[name][i] = 0.0
+    ends = np.array([span.t_end for span in spans]) - solution.t_contact
+    inside = times <= solution.end_time
+    owner = np.minimum(np.searchsorted(ends, times, side="left"), len(spans) - 1)
+    ended_by_contact = bool(solution.events) and solution.events[-1][1] in ("pull_off", "contact_ends")
+    after_end = np.flatnonzero(~inside)
+    if ended_by_contact and after_end.size:
+        first = after_end[0]
+        t = solution.t_contact + times[first]
+        out["indentation_depth"][first] = spans[-1].segment.d(t)
+        out["tangential_displacement"][first] = sign * spans[-1].segment.x(t)
+        for name in ("normal_force", "tangential_force", "contact_radius"):
+            out[name][first] = 0.0
+    for index, span in enumerate(spans):
+        rows = np.flatnonzero(inside & (owner == index))
+        if not rows.size:
             continue
-        index = min(int(np.searchsorted(ends, t_rel, side="left")), len(spans) - 1)
-        span = spans[index]
-        t = solution.t_contact + t_rel
+        t = solution.t_contact + times[rows]
         d, x = span.segment.d(t), span.segment.x(t)
-        out["indentation_depth"][i] = d
-        out["tangential_displacement"][i] = sign * x
+        out["indentation_depth"][rows] = d
+        out["tangential_displacement"][rows] = sign * x
         if span.regime == "none":
-            out["normal_force"][i] = out["tangential_force"][i] = out["contact_radius"][i] = 0.0
+            for name in ("normal_force", "tangential_force", "contact_radius"):
+                out[name][rows] = 0.0
             continue
-        a = solver.radius(span, t)
-        out["contact_radius"][i] = a
-        out["normal_force"][i] = 2.0 * solution.params.E_star * (a * d - a**3 / (3.0 * solution.params.R))
-        if span.solution is None:
-            force = span.force
+        if span.regime == "growing":
+            a = solver.grow.radii(d)
+        elif span.regime == "shrinking":  # the last sample may sit on the fold to rounding
+            a = solver.shrink.radii(np.maximum(d, solver.shrink.jump_off_depth))
         else:
-            force = float(span.solution(a if span.variable == "radius" else t)[0])
-        out["tangential_force"][i] = sign * force
-        if index not in anchor_maps:
-            anchor_maps[index] = AnchorMap(solver.grow, solver.tol.radius_rtol)
-            anchor_maps[index].pieces = span.pieces
-        anchors = anchor_maps[index]
-        if a > 0:
-            front = anchors.front(x - solver.K * a, a)
-            out["sliding_fraction"][i] = front / a
+            a = np.full(rows.size, span.pinned_radius)
+        out["contact_radius"][rows] = a
+        out["normal_force"][rows] = 2.0 * params.E_star * (a * d - a**3 / (3.0 * params.R))
+        if span.solution is None:
+            force = np.full(rows.size, span.force)
+        else:
+            force = span.solution(a if span.variable == "radius" else t)[0]
+        out["tangential_force"][rows] = sign * force
+        anchors = AnchorMap(solver.grow, solver.tol.radius_rtol)
+        anchors.pieces = span.pieces
+        with np.errstate(invalid="ignore", divide="ignore"):
+            out["sliding_fraction"][rows] = np.where(a > 0, anchors.fronts(x - solver.K * a, a) / a, np.nan)
     return out
 
 
 def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozenset, tol: Tolerances):
-    """Integrate ``F_x`` over a span; stop at the first slip event. Returns (event, t_stop, F_x).
+    """Integrate ``F_x`` over a span; stop at the first slip event. Returns (events, t_stop, F_x).
 
     A pinned span is integrated in time. A growing or shrinking span is
     integrated in the contact radius ``a`` (``dF/da = (dF/dt)/(da/dt)``),
     which is regular where ``da/dt`` is not: at the first contact of a
     non-adhesive indenter and at the pull-off fold ``∂d/∂a = 0``.
+
+    The right-hand side keeps the slip state the span started in (all
+    sticking, a slip zone ``[0, c]``, or full slip) and is continued smoothly
+    past the span's terminal events, as hybrid-system integration requires:
+    the solver then locates the switch by root-finding instead of shrinking
+    its steps against a kink (the slip zone of a uniform anchor jumps open at
+    onset). A slip event already met at the start (e.g. at a path corner)
+    fires at once, with zero length.
     """
     t0, t1 = span.t_start, span.t_end
     if t1 <= t0:
@@ -486,7 +581,43 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
     K = solver.K
     G2 = 2.0 * solver.p.G_star
     moving = span.regime in ("growing", "shrinking")
+    shrinking = span.regime == "shrinking"
     branch = solver.grow if span.regime == "growing" else solver.shrink
+    if moving:
+        start = solver.radius(span, t0)
+        if shrinking and t1 == seg.time_at_depth(branch.jump_off_depth):
+            stop = branch.jump_off_radius
+        else:
+            stop = solver.radius(span, t1)
+    else:
+        start, stop = t0, t1
+    span.variable = "radius" if moving else "time"
+    a0 = start if moving else span.pinned_radius
+    x0 = seg.x(t0)
+    onset0 = x0 - solver.Y.value(0.0) - K * a0
+    full0 = x0 - solver.Y.value(a0) - K * a0
+    shift_scale = 1e-9 * max(K * a0, abs(x0), solver.p.d_max)
+    if K > 0 and a0 > 0:
+        # clearly past, not zero to rounding (as right after a re-stick, where the level then falls)
+        met = tuple(kind for kind, value in (("slip_onset", onset0), ("full_slip", full0))
+                    if kind not in holding and value > 1e-3 * shift_scale)
+        if met:
+            span.solution, span.force = None, force
+            return met, t0, force
+    # the slip state the span starts in; the right-hand side keeps it (see above)
+    state = "full" if "full_slip" in holding else "partial" if "slip_onset" in holding else "stick"
+    if start == stop or (not moving and (seg.vx == 0.0 or state == "full")):
+        span.solution, span.force = None, force  # F_x does not change
+        return (), t1, force
+
+    if state == "partial":
+        piece = solver.Y.piece_of_front(x0 - K * a0, a0, 1e-3 * shift_scale)
+        piece_end = solver.Y.pieces[piece].end
+
+    def slip_zone(x, a):
+        if state == "stick":
+            return 0.0
+        return a if state == "full" else solver.Y.front_in_piece(piece, x - K * a, a)
 
     if moving:
         def time_of(a):
@@ -495,19 +626,12 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
         def radius_of(var):
             return var
 
-        start = solver.radius(span, t0)
-        if span.regime == "shrinking" and t1 == seg.time_at_depth(branch.jump_off_depth):
-            stop = branch.jump_off_radius
-        else:
-            stop = solver.radius(span, t1)
-
         def rhs(a, y):
-            t = time_of(a)
-            x = seg.x(t)
-            c = solver.slip_front(x, a)
+            x = seg.x(time_of(a))
+            c = slip_zone(x, a)
             total = c * K + (a - c) * seg.vx * branch.slope(a) / seg.vd
-            if span.regime == "shrinking":
-                total += min(x - solver.Y.value(a), K * a)
+            if shrinking:  # springs leave the edge with their shift
+                total += K * a if state == "full" else x - solver.Y.value(a)
             return [G2 * total]
     else:
         def time_of(t):
@@ -516,18 +640,9 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
         def radius_of(var):
             return span.pinned_radius
 
-        start, stop = t0, t1
-
         def rhs(t, y):
             a = span.pinned_radius
-            return [G2 * (a - solver.slip_front(seg.x(t), a)) * seg.vx]
-
-    a0 = radius_of(start)
-    x0 = seg.x(t0)
-    shift_scale = 1e-9 * max(K * a0, abs(x0), solver.p.d_max)
-    onset0 = x0 - solver.Y.value(0.0) - K * a0
-    full0 = x0 - solver.Y.value(a0) - K * a0
-    sliding = a0 > 0 and solver.slip_front(x0, a0) > 0.0 and onset0 > -shift_scale
+            return [G2 * (a - slip_zone(seg.x(t), a)) * seg.vx]
 
     def onset(var, y):
         return seg.x(time_of(var)) - solver.Y.value(0.0) - K * radius_of(var)
@@ -539,15 +654,20 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
     def restick(var, y):  # growing only: dx/dt − dū/dt
         return seg.vx - K * seg.vd / branch.slope(var)
 
+    def front_crosses(var, y):  # the slip front leaves its piece of the anchor map
+        return seg.x(time_of(var)) - K * radius_of(var) - solver.Y.value(piece_end)
+
     candidates = []
-    if K > 0 and start != stop:
+    if K > 0:
         # holding: the slip events that have happened and still hold (a state, not a guess)
-        if "slip_onset" not in holding and onset0 < 0:
+        if "slip_onset" not in holding:
             candidates.append(("slip_onset", onset))
-        if "full_slip" not in holding and full0 < 0:
+        if "full_slip" not in holding:
             candidates.append(("full_slip", full))
-        if sliding and span.regime == "growing" and restick(start, None) > 0:
+        if state == "partial" and span.regime == "growing" and restick(start, None) > 0:
             candidates.append(("re_stick", restick))
+        if state == "partial" and piece_end < a0:
+            candidates.append((_FRONT_CROSSES, front_crosses))
     events = []
     for kind, function in candidates:
         function.terminal = True
@@ -555,11 +675,6 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
         rising = kind != "re_stick"
         function.direction = 1.0 if rising else -1.0
         events.append(function)
-    span.variable = "radius" if moving else "time"
-    if start == stop:
-        span.solution = None
-        span.force = force
-        return (), t1, force
     solution = solve_ivp(rhs, (start, stop), [force], method="DOP853", rtol=tol.rtol, atol=tol.atol,
                          dense_output=True, events=events or None)
     if solution.status < 0:

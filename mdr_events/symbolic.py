@@ -151,6 +151,25 @@ class Relation:
         return self._numeric(*self._ordered(values, named))
 
     @functools.cached_property
+    def scalar(self) -> Callable[..., float]:
+        """The same expression as :attr:`numeric`, compiled for Python floats.
+
+        Built once with the ``math`` module (no NumPy scalars), for scalar hot
+        loops such as the continuum right-hand side. Arguments are positional,
+        in the order of :attr:`args`; where :meth:`numeric` would give ``nan``
+        (e.g. the square root of a negative number) it raises ``ValueError``.
+        """
+        expr = self.lhs if self.variable is not None else self.rhs
+        return sp.lambdify(self.args, expr, modules="math", cse=True)
+
+    @functools.cached_property
+    def scalar_coefficients(self) -> Callable[..., list]:
+        """:meth:`coefficients` for Python floats (``math`` module), positional arguments."""
+        args, _ = self._coefficients
+        coeffs = sp.Poly(self.lhs, self.variable).all_coeffs()
+        return sp.lambdify(args, coeffs, modules="math", cse=True)
+
+    @functools.cached_property
     def _coefficients(self) -> Callable[..., list]:
         if self.variable is None:
             raise TypeError(f"relation {self.key!r} is not a polynomial")
