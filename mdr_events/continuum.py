@@ -50,7 +50,7 @@ from . import analytic, symbolic
 from .parameters import Parameters
 from .paths import Path
 
-__all__ = ["Tolerances", "solve_path", "PathSolution", "EVENT_KINDS"]
+__all__ = ["Tolerances", "solve_path", "PathSolution", "EVENT_KINDS", "evaluate", "algebraic_tangential_force"]
 
 #: Event names of the log, in the order they can occur.
 EVENT_KINDS = (
@@ -367,13 +367,6 @@ class _Solver:
     def slip_front(self, x: float, a: float) -> float:
         return self.Y.front(x - self.K * a, a) if a > 0 else 0.0
 
-    def algebraic_force(self, x: float, a: float) -> float:
-        """``F_x = 2G* [c ū + ∫_c^a (x − Y) dξ]`` (the check of the integration)."""
-        if not a > 0:
-            return 0.0
-        c = self.slip_front(x, a)
-        return 2.0 * self.p.G_star * (c * self.K * a + x * (a - c) - self.Y.integral(c, a))
-
 
 def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Tolerances()) -> PathSolution:
     """Integrate the continuum model along ``path``; see the module docstring."""
@@ -558,6 +551,35 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
     return out
 
 
+def algebraic_tangential_force(solution: PathSolution, times: np.ndarray) -> np.ndarray:
+    """``F_x = 2G* [c ū + ∫_c^a (x − Y) dξ]`` from each span's anchor map, without integration.
+
+    The independent check of :func:`evaluate`'s integrated ``F_x`` (same time
+    convention, s from first contact; ``nan`` after the end of the run).
+    """
+    solver = solution.solver
+    times = np.asarray(times, dtype=float)
+    filled = evaluate(solution, times)
+    ends = np.array([span.t_end for span in solution.spans]) - solution.t_contact
+    owner = np.minimum(np.searchsorted(ends, times, side="left"), len(solution.spans) - 1)
+    sign = -1.0 if solution.mirrored else 1.0
+    out = np.full(len(times), np.nan)
+    for i, t_rel in enumerate(times):
+        if not t_rel <= solution.end_time:
+            continue
+        span = solution.spans[owner[i]]
+        a = filled["contact_radius"][i]
+        x = sign * filled["tangential_displacement"][i]
+        anchors = AnchorMap(solver.grow, solver.tol.radius_rtol)
+        anchors.pieces = span.pieces
+        if span.regime == "none" or not a > 0:
+            out[i] = 0.0
+            continue
+        c = anchors.front(x - solver.K * a, a)
+        out[i] = sign * 2.0 * solution.params.G_star * (c * solver.K * a + x * (a - c) - anchors.integral(c, a))
+    return out
+
+
 def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozenset, tol: Tolerances):
     """Integrate ``F_x`` over a span; stop at the first slip event. Returns (events, t_stop, F_x).
 
@@ -606,6 +628,10 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
             return met, t0, force
     # the slip state the span starts in; the right-hand side keeps it (see above)
     state = "full" if "full_slip" in holding else "partial" if "slip_onset" in holding else "stick"
+    if state == "partial" and span.regime == "growing" and seg.vx - K * seg.vd / branch.slope(start) <= 0.0:
+        # the cap already grows faster than the indenter moves (e.g. after a corner): re-stick now
+        span.solution, span.force = None, force
+        return ("re_stick",), t0, force
     if start == stop or (not moving and (seg.vx == 0.0 or state == "full")):
         span.solution, span.force = None, force  # F_x does not change
         return (), t1, force

@@ -41,8 +41,34 @@ def test_scenario_A_tangential_force_at_d_max_is_exact(paper, alpha):
     # (no re-sticking in scenario A, so the final anchor map is the one at d_max)
     a = out["contact_radius"][0]
     assert a == pytest.approx(float(me.jkr_contact_radius(paper.d_max, paper, paper.dgamma0)), rel=1e-12)
-    algebraic = solution.solver.algebraic_force(out["tangential_displacement"][0], a)
+    algebraic = me.continuum.algebraic_tangential_force(solution, np.array([corner]))[0]
     assert out["tangential_force"][0] == pytest.approx(algebraic, rel=1e-9)
+
+
+@pytest.mark.parametrize("waypoints", [
+    # indent at two angles (two growth pieces), retract part way, push on at a third angle
+    # (growth resumes after a pinned span), then pull off to the side
+    [(0.0, 0.0), (60e-6, 100e-6), (400e-6, 200e-6), (420e-6, 120e-6), (430e-6, 300e-6), (900e-6, -5e-5)],
+    # steep then shallow indentation: the slip front crosses from one growth piece into the next
+    [(0.0, 0.0), (20e-6, 150e-6), (900e-6, 300e-6), (900e-6, -5e-5)],
+    # fast tangential growth then vertical: re-sticking of the slip zone while the cap grows
+    [(0.0, 0.0), (500e-6, 60e-6), (500e-6, 300e-6), (1200e-6, -5e-5)],
+])
+def test_integrated_tangential_force_equals_the_algebraic_form_along_a_general_path(paper, waypoints):
+    """dF_x/dt integrated across every regime and slip state equals F_x = 2G*[cū + ∫_c^a (x − Y)dξ]
+    evaluated from the anchor map in force, at 400 times (1e-8 of the largest |F_x|)."""
+    solution = solve_path(paper, Path(waypoints, paper.v))
+    times = np.linspace(0.0, solution.end_time, 401)[:-1]
+    integrated = me.continuum.evaluate(solution, times)["tangential_force"]
+    algebraic = me.continuum.algebraic_tangential_force(solution, times)
+    scale = np.max(np.abs(algebraic))
+    assert scale > 0
+    np.testing.assert_allclose(integrated, algebraic, rtol=0, atol=1e-8 * scale)
+    assert np.all(np.abs(integrated) <= paper.tau0 * math.pi * integrated_radius(solution, times) ** 2 * (1 + 1e-9))
+
+
+def integrated_radius(solution, times):
+    return me.continuum.evaluate(solution, times)["contact_radius"]
 
 
 def test_pull_off_happens_at_the_jump_off_depth(paper):
