@@ -11,6 +11,7 @@ import sys
 from pathlib import Path
 from typing import Sequence
 
+from .output import write_event_log, write_phase_diagram, write_simulation
 from .parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 
 PRESETS = {"paper-R30": 0.03, "paper-R100": 0.1}
@@ -56,33 +57,11 @@ def _command_derive(args: argparse.Namespace) -> None:
         print()
 
 
-def _write_phase_diagram(params: Parameters, scenario: str, out: Path, stem: str) -> list[Path]:
-    from .datasets import write_netcdf
-    from .phase import phase_diagram
-    from .plotting import plot_phase_diagram, save_figure
-
-    dataset = phase_diagram(params, scenario=scenario)
-    written = [write_netcdf(dataset, out / f"{stem}.nc")]
-    axes = plot_phase_diagram(dataset)
-    written.append(save_figure(axes.figure, out / f"{stem}.png"))
-    return written
-
-
 def _command_phase_diagram(args: argparse.Namespace) -> None:
     params = _parameters(args)
     stem = f"phase_diagram_{args.scenario}"
-    for path in _write_phase_diagram(params, args.scenario, Path(args.out), stem):
+    for path in write_phase_diagram(params, args.scenario, Path(args.out), stem):
         print(path)
-
-
-def write_simulation(dataset, out: Path, stem: str, overlay=None) -> list[Path]:
-    """Write a simulation dataset as ``stem.nc`` and its figure as ``stem.png``."""
-    from .datasets import write_netcdf
-    from .plotting import plot_simulation, save_figure
-
-    written = [write_netcdf(dataset, out / f"{stem}.nc")]
-    written.append(save_figure(plot_simulation(dataset, overlay=overlay), out / f"{stem}.png"))
-    return written
 
 
 def _command_simulate(args: argparse.Namespace) -> None:
@@ -100,23 +79,6 @@ def _command_simulate(args: argparse.Namespace) -> None:
         written.append(write_event_log(dataset, Path(args.out) / f"{stem}_events.csv"))
     for path in written:
         print(path)
-
-
-def write_event_log(dataset, path: Path) -> Path:
-    """The continuum event log as CSV (one row per event per angle), written atomically."""
-    from .datasets import atomic_write
-
-    lines = ["alpha_degree,event,time_s,kind,depth_m,radius_m,x_m"]
-    for alpha in dataset["alpha"].values:
-        case = dataset.sel(alpha=alpha)
-        for number in dataset["event"].values:
-            kind = str(case["event_kind"].values[number])
-            if not kind:
-                continue
-            values = [float(case[name].values[number]) for name in ("event_time", "event_depth", "event_radius", "event_x")]
-            lines.append(f"{alpha:.17g},{number},{values[0]:.17g},{kind},{values[1]:.17g},{values[2]:.17g},{values[3]:.17g}")
-    text = "\n".join(lines) + "\n"
-    return atomic_write(path, lambda temporary: Path(temporary).write_text(text), suffix=".csv")
 
 
 def _command_reproduce(args: argparse.Namespace) -> None:

@@ -12,7 +12,10 @@ before that (small α: ``d_max − tan α ū(a0) >= d_1(a0)``) the slip onset is
 ``d_max − tan α ū(a0)``, earlier than (21) says; the rows are flagged
 ``pinned_radius = 1`` and the closed form is not expected to agree there.
 Elsewhere the three agree (the discrete model within ``3 K Δx`` plus one
-time step of depth, ``K = π τ0 tan α / (2G*)``).
+time step of depth, ``K = π τ0 tan α / (2G*)``). A slip that only one
+method finds is a disagreement, unless it lies within that tolerance of the
+end of the phase (``d_max`` in A, the jump-off depth in B): the discrete
+model reaches those up to ``Δx`` apart (``found_once_at_phase_end``).
 """
 
 from __future__ import annotations
@@ -67,10 +70,18 @@ def cross_check(params: Parameters, scenario: str = "A", alpha=(10.0, 15.0, 20.0
         a0 = float(analytic.jkr_contact_radius(params.d_max, params, params.dgamma0))
         release = float(analytic.jkr_depth(a0, params, params.dgamma1))
         pinned = (params.d_max - K * a0 >= release).astype(int)
+    # a slip that one method finds and the other does not disagrees, unless it falls within the
+    # discrete tolerance of the end of the phase (d_max in A, the jump-off in B), which the two
+    # methods meet up to Δx apart
+    phase_end = params.d_max if scenario == "A" else analytic.jump_off(params, params.dgamma1)["depth"]
     with np.errstate(invalid="ignore"):
         closed_vs_continuum = np.abs(closed - continuum)
         discrete_vs_continuum = np.abs(discrete - continuum)
-        flag = ((closed_vs_continuum > 1e-9 * np.abs(continuum)) | (discrete_vs_continuum > discrete_tolerance)).astype(int)
+        found_once = np.isnan(discrete) != np.isnan(continuum)
+        at_phase_end = np.abs(np.where(np.isnan(continuum), discrete, continuum) - phase_end) <= discrete_tolerance
+        flag = ((closed_vs_continuum > 1e-9 * np.abs(continuum)) | (discrete_vs_continuum > discrete_tolerance)
+                | (found_once & ~at_phase_end)).astype(int)
+        at_end = (found_once & at_phase_end).astype(int)
     dim = "alpha"
     ds = xr.Dataset(
         {
@@ -81,6 +92,8 @@ def cross_check(params: Parameters, scenario: str = "A", alpha=(10.0, 15.0, 20.0
             "discrete_minus_continuum": (dim, discrete - continuum, {"units": "m", "long_name": "discrete − continuum"}),
             "discrete_tolerance": (dim, discrete_tolerance, {"units": "m", "long_name": "3 K dx + one time step of depth"}),
             "pinned_radius": (dim, pinned, {"units": "1", "long_name": "1: slip while the radius is pinned ((21) does not apply)"}),
+            "found_once_at_phase_end": (dim, at_end, {"units": "1", "long_name": "1: only one method slips, within "
+                                                       "the discrete tolerance of d_max (A) or the jump-off (B)"}),
             "disagree": (dim, flag, {"units": "1", "long_name": "1: a difference exceeds its tolerance"}),
         },
         coords={dim: (dim, angles, {"units": "degree", "long_name": "path angle to the surface"})},

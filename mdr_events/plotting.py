@@ -105,7 +105,7 @@ SIMULATION_PANELS = (
 def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, title: str | None = None):
     """Fig. 8 (scenario A) or Fig. 10 (scenario B): panels a–e against time, one line per angle.
 
-    ``overlay`` (e.g. another method) is drawn as thin black lines.
+    ``overlay`` (e.g. the discrete model for one angle) is drawn as thin dashed red lines.
     Returns the figure.
     """
     figure, axes = plt.subplots(5, 1, figsize=(7.0, 12.0), sharex=True, constrained_layout=True)
@@ -118,9 +118,11 @@ def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, titl
             ax.plot(time, values, color=colour, lw=1.4, label=text)
         if overlay is not None:
             for alpha in overlay["alpha"].values:
+                text = f"{overlay.attrs.get('method', 'overlay')}, α = {alpha:g}°"
+                if "dx" in overlay.attrs:
+                    text += f", Δx = {overlay.attrs['dx'] * 1e6:g} µm"
                 ax.plot(overlay["time"].values, overlay[name].sel(alpha=alpha).values * scale,
-                        color="k", lw=0.6, ls="--",
-                        label=f"{overlay.attrs.get('method', 'overlay')}" if alpha == overlay["alpha"].values[0] else None)
+                        color="tab:red", lw=0.8, ls=(0, (4, 3)), label=text)
         ax.set_ylabel(label)
         ax.text(0.01, 0.92, f"({letter})", transform=ax.transAxes, fontsize=10, va="top")
         ax.grid(alpha=0.3)
