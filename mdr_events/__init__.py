@@ -7,9 +7,10 @@ an angle, with Heß's adhesion rule (two works of adhesion) and a
 spring-slip criterion.
 
 Layers (data flows one way):
-``parameters`` → ``symbolic`` (SymPy derivations) → ``analytic``
-(closed forms, phase diagrams) → ``datasets`` (xarray, netCDF) → ``plotting``
-and ``cli``.
+``parameters`` → ``symbolic`` (SymPy derivations) → ``analytic`` (closed
+forms, phase diagrams) / ``continuum`` (event-driven, exact) / ``discrete``
+(the paper's springs) → ``simulate``, ``crosscheck`` → ``datasets`` (xarray,
+netCDF) → ``output``, ``plotting``, ``report``, ``study`` and ``cli``.
 """
 
 from ._version import __version__
@@ -29,6 +30,7 @@ from .parameters import Parameters
 from .paths import Path
 from .phase import phase_diagram
 from .simulate import simulate
+from .study import load_study, run_study
 
 __all__ = [
     "__version__",
@@ -43,9 +45,11 @@ __all__ = [
     "jkr_depth",
     "jkr_normal_force",
     "jump_off",
+    "load_study",
     "open_result",
     "phase_diagram",
     "pull_off_force",
+    "run_study",
     "simulate",
     "write_netcdf",
 ]

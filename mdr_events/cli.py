@@ -1,4 +1,4 @@
-"""Command line: ``mdr-events derive | phase-diagram | simulate | reproduce``.
+"""Command line: ``mdr-events derive | phase-diagram | simulate | run | reproduce``.
 
 Bad arguments print one line ``mdr-events: error: ...`` on stderr and exit
 with status 2 (no traceback).
@@ -12,9 +12,7 @@ from pathlib import Path
 from typing import Sequence
 
 from .output import write_event_log, write_phase_diagram, write_simulation
-from .parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
-
-PRESETS = {"paper-R30": 0.03, "paper-R100": 0.1}
+from .parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters
 
 
 class UsageError(Exception):
@@ -81,6 +79,13 @@ def _command_simulate(args: argparse.Namespace) -> None:
         print(path)
 
 
+def _command_run(args: argparse.Namespace) -> None:
+    from .study import load_study, run_study
+
+    for path in run_study(load_study(args.study), progress=_progress):
+        print(path)
+
+
 def _command_reproduce(args: argparse.Namespace) -> None:
     from .report import reproduce
 
@@ -119,6 +124,10 @@ def build_parser() -> argparse.ArgumentParser:
     sim.add_argument("--out", required=True, help="output directory")
     _parameter_options(sim)
     sim.set_defaults(run=_command_simulate)
+
+    run = commands.add_parser("run", help="run a study described in a TOML file (see mdr_events.study)")
+    run.add_argument("study", help="the study file, e.g. study.toml")
+    run.set_defaults(run=_command_run)
 
     reproduce = commands.add_parser("reproduce", help="regenerate results/ (figures, datasets, report)")
     reproduce.add_argument("--out", default="results", help="output directory (default results)")

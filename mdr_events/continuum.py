@@ -90,6 +90,12 @@ class Tolerances:
     atol: float = 1e-14
     radius_rtol: float = 1e-14
 
+    def __post_init__(self) -> None:
+        for name in ("rtol", "atol", "radius_rtol"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not (0 < value < 1):
+                raise ValueError(f"Tolerances.{name}={value!r} is not allowed; allowed: a number in (0, 1)")
+
 
 class _Branch:
     """Scalar evaluation of one adhesive branch (9) with work of adhesion ``γ``.

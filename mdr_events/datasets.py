@@ -96,17 +96,63 @@ def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
         temporary, engine="scipy", format="NETCDF3_64BIT"), suffix=".nc")
 
 
-def open_result(path: str | os.PathLike) -> xr.Dataset:
-    """Read a file written by this package, fully loaded, and check its stamp.
+#: What each kind of result must hold: ``content`` attribute → {variable: dims}.
+#: (Simulation variables are added below, once :data:`SIMULATION_VARIABLES` is defined.)
+RESULT_SCHEMAS: dict[str, dict[str, tuple[str, ...]]] = {
+    "phase diagram of slip onset": {"d_crit_hertz": None, "d_crit_jkr": None, "d_max": (),
+                                    "critical_angle_hertz": (), "critical_angle_jkr": ()},
+    "slip-onset cross-check": {name: ("alpha",) for name in (
+        "d_crit_closed_form", "d_crit_continuum", "d_crit_discrete", "discrete_minus_continuum",
+        "discrete_tolerance", "pinned_radius", "disagree")},
+}
+#: Variables of the continuum event log (dims ``("alpha", "event")``).
+EVENT_VARIABLES = ("event_time", "event_kind", "event_depth", "event_radius", "event_x")
+#: Attributes every result carries.
+STAMP_ATTRIBUTES = ("program", "program_version", "doi", "content")
 
-    Raises ``ValueError`` naming what is missing when the file is not one of
-    ours (no ``program`` attribute, or parameters missing).
+
+def open_result(path: str | os.PathLike) -> xr.Dataset:
+    """Read a file written by this package, fully loaded, and check it against its schema.
+
+    Raises ``ValueError`` naming what is wrong when the file is not a
+    readable netCDF file, was not written by this package, lacks a stamp
+    attribute or a parameter, or lacks a variable (or its ``units`` /
+    ``long_name``) that its kind of result (``content``) must hold.
     """
-    with xr.open_dataset(path, engine="scipy") as handle:
-        dataset = handle.load()
+    where = repr(os.fspath(path))
+    try:
+        with xr.open_dataset(path, engine="scipy") as handle:
+            dataset = handle.load()
+    except FileNotFoundError:
+        raise ValueError(f"{where}: no such file") from None
+    except (OSError, ValueError, TypeError, IndexError, KeyError) as error:
+        raise ValueError(f"{where} is not a readable netCDF file ({type(error).__name__}: {error})") from None
     if dataset.attrs.get("program") != PROGRAM:
-        raise ValueError(f"{os.fspath(path)!r} was not written by {PROGRAM} (attribute 'program' missing)")
-    parameters_of(dataset)
+        raise ValueError(f"{where} was not written by {PROGRAM} (attribute 'program' missing or different)")
+    missing = [name for name in STAMP_ATTRIBUTES if name not in dataset.attrs]
+    if missing:
+        raise ValueError(f"{where} lacks the attribute(s) {missing}")
+    try:
+        parameters_of(dataset)
+    except (ValueError, TypeError) as error:
+        raise ValueError(f"{where}: {error}") from None
+    content = dataset.attrs["content"]
+    if content not in RESULT_SCHEMAS:
+        raise ValueError(f"{where}: unknown content {content!r}; allowed: {sorted(RESULT_SCHEMAS)}")
+    schema = dict(RESULT_SCHEMAS[content])
+    if dataset.attrs.get("method") == "continuum":
+        schema.update({name: ("alpha", "event") for name in EVENT_VARIABLES})
+    missing = [name for name in schema if name not in dataset.variables]
+    if missing:
+        raise ValueError(f"{where} ({content}) lacks the variable(s) {missing}")
+    wrong = [f"{name} {dataset[name].dims} (expected {dims})" for name, dims in schema.items()
+             if dims is not None and dataset[name].dims != dims]
+    if wrong:
+        raise ValueError(f"{where} ({content}) has variable(s) with the wrong dimensions: {'; '.join(wrong)}")
+    unlabelled = [name for name in dataset.variables
+                  if not {"units", "long_name"} <= set(dataset[name].attrs)]
+    if unlabelled:
+        raise ValueError(f"{where} ({content}) has variable(s) without units or long_name: {unlabelled}")
     return dataset
 
 
@@ -127,6 +173,8 @@ SIMULATION_VARIABLES: dict[str, tuple[str, str]] = {
     "mean_shear_stress": ("Pa", "mean shear stress tau = F_x / A"),
     "sliding_fraction": ("1", "share of the springs in contact that are at the critical shift"),
 }
+RESULT_SCHEMAS["simulation of indentation and detachment along straight paths"] = {
+    name: ("alpha", "time") for name in SIMULATION_VARIABLES}
 
 
 def simulation_dataset(

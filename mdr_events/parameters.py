@@ -13,7 +13,7 @@ import numbers
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-__all__ = ["Parameters", "PARAMETER_UNITS", "PARAMETER_LONG_NAMES"]
+__all__ = ["Parameters", "PARAMETER_UNITS", "PARAMETER_LONG_NAMES", "PRESETS"]
 
 #: SI unit of every field, used for dataset attributes and the CLI help.
 PARAMETER_UNITS: dict[str, str] = {
@@ -58,6 +58,10 @@ def _is_allowed(name: str, value: float) -> bool:
     if name in ("tau0", "dgamma0", "dgamma1"):
         return value >= 0.0
     return value > 0.0
+
+
+#: Named parameter sets of the paper (CLI ``--preset``, study files): the radius of ``Parameters.paper``.
+PRESETS = {"paper-R30": 0.03, "paper-R100": 0.1}
 
 
 @dataclass(frozen=True)

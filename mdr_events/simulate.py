@@ -8,6 +8,7 @@ from typing import Literal, Sequence
 import numpy as np
 import xarray as xr
 
+from .continuum import Tolerances
 from .datasets import simulation_dataset
 from .discrete import check_spacing, run_discrete
 from .parameters import Parameters
@@ -57,10 +58,12 @@ def simulate(
     scenario: Literal["A", "B", "B+"] | Path = "A",
     alpha: float | Sequence[float] | None = None,
     method: Literal["discrete", "continuum"] = "discrete",
-    dx: float = DEFAULT_DX,
+    dx: float | None = None,
     dt: float | None = None,
     n_steps: int | None = None,
     t: Sequence[float] | None = None,
+    samples: int = 2001,
+    tolerances: Tolerances | None = None,
 ) -> xr.Dataset:
     """Simulate indentation and detachment along straight paths.
 
@@ -77,15 +80,20 @@ def simulate(
         ``"discrete"``: the paper's spring array (:mod:`mdr_events.discrete`).
         ``"continuum"``: its Δx → 0 limit integrated between events
         (:mod:`mdr_events.continuum`); adds the event log along ``event``.
-    dx : float
-        Spring spacing Δx in m (default 1 µm); at least 10 springs per side
-        must be in contact at ``d_max``.
+    dx : float, optional
+        Discrete method: spring spacing Δx in m (default 1 µm); at least 10
+        springs per side must be in contact at ``d_max``.
     dt, n_steps :
         Discrete method: time step in s, or the number of steps of the
         longest case (default 10 000); not both.
     t : sequence of float, optional
         Continuum method: the output times in s from first contact
-        (increasing, >= 0); default 2001 points to the end of the longest run.
+        (increasing, >= 0); default ``samples`` points to the end of the longest run.
+    samples : int
+        Continuum method without ``t``: number of output times (default 2001, at least 2).
+    tolerances : mdr_events.continuum.Tolerances, optional
+        Continuum method: solver and root-finding tolerances (default
+        ``Tolerances()``: ``rtol = 1e-10``, ``atol = 1e-14`` N, ``radius_rtol = 1e-14``).
 
     Returns
     -------
@@ -98,7 +106,15 @@ def simulate(
         raise ValueError(f"method={method!r} is not allowed; allowed: {', '.join(map(repr, METHODS))}")
     paths, angles = scenario_paths(params, scenario, alpha)
     if method == "continuum":
-        return _simulate_continuum(params, scenario, paths, angles, t)
+        for name, value in (("dx", dx), ("dt", dt), ("n_steps", n_steps)):
+            if value is not None:
+                raise ValueError(f"{name} is not allowed with method='continuum' (it has no springs or time "
+                                 "step); allowed: t, samples, tolerances")
+        return _simulate_continuum(params, scenario, paths, angles, t, samples, tolerances)
+    dx = DEFAULT_DX if dx is None else dx
+    for name, value in (("t", t), ("tolerances", tolerances)):
+        if value is not None:
+            raise ValueError(f"{name} is not allowed with method='discrete'; allowed: dx, dt or n_steps")
     for path in paths:
         path.first_contact_time()  # a path that never touches the surface is an error first
     check_spacing(params, dx, depth=min(params.d_max, max(path.max_depth for path in paths)))
@@ -116,9 +132,15 @@ def simulate(
     return simulation_dataset(params, angles, raw["time"], raw, **attrs)
 
 
-def _simulate_continuum(params, scenario, paths, angles, t) -> xr.Dataset:
-    from .continuum import Tolerances, run_continuum
+def _simulate_continuum(params, scenario, paths, angles, t, samples, tolerances) -> xr.Dataset:
+    from .continuum import run_continuum
 
+    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 2:
+        raise ValueError(f"samples={samples!r} is not allowed; allowed: an integer >= 2")
+    if tolerances is None:
+        tolerances = Tolerances()
+    elif not isinstance(tolerances, Tolerances):
+        raise TypeError(f"tolerances={tolerances!r} is not allowed; allowed: a mdr_events.continuum.Tolerances")
     times = None
     if t is not None:
         times = np.asarray(t, dtype=float)
@@ -126,8 +148,7 @@ def _simulate_continuum(params, scenario, paths, angles, t) -> xr.Dataset:
                 or np.any(np.diff(times) <= 0):
             raise ValueError(f"t of shape {times.shape} is not allowed; allowed: a non-empty, strictly "
                              "increasing 1-D grid of finite times >= 0 (s)")
-    tolerances = Tolerances()
-    raw = run_continuum(params, paths, times, tolerances=tolerances)
+    raw = run_continuum(params, paths, times, samples=int(samples), tolerances=tolerances)
     attrs = dict(method="continuum", scenario="custom" if isinstance(scenario, Path) else scenario,
                  rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
                  content="simulation of indentation and detachment along straight paths")
