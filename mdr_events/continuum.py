@@ -129,7 +129,9 @@ class _Branch:
         return self._depth(a) if a > 0 else 0.0
 
     def slope(self, a: float) -> float:
-        return self._slope(a)
+        if a > 0:
+            return self._slope(a)
+        return 0.0 if self.work == 0.0 else -math.inf  # the limits a → 0 (Hertz: 2a/R → 0)
 
     def integral(self, a: float) -> float:
         return self._integral(a) if a > 0 else 0.0
@@ -419,6 +421,10 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                     force = 0.0
                     holding = frozenset()
                     log(t, "first_contact", seg, a)
+                    if solver.K == 0.0:  # τ0 = 0: no spring holds any shift, all slide from the start
+                        holding = frozenset({"slip_onset", "full_slip"})
+                        log(t, "slip_onset", seg, a)
+                        log(t, "full_slip", seg, a)
                     continue
                 t_next = seg.time_at_depth(0.0) if seg.vd > 0 else seg.t1
                 t_next = min(max(t_next, t), seg.t1)
@@ -454,6 +460,10 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                 regime, t_end = "pinned", seg.t1
             if t_end >= seg.t1:
                 end_kind = ""  # the segment ends first
+            if regime == "shrinking" and result.spans[-1].regime != "shrinking" \
+                    and result.events[-1][1] != "detachment_starts":
+                # the radius leaves the pinned or growing state at once (Δγ1 <= Δγ0, e.g. Hertz)
+                log(t, "detachment_starts", seg, a)
             span = _Span(t, t_end, seg, regime, pinned_radius=a)
             fired, t_stop, force = _integrate_span(solver, span, force, holding, tolerances)
             span.t_end = t_stop
@@ -605,12 +615,20 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
     t0, t1 = span.t_start, span.t_end
     if t1 <= t0:
         return (), t0, force
+    if solver.K == 0.0:  # τ0 = 0: ū ≡ 0, every spring slides with zero shift, F_x ≡ 0
+        span.solution, span.force = None, 0.0
+        return (), t1, 0.0
     seg = span.segment
     K = solver.K
     G2 = 2.0 * solver.p.G_star
     moving = span.regime in ("growing", "shrinking")
     shrinking = span.regime == "shrinking"
     branch = solver.grow if span.regime == "growing" else solver.shrink
+
+    def restick(var, y):  # growing only: dx/dt − dū/dt
+        slope = branch.slope(var)
+        return seg.vx - K * seg.vd / slope if slope > 0 else -math.inf
+
     if moving:
         start = solver.radius(span, t0)
         if shrinking and t1 == seg.time_at_depth(branch.jump_off_depth):
@@ -634,7 +652,7 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
             return met, t0, force
     # the slip state the span starts in; the right-hand side keeps it (see above)
     state = "full" if "full_slip" in holding else "partial" if "slip_onset" in holding else "stick"
-    if state == "partial" and span.regime == "growing" and seg.vx - K * seg.vd / branch.slope(start) <= 0.0:
+    if state == "partial" and span.regime == "growing" and restick(start, None) <= 0.0:
         # the cap already grows faster than the indenter moves (e.g. after a corner): re-stick now
         span.solution, span.force = None, force
         return ("re_stick",), t0, force
@@ -682,9 +700,6 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
     def full(var, y):
         a = radius_of(var)
         return seg.x(time_of(var)) - solver.Y.value(a) - K * a
-
-    def restick(var, y):  # growing only: dx/dt − dū/dt
-        return seg.vx - K * seg.vd / branch.slope(var)
 
     def front_crosses(var, y):  # the slip front leaves its piece of the anchor map
         return seg.x(time_of(var)) - K * radius_of(var) - solver.Y.value(piece_end)

@@ -53,6 +53,38 @@ def _time_step(paths: list[Path], dt: float | None, n_steps: int | None) -> floa
     return longest / int(steps)
 
 
+#: The discrete model needs at least this many time steps on every path segment it is in contact on.
+MIN_STEPS_PER_SEGMENT = 10
+
+
+def check_time_step(paths: list[Path], step: float, dt: float | None, n_steps: int | None) -> None:
+    """Reject a time step that cannot resolve a path segment after first contact.
+
+    Every segment (from first contact on) must get :data:`MIN_STEPS_PER_SEGMENT`
+    steps; otherwise, e.g. for a tiny ``d_max``, the discrete model would jump
+    over the whole indentation. The error names the largest ``dt`` (or the
+    smallest ``n_steps``) that would do.
+    """
+    shortest = math.inf
+    for path in paths:
+        start = path.first_contact_time()
+        times = path.corner_times
+        for t0, t1 in zip(times[:-1], times[1:]):
+            if t1 > start:
+                shortest = min(shortest, t1 - max(t0, start))
+    largest = shortest / MIN_STEPS_PER_SEGMENT
+    if step <= largest * (1 + 1e-12):
+        return
+    if dt is not None:
+        raise ValueError(f"dt={dt!r} is too coarse: the shortest path segment in contact lasts {shortest:.6g} s; "
+                         f"allowed: dt <= {largest:.6g} s ({MIN_STEPS_PER_SEGMENT} steps per segment)")
+    longest = max(path.duration - path.first_contact_time() for path in paths)
+    needed = math.ceil(longest / largest)
+    given = DEFAULT_STEPS if n_steps is None else n_steps
+    raise ValueError(f"n_steps={given!r} is too few: the shortest path segment in contact lasts {shortest:.6g} s of "
+                     f"{longest:.6g} s; allowed: n_steps >= {needed} (or dt <= {largest:.6g} s)")
+
+
 def simulate(
     params: Parameters,
     scenario: Literal["A", "B", "B+"] | Path = "A",
@@ -119,6 +151,7 @@ def simulate(
         path.first_contact_time()  # a path that never touches the surface is an error first
     check_spacing(params, dx, depth=min(params.d_max, max(path.max_depth for path in paths)))
     step = _time_step(paths, dt, n_steps)
+    check_time_step(paths, step, dt, n_steps)
     raw = run_discrete(params, paths, dx, step)
     scenario_name = "custom" if isinstance(scenario, Path) else scenario
     attrs = dict(method=method, scenario=scenario_name, dx=float(dx), dt=step,
