@@ -78,6 +78,26 @@ class Path:
 
     # ------------------------------------------------------------------
     @classmethod
+    def from_segments(cls, segments, speed: float, tolerance: float = 1e-12) -> "Path":
+        """A path from straight segments ``[((x0, d0), (x1, d1)), ...]`` that must connect.
+
+        Each segment must start where the previous one ended (to ``tolerance``
+        m); otherwise ``ValueError`` names the segments and the gap.
+        """
+        pieces = np.array(segments, dtype=float)
+        if pieces.ndim != 3 or pieces.shape[1:] != (2, 2) or pieces.shape[0] < 1:
+            raise ValueError(f"segments of shape {pieces.shape} are not allowed; allowed: "
+                             "(n >= 1, 2, 2): pairs of (x, d) end points")
+        gaps = np.hypot(*(pieces[1:, 0] - pieces[:-1, 1]).T)
+        if np.any(gaps > tolerance):
+            index = int(np.argmax(gaps > tolerance))
+            raise ValueError(f"segments {index} and {index + 1} do not connect: segment {index} ends at "
+                             f"{tuple(pieces[index, 1].tolist())} but segment {index + 1} starts at "
+                             f"{tuple(pieces[index + 1, 0].tolist())} "
+                             f"(gap {gaps[index]:.3g} m); allowed: a gap <= {tolerance:g} m")
+        return cls(np.vstack([pieces[:, 0], pieces[-1:, 1]]), speed)
+
+    @classmethod
     def scenario_A(cls, alpha: float, params: Parameters) -> "Path":
         """Eq. (14): in at angle α from the surface to ``d_max``, then vertically out."""
         angle = _check_angle(alpha)
