@@ -155,11 +155,11 @@ def test_slip_onset_within_a_nanosecond_of_d_max_is_not_missed(paper, offset):
 
 def test_bad_inputs_name_the_argument_its_value_and_what_is_allowed(paper):
     cases = [
-        (lambda: me.simulate(paper, "A", alpha=[95.0]), "alpha"),
-        (lambda: me.simulate(paper, "A", alpha=[-1.0], method="continuum"), "alpha"),
-        (lambda: me.simulate(paper, "A", alpha=[float("nan")]), "alpha"),
-        (lambda: me.d_crit(91.0, paper, "A"), "alpha"),
-        (lambda: me.phase_diagram(paper, "A", alpha=[10.0, 100.0]), "alpha"),
+        (lambda: me.simulate(paper, "A", alpha=[95.0]), "alpha=95.0 (degrees) is not allowed; allowed: finite angles in [0, 90]"),
+        (lambda: me.simulate(paper, "A", alpha=[-1.0], method="continuum"), "alpha=-1.0 (degrees) is not allowed"),
+        (lambda: me.simulate(paper, "A", alpha=[float("nan")]), "alpha=nan (degrees) is not allowed"),
+        (lambda: me.d_crit(91.0, paper, "A"), "alpha=91.0 (degrees) is not allowed"),
+        (lambda: me.phase_diagram(paper, scenario="A", alpha=[10.0, 100.0]), "alpha=100.0"),
         (lambda: me.simulate(paper, "C"), "scenario='C' is not allowed; allowed"),
         (lambda: me.simulate(paper, "A", method="fem"), "method='fem' is not allowed; allowed"),
         (lambda: me.simulate(paper, "A", alpha=[30.0], method="continuum", t=[]), "t of shape"),
@@ -167,18 +167,19 @@ def test_bad_inputs_name_the_argument_its_value_and_what_is_allowed(paper):
         (lambda: me.simulate(paper, "A", alpha=[30.0], method="continuum", dt=1.0), "dt is not allowed with method='continuum'"),
         (lambda: me.simulate(paper, "A", alpha=[30.0], method="continuum", samples=1), "samples=1 is not allowed"),
         (lambda: me.simulate(paper, "A", alpha=[30.0], t=[0.0, 1.0]), "t is not allowed with method='discrete'"),
-        (lambda: me.simulate(paper, "A", alpha=[30.0], dx=1e-3), "dx"),
+        (lambda: me.simulate(paper, "A", alpha=[30.0], dx=1e-3), "dx=0.001 m puts 3 springs per side in contact"),
         (lambda: me.simulate(paper, "A", alpha=[30.0], dt=-1.0), "dt=-1.0 is not allowed"),
         (lambda: me.continuum.Tolerances(rtol=0.0), "Tolerances.rtol=0.0 is not allowed"),
         (lambda: Path.from_segments([((0, 0), (0, 3e-4)), ((0, 2e-4), (1e-4, -1e-4))], 1e-6),
          "segments 0 and 1 do not connect"),
         (lambda: Path([(0, 0), (0, 0)], 1e-6), "coincide"),
-        (lambda: paper.replace(nu=0.7), "nu"),
-        (lambda: paper.replace(E=float("inf")), "E"),
+        (lambda: paper.replace(nu=0.7), "Parameters.nu=0.7 is not allowed; allowed:"),
+        (lambda: paper.replace(E=float("inf")), "Parameters.E=inf is not allowed; allowed:"),
     ]
     for call, fragment in cases:
-        with pytest.raises((ValueError, TypeError), match=fragment.replace("(", r"\(").replace(")", r"\)")):
+        with pytest.raises(ValueError) as error:
             call()
+        assert fragment in str(error.value), (fragment, str(error.value))
 
 
 def test_coarse_spacing_error_names_the_largest_spacing_that_would_do(paper):

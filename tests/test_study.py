@@ -1,0 +1,129 @@
+"""Study files: `mdr-events run study.toml`, and every way a study file can be wrong."""
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.cli import main
+from mdr_events.study import StudyError, load_study
+
+STUDY = """
+[parameters]
+preset = "paper-R100"
+tau0 = 30e3
+
+[simulation]
+scenario = "B"
+alpha = [20, 60]
+method = "continuum"
+samples = 301
+
+[phase_diagram]
+scenarios = ["A", "B"]
+
+[output]
+directory = "out"
+name = "demo"
+"""
+
+
+def assert_one_error_line(err, fragment):
+    """Progress lines may come first; the error is one line, the last, without a traceback."""
+    errors = [line for line in err.splitlines() if line.startswith("mdr-events: error:")]
+    assert len(errors) == 1 and err.splitlines()[-1] == errors[0] and fragment in errors[0]
+    assert "Traceback" not in err
+
+
+def write(tmp_path, text, name="study.toml"):
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def test_run_writes_what_the_study_asks_for(tmp_path, capsys):
+    path = write(tmp_path, STUDY)
+    assert main(["run", str(path)]) == 0
+    out = tmp_path / "out"  # relative to the study file
+    names = sorted(p.name for p in out.iterdir())
+    assert names == ["demo_phase_diagram_A.nc", "demo_phase_diagram_A.png", "demo_phase_diagram_B.nc",
+                     "demo_phase_diagram_B.png", "demo_simulation.nc", "demo_simulation.png",
+                     "demo_simulation_events.csv"]
+    ds = me.open_result(out / "demo_simulation.nc")
+    params = me.datasets.parameters_of(ds)
+    assert params == me.Parameters.paper(R=0.1).replace(tau0=30e3)
+    assert list(ds["alpha"].values) == [20.0, 60.0] and ds.sizes["time"] == 301
+    assert ds.attrs["method"] == "continuum" and ds.attrs["scenario"] == "B"
+    # the same computation through the Python API gives the same numbers, bit for bit
+    direct = me.simulate(params, "B", alpha=[20, 60], method="continuum", samples=301)
+    np.testing.assert_array_equal(ds["tangential_force"].values, direct["tangential_force"].values)
+
+
+def test_custom_path_and_discrete_options(tmp_path):
+    path = write(tmp_path, """
+[simulation]
+method = "discrete"
+dx = 2e-6
+n_steps = 2000
+[path]
+waypoints = [[0, 0], [0, 3e-4], [2e-4, 3e-4], [2e-4, -1e-4]]
+[output]
+directory = "o"
+""")
+    study = load_study(path)
+    assert study.name == "study" and study.output_directory == tmp_path / "o"
+    written = me.run_study(study, progress=lambda message: None)
+    ds = me.open_result(written[0])
+    assert ds.attrs["scenario"] == "custom" and ds.attrs["dx"] == 2e-6
+
+
+@pytest.mark.parametrize("text, fragment", [
+    ("[simulation]\nscenario = 'A'\n", "the required table [output] is missing"),
+    ("[output]\ndirectory = 'o'\n", "nothing to compute"),
+    ("[output]\ndirectory = 'o'\n[simulaton]\nscenario = 'A'\n", "unknown table [simulaton]; allowed: [parameters]"),
+    ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\nalpah = 3\n", "unknown key 'alpah' in [simulation]"),
+    ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\nalpha = 'steep'\n",
+     "[simulation] alpha = 'steep' is not allowed; allowed: a number or a non-empty list of numbers"),
+    ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\nn_steps = 1.5\n",
+     "[simulation] n_steps = 1.5 is not allowed; allowed: an integer"),
+    ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\nsamples = true\n", "samples = True is not allowed"),
+    ("[output]\ndirectory = 'o'\n[simulation]\nmethod = 'discrete'\n", "[simulation] lacks the required key scenario"),
+    ("[output]\n[phase_diagram]\nscenarios = ['A']\n", "[output] lacks the required key(s) directory"),
+    ("[output]\ndirectory = 'o'\n[phase_diagram]\n", "[phase_diagram] lacks the required key(s) scenarios"),
+    ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\n[parameters]\nE = -1.0\n", "[parameters] Parameters.E=-1.0 is not allowed; allowed: a finite number > 0"),
+    ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\n[parameters]\nE = '1 MPa'\n",
+     "[parameters] E = '1 MPa' is not allowed; allowed: a number"),
+    ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\n[parameters]\npreset = 'paper-R50'\n",
+     "preset = 'paper-R50' is not allowed; allowed: 'paper-R30', 'paper-R100'"),
+    ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\n[path]\nwaypoints = [[0, 0], [0, 1e-4]]\n",
+     "scenario and alpha are not allowed with a [path]"),
+    ("[output]\ndirectory = 'o'\n[simulation]\n[path]\nwaypoints = [[0, 0]]\n",
+     "[path] waypoints = [[0, 0]] is not allowed; allowed: a list of at least two [x, d] pairs"),
+    ("output = 3\n", "output = 3 is not allowed; allowed: a table [output]"),
+    ("[output\n", "not valid TOML"),
+])
+def test_bad_study_files_are_named_precisely(tmp_path, capsys, text, fragment):
+    path = write(tmp_path, text)
+    with pytest.raises(StudyError) as error:
+        load_study(path)
+    assert fragment in str(error.value) and str(path) in str(error.value)
+    assert main(["run", str(path)]) == 2
+    assert_one_error_line(capsys.readouterr().err, fragment)
+
+
+@pytest.mark.parametrize("text, fragment", [
+    ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'D'\n", "[simulation] scenario='D' is not allowed"),
+    ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\nalpha = 120\n", "alpha"),
+    ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\nmethod = 'continuum'\ndx = 1e-6\n",
+     "dx is not allowed with method='continuum'"),
+    ("[output]\ndirectory = 'o'\n[phase_diagram]\nscenarios = ['A', 'Q']\n", "scenarios contains 'Q'"),
+])
+def test_bad_values_are_reported_by_the_function_they_go_to(tmp_path, capsys, text, fragment):
+    path = write(tmp_path, text)
+    assert main(["run", str(path)]) == 2
+    assert_one_error_line(capsys.readouterr().err, fragment)
+    assert not (tmp_path / "o").exists() or not any((tmp_path / "o").iterdir())  # nothing written
+
+
+def test_missing_study_file(tmp_path, capsys):
+    assert main(["run", str(tmp_path / "nope.toml")]) == 2
+    assert "no such study file" in capsys.readouterr().err
