@@ -22,6 +22,8 @@ reproduce: $(STAMP)
 
 benchmark: $(STAMP)
 	$(BIN)/python benchmarks/bench_phase_diagram.py
+	$(BIN)/python benchmarks/bench_discrete.py
+	$(BIN)/python benchmarks/bench_continuum.py
 
 derive: $(STAMP)
 	$(BIN)/mdr-events derive

@@ -159,8 +159,11 @@ class _Branch:
         s *= 1.0 + 1e-12
         floor = self._floor
         for _ in range(100):
-            step = (s**4 + c1 * s + c0) / (4 * s**3 + c1)
-            s_new = max(s - step, floor)
+            slope = 4 * s**3 + c1
+            if slope <= 0.0:  # at the fold (the double root, the jump-off point) itself
+                s = floor
+                break
+            s_new = max(s - (s**4 + c1 * s + c0) / slope, floor)
             if abs(s_new - s) <= rtol * s_new:
                 s = s_new
                 break
@@ -464,6 +467,14 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                     and result.events[-1][1] != "detachment_starts":
                 # the radius leaves the pinned or growing state at once (Δγ1 <= Δγ0, e.g. Hertz)
                 log(t, "detachment_starts", seg, a)
+            if regime == "shrinking":
+                a_branch = solver.shrink.radius(d, tolerances.radius_rtol)
+                if a_branch < a * (1.0 - 1e-12):
+                    # Δγ1 < Δγ0: the boundary springs are stretched beyond the Δγ1 limit and the
+                    # radius drops onto the Δγ1 branch at once; the springs it loses take their
+                    # force with them and the smaller cap ū(a) clips the rest (anchor map form)
+                    a = a_branch
+                    force = _algebraic_force(solver.Y, solver.K, params.G_star, seg.x(t), a)
             span = _Span(t, t_end, seg, regime, pinned_radius=a)
             fired, t_stop, force = _integrate_span(solver, span, force, holding, tolerances)
             span.t_end = t_stop
@@ -476,6 +487,10 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                 fired = tuple(kind for kind in fired if kind != _FRONT_CROSSES)  # restart, log nothing
                 holding |= set(fired)
                 x_stop = seg.x(t_stop)
+                if "full_slip" in fired:
+                    # every spring sits at the cap: F_x = 2G* ū a = τ0 π a² exactly; taking it from
+                    # here drops what the integration accumulated before (long, shallow paths)
+                    force = 2.0 * params.G_star * solver.K * a_stop**2
                 if "re_stick" in fired:
                     holding = frozenset()
                     c = solver.slip_front(x_stop, a_stop)
@@ -554,7 +569,7 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
         else:
             a = np.full(rows.size, span.pinned_radius)
         out["contact_radius"][rows] = a
-        out["normal_force"][rows] = 2.0 * params.E_star * (a * d - a**3 / (3.0 * params.R))
+        out["normal_force"][rows] = analytic.normal_force(d, a, params)  # (10)
         if span.solution is None:
             force = np.full(rows.size, span.force)
         else:
@@ -565,6 +580,14 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
         with np.errstate(invalid="ignore", divide="ignore"):
             out["sliding_fraction"][rows] = np.where(a > 0, anchors.fronts(x - solver.K * a, a) / a, np.nan)
     return out
+
+
+def _algebraic_force(anchors: AnchorMap, K: float, G_star: float, x: float, a: float) -> float:
+    """``F_x = 2G* [c ū + ∫_c^a (x − Y) dξ]`` for the anchor map ``anchors`` (``ū = K a``)."""
+    if not a > 0:
+        return 0.0
+    c = anchors.front(x - K * a, a)
+    return 2.0 * G_star * (c * K * a + x * (a - c) - anchors.integral(c, a))
 
 
 def algebraic_tangential_force(solution: PathSolution, times: np.ndarray) -> np.ndarray:
@@ -591,8 +614,7 @@ def algebraic_tangential_force(solution: PathSolution, times: np.ndarray) -> np.
         if span.regime == "none" or not a > 0:
             out[i] = 0.0
             continue
-        c = anchors.front(x - solver.K * a, a)
-        out[i] = sign * 2.0 * solution.params.G_star * (c * solver.K * a + x * (a - c) - anchors.integral(c, a))
+        out[i] = sign * _algebraic_force(anchors, solver.K, solution.params.G_star, x, a)
     return out
 
 
@@ -643,8 +665,13 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
     onset0 = x0 - solver.Y.value(0.0) - K * a0
     full0 = x0 - solver.Y.value(a0) - K * a0
     shift_scale = 1e-9 * max(K * a0, abs(x0), solver.p.d_max)
+    # The rising slip events cross a level a hair above zero: 16 ulp of the lengths involved, just
+    # above the rounding of x − Y − ū (an event moves by about 1e-12 s at the paper's speed). A slip
+    # function that starts at zero to rounding and first falls (the centre of a Hertz contact at
+    # a = 0, the level right after a re-stick) is then not taken for a root at the start.
+    level = 16 * np.finfo(float).eps * max(K * a0, abs(x0), abs(solver.Y.value(0.0)), solver.p.d_max)
     if K > 0 and a0 > 0:
-        # clearly past, not zero to rounding (as right after a re-stick, where the level then falls)
+        # clearly past (beyond rounding and the event root-finding), not zero to it
         met = tuple(kind for kind, value in (("slip_onset", onset0), ("full_slip", full0))
                     if kind not in holding and value > 1e-3 * shift_scale)
         if met:
@@ -661,7 +688,9 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
         return (), t1, force
 
     if state == "partial":
-        piece = solver.Y.piece_of_front(x0 - K * a0, a0, 1e-3 * shift_scale)
+        # a front within 1e-9 of the length scale of a piece's end (e.g. where the last event's root
+        # was found, a few ulp of the radius away) is in the next piece
+        piece = solver.Y.piece_of_front(x0 - K * a0, a0, shift_scale)
         piece_end = solver.Y.pieces[piece].end
 
     def slip_zone(x, a):
@@ -695,14 +724,14 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
             return [G2 * (a - slip_zone(seg.x(t), a)) * seg.vx]
 
     def onset(var, y):
-        return seg.x(time_of(var)) - solver.Y.value(0.0) - K * radius_of(var)
+        return seg.x(time_of(var)) - solver.Y.value(0.0) - K * radius_of(var) - level
 
     def full(var, y):
         a = radius_of(var)
-        return seg.x(time_of(var)) - solver.Y.value(a) - K * a
+        return seg.x(time_of(var)) - solver.Y.value(a) - K * a - level
 
     def front_crosses(var, y):  # the slip front leaves its piece of the anchor map
-        return seg.x(time_of(var)) - K * radius_of(var) - solver.Y.value(piece_end)
+        return seg.x(time_of(var)) - K * radius_of(var) - solver.Y.value(piece_end) - level
 
     candidates = []
     if K > 0:
@@ -735,7 +764,7 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
         # a rising event whose function is already zero to rounding fires with it (the two
         # roots of identical functions, e.g. onset and full slip of a uniform field, differ by an ulp)
         for kind, function in candidates:
-            if kind not in kinds and function.direction > 0 and function(first, None) >= -shift_scale * 1e-3:
+            if kind not in kinds and function.direction > 0 and function(first, None) >= -2 * level:
                 kinds.append(kind)
         kinds = tuple(kinds)
         return kinds, float(time_of(first)), float(solution.sol(first)[0])

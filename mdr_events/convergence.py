@@ -26,7 +26,8 @@ from .parameters import Parameters
 from .paths import Path
 from .discrete import run_discrete
 
-__all__ = ["exact_references_A", "discrete_errors", "discrete_minus_continuum", "observed_orders"]
+__all__ = ["exact_references_A", "discrete_errors", "discrete_minus_continuum", "history_differences",
+           "observed_orders"]
 
 #: Quantities compared over the whole history by :func:`discrete_minus_continuum`.
 HISTORY_QUANTITIES = ("normal_force", "tangential_force", "contact_area")
@@ -80,42 +81,70 @@ def discrete_errors(params: Parameters, alpha: float, spacings, steps_per_spacin
     return {key: np.array(values) for key, values in errors.items()}
 
 
+def history_differences(discrete, continuum) -> dict[str, float]:
+    """``max_t |discrete − continuum| / max_t |continuum|`` of ``F_N``, ``F_x`` and ``A``, per angle.
+
+    ``continuum`` must be evaluated at the discrete model's times (``t=``).
+    Left out, and counted in ``"samples_left_out"``:
+
+    - samples where either method has ended (after pull-off);
+    - samples at which one method is in contact and the other not: the
+      jump-in and the jump-off are discontinuities in time, and the discrete
+      model meets them up to one step apart (its first spring sits at
+      ``Δx/2``, its radius moves in steps of ``Δx``), so that a pointwise
+      difference there is the whole jump however fine ``Δx``;
+    - the sample ending a time step that straddles a path corner: the
+      discrete model moves straight from one sample to the next and so cuts
+      the corner for that one step (where ``Δγ1 < Δγ0`` the radius jumps at
+      the corner, and the cut shows as the whole jump).
+
+    Returns
+    -------
+    dict
+        Quantity name (:data:`HISTORY_QUANTITIES`) → array over ``alpha`` of
+        relative differences; ``"samples_left_out"`` → array of counts.
+    """
+    times = discrete["time"].values
+    out = {name: [] for name in (*HISTORY_QUANTITIES, "samples_left_out")}
+    for alpha in discrete["alpha"].values:
+        d, c = discrete.sel(alpha=alpha), continuum.sel(alpha=alpha)
+        area_d, area_c = d["contact_area"].values, c["contact_area"].values
+        finite = np.isfinite(area_d) & np.isfinite(area_c)
+        excluded = finite & ((area_d > 0) != (area_c > 0))
+        corners = c["event_time"].values[c["event_kind"].values == "corner"]
+        straddling = np.searchsorted(times, corners, side="left")  # first sample at or after the corner
+        straddling = straddling[(straddling < len(times)) & (times[np.minimum(straddling, len(times) - 1)] > corners)]
+        excluded[straddling] |= finite[straddling]
+        compared = finite & ~excluded
+        out["samples_left_out"].append(int(np.count_nonzero(excluded)))
+        for name in HISTORY_QUANTITIES:
+            a, b = d[name].values[compared], c[name].values[compared]
+            scale = np.max(np.abs(b)) if b.size else 0.0
+            out[name].append(np.max(np.abs(a - b)) / scale if scale > 0 else float(np.max(np.abs(a), initial=0.0)))
+    return {name: np.array(values) for name, values in out.items()}
+
+
 def discrete_minus_continuum(params: Parameters, scenario, alpha: float, spacings,
                              steps_per_spacing: float = 0.5) -> dict[str, np.ndarray]:
-    """Largest difference over the whole run between the discrete model and the continuum.
+    """:func:`history_differences` for one angle at several spacings.
 
     For each spacing ``Δx`` (with ``dt = steps_per_spacing · Δx / v``) the
-    discrete model runs, the continuum is evaluated at the same times, and
-    ``max_t |discrete − continuum|`` of ``F_N``, ``F_x`` and ``A`` is divided by
-    ``max_t |continuum|`` of the same quantity. Samples where either method
-    has ended (after pull-off) are left out, and so are the samples at which
-    one method is in contact and the other not: the jump-in and the jump-off
-    are discontinuities in time, and the discrete model meets them up to one
-    step later or earlier (its first spring sits at ``Δx/2``, its radius
-    moves in steps of ``Δx``), so that a pointwise difference there is the
-    whole jump however fine ``Δx``. Their number is returned.
+    discrete model runs and the continuum is evaluated at the same times.
 
     Returns
     -------
     dict
         Quantity name (:data:`HISTORY_QUANTITIES`) → relative differences,
-        one per spacing; ``"samples_at_jumps"`` → the samples left out for
-        contact mismatch at a jump, one count per spacing.
+        one per spacing; ``"samples_left_out"`` → counts, one per spacing.
     """
     from .simulate import simulate
 
-    out = {name: [] for name in (*HISTORY_QUANTITIES, "samples_at_jumps")}
+    out = {name: [] for name in (*HISTORY_QUANTITIES, "samples_left_out")}
     for dx in spacings:
         discrete = simulate(params, scenario, alpha=[alpha], dx=dx, dt=steps_per_spacing * dx / params.v)
         continuum = simulate(params, scenario, alpha=[alpha], method="continuum", t=discrete["time"].values)
-        area_d, area_c = discrete["contact_area"].values, continuum["contact_area"].values
-        both = np.isfinite(area_d) & np.isfinite(area_c)
-        at_jump = both & ((area_d > 0) != (area_c > 0))
-        both &= ~at_jump
-        out["samples_at_jumps"].append(int(np.count_nonzero(at_jump)))
-        for name in HISTORY_QUANTITIES:
-            a, b = discrete[name].values, continuum[name].values
-            out[name].append(np.max(np.abs(a[both] - b[both])) / np.max(np.abs(b[both])))
+        for name, values in history_differences(discrete, continuum).items():
+            out[name].append(values[0])
     return {name: np.array(values) for name, values in out.items()}
 
 

@@ -112,14 +112,14 @@ def test_schema_event_log_and_round_trip(paper, tmp_path):
 @pytest.mark.parametrize("scenario", ["A", "B"])
 def test_discrete_converges_to_the_continuum(paper, scenario):
     """max_t |discrete − continuum| of F_N, F_x and A falls at first order in Δx (observed > 0.7 between
-    8, 4 and 2 µm); only the sample at the jump-in differs in contact state."""
+    8, 4 and 2 µm); at most one sample each at the jump-in, the corner and the jump-off is left out."""
     spacings = (8e-6, 4e-6, 2e-6)
     differences = discrete_minus_continuum(paper, scenario, 30.0, spacings)
     for name in HISTORY_QUANTITIES:
         orders = observed_orders(spacings, differences[name])
         assert np.all(orders > 0.7), (name, differences[name], orders)
         assert differences[name][-1] < 2e-3, name  # about 1e-3 per µm of Δx
-    assert np.all(differences["samples_at_jumps"] <= 2)
+    assert np.all(differences["samples_left_out"] <= 3)  # jump-in, corner, jump-off at most
 
 
 def test_cross_check(paper):
