@@ -25,7 +25,12 @@ turning depth, ``a`` contact radius, ``s = sqrt(a)``, ``alpha`` path angle.
 from __future__ import annotations
 
 import functools
+import hashlib
+import os
+import pickle
+import tempfile
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Callable
 
 import numpy as np
@@ -34,6 +39,8 @@ import sympy as sp
 __all__ = [
     "Relation",
     "derive",
+    "derive_afresh",
+    "cache_path",
     "relation",
     "relations",
     "abel_transform",
@@ -236,9 +243,68 @@ def _single_positive(solutions: list[sp.Expr], what: str) -> sp.Expr:
 
 
 # ----------------------------------------------------------------------------
+# ----------------------------------------------------------------------------
+# on-disk cache of the derivations
+def cache_path() -> Path | None:
+    """Where derived relations are kept between processes (``None``: caching is off).
+
+    ``$MDR_EVENTS_CACHE_DIR`` or ``$XDG_CACHE_HOME/mdr_events`` or
+    ``~/.cache/mdr_events``; ``MDR_EVENTS_NO_CACHE=1`` turns it off. The file
+    name carries a hash of this module's source and the SymPy version, so a
+    changed derivation is never read from an old cache.
+    """
+    if os.environ.get("MDR_EVENTS_NO_CACHE"):
+        return None
+    root = os.environ.get("MDR_EVENTS_CACHE_DIR") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"), "mdr_events")
+    digest = hashlib.sha256(Path(__file__).read_bytes() + sp.__version__.encode()).hexdigest()[:16]
+    return Path(root) / f"relations-{digest}.pickle"
+
+
+def _fields(rel: Relation) -> tuple:
+    return (rel.key, rel.equation, rel.title, rel.lhs, rel.rhs, rel.args, rel.variable)
+
+
+def _cached(name: str, build: Callable[[], list[Relation]]) -> list[Relation]:
+    """``build()``'s relations, read from the cache file if it holds ``name``, else built and stored.
+
+    Any trouble with the cache (unwritable, damaged, foreign) falls back to deriving afresh.
+    """
+    path = cache_path()
+    store: dict = {}
+    if path is not None and path.exists():
+        try:
+            with open(path, "rb") as handle:
+                store = pickle.load(handle)
+            if name in store:
+                return [Relation(*fields) for fields in store[name]]
+        except Exception:  # a damaged or foreign cache file is only a missed shortcut
+            store = {}
+    relations_built = build()
+    if path is not None:
+        store[name] = [_fields(rel) for rel in relations_built]
+        try:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+            with os.fdopen(handle, "wb") as stream:
+                pickle.dump(store, stream)
+            os.replace(temporary, path)
+        except OSError:
+            pass
+    return relations_built
+
+
 @functools.cache
 def derive() -> dict[str, Relation]:
-    """Derive every relation once; returns them by key in derivation order."""
+    """Derive every relation once per process (and once per cache, see :func:`cache_path`).
+
+    Returns the relations by key in derivation order.
+    """
+    return {rel.key: rel for rel in _cached("model", lambda: list(derive_afresh().values()))}
+
+
+def derive_afresh() -> dict[str, Relation]:
+    """Run every derivation with SymPy (about 4 s), bypassing any cache."""
     out: dict[str, Relation] = {}
 
     def add(rel: Relation) -> Relation:
@@ -374,6 +440,11 @@ def derive_power_law() -> Relation:
     the general Beta-type integral; the paraboloid (4) and the cone are its
     cases ``n = 2, c = 1/(2R)`` and ``n = 1, c = tan θ`` (the tests check it).
     """
+    return _cached("power_law", lambda: [power_law_afresh()])[0]
+
+
+def power_law_afresh() -> Relation:
+    """The derivation of :func:`derive_power_law` with SymPy (about 6 s), bypassing any cache."""
     return Relation("profile_power_law", "(3)", "MDR profile of f = c r^n", g(x),
                     abel_transform(c * r**n), (x, c, n))
 

@@ -183,3 +183,25 @@ def test_relations_print_and_numeric_argument_checks():
         rel.coefficients(1.0)
     with pytest.raises(KeyError, match="unknown relation"):
         relation("nope")
+
+
+def test_the_cache_holds_exactly_what_sympy_derives(tmp_path, monkeypatch):
+    """The on-disk cache of derivations returns the very expressions a fresh derivation gives, and a
+    damaged cache file is ignored (derived again), never trusted."""
+    monkeypatch.setenv("MDR_EVENTS_CACHE_DIR", str(tmp_path))
+    path = symbolic.cache_path()
+    assert path.parent == tmp_path and not path.exists()
+    fresh = symbolic.derive_afresh()
+    stored = symbolic._cached("model", lambda: list(fresh.values()))
+    assert path.exists()
+    loaded = symbolic._cached("model", lambda: pytest.fail("the cache was not used"))
+    for rel, again, original in zip(stored, loaded, fresh.values()):
+        assert again.key == original.key and again.equation == original.equation
+        assert again.lhs == original.lhs and again.rhs == original.rhs and again.args == original.args
+        assert again.variable == original.variable
+    assert loaded[0] is not stored[0]  # rebuilt from the file
+    path.write_bytes(b"damaged")
+    rebuilt = symbolic._cached("model", lambda: list(fresh.values()))
+    assert [rel.key for rel in rebuilt] == list(fresh)
+    monkeypatch.setenv("MDR_EVENTS_NO_CACHE", "1")
+    assert symbolic.cache_path() is None
