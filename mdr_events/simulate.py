@@ -8,6 +8,7 @@ from typing import Literal, Sequence
 import numpy as np
 import xarray as xr
 
+from . import analytic
 from .continuum import Tolerances
 from .datasets import simulation_dataset
 from .discrete import check_spacing, run_discrete
@@ -24,11 +25,35 @@ DEFAULT_DX = 1e-6
 DEFAULT_STEPS = 10_000
 
 
+#: Relative accuracy the slip criterion needs: x − X(ξ) against ū(a) must keep this many digits.
+SLIP_DIGITS = 1e-9
+
+
+def check_path_extent(params: Parameters, path: Path, label: str) -> None:
+    """Reject a path so long that ``x − X(ξ)`` cannot be compared with ``ū(a)`` in double precision.
+
+    The positions along the path are rounded to ``eps · |x|``; the slip
+    criterion compares differences of them with ``ū(a)`` (at ``d_max``) or,
+    without friction, with ``d_max``. A path whose tangential extent exceeds
+    ``SLIP_DIGITS · max(ū, d_max) / eps`` (about 3 km for the paper's
+    parameters: a path angle of a few 1e-6 degrees) is an error, not a
+    silently wrong result.
+    """
+    radius = float(analytic.jkr_contact_radius(params.d_max, params, params.dgamma0))
+    reference = max(float(analytic.critical_shift(radius, params)), params.d_max)
+    limit = SLIP_DIGITS * reference / np.finfo(float).eps
+    extent = float(np.max(np.abs(path.waypoints[:, 0])))
+    if extent > limit:
+        raise ValueError(f"{label}: the path reaches x = {extent:.3g} m; allowed: |x| <= {limit:.3g} m, beyond "
+                         f"which double precision cannot resolve the slip criterion (shift vs {reference:.3g} m)")
+
+
 def scenario_paths(params: Parameters, scenario: str | Path, alpha) -> tuple[list[Path], np.ndarray]:
-    """The paths of a scenario for each angle (or the one custom path)."""
+    """The paths of a scenario for each angle (or the one custom path), checked by :func:`check_path_extent`."""
     if isinstance(scenario, Path):
         if alpha is not None:
             raise ValueError("alpha is not allowed with a custom path (its waypoints fix the motion)")
+        check_path_extent(params, scenario, "scenario=Path")
         return [scenario], np.array([scenario.alpha])
     if scenario not in SCENARIO_NAMES:
         raise ValueError(f"scenario={scenario!r} is not allowed; allowed: 'A', 'B', 'B+' or a Path")
@@ -36,7 +61,10 @@ def scenario_paths(params: Parameters, scenario: str | Path, alpha) -> tuple[lis
     if angles.ndim != 1 or angles.size == 0:
         raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: one angle or a 1-D list")
     build = {"A": Path.scenario_A, "B": Path.scenario_B, "B+": Path.scenario_B_indentation}[scenario]
-    return [build(float(angle), params) for angle in angles], angles
+    paths = [build(float(angle), params) for angle in angles]
+    for angle, path in zip(angles, paths):
+        check_path_extent(params, path, f"alpha={float(angle)!r} (degrees) in scenario {scenario}")
+    return paths, angles
 
 
 def _time_step(paths: list[Path], dt: float | None, n_steps: int | None) -> float:

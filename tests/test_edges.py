@@ -156,6 +156,8 @@ def test_slip_onset_within_a_nanosecond_of_d_max_is_not_missed(paper, offset):
 def test_bad_inputs_name_the_argument_its_value_and_what_is_allowed(paper):
     cases = [
         (lambda: me.simulate(paper, "A", alpha=[95.0]), "alpha=95.0 (degrees) is not allowed; allowed: finite angles in [0, 90]"),
+        (lambda: me.simulate(paper, "B", alpha=[1e-9], method="continuum"),
+         "alpha=1e-09 (degrees) in scenario B: the path reaches x = 2.02e+07 m; allowed: |x| <= 3.2e+03 m"),
         (lambda: me.simulate(paper, "A", alpha=[-1.0], method="continuum"), "alpha=-1.0 (degrees) is not allowed"),
         (lambda: me.simulate(paper, "A", alpha=[float("nan")]), "alpha=nan (degrees) is not allowed"),
         (lambda: me.d_crit(91.0, paper, "A"), "alpha=91.0 (degrees) is not allowed"),

@@ -37,8 +37,11 @@ def cases(draw, adhesion=work_of_adhesion(), friction=st.one_of(st.just(0.0), lo
                            R=draw(log_uniform(5e-3, 0.2)), tau0=draw(friction), dgamma0=draw(adhesion),
                            dgamma1=draw(adhesion), d_max=draw(log_uniform(2e-5, 1e-3)), v=1e-6)
     scenario = draw(st.sampled_from(["A", "B"]))
-    low = max(smallest_angle, 1.0 if scenario == "A" else 0.0)  # A at 0° never reaches d_max
-    alpha = draw(st.floats(low, 90.0))
+    # A at 0° never reaches d_max; below about 1e-5° the path is kilometres long and rejected (tested
+    # in test_edges), so the angles are 0 (B) or at least 1e-3°
+    low = max(smallest_angle, 1.0 if scenario == "A" else 1e-3)
+    angles = st.floats(low, 90.0)
+    alpha = draw(angles if scenario == "A" or smallest_angle > 0 else st.one_of(st.just(0.0), angles))
     return params, scenario, alpha
 
 
@@ -86,13 +89,19 @@ def test_continuum_invariants(case):
 
 
 def resolving_time_step(params, dx):
-    """A time step whose depth and tangential moves stay below Δx/4 of radius and of travel."""
+    """A time step whose own error stays below the spacing's: it moves the radius by at most Δx/4, the
+    indenter by at most Δx/4 and by at most ū(a_min) Δx/a_max, a share Δx/a_max of the critical shift
+    of the smallest radius (stiff springs with a small τ0 have ū well below Δx; the discrete model's
+    first springs attach one step late, which offsets F_x by one step of travel against ū)."""
     a_max = float(me.jkr_contact_radius(params.d_max, params, params.dgamma0))
     a0 = analytic.jump_in_radius(params, params.dgamma0) if params.dgamma0 > 0 else 0.0
     radii = np.linspace(max(a0, a_max / 10), a_max, 50)
     slope = float(np.min(symbolic.relation("jkr_depth_slope").numeric(radii, params.R, params.E_star,
                                                                       params.dgamma0)))
-    return min(dx / 4, dx * slope / 4) / params.v
+    moves = [dx / 4, dx * slope / 4]
+    if params.tau0 > 0:
+        moves.append(float(analytic.critical_shift(radii[0], params)) * dx / a_max)
+    return min(moves) / params.v
 
 
 @settings(max_examples=10 * SCALE, deadline=None, suppress_health_check=[HealthCheck.too_slow])
