@@ -214,10 +214,17 @@ class AnchorMap:
         return p.x0 if p.ratio == 0.0 else p.x0 + p.ratio * (self.attach.depth(xi) - p.d_ref)
 
     def value(self, xi: float) -> float:
+        """``Y(ξ)``; where ``Y`` jumps at a piece boundary, the value of the piece that starts there."""
+        chosen = self.pieces[0]
         for p in self.pieces:
-            if xi <= p.end:
-                return self._value(p, max(xi, p.start))
-        return self._value(self.pieces[-1], xi)
+            if p.start <= xi:
+                chosen = p
+        return self._value(chosen, min(max(xi, chosen.start), chosen.end))
+
+    def end_value(self, index: int, radius: float) -> float:
+        """``Y`` at the end of piece ``index`` (the last piece ends at ``radius``), from that piece."""
+        p = self.pieces[index]
+        return self._value(p, radius if index == len(self.pieces) - 1 else min(p.end, radius))
 
     def integral(self, lower: float, upper: float) -> float:
         """``∫_lower^upper Y(ξ) dξ``."""
@@ -274,20 +281,28 @@ class AnchorMap:
         return fronts
 
     def piece_of_front(self, level: float, radius: float, tolerance: float = 0.0) -> int:
-        """Index of the piece that holds the slip front at ``level``: the first whose end value
-        exceeds it by more than ``tolerance`` (a front at a piece's end to rounding is in the next)."""
-        last = len(self.pieces) - 1
+        """Index of the piece that holds the slip front at ``level``: among the pieces that start
+        within the contact (``start <= radius``: a growth piece about to start counts), the first
+        whose value at its end (or at the radius) exceeds the level by more than ``tolerance`` (a
+        front at a piece's end to rounding is in the next); the last of them if none does."""
+        chosen = 0
         for i, p in enumerate(self.pieces):
-            end = radius if i == last else min(p.end, radius)
-            if end >= radius or self._value(p, end) > level + tolerance:
+            if p.start > radius:
+                break
+            chosen = i
+            if self._value(p, min(p.end, radius)) > level + tolerance:
                 return i
-        return last
+        return chosen
 
     def front_in_piece(self, index: int, level: float, radius: float) -> float:
-        """The slip front continued smoothly within piece ``index`` (the inverse of its ``Y``, unclipped)."""
+        """The slip front continued smoothly within piece ``index`` (the inverse of its ``Y``, unclipped).
+
+        For a piece that starts above ``level`` (``Y`` jumps up at its start) or is constant, see
+        :meth:`holds_at_start`: the front then stays at the piece's start.
+        """
         p = self.pieces[index]
         if p.ratio == 0.0:
-            return min(p.end, radius)
+            return p.start
         xi = self.attach.radius(p.d_ref + (level - p.x0) / p.ratio, self.rtol)
         return xi if xi == xi else p.start  # below the branch's fold: no continuation, hold the start
 
@@ -668,12 +683,12 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
     # The rising slip events cross a level a hair above zero: 16 ulp of the lengths involved, just
     # above the rounding of x − Y − ū (an event moves by about 1e-12 s at the paper's speed). A slip
     # function that starts at zero to rounding and first falls (the centre of a Hertz contact at
-    # a = 0, the level right after a re-stick) is then not taken for a root at the start.
+    # a = 0, the level right after a re-stick) is then not taken for a root at the start; one that
+    # starts above it has crossed already and fires at once.
     level = 16 * np.finfo(float).eps * max(K * a0, abs(x0), abs(solver.Y.value(0.0)), solver.p.d_max)
     if K > 0 and a0 > 0:
-        # clearly past (beyond rounding and the event root-finding), not zero to it
         met = tuple(kind for kind, value in (("slip_onset", onset0), ("full_slip", full0))
-                    if kind not in holding and value > 1e-3 * shift_scale)
+                    if kind not in holding and value > level)
         if met:
             span.solution, span.force = None, force
             return met, t0, force
@@ -691,12 +706,22 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
         # a front within 1e-9 of the length scale of a piece's end (e.g. where the last event's root
         # was found, a few ulp of the radius away) is in the next piece
         piece = solver.Y.piece_of_front(x0 - K * a0, a0, shift_scale)
-        piece_end = solver.Y.pieces[piece].end
+        current = solver.Y.pieces[piece]
+        # The front waits at the piece's start while the piece starts above the level (Y jumps up
+        # there, or the piece is constant: its springs all start sliding together); otherwise it
+        # moves inside the piece. Either way an internal event restarts the span when the level
+        # reaches the value that ends this (the piece's start value, or its end value).
+        start_value = solver.Y.value(current.start)
+        waiting = current.ratio == 0.0 or start_value > x0 - K * a0 + shift_scale
+        next_value = start_value if waiting else solver.Y.end_value(piece, a0)
+        crossing_inside = waiting or current.end < a0
 
     def slip_zone(x, a):
         if state == "stick":
             return 0.0
-        return a if state == "full" else solver.Y.front_in_piece(piece, x - K * a, a)
+        if state == "full":
+            return a
+        return current.start if waiting else solver.Y.front_in_piece(piece, x - K * a, a)
 
     if moving:
         def time_of(a):
@@ -730,8 +755,8 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
         a = radius_of(var)
         return seg.x(time_of(var)) - solver.Y.value(a) - K * a - level
 
-    def front_crosses(var, y):  # the slip front leaves its piece of the anchor map
-        return seg.x(time_of(var)) - K * radius_of(var) - solver.Y.value(piece_end) - level
+    def front_crosses(var, y):  # the slip front starts into its piece, or leaves it
+        return seg.x(time_of(var)) - K * radius_of(var) - next_value - level
 
     candidates = []
     if K > 0:
@@ -742,7 +767,7 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
             candidates.append(("full_slip", full))
         if state == "partial" and span.regime == "growing" and restick(start, None) > 0:
             candidates.append(("re_stick", restick))
-        if state == "partial" and piece_end < a0:
+        if state == "partial" and crossing_inside:
             candidates.append((_FRONT_CROSSES, front_crosses))
     events = []
     for kind, function in candidates:

@@ -79,6 +79,9 @@ def atomic_write(path: str | os.PathLike, write: Callable[[str], Any], suffix: s
     os.close(handle)
     try:
         write(temporary)
+        mask = os.umask(0)  # mkstemp makes the file owner-only; give it the usual permissions
+        os.umask(mask)
+        os.chmod(temporary, 0o666 & ~mask)
         os.replace(temporary, target)
     except BaseException:
         Path(temporary).unlink(missing_ok=True)

@@ -23,6 +23,7 @@ METHODS = ("discrete", "continuum")
 SCENARIO_NAMES = ("A", "B", "B+")
 DEFAULT_DX = 1e-6
 DEFAULT_STEPS = 10_000
+DEFAULT_SAMPLES = 2001
 
 
 #: Relative accuracy the slip criterion needs: x − X(ξ) against ū(a) must keep this many digits.
@@ -122,7 +123,7 @@ def simulate(
     dt: float | None = None,
     n_steps: int | None = None,
     t: Sequence[float] | None = None,
-    samples: int = 2001,
+    samples: int | None = None,
     tolerances: Tolerances | None = None,
 ) -> xr.Dataset:
     """Simulate indentation and detachment along straight paths.
@@ -149,7 +150,7 @@ def simulate(
     t : sequence of float, optional
         Continuum method: the output times in s from first contact
         (increasing, >= 0); default ``samples`` points to the end of the longest run.
-    samples : int
+    samples : int, optional
         Continuum method without ``t``: number of output times (default 2001, at least 2).
     tolerances : mdr_events.continuum.Tolerances, optional
         Continuum method: solver and root-finding tolerances (default
@@ -172,7 +173,7 @@ def simulate(
                                  "step); allowed: t, samples, tolerances")
         return _simulate_continuum(params, scenario, paths, angles, t, samples, tolerances)
     dx = DEFAULT_DX if dx is None else dx
-    for name, value in (("t", t), ("tolerances", tolerances)):
+    for name, value in (("t", t), ("samples", samples), ("tolerances", tolerances)):
         if value is not None:
             raise ValueError(f"{name} is not allowed with method='discrete'; allowed: dx, dt or n_steps")
     for path in paths:
@@ -196,6 +197,7 @@ def simulate(
 def _simulate_continuum(params, scenario, paths, angles, t, samples, tolerances) -> xr.Dataset:
     from .continuum import run_continuum
 
+    samples = DEFAULT_SAMPLES if samples is None else samples
     if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 2:
         raise ValueError(f"samples={samples!r} is not allowed; allowed: an integer >= 2")
     if tolerances is None:

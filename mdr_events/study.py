@@ -173,12 +173,15 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> list[Fil
         if "path" in study.tables:
             path_table = study.tables["path"]
             scenario = Path(path_table["waypoints"], path_table.get("speed", study.params.v))
-        tolerance_names = {"rtol", "atol"} & set(settings)
-        if tolerance_names:
-            settings["tolerances"] = Tolerances(**{name: float(settings.pop(name)) for name in tolerance_names})
+        tolerance_names = sorted({"rtol", "atol"} & set(settings))
         alpha = settings.pop("alpha", None)
         progress(f"simulation: scenario {scenario if isinstance(scenario, str) else 'custom path'}, method {method}")
         try:
+            if tolerance_names and method != "continuum":
+                raise ValueError(f"{', '.join(tolerance_names)} is not allowed with method={method!r}; "
+                                 "allowed: with method = 'continuum'")
+            if tolerance_names:
+                settings["tolerances"] = Tolerances(**{name: float(settings.pop(name)) for name in tolerance_names})
             dataset = simulate(study.params, scenario, alpha=alpha, method=method, **settings)
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where}: [simulation] {error}") from None

@@ -53,6 +53,12 @@ def test_scenario_A_tangential_force_at_d_max_is_exact(paper, alpha):
     [(0.0, 0.0), (20e-6, 150e-6), (900e-6, 300e-6), (900e-6, -5e-5)],
     # fast tangential growth then vertical: re-sticking of the slip zone while the cap grows
     [(0.0, 0.0), (500e-6, 60e-6), (500e-6, 300e-6), (1200e-6, -5e-5)],
+    # a pinned slide, then vertical growth: the anchor map jumps up at the new piece and the front
+    # waits at its start (found by review: F_x stayed flat there)
+    [(0.0, 0.0), (150e-6, 150e-6), (350e-6, 150e-6), (350e-6, 300e-6), (1350e-6, 300e-6), (1350e-6, -90e-6)],
+    # slide to full slip, then press in at an angle: growth resumes from full slip (found by review:
+    # it stalled at the corner)
+    [(0.0, 0.0), (0.0, 300e-6), (1000e-6, 300e-6), (1500e-6, 330e-6), (1500e-6, -90e-6)],
 ])
 def test_integrated_tangential_force_equals_the_algebraic_form_along_a_general_path(paper, waypoints):
     """dF_x/dt integrated across every regime and slip state equals F_x = 2G*[cū + ∫_c^a (x − Y)dξ]

@@ -41,6 +41,16 @@ def test_every_result_reads_back_identical(results, tmp_path, name):
     assert second.read_bytes() == path.read_bytes()
 
 
+def test_written_files_get_the_usual_permissions(results, tmp_path):
+    """mkstemp makes owner-only files; what is renamed into place follows the umask like any file."""
+    mask = os.umask(0o022)
+    try:
+        path = write_netcdf(results["phase_A"], tmp_path / "shared.nc")
+    finally:
+        os.umask(mask)
+    assert path.stat().st_mode & 0o777 == 0o644
+
+
 def test_a_failing_writer_leaves_the_old_file_and_no_temporary(tmp_path):
     target = tmp_path / "result.nc"
     target.write_bytes(b"old, complete result")
