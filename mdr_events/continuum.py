@@ -148,11 +148,17 @@ class _Branch:
         return np.asarray(analytic.jkr_contact_radius(np.asarray(depth, dtype=float), self.params, self.work))
 
     def radius(self, depth: float, rtol: float) -> float:
-        """Stable-branch radius at ``depth`` (Newton from above on the quartic in ``s``)."""
-        if depth < self.jump_off_depth:
-            return math.nan
-        if self.work == 0.0:
+        """Stable-branch radius at ``depth`` (Newton from above on the quartic in ``s``).
+
+        ``nan`` below the jump-off depth; within rounding of it (1e-9 of it), the jump-off radius
+        (a radius pinned just outside the fold is released at a depth that rounds below it).
+        """
+        if self.work == 0.0:  # Hertz: no contact above the surface (d <= 0, to rounding at first contact)
             return math.sqrt(self.params.R * depth) if depth > 0 else 0.0
+        if depth < self.jump_off_depth:
+            if depth < self.jump_off_depth * (1.0 + 1e-9):
+                return math.nan
+            return self.jump_off_radius
         _, _, _, c1, c0 = self._coefficients(depth)
         # term-dominance upper bound on the single positive root (one sign change)
         s = (-c1) ** (1.0 / 3.0) if c0 >= 0 else max((-2.0 * c1) ** (1.0 / 3.0), (-2.0 * c0) ** 0.25)
@@ -359,6 +365,11 @@ class PathSolution:
     solver: object = None
 
 
+#: A velocity component below this share of the speed is taken as zero (a segment that changes its
+#: depth by 1e-90 m over 0.3 mm is a pinned slide: its growth ratio vx/vd would overflow the anchor map).
+_NEGLIGIBLE_SHARE = 1e-12
+
+
 def _segments(path: Path, mirror: bool) -> list[_Segment]:
     points = path.waypoints.copy()
     if mirror:
@@ -367,8 +378,10 @@ def _segments(path: Path, mirror: bool) -> list[_Segment]:
     out = []
     for i in range(len(points) - 1):
         dt = times[i + 1] - times[i]
-        out.append(_Segment(times[i], times[i + 1], points[i, 0], points[i, 1],
-                            (points[i + 1, 0] - points[i, 0]) / dt, (points[i + 1, 1] - points[i, 1]) / dt))
+        vx, vd = (points[i + 1, 0] - points[i, 0]) / dt, (points[i + 1, 1] - points[i, 1]) / dt
+        vx = 0.0 if abs(vx) < _NEGLIGIBLE_SHARE * path.speed else vx
+        vd = 0.0 if abs(vd) < _NEGLIGIBLE_SHARE * path.speed else vd
+        out.append(_Segment(times[i], times[i + 1], points[i, 0], points[i, 1], vx, vd))
     return out
 
 
@@ -577,8 +590,8 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
             for name in ("normal_force", "tangential_force", "contact_radius"):
                 out[name][rows] = 0.0
             continue
-        if span.regime == "growing":
-            a = solver.grow.radii(d)
+        if span.regime == "growing":  # d >= 0 there; the first sample may sit at -0 to rounding
+            a = solver.grow.radii(np.maximum(d, 0.0))
         elif span.regime == "shrinking":  # the last sample may sit on the fold to rounding
             a = solver.shrink.radii(np.maximum(d, solver.shrink.jump_off_depth))
         else:
@@ -776,6 +789,9 @@ def _integrate_span(solver: _Solver, span: _Span, force: float, holding: frozens
         rising = kind != "re_stick"
         function.direction = 1.0 if rising else -1.0
         events.append(function)
+    if not (math.isfinite(start) and math.isfinite(stop) and math.isfinite(force)):
+        raise RuntimeError(f"the continuum method lost its state on [{t0!r}, {t1!r}] s ({span.regime}: from "
+                           f"{start!r} to {stop!r}, F_x = {force!r}); please report the parameters and path")
     solution = solve_ivp(rhs, (start, stop), [force], method="DOP853", rtol=tol.rtol, atol=tol.atol,
                          dense_output=True, events=events or None)
     if solution.status < 0:

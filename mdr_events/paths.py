@@ -41,6 +41,10 @@ def _check_angle(alpha: float) -> float:
     return float(values)
 
 
+#: The shortest segment a path may have, as a share of its longest.
+MIN_SEGMENT_SHARE = 1e-12
+
+
 @dataclass(frozen=True)
 class Path:
     """Straight segments through ``waypoints`` (``(x, d)`` pairs, m) at speed ``speed`` (m/s).
@@ -71,6 +75,11 @@ class Path:
         if np.any(lengths == 0.0):
             index = int(np.argmin(lengths))
             raise ValueError(f"waypoints {index} and {index + 1} coincide; consecutive waypoints must differ")
+        if np.any(lengths < MIN_SEGMENT_SHARE * lengths.max()):
+            index = int(np.argmin(lengths))
+            raise ValueError(f"waypoints {index} and {index + 1} are {lengths[index]:.3g} m apart; allowed: at least "
+                             f"{MIN_SEGMENT_SHARE:g} of the longest segment ({lengths.max():.3g} m), below which a "
+                             "segment's direction is lost to rounding")
         if not (math.isfinite(self.speed) and self.speed > 0):
             raise ValueError(f"speed={self.speed!r} is not allowed; allowed: a finite number > 0 (m/s)")
         points.setflags(write=False)
@@ -168,16 +177,23 @@ class Path:
         return x, d
 
     def first_contact_time(self) -> float:
-        """The first time at which ``d >= 0`` (the indenter reaches the surface)."""
+        """The first time at which the indenter is in the elastomer or enters it (``d >= 0``, moving in).
+
+        A path that only touches the surface (``d = 0`` at a corner, then back out) does not make
+        contact there.
+        """
         depths = self.waypoints[:, 1]
-        if depths[0] >= 0.0:
-            return 0.0
         corners = self.corner_times
         for i in range(len(depths) - 1):
-            if depths[i + 1] >= 0.0:
-                fraction = -depths[i] / (depths[i + 1] - depths[i])
+            start, end = depths[i], depths[i + 1]
+            if start > 0.0:
+                return float(corners[i])
+            if end >= 0.0 and end > start:  # reaches the surface on this segment, moving in
+                if end == 0.0 and (i + 2 == len(depths) or depths[i + 2] <= 0.0):
+                    continue  # touches the surface and turns back
+                fraction = -start / (end - start)
                 return float(corners[i] + fraction * (corners[i + 1] - corners[i]))
-        raise ValueError("the path never reaches the surface (d >= 0); there is no contact to simulate")
+        raise ValueError("the path never enters the elastomer (d > 0); there is no contact to simulate")
 
     def describe(self) -> str:
         """The waypoints as a netCDF-safe string."""

@@ -183,7 +183,7 @@ def test_bad_input(paper):
         simulate(paper, "A", n_steps=5)
     with pytest.raises(ValueError, match="coincide"):
         Path([(0.0, 0.0), (0.0, 0.0)], 1.0)
-    with pytest.raises(ValueError, match="never reaches the surface"):
+    with pytest.raises(ValueError, match="never enters the elastomer"):
         simulate(paper, Path([(0.0, -1.0), (1.0, -1.0)], 1.0))
 
 

@@ -175,6 +175,8 @@ def test_bad_inputs_name_the_argument_its_value_and_what_is_allowed(paper):
         (lambda: Path.from_segments([((0, 0), (0, 3e-4)), ((0, 2e-4), (1e-4, -1e-4))], 1e-6),
          "segments 0 and 1 do not connect"),
         (lambda: Path([(0, 0), (0, 0)], 1e-6), "coincide"),
+        (lambda: Path([(0, 0), (0, 1e-300), (1e-4, 3e-4)], 1e-6),
+         "waypoints 0 and 1 are 1e-300 m apart; allowed: at least 1e-12 of the longest segment"),
         (lambda: paper.replace(nu=0.7), "Parameters.nu=0.7 is not allowed; allowed:"),
         (lambda: paper.replace(E=float("inf")), "Parameters.E=inf is not allowed; allowed:"),
     ]
