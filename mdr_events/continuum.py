@@ -246,25 +246,12 @@ class AnchorMap:
         return total
 
     def front(self, level: float, radius: float) -> float:
-        """Slip front ``c = sup{ξ ≤ a: Y(ξ) <= level}`` (0 if none, ``a`` if all)."""
-        for i, p in enumerate(self.pieces):
-            end = radius if i == len(self.pieces) - 1 else min(p.end, radius)
-            if self._value(p, p.start) > level:
-                return p.start
-            if end >= radius:
-                if self._value(p, radius) <= level:
-                    return radius
-            elif self._value(p, end) <= level:
-                continue
-            if p.ratio == 0.0:
-                return min(end, radius)
-            depth = p.d_ref + (level - p.x0) / p.ratio
-            xi = self.attach.radius(depth, self.rtol)
-            return min(max(xi, p.start), end, radius)
-        return radius
+        """Slip front ``c = sup{ξ ≤ a: Y(ξ) <= level}`` (0 if none, ``a`` if all); one point of :meth:`fronts`."""
+        return float(self.fronts(np.array([level]), np.array([radius]))[0])
 
     def fronts(self, levels: np.ndarray, radii: np.ndarray) -> np.ndarray:
-        """:meth:`front` for arrays of levels and radii (vectorised over points, looped over pieces)."""
+        """Slip fronts ``c = sup{ξ ≤ a: Y(ξ) <= level}`` for arrays of levels and radii (vectorised over
+        points, looped over pieces)."""
         levels = np.asarray(levels, dtype=float)
         radii = np.asarray(radii, dtype=float)
         fronts = radii.copy()  # a point no piece stops slides everywhere
@@ -301,14 +288,11 @@ class AnchorMap:
         return chosen
 
     def front_in_piece(self, index: int, level: float, radius: float) -> float:
-        """The slip front continued smoothly within piece ``index`` (the inverse of its ``Y``, unclipped).
-
-        For a piece that starts above ``level`` (``Y`` jumps up at its start) or is constant, see
-        :meth:`holds_at_start`: the front then stays at the piece's start.
+        """The slip front continued smoothly within the growth piece ``index`` (the inverse of its
+        ``Y``, unclipped). In a constant piece, or one that starts above the level, the front waits
+        at the piece's start instead (see ``_integrate_span``).
         """
         p = self.pieces[index]
-        if p.ratio == 0.0:
-            return p.start
         xi = self.attach.radius(p.d_ref + (level - p.x0) / p.ratio, self.rtol)
         return xi if xi == xi else p.start  # below the branch's fold: no continuation, hold the start
 
