@@ -1,24 +1,40 @@
 # Two commands, both self-contained in a fresh clone (Python >= 3.11, pip, make):
-#   make reproduce   writes results/
+#   make reproduce   writes results/ (files that agree with what is there are left alone)
 #   make test        runs the test suite
+# Both install into .venv the exact versions of the lock file constraints.txt, which results/ was
+# written with. `make test-newest` runs the tests against the newest releases instead (.venv-newest),
+# and `make lock` rewrites constraints.txt from them.
 PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
+LOCK := constraints.txt
+EXTRAS := test,notebooks
+# PIP_CONSTRAINT, unlike -c, also reaches the build backend's own environment (setuptools)
+LOCKED_PIP = PIP_CONSTRAINT=$(CURDIR)/$(LOCK) $(1)/python -m pip install --quiet
 
-.PHONY: test reproduce benchmark derive clean
+.PHONY: test test-newest reproduce notebooks benchmark derive lock clean
 
-$(STAMP): pyproject.toml
+$(STAMP): pyproject.toml $(LOCK)
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e '.[test]'
+	$(call LOCKED_PIP,$(BIN)) pip
+	$(call LOCKED_PIP,$(BIN)) -e '.[$(EXTRAS)]'
 	touch $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q
 
+test-newest:
+	test -x .venv-newest/bin/python || $(PYTHON) -m venv .venv-newest
+	.venv-newest/bin/python -m pip install --quiet --upgrade pip
+	.venv-newest/bin/python -m pip install --quiet --upgrade --upgrade-strategy eager -e '.[$(EXTRAS)]'
+	.venv-newest/bin/python -m pytest -q
+
 reproduce: $(STAMP)
 	$(BIN)/mdr-events reproduce --out results
+
+notebooks: $(STAMP)
+	$(BIN)/python derivations/execute.py --out results/derivations
 
 benchmark: $(STAMP)
 	$(BIN)/python benchmarks/bench_phase_diagram.py
@@ -28,5 +44,15 @@ benchmark: $(STAMP)
 derive: $(STAMP)
 	$(BIN)/mdr-events derive
 
+lock:
+	rm -rf .venv-lock
+	$(PYTHON) -m venv .venv-lock
+	.venv-lock/bin/python -m pip install --quiet --upgrade pip setuptools
+	.venv-lock/bin/python -m pip install --quiet '.[$(EXTRAS)]'
+	{ echo "# The lock file: exact versions of everything 'make' installs (pip constraints file)."; \
+	  echo "# Written by 'make lock' with $$(.venv-lock/bin/python --version); results/ was computed with these."; \
+	  .venv-lock/bin/python -m pip freeze --all --exclude mdr_events; } > $(LOCK)
+	rm -rf .venv-lock build *.egg-info
+
 clean:
-	rm -rf $(VENV) build *.egg-info .pytest_cache .hypothesis
+	rm -rf $(VENV) .venv-newest .venv-lock build *.egg-info .pytest_cache .hypothesis

@@ -104,3 +104,72 @@ radii = np.linspace(1e-4, 5e-3, 200_001)
 forces = relation("jkr_normal_force").numeric(radii, R, E_STAR, DGAMMA)
 assert math.isclose(forces.min(), relation("pull_off_force").numeric(R, DGAMMA), rel_tol=1e-8)
 print("pull-off force", forces.min(), "N")
+
+# %% [markdown]
+# ## Step 6 — the JKR curve with the paper's two works of adhesion
+# With `mdr_events.Parameters.paper()`: the springs attach with `Δγ0` on the
+# way in and come off with `Δγ1` on the way out (Heß's rule with two works of
+# adhesion). Each branch is traced parametrically in `a` by (9) and (10), up
+# to `d_max`. Under displacement control the part with `∂d/∂a > 0` (`a` above
+# the jump-off radius) is stable (solid), the rest unstable (dashed).
+# Approaching, the contact jumps in at `d = 0` to the jump-in radius on the
+# `Δγ0` branch and follows it to `d_max`; retracting, the radius stays pinned
+# (grey: (10) at fixed `a`) until the boundary springs reach Heß's `Δγ1`
+# limit, then it follows the `Δγ1` branch down to the jump-off point and comes
+# apart there.
+
+# %%
+import matplotlib.pyplot as plt
+
+import mdr_events as me
+from mdr_events import analytic
+
+p = me.Parameters.paper()
+branches = {}
+for name, work, colour in (("Δγ0 (in)", p.dgamma0, "tab:blue"), ("Δγ1 (out)", p.dgamma1, "tab:red")):
+    radius = np.linspace(1e-6, float(me.jkr_contact_radius(p.d_max, p, work)), 4001)
+    branches[name] = dict(work=work, colour=colour, radius=radius, jump_off=analytic.jump_off(p, work),
+                          depth=me.jkr_depth(radius, p, work), force=me.jkr_normal_force(radius, p, work))
+a_in = analytic.jump_in_radius(p, p.dgamma0)
+jump_in = dict(depth=float(me.jkr_depth(a_in, p, p.dgamma0)), force=float(me.jkr_normal_force(a_in, p, p.dgamma0)))
+jump_off = analytic.jump_off(p, p.dgamma1)
+a_pinned = float(me.jkr_contact_radius(p.d_max, p, p.dgamma0))
+pinned_depth = np.linspace(float(me.jkr_depth(a_pinned, p, p.dgamma1)), p.d_max, 200)
+pinned_force = analytic.normal_force(pinned_depth, a_pinned, p)
+
+# the marked points lie where they should: jump-in at d = 0, jump-off at the minimum depth of its
+# branch with the force −(5/6)πΔγ1 R; both branches end at d_max; the pinned line meets both branches
+assert abs(jump_in["depth"]) < 1e-12 * p.d_max
+out = branches["Δγ1 (out)"]
+assert math.isclose(out["depth"].min(), jump_off["depth"], rel_tol=1e-6)
+assert abs(out["radius"][out["depth"].argmin()] - jump_off["contact_radius"]) <= out["radius"][1] - out["radius"][0]
+assert math.isclose(jump_off["normal_force"], -5 / 6 * math.pi * p.dgamma1 * p.R, rel_tol=1e-12)
+for branch in branches.values():
+    assert math.isclose(branch["depth"][-1], p.d_max, rel_tol=1e-12)
+assert math.isclose(pinned_force[-1], branches["Δγ0 (in)"]["force"][-1], rel_tol=1e-10)
+assert math.isclose(pinned_force[0], float(me.jkr_normal_force(a_pinned, p, p.dgamma1)), rel_tol=1e-10)
+
+# %%
+fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
+for ax, zoom in zip(axes, (False, True)):
+    for name, branch in branches.items():
+        stable = branch["radius"] >= branch["jump_off"]["contact_radius"]
+        ax.plot(branch["depth"][stable] * 1e3, branch["force"][stable] * 1e3, color=branch["colour"],
+                label=f"{name}, stable")
+        ax.plot(branch["depth"][~stable] * 1e3, branch["force"][~stable] * 1e3, color=branch["colour"],
+                ls="--", label=f"{name}, unstable")
+    ax.plot(pinned_depth * 1e3, pinned_force * 1e3, color="0.5", ls=":", label="pinned radius (retracting)")
+    ax.plot(jump_in["depth"] * 1e3, jump_in["force"] * 1e3, "o", color="tab:blue", label="jump-in (d = 0)")
+    ax.plot(jump_off["depth"] * 1e3, jump_off["normal_force"] * 1e3, "s", color="tab:red",
+            label="jump-off (∂d/∂a = 0)")
+    ax.axhline(0.0, color="0.6", lw=0.6)
+    ax.axvline(0.0, color="0.6", lw=0.6)
+    ax.set_xlabel("indentation depth d (mm)")
+    ax.set_ylabel("normal force $F_N$ (mN)")
+    if zoom:
+        ax.set_xlim(-0.03, 0.015)
+        ax.set_ylim(-25, 10)
+        ax.set_title("zoom: jump-in and jump-off")
+    else:
+        ax.set_title(f"JKR branches (9), (10), R = {p.R * 1e3:g} mm")
+        ax.legend(fontsize=8)

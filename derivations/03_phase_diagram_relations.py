@@ -95,3 +95,36 @@ print("alpha_c Hertz", round(me.critical_angle(p, "A", adhesion=False), 3), "(pa
 print("alpha_c JKR  ", round(me.critical_angle(p, "A", adhesion=True), 3), "(paper 22.87)")
 assert abs(me.critical_angle(p, "A", adhesion=False) - 23.59) < 0.02
 assert abs(me.critical_angle(p, "A", adhesion=True) - 22.87) < 0.02
+
+# %% [markdown]
+# ## The phase diagrams (Fig. 9a, 9b)
+# `mdr_events.phase_diagram` evaluates (17), (18) and (20), (21) on 0°, 0.1°,
+# …, 90°, and `mdr_events.plotting.plot_phase_diagram` draws them. Scenario A:
+# below the curve the springs stick during indentation, above it they slide;
+# paths steeper than `α_c` reach `d_max` before anything slides. Scenario B:
+# the pull-off branch (below `d_max`) and the indentation branch (above it);
+# above its critical angle the contact comes apart (jump-off) before any
+# spring slides.
+
+# %%
+import matplotlib.pyplot as plt
+
+from mdr_events.plotting import plot_phase_diagram
+
+diagrams = {scenario: me.phase_diagram(p, scenario=scenario) for scenario in ("A", "B")}
+
+# the drawn curves cross d_max at the critical angles (scenario A), and the scenario-B pull-off
+# curve ends at its critical angle (−inf beyond: jump-off first)
+pd_a, pd_b = diagrams["A"], diagrams["B"]
+for key in ("hertz", "jkr"):
+    angle = float(pd_a[f"critical_angle_{key}"])
+    crossing = np.interp(angle, pd_a["alpha"].values, pd_a[f"d_crit_{key}"].values)
+    assert math.isclose(crossing, p.d_max, rel_tol=1e-3), (key, crossing)
+pull_off = pd_b["d_crit_jkr"].sel(branch="pull-off")
+assert float(pull_off["alpha"].where(np.isfinite(pull_off)).max()) <= float(pd_b["critical_angle_jkr"])
+assert np.all(np.isneginf(pull_off.sel(alpha=slice(float(pd_b["critical_angle_jkr"]) + 0.1, 90))))
+
+# %%
+fig, axes = plt.subplots(1, 2, figsize=(12, 4.8), constrained_layout=True)
+for ax, scenario in zip(axes, ("A", "B")):
+    plot_phase_diagram(diagrams[scenario], ax=ax)

@@ -11,6 +11,7 @@ Angles are in degrees, lengths in metres, forces in newtons.
 
 from __future__ import annotations
 
+import math
 from typing import Literal
 
 import numpy as np
@@ -33,6 +34,7 @@ __all__ = [
     "positive_polynomial_root",
     "SCENARIOS",
     "BRANCHES",
+    "CRITICAL_ANGLE_SCENARIOS",
 ]
 
 SCENARIOS = ("A", "B")
@@ -381,7 +383,12 @@ def d_crit(
     return _as_output(result, alpha_deg)
 
 
-def critical_angle(params: Parameters, scenario: Literal["A", "B"] = "A", adhesion: bool = True) -> float:
+#: Scenarios that have a critical angle (:func:`critical_angle`).
+CRITICAL_ANGLE_SCENARIOS = ("A", "B", "B+")
+
+
+def critical_angle(params: Parameters, scenario: Literal["A", "B", "B+"] = "A", adhesion: bool = True,
+                   final_depth: float | None = None) -> float:
     """Critical path angle in degrees.
 
     Scenario A: the angle at which slip begins exactly at ``d_max``
@@ -394,10 +401,32 @@ def critical_angle(params: Parameters, scenario: Literal["A", "B"] = "A", adhesi
     the contact comes apart (jump-off on the ``Δγ1`` branch) before any spring
     slides, eq. (21) at the jump-off point. Without adhesion the radius
     shrinks to zero and slip always comes first: 90°.
+
+    Scenario B+ (the "+" branch of Fig. 9b, :meth:`mdr_events.Path.scenario_B_indentation`):
+    vertically to ``d_max``, then further in at angle α to ``final_depth``
+    (default ``2 d_max``, as the path). Every angle below 90° slides at some
+    depth beyond ``d_max``; the critical angle is the one at which slip begins
+    exactly at ``final_depth`` (the "+" sign of (21), or the larger root of (20), at
+    the radius of ``final_depth`` on the ``Δγ0`` branch): for α < α_c the springs
+    slide before the path turns back.
     """
-    _check_choice("scenario", scenario, SCENARIOS)
+    _check_choice("scenario", scenario, CRITICAL_ANGLE_SCENARIOS)
     _check_flag("adhesion", adhesion)
     p = params
+    if final_depth is not None and scenario != "B+":
+        raise ValueError(f"final_depth={final_depth!r} is not allowed with scenario {scenario!r}; "
+                         "allowed: None (final_depth is for scenario 'B+')")
+    if scenario == "B+":
+        final = 2.0 * p.d_max if final_depth is None else final_depth
+        if not (isinstance(final, (int, float)) and math.isfinite(final) and final > p.d_max):
+            raise ValueError(f"final_depth={final!r} is not allowed; allowed: a finite depth > d_max = {p.d_max!r} m")
+        if adhesion:
+            radius = jkr_contact_radius(final, p, p.dgamma0)
+        else:
+            radius = float(hertz_contact_radius(final, p))
+        with np.errstate(divide="ignore"):
+            angle = _rel("critical_angle_B_indentation").numeric(radius, final, p.d_max, p.tau0, p.G_star)
+        return float(np.rad2deg(angle))
     if scenario == "A":
         if adhesion:
             radius = jkr_contact_radius(p.d_max, p, p.dgamma0)

@@ -8,11 +8,17 @@ from __future__ import annotations
 
 import argparse
 import sys
+
+import matplotlib
 from pathlib import Path
 from typing import Sequence
 
-from .output import write_event_log, write_phase_diagram, write_simulation
-from .parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters
+from .output import describe_outcomes, write_phase_diagram, write_simulation
+from .parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters, from_preset
+
+#: The first line of ``mdr-events --help`` (plain text: argparse prints it as it is).
+DESCRIPTION = ("Adhesive indentation and detachment at an angle with the Method of Dimensionality Reduction "
+               "(Lyashenko, Popov & Borysiuk 2023, section 4).")
 
 
 class UsageError(Exception):
@@ -32,10 +38,10 @@ def _parameter_options(parser: argparse.ArgumentParser) -> None:
                             help=f"{long_name} [{PARAMETER_UNITS[name]}]")
 
 
-def _parameters(args: argparse.Namespace) -> Parameters:
-    base = Parameters.paper(R=PRESETS[args.preset])
+def _parameters(args: argparse.Namespace) -> tuple[Parameters, dict[str, str]]:
+    """The parameters of ``--preset`` with the options given, and attributes saying which came from the preset."""
     changes = {name: getattr(args, name) for name in PARAMETER_UNITS if getattr(args, name) is not None}
-    return base.replace(**changes) if changes else base
+    return from_preset(args.preset, **changes)
 
 
 def _progress(message: str) -> None:
@@ -56,44 +62,41 @@ def _command_derive(args: argparse.Namespace) -> None:
 
 
 def _command_phase_diagram(args: argparse.Namespace) -> None:
-    params = _parameters(args)
+    params, provenance = _parameters(args)
     stem = f"phase_diagram_{args.scenario}"
-    for path in write_phase_diagram(params, args.scenario, Path(args.out), stem):
-        print(path)
+    for outcome in write_phase_diagram(params, args.scenario, Path(args.out), stem, attrs=provenance):
+        print(outcome.path)
 
 
 def _command_simulate(args: argparse.Namespace) -> None:
     from .simulate import simulate
 
-    params = _parameters(args)
-    if args.method == "continuum":
-        dataset = simulate(params, args.scenario, alpha=args.alpha, method="continuum")
-    else:
-        dataset = simulate(params, args.scenario, alpha=args.alpha, method=args.method, dx=args.dx,
-                           dt=args.dt, n_steps=args.n_steps)
+    params, provenance = _parameters(args)
+    # the options of the discrete method are passed only when given, so that simulate() rejects them
+    # with the continuum method exactly as it does in Python
+    options = {name: getattr(args, name) for name in ("dx", "dt", "n_steps") if getattr(args, name) is not None}
+    dataset = simulate(params, args.scenario, alpha=args.alpha, method=args.method, **options)
+    dataset.attrs.update(provenance)
     stem = f"simulation_{args.scenario.replace('+', 'plus')}_{args.method}"
-    written = write_simulation(dataset, Path(args.out), stem)
-    if "event_kind" in dataset:
-        written.append(write_event_log(dataset, Path(args.out) / f"{stem}_events.csv"))
-    for path in written:
-        print(path)
+    for outcome in write_simulation(dataset, Path(args.out), stem):
+        print(outcome.path)
 
 
 def _command_run(args: argparse.Namespace) -> None:
     from .study import load_study, run_study
 
-    for path in run_study(load_study(args.study), progress=_progress):
-        print(path)
+    for outcome in run_study(load_study(args.study), progress=_progress):
+        print(outcome.path)
 
 
 def _command_reproduce(args: argparse.Namespace) -> None:
     from .report import reproduce
 
-    reproduce(Path(args.out), progress=_progress)
+    reproduce(Path(args.out), progress=_progress, keep_agreeing=not args.rewrite)
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = _Parser(prog="mdr-events", description=__doc__.splitlines()[0])
+    parser = _Parser(prog="mdr-events", description=DESCRIPTION)
     from ._version import __version__
 
     parser.add_argument("--version", action="version", version=f"mdr_events {__version__}")
@@ -110,17 +113,19 @@ def build_parser() -> argparse.ArgumentParser:
     _parameter_options(phase)
     phase.set_defaults(run=_command_phase_diagram)
 
-    from .simulate import DEFAULT_DX, METHODS, SCENARIO_NAMES
+    from .simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES
 
     sim = commands.add_parser("simulate", help="simulate Fig. 8 (A) / Fig. 10 (B); write .nc and .png")
     sim.add_argument("--scenario", choices=list(SCENARIO_NAMES), required=True)
     sim.add_argument("--method", choices=list(METHODS), default="discrete")
     sim.add_argument("--alpha", type=float, nargs="+", default=None, metavar="DEG",
                      help="angles in degrees (default 10 20 ... 80)")
-    sim.add_argument("--dx", type=float, default=DEFAULT_DX, help=f"spring spacing in m (default {DEFAULT_DX:g})")
+    sim.add_argument("--dx", type=float, default=None,
+                     help=f"discrete method: spring spacing in m (default {DEFAULT_DX:g})")
     steps = sim.add_mutually_exclusive_group()
-    steps.add_argument("--dt", type=float, default=None, help="time step in s")
-    steps.add_argument("--n-steps", type=int, default=None, help="time steps of the longest case (default 10000)")
+    steps.add_argument("--dt", type=float, default=None, help="discrete method: time step in s")
+    steps.add_argument("--n-steps", type=int, default=None,
+                       help=f"discrete method: time steps of the longest case (default {DEFAULT_STEPS})")
     sim.add_argument("--out", required=True, help="output directory")
     _parameter_options(sim)
     sim.set_defaults(run=_command_simulate)
@@ -131,6 +136,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     reproduce = commands.add_parser("reproduce", help="regenerate results/ (figures, datasets, report)")
     reproduce.add_argument("--out", default="results", help="output directory (default results)")
+    reproduce.add_argument("--rewrite", action="store_true",
+                           help="rewrite every file, also those that agree with a fresh computation")
     reproduce.set_defaults(run=_command_reproduce)
     return parser
 
@@ -143,6 +150,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             from . import symbolic
 
             symbolic.relation(args.key)
+        matplotlib.use("Agg")  # the CLI writes figures to files only: no window, whatever the user's default
         args.run(args)
     except UsageError as error:
         print(f"mdr-events: error: {error}", file=sys.stderr)

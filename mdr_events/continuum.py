@@ -44,13 +44,15 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from scipy import optimize
 from scipy.integrate import solve_ivp
 
 from . import analytic, symbolic
 from .parameters import Parameters
 from .paths import Path
 
-__all__ = ["Tolerances", "solve_path", "PathSolution", "EVENT_KINDS", "evaluate", "algebraic_tangential_force"]
+__all__ = ["Tolerances", "solve_path", "PathSolution", "EVENT_KINDS", "evaluate", "evaluate_span", "extremum",
+           "algebraic_tangential_force"]
 
 #: Event names of the log, in the order they can occur.
 EVENT_KINDS = (
@@ -532,24 +534,57 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     return result
 
 
-def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]:
-    """Fill a time grid (s from first contact) from the spans' dense output, span by span.
+#: Quantities :func:`evaluate` fills, in its output order.
+EVALUATED_QUANTITIES = ("indentation_depth", "tangential_displacement", "normal_force", "tangential_force",
+                        "contact_radius", "sliding_fraction")
 
-    Within a span every quantity is a vectorised function of time: the
-    kinematics are linear, the radius follows its branch of (9) (or is
-    pinned), ``F_N`` is (10), ``F_x`` is the span's dense output and the
-    sliding fraction is the slip front of the span's anchor map. Samples
-    after the end of the run are ``nan``, except the first sample after a
+
+def evaluate_span(solution: PathSolution, index: int, times: np.ndarray) -> dict[str, np.ndarray]:
+    """Every quantity of :data:`EVALUATED_QUANTITIES` at ``times`` (s from first contact) within span
+    ``index``, as a vectorised function of time: the kinematics are linear, the radius follows its
+    branch of (9) (or is pinned), ``F_N`` is (10), ``F_x`` is the span's dense output and the sliding
+    fraction is the slip front of the span's anchor map."""
+    solver = solution.solver
+    span = solution.spans[index]
+    sign = -1.0 if solution.mirrored else 1.0
+    t = solution.t_contact + np.asarray(times, dtype=float)
+    d, x = span.segment.d(t), span.segment.x(t)
+    out = {"indentation_depth": d, "tangential_displacement": sign * x}
+    if span.regime == "none":
+        zero = np.zeros(t.shape)
+        out.update(normal_force=zero, tangential_force=zero, contact_radius=zero,
+                   sliding_fraction=np.full(t.shape, np.nan))
+        return out
+    if span.regime == "growing":  # d >= 0 there; the first sample may sit at -0 to rounding
+        a = solver.grow.radii(np.maximum(d, 0.0))
+    elif span.regime == "shrinking":  # the last sample may sit on the fold to rounding
+        a = solver.shrink.radii(np.maximum(d, solver.shrink.jump_off_depth))
+    else:
+        a = np.full(t.shape, span.pinned_radius)
+    out["contact_radius"] = a
+    out["normal_force"] = np.asarray(analytic.normal_force(d, a, solution.params), dtype=float)  # (10)
+    if span.solution is None:
+        force = np.full(t.shape, span.force)
+    else:
+        force = span.solution(a if span.variable == "radius" else t)[0]
+    out["tangential_force"] = sign * force
+    anchors = AnchorMap(solver.grow, solver.tol.radius_rtol)
+    anchors.pieces = span.pieces
+    with np.errstate(invalid="ignore", divide="ignore"):
+        out["sliding_fraction"] = np.where(a > 0, anchors.fronts(x - solver.K * a, a) / a, np.nan)
+    return out
+
+
+def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]:
+    """Fill a time grid (s from first contact) from the spans' dense output, span by span
+    (:func:`evaluate_span`).
+
+    Samples after the end of the run are ``nan``, except the first sample after a
     pull-off, which shows the contact gone (forces and radius 0).
     """
-    solver = solution.solver
-    params = solution.params
     times = np.asarray(times, dtype=float)
-    names = ("indentation_depth", "tangential_displacement", "normal_force", "tangential_force",
-             "contact_radius", "sliding_fraction")
-    out = {name: np.full(len(times), np.nan) for name in names}
+    out = {name: np.full(len(times), np.nan) for name in EVALUATED_QUANTITIES}
     spans = solution.spans
-    sign = -1.0 if solution.mirrored else 1.0
     ends = np.array([span.t_end for span in spans]) - solution.t_contact
     inside = times <= solution.end_time
     owner = np.minimum(np.searchsorted(ends, times, side="left"), len(spans) - 1)
@@ -558,40 +593,81 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
     if ended_by_contact and after_end.size:
         first = after_end[0]
         t = solution.t_contact + times[first]
+        sign = -1.0 if solution.mirrored else 1.0
         out["indentation_depth"][first] = spans[-1].segment.d(t)
         out["tangential_displacement"][first] = sign * spans[-1].segment.x(t)
         for name in ("normal_force", "tangential_force", "contact_radius"):
             out[name][first] = 0.0
-    for index, span in enumerate(spans):
+    for index in range(len(spans)):
         rows = np.flatnonzero(inside & (owner == index))
-        if not rows.size:
-            continue
-        t = solution.t_contact + times[rows]
-        d, x = span.segment.d(t), span.segment.x(t)
-        out["indentation_depth"][rows] = d
-        out["tangential_displacement"][rows] = sign * x
-        if span.regime == "none":
-            for name in ("normal_force", "tangential_force", "contact_radius"):
-                out[name][rows] = 0.0
-            continue
-        if span.regime == "growing":  # d >= 0 there; the first sample may sit at -0 to rounding
-            a = solver.grow.radii(np.maximum(d, 0.0))
-        elif span.regime == "shrinking":  # the last sample may sit on the fold to rounding
-            a = solver.shrink.radii(np.maximum(d, solver.shrink.jump_off_depth))
-        else:
-            a = np.full(rows.size, span.pinned_radius)
-        out["contact_radius"][rows] = a
-        out["normal_force"][rows] = analytic.normal_force(d, a, params)  # (10)
-        if span.solution is None:
-            force = np.full(rows.size, span.force)
-        else:
-            force = span.solution(a if span.variable == "radius" else t)[0]
-        out["tangential_force"][rows] = sign * force
-        anchors = AnchorMap(solver.grow, solver.tol.radius_rtol)
-        anchors.pieces = span.pieces
-        with np.errstate(invalid="ignore", divide="ignore"):
-            out["sliding_fraction"][rows] = np.where(a > 0, anchors.fronts(x - solver.K * a, a) / a, np.nan)
+        if rows.size:
+            for name, values in evaluate_span(solution, index, times[rows]).items():
+                out[name][rows] = values
     return out
+
+
+#: Quantities :func:`extremum` finds the extremes of; the means are per contact area ``π a²``.
+EXTREMUM_QUANTITIES = ("normal_force", "tangential_force", "contact_radius", "contact_area",
+                       "mean_pressure", "mean_shear_stress")
+#: Points per span at which :func:`extremum` brackets an interior extremum before refining it.
+EXTREMUM_GRID = 65
+#: Span-relative time accuracy of the refined extremum; the value is then exact to rounding
+#: (it is flat there: its error is second order in the time error).
+EXTREMUM_XTOL = 1e-12
+
+
+def _quantity(filled: dict[str, np.ndarray], quantity: str) -> np.ndarray:
+    if quantity in filled:
+        return filled[quantity]
+    area = np.pi * filled["contact_radius"] ** 2
+    if quantity == "contact_area":
+        return area
+    force = filled["normal_force" if quantity == "mean_pressure" else "tangential_force"]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(area > 0, force / area, np.nan)
+
+
+def extremum(solution: PathSolution, quantity: str, largest: bool = True) -> tuple[float, float]:
+    """The largest (or smallest) value of ``quantity`` along the run and the time it is reached
+    (s from first contact), from the solution itself, not from samples.
+
+    Each span's quantities are smooth in time; the extremum of a span is at one of its ends or
+    inside it, where a scan of :data:`EXTREMUM_GRID` points brackets it and a bounded Brent search
+    refines it to :data:`EXTREMUM_XTOL` of the span's length. The means (``mean_pressure``,
+    ``mean_shear_stress``) are taken over the spans in contact.
+
+    Parameters
+    ----------
+    solution : PathSolution
+    quantity : str
+        One of :data:`EXTREMUM_QUANTITIES`.
+    largest : bool
+        ``True`` for the maximum, ``False`` for the minimum.
+    """
+    if quantity not in EXTREMUM_QUANTITIES:
+        raise ValueError(f"quantity={quantity!r} is not allowed; allowed: {', '.join(EXTREMUM_QUANTITIES)}")
+    sign = 1.0 if largest else -1.0
+    best_time, best_value = math.nan, -math.inf
+    for index, span in enumerate(solution.spans):
+        lower, upper = span.t_start - solution.t_contact, span.t_end - solution.t_contact
+        times = np.linspace(lower, upper, EXTREMUM_GRID if upper > lower else 1)
+        values = sign * _quantity(evaluate_span(solution, index, times), quantity)
+        if not np.any(np.isfinite(values)):
+            continue
+        i = int(np.nanargmax(values))
+        time, value = float(times[i]), float(values[i])
+        if len(times) > 1:  # the extremum lies within one grid interval of the best point (at an end too)
+            def objective(s: float) -> float:
+                return -sign * float(_quantity(evaluate_span(solution, index, np.array([s])), quantity)[0])
+
+            bracket = (times[max(i - 1, 0)], times[min(i + 1, len(times) - 1)])
+            refined = optimize.minimize_scalar(objective, bounds=bracket, method="bounded",
+                                               options={"xatol": EXTREMUM_XTOL * (upper - lower)})
+            if -refined.fun > value:
+                time, value = float(refined.x), float(-refined.fun)
+        if value > best_value:
+            best_time, best_value = time, value
+    return best_time, sign * best_value
 
 
 def _algebraic_force(anchors: AnchorMap, K: float, G_star: float, x: float, a: float) -> float:

@@ -19,7 +19,8 @@ import xarray as xr
 from ._version import __version__
 from .parameters import Parameters
 
-__all__ = ["DOI", "REFERENCE", "stamp", "atomic_write", "write_netcdf", "open_result", "parameters_of"]
+__all__ = ["DOI", "REFERENCE", "stamp", "atomic_write", "write_netcdf", "open_result", "parameters_of",
+           "RESULT_RTOL", "result_differences", "assert_results_agree"]
 
 DOI = "10.3390/biomimetics8060477"
 REFERENCE = (
@@ -58,6 +59,11 @@ def stamp(dataset: xr.Dataset, params: Parameters, **attrs: Any) -> xr.Dataset:
         }
     )
     dataset.attrs.update(params.to_attrs())
+    if params.preset_name() is not None:
+        dataset.attrs["inferred_parameters"] = ", ".join(Parameters.INFERRED_FIELDS)
+        dataset.attrs["inferred_parameters_note"] = (
+            f"{params.preset_name()}: these fields are inferred, not stated in section 4 of the paper "
+            "(see mdr_events.Parameters.paper)")
     dataset.attrs.update({key: _netcdf_safe(value) for key, value in attrs.items()})
     for name, variable in dataset.variables.items():
         missing = [key for key in ("units", "long_name") if key not in variable.attrs]
@@ -211,3 +217,78 @@ def simulation_dataset(
         "time": ("time", np.asarray(time, dtype=float), {"units": "s", "long_name": "time from first contact"}),
     }
     return stamp(xr.Dataset(data, coords=coords), params, **attrs)
+
+
+#: Relative tolerance within which a result computed on another machine or with other library versions
+#: agrees with a committed one. The continuum method integrates ``F_x`` with ``rtol = 1e-10``: a rounding
+#: difference (another NumPy's SIMD path, another SciPy's lambdified ``math``) that tips one step of the
+#: adaptive integrator from accepted to rejected moves ``F_x`` by up to that local error control. All other
+#: values (closed forms, roots converged to a few ulp, sums over springs) differ by about 1e-13, far below
+#: it. The differences seen between library versions were 2.5e-14 (simulations) and 6e-16 (phase diagrams).
+RESULT_RTOL = 1e-10
+
+
+def _float_differences(name: str, actual: np.ndarray, expected: np.ndarray, rtol: float) -> list[str]:
+    """Differences of one floating-point array: non-finite entries exactly, finite ones within ``rtol``
+    of the array's largest finite magnitude (values near a zero crossing carry the rounding of the
+    larger terms they are computed from, e.g. ``F_N`` as a difference of two integrals)."""
+    same_pattern = (np.isnan(actual) == np.isnan(expected)) & (np.isinf(actual) == np.isinf(expected))
+    if not np.all(same_pattern):
+        return [f"{name}: nan/inf at {int(np.count_nonzero(~same_pattern))} other place(s)"]
+    infinite = np.isinf(expected)
+    if np.any(actual[infinite] != expected[infinite]):
+        return [f"{name}: infinities of other sign"]
+    finite = np.isfinite(expected)
+    if not finite.any():
+        return []
+    scale = float(np.max(np.abs(expected[finite])))
+    worst = float(np.max(np.abs(actual[finite] - expected[finite])))
+    if worst > rtol * scale:
+        return [f"{name}: differs by {worst:.3g}, {worst / scale:.3g} of its largest magnitude {scale:.3g} "
+                f"(allowed: {rtol:g})"]
+    return []
+
+
+#: NumPy dtype kinds that hold strings (unicode, bytes, or Python objects as netCDF returns them).
+_STRING_KINDS = {"U", "S", "O"}
+
+
+def result_differences(actual: xr.Dataset, expected: xr.Dataset, rtol: float = RESULT_RTOL) -> list[str]:
+    """How ``actual`` differs from ``expected`` beyond the tolerance of another environment ([] if not).
+
+    Exact: dimensions and their sizes, the names of variables and coordinates, every attribute (of the
+    dataset and of each variable), and arrays of integers and strings (e.g. event kinds). Floating-point
+    arrays agree where their ``nan`` and ``inf`` match exactly and their finite values agree within
+    ``rtol`` of the array's largest finite magnitude (:data:`RESULT_RTOL`).
+    """
+    found: list[str] = []
+    if dict(actual.sizes) != dict(expected.sizes):
+        return [f"dimensions {dict(actual.sizes)} instead of {dict(expected.sizes)}"]
+    if set(actual.variables) != set(expected.variables):
+        return [f"variables {sorted(actual.variables)} instead of {sorted(expected.variables)}"]
+    if actual.attrs != expected.attrs:
+        keys = sorted(key for key in set(actual.attrs) | set(expected.attrs)
+                      if actual.attrs.get(key) != expected.attrs.get(key))
+        found.append(f"attributes {keys} differ")
+    for name in sorted(expected.variables):
+        mine, theirs = actual[name].variable, expected[name].variable
+        if mine.dims != theirs.dims or mine.attrs != theirs.attrs:
+            found.append(f"{name}: dimensions or attributes differ")
+            continue
+        values, reference = np.asarray(mine.values), np.asarray(theirs.values)
+        kinds = {values.dtype.kind, reference.dtype.kind}
+        if kinds == {"f"}:
+            found += _float_differences(name, values, reference, rtol)
+        elif kinds <= _STRING_KINDS:  # netCDF gives strings back as objects
+            if values.shape != reference.shape or not np.array_equal(values.astype(str), reference.astype(str)):
+                found.append(f"{name}: strings differ")
+        elif len(kinds) > 1 or not np.array_equal(values, reference):
+            found.append(f"{name}: values differ ({values.dtype} and {reference.dtype} compared exactly)")
+    return found
+
+
+def assert_results_agree(actual: xr.Dataset, expected: xr.Dataset, rtol: float = RESULT_RTOL) -> None:
+    """Raise ``AssertionError`` listing :func:`result_differences` if there are any."""
+    found = result_differences(actual, expected, rtol)
+    if found:
+        raise AssertionError("results disagree: " + "; ".join(found))

@@ -1,44 +1,125 @@
 """Result files: a dataset as netCDF with its figure as PNG, and the event log as CSV.
 
-Shared by the CLI and ``mdr-events reproduce``; every file is written to a
-temporary name and renamed into place (:func:`mdr_events.datasets.atomic_write`).
+Shared by the CLI, study files and ``mdr-events reproduce``; every file is written to a temporary
+name and renamed into place (:func:`mdr_events.datasets.atomic_write`).
+
+With ``keep_agreeing=True`` a file whose content already agrees with what would be written is left
+as it is (:attr:`FileStatus.KEPT`): a dataset that agrees within
+:data:`mdr_events.datasets.RESULT_RTOL` (:func:`mdr_events.datasets.result_differences`), a figure
+with the same pixels, a text with the same characters. The figure and the event log are then drawn
+from the dataset on disk, so that a kept dataset keeps its figure and log too. This is what lets
+``make reproduce`` leave a clean git tree on a machine whose rounding differs.
 """
 
 from __future__ import annotations
 
+import enum
+import io
+import os
 from pathlib import Path
+from typing import Callable, NamedTuple
 
+import numpy as np
 import xarray as xr
 
-from .datasets import atomic_write, write_netcdf
+from .datasets import RESULT_RTOL, atomic_write, open_result, result_differences, write_netcdf
 from .parameters import Parameters
 
-__all__ = ["write_phase_diagram", "write_simulation", "write_event_log"]
+__all__ = ["FileStatus", "FileOutcome", "write_dataset", "write_figure", "write_text", "write_phase_diagram",
+           "write_simulation", "event_log_csv", "describe_outcomes"]
 
 
-def write_phase_diagram(params: Parameters, scenario: str, out: Path, stem: str) -> list[Path]:
-    """Compute the phase diagram (Fig. 9a/9b) and write ``stem.nc`` and ``stem.png``."""
+class FileStatus(enum.Enum):
+    """What happened to a result file."""
+
+    WRITTEN = "written"
+    KEPT = "kept"  #: the file on disk already agreed with the new content and was left untouched
+
+
+class FileOutcome(NamedTuple):
+    """A result file and what happened to it."""
+
+    path: Path
+    status: FileStatus
+
+
+def write_dataset(dataset: xr.Dataset, path: str | os.PathLike,
+                  keep_agreeing: bool = False) -> tuple[xr.Dataset, FileOutcome]:
+    """Write ``dataset`` as netCDF, or keep the file on disk if it agrees (``keep_agreeing``).
+
+    Returns the dataset now in the file (the one on disk if kept) and the outcome.
+    """
+    target = Path(path)
+    if keep_agreeing and target.exists():
+        try:
+            existing = open_result(target)
+        except ValueError:  # unreadable or foreign: replaced
+            existing = None
+        if existing is not None and not result_differences(dataset, existing):
+            return existing, FileOutcome(target, FileStatus.KEPT)
+    return dataset, FileOutcome(write_netcdf(dataset, target), FileStatus.WRITTEN)
+
+
+def _write_if_new(path: Path, data: bytes, same: Callable[[bytes, bytes], bool], keep_agreeing: bool) -> FileOutcome:
+    if keep_agreeing and path.exists() and same(path.read_bytes(), data):
+        return FileOutcome(path, FileStatus.KEPT)
+    return FileOutcome(atomic_write(path, lambda temporary: Path(temporary).write_bytes(data),
+                                    suffix=path.suffix), FileStatus.WRITTEN)
+
+
+def _same_pixels(old: bytes, new: bytes) -> bool:
+    from matplotlib import image
+
+    try:
+        before = image.imread(io.BytesIO(old), format="png")
+    except (OSError, ValueError, SyntaxError):  # not a PNG we can read: replaced
+        return False
+    after = image.imread(io.BytesIO(new), format="png")
+    return before.shape == after.shape and bool(np.array_equal(before, after))
+
+
+def write_figure(figure, path: str | os.PathLike, keep_agreeing: bool = False) -> FileOutcome:
+    """Write a figure as PNG (:func:`mdr_events.plotting.figure_png`); kept if its pixels are unchanged."""
+    from .plotting import figure_png
+
+    return _write_if_new(Path(path), figure_png(figure), _same_pixels, keep_agreeing)
+
+
+def write_text(text: str, path: str | os.PathLike, keep_agreeing: bool = False) -> FileOutcome:
+    """Write a text file (UTF-8); kept if it holds the same text."""
+    return _write_if_new(Path(path), text.encode(), lambda old, new: old == new, keep_agreeing)
+
+
+def write_phase_diagram(params: Parameters, scenario: str, out: str | os.PathLike, stem: str,
+                        keep_agreeing: bool = False, attrs: dict[str, str] | None = None) -> list[FileOutcome]:
+    """Compute the phase diagram (Fig. 9a/9b) and write ``stem.nc`` (with the extra ``attrs``) and
+    ``stem.png``."""
     from .phase import phase_diagram
-    from .plotting import plot_phase_diagram, save_figure
+    from .plotting import plot_phase_diagram
 
     dataset = phase_diagram(params, scenario=scenario)
-    written = [write_netcdf(dataset, Path(out) / f"{stem}.nc")]
-    axes = plot_phase_diagram(dataset)
-    written.append(save_figure(axes.figure, Path(out) / f"{stem}.png"))
-    return written
+    dataset.attrs.update(attrs or {})
+    dataset, outcome = write_dataset(dataset, Path(out) / f"{stem}.nc", keep_agreeing)
+    figure = plot_phase_diagram(dataset).figure
+    return [outcome, write_figure(figure, Path(out) / f"{stem}.png", keep_agreeing)]
 
 
-def write_simulation(dataset: xr.Dataset, out: Path, stem: str, overlay: xr.Dataset | None = None) -> list[Path]:
-    """Write a simulation dataset as ``stem.nc`` and its figure (with ``overlay``) as ``stem.png``."""
-    from .plotting import plot_simulation, save_figure
+def write_simulation(dataset: xr.Dataset, out: str | os.PathLike, stem: str, overlay: xr.Dataset | None = None,
+                     keep_agreeing: bool = False) -> list[FileOutcome]:
+    """Write a simulation as ``stem.nc``, its figure (with ``overlay``) as ``stem.png`` and, for the
+    continuum method, its event log as ``stem_events.csv``."""
+    from .plotting import plot_simulation
 
-    written = [write_netcdf(dataset, Path(out) / f"{stem}.nc")]
-    written.append(save_figure(plot_simulation(dataset, overlay=overlay), Path(out) / f"{stem}.png"))
-    return written
+    dataset, outcome = write_dataset(dataset, Path(out) / f"{stem}.nc", keep_agreeing)
+    outcomes = [outcome, write_figure(plot_simulation(dataset, overlay=overlay), Path(out) / f"{stem}.png",
+                                      keep_agreeing)]
+    if "event_kind" in dataset:
+        outcomes.append(write_text(event_log_csv(dataset), Path(out) / f"{stem}_events.csv", keep_agreeing))
+    return outcomes
 
 
-def write_event_log(dataset: xr.Dataset, path: Path) -> Path:
-    """The continuum event log as CSV (one row per event per angle), written atomically."""
+def event_log_csv(dataset: xr.Dataset) -> str:
+    """The continuum event log as CSV text (one row per event per angle, full precision)."""
     lines = ["alpha_degree,event,time_s,kind,depth_m,radius_m,x_m"]
     for alpha in dataset["alpha"].values:
         case = dataset.sel(alpha=alpha)
@@ -48,5 +129,15 @@ def write_event_log(dataset: xr.Dataset, path: Path) -> Path:
                 continue
             values = [float(case[name].values[number]) for name in ("event_time", "event_depth", "event_radius", "event_x")]
             lines.append(f"{alpha:.17g},{number},{values[0]:.17g},{kind},{values[1]:.17g},{values[2]:.17g},{values[3]:.17g}")
-    text = "\n".join(lines) + "\n"
-    return atomic_write(path, lambda temporary: Path(temporary).write_text(text), suffix=".csv")
+    return "\n".join(lines) + "\n"
+
+
+def describe_outcomes(outcomes: list[FileOutcome]) -> str:
+    """One line for a progress message: which files were written and which were kept."""
+    parts = []
+    for status, words in ((FileStatus.WRITTEN, "written"),
+                          (FileStatus.KEPT, f"agree with a fresh computation (within {RESULT_RTOL:g}), not rewritten")):
+        names = [outcome.path.name for outcome in outcomes if outcome.status is status]
+        if names:
+            parts.append(f"{words}: {', '.join(names)}")
+    return "; ".join(parts)

@@ -13,7 +13,7 @@ import numbers
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-__all__ = ["Parameters", "PARAMETER_UNITS", "PARAMETER_LONG_NAMES", "PRESETS"]
+__all__ = ["Parameters", "PARAMETER_UNITS", "PARAMETER_LONG_NAMES", "PRESETS", "from_preset"]
 
 #: SI unit of every field, used for dataset attributes and the CLI help.
 PARAMETER_UNITS: dict[str, str] = {
@@ -184,6 +184,17 @@ class Parameters:
     #: Fields of :meth:`paper` that are inferred rather than quoted.
     INFERRED_FIELDS = ("E", "nu", "v")
 
+    def preset_name(self) -> str | None:
+        """The name in :data:`PRESETS` of the paper's parameter set these are exactly, else ``None``.
+
+        Figures and datasets use it to number themselves as the paper does (Fig. 8, 9a, ...) and to
+        say that ``E``, ``ν`` and ``v`` of a preset are inferred, not quoted.
+        """
+        for name, radius in PRESETS.items():
+            if self == Parameters.paper(R=radius):
+                return name
+        return None
+
     def replace(self, **changes: float) -> "Parameters":
         """A copy with some fields changed (validated again)."""
         unknown = set(changes) - {f.name for f in dataclasses.fields(self)}
@@ -216,3 +227,18 @@ class Parameters:
         if missing:
             raise ValueError(f"attrs lack the parameter attribute(s) {missing}")
         return cls(**{n: float(attrs[f"param_{n}"]) for n in names})
+
+
+def from_preset(preset: str, **overrides: float) -> tuple[Parameters, dict[str, str]]:
+    """A preset of the paper (:data:`PRESETS`) with some fields replaced, and attributes saying so.
+
+    Returns the parameters and netCDF-safe attributes for the results computed with them:
+    ``parameters_preset`` (the preset's name) and ``parameters_from_preset`` (the fields whose values
+    came from the preset rather than from the user, comma-separated; "" if the user gave all).
+    """
+    if preset not in PRESETS:
+        raise ValueError(f"preset={preset!r} is not allowed; allowed: {', '.join(map(repr, PRESETS))}")
+    params = Parameters.paper(R=PRESETS[preset])
+    params = params.replace(**overrides) if overrides else params
+    taken = [name for name in PARAMETER_UNITS if name not in overrides]
+    return params, {"parameters_preset": preset, "parameters_from_preset": ", ".join(taken)}

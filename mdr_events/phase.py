@@ -83,5 +83,5 @@ def phase_diagram(
             {"units": "degree", "long_name": f"critical angle, {'adhesive' if adhesive else 'non-adhesive'} ({meaning})"},
         )
     dataset = xr.Dataset(variables, coords=coords)
-    return stamp(dataset, params, scenario=scenario, figure="9a" if scenario == "A" else "9b",
-                 content="phase diagram of slip onset")
+    figure = {} if params.preset_name() is None else {"figure": "9a" if scenario == "A" else "9b"}
+    return stamp(dataset, params, scenario=scenario, content="phase diagram of slip onset", **figure)

@@ -1,22 +1,90 @@
-"""Figures drawn from the datasets (never recomputed here): Fig. 8, 9a, 9b, 10."""
+"""Figures drawn from the datasets (never recomputed here): Fig. 8, 9a, 9b, 10.
+
+A figure carries the paper's number (Fig. 8, 9a, 9b, 10) only when its
+dataset was computed with one of the paper's parameter sets
+(:meth:`mdr_events.parameters.Parameters.preset_name`); otherwise its title
+says what it shows. This module leaves the matplotlib backend alone (the CLI
+selects Agg itself).
+"""
 
 from __future__ import annotations
 
+import io
 import os
 from pathlib import Path
 
-import matplotlib
+import matplotlib.pyplot as plt
+import numpy as np
+import xarray as xr
+from matplotlib.layout_engine import ConstrainedLayoutEngine
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import xarray as xr  # noqa: E402
+from .datasets import atomic_write
+from .parameters import Parameters
 
-from .datasets import atomic_write  # noqa: E402
-
-__all__ = ["plot_phase_diagram", "plot_simulation", "save_figure"]
+__all__ = ["figure_png", "plot_phase_diagram", "plot_simulation", "save_figure"]
 
 _MM = 1e3
+
+#: Figure numbers of the paper, used only for datasets of a paper preset.
+PHASE_DIAGRAM_FIGURES = {"A": "Fig. 9a", "B": "Fig. 9b"}
+SIMULATION_FIGURES = {"A": "Fig. 8", "B": "Fig. 10"}
+
+#: Symbols of the parameter fields, for the footnote on inferred values.
+PARAMETER_SYMBOLS = {"E": "E", "nu": "ν", "R": "R", "tau0": "τ0", "dgamma0": "Δγ0", "dgamma1": "Δγ1",
+                     "d_max": "d_max", "v": "v"}
+INFERRED_FOOTNOTE = (f"{', '.join(PARAMETER_SYMBOLS[name] for name in Parameters.INFERRED_FIELDS)} "
+                     "inferred (not stated in section 4)")
+#: Footnote position (figure fraction, bottom left) and size; below a constrained layout a strip
+#: this high (points) is kept free for it.
+FOOTNOTE_POSITION = (0.01, 0.005)
+FOOTNOTE_FONTSIZE = 7
+FOOTNOTE_STRIP_POINTS = 2.0 * FOOTNOTE_FONTSIZE
+POINTS_PER_INCH = 72.0
+
+#: The simulation legend below the panels: font size (points) and gap to the figure's edge (in font sizes).
+LEGEND_FONTSIZE = 8
+LEGEND_BORDER_PAD = 0.5
+
+#: The overlay (e.g. the discrete model) in a colour that stands out against viridis, with
+#: open markers thinned to about this many per curve.
+OVERLAY_STYLE = dict(color="crimson", lw=0.8, ls=(0, (4, 3)), marker="o", ms=4.5, mfc="none", mew=1.0, zorder=3)
+OVERLAY_MARKERS_PER_CURVE = 30
+
+
+def _preset_name(dataset: xr.Dataset) -> str | None:
+    """The paper preset the dataset was computed with (``"paper-R30"``, ...), else ``None``."""
+    return Parameters.from_attrs(dataset.attrs).preset_name()
+
+
+def _add_inferred_footnote(figure, dataset: xr.Dataset) -> float:
+    """Say on ``figure`` that the preset's inferred fields are not quoted in the paper (once).
+
+    A constrained layout is moved up to leave the footnote a strip of its own. Returns the
+    height of that strip in points (0 when the dataset is not a paper preset).
+    """
+    if _preset_name(dataset) is None:
+        return 0.0
+    if not any(text.get_text() == INFERRED_FOOTNOTE for text in figure.texts):
+        layout = figure.get_layout_engine()
+        if isinstance(layout, ConstrainedLayoutEngine):
+            strip = FOOTNOTE_STRIP_POINTS / POINTS_PER_INCH / figure.get_figheight()
+            layout.set(rect=(0.0, strip, 1.0, 1.0 - strip))
+        figure.text(*FOOTNOTE_POSITION, INFERRED_FOOTNOTE, ha="left", va="bottom",
+                    fontsize=FOOTNOTE_FONTSIZE, color="0.35")
+    return FOOTNOTE_STRIP_POINTS
+
+
+def _numbered(title: str, dataset: xr.Dataset, figure_numbers: dict[str, str]) -> str:
+    """``title`` prefixed by the paper's figure number for a preset's scenario A or B, else capitalised."""
+    number = figure_numbers.get(dataset.attrs.get("scenario"))
+    if number is not None and _preset_name(dataset) is not None:
+        return f"{number}: {title}"
+    return title[:1].upper() + title[1:]
+
+
+def _marker_step(values: np.ndarray) -> int:
+    """Every how many points a marker goes so that a curve shows about :data:`OVERLAY_MARKERS_PER_CURVE`."""
+    return max(1, int(np.count_nonzero(np.isfinite(values))) // OVERLAY_MARKERS_PER_CURVE)
 
 
 def _label(ax, alpha, depth_mm, text):
@@ -25,12 +93,27 @@ def _label(ax, alpha, depth_mm, text):
 
 
 def plot_phase_diagram(dataset: xr.Dataset, ax=None):
-    """Draw Fig. 9a (scenario A) or 9b (scenario B) from :func:`phase_diagram` output.
+    """Draw the phase diagram of scenario A (Fig. 9a) or B (Fig. 9b) from :func:`phase_diagram` output.
 
     Solid: non-adhesive curves (17)/(20); dashed: adhesive curves (18)/(21);
-    the ``d_max`` line, the critical angles and the regions
-    ("sliding-ind", "no-sliding-ind", "sliding-det", "no-sliding-det").
-    Axes in degrees and millimetres.
+    the ``d_max`` line, the critical angles (scenario B: the adhesive one,
+    standing on the jump-off depth) and the regions ("sliding-ind",
+    "no-sliding-ind", "sliding-det", "no-sliding-det"). Axes in degrees and
+    millimetres.
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        Output of :func:`mdr_events.phase_diagram`.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; default a new figure.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        Titled "Fig. 9a: ..." / "Fig. 9b: ..." only for a paper preset
+        (whose figure then says which parameters are inferred), else
+        "Phase diagram of slip onset, scenario ..., R = ... mm".
     """
     if ax is None:
         _, ax = plt.subplots(figsize=(6.4, 4.8), constrained_layout=True)
@@ -56,7 +139,6 @@ def plot_phase_diagram(dataset: xr.Dataset, ax=None):
         _label(ax, 9.0, 0.85 * top, "sliding-ind")
         _label(ax, 65.0, 0.25 * top, "no-sliding-ind")
         ax.set_ylim(0, top)
-        title = f"Fig. 9a: scenario A, R = {R_mm:g} mm"
     else:
         branches = list(dataset["branch"].values)
         for key, eq in (("hertz", "(20)"), ("jkr", "(21)")):
@@ -71,25 +153,53 @@ def plot_phase_diagram(dataset: xr.Dataset, ax=None):
         _label(ax, 10.0, 0.9 * top, "sliding-ind")
         _label(ax, 62.0, 0.55 * d_max, "no-sliding-det")
         _label(ax, 8.0, 0.35 * d_max, "sliding-det")
+        critical_angle = float(dataset["critical_angle_jkr"])  # the Hertz one is 90°: nothing to mark
+        ax.plot([critical_angle, critical_angle], [jump_off, d_max], color=style["jkr"]["color"], ls=":", lw=1)
+        ax.plot(critical_angle, jump_off, "o", color=style["jkr"]["color"], ms=4)
+        annotation_position = (75.0, 0.5 * d_max)  # free space right of "no-sliding-det"
+        ax.annotate(f"$\\alpha_c^{{JKR}}$ = {critical_angle:.2f}°", xy=(critical_angle, jump_off),
+                    xytext=annotation_position, arrowprops={"arrowstyle": "->", "color": "0.4"}, fontsize=9)
         ax.set_ylim(min(2.0 * jump_off, -0.1 * d_max), top)
-        title = f"Fig. 9b: scenario B, R = {R_mm:g} mm"
     ax.axhline(d_max, color="tab:blue", lw=1.0, ls="--", label="$d_{max}$")
     ax.set_xlim(0, 90)
     ax.set_xticks(np.arange(0, 91, 10))
     ax.set_xlabel("path angle α (°)")
     ax.set_ylabel("indentation depth d (mm)")
-    ax.set_title(title)
+    ax.set_title(_numbered(f"phase diagram of slip onset, scenario {scenario}, R = {R_mm:g} mm", dataset,
+                           PHASE_DIAGRAM_FIGURES))
     ax.legend(loc="upper right" if scenario == "A" else "center right", fontsize=8)
+    _add_inferred_footnote(ax.figure, dataset)
     return ax
 
 
-def save_figure(figure, path: str | os.PathLike) -> Path:
-    """Save a figure as PNG atomically and reproducibly (no time stamp), then close it."""
+#: Resolution of the PNG files (dots per inch).
+PNG_DPI = 120
+
+
+def figure_png(figure) -> bytes:
+    """The figure as PNG bytes, reproducibly (no software or time stamp), then close it.
+
+    Parameters
+    ----------
+    figure : matplotlib.figure.Figure
+
+    Returns
+    -------
+    bytes
+        The same bytes for the same figure on the same machine.
+    """
+    buffer = io.BytesIO()
     try:
-        return atomic_write(path, lambda temporary: figure.savefig(
-            temporary, format="png", dpi=120, metadata={"Software": None}), suffix=".png")
+        figure.savefig(buffer, format="png", dpi=PNG_DPI, metadata={"Software": None})
     finally:
         plt.close(figure)
+    return buffer.getvalue()
+
+
+def save_figure(figure, path: str | os.PathLike) -> Path:
+    """Save a figure as PNG (:func:`figure_png`) atomically, then close it."""
+    data = figure_png(figure)
+    return atomic_write(path, lambda temporary: Path(temporary).write_bytes(data), suffix=".png")
 
 
 #: Panels of Fig. 8 / Fig. 10: variable, scale to display units, axis label.
@@ -103,10 +213,25 @@ SIMULATION_PANELS = (
 
 
 def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, title: str | None = None):
-    """Fig. 8 (scenario A) or Fig. 10 (scenario B): panels a–e against time, one line per angle.
+    """Panels a–e of a simulation against time, one line per angle (Fig. 8 for A, Fig. 10 for B).
 
-    ``overlay`` (e.g. the discrete model for one angle) is drawn as thin dashed red lines.
-    Returns the figure.
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        Output of :func:`mdr_events.simulate`.
+    overlay : xarray.Dataset, optional
+        Another simulation (e.g. the discrete model for one angle), drawn on
+        top in crimson, dashed, with open markers (about
+        :data:`OVERLAY_MARKERS_PER_CURVE` per curve) and its own legend entry.
+    title : str, optional
+        Default: "Fig. 8: ..." / "Fig. 10: ..." only for scenario A / B of a
+        paper preset, else "Simulation, scenario ..." (or "custom path"),
+        with the radius and the method.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        For a paper preset, with a footnote naming the inferred parameters.
     """
     figure, axes = plt.subplots(5, 1, figsize=(7.0, 12.0), sharex=True, constrained_layout=True)
     colours = plt.cm.viridis(np.linspace(0.0, 0.9, dataset.sizes["alpha"]))
@@ -121,18 +246,21 @@ def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, titl
                 text = f"{overlay.attrs.get('method', 'overlay')}, α = {alpha:g}°"
                 if "dx" in overlay.attrs:
                     text += f", Δx = {overlay.attrs['dx'] * 1e6:g} µm"
-                ax.plot(overlay["time"].values, overlay[name].sel(alpha=alpha).values * scale,
-                        color="tab:red", lw=0.8, ls=(0, (4, 3)), label=text)
+                values = overlay[name].sel(alpha=alpha).values * scale
+                ax.plot(overlay["time"].values, values, markevery=_marker_step(values), label=text,
+                        **OVERLAY_STYLE)
         ax.set_ylabel(label)
         ax.text(0.01, 0.92, f"({letter})", transform=ax.transAxes, fontsize=10, va="top")
         ax.grid(alpha=0.3)
+    footnote_strip = _add_inferred_footnote(figure, dataset)
     handles, labels = axes[0].get_legend_handles_labels()
-    figure.legend(handles, labels, loc="outside lower center", ncol=5, fontsize=8)
+    figure.legend(handles, labels, loc="outside lower center", ncol=5, fontsize=LEGEND_FONTSIZE,
+                  borderaxespad=LEGEND_BORDER_PAD + footnote_strip / LEGEND_FONTSIZE)  # above the footnote
     axes[-1].set_xlabel("time t (s)")
     if title is None:
         scenario = dataset.attrs.get("scenario", "")
-        figure_number = {"A": "Fig. 8", "B": "Fig. 10"}.get(scenario, "Simulation")
-        title = (f"{figure_number}: scenario {scenario}, R = {dataset.attrs['param_R'] * 1e3:g} mm, "
-                 f"{dataset.attrs.get('method', '')}")
+        path = "custom path" if scenario == "custom" else f"scenario {scenario}"
+        title = _numbered(f"simulation, {path}, R = {dataset.attrs['param_R'] * _MM:g} mm, "
+                          f"{dataset.attrs.get('method', '')}", dataset, SIMULATION_FIGURES)
     figure.suptitle(title)
     return figure

@@ -9,20 +9,27 @@ angle; the report puts the section's stated numbers beside ours.
 
 from __future__ import annotations
 
+import importlib.metadata
 import math
+import platform
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable
+from typing import TYPE_CHECKING, Callable
 
 import numpy as np
 import xarray as xr
 
 from . import analytic
 from ._version import __version__
-from .datasets import DOI, atomic_write, write_netcdf
+from .datasets import DOI, RESULT_RTOL
 from .parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 
-__all__ = ["reproduce", "report_text", "compute", "Reproduction", "PAPER_CRITICAL_ANGLES"]
+if TYPE_CHECKING:
+    from .output import FileOutcome
+
+__all__ = ["reproduce", "report_text", "compute", "Reproduction", "PAPER_CRITICAL_ANGLES", "software_versions",
+           "recorded_versions", "RECORDED_PACKAGES"]
 
 #: Critical angles stated in section 4 (R = 30 mm), degrees.
 PAPER_CRITICAL_ANGLES = {"hertz": 23.59, "jkr": 22.87}
@@ -43,8 +50,16 @@ CONVERGENCE_SPACINGS = (16e-6, 8e-6, 4e-6, 2e-6, 1e-6)
 CONVERGENCE_ANGLES = (10.0, 30.0, 60.0)
 HISTORY_SPACINGS = (8e-6, 4e-6, 2e-6, 1e-6)
 HISTORY_ANGLE = 30.0
-#: Samples of the continuum run from which |F_N,min| is read.
-STRENGTH_SAMPLES = 200_001
+#: Extremes of the continuum runs the report quotes (exact, from the solution: :func:`continuum.extremum`):
+#: name -> (quantity, largest).
+EXTREMES = {"normal_force_max": ("normal_force", True), "normal_force_min": ("normal_force", False),
+            "tangential_force_max": ("tangential_force", True), "contact_area_max": ("contact_area", True),
+            "mean_pressure_max": ("mean_pressure", True), "mean_shear_stress_max": ("mean_shear_stress", True)}
+#: Relative differences below this are round-off, whose digits differ between machines: the report prints
+#: "< 1e-12" for them, so that it stays the same text everywhere.
+REPORT_ROUNDOFF = 1e-12
+#: Packages whose versions ``results/README.md`` records (the lock file pins them, with the rest).
+RECORDED_PACKAGES = ("numpy", "scipy", "sympy", "matplotlib", "xarray", "pandas")
 
 #: Panels of Fig. 8 / 10 (see :data:`mdr_events.plotting.SIMULATION_PANELS`).
 PANEL = {"normal_force": "a", "tangential_force": "b", "contact_area": "c", "mean_pressure": "d",
@@ -58,7 +73,7 @@ class Reproduction:
     continuum: dict = field(default_factory=dict)
     discrete: dict = field(default_factory=dict)
     cross_checks: dict = field(default_factory=dict)
-    adhesive_strength: dict = field(default_factory=dict)
+    extremes: dict = field(default_factory=dict)
     discrete_errors: dict = field(default_factory=dict)
     history: dict = field(default_factory=dict)
 
@@ -76,9 +91,10 @@ def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
 
     ``progress`` hears one message per step (:data:`COMPUTE_STEPS` of them).
     """
+    from .continuum import extremum, solve_path
     from .convergence import discrete_errors, discrete_minus_continuum
     from .crosscheck import cross_check
-    from .simulate import simulate
+    from .simulate import scenario_paths, simulate
 
     say = progress or (lambda message: None)
     data = Reproduction()
@@ -90,11 +106,10 @@ def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
         data.continuum[(label, scenario)] = simulate(params, scenario, alpha=FIGURE_ANGLES, method="continuum")
         data.discrete[(label, scenario)] = simulate(params, scenario, alpha=[OVERLAY_ANGLE], dx=FIGURE_DX,
                                                     n_steps=FIGURE_STEPS)
-        # |F_N,min| of the continuum on a grid fine enough that sampling does not show (1e-9)
-        end = float(data.continuum[(label, scenario)]["time"].values[-1])
-        dense = simulate(params, scenario, alpha=FIGURE_ANGLES, method="continuum",
-                         t=np.linspace(0.0, end, STRENGTH_SAMPLES))
-        data.adhesive_strength[(label, scenario)] = -dense["normal_force"].min("time").values
+        solutions = [solve_path(params, path) for path in scenario_paths(params, scenario, FIGURE_ANGLES)[0]]
+        data.extremes[(label, scenario)] = {
+            name: np.array([extremum(solution, quantity, largest)[1] for solution in solutions])
+            for name, (quantity, largest) in EXTREMES.items()}
     for label, radius, scenario in jobs:
         say(f"slip-onset cross-check, scenario {scenario}, R = {radius * 1e3:g} mm "
             f"(closed form, continuum, discrete at {len(FIGURE_ANGLES)} angles)")
@@ -213,8 +228,9 @@ def _differences_section(data: Reproduction) -> list[str]:
         "### (1) The adhesive strength |F_N,min| is the same for every angle (panel a)",
         "",
         "The paper: normal and tangential contact are independent, so |F_N,min| does not depend on α;",
-        f"JKR gives |F_N,min| = (3/2) π Δγ1 R. Ours (continuum, minimum over {STRENGTH_SAMPLES} samples of each",
-        f"run; the discrete model at {OVERLAY_ANGLE:g}°, Δx = {FIGURE_DX * 1e6:g} µm, for comparison):",
+        "JKR gives |F_N,min| = (3/2) π Δγ1 R. Ours (continuum, the exact minimum of each run's solution,",
+        f"`mdr_events.continuum.extremum`; the discrete model at {OVERLAY_ANGLE:g}°, Δx = {FIGURE_DX * 1e6:g} µm, "
+        "for comparison):",
         "",
         "| R | scenario | (3/2)πΔγ1R | continuum, min over angles | max over angles | largest relative difference "
         f"| discrete at {OVERLAY_ANGLE:g}° |",
@@ -223,11 +239,12 @@ def _differences_section(data: Reproduction) -> list[str]:
     for (label, scenario), ds in data.continuum.items():
         params = Parameters.from_attrs(ds.attrs)
         jkr = -analytic.pull_off_force(params, params.dgamma1)
-        values = data.adhesive_strength[(label, scenario)]
+        values = -data.extremes[(label, scenario)]["normal_force_min"]
         worst = np.max(np.abs(values - jkr)) / jkr
+        worst_text = f"< {REPORT_ROUNDOFF:g}" if worst < REPORT_ROUNDOFF else f"{worst:.1e}"
         discrete = -float(data.discrete[(label, scenario)]["normal_force"].min())
         lines.append(f"| {params.R * 1e3:g} mm | {scenario} | {jkr * 1e3:.4f} mN | {values.min() * 1e3:.4f} mN "
-                     f"| {values.max() * 1e3:.4f} mN | {worst:.1e} | {discrete * 1e3:.4f} mN |")
+                     f"| {values.max() * 1e3:.4f} mN | {worst_text} | {discrete * 1e3:.4f} mN |")
     ds = data.continuum[("R30", "A")]
     lines += [
         "",
@@ -252,17 +269,17 @@ def _differences_section(data: Reproduction) -> list[str]:
         "",
         "The paper: the experiment used a layer of h = 5 mm, the model is a half-space (h → ∞), whose",
         "contact is softer. The experimental values are in the paper's Fig. 5, not in the section text, so",
-        "only ours are listed (scenario A, R = 30 mm, continuum):",
+        "only ours are listed (scenario A, R = 30 mm, continuum, exact maxima of each run's solution):",
         "",
         "| α | F_N,max | F_x,max | A_max | <p>_max |",
         "|---|---|---|---|---|",
     ]
-    for alpha in ds["alpha"].values:
-        case = ds.sel(alpha=alpha)
-        lines.append(f"| {alpha:g}° | {float(case['normal_force'].max()) * 1e3:.3f} mN "
-                     f"| {float(case['tangential_force'].max()) * 1e3:.3f} mN "
-                     f"| {float(case['contact_area'].max()) * 1e6:.3f} mm² "
-                     f"| {float(case['mean_pressure'].max()) / 1e3:.3f} kPa |")
+    extremes = data.extremes[("R30", "A")]
+    for i, alpha in enumerate(ds["alpha"].values):
+        lines.append(f"| {alpha:g}° | {extremes['normal_force_max'][i] * 1e3:.3f} mN "
+                     f"| {extremes['tangential_force_max'][i] * 1e3:.3f} mN "
+                     f"| {extremes['contact_area_max'][i] * 1e6:.3f} mm² "
+                     f"| {extremes['mean_pressure_max'][i] / 1e3:.3f} kPa |")
     lines += [
         "",
         f"### (3) The τ0 = {PAPER_TAU0 / 1e3:g} kPa plateau in pull-off (panel e)",
@@ -272,7 +289,7 @@ def _differences_section(data: Reproduction) -> list[str]:
         "contact falls below the indenter's travel x1 = d_max/tan α, and that happens before the jump-off",
         "only if ū(a_jump-off) < x1. **Where it does not, τ stays below τ0**: with the inferred E, ν and v",
         "this is the case at 70° and 80° for R = 30 mm and from 50° on for R = 100 mm. Scenario A,",
-        "largest τ in pull-off per angle (continuum; full slip from the event log):",
+        "largest τ per angle (continuum, exact maximum of each run's solution; full slip from the event log):",
         "",
         "| R | α | x1 | ū(a_jump-off) | τ_max | reaches τ0 | full slip at |",
         "|---|---|---|---|---|---|---|",
@@ -282,9 +299,9 @@ def _differences_section(data: Reproduction) -> list[str]:
             continue
         params = Parameters.from_attrs(ds_a.attrs)
         cap = float(analytic.critical_shift(analytic.jump_off(params, params.dgamma1)["contact_radius"], params))
-        for alpha in ds_a["alpha"].values:
+        for i, alpha in enumerate(ds_a["alpha"].values):
             x1 = params.d_max / math.tan(math.radians(alpha))
-            tau = float(ds_a["mean_shear_stress"].sel(alpha=alpha).max())
+            tau = float(data.extremes[(label, scenario)]["mean_shear_stress_max"][i])
             full = _event_times(ds_a, alpha, "full_slip")
             reached = math.isclose(tau, params.tau0, rel_tol=1e-9)
             lines.append(f"| {params.R * 1e3:g} mm | {alpha:g}° | {x1 * 1e6:.1f} µm | {cap * 1e6:.1f} µm "
@@ -393,8 +410,43 @@ def _parameter_section() -> list[str]:
     return lines
 
 
-def report_text(data: Reproduction | None = None) -> str:
-    """The text of ``results/README.md`` (everything computed afresh unless ``data`` is given)."""
+def software_versions() -> dict[str, str]:
+    """Python's version and those of :data:`RECORDED_PACKAGES`, as installed now."""
+    versions = {"Python": platform.python_version()}
+    versions.update({name: importlib.metadata.version(name) for name in RECORDED_PACKAGES})
+    return versions
+
+
+_COMPUTED_WITH = "Computed with "
+
+
+def _software_section(versions: dict[str, str]) -> list[str]:
+    return [
+        "## Software",
+        "",
+        _COMPUTED_WITH + ", ".join(f"{name} {version}" for name, version in versions.items()) + ".",
+        "",
+        "`make` installs these versions from the lock file `constraints.txt`. With other versions (or",
+        f"another CPU) the datasets agree within {RESULT_RTOL:g} of each variable's largest magnitude",
+        "(`mdr_events.datasets.result_differences`) and this report, which rounds, exactly;",
+        "`mdr-events reproduce` then keeps the files as they are.",
+        "",
+    ]
+
+
+def recorded_versions(text: str) -> dict[str, str]:
+    """The versions a report's software section records (``{}`` if it has none)."""
+    match = re.search(f"^{_COMPUTED_WITH}(.*)\\.$", text, flags=re.MULTILINE)
+    if match is None:
+        return {}
+    return dict(item.rsplit(" ", 1) for item in match.group(1).split(", "))
+
+
+def report_text(data: Reproduction | None = None, versions: dict[str, str] | None = None) -> str:
+    """The text of ``results/README.md`` (everything computed afresh unless ``data`` is given).
+
+    ``versions``: the software versions to record (default :func:`software_versions`).
+    """
     data = compute() if data is None else data
     lines = [
         "# Reproduction of section 4 of Lyashenko, Popov & Borysiuk (2023)",
@@ -408,33 +460,49 @@ def report_text(data: Reproduction | None = None) -> str:
     lines += _differences_section(data)
     lines += _convergence_section(data)
     lines += _parameter_section()
+    lines += _software_section(software_versions() if versions is None else versions)
     return "\n".join(lines)
 
 
-def reproduce(out: Path, progress: Callable[[str], None] = print) -> list[Path]:
-    """Write every figure, dataset and the report into ``out``; ``progress`` hears each step."""
-    from .output import write_event_log, write_phase_diagram, write_simulation
+def reproduce(out: Path, progress: Callable[[str], None] = print, keep_agreeing: bool = True) -> list[FileOutcome]:
+    """Write every figure, dataset and the report into ``out``; ``progress`` hears each step.
+
+    With ``keep_agreeing`` (the default) a file that agrees with the fresh computation is not
+    rewritten (:mod:`mdr_events.output`), and the report keeps the software versions it records when
+    every other file was kept and its numbers are unchanged, so that ``git status`` stays clean on a
+    machine whose rounding differs.
+    """
+    from .output import FileStatus, describe_outcomes, write_dataset, write_phase_diagram, write_simulation, write_text
 
     out = Path(out)
-    written: list[Path] = []
+    outcomes: list[FileOutcome] = []
     total = len(_jobs()) + COMPUTE_STEPS + 1
     count = iter(range(1, total + 1))
 
     def step(message: str) -> None:
         progress(f"[{next(count)}/{total}] {message}")
 
+    def done(new: list[FileOutcome]) -> None:
+        outcomes.extend(new)
+        progress(f"    {describe_outcomes(new)}")
+
     for label, radius, scenario in _jobs():
         figure = "9a" if scenario == "A" else "9b"
         step(f"Fig. {figure}, R = {radius * 1e3:g} mm (phase diagram)")
-        written += write_phase_diagram(Parameters.paper(R=radius), scenario, out, f"phase_diagram_{scenario}_{label}")
+        done(write_phase_diagram(Parameters.paper(R=radius), scenario, out, f"phase_diagram_{scenario}_{label}",
+                                 keep_agreeing=keep_agreeing))
     data = compute(step)
     step("writing Fig. 8 and 10 (.nc, .png, events .csv) and README.md")
     for (label, scenario), dataset in data.continuum.items():
         stem = f"fig{FIGURE_NUMBERS[scenario]}_{label}"
-        overlay = data.discrete[(label, scenario)]
-        written += write_simulation(dataset, out, stem, overlay=overlay)
-        written.append(write_event_log(dataset, out / f"{stem}_events.csv"))
-        written.append(write_netcdf(overlay, out / f"{stem}_discrete.nc"))
+        overlay, outcome = write_dataset(data.discrete[(label, scenario)], out / f"{stem}_discrete.nc", keep_agreeing)
+        done([outcome] + write_simulation(dataset, out, stem, overlay=overlay, keep_agreeing=keep_agreeing))
     text = report_text(data)
-    written.append(atomic_write(out / "README.md", lambda temporary: Path(temporary).write_text(text)))
-    return written
+    readme = out / "README.md"
+    if keep_agreeing and readme.exists() and all(o.status is FileStatus.KEPT for o in outcomes):
+        existing = readme.read_text()
+        recorded = recorded_versions(existing)
+        if recorded and report_text(data, versions=recorded) == existing:
+            text = existing  # the files on disk were written with the versions it records
+    done([write_text(text, readme, keep_agreeing)])
+    return outcomes

@@ -2,9 +2,11 @@
 
 A study names its parameters, what to compute and where to write it::
 
-    [parameters]                 # optional: a preset of the paper, then overrides (SI units)
+    [parameters]                 # a preset of the paper, then overrides (SI units) ...
     preset = "paper-R30"         # or "paper-R100"
     tau0 = 30e3
+                                 # ... or, without preset, all eight: E, nu, R, tau0,
+                                 # dgamma0, dgamma1, d_max, v (an error names the missing ones)
 
     [simulation]                 # optional (a study needs a simulation, a phase diagram or both)
     scenario = "A"               # "A", "B" or "B+"; or give a [path] table instead
@@ -27,6 +29,10 @@ The file is read with :mod:`tomllib`. Unknown tables or keys, values of the
 wrong type and missing required keys are errors that name the table, the
 key, the value and what is allowed; the values themselves are then checked
 by the functions they go to (:class:`Parameters`, :func:`simulate`, ...).
+
+Without a ``[parameters]`` table the study uses the preset ``paper-R30``. With a preset, every
+result says which values came from it (attributes ``parameters_preset`` and
+``parameters_from_preset``).
 """
 
 from __future__ import annotations
@@ -35,9 +41,12 @@ import os
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path as FilePath
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable
 
-from .parameters import PARAMETER_UNITS, PRESETS, Parameters
+from .parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
+
+if TYPE_CHECKING:
+    from .output import FileOutcome
 
 __all__ = ["Study", "load_study", "run_study", "StudyError"]
 
@@ -84,6 +93,8 @@ class Study:
     source: FilePath
     params: Parameters
     tables: dict[str, dict[str, Any]] = field(default_factory=dict)
+    #: Attributes every result of the study carries: which parameter values came from a preset.
+    provenance: dict[str, str] = field(default_factory=dict)
 
     @property
     def output_directory(self) -> FilePath:
@@ -139,28 +150,34 @@ def load_study(path: str | os.PathLike) -> Study:
     except tomllib.TOMLDecodeError as error:
         raise StudyError(f"{where}: not valid TOML ({error})") from None
     _check_tables(document, where)
-    settings = dict(document.get("parameters", {}))
-    preset = settings.pop("preset", "paper-R30")
-    if preset not in PRESETS:
-        raise StudyError(f"{where}: [parameters] preset = {preset!r} is not allowed; allowed: "
-                         + ", ".join(map(repr, PRESETS)))
-    params = Parameters.paper(R=PRESETS[preset])
+    settings = {key: value for key, value in document.get("parameters", {}).items() if key != "preset"}
+    preset = document.get("parameters", {}).get("preset")
+    if preset is None and "parameters" in document:
+        missing = [name for name in PARAMETER_UNITS if name not in settings]
+        if missing:
+            raise StudyError(f"{where}: [parameters] without a preset lacks {', '.join(missing)}; allowed: all "
+                             f"eight of {', '.join(PARAMETER_UNITS)}, or preset = "
+                             + " or ".join(map(repr, PRESETS)) + " and any of them as overrides")
+    values = {key: float(value) for key, value in settings.items()}
     try:
-        params = params.replace(**{key: float(value) for key, value in settings.items()}) if settings else params
+        if preset is None and "parameters" in document:
+            params, provenance = Parameters(**values), {}
+        else:
+            params, provenance = from_preset("paper-R30" if preset is None else preset, **values)
     except ValueError as error:
         raise StudyError(f"{where}: [parameters] {error}") from None
-    return Study(source, params, {table: dict(content) for table, content in document.items()})
+    return Study(source, params, {table: dict(content) for table, content in document.items()}, provenance)
 
 
-def run_study(study: Study, progress: Callable[[str], None] = print) -> list[FilePath]:
+def run_study(study: Study, progress: Callable[[str], None] = print) -> list[FileOutcome]:
     """Compute what the study asks for and write it (netCDF + PNG, event log CSV); returns the files."""
     from .continuum import Tolerances
-    from .output import write_event_log, write_phase_diagram, write_simulation
+    from .output import write_phase_diagram, write_simulation
     from .paths import Path
     from .simulate import simulate
 
     out = study.output_directory
-    written: list[FilePath] = []
+    written: list[FileOutcome] = []
     where = os.fspath(study.source)
     for scenario in study.tables.get("phase_diagram", {}).get("scenarios", []):
         if scenario not in ("A", "B"):
@@ -185,12 +202,11 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> list[Fil
             dataset = simulate(study.params, scenario, alpha=alpha, method=method, **settings)
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where}: [simulation] {error}") from None
-        stem = f"{study.name}_simulation"
-        written += write_simulation(dataset, out, stem)
-        if "event_kind" in dataset:
-            written.append(write_event_log(dataset, out / f"{stem}_events.csv"))
+        dataset.attrs.update(study.provenance)
+        written += write_simulation(dataset, out, f"{study.name}_simulation")
     for scenario in study.tables.get("phase_diagram", {}).get("scenarios", []):
         progress(f"phase diagram: scenario {scenario}")
-        written += write_phase_diagram(study.params, scenario, out, f"{study.name}_phase_diagram_{scenario}")
+        written += write_phase_diagram(study.params, scenario, out, f"{study.name}_phase_diagram_{scenario}",
+                                       attrs=study.provenance)
     return written
 

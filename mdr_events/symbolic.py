@@ -245,6 +245,12 @@ def _single_positive(solutions: list[sp.Expr], what: str) -> sp.Expr:
 # ----------------------------------------------------------------------------
 # ----------------------------------------------------------------------------
 # on-disk cache of the derivations
+#: Hash of this module's source as it was imported, and of the SymPy version: the cache key. Taken at
+#: import, not when the cache is used, so that a process never files the derivations of the code it
+#: runs under the name of a source edited since.
+_SOURCE_DIGEST = hashlib.sha256(Path(__file__).read_bytes() + sp.__version__.encode()).hexdigest()[:16]
+
+
 def cache_path() -> Path | None:
     """Where derived relations are kept between processes (``None``: caching is off).
 
@@ -257,8 +263,7 @@ def cache_path() -> Path | None:
         return None
     root = os.environ.get("MDR_EVENTS_CACHE_DIR") or os.path.join(
         os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"), "mdr_events")
-    digest = hashlib.sha256(Path(__file__).read_bytes() + sp.__version__.encode()).hexdigest()[:16]
-    return Path(root) / f"relations-{digest}.pickle"
+    return Path(root) / f"relations-{_SOURCE_DIGEST}.pickle"
 
 
 def _fields(rel: Relation) -> tuple:
@@ -399,6 +404,10 @@ def derive_afresh() -> dict[str, Relation]:
     add(Relation("critical_angle_B", "(21)",
                  "angle of a pull-off path (19) from d_max that reaches slip onset at (a, d)",
                  alpha, critical_angle_B, (a, d, d_max, tau0, G_star)))
+    critical_angle_B_plus = sp.atan(sp.solve(sp.Eq(d, d_max + tan_alpha * critical_shift), tan_alpha)[0])
+    add(Relation("critical_angle_B_indentation", "(21)",
+                 "angle of an indentation path from d_max (the + sign) that reaches slip onset at (a, d)",
+                 alpha, critical_angle_B_plus, (a, d, d_max, tau0, G_star)))
     depth_quartic = _reduce_to_polynomial(d, depth_of_radius)
     add(Relation("jkr_radius_quartic", "(9)", "contact radius at a given depth, quartic in s = sqrt(a)",
                  depth_quartic, sp.Integer(0), (s, d, R, E_star, dgamma), variable=s))

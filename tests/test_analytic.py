@@ -204,3 +204,34 @@ def test_no_warning_at_the_double_root(paper):
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert me.d_crit(0.0, paper.replace(dgamma0=0.0), "A", adhesion=True) == 0.0
+
+
+@pytest.mark.parametrize("adhesion", [True, False])
+@pytest.mark.parametrize("final_depth", [None, 4.5e-4])
+def test_critical_angle_of_scenario_B_plus_is_slip_onset_at_the_final_depth(paper, adhesion, final_depth):
+    """B+: at α_c the "+" branch of (20)/(21) puts slip onset exactly at the path's final depth (default
+    2 d_max, the depth :meth:`Path.scenario_B_indentation` turns at); just below α_c it slides before."""
+    angle = me.critical_angle(paper, "B+", adhesion=adhesion, final_depth=final_depth)
+    final = 2 * paper.d_max if final_depth is None else final_depth
+    onset = me.d_crit(angle, paper, "B", adhesion=adhesion, branch="indentation")
+    assert onset == pytest.approx(final, rel=1e-12)
+    assert me.d_crit(angle * 0.99, paper, "B", adhesion=adhesion, branch="indentation") < final
+
+
+def test_critical_angle_of_scenario_B_plus_is_what_the_continuum_finds(paper):
+    """On the path itself: just below α_c the continuum slides before the turn, just above it does not."""
+    angle = me.critical_angle(paper, "B+", adhesion=True)
+    for factor, slides in ((0.999, True), (1.001, False)):
+        ds = me.simulate(paper, "B+", alpha=[angle * factor], method="continuum", samples=11)
+        kinds = list(ds["event_kind"].values[0])
+        turn = [i for i, kind in enumerate(kinds) if kind == "corner"][1]  # the turn at the final depth
+        assert ("slip_onset" in kinds[:turn]) is slides
+
+
+def test_critical_angle_rejects_what_it_cannot_use(paper):
+    with pytest.raises(ValueError, match="scenario='C' is not allowed; allowed: 'A', 'B', 'B\\+'"):
+        me.critical_angle(paper, "C")
+    with pytest.raises(ValueError, match="final_depth=0.0003 is not allowed; allowed: a finite depth > d_max"):
+        me.critical_angle(paper, "B+", final_depth=3e-4)
+    with pytest.raises(ValueError, match="final_depth=0.001 is not allowed with scenario 'A'"):
+        me.critical_angle(paper, "A", final_depth=1e-3)

@@ -80,6 +80,9 @@ def test_simulate_writes_nc_and_png(capsys, tmp_path):
         (["--alpha", "100"], "alpha=100.0"),
         (["--dt", "1", "--n-steps", "10"], "not allowed with argument"),
         (["--method", "magic"], "--method"),
+        (["--method", "continuum", "--dx", "1e-6"], "dx is not allowed with method='continuum'"),
+        (["--method", "continuum", "--dt", "0.5"], "dt is not allowed with method='continuum'"),
+        (["--method", "continuum", "--n-steps", "100"], "n_steps is not allowed with method='continuum'"),
     ],
 )
 def test_simulate_bad_arguments(capsys, tmp_path, argv, fragment):
@@ -100,3 +103,22 @@ def test_simulate_continuum_writes_the_event_log_csv(capsys, tmp_path):
 
 def ds_params(ds):
     return me.Parameters.from_attrs(ds.attrs)
+
+
+def test_top_level_help_is_plain_text(capsys):
+    """``mdr-events --help`` shows a sentence, not the module docstring's reST markup."""
+    with pytest.raises(SystemExit) as exit_info:
+        main(["--help"])
+    out, _ = capsys.readouterr()
+    assert exit_info.value.code == 0
+    text = " ".join(out.split())  # argparse wraps the description
+    assert "``" not in text and "Method of Dimensionality Reduction" in text
+
+
+def test_cli_results_say_which_parameters_came_from_the_preset(capsys, tmp_path):
+    status, _, err = run(capsys, "phase-diagram", "--scenario", "A", "--preset", "paper-R100", "--tau0", "30000",
+                         "--out", str(tmp_path))
+    assert status == 0, err
+    ds = me.open_result(tmp_path / "phase_diagram_A.nc")
+    assert ds.attrs["parameters_preset"] == "paper-R100"
+    assert ds.attrs["parameters_from_preset"] == "E, nu, R, dgamma0, dgamma1, d_max, v"

@@ -7,6 +7,7 @@ import pytest
 import xarray as xr
 
 import mdr_events as me
+from mdr_events import continuum
 from mdr_events.continuum import solve_path
 from mdr_events.convergence import HISTORY_QUANTITIES, discrete_minus_continuum, exact_references_A, observed_orders
 from mdr_events.datasets import SIMULATION_VARIABLES
@@ -150,3 +151,35 @@ def test_held_radius_inside_the_fold_comes_off_at_once(paper):
     (pull,) = events_of(solution, "pull_off")
     assert pull[2] == pytest.approx(float(me.jkr_depth(a0, p, p.dgamma1)), rel=1e-12)
     assert pull[3] == pytest.approx(a0, rel=1e-12)
+
+
+@pytest.mark.parametrize("scenario, alpha", [("A", 20.0), ("B", 30.0), ("B", 60.0)])
+def test_extremum_is_the_largest_value_of_the_solution(paper, scenario, alpha):
+    """The exact extremes of a run: never below the largest of 20 001 samples, above it by no more than the
+    sampling can miss at a smooth maximum (second order in the sample spacing), and reached at the time it
+    reports. Scenario B's F_x peaks inside a shrinking span, where no event marks it."""
+    path = me.Path.scenario_B(alpha, paper) if scenario == "B" else me.Path.scenario_A(alpha, paper)
+    solution = continuum.solve_path(paper, path)
+    times = np.linspace(0.0, solution.end_time, 20_001)
+    filled = continuum.evaluate(solution, times)
+    area = np.pi * filled["contact_radius"] ** 2
+    sampled = {"tangential_force": filled["tangential_force"], "normal_force": filled["normal_force"],
+               "contact_area": area}
+    for quantity, values in sampled.items():
+        for largest in (True, False):
+            time, value = continuum.extremum(solution, quantity, largest)
+            best = np.nanmax(values) if largest else np.nanmin(values)
+            scale = np.nanmax(np.abs(values))
+            assert (value >= best) if largest else (value <= best), (quantity, largest)
+            assert abs(value - best) <= 1e-4 * scale, (quantity, largest)
+            at_time = continuum.evaluate(solution, np.array([time]))
+            if quantity == "contact_area":
+                assert np.pi * at_time["contact_radius"][0] ** 2 == pytest.approx(value, rel=1e-12)
+            else:
+                assert at_time[quantity][0] == pytest.approx(value, rel=1e-12, abs=1e-15 * scale)
+
+
+def test_extremum_rejects_unknown_quantities(paper):
+    solution = continuum.solve_path(paper, me.Path.scenario_A(20.0, paper))
+    with pytest.raises(ValueError, match="quantity='force' is not allowed; allowed: normal_force"):
+        continuum.extremum(solution, "force")

@@ -1,31 +1,130 @@
+import math
+
 import numpy as np
 import pytest
 import xarray as xr
+from scipy import optimize
 
 import mdr_events as me
 from mdr_events.plotting import plot_phase_diagram, save_figure
 
+# ----------------------------------------------------------------------------
+# The model's statements in plain math, independent of mdr_events.symbolic / analytic: the
+# effective moduli next to (5), (6), the critical shift (13), the JKR depth (9) and its stable
+# branch, the Hertz radius (16). The phase diagram's values are checked against these.
+
+
+def _moduli(p):
+    """(E*, G*) from E and ν: E* = E/(1 − ν²), G* = 4G/(2 − ν), G = E/(2(1 + ν))."""
+    shear = p.E / (2.0 * (1.0 + p.nu))
+    return p.E / (1.0 - p.nu**2), 4.0 * shear / (2.0 - p.nu)
+
+
+def _shift(a, p):
+    """ū(a) = π a τ0 / (2 G*), eq. (13)."""
+    return math.pi * a * p.tau0 / (2.0 * _moduli(p)[1])
+
+
+def _jkr_depth(a, p, dgamma):
+    """d(a) = a²/R − sqrt(2π a Δγ / E*), eq. (9)."""
+    return a * a / p.R - math.sqrt(2.0 * math.pi * a * dgamma / _moduli(p)[0])
+
+
+def _jump_off_radius(p, dgamma):
+    """∂d/∂a = 0 of (9): a³ = π Δγ R² / (8 E*); the stable branch is a above it."""
+    return (math.pi * dgamma * p.R**2 / (8.0 * _moduli(p)[0])) ** (1.0 / 3.0)
+
+
+def _jkr_radius(d, p, dgamma):
+    """Contact radius at depth d on the stable branch of (9), by bracketing (brentq)."""
+    lo = _jump_off_radius(p, dgamma)
+    assert _jkr_depth(lo, p, dgamma) <= d, "no contact at this depth"
+    hi = 2.0 * lo
+    while _jkr_depth(hi, p, dgamma) < d:
+        hi *= 2.0
+    return optimize.brentq(lambda a: _jkr_depth(a, p, dgamma) - d, lo, hi, xtol=1e-300, rtol=1e-15)
+
+
+def _tan(alpha):
+    return math.tan(math.radians(alpha))
+
+
+def _check_slip_onset(alpha, depths, travel, radius, p):
+    """At each interior angle, the path's tangential travel at the returned depth equals ū(a)."""
+    for angle, d in zip(alpha, depths):
+        if 0.0 < angle < 90.0 and np.isfinite(d):
+            assert travel(d) / _tan(angle) == pytest.approx(_shift(radius(d), p), rel=1e-9), angle
+
 
 @pytest.mark.parametrize("scenario", ["A", "B"])
 def test_phase_diagram_schema_and_values(paper, scenario):
+    """The dataset's labels, provenance and, above all, its numbers.
+
+    The values are checked against the slip-onset statements written out in plain math above
+    (not against :func:`mdr_events.d_crit`, which the dataset wraps): on the path (14) or (19)
+    the tangential travel at ``d_crit`` equals ``ū(a)`` with the Hertz radius ``sqrt(R d)`` or
+    the JKR radius of (9) on the right branch (``Δγ0`` in, ``Δγ1`` out). It fails when a relation
+    of the derivation, the root choice (unstable branch, wrong root of (20)), the work of adhesion
+    of a branch, the ``branch`` order, the ±inf encoding of "never slides", a critical angle or
+    the jump-off depth is wrong, and when a variable loses its ``units``/``long_name``.
+    """
     alpha = np.linspace(0, 90, 91)
     ds = me.phase_diagram(paper, alpha, scenario=scenario)
     assert ds["alpha"].attrs["units"] == "degree"
+    np.testing.assert_array_equal(ds["alpha"].values, alpha)
     for name, var in ds.variables.items():
         assert var.attrs.get("units") and var.attrs.get("long_name"), name
     for name in ("E", "nu", "R", "tau0", "dgamma0", "dgamma1", "d_max", "v"):
         assert ds.attrs[f"param_{name}"] == getattr(paper, name)
     assert ds.attrs["program_version"] == me.__version__
     assert ds.attrs["doi"] == me.DOI
+    p, d_max = paper, paper.d_max
+    assert float(ds["d_max"]) == d_max
+    hertz = lambda d: math.sqrt(p.R * d)  # noqa: E731  (16)
     if scenario == "A":
-        assert ds["d_crit_jkr"].dims == ("alpha",)
-        np.testing.assert_array_equal(ds["d_crit_hertz"].values, me.d_crit(alpha, paper, "A"))
+        assert ds["d_crit_jkr"].dims == ("alpha",) and ds["d_crit_hertz"].dims == ("alpha",)
+        for key, radius in (("hertz", hertz), ("jkr", lambda d: _jkr_radius(d, p, p.dgamma0))):
+            values = ds[f"d_crit_{key}"].values
+            assert values[0] == 0.0 and values[-1] == np.inf  # α = 0: slides at once; 90°: never
+            assert np.all(np.isfinite(values[1:-1])) and np.all(values[1:-1] > 0)
+            _check_slip_onset(alpha, values, lambda d: d, radius, p)  # (14): x = d / tan α
+            # the critical angle: d_crit(α_c) = d_max, i.e. tan α_c = d_max / ū(a(d_max))
+            expected = math.degrees(math.atan(d_max / _shift(radius(d_max), p)))
+            angle = float(ds[f"critical_angle_{key}"])
+            assert angle == pytest.approx(expected, rel=1e-9)
+            assert np.all((values < d_max) == (alpha < angle))  # slides during indentation below α_c
+        # the paper's two numbers (section 4): 23.59° without, 22.87° with adhesion
+        assert float(ds["critical_angle_hertz"]) == pytest.approx(23.59, abs=0.02)
+        assert float(ds["critical_angle_jkr"]) == pytest.approx(22.87, abs=0.02)
     else:
         assert ds["d_crit_jkr"].dims == ("branch", "alpha")
         assert list(ds["branch"].values) == ["pull-off", "indentation"]
-        np.testing.assert_array_equal(ds["d_crit_jkr"].sel(branch="indentation").values,
-                                      me.d_crit(alpha, paper, "B", adhesion=True, branch="indentation"))
-    assert float(ds["critical_angle_jkr"]) == me.critical_angle(paper, scenario, adhesion=True)
+        pull = {key: ds[f"d_crit_{key}"].sel(branch="pull-off").values for key in ("hertz", "jkr")}
+        push = {key: ds[f"d_crit_{key}"].sel(branch="indentation").values for key in ("hertz", "jkr")}
+        for values, never in ((pull["hertz"], -np.inf), (pull["jkr"], -np.inf),
+                              (push["hertz"], np.inf), (push["jkr"], np.inf)):
+            assert values[0] == d_max and values[-1] == never  # α = 0: at once; 90°: never
+        # (19)-(20), no adhesion: (d_max − d)/tan α = ū(sqrt(R d)) below d_max, (d − d_max)/tan α above
+        assert np.all(np.isfinite(pull["hertz"][:-1])) and np.all(pull["hertz"][1:-1] < d_max)
+        assert np.all(pull["hertz"][1:-1] > 0) and np.all(push["hertz"][1:-1] > d_max)
+        _check_slip_onset(alpha, pull["hertz"], lambda d: d_max - d, hertz, p)
+        _check_slip_onset(alpha, push["hertz"], lambda d: d - d_max, hertz, p)
+        # (21), adhesion: Δγ1 radius on the way out, Δγ0 radius on the way in
+        assert np.all(push["jkr"][1:-1] > d_max)
+        _check_slip_onset(alpha, push["jkr"], lambda d: d - d_max, lambda d: _jkr_radius(d, p, p.dgamma0), p)
+        _check_slip_onset(alpha, pull["jkr"], lambda d: d_max - d, lambda d: _jkr_radius(d, p, p.dgamma1), p)
+        # pulling out, a shrinks along the stable branch down to the jump-off point (a_j, d_j) and
+        # the mismatch (d_max − d)/tan α − ū(a) grows monotonically: no spring slides before the
+        # jump-off (d_crit = −inf) exactly when the mismatch is still negative there
+        a_j = _jump_off_radius(p, p.dgamma1)
+        d_j = _jkr_depth(a_j, p, p.dgamma1)
+        assert float(ds["jump_off_depth"]) == pytest.approx(d_j, rel=1e-12)
+        angle = math.degrees(math.atan((d_max - d_j) / _shift(a_j, p)))
+        assert float(ds["critical_angle_jkr"]) == pytest.approx(angle, rel=1e-9)
+        assert float(ds["critical_angle_hertz"]) == 90.0  # the Hertz radius shrinks to 0: slip first
+        separates = pull["jkr"] == -np.inf
+        assert np.all(separates == (alpha > angle)) and 0 < separates.sum() < alpha.size - 1
+        assert np.all(pull["jkr"][~separates] >= d_j)
 
 
 @pytest.mark.parametrize("scenario", ["A", "B"])
@@ -46,12 +145,26 @@ def test_open_result_rejects_foreign_files(tmp_path):
 
 
 def test_failed_write_leaves_no_file(paper, tmp_path):
+    """A write that the netCDF backend refuses leaves no file behind and an earlier file intact.
+
+    A dict attribute is not netCDF-serialisable: xarray raises ``TypeError`` ("Invalid value for
+    attr ...") inside the writer, after :func:`mdr_events.datasets.atomic_write` has created its
+    temporary file. Fails if the temporary file is not removed, if the target is written or
+    truncated before the writer succeeds, if the error is swallowed, or if something else goes
+    wrong first (a ``NameError``, a ``ValueError`` ... would not match).
+    """
     ds = me.phase_diagram(paper, [10.0, 20.0])
-    ds.attrs["bad"] = 1  # fine
+    ds.attrs["fine"] = 1  # an int attribute is netCDF-safe
     ds["d_crit_hertz"].attrs["bad"] = {"not": "netcdf"}
-    with pytest.raises(Exception):
+    refused = r"Invalid value for attr 'bad': \{'not': 'netcdf'\}"
+    with pytest.raises(TypeError, match=refused):
         me.write_netcdf(ds, tmp_path / "x.nc")
     assert list(tmp_path.iterdir()) == []
+    good = me.write_netcdf(me.phase_diagram(paper, [10.0]), tmp_path / "x.nc")
+    before = good.read_bytes()
+    with pytest.raises(TypeError, match=refused):
+        me.write_netcdf(ds, good)
+    assert list(tmp_path.iterdir()) == [good] and good.read_bytes() == before
 
 
 @pytest.mark.parametrize("scenario", ["A", "B"])

@@ -1,48 +1,144 @@
-"""The committed results/ is what a fresh `mdr-events reproduce` computes (so it cannot go stale)."""
+"""The committed results/ is what a fresh `mdr-events reproduce` computes (so it cannot go stale).
 
+Across machines and library versions the datasets are compared within the tolerance of
+:data:`mdr_events.datasets.RESULT_RTOL` (exact for dimensions, attributes, strings and integers); the
+report, which rounds, must match exactly. Bit-identical output on repeat within one environment is
+tested where each result is made (tests/test_files.py, test_discrete.py, test_properties.py).
+"""
+
+import re
 from pathlib import Path
 
 import numpy as np
 import pytest
-import xarray as xr
 
 import mdr_events as me
 from mdr_events import report
+from mdr_events.datasets import RESULT_RTOL, assert_results_agree, result_differences, write_netcdf
+from mdr_events.output import FileStatus
 
-RESULTS = Path(__file__).parent.parent / "results"
+ROOT = Path(__file__).parent.parent
+RESULTS = ROOT / "results"
 
 
 @pytest.fixture(scope="module")
 def fresh():
-    """One fresh computation of everything behind results/ (about 25 s)."""
+    """One fresh computation of everything behind results/ (about 20 s)."""
     return report.compute()
 
 
+def locked_versions() -> dict[str, str]:
+    """``name==version`` pins of the lock file (names lower-cased)."""
+    pins = re.findall(r"^([A-Za-z0-9_.\-]+)==(\S+)", (ROOT / "constraints.txt").read_text(), flags=re.MULTILINE)
+    return {name.lower(): version for name, version in pins}
+
+
 def test_committed_report_matches_a_fresh_computation(fresh):
-    assert (RESULTS / "README.md").read_text() == report.report_text(fresh)
+    """Every rounded number of results/README.md is what this machine computes; only the software section
+    may differ (it records the versions results/ was written with, which need not be this machine's)."""
+    committed = (RESULTS / "README.md").read_text()
+    recorded = report.recorded_versions(committed)
+    assert set(recorded) == {"Python", *report.RECORDED_PACKAGES}
+    assert committed == report.report_text(fresh, versions=recorded)
 
 
-def test_committed_datasets_match_a_fresh_computation(fresh):
+def test_results_were_written_with_the_locked_versions():
+    """The lock file pins exactly the versions that results/README.md says results/ was written with."""
+    recorded = report.recorded_versions((RESULTS / "README.md").read_text())
+    locked = locked_versions()
+    for name in report.RECORDED_PACKAGES:
+        assert recorded[name] == locked[name], name
+
+
+def test_committed_datasets_agree_with_a_fresh_computation(fresh):
     for (label, scenario), dataset in fresh.continuum.items():
         stem = f"fig{report.FIGURE_NUMBERS[scenario]}_{label}"
-        xr.testing.assert_identical(me.open_result(RESULTS / f"{stem}.nc"), dataset)
-        xr.testing.assert_identical(me.open_result(RESULTS / f"{stem}_discrete.nc"), fresh.discrete[(label, scenario)])
+        assert_results_agree(dataset, me.open_result(RESULTS / f"{stem}.nc"))
+        assert_results_agree(fresh.discrete[(label, scenario)], me.open_result(RESULTS / f"{stem}_discrete.nc"))
         assert (RESULTS / f"{stem}.png").stat().st_size > 0
         assert (RESULTS / f"{stem}_events.csv").read_text().startswith("alpha_degree,event,time_s,kind")
+
+
+def test_the_comparison_catches_what_the_tolerance_does_not_allow():
+    """The tolerance is relative to each variable's largest magnitude and nothing else is loose: a change of
+    3 RESULT_RTOL at the largest value, a moved nan, an event kind or an attribute is a difference."""
+    committed = me.open_result(RESULTS / "fig10_R30.nc")
+
+    def changed(edit):
+        copy = committed.copy(deep=True)
+        edit(copy)
+        return result_differences(copy, committed)
+
+    largest = np.unravel_index(np.nanargmax(np.abs(committed["tangential_force"].values)),
+                               committed["tangential_force"].shape)
+    assert changed(lambda ds: ds["tangential_force"].values.__setitem__(
+        largest, ds["tangential_force"].values[largest] * (1 + 0.3 * RESULT_RTOL))) == []
+    assert changed(lambda ds: ds["tangential_force"].values.__setitem__(
+        largest, ds["tangential_force"].values[largest] * (1 + 3 * RESULT_RTOL)))
+    after_the_run = (-1, int(np.argmax(np.isnan(committed["normal_force"].values[-1]))))  # 80°: the shortest run
+    assert np.isnan(committed["normal_force"].values[after_the_run])
+    assert changed(lambda ds: ds["normal_force"].values.__setitem__(after_the_run, 0.0))
+    assert changed(lambda ds: ds["event_kind"].values.__setitem__((0, 1), "full_slip"))
+    assert changed(lambda ds: ds.attrs.__setitem__("rtol", 2e-10))
+    assert changed(lambda ds: ds["contact_area"].attrs.__setitem__("units", "mm2"))
+
+
+def test_adhesive_strength_is_the_jkr_value_for_every_angle(fresh):
+    """Section 4.2 (1): |F_N,min| = (3/2) π Δγ1 R for all angles, from the solution's exact minimum (the
+    Brent refinement leaves a second-order value error; the radius root is exact to a few ulp)."""
+    for (label, scenario), extremes in fresh.extremes.items():
+        params = me.Parameters.paper(R=report.RADII[label])
+        np.testing.assert_allclose(extremes["normal_force_min"], me.pull_off_force(params, params.dgamma1),
+                                   rtol=1e-12)
+
+
+def test_maximum_normal_force_is_exact_and_the_same_for_every_angle(fresh):
+    """Section 4.2 (2): F_N,max is the JKR force (10) at d_max on the Δγ0 branch whatever α (it was read off
+    2001 samples and varied with α before)."""
+    for (label, _), extremes in fresh.extremes.items():
+        params = me.Parameters.paper(R=report.RADII[label])
+        exact = me.jkr_normal_force(me.jkr_contact_radius(params.d_max, params, params.dgamma0), params,
+                                    params.dgamma0)
+        np.testing.assert_allclose(extremes["normal_force_max"], exact, rtol=1e-13)
+    assert "| 10° | 517.447 mN |" in report.report_text(fresh)
+
+
+def test_reproduce_keeps_files_that_agree_and_rewrites_those_that_do_not(fresh, tmp_path, monkeypatch):
+    """`mdr-events reproduce` leaves a file alone when its content agrees with the fresh computation (so that
+    git status stays clean on another machine) and says so; a real change is written."""
+    monkeypatch.setattr(report, "compute", lambda progress=None: fresh)
+    first = report.reproduce(tmp_path, progress=lambda message: None)
+    assert {outcome.status for outcome in first} == {FileStatus.WRITTEN}
+    before = {path.name: path.read_bytes() for path in tmp_path.iterdir()}
+
+    # another machine's rounding: one value moved by 1e-13 of its magnitude
+    target = tmp_path / "fig8_R30.nc"
+    nudged = me.open_result(target)
+    nudged["normal_force"].values[0, 10] *= 1 + 1e-13
+    write_netcdf(nudged, target)
+    nudged_bytes = target.read_bytes()
+    assert nudged_bytes != before["fig8_R30.nc"]
+    messages = []
+    second = report.reproduce(tmp_path, progress=messages.append)
+    assert {outcome.status for outcome in second} == {FileStatus.KEPT}
+    assert target.read_bytes() == nudged_bytes
+    assert any("fig8_R30.nc" in message and "not rewritten" in message for message in messages)
+
+    # a real change (beyond the tolerance) is rewritten, the rest kept
+    nudged["normal_force"].values[0, 10] *= 1 + 1e-6
+    write_netcdf(nudged, target)
+    third = {outcome.path.name: outcome.status for outcome in report.reproduce(tmp_path, progress=lambda m: None)}
+    assert third["fig8_R30.nc"] is FileStatus.WRITTEN and third["fig10_R30.nc"] is FileStatus.KEPT
+    assert target.read_bytes() == before["fig8_R30.nc"]
+    assert {path.name: path.read_bytes() for path in tmp_path.iterdir()} == before
 
 
 def test_report_states_the_papers_numbers_beside_ours(fresh):
     text = report.report_text(fresh)
     assert "| 23.59° |" in text and "| 22.87° |" in text
     assert "**inferred**" in text
-    for heading in ("### (1)", "### (2)", "### (3)", "### (4)", "## Slip onset: closed form, continuum and discrete"):
+    for heading in ("### (1)", "### (2)", "### (3)", "### (4)", "## Slip onset: closed form, continuum and discrete",
+                    "## Software"):
         assert heading in text
     # every cross-check row is explained, none disagrees
     assert "**disagree**" not in text
-
-
-def test_adhesive_strength_is_the_jkr_value_for_every_angle(fresh):
-    """Section 4.2 (1): |F_N,min| = (3/2) π Δγ1 R for all angles (continuum, 200 001 samples)."""
-    for (label, scenario), values in fresh.adhesive_strength.items():
-        params = me.Parameters.paper(R=report.RADII[label])
-        np.testing.assert_allclose(values, -me.pull_off_force(params, params.dgamma1), rtol=1e-7)

@@ -72,7 +72,7 @@ directory = "o"
     study = load_study(path)
     assert study.name == "study" and study.output_directory == tmp_path / "o"
     written = me.run_study(study, progress=lambda message: None)
-    ds = me.open_result(written[0])
+    ds = me.open_result(written[0].path)
     assert ds.attrs["scenario"] == "custom" and ds.attrs["dx"] == 2e-6
 
 
@@ -89,11 +89,11 @@ directory = "o"
     ("[output]\ndirectory = 'o'\n[simulation]\nmethod = 'discrete'\n", "[simulation] lacks the required key scenario"),
     ("[output]\n[phase_diagram]\nscenarios = ['A']\n", "[output] lacks the required key(s) directory"),
     ("[output]\ndirectory = 'o'\n[phase_diagram]\n", "[phase_diagram] lacks the required key(s) scenarios"),
-    ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\n[parameters]\nE = -1.0\n", "[parameters] Parameters.E=-1.0 is not allowed; allowed: a finite number > 0"),
+    ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\n[parameters]\npreset = 'paper-R30'\nE = -1.0\n", "[parameters] Parameters.E=-1.0 is not allowed; allowed: a finite number > 0"),
     ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\n[parameters]\nE = '1 MPa'\n",
      "[parameters] E = '1 MPa' is not allowed; allowed: a number"),
     ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\n[parameters]\npreset = 'paper-R50'\n",
-     "preset = 'paper-R50' is not allowed; allowed: 'paper-R30', 'paper-R100'"),
+     "[parameters] preset='paper-R50' is not allowed; allowed: 'paper-R30', 'paper-R100'"),
     ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\n[path]\nwaypoints = [[0, 0], [0, 1e-4]]\n",
      "scenario and alpha are not allowed with a [path]"),
     ("[output]\ndirectory = 'o'\n[simulation]\n[path]\nwaypoints = [[0, 0]]\n",
@@ -134,3 +134,43 @@ def test_bad_values_are_reported_by_the_function_they_go_to(tmp_path, capsys, te
 def test_missing_study_file(tmp_path, capsys):
     assert main(["run", str(tmp_path / "nope.toml")]) == 2
     assert "no such study file" in capsys.readouterr().err
+
+
+ALL_EIGHT = """
+[parameters]
+E = 1e6
+nu = 0.4
+R = 0.05
+tau0 = 20e3
+dgamma0 = 0.02
+dgamma1 = 0.1
+d_max = 2e-4
+v = 2e-6
+
+[phase_diagram]
+scenarios = ["A"]
+
+[output]
+directory = "out"
+"""
+
+
+def test_without_a_preset_all_eight_parameters_are_required(tmp_path):
+    """A [parameters] table that gives only E must not silently take the other seven from a preset."""
+    path = write(tmp_path, "[parameters]\nE = 1e6\n[phase_diagram]\nscenarios = ['A']\n[output]\ndirectory = 'o'\n")
+    with pytest.raises(StudyError, match="without a preset lacks nu, R, tau0, dgamma0, dgamma1, d_max, v"):
+        load_study(path)
+    study = load_study(write(tmp_path, ALL_EIGHT, "full.toml"))
+    assert study.params == me.Parameters(E=1e6, nu=0.4, R=0.05, tau0=20e3, dgamma0=0.02, dgamma1=0.1,
+                                         d_max=2e-4, v=2e-6)
+    assert study.provenance == {}
+
+
+def test_results_say_which_parameters_came_from_the_preset(tmp_path, capsys):
+    assert main(["run", str(write(tmp_path, STUDY))]) == 0
+    for name in ("demo_simulation.nc", "demo_phase_diagram_A.nc"):
+        ds = me.open_result(tmp_path / "out" / name)
+        assert ds.attrs["parameters_preset"] == "paper-R100"
+        assert ds.attrs["parameters_from_preset"] == "E, nu, R, dgamma0, dgamma1, d_max, v"  # not tau0
+    assert main(["run", str(write(tmp_path, ALL_EIGHT, "full.toml"))]) == 0
+    assert "parameters_preset" not in me.open_result(tmp_path / "out" / "full_phase_diagram_A.nc").attrs

@@ -1,13 +1,14 @@
 """SymPy results against quadrature, finite differences and the unreduced statements."""
 
 import math
+import re
 
 import numpy as np
 import pytest
 import sympy as sp
 from scipy import integrate, optimize
 
-from mdr_events import symbolic
+from mdr_events import Parameters, symbolic
 from mdr_events.symbolic import relation
 
 R, E_STAR, G_STAR, TAU0, DGAMMA, D_MAX = 0.03, 0.432e6, 0.288e6, 42e3, 0.15, 0.3e-3
@@ -97,14 +98,46 @@ def test_hertz_limits_of_the_jkr_relations():
         4 * E_STAR * math.sqrt(R) * d**1.5 / 3, rel=1e-14)
 
 
-def test_critical_shift_makes_a_uniform_spring_field_carry_tau0():
-    """(11)–(13): n discrete springs all at ū(a) give the mean shear stress τ0."""
-    a = 2e-3
-    u_bar = relation("critical_shift").numeric(a, TAU0, G_STAR)
-    for n in (10, 101, 4000):
-        dx = 2 * a / n
-        force = np.sum(np.full(n, G_STAR * dx * u_bar))
-        assert force / (math.pi * a**2) == pytest.approx(TAU0, rel=1e-12)
+# (a, τ0, G*) of different magnitudes, so that a swapped argument or a wrong power shows
+SHIFT_POINTS = [(2e-3, TAU0, G_STAR), (7.5e-4, 1.3e3, 4.1e7), (0.11, 9.0e5, 2.2e3), (3.3e-6, 0.42, 0.9)]
+
+
+@pytest.mark.parametrize("a, tau0, g_star", SHIFT_POINTS)
+def test_critical_shift_and_stationary_sliding_against_independent_formulas(a, tau0, g_star):
+    """(12), (13) against the formulas written out by hand.
+
+    ``relation("critical_shift")`` must be ``ū = π a τ0 / (2 G*)`` at points where each argument
+    has its own magnitude (fails on a changed factor, a wrong power of ``a``, or ``args`` in
+    another order than ``(a, tau0, G_star)``); ``relation("stationary_shear_stress")`` must be
+    ``τ = 2 G* u / (π a)``, linear in the shift (fails if the derivation of (12) changes a
+    factor, e.g. ``n Δx = a`` instead of ``2a``), and must give back ``τ0`` at ``ū(a)`` (fails
+    if (12) and (13) disagree).
+    """
+    u_bar = relation("critical_shift").numeric(a, tau0, g_star)
+    assert u_bar == pytest.approx(math.pi * a * tau0 / (2 * g_star), rel=1e-14)
+    stress = relation("stationary_shear_stress")
+    assert stress.numeric(u_bar, a, g_star) == pytest.approx(tau0, rel=1e-14)
+    for u in (0.3 * u_bar, 2.5 * u_bar):
+        assert stress.numeric(u, a, g_star) == pytest.approx(2 * g_star * u / (math.pi * a), rel=1e-14)
+
+
+def test_critical_shift_carries_tau0_by_mindlin_tangential_stiffness():
+    """ū(a) is the rigid shift at which a stuck circular contact carries the force τ0 π a².
+
+    Independent of the MDR spring picture: Mindlin's tangential stiffness of a circular contact
+    of radius a on an elastic half-space is ``k = 8 G a / (2 − ν)`` (Mindlin 1949; Johnson,
+    Contact Mechanics, ch. 7), with ``G = E / (2 (1 + ν))`` from ``E`` and ``ν`` directly. So
+    ``k ū(a) = τ0 π a²`` must hold with the package's ``G*``. Fails if the critical shift (13) or the effective
+    tangential modulus ``Parameters.G_star`` (eq. (6)) is off by a factor, or if ν enters the
+    wrong way (checked at ν = 0.5, 0.3 and −0.2).
+    """
+    for nu in (0.5, 0.3, -0.2):
+        p = Parameters.paper().replace(nu=nu)
+        shear = p.E / (2 * (1 + nu))
+        for a in (1e-4, 2e-3, 3e-2):
+            stiffness = 8 * shear * a / (2 - nu)
+            u_bar = relation("critical_shift").numeric(a, p.tau0, p.G_star)
+            assert stiffness * u_bar == pytest.approx(p.tau0 * math.pi * a**2, rel=1e-13)
 
 
 def test_d_crit_17_solves_the_unreduced_statement():
@@ -168,13 +201,62 @@ def test_quartics_21_have_one_positive_root_solving_the_system(branch, sign, dga
         assert d_path == pytest.approx(d_jkr, rel=1e-8, abs=1e-15)
 
 
-def test_relations_print_and_numeric_argument_checks():
+#: The paper's notation, written out here (not taken from ``symbolic.LATEX_NAMES``).
+PAPER_LATEX = {
+    "E_star": r"E^{*}", "G_star": r"G^{*}", "tau0": r"\tau_{0}", "dgamma": r"\Delta\gamma",
+    "d_max": r"d_{\max}", "u_bar": r"\bar{u}", "tan_alpha": r"\tan\alpha", "Delta_l_max": r"\Delta l_{\max}",
+}
+
+
+def _latex_token(text: str) -> str:
+    """A regex for a LaTeX fragment standing on its own (not inside a longer name or command)."""
+    return r"(?<![A-Za-z\\])" + re.escape(text) + r"(?![A-Za-z])"
+
+
+def test_relations_print_with_the_papers_symbols():
+    """``latex()`` and ``pretty()`` of every relation show the relation, in the paper's notation.
+
+    For each relation: the LaTeX is exactly ``latex(lhs) = latex(rhs)`` with the names of
+    ``LATEX_NAMES`` (fails if the sides are swapped or dropped, or ``symbol_names`` is lost);
+    ``LATEX_NAMES`` holds the names written out in ``PAPER_LATEX`` (fails if one is lost or
+    changed); every argument and every symbol of the relation appears under its paper name
+    (``E^{*}``, ``\\Delta\\gamma``, ``d_{\\max}`` ...) and never under SymPy's default name
+    (``E_{star}``, ``dgamma``, ``d_{max}``); ``pretty()`` is plain text (no LaTeX) with exactly
+    one ``=`` line (``= 0`` for the polynomial reductions) and names every argument. The LaTeX
+    of (9) and (13) is also compared with hand-written strings.
+    """
     rels = symbolic.relations()
     for key in ("jkr_depth", "slip_A_jkr_cubic", "slip_B_jkr_quartic_pull_off", "profile_power_law"):
         assert key in rels
-        assert rels[key].latex()
-        assert rels[key].pretty()
-    assert r"\Delta\gamma" in relation("jkr_depth").latex()
+    names = symbolic.LATEX_NAMES
+    assert {sym.name: name for sym, name in names.items() if sym.name in PAPER_LATEX} == PAPER_LATEX
+    for key, rel in rels.items():
+        text = rel.latex()
+        assert text == (sp.latex(rel.lhs, symbol_names=names) + " = "
+                        + sp.latex(rel.rhs, symbol_names=names)), key
+        symbols = set(rel.args) | rel.lhs.free_symbols | rel.rhs.free_symbols
+        for sym in symbols:
+            paper_name = PAPER_LATEX.get(sym.name, sp.latex(sym))
+            assert re.search(_latex_token(paper_name), text), (key, sym, text)
+            default = sp.latex(sym)
+            if default != paper_name:
+                assert not re.search(_latex_token(default), text), (key, sym, text)
+        picture = rel.pretty()
+        assert "\\" not in picture and "{" not in picture, key
+        equals = [line for line in picture.splitlines() if " = " in line]
+        assert len(equals) == 1, (key, picture)
+        if rel.variable is not None:
+            assert equals[0].rstrip().endswith("= 0"), (key, picture)
+        for sym in rel.args:
+            assert sp.pretty(sym, use_unicode=True) in picture, (key, sym, picture)
+    assert relation("jkr_depth").latex() == (
+        r"d = \frac{a^{2}}{R} - \frac{\sqrt{2} \sqrt{\pi} \sqrt{a} \sqrt{\Delta\gamma}}{\sqrt{E^{*}}}")
+    assert relation("critical_shift").latex() == r"\bar{u} = \frac{\pi a \tau_{0}}{2 G^{*}}"
+
+
+def test_numeric_argument_checks():
+    """Arguments by name equal arguments by position; a missing argument, ``coefficients`` of a
+    relation that is no polynomial and an unknown key each raise their own error."""
     rel = relation("jkr_depth")
     assert rel.numeric(a=1e-3, R=R, E_star=E_STAR, dgamma=DGAMMA) == rel.numeric(1e-3, R, E_STAR, DGAMMA)
     with pytest.raises(TypeError, match="missing"):
