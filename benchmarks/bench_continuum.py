@@ -22,10 +22,10 @@ import numpy as np
 
 import mdr_events as me
 from _timing import median_time
-from mdr_events.continuum import evaluate, solve_path
-from mdr_events.convergence import exact_references_A
-from mdr_events.discrete import run_discrete
-from mdr_events.paths import Path
+from mdr_events.models.continuum import evaluate, solve_path
+from mdr_events.analysis.convergence import exact_references_A
+from mdr_events.models.discrete import run_discrete
+from mdr_events.models.paths import Path
 
 
 def main() -> None:

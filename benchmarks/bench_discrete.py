@@ -16,7 +16,7 @@ import time
 import numpy as np
 
 import mdr_events as me
-from mdr_events.simulate import simulate
+from mdr_events.models.simulate import simulate
 
 
 def main(repeat: int = 5) -> None:

@@ -21,8 +21,8 @@ import numpy as np
 import sympy as sp
 from scipy import integrate
 
-from mdr_events import symbolic
-from mdr_events.symbolic import relation
+from mdr_events.theory import symbolic
+from mdr_events.theory.symbolic import relation
 
 R, E_STAR, DGAMMA = 0.03, 0.432e6, 0.15
 
@@ -122,7 +122,7 @@ print("pull-off force", forces.min(), "N")
 import matplotlib.pyplot as plt
 
 import mdr_events as me
-from mdr_events import analytic
+from mdr_events.theory import analytic
 
 p = me.Parameters.paper()
 branches = {}

@@ -20,8 +20,8 @@ import math
 
 import numpy as np
 
-from mdr_events import symbolic
-from mdr_events.symbolic import relation
+from mdr_events.theory import symbolic
+from mdr_events.theory.symbolic import relation
 
 G_STAR, TAU0 = 0.288e6, 42e3
 
@@ -70,7 +70,7 @@ assert relation("critical_shift").rhs.diff(symbolic.a) > 0
 import matplotlib.pyplot as plt
 
 import mdr_events as me
-from mdr_events import analytic
+from mdr_events.theory import analytic
 
 p = me.Parameters.paper()
 ds = me.simulate(p, "A", alpha=[20.0], method="continuum", samples=801).sel(alpha=20.0)

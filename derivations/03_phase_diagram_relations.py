@@ -21,7 +21,7 @@ import math
 import numpy as np
 
 import mdr_events as me
-from mdr_events.symbolic import relation
+from mdr_events.theory.symbolic import relation
 
 p = me.Parameters.paper()
 tan = math.tan(math.radians(30.0))
@@ -109,7 +109,7 @@ assert abs(me.critical_angle(p, "A", adhesion=True) - 22.87) < 0.02
 # %%
 import matplotlib.pyplot as plt
 
-from mdr_events.plotting import plot_phase_diagram
+from mdr_events.plotting.figures import plot_phase_diagram
 
 diagrams = {scenario: me.phase_diagram(p, scenario=scenario) for scenario in ("A", "B")}
 

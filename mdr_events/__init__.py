@@ -13,8 +13,8 @@ forms, phase diagrams) / ``continuum`` (event-driven, exact) / ``discrete``
 netCDF) → ``output``, ``plotting``, ``report``, ``study`` and ``cli``.
 """
 
-from ._version import __version__
-from .analytic import (
+from mdr_events._version import __version__
+from mdr_events.theory.analytic import (
     critical_angle,
     critical_shift,
     d_crit,
@@ -24,19 +24,25 @@ from .analytic import (
     jump_off,
     pull_off_force,
 )
-from .crosscheck import cross_check
-from .datasets import DOI, open_result, write_netcdf
-from .parameters import Parameters
-from .paths import Path
-from .phase import phase_diagram
-from .simulate import simulate
-from .study import load_study, run_study
+from mdr_events.analysis.crosscheck import cross_check
+from mdr_events.io.datasets import DOI, open_result, write_netcdf
+from mdr_events.parameters import Parameters
+from mdr_events.models.paths import Path
+from mdr_events.theory.phase import phase_diagram
+from mdr_events.models.simulate import simulate
+from mdr_events.app.study import load_study, run_study
+from mdr_events.models import continuum
+from mdr_events.models.continuum import Tolerances
+from mdr_events.theory import analytic, symbolic
 
 __all__ = [
     "__version__",
     "DOI",
     "Parameters",
     "Path",
+    "Tolerances",
+    "analytic",
+    "continuum",
     "critical_angle",
     "critical_shift",
     "cross_check",
@@ -51,5 +57,6 @@ __all__ = [
     "pull_off_force",
     "run_study",
     "simulate",
+    "symbolic",
     "write_netcdf",
 ]

@@ -7,7 +7,7 @@ import pytest
 from scipy import optimize
 
 import mdr_events as me
-from mdr_events import analytic
+from mdr_events.theory import analytic
 
 ANGLES = np.linspace(0.5, 85.0, 60)
 

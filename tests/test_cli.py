@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 import mdr_events as me
-from mdr_events.cli import main
+from mdr_events.app.cli import main
 
 
 def run(capsys, *argv):

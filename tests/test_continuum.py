@@ -7,15 +7,15 @@ import pytest
 import xarray as xr
 
 import mdr_events as me
-from mdr_events import continuum
-from mdr_events.continuum import solve_path
-from mdr_events.convergence import HISTORY_QUANTITIES, discrete_minus_continuum, exact_references_A, observed_orders
-from mdr_events.datasets import SIMULATION_VARIABLES
-from mdr_events.paths import Path
+from mdr_events.models import continuum
+from mdr_events.models.continuum import solve_path
+from mdr_events.analysis.convergence import HISTORY_QUANTITIES, discrete_minus_continuum, exact_references_A, observed_orders
+from mdr_events.io.datasets import SIMULATION_VARIABLES
+from mdr_events.models.paths import Path
 
 
 def events_of(solution, kind):
-    return [event for event in solution.events if event[1] == kind]
+    return [event for event in solution.events if event.kind == kind]
 
 
 @pytest.mark.parametrize("alpha", [5.0, 10.0, 15.0, 20.0, 22.0])
@@ -36,13 +36,13 @@ def test_scenario_A_above_the_critical_angle_no_slip_during_indentation(paper):
 def test_scenario_A_tangential_force_at_d_max_is_exact(paper, alpha):
     solution = solve_path(paper, Path.scenario_A(alpha, paper))
     corner = events_of(solution, "corner")[0][0]
-    out = me.continuum.evaluate(solution, np.array([corner]))
+    out = continuum.evaluate(solution, np.array([corner]))
     assert out["tangential_force"][0] == pytest.approx(exact_references_A(paper, alpha)["tangential_force_max"], rel=1e-8)
     # and the integrated F_x equals the algebraic form F_x = 2G* [c ū + ∫_c^a (x − Y) dξ]
     # (no re-sticking in scenario A, so the final anchor map is the one at d_max)
     a = out["contact_radius"][0]
     assert a == pytest.approx(float(me.jkr_contact_radius(paper.d_max, paper, paper.dgamma0)), rel=1e-12)
-    algebraic = me.continuum.algebraic_tangential_force(solution, np.array([corner]))[0]
+    algebraic = continuum.algebraic_tangential_force(solution, np.array([corner]))[0]
     assert out["tangential_force"][0] == pytest.approx(algebraic, rel=1e-9)
 
 
@@ -66,8 +66,8 @@ def test_integrated_tangential_force_equals_the_algebraic_form_along_a_general_p
     evaluated from the anchor map in force, at 400 times (1e-8 of the largest |F_x|)."""
     solution = solve_path(paper, Path(waypoints, paper.v))
     times = np.linspace(0.0, solution.end_time, 401)[:-1]
-    integrated = me.continuum.evaluate(solution, times)["tangential_force"]
-    algebraic = me.continuum.algebraic_tangential_force(solution, times)
+    integrated = continuum.evaluate(solution, times)["tangential_force"]
+    algebraic = continuum.algebraic_tangential_force(solution, times)
     scale = np.max(np.abs(algebraic))
     assert scale > 0
     np.testing.assert_allclose(integrated, algebraic, rtol=0, atol=1e-8 * scale)
@@ -75,7 +75,7 @@ def test_integrated_tangential_force_equals_the_algebraic_form_along_a_general_p
 
 
 def integrated_radius(solution, times):
-    return me.continuum.evaluate(solution, times)["contact_radius"]
+    return continuum.evaluate(solution, times)["contact_radius"]
 
 
 def test_pull_off_happens_at_the_jump_off_depth(paper):
@@ -109,7 +109,7 @@ def test_schema_event_log_and_round_trip(paper, tmp_path):
     assert ds["event_kind"].dims == ("alpha", "event")
     assert list(ds["event_kind"].sel(alpha=20.0).values[:3]) == ["first_contact", "corner", "detachment_starts"]
     logged = {str(kind) for kind in ds["event_kind"].values.ravel() if kind}
-    assert logged <= set(me.continuum.EVENT_KINDS)
+    assert logged <= set(continuum.EVENT_KINDS)
     path = me.write_netcdf(ds, tmp_path / "c.nc")
     xr.testing.assert_identical(me.open_result(path), ds)
     with pytest.raises(ValueError, match="strictly"):

@@ -7,10 +7,10 @@ import pytest
 import xarray as xr
 
 import mdr_events as me
-from mdr_events.convergence import discrete_errors, exact_references_A, observed_orders
-from mdr_events.datasets import SIMULATION_VARIABLES
-from mdr_events.paths import Path
-from mdr_events.simulate import FIGURE_ANGLES, simulate
+from mdr_events.analysis.convergence import discrete_errors, exact_references_A, observed_orders
+from mdr_events.io.datasets import SIMULATION_VARIABLES
+from mdr_events.models.paths import Path
+from mdr_events.models.simulate import FIGURE_ANGLES, simulate
 
 DX = 2e-6  # 1 550 springs per side at d_max for R = 30 mm
 
@@ -209,7 +209,7 @@ def test_pinned_radius_below_the_jump_off_radius_comes_off_at_once(paper):
     assert a0 < me.jump_off(p, p.dgamma1)["contact_radius"]
     release = float(me.jkr_depth(a0, p, p.dgamma1))
     for batch in ([shallow], [shallow, deep]):
-        from mdr_events.discrete import run_discrete
+        from mdr_events.models.discrete import run_discrete
         raw = run_discrete(p, batch, 0.5e-6, 0.05e-6 / p.v)
         radius = raw["contact_radius"][0]
         depth = raw["indentation_depth"][0]

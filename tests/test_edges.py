@@ -7,8 +7,9 @@ import pytest
 from scipy.optimize import brentq
 
 import mdr_events as me
-from mdr_events.continuum import solve_path
-from mdr_events.paths import Path
+from mdr_events.models import continuum
+from mdr_events.models.continuum import solve_path
+from mdr_events.models.paths import Path
 
 METHODS = ("continuum", "discrete")
 
@@ -171,7 +172,7 @@ def test_bad_inputs_name_the_argument_its_value_and_what_is_allowed(paper):
         (lambda: me.simulate(paper, "A", alpha=[30.0], t=[0.0, 1.0]), "t is not allowed with method='discrete'"),
         (lambda: me.simulate(paper, "A", alpha=[30.0], dx=1e-3), "dx=0.001 m puts 3 springs per side in contact"),
         (lambda: me.simulate(paper, "A", alpha=[30.0], dt=-1.0), "dt=-1.0 is not allowed"),
-        (lambda: me.continuum.Tolerances(rtol=0.0), "Tolerances.rtol=0.0 is not allowed"),
+        (lambda: continuum.Tolerances(rtol=0.0), "Tolerances.rtol=0.0 is not allowed"),
         (lambda: Path.from_segments([((0, 0), (0, 3e-4)), ((0, 2e-4), (1e-4, -1e-4))], 1e-6),
          "segments 0 and 1 do not connect"),
         (lambda: Path([(0, 0), (0, 0)], 1e-6), "coincide"),

@@ -7,7 +7,8 @@ import pytest
 import xarray as xr
 
 import mdr_events as me
-from mdr_events.datasets import atomic_write, write_netcdf
+from mdr_events.io import datasets
+from mdr_events.io.datasets import atomic_write, write_netcdf
 
 
 @pytest.fixture(scope="module")
@@ -34,7 +35,7 @@ def test_every_result_reads_back_identical(results, tmp_path, name):
     path = write_netcdf(dataset, tmp_path / f"{name}.nc")
     again = me.open_result(path)
     xr.testing.assert_identical(again, dataset)
-    assert me.datasets.parameters_of(again) == me.Parameters.paper()
+    assert datasets.parameters_of(again) == me.Parameters.paper()
     assert again.attrs["doi"] == me.DOI and again.attrs["program_version"] == me.__version__
     # and writing it again gives the same bytes (same input, same output)
     second = write_netcdf(again, tmp_path / f"{name}_again.nc")

@@ -6,7 +6,7 @@ import xarray as xr
 from scipy import optimize
 
 import mdr_events as me
-from mdr_events.plotting import plot_phase_diagram, save_figure
+from mdr_events.plotting.figures import plot_phase_diagram, save_figure
 
 # ----------------------------------------------------------------------------
 # The model's statements in plain math, independent of mdr_events.symbolic / analytic: the

@@ -13,7 +13,7 @@ from matplotlib.colors import to_hex
 
 import mdr_events as me
 from mdr_events.parameters import Parameters
-from mdr_events.plotting import INFERRED_FOOTNOTE, OVERLAY_MARKERS_PER_CURVE, plot_phase_diagram, plot_simulation
+from mdr_events.plotting.figures import INFERRED_FOOTNOTE, OVERLAY_MARKERS_PER_CURVE, plot_phase_diagram, plot_simulation
 
 #: A coarse angle grid: the phase diagrams are fast to compute on it.
 ANGLES = np.linspace(0.0, 90.0, 91)
@@ -112,7 +112,7 @@ def test_overlay_is_drawn_with_thinned_markers_in_a_contrasting_colour(continuum
 
 
 def test_simulation_figure_with_overlay_is_deterministic(continuum_paper, discrete_paper, tmp_path):
-    from mdr_events.plotting import save_figure
+    from mdr_events.plotting.figures import save_figure
 
     paths = [save_figure(plot_simulation(continuum_paper, overlay=discrete_paper), tmp_path / name)
              for name in ("one.png", "two.png")]

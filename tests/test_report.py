@@ -13,9 +13,9 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events import report
-from mdr_events.datasets import RESULT_RTOL, assert_results_agree, result_differences, write_netcdf
-from mdr_events.output import FileStatus
+from mdr_events.app import report
+from mdr_events.io.datasets import RESULT_RTOL, assert_results_agree, result_differences, write_netcdf
+from mdr_events.app.result_files import FileStatus
 
 ROOT = Path(__file__).parent.parent
 RESULTS = ROOT / "results"

@@ -4,8 +4,9 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events.cli import main
-from mdr_events.study import StudyError, load_study
+from mdr_events.io import datasets
+from mdr_events.app.cli import main
+from mdr_events.app.study import StudyError, load_study
 
 STUDY = """
 [parameters]
@@ -49,7 +50,7 @@ def test_run_writes_what_the_study_asks_for(tmp_path, capsys):
                      "demo_phase_diagram_B.png", "demo_simulation.nc", "demo_simulation.png",
                      "demo_simulation_events.csv"]
     ds = me.open_result(out / "demo_simulation.nc")
-    params = me.datasets.parameters_of(ds)
+    params = datasets.parameters_of(ds)
     assert params == me.Parameters.paper(R=0.1).replace(tau0=30e3)
     assert list(ds["alpha"].values) == [20.0, 60.0] and ds.sizes["time"] == 301
     assert ds.attrs["method"] == "continuum" and ds.attrs["scenario"] == "B"

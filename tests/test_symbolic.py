@@ -8,8 +8,10 @@ import pytest
 import sympy as sp
 from scipy import integrate, optimize
 
-from mdr_events import Parameters, symbolic
-from mdr_events.symbolic import relation
+from mdr_events import Parameters
+
+from mdr_events.theory import symbolic
+from mdr_events.theory.symbolic import relation
 
 R, E_STAR, G_STAR, TAU0, DGAMMA, D_MAX = 0.03, 0.432e6, 0.288e6, 42e3, 0.15, 0.3e-3
 

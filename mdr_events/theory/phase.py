@@ -7,9 +7,9 @@ from typing import Literal
 import numpy as np
 import xarray as xr
 
-from . import analytic
-from .datasets import stamp
-from .parameters import Parameters
+from mdr_events.theory import analytic
+from mdr_events.io.datasets import stamp
+from mdr_events.parameters import Parameters
 
 __all__ = ["phase_diagram", "default_angles"]
 

@@ -43,10 +43,10 @@ from dataclasses import dataclass, field
 from pathlib import Path as FilePath
 from typing import TYPE_CHECKING, Any, Callable
 
-from .parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
+from mdr_events.parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
 
 if TYPE_CHECKING:
-    from .output import FileOutcome
+    from mdr_events.app.result_files import FileOutcome
 
 __all__ = ["Study", "load_study", "run_study", "StudyError"]
 
@@ -171,10 +171,10 @@ def load_study(path: str | os.PathLike) -> Study:
 
 def run_study(study: Study, progress: Callable[[str], None] = print) -> list[FileOutcome]:
     """Compute what the study asks for and write it (netCDF + PNG, event log CSV); returns the files."""
-    from .continuum import Tolerances
-    from .output import write_phase_diagram, write_simulation
-    from .paths import Path
-    from .simulate import simulate
+    from mdr_events.models.continuum import Tolerances
+    from mdr_events.app.result_files import write_phase_diagram, write_simulation
+    from mdr_events.models.paths import Path
+    from mdr_events.models.simulate import simulate
 
     out = study.output_directory
     written: list[FileOutcome] = []

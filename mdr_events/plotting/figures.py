@@ -18,8 +18,8 @@ import numpy as np
 import xarray as xr
 from matplotlib.layout_engine import ConstrainedLayoutEngine
 
-from .datasets import atomic_write
-from .parameters import Parameters
+from mdr_events.io.datasets import atomic_write
+from mdr_events.parameters import Parameters
 
 __all__ = ["figure_png", "plot_phase_diagram", "plot_simulation", "save_figure"]
 

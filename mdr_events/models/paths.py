@@ -22,8 +22,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import analytic
-from .parameters import Parameters
+from mdr_events.theory import analytic
+from mdr_events.parameters import Parameters
 
 __all__ = ["Path", "exit_depth"]
 

@@ -22,8 +22,8 @@ from typing import Callable, NamedTuple
 import numpy as np
 import xarray as xr
 
-from .datasets import RESULT_RTOL, atomic_write, open_result, result_differences, write_netcdf
-from .parameters import Parameters
+from mdr_events.io.datasets import RESULT_RTOL, atomic_write, open_result, result_differences, write_netcdf
+from mdr_events.parameters import Parameters
 
 __all__ = ["FileStatus", "FileOutcome", "write_dataset", "write_figure", "write_text", "write_phase_diagram",
            "write_simulation", "event_log_csv", "describe_outcomes"]
@@ -80,7 +80,7 @@ def _same_pixels(old: bytes, new: bytes) -> bool:
 
 def write_figure(figure, path: str | os.PathLike, keep_agreeing: bool = False) -> FileOutcome:
     """Write a figure as PNG (:func:`mdr_events.plotting.figure_png`); kept if its pixels are unchanged."""
-    from .plotting import figure_png
+    from mdr_events.plotting.figures import figure_png
 
     return _write_if_new(Path(path), figure_png(figure), _same_pixels, keep_agreeing)
 
@@ -94,8 +94,8 @@ def write_phase_diagram(params: Parameters, scenario: str, out: str | os.PathLik
                         keep_agreeing: bool = False, attrs: dict[str, str] | None = None) -> list[FileOutcome]:
     """Compute the phase diagram (Fig. 9a/9b) and write ``stem.nc`` (with the extra ``attrs``) and
     ``stem.png``."""
-    from .phase import phase_diagram
-    from .plotting import plot_phase_diagram
+    from mdr_events.theory.phase import phase_diagram
+    from mdr_events.plotting.figures import plot_phase_diagram
 
     dataset = phase_diagram(params, scenario=scenario)
     dataset.attrs.update(attrs or {})
@@ -108,7 +108,7 @@ def write_simulation(dataset: xr.Dataset, out: str | os.PathLike, stem: str, ove
                      keep_agreeing: bool = False) -> list[FileOutcome]:
     """Write a simulation as ``stem.nc``, its figure (with ``overlay``) as ``stem.png`` and, for the
     continuum method, its event log as ``stem_events.csv``."""
-    from .plotting import plot_simulation
+    from mdr_events.plotting.figures import plot_simulation
 
     dataset, outcome = write_dataset(dataset, Path(out) / f"{stem}.nc", keep_agreeing)
     outcomes = [outcome, write_figure(plot_simulation(dataset, overlay=overlay), Path(out) / f"{stem}.png",

@@ -8,12 +8,12 @@ from typing import Literal, Sequence
 import numpy as np
 import xarray as xr
 
-from . import analytic
-from .continuum import Tolerances
-from .datasets import simulation_dataset
-from .discrete import check_spacing, run_discrete
-from .parameters import Parameters
-from .paths import Path
+from mdr_events.theory import analytic
+from mdr_events.models.continuum import Tolerances
+from mdr_events.io.datasets import simulation_dataset
+from mdr_events.models.discrete import check_spacing, run_discrete
+from mdr_events.parameters import Parameters
+from mdr_events.models.paths import Path
 
 __all__ = ["simulate", "scenario_paths", "FIGURE_ANGLES", "METHODS", "SCENARIO_NAMES"]
 
@@ -195,7 +195,7 @@ def simulate(
 
 
 def _simulate_continuum(params, scenario, paths, angles, t, samples, tolerances) -> xr.Dataset:
-    from .continuum import run_continuum
+    from mdr_events.models.continuum import run_continuum
 
     samples = DEFAULT_SAMPLES if samples is None else samples
     if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 2:

@@ -20,13 +20,13 @@ from typing import TYPE_CHECKING, Callable
 import numpy as np
 import xarray as xr
 
-from . import analytic
-from ._version import __version__
-from .datasets import DOI, RESULT_RTOL
-from .parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
+from mdr_events.theory import analytic
+from mdr_events._version import __version__
+from mdr_events.io.datasets import DOI, RESULT_RTOL
+from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 
 if TYPE_CHECKING:
-    from .output import FileOutcome
+    from mdr_events.app.result_files import FileOutcome
 
 __all__ = ["reproduce", "report_text", "compute", "Reproduction", "PAPER_CRITICAL_ANGLES", "software_versions",
            "recorded_versions", "RECORDED_PACKAGES"]
@@ -91,10 +91,10 @@ def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
 
     ``progress`` hears one message per step (:data:`COMPUTE_STEPS` of them).
     """
-    from .continuum import extremum, solve_path
-    from .convergence import discrete_errors, discrete_minus_continuum
-    from .crosscheck import cross_check
-    from .simulate import scenario_paths, simulate
+    from mdr_events.models.continuum import extremum, solve_path
+    from mdr_events.analysis.convergence import discrete_errors, discrete_minus_continuum
+    from mdr_events.analysis.crosscheck import cross_check
+    from mdr_events.models.simulate import scenario_paths, simulate
 
     say = progress or (lambda message: None)
     data = Reproduction()
@@ -332,7 +332,7 @@ def _differences_section(data: Reproduction) -> list[str]:
 
 
 def _convergence_section(data: Reproduction) -> list[str]:
-    from .convergence import HISTORY_QUANTITIES, observed_orders
+    from mdr_events.analysis.convergence import HISTORY_QUANTITIES, observed_orders
 
     names = {"normal_force_min": "F_N,min", "contact_area_max": "A_max", "tangential_force_max": "F_x,max"}
     lines = [
@@ -472,7 +472,7 @@ def reproduce(out: Path, progress: Callable[[str], None] = print, keep_agreeing:
     every other file was kept and its numbers are unchanged, so that ``git status`` stays clean on a
     machine whose rounding differs.
     """
-    from .output import FileStatus, describe_outcomes, write_dataset, write_phase_diagram, write_simulation, write_text
+    from mdr_events.app.result_files import FileStatus, describe_outcomes, write_dataset, write_phase_diagram, write_simulation, write_text
 
     out = Path(out)
     outcomes: list[FileOutcome] = []

@@ -16,8 +16,8 @@ from typing import Literal
 
 import numpy as np
 
-from . import symbolic
-from .parameters import Parameters
+from mdr_events.theory import symbolic
+from mdr_events.parameters import Parameters
 
 __all__ = [
     "d_crit",
@@ -41,6 +41,10 @@ SCENARIOS = ("A", "B")
 BRANCHES = ("pull-off", "indentation")
 
 _EPS = np.finfo(float).eps
+_FLOAT_EPS = float(_EPS)
+#: Scalar types recognised at once for the Python-float path of :func:`positive_polynomial_root`
+#: (``numpy.float64`` is a ``float``).
+_SCALARS = (float, int)
 
 
 def _rel(key: str):
@@ -128,7 +132,7 @@ def _upper_root_bound(coeffs: list) -> np.ndarray:
     return bound
 
 
-def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100) -> np.ndarray:
+def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100, rtol: float = 4 * _EPS):
     """Largest positive root of monic polynomials, vectorised over their coefficients.
 
     Parameters
@@ -142,11 +146,14 @@ def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100)
         polynomial with two positive roots).
     max_iterations : int
         Safety bound; convergence takes 4–8 iterations in practice.
+    rtol : float
+        Relative step at which the iteration stops (default 4 ulp).
 
     Returns
     -------
-    numpy.ndarray
-        The root, converged to a few ulps.
+    numpy.ndarray or float
+        The root, converged to ``rtol``; a ``float`` when every coefficient and
+        ``lower`` are scalars.
 
     Notes
     -----
@@ -156,10 +163,17 @@ def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100)
     monotonically onto the largest root. An element whose iterate ever falls
     where ``p < 0`` (an overshoot, so not convex there) is solved again with
     a bracketed Newton–bisection iteration on ``[lower, bound]``.
+
+    Scalars take the same iteration in Python floats (:func:`_scalar_root`), about
+    50 times faster than NumPy on one element: the continuum method calls it from
+    its right-hand side.
     """
-    coeffs = [np.asarray(cf, dtype=float) for cf in coefficients]
-    if len(coeffs) < 2:
+    if len(coefficients) < 2:
         raise ValueError("positive_polynomial_root needs a polynomial of degree >= 1")
+    if isinstance(lower, _SCALARS) and all(isinstance(cf, _SCALARS) for cf in coefficients) \
+            or np.ndim(lower) == 0 and all(np.ndim(cf) == 0 for cf in coefficients):
+        return _scalar_root([float(cf) for cf in coefficients], float(lower), max_iterations, rtol)
+    coeffs = [np.asarray(cf, dtype=float) for cf in coefficients]
     shape = np.broadcast_shapes(*[cf.shape for cf in coeffs], np.shape(lower))
     lower = np.broadcast_to(np.asarray(lower, dtype=float), shape)
     start = np.maximum(_upper_root_bound(coeffs), lower) * (1.0 + 8 * _EPS)
@@ -179,7 +193,7 @@ def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100)
         np.divide(value, slope, out=step)
         x -= step
         np.abs(x, out=tolerance)
-        tolerance *= 4 * _EPS
+        tolerance *= rtol
         overshoot |= step < -tolerance  # an upward step: p < 0 beyond rounding
         np.abs(step, out=step)
         if np.all(step <= tolerance):
@@ -189,6 +203,50 @@ def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100)
         x[redo] = _bracketed_root([np.broadcast_to(cf, shape)[redo] for cf in coeffs],
                                   lower[redo], start[redo], max_iterations)
     return x
+
+
+def _scalar_root(coeffs: list[float], lower: float, max_iterations: int, rtol: float) -> float:
+    """:func:`positive_polynomial_root` for one polynomial, in Python floats.
+
+    Newton's method descends from the bound of :func:`_upper_root_bound` (here for
+    floats, :func:`_scalar_upper_root_bound`) and never below ``lower``; an iterate
+    where ``p < 0`` (an overshoot) hands over to the bracketed iteration on
+    ``[lower, bound]``.
+    """
+    degree = len(coeffs) - 1
+    rtol = float(rtol)  # Python floats throughout: NumPy scalars would make every step ten times dearer
+    start = max(_scalar_upper_root_bound(coeffs), lower) * (1.0 + 8 * _FLOAT_EPS)
+    x = start
+    for _ in range(max_iterations):
+        value, slope = coeffs[0] * x + coeffs[1], coeffs[0]
+        for coefficient in coeffs[2:]:
+            slope = slope * x + value
+            value = value * x + coefficient
+        step = value / slope if slope > 0.0 else -math.inf
+        if step < -rtol * abs(x):  # an upward step: p < 0 beyond rounding (an overshoot), or a fold
+            root = _bracketed_root([np.array([cf]) for cf in coeffs], np.array([lower]), np.array([start]),
+                                   max_iterations)
+            return float(root[0])
+        x_new = max(x - step, lower)
+        if abs(x_new - x) <= rtol * abs(x_new) or degree == 0:
+            return x_new
+        x = x_new
+    return x
+
+
+def _scalar_upper_root_bound(coeffs: list[float]) -> float:
+    """:func:`_upper_root_bound` of one polynomial, in floats (the same rule, term by term)."""
+    present = [i for i, cf in enumerate(coeffs) if cf != 0.0]
+    bound = math.inf
+    nothing_negative_above = True
+    for j in present[:-1]:
+        cj = coeffs[j]
+        lower = [i for i in present if i > j]
+        if cj > 0.0 and (nothing_negative_above or j == 0):
+            candidate = max((len(lower) * abs(coeffs[i]) / cj) ** (1.0 / (i - j)) for i in lower)
+            bound = candidate if j == 0 else min(bound, candidate)
+        nothing_negative_above = nothing_negative_above and cj >= 0.0
+    return bound
 
 
 def _bracketed_root(coeffs, lo, hi, max_iterations):

@@ -35,9 +35,11 @@ from typing import Callable
 
 import numpy as np
 
-from . import analytic, symbolic
-from .parameters import Parameters
-from .paths import Path
+from mdr_events.theory import analytic
+
+from mdr_events.theory import symbolic
+from mdr_events.parameters import Parameters
+from mdr_events.models.paths import Path
 
 __all__ = ["run_discrete", "paraboloid_profile", "MIN_SPRINGS_IN_CONTACT"]
 

@@ -25,10 +25,10 @@ import math
 import numpy as np
 import xarray as xr
 
-from . import analytic
-from .datasets import stamp
-from .parameters import Parameters
-from .simulate import simulate
+from mdr_events.theory import analytic
+from mdr_events.io.datasets import stamp
+from mdr_events.parameters import Parameters
+from mdr_events.models.simulate import simulate
 
 __all__ = ["cross_check"]
 

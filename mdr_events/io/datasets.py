@@ -16,8 +16,8 @@ from typing import Any, Callable
 import numpy as np
 import xarray as xr
 
-from ._version import __version__
-from .parameters import Parameters
+from mdr_events._version import __version__
+from mdr_events.parameters import Parameters
 
 __all__ = ["DOI", "REFERENCE", "stamp", "atomic_write", "write_netcdf", "open_result", "parameters_of",
            "RESULT_RTOL", "result_differences", "assert_results_agree"]

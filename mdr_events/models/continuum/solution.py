@@ -1,0 +1,218 @@
+"""The continuum solution of a path: spans with their interpolants and the event log, and what is read
+off them (:func:`evaluate`, :func:`extremum`, :func:`algebraic_tangential_force`)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy import optimize
+
+from mdr_events.theory import analytic
+from mdr_events.parameters import Parameters
+from .model import ContinuumModel
+from .span import Span, Variable
+from .state import CONTACT_ENDING, Event, Regime
+
+
+@dataclass
+class PathSolution:
+    """The continuum solution of one path.
+
+    Attributes
+    ----------
+    model : ContinuumModel
+        The branches and the cap the spans are evaluated with.
+    spans : list of Span
+        Consecutive spans, each with one radius regime and the interpolant of ``F_x``.
+    events : list of Event
+        The event log (times from first contact).
+    mirrored : bool
+        The path's ``x`` never increases: it was solved mirrored (``x → −x``), and is reported back.
+    t_contact : float
+        Time of first contact on the path (s); the solution's times count from it.
+    end_time : float
+        End of the run (s from first contact): the pull-off, or the end of the path.
+    """
+
+    model: ContinuumModel
+    spans: list[Span] = field(default_factory=list)
+    events: list[Event] = field(default_factory=list)
+    mirrored: bool = False
+    t_contact: float = 0.0
+    end_time: float = 0.0
+
+    @property
+    def params(self) -> Parameters:
+        return self.model.params
+
+    @property
+    def sign(self) -> float:
+        """``-1`` for a mirrored path: tangential quantities are reported with this sign."""
+        return -1.0 if self.mirrored else 1.0
+
+    @property
+    def ended_by_contact(self) -> bool:
+        """The run ended because the contact came apart (not at the end of the path)."""
+        return bool(self.events) and self.events[-1].kind in CONTACT_ENDING
+
+    def span_index(self, times: np.ndarray) -> np.ndarray:
+        """Index of the span that holds each time (s from first contact): the first span ending at or
+        after it (the last span for times beyond the run)."""
+        ends = np.array([span.t_end for span in self.spans]) - self.t_contact
+        return np.minimum(np.searchsorted(ends, np.asarray(times, dtype=float), side="left"), len(self.spans) - 1)
+
+
+#: Quantities :func:`evaluate` fills, in its output order.
+EVALUATED_QUANTITIES = ("indentation_depth", "tangential_displacement", "normal_force", "tangential_force",
+                        "contact_radius", "sliding_fraction")
+
+
+def evaluate_span(solution: PathSolution, index: int, times: np.ndarray) -> dict[str, np.ndarray]:
+    """Every quantity of :data:`EVALUATED_QUANTITIES` at ``times`` (s from first contact) within span
+    ``index``, as a vectorised function of time: the kinematics are linear, the radius follows its
+    branch of (9) (or is pinned), ``F_N`` is (10), ``F_x`` is the span's interpolant and the sliding
+    fraction is the slip front of the span's anchor map."""
+    model = solution.model
+    span = solution.spans[index]
+    t = solution.t_contact + np.asarray(times, dtype=float)
+    d, x = span.segment.d(t), span.segment.x(t)
+    out = {"indentation_depth": d, "tangential_displacement": solution.sign * x}
+    if span.regime is Regime.NONE:
+        zero = np.zeros(t.shape)
+        out.update(normal_force=zero, tangential_force=zero, contact_radius=zero,
+                   sliding_fraction=np.full(t.shape, np.nan))
+        return out
+    if span.regime is Regime.GROWING:  # d >= 0 there; the first sample may sit at -0 to rounding
+        a = model.grow.radii(np.maximum(d, 0.0))
+    elif span.regime is Regime.SHRINKING:  # the last sample may sit on the fold to rounding
+        a = model.shrink.radii(np.maximum(d, model.shrink.jump_off_depth))
+    else:
+        a = np.full(t.shape, span.pinned_radius)
+    out["contact_radius"] = a
+    out["normal_force"] = np.asarray(analytic.normal_force(d, a, solution.params), dtype=float)  # (10)
+    if span.interpolant is None:
+        force = np.full(t.shape, span.force)
+    else:
+        force = span.interpolant(a if span.variable is Variable.RADIUS else t)[0]
+    out["tangential_force"] = solution.sign * force
+    with np.errstate(invalid="ignore", divide="ignore"):
+        out["sliding_fraction"] = np.where(a > 0, span.anchors.fronts(x - model.K * a, a) / a, np.nan)
+    return out
+
+
+def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]:
+    """Fill a time grid (s from first contact) span by span (:func:`evaluate_span`).
+
+    Samples after the end of the run are ``nan``, except the first sample after a pull-off, which
+    shows the contact gone (forces and radius 0).
+    """
+    times = np.asarray(times, dtype=float)
+    out = {name: np.full(len(times), np.nan) for name in EVALUATED_QUANTITIES}
+    inside = times <= solution.end_time
+    owner = solution.span_index(times)
+    after_end = np.flatnonzero(~inside)
+    if solution.ended_by_contact and after_end.size:
+        first = after_end[0]
+        last = solution.spans[-1].segment
+        t = solution.t_contact + times[first]
+        out["indentation_depth"][first] = last.d(t)
+        out["tangential_displacement"][first] = solution.sign * last.x(t)
+        for name in ("normal_force", "tangential_force", "contact_radius"):
+            out[name][first] = 0.0
+    for index in range(len(solution.spans)):
+        rows = np.flatnonzero(inside & (owner == index))
+        if rows.size:
+            for name, values in evaluate_span(solution, index, times[rows]).items():
+                out[name][rows] = values
+    return out
+
+
+#: Quantities :func:`extremum` finds the extremes of; the means are per contact area ``π a²``.
+EXTREMUM_QUANTITIES = ("normal_force", "tangential_force", "contact_radius", "contact_area",
+                       "mean_pressure", "mean_shear_stress")
+#: Points per span at which :func:`extremum` brackets an extremum before refining it.
+EXTREMUM_GRID = 65
+#: Span-relative time accuracy of the refined extremum; the value is then exact to rounding
+#: (it is flat there: its error is second order in the time error).
+EXTREMUM_XTOL = 1e-12
+
+
+def _quantity(filled: dict[str, np.ndarray], quantity: str) -> np.ndarray:
+    if quantity in filled:
+        return filled[quantity]
+    area = np.pi * filled["contact_radius"] ** 2
+    if quantity == "contact_area":
+        return area
+    force = filled["normal_force" if quantity == "mean_pressure" else "tangential_force"]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(area > 0, force / area, np.nan)
+
+
+def extremum(solution: PathSolution, quantity: str, largest: bool = True) -> tuple[float, float]:
+    """The largest (or smallest) value of ``quantity`` along the run and the time it is reached
+    (s from first contact), from the solution itself, not from samples.
+
+    Each span's quantities are smooth in time; the extremum of a span is at one of its ends or
+    inside it, where a scan of :data:`EXTREMUM_GRID` points brackets it (within one grid interval of
+    the best point, at an end too) and a bounded Brent search refines it to :data:`EXTREMUM_XTOL`
+    of the span's length. The means (``mean_pressure``, ``mean_shear_stress``) are taken over the
+    spans in contact.
+
+    Parameters
+    ----------
+    solution : PathSolution
+    quantity : str
+        One of :data:`EXTREMUM_QUANTITIES`.
+    largest : bool
+        ``True`` for the maximum, ``False`` for the minimum.
+    """
+    if quantity not in EXTREMUM_QUANTITIES:
+        raise ValueError(f"quantity={quantity!r} is not allowed; allowed: {', '.join(EXTREMUM_QUANTITIES)}")
+    sign = 1.0 if largest else -1.0
+    best_time, best_value = math.nan, -math.inf
+    for index, span in enumerate(solution.spans):
+        lower, upper = span.t_start - solution.t_contact, span.t_end - solution.t_contact
+        times = np.linspace(lower, upper, EXTREMUM_GRID if upper > lower else 1)
+        values = sign * _quantity(evaluate_span(solution, index, times), quantity)
+        if not np.any(np.isfinite(values)):
+            continue
+        i = int(np.nanargmax(values))
+        time, value = float(times[i]), float(values[i])
+        if len(times) > 1:
+            def objective(s: float) -> float:
+                return -sign * float(_quantity(evaluate_span(solution, index, np.array([s])), quantity)[0])
+
+            bracket = (times[max(i - 1, 0)], times[min(i + 1, len(times) - 1)])
+            refined = optimize.minimize_scalar(objective, bounds=bracket, method="bounded",
+                                               options={"xatol": EXTREMUM_XTOL * (upper - lower)})
+            if -refined.fun > value:
+                time, value = float(refined.x), float(-refined.fun)
+        if value > best_value:
+            best_time, best_value = time, value
+    return best_time, sign * best_value
+
+
+def algebraic_tangential_force(solution: PathSolution, times: np.ndarray) -> np.ndarray:
+    """``F_x = 2G* [c ū + ∫_c^a (x − Y) dξ]`` from each span's anchor map, without integration.
+
+    The independent check of :func:`evaluate`'s integrated ``F_x`` (same time convention, s from
+    first contact; ``nan`` after the end of the run).
+    """
+    model = solution.model
+    times = np.asarray(times, dtype=float)
+    filled = evaluate(solution, times)
+    owner = solution.span_index(times)
+    out = np.full(len(times), np.nan)
+    for i, t_rel in enumerate(times):
+        if not t_rel <= solution.end_time:
+            continue
+        span = solution.spans[owner[i]]
+        a = filled["contact_radius"][i]
+        if span.regime is Regime.NONE or not a > 0:
+            out[i] = 0.0
+            continue
+        x = solution.sign * filled["tangential_displacement"][i]
+        out[i] = solution.sign * span.anchors.tangential_force(model.K, solution.params.G_star, x, a)
+    return out

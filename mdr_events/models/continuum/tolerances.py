@@ -1,0 +1,50 @@
+"""Tolerances of the continuum method: the user's (:class:`Tolerances`) and the fixed, named ones."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+#: A velocity component below this share of the speed is taken as zero (a segment that changes its
+#: depth by 1e-90 m over 0.3 mm is a pinned slide: its growth ratio vx/vd would overflow the anchor map).
+NEGLIGIBLE_SHARE = 1e-12
+#: Depths within this share of ``d_max`` of a branch count as on it (first contact at ``d = -0``, a
+#: regime switch at a depth found by a root).
+DEPTH_SHARE = 1e-12
+#: Rising slip events cross a level this many ulp of the lengths involved above zero (see
+#: :class:`~mdr_events.models.continuum.span.SpanIntegrator`).
+LEVEL_ULPS = 16
+#: A slip front within this share of the lengths involved of a piece's end is in the next piece.
+PIECE_SHARE = 1e-9
+#: Event roots this close (relative) fire together.
+SIMULTANEOUS_SHARE = 1e-12
+#: A radius that drops by more than this share at the start of detachment drops onto the Δγ1 branch.
+RADIUS_DROP_SHARE = 1e-12
+#: Restarts allowed at one instant before the solver reports it is stuck (each restart handles one event).
+MAX_RESTARTS = 50
+#: Machine epsilon of the floats used.
+EPS = float(np.finfo(float).eps)
+
+
+@dataclass(frozen=True)
+class Tolerances:
+    """Solver tolerances of the continuum method.
+
+    Attributes
+    ----------
+    rtol, atol : float
+        Relative tolerance and absolute tolerance (N) of ``solve_ivp`` for ``F_x``.
+    radius_rtol : float
+        Relative accuracy of the contact radius and slip front root-finding.
+    """
+
+    rtol: float = 1e-10
+    atol: float = 1e-14
+    radius_rtol: float = 1e-14
+
+    def __post_init__(self) -> None:
+        for name in ("rtol", "atol", "radius_rtol"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not (0 < value < 1):
+                raise ValueError(f"Tolerances.{name}={value!r} is not allowed; allowed: a number in (0, 1)")
