@@ -6,14 +6,21 @@ paraboloid pressed into and pulled off an elastomer along a straight path at
 an angle, with Heß's adhesion rule (two works of adhesion) and a
 spring-slip criterion.
 
-Layers (data flows one way):
-``parameters`` → ``symbolic`` (SymPy derivations) → ``analytic`` (closed
-forms, phase diagrams) / ``continuum`` (event-driven, exact) / ``discrete``
-(the paper's springs) → ``simulate``, ``crosscheck`` → ``datasets`` (xarray,
-netCDF) → ``output``, ``plotting``, ``report``, ``study`` and ``cli``.
+Layers, bottom to top (a module imports only from its own layer or those
+below; ``tests/test_layers.py`` checks it): ``parameters`` and ``validation``
+→ ``io`` (``datasets``: stamp, result schemas, comparison; ``files``: netCDF
+in and out) → ``theory`` (``symbolic`` SymPy derivations, ``analytic`` closed
+forms, ``phase`` diagrams) → ``models`` (``paths``, ``discrete`` springs,
+``continuum`` event-driven and exact, ``simulate``) → ``analysis``
+(``crosscheck``, ``convergence``) → ``plotting`` → ``app`` (``cli``,
+``study``, ``report``, ``result_files``).
 """
 
 from mdr_events._version import __version__
+from mdr_events.parameters import Parameters
+from mdr_events.io.datasets import DOI
+from mdr_events.io.files import open_result, write_netcdf
+from mdr_events.theory import analytic, symbolic
 from mdr_events.theory.analytic import (
     critical_angle,
     critical_shift,
@@ -24,16 +31,15 @@ from mdr_events.theory.analytic import (
     jump_off,
     pull_off_force,
 )
-from mdr_events.analysis.crosscheck import cross_check
-from mdr_events.io.datasets import DOI, open_result, write_netcdf
-from mdr_events.parameters import Parameters
-from mdr_events.models.paths import Path
-from mdr_events.theory.phase import phase_diagram
-from mdr_events.models.simulate import simulate
-from mdr_events.app.study import load_study, run_study
 from mdr_events.models import continuum
 from mdr_events.models.continuum import Tolerances
-from mdr_events.theory import analytic, symbolic
+from mdr_events.models.paths import Path
+# The three modules that make results register their schemas when imported, so that open_result
+# knows every kind of result whatever a user imports (any import of mdr_events.* runs this file first).
+from mdr_events.theory.phase import phase_diagram
+from mdr_events.models.simulate import simulate
+from mdr_events.analysis.crosscheck import cross_check
+from mdr_events.app.study import load_study, run_study
 
 __all__ = [
     "__version__",

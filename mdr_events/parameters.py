@@ -13,6 +13,8 @@ import numbers
 from dataclasses import dataclass
 from typing import Any, Mapping
 
+from mdr_events.validation import check_choice
+
 __all__ = ["Parameters", "PARAMETER_UNITS", "PARAMETER_LONG_NAMES", "PRESETS", "from_preset"]
 
 #: SI unit of every field, used for dataset attributes and the CLI help.
@@ -236,8 +238,7 @@ def from_preset(preset: str, **overrides: float) -> tuple[Parameters, dict[str, 
     ``parameters_preset`` (the preset's name) and ``parameters_from_preset`` (the fields whose values
     came from the preset rather than from the user, comma-separated; "" if the user gave all).
     """
-    if preset not in PRESETS:
-        raise ValueError(f"preset={preset!r} is not allowed; allowed: {', '.join(map(repr, PRESETS))}")
+    check_choice("preset", preset, PRESETS)
     params = Parameters.paper(R=PRESETS[preset])
     params = params.replace(**overrides) if overrides else params
     taken = [name for name in PARAMETER_UNITS if name not in overrides]

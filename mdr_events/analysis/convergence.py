@@ -26,6 +26,7 @@ from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from mdr_events.models.continuum import NEGLIGIBLE_SHARE
 from mdr_events.models.discrete import run_discrete
+from mdr_events.models.simulate import simulate
 
 __all__ = ["exact_references_A", "discrete_errors", "discrete_minus_continuum", "history_differences",
            "compared_samples", "first_order_error_bound", "observed_orders"]
@@ -296,8 +297,6 @@ def discrete_minus_continuum(params: Parameters, scenario, alpha: float, spacing
         Quantity name (:data:`HISTORY_QUANTITIES`) → relative differences,
         one per spacing; ``"samples_left_out"`` → counts, one per spacing.
     """
-    from mdr_events.models.simulate import simulate
-
     out = {name: [] for name in (*HISTORY_QUANTITIES, "samples_left_out")}
     for dx in spacings:
         discrete = simulate(params, scenario, alpha=[alpha], dx=dx, dt=steps_per_spacing * dx / params.v)

@@ -25,12 +25,31 @@ import math
 import numpy as np
 import xarray as xr
 
-from mdr_events.theory import analytic
-from mdr_events.io.datasets import stamp
-from mdr_events.parameters import Parameters
+from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.simulate import simulate
+from mdr_events.parameters import Parameters
+from mdr_events.theory import analytic
+from mdr_events.validation import check_choice
 
-__all__ = ["cross_check"]
+__all__ = ["cross_check", "CROSS_CHECK_CONTENT", "CROSS_CHECK_VARIABLES"]
+
+#: The ``content`` attribute of a cross-check of the slip onset.
+CROSS_CHECK_CONTENT = "slip-onset cross-check"
+#: Its variables, each along ``alpha``: name -> (units, long_name). ``{equation}`` and ``{dx}`` in a long
+#: name are filled in from the result's scenario and spring spacing.
+CROSS_CHECK_VARIABLES: dict[str, tuple[str, str]] = {
+    "d_crit_closed_form": ("m", "slip onset, eq. {equation}"),
+    "d_crit_continuum": ("m", "slip onset, continuum method"),
+    "d_crit_discrete": ("m", "slip onset, discrete springs (dx = {dx:g} m)"),
+    "closed_form_minus_continuum": ("m", "closed form − continuum"),
+    "discrete_minus_continuum": ("m", "discrete − continuum"),
+    "discrete_tolerance": ("m", "3 K dx + one time step of depth"),
+    "pinned_radius": ("1", "1: slip while the radius is pinned ((21) does not apply)"),
+    "found_once_at_phase_end": ("1", "1: only one method slips, within the discrete tolerance of d_max (A) or "
+                                     "the jump-off (B)"),
+    "disagree": ("1", "1: a difference exceeds its tolerance"),
+}
+register_schema(CROSS_CHECK_CONTENT, {name: ("alpha",) for name in CROSS_CHECK_VARIABLES})
 
 
 def _first_slip(ds: xr.Dataset, scenario: str, params: Parameters) -> np.ndarray:
@@ -45,31 +64,67 @@ def _first_slip(ds: xr.Dataset, scenario: str, params: Parameters) -> np.ndarray
     return np.array(depths)
 
 
-def cross_check(params: Parameters, scenario: str = "A", alpha=(10.0, 15.0, 20.0), dx: float = 2e-6,
-                n_steps: int = 10_000) -> xr.Dataset:
-    """Slip-onset depth from (18)/(21), the continuum and the discrete model, with differences and flags."""
-    analytic._check_choice("scenario", scenario, analytic.SCENARIOS)
-    angles = np.atleast_1d(np.asarray(alpha, dtype=float))
-    closed = np.atleast_1d(analytic.d_crit(angles, params, scenario, adhesion=True))
-    continuum_ds = simulate(params, scenario, alpha=angles, method="continuum")
+def _continuum_slip_onset(continuum_ds: xr.Dataset, scenario: str) -> np.ndarray:
+    """The depth of the first ``slip_onset`` in each case's event log (scenario A: before the corner)."""
     onset = []
-    for i in range(len(angles)):
+    for i in range(continuum_ds.sizes["alpha"]):
         kinds = continuum_ds["event_kind"].values[i]
         hits = np.flatnonzero(kinds == "slip_onset")
         if scenario == "A":  # during indentation only
             corner = np.flatnonzero(kinds == "corner")
             hits = hits[hits < corner[0]] if corner.size else hits
         onset.append(float(continuum_ds["event_depth"].values[i, hits[0]]) if hits.size else math.nan)
-    continuum = np.array(onset)
+    return np.array(onset)
+
+
+def _pinned_radius(params: Parameters, scenario: str, K: np.ndarray) -> np.ndarray:
+    """1 where the springs slide while the radius is still pinned at ``a(d_max; Δγ0)`` (scenario B), else 0."""
+    if scenario != "B":
+        return np.zeros(len(K), dtype=int)
+    a0 = float(analytic.jkr_contact_radius(params.d_max, params, params.dgamma0))
+    release = float(analytic.jkr_depth(a0, params, params.dgamma1))
+    return (params.d_max - K * a0 >= release).astype(int)
+
+
+def _cross_check_dataset(angles: np.ndarray, values: dict[str, np.ndarray], scenario: str,
+                         dx: float) -> xr.Dataset:
+    """The :data:`CROSS_CHECK_VARIABLES` along ``alpha``, labelled for ``scenario`` and ``dx``."""
+    fill = {"equation": "(18)" if scenario == "A" else "(21)", "dx": dx}
+    variables = {name: ("alpha", values[name], {"units": units, "long_name": long_name.format(**fill)})
+                 for name, (units, long_name) in CROSS_CHECK_VARIABLES.items()}
+    return xr.Dataset(variables, coords={
+        "alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})})
+
+
+def cross_check(params: Parameters, scenario: str = "A", alpha=(10.0, 15.0, 20.0), dx: float = 2e-6,
+                n_steps: int = 10_000) -> xr.Dataset:
+    """Slip-onset depth from (18)/(21), the continuum and the discrete model, with differences and flags.
+
+    Parameters
+    ----------
+    params : Parameters
+    scenario : {"A", "B"}
+        ``"A"``: the slip onset during indentation, eq. (18); ``"B"``: during pull-off, eq. (21).
+    alpha : sequence of float
+        Path angles in degrees.
+    dx, n_steps : float, int
+        The discrete model's spring spacing (m) and number of time steps.
+
+    Returns
+    -------
+    xarray.Dataset
+        The variables of :data:`CROSS_CHECK_VARIABLES` along ``alpha`` (see the module's docstring).
+    """
+    check_choice("scenario", scenario, analytic.SCENARIOS)
+    angles = np.atleast_1d(np.asarray(alpha, dtype=float))
+    closed = np.atleast_1d(analytic.d_crit(angles, params, scenario, adhesion=True))
+    continuum_ds = simulate(params, scenario, alpha=angles, method="continuum")
+    continuum = _continuum_slip_onset(continuum_ds, scenario)
     discrete = _first_slip(simulate(params, scenario, alpha=angles, dx=dx, n_steps=n_steps), scenario, params)
     K = np.tan(np.radians(angles)) * float(analytic.critical_shift(1.0, params))
     step = params.v * (np.nanmax(continuum_ds["time"].values) / n_steps) * np.sin(np.radians(angles))
     discrete_tolerance = 3 * K * dx + step
-    pinned = np.zeros(len(angles), dtype=int)
-    if scenario == "B":
-        a0 = float(analytic.jkr_contact_radius(params.d_max, params, params.dgamma0))
-        release = float(analytic.jkr_depth(a0, params, params.dgamma1))
-        pinned = (params.d_max - K * a0 >= release).astype(int)
+    pinned = _pinned_radius(params, scenario, K)
     # a slip that one method finds and the other does not disagrees, unless it falls within the
     # discrete tolerance of the end of the phase (d_max in A, the jump-off in B), which the two
     # methods meet up to Δx apart
@@ -82,20 +137,16 @@ def cross_check(params: Parameters, scenario: str = "A", alpha=(10.0, 15.0, 20.0
         flag = ((closed_vs_continuum > 1e-9 * np.abs(continuum)) | (discrete_vs_continuum > discrete_tolerance)
                 | (found_once & ~at_phase_end)).astype(int)
         at_end = (found_once & at_phase_end).astype(int)
-    dim = "alpha"
-    ds = xr.Dataset(
-        {
-            "d_crit_closed_form": (dim, closed, {"units": "m", "long_name": f"slip onset, eq. {'(18)' if scenario == 'A' else '(21)'}"}),
-            "d_crit_continuum": (dim, continuum, {"units": "m", "long_name": "slip onset, continuum method"}),
-            "d_crit_discrete": (dim, discrete, {"units": "m", "long_name": f"slip onset, discrete springs (dx = {dx:g} m)"}),
-            "closed_form_minus_continuum": (dim, closed - continuum, {"units": "m", "long_name": "closed form − continuum"}),
-            "discrete_minus_continuum": (dim, discrete - continuum, {"units": "m", "long_name": "discrete − continuum"}),
-            "discrete_tolerance": (dim, discrete_tolerance, {"units": "m", "long_name": "3 K dx + one time step of depth"}),
-            "pinned_radius": (dim, pinned, {"units": "1", "long_name": "1: slip while the radius is pinned ((21) does not apply)"}),
-            "found_once_at_phase_end": (dim, at_end, {"units": "1", "long_name": "1: only one method slips, within "
-                                                       "the discrete tolerance of d_max (A) or the jump-off (B)"}),
-            "disagree": (dim, flag, {"units": "1", "long_name": "1: a difference exceeds its tolerance"}),
-        },
-        coords={dim: (dim, angles, {"units": "degree", "long_name": "path angle to the surface"})},
-    )
-    return stamp(ds, params, scenario=scenario, dx=dx, n_steps=n_steps, content="slip-onset cross-check")
+    values = {
+        "d_crit_closed_form": closed,
+        "d_crit_continuum": continuum,
+        "d_crit_discrete": discrete,
+        "closed_form_minus_continuum": closed - continuum,
+        "discrete_minus_continuum": discrete - continuum,
+        "discrete_tolerance": discrete_tolerance,
+        "pinned_radius": pinned,
+        "found_once_at_phase_end": at_end,
+        "disagree": flag,
+    }
+    return stamp(_cross_check_dataset(angles, values, scenario, dx), params, scenario=scenario, dx=dx,
+                 n_steps=n_steps, content=CROSS_CHECK_CONTENT)

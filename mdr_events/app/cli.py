@@ -8,13 +8,18 @@ from __future__ import annotations
 
 import argparse
 import sys
-
-import matplotlib
 from pathlib import Path
 from typing import Sequence
 
-from mdr_events.app.result_files import describe_outcomes, write_phase_diagram, write_simulation
+import matplotlib
+
+from mdr_events._version import __version__
+from mdr_events.app.report import reproduce
+from mdr_events.app.result_files import write_phase_diagram, write_simulation
+from mdr_events.app.study import load_study, run_study
+from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES, simulate
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters, from_preset
+from mdr_events.theory import symbolic
 
 #: The first line of ``mdr-events --help`` (plain text: argparse prints it as it is).
 DESCRIPTION = ("Adhesive indentation and detachment at an angle with the Method of Dimensionality Reduction "
@@ -49,8 +54,6 @@ def _progress(message: str) -> None:
 
 
 def _command_derive(args: argparse.Namespace) -> None:
-    from mdr_events.theory import symbolic
-
     rels = symbolic.relations()
     keys = [args.key] if args.key else list(rels)
     for key in keys:
@@ -69,8 +72,6 @@ def _command_phase_diagram(args: argparse.Namespace) -> None:
 
 
 def _command_simulate(args: argparse.Namespace) -> None:
-    from mdr_events.models.simulate import simulate
-
     params, provenance = _parameters(args)
     # the options of the discrete method are passed only when given, so that simulate() rejects them
     # with the continuum method exactly as it does in Python
@@ -83,22 +84,16 @@ def _command_simulate(args: argparse.Namespace) -> None:
 
 
 def _command_run(args: argparse.Namespace) -> None:
-    from mdr_events.app.study import load_study, run_study
-
     for outcome in run_study(load_study(args.study), progress=_progress):
         print(outcome.path)
 
 
 def _command_reproduce(args: argparse.Namespace) -> None:
-    from mdr_events.app.report import reproduce
-
     reproduce(Path(args.out), progress=_progress, keep_agreeing=not args.rewrite)
 
 
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="mdr-events", description=DESCRIPTION)
-    from mdr_events._version import __version__
-
     parser.add_argument("--version", action="version", version=f"mdr_events {__version__}")
     commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
 
@@ -112,8 +107,6 @@ def build_parser() -> argparse.ArgumentParser:
     phase.add_argument("--out", required=True, help="output directory")
     _parameter_options(phase)
     phase.set_defaults(run=_command_phase_diagram)
-
-    from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES
 
     sim = commands.add_parser("simulate", help="simulate Fig. 8 (A) / Fig. 10 (B); write .nc and .png")
     sim.add_argument("--scenario", choices=list(SCENARIO_NAMES), required=True)
@@ -130,7 +123,7 @@ def build_parser() -> argparse.ArgumentParser:
     _parameter_options(sim)
     sim.set_defaults(run=_command_simulate)
 
-    run = commands.add_parser("run", help="run a study described in a TOML file (see mdr_events.study)")
+    run = commands.add_parser("run", help="run a study described in a TOML file (see mdr_events.app.study)")
     run.add_argument("study", help="the study file, e.g. study.toml")
     run.set_defaults(run=_command_run)
 
@@ -147,8 +140,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         args = build_parser().parse_args(argv)
         if getattr(args, "key", None):
-            from mdr_events.theory import symbolic
-
             symbolic.relation(args.key)
         matplotlib.use("Agg")  # the CLI writes figures to files only: no window, whatever the user's default
         args.run(args)

@@ -5,6 +5,9 @@ Everything in ``results/`` is written by :func:`reproduce`, deterministically
 with a fresh computation. The figures of the simulations come from the
 continuum method, with the paper's discrete spring model overlaid for one
 angle; the report puts the section's stated numbers beside ours.
+
+What the report says is computed in :mod:`mdr_events.app.report_data`; this
+module only writes it as markdown.
 """
 
 from __future__ import annotations
@@ -13,129 +16,32 @@ import importlib.metadata
 import math
 import platform
 import re
-from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Callable
+from typing import Callable
 
-import numpy as np
-import xarray as xr
-
-from mdr_events.theory import analytic
 from mdr_events._version import __version__
+from mdr_events.app.report_data import (COMPUTE_STEPS, CONVERGENCE_SPACINGS, FIGURE_DX, FIGURE_NUMBERS,
+                                        FIGURE_STEPS, HISTORY_ANGLE, HISTORY_SPACINGS, OVERLAY_ANGLE,
+                                        PAPER_CRITICAL_ANGLES, PAPER_TAU0, RADII, AdhesiveStrengthRow,
+                                        AreaGrowthRow, ConvergenceRow, CriticalAngleRow, CrossCheckRow, Differences,
+                                        HistoryConvergence, MaximaRow, PinnedIntervalRow, Reproduction,
+                                        ScenarioBAngleRow, ShearPlateauRow, SlipOnsetVerdict, compute,
+                                        critical_angles_A, critical_angles_B, cross_check_rows, differences,
+                                        extremum_convergence, history_convergence, jobs)
+from mdr_events.app.result_files import (FileOutcome, FileStatus, describe_outcomes, write_dataset,
+                                         write_phase_diagram, write_simulation, write_text)
 from mdr_events.io.datasets import DOI, RESULT_RTOL
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 
-if TYPE_CHECKING:
-    from mdr_events.app.result_files import FileOutcome
+__all__ = ["reproduce", "report_text", "compute", "Reproduction", "PAPER_CRITICAL_ANGLES", "RADII", "FIGURE_NUMBERS",
+           "software_versions", "recorded_versions", "RECORDED_PACKAGES"]
 
-__all__ = ["reproduce", "report_text", "compute", "Reproduction", "PAPER_CRITICAL_ANGLES", "software_versions",
-           "recorded_versions", "RECORDED_PACKAGES"]
-
-#: Critical angles stated in section 4 (R = 30 mm), degrees.
-PAPER_CRITICAL_ANGLES = {"hertz": 23.59, "jkr": 22.87}
-#: The stated plateau of the mean shear stress in pull-off, Pa.
-PAPER_TAU0 = 42e3
-RADII = {"R30": 0.03, "R100": 0.1}
-SCENARIOS = ("A", "B")
-FIGURE_NUMBERS = {"A": "8", "B": "10"}
-#: Angles of Fig. 8 and 10 (degrees).
-FIGURE_ANGLES = (10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0)
-
-#: The discrete model overlaid on the figures and used in the cross-check.
-OVERLAY_ANGLE = 20.0
-FIGURE_DX = 1e-6
-FIGURE_STEPS = 10_000
-#: Convergence studies: spacings (m) and angles (degrees); the time step moves the indenter Δx/2.
-CONVERGENCE_SPACINGS = (16e-6, 8e-6, 4e-6, 2e-6, 1e-6)
-CONVERGENCE_ANGLES = (10.0, 30.0, 60.0)
-HISTORY_SPACINGS = (8e-6, 4e-6, 2e-6, 1e-6)
-HISTORY_ANGLE = 30.0
-#: Extremes of the continuum runs the report quotes (exact, from the solution: :func:`continuum.extremum`):
-#: name -> (quantity, largest).
-EXTREMES = {"normal_force_max": ("normal_force", True), "normal_force_min": ("normal_force", False),
-            "tangential_force_max": ("tangential_force", True), "contact_area_max": ("contact_area", True),
-            "mean_pressure_max": ("mean_pressure", True), "mean_shear_stress_max": ("mean_shear_stress", True)}
 #: Relative differences below this are round-off, whose digits differ between machines: the report prints
 #: "< 1e-12" for them, so that it stays the same text everywhere.
 REPORT_ROUNDOFF = 1e-12
 #: Packages whose versions ``results/README.md`` records (the lock file pins them, with the rest).
 RECORDED_PACKAGES = ("numpy", "scipy", "sympy", "matplotlib", "xarray", "pandas")
 
-#: Panels of Fig. 8 / 10 (see :data:`mdr_events.plotting.SIMULATION_PANELS`).
-PANEL = {"normal_force": "a", "tangential_force": "b", "contact_area": "c", "mean_pressure": "d",
-         "mean_shear_stress": "e"}
-
-
-@dataclass
-class Reproduction:
-    """Everything the report and the figures are made of (keys ``(radius label, scenario)``)."""
-
-    continuum: dict = field(default_factory=dict)
-    discrete: dict = field(default_factory=dict)
-    cross_checks: dict = field(default_factory=dict)
-    extremes: dict = field(default_factory=dict)
-    discrete_errors: dict = field(default_factory=dict)
-    history: dict = field(default_factory=dict)
-
-
-def _jobs():
-    return [(label, radius, scenario) for label, radius in RADII.items() for scenario in SCENARIOS]
-
-
-#: Progress messages :func:`compute` sends (one per step).
-COMPUTE_STEPS = 2 * len(RADII) * len(SCENARIOS) + 2
-
-
-def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
-    """Run every simulation and study behind ``results/`` (about 20 s on one core).
-
-    ``progress`` hears one message per step (:data:`COMPUTE_STEPS` of them).
-    """
-    from mdr_events.models.continuum import extremum, solve_path
-    from mdr_events.analysis.convergence import discrete_errors, discrete_minus_continuum
-    from mdr_events.analysis.crosscheck import cross_check
-    from mdr_events.models.simulate import scenario_paths, simulate
-
-    say = progress or (lambda message: None)
-    data = Reproduction()
-    jobs = _jobs()
-    for label, radius, scenario in jobs:
-        params = Parameters.paper(R=radius)
-        say(f"Fig. {FIGURE_NUMBERS[scenario]}, R = {radius * 1e3:g} mm: continuum, "
-            f"{len(FIGURE_ANGLES)} angles; discrete overlay at {OVERLAY_ANGLE:g}° (Δx = {FIGURE_DX * 1e6:g} µm)")
-        data.continuum[(label, scenario)] = simulate(params, scenario, alpha=FIGURE_ANGLES, method="continuum")
-        data.discrete[(label, scenario)] = simulate(params, scenario, alpha=[OVERLAY_ANGLE], dx=FIGURE_DX,
-                                                    n_steps=FIGURE_STEPS)
-        solutions = [solve_path(params, path) for path in scenario_paths(params, scenario, FIGURE_ANGLES)[0]]
-        data.extremes[(label, scenario)] = {
-            name: np.array([extremum(solution, quantity, largest)[1] for solution in solutions])
-            for name, (quantity, largest) in EXTREMES.items()}
-    for label, radius, scenario in jobs:
-        say(f"slip-onset cross-check, scenario {scenario}, R = {radius * 1e3:g} mm "
-            f"(closed form, continuum, discrete at {len(FIGURE_ANGLES)} angles)")
-        data.cross_checks[(label, scenario)] = cross_check(Parameters.paper(R=radius), scenario, FIGURE_ANGLES,
-                                                           dx=FIGURE_DX, n_steps=FIGURE_STEPS)
-    params = Parameters.paper()
-    say(f"convergence of the discrete model to the exact extrema "
-        f"({len(CONVERGENCE_SPACINGS)} spacings, {len(CONVERGENCE_ANGLES)} angles)")
-    for alpha in CONVERGENCE_ANGLES:
-        data.discrete_errors[alpha] = discrete_errors(params, alpha, CONVERGENCE_SPACINGS, steps_per_spacing=0.5)
-    say(f"convergence of the discrete model to the continuum over the whole run")
-    for scenario in SCENARIOS:
-        data.history[scenario] = discrete_minus_continuum(params, scenario, HISTORY_ANGLE, HISTORY_SPACINGS)
-    return data
-
-
-# ----------------------------------------------------------------------------
-# helpers on the datasets
-def _event_times(ds: xr.Dataset, alpha: float, kind: str) -> np.ndarray:
-    case = ds.sel(alpha=alpha)
-    kinds = case["event_kind"].values
-    return case["event_time"].values[kinds == kind]
-
-
-def _first(values: np.ndarray) -> float:
-    return float(values[0]) if len(values) else math.nan
 
 
 def _mm(value: float, digits: int = 4) -> str:
@@ -143,23 +49,23 @@ def _mm(value: float, digits: int = 4) -> str:
 
 
 # ----------------------------------------------------------------------------
-# sections
-def _critical_angle_section() -> list[str]:
+# critical angles
+def _critical_angle_line(row: CriticalAngleRow) -> str:
+    paper_text = f"{row.paper:.2f}°" if row.paper is not None else "not stated"
+    diff = f"{row.computed - row.paper:+.3f}°" if row.paper is not None else "—"
+    model = row.model.upper() if row.model == "jkr" else "Hertz"
+    return (f"| {row.radius * 1e3:g} mm | α_c {model} {row.equation} "
+            f"| {paper_text} | {row.computed:.3f}° | {diff} |")
+
+
+def _critical_angle_section(scenario_a: list[CriticalAngleRow], scenario_b: list[ScenarioBAngleRow]) -> list[str]:
     lines = [
         "## Critical angles of scenario A (slip begins exactly at d_max)",
         "",
         "| R | quantity | paper | mdr_events | difference |",
         "|---|---|---|---|---|",
     ]
-    for label, radius in RADII.items():
-        params = Parameters.paper(R=radius)
-        for key, adhesive, equation in (("hertz", False, "(17)"), ("jkr", True, "(18)")):
-            ours = analytic.critical_angle(params, "A", adhesion=adhesive)
-            paper = PAPER_CRITICAL_ANGLES[key] if label == "R30" else None
-            paper_text = f"{paper:.2f}°" if paper is not None else "not stated"
-            diff = f"{ours - paper:+.3f}°" if paper is not None else "—"
-            lines.append(f"| {radius * 1e3:g} mm | α_c {key.upper() if key == 'jkr' else 'Hertz'} {equation} "
-                         f"| {paper_text} | {ours:.3f}° | {diff} |")
+    lines += [_critical_angle_line(row) for row in scenario_a]
     lines += [
         "",
         "## Scenario B: angle above which the contact comes apart before any spring slides",
@@ -170,13 +76,32 @@ def _critical_angle_section() -> list[str]:
         "| R | α (adhesive) |",
         "|---|---|",
     ]
-    for label, radius in RADII.items():
-        params = Parameters.paper(R=radius)
-        lines.append(f"| {radius * 1e3:g} mm | {analytic.critical_angle(params, 'B', adhesion=True):.3f}° |")
+    lines += [f"| {row.radius * 1e3:g} mm | {row.angle:.3f}° |" for row in scenario_b]
     return lines
 
 
-def _cross_check_section(data: Reproduction) -> list[str]:
+# ----------------------------------------------------------------------------
+# slip onset, three ways
+def _verdict_text(verdict: SlipOnsetVerdict, scenario: str) -> str:
+    phase_end = "jump-off" if scenario == "B" else "d_max"
+    return {
+        SlipOnsetVerdict.NO_SLIP_IN_INDENTATION: "no slip in indentation (closed form beyond d_max)",
+        SlipOnsetVerdict.JUMP_OFF_FIRST: "jump-off before any slip",
+        SlipOnsetVerdict.FOUND_ONCE_AT_PHASE_END: f"agree: only one method slips, within tolerance of the {phase_end}",
+        SlipOnsetVerdict.PINNED: "pinned",
+        SlipOnsetVerdict.DISAGREE: "**disagree**",
+        SlipOnsetVerdict.AGREE: "agree",
+    }[verdict]
+
+
+def _cross_check_line(row: CrossCheckRow) -> str:
+    line = (f"| {row.radius * 1e3:g} mm | {row.scenario} | {row.alpha:g}° | {_mm(row.closed_form, 5)} "
+            f"| {_mm(row.continuum, 5)} | {_mm(row.discrete, 5)} | {row.discrete_minus_continuum * 1e6:+.3f} µm "
+            f"| {row.tolerance * 1e6:.3f} µm | {_verdict_text(row.verdict, row.scenario)} |")
+    return line.replace("+nan µm", "—")
+
+
+def _cross_check_section(rows: list[CrossCheckRow]) -> list[str]:
     lines = [
         "",
         "## Slip onset: closed form, continuum and discrete model side by side",
@@ -191,62 +116,41 @@ def _cross_check_section(data: Reproduction) -> list[str]:
         "| R | scenario | α | closed form | continuum | discrete | discrete − continuum | tolerance | note |",
         "|---|---|---|---|---|---|---|---|---|",
     ]
-    for (label, scenario), ds in data.cross_checks.items():
-        params = Parameters.from_attrs(ds.attrs)
-        for alpha in ds["alpha"].values:
-            row = ds.sel(alpha=alpha)
-            closed = float(row["d_crit_closed_form"])
-            continuum = float(row["d_crit_continuum"])
-            if scenario == "A" and closed > params.d_max:
-                note = "no slip in indentation (closed form beyond d_max)"
-            elif scenario == "B" and closed == -math.inf:
-                note = "jump-off before any slip"
-            elif int(row["found_once_at_phase_end"]):
-                note = "agree: only one method slips, within tolerance of the " + (
-                    "jump-off" if scenario == "B" else "d_max")
-            elif int(row["pinned_radius"]):
-                note = "pinned"
-            elif int(row["disagree"]):
-                note = "**disagree**"
-            else:
-                note = "agree"
-            lines.append(
-                f"| {params.R * 1e3:g} mm | {scenario} | {alpha:g}° | {_mm(closed, 5)} | {_mm(continuum, 5)} "
-                f"| {_mm(float(row['d_crit_discrete']), 5)} | {float(row['discrete_minus_continuum']) * 1e6:+.3f} µm "
-                f"| {float(row['discrete_tolerance']) * 1e6:.3f} µm | {note} |".replace("+nan µm", "—"))
-    return lines
+    return lines + [_cross_check_line(row) for row in rows]
 
 
-def _differences_section(data: Reproduction) -> list[str]:
+# ----------------------------------------------------------------------------
+# the four differences between simulation and experiment (section 4.2)
+def _adhesive_strength_lines(samples_per_run: int, rows: list[AdhesiveStrengthRow]) -> list[str]:
     lines = [
         "",
         "## The four differences between simulation and experiment of section 4.2",
         "",
         f"Panels refer to `fig8_R30.png` (scenario A) and `fig10_R30.png` (scenario B): (a) F_N, (b) F_x,",
-        f"(c) A, (d) <p>, (e) τ. Continuum method, {data.continuum[('R30', 'A')].sizes['time']} samples per run.",
+        f"(c) A, (d) <p>, (e) τ. Continuum method, {samples_per_run} samples per run.",
         "",
         "### (1) The adhesive strength |F_N,min| is the same for every angle (panel a)",
         "",
         "The paper: normal and tangential contact are independent, so |F_N,min| does not depend on α;",
         "JKR gives |F_N,min| = (3/2) π Δγ1 R. Ours (continuum, the exact minimum of each run's solution,",
-        f"`mdr_events.continuum.extremum`; the discrete model at {OVERLAY_ANGLE:g}°, Δx = {FIGURE_DX * 1e6:g} µm, "
+        f"`mdr_events.models.continuum.extremum`; the discrete model at {OVERLAY_ANGLE:g}°, Δx = {FIGURE_DX * 1e6:g} µm, "
         "for comparison):",
         "",
         "| R | scenario | (3/2)πΔγ1R | continuum, min over angles | max over angles | largest relative difference "
         f"| discrete at {OVERLAY_ANGLE:g}° |",
         "|---|---|---|---|---|---|---|",
     ]
-    for (label, scenario), ds in data.continuum.items():
-        params = Parameters.from_attrs(ds.attrs)
-        jkr = -analytic.pull_off_force(params, params.dgamma1)
-        values = -data.extremes[(label, scenario)]["normal_force_min"]
-        worst = np.max(np.abs(values - jkr)) / jkr
+    for row in rows:
+        worst = row.largest_relative_difference
         worst_text = f"< {REPORT_ROUNDOFF:g}" if worst < REPORT_ROUNDOFF else f"{worst:.1e}"
-        discrete = -float(data.discrete[(label, scenario)]["normal_force"].min())
-        lines.append(f"| {params.R * 1e3:g} mm | {scenario} | {jkr * 1e3:.4f} mN | {values.min() * 1e3:.4f} mN "
-                     f"| {values.max() * 1e3:.4f} mN | {worst_text} | {discrete * 1e3:.4f} mN |")
-    ds = data.continuum[("R30", "A")]
-    lines += [
+        lines.append(f"| {row.radius * 1e3:g} mm | {row.scenario} | {row.jkr * 1e3:.4f} mN "
+                     f"| {row.continuum_min * 1e3:.4f} mN | {row.continuum_max * 1e3:.4f} mN | {worst_text} "
+                     f"| {row.discrete * 1e3:.4f} mN |")
+    return lines
+
+
+def _pinned_interval_lines(rows: list[PinnedIntervalRow]) -> list[str]:
+    lines = [
         "",
         "The same independence makes A and F_x constant at the start of pull-off (panels c and b): the",
         "radius stays pinned from d_max until d falls to the Δγ1 branch, and in scenario A the indenter",
@@ -255,15 +159,12 @@ def _differences_section(data: Reproduction) -> list[str]:
         "| α | d_max reached | detachment starts | interval of constant A | F_x change over it |",
         "|---|---|---|---|---|",
     ]
-    for alpha in ds["alpha"].values:
-        corner = _first(_event_times(ds, alpha, "corner"))
-        release = _first(_event_times(ds, alpha, "detachment_starts"))
-        case = ds.sel(alpha=alpha)
-        inside = (case["time"] >= corner) & (case["time"] <= release)
-        force = case["tangential_force"].values[inside.values]
-        change = float(np.max(force) - np.min(force)) if force.size else math.nan
-        lines.append(f"| {alpha:g}° | {corner:.1f} s | {release:.1f} s | {release - corner:.1f} s | {change:.1e} N |")
-    lines += [
+    return lines + [f"| {row.alpha:g}° | {row.d_max_time:.1f} s | {row.detachment_time:.1f} s "
+                    f"| {row.duration:.1f} s | {row.tangential_force_change:.1e} N |" for row in rows]
+
+
+def _maxima_lines(rows: list[MaximaRow]) -> list[str]:
+    lines = [
         "",
         "### (2) Maximum forces, area and pressure are below the experiment's (panels a–d)",
         "",
@@ -274,13 +175,12 @@ def _differences_section(data: Reproduction) -> list[str]:
         "| α | F_N,max | F_x,max | A_max | <p>_max |",
         "|---|---|---|---|---|",
     ]
-    extremes = data.extremes[("R30", "A")]
-    for i, alpha in enumerate(ds["alpha"].values):
-        lines.append(f"| {alpha:g}° | {extremes['normal_force_max'][i] * 1e3:.3f} mN "
-                     f"| {extremes['tangential_force_max'][i] * 1e3:.3f} mN "
-                     f"| {extremes['contact_area_max'][i] * 1e6:.3f} mm² "
-                     f"| {extremes['mean_pressure_max'][i] / 1e3:.3f} kPa |")
-    lines += [
+    return lines + [f"| {row.alpha:g}° | {row.normal_force * 1e3:.3f} mN | {row.tangential_force * 1e3:.3f} mN "
+                    f"| {row.contact_area * 1e6:.3f} mm² | {row.mean_pressure / 1e3:.3f} kPa |" for row in rows]
+
+
+def _shear_plateau_lines(rows: list[ShearPlateauRow]) -> list[str]:
+    lines = [
         "",
         f"### (3) The τ0 = {PAPER_TAU0 / 1e3:g} kPa plateau in pull-off (panel e)",
         "",
@@ -294,20 +194,16 @@ def _differences_section(data: Reproduction) -> list[str]:
         "| R | α | x1 | ū(a_jump-off) | τ_max | reaches τ0 | full slip at |",
         "|---|---|---|---|---|---|---|",
     ]
-    for (label, scenario), ds_a in data.continuum.items():
-        if scenario != "A":
-            continue
-        params = Parameters.from_attrs(ds_a.attrs)
-        cap = float(analytic.critical_shift(analytic.jump_off(params, params.dgamma1)["contact_radius"], params))
-        for i, alpha in enumerate(ds_a["alpha"].values):
-            x1 = params.d_max / math.tan(math.radians(alpha))
-            tau = float(data.extremes[(label, scenario)]["mean_shear_stress_max"][i])
-            full = _event_times(ds_a, alpha, "full_slip")
-            reached = math.isclose(tau, params.tau0, rel_tol=1e-9)
-            lines.append(f"| {params.R * 1e3:g} mm | {alpha:g}° | {x1 * 1e6:.1f} µm | {cap * 1e6:.1f} µm "
-                         f"| {tau / 1e3:.2f} kPa | {'yes' if reached else 'no'} "
-                         f"| {f'{full[-1]:.1f} s' if len(full) else '—'} |")
-    lines += [
+    for row in rows:
+        full_slip = f"{row.full_slip_time:.1f} s" if row.full_slip_time is not None else "—"
+        lines.append(f"| {row.radius * 1e3:g} mm | {row.alpha:g}° | {row.travel * 1e6:.1f} µm "
+                     f"| {row.shift_at_jump_off * 1e6:.1f} µm | {row.largest_shear_stress / 1e3:.2f} kPa "
+                     f"| {'yes' if row.reaches_tau0 else 'no'} | {full_slip} |")
+    return lines
+
+
+def _area_growth_lines(rows: list[AreaGrowthRow]) -> list[str]:
+    lines = [
         "",
         "### (4) The contact area grows smoothly (panel c)",
         "",
@@ -319,22 +215,31 @@ def _differences_section(data: Reproduction) -> list[str]:
         "| α | jump-in area πa0² | largest change between samples during indentation | sample spacing |",
         "|---|---|---|---|",
     ]
-    for alpha in ds["alpha"].values:
-        case = ds.sel(alpha=alpha)
-        corner = _first(_event_times(ds, alpha, "corner"))
-        area = case["contact_area"].values
-        indentation = case["time"].values <= corner
-        steps = np.abs(np.diff(area[indentation]))
-        spacing = float(case["time"].values[1] - case["time"].values[0])
-        lines.append(f"| {alpha:g}° | {area[0] * 1e6:.4f} mm² | {steps.max() / np.nanmax(area):.2e} of A_max "
-                     f"| {spacing:.2f} s |")
-    return lines
+    return lines + [f"| {row.alpha:g}° | {row.jump_in_area * 1e6:.4f} mm² | {row.largest_step_share:.2e} of A_max "
+                    f"| {row.sample_spacing:.2f} s |" for row in rows]
 
 
-def _convergence_section(data: Reproduction) -> list[str]:
-    from mdr_events.analysis.convergence import HISTORY_QUANTITIES, observed_orders
+def _differences_section(tables: Differences) -> list[str]:
+    return (_adhesive_strength_lines(tables.samples_per_run, tables.adhesive_strength)
+            + _pinned_interval_lines(tables.pinned_intervals)
+            + _maxima_lines(tables.maxima)
+            + _shear_plateau_lines(tables.shear_plateau)
+            + _area_growth_lines(tables.area_growth))
 
-    names = {"normal_force_min": "F_N,min", "contact_area_max": "A_max", "tangential_force_max": "F_x,max"}
+
+# ----------------------------------------------------------------------------
+# convergence of the discrete model
+def _convergence_cells(row: ConvergenceRow) -> str:
+    cells = [f"{row.errors[0]:.2e}"] + [f"{e:.2e} ({o:.2f})" for e, o in zip(row.errors[1:], row.orders)]
+    return " | ".join(cells)
+
+
+#: Labels of the quantities in the convergence tables.
+CONVERGENCE_LABELS = {"normal_force_min": "F_N,min", "contact_area_max": "A_max", "tangential_force_max": "F_x,max",
+                      "normal_force": "F_N", "tangential_force": "F_x", "contact_area": "A"}
+
+
+def _convergence_section(extrema: list[ConvergenceRow], histories: dict[str, HistoryConvergence]) -> list[str]:
     lines = [
         "",
         "## Convergence of the discrete model (R = 30 mm)",
@@ -342,7 +247,7 @@ def _convergence_section(data: Reproduction) -> list[str]:
         "### To the exact extrema (scenario A)",
         "",
         "Relative error against the exact values (F_N,min = −(3/2)πΔγ1R; A_max = π a(d_max)² on the Δγ0",
-        "branch; F_x,max from the stick/slip integral at d_max, `mdr_events.convergence`), with the time",
+        "branch; F_x,max from the stick/slip integral at d_max, `mdr_events.analysis.convergence`), with the time",
         "step refined with Δx (the indenter moves Δx/2 per step). Observed order in brackets. The paper",
         "says the solution does not depend on Δx: it does, at first order, by about 0.1 % at Δx = 1 µm.",
         "A_max is quantised to a = mΔx, so its error is bounded by Δx/a but does not fall smoothly;",
@@ -352,18 +257,14 @@ def _convergence_section(data: Reproduction) -> list[str]:
         "| α | quantity | " + " | ".join(f"Δx = {dx * 1e6:g} µm" for dx in CONVERGENCE_SPACINGS) + " |",
         "|---|---|" + "---|" * len(CONVERGENCE_SPACINGS),
     ]
-    for alpha, errors in data.discrete_errors.items():
-        for key, label in names.items():
-            orders = observed_orders(CONVERGENCE_SPACINGS, errors[key])
-            cells = [f"{errors[key][0]:.2e}"] + [f"{e:.2e} ({o:.2f})" for e, o in zip(errors[key][1:], orders)]
-            lines.append(f"| {alpha:g}° | {label} | " + " | ".join(cells) + " |")
-    labels = {"normal_force": "F_N", "tangential_force": "F_x", "contact_area": "A"}
+    lines += [f"| {row.case:g}° | {CONVERGENCE_LABELS[row.quantity]} | " + _convergence_cells(row) + " |"
+              for row in extrema]
     lines += [
         "",
         f"### To the continuum over the whole run (α = {HISTORY_ANGLE:g}°)",
         "",
         "max over time of |discrete − continuum| divided by max over time of |continuum|, the continuum",
-        "evaluated at the discrete model's sample times (`mdr_events.convergence.discrete_minus_continuum`);",
+        "evaluated at the discrete model's sample times (`mdr_events.analysis.convergence.discrete_minus_continuum`);",
         "observed order in brackets. Left out (their number is in the last row): the samples at which one",
         "method is in contact and the other not (the jump-in, met up to one step apart), and the sample",
         "ending the time step that straddles a path corner (the discrete model cuts the corner there).",
@@ -371,14 +272,11 @@ def _convergence_section(data: Reproduction) -> list[str]:
         "| scenario | quantity | " + " | ".join(f"Δx = {dx * 1e6:g} µm" for dx in HISTORY_SPACINGS) + " |",
         "|---|---|" + "---|" * len(HISTORY_SPACINGS),
     ]
-    for scenario, differences in data.history.items():
-        for name in HISTORY_QUANTITIES:
-            values = differences[name]
-            orders = observed_orders(HISTORY_SPACINGS, values)
-            cells = [f"{values[0]:.2e}"] + [f"{e:.2e} ({o:.2f})" for e, o in zip(values[1:], orders)]
-            lines.append(f"| {scenario} | {labels[name]} | " + " | ".join(cells) + " |")
+    for scenario, history in histories.items():
+        lines += [f"| {scenario} | {CONVERGENCE_LABELS[row.quantity]} | " + _convergence_cells(row) + " |"
+                  for row in history.rows]
         lines.append(f"| {scenario} | samples left out | "
-                     + " | ".join(str(int(n)) for n in differences["samples_left_out"]) + " |")
+                     + " | ".join(str(n) for n in history.samples_left_out) + " |")
     return lines
 
 
@@ -428,7 +326,7 @@ def _software_section(versions: dict[str, str]) -> list[str]:
         "",
         "`make` installs these versions from the lock file `constraints.txt`. With other versions (or",
         f"another CPU) the datasets agree within {RESULT_RTOL:g} of each variable's largest magnitude",
-        "(`mdr_events.datasets.result_differences`) and this report, which rounds, exactly;",
+        "(`mdr_events.io.datasets.result_differences`) and this report, which rounds, exactly;",
         "`mdr-events reproduce` then keeps the files as they are.",
         "",
     ]
@@ -455,10 +353,10 @@ def report_text(data: Reproduction | None = None, versions: dict[str, str] | Non
         f"Paper: doi:{DOI}.",
         "",
     ]
-    lines += _critical_angle_section()
-    lines += _cross_check_section(data)
-    lines += _differences_section(data)
-    lines += _convergence_section(data)
+    lines += _critical_angle_section(critical_angles_A(), critical_angles_B())
+    lines += _cross_check_section(cross_check_rows(data))
+    lines += _differences_section(differences(data))
+    lines += _convergence_section(extremum_convergence(data), history_convergence(data))
     lines += _parameter_section()
     lines += _software_section(software_versions() if versions is None else versions)
     return "\n".join(lines)
@@ -468,15 +366,13 @@ def reproduce(out: Path, progress: Callable[[str], None] = print, keep_agreeing:
     """Write every figure, dataset and the report into ``out``; ``progress`` hears each step.
 
     With ``keep_agreeing`` (the default) a file that agrees with the fresh computation is not
-    rewritten (:mod:`mdr_events.output`), and the report keeps the software versions it records when
+    rewritten (:mod:`mdr_events.app.result_files`), and the report keeps the software versions it records when
     every other file was kept and its numbers are unchanged, so that ``git status`` stays clean on a
     machine whose rounding differs.
     """
-    from mdr_events.app.result_files import FileStatus, describe_outcomes, write_dataset, write_phase_diagram, write_simulation, write_text
-
     out = Path(out)
     outcomes: list[FileOutcome] = []
-    total = len(_jobs()) + COMPUTE_STEPS + 1
+    total = len(jobs()) + COMPUTE_STEPS + 1
     count = iter(range(1, total + 1))
 
     def step(message: str) -> None:
@@ -486,7 +382,7 @@ def reproduce(out: Path, progress: Callable[[str], None] = print, keep_agreeing:
         outcomes.extend(new)
         progress(f"    {describe_outcomes(new)}")
 
-    for label, radius, scenario in _jobs():
+    for label, radius, scenario in jobs():
         figure = "9a" if scenario == "A" else "9b"
         step(f"Fig. {figure}, R = {radius * 1e3:g} mm (phase diagram)")
         done(write_phase_diagram(Parameters.paper(R=radius), scenario, out, f"phase_diagram_{scenario}_{label}",

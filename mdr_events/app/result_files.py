@@ -1,11 +1,11 @@
 """Result files: a dataset as netCDF with its figure as PNG, and the event log as CSV.
 
 Shared by the CLI, study files and ``mdr-events reproduce``; every file is written to a temporary
-name and renamed into place (:func:`mdr_events.datasets.atomic_write`).
+name and renamed into place (:func:`mdr_events.io.files.atomic_write`).
 
 With ``keep_agreeing=True`` a file whose content already agrees with what would be written is left
 as it is (:attr:`FileStatus.KEPT`): a dataset that agrees within
-:data:`mdr_events.datasets.RESULT_RTOL` (:func:`mdr_events.datasets.result_differences`), a figure
+:data:`mdr_events.io.datasets.RESULT_RTOL` (:func:`mdr_events.io.datasets.result_differences`), a figure
 with the same pixels, a text with the same characters. The figure and the event log are then drawn
 from the dataset on disk, so that a kept dataset keeps its figure and log too. This is what lets
 ``make reproduce`` leave a clean git tree on a machine whose rounding differs.
@@ -21,9 +21,13 @@ from typing import Callable, NamedTuple
 
 import numpy as np
 import xarray as xr
+from matplotlib import image
 
-from mdr_events.io.datasets import RESULT_RTOL, atomic_write, open_result, result_differences, write_netcdf
+from mdr_events.io.datasets import RESULT_RTOL, result_differences
+from mdr_events.io.files import atomic_write, open_result, write_netcdf
 from mdr_events.parameters import Parameters
+from mdr_events.plotting.figures import figure_png, plot_phase_diagram, plot_simulation
+from mdr_events.theory.phase import phase_diagram
 
 __all__ = ["FileStatus", "FileOutcome", "write_dataset", "write_figure", "write_text", "write_phase_diagram",
            "write_simulation", "event_log_csv", "describe_outcomes"]
@@ -68,8 +72,6 @@ def _write_if_new(path: Path, data: bytes, same: Callable[[bytes, bytes], bool],
 
 
 def _same_pixels(old: bytes, new: bytes) -> bool:
-    from matplotlib import image
-
     try:
         before = image.imread(io.BytesIO(old), format="png")
     except (OSError, ValueError, SyntaxError):  # not a PNG we can read: replaced
@@ -80,8 +82,6 @@ def _same_pixels(old: bytes, new: bytes) -> bool:
 
 def write_figure(figure, path: str | os.PathLike, keep_agreeing: bool = False) -> FileOutcome:
     """Write a figure as PNG (:func:`mdr_events.plotting.figure_png`); kept if its pixels are unchanged."""
-    from mdr_events.plotting.figures import figure_png
-
     return _write_if_new(Path(path), figure_png(figure), _same_pixels, keep_agreeing)
 
 
@@ -94,9 +94,6 @@ def write_phase_diagram(params: Parameters, scenario: str, out: str | os.PathLik
                         keep_agreeing: bool = False, attrs: dict[str, str] | None = None) -> list[FileOutcome]:
     """Compute the phase diagram (Fig. 9a/9b) and write ``stem.nc`` (with the extra ``attrs``) and
     ``stem.png``."""
-    from mdr_events.theory.phase import phase_diagram
-    from mdr_events.plotting.figures import plot_phase_diagram
-
     dataset = phase_diagram(params, scenario=scenario)
     dataset.attrs.update(attrs or {})
     dataset, outcome = write_dataset(dataset, Path(out) / f"{stem}.nc", keep_agreeing)
@@ -108,8 +105,6 @@ def write_simulation(dataset: xr.Dataset, out: str | os.PathLike, stem: str, ove
                      keep_agreeing: bool = False) -> list[FileOutcome]:
     """Write a simulation as ``stem.nc``, its figure (with ``overlay``) as ``stem.png`` and, for the
     continuum method, its event log as ``stem_events.csv``."""
-    from mdr_events.plotting.figures import plot_simulation
-
     dataset, outcome = write_dataset(dataset, Path(out) / f"{stem}.nc", keep_agreeing)
     outcomes = [outcome, write_figure(plot_simulation(dataset, overlay=overlay), Path(out) / f"{stem}.png",
                                       keep_agreeing)]

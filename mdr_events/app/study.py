@@ -43,6 +43,9 @@ from dataclasses import dataclass, field
 from pathlib import Path as FilePath
 from typing import TYPE_CHECKING, Any, Callable
 
+from mdr_events.models.continuum import Tolerances
+from mdr_events.models.paths import Path
+from mdr_events.models.simulate import simulate
 from mdr_events.parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
 
 if TYPE_CHECKING:
@@ -171,10 +174,8 @@ def load_study(path: str | os.PathLike) -> Study:
 
 def run_study(study: Study, progress: Callable[[str], None] = print) -> list[FileOutcome]:
     """Compute what the study asks for and write it (netCDF + PNG, event log CSV); returns the files."""
-    from mdr_events.models.continuum import Tolerances
+    # here, not at the top: result_files loads matplotlib.pyplot, which `import mdr_events` should not pay for
     from mdr_events.app.result_files import write_phase_diagram, write_simulation
-    from mdr_events.models.paths import Path
-    from mdr_events.models.simulate import simulate
 
     out = study.output_directory
     written: list[FileOutcome] = []

@@ -1,17 +1,20 @@
-"""Labelled results: stamping, atomic netCDF writing and reading back.
+"""Labelled results: provenance stamp, schemas of the kinds of result, comparison.
 
 Every dataset the package writes carries ``units`` and ``long_name`` on each
 variable and, in its attributes, the program, its version, the paper's DOI
 and every model parameter (tamaas-style provenance), all netCDF-safe (str,
-float, int), so that :func:`open_result` can rebuild the :class:`Parameters`.
+float, int), so that :func:`parameters_of` can rebuild the :class:`Parameters`.
+
+Its ``content`` attribute names the kind of result; the module that makes a
+kind of result registers what it must hold (:func:`register_schema`) when it
+is imported, and :func:`mdr_events.io.files.open_result` checks a file read
+back against it (:func:`required_variables`). Reading and writing files is
+:mod:`mdr_events.io.files`.
 """
 
 from __future__ import annotations
 
-import os
-import tempfile
-from pathlib import Path
-from typing import Any, Callable
+from typing import Any, Mapping
 
 import numpy as np
 import xarray as xr
@@ -19,8 +22,8 @@ import xarray as xr
 from mdr_events._version import __version__
 from mdr_events.parameters import Parameters
 
-__all__ = ["DOI", "REFERENCE", "stamp", "atomic_write", "write_netcdf", "open_result", "parameters_of",
-           "RESULT_RTOL", "result_differences", "assert_results_agree"]
+__all__ = ["DOI", "REFERENCE", "PROGRAM", "STAMP_ATTRIBUTES", "stamp", "parameters_of", "Dims", "register_schema",
+           "registered_contents", "required_variables", "RESULT_RTOL", "result_differences", "assert_results_agree"]
 
 DOI = "10.3390/biomimetics8060477"
 REFERENCE = (
@@ -72,151 +75,60 @@ def stamp(dataset: xr.Dataset, params: Parameters, **attrs: Any) -> xr.Dataset:
     return dataset
 
 
-def atomic_write(path: str | os.PathLike, write: Callable[[str], Any], suffix: str = ".tmp") -> Path:
-    """Call ``write(temporary_path)``, then rename the file onto ``path``.
-
-    An interrupted or failing writer leaves the old file (or none), never a
-    half-written one; the temporary file sits beside the target so that the
-    rename is atomic.
-    """
-    target = Path(path)
-    target.parent.mkdir(parents=True, exist_ok=True)
-    handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=suffix, dir=target.parent)
-    os.close(handle)
-    try:
-        write(temporary)
-        mask = os.umask(0)  # mkstemp makes the file owner-only; give it the usual permissions
-        os.umask(mask)
-        os.chmod(temporary, 0o666 & ~mask)
-        os.replace(temporary, target)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise
-    return target
-
-
-def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
-    """Write ``dataset`` as netCDF to ``path`` atomically (see :func:`atomic_write`).
-
-    The scipy backend (netCDF3, 64-bit offset) is used so that no further
-    dependency is needed.
-    """
-    return atomic_write(path, lambda temporary: dataset.to_netcdf(
-        temporary, engine="scipy", format="NETCDF3_64BIT"), suffix=".nc")
-
-
-#: What each kind of result must hold: ``content`` attribute → {variable: dims}.
-#: (Simulation variables are added below, once :data:`SIMULATION_VARIABLES` is defined.)
-RESULT_SCHEMAS: dict[str, dict[str, tuple[str, ...]]] = {
-    "phase diagram of slip onset": {"d_crit_hertz": None, "d_crit_jkr": None, "d_max": (),
-                                    "critical_angle_hertz": (), "critical_angle_jkr": ()},
-    "slip-onset cross-check": {name: ("alpha",) for name in (
-        "d_crit_closed_form", "d_crit_continuum", "d_crit_discrete", "discrete_minus_continuum",
-        "discrete_tolerance", "pinned_radius", "disagree")},
-}
-#: Variables of the continuum event log (dims ``("alpha", "event")``).
-EVENT_VARIABLES = ("event_time", "event_kind", "event_depth", "event_radius", "event_x")
-#: Attributes every result carries.
-STAMP_ATTRIBUTES = ("program", "program_version", "doi", "content")
-
-
-def open_result(path: str | os.PathLike) -> xr.Dataset:
-    """Read a file written by this package, fully loaded, and check it against its schema.
-
-    Raises ``ValueError`` naming what is wrong when the file is not a
-    readable netCDF file, was not written by this package, lacks a stamp
-    attribute or a parameter, or lacks a variable (or its ``units`` /
-    ``long_name``) that its kind of result (``content``) must hold.
-    """
-    where = repr(os.fspath(path))
-    try:
-        with xr.open_dataset(path, engine="scipy") as handle:
-            dataset = handle.load()
-    except FileNotFoundError:
-        raise ValueError(f"{where}: no such file") from None
-    except (OSError, ValueError, TypeError, IndexError, KeyError) as error:
-        raise ValueError(f"{where} is not a readable netCDF file ({type(error).__name__}: {error})") from None
-    if dataset.attrs.get("program") != PROGRAM:
-        raise ValueError(f"{where} was not written by {PROGRAM} (attribute 'program' missing or different)")
-    missing = [name for name in STAMP_ATTRIBUTES if name not in dataset.attrs]
-    if missing:
-        raise ValueError(f"{where} lacks the attribute(s) {missing}")
-    try:
-        parameters_of(dataset)
-    except (ValueError, TypeError) as error:
-        raise ValueError(f"{where}: {error}") from None
-    content = dataset.attrs["content"]
-    if content not in RESULT_SCHEMAS:
-        raise ValueError(f"{where}: unknown content {content!r}; allowed: {sorted(RESULT_SCHEMAS)}")
-    schema = dict(RESULT_SCHEMAS[content])
-    if dataset.attrs.get("method") == "continuum":
-        schema.update({name: ("alpha", "event") for name in EVENT_VARIABLES})
-    missing = [name for name in schema if name not in dataset.variables]
-    if missing:
-        raise ValueError(f"{where} ({content}) lacks the variable(s) {missing}")
-    wrong = [f"{name} {dataset[name].dims} (expected {dims})" for name, dims in schema.items()
-             if dims is not None and dataset[name].dims != dims]
-    if wrong:
-        raise ValueError(f"{where} ({content}) has variable(s) with the wrong dimensions: {'; '.join(wrong)}")
-    unlabelled = [name for name in dataset.variables
-                  if not {"units", "long_name"} <= set(dataset[name].attrs)]
-    if unlabelled:
-        raise ValueError(f"{where} ({content}) has variable(s) without units or long_name: {unlabelled}")
-    return dataset
-
-
 def parameters_of(dataset: xr.Dataset) -> Parameters:
     """The :class:`Parameters` a dataset was computed with."""
     return Parameters.from_attrs(dataset.attrs)
 
 
-#: The schema of a simulation result, shared by every method: name -> (units, long_name).
-SIMULATION_VARIABLES: dict[str, tuple[str, str]] = {
-    "indentation_depth": ("m", "indentation depth d"),
-    "tangential_displacement": ("m", "tangential displacement of the indenter x"),
-    "normal_force": ("N", "normal force F_N"),
-    "tangential_force": ("N", "tangential force F_x"),
-    "contact_radius": ("m", "contact radius a"),
-    "contact_area": ("m2", "contact area A"),
-    "mean_pressure": ("Pa", "mean contact pressure <p> = F_N / A"),
-    "mean_shear_stress": ("Pa", "mean shear stress tau = F_x / A"),
-    "sliding_fraction": ("1", "share of the springs in contact that are at the critical shift"),
-}
-RESULT_SCHEMAS["simulation of indentation and detachment along straight paths"] = {
-    name: ("alpha", "time") for name in SIMULATION_VARIABLES}
+#: Attributes every result carries.
+STAMP_ATTRIBUTES = ("program", "program_version", "doi", "content")
+
+#: The dimensions a schema requires of a variable (``None``: any).
+Dims = tuple[str, ...] | None
+
+#: What each kind of result must hold: ``content`` attribute -> condition -> {variable: dims}. The
+#: condition ``None`` holds always, ``(attribute, value)`` when the result's attribute has that value.
+_SCHEMAS: dict[str, dict[tuple[str, Any] | None, dict[str, Dims]]] = {}
 
 
-def simulation_dataset(
-    params: Parameters,
-    alpha: np.ndarray,
-    time: np.ndarray,
-    values: dict[str, np.ndarray],
-    **attrs: Any,
-) -> xr.Dataset:
-    """Assemble a simulation result with dims ``("alpha", "time")``.
+def register_schema(content: str, variables: Mapping[str, Dims], when: tuple[str, Any] | None = None) -> None:
+    """Declare the variables every result of kind ``content`` must hold.
 
-    ``values`` holds the kinematics, forces, radius and sliding fraction of
-    :data:`SIMULATION_VARIABLES` (shape (n_alpha, n_time), ``nan`` after a
-    case has ended); the area, mean pressure and mean shear stress are
-    derived here, identically for every method.
+    Called by the module that makes that kind of result, when it is imported.
+
+    Parameters
+    ----------
+    content : str
+        The result's ``content`` attribute, naming its kind.
+    variables : mapping of str to tuple of str or None
+        Variable name -> the dimensions it must have (``None``: any).
+    when : (str, object), optional
+        ``(attribute, value)``: the variables are required only of results
+        whose attribute has that value (e.g. ``("method", "continuum")``);
+        default: of every result of this kind.
+
+    Registering the same ``content`` and ``when`` again replaces the variables.
     """
-    radius = values["contact_radius"]
-    area = np.pi * radius**2
-    with np.errstate(invalid="ignore", divide="ignore"):
-        derived = {
-            "contact_area": area,
-            "mean_pressure": np.where(area > 0, values["normal_force"] / area, np.nan),
-            "mean_shear_stress": np.where(area > 0, values["tangential_force"] / area, np.nan),
-        }
-    data = {}
-    for name, (units, long_name) in SIMULATION_VARIABLES.items():
-        array = derived[name] if name in derived else values[name]
-        data[name] = (("alpha", "time"), np.asarray(array, dtype=float), {"units": units, "long_name": long_name})
-    coords = {
-        "alpha": ("alpha", np.asarray(alpha, dtype=float), {"units": "degree", "long_name": "path angle to the surface"}),
-        "time": ("time", np.asarray(time, dtype=float), {"units": "s", "long_name": "time from first contact"}),
-    }
-    return stamp(xr.Dataset(data, coords=coords), params, **attrs)
+    _SCHEMAS.setdefault(content, {})[when] = dict(variables)
+
+
+def registered_contents() -> list[str]:
+    """The kinds of result (``content`` attributes) with a schema, sorted."""
+    return sorted(_SCHEMAS)
+
+
+def required_variables(content: str, attrs: Mapping[str, Any]) -> dict[str, Dims]:
+    """The variables (name -> dims, ``None``: any) a result of kind ``content`` with ``attrs`` must hold.
+
+    Raises ``ValueError`` if no schema is registered for ``content``.
+    """
+    if content not in _SCHEMAS:
+        raise ValueError(f"unknown content {content!r}; allowed: {registered_contents()}")
+    schema = dict(_SCHEMAS[content].get(None, {}))
+    for condition, variables in _SCHEMAS[content].items():
+        if condition is not None and attrs.get(condition[0]) == condition[1]:
+            schema.update(variables)
+    return schema
 
 
 #: Relative tolerance within which a result computed on another machine or with other library versions

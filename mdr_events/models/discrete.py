@@ -48,7 +48,7 @@ MIN_SPRINGS_IN_CONTACT = 10
 
 
 def paraboloid_profile(params: Parameters) -> Callable[[np.ndarray], np.ndarray]:
-    """``g(x) = x²/R``, eq. (4), as derived by :mod:`mdr_events.symbolic`."""
+    """``g(x) = x²/R``, eq. (4), as derived by :mod:`mdr_events.theory.symbolic`."""
     relation = symbolic.relation("profile_paraboloid")
     return lambda x: relation.numeric(x, params.R)
 

@@ -24,6 +24,7 @@ import numpy as np
 
 from mdr_events.theory import analytic
 from mdr_events.parameters import Parameters
+from mdr_events.validation import validate_alpha
 
 __all__ = ["Path", "exit_depth"]
 
@@ -35,7 +36,7 @@ def exit_depth(params: Parameters) -> float:
 
 
 def _check_angle(alpha: float) -> float:
-    values = analytic._validate_alpha(alpha)
+    values = validate_alpha(alpha)
     if values.ndim != 0:
         raise TypeError(f"alpha={alpha!r}: a path takes one angle (degrees)")
     return float(values)

@@ -3,19 +3,21 @@
 from __future__ import annotations
 
 import math
-from typing import Literal, Sequence
+from typing import Any, Literal, Sequence
 
 import numpy as np
 import xarray as xr
 
-from mdr_events.theory import analytic
-from mdr_events.models.continuum import Tolerances
-from mdr_events.io.datasets import simulation_dataset
+from mdr_events.io.datasets import register_schema, stamp
+from mdr_events.models.continuum import Tolerances, run_continuum
 from mdr_events.models.discrete import check_spacing, run_discrete
-from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
+from mdr_events.parameters import Parameters
+from mdr_events.theory import analytic
+from mdr_events.validation import check_choice
 
-__all__ = ["simulate", "scenario_paths", "FIGURE_ANGLES", "METHODS", "SCENARIO_NAMES"]
+__all__ = ["simulate", "scenario_paths", "simulation_dataset", "event_log", "FIGURE_ANGLES", "METHODS",
+           "SCENARIO_NAMES", "SIMULATION_CONTENT", "SIMULATION_VARIABLES", "EVENT_VARIABLES"]
 
 #: The angles of Fig. 8 and Fig. 10.
 FIGURE_ANGLES = (10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0)
@@ -24,6 +26,33 @@ SCENARIO_NAMES = ("A", "B", "B+")
 DEFAULT_DX = 1e-6
 DEFAULT_STEPS = 10_000
 DEFAULT_SAMPLES = 2001
+
+
+#: The ``content`` attribute of a simulation.
+SIMULATION_CONTENT = "simulation of indentation and detachment along straight paths"
+#: The variables of a simulation, shared by every method (dims ``("alpha", "time")``): name -> (units, long_name).
+SIMULATION_VARIABLES: dict[str, tuple[str, str]] = {
+    "indentation_depth": ("m", "indentation depth d"),
+    "tangential_displacement": ("m", "tangential displacement of the indenter x"),
+    "normal_force": ("N", "normal force F_N"),
+    "tangential_force": ("N", "tangential force F_x"),
+    "contact_radius": ("m", "contact radius a"),
+    "contact_area": ("m2", "contact area A"),
+    "mean_pressure": ("Pa", "mean contact pressure <p> = F_N / A"),
+    "mean_shear_stress": ("Pa", "mean shear stress tau = F_x / A"),
+    "sliding_fraction": ("1", "share of the springs in contact that are at the critical shift"),
+}
+#: The continuum method's event log (dims ``("alpha", "event")``): name -> (units, long_name).
+EVENT_VARIABLES: dict[str, tuple[str, str]] = {
+    "event_time": ("s", "time of the event from first contact"),
+    "event_kind": ("1", "kind of event"),
+    "event_depth": ("m", "indentation depth at the event"),
+    "event_radius": ("m", "contact radius at the event"),
+    "event_x": ("m", "tangential displacement at the event"),
+}
+register_schema(SIMULATION_CONTENT, {name: ("alpha", "time") for name in SIMULATION_VARIABLES})
+register_schema(SIMULATION_CONTENT, {name: ("alpha", "event") for name in EVENT_VARIABLES},
+                when=("method", "continuum"))
 
 
 #: Relative accuracy the slip criterion needs: x − X(ξ) against ū(a) must keep this many digits.
@@ -138,9 +167,9 @@ def simulate(
         Angles in degrees (default 10°, 20°, …, 80°, as in Fig. 8 and 10);
         not with a custom path.
     method : {"discrete", "continuum"}
-        ``"discrete"``: the paper's spring array (:mod:`mdr_events.discrete`).
+        ``"discrete"``: the paper's spring array (:mod:`mdr_events.models.discrete`).
         ``"continuum"``: its Δx → 0 limit integrated between events
-        (:mod:`mdr_events.continuum`); adds the event log along ``event``.
+        (:mod:`mdr_events.models.continuum`); adds the event log along ``event``.
     dx : float, optional
         Discrete method: spring spacing Δx in m (default 1 µm); at least 10
         springs per side must be in contact at ``d_max``.
@@ -152,7 +181,7 @@ def simulate(
         (increasing, >= 0); default ``samples`` points to the end of the longest run.
     samples : int, optional
         Continuum method without ``t``: number of output times (default 2001, at least 2).
-    tolerances : mdr_events.continuum.Tolerances, optional
+    tolerances : mdr_events.models.continuum.Tolerances, optional
         Continuum method: solver and root-finding tolerances (default
         ``Tolerances()``: ``rtol = 1e-10``, ``atol = 1e-14`` N, ``radius_rtol = 1e-14``).
 
@@ -160,11 +189,10 @@ def simulate(
     -------
     xarray.Dataset
         Dims ``("alpha", "time")``; variables of
-        :data:`mdr_events.datasets.SIMULATION_VARIABLES`, ``nan`` after a case
+        :data:`SIMULATION_VARIABLES`, ``nan`` after a case
         has ended (pull-off, or the end of its path); time from first contact.
     """
-    if method not in METHODS:
-        raise ValueError(f"method={method!r} is not allowed; allowed: {', '.join(map(repr, METHODS))}")
+    check_choice("method", method, METHODS)
     paths, angles = scenario_paths(params, scenario, alpha)
     if method == "continuum":
         for name, value in (("dx", dx), ("dt", dt), ("n_steps", n_steps)):
@@ -185,7 +213,7 @@ def simulate(
     scenario_name = "custom" if isinstance(scenario, Path) else scenario
     attrs = dict(method=method, scenario=scenario_name, dx=float(dx), dt=step,
                  spring_count_per_side=int(raw["spring_count"]),
-                 content="simulation of indentation and detachment along straight paths")
+                 content=SIMULATION_CONTENT)
     if isinstance(scenario, Path):
         attrs["path_waypoints"] = scenario.describe()
         attrs["path_speed"] = scenario.speed
@@ -195,15 +223,13 @@ def simulate(
 
 
 def _simulate_continuum(params, scenario, paths, angles, t, samples, tolerances) -> xr.Dataset:
-    from mdr_events.models.continuum import run_continuum
-
     samples = DEFAULT_SAMPLES if samples is None else samples
     if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 2:
         raise ValueError(f"samples={samples!r} is not allowed; allowed: an integer >= 2")
     if tolerances is None:
         tolerances = Tolerances()
     elif not isinstance(tolerances, Tolerances):
-        raise TypeError(f"tolerances={tolerances!r} is not allowed; allowed: a mdr_events.continuum.Tolerances")
+        raise TypeError(f"tolerances={tolerances!r} is not allowed; allowed: a mdr_events.Tolerances")
     times = None
     if t is not None:
         times = np.asarray(t, dtype=float)
@@ -214,7 +240,7 @@ def _simulate_continuum(params, scenario, paths, angles, t, samples, tolerances)
     raw = run_continuum(params, paths, times, samples=int(samples), tolerances=tolerances)
     attrs = dict(method="continuum", scenario="custom" if isinstance(scenario, Path) else scenario,
                  rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
-                 content="simulation of indentation and detachment along straight paths")
+                 content=SIMULATION_CONTENT)
     if isinstance(scenario, Path):
         attrs.update(path_waypoints=scenario.describe(), path_speed=scenario.speed, path_speed_units="m s-1")
     dataset = simulation_dataset(params, angles, raw["time"], raw, **attrs)
@@ -231,11 +257,43 @@ def event_log(events: list[list[tuple]]) -> xr.Dataset:
             table["time"][i, j], table["depth"][i, j] = time, depth
             table["radius"][i, j], table["x"][i, j] = radius, x
             kinds[i, j] = kind
-    dims = ("alpha", "event")
-    return xr.Dataset({
-        "event_time": (dims, table["time"], {"units": "s", "long_name": "time of the event from first contact"}),
-        "event_kind": (dims, kinds.astype(str), {"units": "1", "long_name": "kind of event"}),
-        "event_depth": (dims, table["depth"], {"units": "m", "long_name": "indentation depth at the event"}),
-        "event_radius": (dims, table["radius"], {"units": "m", "long_name": "contact radius at the event"}),
-        "event_x": (dims, table["x"], {"units": "m", "long_name": "tangential displacement at the event"}),
-    }, coords={"event": ("event", np.arange(rows), {"units": "1", "long_name": "event number"})})
+    values = {"event_time": table["time"], "event_kind": kinds.astype(str), "event_depth": table["depth"],
+              "event_radius": table["radius"], "event_x": table["x"]}
+    return xr.Dataset(
+        {name: (("alpha", "event"), values[name], {"units": units, "long_name": long_name})
+         for name, (units, long_name) in EVENT_VARIABLES.items()},
+        coords={"event": ("event", np.arange(rows), {"units": "1", "long_name": "event number"})})
+
+
+def simulation_dataset(
+    params: Parameters,
+    alpha: np.ndarray,
+    time: np.ndarray,
+    values: dict[str, np.ndarray],
+    **attrs: Any,
+) -> xr.Dataset:
+    """Assemble a simulation result with dims ``("alpha", "time")``.
+
+    ``values`` holds the kinematics, forces, radius and sliding fraction of
+    :data:`SIMULATION_VARIABLES` (shape (n_alpha, n_time), ``nan`` after a
+    case has ended); the area, mean pressure and mean shear stress are
+    derived here, identically for every method. ``attrs`` go to
+    :func:`mdr_events.io.datasets.stamp`.
+    """
+    radius = values["contact_radius"]
+    area = np.pi * radius**2
+    with np.errstate(invalid="ignore", divide="ignore"):
+        derived = {
+            "contact_area": area,
+            "mean_pressure": np.where(area > 0, values["normal_force"] / area, np.nan),
+            "mean_shear_stress": np.where(area > 0, values["tangential_force"] / area, np.nan),
+        }
+    data = {}
+    for name, (units, long_name) in SIMULATION_VARIABLES.items():
+        array = derived[name] if name in derived else values[name]
+        data[name] = (("alpha", "time"), np.asarray(array, dtype=float), {"units": units, "long_name": long_name})
+    coords = {
+        "alpha": ("alpha", np.asarray(alpha, dtype=float), {"units": "degree", "long_name": "path angle to the surface"}),
+        "time": ("time", np.asarray(time, dtype=float), {"units": "s", "long_name": "time from first contact"}),
+    }
+    return stamp(xr.Dataset(data, coords=coords), params, **attrs)

@@ -18,8 +18,9 @@ import numpy as np
 import xarray as xr
 from matplotlib.layout_engine import ConstrainedLayoutEngine
 
-from mdr_events.io.datasets import atomic_write
+from mdr_events.io.files import atomic_write
 from mdr_events.parameters import Parameters
+from mdr_events.theory.phase import PHASE_DIAGRAM_CONTENT
 
 __all__ = ["figure_png", "plot_phase_diagram", "plot_simulation", "save_figure"]
 
@@ -165,7 +166,7 @@ def plot_phase_diagram(dataset: xr.Dataset, ax=None):
     ax.set_xticks(np.arange(0, 91, 10))
     ax.set_xlabel("path angle α (°)")
     ax.set_ylabel("indentation depth d (mm)")
-    ax.set_title(_numbered(f"phase diagram of slip onset, scenario {scenario}, R = {R_mm:g} mm", dataset,
+    ax.set_title(_numbered(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario}, R = {R_mm:g} mm", dataset,
                            PHASE_DIAGRAM_FIGURES))
     ax.legend(loc="upper right" if scenario == "A" else "center right", fontsize=8)
     _add_inferred_footnote(ax.figure, dataset)

@@ -1,7 +1,7 @@
 """Closed-form layer: JKR contact, slip-onset depths ``d_crit(α)``, critical angles.
 
 Every formula is evaluated through the SymPy-derived relations of
-:mod:`mdr_events.symbolic` (lambdified once). Where a relation is a
+:mod:`mdr_events.theory.symbolic` (lambdified once). Where a relation is a
 polynomial (the cubic of (18), the quartics of (9) and (21)), its unique
 physical root is found by :func:`positive_polynomial_root`, a vectorised
 safeguarded Newton iteration: no Python loop over angles.
@@ -18,6 +18,7 @@ import numpy as np
 
 from mdr_events.theory import symbolic
 from mdr_events.parameters import Parameters
+from mdr_events.validation import check_choice, check_flag, validate_alpha
 
 __all__ = [
     "d_crit",
@@ -51,33 +52,10 @@ def _rel(key: str):
     return symbolic.relation(key)
 
 
-def _validate_alpha(alpha) -> np.ndarray:
-    """Angles in degrees as a float array; every entry finite and in [0, 90]."""
-    try:
-        values = np.asarray(alpha, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(f"alpha={alpha!r} must be a number or an array of numbers in degrees") from None
-    bad = ~np.isfinite(values) | (values < 0.0) | (values > 90.0)
-    if np.any(bad):
-        first = float(values[bad].flat[0])
-        raise ValueError(f"alpha={first!r} (degrees) is not allowed; allowed: finite angles in [0, 90]")
-    return values
-
-
 def _tan_degrees(alpha_deg: np.ndarray) -> np.ndarray:
     """tan α with α = 90° exactly mapped to +inf (no tangential motion)."""
     with np.errstate(divide="ignore"):
         return np.where(alpha_deg == 90.0, np.inf, np.tan(np.deg2rad(alpha_deg)))
-
-
-def _check_flag(name: str, value) -> None:
-    if not isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name}={value!r} is not allowed; allowed: True or False")
-
-
-def _check_choice(name: str, value, allowed) -> None:
-    if value not in allowed:
-        raise ValueError(f"{name}={value!r} is not allowed; allowed: {', '.join(map(repr, allowed))}")
 
 
 def _as_output(values: np.ndarray, like: np.ndarray):
@@ -397,13 +375,13 @@ def d_crit(
     the start of pull-off; in the model it is pinned first (see
     :mod:`mdr_events` docs on the continuum method).
     """
-    _check_choice("scenario", scenario, SCENARIOS)
+    check_choice("scenario", scenario, SCENARIOS)
     if scenario == "A" and branch is not None:
         raise ValueError(f"branch={branch!r} is not allowed with scenario 'A'; allowed: None (branch is for scenario B)")
     branch = "pull-off" if branch is None else branch
-    _check_choice("branch", branch, BRANCHES)
-    _check_flag("adhesion", adhesion)
-    alpha_deg = _validate_alpha(alpha)
+    check_choice("branch", branch, BRANCHES)
+    check_flag("adhesion", adhesion)
+    alpha_deg = validate_alpha(alpha)
     tan = _tan_degrees(alpha_deg)
     vertical = np.isinf(tan)
     tan_finite = np.where(vertical, 1.0, tan)
@@ -468,8 +446,8 @@ def critical_angle(params: Parameters, scenario: Literal["A", "B", "B+"] = "A", 
     the radius of ``final_depth`` on the ``Δγ0`` branch): for α < α_c the springs
     slide before the path turns back.
     """
-    _check_choice("scenario", scenario, CRITICAL_ANGLE_SCENARIOS)
-    _check_flag("adhesion", adhesion)
+    check_choice("scenario", scenario, CRITICAL_ANGLE_SCENARIOS)
+    check_flag("adhesion", adhesion)
     p = params
     if final_depth is not None and scenario != "B+":
         raise ValueError(f"final_depth={final_depth!r} is not allowed with scenario {scenario!r}; "

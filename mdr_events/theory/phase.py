@@ -7,11 +7,20 @@ from typing import Literal
 import numpy as np
 import xarray as xr
 
-from mdr_events.theory import analytic
-from mdr_events.io.datasets import stamp
+from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.parameters import Parameters
+from mdr_events.theory import analytic
+from mdr_events.validation import check_choice, validate_alpha
 
-__all__ = ["phase_diagram", "default_angles"]
+__all__ = ["phase_diagram", "default_angles", "PHASE_DIAGRAM_CONTENT", "PHASE_DIAGRAM_VARIABLES"]
+
+#: The ``content`` attribute of a phase diagram.
+PHASE_DIAGRAM_CONTENT = "phase diagram of slip onset"
+#: The variables every phase diagram holds -> their dimensions (``None``: ``alpha`` in scenario A,
+#: ``("branch", "alpha")`` in B); scenario B adds ``jump_off_depth``.
+PHASE_DIAGRAM_VARIABLES = {"d_crit_hertz": None, "d_crit_jkr": None, "d_max": (), "critical_angle_hertz": (),
+                           "critical_angle_jkr": ()}
+register_schema(PHASE_DIAGRAM_CONTENT, PHASE_DIAGRAM_VARIABLES)
 
 
 def default_angles(count: int = 901) -> np.ndarray:
@@ -46,8 +55,8 @@ def phase_diagram(
         scenario B, ``jump_off_depth`` (the displacement-controlled pull-off
         depth on the ``Δγ1`` branch).
     """
-    analytic._check_choice("scenario", scenario, analytic.SCENARIOS)
-    angles = analytic._validate_alpha(default_angles() if alpha is None else alpha)
+    check_choice("scenario", scenario, analytic.SCENARIOS)
+    angles = validate_alpha(default_angles() if alpha is None else alpha)
     if angles.ndim != 1 or angles.size == 0:
         raise ValueError(f"alpha must be a non-empty 1-D array of angles, got shape {angles.shape}")
     coords = {"alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})}
@@ -84,4 +93,4 @@ def phase_diagram(
         )
     dataset = xr.Dataset(variables, coords=coords)
     figure = {} if params.preset_name() is None else {"figure": "9a" if scenario == "A" else "9b"}
-    return stamp(dataset, params, scenario=scenario, content="phase diagram of slip onset", **figure)
+    return stamp(dataset, params, scenario=scenario, content=PHASE_DIAGRAM_CONTENT, **figure)

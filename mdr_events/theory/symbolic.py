@@ -4,7 +4,7 @@ Nothing here is typed in as a result: each relation is *derived* from the
 model's statements (the Abel transform (3), the spring displacement (7),
 Heß's rule (8), the stationary-sliding sum (12), the trajectories (14) and
 (19)) by integration, differentiation, ``solve`` and polynomial reduction.
-The numerical layers (:mod:`mdr_events.analytic`, and later the continuum and
+The numerical layers (:mod:`mdr_events.theory.analytic`, and later the continuum and
 discrete simulators) evaluate these very expressions through
 :attr:`Relation.numeric`, built once with :func:`sympy.lambdify` and cached.
 

@@ -49,61 +49,81 @@ class SpanPlan(NamedTuple):
 
 def plan_span(model: ContinuumModel, state: ContactState, segment: Segment) -> SpanPlan:
     """The next span from ``state.t`` on ``segment``: regime, end time and end event."""
-    t = state.t
-    d = segment.d(t)
-    scale = DEPTH_SHARE * max(model.params.d_max, 1e-300)
     if not state.in_contact:
-        if segment.vd > 0 and d >= -scale:
-            radius = model.grow.radius(max(d, 0.0), model.tolerances.radius_rtol)
-            touch = (EventKind.FIRST_CONTACT,)
-            if model.K == 0.0:  # τ0 = 0: no spring holds any shift, all slide from the start
-                touch += (EventKind.SLIP_ONSET, EventKind.FULL_SLIP)
-            return SpanPlan(Action.TOUCH, Regime.NONE, t, t, None, radius, 0.0, touch)
-        t_next = segment.time_at_depth(0.0) if segment.vd > 0 else segment.t1
-        return SpanPlan(Action.APPROACH, Regime.NONE, t, min(max(t_next, t), segment.t1), None, 0.0, 0.0)
-    a, force = state.radius, state.force
+        return _plan_out_of_contact(model, state, segment)
+    if segment.vd > 0:
+        return _plan_inward(model, state, segment)
+    if segment.vd < 0:
+        return _plan_outward(model, state, segment)
+    return SpanPlan(Action.CONTACT, Regime.PINNED, state.t, segment.t1, None, state.radius, state.force)
+
+
+def _depth_scale(model: ContinuumModel) -> float:
+    return DEPTH_SHARE * max(model.params.d_max, 1e-300)
+
+
+def _end_kind(t_end: float, segment: Segment, kind: EventKind) -> EventKind | None:
+    """The regime's end event, unless the segment ends first."""
+    return None if t_end >= segment.t1 else kind
+
+
+def _plan_out_of_contact(model: ContinuumModel, state: ContactState, segment: Segment) -> SpanPlan:
+    """First contact where the indenter reaches the surface going in; else approach until it does."""
+    t = state.t
+    if segment.vd > 0 and segment.d(t) >= -_depth_scale(model):
+        radius = model.grow.radius(max(segment.d(t), 0.0), model.tolerances.radius_rtol)
+        touch = (EventKind.FIRST_CONTACT,)
+        if model.K == 0.0:  # τ0 = 0: no spring holds any shift, all slide from the start
+            touch += (EventKind.SLIP_ONSET, EventKind.FULL_SLIP)
+        return SpanPlan(Action.TOUCH, Regime.NONE, t, t, None, radius, 0.0, touch)
+    t_next = segment.time_at_depth(0.0) if segment.vd > 0 else segment.t1
+    return SpanPlan(Action.APPROACH, Regime.NONE, t, min(max(t_next, t), segment.t1), None, 0.0, 0.0)
+
+
+def _plan_inward(model: ContinuumModel, state: ContactState, segment: Segment) -> SpanPlan:
+    """Going in: growth on the Δγ0 branch (springs may jump in first), or pinned until the depth reaches it."""
+    t, a = state.t, state.radius
+    d = segment.d(t)
+    threshold = model.grow.depth(a)
+    if d < threshold - _depth_scale(model):
+        t_end = min(segment.t1, segment.time_at_depth(threshold))
+        return SpanPlan(Action.CONTACT, Regime.PINNED, t, t_end, _end_kind(t_end, segment, EventKind.GROWTH_RESUMES),
+                        a, state.force)
     growth: tuple[Piece, ...] = ()
     jumped_from = None
-    end_kind = None
-    if segment.vd > 0:
-        threshold = model.grow.depth(a)
-        if d >= threshold - scale:
-            regime, t_end = Regime.GROWING, segment.t1
-            on_branch = model.grow.radius(max(d, 0.0), model.tolerances.radius_rtol)
-            if on_branch > a * (1.0 + RADIUS_DROP_SHARE):
-                # the held radius is inside the Δγ0 branch (after a drop onto the Δγ1 branch): the springs
-                # up to the branch jump in at once, at the indenter's position, as at first contact
-                growth = (Piece(a, on_branch, segment.x(t)),)
-                jumped_from, a = a, on_branch
-            growth += (Piece(a, math.inf, segment.xs, segment.vx / segment.vd, segment.ds),)
-        else:
-            regime, t_end, end_kind = Regime.PINNED, min(segment.t1, segment.time_at_depth(threshold)), \
-                EventKind.GROWTH_RESUMES
-    elif segment.vd < 0:
-        threshold = model.shrink.depth(a)
-        if d <= threshold + scale and a <= model.shrink.jump_off_radius:
-            # every inner spring has a higher threshold than the boundary one: all come off at once
-            return SpanPlan(Action.COME_OFF, Regime.PINNED, t, t, EventKind.PULL_OFF, a, force)
-        if d <= threshold + scale:
-            regime = Regime.SHRINKING
-            t_end = min(segment.t1, segment.time_at_depth(model.shrink.jump_off_depth))
-            end_kind = EventKind.PULL_OFF if model.params.dgamma1 > 0 else EventKind.CONTACT_ENDS
-        else:
-            regime, t_end, end_kind = Regime.PINNED, min(segment.t1, segment.time_at_depth(threshold)), \
-                EventKind.DETACHMENT_STARTS
-    else:
-        regime, t_end = Regime.PINNED, segment.t1
-    if t_end >= segment.t1:
-        end_kind = None  # the segment ends first
-    entry: tuple[EventKind, ...] = ()
-    if regime is Regime.SHRINKING:
-        if not state.detaching:  # the radius leaves the pinned or growing state at once (Δγ1 <= Δγ0)
-            entry = (EventKind.DETACHMENT_STARTS,)
-        on_branch = model.shrink.radius(d, model.tolerances.radius_rtol)
-        if on_branch < a * (1.0 - RADIUS_DROP_SHARE):
-            # Δγ1 < Δγ0: the boundary springs are stretched beyond the Δγ1 limit and the radius drops
-            # onto the Δγ1 branch at once; the springs it loses take their force with them and the
-            # smaller cap ū(a) clips the rest (anchor map form)
-            a = on_branch
-            force = state.anchors.tangential_force(model.K, model.params.G_star, segment.x(t), a)
-    return SpanPlan(Action.CONTACT, regime, t, t_end, end_kind, a, force, entry, growth, jumped_from)
+    on_branch = model.grow.radius(max(d, 0.0), model.tolerances.radius_rtol)
+    if on_branch > a * (1.0 + RADIUS_DROP_SHARE):
+        # the held radius is inside the Δγ0 branch (after a drop onto the Δγ1 branch): the springs up to
+        # the branch jump in at once, at the indenter's position, as at first contact
+        growth = (Piece(a, on_branch, segment.x(t)),)
+        jumped_from, a = a, on_branch
+    growth += (Piece(a, math.inf, segment.xs, segment.vx / segment.vd, segment.ds),)
+    return SpanPlan(Action.CONTACT, Regime.GROWING, t, segment.t1, None, a, state.force, (), growth, jumped_from)
+
+
+def _plan_outward(model: ContinuumModel, state: ContactState, segment: Segment) -> SpanPlan:
+    """Going out: pinned until the depth reaches the Δγ1 branch, then shrinking to the jump-off (or to
+    zero without adhesion); a held radius inside the fold comes off at once."""
+    t, a, force = state.t, state.radius, state.force
+    d = segment.d(t)
+    threshold = model.shrink.depth(a)
+    touches_branch = d <= threshold + _depth_scale(model)
+    if touches_branch and a <= model.shrink.jump_off_radius:
+        # every inner spring has a higher threshold than the boundary one: all come off at once
+        return SpanPlan(Action.COME_OFF, Regime.PINNED, t, t, EventKind.PULL_OFF, a, force)
+    if not touches_branch:
+        t_end = min(segment.t1, segment.time_at_depth(threshold))
+        return SpanPlan(Action.CONTACT, Regime.PINNED, t, t_end,
+                        _end_kind(t_end, segment, EventKind.DETACHMENT_STARTS), a, force)
+    t_end = min(segment.t1, segment.time_at_depth(model.shrink.jump_off_depth))
+    ending = EventKind.PULL_OFF if model.params.dgamma1 > 0 else EventKind.CONTACT_ENDS
+    # the radius leaves the pinned or growing state at once (Δγ1 <= Δγ0)
+    entry = () if state.detaching else (EventKind.DETACHMENT_STARTS,)
+    on_branch = model.shrink.radius(d, model.tolerances.radius_rtol)
+    if on_branch < a * (1.0 - RADIUS_DROP_SHARE):
+        # Δγ1 < Δγ0: the boundary springs are stretched beyond the Δγ1 limit and the radius drops onto the
+        # Δγ1 branch at once; the springs it loses take their force with them and the smaller cap ū(a)
+        # clips the rest (anchor map form)
+        a = on_branch
+        force = state.anchors.tangential_force(model.K, model.params.G_star, segment.x(t), a)
+    return SpanPlan(Action.CONTACT, Regime.SHRINKING, t, t_end, _end_kind(t_end, segment, ending), a, force, entry)

@@ -1,9 +1,9 @@
 """The committed results/ is what a fresh `mdr-events reproduce` computes (so it cannot go stale).
 
 Across machines and library versions the datasets are compared within the tolerance of
-:data:`mdr_events.datasets.RESULT_RTOL` (exact for dimensions, attributes, strings and integers); the
+:data:`mdr_events.io.datasets.RESULT_RTOL` (exact for dimensions, attributes, strings and integers); the
 report, which rounds, must match exactly. Bit-identical output on repeat within one environment is
-tested where each result is made (tests/test_files.py, test_discrete.py, test_properties.py).
+tested where each result is made (tests/io/test_files.py, tests/models/test_discrete.py, test_properties.py).
 """
 
 import re
@@ -14,10 +14,11 @@ import pytest
 
 import mdr_events as me
 from mdr_events.app import report
-from mdr_events.io.datasets import RESULT_RTOL, assert_results_agree, result_differences, write_netcdf
+from mdr_events.io.datasets import RESULT_RTOL, assert_results_agree, result_differences
+from mdr_events.io.files import write_netcdf
 from mdr_events.app.result_files import FileStatus
 
-ROOT = Path(__file__).parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 RESULTS = ROOT / "results"
 
 

@@ -148,7 +148,7 @@ def test_failed_write_leaves_no_file(paper, tmp_path):
     """A write that the netCDF backend refuses leaves no file behind and an earlier file intact.
 
     A dict attribute is not netCDF-serialisable: xarray raises ``TypeError`` ("Invalid value for
-    attr ...") inside the writer, after :func:`mdr_events.datasets.atomic_write` has created its
+    attr ...") inside the writer, after :func:`mdr_events.io.files.atomic_write` has created its
     temporary file. Fails if the temporary file is not removed, if the target is written or
     truncated before the writer succeeds, if the error is swallowed, or if something else goes
     wrong first (a ``NameError``, a ``ValueError`` ... would not match).

@@ -8,9 +8,8 @@ import xarray as xr
 
 import mdr_events as me
 from mdr_events.analysis.convergence import discrete_errors, exact_references_A, observed_orders
-from mdr_events.io.datasets import SIMULATION_VARIABLES
 from mdr_events.models.paths import Path
-from mdr_events.models.simulate import FIGURE_ANGLES, simulate
+from mdr_events.models.simulate import FIGURE_ANGLES, SIMULATION_VARIABLES, simulate
 
 DX = 2e-6  # 1 550 springs per side at d_max for R = 30 mm
 

@@ -1,6 +1,8 @@
 """Files: every result reads back identical, writes are atomic, foreign or damaged files are named."""
 
 import os
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -8,7 +10,7 @@ import xarray as xr
 
 import mdr_events as me
 from mdr_events.io import datasets
-from mdr_events.io.datasets import atomic_write, write_netcdf
+from mdr_events.io.files import atomic_write, write_netcdf
 
 
 @pytest.fixture(scope="module")
@@ -40,6 +42,15 @@ def test_every_result_reads_back_identical(results, tmp_path, name):
     # and writing it again gives the same bytes (same input, same output)
     second = write_netcdf(again, tmp_path / f"{name}_again.nc")
     assert second.read_bytes() == path.read_bytes()
+
+
+def test_every_kind_of_result_has_its_schema_whatever_is_imported(results):
+    # each producer registers its schema when imported; any import of mdr_events.* runs the package's
+    # __init__ first, which imports them all
+    assert {dataset.attrs["content"] for dataset in results.values()} == set(datasets.registered_contents())
+    code = "from mdr_events.io.datasets import registered_contents; print(registered_contents())"
+    printed = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert printed.strip() == str(datasets.registered_contents())
 
 
 def test_written_files_get_the_usual_permissions(results, tmp_path):

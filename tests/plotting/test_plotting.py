@@ -20,7 +20,7 @@ ANGLES = np.linspace(0.0, 90.0, 91)
 #: The user's own parameters: one field away from the paper preset.
 OWN = Parameters.paper().replace(tau0=30e3)
 OVERLAY_ANGLE = 20.0
-REPOSITORY = Path(__file__).resolve().parents[1]
+REPOSITORY = Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture(autouse=True)

@@ -1,0 +1,399 @@
+"""What ``results/README.md`` reports, as values: the computations behind it and the rows of its tables.
+
+:func:`compute` runs every simulation and study (a :class:`Reproduction`); the
+functions below turn it into the rows of the report's tables (named tuples of
+plain numbers in SI units). :mod:`mdr_events.app.report` only formats them.
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from dataclasses import dataclass, field
+from typing import Callable, NamedTuple
+
+import numpy as np
+import xarray as xr
+
+from mdr_events.analysis.convergence import (HISTORY_QUANTITIES, discrete_errors, discrete_minus_continuum,
+                                             observed_orders)
+from mdr_events.analysis.crosscheck import CROSS_CHECK_CONTENT, cross_check
+from mdr_events.models.continuum import extremum, solve_path
+from mdr_events.models.simulate import scenario_paths, simulate
+from mdr_events.parameters import Parameters
+from mdr_events.theory import analytic
+
+__all__ = ["Reproduction", "compute", "jobs", "COMPUTE_STEPS", "critical_angles_A", "critical_angles_B",
+           "cross_check_rows", "differences", "extremum_convergence", "history_convergence"]
+
+#: Critical angles stated in section 4 (R = 30 mm), degrees.
+PAPER_CRITICAL_ANGLES = {"hertz": 23.59, "jkr": 22.87}
+#: The stated plateau of the mean shear stress in pull-off, Pa.
+PAPER_TAU0 = 42e3
+RADII = {"R30": 0.03, "R100": 0.1}
+SCENARIOS = ("A", "B")
+FIGURE_NUMBERS = {"A": "8", "B": "10"}
+#: Angles of Fig. 8 and 10 (degrees).
+FIGURE_ANGLES = (10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0)
+
+#: The discrete model overlaid on the figures and used in the cross-check.
+OVERLAY_ANGLE = 20.0
+FIGURE_DX = 1e-6
+FIGURE_STEPS = 10_000
+#: Convergence studies: spacings (m) and angles (degrees); the time step moves the indenter Δx/2.
+CONVERGENCE_SPACINGS = (16e-6, 8e-6, 4e-6, 2e-6, 1e-6)
+CONVERGENCE_ANGLES = (10.0, 30.0, 60.0)
+HISTORY_SPACINGS = (8e-6, 4e-6, 2e-6, 1e-6)
+HISTORY_ANGLE = 30.0
+#: Extrema of the discrete model whose convergence the report shows, in its order.
+CONVERGENCE_EXTREMA = ("normal_force_min", "contact_area_max", "tangential_force_max")
+#: Extremes of the continuum runs the report quotes (exact, from the solution: :func:`continuum.extremum`):
+#: name -> (quantity, largest).
+EXTREMES = {"normal_force_max": ("normal_force", True), "normal_force_min": ("normal_force", False),
+            "tangential_force_max": ("tangential_force", True), "contact_area_max": ("contact_area", True),
+            "mean_pressure_max": ("mean_pressure", True), "mean_shear_stress_max": ("mean_shear_stress", True)}
+#: The case whose event log and extremes the differences (1)–(4) show in detail: (radius label, scenario).
+DETAIL_CASE = ("R30", "A")
+
+
+@dataclass
+class Reproduction:
+    """Everything the report and the figures are made of (keys ``(radius label, scenario)``)."""
+
+    continuum: dict = field(default_factory=dict)
+    discrete: dict = field(default_factory=dict)
+    cross_checks: dict = field(default_factory=dict)
+    extremes: dict = field(default_factory=dict)
+    discrete_errors: dict = field(default_factory=dict)
+    history: dict = field(default_factory=dict)
+
+
+def jobs() -> list[tuple[str, float, str]]:
+    """Every (radius label, radius in m, scenario) the report covers."""
+    return [(label, radius, scenario) for label, radius in RADII.items() for scenario in SCENARIOS]
+
+
+#: Progress messages :func:`compute` sends (one per step).
+COMPUTE_STEPS = 2 * len(RADII) * len(SCENARIOS) + 2
+
+
+def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
+    """Run every simulation and study behind ``results/`` (about 20 s on one core).
+
+    ``progress`` hears one message per step (:data:`COMPUTE_STEPS` of them).
+    """
+    say = progress or (lambda message: None)
+    data = Reproduction()
+    for label, radius, scenario in jobs():
+        params = Parameters.paper(R=radius)
+        say(f"Fig. {FIGURE_NUMBERS[scenario]}, R = {radius * 1e3:g} mm: continuum, "
+            f"{len(FIGURE_ANGLES)} angles; discrete overlay at {OVERLAY_ANGLE:g}° (Δx = {FIGURE_DX * 1e6:g} µm)")
+        data.continuum[(label, scenario)] = simulate(params, scenario, alpha=FIGURE_ANGLES, method="continuum")
+        data.discrete[(label, scenario)] = simulate(params, scenario, alpha=[OVERLAY_ANGLE], dx=FIGURE_DX,
+                                                    n_steps=FIGURE_STEPS)
+        solutions = [solve_path(params, path) for path in scenario_paths(params, scenario, FIGURE_ANGLES)[0]]
+        data.extremes[(label, scenario)] = {
+            name: np.array([extremum(solution, quantity, largest)[1] for solution in solutions])
+            for name, (quantity, largest) in EXTREMES.items()}
+    for label, radius, scenario in jobs():
+        say(f"{CROSS_CHECK_CONTENT}, scenario {scenario}, R = {radius * 1e3:g} mm "
+            f"(closed form, continuum, discrete at {len(FIGURE_ANGLES)} angles)")
+        data.cross_checks[(label, scenario)] = cross_check(Parameters.paper(R=radius), scenario, FIGURE_ANGLES,
+                                                           dx=FIGURE_DX, n_steps=FIGURE_STEPS)
+    params = Parameters.paper()
+    say(f"convergence of the discrete model to the exact extrema "
+        f"({len(CONVERGENCE_SPACINGS)} spacings, {len(CONVERGENCE_ANGLES)} angles)")
+    for alpha in CONVERGENCE_ANGLES:
+        data.discrete_errors[alpha] = discrete_errors(params, alpha, CONVERGENCE_SPACINGS, steps_per_spacing=0.5)
+    say("convergence of the discrete model to the continuum over the whole run")
+    for scenario in SCENARIOS:
+        data.history[scenario] = discrete_minus_continuum(params, scenario, HISTORY_ANGLE, HISTORY_SPACINGS)
+    return data
+
+
+# ----------------------------------------------------------------------------
+# helpers on the datasets
+def event_times(ds: xr.Dataset, alpha: float, kind: str) -> np.ndarray:
+    """The times of every event of ``kind`` in the event log of the case at ``alpha``."""
+    case = ds.sel(alpha=alpha)
+    kinds = case["event_kind"].values
+    return case["event_time"].values[kinds == kind]
+
+
+def _first(values: np.ndarray) -> float:
+    return float(values[0]) if len(values) else math.nan
+
+
+# ----------------------------------------------------------------------------
+# critical angles
+class CriticalAngleRow(NamedTuple):
+    """A critical angle of scenario A (slip begins exactly at ``d_max``), ours and the paper's."""
+
+    radius: float
+    model: str  #: "hertz" (eq. (17)) or "jkr" (eq. (18))
+    equation: str
+    computed: float  #: degrees
+    paper: float | None  #: degrees; None where the paper states none
+
+
+class ScenarioBAngleRow(NamedTuple):
+    """The angle above which, in scenario B, the contact comes apart before any spring slides."""
+
+    radius: float
+    angle: float  #: degrees, adhesive (eq. (21) at the jump-off)
+
+
+def critical_angles_A() -> list[CriticalAngleRow]:
+    """The critical angles of scenario A for each radius, non-adhesive and adhesive."""
+    rows = []
+    for label, radius in RADII.items():
+        params = Parameters.paper(R=radius)
+        for model, adhesive, equation in (("hertz", False, "(17)"), ("jkr", True, "(18)")):
+            paper = PAPER_CRITICAL_ANGLES[model] if label == "R30" else None
+            rows.append(CriticalAngleRow(radius, model, equation,
+                                         analytic.critical_angle(params, "A", adhesion=adhesive), paper))
+    return rows
+
+
+def critical_angles_B() -> list[ScenarioBAngleRow]:
+    """The adhesive critical angle of scenario B for each radius."""
+    return [ScenarioBAngleRow(radius, analytic.critical_angle(Parameters.paper(R=radius), "B", adhesion=True))
+            for radius in RADII.values()]
+
+
+# ----------------------------------------------------------------------------
+# slip onset, three ways
+class SlipOnsetVerdict(enum.Enum):
+    """How the slip onsets of a cross-check row compare (the first that applies)."""
+
+    NO_SLIP_IN_INDENTATION = "the closed form lies beyond d_max (scenario A)"
+    JUMP_OFF_FIRST = "the contact jumps off before any slip (scenario B)"
+    FOUND_ONCE_AT_PHASE_END = "only one method slips, within tolerance of the end of the phase"
+    PINNED = "the radius is pinned when the springs slide: (21) does not apply"
+    DISAGREE = "a difference exceeds its tolerance"
+    AGREE = "agree"
+
+
+class CrossCheckRow(NamedTuple):
+    """Slip-onset depths (m) of one angle of a cross-check (:func:`mdr_events.cross_check`)."""
+
+    radius: float
+    scenario: str
+    alpha: float
+    closed_form: float
+    continuum: float
+    discrete: float
+    discrete_minus_continuum: float
+    tolerance: float
+    verdict: SlipOnsetVerdict
+
+
+def _slip_onset_verdict(row: xr.Dataset, scenario: str, params: Parameters) -> SlipOnsetVerdict:
+    closed = float(row["d_crit_closed_form"])
+    if scenario == "A" and closed > params.d_max:
+        return SlipOnsetVerdict.NO_SLIP_IN_INDENTATION
+    if scenario == "B" and closed == -math.inf:
+        return SlipOnsetVerdict.JUMP_OFF_FIRST
+    if int(row["found_once_at_phase_end"]):
+        return SlipOnsetVerdict.FOUND_ONCE_AT_PHASE_END
+    if int(row["pinned_radius"]):
+        return SlipOnsetVerdict.PINNED
+    if int(row["disagree"]):
+        return SlipOnsetVerdict.DISAGREE
+    return SlipOnsetVerdict.AGREE
+
+
+def cross_check_rows(data: Reproduction) -> list[CrossCheckRow]:
+    """One row per angle of every cross-check, in the order computed."""
+    rows = []
+    for (label, scenario), ds in data.cross_checks.items():
+        params = Parameters.from_attrs(ds.attrs)
+        for alpha in ds["alpha"].values:
+            row = ds.sel(alpha=alpha)
+            rows.append(CrossCheckRow(
+                params.R, scenario, alpha, float(row["d_crit_closed_form"]), float(row["d_crit_continuum"]),
+                float(row["d_crit_discrete"]), float(row["discrete_minus_continuum"]),
+                float(row["discrete_tolerance"]), _slip_onset_verdict(row, scenario, params)))
+    return rows
+
+
+# ----------------------------------------------------------------------------
+# the four differences between simulation and experiment (section 4.2)
+class AdhesiveStrengthRow(NamedTuple):
+    """|F_N,min| (N) of one (radius, scenario): JKR, the continuum over the angles, the discrete model."""
+
+    radius: float
+    scenario: str
+    jkr: float  #: (3/2) π Δγ1 R
+    continuum_min: float
+    continuum_max: float
+    largest_relative_difference: float  #: of the continuum from JKR
+    discrete: float  #: at :data:`OVERLAY_ANGLE`
+
+
+class PinnedIntervalRow(NamedTuple):
+    """The interval (s) after ``d_max`` during which the radius stays pinned, and ``F_x``'s change (N) over it."""
+
+    alpha: float
+    d_max_time: float
+    detachment_time: float
+    tangential_force_change: float
+
+    @property
+    def duration(self) -> float:
+        return self.detachment_time - self.d_max_time
+
+
+class MaximaRow(NamedTuple):
+    """Exact maxima of one continuum run (SI units)."""
+
+    alpha: float
+    normal_force: float
+    tangential_force: float
+    contact_area: float
+    mean_pressure: float
+
+
+class ShearPlateauRow(NamedTuple):
+    """Whether the mean shear stress of a scenario-A run reaches ``τ0`` before the jump-off."""
+
+    radius: float
+    alpha: float
+    travel: float  #: x1 = d_max / tan α (m)
+    shift_at_jump_off: float  #: ū(a_jump-off) (m)
+    largest_shear_stress: float  #: Pa
+    reaches_tau0: bool
+    full_slip_time: float | None  #: s, the last full slip; None if none
+
+
+class AreaGrowthRow(NamedTuple):
+    """How smoothly the contact area grows during indentation in one run."""
+
+    alpha: float
+    jump_in_area: float  #: π a0² (m²)
+    largest_step_share: float  #: largest change between samples, as a share of A_max
+    sample_spacing: float  #: s
+
+
+@dataclass
+class Differences:
+    """The tables of the four differences between simulation and experiment of section 4.2."""
+
+    samples_per_run: int
+    adhesive_strength: list[AdhesiveStrengthRow]
+    pinned_intervals: list[PinnedIntervalRow]
+    maxima: list[MaximaRow]
+    shear_plateau: list[ShearPlateauRow]
+    area_growth: list[AreaGrowthRow]
+
+
+def adhesive_strength_rows(data: Reproduction) -> list[AdhesiveStrengthRow]:
+    """|F_N,min| against JKR's (3/2) π Δγ1 R for every (radius, scenario)."""
+    rows = []
+    for (label, scenario), ds in data.continuum.items():
+        params = Parameters.from_attrs(ds.attrs)
+        jkr = -analytic.pull_off_force(params, params.dgamma1)
+        values = -data.extremes[(label, scenario)]["normal_force_min"]
+        worst = np.max(np.abs(values - jkr)) / jkr
+        discrete = -float(data.discrete[(label, scenario)]["normal_force"].min())
+        rows.append(AdhesiveStrengthRow(params.R, scenario, jkr, values.min(), values.max(), worst, discrete))
+    return rows
+
+
+def pinned_interval_rows(ds: xr.Dataset) -> list[PinnedIntervalRow]:
+    """From ``d_max`` (the corner) to the start of detachment, per angle of a continuum run."""
+    rows = []
+    for alpha in ds["alpha"].values:
+        corner = _first(event_times(ds, alpha, "corner"))
+        release = _first(event_times(ds, alpha, "detachment_starts"))
+        case = ds.sel(alpha=alpha)
+        inside = (case["time"] >= corner) & (case["time"] <= release)
+        force = case["tangential_force"].values[inside.values]
+        change = float(np.max(force) - np.min(force)) if force.size else math.nan
+        rows.append(PinnedIntervalRow(alpha, corner, release, change))
+    return rows
+
+
+def maxima_rows(ds: xr.Dataset, extremes: dict[str, np.ndarray]) -> list[MaximaRow]:
+    """The exact maxima of each angle's run (``extremes``: :attr:`Reproduction.extremes` of its case)."""
+    return [MaximaRow(alpha, extremes["normal_force_max"][i], extremes["tangential_force_max"][i],
+                      extremes["contact_area_max"][i], extremes["mean_pressure_max"][i])
+            for i, alpha in enumerate(ds["alpha"].values)]
+
+
+def shear_plateau_rows(data: Reproduction) -> list[ShearPlateauRow]:
+    """Every scenario-A angle of every radius: does τ reach τ0 in pull-off?"""
+    rows = []
+    for (label, scenario), ds in data.continuum.items():
+        if scenario != "A":
+            continue
+        params = Parameters.from_attrs(ds.attrs)
+        cap = float(analytic.critical_shift(analytic.jump_off(params, params.dgamma1)["contact_radius"], params))
+        for i, alpha in enumerate(ds["alpha"].values):
+            x1 = params.d_max / math.tan(math.radians(alpha))
+            tau = float(data.extremes[(label, scenario)]["mean_shear_stress_max"][i])
+            full = event_times(ds, alpha, "full_slip")
+            rows.append(ShearPlateauRow(params.R, alpha, x1, cap, tau, math.isclose(tau, params.tau0, rel_tol=1e-9),
+                                        float(full[-1]) if len(full) else None))
+    return rows
+
+
+def area_growth_rows(ds: xr.Dataset) -> list[AreaGrowthRow]:
+    """The jump-in area and the largest change of A between samples before ``d_max``, per angle."""
+    rows = []
+    for alpha in ds["alpha"].values:
+        case = ds.sel(alpha=alpha)
+        corner = _first(event_times(ds, alpha, "corner"))
+        area = case["contact_area"].values
+        indentation = case["time"].values <= corner
+        steps = np.abs(np.diff(area[indentation]))
+        spacing = float(case["time"].values[1] - case["time"].values[0])
+        rows.append(AreaGrowthRow(alpha, area[0], steps.max() / np.nanmax(area), spacing))
+    return rows
+
+
+def differences(data: Reproduction) -> Differences:
+    """The tables of the four differences (the detailed ones of :data:`DETAIL_CASE`)."""
+    detail = data.continuum[DETAIL_CASE]
+    return Differences(
+        samples_per_run=detail.sizes["time"],
+        adhesive_strength=adhesive_strength_rows(data),
+        pinned_intervals=pinned_interval_rows(detail),
+        maxima=maxima_rows(detail, data.extremes[DETAIL_CASE]),
+        shear_plateau=shear_plateau_rows(data),
+        area_growth=area_growth_rows(detail),
+    )
+
+
+# ----------------------------------------------------------------------------
+# convergence of the discrete model
+class ConvergenceRow(NamedTuple):
+    """Relative errors of one quantity, one per spacing, and the observed orders between neighbours."""
+
+    case: float | str  #: the angle (degrees) or the scenario
+    quantity: str
+    errors: np.ndarray
+    orders: np.ndarray
+
+
+def extremum_convergence(data: Reproduction) -> list[ConvergenceRow]:
+    """Errors of the :data:`CONVERGENCE_EXTREMA` against their exact values, per angle and spacing."""
+    return [ConvergenceRow(alpha, key, errors[key], observed_orders(CONVERGENCE_SPACINGS, errors[key]))
+            for alpha, errors in data.discrete_errors.items() for key in CONVERGENCE_EXTREMA]
+
+
+class HistoryConvergence(NamedTuple):
+    """The discrete model against the continuum over a whole run of one scenario."""
+
+    rows: list[ConvergenceRow]  #: one per quantity of :data:`HISTORY_QUANTITIES`
+    samples_left_out: list[int]  #: one per spacing
+
+
+def history_convergence(data: Reproduction) -> dict[str, HistoryConvergence]:
+    """Per scenario: ``max |discrete − continuum| / max |continuum|`` over :data:`HISTORY_SPACINGS`."""
+    result = {}
+    for scenario, history in data.history.items():
+        rows = [ConvergenceRow(scenario, name, history[name], observed_orders(HISTORY_SPACINGS, history[name]))
+                for name in HISTORY_QUANTITIES]
+        result[scenario] = HistoryConvergence(rows, [int(n) for n in history["samples_left_out"]])
+    return result
