@@ -191,22 +191,18 @@ def _scalar_root(coeffs: list[float], lower: float, max_iterations: int, rtol: f
     where ``p < 0`` (an overshoot) hands over to the bracketed iteration on
     ``[lower, bound]``.
     """
-    degree = len(coeffs) - 1
     rtol = float(rtol)  # Python floats throughout: NumPy scalars would make every step ten times dearer
     start = max(_scalar_upper_root_bound(coeffs), lower) * (1.0 + 8 * _FLOAT_EPS)
     x = start
     for _ in range(max_iterations):
-        value, slope = coeffs[0] * x + coeffs[1], coeffs[0]
-        for coefficient in coeffs[2:]:
-            slope = slope * x + value
-            value = value * x + coefficient
+        value, slope = _horner(coeffs, x)
         step = value / slope if slope > 0.0 else -math.inf
         if step < -rtol * abs(x):  # an upward step: p < 0 beyond rounding (an overshoot), or a fold
             root = _bracketed_root([np.array([cf]) for cf in coeffs], np.array([lower]), np.array([start]),
                                    max_iterations)
             return float(root[0])
         x_new = max(x - step, lower)
-        if abs(x_new - x) <= rtol * abs(x_new) or degree == 0:
+        if abs(x_new - x) <= rtol * abs(x_new):
             return x_new
         x = x_new
     return x

@@ -155,6 +155,11 @@ class AnchorMap:
         rest = [dataclasses.replace(p, start=max(p.start, front)) for p in self.pieces if p.end > front]
         self.pieces = [Piece(0.0, front, anchor)] + rest
 
+    def restick_slip_zone(self, level: float, radius: float) -> None:
+        """The springs sliding at ``level = x − ū`` (``Y <= level``, the slip zone ``[0, c]``) stick again
+        with the anchor ``level``, where their shift is the cap."""
+        self.restick(self.front(level, radius) if radius > 0 else 0.0, level)
+
     def tangential_force(self, K: float, G_star: float, x: float, a: float) -> float:
         """``F_x = 2G* [c ū + ∫_c^a (x − Y) dξ]`` with ``ū = K a`` and the slip front ``c``: the
         force of this map, without integration (0 out of contact)."""

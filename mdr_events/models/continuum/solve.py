@@ -119,9 +119,11 @@ def enter(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment: S
             # the cap jumps up with the radius: the springs sliding at ū(a_before) now carry less than the
             # cap and stick again, anchored where their shift is ū(a_before)
             before = plan.jumped_from
-            x = segment.x(plan.t_start)
-            sliding = before if state.slip is Slip.FULL else state.anchors.front(x - model.K * before, before)
-            state.anchors.restick(sliding, x - model.K * before)
+            level = segment.x(plan.t_start) - model.K * before
+            if state.slip is Slip.FULL:
+                state.anchors.restick(before, level)
+            else:
+                state.anchors.restick_slip_zone(level, before)
             state.slip = Slip.STICK
         if state.slip is Slip.FULL:
             state.slip = Slip.PARTIAL  # the springs attaching now stick
@@ -144,8 +146,7 @@ def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOut
         # integration accumulated before (long, shallow paths)
         state.force = 2.0 * model.params.G_star * model.K * radius**2
     if EventKind.RE_STICK in fired:
-        front = state.anchors.front(x - model.K * radius, radius) if radius > 0 else 0.0
-        state.anchors.restick(front, x - model.K * radius)
+        state.anchors.restick_slip_zone(x - model.K * radius, radius)
     state.radius, state.t = radius, outcome.t_stop
     return [(kind, outcome.t_stop, radius) for kind in EventKind if kind in fired]
 
