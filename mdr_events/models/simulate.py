@@ -253,7 +253,7 @@ def event_log(events: list[list[tuple]]) -> xr.Dataset:
     table = {name: np.full((len(events), rows), np.nan) for name in ("time", "depth", "radius", "x")}
     kinds = np.full((len(events), rows), "", dtype=object)
     for i, case in enumerate(events):
-        for j, (time, kind, depth, radius, x) in enumerate(case):
+        for j, (time, kind, depth, radius, x, _direction) in enumerate(case):
             table["time"][i, j], table["depth"][i, j] = time, depth
             table["radius"][i, j], table["x"][i, j] = radius, x
             kinds[i, j] = kind

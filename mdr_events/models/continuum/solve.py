@@ -186,8 +186,9 @@ def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | Non
                   samples: int = 2001, tolerances: Tolerances = Tolerances()) -> dict:
     """Solve every path and fill a common time grid (default: ``samples`` points to the longest run).
 
-    Returns the arrays of :func:`evaluate` stacked to (n_cases, n_time), ``time`` and the event
-    log ``events`` (one list of :class:`Event` per case).
+    Returns the arrays of :func:`evaluate` stacked to (n_cases, n_time), ``time``, the event
+    log ``events`` (one list of :class:`Event` per case) and the ``solutions`` (one
+    :class:`PathSolution` per case).
     """
     solutions = [solve_path(params, path, tolerances) for path in paths]
     if times is None:
@@ -198,4 +199,5 @@ def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | Non
     out = {name: np.stack([case[name] for case in per_case]) for name in per_case[0]}
     out["time"] = times
     out["events"] = [solution.events for solution in solutions]
+    out["solutions"] = solutions
     return out

@@ -94,6 +94,9 @@ class Event(NamedTuple):
     depth: float   #: indentation depth d (m)
     radius: float  #: contact radius a (m)
     x: float       #: tangential position of the indenter (m)
+    #: +1 / -1: the cap of a slip event (+1: shift u = +ū, the springs dragged towards +x; -1: u = -ū), or
+    #: the new direction of motion of a tangential reversal; 0 for events without a direction
+    direction: int = 0
 
 
 #: (slip state, events fired together) -> next slip state.
