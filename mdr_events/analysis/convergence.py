@@ -26,7 +26,7 @@ from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from mdr_events.models.continuum import NEGLIGIBLE_SHARE
 from mdr_events.models.discrete import run_discrete
-from mdr_events.models.simulate import simulate
+from mdr_events.models.simulate import case_dimension, simulate
 
 __all__ = ["exact_references_A", "discrete_errors", "discrete_minus_continuum", "history_differences",
            "compared_samples", "first_order_error_bound", "observed_orders"]
@@ -84,7 +84,9 @@ def discrete_errors(params: Parameters, alpha: float, spacings, steps_per_spacin
 
 
 def history_differences(discrete, continuum) -> dict[str, float]:
-    """``max_t |discrete − continuum| / max_t |continuum|`` of ``F_N``, ``F_x`` and ``A``, per angle.
+    """``max_t |discrete − continuum| / max_t |continuum|`` of ``F_N``, ``F_x`` and ``A``, per case.
+
+    The cases lie along ``alpha`` (a scenario) or ``case`` (custom paths), the same in both datasets.
 
     ``continuum`` must be evaluated at the discrete model's times (``t=``).
     Left out, and counted in ``"samples_left_out"``:
@@ -103,13 +105,14 @@ def history_differences(discrete, continuum) -> dict[str, float]:
     Returns
     -------
     dict
-        Quantity name (:data:`HISTORY_QUANTITIES`) → array over ``alpha`` of
+        Quantity name (:data:`HISTORY_QUANTITIES`) → array over the cases of
         relative differences; ``"samples_left_out"`` → array of counts.
     """
     compared = compared_samples(discrete, continuum)
+    dimension = case_dimension(discrete)
     out = {name: [] for name in (*HISTORY_QUANTITIES, "samples_left_out")}
-    for row, alpha in enumerate(discrete["alpha"].values):
-        d, c = discrete.sel(alpha=alpha), continuum.sel(alpha=alpha)
+    for row, case in enumerate(discrete[dimension].values):
+        d, c = discrete.sel({dimension: case}), continuum.sel({dimension: case})
         finite = np.isfinite(d["contact_area"].values) & np.isfinite(c["contact_area"].values)
         out["samples_left_out"].append(int(np.count_nonzero(finite & ~compared[row])))
         for name in HISTORY_QUANTITIES:
@@ -120,16 +123,17 @@ def history_differences(discrete, continuum) -> dict[str, float]:
 
 
 def compared_samples(discrete, continuum) -> np.ndarray:
-    """The samples :func:`history_differences` compares, shape ``(n_alpha, n_time)``.
+    """The samples :func:`history_differences` compares, shape ``(n_cases, n_time)``.
 
     A sample is compared where both methods are still running and it is not
     left out (one method in contact and the other not; the sample ending a
     time step that straddles a path corner): see :func:`history_differences`.
     """
     times = discrete["time"].values
+    dimension = case_dimension(discrete)
     rows = []
-    for alpha in discrete["alpha"].values:
-        d, c = discrete.sel(alpha=alpha), continuum.sel(alpha=alpha)
+    for case in discrete[dimension].values:
+        d, c = discrete.sel({dimension: case}), continuum.sel({dimension: case})
         area_d, area_c = d["contact_area"].values, c["contact_area"].values
         finite = np.isfinite(area_d) & np.isfinite(area_c)
         excluded = finite & ((area_d > 0) != (area_c > 0))
@@ -138,7 +142,7 @@ def compared_samples(discrete, continuum) -> np.ndarray:
         straddling = straddling[(straddling < len(times)) & (times[np.minimum(straddling, len(times) - 1)] > corners)]
         excluded[straddling] |= finite[straddling]
         rows.append(finite & ~excluded)
-    return np.array(rows, dtype=bool).reshape(len(discrete["alpha"]), len(times))
+    return np.array(rows, dtype=bool).reshape(discrete.sizes[dimension], len(times))
 
 
 #: The quantisation share of the discrete model's radius error, in spacings: spring ``j`` sits at
@@ -210,7 +214,8 @@ def first_order_error_bound(continuum, params: Parameters, dx: float, compared=N
       ``2G* (a − c) max Δs`` over the steps into the elastomer so far.
       Last, the continuum takes a velocity component below ``1e-12`` of the
       speed as zero (``x`` of a path at 90° is ``cos 90° ≈ 6e-17`` of its
-      length) where the springs follow it: ``2G* a · 1e-12 v t``.
+      length) where the springs follow it: ``2G* a · 1e-12 v t`` (``v`` the
+      path's speed: ``path_speed`` of a custom path, else ``param_v``).
 
     The continuum's radius is accurate to its ``radius_rtol`` (an attribute of
     the dataset), which is added to ``δ``.
@@ -233,7 +238,7 @@ def first_order_error_bound(continuum, params: Parameters, dx: float, compared=N
     dx : float
         The discrete model's spacing Δx (m).
     compared : numpy.ndarray of bool, optional
-        Samples to take the maximum over, shape ``(n_alpha, n_time)`` (default:
+        Samples to take the maximum over, shape ``(n_cases, n_time)`` (default:
         every sample in contact); :func:`compared_samples` gives those of
         :func:`history_differences`.
     discrete : xarray.Dataset, optional
@@ -243,14 +248,17 @@ def first_order_error_bound(continuum, params: Parameters, dx: float, compared=N
     Returns
     -------
     dict
-        Quantity name (:data:`HISTORY_QUANTITIES`) → array over ``alpha`` of
-        absolute bounds (N, N, m²); ``"radius"`` → ``δ`` per angle (m).
+        Quantity name (:data:`HISTORY_QUANTITIES`) → array over the cases
+        (``alpha`` or ``case``) of absolute bounds (N, N, m²); ``"radius"`` →
+        ``δ`` per case (m).
     """
     p = params
     K = float(analytic.critical_shift(1.0, p))
+    dimension = case_dimension(continuum)
     out = {name: [] for name in (*HISTORY_QUANTITIES, "radius")}
-    for row, alpha in enumerate(continuum["alpha"].values):
-        c = continuum.sel(alpha=alpha)
+    for row, case in enumerate(continuum[dimension].values):
+        c = continuum.sel({dimension: case})
+        speed = float(c["path_speed"]) if "path_speed" in c else p.v  # a custom path has its own speed
         a = c["contact_radius"].values
         d = c["indentation_depth"].values
         x = c["tangential_displacement"].values
@@ -266,7 +274,7 @@ def first_order_error_bound(continuum, params: Parameters, dx: float, compared=N
             attach_travel = np.fmax.accumulate(np.nan_to_num(attaching))
             slid = np.where(contact, np.nan_to_num(c["sliding_fraction"].values) * a, 0.0)
             if discrete is not None:
-                d_run = discrete.sel(alpha=alpha)
+                d_run = discrete.sel({dimension: case})
                 slid = np.fmax(slid, np.nan_to_num(d_run["sliding_fraction"].values * d_run["contact_radius"].values))
             else:
                 slid = np.where(contact & (travel >= K * (a - delta)), a, slid)
@@ -275,7 +283,7 @@ def first_order_error_bound(continuum, params: Parameters, dx: float, compared=N
             normal = 2 * p.E_star * (delta * (np.abs(d - a**2 / p.R) + (2 * a * delta + delta**2) / p.R)
                                      + (a + delta) * dx**2 / (12 * p.R))
             area = np.pi * delta * (2 * a + delta)
-            snapped = NEGLIGIBLE_SHARE * p.v * c["time"].values  # tangential travel the continuum drops
+            snapped = NEGLIGIBLE_SHARE * speed * c["time"].values  # tangential travel the continuum drops
             tangential = 2 * p.G_star * (delta * (np.minimum(K * (a + delta), travel) + K * slid)
                                          + (a - slip) * attach_travel + a * snapped)
         for name, bound in zip(HISTORY_QUANTITIES, (normal, tangential, area)):

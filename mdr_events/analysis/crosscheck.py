@@ -26,7 +26,7 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.io.datasets import register_schema, stamp
-from mdr_events.models.simulate import simulate
+from mdr_events.models.simulate import case_dimension, simulate
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic
 from mdr_events.validation import check_choice
@@ -67,7 +67,7 @@ def _first_slip(ds: xr.Dataset, scenario: str, params: Parameters) -> np.ndarray
 def _continuum_slip_onset(continuum_ds: xr.Dataset, scenario: str) -> np.ndarray:
     """The depth of the first ``slip_onset`` in each case's event log (scenario A: before the corner)."""
     onset = []
-    for i in range(continuum_ds.sizes["alpha"]):
+    for i in range(continuum_ds.sizes[case_dimension(continuum_ds)]):
         kinds = continuum_ds["event_kind"].values[i]
         hits = np.flatnonzero(kinds == "slip_onset")
         if scenario == "A":  # during indentation only

@@ -19,7 +19,7 @@ from mdr_events.analysis.convergence import (HISTORY_QUANTITIES, discrete_errors
                                              observed_orders)
 from mdr_events.analysis.crosscheck import CROSS_CHECK_CONTENT, cross_check
 from mdr_events.models.continuum import extremum, solve_path
-from mdr_events.models.simulate import scenario_paths, simulate
+from mdr_events.models.simulate import case_dimension, scenario_paths, simulate
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic
 
@@ -113,9 +113,10 @@ def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
 
 # ----------------------------------------------------------------------------
 # helpers on the datasets
-def event_times(ds: xr.Dataset, alpha: float, kind: str) -> np.ndarray:
-    """The times of every event of ``kind`` in the event log of the case at ``alpha``."""
-    case = ds.sel(alpha=alpha)
+def event_times(ds: xr.Dataset, label: float | str, kind: str) -> np.ndarray:
+    """The times of every event of ``kind`` in the event log of the case ``label`` (its angle, or a custom
+    path's label)."""
+    case = ds.sel({case_dimension(ds): label})
     kinds = case["event_kind"].values
     return case["event_time"].values[kinds == kind]
 

@@ -13,6 +13,7 @@ from the dataset on disk, so that a kept dataset keeps its figure and log too. T
 
 from __future__ import annotations
 
+import csv
 import enum
 import io
 import os
@@ -25,6 +26,7 @@ from matplotlib import image
 
 from mdr_events.io.datasets import RESULT_RTOL, result_differences
 from mdr_events.io.files import atomic_write, open_result, write_netcdf
+from mdr_events.models.simulate import case_dimension
 from mdr_events.parameters import Parameters
 from mdr_events.plotting.figures import figure_png, plot_phase_diagram, plot_simulation
 from mdr_events.theory.phase import phase_diagram
@@ -113,18 +115,35 @@ def write_simulation(dataset: xr.Dataset, out: str | os.PathLike, stem: str, ove
     return outcomes
 
 
+#: The first column of the event log CSV for each case dimension: its header and how a label is written.
+EVENT_LOG_CASE_COLUMNS: dict[str, tuple[str, Callable[[object], str]]] = {
+    "alpha": ("alpha_degree", lambda angle: f"{float(angle):.17g}"),
+    "case": ("case", str),
+}
+
+
 def event_log_csv(dataset: xr.Dataset) -> str:
-    """The continuum event log as CSV text (one row per event per angle, full precision)."""
-    lines = ["alpha_degree,event,time_s,kind,depth_m,radius_m,x_m"]
-    for alpha in dataset["alpha"].values:
-        case = dataset.sel(alpha=alpha)
+    """The continuum event log as CSV text (one row per event per case, full precision).
+
+    The first column is the angle (``alpha_degree``) of a scenario's case or the label (``case``) of a
+    custom path's, quoted where it holds a comma or a quote (:mod:`csv`); the last the event's direction
+    (+1/-1: the cap of a slip event or the new direction of a tangential reversal; 0 otherwise).
+    """
+    dimension = case_dimension(dataset)
+    header, write_label = EVENT_LOG_CASE_COLUMNS[dimension]
+    text = io.StringIO()
+    writer = csv.writer(text, lineterminator="\n")
+    writer.writerow([header, "event", "time_s", "kind", "depth_m", "radius_m", "x_m", "direction"])
+    for label in dataset[dimension].values:
+        case = dataset.sel({dimension: label})
         for number in dataset["event"].values:
             kind = str(case["event_kind"].values[number])
             if not kind:
                 continue
             values = [float(case[name].values[number]) for name in ("event_time", "event_depth", "event_radius", "event_x")]
-            lines.append(f"{alpha:.17g},{number},{values[0]:.17g},{kind},{values[1]:.17g},{values[2]:.17g},{values[3]:.17g}")
-    return "\n".join(lines) + "\n"
+            writer.writerow([write_label(label), number, f"{values[0]:.17g}", kind, f"{values[1]:.17g}",
+                             f"{values[2]:.17g}", f"{values[3]:.17g}", int(case["event_direction"].values[number])])
+    return text.getvalue()
 
 
 def describe_outcomes(outcomes: list[FileOutcome]) -> str:

@@ -14,8 +14,8 @@ A study names its parameters, what to compute and where to write it::
     method = "continuum"         # or "discrete"
     samples = 2001               # continuum: output times (or dx, dt / n_steps for discrete)
 
-    [path]                       # optional, instead of simulation.scenario: any (x, d) waypoints
-    waypoints = [[0, 0], [0, 3e-4], [2e-4, -1e-4]]
+    [path]                       # optional, instead of simulation.scenario: any (x, d) waypoints,
+    waypoints = [[0, 0], [0, 3e-4], [2e-4, -1e-4]]   # simulated as the one case "path 1" along `case`
     speed = 1e-6
 
     [phase_diagram]              # optional: Fig. 9a / 9b

@@ -23,7 +23,8 @@ from mdr_events._version import __version__
 from mdr_events.parameters import Parameters
 
 __all__ = ["DOI", "REFERENCE", "PROGRAM", "STAMP_ATTRIBUTES", "stamp", "parameters_of", "Dims", "register_schema",
-           "registered_contents", "required_variables", "RESULT_RTOL", "result_differences", "assert_results_agree"]
+           "registered_contents", "required_variables", "dims_match", "describe_dims", "RESULT_RTOL",
+           "result_differences", "assert_results_agree"]
 
 DOI = "10.3390/biomimetics8060477"
 REFERENCE = (
@@ -83,8 +84,10 @@ def parameters_of(dataset: xr.Dataset) -> Parameters:
 #: Attributes every result carries.
 STAMP_ATTRIBUTES = ("program", "program_version", "doi", "content")
 
-#: The dimensions a schema requires of a variable (``None``: any).
-Dims = tuple[str, ...] | None
+#: The dimensions a schema requires of a variable, in order (``None``: any). Each entry is a dimension's
+#: name or a tuple of names any one of which will do (e.g. ``(("alpha", "case"), "time")``: a simulation's
+#: cases are labelled by angle or by name).
+Dims = tuple[str | tuple[str, ...], ...] | None
 
 #: What each kind of result must hold: ``content`` attribute -> condition -> {variable: dims}. The
 #: condition ``None`` holds always, ``(attribute, value)`` when the result's attribute has that value.
@@ -110,6 +113,28 @@ def register_schema(content: str, variables: Mapping[str, Dims], when: tuple[str
     Registering the same ``content`` and ``when`` again replaces the variables.
     """
     _SCHEMAS.setdefault(content, {})[when] = dict(variables)
+
+
+def dims_match(actual: tuple[str, ...], required: Dims) -> bool:
+    """Whether a variable's dimensions ``actual`` are the ``required`` ones of a schema (:data:`Dims`).
+
+    ``None`` allows any; otherwise the number must agree and each dimension must be the one named, or
+    one of the names of a tuple of alternatives, at its position.
+    """
+    if required is None:
+        return True
+    return len(actual) == len(required) and all(
+        name in allowed if isinstance(allowed, tuple) else name == allowed
+        for name, allowed in zip(actual, required))
+
+
+def describe_dims(required: Dims) -> str:
+    """A schema's dimensions for a message: ``('alpha' or 'case', 'time')``; ``any`` for ``None``."""
+    if required is None:
+        return "any"
+    names = [" or ".join(map(repr, allowed)) if isinstance(allowed, tuple) else repr(allowed)
+             for allowed in required]
+    return f"({', '.join(names)}{',' if len(names) == 1 else ''})"
 
 
 def registered_contents() -> list[str]:

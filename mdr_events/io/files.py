@@ -16,7 +16,8 @@ from typing import Any, Callable
 
 import xarray as xr
 
-from mdr_events.io.datasets import PROGRAM, STAMP_ATTRIBUTES, parameters_of, required_variables
+from mdr_events.io.datasets import (PROGRAM, STAMP_ATTRIBUTES, describe_dims, dims_match, parameters_of,
+                                   required_variables)
 
 __all__ = ["atomic_write", "write_netcdf", "open_result"]
 
@@ -103,8 +104,8 @@ def _check_variables(dataset: xr.Dataset, where: str) -> None:
     missing = [name for name in schema if name not in dataset.variables]
     if missing:
         raise ValueError(f"{where} ({content}) lacks the variable(s) {missing}")
-    wrong = [f"{name} {dataset[name].dims} (expected {dims})" for name, dims in schema.items()
-             if dims is not None and dataset[name].dims != dims]
+    wrong = [f"{name} {dataset[name].dims} (expected {describe_dims(dims)})" for name, dims in schema.items()
+             if not dims_match(dataset[name].dims, dims)]
     if wrong:
         raise ValueError(f"{where} ({content}) has variable(s) with the wrong dimensions: {'; '.join(wrong)}")
     unlabelled = [name for name in dataset.variables

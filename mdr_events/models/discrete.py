@@ -24,8 +24,14 @@ Rules, applied at every time step (all vectorised over springs and cases):
 - **Forces (15).** ``F_N = 2 Σ E* Δx (d − g(x_j))`` (from prefix sums of
   ``g``) and ``F_x = 2 Σ G* Δx u_j`` over the springs in contact.
 
-A run ends after the first sample without contact that follows a contact
-(the pull-off jump), or when the path ends.
+A run starts at the path's first entry into the elastomer
+(:meth:`~mdr_events.models.paths.Path.entry_times`) and may go through any
+number of contact cycles. When a contact comes apart (the pull-off jump), the
+run goes on if the path enters the elastomer again later than the last sample
+in contact: out of contact ``F_N = F_x = a = 0`` (sliding fraction ``nan``),
+and the next contact starts afresh (springs attach with zero shift). If the
+path never enters again, the run ends at that first sample without contact
+(kept; ``nan`` after it). In any case a run ends when its path ends.
 """
 
 from __future__ import annotations
@@ -131,7 +137,8 @@ def run_discrete(
     ----------
     params : Parameters
     paths : list of Path
-        One case per path; time runs from each path's first contact.
+        One case per path; time runs from each path's first contact. A path
+        may enter the elastomer several times (see the module docstring).
     dx : float
         Spring spacing Δx in m.
     dt : float
@@ -143,7 +150,8 @@ def run_discrete(
     -------
     dict
         ``time`` (n_time,) and, each of shape (n_cases, n_time) with ``nan``
-        after a case has ended: ``indentation_depth``,
+        after a case has ended (pull-off with no later entry, or the end of
+        its path): ``indentation_depth``,
         ``tangential_displacement``, ``normal_force``, ``tangential_force``,
         ``contact_radius``, ``sliding_fraction``, ``springs_in_contact``.
     """
@@ -152,6 +160,8 @@ def run_discrete(
     order = np.argsort([-(path.duration - path.first_contact_time()) for path in paths], kind="stable")
     paths = [paths[i] for i in order]
     starts = np.array([path.first_contact_time() for path in paths])
+    # the last entry into the elastomer, in time from first contact (0 for a path with one entry)
+    last_entries = np.array([path.entry_times()[-1] for path in paths]) - starts
     durations = np.array([path.duration for path in paths]) - starts
     n_time = int(math.ceil(durations.max() / dt)) + 1
     time = np.arange(n_time) * dt
@@ -178,7 +188,6 @@ def run_discrete(
     out_sliding = np.zeros((n_cases, n_time), dtype=np.int64)
 
     m = np.where(d_path[0] >= first_touch, attach.count(d_path[0]), 0)
-    touched = m > 0
     out_m[:, 0] = m
     running = n_cases
     for k in range(1, n_time):
@@ -211,9 +220,11 @@ def run_discrete(
             at_cap = np.count_nonzero(np.abs(u) >= cap, axis=1)
             out_sliding[rows, k] = np.where(cap[:, 0] > 0.0, at_cap, m_new)  # ū = 0: every spring in contact
         out_m[rows, k] = m_new
-        apart = touched[rows] & (m_new == 0)  # the pull-off jump: keep this first sample without contact
+        # the pull-off jump ends a case (keeping this first sample without contact) unless its path
+        # enters again after the last sample in contact; a case that goes on keeps m = 0 (no springs,
+        # zero shifts) until the next contact
+        apart = (m > 0) & (m_new == 0) & (last_entries[rows] <= time[k - 1])
         last_sample[rows] = np.where(apart, np.minimum(last_sample[rows], k), last_sample[rows])
-        touched[rows] |= m_new > 0
         m = m_new
 
     inverse = np.argsort(order)

@@ -177,24 +177,60 @@ class Path:
         d = np.interp(t, corners, self.waypoints[:, 1])
         return x, d
 
-    def first_contact_time(self) -> float:
-        """The first time at which the indenter is in the elastomer or enters it (``d >= 0``, moving in).
+    def entry_times(self) -> np.ndarray:
+        """The times at which the indenter enters the elastomer.
 
-        A path that only touches the surface (``d = 0`` at a corner, then back out) does not make
-        contact there.
+        The indenter enters where the path starts inside (``d > 0`` at the
+        first waypoint) or reaches ``d >= 0`` while moving in (``d``
+        increasing); a path that only touches the surface (``d = 0`` at a
+        corner, then back out) does not enter there. After an entry the
+        indenter is inside until the path reaches ``d <= 0`` again; only then
+        can it enter once more. A path that comes out to exactly ``d = 0`` at
+        a corner and goes back in leaves and re-enters at that corner.
+
+        Returns
+        -------
+        numpy.ndarray
+            Entry times in s from the path's start, increasing; empty if the
+            path never enters the elastomer. The first is
+            :meth:`first_contact_time`.
         """
         depths = self.waypoints[:, 1]
         corners = self.corner_times
+        entries: list[float] = []
+        inside = False
         for i in range(len(depths) - 1):
             start, end = depths[i], depths[i + 1]
-            if start > 0.0:
-                return float(corners[i])
-            if end >= 0.0 and end > start:  # reaches the surface on this segment, moving in
-                if end == 0.0 and (i + 2 == len(depths) or depths[i + 2] <= 0.0):
-                    continue  # touches the surface and turns back
-                fraction = -start / (end - start)
-                return float(corners[i] + fraction * (corners[i + 1] - corners[i]))
-        raise ValueError("the path never enters the elastomer (d > 0); there is no contact to simulate")
+            if not inside:
+                if start > 0.0:  # only at the first waypoint: every later one outside has d <= 0
+                    entries.append(float(corners[i]))
+                    inside = True
+                elif end >= 0.0 and end > start:  # reaches the surface on this segment, moving in
+                    if end == 0.0 and (i + 2 == len(depths) or depths[i + 2] <= 0.0):
+                        continue  # touches the surface and turns back
+                    fraction = -start / (end - start)
+                    entries.append(float(corners[i] + fraction * (corners[i + 1] - corners[i])))
+                    inside = True
+                    continue  # ends inside, or at the surface with the next segment going in
+            if inside and end <= 0.0:  # leaves the elastomer on this segment
+                inside = False
+        return np.array(entries, dtype=float)
+
+    def first_contact_time(self) -> float:
+        """The first time at which the indenter is in the elastomer or enters it (``d >= 0``, moving in).
+
+        The first of :meth:`entry_times`: a path that only touches the surface (``d = 0`` at a
+        corner, then back out) does not make contact there.
+
+        Raises
+        ------
+        ValueError
+            If the path never enters the elastomer.
+        """
+        entries = self.entry_times()
+        if entries.size == 0:
+            raise ValueError("the path never enters the elastomer (d > 0); there is no contact to simulate")
+        return float(entries[0])
 
     def describe(self) -> str:
         """The waypoints as a netCDF-safe string."""

@@ -3,21 +3,23 @@
 from __future__ import annotations
 
 import math
-from typing import Any, Literal, Sequence
+from typing import Any, Literal, Mapping, NamedTuple, Sequence
 
 import numpy as np
 import xarray as xr
 
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import Tolerances, run_continuum
+from mdr_events.models.continuum.extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, extremum_names, solution_extrema
 from mdr_events.models.discrete import check_spacing, run_discrete
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic
 from mdr_events.validation import check_choice
 
-__all__ = ["simulate", "scenario_paths", "simulation_dataset", "event_log", "FIGURE_ANGLES", "METHODS",
-           "SCENARIO_NAMES", "SIMULATION_CONTENT", "SIMULATION_VARIABLES", "EVENT_VARIABLES"]
+__all__ = ["simulate", "Cases", "simulation_cases", "scenario_paths", "case_dimension", "simulation_dataset",
+           "event_log", "extrema_dataset", "FIGURE_ANGLES", "METHODS", "SCENARIO_NAMES", "CASE_DIMENSIONS",
+           "SIMULATION_CONTENT", "SIMULATION_VARIABLES", "EVENT_VARIABLES", "PATH_VARIABLES", "EXTREMA_VARIABLES"]
 
 #: The angles of Fig. 8 and Fig. 10.
 FIGURE_ANGLES = (10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0)
@@ -30,7 +32,13 @@ DEFAULT_SAMPLES = 2001
 
 #: The ``content`` attribute of a simulation.
 SIMULATION_CONTENT = "simulation of indentation and detachment along straight paths"
-#: The variables of a simulation, shared by every method (dims ``("alpha", "time")``): name -> (units, long_name).
+#: The dimension of a simulation's cases: ``alpha`` (path angle, degrees) for the paper's scenarios,
+#: ``case`` (a name) for custom paths.
+ANGLE_DIMENSION, CUSTOM_DIMENSION = "alpha", "case"
+CASE_DIMENSIONS = (ANGLE_DIMENSION, CUSTOM_DIMENSION)
+#: The ``scenario`` attribute of a simulation of custom paths.
+CUSTOM_SCENARIO = "custom"
+#: The variables of a simulation, shared by every method (dims ``(case dimension, "time")``): name -> (units, long_name).
 SIMULATION_VARIABLES: dict[str, tuple[str, str]] = {
     "indentation_depth": ("m", "indentation depth d"),
     "tangential_displacement": ("m", "tangential displacement of the indenter x"),
@@ -42,17 +50,51 @@ SIMULATION_VARIABLES: dict[str, tuple[str, str]] = {
     "mean_shear_stress": ("Pa", "mean shear stress tau = F_x / A"),
     "sliding_fraction": ("1", "share of the springs in contact that are at the critical shift"),
 }
-#: The continuum method's event log (dims ``("alpha", "event")``): name -> (units, long_name).
+#: The continuum method's event log (dims ``(case dimension, "event")``): name -> (units, long_name).
 EVENT_VARIABLES: dict[str, tuple[str, str]] = {
     "event_time": ("s", "time of the event from first contact"),
     "event_kind": ("1", "kind of event"),
     "event_depth": ("m", "indentation depth at the event"),
     "event_radius": ("m", "contact radius at the event"),
     "event_x": ("m", "tangential displacement at the event"),
+    "event_direction": ("1", "direction of the event: +1 or -1 the cap u = +ū or -ū of a slip event, or the new "
+                             "direction of the tangential motion at a reversal; 0 for other events and padding"),
 }
-register_schema(SIMULATION_CONTENT, {name: ("alpha", "time") for name in SIMULATION_VARIABLES})
-register_schema(SIMULATION_CONTENT, {name: ("alpha", "event") for name in EVENT_VARIABLES},
+#: Custom paths: what each case's path is (dims ``("case",)``): name -> (units, long_name).
+PATH_VARIABLES: dict[str, tuple[str, str]] = {
+    "path_waypoints": ("m", "waypoints (x, d) of the custom path, joined by straight segments"),
+    "path_speed": ("m s-1", "speed along the custom path (replaces param_v)"),
+}
+#: Symbols of the quantities of :data:`EXTREMA_QUANTITIES` and their units, for the long names.
+EXTREMA_SYMBOLS = {"normal_force": ("F_N", "N"), "tangential_force": ("F_x", "N"), "contact_area": ("A", "m2")}
+EXTREMA_WORDS = {"max": "maximum", "min": "minimum"}
+
+
+def _extrema_variables() -> dict[str, tuple[str, str]]:
+    """Name -> (units, long_name) of every key of :func:`solution_extrema`."""
+    variables = {}
+    for quantity in EXTREMA_QUANTITIES:
+        symbol, units = EXTREMA_SYMBOLS[quantity]
+        for kind in EXTREMA_KINDS:
+            value_name, time_name = extremum_names(quantity, kind)
+            word = EXTREMA_WORDS[kind]
+            variables[value_name] = (units, f"{word} of {symbol} over the run, exact from the continuum solution "
+                                            "(not from the samples)")
+            variables[time_name] = ("s", f"time of the {word} of {symbol} from first contact, exact from the "
+                                         "continuum solution")
+    return variables
+
+
+#: The continuum method's exact extrema (dims ``(case dimension,)``; :func:`solution_extrema`, where the
+#: value 0 after a pull-off counts, at the end of the run): name -> (units, long_name).
+EXTREMA_VARIABLES: dict[str, tuple[str, str]] = _extrema_variables()
+
+register_schema(SIMULATION_CONTENT, {name: (CASE_DIMENSIONS, "time") for name in SIMULATION_VARIABLES})
+register_schema(SIMULATION_CONTENT, {**{name: (CASE_DIMENSIONS, "event") for name in EVENT_VARIABLES},
+                                     **{name: (CASE_DIMENSIONS,) for name in EXTREMA_VARIABLES}},
                 when=("method", "continuum"))
+register_schema(SIMULATION_CONTENT, {name: (CUSTOM_DIMENSION,) for name in PATH_VARIABLES},
+                when=("scenario", CUSTOM_SCENARIO))
 
 
 #: Relative accuracy the slip criterion needs: x − X(ξ) against ū(a) must keep this many digits.
@@ -78,23 +120,104 @@ def check_path_extent(params: Parameters, path: Path, label: str) -> None:
                          f"which double precision cannot resolve the slip criterion (shift vs {reference:.3g} m)")
 
 
-def scenario_paths(params: Parameters, scenario: str | Path, alpha) -> tuple[list[Path], np.ndarray]:
-    """The paths of a scenario for each angle (or the one custom path), checked by :func:`check_path_extent`."""
+class Cases(NamedTuple):
+    """The cases of a simulation: one path each, labelled along ``dimension`` by ``labels``."""
+
+    paths: list[Path]
+    #: ``"alpha"`` (the paper's scenarios) or ``"case"`` (custom paths)
+    dimension: str
+    #: the angles in degrees (float) or the case names (str), one per path
+    labels: np.ndarray
+
+    @property
+    def custom(self) -> bool:
+        return self.dimension == CUSTOM_DIMENSION
+
+
+#: What ``scenario`` may be, for messages.
+SCENARIO_ALLOWED = ("'A', 'B', 'B+', a Path, a non-empty list of Paths, or a non-empty mapping "
+                    "{label (non-empty str): Path}")
+
+
+def _custom_paths(scenario: Path | Sequence[Path] | Mapping[str, Path]) -> dict[str, Path]:
+    """The custom paths of ``scenario`` by label; a single path or a list is labelled ``"path 1"``, ...
+
+    Raises ``ValueError`` for an empty list or mapping or repeated labels and ``TypeError`` for an
+    element that is not a :class:`Path` or a label that is not a non-empty string.
+    """
     if isinstance(scenario, Path):
-        if alpha is not None:
-            raise ValueError("alpha is not allowed with a custom path (its waypoints fix the motion)")
-        check_path_extent(params, scenario, "scenario=Path")
-        return [scenario], np.array([scenario.alpha])
-    if scenario not in SCENARIO_NAMES:
-        raise ValueError(f"scenario={scenario!r} is not allowed; allowed: 'A', 'B', 'B+' or a Path")
-    angles = np.atleast_1d(np.asarray(FIGURE_ANGLES if alpha is None else alpha, dtype=float))
-    if angles.ndim != 1 or angles.size == 0:
-        raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: one angle or a 1-D list")
-    build = {"A": Path.scenario_A, "B": Path.scenario_B, "B+": Path.scenario_B_indentation}[scenario]
-    paths = [build(float(angle), params) for angle in angles]
-    for angle, path in zip(angles, paths):
-        check_path_extent(params, path, f"alpha={float(angle)!r} (degrees) in scenario {scenario}")
-    return paths, angles
+        return {"path 1": scenario}
+    if isinstance(scenario, Mapping):
+        labels, paths = list(scenario.keys()), [scenario[label] for label in scenario.keys()]
+        where = [f"scenario[{label!r}]" for label in labels]
+    else:
+        paths = list(scenario)
+        labels = [f"path {number}" for number in range(1, len(paths) + 1)]
+        where = [f"scenario[{index}]" for index in range(len(paths))]
+    if not paths:
+        raise ValueError(f"scenario={scenario!r} is not allowed: it holds no path; allowed: {SCENARIO_ALLOWED}")
+    for label in labels:
+        if not isinstance(label, str) or not label:
+            raise TypeError(f"scenario has the label {label!r} ({type(label).__name__}); allowed: labels that are "
+                            "non-empty strings")
+    repeated = sorted({label for label in labels if labels.count(label) > 1})
+    if repeated:
+        raise ValueError(f"scenario has the label(s) {repeated} more than once; allowed: distinct labels")
+    for name, path in zip(where, paths):
+        if not isinstance(path, Path):
+            raise TypeError(f"{name}={path!r} ({type(path).__name__}) is not allowed; allowed: a "
+                            "mdr_events.Path")
+    return dict(zip(labels, paths))
+
+
+def simulation_cases(params: Parameters, scenario, alpha) -> Cases:
+    """The cases of ``simulate(params, scenario, alpha)``, each path checked by :func:`check_path_extent`.
+
+    A scenario name gives one path per angle along ``alpha``; custom paths (a :class:`Path`, a list
+    of them or a mapping ``{label: Path}``) give one case each along ``case``, labelled by the
+    mapping's keys or ``"path 1"``, ``"path 2"``, ... (``alpha`` must then be ``None``).
+    """
+    if isinstance(scenario, str):
+        if scenario not in SCENARIO_NAMES:
+            raise ValueError(f"scenario={scenario!r} is not allowed; allowed: {SCENARIO_ALLOWED}")
+        angles = np.atleast_1d(np.asarray(FIGURE_ANGLES if alpha is None else alpha, dtype=float))
+        if angles.ndim != 1 or angles.size == 0:
+            raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: one angle or a 1-D list")
+        build = {"A": Path.scenario_A, "B": Path.scenario_B, "B+": Path.scenario_B_indentation}[scenario]
+        paths = [build(float(angle), params) for angle in angles]
+        for angle, path in zip(angles, paths):
+            check_path_extent(params, path, f"alpha={float(angle)!r} (degrees) in scenario {scenario}")
+        return Cases(paths, ANGLE_DIMENSION, angles)
+    if not isinstance(scenario, (Path, Mapping, list, tuple)):
+        raise TypeError(f"scenario={scenario!r} ({type(scenario).__name__}) is not allowed; allowed: "
+                        f"{SCENARIO_ALLOWED}")
+    custom = _custom_paths(scenario)
+    if alpha is not None:
+        raise ValueError(f"alpha={alpha!r} is not allowed with custom paths (their waypoints fix the motion); "
+                         "allowed: alpha=None")
+    for label, path in custom.items():
+        check_path_extent(params, path, f"scenario path {label!r}")
+    return Cases(list(custom.values()), CUSTOM_DIMENSION, np.array(list(custom), dtype=str))
+
+
+def scenario_paths(params: Parameters, scenario, alpha) -> tuple[list[Path], np.ndarray]:
+    """The paths of :func:`simulation_cases` and their labels (angles in degrees, or case names)."""
+    cases = simulation_cases(params, scenario, alpha)
+    return cases.paths, cases.labels
+
+
+def case_dimension(dataset: xr.Dataset) -> str:
+    """The dimension along which a simulation's cases lie: ``"case"`` (custom paths) or ``"alpha"``."""
+    found = [name for name in CASE_DIMENSIONS if name in dataset.dims]
+    if len(found) != 1:
+        raise ValueError(f"a simulation with the dimensions {tuple(dataset.dims)} is not allowed; allowed: "
+                         f"exactly one of {CASE_DIMENSIONS}")
+    return found[0]
+
+
+def case_text(dimension: str, label) -> str:
+    """How a case is named in messages and legends: ``α = 20°`` or its label."""
+    return f"α = {float(label):g}°" if dimension == ANGLE_DIMENSION else str(label)
 
 
 def _time_step(paths: list[Path], dt: float | None, n_steps: int | None) -> float:
@@ -145,7 +268,7 @@ def check_time_step(paths: list[Path], step: float, dt: float | None, n_steps: i
 
 def simulate(
     params: Parameters,
-    scenario: Literal["A", "B", "B+"] | Path = "A",
+    scenario: Literal["A", "B", "B+"] | Path | Sequence[Path] | Mapping[str, Path] = "A",
     alpha: float | Sequence[float] | None = None,
     method: Literal["discrete", "continuum"] = "discrete",
     dx: float | None = None,
@@ -160,22 +283,27 @@ def simulate(
     Parameters
     ----------
     params : Parameters
-    scenario : {"A", "B", "B+"} or Path
+    scenario : {"A", "B", "B+"}, Path, list of Path or mapping of str to Path
         ``"A"``: eq. (14); ``"B"``: eq. (19); ``"B+"``: the "+" branch of
-        Fig. 9b (:meth:`Path.scenario_B_indentation`); or any :class:`Path`.
+        Fig. 9b (:meth:`Path.scenario_B_indentation`): one case per angle.
+        Custom paths: a :class:`Path`, a non-empty list of them (labelled
+        ``"path 1"``, ``"path 2"``, ...) or a mapping ``{label: Path}`` (its
+        keys, non-empty strings, are the labels): one case per path; the
+        paths may have different speeds.
     alpha : float or sequence of float, optional
         Angles in degrees (default 10°, 20°, …, 80°, as in Fig. 8 and 10);
-        not with a custom path.
+        not with custom paths.
     method : {"discrete", "continuum"}
         ``"discrete"``: the paper's spring array (:mod:`mdr_events.models.discrete`).
         ``"continuum"``: its Δx → 0 limit integrated between events
-        (:mod:`mdr_events.models.continuum`); adds the event log along ``event``.
+        (:mod:`mdr_events.models.continuum`); adds the event log along
+        ``event`` and each case's exact extrema (:data:`EXTREMA_VARIABLES`).
     dx : float, optional
         Discrete method: spring spacing Δx in m (default 1 µm); at least 10
         springs per side must be in contact at ``d_max``.
     dt, n_steps :
         Discrete method: time step in s, or the number of steps of the
-        longest case (default 10 000); not both.
+        longest case (default 10 000); not both. One time grid serves every case.
     t : sequence of float, optional
         Continuum method: the output times in s from first contact
         (increasing, >= 0); default ``samples`` points to the end of the longest run.
@@ -188,41 +316,51 @@ def simulate(
     Returns
     -------
     xarray.Dataset
-        Dims ``("alpha", "time")``; variables of
-        :data:`SIMULATION_VARIABLES`, ``nan`` after a case
-        has ended (pull-off, or the end of its path); time from first contact.
+        Dims ``("alpha", "time")`` for a scenario (coordinate: the angles in
+        degrees), ``("case", "time")`` for custom paths (coordinate: the
+        labels; per case ``path_waypoints`` and ``path_speed``); variables of
+        :data:`SIMULATION_VARIABLES`, ``nan`` after a case has ended (pull-off,
+        or the end of its path); time from first contact.
+
+    Raises
+    ------
+    ValueError, TypeError
+        Naming the argument, its value and what is allowed: e.g. an unknown
+        scenario, an empty list of paths, an element that is not a Path, a
+        label that is not a non-empty string or is repeated, ``alpha`` with
+        custom paths.
     """
     check_choice("method", method, METHODS)
-    paths, angles = scenario_paths(params, scenario, alpha)
+    cases = simulation_cases(params, scenario, alpha)
     if method == "continuum":
         for name, value in (("dx", dx), ("dt", dt), ("n_steps", n_steps)):
             if value is not None:
                 raise ValueError(f"{name} is not allowed with method='continuum' (it has no springs or time "
                                  "step); allowed: t, samples, tolerances")
-        return _simulate_continuum(params, scenario, paths, angles, t, samples, tolerances)
+        return _simulate_continuum(params, scenario, cases, t, samples, tolerances)
     dx = DEFAULT_DX if dx is None else dx
     for name, value in (("t", t), ("samples", samples), ("tolerances", tolerances)):
         if value is not None:
             raise ValueError(f"{name} is not allowed with method='discrete'; allowed: dx, dt or n_steps")
+    paths = cases.paths
     for path in paths:
         path.first_contact_time()  # a path that never touches the surface is an error first
     check_spacing(params, dx, depth=min(params.d_max, max(path.max_depth for path in paths)))
     step = _time_step(paths, dt, n_steps)
     check_time_step(paths, step, dt, n_steps)
     raw = run_discrete(params, paths, dx, step)
-    scenario_name = "custom" if isinstance(scenario, Path) else scenario
-    attrs = dict(method=method, scenario=scenario_name, dx=float(dx), dt=step,
+    attrs = dict(method=method, scenario=_scenario_name(scenario, cases), dx=float(dx), dt=step,
                  spring_count_per_side=int(raw["spring_count"]),
                  content=SIMULATION_CONTENT)
-    if isinstance(scenario, Path):
-        attrs["path_waypoints"] = scenario.describe()
-        attrs["path_speed"] = scenario.speed
-        attrs["path_speed_units"] = "m s-1"
-        attrs["note"] = "custom path: its speed path_speed replaces param_v"
-    return simulation_dataset(params, angles, raw["time"], raw, **attrs)
+    return simulation_dataset(params, cases, raw["time"], raw, **attrs)
 
 
-def _simulate_continuum(params, scenario, paths, angles, t, samples, tolerances) -> xr.Dataset:
+def _scenario_name(scenario, cases: Cases) -> str:
+    """The ``scenario`` attribute: the scenario's name, or ``"custom"``."""
+    return CUSTOM_SCENARIO if cases.custom else scenario
+
+
+def _simulate_continuum(params: Parameters, scenario, cases: Cases, t, samples, tolerances) -> xr.Dataset:
     samples = DEFAULT_SAMPLES if samples is None else samples
     if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 2:
         raise ValueError(f"samples={samples!r} is not allowed; allowed: an integer >= 2")
@@ -237,49 +375,72 @@ def _simulate_continuum(params, scenario, paths, angles, t, samples, tolerances)
                 or np.any(np.diff(times) <= 0):
             raise ValueError(f"t of shape {times.shape} is not allowed; allowed: a non-empty, strictly "
                              "increasing 1-D grid of finite times >= 0 (s)")
-    raw = run_continuum(params, paths, times, samples=int(samples), tolerances=tolerances)
-    attrs = dict(method="continuum", scenario="custom" if isinstance(scenario, Path) else scenario,
+    raw = run_continuum(params, cases.paths, times, samples=int(samples), tolerances=tolerances)
+    attrs = dict(method="continuum", scenario=_scenario_name(scenario, cases),
                  rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
                  content=SIMULATION_CONTENT)
-    if isinstance(scenario, Path):
-        attrs.update(path_waypoints=scenario.describe(), path_speed=scenario.speed, path_speed_units="m s-1")
-    dataset = simulation_dataset(params, angles, raw["time"], raw, **attrs)
-    return dataset.merge(event_log(raw["events"]))
+    dataset = simulation_dataset(params, cases, raw["time"], raw, **attrs)
+    extrema = [solution_extrema(solution) for solution in raw["solutions"]]
+    dataset = dataset.merge(event_log(raw["events"], cases.dimension)).merge(extrema_dataset(extrema, cases.dimension))
+    return _coordinates_last(dataset)
 
 
-def event_log(events: list[list[tuple]]) -> xr.Dataset:
-    """The continuum event log: one row per event per case along ``event`` (padded with nan / "")."""
+def _coordinates_last(dataset: xr.Dataset) -> xr.Dataset:
+    """The same dataset with its data variables first and its coordinates last, as xarray reads a file back.
+
+    The netCDF3 writer orders variables by shape and keeps the dataset's order among equal shapes (a
+    coordinate along the cases and a per-case variable); in the order a file is read back, a result read
+    and written again gives the same bytes.
+    """
+    return xr.Dataset({name: dataset[name].variable for name in dataset.data_vars},
+                      coords={name: dataset[name].variable for name in dataset.coords}, attrs=dataset.attrs)
+
+
+def event_log(events: list[list[tuple]], dimension: str = ANGLE_DIMENSION) -> xr.Dataset:
+    """The continuum event log: one row per event per case along ``(dimension, "event")`` (padded with
+    nan / "" / direction 0); the variables of :data:`EVENT_VARIABLES`."""
     rows = max(len(case) for case in events)
     table = {name: np.full((len(events), rows), np.nan) for name in ("time", "depth", "radius", "x")}
     kinds = np.full((len(events), rows), "", dtype=object)
+    directions = np.zeros((len(events), rows), dtype=np.int32)  # int32: netCDF3 has no 64-bit integers
     for i, case in enumerate(events):
-        for j, (time, kind, depth, radius, x, _direction) in enumerate(case):
+        for j, (time, kind, depth, radius, x, direction) in enumerate(case):
             table["time"][i, j], table["depth"][i, j] = time, depth
             table["radius"][i, j], table["x"][i, j] = radius, x
-            kinds[i, j] = kind
+            kinds[i, j], directions[i, j] = kind, direction
     values = {"event_time": table["time"], "event_kind": kinds.astype(str), "event_depth": table["depth"],
-              "event_radius": table["radius"], "event_x": table["x"]}
+              "event_radius": table["radius"], "event_x": table["x"], "event_direction": directions}
     return xr.Dataset(
-        {name: (("alpha", "event"), values[name], {"units": units, "long_name": long_name})
+        {name: ((dimension, "event"), values[name], {"units": units, "long_name": long_name})
          for name, (units, long_name) in EVENT_VARIABLES.items()},
         coords={"event": ("event", np.arange(rows), {"units": "1", "long_name": "event number"})})
 
 
+def extrema_dataset(extrema: list[dict[str, float]], dimension: str = ANGLE_DIMENSION) -> xr.Dataset:
+    """The variables of :data:`EXTREMA_VARIABLES` along ``dimension``, one
+    :func:`~mdr_events.models.continuum.extrema.solution_extrema` per case."""
+    return xr.Dataset({name: ((dimension,), np.array([case[name] for case in extrema], dtype=float),
+                              {"units": units, "long_name": long_name})
+                       for name, (units, long_name) in EXTREMA_VARIABLES.items()})
+
+
 def simulation_dataset(
     params: Parameters,
-    alpha: np.ndarray,
+    cases: Cases,
     time: np.ndarray,
     values: dict[str, np.ndarray],
     **attrs: Any,
 ) -> xr.Dataset:
-    """Assemble a simulation result with dims ``("alpha", "time")``.
+    """Assemble a simulation result with dims ``(cases.dimension, "time")``.
 
     ``values`` holds the kinematics, forces, radius and sliding fraction of
-    :data:`SIMULATION_VARIABLES` (shape (n_alpha, n_time), ``nan`` after a
+    :data:`SIMULATION_VARIABLES` (shape (n_cases, n_time), ``nan`` after a
     case has ended); the area, mean pressure and mean shear stress are
-    derived here, identically for every method. ``attrs`` go to
+    derived here, identically for every method. Custom paths add
+    :data:`PATH_VARIABLES` along ``case``. ``attrs`` go to
     :func:`mdr_events.io.datasets.stamp`.
     """
+    dimension = cases.dimension
     radius = values["contact_radius"]
     area = np.pi * radius**2
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -291,9 +452,20 @@ def simulation_dataset(
     data = {}
     for name, (units, long_name) in SIMULATION_VARIABLES.items():
         array = derived[name] if name in derived else values[name]
-        data[name] = (("alpha", "time"), np.asarray(array, dtype=float), {"units": units, "long_name": long_name})
+        data[name] = ((dimension, "time"), np.asarray(array, dtype=float), {"units": units, "long_name": long_name})
+    if cases.custom:
+        described = {"path_waypoints": np.array([path.describe() for path in cases.paths], dtype=str),
+                     "path_speed": np.array([path.speed for path in cases.paths], dtype=float)}
+        for name, (units, long_name) in PATH_VARIABLES.items():
+            data[name] = ((dimension,), described[name], {"units": units, "long_name": long_name})
+        attrs["note"] = "custom paths: each case's speed path_speed replaces param_v"
+        label = {"units": "1", "long_name": "label of the custom path"}
+        case_coordinate = np.asarray(cases.labels, dtype=str)
+    else:
+        label = {"units": "degree", "long_name": "path angle to the surface"}
+        case_coordinate = np.asarray(cases.labels, dtype=float)
     coords = {
-        "alpha": ("alpha", np.asarray(alpha, dtype=float), {"units": "degree", "long_name": "path angle to the surface"}),
+        dimension: (dimension, case_coordinate, label),
         "time": ("time", np.asarray(time, dtype=float), {"units": "s", "long_name": "time from first contact"}),
     }
     return stamp(xr.Dataset(data, coords=coords), params, **attrs)

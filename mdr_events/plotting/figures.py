@@ -19,6 +19,7 @@ import xarray as xr
 from matplotlib.layout_engine import ConstrainedLayoutEngine
 
 from mdr_events.io.files import atomic_write
+from mdr_events.models.simulate import case_dimension, case_text
 from mdr_events.parameters import Parameters
 from mdr_events.theory.phase import PHASE_DIAGRAM_CONTENT
 
@@ -214,7 +215,9 @@ SIMULATION_PANELS = (
 
 
 def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, title: str | None = None):
-    """Panels a–e of a simulation against time, one line per angle (Fig. 8 for A, Fig. 10 for B).
+    """Panels a–e of a simulation against time, one line per case (Fig. 8 for A, Fig. 10 for B).
+
+    The lines are labelled by their angle (``α = 20°``) or, for custom paths, by the case's label.
 
     Parameters
     ----------
@@ -226,7 +229,7 @@ def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, titl
         :data:`OVERLAY_MARKERS_PER_CURVE` per curve) and its own legend entry.
     title : str, optional
         Default: "Fig. 8: ..." / "Fig. 10: ..." only for scenario A / B of a
-        paper preset, else "Simulation, scenario ..." (or "custom path"),
+        paper preset, else "Simulation, scenario ..." (or "custom paths"),
         with the radius and the method.
 
     Returns
@@ -235,19 +238,20 @@ def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, titl
         For a paper preset, with a footnote naming the inferred parameters.
     """
     figure, axes = plt.subplots(5, 1, figsize=(7.0, 12.0), sharex=True, constrained_layout=True)
-    colours = plt.cm.viridis(np.linspace(0.0, 0.9, dataset.sizes["alpha"]))
+    dimension = case_dimension(dataset)
+    colours = plt.cm.viridis(np.linspace(0.0, 0.9, dataset.sizes[dimension]))
     time = dataset["time"].values
     for letter, ax, (name, scale, label) in zip("abcde", axes, SIMULATION_PANELS):
-        for colour, alpha in zip(colours, dataset["alpha"].values):
-            values = dataset[name].sel(alpha=alpha).values * scale
-            text = "custom path" if np.isnan(alpha) else f"α = {alpha:g}°"
-            ax.plot(time, values, color=colour, lw=1.4, label=text)
+        for colour, case in zip(colours, dataset[dimension].values):
+            values = dataset[name].sel({dimension: case}).values * scale
+            ax.plot(time, values, color=colour, lw=1.4, label=case_text(dimension, case))
         if overlay is not None:
-            for alpha in overlay["alpha"].values:
-                text = f"{overlay.attrs.get('method', 'overlay')}, α = {alpha:g}°"
+            overlay_dimension = case_dimension(overlay)
+            for case in overlay[overlay_dimension].values:
+                text = f"{overlay.attrs.get('method', 'overlay')}, {case_text(overlay_dimension, case)}"
                 if "dx" in overlay.attrs:
                     text += f", Δx = {overlay.attrs['dx'] * 1e6:g} µm"
-                values = overlay[name].sel(alpha=alpha).values * scale
+                values = overlay[name].sel({overlay_dimension: case}).values * scale
                 ax.plot(overlay["time"].values, values, markevery=_marker_step(values), label=text,
                         **OVERLAY_STYLE)
         ax.set_ylabel(label)
@@ -260,7 +264,8 @@ def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, titl
     axes[-1].set_xlabel("time t (s)")
     if title is None:
         scenario = dataset.attrs.get("scenario", "")
-        path = "custom path" if scenario == "custom" else f"scenario {scenario}"
+        path = ("custom path" if dataset.sizes[dimension] == 1 else "custom paths") if scenario == "custom" \
+            else f"scenario {scenario}"
         title = _numbered(f"simulation, {path}, R = {dataset.attrs['param_R'] * _MM:g} mm, "
                           f"{dataset.attrs.get('method', '')}", dataset, SIMULATION_FIGURES)
     figure.suptitle(title)

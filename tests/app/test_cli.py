@@ -7,6 +7,7 @@ import pytest
 
 import mdr_events as me
 from mdr_events.app.cli import main
+from mdr_events.app.result_files import event_log_csv
 
 
 def run(capsys, *argv):
@@ -99,6 +100,19 @@ def test_simulate_continuum_writes_the_event_log_csv(capsys, tmp_path):
     assert rows[0].startswith("alpha_degree,event,time_s,kind")
     onset = [r.split(",") for r in rows[1:] if r.split(",")[3] == "slip_onset" and r.startswith("15,")]
     assert float(onset[0][4]) == pytest.approx(me.d_crit(15.0, ds_params(ds), "A", adhesion=True), rel=1e-9)
+
+
+def test_event_log_csv_of_custom_paths_names_each_case_by_its_label(paper):
+    """A custom path's case is written by its label (quoted where it holds a comma), a scenario's by its angle."""
+    path = me.Path([(0.0, 0.0), (0.0, paper.d_max), (2e-4, -1e-4)], paper.v)
+    dataset = me.simulate(paper, {"in, then out": path, "plain": path}, method="continuum", samples=11)
+    rows = event_log_csv(dataset).splitlines()
+    assert rows[0] == "case,event,time_s,kind,depth_m,radius_m,x_m,direction"
+    assert rows[1].startswith('"in, then out",0,') and rows[1].split(",")[4] == "first_contact"
+    labels = {row.rsplit(",", 7)[0] for row in rows[1:]}
+    assert labels == {'"in, then out"', "plain"}
+    scenario = me.simulate(paper, "A", alpha=[15.0], method="continuum", samples=11)
+    assert event_log_csv(scenario).splitlines()[1].startswith("15,0,")
 
 
 def ds_params(ds):

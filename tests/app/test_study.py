@@ -75,6 +75,10 @@ directory = "o"
     written = me.run_study(study, progress=lambda message: None)
     ds = me.open_result(written[0].path)
     assert ds.attrs["scenario"] == "custom" and ds.attrs["dx"] == 2e-6
+    # a [path] is one custom case along case, with its waypoints and speed (default: the parameters' v)
+    assert ds["case"].values.tolist() == ["path 1"] and "alpha" not in ds.dims
+    assert ds["path_waypoints"].values.tolist() == ["(0, 0); (0, 0.0003); (0.0002, 0.0003); (0.0002, -0.0001)"]
+    assert ds["path_speed"].values.tolist() == [study.params.v]
 
 
 @pytest.mark.parametrize("text, fragment", [

@@ -22,6 +22,9 @@ def results(paper_module):
         "discrete": me.simulate(p, "B", alpha=[20.0, 70.0], dx=4e-6, n_steps=500),
         "continuum": me.simulate(p, "A", alpha=[10.0, 50.0], method="continuum", samples=101),
         "custom": me.simulate(p, me.Path([(0, 0), (0, 3e-4), (2e-4, -1e-4)], p.v), method="continuum", samples=51),
+        "custom_cases": me.simulate(p, {"in and out": me.Path([(0, 0), (0, 3e-4), (2e-4, -1e-4)], p.v),
+                                        "fast": me.Path([(0, 0), (1e-4, 3e-4), (1e-4, -1e-4)], 2 * p.v)},
+                                    dx=4e-6, n_steps=500),
         "cross_check": me.cross_check(p, "A", (10.0, 40.0), dx=4e-6, n_steps=1000),
     }
 
@@ -31,7 +34,8 @@ def paper_module():
     return me.Parameters.paper()
 
 
-@pytest.mark.parametrize("name", ["phase_A", "phase_B", "discrete", "continuum", "custom", "cross_check"])
+@pytest.mark.parametrize("name", ["phase_A", "phase_B", "discrete", "continuum", "custom", "custom_cases",
+                                  "cross_check"])
 def test_every_result_reads_back_identical(results, tmp_path, name):
     dataset = results[name]
     path = write_netcdf(dataset, tmp_path / f"{name}.nc")

@@ -1,4 +1,5 @@
-"""Unit tests of the continuum's parts: the branch, the anchor map, the transition table and the planner."""
+"""Unit tests of the continuum's parts: the branch, the anchor map, the slip zones, the table of logged zone
+changes and the planner."""
 
 import math
 
@@ -7,8 +8,9 @@ import pytest
 from scipy import integrate
 
 import mdr_events as me
-from mdr_events.models.continuum import (AnchorMap, Branch, ContactState, ContinuumModel, EventKind, Piece, Regime,
-                                         SLIP_TRANSITIONS, Slip, Tolerances, kinematics, next_slip, plan_span)
+from mdr_events.models.continuum import (NO_ZONE, ZONE_EVENTS, AnchorMap, Branch, Cap, ContactState, ContinuumModel,
+                                         EventKind, Piece, Regime, Slip, Tolerances, ZoneSummary, kinematics,
+                                         lay_out_zones, plan_span, zone_events)
 from mdr_events.models.continuum.branch import FOLD_SHARE
 from mdr_events.models.continuum.plan import Action
 
@@ -63,97 +65,146 @@ def test_hertz_branch_is_sqrt_R_d(paper):
 # --- the anchor map ----------------------------------------------------------------------------------
 @pytest.fixture
 def anchors(model):
-    """A jump-in plateau at x = 0, growth at dx/dd = 2 from the jump-in depth, re-stuck slid springs."""
+    """A jump-in plateau at x = 0, growth at dx/dd = 2 from the jump-in depth, then growth back at
+    dx/dd = −3 (a reversal while growing): a map that is not monotone."""
     branch = model.grow
     jump_in = me.analytic.jump_in_radius(model.params, model.params.dgamma0)
-    growth = Piece(jump_in, 4e-3, 0.0, 2.0, branch.depth(jump_in))
-    return AnchorMap(branch, RTOL, [Piece(0.0, jump_in, 0.0), growth])
+    rising = Piece(jump_in, 3e-3, 0.0, 2.0, branch.depth(jump_in))
+    top = 2.0 * (branch.depth(3e-3) - branch.depth(jump_in))
+    falling = Piece(3e-3, 4e-3, top, -3.0, branch.depth(3e-3))
+    return AnchorMap(branch, RTOL, [Piece(0.0, jump_in, 0.0), rising, falling])
 
 
-def test_anchor_map_values_and_integral(anchors):
+def fine_grid(anchors, radius, n=400_001):
+    """Midpoints of a fine grid on [0, radius] and the anchors there (a brute-force reference)."""
+    xi = (np.arange(n) + 0.5) * radius / n
+    return xi, np.concatenate([anchors.piece_values(p, xi[(xi >= p.start) & (xi < p.end)]) for p in anchors.pieces])
+
+
+def test_anchor_map_values_continue_across_pieces(anchors):
     branch = anchors.attach
     jump_in = anchors.pieces[0].end
     assert anchors.value(0.5 * jump_in) == 0.0
-    for xi in (1.2 * jump_in, 2e-3, 3.9e-3):
+    for xi in (1.2 * jump_in, 2e-3, 2.9e-3):
         assert anchors.value(xi) == pytest.approx(2.0 * (branch.depth(xi) - branch.depth(jump_in)), rel=1e-13)
-    for lower, upper in ((0.0, 4e-3), (0.3 * jump_in, 2.5e-3), (2e-3, 3e-3)):
-        expected = integrate.quad(anchors.value, lower, upper, points=[jump_in], epsrel=1e-12)[0]
-        assert anchors.integral(lower, upper) == pytest.approx(expected, rel=1e-10, abs=1e-22)
+    assert anchors.value(3e-3) == pytest.approx(anchors.piece_value(anchors.pieces[1], 3e-3), rel=1e-13)
+    assert anchors.value(3.5e-3) < anchors.value(3e-3)  # the falling piece
 
 
-def test_slip_fronts_solve_their_definition(anchors):
-    """c = sup{ξ <= a: Y(ξ) <= level}: 0 below Y(0), a above Y(a), Y(c) = level inside a growth piece; the
-    scalar front is one point of the vectorised ones."""
-    a = 3.5e-3
-    top = anchors.value(a)
-    levels = np.array([-1e-6, 0.0, 0.25 * top, 0.5 * top, 0.99 * top, 2 * top])
-    fronts = anchors.fronts(levels, np.full(levels.shape, a))
-    assert fronts[0] == 0.0 and fronts[-1] == a
-    assert fronts[1] == anchors.pieces[0].end  # the plateau at Y = 0 slides as a whole
-    for level, front in zip(levels[2:-1], fronts[2:-1]):
-        assert anchors.value(front) == pytest.approx(level, rel=1e-10)
-        assert anchors.front(level, a) == front
+@pytest.mark.parametrize("share", [-0.2, 0.0, 0.3, 0.7, 1.2])
+def test_zone_sizes_and_clipped_integral_match_a_fine_grid(anchors, share):
+    """Both caps' zone sizes |{ξ <= a: ±Y <= ±level}| and ∫ clip(Y, lower, upper) dξ against the midpoint
+    rule on 400 001 points: its error is below one cell per front (a / 400 001 ~ 1e-8 m) and its
+    quadrature error O(h²)."""
+    a = 3.8e-3
+    xi, values = fine_grid(anchors, a)
+    top = anchors.value(3e-3)
+    level = share * top
+    cell = a / len(xi)
+    assert anchors.zone_size(Cap.POSITIVE, level, a) == pytest.approx(np.count_nonzero(values <= level) * cell,
+                                                                       abs=3 * cell)
+    assert anchors.zone_size(Cap.NEGATIVE, level, a) == pytest.approx(np.count_nonzero(values >= level) * cell,
+                                                                       abs=3 * cell)
+    lower, upper = level - 0.25 * top, level + 0.25 * top
+    expected = np.clip(values, lower, upper).sum() * cell
+    assert anchors.clipped_integral(lower, upper, a) == pytest.approx(expected, rel=1e-8, abs=1e-8 * top * a)
 
 
-def test_restick_extend_close(anchors):
-    """Re-sticking gives the slid springs one anchor and keeps the rest; extending forgets what lies beyond
-    its start and merges a resumed growth into one piece; closing fixes the growth's end."""
-    before = anchors.value(3e-3)
-    anchors.restick(2e-3, -5e-6)
-    assert anchors.value(1e-3) == -5e-6 and anchors.value(1.99e-3) == -5e-6
-    assert anchors.value(3e-3) == before
-    growth = anchors.pieces[-1]
-    anchors.extend(3.2e-3, Piece(3.2e-3, math.inf, growth.x0, growth.ratio, growth.d_ref))
+def test_clip_materialises_the_play_operator_and_merges_constants(anchors):
+    """After clip(lower, upper), Y equals clip of the old Y everywhere; a window below the whole map leaves
+    one constant piece."""
+    a = 3.8e-3
+    xi = np.linspace(0.0, a, 997)
+    old = np.array([anchors.value(v) for v in xi])
+    top = anchors.value(3e-3)
+    clipped = anchors.copy()
+    clipped.clip(0.3 * top, 0.8 * top, a)
+    np.testing.assert_allclose([clipped.value(v) for v in xi], np.clip(old, 0.3 * top, 0.8 * top),
+                               rtol=1e-12, atol=1e-12 * top)
+    flat = anchors.copy()
+    flat.clip(-2 * top, -top, a)
+    assert flat.pieces == [Piece(0.0, a, -top)]
+
+
+def test_extend_close_truncate(anchors):
+    """Extending forgets what lies beyond its start and merges a resumed growth into one piece; closing
+    fixes the growth's end; truncating forgets the springs beyond a radius."""
+    rising = anchors.pieces[1]
+    anchors.extend(2.5e-3, Piece(2.5e-3, math.inf, rising.x0, rising.ratio, rising.d_ref))
     assert len(anchors.pieces) == 2 and anchors.pieces[-1].end == math.inf
     anchors.close(3.4e-3)
     assert anchors.pieces[-1].end == 3.4e-3
     anchors.extend(3.0e-3, Piece(3.0e-3, math.inf, 1e-5))
-    assert [p.end for p in anchors.pieces] == [2e-3, 3.0e-3, math.inf]
+    assert [p.end for p in anchors.pieces] == [anchors.pieces[0].end, 3.0e-3, math.inf]
+    anchors.truncate(2e-3)
+    assert [p.end for p in anchors.pieces] == [anchors.pieces[0].end, 2e-3]
 
 
 def test_algebraic_force_of_a_uniform_field(model):
-    """Springs all anchored at x0: F_x = 2G* a (x − x0) while it sticks, τ0 π a² once x − x0 >= ū(a)."""
+    """Springs all anchored at x0: F_x = 2G* a (x − x0) while it sticks, ±τ0 π a² once |x − x0| >= ū(a)."""
     anchors = AnchorMap(model.grow, RTOL, [Piece(0.0, 3e-3, 1e-6)])
     a, G, K = 3e-3, model.params.G_star, model.K
     assert anchors.tangential_force(K, G, 1e-6 + 0.5 * K * a, a) == pytest.approx(2 * G * a * 0.5 * K * a, rel=1e-12)
     full = anchors.tangential_force(K, G, 1e-6 + 2 * K * a, a)
     assert full == pytest.approx(model.params.tau0 * math.pi * a**2, rel=1e-12)
+    assert anchors.tangential_force(K, G, 1e-6 - 2 * K * a, a) == pytest.approx(-full, rel=1e-12)
     assert anchors.tangential_force(K, G, 1.0, 0.0) == 0.0
 
 
-# --- the transition table ----------------------------------------------------------------------------
-@pytest.mark.parametrize("state, fired, expected", [
-    (Slip.STICK, {EventKind.SLIP_ONSET}, Slip.PARTIAL),
-    (Slip.STICK, {EventKind.SLIP_ONSET, EventKind.FULL_SLIP}, Slip.FULL),
-    (Slip.PARTIAL, {EventKind.FULL_SLIP}, Slip.FULL),
-    (Slip.PARTIAL, {EventKind.RE_STICK}, Slip.STICK),
-    (Slip.STICK, {EventKind.FULL_SLIP}, Slip.FULL),
-    (Slip.PARTIAL, {EventKind.FULL_SLIP, EventKind.RE_STICK}, Slip.STICK),
+# --- the slip zones --------------------------------------------------------------------------------
+@pytest.mark.parametrize("share", [0.3, 0.9])
+def test_a_zone_layout_starts_at_the_exact_size_and_ends_at_its_target(anchors, model, share):
+    """Laid out at a level, a zone's (smooth) size is the exact zone size there; its target is the next
+    value of the map the level reaches: a front leaving its piece or a new piece starting to slide."""
+    a = 3.8e-3
+    top = anchors.value(3e-3)
+    level = share * top
+    zones = lay_out_zones(anchors, model.K, level + model.K * a, a, {cap: True for cap in Cap}, model.params.d_max)
+    positive = zones[Cap.POSITIVE]
+    assert positive.size(level, a) == pytest.approx(anchors.zone_size(Cap.POSITIVE, level, a), rel=1e-12)
+    # the rising piece's front reaches its end (top), or the falling piece starts to slide at its edge value
+    assert positive.target(a) == pytest.approx(min(top, anchors.value(a)) if level < anchors.value(a) else top,
+                                               rel=1e-12)
+    assert positive.summary(a).slip is Slip.PARTIAL and positive.summary(a).centre
+    resting = lay_out_zones(anchors, model.K, level + model.K * a, a, {cap: False for cap in Cap}, model.params.d_max)
+    assert resting[Cap.POSITIVE].size(level, a) == 0.0 and resting[Cap.POSITIVE].summary(a) == NO_ZONE
+    assert resting[Cap.POSITIVE].target(a) == 0.0  # the lowest anchor: slip onset
+
+
+# --- the table of logged zone changes ---------------------------------------------------------------------
+@pytest.mark.parametrize("before, after, expected", [
+    (Slip.STICK, Slip.PARTIAL, (EventKind.SLIP_ONSET,)),
+    (Slip.STICK, Slip.FULL, (EventKind.SLIP_ONSET, EventKind.FULL_SLIP)),
+    (Slip.PARTIAL, Slip.FULL, (EventKind.FULL_SLIP,)),
+    (Slip.PARTIAL, Slip.STICK, (EventKind.FRONT_AT_EDGE,)),
+    (Slip.FULL, Slip.STICK, (EventKind.FRONT_AT_EDGE,)),
+    (Slip.FULL, Slip.PARTIAL, ()),
 ])
-def test_every_row_of_the_transition_table(state, fired, expected):
-    assert next_slip(state, frozenset(fired)) is expected
-    assert SLIP_TRANSITIONS[(state, frozenset(fired))] is expected
+def test_every_row_of_the_zone_table(before, after, expected):
+    summary = {Slip.STICK: NO_ZONE, Slip.PARTIAL: ZoneSummary(Slip.PARTIAL, True, False),
+               Slip.FULL: ZoneSummary(Slip.FULL, True, True)}
+    assert zone_events(summary[before], summary[after]) == expected == ZONE_EVENTS[(before, after)]
 
 
-def test_the_table_has_exactly_those_rows_and_refuses_the_rest():
-    assert len(SLIP_TRANSITIONS) == 6
-    for slip in Slip:
-        assert next_slip(slip, frozenset()) is slip
-        assert next_slip(slip, frozenset({EventKind.FRONT_CROSSES_PIECE})) is slip
-    with pytest.raises(RuntimeError, match="does not allow"):
-        next_slip(Slip.FULL, frozenset({EventKind.SLIP_ONSET}))
-    with pytest.raises(RuntimeError, match="does not allow"):
-        next_slip(Slip.STICK, frozenset({EventKind.RE_STICK}))
+def test_re_stick_and_fronts_reaching_the_centre_or_the_edge():
+    partial = ZoneSummary(Slip.PARTIAL, False, False)
+    assert zone_events(partial, NO_ZONE, restuck=True) == (EventKind.RE_STICK,)
+    assert zone_events(NO_ZONE, NO_ZONE, restuck=True) == ()
+    assert zone_events(partial, ZoneSummary(Slip.PARTIAL, True, False)) == (EventKind.FRONT_AT_CENTRE,)
+    assert zone_events(partial, ZoneSummary(Slip.PARTIAL, True, True)) == (EventKind.FRONT_AT_CENTRE,
+                                                                          EventKind.FRONT_AT_EDGE)
+    assert zone_events(ZoneSummary(Slip.PARTIAL, True, True), ZoneSummary(Slip.PARTIAL, True, False)) == ()
+    assert len(ZONE_EVENTS) == 6
 
 
 # --- the planner ----------------------------------------------------------------------------------------
 def segment_of(params, waypoints, index=0):
-    return kinematics(me.Path(waypoints, params.v)).segments[index]
+    return kinematics(me.Path(waypoints, params.v))[index]
 
 
-def state_in_contact(model, radius, slip=Slip.STICK, t=0.0):
+def state_in_contact(model, radius, t=0.0):
     anchors = AnchorMap(model.grow, RTOL, [Piece(0.0, radius, 0.0)])
-    return ContactState(t=t, anchors=anchors, in_contact=True, radius=radius, slip=slip)
+    return ContactState(t=t, anchors=anchors, in_contact=True, radius=radius)
 
 
 def test_plan_out_of_contact(model):

@@ -8,7 +8,8 @@ import xarray as xr
 
 import mdr_events as me
 from mdr_events.analysis.convergence import discrete_errors, exact_references_A, observed_orders
-from mdr_events.models.paths import Path
+from mdr_events.models.discrete import run_discrete
+from mdr_events.models.paths import Path, exit_depth
 from mdr_events.models.simulate import FIGURE_ANGLES, SIMULATION_VARIABLES, simulate
 
 DX = 2e-6  # 1 550 springs per side at d_max for R = 30 mm
@@ -157,8 +158,8 @@ def test_same_input_same_output(paper):
 def test_custom_path_and_scenario_B_indentation(paper):
     path = Path([(0.0, -1e-5), (0.0, paper.d_max), (2e-4, paper.d_max), (2e-4, -1e-4)], paper.v)
     ds = simulate(paper, path, dx=4e-6, n_steps=2000)
-    assert ds.sizes["alpha"] == 1 and np.isnan(ds["alpha"].values[0])
-    assert ds.attrs["scenario"] == "custom" and "(0.0002" in ds.attrs["path_waypoints"]
+    assert ds["case"].values.tolist() == ["path 1"] and "alpha" not in ds.dims
+    assert ds.attrs["scenario"] == "custom" and "(0.0002" in str(ds["path_waypoints"].values[0])
     # time runs from first contact (d = 0 at t = 0)
     assert ds["indentation_depth"].values[0, 0] == pytest.approx(0.0, abs=1e-15)
     plus = simulate(paper, "B+", alpha=[30.0], dx=4e-6, n_steps=3000)
@@ -215,3 +216,194 @@ def test_pinned_radius_below_the_jump_off_radius_comes_off_at_once(paper):
         in_contact = depth[radius > 0]
         assert in_contact.min() == pytest.approx(release, abs=0.2e-6)
 
+
+
+# ----------------------------------------------------------------------------------------------
+# Entry times and several contact cycles along one path
+
+#: The hand-computed entry times are a few segment lengths over the speed: round-off only.
+ENTRY_TIME_RTOL = 1e-12
+
+
+@pytest.mark.parametrize(
+    "waypoints, speed, expected",
+    [
+        # one entry, crossing d = 0 half-way along a 6-8-10 segment
+        ([(0.0, -3.0), (8.0, 3.0), (8.0, -1.0)], 2.0, [5.0 / 2.0]),
+        # one entry exactly at a corner on the surface, the next segment going in (3-4-5 segment)
+        ([(0.0, -3.0), (4.0, 0.0), (4.0, 2.0)], 2.0, [5.0 / 2.0]),
+        # two entries: in a third of the way down the first segment (length 3), out, and in a third
+        # of the way along the 3-4-5 segment that starts at t = (3 + 3) / 2
+        ([(0.0, -1.0), (0.0, 2.0), (0.0, -1.0), (4.0, 2.0), (4.0, -1.0)], 2.0, [0.5, 3.0 + 5.0 / 3.0 / 2.0]),
+        # starts inside (entry at 0), comes out, and goes in again half-way up the last segment
+        ([(0.0, 1.0), (0.0, -1.0), (0.0, 1.0)], 2.0, [0.0, 1.0 + 0.5]),
+        # touches the surface at t = 1 and turns back: no entry there; in a third of the way up the last segment
+        ([(0.0, -1.0), (0.0, 0.0), (0.0, -1.0), (0.0, 2.0)], 1.0, [2.0 + 1.0]),
+        # comes out to exactly d = 0 at a corner and goes back in: leaves and re-enters at that corner
+        ([(0.0, -1.0), (0.0, 1.0), (0.0, 0.0), (0.0, 1.0)], 1.0, [1.0, 3.0]),
+        # ends touching the surface: never enters
+        ([(0.0, -1.0), (0.0, 0.0)], 1.0, []),
+        # stays outside
+        ([(0.0, -1.0), (3.0, -1.0), (3.0, -2.0)], 1.0, []),
+    ],
+    ids=["one", "one-at-corner", "two", "start-inside", "touch-and-turn-back", "out-to-surface-and-in",
+         "ends-at-surface", "never"],
+)
+def test_entry_times_of_hand_made_paths(waypoints, speed, expected):
+    path = Path(waypoints, speed)
+    entries = path.entry_times()
+    assert isinstance(entries, np.ndarray) and entries.ndim == 1 and entries.dtype == float
+    assert entries.shape == (len(expected),)
+    np.testing.assert_allclose(entries, expected, rtol=ENTRY_TIME_RTOL, atol=0.0)
+    if expected:
+        assert entries[0] == path.first_contact_time()
+        assert np.all(np.diff(entries) > 0)
+    else:
+        with pytest.raises(ValueError, match="never enters the elastomer"):
+            path.first_contact_time()
+
+
+def test_entry_times_start_with_first_contact_time_of_the_scenarios(paper):
+    for build in (Path.scenario_A, Path.scenario_B, Path.scenario_B_indentation):
+        for alpha in (10.0, 45.0, 90.0):
+            path = build(alpha, paper)
+            assert path.entry_times().tolist() == [path.first_contact_time()]
+
+
+#: How far below ``exit_depth`` (as a share of d_max) the re-contact paths pull out: well beyond pull-off.
+BEYOND_EXIT_SHARE = 0.1
+#: Time steps per contact cycle: the cycle lasts exactly this many steps, so that the second cycle is
+#: sampled at the same offsets from its entry as the first.
+STEPS_PER_CYCLE = 400
+#: Spring spacing of the re-contact runs (about 780 springs per side at d_max).
+CYCLE_DX = 4e-6
+#: Allowed difference between two cycles that see the same depths, as a share of the largest |force|:
+#: the depths and tangential steps come from interpolating the path at different times (round-off).
+CYCLE_ROUND_OFF = 1e-9
+#: The horizontal move out of contact between two cycles at different x (m).
+CYCLE_MOVE = 1e-3
+
+
+def cycle_paths(p, alpha: float, move: float, end_in_contact: bool = False) -> tuple[Path, float]:
+    """A path of two contact cycles and its period (s): each in at ``alpha`` (degrees) from below
+    ``exit_depth`` to d_max and vertically out below ``exit_depth`` again; between the cycles a
+    horizontal move by ``move`` (m) out of contact. With ``end_in_contact`` the path stops at d_max
+    in the second cycle."""
+    out = exit_depth(p) - BEYOND_EXIT_SHARE * p.d_max
+    run_in = 0.0 if alpha == 90.0 else (p.d_max - out) / math.tan(math.radians(alpha))
+    points = [(0.0, out), (run_in, p.d_max), (run_in, out)]
+    second = run_in + move
+    if move:
+        points.append((second, out))
+    period_corner = len(points) - 1  # the second cycle starts here, in the same state as the first
+    points.append((second + run_in, p.d_max))
+    if not end_in_contact:
+        points.append((second + run_in, out))
+    path = Path(points, p.v)
+    return path, float(path.corner_times[period_corner])
+
+
+CYCLE_CASES = pytest.mark.parametrize(
+    "alpha, move", [(90.0, 0.0), (90.0, CYCLE_MOVE), (30.0, CYCLE_MOVE)],
+    ids=["vertical-same-line", "vertical-other-x", "slanted-other-x"])
+
+
+@CYCLE_CASES
+def test_second_contact_cycle_repeats_the_first(paper, alpha, move):
+    """In again after a pull-off: the second cycle starts afresh (no springs, zero shifts) and is the
+    first shifted in time. dt divides the cycle's duration exactly (STEPS_PER_CYCLE steps), so both
+    cycles are sampled at the same depths (to round-off) at the same offsets from their entry."""
+    path, period = cycle_paths(paper, alpha, move)
+    entries = path.entry_times()
+    assert entries.size == 2 and entries[1] - entries[0] == pytest.approx(period, rel=ENTRY_TIME_RTOL)
+    raw = run_discrete(paper, [path], CYCLE_DX, period / STEPS_PER_CYCLE)
+    radius = raw["contact_radius"][0]
+    # the second cycle runs from sample STEPS_PER_CYCLE to its pull-off, after which the case ends
+    second_length = int(np.count_nonzero(np.isfinite(radius[STEPS_PER_CYCLE:])))
+    assert np.all(np.isfinite(radius[:STEPS_PER_CYCLE + second_length]))
+    first = slice(0, second_length)
+    second = slice(STEPS_PER_CYCLE, STEPS_PER_CYCLE + second_length)
+    assert radius[second].max() > 0.0 and radius[second][-1] == 0.0  # a whole contact, up to its pull-off
+    assert np.all(np.isnan(radius[STEPS_PER_CYCLE + second_length:]))
+    np.testing.assert_array_equal(radius[second], radius[first])
+    np.testing.assert_array_equal(raw["springs_in_contact"][0, second], raw["springs_in_contact"][0, first])
+    for key in ("normal_force", "tangential_force"):
+        values = raw[key][0]
+        scale = np.abs(values[first]).max()
+        np.testing.assert_allclose(values[second], values[first], rtol=0.0, atol=CYCLE_ROUND_OFF * scale,
+                                   err_msg=key)
+    tangential = raw["tangential_force"][0, first]
+    assert (np.abs(tangential).max() > 0.0) == (alpha != 90.0)
+
+
+@pytest.mark.parametrize("alpha", [90.0, 30.0], ids=["vertical", "slanted"])
+def test_between_contact_cycles_everything_is_zero_and_the_case_goes_on(paper, alpha):
+    """Out of contact between two cycles (including a horizontal move) F_N, F_x and the radius are
+    exactly 0, the sliding fraction nan, and the case is not cut: it ends at its path's end, here in
+    contact at d_max."""
+    path, period = cycle_paths(paper, alpha, CYCLE_MOVE, end_in_contact=True)
+    dt = period / STEPS_PER_CYCLE
+    raw = run_discrete(paper, [path], CYCLE_DX, dt)
+    time = raw["time"]
+    start = path.first_contact_time()
+    radius = raw["contact_radius"][0]
+    touching = radius > 0.0
+    pull_off = int(np.argmax(touching)) + int(np.argmax(~touching[np.argmax(touching):]))
+    contact_again = pull_off + int(np.argmax(touching[pull_off:]))
+    assert contact_again > pull_off and touching[contact_again]
+    # the gap holds the whole move out of contact (corners 2 and 3) and ends at or after the second entry
+    assert time[pull_off] < path.corner_times[2] - start and path.corner_times[3] - start < time[contact_again]
+    assert time[contact_again] >= path.entry_times()[1] - start
+    gap = slice(pull_off, contact_again)
+    for key in ("contact_radius", "normal_force", "tangential_force", "springs_in_contact"):
+        assert np.all(raw[key][0, gap] == 0.0), key
+    assert np.all(np.isnan(raw["sliding_fraction"][0, gap]))
+    within_path = time <= path.duration - start
+    for key in ("contact_radius", "normal_force", "tangential_force", "springs_in_contact",
+                "indentation_depth", "tangential_displacement"):
+        assert np.all(np.isfinite(raw[key][0, within_path])), key
+    assert radius[within_path][-1] > 0.0  # still in contact where the path ends
+    assert np.all(np.isfinite(raw["sliding_fraction"][0, within_path][touching[within_path]]))
+
+
+def test_a_single_contact_still_ends_after_its_pull_off_sample(paper):
+    """Without a later entry the case ends at the first sample without contact after the contact:
+    that sample is kept (radius and forces 0), all after it is nan, also when the path goes on
+    outside, or touches the surface (d = 0) and turns back; in a batch with a path that does go in
+    again, as on its own."""
+    out = exit_depth(paper) - BEYOND_EXIT_SHARE * paper.d_max
+    moves_on_outside = Path([(0.0, out), (0.0, paper.d_max), (0.0, out), (CYCLE_MOVE, out)], paper.v)
+    touches_surface = Path([(0.0, out), (0.0, paper.d_max), (0.0, out), (0.0, 0.0), (0.0, out)], paper.v)
+    twice, period = cycle_paths(paper, 90.0, 0.0)
+    dt = period / STEPS_PER_CYCLE
+    batch = run_discrete(paper, [moves_on_outside, twice, touches_surface], CYCLE_DX, dt)
+    for row, path in ((0, moves_on_outside), (2, touches_surface)):
+        assert path.entry_times().size == 1
+        single = run_discrete(paper, [path], CYCLE_DX, dt)
+        radius = single["contact_radius"][0]
+        touching = radius > 0.0
+        pull_off = int(np.argmax(touching)) + int(np.argmax(~touching[np.argmax(touching):]))
+        assert single["time"][pull_off] < path.duration - path.first_contact_time()  # cut before the end
+        for key in ("contact_radius", "normal_force", "tangential_force", "springs_in_contact"):
+            values = single[key][0]
+            assert np.all(np.isfinite(values[:pull_off + 1])) and values[pull_off] == 0.0, key
+            assert pull_off + 1 < values.size and np.all(np.isnan(values[pull_off + 1:])), key
+        for key, values in single.items():
+            if key not in ("time", "spring_count"):
+                assert np.array_equal(batch[key][row, :values.shape[1]], values[0], equal_nan=True), key
+    # the path that goes in again does so in the same batch
+    assert np.nanmax(batch["contact_radius"][1, STEPS_PER_CYCLE:]) > 0.0
+
+
+def test_re_entry_in_the_step_the_contact_comes_apart_goes_on(paper):
+    """Without adhesion the contact comes apart at d = 0; a path that comes out to d = 0 at a corner and
+    goes straight back in comes apart at the very sample (on the corner) at which it re-enters. The
+    case goes on, as the path enters after the last sample in contact; dt puts the corners on samples."""
+    p = paper.replace(dgamma0=0.0, dgamma1=0.0)
+    path = Path([(0.0, 0.0), (0.0, p.d_max), (0.0, 0.0), (0.0, p.d_max), (0.0, 0.0)], p.v)
+    period = float(path.corner_times[2])
+    raw = run_discrete(p, [path], CYCLE_DX, period / STEPS_PER_CYCLE)
+    radius = raw["contact_radius"][0]
+    assert radius[STEPS_PER_CYCLE] == 0.0 and radius[STEPS_PER_CYCLE - 1] > 0.0  # apart on the corner
+    assert radius[STEPS_PER_CYCLE + 1] > 0.0  # and in contact again at the next sample
+    np.testing.assert_array_equal(radius[STEPS_PER_CYCLE:2 * STEPS_PER_CYCLE + 1], radius[:STEPS_PER_CYCLE + 1])

@@ -226,21 +226,28 @@ def resolvable_cases(draw, smallest_angle=5.0):
     return resolvable_friction(draw, params, path_at(alpha), dx), scenario, alpha
 
 
-def assert_contact_differs_only_at_the_jumps(discrete, continuum, params, dx, a_max):
-    """Where one method is in contact and the other not, the depth is within 2 a_max Δx / R (the depth
-    that one spring of radius makes on the Hertz branch) plus one step of a jump-in (d = 0) or of the
-    continuum's pull-off depth: the discrete model meets these jumps with its quantised radius."""
-    area_d, area_c = discrete["contact_area"].values[0], continuum["contact_area"].values[0]
+def assert_contact_differs_only_at_the_jumps(discrete, continuum_run, params, dx, a_max):
+    """Where one method is in contact and the other not, the depth is within one step of a jump-in
+    (d = 0) or of the continuum's pull-off depth, plus the change of the depth threshold of the spring
+    at the edge over the discrete radius's error (< Δx): 2 a_max Δx / R on the Hertz part, and at a
+    pull-off Δx |∂d1/∂a| of the Δγ1 branch (9) next to the pull-off radius (zero at the fold, large
+    where a held radius inside the fold comes off at once)."""
+    area_d, area_c = discrete["contact_area"].values[0], continuum_run["contact_area"].values[0]
     depth = discrete["indentation_depth"].values[0]
     finite = np.isfinite(area_d) & np.isfinite(area_c)
     differs = finite & ((area_d > 0) != (area_c > 0))
-    kinds = list(continuum["event_kind"].values[0])
-    jumps = [0.0] + [float(continuum["event_depth"].values[0][i]) for i, kind in enumerate(kinds)
-                     if kind in ("pull_off", "contact_ends")]
+    kinds = list(continuum_run["event_kind"].values[0])
     step = np.max(np.abs(np.diff(depth[np.isfinite(depth)])))
     window = 2 * a_max * dx / params.R + step
+    detach = continuum.Branch(params, params.dgamma1)
+    jumps = [(0.0, window)]
+    for i, kind in enumerate(kinds):
+        if kind in ("pull_off", "contact_ends"):
+            radius = float(continuum_run["event_radius"].values[0][i])
+            slopes = [abs(detach.slope(r)) for r in (max(radius - dx, 0.5 * radius), radius + dx) if r > 0]
+            jumps.append((float(continuum_run["event_depth"].values[0][i]), window + dx * max(slopes, default=0.0)))
     for value in depth[differs]:
-        assert min(abs(value - jump) for jump in jumps) <= window, (value, jumps, window)
+        assert any(abs(value - jump) <= allowed for jump, allowed in jumps), (value, jumps)
 
 
 #: Rounding of the algebraic form F_x = 2G*[c ū + x (a − c) − ∫_c^a Y dξ]: x (a − c) and ∫ Y are
@@ -357,33 +364,39 @@ def test_closed_form_18_agrees_with_the_continuum_slip_onset(case):
     assert depth == pytest.approx(onset, rel=1e-9)
 
 
-def monotone_path_points(draw, params, slide=3.0):
-    """Random waypoints of 2–5 segments whose tangential motion does not reverse (the continuum's
-    domain): in and out of the elastomer, pinned slides, re-indentation, ending below the jump-off
-    depth. Each segment moves at most ``slide`` d_max sideways (0.05–3 d_max by default)."""
+def path_points(draw, params, slide=3.0):
+    """Random waypoints of 2–7 segments, any tangential direction (reversals in and out of contact): in
+    and out of the elastomer, pinned slides, re-indentation, at most one pull-off well below the
+    jump-off depth followed by a new contact, ending below the jump-off depth. Each segment moves at most
+    ``slide`` d_max sideways (0.05–3 d_max by default)."""
     scale = params.d_max
     points = [(0.0, 0.0)]
     # shares of d_max in steps of 1e-3: meaningful corners, not subnormal grazes of the surface
     def share(low, high):
         return st.integers(round(low * 1000), round(high * 1000)).map(lambda k: k / 1000 * scale)
 
-    for _ in range(draw(st.integers(1, 4))):
-        x = points[-1][0] + draw(st.sampled_from([0.0, 1.0])) * draw(share(0.05, slide))
+    exit_depth = paths.exit_depth(params)
+    pull_off_after = draw(st.sampled_from([None, 1, 2]))
+    for index in range(draw(st.integers(1, 4))):
+        x = points[-1][0] + draw(st.sampled_from([-1.0, 0.0, 1.0])) * draw(share(0.05, slide))
         depth = draw(share(-0.2, 1.2))
         if (x, depth) != points[-1]:
             points.append((x, depth))
-    if max(depth for _, depth in points) <= 0.0:
+        if index + 1 == pull_off_after and max(d for _, d in points) > 0.0:
+            points.append((points[-1][0], exit_depth))  # out well beyond the pull-off, then in again
+            event("pulled off and in again")
+    if max(depth for _, depth in points) <= 0.0 or points[-1][1] <= exit_depth:
         points.append((points[-1][0], scale))
-    exit_depth = paths.exit_depth(params)
-    points.append((points[-1][0] + draw(share(0.0, 2.0 * slide / 3.0)), exit_depth))
+    points.append((points[-1][0] + draw(st.sampled_from([-1.0, 1.0])) * draw(share(0.0, 2.0 * slide / 3.0)),
+                   exit_depth))
     return points
 
 
 @st.composite
-def monotone_paths(draw):
-    """Random monotone paths (:func:`monotone_path_points`) with τ0 > 0."""
+def any_paths(draw):
+    """Random paths (:func:`path_points`) with τ0 > 0."""
     params, _, _ = draw(cases(friction=log_uniform(*FRICTION)))
-    return params, me.Path(monotone_path_points(draw, params), params.v)
+    return params, me.Path(path_points(draw, params), params.v)
 
 
 def path_spacing(params, path):
@@ -398,17 +411,20 @@ DISCRETE_PATH_SLIDE = 1.0
 
 
 @st.composite
-def resolvable_monotone_paths(draw):
-    """Random monotone paths whose discrete run at :func:`path_spacing` needs at most MAX_STEPS steps
+def resolvable_paths(draw):
+    """Random paths whose discrete run at :func:`path_spacing` needs at most MAX_STEPS steps
     (shorter slides, :data:`DISCRETE_PATH_SLIDE`; τ0 > 0 drawn by :func:`resolvable_friction`, the
     path does not depend on τ0)."""
     params, _, _ = draw(cases(friction=st.just(FRICTION[0])))
-    path = me.Path(monotone_path_points(draw, params, slide=DISCRETE_PATH_SLIDE), params.v)
+    path = me.Path(path_points(draw, params, slide=DISCRETE_PATH_SLIDE), params.v)
     return resolvable_friction(draw, params, path, path_spacing(params, path), frictionless=False), path
 
 
 def label_path(path):
     event(f"{len(path.waypoints) - 1} segments")
+    steps = np.diff(path.waypoints[:, 0])
+    moving = np.sign(steps[steps != 0.0])
+    event("tangential reversal" if np.any(moving[1:] != moving[:-1]) else "no tangential reversal")
 
 
 #: Hertz contact, in at two slopes and out vertically: the continuum's integrated F_x is 8% of its
@@ -427,11 +443,11 @@ SHRINK_THEN_SLIDE = (me.Parameters(E=3.5e5, nu=0.0, R=0.13, tau0=1e4, dgamma0=0.
 
 
 @settings(max_examples=25 * SCALE, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(monotone_paths())
+@given(any_paths())
 @example(HERTZ_TWO_SLOPES)
 @example(SHRINK_THEN_SLIDE)
 def test_general_paths_integrated_force_is_the_algebraic_form(case):
-    """Along any monotone path the integrated F_x equals the algebraic form
+    """Along any path (reversals, re-contact) the integrated F_x equals the algebraic form
     (:func:`assert_integrated_force_is_the_algebraic_form`), stays within τ0 A (to the same
     tolerance) and is finite in contact."""
     params, path = case
@@ -447,9 +463,10 @@ def test_general_paths_integrated_force_is_the_algebraic_form(case):
 
 
 @settings(max_examples=4 * SCALE, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(resolvable_monotone_paths())
+@given(resolvable_paths())
 def test_general_paths_discrete_agrees_with_the_continuum(case):
-    """The discrete model follows the continuum along random monotone paths as along the scenarios:
+    """The discrete model follows the continuum along random paths (reversals, re-contact) as along the
+    scenarios:
     within the first-order error bound (:func:`assert_within_first_order_bound`; corner-straddling
     steps and jump samples left out)."""
     params, path = case

@@ -90,6 +90,17 @@ def test_simulation_of_a_preset_off_the_paper_scenarios_has_no_figure_number(sce
     assert title == f"Simulation, {content}, R = 30 mm, continuum"
 
 
+def test_simulation_of_custom_paths_labels_its_lines_by_the_case_labels():
+    params = Parameters.paper()
+    paths = {"straight in": me.Path([(0.0, 0.0), (0.0, params.d_max), (2e-4, -1e-4)], params.v),
+             "at an angle, fast": me.Path([(0.0, 0.0), (1e-4, params.d_max), (1e-4, -1e-4)], 2 * params.v)}
+    dataset = me.simulate(params, paths, method="continuum", samples=101)
+    figure = plot_simulation(dataset, overlay=me.simulate(params, paths, dx=4e-6, n_steps=1000))
+    for ax in figure.axes:
+        assert [line.get_label() for line in ax.lines] == [*paths, *(f"discrete, {label}, Δx = 4 µm" for label in paths)]
+    assert figure.get_suptitle() == "Simulation, custom paths, R = 30 mm, continuum"
+
+
 # ----------------------------------------------------------------------------------------------
 # the discrete overlay
 

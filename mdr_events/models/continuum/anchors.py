@@ -1,10 +1,16 @@
-"""The anchor map ``Y(ξ)``: where each spring in contact would carry no tangential shift.
+"""The stored anchor map ``Y(ξ)`` of the springs in contact, and what is read off it.
 
-A spring attached at time ``t_ξ`` has ``Y = x(t_ξ)``; its shift is ``u = min(x − Y(ξ), ū(a))``
-with ``ū(a) = π a τ0/(2G*)`` (13). For growth on a path segment
-``Y(ξ) = x_s + (v_x/v_d)(d_0(ξ) − d_s)`` with ``d_0`` the ``Δγ0`` branch. For paths whose
-tangential motion does not reverse, ``Y`` is non-decreasing in ``ξ``, so the sliding springs form
-one zone ``[0, c]`` bounded by the slip front ``Y(c) = x − ū(a)``.
+A spring attached at time ``t_ξ`` gets the anchor ``Y = x(t_ξ)``. The cap (13) acts on both sides:
+the anchors are kept inside the window ``[x − ū(a), x + ū(a)]`` (a play operator per spring, all
+sharing ``x`` and ``ū = K a``). The map stores the anchors as last *materialised*; the effective
+anchors are ``clip(Y, x − ū, x + ū)`` as long as each level has only pushed since (the window's
+bounds move outward-pushing only while springs sit at them: a level that turns back re-sticks its
+springs, and the solver then materialises the clip, :meth:`AnchorMap.clip`).
+
+The map is a list of contiguous pieces on ``[0, a]``, each constant or one growth on a path
+segment, ``Y(ξ) = x_s + (v_x/v_d)(d_0(ξ) − d_s)`` with ``d_0`` the ``Δγ0`` branch: monotone in ``ξ``
+(increasing for ``v_x > 0``). With reversals the map is not monotone; each cap's slip zone is then
+a union of intervals, found piece by piece.
 """
 
 from __future__ import annotations
@@ -15,6 +21,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .branch import Branch
+from .state import Cap
 
 
 @dataclass(frozen=True)
@@ -27,20 +34,28 @@ class Piece:
     ratio: float = 0.0
     d_ref: float = 0.0
 
+    @property
+    def constant(self) -> bool:
+        return self.ratio == 0.0
+
     def same_growth(self, other: "Piece") -> bool:
         """Whether ``other`` continues the growth of this piece (the same ``Y``)."""
         return (self.x0, self.ratio, self.d_ref) == (other.x0, other.ratio, other.d_ref)
 
+    def rises_towards(self, cap: Cap) -> bool:
+        """Whether ``cap · Y`` increases with ``ξ`` on this (growth) piece."""
+        return self.ratio > 0 if cap > 0 else self.ratio < 0
+
 
 class AnchorMap:
-    """The non-decreasing anchor map ``Y(ξ)`` on ``[0, a]`` as a list of pieces.
+    """The stored anchors ``Y(ξ)`` on ``[0, a]`` as a list of contiguous pieces.
 
     Parameters
     ----------
     attach : Branch
         The ``Δγ0`` branch, along which springs attach (``d0``).
     rtol : float
-        Relative accuracy of the slip front's root.
+        Relative accuracy of the radius roots (slip fronts).
     pieces : list of Piece, optional
         The pieces, ordered by ``start``.
     """
@@ -54,6 +69,7 @@ class AnchorMap:
         """An independent copy (pieces are immutable)."""
         return AnchorMap(self.attach, self.rtol, self.pieces)
 
+    # --- building -------------------------------------------------------------------------------
     def reset(self) -> None:
         self.pieces = []
 
@@ -71,8 +87,52 @@ class AnchorMap:
         if self.pieces:
             self.pieces[-1] = dataclasses.replace(self.pieces[-1], end=end)
 
-    def _value(self, p: Piece, xi: float) -> float:
-        return p.x0 if p.ratio == 0.0 else p.x0 + p.ratio * (self.attach.depth(xi) - p.d_ref)
+    def truncate(self, radius: float) -> None:
+        """Forget the springs beyond ``radius`` (they have detached)."""
+        if self.pieces and self.pieces[-1].end > radius:
+            self.pieces = [dataclasses.replace(p, end=min(p.end, radius)) for p in self.pieces if p.start < radius]
+
+    def clip(self, lower: float, upper: float, radius: float) -> None:
+        """Materialise the play operator: ``Y ← clip(Y, lower, upper)`` on ``[0, radius]``.
+
+        A growth piece is split where it crosses a bound; neighbouring constant pieces of equal value
+        are merged (after a few reciprocating cycles the whole map is one or two constants).
+        """
+        clipped: list[Piece] = []
+        for p in self.in_contact(radius):
+            end = min(p.end, radius)
+            if p.constant:
+                parts = [Piece(p.start, end, min(max(p.x0, lower), upper))]
+            else:
+                cuts = sorted(min(max(self.inverse(p, bound), p.start), end) for bound in (lower, upper))
+                edges = [p.start, cuts[0], cuts[1], end]
+                parts = []
+                for lo, hi in zip(edges[:-1], edges[1:]):
+                    if hi > lo:
+                        middle = self.piece_value(p, 0.5 * (lo + hi))
+                        if lower <= middle <= upper:
+                            parts.append(dataclasses.replace(p, start=lo, end=hi))
+                        else:
+                            parts.append(Piece(lo, hi, lower if middle < lower else upper))
+            for part in parts:
+                if clipped and clipped[-1].constant and part.constant and clipped[-1].x0 == part.x0:
+                    clipped[-1] = dataclasses.replace(clipped[-1], end=part.end)
+                else:
+                    clipped.append(part)
+        self.pieces = clipped
+
+    # --- values ---------------------------------------------------------------------------------
+    def in_contact(self, radius: float) -> list[Piece]:
+        """The pieces that hold springs of a contact of radius ``radius``."""
+        return [p for p in self.pieces if p.start < radius] or self.pieces[:1]
+
+    def piece_value(self, p: Piece, xi: float) -> float:
+        """``Y(ξ)`` on piece ``p``."""
+        return p.x0 if p.constant else p.x0 + p.ratio * (self.attach.depth(xi) - p.d_ref)
+
+    def piece_values(self, p: Piece, xi: np.ndarray) -> np.ndarray:
+        """:meth:`piece_value` for an array of ``ξ``."""
+        return np.full(np.shape(xi), p.x0) if p.constant else p.x0 + p.ratio * (self.attach.depths(xi) - p.d_ref)
 
     def value(self, xi: float) -> float:
         """``Y(ξ)``; where ``Y`` jumps at a piece boundary, the value of the piece that starts there."""
@@ -80,90 +140,70 @@ class AnchorMap:
         for p in self.pieces:
             if p.start <= xi:
                 chosen = p
-        return self._value(chosen, min(max(xi, chosen.start), chosen.end))
+        return self.piece_value(chosen, min(max(xi, chosen.start), chosen.end))
 
-    def end_value(self, index: int, radius: float) -> float:
-        """``Y`` at the end of piece ``index`` (the last piece ends at ``radius``), from that piece."""
-        p = self.pieces[index]
-        return self._value(p, radius if index == len(self.pieces) - 1 else min(p.end, radius))
-
-    def integral(self, lower: float, upper: float) -> float:
-        """``∫_lower^upper Y(ξ) dξ``."""
-        total = 0.0
-        for i, p in enumerate(self.pieces):
-            end = p.end if i < len(self.pieces) - 1 else max(p.end, upper)
-            lo, hi = max(lower, p.start), min(upper, end)
-            if hi <= lo:
-                continue
-            total += p.x0 * (hi - lo)
-            if p.ratio != 0.0:
-                total += p.ratio * (self.attach.integral(hi) - self.attach.integral(lo) - p.d_ref * (hi - lo))
-        return total
-
-    def front(self, level: float, radius: float) -> float:
-        """Slip front ``c = sup{ξ ≤ a: Y(ξ) <= level}`` (0 if none, ``a`` if all); one point of :meth:`fronts`."""
-        return float(self.fronts(np.array([level]), np.array([radius]))[0])
-
-    def fronts(self, levels: np.ndarray, radii: np.ndarray) -> np.ndarray:
-        """Slip fronts ``c = sup{ξ ≤ a: Y(ξ) <= level}`` for arrays of levels and radii (vectorised over
-        points, looped over pieces)."""
-        levels = np.asarray(levels, dtype=float)
-        radii = np.asarray(radii, dtype=float)
-        fronts = radii.copy()  # a point no piece stops slides everywhere
-        done = ~(radii > 0)
-        fronts[done] = 0.0
-        last = len(self.pieces) - 1
-        for i, p in enumerate(self.pieces):
-            end = radii if i == last else np.minimum(p.end, radii)
-            stops_before = ~done & (self._value(p, p.start) > levels)
-            fronts[stops_before] = p.start
-            done |= stops_before
-            end_values = p.x0 + p.ratio * (self.attach.depths(end) - p.d_ref) if p.ratio else np.full_like(end, p.x0)
-            within = ~done & (end_values > levels)
-            if p.ratio and within.any():
-                xi = self.attach.radii(p.d_ref + (levels[within] - p.x0) / p.ratio)
-                fronts[within] = np.minimum(np.maximum(np.nan_to_num(xi, nan=p.start), p.start), end[within])
-            elif within.any():
-                fronts[within] = end[within]
-            done |= within | (end >= radii)
-        return fronts
-
-    def piece_of_front(self, level: float, radius: float, tolerance: float = 0.0) -> int:
-        """Index of the piece that holds the slip front at ``level``: among the pieces that start
-        within the contact (``start <= radius``: a growth piece about to start counts), the first
-        whose value at its end (or at the radius) exceeds the level by more than ``tolerance`` (a
-        front at a piece's end to rounding is in the next); the last of them if none does."""
-        chosen = 0
-        for i, p in enumerate(self.pieces):
-            if p.start > radius:
-                break
-            chosen = i
-            if self._value(p, min(p.end, radius)) > level + tolerance:
-                return i
-        return chosen
-
-    def front_in_piece(self, index: int, level: float) -> float:
-        """The slip front continued smoothly within the growth piece ``index`` (the inverse of its
-        ``Y``, unclipped); below the branch's fold there is no continuation and it holds the
+    def inverse(self, p: Piece, level: float) -> float:
+        """The ``ξ`` at which growth piece ``p`` takes the value ``level``, continued beyond the piece;
+        where the depth it needs lies below the branch's fold (far on the piece's start side), the
         piece's start."""
-        p = self.pieces[index]
         xi = self.attach.radius(p.d_ref + (level - p.x0) / p.ratio, self.rtol)
         return xi if xi == xi else p.start
 
-    def restick(self, front: float, anchor: float) -> None:
-        """Sliding springs in ``[0, front]`` stick again with the common anchor ``x − ū``."""
-        rest = [dataclasses.replace(p, start=max(p.start, front)) for p in self.pieces if p.end > front]
-        self.pieces = [Piece(0.0, front, anchor)] + rest
+    def inverses(self, p: Piece, levels: np.ndarray) -> np.ndarray:
+        """:meth:`inverse` for an array of levels."""
+        xi = self.attach.radii(p.d_ref + (np.asarray(levels, dtype=float) - p.x0) / p.ratio)
+        return np.where(np.isnan(xi), p.start, xi)
 
-    def restick_slip_zone(self, level: float, radius: float) -> None:
-        """The springs sliding at ``level = x − ū`` (``Y <= level``, the slip zone ``[0, c]``) stick again
-        with the anchor ``level``, where their shift is the cap."""
-        self.restick(self.front(level, radius) if radius > 0 else 0.0, level)
+    def integral(self, p: Piece, lower: float, upper: float) -> float:
+        """``∫ Y(ξ) dξ`` over ``[lower, upper]`` on piece ``p``."""
+        total = p.x0 * (upper - lower)
+        if not p.constant:
+            total += p.ratio * (self.attach.integral(upper) - self.attach.integral(lower) - p.d_ref * (upper - lower))
+        return total
+
+    # --- slip zones and force, exactly ----------------------------------------------------------
+    def zone_size(self, cap: Cap, level: float, radius: float) -> float:
+        """The size of ``cap``'s slip zone ``{ξ <= a: cap · Y(ξ) <= cap · level}`` (the springs whose
+        effective anchor is the level); one point of :meth:`zone_sizes`."""
+        return float(self.zone_sizes(cap, np.array([level]), np.array([radius]))[0])
+
+    def zone_sizes(self, cap: Cap, levels: np.ndarray, radii: np.ndarray) -> np.ndarray:
+        """:meth:`zone_size` for arrays of levels and radii (vectorised over points, looped over pieces)."""
+        levels = np.asarray(levels, dtype=float)
+        radii = np.asarray(radii, dtype=float)
+        total = np.zeros(np.broadcast(levels, radii).shape)
+        for p in self.pieces:
+            ends = np.minimum(p.end, radii)
+            length = np.maximum(ends - p.start, 0.0)
+            if p.constant:
+                total += np.where(cap * p.x0 <= cap * levels, length, 0.0)
+                continue
+            xi = self.inverses(p, levels)
+            part = xi - p.start if p.rises_towards(cap) else ends - xi
+            total += np.clip(part, 0.0, length)
+        return total
+
+    def clipped_integral(self, lower: float, upper: float, radius: float) -> float:
+        """``∫_0^a clip(Y(ξ), lower, upper) dξ``: the effective anchors' integral."""
+        total = 0.0
+        for p in self.in_contact(radius):
+            end = min(p.end, radius)
+            if end <= p.start:
+                continue
+            if p.constant:
+                total += (end - p.start) * min(max(p.x0, lower), upper)
+                continue
+            # the piece is monotone: it sits at one bound up to the first cut, at the other beyond the second
+            start_bound, end_bound = (lower, upper) if p.ratio > 0 else (upper, lower)
+            first = min(max(self.inverse(p, start_bound), p.start), end)
+            second = min(max(self.inverse(p, end_bound), p.start), end)
+            total += start_bound * (first - p.start) + self.integral(p, first, second) + end_bound * (end - second)
+        return total
 
     def tangential_force(self, K: float, G_star: float, x: float, a: float) -> float:
-        """``F_x = 2G* [c ū + ∫_c^a (x − Y) dξ]`` with ``ū = K a`` and the slip front ``c``: the
-        force of this map, without integration (0 out of contact)."""
-        if not a > 0:
+        """``F_x = 2G* ∫_0^a clip(x − Y, −ū, ū) dξ`` with ``ū = K a``: the force of this map with the
+        window at ``x``, without integration (0 out of contact)."""
+        if not a > 0 or not self.pieces:
             return 0.0
-        c = self.front(x - K * a, a)
-        return 2.0 * G_star * (c * K * a + x * (a - c) - self.integral(c, a))
+        return 2.0 * G_star * (x * a - self.clipped_integral(x - K * a, x + K * a, a))
+

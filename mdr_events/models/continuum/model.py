@@ -4,14 +4,15 @@ segments as linear motions."""
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import NamedTuple
+
+import numpy as np
 
 from mdr_events.theory import symbolic
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from .branch import Branch
 from .state import Regime
-from .tolerances import NEGLIGIBLE_SHARE, Tolerances
+from .tolerances import NEGLIGIBLE_SHARE, SEGMENT_RESOLUTION, Tolerances
 
 
 class ContinuumModel:
@@ -58,27 +59,23 @@ class Segment:
         return self.t0 + (depth - self.ds) / self.vd
 
 
-class Kinematics(NamedTuple):
-    """The path as segments, mirrored so that ``x`` does not decrease."""
+def kinematics(path: Path) -> list[Segment]:
+    """The path's straight segments, with their velocities (a component below NEGLIGIBLE_SHARE of the
+    speed is zero).
 
-    segments: list[Segment]
-    mirrored: bool
-
-
-def kinematics(path: Path) -> Kinematics:
-    """The path's segments; a path whose ``x`` never increases is mirrored (``x → −x``).
-
-    Raises ``ValueError`` for a path whose tangential motion reverses.
+    Raises ``ValueError`` naming the waypoints of a segment too short for the solver to separate its
+    corners: one lasting less than :data:`SEGMENT_RESOLUTION` of its end time (the event times'
+    rounding).
     """
-    steps = [b - a for a, b in zip(path.waypoints[:-1, 0], path.waypoints[1:, 0])]
-    if any(step > 0 for step in steps) and any(step < 0 for step in steps):
-        raise ValueError("the continuum method needs a path whose tangential motion does not reverse; "
-                         "allowed: x non-decreasing or non-increasing along the path (use method='discrete')")
-    mirrored = any(step < 0 for step in steps)
-    points = path.waypoints.copy()
-    if mirrored:
-        points[:, 0] = -points[:, 0]
+    points = path.waypoints
     times = path.corner_times
+    durations = np.diff(times)
+    unresolved = np.flatnonzero(durations <= SEGMENT_RESOLUTION * times[1:])
+    if unresolved.size:
+        i = int(unresolved[0])
+        raise ValueError(f"waypoints {i} {tuple(points[i].tolist())} and {i + 1} {tuple(points[i + 1].tolist())} are "
+                         f"{durations[i]:.3g} s apart at t = {times[i + 1]:.6g} s; allowed for the continuum method: "
+                         f"more than {SEGMENT_RESOLUTION:g} of the time (the solver cannot separate closer corners)")
     segments = []
     for i in range(len(points) - 1):
         dt = times[i + 1] - times[i]
@@ -86,4 +83,4 @@ def kinematics(path: Path) -> Kinematics:
         vx = 0.0 if abs(vx) < NEGLIGIBLE_SHARE * path.speed else vx
         vd = 0.0 if abs(vd) < NEGLIGIBLE_SHARE * path.speed else vd
         segments.append(Segment(times[i], times[i + 1], points[i, 0], points[i, 1], vx, vd))
-    return Kinematics(segments, mirrored)
+    return segments

@@ -21,7 +21,7 @@ from .tolerances import DEPTH_SHARE, RADIUS_DROP_SHARE
 class Action(enum.Enum):
     """What a plan does."""
 
-    TOUCH = "touch"        #: first contact at the plan's start; no span
+    TOUCH = "touch"        #: contact (first or again) at the plan's start; no span
     APPROACH = "approach"  #: out of contact until the plan's end (a span without force)
     CONTACT = "contact"    #: a span in contact, the force integrated
     COME_OFF = "come_off"  #: the held radius is inside the Δγ1 fold: the whole contact comes off at once
@@ -36,10 +36,10 @@ class SpanPlan(NamedTuple):
     t_end: float
     #: the regime's end event at ``t_end`` (``None``: the segment ends first)
     end_kind: EventKind | None
-    #: radius and force at the start (after a drop onto the Δγ1 branch; at first contact, the jump-in)
+    #: radius and force at the start (after a drop onto the Δγ1 branch; at contact, the jump-in)
     radius: float
     force: float
-    #: events at ``t_start`` before the span (first contact, detachment that starts at once)
+    #: events at ``t_start`` before the span (contact, detachment that starts at once)
     entry_events: tuple[EventKind, ...] = ()
     #: the springs attaching during a growing span (those jumping in at its start first)
     growth: tuple[Piece, ...] = ()
@@ -68,11 +68,14 @@ def _end_kind(t_end: float, segment: Segment, kind: EventKind) -> EventKind | No
 
 
 def _plan_out_of_contact(model: ContinuumModel, state: ContactState, segment: Segment) -> SpanPlan:
-    """First contact where the indenter reaches the surface going in; else approach until it does."""
+    """Contact where the indenter reaches the surface going in, or at once if the path starts inside (the
+    springs under the Δγ0 radius jump in); else approach until it reaches the surface."""
     t = state.t
-    if segment.vd > 0 and segment.d(t) >= -_depth_scale(model):
-        radius = model.grow.radius(max(segment.d(t), 0.0), model.tolerances.radius_rtol)
-        touch = (EventKind.FIRST_CONTACT,)
+    d = segment.d(t)
+    starts_inside = state.contacts == 0 and d > 0
+    if (segment.vd > 0 and d >= -_depth_scale(model)) or starts_inside:
+        radius = model.grow.radius(max(d, 0.0), model.tolerances.radius_rtol)
+        touch = (EventKind.FIRST_CONTACT if state.contacts == 0 else EventKind.RE_CONTACT,)
         if model.K == 0.0:  # τ0 = 0: no spring holds any shift, all slide from the start
             touch += (EventKind.SLIP_ONSET, EventKind.FULL_SLIP)
         return SpanPlan(Action.TOUCH, Regime.NONE, t, t, None, radius, 0.0, touch)

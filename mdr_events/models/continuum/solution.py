@@ -13,7 +13,7 @@ from mdr_events.theory import analytic
 from mdr_events.parameters import Parameters
 from .model import ContinuumModel
 from .span import Span, Variable
-from .state import CONTACT_ENDING, Event, Regime
+from .state import CONTACT_ENDING, Cap, Event, Regime
 
 
 @dataclass
@@ -28,8 +28,6 @@ class PathSolution:
         Consecutive spans, each with one radius regime and the interpolant of ``F_x``.
     events : list of Event
         The event log (times from first contact).
-    mirrored : bool
-        The path's ``x`` never increases: it was solved mirrored (``x → −x``), and is reported back.
     t_contact : float
         Time of first contact on the path (s); the solution's times count from it.
     end_time : float
@@ -39,7 +37,6 @@ class PathSolution:
     model: ContinuumModel
     spans: list[Span] = field(default_factory=list)
     events: list[Event] = field(default_factory=list)
-    mirrored: bool = False
     t_contact: float = 0.0
     end_time: float = 0.0
 
@@ -48,20 +45,21 @@ class PathSolution:
         return self.model.params
 
     @property
-    def sign(self) -> float:
-        """``-1`` for a mirrored path: tangential quantities are reported with this sign."""
-        return -1.0 if self.mirrored else 1.0
-
-    @property
     def ended_by_contact(self) -> bool:
         """The run ended because the contact came apart (not at the end of the path)."""
         return bool(self.events) and self.events[-1].kind in CONTACT_ENDING
 
     def span_index(self, times: np.ndarray) -> np.ndarray:
         """Index of the span that holds each time (s from first contact): the first span ending at or
-        after it (the last span for times beyond the run)."""
+        after it (the last span for times beyond the run), except that the instant a contact is made
+        belongs to the span after the approach."""
+        times = np.asarray(times, dtype=float)
         ends = np.array([span.t_end for span in self.spans]) - self.t_contact
-        return np.minimum(np.searchsorted(ends, np.asarray(times, dtype=float), side="left"), len(self.spans) - 1)
+        index = np.minimum(np.searchsorted(ends, times, side="left"), len(self.spans) - 1)
+        # at the instant of a (re-)contact the contact is made: the span after an approach holds it
+        approach = np.array([span.regime is Regime.NONE for span in self.spans])
+        at_contact = approach[index] & (index < len(self.spans) - 1) & (times == ends[index])
+        return np.where(at_contact, index + 1, index)
 
 
 #: Quantities :func:`evaluate` fills, in its output order.
@@ -78,7 +76,7 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray) -> dict
     span = solution.spans[index]
     t = solution.t_contact + np.asarray(times, dtype=float)
     d, x = span.segment.d(t), span.segment.x(t)
-    out = {"indentation_depth": d, "tangential_displacement": solution.sign * x}
+    out = {"indentation_depth": d, "tangential_displacement": x}
     if span.regime is Regime.NONE:
         zero = np.zeros(t.shape)
         out.update(normal_force=zero, tangential_force=zero, contact_radius=zero,
@@ -96,9 +94,10 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray) -> dict
         force = np.full(t.shape, span.force)
     else:
         force = span.interpolant(a if span.variable is Variable.RADIUS else t)[0]
-    out["tangential_force"] = solution.sign * force
+    out["tangential_force"] = force
+    sliding = sum(span.anchors.zone_sizes(cap, x - cap * model.K * a, a) for cap in Cap)
     with np.errstate(invalid="ignore", divide="ignore"):
-        out["sliding_fraction"] = np.where(a > 0, span.anchors.fronts(x - model.K * a, a) / a, np.nan)
+        out["sliding_fraction"] = np.where(a > 0, np.minimum(sliding / a, 1.0), np.nan)
     return out
 
 
@@ -118,7 +117,7 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
         last = solution.spans[-1].segment
         t = solution.t_contact + times[first]
         out["indentation_depth"][first] = last.d(t)
-        out["tangential_displacement"][first] = solution.sign * last.x(t)
+        out["tangential_displacement"][first] = last.x(t)
         for name in ("normal_force", "tangential_force", "contact_radius"):
             out[name][first] = 0.0
     for index in range(len(solution.spans)):
@@ -195,7 +194,7 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True) -> tup
 
 
 def algebraic_tangential_force(solution: PathSolution, times: np.ndarray) -> np.ndarray:
-    """``F_x = 2G* [c ū + ∫_c^a (x − Y) dξ]`` from each span's anchor map, without integration.
+    """``F_x = 2G* ∫_0^a clip(x − Y, −ū, ū) dξ`` from each span's stored anchors, without integration.
 
     The independent check of :func:`evaluate`'s integrated ``F_x`` (same time convention, s from
     first contact; ``nan`` after the end of the run).
@@ -213,6 +212,60 @@ def algebraic_tangential_force(solution: PathSolution, times: np.ndarray) -> np.
         if span.regime is Regime.NONE or not a > 0:
             out[i] = 0.0
             continue
-        x = solution.sign * filled["tangential_displacement"][i]
-        out[i] = solution.sign * span.anchors.tangential_force(model.K, solution.params.G_star, x, a)
+        x = filled["tangential_displacement"][i]
+        out[i] = span.anchors.tangential_force(model.K, solution.params.G_star, x, a)
     return out
+
+
+#: Gauss–Legendre nodes per step of a span's dense output in :func:`tangential_work`: exact for the
+#: polynomial pieces of DOP853's interpolant (degree 7) times a linear ``dx/dt``.
+WORK_NODES = 8
+
+
+def tangential_work(solution: PathSolution, start: float | None = None, end: float | None = None) -> float:
+    """The work of the tangential force on the indenter's tangential motion, ``W = ∫ F_x dx`` (J), over
+    ``[start, end]`` (s from first contact; default the whole run).
+
+    Over a closed tangential cycle at a fixed contact (a fretting loop) it is the energy dissipated by the
+    springs sliding at the caps, ``4 π a² τ0 (X − ū)`` for a loop ``x: −X → X`` with ``X > ū`` (the area of
+    the parallelogram). Evaluated from each span's interpolant, step by step, with
+    :data:`WORK_NODES`-point Gauss–Legendre quadrature: in time on pinned spans (``dx = v_x dt``), in the
+    radius on moving ones (``dx = v_x (∂d/∂a)/v_d da``).
+    """
+    lower = 0.0 if start is None else float(start)
+    upper = solution.end_time if end is None else min(float(end), solution.end_time)
+    nodes, weights = np.polynomial.legendre.leggauss(WORK_NODES)
+    total = 0.0
+    for span in solution.spans:
+        t0 = max(span.t_start - solution.t_contact, lower)
+        t1 = min(span.t_end - solution.t_contact, upper)
+        if t1 <= t0 or span.regime is Regime.NONE or span.segment.vx == 0.0:
+            continue
+        segment = span.segment
+        if span.interpolant is None:
+            total += span.force * segment.vx * (t1 - t0)
+            continue
+        t_path = (solution.t_contact + t0, solution.t_contact + t1)
+        if span.variable is Variable.TIME:
+            bounds = t_path
+        else:
+            rtol = solution.model.tolerances.radius_rtol
+            bounds = tuple(solution.model.branch(span.regime).radius(segment.d(t), rtol) for t in t_path)
+        low, high = min(bounds), max(bounds)
+        sign = 1.0 if bounds[1] >= bounds[0] else -1.0
+        breaks = np.asarray(span.interpolant.ts)
+        edges = np.unique(np.concatenate([[low, high], breaks[(breaks > low) & (breaks < high)]]))
+        for a, b in zip(edges[:-1], edges[1:]):
+            var = 0.5 * (a + b) + 0.5 * (b - a) * nodes
+            rate = _tangential_rate(solution.model, span, var)
+            total += sign * 0.5 * (b - a) * float(np.sum(weights * span.interpolant(var)[0] * rate))
+    return total
+
+
+def _tangential_rate(model: ContinuumModel, span: Span, var: np.ndarray) -> np.ndarray:
+    """``dx/d(var)`` of a span: ``v_x`` in time, ``v_x (∂d/∂a)/v_d`` in the radius."""
+    segment = span.segment
+    if span.variable is Variable.TIME:
+        return np.full(np.shape(var), segment.vx)
+    branch = model.branch(span.regime)
+    return segment.vx * np.array([branch.slope(float(v)) for v in var]) / segment.vd

@@ -18,18 +18,26 @@ from .anchors import AnchorMap, Piece
 from .model import ContinuumModel, Segment, kinematics
 from .plan import Action, SpanPlan, plan_span
 from .solution import PathSolution, evaluate
-from .span import Span, SpanOutcome, integrate_span
-from .state import CONTACT_ENDING, ContactState, Event, EventKind, Regime, Slip, next_slip
+from .span import Span, SpanOutcome, Trigger, integrate_span
+from .state import CONTACT_ENDING, NO_ZONE, Cap, ContactState, Event, EventKind, Regime, Slip, zone_events
 from .tolerances import MAX_RESTARTS, Tolerances
+from .zones import lay_out_zones
 
 
 def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Tolerances()) -> PathSolution:
     """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`)."""
     model = ContinuumModel(params, tolerances)
-    segments, mirrored = kinematics(path)
-    solution = PathSolution(model, mirrored=mirrored, t_contact=path.first_contact_time())
+    segments = kinematics(path)
+    solution = PathSolution(model, t_contact=path.first_contact_time())
     state = ContactState(t=solution.t_contact, anchors=AnchorMap(model.grow, tolerances.radius_rtol))
+    entries = path.entry_times()
+    heading = 0.0  # the sign of the last tangential motion
     for index, segment in enumerate(segments):
+        if segment.vx != 0.0:
+            if heading and math.copysign(1.0, segment.vx) != heading and state.running \
+                    and segment.t0 >= solution.t_contact:
+                log(solution, segment, (EventKind.TANGENTIAL_REVERSAL, segment.t0, state.radius, int(-heading)))
+            heading = math.copysign(1.0, segment.vx)
         state.t = max(segment.t0, solution.t_contact)
         if not state.running or state.t >= segment.t1:
             continue
@@ -37,12 +45,14 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
         while state.running and state.t < segment.t1:
             guard.check(state)
             plan = plan_span(model, state, segment)
-            for kind, t, radius in advance(model, state, plan, segment, solution):
-                log(solution, segment, kind, t, radius)
+            for logged in advance(model, state, plan, segment, solution):
+                log(solution, segment, logged)
+            if not state.in_contact and state.running:
+                state.running = bool(np.any(entries >= state.t))  # the path enters again: the run goes on
         if state.running and index < len(segments) - 1:
-            log(solution, segment, EventKind.CORNER, segment.t1, state.radius)
+            log(solution, segment, (EventKind.CORNER, segment.t1, state.radius, 0))
     if state.running:
-        log(solution, segments[-1], EventKind.PATH_END, segments[-1].t1, state.radius)
+        log(solution, segments[-1], (EventKind.PATH_END, segments[-1].t1, state.radius, 0))
     solution.end_time = (solution.spans[-1].t_end if solution.spans else solution.t_contact) - solution.t_contact
     return solution
 
@@ -56,42 +66,46 @@ class RestartGuard:
     def check(self, state: ContactState) -> None:
         self.stalled = self.stalled + 1 if state.t <= self.last else 0
         if self.stalled > MAX_RESTARTS:
+            zones = ", ".join(f"{cap.name.lower()} cap {state.zones[cap].slip.value}" for cap in Cap)
+            fired = ", ".join(sorted(f"{trigger.value}" + (f" ({cap.name.lower()} cap)" if cap else "")
+                                     for trigger, cap in state.last_fired)) or "none"
             raise RuntimeError(f"the continuum method made no progress at t = {state.t!r} s after {MAX_RESTARTS} "
-                               f"event restarts (slip state {state.slip.value}); please report the parameters and path")
+                               f"event restarts (radius {state.radius!r} m, {zones}; last event: {fired}); please "
+                               "report the parameters and path")
         self.last = state.t
 
 
-def log(solution: PathSolution, segment: Segment, kind: EventKind, t: float, radius: float) -> None:
-    """Append an event at path time ``t`` (logged from first contact, ``x`` in the path's own sign)."""
-    solution.events.append(Event(t - solution.t_contact, kind, segment.d(t), radius, solution.sign * segment.x(t)))
+#: What :func:`advance` reports: events to log as ``(kind, path time, radius, direction)``.
+Logged = tuple[EventKind, float, float, int]
 
 
-#: What :func:`advance` reports: events to log as ``(kind, path time, radius)``.
-Logged = list[tuple[EventKind, float, float]]
+def log(solution: PathSolution, segment: Segment, logged: Logged) -> None:
+    """Append an event at path time ``t`` (logged from first contact)."""
+    kind, t, radius, direction = logged
+    solution.events.append(Event(t - solution.t_contact, kind, segment.d(t), radius, segment.x(t), direction))
 
 
 def advance(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment: Segment,
-            solution: PathSolution) -> Logged:
+            solution: PathSolution) -> list[Logged]:
     """Carry out ``plan``: the transition at its start, the span (appended to ``solution``), and the
     transition at its end."""
     if plan.action is Action.TOUCH:
-        return touch(model, state, plan, segment)
+        return touch(state, plan, segment)
     if plan.action is Action.APPROACH:
         solution.spans.append(Span(plan.t_start, plan.t_end, segment, Regime.NONE))
         state.t = plan.t_end
         return []
     if plan.action is Action.COME_OFF:
         solution.spans.append(Span(plan.t_start, plan.t_start, segment, Regime.PINNED, pinned_radius=plan.radius,
-                                   force=plan.force))
-        logged = [(EventKind.PULL_OFF, plan.t_start, plan.radius)]
+                                   force=plan.force, anchors=state.anchors.copy()))
         end_contact(state)
-        return logged
+        return [(EventKind.PULL_OFF, plan.t_start, plan.radius, 0)]
     logged = enter(model, state, plan, segment)
     span = Span(plan.t_start, plan.t_end, segment, plan.regime, pinned_radius=plan.radius)
-    outcome = integrate_span(model, state.anchors, span, state.slip, plan.force)
+    outcome = integrate_span(model, state.anchors, span, state.sliding, plan.force)
     span.t_end = outcome.t_stop
     solution.spans.append(span)
-    radius = radius_at(model, span, outcome.t_stop)
+    radius = outcome.radius
     if span.regime is Regime.GROWING:
         state.anchors.close(radius)
     span.anchors = state.anchors.copy()
@@ -100,59 +114,76 @@ def advance(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment:
     return logged + regime_ends(model, state, plan, outcome, radius)
 
 
-def touch(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment: Segment) -> Logged:
-    """First contact: the springs under the jump-in radius attach at the indenter's position."""
+def touch(state: ContactState, plan: SpanPlan, segment: Segment) -> list[Logged]:
+    """Contact (first or again): the springs under the jump-in radius attach at the indenter's position,
+    every one sticking (τ0 = 0: the plan also logs onset and full slip, and the force stays 0)."""
     state.anchors.reset()
     state.anchors.extend(0.0, Piece(0.0, plan.radius, segment.x(plan.t_start)))
     state.in_contact, state.radius, state.force, state.detaching = True, plan.radius, 0.0, False
-    # τ0 = 0 (the plan then also logs onset and full slip): every spring slides from the start
-    state.slip = Slip.FULL if EventKind.FULL_SLIP in plan.entry_events else Slip.STICK
-    return [(kind, plan.t_start, plan.radius) for kind in plan.entry_events]
+    state.forget_slip()
+    state.contacts += 1
+    return [(kind, plan.t_start, plan.radius, 0) for kind in plan.entry_events]
 
 
-def enter(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment: Segment) -> Logged:
+def enter(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment: Segment) -> list[Logged]:
     """The start of a span in contact: new springs stick (growth; springs may jump in), detachment may
-    start at once, the radius may drop onto the Δγ1 branch."""
-    logged = [(kind, plan.t_start, state.radius) for kind in plan.entry_events]
+    start at once, the radius may drop onto the Δγ1 branch (the springs beyond it are forgotten)."""
+    logged = [(kind, plan.t_start, state.radius, 0) for kind in plan.entry_events]
     if plan.regime is Regime.GROWING:
-        if plan.jumped_from is not None and state.slip is not Slip.STICK:
-            # the cap jumps up with the radius: the springs sliding at ū(a_before) now carry less than the
-            # cap and stick again, anchored where their shift is ū(a_before)
+        if plan.jumped_from is not None and any(state.sliding.values()):
+            # the cap jumps up with the radius: the springs at the caps ū(a_before) now carry less than the cap
+            # and stick again where they are (the old window materialised)
             before = plan.jumped_from
-            level = segment.x(plan.t_start) - model.K * before
-            if state.slip is Slip.FULL:
-                state.anchors.restick(before, level)
-            else:
-                state.anchors.restick_slip_zone(level, before)
-            state.slip = Slip.STICK
-        if state.slip is Slip.FULL:
-            state.slip = Slip.PARTIAL  # the springs attaching now stick
+            x = segment.x(plan.t_start)
+            state.anchors.clip(x - model.K * before, x + model.K * before, before)
+            for cap in Cap:
+                logged += [(kind, plan.t_start, before, int(cap)) for kind in zone_events(state.zones[cap], NO_ZONE,
+                                                                                          restuck=True)]
+            state.forget_slip()
         for piece in plan.growth:
             state.anchors.extend(piece.start, piece)
+    else:
+        state.anchors.truncate(plan.radius)
     state.detaching = plan.regime is Regime.SHRINKING
     state.radius, state.force = plan.radius, plan.force
     return logged
 
 
 def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOutcome, radius: float,
-                    x: float) -> Logged:
-    """Slip events stopped the span (at radius ``radius``, indenter at ``x``): the next slip state (the
-    table of :mod:`.state`) and its effects."""
-    fired = outcome.fired - {EventKind.FRONT_CROSSES_PIECE}  # internal: a restart, nothing to log
-    state.slip = next_slip(state.slip, fired)
-    state.force = outcome.force
-    if EventKind.FULL_SLIP in fired:
-        # every spring sits at the cap: F_x = 2G* ū a = τ0 π a² exactly; taking it from here drops what the
-        # integration accumulated before (long, shallow paths)
-        state.force = 2.0 * model.params.G_star * model.K * radius**2
-    if EventKind.RE_STICK in fired:
-        state.anchors.restick_slip_zone(x - model.K * radius, radius)
-    state.radius, state.t = radius, outcome.t_stop
-    return [(kind, outcome.t_stop, radius) for kind in EventKind if kind in fired]
+                    x: float) -> list[Logged]:
+    """Events stopped the span (at radius ``radius``, indenter at ``x``): each cap's slip zone laid out
+    anew, what changed logged (the table of :mod:`.state`), and a level that turned back re-sticks its
+    springs (the window materialised in the anchors)."""
+    state.force, state.radius, state.t = outcome.force, radius, outcome.t_stop
+    state.last_fired = outcome.fired
+    state.anchors.truncate(radius)
+    fired = {cap: {trigger for trigger, which in outcome.fired if which is cap} for cap in Cap}
+    for cap in Cap:
+        if Trigger.ZONE_REACHES in fired[cap]:
+            state.sliding[cap] = True
+    layouts = lay_out_zones(state.anchors, model.K, x, radius, state.sliding, model.params.d_max)
+    logged: list[Logged] = []
+    turned = [cap for cap in Cap if Trigger.LEVEL_TURNS in fired[cap]]
+    if turned:
+        state.anchors.clip(x - model.K * radius, x + model.K * radius, radius)
+    for cap in Cap:
+        before, after = state.zones[cap], layouts[cap].summary(radius)
+        events = zone_events(before, after)
+        if after.slip is Slip.FULL and before.slip is not Slip.FULL:
+            # every spring at the cap: F_x = ±2G* ū a = ±τ0 π a² exactly; taking it from here drops what the
+            # integration accumulated before (long, shallow paths)
+            state.force = cap * 2.0 * model.params.G_star * model.K * radius**2
+        if cap in turned:
+            events += zone_events(after, NO_ZONE, restuck=True)
+            after = NO_ZONE
+        state.sliding[cap] = after.slip is not Slip.STICK
+        state.zones[cap] = after
+        logged += [(kind, outcome.t_stop, radius, int(cap)) for kind in events]
+    return logged
 
 
 def regime_ends(model: ContinuumModel, state: ContactState, plan: SpanPlan, outcome: SpanOutcome,
-                radius: float) -> Logged:
+                radius: float) -> list[Logged]:
     """The span ran to its planned end: the segment's end, or the regime's end event."""
     state.force = outcome.force
     if np.isfinite(radius):
@@ -162,7 +193,7 @@ def regime_ends(model: ContinuumModel, state: ContactState, plan: SpanPlan, outc
     state.t = plan.t_end
     if plan.end_kind is None:
         return []
-    logged = [(plan.end_kind, plan.t_end, state.radius)]
+    logged = [(plan.end_kind, plan.t_end, state.radius, 0)]
     if plan.end_kind is EventKind.DETACHMENT_STARTS:
         state.detaching = True
     if plan.end_kind in CONTACT_ENDING:
@@ -171,15 +202,10 @@ def regime_ends(model: ContinuumModel, state: ContactState, plan: SpanPlan, outc
 
 
 def end_contact(state: ContactState) -> None:
-    """The contact has come apart: the run ends."""
-    state.in_contact, state.running, state.radius, state.force = False, False, 0.0, 0.0
-
-
-def radius_at(model: ContinuumModel, span: Span, t: float) -> float:
-    """The contact radius of ``span`` at path time ``t``."""
-    if span.regime in (Regime.GROWING, Regime.SHRINKING):
-        return model.branch(span.regime).radius(span.segment.d(t), model.tolerances.radius_rtol)
-    return span.pinned_radius
+    """The contact has come apart: every spring forgets its state (the loop decides whether the run goes on)."""
+    state.in_contact, state.radius, state.force = False, 0.0, 0.0
+    state.anchors.reset()
+    state.forget_slip()
 
 
 def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | None = None,

@@ -1,20 +1,23 @@
-"""Integrate the tangential force over one span, up to the first slip event.
+"""Integrate the tangential force over one span, up to the first event.
 
 The force obeys
 
-    dF_x/dt = 2G* [ c dū/dt + (a − c) dx/dt + (da/dt) u(a) ],
+    dF_x/dt = 2G* [ (n₊ − n₋) dū/dt + (a − n₊ − n₋) dx/dt + (da/dt) u(a) ],
 
-(the slip zone follows the cap, the stick zone follows the indenter, springs leave at the edge
-with their shift), integrated by :func:`scipy.integrate.solve_ivp` (DOP853, dense output). A pinned
-span is integrated in time; a growing or shrinking one in the contact radius ``a``
-(``dF/da = (dF/dt)/(da/dt)``), which is regular where ``da/dt`` is not: at the first contact of a
-non-adhesive indenter and at the pull-off fold ``∂d/∂a = 0``.
+with ``n₊``, ``n₋`` the sizes of the slip zones at the caps ``u = +ū`` and ``u = −ū`` (their springs
+follow the cap, the sticking ones the indenter; springs leave at the edge with their shift ``u(a)``),
+integrated by :func:`scipy.integrate.solve_ivp` (DOP853, dense output). A pinned span is integrated
+in time; a growing or shrinking one in the contact radius ``a`` (``dF/da = (dF/dt)/(da/dt)``), which
+is regular where ``da/dt`` is not: at the first contact of a non-adhesive indenter and at the
+pull-off fold ``∂d/∂a = 0``.
 
-The right-hand side keeps the slip state the span started in (all sticking, a slip zone ``[0, c]``
-held in one piece of the anchor map, or full slip) and is continued smoothly past the span's
+The right-hand side keeps each cap's slip zone as laid out at the span's start
+(:class:`~mdr_events.models.continuum.zones.ZoneLayout`) and is continued smoothly past the span's
 terminal events, as hybrid-system integration requires: the solver locates a switch by root-finding
-instead of shrinking its steps against a kink. A slip event already met at the start (e.g. at a
-path corner) fires at once, with zero length.
+instead of shrinking its steps against a kink. The events (:class:`Trigger`): a cap's level reaching
+its layout's target (a zone opens, grows into a new piece, or covers the contact), the shrinking
+edge passing a front or a piece boundary, and a sliding cap's level turning back (re-stick). An event
+already met at the start (e.g. at a path corner) fires at once, with zero length.
 """
 
 from __future__ import annotations
@@ -28,8 +31,9 @@ from scipy.integrate import solve_ivp
 
 from .anchors import AnchorMap
 from .model import ContinuumModel, Segment
-from .state import EventKind, Regime, Slip
+from .state import Cap, Regime, Slip
 from .tolerances import EPS, LEVEL_ULPS, PIECE_SHARE, SIMULTANEOUS_SHARE
+from .zones import EDGE_LEAVING_TOLERANCES, lay_out_zones, length_scale
 
 
 class Variable(enum.Enum):
@@ -58,12 +62,28 @@ class Span:
     variable: Variable = Variable.TIME
 
 
-class SpanOutcome(NamedTuple):
-    """How a span ended: the slip events that stopped it (none: it ran to its planned end)."""
+class Trigger(enum.Enum):
+    """What an event function of a span watches (the transitions of ``solve`` turn them into logged events)."""
 
-    fired: frozenset[EventKind]
+    ZONE_REACHES = "zone_reaches"            #: a cap's level reaches its layout's target (a zone opens or grows on)
+    ZONE_LEAVES_EDGE = "zone_leaves_edge"    #: the shrinking edge passes a front whose zone lies at the edge
+    LEVEL_TURNS = "level_turns"              #: a sliding cap's level turns back: its springs stick again
+    EDGE_PASSES_PIECE = "edge_passes_piece"  #: the shrinking edge passes the start of its piece
+
+
+#: A fired event: its trigger and the cap it concerns (``None`` for the edge passing a piece).
+Fired = tuple[Trigger, Cap | None]
+
+
+class SpanOutcome(NamedTuple):
+    """How a span ended: the events that stopped it (none: it ran to its planned end)."""
+
+    fired: frozenset[Fired]
     t_stop: float
     force: float
+    #: the contact radius at ``t_stop`` (a moving radius: the integration variable itself, not recomputed
+    #: from the time, so that the next span starts exactly where the event's root was found)
+    radius: float
 
 
 class EventFunction:
@@ -71,81 +91,63 @@ class EventFunction:
 
     terminal = True
 
-    def __init__(self, kind: EventKind, function: Callable[[float, object], float], direction: float):
-        self.kind = kind
+    def __init__(self, trigger: Trigger, cap: Cap | None, function: Callable[[float], float], direction: float):
+        self.trigger, self.cap = trigger, cap
         self.function = function
         self.direction = direction
 
-    def __call__(self, var: float, y) -> float:
-        return self.function(var, y)
+    @property
+    def key(self) -> Fired:
+        return (self.trigger, self.cap)
+
+    def __call__(self, var: float, y=None) -> float:
+        return self.function(var)
 
 
 class SpanIntegrator:
-    """The right-hand side and the slip event functions of one span (see the module docstring).
+    """The right-hand side and the event functions of one span (see the module docstring).
 
     Parameters
     ----------
     model : ContinuumModel
     anchors : AnchorMap
-        The anchor map of the springs in contact (read, not changed).
+        The stored anchors of the springs in contact (read, not changed).
     span : Span
         The span to integrate, with its regime and (pinned) radius.
-    slip : Slip
-        The slip state the span starts in; the right-hand side keeps it.
+    sliding : dict of Cap to bool
+        Whether springs slide at each cap at the start.
     """
 
-    def __init__(self, model: ContinuumModel, anchors: AnchorMap, span: Span, slip: Slip):
-        self.model, self.anchors, self.span, self.slip = model, anchors, span, slip
+    def __init__(self, model: ContinuumModel, anchors: AnchorMap, span: Span, sliding: dict[Cap, bool]):
+        self.model, self.anchors, self.span = model, anchors, span
         self.segment = span.segment
         self.K = model.K
         self.G2 = 2.0 * model.params.G_star
         self.moving = span.regime in (Regime.GROWING, Regime.SHRINKING)
+        self.shrinking = span.regime is Regime.SHRINKING
         self.branch = model.branch(span.regime)
         t0, t1 = span.t_start, span.t_end
         if self.moving:
             rtol = model.tolerances.radius_rtol
             self.start = self.branch.radius(self.segment.d(t0), rtol)
-            at_fold = span.regime is Regime.SHRINKING and t1 == self.segment.time_at_depth(self.branch.jump_off_depth)
+            at_fold = self.shrinking and t1 == self.segment.time_at_depth(self.branch.jump_off_depth)
             self.stop = self.branch.jump_off_radius if at_fold else self.branch.radius(self.segment.d(t1), rtol)
         else:
             self.start, self.stop = t0, t1
         self.a0 = self.start if self.moving else span.pinned_radius
         self.x0 = self.segment.x(t0)
-        y0 = anchors.value(0.0)
-        self.onset0 = self.x0 - y0 - self.K * self.a0
-        self.full0 = self.x0 - anchors.value(self.a0) - self.K * self.a0
-        # The rising slip events cross a level a hair above zero: LEVEL_ULPS ulp of the lengths
-        # involved, just above the rounding of x − Y − ū (an event moves by about 1e-12 s at the
-        # paper's speed). A slip function that starts at zero to rounding and first falls (the
-        # centre of a Hertz contact at a = 0, the level right after a re-stick) is then not taken for
-        # a root at the start; one that starts above it has crossed already and fires at once.
-        self.level = LEVEL_ULPS * EPS * max(self.K * self.a0, abs(self.x0), abs(y0), model.params.d_max)
-        self.piece = self.next_value = None
-        self.waiting = self.crossing_inside = False
-        if slip is Slip.PARTIAL:
-            self._hold_front_piece()
-
-    def _hold_front_piece(self) -> None:
-        """The piece that holds the slip front at the start, and the level at which it leaves it.
-
-        A front within PIECE_SHARE of the length scale of a piece's end (e.g. where the last event's
-        root was found, a few ulp of the radius away) is in the next piece. The front waits at the
-        piece's start while the piece starts above the level (``Y`` jumps up there, or the piece is
-        constant: its springs all start sliding together); otherwise it moves inside the piece.
-        Either way an internal event restarts the span when the level reaches the value that ends
-        this (the piece's start value, or its end value).
-        """
-        level = self.x0 - self.K * self.a0
-        scale = PIECE_SHARE * max(self.K * self.a0, abs(self.x0), self.model.params.d_max)
-        self.piece = self.anchors.piece_of_front(level, self.a0, scale)
-        current = self.anchors.pieces[self.piece]
-        start_value = self.anchors.value(current.start)
-        self.waiting = current.ratio == 0.0 or start_value > level + scale
-        self.next_value = start_value if self.waiting else self.anchors.end_value(self.piece, self.a0)
-        # the front can cross into a later piece: one inside the contact, or the growth piece starting
-        # at the radius (after a corner, the piece of the front ends exactly there)
-        followed = self.piece < len(self.anchors.pieces) - 1 and current.end <= self.a0
-        self.crossing_inside = self.waiting or current.end < self.a0 or followed
+        scale = length_scale(anchors, self.K, self.x0, self.a0, model.params.d_max)
+        # Rising events cross a level a hair beyond zero: LEVEL_ULPS ulp of the lengths involved, just
+        # above the rounding of x − Y ∓ ū (an event moves by about 1e-12 s at the paper's speed). A
+        # function that starts at zero to rounding and first falls (the centre of a Hertz contact at
+        # a = 0, the level right after a re-stick) is then not taken for a root at the start; one that
+        # starts beyond it has crossed already and fires at once.
+        self.offset = LEVEL_ULPS * EPS * scale
+        self.edge_margin = EDGE_LEAVING_TOLERANCES * PIECE_SHARE * scale
+        self.zones = lay_out_zones(anchors, self.K, self.x0, self.a0, sliding, model.params.d_max)
+        self.positive, self.negative = self.zones[Cap.POSITIVE], self.zones[Cap.NEGATIVE]
+        self.sliding = dict(sliding)
+        self.edge_start = anchors.pieces[-1].start if anchors.pieces else 0.0
 
     # --- the state along the span ------------------------------------------------------------
     def time_of(self, var: float) -> float:
@@ -154,98 +156,115 @@ class SpanIntegrator:
     def radius_of(self, var: float) -> float:
         return var if self.moving else self.span.pinned_radius
 
-    def slip_zone(self, x: float, a: float) -> float:
-        """The slip front ``c`` of the span's slip state (continued smoothly within its piece)."""
-        if self.slip is Slip.STICK:
-            return 0.0
-        if self.slip is Slip.FULL:
-            return a
-        if self.waiting:
-            return self.anchors.pieces[self.piece].start
-        return self.anchors.front_in_piece(self.piece, x - self.K * a)
+    def level(self, cap: Cap | float, var: float) -> float:
+        """``x − cap · ū(a)``: where the anchors of the springs at ``cap`` sit."""
+        return self.segment.x(self.time_of(var)) - cap * self.K * self.radius_of(var)
+
+    def rate(self, cap: Cap | float, var: float) -> float:
+        """A quantity with the sign of ``cap · d(level)/dt``: positive while the level pushes the springs
+        at the cap (moving radius: ``cap · v_x · ∂d/∂a − K v_d``, the rate times ``∂d/∂a > 0``)."""
+        if not self.moving:
+            return cap * self.segment.vx
+        return cap * self.segment.vx * self.branch.slope(var) - self.K * self.segment.vd
 
     # --- the right-hand side ---------------------------------------------------------------
     def rhs(self, var: float, y) -> list[float]:
         """``dF_x/da`` (moving radius) or ``dF_x/dt`` (pinned)."""
         segment, K = self.segment, self.K
+        a = self.radius_of(var)
+        x = segment.x(self.time_of(var))
+        positive = self.positive.size(x - K * a, a)
+        negative = self.negative.size(x + K * a, a)
+        sticking = a - positive - negative
         if not self.moving:
-            a = self.span.pinned_radius
-            return [self.G2 * (a - self.slip_zone(segment.x(var), a)) * segment.vx]
-        a = var
-        x = segment.x(self.time_of(a))
-        c = self.slip_zone(x, a)
-        total = c * K + (a - c) * segment.vx * self.branch.slope(a) / segment.vd
-        if self.span.regime is Regime.SHRINKING:  # springs leave the edge with their shift
-            total += K * a if self.slip is Slip.FULL else x - self.anchors.value(a)
+            return [self.G2 * sticking * segment.vx]
+        total = (positive - negative) * K + sticking * segment.vx * self.branch.slope(a) / segment.vd
+        if self.shrinking:  # springs leave the edge with their shift
+            total += self.edge_shift(x, a)
         return [self.G2 * total]
 
+    def edge_shift(self, x: float, a: float) -> float:
+        """The shift of the spring at the edge: ``±ū`` at a cap, else ``x − Y(a)``."""
+        for cap in Cap:
+            if self.zones[cap].edge_in_zone:
+                return cap * self.K * a
+        return x - self.anchors.piece_value(self.anchors.pieces[-1], a)
+
     # --- the event functions -----------------------------------------------------------------
-    def onset(self, var: float, y) -> float:
-        """``x − Y(0) − ū`` (above the level): the centre spring reaches the cap."""
-        return self.segment.x(self.time_of(var)) - self.anchors.value(0.0) - self.K * self.radius_of(var) - self.level
+    def reaches(self, cap: Cap) -> Callable[[float], float]:
+        zone, sign = self.zones[cap], float(cap)
+        return lambda var: sign * self.level(sign, var) - zone.target(self.radius_of(var)) - self.offset
 
-    def full(self, var: float, y) -> float:
-        """``x − Y(a) − ū`` (above the level): the edge spring reaches the cap."""
-        a = self.radius_of(var)
-        return self.segment.x(self.time_of(var)) - self.anchors.value(a) - self.K * a - self.level
+    def leaves_edge(self, cap: Cap) -> Callable[[float], float]:
+        zone, sign = self.zones[cap], float(cap)
+        return lambda var: zone.edge_value(var) - sign * self.level(sign, var) - self.edge_margin
 
-    def restick_rate(self, var: float, y) -> float:
-        """``dx/dt − dū/dt`` of a growing radius: below zero the cap outgrows the indenter."""
-        slope = self.branch.slope(var)
-        return self.segment.vx - self.K * self.segment.vd / slope if slope > 0 else -math.inf
+    def turns(self, cap: Cap) -> Callable[[float], float]:
+        sign = float(cap)
+        return lambda var: self.rate(sign, var)
 
-    def front_crosses(self, var: float, y) -> float:
-        """The slip front starts into its piece, or leaves it."""
-        return self.segment.x(self.time_of(var)) - self.K * self.radius_of(var) - self.next_value - self.level
+    def passes_piece(self, var: float) -> float:
+        return var - self.edge_start + self.offset
 
     def event_functions(self) -> list[EventFunction]:
-        """The events that can end the span from its slip state."""
+        """The events that can end the span."""
         events = []
-        if self.slip is Slip.STICK:
-            events.append(EventFunction(EventKind.SLIP_ONSET, self.onset, 1.0))
-        if self.slip is not Slip.FULL:
-            events.append(EventFunction(EventKind.FULL_SLIP, self.full, 1.0))
-        if self.slip is Slip.PARTIAL and self.span.regime is Regime.GROWING and self.restick_rate(self.start, None) > 0:
-            events.append(EventFunction(EventKind.RE_STICK, self.restick_rate, -1.0))
-        if self.slip is Slip.PARTIAL and self.crossing_inside:
-            events.append(EventFunction(EventKind.FRONT_CROSSES_PIECE, self.front_crosses, 1.0))
+        for cap in Cap:
+            zone = self.zones[cap]
+            if zone.target(self.a0) < float("inf"):
+                events.append(EventFunction(Trigger.ZONE_REACHES, cap, self.reaches(cap), 1.0))
+            if self.sliding[cap] and self.shrinking and zone.edge_front_outward:
+                events.append(EventFunction(Trigger.ZONE_LEAVES_EDGE, cap, self.leaves_edge(cap), 1.0))
+            if self.sliding[cap] and self.moving:
+                events.append(EventFunction(Trigger.LEVEL_TURNS, cap, self.turns(cap), -1.0))
+        if self.shrinking and self.edge_start > 0.0:
+            events.append(EventFunction(Trigger.EDGE_PASSES_PIECE, None, self.passes_piece, -1.0))
         return events
 
-    def met_at_start(self) -> frozenset[EventKind]:
-        """Slip events that have already happened at the span's start (they fire at once)."""
+    def met_at_start(self) -> frozenset[Fired]:
+        """Events that have already happened at the span's start (they fire at once): a level already
+        beyond its target, a sliding level that does not push (e.g. after a corner)."""
         met = set()
         if self.K > 0 and self.a0 > 0:
-            if self.slip is Slip.STICK and self.onset0 > self.level:
-                met.add(EventKind.SLIP_ONSET)
-            if self.slip is not Slip.FULL and self.full0 > self.level:
-                met.add(EventKind.FULL_SLIP)
-        if not met and self.slip is Slip.PARTIAL and self.span.regime is Regime.GROWING \
-                and self.restick_rate(self.start, None) <= 0.0:
-            met.add(EventKind.RE_STICK)  # the cap already grows faster than the indenter moves (e.g. after a corner)
+            for cap in Cap:
+                if self.reaches(cap)(self.start) > 0.0:
+                    met.add((Trigger.ZONE_REACHES, cap))
+        if met:
+            return frozenset(met)
+        for cap in Cap:
+            if self.sliding[cap]:
+                rate = self.rate(cap, self.start)
+                if rate < 0.0 or (self.moving and rate <= 0.0):
+                    met.add((Trigger.LEVEL_TURNS, cap))
+                elif self.shrinking and self.zones[cap].edge_front_outward and self.leaves_edge(cap)(self.start) > 0:
+                    met.add((Trigger.ZONE_LEAVES_EDGE, cap))
         return frozenset(met)
 
     def force_is_constant(self) -> bool:
         """Nothing moves the force: a span of zero extent, or a pinned one without tangential motion or
-        in full slip."""
-        return self.start == self.stop or (not self.moving and (self.segment.vx == 0.0 or self.slip is Slip.FULL))
+        with every spring at one cap."""
+        full = any(self.zones[cap].summary(self.a0).slip is Slip.FULL for cap in Cap)
+        return self.start == self.stop or (not self.moving and (self.segment.vx == 0.0 or full))
 
 
-def fired_events(events: list[EventFunction], roots: list, start: float, level: float) -> tuple[float, frozenset]:
+def fired_events(events: list[EventFunction], roots: list, start: float, offset: float) -> tuple[float, frozenset]:
     """The first root among the events' ``roots`` (``solve_ivp``'s ``t_events``) and every event that fires
     with it: those whose roots coincide (to SIMULTANEOUS_SHARE), and the rising ones whose function is
     already zero to rounding there (the roots of identical functions, e.g. onset and full slip of a
     uniform field, differ by an ulp)."""
-    hits = sorted((abs(found[0] - start), found[0], event.kind) for event, found in zip(events, roots) if len(found))
+    hits = sorted((abs(found[0] - start), found[0], index) for index, found in enumerate(roots) if len(found))
     first = hits[0][1]
-    kinds = {kind for _, var, kind in hits if abs(var - first) <= SIMULTANEOUS_SHARE * max(abs(first), 1e-300)}
+    fired = {events[index].key for _, var, index in hits
+             if abs(var - first) <= SIMULTANEOUS_SHARE * max(abs(first), 1e-300)}
     for event in events:
-        if event.kind not in kinds and event.direction > 0 and event(first, None) >= -2 * level:
-            kinds.add(event.kind)
-    return first, frozenset(kinds)
+        if event.key not in fired and event.direction > 0 and event(first) >= -2 * offset:
+            fired.add(event.key)
+    return first, frozenset(fired)
 
 
-def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, slip: Slip, force: float) -> SpanOutcome:
-    """Integrate ``F_x`` over ``span`` from ``force``, up to its end or the first slip event.
+def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, sliding: dict[Cap, bool],
+                   force: float) -> SpanOutcome:
+    """Integrate ``F_x`` over ``span`` from ``force``, up to its end or the first event.
 
     Sets the span's interpolant (or constant force) and integration variable; the caller sets its
     end to the returned ``t_stop``.
@@ -253,17 +272,17 @@ def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, slip: 
     t0, t1 = span.t_start, span.t_end
     span.force = force
     if t1 <= t0:
-        return SpanOutcome(frozenset(), t0, force)
+        return SpanOutcome(frozenset(), t0, force, radius_at(model, span, t0))
     if model.K == 0.0:  # τ0 = 0: ū ≡ 0, every spring slides with zero shift, F_x ≡ 0
         span.force = 0.0
-        return SpanOutcome(frozenset(), t1, 0.0)
-    integrator = SpanIntegrator(model, anchors, span, slip)
+        return SpanOutcome(frozenset(), t1, 0.0, radius_at(model, span, t1))
+    integrator = SpanIntegrator(model, anchors, span, sliding)
     span.variable = Variable.RADIUS if integrator.moving else Variable.TIME
     met = integrator.met_at_start()
     if met:
-        return SpanOutcome(met, t0, force)
+        return SpanOutcome(met, t0, force, integrator.a0)
     if integrator.force_is_constant():
-        return SpanOutcome(frozenset(), t1, force)
+        return SpanOutcome(frozenset(), t1, force, integrator.radius_of(integrator.stop))
     start, stop = integrator.start, integrator.stop
     if not (math.isfinite(start) and math.isfinite(stop) and math.isfinite(force)):
         raise RuntimeError(f"the continuum method lost its state on [{t0!r}, {t1!r}] s ({span.regime.value}: from "
@@ -276,6 +295,14 @@ def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, slip: 
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol
     if solution.status == 1:
-        first, kinds = fired_events(events, solution.t_events, start, integrator.level)
-        return SpanOutcome(kinds, float(integrator.time_of(first)), float(solution.sol(first)[0]))
-    return SpanOutcome(frozenset(), t1, float(solution.y[0, -1]))
+        first, fired = fired_events(events, solution.t_events, start, integrator.offset)
+        return SpanOutcome(fired, float(integrator.time_of(first)), float(solution.sol(first)[0]),
+                           float(integrator.radius_of(first)))
+    return SpanOutcome(frozenset(), t1, float(solution.y[0, -1]), float(integrator.radius_of(stop)))
+
+
+def radius_at(model: ContinuumModel, span: Span, t: float) -> float:
+    """The contact radius of ``span`` at path time ``t``."""
+    if span.regime in (Regime.GROWING, Regime.SHRINKING):
+        return model.branch(span.regime).radius(span.segment.d(t), model.tolerances.radius_rtol)
+    return span.pinned_radius

@@ -1,40 +1,43 @@
-"""The hybrid automaton's discrete state: radius regime, slip state, events and the transition table.
+"""The hybrid automaton's discrete state: radius regime, the two slip zones, events and the table of
+what a change of a slip zone logs.
 
 The continuum method is a hybrid automaton: between events the tangential force ``F_x`` flows
-(an ODE), and at events the discrete state jumps. The discrete state is two enums:
+(an ODE), and at events the discrete state jumps. The discrete state is:
 
 - :class:`Regime`, the contact radius: out of contact, growing on the ``Δγ0`` branch of (9),
   pinned, or shrinking on the ``Δγ1`` branch. It is fixed in closed form for each span by
   :func:`mdr_events.models.continuum.plan.plan_span` (the depth is linear on a path segment).
-- :class:`Slip`, the tangential field: every spring sticks, a slip zone ``[0, c]`` sits at the cap
-  ``ū(a)``, or every spring slides.
+- per :class:`Cap` (the shift ``u = +ū`` or ``u = −ū`` of (13)), whether springs slide at it. The
+  springs at the positive cap have their anchors at the lower level ``x − ū(a)``, those at the
+  negative cap at the upper level ``x + ū(a)``: the play operator ``Y ← clip(Y, x − ū, x + ū)``.
+  Each cap's slip zone can be several intervals; :class:`ZoneSummary` is what is logged of it.
 
-:data:`SLIP_TRANSITIONS` is the table ``(slip state, events fired together) → next slip state``;
-:func:`next_slip` reads it and nothing else decides a slip transition.
+:data:`ZONE_EVENTS` is the table ``(slip before, slip after) → events logged``;
+:func:`zone_events` reads it (and adds a front reaching the centre or the edge) and nothing else
+decides what a change of a slip zone logs.
 
-=================  ===========================  ===============  ===================================
-slip state         event(s)                     next slip state  also
-=================  ===========================  ===============  ===================================
-STICK              SLIP_ONSET                   PARTIAL
-STICK              SLIP_ONSET + FULL_SLIP       FULL             ``F_x = τ0 π a²`` exactly
-PARTIAL            FULL_SLIP                    FULL             ``F_x = τ0 π a²`` exactly
-PARTIAL            RE_STICK                     STICK            slid springs get anchor ``x − ū``
-STICK              FULL_SLIP (alone)            FULL             as onset + full slip
-PARTIAL            FULL_SLIP + RE_STICK         STICK            ``F_x = τ0 π a²``, then re-stick
-FULL               GROWTH (span planned)        PARTIAL          the new springs stick
-any                FRONT_CROSSES_PIECE          unchanged        internal: restart, not logged
-=================  ===========================  ===============  ===================================
+==========  ==========  ==========================================================================
+before      after       logged (with the cap as the event's direction)
+==========  ==========  ==========================================================================
+STICK       PARTIAL     SLIP_ONSET
+STICK       FULL        SLIP_ONSET, FULL_SLIP (``F_x = ±τ0 π a²`` exactly)
+PARTIAL     FULL        FULL_SLIP (as above)
+PARTIAL     STICK       RE_STICK if the level turned back (the slid springs keep their anchors);
+FULL        STICK       FRONT_AT_EDGE if the zone left through the shrinking edge
+FULL        PARTIAL     nothing: springs attaching at the growing edge stick
+PARTIAL     PARTIAL     FRONT_AT_CENTRE / FRONT_AT_EDGE when the zone first reaches ``ξ = 0`` / ``ξ = a``
+==========  ==========  ==========================================================================
 
 Radius regime transitions are fixed by the path and the branches (closed form, see ``plan``):
-``NONE → GROWING`` at first contact, ``PINNED → GROWING`` at growth_resumes, ``PINNED → SHRINKING``
-at detachment_starts, ``SHRINKING → NONE`` at pull_off or contact_ends (the run ends), and a
-new regime at every path corner.
+``NONE → GROWING`` at first contact and at every re-contact, ``PINNED → GROWING`` at growth_resumes,
+``PINNED → SHRINKING`` at detachment_starts, ``SHRINKING → NONE`` at pull_off or contact_ends, and
+a new regime at every path corner.
 """
 
 from __future__ import annotations
 
 import enum
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, NamedTuple
 
 if TYPE_CHECKING:
@@ -44,46 +47,65 @@ if TYPE_CHECKING:
 class Regime(enum.Enum):
     """What the contact radius does during a span."""
 
-    NONE = "none"            #: out of contact (before first contact)
+    NONE = "none"            #: out of contact
     GROWING = "growing"      #: on the Δγ0 branch of (9), springs attach
     PINNED = "pinned"        #: held: the depth is between the branches
     SHRINKING = "shrinking"  #: on the Δγ1 branch of (9), springs detach
 
 
-class Slip(enum.Enum):
-    """The slip state of the tangential springs in contact."""
+class Cap(enum.IntEnum):
+    """The two caps of the shift, ``u = ±ū(a)`` (13); the value is the sign."""
 
-    STICK = "stick"      #: no spring at the cap ū(a)
-    PARTIAL = "partial"  #: a slip zone [0, c] at the cap, the rest sticks
-    FULL = "full"        #: every spring at the cap
+    POSITIVE = 1   #: ``u = +ū``: anchors at the lower level ``x − ū`` (springs dragged towards +x)
+    NEGATIVE = -1  #: ``u = −ū``: anchors at the upper level ``x + ū``
+
+
+class Slip(enum.Enum):
+    """How much of the contact slides at one cap."""
+
+    STICK = "stick"      #: no spring at this cap
+    PARTIAL = "partial"  #: a slip zone (one or more intervals) at the cap
+    FULL = "full"        #: every spring in contact at this cap
+
+
+class ZoneSummary(NamedTuple):
+    """What is logged of one cap's slip zone: its extent and whether it holds the centre and the edge."""
+
+    slip: Slip
+    centre: bool  #: the spring at ξ = 0 is in the zone
+    edge: bool    #: the spring at the contact's edge ξ = a is in the zone
+
+
+#: The summary of a cap without a slip zone.
+NO_ZONE = ZoneSummary(Slip.STICK, False, False)
 
 
 class EventKind(str, enum.Enum):
     """Kinds of events in the log (values are the names written to files)."""
 
     FIRST_CONTACT = "first_contact"
+    RE_CONTACT = "re_contact"
     CORNER = "corner"
+    TANGENTIAL_REVERSAL = "tangential_reversal"
     GROWTH_RESUMES = "growth_resumes"
     DETACHMENT_STARTS = "detachment_starts"
     SLIP_ONSET = "slip_onset"
     FULL_SLIP = "full_slip"
+    FRONT_AT_CENTRE = "front_at_centre"
+    FRONT_AT_EDGE = "front_at_edge"
     RE_STICK = "re_stick"
     PULL_OFF = "pull_off"
     CONTACT_ENDS = "contact_ends"
     PATH_END = "path_end"
-    #: internal, never logged: the slip front passes from one piece of the anchor map to the next
-    FRONT_CROSSES_PIECE = "front_crosses_piece"
 
     def __str__(self) -> str:
         return self.value
 
 
-#: Event names of the log, in the order they can occur (the internal event excluded).
-EVENT_KINDS = tuple(kind.value for kind in EventKind if kind is not EventKind.FRONT_CROSSES_PIECE)
-#: Events that end the contact and the run.
+#: Event names of the log.
+EVENT_KINDS = tuple(kind.value for kind in EventKind)
+#: Events that end a contact.
 CONTACT_ENDING = frozenset({EventKind.PULL_OFF, EventKind.CONTACT_ENDS})
-#: Slip events, found by event functions while the force is integrated.
-SLIP_EVENTS = frozenset({EventKind.SLIP_ONSET, EventKind.FULL_SLIP, EventKind.RE_STICK})
 
 
 class Event(NamedTuple):
@@ -99,33 +121,36 @@ class Event(NamedTuple):
     direction: int = 0
 
 
-#: (slip state, events fired together) -> next slip state.
-SLIP_TRANSITIONS: dict[tuple[Slip, frozenset[EventKind]], Slip] = {
-    (Slip.STICK, frozenset({EventKind.SLIP_ONSET})): Slip.PARTIAL,
-    (Slip.STICK, frozenset({EventKind.SLIP_ONSET, EventKind.FULL_SLIP})): Slip.FULL,
-    (Slip.PARTIAL, frozenset({EventKind.FULL_SLIP})): Slip.FULL,
-    (Slip.PARTIAL, frozenset({EventKind.RE_STICK})): Slip.STICK,
-    # coincidences: full slip found alone from stick (its onset a rounding error earlier), and full slip
-    # together with re-stick (every spring at the cap just as the cap starts outgrowing the indenter)
-    (Slip.STICK, frozenset({EventKind.FULL_SLIP})): Slip.FULL,
-    (Slip.PARTIAL, frozenset({EventKind.FULL_SLIP, EventKind.RE_STICK})): Slip.STICK,
+#: (slip before, slip after) -> events logged, for a change without a re-stick (see the module table).
+ZONE_EVENTS: dict[tuple[Slip, Slip], tuple[EventKind, ...]] = {
+    (Slip.STICK, Slip.PARTIAL): (EventKind.SLIP_ONSET,),
+    (Slip.STICK, Slip.FULL): (EventKind.SLIP_ONSET, EventKind.FULL_SLIP),
+    (Slip.PARTIAL, Slip.FULL): (EventKind.FULL_SLIP,),
+    (Slip.PARTIAL, Slip.STICK): (EventKind.FRONT_AT_EDGE,),
+    (Slip.FULL, Slip.STICK): (EventKind.FRONT_AT_EDGE,),
+    (Slip.FULL, Slip.PARTIAL): (),
 }
 
 
-def next_slip(slip: Slip, fired: frozenset[EventKind]) -> Slip:
-    """The slip state after the slip events ``fired`` (together) in state ``slip``; see the table above.
+def zone_events(before: ZoneSummary, after: ZoneSummary, restuck: bool = False) -> tuple[EventKind, ...]:
+    """The events one cap's slip zone logs when it changes from ``before`` to ``after``.
 
-    The internal FRONT_CROSSES_PIECE changes nothing; an empty set changes nothing.
+    ``restuck``: the zone ended because its level turned back (RE_STICK). Otherwise the table
+    :data:`ZONE_EVENTS`; a zone that stays partial logs its front reaching the centre or the edge.
     """
-    events = frozenset(fired) & SLIP_EVENTS
-    if not events:
-        return slip
-    try:
-        return SLIP_TRANSITIONS[(slip, events)]
-    except KeyError:
-        raise RuntimeError(f"the continuum method met the events {sorted(e.value for e in events)} in the slip "
-                           f"state {slip.value!r}, which the transition table does not allow; please report the "
-                           "parameters and path") from None
+    if restuck:
+        return (EventKind.RE_STICK,) if before.slip is not Slip.STICK else ()
+    if before.slip is not after.slip:
+        return ZONE_EVENTS[(before.slip, after.slip)]
+    if after.slip is not Slip.PARTIAL:
+        return ()
+    return tuple(kind for kind, reached, held in ((EventKind.FRONT_AT_CENTRE, after.centre, before.centre),
+                                                  (EventKind.FRONT_AT_EDGE, after.edge, before.edge))
+                 if reached and not held)
+
+
+def _both_caps(value) -> dict:
+    return {cap: value for cap in Cap}
 
 
 @dataclass
@@ -137,15 +162,23 @@ class ContactState:
     t : float
         Time (s, from the path's start).
     anchors : AnchorMap
-        The tangential field of the springs in contact.
+        The stored anchors of the springs in contact.
     in_contact, running : bool
-        Whether the indenter touches the elastomer; whether the run goes on (a pull-off ends it).
+        Whether the indenter touches the elastomer; whether the run goes on (it ends at the end of the
+        path, or at a pull-off after which the path never enters the elastomer again).
     radius, force : float
-        Contact radius ``a`` (m) and tangential force ``F_x`` (N, mirrored frame).
-    slip : Slip
+        Contact radius ``a`` (m) and tangential force ``F_x`` (N).
+    sliding : dict of Cap to bool
+        Whether springs slide at each cap.
+    zones : dict of Cap to ZoneSummary
+        What was last logged of each cap's slip zone.
     detaching : bool
         Detachment has been announced (DETACHMENT_STARTS logged or a shrinking span run) and not
         undone by a pinned or growing span since.
+    contacts : int
+        Contacts made so far (first contact and re-contacts).
+    last_fired : frozenset
+        The span events (trigger, cap) that stopped the last span (reported if the solver gets stuck).
     """
 
     t: float
@@ -154,5 +187,13 @@ class ContactState:
     running: bool = True
     radius: float = 0.0
     force: float = 0.0
-    slip: Slip = Slip.STICK
+    sliding: dict = field(default_factory=lambda: _both_caps(False))
+    zones: dict = field(default_factory=lambda: _both_caps(NO_ZONE))
     detaching: bool = False
+    contacts: int = 0
+    last_fired: frozenset = frozenset()
+
+    def forget_slip(self) -> None:
+        """No spring slides (a fresh contact, or the contact gone)."""
+        self.sliding = _both_caps(False)
+        self.zones = _both_caps(NO_ZONE)

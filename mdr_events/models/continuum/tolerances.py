@@ -21,6 +21,9 @@ PIECE_SHARE = 1e-9
 SIMULTANEOUS_SHARE = 1e-12
 #: A radius that drops by more than this share at the start of detachment drops onto the Δγ1 branch.
 RADIUS_DROP_SHARE = 1e-12
+#: A path segment must last more than this share of its end time: event times are resolved to about
+#: ``1e-12`` relative (the root-finding of the events, a few ulp of the time and of the lengths).
+SEGMENT_RESOLUTION = 1e-10
 #: Restarts allowed at one instant before the solver reports it is stuck (each restart handles one event).
 MAX_RESTARTS = 50
 #: Machine epsilon of the floats used.

@@ -1,0 +1,60 @@
+"""Exact extrema of a continuum run: the largest and smallest ``F_N``, ``F_x`` and contact area ``A``.
+
+Each comes from the solution's spans (:func:`mdr_events.models.continuum.solution.extremum`: a scan
+of every span brackets the extremum, a bounded Brent search refines its time to
+``EXTREMUM_XTOL`` of the span's length), not from output samples, so that it does not depend on
+the output grid. A run that ends because the contact comes apart (pull-off, or the contact ending
+at zero radius) has ``F_N = F_x = A = 0`` just after its end, as the output samples show it
+(:func:`~mdr_events.models.continuum.solution.evaluate`); that value counts too, at the run's end.
+"""
+
+from __future__ import annotations
+
+from .solution import PathSolution, extremum
+
+__all__ = ["EXTREMA_QUANTITIES", "EXTREMA_KINDS", "extremum_names", "solution_extrema"]
+
+#: The quantities whose extrema :func:`solution_extrema` finds (names as in a simulation dataset).
+EXTREMA_QUANTITIES = ("normal_force", "tangential_force", "contact_area")
+#: Suffix of each extremum -> ``largest`` argument of :func:`extremum`.
+EXTREMA_KINDS = {"max": True, "min": False}
+#: The value of every quantity of :data:`EXTREMA_QUANTITIES` once the contact has come apart.
+VALUE_AFTER_CONTACT = 0.0
+
+
+def extremum_names(quantity: str, kind: str) -> tuple[str, str]:
+    """The keys of :func:`solution_extrema` for ``quantity`` and ``kind`` (``"max"``/``"min"``):
+    ``("<quantity>_<kind>", "<quantity>_<kind>_time")``."""
+    return f"{quantity}_{kind}", f"{quantity}_{kind}_time"
+
+
+def solution_extrema(solution: PathSolution) -> dict[str, float]:
+    """The exact maximum and minimum of ``F_N``, ``F_x`` and ``A`` along a continuum run, and their times.
+
+    Parameters
+    ----------
+    solution : PathSolution
+        One path's continuum solution (:func:`mdr_events.models.continuum.solve_path`).
+
+    Returns
+    -------
+    dict of str to float
+        For each quantity ``q`` of :data:`EXTREMA_QUANTITIES` (N, N, m²): ``q_max``, ``q_max_time``,
+        ``q_min``, ``q_min_time``; times in s from first contact, like a simulation's ``time``. The
+        extremum is the one of :func:`~mdr_events.models.continuum.solution.extremum` over the
+        spans; if the run ends with the contact coming apart, the value 0 just after its end
+        (at ``solution.end_time``) is taken instead where it is strictly larger (max) or smaller
+        (min). Where a value is reached more than once, the time is the one ``extremum`` finds
+        (the earliest span holding it).
+    """
+    out: dict[str, float] = {}
+    for quantity in EXTREMA_QUANTITIES:
+        for kind, largest in EXTREMA_KINDS.items():
+            time, value = extremum(solution, quantity, largest)
+            if solution.ended_by_contact:
+                after = VALUE_AFTER_CONTACT
+                if (after > value) if largest else (after < value):
+                    time, value = solution.end_time, after
+            value_name, time_name = extremum_names(quantity, kind)
+            out[value_name], out[time_name] = float(value), float(time)
+    return out

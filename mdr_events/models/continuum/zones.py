@@ -1,0 +1,153 @@
+"""One cap's slip zone, laid out at a span's start and continued smoothly through the span.
+
+At the start of a span every piece of the anchor map is classified for each :class:`Cap`: wholly in
+the slip zone (:attr:`Role.IN`), holding a front (:attr:`Role.FRONT`: a growth piece part of whose
+springs sit at the cap), or out of it. Through the span the zone's size follows this layout, the
+fronts following their pieces' inverses *past* the pieces' ends, so that the right-hand side of the
+force is smooth; the layout stops being right when the level reaches a value where a front leaves its
+piece or a new piece starts to slide (:meth:`ZoneLayout.target`), or when the shrinking edge
+passes a front or a piece boundary. Those are the span's internal events; the next span lays the
+zone out again.
+"""
+
+from __future__ import annotations
+
+import enum
+
+from .anchors import AnchorMap, Piece
+from .state import Cap, Slip, ZoneSummary
+from .tolerances import PIECE_SHARE
+
+
+#: A zone at the edge has left through the shrinking edge once the edge's anchor is this many
+#: classification tolerances beyond the level (more than one: the next layout must see it gone).
+EDGE_LEAVING_TOLERANCES = 2.0
+
+
+class Role(enum.Enum):
+    """How a piece of the anchor map takes part in one cap's slip zone."""
+
+    OUT = "out"      #: none of its springs is at the cap
+    FRONT = "front"  #: a front inside the (growth) piece: the springs on one side of it are at the cap
+    IN = "in"        #: all its springs are at the cap
+
+
+class ZoneLayout:
+    """One cap's slip zone at a span's start, continued smoothly through the span.
+
+    Parameters
+    ----------
+    anchors : AnchorMap
+        The stored anchors; its pieces are the springs in contact (the last may be a growth piece that
+        starts at the radius).
+    cap : Cap
+    level : float
+        The cap's level at the start, ``x − cap · ū(a)``.
+    radius : float
+        The contact radius at the start.
+    sliding : bool
+        Whether springs slide at this cap. A cap that does not slide has every piece out (after a
+        re-stick the anchors sit exactly at the level, which then moves away).
+    tolerance : float
+        A piece value this close beyond the level counts as reached (a front at a piece's end to the
+        rounding of the root that put it there is in the next piece; a zone leaving through the edge
+        is found :data:`EDGE_LEAVING_TOLERANCES` of it beyond the level, so that it has left).
+    """
+
+    def __init__(self, anchors: AnchorMap, cap: Cap, level: float, radius: float, sliding: bool, tolerance: float):
+        self.anchors, self.cap = anchors, cap
+        self.sign = float(cap)
+        self.pieces: list[Piece] = list(anchors.pieces)
+        self.edge = len(self.pieces) - 1
+        reach = cap * level
+        roles, fixed_targets = [], []
+        self.edge_is_target = False
+        for index, p in enumerate(self.pieces):
+            end = min(p.end, radius)
+            at_edge = index == self.edge
+            role = Role.OUT
+            if sliding and end > p.start:
+                start_value = cap * anchors.piece_value(p, p.start)
+                end_value = cap * anchors.piece_value(p, end)
+                start_reached = start_value <= reach + tolerance
+                end_reached = end_value <= reach + tolerance
+                if start_reached and end_reached:
+                    role = Role.IN
+                elif start_reached or end_reached:
+                    role = Role.FRONT if not p.constant else Role.IN
+            roles.append(role)
+            if role is Role.IN:
+                continue
+            # the value whose reaching changes the layout: a front's far end, an out piece's nearest value
+            towards_end = p.constant or p.rises_towards(cap)
+            if (role is Role.FRONT) == towards_end:
+                if at_edge:
+                    self.edge_is_target = True
+                else:
+                    fixed_targets.append(cap * anchors.piece_value(p, end))
+            else:
+                fixed_targets.append(cap * anchors.piece_value(p, p.start))
+        self.roles = roles
+        self.fixed_target = min(fixed_targets, default=float("inf"))
+        #: the fronts as (piece, zone towards the piece's start, the piece's end or None for the edge)
+        self.fronts = [(p, p.rises_towards(cap), None if index == self.edge else p.end)
+                       for index, (p, role) in enumerate(zip(self.pieces, roles)) if role is Role.FRONT]
+        self.inner_length = sum(min(p.end, radius) - p.start for index, (p, role) in enumerate(zip(self.pieces, roles))
+                                if role is Role.IN and index != self.edge)
+        edge_piece = self.pieces[self.edge]
+        self.edge_in = roles[self.edge] is Role.IN
+        #: the edge piece holds a front with its slip zone on the edge's side (``[ξ*, a]``)
+        self.edge_front_outward = roles[self.edge] is Role.FRONT and not edge_piece.rises_towards(cap)
+
+    # --- through the span -----------------------------------------------------------------------
+    def size(self, level: float, radius: float) -> float:
+        """The zone's size, continued smoothly from the layout (fronts past their pieces' ends)."""
+        total = self.inner_length
+        if self.edge_in:
+            total += radius - self.pieces[self.edge].start
+        for p, from_start, end in self.fronts:
+            xi = self.anchors.inverse(p, level)
+            total += max(xi - p.start if from_start else (radius if end is None else end) - xi, 0.0)
+        return total
+
+    def edge_value(self, radius: float) -> float:
+        """``cap · Y`` at the edge of a contact of radius ``radius``."""
+        return self.sign * self.anchors.piece_value(self.pieces[self.edge], radius)
+
+    def target(self, radius: float) -> float:
+        """The value of ``cap · level`` at which the layout stops being right as the level pushes on."""
+        return min(self.fixed_target, self.edge_value(radius)) if self.edge_is_target else self.fixed_target
+
+    @property
+    def edge_in_zone(self) -> bool:
+        """Whether the spring at the edge is at the cap (its shift leaving with it is ``cap · ū``)."""
+        return self.edge_in or self.edge_front_outward
+
+    # --- what is logged --------------------------------------------------------------------------
+    def summary(self, radius: float) -> ZoneSummary:
+        """The zone's extent and whether it holds the centre and the edge (pieces of zero length ignored)."""
+        present = [(p, role) for p, role in zip(self.pieces, self.roles) if min(p.end, radius) > p.start]
+        if not present or all(role is Role.OUT for _, role in present):
+            return ZoneSummary(Slip.STICK, False, False)
+        slip = Slip.FULL if all(role is Role.IN for _, role in present) else Slip.PARTIAL
+        first, first_role = present[0]
+        last, last_role = present[-1]
+        centre = first_role is Role.IN or (first_role is Role.FRONT and first.rises_towards(self.cap))
+        edge = last_role is Role.IN or (last_role is Role.FRONT and not last.rises_towards(self.cap))
+        return ZoneSummary(slip, centre, edge)
+
+
+def length_scale(anchors: AnchorMap, K: float, x: float, radius: float, d_max: float) -> float:
+    """The lengths a span's slip criterion compares: the cap ``K a``, the indenter's and the anchors'
+    positions, the depth scale; the tolerances of the levels are shares of it."""
+    largest_anchor = max((abs(p.x0) for p in anchors.pieces), default=0.0)
+    return max(K * radius, abs(x), largest_anchor, d_max)
+
+
+def lay_out_zones(anchors: AnchorMap, K: float, x: float, radius: float, sliding: dict[Cap, bool],
+                  d_max: float) -> dict[Cap, ZoneLayout]:
+    """Both caps' slip zones with the indenter at ``x`` and the radius ``radius`` (levels ``x ∓ K a``),
+    a piece value within :data:`PIECE_SHARE` of the :func:`length_scale` beyond a level counting as
+    reached."""
+    tolerance = PIECE_SHARE * length_scale(anchors, K, x, radius, d_max)
+    return {cap: ZoneLayout(anchors, cap, x - cap * K * radius, radius, sliding[cap], tolerance) for cap in Cap}

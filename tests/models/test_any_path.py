@@ -1,0 +1,183 @@
+"""The continuum on any path: tangential reversal (fretting loops), reciprocating sliding, re-contact.
+
+Each test compares with a closed form, with the same solution shifted in time or space, or with the
+discrete model's first-order convergence; tolerances are the solver's (rtol = 1e-10 of the force,
+radius roots to 1e-14) with a margin, named below.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.models.continuum import algebraic_tangential_force, evaluate, solve_path
+from mdr_events.models.continuum.solution import tangential_work
+from mdr_events.models.paths import Path, exit_depth
+from mdr_events.theory import analytic
+
+#: Agreement asked of the continuum with a closed form or with itself, relative to the plateau τ0 π a²:
+#: the issue's 1e-9, ten times the solver's rtol = 1e-10.
+EXACT = 1e-9
+
+
+def contact_at(params, depth):
+    """Radius, cap ū and plateau τ0 π a² of the contact indented vertically to ``depth`` (Δγ0 branch)."""
+    a = float(analytic.jkr_contact_radius(depth, params, params.dgamma0))
+    return a, float(analytic.critical_shift(a, params)), params.tau0 * math.pi * a**2
+
+
+def play_operator_force(params, x_samples, a, cap, anchor=0.0):
+    """The closed form of a fixed contact: every spring shares one anchor, ``Y ← clip(Y, x − ū, x + ū)``
+    (exact when the samples include each reversal, where ``Y`` is set), ``F_x = 2G* a (x − Y)``."""
+    forces, y = [], anchor
+    for x in x_samples:
+        y = min(max(y, x - cap), x + cap)
+        forces.append(2 * params.G_star * a * (x - y))
+    return np.array(forces)
+
+
+def fretting_path(params, depth, amplitude, cycles, approach_x=0.0):
+    """In to ``depth`` (vertically, or ending at ``approach_x``), then ``x`` between ``approach_x ± amplitude``
+    ``cycles`` times (0 → +X → −X → … → +X), then out vertically."""
+    start = (0.0, 0.0)
+    points = [start, (approach_x, depth)]
+    for k in range(2 * cycles + 1):
+        points.append((approach_x + (amplitude if k % 2 == 0 else -amplitude), depth))
+    points.append((points[-1][0], exit_depth(params)))
+    return Path(points, params.v)
+
+
+def times_of(solution, kind):
+    return [event.time for event in solution.events if event.kind.value == kind]
+
+
+# --- closed form: the fretting parallelogram -----------------------------------------------------------
+@pytest.mark.parametrize("amplitude_in_caps", [1.5, 3.0])
+def test_fretting_loop_at_constant_depth_is_the_parallelogram(paper, amplitude_in_caps):
+    """Vertical indentation to d, then x: 0 → +X → −X → +X at constant d (X > ū): the force is the play
+    operator F_x = 2G* a (x − Y) with Y clipped to [x − ū, x + ū], plateaus ±π a² τ0, and the work per
+    cycle 4 π a² τ0 (X − ū); all to EXACT."""
+    d = paper.d_max
+    a, cap, plateau = contact_at(paper, d)
+    X = amplitude_in_caps * cap
+    path = Path([(0, 0), (0, d), (X, d), (-X, d), (X, d)], paper.v)
+    solution = solve_path(paper, path)
+    corners = path.corner_times - path.first_contact_time()
+    # samples that include every corner exactly: the play operator on them is exact
+    times = np.unique(np.concatenate([np.linspace(corners[1], corners[-1], 4001), corners[1:]]))
+    filled = evaluate(solution, times)
+    expected = play_operator_force(paper, filled["tangential_displacement"], a, cap)
+    np.testing.assert_allclose(filled["tangential_force"], expected, rtol=0, atol=EXACT * plateau)
+    assert np.nanmax(filled["tangential_force"]) == pytest.approx(plateau, rel=EXACT)
+    assert np.nanmin(filled["tangential_force"]) == pytest.approx(-plateau, rel=EXACT)
+    reversals = times_of(solution, "tangential_reversal")
+    assert len(reversals) == 2
+    work = tangential_work(solution, reversals[0], solution.end_time)  # +X → −X → +X: one closed cycle
+    assert work == pytest.approx(4 * math.pi * a**2 * paper.tau0 * (X - cap), rel=EXACT)
+
+
+def test_fretting_events_carry_their_cap(paper):
+    """Each leg: full slip at the cap of its direction (onset and full slip together: one anchor for all
+    springs), re-stick at the reversal, with the direction of the new motion on the reversal."""
+    d = paper.d_max
+    _, cap, _ = contact_at(paper, d)
+    solution = solve_path(paper, Path([(0, 0), (0, d), (3 * cap, d), (-3 * cap, d)], paper.v))
+    logged = [(event.kind.value, event.direction) for event in solution.events
+              if event.kind.value not in ("first_contact", "corner", "path_end")]
+    assert logged == [("slip_onset", 1), ("full_slip", 1), ("tangential_reversal", -1), ("re_stick", 1),
+                      ("slip_onset", -1), ("full_slip", -1)]
+    onset = solution.events[[e.kind.value for e in solution.events].index("slip_onset")]
+    assert onset.x == pytest.approx(cap, rel=EXACT)  # x − Y = ū with Y = 0
+
+
+def test_a_small_loop_never_slides(paper):
+    """|x| < ū throughout: no slip event and F_x = 2G* a x exactly (the springs follow the indenter)."""
+    d = paper.d_max
+    a, cap, plateau = contact_at(paper, d)
+    path = Path([(0, 0), (0, d), (0.9 * cap, d), (-0.9 * cap, d), (0.5 * cap, d)], paper.v)
+    solution = solve_path(paper, path)
+    assert not {e.kind.value for e in solution.events} & {"slip_onset", "full_slip", "re_stick"}
+    times = np.linspace(path.corner_times[1], path.duration, 2001)
+    filled = evaluate(solution, times)
+    np.testing.assert_allclose(filled["tangential_force"], 2 * paper.G_star * a * filled["tangential_displacement"],
+                               rtol=0, atol=EXACT * plateau)
+
+
+# --- shakedown -------------------------------------------------------------------------------------------
+def test_reciprocating_after_oblique_indentation_shakes_down(paper):
+    """Scenario A's in-path at 20° to d_max, then reciprocating sliding about that point with a travel
+    between ū and 2ū (partial slip at both caps, the anchors stay graded): the first loop differs (it
+    starts from the anchors the oblique approach left), the second and later repeat exactly (a spring's
+    play operator forgets its past once the input has reached both extremes)."""
+    d = paper.d_max
+    _, cap, plateau = contact_at(paper, d)
+    x_in = d / math.tan(math.radians(20.0))
+    X = 0.6 * cap  # a travel 2X > ū: both caps hold slip zones, the anchors stay graded
+    path = fretting_path(paper, d, X, cycles=4, approach_x=x_in)
+    solution = solve_path(paper, path)
+    corners = path.corner_times - path.first_contact_time()
+    period = corners[4] - corners[2]
+    # loops x_in → x_in + X → x_in − X → x_in: the first from the approach's end, the others from where x
+    # passes x_in going up (half way from −X to +X)
+    starts = [corners[1]] + [0.5 * (corners[3 + 2 * k] + corners[4 + 2 * k]) for k in range(3)]
+    loop = np.linspace(0.0, period, 1001)
+    loops = [evaluate(solution, start + loop)["tangential_force"] for start in starts]
+    for later in loops[2:]:
+        np.testing.assert_allclose(later, loops[1], rtol=0, atol=EXACT * plateau)
+    assert np.max(np.abs(loops[0] - loops[1])) > 1e-3 * plateau  # the first loop is not yet shaken down
+
+
+# --- re-contact ------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("second_x", [0.0, 2e-3])
+def test_a_second_contact_repeats_the_first(paper, second_x):
+    """Indent obliquely, pull off, indent again along the same path (shifted by ``second_x``): the second
+    cycle equals the first shifted in time (and x), events included, to EXACT; between the cycles the
+    forces are zero and the run goes on (re_contact logged)."""
+    d = paper.d_max
+    out = exit_depth(paper)
+    x_in = d / math.tan(math.radians(30.0))
+    first = [(0.0, 0.0), (x_in, d), (x_in, out)]
+    lift = (second_x - 0.0, out)
+    second = [(second_x, 0.0), (second_x + x_in, d), (second_x + x_in, out)]
+    points = first + ([lift] if second_x else []) + second
+    path = Path(points, paper.v)
+    solution = solve_path(paper, path)
+    kinds = [e.kind.value for e in solution.events]
+    assert kinds.count("pull_off") == 2 and kinds.count("re_contact") == 1 and kinds[0] == "first_contact"
+    single = solve_path(paper, Path(first, paper.v))
+    shift = solution.events[kinds.index("re_contact")].time
+    cycle = np.linspace(0.0, single.end_time, 3001)
+    one, two = evaluate(single, cycle), evaluate(solution, shift + cycle)
+    _, _, plateau = contact_at(paper, d)
+    for name, scale in (("normal_force", np.max(np.abs(one["normal_force"]))), ("tangential_force", plateau),
+                        ("contact_radius", np.max(one["contact_radius"]))):
+        np.testing.assert_allclose(two[name], one[name], rtol=0, atol=EXACT * scale, err_msg=name)
+    first_events = [(e.kind.value, e.direction) for e in single.events if e.kind.value != "first_contact"]
+    index = kinds.index("re_contact")
+    second_events = [(e.kind.value, e.direction) for e in solution.events[index + 1:index + 1 + len(first_events)]]
+    assert second_events == first_events
+    between = np.linspace(single.end_time * 1.0001, shift * 0.9999, 50)
+    gap = evaluate(solution, between)
+    assert np.all(gap["normal_force"] == 0.0) and np.all(gap["tangential_force"] == 0.0)
+
+
+# --- the algebraic form on the solver's anchors -----------------------------------------------------------
+@pytest.mark.parametrize("waypoints", [
+    [(0, 0), (3e-4, 3e-4), (-1e-4, 2.5e-4), (2e-4, 3.2e-4), (-2e-4, -1e-4)],   # zigzag in and out
+    [(0, 0), (2e-4, 2e-4), (-2e-4, 3e-4), (1e-4, 1e-4), (3e-4, 3e-4), (0, -1e-4)],  # growth reversing, re-growth
+    [(1e-4, 0), (0, 3e-4), (2e-4, 2e-4), (-1e-4, 2.8e-4), (1e-4, -1e-4), (0, 2e-4), (1e-4, -1e-4)],
+])
+def test_integrated_force_equals_the_play_operator_on_the_anchors(paper, waypoints):
+    """F_x from the ODE equals 2G* ∫ clip(x − Y, −ū, ū) dξ on the stored anchors along paths that reverse
+    in and out of contact, while growing, pinned and shrinking, and make contact again."""
+    solution = solve_path(paper, Path(waypoints, paper.v))
+    times = np.linspace(0.0, solution.end_time, 1501)
+    integrated = evaluate(solution, times)["tangential_force"]
+    algebraic = algebraic_tangential_force(solution, times)
+    scale = np.nanmax(np.abs(integrated))
+    assert scale > 0
+    np.testing.assert_allclose(integrated, algebraic, rtol=0, atol=EXACT * scale)
+    in_contact = evaluate(solution, times)["contact_radius"] > 0
+    area = math.pi * evaluate(solution, times)["contact_radius"] ** 2
+    assert np.all(np.abs(integrated[in_contact]) <= paper.tau0 * area[in_contact] * (1 + EXACT))
