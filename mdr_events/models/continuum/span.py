@@ -167,6 +167,11 @@ class SpanIntegrator:
             return cap * self.segment.vx
         return cap * self.segment.vx * self.branch.slope(var) - self.K * self.segment.vd
 
+    def may_push(self, cap: Cap) -> bool:
+        """Whether the cap's level can move towards its springs during the span: its rate is positive at
+        either end (the rate is monotone in the radius: ``∂d/∂a`` increases along a branch)."""
+        return self.rate(cap, self.start) > 0.0 or self.rate(cap, self.stop) > 0.0
+
     # --- the right-hand side ---------------------------------------------------------------
     def rhs(self, var: float, y) -> list[float]:
         """``dF_x/da`` (moving radius) or ``dF_x/dt`` (pinned)."""
@@ -211,7 +216,7 @@ class SpanIntegrator:
         events = []
         for cap in Cap:
             zone = self.zones[cap]
-            if zone.target(self.a0) < float("inf"):
+            if zone.target(self.a0) < float("inf") and (self.sliding[cap] or self.may_push(cap)):
                 events.append(EventFunction(Trigger.ZONE_REACHES, cap, self.reaches(cap), 1.0))
             if self.sliding[cap] and self.shrinking and zone.edge_front_outward:
                 events.append(EventFunction(Trigger.ZONE_LEAVES_EDGE, cap, self.leaves_edge(cap), 1.0))
