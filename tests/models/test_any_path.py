@@ -218,3 +218,19 @@ def test_discrete_converges_to_the_continuum_at_first_order(paper, make_path):
         orders = observed_orders(spacings, np.array(values))
         assert np.all(orders > 0.7), (name, values, orders)
         assert values[-1] < 3e-3, (name, values)  # about 1e-3 per µm of Δx
+
+
+def test_a_path_that_starts_inside_the_elastomer_jumps_in_at_once(paper):
+    """A path starting at d > 0 makes contact at t = 0 with the Δγ0 radius there (as the discrete model's
+    springs all attach at once); F_N is (10) at that radius and, sliding at constant depth, F_x reaches
+    the plateau τ0 π a² (formerly: no contact at all, silently)."""
+    depth = 1e-4
+    solution = solve_path(paper, Path([(0.0, depth), (1e-3, depth)], paper.v))
+    kinds = [e.kind.value for e in solution.events]
+    assert kinds == ["first_contact", "slip_onset", "full_slip", "path_end"]
+    a = float(analytic.jkr_contact_radius(depth, paper, paper.dgamma0))
+    end = evaluate(solution, np.array([0.0, solution.end_time]))
+    np.testing.assert_allclose(end["contact_radius"], a, rtol=1e-13)
+    np.testing.assert_allclose(end["normal_force"], float(analytic.normal_force(depth, a, paper)), rtol=1e-12)
+    assert end["tangential_force"][0] == 0.0
+    assert end["tangential_force"][1] == pytest.approx(paper.tau0 * math.pi * a**2, rel=EXACT)
