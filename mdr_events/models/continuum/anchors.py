@@ -178,9 +178,15 @@ class AnchorMap:
             if p.constant:
                 total += np.where(cap * p.x0 <= cap * levels, length, 0.0)
                 continue
-            xi = self.inverses(p, levels)
-            part = xi - p.start if p.rises_towards(cap) else ends - xi
-            total += np.clip(part, 0.0, length)
+            # the radius root of the front only where the level lies within the piece's values
+            bounds = cap * np.array([self.piece_value(p, p.start), self.piece_value(p, float(np.max(ends)))])
+            reached = cap * levels
+            inside = (reached >= bounds.min()) & (reached < bounds.max())
+            total += np.where(reached >= bounds.max(), length, 0.0)
+            if np.any(inside):
+                xi = self.inverses(p, np.broadcast_to(levels, total.shape)[inside])
+                part = xi - p.start if p.rises_towards(cap) else np.broadcast_to(ends, total.shape)[inside] - xi
+                total[inside] += np.clip(part, 0.0, np.broadcast_to(length, total.shape)[inside])
         return total
 
     def clipped_integral(self, lower: float, upper: float, radius: float) -> float:

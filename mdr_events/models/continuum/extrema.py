@@ -10,7 +10,7 @@ at zero radius) has ``F_N = F_x = A = 0`` just after its end, as the output samp
 
 from __future__ import annotations
 
-from .solution import PathSolution, extremum
+from .solution import PathSolution, extremum, scan_spans
 
 __all__ = ["EXTREMA_QUANTITIES", "EXTREMA_KINDS", "extremum_names", "solution_extrema"]
 
@@ -48,9 +48,10 @@ def solution_extrema(solution: PathSolution) -> dict[str, float]:
         (the earliest span holding it).
     """
     out: dict[str, float] = {}
+    scan = scan_spans(solution)
     for quantity in EXTREMA_QUANTITIES:
         for kind, largest in EXTREMA_KINDS.items():
-            time, value = extremum(solution, quantity, largest)
+            time, value = extremum(solution, quantity, largest, scan)
             if solution.ended_by_contact:
                 after = VALUE_AFTER_CONTACT
                 if (after > value) if largest else (after < value):

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import NamedTuple
 
 import numpy as np
 from scipy import optimize
@@ -67,7 +68,7 @@ EVALUATED_QUANTITIES = ("indentation_depth", "tangential_displacement", "normal_
                         "contact_radius", "sliding_fraction")
 
 
-def evaluate_span(solution: PathSolution, index: int, times: np.ndarray) -> dict[str, np.ndarray]:
+def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding: bool = True) -> dict[str, np.ndarray]:
     """Every quantity of :data:`EVALUATED_QUANTITIES` at ``times`` (s from first contact) within span
     ``index``, as a vectorised function of time: the kinematics are linear, the radius follows its
     branch of (9) (or is pinned), ``F_N`` is (10), ``F_x`` is the span's interpolant and the sliding
@@ -95,9 +96,10 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray) -> dict
     else:
         force = span.interpolant(a if span.variable is Variable.RADIUS else t)[0]
     out["tangential_force"] = force
-    sliding = sum(span.anchors.zone_sizes(cap, x - cap * model.K * a, a) for cap in Cap)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        out["sliding_fraction"] = np.where(a > 0, np.minimum(sliding / a, 1.0), np.nan)
+    if sliding:
+        zones = sum(span.anchors.zone_sizes(cap, x - cap * model.K * a, a) for cap in Cap)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            out["sliding_fraction"] = np.where(a > 0, np.minimum(zones / a, 1.0), np.nan)
     return out
 
 
@@ -149,15 +151,37 @@ def _quantity(filled: dict[str, np.ndarray], quantity: str) -> np.ndarray:
         return np.where(area > 0, force / area, np.nan)
 
 
-def extremum(solution: PathSolution, quantity: str, largest: bool = True) -> tuple[float, float]:
+class ExtremumScan(NamedTuple):
+    """Every span sampled at :data:`EXTREMUM_GRID` times (s from first contact), with the quantities
+    :func:`extremum` reads (the sliding fraction left out)."""
+
+    times: list[np.ndarray]
+    values: list[dict[str, np.ndarray]]
+
+
+def scan_spans(solution: PathSolution) -> ExtremumScan:
+    """Sample every span for :func:`extremum` (one scan serves every quantity and both extremes)."""
+    times, values = [], []
+    for index, span in enumerate(solution.spans):
+        lower, upper = span.t_start - solution.t_contact, span.t_end - solution.t_contact
+        grid = np.linspace(lower, upper, EXTREMUM_GRID if upper > lower else 1)
+        times.append(grid)
+        values.append(evaluate_span(solution, index, grid, sliding=False))
+    return ExtremumScan(times, values)
+
+
+def extremum(solution: PathSolution, quantity: str, largest: bool = True,
+             scan: ExtremumScan | None = None) -> tuple[float, float]:
     """The largest (or smallest) value of ``quantity`` along the run and the time it is reached
     (s from first contact), from the solution itself, not from samples.
 
     Each span's quantities are smooth in time; the extremum of a span is at one of its ends or
-    inside it, where a scan of :data:`EXTREMUM_GRID` points brackets it (within one grid interval of
-    the best point, at an end too) and a bounded Brent search refines it to :data:`EXTREMUM_XTOL`
-    of the span's length. The means (``mean_pressure``, ``mean_shear_stress``) are taken over the
-    spans in contact.
+    inside it. A scan of :data:`EXTREMUM_GRID` points per span (:func:`scan_spans`) brackets it
+    (within one grid interval of the best point, at an end too); the spans that can hold the
+    extremum (their best scanned value, raised by their largest change between neighbouring scan
+    points, reaches the best scanned value of the run) are refined by a bounded Brent search to
+    :data:`EXTREMUM_XTOL` of the span's length. The means (``mean_pressure``, ``mean_shear_stress``)
+    are taken over the spans in contact.
 
     Parameters
     ----------
@@ -166,31 +190,68 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True) -> tup
         One of :data:`EXTREMUM_QUANTITIES`.
     largest : bool
         ``True`` for the maximum, ``False`` for the minimum.
+    scan : ExtremumScan, optional
+        :func:`scan_spans` of ``solution``, to share between several calls.
     """
     if quantity not in EXTREMUM_QUANTITIES:
         raise ValueError(f"quantity={quantity!r} is not allowed; allowed: {', '.join(EXTREMUM_QUANTITIES)}")
+    scan = scan_spans(solution) if scan is None else scan
     sign = 1.0 if largest else -1.0
-    best_time, best_value = math.nan, -math.inf
-    for index, span in enumerate(solution.spans):
-        lower, upper = span.t_start - solution.t_contact, span.t_end - solution.t_contact
-        times = np.linspace(lower, upper, EXTREMUM_GRID if upper > lower else 1)
-        values = sign * _quantity(evaluate_span(solution, index, times), quantity)
+    candidates = []
+    for index, (times, filled) in enumerate(zip(scan.times, scan.values)):
+        values = sign * _quantity(filled, quantity)
         if not np.any(np.isfinite(values)):
             continue
         i = int(np.nanargmax(values))
-        time, value = float(times[i]), float(values[i])
-        if len(times) > 1:
+        reach = float(np.nanmax(np.abs(np.diff(values)), initial=0.0)) if len(values) > 1 else 0.0
+        candidates.append((float(values[i]), reach, index, i))
+    if not candidates:
+        return math.nan, math.nan
+    best_scanned = max(value for value, *_ in candidates)
+    best_time, best_value = math.nan, -math.inf
+    for value, reach, index, i in candidates:
+        times = scan.times[index]
+        time = float(times[i])
+        # the radius is monotone on a span: the area's extremes are at the span's ends, which the scan holds
+        monotone = quantity in ("contact_radius", "contact_area")
+        if len(times) > 1 and value + reach >= best_scanned and not monotone:
             def objective(s: float) -> float:
-                return -sign * float(_quantity(evaluate_span(solution, index, np.array([s])), quantity)[0])
+                return -sign * _scalar_quantity(solution, index, s, quantity)
 
             bracket = (times[max(i - 1, 0)], times[min(i + 1, len(times) - 1)])
             refined = optimize.minimize_scalar(objective, bounds=bracket, method="bounded",
-                                               options={"xatol": EXTREMUM_XTOL * (upper - lower)})
+                                               options={"xatol": EXTREMUM_XTOL * (times[-1] - times[0])})
             if -refined.fun > value:
                 time, value = float(refined.x), float(-refined.fun)
         if value > best_value:
             best_time, best_value = time, value
     return best_time, sign * best_value
+
+
+def _scalar_quantity(solution: PathSolution, index: int, time: float, quantity: str) -> float:
+    """One quantity of span ``index`` at one time (s from first contact), with the scalar radius roots:
+    :func:`extremum`'s objective (the same values as :func:`evaluate_span`, to the root's accuracy)."""
+    span, model = solution.spans[index], solution.model
+    if span.regime is Regime.NONE:
+        return 0.0 if quantity in ("normal_force", "tangential_force") else math.nan
+    d = span.segment.d(solution.t_contact + time)
+    rtol = model.tolerances.radius_rtol
+    if span.regime is Regime.GROWING:
+        a = model.grow.radius(max(d, 0.0), rtol)
+    elif span.regime is Regime.SHRINKING:
+        a = model.shrink.radius(max(d, model.shrink.jump_off_depth), rtol)
+    else:
+        a = span.pinned_radius
+    if span.interpolant is None:
+        force = span.force
+    else:
+        force = float(span.interpolant(a if span.variable is Variable.RADIUS else solution.t_contact + time)[0])
+    normal = float(analytic.normal_force(d, a, solution.params))
+    area = math.pi * a * a
+    values = {"normal_force": normal, "tangential_force": force, "contact_radius": a, "contact_area": area,
+              "mean_pressure": normal / area if area > 0 else math.nan,
+              "mean_shear_stress": force / area if area > 0 else math.nan}
+    return values[quantity]
 
 
 def algebraic_tangential_force(solution: PathSolution, times: np.ndarray) -> np.ndarray:
