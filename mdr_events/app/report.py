@@ -4,7 +4,9 @@ Everything in ``results/`` is written by :func:`reproduce`, deterministically
 (same input, same bytes), so that a test can compare the committed report
 with a fresh computation. The figures of the simulations come from the
 continuum method, with the paper's discrete spring model overlaid for one
-angle; the report puts the section's stated numbers beside ours.
+angle; the report puts the section's stated numbers beside ours. A fretting
+study (reciprocating sliding at ``d_max``, R = 30 mm) adds ``fretting_R30.*``
+and the energy dissipated per cycle beside its closed form.
 
 What the report says is computed in :mod:`mdr_events.app.report_data`; this
 module only writes it as markdown.
@@ -21,31 +23,44 @@ from typing import Callable
 
 from mdr_events._version import __version__
 from mdr_events.app.report_data import (COMPUTE_STEPS, CONVERGENCE_SPACINGS, FIGURE_DX, FIGURE_NUMBERS,
-                                        FIGURE_STEPS, HISTORY_ANGLE, HISTORY_SPACINGS, OVERLAY_ANGLE,
-                                        PAPER_CRITICAL_ANGLES, PAPER_TAU0, RADII, AdhesiveStrengthRow,
-                                        AreaGrowthRow, ConvergenceRow, CriticalAngleRow, CrossCheckRow, Differences,
+                                        FIGURE_STEPS, FRETTING_ANGLE, FRETTING_CYCLES, FRETTING_OBLIQUE,
+                                        FRETTING_RADIUS, HISTORY_ANGLE, HISTORY_SPACINGS, OVERLAY_ANGLE,
+                                        PAPER_CRITICAL_ANGLES, PAPER_TAU0, RADII, AdhesiveStrengthRow, AreaGrowthRow,
+                                        ConvergenceRow, CriticalAngleRow, CrossCheckRow, Differences, FrettingStudy,
                                         HistoryConvergence, MaximaRow, PinnedIntervalRow, Reproduction,
                                         ScenarioBAngleRow, ShearPlateauRow, SlipOnsetVerdict, compute,
                                         critical_angles_A, critical_angles_B, cross_check_rows, differences,
-                                        extremum_convergence, history_convergence, jobs)
+                                        extremum_convergence, fretting_rows, history_convergence, jobs)
 from mdr_events.app.result_files import (FileOutcome, FileStatus, describe_outcomes, write_dataset,
                                          write_phase_diagram, write_simulation, write_text)
 from mdr_events.io.datasets import DOI, RESULT_RTOL
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
+from mdr_events.plotting.figures import plot_fretting
 
 __all__ = ["reproduce", "report_text", "compute", "Reproduction", "PAPER_CRITICAL_ANGLES", "RADII", "FIGURE_NUMBERS",
-           "software_versions", "recorded_versions", "RECORDED_PACKAGES"]
+           "software_versions", "recorded_versions", "RECORDED_PACKAGES", "fretting_section", "relative_difference_text",
+           "FRETTING_STEM", "WRITE_STEPS"]
 
 #: Relative differences below this are round-off, whose digits differ between machines: the report prints
 #: "< 1e-12" for them, so that it stays the same text everywhere.
 REPORT_ROUNDOFF = 1e-12
 #: Packages whose versions ``results/README.md`` records (the lock file pins them, with the rest).
 RECORDED_PACKAGES = ("numpy", "scipy", "sympy", "matplotlib", "xarray", "pandas")
+#: The stem of the fretting study's files in ``results/``.
+FRETTING_STEM = f"fretting_{FRETTING_RADIUS}"
+#: Progress steps of :func:`reproduce` after :func:`compute`: Fig. 8 and 10; the fretting study and README.md.
+WRITE_STEPS = 2
 
 
 
 def _mm(value: float, digits: int = 4) -> str:
     return "—" if not math.isfinite(value) else f"{value * 1e3:.{digits}f}"
+
+
+def relative_difference_text(value: float) -> str:
+    """A relative difference as the report prints it: ``< 1e-12`` below :data:`REPORT_ROUNDOFF` (round-off, whose
+    digits differ between machines), else two digits (``2.5e-09``)."""
+    return f"< {REPORT_ROUNDOFF:g}" if abs(value) < REPORT_ROUNDOFF else f"{value:.1e}"
 
 
 # ----------------------------------------------------------------------------
@@ -141,8 +156,7 @@ def _adhesive_strength_lines(samples_per_run: int, rows: list[AdhesiveStrengthRo
         "|---|---|---|---|---|---|---|",
     ]
     for row in rows:
-        worst = row.largest_relative_difference
-        worst_text = f"< {REPORT_ROUNDOFF:g}" if worst < REPORT_ROUNDOFF else f"{worst:.1e}"
+        worst_text = relative_difference_text(row.largest_relative_difference)
         lines.append(f"| {row.radius * 1e3:g} mm | {row.scenario} | {row.jkr * 1e3:.4f} mN "
                      f"| {row.continuum_min * 1e3:.4f} mN | {row.continuum_max * 1e3:.4f} mN | {worst_text} "
                      f"| {row.discrete * 1e3:.4f} mN |")
@@ -280,6 +294,49 @@ def _convergence_section(extrema: list[ConvergenceRow], histories: dict[str, His
     return lines
 
 
+# ----------------------------------------------------------------------------
+# fretting at d_max
+def fretting_section(study: FrettingStudy) -> list[str]:
+    """The report's section on the fretting study: the energy dissipated per cycle, closed form, continuum and
+    discrete model, for the last closed loop of each case."""
+    rows = fretting_rows(study)
+    first = rows[0]
+    discrete = study.discrete.attrs
+    radius = study.continuum.attrs["param_R"]
+    speed = float(study.continuum["path_speed"].values[0])
+    oblique = next(row for row in rows if row.case == FRETTING_OBLIQUE)
+    lines = [
+        "",
+        f"## Fretting at d_max (R = {radius * 1e3:g} mm)",
+        "",
+        f"Reciprocating sliding at d = d_max with the amplitude X = {first.amplitude / first.cap:g}ū(a_max) = "
+        f"{first.amplitude * 1e3:.4f} mm (a_max = {first.contact_radius * 1e3:.4f} mm, the Δγ0",
+        f"contact radius at d_max; ū = π a τ0/(2G*) = {first.cap * 1e3:.4f} mm): {FRETTING_CYCLES} full cycles "
+        "x_c → x_c + X → x_c − X → … → x_c + X,",
+        f"then out vertically; after vertical indentation (x_c = 0) and after scenario A's in-path at "
+        f"{FRETTING_ANGLE:g}° (x_c = d_max/tan {FRETTING_ANGLE:g}° =",
+        f"{oblique.centre * 1e3:.4f} mm). The depth, hence the contact, stays fixed while it slides, so that each "
+        "loop of F_x against x",
+        f"is the parallelogram of the fixed contact: plateaus ±π a² τ0, slopes 2G* a (`{FRETTING_STEM}.png`, dashed).",
+        "Energy dissipated per cycle, over the last closed loop of each case (between its last two tangential",
+        f"reversals of the same direction, from the event log `{FRETTING_STEM}_events.csv`). Continuum: ∫F_x dx of the",
+        "solution, `mdr_events.models.continuum.solution.tangential_work`. Discrete: the paper's spring model,",
+        f"Δx = {discrete['dx'] * 1e6:g} µm, {study.discrete.sizes['time'] - 1} time steps (the indenter moves v dt = "
+        f"{discrete['dt'] * speed * 1e6:.2f} µm per step), the trapezoid",
+        "rule on its samples between the same two times (its ends up to one step inside the loop).",
+        "",
+        "| case | x_c | loop | closed form 4πa²τ0(X − ū) | continuum | relative difference | discrete "
+        "| relative difference |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
+    for row in rows:
+        lines.append(f"| {row.case} | {row.centre * 1e3:.4f} mm | {row.loop_start:.1f} s – {row.loop_end:.1f} s "
+                     f"| {row.closed_form * 1e3:.6f} mJ | {row.continuum * 1e3:.6f} mJ "
+                     f"| {relative_difference_text(row.continuum_difference)} | {row.discrete * 1e3:.6f} mJ "
+                     f"| {row.discrete_difference:+.1e} |")
+    return lines
+
+
 def _parameter_section() -> list[str]:
     params = Parameters.paper()
     lines = [
@@ -303,6 +360,8 @@ def _parameter_section() -> list[str]:
         "- `fig8_R30.{nc,png}`, `fig8_R100.{nc,png}`: Fig. 8 (scenario A), continuum method, with its event",
         "  log in `fig8_R*_events.csv` and the discrete overlay in `fig8_R*_discrete.nc`.",
         "- `fig10_R30.{nc,png}`, `fig10_R100.{nc,png}`: Fig. 10 (scenario B), likewise.",
+        f"- `{FRETTING_STEM}.{{nc,png}}`: the fretting study (F_x against x), continuum method, with its event log",
+        f"  in `{FRETTING_STEM}_events.csv` and the discrete model in `{FRETTING_STEM}_discrete.nc`.",
         "",
     ]
     return lines
@@ -357,6 +416,8 @@ def report_text(data: Reproduction | None = None, versions: dict[str, str] | Non
     lines += _cross_check_section(cross_check_rows(data))
     lines += _differences_section(differences(data))
     lines += _convergence_section(extremum_convergence(data), history_convergence(data))
+    if data.fretting is not None:
+        lines += fretting_section(data.fretting)
     lines += _parameter_section()
     lines += _software_section(software_versions() if versions is None else versions)
     return "\n".join(lines)
@@ -372,7 +433,7 @@ def reproduce(out: Path, progress: Callable[[str], None] = print, keep_agreeing:
     """
     out = Path(out)
     outcomes: list[FileOutcome] = []
-    total = len(jobs()) + COMPUTE_STEPS + 1
+    total = len(jobs()) + COMPUTE_STEPS + WRITE_STEPS
     count = iter(range(1, total + 1))
 
     def step(message: str) -> None:
@@ -388,11 +449,15 @@ def reproduce(out: Path, progress: Callable[[str], None] = print, keep_agreeing:
         done(write_phase_diagram(Parameters.paper(R=radius), scenario, out, f"phase_diagram_{scenario}_{label}",
                                  keep_agreeing=keep_agreeing))
     data = compute(step)
-    step("writing Fig. 8 and 10 (.nc, .png, events .csv) and README.md")
+    step("writing Fig. 8 and 10 (.nc, .png, events .csv)")
     for (label, scenario), dataset in data.continuum.items():
         stem = f"fig{FIGURE_NUMBERS[scenario]}_{label}"
         overlay, outcome = write_dataset(data.discrete[(label, scenario)], out / f"{stem}_discrete.nc", keep_agreeing)
         done([outcome] + write_simulation(dataset, out, stem, overlay=overlay, keep_agreeing=keep_agreeing))
+    step("writing the fretting study (.nc, .png, events .csv) and README.md")
+    overlay, outcome = write_dataset(data.fretting.discrete, out / f"{FRETTING_STEM}_discrete.nc", keep_agreeing)
+    done([outcome] + write_simulation(data.fretting.continuum, out, FRETTING_STEM, overlay=overlay,
+                                      keep_agreeing=keep_agreeing, plot=plot_fretting))
     text = report_text(data)
     readme = out / "README.md"
     if keep_agreeing and readme.exists() and all(o.status is FileStatus.KEPT for o in outcomes):

@@ -23,6 +23,7 @@ from typing import Callable, NamedTuple
 import numpy as np
 import xarray as xr
 from matplotlib import image
+from matplotlib.figure import Figure
 
 from mdr_events.io.datasets import RESULT_RTOL, result_differences
 from mdr_events.io.files import atomic_write, open_result, write_netcdf
@@ -104,12 +105,15 @@ def write_phase_diagram(params: Parameters, scenario: str, out: str | os.PathLik
 
 
 def write_simulation(dataset: xr.Dataset, out: str | os.PathLike, stem: str, overlay: xr.Dataset | None = None,
-                     keep_agreeing: bool = False) -> list[FileOutcome]:
+                     keep_agreeing: bool = False, plot: Callable[..., Figure] = plot_simulation) -> list[FileOutcome]:
     """Write a simulation as ``stem.nc``, its figure (with ``overlay``) as ``stem.png`` and, for the
-    continuum method, its event log as ``stem_events.csv``."""
+    continuum method, its event log as ``stem_events.csv``.
+
+    ``plot(dataset, overlay=overlay)`` draws the figure: :func:`~mdr_events.plotting.plot_simulation` (the
+    panels against time) by default, e.g. :func:`~mdr_events.plotting.plot_fretting` for fretting loops.
+    """
     dataset, outcome = write_dataset(dataset, Path(out) / f"{stem}.nc", keep_agreeing)
-    outcomes = [outcome, write_figure(plot_simulation(dataset, overlay=overlay), Path(out) / f"{stem}.png",
-                                      keep_agreeing)]
+    outcomes = [outcome, write_figure(plot(dataset, overlay=overlay), Path(out) / f"{stem}.png", keep_agreeing)]
     if "event_kind" in dataset:
         outcomes.append(write_text(event_log_csv(dataset), Path(out) / f"{stem}_events.csv", keep_agreeing))
     return outcomes

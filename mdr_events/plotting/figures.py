@@ -1,4 +1,4 @@
-"""Figures drawn from the datasets (never recomputed here): Fig. 8, 9a, 9b, 10.
+"""Figures drawn from the datasets (never recomputed here): Fig. 8, 9a, 9b, 10, and fretting loops.
 
 A figure carries the paper's number (Fig. 8, 9a, 9b, 10) only when its
 dataset was computed with one of the paper's parameter sets
@@ -23,7 +23,7 @@ from mdr_events.models.simulate import case_dimension, case_text
 from mdr_events.parameters import Parameters
 from mdr_events.theory.phase import PHASE_DIAGRAM_CONTENT
 
-__all__ = ["figure_png", "plot_phase_diagram", "plot_simulation", "save_figure"]
+__all__ = ["figure_png", "plot_phase_diagram", "plot_simulation", "plot_fretting", "save_figure"]
 
 _MM = 1e3
 
@@ -268,5 +268,78 @@ def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, titl
             else f"scenario {scenario}"
         title = _numbered(f"simulation, {path}, R = {dataset.attrs['param_R'] * _MM:g} mm, "
                           f"{dataset.attrs.get('method', '')}", dataset, SIMULATION_FIGURES)
+    figure.suptitle(title)
+    return figure
+
+
+#: Fretting loops: the simulation as lines, an overlay (e.g. the discrete model) as open markers only (about
+#: :data:`FRETTING_MARKERS_PER_CURVE` per curve: a loop has several legs), the closed form dashed.
+FRETTING_LINE_STYLE = dict(color="tab:blue", lw=1.3, zorder=2)
+FRETTING_OVERLAY_STYLE = dict(color="crimson", ls="none", marker="o", ms=3.5, mfc="none", mew=0.8, zorder=3)
+FRETTING_CLOSED_FORM_STYLE = dict(color="k", ls="--", lw=1.0, zorder=4)
+FRETTING_MARKERS_PER_CURVE = 150
+#: Label of the closed-form loop of the fixed contact.
+FRETTING_CLOSED_FORM_LABEL = "fixed contact, closed form: ±π a² τ0, slope 2G* a"
+
+
+def plot_fretting(dataset: xr.Dataset, overlay: xr.Dataset | None = None, title: str | None = None):
+    """The tangential force against the tangential displacement, one panel per case (fretting loops).
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        Output of :func:`mdr_events.simulate` (any method, usually the continuum), drawn as lines. If it holds
+        ``parallelogram_x`` and ``parallelogram_force`` (dims ``(case dimension, "corner")``: the corners of the
+        closed-form loop of each case, as the fretting study of ``mdr-events reproduce`` writes them), these
+        are drawn dashed; with ``fretting_centre`` and ``fretting_amplitude`` the panel titles state them.
+    overlay : xarray.Dataset, optional
+        Another simulation of the same cases (e.g. the discrete model), drawn as open crimson markers, about
+        :data:`FRETTING_MARKERS_PER_CURVE` per case.
+    title : str, optional
+        Default: the dataset's ``study`` attribute (else "simulation"), "F_x against x", the radius and method.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        x in mm, F_x in N; for a paper preset, with a footnote naming the inferred parameters.
+    """
+    dimension = case_dimension(dataset)
+    cases = dataset[dimension].values
+    figure, axes = plt.subplots(1, len(cases), figsize=(5.2 * len(cases), 5.0), sharey=True, squeeze=False,
+                                constrained_layout=True)
+    method = dataset.attrs.get("method", "simulation")
+    for ax, case in zip(axes[0], cases):
+        selected = dataset.sel({dimension: case})
+        ax.plot(selected["tangential_displacement"].values * _MM, selected["tangential_force"].values,
+                label=method, **FRETTING_LINE_STYLE)
+        if overlay is not None:
+            other = overlay.sel({case_dimension(overlay): case})
+            force = other["tangential_force"].values
+            text = overlay.attrs.get("method", "overlay")
+            if "dx" in overlay.attrs:
+                text += f", Δx = {overlay.attrs['dx'] * 1e6:g} µm"
+            ax.plot(other["tangential_displacement"].values * _MM, force, label=text,
+                    markevery=max(1, int(np.count_nonzero(np.isfinite(force))) // FRETTING_MARKERS_PER_CURVE),
+                    **FRETTING_OVERLAY_STYLE)
+        if "parallelogram_x" in dataset:
+            ax.plot(selected["parallelogram_x"].values * _MM, selected["parallelogram_force"].values,
+                    label=FRETTING_CLOSED_FORM_LABEL, **FRETTING_CLOSED_FORM_STYLE)
+        panel = case_text(dimension, case)
+        if "fretting_centre" in dataset and "fretting_amplitude" in dataset:
+            panel += (f": $x_c$ = {float(selected['fretting_centre']) * _MM:.3f} mm, "
+                      f"X = {float(selected['fretting_amplitude']) * _MM:.3f} mm")
+        ax.set_title(panel, fontsize=10)
+        ax.set_xlabel("tangential displacement x (mm)")
+        ax.axhline(0.0, color="0.6", lw=0.6)
+        ax.grid(alpha=0.3)
+    axes[0, 0].set_ylabel("tangential force $F_x$ (N)")
+    footnote_strip = _add_inferred_footnote(figure, dataset)
+    handles, labels = axes[0, 0].get_legend_handles_labels()
+    figure.legend(handles, labels, loc="outside lower center", ncol=3, fontsize=LEGEND_FONTSIZE,
+                  borderaxespad=LEGEND_BORDER_PAD + footnote_strip / LEGEND_FONTSIZE)
+    if title is None:
+        study = dataset.attrs.get("study", "simulation")
+        title = (f"{study[:1].upper()}{study[1:]}: $F_x$ against x, R = {dataset.attrs['param_R'] * _MM:g} mm, "
+                 f"{method}")
     figure.suptitle(title)
     return figure

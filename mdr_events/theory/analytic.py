@@ -317,6 +317,13 @@ def critical_shift(contact_radius, params: Parameters):
     return _rel("critical_shift").numeric(contact_radius, params.tau0, params.G_star)
 
 
+def fretting_dissipated_energy(contact_radius, amplitude, params: Parameters):
+    """Energy dissipated per cycle ``x: −X → X → −X`` by a fixed contact of radius ``a`` (J): the area
+    ``4 π a² τ0 (X − ū)`` of the parallelogram ``F_x = 2G* a (x − Y)``, ``Y`` clipped to
+    ``[x − ū, x + ū]`` (plateaus ``±π a² τ0``); for ``X > ū`` (smaller loops stick and dissipate nothing)."""
+    return _rel("fretting_dissipated_energy").numeric(contact_radius, amplitude, params.tau0, params.G_star)
+
+
 # ----------------------------------------------------------------------------
 # slip onset, eqs. (17), (18), (20), (21)
 def d_crit(

@@ -76,12 +76,14 @@ dl_max = sp.Symbol("Delta_l_max", positive=True)
 F_N = sp.Symbol("F_N", real=True)
 tau = sp.Symbol("tau", real=True)
 k = sp.Symbol("k", positive=True)
+X = sp.Symbol("X", positive=True)
+W = sp.Symbol("W", positive=True)
 
 #: Every symbol by its name, for users building their own expressions.
 SYMBOLS: dict[str, sp.Symbol] = {
     sym.name: sym
     for sym in (x, r, R, E_star, G_star, tau0, dgamma, d, d_max, a, s, alpha,
-                tan_alpha, u_bar, dx, c, n, theta, k)
+                tan_alpha, u_bar, dx, c, n, theta, k, X, W)
 }
 
 #: Pretty LaTeX names (``sympy.latex(..., symbol_names=LATEX_NAMES)``).
@@ -380,6 +382,17 @@ def derive_afresh() -> dict[str, Relation]:
     jkr_depth_integral = sp.integrate(depth_of_radius.subs(a, x), (x, 0, a))
     add(Relation("critical_shift", "(13)", "critical spring shift ū(a)",
                  u_bar, critical_shift, (a, tau0, G_star)))
+
+    # fretting at a fixed contact: every spring shares one anchor, clipped to [x − ū, x + ū]; x: −X → X → −X
+    # (X > ū). F_x = 2G* a (x − Y) rises from −P with slope 2G* a to the plateau P = 2G* a ū, and back.
+    plateau = 2 * G_star * a * u_bar
+    rising = sp.integrate(-plateau + 2 * G_star * a * (x + X), (x, -X, -X + 2 * u_bar)) \
+        + sp.integrate(plateau, (x, -X + 2 * u_bar, X))
+    falling = sp.integrate(-plateau, (x, -X, X - 2 * u_bar)) \
+        + sp.integrate(plateau - 2 * G_star * a * (X - x), (x, X - 2 * u_bar, X))
+    loop_work = sp.factor(sp.simplify((rising - falling).subs(u_bar, critical_shift)))
+    add(Relation("fretting_dissipated_energy", "", "energy dissipated per cycle x: −X → X → −X of a fixed "
+                 "contact (X > ū): the parallelogram's area", W, loop_work, (a, X, tau0, G_star)))
 
     add(Relation("jkr_depth_integral", "(9)", "integral of the branch (9) over the radius, for attach maps",
                  sp.Integral(d, (a, 0, a)), jkr_depth_integral, (a, R, E_star, dgamma)))

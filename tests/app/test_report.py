@@ -23,9 +23,15 @@ RESULTS = ROOT / "results"
 
 
 @pytest.fixture(scope="module")
-def fresh():
-    """One fresh computation of everything behind results/ (about 20 s)."""
-    return report.compute()
+def computed():
+    """One fresh computation of everything behind results/ (about 20 s) and the progress messages it sent."""
+    messages = []
+    return report.compute(messages.append), messages
+
+
+@pytest.fixture(scope="module")
+def fresh(computed):
+    return computed[0]
 
 
 def locked_versions() -> dict[str, str]:
@@ -58,6 +64,12 @@ def test_committed_datasets_agree_with_a_fresh_computation(fresh):
         assert_results_agree(fresh.discrete[(label, scenario)], me.open_result(RESULTS / f"{stem}_discrete.nc"))
         assert (RESULTS / f"{stem}.png").stat().st_size > 0
         assert (RESULTS / f"{stem}_events.csv").read_text().startswith("alpha_degree,event,time_s,kind")
+    stem = report.FRETTING_STEM
+    assert_results_agree(fresh.fretting.continuum, me.open_result(RESULTS / f"{stem}.nc"))
+    assert_results_agree(fresh.fretting.discrete, me.open_result(RESULTS / f"{stem}_discrete.nc"))
+    assert (RESULTS / f"{stem}.png").stat().st_size > 0
+    events = (RESULTS / f"{stem}_events.csv").read_text()
+    assert events.startswith("case,event,time_s,kind") and events.count("tangential_reversal") == 12
 
 
 def test_the_comparison_catches_what_the_tolerance_does_not_allow():
@@ -107,7 +119,13 @@ def test_maximum_normal_force_is_exact_and_the_same_for_every_angle(fresh):
 def test_reproduce_keeps_files_that_agree_and_rewrites_those_that_do_not(fresh, tmp_path, monkeypatch):
     """`mdr-events reproduce` leaves a file alone when its content agrees with the fresh computation (so that
     git status stays clean on another machine) and says so; a real change is written."""
-    monkeypatch.setattr(report, "compute", lambda progress=None: fresh)
+    def replay(progress=None):
+        """The fresh computation, with one message per step as compute sends them (counted below)."""
+        for number in range(report.COMPUTE_STEPS):
+            progress(f"computing, step {number + 1}")
+        return fresh
+
+    monkeypatch.setattr(report, "compute", replay)
     first = report.reproduce(tmp_path, progress=lambda message: None)
     assert {outcome.status for outcome in first} == {FileStatus.WRITTEN}
     before = {path.name: path.read_bytes() for path in tmp_path.iterdir()}
@@ -124,6 +142,13 @@ def test_reproduce_keeps_files_that_agree_and_rewrites_those_that_do_not(fresh, 
     assert {outcome.status for outcome in second} == {FileStatus.KEPT}
     assert target.read_bytes() == nudged_bytes
     assert any("fig8_R30.nc" in message and "not rewritten" in message for message in messages)
+    # every step numbered once, up to the total announced; the fretting files listed like the others
+    steps = [re.match(r"\[(\d+)/(\d+)\] ", message) for message in messages]
+    numbers = [(int(m.group(1)), int(m.group(2))) for m in steps if m]
+    total = numbers[0][1]
+    assert numbers == [(k, total) for k in range(1, total + 1)]
+    fretting = [f"{report.FRETTING_STEM}{suffix}" for suffix in ("_discrete.nc", ".nc", ".png", "_events.csv")]
+    assert any(all(name in message for name in fretting) and "not rewritten" in message for message in messages)
 
     # a real change (beyond the tolerance) is rewritten, the rest kept
     nudged["normal_force"].values[0, 10] *= 1 + 1e-6
@@ -134,12 +159,23 @@ def test_reproduce_keeps_files_that_agree_and_rewrites_those_that_do_not(fresh, 
     assert {path.name: path.read_bytes() for path in tmp_path.iterdir()} == before
 
 
+def test_compute_sends_one_progress_message_per_step(computed):
+    """reproduce numbers its steps out of a total that counts compute's as COMPUTE_STEPS."""
+    _, messages = computed
+    assert len(messages) == report.COMPUTE_STEPS
+    assert messages[-1].startswith("fretting at d_max, R = 30 mm")
+
+
 def test_report_states_the_papers_numbers_beside_ours(fresh):
     text = report.report_text(fresh)
     assert "| 23.59° |" in text and "| 22.87° |" in text
     assert "**inferred**" in text
     for heading in ("### (1)", "### (2)", "### (3)", "### (4)", "## Slip onset: closed form, continuum and discrete",
-                    "## Software"):
+                    "## Fretting at d_max (R = 30 mm)", "## Software"):
         assert heading in text
     # every cross-check row is explained, none disagrees
     assert "**disagree**" not in text
+    # the fretting section lists both cases, the continuum equal to the closed form
+    for case in ("vertical", "oblique 20°"):
+        line, = (line for line in text.splitlines() if line.startswith(f"| {case} |"))
+        assert "| < 1e-12 |" in line

@@ -1,5 +1,5 @@
 """Figures (issue 10): titles by content, the discrete overlay, Fig. 9b's critical angle, the footnote on
-inferred parameters, and a matplotlib backend left alone on import."""
+inferred parameters, the fretting loops, and a matplotlib backend left alone on import."""
 
 import os
 import subprocess
@@ -13,7 +13,10 @@ from matplotlib.colors import to_hex
 
 import mdr_events as me
 from mdr_events.parameters import Parameters
-from mdr_events.plotting.figures import INFERRED_FOOTNOTE, OVERLAY_MARKERS_PER_CURVE, plot_phase_diagram, plot_simulation
+from mdr_events.app.report_data import fretting_study
+from mdr_events.plotting import plot_fretting
+from mdr_events.plotting.figures import (FRETTING_CLOSED_FORM_LABEL, FRETTING_MARKERS_PER_CURVE, INFERRED_FOOTNOTE,
+                                         OVERLAY_MARKERS_PER_CURVE, plot_phase_diagram, plot_simulation)
 
 #: A coarse angle grid: the phase diagrams are fast to compute on it.
 ANGLES = np.linspace(0.0, 90.0, 91)
@@ -128,6 +131,61 @@ def test_simulation_figure_with_overlay_is_deterministic(continuum_paper, discre
     paths = [save_figure(plot_simulation(continuum_paper, overlay=discrete_paper), tmp_path / name)
              for name in ("one.png", "two.png")]
     assert paths[0].read_bytes() == paths[1].read_bytes()
+
+
+# ----------------------------------------------------------------------------------------------
+# fretting loops: F_x against x
+
+
+@pytest.fixture(scope="module")
+def fretting():
+    """The fretting study of `mdr-events reproduce` at fast settings (Δx = 4 µm)."""
+    return fretting_study(Parameters.paper(), samples=101, dx=4e-6, n_steps=2000)
+
+
+def test_fretting_figure_draws_each_case_from_the_dataset(fretting):
+    """One panel per case: the continuum as a line, the discrete model as thinned markers, the dataset's
+    closed-form parallelogram dashed; x in mm, F_x in N, all taken from the datasets as they are."""
+    continuum, discrete = fretting.continuum, fretting.discrete
+    figure = plot_fretting(continuum, overlay=discrete)
+    assert figure.get_suptitle() == "Fretting: $F_x$ against x, R = 30 mm, continuum"
+    assert len(figure.axes) == 2
+    for ax, case in zip(figure.axes, ["vertical", "oblique 20°"]):
+        assert ax.get_title().startswith(f"{case}: $x_c$ = ")
+        line, markers, closed_form = ax.lines[:3]
+        assert [line.get_label(), markers.get_label(), closed_form.get_label()] == \
+            ["continuum", "discrete, Δx = 4 µm", FRETTING_CLOSED_FORM_LABEL]
+        selected = continuum.sel(case=case)
+        np.testing.assert_array_equal(line.get_xdata(), selected["tangential_displacement"].values * 1e3)
+        np.testing.assert_array_equal(line.get_ydata(), selected["tangential_force"].values)
+        np.testing.assert_array_equal(markers.get_ydata(), discrete.sel(case=case)["tangential_force"].values)
+        assert markers.get_linestyle() == "None" and markers.get_marker() == "o"
+        step = markers.get_markevery()
+        assert isinstance(step, int) and step > 1
+        assert FRETTING_MARKERS_PER_CURVE <= discrete.sizes["time"] // step + 1 <= 2 * FRETTING_MARKERS_PER_CURVE
+        np.testing.assert_array_equal(closed_form.get_xdata(), selected["parallelogram_x"].values * 1e3)
+        np.testing.assert_array_equal(closed_form.get_ydata(), selected["parallelogram_force"].values)
+        assert closed_form.get_linestyle() == "--"
+    assert INFERRED_FOOTNOTE in _figure_texts(figure)
+
+
+def test_fretting_figure_is_not_recomputed(fretting):
+    """A changed dataset changes the figure: the closed form is the dataset's, not computed again."""
+    edited = fretting.continuum.copy(deep=True)
+    edited["parallelogram_force"].values *= 2.0
+    closed_form, = (line for line in plot_fretting(edited).axes[0].lines
+                    if line.get_label() == FRETTING_CLOSED_FORM_LABEL)
+    np.testing.assert_array_equal(closed_form.get_ydata(), edited["parallelogram_force"].values[0])
+
+
+def test_fretting_figure_of_a_plain_simulation_has_no_closed_form():
+    params = Parameters.paper()
+    path = me.Path([(0.0, 0.0), (0.0, params.d_max), (1e-3, params.d_max), (-1e-3, params.d_max)], params.v)
+    figure = plot_fretting(me.simulate(params, {"back and forth": path}, method="continuum", samples=51))
+    ax, = figure.axes
+    assert [line.get_label() for line in ax.lines if not line.get_label().startswith("_")] == ["continuum"]
+    assert ax.get_title() == "back and forth"
+    assert figure.get_suptitle() == "Simulation: $F_x$ against x, R = 30 mm, continuum"
 
 
 # ----------------------------------------------------------------------------------------------

@@ -235,3 +235,15 @@ def test_critical_angle_rejects_what_it_cannot_use(paper):
         me.critical_angle(paper, "B+", final_depth=3e-4)
     with pytest.raises(ValueError, match="final_depth=0.001 is not allowed with scenario 'A'"):
         me.critical_angle(paper, "A", final_depth=1e-3)
+
+
+def test_fretting_dissipated_energy_is_the_parallelogram(paper):
+    """4 π a² τ0 (X − ū): zero at X = ū (the loop closes to a line), linear in X beyond, and twice the
+    plateau π a² τ0 times the travel 2(X − ū) on each plateau."""
+    a = 2.5e-3
+    cap = float(me.critical_shift(a, paper))
+    plateau = paper.tau0 * np.pi * a**2
+    assert me.fretting_dissipated_energy(a, cap, paper) == pytest.approx(0.0, abs=1e-15 * plateau * cap)
+    for amplitude in (1.5 * cap, 3.0 * cap, 10.0 * cap):
+        expected = 2 * plateau * 2 * (amplitude - cap)
+        assert me.fretting_dissipated_energy(a, amplitude, paper) == pytest.approx(expected, rel=1e-14)
