@@ -164,14 +164,31 @@ def test_a_second_contact_repeats_the_first(paper, second_x):
 
 
 # --- the algebraic form on the solver's anchors -----------------------------------------------------------
-@pytest.mark.parametrize("waypoints", [
-    [(0, 0), (3e-4, 3e-4), (-1e-4, 2.5e-4), (2e-4, 3.2e-4), (-2e-4, -1e-4)],   # zigzag in and out
-    [(0, 0), (2e-4, 2e-4), (-2e-4, 3e-4), (1e-4, 1e-4), (3e-4, 3e-4), (0, -1e-4)],  # growth reversing, re-growth
-    [(1e-4, 0), (0, 3e-4), (2e-4, 2e-4), (-1e-4, 2.8e-4), (1e-4, -1e-4), (0, 2e-4), (1e-4, -1e-4)],
+#: Paths (with parameter changes) that once got the solver stuck or off its play-operator form (review of the
+#: any-path continuum): a slide while growing then pressing in; a reversal while pulling out; the shrinking
+#: edge passing a piece boundary as the zone reaches it; pressing back in while held above the surface
+#: (d < 0); slip zones opening during pull-out (one solver step across the whole span).
+REVIEWED_PATHS = [
+    ({}, [(0, 0), (0, 9e-5), (-1e-3, 9.1e-5), (-1e-3, 2e-4)]),
+    ({}, [(0, 0), (0, 5e-5), (-5e-4, 5.05e-5), (-2.5e-4, 2.5e-5), (-5e-4, -5.2e-5)]),
+    ({}, [(0, 0), (0, 9e-5), (-1e-3, 9.1e-5), (-1e-3, 2e-4), (-1e-3, -5.2e-5)]),
+    ({"dgamma1": 0.01}, [(0, 0), (0, 1e-4), (0, -2e-6), (-5e-4, 1e-4), (-5e-4, -2e-5)]),
+    ({"dgamma1": 0.01}, [(0, -1e-5), (-1.2819744e-4, 2.2692891e-4), (1.2219184e-4, 2.0081947e-4), (1.2219184e-4, -2.32e-5)]),
+    ({"dgamma0": 0.05, "dgamma1": 0.0}, [(0, -1e-5), (-1.6572e-4, 1.48248e-4), (1.95443e-4, 3.81177e-5),
+                                         (5.852e-4, -1.65e-5)]),
+]
+
+
+@pytest.mark.parametrize("changes, waypoints", [
+    ({}, [(0, 0), (3e-4, 3e-4), (-1e-4, 2.5e-4), (2e-4, 3.2e-4), (-2e-4, -1e-4)]),   # zigzag in and out
+    ({}, [(0, 0), (2e-4, 2e-4), (-2e-4, 3e-4), (1e-4, 1e-4), (3e-4, 3e-4), (0, -1e-4)]),  # growth reversing, re-growth
+    ({}, [(1e-4, 0), (0, 3e-4), (2e-4, 2e-4), (-1e-4, 2.8e-4), (1e-4, -1e-4), (0, 2e-4), (1e-4, -1e-4)]),
+    *REVIEWED_PATHS,
 ])
-def test_integrated_force_equals_the_play_operator_on_the_anchors(paper, waypoints):
+def test_integrated_force_equals_the_play_operator_on_the_anchors(paper, changes, waypoints):
     """F_x from the ODE equals 2G* ∫ clip(x − Y, −ū, ū) dξ on the stored anchors along paths that reverse
     in and out of contact, while growing, pinned and shrinking, and make contact again."""
+    paper = paper.replace(**changes)
     solution = solve_path(paper, Path(waypoints, paper.v))
     times = np.linspace(0.0, solution.end_time, 1501)
     integrated = evaluate(solution, times)["tangential_force"]

@@ -92,6 +92,12 @@ class AnchorMap:
         if self.pieces and self.pieces[-1].end > radius:
             self.pieces = [dataclasses.replace(p, end=min(p.end, radius)) for p in self.pieces if p.start < radius]
 
+    def drop_edge_piece(self, radius: float) -> None:
+        """The shrinking edge has passed the start of the last piece (to the root's rounding): forget that
+        piece and end the one before at ``radius``."""
+        if len(self.pieces) > 1:
+            self.pieces = self.pieces[:-2] + [dataclasses.replace(self.pieces[-2], end=radius)]
+
     def clip(self, lower: float, upper: float, radius: float) -> None:
         """Materialise the play operator: ``Y ← clip(Y, lower, upper)`` on ``[0, radius]``.
 

@@ -94,7 +94,8 @@ def _plan_inward(model: ContinuumModel, state: ContactState, segment: Segment) -
                         a, state.force)
     growth: tuple[Piece, ...] = ()
     jumped_from = None
-    on_branch = model.grow.radius(max(d, 0.0), model.tolerances.radius_rtol)
+    # an adhesive contact held above the surface (d < 0) presses in along the Δγ0 branch there, down to its fold
+    on_branch = model.grow.radius(max(d, model.grow.jump_off_depth), model.tolerances.radius_rtol)
     if on_branch > a * (1.0 + RADIUS_DROP_SHARE):
         # the held radius is inside the Δγ0 branch (after a drop onto the Δγ1 branch): the springs up to
         # the branch jump in at once, at the indenter's position, as at first contact

@@ -83,8 +83,8 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
         out.update(normal_force=zero, tangential_force=zero, contact_radius=zero,
                    sliding_fraction=np.full(t.shape, np.nan))
         return out
-    if span.regime is Regime.GROWING:  # d >= 0 there; the first sample may sit at -0 to rounding
-        a = model.grow.radii(np.maximum(d, 0.0))
+    if span.regime is Regime.GROWING:  # on the Δγ0 branch, above its fold; a sample may sit below it to rounding
+        a = model.grow.radii(np.maximum(d, model.grow.jump_off_depth))
     elif span.regime is Regime.SHRINKING:  # the last sample may sit on the fold to rounding
         a = model.shrink.radii(np.maximum(d, model.shrink.jump_off_depth))
     else:
@@ -237,7 +237,7 @@ def _scalar_quantity(solution: PathSolution, index: int, time: float, quantity: 
     d = span.segment.d(solution.t_contact + time)
     rtol = model.tolerances.radius_rtol
     if span.regime is Regime.GROWING:
-        a = model.grow.radius(max(d, 0.0), rtol)
+        a = model.grow.radius(max(d, model.grow.jump_off_depth), rtol)
     elif span.regime is Regime.SHRINKING:
         a = model.shrink.radius(max(d, model.shrink.jump_off_depth), rtol)
     else:

@@ -156,6 +156,8 @@ def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOut
     springs (the window materialised in the anchors)."""
     state.force, state.radius, state.t = outcome.force, radius, outcome.t_stop
     state.last_fired = outcome.fired
+    if (Trigger.EDGE_PASSES_PIECE, None) in outcome.fired:
+        state.anchors.drop_edge_piece(radius)
     state.anchors.truncate(radius)
     fired = {cap: {trigger for trigger, which in outcome.fired if which is cap} for cap in Cap}
     for cap in Cap:

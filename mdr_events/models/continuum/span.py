@@ -13,7 +13,9 @@ pull-off fold ``∂d/∂a = 0``.
 
 The right-hand side keeps each cap's slip zone as laid out at the span's start
 (:class:`~mdr_events.models.continuum.zones.ZoneLayout`) and is continued smoothly past the span's
-terminal events, as hybrid-system integration requires: the solver locates a switch by root-finding
+terminal events, as hybrid-system integration requires (as far as the fronts' pieces continue: below
+the Δγ0 branch's fold a front stays at its piece's start, which is why a step covers at most
+1/MIN_STEPS_PER_SPAN of a span): the solver locates a switch by root-finding
 instead of shrinking its steps against a kink. The events (:class:`Trigger`): a cap's level reaching
 its layout's target (a zone opens, grows into a new piece, or covers the contact), the shrinking
 edge passing a front or a piece boundary, and a sliding cap's level turning back (re-stick). An event
@@ -32,7 +34,7 @@ from scipy.integrate import solve_ivp
 from .anchors import AnchorMap
 from .model import ContinuumModel, Segment
 from .state import Cap, Regime, Slip
-from .tolerances import EPS, LEVEL_ULPS, PIECE_SHARE, SIMULTANEOUS_SHARE
+from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE, SIMULTANEOUS_SHARE
 from .zones import EDGE_LEAVING_TOLERANCES, lay_out_zones, length_scale
 
 
@@ -232,7 +234,7 @@ class SpanIntegrator:
         met = set()
         if self.K > 0 and self.a0 > 0:
             for cap in Cap:
-                if self.reaches(cap)(self.start) > 0.0:
+                if (self.sliding[cap] or self.may_push(cap)) and self.reaches(cap)(self.start) > 0.0:
                     met.add((Trigger.ZONE_REACHES, cap))
         if met:
             return frozenset(met)
@@ -294,8 +296,11 @@ def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, slidin
                            f"{start!r} to {stop!r}, F_x = {force!r}); please report the parameters and path")
     events = integrator.event_functions()
     tolerances = model.tolerances
+    # at most a share 1/MIN_STEPS_PER_SPAN of the span per step: the smooth continuation of a slip zone ends
+    # where a front's piece meets the branch's fold, and one step across the whole span can reach it
     solution = solve_ivp(integrator.rhs, (start, stop), [force], method="DOP853", rtol=tolerances.rtol,
-                         atol=tolerances.atol, dense_output=True, events=events or None)
+                         atol=tolerances.atol, dense_output=True, events=events or None,
+                         max_step=abs(stop - start) / MIN_STEPS_PER_SPAN)
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol

@@ -24,6 +24,11 @@ RADIUS_DROP_SHARE = 1e-12
 #: A path segment must last more than this share of its end time: event times are resolved to about
 #: ``1e-12`` relative (the root-finding of the events, a few ulp of the time and of the lengths).
 SEGMENT_RESOLUTION = 1e-10
+#: A solver step covers at most this share of a span, 1/8: the smooth continuation of a slip zone past the
+#: span's events ends where a front's piece meets the branch's fold, and a first step across the whole span
+#: (DOP853 takes one where the force is nearly linear) can reach it (seen: 1.7e-3 of F_x off the
+#: play-operator form on a pull-out with slip onset; 1e-12 with eight steps).
+MIN_STEPS_PER_SPAN = 8
 #: Restarts allowed at one instant before the solver reports it is stuck (each restart handles one event).
 MAX_RESTARTS = 50
 #: Machine epsilon of the floats used.
