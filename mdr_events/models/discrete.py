@@ -5,7 +5,7 @@ normal stiffness ``E* Δx`` (5) and tangential stiffness ``G* Δx`` (6). The
 contact is symmetric, so one half (``x > 0``) is simulated and the sums (15)
 are doubled.
 
-Rules, applied at every time step (all vectorised over springs and cases):
+Rules, applied at every time step:
 
 - **Heß's rule (8) with hysteresis.** The contact is ``m`` springs per side,
   contiguous from the centre, radius ``a = m Δx`` (``a = (n/2) Δx``).
@@ -17,12 +17,28 @@ Rules, applied at every time step (all vectorised over springs and cases):
   contact stays contiguous: growth beyond the minimum and detachment from it
   are a ``searchsorted`` on the rising part; a boundary spring inside the
   minimum takes every spring up to it along (jump-in) or, detaching, the
-  whole contact off (jump-off).
+  whole contact off (jump-off). Per step this is a comparison with one
+  threshold (the counts are found for a block of samples at once).
 - **Tangential springs.** A spring's shift is 0 when it attaches and then
   follows the indenter's tangential motion; where ``|u| > ū(a)`` (13) it is
   set to ``±ū(a)``; a detached spring forgets its shift.
 - **Forces (15).** ``F_N = 2 Σ E* Δx (d − g(x_j))`` (from prefix sums of
   ``g``) and ``F_x = 2 Σ G* Δx u_j`` over the springs in contact.
+
+Stepping (:class:`_Springs`): a spring's shift is ``u = x − Y`` with its
+anchor ``Y`` (``Y = x`` when it attaches; clipping moves ``Y`` with the window
+``[x − ū, x + ū]``), so a step moves no spring that sticks. Springs that reach
+a cap share its anchor from then on and are kept as one group; the anchors
+are exact integers in units of ``2**-bits`` m, so ``Σ u = m x − Σ Y`` comes
+from a running sum that is exact (no drift over any number of steps) and is
+rounded once per sample. A step costs the groups that change (attach, detach,
+the caps and the free groups the window reaches), O(1) where nothing is
+clipped; one Python loop per case (a case in a batch gives what it gives
+alone, bit for bit), no work per spring. Against the shifts stepped spring by
+spring as the rules state them (:func:`_run_case_per_spring`: ``u += Δx``,
+clip, sum), ``F_x`` differs by round-off only (about 1e-14 of its largest
+magnitude); the springs in contact (``a``, ``F_N``) are the same, and so are
+the springs at a cap unless round-off decides a tie of ``|u|`` with ``ū``.
 
 A run starts at the path's first entry into the elastomer
 (:meth:`~mdr_events.models.paths.Path.entry_times`) and may go through any
@@ -36,8 +52,10 @@ path never enters again, the run ends at that first sample without contact
 
 from __future__ import annotations
 
+import heapq
 import math
-from typing import Callable
+from array import array
+from typing import Callable, NamedTuple
 
 import numpy as np
 
@@ -124,6 +142,400 @@ def check_spacing(params: Parameters, dx: float, depth: float | None = None) -> 
         )
 
 
+def _scale_bits(*arrays: np.ndarray) -> int:
+    """The smallest ``bits`` that makes every value of ``arrays`` an integer multiple of ``2**-bits``."""
+    values = np.concatenate([np.ravel(part) for part in arrays])
+    values = values[values != 0.0]
+    if not values.size:
+        return 0
+    # v = f 2**e with 0.5 <= |f| < 1 and 53 significant bits: a multiple of 2**(e - 53)
+    return max(0, 53 - int(np.frexp(values)[1].min()))
+
+
+def _scaled(values: np.ndarray, bits: int) -> list[int]:
+    """``values * 2**bits`` as exact Python integers (each value a multiple of ``2**-bits``)."""
+    values = np.asarray(values, dtype=float)
+    largest = float(np.max(np.abs(values))) if values.size else 0.0
+    if largest == 0.0 or math.frexp(largest)[1] + bits < 1000:  # ldexp exact, no overflow
+        return [int(value) for value in np.ldexp(values, bits).tolist()]
+    scaled = []
+    for value in values.tolist():
+        numerator, denominator = value.as_integer_ratio()
+        scaled.append(numerator << (bits - denominator.bit_length() + 1))
+    return scaled
+
+
+def _unscaled(value: int, bits: int) -> float:
+    """The float nearest to ``value * 2**-bits`` (correctly rounded, subnormal results aside)."""
+    if bits <= 900:  # float(value) is finite here: round once, then scale by an exact power of two
+        return float(value) * 2.0 ** -bits
+    return value / (1 << bits)
+
+
+class _Springs:
+    """The springs in contact of one case, in groups that share one shift; every sum exact.
+
+    A spring in contact has an anchor ``Y``, the position of the indenter at
+    which it would be unstretched, and the shift ``u = x − Y``: it attaches
+    with ``Y = x``, keeps ``Y`` while it sticks, and where the cap clips it,
+    ``Y`` moves with the window ``[x − ū, x + ū]`` (a play operator per
+    spring): the spring sits at ``u = +ū`` with ``Y = x − ū`` (the *low* cap)
+    or at ``u = −ū`` with ``Y = x + ū`` (the *high* cap). Springs that once
+    share a shift share it until they detach, so they are kept as *groups*
+    (union-find, each spring reached through its index range, a stack from the
+    centre out: springs attach and detach at the edge).
+
+    Anchors are integers in units of ``2**-bits`` m: every sample of ``x`` and
+    every cap ``ū(a)`` is such an integer, so the shifts ``x − Y`` and the sum
+    of the anchors of the springs in contact (:attr:`anchor_sum`, updated
+    only where springs attach, detach or are clipped) are exact, with no
+    drift over any number of steps; ``Σ u = m x − Σ Y`` is rounded once.
+
+    Per step the work is the springs' groups that change: the two caps (their
+    anchors follow the window), the free groups that the window reaches (from
+    two heaps of the free groups' anchors: lowest and highest first) and the
+    index ranges that detach. A step that clips nothing costs O(1).
+    """
+
+    __slots__ = ("parent", "count", "anchor", "free", "lows", "highs", "starts", "groups", "low_cap", "high_cap",
+                 "anchor_sum")
+
+    #: Groups and heap entries allowed beyond the live bound before they are compacted (:meth:`_bound`).
+    SLACK = 256
+
+    def __init__(self) -> None:
+        self.reset()
+
+    def reset(self) -> None:
+        """No springs in contact (the contact came apart)."""
+        self.parent: list[int] = []  # union-find: a group merged into a cap points towards it
+        self.count: list[int] = []  # springs of a root group
+        self.anchor: list[int] = []  # anchor of a root group (2**-bits m)
+        self.free: list[bool] = []  # a root group that sticks (in the heaps), not a cap
+        self.lows: list[tuple[int, int]] = []  # (anchor, group): a min-heap of the free groups
+        self.highs: list[tuple[int, int]] = []  # (-anchor, group): a max-heap of the free groups
+        self.starts: list[int] = []  # index ranges from the centre out: first spring of each ...
+        self.groups: list[int] = []  # ... and its group
+        self.low_cap = -1  # the group at u = +ū (anchor x − ū), or -1
+        self.high_cap = -1  # the group at u = −ū (anchor x + ū), or -1
+        self.anchor_sum = 0  # Σ Y over the springs in contact (2**-bits m), exact
+
+    def _root(self, group: int) -> int:
+        parent = self.parent
+        root = group
+        while parent[root] != root:
+            root = parent[root]
+        while parent[group] != root:  # path compression
+            parent[group], group = root, parent[group]
+        return root
+
+    def attach(self, start: int, stop: int, anchor: int) -> None:
+        """Springs ``start ≤ j < stop`` attach with zero shift at the position ``anchor``."""
+        self.anchor_sum += (stop - start) * anchor
+        if self.groups:
+            group = self.groups[-1]  # the outermost springs stick at the same anchor (x did not move): join them
+            if self.parent[group] == group and self.free[group] and self.anchor[group] == anchor:
+                self.count[group] += stop - start
+                return
+        group = len(self.parent)
+        self.parent.append(group)
+        self.count.append(stop - start)
+        self.anchor.append(anchor)
+        self.free.append(True)
+        heapq.heappush(self.lows, (anchor, group))
+        heapq.heappush(self.highs, (-anchor, group))
+        self.starts.append(start)
+        self.groups.append(group)
+        self._bound()
+
+    def detach(self, top: int, stop: int) -> None:
+        """Springs ``stop ≤ j < top`` (the outermost ``top − stop``) detach and forget their shift."""
+        starts, groups, count = self.starts, self.groups, self.count
+        while top > stop:
+            start = starts[-1]
+            root = self._root(groups[-1])
+            low = start if start > stop else stop
+            leaving = top - low
+            count[root] -= leaving
+            self.anchor_sum -= leaving * self.anchor[root]
+            if low == start:
+                starts.pop()
+                groups.pop()
+            top = low
+
+    def _live(self, group: int, anchor: int) -> bool:
+        """A heap entry that is still a free group at that anchor (entries are removed lazily)."""
+        return self.parent[group] == group and self.free[group] and self.count[group] > 0 \
+            and self.anchor[group] == anchor
+
+    def _take(self, cap: int, group: int, level: int) -> int:
+        """The free ``group`` reaches the cap at anchor ``level``: it joins ``cap`` (or becomes it)."""
+        self.free[group] = False
+        self.anchor_sum += self.count[group] * (level - self.anchor[group])
+        if cap < 0:
+            self.anchor[group] = level
+            return group
+        self.parent[group] = cap
+        self.count[cap] += self.count[group]
+        return cap
+
+    def _settle(self, cap: int, level: int, low: bool) -> int:
+        """The cap group ``cap`` moves with its level if it still sits at or beyond it; if the
+        level moved back past it, its springs stick again where they are (a free group). The cap after."""
+        if self.count[cap] == 0:
+            return -1
+        anchor = self.anchor[cap]
+        if (anchor > level) if low else (anchor < level):
+            self.free[cap] = True
+            heapq.heappush(self.lows, (anchor, cap))
+            heapq.heappush(self.highs, (-anchor, cap))
+            return -1
+        self.anchor_sum += self.count[cap] * (level - anchor)
+        self.anchor[cap] = level
+        return cap
+
+    def clip(self, low: int, high: int) -> int:
+        """Clip every shift to the window ``[low, high] = [x − ū, x + ū]`` of anchors; the number of
+        springs at a cap (``|u| = ū``) after it."""
+        count, lows, highs = self.count, self.lows, self.highs
+        # both caps first: a cap left behind by a long step may be reached by the other level
+        low_cap, high_cap = self.low_cap, self.high_cap
+        if low_cap >= 0:
+            low_cap = self._settle(low_cap, low, True)
+        if high_cap >= 0:
+            high_cap = self._settle(high_cap, high, False)
+        while lows and lows[0][0] <= low:
+            anchor, group = heapq.heappop(lows)
+            if self._live(group, anchor):
+                low_cap = self._take(low_cap, group, low)
+        while highs and -highs[0][0] >= high:
+            anchor, group = heapq.heappop(highs)
+            if self._live(group, -anchor):
+                high_cap = self._take(high_cap, group, high)
+        released = (self.low_cap >= 0 > low_cap) or (self.high_cap >= 0 > high_cap)
+        self.low_cap, self.high_cap = low_cap, high_cap
+        at_caps = (count[low_cap] if low_cap >= 0 else 0) + (count[high_cap] if high_cap >= 0 else 0)
+        if released:
+            self._bound()  # a released cap added heap entries
+        return at_caps
+
+    def _bound(self) -> None:
+        """Compact when the groups and heap entries (live or stale) outgrow the index ranges. Each
+        range holds at most one live root with a few live heap entries, so memory stays linear in
+        the springs in contact; a compaction is linear in the ranges and follows as many new
+        entries or detached ranges (amortised O(1) per attach, detach or release)."""
+        if len(self.parent) + len(self.lows) + len(self.highs) > 8 * len(self.starts) + self.SLACK:
+            self._compact()
+
+    def _compact(self) -> None:
+        """Renumber the live groups (roots), join neighbouring index ranges of one group, rebuild the
+        heaps: memory stays linear in the springs in contact, whatever the number of steps."""
+        renumbered: dict[int, int] = {}
+        starts: list[int] = []
+        groups: list[int] = []
+        for start, group in zip(self.starts, self.groups):
+            new = renumbered.setdefault(self._root(group), len(renumbered))
+            if not groups or groups[-1] != new:
+                starts.append(start)
+                groups.append(new)
+        roots = list(renumbered)
+        self.parent = list(range(len(roots)))
+        self.count = [self.count[root] for root in roots]
+        self.anchor = [self.anchor[root] for root in roots]
+        self.free = [self.free[root] for root in roots]
+        self.low_cap = renumbered.get(self.low_cap, -1)
+        self.high_cap = renumbered.get(self.high_cap, -1)
+        self.starts, self.groups = starts, groups
+        self.lows = [(anchor, group) for group, (anchor, free) in enumerate(zip(self.anchor, self.free)) if free]
+        self.highs = [(-anchor, group) for anchor, group in self.lows]
+        heapq.heapify(self.lows)
+        heapq.heapify(self.highs)
+
+    def shifts(self, x: int, springs: int) -> list[int]:
+        """Every spring's shift ``x − Y`` (2**-bits m), from the centre out; ``springs`` in contact."""
+        shifts: list[int] = []
+        for start, stop, group in zip(self.starts, self.starts[1:] + [springs], self.groups):
+            shifts.extend([x - self.anchor[self._root(group)]] * (stop - start))
+        return shifts
+
+
+class _Grid:
+    """What every case of a run shares: the springs' thresholds, the caps ``ū(m Δx)`` and the integer
+    scale of the positions (:class:`_Springs`: units of ``2**-bits`` m)."""
+
+    def __init__(self, attach: _Threshold, detach: _Threshold, first_touch: float, caps: np.ndarray, bits: int):
+        self.attach, self.detach = attach, detach
+        self.first_touch = float(first_touch)
+        self.attach_threshold = attach.threshold.tolist()
+        self.detach_threshold = detach.threshold.tolist()
+        self.detach_lowest = detach.lowest
+        self.caps = caps.tolist()
+        self.n_springs = len(self.caps) - 1
+        self.bits = bits
+        self.caps_scaled = _scaled(caps, bits)
+
+    def to_float(self, value: int) -> float:
+        """An integer in units of ``2**-bits`` m as the nearest float (m)."""
+        return _unscaled(value, self.bits)
+
+
+#: Samples per block of a case: the per-sample Python values live for one block only.
+_BLOCK = 8192
+
+
+def _run_case(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last: int, last_entry: float,
+              counts: np.ndarray, sums: np.ndarray, sliding: np.ndarray, springs: _Springs | None = None) -> int:
+    """Step one case from sample 0 to ``last``, or to its pull-off if its path does not enter again.
+
+    Writes, per sample, the springs in contact per side to ``counts``, ``Σ u`` over them (m) to
+    ``sums`` and the springs at a cap (every spring in contact where ``ū = 0``) to ``sliding``;
+    returns the last sample. ``springs`` ends holding the final state (for inspection).
+    """
+    springs = _Springs() if springs is None else springs
+    attach_threshold, detach_threshold = grid.attach_threshold, grid.detach_threshold
+    detach_lowest, first_touch = grid.detach_lowest, grid.first_touch
+    caps, caps_scaled, bits = grid.caps, grid.caps_scaled, grid.bits
+    to_float = grid.to_float
+
+    depth_before = float(d[0])
+    m = int(grid.attach.count(d[:1])[0]) if depth_before >= first_touch else 0
+    if m:
+        springs.attach(0, m, _scaled(x[:1], bits)[0])
+    # every spring has just attached (u = 0): at a cap only where ū = 0, though sample 0 records none
+    total, at_caps = 0.0, (m if m and not caps[m] > 0.0 else 0)
+    counts[0], sums[0], sliding[0] = m, total, 0
+    x_before = float(x[0])
+    k = 1
+    while k <= last:
+        block = slice(k, min(last, k + _BLOCK - 1) + 1)
+        xs, ds, positions = x[block].tolist(), d[block].tolist(), _scaled(x[block], bits)
+        grows, shrinks = grid.attach.count(d[block]).tolist(), grid.detach.count(d[block]).tolist()
+        block_counts, block_sums, block_sliding = array("q"), array("d"), array("q")
+        for i, depth in enumerate(ds):
+            step = depth - depth_before
+            if step > 0.0:  # going in: Heß's rule with Δγ0 (_Threshold.grow)
+                if m:
+                    m_new = max(m, grows[i]) if depth >= attach_threshold[m] else m
+                else:
+                    m_new = grows[i] if depth >= first_touch else 0
+            elif step < 0.0 and m:  # coming out: Δγ1 (_Threshold.shrink)
+                if depth >= detach_threshold[m - 1]:
+                    m_new = m
+                else:
+                    m_new = min(m, shrinks[i]) if m - 1 > detach_lowest else 0
+            else:
+                m_new = m
+            position = xs[i]
+            if m_new != m or position != x_before:  # else nothing moves: the sums stay
+                if m_new < m:
+                    if m_new:
+                        springs.detach(m, m_new)
+                    else:
+                        springs.reset()
+                elif m_new > m:
+                    springs.attach(m, m_new, positions[i])
+                if m_new:
+                    anchor, cap = positions[i], caps_scaled[m_new]
+                    at_caps = springs.clip(anchor - cap, anchor + cap)
+                    total = to_float(m_new * anchor - springs.anchor_sum)
+                    if not caps[m_new] > 0.0:
+                        at_caps = m_new  # ū = 0: every spring in contact slides
+                else:
+                    total, at_caps = 0.0, 0
+            block_counts.append(m_new)
+            block_sums.append(total)
+            block_sliding.append(at_caps)
+            depth_before, x_before = depth, position
+            # the pull-off jump ends the case (keeping this first sample without contact) unless its path
+            # enters again after the last sample in contact; then the next contact starts afresh
+            apart = m and not m_new and last_entry <= time[k - 1]
+            m = m_new
+            k += 1
+            if apart:
+                last = k - 1
+                break
+        written = slice(block.start, block.start + len(block_counts))
+        counts[written], sums[written], sliding[written] = block_counts, block_sums, block_sliding
+    return last
+
+
+def _run_case_per_spring(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last: int,
+                         last_entry: float, counts: np.ndarray, sums: np.ndarray, sliding: np.ndarray) -> int:
+    """The rules stepped spring by spring, as stated (module docstring): the reference of :func:`_run_case`.
+
+    Same arguments and outputs; every spring's shift is a float moved by each step and clipped,
+    and ``Σ u`` a plain sum: O(springs) numpy work per step, where :func:`_run_case` is O(1).
+    """
+    shift = np.zeros(grid.n_springs)
+    m = int(grid.attach.count(d[:1])[0]) if d[0] >= grid.first_touch else 0
+    counts[0], sums[0], sliding[0] = m, 0.0, 0
+    k = 1
+    while k <= last:
+        depth = d[k:k + 1]
+        if d[k] > d[k - 1]:
+            if m:
+                m_new = int(grid.attach.grow(np.array([m]), depth)[0])
+            else:
+                m_new = int(grid.attach.count(depth)[0]) if d[k] >= grid.first_touch else 0
+        elif d[k] < d[k - 1]:
+            m_new = int(grid.detach.shrink(np.array([m]), depth)[0])
+        else:
+            m_new = m
+        kept = min(m, m_new)
+        shift[:kept] += x[k] - x[k - 1]
+        shift[kept:] = 0.0  # detached springs forget their shift, new ones attach with none
+        cap = grid.caps[m_new]
+        in_contact = shift[:m_new]
+        np.minimum(in_contact, cap, out=in_contact)
+        np.maximum(in_contact, -cap, out=in_contact)
+        counts[k], sums[k] = m_new, in_contact.sum()
+        sliding[k] = np.count_nonzero(np.abs(in_contact) >= cap) if cap > 0.0 else m_new
+        if m and not m_new and last_entry <= time[k - 1]:
+            last = k
+        m = m_new
+        k += 1
+    return last
+
+
+class _Setup(NamedTuple):
+    """A run laid out before stepping: the common time grid, each case's samples, the springs."""
+
+    time: np.ndarray  # (n_time,) from each path's first contact
+    x: np.ndarray  # (n_time, n_cases) tangential position of each case's indenter
+    d: np.ndarray  # (n_time, n_cases) depth
+    last_sample: np.ndarray  # (n_cases,) the sample at the end of each path
+    last_entries: np.ndarray  # (n_cases,) each path's last entry into the elastomer, from first contact
+    grid: _Grid
+    g_prefix: np.ndarray  # (n_springs + 1,) Σ g(x_j) over the first m springs
+
+
+def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
+             profile: Callable[[np.ndarray], np.ndarray]) -> _Setup:
+    """The time grid, every case's samples and the springs of :func:`run_discrete`."""
+    starts = np.array([path.first_contact_time() for path in paths])
+    # the last entry into the elastomer, in time from first contact (0 for a path with one entry)
+    last_entries = np.array([path.entry_times()[-1] for path in paths]) - starts
+    durations = np.array([path.duration for path in paths]) - starts
+    n_time = int(math.ceil(durations.max() / dt)) + 1
+    time = np.arange(n_time) * dt
+    positions = np.empty((2, n_time, len(paths)))
+    for case, path in enumerate(paths):
+        positions[0, :, case], positions[1, :, case] = path.position(starts[case] + time)
+    x_path, d_path = positions
+    last_sample = np.minimum(np.floor(durations / dt + 0.5).astype(np.int64), n_time - 1)
+
+    n_springs = _spring_count(params, dx, max(path.max_depth for path in paths), profile)
+    xi = (np.arange(n_springs) + 0.5) * dx
+    g = profile(xi)
+    g_prefix = np.concatenate([[0.0], np.cumsum(g)])
+    attach = _Threshold(g, xi, params, params.dgamma0)
+    detach = _Threshold(g, xi, params, params.dgamma1)
+    shift_per_radius = float(analytic.critical_shift(1.0, params))  # ū is linear in a
+    caps = (shift_per_radius * dx) * np.arange(n_springs + 1)  # ū(m Δx) for m springs per side
+    grid = _Grid(attach, detach, g[0], caps, _scale_bits(x_path, caps))
+    return _Setup(time, x_path, d_path, last_sample, last_entries, grid, g_prefix)
+
+
 def run_discrete(
     params: Parameters,
     paths: list[Path],
@@ -131,7 +543,7 @@ def run_discrete(
     dt: float,
     profile: Callable[[np.ndarray], np.ndarray] | None = None,
 ) -> dict[str, np.ndarray]:
-    """Run the spring model for several paths at once on a common time grid.
+    """Run the spring model for several paths on a common time grid.
 
     Parameters
     ----------
@@ -155,83 +567,20 @@ def run_discrete(
         ``tangential_displacement``, ``normal_force``, ``tangential_force``,
         ``contact_radius``, ``sliding_fraction``, ``springs_in_contact``.
     """
-    profile = paraboloid_profile(params) if profile is None else profile
-    # cases run longest first, so that the cases still running are always a leading block of rows
-    order = np.argsort([-(path.duration - path.first_contact_time()) for path in paths], kind="stable")
-    paths = [paths[i] for i in order]
-    starts = np.array([path.first_contact_time() for path in paths])
-    # the last entry into the elastomer, in time from first contact (0 for a path with one entry)
-    last_entries = np.array([path.entry_times()[-1] for path in paths]) - starts
-    durations = np.array([path.duration for path in paths]) - starts
-    n_time = int(math.ceil(durations.max() / dt)) + 1
-    time = np.arange(n_time) * dt
-    positions = np.empty((2, n_time, len(paths)))
-    for case, path in enumerate(paths):
-        positions[0, :, case], positions[1, :, case] = path.position(starts[case] + time)
-    x_path, d_path = positions
-    last_sample = np.minimum(np.floor(durations / dt + 0.5).astype(np.int64), n_time - 1)
-
-    n_springs = _spring_count(params, dx, max(path.max_depth for path in paths), profile)
-    xi = (np.arange(n_springs) + 0.5) * dx
-    g = profile(xi)
-    g_prefix = np.concatenate([[0.0], np.cumsum(g)])
-    attach = _Threshold(g, xi, params, params.dgamma0)
-    detach = _Threshold(g, xi, params, params.dgamma1)
-    first_touch = g[0]
-    shift_per_radius = float(analytic.critical_shift(1.0, params))  # ū is linear in a
-    spring_index = np.arange(n_springs)
-
-    n_cases = len(paths)
-    shift = np.zeros((n_cases, n_springs))
+    run = _prepare(params, paths, dx, dt, paraboloid_profile(params) if profile is None else profile)
+    time, x_path, d_path, last_sample = run.time, run.x, run.d, run.last_sample.copy()
+    n_cases, n_time = len(paths), time.size
     out_m = np.zeros((n_cases, n_time), dtype=np.int64)
     out_sum = np.zeros((n_cases, n_time))
     out_sliding = np.zeros((n_cases, n_time), dtype=np.int64)
+    for case in range(n_cases):
+        last_sample[case] = _run_case(run.grid, x_path[:, case], d_path[:, case], time, int(last_sample[case]),
+                                      float(run.last_entries[case]), out_m[case], out_sum[case], out_sliding[case])
 
-    m = np.where(d_path[0] >= first_touch, attach.count(d_path[0]), 0)
-    out_m[:, 0] = m
-    running = n_cases
-    for k in range(1, n_time):
-        while running and last_sample[running - 1] < k:
-            running -= 1
-        if not running:
-            break
-        rows = slice(0, running)
-        m = m[rows]
-        d_new = d_path[k, rows]
-        step_x = x_path[k, rows] - x_path[k - 1, rows]
-        step_depth = d_new - d_path[k - 1, rows]
-        grow = np.where(m > 0, attach.grow(m, d_new),
-                        np.where(d_new >= first_touch, attach.count(d_new), 0))
-        shrink = detach.shrink(m, d_new)
-        m_new = np.where(step_depth > 0, grow, np.where(step_depth < 0, shrink, m))
-        width = int(max(m.max(), m_new.max()))
-        if width:
-            u = shift[rows, :width]
-            kept = np.minimum(m, m_new)
-            if np.any(step_x != 0.0):
-                u += step_x[:, None]
-                u *= spring_index[:width] < kept[:, None]  # only springs in contact move ...
-            elif np.any(kept < m):
-                u *= spring_index[:width] < kept[:, None]  # ... and detached ones forget
-            cap = ((shift_per_radius * dx) * m_new)[:, None]
-            np.minimum(u, cap, out=u)
-            np.maximum(u, -cap, out=u)
-            out_sum[rows, k] = u.sum(axis=1)
-            at_cap = np.count_nonzero(np.abs(u) >= cap, axis=1)
-            out_sliding[rows, k] = np.where(cap[:, 0] > 0.0, at_cap, m_new)  # ū = 0: every spring in contact
-        out_m[rows, k] = m_new
-        # the pull-off jump ends a case (keeping this first sample without contact) unless its path
-        # enters again after the last sample in contact; a case that goes on keeps m = 0 (no springs,
-        # zero shifts) until the next contact
-        apart = (m > 0) & (m_new == 0) & (last_entries[rows] <= time[k - 1])
-        last_sample[rows] = np.where(apart, np.minimum(last_sample[rows], k), last_sample[rows])
-        m = m_new
-
-    inverse = np.argsort(order)
     valid = np.arange(n_time)[None, :] <= last_sample[:, None]
     radius = out_m * dx
     with np.errstate(invalid="ignore", divide="ignore"):
-        normal = 2.0 * params.E_star * dx * (out_m * d_path.T - g_prefix[out_m])
+        normal = 2.0 * params.E_star * dx * (out_m * d_path.T - run.g_prefix[out_m])
         tangential = 2.0 * params.G_star * dx * out_sum
         sliding = np.where(out_m > 0, out_sliding / out_m, np.nan)
     result = {
@@ -246,6 +595,6 @@ def run_discrete(
     }
     for key, values in result.items():
         if key != "time":
-            result[key] = np.where(valid, values, np.nan)[inverse]
-    result["spring_count"] = n_springs
+            result[key] = np.where(valid, values, np.nan)
+    result["spring_count"] = run.grid.n_springs
     return result

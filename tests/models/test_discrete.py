@@ -407,3 +407,172 @@ def test_re_entry_in_the_step_the_contact_comes_apart_goes_on(paper):
     assert radius[STEPS_PER_CYCLE] == 0.0 and radius[STEPS_PER_CYCLE - 1] > 0.0  # apart on the corner
     assert radius[STEPS_PER_CYCLE + 1] > 0.0  # and in contact again at the next sample
     np.testing.assert_array_equal(radius[STEPS_PER_CYCLE:2 * STEPS_PER_CYCLE + 1], radius[:STEPS_PER_CYCLE + 1])
+
+
+# ----------------------------------------------------------------------------------------------
+# The stepping kernel: exact running sums, the rules stepped spring by spring, batches
+
+from mdr_events.models import discrete  # noqa: E402  (the kernel's internals)
+
+#: Spring spacing of the long runs: about 155 springs per side at d_max.
+LONG_DX = 20e-6
+#: Allowed difference between the kernel's F_x and a sum of per-spring shifts, as a share of the largest |F_x|.
+SUM_RTOL = 1e-12
+
+
+def reciprocating_path(p, strokes: int) -> Path:
+    """In to d_max, then ``strokes`` tangential strokes of about ±2ū (full slip, both caps) with the
+    depth going up and down (springs detach and attach again); at the end a stroke on in the same
+    direction while pressing deeper than ever (new springs attach along it: many shifts, partial slip)."""
+    amplitude = 1.5e-3  # ū(a) at d_max is 0.71 mm
+    points = [(0.0, 0.0), (0.0, p.d_max)]
+    for i in range(strokes):
+        x = (1.0 if i % 2 == 0 else -1.0) * amplitude * (0.7 if i % 3 == 0 else 1.0)
+        depth = p.d_max * (0.35 if i % 4 == 1 else 1.0 - 0.1 * (i % 3))
+        points.append((x, depth))
+    x = points[-1][0]
+    points.append((x + math.copysign(1.5e-3, x), 1.3 * p.d_max))
+    return Path(points, p.v)
+
+
+def step_case(kernel, run, case=0, springs=None):
+    """``kernel`` (``_run_case`` or ``_run_case_per_spring``) over one case of a prepared run."""
+    n = run.time.size
+    counts, sums, sliding = np.zeros(n, np.int64), np.zeros(n), np.zeros(n, np.int64)
+    extra = {} if springs is None else {"springs": springs}
+    last = kernel(run.grid, run.x[:, case], run.d[:, case], run.time, int(run.last_sample[case]),
+                  float(run.last_entries[case]), counts, sums, sliding, **extra)
+    return last, counts[:last + 1], sums[:last + 1], sliding[:last + 1]
+
+
+def prepare(p, paths, dx, steps):
+    longest = max(path.duration - path.first_contact_time() for path in paths)
+    return discrete._prepare(p, paths, dx, longest / steps, discrete.paraboloid_profile(p))
+
+
+def test_running_sums_equal_a_full_re_sum_after_a_million_steps(paper):
+    """10⁶ steps of reciprocating sliding (200 strokes through full slip at both caps, springs detaching
+    and attaching again): at the end F_N and F_x of the run equal the sums over the springs in contact
+    (every spring's shift from the final state) to 1e-12, the shifts lie within ±ū, the springs at
+    a cap are the sliding ones, and the kernel's state is bounded by the springs, not the steps."""
+    path = reciprocating_path(paper, 200)
+    dt = (path.duration - path.first_contact_time()) / 1_000_000
+    raw = run_discrete(paper, [path], LONG_DX, dt)
+    run = discrete._prepare(paper, [path], LONG_DX, dt, discrete.paraboloid_profile(paper))
+    springs = discrete._Springs()
+    last, counts, sums, sliding = step_case(discrete._run_case, run, springs=springs)
+    assert last == 1_000_000 == raw["time"].size - 1
+    m = int(counts[-1])
+    assert m == raw["springs_in_contact"][0, -1] and 0 < sliding[-1] < m  # partial slip at the end
+
+    p, dx = paper, LONG_DX
+    depth = float(run.d[-1, 0])
+    g = discrete.paraboloid_profile(p)((np.arange(m) + 0.5) * dx)
+    normal = raw["normal_force"][0]
+    resummed = 2.0 * p.E_star * dx * math.fsum(depth - g)
+    assert abs(normal[-1] - resummed) <= SUM_RTOL * np.abs(normal).max()
+
+    position = discrete._scaled(run.x[-1:, 0], run.grid.bits)[0]
+    shifts = springs.shifts(position, m)
+    assert len(shifts) == m
+    tangential = raw["tangential_force"][0]
+    resummed = 2.0 * p.G_star * dx * math.fsum(run.grid.to_float(u) for u in shifts)
+    assert abs(tangential[-1] - resummed) <= SUM_RTOL * np.abs(tangential).max()
+    assert 2.0 * p.G_star * dx * sums[-1] == tangential[-1]
+
+    cap = run.grid.caps_scaled[m]
+    assert all(-cap <= u <= cap for u in shifts)
+    assert sum(abs(u) == cap for u in shifts) == sliding[-1] == round(raw["sliding_fraction"][0, -1] * m)
+    assert len(set(shifts)) > 10  # springs that attached along the last stroke: many shifts
+    entries = len(springs.parent) + len(springs.lows) + len(springs.highs)
+    assert entries <= 8 * run.grid.n_springs + discrete._Springs.SLACK
+
+
+REFERENCE_PATHS = {
+    "A 20°": lambda p: Path.scenario_A(20.0, p),
+    "B 20°": lambda p: Path.scenario_B(20.0, p),
+    "B+ 10°": lambda p: Path.scenario_B_indentation(10.0, p),
+    "zigzag": lambda p: Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4),
+                              (2e-4, -1e-4)], p.v),
+    "re-contact": lambda p: cycle_paths(p, 30.0, CYCLE_MOVE)[0],
+}
+
+
+@pytest.mark.parametrize("steps", [60, 2500], ids=["steps-beyond-2ū", "fine-steps"])
+@pytest.mark.parametrize("variant", ["paper", "tau0=0", "hertz", "dgamma1<dgamma0"])
+def test_kernel_equals_the_rules_stepped_spring_by_spring(paper, variant, steps):
+    """The kernel (anchors, groups, exact sums) against every spring's shift moved, clipped and summed
+    at every step: the same springs in contact and at a cap, F_x to round-off; also with steps so
+    long that the window jumps past a whole cap (``steps=60``) and where ū = 0."""
+    p = {"paper": paper, "tau0=0": paper.replace(tau0=0.0), "hertz": paper.replace(dgamma0=0.0, dgamma1=0.0),
+         "dgamma1<dgamma0": paper.replace(dgamma1=0.5 * paper.dgamma0)}[variant]
+    paths = [build(p) for build in REFERENCE_PATHS.values()]
+    run = prepare(p, paths, CYCLE_DX, steps)
+    for case, name in enumerate(REFERENCE_PATHS):
+        last, counts, sums, sliding = step_case(discrete._run_case, run, case)
+        reference = step_case(discrete._run_case_per_spring, run, case)
+        assert last == reference[0], name
+        np.testing.assert_array_equal(counts, reference[1], err_msg=name)
+        np.testing.assert_array_equal(sliding, reference[3], err_msg=name)
+        scale = np.abs(reference[2]).max()
+        np.testing.assert_allclose(sums, reference[2], rtol=0.0, atol=SUM_RTOL * scale, err_msg=name)
+        assert (scale > 0.0) == (p.tau0 > 0.0), name
+        if steps == 60 and p.tau0 > 0.0 and name == "zigzag":  # a step moves the indenter by more than 2ū
+            caps = np.asarray(run.grid.caps)[counts[1:]]
+            assert np.any(np.abs(np.diff(run.x[:last + 1, case])) > 2.0 * caps), name
+
+
+def test_kernel_equals_the_rules_over_a_long_reciprocating_run(paper):
+    """10⁵ steps of the reciprocating path (groups detach, caps release and catch up, compaction):
+    the kernel and the spring-by-spring stepping agree at every sample."""
+    run = prepare(paper, [reciprocating_path(paper, 20)], LONG_DX, 100_000)
+    last, counts, sums, sliding = step_case(discrete._run_case, run)
+    reference = step_case(discrete._run_case_per_spring, run)
+    assert last == reference[0] == 100_000
+    np.testing.assert_array_equal(counts, reference[1])
+    np.testing.assert_array_equal(sliding, reference[3])
+    np.testing.assert_allclose(sums, reference[2], rtol=0.0, atol=SUM_RTOL * np.abs(reference[2]).max())
+    assert np.any(np.diff(counts[counts > 0]) < 0) and np.any((sliding == counts) & (counts > 0))  # detach, full slip
+
+
+def test_a_case_in_a_batch_is_the_case_alone_bit_for_bit(paper):
+    """Cases are stepped one by one with exact sums, so a batch (other paths, another spring count and
+    integer scale) changes nothing in any case, to the last bit."""
+    paths = [Path.scenario_A(20.0, paper), Path.scenario_B(60.0, paper), REFERENCE_PATHS["zigzag"](paper),
+             cycle_paths(paper, 30.0, CYCLE_MOVE)[0], Path.scenario_B_indentation(10.0, paper)]
+    dt = max(path.duration - path.first_contact_time() for path in paths) / 3000
+    batch = run_discrete(paper, paths, CYCLE_DX, dt)
+    for row, path in enumerate(paths):
+        single = run_discrete(paper, [path], CYCLE_DX, dt)
+        n = single["time"].size
+        for key, values in single.items():
+            if key in ("time", "spring_count"):
+                continue
+            assert batch[key][row, :n].tobytes() == values[0].tobytes(), (row, key)
+            assert np.all(np.isnan(batch[key][row, n:])), (row, key)
+    assert batch["spring_count"] > run_discrete(paper, paths[:1], CYCLE_DX, dt)["spring_count"]
+
+
+@pytest.mark.parametrize("block", [1, 7])
+def test_blocks_of_samples_do_not_change_the_result(paper, monkeypatch, block):
+    """The per-sample values are made block by block (memory): tiny blocks give the same bits."""
+    paths = [REFERENCE_PATHS["zigzag"](paper), cycle_paths(paper, 90.0, 0.0)[0], reciprocating_path(paper, 6)]
+    dt = max(path.duration - path.first_contact_time() for path in paths) / 2000
+    whole = run_discrete(paper, paths, CYCLE_DX, dt)
+    monkeypatch.setattr(discrete, "_BLOCK", block)
+    blocks = run_discrete(paper, paths, CYCLE_DX, dt)
+    for key, values in whole.items():
+        assert np.asarray(blocks[key]).tobytes() == np.asarray(values).tobytes(), key
+
+
+def test_the_integer_scale_holds_every_position_exactly():
+    """Positions and caps become integers in units of 2**-bits with no rounding, from subnormal to
+    kilometres (the fast ldexp route and the exact fallback), and an integer sum comes back as the
+    correctly rounded float."""
+    values = np.array([0.0, 5e-324, -1e-300, 1e-20, 0.1, -1.5, 3.0e3, 2.0 / 3.0])
+    for chosen in (values[3:], values):  # bits small enough for ldexp; subnormals need the fallback
+        bits = discrete._scale_bits(chosen)
+        scaled = discrete._scaled(chosen, bits)
+        assert [discrete._unscaled(v, bits) for v in scaled] == chosen.tolist()
+        assert discrete._unscaled(sum(scaled), bits) == math.fsum(chosen)
+    assert discrete._scale_bits(values) > 1000 > discrete._scale_bits(values[3:])

@@ -135,6 +135,8 @@ EXTREMUM_QUANTITIES = ("normal_force", "tangential_force", "contact_radius", "co
                        "mean_pressure", "mean_shear_stress")
 #: Points per span at which :func:`extremum` brackets an extremum before refining it.
 EXTREMUM_GRID = 65
+#: Values within this share of the extremum are ties (rounding), of which :func:`extremum` reports the earliest.
+EXTREMUM_TIE = 1e-12
 #: Span-relative time accuracy of the refined extremum; the value is then exact to rounding
 #: (it is flat there: its error is second order in the time error).
 EXTREMUM_XTOL = 1e-12
@@ -180,7 +182,8 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
     (within one grid interval of the best point, at an end too); the spans that can hold the
     extremum (their best scanned value, raised by their largest change between neighbouring scan
     points, reaches the best scanned value of the run) are refined by a bounded Brent search to
-    :data:`EXTREMUM_XTOL` of the span's length. The means (``mean_pressure``, ``mean_shear_stress``)
+    :data:`EXTREMUM_XTOL` of the span's length. Of values equal to :data:`EXTREMUM_TIE` (a plateau) the
+    earliest time is reported, so that the time does not hang on rounding. The means (``mean_pressure``, ``mean_shear_stress``)
     are taken over the spans in contact.
 
     Parameters
@@ -202,13 +205,13 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
         values = sign * _quantity(filled, quantity)
         if not np.any(np.isfinite(values)):
             continue
-        i = int(np.nanargmax(values))
+        i = int(np.argmax(values >= np.nanmax(values) - EXTREMUM_TIE * np.nanmax(np.abs(values))))  # earliest of ties
         reach = float(np.nanmax(np.abs(np.diff(values)), initial=0.0)) if len(values) > 1 else 0.0
         candidates.append((float(values[i]), reach, index, i))
     if not candidates:
         return math.nan, math.nan
     best_scanned = max(value for value, *_ in candidates)
-    best_time, best_value = math.nan, -math.inf
+    results = []
     for value, reach, index, i in candidates:
         times = scan.times[index]
         time = float(times[i])
@@ -221,10 +224,12 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
             bracket = (times[max(i - 1, 0)], times[min(i + 1, len(times) - 1)])
             refined = optimize.minimize_scalar(objective, bounds=bracket, method="bounded",
                                                options={"xatol": EXTREMUM_XTOL * (times[-1] - times[0])})
-            if -refined.fun > value:
+            if -refined.fun > value * (1.0 + EXTREMUM_TIE) + EXTREMUM_TIE * abs(value):
                 time, value = float(refined.x), float(-refined.fun)
-        if value > best_value:
-            best_time, best_value = time, value
+        results.append((time, value))
+    best_value = max(value for _, value in results)
+    # the earliest time at which the extremum is reached (a plateau, e.g. F_x in full slip, is a tie to rounding)
+    best_time = min(time for time, value in results if value >= best_value - EXTREMUM_TIE * abs(best_value))
     return best_time, sign * best_value
 
 
