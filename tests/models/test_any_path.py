@@ -12,7 +12,8 @@ import pytest
 
 import mdr_events as me
 from mdr_events.analysis.convergence import HISTORY_QUANTITIES, history_differences, observed_orders
-from mdr_events.models.continuum import algebraic_tangential_force, evaluate, solve_path
+from mdr_events.models.continuum import Regime, algebraic_tangential_force, evaluate, solve_path
+from mdr_events.models.continuum.span import LinearForce
 from mdr_events.models.continuum.solution import tangential_work
 from mdr_events.models.paths import Path, exit_depth
 from mdr_events.theory import analytic
@@ -251,3 +252,20 @@ def test_a_path_that_starts_inside_the_elastomer_jumps_in_at_once(paper):
     np.testing.assert_allclose(end["normal_force"], float(analytic.normal_force(depth, a, paper)), rtol=1e-12)
     assert end["tangential_force"][0] == 0.0
     assert end["tangential_force"][1] == pytest.approx(paper.tau0 * math.pi * a**2, rel=EXACT)
+
+
+def test_pinned_spans_without_fronts_are_closed_forms(paper):
+    """A pinned span whose slip zones hold whole pieces has a constant dF_x/dt: its force is the line
+    F0 + 2G* (a − n₊ − n₋) v_x t and its events are the levels' linear crossings, without solve_ivp.
+    After a reversal at +X the anchors sit at X − ū: full slip at the negative cap comes after a
+    travel of exactly 2ū."""
+    d = paper.d_max
+    _, cap, _ = contact_at(paper, d)
+    X = 3 * cap
+    path = Path([(0, 0), (0, d), (X, d), (-X, d)], paper.v)
+    solution = solve_path(paper, path)
+    pinned = [span for span in solution.spans if span.regime is Regime.PINNED and span.t_end > span.t_start]
+    assert pinned and all(isinstance(span.interpolant, LinearForce) or span.interpolant is None for span in pinned)
+    reversal = times_of(solution, "tangential_reversal")[0]
+    negative_slip = [e.time for e in solution.events if e.kind.value == "full_slip" and e.direction == -1][0]
+    assert negative_slip - reversal == pytest.approx(2 * cap / paper.v, rel=1e-12)

@@ -29,6 +29,7 @@ import math
 from dataclasses import dataclass
 from typing import Callable, NamedTuple
 
+import numpy as np
 from scipy.integrate import solve_ivp
 
 from .anchors import AnchorMap
@@ -247,11 +248,46 @@ class SpanIntegrator:
                     met.add((Trigger.ZONE_LEAVES_EDGE, cap))
         return frozenset(met)
 
+    def force_is_linear(self) -> bool:
+        """A pinned span without fronts: the slip zones hold whole pieces and keep their sizes until an
+        event, so ``dF_x/dt = 2G* (a − n₊ − n₋) v_x`` is constant and the events' times are closed forms."""
+        return not self.moving and not self.positive.fronts and not self.negative.fronts
+
+    def linear_span(self, force: float) -> SpanOutcome:
+        """:meth:`force_is_linear`: the force and the first event in closed form (the levels are linear in
+        time; each cap's target is fixed), the span's interpolant a :class:`LinearForce`."""
+        a = self.span.pinned_radius
+        rate = self.G2 * (a - self.positive.size(0.0, a) - self.negative.size(0.0, a)) * self.segment.vx
+        t_stop, fired = self.stop, frozenset()
+        for event in self.event_functions():  # only ZONE_REACHES in a pinned span: linear in time
+            speed = event.trigger is Trigger.ZONE_REACHES and event.cap * self.segment.vx
+            if speed and speed > 0.0:
+                when = self.start - event(self.start) / speed
+                if when < t_stop:
+                    t_stop, fired = when, frozenset({event.key})
+                elif when == t_stop and fired:
+                    fired = fired | {event.key}
+        self.span.interpolant = LinearForce(self.start, t_stop, force, rate)
+        return SpanOutcome(fired, t_stop, force + rate * (t_stop - self.start), a)
+
     def force_is_constant(self) -> bool:
         """Nothing moves the force: a span of zero extent, or a pinned one without tangential motion or
         with every spring at one cap."""
         full = any(self.zones[cap].summary(self.a0).slip is Slip.FULL for cap in Cap)
         return self.start == self.stop or (not self.moving and (self.segment.vx == 0.0 or full))
+
+
+class LinearForce:
+    """The force of a span where it is linear in time, ``F(t) = F0 + rate (t − t0)``, called like
+    ``solve_ivp``'s dense output (``interpolant(t)[0]``) and with its breakpoints ``ts``."""
+
+    def __init__(self, t0: float, t1: float, force: float, rate: float):
+        self.t0, self.force, self.rate = t0, force, rate
+        self.ts = [t0, t1]
+
+    def __call__(self, t) -> np.ndarray:
+        """Shape ``(1,)`` for a scalar ``t``, ``(1, n)`` for ``n`` times, as ``OdeSolution``."""
+        return (self.force + self.rate * (np.asarray(t, dtype=float) - self.t0))[None, ...]
 
 
 def fired_events(events: list[EventFunction], roots: list, start: float, offset: float) -> tuple[float, frozenset]:
@@ -290,6 +326,8 @@ def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, slidin
         return SpanOutcome(met, t0, force, integrator.a0)
     if integrator.force_is_constant():
         return SpanOutcome(frozenset(), t1, force, integrator.radius_of(integrator.stop))
+    if integrator.force_is_linear():
+        return integrator.linear_span(force)
     start, stop = integrator.start, integrator.stop
     if not (math.isfinite(start) and math.isfinite(stop) and math.isfinite(force)):
         raise RuntimeError(f"the continuum method lost its state on [{t0!r}, {t1!r}] s ({span.regime.value}: from "
