@@ -19,7 +19,9 @@ the Δγ0 branch's fold a front stays at its piece's start, which is why a step 
 instead of shrinking its steps against a kink. The events (:class:`Trigger`): a cap's level reaching
 its layout's target (a zone opens, grows into a new piece, or covers the contact), the shrinking
 edge passing a front or a piece boundary, and a sliding cap's level turning back (re-stick). An event
-already met at the start (e.g. at a path corner) fires at once, with zero length.
+already met at the start (e.g. at a path corner) fires at once, with zero length. A pinned span
+whose slip zones hold whole pieces (no front inside a piece: fretting at a fixed contact) needs no
+integration: its force is linear in time and its events are closed forms (:class:`LinearForce`).
 """
 
 from __future__ import annotations
