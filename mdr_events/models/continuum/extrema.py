@@ -10,7 +10,7 @@ at zero radius) has ``F_N = F_x = A = 0`` just after its end, as the output samp
 
 from __future__ import annotations
 
-from .solution import PathSolution, extremum, scan_spans
+from .solution import EXTREMUM_TIE, PathSolution, extremum, scan_spans
 
 __all__ = ["EXTREMA_QUANTITIES", "EXTREMA_KINDS", "extremum_names", "solution_extrema"]
 
@@ -43,19 +43,25 @@ def solution_extrema(solution: PathSolution) -> dict[str, float]:
         ``q_min``, ``q_min_time``; times in s from first contact, like a simulation's ``time``. The
         extremum is the one of :func:`~mdr_events.models.continuum.solution.extremum` over the
         spans; if the run ends with the contact coming apart, the value 0 just after its end
-        (at ``solution.end_time``) is taken instead where it is strictly larger (max) or smaller
-        (min). Where a value is reached more than once, the time is the one ``extremum`` finds
+        (at ``solution.end_time``) is taken instead where it is larger (max) or smaller (min) by
+        more than rounding (``EXTREMUM_TIE`` of the quantity's size); a value within that rounding of
+        zero is reported as 0. Where a value is reached more than once, the time is the one ``extremum`` finds
         (the earliest span holding it).
     """
     out: dict[str, float] = {}
     scan = scan_spans(solution)
     for quantity in EXTREMA_QUANTITIES:
+        found = {kind: extremum(solution, quantity, largest, scan) for kind, largest in EXTREMA_KINDS.items()}
+        size = max(abs(value) for _, value in found.values())
         for kind, largest in EXTREMA_KINDS.items():
-            time, value = extremum(solution, quantity, largest, scan)
-            if solution.ended_by_contact:
-                after = VALUE_AFTER_CONTACT
-                if (after > value) if largest else (after < value):
-                    time, value = solution.end_time, after
+            time, value = found[kind]
+            # the 0 after the contact only where it is beyond the extremum by more than rounding (else the
+            # extremum's earlier time stays, as for every tie)
+            beyond = (VALUE_AFTER_CONTACT - value) * (1.0 if largest else -1.0)
+            if solution.ended_by_contact and beyond > EXTREMUM_TIE * size:
+                time, value = solution.end_time, VALUE_AFTER_CONTACT
+            if abs(value) <= EXTREMUM_TIE * size:
+                value = 0.0  # zero to rounding of the run's size (e.g. F_x at first contact): exactly zero
             value_name, time_name = extremum_names(quantity, kind)
             out[value_name], out[time_name] = float(value), float(time)
     return out

@@ -94,7 +94,7 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     if span.interpolant is None:
         force = np.full(t.shape, span.force)
     else:
-        force = span.interpolant(a if span.variable is Variable.RADIUS else t)[0]
+        force = span.interpolant(a / span.scale if span.variable is Variable.RADIUS else t)[0]
     out["tangential_force"] = force
     if sliding:
         zones = sum(span.anchors.zone_sizes(cap, x - cap * model.K * a, a) for cap in Cap)
@@ -205,7 +205,7 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
         values = sign * _quantity(filled, quantity)
         if not np.any(np.isfinite(values)):
             continue
-        i = int(np.argmax(values >= np.nanmax(values) - EXTREMUM_TIE * np.nanmax(np.abs(values))))  # earliest of ties
+        i = int(np.argmax(values >= np.nanmax(values) - EXTREMUM_TIE * np.nanmax(np.abs(values))))  # earliest tie
         reach = float(np.nanmax(np.abs(np.diff(values)), initial=0.0)) if len(values) > 1 else 0.0
         candidates.append((float(values[i]), reach, index, i))
     if not candidates:
@@ -228,8 +228,11 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
                 time, value = float(refined.x), float(-refined.fun)
         results.append((time, value))
     best_value = max(value for _, value in results)
-    # the earliest time at which the extremum is reached (a plateau, e.g. F_x in full slip, is a tie to rounding)
-    best_time = min(time for time, value in results if value >= best_value - EXTREMUM_TIE * abs(best_value))
+    # the earliest time at which the extremum is reached, to rounding of the quantity's size along the run (a
+    # plateau such as F_x in full slip, or a quantity that stays at zero, has ties that rounding would pick)
+    size = max(float(np.nanmax(np.abs(_quantity(filled, quantity)), initial=0.0)) for filled in scan.values)
+    best_time, best_value = min((time, value) for time, value in results
+                                if value >= best_value - EXTREMUM_TIE * max(size, abs(best_value)))
     return best_time, sign * best_value
 
 
@@ -250,7 +253,8 @@ def _scalar_quantity(solution: PathSolution, index: int, time: float, quantity: 
     if span.interpolant is None:
         force = span.force
     else:
-        force = float(span.interpolant(a if span.variable is Variable.RADIUS else solution.t_contact + time)[0])
+        force = float(span.interpolant(a / span.scale if span.variable is Variable.RADIUS
+                                       else solution.t_contact + time)[0])
     normal = float(analytic.normal_force(d, a, solution.params))
     area = math.pi * a * a
     values = {"normal_force": normal, "tangential_force": force, "contact_radius": a, "contact_area": area,
@@ -316,7 +320,7 @@ def tangential_work(solution: PathSolution, start: float | None = None, end: flo
             bounds = t_path
         else:
             rtol = solution.model.tolerances.radius_rtol
-            bounds = tuple(solution.model.branch(span.regime).radius(segment.d(t), rtol) for t in t_path)
+            bounds = tuple(solution.model.branch(span.regime).radius(segment.d(t), rtol) / span.scale for t in t_path)
         low, high = min(bounds), max(bounds)
         sign = 1.0 if bounds[1] >= bounds[0] else -1.0
         breaks = np.asarray(span.interpolant.ts)
@@ -329,9 +333,10 @@ def tangential_work(solution: PathSolution, start: float | None = None, end: flo
 
 
 def _tangential_rate(model: ContinuumModel, span: Span, var: np.ndarray) -> np.ndarray:
-    """``dx/d(var)`` of a span: ``v_x`` in time, ``v_x (∂d/∂a)/v_d`` in the radius."""
+    """``dx/d(var)`` of a span: ``v_x`` in time, ``v_x (∂d/∂a)/v_d`` times the scale in the radius over
+    :attr:`Span.scale`."""
     segment = span.segment
     if span.variable is Variable.TIME:
         return np.full(np.shape(var), segment.vx)
     branch = model.branch(span.regime)
-    return segment.vx * np.array([branch.slope(float(v)) for v in var]) / segment.vd
+    return segment.vx * span.scale * np.array([branch.slope(float(v) * span.scale) for v in var]) / segment.vd

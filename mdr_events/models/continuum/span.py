@@ -52,8 +52,9 @@ class Variable(enum.Enum):
 class Span:
     """An interval with one radius regime, as the solution keeps it.
 
-    ``interpolant`` is ``solve_ivp``'s dense output of ``F_x`` in :attr:`variable` (``None`` where the
-    force is the constant :attr:`force`); ``anchors`` is the anchor map during the span.
+    ``interpolant`` is ``solve_ivp``'s dense output of ``F_x`` in :attr:`variable` (the time, or the
+    radius over :attr:`scale`; ``None`` where the force is the constant :attr:`force`); ``anchors`` is the
+    anchor map during the span.
     """
 
     t_start: float
@@ -65,6 +66,8 @@ class Span:
     force: float = 0.0
     anchors: AnchorMap | None = None
     variable: Variable = Variable.TIME
+    #: the integration variable is the radius over this length (the time: 1)
+    scale: float = 1.0
 
 
 class Trigger(enum.Enum):
@@ -132,23 +135,29 @@ class SpanIntegrator:
         self.shrinking = span.regime is Regime.SHRINKING
         self.branch = model.branch(span.regime)
         t0, t1 = span.t_start, span.t_end
+        self.scale = 1.0
         if self.moving:
             rtol = model.tolerances.radius_rtol
-            self.start = self.branch.radius(self.segment.d(t0), rtol)
+            a_start = self.branch.radius(self.segment.d(t0), rtol)
             at_fold = self.shrinking and t1 == self.segment.time_at_depth(self.branch.jump_off_depth)
-            self.stop = self.branch.jump_off_radius if at_fold else self.branch.radius(self.segment.d(t1), rtol)
+            a_stop = self.branch.jump_off_radius if at_fold else self.branch.radius(self.segment.d(t1), rtol)
+            # the radius is integrated in units of its largest value on the span: solve_ivp finds an event's
+            # root to an absolute 4 eps of the variable, which is then 4 eps relative (not 4e-16 m)
+            self.scale = max(a_start, a_stop) if max(a_start, a_stop) > 0 else 1.0
+            self.start, self.stop = a_start / self.scale, a_stop / self.scale
+            self.a0 = a_start
         else:
             self.start, self.stop = t0, t1
-        self.a0 = self.start if self.moving else span.pinned_radius
+            self.a0 = span.pinned_radius
         self.x0 = self.segment.x(t0)
-        scale = length_scale(anchors, self.K, self.x0, self.a0, model.params.d_max)
+        lengths = length_scale(anchors, self.K, self.x0, self.a0, model.params.d_max)
         # Rising events cross a level a hair beyond zero: LEVEL_ULPS ulp of the lengths involved, just
         # above the rounding of x − Y ∓ ū (an event moves by about 1e-12 s at the paper's speed). A
         # function that starts at zero to rounding and first falls (the centre of a Hertz contact at
         # a = 0, the level right after a re-stick) is then not taken for a root at the start; one that
         # starts beyond it has crossed already and fires at once.
-        self.offset = LEVEL_ULPS * EPS * scale
-        self.edge_margin = EDGE_LEAVING_TOLERANCES * PIECE_SHARE * scale
+        self.offset = LEVEL_ULPS * EPS * lengths
+        self.edge_margin = EDGE_LEAVING_TOLERANCES * PIECE_SHARE * lengths
         self.zones = lay_out_zones(anchors, self.K, self.x0, self.a0, sliding, model.params.d_max)
         self.positive, self.negative = self.zones[Cap.POSITIVE], self.zones[Cap.NEGATIVE]
         self.sliding = dict(sliding)
@@ -156,10 +165,10 @@ class SpanIntegrator:
 
     # --- the state along the span ------------------------------------------------------------
     def time_of(self, var: float) -> float:
-        return self.segment.time_at_depth(self.branch.depth(var)) if self.moving else var
+        return self.segment.time_at_depth(self.branch.depth(var * self.scale)) if self.moving else var
 
     def radius_of(self, var: float) -> float:
-        return var if self.moving else self.span.pinned_radius
+        return var * self.scale if self.moving else self.span.pinned_radius
 
     def level(self, cap: Cap | float, var: float) -> float:
         """``x − cap · ū(a)``: where the anchors of the springs at ``cap`` sit."""
@@ -170,7 +179,7 @@ class SpanIntegrator:
         at the cap (moving radius: ``cap · v_x · ∂d/∂a − K v_d``, the rate times ``∂d/∂a > 0``)."""
         if not self.moving:
             return cap * self.segment.vx
-        return cap * self.segment.vx * self.branch.slope(var) - self.K * self.segment.vd
+        return cap * self.segment.vx * self.branch.slope(var * self.scale) - self.K * self.segment.vd
 
     def may_push(self, cap: Cap) -> bool:
         """Whether the cap's level can move towards its springs during the span: its rate is positive at
@@ -191,7 +200,7 @@ class SpanIntegrator:
         total = (positive - negative) * K + sticking * segment.vx * self.branch.slope(a) / segment.vd
         if self.shrinking:  # springs leave the edge with their shift
             total += self.edge_shift(x, a)
-        return [self.G2 * total]
+        return [self.G2 * total * self.scale]
 
     def edge_shift(self, x: float, a: float) -> float:
         """The shift of the spring at the edge: ``±ū`` at a cap, else ``x − Y(a)``."""
@@ -207,14 +216,14 @@ class SpanIntegrator:
 
     def leaves_edge(self, cap: Cap) -> Callable[[float], float]:
         zone, sign = self.zones[cap], float(cap)
-        return lambda var: zone.edge_value(var) - sign * self.level(sign, var) - self.edge_margin
+        return lambda var: zone.edge_value(self.radius_of(var)) - sign * self.level(sign, var) - self.edge_margin
 
     def turns(self, cap: Cap) -> Callable[[float], float]:
         sign = float(cap)
         return lambda var: self.rate(sign, var)
 
     def passes_piece(self, var: float) -> float:
-        return var - self.edge_start + self.offset
+        return self.radius_of(var) - self.edge_start + self.offset
 
     def event_functions(self) -> list[EventFunction]:
         """The events that can end the span."""
@@ -323,6 +332,7 @@ def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, slidin
         return SpanOutcome(frozenset(), t1, 0.0, radius_at(model, span, t1))
     integrator = SpanIntegrator(model, anchors, span, sliding)
     span.variable = Variable.RADIUS if integrator.moving else Variable.TIME
+    span.scale = integrator.scale
     met = integrator.met_at_start()
     if met:
         return SpanOutcome(met, t0, force, integrator.a0)
