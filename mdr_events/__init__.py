@@ -40,6 +40,7 @@ from mdr_events.models.paths import Path
 from mdr_events.theory.phase import phase_diagram
 from mdr_events.models.simulate import simulate
 from mdr_events.analysis.crosscheck import cross_check
+from mdr_events.analysis.validate import validate
 from mdr_events.app.study import load_study, run_study
 
 __all__ = [
@@ -54,6 +55,7 @@ __all__ = [
     "critical_shift",
     "fretting_dissipated_energy",
     "cross_check",
+    "validate",
     "d_crit",
     "jkr_contact_radius",
     "jkr_depth",

@@ -26,6 +26,7 @@ def results(paper_module):
                                         "fast": me.Path([(0, 0), (1e-4, 3e-4), (1e-4, -1e-4)], 2 * p.v)},
                                     dx=4e-6, n_steps=500),
         "cross_check": me.cross_check(p, "A", (10.0, 40.0), dx=4e-6, n_steps=1000),
+        "validation": me.validate(me.simulate(p, "A", alpha=[40.0], dx=4e-6, n_steps=1000).isel(alpha=0), p, "A", 40.0),
     }
 
 

@@ -1,0 +1,270 @@
+"""Validate a discrete simulator — yours or ours — against the exact continuum: :func:`validate`.
+
+The candidate (any program's output: :func:`mdr_events.io.candidates.read_candidate`) is compared
+sample by sample with the continuum solution (:func:`mdr_events.models.continuum.solve_path`) evaluated
+at the candidate's own times, and event by event with the continuum's event log. The report is an
+``xarray.Dataset``.
+
+Samples left out (``left_out``, coded, and counted):
+
+- ``1`` outside the runs: after the end of either run (``nan``), not counted as left out;
+- ``2`` contact differs: one method in contact and the other not. The jump-in and the jump-off are
+  discontinuities in time that a discrete model meets up to one step (and one spring) apart, so a
+  pointwise difference there is the whole jump however fine the model;
+- ``3`` straddles an event: the first sample after a path corner (a time-stepping model moves
+  straight from one sample to the next and cuts the corner) or a contact made or lost.
+
+Norms over the samples compared in contact, each relative to the range (max − min) of the exact
+quantity there: ``max_error`` (max |Δ|), ``rms_error`` (root mean square) and ``l1_error``
+(time-weighted mean of |Δ|, trapezoid rule over the compared samples).
+
+Events found in the candidate by these rules (``nan`` where the candidate lacks what a rule needs):
+
+- **slip onset**: the first sample with ``sliding_fraction > 0``;
+- **full slip**: the first sample with ``sliding_fraction >= 1``, or without a sliding fraction, with
+  ``|F_x| >= (1 − FULL_SLIP_SHARE) τ0 A``;
+- **start of detachment**: the first sample after the largest contact area (or radius) at which it is
+  smaller than that largest value;
+- **pull-off**: the first sample without contact after a contact (contact: ``A > 0``, or ``a > 0``, or
+  ``F_N ≠ 0`` without either); its force is ``F_N`` of the last sample in contact.
+
+Each is compared with the first event of that kind in the continuum's log (time and depth; the depth
+of a candidate event is the path's depth at its time).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Mapping
+
+import numpy as np
+import xarray as xr
+
+from mdr_events.io.candidates import Candidate, read_candidate
+from mdr_events.io.datasets import register_schema, stamp
+from mdr_events.models.continuum import Tolerances, evaluate, solve_path
+from mdr_events.models.paths import Path
+from mdr_events.models.simulate import scenario_paths
+from mdr_events.parameters import Parameters
+from mdr_events.theory import analytic
+
+__all__ = ["validate", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
+
+#: The ``content`` attribute of a validation report.
+VALIDATION_CONTENT = "validation of a simulator against the exact continuum"
+#: ``left_out`` codes -> meaning.
+LEFT_OUT_CODES = {0: "compared", 1: "outside the runs", 2: "contact differs", 3: "straddles an event"}
+#: Events compared, in the order of the report's ``event`` dimension.
+VALIDATED_EVENTS = ("slip_onset", "full_slip", "detachment_starts", "pull_off")
+#: A candidate without a sliding fraction is in full slip where |F_x| reaches this share below τ0 A.
+FULL_SLIP_SHARE = 1e-3
+#: Continuum events after which the first sample is left out (a corner cut, a contact made or lost).
+STRADDLED_EVENTS = ("corner", "tangential_reversal", "first_contact", "re_contact", "pull_off", "contact_ends")
+#: Quantities compared sample by sample (the sliding fraction only serves the events).
+COMPARED = ("normal_force", "tangential_force", "contact_area", "contact_radius")
+UNITS = {"normal_force": "N", "tangential_force": "N", "contact_area": "m2", "contact_radius": "m"}
+#: The time origins :func:`validate` accepts besides a number.
+TIME_ORIGINS = ("first_contact", "path_start")
+
+
+def _path_of(params: Parameters, path, alpha) -> Path:
+    if isinstance(path, Path):
+        if alpha is not None:
+            raise ValueError(f"alpha={alpha!r} is not allowed with a Path (its waypoints fix the motion)")
+        return path
+    if alpha is None or np.ndim(alpha) != 0:
+        raise ValueError(f"alpha={alpha!r} is not allowed with scenario {path!r}; allowed: one angle in degrees")
+    paths, _ = scenario_paths(params, path, [alpha])
+    return paths[0]
+
+
+def _times_from_contact(candidate: Candidate, path: Path, time_origin) -> np.ndarray:
+    if isinstance(time_origin, str):
+        if time_origin not in TIME_ORIGINS:
+            raise ValueError(f"time_origin={time_origin!r} is not allowed; allowed: {', '.join(map(repr, TIME_ORIGINS))} "
+                             "or the candidate's time of first contact (s)")
+        return candidate.time - (path.first_contact_time() if time_origin == "path_start" else 0.0)
+    if isinstance(time_origin, bool) or not isinstance(time_origin, (int, float)) or not math.isfinite(time_origin):
+        raise ValueError(f"time_origin={time_origin!r} is not allowed; allowed: {', '.join(map(repr, TIME_ORIGINS))} "
+                         "or the candidate's time of first contact (s), a finite number")
+    return candidate.time - float(time_origin)
+
+
+def _in_contact(quantities: Mapping[str, np.ndarray]) -> np.ndarray:
+    """Where a run is in contact: ``A > 0``, else ``a > 0``, else ``F_N ≠ 0`` (``nan``: unknown, False)."""
+    for name in ("contact_area", "contact_radius"):
+        if name in quantities:
+            return np.nan_to_num(quantities[name]) > 0
+    return np.nan_to_num(quantities["normal_force"]) != 0 if "normal_force" in quantities else \
+        np.nan_to_num(quantities["tangential_force"]) != 0
+
+
+def _left_out(times: np.ndarray, exact: dict, candidate: dict, events) -> np.ndarray:
+    codes = np.zeros(times.shape, dtype=np.int8)
+    finite = np.all([np.isfinite(values) for values in candidate.values()], axis=0) & np.isfinite(
+        exact["contact_radius"])
+    codes[~finite] = 1
+    differs = finite & (_in_contact(candidate) != (exact["contact_radius"] > 0))
+    codes[differs] = 2
+    for event in events:
+        if event.kind.value in STRADDLED_EVENTS:
+            after = int(np.searchsorted(times, event.time, side="left"))
+            if after < len(times) and times[after] > event.time and codes[after] == 0 and after > 0:
+                codes[after] = 3
+    return codes
+
+
+def _norms(times, difference, exact, compared) -> tuple[float, float, float]:
+    """max, RMS and time-weighted L1 of the difference over the compared samples, each relative to the
+    exact quantity's range there."""
+    if not np.any(compared):
+        return math.nan, math.nan, math.nan
+    d, e, t = difference[compared], exact[compared], times[compared]
+    spread = float(np.max(e) - np.min(e)) or float(np.max(np.abs(e))) or 1.0
+    l1 = float(np.trapezoid(np.abs(d), t) / (t[-1] - t[0])) if t.size > 1 else float(abs(d[0]))
+    return float(np.max(np.abs(d))) / spread, float(np.sqrt(np.mean(d**2))) / spread, l1 / spread
+
+
+def _candidate_events(times, quantities, params) -> dict[str, float]:
+    """Times of the events by the module's rules (``nan`` where not found or not determinable)."""
+    out = {name: math.nan for name in VALIDATED_EVENTS}
+    out["pull_off_force"] = math.nan
+    sliding = quantities.get("sliding_fraction")
+    if sliding is not None:
+        onset = np.flatnonzero(np.nan_to_num(sliding) > 0)
+        full = np.flatnonzero(np.nan_to_num(sliding) >= 1)
+        out["slip_onset"] = float(times[onset[0]]) if onset.size else math.nan
+        out["full_slip"] = float(times[full[0]]) if full.size else math.nan
+    elif "tangential_force" in quantities and ("contact_area" in quantities or "contact_radius" in quantities):
+        area = quantities.get("contact_area", math.pi * quantities.get("contact_radius", np.nan) ** 2)
+        full = np.flatnonzero((area > 0) & (np.abs(quantities["tangential_force"])
+                                            >= (1 - FULL_SLIP_SHARE) * params.tau0 * area))
+        out["full_slip"] = float(times[full[0]]) if full.size else math.nan
+    size = quantities.get("contact_area", quantities.get("contact_radius"))
+    if size is not None and np.any(np.isfinite(size)):
+        largest = int(np.nanargmax(size))
+        smaller = np.flatnonzero(np.nan_to_num(size[largest:], nan=np.inf) < size[largest])
+        out["detachment_starts"] = float(times[largest + smaller[0]]) if smaller.size else math.nan
+    contact = _in_contact(quantities)
+    lost = np.flatnonzero(contact[:-1] & ~contact[1:])
+    if lost.size:
+        out["pull_off"] = float(times[lost[0] + 1])
+        if "normal_force" in quantities:
+            out["pull_off_force"] = float(quantities["normal_force"][lost[0]])
+    return out
+
+
+def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
+             names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
+             time_origin="first_contact", tolerance: float = 1e-3,
+             tolerances: Tolerances = Tolerances()) -> xr.Dataset:
+    """Compare a simulator's output with the exact continuum on the same path, sample and event by event.
+
+    Parameters
+    ----------
+    candidate : xarray.Dataset, mapping of arrays, or the path of a CSV / netCDF file
+        Time and at least one of ``normal_force``, ``tangential_force``, ``contact_area``,
+        ``contact_radius`` (and optionally ``sliding_fraction``, for the slip events);
+        :func:`mdr_events.io.candidates.read_candidate`.
+    params : Parameters
+    path : Path or {"A", "B", "B+"}
+        The path the candidate ran; a scenario needs ``alpha`` (one angle, degrees).
+    names, units : mapping, optional
+        Quantity -> your column name; quantity -> your unit (``"mN"``, ``"ms"``, ``"um"``, ...).
+    time_origin : "first_contact", "path_start" or float
+        What the candidate's time counts from: the first contact (default), the path's start, or a
+        number: the candidate's time at first contact (s).
+    tolerance : float
+        The verdict's bound on each quantity's ``max_error`` (relative to its range).
+    tolerances : Tolerances
+        The continuum's solver tolerances.
+
+    Returns
+    -------
+    xarray.Dataset
+        Along ``time`` (the candidate's samples, s from first contact): ``candidate_<q>``, ``exact_<q>``,
+        ``difference_<q>`` (``nan`` where left out), ``left_out`` (:data:`LEFT_OUT_CODES`); along
+        ``quantity``: ``max_error``, ``rms_error``, ``l1_error``, ``within_tolerance``; along ``event``
+        (:data:`VALIDATED_EVENTS`): the times and depths, exact and candidate, and their errors;
+        ``pull_off_force_*``; the counts of samples compared and left out; the attribute ``verdict``
+        (``"pass"``: every quantity within ``tolerance``).
+    """
+    if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and tolerance > 0):
+        raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a number > 0")
+    the_path = _path_of(params, path, alpha)
+    read = read_candidate(candidate, names, units)
+    times = _times_from_contact(read, the_path, time_origin)
+    solution = solve_path(params, the_path, tolerances)
+    exact = evaluate(solution, np.maximum(times, 0.0))
+    before = times < 0
+    for name in ("normal_force", "tangential_force", "contact_radius"):
+        exact[name][before] = 0.0
+    exact["contact_area"] = math.pi * exact["contact_radius"] ** 2
+    quantities = {name: values for name, values in read.quantities.items()}
+    if not np.any(_in_contact(quantities)):
+        raise ValueError(f"{read.source}: the candidate never touches (no sample in contact); allowed: a run "
+                         "that makes contact")
+    codes = _left_out(times, exact, quantities, solution.events)
+    in_contact = (exact["contact_radius"] > 0) & _in_contact(quantities)
+    compared = (codes == 0) & in_contact
+
+    data = {"left_out": (("time",), codes, {"units": "1", "long_name": "why a sample is left out",
+                                            "flag_values": np.array(list(LEFT_OUT_CODES), dtype=np.int8),
+                                            "flag_meanings": " ".join(m.replace(" ", "_")
+                                                                      for m in LEFT_OUT_CODES.values())})}
+    present = [name for name in COMPARED if name in quantities]
+    norms = {"max_error": [], "rms_error": [], "l1_error": []}
+    for name in present:
+        difference = np.where(compared, quantities[name] - exact[name], np.nan)
+        data[f"candidate_{name}"] = (("time",), quantities[name], {"units": UNITS[name], "long_name": f"candidate {name}"})
+        data[f"exact_{name}"] = (("time",), exact[name], {"units": UNITS[name], "long_name": f"exact {name} (continuum)"})
+        data[f"difference_{name}"] = (("time",), difference,
+                                      {"units": UNITS[name], "long_name": f"candidate − exact {name}, compared samples"})
+        for key, value in zip(norms, _norms(times, np.nan_to_num(difference), exact[name], compared)):
+            norms[key].append(value)
+    for key, values in norms.items():
+        data[key] = (("quantity",), np.array(values), {"units": "1", "long_name": f"{key.replace('_', ' ')} relative "
+                                                       "to the exact quantity's range over the compared samples"})
+    within = np.array([value <= tolerance for value in norms["max_error"]], dtype=np.int8)
+    data["within_tolerance"] = (("quantity",), within, {"units": "1", "long_name": "max_error <= tolerance (1: yes)"})
+
+    found = _candidate_events(times, quantities, params)
+    first = {}
+    for event in solution.events:
+        kind = "pull_off" if event.kind.value == "contact_ends" else event.kind.value
+        first.setdefault(kind, event)
+    exact_times = np.array([first[kind].time if kind in first else math.nan for kind in VALIDATED_EVENTS])
+    exact_depths = np.array([first[kind].depth if kind in first else math.nan for kind in VALIDATED_EVENTS])
+    candidate_times = np.array([found[kind] for kind in VALIDATED_EVENTS])
+    start = the_path.first_contact_time()
+    candidate_depths = np.where(np.isfinite(candidate_times),
+                                the_path.position(start + np.nan_to_num(candidate_times))[1], np.nan)
+    for key, values, unit, text in (
+            ("event_time_exact", exact_times, "s", "time of the event, continuum"),
+            ("event_time_candidate", candidate_times, "s", "time of the event in the candidate (module rules)"),
+            ("event_time_error", candidate_times - exact_times, "s", "candidate − exact event time"),
+            ("event_depth_exact", exact_depths, "m", "depth at the event, continuum"),
+            ("event_depth_candidate", candidate_depths, "m", "depth at the candidate's event"),
+            ("event_depth_error", candidate_depths - exact_depths, "m", "candidate − exact event depth")):
+        data[key] = (("event",), values, {"units": unit, "long_name": text})
+    pull = first.get("pull_off")
+    exact_force = float(analytic.normal_force(pull.depth, pull.radius, params)) if pull else math.nan
+    data["pull_off_force_exact"] = ((), exact_force, {"units": "N", "long_name": "F_N at the pull-off, continuum"})
+    data["pull_off_force_candidate"] = ((), found["pull_off_force"],
+                                        {"units": "N", "long_name": "F_N at the candidate's last sample in contact"})
+    data["samples_compared"] = ((), int(np.count_nonzero(compared)), {"units": "1", "long_name": "samples compared"})
+    data["samples_left_out"] = ((), int(np.count_nonzero(codes > 1)),
+                                {"units": "1", "long_name": "samples of the runs left out (contact differs, straddles an event)"})
+    coords = {"time": ("time", times, {"units": "s", "long_name": "time from first contact"}),
+              "quantity": ("quantity", np.array(present), {"units": "1", "long_name": "quantity compared"}),
+              "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
+    verdict = "pass" if within.size and np.all(within) else "fail"
+    attrs = dict(content=VALIDATION_CONTENT, candidate_source=read.source, tolerance=float(tolerance),
+                 time_origin=str(time_origin), verdict=verdict, path_waypoints=the_path.describe(),
+                 path_speed=the_path.speed)
+    return stamp(xr.Dataset(data, coords=coords), params, **attrs)
+
+
+register_schema(VALIDATION_CONTENT, {"left_out": ("time",), "max_error": ("quantity",), "rms_error": ("quantity",),
+                                     "l1_error": ("quantity",), "within_tolerance": ("quantity",),
+                                     "event_time_exact": ("event",), "event_time_candidate": ("event",)})

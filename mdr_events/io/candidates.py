@@ -1,0 +1,155 @@
+"""Reading a simulator's output to validate it: a Dataset, a mapping of arrays, or a CSV / netCDF file
+from any program, with the user's own column names and units.
+
+:func:`read_candidate` returns a :class:`Candidate`: the time and the quantities it found, in SI units.
+Errors name the source, the column and what is allowed (the columns found among them).
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import os
+from pathlib import Path
+from typing import Mapping, NamedTuple
+
+import numpy as np
+import xarray as xr
+
+__all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate"]
+
+#: The quantities a candidate may hold, with their SI unit; ``time`` is required, and at least one other.
+CANDIDATE_QUANTITIES: dict[str, str] = {
+    "time": "s",
+    "normal_force": "N",
+    "tangential_force": "N",
+    "contact_area": "m2",
+    "contact_radius": "m",
+    "sliding_fraction": "1",
+}
+
+#: Units understood, by the SI unit they convert to: name -> factor to SI.
+UNITS: dict[str, dict[str, float]] = {
+    "s": {"s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "min": 60.0, "h": 3600.0},
+    "N": {"N": 1.0, "mN": 1e-3, "uN": 1e-6, "µN": 1e-6, "kN": 1e3},
+    "m": {"m": 1.0, "mm": 1e-3, "um": 1e-6, "µm": 1e-6, "nm": 1e-9},
+    "m2": {"m2": 1.0, "m^2": 1.0, "mm2": 1e-6, "mm^2": 1e-6, "um2": 1e-12, "µm2": 1e-12, "um^2": 1e-12,
+           "µm^2": 1e-12},
+    "1": {"1": 1.0, "": 1.0, "%": 1e-2},
+}
+
+
+class Candidate(NamedTuple):
+    """A simulator's output in SI units: ``time`` (s) and the quantities found (name -> array)."""
+
+    time: np.ndarray
+    quantities: dict[str, np.ndarray]
+    source: str  #: where it came from, for messages
+
+
+def _factor(quantity: str, unit: str, source: str) -> float:
+    allowed = UNITS[CANDIDATE_QUANTITIES[quantity]]
+    if unit not in allowed:
+        raise ValueError(f"{source}: units[{quantity!r}]={unit!r} is not allowed; allowed: "
+                         f"{', '.join(repr(name) for name in allowed)}")
+    return allowed[unit]
+
+
+def _read_csv(path: Path) -> dict[str, np.ndarray]:
+    with open(path, newline="", encoding="utf-8") as handle:
+        rows = list(csv.reader(row for row in handle if not row.lstrip().startswith("#")))
+    if not rows:
+        raise ValueError(f"{path}: the file is empty; allowed: a CSV file with a header row")
+    header = [name.strip() for name in rows[0]]
+    columns: dict[str, list[float]] = {name: [] for name in header}
+    for number, row in enumerate(rows[1:], start=2):
+        if len(row) != len(header):
+            raise ValueError(f"{path}: line {number} has {len(row)} fields; allowed: {len(header)} as in the header")
+        for name, text in zip(header, row):
+            try:
+                columns[name].append(float(text) if text.strip() else math.nan)
+            except ValueError:
+                raise ValueError(f"{path}: line {number}, column {name!r}: {text!r} is not a number") from None
+    return {name: np.array(values) for name, values in columns.items()}
+
+
+def _columns_and_units(candidate, source: str) -> tuple[dict[str, np.ndarray], dict[str, str]]:
+    """The candidate's columns and the units they declare (a Dataset's or netCDF file's ``units``)."""
+    if isinstance(candidate, (str, os.PathLike)):
+        path = Path(candidate)
+        if not path.is_file():
+            raise ValueError(f"candidate={str(candidate)!r}: no such file; allowed: a CSV or netCDF file, a Dataset or "
+                             "a mapping of arrays")
+        if path.suffix.lower() == ".csv":
+            return _read_csv(path), {}
+        try:
+            with xr.open_dataset(path) as opened:
+                candidate = opened.load()
+        except Exception as error:  # noqa: BLE001 - any reader failure is a file the user must fix
+            raise ValueError(f"{path}: cannot be read as netCDF ({error}); allowed: a CSV file with a header "
+                             "or a netCDF file") from None
+    if isinstance(candidate, xr.Dataset):
+        names = list(candidate.variables)
+        return ({name: np.asarray(candidate[name].values, dtype=float).ravel() for name in names
+                 if candidate[name].ndim <= 1 and np.issubdtype(candidate[name].dtype, np.number)},
+                {name: str(candidate[name].attrs["units"]) for name in names if "units" in candidate[name].attrs})
+    if isinstance(candidate, Mapping):
+        return {str(name): np.asarray(values, dtype=float).ravel() for name, values in candidate.items()}, {}
+    raise TypeError(f"candidate of type {type(candidate).__name__} is not allowed; allowed: an xarray.Dataset, a "
+                    "mapping of arrays, or the path of a CSV or netCDF file")
+
+
+def read_candidate(candidate, names: Mapping[str, str] | None = None,
+                   units: Mapping[str, str] | None = None) -> Candidate:
+    """Read a simulator's output: time and any of :data:`CANDIDATE_QUANTITIES`, converted to SI.
+
+    Parameters
+    ----------
+    candidate : xarray.Dataset, mapping of str to array, str or os.PathLike
+        The output: a Dataset (variables by name), a mapping of arrays, or a file (``.csv`` with a header
+        row, lines starting with ``#`` skipped; anything else is read as netCDF).
+    names : mapping, optional
+        Quantity -> the candidate's column name, for columns not named as in :data:`CANDIDATE_QUANTITIES`.
+    units : mapping, optional
+        Quantity -> unit (:data:`UNITS`, e.g. ``"mN"``, ``"ms"``, ``"um"``); default the ``units`` attribute of
+        a Dataset's or netCDF file's variable, else SI.
+
+    Raises
+    ------
+    ValueError
+        Naming the source and the column: a missing time or no quantity (listing the columns found), a
+        unit that is not allowed, columns of different lengths, times that are not finite or not increasing.
+    """
+    source = str(candidate) if isinstance(candidate, (str, os.PathLike)) else f"candidate ({type(candidate).__name__})"
+    columns, declared = _columns_and_units(candidate, source)
+    names = dict(names or {})
+    units = dict(units or {})
+    for quantity in list(names) + list(units):
+        if quantity not in CANDIDATE_QUANTITIES:
+            raise ValueError(f"{source}: {quantity!r} in names/units is not allowed; allowed: "
+                             f"{', '.join(CANDIDATE_QUANTITIES)}")
+    found: dict[str, np.ndarray] = {}
+    for quantity in CANDIDATE_QUANTITIES:
+        column = names.get(quantity, quantity)
+        if column not in columns:
+            if quantity in names:
+                raise ValueError(f"{source}: names[{quantity!r}]={column!r} is not a column; columns found: "
+                                 f"{', '.join(columns) or 'none'}")
+            continue
+        unit = units.get(quantity, declared.get(column, CANDIDATE_QUANTITIES[quantity]))
+        found[quantity] = columns[column] * _factor(quantity, unit, source)
+    if "time" not in found:
+        raise ValueError(f"{source}: no time column; columns found: {', '.join(columns) or 'none'}; allowed: a column "
+                         "'time' or names={'time': <your column>}")
+    time = found.pop("time")
+    if not found:
+        raise ValueError(f"{source}: none of {', '.join(q for q in CANDIDATE_QUANTITIES if q != 'time')} found; "
+                         f"columns found: {', '.join(columns)}; name yours with names={{quantity: column}}")
+    for quantity, values in found.items():
+        if values.shape != time.shape:
+            raise ValueError(f"{source}: column {names.get(quantity, quantity)!r} has {values.size} values and the "
+                             f"time {time.size}; allowed: the same length")
+    if time.size < 2 or not np.all(np.isfinite(time)) or np.any(np.diff(time) <= 0):
+        raise ValueError(f"{source}: column {names.get('time', 'time')!r} is not allowed as the time; allowed: at "
+                         "least two finite, strictly increasing values")
+    return Candidate(time, found, source)

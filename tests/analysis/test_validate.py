@@ -1,0 +1,139 @@
+"""``validate``: a simulator's output against the exact continuum, and reading it from any program."""
+
+import math
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import mdr_events as me
+from mdr_events.analysis.convergence import history_differences
+from mdr_events.io.candidates import read_candidate
+
+ALPHA = 20.0
+DX = 2e-6
+
+
+@pytest.fixture(scope="module")
+def discrete(paper):
+    """The package's own spring model, scenario A at 20°: a simulator to validate (one case)."""
+    return me.simulate(paper, "A", alpha=[ALPHA], dx=DX, dt=0.5 * DX / paper.v)
+
+
+@pytest.fixture(scope="module")
+def report(paper, discrete):
+    return me.validate(discrete.isel(alpha=0), paper, "A", ALPHA)
+
+
+def test_the_errors_are_those_of_an_independent_route(paper, discrete, report):
+    """max |candidate − exact| equals convergence.history_differences' (another route over the same samples:
+    the continuum run by simulate at the discrete times) to the solver's tolerance; the norms are ordered
+    L1 <= RMS <= max."""
+    continuum = me.simulate(paper, "A", alpha=[ALPHA], method="continuum", t=discrete["time"].values)
+    reference = history_differences(discrete, continuum)
+    for name in ("normal_force", "tangential_force", "contact_area"):
+        exact = report[f"exact_{name}"].values
+        compared = np.isfinite(report[f"difference_{name}"].values)
+        spread = np.ptp(exact[compared])
+        absolute = float(report["max_error"].sel(quantity=name)) * spread
+        assert absolute == pytest.approx(reference[name][0] * np.max(np.abs(continuum[name].values[0][compared])),
+                                         rel=1e-6), name
+        row = report.sel(quantity=name)
+        assert float(row["l1_error"]) <= float(row["rms_error"]) <= float(row["max_error"])
+
+
+def test_a_right_simulator_passes_and_a_wrong_one_fails(paper, discrete, report):
+    """At Δx = 2 µm the spring model is within 1e-3 of every quantity's range; with its tangential stiffness
+    5 % too high (F_x × 1.05) F_x fails and the rest still pass."""
+    assert report.attrs["verdict"] == "pass" and np.all(report["within_tolerance"].values == 1)
+    wrong = discrete.isel(alpha=0).copy()
+    wrong["tangential_force"] = 1.05 * wrong["tangential_force"]
+    failed = me.validate(wrong, paper, "A", ALPHA)
+    assert failed.attrs["verdict"] == "fail"
+    assert int(failed["within_tolerance"].sel(quantity="tangential_force")) == 0
+    assert int(failed["within_tolerance"].sel(quantity="normal_force")) == 1
+
+
+def test_events_are_found_within_a_step(paper, discrete, report):
+    """Slip onset, full slip, start of detachment and pull-off of the spring model lie within a few time
+    steps and spacings of the continuum's (first order: a spring of Δx at the cap K Δx of a shift)."""
+    step = float(discrete["time"].values[1] - discrete["time"].values[0])
+    errors = dict(zip(report["event"].values, report["event_time_error"].values))
+    assert set(errors) == {"slip_onset", "full_slip", "detachment_starts", "pull_off"}
+    for kind, error in errors.items():
+        assert np.isfinite(error), kind
+    assert abs(errors["pull_off"]) <= 2 * step
+    assert abs(errors["detachment_starts"]) <= 2 * step
+    # slip onset and full slip: the spring's shift is compared with the cap of a radius known to Δx/2
+    cap_error = float(me.critical_shift(DX, paper)) / (paper.v * math.cos(math.radians(ALPHA)))
+    assert abs(errors["slip_onset"]) <= 2 * step + 4 * cap_error
+    assert float(report["pull_off_force_exact"]) == pytest.approx(
+        float(me.analytic.normal_force(report["event_depth_exact"].sel(event="pull_off"),
+                                       me.jump_off(paper, paper.dgamma1)["contact_radius"], paper)), rel=1e-9)
+
+
+def test_a_csv_in_your_units_with_your_names_gives_the_same_report(paper, discrete, report, tmp_path):
+    """The same run as a CSV in ms, mN and mm² with other column names and a header comment: the same
+    errors (to the CSV's 17 digits)."""
+    run = discrete.isel(alpha=0)
+    path = tmp_path / "run.csv"
+    columns = {"t_ms": run["time"].values * 1e3, "Fn_mN": run["normal_force"].values * 1e3,
+               "Ft_mN": run["tangential_force"].values * 1e3, "A_mm2": run["contact_area"].values * 1e6}
+    with open(path, "w") as handle:
+        handle.write("# my simulator\n" + ",".join(columns) + "\n")
+        for row in zip(*columns.values()):
+            handle.write(",".join(f"{value:.17g}" for value in row) + "\n")
+    names = {"time": "t_ms", "normal_force": "Fn_mN", "tangential_force": "Ft_mN", "contact_area": "A_mm2"}
+    units = {"time": "ms", "normal_force": "mN", "tangential_force": "mN", "contact_area": "mm2"}
+    from_csv = me.validate(path, paper, "A", ALPHA, names=names, units=units)
+    for name in ("normal_force", "tangential_force", "contact_area"):
+        assert float(from_csv["max_error"].sel(quantity=name)) == pytest.approx(
+            float(report["max_error"].sel(quantity=name)), rel=1e-9)
+
+
+def test_time_origins_agree(paper, discrete, report):
+    """Times counted from the path's start, or from 3 s before first contact, give the same report."""
+    run = discrete.isel(alpha=0)
+    shifted = {"time": run["time"].values + 3.0, "normal_force": run["normal_force"].values,
+               "tangential_force": run["tangential_force"].values, "contact_area": run["contact_area"].values}
+    offset = me.validate(shifted, paper, "A", ALPHA, time_origin=3.0)
+    same = report["max_error"].sel(quantity=offset["quantity"].values).values
+    np.testing.assert_allclose(offset["max_error"].values, same, rtol=1e-9)
+    path = me.Path.scenario_A(ALPHA, paper)
+    start = dict(shifted, time=run["time"].values + path.first_contact_time())
+    from_start = me.validate(start, paper, path, time_origin="path_start")
+    np.testing.assert_allclose(from_start["max_error"].values, same, rtol=1e-9)
+
+
+def test_the_report_is_a_labelled_result_that_round_trips(report, tmp_path):
+    for name, variable in report.variables.items():
+        assert "units" in variable.attrs and "long_name" in variable.attrs, name
+    written = me.write_netcdf(report, tmp_path / "report.nc")
+    xr.testing.assert_identical(me.open_result(written), report)
+
+
+@pytest.mark.parametrize("candidate, match", [
+    ({"t": [0.0, 1.0], "normal_force": [0.0, 1.0]}, "no time column; columns found: t, normal_force"),
+    ({"time": [0.0, 1.0], "force": [0.0, 1.0]}, "none of .* found; columns found: time, force"),
+    ({"time": [0.0, 1.0, 0.5], "normal_force": [0.0, 1.0, 2.0]}, "strictly increasing"),
+    ({"time": [0.0, 1.0], "normal_force": [0.0, 1.0, 2.0]}, "has 3 values and the time 2"),
+])
+def test_bad_candidates_are_named(candidate, match):
+    with pytest.raises(ValueError, match=match):
+        read_candidate(candidate)
+
+
+def test_bad_names_units_and_arguments(paper, discrete):
+    run = discrete.isel(alpha=0)
+    with pytest.raises(ValueError, match=r"units\['normal_force'\]='lbf' is not allowed; allowed: 'N'"):
+        read_candidate(run, units={"normal_force": "lbf"})
+    with pytest.raises(ValueError, match=r"names\['normal_force'\]='Fn' is not a column; columns found"):
+        read_candidate(run, names={"normal_force": "Fn"})
+    with pytest.raises(ValueError, match="alpha=None is not allowed with scenario 'A'"):
+        me.validate(run, paper, "A")
+    with pytest.raises(ValueError, match="time_origin='contact' is not allowed"):
+        me.validate(run, paper, "A", ALPHA, time_origin="contact")
+    with pytest.raises(ValueError, match="never touches"):
+        me.validate({"time": [0.0, 1.0], "normal_force": [0.0, 0.0]}, paper, "A", ALPHA)
+    with pytest.raises(TypeError, match="candidate of type int is not allowed"):
+        me.validate(3, paper, "A", ALPHA)
