@@ -346,11 +346,12 @@ def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, slidin
                            f"{start!r} to {stop!r}, F_x = {force!r}); please report the parameters and path")
     events = integrator.event_functions()
     tolerances = model.tolerances
-    # at most a share 1/MIN_STEPS_PER_SPAN of the span per step: the smooth continuation of a slip zone ends
-    # where a front's piece meets the branch's fold, and one step across the whole span can reach it
+    # with a front in a piece, at most a share 1/MIN_STEPS_PER_SPAN of the span per step: the front's smooth
+    # continuation ends where its piece meets the branch's fold, and one step across the whole span can reach it
+    fronts = integrator.positive.fronts or integrator.negative.fronts
     solution = solve_ivp(integrator.rhs, (start, stop), [force], method="DOP853", rtol=tolerances.rtol,
                          atol=tolerances.atol, dense_output=True, events=events or None,
-                         max_step=abs(stop - start) / MIN_STEPS_PER_SPAN)
+                         max_step=abs(stop - start) / MIN_STEPS_PER_SPAN if fronts else math.inf)
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol
