@@ -41,6 +41,7 @@ from mdr_events.theory.phase import phase_diagram
 from mdr_events.models.simulate import simulate
 from mdr_events.analysis.crosscheck import cross_check
 from mdr_events.analysis.validate import validate
+from mdr_events.analysis.convergence_study import convergence_study
 from mdr_events.app.study import load_study, run_study
 
 __all__ = [
@@ -56,6 +57,7 @@ __all__ = [
     "fretting_dissipated_energy",
     "cross_check",
     "validate",
+    "convergence_study",
     "d_crit",
     "jkr_contact_radius",
     "jkr_depth",

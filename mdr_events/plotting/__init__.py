@@ -1,5 +1,8 @@
-"""Figures drawn from the datasets (never recomputed here): Fig. 8, 9a, 9b, 10, and fretting loops."""
+"""Figures drawn from the datasets (never recomputed here): Fig. 8, 9a, 9b, 10, fretting loops, and the
+convergence of a simulator under validation."""
 
+from mdr_events.plotting.convergence import plot_convergence_study
 from mdr_events.plotting.figures import figure_png, plot_fretting, plot_phase_diagram, plot_simulation, save_figure
 
-__all__ = ["figure_png", "plot_fretting", "plot_phase_diagram", "plot_simulation", "save_figure"]
+__all__ = ["figure_png", "plot_convergence_study", "plot_fretting", "plot_phase_diagram", "plot_simulation",
+           "save_figure"]
