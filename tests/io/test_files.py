@@ -27,6 +27,9 @@ def results(paper_module):
                                     dx=4e-6, n_steps=500),
         "cross_check": me.cross_check(p, "A", (10.0, 40.0), dx=4e-6, n_steps=1000),
         "validation": me.validate(me.simulate(p, "A", alpha=[40.0], dx=4e-6, n_steps=1000).isel(alpha=0), p, "A", 40.0),
+        "convergence_study": me.convergence_study(
+            {dx: me.simulate(p, "A", alpha=[40.0], dx=dx, dt=0.5 * dx / p.v).isel(alpha=0) for dx in (8e-6, 6e-6, 4e-6)},
+            p, "A", 40.0),
     }
 
 
