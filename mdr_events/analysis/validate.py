@@ -26,7 +26,9 @@ Events found in the candidate by these rules (``nan`` where the candidate lacks 
 - **start of detachment**: the first sample after the largest contact area (or radius) at which it is
   smaller than that largest value;
 - **pull-off**: the first sample without contact after a contact (contact: ``A > 0``, or ``a > 0``, or
-  ``F_N ≠ 0`` without either); its force is ``F_N`` of the last sample in contact.
+  ``F_N ≠ 0`` without either); its force is ``F_N`` of the last sample in contact, reported beside
+  the exact force at the jump and the exact ``F_N`` at that same sample (``F_N(t)`` has an infinite
+  slope at the jump, so a sampled force converges to the jump's only as ``sqrt(Δt)``).
 
 Each is compared with the first event of that kind in the continuum's log (time and depth; the depth
 of a candidate event is the path's depth at its time).
@@ -129,6 +131,7 @@ def _candidate_events(times, quantities, params) -> dict[str, float]:
     """Times of the events by the module's rules (``nan`` where not found or not determinable)."""
     out = {name: math.nan for name in VALIDATED_EVENTS}
     out["pull_off_force"] = math.nan
+    out["last_in_contact"] = -1
     sliding = quantities.get("sliding_fraction")
     if sliding is not None:
         onset = np.flatnonzero(np.nan_to_num(sliding) > 0)
@@ -149,6 +152,7 @@ def _candidate_events(times, quantities, params) -> dict[str, float]:
     lost = np.flatnonzero(contact[:-1] & ~contact[1:])
     if lost.size:
         out["pull_off"] = float(times[lost[0] + 1])
+        out["last_in_contact"] = int(lost[0])
         if "normal_force" in quantities:
             out["pull_off_force"] = float(quantities["normal_force"][lost[0]])
     return out
@@ -252,6 +256,11 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     data["pull_off_force_exact"] = ((), exact_force, {"units": "N", "long_name": "F_N at the pull-off, continuum"})
     data["pull_off_force_candidate"] = ((), found["pull_off_force"],
                                         {"units": "N", "long_name": "F_N at the candidate's last sample in contact"})
+    last = found["last_in_contact"]
+    data["pull_off_force_exact_at_last_sample"] = (
+        (), float(exact["normal_force"][last]) if last >= 0 else math.nan,
+        {"units": "N", "long_name": "exact F_N at the candidate's last sample in contact (F_N(t) is steep before the "
+                                    "jump: compare with the candidate's there, not with the jump's)"})
     data["samples_compared"] = ((), int(np.count_nonzero(compared)), {"units": "1", "long_name": "samples compared"})
     data["samples_left_out"] = ((), int(np.count_nonzero(codes > 1)),
                                 {"units": "1", "long_name": "samples of the runs left out (contact differs, straddles an event)"})

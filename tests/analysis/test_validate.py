@@ -137,3 +137,12 @@ def test_bad_names_units_and_arguments(paper, discrete):
         me.validate({"time": [0.0, 1.0], "normal_force": [0.0, 0.0]}, paper, "A", ALPHA)
     with pytest.raises(TypeError, match="candidate of type int is not allowed"):
         me.validate(3, paper, "A", ALPHA)
+
+
+def test_the_pull_off_force_is_also_compared_at_the_candidates_own_sample(paper, report):
+    """F_N(t) is steep before the jump: the candidate's last force in contact is compared with the exact F_N at
+    that same sample (close: a first-order model), not only with the jump's (off by sqrt(dt))."""
+    candidate = float(report["pull_off_force_candidate"])
+    at_sample = float(report["pull_off_force_exact_at_last_sample"])
+    assert abs(candidate - at_sample) < 0.05 * abs(at_sample)
+    assert abs(candidate - float(report["pull_off_force_exact"])) > abs(candidate - at_sample)
