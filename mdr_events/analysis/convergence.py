@@ -24,7 +24,8 @@ from scipy import integrate, optimize
 from mdr_events.theory import analytic
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
-from mdr_events.models.continuum import NEGLIGIBLE_SHARE
+from mdr_events.models.continuum import NEGLIGIBLE_SHARE, solve_path
+from mdr_events.models.continuum.extrema import solution_extrema
 from mdr_events.models.discrete import run_discrete
 from mdr_events.models.simulate import case_dimension, simulate
 
@@ -62,17 +63,26 @@ def exact_references_A(params: Parameters, alpha: float) -> dict[str, float]:
     }
 
 
-def discrete_errors(params: Parameters, alpha: float, spacings, steps_per_spacing: float) -> dict[str, np.ndarray]:
-    """Relative errors of the discrete model against :func:`exact_references_A`.
+#: The extrema :func:`discrete_errors` compares.
+COMPARED_EXTREMA = ("normal_force_min", "contact_area_max", "tangential_force_max")
 
-    ``dt`` is refined with ``Δx``: ``dt = steps_per_spacing · Δx / v`` (the
-    indenter moves a fixed multiple of Δx per step).
+
+def discrete_errors(params: Parameters, path: Path | float, spacings, steps_per_spacing: float) -> dict[str, np.ndarray]:
+    """Relative errors of the discrete model's ``F_N,min``, ``A_max`` and ``F_x,max`` against the exact
+    extrema of the continuum solution on the same path
+    (:func:`mdr_events.models.continuum.extrema.solution_extrema`: any scenario or path; for scenario A
+    they equal the closed forms of :func:`exact_references_A`).
+
+    ``path``: a :class:`~mdr_events.models.paths.Path`, or an angle (degrees) of scenario A. ``dt`` is
+    refined with ``Δx``: ``dt = steps_per_spacing · Δx / v`` (the indenter moves a fixed multiple of Δx
+    per step).
     """
-    exact = exact_references_A(params, alpha)
-    path = Path.scenario_A(alpha, params)
+    path = path if isinstance(path, Path) else Path.scenario_A(path, params)
+    extrema = solution_extrema(solve_path(params, path))
+    exact = {key: extrema[key] for key in COMPARED_EXTREMA}
     errors = {key: [] for key in exact}
     for dx in spacings:
-        raw = run_discrete(params, [path], dx, steps_per_spacing * dx / params.v)
+        raw = run_discrete(params, [path], dx, steps_per_spacing * dx / path.speed)
         measured = {
             "normal_force_min": np.nanmin(raw["normal_force"]),
             "contact_area_max": math.pi * np.nanmax(raw["contact_radius"]) ** 2,

@@ -147,6 +147,16 @@ def test_convergence_order_against_exact_references(paper):
     assert reference["normal_force_min"] == pytest.approx(-1.5 * math.pi * paper.dgamma1 * paper.R)
 
 
+@pytest.mark.parametrize("alpha", [10.0, 30.0, 60.0])
+def test_the_continuum_extrema_equal_scenario_As_closed_forms(paper, alpha):
+    """The references discrete_errors uses for any path (the continuum solution's exact extrema) equal the
+    closed forms of scenario A (F_N,min = −(3/2)πΔγ1 R, A_max = π a(d_max)², F_x,max from the stick/slip
+    integral at d_max) to the solver's tolerance: two independent routes."""
+    extrema = me.continuum.extrema.solution_extrema(me.continuum.solve_path(paper, Path.scenario_A(alpha, paper)))
+    for key, value in exact_references_A(paper, alpha).items():
+        assert extrema[key] == pytest.approx(value, rel=1e-8), key
+
+
 def test_same_input_same_output(paper):
     one = simulate(paper, "B", alpha=[20.0, 50.0], dx=4e-6, n_steps=500)
     two = simulate(paper, "B", alpha=[20.0, 50.0], dx=4e-6, n_steps=500)
