@@ -1,12 +1,19 @@
-"""Command line: ``mdr-events derive | phase-diagram | simulate | run | reproduce``.
+"""Command line: ``mdr-events derive | phase-diagram | simulate | validate | run | reproduce``.
 
 Bad arguments print one line ``mdr-events: error: ...`` on stderr and exit
-with status 2 (no traceback).
+with status 2 (no traceback). ``mdr-events validate`` (and ``run`` with a
+``[validate]`` table) exits with status 1 when a run is outside its
+tolerance.
 """
 
 from __future__ import annotations
 
 import argparse
+import importlib
+import inspect
+import math
+import os
+import re
 import sys
 from pathlib import Path
 from typing import Sequence
@@ -16,8 +23,10 @@ import matplotlib
 from mdr_events._version import __version__
 from mdr_events.app.report import reproduce
 from mdr_events.app.result_files import write_phase_diagram, write_simulation
-from mdr_events.app.study import load_study, run_study
-from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES, simulate
+from mdr_events.analysis.validate import TIME_ORIGINS, validate
+from mdr_events.app.study import load_parameters_file, load_path_file, load_study, run_study
+from mdr_events.io.candidates import CANDIDATE_QUANTITIES
+from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters, from_preset
 from mdr_events.theory import symbolic
 
@@ -83,9 +92,200 @@ def _command_simulate(args: argparse.Namespace) -> None:
         print(outcome.path)
 
 
-def _command_run(args: argparse.Namespace) -> None:
-    for outcome in run_study(load_study(args.study), progress=_progress):
+def _command_run(args: argparse.Namespace) -> int:
+    outcomes = run_study(load_study(args.study), progress=_progress)
+    for outcome in outcomes:
         print(outcome.path)
+    failed = [run for run, verdict in getattr(outcomes, "verdicts", {}).items() if verdict != "pass"]
+    if failed:
+        print(f"validation failed: {', '.join(failed)}")
+    return 1 if failed else 0
+
+
+#: Where ``mdr-events validate`` finds the convergence study (optional: skipped while the module is missing).
+CONVERGENCE_MODULE = "mdr_events.analysis.convergence_study"
+#: A spacing in a run's file name: ``dx`` then a number and an optional unit (``run_dx2um.csv``, ``dx=2e-6.csv``).
+SPACING_IN_NAME = re.compile(r"(?:^|[^A-Za-z])dx[_=-]?(\d+(?:\.\d+)?(?:[eE][-+]?\d+)?)(nm|um|µm|mm|m)?(?![A-Za-z])")
+SPACING_UNITS = {None: 1.0, "m": 1.0, "mm": 1e-3, "um": 1e-6, "µm": 1e-6, "nm": 1e-9}
+#: The least number of spacings for a convergence study (an order from a least-squares slope with its spread).
+CONVERGENCE_MIN_RUNS = 3
+#: The file stem of the convergence study in ``--out``.
+CONVERGENCE_STEM = "convergence_study"
+
+
+def _pairs(option: str, text: str | None, allowed: Sequence[str]) -> dict[str, str]:
+    """``time=t,normal_force=Fn`` -> ``{"time": "t", "normal_force": "Fn"}``; a bad item names the option."""
+    if text is None:
+        return {}
+    pairs: dict[str, str] = {}
+    for item in text.split(","):
+        key, equals, value = (part.strip() for part in item.partition("="))
+        if not equals or not key or not value:
+            raise UsageError(f"{option} {text!r}: {item.strip()!r} is not allowed; allowed: QUANTITY=VALUE pairs "
+                             "separated by commas, e.g. time=t,normal_force=Fn")
+        if key not in allowed:
+            raise UsageError(f"{option} {text!r}: {key!r} is not allowed; allowed: {', '.join(allowed)}")
+        pairs[key] = value
+    return pairs
+
+
+def _time_origin(text: str) -> str | float:
+    if text in TIME_ORIGINS:
+        return text
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value):
+        raise UsageError(f"--time-origin {text!r} is not allowed; allowed: {', '.join(TIME_ORIGINS)} or the runs' "
+                         "time of first contact in s (a finite number)")
+    return value
+
+
+def _validation_parameters(args: argparse.Namespace):
+    changes = {name: getattr(args, name) for name in PARAMETER_UNITS if getattr(args, name) is not None}
+    if args.params is not None:
+        try:
+            return load_parameters_file(args.params, changes)
+        except ValueError as error:
+            raise UsageError(f"--params {error}") from None
+    try:
+        return from_preset(args.preset or "paper-R30", **changes)
+    except ValueError as error:
+        raise UsageError(str(error)) from None
+
+
+def _validation_path(args: argparse.Namespace, params: Parameters):
+    """The path the runs took, and a description of it for the report."""
+    if args.path is not None:
+        if args.alpha is not None:
+            raise UsageError(f"--alpha {args.alpha:g} is not allowed with --path (its waypoints fix the motion)")
+        try:
+            return load_path_file(args.path, params), f"from the path file {args.path}"
+        except ValueError as error:
+            raise UsageError(f"--path {error}") from None
+    if args.alpha is None:
+        raise UsageError(f"--scenario {args.scenario} needs --alpha (one angle in degrees)")
+    try:
+        paths, _ = scenario_paths(params, args.scenario, [args.alpha])
+    except (ValueError, TypeError) as error:
+        raise UsageError(f"--alpha {args.alpha:g}: {error}") from None
+    return paths[0], f"scenario {args.scenario}, α = {args.alpha:g}°"
+
+
+def _spacings(args: argparse.Namespace) -> tuple[list[float] | None, str | None]:
+    """The spacing of each run for a convergence study: ``--dx`` (one per run), else from every run's file
+    name; ``None`` and why not (``None``: nothing to say) where there is no study."""
+    if args.dx is not None:
+        if len(args.dx) != len(args.runs):
+            raise UsageError(f"--dx has {len(args.dx)} values and there are {len(args.runs)} runs; allowed: one "
+                             "spacing (m) per run, in the order of the runs")
+        bad = [value for value in args.dx if not (math.isfinite(value) and value > 0)]
+        if bad:
+            raise UsageError(f"--dx {bad[0]!r} is not allowed; allowed: spacings > 0 (m)")
+        if len(set(args.dx)) != len(args.dx):
+            raise UsageError(f"--dx {' '.join(f'{value:g}' for value in args.dx)} repeats a spacing; allowed: "
+                             "one different spacing (m) per run")
+        spacings = list(args.dx)
+    else:
+        found = [SPACING_IN_NAME.search(Path(run).stem) for run in args.runs]
+        if len(args.runs) < CONVERGENCE_MIN_RUNS or not all(found):
+            return None, None
+        spacings = [float(match.group(1)) * SPACING_UNITS[match.group(2)] for match in found]
+        if len(set(spacings)) != len(spacings) or not all(value > 0 for value in spacings):
+            return None, "convergence study skipped (the spacings in the runs' names repeat; give --dx)"
+    if len(spacings) < CONVERGENCE_MIN_RUNS:
+        return None, (f"convergence study skipped (it needs {CONVERGENCE_MIN_RUNS} or more spacings; --dx gives "
+                      f"{len(spacings)})")
+    return spacings, None
+
+
+def _convergence(args, spacings, params, path, options) -> tuple[tuple | None, list[str]]:
+    """The convergence study of the runs by spacing, computed and drawn but not written (``(dataset, png)``),
+    and the lines to print; ``None`` while :data:`CONVERGENCE_MODULE` is missing."""
+    try:
+        study = importlib.import_module(CONVERGENCE_MODULE).convergence_study
+    except (ModuleNotFoundError, AttributeError) as error:
+        if isinstance(error, ModuleNotFoundError) and error.name != CONVERGENCE_MODULE:
+            raise
+        return None, [f"convergence study skipped ({CONVERGENCE_MODULE}.convergence_study is not available)"]
+    accepted = inspect.signature(study).parameters
+    takes_any = any(p.kind is inspect.Parameter.VAR_KEYWORD for p in accepted.values())
+    extra = {key: value for key, value in options.items() if takes_any or key in accepted}
+    dataset = study(dict(zip(spacings, args.runs)), params, path, **extra)
+    try:
+        from mdr_events.plotting.convergence import plot_convergence_study
+        from mdr_events.plotting.figures import figure_png
+        png = figure_png(plot_convergence_study(dataset))
+    except ImportError:
+        png = None
+    lines = [f"convergence study ({len(spacings)} spacings): {dataset.attrs.get('verdict', '?')}"]
+    if "max_error_order" in dataset:
+        orders = dataset["max_error_order"]
+        spreads = dataset.get("max_error_order_spread", orders * math.nan)
+        lines.append("  observed order of the max error: " + ", ".join(
+            f"{name} {float(orders.sel(quantity=name)):.2f} ± {float(spreads.sel(quantity=name)):.2f}"
+            for name in orders["quantity"].values)
+            + (f" (expected {float(dataset['expected_order']):g})" if "expected_order" in dataset else ""))
+    return (dataset, png), lines
+
+
+def _command_validate(args: argparse.Namespace) -> int:
+    # here, not at the top: validation_files loads matplotlib.pyplot for the figures
+    from mdr_events.app.validation_files import VALIDATION_SUFFIXES, console_summary, render_validation, write_rendered
+    from mdr_events.io.files import atomic_write, write_netcdf
+
+    params, provenance = _validation_parameters(args)
+    path, description = _validation_path(args, params)
+    options = dict(names=_pairs("--names", args.names, list(CANDIDATE_QUANTITIES)),
+                   units=_pairs("--units", args.units, list(CANDIDATE_QUANTITIES)),
+                   time_origin=_time_origin(args.time_origin), tolerance=args.tolerance)
+    if not (math.isfinite(args.tolerance) and args.tolerance > 0):
+        raise UsageError(f"--tolerance {args.tolerance!r} is not allowed; allowed: a number > 0")
+    out = Path(args.out)
+    if out.exists() and not out.is_dir():
+        raise UsageError(f"--out {args.out}: not a directory")
+    spacings, note = _spacings(args)  # a bad --dx is named before any run is read
+    stems: dict[str, str] = {}
+    inputs = {os.path.realpath(run) for run in args.runs}
+    reports = []
+    # every run is validated (first) and its files rendered before anything is written: bad input writes nothing
+    for run in args.runs:
+        stem = Path(run).stem
+        if stem in stems:
+            raise UsageError(f"the runs {stems[stem]} and {run} would both be written as {stem}.*; allowed: runs "
+                             "with different file names")
+        if stem == CONVERGENCE_STEM and spacings is not None:
+            raise UsageError(f"the run {run} would be written as {stem}.*, the convergence study's files; allowed: "
+                             "another file name")
+        stems[stem] = run
+        clash = [target for target in (out / f"{stem}{suffix}" for suffix in VALIDATION_SUFFIXES)
+                 if os.path.realpath(target) in inputs]
+        if clash:
+            raise UsageError(f"--out {args.out}: writing {clash[0]} would overwrite a run; allowed: another directory")
+        report = validate(run, params, path, **options)
+        report.attrs.update(provenance, path_description=description)
+        reports.append((run, stem, report))
+    rendered = [(run, render_validation(report, stem)) for run, stem, report in reports]
+    convergence, convergence_lines = (None, [note] if note else []) if spacings is None else \
+        _convergence(args, spacings, params, path, options)
+    for run, files in rendered:
+        written = write_rendered(files, out)
+        print("\n".join(console_summary(files.report, run)))
+        print(f"  written: {', '.join(str(outcome.path) for outcome in written)}")
+    if convergence is not None:
+        dataset, png = convergence
+        written = [write_netcdf(dataset, out / f"{CONVERGENCE_STEM}.nc")]
+        if png is not None:
+            written.append(atomic_write(out / f"{CONVERGENCE_STEM}.png",
+                                        lambda temporary: Path(temporary).write_bytes(png), suffix=".png"))
+        convergence_lines.append(f"  written: {', '.join(map(str, written))}")
+    if convergence_lines:
+        print("\n".join(convergence_lines))
+    failed = [run for run, files in rendered if files.report.attrs["verdict"] != "pass"]
+    passed = len(rendered) - len(failed)
+    print(f"{len(rendered)} run{'s' if len(rendered) != 1 else ''}: {passed} pass, {len(failed)} fail")
+    return 1 if failed else 0
 
 
 def _command_reproduce(args: argparse.Namespace) -> None:
@@ -123,6 +323,42 @@ def build_parser() -> argparse.ArgumentParser:
     _parameter_options(sim)
     sim.set_defaults(run=_command_simulate)
 
+    check = commands.add_parser(
+        "validate", help="validate a simulator's runs (CSV or netCDF) against the exact continuum",
+        description="Validate runs of a simulator against the exact continuum (mdr_events.validate); write "
+                    "<run>.nc, <run>.md and <run>.png per run into --out; exit 0 if every run is within the "
+                    "tolerance, 1 if not, 2 for bad input.")
+    check.add_argument("runs", nargs="+", metavar="RUN", help="a run: a CSV file with a header row, or netCDF")
+    source = check.add_mutually_exclusive_group()
+    source.add_argument("--preset", choices=sorted(PRESETS), default=None,
+                        help="parameter set of the paper (default paper-R30); the options below override it")
+    source.add_argument("--params", default=None, metavar="FILE",
+                        help="a TOML file with a [parameters] table as in a study file (e.g. the study file)")
+    for name, long_name in PARAMETER_LONG_NAMES.items():
+        check.add_argument(f"--{name}", type=float, default=None, metavar="VALUE",
+                           help=f"{long_name} [{PARAMETER_UNITS[name]}]")
+    motion = check.add_mutually_exclusive_group(required=True)
+    motion.add_argument("--scenario", choices=list(SCENARIO_NAMES), help="the scenario the runs took (with --alpha)")
+    motion.add_argument("--path", default=None, metavar="FILE",
+                        help="a TOML file with a [path] table as in a study file: waypoints = [[x, d], ...] (m), "
+                             "speed (m/s, default the parameters' v)")
+    check.add_argument("--alpha", type=float, default=None, metavar="DEG", help="the scenario's angle in degrees")
+    check.add_argument("--out", required=True, help="output directory")
+    check.add_argument("--tolerance", type=float, default=1e-3,
+                       help="bound on each quantity's max error relative to its range (default 1e-3)")
+    check.add_argument("--names", default=None, metavar="Q=COLUMN,...",
+                       help="your column names, e.g. time=t,normal_force=Fn (quantities: "
+                            f"{', '.join(CANDIDATE_QUANTITIES)})")
+    check.add_argument("--units", default=None, metavar="Q=UNIT,...",
+                       help="your units, e.g. time=ms,normal_force=mN,contact_area=mm2 (default SI)")
+    check.add_argument("--time-origin", default="first_contact", metavar="ORIGIN",
+                       help="what the runs' time counts from: first_contact (default), path_start, or the runs' "
+                            "time of first contact in s")
+    check.add_argument("--dx", type=float, nargs="+", default=None, metavar="M",
+                       help="the spring spacing of each run (m), in the order of the runs and after them, for a "
+                            "convergence study of three or more runs (default: from names such as run_dx2um.csv)")
+    check.set_defaults(run=_command_validate)
+
     run = commands.add_parser("run", help="run a study described in a TOML file (see mdr_events.app.study)")
     run.add_argument("study", help="the study file, e.g. study.toml")
     run.set_defaults(run=_command_run)
@@ -142,7 +378,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         if getattr(args, "key", None):
             symbolic.relation(args.key)
         matplotlib.use("Agg")  # the CLI writes figures to files only: no window, whatever the user's default
-        args.run(args)
+        status = args.run(args)
     except UsageError as error:
         print(f"mdr-events: error: {error}", file=sys.stderr)
         return 2
@@ -150,7 +386,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         message = str(error.args[0]) if isinstance(error, KeyError) and error.args else str(error)
         print(f"mdr-events: error: {message}".splitlines()[0], file=sys.stderr)
         return 2
-    return 0
+    return 0 if status is None else int(status)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -8,7 +8,7 @@ A study names its parameters, what to compute and where to write it::
                                  # ... or, without preset, all eight: E, nu, R, tau0,
                                  # dgamma0, dgamma1, d_max, v (an error names the missing ones)
 
-    [simulation]                 # optional (a study needs a simulation, a phase diagram or both)
+    [simulation]                 # optional (a study needs a simulation, a phase diagram, a validation)
     scenario = "A"               # "A", "B" or "B+"; or give a [path] table instead
     alpha = [10, 20, 30]         # degrees
     method = "continuum"         # or "discrete"
@@ -21,9 +21,23 @@ A study names its parameters, what to compute and where to write it::
     [phase_diagram]              # optional: Fig. 9a / 9b
     scenarios = ["A", "B"]
 
+    [validate]                   # optional: your simulator's runs against the exact continuum
+    runs = ["run_dx2um.csv"]     # CSV or netCDF files, relative to the study file
+    tolerance = 1e-3             # max error relative to each quantity's range (default 1e-3)
+    names = { time = "t", normal_force = "Fn" }   # quantity -> your column (optional)
+    units = { time = "ms", normal_force = "mN" }  # quantity -> your unit (optional)
+    time_origin = "first_contact"                 # or "path_start", or the run's time of first contact (s)
+    scenario = "A"               # the path the runs took: the [path] table if there is one, else
+    alpha = 20                   # scenario and one alpha, here or from [simulation]
+
     [output]                     # required
     directory = "out"            # relative to the study file
     name = "my_study"            # file stem (default: the study file's stem)
+
+Each run of ``[validate]`` is checked by :func:`mdr_events.validate` and written as
+``<name>_validation_<run's file stem>.nc``, ``.md`` and ``.png``
+(:mod:`mdr_events.app.validation_files`); the runs are validated before anything of the study is
+written, so that a bad run writes nothing. ``mdr-events run`` exits with status 1 if a run fails.
 
 The file is read with :mod:`tomllib`. Unknown tables or keys, values of the
 wrong type and missing required keys are errors that name the table, the
@@ -33,6 +47,10 @@ by the functions they go to (:class:`Parameters`, :func:`simulate`, ...).
 Without a ``[parameters]`` table the study uses the preset ``paper-R30``. With a preset, every
 result says which values came from it (attributes ``parameters_preset`` and
 ``parameters_from_preset``).
+
+The ``[parameters]`` and ``[path]`` tables can also be read alone (:func:`load_parameters_file`,
+:func:`load_path_file`): ``mdr-events validate --params FILE --path FILE`` takes them from any TOML file
+holding them, a study file among others.
 """
 
 from __future__ import annotations
@@ -41,17 +59,20 @@ import os
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path as FilePath
-from typing import TYPE_CHECKING, Any, Callable
+from typing import TYPE_CHECKING, Any, Callable, Iterable
 
+from mdr_events.analysis.validate import validate
 from mdr_events.models.continuum import Tolerances
 from mdr_events.models.paths import Path
-from mdr_events.models.simulate import simulate
+from mdr_events.models.simulate import scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
 
 if TYPE_CHECKING:
     from mdr_events.app.result_files import FileOutcome
+    from mdr_events.app.validation_files import RenderedValidation
 
-__all__ = ["Study", "load_study", "run_study", "StudyError"]
+__all__ = ["Study", "StudyOutcomes", "load_study", "run_study", "StudyError", "load_parameters_file",
+           "load_path_file"]
 
 
 class StudyError(ValueError):
@@ -74,6 +95,9 @@ _KINDS: dict[str, tuple[Callable[[Any], bool], str]] = {
     "points": (lambda v: isinstance(v, list) and len(v) >= 2
                and all(isinstance(p, list) and len(p) == 2 and all(map(_is_number, p)) for p in v),
                "a list of at least two [x, d] pairs of numbers (m)"),
+    "string table": (lambda v: isinstance(v, dict) and all(isinstance(s, str) for s in v.values()),
+                     'a table of strings, e.g. { time = "t", normal_force = "Fn" }'),
+    "string or number": (lambda v: isinstance(v, str) or _is_number(v), "a string or a number"),
 }
 
 #: Table -> key -> (kind, required).
@@ -84,6 +108,9 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
                    "samples": ("integer", False), "rtol": ("number", False), "atol": ("number", False)},
     "path": {"waypoints": ("points", True), "speed": ("number", False)},
     "phase_diagram": {"scenarios": ("strings", True)},
+    "validate": {"runs": ("strings", True), "tolerance": ("number", False), "names": ("string table", False),
+                 "units": ("string table", False), "time_origin": ("string or number", False),
+                 "scenario": ("string", False), "alpha": ("numbers", False)},
     "output": {"directory": ("string", True), "name": ("string", False)},
 }
 REQUIRED_TABLES = ("output",)
@@ -109,88 +136,221 @@ class Study:
         return self.tables["output"].get("name", self.source.stem)
 
 
+def _check_table(table: str, content: Any, where: str) -> None:
+    """Raise :class:`StudyError` unless ``content`` is a table ``[table]`` of known keys of the right kinds."""
+    if not isinstance(content, dict):
+        raise StudyError(f"{where}: {table} = {content!r} is not allowed; allowed: a table [{table}]")
+    keys = SCHEMA[table]
+    for key, value in content.items():
+        if key not in keys:
+            raise StudyError(f"{where}: unknown key {key!r} in [{table}]; allowed: {', '.join(keys)}")
+        check, allowed = _KINDS[keys[key][0]]
+        if not check(value):
+            raise StudyError(f"{where}: [{table}] {key} = {value!r} is not allowed; allowed: {allowed}")
+    missing = [key for key, (_, required) in keys.items() if required and key not in content]
+    if missing:
+        raise StudyError(f"{where}: [{table}] lacks the required key(s) {', '.join(missing)}")
+
+
 def _check_tables(document: dict[str, Any], where: str) -> None:
     for table, content in document.items():
         if table not in SCHEMA:
             raise StudyError(f"{where}: unknown table [{table}]; allowed: "
                              + ", ".join(f"[{name}]" for name in SCHEMA))
-        if not isinstance(content, dict):
-            raise StudyError(f"{where}: {table} = {content!r} is not allowed; allowed: a table [{table}]")
-        keys = SCHEMA[table]
-        for key, value in content.items():
-            if key not in keys:
-                raise StudyError(f"{where}: unknown key {key!r} in [{table}]; allowed: {', '.join(keys)}")
-            check, allowed = _KINDS[keys[key][0]]
-            if not check(value):
-                raise StudyError(f"{where}: [{table}] {key} = {value!r} is not allowed; allowed: {allowed}")
-        missing = [key for key, (_, required) in keys.items() if required and key not in content]
-        if missing:
-            raise StudyError(f"{where}: [{table}] lacks the required key(s) {', '.join(missing)}")
+        _check_table(table, content, where)
     for table in REQUIRED_TABLES:
         if table not in document:
             raise StudyError(f"{where}: the required table [{table}] is missing")
-    if "simulation" not in document and "phase_diagram" not in document:
-        raise StudyError(f"{where}: nothing to compute; give a [simulation] table, a [phase_diagram] table or both")
-    if "path" in document and "simulation" not in document:
-        raise StudyError(f"{where}: a [path] needs a [simulation] table (method, dx, ...)")
+    if not {"simulation", "phase_diagram", "validate"} & set(document):
+        raise StudyError(f"{where}: nothing to compute; give a [simulation] table, a [phase_diagram] table, "
+                         "a [validate] table or several")
+    if "path" in document and not {"simulation", "validate"} & set(document):
+        raise StudyError(f"{where}: a [path] needs a [simulation] table (method, dx, ...) or a [validate] table")
     simulation = document.get("simulation", {})
     if "path" in document and ("scenario" in simulation or "alpha" in simulation):
         raise StudyError(f"{where}: [simulation] scenario and alpha are not allowed with a [path] "
                          "(its waypoints fix the motion)")
     if "simulation" in document and "path" not in document and "scenario" not in simulation:
         raise StudyError(f"{where}: [simulation] lacks the required key scenario (or give a [path] table)")
+    if "validate" in document:
+        _validation_case(document, where)
+
+
+def _validation_case(document: dict[str, Any], where: str) -> tuple[str, float] | None:
+    """The scenario and angle the ``[validate]`` runs took, or ``None`` for the study's ``[path]``."""
+    table, simulation = document["validate"], document.get("simulation", {})
+    if "path" in document:
+        if "scenario" in table or "alpha" in table:
+            raise StudyError(f"{where}: [validate] scenario and alpha are not allowed with a [path] "
+                             "(the runs are validated along its waypoints)")
+        return None
+    owner = "validate" if "scenario" in table else "simulation"
+    scenario = table.get("scenario", simulation.get("scenario"))
+    if scenario is None:
+        raise StudyError(f"{where}: [validate] lacks the key scenario; allowed: scenario and alpha in [validate], "
+                         "a [simulation] scenario and alpha, or a [path] table")
+    owner = "validate" if "alpha" in table else owner
+    alpha = table.get("alpha", simulation.get("alpha"))
+    angles = alpha if isinstance(alpha, list) else [] if alpha is None else [alpha]
+    if len(angles) != 1:
+        raise StudyError(f"{where}: [validate] needs one angle; [{owner}] alpha = {alpha!r} is not allowed; "
+                         "allowed: one angle in degrees (give alpha in [validate])")
+    return str(scenario), float(angles[0])
+
+
+def _read_toml(source: FilePath, what: str) -> dict[str, Any]:
+    where = os.fspath(source)
+    try:
+        with open(source, "rb") as handle:
+            return tomllib.load(handle)
+    except (FileNotFoundError, IsADirectoryError):
+        raise StudyError(f"{where}: no such {what}") from None
+    except tomllib.TOMLDecodeError as error:
+        raise StudyError(f"{where}: not valid TOML ({error})") from None
+
+
+def _parameters(table: dict[str, Any] | None, where: str,
+                overrides: dict[str, float] | None = None) -> tuple[Parameters, dict[str, str]]:
+    """The parameters of a checked ``[parameters]`` table (``None``: none given, the preset paper-R30), with
+    ``overrides`` on top, and the provenance attributes."""
+    settings = {key: value for key, value in (table or {}).items() if key != "preset"}
+    preset = (table or {}).get("preset")
+    if preset is None and table is not None:
+        missing = [name for name in PARAMETER_UNITS if name not in settings]
+        if missing:
+            raise StudyError(f"{where}: [parameters] without a preset lacks {', '.join(missing)}; allowed: all "
+                             f"eight of {', '.join(PARAMETER_UNITS)}, or preset = "
+                             + " or ".join(map(repr, PRESETS)) + " and any of them as overrides")
+    values = {key: float(value) for key, value in {**settings, **(overrides or {})}.items()}
+    try:
+        if preset is None and table is not None:
+            return Parameters(**values), {}
+        return from_preset("paper-R30" if preset is None else preset, **values)
+    except ValueError as error:
+        raise StudyError(f"{where}: [parameters] {error}") from None
 
 
 def load_study(path: str | os.PathLike) -> Study:
     """Read and check a study file; raises :class:`StudyError` (a ``ValueError``) naming what is wrong."""
     source = FilePath(path)
     where = os.fspath(source)
-    try:
-        with open(source, "rb") as handle:
-            document = tomllib.load(handle)
-    except FileNotFoundError:
-        raise StudyError(f"{where}: no such study file") from None
-    except tomllib.TOMLDecodeError as error:
-        raise StudyError(f"{where}: not valid TOML ({error})") from None
+    document = _read_toml(source, "study file")
     _check_tables(document, where)
-    settings = {key: value for key, value in document.get("parameters", {}).items() if key != "preset"}
-    preset = document.get("parameters", {}).get("preset")
-    if preset is None and "parameters" in document:
-        missing = [name for name in PARAMETER_UNITS if name not in settings]
-        if missing:
-            raise StudyError(f"{where}: [parameters] without a preset lacks {', '.join(missing)}; allowed: all "
-                             f"eight of {', '.join(PARAMETER_UNITS)}, or preset = "
-                             + " or ".join(map(repr, PRESETS)) + " and any of them as overrides")
-    values = {key: float(value) for key, value in settings.items()}
-    try:
-        if preset is None and "parameters" in document:
-            params, provenance = Parameters(**values), {}
-        else:
-            params, provenance = from_preset("paper-R30" if preset is None else preset, **values)
-    except ValueError as error:
-        raise StudyError(f"{where}: [parameters] {error}") from None
+    params, provenance = _parameters(document.get("parameters"), where)
     return Study(source, params, {table: dict(content) for table, content in document.items()}, provenance)
 
 
-def run_study(study: Study, progress: Callable[[str], None] = print) -> list[FileOutcome]:
-    """Compute what the study asks for and write it (netCDF + PNG, event log CSV); returns the files."""
+def _one_table(path: str | os.PathLike, table: str, what: str) -> tuple[dict[str, Any], str]:
+    source = FilePath(path)
+    where = os.fspath(source)
+    document = _read_toml(source, what)
+    if table not in document:
+        raise StudyError(f"{where}: no [{table}] table; tables found: "
+                         f"{', '.join(f'[{name}]' for name in document) or 'none'}; allowed: a TOML file with a "
+                         f"[{table}] table as in a study file")
+    _check_table(table, document[table], where)
+    return document[table], where
+
+
+def load_parameters_file(path: str | os.PathLike,
+                         overrides: dict[str, float] | None = None) -> tuple[Parameters, dict[str, str]]:
+    """The parameters of the ``[parameters]`` table of a TOML file (a study file's, or one of its own), with
+    ``overrides`` on top, and the provenance attributes; other tables in the file are ignored."""
+    table, where = _one_table(path, "parameters", "parameters file")
+    return _parameters(table, where, overrides)
+
+
+def load_path_file(path: str | os.PathLike, params: Parameters) -> Path:
+    """The path of the ``[path]`` table of a TOML file (``waypoints`` (x, d) in m, ``speed`` in m/s, default
+    ``params.v``), as in a study file; other tables in the file are ignored."""
+    table, where = _one_table(path, "path", "path file")
+    try:
+        return Path(table["waypoints"], table.get("speed", params.v))
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{where}: [path] {error}") from None
+
+
+class StudyOutcomes(list):
+    """The files a study wrote (a list of :class:`~mdr_events.app.result_files.FileOutcome`), and
+    ``verdicts``: each ``[validate]`` run (as written in the study) -> ``"pass"`` or ``"fail"``."""
+
+    def __init__(self, outcomes: Iterable[FileOutcome] = (), verdicts: dict[str, str] | None = None) -> None:
+        super().__init__(outcomes)
+        self.verdicts: dict[str, str] = dict(verdicts or {})
+
+
+def _study_path(study: Study) -> Path | None:
+    """The study's ``[path]`` as a :class:`Path` (speed default: the parameters' ``v``), or ``None``."""
+    if "path" not in study.tables:
+        return None
+    table = study.tables["path"]
+    try:
+        return Path(table["waypoints"], table.get("speed", study.params.v))
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{os.fspath(study.source)}: [path] {error}") from None
+
+
+def _validations(study: Study, progress: Callable[[str], None]) -> list[tuple[str, RenderedValidation]]:
+    """Validate every run of the ``[validate]`` table and render its files (nothing written yet)."""
+    from mdr_events.app.validation_files import render_validation
+
+    table = study.tables.get("validate")
+    if table is None:
+        return []
+    where = os.fspath(study.source)
+    case = _validation_case(study.tables, where)
+    try:
+        if case is None:
+            path, description = _study_path(study), "the study's [path]"
+        else:
+            path, description = scenario_paths(study.params, case[0], [case[1]])[0][0], \
+                f"scenario {case[0]}, α = {case[1]:g}°"
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{where}: [validate] {error}") from None
+    options = {key: table[key] for key in ("tolerance", "names", "units", "time_origin") if key in table}
+    stems: dict[str, str] = {}
+    reports = []
+    for run in table["runs"]:
+        file = FilePath(run) if FilePath(run).is_absolute() else study.source.parent / run
+        stem = f"{study.name}_validation_{file.stem}"
+        if stem in stems:
+            raise StudyError(f"{where}: [validate] runs {stems[stem]!r} and {run!r} would both be written as "
+                             f"{stem}.*; allowed: runs with different file names")
+        stems[stem] = run
+        progress(f"validate: {run}")
+        try:
+            report = validate(file, study.params, path, **options)
+        except (ValueError, TypeError) as error:
+            raise StudyError(f"{where}: [validate] {error}") from None
+        report.attrs.update(study.provenance, path_description=description)
+        reports.append((run, stem, report))
+    return [(run, render_validation(report, stem)) for run, stem, report in reports]
+
+
+def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOutcomes:
+    """Compute what the study asks for and write it (netCDF + PNG, event log CSV; the ``[validate]`` runs'
+    reports as .nc, .md and .png); returns the files and the runs' verdicts (:class:`StudyOutcomes`).
+
+    The ``[validate]`` runs are validated before anything is written: a run that cannot be read writes nothing.
+    """
     # here, not at the top: result_files loads matplotlib.pyplot, which `import mdr_events` should not pay for
     from mdr_events.app.result_files import write_phase_diagram, write_simulation
+    from mdr_events.app.validation_files import write_rendered
 
     out = study.output_directory
-    written: list[FileOutcome] = []
+    written = StudyOutcomes()
     where = os.fspath(study.source)
     for scenario in study.tables.get("phase_diagram", {}).get("scenarios", []):
         if scenario not in ("A", "B"):
             raise StudyError(f"{where}: [phase_diagram] scenarios contains {scenario!r}; allowed: 'A', 'B'")
+    validations = _validations(study, progress)
     simulation = study.tables.get("simulation")
     if simulation is not None:
         settings = dict(simulation)
         method = settings.pop("method", "discrete")
         scenario: Any = settings.pop("scenario", None)
         if "path" in study.tables:
-            path_table = study.tables["path"]
-            scenario = Path(path_table["waypoints"], path_table.get("speed", study.params.v))
+            scenario = _study_path(study)
         tolerance_names = sorted({"rtol", "atol"} & set(settings))
         alpha = settings.pop("alpha", None)
         progress(f"simulation: scenario {scenario if isinstance(scenario, str) else 'custom path'}, method {method}")
@@ -209,5 +369,9 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> list[Fil
         progress(f"phase diagram: scenario {scenario}")
         written += write_phase_diagram(study.params, scenario, out, f"{study.name}_phase_diagram_{scenario}",
                                        attrs=study.provenance)
+    for run, rendered in validations:
+        written += write_rendered(rendered, out)
+        written.verdicts[run] = str(rendered.report.attrs["verdict"])
+        progress(f"validate: {run}: {written.verdicts[run]}")
     return written
 

@@ -1,0 +1,155 @@
+"""Validation files: a report of :func:`mdr_events.validate` written as ``<stem>.nc``, ``<stem>.md``, ``<stem>.png``.
+
+- ``<stem>.nc``: the report itself (:func:`mdr_events.io.files.write_netcdf`; ``open_result`` reads it back);
+- ``<stem>.md``: a Markdown summary: the verdict, the tolerance, the candidate's source, the path, the
+  samples compared and left out, the norms per quantity and the events;
+- ``<stem>.png``: :func:`mdr_events.plotting.validation.plot_validation`.
+
+Everything is computed first (:func:`render_validation`: the text and the PNG bytes), then written
+(:func:`write_rendered`), each file to a temporary name renamed into place
+(:func:`mdr_events.io.files.atomic_write`): a run that fails while being computed writes nothing, and no
+file is ever seen half-written. Used by ``mdr-events validate`` and by the ``[validate]`` table of study files.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+from typing import NamedTuple
+
+import numpy as np
+import xarray as xr
+
+from mdr_events.analysis.validate import LEFT_OUT_CODES
+from mdr_events.app.result_files import FileOutcome, FileStatus
+from mdr_events.io.files import atomic_write, write_netcdf
+from mdr_events.parameters import PARAMETER_UNITS
+from mdr_events.plotting.figures import figure_png
+from mdr_events.plotting.validation import plot_validation
+
+__all__ = ["RenderedValidation", "VALIDATION_SUFFIXES", "render_validation", "write_rendered", "write_validation",
+           "validation_markdown", "console_summary"]
+
+#: The files of one validated run, by suffix.
+VALIDATION_SUFFIXES = (".nc", ".md", ".png")
+#: How the report's events are named in the summaries.
+EVENT_NAMES = {"slip_onset": "slip onset", "full_slip": "full slip", "detachment_starts": "start of detachment",
+               "pull_off": "pull-off"}
+
+
+class RenderedValidation(NamedTuple):
+    """A validated run ready to be written: the report, its Markdown summary and its figure (PNG bytes)."""
+
+    stem: str
+    report: xr.Dataset
+    markdown: str
+    png: bytes
+
+    def paths(self, out: str | os.PathLike) -> list[Path]:
+        """Where :func:`write_rendered` puts the files in ``out``."""
+        return [Path(out) / f"{self.stem}{suffix}" for suffix in VALIDATION_SUFFIXES]
+
+
+def _number(value, digits: int = 4, signed: bool = False) -> str:
+    """A number for a table; ``—`` where it is not a number (an event not found)."""
+    value = float(value)
+    if not math.isfinite(value):
+        return "—"
+    return f"{value:+.{digits}g}" if signed else f"{value:.{digits}g}"
+
+
+def _left_out_counts(report: xr.Dataset) -> dict[int, int]:
+    codes = report["left_out"].values
+    return {code: int(np.count_nonzero(codes == code)) for code in LEFT_OUT_CODES if code}
+
+
+def validation_markdown(report: xr.Dataset, stem: str | None = None) -> str:
+    """The Markdown summary of a validation report (``<stem>.md``; ``stem`` names the figure beside it)."""
+    verdict = str(report.attrs["verdict"])
+    tolerance = float(report.attrs["tolerance"])
+    source = str(report.attrs.get("candidate_source", "candidate"))
+    counts = _left_out_counts(report)
+    lines = [f"# Validation of `{os.path.basename(source)}` against the exact continuum", "",
+             f"**Verdict: {verdict}** — "
+             + ("every quantity's" if verdict == "pass" else "not every quantity's")
+             + f" max error is within the tolerance {tolerance:g} (relative to the exact quantity's range).", "",
+             f"- Candidate: `{source}`",
+             f"- Tolerance: {tolerance:g} (max error relative to the range of the exact quantity over the compared "
+             "samples)"]
+    if "path_description" in report.attrs:
+        lines.append(f"- Path: {report.attrs['path_description']}")
+    lines += [f"- Waypoints (x, d) in m: {report.attrs.get('path_waypoints', '?')}; speed "
+              f"{float(report.attrs.get('path_speed', math.nan)):g} m/s",
+              f"- Time origin of the candidate: {report.attrs.get('time_origin', '?')}",
+              f"- Samples compared: {int(report['samples_compared'])}; left out: {int(report['samples_left_out'])} "
+              f"({LEFT_OUT_CODES[2]}: {counts[2]}, {LEFT_OUT_CODES[3]}: {counts[3]}); "
+              f"{LEFT_OUT_CODES[1]} (not counted): {counts[1]}",
+              "- Parameters: " + ", ".join(
+                  f"{name} = {report.attrs[f'param_{name}']:g}" + (f" {unit}" if unit != "1" else "")
+                  for name, unit in PARAMETER_UNITS.items() if f"param_{name}" in report.attrs)]
+    if "parameters_preset" in report.attrs:
+        lines.append(f"- Preset: {report.attrs['parameters_preset']} (from it: "
+                     f"{report.attrs.get('parameters_from_preset') or 'none'})")
+    lines += ["", "## Norms", "",
+              "Over the samples compared in contact, each relative to the exact quantity's range there.", "",
+              "| quantity | max | RMS | L1 | within tolerance |", "|---|---:|---:|---:|:---:|"]
+    for name in report["quantity"].values:
+        row = report.sel(quantity=name)
+        lines.append(f"| {name} | {_number(row['max_error'], 3)} | {_number(row['rms_error'], 3)} | "
+                     f"{_number(row['l1_error'], 3)} | {'yes' if int(row['within_tolerance']) else '**no**'} |")
+    lines += ["", "## Events", "",
+              "Found in the candidate by the rules of `mdr_events.analysis.validate`; compared with the first event of "
+              "each kind in the continuum's log (times from first contact; — where not found).", "",
+              "| event | exact time (s) | candidate time (s) | time error (s) | exact depth (µm) "
+              "| candidate depth (µm) | depth error (µm) |", "|---|---:|---:|---:|---:|---:|---:|"]
+    for event in report["event"].values:
+        row = report.sel(event=event)
+        cells = [EVENT_NAMES.get(str(event), str(event)), _number(row["event_time_exact"], 6),
+                 _number(row["event_time_candidate"], 6), _number(row["event_time_error"], 3, True),
+                 _number(row["event_depth_exact"] * 1e6, 6), _number(row["event_depth_candidate"] * 1e6, 6),
+                 _number(row["event_depth_error"] * 1e6, 3, True)]
+        lines.append(f"| {' | '.join(cells)} |")
+    exact_force, candidate_force = float(report["pull_off_force_exact"]), float(report["pull_off_force_candidate"])
+    lines += ["", f"Pull-off force (mN): exact {_number(exact_force * 1e3, 6)}, candidate (last sample in contact) "
+                  f"{_number(candidate_force * 1e3, 6)}, "
+                  f"error {_number((candidate_force - exact_force) * 1e3, 3, True)}."]
+    if stem is not None:
+        lines += ["", f"![candidate and exact against time, the difference below]({stem}.png)",
+                  "", f"The whole report: `{stem}.nc` (`mdr_events.open_result`)."]
+    return "\n".join(lines) + "\n"
+
+
+def console_summary(report: xr.Dataset, name: str) -> list[str]:
+    """A few lines for the terminal: the verdict, the max errors, the event time errors, the samples."""
+    tolerance = float(report.attrs["tolerance"])
+    errors = ", ".join(f"{quantity} {float(report['max_error'].sel(quantity=quantity)):.2e}"
+                       + ("" if int(report["within_tolerance"].sel(quantity=quantity)) else " (!)")
+                       for quantity in report["quantity"].values)
+    events = ", ".join(f"{EVENT_NAMES.get(str(event), str(event))} "
+                       f"{_number(report['event_time_error'].sel(event=event), 3, True)}"
+                       for event in report["event"].values)
+    return [f"{name}: {str(report.attrs['verdict']).upper()} (tolerance {tolerance:g}; "
+            f"{int(report['samples_compared'])} samples compared, {int(report['samples_left_out'])} left out)",
+            f"  max error / range: {errors}",
+            f"  event time error (s): {events}"]
+
+
+def render_validation(report: xr.Dataset, stem: str) -> RenderedValidation:
+    """The files of a report, computed but not written: the Markdown text and the figure's PNG bytes."""
+    return RenderedValidation(stem, report, validation_markdown(report, stem), figure_png(plot_validation(report)))
+
+
+def write_rendered(rendered: RenderedValidation, out: str | os.PathLike) -> list[FileOutcome]:
+    """Write ``<stem>.nc``, ``<stem>.md`` and ``<stem>.png`` into ``out`` (each atomically)."""
+    nc, md, png = rendered.paths(out)
+    written = [write_netcdf(rendered.report, nc),
+               atomic_write(md, lambda temporary: Path(temporary).write_text(rendered.markdown, encoding="utf-8"),
+                            suffix=".md"),
+               atomic_write(png, lambda temporary: Path(temporary).write_bytes(rendered.png), suffix=".png")]
+    return [FileOutcome(path, FileStatus.WRITTEN) for path in written]
+
+
+def write_validation(report: xr.Dataset, out: str | os.PathLike, stem: str) -> list[FileOutcome]:
+    """Render a report (:func:`render_validation`), then write its three files (:func:`write_rendered`)."""
+    return write_rendered(render_validation(report, stem), out)
