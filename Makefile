@@ -40,6 +40,7 @@ benchmark: $(STAMP)
 	$(BIN)/python benchmarks/bench_phase_diagram.py
 	$(BIN)/python benchmarks/bench_discrete.py
 	$(BIN)/python benchmarks/bench_continuum.py
+	$(BIN)/python benchmarks/bench_validate.py
 
 derive: $(STAMP)
 	$(BIN)/mdr-events derive
