@@ -65,6 +65,8 @@ STRADDLED_EVENTS = ("corner", "tangential_reversal", "first_contact", "re_contac
 #: Quantities compared sample by sample (the sliding fraction only serves the events).
 COMPARED = ("normal_force", "tangential_force", "contact_area", "contact_radius")
 UNITS = {"normal_force": "N", "tangential_force": "N", "contact_area": "m2", "contact_radius": "m"}
+#: A candidate still in contact at its last sample must reach the exact run's end to this share.
+TIME_AXIS_SHARE = 1e-3
 #: The time origins :func:`validate` accepts besides a number.
 TIME_ORIGINS = ("first_contact", "path_start")
 
@@ -208,6 +210,11 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     if not np.any(_in_contact(quantities)):
         raise ValueError(f"{read.source}: the candidate never touches (no sample in contact); allowed: a run "
                          "that makes contact")
+    contact = _in_contact(quantities)
+    if contact[-1] and times[-1] < solution.end_time * (1.0 - TIME_AXIS_SHARE):
+        raise ValueError(f"{read.source}: column {(names or {}).get('time', 'time')!r} ends at {times[-1]:.6g} s from "
+                         f"first contact, in contact; allowed: a time axis that covers the contact (the exact run "
+                         f"lasts {solution.end_time:.6g} s)")
     codes = _left_out(times, exact, quantities, solution.events)
     in_contact = (exact["contact_radius"] > 0) & _in_contact(quantities)
     compared = (codes == 0) & in_contact
