@@ -35,8 +35,9 @@ from typing import Mapping, NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.analysis.validate import COMPARED, VALIDATED_EVENTS, validate
+from mdr_events.analysis.validate import COMPARED, VALIDATED_EVENTS, resolve_path, validate
 from mdr_events.io.datasets import register_schema, stamp
+from mdr_events.models.continuum import solve_path
 from mdr_events.parameters import Parameters
 
 __all__ = ["convergence_study", "fit_observed_order", "OrderFit", "CONVERGENCE_STUDY_CONTENT", "NORMS",
@@ -138,7 +139,8 @@ def convergence_study(candidates_by_dx: Mapping[float, object], params: Paramete
                       time_origin="first_contact", expected_order: float = 1.0) -> xr.Dataset:
     """The observed order of convergence of a simulator to the exact continuum, from three or more spacings.
 
-    Each candidate is validated once (:func:`mdr_events.validate`, with the same ``params``, ``path``,
+    The continuum is solved once for the path, and each candidate validated once against that solution
+    (:func:`mdr_events.validate`, with the same ``params``, ``path``,
     ``alpha``, ``names``, ``units`` and ``time_origin``); its norms and event errors are fitted in
     log–log against ``Δx`` (the module's rules: left-out errors, spread, ``converges``, verdict).
 
@@ -174,8 +176,10 @@ def convergence_study(candidates_by_dx: Mapping[float, object], params: Paramete
     spacings = _spacings(candidates_by_dx)
     order = sorted(range(len(spacings)), key=lambda i: -spacings[i])
     keys = list(candidates_by_dx)
+    # one continuum solution serves every spacing: the study costs one solve and the comparisons
+    solution = solve_path(params, resolve_path(params, path, alpha))
     reports = [validate(candidates_by_dx[keys[i]], params, path, alpha, names=names, units=units,
-                        time_origin=time_origin) for i in order]
+                        time_origin=time_origin, solution=solution) for i in order]
     dx = np.array([spacings[i] for i in order])
 
     found = {str(name) for report in reports for name in report["quantity"].values}

@@ -44,13 +44,13 @@ import xarray as xr
 
 from mdr_events.io.candidates import Candidate, read_candidate
 from mdr_events.io.datasets import register_schema, stamp
-from mdr_events.models.continuum import Tolerances, evaluate, solve_path
+from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import scenario_paths
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic
 
-__all__ = ["validate", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
+__all__ = ["validate", "resolve_path", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
 
 #: The ``content`` attribute of a validation report.
 VALIDATION_CONTENT = "validation of a simulator against the exact continuum"
@@ -71,7 +71,8 @@ TIME_AXIS_SHARE = 1e-3
 TIME_ORIGINS = ("first_contact", "path_start")
 
 
-def _path_of(params: Parameters, path, alpha) -> Path:
+def resolve_path(params: Parameters, path, alpha) -> Path:
+    """The :class:`Path` validated: ``path`` itself, or the scenario's path at the one angle ``alpha``."""
     if isinstance(path, Path):
         if alpha is not None:
             raise ValueError(f"alpha={alpha!r} is not allowed with a Path (its waypoints fix the motion)")
@@ -163,7 +164,7 @@ def _candidate_events(times, quantities, params) -> dict[str, float]:
 def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
              names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
              time_origin="first_contact", tolerance: float = 1e-3,
-             tolerances: Tolerances = Tolerances()) -> xr.Dataset:
+             tolerances: Tolerances = Tolerances(), solution: PathSolution | None = None) -> xr.Dataset:
     """Compare a simulator's output with the exact continuum on the same path, sample and event by event.
 
     Parameters
@@ -184,6 +185,9 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
         The verdict's bound on each quantity's ``max_error`` (relative to its range).
     tolerances : Tolerances
         The continuum's solver tolerances.
+    solution : PathSolution, optional
+        The continuum solution of this path with these parameters and tolerances, if already at hand
+        (:func:`~mdr_events.analysis.convergence_study.convergence_study` solves once for all spacings).
 
     Returns
     -------
@@ -197,10 +201,10 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     """
     if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and tolerance > 0):
         raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a number > 0")
-    the_path = _path_of(params, path, alpha)
+    the_path = resolve_path(params, path, alpha)
     read = read_candidate(candidate, names, units)
     times = _times_from_contact(read, the_path, time_origin)
-    solution = solve_path(params, the_path, tolerances)
+    solution = solve_path(params, the_path, tolerances) if solution is None else solution
     exact = evaluate(solution, np.maximum(times, 0.0))
     before = times < 0
     for name in ("normal_force", "tangential_force", "contact_radius"):
