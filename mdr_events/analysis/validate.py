@@ -197,7 +197,8 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
         ``quantity``: ``max_error``, ``rms_error``, ``l1_error``, ``within_tolerance``; along ``event``
         (:data:`VALIDATED_EVENTS`): the times and depths, exact and candidate, and their errors;
         ``pull_off_force_*``; the counts of samples compared and left out; the attribute ``verdict``
-        (``"pass"``: every quantity within ``tolerance``).
+        (``"pass"``: every quantity *compared* within ``tolerance``), and ``quantities_not_compared`` and
+        ``unused_columns`` (columns not named as a quantity: name them with ``names=`` to check them).
     """
     if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and tolerance > 0):
         raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a number > 0")
@@ -222,6 +223,10 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     codes = _left_out(times, exact, quantities, solution.events)
     in_contact = (exact["contact_radius"] > 0) & _in_contact(quantities)
     compared = (codes == 0) & in_contact
+    if not np.any(compared):
+        raise ValueError(f"{read.source}: no sample of the candidate is in contact while the exact run is (its "
+                         f"time runs {times[0]:.6g}…{times[-1]:.6g} s from first contact, the exact contact "
+                         f"0…{solution.end_time:.6g} s); check the time column's unit and time_origin")
 
     data = {"left_out": (("time",), codes, {"units": "1", "long_name": "why a sample is left out",
                                             "flag_values": np.array(list(LEFT_OUT_CODES), dtype=np.int8),
@@ -279,7 +284,10 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
               "quantity": ("quantity", np.array(present), {"units": "1", "long_name": "quantity compared"}),
               "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
     verdict = "pass" if within.size and np.all(within) else "fail"
+    not_compared = [name for name in COMPARED if name not in quantities]
     attrs = dict(content=VALIDATION_CONTENT, candidate_source=read.source, tolerance=float(tolerance),
+                 unused_columns=", ".join(read.unused) or "none",
+                 quantities_not_compared=", ".join(not_compared) or "none",
                  time_origin=str(time_origin), verdict=verdict, path_waypoints=the_path.describe(),
                  path_speed=the_path.speed)
     return stamp(xr.Dataset(data, coords=coords), params, **attrs)

@@ -75,6 +75,8 @@ def validation_markdown(report: xr.Dataset, stem: str | None = None) -> str:
              + ("every quantity's" if verdict == "pass" else "not every quantity's")
              + f" max error is within the tolerance {tolerance:g} (relative to the exact quantity's range).", "",
              f"- Candidate: `{source}`",
+             f"- Not compared: {report.attrs.get('quantities_not_compared', 'none')}; columns not read: "
+             f"{report.attrs.get('unused_columns', 'none')} (name them with --names to check them)",
              f"- Tolerance: {tolerance:g} (max error relative to the range of the exact quantity over the compared "
              "samples)"]
     if "path_description" in report.attrs:
@@ -132,7 +134,9 @@ def console_summary(report: xr.Dataset, name: str) -> list[str]:
     return [f"{name}: {str(report.attrs['verdict']).upper()} (tolerance {tolerance:g}; "
             f"{int(report['samples_compared'])} samples compared, {int(report['samples_left_out'])} left out)",
             f"  max error / range: {errors}",
-            f"  event time error (s): {events}"]
+            f"  event time error (s): {events}",
+            f"  not compared: {report.attrs.get('quantities_not_compared', 'none')}; columns not read: "
+            f"{report.attrs.get('unused_columns', 'none')}"]
 
 
 def render_validation(report: xr.Dataset, stem: str) -> RenderedValidation:

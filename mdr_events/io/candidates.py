@@ -45,6 +45,7 @@ class Candidate(NamedTuple):
     time: np.ndarray
     quantities: dict[str, np.ndarray]
     source: str  #: where it came from, for messages
+    unused: tuple[str, ...] = ()  #: the candidate's columns that were not read (not named as a quantity)
 
 
 def _factor(quantity: str, unit: str, source: str) -> float:
@@ -129,6 +130,7 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
             raise ValueError(f"{source}: {quantity!r} in names/units is not allowed; allowed: "
                              f"{', '.join(CANDIDATE_QUANTITIES)}")
     found: dict[str, np.ndarray] = {}
+    used: set[str] = set()
     for quantity in CANDIDATE_QUANTITIES:
         column = names.get(quantity, quantity)
         if column not in columns:
@@ -138,6 +140,7 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
             continue
         unit = units.get(quantity, declared.get(column, CANDIDATE_QUANTITIES[quantity]))
         found[quantity] = columns[column] * _factor(quantity, unit, source)
+        used.add(column)
     if "time" not in found:
         raise ValueError(f"{source}: no time column; columns found: {', '.join(columns) or 'none'}; allowed: a column "
                          "'time' or names={'time': <your column>}")
@@ -152,4 +155,4 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
     if time.size < 2 or not np.all(np.isfinite(time)) or np.any(np.diff(time) <= 0):
         raise ValueError(f"{source}: column {names.get('time', 'time')!r} is not allowed as the time; allowed: at "
                          "least two finite, strictly increasing values")
-    return Candidate(time, found, source)
+    return Candidate(time, found, source, tuple(name for name in columns if name not in used))

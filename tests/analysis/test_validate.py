@@ -153,3 +153,24 @@ def test_a_time_axis_shorter_than_the_contact_is_refused(paper, discrete):
     half = {name: run[name].values[: run.sizes["time"] // 2] for name in ("time", "normal_force", "contact_area")}
     with pytest.raises(ValueError, match="column 'time' ends at .* in contact; allowed: a time axis that covers"):
         me.validate(half, paper, "A", ALPHA)
+
+
+def test_what_was_not_checked_is_said(paper, discrete):
+    """Columns not named as a quantity are listed, and so are the quantities not compared: a pass on F_N alone
+    does not hide an unchecked F_x."""
+    run = discrete.isel(alpha=0)
+    table = {"t": run["time"].values, "Fn": run["normal_force"].values, "Ft": run["tangential_force"].values}
+    report = me.validate(table, paper, "A", ALPHA, names={"time": "t", "normal_force": "Fn"})
+    assert report["quantity"].values.tolist() == ["normal_force"]
+    assert report.attrs["unused_columns"] == "Ft"
+    assert report.attrs["quantities_not_compared"] == "tangential_force, contact_area, contact_radius"
+
+
+def test_a_candidate_out_of_step_with_the_exact_run_is_refused(paper, discrete):
+    """Times in the wrong unit or from the wrong origin put no sample in contact beside the exact contact:
+    an error naming the time, not a failed verdict with nonsense numbers."""
+    run = discrete.isel(alpha=0)
+    shifted = {"time": run["time"].values + 5000.0, "normal_force": run["normal_force"].values,
+               "contact_area": run["contact_area"].values}
+    with pytest.raises(ValueError, match="no sample of the candidate is in contact while the exact run is"):
+        me.validate(shifted, paper, "A", ALPHA)
