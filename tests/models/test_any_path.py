@@ -269,3 +269,18 @@ def test_pinned_spans_without_fronts_are_closed_forms(paper):
     reversal = times_of(solution, "tangential_reversal")[0]
     negative_slip = [e.time for e in solution.events if e.kind.value == "full_slip" and e.direction == -1][0]
     assert negative_slip - reversal == pytest.approx(2 * cap / paper.v, rel=1e-12)
+
+
+@pytest.mark.parametrize("alpha", [1e-3, 0.01, 0.3])
+def test_small_angles_run_and_slip_onset_is_eq_18(paper, alpha):
+    """At small angles the path is long (17 m at 1e-3°): a branch reached at a planned time lies within an ulp
+    of that time of the computed depth, and event roots are found in the scaled radius. Formerly the solver
+    stopped ("no progress"); now slip onset equals (18) to 1e-9 and F_x equals its play-operator form."""
+    path = Path.scenario_A(alpha, paper)
+    solution = solve_path(paper, path)
+    onset = [e for e in solution.events if e.kind.value == "slip_onset"][0]
+    assert onset.depth == pytest.approx(float(me.d_crit(alpha, paper, "A", adhesion=True)), rel=1e-9)
+    times = np.linspace(0.0, solution.end_time, 601)
+    integrated = evaluate(solution, times)["tangential_force"]
+    np.testing.assert_allclose(integrated, algebraic_tangential_force(solution, times), rtol=0,
+                               atol=EXACT * np.nanmax(np.abs(integrated)))

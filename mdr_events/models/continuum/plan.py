@@ -15,7 +15,7 @@ from typing import NamedTuple
 from .anchors import Piece
 from .model import ContinuumModel, Segment
 from .state import ContactState, EventKind, Regime
-from .tolerances import DEPTH_SHARE, RADIUS_DROP_SHARE
+from .tolerances import DEPTH_SHARE, EPS, RADIUS_DROP_SHARE, TIME_ULPS
 
 
 class Action(enum.Enum):
@@ -58,8 +58,11 @@ def plan_span(model: ContinuumModel, state: ContactState, segment: Segment) -> S
     return SpanPlan(Action.CONTACT, Regime.PINNED, state.t, segment.t1, None, state.radius, state.force)
 
 
-def _depth_scale(model: ContinuumModel) -> float:
-    return DEPTH_SHARE * max(model.params.d_max, 1e-300)
+def _depth_scale(model: ContinuumModel, segment: Segment, t: float) -> float:
+    """Depths this close count as equal: DEPTH_SHARE of ``d_max``, and the depth a few ulp of the time move
+    the indenter by (a long path: at t = 1.7e7 s an ulp of t is 4e-9 s, a reached branch then lies up to
+    ``|v_d|`` times that beyond the depth computed at the planned time)."""
+    return DEPTH_SHARE * max(model.params.d_max, 1e-300) + TIME_ULPS * EPS * abs(t) * abs(segment.vd)
 
 
 def _end_kind(t_end: float, segment: Segment, kind: EventKind) -> EventKind | None:
@@ -73,7 +76,7 @@ def _plan_out_of_contact(model: ContinuumModel, state: ContactState, segment: Se
     t = state.t
     d = segment.d(t)
     starts_inside = state.contacts == 0 and d > 0
-    if (segment.vd > 0 and d >= -_depth_scale(model)) or starts_inside:
+    if (segment.vd > 0 and d >= -_depth_scale(model, segment, t)) or starts_inside:
         radius = model.grow.radius(max(d, 0.0), model.tolerances.radius_rtol)
         touch = (EventKind.FIRST_CONTACT if state.contacts == 0 else EventKind.RE_CONTACT,)
         if model.K == 0.0:  # τ0 = 0: no spring holds any shift, all slide from the start
@@ -88,7 +91,7 @@ def _plan_inward(model: ContinuumModel, state: ContactState, segment: Segment) -
     t, a = state.t, state.radius
     d = segment.d(t)
     threshold = model.grow.depth(a)
-    if d < threshold - _depth_scale(model):
+    if d < threshold - _depth_scale(model, segment, t):
         t_end = min(segment.t1, segment.time_at_depth(threshold))
         return SpanPlan(Action.CONTACT, Regime.PINNED, t, t_end, _end_kind(t_end, segment, EventKind.GROWTH_RESUMES),
                         a, state.force)
@@ -111,7 +114,7 @@ def _plan_outward(model: ContinuumModel, state: ContactState, segment: Segment) 
     t, a, force = state.t, state.radius, state.force
     d = segment.d(t)
     threshold = model.shrink.depth(a)
-    touches_branch = d <= threshold + _depth_scale(model)
+    touches_branch = d <= threshold + _depth_scale(model, segment, t)
     if touches_branch and a <= model.shrink.jump_off_radius:
         # every inner spring has a higher threshold than the boundary one: all come off at once
         return SpanPlan(Action.COME_OFF, Regime.PINNED, t, t, EventKind.PULL_OFF, a, force)

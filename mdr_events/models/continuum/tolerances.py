@@ -12,6 +12,9 @@ NEGLIGIBLE_SHARE = 1e-12
 #: Depths within this share of ``d_max`` of a branch count as on it (first contact at ``d = -0``, a
 #: regime switch at a depth found by a root).
 DEPTH_SHARE = 1e-12
+#: A depth reached at a planned time counts as reached within this many ulp of the time times the depth's
+#: rate (a time of 1.7e7 s, a path at 1e-3°, is known to 4e-9 s).
+TIME_ULPS = 4
 #: Rising slip events cross a level this many ulp of the lengths involved above zero (see
 #: :class:`~mdr_events.models.continuum.span.SpanIntegrator`).
 LEVEL_ULPS = 16
