@@ -1,4 +1,5 @@
 import os
+import sys
 
 import pytest
 from hypothesis import settings
@@ -21,3 +22,13 @@ def paper():
 @pytest.fixture(scope="session")
 def paper_r100():
     return Parameters.paper(R=0.1)
+
+
+@pytest.fixture(autouse=True)
+def close_figures():
+    """Close every matplotlib figure a test left open (only if pyplot was imported at all: importing it here
+    would pick a backend for every test)."""
+    yield
+    pyplot = sys.modules.get("matplotlib.pyplot")
+    if pyplot is not None:
+        pyplot.close("all")

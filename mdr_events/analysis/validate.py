@@ -104,12 +104,12 @@ def _in_contact(quantities: Mapping[str, np.ndarray]) -> np.ndarray:
         np.nan_to_num(quantities["tangential_force"]) != 0
 
 
-def _left_out(times: np.ndarray, exact: dict, candidate: dict, events) -> np.ndarray:
+def _left_out(times: np.ndarray, exact: dict, candidate: dict, contact: np.ndarray, events) -> np.ndarray:
     codes = np.zeros(times.shape, dtype=np.int8)
     finite = np.all([np.isfinite(values) for values in candidate.values()], axis=0) & np.isfinite(
         exact["contact_radius"])
     codes[~finite] = 1
-    differs = finite & (_in_contact(candidate) != (exact["contact_radius"] > 0))
+    differs = finite & (contact != (exact["contact_radius"] > 0))
     codes[differs] = 2
     for event in events:
         if event.kind.value in STRADDLED_EVENTS:
@@ -130,7 +130,7 @@ def _norms(times, difference, exact, compared) -> tuple[float, float, float]:
     return float(np.max(np.abs(d))) / spread, float(np.sqrt(np.mean(d**2))) / spread, l1 / spread
 
 
-def _candidate_events(times, quantities, params) -> dict[str, float]:
+def _candidate_events(times, quantities, contact, params) -> dict[str, float]:
     """Times of the events by the module's rules (``nan`` where not found or not determinable)."""
     out = {name: math.nan for name in VALIDATED_EVENTS}
     out["pull_off_force"] = math.nan
@@ -151,7 +151,6 @@ def _candidate_events(times, quantities, params) -> dict[str, float]:
         largest = int(np.nanargmax(size))
         smaller = np.flatnonzero(np.nan_to_num(size[largest:], nan=np.inf) < size[largest])
         out["detachment_starts"] = float(times[largest + smaller[0]]) if smaller.size else math.nan
-    contact = _in_contact(quantities)
     lost = np.flatnonzero(contact[:-1] & ~contact[1:])
     if lost.size:
         out["pull_off"] = float(times[lost[0] + 1])
@@ -212,16 +211,16 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
         exact[name][before] = 0.0
     exact["contact_area"] = math.pi * exact["contact_radius"] ** 2
     quantities = {name: values for name, values in read.quantities.items()}
-    if not np.any(_in_contact(quantities)):
+    contact = _in_contact(quantities)
+    if not np.any(contact):
         raise ValueError(f"{read.source}: the candidate never touches (no sample in contact); allowed: a run "
                          "that makes contact")
-    contact = _in_contact(quantities)
     if contact[-1] and times[-1] < solution.end_time * (1.0 - TIME_AXIS_SHARE):
         raise ValueError(f"{read.source}: column {(names or {}).get('time', 'time')!r} ends at {times[-1]:.6g} s from "
                          f"first contact, in contact; allowed: a time axis that covers the contact (the exact run "
                          f"lasts {solution.end_time:.6g} s)")
-    codes = _left_out(times, exact, quantities, solution.events)
-    in_contact = (exact["contact_radius"] > 0) & _in_contact(quantities)
+    codes = _left_out(times, exact, quantities, contact, solution.events)
+    in_contact = (exact["contact_radius"] > 0) & contact
     compared = (codes == 0) & in_contact
     if not np.any(compared):
         raise ValueError(f"{read.source}: no sample of the candidate is in contact while the exact run is (its "
@@ -248,7 +247,7 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     within = np.array([value <= tolerance for value in norms["max_error"]], dtype=np.int8)
     data["within_tolerance"] = (("quantity",), within, {"units": "1", "long_name": "max_error <= tolerance (1: yes)"})
 
-    found = _candidate_events(times, quantities, params)
+    found = _candidate_events(times, quantities, contact, params)
     first = {}
     for event in solution.events:
         kind = "pull_off" if event.kind.value == "contact_ends" else event.kind.value

@@ -141,7 +141,7 @@ def _adhesive_strength_lines(samples_per_run: int, rows: list[AdhesiveStrengthRo
         "",
         "## The four differences between simulation and experiment of section 4.2",
         "",
-        f"Panels refer to `fig8_R30.png` (scenario A) and `fig10_R30.png` (scenario B): (a) F_N, (b) F_x,",
+        "Panels refer to `fig8_R30.png` (scenario A) and `fig10_R30.png` (scenario B): (a) F_N, (b) F_x,",
         f"(c) A, (d) <p>, (e) τ. Continuum method, {samples_per_run} samples per run.",
         "",
         "### (1) The adhesive strength |F_N,min| is the same for every angle (panel a)",

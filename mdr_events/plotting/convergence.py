@@ -13,7 +13,7 @@ import xarray as xr
 from matplotlib.ticker import NullFormatter
 
 from mdr_events.analysis.convergence_study import NORMS
-from mdr_events.plotting.figures import _add_inferred_footnote
+from mdr_events.plotting.figures import add_inferred_footnote
 
 __all__ = ["plot_convergence_study", "NORM_STYLES", "QUANTITY_TITLES", "REFERENCE_LABEL"]
 
@@ -91,5 +91,5 @@ def plot_convergence_study(study: xr.Dataset):
     axes[0][0].set_ylabel("error relative to the range")
     figure.suptitle(f"Convergence to the exact continuum ({study.attrs.get('verdict', 'no verdict')}, "
                     f"expected order {expected:g})", fontsize=11)
-    _add_inferred_footnote(figure, study)
+    add_inferred_footnote(figure, study)
     return figure

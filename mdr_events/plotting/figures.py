@@ -23,7 +23,7 @@ from mdr_events.models.simulate import case_dimension, case_text
 from mdr_events.parameters import Parameters
 from mdr_events.theory.phase import PHASE_DIAGRAM_CONTENT
 
-__all__ = ["figure_png", "plot_phase_diagram", "plot_simulation", "plot_fretting", "save_figure"]
+__all__ = ["add_inferred_footnote", "figure_png", "plot_phase_diagram", "plot_simulation", "plot_fretting", "save_figure"]
 
 _MM = 1e3
 
@@ -58,7 +58,7 @@ def _preset_name(dataset: xr.Dataset) -> str | None:
     return Parameters.from_attrs(dataset.attrs).preset_name()
 
 
-def _add_inferred_footnote(figure, dataset: xr.Dataset) -> float:
+def add_inferred_footnote(figure, dataset: xr.Dataset) -> float:
     """Say on ``figure`` that the preset's inferred fields are not quoted in the paper (once).
 
     A constrained layout is moved up to leave the footnote a strip of its own. Returns the
@@ -170,7 +170,7 @@ def plot_phase_diagram(dataset: xr.Dataset, ax=None):
     ax.set_title(_numbered(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario}, R = {R_mm:g} mm", dataset,
                            PHASE_DIAGRAM_FIGURES))
     ax.legend(loc="upper right" if scenario == "A" else "center right", fontsize=8)
-    _add_inferred_footnote(ax.figure, dataset)
+    add_inferred_footnote(ax.figure, dataset)
     return ax
 
 
@@ -257,7 +257,7 @@ def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, titl
         ax.set_ylabel(label)
         ax.text(0.01, 0.92, f"({letter})", transform=ax.transAxes, fontsize=10, va="top")
         ax.grid(alpha=0.3)
-    footnote_strip = _add_inferred_footnote(figure, dataset)
+    footnote_strip = add_inferred_footnote(figure, dataset)
     handles, labels = axes[0].get_legend_handles_labels()
     figure.legend(handles, labels, loc="outside lower center", ncol=5, fontsize=LEGEND_FONTSIZE,
                   borderaxespad=LEGEND_BORDER_PAD + footnote_strip / LEGEND_FONTSIZE)  # above the footnote
@@ -333,7 +333,7 @@ def plot_fretting(dataset: xr.Dataset, overlay: xr.Dataset | None = None, title:
         ax.axhline(0.0, color="0.6", lw=0.6)
         ax.grid(alpha=0.3)
     axes[0, 0].set_ylabel("tangential force $F_x$ (N)")
-    footnote_strip = _add_inferred_footnote(figure, dataset)
+    footnote_strip = add_inferred_footnote(figure, dataset)
     handles, labels = axes[0, 0].get_legend_handles_labels()
     figure.legend(handles, labels, loc="outside lower center", ncol=3, fontsize=LEGEND_FONTSIZE,
                   borderaxespad=LEGEND_BORDER_PAD + footnote_strip / LEGEND_FONTSIZE)

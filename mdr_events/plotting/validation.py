@@ -14,7 +14,7 @@ import xarray as xr
 from matplotlib.figure import Figure
 
 from mdr_events.analysis.validate import LEFT_OUT_CODES
-from mdr_events.plotting.figures import LEGEND_BORDER_PAD, LEGEND_FONTSIZE, _add_inferred_footnote
+from mdr_events.plotting.figures import LEGEND_BORDER_PAD, LEGEND_FONTSIZE, add_inferred_footnote
 
 __all__ = ["plot_validation", "VALIDATION_PANELS"]
 
@@ -108,7 +108,7 @@ def plot_validation(report: xr.Dataset, title: str | None = None) -> Figure:
         within = int(row["within_tolerance"]) == 1
         top.set_title(f"{symbol}: max error {float(row['max_error']):.3g} of the range "
                       f"({'within' if within else 'outside'} tolerance)", fontsize=10)
-    footnote_strip = _add_inferred_footnote(figure, report)
+    footnote_strip = add_inferred_footnote(figure, report)
     handles, labels = [], []
     for ax in (axes[0, 0], axes[1, 0]):
         for handle, label in zip(*ax.get_legend_handles_labels()):

@@ -6,7 +6,6 @@ import subprocess
 import sys
 from pathlib import Path
 
-import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 import xarray as xr
@@ -19,12 +18,6 @@ from mdr_events.plotting.convergence import REFERENCE_LABEL, plot_convergence_st
 ALPHA = 20.0
 SPACINGS = (8e-6, 4e-6, 2e-6)
 REPOSITORY = Path(__file__).resolve().parents[2]
-
-
-@pytest.fixture(autouse=True)
-def close_figures():
-    yield
-    plt.close("all")
 
 
 @pytest.fixture(scope="module")

@@ -219,7 +219,6 @@ def test_pinned_radius_below_the_jump_off_radius_comes_off_at_once(paper):
     assert a0 < me.jump_off(p, p.dgamma1)["contact_radius"]
     release = float(me.jkr_depth(a0, p, p.dgamma1))
     for batch in ([shallow], [shallow, deep]):
-        from mdr_events.models.discrete import run_discrete
         raw = run_discrete(p, batch, 0.5e-6, 0.05e-6 / p.v)
         radius = raw["contact_radius"][0]
         depth = raw["indentation_depth"][0]

@@ -6,7 +6,6 @@ import subprocess
 import sys
 from pathlib import Path
 
-import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 from matplotlib.colors import to_hex
@@ -24,12 +23,6 @@ ANGLES = np.linspace(0.0, 90.0, 91)
 OWN = Parameters.paper().replace(tau0=30e3)
 OVERLAY_ANGLE = 20.0
 REPOSITORY = Path(__file__).resolve().parents[2]
-
-
-@pytest.fixture(autouse=True)
-def close_figures():
-    yield
-    plt.close("all")
 
 
 @pytest.fixture(scope="module")
