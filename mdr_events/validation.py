@@ -6,11 +6,67 @@ user sees the same kind of sentence whichever function rejects the value.
 
 from __future__ import annotations
 
+import math
+import numbers
 from typing import Any, Collection
 
 import numpy as np
 
-__all__ = ["check_choice", "check_flag", "validate_alpha"]
+__all__ = ["check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "validate_alpha"]
+
+#: Characters of a value's ``repr`` shown in a message (a long list or a file's content is cut).
+SHOWN_CHARACTERS = 80
+
+
+def shown(value: Any) -> str:
+    """``repr(value)``, cut to :data:`SHOWN_CHARACTERS` characters, for a message."""
+    text = repr(value)
+    return text if len(text) <= SHOWN_CHARACTERS else text[: SHOWN_CHARACTERS - 3] + "..."
+
+
+def check_real(name: str, value: Any, allowed: str, valid=None) -> float:
+    """``value`` as a Python float if it is one real number (not a bool, complex or string) and ``valid``
+    (a predicate on the float, default: finite) holds; else ``TypeError`` / ``ValueError`` naming it.
+
+    NumPy scalars of any real type (``np.float32(2e-6)``, ``np.int64(3)``) are real numbers.
+    """
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name}={shown(value)} ({type(value).__name__}) is not allowed; allowed: {allowed}")
+    number = float(value)
+    if not (math.isfinite(number) if valid is None else (math.isfinite(number) and valid(number))):
+        raise ValueError(f"{name}={shown(value)} is not allowed; allowed: {allowed}")
+    return number
+
+
+def check_count(name: str, value: Any, minimum: int) -> int:
+    """``value`` as a Python int if it is an integer (not a bool) ``>= minimum``; else an error naming it."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name}={shown(value)} ({type(value).__name__}) is not allowed; "
+                        f"allowed: an integer >= {minimum}")
+    if value < minimum:
+        raise ValueError(f"{name}={shown(value)} is not allowed; allowed: an integer >= {minimum}")
+    return int(value)
+
+
+#: How a message names the values of a NumPy array that are not real numbers.
+_KIND_NAMES = {"b": "bool", "c": "complex", "U": "str", "S": "bytes", "M": "datetime", "m": "timedelta"}
+
+
+def real_array(name: str, value: Any, allowed: str) -> np.ndarray:
+    """``value`` as a float array if every entry is a real number (integers and floats of any width;
+    not bools, complex numbers, strings or objects); else ``TypeError`` naming it and ``allowed``."""
+    try:
+        array = np.asarray(value)
+    except (TypeError, ValueError):  # ragged nesting
+        raise TypeError(f"{name}={shown(value)} is not allowed; allowed: {allowed}") from None
+    if array.dtype.kind == "O":  # a list mixing Python numbers with NumPy scalars, Fractions, ...
+        if not all(isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_)) for v in array.flat):
+            raise TypeError(f"{name}={shown(value)} is not allowed; allowed: {allowed}")
+        return array.astype(float)
+    if array.dtype.kind not in "iuf":
+        kind = _KIND_NAMES.get(array.dtype.kind, str(array.dtype))
+        raise TypeError(f"{name}={shown(value)} (of {kind} values) is not allowed; allowed: {allowed}")
+    return array.astype(float)
 
 
 def check_choice(name: str, value: Any, allowed: Collection) -> None:
@@ -55,10 +111,7 @@ def validate_alpha(alpha) -> np.ndarray:
     ValueError
         If an angle is not finite or lies outside [0, 90] (the message names the first).
     """
-    try:
-        values = np.asarray(alpha, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(f"alpha={alpha!r} must be a number or an array of numbers in degrees") from None
+    values = real_array("alpha", alpha, "an angle in degrees or an array of them (real numbers, not bools)")
     bad = ~np.isfinite(values) | (values < 0.0) | (values > 90.0)
     if np.any(bad):
         first = float(values[bad].flat[0])

@@ -60,6 +60,7 @@ from typing import Callable, NamedTuple
 import numpy as np
 
 from mdr_events.theory import analytic
+from mdr_events.validation import check_real
 
 from mdr_events.theory import symbolic
 from mdr_events.parameters import Parameters
@@ -127,11 +128,10 @@ def _spring_count(params: Parameters, dx: float, max_depth: float, profile) -> i
         count *= 2
 
 
-def check_spacing(params: Parameters, dx: float, depth: float | None = None) -> None:
-    """Reject a spring spacing that puts fewer than 10 springs per side in contact at the
-    deepest point (``d_max``, or the given ``depth`` of a custom path)."""
-    if not (isinstance(dx, (int, float)) and math.isfinite(dx) and dx > 0):
-        raise ValueError(f"dx={dx!r} is not allowed; allowed: a finite spring spacing > 0 (m)")
+def check_spacing(params: Parameters, dx: float, depth: float | None = None) -> float:
+    """``dx`` as a float; reject a spring spacing that puts fewer than 10 springs per side in contact at
+    the deepest point (``d_max``, or the given ``depth`` of a custom path)."""
+    dx = check_real("dx", dx, "a finite spring spacing > 0 (m)", lambda value: value > 0)
     depth = params.d_max if depth is None else depth
     radius = float(analytic.jkr_contact_radius(depth, params, params.dgamma0))
     if not radius / dx >= MIN_SPRINGS_IN_CONTACT:
@@ -140,6 +140,7 @@ def check_spacing(params: Parameters, dx: float, depth: float | None = None) -> 
             f"at the deepest point d = {depth!r} m; "
             f"allowed: at least {MIN_SPRINGS_IN_CONTACT}, i.e. dx <= {radius / MIN_SPRINGS_IN_CONTACT:.6g} m"
         )
+    return dx
 
 
 def _scale_bits(*arrays: np.ndarray) -> int:

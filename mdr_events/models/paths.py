@@ -24,7 +24,7 @@ import numpy as np
 
 from mdr_events.theory import analytic
 from mdr_events.parameters import Parameters
-from mdr_events.validation import validate_alpha
+from mdr_events.validation import check_real, real_array, shown, validate_alpha
 
 __all__ = ["Path", "exit_depth"]
 
@@ -67,11 +67,12 @@ class Path:
     alpha: float = math.nan
 
     def __post_init__(self) -> None:
-        points = np.array(self.waypoints, dtype=float)
+        allowed = "at least two (x, d) pairs of finite real numbers (m), shape (n >= 2, 2)"
+        points = real_array("waypoints", self.waypoints, allowed)
         if points.ndim != 2 or points.shape[1] != 2 or points.shape[0] < 2:
-            raise ValueError(f"waypoints of shape {points.shape} are not allowed; allowed: (n >= 2, 2) pairs (x, d)")
+            raise ValueError(f"waypoints of shape {points.shape} are not allowed; allowed: {allowed}")
         if not np.all(np.isfinite(points)):
-            raise ValueError("waypoints must be finite (x, d) pairs")
+            raise ValueError(f"waypoints={shown(self.waypoints)} is not allowed; allowed: {allowed}")
         lengths = np.hypot(*np.diff(points, axis=0).T)
         if np.any(lengths == 0.0):
             index = int(np.argmin(lengths))
@@ -81,8 +82,8 @@ class Path:
             raise ValueError(f"waypoints {index} and {index + 1} are {lengths[index]:.3g} m apart; allowed: at least "
                              f"{MIN_SEGMENT_SHARE:g} of the longest segment ({lengths.max():.3g} m), below which a "
                              "segment's direction is lost to rounding")
-        if not (math.isfinite(self.speed) and self.speed > 0):
-            raise ValueError(f"speed={self.speed!r} is not allowed; allowed: a finite number > 0 (m/s)")
+        speed = check_real("speed", self.speed, "a finite number > 0 (m/s)", lambda value: value > 0)
+        object.__setattr__(self, "speed", speed)
         points.setflags(write=False)
         object.__setattr__(self, "waypoints", points)
 

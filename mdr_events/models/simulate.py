@@ -15,7 +15,7 @@ from mdr_events.models.discrete import check_spacing, run_discrete
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic
-from mdr_events.validation import check_choice
+from mdr_events.validation import check_choice, check_count, check_real, real_array, shown, validate_alpha
 
 __all__ = ["simulate", "Cases", "simulation_cases", "scenario_paths", "case_dimension", "simulation_dataset",
            "event_log", "extrema_dataset", "FIGURE_ANGLES", "METHODS", "SCENARIO_NAMES", "CASE_DIMENSIONS",
@@ -180,9 +180,13 @@ def simulation_cases(params: Parameters, scenario, alpha) -> Cases:
     if isinstance(scenario, str):
         if scenario not in SCENARIO_NAMES:
             raise ValueError(f"scenario={scenario!r} is not allowed; allowed: {SCENARIO_ALLOWED}")
-        angles = np.atleast_1d(np.asarray(FIGURE_ANGLES if alpha is None else alpha, dtype=float))
+        angles = np.atleast_1d(validate_alpha(FIGURE_ANGLES if alpha is None else alpha))
         if angles.ndim != 1 or angles.size == 0:
             raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: one angle or a 1-D list")
+        values, counts = np.unique(angles, return_counts=True)
+        if np.any(counts > 1):
+            raise ValueError(f"alpha={shown(alpha)} repeats {float(values[counts > 1][0])!r}; allowed: distinct "
+                             "angles (each labels one case)")
         build = {"A": Path.scenario_A, "B": Path.scenario_B, "B+": Path.scenario_B_indentation}[scenario]
         paths = [build(float(angle), params) for angle in angles]
         for angle, path in zip(angles, paths):
@@ -225,13 +229,9 @@ def _time_step(paths: list[Path], dt: float | None, n_steps: int | None) -> floa
         raise ValueError("give dt or n_steps, not both")
     longest = max(path.duration - path.first_contact_time() for path in paths)
     if dt is not None:
-        if not (isinstance(dt, (int, float)) and math.isfinite(dt) and dt > 0):
-            raise ValueError(f"dt={dt!r} is not allowed; allowed: a finite time step > 0 (s)")
-        return float(dt)
-    steps = DEFAULT_STEPS if n_steps is None else n_steps
-    if isinstance(steps, bool) or not isinstance(steps, (int, np.integer)) or steps < 10:
-        raise ValueError(f"n_steps={steps!r} is not allowed; allowed: an integer >= 10")
-    return longest / int(steps)
+        return check_real("dt", dt, "a finite time step > 0 (s)", lambda value: value > 0)
+    steps = DEFAULT_STEPS if n_steps is None else check_count("n_steps", n_steps, 10)
+    return longest / steps
 
 
 #: The discrete model needs at least this many time steps on every path segment it is in contact on.
@@ -345,7 +345,7 @@ def simulate(
     paths = cases.paths
     for path in paths:
         path.first_contact_time()  # a path that never touches the surface is an error first
-    check_spacing(params, dx, depth=min(params.d_max, max(path.max_depth for path in paths)))
+    dx = check_spacing(params, dx, depth=min(params.d_max, max(path.max_depth for path in paths)))
     step = _time_step(paths, dt, n_steps)
     check_time_step(paths, step, dt, n_steps)
     raw = run_discrete(params, paths, dx, step)
@@ -361,21 +361,19 @@ def _scenario_name(scenario, cases: Cases) -> str:
 
 
 def _simulate_continuum(params: Parameters, scenario, cases: Cases, t, samples, tolerances) -> xr.Dataset:
-    samples = DEFAULT_SAMPLES if samples is None else samples
-    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 2:
-        raise ValueError(f"samples={samples!r} is not allowed; allowed: an integer >= 2")
+    samples = DEFAULT_SAMPLES if samples is None else check_count("samples", samples, 2)
     if tolerances is None:
         tolerances = Tolerances()
     elif not isinstance(tolerances, Tolerances):
         raise TypeError(f"tolerances={tolerances!r} is not allowed; allowed: a mdr_events.Tolerances")
     times = None
     if t is not None:
-        times = np.asarray(t, dtype=float)
+        times = real_array("t", t, "a strictly increasing 1-D grid of finite times >= 0 (s)")
         if times.ndim != 1 or times.size == 0 or not np.all(np.isfinite(times)) or times[0] < 0 \
                 or np.any(np.diff(times) <= 0):
-            raise ValueError(f"t of shape {times.shape} is not allowed; allowed: a non-empty, strictly "
+            raise ValueError(f"t={shown(t)} is not allowed; allowed: a non-empty, strictly "
                              "increasing 1-D grid of finite times >= 0 (s)")
-    raw = run_continuum(params, cases.paths, times, samples=int(samples), tolerances=tolerances)
+    raw = run_continuum(params, cases.paths, times, samples=samples, tolerances=tolerances)
     attrs = dict(method="continuum", scenario=_scenario_name(scenario, cases),
                  rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
                  content=SIMULATION_CONTENT)

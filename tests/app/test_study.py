@@ -127,7 +127,7 @@ def test_bad_study_files_are_named_precisely(tmp_path, capsys, text, fragment):
     ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\nrtol = 1e-8\n",
      "[simulation] rtol is not allowed with method='discrete'"),
     ("[output]\ndirectory = 'o'\n[simulation]\nscenario = 'A'\nmethod = 'continuum'\nrtol = 2.0\n",
-     "[simulation] Tolerances.rtol=2.0 is not allowed; allowed: a number in (0, 1)"),
+     "[simulation] Tolerances.rtol=2.0 is not allowed; allowed: a number in [2.22e-14, 1)"),
 ])
 def test_bad_values_are_reported_by_the_function_they_go_to(tmp_path, capsys, text, fragment):
     path = write(tmp_path, text)

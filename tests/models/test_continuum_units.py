@@ -9,7 +9,7 @@ from scipy import integrate
 
 import mdr_events as me
 from mdr_events.models.continuum import (NO_ZONE, ZONE_EVENTS, AnchorMap, Branch, Cap, ContactState, ContinuumModel,
-                                         EventKind, Piece, Regime, Slip, Tolerances, ZoneSummary, kinematics,
+                                         EventKind, Piece, Regime, Segment, Slip, Tolerances, ZoneSummary, kinematics,
                                          lay_out_zones, plan_span, zone_events)
 from mdr_events.models.continuum.branch import FOLD_SHARE
 from mdr_events.models.continuum.plan import Action
@@ -151,6 +151,11 @@ def test_algebraic_force_of_a_uniform_field(model):
     assert anchors.tangential_force(K, G, 1.0, 0.0) == 0.0
 
 
+def _resting_at(x: float) -> Segment:
+    """A segment on which the indenter rests at ``x`` (no travel: the layout's tolerance is of the lengths alone)."""
+    return Segment(0.0, 1.0, x, 1e-4, 0.0, 0.0)
+
+
 # --- the slip zones --------------------------------------------------------------------------------
 @pytest.mark.parametrize("share", [0.3, 0.9])
 def test_a_zone_layout_starts_at_the_exact_size_and_ends_at_its_target(anchors, model, share):
@@ -159,14 +164,14 @@ def test_a_zone_layout_starts_at_the_exact_size_and_ends_at_its_target(anchors, 
     a = 3.8e-3
     top = anchors.value(3e-3)
     level = share * top
-    zones = lay_out_zones(anchors, model.K, level + model.K * a, a, {cap: True for cap in Cap}, model.params.d_max)
+    zones = lay_out_zones(anchors, model.K, _resting_at(level + model.K * a), 0.0, a, {cap: True for cap in Cap}, model.params.R)
     positive = zones[Cap.POSITIVE]
     assert positive.size(level, a) == pytest.approx(anchors.zone_size(Cap.POSITIVE, level, a), rel=1e-12)
     # the rising piece's front reaches its end (top), or the falling piece starts to slide at its edge value
     assert positive.target(a) == pytest.approx(min(top, anchors.value(a)) if level < anchors.value(a) else top,
                                                rel=1e-12)
     assert positive.summary(a).slip is Slip.PARTIAL and positive.summary(a).centre
-    resting = lay_out_zones(anchors, model.K, level + model.K * a, a, {cap: False for cap in Cap}, model.params.d_max)
+    resting = lay_out_zones(anchors, model.K, _resting_at(level + model.K * a), 0.0, a, {cap: False for cap in Cap}, model.params.R)
     assert resting[Cap.POSITIVE].size(level, a) == 0.0 and resting[Cap.POSITIVE].summary(a) == NO_ZONE
     assert resting[Cap.POSITIVE].target(a) == 0.0  # the lowest anchor: slip onset
 

@@ -12,7 +12,7 @@ from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from .branch import Branch
 from .state import Regime
-from .tolerances import NEGLIGIBLE_SHARE, SEGMENT_RESOLUTION, Tolerances
+from .tolerances import NEGLIGIBLE_SHARE, PIECE_SHARE, SEGMENT_RESOLUTION, Tolerances
 
 
 class ContinuumModel:
@@ -84,3 +84,36 @@ def kinematics(path: Path) -> list[Segment]:
         vd = 0.0 if abs(vd) < NEGLIGIBLE_SHARE * path.speed else vd
         segments.append(Segment(times[i], times[i + 1], points[i, 0], points[i, 1], vx, vd))
     return segments
+
+
+#: The slip criterion classifies the levels ``x − cap ū`` to PIECE_SHARE of the indenter's travel
+#: (:func:`~mdr_events.models.continuum.zones.length_scale`); for the critical shift to be known to 1e-3 of
+#: itself the travel may be at most this many ``ū``.
+MAX_TRAVEL_PER_CAP = 1e-3 / PIECE_SHARE
+
+
+def check_resolvable(model: ContinuumModel, path: Path, segments: list[Segment]) -> None:
+    """Reject a path whose tangential travel the slip criterion cannot resolve against the critical shift.
+
+    The travel is the path's tangential length and, on each segment in the elastomer that changes the depth,
+    ``|v_x / v_d| a²/R`` (the travel over which the depth of the largest contact changes by its size); the
+    critical shift is ``ū = K a`` of the largest contact (the radius at the path's deepest point). A
+    ``τ0/G*`` of 1e-10 (a stiff elastomer with the paper's τ0) puts ``ū`` near 1e-13 m, and the slip events
+    would then be lost to rounding: ``ValueError`` naming the numbers and what to change.
+    """
+    params = model.params
+    if model.K == 0.0:  # τ0 = 0: no spring holds any shift, nothing to resolve
+        return
+    radius = model.grow.radius(max(path.max_depth, 0.0), model.tolerances.radius_rtol)
+    cap = model.K * radius
+    travel = float(np.sum(np.abs(np.diff(path.waypoints[:, 0]))))
+    for segment in segments:
+        if segment.vd != 0.0 and max(segment.ds, segment.d(segment.t1)) > 0.0:
+            travel = max(travel, abs(segment.vx / segment.vd) * radius**2 / params.R)
+    if not travel <= MAX_TRAVEL_PER_CAP * cap:
+        raise ValueError(
+            f"tau0={params.tau0!r} Pa with G*={params.G_star:.4g} Pa (τ0/G* = {params.tau0 / params.G_star:.3g}) gives "
+            f"a critical shift ū = πaτ0/(2G*) = {cap:.3g} m at the deepest point, and the path travels "
+            f"{travel:.3g} m tangentially; allowed for the continuum method: a travel of at most "
+            f"{MAX_TRAVEL_PER_CAP:.0e} ū = {MAX_TRAVEL_PER_CAP * cap:.3g} m (beyond it the slip events are lost "
+            "to rounding): a larger τ0/G*, a shorter path, tau0=0 for a frictionless contact, or method='discrete'")

@@ -106,17 +106,17 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
 def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]:
     """Fill a time grid (s from first contact) span by span (:func:`evaluate_span`).
 
-    Samples after the end of the run are ``nan``, except the first sample after a pull-off, which
-    shows the contact gone (forces and radius 0).
+    Samples after the end of the run are ``nan``, except the first sample after a pull-off if it lies on
+    the pull-off's path segment, which shows the contact gone (forces and radius 0).
     """
     times = np.asarray(times, dtype=float)
     out = {name: np.full(len(times), np.nan) for name in EVALUATED_QUANTITIES}
     inside = times <= solution.end_time
     owner = solution.span_index(times)
     after_end = np.flatnonzero(~inside)
-    if solution.ended_by_contact and after_end.size:
+    last = solution.spans[-1].segment
+    if solution.ended_by_contact and after_end.size and solution.t_contact + times[after_end[0]] <= last.t1:
         first = after_end[0]
-        last = solution.spans[-1].segment
         t = solution.t_contact + times[first]
         out["indentation_depth"][first] = last.d(t)
         out["tangential_displacement"][first] = last.x(t)

@@ -15,7 +15,7 @@ import numpy as np
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from .anchors import AnchorMap, Piece
-from .model import ContinuumModel, Segment, kinematics
+from .model import ContinuumModel, Segment, check_resolvable, kinematics
 from .plan import Action, SpanPlan, plan_span
 from .solution import PathSolution, evaluate
 from .span import Span, SpanOutcome, Trigger, integrate_span
@@ -28,6 +28,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`)."""
     model = ContinuumModel(params, tolerances)
     segments = kinematics(path)
+    check_resolvable(model, path, segments)
     solution = PathSolution(model, t_contact=path.first_contact_time())
     state = ContactState(t=solution.t_contact, anchors=AnchorMap(model.grow, tolerances.radius_rtol))
     entries = path.entry_times()
@@ -110,7 +111,7 @@ def advance(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment:
         state.anchors.close(radius)
     span.anchors = state.anchors.copy()
     if outcome.fired:
-        return logged + slip_transition(model, state, outcome, radius, segment.x(outcome.t_stop))
+        return logged + slip_transition(model, state, outcome, radius, segment)
     return logged + regime_ends(model, state, plan, outcome, radius)
 
 
@@ -150,8 +151,8 @@ def enter(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment: S
 
 
 def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOutcome, radius: float,
-                    x: float) -> list[Logged]:
-    """Events stopped the span (at radius ``radius``, indenter at ``x``): each cap's slip zone laid out
+                    segment: Segment) -> list[Logged]:
+    """Events stopped the span (at radius ``radius``, on ``segment``): each cap's slip zone laid out
     anew, what changed logged (the table of :mod:`.state`), and a level that turned back re-sticks its
     springs (the window materialised in the anchors)."""
     state.force, state.radius, state.t = outcome.force, radius, outcome.t_stop
@@ -163,7 +164,8 @@ def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOut
     for cap in Cap:
         if Trigger.ZONE_REACHES in fired[cap]:
             state.sliding[cap] = True
-    layouts = lay_out_zones(state.anchors, model.K, x, radius, state.sliding, model.params.d_max)
+    x = segment.x(outcome.t_stop)
+    layouts = lay_out_zones(state.anchors, model.K, segment, outcome.t_stop, radius, state.sliding, model.params.R)
     logged: list[Logged] = []
     turned = [cap for cap in Cap if Trigger.LEVEL_TURNS in fired[cap]]
     if turned:

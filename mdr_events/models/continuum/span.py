@@ -38,7 +38,7 @@ from .anchors import AnchorMap
 from .model import ContinuumModel, Segment
 from .state import Cap, Regime, Slip
 from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE, SIMULTANEOUS_SHARE
-from .zones import EDGE_LEAVING_TOLERANCES, lay_out_zones, length_scale
+from .zones import EDGE_LEAVING_TOLERANCES, indenter_travel, lay_out_zones, length_scale
 
 
 class Variable(enum.Enum):
@@ -150,7 +150,8 @@ class SpanIntegrator:
             self.start, self.stop = t0, t1
             self.a0 = span.pinned_radius
         self.x0 = self.segment.x(t0)
-        lengths = length_scale(anchors, self.K, self.x0, self.a0, model.params.d_max)
+        R = model.params.R
+        lengths = length_scale(anchors, self.K, self.x0, self.a0, indenter_travel(self.segment, t0, self.a0, R))
         # Rising events cross a level a hair beyond zero: LEVEL_ULPS ulp of the lengths involved, just
         # above the rounding of x − Y ∓ ū (an event moves by about 1e-12 s at the paper's speed). A
         # function that starts at zero to rounding and first falls (the centre of a Hertz contact at
@@ -158,7 +159,7 @@ class SpanIntegrator:
         # starts beyond it has crossed already and fires at once.
         self.offset = LEVEL_ULPS * EPS * lengths
         self.edge_margin = EDGE_LEAVING_TOLERANCES * PIECE_SHARE * lengths
-        self.zones = lay_out_zones(anchors, self.K, self.x0, self.a0, sliding, model.params.d_max)
+        self.zones = lay_out_zones(anchors, self.K, self.segment, t0, self.a0, sliding, R)
         self.positive, self.negative = self.zones[Cap.POSITIVE], self.zones[Cap.NEGATIVE]
         self.sliding = dict(sliding)
         self.edge_start = anchors.pieces[-1].start if anchors.pieces else 0.0

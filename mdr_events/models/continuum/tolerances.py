@@ -6,6 +6,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mdr_events.validation import check_real
+
 #: A velocity component below this share of the speed is taken as zero (a segment that changes its
 #: depth by 1e-90 m over 0.3 mm is a pinned slide: its growth ratio vx/vd would overflow the anchor map).
 NEGLIGIBLE_SHARE = 1e-12
@@ -38,16 +40,27 @@ MAX_RESTARTS = 50
 EPS = float(np.finfo(float).eps)
 
 
+#: The smallest ``rtol`` ``solve_ivp`` honours (it raises smaller ones to this, with a warning).
+MIN_RTOL = 100 * EPS
+#: The loosest ``radius_rtol``: the event logic separates slip fronts and piece ends to PIECE_SHARE (1e-9)
+#: of the lengths, so a radius must be known far better. The radius root converges quadratically: a
+#: looser tolerance saves at most one Newton step.
+MAX_RADIUS_RTOL = 1e-10
+
+
 @dataclass(frozen=True)
 class Tolerances:
     """Solver tolerances of the continuum method.
 
     Attributes
     ----------
-    rtol, atol : float
-        Relative tolerance and absolute tolerance (N) of ``solve_ivp`` for ``F_x``.
+    rtol : float
+        Relative tolerance of ``solve_ivp`` for ``F_x``, in [100 eps, 1) (default 1e-10).
+    atol : float
+        Absolute tolerance (N) of ``solve_ivp`` for ``F_x``, finite and > 0 (default 1e-14 N).
     radius_rtol : float
-        Relative accuracy of the contact radius and slip front root-finding.
+        Relative accuracy of the contact radius and slip front root-finding, in [eps, 1e-10]
+        (default 1e-14; see :data:`MAX_RADIUS_RTOL`).
     """
 
     rtol: float = 1e-10
@@ -55,7 +68,9 @@ class Tolerances:
     radius_rtol: float = 1e-14
 
     def __post_init__(self) -> None:
-        for name in ("rtol", "atol", "radius_rtol"):
-            value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, (int, float)) or not (0 < value < 1):
-                raise ValueError(f"Tolerances.{name}={value!r} is not allowed; allowed: a number in (0, 1)")
+        allowed = {"rtol": (f"a number in [{MIN_RTOL:.3g}, 1)", lambda value: MIN_RTOL <= value < 1.0),
+                   "atol": ("a finite number > 0 (N)", lambda value: value > 0.0),
+                   "radius_rtol": (f"a number in [{EPS:.3g}, {MAX_RADIUS_RTOL:g}]",
+                                   lambda value: EPS <= value <= MAX_RADIUS_RTOL)}
+        for name, (words, valid) in allowed.items():
+            object.__setattr__(self, name, check_real(f"Tolerances.{name}", getattr(self, name), words, valid))

@@ -15,6 +15,7 @@ from __future__ import annotations
 import enum
 
 from .anchors import AnchorMap, Piece
+from .model import Segment
 from .state import Cap, Slip, ZoneSummary
 from .tolerances import PIECE_SHARE
 
@@ -137,17 +138,34 @@ class ZoneLayout:
         return ZoneSummary(slip, centre, edge)
 
 
-def length_scale(anchors: AnchorMap, K: float, x: float, radius: float, d_max: float) -> float:
-    """The lengths a span's slip criterion compares: the cap ``K a``, the indenter's and the anchors'
-    positions, the depth scale; the tolerances of the levels are shares of it."""
+def length_scale(anchors: AnchorMap, K: float, x: float, radius: float, travel: float) -> float:
+    """The lengths a span's slip criterion compares and resolves; the tolerances of the levels are shares of it.
+
+    The largest of the cap ``K a``, the indenter's and the anchors' positions, and ``travel``: how far the
+    indenter moves tangentially over the rounding of the variables a level is computed from
+    (:func:`indenter_travel`). Not the depth scale ``d_max``: on a stiff elastomer the cap is 1e-13 m
+    while ``d_max`` is 0.3 mm, and a tolerance of ``d_max`` would put every spring at the cap.
+    """
     largest_anchor = max((abs(p.x0) for p in anchors.pieces), default=0.0)
-    return max(K * radius, abs(x), largest_anchor, d_max)
+    return max(K * radius, abs(x), largest_anchor, travel)
 
 
-def lay_out_zones(anchors: AnchorMap, K: float, x: float, radius: float, sliding: dict[Cap, bool],
-                  d_max: float) -> dict[Cap, ZoneLayout]:
-    """Both caps' slip zones with the indenter at ``x`` and the radius ``radius`` (levels ``x ∓ K a``),
-    a piece value within :data:`PIECE_SHARE` of the :func:`length_scale` beyond a level counting as
-    reached."""
-    tolerance = PIECE_SHARE * length_scale(anchors, K, x, radius, d_max)
+def indenter_travel(segment: Segment, t: float, radius: float, R: float) -> float:
+    """The tangential travel over which a level ``x − cap ū`` is computed on ``segment`` at time ``t``: ``|v_x| t``
+    (the level's time is known to its rounding) and, on a segment that changes the depth, ``|v_x / v_d| a²/R``
+    (a moving radius is the integration variable: the level's time comes from the depth of the branch, (9),
+    whose terms are of the size ``a²/R``: near first contact of an adhesive indenter they cancel to a depth
+    far smaller). A share of it is what the level can be resolved to."""
+    travel = abs(segment.vx) * abs(t)
+    if segment.vd != 0.0:
+        travel = max(travel, abs(segment.vx / segment.vd) * radius**2 / R)
+    return travel
+
+
+def lay_out_zones(anchors: AnchorMap, K: float, segment: Segment, t: float, radius: float, sliding: dict[Cap, bool],
+                  R: float) -> dict[Cap, ZoneLayout]:
+    """Both caps' slip zones with the indenter at ``segment.x(t)`` and the radius ``radius`` (levels ``x ∓ K a``),
+    a piece value within :data:`PIECE_SHARE` of the :func:`length_scale` beyond a level counting as reached."""
+    x = segment.x(t)
+    tolerance = PIECE_SHARE * length_scale(anchors, K, x, radius, indenter_travel(segment, t, radius, R))
     return {cap: ZoneLayout(anchors, cap, x - cap * K * radius, radius, sliding[cap], tolerance) for cap in Cap}
