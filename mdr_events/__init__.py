@@ -18,6 +18,7 @@ forms, ``phase`` diagrams) → ``models`` (``paths``, ``discrete`` springs,
 
 from mdr_events._version import __version__
 from mdr_events.parameters import Parameters
+from mdr_events.limits import Limits, ResourceLimitError
 from mdr_events.io.datasets import DOI
 from mdr_events.io.files import open_result, write_netcdf
 from mdr_events.theory import analytic, symbolic
@@ -45,6 +46,8 @@ from mdr_events.analysis.convergence_study import convergence_study
 from mdr_events.app.study import load_study, run_study
 
 __all__ = [
+    "Limits",
+    "ResourceLimitError",
     "__version__",
     "DOI",
     "Parameters",

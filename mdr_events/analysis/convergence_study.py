@@ -35,6 +35,7 @@ from typing import Mapping, NamedTuple
 import numpy as np
 import xarray as xr
 
+from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.analysis.validate import COMPARED, VALIDATED_EVENTS, resolve_path, validate
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import solve_path
@@ -136,7 +137,8 @@ def _spacings(candidates_by_dx) -> list[float]:
 
 def convergence_study(candidates_by_dx: Mapping[float, object], params: Parameters, path, alpha: float | None = None,
                       *, names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
-                      time_origin="first_contact", expected_order: float = 1.0) -> xr.Dataset:
+                      time_origin="first_contact", expected_order: float = 1.0,
+                      limits: Limits = DEFAULT_LIMITS) -> xr.Dataset:
     """The observed order of convergence of a simulator to the exact continuum, from three or more spacings.
 
     The continuum is solved once for the path, and each candidate validated once against that solution
@@ -154,6 +156,8 @@ def convergence_study(candidates_by_dx: Mapping[float, object], params: Paramete
     expected_order : float
         The order the simulator should have (> 0; 1 for the paper's spring model), reported beside the
         observed ones and used by ``converges``.
+    limits : Limits
+        What the continuum run may use (:func:`mdr_events.validate`).
 
     Returns
     -------
@@ -177,7 +181,7 @@ def convergence_study(candidates_by_dx: Mapping[float, object], params: Paramete
     order = sorted(range(len(spacings)), key=lambda i: -spacings[i])
     keys = list(candidates_by_dx)
     # one continuum solution serves every spacing: the study costs one solve and the comparisons
-    solution = solve_path(params, resolve_path(params, path, alpha))
+    solution = solve_path(params, resolve_path(params, path, alpha), limits=limits)
     reports = [validate(candidates_by_dx[keys[i]], params, path, alpha, names=names, units=units,
                         time_origin=time_origin, solution=solution) for i in order]
     dx = np.array([spacings[i] for i in order])

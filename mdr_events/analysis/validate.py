@@ -42,6 +42,7 @@ from typing import Mapping
 import numpy as np
 import xarray as xr
 
+from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.io.candidates import Candidate, read_candidate
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
@@ -163,7 +164,8 @@ def _candidate_events(times, quantities, contact, params) -> dict[str, float]:
 def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
              names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
              time_origin="first_contact", tolerance: float = 1e-3,
-             tolerances: Tolerances = Tolerances(), solution: PathSolution | None = None) -> xr.Dataset:
+             tolerances: Tolerances = Tolerances(), solution: PathSolution | None = None,
+             limits: Limits = DEFAULT_LIMITS) -> xr.Dataset:
     """Compare a simulator's output with the exact continuum on the same path, sample and event by event.
 
     Parameters
@@ -187,6 +189,9 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     solution : PathSolution, optional
         The continuum solution of this path with these parameters and tolerances, if already at hand
         (:func:`~mdr_events.analysis.convergence_study.convergence_study` solves once for all spacings).
+    limits : Limits
+        What the continuum run may use (a measured path of more than ``limits.waypoints`` waypoints is
+        refused unless raised).
 
     Returns
     -------
@@ -204,7 +209,7 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     the_path = resolve_path(params, path, alpha)
     read = read_candidate(candidate, names, units)
     times = _times_from_contact(read, the_path, time_origin)
-    solution = solve_path(params, the_path, tolerances) if solution is None else solution
+    solution = solve_path(params, the_path, tolerances, limits) if solution is None else solution
     exact = evaluate(solution, np.maximum(times, 0.0))
     before = times < 0
     for name in ("normal_force", "tangential_force", "contact_radius"):

@@ -60,6 +60,7 @@ from typing import Callable, NamedTuple
 import numpy as np
 
 from mdr_events.theory import analytic
+from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.validation import check_real
 
 from mdr_events.theory import symbolic
@@ -537,12 +538,31 @@ def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
     return _Setup(time, x_path, d_path, last_sample, last_entries, grid, g_prefix)
 
 
+#: Bytes a discrete run allocates per case and time sample (the path, the kernel's output, the dataset),
+#: and per spring (thresholds, caps, the kernel's groups): measured with tracemalloc, rounded up.
+BYTES_PER_SAMPLE = 160
+BYTES_PER_SPRING = 256
+
+
+def check_discrete_size(params: Parameters, paths: list[Path], dx: float, dt: float, limits: Limits) -> None:
+    """Estimate a discrete run's time steps, springs and memory before anything is allocated, and refuse it
+    past ``limits`` (:class:`~mdr_events.limits.ResourceLimitError` saying the estimate and how to raise it)."""
+    starts = np.array([path.first_contact_time() for path in paths])
+    n_time = math.ceil(float(np.max([path.duration for path in paths] - starts)) / dt) + 1
+    deepest = max(path.max_depth for path in paths)
+    springs = float(analytic.jkr_contact_radius(deepest, params, params.dgamma0)) / dx + 2
+    limits.check(f"the discrete run (dx={dx!r} m, dt={dt:.6g} s, {len(paths)} case(s))",
+                 steps=n_time * len(paths), springs=springs,
+                 memory=len(paths) * n_time * BYTES_PER_SAMPLE + springs * BYTES_PER_SPRING)
+
+
 def run_discrete(
     params: Parameters,
     paths: list[Path],
     dx: float,
     dt: float,
     profile: Callable[[np.ndarray], np.ndarray] | None = None,
+    limits: Limits = DEFAULT_LIMITS,
 ) -> dict[str, np.ndarray]:
     """Run the spring model for several paths on a common time grid.
 
@@ -558,6 +578,8 @@ def run_discrete(
         Time step in s (the grid is ``k dt``, shared by all cases).
     profile : callable, optional
         ``g(x)`` (vectorised); default the paraboloid (4).
+    limits : Limits, optional
+        Refuse, before allocating, a run whose steps, springs or memory exceed them (:func:`check_discrete_size`).
 
     Returns
     -------
@@ -568,6 +590,7 @@ def run_discrete(
         ``tangential_displacement``, ``normal_force``, ``tangential_force``,
         ``contact_radius``, ``sliding_fraction``, ``springs_in_contact``.
     """
+    check_discrete_size(params, paths, dx, dt, limits)
     run = _prepare(params, paths, dx, dt, paraboloid_profile(params) if profile is None else profile)
     time, x_path, d_path, last_sample = run.time, run.x, run.d, run.last_sample.copy()
     n_cases, n_time = len(paths), time.size

@@ -29,9 +29,25 @@ from mdr_events.validation import check_real, real_array, shown, validate_alpha
 __all__ = ["Path", "exit_depth"]
 
 
+#: The scenarios' paths come out to below the jump-off of the Δγ1 branch; it may lie at most this many
+#: ``d_max`` below the surface (the path's segments must stay within 1e12 of each other in length).
+MAX_JUMP_OFF_DEPTHS = 1e6
+
+
 def exit_depth(params: Parameters) -> float:
-    """A depth safely below the displacement-controlled jump-off of the ``Δγ1`` branch."""
+    """A depth safely below the displacement-controlled jump-off of the ``Δγ1`` branch.
+
+    Raises ``ValueError`` naming the parameters if the jump-off lies more than
+    :data:`MAX_JUMP_OFF_DEPTHS` ``d_max`` below the surface (adhesion so strong against the stiffness,
+    e.g. ``E = 1e-300`` Pa, that the way out would be 1e199 m long).
+    """
     jump = analytic.jump_off(params, params.dgamma1)["depth"] if params.dgamma1 > 0 else 0.0
+    if not -jump <= MAX_JUMP_OFF_DEPTHS * params.d_max:
+        raise ValueError(
+            f"E={params.E!r} Pa, nu={params.nu!r}, R={params.R!r} m and dgamma1={params.dgamma1!r} J/m² put the "
+            f"jump-off of the Δγ1 branch at d = {jump:.3g} m, {-jump / params.d_max:.3g} d_max below the surface; "
+            f"allowed: at most {MAX_JUMP_OFF_DEPTHS:.0e} d_max (a stiffer elastomer, a smaller dgamma1 or a "
+            "larger d_max)")
     return 1.5 * jump - 0.05 * params.d_max
 
 

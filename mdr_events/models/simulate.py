@@ -15,6 +15,7 @@ from mdr_events.models.discrete import check_spacing, run_discrete
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic
+from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.validation import check_choice, check_count, check_real, real_array, shown, validate_alpha
 
 __all__ = ["simulate", "Cases", "simulation_cases", "scenario_paths", "case_dimension", "simulation_dataset",
@@ -277,6 +278,7 @@ def simulate(
     t: Sequence[float] | None = None,
     samples: int | None = None,
     tolerances: Tolerances | None = None,
+    limits: Limits | None = None,
 ) -> xr.Dataset:
     """Simulate indentation and detachment along straight paths.
 
@@ -312,6 +314,10 @@ def simulate(
     tolerances : mdr_events.models.continuum.Tolerances, optional
         Continuum method: solver and root-finding tolerances (default
         ``Tolerances()``: ``rtol = 1e-10``, ``atol = 1e-14`` N, ``radius_rtol = 1e-14``).
+    limits : Limits, optional
+        What the run may use (default ``Limits()``: 2 GiB, 2e7 discrete steps, 1e7 springs per side, 1e7
+        output samples, 2000 waypoints per path for the continuum); a larger run is refused before it
+        starts with :class:`~mdr_events.limits.ResourceLimitError` giving the estimate.
 
     Returns
     -------
@@ -331,13 +337,17 @@ def simulate(
         custom paths.
     """
     check_choice("method", method, METHODS)
+    if limits is None:
+        limits = DEFAULT_LIMITS
+    elif not isinstance(limits, Limits):
+        raise TypeError(f"limits={shown(limits)} is not allowed; allowed: a mdr_events.Limits")
     cases = simulation_cases(params, scenario, alpha)
     if method == "continuum":
         for name, value in (("dx", dx), ("dt", dt), ("n_steps", n_steps)):
             if value is not None:
                 raise ValueError(f"{name} is not allowed with method='continuum' (it has no springs or time "
                                  "step); allowed: t, samples, tolerances")
-        return _simulate_continuum(params, scenario, cases, t, samples, tolerances)
+        return _simulate_continuum(params, scenario, cases, t, samples, tolerances, limits)
     dx = DEFAULT_DX if dx is None else dx
     for name, value in (("t", t), ("samples", samples), ("tolerances", tolerances)):
         if value is not None:
@@ -348,7 +358,7 @@ def simulate(
     dx = check_spacing(params, dx, depth=min(params.d_max, max(path.max_depth for path in paths)))
     step = _time_step(paths, dt, n_steps)
     check_time_step(paths, step, dt, n_steps)
-    raw = run_discrete(params, paths, dx, step)
+    raw = run_discrete(params, paths, dx, step, limits=limits)
     attrs = dict(method=method, scenario=_scenario_name(scenario, cases), dx=float(dx), dt=step,
                  spring_count_per_side=int(raw["spring_count"]),
                  content=SIMULATION_CONTENT)
@@ -360,7 +370,8 @@ def _scenario_name(scenario, cases: Cases) -> str:
     return CUSTOM_SCENARIO if cases.custom else scenario
 
 
-def _simulate_continuum(params: Parameters, scenario, cases: Cases, t, samples, tolerances) -> xr.Dataset:
+def _simulate_continuum(params: Parameters, scenario, cases: Cases, t, samples, tolerances,
+                        limits: Limits) -> xr.Dataset:
     samples = DEFAULT_SAMPLES if samples is None else check_count("samples", samples, 2)
     if tolerances is None:
         tolerances = Tolerances()
@@ -373,7 +384,7 @@ def _simulate_continuum(params: Parameters, scenario, cases: Cases, t, samples, 
                 or np.any(np.diff(times) <= 0):
             raise ValueError(f"t={shown(t)} is not allowed; allowed: a non-empty, strictly "
                              "increasing 1-D grid of finite times >= 0 (s)")
-    raw = run_continuum(params, cases.paths, times, samples=samples, tolerances=tolerances)
+    raw = run_continuum(params, cases.paths, times, samples=samples, tolerances=tolerances, limits=limits)
     attrs = dict(method="continuum", scenario=_scenario_name(scenario, cases),
                  rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
                  content=SIMULATION_CONTENT)

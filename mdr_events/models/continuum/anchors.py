@@ -16,6 +16,7 @@ a union of intervals, found piece by piece.
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -47,6 +48,28 @@ class Piece:
         return self.ratio > 0 if cap > 0 else self.ratio < 0
 
 
+class _Prefix(Sequence):
+    """The first ``length`` entries of a list, read-only: an :class:`AnchorMap` snapshot's pieces."""
+
+    def __init__(self, items: list[Piece], length: int):
+        self._items, self._length = items, length
+
+    def __len__(self) -> int:
+        return self._length
+
+    def __getitem__(self, index):
+        if isinstance(index, slice):
+            return self._items[: self._length][index]
+        if index < 0:
+            index += self._length
+        if not 0 <= index < self._length:
+            raise IndexError("piece index out of range")
+        return self._items[index]
+
+    def __iter__(self):
+        return iter(self._items[: self._length])
+
+
 class AnchorMap:
     """The stored anchors ``Y(ξ)`` on ``[0, a]`` as a list of contiguous pieces.
 
@@ -60,43 +83,72 @@ class AnchorMap:
         The pieces, ordered by ``start``.
     """
 
-    def __init__(self, attach: Branch, rtol: float, pieces: list[Piece] | None = None):
+    def __init__(self, attach: Branch, rtol: float, pieces: Sequence[Piece] | None = None):
         self.attach = attach
         self.rtol = rtol
-        self.pieces: list[Piece] = list(pieces or [])
+        self.pieces: Sequence[Piece] = list(pieces or [])
+        #: the first this many entries of ``pieces`` are seen by a snapshot (:meth:`copy`): not changed in place
+        self._shared = 0
 
     def copy(self) -> "AnchorMap":
-        """An independent copy (pieces are immutable)."""
-        return AnchorMap(self.attach, self.rtol, self.pieces)
+        """A snapshot that does not change when this map does (pieces are immutable).
+
+        It shares this map's list, seeing its first ``len`` entries; this map appends in place but
+        replaces the list before it changes a shared entry. A path of N growth segments then keeps N
+        snapshots in O(N) memory, not O(N²).
+        """
+        snapshot = AnchorMap(self.attach, self.rtol)
+        snapshot.pieces = _Prefix(self.pieces, len(self.pieces))
+        self._shared = len(self.pieces)
+        return snapshot
+
+    def _own(self, changed: int) -> list[Piece]:
+        """The pieces as a list this map may change from index ``changed`` on (copied if a snapshot sees it)."""
+        if not isinstance(self.pieces, list) or changed < self._shared:
+            self.pieces, self._shared = list(self.pieces), 0
+        return self.pieces
+
+    def _set_last(self, piece: Piece) -> None:
+        """Replace the last piece (in place unless a snapshot sees it)."""
+        self._own(len(self.pieces) - 1)[-1] = piece
 
     # --- building -------------------------------------------------------------------------------
     def reset(self) -> None:
-        self.pieces = []
+        self.pieces, self._shared = [], 0
 
     def extend(self, start: float, piece: Piece) -> None:
         """Forget everything beyond ``start`` and append ``piece`` (springs attaching from ``start``)."""
-        kept = [dataclasses.replace(p, end=min(p.end, start)) for p in self.pieces if p.start < start]
+        pieces = self.pieces
+        if not pieces or pieces[-1].start < start and pieces[-1].end <= start:  # nothing to forget: the tail only
+            if pieces and pieces[-1].same_growth(piece):
+                self._set_last(dataclasses.replace(pieces[-1], end=piece.end))  # the same growth resumed
+            else:
+                self._own(len(pieces)).append(piece)
+            return
+        kept = [p if p.end <= start else dataclasses.replace(p, end=start) for p in pieces if p.start < start]
         if kept and kept[-1].same_growth(piece):
             kept[-1] = dataclasses.replace(kept[-1], end=piece.end)  # the same growth resumed: one piece
         else:
             kept.append(piece)
-        self.pieces = kept
+        self.pieces, self._shared = kept, 0
 
     def close(self, end: float) -> None:
         """Fix the end of the last piece (the radius the growth stopped at)."""
-        if self.pieces:
-            self.pieces[-1] = dataclasses.replace(self.pieces[-1], end=end)
+        if self.pieces and self.pieces[-1].end != end:
+            self._set_last(dataclasses.replace(self.pieces[-1], end=end))
 
     def truncate(self, radius: float) -> None:
         """Forget the springs beyond ``radius`` (they have detached)."""
         if self.pieces and self.pieces[-1].end > radius:
-            self.pieces = [dataclasses.replace(p, end=min(p.end, radius)) for p in self.pieces if p.start < radius]
+            self.pieces = [p if p.end <= radius else dataclasses.replace(p, end=radius)
+                           for p in self.pieces if p.start < radius]
+            self._shared = 0
 
     def drop_edge_piece(self, radius: float) -> None:
         """The shrinking edge has passed the start of the last piece (to the root's rounding): forget that
         piece and end the one before at ``radius``."""
         if len(self.pieces) > 1:
-            self.pieces = self.pieces[:-2] + [dataclasses.replace(self.pieces[-2], end=radius)]
+            self.pieces, self._shared = list(self.pieces[:-2]) + [dataclasses.replace(self.pieces[-2], end=radius)], 0
 
     def clip(self, lower: float, upper: float, radius: float) -> None:
         """Materialise the play operator: ``Y ← clip(Y, lower, upper)`` on ``[0, radius]``.
@@ -125,12 +177,12 @@ class AnchorMap:
                     clipped[-1] = dataclasses.replace(clipped[-1], end=part.end)
                 else:
                     clipped.append(part)
-        self.pieces = clipped
+        self.pieces, self._shared = clipped, 0
 
     # --- values ---------------------------------------------------------------------------------
     def in_contact(self, radius: float) -> list[Piece]:
         """The pieces that hold springs of a contact of radius ``radius``."""
-        return [p for p in self.pieces if p.start < radius] or self.pieces[:1]
+        return [p for p in self.pieces if p.start < radius] or list(self.pieces[:1])
 
     def piece_value(self, p: Piece, xi: float) -> float:
         """``Y(ξ)`` on piece ``p``."""

@@ -12,6 +12,7 @@ import math
 
 import numpy as np
 
+from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from .anchors import AnchorMap, Piece
@@ -24,8 +25,12 @@ from .tolerances import MAX_RESTARTS, Tolerances
 from .zones import lay_out_zones
 
 
-def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Tolerances()) -> PathSolution:
-    """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`)."""
+def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Tolerances(),
+               limits: Limits = DEFAULT_LIMITS) -> PathSolution:
+    """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`); a path with more
+    waypoints than ``limits.waypoints`` is refused before the work starts."""
+    limits.check(f"the continuum run of a path with {len(path.waypoints)} waypoints",
+                 waypoints=len(path.waypoints))
     model = ContinuumModel(params, tolerances)
     segments = kinematics(path)
     check_resolvable(model, path, segments)
@@ -212,15 +217,24 @@ def end_contact(state: ContactState) -> None:
     state.forget_slip()
 
 
+#: Bytes the continuum method allocates per case and output time (the filled quantities and the dataset):
+#: measured with tracemalloc, rounded up.
+BYTES_PER_SAMPLE = 128
+
+
 def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | None = None,
-                  samples: int = 2001, tolerances: Tolerances = Tolerances()) -> dict:
+                  samples: int = 2001, tolerances: Tolerances = Tolerances(),
+                  limits: Limits = DEFAULT_LIMITS) -> dict:
     """Solve every path and fill a common time grid (default: ``samples`` points to the longest run).
 
     Returns the arrays of :func:`evaluate` stacked to (n_cases, n_time), ``time``, the event
     log ``events`` (one list of :class:`Event` per case) and the ``solutions`` (one
-    :class:`PathSolution` per case).
+    :class:`PathSolution` per case). The output's size is checked against ``limits`` first.
     """
-    solutions = [solve_path(params, path, tolerances) for path in paths]
+    n_time = samples if times is None else len(times)
+    limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
+                 memory=n_time * len(paths) * BYTES_PER_SAMPLE)
+    solutions = [solve_path(params, path, tolerances, limits) for path in paths]
     if times is None:
         longest = max(solution.end_time for solution in solutions)
         times = np.linspace(0.0, longest * (1.0 + 1.0 / samples), samples)

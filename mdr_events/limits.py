@@ -1,0 +1,113 @@
+"""Resource limits, checked before a run starts: nothing silently takes minutes or gigabytes.
+
+Every run estimates what it will need (time steps, springs, output samples, path waypoints, memory)
+before it allocates anything; past a limit it raises :class:`ResourceLimitError`, which says the
+estimate, the limit and how to raise it: ``limits=Limits(...)`` in Python, ``--limit NAME=VALUE``
+on the command line. The defaults keep one run under about a minute and 2 GiB on a laptop.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+from mdr_events.validation import check_real
+
+__all__ = ["Limits", "ResourceLimitError", "DEFAULT_LIMITS", "LIMIT_UNITS", "parse_limit"]
+
+#: What each limit counts, for messages and the CLI help.
+LIMIT_UNITS = {
+    "memory": "of memory (estimated)",
+    "steps": "discrete time steps (all cases)",
+    "springs": "springs per side",
+    "samples": "output times (all cases)",
+    "waypoints": "waypoints in one path (continuum)",
+}
+
+#: Suffixes ``--limit memory=8GiB`` understands.
+MEMORY_SUFFIXES = {"KiB": 2**10, "MiB": 2**20, "GiB": 2**30, "TiB": 2**40, "kB": 1e3, "MB": 1e6, "GB": 1e9, "TB": 1e12}
+
+
+class ResourceLimitError(ValueError):
+    """A run would need more than a :class:`Limits` allows (a ``ValueError``: the input asks too much)."""
+
+
+@dataclass(frozen=True)
+class Limits:
+    """What one run may use; the defaults keep it under about a minute and 2 GiB here.
+
+    Attributes
+    ----------
+    memory : float
+        Bytes of the arrays a run allocates (estimated from its sizes): default 2 GiB.
+    steps : float
+        Time steps of the discrete model, summed over the cases: default 2e7 (about 30 s here).
+    springs : float
+        Springs per side of the discrete model: default 1e7.
+    samples : float
+        Output times of the continuum method, summed over the cases: default 1e7.
+    waypoints : float
+        Waypoints of one path for the continuum method: default 2000. Its time grows as the square
+        of the path's growth segments (each adds a piece to the anchor map every later span reads):
+        2000 waypoints of a monotone path take about 40 s here.
+
+    ``float("inf")`` switches a limit off.
+    """
+
+    memory: float = 2.0 * 2**30
+    steps: float = 2e7
+    springs: float = 1e7
+    samples: float = 1e7
+    waypoints: float = 2000
+
+    def __post_init__(self) -> None:
+        for field in dataclasses.fields(self):
+            value = check_real(f"Limits.{field.name}", getattr(self, field.name), "a number > 0 (inf: no limit)",
+                               lambda number: number > 0)
+            object.__setattr__(self, field.name, value)
+
+    def check(self, what: str, **needed: float) -> None:
+        """Raise :class:`ResourceLimitError` if any of ``needed`` (limit name → estimate) exceeds its limit.
+
+        ``what`` names the run and the arguments that set its size, e.g. ``"the discrete run (dx=1e-10 m)"``.
+        """
+        over = {name: value for name, value in needed.items() if not value <= getattr(self, name)}
+        if over:
+            parts = " and ".join(f"{_shown(name, value)} {LIMIT_UNITS[name]} (allowed: at most "
+                                 f"{_shown(name, getattr(self, name))})" for name, value in over.items())
+            raising = ", ".join(f"{name}=..." for name in over)
+            flags = " ".join(f"--limit {name}=..." for name in over)
+            raise ResourceLimitError(f"{what} needs {parts}; raise the limit with limits=Limits({raising}) "
+                                     f"(command line: {flags}) or make the run smaller")
+
+
+def _shown(name: str, value: float) -> str:
+    if name == "memory":
+        return f"{value / 2**30:.3g} GiB"
+    return f"{value:.3g}"
+
+
+#: The limits every run uses unless given others.
+DEFAULT_LIMITS = Limits()
+
+
+def parse_limit(text: str, limits: Limits = DEFAULT_LIMITS) -> Limits:
+    """``limits`` with one limit replaced from ``NAME=VALUE`` (the CLI's ``--limit``; ``memory`` takes
+    ``8GiB``, ``500MB``, ... or bytes; ``inf`` switches a limit off)."""
+    name, sep, value = text.partition("=")
+    name, value = name.strip(), value.strip()
+    if not sep or name not in LIMIT_UNITS:
+        raise ValueError(f"--limit {text!r} is not allowed; allowed: NAME=VALUE with NAME one of "
+                         f"{', '.join(LIMIT_UNITS)}")
+    factor = 1.0
+    if name == "memory":
+        for suffix, size in MEMORY_SUFFIXES.items():
+            if value.endswith(suffix):
+                value, factor = value[: -len(suffix)].strip(), size
+                break
+    try:
+        number = float(value) * factor
+    except ValueError:
+        raise ValueError(f"--limit {text!r} is not allowed; allowed: a number > 0 or inf"
+                         + (" (memory: with KiB, MiB, GiB, kB, MB, GB)" if name == "memory" else "")) from None
+    return dataclasses.replace(limits, **{name: number})
