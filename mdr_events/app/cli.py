@@ -1,9 +1,17 @@
 """Command line: ``mdr-events derive | phase-diagram | simulate | validate | run | reproduce``.
 
-Bad arguments print one line ``mdr-events: error: ...`` on stderr and exit
-with status 2 (no traceback). ``mdr-events validate`` (and ``run`` with a
-``[validate]`` table) exits with status 1 when a run is outside its
-tolerance.
+Every error prints one line ``mdr-events: error: ...`` on stderr (no traceback; ``mdr-events --debug ...``
+re-raises it with its traceback). The exit status (:data:`EXIT_STATUSES`):
+
+- 0: done;
+- 1: ``mdr-events validate`` (or ``run`` with a ``[validate]`` table): a run is outside its tolerance;
+- 2: bad input: an argument, a value, a study file or a file that cannot be read or written (``ValueError``,
+  ``TypeError``, ``KeyError``, ``OSError``), named with its value and what is allowed. Output directories
+  are checked before anything is computed (:func:`~mdr_events.io.files.prepare_output_directory`);
+- 3: the computation failed although the input was accepted: the solver gave up (``RuntimeError``), memory
+  or another resource ran out (``MemoryError``), or an internal error (any other exception): please report it;
+- 130 / 143: interrupted by Ctrl-C (SIGINT) / terminated (SIGTERM). Both remove the temporary file being
+  written (:func:`~mdr_events.io.files.atomic_write`): no file is left half-written.
 """
 
 from __future__ import annotations
@@ -14,7 +22,9 @@ import inspect
 import math
 import os
 import re
+import signal
 import sys
+import threading
 from pathlib import Path
 from typing import Sequence
 
@@ -26,6 +36,7 @@ from mdr_events.app.result_files import write_phase_diagram, write_simulation
 from mdr_events.analysis.validate import TIME_ORIGINS, validate
 from mdr_events.app.study import load_parameters_file, load_path_file, load_study, run_study
 from mdr_events.io.candidates import CANDIDATE_QUANTITIES
+from mdr_events.io.files import check_output_stem, prepare_output_directory
 from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters, from_preset
 from mdr_events.theory import symbolic
@@ -35,13 +46,42 @@ DESCRIPTION = ("Adhesive indentation and detachment at an angle with the Method 
                "(Lyashenko, Popov & Borysiuk 2023, section 4).")
 
 
+#: Exit status -> when.
+EXIT_STATUSES = {
+    0: "done",
+    1: "validate: a run is outside its tolerance",
+    2: "bad input (an argument, a value, a study file, a file that cannot be read or written)",
+    3: "the computation failed although the input was accepted (solver, memory, internal error)",
+    130: "interrupted (Ctrl-C)",
+    143: "terminated (SIGTERM)",
+}
+#: The exit status of bad input and of a failed computation.
+EXIT_BAD_INPUT, EXIT_FAILED = 2, 3
+#: Errors that are bad input (exit 2); RuntimeError and MemoryError are a failed computation (exit 3).
+INPUT_ERRORS = (ValueError, TypeError, KeyError, OSError)
+COMPUTATION_ERRORS = (RuntimeError, MemoryError)
+
+
 class UsageError(Exception):
     """A user error: reported in one line, exit status 2."""
+
+
+class _Terminated(BaseException):
+    """SIGTERM arrived: raised in the main thread, so that every ``finally`` (temporary files) runs."""
 
 
 class _Parser(argparse.ArgumentParser):
     def error(self, message: str) -> None:  # one line, no usage block
         raise UsageError(message)
+
+    def parse_args(self, args=None, namespace=None):  # unknown options named with where to find the allowed
+        parsed, extras = self.parse_known_args(args, namespace)
+        if extras:
+            command = getattr(parsed, "command", None)
+            where = f"{self.prog} {command}" if command else self.prog
+            raise UsageError(f"unrecognized argument(s) {' '.join(extras)}; allowed: the options listed by "
+                             f"{where} --help")
+        return parsed
 
 
 def _parameter_options(parser: argparse.ArgumentParser) -> None:
@@ -75,20 +115,22 @@ def _command_derive(args: argparse.Namespace) -> None:
 
 def _command_phase_diagram(args: argparse.Namespace) -> None:
     params, provenance = _parameters(args)
+    out = prepare_output_directory(args.out, "--out")
     stem = f"phase_diagram_{args.scenario}"
-    for outcome in write_phase_diagram(params, args.scenario, Path(args.out), stem, attrs=provenance):
+    for outcome in write_phase_diagram(params, args.scenario, out, stem, attrs=provenance):
         print(outcome.path)
 
 
 def _command_simulate(args: argparse.Namespace) -> None:
     params, provenance = _parameters(args)
+    out = prepare_output_directory(args.out, "--out")  # before the simulation, which may take minutes
     # the options of the discrete method are passed only when given, so that simulate() rejects them
     # with the continuum method exactly as it does in Python
     options = {name: getattr(args, name) for name in ("dx", "dt", "n_steps") if getattr(args, name) is not None}
     dataset = simulate(params, args.scenario, alpha=args.alpha, method=args.method, **options)
     dataset.attrs.update(provenance)
     stem = f"simulation_{args.scenario.replace('+', 'plus')}_{args.method}"
-    for outcome in write_simulation(dataset, Path(args.out), stem):
+    for outcome in write_simulation(dataset, out, stem):
         print(outcome.path)
 
 
@@ -242,9 +284,7 @@ def _command_validate(args: argparse.Namespace) -> int:
                    time_origin=_time_origin(args.time_origin), tolerance=args.tolerance)
     if not (math.isfinite(args.tolerance) and args.tolerance > 0):
         raise UsageError(f"--tolerance {args.tolerance!r} is not allowed; allowed: a number > 0")
-    out = Path(args.out)
-    if out.exists() and not out.is_dir():
-        raise UsageError(f"--out {args.out}: not a directory")
+    out = prepare_output_directory(args.out, "--out")
     spacings, note = _spacings(args)  # a bad --dx is named before any run is read
     stems: dict[str, str] = {}
     inputs = {os.path.realpath(run) for run in args.runs}
@@ -258,6 +298,10 @@ def _command_validate(args: argparse.Namespace) -> int:
         if stem == CONVERGENCE_STEM and spacings is not None:
             raise UsageError(f"the run {run} would be written as {stem}.*, the convergence study's files; allowed: "
                              "another file name")
+        try:
+            check_output_stem("stem", stem)
+        except ValueError as error:
+            raise UsageError(f"the run {run} would be written as {stem}.*: {error}") from None
         stems[stem] = run
         clash = [target for target in (out / f"{stem}{suffix}" for suffix in VALIDATION_SUFFIXES)
                  if os.path.realpath(target) in inputs]
@@ -289,13 +333,18 @@ def _command_validate(args: argparse.Namespace) -> int:
 
 
 def _command_reproduce(args: argparse.Namespace) -> None:
-    reproduce(Path(args.out), progress=_progress, keep_agreeing=not args.rewrite)
+    out = prepare_output_directory(args.out, "--out")
+    reproduce(out, progress=_progress, keep_agreeing=not args.rewrite)
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = _Parser(prog="mdr-events", description=DESCRIPTION)
+    parser = _Parser(prog="mdr-events", description=DESCRIPTION, epilog="exit status: " + "; ".join(
+        f"{status} {meaning}" for status, meaning in EXIT_STATUSES.items()))
     parser.add_argument("--version", action="version", version=f"mdr_events {__version__}")
-    commands = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
+    parser.add_argument("--debug", action="store_true",
+                        help="on an error, show the traceback (re-raise it) instead of one line")
+    # not required here: a missing command is reported by main(), after unknown options are named
+    commands = parser.add_subparsers(dest="command", parser_class=_Parser)
 
     derive = commands.add_parser("derive", help="print every relation derived by SymPy")
     derive.add_argument("--latex", action="store_true", help="LaTeX instead of pretty printing")
@@ -368,24 +417,76 @@ def build_parser() -> argparse.ArgumentParser:
     reproduce.add_argument("--rewrite", action="store_true",
                            help="rewrite every file, also those that agree with a fresh computation")
     reproduce.set_defaults(run=_command_reproduce)
+    names = ", ".join(commands.choices)
+
+    def missing_command(args: argparse.Namespace) -> None:  # a command's own default replaces this one
+        raise UsageError(f"a command is required; allowed: {names}")
+
+    parser.set_defaults(run=missing_command)
     return parser
 
 
+def _one_line(message: str) -> str:
+    """A message on one line: its lines joined (nothing is cut)."""
+    return " ".join(line.strip() for line in message.splitlines() if line.strip())
+
+
+def _message(error: BaseException) -> str:
+    """What an error says, for ``mdr-events: error: ...``."""
+    if isinstance(error, KeyError) and error.args:
+        return str(error.args[0])
+    if isinstance(error, OSError) and error.filename is not None:
+        files = " -> ".join(os.fsdecode(name) for name in (error.filename, error.filename2) if name is not None)
+        return f"{files}: {error.strerror or error}"
+    return str(error)
+
+
+def _on_sigterm(signum: int, frame) -> None:
+    signal.signal(signum, signal.SIG_IGN)  # a second SIGTERM must not interrupt the clean-up
+    raise _Terminated(signum)
+
+
+def _outcome(error: BaseException) -> tuple[str, int]:
+    """The line to print for an error that ends the command, and the exit status (:data:`EXIT_STATUSES`)."""
+    if isinstance(error, UsageError):
+        return f"error: {error}", EXIT_BAD_INPUT
+    if isinstance(error, _Terminated):
+        return "terminated (SIGTERM); no file was left half-written", 128 + signal.SIGTERM
+    if isinstance(error, KeyboardInterrupt):
+        return "interrupted (Ctrl-C); no file was left half-written", 128 + signal.SIGINT
+    if isinstance(error, INPUT_ERRORS):
+        return f"error: {_message(error)}", EXIT_BAD_INPUT
+    what = "the computation failed" if isinstance(error, COMPUTATION_ERRORS) else "internal error"
+    return (f"error: {what} ({type(error).__name__}: {_message(error) or 'no message'}); rerun with --debug for "
+            "the traceback, and please report it", EXIT_FAILED)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
-    """Entry point of ``mdr-events``; returns the exit status."""
+    """Entry point of ``mdr-events``; returns the exit status (:data:`EXIT_STATUSES`).
+
+    An error prints one line on stderr (``mdr-events: error: ...``); with ``--debug`` it is re-raised with
+    its traceback (a usage error excepted). SIGTERM is handled like Ctrl-C while the command runs: the file
+    being written is removed (its temporary file), and the status is 143.
+    """
+    handles_sigterm = threading.current_thread() is threading.main_thread()  # signals reach the main thread only
+    previous = signal.signal(signal.SIGTERM, _on_sigterm) if handles_sigterm else None
+    debug = False
     try:
         args = build_parser().parse_args(argv)
+        debug = args.debug
         if getattr(args, "key", None):
             symbolic.relation(args.key)
         matplotlib.use("Agg")  # the CLI writes figures to files only: no window, whatever the user's default
         status = args.run(args)
-    except UsageError as error:
-        print(f"mdr-events: error: {error}", file=sys.stderr)
-        return 2
-    except (ValueError, TypeError, KeyError) as error:
-        message = str(error.args[0]) if isinstance(error, KeyError) and error.args else str(error)
-        print(f"mdr-events: error: {message}".splitlines()[0], file=sys.stderr)
-        return 2
+    except (Exception, KeyboardInterrupt, _Terminated) as error:
+        if debug and not isinstance(error, UsageError):
+            raise
+        text, code = _outcome(error)
+        print(f"mdr-events: {_one_line(text)}", file=sys.stderr)
+        return code
+    finally:
+        if handles_sigterm:
+            signal.signal(signal.SIGTERM, signal.SIG_DFL if previous is None else previous)
     return 0 if status is None else int(status)
 
 

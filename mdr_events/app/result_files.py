@@ -9,6 +9,11 @@ as it is (:attr:`FileStatus.KEPT`): a dataset that agrees within
 with the same pixels, a text with the same characters. The figure and the event log are then drawn
 from the dataset on disk, so that a kept dataset keeps its figure and log too. This is what lets
 ``make reproduce`` leave a clean git tree on a machine whose rounding differs.
+
+:func:`write_phase_diagram` and :func:`write_simulation` check the output directory and the stem first
+(:func:`mdr_events.io.files.prepare_output_directory`, :func:`mdr_events.io.files.check_output_stem`) and
+draw the figure and the event log before the first file is written: a figure that cannot be drawn leaves
+no netCDF file without its figure.
 """
 
 from __future__ import annotations
@@ -26,11 +31,13 @@ from matplotlib import image
 from matplotlib.figure import Figure
 
 from mdr_events.io.datasets import RESULT_RTOL, result_differences
-from mdr_events.io.files import atomic_write, open_result, write_netcdf
+from mdr_events.io.files import (atomic_write, check_file_path, check_output_stem, open_result,
+                                 prepare_output_directory, write_netcdf)
 from mdr_events.models.simulate import case_dimension
 from mdr_events.parameters import Parameters
 from mdr_events.plotting.figures import figure_png, plot_phase_diagram, plot_simulation
 from mdr_events.theory.phase import phase_diagram
+from mdr_events.validation import shown
 
 __all__ = ["FileStatus", "FileOutcome", "write_dataset", "write_figure", "write_text", "write_phase_diagram",
            "write_simulation", "event_log_csv", "describe_outcomes"]
@@ -50,21 +57,36 @@ class FileOutcome(NamedTuple):
     status: FileStatus
 
 
+def _agreeing_file(dataset: xr.Dataset, target: Path, keep_agreeing: bool) -> xr.Dataset | None:
+    """The dataset in ``target`` if ``keep_agreeing`` and it agrees with ``dataset``; else ``None``."""
+    if keep_agreeing and target.exists():
+        try:
+            existing = open_result(target)
+        except ValueError:  # unreadable or foreign: replaced
+            return None
+        if not result_differences(dataset, existing):
+            return existing
+    return None
+
+
+def _write_or_keep(dataset: xr.Dataset, target: Path, existing: xr.Dataset | None) -> FileOutcome:
+    if existing is not None:
+        return FileOutcome(target, FileStatus.KEPT)
+    return FileOutcome(write_netcdf(dataset, target), FileStatus.WRITTEN)
+
+
 def write_dataset(dataset: xr.Dataset, path: str | os.PathLike,
                   keep_agreeing: bool = False) -> tuple[xr.Dataset, FileOutcome]:
     """Write ``dataset`` as netCDF, or keep the file on disk if it agrees (``keep_agreeing``).
 
     Returns the dataset now in the file (the one on disk if kept) and the outcome.
     """
-    target = Path(path)
-    if keep_agreeing and target.exists():
-        try:
-            existing = open_result(target)
-        except ValueError:  # unreadable or foreign: replaced
-            existing = None
-        if existing is not None and not result_differences(dataset, existing):
-            return existing, FileOutcome(target, FileStatus.KEPT)
-    return dataset, FileOutcome(write_netcdf(dataset, target), FileStatus.WRITTEN)
+    if not isinstance(dataset, xr.Dataset):
+        raise TypeError(f"dataset={shown(dataset)} ({type(dataset).__name__}) is not allowed; allowed: an "
+                        "xarray.Dataset")
+    target = check_file_path("path", path)
+    existing = _agreeing_file(dataset, target, keep_agreeing)
+    return (dataset if existing is None else existing), _write_or_keep(dataset, target, existing)
 
 
 def _write_if_new(path: Path, data: bytes, same: Callable[[bytes, bytes], bool], keep_agreeing: bool) -> FileOutcome:
@@ -93,15 +115,33 @@ def write_text(text: str, path: str | os.PathLike, keep_agreeing: bool = False) 
     return _write_if_new(Path(path), text.encode(), lambda old, new: old == new, keep_agreeing)
 
 
+def _check_distinct_cases(dataset: xr.Dataset) -> None:
+    """Raise ``ValueError`` if a simulation's case labels repeat (its figure and event log need each once)."""
+    dimension = case_dimension(dataset)
+    labels, counts = np.unique(dataset[dimension].values, return_counts=True)
+    if np.any(counts > 1):
+        raise ValueError(f"dataset {dimension}={shown(dataset[dimension].values.tolist())} repeats "
+                         f"{labels[counts > 1][0].item()!r}; allowed: a simulation whose {dimension} values are "
+                         "distinct (each labels one case)")
+
+
 def write_phase_diagram(params: Parameters, scenario: str, out: str | os.PathLike, stem: str,
                         keep_agreeing: bool = False, attrs: dict[str, str] | None = None) -> list[FileOutcome]:
     """Compute the phase diagram (Fig. 9a/9b) and write ``stem.nc`` (with the extra ``attrs``) and
-    ``stem.png``."""
+    ``stem.png``.
+
+    The output directory and the stem are checked first (:func:`~mdr_events.io.files.prepare_output_directory`,
+    :func:`~mdr_events.io.files.check_output_stem`), and the figure is drawn before any file is written.
+    """
+    directory = prepare_output_directory(out, "out")
+    check_output_stem("stem", stem)
     dataset = phase_diagram(params, scenario=scenario)
     dataset.attrs.update(attrs or {})
-    dataset, outcome = write_dataset(dataset, Path(out) / f"{stem}.nc", keep_agreeing)
-    figure = plot_phase_diagram(dataset).figure
-    return [outcome, write_figure(figure, Path(out) / f"{stem}.png", keep_agreeing)]
+    nc = directory / f"{stem}.nc"
+    existing = _agreeing_file(dataset, nc, keep_agreeing)
+    png = figure_png(plot_phase_diagram(dataset if existing is None else existing).figure)
+    return [_write_or_keep(dataset, nc, existing),
+            _write_if_new(directory / f"{stem}.png", png, _same_pixels, keep_agreeing)]
 
 
 def write_simulation(dataset: xr.Dataset, out: str | os.PathLike, stem: str, overlay: xr.Dataset | None = None,
@@ -111,11 +151,32 @@ def write_simulation(dataset: xr.Dataset, out: str | os.PathLike, stem: str, ove
 
     ``plot(dataset, overlay=overlay)`` draws the figure: :func:`~mdr_events.plotting.plot_simulation` (the
     panels against time) by default, e.g. :func:`~mdr_events.plotting.plot_fretting` for fretting loops.
+
+    Everything is checked and drawn before the first file is written: the output directory, the stem, the
+    case labels (distinct), the figure and the event log. A figure that cannot be drawn writes nothing.
+
+    Raises
+    ------
+    TypeError
+        If ``dataset`` is not an ``xarray.Dataset``.
+    ValueError
+        If ``out`` cannot take the files, ``stem`` is not a plain file-name stem, or the case labels repeat.
     """
-    dataset, outcome = write_dataset(dataset, Path(out) / f"{stem}.nc", keep_agreeing)
-    outcomes = [outcome, write_figure(plot(dataset, overlay=overlay), Path(out) / f"{stem}.png", keep_agreeing)]
-    if "event_kind" in dataset:
-        outcomes.append(write_text(event_log_csv(dataset), Path(out) / f"{stem}_events.csv", keep_agreeing))
+    if not isinstance(dataset, xr.Dataset):
+        raise TypeError(f"dataset={shown(dataset)} ({type(dataset).__name__}) is not allowed; allowed: an "
+                        "xarray.Dataset (a simulation)")
+    directory = prepare_output_directory(out, "out")
+    check_output_stem("stem", stem)
+    _check_distinct_cases(dataset)
+    nc = directory / f"{stem}.nc"
+    existing = _agreeing_file(dataset, nc, keep_agreeing)
+    on_disk = dataset if existing is None else existing
+    png = figure_png(plot(on_disk, overlay=overlay))
+    events = event_log_csv(on_disk) if "event_kind" in on_disk else None
+    outcomes = [_write_or_keep(dataset, nc, existing),
+                _write_if_new(directory / f"{stem}.png", png, _same_pixels, keep_agreeing)]
+    if events is not None:
+        outcomes.append(write_text(events, directory / f"{stem}_events.csv", keep_agreeing))
     return outcomes
 
 

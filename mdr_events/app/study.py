@@ -31,8 +31,8 @@ A study names its parameters, what to compute and where to write it::
     alpha = 20                   # scenario and one alpha, here or from [simulation]
 
     [output]                     # required
-    directory = "out"            # relative to the study file
-    name = "my_study"            # file stem (default: the study file's stem)
+    directory = "out"            # relative to the study file; checked before anything is computed
+    name = "my_study"            # file stem (default: the study file's stem); a plain name: no / or \\
 
 Each run of ``[validate]`` is checked by :func:`mdr_events.validate` and written as
 ``<name>_validation_<run's file stem>.nc``, ``.md`` and ``.png``
@@ -42,7 +42,11 @@ written, so that a bad run writes nothing. ``mdr-events run`` exits with status 
 The file is read with :mod:`tomllib`. Unknown tables or keys, values of the
 wrong type and missing required keys are errors that name the table, the
 key, the value and what is allowed; the values themselves are then checked
-by the functions they go to (:class:`Parameters`, :func:`simulate`, ...).
+by the functions they go to (:class:`Parameters`, :func:`simulate`, ...). A study file that is missing, a
+directory, not UTF-8 text or not TOML is an error naming the file. ``[output] name`` is a plain file-name
+stem (:func:`mdr_events.io.files.check_output_stem`: no ``/`` or ``\\``, not ``..``), so that every file
+stays in the output directory; :func:`run_study` checks ``[output] directory`` (a directory that exists or
+can be created, writable: :func:`mdr_events.io.files.prepare_output_directory`) before anything is computed.
 
 Without a ``[parameters]`` table the study uses the preset ``paper-R30``. With a preset, every
 result says which values came from it (attributes ``parameters_preset`` and
@@ -62,10 +66,12 @@ from pathlib import Path as FilePath
 from typing import TYPE_CHECKING, Any, Callable, Iterable
 
 from mdr_events.analysis.validate import validate
+from mdr_events.io.files import check_file_path, check_output_stem, prepare_output_directory
 from mdr_events.models.continuum import Tolerances
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
+from mdr_events.validation import shown
 
 if TYPE_CHECKING:
     from mdr_events.app.result_files import FileOutcome
@@ -174,6 +180,11 @@ def _check_tables(document: dict[str, Any], where: str) -> None:
         raise StudyError(f"{where}: [simulation] lacks the required key scenario (or give a [path] table)")
     if "validate" in document:
         _validation_case(document, where)
+    if "name" in document["output"]:
+        try:
+            check_output_stem("[output] name", document["output"]["name"])
+        except ValueError as error:
+            raise StudyError(f"{where}: {error}") from None
 
 
 def _validation_case(document: dict[str, Any], where: str) -> tuple[str, float] | None:
@@ -198,15 +209,28 @@ def _validation_case(document: dict[str, Any], where: str) -> tuple[str, float] 
     return str(scenario), float(angles[0])
 
 
-def _read_toml(source: FilePath, what: str) -> dict[str, Any]:
+def _read_toml(path: Any, what: str) -> tuple[dict[str, Any], FilePath]:
+    """The TOML document of the file at ``path`` (a ``what``, e.g. "study file") and the file's path.
+
+    Raises ``TypeError`` if ``path`` is not a ``str`` or ``os.PathLike``, and :class:`StudyError` naming the
+    file if it is missing, a directory, unreadable, not UTF-8 text or not valid TOML.
+    """
+    source = check_file_path("path", path, f"a str or os.PathLike naming a {what} (.toml)")
     where = os.fspath(source)
+    allowed = f"allowed: a {what}, TOML in UTF-8 text"
     try:
         with open(source, "rb") as handle:
-            return tomllib.load(handle)
-    except (FileNotFoundError, IsADirectoryError):
+            return tomllib.load(handle), source
+    except FileNotFoundError:
         raise StudyError(f"{where}: no such {what}") from None
+    except IsADirectoryError:
+        raise StudyError(f"{where} is a directory; {allowed}") from None
+    except UnicodeDecodeError as error:
+        raise StudyError(f"{where}: not UTF-8 text (byte {error.start}: {error.reason}); {allowed}") from None
     except tomllib.TOMLDecodeError as error:
-        raise StudyError(f"{where}: not valid TOML ({error})") from None
+        raise StudyError(f"{where}: not valid TOML ({error}); {allowed}") from None
+    except OSError as error:
+        raise StudyError(f"{where} cannot be read ({error.strerror or error}); {allowed}") from None
 
 
 def _parameters(table: dict[str, Any] | None, where: str,
@@ -231,19 +255,26 @@ def _parameters(table: dict[str, Any] | None, where: str,
 
 
 def load_study(path: str | os.PathLike) -> Study:
-    """Read and check a study file; raises :class:`StudyError` (a ``ValueError``) naming what is wrong."""
-    source = FilePath(path)
+    """Read and check a study file.
+
+    Raises
+    ------
+    TypeError
+        If ``path`` is not a ``str`` or ``os.PathLike`` (e.g. ``None``).
+    StudyError
+        A ``ValueError`` naming the file, the table, the key and what is allowed: a file that is missing, a
+        directory, not UTF-8 text or not valid TOML, and every table or key that cannot be run.
+    """
+    document, source = _read_toml(path, "study file")
     where = os.fspath(source)
-    document = _read_toml(source, "study file")
     _check_tables(document, where)
     params, provenance = _parameters(document.get("parameters"), where)
     return Study(source, params, {table: dict(content) for table, content in document.items()}, provenance)
 
 
 def _one_table(path: str | os.PathLike, table: str, what: str) -> tuple[dict[str, Any], str]:
-    source = FilePath(path)
+    document, source = _read_toml(path, what)
     where = os.fspath(source)
-    document = _read_toml(source, what)
     if table not in document:
         raise StudyError(f"{where}: no [{table}] table; tables found: "
                          f"{', '.join(f'[{name}]' for name in document) or 'none'}; allowed: a TOML file with a "
@@ -309,14 +340,21 @@ def _validations(study: Study, progress: Callable[[str], None]) -> list[tuple[st
         raise StudyError(f"{where}: [validate] {error}") from None
     options = {key: table[key] for key in ("tolerance", "names", "units", "time_origin") if key in table}
     stems: dict[str, str] = {}
-    reports = []
-    for run in table["runs"]:
+    files = []
+    for run in table["runs"]:  # every run's file names are checked before the first run is validated
         file = FilePath(run) if FilePath(run).is_absolute() else study.source.parent / run
         stem = f"{study.name}_validation_{file.stem}"
         if stem in stems:
             raise StudyError(f"{where}: [validate] runs {stems[stem]!r} and {run!r} would both be written as "
                              f"{stem}.*; allowed: runs with different file names")
+        try:
+            check_output_stem("stem", stem)
+        except ValueError as error:
+            raise StudyError(f"{where}: [validate] run {run!r} would be written as {stem}.*: {error}") from None
         stems[stem] = run
+        files.append((run, file, stem))
+    reports = []
+    for run, file, stem in files:
         progress(f"validate: {run}")
         try:
             report = validate(file, study.params, path, **options)
@@ -331,15 +369,32 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
     """Compute what the study asks for and write it (netCDF + PNG, event log CSV; the ``[validate]`` runs'
     reports as .nc, .md and .png); returns the files and the runs' verdicts (:class:`StudyOutcomes`).
 
-    The ``[validate]`` runs are validated before anything is written: a run that cannot be read writes nothing.
+    The output directory (``[output] directory``: a directory that exists or can be created, writable) and
+    the files' stem are checked before anything is computed, and the ``[validate]`` runs are validated before
+    anything is written: a run that cannot be read writes nothing.
+
+    Raises
+    ------
+    TypeError
+        If ``study`` is not a :class:`Study` (see :func:`load_study`).
+    StudyError
+        Naming the study file, the table and the key of what cannot be run.
     """
     # here, not at the top: result_files loads matplotlib.pyplot, which `import mdr_events` should not pay for
     from mdr_events.app.result_files import write_phase_diagram, write_simulation
     from mdr_events.app.validation_files import write_rendered
 
-    out = study.output_directory
-    written = StudyOutcomes()
+    if not isinstance(study, Study):
+        raise TypeError(f"study={shown(study)} ({type(study).__name__}) is not allowed; allowed: a Study "
+                        "(mdr_events.load_study)")
     where = os.fspath(study.source)
+    try:
+        out = prepare_output_directory(study.output_directory, "[output] directory")
+        check_output_stem("[output] name" if "name" in study.tables["output"] else
+                          "[output] name (by default the study file's stem)", study.name)
+    except ValueError as error:
+        raise StudyError(f"{where}: {error}") from None
+    written = StudyOutcomes()
     for scenario in study.tables.get("phase_diagram", {}).get("scenarios", []):
         if scenario not in ("A", "B"):
             raise StudyError(f"{where}: [phase_diagram] scenarios contains {scenario!r}; allowed: 'A', 'B'")

@@ -23,7 +23,7 @@ import xarray as xr
 
 from mdr_events.analysis.validate import LEFT_OUT_CODES
 from mdr_events.app.result_files import FileOutcome, FileStatus
-from mdr_events.io.files import atomic_write, write_netcdf
+from mdr_events.io.files import atomic_write, check_output_stem, prepare_output_directory, write_netcdf
 from mdr_events.parameters import PARAMETER_UNITS
 from mdr_events.plotting.figures import figure_png
 from mdr_events.plotting.validation import plot_validation
@@ -145,7 +145,11 @@ def render_validation(report: xr.Dataset, stem: str) -> RenderedValidation:
 
 
 def write_rendered(rendered: RenderedValidation, out: str | os.PathLike) -> list[FileOutcome]:
-    """Write ``<stem>.nc``, ``<stem>.md`` and ``<stem>.png`` into ``out`` (each atomically)."""
+    """Write ``<stem>.nc``, ``<stem>.md`` and ``<stem>.png`` into ``out`` (each atomically), after checking
+    ``out`` (:func:`~mdr_events.io.files.prepare_output_directory`) and the stem
+    (:func:`~mdr_events.io.files.check_output_stem`)."""
+    prepare_output_directory(out, "out")
+    check_output_stem("stem", rendered.stem)
     nc, md, png = rendered.paths(out)
     written = [write_netcdf(rendered.report, nc),
                atomic_write(md, lambda temporary: Path(temporary).write_text(rendered.markdown, encoding="utf-8"),

@@ -57,8 +57,14 @@ def _factor(quantity: str, unit: str, source: str) -> float:
 
 
 def _read_csv(path: Path) -> dict[str, np.ndarray]:
-    with open(path, newline="", encoding="utf-8") as handle:
-        rows = list(csv.reader(row for row in handle if not row.lstrip().startswith("#")))
+    try:
+        with open(path, newline="", encoding="utf-8") as handle:
+            rows = list(csv.reader(row for row in handle if not row.lstrip().startswith("#")))
+    except UnicodeDecodeError as error:
+        raise ValueError(f"{path}: not UTF-8 text (byte {error.start}: {error.reason}); allowed: a CSV file with a "
+                         "header row (UTF-8 text)") from None
+    except csv.Error as error:
+        raise ValueError(f"{path}: not a readable CSV file ({error}); allowed: a CSV file with a header row") from None
     if not rows:
         raise ValueError(f"{path}: the file is empty; allowed: a CSV file with a header row")
     header = [name.strip() for name in rows[0]]
@@ -78,6 +84,9 @@ def _columns_and_units(candidate, source: str) -> tuple[dict[str, np.ndarray], d
     """The candidate's columns and the units they declare (a Dataset's or netCDF file's ``units``)."""
     if isinstance(candidate, (str, os.PathLike)):
         path = Path(candidate)
+        if path.is_dir():
+            raise ValueError(f"candidate={str(candidate)!r} is a directory; allowed: a CSV or netCDF file, a Dataset "
+                             "or a mapping of arrays")
         if not path.is_file():
             raise ValueError(f"candidate={str(candidate)!r}: no such file; allowed: a CSV or netCDF file, a Dataset or "
                              "a mapping of arrays")

@@ -1,16 +1,32 @@
-"""Result files: atomic netCDF writing, and reading back with a check against the result's schema.
+"""Result files: atomic writing, the output directory checked first, and reading back with a check against
+the result's schema.
 
 A file is written to a temporary name beside its target and renamed into
 place (:func:`atomic_write`), so that it is never seen half-written.
-:func:`open_result` reads a file this package wrote and checks it against
-the schema registered for its kind of result
+:func:`prepare_output_directory` checks an output directory before anything
+is computed; :func:`check_output_stem` checks a file-name stem that a user
+chose. :func:`open_result` reads a file this package wrote and checks it
+against the schema registered for its kind of result
 (:func:`mdr_events.io.datasets.register_schema`).
+
+Temporary files
+---------------
+A temporary file is named ``.<target name>.mdr-tmp-<random><suffix>``
+(:data:`TEMPORARY_MARKER`, :func:`is_temporary_name`). Its writer holds an
+exclusive lock (``flock``) on it while writing; an exception, Ctrl-C or (in
+``mdr-events``) SIGTERM removes it. A writer killed outright (SIGKILL, power
+loss) leaves it behind: every :func:`atomic_write` first removes the *stale*
+temporary files of its directory (:func:`remove_stale_temporaries`), those
+last modified before the running process started and not locked by any
+process, i.e. left by a writer that is gone.
 """
 
 from __future__ import annotations
 
 import os
+import re
 import tempfile
+import time
 from pathlib import Path
 from typing import Any, Callable
 
@@ -18,8 +34,189 @@ import xarray as xr
 
 from mdr_events.io.datasets import (PROGRAM, STAMP_ATTRIBUTES, describe_dims, dims_match, parameters_of,
                                    required_variables)
+from mdr_events.validation import shown
 
-__all__ = ["atomic_write", "write_netcdf", "open_result"]
+try:  # POSIX: a writer locks its temporary file, so that another process never takes it for stale
+    import fcntl
+except ImportError:  # pragma: no cover - Windows: only the age counts (see STALE_WITHOUT_LOCKS)
+    fcntl = None  # type: ignore[assignment]
+
+__all__ = ["atomic_write", "write_netcdf", "open_result", "prepare_output_directory", "check_output_stem",
+           "check_file_path", "remove_stale_temporaries", "is_temporary_name", "TEMPORARY_MARKER"]
+
+#: What marks a temporary file of :func:`atomic_write`: ``.<target name>.mdr-tmp-<random><suffix>``.
+TEMPORARY_MARKER = ".mdr-tmp-"
+_TEMPORARY_NAME = re.compile(r"^\..+" + re.escape(TEMPORARY_MARKER) + r"[A-Za-z0-9_]+(\.[A-Za-z0-9]+)?$")
+#: When this process started (close enough: when this module was imported). A temporary file modified
+#: later may belong to a writer that has just created it and not yet locked it; it is never stale.
+PROCESS_STARTED = time.time()
+#: Without file locks (no :mod:`fcntl`), a temporary file is stale only when it is this old as well (s).
+STALE_WITHOUT_LOCKS = 24 * 3600.0
+#: The longest stem :func:`check_output_stem` allows, in bytes of UTF-8: a file name has at most 255 bytes,
+#: and a result's name adds a suffix (``_phase_diagram_A.png``) and its temporary file a marker.
+MAX_STEM_BYTES = 200
+_ALLOWED_PATH = "a str or os.PathLike"
+_ALLOWED_DIRECTORY = "a directory that exists or can be created, and that this user can write into"
+_ALLOWED_STEM = (f"a plain file-name stem: not empty, not '.' or '..', without '/', '\\', control characters or "
+                 f"{TEMPORARY_MARKER!r}, at most {MAX_STEM_BYTES} bytes")
+
+
+def check_file_path(name: str, path: Any, allowed: str = _ALLOWED_PATH) -> Path:
+    """``path`` as a :class:`~pathlib.Path` if it is a non-empty ``str`` or ``os.PathLike`` (of ``str``).
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, as the user wrote it (``path``, ``--out``).
+    path : object
+        The value given.
+    allowed : str
+        What is allowed, for the message.
+
+    Raises
+    ------
+    TypeError
+        If ``path`` is of another type (``None``, bytes, a Dataset, ...).
+    ValueError
+        If ``path`` is empty or holds a NUL character.
+    """
+    if not isinstance(path, (str, os.PathLike)) or not isinstance(os.fspath(path), str):
+        raise TypeError(f"{name}={shown(path)} ({type(path).__name__}) is not allowed; allowed: {allowed}")
+    text = os.fspath(path)
+    if not text or "\0" in text:
+        raise ValueError(f"{name}={text!r} is not allowed; allowed: {allowed}, not empty and without NUL")
+    return Path(text)
+
+
+def prepare_output_directory(path: Any, name: str) -> Path:
+    """Check that ``path`` can take the output, before anything is computed; returns it as a ``Path``.
+
+    ``path`` must be a directory this user can write into, or not exist yet with its nearest existing
+    ancestor such a directory (it is created when the first file is written, by :func:`atomic_write`;
+    nothing is created here, so that input found wrong later leaves nothing behind).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The output directory.
+    name : str
+        The argument's name for the message (``--out``, ``[output] directory``, ``out``).
+
+    Raises
+    ------
+    TypeError
+        If ``path`` is not a ``str`` or ``os.PathLike``.
+    ValueError
+        Naming ``name``, the value and what is allowed: ``path`` is a file, lies below a file, is a
+        broken symbolic link, or it (or the directory it would be created in) is not writable.
+    """
+    directory = check_file_path(name, path, f"{_ALLOWED_PATH} naming {_ALLOWED_DIRECTORY}")
+    text = os.fspath(path)  # as the user wrote it
+
+    def refuse(why: str) -> ValueError:
+        return ValueError(f"{name}={text!r} is not allowed ({why}); allowed: {_ALLOWED_DIRECTORY}")
+
+    absolute = directory.absolute()
+    existing = absolute
+    while not os.path.exists(existing):  # the nearest ancestor that exists (os.path: False on any error)
+        if os.path.lexists(existing):
+            raise refuse("it is a broken symbolic link" if existing == absolute
+                         else f"it lies below {existing}, a broken symbolic link")
+        if existing.parent == existing:  # pragma: no cover - the root always exists
+            break
+        existing = existing.parent
+    if not os.path.isdir(existing):
+        raise refuse("it is a file, not a directory" if existing == absolute
+                     else f"it lies below {existing}, a file, not a directory")
+    if not os.access(existing, os.W_OK | os.X_OK):
+        raise refuse("it is not writable" if existing == absolute
+                     else f"it cannot be created: {existing} is not writable")
+    return directory
+
+
+def check_output_stem(name: str, stem: Any) -> str:
+    """``stem`` if it is a plain file-name stem that keeps every file in its output directory.
+
+    Parameters
+    ----------
+    name : str
+        The argument's name for the message (``[output] name``, ``stem``).
+    stem : str
+        The stem a user chose; files are written as ``<stem><suffix>`` in the output directory.
+
+    Raises
+    ------
+    TypeError
+        If ``stem`` is not a ``str``.
+    ValueError
+        If ``stem`` is empty, ``.`` or ``..``, holds a path separator or a control character, holds
+        :data:`TEMPORARY_MARKER` (a later write would take the file for a stale temporary file) or is
+        longer than :data:`MAX_STEM_BYTES`.
+    """
+    if not isinstance(stem, str):
+        raise TypeError(f"{name}={shown(stem)} ({type(stem).__name__}) is not allowed; allowed: {_ALLOWED_STEM}")
+    separators = {"/", "\\", os.sep, os.altsep or "/"}
+    if (stem in ("", ".", "..") or any(character in separators for character in stem)
+            or not stem.isprintable() or TEMPORARY_MARKER in stem or len(stem.encode()) > MAX_STEM_BYTES):
+        raise ValueError(f"{name}={shown(stem)} is not allowed; allowed: {_ALLOWED_STEM}")
+    return stem
+
+
+def is_temporary_name(name: str) -> bool:
+    """Whether a file name is that of a temporary file of :func:`atomic_write`."""
+    return _TEMPORARY_NAME.match(name) is not None
+
+
+def _is_stale(path: str, modified: float) -> bool:
+    """Whether the temporary file at ``path`` (last modified at ``modified``) was left by a writer that is gone."""
+    if modified >= PROCESS_STARTED:
+        return False
+    if fcntl is None:  # pragma: no cover - Windows
+        return time.time() - modified > STALE_WITHOUT_LOCKS
+    try:
+        handle = os.open(path, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
+    except OSError:  # gone meanwhile (renamed into place), or not ours to read
+        return False
+    try:
+        fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:  # locked: its writer is still at work
+        return False
+    finally:
+        os.close(handle)  # releases the lock taken, if any
+    return True
+
+
+def remove_stale_temporaries(directory: str | os.PathLike) -> list[Path]:
+    """Remove the temporary files of :func:`atomic_write` in ``directory`` left by writers that are gone.
+
+    A file is removed when its name matches the pattern (:func:`is_temporary_name`), it is a regular file
+    (not a symbolic link), it was last modified before this process started (:data:`PROCESS_STARTED`) and
+    no process holds its lock (every writer holds one while writing; a killed process holds none). Where
+    there are no file locks (Windows), it must also be :data:`STALE_WITHOUT_LOCKS` seconds old.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files removed; a directory that cannot be listed gives ``[]``.
+    """
+    removed = []
+    try:
+        entries = list(os.scandir(directory))
+    except OSError:
+        return removed
+    for entry in entries:
+        if not is_temporary_name(entry.name):
+            continue
+        try:
+            if not entry.is_file(follow_symlinks=False):
+                continue
+            if not _is_stale(entry.path, entry.stat(follow_symlinks=False).st_mtime):
+                continue
+            os.unlink(entry.path)
+        except OSError:
+            continue
+        removed.append(Path(entry.path))
+    return removed
 
 
 def atomic_write(path: str | os.PathLike, write: Callable[[str], Any], suffix: str = ".tmp") -> Path:
@@ -27,21 +224,50 @@ def atomic_write(path: str | os.PathLike, write: Callable[[str], Any], suffix: s
 
     An interrupted or failing writer leaves the old file (or none), never a
     half-written one; the temporary file sits beside the target so that the
-    rename is atomic.
+    rename is atomic. It is named ``.<name>.mdr-tmp-<random><suffix>`` and locked (``flock``, exclusive)
+    while being written, so ``write`` must not lock it itself; the stale temporary files of the directory
+    (:func:`remove_stale_temporaries`) are removed first. An ``OSError`` about the temporary file names
+    ``path`` instead.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file to write; its directory is created if missing.
+    write : callable
+        Writes the content to the path it is given.
+    suffix : str
+        The temporary file's suffix (e.g. ``.png``).
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
     """
-    target = Path(path)
+    target = check_file_path("path", path)
     target.parent.mkdir(parents=True, exist_ok=True)
-    handle, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=suffix, dir=target.parent)
-    os.close(handle)
+    remove_stale_temporaries(target.parent)
+    temporary = None
+    handle = None
     try:
+        handle, temporary = tempfile.mkstemp(prefix=f".{target.name}{TEMPORARY_MARKER}", suffix=suffix,
+                                             dir=target.parent)
+        if fcntl is not None:
+            fcntl.flock(handle, fcntl.LOCK_EX)  # held until the file is in place (closed in the finally)
         write(temporary)
         mask = os.umask(0)  # mkstemp makes the file owner-only; give it the usual permissions
         os.umask(mask)
         os.chmod(temporary, 0o666 & ~mask)
         os.replace(temporary, target)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
+        temporary = None
+    except OSError as error:
+        if error.filename == temporary:  # name the file the user asked for, not a temporary one now gone
+            error.filename = os.fspath(target)
         raise
+    finally:
+        if temporary is not None:
+            Path(temporary).unlink(missing_ok=True)
+        if handle is not None:
+            os.close(handle)
     return target
 
 
@@ -50,7 +276,17 @@ def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
 
     The scipy backend (netCDF3, 64-bit offset) is used so that no further
     dependency is needed.
+
+    Raises
+    ------
+    TypeError
+        If ``dataset`` is not an ``xarray.Dataset`` or ``path`` not a ``str`` or ``os.PathLike``
+        (nothing is written).
     """
+    if not isinstance(dataset, xr.Dataset):
+        raise TypeError(f"dataset={shown(dataset)} ({type(dataset).__name__}) is not allowed; allowed: an "
+                        "xarray.Dataset")
+    check_file_path("path", path)
     return atomic_write(path, lambda temporary: dataset.to_netcdf(
         temporary, engine="scipy", format="NETCDF3_64BIT"), suffix=".nc")
 
@@ -58,12 +294,12 @@ def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
 def open_result(path: str | os.PathLike) -> xr.Dataset:
     """Read a file written by this package, fully loaded, and check it against its schema.
 
-    Raises ``ValueError`` naming what is wrong when the file is not a
-    readable netCDF file, was not written by this package, lacks a stamp
-    attribute or a parameter, or lacks a variable (or its ``units`` /
-    ``long_name``) that its kind of result (``content``) must hold.
+    Raises ``TypeError`` if ``path`` is not a ``str`` or ``os.PathLike``, and ``ValueError`` naming
+    the file and what is wrong when it is missing, a directory, not a readable netCDF file, was not
+    written by this package, lacks a stamp attribute or a parameter, or lacks a variable (or its
+    ``units`` / ``long_name``) that its kind of result (``content``) must hold.
     """
-    where = repr(os.fspath(path))
+    where = repr(os.fspath(check_file_path("path", path, f"{_ALLOWED_PATH} naming a netCDF file")))
     dataset = _load_netcdf(path, where)
     _check_stamp(dataset, where)
     _check_variables(dataset, where)
@@ -72,13 +308,17 @@ def open_result(path: str | os.PathLike) -> xr.Dataset:
 
 def _load_netcdf(path: str | os.PathLike, where: str) -> xr.Dataset:
     """The netCDF file at ``path``, fully loaded (``ValueError`` if missing or unreadable)."""
+    if os.path.isdir(path):
+        raise ValueError(f"{where} is a directory; allowed: a netCDF file written by {PROGRAM}")
     try:
         with xr.open_dataset(path, engine="scipy") as handle:
             return handle.load()
     except FileNotFoundError:
         raise ValueError(f"{where}: no such file") from None
     except (OSError, ValueError, TypeError, IndexError, KeyError) as error:
-        raise ValueError(f"{where} is not a readable netCDF file ({type(error).__name__}: {error})") from None
+        reason = " ".join(str(error).split())  # one line: the reader's message may span several
+        raise ValueError(f"{where} is not a readable netCDF file ({type(error).__name__}: {reason}); allowed: a "
+                         f"netCDF file written by {PROGRAM}") from None
 
 
 def _check_stamp(dataset: xr.Dataset, where: str) -> None:

@@ -1,8 +1,10 @@
 """Files: every result reads back identical, writes are atomic, foreign or damaged files are named."""
 
+import fcntl
 import os
 import subprocess
 import sys
+import time
 
 import numpy as np
 import pytest
@@ -10,7 +12,8 @@ import xarray as xr
 
 import mdr_events as me
 from mdr_events.io import datasets
-from mdr_events.io.files import atomic_write, write_netcdf
+from mdr_events.io.files import (TEMPORARY_MARKER, atomic_write, check_output_stem, is_temporary_name,
+                                 prepare_output_directory, remove_stale_temporaries, write_netcdf)
 
 
 @pytest.fixture(scope="module")
@@ -150,3 +153,121 @@ def test_wrong_dimensions_are_named(results, tmp_path):
     transposed.to_netcdf(path, engine="scipy")
     with pytest.raises(ValueError, match=r"wrong dimensions: normal_force \('time', 'alpha'\)"):
         me.open_result(path)
+
+
+def _leftover(directory, name, age=3600.0):
+    """A temporary file as a killed writer leaves it, last modified ``age`` seconds before now."""
+    path = directory / name
+    path.write_bytes(b"half")
+    then = time.time() - age
+    os.utime(path, (then, then))
+    return path
+
+
+def test_a_temporary_file_is_named_by_the_pattern_and_locked_while_written(tmp_path):
+    seen = []
+
+    def write(temporary):
+        seen.append(os.path.basename(temporary))
+        handle = os.open(temporary, os.O_RDONLY)
+        try:  # another open file cannot take the lock: a sweep would not take it for stale
+            with pytest.raises(BlockingIOError):
+                fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        finally:
+            os.close(handle)
+        with open(temporary, "w") as stream:
+            stream.write("content")
+
+    atomic_write(tmp_path / "fig.png", write, suffix=".png")
+    [name] = seen
+    assert name.startswith(f".fig.png{TEMPORARY_MARKER}") and name.endswith(".png") and is_temporary_name(name)
+    assert os.listdir(tmp_path) == ["fig.png"]
+
+
+def test_stale_temporary_files_are_removed_by_the_next_write(tmp_path):
+    stale = [_leftover(tmp_path, f".fig8_R30.png{TEMPORARY_MARKER}k5_ee2v3.png"),
+             _leftover(tmp_path, f".other.nc{TEMPORARY_MARKER}abcd1234.nc")]
+    fresh = _leftover(tmp_path, f".new.nc{TEMPORARY_MARKER}qwer5678.nc", age=-60.0)  # after this process started
+    locked = _leftover(tmp_path, f".busy.nc{TEMPORARY_MARKER}zxcv9012.nc")
+    kept = [_leftover(tmp_path, name) for name in (".notes", "data.mdr-tmp-1.nc", f".x{TEMPORARY_MARKER}")]
+    handle = os.open(locked, os.O_RDONLY)
+    fcntl.flock(handle, fcntl.LOCK_EX)  # its writer is at work
+    try:
+        atomic_write(tmp_path / "result.txt", lambda temporary: open(temporary, "w").close())
+    finally:
+        os.close(handle)
+    assert not any(path.exists() for path in stale)
+    assert fresh.exists() and locked.exists() and all(path.exists() for path in kept)
+    assert remove_stale_temporaries(tmp_path) == [locked]  # now unlocked; fresh stays (younger than us)
+
+
+def test_a_temporary_directory_or_link_is_never_removed(tmp_path):
+    folder = tmp_path / f".dir{TEMPORARY_MARKER}abcd1234"
+    folder.mkdir()
+    target = _leftover(tmp_path, "target.nc")
+    link = tmp_path / f".link.nc{TEMPORARY_MARKER}abcd1234.nc"
+    link.symlink_to(target)
+    assert remove_stale_temporaries(tmp_path) == []
+    assert folder.is_dir() and link.is_symlink() and target.exists()
+
+
+@pytest.mark.parametrize("given, fragment", [
+    ("a_file", "(it is a file, not a directory)"),
+    ("a_file/sub", "(it lies below"),
+    ("dangling", "(it is a broken symbolic link)"),
+    ("dangling/sub", "(it lies below"),
+])
+def test_prepare_output_directory_names_what_cannot_take_files(tmp_path, monkeypatch, given, fragment):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "a_file").write_text("x")
+    (tmp_path / "dangling").symlink_to(tmp_path / "nowhere")
+    with pytest.raises(ValueError) as error:
+        prepare_output_directory(given, "--out")
+    assert str(error.value).startswith(f"--out={given!r} is not allowed {fragment}")
+    assert "allowed: a directory that exists or can be created" in str(error.value)
+
+
+def test_prepare_output_directory_creates_nothing(tmp_path):
+    assert prepare_output_directory(tmp_path / "a" / "b", "out") == tmp_path / "a" / "b"
+    assert prepare_output_directory(str(tmp_path), "out") == tmp_path
+    assert os.listdir(tmp_path) == []
+    with pytest.raises(TypeError, match=r"out=None \(NoneType\) is not allowed; allowed: a str or os.PathLike"):
+        prepare_output_directory(None, "out")
+    with pytest.raises(ValueError, match="out='' is not allowed"):
+        prepare_output_directory("", "out")
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root writes into read-only directories")
+def test_prepare_output_directory_refuses_a_read_only_directory(tmp_path):
+    locked = tmp_path / "locked"
+    locked.mkdir(mode=0o555)
+    try:
+        with pytest.raises(ValueError, match="it is not writable"):
+            prepare_output_directory(locked, "out")
+        with pytest.raises(ValueError, match="it cannot be created: .*locked is not writable"):
+            prepare_output_directory(locked / "sub", "out")
+    finally:
+        locked.chmod(0o755)
+
+
+def test_prepare_output_directory_asks_for_write_permission(tmp_path, monkeypatch):
+    """As root (which writes anywhere) too: a directory the user may not write into is refused."""
+    monkeypatch.setattr(os, "access", lambda path, mode: not (mode & os.W_OK))
+    with pytest.raises(ValueError, match=r"out='.*' is not allowed \(it is not writable\)"):
+        prepare_output_directory(tmp_path, "out")
+    with pytest.raises(ValueError, match=r"\(it cannot be created: .* is not writable\)"):
+        prepare_output_directory(tmp_path / "new", "out")
+
+
+@pytest.mark.parametrize("stem", ["ok", "my study-1.2", "étude", "x" * 200])
+def test_plain_stems_are_allowed(stem):
+    assert check_output_stem("stem", stem) == stem
+
+
+@pytest.mark.parametrize("stem", ["", ".", "..", "a/b", "../x", "/abs", "a\\b", "a\nb", "a\0b",
+                                  f"x{TEMPORARY_MARKER}1", "é" * 101])
+def test_stems_that_leave_the_directory_are_refused(stem):
+    with pytest.raises(ValueError, match="stem=.* is not allowed; allowed: a plain file-name stem"):
+        check_output_stem("stem", stem)
+    with pytest.raises(TypeError, match=r"stem=3 \(int\) is not allowed"):
+        check_output_stem("stem", 3)
