@@ -63,7 +63,7 @@ class Limits:
     def __post_init__(self) -> None:
         for field in dataclasses.fields(self):
             value = check_real(f"Limits.{field.name}", getattr(self, field.name), "a number > 0 (inf: no limit)",
-                               lambda number: number > 0)
+                               lambda number: number > 0, finite=False)
             object.__setattr__(self, field.name, value)
 
     def check(self, what: str, **needed: float) -> None:

@@ -24,16 +24,17 @@ def shown(value: Any) -> str:
     return text if len(text) <= SHOWN_CHARACTERS else text[: SHOWN_CHARACTERS - 3] + "..."
 
 
-def check_real(name: str, value: Any, allowed: str, valid=None) -> float:
-    """``value`` as a Python float if it is one real number (not a bool, complex or string) and ``valid``
-    (a predicate on the float, default: finite) holds; else ``TypeError`` / ``ValueError`` naming it.
+def check_real(name: str, value: Any, allowed: str, valid=None, finite: bool = True) -> float:
+    """``value`` as a Python float if it is one real number (not a bool, complex or string), finite (unless
+    ``finite`` is false: then not nan) and ``valid`` (a predicate on the float) holds; else ``TypeError`` /
+    ``ValueError`` naming it.
 
     NumPy scalars of any real type (``np.float32(2e-6)``, ``np.int64(3)``) are real numbers.
     """
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         raise TypeError(f"{name}={shown(value)} ({type(value).__name__}) is not allowed; allowed: {allowed}")
     number = float(value)
-    if not (math.isfinite(number) if valid is None else (math.isfinite(number) and valid(number))):
+    if not ((math.isfinite(number) if finite else number == number) and (valid is None or valid(number))):
         raise ValueError(f"{name}={shown(value)} is not allowed; allowed: {allowed}")
     return number
 

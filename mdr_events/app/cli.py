@@ -30,6 +30,7 @@ from typing import Sequence
 
 import matplotlib
 
+from mdr_events.limits import DEFAULT_LIMITS, LIMIT_UNITS, Limits, parse_limit
 from mdr_events._version import __version__
 from mdr_events.app.report import reproduce
 from mdr_events.app.result_files import write_phase_diagram, write_simulation
@@ -121,13 +122,29 @@ def _command_phase_diagram(args: argparse.Namespace) -> None:
         print(outcome.path)
 
 
+def _limit_option(parser: argparse.ArgumentParser) -> None:
+    """``--limit NAME=VALUE`` (repeatable): raise a resource limit of :class:`~mdr_events.limits.Limits`."""
+    parser.add_argument("--limit", action="append", default=[], metavar="NAME=VALUE",
+                        help="raise a resource limit, e.g. --limit steps=1e8 --limit memory=8GiB (names: "
+                             + ", ".join(f"{name}: {meaning}" for name, meaning in LIMIT_UNITS.items())
+                             + "; inf: none)")
+
+
+def _limits(args: argparse.Namespace) -> Limits:
+    """The limits of ``--limit`` options, on top of the defaults."""
+    limits = DEFAULT_LIMITS
+    for text in args.limit:
+        limits = parse_limit(text, limits)
+    return limits
+
+
 def _command_simulate(args: argparse.Namespace) -> None:
     params, provenance = _parameters(args)
     out = prepare_output_directory(args.out, "--out")  # before the simulation, which may take minutes
     # the options of the discrete method are passed only when given, so that simulate() rejects them
     # with the continuum method exactly as it does in Python
     options = {name: getattr(args, name) for name in ("dx", "dt", "n_steps") if getattr(args, name) is not None}
-    dataset = simulate(params, args.scenario, alpha=args.alpha, method=args.method, **options)
+    dataset = simulate(params, args.scenario, alpha=args.alpha, method=args.method, limits=_limits(args), **options)
     dataset.attrs.update(provenance)
     stem = f"simulation_{args.scenario.replace('+', 'plus')}_{args.method}"
     for outcome in write_simulation(dataset, out, stem):
@@ -281,7 +298,7 @@ def _command_validate(args: argparse.Namespace) -> int:
     path, description = _validation_path(args, params)
     options = dict(names=_pairs("--names", args.names, list(CANDIDATE_QUANTITIES)),
                    units=_pairs("--units", args.units, list(CANDIDATE_QUANTITIES)),
-                   time_origin=_time_origin(args.time_origin), tolerance=args.tolerance)
+                   time_origin=_time_origin(args.time_origin), tolerance=args.tolerance, limits=_limits(args))
     if not (math.isfinite(args.tolerance) and args.tolerance > 0):
         raise UsageError(f"--tolerance {args.tolerance!r} is not allowed; allowed: a number > 0")
     out = prepare_output_directory(args.out, "--out")
@@ -369,6 +386,7 @@ def build_parser() -> argparse.ArgumentParser:
     steps.add_argument("--n-steps", type=int, default=None,
                        help=f"discrete method: time steps of the longest case (default {DEFAULT_STEPS})")
     sim.add_argument("--out", required=True, help="output directory")
+    _limit_option(sim)
     _parameter_options(sim)
     sim.set_defaults(run=_command_simulate)
 
@@ -393,6 +411,7 @@ def build_parser() -> argparse.ArgumentParser:
                              "speed (m/s, default the parameters' v)")
     check.add_argument("--alpha", type=float, default=None, metavar="DEG", help="the scenario's angle in degrees")
     check.add_argument("--out", required=True, help="output directory")
+    _limit_option(check)
     check.add_argument("--tolerance", type=float, default=1e-3,
                        help="bound on each quantity's max error relative to its range (default 1e-3)")
     check.add_argument("--names", default=None, metavar="Q=COLUMN,...",
