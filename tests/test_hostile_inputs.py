@@ -264,3 +264,25 @@ def test_a_numpy_float32_spacing_is_a_spacing(paper):
     double = me.simulate(paper, "A", alpha=20, dx=float(np.float32(2e-6)), n_steps=2000)
     assert single.attrs["dx"] == double.attrs["dx"]
     np.testing.assert_array_equal(single["tangential_force"].values, double["tangential_force"].values)
+
+
+# --- found by the random sweep at small angles (1e-3° to 3°) -----------------------------------------
+@pytest.mark.parametrize("alpha", [1e-3, 0.01, 3.0])
+def test_the_adhesive_strength_is_exact_at_small_angles(alpha):
+    """F_N,min was 0.56 of −(3/2)πΔγ1R at 1e-3°: the extremum's search ran in the absolute time (1.7e7 s,
+    tolerance sqrt(eps) t = 0.26 s) and missed the 0.03 s minimum. It is −(3/2)πΔγ1R to rounding."""
+    params = me.Parameters(E=1e10, nu=0.3, R=0.03, tau0=0.0, dgamma0=0.01, dgamma1=0.15, d_max=3e-4, v=1e-6)
+    ds = me.simulate(params, "A", alpha=alpha, method="continuum")
+    assert float(ds["normal_force_min"].values[0]) == pytest.approx(-1.5 * math.pi * params.dgamma1 * params.R,
+                                                                    rel=1e-9)
+
+
+def test_a_hertz_start_with_adhesion_on_the_way_out_runs_at_a_small_angle():
+    """Δγ0 = 0 (the contact grows from a = 0, where every local length is 0): 'no progress at t = 0'."""
+    params = me.Parameters(E=2836774.7191009982, nu=0.45838363787092146, R=0.0704617491134207,
+                           tau0=3073.525225107821, dgamma0=0.0, dgamma1=0.6150778669417545,
+                           d_max=0.00016266056320450562, v=1e-6)
+    ds = me.simulate(params, "A", alpha=0.02091738018806621, method="continuum")
+    kinds = [str(kind) for kind in ds["event_kind"].values[0] if kind]
+    assert kinds[:2] == ["first_contact", "slip_onset"] and kinds[-1] == "pull_off"
+    assert cap_excess(params, ds) <= CAP_SHARE

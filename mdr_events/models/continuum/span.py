@@ -151,7 +151,10 @@ class SpanIntegrator:
             self.a0 = span.pinned_radius
         self.x0 = self.segment.x(t0)
         R = model.params.R
-        lengths = length_scale(anchors, self.K, self.x0, self.a0, indenter_travel(self.segment, t0, self.a0, R))
+        # at a = 0 (a Hertz contact's first instant) every local length is 0: the travel up to the span's
+        # largest radius keeps the level offset above zero there (the centre's level starts at 0 and falls)
+        reach = self.a0 if self.a0 > 0 or not self.moving else self.scale * max(self.start, self.stop)
+        lengths = length_scale(anchors, self.K, self.x0, self.a0, indenter_travel(self.segment, t0, reach, R))
         # Rising events cross a level a hair beyond zero: LEVEL_ULPS ulp of the lengths involved, just
         # above the rounding of x − Y ∓ ū (an event moves by about 1e-12 s at the paper's speed). A
         # function that starts at zero to rounding and first falls (the centre of a Hertz contact at
