@@ -514,11 +514,9 @@ class _Setup(NamedTuple):
 def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
              profile: Callable[[np.ndarray], np.ndarray]) -> _Setup:
     """The time grid, every case's samples and the springs of :func:`run_discrete`."""
-    starts = np.array([path.first_contact_time() for path in paths])
+    starts, durations, n_time = _time_grid_size(paths, dt)
     # the last entry into the elastomer, in time from first contact (0 for a path with one entry)
     last_entries = np.array([path.entry_times()[-1] for path in paths]) - starts
-    durations = np.array([path.duration for path in paths]) - starts
-    n_time = int(math.ceil(durations.max() / dt)) + 1
     time = np.arange(n_time) * dt
     positions = np.empty((2, n_time, len(paths)))
     for case, path in enumerate(paths):
@@ -544,11 +542,18 @@ BYTES_PER_SAMPLE = 160
 BYTES_PER_SPRING = 256
 
 
+def _time_grid_size(paths: list[Path], dt: float) -> tuple[np.ndarray, np.ndarray, int]:
+    """Each path's first contact and its duration from then on (s), and the samples ``k dt`` of the shared
+    time grid that covers the longest."""
+    starts = np.array([path.first_contact_time() for path in paths])
+    durations = np.array([path.duration for path in paths]) - starts
+    return starts, durations, int(math.ceil(durations.max() / dt)) + 1
+
+
 def check_discrete_size(params: Parameters, paths: list[Path], dx: float, dt: float, limits: Limits) -> None:
     """Estimate a discrete run's time steps, springs and memory before anything is allocated, and refuse it
     past ``limits`` (:class:`~mdr_events.limits.ResourceLimitError` saying the estimate and how to raise it)."""
-    starts = np.array([path.first_contact_time() for path in paths])
-    n_time = math.ceil(float(np.max([path.duration for path in paths] - starts)) / dt) + 1
+    _, _, n_time = _time_grid_size(paths, dt)
     deepest = max(path.max_depth for path in paths)
     springs = float(analytic.jkr_contact_radius(deepest, params, params.dgamma0)) / dx + 2
     limits.check(f"the discrete run (dx={dx!r} m, dt={dt:.6g} s, {len(paths)} case(s))",
