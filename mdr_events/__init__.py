@@ -12,7 +12,7 @@ below; ``tests/test_layers.py`` checks it): ``parameters`` and ``validation``
 in and out) → ``theory`` (``symbolic`` SymPy derivations, ``analytic`` closed
 forms, ``phase`` diagrams) → ``models`` (``paths``, ``discrete`` springs,
 ``continuum`` event-driven and exact, ``simulate``) → ``analysis``
-(``crosscheck``, ``convergence``) → ``plotting`` → ``app`` (``cli``,
+(``crosscheck``, ``convergence``, ``validate``, ``fit``) → ``plotting`` → ``app`` (``cli``,
 ``study``, ``report``, ``result_files``).
 """
 
@@ -43,6 +43,8 @@ from mdr_events.models.simulate import simulate
 from mdr_events.analysis.crosscheck import cross_check
 from mdr_events.analysis.validate import validate
 from mdr_events.analysis.convergence_study import convergence_study
+from mdr_events.analysis.fit import FitResult, fit
+from mdr_events import plotting  # registers the figures of the result objects (FitResult.plot)
 from mdr_events.app.study import load_study, run_study
 
 __all__ = [
@@ -50,6 +52,7 @@ __all__ = [
     "ResourceLimitError",
     "__version__",
     "DOI",
+    "FitResult",
     "Parameters",
     "Path",
     "Tolerances",
@@ -60,6 +63,7 @@ __all__ = [
     "fretting_dissipated_energy",
     "cross_check",
     "validate",
+    "fit",
     "convergence_study",
     "d_crit",
     "jkr_contact_radius",

@@ -51,7 +51,7 @@ from mdr_events.models.simulate import scenario_paths
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic
 
-__all__ = ["validate", "resolve_path", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
+__all__ = ["validate", "resolve_path", "times_from_contact", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
 
 #: The ``content`` attribute of a validation report.
 VALIDATION_CONTENT = "validation of a simulator against the exact continuum"
@@ -84,7 +84,8 @@ def resolve_path(params: Parameters, path, alpha) -> Path:
     return paths[0]
 
 
-def _times_from_contact(candidate: Candidate, path: Path, time_origin) -> np.ndarray:
+def times_from_contact(candidate: Candidate, path: Path, time_origin) -> np.ndarray:
+    """The candidate's times as seconds from the path's first contact, by ``time_origin`` (:func:`validate`)."""
     if isinstance(time_origin, str):
         if time_origin not in TIME_ORIGINS:
             raise ValueError(f"time_origin={time_origin!r} is not allowed; allowed: {', '.join(map(repr, TIME_ORIGINS))} "
@@ -208,7 +209,7 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
         raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a number > 0")
     the_path = resolve_path(params, path, alpha)
     read = read_candidate(candidate, names, units)
-    times = _times_from_contact(read, the_path, time_origin)
+    times = times_from_contact(read, the_path, time_origin)
     solution = solve_path(params, the_path, tolerances, limits) if solution is None else solution
     exact = evaluate(solution, np.maximum(times, 0.0))
     before = times < 0

@@ -23,7 +23,7 @@ from mdr_events._version import __version__
 from mdr_events.parameters import Parameters
 
 __all__ = ["DOI", "REFERENCE", "PROGRAM", "STAMP_ATTRIBUTES", "stamp", "parameters_of", "Dims", "register_schema",
-           "registered_contents", "required_variables", "dims_match", "describe_dims", "RESULT_RTOL",
+           "registered_contents", "required_variables", "register_figure", "figure_of", "dims_match", "describe_dims", "RESULT_RTOL",
            "result_differences", "assert_results_agree"]
 
 DOI = "10.3390/biomimetics8060477"
@@ -113,6 +113,26 @@ def register_schema(content: str, variables: Mapping[str, Dims], when: tuple[str
     Registering the same ``content`` and ``when`` again replaces the variables.
     """
     _SCHEMAS.setdefault(content, {})[when] = dict(variables)
+
+
+#: The figure of each kind of result: ``content`` attribute -> a function drawing a dataset of that kind.
+_FIGURES: dict[str, Any] = {}
+
+
+def register_figure(content: str, draw) -> None:
+    """Declare how a result of kind ``content`` is drawn (called by the plotting module that draws it, when
+    it is imported), so that a result object of a lower layer can offer ``.plot()`` without importing the
+    plotting layer."""
+    _FIGURES[content] = draw
+
+
+def figure_of(dataset: xr.Dataset):
+    """The drawing function registered for ``dataset``'s kind (its ``content`` attribute)."""
+    content = dataset.attrs.get("content")
+    if content not in _FIGURES:
+        raise ValueError(f"no figure is registered for content={content!r}; allowed: {sorted(_FIGURES)} "
+                         "(import mdr_events, which registers them)")
+    return _FIGURES[content]
 
 
 def dims_match(actual: tuple[str, ...], required: Dims) -> bool:

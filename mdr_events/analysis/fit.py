@@ -1,0 +1,723 @@
+"""Fit the model to measured curves: :func:`fit` (the continuum method, any path it accepts).
+
+Given measured ``F_N(t)``, ``F_x(t)`` and ``A(t)`` (or ``a(t)``; any subset), which moduli, critical shear
+stress and works of adhesion (and which time and depth offset of the experiment's zero) explain them, how
+well are they determined, and can the data determine them at all?
+
+The measurement is read as in :func:`mdr_events.validate` (:func:`mdr_events.io.candidates.read_candidate`:
+a Dataset, arrays, a CSV or netCDF file, your names and units). The residuals are
+
+``r = (model − measured) / σ_q``
+
+per quantity ``q`` and sample, with ``σ_q`` the noise of the quantity: given (``noise=``) or estimated from
+the data (:func:`estimate_noise`). ``scipy.optimize.least_squares`` minimises ``Σ r²`` over the free
+parameters in scaled form (:data:`LOG_SCALED` on a log scale, the offsets relative to the path's duration
+and depth; :class:`FreeParameters`).
+
+**Samples out of contact** (the documented rule; never a ``nan`` set to 0). The model's forces and area are
+exactly 0 while the indenter is out of the elastomer: before the first contact, after the pull-off, after a
+path that ends outside it, before a path that starts outside it. Those samples are compared with 0 like any
+other (a force measured after the pull-off is the instrument's noise around zero, and the time of the jump
+is information on ``Δγ1``). The model says nothing before a path that starts inside the elastomer or after
+one that ends in contact: samples there are *left out*, and so are samples whose measured value is ``nan``.
+Left-out samples contribute a zero residual (the residual vector keeps its length) and are counted.
+
+**Uncertainty.** The covariance of the scaled parameters is ``s² (JᵀJ)⁻¹`` with ``J`` the Jacobian of the
+weighted residuals at the optimum (pseudo-inverse over its singular values above :data:`RCOND` of the
+largest), ``s² = Σr²/(n − p)`` where the noise was estimated and ``s² = 1`` where it was given (as
+``scipy.optimize.curve_fit`` with ``absolute_sigma``). Standard errors and 95 % intervals (Student t,
+``n − p`` degrees of freedom) follow in the scaled form and are mapped back (asymmetric for the log-scaled
+parameters).
+
+**Identifiability** (:class:`Identifiability`) per parameter: ``NOT_IDENTIFIABLE`` where it lies in a
+direction the data do not see (a singular value below :data:`RCOND` of the largest: e.g. ``τ0`` from
+``F_N`` alone, which does not depend on friction in the MDR's uncoupled springs); ``POORLY_DETERMINED``
+where its scaled standard error exceeds :data:`POOR_STANDARD_ERROR`; ``AT_BOUND`` where the estimate sits
+on a bound (its interval is not a linearisation's); else ``DETERMINED``. Pairs correlated beyond
+:data:`STRONG_CORRELATION` are named: the data fix only a combination of them.
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from dataclasses import dataclass
+from typing import Callable, Mapping, NamedTuple, Sequence
+
+import numpy as np
+import xarray as xr
+from scipy import optimize, stats
+
+from mdr_events.io.candidates import Candidate, read_candidate
+from mdr_events.analysis.validate import resolve_path, times_from_contact
+from mdr_events.io.datasets import figure_of, register_schema, stamp
+from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.models.continuum import Tolerances, evaluate, solve_path
+from mdr_events.models.paths import Path
+from mdr_events.models.simulate import scenario_paths
+from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
+from mdr_events.validation import check_real, shown
+
+__all__ = ["fit", "FitResult", "synthetic_measurement", "model_curves", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
+           "FIT_CONTENT", "FREE_NAMES", "FITTED_QUANTITIES", "LOG_SCALED", "OFFSETS"]
+
+#: The ``content`` attribute of a fit's dataset.
+FIT_CONTENT = "fit of the model to measured curves"
+#: Measured quantities a fit compares (any subset; the sliding fraction is not measured).
+FITTED_QUANTITIES = ("normal_force", "tangential_force", "contact_area", "contact_radius")
+QUANTITY_UNITS = {"normal_force": "N", "tangential_force": "N", "contact_area": "m2", "contact_radius": "m"}
+QUANTITY_SYMBOLS = {"normal_force": "F_N", "tangential_force": "F_x", "contact_area": "A", "contact_radius": "a"}
+#: Free parameters fitted on a log scale (moduli, radius, critical shear stress, works of adhesion): their
+#: start must be > 0, and the fit moves them by factors.
+LOG_SCALED = ("E", "R", "tau0", "dgamma0", "dgamma1")
+#: The experiment's zero: ``time_offset`` (s; the measured clock reads it at the path's time 0, after
+#: ``time_origin``) and ``depth_offset`` (m; the path's depth zero lies this far above the real surface).
+OFFSETS = ("time_offset", "depth_offset")
+#: Every name ``free`` may hold. ``d_max`` and ``v`` are the path's, not the material's: give the path.
+FREE_NAMES = ("E", "nu", "R", "tau0", "dgamma0", "dgamma1") + OFFSETS
+OFFSET_UNITS = {"time_offset": "s", "depth_offset": "m"}
+OFFSET_LONG_NAMES = {"time_offset": "the measured clock's reading at the path's time 0 (after time_origin)",
+                     "depth_offset": "height of the path's depth zero above the real surface"}
+#: ``ν`` stays below 0.5 and above −1 by this much inside the fit (the bounds of :class:`Parameters`).
+NU_MARGIN = 1e-9
+
+#: Forward-difference step of the Jacobian in the scaled parameters. The continuum's curves are exact to
+#: about 1e-10 relative (``Tolerances.rtol``): the rounding part of a column's error is then ~1e-4, the
+#: truncation part ~1e-6 (the step times the curvature): enough for Gauss–Newton and the covariance.
+FD_STEP = 1e-6
+#: Convergence of ``least_squares`` (``xtol``, ``ftol``, ``gtol``): far below the noise, near the curves'
+#: accuracy, so that noise-free data are recovered to 1e-6.
+FIT_TOLERANCE = 1e-12
+#: Function evaluations (continuum solves besides the Jacobian's) per free parameter at most.
+MAX_EVALUATIONS_PER_PARAMETER = 50
+#: Singular values below this share of the largest are directions the data do not see: the Jacobian's
+#: rounding (FD_STEP against the curves' 1e-10) is ~1e-4 of a column, a parameter without effect sits
+#: at ~1e-10 of the others; 1e-6 lies between.
+RCOND = 1e-6
+#: A scaled standard error above this is "poorly determined": a factor e^(1.96·0.5) ≈ 2.7 at 95 % for the
+#: log-scaled parameters, half the path's duration or depth for the offsets, ±1 in ν.
+POOR_STANDARD_ERROR = 0.5
+#: Pairs correlated beyond this (in absolute value) are named: only a combination is determined.
+STRONG_CORRELATION = 0.99
+#: An estimate within this (scaled) of a bound sits on it.
+BOUND_SHARE = 1e-8
+#: The noise estimate never falls below this share of the quantity's largest magnitude (noise-free data).
+NOISE_FLOOR_SHARE = 1e-12
+#: The confidence level of the intervals.
+CONFIDENCE = 0.95
+
+
+class Identifiability(enum.Enum):
+    """What the data say of one free parameter (see the module's notes)."""
+
+    DETERMINED = "determined"
+    POORLY_DETERMINED = "poorly determined"
+    NOT_IDENTIFIABLE = "not identifiable"
+    AT_BOUND = "at a bound"
+
+
+class ParameterEstimate(NamedTuple):
+    """One fitted parameter: the estimate, its standard error and 95 % interval (natural units), the verdict."""
+
+    value: float
+    standard_error: float
+    lower: float
+    upper: float
+    identifiability: Identifiability
+
+
+def _unit(name: str) -> str:
+    return OFFSET_UNITS.get(name) or PARAMETER_UNITS[name]
+
+
+def _long_name(name: str) -> str:
+    return OFFSET_LONG_NAMES.get(name) or PARAMETER_LONG_NAMES[name]
+
+
+def estimate_noise(values: np.ndarray) -> float:
+    """The noise's standard deviation in a sampled curve, from its second differences (robust).
+
+    For white noise of deviation σ on a curve smooth over a few samples, ``Δ²y`` has deviation ``σ√6``; the
+    median absolute deviation (×1.4826) ignores the few jumps (contact made, pull-off) and corners. Never
+    below :data:`NOISE_FLOOR_SHARE` of the largest magnitude (noise-free data). ``nan`` samples are skipped.
+    """
+    finite = np.asarray(values, dtype=float)
+    finite = finite[np.isfinite(finite)]
+    floor = NOISE_FLOOR_SHARE * float(np.max(np.abs(finite), initial=0.0)) or NOISE_FLOOR_SHARE
+    if finite.size < 4:
+        return floor
+    second = np.diff(finite, 2)
+    mad = float(np.median(np.abs(second - np.median(second))))
+    return max(1.4826 * mad / math.sqrt(6.0), floor)
+
+
+@dataclass(frozen=True)
+class FreeParameters:
+    """The free parameters of a fit, their scaling and bounds: ``θ`` (scaled) ↔ natural values.
+
+    ``θ = log(value)`` for :data:`LOG_SCALED`, ``ν`` itself, ``time_offset / duration`` and
+    ``depth_offset / depth_scale`` (the path's duration and deepest point give the offsets their scale).
+    """
+
+    names: tuple[str, ...]
+    start: Parameters
+    lower: np.ndarray  #: natural units
+    upper: np.ndarray
+    duration: float
+    depth_scale: float
+
+    def scale(self, name: str) -> float:
+        return {"time_offset": self.duration, "depth_offset": self.depth_scale}.get(name, 1.0)
+
+    def to_scaled(self, values: Sequence[float]) -> np.ndarray:
+        return np.array([math.log(v) if n in LOG_SCALED else v / self.scale(n) for n, v in zip(self.names, values)])
+
+    def to_natural(self, theta: np.ndarray) -> np.ndarray:
+        return np.array([math.exp(t) if n in LOG_SCALED else t * self.scale(n) for n, t in zip(self.names, theta)])
+
+    def scaled_bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        with np.errstate(divide="ignore"):
+            return (np.array([np.log(lo) if n in LOG_SCALED else lo / self.scale(n)
+                              for n, lo in zip(self.names, self.lower)]),
+                    np.array([np.log(hi) if n in LOG_SCALED else hi / self.scale(n)
+                              for n, hi in zip(self.names, self.upper)]))
+
+    def start_values(self) -> np.ndarray:
+        return np.array([0.0 if n in OFFSETS else getattr(self.start, n) for n in self.names])
+
+    def model(self, theta: np.ndarray) -> tuple[Parameters, float, float]:
+        """The parameters, time offset and depth offset at ``θ``."""
+        values = dict(zip(self.names, self.to_natural(theta)))
+        offsets = [values.pop(name, 0.0) for name in OFFSETS]
+        return self.start.replace(**values) if values else self.start, offsets[0], offsets[1]
+
+
+def _default_bounds(name: str) -> tuple[float, float]:
+    if name == "nu":
+        return -1.0 + NU_MARGIN, 0.5
+    if name in LOG_SCALED:
+        return 0.0, math.inf
+    return -math.inf, math.inf
+
+
+def free_parameters(free, start: Parameters, bounds: Mapping[str, tuple[float, float]] | None,
+                    duration: float, depth_scale: float) -> FreeParameters:
+    """Check ``free``, ``start`` and ``bounds`` (errors name the argument, its value and what is allowed)."""
+    if isinstance(free, str):
+        free = (free,)
+    names = tuple(free) if isinstance(free, Sequence) else ()
+    if not names or not all(isinstance(name, str) for name in names):
+        raise ValueError(f"free={shown(free)} is not allowed; allowed: a non-empty sequence of names from "
+                         f"{', '.join(FREE_NAMES)}")
+    for name in names:
+        if name not in FREE_NAMES:
+            hint = " (the path's, not the material's: give the path)" if name in ("d_max", "v") else ""
+            raise ValueError(f"free: {name!r} is not allowed{hint}; allowed: {', '.join(FREE_NAMES)}")
+    if len(set(names)) != len(names):
+        raise ValueError(f"free={shown(free)} names a parameter twice; allowed: each name once")
+    if not isinstance(start, Parameters):
+        raise TypeError(f"start={shown(start)} ({type(start).__name__}) is not allowed; allowed: a Parameters")
+    bounds = dict(bounds or {})
+    for name in bounds:
+        if name not in names:
+            raise ValueError(f"bounds: {name!r} is not allowed; allowed: the free parameters ({', '.join(names)})")
+    lower, upper = [], []
+    for name in names:
+        low, high = _default_bounds(name)
+        if name in bounds:
+            pair = bounds[name]
+            if not (isinstance(pair, Sequence) and len(pair) == 2):
+                raise ValueError(f"bounds[{name!r}]={shown(pair)} is not allowed; allowed: a pair (lower, upper) "
+                                 f"in {_unit(name)}")
+            given = [check_real(f"bounds[{name!r}]", value, f"a pair (lower, upper) of numbers in {_unit(name)}",
+                                finite=False) for value in pair]
+            low, high = max(low, given[0]), min(high, given[1])
+        value = 0.0 if name in OFFSETS else getattr(start, name)
+        if name in LOG_SCALED and not value > 0:
+            raise ValueError(f"start.{name}={value!r} is not allowed for a free {name}; allowed: > 0 (it is fitted "
+                             "on a log scale)")
+        if not low <= value <= high or not low < high:
+            raise ValueError(f"bounds[{name!r}]=({low!r}, {high!r}) is not allowed: it excludes the start "
+                             f"{value!r} {_unit(name)}; allowed: lower < upper with the start between them")
+        lower.append(low)
+        upper.append(high)
+    return FreeParameters(names, start, np.array(lower), np.array(upper), duration, depth_scale)
+
+
+class Measurement(NamedTuple):
+    """The measured curves on the path's clock, and each quantity's noise."""
+
+    path_time: np.ndarray  #: s from the nominal path's start, before the time offset
+    values: dict[str, np.ndarray]
+    noise: dict[str, float]
+    noise_given: dict[str, bool]
+    candidate: Candidate
+
+
+def _measurement(read: Candidate, path: Path, time_origin, noise: Mapping[str, float] | None) -> Measurement:
+    values = {name: read.quantities[name] for name in FITTED_QUANTITIES if name in read.quantities}
+    if not values:
+        raise ValueError(f"{read.source}: none of {', '.join(FITTED_QUANTITIES)} to fit; found: "
+                         f"{', '.join(read.quantities)}")
+    for name, series in values.items():
+        if not np.any(np.isfinite(series)):
+            raise ValueError(f"{read.source}: {name} has no finite sample; allowed: measured values (nan marks a "
+                             "missing sample)")
+    noise = dict(noise or {})
+    sigma, given = {}, {}
+    for name in noise:
+        if name not in values:
+            raise ValueError(f"noise: {name!r} is not allowed; allowed: the quantities measured "
+                             f"({', '.join(values)})")
+    for name, series in values.items():
+        given[name] = name in noise
+        sigma[name] = check_real(f"noise[{name!r}]", noise[name], f"a number > 0 ({QUANTITY_UNITS[name]})",
+                                 lambda value: value > 0) if given[name] else estimate_noise(series)
+    return Measurement(times_from_contact(read, path, time_origin) + path.first_contact_time(), values, sigma, given, read)
+
+
+class ModelCurves(NamedTuple):
+    """The model at the measured samples: each quantity (``nan``: left out) and where it is in contact."""
+
+    values: dict[str, np.ndarray]
+    in_contact: np.ndarray
+
+
+def _shifted(path: Path, depth_offset: float) -> Path:
+    if depth_offset == 0.0:
+        return path
+    return Path(path.waypoints - np.array([0.0, depth_offset]), path.speed, path.alpha)
+
+
+def model_curves(params: Parameters, path: Path, times: np.ndarray, tolerances: Tolerances,
+                 limits: Limits, quantities: Sequence[str]) -> ModelCurves:
+    """The model's curves at ``times`` (s on the path's clock) by the module's rule out of contact: 0 where
+    the indenter is out of the elastomer, ``nan`` (left out) before a path that starts inside it and after
+    one that ends in contact."""
+    solution = solve_path(params, path, tolerances, limits)
+    since_contact = times - solution.t_contact
+    filled = evaluate(solution, np.maximum(since_contact, 0.0))
+    radius = filled["contact_radius"]
+    out = {"normal_force": filled["normal_force"], "tangential_force": filled["tangential_force"],
+           "contact_radius": radius, "contact_area": math.pi * radius**2}
+    before = since_contact < 0
+    after = since_contact > solution.end_time
+    outside_before = path.waypoints[0, 1] <= 0.0
+    for name in quantities:
+        values = out[name]
+        values[before] = 0.0 if outside_before else math.nan
+        values[after] = 0.0 if solution.ended_by_contact else math.nan
+    return ModelCurves({name: out[name] for name in quantities}, np.nan_to_num(radius) > 0)
+
+
+def synthetic_measurement(params: Parameters, path, alpha: float | None = None, *, times: np.ndarray,
+                          relative_noise: float = 0.0, seed: int = 0,
+                          quantities: Sequence[str] = ("normal_force", "tangential_force", "contact_area"),
+                          time_shift: float = 0.0, tolerances: Tolerances = Tolerances(),
+                          limits: Limits = DEFAULT_LIMITS) -> xr.Dataset:
+    """Curves a measurement of this model would give: the continuum at ``times`` (s on the path's clock,
+    the clock then reading ``times + time_shift``) plus white noise of ``relative_noise`` times each
+    quantity's largest magnitude (``numpy.random.default_rng(seed)``), as a Dataset :func:`fit` reads
+    (``time_origin="path_start"``, with ``time_shift`` the offset a fit should find)."""
+    the_path = resolve_path(params, path, alpha)
+    times = np.asarray(times, dtype=float)
+    curves = model_curves(params, the_path, times, tolerances, limits, tuple(quantities)).values
+    rng = np.random.default_rng(seed)
+    data = {}
+    for name in quantities:
+        noise = relative_noise * float(np.nanmax(np.abs(curves[name]))) * rng.standard_normal(times.size)
+        data[name] = (("time",), curves[name] + noise, {"units": QUANTITY_UNITS[name],
+                                                        "long_name": f"synthetic measured {QUANTITY_SYMBOLS[name]}"})
+    coords = {"time": ("time", times + time_shift, {"units": "s", "long_name": "time of the synthetic measurement"})}
+    return stamp(xr.Dataset(data, coords=coords), params, relative_noise=float(relative_noise), seed=int(seed),
+                 time_shift=float(time_shift))
+
+
+class _Problem:
+    """The weighted residuals of one fit, and a count of the continuum solves."""
+
+    def __init__(self, free: FreeParameters, measurement: Measurement, path_of: Callable[[Parameters], Path],
+                 tolerances: Tolerances, limits: Limits):
+        self.free, self.measurement, self.path_of = free, measurement, path_of
+        self.tolerances, self.limits = tolerances, limits
+        self.solves = 0
+        self.quantities = tuple(measurement.values)
+        #: least_squares asks for the Jacobian where it just evaluated the residuals: the last (θ, curves, r)
+        self._last: tuple[np.ndarray, ModelCurves, np.ndarray] | None = None
+
+    def curves(self, theta: np.ndarray) -> ModelCurves:
+        params, time_offset, depth_offset = self.free.model(theta)
+        self.solves += 1
+        try:
+            path = _shifted(self.path_of(params), depth_offset)
+            return model_curves(params, path, self.measurement.path_time - time_offset, self.tolerances,
+                                self.limits, self.quantities)
+        except (ValueError, RuntimeError) as error:
+            trial = ", ".join(f"{name}={value:.6g}" for name, value in zip(self.free.names,
+                                                                             self.free.to_natural(theta)))
+            raise type(error)(f"the fit tried {trial}, and the model refused: {error}; narrow the fit with "
+                              "bounds= or a better start") from error
+
+    def evaluated(self, theta: np.ndarray) -> tuple[ModelCurves, np.ndarray]:
+        """The curves and the weighted residuals at ``θ`` (the last ones again without a solve)."""
+        if self._last is None or not np.array_equal(self._last[0], theta):
+            curves = self.curves(theta)
+            self._last = (np.array(theta, copy=True), curves, self.weighted(curves))
+        return self._last[1], self._last[2]
+
+    def residuals(self, theta: np.ndarray) -> np.ndarray:
+        return self.evaluated(theta)[1]
+
+    def weighted(self, curves: ModelCurves) -> np.ndarray:
+        parts = []
+        for name in self.quantities:
+            difference = (curves.values[name] - self.measurement.values[name]) / self.measurement.noise[name]
+            parts.append(np.where(np.isfinite(difference), difference, 0.0))
+        return np.concatenate(parts)
+
+    def jacobian(self, theta: np.ndarray) -> np.ndarray:
+        """Forward differences of :data:`FD_STEP` in each scaled parameter (backward at an upper bound).
+
+        A sample whose contact state the step changes (the jump at a pull-off or a contact made moved across
+        it) has no derivative there: its entry is 0 (the residual is flat on either side of the jump), not
+        the jump over the step, which would claim a precision the data do not have.
+        """
+        curves, base = self.evaluated(theta)
+        same_state = np.tile(curves.in_contact, len(self.quantities))
+        _, upper = self.free.scaled_bounds()
+        columns = []
+        for j in range(theta.size):
+            step = FD_STEP if theta[j] + FD_STEP <= upper[j] else -FD_STEP
+            moved = theta.copy()
+            moved[j] += step
+            trial = self.curves(moved)
+            column = (self.weighted(trial) - base) / step
+            columns.append(np.where(same_state == np.tile(trial.in_contact, len(self.quantities)), column, 0.0))
+        return np.column_stack(columns)
+
+
+def _identifiability(jacobian: np.ndarray, theta: np.ndarray, lower: np.ndarray, upper: np.ndarray,
+                     variance_scale: float):
+    """Covariance (scaled), the condition number and the verdict per parameter."""
+    _, singular, vt = np.linalg.svd(jacobian, full_matrices=False)
+    largest = singular[0] if singular.size and singular[0] > 0 else 1.0
+    seen = singular > RCOND * largest
+    condition = float(singular[0] / singular[-1]) if singular[-1] > 0 else math.inf
+    inverse = np.where(seen, 1.0 / np.where(seen, singular, 1.0) ** 2, 0.0)
+    covariance = (vt.T * inverse) @ vt * variance_scale
+    unseen = np.any(np.abs(vt[~seen]) > math.sqrt(RCOND), axis=0) if np.any(~seen) else np.zeros(theta.size, bool)
+    standard_error = np.sqrt(np.maximum(np.diag(covariance), 0.0))
+    standard_error[unseen] = math.inf
+    verdicts = []
+    for j in range(theta.size):
+        if unseen[j]:
+            verdicts.append(Identifiability.NOT_IDENTIFIABLE)
+        elif theta[j] - lower[j] <= BOUND_SHARE * max(1.0, abs(theta[j])) or \
+                upper[j] - theta[j] <= BOUND_SHARE * max(1.0, abs(theta[j])):
+            verdicts.append(Identifiability.AT_BOUND)
+        elif standard_error[j] > POOR_STANDARD_ERROR:
+            verdicts.append(Identifiability.POORLY_DETERMINED)
+        else:
+            verdicts.append(Identifiability.DETERMINED)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        correlation = covariance / np.outer(standard_error, standard_error)
+    correlation[unseen, :] = math.nan
+    correlation[:, unseen] = math.nan
+    np.fill_diagonal(correlation, 1.0)
+    return covariance, standard_error, condition, verdicts, correlation
+
+
+#: Parameters the normal problem does not depend on: uncoupled springs (MDR) make F_N, A and a independent of
+#: friction and of the tangential stiffness.
+TANGENTIAL_ONLY = ("tau0",)
+
+
+def _notes(names: Sequence[str], quantities: Sequence[str], verdicts, correlation) -> list[str]:
+    notes = []
+    if "tangential_force" not in quantities:
+        for name in names:
+            if name in TANGENTIAL_ONLY:
+                notes.append(f"{name} acts only on F_x (the MDR's springs are uncoupled: F_N, A and a do not depend on "
+                             "friction); without F_x data it cannot be determined")
+    if "E" in names or "nu" in names:
+        notes.append("E and ν enter the model only through E* = E/(1−ν²) (normal) and G* = 2E/((1+ν)(2−ν)) "
+                     "(tangential); E* and G* are reported beside them")
+        if "nu" in names and "tangential_force" not in quantities:
+            notes.append("ν changes G*/E* only, and G* acts only on F_x: without F_x data ν cannot be determined")
+    for i in range(len(names)):
+        for j in range(i + 1, len(names)):
+            if abs(correlation[i, j]) > STRONG_CORRELATION:
+                notes.append(f"{names[i]} and {names[j]} are correlated at {correlation[i, j]:+.4f}: the data fix "
+                             "a combination of them rather than each")
+    for name, verdict in zip(names, verdicts):
+        if verdict is Identifiability.AT_BOUND:
+            notes.append(f"{name} sits on a bound: its interval is not a linearisation's, widen the bound or fix it")
+    return notes
+
+
+def _intervals(free: FreeParameters, theta: np.ndarray, standard_error: np.ndarray, dof: int):
+    """Estimates, standard errors and 95 % intervals in natural units (delta method for the log-scaled)."""
+    quantile = float(stats.t.ppf(0.5 + CONFIDENCE / 2.0, max(dof, 1)))
+    value = free.to_natural(theta)
+    natural_error, lower, upper = [], [], []
+    for j, name in enumerate(free.names):
+        half = quantile * standard_error[j]
+        if name in LOG_SCALED:
+            natural_error.append(value[j] * standard_error[j])
+            lower.append(value[j] * math.exp(-half) if math.isfinite(half) else 0.0)
+            upper.append(value[j] * math.exp(half) if math.isfinite(half) else math.inf)
+        else:
+            scale = free.scale(name)
+            natural_error.append(scale * standard_error[j])
+            lower.append(value[j] - scale * half)
+            upper.append(value[j] + scale * half)
+    return value, np.array(natural_error), np.array(lower), np.array(upper)
+
+
+def _effective_moduli(free: FreeParameters, theta: np.ndarray, covariance: np.ndarray, params: Parameters):
+    """E* and G* with their standard errors (delta method over the scaled parameters)."""
+    out = {}
+    for key, read in (("E_star", lambda p: p.E_star), ("G_star", lambda p: p.G_star)):
+        gradient = np.zeros(theta.size)
+        for j, name in enumerate(free.names):
+            if name in ("E", "nu"):
+                moved = theta.copy()
+                moved[j] += FD_STEP
+                gradient[j] = (read(free.model(moved)[0]) - read(params)) / FD_STEP
+        variance = float(gradient @ covariance @ gradient)
+        out[key] = (read(params), math.sqrt(max(variance, 0.0)))
+    return out
+
+
+@dataclass(frozen=True)
+class FitResult:
+    """What :func:`fit` found: the labelled dataset (:attr:`dataset`, everything) and its main readings.
+
+    Attributes
+    ----------
+    dataset : xarray.Dataset
+        Along ``parameter``: ``estimate``, ``start``, ``standard_error``, ``lower_95``, ``upper_95``,
+        ``identifiability``; ``correlation`` (``parameter`` × ``parameter_2``); along ``time`` (the measured
+        samples, s on the measurement's clock): ``measured_<q>``, ``fitted_<q>``, ``residual_<q>``
+        (measured − fitted, ``nan`` where left out), ``left_out``; along ``quantity``: ``noise``,
+        ``noise_given``, ``rms_normalised_residual``; scalars ``condition_number``, ``reduced_chi_square``,
+        ``continuum_solves``, ``E_star``/``G_star`` (with ``*_standard_error``); attributes ``verdict``,
+        ``identifiable``, ``notes``.
+    parameters : Parameters
+        The start with the fitted values in place.
+    time_offset, depth_offset : float
+        The fitted offsets (0 where not free).
+    """
+
+    dataset: xr.Dataset
+    parameters: Parameters
+    time_offset: float
+    depth_offset: float
+
+    @property
+    def estimates(self) -> dict[str, ParameterEstimate]:
+        """Each free parameter's :class:`ParameterEstimate`."""
+        d = self.dataset
+        return {str(name): ParameterEstimate(float(d["estimate"].sel(parameter=name)),
+                                             float(d["standard_error"].sel(parameter=name)),
+                                             float(d["lower_95"].sel(parameter=name)),
+                                             float(d["upper_95"].sel(parameter=name)),
+                                             Identifiability(str(d["identifiability"].sel(parameter=name).values)))
+                for name in d["parameter"].values}
+
+    @property
+    def correlation(self) -> np.ndarray:
+        return self.dataset["correlation"].values
+
+    @property
+    def condition_number(self) -> float:
+        return float(self.dataset["condition_number"])
+
+    @property
+    def identifiable(self) -> bool:
+        """Whether every free parameter is :attr:`Identifiability.DETERMINED`."""
+        return bool(self.dataset.attrs["identifiable"])
+
+    @property
+    def verdict(self) -> str:
+        return str(self.dataset.attrs["verdict"])
+
+    @property
+    def residuals(self) -> xr.Dataset:
+        """The residuals (measured − fitted) per quantity along the measured time, and ``left_out``."""
+        return self.dataset[[name for name in self.dataset.data_vars if name.startswith("residual_")] + ["left_out"]]
+
+    @property
+    def curves(self) -> xr.Dataset:
+        """The measured and fitted curves along the measured time."""
+        return self.dataset[[name for name in self.dataset.data_vars
+                             if name.startswith(("measured_", "fitted_"))]]
+
+    def plot(self, title: str | None = None):
+        """Data, fit and residuals (:func:`mdr_events.plotting.fit.plot_fit`); returns the figure."""
+        return figure_of(self.dataset)(self.dataset, title=title)
+
+
+def _path_of(start: Parameters, path, alpha) -> Callable[[Parameters], Path]:
+    """The path at given parameters: a Path as it is; a scenario's rebuilt (its way out ends below the
+    jump-off, which depends on the parameters)."""
+    resolved = resolve_path(start, path, alpha)
+    if isinstance(path, Path):
+        return lambda params: resolved
+    return lambda params: scenario_paths(params, path, [alpha])[0][0] if params is not start else resolved
+
+
+def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], start: Parameters,
+        bounds: Mapping[str, tuple[float, float]] | None = None, noise: Mapping[str, float] | None = None,
+        names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
+        time_origin="first_contact", tolerances: Tolerances = Tolerances(),
+        limits: Limits = DEFAULT_LIMITS) -> FitResult:
+    """Fit the continuum model to measured curves by weighted least squares.
+
+    Parameters
+    ----------
+    measured : xarray.Dataset, mapping of arrays, or the path of a CSV / netCDF file
+        Time and any of ``normal_force``, ``tangential_force``, ``contact_area``, ``contact_radius``
+        (:func:`mdr_events.io.candidates.read_candidate`; ``nan`` marks a missing sample).
+    path : Path or {"A", "B", "B+"}
+        The path of the experiment; a scenario needs ``alpha`` (one angle, degrees) and is rebuilt for each
+        trial (its way out depends on the parameters).
+    free : sequence of str
+        The parameters to fit, from :data:`FREE_NAMES`: ``E``, ``nu``, ``R``, ``tau0``, ``dgamma0``,
+        ``dgamma1`` and the offsets ``time_offset`` (s), ``depth_offset`` (m).
+    start : Parameters
+        The start of the fit; the fields not free keep their values.
+    bounds : mapping, optional
+        Free name → ``(lower, upper)`` in its unit; default: the physical ranges (moduli, τ0 and works of
+        adhesion > 0 on their log scale, ``ν`` in (−1, 0.5], the offsets unbounded).
+    noise : mapping, optional
+        Quantity → the standard deviation of its measurement noise (SI units); the others are estimated
+        (:func:`estimate_noise`). Residuals are weighted by ``1/σ``.
+    names, units, time_origin
+        As in :func:`mdr_events.validate`: your column names and units; what the measured time counts from
+        (``"first_contact"`` of the path as given, ``"path_start"``, or the measured time at first contact).
+    tolerances : Tolerances
+        The continuum's solver tolerances.
+    limits : Limits
+        What each continuum run may use.
+
+    Returns
+    -------
+    FitResult
+
+    Raises
+    ------
+    ValueError
+        Naming the argument: an empty or all-``nan`` measurement, a name not in :data:`FREE_NAMES`, bounds that
+        exclude the start, a start of 0 for a log-scaled parameter, fewer samples than free parameters.
+    """
+    read = read_candidate(measured, names, units)
+    nominal = resolve_path(start, path, alpha)
+    measurement = _measurement(read, nominal, time_origin, noise)
+    free_set = free_parameters(free, start, bounds, nominal.duration, max(nominal.max_depth, start.d_max))
+    problem = _Problem(free_set, measurement, _path_of(start, path, alpha), tolerances, limits)
+    samples = sum(int(np.count_nonzero(np.isfinite(v))) for v in measurement.values.values())
+    if samples <= len(free_set.names):
+        raise ValueError(f"{read.source}: {samples} finite samples for {len(free_set.names)} free parameters; "
+                         "allowed: more samples than free parameters")
+    theta0 = free_set.to_scaled(free_set.start_values())
+    lower, upper = free_set.scaled_bounds()
+    solution = optimize.least_squares(problem.residuals, theta0, jac=lambda theta: problem.jacobian(theta),
+                                      bounds=(lower, upper), method="trf", x_scale=1.0, xtol=FIT_TOLERANCE,
+                                      ftol=FIT_TOLERANCE, gtol=FIT_TOLERANCE,
+                                      max_nfev=MAX_EVALUATIONS_PER_PARAMETER * len(free_set.names))
+    theta = solution.x
+    model, residual = problem.evaluated(theta)
+    curves = model.values
+    jacobian = problem.jacobian(theta)
+    compared = {name: np.isfinite(curves[name]) & np.isfinite(measurement.values[name])
+                for name in problem.quantities}
+    n_compared = sum(int(np.count_nonzero(mask)) for mask in compared.values())
+    dof = n_compared - theta.size
+    chi_square = float(residual @ residual)
+    all_given = all(measurement.noise_given.values())
+    variance_scale = 1.0 if all_given else chi_square / max(dof, 1)
+    covariance, scaled_error, condition, verdicts, correlation = _identifiability(
+        jacobian, theta, lower, upper, variance_scale)
+    params, time_offset, depth_offset = free_set.model(theta)
+    value, error, low, high = _intervals(free_set, theta, scaled_error, dof)
+    notes = _notes(free_set.names, problem.quantities, verdicts, correlation)
+    moduli = _effective_moduli(free_set, theta, covariance, params)
+    dataset = _dataset(free_set, measurement, curves, compared, value, error, low, high, verdicts, correlation,
+                       condition, chi_square / max(dof, 1), moduli, problem, solution)
+    identifiable = all(v is Identifiability.DETERMINED for v in verdicts)
+    undetermined = [f"{n} ({v.value})" for n, v in zip(free_set.names, verdicts) if v is not Identifiability.DETERMINED]
+    verdict = "every free parameter is determined" if identifiable else \
+        "not every free parameter is determined: " + ", ".join(undetermined)
+    attrs = dict(content=FIT_CONTENT, verdict=verdict, identifiable=int(identifiable), notes="; ".join(notes) or "none",
+                 free=", ".join(free_set.names), measured_source=read.source, time_origin=str(time_origin),
+                 path_waypoints=nominal.describe(), path_speed=nominal.speed, optimizer_status=int(solution.status),
+                 optimizer_message=str(solution.message), confidence=CONFIDENCE,
+                 noise_rule="given" if all_given else "estimated from the data's second differences where not given",
+                 out_of_contact_rule="the model's forces and area are 0 out of the elastomer; samples before a path "
+                                     "that starts inside it or after one that ends in contact are left out")
+    if isinstance(path, str):
+        attrs.update(scenario=path, alpha=float(alpha))
+    return FitResult(stamp(dataset, params, **attrs), params, time_offset, depth_offset)
+
+
+def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, value, error, low, high, verdicts,
+             correlation, condition, reduced_chi_square, moduli, problem: _Problem, solution) -> xr.Dataset:
+    names = list(free.names)
+    data = {
+        "estimate": (("parameter",), value, {"units": "see parameter_units", "long_name": "fitted value"}),
+        "start": (("parameter",), free.start_values(), {"units": "see parameter_units", "long_name": "start value"}),
+        "standard_error": (("parameter",), error, {"units": "see parameter_units",
+                                                   "long_name": "standard error (linearised at the optimum)"}),
+        "lower_95": (("parameter",), low, {"units": "see parameter_units", "long_name": "lower end of the 95 % interval"}),
+        "upper_95": (("parameter",), high, {"units": "see parameter_units", "long_name": "upper end of the 95 % interval"}),
+        "identifiability": (("parameter",), np.array([v.value for v in verdicts]),
+                            {"units": "1", "long_name": "what the data say of the parameter"}),
+        "correlation": (("parameter", "parameter_2"), correlation, {"units": "1", "long_name": "correlation of the "
+                                                                    "scaled parameters' estimates"}),
+        "condition_number": ((), condition, {"units": "1", "long_name": "condition number of the weighted Jacobian "
+                                             "(scaled parameters)"}),
+        "reduced_chi_square": ((), reduced_chi_square, {"units": "1", "long_name": "sum of squared weighted residuals "
+                                                        "per degree of freedom"}),
+        "continuum_solves": ((), problem.solves, {"units": "1", "long_name": "continuum solves of the fit "
+                                                  "(Jacobian included)"}),
+        "optimizer_evaluations": ((), int(solution.nfev), {"units": "1", "long_name": "residual evaluations of "
+                                                           "least_squares"}),
+    }
+    for key, (number, standard_error) in moduli.items():
+        symbol = "E*" if key == "E_star" else "G*"
+        data[key] = ((), number, {"units": "Pa", "long_name": f"effective modulus {symbol} at the fit"})
+        data[f"{key}_standard_error"] = ((), standard_error, {"units": "Pa", "long_name": f"standard error of {symbol}"})
+    left_out = np.zeros(measurement.path_time.size, dtype=np.int8)
+    for name in problem.quantities:
+        unit = QUANTITY_UNITS[name]
+        symbol = QUANTITY_SYMBOLS[name]
+        data[f"measured_{name}"] = (("time",), measurement.values[name], {"units": unit, "long_name": f"measured {symbol}"})
+        data[f"fitted_{name}"] = (("time",), curves[name], {"units": unit, "long_name": f"fitted {symbol}"})
+        data[f"residual_{name}"] = (("time",), np.where(compared[name], measurement.values[name] - curves[name], np.nan),
+                                    {"units": unit, "long_name": f"measured − fitted {symbol}, compared samples"})
+        left_out |= (~compared[name]).astype(np.int8)
+    data["left_out"] = (("time",), left_out, {"units": "1", "long_name": "1: a sample left out of some quantity "
+                                              "(missing, or where the model says nothing)"})
+    quantities = list(problem.quantities)
+    rms = [float(np.sqrt(np.mean(((curves[q] - measurement.values[q])[compared[q]] / measurement.noise[q]) ** 2)))
+           if np.any(compared[q]) else math.nan for q in quantities]
+    data["noise"] = (("quantity",), np.array([measurement.noise[q] for q in quantities]),
+                     {"units": "SI unit of the quantity", "long_name": "standard deviation of the measurement noise"})
+    data["noise_given"] = (("quantity",), np.array([int(measurement.noise_given[q]) for q in quantities], np.int8),
+                           {"units": "1", "long_name": "1: noise given, 0: estimated from the data"})
+    data["rms_normalised_residual"] = (("quantity",), np.array(rms), {"units": "1", "long_name": "RMS of the residual "
+                                                                      "over the noise (about 1 for a good fit)"})
+    coords = {
+        "parameter": ("parameter", np.array(names), {"units": "1", "long_name": "free parameter"}),
+        "parameter_2": ("parameter_2", np.array(names), {"units": "1", "long_name": "free parameter"}),
+        "parameter_units": ("parameter", np.array([_unit(n) for n in names]), {"units": "1",
+                                                                                "long_name": "unit of the parameter"}),
+        "time": ("time", measurement.candidate.time, {"units": "s", "long_name": "measured time"}),
+        "quantity": ("quantity", np.array(quantities), {"units": "1", "long_name": "quantity fitted"}),
+    }
+    return xr.Dataset(data, coords=coords)
+
+
+register_schema(FIT_CONTENT, {"estimate": ("parameter",), "standard_error": ("parameter",),
+                              "correlation": ("parameter", "parameter_2"), "left_out": ("time",)})
