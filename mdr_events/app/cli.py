@@ -1,10 +1,11 @@
-"""Command line: ``mdr-events derive | phase-diagram | simulate | validate | run | reproduce``.
+"""Command line: ``mdr-events derive | phase-diagram | simulate | validate | fit | run | reproduce``.
 
 Every error prints one line ``mdr-events: error: ...`` on stderr (no traceback; ``mdr-events --debug ...``
 re-raises it with its traceback). The exit status (:data:`EXIT_STATUSES`):
 
 - 0: done;
 - 1: ``mdr-events validate`` (or ``run`` with a ``[validate]`` table): a run is outside its tolerance;
+  ``mdr-events fit`` (or ``run`` with a ``[fit]`` table): a free parameter is not determined by the data;
 - 2: bad input: an argument, a value, a study file or a file that cannot be read or written (``ValueError``,
   ``TypeError``, ``KeyError``, ``OSError``), named with its value and what is allowed. Output directories
   are checked before anything is computed (:func:`~mdr_events.io.files.prepare_output_directory`);
@@ -34,6 +35,7 @@ from mdr_events.limits import DEFAULT_LIMITS, LIMIT_UNITS, Limits, parse_limit
 from mdr_events._version import __version__
 from mdr_events.app.report import reproduce
 from mdr_events.app.result_files import write_phase_diagram, write_simulation
+from mdr_events.analysis.fit import FREE_NAMES, fit
 from mdr_events.analysis.validate import TIME_ORIGINS, validate
 from mdr_events.app.study import load_parameters_file, load_path_file, load_study, run_study
 from mdr_events.io.candidates import CANDIDATE_QUANTITIES
@@ -50,7 +52,7 @@ DESCRIPTION = ("Adhesive indentation and detachment at an angle with the Method 
 #: Exit status -> when.
 EXIT_STATUSES = {
     0: "done",
-    1: "validate: a run is outside its tolerance",
+    1: "validate: a run is outside its tolerance; fit: a free parameter is not determined",
     2: "bad input (an argument, a value, a study file, a file that cannot be read or written)",
     3: "the computation failed although the input was accepted (solver, memory, internal error)",
     130: "interrupted (Ctrl-C)",
@@ -157,7 +159,7 @@ def _command_run(args: argparse.Namespace) -> int:
         print(outcome.path)
     failed = [run for run, verdict in getattr(outcomes, "verdicts", {}).items() if verdict != "pass"]
     if failed:
-        print(f"validation failed: {', '.join(failed)}")
+        print(f"{'validation ' if all(not run.startswith('fit ') for run in failed) else ''}failed: {', '.join(failed)}")
     return 1 if failed else 0
 
 
@@ -349,6 +351,95 @@ def _command_validate(args: argparse.Namespace) -> int:
     return 1 if failed else 0
 
 
+def _measured_path_options(parser: argparse.ArgumentParser, what: str, start: bool = False) -> None:
+    """The parameters (preset, file or values) and the path (scenario and angle, or a path file) of measured
+    runs: ``validate`` and ``fit``."""
+    role = "the start of the fit" if start else "the parameters"
+    source = parser.add_mutually_exclusive_group()
+    source.add_argument("--preset", choices=sorted(PRESETS), default=None,
+                        help=f"{role}: a parameter set of the paper (default paper-R30); the options below override it")
+    source.add_argument("--params", default=None, metavar="FILE",
+                        help=f"{role}: a TOML file with a [parameters] table as in a study file (e.g. the study file)")
+    for name, long_name in PARAMETER_LONG_NAMES.items():
+        parser.add_argument(f"--{name}", type=float, default=None, metavar="VALUE",
+                            help=f"{long_name} [{PARAMETER_UNITS[name]}]")
+    motion = parser.add_mutually_exclusive_group(required=True)
+    motion.add_argument("--scenario", choices=list(SCENARIO_NAMES), help=f"the scenario the {what} took (with --alpha)")
+    motion.add_argument("--path", default=None, metavar="FILE",
+                        help="a TOML file with a [path] table as in a study file: waypoints = [[x, d], ...] (m), "
+                             "speed (m/s, default the parameters' v)")
+    parser.add_argument("--alpha", type=float, default=None, metavar="DEG", help="the scenario's angle in degrees")
+
+
+def _column_options(parser: argparse.ArgumentParser, what: str) -> None:
+    """Your column names, units and time origin (``validate`` and ``fit``)."""
+    parser.add_argument("--names", default=None, metavar="Q=COLUMN,...",
+                        help="your column names, e.g. time=t,normal_force=Fn (quantities: "
+                             f"{', '.join(CANDIDATE_QUANTITIES)})")
+    parser.add_argument("--units", default=None, metavar="Q=UNIT,...",
+                        help="your units, e.g. time=ms,normal_force=mN,contact_area=mm2 (default SI)")
+    parser.add_argument("--time-origin", default="first_contact", metavar="ORIGIN",
+                        help=f"what the {what}' time counts from: first_contact (default), path_start, or the "
+                             f"{what}' time of first contact in s")
+
+
+def _numbers(option: str, text: str | None, allowed: Sequence[str]) -> dict[str, float]:
+    """``normal_force=1e-3,...`` -> ``{"normal_force": 0.001}``; a value that is not a number names the option."""
+    numbers = {}
+    for key, value in _pairs(option, text, allowed).items():
+        try:
+            numbers[key] = float(value)
+        except ValueError:
+            raise UsageError(f"{option} {key}={value!r} is not allowed; allowed: a number") from None
+    return numbers
+
+
+def _bounds(items: Sequence[str] | None) -> dict[str, tuple[float, float]]:
+    """``["tau0=1e3:1e6"]`` -> ``{"tau0": (1e3, 1e6)}``; a bad item names the option."""
+    bounds = {}
+    for item in items or ():
+        name, equals, interval = item.partition("=")
+        low, colon, high = interval.partition(":")
+        try:
+            if not (equals and colon):
+                raise ValueError
+            bounds[name.strip()] = (float(low), float(high))
+        except ValueError:
+            raise UsageError(f"--bounds {item!r} is not allowed; allowed: NAME=LOW:HIGH with numbers in SI units, "
+                             "e.g. tau0=1e3:1e6") from None
+    return bounds
+
+
+def _command_fit(args: argparse.Namespace) -> int:
+    # here, not at the top: fit_files loads matplotlib.pyplot for the figures
+    from mdr_events.app.fit_files import FIT_SUFFIXES, fit_console_summary, render_fit
+    from mdr_events.app.validation_files import write_rendered
+
+    params, provenance = _validation_parameters(args)
+    path, description = _validation_path(args, params)
+    out = prepare_output_directory(args.out, "--out")
+    stem = f"{Path(args.data).stem}_fit"
+    try:
+        check_output_stem("stem", stem)
+    except ValueError as error:
+        raise UsageError(f"the fit of {args.data} would be written as {stem}.*: {error}") from None
+    if any(os.path.realpath(out / f"{stem}{suffix}") == os.path.realpath(args.data) for suffix in FIT_SUFFIXES):
+        raise UsageError(f"--out {args.out}: writing the fit would overwrite {args.data}; allowed: another directory")
+    quantities = list(CANDIDATE_QUANTITIES)
+    # a scenario is passed by name: the fit rebuilds its way out (below the jump-off) for each trial
+    motion = (path, None) if args.path is not None else (args.scenario, args.alpha)
+    result = fit(args.data, *motion, free=args.free, start=params, bounds=_bounds(args.bounds),
+                 noise=_numbers("--noise", args.noise, quantities[1:]),
+                 names=_pairs("--names", args.names, quantities), units=_pairs("--units", args.units, quantities),
+                 time_origin=_time_origin(args.time_origin), limits=_limits(args))
+    result.dataset.attrs.update(provenance, path_description=description)
+    rendered = render_fit(result.dataset, stem)
+    written = write_rendered(rendered, out)
+    print("\n".join(fit_console_summary(result.dataset, args.data)))
+    print(f"  written: {', '.join(str(outcome.path) for outcome in written)}")
+    return 0 if result.identifiable else 1
+
+
 def _command_reproduce(args: argparse.Namespace) -> None:
     out = prepare_output_directory(args.out, "--out")
     reproduce(out, progress=_progress, keep_agreeing=not args.rewrite)
@@ -396,36 +487,35 @@ def build_parser() -> argparse.ArgumentParser:
                     "<run>.nc, <run>.md and <run>.png per run into --out; exit 0 if every run is within the "
                     "tolerance, 1 if not, 2 for bad input.")
     check.add_argument("runs", nargs="+", metavar="RUN", help="a run: a CSV file with a header row, or netCDF")
-    source = check.add_mutually_exclusive_group()
-    source.add_argument("--preset", choices=sorted(PRESETS), default=None,
-                        help="parameter set of the paper (default paper-R30); the options below override it")
-    source.add_argument("--params", default=None, metavar="FILE",
-                        help="a TOML file with a [parameters] table as in a study file (e.g. the study file)")
-    for name, long_name in PARAMETER_LONG_NAMES.items():
-        check.add_argument(f"--{name}", type=float, default=None, metavar="VALUE",
-                           help=f"{long_name} [{PARAMETER_UNITS[name]}]")
-    motion = check.add_mutually_exclusive_group(required=True)
-    motion.add_argument("--scenario", choices=list(SCENARIO_NAMES), help="the scenario the runs took (with --alpha)")
-    motion.add_argument("--path", default=None, metavar="FILE",
-                        help="a TOML file with a [path] table as in a study file: waypoints = [[x, d], ...] (m), "
-                             "speed (m/s, default the parameters' v)")
-    check.add_argument("--alpha", type=float, default=None, metavar="DEG", help="the scenario's angle in degrees")
+    _measured_path_options(check, "runs")
     check.add_argument("--out", required=True, help="output directory")
     _limit_option(check)
     check.add_argument("--tolerance", type=float, default=1e-3,
                        help="bound on each quantity's max error relative to its range (default 1e-3)")
-    check.add_argument("--names", default=None, metavar="Q=COLUMN,...",
-                       help="your column names, e.g. time=t,normal_force=Fn (quantities: "
-                            f"{', '.join(CANDIDATE_QUANTITIES)})")
-    check.add_argument("--units", default=None, metavar="Q=UNIT,...",
-                       help="your units, e.g. time=ms,normal_force=mN,contact_area=mm2 (default SI)")
-    check.add_argument("--time-origin", default="first_contact", metavar="ORIGIN",
-                       help="what the runs' time counts from: first_contact (default), path_start, or the runs' "
-                            "time of first contact in s")
+    _column_options(check, "runs")
     check.add_argument("--dx", type=float, nargs="+", default=None, metavar="M",
                        help="the spring spacing of each run (m), in the order of the runs and after them, for a "
                             "convergence study of three or more runs (default: from names such as run_dx2um.csv)")
     check.set_defaults(run=_command_validate)
+
+    fitting = commands.add_parser(
+        "fit", help="fit the model's parameters to measured curves (CSV or netCDF)",
+        description="Fit free parameters of the continuum model to measured F_N, F_x, A or a (mdr_events.fit); "
+                    "write <data>_fit.nc, .md and .png into --out; exit 0 if every free parameter is determined, "
+                    "1 if one is not (not identifiable, poorly determined or at a bound), 2 for bad input.")
+    fitting.add_argument("data", metavar="DATA", help="the measurement: a CSV file with a header row, or netCDF")
+    fitting.add_argument("--free", nargs="+", required=True, metavar="NAME",
+                         help=f"the parameters to fit: {', '.join(FREE_NAMES)}")
+    _measured_path_options(fitting, "measurement", start=True)
+    fitting.add_argument("--out", required=True, help="output directory")
+    _limit_option(fitting)
+    _column_options(fitting, "measurement")
+    fitting.add_argument("--noise", default=None, metavar="Q=SIGMA,...",
+                         help="the noise's standard deviation per quantity in SI units, e.g. normal_force=1e-3 "
+                              "(default: estimated from the data)")
+    fitting.add_argument("--bounds", nargs="+", default=None, metavar="NAME=LOW:HIGH",
+                         help="bounds of free parameters in SI units, e.g. tau0=1e3:1e6 (default: physical ranges)")
+    fitting.set_defaults(run=_command_fit)
 
     run = commands.add_parser("run", help="run a study described in a TOML file (see mdr_events.app.study)")
     run.add_argument("study", help="the study file, e.g. study.toml")

@@ -30,6 +30,14 @@ A study names its parameters, what to compute and where to write it::
     scenario = "A"               # the path the runs took: the [path] table if there is one, else
     alpha = 20                   # scenario and one alpha, here or from [simulation]
 
+    [fit]                        # optional: fit the model to a measurement (mdr_events.fit)
+    data = "measured.csv"        # CSV or netCDF, relative to the study file; names, units and
+    free = ["tau0", "dgamma1"]   # time_origin as in [validate]; the start: [parameters]
+    noise = { normal_force = 1e-3 }        # quantity -> noise σ, SI (optional: estimated)
+    bounds = { tau0 = [1e3, 1e6] }         # name -> [lower, upper], SI (optional)
+    scenario = "A"               # the path: as in [validate]
+    alpha = 20
+
     [output]                     # required
     directory = "out"            # relative to the study file; checked before anything is computed
     name = "my_study"            # file stem (default: the study file's stem); a plain name: no / or \\
@@ -38,6 +46,9 @@ Each run of ``[validate]`` is checked by :func:`mdr_events.validate` and written
 ``<name>_validation_<run's file stem>.nc``, ``.md`` and ``.png``
 (:mod:`mdr_events.app.validation_files`); the runs are validated before anything of the study is
 written, so that a bad run writes nothing. ``mdr-events run`` exits with status 1 if a run fails.
+The ``[fit]`` measurement is fitted by :func:`mdr_events.fit` and written as ``<name>_fit_<data's stem>.nc``,
+``.md`` and ``.png`` (:mod:`mdr_events.app.fit_files`); ``mdr-events run`` exits with status 1 if a free
+parameter is not determined.
 
 The file is read with :mod:`tomllib`. Unknown tables or keys, values of the
 wrong type and missing required keys are errors that name the table, the
@@ -65,6 +76,7 @@ from dataclasses import dataclass, field
 from pathlib import Path as FilePath
 from typing import TYPE_CHECKING, Any, Callable, Iterable
 
+from mdr_events.analysis.fit import fit
 from mdr_events.analysis.validate import validate
 from mdr_events.io.files import check_file_path, check_output_stem, prepare_output_directory
 from mdr_events.models.continuum import Tolerances
@@ -75,7 +87,7 @@ from mdr_events.validation import shown
 
 if TYPE_CHECKING:
     from mdr_events.app.result_files import FileOutcome
-    from mdr_events.app.validation_files import RenderedValidation
+    from mdr_events.app.validation_files import RenderedReport
 
 __all__ = ["Study", "StudyOutcomes", "load_study", "run_study", "StudyError", "load_parameters_file",
            "load_path_file"]
@@ -104,6 +116,11 @@ _KINDS: dict[str, tuple[Callable[[Any], bool], str]] = {
     "string table": (lambda v: isinstance(v, dict) and all(isinstance(s, str) for s in v.values()),
                      'a table of strings, e.g. { time = "t", normal_force = "Fn" }'),
     "string or number": (lambda v: isinstance(v, str) or _is_number(v), "a string or a number"),
+    "number table": (lambda v: isinstance(v, dict) and all(map(_is_number, v.values())),
+                     "a table of numbers, e.g. { normal_force = 1e-3 }"),
+    "bounds table": (lambda v: isinstance(v, dict) and all(isinstance(p, list) and len(p) == 2
+                                                            and all(map(_is_number, p)) for p in v.values()),
+                     "a table of [lower, upper] pairs, e.g. { tau0 = [1e3, 1e6] }"),
 }
 
 #: Table -> key -> (kind, required).
@@ -117,6 +134,10 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
     "validate": {"runs": ("strings", True), "tolerance": ("number", False), "names": ("string table", False),
                  "units": ("string table", False), "time_origin": ("string or number", False),
                  "scenario": ("string", False), "alpha": ("numbers", False)},
+    "fit": {"data": ("string", True), "free": ("strings", True), "names": ("string table", False),
+            "units": ("string table", False), "time_origin": ("string or number", False),
+            "noise": ("number table", False), "bounds": ("bounds table", False), "scenario": ("string", False),
+            "alpha": ("numbers", False)},
     "output": {"directory": ("string", True), "name": ("string", False)},
 }
 REQUIRED_TABLES = ("output",)
@@ -167,19 +188,21 @@ def _check_tables(document: dict[str, Any], where: str) -> None:
     for table in REQUIRED_TABLES:
         if table not in document:
             raise StudyError(f"{where}: the required table [{table}] is missing")
-    if not {"simulation", "phase_diagram", "validate"} & set(document):
+    if not {"simulation", "phase_diagram", "validate", "fit"} & set(document):
         raise StudyError(f"{where}: nothing to compute; give a [simulation] table, a [phase_diagram] table, "
-                         "a [validate] table or several")
-    if "path" in document and not {"simulation", "validate"} & set(document):
-        raise StudyError(f"{where}: a [path] needs a [simulation] table (method, dx, ...) or a [validate] table")
+                         "a [validate] table, a [fit] table or several")
+    if "path" in document and not {"simulation", "validate", "fit"} & set(document):
+        raise StudyError(f"{where}: a [path] needs a [simulation] table (method, dx, ...), a [validate] table or a "
+                         "[fit] table")
     simulation = document.get("simulation", {})
     if "path" in document and ("scenario" in simulation or "alpha" in simulation):
         raise StudyError(f"{where}: [simulation] scenario and alpha are not allowed with a [path] "
                          "(its waypoints fix the motion)")
     if "simulation" in document and "path" not in document and "scenario" not in simulation:
         raise StudyError(f"{where}: [simulation] lacks the required key scenario (or give a [path] table)")
-    if "validate" in document:
-        _validation_case(document, where)
+    for table in ("validate", "fit"):
+        if table in document:
+            _measured_case(document, where, table)
     if "name" in document["output"]:
         try:
             check_output_stem("[output] name", document["output"]["name"])
@@ -187,25 +210,26 @@ def _check_tables(document: dict[str, Any], where: str) -> None:
             raise StudyError(f"{where}: {error}") from None
 
 
-def _validation_case(document: dict[str, Any], where: str) -> tuple[str, float] | None:
-    """The scenario and angle the ``[validate]`` runs took, or ``None`` for the study's ``[path]``."""
-    table, simulation = document["validate"], document.get("simulation", {})
+def _measured_case(document: dict[str, Any], where: str, name: str) -> tuple[str, float] | None:
+    """The scenario and angle the measured runs of table ``[name]`` (``validate``, ``fit``) took, or ``None`` for
+    the study's ``[path]``."""
+    table, simulation = document[name], document.get("simulation", {})
     if "path" in document:
         if "scenario" in table or "alpha" in table:
-            raise StudyError(f"{where}: [validate] scenario and alpha are not allowed with a [path] "
-                             "(the runs are validated along its waypoints)")
+            raise StudyError(f"{where}: [{name}] scenario and alpha are not allowed with a [path] "
+                             "(the runs are taken along its waypoints)")
         return None
-    owner = "validate" if "scenario" in table else "simulation"
+    owner = name if "scenario" in table else "simulation"
     scenario = table.get("scenario", simulation.get("scenario"))
     if scenario is None:
-        raise StudyError(f"{where}: [validate] lacks the key scenario; allowed: scenario and alpha in [validate], "
+        raise StudyError(f"{where}: [{name}] lacks the key scenario; allowed: scenario and alpha in [{name}], "
                          "a [simulation] scenario and alpha, or a [path] table")
-    owner = "validate" if "alpha" in table else owner
+    owner = name if "alpha" in table else owner
     alpha = table.get("alpha", simulation.get("alpha"))
     angles = alpha if isinstance(alpha, list) else [] if alpha is None else [alpha]
     if len(angles) != 1:
-        raise StudyError(f"{where}: [validate] needs one angle; [{owner}] alpha = {alpha!r} is not allowed; "
-                         "allowed: one angle in degrees (give alpha in [validate])")
+        raise StudyError(f"{where}: [{name}] needs one angle; [{owner}] alpha = {alpha!r} is not allowed; "
+                         f"allowed: one angle in degrees (give alpha in [{name}])")
     return str(scenario), float(angles[0])
 
 
@@ -303,7 +327,8 @@ def load_path_file(path: str | os.PathLike, params: Parameters) -> Path:
 
 class StudyOutcomes(list):
     """The files a study wrote (a list of :class:`~mdr_events.app.result_files.FileOutcome`), and
-    ``verdicts``: each ``[validate]`` run (as written in the study) -> ``"pass"`` or ``"fail"``."""
+    ``verdicts``: each ``[validate]`` run (as written in the study) -> ``"pass"`` or ``"fail"``, and
+    ``"fit <data>"`` -> ``"pass"`` (every free parameter determined) or ``"fail"``."""
 
     def __init__(self, outcomes: Iterable[FileOutcome] = (), verdicts: dict[str, str] | None = None) -> None:
         super().__init__(outcomes)
@@ -321,7 +346,7 @@ def _study_path(study: Study) -> Path | None:
         raise StudyError(f"{os.fspath(study.source)}: [path] {error}") from None
 
 
-def _validations(study: Study, progress: Callable[[str], None]) -> list[tuple[str, RenderedValidation]]:
+def _validations(study: Study, progress: Callable[[str], None]) -> list[tuple[str, RenderedReport]]:
     """Validate every run of the ``[validate]`` table and render its files (nothing written yet)."""
     from mdr_events.app.validation_files import render_validation
 
@@ -329,7 +354,7 @@ def _validations(study: Study, progress: Callable[[str], None]) -> list[tuple[st
     if table is None:
         return []
     where = os.fspath(study.source)
-    case = _validation_case(study.tables, where)
+    case = _measured_case(study.tables, where, "validate")
     try:
         if case is None:
             path, description = _study_path(study), "the study's [path]"
@@ -363,6 +388,31 @@ def _validations(study: Study, progress: Callable[[str], None]) -> list[tuple[st
         report.attrs.update(study.provenance, path_description=description)
         reports.append((run, stem, report))
     return [(run, render_validation(report, stem)) for run, stem, report in reports]
+
+
+def _fit_report(study: Study, progress: Callable[[str], None]) -> tuple[str, RenderedReport] | None:
+    """Fit the ``[fit]`` table's measurement and render its files (nothing written yet)."""
+    from mdr_events.app.fit_files import render_fit
+
+    table = study.tables.get("fit")
+    if table is None:
+        return None
+    where = os.fspath(study.source)
+    case = _measured_case(study.tables, where, "fit")
+    data = FilePath(table["data"]) if FilePath(table["data"]).is_absolute() else study.source.parent / table["data"]
+    stem = f"{study.name}_fit_{data.stem}"
+    try:
+        check_output_stem("stem", stem)
+        motion = (_study_path(study), None) if case is None else case
+        description = "the study's [path]" if case is None else f"scenario {case[0]}, α = {case[1]:g}°"
+        options = {key: table[key] for key in ("names", "units", "time_origin", "noise") if key in table}
+        bounds = {name: tuple(pair) for name, pair in table.get("bounds", {}).items()}
+        progress(f"fit: {table['data']} (free: {', '.join(table['free'])})")
+        result = fit(data, *motion, free=table["free"], start=study.params, bounds=bounds, **options)
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{where}: [fit] {error}") from None
+    result.dataset.attrs.update(study.provenance, path_description=description)
+    return f"fit {table['data']}", render_fit(result.dataset, stem)
 
 
 def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOutcomes:
@@ -399,6 +449,7 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
         if scenario not in ("A", "B"):
             raise StudyError(f"{where}: [phase_diagram] scenarios contains {scenario!r}; allowed: 'A', 'B'")
     validations = _validations(study, progress)
+    fitted = _fit_report(study, progress)
     simulation = study.tables.get("simulation")
     if simulation is not None:
         settings = dict(simulation)
@@ -428,5 +479,10 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
         written += write_rendered(rendered, out)
         written.verdicts[run] = str(rendered.report.attrs["verdict"])
         progress(f"validate: {run}: {written.verdicts[run]}")
+    if fitted is not None:
+        label, rendered = fitted
+        written += write_rendered(rendered, out)
+        written.verdicts[label] = "pass" if rendered.report.attrs["identifiable"] else "fail"
+        progress(f"{label}: {rendered.report.attrs['verdict']}")
     return written
 

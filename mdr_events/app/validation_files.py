@@ -28,7 +28,7 @@ from mdr_events.parameters import PARAMETER_UNITS
 from mdr_events.plotting.figures import figure_png
 from mdr_events.plotting.validation import plot_validation
 
-__all__ = ["RenderedValidation", "VALIDATION_SUFFIXES", "render_validation", "write_rendered", "write_validation",
+__all__ = ["RenderedReport", "VALIDATION_SUFFIXES", "render_validation", "write_rendered", "write_validation",
            "validation_markdown", "console_summary"]
 
 #: The files of one validated run, by suffix.
@@ -38,8 +38,9 @@ EVENT_NAMES = {"slip_onset": "slip onset", "full_slip": "full slip", "detachment
                "pull_off": "pull-off"}
 
 
-class RenderedValidation(NamedTuple):
-    """A validated run ready to be written: the report, its Markdown summary and its figure (PNG bytes)."""
+class RenderedReport(NamedTuple):
+    """A report ready to be written (a validated run, a fit): the dataset, its Markdown summary and its figure
+    (PNG bytes)."""
 
     stem: str
     report: xr.Dataset
@@ -139,12 +140,12 @@ def console_summary(report: xr.Dataset, name: str) -> list[str]:
             f"{report.attrs.get('unused_columns', 'none')}"]
 
 
-def render_validation(report: xr.Dataset, stem: str) -> RenderedValidation:
+def render_validation(report: xr.Dataset, stem: str) -> RenderedReport:
     """The files of a report, computed but not written: the Markdown text and the figure's PNG bytes."""
-    return RenderedValidation(stem, report, validation_markdown(report, stem), figure_png(plot_validation(report)))
+    return RenderedReport(stem, report, validation_markdown(report, stem), figure_png(plot_validation(report)))
 
 
-def write_rendered(rendered: RenderedValidation, out: str | os.PathLike) -> list[FileOutcome]:
+def write_rendered(rendered: RenderedReport, out: str | os.PathLike) -> list[FileOutcome]:
     """Write ``<stem>.nc``, ``<stem>.md`` and ``<stem>.png`` into ``out`` (each atomically), after checking
     ``out`` (:func:`~mdr_events.io.files.prepare_output_directory`) and the stem
     (:func:`~mdr_events.io.files.check_output_stem`)."""
