@@ -59,10 +59,12 @@ from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Paramet
 from mdr_events.validation import check_real, shown
 
 __all__ = ["fit", "FitResult", "synthetic_measurement", "model_curves", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
-           "FIT_CONTENT", "FREE_NAMES", "FITTED_QUANTITIES", "LOG_SCALED", "OFFSETS"]
+           "FIT_CONTENT", "SYNTHETIC_CONTENT", "FREE_NAMES", "FITTED_QUANTITIES", "LOG_SCALED", "OFFSETS"]
 
 #: The ``content`` attribute of a fit's dataset.
 FIT_CONTENT = "fit of the model to measured curves"
+#: The ``content`` attribute of :func:`synthetic_measurement`'s dataset.
+SYNTHETIC_CONTENT = "synthetic measurement of the model"
 #: Measured quantities a fit compares (any subset; the sliding fraction is not measured).
 FITTED_QUANTITIES = ("normal_force", "tangential_force", "contact_area", "contact_radius")
 QUANTITY_UNITS = {"normal_force": "N", "tangential_force": "N", "contact_area": "m2", "contact_radius": "m"}
@@ -329,8 +331,9 @@ def synthetic_measurement(params: Parameters, path, alpha: float | None = None, 
         data[name] = (("time",), curves[name] + noise, {"units": QUANTITY_UNITS[name],
                                                         "long_name": f"synthetic measured {QUANTITY_SYMBOLS[name]}"})
     coords = {"time": ("time", times + time_shift, {"units": "s", "long_name": "time of the synthetic measurement"})}
-    return stamp(xr.Dataset(data, coords=coords), params, relative_noise=float(relative_noise), seed=int(seed),
-                 time_shift=float(time_shift))
+    return stamp(xr.Dataset(data, coords=coords), params, content=SYNTHETIC_CONTENT,
+                 relative_noise=float(relative_noise), seed=int(seed), time_shift=float(time_shift),
+                 path_waypoints=the_path.describe(), path_speed=the_path.speed)
 
 
 class _Problem:
@@ -719,5 +722,6 @@ def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, v
     return xr.Dataset(data, coords=coords)
 
 
+register_schema(SYNTHETIC_CONTENT, {"time": ("time",)})
 register_schema(FIT_CONTENT, {"estimate": ("parameter",), "standard_error": ("parameter",),
                               "correlation": ("parameter", "parameter_2"), "left_out": ("time",)})

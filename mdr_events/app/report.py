@@ -6,7 +6,8 @@ with a fresh computation. The figures of the simulations come from the
 continuum method, with the paper's discrete spring model overlaid for one
 angle; the report puts the section's stated numbers beside ours. A fretting
 study (reciprocating sliding at ``d_max``, R = 30 mm) adds ``fretting_R30.*``
-and the energy dissipated per cycle beside its closed form.
+and the energy dissipated per cycle beside its closed form; a fit to synthetic
+measurements adds ``fit_A20_R30*`` and the recovered parameters beside the true ones.
 
 What the report says is computed in :mod:`mdr_events.app.report_data`; this
 module only writes it as markdown.
@@ -22,7 +23,8 @@ from pathlib import Path
 from typing import Callable
 
 from mdr_events._version import __version__
-from mdr_events.app.report_data import (COMPUTE_STEPS, CONVERGENCE_SPACINGS, FIGURE_DX, FIGURE_NUMBERS,
+from mdr_events.app.report_data import (FIT_DEMO_ANGLE, FIT_DEMO_NOISE, FIT_DEMO_SAMPLES, FIT_DEMO_SEED, FitDemonstration,
+                                        COMPUTE_STEPS, CONVERGENCE_SPACINGS, FIGURE_DX, FIGURE_NUMBERS,
                                         FIGURE_STEPS, FRETTING_ANGLE, FRETTING_CYCLES, FRETTING_OBLIQUE,
                                         FRETTING_RADIUS, HISTORY_ANGLE, HISTORY_SPACINGS, OVERLAY_ANGLE,
                                         PAPER_CRITICAL_ANGLES, PAPER_TAU0, RADII, AdhesiveStrengthRow, AreaGrowthRow,
@@ -31,11 +33,12 @@ from mdr_events.app.report_data import (COMPUTE_STEPS, CONVERGENCE_SPACINGS, FIG
                                         ScenarioBAngleRow, ShearPlateauRow, SlipOnsetVerdict, compute,
                                         critical_angles_A, critical_angles_B, cross_check_rows, differences,
                                         extremum_convergence, fretting_rows, history_convergence, jobs)
-from mdr_events.app.result_files import (FileOutcome, FileStatus, describe_outcomes, write_dataset,
+from mdr_events.app.result_files import (FileOutcome, FileStatus, describe_outcomes, write_dataset, write_figure,
                                          write_phase_diagram, write_simulation, write_text)
 from mdr_events.io.datasets import DOI, RESULT_RTOL
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 from mdr_events.plotting.figures import plot_fretting
+from mdr_events.plotting.fit import plot_fit
 
 __all__ = ["reproduce", "report_text", "compute", "Reproduction", "PAPER_CRITICAL_ANGLES", "RADII", "FIGURE_NUMBERS",
            "software_versions", "recorded_versions", "RECORDED_PACKAGES", "fretting_section", "relative_difference_text",
@@ -48,7 +51,9 @@ REPORT_ROUNDOFF = 1e-12
 RECORDED_PACKAGES = ("numpy", "scipy", "sympy", "matplotlib", "xarray", "pandas")
 #: The stem of the fretting study's files in ``results/``.
 FRETTING_STEM = f"fretting_{FRETTING_RADIUS}"
-#: Progress steps of :func:`reproduce` after :func:`compute`: Fig. 8 and 10; the fretting study and README.md.
+#: The stem of the fit demonstration's files in ``results/``.
+FIT_STEM = f"fit_A{FIT_DEMO_ANGLE:g}_R30"
+#: Progress steps of :func:`reproduce` after :func:`compute`: Fig. 8 and 10; the fretting study, the fit and README.md.
 WRITE_STEPS = 2
 
 
@@ -338,6 +343,29 @@ def fretting_section(study: FrettingStudy) -> list[str]:
     return lines
 
 
+def fit_section(demo: FitDemonstration) -> list[str]:
+    """The report's section on the fit demonstration: true, start and recovered parameters with intervals."""
+    fitted = demo.result
+    lines = ["", "## Fitting to measurements: a demonstration", "",
+             f"Synthetic \"measured\" curves: the continuum of scenario A at {FIT_DEMO_ANGLE:g}° (R = 30 mm), "
+             f"F_N, F_x and A at {FIT_DEMO_SAMPLES} samples, with white noise of {FIT_DEMO_NOISE:.0%} of each "
+             f"quantity's largest magnitude (seed {FIT_DEMO_SEED}; `{FIT_STEM}_measured.nc`). `mdr_events.fit` "
+             f"started 30 % off and estimated the noise itself (`{FIT_STEM}.{{nc,png}}`):",
+             "",
+             "| parameter | true | start | fitted | 95 % interval | truth inside | verdict |",
+             "|---|---:|---:|---:|---|:---:|---|"]
+    for name, estimate in fitted.estimates.items():
+        truth = getattr(demo.truth, name)
+        inside = "yes" if estimate.lower <= truth <= estimate.upper else "**no**"
+        lines.append(f"| {name} | {truth:.5g} | {getattr(demo.start, name):.5g} | {estimate.value:.5g} | "
+                     f"[{estimate.lower:.5g}, {estimate.upper:.5g}] | {inside} | {estimate.identifiability.value} |")
+    dataset = fitted.dataset
+    lines += ["", f"Verdict: {fitted.verdict}; condition number {fitted.condition_number:.3g}; reduced χ² "
+                  f"{float(dataset['reduced_chi_square']):.3f}; {int(dataset['continuum_solves'])} continuum solves.",
+              ""]
+    return lines
+
+
 def _parameter_section() -> list[str]:
     params = Parameters.paper()
     lines = [
@@ -363,6 +391,8 @@ def _parameter_section() -> list[str]:
         "- `fig10_R30.{nc,png}`, `fig10_R100.{nc,png}`: Fig. 10 (scenario B), likewise.",
         f"- `{FRETTING_STEM}.{{nc,png}}`: the fretting study (F_x against x), continuum method, with its event log",
         f"  in `{FRETTING_STEM}_events.csv` and the discrete model in `{FRETTING_STEM}_discrete.nc`.",
+        f"- `{FIT_STEM}.{{nc,png}}`: the fit demonstration (estimates, intervals, correlations, residuals), its",
+        f"  synthetic measurement in `{FIT_STEM}_measured.nc`.",
         "",
     ]
     return lines
@@ -419,6 +449,8 @@ def report_text(data: Reproduction | None = None, versions: dict[str, str] | Non
     lines += _convergence_section(extremum_convergence(data), history_convergence(data))
     if data.fretting is not None:
         lines += fretting_section(data.fretting)
+    if data.fitting is not None:
+        lines += fit_section(data.fitting)
     lines += _parameter_section()
     lines += _software_section(software_versions() if versions is None else versions)
     return "\n".join(lines)
@@ -455,10 +487,13 @@ def reproduce(out: Path, progress: Callable[[str], None] = print, keep_agreeing:
         stem = f"fig{FIGURE_NUMBERS[scenario]}_{label}"
         overlay, outcome = write_dataset(data.discrete[(label, scenario)], out / f"{stem}_discrete.nc", keep_agreeing)
         done([outcome] + write_simulation(dataset, out, stem, overlay=overlay, keep_agreeing=keep_agreeing))
-    step("writing the fretting study (.nc, .png, events .csv) and README.md")
+    step("writing the fretting study (.nc, .png, events .csv), the fit (.nc, .png) and README.md")
     overlay, outcome = write_dataset(data.fretting.discrete, out / f"{FRETTING_STEM}_discrete.nc", keep_agreeing)
     done([outcome] + write_simulation(data.fretting.continuum, out, FRETTING_STEM, overlay=overlay,
                                       keep_agreeing=keep_agreeing, plot=plot_fretting))
+    measured = write_dataset(data.fitting.measured, out / f"{FIT_STEM}_measured.nc", keep_agreeing)[1]
+    fitted, outcome = write_dataset(data.fitting.result.dataset, out / f"{FIT_STEM}.nc", keep_agreeing)
+    done([measured, outcome, write_figure(plot_fit(fitted), out / f"{FIT_STEM}.png", keep_agreeing)])
     text = report_text(data)
     readme = out / "README.md"
     if keep_agreeing and readme.exists() and all(o.status is FileStatus.KEPT for o in outcomes):

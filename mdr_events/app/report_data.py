@@ -18,6 +18,8 @@ import xarray as xr
 from mdr_events.analysis.convergence import (HISTORY_QUANTITIES, discrete_errors, discrete_minus_continuum,
                                              observed_orders)
 from mdr_events.analysis.crosscheck import CROSS_CHECK_CONTENT, cross_check
+from mdr_events.analysis.fit import FitResult, fit, synthetic_measurement
+from mdr_events.analysis.validate import resolve_path
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import extremum, solve_path, tangential_work
 from mdr_events.models.paths import Path, exit_depth
@@ -29,7 +31,8 @@ from mdr_events.theory import analytic
 __all__ = ["Reproduction", "compute", "jobs", "COMPUTE_STEPS", "critical_angles_A", "critical_angles_B",
            "cross_check_rows", "differences", "extremum_convergence", "history_convergence", "FrettingContact",
            "FrettingStudy", "FrettingRow", "fretting_contact", "fretting_paths", "fretting_study", "fretting_rows",
-           "closed_loop_times", "discrete_loop_work", "FRETTING_VARIABLES"]
+           "closed_loop_times", "discrete_loop_work", "FRETTING_VARIABLES", "FitDemonstration", "fit_demonstration",
+           "FIT_DEMO_FREE", "FIT_DEMO_NOISE", "FIT_DEMO_SEED", "FIT_DEMO_SAMPLES", "FIT_DEMO_ANGLE"]
 
 #: Critical angles stated in section 4 (R = 30 mm), degrees.
 PAPER_CRITICAL_ANGLES = {"hertz": 23.59, "jkr": 22.87}
@@ -111,6 +114,7 @@ class Reproduction:
     discrete_errors: dict = field(default_factory=dict)
     history: dict = field(default_factory=dict)
     fretting: FrettingStudy | None = None  #: the fretting study at :data:`FRETTING_RADIUS`
+    fitting: "FitDemonstration | None" = None  #: the fit to synthetic measurements (:func:`fit_demonstration`)
 
 
 def jobs() -> list[tuple[str, float, str]]:
@@ -119,7 +123,7 @@ def jobs() -> list[tuple[str, float, str]]:
 
 
 #: Progress messages :func:`compute` sends (one per step).
-COMPUTE_STEPS = 2 * len(RADII) * len(SCENARIOS) + 3
+COMPUTE_STEPS = 2 * len(RADII) * len(SCENARIOS) + 4
 
 
 def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
@@ -156,7 +160,46 @@ def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
     say(f"fretting at d_max, R = {RADII[FRETTING_RADIUS] * 1e3:g} mm: continuum, {len(fretting_paths(params))} "
         f"cases; discrete (Δx = {FIGURE_DX * 1e6:g} µm)")
     data.fretting = fretting_study(Parameters.paper(R=RADII[FRETTING_RADIUS]))
+    say(f"fit of {len(FIT_DEMO_FREE)} parameters to synthetic measurements (scenario A at {FIT_DEMO_ANGLE:g}°, "
+        f"{FIT_DEMO_NOISE:.0%} noise)")
+    data.fitting = fit_demonstration(Parameters.paper())
     return data
+
+
+# ----------------------------------------------------------------------------
+# fitting to measurements
+#: The fit demonstration: scenario A at this angle, R = 30 mm ...
+FIT_DEMO_ANGLE = 20.0
+#: ... these parameters free, started 30 % off (alternately above and below) ...
+FIT_DEMO_FREE = ("E", "tau0", "dgamma0", "dgamma1")
+FIT_DEMO_START_FACTORS = (1.3, 0.7, 1.3, 0.7)
+#: ... on F_N, F_x and A at this many samples to 1.02 times the path's duration, with white noise of this share of
+#: each quantity's largest magnitude, drawn with this seed.
+FIT_DEMO_SAMPLES = 2001
+FIT_DEMO_NOISE = 0.01
+FIT_DEMO_SEED = 2023
+
+
+class FitDemonstration(NamedTuple):
+    """Synthetic measured curves from known parameters, and the fit that recovers them."""
+
+    truth: Parameters
+    start: Parameters
+    measured: xr.Dataset
+    result: FitResult
+
+
+def fit_demonstration(truth: Parameters) -> FitDemonstration:
+    """Fit :data:`FIT_DEMO_FREE` to synthetic measurements of scenario A at :data:`FIT_DEMO_ANGLE` (noise
+    :data:`FIT_DEMO_NOISE`, seed :data:`FIT_DEMO_SEED`) from a start 30 % off."""
+    duration = resolve_path(truth, "A", FIT_DEMO_ANGLE).duration
+    times = np.linspace(0.0, 1.02 * duration, FIT_DEMO_SAMPLES)
+    measured = synthetic_measurement(truth, "A", FIT_DEMO_ANGLE, times=times, relative_noise=FIT_DEMO_NOISE,
+                                     seed=FIT_DEMO_SEED)
+    start = truth.replace(**{name: getattr(truth, name) * factor
+                             for name, factor in zip(FIT_DEMO_FREE, FIT_DEMO_START_FACTORS)})
+    result = fit(measured, "A", FIT_DEMO_ANGLE, free=FIT_DEMO_FREE, start=start, time_origin="path_start")
+    return FitDemonstration(truth, start, measured, result)
 
 
 # ----------------------------------------------------------------------------

@@ -22,8 +22,6 @@ MEASURED_STYLE = dict(color="0.55", marker=".", ls="none", ms=2.5, zorder=2)
 FITTED_STYLE = dict(color="crimson", lw=1.4, zorder=3)
 RESIDUAL_STYLE = dict(color="0.35", marker=".", ls="none", ms=2.0, zorder=2)
 NOISE_BAND_STYLE = dict(color="tab:green", alpha=0.15, lw=0, zorder=0)
-#: Height of one line of the title (the verdict, then one line per estimate), as a share of the figure.
-TITLE_LINE_SHARE = 0.022
 
 
 def _estimate_line(fit: xr.Dataset, name: str) -> str:
@@ -70,7 +68,7 @@ def plot_fit(fit: xr.Dataset, title: str | None = None) -> Figure:
     heading = title if title is not None else f"Fit: {fit.attrs['verdict']}"
     figure.suptitle("\n".join([heading] + lines), fontsize=9)
     bottom_margin = add_inferred_footnote(figure, fit)
-    figure.tight_layout(rect=(0, bottom_margin, 1, 1.0 - TITLE_LINE_SHARE * (len(lines) + 1)))
+    figure.tight_layout(rect=(0, bottom_margin, 1, 1))  # makes room for the title itself
     return figure
 
 register_figure(FIT_CONTENT, plot_fit)

@@ -12,6 +12,7 @@ import xarray as xr
 
 import mdr_events as me
 from mdr_events.io import datasets
+from mdr_events.analysis.fit import synthetic_measurement
 from mdr_events.io.files import (TEMPORARY_MARKER, atomic_write, check_output_stem, is_temporary_name,
                                  prepare_output_directory, remove_stale_temporaries, write_netcdf)
 
@@ -33,6 +34,11 @@ def results(paper_module):
         "convergence_study": me.convergence_study(
             {dx: me.simulate(p, "A", alpha=[40.0], dx=dx, dt=0.5 * dx / p.v).isel(alpha=0) for dx in (8e-6, 6e-6, 4e-6)},
             p, "A", 40.0),
+        "synthetic_measurement": synthetic_measurement(p, "A", 40.0, times=np.linspace(0.0, 1000.0, 101),
+                                                       relative_noise=0.01, seed=1),
+        "fit": me.fit(synthetic_measurement(p, "A", 40.0, times=np.linspace(0.0, 1000.0, 101), relative_noise=0.01,
+                                            seed=1), "A", 40.0, free=("tau0",), start=p.replace(tau0=30e3),
+                      time_origin="path_start").dataset,
     }
 
 
@@ -42,13 +48,16 @@ def paper_module():
 
 
 @pytest.mark.parametrize("name", ["phase_A", "phase_B", "discrete", "continuum", "custom", "custom_cases",
-                                  "cross_check"])
+                                  "cross_check", "synthetic_measurement", "fit"])
 def test_every_result_reads_back_identical(results, tmp_path, name):
     dataset = results[name]
     path = write_netcdf(dataset, tmp_path / f"{name}.nc")
     again = me.open_result(path)
     xr.testing.assert_identical(again, dataset)
-    assert datasets.parameters_of(again) == me.Parameters.paper()
+    # a fit's dataset carries the fitted parameters; every other result the paper's it was computed with
+    expected = me.Parameters.paper().replace(tau0=float(dataset["estimate"].sel(parameter="tau0"))) \
+        if name == "fit" else me.Parameters.paper()
+    assert datasets.parameters_of(again) == expected
     assert again.attrs["doi"] == me.DOI and again.attrs["program_version"] == me.__version__
     # and writing it again gives the same bytes (same input, same output)
     second = write_netcdf(again, tmp_path / f"{name}_again.nc")
