@@ -682,9 +682,9 @@ def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, v
                                              "(scaled parameters)"}),
         "reduced_chi_square": ((), reduced_chi_square, {"units": "1", "long_name": "sum of squared weighted residuals "
                                                         "per degree of freedom"}),
-        "continuum_solves": ((), problem.solves, {"units": "1", "long_name": "continuum solves of the fit "
+        "continuum_solves": ((), np.int32(problem.solves), {"units": "1", "long_name": "continuum solves of the fit "
                                                   "(Jacobian included)"}),
-        "optimizer_evaluations": ((), int(solution.nfev), {"units": "1", "long_name": "residual evaluations of "
+        "optimizer_evaluations": ((), np.int32(solution.nfev), {"units": "1", "long_name": "residual evaluations of "
                                                            "least_squares"}),
     }
     for key, (number, standard_error) in moduli.items():
@@ -712,12 +712,12 @@ def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, v
     data["rms_normalised_residual"] = (("quantity",), np.array(rms), {"units": "1", "long_name": "RMS of the residual "
                                                                       "over the noise (about 1 for a good fit)"})
     coords = {
+        "time": ("time", measurement.candidate.time, {"units": "s", "long_name": "measured time"}),
+        "quantity": ("quantity", np.array(quantities), {"units": "1", "long_name": "quantity fitted"}),
         "parameter": ("parameter", np.array(names), {"units": "1", "long_name": "free parameter"}),
         "parameter_2": ("parameter_2", np.array(names), {"units": "1", "long_name": "free parameter"}),
         "parameter_units": ("parameter", np.array([_unit(n) for n in names]), {"units": "1",
                                                                                 "long_name": "unit of the parameter"}),
-        "time": ("time", measurement.candidate.time, {"units": "s", "long_name": "measured time"}),
-        "quantity": ("quantity", np.array(quantities), {"units": "1", "long_name": "quantity fitted"}),
     }
     return xr.Dataset(data, coords=coords)
 

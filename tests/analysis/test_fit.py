@@ -156,7 +156,10 @@ def test_estimate_noise_recovers_white_noise_on_a_smooth_curve():
 def test_the_result_writes_and_reads_back_and_plots(tmp_path, paper, noisy):
     written = me.write_netcdf(noisy.dataset, tmp_path / "fit.nc")
     back = me.open_result(written)
-    xr.testing.assert_identical(back["estimate"], noisy.dataset["estimate"])
+    xr.testing.assert_identical(back, noisy.dataset)
+    assert me.io.datasets.parameters_of(back) == noisy.parameters  # the fitted parameters, stamped
+    # same input, same output: the same fit written twice gives the same bytes
+    assert me.write_netcdf(noisy.dataset, tmp_path / "again.nc").read_bytes() == written.read_bytes()
     for name, variable in noisy.dataset.variables.items():
         assert "units" in variable.attrs and "long_name" in variable.attrs, name
     figure = noisy.plot()
