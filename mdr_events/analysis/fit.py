@@ -304,12 +304,13 @@ def model_curves(params: Parameters, path: Path, times: np.ndarray, tolerances: 
            "contact_radius": radius, "contact_area": math.pi * radius**2}
     before = since_contact < 0
     after = since_contact > solution.end_time
+    in_contact = (np.nan_to_num(radius) > 0) & ~before & ~after  # evaluate's radius at t < 0 is that at contact
     outside_before = path.waypoints[0, 1] <= 0.0
     for name in quantities:
         values = out[name]
         values[before] = 0.0 if outside_before else math.nan
         values[after] = 0.0 if solution.ended_by_contact else math.nan
-    return ModelCurves({name: out[name] for name in quantities}, np.nan_to_num(radius) > 0)
+    return ModelCurves({name: out[name] for name in quantities}, in_contact)
 
 
 def synthetic_measurement(params: Parameters, path, alpha: float | None = None, *, times: np.ndarray,
@@ -478,15 +479,18 @@ def _intervals(free: FreeParameters, theta: np.ndarray, standard_error: np.ndarr
 
 
 def _effective_moduli(free: FreeParameters, theta: np.ndarray, covariance: np.ndarray, params: Parameters):
-    """E* and G* with their standard errors (delta method over the scaled parameters)."""
+    """E* and G* with their standard errors (delta method over the scaled parameters; the step backward at an
+    upper bound, as in the Jacobian: ν = 0.5 is the paper's)."""
+    _, upper = free.scaled_bounds()
     out = {}
     for key, read in (("E_star", lambda p: p.E_star), ("G_star", lambda p: p.G_star)):
         gradient = np.zeros(theta.size)
         for j, name in enumerate(free.names):
             if name in ("E", "nu"):
+                step = FD_STEP if theta[j] + FD_STEP <= upper[j] else -FD_STEP
                 moved = theta.copy()
-                moved[j] += FD_STEP
-                gradient[j] = (read(free.model(moved)[0]) - read(params)) / FD_STEP
+                moved[j] += step
+                gradient[j] = (read(free.model(moved)[0]) - read(params)) / step
         variance = float(gradient @ covariance @ gradient)
         out[key] = (read(params), math.sqrt(max(variance, 0.0)))
     return out

@@ -122,6 +122,26 @@ def test_e_and_nu_are_reported_as_effective_moduli(paper):
     assert "E and ν enter the model only through E*" in result.dataset.attrs["notes"]
 
 
+def test_nu_at_its_bound_is_fitted_and_reported_at_the_bound(paper):
+    """The paper's ν = 0.5 is the upper bound: the fit ends on it, says so, and reports E* and G* there."""
+    data = synthetic_measurement(paper, "A", ALPHA, times=times_of(paper, 301))
+    result = me.fit(data, "A", ALPHA, free=("nu",), start=paper.replace(nu=0.45), time_origin="path_start")
+    assert result.parameters.nu == pytest.approx(0.5, abs=1e-9)
+    assert result.estimates["nu"].identifiability is Identifiability.AT_BOUND
+    assert float(result.dataset["G_star"]) == pytest.approx(paper.G_star, rel=1e-6)
+
+
+def test_the_contact_mask_does_not_depend_on_the_quantities(paper):
+    """Before the first contact the model is out of contact whichever quantities are fitted (the Jacobian's
+    jump rule reads this mask)."""
+    path = resolve_path(paper, "A", ALPHA)
+    times = np.array([-2.0, -1.0, 1.0, 2.0])
+    masks = [model_curves(paper, path, times, Tolerances(), DEFAULT_LIMITS, (name,)).in_contact
+             for name in ("contact_area", "contact_radius", "normal_force")]
+    for mask in masks:
+        assert mask.tolist() == [False, False, True, True]
+
+
 def test_model_curves_follow_the_rule_out_of_contact(paper):
     """0 out of the elastomer (before the path, after the pull-off and past a path that ends outside);
     nan (left out) past a path that ends in contact."""
