@@ -51,7 +51,7 @@ from mdr_events.models.simulate import scenario_paths
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic
 
-__all__ = ["validate", "resolve_path", "times_from_contact", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
+__all__ = ["validate", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
 
 #: The ``content`` attribute of a validation report.
 VALIDATION_CONTENT = "validation of a simulator against the exact continuum"
@@ -132,8 +132,9 @@ def _norms(times, difference, exact, compared) -> tuple[float, float, float]:
     return float(np.max(np.abs(d))) / spread, float(np.sqrt(np.mean(d**2))) / spread, l1 / spread
 
 
-def _candidate_events(times, quantities, contact, params) -> dict[str, float]:
-    """Times of the events by the module's rules (``nan`` where not found or not determinable)."""
+def candidate_events(times, quantities, contact, params) -> dict[str, float]:
+    """Times of the events by the module's rules (times as given; also ``pull_off_force`` and
+    ``last_in_contact``, the index of the last sample in contact, -1 if none) (``nan`` where not found or not determinable)."""
     out = {name: math.nan for name in VALIDATED_EVENTS}
     out["pull_off_force"] = math.nan
     out["last_in_contact"] = -1
@@ -253,7 +254,7 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     within = np.array([value <= tolerance for value in norms["max_error"]], dtype=np.int8)
     data["within_tolerance"] = (("quantity",), within, {"units": "1", "long_name": "max_error <= tolerance (1: yes)"})
 
-    found = _candidate_events(times, quantities, contact, params)
+    found = candidate_events(times, quantities, contact, params)
     first = {}
     for event in solution.events:
         kind = "pull_off" if event.kind.value == "contact_ends" else event.kind.value

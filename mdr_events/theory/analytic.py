@@ -12,7 +12,7 @@ Angles are in degrees, lengths in metres, forces in newtons.
 from __future__ import annotations
 
 import math
-from typing import Literal
+from typing import Literal, NamedTuple
 
 import numpy as np
 
@@ -21,6 +21,8 @@ from mdr_events.parameters import Parameters
 from mdr_events.validation import check_choice, check_flag, validate_alpha
 
 __all__ = [
+    "DimensionlessGroups",
+    "dimensionless_groups",
     "d_crit",
     "critical_angle",
     "critical_shift",
@@ -480,3 +482,30 @@ def critical_angle(params: Parameters, scenario: Literal["A", "B", "B+"] = "A", 
     with np.errstate(divide="ignore"):
         angle = _rel("critical_angle_B").numeric(point["contact_radius"], point["depth"], p.d_max, p.tau0, p.G_star)
     return float(np.rad2deg(angle))
+
+
+class DimensionlessGroups(NamedTuple):
+    """The three numbers the model's dimensionless results depend on (:func:`dimensionless_groups`)."""
+
+    slip: float  #: S = π τ0 √R / (2 G* √d_max)
+    adhesion_in: float  #: Γ0 = 2π Δγ0 √R / (E* d_max^(3/2))
+    adhesion_out: float  #: Γ1 = 2π Δγ1 √R / (E* d_max^(3/2))
+
+
+def dimensionless_groups(params: Parameters) -> DimensionlessGroups:
+    """The slip parameter and the two adhesion parameters of the model.
+
+    Measure depths in ``d_max`` (``d = d_max d̂``), radii in ``√(R d_max)`` (``a = √(R d_max) â``) and tangential
+    lengths in ``d_max`` (the paths (14), (19) move ``x = d / tan α``). Then the branch (9) reads
+    ``d̂ = â² − √(Γ â)`` with ``Γ = 2π Δγ √R / (E* d_max^(3/2))``, one per work of adhesion, and the cap (13)
+    ``ū/d_max = S â`` with ``S = π τ0 √R / (2 G* √d_max)`` (the slip parameter ``k/(tan α √d_max)`` of (20)).
+    The springs' forces scale as ``E* (R d_max)^(1/2) d_max`` (normal) and ``τ0 R d_max`` (tangential), so
+    every angle, every depth over ``d_max`` and every ratio such as ``F_x / (π a² τ0)`` depends on
+    ``(S, Γ0, Γ1)`` and the path's angle alone: two parameter sets with the same groups have the same
+    critical angles (17), (18), (21).
+    """
+    root = math.sqrt(params.R)
+    scale = params.E_star * params.d_max**1.5
+    return DimensionlessGroups(math.pi * params.tau0 * root / (2.0 * params.G_star * math.sqrt(params.d_max)),
+                               2.0 * math.pi * params.dgamma0 * root / scale,
+                               2.0 * math.pi * params.dgamma1 * root / scale)

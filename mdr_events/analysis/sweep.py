@@ -1,0 +1,489 @@
+"""Parameter sweeps: many runs of the model, their scalar quantities as one labelled Dataset: :func:`sweep`.
+
+A grid (the outer product of values per name, or a table of parameter sets) is cut into chunks of runs.
+Each chunk is one task (:func:`run_chunk`, a plain function of picklable arguments): run serially here,
+or on ``dask.distributed`` — a ``LocalCluster`` sized to the machine by default, any dask cluster by its
+scheduler's address. The same function computes every run either way, so the numbers are identical.
+
+With a ``store`` (a Zarr directory) every chunk is written as it completes, into its region of a store laid
+out before the first run (:func:`~xarray.Dataset.to_zarr` with ``region``). A sweep interrupted for any
+reason resumes where it stopped: the chunks the store marks done are read back, not run again. A run that
+raises is recorded (``failed``, ``error``) and does not stop the sweep.
+
+The quantities of a run (:data:`QUANTITIES`) are exact for the continuum method (the solution's extrema and
+event log, :mod:`mdr_events.models.continuum`); for the discrete method they are read off its samples by the
+rules of :mod:`mdr_events.analysis.validate` (first sample sliding, first sample out of contact, ...).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+import os
+from dataclasses import dataclass
+from typing import Callable, Mapping, NamedTuple, Sequence
+
+import numpy as np
+import xarray as xr
+
+from mdr_events.analysis.validate import candidate_events
+from mdr_events.io.datasets import register_schema, stamp
+from mdr_events.models.continuum import EventKind, Tolerances, extremum, solve_path, tangential_work
+from mdr_events.models.paths import Path
+from mdr_events.models.simulate import METHODS, SCENARIO_NAMES, scenario_paths, simulate
+from mdr_events.parameters import PARAMETER_UNITS, Parameters
+from mdr_events.theory import analytic
+from mdr_events.validation import check_choice, check_count, shown
+
+__all__ = ["sweep", "run_chunk", "SweepSpec", "QUANTITIES", "CLOSED_FORM_QUANTITIES", "SWEEP_CONTENT", "SWEPT_NAMES",
+           "TABLE_DIMENSION",
+           "ChunkResult"]
+
+#: The ``content`` attribute of a sweep's dataset.
+SWEEP_CONTENT = "parameter sweep"
+#: Names a grid may sweep besides the :class:`Parameters` fields: the path angle and the discrete spacing.
+EXTRA_NAMES = {"alpha": "degree", "dx": "m"}
+SWEPT_NAMES = tuple(PARAMETER_UNITS) + tuple(EXTRA_NAMES)
+#: The dimension of a sweep over a table of parameter sets.
+TABLE_DIMENSION = "set"
+#: Runs per chunk (one task) by default: enough that the engine's overhead per run is far below a run's cost.
+DEFAULT_CHUNK = 50
+#: Characters of a failed run's error kept in the result.
+ERROR_CHARACTERS = 200
+
+#: Scalar quantities of each run: name -> (unit, long name).
+QUANTITIES: dict[str, tuple[str, str]] = {
+    "normal_force_min": ("N", "smallest normal force (largest adhesive pull)"),
+    "tangential_force_max": ("N", "largest |F_x|"),
+    "contact_area_max": ("m2", "largest contact area"),
+    "slip_onset_in_time": ("s", "first slip onset before the path's deepest point (s from the path's start)"),
+    "slip_onset_in_depth": ("m", "depth at the first slip onset before the path's deepest point"),
+    "slip_onset_out_time": ("s", "first slip onset after the path's deepest point (s from the path's start)"),
+    "slip_onset_out_depth": ("m", "depth at the first slip onset after the path's deepest point"),
+    "full_slip_time": ("s", "first full slip (s from the path's start)"),
+    "pull_off_time": ("s", "pull-off (s from the path's start)"),
+    "pull_off_depth": ("m", "depth at the pull-off"),
+    "pull_off_force": ("N", "normal force at the pull-off"),
+    "tangential_work": ("J", "work of the tangential force over the run, ∫ F_x dx"),
+    "event_count": ("1", "events logged (continuum) / found (discrete)"),
+    "critical_angle_A": ("degree", "critical angle of scenario A (eq. 18; closed form)"),
+    "critical_angle_B": ("degree", "angle of scenario B above which the contact comes apart before sliding "
+                                   "(eq. 21; closed form)"),
+}
+#: Quantities of the closed forms alone: a sweep asking only for these runs no model.
+CLOSED_FORM_QUANTITIES = ("critical_angle_A", "critical_angle_B")
+
+
+@dataclass(frozen=True)
+class SweepSpec:
+    """What every run of a sweep shares (picklable: sent to the workers once per chunk)."""
+
+    base: Parameters
+    scenario: str | Path
+    alpha: float | None
+    method: str
+    names: tuple[str, ...]
+    tolerances: Tolerances = Tolerances()
+    dx: float | None = None
+    n_steps: int | None = None
+    quantities: tuple[str, ...] = tuple(QUANTITIES)
+
+    def run(self, values: Sequence[float]) -> dict[str, float]:
+        """The :attr:`quantities` of the run at ``values`` (one per swept name); the model runs only if one of
+        them needs it (not for :data:`CLOSED_FORM_QUANTITIES` alone)."""
+        settings = dict(zip(self.names, (float(v) for v in values)))
+        alpha = settings.pop("alpha", self.alpha)
+        dx = settings.pop("dx", self.dx)
+        params = self.base.replace(**settings) if settings else self.base
+        out = {}
+        if set(self.quantities) - set(CLOSED_FORM_QUANTITIES):
+            path = self.scenario if isinstance(self.scenario, Path) else \
+                scenario_paths(params, self.scenario, [alpha])[0][0]
+            out = (_continuum_quantities(params, path, self.tolerances) if self.method == "continuum"
+                   else _discrete_quantities(params, path, dx, self.n_steps))
+        if "critical_angle_A" in self.quantities:
+            out["critical_angle_A"] = analytic.critical_angle(params, "A")
+        if "critical_angle_B" in self.quantities:
+            out["critical_angle_B"] = analytic.critical_angle(params, "B")
+        return {name: out[name] for name in self.quantities}
+
+
+def _deepest_time(path: Path) -> float:
+    return float(path.corner_times[int(np.argmax(path.waypoints[:, 1]))])
+
+
+def _continuum_quantities(params: Parameters, path: Path, tolerances: Tolerances) -> dict[str, float]:
+    solution = solve_path(params, path, tolerances)
+    out = {"normal_force_min": extremum(solution, "normal_force", largest=False)[1],
+           "tangential_force_max": max(abs(extremum(solution, "tangential_force", largest=True)[1]),
+                                       abs(extremum(solution, "tangential_force", largest=False)[1])),
+           "contact_area_max": extremum(solution, "contact_area", largest=True)[1],
+           "tangential_work": tangential_work(solution), "event_count": float(len(solution.events))}
+    deepest = _deepest_time(path)
+    first: dict[str, object] = {}
+    for event in solution.events:
+        kind = event.kind
+        if kind is EventKind.SLIP_ONSET:
+            first.setdefault("slip_onset_in" if event.time <= deepest else "slip_onset_out", event)
+        elif kind is EventKind.FULL_SLIP:
+            first.setdefault("full_slip", event)
+        elif kind in (EventKind.PULL_OFF, EventKind.CONTACT_ENDS):
+            first.setdefault("pull_off", event)
+    for key in ("slip_onset_in", "slip_onset_out", "full_slip", "pull_off"):
+        event = first.get(key)
+        out[f"{key}_time"] = float(event.time) if event else math.nan
+        if key != "full_slip":
+            out[f"{key}_depth"] = float(event.depth) if event else math.nan
+    pull = first.get("pull_off")
+    out["pull_off_force"] = float(analytic.normal_force(pull.depth, pull.radius, params)) if pull else math.nan
+    return out
+
+
+#: The discrete model's time step per spring spacing of travel when no ``n_steps`` is given: the time step is
+#: refined with the spacing (both are first order; a fixed step would stop the convergence).
+DISCRETE_STEP_PER_SPACING = 0.5
+
+
+def _discrete_quantities(params: Parameters, path: Path, dx: float | None, n_steps: int | None) -> dict[str, float]:
+    dt = None if n_steps is not None or dx is None else DISCRETE_STEP_PER_SPACING * dx / path.speed
+    run = simulate(params, path, method="discrete", dx=dx, dt=dt, n_steps=n_steps).isel(case=0)
+    times = run["time"].values
+    quantities = {name: run[name].values for name in ("normal_force", "tangential_force", "contact_area",
+                                                      "sliding_fraction")}
+    contact = np.nan_to_num(quantities["contact_area"]) > 0
+    found = candidate_events(times, quantities, contact, params)
+    start = path.first_contact_time()
+    depth = run["indentation_depth"].values
+    deepest = _deepest_time(path)
+    slides = np.nan_to_num(quantities["sliding_fraction"]) > 0
+    sliding = np.flatnonzero(slides & ~np.concatenate([[False], slides[:-1]]))  # onsets: sliding, not before
+    path_times = times + start
+    onset_in = sliding[path_times[sliding] <= deepest]
+    onset_out = sliding[path_times[sliding] > deepest]
+    lost = found["last_in_contact"] + 1 if found["last_in_contact"] >= 0 else -1
+    x = run["tangential_displacement"].values
+    finite = np.isfinite(quantities["tangential_force"]) & np.isfinite(x)
+    return {
+        "normal_force_min": float(np.nanmin(quantities["normal_force"])),
+        "tangential_force_max": float(np.nanmax(np.abs(quantities["tangential_force"]))),
+        "contact_area_max": float(np.nanmax(quantities["contact_area"])),
+        "slip_onset_in_time": float(path_times[onset_in[0]]) if onset_in.size else math.nan,
+        "slip_onset_in_depth": float(depth[onset_in[0]]) if onset_in.size else math.nan,
+        "slip_onset_out_time": float(path_times[onset_out[0]]) if onset_out.size else math.nan,
+        "slip_onset_out_depth": float(depth[onset_out[0]]) if onset_out.size else math.nan,
+        "full_slip_time": found["full_slip"] + start if math.isfinite(found["full_slip"]) else math.nan,
+        "pull_off_time": found["pull_off"] + start if math.isfinite(found["pull_off"]) else math.nan,
+        "pull_off_depth": float(depth[lost]) if lost >= 0 else math.nan,
+        "pull_off_force": found["pull_off_force"],
+        "tangential_work": float(np.trapezoid(quantities["tangential_force"][finite], x[finite])),
+        "event_count": float(sum(math.isfinite(found[k]) for k in ("slip_onset", "full_slip", "detachment_starts",
+                                                                    "pull_off"))),
+    }
+
+
+class ChunkResult(NamedTuple):
+    """The quantities of a chunk's runs (runs × :data:`QUANTITIES`, ``nan`` where a run failed) and each run's
+    error (``""``: it ran)."""
+
+    values: np.ndarray
+    errors: list[str]
+
+
+def run_chunk(spec: SweepSpec, rows: np.ndarray) -> ChunkResult:
+    """Run every row (the swept names' values) of a chunk; a run that raises is recorded, not raised."""
+    values = np.full((len(rows), len(spec.quantities)), np.nan)
+    errors = []
+    for i, row in enumerate(rows):
+        try:
+            values[i] = list(spec.run(row).values())
+            errors.append("")
+        except Exception as error:  # noqa: BLE001 - a failed run is a result of the sweep, recorded with its error
+            errors.append(f"{type(error).__name__}: {error}"[:ERROR_CHARACTERS])
+    return ChunkResult(values, errors)
+
+
+# ------------------------------------------------------------------------------------------------------------
+# the grid
+class Grid(NamedTuple):
+    """The swept names, their coordinates (outer product) or the table, and every run's values (runs × names)."""
+
+    names: tuple[str, ...]
+    coords: dict[str, np.ndarray]  #: per name (outer product), or per name along TABLE_DIMENSION
+    rows: np.ndarray
+    table: bool
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        return (len(self.rows),) if self.table else tuple(len(self.coords[name]) for name in self.names)
+
+
+def _values(name: str, values) -> np.ndarray:
+    if name not in SWEPT_NAMES:
+        raise ValueError(f"grid: {name!r} is not allowed; allowed: {', '.join(SWEPT_NAMES)}")
+    try:
+        array = np.atleast_1d(np.asarray(values, dtype=float))
+    except (TypeError, ValueError):
+        raise ValueError(f"grid[{name!r}]={shown(values)} is not allowed; allowed: real numbers") from None
+    if array.ndim != 1 or array.size == 0 or not np.all(np.isfinite(array)):
+        raise ValueError(f"grid[{name!r}]={shown(values)} is not allowed; allowed: a non-empty list of finite numbers")
+    return array
+
+
+def make_grid(grid) -> Grid:
+    """Check a grid: a mapping name → values (outer product) or a sequence of mappings (a table of sets)."""
+    if isinstance(grid, Mapping):
+        if not grid:
+            raise ValueError("grid={} is not allowed; allowed: a mapping of names to values, e.g. {'tau0': [...]}")
+        coords = {str(name): _values(str(name), values) for name, values in grid.items()}
+        for name, values in coords.items():
+            if len(np.unique(values)) != values.size:
+                raise ValueError(f"grid[{name!r}] repeats a value; allowed: distinct values")
+        mesh = np.meshgrid(*coords.values(), indexing="ij")
+        return Grid(tuple(coords), coords, np.column_stack([m.ravel() for m in mesh]), table=False)
+    if isinstance(grid, Sequence) and not isinstance(grid, str) and grid and all(isinstance(r, Mapping) for r in grid):
+        names = tuple(str(name) for name in grid[0])
+        for index, row in enumerate(grid):
+            if tuple(map(str, row)) != names:
+                raise ValueError(f"grid[{index}] names {sorted(map(str, row))}; allowed: the names of grid[0] "
+                                 f"({', '.join(names)}) in every set")
+        coords = {name: _values(name, [row[name] for row in grid]) for name in names}
+        return Grid(names, coords, np.column_stack(list(coords.values())), table=True)
+    raise ValueError(f"grid={shown(grid)} is not allowed; allowed: a non-empty mapping of names to values (outer "
+                     "product) or a non-empty list of mappings (a table of parameter sets)")
+
+
+def _check_runs(spec: SweepSpec, grid: Grid) -> None:
+    """Every parameter set of the grid is valid (before anything runs): the first refused one is named."""
+    fields = [i for i, name in enumerate(grid.names) if name in PARAMETER_UNITS]
+    for i, name in enumerate(grid.names):
+        if name in EXTRA_NAMES:
+            column = grid.rows[:, i]
+            if name == "alpha" and not np.all((column > 0) & (column <= 90)):
+                raise ValueError(f"grid['alpha'] holds {float(column[(column <= 0) | (column > 90)][0])!r}; allowed: angles "
+                                 "in (0, 90] degrees")
+            if name == "dx" and not np.all(column > 0):
+                raise ValueError(f"grid['dx'] holds {float(column[column <= 0][0])!r}; allowed: spacings > 0 (m)")
+    if fields:
+        for row in np.unique(grid.rows[:, fields], axis=0):
+            try:
+                spec.base.replace(**{grid.names[i]: float(value) for i, value in zip(fields, row)})
+            except (ValueError, TypeError) as error:
+                raise ValueError(f"grid: {error}") from None
+
+
+# ------------------------------------------------------------------------------------------------------------
+# the store
+def _signature(spec: SweepSpec, grid: Grid) -> str:
+    """What makes a store this sweep's: resuming another sweep's store is refused."""
+    scenario = spec.scenario if isinstance(spec.scenario, str) else spec.scenario.describe()
+    return json.dumps({"base": spec.base.as_dict(), "scenario": scenario, "alpha": spec.alpha, "method": spec.method,
+                       "dx": spec.dx, "n_steps": spec.n_steps, "tolerances": dataclasses.asdict(spec.tolerances),
+                       "names": grid.names, "rows": grid.rows.tolist(), "quantities": spec.quantities}, sort_keys=True)
+
+
+def _flat_dataset(quantities: Sequence[str], values: np.ndarray, errors: Sequence[str],
+                  done: np.ndarray) -> xr.Dataset:
+    data = {name: (("run",), values[:, i], {"units": QUANTITIES[name][0], "long_name": QUANTITIES[name][1]})
+            for i, name in enumerate(quantities)}
+    data["failed"] = (("run",), np.array([bool(e) for e in errors], dtype=np.int8),
+                      {"units": "1", "long_name": "1: the run raised (see error)"})
+    data["error"] = (("run",), np.array(errors, dtype=f"<U{ERROR_CHARACTERS}"),
+                     {"units": "1", "long_name": "the error of a failed run"})
+    data["done"] = (("run",), done.astype(np.int8), {"units": "1", "long_name": "1: the run's chunk is written"})
+    return xr.Dataset(data)
+
+
+class _Store:
+    """A Zarr store holding the sweep's runs along a flat ``run`` dimension, one chunk per task."""
+
+    def __init__(self, path: str | os.PathLike, signature: str, quantities: Sequence[str], runs: int, chunk: int,
+                 resume: bool):
+        self.path, self.chunk, self.quantities = os.fspath(path), chunk, tuple(quantities)
+        if resume and os.path.isdir(self.path):
+            existing = xr.open_zarr(self.path, zarr_format=2)
+            if existing.attrs.get("sweep_signature") != signature:
+                raise ValueError(f"store={self.path!r} holds another sweep (other parameters, grid or options); "
+                                 "allowed: this sweep's store to resume, or resume=False to start it afresh")
+            self.existing = existing.load()
+            return
+        template = _flat_dataset(self.quantities, np.full((runs, len(self.quantities)), np.nan), [""] * runs,
+                                 np.zeros(runs, bool))
+        template.attrs["sweep_signature"] = signature
+        encoding = {name: {"chunks": (chunk,)} for name in template.data_vars}
+        template.to_zarr(self.path, mode="w", zarr_format=2, encoding=encoding, compute=True)
+        self.existing = None
+
+    def done(self) -> np.ndarray | None:
+        return None if self.existing is None else self.existing["done"].values.astype(bool)
+
+    def write(self, start: int, result: ChunkResult) -> None:
+        part = _flat_dataset(self.quantities, result.values, result.errors, np.ones(len(result.errors), bool))
+        part.to_zarr(self.path, region={"run": slice(start, start + len(result.errors))}, zarr_format=2)
+
+
+# ------------------------------------------------------------------------------------------------------------
+# the engine
+def _chunks(runs: int, size: int) -> list[tuple[int, int]]:
+    return [(start, min(start + size, runs)) for start in range(0, runs, size)]
+
+
+def _client(scheduler, workers: int | None):
+    """A ``distributed.Client``: on a new ``LocalCluster`` (``"local"``; loopback only, one thread per worker
+    process) or on the cluster at ``scheduler`` (an address). Returns the client and what to close."""
+    try:
+        from distributed import Client, LocalCluster
+    except ModuleNotFoundError:
+        raise ValueError(f"scheduler={scheduler!r} needs dask.distributed; allowed: scheduler='serial', or install "
+                         "the extra: pip install 'mdr_events[scale]'") from None
+    if scheduler == "local":
+        cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
+                               host="127.0.0.1", dashboard_address=None)
+        return Client(cluster), cluster
+    return Client(scheduler), None
+
+
+def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, method: str = "continuum",
+          dx: float | None = None, n_steps: int | None = None, tolerances: Tolerances = Tolerances(),
+          quantities: Sequence[str] | None = None, scheduler: str = "local", workers: int | None = None,
+          chunk_size: int = DEFAULT_CHUNK,
+          store: str | os.PathLike | None = None, resume: bool = True,
+          progress: Callable[[int, int], None] | None = None) -> xr.Dataset:
+    """Run the model over a grid of parameters and return each run's scalar quantities.
+
+    Parameters
+    ----------
+    grid : mapping or sequence of mappings
+        Name → values: the outer product, one dimension per name (in the mapping's order). Or a list of
+        mappings (each a parameter set, the same names): along the dimension ``set``. Names: any
+        :class:`Parameters` field, ``alpha`` (degrees) and ``dx`` (m, discrete).
+    scenario : {"A", "B", "B+"} or Path
+        The path of every run; a scenario is rebuilt per run (at its parameters and angle).
+    alpha : float, optional
+        The angle of a scenario when the grid does not sweep it.
+    base : Parameters
+        The fields the grid does not sweep.
+    method : {"continuum", "discrete"}
+        The continuum's quantities are exact (extrema and event log); the discrete model's are read off its
+        samples (``dx``, ``n_steps`` as in :func:`mdr_events.simulate`; without ``n_steps`` and with a spacing
+        the time step is :data:`DISCRETE_STEP_PER_SPACING` spacings of travel).
+    quantities : sequence of str, optional
+        Which of :data:`QUANTITIES` (default all); only closed-form ones (:data:`CLOSED_FORM_QUANTITIES`) run no
+        model.
+    scheduler : "local", "serial" or str
+        ``"local"``: a ``dask.distributed.LocalCluster`` of ``workers`` processes (default: the machine's cores),
+        on loopback; ``"serial"``: here, one chunk after another; else the address of a running dask scheduler
+        (``"tcp://host:8786"``). Every choice gives the same numbers.
+    chunk_size : int
+        Runs per task (and per Zarr chunk of the store).
+    store : path, optional
+        A Zarr directory written chunk by chunk as runs complete; with ``resume`` (default) a store of this
+        same sweep is continued: its done chunks are read, not run again.
+    progress : callable, optional
+        Called with (runs done, runs in all) after each chunk.
+
+    Returns
+    -------
+    xarray.Dataset
+        One dimension per swept name (or ``set``), with the swept values as coordinates; the quantities of
+        :data:`QUANTITIES`, ``failed`` and ``error`` (a run that raised, and why).
+
+    Raises
+    ------
+    ValueError
+        Before anything runs, naming the argument: an unknown name, an empty or non-finite grid, a value the
+        parameters refuse, a scenario without an angle, a store of another sweep.
+    """
+    check_choice("method", method, METHODS)
+    chunk_size = check_count("chunk_size", chunk_size, 1)
+    the_grid = make_grid(grid)
+    if "dx" in the_grid.names and method != "discrete":
+        raise ValueError("grid: 'dx' is not allowed with method='continuum'; allowed: with method='discrete'")
+    if isinstance(scenario, str):
+        check_choice("scenario", scenario, SCENARIO_NAMES)
+        if alpha is None and "alpha" not in the_grid.names:
+            raise ValueError(f"scenario={scenario!r} needs an angle; allowed: alpha=DEG or 'alpha' in the grid")
+    elif not isinstance(scenario, Path):
+        raise ValueError(f"scenario={shown(scenario)} is not allowed; allowed: 'A', 'B', 'B+' or a Path")
+    elif "alpha" in the_grid.names or alpha is not None:
+        raise ValueError("alpha is not allowed with a Path (its waypoints fix the motion)")
+    if not isinstance(base, Parameters):
+        raise TypeError(f"base={shown(base)} ({type(base).__name__}) is not allowed; allowed: a Parameters")
+    wanted = tuple(QUANTITIES) if quantities is None else tuple(quantities)
+    for name in wanted:
+        check_choice("quantities", name, QUANTITIES)
+    if not wanted or len(set(wanted)) != len(wanted):
+        raise ValueError(f"quantities={shown(quantities)} is not allowed; allowed: distinct names from "
+                         f"{', '.join(QUANTITIES)}")
+    spec = SweepSpec(base, scenario, None if alpha is None else float(alpha), method, the_grid.names, tolerances,
+                     dx, n_steps, wanted)
+    _check_runs(spec, the_grid)
+    if scheduler not in ("local", "serial") and not (isinstance(scheduler, str) and "://" in scheduler):
+        raise ValueError(f"scheduler={shown(scheduler)} is not allowed; allowed: 'local', 'serial' or a dask "
+                         "scheduler's address such as 'tcp://host:8786'")
+    runs = len(the_grid.rows)
+    values = np.full((runs, len(wanted)), np.nan)
+    errors = [""] * runs
+    the_store = None if store is None else _Store(store, _signature(spec, the_grid), wanted, runs, chunk_size, resume)
+    pending = _chunks(runs, chunk_size)
+    done = the_store.done() if the_store is not None else None
+    if done is not None:
+        previous = the_store.existing
+        values[done] = np.column_stack([previous[name].values for name in wanted])[done]
+        for index in np.flatnonzero(done):
+            errors[index] = str(previous["error"].values[index])
+        pending = [(a, b) for a, b in pending if not np.all(done[a:b])]
+    finished = runs - sum(b - a for a, b in pending)
+
+    def record(start: int, result: ChunkResult) -> None:
+        nonlocal finished
+        values[start:start + len(result.errors)] = result.values
+        errors[start:start + len(result.errors)] = result.errors
+        if the_store is not None:
+            the_store.write(start, result)
+        finished += len(result.errors)
+        if progress is not None:
+            progress(finished, runs)
+
+    if scheduler == "serial":
+        for start, stop in pending:
+            record(start, run_chunk(spec, the_grid.rows[start:stop]))
+    elif pending:
+        from distributed import as_completed
+        client, cluster = _client(scheduler, workers)
+        try:
+            spec_future = client.scatter(spec, broadcast=True)
+            futures = {client.submit(run_chunk, spec_future, the_grid.rows[start:stop], pure=False): start
+                       for start, stop in pending}
+            for future, result in as_completed(futures, with_results=True):
+                record(futures[future], result)
+        finally:
+            client.close()
+            if cluster is not None:
+                cluster.close()
+    return _result(spec, the_grid, values, errors, scheduler)
+
+
+def _result(spec: SweepSpec, grid: Grid, values: np.ndarray, errors: list[str], scheduler) -> xr.Dataset:
+    dims = (TABLE_DIMENSION,) if grid.table else grid.names
+    shape = grid.shape
+    data = {name: (dims, values[:, i].reshape(shape), {"units": QUANTITIES[name][0], "long_name": QUANTITIES[name][1]})
+            for i, name in enumerate(spec.quantities)}
+    failed = np.array([bool(e) for e in errors], dtype=np.int8).reshape(shape)
+    data["failed"] = (dims, failed, {"units": "1", "long_name": "1: the run raised (see error)"})
+    data["error"] = (dims, np.array(errors, dtype=str).reshape(shape), {"units": "1",
+                                                                        "long_name": "the error of a failed run"})
+    units = dict(PARAMETER_UNITS, **EXTRA_NAMES)
+    coords = {name: ((TABLE_DIMENSION,) if grid.table else (name,), grid.coords[name],
+                     {"units": units[name], "long_name": f"swept {name}"}) for name in grid.names}
+    scenario = spec.scenario if isinstance(spec.scenario, str) else "custom path"
+    attrs = dict(content=SWEEP_CONTENT, scenario=scenario, method=spec.method, swept=", ".join(grid.names),
+                 runs=int(len(errors)), failed_runs=int(failed.sum()))
+    if spec.alpha is not None:
+        attrs["alpha"] = spec.alpha
+    if not isinstance(spec.scenario, str):
+        attrs["path_waypoints"] = spec.scenario.describe()
+    return stamp(xr.Dataset(data, coords=coords), spec.base, **attrs)
+
+
+register_schema(SWEEP_CONTENT, {"failed": None, "error": None})

@@ -1,0 +1,195 @@
+"""``sweep``: the same numbers serially and on a dask cluster, resumable stores, recorded failures, bad grids;
+the quantities against the closed forms; the dimensionless groups."""
+
+import math
+import os
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import mdr_events as me
+from mdr_events.analysis.sweep import CLOSED_FORM_QUANTITIES, QUANTITIES, sweep
+from mdr_events.theory.analytic import d_crit, dimensionless_groups
+
+distributed = pytest.importorskip("distributed")
+
+GRID = {"tau0": [30e3, 42e3, 55e3], "alpha": [10.0, 20.0, 40.0, 70.0]}
+
+
+@pytest.fixture(scope="module")
+def serial(paper):
+    return sweep(GRID, "A", base=paper, scheduler="serial", chunk_size=5)
+
+
+@pytest.fixture(scope="module")
+def cluster():
+    """A 2-worker LocalCluster on loopback (processes, one thread each), shared by the tests that need one."""
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                  dashboard_address=None) as local:
+        yield local
+
+
+def test_the_grid_is_an_outer_product_with_labelled_dimensions(paper, serial):
+    assert dict(serial.sizes) == {"tau0": 3, "alpha": 4}
+    assert serial["tau0"].values.tolist() == GRID["tau0"] and serial["alpha"].attrs["units"] == "degree"
+    assert set(QUANTITIES) <= set(serial.data_vars) and int(serial["failed"].sum()) == 0
+    for name in QUANTITIES:
+        assert serial[name].attrs["units"] == QUANTITIES[name][0]
+    # each cell is the run at its coordinates: one recomputed alone
+    alone = sweep({"alpha": [20.0]}, "A", base=paper.replace(tau0=55e3), scheduler="serial")
+    for name in QUANTITIES:
+        np.testing.assert_array_equal(alone[name].values[0], serial[name].sel(tau0=55e3, alpha=20.0).values)
+
+
+def test_slip_onset_and_the_critical_angle_agree_with_the_closed_forms(paper, serial):
+    """Below α_c (18) the springs slide while indenting, at d_crit (18); above it they do not."""
+    for tau0 in GRID["tau0"]:
+        params = paper.replace(tau0=tau0)
+        critical = float(serial["critical_angle_A"].sel(tau0=tau0, alpha=10.0))
+        for alpha in GRID["alpha"]:
+            depth = float(serial["slip_onset_in_depth"].sel(tau0=tau0, alpha=alpha))
+            if alpha < critical:
+                assert depth == pytest.approx(float(d_crit(alpha, params, "A", adhesion=True)), rel=1e-9)
+            else:
+                assert math.isnan(depth)
+
+
+def test_a_local_cluster_gives_the_serial_numbers_bit_for_bit(paper, serial, cluster):
+    on_cluster = sweep(GRID, "A", base=paper, scheduler=cluster.scheduler_address, chunk_size=5)
+    xr.testing.assert_identical(on_cluster, serial)
+
+
+def test_a_worker_killed_mid_sweep_does_not_change_the_result(paper, serial, cluster):
+    killed = []
+
+    def kill_one_worker(done, total):
+        if not killed:
+            with distributed.Client(cluster.scheduler_address) as client:
+                victim = sorted(client.scheduler_info()["workers"])[0]
+                killed.append(victim)
+                try:
+                    client.run(os._exit, 1, workers=[victim])
+                except Exception:  # noqa: BLE001 - the worker dies while answering
+                    pass
+
+    result = sweep(GRID, "A", base=paper, scheduler=cluster.scheduler_address, chunk_size=1,
+                   progress=kill_one_worker)
+    assert killed
+    xr.testing.assert_identical(result, serial)
+    with distributed.Client(cluster.scheduler_address) as client:
+        client.wait_for_workers(2, timeout=60)  # the nanny has restarted it
+
+
+def test_an_interrupted_sweep_resumes_and_ends_as_an_uninterrupted_one(paper, serial, tmp_path):
+    class Interrupted(Exception):
+        pass
+
+    def stop_after_two_chunks(done, total):
+        if done >= 10:
+            raise Interrupted
+
+    store = tmp_path / "sweep.zarr"
+    with pytest.raises(Interrupted):
+        sweep(GRID, "A", base=paper, scheduler="serial", chunk_size=5, store=store, progress=stop_after_two_chunks)
+    assert int(xr.open_zarr(store, zarr_format=2)["done"].sum()) == 10
+    seen = []
+    resumed = sweep(GRID, "A", base=paper, scheduler="serial", chunk_size=5, store=store,
+                    progress=lambda done, total: seen.append(done))
+    assert seen == [12]  # only the third chunk (2 runs) was run again
+    xr.testing.assert_identical(resumed, serial)
+    whole = tmp_path / "whole.zarr"
+    sweep(GRID, "A", base=paper, scheduler="serial", chunk_size=5, store=whole)
+    xr.testing.assert_identical(xr.open_zarr(store, zarr_format=2).load(), xr.open_zarr(whole, zarr_format=2).load())
+
+
+def test_a_store_of_another_sweep_is_not_resumed(paper, tmp_path):
+    store = tmp_path / "sweep.zarr"
+    sweep({"alpha": [20.0]}, "A", base=paper, scheduler="serial", store=store, quantities=CLOSED_FORM_QUANTITIES)
+    with pytest.raises(ValueError, match="holds another sweep"):
+        sweep({"alpha": [30.0]}, "A", base=paper, scheduler="serial", store=store, quantities=CLOSED_FORM_QUANTITIES)
+    fresh = sweep({"alpha": [30.0]}, "A", base=paper, scheduler="serial", store=store, resume=False,
+                  quantities=CLOSED_FORM_QUANTITIES)
+    assert int(fresh["failed"].sum()) == 0
+
+
+def test_a_run_that_raises_is_recorded_and_the_sweep_goes_on(paper):
+    """E = 1e-300 Pa puts the jump-off absurdly deep: the scenario refuses that run; the other runs."""
+    result = sweep({"E": [1e-300, paper.E]}, "A", 20.0, base=paper, scheduler="serial")
+    assert result["failed"].values.tolist() == [1, 0]
+    assert "jump-off" in str(result["error"].values[0]) and str(result["error"].values[1]) == ""
+    assert math.isnan(float(result["tangential_force_max"][0])) and float(result["tangential_force_max"][1]) > 0
+    assert result.attrs["failed_runs"] == 1
+
+
+def test_a_table_of_parameter_sets_runs_along_set(paper):
+    table = [{"tau0": 30e3, "dgamma1": 0.1}, {"tau0": 42e3, "dgamma1": 0.15}]
+    result = sweep(table, "B", 60.0, base=paper, scheduler="serial", quantities=("pull_off_force",))
+    assert dict(result.sizes) == {"set": 2} and result["dgamma1"].values.tolist() == [0.1, 0.15]
+    # the pull-off force of a displacement-controlled JKR contact lies between 0 and the force-controlled one
+    for row, params in zip(result["pull_off_force"].values, table):
+        assert -1.5 * math.pi * params["dgamma1"] * paper.R < row < 0
+
+
+def test_the_discrete_method_converges_to_the_continuum_quantities(paper):
+    continuum = sweep({"alpha": [20.0]}, "A", base=paper, scheduler="serial", quantities=("tangential_force_max",))
+    discrete = sweep({"dx": [4e-6, 2e-6]}, "A", 20.0, base=paper, method="discrete", scheduler="serial",
+                     quantities=("tangential_force_max",))
+    exact = float(continuum["tangential_force_max"][0])
+    errors = np.abs(discrete["tangential_force_max"].values - exact) / exact
+    assert errors[1] < errors[0] < 1e-2  # first order: halving Δx about halves the error
+
+
+@pytest.mark.parametrize("grid, message", [
+    ({"mu": [1.0]}, "grid: 'mu' is not allowed"),
+    ({}, "grid={} is not allowed"),
+    ({"tau0": []}, "allowed: a non-empty list of finite numbers"),
+    ({"tau0": [1e3, float("nan")]}, "allowed: a non-empty list of finite numbers"),
+    ({"nu": [0.3, 0.7]}, "Parameters.nu=0.7 is not allowed"),
+    ({"alpha": [20.0, 95.0]}, "grid['alpha'] holds 95.0"),
+    ({"tau0": [1e3, 1e3]}, "repeats a value"),
+    ({"dx": [1e-6]}, "'dx' is not allowed with method='continuum'"),
+    ([{"tau0": 1.0}, {"E": 1.0}], "allowed: the names of grid[0]"),
+])
+def test_bad_grids_are_named_before_anything_runs(paper, grid, message):
+    with pytest.raises(ValueError, match=message.replace("[", r"\[").replace("]", r"\]").replace("(", r"\(")
+                       .replace(")", r"\)").replace("{", r"\{").replace("}", r"\}")):
+        sweep(grid, "A", 20.0 if "alpha" not in grid else None, base=paper, scheduler="serial")
+
+
+def test_other_bad_arguments_are_named(paper):
+    with pytest.raises(ValueError, match="scenario='A' needs an angle"):
+        sweep({"tau0": [1e3]}, "A", base=paper, scheduler="serial")
+    with pytest.raises(ValueError, match="scheduler='nowhere' is not allowed"):
+        sweep({"tau0": [1e3]}, "A", 20.0, base=paper, scheduler="nowhere")
+    with pytest.raises(ValueError, match="quantities"):
+        sweep({"tau0": [1e3]}, "A", 20.0, base=paper, scheduler="serial", quantities=("pressure",))
+
+
+def test_two_parameter_sets_with_the_same_groups_give_the_same_dimensionless_results(paper):
+    """Depths over d_max, angles and F_x,max/(π a_max² τ0) depend on (S, Γ0, Γ1) and α alone: another elastomer
+    (ν = 0.3, twice E*), a 4× larger indenter and depth, and works of adhesion and τ0 chosen to keep the groups."""
+    other = paper.replace(R=4 * paper.R, d_max=4 * paper.d_max, nu=0.3, E=2 * paper.E_star * (1 - 0.3**2),
+                          dgamma0=8 * paper.dgamma0, dgamma1=8 * paper.dgamma1)
+    other = other.replace(tau0=paper.tau0 * other.G_star / paper.G_star)
+    assert np.allclose(dimensionless_groups(other), dimensionless_groups(paper), rtol=1e-14)
+    results = [sweep({"alpha": [10.0, 20.0, 30.0]}, "A", base=params, scheduler="serial") for params in (paper, other)]
+    for result, params in zip(results, (paper, other)):
+        result["reduced_force"] = result["tangential_force_max"] / (result["contact_area_max"] * params.tau0)
+        result["reduced_depth"] = result["slip_onset_in_depth"] / params.d_max
+    for name in ("reduced_force", "reduced_depth", "critical_angle_A", "critical_angle_B"):
+        np.testing.assert_allclose(results[1][name].values, results[0][name].values, rtol=1e-9, equal_nan=True)
+    # and the groups matter: another slip parameter moves the critical angle
+    assert me.critical_angle(paper.replace(tau0=2 * paper.tau0), "A") < me.critical_angle(paper, "A") - 1.0
+
+
+def test_closed_form_quantities_alone_run_no_model(paper):
+    """A map of critical angles over 400 parameter sets runs the closed forms only."""
+    result = sweep({"tau0": np.linspace(1e4, 1e5, 20), "dgamma0": np.linspace(0.0, 0.05, 20)}, "A", 20.0,
+                   base=paper, scheduler="serial", quantities=CLOSED_FORM_QUANTITIES)
+    assert set(result.data_vars) == {*CLOSED_FORM_QUANTITIES, "failed", "error"}
+    # more friction: the springs hold a larger shift, the path must be flatter to make them slide (tan α_c = d_max/ū)
+    assert np.all(np.diff(result["critical_angle_A"].values, axis=0) < 0)
+    tau0 = result["tau0"].values
+    expected = [me.critical_angle(paper.replace(tau0=value, dgamma0=0.05), "A") for value in tau0]
+    np.testing.assert_array_equal(result["critical_angle_A"].sel(dgamma0=0.05).values, expected)
