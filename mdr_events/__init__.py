@@ -12,7 +12,7 @@ below; ``tests/test_layers.py`` checks it): ``parameters`` and ``validation``
 in and out) → ``theory`` (``symbolic`` SymPy derivations, ``analytic`` closed
 forms, ``phase`` diagrams) → ``models`` (``paths``, ``discrete`` springs,
 ``continuum`` event-driven and exact, ``simulate``) → ``analysis``
-(``crosscheck``, ``convergence``, ``validate``, ``fit``) → ``plotting`` → ``app`` (``cli``,
+(``crosscheck``, ``convergence``, ``validate``, ``fit``, ``sweep``) → ``plotting`` → ``app`` (``cli``,
 ``study``, ``report``, ``result_files``).
 """
 
@@ -44,6 +44,7 @@ from mdr_events.analysis.crosscheck import cross_check
 from mdr_events.analysis.validate import validate
 from mdr_events.analysis.convergence_study import convergence_study
 from mdr_events.analysis.fit import FitResult, fit
+from mdr_events.analysis.sweep import sweep
 from mdr_events import plotting  # registers the figures of the result objects (FitResult.plot)
 from mdr_events.app.study import load_study, run_study
 
@@ -76,6 +77,7 @@ __all__ = [
     "pull_off_force",
     "run_study",
     "simulate",
+    "sweep",
     "symbolic",
     "write_netcdf",
 ]

@@ -1,4 +1,4 @@
-"""Command line: ``mdr-events derive | phase-diagram | simulate | validate | fit | run | reproduce``.
+"""Command line: ``mdr-events derive | phase-diagram | simulate | validate | fit | sweep | run | reproduce``.
 
 Every error prints one line ``mdr-events: error: ...`` on stderr (no traceback; ``mdr-events --debug ...``
 re-raises it with its traceback). The exit status (:data:`EXIT_STATUSES`):
@@ -37,7 +37,7 @@ from mdr_events.app.report import reproduce
 from mdr_events.app.result_files import write_phase_diagram, write_simulation
 from mdr_events.analysis.fit import FREE_NAMES, fit
 from mdr_events.analysis.validate import TIME_ORIGINS, validate
-from mdr_events.app.study import load_parameters_file, load_path_file, load_study, run_study
+from mdr_events.app.study import load_parameters_file, load_path_file, load_study, run_study, run_sweep
 from mdr_events.io.candidates import CANDIDATE_QUANTITIES
 from mdr_events.io.files import check_output_stem, prepare_output_directory
 from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES, scenario_paths, simulate
@@ -440,6 +440,16 @@ def _command_fit(args: argparse.Namespace) -> int:
     return 0 if result.identifiable else 1
 
 
+def _command_sweep(args: argparse.Namespace) -> int:
+    if args.workers is not None and args.workers < 1:
+        raise UsageError(f"--workers {args.workers} is not allowed; allowed: an integer >= 1")
+    outcomes = run_sweep(load_study(args.study), progress=_progress, scheduler=args.scheduler,
+                         workers=args.workers, resume=args.resume)
+    for outcome in outcomes:
+        print(outcome.path)
+    return 0
+
+
 def _command_reproduce(args: argparse.Namespace) -> None:
     out = prepare_output_directory(args.out, "--out")
     reproduce(out, progress=_progress, keep_agreeing=not args.rewrite)
@@ -516,6 +526,21 @@ def build_parser() -> argparse.ArgumentParser:
     fitting.add_argument("--bounds", nargs="+", default=None, metavar="NAME=LOW:HIGH",
                          help="bounds of free parameters in SI units, e.g. tau0=1e3:1e6 (default: physical ranges)")
     fitting.set_defaults(run=_command_fit)
+
+    sweeping = commands.add_parser(
+        "sweep", help="run the [sweep] table of a study file on dask (a local cluster, or --scheduler ADDRESS)",
+        description="Run a parameter sweep described by the [sweep] table of a study file (mdr_events.sweep): "
+                    "<name>_sweep.zarr is written chunk by chunk (--resume continues an interrupted one) and "
+                    "<name>_sweep.nc holds the labelled result.")
+    sweeping.add_argument("study", help="the study file, e.g. study.toml")
+    sweeping.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                          help="'local' (a LocalCluster on this machine, the default), 'serial', or a running dask "
+                               "scheduler's address such as tcp://host:8786")
+    sweeping.add_argument("--workers", type=int, default=None, metavar="N",
+                          help="worker processes of the local cluster (default: the machine's cores)")
+    sweeping.add_argument("--resume", action="store_true",
+                          help="continue the store of an interrupted sweep (its done chunks are not run again)")
+    sweeping.set_defaults(run=_command_sweep)
 
     run = commands.add_parser("run", help="run a study described in a TOML file (see mdr_events.app.study)")
     run.add_argument("study", help="the study file, e.g. study.toml")

@@ -38,6 +38,11 @@ A study names its parameters, what to compute and where to write it::
     scenario = "A"               # the path: as in [validate]
     alpha = 20
 
+    [sweep]                      # optional: a parameter sweep (mdr_events.sweep; mdr-events sweep)
+    grid = { tau0 = [30e3, 42e3], alpha = [10, 20, 30] }   # the outer product; or sets = [{...}, ...]
+    scenario = "A"               # or the study's [path]; alpha here if the grid does not sweep it
+    method = "continuum"         # quantities, chunk_size, dx, n_steps, scheduler, workers optional
+
     [output]                     # required
     directory = "out"            # relative to the study file; checked before anything is computed
     name = "my_study"            # file stem (default: the study file's stem); a plain name: no / or \\
@@ -77,6 +82,7 @@ from pathlib import Path as FilePath
 from typing import TYPE_CHECKING, Any, Callable, Iterable
 
 from mdr_events.analysis.fit import fit
+from mdr_events.analysis.sweep import sweep
 from mdr_events.analysis.validate import validate
 from mdr_events.io.files import check_file_path, check_output_stem, prepare_output_directory
 from mdr_events.models.continuum import Tolerances
@@ -89,7 +95,7 @@ if TYPE_CHECKING:
     from mdr_events.app.result_files import FileOutcome
     from mdr_events.app.validation_files import RenderedReport
 
-__all__ = ["Study", "StudyOutcomes", "load_study", "run_study", "StudyError", "load_parameters_file",
+__all__ = ["Study", "StudyOutcomes", "load_study", "run_study", "run_sweep", "StudyError", "load_parameters_file",
            "load_path_file"]
 
 
@@ -121,6 +127,12 @@ _KINDS: dict[str, tuple[Callable[[Any], bool], str]] = {
     "bounds table": (lambda v: isinstance(v, dict) and all(isinstance(p, list) and len(p) == 2
                                                             and all(map(_is_number, p)) for p in v.values()),
                      "a table of [lower, upper] pairs, e.g. { tau0 = [1e3, 1e6] }"),
+    "grid table": (lambda v: isinstance(v, dict) and len(v) > 0 and all(
+        _is_number(p) or (isinstance(p, list) and len(p) > 0 and all(map(_is_number, p))) for p in v.values()),
+                   "a table of names to lists of numbers, e.g. { tau0 = [30e3, 42e3], alpha = [10, 20] }"),
+    "tables": (lambda v: isinstance(v, list) and len(v) > 0 and all(
+        isinstance(row, dict) and all(map(_is_number, row.values())) for row in v),
+               "a list of tables of numbers (parameter sets), e.g. [{ tau0 = 30e3 }, { tau0 = 42e3 }]"),
 }
 
 #: Table -> key -> (kind, required).
@@ -138,6 +150,10 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
             "units": ("string table", False), "time_origin": ("string or number", False),
             "noise": ("number table", False), "bounds": ("bounds table", False), "scenario": ("string", False),
             "alpha": ("numbers", False)},
+    "sweep": {"grid": ("grid table", False), "sets": ("tables", False), "scenario": ("string", False),
+              "alpha": ("number", False), "method": ("string", False), "dx": ("number", False),
+              "n_steps": ("integer", False), "quantities": ("strings", False), "chunk_size": ("integer", False),
+              "scheduler": ("string", False), "workers": ("integer", False)},
     "output": {"directory": ("string", True), "name": ("string", False)},
 }
 REQUIRED_TABLES = ("output",)
@@ -188,12 +204,15 @@ def _check_tables(document: dict[str, Any], where: str) -> None:
     for table in REQUIRED_TABLES:
         if table not in document:
             raise StudyError(f"{where}: the required table [{table}] is missing")
-    if not {"simulation", "phase_diagram", "validate", "fit"} & set(document):
+    if not {"simulation", "phase_diagram", "validate", "fit", "sweep"} & set(document):
         raise StudyError(f"{where}: nothing to compute; give a [simulation] table, a [phase_diagram] table, "
-                         "a [validate] table, a [fit] table or several")
-    if "path" in document and not {"simulation", "validate", "fit"} & set(document):
-        raise StudyError(f"{where}: a [path] needs a [simulation] table (method, dx, ...), a [validate] table or a "
-                         "[fit] table")
+                         "a [validate] table, a [fit] table, a [sweep] table or several")
+    if "path" in document and not {"simulation", "validate", "fit", "sweep"} & set(document):
+        raise StudyError(f"{where}: a [path] needs a [simulation] table (method, dx, ...), a [validate] table, a "
+                         "[fit] table or a [sweep] table")
+    if "sweep" in document and ("grid" in document["sweep"]) == ("sets" in document["sweep"]):
+        raise StudyError(f"{where}: [sweep] needs one of grid (names to values: the outer product) and sets "
+                         "(a list of parameter sets)")
     simulation = document.get("simulation", {})
     if "path" in document and ("scenario" in simulation or "alpha" in simulation):
         raise StudyError(f"{where}: [simulation] scenario and alpha are not allowed with a [path] "
@@ -415,6 +434,49 @@ def _fit_report(study: Study, progress: Callable[[str], None]) -> tuple[str, Ren
     return f"fit {table['data']}", render_fit(result.dataset, stem)
 
 
+#: The engine of a study's ``[sweep]`` unless the table or the command line says otherwise.
+DEFAULT_SCHEDULER = "local"
+
+
+def run_sweep(study: Study, progress: Callable[[str], None] = print, scheduler: str | None = None,
+              workers: int | None = None, resume: bool = False) -> list[FileOutcome]:
+    """Run the study's ``[sweep]`` table and write ``<name>_sweep.zarr`` (the store, chunk by chunk; with
+    ``resume`` an interrupted one is continued) and ``<name>_sweep.nc`` (the labelled result).
+
+    ``scheduler`` and ``workers`` override the table's (``mdr-events sweep --scheduler/--workers``).
+    """
+    from mdr_events.app.result_files import FileOutcome, FileStatus
+    from mdr_events.io.files import write_netcdf
+
+    table = study.tables.get("sweep")
+    where = os.fspath(study.source)
+    if table is None:
+        raise StudyError(f"{where}: no [sweep] table; tables found: {', '.join(f'[{t}]' for t in study.tables)}")
+    out = prepare_output_directory(study.output_directory, "[output] directory")
+    grid = table.get("grid") or table["sets"]
+    if isinstance(grid, dict):
+        grid = {name: value if isinstance(value, list) else [value] for name, value in grid.items()}
+    scenario = _study_path(study) if "path" in study.tables else table.get("scenario", "A")
+    options = {key: table[key] for key in ("method", "dx", "n_steps", "chunk_size") if key in table}
+    if "quantities" in table:
+        options["quantities"] = tuple(table["quantities"])
+    store = out / f"{study.name}_sweep.zarr"
+
+    def report(done: int, total: int) -> None:
+        progress(f"sweep: {done}/{total} runs")
+
+    try:
+        result = sweep(grid, scenario, table.get("alpha"), base=study.params, store=store, resume=resume,
+                       scheduler=scheduler or table.get("scheduler", DEFAULT_SCHEDULER),
+                       workers=workers or table.get("workers"), progress=report, **options)
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{where}: [sweep] {error}") from None
+    result.attrs.update(study.provenance)
+    progress(f"sweep: {result.attrs['runs']} runs, {result.attrs['failed_runs']} failed")
+    return [FileOutcome(store, FileStatus.WRITTEN),
+            FileOutcome(write_netcdf(result, out / f"{study.name}_sweep.nc"), FileStatus.WRITTEN)]
+
+
 def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOutcomes:
     """Compute what the study asks for and write it (netCDF + PNG, event log CSV; the ``[validate]`` runs'
     reports as .nc, .md and .png); returns the files and the runs' verdicts (:class:`StudyOutcomes`).
@@ -479,6 +541,8 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
         written += write_rendered(rendered, out)
         written.verdicts[run] = str(rendered.report.attrs["verdict"])
         progress(f"validate: {run}: {written.verdicts[run]}")
+    if "sweep" in study.tables:
+        written += run_sweep(study, progress)
     if fitted is not None:
         label, rendered = fitted
         written += write_rendered(rendered, out)

@@ -322,7 +322,7 @@ def test_an_unknown_option_is_a_one_line_usage_error(console):
     (("phase-diagram", "--bogus", "--scenario", "A", "--out", "never"),
      "unrecognized argument(s) --bogus; allowed: the options listed by mdr-events phase-diagram --help"),
     (("--bogus", "derive"), "unrecognized argument(s) --bogus; allowed: the options listed by mdr-events derive"),
-    ((), "a command is required; allowed: derive, phase-diagram, simulate, validate, fit, run, reproduce"),
+    ((), "a command is required; allowed: derive, phase-diagram, simulate, validate, fit, sweep, run, reproduce"),
 ])
 def test_unknown_options_and_a_missing_command_name_what_is_allowed(tmp_path, monkeypatch, capsys, argv, fragment):
     monkeypatch.chdir(tmp_path)

@@ -1,0 +1,101 @@
+"""``mdr-events sweep study.toml`` and the ``[sweep]`` table: files, resume, engine options, bad tables."""
+
+import subprocess
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import mdr_events as me
+from mdr_events.app.cli import main
+from mdr_events.app.study import StudyError, load_study, run_study
+
+from test_validate_cli import assert_one_error_line, console_script
+
+pytest.importorskip("distributed")
+
+STUDY = """
+[parameters]
+preset = "paper-R30"
+[sweep]
+grid = { tau0 = [30e3, 42e3], alpha = [10, 20, 30] }
+scenario = "A"
+chunk_size = 2
+{extra}
+[output]
+directory = "out"
+"""
+
+
+def write_study(folder, extra=""):
+    path = folder / "study.toml"
+    path.write_text(STUDY.replace("{extra}", extra))
+    return path
+
+
+def test_console_script_sweeps_on_a_local_cluster_and_writes_store_and_netcdf(paper, tmp_path):
+    study = write_study(tmp_path)
+    result = subprocess.run([*console_script(), "sweep", str(study), "--workers", "2"], capture_output=True, text=True,
+                            cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert "sweep: 6/6 runs" in result.stderr and "sweep: 6 runs, 0 failed" in result.stderr
+    swept = me.open_result(tmp_path / "out" / "study_sweep.nc")
+    assert dict(swept.sizes) == {"tau0": 2, "alpha": 3} and swept.attrs["parameters_preset"] == "paper-R30"
+    serial = me.sweep({"tau0": [30e3, 42e3], "alpha": [10.0, 20.0, 30.0]}, "A", base=paper, scheduler="serial")
+    for name in ("tangential_force_max", "slip_onset_in_depth", "pull_off_force"):
+        np.testing.assert_array_equal(swept[name].values, serial[name].values)
+    store = xr.open_zarr(tmp_path / "out" / "study_sweep.zarr", zarr_format=2)
+    assert int(store["done"].sum()) == 6
+
+
+def test_resume_runs_nothing_again_for_a_finished_store(capsys, tmp_path):
+    study = write_study(tmp_path)
+    assert main(["sweep", str(study), "--scheduler", "serial"]) == 0
+    first = me.open_result(tmp_path / "out" / "study_sweep.nc")
+    capsys.readouterr()
+    assert main(["sweep", str(study), "--scheduler", "serial", "--resume"]) == 0
+    out, err = capsys.readouterr()
+    assert "/6 runs" not in err and "sweep: 6 runs, 0 failed" in err
+    xr.testing.assert_identical(me.open_result(tmp_path / "out" / "study_sweep.nc"), first)
+
+
+def test_a_study_run_also_sweeps(tmp_path):
+    study = write_study(tmp_path, 'scheduler = "serial"\nquantities = ["critical_angle_A"]')
+    outcomes = run_study(load_study(study), progress=lambda message: None)
+    assert sorted(o.path.name for o in outcomes) == ["study_sweep.nc", "study_sweep.zarr"]
+    swept = me.open_result(tmp_path / "out" / "study_sweep.nc")
+    assert set(swept.data_vars) == {"critical_angle_A", "failed", "error"}
+
+
+@pytest.mark.parametrize("argv, fragment", [
+    (["--workers", "0"], "--workers 0 is not allowed"),
+    (["--scheduler", "bogus"], "scheduler='bogus' is not allowed"),
+])
+def test_bad_engine_options_are_one_line_exit_2(capsys, tmp_path, argv, fragment):
+    study = write_study(tmp_path)
+    assert main(["sweep", str(study), *argv]) == 2
+    assert_one_error_line(capsys.readouterr().err, fragment)
+    assert not (tmp_path / "out" / "study_sweep.nc").exists()
+
+
+@pytest.mark.parametrize("table, fragment", [
+    ('[sweep]\nscenario = "A"\n', "[sweep] needs one of grid"),
+    ('[sweep]\ngrid = { tau0 = [1e3] }\nsets = [{ tau0 = 1e3 }]\n', "[sweep] needs one of grid"),
+    ('[sweep]\ngrid = { tau0 = "x" }\n', "[sweep] grid = {'tau0': 'x'} is not allowed"),
+    ('[sweep]\ngrid = { tau0 = [1e3] }\nworkers = "2"\n', "[sweep] workers = '2' is not allowed"),
+])
+def test_bad_sweep_tables_are_named(tmp_path, table, fragment):
+    study = tmp_path / "study.toml"
+    study.write_text(table + '[output]\ndirectory = "out"\n')
+    with pytest.raises(StudyError, match=fragment.replace("[", r"\[").replace("]", r"\]").replace("{", r"\{")
+                       .replace("}", r"\}")):
+        load_study(study)
+
+
+def test_a_bad_grid_value_is_named_before_anything_runs(capsys, tmp_path):
+    study = tmp_path / "study.toml"
+    study.write_text('[sweep]\ngrid = { nu = [0.3, 0.7] }\nalpha = 20\nscheduler = "serial"\n'
+                     '[output]\ndirectory = "out"\n')
+    assert main(["sweep", str(study)]) == 2
+    assert_one_error_line(capsys.readouterr().err, "[sweep] grid: Parameters.nu=0.7 is not allowed")
+    assert not (tmp_path / "out" / "study_sweep.zarr").exists()
