@@ -18,6 +18,7 @@ rules of :mod:`mdr_events.analysis.validate` (first sample sliding, first sample
 from __future__ import annotations
 
 import dataclasses
+import importlib.util
 import json
 import math
 import os
@@ -38,7 +39,7 @@ from mdr_events.validation import check_choice, check_count, shown
 
 __all__ = ["sweep", "run_chunk", "SweepSpec", "QUANTITIES", "CLOSED_FORM_QUANTITIES", "SWEEP_CONTENT", "SWEPT_NAMES",
            "TABLE_DIMENSION",
-           "ChunkResult"]
+           "ChunkResult", "default_scheduler"]
 
 #: The ``content`` attribute of a sweep's dataset.
 SWEEP_CONTENT = "parameter sweep"
@@ -328,6 +329,11 @@ def _chunks(runs: int, size: int) -> list[tuple[int, int]]:
     return [(start, min(start + size, runs)) for start in range(0, runs, size)]
 
 
+def default_scheduler() -> str:
+    """``"local"`` where ``dask.distributed`` is installed (the extra ``mdr_events[scale]``), else ``"serial"``."""
+    return "local" if importlib.util.find_spec("distributed") is not None else "serial"
+
+
 def _client(scheduler, workers: int | None):
     """A ``distributed.Client``: on a new ``LocalCluster`` (``"local"``; loopback only, one thread per worker
     process) or on the cluster at ``scheduler`` (an address). Returns the client and what to close."""
@@ -345,7 +351,7 @@ def _client(scheduler, workers: int | None):
 
 def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, method: str = "continuum",
           dx: float | None = None, n_steps: int | None = None, tolerances: Tolerances = Tolerances(),
-          quantities: Sequence[str] | None = None, scheduler: str = "local", workers: int | None = None,
+          quantities: Sequence[str] | None = None, scheduler: str | None = None, workers: int | None = None,
           chunk_size: int = DEFAULT_CHUNK,
           store: str | os.PathLike | None = None, resume: bool = True,
           progress: Callable[[int, int], None] | None = None) -> xr.Dataset:
@@ -370,10 +376,10 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     quantities : sequence of str, optional
         Which of :data:`QUANTITIES` (default all); only closed-form ones (:data:`CLOSED_FORM_QUANTITIES`) run no
         model.
-    scheduler : "local", "serial" or str
+    scheduler : "local", "serial" or str, optional
         ``"local"``: a ``dask.distributed.LocalCluster`` of ``workers`` processes (default: the machine's cores),
         on loopback; ``"serial"``: here, one chunk after another; else the address of a running dask scheduler
-        (``"tcp://host:8786"``). Every choice gives the same numbers.
+        (``"tcp://host:8786"``). Every choice gives the same numbers. Default: :func:`default_scheduler`.
     chunk_size : int
         Runs per task (and per Zarr chunk of the store).
     store : path, optional
@@ -418,6 +424,7 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     spec = SweepSpec(base, scenario, None if alpha is None else float(alpha), method, the_grid.names, tolerances,
                      dx, n_steps, wanted)
     _check_runs(spec, the_grid)
+    scheduler = default_scheduler() if scheduler is None else scheduler
     if scheduler not in ("local", "serial") and not (isinstance(scheduler, str) and "://" in scheduler):
         raise ValueError(f"scheduler={shown(scheduler)} is not allowed; allowed: 'local', 'serial' or a dask "
                          "scheduler's address such as 'tcp://host:8786'")

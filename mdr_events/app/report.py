@@ -39,6 +39,8 @@ from mdr_events.io.datasets import DOI, RESULT_RTOL
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 from mdr_events.plotting.figures import plot_fretting
 from mdr_events.plotting.fit import plot_fit
+from mdr_events.plotting.universal import plot_universal_map
+from mdr_events.theory.analytic import critical_angle, dimensionless_groups
 
 __all__ = ["reproduce", "report_text", "compute", "Reproduction", "PAPER_CRITICAL_ANGLES", "RADII", "FIGURE_NUMBERS",
            "software_versions", "recorded_versions", "RECORDED_PACKAGES", "fretting_section", "relative_difference_text",
@@ -53,6 +55,8 @@ RECORDED_PACKAGES = ("numpy", "scipy", "sympy", "matplotlib", "xarray", "pandas"
 FRETTING_STEM = f"fretting_{FRETTING_RADIUS}"
 #: The stem of the fit demonstration's files in ``results/``.
 FIT_STEM = f"fit_A{FIT_DEMO_ANGLE:g}_R30"
+#: The stem of the universal map's files in ``results/``.
+UNIVERSAL_STEM = "universal_map"
 #: Progress steps of :func:`reproduce` after :func:`compute`: Fig. 8 and 10; the fretting study, the fit and README.md.
 WRITE_STEPS = 2
 
@@ -366,6 +370,27 @@ def fit_section(demo: FitDemonstration) -> list[str]:
     return lines
 
 
+def universal_section(dataset) -> list[str]:
+    """The report's section on the universal map: the groups, and the paper's sets on it."""
+    lines = ["", "## The universal map", "",
+             "Measured in `d_max` (depths, tangential travel) and `√(R d_max)` (radii), the model has three "
+             "parameters: the slip parameter `S = π τ0 √R / (2 G* √d_max)` and the adhesion parameters "
+             "`Γ = 2π Δγ √R / (E* d_max^(3/2))` of the two works of adhesion (`mdr_events.analytic."
+             "dimensionless_groups`). Every angle, every depth over `d_max` and `F_x/(π a² τ0)` depend on "
+             "them (and the path's angle) alone; a test checks it with two parameter sets of equal groups. "
+             "`universal_map.{nc,png}`: the critical angle of scenario A over (S, Γ0) and the angle of scenario B "
+             f"above which the contact comes apart before sliding over (S, Γ1) at Γ0 = "
+             f"{dataset.attrs['adhesion_in_of_B']:.4g}, {dataset.sizes['slip']} × {dataset.sizes['adhesion_in']} "
+             "values each, swept with `mdr_events.sweep`.", "",
+             "| set | S | Γ0 | Γ1 | α_c, scenario A | angle, scenario B |", "|---|---:|---:|---:|---:|---:|"]
+    for label, radius in RADII.items():
+        params = Parameters.paper(R=radius)
+        groups = dimensionless_groups(params)
+        lines.append(f"| paper, {label} | {groups.slip:.4g} | {groups.adhesion_in:.4g} | {groups.adhesion_out:.4g} | "
+                     f"{critical_angle(params, 'A'):.2f}° | {critical_angle(params, 'B'):.2f}° |")
+    return lines + [""]
+
+
 def _parameter_section() -> list[str]:
     params = Parameters.paper()
     lines = [
@@ -393,6 +418,7 @@ def _parameter_section() -> list[str]:
         f"  in `{FRETTING_STEM}_events.csv` and the discrete model in `{FRETTING_STEM}_discrete.nc`.",
         f"- `{FIT_STEM}.{{nc,png}}`: the fit demonstration (estimates, intervals, correlations, residuals), its",
         f"  synthetic measurement in `{FIT_STEM}_measured.nc`.",
+        f"- `{UNIVERSAL_STEM}.{{nc,png}}`: the critical angles over the dimensionless groups, the paper's sets marked.",
         "",
     ]
     return lines
@@ -451,6 +477,8 @@ def report_text(data: Reproduction | None = None, versions: dict[str, str] | Non
         lines += fretting_section(data.fretting)
     if data.fitting is not None:
         lines += fit_section(data.fitting)
+    if data.universal is not None:
+        lines += universal_section(data.universal)
     lines += _parameter_section()
     lines += _software_section(software_versions() if versions is None else versions)
     return "\n".join(lines)
@@ -487,13 +515,15 @@ def reproduce(out: Path, progress: Callable[[str], None] = print, keep_agreeing:
         stem = f"fig{FIGURE_NUMBERS[scenario]}_{label}"
         overlay, outcome = write_dataset(data.discrete[(label, scenario)], out / f"{stem}_discrete.nc", keep_agreeing)
         done([outcome] + write_simulation(dataset, out, stem, overlay=overlay, keep_agreeing=keep_agreeing))
-    step("writing the fretting study (.nc, .png, events .csv), the fit (.nc, .png) and README.md")
+    step("writing the fretting study (.nc, .png, events .csv), the fit, the universal map and README.md")
     overlay, outcome = write_dataset(data.fretting.discrete, out / f"{FRETTING_STEM}_discrete.nc", keep_agreeing)
     done([outcome] + write_simulation(data.fretting.continuum, out, FRETTING_STEM, overlay=overlay,
                                       keep_agreeing=keep_agreeing, plot=plot_fretting))
     measured = write_dataset(data.fitting.measured, out / f"{FIT_STEM}_measured.nc", keep_agreeing)[1]
     fitted, outcome = write_dataset(data.fitting.result.dataset, out / f"{FIT_STEM}.nc", keep_agreeing)
     done([measured, outcome, write_figure(plot_fit(fitted), out / f"{FIT_STEM}.png", keep_agreeing)])
+    mapped, outcome = write_dataset(data.universal, out / f"{UNIVERSAL_STEM}.nc", keep_agreeing)
+    done([outcome, write_figure(plot_universal_map(mapped), out / f"{UNIVERSAL_STEM}.png", keep_agreeing)])
     text = report_text(data)
     readme = out / "README.md"
     if keep_agreeing and readme.exists() and all(o.status is FileStatus.KEPT for o in outcomes):

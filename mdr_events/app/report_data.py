@@ -19,6 +19,7 @@ from mdr_events.analysis.convergence import (HISTORY_QUANTITIES, discrete_errors
                                              observed_orders)
 from mdr_events.analysis.crosscheck import CROSS_CHECK_CONTENT, cross_check
 from mdr_events.analysis.fit import FitResult, fit, synthetic_measurement
+from mdr_events.analysis.universal_map import universal_map
 from mdr_events.analysis.validate import resolve_path
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import extremum, solve_path, tangential_work
@@ -32,7 +33,7 @@ __all__ = ["Reproduction", "compute", "jobs", "COMPUTE_STEPS", "critical_angles_
            "cross_check_rows", "differences", "extremum_convergence", "history_convergence", "FrettingContact",
            "FrettingStudy", "FrettingRow", "fretting_contact", "fretting_paths", "fretting_study", "fretting_rows",
            "closed_loop_times", "discrete_loop_work", "FRETTING_VARIABLES", "FitDemonstration", "fit_demonstration",
-           "FIT_DEMO_FREE", "FIT_DEMO_NOISE", "FIT_DEMO_SEED", "FIT_DEMO_SAMPLES", "FIT_DEMO_ANGLE"]
+           "FIT_DEMO_FREE", "FIT_DEMO_NOISE", "MAP_SLIP", "MAP_ADHESION", "FIT_DEMO_SEED", "FIT_DEMO_SAMPLES", "FIT_DEMO_ANGLE"]
 
 #: Critical angles stated in section 4 (R = 30 mm), degrees.
 PAPER_CRITICAL_ANGLES = {"hertz": 23.59, "jkr": 22.87}
@@ -115,6 +116,7 @@ class Reproduction:
     history: dict = field(default_factory=dict)
     fretting: FrettingStudy | None = None  #: the fretting study at :data:`FRETTING_RADIUS`
     fitting: "FitDemonstration | None" = None  #: the fit to synthetic measurements (:func:`fit_demonstration`)
+    universal: xr.Dataset | None = None  #: the critical angles over the dimensionless groups (:func:`universal_map`)
 
 
 def jobs() -> list[tuple[str, float, str]]:
@@ -123,7 +125,7 @@ def jobs() -> list[tuple[str, float, str]]:
 
 
 #: Progress messages :func:`compute` sends (one per step).
-COMPUTE_STEPS = 2 * len(RADII) * len(SCENARIOS) + 4
+COMPUTE_STEPS = 2 * len(RADII) * len(SCENARIOS) + 5
 
 
 def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
@@ -163,7 +165,16 @@ def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
     say(f"fit of {len(FIT_DEMO_FREE)} parameters to synthetic measurements (scenario A at {FIT_DEMO_ANGLE:g}°, "
         f"{FIT_DEMO_NOISE:.0%} noise)")
     data.fitting = fit_demonstration(Parameters.paper())
+    say(f"universal map: critical angles over {MAP_SLIP.size} × {MAP_ADHESION.size} values of the dimensionless "
+        "groups (the sweep on a local dask cluster)")
+    data.universal = universal_map(MAP_SLIP, MAP_ADHESION, Parameters.paper(),
+                                   marked={label: Parameters.paper(R=radius) for label, radius in RADII.items()})
     return data
+
+
+#: The universal map's grid: the slip parameter S (log-spaced) and the adhesion parameters Γ.
+MAP_SLIP = np.geomspace(0.3, 15.0, 121)
+MAP_ADHESION = np.linspace(0.0, 0.3, 121)
 
 
 # ----------------------------------------------------------------------------

@@ -434,10 +434,6 @@ def _fit_report(study: Study, progress: Callable[[str], None]) -> tuple[str, Ren
     return f"fit {table['data']}", render_fit(result.dataset, stem)
 
 
-#: The engine of a study's ``[sweep]`` unless the table or the command line says otherwise.
-DEFAULT_SCHEDULER = "local"
-
-
 def run_sweep(study: Study, progress: Callable[[str], None] = print, scheduler: str | None = None,
               workers: int | None = None, resume: bool = False) -> list[FileOutcome]:
     """Run the study's ``[sweep]`` table and write ``<name>_sweep.zarr`` (the store, chunk by chunk; with
@@ -467,7 +463,7 @@ def run_sweep(study: Study, progress: Callable[[str], None] = print, scheduler: 
 
     try:
         result = sweep(grid, scenario, table.get("alpha"), base=study.params, store=store, resume=resume,
-                       scheduler=scheduler or table.get("scheduler", DEFAULT_SCHEDULER),
+                       scheduler=scheduler or table.get("scheduler"),
                        workers=workers or table.get("workers"), progress=report, **options)
     except (ValueError, TypeError) as error:
         raise StudyError(f"{where}: [sweep] {error}") from None

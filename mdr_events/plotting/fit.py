@@ -48,7 +48,7 @@ def plot_fit(fit: xr.Dataset, title: str | None = None) -> Figure:
     """
     quantities = [str(q) for q in fit["quantity"].values]
     figure, axes = plt.subplots(2, len(quantities), figsize=(4.2 * len(quantities), 6.2), squeeze=False,
-                                sharex="col", gridspec_kw={"height_ratios": (2.2, 1.0)})
+                                sharex="col", gridspec_kw={"height_ratios": (2.2, 1.0)}, layout="constrained")
     time = fit["time"].values
     for column, name in enumerate(quantities):
         scale, symbol, unit = VALIDATION_PANELS[name]
@@ -67,8 +67,7 @@ def plot_fit(fit: xr.Dataset, title: str | None = None) -> Figure:
     lines = [_estimate_line(fit, str(name)) for name in fit["parameter"].values]
     heading = title if title is not None else f"Fit: {fit.attrs['verdict']}"
     figure.suptitle("\n".join([heading] + lines), fontsize=9)
-    bottom_margin = add_inferred_footnote(figure, fit)
-    figure.tight_layout(rect=(0, bottom_margin, 1, 1))  # makes room for the title itself
+    add_inferred_footnote(figure, fit)
     return figure
 
 register_figure(FIT_CONTENT, plot_fit)

@@ -193,3 +193,25 @@ def test_closed_form_quantities_alone_run_no_model(paper):
     tau0 = result["tau0"].values
     expected = [me.critical_angle(paper.replace(tau0=value, dgamma0=0.05), "A") for value in tau0]
     np.testing.assert_array_equal(result["critical_angle_A"].sel(dgamma0=0.05).values, expected)
+
+
+def test_the_universal_map_is_the_same_from_any_base_and_holds_the_papers_angles(paper):
+    """The map reached through another base set (another elastomer, indenter and depth) is the same map; at
+    the paper's groups it holds the paper's critical angles."""
+    from mdr_events.analysis.universal_map import universal_map
+    from mdr_events.plotting.universal import plot_universal_map
+
+    groups = dimensionless_groups(paper)
+    slip = np.array([0.5, groups.slip, 8.0])
+    adhesion = np.array([0.0, groups.adhesion_in, groups.adhesion_out, 0.2])
+    other = paper.replace(R=0.1, d_max=1e-3, E=1e6, nu=0.4, dgamma0=0.3, dgamma1=0.9, tau0=1e5)
+    maps = [universal_map(slip, adhesion, base, scheduler="serial", marked={"R30": paper})
+            for base in (paper, other)]
+    for name in ("critical_angle_A", "critical_angle_B"):
+        np.testing.assert_allclose(maps[1][name].values, maps[0][name].values, rtol=1e-9)
+    assert float(maps[0]["critical_angle_A"].sel(slip=groups.slip, adhesion_in=groups.adhesion_in)) == \
+        pytest.approx(me.critical_angle(paper, "A"), rel=1e-12)
+    assert float(maps[0]["critical_angle_B"].sel(slip=groups.slip, adhesion_out=groups.adhesion_out)) == \
+        pytest.approx(me.critical_angle(paper, "B"), rel=1e-12)
+    assert maps[0].attrs["mark_R30_slip"] == groups.slip
+    assert len(plot_universal_map(maps[0]).axes) == 4  # two panels and their colour bars

@@ -163,8 +163,9 @@ def test_compute_sends_one_progress_message_per_step(computed):
     """reproduce numbers its steps out of a total that counts compute's as COMPUTE_STEPS."""
     _, messages = computed
     assert len(messages) == report.COMPUTE_STEPS
-    assert messages[-2].startswith("fretting at d_max, R = 30 mm")
-    assert messages[-1].startswith("fit of 4 parameters to synthetic measurements")
+    assert messages[-3].startswith("fretting at d_max, R = 30 mm")
+    assert messages[-2].startswith("fit of 4 parameters to synthetic measurements")
+    assert messages[-1].startswith("universal map: critical angles")
 
 
 def test_report_states_the_papers_numbers_beside_ours(fresh):

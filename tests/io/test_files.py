@@ -13,6 +13,7 @@ import xarray as xr
 import mdr_events as me
 from mdr_events.io import datasets
 from mdr_events.analysis.fit import synthetic_measurement
+from mdr_events.analysis.universal_map import universal_map
 from mdr_events.io.files import (TEMPORARY_MARKER, atomic_write, check_output_stem, is_temporary_name,
                                  prepare_output_directory, remove_stale_temporaries, write_netcdf)
 
@@ -39,6 +40,8 @@ def results(paper_module):
         "fit": me.fit(synthetic_measurement(p, "A", 40.0, times=np.linspace(0.0, 1000.0, 101), relative_noise=0.01,
                                             seed=1), "A", 40.0, free=("tau0",), start=p.replace(tau0=30e3),
                       time_origin="path_start").dataset,
+        "sweep": me.sweep({"tau0": [30e3, 42e3]}, "A", 20.0, base=p, scheduler="serial"),
+        "universal_map": universal_map([1.0, 2.0], [0.0, 0.1], p, scheduler="serial"),
     }
 
 
@@ -48,7 +51,7 @@ def paper_module():
 
 
 @pytest.mark.parametrize("name", ["phase_A", "phase_B", "discrete", "continuum", "custom", "custom_cases",
-                                  "cross_check", "synthetic_measurement"])
+                                  "cross_check", "synthetic_measurement", "sweep", "universal_map"])
 def test_every_result_reads_back_identical(results, tmp_path, name):
     dataset = results[name]
     path = write_netcdf(dataset, tmp_path / f"{name}.nc")
