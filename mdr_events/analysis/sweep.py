@@ -31,6 +31,7 @@ import xarray as xr
 from mdr_events.analysis.validate import candidate_events
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import EventKind, Tolerances, extremum, solve_path, tangential_work
+from mdr_events.models.continuum.solution import scan_spans
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_UNITS, Parameters
@@ -116,10 +117,11 @@ def _deepest_time(path: Path) -> float:
 
 def _continuum_quantities(params: Parameters, path: Path, tolerances: Tolerances) -> dict[str, float]:
     solution = solve_path(params, path, tolerances)
-    out = {"normal_force_min": extremum(solution, "normal_force", largest=False)[1],
-           "tangential_force_max": max(abs(extremum(solution, "tangential_force", largest=True)[1]),
-                                       abs(extremum(solution, "tangential_force", largest=False)[1])),
-           "contact_area_max": extremum(solution, "contact_area", largest=True)[1],
+    scan = scan_spans(solution)  # one scan serves every extremum
+    out = {"normal_force_min": extremum(solution, "normal_force", largest=False, scan=scan)[1],
+           "tangential_force_max": max(abs(extremum(solution, "tangential_force", largest=True, scan=scan)[1]),
+                                       abs(extremum(solution, "tangential_force", largest=False, scan=scan)[1])),
+           "contact_area_max": extremum(solution, "contact_area", largest=True, scan=scan)[1],
            "tangential_work": tangential_work(solution), "event_count": float(len(solution.events))}
     deepest = _deepest_time(path)
     first: dict[str, object] = {}
