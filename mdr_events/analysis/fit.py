@@ -52,13 +52,13 @@ from mdr_events.io.candidates import Candidate, read_candidate
 from mdr_events.analysis.validate import resolve_path, times_from_contact
 from mdr_events.io.datasets import figure_of, register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits
-from mdr_events.models.continuum import Tolerances, evaluate, solve_path
+from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import scenario_paths
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 from mdr_events.validation import check_real, shown
 
-__all__ = ["fit", "FitResult", "synthetic_measurement", "model_curves", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
+__all__ = ["fit", "FitResult", "synthetic_measurement", "model_curves", "curves_of", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
            "FIT_CONTENT", "SYNTHETIC_CONTENT", "FREE_NAMES", "FITTED_QUANTITIES", "LOG_SCALED", "OFFSETS"]
 
 #: The ``content`` attribute of a fit's dataset.
@@ -296,7 +296,11 @@ def model_curves(params: Parameters, path: Path, times: np.ndarray, tolerances: 
     """The model's curves at ``times`` (s on the path's clock) by the module's rule out of contact: 0 where
     the indenter is out of the elastomer, ``nan`` (left out) before a path that starts inside it and after
     one that ends in contact."""
-    solution = solve_path(params, path, tolerances, limits)
+    return curves_of(solve_path(params, path, tolerances, limits), path, times, quantities)
+
+
+def curves_of(solution: PathSolution, path: Path, times: np.ndarray, quantities: Sequence[str]) -> ModelCurves:
+    """:func:`model_curves` of a solution at hand (``path``: the one it solved)."""
     since_contact = times - solution.t_contact
     filled = evaluate(solution, np.maximum(since_contact, 0.0))
     radius = filled["contact_radius"]

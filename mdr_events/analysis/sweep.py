@@ -28,6 +28,7 @@ from typing import Callable, Mapping, NamedTuple, Sequence
 import numpy as np
 import xarray as xr
 
+from mdr_events.analysis.fit import curves_of
 from mdr_events.analysis.validate import candidate_events
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import EventKind, Tolerances, extremum, solve_path, tangential_work
@@ -73,6 +74,10 @@ QUANTITIES: dict[str, tuple[str, str]] = {
     "critical_angle_B": ("degree", "angle of scenario B above which the contact comes apart before sliding "
                                    "(eq. 21; closed form)"),
 }
+#: Quantities of a run's history (``history_samples``), at times spread evenly over its path.
+HISTORY_QUANTITIES: dict[str, tuple[str, str]] = {
+    "normal_force": ("N", "normal force"), "tangential_force": ("N", "tangential force"),
+    "contact_area": ("m2", "contact area")}
 #: Quantities of the closed forms alone: a sweep asking only for these runs no model.
 CLOSED_FORM_QUANTITIES = ("critical_angle_A", "critical_angle_B")
 
@@ -90,32 +95,36 @@ class SweepSpec:
     dx: float | None = None
     n_steps: int | None = None
     quantities: tuple[str, ...] = tuple(QUANTITIES)
+    history_samples: int | None = None
 
-    def run(self, values: Sequence[float]) -> dict[str, float]:
-        """The :attr:`quantities` of the run at ``values`` (one per swept name); the model runs only if one of
-        them needs it (not for :data:`CLOSED_FORM_QUANTITIES` alone)."""
+    def run(self, values: Sequence[float]) -> tuple[dict[str, float], np.ndarray | None]:
+        """The :attr:`quantities` of the run at ``values`` (one per swept name), and its history (rows
+        :data:`HISTORY_QUANTITIES`, ``history_samples`` columns over the path's duration) if asked for; the model
+        runs only if one of them needs it (not for :data:`CLOSED_FORM_QUANTITIES` alone)."""
         settings = dict(zip(self.names, (float(v) for v in values)))
         alpha = settings.pop("alpha", self.alpha)
         dx = settings.pop("dx", self.dx)
         params = self.base.replace(**settings) if settings else self.base
-        out = {}
-        if set(self.quantities) - set(CLOSED_FORM_QUANTITIES):
+        out, history = {}, None
+        if set(self.quantities) - set(CLOSED_FORM_QUANTITIES) or self.history_samples:
             path = self.scenario if isinstance(self.scenario, Path) else \
                 scenario_paths(params, self.scenario, [alpha])[0][0]
-            out = (_continuum_quantities(params, path, self.tolerances) if self.method == "continuum"
-                   else _discrete_quantities(params, path, dx, self.n_steps))
+            times = None if not self.history_samples else np.linspace(0.0, path.duration, self.history_samples)
+            out, history = (_continuum_quantities(params, path, self.tolerances, times) if self.method == "continuum"
+                            else _discrete_quantities(params, path, dx, self.n_steps, times))
         if "critical_angle_A" in self.quantities:
             out["critical_angle_A"] = analytic.critical_angle(params, "A")
         if "critical_angle_B" in self.quantities:
             out["critical_angle_B"] = analytic.critical_angle(params, "B")
-        return {name: out[name] for name in self.quantities}
+        return {name: out[name] for name in self.quantities}, history
 
 
 def _deepest_time(path: Path) -> float:
     return float(path.corner_times[int(np.argmax(path.waypoints[:, 1]))])
 
 
-def _continuum_quantities(params: Parameters, path: Path, tolerances: Tolerances) -> dict[str, float]:
+def _continuum_quantities(params: Parameters, path: Path, tolerances: Tolerances,
+                          times: np.ndarray | None) -> tuple[dict[str, float], np.ndarray | None]:
     solution = solve_path(params, path, tolerances)
     scan = scan_spans(solution)  # one scan serves every extremum
     out = {"normal_force_min": extremum(solution, "normal_force", largest=False, scan=scan)[1],
@@ -140,7 +149,10 @@ def _continuum_quantities(params: Parameters, path: Path, tolerances: Tolerances
             out[f"{key}_depth"] = float(event.depth) if event else math.nan
     pull = first.get("pull_off")
     out["pull_off_force"] = float(analytic.normal_force(pull.depth, pull.radius, params)) if pull else math.nan
-    return out
+    if times is None:
+        return out, None
+    curves = curves_of(solution, path, times, tuple(HISTORY_QUANTITIES)).values
+    return out, np.array([curves[name] for name in HISTORY_QUANTITIES])
 
 
 #: The discrete model's time step per spring spacing of travel when no ``n_steps`` is given: the time step is
@@ -148,7 +160,8 @@ def _continuum_quantities(params: Parameters, path: Path, tolerances: Tolerances
 DISCRETE_STEP_PER_SPACING = 0.5
 
 
-def _discrete_quantities(params: Parameters, path: Path, dx: float | None, n_steps: int | None) -> dict[str, float]:
+def _discrete_quantities(params: Parameters, path: Path, dx: float | None, n_steps: int | None,
+                         history_times: np.ndarray | None) -> tuple[dict[str, float], np.ndarray | None]:
     dt = None if n_steps is not None or dx is None else DISCRETE_STEP_PER_SPACING * dx / path.speed
     run = simulate(params, path, method="discrete", dx=dx, dt=dt, n_steps=n_steps).isel(case=0)
     times = run["time"].values
@@ -167,6 +180,9 @@ def _discrete_quantities(params: Parameters, path: Path, dx: float | None, n_ste
     lost = found["last_in_contact"] + 1 if found["last_in_contact"] >= 0 else -1
     x = run["tangential_displacement"].values
     finite = np.isfinite(quantities["tangential_force"]) & np.isfinite(x)
+    history = None if history_times is None else np.array(
+        [np.interp(history_times, path_times, np.nan_to_num(run[name].values), left=0.0, right=math.nan)
+         for name in HISTORY_QUANTITIES])
     return {
         "normal_force_min": float(np.nanmin(quantities["normal_force"])),
         "tangential_force_max": float(np.nanmax(np.abs(quantities["tangential_force"]))),
@@ -182,7 +198,7 @@ def _discrete_quantities(params: Parameters, path: Path, dx: float | None, n_ste
         "tangential_work": float(np.trapezoid(quantities["tangential_force"][finite], x[finite])),
         "event_count": float(sum(math.isfinite(found[k]) for k in ("slip_onset", "full_slip", "detachment_starts",
                                                                     "pull_off"))),
-    }
+    }, history
 
 
 class ChunkResult(NamedTuple):
@@ -191,19 +207,25 @@ class ChunkResult(NamedTuple):
 
     values: np.ndarray
     errors: list[str]
+    histories: np.ndarray | None = None  #: runs × :data:`HISTORY_QUANTITIES` × samples (``history_samples``)
 
 
 def run_chunk(spec: SweepSpec, rows: np.ndarray) -> ChunkResult:
     """Run every row (the swept names' values) of a chunk; a run that raises is recorded, not raised."""
     values = np.full((len(rows), len(spec.quantities)), np.nan)
+    histories = None if not spec.history_samples else \
+        np.full((len(rows), len(HISTORY_QUANTITIES), spec.history_samples), np.nan)
     errors = []
     for i, row in enumerate(rows):
         try:
-            values[i] = list(spec.run(row).values())
+            out, history = spec.run(row)
+            values[i] = list(out.values())
+            if histories is not None:
+                histories[i] = history
             errors.append("")
         except Exception as error:  # noqa: BLE001 - a failed run is a result of the sweep, recorded with its error
             errors.append(f"{type(error).__name__}: {error}"[:ERROR_CHARACTERS])
-    return ChunkResult(values, errors)
+    return ChunkResult(values, errors, histories)
 
 
 # ------------------------------------------------------------------------------------------------------------
@@ -282,13 +304,23 @@ def _signature(spec: SweepSpec, grid: Grid) -> str:
     scenario = spec.scenario if isinstance(spec.scenario, str) else spec.scenario.describe()
     return json.dumps({"base": spec.base.as_dict(), "scenario": scenario, "alpha": spec.alpha, "method": spec.method,
                        "dx": spec.dx, "n_steps": spec.n_steps, "tolerances": dataclasses.asdict(spec.tolerances),
-                       "names": grid.names, "rows": grid.rows.tolist(), "quantities": spec.quantities}, sort_keys=True)
+                       "names": grid.names, "rows": grid.rows.tolist(), "quantities": spec.quantities,
+                       "history_samples": spec.history_samples}, sort_keys=True)
+
+
+def _history_variables(histories: np.ndarray | None, dims: tuple[str, ...], shape: tuple[int, ...]) -> dict:
+    if histories is None:
+        return {}
+    return {f"history_{name}": ((*dims, "sample"), histories[:, i, :].reshape(*shape, histories.shape[-1]),
+                                {"units": unit, "long_name": f"{text} at times spread evenly over the run's path"})
+            for i, (name, (unit, text)) in enumerate(HISTORY_QUANTITIES.items())}
 
 
 def _flat_dataset(quantities: Sequence[str], values: np.ndarray, errors: Sequence[str],
-                  done: np.ndarray) -> xr.Dataset:
+                  done: np.ndarray, histories: np.ndarray | None = None) -> xr.Dataset:
     data = {name: (("run",), values[:, i], {"units": QUANTITIES[name][0], "long_name": QUANTITIES[name][1]})
             for i, name in enumerate(quantities)}
+    data.update(_history_variables(histories, ("run",), (len(errors),)))
     data["failed"] = (("run",), np.array([bool(e) for e in errors], dtype=np.int8),
                       {"units": "1", "long_name": "1: the run raised (see error)"})
     data["error"] = (("run",), np.array(errors, dtype=f"<U{ERROR_CHARACTERS}"),
@@ -301,7 +333,7 @@ class _Store:
     """A Zarr store holding the sweep's runs along a flat ``run`` dimension, one chunk per task."""
 
     def __init__(self, path: str | os.PathLike, signature: str, quantities: Sequence[str], runs: int, chunk: int,
-                 resume: bool):
+                 resume: bool, history_samples: int | None = None):
         self.path, self.chunk, self.quantities = os.fspath(path), chunk, tuple(quantities)
         if resume and os.path.isdir(self.path):
             existing = xr.open_zarr(self.path, zarr_format=2)
@@ -310,10 +342,11 @@ class _Store:
                                  "allowed: this sweep's store to resume, or resume=False to start it afresh")
             self.existing = existing.load()
             return
+        histories = None if not history_samples else np.full((runs, len(HISTORY_QUANTITIES), history_samples), np.nan)
         template = _flat_dataset(self.quantities, np.full((runs, len(self.quantities)), np.nan), [""] * runs,
-                                 np.zeros(runs, bool))
+                                 np.zeros(runs, bool), histories)
         template.attrs["sweep_signature"] = signature
-        encoding = {name: {"chunks": (chunk,)} for name in template.data_vars}
+        encoding = {name: {"chunks": (chunk,) + template[name].shape[1:]} for name in template.data_vars}
         template.to_zarr(self.path, mode="w", zarr_format=2, encoding=encoding, compute=True)
         self.existing = None
 
@@ -321,7 +354,8 @@ class _Store:
         return None if self.existing is None else self.existing["done"].values.astype(bool)
 
     def write(self, start: int, result: ChunkResult) -> None:
-        part = _flat_dataset(self.quantities, result.values, result.errors, np.ones(len(result.errors), bool))
+        part = _flat_dataset(self.quantities, result.values, result.errors, np.ones(len(result.errors), bool),
+                             result.histories)
         part.to_zarr(self.path, region={"run": slice(start, start + len(result.errors))}, zarr_format=2)
 
 
@@ -354,7 +388,7 @@ def _client(scheduler, workers: int | None):
 def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, method: str = "continuum",
           dx: float | None = None, n_steps: int | None = None, tolerances: Tolerances = Tolerances(),
           quantities: Sequence[str] | None = None, scheduler: str | None = None, workers: int | None = None,
-          chunk_size: int = DEFAULT_CHUNK,
+          chunk_size: int = DEFAULT_CHUNK, history_samples: int | None = None,
           store: str | os.PathLike | None = None, resume: bool = True,
           progress: Callable[[int, int], None] | None = None) -> xr.Dataset:
     """Run the model over a grid of parameters and return each run's scalar quantities.
@@ -384,6 +418,10 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
         (``"tcp://host:8786"``). Every choice gives the same numbers. Default: :func:`default_scheduler`.
     chunk_size : int
         Runs per task (and per Zarr chunk of the store).
+    history_samples : int, optional
+        Also keep each run's F_N, F_x and A (:data:`HISTORY_QUANTITIES`) at this many times spread evenly over
+        its path (``history_<q>`` along a ``sample`` dimension; the continuum's by the rule of
+        :func:`mdr_events.analysis.fit.model_curves`: 0 out of the elastomer).
     store : path, optional
         A Zarr directory written chunk by chunk as runs complete; with ``resume`` (default) a store of this
         same sweep is continued: its done chunks are read, not run again.
@@ -423,8 +461,9 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     if not wanted or len(set(wanted)) != len(wanted):
         raise ValueError(f"quantities={shown(quantities)} is not allowed; allowed: distinct names from "
                          f"{', '.join(QUANTITIES)}")
+    samples = None if history_samples is None else check_count("history_samples", history_samples, 2)
     spec = SweepSpec(base, scenario, None if alpha is None else float(alpha), method, the_grid.names, tolerances,
-                     dx, n_steps, wanted)
+                     dx, n_steps, wanted, samples)
     _check_runs(spec, the_grid)
     scheduler = default_scheduler() if scheduler is None else scheduler
     if scheduler not in ("local", "serial") and not (isinstance(scheduler, str) and "://" in scheduler):
@@ -432,13 +471,17 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
                          "scheduler's address such as 'tcp://host:8786'")
     runs = len(the_grid.rows)
     values = np.full((runs, len(wanted)), np.nan)
+    histories = None if samples is None else np.full((runs, len(HISTORY_QUANTITIES), samples), np.nan)
     errors = [""] * runs
-    the_store = None if store is None else _Store(store, _signature(spec, the_grid), wanted, runs, chunk_size, resume)
+    the_store = None if store is None else _Store(store, _signature(spec, the_grid), wanted, runs, chunk_size, resume,
+                                                  samples)
     pending = _chunks(runs, chunk_size)
     done = the_store.done() if the_store is not None else None
     if done is not None:
         previous = the_store.existing
         values[done] = np.column_stack([previous[name].values for name in wanted])[done]
+        if histories is not None:
+            histories[done] = np.stack([previous[f"history_{name}"].values for name in HISTORY_QUANTITIES], axis=1)[done]
         for index in np.flatnonzero(done):
             errors[index] = str(previous["error"].values[index])
         pending = [(a, b) for a, b in pending if not np.all(done[a:b])]
@@ -448,6 +491,8 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
         nonlocal finished
         values[start:start + len(result.errors)] = result.values
         errors[start:start + len(result.errors)] = result.errors
+        if histories is not None:
+            histories[start:start + len(result.errors)] = result.histories
         if the_store is not None:
             the_store.write(start, result)
         finished += len(result.errors)
@@ -470,10 +515,11 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
             client.close()
             if cluster is not None:
                 cluster.close()
-    return _result(spec, the_grid, values, errors, scheduler)
+    return _result(spec, the_grid, values, errors, histories)
 
 
-def _result(spec: SweepSpec, grid: Grid, values: np.ndarray, errors: list[str], scheduler) -> xr.Dataset:
+def _result(spec: SweepSpec, grid: Grid, values: np.ndarray, errors: list[str],
+            histories: np.ndarray | None) -> xr.Dataset:
     dims = (TABLE_DIMENSION,) if grid.table else grid.names
     shape = grid.shape
     data = {name: (dims, values[:, i].reshape(shape), {"units": QUANTITIES[name][0], "long_name": QUANTITIES[name][1]})
@@ -482,6 +528,7 @@ def _result(spec: SweepSpec, grid: Grid, values: np.ndarray, errors: list[str], 
     data["failed"] = (dims, failed, {"units": "1", "long_name": "1: the run raised (see error)"})
     data["error"] = (dims, np.array(errors, dtype=str).reshape(shape), {"units": "1",
                                                                         "long_name": "the error of a failed run"})
+    data.update(_history_variables(histories, dims, shape))
     units = dict(PARAMETER_UNITS, **EXTRA_NAMES)
     coords = {name: ((TABLE_DIMENSION,) if grid.table else (name,), grid.coords[name],
                      {"units": units[name], "long_name": f"swept {name}"}) for name in grid.names}

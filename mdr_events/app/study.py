@@ -41,7 +41,7 @@ A study names its parameters, what to compute and where to write it::
     [sweep]                      # optional: a parameter sweep (mdr_events.sweep; mdr-events sweep)
     grid = { tau0 = [30e3, 42e3], alpha = [10, 20, 30] }   # the outer product; or sets = [{...}, ...]
     scenario = "A"               # or the study's [path]; alpha here if the grid does not sweep it
-    method = "continuum"         # quantities, chunk_size, dx, n_steps, scheduler, workers optional
+    method = "continuum"         # quantities, chunk_size, dx, n_steps, history_samples, scheduler, workers optional
 
     [output]                     # required
     directory = "out"            # relative to the study file; checked before anything is computed
@@ -153,7 +153,7 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
     "sweep": {"grid": ("grid table", False), "sets": ("tables", False), "scenario": ("string", False),
               "alpha": ("number", False), "method": ("string", False), "dx": ("number", False),
               "n_steps": ("integer", False), "quantities": ("strings", False), "chunk_size": ("integer", False),
-              "scheduler": ("string", False), "workers": ("integer", False)},
+              "scheduler": ("string", False), "workers": ("integer", False), "history_samples": ("integer", False)},
     "output": {"directory": ("string", True), "name": ("string", False)},
 }
 REQUIRED_TABLES = ("output",)
@@ -453,7 +453,7 @@ def run_sweep(study: Study, progress: Callable[[str], None] = print, scheduler: 
     if isinstance(grid, dict):
         grid = {name: value if isinstance(value, list) else [value] for name, value in grid.items()}
     scenario = _study_path(study) if "path" in study.tables else table.get("scenario", "A")
-    options = {key: table[key] for key in ("method", "dx", "n_steps", "chunk_size") if key in table}
+    options = {key: table[key] for key in ("method", "dx", "n_steps", "chunk_size", "history_samples") if key in table}
     if "quantities" in table:
         options["quantities"] = tuple(table["quantities"])
     store = out / f"{study.name}_sweep.zarr"

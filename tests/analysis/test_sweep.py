@@ -215,3 +215,31 @@ def test_the_universal_map_is_the_same_from_any_base_and_holds_the_papers_angles
         pytest.approx(me.critical_angle(paper, "B"), rel=1e-12)
     assert maps[0].attrs["mark_R30_slip"] == groups.slip
     assert len(plot_universal_map(maps[0]).axes) == 4  # two panels and their colour bars
+
+
+def test_histories_are_the_runs_curves_and_resume_with_the_store(paper, tmp_path):
+    """history_samples keeps each run's F_N, F_x, A over its path: the continuum's equal model_curves (another
+    solve) bit for bit; a store with histories resumes like any other."""
+    from mdr_events.analysis.fit import model_curves
+    from mdr_events.limits import DEFAULT_LIMITS
+    from mdr_events.models.simulate import scenario_paths
+
+    grid = {"alpha": [15.0, 30.0, 60.0]}
+    store = tmp_path / "histories.zarr"
+    whole = sweep(grid, "A", base=paper, scheduler="serial", chunk_size=1, history_samples=41, store=store)
+    assert whole["history_normal_force"].dims == ("alpha", "sample") and whole.sizes["sample"] == 41
+    for alpha in grid["alpha"]:
+        path = scenario_paths(paper, "A", [alpha])[0][0]
+        times = np.linspace(0.0, path.duration, 41)
+        expected = model_curves(paper, path, times, me.Tolerances(), DEFAULT_LIMITS, ("tangential_force",)).values
+        np.testing.assert_array_equal(whole["history_tangential_force"].sel(alpha=alpha).values,
+                                      expected["tangential_force"])
+    resumed = sweep(grid, "A", base=paper, scheduler="serial", chunk_size=1, history_samples=41, store=store,
+                    progress=lambda done, total: pytest.fail("a finished store runs nothing again"))
+    xr.testing.assert_identical(resumed, whole)
+    discrete = sweep({"alpha": [30.0]}, "A", base=paper, method="discrete", dx=2e-6, scheduler="serial",
+                     history_samples=41, quantities=("contact_area_max",))
+    exact = whole["history_contact_area"].sel(alpha=30.0).values
+    # from the second sample on: at t = 0 the continuum has jumped in (A = π a0², adhesion), the springs not yet
+    # (a contact made is a jump in time that a stepping model meets one step later, as validate leaves it out)
+    assert np.nanmax(np.abs(discrete["history_contact_area"].values[0][1:] - exact[1:])) < 0.02 * np.nanmax(exact)
