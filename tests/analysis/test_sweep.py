@@ -1,9 +1,9 @@
 """``sweep``: the same numbers serially and on a dask cluster, resumable stores, recorded failures, bad grids;
 the quantities against the closed forms; the dimensionless groups."""
 
-import re
 import math
 import os
+import re
 
 import numpy as np
 import pytest
