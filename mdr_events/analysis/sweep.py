@@ -37,7 +37,7 @@ from mdr_events.models.paths import Path
 from mdr_events.models.simulate import METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_UNITS, Parameters
 from mdr_events.theory import analytic
-from mdr_events.validation import check_choice, check_count, shown
+from mdr_events.validation import check_choice, check_count, check_real, shown
 
 __all__ = ["sweep", "run_chunk", "SweepSpec", "QUANTITIES", "CLOSED_FORM_QUANTITIES", "SWEEP_CONTENT", "SWEPT_NAMES",
            "TABLE_DIMENSION",
@@ -269,9 +269,9 @@ def make_grid(grid) -> Grid:
     if isinstance(grid, Sequence) and not isinstance(grid, str) and grid and all(isinstance(r, Mapping) for r in grid):
         names = tuple(str(name) for name in grid[0])
         for index, row in enumerate(grid):
-            if tuple(map(str, row)) != names:
+            if set(map(str, row)) != set(names):
                 raise ValueError(f"grid[{index}] names {sorted(map(str, row))}; allowed: the names of grid[0] "
-                                 f"({', '.join(names)}) in every set")
+                                 f"({', '.join(sorted(names))}) in every set")
         coords = {name: _values(name, [row[name] for row in grid]) for name in names}
         return Grid(names, coords, np.column_stack(list(coords.values())), table=True)
     raise ValueError(f"grid={shown(grid)} is not allowed; allowed: a non-empty mapping of names to values (outer "
@@ -329,13 +329,25 @@ def _flat_dataset(quantities: Sequence[str], values: np.ndarray, errors: Sequenc
     return xr.Dataset(data)
 
 
+def _is_sweep_store(path: str) -> bool:
+    """Whether ``path`` holds a Zarr store written by :func:`sweep` (its group has a ``sweep_signature``)."""
+    try:
+        return "sweep_signature" in xr.open_zarr(path, zarr_format=2).attrs
+    except Exception:  # noqa: BLE001 - anything that is not such a store, whatever the reader says of it
+        return False
+
+
 class _Store:
     """A Zarr store holding the sweep's runs along a flat ``run`` dimension, one chunk per task."""
 
     def __init__(self, path: str | os.PathLike, signature: str, quantities: Sequence[str], runs: int, chunk: int,
                  resume: bool, history_samples: int | None = None):
         self.path, self.chunk, self.quantities = os.fspath(path), chunk, tuple(quantities)
-        if resume and os.path.isdir(self.path):
+        is_store = _is_sweep_store(self.path)
+        if os.path.exists(self.path) and not is_store and (not os.path.isdir(self.path) or os.listdir(self.path)):
+            raise ValueError(f"store={self.path!r} exists and is not a sweep's store; allowed: a new path, an empty "
+                             "directory or a sweep's store (nothing else is overwritten)")
+        if resume and is_store:
             existing = xr.open_zarr(self.path, zarr_format=2)
             if existing.attrs.get("sweep_signature") != signature:
                 raise ValueError(f"store={self.path!r} holds another sweep (other parameters, grid or options); "
@@ -381,7 +393,11 @@ def _client(scheduler, workers: int | None):
     if scheduler == "local":
         cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
                                host="127.0.0.1", dashboard_address=None)
-        return Client(cluster), cluster
+        try:
+            return Client(cluster), cluster
+        except BaseException:
+            cluster.close()
+            raise
     return Client(scheduler), None
 
 
@@ -445,6 +461,15 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     the_grid = make_grid(grid)
     if "dx" in the_grid.names and method != "discrete":
         raise ValueError("grid: 'dx' is not allowed with method='continuum'; allowed: with method='discrete'")
+    if workers is not None:
+        workers = check_count("workers", workers, 1)
+    if not isinstance(tolerances, Tolerances):
+        raise TypeError(f"tolerances={shown(tolerances)} ({type(tolerances).__name__}) is not allowed; allowed: a "
+                        "Tolerances")
+    if alpha is not None:
+        alpha = check_real("alpha", alpha, "an angle in (0, 90] degrees", lambda value: 0 < value <= 90)
+    if dx is not None:
+        dx = check_real("dx", dx, "a spacing > 0 (m)", lambda value: value > 0)
     if isinstance(scenario, str):
         check_choice("scenario", scenario, SCENARIO_NAMES)
         if alpha is None and "alpha" not in the_grid.names:
@@ -462,7 +487,7 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
         raise ValueError(f"quantities={shown(quantities)} is not allowed; allowed: distinct names from "
                          f"{', '.join(QUANTITIES)}")
     samples = None if history_samples is None else check_count("history_samples", history_samples, 2)
-    spec = SweepSpec(base, scenario, None if alpha is None else float(alpha), method, the_grid.names, tolerances,
+    spec = SweepSpec(base, scenario, alpha, method, the_grid.names, tolerances,
                      dx, n_steps, wanted, samples)
     _check_runs(spec, the_grid)
     scheduler = default_scheduler() if scheduler is None else scheduler

@@ -16,6 +16,7 @@ from mdr_events.analysis.sweep import sweep
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.parameters import Parameters
 from mdr_events.theory.analytic import dimensionless_groups
+from mdr_events.validation import real_array, shown
 
 __all__ = ["universal_map", "UNIVERSAL_MAP_CONTENT", "GROUP_NAMES"]
 
@@ -50,7 +51,16 @@ def universal_map(slip, adhesion, base: Parameters, *, scheduler: str | None = N
         ``critical_angle_A`` over (``slip``, ``adhesion_in``) and ``critical_angle_B`` over (``slip``,
         ``adhesion_out``), degrees.
     """
-    slip, adhesion = np.asarray(slip, dtype=float), np.asarray(adhesion, dtype=float)
+    slip = real_array("slip", slip, "a list of values > 0")
+    adhesion = real_array("adhesion", adhesion, "a list of values >= 0")
+    if slip.ndim != 1 or not slip.size or not np.all(np.isfinite(slip) & (slip > 0)):
+        raise ValueError(f"slip={shown(slip)} is not allowed; allowed: a non-empty list of finite values > 0")
+    if adhesion.ndim != 1 or not adhesion.size or not np.all(np.isfinite(adhesion) & (adhesion >= 0)):
+        raise ValueError(f"adhesion={shown(adhesion)} is not allowed; allowed: a non-empty list of finite values >= 0")
+    if not (base.tau0 > 0 and (base.dgamma0 > 0 or base.dgamma1 > 0)):
+        raise ValueError(f"base with tau0={base.tau0!r}, dgamma0={base.dgamma0!r}, dgamma1={base.dgamma1!r} is not "
+                         "allowed; allowed: tau0 > 0 and a work of adhesion > 0 (the groups are reached by scaling "
+                         "them)")
     groups = dimensionless_groups(base)
     tau0 = base.tau0 * slip / groups.slip
     unit_adhesion = groups.adhesion_in / base.dgamma0 if base.dgamma0 > 0 else groups.adhesion_out / base.dgamma1

@@ -243,3 +243,41 @@ def test_histories_are_the_runs_curves_and_resume_with_the_store(paper, tmp_path
     # from the second sample on: at t = 0 the continuum has jumped in (A = π a0², adhesion), the springs not yet
     # (a contact made is a jump in time that a stepping model meets one step later, as validate leaves it out)
     assert np.nanmax(np.abs(discrete["history_contact_area"].values[0][1:] - exact[1:])) < 0.02 * np.nanmax(exact)
+
+
+def test_a_store_path_holding_something_else_is_never_overwritten(paper, tmp_path):
+    folder = tmp_path / "mine"
+    folder.mkdir()
+    (folder / "important.txt").write_text("keep")
+    afile = tmp_path / "afile"
+    afile.write_text("keep")
+    for store in (folder, afile):
+        for resume in (True, False):
+            with pytest.raises(ValueError, match=re.escape(f"store={str(store)!r} exists and is not a sweep's store")):
+                sweep({"alpha": [10.0]}, "A", base=paper, scheduler="serial", quantities=CLOSED_FORM_QUANTITIES,
+                      store=store, resume=resume)
+    assert (folder / "important.txt").read_text() == "keep" and afile.read_text() == "keep"
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    assert int(sweep({"alpha": [10.0]}, "A", base=paper, scheduler="serial", quantities=CLOSED_FORM_QUANTITIES,
+                     store=empty)["failed"].sum()) == 0
+
+
+@pytest.mark.parametrize("options, message", [
+    (dict(workers=0), "workers=0 is not allowed"),
+    (dict(workers=-1), "workers=-1 is not allowed"),
+    (dict(alpha="abc"), "alpha='abc'"),
+    (dict(alpha=120.0), "alpha=120.0 is not allowed"),
+    (dict(tolerances="x"), "tolerances='x'"),
+])
+def test_engine_and_angle_arguments_are_named(paper, options, message):
+    arguments = dict(alpha=20.0, scheduler="local", quantities=CLOSED_FORM_QUANTITIES)
+    arguments.update(options)
+    with pytest.raises((ValueError, TypeError), match=re.escape(message)):
+        sweep({"tau0": [1e3]}, "A", base=paper, **arguments)
+
+
+def test_a_table_may_name_its_fields_in_any_order(paper):
+    table = [{"alpha": 10.0, "tau0": 30e3}, {"tau0": 42e3, "alpha": 20.0}]
+    result = sweep(table, "A", base=paper, scheduler="serial", quantities=("critical_angle_A",))
+    assert result["tau0"].values.tolist() == [30e3, 42e3] and result["alpha"].values.tolist() == [10.0, 20.0]
