@@ -22,6 +22,7 @@ import numpy as np
 from distributed import LocalCluster
 
 import mdr_events as me
+from mdr_events.analysis.sweep import LOOPBACK_DASHBOARD
 from _timing import median_time
 
 WORKERS = 2
@@ -42,7 +43,7 @@ def main() -> None:
     runs = GRID["tau0"].size * GRID["alpha"].size
     print(f"mdr_events {me.__version__}: sweep of {runs} continuum runs (scenario A, τ0 × α), chunks of {CHUNK}")
     started, cluster = timed(lambda: LocalCluster(n_workers=WORKERS, threads_per_worker=1, processes=True,
-                                                  host="127.0.0.1", dashboard_address=None))
+                                                  host="127.0.0.1", dashboard_address=LOOPBACK_DASHBOARD))
     with cluster:
         address = cluster.scheduler_address
         serial_time, serial = timed(lambda: me.sweep(GRID, "A", base=params, scheduler="serial", chunk_size=CHUNK))
@@ -63,7 +64,7 @@ def main() -> None:
         print(f"  engine overhead: {closed} closed-form runs, serial {serial_closed:.2f} s, cluster {cluster_closed:.2f} s "
               f"(medians of 3): {overhead * 1e3:.3f} ms per run (target < 1 ms)")
     lifetime, _ = timed(lambda: LocalCluster(n_workers=WORKERS, threads_per_worker=1, processes=True,
-                                             host="127.0.0.1", dashboard_address=None).close())
+                                             host="127.0.0.1", dashboard_address=LOOPBACK_DASHBOARD).close())
     print(f"  local cluster: started in {started:.1f} s; a fresh one started and closed in {lifetime:.1f} s")
 
 

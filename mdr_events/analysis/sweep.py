@@ -41,7 +41,7 @@ from mdr_events.validation import check_choice, check_count, check_real, shown
 
 __all__ = ["sweep", "run_chunk", "SweepSpec", "QUANTITIES", "CLOSED_FORM_QUANTITIES", "SWEEP_CONTENT", "SWEPT_NAMES",
            "TABLE_DIMENSION",
-           "ChunkResult", "default_scheduler"]
+           "ChunkResult", "default_scheduler", "LOOPBACK_DASHBOARD"]
 
 #: The ``content`` attribute of a sweep's dataset.
 SWEEP_CONTENT = "parameter sweep"
@@ -377,6 +377,10 @@ def _chunks(runs: int, size: int) -> list[tuple[int, int]]:
     return [(start, min(start + size, runs)) for start in range(0, runs, size)]
 
 
+#: The local cluster's dashboard: on loopback, on a free port (None would take the default :8787).
+LOOPBACK_DASHBOARD = "127.0.0.1:0"
+
+
 def default_scheduler() -> str:
     """``"local"`` where ``dask.distributed`` is installed (the extra ``mdr_events[scale]``), else ``"serial"``."""
     return "local" if importlib.util.find_spec("distributed") is not None else "serial"
@@ -392,7 +396,7 @@ def _client(scheduler, workers: int | None):
                          "the extra: pip install 'mdr_events[scale]'") from None
     if scheduler == "local":
         cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
-                               host="127.0.0.1", dashboard_address=None)
+                               host="127.0.0.1", dashboard_address=LOOPBACK_DASHBOARD)
         try:
             return Client(cluster), cluster
         except BaseException:

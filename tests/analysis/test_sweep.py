@@ -10,7 +10,7 @@ import pytest
 import xarray as xr
 
 import mdr_events as me
-from mdr_events.analysis.sweep import CLOSED_FORM_QUANTITIES, QUANTITIES, sweep
+from mdr_events.analysis.sweep import CLOSED_FORM_QUANTITIES, LOOPBACK_DASHBOARD, QUANTITIES, sweep
 from mdr_events.theory.analytic import d_crit, dimensionless_groups
 
 distributed = pytest.importorskip("distributed")
@@ -27,7 +27,7 @@ def serial(paper):
 def cluster():
     """A 2-worker LocalCluster on loopback (processes, one thread each), shared by the tests that need one."""
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
-                                  dashboard_address=None) as local:
+                                  dashboard_address=LOOPBACK_DASHBOARD) as local:
         yield local
 
 
