@@ -68,7 +68,8 @@ QUANTITIES: dict[str, tuple[str, str]] = {
     "pull_off_time": ("s", "pull-off (s from the path's start)"),
     "pull_off_depth": ("m", "depth at the pull-off"),
     "pull_off_force": ("N", "normal force at the pull-off"),
-    "tangential_work": ("J", "work of the tangential force over the run, ∫ F_x dx"),
+    "tangential_work": ("J", "work of the tangential force over the run, ∫ F_x dx: all of it dissipated where the "
+                             "run ends out of contact (the springs detach and forget their shift)"),
     "event_count": ("1", "events logged (continuum) / found (discrete)"),
     "critical_angle_A": ("degree", "critical angle of scenario A (eq. 18; closed form)"),
     "critical_angle_B": ("degree", "angle of scenario B above which the contact comes apart before sliding "
