@@ -31,6 +31,7 @@ import xarray as xr
 from mdr_events.analysis.fit import curves_of
 from mdr_events.analysis.validate import candidate_events
 from mdr_events.io.datasets import register_schema, stamp
+from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import EventKind, Tolerances, extremum, solve_path, tangential_work
 from mdr_events.models.continuum.solution import scan_spans
 from mdr_events.models.paths import Path
@@ -97,6 +98,7 @@ class SweepSpec:
     n_steps: int | None = None
     quantities: tuple[str, ...] = tuple(QUANTITIES)
     history_samples: int | None = None
+    limits: Limits = DEFAULT_LIMITS
 
     def run(self, values: Sequence[float]) -> tuple[dict[str, float], np.ndarray | None]:
         """The :attr:`quantities` of the run at ``values`` (one per swept name), and its history (rows
@@ -111,8 +113,9 @@ class SweepSpec:
             path = self.scenario if isinstance(self.scenario, Path) else \
                 scenario_paths(params, self.scenario, [alpha])[0][0]
             times = None if not self.history_samples else np.linspace(0.0, path.duration, self.history_samples)
-            out, history = (_continuum_quantities(params, path, self.tolerances, times) if self.method == "continuum"
-                            else _discrete_quantities(params, path, dx, self.n_steps, times))
+            out, history = (_continuum_quantities(params, path, self.tolerances, self.limits, times)
+                            if self.method == "continuum"
+                            else _discrete_quantities(params, path, dx, self.n_steps, self.limits, times))
         if "critical_angle_A" in self.quantities:
             out["critical_angle_A"] = analytic.critical_angle(params, "A")
         if "critical_angle_B" in self.quantities:
@@ -124,9 +127,9 @@ def _deepest_time(path: Path) -> float:
     return float(path.corner_times[int(np.argmax(path.waypoints[:, 1]))])
 
 
-def _continuum_quantities(params: Parameters, path: Path, tolerances: Tolerances,
+def _continuum_quantities(params: Parameters, path: Path, tolerances: Tolerances, limits: Limits,
                           times: np.ndarray | None) -> tuple[dict[str, float], np.ndarray | None]:
-    solution = solve_path(params, path, tolerances)
+    solution = solve_path(params, path, tolerances, limits)
     scan = scan_spans(solution)  # one scan serves every extremum
     out = {"normal_force_min": extremum(solution, "normal_force", largest=False, scan=scan)[1],
            "tangential_force_max": max(abs(extremum(solution, "tangential_force", largest=True, scan=scan)[1]),
@@ -161,10 +164,10 @@ def _continuum_quantities(params: Parameters, path: Path, tolerances: Tolerances
 DISCRETE_STEP_PER_SPACING = 0.5
 
 
-def _discrete_quantities(params: Parameters, path: Path, dx: float | None, n_steps: int | None,
+def _discrete_quantities(params: Parameters, path: Path, dx: float | None, n_steps: int | None, limits: Limits,
                          history_times: np.ndarray | None) -> tuple[dict[str, float], np.ndarray | None]:
     dt = None if n_steps is not None or dx is None else DISCRETE_STEP_PER_SPACING * dx / path.speed
-    run = simulate(params, path, method="discrete", dx=dx, dt=dt, n_steps=n_steps).isel(case=0)
+    run = simulate(params, path, method="discrete", dx=dx, dt=dt, n_steps=n_steps, limits=limits).isel(case=0)
     times = run["time"].values
     quantities = {name: run[name].values for name in ("normal_force", "tangential_force", "contact_area",
                                                       "sliding_fraction")}
@@ -409,7 +412,7 @@ def _client(scheduler, workers: int | None):
 def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, method: str = "continuum",
           dx: float | None = None, n_steps: int | None = None, tolerances: Tolerances = Tolerances(),
           quantities: Sequence[str] | None = None, scheduler: str | None = None, workers: int | None = None,
-          chunk_size: int = DEFAULT_CHUNK, history_samples: int | None = None,
+          chunk_size: int = DEFAULT_CHUNK, history_samples: int | None = None, limits: Limits = DEFAULT_LIMITS,
           store: str | os.PathLike | None = None, resume: bool = True,
           progress: Callable[[int, int], None] | None = None) -> xr.Dataset:
     """Run the model over a grid of parameters and return each run's scalar quantities.
@@ -446,6 +449,8 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     store : path, optional
         A Zarr directory written chunk by chunk as runs complete; with ``resume`` (default) a store of this
         same sweep is continued: its done chunks are read, not run again.
+    limits : Limits
+        What each run may use (a run past a limit is recorded as failed, with the estimate).
     progress : callable, optional
         Called with (runs done, runs in all) after each chunk.
 
@@ -492,8 +497,10 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
         raise ValueError(f"quantities={shown(quantities)} is not allowed; allowed: distinct names from "
                          f"{', '.join(QUANTITIES)}")
     samples = None if history_samples is None else check_count("history_samples", history_samples, 2)
+    if not isinstance(limits, Limits):
+        raise TypeError(f"limits={shown(limits)} ({type(limits).__name__}) is not allowed; allowed: a Limits")
     spec = SweepSpec(base, scenario, alpha, method, the_grid.names, tolerances,
-                     dx, n_steps, wanted, samples)
+                     dx, n_steps, wanted, samples, limits)
     _check_runs(spec, the_grid)
     scheduler = default_scheduler() if scheduler is None else scheduler
     if scheduler not in ("local", "serial") and not (isinstance(scheduler, str) and "://" in scheduler):

@@ -43,6 +43,9 @@ A study names its parameters, what to compute and where to write it::
     scenario = "A"               # or the study's [path]; alpha here if the grid does not sweep it
     method = "continuum"         # quantities, chunk_size, dx, n_steps, history_samples, scheduler, workers optional
 
+    [limits]                     # optional: the resource limits (mdr_events.Limits), as --limit
+    steps = 1e8                  # memory = "8GiB", springs, samples, waypoints; inf: no limit
+
     [output]                     # required
     directory = "out"            # relative to the study file; checked before anything is computed
     name = "my_study"            # file stem (default: the study file's stem); a plain name: no / or \\
@@ -85,6 +88,7 @@ from mdr_events.analysis.fit import fit
 from mdr_events.analysis.sweep import sweep
 from mdr_events.analysis.validate import validate
 from mdr_events.io.files import check_file_path, check_output_stem, prepare_output_directory
+from mdr_events.limits import DEFAULT_LIMITS, LIMIT_UNITS, Limits, parse_limit
 from mdr_events.models.continuum import Tolerances
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import scenario_paths, simulate
@@ -154,6 +158,7 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
               "alpha": ("number", False), "method": ("string", False), "dx": ("number", False),
               "n_steps": ("integer", False), "quantities": ("strings", False), "chunk_size": ("integer", False),
               "scheduler": ("string", False), "workers": ("integer", False), "history_samples": ("integer", False)},
+    "limits": {name: ("string or number", False) for name in LIMIT_UNITS},
     "output": {"directory": ("string", True), "name": ("string", False)},
 }
 REQUIRED_TABLES = ("output",)
@@ -177,6 +182,18 @@ class Study:
     @property
     def name(self) -> str:
         return self.tables["output"].get("name", self.source.stem)
+
+    @property
+    def limits(self) -> Limits:
+        """The ``[limits]`` table over the defaults (:class:`~mdr_events.limits.Limits`; ``memory`` may be
+        ``"8GiB"``; ``inf`` switches a limit off), as ``--limit NAME=VALUE`` on the command line."""
+        limits = DEFAULT_LIMITS
+        for name, value in self.tables.get("limits", {}).items():
+            try:
+                limits = parse_limit(f"{name}={value}", limits)
+            except ValueError as error:
+                raise StudyError(f"{os.fspath(self.source)}: [limits] {error}".replace("--limit ", "")) from None
+        return limits
 
 
 def _check_table(table: str, content: Any, where: str) -> None:
@@ -312,7 +329,9 @@ def load_study(path: str | os.PathLike) -> Study:
     where = os.fspath(source)
     _check_tables(document, where)
     params, provenance = _parameters(document.get("parameters"), where)
-    return Study(source, params, {table: dict(content) for table, content in document.items()}, provenance)
+    study = Study(source, params, {table: dict(content) for table, content in document.items()}, provenance)
+    study.limits  # a bad [limits] value is named now, not after the first computation
+    return study
 
 
 def _one_table(path: str | os.PathLike, table: str, what: str) -> tuple[dict[str, Any], str]:
@@ -401,7 +420,7 @@ def _validations(study: Study, progress: Callable[[str], None]) -> list[tuple[st
     for run, file, stem in files:
         progress(f"validate: {run}")
         try:
-            report = validate(file, study.params, path, **options)
+            report = validate(file, study.params, path, limits=study.limits, **options)
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where}: [validate] {error}") from None
         report.attrs.update(study.provenance, path_description=description)
@@ -427,7 +446,8 @@ def _fit_report(study: Study, progress: Callable[[str], None]) -> tuple[str, Ren
         options = {key: table[key] for key in ("names", "units", "time_origin", "noise") if key in table}
         bounds = {name: tuple(pair) for name, pair in table.get("bounds", {}).items()}
         progress(f"fit: {table['data']} (free: {', '.join(table['free'])})")
-        result = fit(data, *motion, free=table["free"], start=study.params, bounds=bounds, **options)
+        result = fit(data, *motion, free=table["free"], start=study.params, bounds=bounds, limits=study.limits,
+                     **options)
     except (ValueError, TypeError) as error:
         raise StudyError(f"{where}: [fit] {error}") from None
     result.dataset.attrs.update(study.provenance, path_description=description)
@@ -463,6 +483,7 @@ def run_sweep(study: Study, progress: Callable[[str], None] = print, scheduler: 
 
     try:
         result = sweep(grid, scenario, table.get("alpha"), base=study.params, store=store, resume=resume,
+                       limits=study.limits,
                        scheduler=scheduler or table.get("scheduler"),
                        workers=workers or table.get("workers"), progress=report, **options)
     except (ValueError, TypeError) as error:
@@ -524,7 +545,7 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
                                  "allowed: with method = 'continuum'")
             if tolerance_names:
                 settings["tolerances"] = Tolerances(**{name: float(settings.pop(name)) for name in tolerance_names})
-            dataset = simulate(study.params, scenario, alpha=alpha, method=method, **settings)
+            dataset = simulate(study.params, scenario, alpha=alpha, method=method, limits=study.limits, **settings)
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where}: [simulation] {error}") from None
         dataset.attrs.update(study.provenance)

@@ -99,3 +99,26 @@ def test_a_bad_grid_value_is_named_before_anything_runs(capsys, tmp_path):
     assert main(["sweep", str(study)]) == 2
     assert_one_error_line(capsys.readouterr().err, "[sweep] grid: Parameters.nu=0.7 is not allowed")
     assert not (tmp_path / "out" / "study_sweep.zarr").exists()
+
+
+def test_a_limits_table_reaches_every_run_of_a_study(capsys, tmp_path):
+    """[limits] as --limit: a discrete sweep past its steps is recorded as failed with the estimate; a simulation
+    past it is refused before it starts (exit 2); a bad value is named when the study is read."""
+    study = write_study(tmp_path, 'scheduler = "serial"\nmethod = "discrete"\ndx = 4e-6\nn_steps = 5000\n'
+                                  'quantities = ["tangential_force_max"]\n[limits]\nsteps = 1000\nmemory = "1GiB"')
+    assert load_study(study).limits == me.Limits(steps=1000, memory=2**30)
+    assert main(["sweep", str(study)]) == 0
+    swept = me.open_result(tmp_path / "out" / "study_sweep.nc")
+    assert swept["failed"].values.all() and "steps" in str(swept["error"].values.ravel()[0])
+    simulation = tmp_path / "simulation.toml"
+    simulation.write_text('[simulation]\nscenario = "A"\nalpha = [20]\nn_steps = 5000\n[limits]\nsteps = 1000\n'
+                          '[output]\ndirectory = "out2"\n')
+    capsys.readouterr()
+    assert main(["run", str(simulation)]) == 2
+    error = capsys.readouterr().err.splitlines()[-1]  # after the progress line, the one error line
+    assert error.startswith("mdr-events: error:") and "needs 5e+03 discrete time steps" in error
+    assert not (tmp_path / "out2").exists() or not any((tmp_path / "out2").iterdir())
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[simulation]\nscenario = "A"\nalpha = [20]\n[limits]\nsteps = "many"\n[output]\ndirectory = "o"\n')
+    with pytest.raises(StudyError, match=re.escape("[limits] 'steps=many' is not allowed")):
+        load_study(bad)
