@@ -228,7 +228,7 @@ def free_parameters(free, start: Parameters, bounds: Mapping[str, tuple[float, f
         low, high = _default_bounds(name)
         if name in bounds:
             pair = bounds[name]
-            if not (isinstance(pair, Sequence) and len(pair) == 2):
+            if isinstance(pair, (str, bytes)) or not (isinstance(pair, (Sequence, np.ndarray)) and len(pair) == 2):
                 raise ValueError(f"bounds[{name!r}]={shown(pair)} is not allowed; allowed: a pair (lower, upper) "
                                  f"in {_unit(name)}")
             given = [check_real(f"bounds[{name!r}]", value, f"a pair (lower, upper) of numbers in {_unit(name)}",

@@ -210,6 +210,15 @@ def test_bad_input_is_named(paper, change, message):
         me.fit(measured, "A", ALPHA, start=paper, time_origin="path_start", **arguments)
 
 
+def test_bounds_may_be_a_numpy_pair_and_bind_the_estimate(paper):
+    data = synthetic_measurement(paper, "A", ALPHA, times=times_of(paper, 301))
+    result = me.fit(data, "A", ALPHA, free=("tau0",), start=paper.replace(tau0=30e3), time_origin="path_start",
+                    bounds={"tau0": np.array([20e3, 40e3])})
+    assert result.parameters.tau0 == pytest.approx(40e3, rel=1e-9)  # the truth (42 kPa) lies beyond the bound
+    assert result.estimates["tau0"].identifiability is Identifiability.AT_BOUND
+    assert "tau0 sits on a bound" in result.dataset.attrs["notes"]
+
+
 def test_a_start_of_zero_cannot_be_fitted_on_a_log_scale(paper):
     with pytest.raises(ValueError, match=r"start.dgamma0=0.0 is not allowed for a free dgamma0"):
         me.fit({"time": np.arange(10.0), "normal_force": np.arange(10.0)}, "A", ALPHA, free=("dgamma0",),
