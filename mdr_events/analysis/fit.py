@@ -107,6 +107,15 @@ BOUND_SHARE = 1e-8
 NOISE_FLOOR_SHARE = 1e-12
 #: The confidence level of the intervals.
 CONFIDENCE = 0.95
+#: A fit whose residuals exceed this many times the noise (RMS, any quantity) does not describe the data.
+MISFIT_RMS = 2.0
+#: A measured sample is in contact where a quantity exceeds this many times its noise.
+CONTACT_NOISE_MULTIPLE = 5.0
+#: Contact lost this far apart in the data and the fit, or a record starting this far after the first contact
+#: (a share of the path's duration; at least two sample spacings), points to a wrong time origin.
+CONTACT_TIME_SHARE = 1e-3
+#: Measured and fitted magnitudes (largest |value|) further apart than this factor point to a wrong unit.
+MAGNITUDE_FACTOR = 10.0
 
 
 class Identifiability(enum.Enum):
@@ -463,6 +472,47 @@ def _notes(names: Sequence[str], quantities: Sequence[str], verdicts, correlatio
     return notes
 
 
+def _fit_warnings(measurement: Measurement, model: ModelCurves, rms: Mapping[str, float], first_contact: float,
+                  time_offset: float, duration: float, offset_free: bool) -> list[str]:
+    """What says the fit does not describe the data, whatever the intervals say: residuals far above the noise,
+    magnitudes or a time span that point to a wrong unit, a record that starts after the first contact (in
+    contact: the offset a fit of Δγ1 would hide), contact lost at another time than in the fit."""
+    warnings = []
+    for name, value in rms.items():
+        if value > MISFIT_RMS:
+            warnings.append(f"the residuals of {name} are {value:.3g} times its noise: the model does not describe "
+                            "the data (check the units, time_origin, the path and the free parameters)")
+    for name, values in measurement.values.items():
+        measured, fitted = np.nanmax(np.abs(values)), np.nanmax(np.abs(model.values[name]), initial=0.0)
+        if fitted > 0 and not 1.0 / MAGNITUDE_FACTOR <= measured / fitted <= MAGNITUDE_FACTOR:
+            warnings.append(f"the measured {name} reaches {measured:.3g} {QUANTITY_UNITS[name]}, the fit "
+                            f"{fitted:.3g}: check its unit (units=)")
+    times = measurement.path_time - time_offset
+    span = float(times[-1] - times[0])
+    if not duration / MAGNITUDE_FACTOR <= span <= MAGNITUDE_FACTOR * duration:
+        warnings.append(f"the measured time spans {span:.3g} s and the path lasts {duration:.3g} s: check the unit of "
+                        "time (units=)")
+    tolerance = max(CONTACT_TIME_SHARE * duration, 2.0 * float(np.median(np.diff(times))))
+    if offset_free:
+        return warnings
+    if model.in_contact[0] and times[0] - first_contact > tolerance:
+        warnings.append(f"the record starts {times[0] - first_contact:.4g} s after the path's first contact, in "
+                        f"contact: if it starts at the first contact, give time_origin="
+                        f"{measurement.candidate.time[0]:.6g}, or free time_offset")
+    # contact lost (a jump): where the data and the fit last exceed the same multiple of the noise
+    measured, fitted = np.zeros(times.size, bool), np.zeros(times.size, bool)
+    for name, values in measurement.values.items():
+        threshold = CONTACT_NOISE_MULTIPLE * measurement.noise[name]
+        measured |= np.nan_to_num(np.abs(values)) > threshold
+        fitted |= np.nan_to_num(np.abs(model.values[name])) > threshold
+    if measured.any() and fitted.any() and not measured[-1] and not fitted[-1]:
+        lost, fitted_lost = times[np.flatnonzero(measured)[-1]], times[np.flatnonzero(fitted)[-1]]
+        if abs(lost - fitted_lost) > tolerance:
+            warnings.append(f"the data lose contact at {lost:.6g} s, the fit at {fitted_lost:.6g} s (the path's "
+                            "clock): free time_offset or give time_origin")
+    return warnings
+
+
 def _intervals(free: FreeParameters, theta: np.ndarray, standard_error: np.ndarray, dof: int):
     """Estimates, standard errors and 95 % intervals in natural units (delta method for the log-scaled)."""
     quantile = float(stats.t.ppf(0.5 + CONFIDENCE / 2.0, max(dof, 1)))
@@ -513,7 +563,7 @@ class FitResult:
         (measured − fitted, ``nan`` where left out), ``left_out``; along ``quantity``: ``noise``,
         ``noise_given``, ``rms_normalised_residual``; scalars ``condition_number``, ``reduced_chi_square``,
         ``continuum_solves``, ``E_star``/``G_star`` (with ``*_standard_error``); attributes ``verdict``,
-        ``identifiable``, ``notes``.
+        ``identifiable``, ``notes``, ``warnings`` (:attr:`warnings`).
     parameters : Parameters
         The start with the fitted values in place.
     time_offset, depth_offset : float
@@ -552,6 +602,21 @@ class FitResult:
     @property
     def verdict(self) -> str:
         return str(self.dataset.attrs["verdict"])
+
+    @property
+    def warnings(self) -> list[str]:
+        """What says the fit does not describe the data (residuals far above the noise, a unit or a time origin
+        that looks wrong); empty for a good fit. The intervals assume the model describes the data."""
+        text = str(self.dataset.attrs["warnings"])
+        return [] if text == "none" else text.split("; ")
+
+    def __repr__(self) -> str:
+        lines = [f"FitResult: {self.verdict}"]
+        for name, estimate in self.estimates.items():
+            lines.append(f"  {name} = {estimate.value:.6g} ± {estimate.standard_error:.3g}, 95 % [{estimate.lower:.6g}, "
+                         f"{estimate.upper:.6g}] ({estimate.identifiability.value})")
+        lines += [f"  warning: {text}" for text in self.warnings]
+        return "\n".join(lines)
 
     @property
     def residuals(self) -> xr.Dataset:
@@ -660,7 +725,14 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     undetermined = [f"{n} ({v.value})" for n, v in zip(free_set.names, verdicts) if v is not Identifiability.DETERMINED]
     verdict = "every free parameter is determined" if identifiable else \
         "not every free parameter is determined: " + ", ".join(undetermined)
+    rms = dict(zip(problem.quantities, dataset["rms_normalised_residual"].values.tolist()))
+    fitted_path = _shifted(problem.path_of(params), depth_offset)
+    warnings = _fit_warnings(measurement, model, rms, fitted_path.first_contact_time(), time_offset,
+                             fitted_path.duration, "time_offset" in free_set.names)
+    if warnings:
+        verdict += f"; but the fit does not describe the data ({len(warnings)} warning{'s' * (len(warnings) > 1)})"
     attrs = dict(content=FIT_CONTENT, verdict=verdict, identifiable=int(identifiable), notes="; ".join(notes) or "none",
+                 warnings="; ".join(warnings) or "none",
                  free=", ".join(free_set.names), measured_source=read.source, time_origin=str(time_origin),
                  path_waypoints=nominal.describe(), path_speed=nominal.speed, optimizer_status=int(solution.status),
                  optimizer_message=str(solution.message), confidence=CONFIDENCE,

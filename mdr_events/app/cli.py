@@ -37,8 +37,8 @@ from mdr_events.app.report import reproduce
 from mdr_events.app.result_files import write_phase_diagram, write_simulation
 from mdr_events.analysis.fit import FREE_NAMES, fit
 from mdr_events.analysis.validate import TIME_ORIGINS, validate
-from mdr_events.app.study import load_parameters_file, load_path_file, load_study, run_study, run_sweep
-from mdr_events.io.candidates import CANDIDATE_QUANTITIES
+from mdr_events.app.study import load_parameters_file, load_path_file, load_study, run_study, run_sweep, sweep_store
+from mdr_events.io.candidates import CANDIDATE_QUANTITIES, UNITS
 from mdr_events.io.files import check_output_stem, prepare_output_directory
 from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters, from_preset
@@ -52,7 +52,8 @@ DESCRIPTION = ("Adhesive indentation and detachment at an angle with the Method 
 #: Exit status -> when.
 EXIT_STATUSES = {
     0: "done",
-    1: "validate: a run is outside its tolerance; fit: a free parameter is not determined",
+    1: "validate: a run is outside its tolerance; fit: a free parameter is not determined or the fit does not "
+       "describe the data",
     2: "bad input (an argument, a value, a study file, a file that cannot be read or written)",
     3: "the computation failed although the input was accepted (solver, memory, internal error)",
     130: "interrupted (Ctrl-C)",
@@ -371,7 +372,7 @@ def _measured_path_options(parser: argparse.ArgumentParser, what: str, start: bo
     parser.add_argument("--alpha", type=float, default=None, metavar="DEG", help="the scenario's angle in degrees")
 
 
-def _column_options(parser: argparse.ArgumentParser, what: str) -> None:
+def _column_options(parser: argparse.ArgumentParser, whose: str) -> None:
     """Your column names, units and time origin (``validate`` and ``fit``)."""
     parser.add_argument("--names", default=None, metavar="Q=COLUMN,...",
                         help="your column names, e.g. time=t,normal_force=Fn (quantities: "
@@ -379,8 +380,8 @@ def _column_options(parser: argparse.ArgumentParser, what: str) -> None:
     parser.add_argument("--units", default=None, metavar="Q=UNIT,...",
                         help="your units, e.g. time=ms,normal_force=mN,contact_area=mm2 (default SI)")
     parser.add_argument("--time-origin", default="first_contact", metavar="ORIGIN",
-                        help=f"what the {what}' time counts from: first_contact (default), path_start, or the "
-                             f"{what}' time of first contact in s")
+                        help=f"what the {whose} time counts from: first_contact (default), path_start, or the "
+                             f"{whose} time of first contact in s")
 
 
 def _numbers(option: str, text: str | None, allowed: Sequence[str]) -> dict[str, float]:
@@ -392,6 +393,14 @@ def _numbers(option: str, text: str | None, allowed: Sequence[str]) -> dict[str,
         except ValueError:
             raise UsageError(f"{option} {key}={value!r} is not allowed; allowed: a number") from None
     return numbers
+
+
+def _unit_factor(quantity: str, unit: str) -> float:
+    """The factor to SI of ``unit`` for ``quantity`` (:data:`mdr_events.io.candidates.UNITS`)."""
+    allowed = UNITS[CANDIDATE_QUANTITIES[quantity]]
+    if unit not in allowed:
+        raise UsageError(f"--units {quantity}={unit!r} is not allowed; allowed: {', '.join(map(repr, allowed))}")
+    return allowed[unit]
 
 
 def _bounds(items: Sequence[str] | None) -> dict[str, tuple[float, float]]:
@@ -426,25 +435,33 @@ def _command_fit(args: argparse.Namespace) -> int:
     if any(os.path.realpath(out / f"{stem}{suffix}") == os.path.realpath(args.data) for suffix in FIT_SUFFIXES):
         raise UsageError(f"--out {args.out}: writing the fit would overwrite {args.data}; allowed: another directory")
     quantities = list(CANDIDATE_QUANTITIES)
+    units = _pairs("--units", args.units, quantities)
+    # --noise in the units of --units (SI where none is given)
+    noise = {name: value * _unit_factor(name, units.get(name, CANDIDATE_QUANTITIES[name]))
+             for name, value in _numbers("--noise", args.noise, quantities[1:]).items()}
     # a scenario is passed by name: the fit rebuilds its way out (below the jump-off) for each trial
     motion = (path, None) if args.path is not None else (args.scenario, args.alpha)
     result = fit(args.data, *motion, free=args.free, start=params, bounds=_bounds(args.bounds),
-                 noise=_numbers("--noise", args.noise, quantities[1:]),
-                 names=_pairs("--names", args.names, quantities), units=_pairs("--units", args.units, quantities),
+                 noise=noise, names=_pairs("--names", args.names, quantities), units=units,
                  time_origin=_time_origin(args.time_origin), limits=_limits(args))
     result.dataset.attrs.update(provenance, path_description=description)
     rendered = render_fit(result.dataset, stem)
     written = write_rendered(rendered, out)
     print("\n".join(fit_console_summary(result.dataset, args.data)))
     print(f"  written: {', '.join(str(outcome.path) for outcome in written)}")
-    return 0 if result.identifiable else 1
+    return 0 if result.identifiable and not result.warnings else 1
 
 
 def _command_sweep(args: argparse.Namespace) -> int:
     if args.workers is not None and args.workers < 1:
         raise UsageError(f"--workers {args.workers} is not allowed; allowed: an integer >= 1")
-    outcomes = run_sweep(load_study(args.study), progress=_progress, scheduler=args.scheduler,
-                         workers=args.workers, resume=args.resume)
+    study = load_study(args.study)
+    store = sweep_store(study)
+    if store.exists() and not (args.resume or args.restart):
+        raise UsageError(f"{store} holds an earlier sweep; allowed: --resume to continue it (its done chunks are "
+                         "kept), --restart to start afresh")
+    outcomes = run_sweep(study, progress=_progress, scheduler=args.scheduler, workers=args.workers,
+                         resume=args.resume)
     for outcome in outcomes:
         print(outcome.path)
     return 0
@@ -502,7 +519,7 @@ def build_parser() -> argparse.ArgumentParser:
     _limit_option(check)
     check.add_argument("--tolerance", type=float, default=1e-3,
                        help="bound on each quantity's max error relative to its range (default 1e-3)")
-    _column_options(check, "runs")
+    _column_options(check, "runs'")
     check.add_argument("--dx", type=float, nargs="+", default=None, metavar="M",
                        help="the spring spacing of each run (m), in the order of the runs and after them, for a "
                             "convergence study of three or more runs (default: from names such as run_dx2um.csv)")
@@ -511,18 +528,19 @@ def build_parser() -> argparse.ArgumentParser:
     fitting = commands.add_parser(
         "fit", help="fit the model's parameters to measured curves (CSV or netCDF)",
         description="Fit free parameters of the continuum model to measured F_N, F_x, A or a (mdr_events.fit); "
-                    "write <data>_fit.nc, .md and .png into --out; exit 0 if every free parameter is determined, "
-                    "1 if one is not (not identifiable, poorly determined or at a bound), 2 for bad input.")
+                    "write <data>_fit.nc, .md and .png into --out; exit 0 if every free parameter is determined "
+                    "and the fit describes the data, 1 if not (a parameter not identifiable, poorly determined or "
+                    "at a bound; a warning such as residuals far above the noise), 2 for bad input.")
     fitting.add_argument("data", metavar="DATA", help="the measurement: a CSV file with a header row, or netCDF")
     fitting.add_argument("--free", nargs="+", required=True, metavar="NAME",
                          help=f"the parameters to fit: {', '.join(FREE_NAMES)}")
     _measured_path_options(fitting, "measurement", start=True)
     fitting.add_argument("--out", required=True, help="output directory")
     _limit_option(fitting)
-    _column_options(fitting, "measurement")
+    _column_options(fitting, "measurement's")
     fitting.add_argument("--noise", default=None, metavar="Q=SIGMA,...",
-                         help="the noise's standard deviation per quantity in SI units, e.g. normal_force=1e-3 "
-                              "(default: estimated from the data)")
+                         help="the noise's standard deviation per quantity, in the units of --units (SI where none "
+                              "is given), e.g. normal_force=2 with normal_force=mN (default: estimated from the data)")
     fitting.add_argument("--bounds", nargs="+", default=None, metavar="NAME=LOW:HIGH",
                          help="bounds of free parameters in SI units, e.g. tau0=1e3:1e6 (default: physical ranges)")
     fitting.set_defaults(run=_command_fit)
@@ -538,8 +556,12 @@ def build_parser() -> argparse.ArgumentParser:
                                "scheduler's address such as tcp://host:8786")
     sweeping.add_argument("--workers", type=int, default=None, metavar="N",
                           help="worker processes of the local cluster (default: the machine's cores)")
-    sweeping.add_argument("--resume", action="store_true",
-                          help="continue the store of an interrupted sweep (its done chunks are not run again)")
+    store = sweeping.add_mutually_exclusive_group()
+    store.add_argument("--resume", action="store_true",
+                       help="continue the store of an interrupted sweep (its done chunks are not run again)")
+    store.add_argument("--restart", action="store_true",
+                       help="start afresh, replacing the store of an earlier sweep (without --resume or --restart an "
+                            "existing store is an error)")
     sweeping.set_defaults(run=_command_sweep)
 
     run = commands.add_parser("run", help="run a study described in a TOML file (see mdr_events.app.study)")

@@ -69,6 +69,11 @@ def fit_markdown(fit: xr.Dataset, stem: str | None = None) -> str:
         lines += ["", f"Effective moduli at the fit: E* = {float(fit['E_star']):.6g} ± "
                       f"{float(fit['E_star_standard_error']):.3g} Pa, G* = {float(fit['G_star']):.6g} ± "
                       f"{float(fit['G_star_standard_error']):.3g} Pa."]
+    warnings = str(fit.attrs.get("warnings", "none"))
+    if warnings != "none":
+        lines += ["", "## Warnings: the fit does not describe the data", "",
+                  "The intervals above assume it does; fix these first.", ""] + \
+            [f"- **{warning}**" for warning in warnings.split("; ")]
     notes = str(fit.attrs.get("notes", "none"))
     if notes != "none":
         lines += ["", "## Notes", ""] + [f"- {note}" for note in notes.split("; ")]
@@ -96,6 +101,8 @@ def fit_markdown(fit: xr.Dataset, stem: str | None = None) -> str:
 def fit_console_summary(fit: xr.Dataset, name: str) -> list[str]:
     """A few lines for the terminal: the verdict and each estimate with its interval."""
     lines = [f"{name}: {fit.attrs['verdict']} ({int(fit['continuum_solves'])} continuum solves)"]
+    warnings = str(fit.attrs.get("warnings", "none"))
+    lines += [] if warnings == "none" else [f"  warning: {warning}" for warning in warnings.split("; ")]
     for parameter in fit["parameter"].values:
         row = fit.sel(parameter=parameter)
         unit = str(row["parameter_units"].values)

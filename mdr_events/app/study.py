@@ -99,7 +99,7 @@ if TYPE_CHECKING:
     from mdr_events.app.result_files import FileOutcome
     from mdr_events.app.validation_files import RenderedReport
 
-__all__ = ["Study", "StudyOutcomes", "load_study", "run_study", "run_sweep", "StudyError", "load_parameters_file",
+__all__ = ["Study", "StudyOutcomes", "load_study", "run_study", "run_sweep", "sweep_store", "StudyError", "load_parameters_file",
            "load_path_file"]
 
 
@@ -454,6 +454,11 @@ def _fit_report(study: Study, progress: Callable[[str], None]) -> tuple[str, Ren
     return f"fit {table['data']}", render_fit(result.dataset, stem)
 
 
+def sweep_store(study: Study) -> FilePath:
+    """Where the study's ``[sweep]`` store goes: ``<output directory>/<name>_sweep.zarr``."""
+    return study.output_directory / f"{study.name}_sweep.zarr"
+
+
 def run_sweep(study: Study, progress: Callable[[str], None] = print, scheduler: str | None = None,
               workers: int | None = None, resume: bool = False) -> list[FileOutcome]:
     """Run the study's ``[sweep]`` table and write ``<name>_sweep.zarr`` (the store, chunk by chunk; with
@@ -476,7 +481,7 @@ def run_sweep(study: Study, progress: Callable[[str], None] = print, scheduler: 
     options = {key: table[key] for key in ("method", "dx", "n_steps", "chunk_size", "history_samples") if key in table}
     if "quantities" in table:
         options["quantities"] = tuple(table["quantities"])
-    store = out / f"{study.name}_sweep.zarr"
+    store = sweep_store(study)
 
     def report(done: int, total: int) -> None:
         progress(f"sweep: {done}/{total} runs")

@@ -58,6 +58,7 @@ def test_with_one_percent_noise_every_parameter_lies_in_its_interval(paper, nois
     # the noise was estimated near its true level (1 % of each quantity's largest magnitude), and the weighted
     # residuals are then of unit size
     assert np.all(np.abs(noisy.dataset["rms_normalised_residual"].values - 1.0) < 0.1)
+    assert noisy.warnings == [] and "but the fit" not in noisy.verdict and "tau0 = " in repr(noisy)
 
 
 def test_the_intervals_cover_the_truth_at_their_nominal_rate(paper):
@@ -110,6 +111,29 @@ def test_a_depth_offset_is_found_without_noise(paper):
                     time_origin="path_start")
     assert result.depth_offset == pytest.approx(5e-6, rel=NOISE_FREE_RTOL)
     assert result.parameters.dgamma1 == pytest.approx(paper.dgamma1, rel=NOISE_FREE_RTOL)
+
+
+def test_a_clock_that_starts_late_is_flagged_not_fitted_away(paper):
+    """A record whose clock reads 5 s at the first contact, fitted with the default time origin (first contact at
+    t = 0): Δγ1 can move the pull-off to hide the offset, but the record starts 5 s after the contact, in contact."""
+    data = synthetic_measurement(paper, "A", ALPHA, times=times_of(paper, 801), relative_noise=0.01, seed=8,
+                                 time_shift=5.0)
+    result = me.fit(data, "A", ALPHA, free=("tau0", "dgamma1"), start=paper)
+    assert any("the record starts 5 s after the path's first contact, in contact: if it starts at the first "
+               "contact, give time_origin=5" in w for w in result.warnings), result.warnings
+    assert "but the fit does not describe the data" in result.verdict
+    fixed = me.fit(data, "A", ALPHA, free=("tau0", "dgamma1"), start=paper, time_origin=5.0)
+    assert fixed.warnings == [] and fixed.estimates["dgamma1"].lower <= paper.dgamma1 <= fixed.estimates["dgamma1"].upper
+
+
+def test_a_wrong_unit_is_flagged(paper):
+    """Times in ms read as s and forces in mN read as N: warnings name the unit, not the physics."""
+    data = synthetic_measurement(paper, "A", ALPHA, times=times_of(paper, 401), relative_noise=0.01, seed=9)
+    data = data.assign_coords(time=data["time"] * 1e3)
+    data["normal_force"] = data["normal_force"] * 1e3
+    result = me.fit(data, "A", ALPHA, free=("tau0",), start=paper, time_origin="path_start")
+    text = " ".join(result.warnings)
+    assert "check the unit of time" in text and "normal_force reaches" in text
 
 
 def test_e_and_nu_are_reported_as_effective_moduli(paper):

@@ -54,10 +54,14 @@ def test_resume_runs_nothing_again_for_a_finished_store(capsys, tmp_path):
     assert main(["sweep", str(study), "--scheduler", "serial"]) == 0
     first = me.open_result(tmp_path / "out" / "study_sweep.nc")
     capsys.readouterr()
+    assert main(["sweep", str(study), "--scheduler", "serial"]) == 2  # an existing store is not replaced silently
+    assert_one_error_line(capsys.readouterr().err, "holds an earlier sweep; allowed: --resume to continue it")
     assert main(["sweep", str(study), "--scheduler", "serial", "--resume"]) == 0
     out, err = capsys.readouterr()
     assert "/6 runs" not in err and "sweep: 6 runs, 0 failed" in err
     xr.testing.assert_identical(me.open_result(tmp_path / "out" / "study_sweep.nc"), first)
+    assert main(["sweep", str(study), "--scheduler", "serial", "--restart"]) == 0
+    assert "sweep: 6/6 runs" in capsys.readouterr().err  # every run again
 
 
 def test_a_study_run_also_sweeps(tmp_path):
