@@ -20,6 +20,7 @@ from __future__ import annotations
 import dataclasses
 import importlib.util
 import json
+import logging
 import math
 import os
 from dataclasses import dataclass
@@ -400,7 +401,8 @@ def _client(scheduler, workers: int | None):
                          "the extra: pip install 'mdr_events[scale]'") from None
     if scheduler == "local":
         cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
-                               host="127.0.0.1", dashboard_address=LOOPBACK_DASHBOARD)
+                               host="127.0.0.1", dashboard_address=LOOPBACK_DASHBOARD,
+                               silence_logs=logging.ERROR)  # not a page of warnings when Ctrl-C stops the workers
         try:
             return Client(cluster), cluster
         except BaseException:

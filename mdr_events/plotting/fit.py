@@ -7,7 +7,6 @@ Drawn from the fit's dataset only (never recomputed); registered for ``FitResult
 from __future__ import annotations
 
 import matplotlib.pyplot as plt
-import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 

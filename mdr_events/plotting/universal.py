@@ -4,7 +4,6 @@ angles over the dimensionless groups, with the paper's parameter sets marked. Dr
 from __future__ import annotations
 
 import matplotlib.pyplot as plt
-import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 

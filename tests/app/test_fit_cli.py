@@ -4,7 +4,6 @@ The measurement is synthetic: the continuum of scenario A at 20° with 1 % noise
 under a tribometer's column names, as an instrument would.
 """
 
-import re
 import subprocess
 
 import numpy as np
@@ -118,20 +117,6 @@ directory = "out"
     tau0 = fit.sel(parameter="tau0")
     assert float(tau0["lower_95"]) <= paper.tau0 <= float(tau0["upper_95"])
     assert fit_markdown(fit).startswith("# Fit of the model to `measured.csv`")
-
-
-@pytest.mark.parametrize("table, fragment", [
-    ('[fit]\ndata = "x.csv"\n', "[fit] lacks the required key(s) free"),
-    ('[fit]\ndata = "x.csv"\nfree = ["tau0"]\nbounds = { tau0 = 3 }\nscenario = "A"\nalpha = 20\n',
-     "[fit] bounds = {'tau0': 3} is not allowed"),
-    ('[fit]\ndata = "x.csv"\nfree = ["tau0"]\n', "[fit] lacks the key scenario"),
-    ('[fit]\ndata = "x.csv"\nfree = ["tau0"]\nscenario = "A"\nalpha = [10, 20]\n', "[fit] needs one angle"),
-])
-def test_bad_fit_tables_are_named(tmp_path, table, fragment):
-    study = tmp_path / "study.toml"
-    study.write_text(table + '[output]\ndirectory = "out"\n')
-    with pytest.raises(StudyError, match=re.escape(fragment)):
-        load_study(study)
 
 
 def test_a_missing_measurement_in_a_study_writes_nothing(tmp_path):

@@ -179,3 +179,25 @@ def test_results_say_which_parameters_came_from_the_preset(tmp_path, capsys):
         assert ds.attrs["parameters_from_preset"] == "E, nu, R, dgamma0, dgamma1, d_max, v"  # not tau0
     assert main(["run", str(write(tmp_path, ALL_EIGHT, "full.toml"))]) == 0
     assert "parameters_preset" not in me.open_result(tmp_path / "out" / "full_phase_diagram_A.nc").attrs
+
+
+@pytest.mark.parametrize("text, fragment", [
+    ('[fit]\ndata = "x.csv"\n', "[fit] lacks the required key(s) free"),
+    ('[fit]\ndata = "x.csv"\nfree = ["tau0"]\nbounds = { tau0 = 3 }\nscenario = "A"\nalpha = 20\n',
+     "[fit] bounds = {'tau0': 3} is not allowed"),
+    ('[fit]\ndata = "x.csv"\nfree = ["tau0"]\n', "[fit] lacks the key scenario"),
+    ('[fit]\ndata = "x.csv"\nfree = ["tau0"]\nscenario = "A"\nalpha = [10, 20]\n', "[fit] needs one angle"),
+    ('[sweep]\nscenario = "A"\n', "[sweep] needs one of grid"),
+    ('[sweep]\ngrid = { tau0 = [1e3] }\nsets = [{ tau0 = 1e3 }]\n', "[sweep] needs one of grid"),
+    ('[sweep]\ngrid = { tau0 = "x" }\n', "[sweep] grid = {'tau0': 'x'} is not allowed"),
+    ('[sweep]\ngrid = { tau0 = [1e3] }\nworkers = "2"\n', "[sweep] workers = '2' is not allowed"),
+    ('[sweep]\ngrid = { tau0 = [1e3] }\n[limits]\nsteps = "many"\n', "[limits] 'steps=many' is not allowed"),
+])
+def test_bad_fit_sweep_and_limits_tables_are_named(capsys, tmp_path, text, fragment):
+    path = tmp_path / "study.toml"
+    path.write_text(text + '[output]\ndirectory = "out"\n')
+    with pytest.raises(StudyError) as error:
+        load_study(path)
+    assert fragment in str(error.value) and str(path) in str(error.value)
+    assert main(["run", str(path)]) == 2
+    assert fragment in capsys.readouterr().err
