@@ -182,6 +182,21 @@ def test_results_say_which_parameters_came_from_the_preset(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("text, fragment", [
+    ("[validate]\nscenario = 'A'\nalpha = 20\n", "[validate] lacks the required key(s) runs"),
+    ("[validate]\nruns = 'run.csv'\nscenario = 'A'\nalpha = 20\n",
+     "[validate] runs = 'run.csv' is not allowed; allowed: a non-empty list of strings"),
+    ("[validate]\nruns = ['r.csv']\nscenario = 'A'\nalpha = 20\nnames = 3\n",
+     "[validate] names = 3 is not allowed; allowed: a table of strings"),
+    ("[validate]\nruns = ['r.csv']\nscenario = 'A'\nalpha = 20\ntolerance = 'tight'\n",
+     "[validate] tolerance = 'tight' is not allowed; allowed: a number"),
+    ("[validate]\nruns = ['r.csv']\nscenario = 'A'\nalpha = 20\ntime_origin = [1]\n",
+     "[validate] time_origin = [1] is not allowed; allowed: a string or a number"),
+    ("[validate]\nruns = ['r.csv']\nalpha = 20\n", "[validate] lacks the key scenario"),
+    ("[validate]\nruns = ['r.csv']\n[simulation]\nscenario = 'A'\nalpha = [10, 20]\n",
+     "[validate] needs one angle; [simulation] alpha = [10, 20] is not allowed"),
+    ("[validate]\nruns = ['r.csv']\nscenario = 'A'\nalpha = 20\n[path]\nwaypoints = [[0, 0], [0, 1e-4]]\n",
+     "[validate] scenario and alpha are not allowed with a [path]"),
+    ("[validate]\nruns = ['r.csv']\nscenario = 'A'\nalpah = 20\n", "unknown key 'alpah' in [validate]"),
     ('[fit]\ndata = "x.csv"\n', "[fit] lacks the required key(s) free"),
     ('[fit]\ndata = "x.csv"\nfree = ["tau0"]\nbounds = { tau0 = 3 }\nscenario = "A"\nalpha = 20\n',
      "[fit] bounds = {'tau0': 3} is not allowed"),
@@ -193,7 +208,8 @@ def test_results_say_which_parameters_came_from_the_preset(tmp_path, capsys):
     ('[sweep]\ngrid = { tau0 = [1e3] }\nworkers = "2"\n', "[sweep] workers = '2' is not allowed"),
     ('[sweep]\ngrid = { tau0 = [1e3] }\n[limits]\nsteps = "many"\n', "[limits] 'steps=many' is not allowed"),
 ])
-def test_bad_fit_sweep_and_limits_tables_are_named(capsys, tmp_path, text, fragment):
+def test_bad_validate_fit_sweep_and_limits_tables_are_named(capsys, tmp_path, text, fragment):
+    """Named when the study is read, and by `mdr-events run` in one line with exit status 2."""
     path = tmp_path / "study.toml"
     path.write_text(text + '[output]\ndirectory = "out"\n')
     with pytest.raises(StudyError) as error:

@@ -15,7 +15,7 @@ from matplotlib.figure import Figure
 
 import mdr_events as me
 from mdr_events.app.cli import main
-from mdr_events.app.study import StudyError, load_study
+from mdr_events.app.study import load_study
 from mdr_events.app.validation_files import validation_markdown, write_validation
 from mdr_events.plotting.validation import plot_validation
 
@@ -308,33 +308,6 @@ directory = "out"
                      "study_validation_mine.md", "study_validation_mine.nc", "study_validation_mine.png"]
     report = me.open_result(tmp_path / "out" / "study_validation_mine.nc")
     assert list(report["quantity"].values) == ["tangential_force"] and report.attrs["verdict"] == "pass"
-
-
-@pytest.mark.parametrize("text, fragment", [
-    ("[validate]\nscenario = 'A'\nalpha = 20\n", "[validate] lacks the required key(s) runs"),
-    ("[validate]\nruns = 'run.csv'\nscenario = 'A'\nalpha = 20\n",
-     "[validate] runs = 'run.csv' is not allowed; allowed: a non-empty list of strings"),
-    ("[validate]\nruns = ['r.csv']\nscenario = 'A'\nalpha = 20\nnames = 3\n",
-     "[validate] names = 3 is not allowed; allowed: a table of strings"),
-    ("[validate]\nruns = ['r.csv']\nscenario = 'A'\nalpha = 20\ntolerance = 'tight'\n",
-     "[validate] tolerance = 'tight' is not allowed; allowed: a number"),
-    ("[validate]\nruns = ['r.csv']\nscenario = 'A'\nalpha = 20\ntime_origin = [1]\n",
-     "[validate] time_origin = [1] is not allowed; allowed: a string or a number"),
-    ("[validate]\nruns = ['r.csv']\nalpha = 20\n", "[validate] lacks the key scenario"),
-    ("[validate]\nruns = ['r.csv']\n[simulation]\nscenario = 'A'\nalpha = [10, 20]\n",
-     "[validate] needs one angle; [simulation] alpha = [10, 20] is not allowed"),
-    ("[validate]\nruns = ['r.csv']\nscenario = 'A'\nalpha = 20\n[path]\nwaypoints = [[0, 0], [0, 1e-4]]\n",
-     "[validate] scenario and alpha are not allowed with a [path]"),
-    ("[validate]\nruns = ['r.csv']\nscenario = 'A'\nalpah = 20\n", "unknown key 'alpah' in [validate]"),
-])
-def test_bad_validate_tables_are_named(capsys, tmp_path, text, fragment):
-    path = tmp_path / "study.toml"
-    path.write_text(text + "[output]\ndirectory = 'out'\n")
-    with pytest.raises(StudyError) as error:
-        load_study(path)
-    assert fragment in str(error.value) and str(path) in str(error.value)
-    assert main(["run", str(path)]) == 2
-    assert fragment in capsys.readouterr().err
 
 
 @pytest.mark.parametrize("change, fragment", [
