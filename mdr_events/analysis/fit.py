@@ -54,7 +54,6 @@ from mdr_events.io.datasets import figure_of, register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
 from mdr_events.models.paths import Path
-from mdr_events.models.simulate import scenario_paths
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 from mdr_events.validation import check_real, shown
 
@@ -181,17 +180,15 @@ class FreeParameters:
         return {"time_offset": self.duration, "depth_offset": self.depth_scale}.get(name, 1.0)
 
     def to_scaled(self, values: Sequence[float]) -> np.ndarray:
-        return np.array([math.log(v) if n in LOG_SCALED else v / self.scale(n) for n, v in zip(self.names, values)])
+        """``θ`` of natural values (a bound of 0 of a log-scaled parameter is ``-inf``)."""
+        return np.array([(math.log(v) if v > 0 else -math.inf) if n in LOG_SCALED else v / self.scale(n)
+                         for n, v in zip(self.names, values)])
 
     def to_natural(self, theta: np.ndarray) -> np.ndarray:
         return np.array([math.exp(t) if n in LOG_SCALED else t * self.scale(n) for n, t in zip(self.names, theta)])
 
     def scaled_bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        with np.errstate(divide="ignore"):
-            return (np.array([np.log(lo) if n in LOG_SCALED else lo / self.scale(n)
-                              for n, lo in zip(self.names, self.lower)]),
-                    np.array([np.log(hi) if n in LOG_SCALED else hi / self.scale(n)
-                              for n, hi in zip(self.names, self.upper)]))
+        return self.to_scaled(self.lower), self.to_scaled(self.upper)
 
     def start_values(self) -> np.ndarray:
         return np.array([0.0 if n in OFFSETS else getattr(self.start, n) for n in self.names])
@@ -634,15 +631,6 @@ class FitResult:
         return figure_of(self.dataset)(self.dataset, title=title)
 
 
-def _path_of(start: Parameters, path, alpha) -> Callable[[Parameters], Path]:
-    """The path at given parameters: a Path as it is; a scenario's rebuilt (its way out ends below the
-    jump-off, which depends on the parameters)."""
-    resolved = resolve_path(start, path, alpha)
-    if isinstance(path, Path):
-        return lambda params: resolved
-    return lambda params: scenario_paths(params, path, [alpha])[0][0] if params is not start else resolved
-
-
 def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], start: Parameters,
         bounds: Mapping[str, tuple[float, float]] | None = None, noise: Mapping[str, float] | None = None,
         names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
@@ -691,7 +679,8 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     nominal = resolve_path(start, path, alpha)
     measurement = _measurement(read, nominal, time_origin, noise)
     free_set = free_parameters(free, start, bounds, nominal.duration, max(nominal.max_depth, start.d_max))
-    problem = _Problem(free_set, measurement, _path_of(start, path, alpha), tolerances, limits)
+    # a scenario is rebuilt per trial (its way out ends below the jump-off, which depends on the parameters)
+    problem = _Problem(free_set, measurement, lambda params: resolve_path(params, path, alpha), tolerances, limits)
     samples = sum(int(np.count_nonzero(np.isfinite(v))) for v in measurement.values.values())
     if samples <= len(free_set.names):
         raise ValueError(f"{read.source}: {samples} finite samples for {len(free_set.names)} free parameters; "
@@ -705,7 +694,7 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     theta = solution.x
     model, residual = problem.evaluated(theta)
     curves = model.values
-    jacobian = problem.jacobian(theta)
+    jacobian = solution.jac  # our Jacobian at the optimum: least_squares asked for it there last
     compared = {name: np.isfinite(curves[name]) & np.isfinite(measurement.values[name])
                 for name in problem.quantities}
     n_compared = sum(int(np.count_nonzero(mask)) for mask in compared.values())

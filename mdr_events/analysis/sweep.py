@@ -313,23 +313,30 @@ def _signature(spec: SweepSpec, grid: Grid) -> str:
                        "history_samples": spec.history_samples}, sort_keys=True)
 
 
-def _history_variables(histories: np.ndarray | None, dims: tuple[str, ...], shape: tuple[int, ...]) -> dict:
-    if histories is None:
-        return {}
-    return {f"history_{name}": ((*dims, "sample"), histories[:, i, :].reshape(*shape, histories.shape[-1]),
-                                {"units": unit, "long_name": f"{text} at times spread evenly over the run's path"})
-            for i, (name, (unit, text)) in enumerate(HISTORY_QUANTITIES.items())}
+def _run_variables(quantities: Sequence[str], values: np.ndarray, errors: Sequence[str],
+                   histories: np.ndarray | None, dims: tuple[str, ...], shape: tuple[int, ...],
+                   error_dtype=str) -> dict:
+    """The variables of the runs (quantities, histories, ``failed``, ``error``) laid out in ``dims`` of ``shape``:
+    the store's flat ``run``, or the grid's dimensions."""
+    data = {name: (dims, values[:, i].reshape(shape), {"units": QUANTITIES[name][0], "long_name": QUANTITIES[name][1]})
+            for i, name in enumerate(quantities)}
+    if histories is not None:
+        data.update({f"history_{name}": ((*dims, "sample"), histories[:, i, :].reshape(*shape, histories.shape[-1]),
+                                         {"units": unit, "long_name": f"{text} at times spread evenly over the "
+                                                                      "run's path"})
+                     for i, (name, (unit, text)) in enumerate(HISTORY_QUANTITIES.items())})
+    data["failed"] = (dims, np.array([bool(e) for e in errors], dtype=np.int8).reshape(shape),
+                      {"units": "1", "long_name": "1: the run raised (see error)"})
+    data["error"] = (dims, np.array(errors, dtype=error_dtype).reshape(shape),
+                     {"units": "1", "long_name": "the error of a failed run"})
+    return data
 
 
 def _flat_dataset(quantities: Sequence[str], values: np.ndarray, errors: Sequence[str],
                   done: np.ndarray, histories: np.ndarray | None = None) -> xr.Dataset:
-    data = {name: (("run",), values[:, i], {"units": QUANTITIES[name][0], "long_name": QUANTITIES[name][1]})
-            for i, name in enumerate(quantities)}
-    data.update(_history_variables(histories, ("run",), (len(errors),)))
-    data["failed"] = (("run",), np.array([bool(e) for e in errors], dtype=np.int8),
-                      {"units": "1", "long_name": "1: the run raised (see error)"})
-    data["error"] = (("run",), np.array(errors, dtype=f"<U{ERROR_CHARACTERS}"),
-                     {"units": "1", "long_name": "the error of a failed run"})
+    """The store's layout: the runs along ``run`` (errors of a fixed width), and whether each is ``done``."""
+    data = _run_variables(quantities, values, errors, histories, ("run",), (len(errors),),
+                          error_dtype=f"<U{ERROR_CHARACTERS}")
     data["done"] = (("run",), done.astype(np.int8), {"units": "1", "long_name": "1: the run's chunk is written"})
     return xr.Dataset(data)
 
@@ -560,20 +567,13 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
 def _result(spec: SweepSpec, grid: Grid, values: np.ndarray, errors: list[str],
             histories: np.ndarray | None) -> xr.Dataset:
     dims = (TABLE_DIMENSION,) if grid.table else grid.names
-    shape = grid.shape
-    data = {name: (dims, values[:, i].reshape(shape), {"units": QUANTITIES[name][0], "long_name": QUANTITIES[name][1]})
-            for i, name in enumerate(spec.quantities)}
-    failed = np.array([bool(e) for e in errors], dtype=np.int8).reshape(shape)
-    data["failed"] = (dims, failed, {"units": "1", "long_name": "1: the run raised (see error)"})
-    data["error"] = (dims, np.array(errors, dtype=str).reshape(shape), {"units": "1",
-                                                                        "long_name": "the error of a failed run"})
-    data.update(_history_variables(histories, dims, shape))
+    data = _run_variables(spec.quantities, values, errors, histories, dims, grid.shape)
     units = dict(PARAMETER_UNITS, **EXTRA_NAMES)
     coords = {name: ((TABLE_DIMENSION,) if grid.table else (name,), grid.coords[name],
                      {"units": units[name], "long_name": f"swept {name}"}) for name in grid.names}
     scenario = spec.scenario if isinstance(spec.scenario, str) else "custom path"
     attrs = dict(content=SWEEP_CONTENT, scenario=scenario, method=spec.method, swept=", ".join(grid.names),
-                 runs=int(len(errors)), failed_runs=int(failed.sum()))
+                 runs=int(len(errors)), failed_runs=int(data["failed"][1].sum()))
     if spec.alpha is not None:
         attrs["alpha"] = spec.alpha
     if not isinstance(spec.scenario, str):

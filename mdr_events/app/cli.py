@@ -38,7 +38,7 @@ from mdr_events.app.result_files import write_phase_diagram, write_simulation
 from mdr_events.analysis.fit import FREE_NAMES, fit
 from mdr_events.analysis.validate import TIME_ORIGINS, validate
 from mdr_events.app.study import load_parameters_file, load_path_file, load_study, run_study, run_sweep, sweep_store
-from mdr_events.io.candidates import CANDIDATE_QUANTITIES, UNITS
+from mdr_events.io.candidates import CANDIDATE_QUANTITIES, unit_factor
 from mdr_events.io.files import check_output_stem, prepare_output_directory
 from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters, from_preset
@@ -395,14 +395,6 @@ def _numbers(option: str, text: str | None, allowed: Sequence[str]) -> dict[str,
     return numbers
 
 
-def _unit_factor(quantity: str, unit: str) -> float:
-    """The factor to SI of ``unit`` for ``quantity`` (:data:`mdr_events.io.candidates.UNITS`)."""
-    allowed = UNITS[CANDIDATE_QUANTITIES[quantity]]
-    if unit not in allowed:
-        raise UsageError(f"--units {quantity}={unit!r} is not allowed; allowed: {', '.join(map(repr, allowed))}")
-    return allowed[unit]
-
-
 def _bounds(items: Sequence[str] | None) -> dict[str, tuple[float, float]]:
     """``["tau0=1e3:1e6"]`` -> ``{"tau0": (1e3, 1e6)}``; a bad item names the option."""
     bounds = {}
@@ -437,7 +429,7 @@ def _command_fit(args: argparse.Namespace) -> int:
     quantities = list(CANDIDATE_QUANTITIES)
     units = _pairs("--units", args.units, quantities)
     # --noise in the units of --units (SI where none is given)
-    noise = {name: value * _unit_factor(name, units.get(name, CANDIDATE_QUANTITIES[name]))
+    noise = {name: value * unit_factor(name, units.get(name, CANDIDATE_QUANTITIES[name]), "--units")
              for name, value in _numbers("--noise", args.noise, quantities[1:]).items()}
     # a scenario is passed by name: the fit rebuilds its way out (below the jump-off) for each trial
     motion = (path, None) if args.path is not None else (args.scenario, args.alpha)

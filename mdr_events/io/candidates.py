@@ -16,7 +16,7 @@ from typing import Mapping, NamedTuple
 import numpy as np
 import xarray as xr
 
-__all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate"]
+__all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor"]
 
 #: The quantities a candidate may hold, with their SI unit; ``time`` is required, and at least one other.
 CANDIDATE_QUANTITIES: dict[str, str] = {
@@ -48,7 +48,8 @@ class Candidate(NamedTuple):
     unused: tuple[str, ...] = ()  #: the candidate's columns that were not read (not named as a quantity)
 
 
-def _factor(quantity: str, unit: str, source: str) -> float:
+def unit_factor(quantity: str, unit: str, source: str) -> float:
+    """The factor to SI of ``unit`` for ``quantity`` (:data:`UNITS`); ``ValueError`` naming ``source`` else."""
     allowed = UNITS[CANDIDATE_QUANTITIES[quantity]]
     if unit not in allowed:
         raise ValueError(f"{source}: units[{quantity!r}]={unit!r} is not allowed; allowed: "
@@ -148,7 +149,7 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
                                  f"{', '.join(columns) or 'none'}")
             continue
         unit = units.get(quantity, declared.get(column, CANDIDATE_QUANTITIES[quantity]))
-        found[quantity] = columns[column] * _factor(quantity, unit, source)
+        found[quantity] = columns[column] * unit_factor(quantity, unit, source)
         used.add(column)
     if "time" not in found:
         raise ValueError(f"{source}: no time column; columns found: {', '.join(columns) or 'none'}; allowed: a column "
