@@ -15,6 +15,7 @@ from mdr_events.models.continuum.branch import FOLD_SHARE
 from mdr_events.models.continuum.plan import Action
 
 RTOL = 1e-14
+EPS = float(np.finfo(float).eps)
 
 
 @pytest.fixture(scope="module")
@@ -92,8 +93,8 @@ def test_anchor_map_values_continue_across_pieces(anchors):
 
 
 @pytest.mark.parametrize("share", [-0.2, 0.0, 0.3, 0.7, 1.2])
-def test_zone_sizes_and_clipped_integral_match_a_fine_grid(anchors, share):
-    """Both caps' zone sizes |{ξ <= a: ±Y <= ±level}| and ∫ clip(Y, lower, upper) dξ against the midpoint
+def test_zone_sizes_and_clipped_shift_integral_match_a_fine_grid(anchors, share):
+    """Both caps' zone sizes |{ξ <= a: ±Y <= ±level}| and ∫ clip(x − Y, −ū, ū) dξ against the midpoint
     rule on 400 001 points: its error is below one cell per front (a / 400 001 ~ 1e-8 m) and its
     quadrature error O(h²)."""
     a = 3.8e-3
@@ -105,9 +106,10 @@ def test_zone_sizes_and_clipped_integral_match_a_fine_grid(anchors, share):
                                                                        abs=3 * cell)
     assert anchors.zone_size(Cap.NEGATIVE, level, a) == pytest.approx(np.count_nonzero(values >= level) * cell,
                                                                        abs=3 * cell)
-    lower, upper = level - 0.25 * top, level + 0.25 * top
-    expected = np.clip(values, lower, upper).sum() * cell
-    assert anchors.clipped_integral(lower, upper, a) == pytest.approx(expected, rel=1e-8, abs=1e-8 * top * a)
+    x, cap_shift = level, 0.25 * top
+    expected = np.clip(x - values, -cap_shift, cap_shift).sum() * cell
+    assert anchors.clipped_shift_integral(x, cap_shift, a) == pytest.approx(expected, rel=1e-8,
+                                                                             abs=1e-8 * top * a)
 
 
 def test_clip_materialises_the_play_operator_and_merges_constants(anchors):
@@ -149,6 +151,18 @@ def test_algebraic_force_of_a_uniform_field(model):
     assert full == pytest.approx(model.params.tau0 * math.pi * a**2, rel=1e-12)
     assert anchors.tangential_force(K, G, 1e-6 - 2 * K * a, a) == pytest.approx(-full, rel=1e-12)
     assert anchors.tangential_force(K, G, 1.0, 0.0) == 0.0
+
+
+@pytest.mark.parametrize("offset_per_cap", [1e6, 1e9])
+def test_a_full_slip_far_from_the_origin_keeps_its_digits(model, offset_per_cap):
+    """The springs all at the cap give ±τ0 π a² to rounding wherever the indenter is: at 1e-3° the indenter
+    sits 1e9 ū from the origin, and ``x a − ∫ clip(Y)`` kept only ``1e-16 · 1e9`` of the force."""
+    a, G, K = 3e-3, model.params.G_star, model.K
+    x0 = offset_per_cap * K * a
+    uniform = AnchorMap(model.grow, RTOL, [Piece(0.0, a, x0)])
+    for sign in (1.0, -1.0):
+        force = uniform.tangential_force(K, G, x0 + sign * 3 * K * a, a)
+        assert force == pytest.approx(sign * model.params.tau0 * math.pi * a**2, rel=8 * EPS)
 
 
 def _resting_at(x: float) -> Segment:

@@ -247,21 +247,30 @@ class AnchorMap:
                 total[inside] += np.clip(part, 0.0, np.broadcast_to(length, total.shape)[inside])
         return total
 
-    def clipped_integral(self, lower: float, upper: float, radius: float) -> float:
-        """``∫_0^a clip(Y(ξ), lower, upper) dξ``: the effective anchors' integral."""
+    def clipped_shift_integral(self, x: float, cap_shift: float, radius: float) -> float:
+        """``∫_0^a clip(x − Y(ξ), −ū, ū) dξ`` with ``ū = cap_shift``: the springs' shifts, integrated.
+
+        The springs at a bound give ``±ū`` times their length exactly; only those inside the window are
+        differences ``x − Y``. (The same integral as ``x a − ∫ clip(Y, x − ū, x + ū)``, which loses the
+        digits of ``|x| / ū``: a path at 1e-3° has ``x`` 1e9 times ``ū``, and a full slip lost 1e-7 of its
+        force.)
+        """
+        lower, upper = x - cap_shift, x + cap_shift
         total = 0.0
         for p in self.in_contact(radius):
             end = min(p.end, radius)
             if end <= p.start:
                 continue
             if p.constant:
-                total += (end - p.start) * min(max(p.x0, lower), upper)
+                total += (end - p.start) * min(max(x - p.x0, -cap_shift), cap_shift)
                 continue
-            # the piece is monotone: it sits at one bound up to the first cut, at the other beyond the second
-            start_bound, end_bound = (lower, upper) if p.ratio > 0 else (upper, lower)
+            # the piece is monotone: its springs are at one bound up to the first cut, at the other beyond
+            # the second; a rising piece has its low anchors (shift +ū) first
+            start_bound, end_bound, start_shift = (lower, upper, cap_shift) if p.ratio > 0 else (upper, lower, -cap_shift)
             first = min(max(self.inverse(p, start_bound), p.start), end)
             second = min(max(self.inverse(p, end_bound), p.start), end)
-            total += start_bound * (first - p.start) + self.integral(p, first, second) + end_bound * (end - second)
+            inside = x * (second - first) - self.integral(p, first, second) if second > first else 0.0
+            total += start_shift * (first - p.start) + inside - start_shift * (end - second)
         return total
 
     def tangential_force(self, K: float, G_star: float, x: float, a: float) -> float:
@@ -269,5 +278,5 @@ class AnchorMap:
         window at ``x``, without integration (0 out of contact)."""
         if not a > 0 or not self.pieces:
             return 0.0
-        return 2.0 * G_star * (x * a - self.clipped_integral(x - K * a, x + K * a, a))
+        return 2.0 * G_star * self.clipped_shift_integral(x, K * a, a)
 

@@ -138,7 +138,11 @@ class SpanIntegrator:
         self.scale = 1.0
         if self.moving:
             rtol = model.tolerances.radius_rtol
-            a_start = self.branch.radius(self.segment.d(t0), rtol)
+            # the radius the state holds (an event's root, or the plan's jump): the radius of the depth at
+            # t0 differs from it by the depth's rounding over the branch's slope, which near the end of a
+            # contact (a depth of 1e-12 m, computed from 1e-4 m) is 1e-11 of it, beyond the slip criterion's
+            # resolution of the level
+            a_start = span.pinned_radius if span.pinned_radius > 0 else self.branch.radius(self.segment.d(t0), rtol)
             at_fold = self.shrinking and t1 == self.segment.time_at_depth(self.branch.jump_off_depth)
             a_stop = self.branch.jump_off_radius if at_fold else self.branch.radius(self.segment.d(t1), rtol)
             # the radius is integrated in units of its largest value on the span: solve_ivp finds an event's

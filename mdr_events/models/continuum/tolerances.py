@@ -20,8 +20,12 @@ TIME_ULPS = 4
 #: Rising slip events cross a level this many ulp of the lengths involved above zero (see
 #: :class:`~mdr_events.models.continuum.span.SpanIntegrator`).
 LEVEL_ULPS = 16
-#: A slip front within this share of the lengths involved of a piece's end is in the next piece.
-PIECE_SHARE = 1e-9
+#: A slip front within this share of the lengths involved of a piece's end is in the next piece. The
+#: levels and piece values carry the rounding of the radius roots (``radius_rtol`` <= MAX_RADIUS_RTOL,
+#: 1e-13, times the growth ratio's lever ``|v_x/v_d| d0'(a) a``, itself at most the travel of
+#: :func:`~mdr_events.models.continuum.zones.indenter_travel`) and a few ulp of the positions: ten times
+#: the loosest root is the smallest share that separates a front at a piece's end from the next piece.
+PIECE_SHARE = 1e-12
 #: Event roots this close (relative) fire together.
 SIMULTANEOUS_SHARE = 1e-12
 #: A radius that drops by more than this share at the start of detachment drops onto the Δγ1 branch.
@@ -42,10 +46,10 @@ EPS = float(np.finfo(float).eps)
 
 #: The smallest ``rtol`` ``solve_ivp`` honours (it raises smaller ones to this, with a warning).
 MIN_RTOL = 100 * EPS
-#: The loosest ``radius_rtol``: the event logic separates slip fronts and piece ends to PIECE_SHARE (1e-9)
-#: of the lengths, so a radius must be known far better. The radius root converges quadratically: a
-#: looser tolerance saves at most one Newton step.
-MAX_RADIUS_RTOL = 1e-10
+#: The loosest ``radius_rtol``: the event logic separates slip fronts and piece ends to PIECE_SHARE (1e-12)
+#: of the lengths, so a radius must be known better. The radius root converges quadratically: a looser
+#: tolerance saves at most one Newton step.
+MAX_RADIUS_RTOL = 1e-13
 
 
 @dataclass(frozen=True)
@@ -59,7 +63,7 @@ class Tolerances:
     atol : float
         Absolute tolerance (N) of ``solve_ivp`` for ``F_x``, finite and > 0 (default 1e-14 N).
     radius_rtol : float
-        Relative accuracy of the contact radius and slip front root-finding, in [eps, 1e-10]
+        Relative accuracy of the contact radius and slip front root-finding, in [eps, 1e-13]
         (default 1e-14; see :data:`MAX_RADIUS_RTOL`).
     """
 
