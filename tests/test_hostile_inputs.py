@@ -14,8 +14,9 @@ import pytest
 
 import mdr_events as me
 from mdr_events.limits import DEFAULT_LIMITS, Limits, ResourceLimitError, parse_limit
-from mdr_events.models.continuum import solve_path
-from mdr_events.models.continuum.model import MAX_TRAVEL_PER_CAP
+from mdr_events.models.continuum import (MAX_TRAVEL_PER_CAP, ContinuumModel, kinematics, resolution,
+                                         solve_path)
+from mdr_events.models.simulate import scenario_paths
 
 #: |F_x| <= τ0 A holds to the solver's accuracy (relative to the largest τ0 A of the run).
 CAP_SHARE = 1e-9
@@ -284,6 +285,42 @@ def test_the_adhesive_strength_is_exact_at_small_angles(alpha):
     ds = me.simulate(params, "A", alpha=alpha, method="continuum")
     assert float(ds["normal_force_min"].values[0]) == pytest.approx(-1.5 * math.pi * params.dgamma1 * params.R,
                                                                     rel=1e-9)
+
+
+def _random_small_angle_case(rng: np.random.Generator):
+    """A valid set over wide ranges (E 1e5-1e10 Pa, τ0 1e2-1e6 Pa, R 1-100 mm, d_max 10 µm-1 mm, Δγ0 = 0 in a
+    quarter of the draws) and an angle log-uniform in [1e-3°, 3°], scenario A or B+."""
+    dgamma0 = 0.0 if rng.random() < 0.25 else 10 ** rng.uniform(-4, -1)
+    params = me.Parameters(E=10 ** rng.uniform(5, 10), nu=rng.uniform(0.0, 0.5), R=10 ** rng.uniform(-3, -1),
+                           tau0=10 ** rng.uniform(2, 6), dgamma0=dgamma0, dgamma1=dgamma0 + 10 ** rng.uniform(-3, 0),
+                           d_max=10 ** rng.uniform(-5, -3), v=1e-6)
+    return params, float(10 ** rng.uniform(-3, math.log10(3.0))), str(rng.choice(["A", "B+"]))
+
+
+def test_a_random_sweep_at_small_angles_runs_clean():
+    """80 random sets at 1e-3° to 3° (seed 2026; 17 of 600 such sets 'made no progress', and the earlier
+    resolution rule refused 43 % of them): each run is refused exactly when its travel exceeds
+    MAX_TRAVEL_PER_CAP ū (measured on 1000 draws: 6 %), and every other keeps |F_x| <= τ0 A to the
+    positions' rounding and, in scenario A below α_c, slides first at d_crit (18) to rounding."""
+    rng = np.random.default_rng(2026)
+    ran = 0
+    for _ in range(80):
+        params, alpha, scenario = _random_small_angle_case(rng)
+        path = scenario_paths(params, scenario, [alpha])[0][0]
+        model = ContinuumModel(params, me.Tolerances())
+        travel_per_cap = resolution(model, path, kinematics(path)).travel_per_cap
+        if travel_per_cap > MAX_TRAVEL_PER_CAP:
+            with pytest.raises(ValueError, match=r"allowed for the continuum method: a travel of at most"):
+                me.simulate(params, scenario, alpha=alpha, method="continuum")
+            continue
+        ran += 1
+        ds = me.simulate(params, scenario, alpha=alpha, method="continuum")
+        assert cap_excess(params, ds) <= max(CAP_SHARE, POSITION_ULPS * EPS * travel_per_cap), (params, alpha, scenario)
+        depth = float(me.d_crit(alpha, params, "A", adhesion=True))
+        if scenario == "A" and depth < params.d_max:
+            kinds, depths = list(ds["event_kind"].values[0]), ds["event_depth"].values[0]
+            assert depths[kinds.index("slip_onset")] == pytest.approx(depth, abs=1e-12 * params.d_max)
+    assert ran >= 70, ran  # most draws run (78 of 80): the test checks runs, not refusals
 
 
 def test_a_hertz_start_with_adhesion_on_the_way_out_runs_at_a_small_angle():

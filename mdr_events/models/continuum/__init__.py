@@ -36,7 +36,7 @@ Limits: the profile is the paraboloid (4) and the cap the paper's ``ū = π a τ
 
 from .anchors import AnchorMap, Piece
 from .branch import Branch
-from .model import ContinuumModel, Segment, kinematics
+from .model import MAX_TRAVEL_PER_CAP, ContinuumModel, Resolution, Segment, kinematics, resolution
 from .plan import Action, SpanPlan, plan_span
 from .solution import (EVALUATED_QUANTITIES, EXTREMUM_QUANTITIES, PathSolution, algebraic_tangential_force, evaluate,
                        evaluate_span, extremum, tangential_work)
@@ -49,9 +49,9 @@ from .zones import Role, ZoneLayout, lay_out_zones
 
 __all__ = [
     "Action", "AnchorMap", "Branch", "Cap", "ContactState", "ContinuumModel", "EVALUATED_QUANTITIES", "EVENT_KINDS",
-    "EXTREMUM_QUANTITIES", "Event", "EventKind", "NEGLIGIBLE_SHARE", "NO_ZONE", "PathSolution", "Piece", "Regime",
-    "Role", "Segment", "Slip", "Span", "SpanIntegrator", "SpanPlan", "Tolerances", "Trigger", "ZONE_EVENTS",
-    "ZoneLayout", "ZoneSummary", "algebraic_tangential_force", "evaluate", "evaluate_span", "extremum",
-    "integrate_span", "kinematics", "lay_out_zones", "plan_span", "run_continuum", "solve_path", "tangential_work",
-    "zone_events",
+    "EXTREMUM_QUANTITIES", "Event", "EventKind", "MAX_TRAVEL_PER_CAP", "NEGLIGIBLE_SHARE", "NO_ZONE",
+    "PathSolution", "Piece", "Regime", "Resolution", "Role", "Segment", "Slip", "Span", "SpanIntegrator",
+    "SpanPlan", "Tolerances", "Trigger", "ZONE_EVENTS", "ZoneLayout", "ZoneSummary", "algebraic_tangential_force",
+    "evaluate", "evaluate_span", "extremum", "integrate_span", "kinematics", "lay_out_zones", "plan_span",
+    "resolution", "run_continuum", "solve_path", "tangential_work", "zone_events",
 ]

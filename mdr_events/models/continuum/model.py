@@ -4,6 +4,7 @@ segments as linear motions."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -88,28 +89,54 @@ def kinematics(path: Path) -> list[Segment]:
 
 #: The slip criterion classifies the levels ``x − cap ū`` to PIECE_SHARE of the indenter's travel
 #: (:func:`~mdr_events.models.continuum.zones.length_scale`); for the critical shift to be known to 1e-3 of
-#: itself the travel may be at most this many ``ū``.
+#: itself the travel may be at most this many ``ū``. Below it, what remains of the force's error is the
+#: positions' own rounding, ``eps`` times the travel: a few dozen ``eps travel/ū`` of ``τ0 A`` (7e-6 at the
+#: limit).
 MAX_TRAVEL_PER_CAP = 1e-3 / PIECE_SHARE
 
 
-def check_resolvable(model: ContinuumModel, path: Path, segments: list[Segment]) -> None:
-    """Reject a path whose tangential travel the slip criterion cannot resolve against the critical shift.
+class Resolution(NamedTuple):
+    """How far a path travels against the critical shift (:func:`resolution`)."""
 
-    The travel is the path's tangential length and, on each segment in the elastomer that changes the depth,
-    ``|v_x / v_d| a²/R`` (the travel over which the depth of the largest contact changes by its size); the
-    critical shift is ``ū = K a`` of the largest contact (the radius at the path's deepest point). A
-    ``τ0/G*`` of 1e-10 (a stiff elastomer with the paper's τ0) puts ``ū`` near 1e-13 m, and the slip events
-    would then be lost to rounding: ``ValueError`` naming the numbers and what to change.
+    #: the tangential travel (m): the path's tangential length, or on a segment in the elastomer that
+    #: changes the depth ``|v_x / v_d| a²/R``, whichever is larger
+    travel: float
+    #: the critical shift ``ū = K a`` (m) of the largest contact (at the path's deepest point)
+    cap: float
+
+    @property
+    def travel_per_cap(self) -> float:
+        """``travel / ū``: at most :data:`MAX_TRAVEL_PER_CAP` for the continuum method (``0`` for τ0 = 0)."""
+        return self.travel / self.cap if self.cap > 0 else 0.0
+
+
+def resolution(model: ContinuumModel, path: Path, segments: list[Segment]) -> Resolution:
+    """The path's tangential travel and the critical shift the slip criterion resolves it against.
+
+    The travel over which the depth of the largest contact changes by its size, ``|v_x / v_d| a²/R``, is
+    the spread of the anchors a growth lays down; the path's tangential length is how far the indenter
+    moves. Both are positions the levels ``x − cap ū`` are computed from.
+    """
+    radius = model.grow.radius(max(path.max_depth, 0.0), model.tolerances.radius_rtol)
+    travel = float(np.sum(np.abs(np.diff(path.waypoints[:, 0]))))
+    for segment in segments:
+        if segment.vd != 0.0 and max(segment.ds, segment.d(segment.t1)) > 0.0:
+            travel = max(travel, abs(segment.vx / segment.vd) * radius**2 / model.params.R)
+    return Resolution(travel, model.K * radius)
+
+
+def check_resolvable(model: ContinuumModel, path: Path, segments: list[Segment]) -> None:
+    """Reject a path whose tangential travel the slip criterion cannot resolve against the critical shift
+    (:func:`resolution`): more than :data:`MAX_TRAVEL_PER_CAP` ``ū``.
+
+    In scenario A with the paper's geometry a ``τ0/G*`` below 2e-10 at 20°, or below 4e-6 at 1e-3°, puts
+    ``ū`` below what double precision resolves against the positions, and the slip events would be lost:
+    ``ValueError`` naming the numbers and what to change.
     """
     params = model.params
     if model.K == 0.0:  # τ0 = 0: no spring holds any shift, nothing to resolve
         return
-    radius = model.grow.radius(max(path.max_depth, 0.0), model.tolerances.radius_rtol)
-    cap = model.K * radius
-    travel = float(np.sum(np.abs(np.diff(path.waypoints[:, 0]))))
-    for segment in segments:
-        if segment.vd != 0.0 and max(segment.ds, segment.d(segment.t1)) > 0.0:
-            travel = max(travel, abs(segment.vx / segment.vd) * radius**2 / params.R)
+    travel, cap = resolution(model, path, segments)
     if not travel <= MAX_TRAVEL_PER_CAP * cap:
         raise ValueError(
             f"tau0={params.tau0!r} Pa with G*={params.G_star:.4g} Pa (τ0/G* = {params.tau0 / params.G_star:.3g}) gives "
