@@ -24,7 +24,12 @@ Prints, measured side by side in one run (medians; the machine is shared and noi
   (measured) or a run has taken more than 60 s, in which case the spacing and
   time for 1e-4 are extrapolated at first order from the last two runs (and the
   output says so); and the time ratio discrete / continuum at that accuracy
-  (target: at least 100x), against both continuum timings.
+  (target: at least 100x), against both continuum timings;
+- a path of N growth segments (N = 400 and 1600 waypoints going in, each a
+  growth of its own in the anchor map): the continuum's time per span for both
+  and their ratio (1 would be linear in N; the zone layout of each span reads
+  every piece, so the time per span grows with N, and ``Limits.waypoints``,
+  2000 by default, bounds it).
 
 Run: ``python benchmarks/bench_continuum.py``.
 """
@@ -124,6 +129,25 @@ def main() -> None:
     print(f"  ratio discrete / continuum at equal accuracy: {elapsed / runs_full['A']:.0f}x (target >= 100x)")
 
     reciprocating(p, full_run)
+    many_waypoints(p)
+
+
+def many_waypoints(p: me.Parameters, counts: tuple[int, ...] = (400, 1600)) -> None:
+    """N growth segments in, then out: the time per span at each N (one run each: seconds long)."""
+    per_span = {}
+    for n in counts:
+        x = np.linspace(0.0, 2e-4, n)
+        d = np.linspace(-1e-5, p.d_max, n) + 1e-6 * np.sin(np.arange(n))  # alternating rates: a piece each
+        path = Path(np.vstack([np.column_stack([x, d]), [[2e-4, -1e-4]]]), p.v)
+        start = time.perf_counter()
+        solution = solve_path(p, path, limits=me.Limits(waypoints=n + 1))
+        elapsed = time.perf_counter() - start
+        per_span[n] = elapsed / len(solution.spans)
+        print(f"  {n} waypoints going in: {len(solution.spans)} spans in {elapsed:.2f} s, "
+              f"{per_span[n] * 1e3:.2f} ms per span")
+    first, last = counts[0], counts[-1]
+    print(f"  time per span, {last} / {first} waypoints: {per_span[last] / per_span[first]:.2f}x "
+          f"(1 would be linear in the waypoints)")
 
 
 def reciprocating(p: me.Parameters, full_run) -> None:

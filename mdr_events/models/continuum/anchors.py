@@ -89,6 +89,8 @@ class AnchorMap:
         self.pieces: Sequence[Piece] = list(pieces or [])
         #: the first this many entries of ``pieces`` are seen by a snapshot (:meth:`copy`): not changed in place
         self._shared = 0
+        #: the values at both ends of the pieces seen (pieces are immutable; shared with the snapshots)
+        self._end_values: dict[Piece, tuple[float, float]] = {}
 
     def copy(self) -> "AnchorMap":
         """A snapshot that does not change when this map does (pieces are immutable).
@@ -99,6 +101,7 @@ class AnchorMap:
         """
         snapshot = AnchorMap(self.attach, self.rtol)
         snapshot.pieces = _Prefix(self.pieces, len(self.pieces))
+        snapshot._end_values = self._end_values
         self._shared = len(self.pieces)
         return snapshot
 
@@ -187,6 +190,16 @@ class AnchorMap:
     def piece_value(self, p: Piece, xi: float) -> float:
         """``Y(ξ)`` on piece ``p``."""
         return p.x0 if p.constant else p.x0 + p.ratio * (self.attach.depth(xi) - p.d_ref)
+
+    def end_values(self, p: Piece, end: float) -> tuple[float, float]:
+        """``Y`` at the start of piece ``p`` and at ``end``; remembered where ``end`` is the piece's own (a
+        span's zone layout reads every piece: a path of N growth segments would evaluate them N² times)."""
+        if end != p.end:
+            return self.piece_value(p, p.start), self.piece_value(p, end)
+        values = self._end_values.get(p)
+        if values is None:
+            values = self._end_values[p] = (self.piece_value(p, p.start), self.piece_value(p, end))
+        return values
 
     def piece_values(self, p: Piece, xi: np.ndarray) -> np.ndarray:
         """:meth:`piece_value` for an array of ``ξ``."""

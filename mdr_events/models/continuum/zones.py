@@ -60,34 +60,35 @@ class ZoneLayout:
         self.sign = float(cap)
         self.pieces: list[Piece] = list(anchors.pieces)
         self.edge = len(self.pieces) - 1
-        reach = cap * level
+        sign = self.sign
+        reached = sign * level + tolerance  # a piece value up to here counts as reached
         roles, fixed_targets = [], []
         self.edge_is_target = False
+        out, front, inside = Role.OUT, Role.FRONT, Role.IN  # (an Enum member lookup per piece is not free)
         for index, p in enumerate(self.pieces):
             end = min(p.end, radius)
-            at_edge = index == self.edge
-            role = Role.OUT
+            start_value, end_value = anchors.end_values(p, end)
+            start_value, end_value = sign * start_value, sign * end_value
+            role = out
             if sliding and end > p.start:
-                start_value = cap * anchors.piece_value(p, p.start)
-                end_value = cap * anchors.piece_value(p, end)
-                start_reached = start_value <= reach + tolerance
-                end_reached = end_value <= reach + tolerance
+                start_reached = start_value <= reached
+                end_reached = end_value <= reached
                 if start_reached and end_reached:
-                    role = Role.IN
+                    role = inside
                 elif start_reached or end_reached:
-                    role = Role.FRONT if not p.constant else Role.IN
+                    role = front if not p.constant else inside
             roles.append(role)
-            if role is Role.IN:
+            if role is inside:
                 continue
             # the value whose reaching changes the layout: a front's far end, an out piece's nearest value
             towards_end = p.constant or p.rises_towards(cap)
-            if (role is Role.FRONT) == towards_end:
-                if at_edge:
+            if (role is front) == towards_end:
+                if index == self.edge:
                     self.edge_is_target = True
                 else:
-                    fixed_targets.append(cap * anchors.piece_value(p, end))
+                    fixed_targets.append(end_value)
             else:
-                fixed_targets.append(cap * anchors.piece_value(p, p.start))
+                fixed_targets.append(start_value)
         self.roles = roles
         self.fixed_target = min(fixed_targets, default=float("inf"))
         #: the fronts as (piece, zone towards the piece's start, the piece's end or None for the edge)
