@@ -1,6 +1,6 @@
 """Imports point down only: no module of mdr_events imports from a layer above its own.
 
-Layers, bottom to top: the foundation (``parameters``, ``validation``, ``limits``, ``_version``), ``io``,
+Layers, bottom to top: the foundation (``parameters``, ``profiles``, ``validation``, ``limits``, ``_version``), ``io``,
 ``theory``, ``models`` (with ``models/continuum``), ``analysis``, ``plotting``, ``app``. A module may
 import from its own layer and those below. Every import counts, also one inside a function or under
 ``TYPE_CHECKING``. ``mdr_events/__init__.py`` (the public API) and ``_version.py`` are exempt as
@@ -21,7 +21,7 @@ PACKAGE = Path(mdr_events.__file__).resolve().parent
 
 #: Layers from the bottom: the first component(s) of a module's name under mdr_events -> its layer.
 LAYERS = ("foundation", "io", "theory", "models", "analysis", "plotting", "app", "package")
-FOUNDATION_MODULES = ("parameters", "validation", "limits", "_version")
+FOUNDATION_MODULES = ("parameters", "profiles", "validation", "limits", "_version")
 EXEMPT_IMPORTERS = ("mdr_events", "mdr_events._version")
 
 

@@ -1,0 +1,264 @@
+"""Closed forms of the power-law indenter ``f = c rⁿ`` and of the flat punch, vectorised.
+
+Every formula is the derived relation of :func:`mdr_events.theory.symbolic.derive_power_law_model`
+(Heß's rule (8) for the profile's Abel transform (3)); the paraboloid ``n = 2, c = 1/(2R)`` gives the
+functions of :mod:`mdr_events.theory.analytic` (the tests compare them). Where the relations have no
+closed form (the radius at a given depth with adhesion, the slip onset (18)) the functions solve for it
+with a safeguarded, vectorised Newton iteration on a convex function (:func:`convex_root`).
+
+The material, the friction and the works of adhesion come from :class:`~mdr_events.Parameters` (its ``R``
+is the paraboloid's and is not used here); the indenter from the profile.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from mdr_events.parameters import Parameters
+from mdr_events.profiles import FlatPunch, PowerLaw, Profile
+from mdr_events.theory import symbolic
+from mdr_events.validation import check_flag
+
+__all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_force", "contact_radius",
+           "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "convex_root",
+           "ADHESIVE_MIN_EXPONENT", "ROOT_RTOL"]
+
+#: With adhesion a power law needs ``n`` above this: below it ``√a`` outgrows ``aⁿ`` and no contact is stable.
+ADHESIVE_MIN_EXPONENT = 0.5
+#: Relative accuracy of :func:`convex_root` (a few ulp).
+ROOT_RTOL = 4 * float(np.finfo(float).eps)
+#: Newton steps :func:`convex_root` takes at most (it converges quadratically once close; from its upper
+#: bound, monotonically).
+ROOT_MAX_ITERATIONS = 200
+
+
+def _rel(key: str):
+    return symbolic.relation(key)
+
+
+def _check_profile(profile) -> Profile:
+    if not isinstance(profile, (PowerLaw, FlatPunch)):
+        raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: a PowerLaw or "
+                        "a FlatPunch (mdr_events.profiles)")
+    return profile
+
+
+def _check_adhesive(profile: PowerLaw, work_of_adhesion: float) -> None:
+    if work_of_adhesion > 0.0 and not profile.n > ADHESIVE_MIN_EXPONENT:
+        raise ValueError(f"PowerLaw.n={profile.n!r} is not allowed with adhesion (work of adhesion "
+                         f"{work_of_adhesion!r} J/m²); allowed: n > {ADHESIVE_MIN_EXPONENT:g} (below it no "
+                         "adhesive contact is stable)")
+
+
+def _power_law_only(profile, what: str) -> PowerLaw:
+    if not isinstance(_check_profile(profile), PowerLaw):
+        raise TypeError(f"profile={profile!r} is not allowed for {what}; allowed: a PowerLaw (a flat punch keeps "
+                        "its radius while in contact)")
+    return profile
+
+
+def _prefactor(profile: PowerLaw) -> float:
+    """``κₙ c = g(1)``: the MDR profile is ``g(x) = κₙ c xⁿ`` (3)."""
+    return float(_rel("profile_power_law").numeric(1.0, profile.c, profile.n))
+
+
+def _hess_prefactor(params: Parameters, work_of_adhesion: float) -> float:
+    """``sqrt(2π Δγ / E*)``: Heß's limit (8) is this times ``√a``."""
+    return float(_rel("hess_max_elongation").numeric(1.0, work_of_adhesion, params.E_star))
+
+
+def _as_output(values: np.ndarray, like) -> np.ndarray | float:
+    return float(values) if np.ndim(like) == 0 else values
+
+
+def convex_root(function, derivative, upper, lower, rtol: float = ROOT_RTOL):
+    """The root in ``[lower, upper]`` of increasing convex functions, elementwise (Newton from ``upper``).
+
+    ``function(s)`` and ``derivative(s)`` are vectorised; ``function(upper) >= 0 >= function(lower)`` and the
+    function increases and is convex on ``[lower, upper]``. Newton's steps from the right then stay right of the
+    root and fall monotonically onto it; an iterate is clipped to ``lower`` (safeguard against rounding).
+    Stops when every step is below ``rtol`` of its iterate.
+    """
+    s = np.array(upper, dtype=float, copy=True)
+    lower = np.broadcast_to(np.asarray(lower, dtype=float), s.shape)
+    for _ in range(ROOT_MAX_ITERATIONS):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = np.where(derivative(s) > 0, function(s) / derivative(s), 0.0)
+        s_next = np.maximum(s - np.maximum(step, 0.0), lower)
+        done = np.all(np.abs(s_next - s) <= rtol * np.abs(s_next))
+        s = s_next
+        if done:
+            break
+    return s
+
+
+def equivalent_profile(x, profile: PowerLaw):
+    """``g(x) = κₙ c |x|ⁿ``: the MDR profile of the power law, the Abel transform (3)."""
+    profile = _power_law_only(profile, "equivalent_profile")
+    return _rel("profile_power_law").numeric(np.abs(np.asarray(x, dtype=float)), profile.c, profile.n)
+
+
+def branch_depth(contact_radius, profile: PowerLaw, params: Parameters, work_of_adhesion: float):
+    """Depth of the adhesive contact of radius ``a``, ``κ c aⁿ − sqrt(2π a Δγ / E*)`` (generalised (9))."""
+    profile = _power_law_only(profile, "branch_depth")
+    return _rel("power_law_depth").numeric(contact_radius, profile.c, profile.n, params.E_star, work_of_adhesion)
+
+
+def normal_force(depth, contact_radius, profile: Profile, params: Parameters):
+    """Normal force (N) of the springs in ``|x| < a`` at depth ``d`` (10); the flat punch: ``2 E* a d`` with its
+    own radius (``contact_radius`` must be it, or ``None``)."""
+    profile = _check_profile(profile)
+    if isinstance(profile, FlatPunch):
+        if contact_radius is not None and not np.all(np.asarray(contact_radius) == profile.radius):
+            raise ValueError(f"contact_radius={contact_radius!r} is not allowed for {profile!r}; allowed: None or "
+                             f"the punch's radius {profile.radius!r} m")
+        return _rel("flat_punch_normal_force").numeric(depth, profile.radius, params.E_star)
+    return _rel("power_law_normal_force").numeric(depth, contact_radius, profile.c, profile.n, params.E_star)
+
+
+def branch_normal_force(contact_radius, profile: PowerLaw, params: Parameters, work_of_adhesion: float):
+    """Normal force of the adhesive power-law contact of radius ``a`` on its branch (10)."""
+    profile = _power_law_only(profile, "branch_normal_force")
+    return _rel("power_law_branch_normal_force").numeric(contact_radius, profile.c, profile.n, params.E_star,
+                                                         work_of_adhesion)
+
+
+def jump_in_radius(profile: PowerLaw, params: Parameters, work_of_adhesion: float) -> float:
+    """Contact radius on first touch, ``d = 0`` on the branch: ``a^(2n−1) = 2π Δγ / (E* (κ c)²)`` (0 without
+    adhesion)."""
+    profile = _power_law_only(profile, "jump_in_radius")
+    if work_of_adhesion == 0.0:
+        return 0.0
+    _check_adhesive(profile, work_of_adhesion)
+    return float(_rel("power_law_jump_in_radius").numeric(profile.c, profile.n, params.E_star, work_of_adhesion))
+
+
+def jump_off(profile: Profile, params: Parameters, work_of_adhesion: float) -> dict[str, float]:
+    """The end of contact under displacement control: ``contact_radius``, ``depth`` and ``normal_force``.
+
+    Power law: where ``∂d/∂a = 0`` on the branch. Flat punch: the punch's radius at the depth where every
+    spring reaches Heß's limit (8) at once, with Kendall's force ``−sqrt(8π a³ E* Δγ)`` (Kendall, J. Phys. D 4
+    (1971) 1186), the same under force control.
+    """
+    profile = _check_profile(profile)
+    if isinstance(profile, FlatPunch):
+        args = (profile.radius, params.E_star, work_of_adhesion)
+        return {"contact_radius": profile.radius,
+                "depth": float(_rel("flat_punch_pull_off_depth").numeric(*args)),
+                "normal_force": float(_rel("flat_punch_pull_off_force").numeric(*args))}
+    if work_of_adhesion == 0.0:
+        return {"contact_radius": 0.0, "depth": 0.0, "normal_force": 0.0}
+    _check_adhesive(profile, work_of_adhesion)
+    args = (profile.c, profile.n, params.E_star, work_of_adhesion)
+    return {"contact_radius": float(_rel("power_law_jump_off_radius").numeric(*args)),
+            "depth": float(_rel("power_law_jump_off_depth").numeric(*args)),
+            "normal_force": float(_rel("power_law_jump_off_force").numeric(*args))}
+
+
+def pull_off_force(profile: Profile, params: Parameters, work_of_adhesion: float) -> float:
+    """The pull-off force under force control (N, <= 0): the minimum of (10) along the branch (the paraboloid:
+    JKR's ``−(3/2) π Δγ R``); the flat punch: Kendall's ``−sqrt(8π a³ E* Δγ)``."""
+    profile = _check_profile(profile)
+    if isinstance(profile, FlatPunch):
+        return jump_off(profile, params, work_of_adhesion)["normal_force"]
+    if work_of_adhesion == 0.0:
+        return 0.0
+    _check_adhesive(profile, work_of_adhesion)
+    return float(_rel("power_law_pull_off_force").numeric(profile.c, profile.n, params.E_star, work_of_adhesion))
+
+
+def contact_radius(depth, profile: PowerLaw, params: Parameters, work_of_adhesion: float):
+    """Contact radius on the stable branch (``a >=`` the jump-off radius) at depth ``d``; ``nan`` where the depth
+    lies below the jump-off (no contact).
+
+    Without adhesion ``a = (d / (κ c))^(1/n)`` (``nan`` above the surface, ``d < 0``). With adhesion the branch in
+    ``s = √a``, ``κ c s^(2n) − sqrt(2πΔγ/E*) s − d``, increases and is convex above the jump-off (``2n >= 1``):
+    :func:`convex_root` from an upper bound.
+    """
+    profile = _power_law_only(profile, "contact_radius")
+    depth_arr = np.asarray(depth, dtype=float)
+    if work_of_adhesion == 0.0:
+        with np.errstate(invalid="ignore"):
+            radius = _rel("power_law_hertz_radius").numeric(np.maximum(depth_arr, 0.0), profile.c, profile.n)
+        return _as_output(np.where(depth_arr >= 0.0, radius, np.nan), depth_arr)
+    _check_adhesive(profile, work_of_adhesion)
+    kc, k = _prefactor(profile), _hess_prefactor(params, work_of_adhesion)
+    two_n = 2.0 * profile.n
+    point = jump_off(profile, params, work_of_adhesion)
+    s_fold = math.sqrt(point["contact_radius"])
+    # κc s^(2n) >= k s + |d| once κc s^(2n) >= 2|d| and κc s^(2n−1) >= 2k (each half covers one term)
+    upper = np.maximum.reduce([np.full(depth_arr.shape, s_fold),
+                               (2.0 * np.abs(depth_arr) / kc) ** (1.0 / two_n),
+                               np.full(depth_arr.shape, (2.0 * k / kc) ** (1.0 / (two_n - 1.0)))])
+    s = convex_root(lambda s: kc * s**two_n - k * s - depth_arr, lambda s: two_n * kc * s ** (two_n - 1.0) - k,
+                    upper, s_fold)
+    return _as_output(np.where(depth_arr >= point["depth"], s * s, np.nan), depth_arr)
+
+
+def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False):
+    """Depth of slip onset in scenario A (the path (14) from first contact at angle ``α`` in degrees).
+
+    - Power law without adhesion, ``n != 1``: the closed form of (17), ``d^((n−1)/n) ∝ tan α``.
+    - The cone (``n = 1``) without adhesion: the shift ``d / tan α`` and the cap ``K a = K d / (κ c)`` grow in
+      proportion, so the springs slide from first contact (``d = 0``) where ``tan α < κ c / K`` and never (``nan``)
+      above it: no onset depth exists in between.
+    - Power law with adhesion (``Δγ0`` branch), ``n >= 1``: ``d(a) = tan α K a`` has no closed form; in ``s = √a``
+      ``κ c s^(2n−1) − tan α K s − sqrt(2πΔγ0/E*)`` is increasing and convex past its minimum and has one
+      positive root (:func:`convex_root`); ``nan`` where it has none.
+    - Flat punch: every spring attaches at first contact at one ``x`` and all reach ``ū = K a`` together:
+      ``d = tan α K a`` (onset is full slip), with or without adhesion.
+
+    Depths beyond ``d_max`` are returned as they are (the path turns back before them).
+    """
+    profile = _check_profile(profile)
+    check_flag("adhesion", adhesion)
+    alpha_arr = np.asarray(alpha, dtype=float)
+    tan_alpha = np.tan(np.deg2rad(alpha_arr))
+    if isinstance(profile, FlatPunch):
+        return _as_output(np.asarray(_rel("flat_punch_d_crit_A").numeric(profile.radius, tan_alpha, params.tau0,
+                                                                         params.G_star), dtype=float), alpha_arr)
+    K = float(_rel("critical_shift").numeric(1.0, params.tau0, params.G_star))  # ū = K a (13)
+    kc = _prefactor(profile)
+    if not adhesion or params.dgamma0 == 0.0:
+        if profile.n == 1.0:
+            return _as_output(np.where(tan_alpha * K < kc, 0.0, np.nan), alpha_arr)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            depth = _rel("power_law_d_crit_A_hertz").numeric(tan_alpha, profile.c, profile.n, params.tau0,
+                                                             params.G_star)
+        return _as_output(np.asarray(depth, dtype=float), alpha_arr)
+    if profile.n < 1.0:
+        raise ValueError(f"PowerLaw.n={profile.n!r} is not allowed for the adhesive slip onset; allowed: n >= 1 "
+                         "(below it the onset condition may have several roots)")
+    k = _hess_prefactor(params, params.dgamma0)
+    power = 2.0 * profile.n - 1.0
+    slope = tan_alpha * K
+    if power == 1.0:  # the cone: linear in s
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s = np.where(kc > slope, k / (kc - slope), np.nan)
+    else:
+        # φ(s) = κc s^p − slope s − k: negative at 0, convex; its minimum at s_min, its root above
+        s_min = (slope / (power * kc)) ** (1.0 / (power - 1.0))
+        upper = np.maximum((2.0 * slope / kc) ** (1.0 / (power - 1.0)), (2.0 * k / kc) ** (1.0 / power))
+        upper = np.maximum(upper, s_min)
+        s = convex_root(lambda s: kc * s**power - slope * s - k, lambda s: power * kc * s ** (power - 1.0) - slope,
+                        upper, s_min)
+    radius = s * s
+    return _as_output(np.asarray(tan_alpha * K * radius, dtype=float), alpha_arr)
+
+
+def critical_angle_A(profile: Profile, params: Parameters, adhesion: bool = True) -> float:
+    """Scenario A's critical angle (degrees): slip begins exactly at ``d_max``, ``tan α_c = d_max / ū(a(d_max))``;
+    below it the springs slide while indenting. The radius at ``d_max`` is the branch's (``Δγ0``) with adhesion,
+    the non-adhesive one without, the punch's radius for the flat punch. The cone without adhesion gives
+    ``tan α_c = κ c / K`` at any depth."""
+    profile = _check_profile(profile)
+    check_flag("adhesion", adhesion)
+    if isinstance(profile, FlatPunch):
+        radius = profile.radius
+    else:
+        radius = contact_radius(params.d_max, profile, params, params.dgamma0 if adhesion else 0.0)
+    with np.errstate(divide="ignore"):
+        angle = _rel("critical_angle_A").numeric(radius, params.d_max, params.tau0, params.G_star)
+    return float(np.rad2deg(angle))
