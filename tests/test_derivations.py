@@ -11,8 +11,8 @@ DERIVATIONS = Path(__file__).parent.parent / "derivations"
 NOTEBOOKS = sorted(DERIVATIONS.glob("[0-9][0-9]_*.py"))
 
 
-def test_there_are_three_notebooks():
-    assert len(NOTEBOOKS) == 3
+def test_there_are_four_notebooks():
+    assert len(NOTEBOOKS) == 4
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)

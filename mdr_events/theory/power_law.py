@@ -22,7 +22,8 @@ from mdr_events.theory import symbolic
 from mdr_events.validation import check_flag
 
 __all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_force", "contact_radius",
-           "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "convex_root",
+           "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
+           "critical_angle_B", "convex_root",
            "ADHESIVE_MIN_EXPONENT", "ROOT_RTOL"]
 
 #: With adhesion a power law needs ``n`` above this: below it ``√a`` outgrows ``aⁿ`` and no contact is stable.
@@ -261,4 +262,65 @@ def critical_angle_A(profile: Profile, params: Parameters, adhesion: bool = True
         radius = contact_radius(params.d_max, profile, params, params.dgamma0 if adhesion else 0.0)
     with np.errstate(divide="ignore"):
         angle = _rel("critical_angle_A").numeric(radius, params.d_max, params.tau0, params.G_star)
+    return float(np.rad2deg(angle))
+
+
+def d_crit_B(alpha, profile: Profile, params: Parameters, adhesion: bool = False):
+    """Depth of slip onset in scenario B's pull-off (the path (19): vertically in to ``d_max``, out at angle
+    ``α`` in degrees), as (20), (21) take it: the radius on the pull-off branch (``Δγ1``; without adhesion the
+    non-adhesive radius) from the start of the pull-off.
+
+    - Power law: ``(d_max − d) / tan α = K a`` with ``d = d(a)`` on the branch; in ``s = √a``,
+      ``κ c s^(2n) − sqrt(2πΔγ1/E*) s + tan α K s² − d_max`` increases and is convex above the jump-off
+      (:func:`convex_root` from the radius at ``d_max``). A root below the jump-off radius means the contact
+      comes apart before any spring slides: ``-inf`` (as :func:`mdr_events.theory.analytic.d_crit`).
+    - Flat punch: every spring was anchored at ``x = 0``; all slide when ``x = K a``, ``d = d_max − tan α K a``,
+      unless that lies below Kendall's pull-off depth (``-inf``).
+
+    ``d < d_crit`` is the sliding region; ``α = 90°`` never slides (``-inf``).
+    """
+    profile = _check_profile(profile)
+    check_flag("adhesion", adhesion)
+    alpha_arr = np.asarray(alpha, dtype=float)
+    tan_alpha = np.tan(np.deg2rad(alpha_arr))
+    vertical = alpha_arr >= 90.0
+    K = float(_rel("critical_shift").numeric(1.0, params.tau0, params.G_star))
+    work = params.dgamma1 if adhesion else 0.0
+    if isinstance(profile, FlatPunch):
+        depth = params.d_max - tan_alpha * K * profile.radius
+        apart = depth < jump_off(profile, params, work)["depth"] if work > 0.0 else np.zeros(depth.shape, bool)
+        return _as_output(np.where(vertical | apart, -np.inf, depth), alpha_arr)
+    if work > 0.0:
+        _check_adhesive(profile, work)
+    kc, k = _prefactor(profile), _hess_prefactor(params, work)
+    two_n = 2.0 * profile.n
+    slope = np.where(vertical, 0.0, tan_alpha * K)
+    fold = jump_off(profile, params, work)
+    s_fold = math.sqrt(fold["contact_radius"])
+    upper = math.sqrt(float(contact_radius(params.d_max, profile, params, work)))
+    if not two_n >= 1.0:
+        raise ValueError(f"PowerLaw.n={profile.n!r} is not allowed for the pull-off slip onset; allowed: n >= 0.5")
+    s = convex_root(lambda s: kc * s**two_n - k * s + slope * s * s - params.d_max,
+                    lambda s: two_n * kc * s ** (two_n - 1.0) - k + 2.0 * slope * s,
+                    np.full(alpha_arr.shape, upper), s_fold)
+    radius = s * s
+    depth = params.d_max - slope * radius
+    # the root lies below the fold where the function is still negative at it: the contact comes apart first
+    apart = (kc * s_fold**two_n - k * s_fold + slope * s_fold**2 - params.d_max > 0.0) if work > 0.0 else False
+    return _as_output(np.where(vertical | apart, -np.inf, depth), alpha_arr)
+
+
+def critical_angle_B(profile: Profile, params: Parameters, adhesion: bool = True) -> float:
+    """Scenario B's critical angle (degrees): above it the contact comes apart (the jump-off of the ``Δγ1``
+    branch, or Kendall's depth for the flat punch) before any spring slides, ``tan α_c = (d_max − d_j) / ū(a_j)``
+    at the jump-off ``(a_j, d_j)`` ((21) there). Without adhesion the contact shrinks to nothing and slip always
+    comes first: 90°."""
+    profile = _check_profile(profile)
+    check_flag("adhesion", adhesion)
+    if not adhesion or params.dgamma1 == 0.0:
+        return 90.0
+    point = jump_off(profile, params, params.dgamma1)
+    with np.errstate(divide="ignore"):
+        angle = _rel("critical_angle_B").numeric(point["contact_radius"], point["depth"], params.d_max, params.tau0,
+                                                 params.G_star)
     return float(np.rad2deg(angle))

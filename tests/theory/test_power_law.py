@@ -174,6 +174,34 @@ def test_the_slip_onset_depth_is_where_the_shift_reaches_the_cap(paper, n, adhes
     np.testing.assert_allclose(shift, analytic.critical_shift(radius, paper), rtol=1e-12)
 
 
+def test_the_paraboloid_gives_the_papers_scenario_B(paper):
+    """The pull-off branch of (20), (21) and its critical angle: the paraboloid's numbers to a few ulp."""
+    profile = PowerLaw.paraboloid(paper.R)
+    alpha = np.array([1.0, 5.0, 20.0, 45.0, 60.0, 80.0, 90.0])
+    for adhesion in (False, True):
+        np.testing.assert_allclose(pl.d_crit_B(alpha, profile, paper, adhesion),
+                                   analytic.d_crit(alpha, paper, "B", adhesion=adhesion), rtol=1e-13)
+        assert pl.critical_angle_B(profile, paper, adhesion) == pytest.approx(
+            analytic.critical_angle(paper, "B", adhesion=adhesion), rel=1e-13)
+
+
+@pytest.mark.parametrize("n", [0.75, 1.0, 1.5, 3.0, 6.0])
+def test_scenario_B_slides_where_the_pull_off_shift_reaches_the_cap(paper, n):
+    """At d_crit (pull-off) the shift (d_max − d) / tan α equals K a(d) on the Δγ1 branch; above the critical
+    angle the contact comes apart first (-inf), below it it slides, and the critical angle is where the onset
+    reaches the jump-off."""
+    profile = _profile_with_paper_scale(n, paper)
+    critical = pl.critical_angle_B(profile, paper)
+    alpha = np.array([1.0, 10.0, 0.9 * critical, 0.999 * critical, 1.001 * critical])
+    depth = pl.d_crit_B(alpha, profile, paper, adhesion=True)
+    assert np.all(np.isfinite(depth[:4])) and depth[4] == -np.inf
+    radius = pl.contact_radius(depth[:4], profile, paper, paper.dgamma1)
+    shift = (paper.d_max - depth[:4]) / np.tan(np.deg2rad(alpha[:4]))
+    np.testing.assert_allclose(shift, analytic.critical_shift(radius, paper), rtol=1e-11)
+    fold = pl.jump_off(profile, paper, paper.dgamma1)
+    assert depth[3] == pytest.approx(fold["depth"], abs=1e-2 * abs(paper.d_max - fold["depth"]))
+
+
 def test_the_cone_slides_from_first_contact_or_never(paper):
     """Without adhesion the cone's shift and cap grow in proportion: d_crit is 0 below α_c = atan(κ c / K) and
     nan above it; the critical angle is the same at any d_max."""
@@ -201,6 +229,12 @@ def test_the_flat_punch(paper):
     cap = float(analytic.critical_shift(1.5e-3, paper))
     assert pl.d_crit_A(20.0, punch, paper) == pytest.approx(math.tan(math.radians(20.0)) * cap, rel=4 * EPS)
     assert pl.critical_angle_A(punch, paper) == pytest.approx(math.degrees(math.atan(paper.d_max / cap)), rel=1e-14)
+    # scenario B: all anchored at x = 0, all slide at d_max − tan α ū, unless Kendall's depth comes first
+    assert pl.d_crit_B(20.0, punch, paper, True) == pytest.approx(paper.d_max - math.tan(math.radians(20.0)) * cap,
+                                                                  rel=1e-14)
+    critical = math.degrees(math.atan((paper.d_max - point["depth"]) / cap))
+    assert pl.critical_angle_B(punch, paper) == pytest.approx(critical, rel=1e-14)
+    assert pl.d_crit_B(1.001 * critical, punch, paper, True) == -np.inf
 
 
 # --- bad input ---------------------------------------------------------------------------------------------
