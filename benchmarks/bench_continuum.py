@@ -29,7 +29,11 @@ Prints, measured side by side in one run (medians; the machine is shared and noi
   growth of its own in the anchor map): the continuum's time per span for both
   and their ratio (1 would be linear in N; the zone layout of each span reads
   every piece, so the time per span grows with N, and ``Limits.waypoints``,
-  2000 by default, bounds it).
+  2000 by default, bounds it);
+- power-law indenters (issue: within 3x of the paraboloid): the median time of solve + fill 2001
+  samples, scenarios A and B at 20° and 30°, for the paraboloid (default), the same paraboloid as
+  ``PowerLaw.paraboloid(R)``, a cone and ``n = 3`` (each with the paraboloid's contact radius at
+  ``d_max``), and the ratio of the slowest power law to the default.
 
 Run: ``python benchmarks/bench_continuum.py``.
 """
@@ -47,6 +51,8 @@ from mdr_events.models.continuum import evaluate, extremum, solve_path
 from mdr_events.analysis.convergence import exact_references_A
 from mdr_events.models.discrete import run_discrete
 from mdr_events.models.paths import Path, exit_depth
+from mdr_events.profiles import PowerLaw
+from mdr_events.theory import power_law
 from mdr_events.theory import analytic
 
 #: Relative accuracy the discrete model must reach on the reciprocating path.
@@ -130,6 +136,37 @@ def main() -> None:
 
     reciprocating(p, full_run)
     many_waypoints(p)
+    power_laws(p)
+
+
+def power_laws(p: me.Parameters) -> None:
+    """Solve + fill 2001 samples for power-law indenters against the paraboloid (medians of 7)."""
+    radius = math.sqrt(p.R * p.d_max)
+
+    def matching(n):  # the power law with the paraboloid's non-adhesive radius at d_max
+        return PowerLaw(p.d_max / float(power_law.equivalent_profile(radius, PowerLaw(1.0, n))), n)
+
+    profiles = {"paraboloid (default)": None, "PowerLaw.paraboloid(R)": PowerLaw.paraboloid(p.R),
+                "cone n = 1": matching(1.0), "n = 3": matching(3.0)}
+    print("power-law indenters: solve + fill 2001 samples, median of 7")
+    slowest = {}
+    for scenario in ("A", "B"):
+        for angle in (20.0, 30.0):
+            times = {}
+            for name, profile in profiles.items():
+                path = getattr(Path, f"scenario_{scenario}")(angle, p, profile=profile)
+
+                def run(path=path, profile=profile):
+                    solution = solve_path(p, path, profile=profile)
+                    return evaluate(solution, np.linspace(0.0, solution.end_time * 1.0005, 2001))
+
+                run()  # build the lambdified relations once
+                times[name] = median_time(run)
+            default = times["paraboloid (default)"]
+            slowest[(scenario, angle)] = max(value for name, value in times.items() if name != "paraboloid (default)")
+            print(f"  scenario {scenario} at {angle:g}°: " + ", ".join(f"{name} {value * 1e3:.1f} ms"
+                                                                 for name, value in times.items())
+                  + f"; slowest power law / default {slowest[(scenario, angle)] / default:.2f}x (target <= 3x)")
 
 
 def many_waypoints(p: me.Parameters, counts: tuple[int, ...] = (400, 1600)) -> None:

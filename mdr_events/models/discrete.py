@@ -66,6 +66,8 @@ from mdr_events.validation import check_real
 from mdr_events.theory import symbolic
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
+from mdr_events.models import indenters
+from mdr_events.profiles import PowerLaw
 
 __all__ = ["run_discrete", "paraboloid_profile", "MIN_SPRINGS_IN_CONTACT"]
 
@@ -75,8 +77,7 @@ MIN_SPRINGS_IN_CONTACT = 10
 
 def paraboloid_profile(params: Parameters) -> Callable[[np.ndarray], np.ndarray]:
     """``g(x) = x²/R``, eq. (4), as derived by :mod:`mdr_events.theory.symbolic`."""
-    relation = symbolic.relation("profile_paraboloid")
-    return lambda x: relation.numeric(x, params.R)
+    return indenters.spring_profile(params, None)
 
 
 class _Threshold:
@@ -129,12 +130,12 @@ def _spring_count(params: Parameters, dx: float, max_depth: float, profile) -> i
         count *= 2
 
 
-def check_spacing(params: Parameters, dx: float, depth: float | None = None) -> float:
+def check_spacing(params: Parameters, dx: float, depth: float | None = None, profile: PowerLaw | None = None) -> float:
     """``dx`` as a float; reject a spring spacing that puts fewer than 10 springs per side in contact at
-    the deepest point (``d_max``, or the given ``depth`` of a custom path)."""
+    the deepest point (``d_max``, or the given ``depth`` of a custom path) of ``profile`` (``None``: the paraboloid)."""
     dx = check_real("dx", dx, "a finite spring spacing > 0 (m)", lambda value: value > 0)
     depth = params.d_max if depth is None else depth
-    radius = float(analytic.jkr_contact_radius(depth, params, params.dgamma0))
+    radius = float(indenters.branch_radius(depth, params, params.dgamma0, profile))
     if not radius / dx >= MIN_SPRINGS_IN_CONTACT:
         raise ValueError(
             f"dx={dx!r} m puts {int(radius // dx) if radius == radius else 0} springs per side in contact "
@@ -550,12 +551,13 @@ def _time_grid_size(paths: list[Path], dt: float) -> tuple[np.ndarray, np.ndarra
     return starts, durations, int(math.ceil(durations.max() / dt)) + 1
 
 
-def check_discrete_size(params: Parameters, paths: list[Path], dx: float, dt: float, limits: Limits) -> None:
+def check_discrete_size(params: Parameters, paths: list[Path], dx: float, dt: float, limits: Limits,
+                        profile: PowerLaw | None = None) -> None:
     """Estimate a discrete run's time steps, springs and memory before anything is allocated, and refuse it
     past ``limits`` (:class:`~mdr_events.limits.ResourceLimitError` saying the estimate and how to raise it)."""
     _, _, n_time = _time_grid_size(paths, dt)
     deepest = max(path.max_depth for path in paths)
-    springs = float(analytic.jkr_contact_radius(deepest, params, params.dgamma0)) / dx + 2
+    springs = float(indenters.branch_radius(deepest, params, params.dgamma0, profile)) / dx + 2
     limits.check(f"the discrete run (dx={dx!r} m, dt={dt:.6g} s, {len(paths)} case(s))",
                  steps=n_time * len(paths), springs=springs,
                  memory=len(paths) * n_time * BYTES_PER_SAMPLE + springs * BYTES_PER_SPRING)
@@ -566,7 +568,7 @@ def run_discrete(
     paths: list[Path],
     dx: float,
     dt: float,
-    profile: Callable[[np.ndarray], np.ndarray] | None = None,
+    profile: PowerLaw | Callable[[np.ndarray], np.ndarray] | None = None,
     limits: Limits = DEFAULT_LIMITS,
 ) -> dict[str, np.ndarray]:
     """Run the spring model for several paths on a common time grid.
@@ -581,8 +583,9 @@ def run_discrete(
         Spring spacing Δx in m.
     dt : float
         Time step in s (the grid is ``k dt``, shared by all cases).
-    profile : callable, optional
-        ``g(x)`` (vectorised); default the paraboloid (4).
+    profile : PowerLaw or callable, optional
+        The indenter: a :class:`~mdr_events.profiles.PowerLaw` (``n >= 1``), or its springs' profile ``g(x)``
+        (vectorised); default the paraboloid (4).
     limits : Limits, optional
         Refuse, before allocating, a run whose steps, springs or memory exceed them (:func:`check_discrete_size`).
 
@@ -595,8 +598,9 @@ def run_discrete(
         ``tangential_displacement``, ``normal_force``, ``tangential_force``,
         ``contact_radius``, ``sliding_fraction``, ``springs_in_contact``.
     """
-    check_discrete_size(params, paths, dx, dt, limits)
-    run = _prepare(params, paths, dx, dt, paraboloid_profile(params) if profile is None else profile)
+    indenter = indenters.check_simulated_profile(profile) if not callable(profile) else None
+    check_discrete_size(params, paths, dx, dt, limits, indenter)
+    run = _prepare(params, paths, dx, dt, profile if callable(profile) else indenters.spring_profile(params, indenter))
     time, x_path, d_path, last_sample = run.time, run.x, run.d, run.last_sample.copy()
     n_cases, n_time = len(paths), time.size
     out_m = np.zeros((n_cases, n_time), dtype=np.int64)

@@ -24,6 +24,8 @@ import numpy as np
 
 from mdr_events.theory import analytic
 from mdr_events.parameters import Parameters
+from mdr_events.profiles import PowerLaw
+from mdr_events.models import indenters
 from mdr_events.validation import check_real, real_array, shown, validate_alpha
 
 __all__ = ["Path", "exit_depth"]
@@ -34,14 +36,15 @@ __all__ = ["Path", "exit_depth"]
 MAX_JUMP_OFF_DEPTHS = 1e6
 
 
-def exit_depth(params: Parameters) -> float:
-    """A depth safely below the displacement-controlled jump-off of the ``Δγ1`` branch.
+def exit_depth(params: Parameters, profile: PowerLaw | None = None) -> float:
+    """A depth safely below the displacement-controlled jump-off of the ``Δγ1`` branch (of ``profile``:
+    ``None`` is the paper's paraboloid).
 
     Raises ``ValueError`` naming the parameters if the jump-off lies more than
     :data:`MAX_JUMP_OFF_DEPTHS` ``d_max`` below the surface (adhesion so strong against the stiffness,
     e.g. ``E = 1e-300`` Pa, that the way out would be 1e199 m long).
     """
-    jump = analytic.jump_off(params, params.dgamma1)["depth"] if params.dgamma1 > 0 else 0.0
+    jump = indenters.jump_off(params, params.dgamma1, profile)["depth"] if params.dgamma1 > 0 else 0.0
     if not -jump <= MAX_JUMP_OFF_DEPTHS * params.d_max:
         raise ValueError(
             f"E={params.E!r} Pa, nu={params.nu!r}, R={params.R!r} m and dgamma1={params.dgamma1!r} J/m² put the "
@@ -125,17 +128,18 @@ class Path:
         return cls(np.vstack([pieces[:, 0], pieces[-1:, 1]]), speed)
 
     @classmethod
-    def scenario_A(cls, alpha: float, params: Parameters) -> "Path":
+    def scenario_A(cls, alpha: float, params: Parameters, profile: PowerLaw | None = None) -> "Path":
         """Eq. (14): in at angle α from the surface to ``d_max``, then vertically out."""
         angle = _check_angle(alpha)
         if angle == 0.0:
             raise ValueError("alpha=0.0 in scenario A: a path parallel to the surface never reaches d_max; "
                              "allowed: 0 < alpha <= 90")
         x1 = 0.0 if angle == 90.0 else params.d_max / math.tan(math.radians(angle))
-        return cls([(0.0, 0.0), (x1, params.d_max), (x1, exit_depth(params))], params.v, angle)
+        return cls([(0.0, 0.0), (x1, params.d_max), (x1, exit_depth(params, profile))], params.v, angle)
 
     @classmethod
-    def scenario_B(cls, alpha: float, params: Parameters, slide_length: float | None = None) -> "Path":
+    def scenario_B(cls, alpha: float, params: Parameters, slide_length: float | None = None,
+                   profile: PowerLaw | None = None) -> "Path":
         """Eq. (19): vertically to ``d_max``, then out at angle α below the jump-off depth.
 
         At α = 0 the motion is purely tangential at ``d_max`` and never comes
@@ -143,10 +147,10 @@ class Path:
         critical shift ``ū`` of the contact at ``d_max``).
         """
         angle = _check_angle(alpha)
-        end = exit_depth(params)
+        end = exit_depth(params, profile)
         if angle == 0.0:
             if slide_length is None:
-                radius = analytic.jkr_contact_radius(params.d_max, params, params.dgamma0)
+                radius = indenters.branch_radius(params.d_max, params, params.dgamma0, profile)
                 slide_length = 4.0 * float(analytic.critical_shift(radius, params))
                 if slide_length == 0.0:
                     slide_length = params.d_max
@@ -155,7 +159,8 @@ class Path:
         return cls([(0.0, 0.0), (0.0, params.d_max), (x2, end)], params.v, angle)
 
     @classmethod
-    def scenario_B_indentation(cls, alpha: float, params: Parameters, final_depth: float | None = None) -> "Path":
+    def scenario_B_indentation(cls, alpha: float, params: Parameters, final_depth: float | None = None,
+                               profile: PowerLaw | None = None) -> "Path":
         """The "+" branch of Fig. 9b: vertically to ``d_max``, further in at angle α to
         ``final_depth`` (default ``2 d_max``), then vertically out."""
         angle = _check_angle(alpha)
@@ -166,7 +171,8 @@ class Path:
             raise ValueError("alpha=0.0: a path parallel to the surface never goes deeper than d_max; "
                              "allowed: 0 < alpha <= 90")
         x2 = 0.0 if angle == 90.0 else (final - params.d_max) / math.tan(math.radians(angle))
-        return cls([(0.0, 0.0), (0.0, params.d_max), (x2, final), (x2, exit_depth(params))], params.v, angle)
+        return cls([(0.0, 0.0), (0.0, params.d_max), (x2, final), (x2, exit_depth(params, profile))], params.v,
+                   angle)
 
     # ------------------------------------------------------------------
     @property

@@ -13,7 +13,9 @@ from mdr_events.models.continuum import Tolerances, run_continuum
 from mdr_events.models.continuum.extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, extremum_names, solution_extrema
 from mdr_events.models.discrete import check_spacing, run_discrete
 from mdr_events.models.paths import Path
+from mdr_events.models import indenters
 from mdr_events.parameters import Parameters
+from mdr_events.profiles import PowerLaw
 from mdr_events.theory import analytic
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.validation import check_choice, check_count, check_real, real_array, shown, validate_alpha
@@ -102,7 +104,7 @@ register_schema(SIMULATION_CONTENT, {name: (CUSTOM_DIMENSION,) for name in PATH_
 SLIP_DIGITS = 1e-9
 
 
-def check_path_extent(params: Parameters, path: Path, label: str) -> None:
+def check_path_extent(params: Parameters, path: Path, label: str, profile: PowerLaw | None = None) -> None:
     """Reject a path so long that ``x − X(ξ)`` cannot be compared with ``ū(a)`` in double precision.
 
     The positions along the path are rounded to ``eps · |x|``; the slip
@@ -112,7 +114,7 @@ def check_path_extent(params: Parameters, path: Path, label: str) -> None:
     parameters: a path angle of a few 1e-6 degrees) is an error, not a
     silently wrong result.
     """
-    radius = float(analytic.jkr_contact_radius(params.d_max, params, params.dgamma0))
+    radius = float(indenters.branch_radius(params.d_max, params, params.dgamma0, profile))
     reference = max(float(analytic.critical_shift(radius, params)), params.d_max)
     limit = SLIP_DIGITS * reference / np.finfo(float).eps
     extent = float(np.max(np.abs(path.waypoints[:, 0])))
@@ -171,8 +173,9 @@ def _custom_paths(scenario: Path | Sequence[Path] | Mapping[str, Path]) -> dict[
     return dict(zip(labels, paths))
 
 
-def simulation_cases(params: Parameters, scenario, alpha) -> Cases:
-    """The cases of ``simulate(params, scenario, alpha)``, each path checked by :func:`check_path_extent`.
+def simulation_cases(params: Parameters, scenario, alpha, profile: PowerLaw | None = None) -> Cases:
+    """The cases of ``simulate(params, scenario, alpha)``, each path checked by :func:`check_path_extent`
+    (the scenarios' paths end below the jump-off of ``profile``'s ``Δγ1`` branch).
 
     A scenario name gives one path per angle along ``alpha``; custom paths (a :class:`Path`, a list
     of them or a mapping ``{label: Path}``) give one case each along ``case``, labelled by the
@@ -189,9 +192,9 @@ def simulation_cases(params: Parameters, scenario, alpha) -> Cases:
             raise ValueError(f"alpha={shown(alpha)} repeats {float(values[counts > 1][0])!r}; allowed: distinct "
                              "angles (each labels one case)")
         build = {"A": Path.scenario_A, "B": Path.scenario_B, "B+": Path.scenario_B_indentation}[scenario]
-        paths = [build(float(angle), params) for angle in angles]
+        paths = [build(float(angle), params, profile=profile) for angle in angles]
         for angle, path in zip(angles, paths):
-            check_path_extent(params, path, f"alpha={float(angle)!r} (degrees) in scenario {scenario}")
+            check_path_extent(params, path, f"alpha={float(angle)!r} (degrees) in scenario {scenario}", profile)
         return Cases(paths, ANGLE_DIMENSION, angles)
     if not isinstance(scenario, (Path, Mapping, list, tuple)):
         raise TypeError(f"scenario={scenario!r} ({type(scenario).__name__}) is not allowed; allowed: "
@@ -201,13 +204,13 @@ def simulation_cases(params: Parameters, scenario, alpha) -> Cases:
         raise ValueError(f"alpha={alpha!r} is not allowed with custom paths (their waypoints fix the motion); "
                          "allowed: alpha=None")
     for label, path in custom.items():
-        check_path_extent(params, path, f"scenario path {label!r}")
+        check_path_extent(params, path, f"scenario path {label!r}", profile)
     return Cases(list(custom.values()), CUSTOM_DIMENSION, np.array(list(custom), dtype=str))
 
 
-def scenario_paths(params: Parameters, scenario, alpha) -> tuple[list[Path], np.ndarray]:
+def scenario_paths(params: Parameters, scenario, alpha, profile: PowerLaw | None = None) -> tuple[list[Path], np.ndarray]:
     """The paths of :func:`simulation_cases` and their labels (angles in degrees, or case names)."""
-    cases = simulation_cases(params, scenario, alpha)
+    cases = simulation_cases(params, scenario, alpha, profile)
     return cases.paths, cases.labels
 
 
@@ -279,6 +282,7 @@ def simulate(
     samples: int | None = None,
     tolerances: Tolerances | None = None,
     limits: Limits | None = None,
+    profile: PowerLaw | None = None,
 ) -> xr.Dataset:
     """Simulate indentation and detachment along straight paths.
 
@@ -318,6 +322,11 @@ def simulate(
         What the run may use (default ``Limits()``: 2 GiB, 2e7 discrete steps, 1e7 springs per side, 1e7
         output samples, 2000 waypoints per path for the continuum); a larger run is refused before it
         starts with :class:`~mdr_events.limits.ResourceLimitError` giving the estimate.
+    profile : PowerLaw, optional
+        The indenter, a power law ``f = c rⁿ`` with ``n >= 1`` (:class:`~mdr_events.profiles.PowerLaw`; the
+        cone is ``n = 1``); default ``None``, the paper's paraboloid of ``params.R`` (then ``R`` is the
+        only use of the indenter's shape). Both methods take it; the dataset then has the attribute
+        ``profile`` saying which (absent: the paraboloid).
 
     Returns
     -------
@@ -341,13 +350,15 @@ def simulate(
         limits = DEFAULT_LIMITS
     elif not isinstance(limits, Limits):
         raise TypeError(f"limits={shown(limits)} is not allowed; allowed: a mdr_events.Limits")
-    cases = simulation_cases(params, scenario, alpha)
+    profile = indenters.check_simulated_profile(profile)
+    cases = simulation_cases(params, scenario, alpha, profile)
+    shape = {} if profile is None else {"profile": indenters.describe(profile)}
     if method == "continuum":
         for name, value in (("dx", dx), ("dt", dt), ("n_steps", n_steps)):
             if value is not None:
                 raise ValueError(f"{name} is not allowed with method='continuum' (it has no springs or time "
                                  "step); allowed: t, samples, tolerances")
-        return _simulate_continuum(params, scenario, cases, t, samples, tolerances, limits)
+        return _simulate_continuum(params, scenario, cases, t, samples, tolerances, limits, profile)
     dx = DEFAULT_DX if dx is None else dx
     for name, value in (("t", t), ("samples", samples), ("tolerances", tolerances)):
         if value is not None:
@@ -355,13 +366,13 @@ def simulate(
     paths = cases.paths
     for path in paths:
         path.first_contact_time()  # a path that never touches the surface is an error first
-    dx = check_spacing(params, dx, depth=min(params.d_max, max(path.max_depth for path in paths)))
+    dx = check_spacing(params, dx, depth=min(params.d_max, max(path.max_depth for path in paths)), profile=profile)
     step = _time_step(paths, dt, n_steps)
     check_time_step(paths, step, dt, n_steps)
-    raw = run_discrete(params, paths, dx, step, limits=limits)
+    raw = run_discrete(params, paths, dx, step, profile=profile, limits=limits)
     attrs = dict(method=method, scenario=_scenario_name(scenario, cases), dx=float(dx), dt=step,
                  spring_count_per_side=int(raw["spring_count"]),
-                 content=SIMULATION_CONTENT)
+                 content=SIMULATION_CONTENT, **shape)
     return simulation_dataset(params, cases, raw["time"], raw, **attrs)
 
 
@@ -371,7 +382,7 @@ def _scenario_name(scenario, cases: Cases) -> str:
 
 
 def _simulate_continuum(params: Parameters, scenario, cases: Cases, t, samples, tolerances,
-                        limits: Limits) -> xr.Dataset:
+                        limits: Limits, profile: PowerLaw | None = None) -> xr.Dataset:
     samples = DEFAULT_SAMPLES if samples is None else check_count("samples", samples, 2)
     if tolerances is None:
         tolerances = Tolerances()
@@ -384,10 +395,13 @@ def _simulate_continuum(params: Parameters, scenario, cases: Cases, t, samples, 
                 or np.any(np.diff(times) <= 0):
             raise ValueError(f"t={shown(t)} is not allowed; allowed: a non-empty, strictly "
                              "increasing 1-D grid of finite times >= 0 (s)")
-    raw = run_continuum(params, cases.paths, times, samples=samples, tolerances=tolerances, limits=limits)
+    raw = run_continuum(params, cases.paths, times, samples=samples, tolerances=tolerances, limits=limits,
+                        profile=profile)
     attrs = dict(method="continuum", scenario=_scenario_name(scenario, cases),
                  rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
                  content=SIMULATION_CONTENT)
+    if profile is not None:
+        attrs["profile"] = indenters.describe(profile)
     dataset = simulation_dataset(params, cases, raw["time"], raw, **attrs)
     extrema = [solution_extrema(solution) for solution in raw["solutions"]]
     dataset = dataset.merge(event_log(raw["events"], cases.dimension)).merge(extrema_dataset(extrema, cases.dimension))

@@ -23,7 +23,8 @@ from mdr_events.validation import check_flag
 
 __all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_force", "contact_radius",
            "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
-           "critical_angle_B", "convex_root",
+           "critical_angle_B", "convex_root", "branch_root",
+           "prefactor", "hess_prefactor",
            "ADHESIVE_MIN_EXPONENT", "ROOT_RTOL"]
 
 #: With adhesion a power law needs ``n`` above this: below it ``√a`` outgrows ``aⁿ`` and no contact is stable.
@@ -60,16 +61,6 @@ def _power_law_only(profile, what: str) -> PowerLaw:
     return profile
 
 
-def _prefactor(profile: PowerLaw) -> float:
-    """``κₙ c = g(1)``: the MDR profile is ``g(x) = κₙ c xⁿ`` (3)."""
-    return float(_rel("profile_power_law").numeric(1.0, profile.c, profile.n))
-
-
-def _hess_prefactor(params: Parameters, work_of_adhesion: float) -> float:
-    """``sqrt(2π Δγ / E*)``: Heß's limit (8) is this times ``√a``."""
-    return float(_rel("hess_max_elongation").numeric(1.0, work_of_adhesion, params.E_star))
-
-
 def _as_output(values: np.ndarray, like) -> np.ndarray | float:
     return float(values) if np.ndim(like) == 0 else values
 
@@ -93,6 +84,35 @@ def convex_root(function, derivative, upper, lower, rtol: float = ROOT_RTOL):
         if done:
             break
     return s
+
+
+def branch_root(depth: float, kc: float, hess: float, exponent: float, lower: float,
+                rtol: float = ROOT_RTOL) -> float:
+    """``s = √a`` on the stable branch at ``depth``, for Python floats (the continuum's hot loop):
+    the root of ``kc s^exponent − hess s − depth`` at or above ``lower`` (the jump-off's ``s``),
+    ``exponent = 2n``, ``kc = κ c``, ``hess = sqrt(2πΔγ/E*)``. Newton from an upper bound (as
+    :func:`convex_root`, one point)."""
+    s = max(lower, (2.0 * abs(depth) / kc) ** (1.0 / exponent),
+            (2.0 * hess / kc) ** (1.0 / (exponent - 1.0)) if hess > 0.0 else 0.0)
+    for _ in range(ROOT_MAX_ITERATIONS):
+        slope = exponent * kc * s ** (exponent - 1.0) - hess
+        if not slope > 0.0:
+            return s
+        s_next = max(s - max((kc * s**exponent - hess * s - depth) / slope, 0.0), lower)
+        if abs(s_next - s) <= rtol * s_next:
+            return s_next
+        s = s_next
+    return s
+
+
+def prefactor(profile: PowerLaw) -> float:
+    """``κₙ c = g(1)``: the MDR profile is ``g(x) = κₙ c xⁿ`` (3)."""
+    return float(_rel("profile_power_law").numeric(1.0, profile.c, profile.n))
+
+
+def hess_prefactor(params: Parameters, work_of_adhesion: float) -> float:
+    """``sqrt(2π Δγ / E*)``: Heß's limit (8) is this times ``√a``."""
+    return float(_rel("hess_max_elongation").numeric(1.0, work_of_adhesion, params.E_star))
 
 
 def equivalent_profile(x, profile: PowerLaw):
@@ -185,7 +205,7 @@ def contact_radius(depth, profile: PowerLaw, params: Parameters, work_of_adhesio
             radius = _rel("power_law_hertz_radius").numeric(np.maximum(depth_arr, 0.0), profile.c, profile.n)
         return _as_output(np.where(depth_arr >= 0.0, radius, np.nan), depth_arr)
     _check_adhesive(profile, work_of_adhesion)
-    kc, k = _prefactor(profile), _hess_prefactor(params, work_of_adhesion)
+    kc, k = prefactor(profile), hess_prefactor(params, work_of_adhesion)
     two_n = 2.0 * profile.n
     point = jump_off(profile, params, work_of_adhesion)
     s_fold = math.sqrt(point["contact_radius"])
@@ -221,7 +241,7 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
         return _as_output(np.asarray(_rel("flat_punch_d_crit_A").numeric(profile.radius, tan_alpha, params.tau0,
                                                                          params.G_star), dtype=float), alpha_arr)
     K = float(_rel("critical_shift").numeric(1.0, params.tau0, params.G_star))  # ū = K a (13)
-    kc = _prefactor(profile)
+    kc = prefactor(profile)
     if not adhesion or params.dgamma0 == 0.0:
         if profile.n == 1.0:
             return _as_output(np.where(tan_alpha * K < kc, 0.0, np.nan), alpha_arr)
@@ -232,7 +252,7 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
     if profile.n < 1.0:
         raise ValueError(f"PowerLaw.n={profile.n!r} is not allowed for the adhesive slip onset; allowed: n >= 1 "
                          "(below it the onset condition may have several roots)")
-    k = _hess_prefactor(params, params.dgamma0)
+    k = hess_prefactor(params, params.dgamma0)
     power = 2.0 * profile.n - 1.0
     slope = tan_alpha * K
     if power == 1.0:  # the cone: linear in s
@@ -292,7 +312,7 @@ def d_crit_B(alpha, profile: Profile, params: Parameters, adhesion: bool = False
         return _as_output(np.where(vertical | apart, -np.inf, depth), alpha_arr)
     if work > 0.0:
         _check_adhesive(profile, work)
-    kc, k = _prefactor(profile), _hess_prefactor(params, work)
+    kc, k = prefactor(profile), hess_prefactor(params, work)
     two_n = 2.0 * profile.n
     slope = np.where(vertical, 0.0, tan_alpha * K)
     fold = jump_off(profile, params, work)

@@ -178,14 +178,14 @@ def test_a_zone_layout_starts_at_the_exact_size_and_ends_at_its_target(anchors, 
     a = 3.8e-3
     top = anchors.value(3e-3)
     level = share * top
-    zones = lay_out_zones(anchors, model.K, _resting_at(level + model.K * a), 0.0, a, {cap: True for cap in Cap}, model.params.R)
+    zones = lay_out_zones(anchors, model.K, _resting_at(level + model.K * a), 0.0, a, {cap: True for cap in Cap}, model.grow.depth_term)
     positive = zones[Cap.POSITIVE]
     assert positive.size(level, a) == pytest.approx(anchors.zone_size(Cap.POSITIVE, level, a), rel=1e-12)
     # the rising piece's front reaches its end (top), or the falling piece starts to slide at its edge value
     assert positive.target(a) == pytest.approx(min(top, anchors.value(a)) if level < anchors.value(a) else top,
                                                rel=1e-12)
     assert positive.summary(a).slip is Slip.PARTIAL and positive.summary(a).centre
-    resting = lay_out_zones(anchors, model.K, _resting_at(level + model.K * a), 0.0, a, {cap: False for cap in Cap}, model.params.R)
+    resting = lay_out_zones(anchors, model.K, _resting_at(level + model.K * a), 0.0, a, {cap: False for cap in Cap}, model.grow.depth_term)
     assert resting[Cap.POSITIVE].size(level, a) == 0.0 and resting[Cap.POSITIVE].summary(a) == NO_ZONE
     assert resting[Cap.POSITIVE].target(a) == 0.0  # the lowest anchor: slip onset
 

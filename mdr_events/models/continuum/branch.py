@@ -1,4 +1,5 @@
-"""One adhesive branch (9) of the contact radius, evaluated for Python floats and arrays."""
+"""One adhesive branch (9) of the contact radius, evaluated for Python floats and arrays: the paper's
+paraboloid (:class:`Branch`) or a power law ``f = c rⁿ`` (:class:`PowerLawBranch`)."""
 
 from __future__ import annotations
 
@@ -6,8 +7,9 @@ import math
 
 import numpy as np
 
-from mdr_events.theory import analytic, symbolic
+from mdr_events.theory import analytic, power_law, symbolic
 from mdr_events.parameters import Parameters
+from mdr_events.profiles import PowerLaw
 
 #: A depth this share below the jump-off depth still gives the jump-off radius: a radius pinned just
 #: outside the fold is released at a depth that rounds below it.
@@ -54,6 +56,11 @@ class Branch:
         """``∫_0^a d(ξ) dξ`` along this branch."""
         return self._integral(a, *self._arguments) if a > 0 else 0.0
 
+    def depth_term(self, a: float) -> float:
+        """The size of the terms of (9) at radius ``a``: the profile's ``g(a) = a²/R`` (the depth they cancel to
+        near first contact of an adhesive indenter is far smaller: tolerances are shares of this)."""
+        return a**2 / self.params.R
+
     def depths(self, a: np.ndarray) -> np.ndarray:
         """:meth:`depth` for an array of radii (vectorised)."""
         a = np.asarray(a, dtype=float)
@@ -78,3 +85,57 @@ class Branch:
         coefficients = self._coefficients(depth, *self._arguments)
         root = analytic.positive_polynomial_root(coefficients, lower=self._floor, rtol=rtol)
         return root * root
+
+
+class PowerLawBranch(Branch):
+    """The branch of the power law ``f = c rⁿ`` (:class:`~mdr_events.profiles.PowerLaw`):
+    ``d = κ c aⁿ − sqrt(2π a Δγ / E*)`` (:mod:`mdr_events.theory.power_law`); the radius of a depth is the root of
+    a convex function of ``s = √a`` above the jump-off (:func:`~mdr_events.theory.power_law.branch_root`)."""
+
+    def __init__(self, params: Parameters, work: float, profile: PowerLaw):
+        self.params, self.work, self.profile = params, work, profile
+        self._arguments = (profile.c, profile.n, params.E_star, work)
+        self._depth = symbolic.relation("power_law_depth").scalar
+        self._slope = symbolic.relation("power_law_depth_slope").scalar
+        self._integral = symbolic.relation("power_law_depth_integral").scalar
+        point = power_law.jump_off(profile, params, work)
+        self.jump_off_radius, self.jump_off_depth = point["contact_radius"], point["depth"]
+        self._floor = math.sqrt(self.jump_off_radius)
+        self._kc = power_law.prefactor(profile)
+        self._hess = power_law.hess_prefactor(params, work)
+        self._exponent = 2.0 * profile.n
+
+    def slope(self, a: float) -> float:
+        if a > 0:
+            return self._slope(a, *self._arguments)
+        if self.work > 0.0:
+            return -math.inf
+        n = self.profile.n  # n κ c a^(n−1) at a = 0
+        return 0.0 if n > 1.0 else (self._kc if n == 1.0 else math.inf)
+
+    def depth_term(self, a: float) -> float:
+        return self._kc * a**self.profile.n
+
+    def depths(self, a: np.ndarray) -> np.ndarray:
+        a = np.asarray(a, dtype=float)
+        value = power_law.branch_depth(np.where(a > 0, a, 1.0), self.profile, self.params, self.work)
+        return np.where(a > 0, value, 0.0)
+
+    def radii(self, depth: np.ndarray) -> np.ndarray:
+        return np.asarray(power_law.contact_radius(np.asarray(depth, dtype=float), self.profile, self.params,
+                                                   self.work))
+
+    def radius(self, depth: float, rtol: float) -> float:
+        if self.work == 0.0:  # no contact above the surface
+            return (depth / self._kc) ** (1.0 / self.profile.n) if depth > 0 else 0.0
+        if depth < self.jump_off_depth:
+            if depth < self.jump_off_depth * (1.0 + FOLD_SHARE):
+                return math.nan
+            return self.jump_off_radius
+        root = power_law.branch_root(depth, self._kc, self._hess, self._exponent, self._floor, rtol)
+        return root * root
+
+
+def make_branch(params: Parameters, work: float, profile: PowerLaw | None = None) -> Branch:
+    """The branch of ``work`` for ``profile`` (``None``: the paraboloid of ``params.R``, the paper's)."""
+    return Branch(params, work) if profile is None else PowerLawBranch(params, work, profile)

@@ -8,10 +8,11 @@ from typing import NamedTuple
 
 import numpy as np
 
-from mdr_events.theory import symbolic
+from mdr_events.theory import analytic, power_law, symbolic
 from mdr_events.parameters import Parameters
+from mdr_events.profiles import PowerLaw
 from mdr_events.models.paths import Path
-from .branch import Branch
+from .branch import Branch, make_branch
 from .state import Regime
 from .tolerances import NEGLIGIBLE_SHARE, PIECE_SHARE, SEGMENT_RESOLUTION, Tolerances
 
@@ -23,16 +24,25 @@ class ContinuumModel:
     ----------
     grow, shrink : Branch
         The ``Δγ0`` (attach) and ``Δγ1`` (detach) branches of (9).
+    profile : PowerLaw or None
+        The indenter (``None``: the paper's paraboloid of ``params.R``).
     K : float
         Critical shift per contact radius, ``ū(a) = K a`` (13).
     """
 
-    def __init__(self, params: Parameters, tolerances: Tolerances):
+    def __init__(self, params: Parameters, tolerances: Tolerances, profile: PowerLaw | None = None):
         self.params = params
         self.tolerances = tolerances
-        self.grow = Branch(params, params.dgamma0)
-        self.shrink = Branch(params, params.dgamma1)
+        self.profile = profile
+        self.grow = make_branch(params, params.dgamma0, profile)
+        self.shrink = make_branch(params, params.dgamma1, profile)
         self.K = float(symbolic.relation("critical_shift").numeric(1.0, params.tau0, params.G_star))
+
+    def normal_force(self, depth, radius):
+        """``F_N`` (10) of the springs in ``|x| < a`` at depth ``d``, vectorised, for the model's profile."""
+        if self.profile is None:
+            return analytic.normal_force(depth, radius, self.params)
+        return power_law.normal_force(depth, radius, self.profile, self.params)
 
     def branch(self, regime: Regime) -> Branch:
         """The branch a moving radius follows in ``regime`` (GROWING or SHRINKING)."""
@@ -121,7 +131,7 @@ def resolution(model: ContinuumModel, path: Path, segments: list[Segment]) -> Re
     travel = float(np.sum(np.abs(np.diff(path.waypoints[:, 0]))))
     for segment in segments:
         if segment.vd != 0.0 and max(segment.ds, segment.d(segment.t1)) > 0.0:
-            travel = max(travel, abs(segment.vx / segment.vd) * radius**2 / model.params.R)
+            travel = max(travel, abs(segment.vx / segment.vd) * model.grow.depth_term(radius))
     return Resolution(travel, model.K * radius)
 
 

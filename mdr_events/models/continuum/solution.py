@@ -10,7 +10,6 @@ from typing import NamedTuple
 import numpy as np
 from scipy import optimize
 
-from mdr_events.theory import analytic
 from mdr_events.parameters import Parameters
 from .model import ContinuumModel
 from .span import Span, Variable
@@ -90,7 +89,7 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     else:
         a = np.full(t.shape, span.pinned_radius)
     out["contact_radius"] = a
-    out["normal_force"] = np.asarray(analytic.normal_force(d, a, solution.params), dtype=float)  # (10)
+    out["normal_force"] = np.asarray(model.normal_force(d, a), dtype=float)  # (10)
     if span.interpolant is None:
         force = np.full(t.shape, span.force)
     else:
@@ -259,7 +258,7 @@ def _scalar_quantity(solution: PathSolution, index: int, time: float, quantity: 
     else:
         force = float(span.interpolant(a / span.scale if span.variable is Variable.RADIUS
                                        else solution.t_contact + time)[0])
-    normal = float(analytic.normal_force(d, a, solution.params))
+    normal = float(model.normal_force(d, a))
     area = math.pi * a * a
     values = {"normal_force": normal, "tangential_force": force, "contact_radius": a, "contact_area": area,
               "mean_pressure": normal / area if area > 0 else math.nan,

@@ -15,6 +15,8 @@ import numpy as np
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
+from mdr_events.models.indenters import check_simulated_profile
+from mdr_events.profiles import PowerLaw
 from .anchors import AnchorMap, Piece
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
 from .plan import Action, SpanPlan, plan_span
@@ -26,12 +28,13 @@ from .zones import lay_out_zones
 
 
 def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Tolerances(),
-               limits: Limits = DEFAULT_LIMITS) -> PathSolution:
-    """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`); a path with more
-    waypoints than ``limits.waypoints`` is refused before the work starts."""
+               limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None) -> PathSolution:
+    """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`) for the indenter
+    ``profile`` (``None``: the paper's paraboloid of ``params.R``); a path with more waypoints than
+    ``limits.waypoints`` is refused before the work starts."""
     limits.check(f"the continuum run of a path with {len(path.waypoints)} waypoints",
                  waypoints=len(path.waypoints))
-    model = ContinuumModel(params, tolerances)
+    model = ContinuumModel(params, tolerances, check_simulated_profile(profile))
     segments = kinematics(path)
     check_resolvable(model, path, segments)
     solution = PathSolution(model, t_contact=path.first_contact_time())
@@ -170,7 +173,8 @@ def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOut
         if Trigger.ZONE_REACHES in fired[cap]:
             state.sliding[cap] = True
     x = segment.x(outcome.t_stop)
-    layouts = lay_out_zones(state.anchors, model.K, segment, outcome.t_stop, radius, state.sliding, model.params.R)
+    layouts = lay_out_zones(state.anchors, model.K, segment, outcome.t_stop, radius, state.sliding,
+                            model.grow.depth_term)
     logged: list[Logged] = []
     turned = [cap for cap in Cap if Trigger.LEVEL_TURNS in fired[cap]]
     if turned:
@@ -224,7 +228,7 @@ BYTES_PER_SAMPLE = 128
 
 def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | None = None,
                   samples: int = 2001, tolerances: Tolerances = Tolerances(),
-                  limits: Limits = DEFAULT_LIMITS) -> dict:
+                  limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None) -> dict:
     """Solve every path and fill a common time grid (default: ``samples`` points to the longest run).
 
     Returns the arrays of :func:`evaluate` stacked to (n_cases, n_time), ``time``, the event
@@ -234,7 +238,7 @@ def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | Non
     n_time = samples if times is None else len(times)
     limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
                  memory=n_time * len(paths) * BYTES_PER_SAMPLE)
-    solutions = [solve_path(params, path, tolerances, limits) for path in paths]
+    solutions = [solve_path(params, path, tolerances, limits, profile) for path in paths]
     if times is None:
         longest = max(solution.end_time for solution in solutions)
         times = np.linspace(0.0, longest * (1.0 + 1.0 / samples), samples)

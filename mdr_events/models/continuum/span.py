@@ -154,11 +154,11 @@ class SpanIntegrator:
             self.start, self.stop = t0, t1
             self.a0 = span.pinned_radius
         self.x0 = self.segment.x(t0)
-        R = model.params.R
+        depth_term = model.grow.depth_term
         # at a = 0 (a Hertz contact's first instant) every local length is 0: the travel up to the span's
         # largest radius keeps the level offset above zero there (the centre's level starts at 0 and falls)
         reach = self.a0 if self.a0 > 0 or not self.moving else self.scale * max(self.start, self.stop)
-        lengths = length_scale(anchors, self.K, self.x0, self.a0, indenter_travel(self.segment, t0, reach, R))
+        lengths = length_scale(anchors, self.K, self.x0, self.a0, indenter_travel(self.segment, t0, reach, depth_term))
         # Rising events cross a level a hair beyond zero: LEVEL_ULPS ulp of the lengths involved, just
         # above the rounding of x − Y ∓ ū (an event moves by about 1e-12 s at the paper's speed). A
         # function that starts at zero to rounding and first falls (the centre of a Hertz contact at
@@ -166,7 +166,7 @@ class SpanIntegrator:
         # starts beyond it has crossed already and fires at once.
         self.offset = LEVEL_ULPS * EPS * lengths
         self.edge_margin = EDGE_LEAVING_TOLERANCES * PIECE_SHARE * lengths
-        self.zones = lay_out_zones(anchors, self.K, self.segment, t0, self.a0, sliding, R)
+        self.zones = lay_out_zones(anchors, self.K, self.segment, t0, self.a0, sliding, depth_term)
         self.positive, self.negative = self.zones[Cap.POSITIVE], self.zones[Cap.NEGATIVE]
         self.sliding = dict(sliding)
         self.edge_start = anchors.pieces[-1].start if anchors.pieces else 0.0

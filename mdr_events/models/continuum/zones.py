@@ -13,6 +13,7 @@ zone out again.
 from __future__ import annotations
 
 import enum
+from collections.abc import Callable
 
 from .anchors import AnchorMap, Piece
 from .model import Segment
@@ -151,22 +152,22 @@ def length_scale(anchors: AnchorMap, K: float, x: float, radius: float, travel: 
     return max(K * radius, abs(x), largest_anchor, travel)
 
 
-def indenter_travel(segment: Segment, t: float, radius: float, R: float) -> float:
+def indenter_travel(segment: Segment, t: float, radius: float, depth_term: Callable[[float], float]) -> float:
     """The tangential travel over which a level ``x − cap ū`` is computed on ``segment`` at time ``t``: ``|v_x| t``
-    (the level's time is known to its rounding) and, on a segment that changes the depth, ``|v_x / v_d| a²/R``
+    (the level's time is known to its rounding) and, on a segment that changes the depth, ``|v_x / v_d| g(a)``
     (a moving radius is the integration variable: the level's time comes from the depth of the branch, (9),
-    whose terms are of the size ``a²/R``: near first contact of an adhesive indenter they cancel to a depth
-    far smaller). A share of it is what the level can be resolved to."""
+    whose terms are of the size ``depth_term(a) = g(a)``, ``a²/R`` for the paraboloid: near first contact of an
+    adhesive indenter they cancel to a depth far smaller). A share of it is what the level can be resolved to."""
     travel = abs(segment.vx) * abs(t)
     if segment.vd != 0.0:
-        travel = max(travel, abs(segment.vx / segment.vd) * radius**2 / R)
+        travel = max(travel, abs(segment.vx / segment.vd) * depth_term(radius))
     return travel
 
 
 def lay_out_zones(anchors: AnchorMap, K: float, segment: Segment, t: float, radius: float, sliding: dict[Cap, bool],
-                  R: float) -> dict[Cap, ZoneLayout]:
+                  depth_term: Callable[[float], float]) -> dict[Cap, ZoneLayout]:
     """Both caps' slip zones with the indenter at ``segment.x(t)`` and the radius ``radius`` (levels ``x ∓ K a``),
     a piece value within :data:`PIECE_SHARE` of the :func:`length_scale` beyond a level counting as reached."""
     x = segment.x(t)
-    tolerance = PIECE_SHARE * length_scale(anchors, K, x, radius, indenter_travel(segment, t, radius, R))
+    tolerance = PIECE_SHARE * length_scale(anchors, K, x, radius, indenter_travel(segment, t, radius, depth_term))
     return {cap: ZoneLayout(anchors, cap, x - cap * K * radius, radius, sliding[cap], tolerance) for cap in Cap}
