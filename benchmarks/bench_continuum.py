@@ -141,13 +141,10 @@ def main() -> None:
 
 def power_laws(p: me.Parameters) -> None:
     """Solve + fill 2001 samples for power-law indenters against the paraboloid (medians of 7)."""
-    radius = math.sqrt(p.R * p.d_max)
-
-    def matching(n):  # the power law with the paraboloid's non-adhesive radius at d_max
-        return PowerLaw(p.d_max / float(power_law.equivalent_profile(radius, PowerLaw(1.0, n))), n)
-
+    radius = math.sqrt(p.R * p.d_max)  # each power law with the paraboloid's non-adhesive radius at d_max
     profiles = {"paraboloid (default)": None, "PowerLaw.paraboloid(R)": PowerLaw.paraboloid(p.R),
-                "cone n = 1": matching(1.0), "n = 3": matching(3.0)}
+                "cone n = 1": power_law.with_radius_at(1.0, radius, p.d_max),
+                "n = 3": power_law.with_radius_at(3.0, radius, p.d_max)}
     print("power-law indenters: solve + fill 2001 samples, median of 7")
     slowest = {}
     for scenario in ("A", "B"):

@@ -145,13 +145,9 @@ import matplotlib.pyplot as plt
 radius_max = math.sqrt(p.R * p.d_max)
 
 
-def matching(n):  # the power law whose non-adhesive radius at d_max is the paraboloid's
-    shape = PowerLaw(1.0, n)
-    return PowerLaw(p.d_max / float(power_law.equivalent_profile(radius_max, shape)), n)
-
-
-shapes = {"cone (n = 1)": matching(1.0), "paraboloid (n = 2)": PowerLaw.paraboloid(p.R),
-          "quartic (n = 4)": matching(4.0)}
+shapes = {"cone (n = 1)": power_law.with_radius_at(1.0, radius_max, p.d_max),  # the paraboloid's radius at d_max
+          "paraboloid (n = 2)": PowerLaw.paraboloid(p.R), "quartic (n = 4)": power_law.with_radius_at(4.0, radius_max,
+                                                                                                     p.d_max)}
 punch = FlatPunch(radius_max)
 fig, (ax_force, ax_angle) = plt.subplots(1, 2, figsize=(12, 4.6), constrained_layout=True)
 for name, shape in shapes.items():

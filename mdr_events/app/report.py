@@ -27,7 +27,8 @@ from mdr_events.app.report_data import (FIT_DEMO_ANGLE, FIT_DEMO_NOISE, FIT_DEMO
                                         COMPUTE_STEPS, CONVERGENCE_SPACINGS, FIGURE_DX, FIGURE_NUMBERS,
                                         FIGURE_STEPS, FRETTING_ANGLE, FRETTING_CYCLES, FRETTING_OBLIQUE,
                                         FRETTING_RADIUS, HISTORY_ANGLE, HISTORY_SPACINGS, OVERLAY_ANGLE,
-                                        PAPER_CRITICAL_ANGLES, PAPER_TAU0, RADII, AdhesiveStrengthRow, AreaGrowthRow,
+                                        PAPER_CRITICAL_ANGLES, PAPER_TAU0, PROFILE_ANGLE, RADII, AdhesiveStrengthRow,
+                                        AreaGrowthRow, ProfileRow, profile_rows,
                                         ConvergenceRow, CriticalAngleRow, CrossCheckRow, Differences, FrettingStudy,
                                         HistoryConvergence, MaximaRow, PinnedIntervalRow, Reproduction,
                                         ScenarioBAngleRow, ShearPlateauRow, SlipOnsetVerdict, compute,
@@ -40,11 +41,12 @@ from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Paramet
 from mdr_events.plotting.figures import plot_fretting
 from mdr_events.plotting.fit import plot_fit
 from mdr_events.plotting.universal import plot_universal_map
+from mdr_events.plotting.profiles import plot_profile_comparison
 from mdr_events.theory.analytic import critical_angle, dimensionless_groups
 
 __all__ = ["reproduce", "report_text", "compute", "Reproduction", "PAPER_CRITICAL_ANGLES", "RADII", "FIGURE_NUMBERS",
            "software_versions", "recorded_versions", "RECORDED_PACKAGES", "fretting_section", "relative_difference_text",
-           "FRETTING_STEM", "WRITE_STEPS"]
+           "FRETTING_STEM", "WRITE_STEPS", "PROFILE_STEM", "profile_rows", "profiles_section"]
 
 #: Relative differences below this are round-off, whose digits differ between machines: the report prints
 #: "< 1e-12" for them, so that it stays the same text everywhere.
@@ -57,6 +59,8 @@ FRETTING_STEM = f"fretting_{FRETTING_RADIUS}"
 FIT_STEM = f"fit_A{FIT_DEMO_ANGLE:g}_R30"
 #: The stem of the universal map's files in ``results/``.
 UNIVERSAL_STEM = "universal_map"
+#: The comparison of indenters (:func:`~mdr_events.app.report_data.profile_comparison`).
+PROFILE_STEM = f"profiles_A{PROFILE_ANGLE:g}"
 #: Progress steps of :func:`reproduce` after :func:`compute`: Fig. 8 and 10; the fretting study, the fit and README.md.
 WRITE_STEPS = 2
 
@@ -391,6 +395,33 @@ def universal_section(dataset) -> list[str]:
     return lines + [""]
 
 
+def profiles_section(rows: list[ProfileRow]) -> list[str]:
+    """The comparison of indenters: the closed forms of each power law against the continuum, and the discrete
+    model's gap (:func:`~mdr_events.app.report_data.profile_rows`)."""
+    lines = [
+        "## Other indenters: cone, paraboloid, quartic",
+        "",
+        f"Scenario A at {PROFILE_ANGLE:g}° with the paper's material and adhesion for power laws `f = c rⁿ` that reach "
+        "the paraboloid's (R = 30 mm) non-adhesive contact radius at d_max (`simulate(..., profile=PowerLaw(c, n))`; "
+        f"`{PROFILE_STEM}_<name>.nc`, `{PROFILE_STEM}_<name>_discrete.nc`, `{PROFILE_STEM}.png`). The closed forms are "
+        "Heß's rule for the power law (`mdr_events.power_law`): the pull-off force under force control, which the "
+        "least normal force of the displacement-controlled run equals, and the slip onset (18) while indenting. "
+        f"Discrete: Δx = {FIGURE_DX * 1e6:g} µm, {FIGURE_STEPS} steps; its largest gap to the continuum in F_x over the "
+        "largest F_x. The flat punch (Kendall) has closed forms but no simulator yet.",
+        "",
+        "| indenter | c | n | pull-off force, closed form | continuum F_N,min | slip onset (18) | continuum onset | "
+        "F_x,max | discrete gap |",
+        "|---|---|---|---|---|---|---|---|---|",
+    ]
+    for row in rows:
+        onset = "none before d_max" if math.isnan(row.onset_closed_form) else f"{row.onset_closed_form * 1e3:.6f} mm"
+        found = "none" if math.isnan(row.onset_continuum) else f"{row.onset_continuum * 1e3:.6f} mm"
+        lines.append(f"| {row.name} | {row.profile.c:.6g} | {row.profile.n:g} | {row.pull_off_closed_form:.9g} N | "
+                     f"{row.pull_off_continuum:.9g} N | {onset} | {found} | {row.tangential_force_max:.6g} N | "
+                     f"{row.discrete_difference:.2e} |")
+    return lines + [""]
+
+
 def _parameter_section() -> list[str]:
     params = Parameters.paper()
     lines = [
@@ -419,6 +450,8 @@ def _parameter_section() -> list[str]:
         f"- `{FIT_STEM}.{{nc,png}}`: the fit demonstration (estimates, intervals, correlations, residuals), its",
         f"  synthetic measurement in `{FIT_STEM}_measured.nc`.",
         f"- `{UNIVERSAL_STEM}.{{nc,png}}`: the critical angles over the dimensionless groups, the paper's sets marked.",
+        f"- `{PROFILE_STEM}.png`, `{PROFILE_STEM}_<cone|paraboloid|quartic>.nc` (continuum) and `..._discrete.nc`:",
+        "  other indenters in scenario A.",
         "",
     ]
     return lines
@@ -479,6 +512,8 @@ def report_text(data: Reproduction | None = None, versions: dict[str, str] | Non
         lines += fit_section(data.fitting)
     if data.universal is not None:
         lines += universal_section(data.universal)
+    if data.profiles is not None:
+        lines += profiles_section(profile_rows(data.profiles, Parameters.paper()))
     lines += _parameter_section()
     lines += _software_section(software_versions() if versions is None else versions)
     return "\n".join(lines)
@@ -515,7 +550,8 @@ def reproduce(out: Path, progress: Callable[[str], None] = print, keep_agreeing:
         stem = f"fig{FIGURE_NUMBERS[scenario]}_{label}"
         overlay, outcome = write_dataset(data.discrete[(label, scenario)], out / f"{stem}_discrete.nc", keep_agreeing)
         done([outcome] + write_simulation(dataset, out, stem, overlay=overlay, keep_agreeing=keep_agreeing))
-    step("writing the fretting study (.nc, .png, events .csv), the fit, the universal map and README.md")
+    step("writing the fretting study (.nc, .png, events .csv), the fit, the universal map, the other indenters "
+         "and README.md")
     overlay, outcome = write_dataset(data.fretting.discrete, out / f"{FRETTING_STEM}_discrete.nc", keep_agreeing)
     done([outcome] + write_simulation(data.fretting.continuum, out, FRETTING_STEM, overlay=overlay,
                                       keep_agreeing=keep_agreeing, plot=plot_fretting))
@@ -524,6 +560,16 @@ def reproduce(out: Path, progress: Callable[[str], None] = print, keep_agreeing:
     done([measured, outcome, write_figure(plot_fit(fitted), out / f"{FIT_STEM}.png", keep_agreeing)])
     mapped, outcome = write_dataset(data.universal, out / f"{UNIVERSAL_STEM}.nc", keep_agreeing)
     done([outcome, write_figure(plot_universal_map(mapped), out / f"{UNIVERSAL_STEM}.png", keep_agreeing)])
+    written, kept = {}, {}
+    profile_outcomes = []
+    for name in data.profiles.profiles:
+        written[name], outcome = write_dataset(data.profiles.continuum[name], out / f"{PROFILE_STEM}_{name}.nc",
+                                               keep_agreeing)
+        kept[name], discrete_outcome = write_dataset(data.profiles.discrete[name],
+                                                     out / f"{PROFILE_STEM}_{name}_discrete.nc", keep_agreeing)
+        profile_outcomes += [outcome, discrete_outcome]
+    figure = plot_profile_comparison(written, kept)
+    done(profile_outcomes + [write_figure(figure, out / f"{PROFILE_STEM}.png", keep_agreeing)])
     text = report_text(data)
     readme = out / "README.md"
     if keep_agreeing and readme.exists() and all(o.status is FileStatus.KEPT for o in outcomes):

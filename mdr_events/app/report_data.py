@@ -27,7 +27,8 @@ from mdr_events.models.paths import Path, exit_depth
 from mdr_events.models.simulate import (CUSTOM_DIMENSION, SIMULATION_CONTENT, case_dimension, scenario_paths,
                                         simulate)
 from mdr_events.parameters import Parameters
-from mdr_events.theory import analytic
+from mdr_events.profiles import PowerLaw
+from mdr_events.theory import analytic, power_law
 
 __all__ = ["Reproduction", "compute", "jobs", "COMPUTE_STEPS", "critical_angles_A", "critical_angles_B",
            "cross_check_rows", "differences", "extremum_convergence", "history_convergence", "FrettingContact",
@@ -117,6 +118,7 @@ class Reproduction:
     fretting: FrettingStudy | None = None  #: the fretting study at :data:`FRETTING_RADIUS`
     fitting: "FitDemonstration | None" = None  #: the fit to synthetic measurements (:func:`fit_demonstration`)
     universal: xr.Dataset | None = None  #: the critical angles over the dimensionless groups (:func:`universal_map`)
+    profiles: "ProfileComparison | None" = None  #: other indenters, scenario A (:func:`profile_comparison`)
 
 
 def jobs() -> list[tuple[str, float, str]]:
@@ -125,7 +127,7 @@ def jobs() -> list[tuple[str, float, str]]:
 
 
 #: Progress messages :func:`compute` sends (one per step).
-COMPUTE_STEPS = 2 * len(RADII) * len(SCENARIOS) + 5
+COMPUTE_STEPS = 2 * len(RADII) * len(SCENARIOS) + 6
 
 
 def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
@@ -169,6 +171,9 @@ def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
         "groups (the sweep on a local dask cluster)")
     data.universal = universal_map(MAP_SLIP, MAP_ADHESION, Parameters.paper(),
                                    marked={label: Parameters.paper(R=radius) for label, radius in RADII.items()})
+    say(f"other indenters: cone, paraboloid and quartic, scenario A at {PROFILE_ANGLE:g}° (continuum; discrete at "
+        f"Δx = {FIGURE_DX * 1e6:g} µm)")
+    data.profiles = profile_comparison(Parameters.paper())
     return data
 
 
@@ -211,6 +216,74 @@ def fit_demonstration(truth: Parameters) -> FitDemonstration:
                              for name, factor in zip(FIT_DEMO_FREE, FIT_DEMO_START_FACTORS)})
     result = fit(measured, "A", FIT_DEMO_ANGLE, free=FIT_DEMO_FREE, start=start, time_origin="path_start")
     return FitDemonstration(truth, start, measured, result)
+
+
+# ----------------------------------------------------------------------------
+# other indenters
+#: The power laws compared with the paper's paraboloid (scenario A at :data:`PROFILE_ANGLE`, R = 30 mm): each
+#: with the paraboloid's non-adhesive contact radius at d_max.
+PROFILE_EXPONENTS = {"cone": 1.0, "paraboloid": 2.0, "quartic": 4.0}
+PROFILE_ANGLE = 20.0
+
+
+class ProfileComparison(NamedTuple):
+    """Scenario A at :data:`PROFILE_ANGLE` for the indenters of :data:`PROFILE_EXPONENTS`, by name."""
+
+    profiles: dict  #: name → PowerLaw
+    continuum: dict  #: name → simulation (continuum)
+    discrete: dict  #: name → simulation (discrete, Δx = FIGURE_DX, FIGURE_STEPS steps)
+
+
+def matching_power_law(n: float, params: Parameters) -> PowerLaw:
+    """The power law ``f = c rⁿ`` whose non-adhesive contact radius at ``d_max`` is the paraboloid's, ``√(R d_max)``
+    (the paraboloid itself for ``n = 2``)."""
+    if n == 2.0:
+        return PowerLaw.paraboloid(params.R)
+    return power_law.with_radius_at(n, math.sqrt(params.R * params.d_max), params.d_max)
+
+
+def profile_comparison(params: Parameters) -> ProfileComparison:
+    """Continuum and discrete runs of scenario A at :data:`PROFILE_ANGLE` for each of :data:`PROFILE_EXPONENTS`."""
+    profiles = {name: matching_power_law(n, params) for name, n in PROFILE_EXPONENTS.items()}
+    continuum = {name: simulate(params, "A", alpha=[PROFILE_ANGLE], method="continuum", profile=profile)
+                 for name, profile in profiles.items()}
+    discrete = {name: simulate(params, "A", alpha=[PROFILE_ANGLE], dx=FIGURE_DX, n_steps=FIGURE_STEPS, profile=profile)
+                for name, profile in profiles.items()}
+    return ProfileComparison(profiles, continuum, discrete)
+
+
+class ProfileRow(NamedTuple):
+    """One indenter of the comparison: its closed forms against the continuum's, and the discrete model's gap."""
+
+    name: str
+    profile: PowerLaw
+    pull_off_closed_form: float  #: pull-off force under force control (N)
+    pull_off_continuum: float  #: the continuum's least normal force (N)
+    onset_closed_form: float  #: slip-onset depth (18) (m; nan: none before d_max)
+    onset_continuum: float  #: the continuum's first slip onset while indenting (m; nan: none)
+    tangential_force_max: float  #: the continuum's largest F_x (N)
+    discrete_difference: float  #: max_t |discrete − continuum| of F_x over its largest value
+
+
+def profile_rows(comparison: ProfileComparison, params: Parameters) -> list[ProfileRow]:
+    """The rows of the report's table of :func:`profile_comparison`."""
+    rows = []
+    for name, profile in comparison.profiles.items():
+        exact, springs = comparison.continuum[name], comparison.discrete[name]
+        onset = float(power_law.d_crit_A(PROFILE_ANGLE, profile, params, adhesion=True))
+        found = event_times(exact, PROFILE_ANGLE, "slip_onset")
+        corner = _first(event_times(exact, PROFILE_ANGLE, "corner"))
+        kinds = list(exact["event_kind"].values[0])
+        onset_continuum = float(exact["event_depth"].values[0, kinds.index("slip_onset")]) \
+            if len(found) and found[0] < corner else math.nan
+        on_grid = exact if np.array_equal(exact["time"].values, springs["time"].values) else simulate(
+            params, "A", alpha=[PROFILE_ANGLE], method="continuum", t=springs["time"].values, profile=profile)
+        largest = float(exact["tangential_force_max"].values[0])
+        difference = float(np.nanmax(np.abs(springs["tangential_force"].values - on_grid["tangential_force"].values)))
+        rows.append(ProfileRow(name, profile, power_law.pull_off_force(profile, params, params.dgamma1),
+                               float(exact["normal_force_min"].values[0]), onset if onset < params.d_max else math.nan,
+                               onset_continuum, largest, difference / largest))
+    return rows
 
 
 # ----------------------------------------------------------------------------

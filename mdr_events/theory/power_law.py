@@ -23,7 +23,7 @@ from mdr_events.validation import check_flag
 
 __all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_force", "contact_radius",
            "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
-           "critical_angle_B", "convex_root", "branch_root",
+           "critical_angle_B", "convex_root", "branch_root", "with_radius_at",
            "prefactor", "hess_prefactor",
            "ADHESIVE_MIN_EXPONENT", "ROOT_RTOL"]
 
@@ -113,6 +113,12 @@ def prefactor(profile: PowerLaw) -> float:
 def hess_prefactor(params: Parameters, work_of_adhesion: float) -> float:
     """``sqrt(2π Δγ / E*)``: Heß's limit (8) is this times ``√a``."""
     return float(_rel("hess_max_elongation").numeric(1.0, work_of_adhesion, params.E_star))
+
+
+def with_radius_at(n: float, radius: float, depth: float) -> PowerLaw:
+    """The power law ``f = c rⁿ`` whose non-adhesive contact radius at ``depth`` is ``radius``: ``c`` from
+    ``κₙ c radiusⁿ = depth`` (to compare indenters of equal size, e.g. with the paraboloid's ``√(R d_max)``)."""
+    return PowerLaw(depth / float(equivalent_profile(radius, PowerLaw(1.0, n))), n)
 
 
 def equivalent_profile(x, profile: PowerLaw):

@@ -72,6 +72,27 @@ def test_committed_datasets_agree_with_a_fresh_computation(fresh):
     assert events.startswith("case,event,time_s,kind") and events.count("tangential_reversal") == 12
 
 
+def test_the_other_indenters_meet_their_closed_forms(fresh):
+    """results/profiles_A20_*: the committed files agree with a fresh run; for each indenter the continuum's
+    least normal force is the pull-off force under force control and its slip onset while indenting is (18),
+    both to 1e-9, and the discrete model (Δx = 1 µm) lies within 1e-3 of the largest F_x (first order: about
+    1e-3 per µm, as for the paraboloid)."""
+    for name in fresh.profiles.profiles:
+        stem = f"{report.PROFILE_STEM}_{name}"
+        assert_results_agree(fresh.profiles.continuum[name], me.open_result(RESULTS / f"{stem}.nc"))
+        assert_results_agree(fresh.profiles.discrete[name], me.open_result(RESULTS / f"{stem}_discrete.nc"))
+    assert (RESULTS / f"{report.PROFILE_STEM}.png").stat().st_size > 0
+    rows = report.profile_rows(fresh.profiles, me.Parameters.paper())
+    assert [row.profile.n for row in rows] == [1.0, 2.0, 4.0]
+    for row in rows:
+        assert row.pull_off_continuum == pytest.approx(row.pull_off_closed_form, rel=1e-9), row.name
+        assert row.onset_continuum == pytest.approx(row.onset_closed_form, rel=1e-9), row.name
+        assert row.discrete_difference < 1e-3, row.name
+    paraboloid = rows[1]
+    assert paraboloid.pull_off_closed_form == pytest.approx(me.pull_off_force(me.Parameters.paper(),
+                                                                              me.Parameters.paper().dgamma1), rel=1e-14)
+
+
 def test_the_comparison_catches_what_the_tolerance_does_not_allow():
     """The tolerance is relative to each variable's largest magnitude and nothing else is loose: a change of
     3 RESULT_RTOL at the largest value, a moved nan, an event kind or an attribute is a difference."""
@@ -163,9 +184,10 @@ def test_compute_sends_one_progress_message_per_step(computed):
     """reproduce numbers its steps out of a total that counts compute's as COMPUTE_STEPS."""
     _, messages = computed
     assert len(messages) == report.COMPUTE_STEPS
-    assert messages[-3].startswith("fretting at d_max, R = 30 mm")
-    assert messages[-2].startswith("fit of 4 parameters to synthetic measurements")
-    assert messages[-1].startswith("universal map: critical angles")
+    assert messages[-4].startswith("fretting at d_max, R = 30 mm")
+    assert messages[-3].startswith("fit of 4 parameters to synthetic measurements")
+    assert messages[-2].startswith("universal map: critical angles")
+    assert messages[-1].startswith("other indenters: cone, paraboloid and quartic")
 
 
 def test_report_states_the_papers_numbers_beside_ours(fresh):

@@ -25,8 +25,7 @@ def paper():
 
 def _matching(n: float, params: me.Parameters) -> PowerLaw:
     """The power law whose non-adhesive radius at d_max is the paraboloid's (comparable contacts)."""
-    radius = math.sqrt(params.R * params.d_max)
-    return PowerLaw(params.d_max / float(pl.equivalent_profile(radius, PowerLaw(1.0, n))), n)
+    return pl.with_radius_at(n, math.sqrt(params.R * params.d_max), params.d_max)
 
 
 def _events(ds, case: int) -> tuple[list[str], np.ndarray, np.ndarray]:

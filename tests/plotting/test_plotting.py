@@ -252,3 +252,24 @@ def test_importing_plotting_leaves_the_backend_alone(user_choice):
     assert with_import == without
     if user_choice is not None:
         assert with_import == user_choice
+
+
+def test_profile_comparison_draws_each_indenter_with_its_exponent():
+    """Three panels, a line per indenter (labelled with n, from the dataset's profile attribute) and the discrete
+    model's markers in the same colour."""
+    from mdr_events.app.report_data import matching_power_law
+    from mdr_events.plotting import plot_profile_comparison
+
+    params = Parameters.paper()
+    profiles = {"cone": matching_power_law(1.0, params), "quartic": matching_power_law(4.0, params)}
+    continuum = {name: me.simulate(params, "A", alpha=[20.0], method="continuum", samples=101, profile=profile)
+                 for name, profile in profiles.items()}
+    discrete = {"cone": me.simulate(params, "A", alpha=[20.0], dx=4e-6, n_steps=1000, profile=profiles["cone"])}
+    figure = plot_profile_comparison(continuum, discrete)
+    axes = figure.axes
+    assert len(axes) == 3
+    labels = [line.get_label() for line in axes[0].get_lines()]
+    assert labels == ["cone (n = 1), continuum", "cone, discrete (Δx = 4 µm)", "quartic (n = 4), continuum"]
+    lines = axes[0].get_lines()
+    assert to_hex(lines[0].get_color()) == to_hex(lines[1].get_markeredgecolor()) and lines[1].get_linestyle() == "None"
+    assert "scenario A at 20°" in figure._suptitle.get_text()

@@ -33,6 +33,16 @@ def _profile_with_paper_scale(n: float, params: me.Parameters) -> PowerLaw:
     return PowerLaw(radius**2 / (2 * params.R) / radius**n, n)
 
 
+def test_with_radius_at_puts_the_non_adhesive_radius_there(paper):
+    """with_radius_at(n, a, d): the non-adhesive radius at d is a, for every n; n = 2 is the paraboloid whose
+    Hertz radius √(R d) is a."""
+    for n in EXPONENTS:
+        profile = pl.with_radius_at(n, 2e-3, 1e-4)
+        assert pl.contact_radius(1e-4, profile, paper, 0.0) == pytest.approx(2e-3, rel=1e-14)
+    assert pl.with_radius_at(2.0, math.sqrt(paper.R * paper.d_max), paper.d_max).c == pytest.approx(
+        PowerLaw.paraboloid(paper.R).c, rel=1e-14)
+
+
 # --- symbolic: the paraboloid and the literature's cases -------------------------------------------------
 PARABOLOID_PAIRS = [  # power-law key, paper key, the paper's arguments from the power law's (n = 2, c = 1/(2R))
     ("power_law_depth", "jkr_depth"),
