@@ -46,10 +46,11 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.io.candidates import Candidate, read_candidate
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
+from mdr_events.models.indenters import check_simulated_profile, describe
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import scenario_paths
 from mdr_events.parameters import Parameters
-from mdr_events.theory import analytic
+from mdr_events.profiles import PowerLaw
 
 __all__ = ["validate", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
 
@@ -72,15 +73,16 @@ TIME_AXIS_SHARE = 1e-3
 TIME_ORIGINS = ("first_contact", "path_start")
 
 
-def resolve_path(params: Parameters, path, alpha) -> Path:
-    """The :class:`Path` validated: ``path`` itself, or the scenario's path at the one angle ``alpha``."""
+def resolve_path(params: Parameters, path, alpha, profile: PowerLaw | None = None) -> Path:
+    """The :class:`Path` validated: ``path`` itself, or the scenario's path at the one angle ``alpha`` (ending below
+    the jump-off of ``profile``, ``None``: the paraboloid)."""
     if isinstance(path, Path):
         if alpha is not None:
             raise ValueError(f"alpha={alpha!r} is not allowed with a Path (its waypoints fix the motion)")
         return path
     if alpha is None or np.ndim(alpha) != 0:
         raise ValueError(f"alpha={alpha!r} is not allowed with scenario {path!r}; allowed: one angle in degrees")
-    paths, _ = scenario_paths(params, path, [alpha])
+    paths, _ = scenario_paths(params, path, [alpha], profile)
     return paths[0]
 
 
@@ -167,7 +169,7 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
              names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
              time_origin="first_contact", tolerance: float = 1e-3,
              tolerances: Tolerances = Tolerances(), solution: PathSolution | None = None,
-             limits: Limits = DEFAULT_LIMITS) -> xr.Dataset:
+             limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None) -> xr.Dataset:
     """Compare a simulator's output with the exact continuum on the same path, sample and event by event.
 
     Parameters
@@ -194,6 +196,9 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     limits : Limits
         What the continuum run may use (a measured path of more than ``limits.waypoints`` waypoints is
         refused unless raised).
+    profile : PowerLaw, optional
+        The indenter the candidate simulated: a power law ``f = c rⁿ``, ``n >= 1`` (default ``None``, the paper's
+        paraboloid of ``params.R``); the report then has the attribute ``profile``.
 
     Returns
     -------
@@ -208,10 +213,11 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     """
     if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and tolerance > 0):
         raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a number > 0")
-    the_path = resolve_path(params, path, alpha)
+    profile = check_simulated_profile(profile)
+    the_path = resolve_path(params, path, alpha, profile)
     read = read_candidate(candidate, names, units)
     times = times_from_contact(read, the_path, time_origin)
-    solution = solve_path(params, the_path, tolerances, limits) if solution is None else solution
+    solution = solve_path(params, the_path, tolerances, limits, profile) if solution is None else solution
     exact = evaluate(solution, np.maximum(times, 0.0))
     before = times < 0
     for name in ("normal_force", "tangential_force", "contact_radius"):
@@ -274,7 +280,7 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
             ("event_depth_error", candidate_depths - exact_depths, "m", "candidate − exact event depth")):
         data[key] = (("event",), values, {"units": unit, "long_name": text})
     pull = first.get("pull_off")
-    exact_force = float(analytic.normal_force(pull.depth, pull.radius, params)) if pull else math.nan
+    exact_force = float(solution.model.normal_force(pull.depth, pull.radius)) if pull else math.nan
     data["pull_off_force_exact"] = ((), exact_force, {"units": "N", "long_name": "F_N at the pull-off, continuum"})
     data["pull_off_force_candidate"] = ((), found["pull_off_force"],
                                         {"units": "N", "long_name": "F_N at the candidate's last sample in contact"})
@@ -296,6 +302,8 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
                  quantities_not_compared=", ".join(not_compared) or "none",
                  time_origin=str(time_origin), verdict=verdict, path_waypoints=the_path.describe(),
                  path_speed=the_path.speed)
+    if profile is not None:
+        attrs["profile"] = describe(profile)
     return stamp(xr.Dataset(data, coords=coords), params, **attrs)
 
 

@@ -42,6 +42,8 @@ from mdr_events.io.candidates import CANDIDATE_QUANTITIES, unit_factor
 from mdr_events.io.files import check_output_stem, prepare_output_directory
 from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters, from_preset
+from mdr_events.profiles import PowerLaw
+from mdr_events.models.indenters import check_simulated_profile
 from mdr_events.theory import symbolic
 
 #: The first line of ``mdr-events --help`` (plain text: argparse prints it as it is).
@@ -125,6 +127,21 @@ def _command_phase_diagram(args: argparse.Namespace) -> None:
         print(outcome.path)
 
 
+def _profile_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--power-law", type=float, nargs=2, default=None, metavar=("C", "N"),
+                        help="the indenter f = c r^n (c in m^(1-n), n >= 1: 1 a cone) instead of the paraboloid of R")
+
+
+def _profile(args: argparse.Namespace) -> PowerLaw | None:
+    """The ``--power-law C N`` indenter (``None``: the paraboloid of the parameters' ``R``)."""
+    if args.power_law is None:
+        return None
+    try:
+        return check_simulated_profile(PowerLaw(*args.power_law))
+    except (TypeError, ValueError) as error:
+        raise UsageError(f"--power-law {' '.join(f'{value:g}' for value in args.power_law)}: {error}") from None
+
+
 def _limit_option(parser: argparse.ArgumentParser) -> None:
     """``--limit NAME=VALUE`` (repeatable): raise a resource limit of :class:`~mdr_events.limits.Limits`."""
     parser.add_argument("--limit", action="append", default=[], metavar="NAME=VALUE",
@@ -143,11 +160,13 @@ def _limits(args: argparse.Namespace) -> Limits:
 
 def _command_simulate(args: argparse.Namespace) -> None:
     params, provenance = _parameters(args)
+    profile = _profile(args)
     out = prepare_output_directory(args.out, "--out")  # before the simulation, which may take minutes
     # the options of the discrete method are passed only when given, so that simulate() rejects them
     # with the continuum method exactly as it does in Python
     options = {name: getattr(args, name) for name in ("dx", "dt", "n_steps") if getattr(args, name) is not None}
-    dataset = simulate(params, args.scenario, alpha=args.alpha, method=args.method, limits=_limits(args), **options)
+    dataset = simulate(params, args.scenario, alpha=args.alpha, method=args.method, limits=_limits(args),
+                       profile=profile, **options)
     dataset.attrs.update(provenance)
     stem = f"simulation_{args.scenario.replace('+', 'plus')}_{args.method}"
     for outcome in write_simulation(dataset, out, stem):
@@ -301,7 +320,8 @@ def _command_validate(args: argparse.Namespace) -> int:
     path, description = _validation_path(args, params)
     options = dict(names=_pairs("--names", args.names, list(CANDIDATE_QUANTITIES)),
                    units=_pairs("--units", args.units, list(CANDIDATE_QUANTITIES)),
-                   time_origin=_time_origin(args.time_origin), tolerance=args.tolerance, limits=_limits(args))
+                   time_origin=_time_origin(args.time_origin), tolerance=args.tolerance, limits=_limits(args),
+                   profile=_profile(args))
     if not (math.isfinite(args.tolerance) and args.tolerance > 0):
         raise UsageError(f"--tolerance {args.tolerance!r} is not allowed; allowed: a number > 0")
     out = prepare_output_directory(args.out, "--out")
@@ -496,6 +516,7 @@ def build_parser() -> argparse.ArgumentParser:
     steps.add_argument("--n-steps", type=int, default=None,
                        help=f"discrete method: time steps of the longest case (default {DEFAULT_STEPS})")
     sim.add_argument("--out", required=True, help="output directory")
+    _profile_option(sim)
     _limit_option(sim)
     _parameter_options(sim)
     sim.set_defaults(run=_command_simulate)
@@ -508,6 +529,7 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("runs", nargs="+", metavar="RUN", help="a run: a CSV file with a header row, or netCDF")
     _measured_path_options(check, "runs")
     check.add_argument("--out", required=True, help="output directory")
+    _profile_option(check)
     _limit_option(check)
     check.add_argument("--tolerance", type=float, default=1e-3,
                        help="bound on each quantity's max error relative to its range (default 1e-3)")

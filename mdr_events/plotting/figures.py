@@ -266,8 +266,11 @@ def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, titl
         scenario = dataset.attrs.get("scenario", "")
         path = ("custom path" if dataset.sizes[dimension] == 1 else "custom paths") if scenario == "custom" \
             else f"scenario {scenario}"
-        title = _numbered(f"simulation, {path}, R = {dataset.attrs['param_R'] * _MM:g} mm, "
-                          f"{dataset.attrs.get('method', '')}", dataset, SIMULATION_FIGURES)
+        if "profile" in dataset.attrs:  # another indenter than the paper's: no figure of the paper, no R
+            title = f"Simulation, {path}, {dataset.attrs['profile']}, {dataset.attrs.get('method', '')}"
+        else:
+            title = _numbered(f"simulation, {path}, R = {dataset.attrs['param_R'] * _MM:g} mm, "
+                              f"{dataset.attrs.get('method', '')}", dataset, SIMULATION_FIGURES)
     figure.suptitle(title)
     return figure
 

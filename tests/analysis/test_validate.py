@@ -174,3 +174,19 @@ def test_a_candidate_out_of_step_with_the_exact_run_is_refused(paper, discrete):
                "contact_area": run["contact_area"].values}
     with pytest.raises(ValueError, match="no sample of the candidate is in contact while the exact run is"):
         me.validate(shifted, paper, "A", ALPHA)
+
+
+def test_a_power_law_candidate_is_validated_against_its_own_indenter(paper):
+    """A discrete run of a power-law indenter (n = 3, Δx = 2 µm) passes against the power-law continuum (its
+    first-order gap, below 1e-3 of each range) and fails against the paraboloid's: the door tells the indenters
+    apart. The report names the profile."""
+    from mdr_events.profiles import PowerLaw
+
+    profile = PowerLaw(2e3, 3.0)
+    candidate = me.simulate(paper, "A", alpha=20.0, dx=2e-6, profile=profile).isel(alpha=0)
+    report = me.validate(candidate, paper, "A", 20.0, profile=profile)
+    assert report.attrs["verdict"] == "pass" and report.attrs["profile"].startswith("power law")
+    assert np.all(report["max_error"].values < 1e-3)
+    wrong = me.validate(candidate, paper, "A", 20.0)
+    assert wrong.attrs["verdict"] == "fail" and np.all(wrong["max_error"].values > 0.1)
+    assert "profile" not in wrong.attrs

@@ -136,3 +136,33 @@ def test_cli_results_say_which_parameters_came_from_the_preset(capsys, tmp_path)
     ds = me.open_result(tmp_path / "phase_diagram_A.nc")
     assert ds.attrs["parameters_preset"] == "paper-R100"
     assert ds.attrs["parameters_from_preset"] == "E, nu, R, dgamma0, dgamma1, d_max, v"
+
+
+def test_simulate_and_validate_take_a_power_law(capsys, tmp_path):
+    """--power-law C N: the simulation names its profile (attribute and figure title, not the paper's figure
+    number); the discrete run passes validate against the same indenter and fails against the paraboloid."""
+    status, out, _ = run(capsys, "simulate", "--scenario", "A", "--alpha", "20", "--dx", "2e-6", "--power-law", "2000",
+                         "3", "--out", str(tmp_path))
+    assert status == 0
+    run_file = tmp_path / "simulation_A_discrete.nc"
+    ds = me.open_result(run_file)
+    assert ds.attrs["profile"] == "power law f = c r^n, c = 2000.0 m^(1-n), n = 3.0"
+    figure = me.plotting.plot_simulation(ds)
+    assert "power law" in figure._suptitle.get_text() and "Fig." not in figure._suptitle.get_text()
+    candidate = tmp_path / "candidate.nc"
+    me.write_netcdf(ds.isel(alpha=0), candidate)
+    common = ["validate", str(candidate), "--scenario", "A", "--alpha", "20", "--preset", "paper-R30"]
+    status, out, _ = run(capsys, *common, "--power-law", "2000", "3", "--out", str(tmp_path / "right"))
+    assert status == 0 and "1 pass, 0 fail" in out
+    status, out, _ = run(capsys, *common, "--out", str(tmp_path / "wrong"))
+    assert status == 1 and "0 pass, 1 fail" in out
+
+
+@pytest.mark.parametrize("values, fragment", [(["2000", "0.5"], "--power-law 2000 0.5: PowerLaw.n=0.5 is not allowed "
+                                                                "in the simulators; allowed: n >= 1"),
+                                              (["-1", "2"], "--power-law -1 2: PowerLaw.c=-1.0 is not allowed"),
+                                              (["1"], "--power-law")])
+def test_a_bad_power_law_is_one_line_exit_2(capsys, tmp_path, values, fragment):
+    status, out, err = run(capsys, "simulate", "--scenario", "A", "--power-law", *values, "--out", str(tmp_path / "new"))
+    assert status == 2 and err.count("\n") == 1 and fragment in err
+    assert not (tmp_path / "new").exists()  # nothing written, not even the output directory
