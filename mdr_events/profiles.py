@@ -58,6 +58,10 @@ class PowerLaw:
         """``f(r) = c rⁿ`` (m) at the radial coordinate ``r`` (m, >= 0)."""
         return self.c * r**self.n
 
+    def describe(self) -> str:
+        """The profile in words, for a dataset's ``profile`` attribute."""
+        return f"power law f = c r^n, c = {self.c!r} m^(1-n), n = {self.n!r}"
+
 
 @dataclass(frozen=True)
 class FlatPunch:
@@ -72,6 +76,10 @@ class FlatPunch:
     def __post_init__(self) -> None:
         object.__setattr__(self, "radius", check_real("FlatPunch.radius", self.radius, "a finite number > 0 (m)",
                                                       lambda value: value > 0.0))
+
+    def describe(self) -> str:
+        """The profile in words, for a dataset's ``profile`` attribute."""
+        return f"flat punch of radius {self.radius!r} m"
 
 
 #: Any profile the theory layer takes.

@@ -35,10 +35,12 @@ from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import EventKind, Tolerances, extremum, solve_path, tangential_work
 from mdr_events.models.continuum.solution import scan_spans
+from mdr_events.models.indenters import check_simulated_profile
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_UNITS, Parameters
-from mdr_events.theory import analytic
+from mdr_events.profiles import PowerLaw
+from mdr_events.theory import analytic, power_law
 from mdr_events.validation import check_choice, check_count, check_real, shown
 
 __all__ = ["sweep", "run_chunk", "SweepSpec", "QUANTITIES", "CLOSED_FORM_QUANTITIES", "SWEEP_CONTENT", "SWEPT_NAMES",
@@ -100,6 +102,8 @@ class SweepSpec:
     quantities: tuple[str, ...] = tuple(QUANTITIES)
     history_samples: int | None = None
     limits: Limits = DEFAULT_LIMITS
+    #: the indenter (``None``: the paraboloid of ``R``)
+    profile: PowerLaw | None = None
 
     def run(self, values: Sequence[float]) -> tuple[dict[str, float], np.ndarray | None]:
         """The :attr:`quantities` of the run at ``values`` (one per swept name), and its history (rows
@@ -112,15 +116,17 @@ class SweepSpec:
         out, history = {}, None
         if set(self.quantities) - set(CLOSED_FORM_QUANTITIES) or self.history_samples:
             path = self.scenario if isinstance(self.scenario, Path) else \
-                scenario_paths(params, self.scenario, [alpha])[0][0]
+                scenario_paths(params, self.scenario, [alpha], self.profile)[0][0]
             times = None if not self.history_samples else np.linspace(0.0, path.duration, self.history_samples)
-            out, history = (_continuum_quantities(params, path, self.tolerances, self.limits, times)
+            out, history = (_continuum_quantities(params, path, self.tolerances, self.limits, times, self.profile)
                             if self.method == "continuum"
-                            else _discrete_quantities(params, path, dx, self.n_steps, self.limits, times))
+                            else _discrete_quantities(params, path, dx, self.n_steps, self.limits, times, self.profile))
         if "critical_angle_A" in self.quantities:
-            out["critical_angle_A"] = analytic.critical_angle(params, "A")
+            out["critical_angle_A"] = analytic.critical_angle(params, "A") if self.profile is None else \
+                power_law.critical_angle_A(self.profile, params)
         if "critical_angle_B" in self.quantities:
-            out["critical_angle_B"] = analytic.critical_angle(params, "B")
+            out["critical_angle_B"] = analytic.critical_angle(params, "B") if self.profile is None else \
+                power_law.critical_angle_B(self.profile, params)
         return {name: out[name] for name in self.quantities}, history
 
 
@@ -129,8 +135,9 @@ def _deepest_time(path: Path) -> float:
 
 
 def _continuum_quantities(params: Parameters, path: Path, tolerances: Tolerances, limits: Limits,
-                          times: np.ndarray | None) -> tuple[dict[str, float], np.ndarray | None]:
-    solution = solve_path(params, path, tolerances, limits)
+                          times: np.ndarray | None, profile: PowerLaw | None = None
+                          ) -> tuple[dict[str, float], np.ndarray | None]:
+    solution = solve_path(params, path, tolerances, limits, profile)
     scan = scan_spans(solution)  # one scan serves every extremum
     out = {"normal_force_min": extremum(solution, "normal_force", largest=False, scan=scan)[1],
            "tangential_force_max": max(abs(extremum(solution, "tangential_force", largest=True, scan=scan)[1]),
@@ -166,9 +173,11 @@ DISCRETE_STEP_PER_SPACING = 0.5
 
 
 def _discrete_quantities(params: Parameters, path: Path, dx: float | None, n_steps: int | None, limits: Limits,
-                         history_times: np.ndarray | None) -> tuple[dict[str, float], np.ndarray | None]:
+                         history_times: np.ndarray | None, profile: PowerLaw | None = None
+                         ) -> tuple[dict[str, float], np.ndarray | None]:
     dt = None if n_steps is not None or dx is None else DISCRETE_STEP_PER_SPACING * dx / path.speed
-    run = simulate(params, path, method="discrete", dx=dx, dt=dt, n_steps=n_steps, limits=limits).isel(case=0)
+    run = simulate(params, path, method="discrete", dx=dx, dt=dt, n_steps=n_steps, limits=limits,
+                   profile=profile).isel(case=0)
     times = run["time"].values
     quantities = {name: run[name].values for name in ("normal_force", "tangential_force", "contact_area",
                                                       "sliding_fraction")}
@@ -310,7 +319,8 @@ def _signature(spec: SweepSpec, grid: Grid) -> str:
     return json.dumps({"base": spec.base.as_dict(), "scenario": scenario, "alpha": spec.alpha, "method": spec.method,
                        "dx": spec.dx, "n_steps": spec.n_steps, "tolerances": dataclasses.asdict(spec.tolerances),
                        "names": grid.names, "rows": grid.rows.tolist(), "quantities": spec.quantities,
-                       "history_samples": spec.history_samples}, sort_keys=True)
+                       "history_samples": spec.history_samples,
+                       **({} if spec.profile is None else {"profile": spec.profile.describe()})}, sort_keys=True)
 
 
 def _run_variables(quantities: Sequence[str], values: np.ndarray, errors: Sequence[str],
@@ -423,7 +433,7 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
           quantities: Sequence[str] | None = None, scheduler: str | None = None, workers: int | None = None,
           chunk_size: int = DEFAULT_CHUNK, history_samples: int | None = None, limits: Limits = DEFAULT_LIMITS,
           store: str | os.PathLike | None = None, resume: bool = True,
-          progress: Callable[[int, int], None] | None = None) -> xr.Dataset:
+          progress: Callable[[int, int], None] | None = None, profile: PowerLaw | None = None) -> xr.Dataset:
     """Run the model over a grid of parameters and return each run's scalar quantities.
 
     Parameters
@@ -462,6 +472,9 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
         What each run may use (a run past a limit is recorded as failed, with the estimate).
     progress : callable, optional
         Called with (runs done, runs in all) after each chunk.
+    profile : PowerLaw, optional
+        The indenter of every run, ``f = c rⁿ`` with ``n >= 1`` (default ``None``: the paraboloid of ``R``); the
+        critical angles are then the power law's (:mod:`mdr_events.theory.power_law`).
 
     Returns
     -------
@@ -509,7 +522,7 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     if not isinstance(limits, Limits):
         raise TypeError(f"limits={shown(limits)} ({type(limits).__name__}) is not allowed; allowed: a Limits")
     spec = SweepSpec(base, scenario, alpha, method, the_grid.names, tolerances,
-                     dx, n_steps, wanted, samples, limits)
+                     dx, n_steps, wanted, samples, limits, check_simulated_profile(profile))
     _check_runs(spec, the_grid)
     scheduler = default_scheduler() if scheduler is None else scheduler
     if scheduler not in ("local", "serial") and not (isinstance(scheduler, str) and "://" in scheduler):
@@ -578,6 +591,8 @@ def _result(spec: SweepSpec, grid: Grid, values: np.ndarray, errors: list[str],
         attrs["alpha"] = spec.alpha
     if not isinstance(spec.scenario, str):
         attrs["path_waypoints"] = spec.scenario.describe()
+    if spec.profile is not None:
+        attrs["profile"] = spec.profile.describe()
     return stamp(xr.Dataset(data, coords=coords), spec.base, **attrs)
 
 

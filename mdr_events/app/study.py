@@ -46,6 +46,10 @@ A study names its parameters, what to compute and where to write it::
     [limits]                     # optional: the resource limits (mdr_events.Limits), as --limit
     steps = 1e8                  # memory = "8GiB", springs, samples, waypoints; inf: no limit
 
+    [profile]                    # optional: a power-law indenter f = c r^n (n >= 1) for every table, as
+    c = 2000.0                   # --power-law C N; without it the paraboloid of R
+    n = 3.0
+
     [output]                     # required
     directory = "out"            # relative to the study file; checked before anything is computed
     name = "my_study"            # file stem (default: the study file's stem); a plain name: no / or \\
@@ -91,8 +95,10 @@ from mdr_events.io.files import check_file_path, check_output_stem, prepare_outp
 from mdr_events.limits import DEFAULT_LIMITS, LIMIT_UNITS, Limits, parse_limit
 from mdr_events.models.continuum import Tolerances
 from mdr_events.models.paths import Path
+from mdr_events.models.indenters import check_simulated_profile
 from mdr_events.models.simulate import scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
+from mdr_events.profiles import PowerLaw
 from mdr_events.validation import shown
 
 if TYPE_CHECKING:
@@ -159,6 +165,7 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
               "n_steps": ("integer", False), "quantities": ("strings", False), "chunk_size": ("integer", False),
               "scheduler": ("string", False), "workers": ("integer", False), "history_samples": ("integer", False)},
     "limits": {name: ("string or number", False) for name in LIMIT_UNITS},
+    "profile": {"c": ("number", True), "n": ("number", True)},
     "output": {"directory": ("string", True), "name": ("string", False)},
 }
 REQUIRED_TABLES = ("output",)
@@ -194,6 +201,18 @@ class Study:
             except ValueError as error:
                 raise StudyError(f"{os.fspath(self.source)}: [limits] {error}".replace("--limit ", "")) from None
         return limits
+
+    @property
+    def profile(self) -> PowerLaw | None:
+        """The ``[profile]`` table's indenter ``f = c rⁿ`` (``n >= 1``), as ``--power-law C N`` on the command
+        line; ``None`` without it: the paraboloid of ``R``."""
+        if "profile" not in self.tables:
+            return None
+        table = self.tables["profile"]
+        try:
+            return check_simulated_profile(PowerLaw(table["c"], table["n"]))
+        except (ValueError, TypeError) as error:
+            raise StudyError(f"{os.fspath(self.source)}: [profile] {error}") from None
 
 
 def _check_table(table: str, content: Any, where: str) -> None:
@@ -331,6 +350,7 @@ def load_study(path: str | os.PathLike) -> Study:
     params, provenance = _parameters(document.get("parameters"), where)
     study = Study(source, params, {table: dict(content) for table, content in document.items()}, provenance)
     study.limits  # a bad [limits] value is named now, not after the first computation
+    study.profile  # so is a bad [profile]
     return study
 
 
@@ -420,7 +440,7 @@ def _validations(study: Study, progress: Callable[[str], None]) -> list[tuple[st
     for run, file, stem in files:
         progress(f"validate: {run}")
         try:
-            report = validate(file, study.params, path, limits=study.limits, **options)
+            report = validate(file, study.params, path, limits=study.limits, profile=study.profile, **options)
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where}: [validate] {error}") from None
         report.attrs.update(study.provenance, path_description=description)
@@ -447,7 +467,7 @@ def _fit_report(study: Study, progress: Callable[[str], None]) -> tuple[str, Ren
         bounds = {name: tuple(pair) for name, pair in table.get("bounds", {}).items()}
         progress(f"fit: {table['data']} (free: {', '.join(table['free'])})")
         result = fit(data, *motion, free=table["free"], start=study.params, bounds=bounds, limits=study.limits,
-                     **options)
+                     profile=study.profile, **options)
     except (ValueError, TypeError) as error:
         raise StudyError(f"{where}: [fit] {error}") from None
     result.dataset.attrs.update(study.provenance, path_description=description)
@@ -488,7 +508,7 @@ def run_sweep(study: Study, progress: Callable[[str], None] = print, scheduler: 
 
     try:
         result = sweep(grid, scenario, table.get("alpha"), base=study.params, store=store, resume=resume,
-                       limits=study.limits,
+                       limits=study.limits, profile=study.profile,
                        scheduler=scheduler or table.get("scheduler"),
                        workers=workers or table.get("workers"), progress=report, **options)
     except (ValueError, TypeError) as error:
@@ -550,7 +570,8 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
                                  "allowed: with method = 'continuum'")
             if tolerance_names:
                 settings["tolerances"] = Tolerances(**{name: float(settings.pop(name)) for name in tolerance_names})
-            dataset = simulate(study.params, scenario, alpha=alpha, method=method, limits=study.limits, **settings)
+            dataset = simulate(study.params, scenario, alpha=alpha, method=method, limits=study.limits,
+                               profile=study.profile, **settings)
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where}: [simulation] {error}") from None
         dataset.attrs.update(study.provenance)
@@ -558,7 +579,7 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
     for scenario in study.tables.get("phase_diagram", {}).get("scenarios", []):
         progress(f"phase diagram: scenario {scenario}")
         written += write_phase_diagram(study.params, scenario, out, f"{study.name}_phase_diagram_{scenario}",
-                                       attrs=study.provenance)
+                                       attrs=study.provenance, profile=study.profile)
     for run, rendered in validations:
         written += write_rendered(rendered, out)
         written.verdicts[run] = str(rendered.report.attrs["verdict"])

@@ -66,6 +66,4 @@ def spring_profile(params: Parameters, profile: PowerLaw | None = None) -> Calla
 
 def describe(profile: PowerLaw | None) -> str:
     """The profile in words, for a dataset's ``profile`` attribute."""
-    if profile is None:
-        return "paraboloid f = r^2/(2R) (R of the parameters)"
-    return f"power law f = c r^n, c = {profile.c!r} m^(1-n), n = {profile.n!r}"
+    return "paraboloid f = r^2/(2R) (R of the parameters)" if profile is None else profile.describe()

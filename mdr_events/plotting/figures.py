@@ -167,8 +167,11 @@ def plot_phase_diagram(dataset: xr.Dataset, ax=None):
     ax.set_xticks(np.arange(0, 91, 10))
     ax.set_xlabel("path angle α (°)")
     ax.set_ylabel("indentation depth d (mm)")
-    ax.set_title(_numbered(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario}, R = {R_mm:g} mm", dataset,
-                           PHASE_DIAGRAM_FIGURES))
+    if "profile" in dataset.attrs:  # another indenter than the paper's: no figure of the paper, no R
+        ax.set_title(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario}, {dataset.attrs['profile']}", fontsize=9)
+    else:
+        ax.set_title(_numbered(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario}, R = {R_mm:g} mm", dataset,
+                               PHASE_DIAGRAM_FIGURES))
     ax.legend(loc="upper right" if scenario == "A" else "center right", fontsize=8)
     add_inferred_footnote(ax.figure, dataset)
     return ax

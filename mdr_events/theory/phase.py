@@ -9,7 +9,8 @@ import xarray as xr
 
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.parameters import Parameters
-from mdr_events.theory import analytic
+from mdr_events.profiles import FlatPunch, PowerLaw, Profile
+from mdr_events.theory import analytic, power_law
 from mdr_events.validation import check_choice, validate_alpha
 
 __all__ = ["phase_diagram", "default_angles", "PHASE_DIAGRAM_CONTENT", "PHASE_DIAGRAM_VARIABLES"]
@@ -32,6 +33,7 @@ def phase_diagram(
     params: Parameters,
     alpha=None,
     scenario: Literal["A", "B"] = "A",
+    profile: Profile | None = None,
 ) -> xr.Dataset:
     """Slip-onset depth against path angle: the phase diagram of Fig. 9a or 9b.
 
@@ -44,6 +46,10 @@ def phase_diagram(
     scenario : {"A", "B"}
         ``"A"``: Fig. 9a, eqs. (17) and (18). ``"B"``: Fig. 9b, eqs. (20)
         and (21), with a dimension ``branch`` = ``pull-off``, ``indentation``.
+    profile : PowerLaw or FlatPunch, optional
+        Another indenter than the paper's paraboloid of ``params.R`` (:mod:`mdr_events.theory.power_law`); the
+        dataset then names it in the attribute ``profile`` and is not the paper's figure. The "hertz" variables
+        are then the non-adhesive ones, "jkr" the adhesive (Heß's rule).
 
     Returns
     -------
@@ -60,6 +66,8 @@ def phase_diagram(
     if angles.ndim != 1 or angles.size == 0:
         raise ValueError(f"alpha must be a non-empty 1-D array of angles, got shape {angles.shape}")
     coords = {"alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})}
+    if profile is not None:
+        return _profile_phase_diagram(params, angles, scenario, profile, coords)
     variables = {}
     if scenario == "A":
         for key, adhesive, eq in (("hertz", False, "(17)"), ("jkr", True, "(18)")):
@@ -94,3 +102,38 @@ def phase_diagram(
     dataset = xr.Dataset(variables, coords=coords)
     figure = {} if params.preset_name() is None else {"figure": "9a" if scenario == "A" else "9b"}
     return stamp(dataset, params, scenario=scenario, content=PHASE_DIAGRAM_CONTENT, **figure)
+
+
+def _profile_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, profile: Profile,
+                           coords: dict) -> xr.Dataset:
+    """:func:`phase_diagram` of another indenter: the same variables from :mod:`~mdr_events.theory.power_law`, with
+    the same encoding of "never slides" (``+inf`` while indenting, ``-inf`` on the pull-off branch)."""
+    if not isinstance(profile, (PowerLaw, FlatPunch)):
+        raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: None (the "
+                        "paraboloid of R), a PowerLaw or a FlatPunch")
+    variables = {}
+    kinds = (("hertz", False, "non-adhesive"), ("jkr", True, "adhesive (Heß)"))
+    if scenario == "A":
+        for key, adhesive, words in kinds:
+            depth = np.asarray(power_law.d_crit_A(angles, profile, params, adhesive), dtype=float)
+            depth = np.where(np.isnan(depth) | (angles >= 90.0), np.inf, depth)  # no onset while indenting
+            variables[f"d_crit_{key}"] = ("alpha", depth, {"units": "m", "long_name": f"slip-onset depth, {words}"})
+        angle = {key: power_law.critical_angle_A(profile, params, adhesive) for key, adhesive, _ in kinds}
+    else:
+        coords["branch"] = ("branch", np.array(analytic.BRANCHES), {"units": "1", "long_name": "motion at angle from d_max"})
+        for key, adhesive, words in kinds:
+            values = np.stack([power_law.d_crit_B(angles, profile, params, adhesive),
+                               power_law.d_crit_B_indentation(angles, profile, params, adhesive)])
+            variables[f"d_crit_{key}"] = (("branch", "alpha"), values,
+                                          {"units": "m", "long_name": f"slip-onset depth, {words}"})
+        variables["jump_off_depth"] = ((), power_law.jump_off(profile, params, params.dgamma1)["depth"],
+                                       {"units": "m", "long_name": "jump-off depth on the pull-off branch "
+                                                                   "(displacement control)"})
+        angle = {key: power_law.critical_angle_B(profile, params, adhesive) for key, adhesive, _ in kinds}
+    variables["d_max"] = ((), params.d_max, {"units": "m", "long_name": "maximum indentation depth"})
+    meaning = "slip at d_max" if scenario == "A" else "no slip before jump-off above it"
+    for key, _, words in kinds:
+        variables[f"critical_angle_{key}"] = ((), angle[key], {"units": "degree",
+                                                               "long_name": f"critical angle, {words} ({meaning})"})
+    return stamp(xr.Dataset(variables, coords=coords), params, scenario=scenario, content=PHASE_DIAGRAM_CONTENT,
+                 profile=profile.describe())

@@ -23,7 +23,7 @@ from mdr_events.validation import check_flag
 
 __all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_force", "contact_radius",
            "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
-           "critical_angle_B", "convex_root", "branch_root", "with_radius_at",
+           "critical_angle_B", "d_crit_B_indentation", "critical_angle_B_indentation", "convex_root", "branch_root", "with_radius_at",
            "prefactor", "hess_prefactor",
            "ADHESIVE_MIN_EXPONENT", "ROOT_RTOL"]
 
@@ -349,4 +349,62 @@ def critical_angle_B(profile: Profile, params: Parameters, adhesion: bool = True
     with np.errstate(divide="ignore"):
         angle = _rel("critical_angle_B").numeric(point["contact_radius"], point["depth"], params.d_max, params.tau0,
                                                  params.G_star)
+    return float(np.rad2deg(angle))
+
+
+def d_crit_B_indentation(alpha, profile: Profile, params: Parameters, adhesion: bool = False):
+    """Depth of slip onset on scenario B's indentation branch (the "+" sign of (20), (21); the path
+    :meth:`~mdr_events.Path.scenario_B_indentation`: vertically in to ``d_max``, further in at angle ``α``):
+    ``(d − d_max) / tan α = K a(d)`` on the ``Δγ0`` branch (without adhesion the non-adhesive radius).
+
+    - Power law, ``n >= 1``: in ``s = √a``, ``κ c s^(2n) − sqrt(2πΔγ0/E*) s − tan α K s² − d_max`` falls, then
+      rises convexly through its one positive root (:func:`convex_root` from above); the cone (``n = 1``) is a
+      quadratic with a root only where ``tan α K < κ c`` (else ``+inf``: it never slides).
+    - Flat punch: every spring anchored at ``x = 0``, all slide at ``d = d_max + tan α K a``.
+
+    ``d > d_crit`` is the sliding region; ``α = 90°`` never slides (``+inf``).
+    """
+    profile = _check_profile(profile)
+    check_flag("adhesion", adhesion)
+    alpha_arr = np.asarray(alpha, dtype=float)
+    vertical = alpha_arr >= 90.0
+    slope = np.where(vertical, 0.0, np.tan(np.deg2rad(alpha_arr))) * float(
+        _rel("critical_shift").numeric(1.0, params.tau0, params.G_star))
+    if isinstance(profile, FlatPunch):
+        return _as_output(np.where(vertical, np.inf, params.d_max + slope * profile.radius), alpha_arr)
+    if profile.n < 1.0:
+        raise ValueError(f"PowerLaw.n={profile.n!r} is not allowed for the indentation branch's slip onset; allowed: "
+                         "n >= 1")
+    work = params.dgamma0 if adhesion else 0.0
+    kc, k, two_n = prefactor(profile), hess_prefactor(params, work), 2.0 * profile.n
+    if two_n == 2.0:  # the cone: (κc − slope) s² − k s − d_max = 0
+        lead = kc - slope
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s = np.where(lead > 0.0, (k + np.sqrt(k * k + 4.0 * lead * params.d_max)) / (2.0 * lead), np.nan)
+    else:
+        # κc s^(2n) is at least three times each other term beyond this: the function is positive there
+        upper = np.maximum.reduce([np.full(alpha_arr.shape, (3.0 * k / kc) ** (1.0 / (two_n - 1.0))),
+                                   (3.0 * slope / kc) ** (1.0 / (two_n - 2.0)),
+                                   np.full(alpha_arr.shape, (3.0 * params.d_max / kc) ** (1.0 / two_n))])
+        s = convex_root(lambda s: kc * s**two_n - k * s - slope * s * s - params.d_max,
+                        lambda s: two_n * kc * s ** (two_n - 1.0) - k - 2.0 * slope * s, upper, 0.0)
+    depth = params.d_max + slope * s * s
+    return _as_output(np.where(vertical | np.isnan(s), np.inf, depth), alpha_arr)
+
+
+def critical_angle_B_indentation(profile: Profile, params: Parameters, adhesion: bool = True,
+                                 final_depth: float | None = None) -> float:
+    """The "+" branch's critical angle (degrees): slip begins exactly at ``final_depth`` (default ``2 d_max``, as
+    :meth:`~mdr_events.Path.scenario_B_indentation`), ``tan α_c = (final − d_max) / ū(a(final))`` with the ``Δγ0``
+    branch's radius there (the punch's radius for the flat punch); below it the springs slide before the path
+    turns back."""
+    profile = _check_profile(profile)
+    check_flag("adhesion", adhesion)
+    final = 2.0 * params.d_max if final_depth is None else final_depth
+    if not (isinstance(final, (int, float)) and math.isfinite(final) and final > params.d_max):
+        raise ValueError(f"final_depth={final!r} is not allowed; allowed: a finite depth > d_max = {params.d_max!r} m")
+    radius = profile.radius if isinstance(profile, FlatPunch) else float(
+        contact_radius(final, profile, params, params.dgamma0 if adhesion else 0.0))
+    with np.errstate(divide="ignore"):
+        angle = _rel("critical_angle_B_indentation").numeric(radius, final, params.d_max, params.tau0, params.G_star)
     return float(np.rad2deg(angle))

@@ -281,3 +281,24 @@ def test_a_table_may_name_its_fields_in_any_order(paper):
     table = [{"alpha": 10.0, "tau0": 30e3}, {"tau0": 42e3, "alpha": 20.0}]
     result = sweep(table, "A", base=paper, scheduler="serial", quantities=("critical_angle_A",))
     assert result["tau0"].values.tolist() == [30e3, 42e3] and result["alpha"].values.tolist() == [10.0, 20.0]
+
+
+def test_a_sweep_of_a_power_law_indenter_meets_its_closed_forms(paper):
+    """profile=PowerLaw: the onset depths are the power law's (18) to 1e-9 (nan where it lies beyond d_max and
+    the run slides later), the critical angles its own, the result names the indenter."""
+    from mdr_events.profiles import PowerLaw
+    from mdr_events.theory import power_law
+
+    cone = PowerLaw.cone(0.1)
+    result = me.sweep({"tau0": [2e4, 4e4], "alpha": [10.0, 40.0]}, "A", base=paper, scheduler="serial", profile=cone)
+    assert result.attrs["profile"] == cone.describe()
+    for tau0 in (2e4, 4e4):
+        params = paper.replace(tau0=tau0)
+        assert float(result["critical_angle_A"].sel(tau0=tau0, alpha=10.0)) == power_law.critical_angle_A(cone, params)
+        for alpha in (10.0, 40.0):
+            expected = float(power_law.d_crit_A(alpha, cone, params, adhesion=True))
+            found = float(result["slip_onset_in_depth"].sel(tau0=tau0, alpha=alpha))
+            if expected < params.d_max:
+                assert found == pytest.approx(expected, rel=1e-9)
+            else:
+                assert math.isnan(found)

@@ -207,6 +207,9 @@ def test_results_say_which_parameters_came_from_the_preset(tmp_path, capsys):
     ('[sweep]\ngrid = { tau0 = "x" }\n', "[sweep] grid = {'tau0': 'x'} is not allowed"),
     ('[sweep]\ngrid = { tau0 = [1e3] }\nworkers = "2"\n', "[sweep] workers = '2' is not allowed"),
     ('[sweep]\ngrid = { tau0 = [1e3] }\n[limits]\nsteps = "many"\n', "[limits] 'steps=many' is not allowed"),
+    ('[profile]\nc = 2000.0\n', "[profile] lacks the required key(s) n"),
+    ('[profile]\nc = 2000.0\nn = 0.5\n[phase_diagram]\nscenarios = ["A"]\n', "[profile] PowerLaw.n=0.5 is not allowed in the simulators; allowed: n >= 1"),
+    ('[profile]\nc = -1.0\nn = 2.0\n[phase_diagram]\nscenarios = ["A"]\n', "[profile] PowerLaw.c=-1.0 is not allowed"),
 ])
 def test_bad_validate_fit_sweep_and_limits_tables_are_named(capsys, tmp_path, text, fragment):
     """Named when the study is read, and by `mdr-events run` in one line with exit status 2."""
@@ -217,3 +220,19 @@ def test_bad_validate_fit_sweep_and_limits_tables_are_named(capsys, tmp_path, te
     assert fragment in str(error.value) and str(path) in str(error.value)
     assert main(["run", str(path)]) == 2
     assert fragment in capsys.readouterr().err
+
+
+def test_a_profile_table_gives_every_table_its_indenter(tmp_path):
+    """[profile] c, n: the simulation and the phase diagram are the power law's, as through the Python API."""
+    path = write(tmp_path, STUDY.replace("[output]", "[profile]\nc = 2000.0\nn = 3.0\n\n[output]"))
+    assert main(["run", str(path)]) == 0
+    out = tmp_path / "out"
+    profile = me.PowerLaw(2000.0, 3.0)
+    ds = me.open_result(out / "demo_simulation.nc")
+    assert ds.attrs["profile"] == profile.describe()
+    params = me.Parameters.paper(R=0.1).replace(tau0=30e3)
+    direct = me.simulate(params, "B", alpha=[20, 60], method="continuum", samples=301, profile=profile)
+    np.testing.assert_array_equal(ds["tangential_force"].values, direct["tangential_force"].values)
+    diagram = me.open_result(out / "demo_phase_diagram_A.nc")
+    assert diagram.attrs["profile"] == profile.describe()
+    assert float(diagram["critical_angle_jkr"]) == me.power_law.critical_angle_A(profile, params)

@@ -273,3 +273,65 @@ def test_bad_uses_name_the_argument(paper):
         pl.normal_force(1e-4, 2e-3, FlatPunch(1e-3), paper)
     with pytest.raises(ValueError, match=r"PowerLaw.n=0.75 is not allowed for the adhesive slip onset"):
         pl.d_crit_A(20.0, PowerLaw(1.0, 0.75), paper, adhesion=True)
+
+
+# --- scenario B's indentation branch and the phase diagrams -------------------------------------------------
+def test_the_paraboloid_gives_the_papers_indentation_branch(paper):
+    profile = PowerLaw.paraboloid(paper.R)
+    alpha = np.array([0.0, 1.0, 5.0, 20.0, 45.0, 80.0, 90.0])
+    for adhesion in (False, True):
+        np.testing.assert_allclose(pl.d_crit_B_indentation(alpha, profile, paper, adhesion),
+                                   analytic.d_crit(alpha, paper, "B", adhesion=adhesion, branch="indentation"),
+                                   rtol=1e-13)
+        assert pl.critical_angle_B_indentation(profile, paper, adhesion) == pytest.approx(
+            analytic.critical_angle(paper, "B+", adhesion=adhesion), rel=1e-13)
+
+
+@pytest.mark.parametrize("n", [1.0, 1.5, 3.0, 6.0])
+def test_the_indentation_branch_slides_where_the_shift_reaches_the_cap(paper, n):
+    """(d − d_max) / tan α = K a(d) on the Δγ0 branch; the cone never slides once tan α K >= κ c (+inf)."""
+    profile = _profile_with_paper_scale(n, paper)
+    alpha = np.array([1.0, 10.0, 30.0, 60.0])
+    depth = pl.d_crit_B_indentation(alpha, profile, paper, adhesion=True)
+    found = np.isfinite(depth)
+    assert np.count_nonzero(found) >= 2
+    radius = pl.contact_radius(depth[found], profile, paper, paper.dgamma0)
+    shift = (depth[found] - paper.d_max) / np.tan(np.deg2rad(alpha[found]))
+    np.testing.assert_allclose(shift, analytic.critical_shift(radius, paper), rtol=1e-11)
+    if n == 1.0:
+        slope = np.tan(np.deg2rad(alpha)) * float(analytic.critical_shift(1.0, paper))
+        np.testing.assert_array_equal(~found, slope >= pl.prefactor(profile))
+
+
+@pytest.mark.parametrize("scenario", ["A", "B"])
+def test_the_phase_diagram_of_the_paraboloid_as_a_power_law_is_the_papers(paper, scenario):
+    """Same numbers (1e-12, of d_max for the depths: near 90° the pull-off onset d_max − tan α ū cancels to
+    1e-4 d_max, which the paper's Vieta form keeps to a few ulp of itself), same encoding of 'never slides'
+    (±inf), the profile named, no paper figure."""
+    default = me.phase_diagram(paper, scenario=scenario)
+    other = me.phase_diagram(paper, scenario=scenario, profile=PowerLaw.paraboloid(paper.R))
+    assert set(other.data_vars) == set(default.data_vars)
+    for name in default.data_vars:
+        expected, found = default[name].values, other[name].values
+        np.testing.assert_array_equal(np.isinf(found), np.isinf(expected))
+        finite = np.isfinite(expected)
+        np.testing.assert_allclose(found[finite], expected[finite], rtol=1e-12,
+                                   atol=1e-12 * paper.d_max if name.startswith("d_") else 0.0)
+    assert other.attrs["profile"].startswith("power law") and "figure" not in other.attrs
+
+
+def test_the_phase_diagrams_of_other_indenters(paper):
+    """A cone without adhesion: 0 below its angle, +inf (never while indenting) above; the flat punch's
+    onsets are straight lines in tan α; each diagram's critical angles are the functions'."""
+    cone = PowerLaw.cone(0.08)
+    diagram = me.phase_diagram(paper, alpha=np.array([5.0, 80.0]), scenario="A", profile=cone)
+    assert list(diagram["d_crit_hertz"].values) == [0.0, np.inf]
+    assert float(diagram["critical_angle_jkr"]) == pl.critical_angle_A(cone, paper, adhesion=True)
+    punch = FlatPunch(1e-3)
+    diagram = me.phase_diagram(paper, alpha=np.array([10.0, 20.0]), scenario="B", profile=punch)
+    cap = float(analytic.critical_shift(1e-3, paper))
+    np.testing.assert_allclose(diagram["d_crit_hertz"].sel(branch="indentation").values,
+                               paper.d_max + np.tan(np.deg2rad([10.0, 20.0])) * cap, rtol=1e-14)
+    assert float(diagram["critical_angle_jkr"]) == pl.critical_angle_B(punch, paper)
+    with pytest.raises(TypeError, match=r"profile='cone' \(str\) is not allowed"):
+        me.phase_diagram(paper, profile="cone")
