@@ -6,8 +6,9 @@ equivalent profile ``g(x)`` of the springs by the Abel transform (3); for the po
 ``g(x) = κₙ c |x|ⁿ`` with ``κₙ = √π Γ(n/2 + 1) / Γ(n/2 + 1/2)`` (2 for the paraboloid, π/2 for the cone;
 derived in :mod:`mdr_events.theory.symbolic`, evaluated in :mod:`mdr_events.theory.power_law`).
 
-The simulators (continuum and discrete) still take the paraboloid of :class:`~mdr_events.Parameters`;
-the closed forms of the theory layer take these profiles.
+The closed forms of the theory layer take both; the simulators (continuum and discrete), ``validate``,
+``fit``, ``sweep`` and the command line take a power law with ``n >= 1`` (``profile=``), and the paraboloid of
+:class:`~mdr_events.Parameters` by default.
 """
 
 from __future__ import annotations

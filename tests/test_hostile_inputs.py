@@ -164,6 +164,22 @@ def test_up_to_the_resolution_limit_the_force_keeps_the_cap(paper, share_of_limi
         assert cap_excess(params, me.simulate(params, scenario, alpha=20, method="continuum")) <= allowed
 
 
+def test_the_resolution_limit_is_where_the_rule_says(paper):
+    """Independently of resolution(): scenario A's travel at 20° is the larger of its tangential length
+    d_max/tan α and the anchors' spread a²/(R tan α) (the larger with adhesion), ū the cap at the JKR radius of
+    d_max; τ0 putting the travel at 0.99 of the limit runs, at 1.01 is refused."""
+    probe = paper.replace(tau0=1.0)
+    radius = float(me.jkr_contact_radius(probe.d_max, probe, probe.dgamma0))
+    travel = max(probe.d_max, radius**2 / probe.R) / math.tan(math.radians(20))
+    for share, refused in ((0.99, False), (1.01, True)):
+        tau0 = travel / (share * MAX_TRAVEL_PER_CAP) / radius * 2 * probe.G_star / math.pi
+        if refused:
+            with pytest.raises(ValueError, match=r"allowed for the continuum method: a travel of at most"):
+                me.simulate(paper.replace(tau0=tau0), "A", alpha=20, method="continuum")
+        else:
+            me.simulate(paper.replace(tau0=tau0), "A", alpha=20, method="continuum")
+
+
 @pytest.mark.parametrize("scenario", ["A", "B+"])
 def test_small_angles_run(paper, scenario):
     """α = 1e-3°: 'made no progress after 50 event restarts'. It runs, within the cap."""

@@ -53,7 +53,7 @@ from mdr_events.analysis.validate import resolve_path, times_from_contact
 from mdr_events.io.datasets import figure_of, register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
-from mdr_events.models.indenters import check_simulated_profile, describe
+from mdr_events.models.indenters import check_simulated_profile, profile_attrs
 from mdr_events.models.paths import Path
 from mdr_events.profiles import PowerLaw
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
@@ -346,10 +346,9 @@ def synthetic_measurement(params: Parameters, path, alpha: float | None = None, 
         data[name] = (("time",), curves[name] + noise, {"units": QUANTITY_UNITS[name],
                                                         "long_name": f"synthetic measured {QUANTITY_SYMBOLS[name]}"})
     coords = {"time": ("time", times + time_shift, {"units": "s", "long_name": "time of the synthetic measurement"})}
-    shape = {} if profile is None else {"profile": describe(profile)}
     return stamp(xr.Dataset(data, coords=coords), params, content=SYNTHETIC_CONTENT,
                  relative_noise=float(relative_noise), seed=int(seed), time_shift=float(time_shift),
-                 path_waypoints=the_path.describe(), path_speed=the_path.speed, **shape)
+                 path_waypoints=the_path.describe(), path_speed=the_path.speed, **profile_attrs(profile))
 
 
 class _Problem:
@@ -743,8 +742,7 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
                                      "that starts inside it or after one that ends in contact are left out")
     if isinstance(path, str):
         attrs.update(scenario=path, alpha=float(alpha))
-    if profile is not None:
-        attrs["profile"] = describe(profile)
+    attrs.update(profile_attrs(profile))
     return FitResult(stamp(dataset, params, **attrs), params, time_offset, depth_offset)
 
 

@@ -35,12 +35,12 @@ from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import EventKind, Tolerances, extremum, solve_path, tangential_work
 from mdr_events.models.continuum.solution import scan_spans
+from mdr_events.models import indenters
 from mdr_events.models.indenters import check_simulated_profile
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_UNITS, Parameters
 from mdr_events.profiles import PowerLaw
-from mdr_events.theory import analytic, power_law
 from mdr_events.validation import check_choice, check_count, check_real, shown
 
 __all__ = ["sweep", "run_chunk", "SweepSpec", "QUANTITIES", "CLOSED_FORM_QUANTITIES", "SWEEP_CONTENT", "SWEPT_NAMES",
@@ -121,12 +121,9 @@ class SweepSpec:
             out, history = (_continuum_quantities(params, path, self.tolerances, self.limits, times, self.profile)
                             if self.method == "continuum"
                             else _discrete_quantities(params, path, dx, self.n_steps, self.limits, times, self.profile))
-        if "critical_angle_A" in self.quantities:
-            out["critical_angle_A"] = analytic.critical_angle(params, "A") if self.profile is None else \
-                power_law.critical_angle_A(self.profile, params)
-        if "critical_angle_B" in self.quantities:
-            out["critical_angle_B"] = analytic.critical_angle(params, "B") if self.profile is None else \
-                power_law.critical_angle_B(self.profile, params)
+        for scenario in ("A", "B"):
+            if f"critical_angle_{scenario}" in self.quantities:
+                out[f"critical_angle_{scenario}"] = indenters.critical_angle(params, scenario, self.profile)
         return {name: out[name] for name in self.quantities}, history
 
 
@@ -160,7 +157,7 @@ def _continuum_quantities(params: Parameters, path: Path, tolerances: Tolerances
         if key != "full_slip":
             out[f"{key}_depth"] = float(event.depth) if event else math.nan
     pull = first.get("pull_off")
-    out["pull_off_force"] = float(analytic.normal_force(pull.depth, pull.radius, params)) if pull else math.nan
+    out["pull_off_force"] = float(solution.model.normal_force(pull.depth, pull.radius)) if pull else math.nan
     if times is None:
         return out, None
     curves = curves_of(solution, path, times, tuple(HISTORY_QUANTITIES)).values
@@ -294,6 +291,9 @@ def make_grid(grid) -> Grid:
 
 def _check_runs(spec: SweepSpec, grid: Grid) -> None:
     """Every parameter set of the grid is valid (before anything runs): the first refused one is named."""
+    if spec.profile is not None and "R" in grid.names:
+        raise ValueError(f"grid sweeps R with profile={spec.profile!r}; allowed: any name but R (the power law's "
+                         "shape is c and n, R belongs to the paraboloid)")
     fields = [i for i, name in enumerate(grid.names) if name in PARAMETER_UNITS]
     for i, name in enumerate(grid.names):
         if name in EXTRA_NAMES:
@@ -591,9 +591,7 @@ def _result(spec: SweepSpec, grid: Grid, values: np.ndarray, errors: list[str],
         attrs["alpha"] = spec.alpha
     if not isinstance(spec.scenario, str):
         attrs["path_waypoints"] = spec.scenario.describe()
-    if spec.profile is not None:
-        attrs["profile"] = spec.profile.describe()
-    return stamp(xr.Dataset(data, coords=coords), spec.base, **attrs)
+    return stamp(xr.Dataset(data, coords=coords), spec.base, **attrs, **indenters.profile_attrs(spec.profile))
 
 
 register_schema(SWEEP_CONTENT, {"failed": None, "error": None})

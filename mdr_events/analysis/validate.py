@@ -46,7 +46,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.io.candidates import Candidate, read_candidate
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
-from mdr_events.models.indenters import check_simulated_profile, describe
+from mdr_events.models.indenters import check_simulated_profile, profile_attrs
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import scenario_paths
 from mdr_events.parameters import Parameters
@@ -214,6 +214,9 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and tolerance > 0):
         raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a number > 0")
     profile = check_simulated_profile(profile)
+    if solution is not None and solution.model.profile != profile:
+        raise ValueError(f"solution= was solved for profile={solution.model.profile!r}, not for profile={profile!r}; "
+                         "allowed: a solution of this indenter")
     the_path = resolve_path(params, path, alpha, profile)
     read = read_candidate(candidate, names, units)
     times = times_from_contact(read, the_path, time_origin)
@@ -302,8 +305,7 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
                  quantities_not_compared=", ".join(not_compared) or "none",
                  time_origin=str(time_origin), verdict=verdict, path_waypoints=the_path.describe(),
                  path_speed=the_path.speed)
-    if profile is not None:
-        attrs["profile"] = describe(profile)
+    attrs.update(profile_attrs(profile))
     return stamp(xr.Dataset(data, coords=coords), params, **attrs)
 
 

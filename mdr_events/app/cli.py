@@ -134,7 +134,7 @@ def _profile_option(parser: argparse.ArgumentParser) -> None:
 
 def _profile(args: argparse.Namespace) -> PowerLaw | None:
     """The ``--power-law C N`` indenter (``None``: the paraboloid of the parameters' ``R``)."""
-    if args.power_law is None:
+    if getattr(args, "power_law", None) is None:
         return None
     try:
         return check_simulated_profile(PowerLaw(*args.power_law))
@@ -248,7 +248,7 @@ def _validation_path(args: argparse.Namespace, params: Parameters):
     if args.alpha is None:
         raise UsageError(f"--scenario {args.scenario} needs --alpha (one angle in degrees)")
     try:
-        paths, _ = scenario_paths(params, args.scenario, [args.alpha])
+        paths, _ = scenario_paths(params, args.scenario, [args.alpha], _profile(args))
     except (ValueError, TypeError) as error:
         raise UsageError(f"--alpha {args.alpha:g}: {error}") from None
     return paths[0], f"scenario {args.scenario}, α = {args.alpha:g}°"
@@ -455,7 +455,7 @@ def _command_fit(args: argparse.Namespace) -> int:
     motion = (path, None) if args.path is not None else (args.scenario, args.alpha)
     result = fit(args.data, *motion, free=args.free, start=params, bounds=_bounds(args.bounds),
                  noise=noise, names=_pairs("--names", args.names, quantities), units=units,
-                 time_origin=_time_origin(args.time_origin), limits=_limits(args))
+                 time_origin=_time_origin(args.time_origin), limits=_limits(args), profile=_profile(args))
     result.dataset.attrs.update(provenance, path_description=description)
     rendered = render_fit(result.dataset, stem)
     written = write_rendered(rendered, out)
@@ -550,6 +550,7 @@ def build_parser() -> argparse.ArgumentParser:
                          help=f"the parameters to fit: {', '.join(FREE_NAMES)}")
     _measured_path_options(fitting, "measurement", start=True)
     fitting.add_argument("--out", required=True, help="output directory")
+    _profile_option(fitting)
     _limit_option(fitting)
     _column_options(fitting, "measurement's")
     fitting.add_argument("--noise", default=None, metavar="Q=SIGMA,...",

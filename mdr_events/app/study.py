@@ -417,7 +417,7 @@ def _validations(study: Study, progress: Callable[[str], None]) -> list[tuple[st
         if case is None:
             path, description = _study_path(study), "the study's [path]"
         else:
-            path, description = scenario_paths(study.params, case[0], [case[1]])[0][0], \
+            path, description = scenario_paths(study.params, case[0], [case[1]], study.profile)[0][0], \
                 f"scenario {case[0]}, α = {case[1]:g}°"
     except (ValueError, TypeError) as error:
         raise StudyError(f"{where}: [validate] {error}") from None

@@ -17,7 +17,7 @@ from mdr_events.profiles import FlatPunch, PowerLaw
 from mdr_events.theory import analytic, power_law, symbolic
 
 __all__ = ["MIN_SIMULATED_EXPONENT", "check_simulated_profile", "branch_radius", "jump_off", "spring_profile",
-           "describe"]
+           "describe", "profile_attrs", "critical_angle"]
 
 #: The simulators take power laws from the cone on (a profile with ``n < 1`` has an infinite slope at the
 #: centre, where the contact of a non-adhesive indenter starts).
@@ -62,6 +62,23 @@ def spring_profile(params: Parameters, profile: PowerLaw | None = None) -> Calla
         relation = symbolic.relation("profile_paraboloid")
         return lambda x: relation.numeric(x, params.R)
     return lambda x: power_law.equivalent_profile(x, profile)
+
+
+def critical_angle(params: Parameters, scenario: str, profile: PowerLaw | None = None) -> float:
+    """Scenario A's or B's critical angle (adhesive) for ``profile`` (:func:`mdr_events.theory.analytic.critical_angle`
+    for the paraboloid, :mod:`mdr_events.theory.power_law` for a power law)."""
+    if profile is None:
+        return analytic.critical_angle(params, scenario)
+    return power_law.critical_angle_A(profile, params) if scenario == "A" else power_law.critical_angle_B(profile,
+                                                                                                          params)
+
+
+def profile_attrs(profile: PowerLaw | None) -> dict[str, object]:
+    """A result's attributes naming another indenter than the paraboloid: ``profile`` (in words), ``profile_c`` and
+    ``profile_n``; none for the paraboloid (``None``)."""
+    if profile is None:
+        return {}
+    return {"profile": profile.describe(), "profile_c": float(profile.c), "profile_n": float(profile.n)}
 
 
 def describe(profile: PowerLaw | None) -> str:

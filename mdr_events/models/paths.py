@@ -46,8 +46,9 @@ def exit_depth(params: Parameters, profile: PowerLaw | None = None) -> float:
     """
     jump = indenters.jump_off(params, params.dgamma1, profile)["depth"] if params.dgamma1 > 0 else 0.0
     if not -jump <= MAX_JUMP_OFF_DEPTHS * params.d_max:
+        indenter = f"R={params.R!r} m" if profile is None else f"profile={profile!r}"
         raise ValueError(
-            f"E={params.E!r} Pa, nu={params.nu!r}, R={params.R!r} m and dgamma1={params.dgamma1!r} J/m² put the "
+            f"E={params.E!r} Pa, nu={params.nu!r}, {indenter} and dgamma1={params.dgamma1!r} J/m² put the "
             f"jump-off of the Δγ1 branch at d = {jump:.3g} m, {-jump / params.d_max:.3g} d_max below the surface; "
             f"allowed: at most {MAX_JUMP_OFF_DEPTHS:.0e} d_max (a stiffer elastomer, a smaller dgamma1 or a "
             "larger d_max)")

@@ -352,7 +352,7 @@ def simulate(
         raise TypeError(f"limits={shown(limits)} is not allowed; allowed: a mdr_events.Limits")
     profile = indenters.check_simulated_profile(profile)
     cases = simulation_cases(params, scenario, alpha, profile)
-    shape = {} if profile is None else {"profile": indenters.describe(profile)}
+    shape = indenters.profile_attrs(profile)
     if method == "continuum":
         for name, value in (("dx", dx), ("dt", dt), ("n_steps", n_steps)):
             if value is not None:
@@ -399,9 +399,7 @@ def _simulate_continuum(params: Parameters, scenario, cases: Cases, t, samples, 
                         profile=profile)
     attrs = dict(method="continuum", scenario=_scenario_name(scenario, cases),
                  rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
-                 content=SIMULATION_CONTENT)
-    if profile is not None:
-        attrs["profile"] = indenters.describe(profile)
+                 content=SIMULATION_CONTENT, **indenters.profile_attrs(profile))
     dataset = simulation_dataset(params, cases, raw["time"], raw, **attrs)
     extrema = [solution_extrema(solution) for solution in raw["solutions"]]
     dataset = dataset.merge(event_log(raw["events"], cases.dimension)).merge(extrema_dataset(extrema, cases.dimension))

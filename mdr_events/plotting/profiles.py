@@ -4,7 +4,6 @@ discrete model as open markers. Drawn from the datasets only."""
 
 from __future__ import annotations
 
-import re
 from collections.abc import Mapping
 
 import matplotlib.pyplot as plt
@@ -26,9 +25,8 @@ MARKERS_PER_CURVE = 40
 
 
 def _exponent(dataset: xr.Dataset) -> str:
-    """`` (n = 3)`` from the dataset's ``profile`` attribute (nothing for the paraboloid of R)."""
-    found = re.search(r"n = ([-+0-9.e]+)$", dataset.attrs.get("profile", ""))
-    return f" (n = {float(found.group(1)):g})" if found else " (n = 2)"
+    """`` (n = 3)`` from the dataset's ``profile_n`` attribute (the paraboloid of R without it: 2)."""
+    return f" (n = {float(dataset.attrs.get('profile_n', 2.0)):g})"
 
 
 def plot_profile_comparison(continuum: Mapping[str, xr.Dataset], discrete: Mapping[str, xr.Dataset] | None = None,

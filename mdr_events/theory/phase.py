@@ -9,7 +9,7 @@ import xarray as xr
 
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, PowerLaw, Profile
+from mdr_events.profiles import Profile
 from mdr_events.theory import analytic, power_law
 from mdr_events.validation import check_choice, validate_alpha
 
@@ -108,9 +108,7 @@ def _profile_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str
                            coords: dict) -> xr.Dataset:
     """:func:`phase_diagram` of another indenter: the same variables from :mod:`~mdr_events.theory.power_law`, with
     the same encoding of "never slides" (``+inf`` while indenting, ``-inf`` on the pull-off branch)."""
-    if not isinstance(profile, (PowerLaw, FlatPunch)):
-        raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: None (the "
-                        "paraboloid of R), a PowerLaw or a FlatPunch")
+    power_law.check_profile(profile)
     variables = {}
     kinds = (("hertz", False, "non-adhesive"), ("jkr", True, "adhesive (Heß)"))
     if scenario == "A":

@@ -24,13 +24,15 @@ from mdr_events.validation import check_flag
 __all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_force", "contact_radius",
            "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
            "critical_angle_B", "d_crit_B_indentation", "critical_angle_B_indentation", "convex_root", "branch_root", "with_radius_at",
-           "prefactor", "hess_prefactor",
+           "prefactor", "hess_prefactor", "check_profile",
            "ADHESIVE_MIN_EXPONENT", "ROOT_RTOL"]
 
 #: With adhesion a power law needs ``n`` above this: below it ``√a`` outgrows ``aⁿ`` and no contact is stable.
 ADHESIVE_MIN_EXPONENT = 0.5
 #: Relative accuracy of :func:`convex_root` (a few ulp).
 ROOT_RTOL = 4 * float(np.finfo(float).eps)
+#: Doublings :func:`convex_root` takes at most to get right of the root from its guess (2^2100 > 1e600).
+ROOT_MAX_DOUBLINGS = 2100
 #: Newton steps :func:`convex_root` takes at most (it converges quadratically once close; from its upper
 #: bound, monotonically).
 ROOT_MAX_ITERATIONS = 200
@@ -40,7 +42,8 @@ def _rel(key: str):
     return symbolic.relation(key)
 
 
-def _check_profile(profile) -> Profile:
+def check_profile(profile) -> Profile:
+    """``profile`` if it is a :class:`PowerLaw` or a :class:`FlatPunch`; else ``TypeError`` naming it."""
     if not isinstance(profile, (PowerLaw, FlatPunch)):
         raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: a PowerLaw or "
                         "a FlatPunch (mdr_events.profiles)")
@@ -55,7 +58,7 @@ def _check_adhesive(profile: PowerLaw, work_of_adhesion: float) -> None:
 
 
 def _power_law_only(profile, what: str) -> PowerLaw:
-    if not isinstance(_check_profile(profile), PowerLaw):
+    if not isinstance(check_profile(profile), PowerLaw):
         raise TypeError(f"profile={profile!r} is not allowed for {what}; allowed: a PowerLaw (a flat punch keeps "
                         "its radius while in contact)")
     return profile
@@ -68,13 +71,21 @@ def _as_output(values: np.ndarray, like) -> np.ndarray | float:
 def convex_root(function, derivative, upper, lower, rtol: float = ROOT_RTOL):
     """The root in ``[lower, upper]`` of increasing convex functions, elementwise (Newton from ``upper``).
 
-    ``function(s)`` and ``derivative(s)`` are vectorised; ``function(upper) >= 0 >= function(lower)`` and the
-    function increases and is convex on ``[lower, upper]``. Newton's steps from the right then stay right of the
-    root and fall monotonically onto it; an iterate is clipped to ``lower`` (safeguard against rounding).
-    Stops when every step is below ``rtol`` of its iterate.
+    ``function(s)`` and ``derivative(s)`` are vectorised; ``function(lower) <= 0`` and the function increases and
+    is convex from its root on. ``upper`` is a guess of a point right of the root (a closed-form bound): where it
+    is not finite (a bound whose exponent ``1/(2n − 1)`` or ``1/(2n − 2)`` overflowed near ``n = 1/2`` or ``1``) the
+    search starts from 1, and a guess where the function is still negative is doubled until it is not. Newton's
+    steps from the right then stay right of the root and fall monotonically onto it; an iterate is clipped to
+    ``lower`` (safeguard against rounding). Stops when every step is below ``rtol`` of its iterate.
     """
     s = np.array(upper, dtype=float, copy=True)
     lower = np.broadcast_to(np.asarray(lower, dtype=float), s.shape)
+    s = np.maximum(np.where(np.isfinite(s), s, 1.0), lower)
+    for _ in range(ROOT_MAX_DOUBLINGS):
+        short = function(s) < 0.0
+        if not np.any(short):
+            break
+        s = np.where(short, 2.0 * np.where(s > 0.0, s, 1.0), s)
     for _ in range(ROOT_MAX_ITERATIONS):
         with np.errstate(divide="ignore", invalid="ignore"):
             step = np.where(derivative(s) > 0, function(s) / derivative(s), 0.0)
@@ -110,6 +121,11 @@ def prefactor(profile: PowerLaw) -> float:
     return float(_rel("profile_power_law").numeric(1.0, profile.c, profile.n))
 
 
+def cap_per_radius(params: Parameters) -> float:
+    """``K``: the critical shift (13) is ``ū = K a``."""
+    return float(_rel("critical_shift").numeric(1.0, params.tau0, params.G_star))
+
+
 def hess_prefactor(params: Parameters, work_of_adhesion: float) -> float:
     """``sqrt(2π Δγ / E*)``: Heß's limit (8) is this times ``√a``."""
     return float(_rel("hess_max_elongation").numeric(1.0, work_of_adhesion, params.E_star))
@@ -136,7 +152,7 @@ def branch_depth(contact_radius, profile: PowerLaw, params: Parameters, work_of_
 def normal_force(depth, contact_radius, profile: Profile, params: Parameters):
     """Normal force (N) of the springs in ``|x| < a`` at depth ``d`` (10); the flat punch: ``2 E* a d`` with its
     own radius (``contact_radius`` must be it, or ``None``)."""
-    profile = _check_profile(profile)
+    profile = check_profile(profile)
     if isinstance(profile, FlatPunch):
         if contact_radius is not None and not np.all(np.asarray(contact_radius) == profile.radius):
             raise ValueError(f"contact_radius={contact_radius!r} is not allowed for {profile!r}; allowed: None or "
@@ -169,7 +185,7 @@ def jump_off(profile: Profile, params: Parameters, work_of_adhesion: float) -> d
     spring reaches Heß's limit (8) at once, with Kendall's force ``−sqrt(8π a³ E* Δγ)`` (Kendall, J. Phys. D 4
     (1971) 1186), the same under force control.
     """
-    profile = _check_profile(profile)
+    profile = check_profile(profile)
     if isinstance(profile, FlatPunch):
         args = (profile.radius, params.E_star, work_of_adhesion)
         return {"contact_radius": profile.radius,
@@ -187,7 +203,7 @@ def jump_off(profile: Profile, params: Parameters, work_of_adhesion: float) -> d
 def pull_off_force(profile: Profile, params: Parameters, work_of_adhesion: float) -> float:
     """The pull-off force under force control (N, <= 0): the minimum of (10) along the branch (the paraboloid:
     JKR's ``−(3/2) π Δγ R``); the flat punch: Kendall's ``−sqrt(8π a³ E* Δγ)``."""
-    profile = _check_profile(profile)
+    profile = check_profile(profile)
     if isinstance(profile, FlatPunch):
         return jump_off(profile, params, work_of_adhesion)["normal_force"]
     if work_of_adhesion == 0.0:
@@ -216,9 +232,10 @@ def contact_radius(depth, profile: PowerLaw, params: Parameters, work_of_adhesio
     point = jump_off(profile, params, work_of_adhesion)
     s_fold = math.sqrt(point["contact_radius"])
     # κc s^(2n) >= k s + |d| once κc s^(2n) >= 2|d| and κc s^(2n−1) >= 2k (each half covers one term)
-    upper = np.maximum.reduce([np.full(depth_arr.shape, s_fold),
-                               (2.0 * np.abs(depth_arr) / kc) ** (1.0 / two_n),
-                               np.full(depth_arr.shape, (2.0 * k / kc) ** (1.0 / (two_n - 1.0)))])
+    with np.errstate(over="ignore", divide="ignore"):
+        upper = np.maximum.reduce([np.full(depth_arr.shape, s_fold),
+                                   (2.0 * np.abs(depth_arr) / kc) ** (1.0 / two_n),
+                                   np.full(depth_arr.shape, (2.0 * k / kc) ** (1.0 / (two_n - 1.0)))])
     s = convex_root(lambda s: kc * s**two_n - k * s - depth_arr, lambda s: two_n * kc * s ** (two_n - 1.0) - k,
                     upper, s_fold)
     return _as_output(np.where(depth_arr >= point["depth"], s * s, np.nan), depth_arr)
@@ -239,14 +256,14 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
 
     Depths beyond ``d_max`` are returned as they are (the path turns back before them).
     """
-    profile = _check_profile(profile)
+    profile = check_profile(profile)
     check_flag("adhesion", adhesion)
     alpha_arr = np.asarray(alpha, dtype=float)
     tan_alpha = np.tan(np.deg2rad(alpha_arr))
     if isinstance(profile, FlatPunch):
         return _as_output(np.asarray(_rel("flat_punch_d_crit_A").numeric(profile.radius, tan_alpha, params.tau0,
                                                                          params.G_star), dtype=float), alpha_arr)
-    K = float(_rel("critical_shift").numeric(1.0, params.tau0, params.G_star))  # ū = K a (13)
+    K = cap_per_radius(params)
     kc = prefactor(profile)
     if not adhesion or params.dgamma0 == 0.0:
         if profile.n == 1.0:
@@ -265,12 +282,11 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
         with np.errstate(divide="ignore", invalid="ignore"):
             s = np.where(kc > slope, k / (kc - slope), np.nan)
     else:
-        # φ(s) = κc s^p − slope s − k: negative at 0, convex; its minimum at s_min, its root above
-        s_min = (slope / (power * kc)) ** (1.0 / (power - 1.0))
-        upper = np.maximum((2.0 * slope / kc) ** (1.0 / (power - 1.0)), (2.0 * k / kc) ** (1.0 / power))
-        upper = np.maximum(upper, s_min)
+        # φ(s) = κc s^p − slope s − k: negative at 0 and convex (p > 1), so it has one positive root
+        with np.errstate(over="ignore", divide="ignore"):
+            upper = np.maximum((2.0 * slope / kc) ** (1.0 / (power - 1.0)), (2.0 * k / kc) ** (1.0 / power))
         s = convex_root(lambda s: kc * s**power - slope * s - k, lambda s: power * kc * s ** (power - 1.0) - slope,
-                        upper, s_min)
+                        upper, 0.0)
     radius = s * s
     return _as_output(np.asarray(tan_alpha * K * radius, dtype=float), alpha_arr)
 
@@ -280,7 +296,7 @@ def critical_angle_A(profile: Profile, params: Parameters, adhesion: bool = True
     below it the springs slide while indenting. The radius at ``d_max`` is the branch's (``Δγ0``) with adhesion,
     the non-adhesive one without, the punch's radius for the flat punch. The cone without adhesion gives
     ``tan α_c = κ c / K`` at any depth."""
-    profile = _check_profile(profile)
+    profile = check_profile(profile)
     check_flag("adhesion", adhesion)
     if isinstance(profile, FlatPunch):
         radius = profile.radius
@@ -305,16 +321,16 @@ def d_crit_B(alpha, profile: Profile, params: Parameters, adhesion: bool = False
 
     ``d < d_crit`` is the sliding region; ``α = 90°`` never slides (``-inf``).
     """
-    profile = _check_profile(profile)
+    profile = check_profile(profile)
     check_flag("adhesion", adhesion)
     alpha_arr = np.asarray(alpha, dtype=float)
     tan_alpha = np.tan(np.deg2rad(alpha_arr))
     vertical = alpha_arr >= 90.0
-    K = float(_rel("critical_shift").numeric(1.0, params.tau0, params.G_star))
+    K = cap_per_radius(params)
     work = params.dgamma1 if adhesion else 0.0
-    if isinstance(profile, FlatPunch):
+    if isinstance(profile, FlatPunch):  # it keeps its radius and comes off whole at Kendall's depth (0 without adhesion)
         depth = params.d_max - tan_alpha * K * profile.radius
-        apart = depth < jump_off(profile, params, work)["depth"] if work > 0.0 else np.zeros(depth.shape, bool)
+        apart = depth < jump_off(profile, params, work)["depth"]
         return _as_output(np.where(vertical | apart, -np.inf, depth), alpha_arr)
     if work > 0.0:
         _check_adhesive(profile, work)
@@ -341,11 +357,14 @@ def critical_angle_B(profile: Profile, params: Parameters, adhesion: bool = True
     branch, or Kendall's depth for the flat punch) before any spring slides, ``tan α_c = (d_max − d_j) / ū(a_j)``
     at the jump-off ``(a_j, d_j)`` ((21) there). Without adhesion the contact shrinks to nothing and slip always
     comes first: 90°."""
-    profile = _check_profile(profile)
+    profile = check_profile(profile)
     check_flag("adhesion", adhesion)
-    if not adhesion or params.dgamma1 == 0.0:
+    if isinstance(profile, FlatPunch):  # comes off whole, at Kendall's depth (at the surface without adhesion)
+        point = jump_off(profile, params, params.dgamma1 if adhesion else 0.0)
+    elif not adhesion or params.dgamma1 == 0.0:
         return 90.0
-    point = jump_off(profile, params, params.dgamma1)
+    else:
+        point = jump_off(profile, params, params.dgamma1)
     with np.errstate(divide="ignore"):
         angle = _rel("critical_angle_B").numeric(point["contact_radius"], point["depth"], params.d_max, params.tau0,
                                                  params.G_star)
@@ -364,12 +383,11 @@ def d_crit_B_indentation(alpha, profile: Profile, params: Parameters, adhesion: 
 
     ``d > d_crit`` is the sliding region; ``α = 90°`` never slides (``+inf``).
     """
-    profile = _check_profile(profile)
+    profile = check_profile(profile)
     check_flag("adhesion", adhesion)
     alpha_arr = np.asarray(alpha, dtype=float)
     vertical = alpha_arr >= 90.0
-    slope = np.where(vertical, 0.0, np.tan(np.deg2rad(alpha_arr))) * float(
-        _rel("critical_shift").numeric(1.0, params.tau0, params.G_star))
+    slope = np.where(vertical, 0.0, np.tan(np.deg2rad(alpha_arr))) * cap_per_radius(params)
     if isinstance(profile, FlatPunch):
         return _as_output(np.where(vertical, np.inf, params.d_max + slope * profile.radius), alpha_arr)
     if profile.n < 1.0:
@@ -383,9 +401,10 @@ def d_crit_B_indentation(alpha, profile: Profile, params: Parameters, adhesion: 
             s = np.where(lead > 0.0, (k + np.sqrt(k * k + 4.0 * lead * params.d_max)) / (2.0 * lead), np.nan)
     else:
         # κc s^(2n) is at least three times each other term beyond this: the function is positive there
-        upper = np.maximum.reduce([np.full(alpha_arr.shape, (3.0 * k / kc) ** (1.0 / (two_n - 1.0))),
-                                   (3.0 * slope / kc) ** (1.0 / (two_n - 2.0)),
-                                   np.full(alpha_arr.shape, (3.0 * params.d_max / kc) ** (1.0 / two_n))])
+        with np.errstate(over="ignore", divide="ignore"):
+            upper = np.maximum.reduce([np.full(alpha_arr.shape, (3.0 * k / kc) ** (1.0 / (two_n - 1.0))),
+                                       (3.0 * slope / kc) ** (1.0 / (two_n - 2.0)),
+                                       np.full(alpha_arr.shape, (3.0 * params.d_max / kc) ** (1.0 / two_n))])
         s = convex_root(lambda s: kc * s**two_n - k * s - slope * s * s - params.d_max,
                         lambda s: two_n * kc * s ** (two_n - 1.0) - k - 2.0 * slope * s, upper, 0.0)
     depth = params.d_max + slope * s * s
@@ -398,7 +417,7 @@ def critical_angle_B_indentation(profile: Profile, params: Parameters, adhesion:
     :meth:`~mdr_events.Path.scenario_B_indentation`), ``tan α_c = (final − d_max) / ū(a(final))`` with the ``Δγ0``
     branch's radius there (the punch's radius for the flat punch); below it the springs slide before the path
     turns back."""
-    profile = _check_profile(profile)
+    profile = check_profile(profile)
     check_flag("adhesion", adhesion)
     final = 2.0 * params.d_max if final_depth is None else final_depth
     if not (isinstance(final, (int, float)) and math.isfinite(final) and final > params.d_max):

@@ -302,3 +302,21 @@ def test_a_sweep_of_a_power_law_indenter_meets_its_closed_forms(paper):
                 assert found == pytest.approx(expected, rel=1e-9)
             else:
                 assert math.isnan(found)
+
+
+def test_a_power_law_sweep_reports_its_own_pull_off_force_and_refuses_R(paper):
+    """The pull-off force is F_N (10) of the power law at the pull-off (the least normal force, its force-control
+    minimum, lies below it), not the paraboloid's; sweeping R with a power law is refused by name."""
+    from mdr_events.profiles import PowerLaw
+    from mdr_events.theory import power_law
+
+    quartic = power_law.with_radius_at(4.0, math.sqrt(paper.R * paper.d_max), paper.d_max)
+    result = me.sweep({"alpha": [20.0]}, "A", base=paper, scheduler="serial", profile=quartic,
+                      quantities=["pull_off_force", "normal_force_min", "pull_off_depth"])
+    depth = float(result["pull_off_depth"].values[0])
+    fold = power_law.jump_off(quartic, paper, paper.dgamma1)
+    assert depth == pytest.approx(fold["depth"], rel=1e-9)
+    assert float(result["pull_off_force"].values[0]) == pytest.approx(fold["normal_force"], rel=1e-9)
+    assert float(result["normal_force_min"].values[0]) <= float(result["pull_off_force"].values[0])
+    with pytest.raises(ValueError, match=r"grid sweeps R with profile=PowerLaw\(c=2000.0, n=3.0\)"):
+        me.sweep({"R": [0.01, 0.03]}, "A", 20.0, base=paper, scheduler="serial", profile=PowerLaw(2e3, 3.0))

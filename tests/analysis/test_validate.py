@@ -190,3 +190,13 @@ def test_a_power_law_candidate_is_validated_against_its_own_indenter(paper):
     wrong = me.validate(candidate, paper, "A", 20.0)
     assert wrong.attrs["verdict"] == "fail" and np.all(wrong["max_error"].values > 0.1)
     assert "profile" not in wrong.attrs
+
+
+def test_a_solution_of_another_indenter_is_refused(paper):
+    from mdr_events.models.continuum import solve_path
+    from mdr_events.profiles import PowerLaw
+
+    candidate = me.simulate(paper, "A", alpha=20.0, dx=4e-6, n_steps=2000).isel(alpha=0)
+    solution = solve_path(paper, me.Path.scenario_A(20.0, paper))
+    with pytest.raises(ValueError, match=r"solution= was solved for profile=None, not for profile=PowerLaw"):
+        me.validate(candidate, paper, "A", 20.0, solution=solution, profile=PowerLaw(2e3, 3.0))

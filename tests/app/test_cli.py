@@ -3,6 +3,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import mdr_events as me
@@ -166,3 +167,21 @@ def test_a_bad_power_law_is_one_line_exit_2(capsys, tmp_path, values, fragment):
     status, out, err = run(capsys, "simulate", "--scenario", "A", "--power-law", *values, "--out", str(tmp_path / "new"))
     assert status == 2 and err.count("\n") == 1 and fragment in err
     assert not (tmp_path / "new").exists()  # nothing written, not even the output directory
+
+
+def test_cli_validate_builds_the_path_of_the_power_law(capsys, tmp_path):
+    """A profile whose jump-off lies below the paraboloid's way out: the reference the CLI builds for
+    --scenario/--alpha ends below that profile's jump-off, so it pulls off (as validate() in Python)."""
+    from mdr_events.theory import power_law
+
+    paper = me.Parameters.paper()
+    flat = me.PowerLaw(1.286e11, 6.0)  # a blunt indenter whose jump-off lies 5.25e-5 m above the surface
+    assert power_law.jump_off(flat, paper, paper.dgamma1)["depth"] < me.Path.scenario_A(20.0, paper).waypoints[-1, 1]
+    run_file = tmp_path / "run.nc"
+    me.write_netcdf(me.simulate(paper, "A", alpha=20.0, dx=1e-6, profile=flat).isel(alpha=0), run_file)
+    status, out, _ = run(capsys, "validate", str(run_file), "--scenario", "A", "--alpha", "20", "--preset", "paper-R30",
+                         "--power-law", repr(flat.c), "6", "--out", str(tmp_path / "out"))
+    report = me.open_result(tmp_path / "out" / "run.nc")
+    assert np.isfinite(float(report["pull_off_force_exact"]))
+    direct = me.validate(run_file, paper, "A", 20.0, profile=flat)
+    assert float(report["pull_off_force_exact"]) == float(direct["pull_off_force_exact"])

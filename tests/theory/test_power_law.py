@@ -335,3 +335,29 @@ def test_the_phase_diagrams_of_other_indenters(paper):
     assert float(diagram["critical_angle_jkr"]) == pl.critical_angle_B(punch, paper)
     with pytest.raises(TypeError, match=r"profile='cone' \(str\) is not allowed"):
         me.phase_diagram(paper, profile="cone")
+
+
+def test_a_flat_punch_without_adhesion_comes_off_at_the_surface_in_scenario_B(paper):
+    """The punch keeps its radius and comes off whole at d = 0 without adhesion (Kendall's depth with it): an
+    onset that would lie above the surface is -inf, and the critical angle is where the onset reaches it."""
+    punch = FlatPunch(1e-4)
+    cap = float(analytic.critical_shift(1e-4, paper))
+    critical = math.degrees(math.atan(paper.d_max / cap))
+    assert pl.critical_angle_B(punch, paper, adhesion=False) == pytest.approx(critical, rel=1e-14)
+    assert pl.d_crit_B(1.001 * critical, punch, paper, adhesion=False) == -np.inf
+    assert pl.d_crit_B(0.999 * critical, punch, paper, adhesion=False) > 0.0
+
+
+@pytest.mark.parametrize("n", [1.0, 1.0001, 1.001, 1.01])
+def test_exponents_near_one_keep_their_roots(paper, n):
+    """Near n = 1 the closed-form bounds' exponents 1/(2n − 2) overflow; the roots are still found and move
+    continuously with n (the onset of a cone with c = 0.5 at 68.75°: 2.2e-6 m at n = 1)."""
+    profile = PowerLaw(0.5, n)
+    depth = pl.d_crit_A(68.75, profile, paper, adhesion=True)
+    if n == 1.0001:  # c xⁿ changes by x^0.0001 ≈ 1 − 1e-3 over the contact: the onset by about as much
+        assert depth == pytest.approx(pl.d_crit_A(68.75, PowerLaw(0.5, 1.0), paper, adhesion=True), rel=2e-2)
+    radius = float(pl.contact_radius(depth, profile, paper, paper.dgamma0))
+    assert depth / math.tan(math.radians(68.75)) == pytest.approx(float(analytic.critical_shift(radius, paper)),
+                                                                 rel=1e-11)
+    indentation = pl.d_crit_B_indentation([10.0, 30.0], profile, paper, adhesion=True)
+    assert np.all(np.isfinite(indentation)) and np.all(indentation > paper.d_max)
