@@ -112,6 +112,9 @@ CONFIDENCE = 0.95
 MISFIT_RMS = 2.0
 #: A measured sample is in contact where a quantity exceeds this many times its noise.
 CONTACT_NOISE_MULTIPLE = 5.0
+#: The fit's curves fade out (rather than jump) at the loss of contact over the time they spend between this
+#: many contact thresholds and one: the data's crossing may lie anywhere in it.
+FADE_MULTIPLE = 3.0
 #: Contact lost this far apart in the data and the fit, or a record starting this far after the first contact
 #: (a share of the path's duration; at least two sample spacings), points to a wrong time origin.
 CONTACT_TIME_SHARE = 1e-3
@@ -500,15 +503,19 @@ def _fit_warnings(measurement: Measurement, model: ModelCurves, rms: Mapping[str
         warnings.append(f"the record starts {times[0] - first_contact:.4g} s after the path's first contact, in "
                         f"contact: if it starts at the first contact, give time_origin="
                         f"{measurement.candidate.time[0]:.6g}, or free time_offset")
-    # contact lost (a jump): where the data and the fit last exceed the same multiple of the noise
+    # contact lost (a jump): where the data and the fit last exceed the same multiple of the noise; where the fit
+    # fades out instead (a cone's small jump-off radius), the noise moves that crossing by the fade's duration
     measured, fitted = np.zeros(times.size, bool), np.zeros(times.size, bool)
+    strong = np.zeros(times.size, bool)
     for name, values in measurement.values.items():
         threshold = CONTACT_NOISE_MULTIPLE * measurement.noise[name]
         measured |= np.nan_to_num(np.abs(values)) > threshold
         fitted |= np.nan_to_num(np.abs(model.values[name])) > threshold
+        strong |= np.nan_to_num(np.abs(model.values[name])) > FADE_MULTIPLE * threshold
     if measured.any() and fitted.any() and not measured[-1] and not fitted[-1]:
         lost, fitted_lost = times[np.flatnonzero(measured)[-1]], times[np.flatnonzero(fitted)[-1]]
-        if abs(lost - fitted_lost) > tolerance:
+        fade = fitted_lost - times[np.flatnonzero(strong)[-1]] if strong.any() else 0.0
+        if abs(lost - fitted_lost) > tolerance + fade:
             warnings.append(f"the data lose contact at {lost:.6g} s, the fit at {fitted_lost:.6g} s (the path's "
                             "clock): free time_offset or give time_origin")
     return warnings

@@ -121,9 +121,10 @@ def _command_derive(args: argparse.Namespace) -> None:
 
 def _command_phase_diagram(args: argparse.Namespace) -> None:
     params, provenance = _parameters(args)
+    profile = _profile(args)
     out = prepare_output_directory(args.out, "--out")
     stem = f"phase_diagram_{args.scenario}"
-    for outcome in write_phase_diagram(params, args.scenario, out, stem, attrs=provenance):
+    for outcome in write_phase_diagram(params, args.scenario, out, stem, attrs=provenance, profile=profile):
         print(outcome.path)
 
 
@@ -501,6 +502,7 @@ def build_parser() -> argparse.ArgumentParser:
     phase = commands.add_parser("phase-diagram", help="write the phase diagram (Fig. 9a/9b) as .nc and .png")
     phase.add_argument("--scenario", choices=["A", "B"], required=True)
     phase.add_argument("--out", required=True, help="output directory")
+    _profile_option(phase)
     _parameter_options(phase)
     phase.set_defaults(run=_command_phase_diagram)
 

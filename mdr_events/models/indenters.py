@@ -74,11 +74,12 @@ def critical_angle(params: Parameters, scenario: str, profile: PowerLaw | None =
 
 
 def profile_attrs(profile: PowerLaw | None) -> dict[str, object]:
-    """A result's attributes naming another indenter than the paraboloid: ``profile`` (in words), ``profile_c`` and
-    ``profile_n``; none for the paraboloid (``None``)."""
+    """A result's attributes naming another indenter than the paraboloid: ``profile`` (in words), ``profile_c``,
+    ``profile_n`` and ``profile_note`` (``param_R`` is then unused); none for the paraboloid (``None``)."""
     if profile is None:
         return {}
-    return {"profile": profile.describe(), "profile_c": float(profile.c), "profile_n": float(profile.n)}
+    return {"profile": profile.describe(), "profile_c": float(profile.c), "profile_n": float(profile.n),
+            "profile_note": "the indenter is this power law: param_R (the paraboloid's radius) is not used"}
 
 
 def describe(profile: PowerLaw | None) -> str:

@@ -125,9 +125,10 @@ def plot_phase_diagram(dataset: xr.Dataset, ax=None):
     R_mm = dataset.attrs["param_R"] * _MM
     style = {"hertz": dict(color="k", ls="-", label="non-adhesive"),
              "jkr": dict(color="tab:red", ls="--", label="adhesive")}
+    other = "profile" in dataset.attrs  # another indenter: the paper's equation numbers are the paraboloid's
     if scenario == "A":
-        for key, eq in (("hertz", "(17)"), ("jkr", "(18)")):
-            ax.plot(alpha, dataset[f"d_crit_{key}"].values * _MM, **{**style[key], "label": f"{style[key]['label']} {eq}"})
+        for key, eq in (("hertz", "" if other else "(17)"), ("jkr", "(Heß)" if other else "(18)")):
+            ax.plot(alpha, dataset[f"d_crit_{key}"].values * _MM, **{**style[key], "label": f"{style[key]['label']} {eq}".strip()})
         top = 2.0 * d_max
         for key in ("hertz", "jkr"):
             angle = float(dataset[f"critical_angle_{key}"])
@@ -143,10 +144,10 @@ def plot_phase_diagram(dataset: xr.Dataset, ax=None):
         ax.set_ylim(0, top)
     else:
         branches = list(dataset["branch"].values)
-        for key, eq in (("hertz", "(20)"), ("jkr", "(21)")):
+        for key, eq in (("hertz", "" if other else "(20)"), ("jkr", "(Heß)" if other else "(21)")):
             for i, branch in enumerate(branches):
                 values = dataset[f"d_crit_{key}"].sel(branch=branch).values * _MM
-                ax.plot(alpha, values, **{**style[key], "label": f"{style[key]['label']} {eq}" if i == 0 else None})
+                ax.plot(alpha, values, **{**style[key], "label": f"{style[key]['label']} {eq}".strip() if i == 0 else None})
         jump_off = float(dataset["jump_off_depth"]) * _MM
         ax.axhline(0.0, color="0.5", lw=0.8)
         ax.axhline(jump_off, color="tab:red", lw=0.8, ls="-.", label="jump-off depth (Δγ1)")

@@ -19,7 +19,7 @@ import numpy as np
 from mdr_events.parameters import Parameters
 from mdr_events.profiles import FlatPunch, PowerLaw, Profile
 from mdr_events.theory import symbolic
-from mdr_events.validation import check_flag
+from mdr_events.validation import check_flag, check_real, validate_alpha
 
 __all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_force", "contact_radius",
            "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
@@ -48,6 +48,10 @@ def check_profile(profile) -> Profile:
         raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: a PowerLaw or "
                         "a FlatPunch (mdr_events.profiles)")
     return profile
+
+
+def _check_work(work_of_adhesion) -> float:
+    return check_real("work_of_adhesion", work_of_adhesion, "a finite number >= 0 (J/m²)", lambda value: value >= 0.0)
 
 
 def _check_adhesive(profile: PowerLaw, work_of_adhesion: float) -> None:
@@ -145,6 +149,7 @@ def equivalent_profile(x, profile: PowerLaw):
 
 def branch_depth(contact_radius, profile: PowerLaw, params: Parameters, work_of_adhesion: float):
     """Depth of the adhesive contact of radius ``a``, ``κ c aⁿ − sqrt(2π a Δγ / E*)`` (generalised (9))."""
+    work_of_adhesion = _check_work(work_of_adhesion)
     profile = _power_law_only(profile, "branch_depth")
     return _rel("power_law_depth").numeric(contact_radius, profile.c, profile.n, params.E_star, work_of_adhesion)
 
@@ -163,6 +168,7 @@ def normal_force(depth, contact_radius, profile: Profile, params: Parameters):
 
 def branch_normal_force(contact_radius, profile: PowerLaw, params: Parameters, work_of_adhesion: float):
     """Normal force of the adhesive power-law contact of radius ``a`` on its branch (10)."""
+    work_of_adhesion = _check_work(work_of_adhesion)
     profile = _power_law_only(profile, "branch_normal_force")
     return _rel("power_law_branch_normal_force").numeric(contact_radius, profile.c, profile.n, params.E_star,
                                                          work_of_adhesion)
@@ -171,6 +177,7 @@ def branch_normal_force(contact_radius, profile: PowerLaw, params: Parameters, w
 def jump_in_radius(profile: PowerLaw, params: Parameters, work_of_adhesion: float) -> float:
     """Contact radius on first touch, ``d = 0`` on the branch: ``a^(2n−1) = 2π Δγ / (E* (κ c)²)`` (0 without
     adhesion)."""
+    work_of_adhesion = _check_work(work_of_adhesion)
     profile = _power_law_only(profile, "jump_in_radius")
     if work_of_adhesion == 0.0:
         return 0.0
@@ -185,6 +192,7 @@ def jump_off(profile: Profile, params: Parameters, work_of_adhesion: float) -> d
     spring reaches Heß's limit (8) at once, with Kendall's force ``−sqrt(8π a³ E* Δγ)`` (Kendall, J. Phys. D 4
     (1971) 1186), the same under force control.
     """
+    work_of_adhesion = _check_work(work_of_adhesion)
     profile = check_profile(profile)
     if isinstance(profile, FlatPunch):
         args = (profile.radius, params.E_star, work_of_adhesion)
@@ -203,6 +211,7 @@ def jump_off(profile: Profile, params: Parameters, work_of_adhesion: float) -> d
 def pull_off_force(profile: Profile, params: Parameters, work_of_adhesion: float) -> float:
     """The pull-off force under force control (N, <= 0): the minimum of (10) along the branch (the paraboloid:
     JKR's ``−(3/2) π Δγ R``); the flat punch: Kendall's ``−sqrt(8π a³ E* Δγ)``."""
+    work_of_adhesion = _check_work(work_of_adhesion)
     profile = check_profile(profile)
     if isinstance(profile, FlatPunch):
         return jump_off(profile, params, work_of_adhesion)["normal_force"]
@@ -220,6 +229,7 @@ def contact_radius(depth, profile: PowerLaw, params: Parameters, work_of_adhesio
     ``s = √a``, ``κ c s^(2n) − sqrt(2πΔγ/E*) s − d``, increases and is convex above the jump-off (``2n >= 1``):
     :func:`convex_root` from an upper bound.
     """
+    work_of_adhesion = _check_work(work_of_adhesion)
     profile = _power_law_only(profile, "contact_radius")
     depth_arr = np.asarray(depth, dtype=float)
     if work_of_adhesion == 0.0:
@@ -254,24 +264,27 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
     - Flat punch: every spring attaches at first contact at one ``x`` and all reach ``ū = K a`` together:
       ``d = tan α K a`` (onset is full slip), with or without adhesion.
 
-    Depths beyond ``d_max`` are returned as they are (the path turns back before them).
+    Depths beyond ``d_max`` are returned as they are (the path turns back before them); ``α = 90°`` never
+    slides (``+inf``).
     """
     profile = check_profile(profile)
     check_flag("adhesion", adhesion)
-    alpha_arr = np.asarray(alpha, dtype=float)
-    tan_alpha = np.tan(np.deg2rad(alpha_arr))
+    alpha_arr = validate_alpha(alpha)
+    vertical = alpha_arr >= 90.0  # straight down: no tangential shift, never slides (+inf, as (17), (18))
+    tan_alpha = np.tan(np.deg2rad(np.where(vertical, 45.0, alpha_arr)))
     if isinstance(profile, FlatPunch):
-        return _as_output(np.asarray(_rel("flat_punch_d_crit_A").numeric(profile.radius, tan_alpha, params.tau0,
-                                                                         params.G_star), dtype=float), alpha_arr)
+        depth = np.asarray(_rel("flat_punch_d_crit_A").numeric(profile.radius, tan_alpha, params.tau0, params.G_star),
+                           dtype=float)
+        return _as_output(np.where(vertical, np.inf, depth), alpha_arr)
     K = cap_per_radius(params)
     kc = prefactor(profile)
     if not adhesion or params.dgamma0 == 0.0:
         if profile.n == 1.0:
-            return _as_output(np.where(tan_alpha * K < kc, 0.0, np.nan), alpha_arr)
+            return _as_output(np.where(vertical, np.inf, np.where(tan_alpha * K < kc, 0.0, np.nan)), alpha_arr)
         with np.errstate(divide="ignore", invalid="ignore"):
             depth = _rel("power_law_d_crit_A_hertz").numeric(tan_alpha, profile.c, profile.n, params.tau0,
                                                              params.G_star)
-        return _as_output(np.asarray(depth, dtype=float), alpha_arr)
+        return _as_output(np.where(vertical, np.inf, np.asarray(depth, dtype=float)), alpha_arr)
     if profile.n < 1.0:
         raise ValueError(f"PowerLaw.n={profile.n!r} is not allowed for the adhesive slip onset; allowed: n >= 1 "
                          "(below it the onset condition may have several roots)")
@@ -288,7 +301,7 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
         s = convex_root(lambda s: kc * s**power - slope * s - k, lambda s: power * kc * s ** (power - 1.0) - slope,
                         upper, 0.0)
     radius = s * s
-    return _as_output(np.asarray(tan_alpha * K * radius, dtype=float), alpha_arr)
+    return _as_output(np.where(vertical, np.inf, np.asarray(tan_alpha * K * radius, dtype=float)), alpha_arr)
 
 
 def critical_angle_A(profile: Profile, params: Parameters, adhesion: bool = True) -> float:
@@ -323,7 +336,7 @@ def d_crit_B(alpha, profile: Profile, params: Parameters, adhesion: bool = False
     """
     profile = check_profile(profile)
     check_flag("adhesion", adhesion)
-    alpha_arr = np.asarray(alpha, dtype=float)
+    alpha_arr = validate_alpha(alpha)
     tan_alpha = np.tan(np.deg2rad(alpha_arr))
     vertical = alpha_arr >= 90.0
     K = cap_per_radius(params)
@@ -385,7 +398,7 @@ def d_crit_B_indentation(alpha, profile: Profile, params: Parameters, adhesion: 
     """
     profile = check_profile(profile)
     check_flag("adhesion", adhesion)
-    alpha_arr = np.asarray(alpha, dtype=float)
+    alpha_arr = validate_alpha(alpha)
     vertical = alpha_arr >= 90.0
     slope = np.where(vertical, 0.0, np.tan(np.deg2rad(alpha_arr))) * cap_per_radius(params)
     if isinstance(profile, FlatPunch):

@@ -185,3 +185,19 @@ def test_cli_validate_builds_the_path_of_the_power_law(capsys, tmp_path):
     assert np.isfinite(float(report["pull_off_force_exact"]))
     direct = me.validate(run_file, paper, "A", 20.0, profile=flat)
     assert float(report["pull_off_force_exact"]) == float(direct["pull_off_force_exact"])
+
+
+def test_phase_diagram_takes_a_power_law(capsys, tmp_path):
+    """--power-law: the diagram is the power law's (its critical angle), names it, says that R is unused, and its
+    figure does not cite the paraboloid's equation numbers."""
+    status, out, _ = run(capsys, "phase-diagram", "--scenario", "A", "--power-law", "0.1", "1", "--out", str(tmp_path))
+    assert status == 0
+    diagram = me.open_result(tmp_path / "phase_diagram_A.nc")
+    cone = me.PowerLaw.cone(0.1)
+    assert diagram.attrs["profile"] == cone.describe() and diagram.attrs["profile_n"] == 1.0
+    assert float(diagram["critical_angle_jkr"]) == me.power_law.critical_angle_A(cone, me.Parameters.paper())
+    figure = me.plotting.plot_phase_diagram(diagram).figure
+    labels = [line.get_label() for line in figure.axes[0].get_lines()]
+    assert "non-adhesive" in labels and "adhesive (Heß)" in labels and not any("(17)" in label for label in labels)
+    simulation = me.simulate(me.Parameters.paper(), "A", alpha=20.0, method="continuum", samples=11, profile=cone)
+    assert "param_R" in simulation.attrs and "not used" in simulation.attrs["profile_note"]

@@ -361,3 +361,23 @@ def test_exponents_near_one_keep_their_roots(paper, n):
                                                                  rel=1e-11)
     indentation = pl.d_crit_B_indentation([10.0, 30.0], profile, paper, adhesion=True)
     assert np.all(np.isfinite(indentation)) and np.all(indentation > paper.d_max)
+
+
+def test_bad_angles_and_works_of_adhesion_are_named(paper):
+    """As for the paraboloid's functions: angles in [0, 90] (a string or 100° refused), works of adhesion >= 0."""
+    cone = PowerLaw.cone(0.1)
+    with pytest.raises(ValueError, match=r"alpha=100.0 \(degrees\) is not allowed; allowed: finite angles in \[0, 90\]"):
+        pl.d_crit_A(100.0, cone, paper)
+    with pytest.raises(TypeError, match=r"alpha='20'"):
+        pl.d_crit_B("20", cone, paper)
+    with pytest.raises(ValueError, match=r"work_of_adhesion=-0.1 is not allowed; allowed: a finite number >= 0"):
+        pl.pull_off_force(cone, paper, -0.1)
+    with pytest.raises(TypeError, match=r"work_of_adhesion='0.1' \(str\) is not allowed"):
+        pl.contact_radius(1e-4, cone, paper, "0.1")
+
+
+def test_straight_down_never_slides_in_scenario_A(paper):
+    """α = 90°: no tangential shift, +inf for every indenter (the closed forms gave 4e29 m and 3.7e12 m)."""
+    for profile in (PowerLaw.paraboloid(paper.R), PowerLaw(2e3, 3.0), PowerLaw.cone(0.1), FlatPunch(1e-3)):
+        for adhesion in (False, True):
+            assert pl.d_crit_A(90.0, profile, paper, adhesion) == np.inf, (profile, adhesion)
