@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 from mdr_events.validation import check_real
 
-__all__ = ["PowerLaw", "FlatPunch", "Profile"]
+__all__ = ["PowerLaw", "FlatPunch", "Profile", "profile_attrs"]
 
 
 @dataclass(frozen=True)
@@ -55,10 +55,6 @@ class PowerLaw:
         return cls(check_real("slope", slope, "a finite number > 0 (tan of the flank's angle to the surface)",
                               lambda value: value > 0.0), 1.0)
 
-    def height(self, r):
-        """``f(r) = c rⁿ`` (m) at the radial coordinate ``r`` (m, >= 0)."""
-        return self.c * r**self.n
-
     def describe(self) -> str:
         """The profile in words, for a dataset's ``profile`` attribute."""
         return f"power law f = c r^n, c = {self.c!r} m^(1-n), n = {self.n!r}"
@@ -85,3 +81,17 @@ class FlatPunch:
 
 #: Any profile the theory layer takes.
 Profile = PowerLaw | FlatPunch
+
+
+def profile_attrs(profile: Profile | None) -> dict[str, object]:
+    """A result's attributes naming another indenter than the paraboloid: ``profile`` (in words), ``profile_c`` and
+    ``profile_n`` (a power law) or ``profile_radius`` (a flat punch), and ``profile_note`` (``param_R`` is then
+    unused); none for the paraboloid (``None``)."""
+    if profile is None:
+        return {}
+    if isinstance(profile, PowerLaw):
+        kind, shape = "power law", {"profile_c": float(profile.c), "profile_n": float(profile.n)}
+    else:
+        kind, shape = "flat punch", {"profile_radius": float(profile.radius)}
+    return {"profile": profile.describe(), **shape,
+            "profile_note": f"the indenter is this {kind}: param_R (the paraboloid's radius) is not used"}

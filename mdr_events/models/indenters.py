@@ -13,11 +13,11 @@ from collections.abc import Callable
 import numpy as np
 
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, PowerLaw
+from mdr_events.profiles import FlatPunch, PowerLaw, profile_attrs
 from mdr_events.theory import analytic, power_law, symbolic
 
 __all__ = ["MIN_SIMULATED_EXPONENT", "check_simulated_profile", "branch_radius", "jump_off", "spring_profile",
-           "describe", "profile_attrs", "critical_angle"]
+           "profile_attrs", "critical_angle"]
 
 #: The simulators take power laws from the cone on (a profile with ``n < 1`` has an infinite slope at the
 #: centre, where the contact of a non-adhesive indenter starts).
@@ -71,17 +71,3 @@ def critical_angle(params: Parameters, scenario: str, profile: PowerLaw | None =
         return analytic.critical_angle(params, scenario)
     return power_law.critical_angle_A(profile, params) if scenario == "A" else power_law.critical_angle_B(profile,
                                                                                                           params)
-
-
-def profile_attrs(profile: PowerLaw | None) -> dict[str, object]:
-    """A result's attributes naming another indenter than the paraboloid: ``profile`` (in words), ``profile_c``,
-    ``profile_n`` and ``profile_note`` (``param_R`` is then unused); none for the paraboloid (``None``)."""
-    if profile is None:
-        return {}
-    return {"profile": profile.describe(), "profile_c": float(profile.c), "profile_n": float(profile.n),
-            "profile_note": "the indenter is this power law: param_R (the paraboloid's radius) is not used"}
-
-
-def describe(profile: PowerLaw | None) -> str:
-    """The profile in words, for a dataset's ``profile`` attribute."""
-    return "paraboloid f = r^2/(2R) (R of the parameters)" if profile is None else profile.describe()

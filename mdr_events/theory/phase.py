@@ -9,7 +9,7 @@ import xarray as xr
 
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import PowerLaw, Profile
+from mdr_events.profiles import Profile, profile_attrs
 from mdr_events.theory import analytic, power_law
 from mdr_events.validation import check_choice, validate_alpha
 
@@ -133,8 +133,5 @@ def _profile_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str
     for key, _, words in kinds:
         variables[f"critical_angle_{key}"] = ((), angle[key], {"units": "degree",
                                                                "long_name": f"critical angle, {words} ({meaning})"})
-    shape = {"profile": profile.describe()}
-    if isinstance(profile, PowerLaw):
-        shape.update(profile_c=float(profile.c), profile_n=float(profile.n))
     return stamp(xr.Dataset(variables, coords=coords), params, scenario=scenario, content=PHASE_DIAGRAM_CONTENT,
-                 **shape)
+                 **profile_attrs(profile))
