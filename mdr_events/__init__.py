@@ -7,10 +7,11 @@ an angle, with Heß's adhesion rule (two works of adhesion) and a
 spring-slip criterion.
 
 Layers, bottom to top (a module imports only from its own layer or those
-below; ``tests/test_layers.py`` checks it): ``parameters``, ``profiles`` and ``validation``
+below; ``tests/test_layers.py`` checks it): ``parameters``, ``profiles``, ``friction`` and ``validation``
 → ``io`` (``datasets``: stamp, result schemas, comparison; ``files``: netCDF
 in and out) → ``theory`` (``symbolic`` SymPy derivations, ``analytic`` closed
-forms, ``power_law`` those of other indenters, ``phase`` diagrams) → ``models`` (``paths``, ``discrete`` springs,
+forms, ``power_law`` those of other indenters, ``mindlin`` tangential loading at a constant depth, ``phase``
+diagrams) → ``models`` (``paths``, ``discrete`` springs,
 ``continuum`` event-driven and exact, ``simulate``) → ``analysis``
 (``crosscheck``, ``convergence``, ``validate``, ``fit``, ``sweep``) → ``plotting`` → ``app`` (``cli``,
 ``study``, ``report``, ``result_files``).
@@ -19,10 +20,11 @@ forms, ``power_law`` those of other indenters, ``phase`` diagrams) → ``models`
 from mdr_events._version import __version__
 from mdr_events.parameters import Parameters
 from mdr_events.profiles import FlatPunch, PowerLaw
+from mdr_events.friction import FRICTION_LAWS, FrictionLaw
 from mdr_events.limits import Limits, ResourceLimitError
 from mdr_events.io.datasets import DOI
 from mdr_events.io.files import open_result, write_netcdf
-from mdr_events.theory import analytic, power_law, symbolic
+from mdr_events.theory import analytic, mindlin, power_law, symbolic
 from mdr_events.theory.analytic import (
     critical_angle,
     critical_shift,
@@ -56,12 +58,15 @@ __all__ = [
     "DOI",
     "FitResult",
     "FlatPunch",
+    "FrictionLaw",
+    "FRICTION_LAWS",
     "Parameters",
     "PowerLaw",
     "Path",
     "Tolerances",
     "analytic",
     "power_law",
+    "mindlin",
     "continuum",
     "critical_angle",
     "critical_shift",

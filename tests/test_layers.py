@@ -21,7 +21,7 @@ PACKAGE = Path(mdr_events.__file__).resolve().parent
 
 #: Layers from the bottom: the first component(s) of a module's name under mdr_events -> its layer.
 LAYERS = ("foundation", "io", "theory", "models", "analysis", "plotting", "app", "package")
-FOUNDATION_MODULES = ("parameters", "profiles", "validation", "limits", "_version")
+FOUNDATION_MODULES = ("parameters", "profiles", "friction", "validation", "limits", "_version")
 EXEMPT_IMPORTERS = ("mdr_events", "mdr_events._version")
 
 

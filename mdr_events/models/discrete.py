@@ -68,6 +68,8 @@ from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from mdr_events.models import indenters
 from mdr_events.profiles import PowerLaw
+from mdr_events.friction import TAU0, FrictionLaw, as_friction_law
+from mdr_events.theory import mindlin
 
 __all__ = ["run_discrete", "paraboloid_profile", "MIN_SPRINGS_IN_CONTACT"]
 
@@ -366,8 +368,11 @@ class _Grid:
     """What every case of a run shares: the springs' thresholds, the caps ``ū(m Δx)`` and the integer
     scale of the positions (:class:`_Springs`: units of ``2**-bits`` m)."""
 
-    def __init__(self, attach: _Threshold, detach: _Threshold, first_touch: float, caps: np.ndarray, bits: int):
+    def __init__(self, attach: _Threshold, detach: _Threshold, first_touch: float, caps: np.ndarray, bits: int,
+                 g: np.ndarray | None = None, coulomb: float = 0.0):
         self.attach, self.detach = attach, detach
+        #: Coulomb's part of the caps, ``κ max(d − g(x_j), 0)`` with ``κ = μ E*/G*`` (0: the caps are ``caps``)
+        self.g, self.coulomb = g, float(coulomb)
         self.first_touch = float(first_touch)
         self.attach_threshold = attach.threshold.tolist()
         self.detach_threshold = detach.threshold.tolist()
@@ -467,7 +472,9 @@ def _run_case_per_spring(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.nda
     """The rules stepped spring by spring, as stated (module docstring): the reference of :func:`_run_case`.
 
     Same arguments and outputs; every spring's shift is a float moved by each step and clipped,
-    and ``Σ u`` a plain sum: O(springs) numpy work per step, where :func:`_run_case` is O(1).
+    and ``Σ u`` a plain sum: O(springs) numpy work per step, where :func:`_run_case` is O(1). It also
+    runs the friction laws with Coulomb's part (``grid.coulomb > 0``), whose caps differ from spring to
+    spring: ``ū_j = ū(m Δx) + κ max(d − g(x_j), 0)``; a spring whose cap is 0 slides.
     """
     shift = np.zeros(grid.n_springs)
     m = int(grid.attach.count(d[:1])[0]) if d[0] >= grid.first_touch else 0
@@ -488,11 +495,16 @@ def _run_case_per_spring(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.nda
         shift[:kept] += x[k] - x[k - 1]
         shift[kept:] = 0.0  # detached springs forget their shift, new ones attach with none
         cap = grid.caps[m_new]
+        if grid.coulomb > 0.0:
+            cap = cap + grid.coulomb * np.maximum(d[k] - grid.g[:m_new], 0.0)
         in_contact = shift[:m_new]
         np.minimum(in_contact, cap, out=in_contact)
         np.maximum(in_contact, -cap, out=in_contact)
         counts[k], sums[k] = m_new, in_contact.sum()
-        sliding[k] = np.count_nonzero(np.abs(in_contact) >= cap) if cap > 0.0 else m_new
+        if grid.coulomb > 0.0:
+            sliding[k] = np.count_nonzero((np.abs(in_contact) >= cap) | ~(cap > 0.0))
+        else:
+            sliding[k] = np.count_nonzero(np.abs(in_contact) >= cap) if cap > 0.0 else m_new
         if m and not m_new and last_entry <= time[k - 1]:
             last = k
         m = m_new
@@ -513,7 +525,7 @@ class _Setup(NamedTuple):
 
 
 def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
-             profile: Callable[[np.ndarray], np.ndarray]) -> _Setup:
+             profile: Callable[[np.ndarray], np.ndarray], friction: FrictionLaw = TAU0) -> _Setup:
     """The time grid, every case's samples and the springs of :func:`run_discrete`."""
     starts, durations, n_time = _time_grid_size(paths, dt)
     # the last entry into the elastomer, in time from first contact (0 for a path with one entry)
@@ -531,9 +543,10 @@ def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
     g_prefix = np.concatenate([[0.0], np.cumsum(g)])
     attach = _Threshold(g, xi, params, params.dgamma0)
     detach = _Threshold(g, xi, params, params.dgamma1)
-    shift_per_radius = float(analytic.critical_shift(1.0, params))  # ū is linear in a
+    # ū is linear in a (13); a law without τ0's part has none
+    shift_per_radius = float(analytic.critical_shift(1.0, params)) if friction.uses_tau0 else 0.0
     caps = (shift_per_radius * dx) * np.arange(n_springs + 1)  # ū(m Δx) for m springs per side
-    grid = _Grid(attach, detach, g[0], caps, _scale_bits(x_path, caps))
+    grid = _Grid(attach, detach, g[0], caps, _scale_bits(x_path, caps), g, mindlin.coulomb_cap_ratio(friction, params))
     return _Setup(time, x_path, d_path, last_sample, last_entries, grid, g_prefix)
 
 
@@ -570,6 +583,7 @@ def run_discrete(
     dt: float,
     profile: PowerLaw | Callable[[np.ndarray], np.ndarray] | None = None,
     limits: Limits = DEFAULT_LIMITS,
+    friction: FrictionLaw | str | None = None,
 ) -> dict[str, np.ndarray]:
     """Run the spring model for several paths on a common time grid.
 
@@ -588,6 +602,10 @@ def run_discrete(
         (vectorised); default the paraboloid (4).
     limits : Limits, optional
         Refuse, before allocating, a run whose steps, springs or memory exceed them (:func:`check_discrete_size`).
+    friction : FrictionLaw or str, optional
+        The cap on the springs' shifts (:mod:`mdr_events.friction`); default the paper's ``"tau0"``. A law with
+        Coulomb's part gives every spring its own cap and is stepped spring by spring
+        (:func:`_run_case_per_spring`).
 
     Returns
     -------
@@ -599,15 +617,18 @@ def run_discrete(
         ``contact_radius``, ``sliding_fraction``, ``springs_in_contact``.
     """
     indenter = indenters.check_simulated_profile(profile) if not callable(profile) else None
+    friction = as_friction_law(friction)
     check_discrete_size(params, paths, dx, dt, limits, indenter)
-    run = _prepare(params, paths, dx, dt, profile if callable(profile) else indenters.spring_profile(params, indenter))
+    run = _prepare(params, paths, dx, dt, profile if callable(profile) else indenters.spring_profile(params, indenter),
+                   friction)
+    step_case = _run_case_per_spring if run.grid.coulomb > 0.0 else _run_case
     time, x_path, d_path, last_sample = run.time, run.x, run.d, run.last_sample.copy()
     n_cases, n_time = len(paths), time.size
     out_m = np.zeros((n_cases, n_time), dtype=np.int64)
     out_sum = np.zeros((n_cases, n_time))
     out_sliding = np.zeros((n_cases, n_time), dtype=np.int64)
     for case in range(n_cases):
-        last_sample[case] = _run_case(run.grid, x_path[:, case], d_path[:, case], time, int(last_sample[case]),
+        last_sample[case] = step_case(run.grid, x_path[:, case], d_path[:, case], time, int(last_sample[case]),
                                       float(run.last_entries[case]), out_m[case], out_sum[case], out_sliding[case])
 
     valid = np.arange(n_time)[None, :] <= last_sample[:, None]

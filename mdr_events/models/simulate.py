@@ -16,6 +16,8 @@ from mdr_events.models.paths import Path
 from mdr_events.models import indenters
 from mdr_events.parameters import Parameters
 from mdr_events.profiles import PowerLaw
+from mdr_events.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
+from mdr_events.models.continuum.caps import check_supported
 from mdr_events.theory import analytic
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.validation import check_choice, check_count, check_real, real_array, shown, validate_alpha
@@ -283,6 +285,7 @@ def simulate(
     tolerances: Tolerances | None = None,
     limits: Limits | None = None,
     profile: PowerLaw | None = None,
+    friction: FrictionLaw | str | None = None,
 ) -> xr.Dataset:
     """Simulate indentation and detachment along straight paths.
 
@@ -327,6 +330,11 @@ def simulate(
         cone is ``n = 1``); default ``None``, the paper's paraboloid of ``params.R`` (then ``R`` is the
         only use of the indenter's shape). Both methods take it; the dataset then has the attribute
         ``profile`` saying which (absent: the paraboloid).
+    friction : FrictionLaw or str, optional
+        The cap on the springs' shifts (:mod:`mdr_events.friction`): default the paper's ``"tau0"``;
+        ``FrictionLaw("coulomb", mu=0.3)`` or ``FrictionLaw("tau0+coulomb", mu=0.3)``. The discrete method takes
+        every law; the continuum takes Coulomb's part for a contact without adhesion (``dgamma0 = dgamma1 = 0``).
+        The dataset then has the attributes ``friction_law``, ``friction_mu`` and ``friction_cap``.
 
     Returns
     -------
@@ -351,14 +359,17 @@ def simulate(
     elif not isinstance(limits, Limits):
         raise TypeError(f"limits={shown(limits)} is not allowed; allowed: a mdr_events.Limits")
     profile = indenters.check_simulated_profile(profile)
+    friction = as_friction_law(friction)
+    if method == "continuum":
+        check_supported(friction, params)
     cases = simulation_cases(params, scenario, alpha, profile)
-    shape = indenters.profile_attrs(profile)
+    shape = {**indenters.profile_attrs(profile), **friction_attrs(friction)}
     if method == "continuum":
         for name, value in (("dx", dx), ("dt", dt), ("n_steps", n_steps)):
             if value is not None:
                 raise ValueError(f"{name} is not allowed with method='continuum' (it has no springs or time "
                                  "step); allowed: t, samples, tolerances")
-        return _simulate_continuum(params, scenario, cases, t, samples, tolerances, limits, profile)
+        return _simulate_continuum(params, scenario, cases, t, samples, tolerances, limits, profile, friction)
     dx = DEFAULT_DX if dx is None else dx
     for name, value in (("t", t), ("samples", samples), ("tolerances", tolerances)):
         if value is not None:
@@ -369,7 +380,7 @@ def simulate(
     dx = check_spacing(params, dx, depth=min(params.d_max, max(path.max_depth for path in paths)), profile=profile)
     step = _time_step(paths, dt, n_steps)
     check_time_step(paths, step, dt, n_steps)
-    raw = run_discrete(params, paths, dx, step, profile=profile, limits=limits)
+    raw = run_discrete(params, paths, dx, step, profile=profile, limits=limits, friction=friction)
     attrs = dict(method=method, scenario=_scenario_name(scenario, cases), dx=float(dx), dt=step,
                  spring_count_per_side=int(raw["spring_count"]),
                  content=SIMULATION_CONTENT, **shape)
@@ -382,7 +393,7 @@ def _scenario_name(scenario, cases: Cases) -> str:
 
 
 def _simulate_continuum(params: Parameters, scenario, cases: Cases, t, samples, tolerances,
-                        limits: Limits, profile: PowerLaw | None = None) -> xr.Dataset:
+                        limits: Limits, profile: PowerLaw | None = None, friction: FrictionLaw = TAU0) -> xr.Dataset:
     samples = DEFAULT_SAMPLES if samples is None else check_count("samples", samples, 2)
     if tolerances is None:
         tolerances = Tolerances()
@@ -396,10 +407,10 @@ def _simulate_continuum(params: Parameters, scenario, cases: Cases, t, samples, 
             raise ValueError(f"t={shown(t)} is not allowed; allowed: a non-empty, strictly "
                              "increasing 1-D grid of finite times >= 0 (s)")
     raw = run_continuum(params, cases.paths, times, samples=samples, tolerances=tolerances, limits=limits,
-                        profile=profile)
+                        profile=profile, friction=friction)
     attrs = dict(method="continuum", scenario=_scenario_name(scenario, cases),
                  rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
-                 content=SIMULATION_CONTENT, **indenters.profile_attrs(profile))
+                 content=SIMULATION_CONTENT, **indenters.profile_attrs(profile), **friction_attrs(friction))
     dataset = simulation_dataset(params, cases, raw["time"], raw, **attrs)
     extrema = [solution_extrema(solution) for solution in raw["solutions"]]
     dataset = dataset.merge(event_log(raw["events"], cases.dimension)).merge(extrema_dataset(extrema, cases.dimension))

@@ -46,6 +46,8 @@ __all__ = [
     "abel_transform",
     "derive_power_law_model",
     "POWER_LAW_KEYS",
+    "derive_friction_model",
+    "FRICTION_KEYS",
     "SYMBOLS",
 ]
 
@@ -80,12 +82,15 @@ tau = sp.Symbol("tau", real=True)
 k = sp.Symbol("k", positive=True)
 X = sp.Symbol("X", positive=True)
 W = sp.Symbol("W", positive=True)
+mu = sp.Symbol("mu", positive=True)
+u_x = sp.Symbol("u_x", positive=True)
+F_x = sp.Symbol("F_x", real=True)
 
 #: Every symbol by its name, for users building their own expressions.
 SYMBOLS: dict[str, sp.Symbol] = {
     sym.name: sym
     for sym in (x, r, R, E_star, G_star, tau0, dgamma, d, d_max, a, s, alpha,
-                tan_alpha, u_bar, dx, c, n, theta, k, X, W)
+                tan_alpha, u_bar, dx, c, n, theta, k, X, W, mu, u_x)
 }
 
 #: Pretty LaTeX names (``sympy.latex(..., symbol_names=LATEX_NAMES)``).
@@ -98,6 +103,7 @@ LATEX_NAMES: dict[sp.Symbol, str] = {
     u_bar: r"\bar{u}",
     dx: r"\Delta x",
     tan_alpha: r"\tan\alpha",
+    u_x: r"u_{x}",
     dl_max: r"\Delta l_{\max}",
 }
 
@@ -562,6 +568,58 @@ def power_law_model_afresh() -> dict[str, Relation]:
     return out
 
 
+#: Keys of the friction-law relations (:func:`derive_friction_model`).
+FRICTION_KEYS = ("coulomb_critical_shift", "cattaneo_mindlin_stick_radius", "cattaneo_mindlin_force",
+                 "cattaneo_mindlin_full_slip_shift")
+
+
+@functools.cache
+def derive_friction_model() -> dict[str, Relation]:
+    """The local Coulomb law of the MDR springs and the Cattaneo–Mindlin solution it gives.
+
+    A spring of width ``Δx`` holds the tangential force ``G* Δx u`` up to ``μ`` times its normal force
+    ``E* Δx u_z``: its cap is ``ū = μ (E*/G*) u_z`` (Popov & Heß 2015, ch. 5). Under a constant depth ``d``
+    of a non-adhesive power-law indenter, a tangential shift ``u_x`` of the indenter from rest leaves the
+    springs with ``μ (E*/G*) (d − g(ξ)) > u_x`` sticking: the stick radius ``c`` has ``g(c) = d − u_x G*/(μ E*)``,
+    and ``F_x = 2G* (u_x c + ∫_c^a μ (E*/G*)(d − g) dξ)``. The derivation checks that this is
+    ``μ (F_N(d) − F_N(d − u_x G*/(μ E*)))`` (Cattaneo 1938, Mindlin 1949; for any profile, Jäger 1998 and
+    Ciavarella 1998): the tangential curve is the normal one, shifted and scaled.
+    """
+    return {rel.key: rel for rel in _cached("friction_model", lambda: list(friction_model_afresh().values()))}
+
+
+def friction_model_afresh() -> dict[str, Relation]:
+    """The derivation of :func:`derive_friction_model` with SymPy (about 15 s), bypassing any cache."""
+    out: dict[str, Relation] = {}
+
+    def add(rel: Relation) -> None:
+        out[rel.key] = rel
+
+    # the spring slides once its tangential force reaches μ times its normal force
+    cap = sp.solve(sp.Eq(G_star * dx * u_bar, mu * E_star * dx * u_z), u_bar)[0]
+    add(Relation("coulomb_critical_shift", "(13)", "Coulomb's critical spring shift: mu (E*/G*) times the "
+                 "spring's compression", u_bar, cap, (u_z, mu, E_star, G_star)))
+    model = derive_power_law_model()
+    hertz_radius = model["power_law_hertz_radius"].rhs  # a(d) of the non-adhesive power law
+    normal_force = model["power_law_normal_force"].rhs.subs(a, hertz_radius)  # F_N(d)
+    lowered = d - u_x / cap.subs(u_z, 1)  # the depth whose radius is the stick radius
+    stick = hertz_radius.subs(d, lowered)
+    profile = derive_power_law().rhs
+    force = 2 * G_star * (u_x * stick + cap.subs(u_z, 1) * sp.integrate(d - profile, (x, stick, hertz_radius)))
+    jager_ciavarella = mu * (normal_force - normal_force.subs(d, lowered))
+    if sp.simplify(sp.expand(force - jager_ciavarella)) != 0:
+        raise RuntimeError("the Cattaneo-Mindlin force of the springs is not mu (F_N(d) - F_N(d - u_x/kappa))")
+    arguments = (u_x, d, mu, c, n, E_star, G_star)
+    add(Relation("cattaneo_mindlin_stick_radius", "", "stick radius of a power-law contact at depth d shifted "
+                 "by u_x (Coulomb's law, from rest)", a, stick, arguments))
+    add(Relation("cattaneo_mindlin_force", "", "tangential force of a power-law contact at depth d shifted by u_x "
+                 "from rest (Cattaneo-Mindlin), u_x below full slip", F_x, jager_ciavarella, arguments))
+    add(Relation("cattaneo_mindlin_full_slip_shift", "", "tangential shift at which the whole contact slides "
+                 "(Coulomb's law, from rest): the centre's cap", u_x, sp.solve(sp.Eq(lowered, 0), u_x)[0],
+                 (d, mu, E_star, G_star)))
+    return out
+
+
 def _reduce_to_polynomial(depth_a: sp.Expr, depth_b: sp.Expr, divide_by: sp.Expr | None = None) -> sp.Expr:
     """Eliminate ``d`` from ``d = depth_a(a)`` and ``d = depth_b(a)``.
 
@@ -605,6 +663,7 @@ def relations() -> dict[str, Relation]:
     ordered = {"abel_transform": model["abel_transform"], power_law.key: power_law}
     ordered.update(model)
     ordered.update(derive_power_law_model())
+    ordered.update(derive_friction_model())
     return ordered
 
 
@@ -614,9 +673,11 @@ def relation(key: str) -> Relation:
         return derive_power_law()
     if key in POWER_LAW_KEYS:
         return derive_power_law_model()[key]
+    if key in FRICTION_KEYS:
+        return derive_friction_model()[key]
     rels = derive()
     try:
         return rels[key]
     except KeyError:
-        known = sorted([*rels, "profile_power_law", *POWER_LAW_KEYS])
+        known = sorted([*rels, "profile_power_law", *POWER_LAW_KEYS, *FRICTION_KEYS])
         raise KeyError(f"unknown relation {key!r}; known: {known}") from None

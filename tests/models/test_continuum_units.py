@@ -12,6 +12,7 @@ from mdr_events.models.continuum import (NO_ZONE, ZONE_EVENTS, AnchorMap, Branch
                                          EventKind, Piece, Regime, Segment, Slip, Tolerances, ZoneSummary, kinematics,
                                          lay_out_zones, plan_span, zone_events)
 from mdr_events.models.continuum.branch import FOLD_SHARE
+from mdr_events.models.continuum.caps import Caps
 from mdr_events.models.continuum.plan import Action
 
 RTOL = 1e-14
@@ -146,11 +147,11 @@ def test_algebraic_force_of_a_uniform_field(model):
     """Springs all anchored at x0: F_x = 2G* a (x − x0) while it sticks, ±τ0 π a² once |x − x0| >= ū(a)."""
     anchors = AnchorMap(model.grow, RTOL, [Piece(0.0, 3e-3, 1e-6)])
     a, G, K = 3e-3, model.params.G_star, model.K
-    assert anchors.tangential_force(K, G, 1e-6 + 0.5 * K * a, a) == pytest.approx(2 * G * a * 0.5 * K * a, rel=1e-12)
-    full = anchors.tangential_force(K, G, 1e-6 + 2 * K * a, a)
+    assert anchors.tangential_force(Caps(K, 0.0), G, 1e-6 + 0.5 * K * a, a) == pytest.approx(2 * G * a * 0.5 * K * a, rel=1e-12)
+    full = anchors.tangential_force(Caps(K, 0.0), G, 1e-6 + 2 * K * a, a)
     assert full == pytest.approx(model.params.tau0 * math.pi * a**2, rel=1e-12)
-    assert anchors.tangential_force(K, G, 1e-6 - 2 * K * a, a) == pytest.approx(-full, rel=1e-12)
-    assert anchors.tangential_force(K, G, 1.0, 0.0) == 0.0
+    assert anchors.tangential_force(Caps(K, 0.0), G, 1e-6 - 2 * K * a, a) == pytest.approx(-full, rel=1e-12)
+    assert anchors.tangential_force(Caps(K, 0.0), G, 1.0, 0.0) == 0.0
 
 
 @pytest.mark.parametrize("offset_per_cap", [1e6, 1e9])
@@ -161,7 +162,7 @@ def test_a_full_slip_far_from_the_origin_keeps_its_digits(model, offset_per_cap)
     x0 = offset_per_cap * K * a
     uniform = AnchorMap(model.grow, RTOL, [Piece(0.0, a, x0)])
     for sign in (1.0, -1.0):
-        force = uniform.tangential_force(K, G, x0 + sign * 3 * K * a, a)
+        force = uniform.tangential_force(Caps(K, 0.0), G, x0 + sign * 3 * K * a, a)
         assert force == pytest.approx(sign * model.params.tau0 * math.pi * a**2, rel=8 * EPS)
 
 
@@ -178,14 +179,14 @@ def test_a_zone_layout_starts_at_the_exact_size_and_ends_at_its_target(anchors, 
     a = 3.8e-3
     top = anchors.value(3e-3)
     level = share * top
-    zones = lay_out_zones(anchors, model.K, _resting_at(level + model.K * a), 0.0, a, {cap: True for cap in Cap}, model.grow.depth_term)
+    zones = lay_out_zones(anchors, model.caps, _resting_at(level + model.K * a), 0.0, a, {cap: True for cap in Cap}, model.grow.depth_term)
     positive = zones[Cap.POSITIVE]
     assert positive.size(level, a) == pytest.approx(anchors.zone_size(Cap.POSITIVE, level, a), rel=1e-12)
     # the rising piece's front reaches its end (top), or the falling piece starts to slide at its edge value
     assert positive.target(a) == pytest.approx(min(top, anchors.value(a)) if level < anchors.value(a) else top,
                                                rel=1e-12)
     assert positive.summary(a).slip is Slip.PARTIAL and positive.summary(a).centre
-    resting = lay_out_zones(anchors, model.K, _resting_at(level + model.K * a), 0.0, a, {cap: False for cap in Cap}, model.grow.depth_term)
+    resting = lay_out_zones(anchors, model.caps, _resting_at(level + model.K * a), 0.0, a, {cap: False for cap in Cap}, model.grow.depth_term)
     assert resting[Cap.POSITIVE].size(level, a) == 0.0 and resting[Cap.POSITIVE].summary(a) == NO_ZONE
     assert resting[Cap.POSITIVE].target(a) == 0.0  # the lowest anchor: slip onset
 
@@ -275,7 +276,7 @@ def test_plan_drop_onto_the_smaller_branch_and_jump_back_in(paper):
     up = segment_of(params, [(0, 3e-4), (0, 2e-4)])
     state = state_in_contact(model, a_max)
     x_slid = 0.5 * model.K * a_max
-    state.force = state.anchors.tangential_force(model.K, params.G_star, x_slid, a_max)
+    state.force = state.anchors.tangential_force(model.caps, params.G_star, x_slid, a_max)
     drop = plan_span(model, state, up)
     assert drop.regime is Regime.SHRINKING and drop.entry_events == (EventKind.DETACHMENT_STARTS,)
     assert drop.radius == pytest.approx(model.shrink.radius(3e-4, RTOL), rel=1e-15) and drop.radius < a_max

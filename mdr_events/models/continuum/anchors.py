@@ -16,13 +16,18 @@ a union of intervals, found piece by piece.
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from .branch import Branch
 from .state import Cap
+
+if TYPE_CHECKING:
+    from .caps import Caps
 
 
 @dataclass(frozen=True)
@@ -165,7 +170,9 @@ class AnchorMap:
             if p.constant:
                 parts = [Piece(p.start, end, min(max(p.x0, lower), upper))]
             else:
-                cuts = sorted(min(max(self.inverse(p, bound), p.start), end) for bound in (lower, upper))
+                # an infinite bound (a one-sided clip) cuts nothing: its cut at the start makes an empty part
+                cuts = sorted(min(max(self.inverse(p, bound), p.start), end) if math.isfinite(bound) else p.start
+                              for bound in (lower, upper))
                 edges = [p.start, cuts[0], cuts[1], end]
                 parts = []
                 for lo, hi in zip(edges[:-1], edges[1:]):
@@ -181,6 +188,34 @@ class AnchorMap:
                 else:
                     clipped.append(part)
         self.pieces, self._shared = clipped, 0
+
+    def clip_caps(self, x: float, caps: "Caps", depth: float, radius: float) -> None:
+        """Materialise the play operator of every spring: ``Y ← clip(Y, x − ū(ξ), x + ū(ξ))`` on ``[0, radius]``
+        with the friction law's caps ``ū(ξ) = K a + κ (d − g(ξ))`` (:class:`~.caps.Caps`): :meth:`clip` for
+        ``κ = 0``, else a one-sided clip per cap in the coordinates the cap sees (:meth:`seen_by`)."""
+        shift = caps.centre_shift(radius, depth)
+        if caps.kappa == 0.0:
+            self.clip(x - shift, x + shift, radius)
+            return
+        for cap, lower, upper in ((Cap.POSITIVE, x - shift, math.inf), (Cap.NEGATIVE, -math.inf, x + shift)):
+            seen = self.seen_by(cap, caps.kappa)
+            seen.clip(lower, upper, radius)
+            self.pieces, self._shared = seen.seen_by(cap, -caps.kappa).pieces, 0
+
+    def seen_by(self, cap: Cap, kappa: float) -> "AnchorMap":
+        """The anchors as ``cap`` compares them with its level under Coulomb's caps: ``Z = Y − cap κ g(ξ)``
+        (this map itself for ``κ = 0``).
+
+        A spring is at the cap where ``cap (x − Y) >= K a + κ (d − g)``, i.e. ``cap Z <= cap (x − cap (K a + κ d))``:
+        a level the same for every spring, as with ``τ0`` alone. Without adhesion springs attach along
+        ``d0 = g``, so a piece ``x0 + r (g − d_ref)`` is seen as ``x0 − cap κ d_ref + (r − cap κ)(g − d_ref)``: a
+        piece of the same kind, monotone in ``ξ``.
+        """
+        if kappa == 0.0:
+            return self
+        shift = float(cap) * kappa
+        seen = [Piece(p.start, p.end, p.x0 - shift * p.d_ref, p.ratio - shift, p.d_ref) for p in self.pieces]
+        return AnchorMap(self.attach, self.rtol, seen)
 
     # --- values ---------------------------------------------------------------------------------
     def in_contact(self, radius: float) -> list[Piece]:
@@ -286,10 +321,58 @@ class AnchorMap:
             total += start_shift * (first - p.start) + inside - start_shift * (end - second)
         return total
 
-    def tangential_force(self, K: float, G_star: float, x: float, a: float) -> float:
-        """``F_x = 2G* ∫_0^a clip(x − Y, −ū, ū) dξ`` with ``ū = K a``: the force of this map with the
-        window at ``x``, without integration (0 out of contact)."""
+    def coulomb_shift_integral(self, x: float, caps: "Caps", depth: float, radius: float) -> float:
+        """``∫_0^a clip(x − Y(ξ), −ū(ξ), ū(ξ)) dξ`` with the caps ``ū(ξ) = K a + κ (d − g(ξ))``, ``κ > 0``.
+
+        On each (monotone) piece the springs at the positive cap (``Z₊ <= L₊`` as :meth:`seen_by` it) lie at one
+        end, those at the negative cap at the other, and they give their caps exactly, ``∫ (K a + κ (d − g))``;
+        the springs between give ``x − Y``.
+        """
+        shift = caps.centre_shift(radius, depth)
+        sides = [(float(cap), self.seen_by(cap, caps.kappa), x - float(cap) * shift) for cap in Cap]
+        cap_per_length = caps.K * radius + caps.kappa * depth
+
+        def cap_integral(lower: float, upper: float) -> float:
+            if upper <= lower:
+                return 0.0
+            return cap_per_length * (upper - lower) - caps.kappa * (self.attach.integral(upper) - self.attach.integral(lower))
+
+        total = 0.0
+        for index, p in enumerate(self.in_contact(radius)):
+            end = min(p.end, radius)
+            if end <= p.start:
+                continue
+            inner, outer = p.start, end  # the springs between the caps lie in [inner, outer]
+            for sign, seen, level in sides:
+                q = seen.pieces[index]
+                values = sign * seen.piece_value(q, p.start), sign * seen.piece_value(q, end)
+                if q.constant:
+                    at_cap = (p.start, end) if values[0] <= sign * level else (p.start, p.start)
+                else:
+                    cut = min(max(seen.inverse(q, level), p.start), end)
+                    # the springs at the cap are on the side where sign Z is lower
+                    at_cap = (p.start, cut) if values[0] <= values[1] else (cut, end)
+                    if not min(values) <= sign * level:
+                        at_cap = (p.start, p.start)
+                    elif max(values) <= sign * level:
+                        at_cap = (p.start, end)
+                total += sign * cap_integral(*at_cap)
+                if at_cap[1] > at_cap[0]:
+                    if at_cap[0] <= p.start:
+                        inner = max(inner, at_cap[1])
+                    else:
+                        outer = min(outer, at_cap[0])
+            if outer > inner:
+                total += x * (outer - inner) - self.integral(p, inner, outer)
+        return total
+
+    def tangential_force(self, caps: "Caps", G_star: float, x: float, a: float, depth: float = 0.0) -> float:
+        """``F_x = 2G* ∫_0^a clip(x − Y, −ū, ū) dξ`` with the caps of ``caps`` (``ū = K a`` for ``τ0`` alone, then
+        ``depth`` is not used): the force of this map with the window at ``x``, without integration (0 out of
+        contact)."""
         if not a > 0 or not self.pieces:
             return 0.0
-        return 2.0 * G_star * self.clipped_shift_integral(x, K * a, a)
+        if caps.kappa == 0.0:
+            return 2.0 * G_star * self.clipped_shift_integral(x, caps.K * a, a)
+        return 2.0 * G_star * self.coulomb_shift_integral(x, caps, depth, a)
 

@@ -8,11 +8,13 @@ from typing import NamedTuple
 
 import numpy as np
 
-from mdr_events.theory import analytic, power_law, symbolic
+from mdr_events.theory import analytic, power_law
+from mdr_events.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
 from mdr_events.profiles import PowerLaw
 from mdr_events.models.paths import Path
 from .branch import Branch, make_branch
+from .caps import caps_of, check_supported
 from .state import Regime
 from .tolerances import NEGLIGIBLE_SHARE, PIECE_SHARE, SEGMENT_RESOLUTION, Tolerances
 
@@ -26,17 +28,25 @@ class ContinuumModel:
         The ``Δγ0`` (attach) and ``Δγ1`` (detach) branches of (9).
     profile : PowerLaw or None
         The indenter (``None``: the paper's paraboloid of ``params.R``).
+    friction : FrictionLaw
+        The cap on the springs' shifts (:mod:`mdr_events.friction`).
+    caps : Caps
+        Its two parts, ``ū(ξ) = K a + κ (d − g(ξ))``.
     K : float
-        Critical shift per contact radius, ``ū(a) = K a`` (13).
+        Critical shift per contact radius of ``τ0``'s part, ``ū(a) = K a`` (13) (0 for ``"coulomb"``).
     """
 
-    def __init__(self, params: Parameters, tolerances: Tolerances, profile: PowerLaw | None = None):
+    def __init__(self, params: Parameters, tolerances: Tolerances, profile: PowerLaw | None = None,
+                 friction: FrictionLaw = TAU0):
+        check_supported(friction, params)
         self.params = params
         self.tolerances = tolerances
         self.profile = profile
+        self.friction = friction
         self.grow = make_branch(params, params.dgamma0, profile)
         self.shrink = make_branch(params, params.dgamma1, profile)
-        self.K = float(symbolic.relation("critical_shift").numeric(1.0, params.tau0, params.G_star))
+        self.caps = caps_of(friction, params)
+        self.K = self.caps.K
 
     def normal_force(self, depth, radius):
         """``F_N`` (10) of the springs in ``|x| < a`` at depth ``d``, vectorised, for the model's profile."""
@@ -111,7 +121,7 @@ class Resolution(NamedTuple):
     #: the tangential travel (m): the path's tangential length, or on a segment in the elastomer that
     #: changes the depth ``|v_x / v_d| a²/R``, whichever is larger
     travel: float
-    #: the critical shift ``ū = K a`` (m) of the largest contact (at the path's deepest point)
+    #: the critical shift of the centre, ``ū = K a + κ d`` (m), of the largest contact (at the path's deepest point)
     cap: float
 
     @property
@@ -132,7 +142,7 @@ def resolution(model: ContinuumModel, path: Path, segments: list[Segment]) -> Re
     for segment in segments:
         if segment.vd != 0.0 and max(segment.ds, segment.d(segment.t1)) > 0.0:
             travel = max(travel, abs(segment.vx / segment.vd) * model.grow.depth_term(radius))
-    return Resolution(travel, model.K * radius)
+    return Resolution(travel, model.caps.centre_shift(radius, max(path.max_depth, 0.0)))
 
 
 def check_resolvable(model: ContinuumModel, path: Path, segments: list[Segment]) -> None:
@@ -144,9 +154,15 @@ def check_resolvable(model: ContinuumModel, path: Path, segments: list[Segment])
     ``ValueError`` naming the numbers and what to change.
     """
     params = model.params
-    if model.K == 0.0:  # τ0 = 0: no spring holds any shift, nothing to resolve
+    if model.caps.frictionless:  # τ0 = 0 (or μ = 0): no spring holds any shift, nothing to resolve
         return
     travel, cap = resolution(model, path, segments)
+    if not travel <= MAX_TRAVEL_PER_CAP * cap and model.caps.kappa > 0.0:
+        raise ValueError(
+            f"the friction law {model.friction.law!r} with mu={model.friction.mu!r} gives the centre's critical shift "
+            f"ū = {cap:.3g} m at the deepest point, and the path travels {travel:.3g} m tangentially; allowed for the "
+            f"continuum method: a travel of at most {MAX_TRAVEL_PER_CAP:.0e} ū = {MAX_TRAVEL_PER_CAP * cap:.3g} m "
+            "(beyond it the slip events are lost to rounding): a larger mu, a shorter path, or method='discrete'")
     if not travel <= MAX_TRAVEL_PER_CAP * cap:
         raise ValueError(
             f"tau0={params.tau0!r} Pa with G*={params.G_star:.4g} Pa (τ0/G* = {params.tau0 / params.G_star:.3g}) gives "

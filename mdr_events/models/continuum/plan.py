@@ -79,7 +79,7 @@ def _plan_out_of_contact(model: ContinuumModel, state: ContactState, segment: Se
     if (segment.vd > 0 and d >= -_depth_scale(model, segment, t)) or starts_inside:
         radius = model.grow.radius(max(d, 0.0), model.tolerances.radius_rtol)
         touch = (EventKind.FIRST_CONTACT if state.contacts == 0 else EventKind.RE_CONTACT,)
-        if model.K == 0.0:  # τ0 = 0: no spring holds any shift, all slide from the start
+        if model.caps.frictionless:  # τ0 = 0 (μ = 0): no spring holds any shift, all slide from the start
             touch += (EventKind.SLIP_ONSET, EventKind.FULL_SLIP)
         return SpanPlan(Action.TOUCH, Regime.NONE, t, t, None, radius, 0.0, touch)
     t_next = segment.time_at_depth(0.0) if segment.vd > 0 else segment.t1
@@ -132,5 +132,5 @@ def _plan_outward(model: ContinuumModel, state: ContactState, segment: Segment) 
         # Δγ1 branch at once; the springs it loses take their force with them and the smaller cap ū(a)
         # clips the rest (anchor map form)
         a = on_branch
-        force = state.anchors.tangential_force(model.K, model.params.G_star, segment.x(t), a)
+        force = state.anchors.tangential_force(model.caps, model.params.G_star, segment.x(t), a, d)
     return SpanPlan(Action.CONTACT, Regime.SHRINKING, t, t_end, _end_kind(t_end, segment, ending), a, force, entry)

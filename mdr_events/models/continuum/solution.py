@@ -96,7 +96,8 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
         force = span.interpolant(a / span.scale if span.variable is Variable.RADIUS else t)[0]
     out["tangential_force"] = force
     if sliding:
-        zones = sum(span.anchors.zone_sizes(cap, x - cap * model.K * a, a) for cap in Cap)
+        shift = model.K * a + model.caps.kappa * d if model.caps.kappa else model.K * a
+        zones = sum(span.anchors.seen_by(cap, model.caps.kappa).zone_sizes(cap, x - cap * shift, a) for cap in Cap)
         with np.errstate(invalid="ignore", divide="ignore"):
             out["sliding_fraction"] = np.where(a > 0, np.minimum(zones / a, 1.0), np.nan)
     return out
@@ -286,7 +287,8 @@ def algebraic_tangential_force(solution: PathSolution, times: np.ndarray) -> np.
             out[i] = 0.0
             continue
         x = filled["tangential_displacement"][i]
-        out[i] = span.anchors.tangential_force(model.K, solution.params.G_star, x, a)
+        out[i] = span.anchors.tangential_force(model.caps, solution.params.G_star, x, a,
+                                               filled["indentation_depth"][i])
     return out
 
 

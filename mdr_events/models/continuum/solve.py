@@ -17,6 +17,7 @@ from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from mdr_events.models.indenters import check_simulated_profile
 from mdr_events.profiles import PowerLaw
+from mdr_events.friction import FrictionLaw, as_friction_law
 from .anchors import AnchorMap, Piece
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
 from .plan import Action, SpanPlan, plan_span
@@ -28,13 +29,15 @@ from .zones import lay_out_zones
 
 
 def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Tolerances(),
-               limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None) -> PathSolution:
+               limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None,
+               friction: FrictionLaw | str | None = None) -> PathSolution:
     """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`) for the indenter
-    ``profile`` (``None``: the paper's paraboloid of ``params.R``); a path with more waypoints than
+    ``profile`` (``None``: the paper's paraboloid of ``params.R``) and the friction law ``friction`` (``None``:
+    the paper's ``"tau0"``; Coulomb's part needs a contact without adhesion); a path with more waypoints than
     ``limits.waypoints`` is refused before the work starts."""
     limits.check(f"the continuum run of a path with {len(path.waypoints)} waypoints",
                  waypoints=len(path.waypoints))
-    model = ContinuumModel(params, tolerances, check_simulated_profile(profile))
+    model = ContinuumModel(params, tolerances, check_simulated_profile(profile), as_friction_law(friction))
     segments = kinematics(path)
     check_resolvable(model, path, segments)
     solution = PathSolution(model, t_contact=path.first_contact_time())
@@ -144,7 +147,7 @@ def enter(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment: S
             # and stick again where they are (the old window materialised)
             before = plan.jumped_from
             x = segment.x(plan.t_start)
-            state.anchors.clip(x - model.K * before, x + model.K * before, before)
+            state.anchors.clip_caps(x, model.caps, segment.d(plan.t_start), before)
             for cap in Cap:
                 logged += [(kind, plan.t_start, before, int(cap)) for kind in zone_events(state.zones[cap], NO_ZONE,
                                                                                           restuck=True)]
@@ -173,19 +176,19 @@ def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOut
         if Trigger.ZONE_REACHES in fired[cap]:
             state.sliding[cap] = True
     x = segment.x(outcome.t_stop)
-    layouts = lay_out_zones(state.anchors, model.K, segment, outcome.t_stop, radius, state.sliding,
+    layouts = lay_out_zones(state.anchors, model.caps, segment, outcome.t_stop, radius, state.sliding,
                             model.grow.depth_term)
     logged: list[Logged] = []
     turned = [cap for cap in Cap if Trigger.LEVEL_TURNS in fired[cap]]
     if turned:
-        state.anchors.clip(x - model.K * radius, x + model.K * radius, radius)
+        state.anchors.clip_caps(x, model.caps, segment.d(outcome.t_stop), radius)
     for cap in Cap:
         before, after = state.zones[cap], layouts[cap].summary(radius)
         events = zone_events(before, after)
         if after.slip is Slip.FULL and before.slip is not Slip.FULL:
-            # every spring at the cap: F_x = ±2G* ū a = ±τ0 π a² exactly; taking it from here drops what the
-            # integration accumulated before (long, shallow paths)
-            state.force = cap * 2.0 * model.params.G_star * model.K * radius**2
+            # every spring at the cap: F_x = ±2G* ū a = ±τ0 π a² exactly (and ± μ F_N with Coulomb's part);
+            # taking it from here drops what the integration accumulated before (long, shallow paths)
+            state.force = cap * full_slip_force(model, radius, segment.d(outcome.t_stop))
         if cap in turned:
             events += zone_events(after, NO_ZONE, restuck=True)
             after = NO_ZONE
@@ -193,6 +196,14 @@ def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOut
         state.zones[cap] = after
         logged += [(kind, outcome.t_stop, radius, int(cap)) for kind in events]
     return logged
+
+
+def full_slip_force(model: ContinuumModel, radius: float, depth: float) -> float:
+    """``|F_x|`` with every spring at one cap: ``2G* K a² = τ0 π a²``, plus ``μ F_N`` (10) with Coulomb's part."""
+    force = 2.0 * model.params.G_star * model.K * radius**2
+    if model.caps.kappa:
+        force += model.friction.coulomb_mu * float(model.normal_force(depth, radius))
+    return force
 
 
 def regime_ends(model: ContinuumModel, state: ContactState, plan: SpanPlan, outcome: SpanOutcome,
@@ -228,7 +239,8 @@ BYTES_PER_SAMPLE = 128
 
 def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | None = None,
                   samples: int = 2001, tolerances: Tolerances = Tolerances(),
-                  limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None) -> dict:
+                  limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None,
+                  friction: FrictionLaw | str | None = None) -> dict:
     """Solve every path and fill a common time grid (default: ``samples`` points to the longest run).
 
     Returns the arrays of :func:`evaluate` stacked to (n_cases, n_time), ``time``, the event
@@ -238,7 +250,7 @@ def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | Non
     n_time = samples if times is None else len(times)
     limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
                  memory=n_time * len(paths) * BYTES_PER_SAMPLE)
-    solutions = [solve_path(params, path, tolerances, limits, profile) for path in paths]
+    solutions = [solve_path(params, path, tolerances, limits, profile, friction) for path in paths]
     if times is None:
         longest = max(solution.end_time for solution in solutions)
         times = np.linspace(0.0, longest * (1.0 + 1.0 / samples), samples)

@@ -130,6 +130,8 @@ class SpanIntegrator:
         self.model, self.anchors, self.span = model, anchors, span
         self.segment = span.segment
         self.K = model.K
+        #: Coulomb's cap per compression (0: ``τ0`` alone, the levels ``x ∓ K a``)
+        self.kappa = model.caps.kappa
         self.G2 = 2.0 * model.params.G_star
         self.moving = span.regime in (Regime.GROWING, Regime.SHRINKING)
         self.shrinking = span.regime is Regime.SHRINKING
@@ -158,7 +160,8 @@ class SpanIntegrator:
         # at a = 0 (a Hertz contact's first instant) every local length is 0: the travel up to the span's
         # largest radius keeps the level offset above zero there (the centre's level starts at 0 and falls)
         reach = self.a0 if self.a0 > 0 or not self.moving else self.scale * max(self.start, self.stop)
-        lengths = length_scale(anchors, self.K, self.x0, self.a0, indenter_travel(self.segment, t0, reach, depth_term))
+        lengths = length_scale(anchors, model.caps.centre_shift(self.a0, self.segment.d(t0)), self.x0,
+                               indenter_travel(self.segment, t0, reach, depth_term))
         # Rising events cross a level a hair beyond zero: LEVEL_ULPS ulp of the lengths involved, just
         # above the rounding of x − Y ∓ ū (an event moves by about 1e-12 s at the paper's speed). A
         # function that starts at zero to rounding and first falls (the centre of a Hertz contact at
@@ -166,7 +169,7 @@ class SpanIntegrator:
         # starts beyond it has crossed already and fires at once.
         self.offset = LEVEL_ULPS * EPS * lengths
         self.edge_margin = EDGE_LEAVING_TOLERANCES * PIECE_SHARE * lengths
-        self.zones = lay_out_zones(anchors, self.K, self.segment, t0, self.a0, sliding, depth_term)
+        self.zones = lay_out_zones(anchors, model.caps, self.segment, t0, self.a0, sliding, depth_term)
         self.positive, self.negative = self.zones[Cap.POSITIVE], self.zones[Cap.NEGATIVE]
         self.sliding = dict(sliding)
         self.edge_start = anchors.pieces[-1].start if anchors.pieces else 0.0
@@ -179,15 +182,21 @@ class SpanIntegrator:
         return var * self.scale if self.moving else self.span.pinned_radius
 
     def level(self, cap: Cap | float, var: float) -> float:
-        """``x − cap · ū(a)``: where the anchors of the springs at ``cap`` sit."""
-        return self.segment.x(self.time_of(var)) - cap * self.K * self.radius_of(var)
+        """``x − cap · (K a + κ d)``: where the anchors of the springs at ``cap`` sit (as the cap sees them)."""
+        t = self.time_of(var)
+        if self.kappa:
+            return self.segment.x(t) - cap * (self.K * self.radius_of(var) + self.kappa * self.segment.d(t))
+        return self.segment.x(t) - cap * self.K * self.radius_of(var)
 
     def rate(self, cap: Cap | float, var: float) -> float:
         """A quantity with the sign of ``cap · d(level)/dt``: positive while the level pushes the springs
-        at the cap (moving radius: ``cap · v_x · ∂d/∂a − K v_d``, the rate times ``∂d/∂a > 0``)."""
+        at the cap (moving radius: ``cap · v_x · ∂d/∂a − K v_d − κ v_d ∂d/∂a``, the rate times ``∂d/∂a > 0``)."""
         if not self.moving:
-            return cap * self.segment.vx
-        return cap * self.segment.vx * self.branch.slope(var * self.scale) - self.K * self.segment.vd
+            return cap * self.segment.vx - self.kappa * self.segment.vd
+        slope = self.branch.slope(var * self.scale)
+        if self.kappa:
+            return (cap * self.segment.vx - self.kappa * self.segment.vd) * slope - self.K * self.segment.vd
+        return cap * self.segment.vx * slope - self.K * self.segment.vd
 
     def may_push(self, cap: Cap) -> bool:
         """Whether the cap's level can move towards its springs during the span: its rate is positive at
@@ -199,19 +208,25 @@ class SpanIntegrator:
         """``dF_x/da`` (moving radius) or ``dF_x/dt`` (pinned)."""
         segment, K = self.segment, self.K
         a = self.radius_of(var)
-        x = segment.x(self.time_of(var))
-        positive = self.positive.size(x - K * a, a)
-        negative = self.negative.size(x + K * a, a)
+        t = self.time_of(var)
+        x = segment.x(t)
+        shift = K * a + self.kappa * segment.d(t) if self.kappa else K * a
+        positive = self.positive.size(x - shift, a)
+        negative = self.negative.size(x + shift, a)
         sticking = a - positive - negative
-        if not self.moving:
+        if not self.moving:  # (a pinned radius: the caps keep still, as without adhesion κ needs v_d = 0)
             return [self.G2 * sticking * segment.vx]
-        total = (positive - negative) * K + sticking * segment.vx * self.branch.slope(a) / segment.vd
+        slope = self.branch.slope(a)
+        # the springs at a cap carry K a + κ (d − g): d/da of it is K + κ ∂d/∂a
+        cap_rate = K + self.kappa * slope if self.kappa else K
+        total = (positive - negative) * cap_rate + sticking * segment.vx * slope / segment.vd
         if self.shrinking:  # springs leave the edge with their shift
             total += self.edge_shift(x, a)
         return [self.G2 * total * self.scale]
 
     def edge_shift(self, x: float, a: float) -> float:
-        """The shift of the spring at the edge: ``±ū`` at a cap, else ``x − Y(a)``."""
+        """The shift of the spring at the edge: ``±ū`` at a cap (``±K a``: the edge of a contact without
+        adhesion holds no Coulomb shift), else ``x − Y(a)``."""
         for cap in Cap:
             if self.zones[cap].edge_in_zone:
                 return cap * self.K * a
@@ -252,7 +267,7 @@ class SpanIntegrator:
         """Events that have already happened at the span's start (they fire at once): a level already
         beyond its target, a sliding level that does not push (e.g. after a corner)."""
         met = set()
-        if self.K > 0 and self.a0 > 0:
+        if not self.model.caps.frictionless and self.a0 > 0:
             for cap in Cap:
                 if (self.sliding[cap] or self.may_push(cap)) and self.reaches(cap)(self.start) > 0.0:
                     met.add((Trigger.ZONE_REACHES, cap))
@@ -279,7 +294,7 @@ class SpanIntegrator:
         rate = self.G2 * (a - self.positive.size(0.0, a) - self.negative.size(0.0, a)) * self.segment.vx
         t_stop, fired = self.stop, frozenset()
         for event in self.event_functions():  # only ZONE_REACHES in a pinned span: linear in time
-            speed = event.trigger is Trigger.ZONE_REACHES and event.cap * self.segment.vx
+            speed = event.trigger is Trigger.ZONE_REACHES and event.cap * self.segment.vx - self.kappa * self.segment.vd
             if speed and speed > 0.0:
                 when = self.start - event(self.start) / speed
                 if when < t_stop:
@@ -335,7 +350,7 @@ def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, slidin
     span.force = force
     if t1 <= t0:
         return SpanOutcome(frozenset(), t0, force, radius_at(model, span, t0))
-    if model.K == 0.0:  # τ0 = 0: ū ≡ 0, every spring slides with zero shift, F_x ≡ 0
+    if model.caps.frictionless:  # τ0 = 0 (μ = 0): ū ≡ 0, every spring slides with zero shift, F_x ≡ 0
         span.force = 0.0
         return SpanOutcome(frozenset(), t1, 0.0, radius_at(model, span, t1))
     integrator = SpanIntegrator(model, anchors, span, sliding)

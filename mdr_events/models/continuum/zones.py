@@ -16,6 +16,7 @@ import enum
 from collections.abc import Callable
 
 from .anchors import AnchorMap, Piece
+from .caps import Caps
 from .model import Segment
 from .state import Cap, Slip, ZoneSummary
 from .tolerances import PIECE_SHARE
@@ -140,16 +141,17 @@ class ZoneLayout:
         return ZoneSummary(slip, centre, edge)
 
 
-def length_scale(anchors: AnchorMap, K: float, x: float, radius: float, travel: float) -> float:
+def length_scale(anchors: AnchorMap, cap_shift: float, x: float, travel: float) -> float:
     """The lengths a span's slip criterion compares and resolves; the tolerances of the levels are shares of it.
 
-    The largest of the cap ``K a``, the indenter's and the anchors' positions, and ``travel``: how far the
+    The largest of the centre's cap ``cap_shift`` (``K a + κ d``), the indenter's and the anchors' positions, and
+    ``travel``: how far the
     indenter moves tangentially over the rounding of the variables a level is computed from
     (:func:`indenter_travel`). Not the depth scale ``d_max``: on a stiff elastomer the cap is 1e-13 m
     while ``d_max`` is 0.3 mm, and a tolerance of ``d_max`` would put every spring at the cap.
     """
     largest_anchor = max((abs(p.x0) for p in anchors.pieces), default=0.0)
-    return max(K * radius, abs(x), largest_anchor, travel)
+    return max(cap_shift, abs(x), largest_anchor, travel)
 
 
 def indenter_travel(segment: Segment, t: float, radius: float, depth_term: Callable[[float], float]) -> float:
@@ -164,10 +166,13 @@ def indenter_travel(segment: Segment, t: float, radius: float, depth_term: Calla
     return travel
 
 
-def lay_out_zones(anchors: AnchorMap, K: float, segment: Segment, t: float, radius: float, sliding: dict[Cap, bool],
+def lay_out_zones(anchors: AnchorMap, caps: Caps, segment: Segment, t: float, radius: float, sliding: dict[Cap, bool],
                   depth_term: Callable[[float], float]) -> dict[Cap, ZoneLayout]:
-    """Both caps' slip zones with the indenter at ``segment.x(t)`` and the radius ``radius`` (levels ``x ∓ K a``),
-    a piece value within :data:`PIECE_SHARE` of the :func:`length_scale` beyond a level counting as reached."""
+    """Both caps' slip zones with the indenter at ``segment.x(t)`` and the radius ``radius`` (levels
+    ``x ∓ (K a + κ d)``, each cap seeing the anchors as :meth:`~.anchors.AnchorMap.seen_by` it), a piece value
+    within :data:`PIECE_SHARE` of the :func:`length_scale` beyond a level counting as reached."""
     x = segment.x(t)
-    tolerance = PIECE_SHARE * length_scale(anchors, K, x, radius, indenter_travel(segment, t, radius, depth_term))
-    return {cap: ZoneLayout(anchors, cap, x - cap * K * radius, radius, sliding[cap], tolerance) for cap in Cap}
+    shift = caps.centre_shift(radius, segment.d(t))
+    tolerance = PIECE_SHARE * length_scale(anchors, shift, x, indenter_travel(segment, t, radius, depth_term))
+    return {cap: ZoneLayout(anchors.seen_by(cap, caps.kappa), cap, x - cap * shift, radius, sliding[cap], tolerance)
+            for cap in Cap}

@@ -1,0 +1,55 @@
+"""The friction law's caps on the springs' shifts, as the continuum uses them.
+
+A spring at ``ξ`` of a contact of radius ``a`` at depth ``d`` slides once its shift reaches
+``ū(ξ) = K a + κ (d − g(ξ))`` (:mod:`mdr_events.friction`): ``K a`` is the part of ``τ0`` (13), the same for every
+spring, and ``κ = μ E*/G*`` Coulomb's, proportional to the spring's compression. Each cap's *level*, where the
+anchors of its springs sit, is ``x − cap (K a + κ d)`` in the coordinates the cap sees the anchors in
+(:meth:`~.anchors.AnchorMap.seen_by`: ``Y − cap κ g``), so the slip zones are laid out as for ``τ0`` alone.
+Coulomb's part needs a contact without adhesion (:func:`check_supported`): then every spring in contact is
+compressed and springs attach along ``d0 = g``.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+from mdr_events.friction import FrictionLaw
+from mdr_events.parameters import Parameters
+from mdr_events.theory import mindlin, symbolic
+
+
+class Caps(NamedTuple):
+    """``ū(ξ) = K a + κ (d − g(ξ))``: the two parts of a friction law's cap."""
+
+    #: the cap per contact radius of ``τ0``'s part (13) (0 without it)
+    K: float
+    #: Coulomb's cap per unit of compression, ``μ E*/G*`` (0 without it)
+    kappa: float
+
+    @property
+    def frictionless(self) -> bool:
+        """No spring holds a shift: every spring slides from the start and ``F_x ≡ 0``."""
+        return self.K == 0.0 and self.kappa == 0.0
+
+    def centre_shift(self, radius: float, depth: float) -> float:
+        """The cap of the spring at the centre, ``K a + κ d``, by which each level stands off ``x``."""
+        return self.K * radius + self.kappa * depth if self.kappa else self.K * radius
+
+
+def caps_of(friction: FrictionLaw, params: Parameters) -> Caps:
+    """The parts of ``friction``'s caps for the material of ``params``."""
+    K = float(symbolic.relation("critical_shift").numeric(1.0, params.tau0, params.G_star)) if friction.uses_tau0 else 0.0
+    return Caps(K, mindlin.coulomb_cap_ratio(friction, params))
+
+
+def check_supported(friction: FrictionLaw, params: Parameters) -> None:
+    """Refuse Coulomb's part with adhesion: springs in tension hold no Coulomb shift, and the anchors laid along
+    the adhesive branch are no longer seen as single pieces by the caps (the discrete method runs it)."""
+    if not friction.uses_mu:
+        return
+    for name in ("dgamma0", "dgamma1"):
+        value = getattr(params, name)
+        if value != 0.0:
+            raise ValueError(f"Parameters.{name}={value!r} is not allowed with the friction law {friction.law!r} in the "
+                             "continuum method; allowed: 0 (Coulomb's caps are exact there without adhesion), or "
+                             "method='discrete'")

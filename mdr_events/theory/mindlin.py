@@ -1,0 +1,168 @@
+"""Tangential loading at a constant depth, in closed form: Cattaneo–Mindlin and Masing's loops.
+
+At a constant depth ``d`` without adhesion every spring in contact keeps its cap (the friction law's,
+:mod:`mdr_events.friction`): ``ū(ξ) = K a + κ (d − g(ξ))`` with ``K a`` the part of ``τ0`` (13) and
+``κ = μ E*/G*`` Coulomb's (:func:`coulomb_cap_ratio`). Each spring is then a play operator of its own cap,
+and, from rest, a tangential shift ``u_x`` of the indenter gives the *virgin curve*
+
+    ``F₀(u_x) = 2G* a min(u_x, K a) + μ (F_N(d) − F_N(d − max(u_x − K a, 0)/κ))``
+
+(:func:`virgin_force`; the Coulomb part is Cattaneo–Mindlin's, in the form of Jäger and Ciavarella, derived
+in :func:`mdr_events.theory.symbolic.derive_friction_model`; the two parts add because the Coulomb caps all
+sit above ``K a``). Any back-and-forth motion from rest then follows Masing's rules with memory
+(:func:`tangential_force`): after a reversal at ``(x_r, F_r)`` the force is ``F_r + 2 F₀((x − x_r)/2)``
+until the branch reaches the point its predecessor started from, where that one resumes; the first
+unloading from ``(X, F₀(X))`` runs to ``(−X, −F₀(X))`` and rejoins the virgin curve (Mindlin & Deresiewicz
+1953; the loops of a fretting contact).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from mdr_events.friction import FrictionLaw, as_friction_law
+from mdr_events.parameters import Parameters
+from mdr_events.profiles import FlatPunch, PowerLaw, Profile
+from mdr_events.theory import power_law, symbolic
+from mdr_events.validation import check_real, real_array
+
+__all__ = ["coulomb_cap_ratio", "full_slip_shift", "full_slip_force", "virgin_force", "tangential_force"]
+
+
+def coulomb_cap_ratio(friction: FrictionLaw, params: Parameters) -> float:
+    """``κ = μ E*/G*``: Coulomb's cap is ``κ`` times the spring's compression (0 without Coulomb's part)."""
+    friction = as_friction_law(friction)
+    return float(symbolic.relation("coulomb_critical_shift").numeric(1.0, friction.coulomb_mu, params.E_star,
+                                                                     params.G_star))
+
+
+def _checked(depth, friction, params: Parameters, profile) -> tuple[float, FrictionLaw, Profile]:
+    depth = check_real("depth", depth, "a finite number > 0 (m)", lambda value: value > 0.0)
+    friction = as_friction_law(friction)
+    for name in ("dgamma0", "dgamma1"):
+        if getattr(params, name) != 0.0:
+            raise ValueError(f"Parameters.{name}={getattr(params, name)!r} is not allowed here; allowed: 0 (the "
+                             "closed forms of tangential loading hold for a contact without adhesion)")
+    profile = PowerLaw.paraboloid(params.R) if profile is None else power_law.check_profile(profile)
+    return depth, friction, profile
+
+
+def _radius(depth: float, profile: Profile) -> float:
+    if isinstance(profile, FlatPunch):
+        return profile.radius
+    return float(power_law.contact_radius(depth, profile, _NO_ADHESION, 0.0))
+
+
+#: The non-adhesive radius needs no material (any valid parameters serve :func:`power_law.contact_radius`).
+_NO_ADHESION = Parameters(E=1.0, nu=0.0, R=1.0, tau0=0.0, dgamma0=0.0, dgamma1=0.0, d_max=1.0, v=1.0)
+
+
+def full_slip_shift(depth: float, friction: FrictionLaw | str | None, params: Parameters,
+                    profile: Profile | None = None) -> float:
+    """The shift ``u_x`` from rest at which every spring slides: the centre's cap ``K a + κ d`` (m)."""
+    depth, friction, profile = _checked(depth, friction, params, profile)
+    tau0_part = power_law.cap_per_radius(params) * _radius(depth, profile) if friction.uses_tau0 else 0.0
+    return tau0_part + coulomb_cap_ratio(friction, params) * depth
+
+
+def full_slip_force(depth: float, friction: FrictionLaw | str | None, params: Parameters,
+                    profile: Profile | None = None) -> float:
+    """The force of full slip, ``τ0 π a² + μ F_N(d)`` (N; either part as the law has it)."""
+    return float(virgin_force(np.inf, depth, friction, params, profile))
+
+
+def _virgin_curve(depth: float, friction: FrictionLaw, params: Parameters, profile: Profile):
+    """``F₀`` as a function of arrays of shifts (checked arguments)."""
+    radius = _radius(depth, profile)
+    cap = power_law.cap_per_radius(params) * radius if friction.uses_tau0 else 0.0
+    kappa = coulomb_cap_ratio(friction, params)
+    full = friction.coulomb_mu * float(power_law.normal_force(depth, None if isinstance(profile, FlatPunch) else radius,
+                                                              profile, params))
+
+    def curve(values: np.ndarray) -> np.ndarray:
+        magnitude = np.abs(values)
+        force = 2.0 * params.G_star * radius * np.minimum(magnitude, cap)
+        if kappa > 0.0:
+            sliding = np.minimum(np.maximum(magnitude - cap, 0.0), kappa * depth)  # the centre's cap: full slip
+            if isinstance(profile, FlatPunch):  # every spring compressed by d: F_N is linear in the depth
+                coulomb = 2.0 * params.G_star * radius * sliding
+            else:
+                with np.errstate(invalid="ignore"):
+                    coulomb = symbolic.relation("cattaneo_mindlin_force").numeric(
+                        sliding, depth, friction.coulomb_mu, profile.c, profile.n, params.E_star, params.G_star)
+                coulomb = np.where(sliding >= kappa * depth, full, coulomb)
+            force = force + coulomb
+        return np.sign(values) * force
+
+    return curve
+
+
+def virgin_force(shift, depth: float, friction: FrictionLaw | str | None, params: Parameters,
+                 profile: Profile | None = None):
+    """``F₀``: the tangential force (N) at a shift ``u_x`` of the indenter from rest (m, any sign: ``F₀`` is odd),
+    at the constant depth ``d`` of a contact without adhesion (module docstring).
+
+    Parameters
+    ----------
+    shift : array_like
+        The tangential shift from the position at which the springs were at rest (m).
+    depth : float
+        The indentation depth (m, > 0).
+    friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
+    params : Parameters
+        The material and ``τ0``; ``Δγ0`` and ``Δγ1`` must be 0.
+    profile : PowerLaw or FlatPunch, optional
+        The indenter; default the paraboloid of ``params.R``.
+    """
+    depth, friction, profile = _checked(depth, friction, params, profile)
+    values = real_array("shift", shift, "real numbers (m)")
+    if np.any(np.isnan(values)):
+        raise ValueError(f"shift={shift!r} is not allowed; allowed: real numbers, not nan (m)")
+    force = _virgin_curve(depth, friction, params, profile)(values)
+    return float(force) if np.ndim(shift) == 0 else force
+
+
+def tangential_force(x, depth: float, friction: FrictionLaw | str | None, params: Parameters,
+                     profile: Profile | None = None) -> np.ndarray:
+    """The tangential force (N) along a tangential path at a constant depth, springs at rest at ``x[0]``.
+
+    Masing's rules with memory (module docstring) on the samples ``x`` (m): a reversal is where the motion
+    turns, so the samples should hold the path's turning points (a path sampled between them turns early).
+
+    Parameters
+    ----------
+    x : array_like
+        The indenter's tangential position at successive instants (1-D, m).
+    depth, friction, params, profile
+        As for :func:`virgin_force`.
+    """
+    positions = real_array("x", x, "a 1-D array of finite tangential positions (m)")
+    if positions.ndim != 1 or positions.size == 0 or not np.all(np.isfinite(positions)):
+        raise ValueError(f"x of shape {positions.shape} is not allowed; allowed: a non-empty 1-D array of finite "
+                         "tangential positions (m)")
+    depth, friction, profile = _checked(depth, friction, params, profile)
+    curve = _virgin_curve(depth, friction, params, profile)
+    shifts = positions - positions[0]
+    force = np.empty_like(shifts)
+    turns: list[tuple[float, float]] = []  # reversal points (shift, force), the last the current branch's start
+    direction = 0.0
+    for k, shift in enumerate(shifts):
+        step = shift - shifts[k - 1] if k else 0.0
+        if step != 0.0 and direction != 0.0 and np.sign(step) != direction:
+            turns.append((float(shifts[k - 1]), float(force[k - 1])))
+        if step != 0.0:
+            direction = float(np.sign(step))
+        while turns:  # memory: a branch that passes its predecessor's start closes that loop
+            start = turns[-1][0]
+            target = turns[-2][0] if len(turns) > 1 else -start  # the first branch rejoins the virgin curve at −x_r
+            if (shift - start) * (target - start) > 0.0 and abs(shift - start) > abs(target - start):
+                del turns[-2:]  # (the first branch's only start: back on the virgin curve)
+                continue
+            break
+        if turns:
+            start, start_force = turns[-1]
+            force[k] = start_force + 2.0 * float(curve(np.array(0.5 * (shift - start))))
+        else:
+            force[k] = float(curve(np.array(shift)))
+    return force
