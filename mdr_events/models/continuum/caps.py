@@ -45,7 +45,7 @@ def caps_of(friction: FrictionLaw, params: Parameters) -> Caps:
 def check_supported(friction: FrictionLaw, params: Parameters) -> None:
     """Refuse Coulomb's part with adhesion: springs in tension hold no Coulomb shift, and the anchors laid along
     the adhesive branch are no longer seen as single pieces by the caps (the discrete method runs it)."""
-    if not friction.uses_mu:
+    if friction.coulomb_mu == 0.0:  # no Coulomb part (μ = 0 adds nothing to the caps)
         return
     for name in ("dgamma0", "dgamma1"):
         value = getattr(params, name)

@@ -99,9 +99,10 @@ def _plan_inward(model: ContinuumModel, state: ContactState, segment: Segment) -
     jumped_from = None
     # an adhesive contact held above the surface (d < 0) presses in along the Δγ0 branch there, down to its fold
     on_branch = model.grow.radius(max(d, model.grow.jump_off_depth), model.tolerances.radius_rtol)
-    if on_branch > a * (1.0 + RADIUS_DROP_SHARE):
+    if on_branch > a * (1.0 + RADIUS_DROP_SHARE) and d > threshold + _depth_scale(model, segment, t):
         # the held radius is inside the Δγ0 branch (after a drop onto the Δγ1 branch): the springs up to
-        # the branch jump in at once, at the indenter's position, as at first contact
+        # the branch jump in at once, at the indenter's position, as at first contact (not a radius off by the
+        # depth's rounding: near first contact, a depth of 1e-17 m computed from 1e-6 m, its radius is 1e-5 off)
         growth = (Piece(a, on_branch, segment.x(t)),)
         jumped_from, a = a, on_branch
     growth += (Piece(a, math.inf, segment.xs, segment.vx / segment.vd, segment.ds),)

@@ -193,6 +193,10 @@ class SpanIntegrator:
         at the cap (moving radius: ``cap · v_x · ∂d/∂a − K v_d − κ v_d ∂d/∂a``, the rate times ``∂d/∂a > 0``)."""
         if not self.moving:
             return cap * self.segment.vx - self.kappa * self.segment.vd
+        if self.kappa and self.K == 0.0:
+            # Coulomb's caps alone: the rate's sign is that of cap · v_x − κ v_d, constant on the segment (times
+            # ∂d/∂a it would vanish at a = 0, where a contact without adhesion ends: no turn there)
+            return cap * self.segment.vx - self.kappa * self.segment.vd
         slope = self.branch.slope(var * self.scale)
         if self.kappa:
             return (cap * self.segment.vx - self.kappa * self.segment.vd) * slope - self.K * self.segment.vd

@@ -1,0 +1,170 @@
+"""Tangential loading at a constant depth (theory.mindlin): the virgin curve against quadrature of the springs'
+caps and against the Cattaneo–Mindlin closed form; Masing's rules with memory against an ensemble of play
+operators stepped spring by spring; bad input named."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy import integrate, optimize
+
+import mdr_events as me
+from mdr_events.friction import FrictionLaw
+from mdr_events.profiles import FlatPunch, PowerLaw
+from mdr_events.theory import mindlin
+from mdr_events.theory import power_law as pl
+from mdr_events.theory import symbolic as S
+
+DEPTH = 1e-4
+#: quad's accuracy on the springs' integrals with their kink given as a break point
+QUADRATURE_RTOL = 1e-10
+LAWS = [FrictionLaw(), FrictionLaw("coulomb", mu=0.3), FrictionLaw("tau0+coulomb", mu=0.2)]
+PROFILES = [None, PowerLaw.cone(0.05), PowerLaw(40.0, 1.5), PowerLaw(2e5, 3.0), FlatPunch(1e-3)]
+
+
+@pytest.fixture(scope="module")
+def hertz():
+    return me.Parameters.paper().replace(dgamma0=0.0, dgamma1=0.0)
+
+
+def _radius_and_g(profile, params):
+    if profile is None:
+        profile = PowerLaw.paraboloid(params.R)
+    if isinstance(profile, FlatPunch):
+        return profile.radius, lambda xi: 0.0
+    return float(pl.contact_radius(DEPTH, profile, params, 0.0)), lambda xi: float(pl.equivalent_profile(xi, profile))
+
+
+def _springs_force(shift, friction, params, profile):
+    """``2G* ∫_0^a min(s, K a + κ (d − g(ξ))) dξ``: the springs' caps integrated numerically."""
+    a, g = _radius_and_g(profile, params)
+    K = pl.cap_per_radius(params) if friction.uses_tau0 else 0.0
+    kappa = friction.coulomb_mu * params.E_star / params.G_star
+    if shift == 0.0:  # (no relative accuracy to ask of a zero integrand)
+        return 0.0
+    cap = lambda xi: K * a + kappa * (DEPTH - g(xi))  # noqa: E731
+    # the kink where the caps pass the shift (the stick zone's edge), found by bisection, as quad's break point
+    kink = [optimize.brentq(lambda xi: cap(xi) - shift, 0.0, a, xtol=1e-16 * a)] if cap(a) < shift < cap(0.0) else None
+    value, _ = integrate.quad(lambda xi: min(shift, cap(xi)), 0.0, a, epsabs=0.0, epsrel=1e-12, limit=200,
+                              points=kink)
+    return 2.0 * params.G_star * value
+
+
+def test_the_coulomb_cap_is_mu_times_the_normal_over_the_tangential_stiffness():
+    rel = S.relation("coulomb_critical_shift")
+    assert rel.numeric(2e-6, 0.3, 3e5, 2e5) == pytest.approx(0.3 * 3e5 / 2e5 * 2e-6, rel=1e-15)
+    assert mindlin.coulomb_cap_ratio(FrictionLaw("coulomb", mu=0.3), me.Parameters.paper()) == pytest.approx(
+        0.3 * me.Parameters.paper().E_star / me.Parameters.paper().G_star, rel=1e-15)
+    assert mindlin.coulomb_cap_ratio(FrictionLaw(), me.Parameters.paper()) == 0.0
+
+
+@pytest.mark.parametrize("friction", LAWS, ids=lambda f: f.law)
+@pytest.mark.parametrize("profile", PROFILES, ids=lambda p: "paraboloid" if p is None else p.describe()[:24])
+def test_virgin_curve_equals_the_springs_caps_integrated(hertz, friction, profile):
+    """Every law and indenter: F₀(s) against quadrature of 2G* ∫ min(s, ū(ξ)) dξ from 0 past full slip."""
+    full = mindlin.full_slip_shift(DEPTH, friction, hertz, profile)
+    shifts = np.linspace(0.0, 1.3, 27) * full
+    closed = mindlin.virgin_force(shifts, DEPTH, friction, hertz, profile)
+    numeric = np.array([_springs_force(s, friction, hertz, profile) for s in shifts])
+    np.testing.assert_allclose(closed, numeric, rtol=QUADRATURE_RTOL, atol=QUADRATURE_RTOL * numeric.max())
+    np.testing.assert_allclose(mindlin.virgin_force(-shifts, DEPTH, friction, hertz, profile), -closed, rtol=0, atol=0)
+    assert mindlin.full_slip_force(DEPTH, friction, hertz, profile) == pytest.approx(numeric[-1], rel=QUADRATURE_RTOL)
+
+
+@pytest.mark.parametrize("n", [1.0, 1.5, 2.0, 3.0])
+def test_cattaneo_mindlin_closed_form(hertz, n):
+    """Coulomb's law on a power law: F = μ F_N (1 − (1 − s/s*)^((n+1)/n)), s* = μ E* d/G* (Cattaneo 1938, Mindlin
+    1949 for the sphere, n = 2, exponent 3/2; F_N ∝ d^((n+1)/n) for the power law); the paraboloid's F_N is
+    Hertz's (4/3) E* √R d^(3/2)."""
+    friction = FrictionLaw("coulomb", mu=0.4)
+    profile = pl.with_radius_at(n, 2e-3, DEPTH)
+    full = 0.4 * hertz.E_star * DEPTH / hertz.G_star
+    assert mindlin.full_slip_shift(DEPTH, friction, hertz, profile) == pytest.approx(full, rel=1e-15)
+    normal = float(pl.normal_force(DEPTH, 2e-3, profile, hertz))
+    shifts = np.linspace(0.0, 1.0, 41) * full
+    expected = 0.4 * normal * (1.0 - (1.0 - shifts / full) ** ((n + 1.0) / n))
+    np.testing.assert_allclose(mindlin.virgin_force(shifts, DEPTH, friction, hertz, profile), expected, rtol=0,
+                               atol=1e-13 * 0.4 * normal)
+    sphere = 4.0 / 3.0 * hertz.E_star * math.sqrt(hertz.R) * DEPTH**1.5
+    assert mindlin.full_slip_force(DEPTH, friction, hertz) == pytest.approx(0.4 * sphere, rel=1e-14)
+
+
+def test_tau0_and_coulomb_add(hertz):
+    """Full slip of the combined law: τ0 π a² + μ F_N at the shift K a + κ d."""
+    friction = FrictionLaw("tau0+coulomb", mu=0.2)
+    a = math.sqrt(hertz.R * DEPTH)
+    sphere = 4.0 / 3.0 * hertz.E_star * math.sqrt(hertz.R) * DEPTH**1.5
+    assert mindlin.full_slip_force(DEPTH, friction, hertz) == pytest.approx(hertz.tau0 * math.pi * a**2 + 0.2 * sphere,
+                                                                            rel=1e-14)
+    assert mindlin.full_slip_shift(DEPTH, friction, hertz) == pytest.approx(
+        math.pi * a * hertz.tau0 / (2 * hertz.G_star) + 0.2 * hertz.E_star * DEPTH / hertz.G_star, rel=1e-14)
+
+
+#: Springs of the play-operator ensemble; its midpoint rule is second order, 1e-6 of the force at this count.
+ENSEMBLE_SPRINGS = 4000
+ENSEMBLE_RTOL = 1e-6
+
+
+def _play_ensemble(x, friction, params, profile):
+    """Each spring a play operator of its own cap, stepped sample by sample: ``u ← clip(u + Δx, −ū, ū)``."""
+    a, g = _radius_and_g(profile, params)
+    xi = (np.arange(ENSEMBLE_SPRINGS) + 0.5) * a / ENSEMBLE_SPRINGS
+    K = pl.cap_per_radius(params) if friction.uses_tau0 else 0.0
+    kappa = friction.coulomb_mu * params.E_star / params.G_star
+    caps = K * a + kappa * (DEPTH - np.array([g(v) for v in xi]))
+    shift, forces = np.zeros_like(xi), [0.0]
+    for step in np.diff(x):
+        shift = np.clip(shift + step, -caps, caps)
+        forces.append(2.0 * params.G_star * shift.sum() * a / ENSEMBLE_SPRINGS)
+    return np.array(forces)
+
+
+@pytest.mark.parametrize("friction", LAWS[1:], ids=lambda f: f.law)
+@pytest.mark.parametrize("profile", [None, PowerLaw.cone(0.05)], ids=["paraboloid", "cone"])
+def test_masing_rules_with_memory_equal_an_ensemble_of_play_operators(hertz, friction, profile):
+    """A fretting history with nested loops (each inner loop closed and forgotten where the motion passes its
+    start, then the outer branch and the virgin curve resumed), sampled with its turning points."""
+    full = mindlin.full_slip_shift(DEPTH, friction, hertz, profile)
+    turns = np.array([0.0, 0.6, -0.3, 0.4, -0.1, 0.7, -0.8, 0.5, -0.5, 0.9, 1.2, -1.1]) * full
+    x = np.concatenate([np.linspace(start, end, 40, endpoint=False) for start, end in zip(turns[:-1], turns[1:])]
+                       + [turns[-1:]])
+    closed = mindlin.tangential_force(x, DEPTH, friction, hertz, profile)
+    ensemble = _play_ensemble(x, friction, hertz, profile)
+    scale = mindlin.full_slip_force(DEPTH, friction, hertz, profile)
+    np.testing.assert_allclose(closed, ensemble, rtol=0, atol=ENSEMBLE_RTOL * scale)
+    # the memory at work: past 0.7 the branch from -0.1 has closed the loops back to the virgin curve
+    beyond = np.flatnonzero((x > 0.65 * full) & (np.arange(x.size) < 5 * 40))
+    np.testing.assert_allclose(closed[beyond], mindlin.virgin_force(x[beyond], DEPTH, friction, hertz, profile),
+                               rtol=0, atol=1e-12 * scale)
+
+
+def test_a_mindlin_loop_is_closed_and_symmetric(hertz):
+    """0 → X → −X → X: the unloading branch ends at −F₀(X), the reloading one at F₀(X) (Mindlin & Deresiewicz)."""
+    friction = FrictionLaw("coulomb", mu=0.3)
+    X = 0.5 * mindlin.full_slip_shift(DEPTH, friction, hertz)
+    x = np.concatenate([np.linspace(0, X, 50), np.linspace(X, -X, 100)[1:], np.linspace(-X, X, 100)[1:]])
+    force = mindlin.tangential_force(x, DEPTH, friction, hertz)
+    peak = mindlin.virgin_force(X, DEPTH, friction, hertz)
+    assert force[49] == peak and force[148] == pytest.approx(-peak, rel=1e-14) and force[-1] == pytest.approx(peak, rel=1e-14)
+    # the unloading branch F(X) − 2 F₀((X − x)/2)
+    np.testing.assert_allclose(force[49:149], peak - 2 * mindlin.virgin_force((X - x[49:149]) / 2, DEPTH, friction, hertz),
+                               rtol=0, atol=1e-15 * peak)
+
+
+@pytest.mark.parametrize("call, exception, words", [
+    (lambda p: mindlin.virgin_force(1e-6, DEPTH, "coulomb", p), ValueError, ["mu=None"]),
+    (lambda p: mindlin.virgin_force(1e-6, 0.0, None, p), ValueError, ["depth=0.0", "> 0"]),
+    (lambda p: mindlin.virgin_force([1e-6, math.nan], DEPTH, None, p), ValueError, ["shift=", "nan"]),
+    (lambda p: mindlin.virgin_force(1e-6, DEPTH, None, me.Parameters.paper()), ValueError,
+     ["Parameters.dgamma0=0.01", "allowed: 0"]),
+    (lambda p: mindlin.tangential_force(np.zeros((2, 2)), DEPTH, None, p), ValueError, ["shape (2, 2)", "1-D"]),
+    (lambda p: mindlin.tangential_force([0.0, math.inf], DEPTH, None, p), ValueError, ["finite"]),
+    (lambda p: mindlin.virgin_force(1e-6, DEPTH, None, p, profile="cone"), TypeError, ["profile='cone'"]),
+])
+def test_bad_input_is_named(hertz, call, exception, words):
+    with pytest.raises(exception) as caught:
+        call(hertz)
+    for word in words:
+        assert word in str(caught.value)
