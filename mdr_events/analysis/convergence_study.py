@@ -40,6 +40,7 @@ from mdr_events.analysis.validate import COMPARED, VALIDATED_EVENTS, resolve_pat
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import solve_path
 from mdr_events.parameters import Parameters
+from mdr_events.friction import FrictionLaw, as_friction_law
 from mdr_events.profiles import PowerLaw
 
 __all__ = ["convergence_study", "fit_observed_order", "OrderFit", "CONVERGENCE_STUDY_CONTENT", "NORMS",
@@ -139,7 +140,8 @@ def _spacings(candidates_by_dx) -> list[float]:
 def convergence_study(candidates_by_dx: Mapping[float, object], params: Parameters, path, alpha: float | None = None,
                       *, names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
                       time_origin="first_contact", expected_order: float = 1.0,
-                      limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None) -> xr.Dataset:
+                      limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None,
+                      friction: FrictionLaw | str | None = None) -> xr.Dataset:
     """The observed order of convergence of a simulator to the exact continuum, from three or more spacings.
 
     The continuum is solved once for the path, and each candidate validated once against that solution
@@ -161,6 +163,8 @@ def convergence_study(candidates_by_dx: Mapping[float, object], params: Paramete
         What the continuum run may use (:func:`mdr_events.validate`).
     profile : PowerLaw, optional
         The indenter the candidates simulated (default ``None``: the paraboloid of ``params.R``).
+    friction : FrictionLaw or str, optional
+        The friction law the candidates simulated (default the paper's ``"tau0"``; :func:`mdr_events.validate`).
 
     Returns
     -------
@@ -184,9 +188,12 @@ def convergence_study(candidates_by_dx: Mapping[float, object], params: Paramete
     order = sorted(range(len(spacings)), key=lambda i: -spacings[i])
     keys = list(candidates_by_dx)
     # one continuum solution serves every spacing: the study costs one solve and the comparisons
-    solution = solve_path(params, resolve_path(params, path, alpha, profile), limits=limits, profile=profile)
+    friction = as_friction_law(friction)
+    solution = solve_path(params, resolve_path(params, path, alpha, profile), limits=limits, profile=profile,
+                          friction=friction)
     reports = [validate(candidates_by_dx[keys[i]], params, path, alpha, names=names, units=units,
-                        time_origin=time_origin, solution=solution, profile=profile) for i in order]
+                        time_origin=time_origin, solution=solution, profile=profile, friction=friction)
+               for i in order]
     dx = np.array([spacings[i] for i in order])
 
     found = {str(name) for report in reports for name in report["quantity"].values}
@@ -249,6 +256,8 @@ def convergence_study(candidates_by_dx: Mapping[float, object], params: Paramete
                  converges_rule=CONVERGES_RULE, time_origin=str(time_origin),
                  candidate_sources="; ".join(str(report.attrs["candidate_source"]) for report in reports),
                  path_waypoints=first["path_waypoints"], path_speed=first["path_speed"])
+    # the indenter and the friction law, as the reports name them
+    attrs.update({key: value for key, value in first.items() if key.startswith(("profile", "friction_"))})
     return stamp(xr.Dataset(data, coords=coords), params, **attrs)
 
 

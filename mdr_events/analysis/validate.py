@@ -50,6 +50,7 @@ from mdr_events.models.indenters import check_simulated_profile, profile_attrs
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import scenario_paths
 from mdr_events.parameters import Parameters
+from mdr_events.friction import FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.profiles import PowerLaw
 
 __all__ = ["validate", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
@@ -169,7 +170,8 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
              names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
              time_origin="first_contact", tolerance: float = 1e-3,
              tolerances: Tolerances = Tolerances(), solution: PathSolution | None = None,
-             limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None) -> xr.Dataset:
+             limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None,
+             friction: FrictionLaw | str | None = None) -> xr.Dataset:
     """Compare a simulator's output with the exact continuum on the same path, sample and event by event.
 
     Parameters
@@ -199,6 +201,10 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     profile : PowerLaw, optional
         The indenter the candidate simulated: a power law ``f = c rⁿ``, ``n >= 1`` (default ``None``, the paper's
         paraboloid of ``params.R``); the report then has the attribute ``profile``.
+    friction : FrictionLaw or str, optional
+        The friction law the candidate simulated (default the paper's ``"tau0"``; Coulomb's part needs a contact
+        without adhesion, e.g. a Cattaneo–Mindlin test of a DEM contact model); the report then has the attributes
+        ``friction_law`` and ``friction_mu``.
 
     Returns
     -------
@@ -214,13 +220,17 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and tolerance > 0):
         raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a number > 0")
     profile = check_simulated_profile(profile)
+    friction = as_friction_law(friction)
     if solution is not None and solution.model.profile != profile:
         raise ValueError(f"solution= was solved for profile={solution.model.profile!r}, not for profile={profile!r}; "
                          "allowed: a solution of this indenter")
+    if solution is not None and solution.model.friction != friction:
+        raise ValueError(f"solution= was solved for friction={solution.model.friction!r}, not for friction={friction!r}; "
+                         "allowed: a solution of this friction law")
     the_path = resolve_path(params, path, alpha, profile)
     read = read_candidate(candidate, names, units)
     times = times_from_contact(read, the_path, time_origin)
-    solution = solve_path(params, the_path, tolerances, limits, profile) if solution is None else solution
+    solution = solve_path(params, the_path, tolerances, limits, profile, friction) if solution is None else solution
     exact = evaluate(solution, np.maximum(times, 0.0))
     before = times < 0
     for name in ("normal_force", "tangential_force", "contact_radius"):
@@ -306,6 +316,7 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
                  time_origin=str(time_origin), verdict=verdict, path_waypoints=the_path.describe(),
                  path_speed=the_path.speed)
     attrs.update(profile_attrs(profile))
+    attrs.update(friction_attrs(friction))
     return stamp(xr.Dataset(data, coords=coords), params, **attrs)
 
 

@@ -43,6 +43,7 @@ from mdr_events.io.files import check_output_stem, prepare_output_directory
 from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters, from_preset
 from mdr_events.profiles import PowerLaw
+from mdr_events.friction import FRICTION_LAWS, FrictionLaw
 from mdr_events.models.indenters import check_simulated_profile
 from mdr_events.theory import symbolic
 
@@ -143,6 +144,23 @@ def _profile(args: argparse.Namespace) -> PowerLaw | None:
         raise UsageError(f"--power-law {' '.join(f'{value:g}' for value in args.power_law)}: {error}") from None
 
 
+def _friction_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--friction", choices=list(FRICTION_LAWS), default="tau0",
+                        help="the cap on the springs' shifts: tau0 (the paper's, default), coulomb (mu times the "
+                             "spring's normal force) or tau0+coulomb (their sum)")
+    parser.add_argument("--mu", type=float, default=None, help="the coefficient of friction of --friction coulomb "
+                        "or tau0+coulomb")
+
+
+def _friction(args: argparse.Namespace) -> FrictionLaw:
+    """The ``--friction LAW [--mu MU]`` law (default the paper's ``tau0``)."""
+    try:
+        return FrictionLaw(args.friction, mu=args.mu)
+    except (TypeError, ValueError) as error:
+        given = f"--friction {args.friction}" + ("" if args.mu is None else f" --mu {args.mu:g}")
+        raise UsageError(f"{given}: {error}") from None
+
+
 def _limit_option(parser: argparse.ArgumentParser) -> None:
     """``--limit NAME=VALUE`` (repeatable): raise a resource limit of :class:`~mdr_events.limits.Limits`."""
     parser.add_argument("--limit", action="append", default=[], metavar="NAME=VALUE",
@@ -162,12 +180,13 @@ def _limits(args: argparse.Namespace) -> Limits:
 def _command_simulate(args: argparse.Namespace) -> None:
     params, provenance = _parameters(args)
     profile = _profile(args)
+    friction = _friction(args)
     out = prepare_output_directory(args.out, "--out")  # before the simulation, which may take minutes
     # the options of the discrete method are passed only when given, so that simulate() rejects them
     # with the continuum method exactly as it does in Python
     options = {name: getattr(args, name) for name in ("dx", "dt", "n_steps") if getattr(args, name) is not None}
     dataset = simulate(params, args.scenario, alpha=args.alpha, method=args.method, limits=_limits(args),
-                       profile=profile, **options)
+                       profile=profile, friction=friction, **options)
     dataset.attrs.update(provenance)
     stem = f"simulation_{args.scenario.replace('+', 'plus')}_{args.method}"
     for outcome in write_simulation(dataset, out, stem):
@@ -322,7 +341,7 @@ def _command_validate(args: argparse.Namespace) -> int:
     options = dict(names=_pairs("--names", args.names, list(CANDIDATE_QUANTITIES)),
                    units=_pairs("--units", args.units, list(CANDIDATE_QUANTITIES)),
                    time_origin=_time_origin(args.time_origin), tolerance=args.tolerance, limits=_limits(args),
-                   profile=_profile(args))
+                   profile=_profile(args), friction=_friction(args))
     if not (math.isfinite(args.tolerance) and args.tolerance > 0):
         raise UsageError(f"--tolerance {args.tolerance!r} is not allowed; allowed: a number > 0")
     out = prepare_output_directory(args.out, "--out")
@@ -519,6 +538,7 @@ def build_parser() -> argparse.ArgumentParser:
                        help=f"discrete method: time steps of the longest case (default {DEFAULT_STEPS})")
     sim.add_argument("--out", required=True, help="output directory")
     _profile_option(sim)
+    _friction_option(sim)
     _limit_option(sim)
     _parameter_options(sim)
     sim.set_defaults(run=_command_simulate)
@@ -531,6 +551,7 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("runs", nargs="+", metavar="RUN", help="a run: a CSV file with a header row, or netCDF")
     _measured_path_options(check, "runs")
     check.add_argument("--out", required=True, help="output directory")
+    _friction_option(check)
     _profile_option(check)
     _limit_option(check)
     check.add_argument("--tolerance", type=float, default=1e-3,

@@ -1,4 +1,5 @@
-"""Tangential loading at a constant depth, in closed form: Cattaneo–Mindlin and Masing's loops.
+"""The friction laws in closed form: tangential loading at a constant depth (Cattaneo–Mindlin, Masing's loops) and
+the slip onset of proportional loading (scenario A).
 
 At a constant depth ``d`` without adhesion every spring in contact keeps its cap (the friction law's,
 :mod:`mdr_events.friction`): ``ū(ξ) = K a + κ (d − g(ξ))`` with ``K a`` the part of ``τ0`` (13) and
@@ -14,6 +15,13 @@ sit above ``K a``). Any back-and-forth motion from rest then follows Masing's ru
 until the branch reaches the point its predecessor started from, where that one resumes; the first
 unloading from ``(X, F₀(X))`` runs to ``(−X, −F₀(X))`` and rejoins the virgin curve (Mindlin & Deresiewicz
 1953; the loops of a fretting contact).
+
+Along scenario A's path (14), ``x = d / tan α`` from first contact without adhesion, a spring attached at depth
+``d_ξ`` holds the shift ``(d − d_ξ)/tan α`` against the cap ``K a + κ (d − d_ξ)``: the Coulomb part grows with the
+shift, so where ``cot α <= κ`` no spring ever slides, and where ``cot α > κ`` the centre's spring slides first, when
+``(cot α − κ) d = K a(d)``: the paper's (17) at the angle ``α'`` of ``cot α' = cot α − κ`` (:func:`d_crit_A`,
+:func:`critical_angle_A`). Coulomb's law alone (``K = 0``) then slides from first contact (the angle of friction
+``tan α = 1/κ = G*/(μ E*)``).
 """
 
 from __future__ import annotations
@@ -24,9 +32,10 @@ from mdr_events.friction import FrictionLaw, as_friction_law
 from mdr_events.parameters import Parameters
 from mdr_events.profiles import FlatPunch, PowerLaw, Profile
 from mdr_events.theory import power_law, symbolic
-from mdr_events.validation import check_real, real_array
+from mdr_events.validation import check_real, real_array, validate_alpha
 
-__all__ = ["coulomb_cap_ratio", "full_slip_shift", "full_slip_force", "virgin_force", "tangential_force"]
+__all__ = ["coulomb_cap_ratio", "full_slip_shift", "full_slip_force", "virgin_force", "tangential_force",
+           "d_crit_A", "critical_angle_A"]
 
 
 def coulomb_cap_ratio(friction: FrictionLaw, params: Parameters) -> float:
@@ -166,3 +175,65 @@ def tangential_force(x, depth: float, friction: FrictionLaw | str | None, params
         else:
             force[k] = float(curve(np.array(shift)))
     return force
+
+
+def _tau0_profile(profile: Profile | None, params: Parameters) -> Profile:
+    return PowerLaw.paraboloid(params.R) if profile is None else power_law.check_profile(profile)
+
+
+def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None):
+    """Depth of slip onset in scenario A without adhesion (m) for any friction law (module docstring).
+
+    ``"tau0"``: (17) (:func:`mdr_events.theory.power_law.d_crit_A`). With Coulomb's part: ``nan`` (never) where
+    ``cot α <= κ``; else (17) at the angle ``α'`` with ``cot α' = cot α − κ``, which for ``"coulomb"`` alone is 0
+    (from first contact). ``α = 90°`` never slides (``+inf``).
+
+    Parameters
+    ----------
+    alpha : float or array_like
+        Path angles in degrees, in (0, 90].
+    friction : FrictionLaw or str or None
+    params : Parameters
+        ``Δγ0`` is not used (the onset without adhesion).
+    profile : PowerLaw or FlatPunch, optional
+        Default the paraboloid of ``params.R``.
+    """
+    friction = as_friction_law(friction)
+    alpha_arr = validate_alpha(alpha)
+    indenter = _tau0_profile(profile, params)
+    tau0_law = params if friction.uses_tau0 else params.replace(tau0=0.0)
+    kappa = coulomb_cap_ratio(friction, params)
+    if kappa == 0.0:
+        if friction.uses_tau0:
+            return power_law.d_crit_A(alpha, indenter, params, adhesion=False)
+        # no cap at all (μ = 0): every spring slides from first contact
+        return _onset_output(np.where(alpha_arr >= 90.0, np.inf, 0.0), alpha_arr)
+    vertical = alpha_arr >= 90.0
+    cot = 1.0 / np.tan(np.deg2rad(np.where(vertical, 45.0, alpha_arr)))
+    slides = (cot > kappa) & ~vertical
+    effective = np.rad2deg(np.arctan2(1.0, np.where(slides, cot - kappa, 1.0)))  # α' of cot α' = cot α − κ
+    if tau0_law.tau0 == 0.0:
+        depth = np.zeros_like(effective)
+    else:
+        depth = np.asarray(power_law.d_crit_A(effective, indenter, tau0_law, adhesion=False), dtype=float)
+    return _onset_output(np.where(vertical, np.inf, np.where(slides, depth, np.nan)), alpha_arr)
+
+
+def _onset_output(values: np.ndarray, alpha: np.ndarray):
+    return float(values) if np.ndim(alpha) == 0 else values
+
+
+def critical_angle_A(friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None) -> float:
+    """Scenario A's critical angle without adhesion (degrees): below it the springs slide before ``d_max``.
+
+    ``"tau0"``: ``tan α_c = d_max / ū(a(d_max))``; ``"coulomb"``: the angle of friction, ``tan α_c = 1/κ = G*/(μ E*)``,
+    at any depth; ``"tau0+coulomb"``: ``cot α_c = cot α_c(τ0) + κ``.
+    """
+    friction = as_friction_law(friction)
+    indenter = _tau0_profile(profile, params)
+    kappa = coulomb_cap_ratio(friction, params)
+    cot = 0.0
+    if friction.uses_tau0:
+        tau0_angle = power_law.critical_angle_A(indenter, params, adhesion=False)
+        cot = 1.0 / np.tan(np.deg2rad(tau0_angle)) if tau0_angle > 0.0 else np.inf
+    return float(np.rad2deg(np.arctan2(1.0, cot + kappa)))

@@ -186,3 +186,23 @@ def test_what_the_simulators_refuse_is_named(call, exception, words):
         call()
     for word in words:
         assert word in str(caught.value)
+
+
+@pytest.mark.parametrize("friction", [COULOMB, COMBINED], ids=lambda f: f.law)
+@pytest.mark.parametrize("profile", [None, PowerLaw(2e5, 3.0)], ids=["paraboloid", "n3"])
+def test_scenario_a_onsets_meet_the_closed_forms(hertz, friction, profile):
+    """The continuum's first slip onset while indenting along (14) without adhesion against mindlin.d_crit_A (to 1e-9
+    of d_max), and none above the closed-form critical angle (checked at 0.98 and 1.02 of it)."""
+    critical = mindlin.critical_angle_A(friction, hertz, profile)
+    for alpha in (20.0, 45.0, 0.98 * critical, 1.02 * critical):
+        path = me.Path.scenario_A(alpha, hertz, profile=profile)
+        solution = solve_path(hertz, path, profile=profile, friction=friction)
+        deepest = path.corner_times[1] - path.first_contact_time()  # the onsets while indenting
+        onsets = [event.depth for event in solution.events if event.kind is EventKind.SLIP_ONSET
+                  and event.time < deepest]
+        expected = mindlin.d_crit_A(alpha, friction, hertz, profile)
+        if alpha > critical:
+            assert not onsets, (alpha, onsets)
+            assert math.isnan(expected) or expected > hertz.d_max
+        else:
+            assert onsets[0] == pytest.approx(expected, abs=1e-9 * hertz.d_max), (alpha, onsets, expected)

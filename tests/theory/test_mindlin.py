@@ -168,3 +168,24 @@ def test_bad_input_is_named(hertz, call, exception, words):
         call(hertz)
     for word in words:
         assert word in str(caught.value)
+
+
+def test_scenario_a_closed_forms_of_the_laws(hertz):
+    """The angle of friction for Coulomb's law; the combined law's onset at its critical angle is d_max; the paper's
+    law is power_law's (17); μ = 0 slides from first contact; α = 90° never."""
+    coulomb, combined = FrictionLaw("coulomb", mu=0.3), FrictionLaw("tau0+coulomb", mu=0.2)
+    assert mindlin.critical_angle_A(coulomb, hertz) == pytest.approx(
+        math.degrees(math.atan(hertz.G_star / (0.3 * hertz.E_star))), rel=1e-15)
+    angle = mindlin.critical_angle_A(combined, hertz)
+    assert mindlin.d_crit_A(angle, combined, hertz) == pytest.approx(hertz.d_max, rel=1e-12)
+    tau0_angle = pl.critical_angle_A(PowerLaw.paraboloid(hertz.R), hertz, adhesion=False)
+    assert 1 / math.tan(math.radians(angle)) == pytest.approx(1 / math.tan(math.radians(tau0_angle))
+                                                              + 0.2 * hertz.E_star / hertz.G_star, rel=1e-13)
+    alphas = np.array([10.0, 40.0, 89.0, 90.0])
+    np.testing.assert_array_equal(mindlin.d_crit_A(alphas, None, hertz),
+                                  pl.d_crit_A(alphas, PowerLaw.paraboloid(hertz.R), hertz))
+    below, above = mindlin.d_crit_A([0.9 * mindlin.critical_angle_A(coulomb, hertz),
+                                     1.1 * mindlin.critical_angle_A(coulomb, hertz)], coulomb, hertz)
+    assert below == 0.0 and math.isnan(above)
+    np.testing.assert_array_equal(mindlin.d_crit_A([30.0, 90.0], FrictionLaw("coulomb", mu=0.0), hertz), [0.0, np.inf])
+    assert math.isinf(mindlin.d_crit_A(90.0, combined, hertz))
