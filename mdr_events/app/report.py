@@ -33,7 +33,9 @@ from mdr_events.app.report_data import (FIT_DEMO_ANGLE, FIT_DEMO_NOISE, FIT_DEMO
                                         HistoryConvergence, MaximaRow, PinnedIntervalRow, Reproduction,
                                         ScenarioBAngleRow, ShearPlateauRow, SlipOnsetVerdict, compute,
                                         critical_angles_A, critical_angles_B, cross_check_rows, differences,
-                                        extremum_convergence, fretting_rows, history_convergence, jobs)
+                                        extremum_convergence, fretting_rows, history_convergence, jobs,
+                                        MINDLIN_DEPTH_SHARE, MINDLIN_FRICTION, MINDLIN_TURNS, MindlinRow,
+                                        mindlin_rows)
 from mdr_events.app.result_files import (FileOutcome, FileStatus, describe_outcomes, write_dataset, write_figure,
                                          write_phase_diagram, write_simulation, write_text)
 from mdr_events.io.datasets import DOI, RESULT_RTOL
@@ -42,11 +44,13 @@ from mdr_events.plotting.figures import plot_fretting
 from mdr_events.plotting.fit import plot_fit
 from mdr_events.plotting.universal import plot_universal_map
 from mdr_events.plotting.profiles import plot_profile_comparison
+from mdr_events.plotting.mindlin import plot_mindlin_check
 from mdr_events.theory.analytic import critical_angle, dimensionless_groups
 
 __all__ = ["reproduce", "report_text", "compute", "Reproduction", "PAPER_CRITICAL_ANGLES", "RADII", "FIGURE_NUMBERS",
            "software_versions", "recorded_versions", "RECORDED_PACKAGES", "fretting_section", "relative_difference_text",
-           "FRETTING_STEM", "WRITE_STEPS", "PROFILE_STEM", "profile_rows", "profiles_section"]
+           "FRETTING_STEM", "WRITE_STEPS", "PROFILE_STEM", "profile_rows", "profiles_section", "MINDLIN_STEM",
+           "mindlin_section"]
 
 #: Relative differences below this are round-off, whose digits differ between machines: the report prints
 #: "< 1e-12" for them, so that it stays the same text everywhere.
@@ -61,6 +65,10 @@ FIT_STEM = f"fit_A{FIT_DEMO_ANGLE:g}_R30"
 UNIVERSAL_STEM = "universal_map"
 #: The comparison of indenters (:func:`~mdr_events.app.report_data.profile_comparison`).
 PROFILE_STEM = f"profiles_A{PROFILE_ANGLE:g}"
+#: The Cattaneo–Mindlin check of Coulomb's law (:func:`~mdr_events.app.report_data.mindlin_check`).
+MINDLIN_STEM = "mindlin_coulomb"
+#: Differences from the closed form below this (the tests' bound on the continuum) are reported as below it.
+MINDLIN_REPORTED_BOUND = 1e-9
 #: Progress steps of :func:`reproduce` after :func:`compute`: Fig. 8 and 10; the fretting study, the fit and README.md.
 WRITE_STEPS = 2
 
@@ -422,6 +430,31 @@ def profiles_section(rows: list[ProfileRow]) -> list[str]:
     return lines + [""]
 
 
+def mindlin_section(rows: list[MindlinRow]) -> list[str]:
+    """The Cattaneo–Mindlin check: each method's largest difference from the closed form
+    (:func:`~mdr_events.app.report_data.mindlin_rows`)."""
+    turns = " → ".join(f"{share:g}" for share in MINDLIN_TURNS)
+    lines = [
+        f"## Coulomb's law: Cattaneo–Mindlin (`{MINDLIN_STEM}.png`)",
+        "",
+        f"The friction law `FrictionLaw('coulomb', mu={MINDLIN_FRICTION.mu:g})` (each spring holds μ times its normal "
+        f"force) with the paper's material without adhesion: vertically in to d = {MINDLIN_DEPTH_SHARE:.4g} d_max, then "
+        f"along x through {turns} times the full-slip shift μ E* d / G* (the virgin curve, a Mindlin loop, full slip). "
+        "The closed form is Cattaneo–Mindlin's virgin curve `μ (F_N(d) − F_N(d − x G*/(μ E*)))` and Masing's rules "
+        f"(`mdr_events.mindlin.tangential_force`); `{MINDLIN_STEM}.nc` (continuum) and `{MINDLIN_STEM}_discrete.nc` "
+        "carry it as `cattaneo_mindlin_force`.",
+        "",
+        "| method | max \\|F_x − closed form\\| / (μ F_N) |",
+        "|---|---|",
+    ]
+    for row in rows:
+        # the continuum's differences are its solver's (rtol 1e-10): their digits differ between machines
+        shown = f"< {MINDLIN_REPORTED_BOUND:g}" if row.max_difference < MINDLIN_REPORTED_BOUND else \
+            relative_difference_text(row.max_difference)
+        lines.append(f"| {row.method} | {shown} |")
+    return lines + [""]
+
+
 def _parameter_section() -> list[str]:
     params = Parameters.paper()
     lines = [
@@ -452,6 +485,8 @@ def _parameter_section() -> list[str]:
         f"- `{UNIVERSAL_STEM}.{{nc,png}}`: the critical angles over the dimensionless groups, the paper's sets marked.",
         f"- `{PROFILE_STEM}.png`, `{PROFILE_STEM}_<cone|paraboloid|quartic>.nc` (continuum) and `..._discrete.nc`:",
         "  other indenters in scenario A.",
+        f"- `{MINDLIN_STEM}.png`, `{MINDLIN_STEM}.nc` (continuum) and `{MINDLIN_STEM}_discrete.nc`: Coulomb's law at a",
+        "  constant depth against Cattaneo–Mindlin.",
         "",
     ]
     return lines
@@ -514,6 +549,8 @@ def report_text(data: Reproduction | None = None, versions: dict[str, str] | Non
         lines += universal_section(data.universal)
     if data.profiles is not None:
         lines += profiles_section(profile_rows(data.profiles, Parameters.paper()))
+    if data.mindlin is not None:
+        lines += mindlin_section(mindlin_rows(data.mindlin))
     lines += _parameter_section()
     lines += _software_section(software_versions() if versions is None else versions)
     return "\n".join(lines)
@@ -570,6 +607,10 @@ def reproduce(out: Path, progress: Callable[[str], None] = print, keep_agreeing:
         profile_outcomes += [outcome, discrete_outcome]
     figure = plot_profile_comparison(written, kept)
     done(profile_outcomes + [write_figure(figure, out / f"{PROFILE_STEM}.png", keep_agreeing)])
+    exact, outcome = write_dataset(data.mindlin.continuum, out / f"{MINDLIN_STEM}.nc", keep_agreeing)
+    springs, discrete_outcome = write_dataset(data.mindlin.discrete, out / f"{MINDLIN_STEM}_discrete.nc", keep_agreeing)
+    done([outcome, discrete_outcome, write_figure(plot_mindlin_check(exact, springs), out / f"{MINDLIN_STEM}.png",
+                                                  keep_agreeing)])
     text = report_text(data)
     readme = out / "README.md"
     if keep_agreeing and readme.exists() and all(o.status is FileStatus.KEPT for o in outcomes):

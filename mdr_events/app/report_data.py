@@ -28,7 +28,8 @@ from mdr_events.models.simulate import (CUSTOM_DIMENSION, SIMULATION_CONTENT, ca
                                         simulate)
 from mdr_events.parameters import Parameters
 from mdr_events.profiles import PowerLaw
-from mdr_events.theory import analytic, power_law
+from mdr_events.friction import FrictionLaw
+from mdr_events.theory import analytic, mindlin, power_law
 
 __all__ = ["Reproduction", "compute", "jobs", "COMPUTE_STEPS", "critical_angles_A", "critical_angles_B",
            "cross_check_rows", "differences", "extremum_convergence", "history_convergence", "FrettingContact",
@@ -119,6 +120,7 @@ class Reproduction:
     fitting: "FitDemonstration | None" = None  #: the fit to synthetic measurements (:func:`fit_demonstration`)
     universal: xr.Dataset | None = None  #: the critical angles over the dimensionless groups (:func:`universal_map`)
     profiles: "ProfileComparison | None" = None  #: other indenters, scenario A (:func:`profile_comparison`)
+    mindlin: "MindlinCheck | None" = None  #: Coulomb's law at a constant depth (:func:`mindlin_check`)
 
 
 def jobs() -> list[tuple[str, float, str]]:
@@ -127,7 +129,7 @@ def jobs() -> list[tuple[str, float, str]]:
 
 
 #: Progress messages :func:`compute` sends (one per step).
-COMPUTE_STEPS = 2 * len(RADII) * len(SCENARIOS) + 6
+COMPUTE_STEPS = 2 * len(RADII) * len(SCENARIOS) + 7
 
 
 def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
@@ -174,6 +176,9 @@ def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
     say(f"other indenters: cone, paraboloid and quartic, scenario A at {PROFILE_ANGLE:g}° (continuum; discrete at "
         f"Δx = {FIGURE_DX * 1e6:g} µm)")
     data.profiles = profile_comparison(Parameters.paper())
+    say(f"Cattaneo–Mindlin: Coulomb's law (μ = {MINDLIN_FRICTION.mu:g}) at a constant depth, continuum and discrete "
+        f"(Δx = {FIGURE_DX * 1e6:g} µm) against the closed form")
+    data.mindlin = mindlin_check(Parameters.paper())
     return data
 
 
@@ -283,6 +288,85 @@ def profile_rows(comparison: ProfileComparison, params: Parameters) -> list[Prof
         rows.append(ProfileRow(name, profile, power_law.pull_off_force(profile, params, params.dgamma1),
                                float(exact["normal_force_min"].values[0]), onset if onset < params.d_max else math.nan,
                                onset_continuum, largest, difference / largest))
+    return rows
+
+
+# ----------------------------------------------------------------------------
+# Coulomb's law at a constant depth: Cattaneo–Mindlin
+#: The check: the paper's material without adhesion, Coulomb's law with this μ, ...
+MINDLIN_FRICTION = FrictionLaw("coulomb", mu=0.3)
+#: ... vertically in to this share of d_max, then along x through these shares of the full-slip shift κ d: the
+#: virgin curve, a Mindlin loop (unloading and reloading), and on to full slip.
+MINDLIN_DEPTH_SHARE = 1.0 / 3.0
+MINDLIN_TURNS = (0.0, 0.6, -0.6, 0.6, 1.3)
+MINDLIN_SAMPLES = 2001
+#: The case label and the ``study`` attribute of its datasets (which selects :data:`MINDLIN_VARIABLES`).
+MINDLIN_CASE = "cattaneo-mindlin"
+MINDLIN_STUDY = "cattaneo_mindlin"
+MINDLIN_VARIABLES: dict[str, tuple[tuple[str, ...], str, str]] = {
+    "cattaneo_mindlin_force": ((CUSTOM_DIMENSION, "time"), "N",
+                               "tangential force of the closed form at the constant depth: Cattaneo-Mindlin's virgin "
+                               "curve and Masing's rules (mdr_events.mindlin.tangential_force); nan off that depth"),
+}
+register_schema(SIMULATION_CONTENT, {name: dims for name, (dims, _, _) in MINDLIN_VARIABLES.items()},
+                when=("study", MINDLIN_STUDY))
+
+
+class MindlinCheck(NamedTuple):
+    """The continuum and the discrete run of :func:`mindlin_path`, each with the closed form on its samples."""
+
+    continuum: xr.Dataset
+    discrete: xr.Dataset
+
+
+def mindlin_path(params: Parameters) -> tuple[Path, float]:
+    """The path of the check and its constant depth (m)."""
+    depth = MINDLIN_DEPTH_SHARE * params.d_max
+    full = mindlin.full_slip_shift(depth, MINDLIN_FRICTION, params)
+    waypoints = [(0.0, 0.0)] + [(share * full, depth) for share in MINDLIN_TURNS]
+    return Path(np.array(waypoints), speed=params.v), depth
+
+
+def _with_closed_form(dataset: xr.Dataset, depth: float, params: Parameters) -> xr.Dataset:
+    """``dataset`` with :data:`MINDLIN_VARIABLES` on its samples at ``depth``; the springs were at rest at the
+    corner where the depth was reached (``x = 0``)."""
+    held = dataset["indentation_depth"].values[0] == depth
+    x = dataset["tangential_displacement"].values[0][held]
+    closed = np.full(dataset.sizes["time"], np.nan)
+    closed[held] = mindlin.tangential_force(np.concatenate([[0.0], x]), depth, MINDLIN_FRICTION, params)[1:]
+    (dims, units, long_name), = MINDLIN_VARIABLES.values()
+    dataset = dataset.assign(cattaneo_mindlin_force=(dims, closed[None, :], {"units": units, "long_name": long_name}))
+    dataset.attrs.update(study=MINDLIN_STUDY, mindlin_depth=depth)
+    return dataset
+
+
+def mindlin_check(params: Parameters) -> MindlinCheck:
+    """Coulomb's law (:data:`MINDLIN_FRICTION`) along :func:`mindlin_path` without adhesion: the continuum at
+    :data:`MINDLIN_SAMPLES` times and the path's corners, the discrete model at Δx = FIGURE_DX (dt = Δx/(2v))."""
+    hertz = params.replace(dgamma0=0.0, dgamma1=0.0)
+    path, depth = mindlin_path(hertz)
+    start = path.first_contact_time()
+    times = np.union1d(np.linspace(0.0, path.duration - start, MINDLIN_SAMPLES), path.corner_times[1:] - start)
+    continuum = simulate(hertz, {MINDLIN_CASE: path}, method="continuum", t=times, friction=MINDLIN_FRICTION)
+    discrete = simulate(hertz, {MINDLIN_CASE: path}, dx=FIGURE_DX, dt=0.5 * FIGURE_DX / hertz.v,
+                        friction=MINDLIN_FRICTION)
+    return MindlinCheck(_with_closed_form(continuum, depth, hertz), _with_closed_form(discrete, depth, hertz))
+
+
+class MindlinRow(NamedTuple):
+    """One method's largest difference from the closed form, over μ F_N."""
+
+    method: str
+    max_difference: float
+
+
+def mindlin_rows(check: MindlinCheck) -> list[MindlinRow]:
+    """The rows of the report's table of :func:`mindlin_check`."""
+    rows = []
+    for method, dataset in (("continuum", check.continuum), (f"discrete, Δx = {FIGURE_DX * 1e6:g} µm", check.discrete)):
+        full = MINDLIN_FRICTION.mu * float(np.nanmax(dataset["normal_force"].values))
+        difference = dataset["tangential_force"].values - dataset["cattaneo_mindlin_force"].values
+        rows.append(MindlinRow(method, float(np.nanmax(np.abs(difference))) / full))
     return rows
 
 

@@ -93,6 +93,21 @@ def test_the_other_indenters_meet_their_closed_forms(fresh):
                                                                               me.Parameters.paper().dgamma1), rel=1e-14)
 
 
+def test_the_cattaneo_mindlin_check_meets_its_closed_form(fresh):
+    """results/mindlin_coulomb*: the committed files agree with a fresh run and carry the closed form; the continuum
+    equals it to 1e-9 of μ F_N, the discrete model (Δx = 1 µm, first order) to 1e-5; the loop goes to full slip."""
+    stem = report.MINDLIN_STEM
+    continuum, discrete = fresh.mindlin
+    assert_results_agree(continuum, me.open_result(RESULTS / f"{stem}.nc"))
+    assert_results_agree(discrete, me.open_result(RESULTS / f"{stem}_discrete.nc"))
+    assert (RESULTS / f"{stem}.png").stat().st_size > 0
+    rows = report.mindlin_rows(fresh.mindlin)
+    assert rows[0].max_difference < 1e-9 and rows[1].max_difference < 1e-5
+    full = 0.3 * np.nanmax(continuum["normal_force"].values)
+    assert np.nanmax(continuum["cattaneo_mindlin_force"].values) == pytest.approx(full, rel=1e-12)
+    assert continuum.attrs["friction_law"] == "coulomb" and continuum.attrs["param_dgamma0"] == 0.0
+
+
 def test_the_comparison_catches_what_the_tolerance_does_not_allow():
     """The tolerance is relative to each variable's largest magnitude and nothing else is loose: a change of
     3 RESULT_RTOL at the largest value, a moved nan, an event kind or an attribute is a difference."""
@@ -184,10 +199,11 @@ def test_compute_sends_one_progress_message_per_step(computed):
     """reproduce numbers its steps out of a total that counts compute's as COMPUTE_STEPS."""
     _, messages = computed
     assert len(messages) == report.COMPUTE_STEPS
-    assert messages[-4].startswith("fretting at d_max, R = 30 mm")
-    assert messages[-3].startswith("fit of 4 parameters to synthetic measurements")
-    assert messages[-2].startswith("universal map: critical angles")
-    assert messages[-1].startswith("other indenters: cone, paraboloid and quartic")
+    assert messages[-5].startswith("fretting at d_max, R = 30 mm")
+    assert messages[-4].startswith("fit of 4 parameters to synthetic measurements")
+    assert messages[-3].startswith("universal map: critical angles")
+    assert messages[-2].startswith("other indenters: cone, paraboloid and quartic")
+    assert messages[-1].startswith("Cattaneo–Mindlin: Coulomb's law")
 
 
 def test_report_states_the_papers_numbers_beside_ours(fresh):
