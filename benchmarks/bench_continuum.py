@@ -33,7 +33,12 @@ Prints, measured side by side in one run (medians; the machine is shared and noi
 - power-law indenters (issue: within 3x of the paraboloid): the median time of solve + fill 2001
   samples, scenarios A and B at 20° and 30°, for the paraboloid (default), the same paraboloid as
   ``PowerLaw.paraboloid(R)``, a cone and ``n = 3`` (each with the paraboloid's contact radius at
-  ``d_max``), and the ratio of the slowest power law to the default.
+  ``d_max``), and the ratio of the slowest power law to the default;
+- friction laws (the paper's τ0 keeps its speed; Coulomb's needs no adhesion): the median time of solve + fill 2001
+  samples without adhesion for ``"tau0"``, ``"coulomb"`` (μ = 0.3) and ``"tau0+coulomb"`` (μ = 0.2), on scenario
+  A at 20° and 70° and on a fretting path at d_max/3 (a Mindlin loop, 5 cycles at 0.6 of the full-slip
+  shift), and the ratio of the slowest to ``"tau0"``; and the discrete model with Coulomb's law (its springs
+  stepped one by one) at Δx = 1 µm on the fretting path, against the continuum.
 
 Run: ``python benchmarks/bench_continuum.py``.
 """
@@ -51,8 +56,9 @@ from mdr_events.models.continuum import evaluate, extremum, solve_path
 from mdr_events.analysis.convergence import exact_references_A
 from mdr_events.models.discrete import run_discrete
 from mdr_events.models.paths import Path, exit_depth
+from mdr_events.friction import FrictionLaw
 from mdr_events.profiles import PowerLaw
-from mdr_events.theory import power_law
+from mdr_events.theory import mindlin, power_law
 from mdr_events.theory import analytic
 
 #: Relative accuracy the discrete model must reach on the reciprocating path.
@@ -137,6 +143,7 @@ def main() -> None:
     reciprocating(p, full_run)
     many_waypoints(p)
     power_laws(p)
+    friction_laws(p)
 
 
 def power_laws(p: me.Parameters) -> None:
@@ -164,6 +171,37 @@ def power_laws(p: me.Parameters) -> None:
             print(f"  scenario {scenario} at {angle:g}°: " + ", ".join(f"{name} {value * 1e3:.1f} ms"
                                                                  for name, value in times.items())
                   + f"; slowest power law / default {slowest[(scenario, angle)] / default:.2f}x (target <= 3x)")
+
+
+def friction_laws(p: me.Parameters) -> None:
+    """Solve + fill 2001 samples for each friction law without adhesion (medians of 7), and the discrete model."""
+    hertz = p.replace(dgamma0=0.0, dgamma1=0.0)
+    laws = {"tau0": FrictionLaw(), "coulomb": FrictionLaw("coulomb", mu=0.3),
+            "tau0+coulomb": FrictionLaw("tau0+coulomb", mu=0.2)}
+    depth = hertz.d_max / 3.0
+    X = 0.6 * mindlin.full_slip_shift(depth, laws["coulomb"], hertz)
+    fretting = Path(np.array([(0.0, 0.0), (0.0, depth)] + [(sign * X, depth) for sign in (1, -1) * 5] + [(0.0, depth)]),
+                    speed=hertz.v)
+    paths = {"scenario A at 20°": Path.scenario_A(20.0, hertz), "scenario A at 70°": Path.scenario_A(70.0, hertz),
+             "fretting at d_max/3": fretting}
+    print("friction laws without adhesion: solve + fill 2001 samples, median of 7")
+    for label, path in paths.items():
+        times = {}
+        for name, friction in laws.items():
+            def run(path=path, friction=friction):
+                solution = solve_path(hertz, path, friction=friction)
+                return evaluate(solution, np.linspace(0.0, solution.end_time * 1.0005, 2001))
+
+            run()
+            times[name] = median_time(run)
+        slowest = max(times.values())
+        print(f"  {label}: " + ", ".join(f"{name} {value * 1e3:.1f} ms" for name, value in times.items())
+              + f"; slowest / tau0 {slowest / times['tau0']:.2f}x")
+    dt = 0.5e-6 / hertz.v
+    discrete_time = median_time(lambda: run_discrete(hertz, [fretting], 1e-6, dt, friction=laws["coulomb"]), repeat=3)
+    continuum_time = median_time(lambda: solve_path(hertz, fretting, friction=laws["coulomb"]))
+    print(f"  fretting, coulomb: discrete at 1 µm (springs one by one) {discrete_time:.2f} s, continuum solve_path "
+          f"{continuum_time * 1e3:.1f} ms: {discrete_time / continuum_time:.0f}x")
 
 
 def many_waypoints(p: me.Parameters, counts: tuple[int, ...] = (400, 1600)) -> None:
