@@ -39,9 +39,9 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.analysis.validate import COMPARED, VALIDATED_EVENTS, resolve_path, validate
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import solve_path
+from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.parameters import Parameters
 from mdr_events.friction import FrictionLaw, as_friction_law
-from mdr_events.profiles import PowerLaw
 
 __all__ = ["convergence_study", "fit_observed_order", "OrderFit", "CONVERGENCE_STUDY_CONTENT", "NORMS",
            "CONVERGES_SHARE", "SPREAD_FACTOR", "MIN_SPACINGS"]
@@ -140,7 +140,7 @@ def _spacings(candidates_by_dx) -> list[float]:
 def convergence_study(candidates_by_dx: Mapping[float, object], params: Parameters, path, alpha: float | None = None,
                       *, names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
                       time_origin="first_contact", expected_order: float = 1.0,
-                      limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None,
+                      limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
                       friction: FrictionLaw | str | None = None) -> xr.Dataset:
     """The observed order of convergence of a simulator to the exact continuum, from three or more spacings.
 

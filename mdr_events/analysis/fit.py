@@ -53,9 +53,8 @@ from mdr_events.analysis.validate import resolve_path, times_from_contact
 from mdr_events.io.datasets import figure_of, register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
-from mdr_events.models.indenters import check_simulated_profile, profile_attrs
+from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs
 from mdr_events.models.paths import Path
-from mdr_events.profiles import PowerLaw
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 from mdr_events.validation import check_real, shown
 
@@ -303,7 +302,7 @@ def _shifted(path: Path, depth_offset: float) -> Path:
 
 
 def model_curves(params: Parameters, path: Path, times: np.ndarray, tolerances: Tolerances,
-                 limits: Limits, quantities: Sequence[str], profile: PowerLaw | None = None) -> ModelCurves:
+                 limits: Limits, quantities: Sequence[str], profile: SimulatedProfile = None) -> ModelCurves:
     """The model's curves at ``times`` (s on the path's clock) by the module's rule out of contact: 0 where
     the indenter is out of the elastomer, ``nan`` (left out) before a path that starts inside it and after
     one that ends in contact (the indenter ``profile``; ``None``: the paraboloid of ``params.R``)."""
@@ -332,7 +331,7 @@ def synthetic_measurement(params: Parameters, path, alpha: float | None = None, 
                           relative_noise: float = 0.0, seed: int = 0,
                           quantities: Sequence[str] = ("normal_force", "tangential_force", "contact_area"),
                           time_shift: float = 0.0, tolerances: Tolerances = Tolerances(),
-                          limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None) -> xr.Dataset:
+                          limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None) -> xr.Dataset:
     """Curves a measurement of this model would give: the continuum at ``times`` (s on the path's clock,
     the clock then reading ``times + time_shift``) plus white noise of ``relative_noise`` times each
     quantity's largest magnitude (``numpy.random.default_rng(seed)``), as a Dataset :func:`fit` reads
@@ -358,7 +357,7 @@ class _Problem:
     """The weighted residuals of one fit, and a count of the continuum solves."""
 
     def __init__(self, free: FreeParameters, measurement: Measurement, path_of: Callable[[Parameters], Path],
-                 tolerances: Tolerances, limits: Limits, profile: PowerLaw | None = None):
+                 tolerances: Tolerances, limits: Limits, profile: SimulatedProfile = None):
         self.free, self.measurement, self.path_of = free, measurement, path_of
         self.tolerances, self.limits, self.profile = tolerances, limits, profile
         self.solves = 0
@@ -646,7 +645,7 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
         bounds: Mapping[str, tuple[float, float]] | None = None, noise: Mapping[str, float] | None = None,
         names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
         time_origin="first_contact", tolerances: Tolerances = Tolerances(),
-        limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None) -> FitResult:
+        limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None) -> FitResult:
     """Fit the continuum model to measured curves by weighted least squares.
 
     Parameters

@@ -36,11 +36,10 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import EventKind, Tolerances, extremum, solve_path, tangential_work
 from mdr_events.models.continuum.solution import scan_spans
 from mdr_events.models import indenters
-from mdr_events.models.indenters import check_simulated_profile
+from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_UNITS, Parameters
-from mdr_events.profiles import PowerLaw
 from mdr_events.validation import check_choice, check_count, check_real, shown
 
 __all__ = ["sweep", "run_chunk", "SweepSpec", "QUANTITIES", "CLOSED_FORM_QUANTITIES", "SWEEP_CONTENT", "SWEPT_NAMES",
@@ -103,7 +102,7 @@ class SweepSpec:
     history_samples: int | None = None
     limits: Limits = DEFAULT_LIMITS
     #: the indenter (``None``: the paraboloid of ``R``)
-    profile: PowerLaw | None = None
+    profile: SimulatedProfile = None
 
     def run(self, values: Sequence[float]) -> tuple[dict[str, float], np.ndarray | None]:
         """The :attr:`quantities` of the run at ``values`` (one per swept name), and its history (rows
@@ -132,7 +131,7 @@ def _deepest_time(path: Path) -> float:
 
 
 def _continuum_quantities(params: Parameters, path: Path, tolerances: Tolerances, limits: Limits,
-                          times: np.ndarray | None, profile: PowerLaw | None = None
+                          times: np.ndarray | None, profile: SimulatedProfile = None
                           ) -> tuple[dict[str, float], np.ndarray | None]:
     solution = solve_path(params, path, tolerances, limits, profile)
     scan = scan_spans(solution)  # one scan serves every extremum
@@ -170,7 +169,7 @@ DISCRETE_STEP_PER_SPACING = 0.5
 
 
 def _discrete_quantities(params: Parameters, path: Path, dx: float | None, n_steps: int | None, limits: Limits,
-                         history_times: np.ndarray | None, profile: PowerLaw | None = None
+                         history_times: np.ndarray | None, profile: SimulatedProfile = None
                          ) -> tuple[dict[str, float], np.ndarray | None]:
     dt = None if n_steps is not None or dx is None else DISCRETE_STEP_PER_SPACING * dx / path.speed
     run = simulate(params, path, method="discrete", dx=dx, dt=dt, n_steps=n_steps, limits=limits,
@@ -433,7 +432,7 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
           quantities: Sequence[str] | None = None, scheduler: str | None = None, workers: int | None = None,
           chunk_size: int = DEFAULT_CHUNK, history_samples: int | None = None, limits: Limits = DEFAULT_LIMITS,
           store: str | os.PathLike | None = None, resume: bool = True,
-          progress: Callable[[int, int], None] | None = None, profile: PowerLaw | None = None) -> xr.Dataset:
+          progress: Callable[[int, int], None] | None = None, profile: SimulatedProfile = None) -> xr.Dataset:
     """Run the model over a grid of parameters and return each run's scalar quantities.
 
     Parameters

@@ -46,12 +46,11 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.io.candidates import Candidate, read_candidate
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
-from mdr_events.models.indenters import check_simulated_profile, profile_attrs
+from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import scenario_paths
 from mdr_events.parameters import Parameters
 from mdr_events.friction import FrictionLaw, as_friction_law, friction_attrs
-from mdr_events.profiles import PowerLaw
 
 __all__ = ["validate", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
 
@@ -74,7 +73,7 @@ TIME_AXIS_SHARE = 1e-3
 TIME_ORIGINS = ("first_contact", "path_start")
 
 
-def resolve_path(params: Parameters, path, alpha, profile: PowerLaw | None = None) -> Path:
+def resolve_path(params: Parameters, path, alpha, profile: SimulatedProfile = None) -> Path:
     """The :class:`Path` validated: ``path`` itself, or the scenario's path at the one angle ``alpha`` (ending below
     the jump-off of ``profile``, ``None``: the paraboloid)."""
     if isinstance(path, Path):
@@ -170,7 +169,7 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
              names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
              time_origin="first_contact", tolerance: float = 1e-3,
              tolerances: Tolerances = Tolerances(), solution: PathSolution | None = None,
-             limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None,
+             limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
              friction: FrictionLaw | str | None = None) -> xr.Dataset:
     """Compare a simulator's output with the exact continuum on the same path, sample and event by event.
 

@@ -42,9 +42,9 @@ from mdr_events.io.candidates import CANDIDATE_QUANTITIES, unit_factor
 from mdr_events.io.files import check_output_stem, prepare_output_directory
 from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters, from_preset
-from mdr_events.profiles import PowerLaw
+from mdr_events.profiles import FlatPunch, PowerLaw
 from mdr_events.friction import FRICTION_LAWS, FrictionLaw
-from mdr_events.models.indenters import check_simulated_profile
+from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.theory import symbolic
 
 #: The first line of ``mdr-events --help`` (plain text: argparse prints it as it is).
@@ -130,12 +130,20 @@ def _command_phase_diagram(args: argparse.Namespace) -> None:
 
 
 def _profile_option(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--power-law", type=float, nargs=2, default=None, metavar=("C", "N"),
-                        help="the indenter f = c r^n (c in m^(1-n), n >= 1: 1 a cone) instead of the paraboloid of R")
+    indenter = parser.add_mutually_exclusive_group()
+    indenter.add_argument("--power-law", type=float, nargs=2, default=None, metavar=("C", "N"),
+                          help="the indenter f = c r^n (c in m^(1-n), n >= 1: 1 a cone) instead of the paraboloid of R")
+    indenter.add_argument("--flat-punch", type=float, default=None, metavar="RADIUS",
+                          help="the flat punch of this radius (m) instead of the paraboloid of R")
 
 
-def _profile(args: argparse.Namespace) -> PowerLaw | None:
-    """The ``--power-law C N`` indenter (``None``: the paraboloid of the parameters' ``R``)."""
+def _profile(args: argparse.Namespace) -> SimulatedProfile:
+    """The ``--power-law C N`` or ``--flat-punch RADIUS`` indenter (``None``: the paraboloid of the parameters' ``R``)."""
+    if getattr(args, "flat_punch", None) is not None:
+        try:
+            return check_simulated_profile(FlatPunch(args.flat_punch))
+        except (TypeError, ValueError) as error:
+            raise UsageError(f"--flat-punch {args.flat_punch:g}: {error}") from None
     if getattr(args, "power_law", None) is None:
         return None
     try:

@@ -95,10 +95,10 @@ from mdr_events.io.files import check_file_path, check_output_stem, prepare_outp
 from mdr_events.limits import DEFAULT_LIMITS, LIMIT_UNITS, Limits, parse_limit
 from mdr_events.models.continuum import Tolerances
 from mdr_events.models.paths import Path
-from mdr_events.models.indenters import check_simulated_profile
+from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.models.simulate import scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
-from mdr_events.profiles import PowerLaw
+from mdr_events.profiles import FlatPunch, PowerLaw
 from mdr_events.validation import shown
 
 if TYPE_CHECKING:
@@ -165,7 +165,7 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
               "n_steps": ("integer", False), "quantities": ("strings", False), "chunk_size": ("integer", False),
               "scheduler": ("string", False), "workers": ("integer", False), "history_samples": ("integer", False)},
     "limits": {name: ("string or number", False) for name in LIMIT_UNITS},
-    "profile": {"c": ("number", True), "n": ("number", True)},
+    "profile": {"c": ("number", False), "n": ("number", False), "radius": ("number", False)},
     "output": {"directory": ("string", True), "name": ("string", False)},
 }
 REQUIRED_TABLES = ("output",)
@@ -203,16 +203,22 @@ class Study:
         return limits
 
     @property
-    def profile(self) -> PowerLaw | None:
-        """The ``[profile]`` table's indenter ``f = c rⁿ`` (``n >= 1``), as ``--power-law C N`` on the command
-        line; ``None`` without it: the paraboloid of ``R``."""
+    def profile(self) -> SimulatedProfile:
+        """The ``[profile]`` table's indenter: ``c`` and ``n`` for ``f = c rⁿ`` (``n >= 1``), as ``--power-law C N``
+        on the command line, or ``radius`` for the flat punch, as ``--flat-punch RADIUS``; ``None`` without it: the
+        paraboloid of ``R``."""
         if "profile" not in self.tables:
             return None
         table = self.tables["profile"]
+        where = f"{os.fspath(self.source)}: [profile]"
+        if sorted(table) not in (["c", "n"], ["radius"]):
+            raise StudyError(f"{where} has the keys {sorted(table)}; allowed: c and n (a power law f = c r^n) or radius "
+                             "(a flat punch)")
         try:
-            return check_simulated_profile(PowerLaw(table["c"], table["n"]))
+            profile = FlatPunch(table["radius"]) if "radius" in table else PowerLaw(table["c"], table["n"])
+            return check_simulated_profile(profile)
         except (ValueError, TypeError) as error:
-            raise StudyError(f"{os.fspath(self.source)}: [profile] {error}") from None
+            raise StudyError(f"{where} {error}") from None
 
 
 def _check_table(table: str, content: Any, where: str) -> None:

@@ -67,6 +67,7 @@ from mdr_events.theory import symbolic
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from mdr_events.models import indenters
+from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.profiles import PowerLaw
 from mdr_events.friction import TAU0, FrictionLaw, as_friction_law
 from mdr_events.theory import mindlin
@@ -132,7 +133,7 @@ def _spring_count(params: Parameters, dx: float, max_depth: float, profile) -> i
         count *= 2
 
 
-def check_spacing(params: Parameters, dx: float, depth: float | None = None, profile: PowerLaw | None = None) -> float:
+def check_spacing(params: Parameters, dx: float, depth: float | None = None, profile: SimulatedProfile = None) -> float:
     """``dx`` as a float; reject a spring spacing that puts fewer than 10 springs per side in contact at
     the deepest point (``d_max``, or the given ``depth`` of a custom path) of ``profile`` (``None``: the paraboloid)."""
     dx = check_real("dx", dx, "a finite spring spacing > 0 (m)", lambda value: value > 0)
@@ -565,7 +566,7 @@ def _time_grid_size(paths: list[Path], dt: float) -> tuple[np.ndarray, np.ndarra
 
 
 def check_discrete_size(params: Parameters, paths: list[Path], dx: float, dt: float, limits: Limits,
-                        profile: PowerLaw | None = None) -> None:
+                        profile: SimulatedProfile = None) -> None:
     """Estimate a discrete run's time steps, springs and memory before anything is allocated, and refuse it
     past ``limits`` (:class:`~mdr_events.limits.ResourceLimitError` saying the estimate and how to raise it)."""
     _, _, n_time = _time_grid_size(paths, dt)

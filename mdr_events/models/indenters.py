@@ -1,6 +1,7 @@
-"""The indenter the simulators take: the paper's paraboloid (``profile=None``, of ``Parameters.R``) or a
-power law ``f = c rⁿ`` (:class:`~mdr_events.profiles.PowerLaw`, ``n >= 1``), and what the paths and the
-discrete model read off it: the radius of a depth on a branch, the jump-off, the springs' profile ``g(x)``.
+"""The indenter the simulators take: the paper's paraboloid (``profile=None``, of ``Parameters.R``), a
+power law ``f = c rⁿ`` (:class:`~mdr_events.profiles.PowerLaw`, ``n >= 1``) or the flat punch
+(:class:`~mdr_events.profiles.FlatPunch`), and what the paths and the discrete model read off it: the radius
+of a depth on a branch, the jump-off, the springs' profile ``g(x)``.
 
 For ``profile=None`` every function is the paper's own (:mod:`mdr_events.theory.analytic`), so that the
 paraboloid's runs are those of before, bit for bit.
@@ -16,7 +17,7 @@ from mdr_events.parameters import Parameters
 from mdr_events.profiles import FlatPunch, PowerLaw, profile_attrs
 from mdr_events.theory import analytic, power_law, symbolic
 
-__all__ = ["MIN_SIMULATED_EXPONENT", "check_simulated_profile", "branch_radius", "jump_off", "spring_profile",
+__all__ = ["MIN_SIMULATED_EXPONENT", "SimulatedProfile", "check_simulated_profile", "branch_radius", "jump_off", "spring_profile",
            "profile_attrs", "critical_angle"]
 
 #: The simulators take power laws from the cone on (a profile with ``n < 1`` has an infinite slope at the
@@ -24,47 +25,56 @@ __all__ = ["MIN_SIMULATED_EXPONENT", "check_simulated_profile", "branch_radius",
 MIN_SIMULATED_EXPONENT = 1.0
 
 
-def check_simulated_profile(profile) -> PowerLaw | None:
-    """``profile`` if the simulators take it (``None`` or a :class:`PowerLaw` with ``n >= 1``); else an error
-    naming it and what is allowed."""
-    if profile is None:
-        return None
-    if isinstance(profile, FlatPunch):
-        raise ValueError(f"profile={profile!r} is not allowed in the simulators (a flat punch keeps its radius in "
-                         "contact: its closed forms are in mdr_events.power_law); allowed: None (the paraboloid of "
-                         f"R) or a PowerLaw with n >= {MIN_SIMULATED_EXPONENT:g}")
+#: An indenter the simulators take (``None``: the paraboloid of ``Parameters.R``).
+SimulatedProfile = PowerLaw | FlatPunch | None
+
+
+def check_simulated_profile(profile) -> SimulatedProfile:
+    """``profile`` if the simulators take it (``None``, a :class:`PowerLaw` with ``n >= 1`` or a :class:`FlatPunch`);
+    else an error naming it and what is allowed."""
+    if profile is None or isinstance(profile, FlatPunch):
+        return profile
     if not isinstance(profile, PowerLaw):
         raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: None (the "
-                        f"paraboloid of R) or a PowerLaw with n >= {MIN_SIMULATED_EXPONENT:g}")
+                        f"paraboloid of R), a PowerLaw with n >= {MIN_SIMULATED_EXPONENT:g} or a FlatPunch")
     if not profile.n >= MIN_SIMULATED_EXPONENT:
         raise ValueError(f"PowerLaw.n={profile.n!r} is not allowed in the simulators; allowed: n >= "
                          f"{MIN_SIMULATED_EXPONENT:g} (the cone and blunter)")
     return profile
 
 
-def branch_radius(depth, params: Parameters, work_of_adhesion: float, profile: PowerLaw | None = None):
-    """The contact radius on the branch of ``work_of_adhesion`` at ``depth`` (``nan`` below its jump-off)."""
+def branch_radius(depth, params: Parameters, work_of_adhesion: float, profile: SimulatedProfile = None):
+    """The contact radius on the branch of ``work_of_adhesion`` at ``depth`` (``nan`` below its jump-off; the
+    flat punch's radius down to its jump-off)."""
     if profile is None:
         return analytic.jkr_contact_radius(depth, params, work_of_adhesion)
+    if isinstance(profile, FlatPunch):
+        depth = np.asarray(depth, dtype=float)
+        bottom = power_law.jump_off(profile, params, work_of_adhesion)["depth"]
+        radius = np.where(depth >= bottom, profile.radius, np.nan)
+        return float(radius) if radius.ndim == 0 else radius
     return power_law.contact_radius(depth, profile, params, work_of_adhesion)
 
 
-def jump_off(params: Parameters, work_of_adhesion: float, profile: PowerLaw | None = None) -> dict[str, float]:
+def jump_off(params: Parameters, work_of_adhesion: float, profile: SimulatedProfile = None) -> dict[str, float]:
     """The branch's jump-off under displacement control (``contact_radius``, ``depth``, ``normal_force``)."""
     if profile is None:
         return analytic.jump_off(params, work_of_adhesion)
     return power_law.jump_off(profile, params, work_of_adhesion)
 
 
-def spring_profile(params: Parameters, profile: PowerLaw | None = None) -> Callable[[np.ndarray], np.ndarray]:
-    """The springs' profile ``g(x)``: ``x²/R`` (4), or ``κ c |x|ⁿ`` (3), as derived by :mod:`~mdr_events.theory.symbolic`."""
+def spring_profile(params: Parameters, profile: SimulatedProfile = None) -> Callable[[np.ndarray], np.ndarray]:
+    """The springs' profile ``g(x)``: ``x²/R`` (4), or ``κ c |x|ⁿ`` (3), as derived by :mod:`~mdr_events.theory.symbolic`;
+    the flat punch's ``0`` under its face and ``+inf`` beyond it (no spring there is ever touched)."""
     if profile is None:
         relation = symbolic.relation("profile_paraboloid")
         return lambda x: relation.numeric(x, params.R)
+    if isinstance(profile, FlatPunch):
+        return lambda x: np.where(np.abs(np.asarray(x, dtype=float)) <= profile.radius, 0.0, np.inf)
     return lambda x: power_law.equivalent_profile(x, profile)
 
 
-def critical_angle(params: Parameters, scenario: str, profile: PowerLaw | None = None) -> float:
+def critical_angle(params: Parameters, scenario: str, profile: SimulatedProfile = None) -> float:
     """Scenario A's or B's critical angle (adhesive) for ``profile`` (:func:`mdr_events.theory.analytic.critical_angle`
     for the paraboloid, :mod:`mdr_events.theory.power_law` for a power law)."""
     if profile is None:

@@ -24,8 +24,8 @@ import numpy as np
 
 from mdr_events.theory import analytic
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import PowerLaw
 from mdr_events.models import indenters
+from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.validation import check_real, real_array, shown, validate_alpha
 
 __all__ = ["Path", "exit_depth"]
@@ -36,7 +36,7 @@ __all__ = ["Path", "exit_depth"]
 MAX_JUMP_OFF_DEPTHS = 1e6
 
 
-def exit_depth(params: Parameters, profile: PowerLaw | None = None) -> float:
+def exit_depth(params: Parameters, profile: SimulatedProfile = None) -> float:
     """A depth safely below the displacement-controlled jump-off of the ``Δγ1`` branch (of ``profile``:
     ``None`` is the paper's paraboloid).
 
@@ -129,7 +129,7 @@ class Path:
         return cls(np.vstack([pieces[:, 0], pieces[-1:, 1]]), speed)
 
     @classmethod
-    def scenario_A(cls, alpha: float, params: Parameters, profile: PowerLaw | None = None) -> "Path":
+    def scenario_A(cls, alpha: float, params: Parameters, profile: SimulatedProfile = None) -> "Path":
         """Eq. (14): in at angle α from the surface to ``d_max``, then vertically out."""
         angle = _check_angle(alpha)
         if angle == 0.0:
@@ -140,7 +140,7 @@ class Path:
 
     @classmethod
     def scenario_B(cls, alpha: float, params: Parameters, slide_length: float | None = None,
-                   profile: PowerLaw | None = None) -> "Path":
+                   profile: SimulatedProfile = None) -> "Path":
         """Eq. (19): vertically to ``d_max``, then out at angle α below the jump-off depth.
 
         At α = 0 the motion is purely tangential at ``d_max`` and never comes
@@ -161,7 +161,7 @@ class Path:
 
     @classmethod
     def scenario_B_indentation(cls, alpha: float, params: Parameters, final_depth: float | None = None,
-                               profile: PowerLaw | None = None) -> "Path":
+                               profile: SimulatedProfile = None) -> "Path":
         """The "+" branch of Fig. 9b: vertically to ``d_max``, further in at angle α to
         ``final_depth`` (default ``2 d_max``), then vertically out."""
         angle = _check_angle(alpha)

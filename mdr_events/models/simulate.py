@@ -14,8 +14,8 @@ from mdr_events.models.continuum.extrema import EXTREMA_KINDS, EXTREMA_QUANTITIE
 from mdr_events.models.discrete import check_spacing, run_discrete
 from mdr_events.models.paths import Path
 from mdr_events.models import indenters
+from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import PowerLaw
 from mdr_events.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.models.continuum.caps import check_supported
 from mdr_events.theory import analytic
@@ -106,7 +106,7 @@ register_schema(SIMULATION_CONTENT, {name: (CUSTOM_DIMENSION,) for name in PATH_
 SLIP_DIGITS = 1e-9
 
 
-def check_path_extent(params: Parameters, path: Path, label: str, profile: PowerLaw | None = None) -> None:
+def check_path_extent(params: Parameters, path: Path, label: str, profile: SimulatedProfile = None) -> None:
     """Reject a path so long that ``x − X(ξ)`` cannot be compared with ``ū(a)`` in double precision.
 
     The positions along the path are rounded to ``eps · |x|``; the slip
@@ -175,7 +175,7 @@ def _custom_paths(scenario: Path | Sequence[Path] | Mapping[str, Path]) -> dict[
     return dict(zip(labels, paths))
 
 
-def simulation_cases(params: Parameters, scenario, alpha, profile: PowerLaw | None = None) -> Cases:
+def simulation_cases(params: Parameters, scenario, alpha, profile: SimulatedProfile = None) -> Cases:
     """The cases of ``simulate(params, scenario, alpha)``, each path checked by :func:`check_path_extent`
     (the scenarios' paths end below the jump-off of ``profile``'s ``Δγ1`` branch).
 
@@ -210,7 +210,7 @@ def simulation_cases(params: Parameters, scenario, alpha, profile: PowerLaw | No
     return Cases(list(custom.values()), CUSTOM_DIMENSION, np.array(list(custom), dtype=str))
 
 
-def scenario_paths(params: Parameters, scenario, alpha, profile: PowerLaw | None = None) -> tuple[list[Path], np.ndarray]:
+def scenario_paths(params: Parameters, scenario, alpha, profile: SimulatedProfile = None) -> tuple[list[Path], np.ndarray]:
     """The paths of :func:`simulation_cases` and their labels (angles in degrees, or case names)."""
     cases = simulation_cases(params, scenario, alpha, profile)
     return cases.paths, cases.labels
@@ -284,7 +284,7 @@ def simulate(
     samples: int | None = None,
     tolerances: Tolerances | None = None,
     limits: Limits | None = None,
-    profile: PowerLaw | None = None,
+    profile: SimulatedProfile = None,
     friction: FrictionLaw | str | None = None,
 ) -> xr.Dataset:
     """Simulate indentation and detachment along straight paths.
@@ -361,7 +361,7 @@ def simulate(
     profile = indenters.check_simulated_profile(profile)
     friction = as_friction_law(friction)
     if method == "continuum":
-        check_supported(friction, params)
+        check_supported(friction, params, profile)
     cases = simulation_cases(params, scenario, alpha, profile)
     shape = {**indenters.profile_attrs(profile), **friction_attrs(friction)}
     if method == "continuum":
@@ -393,7 +393,7 @@ def _scenario_name(scenario, cases: Cases) -> str:
 
 
 def _simulate_continuum(params: Parameters, scenario, cases: Cases, t, samples, tolerances,
-                        limits: Limits, profile: PowerLaw | None = None, friction: FrictionLaw = TAU0) -> xr.Dataset:
+                        limits: Limits, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> xr.Dataset:
     samples = DEFAULT_SAMPLES if samples is None else check_count("samples", samples, 2)
     if tolerances is None:
         tolerances = Tolerances()

@@ -207,7 +207,9 @@ def test_results_say_which_parameters_came_from_the_preset(tmp_path, capsys):
     ('[sweep]\ngrid = { tau0 = "x" }\n', "[sweep] grid = {'tau0': 'x'} is not allowed"),
     ('[sweep]\ngrid = { tau0 = [1e3] }\nworkers = "2"\n', "[sweep] workers = '2' is not allowed"),
     ('[sweep]\ngrid = { tau0 = [1e3] }\n[limits]\nsteps = "many"\n', "[limits] 'steps=many' is not allowed"),
-    ('[profile]\nc = 2000.0\n', "[profile] lacks the required key(s) n"),
+    ('[profile]\nc = 2000.0\n[phase_diagram]\nscenarios = ["A"]\n', "[profile] has the keys ['c']; allowed: c and n"),
+    ('[profile]\nradius = 1e-3\nn = 2.0\n[phase_diagram]\nscenarios = ["A"]\n', "[profile] has the keys ['n', 'radius']"),
+    ('[profile]\nradius = -1e-3\n[phase_diagram]\nscenarios = ["A"]\n', "[profile] FlatPunch.radius=-0.001 is not allowed"),
     ('[profile]\nc = 2000.0\nn = 0.5\n[phase_diagram]\nscenarios = ["A"]\n', "[profile] PowerLaw.n=0.5 is not allowed in the simulators; allowed: n >= 1"),
     ('[profile]\nc = -1.0\nn = 2.0\n[phase_diagram]\nscenarios = ["A"]\n', "[profile] PowerLaw.c=-1.0 is not allowed"),
 ])

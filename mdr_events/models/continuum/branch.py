@@ -1,5 +1,6 @@
 """One adhesive branch (9) of the contact radius, evaluated for Python floats and arrays: the paper's
-paraboloid (:class:`Branch`) or a power law ``f = c rⁿ`` (:class:`PowerLawBranch`)."""
+paraboloid (:class:`Branch`), a power law ``f = c rⁿ`` (:class:`PowerLawBranch`) or the flat punch
+(:class:`FlatPunchBranch`)."""
 
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ import numpy as np
 
 from mdr_events.theory import analytic, power_law, symbolic
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import PowerLaw
+from mdr_events.profiles import FlatPunch, PowerLaw
 
 #: A depth this share below the jump-off depth still gives the jump-off radius: a radius pinned just
 #: outside the fold is released at a depth that rounds below it.
@@ -45,6 +46,10 @@ class Branch:
     def depth(self, a: float) -> float:
         """Depth of the contact of radius ``a`` on this branch, eq. (9) (0 at ``a = 0``)."""
         return self._depth(a, *self._arguments) if a > 0 else 0.0
+
+    def growth_depth(self, a: float) -> float:
+        """The depth beyond which a contact of radius ``a`` grows along this (``Δγ0``) branch: :meth:`depth`."""
+        return self.depth(a)
 
     def slope(self, a: float) -> float:
         """``dd/da`` on this branch; its limits at ``a → 0``: 0 for Hertz, ``-inf`` with adhesion."""
@@ -136,6 +141,54 @@ class PowerLawBranch(Branch):
         return root * root
 
 
-def make_branch(params: Parameters, work: float, profile: PowerLaw | None = None) -> Branch:
+class FlatPunchBranch(Branch):
+    """The flat punch of radius ``R_p`` (:class:`~mdr_events.profiles.FlatPunch`): every spring under it has
+    ``g = 0``, so the contact is the punch's whole face from the first touch (``d >= 0``) on and never grows
+    beyond it (:meth:`growth_depth` is ``+inf``); its edge springs reach Heß's limit (8) at
+    ``d = −sqrt(2π R_p Δγ / E*)``, the jump-off, where every spring lets go at once (Kendall's pull-off).
+
+    The radius of any depth down to the jump-off is ``R_p``; the branch's depth at ``R_p`` is the jump-off's
+    (where detachment starts); no span ever moves the radius (the planner pins it).
+    """
+
+    def __init__(self, params: Parameters, work: float, profile: FlatPunch):
+        self.params, self.work, self.profile = params, work, profile
+        point = power_law.jump_off(profile, params, work)
+        self.jump_off_radius, self.jump_off_depth = point["contact_radius"], point["depth"]
+        self._floor = math.sqrt(self.jump_off_radius)
+
+    def depth(self, a: float) -> float:
+        return self.jump_off_depth if a > 0 else 0.0
+
+    def growth_depth(self, a: float) -> float:
+        return math.inf if a >= self.jump_off_radius else 0.0
+
+    def slope(self, a: float) -> float:
+        return 0.0
+
+    def integral(self, a: float) -> float:
+        """``∫_0^a g dξ``: the springs under the punch rest on a flat face (``g = 0``)."""
+        return 0.0
+
+    def depth_term(self, a: float) -> float:
+        return 0.0
+
+    def depths(self, a: np.ndarray) -> np.ndarray:
+        a = np.asarray(a, dtype=float)
+        return np.where(a > 0, self.jump_off_depth, 0.0)
+
+    def radii(self, depth: np.ndarray) -> np.ndarray:
+        depth = np.asarray(depth, dtype=float)
+        return np.where(depth >= self.jump_off_depth * (1.0 + FOLD_SHARE), self.jump_off_radius, np.nan)
+
+    def radius(self, depth: float, rtol: float) -> float:
+        return self.jump_off_radius if depth >= self.jump_off_depth * (1.0 + FOLD_SHARE) else math.nan
+
+
+def make_branch(params: Parameters, work: float, profile: PowerLaw | FlatPunch | None = None) -> Branch:
     """The branch of ``work`` for ``profile`` (``None``: the paraboloid of ``params.R``, the paper's)."""
-    return Branch(params, work) if profile is None else PowerLawBranch(params, work, profile)
+    if profile is None:
+        return Branch(params, work)
+    if isinstance(profile, FlatPunch):
+        return FlatPunchBranch(params, work, profile)
+    return PowerLawBranch(params, work, profile)

@@ -15,6 +15,7 @@ from typing import NamedTuple
 
 from mdr_events.friction import FrictionLaw
 from mdr_events.parameters import Parameters
+from mdr_events.profiles import FlatPunch
 from mdr_events.theory import mindlin, symbolic
 
 
@@ -42,11 +43,15 @@ def caps_of(friction: FrictionLaw, params: Parameters) -> Caps:
     return Caps(K, mindlin.coulomb_cap_ratio(friction, params))
 
 
-def check_supported(friction: FrictionLaw, params: Parameters) -> None:
+def check_supported(friction: FrictionLaw, params: Parameters, profile=None) -> None:
     """Refuse Coulomb's part with adhesion: springs in tension hold no Coulomb shift, and the anchors laid along
-    the adhesive branch are no longer seen as single pieces by the caps (the discrete method runs it)."""
+    the adhesive branch are no longer seen as single pieces by the caps (the discrete method runs it); and with
+    the flat punch, whose springs all rest on ``g = 0`` (the caps' coordinates have no ``g`` to follow)."""
     if friction.coulomb_mu == 0.0:  # no Coulomb part (μ = 0 adds nothing to the caps)
         return
+    if isinstance(profile, FlatPunch):
+        raise ValueError(f"profile={profile!r} is not allowed with the friction law {friction.law!r} in the continuum "
+                         "method; allowed: None or a PowerLaw, or method='discrete'")
     for name in ("dgamma0", "dgamma1"):
         value = getattr(params, name)
         if value != 0.0:

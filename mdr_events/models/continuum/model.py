@@ -8,10 +8,10 @@ from typing import NamedTuple
 
 import numpy as np
 
-from mdr_events.theory import analytic, power_law
+from mdr_events.theory import analytic, power_law, symbolic
 from mdr_events.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import PowerLaw
+from mdr_events.profiles import FlatPunch, PowerLaw
 from mdr_events.models.paths import Path
 from .branch import Branch, make_branch
 from .caps import caps_of, check_supported
@@ -26,7 +26,7 @@ class ContinuumModel:
     ----------
     grow, shrink : Branch
         The ``Δγ0`` (attach) and ``Δγ1`` (detach) branches of (9).
-    profile : PowerLaw or None
+    profile : PowerLaw, FlatPunch or None
         The indenter (``None``: the paper's paraboloid of ``params.R``).
     friction : FrictionLaw
         The cap on the springs' shifts (:mod:`mdr_events.friction`).
@@ -36,9 +36,9 @@ class ContinuumModel:
         Critical shift per contact radius of ``τ0``'s part, ``ū(a) = K a`` (13) (0 for ``"coulomb"``).
     """
 
-    def __init__(self, params: Parameters, tolerances: Tolerances, profile: PowerLaw | None = None,
+    def __init__(self, params: Parameters, tolerances: Tolerances, profile: PowerLaw | FlatPunch | None = None,
                  friction: FrictionLaw = TAU0):
-        check_supported(friction, params)
+        check_supported(friction, params, profile)
         self.params = params
         self.tolerances = tolerances
         self.profile = profile
@@ -49,9 +49,12 @@ class ContinuumModel:
         self.K = self.caps.K
 
     def normal_force(self, depth, radius):
-        """``F_N`` (10) of the springs in ``|x| < a`` at depth ``d``, vectorised, for the model's profile."""
+        """``F_N`` (10) of the springs in ``|x| < a`` at depth ``d``, vectorised, for the model's profile (the flat
+        punch's ``2 E* a d``, ``a`` its radius in contact and 0 out of it)."""
         if self.profile is None:
             return analytic.normal_force(depth, radius, self.params)
+        if isinstance(self.profile, FlatPunch):
+            return symbolic.relation("flat_punch_normal_force").numeric(depth, radius, self.params.E_star)
         return power_law.normal_force(depth, radius, self.profile, self.params)
 
     def branch(self, regime: Regime) -> Branch:

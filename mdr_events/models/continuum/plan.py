@@ -90,7 +90,7 @@ def _plan_inward(model: ContinuumModel, state: ContactState, segment: Segment) -
     """Going in: growth on the Δγ0 branch (springs may jump in first), or pinned until the depth reaches it."""
     t, a = state.t, state.radius
     d = segment.d(t)
-    threshold = model.grow.depth(a)
+    threshold = model.grow.growth_depth(a)
     if d < threshold - _depth_scale(model, segment, t):
         t_end = min(segment.t1, segment.time_at_depth(threshold))
         return SpanPlan(Action.CONTACT, Regime.PINNED, t, t_end, _end_kind(t_end, segment, EventKind.GROWTH_RESUMES),

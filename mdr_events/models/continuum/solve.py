@@ -15,8 +15,7 @@ import numpy as np
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
-from mdr_events.models.indenters import check_simulated_profile
-from mdr_events.profiles import PowerLaw
+from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.friction import FrictionLaw, as_friction_law
 from .anchors import AnchorMap, Piece
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
@@ -29,7 +28,7 @@ from .zones import lay_out_zones
 
 
 def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Tolerances(),
-               limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None,
+               limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
                friction: FrictionLaw | str | None = None) -> PathSolution:
     """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`) for the indenter
     ``profile`` (``None``: the paper's paraboloid of ``params.R``) and the friction law ``friction`` (``None``:
@@ -239,7 +238,7 @@ BYTES_PER_SAMPLE = 128
 
 def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | None = None,
                   samples: int = 2001, tolerances: Tolerances = Tolerances(),
-                  limits: Limits = DEFAULT_LIMITS, profile: PowerLaw | None = None,
+                  limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
                   friction: FrictionLaw | str | None = None) -> dict:
     """Solve every path and fill a common time grid (default: ``samples`` points to the longest run).
 
