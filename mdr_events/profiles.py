@@ -7,17 +7,19 @@ equivalent profile ``g(x)`` of the springs by the Abel transform (3); for the po
 derived in :mod:`mdr_events.theory.symbolic`, evaluated in :mod:`mdr_events.theory.power_law`).
 
 The closed forms of the theory layer take both; the simulators (continuum and discrete), ``validate``,
-``fit``, ``sweep`` and the command line take a power law with ``n >= 1`` (``profile=``), and the paraboloid of
-:class:`~mdr_events.Parameters` by default.
+``fit``, ``sweep`` and the command line take a power law with ``n >= 1`` or a flat punch (``profile=``), and
+the paraboloid of :class:`~mdr_events.Parameters` by default.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from mdr_events.validation import check_real
+import numpy as np
 
-__all__ = ["PowerLaw", "FlatPunch", "Profile", "profile_attrs"]
+from mdr_events.validation import check_real, real_array, shown
+
+__all__ = ["PowerLaw", "FlatPunch", "TabulatedProfile", "Profile", "profile_attrs"]
 
 
 @dataclass(frozen=True)
@@ -79,8 +81,61 @@ class FlatPunch:
         return f"flat punch of radius {self.radius!r} m"
 
 
+@dataclass(frozen=True)
+class TabulatedProfile:
+    """An axisymmetric indenter given as a table ``f(r)``: measured (an AFM tip's profile) or of any shape.
+
+    The table is interpolated by a monotone cubic (PCHIP) and its Abel transform (3), the springs' profile
+    ``g(x)``, computed numerically (:mod:`mdr_events.theory.tabulated`); beyond the last radius the indenter
+    is too high for any contact (the depths that need it are refused).
+
+    Attributes
+    ----------
+    r : tuple of float
+        Radii (m): finite, strictly increasing, from 0, at least 3.
+    f : tuple of float
+        Heights above the tip (m) at ``r``: finite, 0 at ``r = 0``, strictly increasing (an indenter whose
+        profile falls would touch first off its axis).
+    """
+
+    r: tuple
+    f: tuple
+
+    def __post_init__(self) -> None:
+        r = _table_column("TabulatedProfile.r", self.r)
+        f = _table_column("TabulatedProfile.f", self.f)
+        if len(r) != len(f) or len(r) < 3:
+            raise ValueError(f"TabulatedProfile.r and .f of lengths {len(r)} and {len(f)} are not allowed; allowed: "
+                             "equal lengths, at least 3")
+        if r[0] != 0.0 or any(b <= a for a, b in zip(r, r[1:])):
+            raise ValueError(f"TabulatedProfile.r={shown(self.r)} is not allowed; allowed: strictly increasing radii "
+                             "from 0 (m)")
+        if f[0] != 0.0 or any(b <= a for a, b in zip(f, f[1:])):
+            raise ValueError(f"TabulatedProfile.f={shown(self.f)} is not allowed; allowed: heights from 0 at r = 0, "
+                             "strictly increasing (m)")
+        object.__setattr__(self, "r", r)
+        object.__setattr__(self, "f", f)
+
+    @property
+    def radius(self) -> float:
+        """The table's last radius (m): the largest contact it can describe."""
+        return self.r[-1]
+
+    def describe(self) -> str:
+        """The profile in words, for a dataset's ``profile`` attribute."""
+        return f"tabulated profile f(r), {len(self.r)} points to r = {self.r[-1]!r} m, f = {self.f[-1]!r} m there"
+
+
+def _table_column(name: str, values) -> tuple[float, ...]:
+    """A table column as a tuple of finite floats, or an error naming it."""
+    column = real_array(name, values, "a 1-D sequence of finite numbers (m)")
+    if column.ndim != 1 or not np.all(np.isfinite(column)):
+        raise ValueError(f"{name}={shown(values)} is not allowed; allowed: a 1-D sequence of finite numbers (m)")
+    return tuple(float(value) for value in column)
+
+
 #: Any profile the theory layer takes.
-Profile = PowerLaw | FlatPunch
+Profile = PowerLaw | FlatPunch | TabulatedProfile
 
 
 def profile_attrs(profile: Profile | None) -> dict[str, object]:
@@ -91,6 +146,8 @@ def profile_attrs(profile: Profile | None) -> dict[str, object]:
         return {}
     if isinstance(profile, PowerLaw):
         kind, shape = "power law", {"profile_c": float(profile.c), "profile_n": float(profile.n)}
+    elif isinstance(profile, TabulatedProfile):
+        kind, shape = "tabulated profile", {"profile_table_r": np.array(profile.r), "profile_table_f": np.array(profile.f)}
     else:
         kind, shape = "flat punch", {"profile_radius": float(profile.radius)}
     return {"profile": profile.describe(), **shape,

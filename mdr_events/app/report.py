@@ -40,6 +40,7 @@ from mdr_events.app.result_files import (FileOutcome, FileStatus, describe_outco
                                          write_phase_diagram, write_simulation, write_text)
 from mdr_events.io.datasets import DOI, RESULT_RTOL
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
+from mdr_events.profiles import FlatPunch
 from mdr_events.plotting.figures import plot_fretting
 from mdr_events.plotting.fit import plot_fit
 from mdr_events.plotting.universal import plot_universal_map
@@ -407,15 +408,17 @@ def profiles_section(rows: list[ProfileRow]) -> list[str]:
     """The comparison of indenters: the closed forms of each power law against the continuum, and the discrete
     model's gap (:func:`~mdr_events.app.report_data.profile_rows`)."""
     lines = [
-        "## Other indenters: cone, paraboloid, quartic",
+        "## Other indenters: cone, paraboloid, quartic, flat punch",
         "",
         f"Scenario A at {PROFILE_ANGLE:g}° with the paper's material and adhesion for power laws `f = c rⁿ` that reach "
-        "the paraboloid's (R = 30 mm) non-adhesive contact radius at d_max (`simulate(..., profile=PowerLaw(c, n))`; "
+        "the paraboloid's (R = 30 mm) non-adhesive contact radius at d_max (`simulate(..., profile=PowerLaw(c, n))`), "
+        "and the flat punch of that radius (`profile=FlatPunch(radius)`; "
         f"`{PROFILE_STEM}_<name>.nc`, `{PROFILE_STEM}_<name>_discrete.nc`, `{PROFILE_STEM}.png`). The closed forms are "
         "Heß's rule for the power law (`mdr_events.power_law`): the pull-off force under force control, which the "
-        "least normal force of the displacement-controlled run equals, and the slip onset (18) while indenting. "
+        "least normal force of the displacement-controlled run equals, and the slip onset (18) while indenting; for "
+        "the punch Kendall's pull-off force `−sqrt(8π a³ E* Δγ1)` and the onset `d = tan α K a` (full slip at once). "
         f"Discrete: Δx = {FIGURE_DX * 1e6:g} µm, {FIGURE_STEPS} steps; its largest gap to the continuum in F_x over the "
-        "largest F_x. The flat punch (Kendall) has closed forms but no simulator yet.",
+        "largest F_x.",
         "",
         "| indenter | c | n | pull-off force, closed form | continuum F_N,min | slip onset (18) | continuum onset | "
         "F_x,max | discrete gap |",
@@ -424,10 +427,20 @@ def profiles_section(rows: list[ProfileRow]) -> list[str]:
     for row in rows:
         onset = "none before d_max" if math.isnan(row.onset_closed_form) else f"{row.onset_closed_form * 1e3:.6f} mm"
         found = "none" if math.isnan(row.onset_continuum) else f"{row.onset_continuum * 1e3:.6f} mm"
-        lines.append(f"| {row.name} | {row.profile.c:.6g} | {row.profile.n:g} | {row.pull_off_closed_form:.9g} N | "
+        if isinstance(row.profile, FlatPunch):
+            shape = f"radius {row.profile.radius * 1e3:g} mm | —"
+        else:
+            shape = f"{row.profile.c:.6g} | {row.profile.n:g}"
+        lines.append(f"| {row.name.replace('_', ' ')} | {shape} | {row.pull_off_closed_form:.9g} N | "
                      f"{row.pull_off_continuum:.9g} N | {onset} | {found} | {row.tangential_force_max:.6g} N | "
-                     f"{row.discrete_difference:.2e} |")
+                     f"{_gap_text(row.discrete_difference)} |")
     return lines + [""]
+
+
+def _gap_text(value: float) -> str:
+    """A discrete model's gap as the tables print it: three digits, or ``< 1e-12`` at round-off (the punch's springs
+    are the continuum: their digits there differ between machines)."""
+    return f"< {REPORT_ROUNDOFF:g}" if abs(value) < REPORT_ROUNDOFF else f"{value:.2e}"
 
 
 def mindlin_section(rows: list[MindlinRow]) -> list[str]:
@@ -483,7 +496,8 @@ def _parameter_section() -> list[str]:
         f"- `{FIT_STEM}.{{nc,png}}`: the fit demonstration (estimates, intervals, correlations, residuals), its",
         f"  synthetic measurement in `{FIT_STEM}_measured.nc`.",
         f"- `{UNIVERSAL_STEM}.{{nc,png}}`: the critical angles over the dimensionless groups, the paper's sets marked.",
-        f"- `{PROFILE_STEM}.png`, `{PROFILE_STEM}_<cone|paraboloid|quartic>.nc` (continuum) and `..._discrete.nc`:",
+        f"- `{PROFILE_STEM}.png`, `{PROFILE_STEM}_<cone|paraboloid|quartic|flat_punch>.nc` (continuum) and "
+        "`..._discrete.nc`:",
         "  other indenters in scenario A.",
         f"- `{MINDLIN_STEM}.png`, `{MINDLIN_STEM}.nc` (continuum) and `{MINDLIN_STEM}_discrete.nc`: Coulomb's law at a",
         "  constant depth against Cattaneo–Mindlin.",

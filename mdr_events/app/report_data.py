@@ -27,7 +27,7 @@ from mdr_events.models.paths import Path, exit_depth
 from mdr_events.models.simulate import (CUSTOM_DIMENSION, SIMULATION_CONTENT, case_dimension, scenario_paths,
                                         simulate)
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import PowerLaw
+from mdr_events.profiles import FlatPunch, PowerLaw
 from mdr_events.friction import FrictionLaw
 from mdr_events.theory import analytic, mindlin, power_law
 
@@ -173,7 +173,7 @@ def compute(progress: Callable[[str], None] | None = None) -> Reproduction:
         "groups (the sweep on a local dask cluster)")
     data.universal = universal_map(MAP_SLIP, MAP_ADHESION, Parameters.paper(),
                                    marked={label: Parameters.paper(R=radius) for label, radius in RADII.items()})
-    say(f"other indenters: cone, paraboloid and quartic, scenario A at {PROFILE_ANGLE:g}° (continuum; discrete at "
+    say(f"other indenters: cone, paraboloid, quartic and flat punch, scenario A at {PROFILE_ANGLE:g}° (continuum; discrete at "
         f"Δx = {FIGURE_DX * 1e6:g} µm)")
     data.profiles = profile_comparison(Parameters.paper())
     say(f"Cattaneo–Mindlin: Coulomb's law (μ = {MINDLIN_FRICTION.mu:g}) at a constant depth, continuum and discrete "
@@ -226,15 +226,16 @@ def fit_demonstration(truth: Parameters) -> FitDemonstration:
 # ----------------------------------------------------------------------------
 # other indenters
 #: The power laws compared with the paper's paraboloid (scenario A at :data:`PROFILE_ANGLE`, R = 30 mm): each
-#: with the paraboloid's non-adhesive contact radius at d_max.
+#: with the paraboloid's non-adhesive contact radius at d_max; and the flat punch of that radius.
 PROFILE_EXPONENTS = {"cone": 1.0, "paraboloid": 2.0, "quartic": 4.0}
+PROFILE_PUNCH = "flat_punch"
 PROFILE_ANGLE = 20.0
 
 
 class ProfileComparison(NamedTuple):
     """Scenario A at :data:`PROFILE_ANGLE` for the indenters of :data:`PROFILE_EXPONENTS`, by name."""
 
-    profiles: dict  #: name → PowerLaw
+    profiles: dict  #: name → PowerLaw or FlatPunch
     continuum: dict  #: name → simulation (continuum)
     discrete: dict  #: name → simulation (discrete, Δx = FIGURE_DX, FIGURE_STEPS steps)
 
@@ -248,8 +249,10 @@ def matching_power_law(n: float, params: Parameters) -> PowerLaw:
 
 
 def profile_comparison(params: Parameters) -> ProfileComparison:
-    """Continuum and discrete runs of scenario A at :data:`PROFILE_ANGLE` for each of :data:`PROFILE_EXPONENTS`."""
+    """Continuum and discrete runs of scenario A at :data:`PROFILE_ANGLE` for each of :data:`PROFILE_EXPONENTS` and the
+    flat punch of the paraboloid's radius at d_max (:data:`PROFILE_PUNCH`)."""
     profiles = {name: matching_power_law(n, params) for name, n in PROFILE_EXPONENTS.items()}
+    profiles[PROFILE_PUNCH] = FlatPunch(math.sqrt(params.R * params.d_max))
     continuum = {name: simulate(params, "A", alpha=[PROFILE_ANGLE], method="continuum", profile=profile)
                  for name, profile in profiles.items()}
     discrete = {name: simulate(params, "A", alpha=[PROFILE_ANGLE], dx=FIGURE_DX, n_steps=FIGURE_STEPS, profile=profile)
@@ -261,7 +264,7 @@ class ProfileRow(NamedTuple):
     """One indenter of the comparison: its closed forms against the continuum's, and the discrete model's gap."""
 
     name: str
-    profile: PowerLaw
+    profile: PowerLaw | FlatPunch
     pull_off_closed_form: float  #: pull-off force under force control (N)
     pull_off_continuum: float  #: the continuum's least normal force (N)
     onset_closed_form: float  #: slip-onset depth (18) (m; nan: none before d_max)

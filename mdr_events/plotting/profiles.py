@@ -25,7 +25,10 @@ MARKERS_PER_CURVE = 40
 
 
 def _exponent(dataset: xr.Dataset) -> str:
-    """`` (n = 3)`` from the dataset's ``profile_n`` attribute (the paraboloid of R without it: 2)."""
+    """`` (n = 3)`` from the dataset's ``profile_n`` attribute (the paraboloid of R without it: 2); a flat punch's
+    `` (a = 3 mm)`` from ``profile_radius``."""
+    if "profile_radius" in dataset.attrs:
+        return f" (a = {float(dataset.attrs['profile_radius']) * 1e3:g} mm)"
     return f" (n = {float(dataset.attrs.get('profile_n', 2.0)):g})"
 
 
@@ -38,13 +41,13 @@ def plot_profile_comparison(continuum: Mapping[str, xr.Dataset], discrete: Mappi
     for colour, (name, dataset) in zip(colours, continuum.items()):
         for ax, (variable, scale, _) in zip(axes, PROFILE_PANELS):
             ax.plot(dataset["time"].values, dataset[variable].values[0] * scale, color=colour, lw=1.4,
-                    label=f"{name}{_exponent(dataset)}, continuum")
+                    label=f"{name.replace('_', ' ')}{_exponent(dataset)}, continuum")
             if discrete is not None and name in discrete:
                 springs = discrete[name]
                 values = springs[variable].values[0] * scale
                 step = max(1, np.count_nonzero(np.isfinite(values)) // MARKERS_PER_CURVE)
                 ax.plot(springs["time"].values[::step], values[::step], ls="none", marker="o", ms=3.5, mfc="none",
-                        mec=colour, mew=0.8, label=f"{name}, discrete (Δx = {springs.attrs['dx'] * 1e6:g} µm)")
+                        mec=colour, mew=0.8, label=f"{name.replace('_', ' ')}, discrete (Δx = {springs.attrs['dx'] * 1e6:g} µm)")
     for letter, ax, (_, _, label) in zip("abc", axes, PROFILE_PANELS):
         ax.set_ylabel(label)
         ax.text(0.01, 0.92, f"({letter})", transform=ax.transAxes, fontsize=10, va="top")
@@ -53,11 +56,12 @@ def plot_profile_comparison(continuum: Mapping[str, xr.Dataset], discrete: Mappi
     first = next(iter(continuum.values()))
     footnote_strip = add_inferred_footnote(figure, first)
     handles, labels = axes[0].get_legend_handles_labels()
-    figure.legend(handles, labels, loc="outside lower center", ncol=len(continuum), fontsize=LEGEND_FONTSIZE,
+    figure.legend(handles, labels, loc="outside lower center", ncol=min(len(continuum), 2), fontsize=LEGEND_FONTSIZE,
                   borderaxespad=LEGEND_BORDER_PAD + footnote_strip / LEGEND_FONTSIZE)  # above the footnote
     if title is None:
         alpha = float(first[case_dimension(first)].values[0])
-        title = (f"Other indenters f = c rⁿ, scenario A at {alpha:g}°, the paper's material and adhesion\n"
-                 f"(each with the non-adhesive contact radius of R = {first.attrs['param_R'] * 1e3:g} mm at d_max)")
+        title = (f"Other indenters f = c rⁿ and a flat punch, scenario A at {alpha:g}°, the paper's material and "
+                 f"adhesion\n(each with the non-adhesive contact radius of R = {first.attrs['param_R'] * 1e3:g} mm at "
+                 "d_max)")
     figure.suptitle(title, fontsize=10)
     return figure

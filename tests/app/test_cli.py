@@ -201,3 +201,24 @@ def test_phase_diagram_takes_a_power_law(capsys, tmp_path):
     assert "non-adhesive" in labels and "adhesive (Heß)" in labels and not any("(17)" in label for label in labels)
     simulation = me.simulate(me.Parameters.paper(), "A", alpha=20.0, method="continuum", samples=11, profile=cone)
     assert "param_R" in simulation.attrs and "not used" in simulation.attrs["profile_note"]
+
+
+def test_simulate_takes_a_flat_punch(capsys, tmp_path):
+    """--flat-punch RADIUS: the simulation is the punch's (attributes), its least F_N Kendall's pull-off force."""
+    status, _, _ = run(capsys, "simulate", "--scenario", "A", "--alpha", "20", "--method", "continuum", "--flat-punch",
+                       "1.5e-3", "--out", str(tmp_path))
+    assert status == 0
+    ds = me.open_result(tmp_path / "simulation_A_continuum.nc")
+    assert ds.attrs["profile_radius"] == 1.5e-3 and ds.attrs["profile"] == "flat punch of radius 0.0015 m"
+    assert float(ds["normal_force_min"].values[0]) == pytest.approx(
+        me.power_law.pull_off_force(me.FlatPunch(1.5e-3), me.Parameters.paper(), 0.15), rel=1e-12)
+
+
+@pytest.mark.parametrize("options, fragment", [(["--flat-punch", "-1"], "--flat-punch -1: FlatPunch.radius=-1.0 is not "
+                                                                        "allowed"),
+                                               (["--flat-punch", "1e-3", "--power-law", "2000", "3"],
+                                                "not allowed with argument")])
+def test_a_bad_flat_punch_is_one_line_exit_2(capsys, tmp_path, options, fragment):
+    status, _, err = run(capsys, "simulate", "--scenario", "A", *options, "--out", str(tmp_path / "new"))
+    assert status == 2 and err.count("\n") == 1 and fragment in err, err
+    assert not (tmp_path / "new").exists()

@@ -73,8 +73,9 @@ def test_committed_datasets_agree_with_a_fresh_computation(fresh):
 
 
 def test_the_other_indenters_meet_their_closed_forms(fresh):
-    """results/profiles_A20_*: the committed files agree with a fresh run; for each indenter the continuum's
-    least normal force is the pull-off force under force control and its slip onset while indenting is (18),
+    """results/profiles_A20_*: the committed files agree with a fresh run; for each indenter (the flat punch too) the
+    continuum's least normal force is the pull-off force under force control and its slip onset while indenting is
+    (18),
     both to 1e-9, and the discrete model (Δx = 1 µm) lies within 1e-3 of the largest F_x (first order: about
     1e-3 per µm, as for the paraboloid)."""
     for name in fresh.profiles.profiles:
@@ -83,7 +84,7 @@ def test_the_other_indenters_meet_their_closed_forms(fresh):
         assert_results_agree(fresh.profiles.discrete[name], me.open_result(RESULTS / f"{stem}_discrete.nc"))
     assert (RESULTS / f"{report.PROFILE_STEM}.png").stat().st_size > 0
     rows = report.profile_rows(fresh.profiles, me.Parameters.paper())
-    assert [row.profile.n for row in rows] == [1.0, 2.0, 4.0]
+    assert [getattr(row.profile, "n", "punch") for row in rows] == [1.0, 2.0, 4.0, "punch"]
     for row in rows:
         assert row.pull_off_continuum == pytest.approx(row.pull_off_closed_form, rel=1e-9), row.name
         assert row.onset_continuum == pytest.approx(row.onset_closed_form, rel=1e-9), row.name
@@ -202,7 +203,7 @@ def test_compute_sends_one_progress_message_per_step(computed):
     assert messages[-5].startswith("fretting at d_max, R = 30 mm")
     assert messages[-4].startswith("fit of 4 parameters to synthetic measurements")
     assert messages[-3].startswith("universal map: critical angles")
-    assert messages[-2].startswith("other indenters: cone, paraboloid and quartic")
+    assert messages[-2].startswith("other indenters: cone, paraboloid, quartic and flat punch")
     assert messages[-1].startswith("Cattaneo–Mindlin: Coulomb's law")
 
 
