@@ -10,7 +10,7 @@ Layers, bottom to top (a module imports only from its own layer or those
 below; ``tests/test_layers.py`` checks it): ``parameters``, ``profiles``, ``friction`` and ``validation``
 → ``io`` (``datasets``: stamp, result schemas, comparison; ``files``: netCDF
 in and out) → ``theory`` (``symbolic`` SymPy derivations, ``analytic`` closed
-forms, ``power_law`` those of other indenters, ``mindlin`` tangential loading at a constant depth, ``phase``
+forms, ``power_law`` those of other indenters, ``tabulated`` a table's, ``mindlin`` tangential loading at a constant depth, ``phase``
 diagrams) → ``models`` (``paths``, ``discrete`` springs,
 ``continuum`` event-driven and exact, ``simulate``) → ``analysis``
 (``crosscheck``, ``convergence``, ``validate``, ``fit``, ``sweep``) → ``plotting`` → ``app`` (``cli``,
@@ -19,12 +19,12 @@ diagrams) → ``models`` (``paths``, ``discrete`` springs,
 
 from mdr_events._version import __version__
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, PowerLaw
+from mdr_events.profiles import FlatPunch, PowerLaw, TabulatedProfile
 from mdr_events.friction import FRICTION_LAWS, FrictionLaw
 from mdr_events.limits import Limits, ResourceLimitError
 from mdr_events.io.datasets import DOI
 from mdr_events.io.files import open_result, write_netcdf
-from mdr_events.theory import analytic, mindlin, power_law, symbolic
+from mdr_events.theory import analytic, mindlin, power_law, symbolic, tabulated
 from mdr_events.theory.analytic import (
     critical_angle,
     critical_shift,
@@ -62,11 +62,13 @@ __all__ = [
     "FRICTION_LAWS",
     "Parameters",
     "PowerLaw",
+    "TabulatedProfile",
     "Path",
     "Tolerances",
     "analytic",
     "power_law",
     "mindlin",
+    "tabulated",
     "continuum",
     "critical_angle",
     "critical_shift",

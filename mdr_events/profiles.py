@@ -140,14 +140,17 @@ Profile = PowerLaw | FlatPunch | TabulatedProfile
 
 def profile_attrs(profile: Profile | None) -> dict[str, object]:
     """A result's attributes naming another indenter than the paraboloid: ``profile`` (in words), ``profile_c`` and
-    ``profile_n`` (a power law) or ``profile_radius`` (a flat punch), and ``profile_note`` (``param_R`` is then
-    unused); none for the paraboloid (``None``)."""
+    ``profile_n`` (a power law), ``profile_radius`` (a flat punch) or ``profile_table_r`` and ``profile_table_f``
+    (a table, its values in m separated by commas), and ``profile_note`` (``param_R`` is then unused); none for the
+    paraboloid (``None``)."""
     if profile is None:
         return {}
     if isinstance(profile, PowerLaw):
         kind, shape = "power law", {"profile_c": float(profile.c), "profile_n": float(profile.n)}
     elif isinstance(profile, TabulatedProfile):
-        kind, shape = "tabulated profile", {"profile_table_r": np.array(profile.r), "profile_table_f": np.array(profile.f)}
+        # the table itself, every value as Python writes it back (exact), as two comma-separated strings
+        kind, shape = "tabulated profile", {"profile_table_r": ", ".join(map(repr, profile.r)),
+                                            "profile_table_f": ", ".join(map(repr, profile.f))}
     else:
         kind, shape = "flat punch", {"profile_radius": float(profile.radius)}
     return {"profile": profile.describe(), **shape,

@@ -619,6 +619,8 @@ def run_discrete(
     """
     indenter = indenters.check_simulated_profile(profile) if not callable(profile) else None
     friction = as_friction_law(friction)
+    for index, path in enumerate(paths):
+        indenters.check_reach(params, path.max_depth, indenter, f"path {index}")
     check_discrete_size(params, paths, dx, dt, limits, indenter)
     run = _prepare(params, paths, dx, dt, profile if callable(profile) else indenters.spring_profile(params, indenter),
                    friction)

@@ -14,10 +14,10 @@ from collections.abc import Callable
 import numpy as np
 
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, PowerLaw, profile_attrs
-from mdr_events.theory import analytic, power_law, symbolic
+from mdr_events.profiles import FlatPunch, PowerLaw, TabulatedProfile, profile_attrs
+from mdr_events.theory import analytic, power_law, symbolic, tabulated
 
-__all__ = ["MIN_SIMULATED_EXPONENT", "SimulatedProfile", "check_simulated_profile", "branch_radius", "jump_off", "spring_profile",
+__all__ = ["MIN_SIMULATED_EXPONENT", "SimulatedProfile", "check_simulated_profile", "check_reach", "branch_radius", "jump_off", "spring_profile",
            "profile_attrs", "critical_angle"]
 
 #: The simulators take power laws from the cone on (a profile with ``n < 1`` has an infinite slope at the
@@ -26,7 +26,7 @@ MIN_SIMULATED_EXPONENT = 1.0
 
 
 #: An indenter the simulators take (``None``: the paraboloid of ``Parameters.R``).
-SimulatedProfile = PowerLaw | FlatPunch | None
+SimulatedProfile = PowerLaw | FlatPunch | TabulatedProfile | None
 
 
 def check_simulated_profile(profile) -> SimulatedProfile:
@@ -34,13 +34,29 @@ def check_simulated_profile(profile) -> SimulatedProfile:
     else an error naming it and what is allowed."""
     if profile is None or isinstance(profile, FlatPunch):
         return profile
+    if isinstance(profile, TabulatedProfile):
+        tabulated.equivalent(profile)  # its g(x) must increase (an error names where)
+        return profile
     if not isinstance(profile, PowerLaw):
         raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: None (the "
-                        f"paraboloid of R), a PowerLaw with n >= {MIN_SIMULATED_EXPONENT:g} or a FlatPunch")
+                        f"paraboloid of R), a PowerLaw with n >= {MIN_SIMULATED_EXPONENT:g}, a FlatPunch or a "
+                        "TabulatedProfile")
     if not profile.n >= MIN_SIMULATED_EXPONENT:
         raise ValueError(f"PowerLaw.n={profile.n!r} is not allowed in the simulators; allowed: n >= "
                          f"{MIN_SIMULATED_EXPONENT:g} (the cone and blunter)")
     return profile
+
+
+def check_reach(params: Parameters, depth: float, profile: SimulatedProfile, label: str) -> None:
+    """Refuse a path going deeper than a tabulated profile reaches: at ``depth`` the contact radius on the ``Δγ0``
+    branch would pass the table's last radius (``ValueError`` naming both). Other profiles reach any depth."""
+    if not isinstance(profile, TabulatedProfile):
+        return
+    deepest = tabulated.branch(profile, params, params.dgamma0).deepest
+    if depth > deepest:
+        raise ValueError(f"{label} reaches the depth {depth:.6g} m; allowed for {profile.describe()!r}: at most "
+                         f"{deepest:.6g} m, where the contact radius reaches the table's last radius (a table reaching "
+                         "further, or a shallower path)")
 
 
 def branch_radius(depth, params: Parameters, work_of_adhesion: float, profile: SimulatedProfile = None):
@@ -53,6 +69,8 @@ def branch_radius(depth, params: Parameters, work_of_adhesion: float, profile: S
         bottom = power_law.jump_off(profile, params, work_of_adhesion)["depth"]
         radius = np.where(depth >= bottom, profile.radius, np.nan)
         return float(radius) if radius.ndim == 0 else radius
+    if isinstance(profile, TabulatedProfile):
+        return tabulated.contact_radius(depth, profile, params, work_of_adhesion)
     return power_law.contact_radius(depth, profile, params, work_of_adhesion)
 
 
@@ -60,6 +78,8 @@ def jump_off(params: Parameters, work_of_adhesion: float, profile: SimulatedProf
     """The branch's jump-off under displacement control (``contact_radius``, ``depth``, ``normal_force``)."""
     if profile is None:
         return analytic.jump_off(params, work_of_adhesion)
+    if isinstance(profile, TabulatedProfile):
+        return tabulated.jump_off(profile, params, work_of_adhesion)
     return power_law.jump_off(profile, params, work_of_adhesion)
 
 
@@ -71,6 +91,8 @@ def spring_profile(params: Parameters, profile: SimulatedProfile = None) -> Call
         return lambda x: relation.numeric(x, params.R)
     if isinstance(profile, FlatPunch):
         return lambda x: np.where(np.abs(np.asarray(x, dtype=float)) <= profile.radius, 0.0, np.inf)
+    if isinstance(profile, TabulatedProfile):
+        return tabulated.equivalent(profile)
     return lambda x: power_law.equivalent_profile(x, profile)
 
 
@@ -79,5 +101,10 @@ def critical_angle(params: Parameters, scenario: str, profile: SimulatedProfile 
     for the paraboloid, :mod:`mdr_events.theory.power_law` for a power law)."""
     if profile is None:
         return analytic.critical_angle(params, scenario)
+    if isinstance(profile, TabulatedProfile):
+        if scenario != "A":
+            raise ValueError(f"scenario={scenario!r} is not allowed for a tabulated profile's critical angle; allowed: "
+                             "'A' (scenario B's onset on a table is not derived yet)")
+        return tabulated.critical_angle_A(profile, params)
     return power_law.critical_angle_A(profile, params) if scenario == "A" else power_law.critical_angle_B(profile,
                                                                                                           params)

@@ -116,6 +116,7 @@ def check_path_extent(params: Parameters, path: Path, label: str, profile: Simul
     parameters: a path angle of a few 1e-6 degrees) is an error, not a
     silently wrong result.
     """
+    indenters.check_reach(params, path.max_depth, profile, label)
     radius = float(indenters.branch_radius(params.d_max, params, params.dgamma0, profile))
     reference = max(float(analytic.critical_shift(radius, params)), params.d_max)
     limit = SLIP_DIGITS * reference / np.finfo(float).eps

@@ -485,7 +485,7 @@ POWER_LAW_KEYS = ("power_law_depth", "power_law_depth_slope", "power_law_depth_i
                   "power_law_pull_off_radius", "power_law_pull_off_force", "power_law_jump_off_radius",
                   "power_law_jump_off_depth", "power_law_jump_off_force", "power_law_d_crit_A_hertz",
                   "flat_punch_normal_force", "flat_punch_pull_off_depth", "flat_punch_pull_off_force",
-                  "flat_punch_d_crit_A")
+                  "flat_punch_d_crit_A", "abel_transform_angular")
 
 
 @functools.cache
@@ -511,6 +511,16 @@ def power_law_model_afresh() -> dict[str, Relation]:
         out[rel.key] = rel
 
     profile = derive_power_law().rhs  # g(x) = κ c xⁿ
+    # (3) with r = x sin θ: g(x) = x ∫_0^{π/2} f'(x sin θ) dθ, no singularity at r = x (the tabulated profile's
+    # quadrature); checked on power laws of whole exponents (SymPy integrates sinⁿ⁻¹ θ for those, not for a symbol n)
+    angular = x * sp.Integral(sp.Subs(sp.Derivative(f(r), r), r, x * sp.sin(theta)), (theta, 0, sp.pi / 2))
+    for exponent in (1, 2, 3, 4):
+        power = c * r**exponent
+        on_power_law = x * sp.integrate(sp.diff(power, r).subs(r, x * sp.sin(theta)), (theta, 0, sp.pi / 2))
+        if sp.simplify(on_power_law - profile.subs(n, exponent)) != 0:
+            raise RuntimeError(f"the angular form of the Abel transform does not give g(x) of c r^{exponent}")
+    add(Relation("abel_transform_angular", "(3)", "Abel transform with r = x sin(theta): no singular integrand",
+                 g(x), angular))
     displacement = d - profile  # (7)
     hess = sp.sqrt(2 * sp.pi * a * dgamma / E_star)  # (8)
     depth_of_radius = sp.solve(sp.Eq(-displacement.subs(x, a), hess), d)[0]

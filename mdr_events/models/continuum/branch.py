@@ -8,9 +8,9 @@ import math
 
 import numpy as np
 
-from mdr_events.theory import analytic, power_law, symbolic
+from mdr_events.theory import analytic, power_law, symbolic, tabulated
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, PowerLaw
+from mdr_events.profiles import FlatPunch, PowerLaw, TabulatedProfile
 
 #: A depth this share below the jump-off depth still gives the jump-off radius: a radius pinned just
 #: outside the fold is released at a depth that rounds below it.
@@ -185,10 +185,50 @@ class FlatPunchBranch(Branch):
         return self.jump_off_radius if depth >= self.jump_off_depth * (1.0 + FOLD_SHARE) else math.nan
 
 
-def make_branch(params: Parameters, work: float, profile: PowerLaw | FlatPunch | None = None) -> Branch:
+class TabulatedBranch(Branch):
+    """The branch of a tabulated profile (:class:`~mdr_events.profiles.TabulatedProfile`): ``d = g(a) − sqrt(2π a
+    Δγ / E*)`` with ``g`` the table's numerical Abel transform (:mod:`mdr_events.theory.tabulated`); the radius of a
+    depth a bracketed root above the jump-off."""
+
+    def __init__(self, params: Parameters, work: float, profile: TabulatedProfile):
+        self.params, self.work, self.profile = params, work, profile
+        self.line = tabulated.branch(profile, params, work)
+        self.jump_off_radius, self.jump_off_depth = self.line.jump_off_radius, self.line.jump_off_depth
+        self._floor = math.sqrt(self.jump_off_radius)
+        self._g = self.line.shape.g
+
+    def depth(self, a: float) -> float:
+        return self.line.depth(a)
+
+    def slope(self, a: float) -> float:
+        return self.line.slope(a)
+
+    def integral(self, a: float) -> float:
+        return self.line.integral(a)
+
+    def depth_term(self, a: float) -> float:
+        return float(self._g(min(a, self.line.shape.x_max))) if a > 0 else 0.0
+
+    def depths(self, a: np.ndarray) -> np.ndarray:
+        return self.line.depths(a)
+
+    def radii(self, depth: np.ndarray) -> np.ndarray:
+        return self.line.radii(depth)
+
+    def radius(self, depth: float, rtol: float) -> float:
+        if self.work == 0.0 and depth <= 0:  # no contact above the surface
+            return 0.0
+        if depth < self.jump_off_depth and depth >= self.jump_off_depth * (1.0 + FOLD_SHARE):
+            return self.jump_off_radius
+        return self.line.radius(depth, rtol)
+
+
+def make_branch(params: Parameters, work: float, profile: PowerLaw | FlatPunch | TabulatedProfile | None = None) -> Branch:
     """The branch of ``work`` for ``profile`` (``None``: the paraboloid of ``params.R``, the paper's)."""
     if profile is None:
         return Branch(params, work)
     if isinstance(profile, FlatPunch):
         return FlatPunchBranch(params, work, profile)
+    if isinstance(profile, TabulatedProfile):
+        return TabulatedBranch(params, work, profile)
     return PowerLawBranch(params, work, profile)

@@ -8,10 +8,10 @@ from typing import NamedTuple
 
 import numpy as np
 
-from mdr_events.theory import analytic, power_law, symbolic
+from mdr_events.theory import analytic, power_law, symbolic, tabulated
 from mdr_events.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, PowerLaw
+from mdr_events.profiles import FlatPunch, PowerLaw, TabulatedProfile
 from mdr_events.models.paths import Path
 from .branch import Branch, make_branch
 from .caps import caps_of, check_supported
@@ -55,6 +55,8 @@ class ContinuumModel:
             return analytic.normal_force(depth, radius, self.params)
         if isinstance(self.profile, FlatPunch):
             return symbolic.relation("flat_punch_normal_force").numeric(depth, radius, self.params.E_star)
+        if isinstance(self.profile, TabulatedProfile):
+            return tabulated.normal_force(depth, radius, self.profile, self.params)
         return power_law.normal_force(depth, radius, self.profile, self.params)
 
     def branch(self, regime: Regime) -> Branch:

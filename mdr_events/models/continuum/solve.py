@@ -15,7 +15,7 @@ import numpy as np
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
-from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
+from mdr_events.models.indenters import SimulatedProfile, check_reach, check_simulated_profile
 from mdr_events.friction import FrictionLaw, as_friction_law
 from .anchors import AnchorMap, Piece
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
@@ -36,7 +36,9 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     ``limits.waypoints`` is refused before the work starts."""
     limits.check(f"the continuum run of a path with {len(path.waypoints)} waypoints",
                  waypoints=len(path.waypoints))
-    model = ContinuumModel(params, tolerances, check_simulated_profile(profile), as_friction_law(friction))
+    profile = check_simulated_profile(profile)
+    check_reach(params, path.max_depth, profile, "the path")
+    model = ContinuumModel(params, tolerances, profile, as_friction_law(friction))
     segments = kinematics(path)
     check_resolvable(model, path, segments)
     solution = PathSolution(model, t_contact=path.first_contact_time())

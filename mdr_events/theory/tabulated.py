@@ -1,0 +1,273 @@
+"""The tabulated indenter (:class:`~mdr_events.profiles.TabulatedProfile`): the Abel transform (3) of a table
+``f(r)`` computed numerically, and Heß's relations on it where no closed form exists.
+
+The table is interpolated by a monotone cubic (PCHIP, continuously differentiable). With ``r = x sin θ`` the
+Abel transform (3) reads (:func:`mdr_events.theory.symbolic.relation` ``"abel_transform_angular"``)
+
+    ``g(x) = x ∫_0^{π/2} f'(x sin θ) dθ``,
+
+whose integrand has no singularity: Gauss–Legendre quadrature on each θ-interval between the table's radii
+(:data:`ABEL_NODES` nodes; ``f'`` is a quadratic on each, composed with ``sin``: analytic, so the error falls
+exponentially) gives ``g`` to round-off at :data:`SUBDIVISIONS` points per table interval, which a PCHIP then
+interpolates (:class:`EquivalentProfile`). ``g`` must increase (a profile that rises steeply and then flattens
+may give a falling ``g``: refused, naming where), and so must each adhesive branch ``d(a) = g(a) − sqrt(2π a Δγ/E*)``
+beyond its minimum, the jump-off (:class:`TabulatedBranch`): then the radius of a depth is a bracketed root.
+
+The simulators and the functions below share this ``g``, so the continuum and the discrete model of a table are
+each other's exact reference; against the power law a table was sampled from they agree to the table's
+interpolation error (about ``h³`` for ``h`` the table's spacing; the tests measure it).
+"""
+
+from __future__ import annotations
+
+import bisect
+import functools
+import math
+
+import numpy as np
+from scipy import interpolate, optimize
+
+from mdr_events.parameters import Parameters
+from mdr_events.profiles import TabulatedProfile
+from mdr_events.theory import power_law, symbolic
+from mdr_events.validation import validate_alpha
+
+__all__ = ["ABEL_NODES", "SUBDIVISIONS", "EquivalentProfile", "TabulatedBranch", "equivalent", "branch",
+           "equivalent_profile", "normal_force", "contact_radius", "jump_off", "pull_off_force", "d_crit_A",
+           "critical_angle_A"]
+
+#: Gauss–Legendre nodes per θ-interval of the Abel transform.
+ABEL_NODES = 12
+#: Points of ``g`` computed per interval of the table (besides its radii).
+SUBDIVISIONS = 4
+#: The relative accuracy of a radius root (a few ulp).
+RADIUS_RTOL = 4 * float(np.finfo(float).eps)
+
+
+def _check(profile) -> TabulatedProfile:
+    if not isinstance(profile, TabulatedProfile):
+        raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: a TabulatedProfile")
+    return profile
+
+
+class EquivalentProfile:
+    """``g(x)`` of a table on ``[0, r_max]`` (PCHIP through the quadrature's values), its slope and its integral."""
+
+    def __init__(self, profile: TabulatedProfile):
+        self.profile = profile
+        r, f = np.array(profile.r), np.array(profile.f)
+        self.x_max = float(r[-1])
+        slope = interpolate.PchipInterpolator(r, f).derivative()
+        shares = np.arange(SUBDIVISIONS) / SUBDIVISIONS
+        grid = np.append((r[:-1, None] + np.diff(r)[:, None] * shares).ravel(), r[-1])
+        nodes, weights = np.polynomial.legendre.leggauss(ABEL_NODES)
+        values = np.zeros_like(grid)
+        for index, x in enumerate(grid[1:], start=1):
+            # θ-intervals between the table's radii below x: f' is one quadratic on each
+            cuts = np.arcsin(np.minimum(r[r < x] / x, 1.0))
+            edges = np.append(cuts, 0.5 * math.pi)
+            lower, upper = edges[:-1, None], edges[1:, None]
+            theta = 0.5 * (upper - lower) * nodes + 0.5 * (upper + lower)
+            values[index] = x * np.sum(0.5 * (upper - lower) * weights * slope(x * np.sin(theta)))
+        falling = np.flatnonzero(np.diff(values) <= 0.0)
+        if falling.size:
+            at = grid[falling[0] + 1]
+            raise ValueError(f"profile={profile.describe()!r} is not allowed: its Abel transform g(x) does not increase "
+                             f"at x = {at:.6g} m; allowed: a profile whose MDR profile g increases (one that does not "
+                             "flatten after a steep rise)")
+        self.grid, self.values = grid, values
+        self.g = interpolate.PchipInterpolator(grid, values, extrapolate=False)
+        self.g_slope = self.g.derivative()
+        self.g_integral = self.g.antiderivative()
+        #: the same three for one Python float (:class:`ScalarPiecewise`)
+        self.scalar_g, self.scalar_slope, self.scalar_integral = (ScalarPiecewise(poly) for poly in
+                                                                  (self.g, self.g_slope, self.g_integral))
+
+    def __call__(self, x):
+        """``g(|x|)``; ``+inf`` beyond the table (no spring there is ever touched)."""
+        magnitude = np.abs(np.asarray(x, dtype=float))
+        return np.where(magnitude <= self.x_max, self.g(np.minimum(magnitude, self.x_max)), np.inf)
+
+
+class ScalarPiecewise:
+    """A :class:`scipy.interpolate.PPoly` evaluated for one Python float in pure Python (Horner on its piece): the
+    continuum's right-hand side and event functions call the branch thousands of times, where a SciPy call on a
+    scalar costs some 10 µs."""
+
+    def __init__(self, poly: interpolate.PPoly):
+        self.breaks = [float(value) for value in poly.x]
+        self.pieces = [tuple(float(c) for c in column) for column in poly.c.T]
+
+    def __call__(self, a: float) -> float:
+        index = min(max(bisect.bisect_right(self.breaks, a) - 1, 0), len(self.pieces) - 1)
+        offset = a - self.breaks[index]
+        value = 0.0
+        for coefficient in self.pieces[index]:
+            value = value * offset + coefficient
+        return value
+
+
+@functools.lru_cache(maxsize=32)
+def equivalent(profile: TabulatedProfile) -> EquivalentProfile:
+    """The :class:`EquivalentProfile` of ``profile``, computed once per process."""
+    return EquivalentProfile(_check(profile))
+
+
+def equivalent_profile(x, profile: TabulatedProfile):
+    """``g(x)``, the Abel transform (3) of the table (``+inf`` beyond its last radius)."""
+    values = equivalent(profile)(x)
+    return float(values) if np.ndim(x) == 0 else values
+
+
+class TabulatedBranch:
+    """The branch ``d(a) = g(a) − k √a`` of a work of adhesion (``k = sqrt(2π Δγ/E*)``, (8)) on ``[0, r_max]``: its
+    minimum (the jump-off, or ``a = 0`` without adhesion), and the radius of a depth above it.
+
+    Raises ``ValueError`` if the branch does not increase from its minimum to the table's end (a contact radius
+    would not be one function of the depth).
+    """
+
+    def __init__(self, profile: TabulatedProfile, params: Parameters, work_of_adhesion: float):
+        self.profile = profile
+        self.shape = equivalent(profile)
+        self.k = power_law.hess_prefactor(params, work_of_adhesion)
+        self.E_star = params.E_star
+        grid = self.shape.grid
+        depths = self.shape.values - self.k * np.sqrt(grid)
+        lowest = int(np.argmin(depths))
+        if self.k > 0.0 and 0 < lowest < len(grid) - 1:  # refine the minimum between its grid neighbours
+            found = optimize.minimize_scalar(self.depth, bounds=(grid[lowest - 1], grid[lowest + 1]), method="bounded",
+                                             options={"xatol": 1e-14 * grid[-1]})
+            self.jump_off_radius = float(found.x)
+        else:
+            self.jump_off_radius = float(grid[lowest])
+        self.jump_off_depth = self.depth(self.jump_off_radius)
+        rising = depths[lowest:]
+        if np.any(np.diff(rising) <= 0.0):
+            at = grid[lowest + int(np.flatnonzero(np.diff(rising) <= 0.0)[0]) + 1]
+            raise ValueError(f"profile={profile.describe()!r} is not allowed with the work of adhesion "
+                             f"{work_of_adhesion!r} J/m²: its branch d(a) = g(a) - sqrt(2 pi a dgamma / E*) falls again at "
+                             f"a = {at:.6g} m beyond its jump-off; allowed: a profile whose branch rises from its minimum")
+        self.deepest = self.depth(self.shape.x_max)
+        # the branch's depths at the grid radii above the jump-off, increasing: a depth's bracket by bisection
+        self._radii = [self.jump_off_radius] + [float(a) for a in grid[grid > self.jump_off_radius]]
+        self._depths = [self.depth(a) for a in self._radii]
+
+    def depth(self, a: float) -> float:
+        return self.shape.scalar_g(a) - self.k * math.sqrt(a) if a > 0 else 0.0
+
+    def depths(self, a: np.ndarray) -> np.ndarray:
+        a = np.asarray(a, dtype=float)
+        inside = np.clip(a, 0.0, self.shape.x_max)
+        return np.where(a > 0, self.shape.g(inside) - self.k * np.sqrt(inside), 0.0)
+
+    def slope(self, a: float) -> float:
+        if a > 0:
+            return self.shape.scalar_slope(a) - 0.5 * self.k / math.sqrt(a)
+        return -math.inf if self.k > 0 else self.shape.scalar_slope(0.0)
+
+    def integral(self, a: float) -> float:
+        """``∫_0^a d(ξ) dξ`` along the branch."""
+        return self.shape.scalar_integral(a) - 2.0 / 3.0 * self.k * a**1.5 if a > 0 else 0.0
+
+    def radius(self, depth: float, rtol: float = RADIUS_RTOL) -> float:
+        """The radius above the jump-off at ``depth``; ``nan`` below the jump-off or beyond the table's end."""
+        if not self.jump_off_depth <= depth <= self.deepest:
+            return math.nan
+        if depth == self.jump_off_depth:
+            return self.jump_off_radius
+        above = min(bisect.bisect_left(self._depths, depth), len(self._depths) - 1)
+        if self._depths[above] == depth:
+            return self._radii[above]
+        return optimize.brentq(lambda a: self.depth(a) - depth, self._radii[max(above - 1, 0)], self._radii[above],
+                               xtol=1e-300, rtol=max(rtol, RADIUS_RTOL))
+
+    def radii(self, depth: np.ndarray) -> np.ndarray:
+        depth = np.asarray(depth, dtype=float)
+        return np.vectorize(self.radius, otypes=[float])(depth)
+
+
+@functools.lru_cache(maxsize=64)
+def branch(profile: TabulatedProfile, params: Parameters, work_of_adhesion: float) -> TabulatedBranch:
+    """The :class:`TabulatedBranch` of ``profile`` for ``params`` and a work of adhesion, built once per process."""
+    return TabulatedBranch(_check(profile), params, float(work_of_adhesion))
+
+
+def normal_force(depth, contact_radius, profile: TabulatedProfile, params: Parameters):
+    """``F_N = 2 E* (d a − ∫_0^a g)`` (10) of the springs in ``|x| < a`` at depth ``d``."""
+    shape = equivalent(profile)
+    a = np.asarray(contact_radius, dtype=float)
+    force = 2.0 * params.E_star * (np.asarray(depth, dtype=float) * a - shape.g_integral(np.clip(a, 0.0, shape.x_max)))
+    return float(force) if np.ndim(force) == 0 else force
+
+
+def contact_radius(depth, profile: TabulatedProfile, params: Parameters, work_of_adhesion: float):
+    """The radius on the branch of ``work_of_adhesion`` at ``depth`` (``nan`` below its jump-off or past the table)."""
+    radii = branch(profile, params, work_of_adhesion).radii(depth)
+    return float(radii) if np.ndim(depth) == 0 else radii
+
+
+def jump_off(profile: TabulatedProfile, params: Parameters, work_of_adhesion: float) -> dict[str, float]:
+    """The end of contact under displacement control: the branch's minimum (``contact_radius``, ``depth``,
+    ``normal_force``)."""
+    line = branch(profile, params, work_of_adhesion)
+    return {"contact_radius": line.jump_off_radius, "depth": line.jump_off_depth,
+            "normal_force": normal_force(line.jump_off_depth, line.jump_off_radius, profile, params)}
+
+
+def pull_off_force(profile: TabulatedProfile, params: Parameters, work_of_adhesion: float) -> float:
+    """The pull-off force under force control (N): the least normal force along the branch above its jump-off."""
+    line = branch(profile, params, work_of_adhesion)
+    if line.k == 0.0:
+        return 0.0
+    grid = line.shape.grid[line.shape.grid >= line.jump_off_radius]
+    grid = np.concatenate([[line.jump_off_radius], grid])
+    forces = normal_force(line.depths(grid), grid, profile, params)
+    lowest = int(np.argmin(forces))
+    bounds = (grid[max(lowest - 1, 0)], grid[min(lowest + 1, len(grid) - 1)])
+
+    def force(a):
+        return normal_force(line.depth(a), a, profile, params)
+
+    found = optimize.minimize_scalar(force, bounds=bounds, method="bounded", options={"xatol": 1e-14 * grid[-1]})
+    return float(min(found.fun, forces[lowest]))
+
+
+def d_crit_A(alpha, profile: TabulatedProfile, params: Parameters, adhesion: bool = False):
+    """Depth of slip onset in scenario A (the path (14) from first contact at ``α`` in degrees): the first depth on
+    the branch (``Δγ0`` with adhesion) where ``d = tan α K a``; no closed form exists, so the root of
+    ``d(a) − tan α K a`` rising through zero above the jump-off is bracketed on the table's grid and refined.
+    ``nan`` where there is none within the table; ``α = 90°`` never slides (``+inf``)."""
+    alpha_arr = validate_alpha(alpha)
+    line = branch(profile, params, params.dgamma0 if adhesion else 0.0)
+    K = power_law.cap_per_radius(params)
+    # from the jump-off (whose depth lies above the surface, where the gap below is negative) or from the first
+    # radius past a = 0 without adhesion (where d and K a both vanish)
+    start = [line.jump_off_radius] if line.k > 0 else []
+    grid = np.concatenate([start, line.shape.grid[line.shape.grid > line.jump_off_radius]])
+    depths = line.depths(grid)
+    out = np.empty(alpha_arr.shape)
+    for index, angle in np.ndenumerate(alpha_arr):
+        if angle >= 90.0:
+            out[index] = math.inf
+            continue
+        slope = math.tan(math.radians(angle)) * K
+        gap = depths - slope * grid  # the shift d / tan α minus the cap K a, times tan α
+        ahead = np.flatnonzero(gap >= 0.0)
+        if not ahead.size:
+            out[index] = math.nan
+        elif ahead[0] == 0:  # (no adhesion) ahead from the start: slides from first contact, as the cone
+            out[index] = 0.0
+        else:
+            a = optimize.brentq(lambda a: line.depth(a) - slope * a, grid[ahead[0] - 1], grid[ahead[0]], xtol=1e-300,
+                                rtol=RADIUS_RTOL)
+            out[index] = slope * a
+    return float(out) if np.ndim(alpha) == 0 else out
+
+
+def critical_angle_A(profile: TabulatedProfile, params: Parameters, adhesion: bool = True) -> float:
+    """Scenario A's critical angle (degrees): ``tan α_c = d_max / (K a(d_max))`` on the ``Δγ0`` branch (with
+    adhesion) or the non-adhesive one."""
+    radius = contact_radius(params.d_max, profile, params, params.dgamma0 if adhesion else 0.0)
+    angle = symbolic.relation("critical_angle_A").numeric(radius, params.d_max, params.tau0, params.G_star)
+    return float(np.rad2deg(angle))

@@ -1,0 +1,89 @@
+"""A tabulated indenter in both simulators: a table of the paraboloid against the paraboloid's runs (to the table's
+interpolation error, falling as the table refines), the continuum against the table's own relations (to 1e-9), the
+discrete model converging to it; depths past the table refused."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.analysis.convergence import history_differences, observed_orders
+from mdr_events.models.continuum import EventKind, extremum, solve_path
+from mdr_events.profiles import TabulatedProfile
+from mdr_events.theory import tabulated as tb
+
+REACH = 4e-3
+
+
+@pytest.fixture(scope="module")
+def paper():
+    return me.Parameters.paper()
+
+
+def _paraboloid_table(params, points: int) -> TabulatedProfile:
+    r = np.linspace(0.0, REACH, points)
+    return TabulatedProfile(r, r**2 / (2 * params.R))
+
+
+def test_a_table_of_the_paraboloid_runs_as_the_paraboloid(paper):
+    """Scenario A at 20°, continuum: F_N, F_x and A of tables with 41 and 81 points against the paraboloid's (max over
+    the run, relative to the largest value): within 1e-3, and at least 3 times closer with the finer table (second
+    order would be 4)."""
+    reference = me.simulate(paper, "A", alpha=[20.0], method="continuum", samples=801)
+    times = reference["time"].values
+    gaps = []
+    for points in (41, 81):
+        run = me.simulate(paper, "A", alpha=[20.0], method="continuum", t=times,
+                          profile=_paraboloid_table(paper, points))
+        gaps.append(history_differences(run, reference))
+    for name in ("normal_force", "tangential_force", "contact_area"):
+        coarse, fine = gaps[0][name][0], gaps[1][name][0]
+        assert fine < 1e-3 and coarse / fine > 3.0, (name, coarse, fine)
+
+
+def test_the_continuum_meets_the_tables_relations(paper):
+    """The continuum of a table: its least F_N along the way out is the table's pull-off force under force control
+    (the least F_N along the branch), and its slip onset while indenting the table's d_crit_A, to 1e-9."""
+    table = _paraboloid_table(paper, 41)
+    path = me.Path.scenario_A(20.0, paper, profile=table)
+    solution = solve_path(paper, path, profile=table)
+    pull_off = tb.pull_off_force(table, paper, paper.dgamma1)
+    assert extremum(solution, "normal_force", False)[1] == pytest.approx(pull_off, rel=1e-9)
+    onset = next(event for event in solution.events if event.kind is EventKind.SLIP_ONSET)
+    assert onset.depth == pytest.approx(tb.d_crit_A(20.0, table, paper, adhesion=True), abs=1e-9 * paper.d_max)
+
+
+def test_the_discrete_model_converges_to_the_continuum(paper):
+    """The same table in both: max_t |discrete − continuum| of F_N, F_x and A at Δx = 8, 4, 2 µm (dt = Δx/(2v)) falls
+    at first order (observed orders above 0.7), as for the paraboloid."""
+    table = _paraboloid_table(paper, 41)
+    spacings = (8e-6, 4e-6, 2e-6)
+    differences = {}
+    for dx in spacings:
+        discrete = me.simulate(paper, "A", alpha=[30.0], dx=dx, dt=0.5 * dx / paper.v, profile=table)
+        exact = me.simulate(paper, "A", alpha=[30.0], method="continuum", t=discrete["time"].values, profile=table)
+        for name, values in history_differences(discrete, exact).items():
+            differences.setdefault(name, []).append(values[0])
+    for name in ("normal_force", "tangential_force", "contact_area"):
+        assert np.all(observed_orders(spacings, differences[name]) > 0.7), (name, differences[name])
+
+
+def test_results_carry_the_table(paper):
+    """The attributes hold the table exactly (each value as Python writes it back)."""
+    table = TabulatedProfile([0.0, 1.1e-3, 2.3e-3, 4.0e-3], [0.0, 2.0e-5, 8.9e-5, 2.7e-4])
+    ds = me.simulate(paper, "A", alpha=[20.0], method="continuum", samples=51, profile=table)
+    back = TabulatedProfile([float(v) for v in ds.attrs["profile_table_r"].split(", ")],
+                            [float(v) for v in ds.attrs["profile_table_f"].split(", ")])
+    assert back == table and "param_R" in ds.attrs["profile_note"]
+
+
+def test_a_path_deeper_than_the_table_reaches_is_refused(paper):
+    table = _paraboloid_table(paper, 41)
+    deepest = tb.branch(table, paper, paper.dgamma0).deepest
+    path = me.Path([(0.0, -1e-5), (0.0, 1.01 * deepest), (0.0, -1e-4)], speed=1e-6)
+    for call in (lambda: me.simulate(paper, path, method="continuum", profile=table),
+                 lambda: me.simulate(paper, path, dx=4e-6, profile=table),
+                 lambda: solve_path(paper, path, profile=table)):
+        with pytest.raises(ValueError, match=r"reaches the depth .* allowed for 'tabulated profile f\(r\), 41 points"):
+            call()

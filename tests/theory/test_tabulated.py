@@ -1,0 +1,122 @@
+"""The tabulated profile: its numerical Abel transform against the power laws' closed forms (second order in the
+table's spacing), Heß's relations on it against the paraboloid's, and bad tables named."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.profiles import PowerLaw, TabulatedProfile
+from mdr_events.theory import analytic
+from mdr_events.theory import power_law as pl
+from mdr_events.theory import symbolic as S
+from mdr_events.theory import tabulated as tb
+
+REACH = 4e-3  #: the tables' last radius (m)
+
+
+@pytest.fixture(scope="module")
+def paper():
+    return me.Parameters.paper()
+
+
+def _sampled(profile: PowerLaw, points: int) -> TabulatedProfile:
+    r = np.linspace(0.0, REACH, points)
+    return TabulatedProfile(r, profile.c * r**profile.n)
+
+
+def test_the_abel_transform_of_a_sampled_cone_is_exact():
+    """A linear table is its own PCHIP: the quadrature gives the cone's g = (π/2) c x to round-off."""
+    profile = PowerLaw.cone(0.1)
+    x = np.linspace(0.0, REACH, 997)
+    np.testing.assert_allclose(tb.equivalent_profile(x, _sampled(profile, 41)), pl.equivalent_profile(x, profile),
+                               rtol=0, atol=1e-14 * float(pl.equivalent_profile(REACH, profile)))
+
+
+@pytest.mark.parametrize("n", [1.5, 2.0, 3.0])
+def test_the_abel_transform_of_a_sampled_power_law_converges_at_second_order(n):
+    """g of tables of c rⁿ with 41, 81, 161 points against κₙ c xⁿ (3): the largest error over [0, r_max] (relative
+    to g(r_max)) falls at the order of the PCHIP of f, second order where f is smooth; ``n = 1.5`` has ``f''``
+    singular at the tip, where the interpolation error goes as ``h^1.5``: order min(n, 2), less 0.1."""
+    profile = pl.with_radius_at(n, 3e-3, 3e-4)
+    x = np.linspace(0.0, REACH, 997)
+    exact = pl.equivalent_profile(x, profile)
+    errors = [np.max(np.abs(tb.equivalent_profile(x, _sampled(profile, points)) - exact)) / exact[-1]
+              for points in (41, 81, 161)]
+    orders = np.log2(np.array(errors[:-1]) / np.array(errors[1:]))
+    assert np.all(orders > min(n, 2.0) - 0.1), errors
+    assert errors[-1] < 1e-4, errors
+
+
+def test_the_angular_form_is_the_abel_transform():
+    """The relation the quadrature uses, x ∫ f'(x sin θ) dθ, is (3) with r = x sin θ: for f = r² it gives x² (the
+    paraboloid's 2 × x²/2), evaluated by SymPy."""
+    import sympy as sp
+    rel = S.relation("abel_transform_angular")
+    assert rel.equation == "(3)"
+    value = rel.rhs.replace(S.f, sp.Lambda(S.r, S.r**2 / 2)).doit()
+    assert sp.simplify(value - S.x**2) == 0
+
+
+def test_hess_relations_on_a_sampled_paraboloid(paper):
+    """A table of the paraboloid (321 points): its jump-off, pull-off force, contact radius and scenario-A onset
+    against the paper's closed forms to the table's interpolation error (1e-5)."""
+    table = _sampled(PowerLaw.paraboloid(paper.R), 321)
+    point, reference = tb.jump_off(table, paper, paper.dgamma1), analytic.jump_off(paper, paper.dgamma1)
+    assert point["depth"] == pytest.approx(reference["depth"], rel=1e-5)
+    # the radius of a minimum is known to the square root of the depths' error (the branch is flat there), and so is
+    # the normal force there (it is not stationary at the displacement-controlled jump-off)
+    for key in ("contact_radius", "normal_force"):
+        assert point[key] == pytest.approx(reference[key], rel=math.sqrt(1e-5)), key
+    assert tb.pull_off_force(table, paper, paper.dgamma1) == pytest.approx(
+        pl.pull_off_force(PowerLaw.paraboloid(paper.R), paper, paper.dgamma1), rel=1e-5)
+    depths = np.linspace(0.0, paper.d_max, 7)
+    np.testing.assert_allclose(tb.contact_radius(depths, table, paper, paper.dgamma0),
+                               analytic.jkr_contact_radius(depths, paper, paper.dgamma0), rtol=1e-5)
+    onset = pl.d_crit_A(20.0, PowerLaw.paraboloid(paper.R), paper, adhesion=True)
+    assert tb.d_crit_A(20.0, table, paper, adhesion=True) == pytest.approx(onset, rel=1e-5)
+    assert math.isnan(tb.d_crit_A(60.0, table, paper, adhesion=True))  # beyond what the table reaches
+    assert math.isinf(tb.d_crit_A(90.0, table, paper))
+    assert tb.critical_angle_A(table, paper) == pytest.approx(analytic.critical_angle(paper, "A"), rel=1e-5)
+
+
+def test_the_branch_is_consistent_with_itself(paper):
+    """depth(radius(d)) = d to a few ulp; the slope is the depth's derivative and the integral its antiderivative
+    (central differences and quadrature)."""
+    from scipy import integrate
+    line = tb.branch(_sampled(PowerLaw.cone(0.1), 61), paper, paper.dgamma0)
+    for depth in np.linspace(line.jump_off_depth, line.deepest, 9)[1:]:
+        assert line.depth(line.radius(depth)) == pytest.approx(depth, abs=1e-14 * abs(line.deepest))
+    a, h = 1.234e-3, 1e-8
+    assert line.slope(a) == pytest.approx((line.depth(a + h) - line.depth(a - h)) / (2 * h), rel=1e-6)
+    assert line.integral(a) == pytest.approx(integrate.quad(line.depth, 0.0, a, limit=200)[0], rel=1e-9)
+
+
+@pytest.mark.parametrize("make, exception, words", [
+    (lambda: TabulatedProfile([0.0, 1e-3], [0.0, 1e-5]), ValueError, ["lengths 2 and 2", "at least 3"]),
+    (lambda: TabulatedProfile([0.0, 1e-3, 2e-3], [0.0, 1e-5]), ValueError, ["lengths 3 and 2"]),
+    (lambda: TabulatedProfile([1e-4, 1e-3, 2e-3], [0.0, 1e-5, 2e-5]), ValueError, ["TabulatedProfile.r=", "from 0"]),
+    (lambda: TabulatedProfile([0.0, 2e-3, 1e-3], [0.0, 1e-5, 2e-5]), ValueError, ["strictly increasing radii"]),
+    (lambda: TabulatedProfile([0.0, 1e-3, 2e-3], [0.0, 2e-5, 1e-5]), ValueError, ["TabulatedProfile.f=",
+                                                                                 "strictly increasing"]),
+    (lambda: TabulatedProfile([0.0, 1e-3, math.nan], [0.0, 1e-5, 2e-5]), ValueError, ["finite"]),
+    (lambda: TabulatedProfile([0.0, 1e-3, 2e-3], ["0", "1", "2"]), TypeError, ["TabulatedProfile.f="]),
+])
+def test_bad_tables_are_named(make, exception, words):
+    with pytest.raises(exception) as caught:
+        make()
+    for word in words:
+        assert word in str(caught.value)
+
+
+def test_a_table_whose_abel_transform_falls_is_refused():
+    """A steep rise that then flattens (a rounded punch's edge seen from inside): g(x) falls past the rise."""
+    r = np.linspace(0.0, 2e-3, 81)
+    table = TabulatedProfile(r, 1e-4 * (1.0 - np.exp(-r / 2e-4)))
+    with pytest.raises(ValueError, match=r"its Abel transform g\(x\) does not increase at x = "):
+        tb.equivalent(table)
+    with pytest.raises(ValueError, match=r"does not increase"):
+        me.simulate(me.Parameters.paper(), "A", alpha=20.0, profile=table)
