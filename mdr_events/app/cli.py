@@ -123,9 +123,11 @@ def _command_derive(args: argparse.Namespace) -> None:
 def _command_phase_diagram(args: argparse.Namespace) -> None:
     params, provenance = _parameters(args)
     profile = _profile(args)
+    friction = _friction(args)
     out = prepare_output_directory(args.out, "--out")
     stem = f"phase_diagram_{args.scenario}"
-    for outcome in write_phase_diagram(params, args.scenario, out, stem, attrs=provenance, profile=profile):
+    for outcome in write_phase_diagram(params, args.scenario, out, stem, attrs=provenance, profile=profile,
+                                       friction=friction):
         print(outcome.path)
 
 
@@ -529,6 +531,7 @@ def build_parser() -> argparse.ArgumentParser:
     phase = commands.add_parser("phase-diagram", help="write the phase diagram (Fig. 9a/9b) as .nc and .png")
     phase.add_argument("--scenario", choices=["A", "B"], required=True)
     phase.add_argument("--out", required=True, help="output directory")
+    _friction_option(phase)
     _profile_option(phase)
     _parameter_options(phase)
     phase.set_defaults(run=_command_phase_diagram)

@@ -35,6 +35,7 @@ from mdr_events.io.files import (atomic_write, check_file_path, check_output_ste
                                  prepare_output_directory, write_netcdf)
 from mdr_events.models.simulate import case_dimension
 from mdr_events.parameters import Parameters
+from mdr_events.friction import FrictionLaw
 from mdr_events.profiles import Profile
 from mdr_events.plotting.figures import figure_png, plot_phase_diagram, plot_simulation
 from mdr_events.theory.phase import phase_diagram
@@ -128,16 +129,16 @@ def _check_distinct_cases(dataset: xr.Dataset) -> None:
 
 def write_phase_diagram(params: Parameters, scenario: str, out: str | os.PathLike, stem: str,
                         keep_agreeing: bool = False, attrs: dict[str, str] | None = None,
-                        profile: Profile | None = None) -> list[FileOutcome]:
-    """Compute the phase diagram (Fig. 9a/9b; of ``profile``, default the paraboloid) and write ``stem.nc`` (with
-    the extra ``attrs``) and ``stem.png``.
+                        profile: Profile | None = None, friction: FrictionLaw | None = None) -> list[FileOutcome]:
+    """Compute the phase diagram (Fig. 9a/9b; of ``profile``, default the paraboloid, and of ``friction``, default the
+    paper's law) and write ``stem.nc`` (with the extra ``attrs``) and ``stem.png``.
 
     The output directory and the stem are checked first (:func:`~mdr_events.io.files.prepare_output_directory`,
     :func:`~mdr_events.io.files.check_output_stem`), and the figure is drawn before any file is written.
     """
     directory = prepare_output_directory(out, "out")
     check_output_stem("stem", stem)
-    dataset = phase_diagram(params, scenario=scenario, profile=profile)
+    dataset = phase_diagram(params, scenario=scenario, profile=profile, friction=friction)
     dataset.attrs.update(attrs or {})
     nc = directory / f"{stem}.nc"
     existing = _agreeing_file(dataset, nc, keep_agreeing)

@@ -125,18 +125,23 @@ def plot_phase_diagram(dataset: xr.Dataset, ax=None):
     R_mm = dataset.attrs["param_R"] * _MM
     style = {"hertz": dict(color="k", ls="-", label="non-adhesive"),
              "jkr": dict(color="tab:red", ls="--", label="adhesive")}
-    other = "profile" in dataset.attrs  # another indenter: the paper's equation numbers are the paraboloid's
+    # another indenter or friction law: the paper's equation numbers are the paraboloid's with τ0
+    other = "profile" in dataset.attrs or "friction_law" in dataset.attrs
     if scenario == "A":
         for key, eq in (("hertz", "" if other else "(17)"), ("jkr", "(Heß)" if other else "(18)")):
-            ax.plot(alpha, dataset[f"d_crit_{key}"].values * _MM, **{**style[key], "label": f"{style[key]['label']} {eq}".strip()})
+            depths = dataset[f"d_crit_{key}"].values
+            if np.all(np.isnan(depths)):  # no closed form (a friction law with Coulomb's part, adhesive)
+                continue
+            ax.plot(alpha, depths * _MM, **{**style[key], "label": f"{style[key]['label']} {eq}".strip()})
         top = 2.0 * d_max
-        for key in ("hertz", "jkr"):
+        shown = [key for key in ("hertz", "jkr") if np.isfinite(float(dataset[f"critical_angle_{key}"]))]
+        for key in shown:  # (an adhesive angle without closed form, nan, is not drawn)
             angle = float(dataset[f"critical_angle_{key}"])
             ax.plot([angle, angle], [0, d_max], color=style[key]["color"], ls=":", lw=1)
             ax.plot(angle, d_max, "o", color=style[key]["color"], ms=4)
+        names = {"hertz": "Hertz", "jkr": "JKR"}
         ax.annotate(
-            f"$\\alpha_c^{{Hertz}}$ = {float(dataset['critical_angle_hertz']):.2f}°\n"
-            f"$\\alpha_c^{{JKR}}$ = {float(dataset['critical_angle_jkr']):.2f}°",
+            "\n".join(f"$\\alpha_c^{{{names[key]}}}$ = {float(dataset[f'critical_angle_{key}']):.2f}°" for key in shown),
             xy=(float(dataset["critical_angle_hertz"]), d_max), xytext=(40, 0.55 * top),
             arrowprops={"arrowstyle": "->", "color": "0.4"}, fontsize=9)
         _label(ax, 9.0, 0.85 * top, "sliding-ind")
@@ -168,8 +173,11 @@ def plot_phase_diagram(dataset: xr.Dataset, ax=None):
     ax.set_xticks(np.arange(0, 91, 10))
     ax.set_xlabel("path angle α (°)")
     ax.set_ylabel("indentation depth d (mm)")
-    if "profile" in dataset.attrs:  # another indenter than the paper's: no figure of the paper, no R
-        ax.set_title(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario}, {dataset.attrs['profile']}", fontsize=9)
+    if "profile" in dataset.attrs or "friction_law" in dataset.attrs:  # not the paper's figure
+        subject = dataset.attrs.get("profile", f"R = {R_mm:g} mm")
+        law = f", friction law {dataset.attrs['friction_law']!r} (mu = {dataset.attrs['friction_mu']:g})" \
+            if "friction_law" in dataset.attrs else ""
+        ax.set_title(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario}, {subject}{law}", fontsize=9)
     else:
         ax.set_title(_numbered(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario}, R = {R_mm:g} mm", dataset,
                                PHASE_DIAGRAM_FIGURES))

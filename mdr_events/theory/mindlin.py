@@ -209,7 +209,8 @@ def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
         # no cap at all (μ = 0): every spring slides from first contact
         return _onset_output(np.where(alpha_arr >= 90.0, np.inf, 0.0), alpha_arr)
     vertical = alpha_arr >= 90.0
-    cot = 1.0 / np.tan(np.deg2rad(np.where(vertical, 45.0, alpha_arr)))
+    with np.errstate(divide="ignore"):  # α = 0: cot α = +inf, sliding from first contact
+        cot = 1.0 / np.tan(np.deg2rad(np.where(vertical, 45.0, alpha_arr)))
     slides = (cot > kappa) & ~vertical
     effective = np.rad2deg(np.arctan2(1.0, np.where(slides, cot - kappa, 1.0)))  # α' of cot α' = cot α − κ
     if tau0_law.tau0 == 0.0:

@@ -9,8 +9,9 @@ import xarray as xr
 
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import Profile, profile_attrs
-from mdr_events.theory import analytic, power_law
+from mdr_events.friction import FrictionLaw, as_friction_law, friction_attrs
+from mdr_events.profiles import Profile, TabulatedProfile, profile_attrs
+from mdr_events.theory import analytic, mindlin, power_law, tabulated
 from mdr_events.validation import check_choice, validate_alpha
 
 __all__ = ["phase_diagram", "default_angles", "PHASE_DIAGRAM_CONTENT", "PHASE_DIAGRAM_VARIABLES"]
@@ -34,6 +35,7 @@ def phase_diagram(
     alpha=None,
     scenario: Literal["A", "B"] = "A",
     profile: Profile | None = None,
+    friction: FrictionLaw | str | None = None,
 ) -> xr.Dataset:
     """Slip-onset depth against path angle: the phase diagram of Fig. 9a or 9b.
 
@@ -49,7 +51,12 @@ def phase_diagram(
     profile : PowerLaw or FlatPunch, optional
         Another indenter than the paper's paraboloid of ``params.R`` (:mod:`mdr_events.theory.power_law`); the
         dataset then names it in the attribute ``profile`` and is not the paper's figure. The "hertz" variables
-        are then the non-adhesive ones, "jkr" the adhesive (Heß's rule).
+        are then the non-adhesive ones, "jkr" the adhesive (Heß's rule). A :class:`TabulatedProfile` has scenario A's
+        (:mod:`mdr_events.theory.tabulated`, ``nan`` where the onset lies past the table).
+    friction : FrictionLaw or str, optional
+        Another friction law than the paper's ``"tau0"`` (:mod:`mdr_events.friction`): scenario A without adhesion
+        (:func:`mdr_events.theory.mindlin.d_crit_A`); the adhesive ("jkr") variables are ``nan`` (no closed form:
+        springs in tension hold no Coulomb shift), and scenario B is refused (not derived).
 
     Returns
     -------
@@ -66,6 +73,9 @@ def phase_diagram(
     if angles.ndim != 1 or angles.size == 0:
         raise ValueError(f"alpha must be a non-empty 1-D array of angles, got shape {angles.shape}")
     coords = {"alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})}
+    friction = as_friction_law(friction)
+    if not friction.is_default or isinstance(profile, TabulatedProfile):
+        return _numerical_phase_diagram(params, angles, scenario, profile, friction, coords)
     if profile is not None:
         return _profile_phase_diagram(params, angles, scenario, profile, coords)
     variables = {}
@@ -135,3 +145,39 @@ def _profile_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str
                                                                "long_name": f"critical angle, {words} ({meaning})"})
     return stamp(xr.Dataset(variables, coords=coords), params, scenario=scenario, content=PHASE_DIAGRAM_CONTENT,
                  **profile_attrs(profile))
+
+
+def _numerical_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, profile, friction: FrictionLaw,
+                             coords: dict) -> xr.Dataset:
+    """:func:`phase_diagram` of scenario A for another friction law (:mod:`~mdr_events.theory.mindlin`, without
+    adhesion) or a tabulated profile (:mod:`~mdr_events.theory.tabulated`); same variables and encoding."""
+    if scenario != "A":
+        what = f"friction={friction.law!r}" if not friction.is_default else "a tabulated profile"
+        raise ValueError(f"scenario={scenario!r} is not allowed for the phase diagram of {what}; allowed: 'A' "
+                         "(scenario B's onset is not derived for it)")
+    if isinstance(profile, TabulatedProfile) and not friction.is_default:
+        raise ValueError(f"friction={friction.law!r} is not allowed with a tabulated profile's phase diagram; allowed: "
+                         "'tau0'")
+    variables = {}
+    if isinstance(profile, TabulatedProfile):
+        kinds = {"hertz": ("non-adhesive", tabulated.d_crit_A(angles, profile, params, adhesion=False),
+                           tabulated.critical_angle_A(profile, params, adhesion=False)),
+                 "jkr": ("adhesive (Heß)", tabulated.d_crit_A(angles, profile, params, adhesion=True),
+                         tabulated.critical_angle_A(profile, params, adhesion=True))}
+    else:
+        kinds = {"hertz": (f"non-adhesive, friction law {friction.law!r}", mindlin.d_crit_A(angles, friction, params,
+                                                                                            profile),
+                           mindlin.critical_angle_A(friction, params, profile)),
+                 "jkr": (f"adhesive, friction law {friction.law!r}: no closed form (nan)",
+                         np.full(angles.shape, np.nan), np.nan)}
+    for key, (words, depth, _) in kinds.items():
+        depth = np.asarray(depth, dtype=float)
+        if key == "hertz" or isinstance(profile, TabulatedProfile):
+            depth = np.where(np.isnan(depth) | (angles >= 90.0), np.inf, depth)  # no onset while indenting
+        variables[f"d_crit_{key}"] = ("alpha", depth, {"units": "m", "long_name": f"slip-onset depth, {words}"})
+    variables["d_max"] = ((), params.d_max, {"units": "m", "long_name": "maximum indentation depth"})
+    for key, (words, _, angle) in kinds.items():
+        variables[f"critical_angle_{key}"] = ((), float(angle), {"units": "degree",
+                                                                  "long_name": f"critical angle, {words} (slip at d_max)"})
+    return stamp(xr.Dataset(variables, coords=coords), params, scenario=scenario, content=PHASE_DIAGRAM_CONTENT,
+                 **profile_attrs(profile), **friction_attrs(friction))

@@ -48,3 +48,17 @@ def test_a_bad_friction_law_is_one_line_exit_2(capsys, tmp_path, options, fragme
     status, _, err = run(capsys, "simulate", "--scenario", "A", "--alpha", "20", *options, "--out", str(tmp_path / "new"))
     assert status == 2 and err.count("\n") == 1 and fragment in err, err
     assert not (tmp_path / "new").exists()  # nothing written, not even the output directory
+
+
+def test_phase_diagram_takes_a_friction_law(capsys, tmp_path):
+    """mdr-events phase-diagram --friction coulomb --mu 0.3 (without adhesion): the angle of friction, the law named in
+    the file and the figure's title."""
+    status, out, _ = run(capsys, "phase-diagram", "--scenario", "A", "--friction", "coulomb", "--mu", "0.3",
+                         *NO_ADHESION, "--out", str(tmp_path))
+    assert status == 0
+    ds = me.open_result(tmp_path / "phase_diagram_A.nc")
+    hertz = me.Parameters.paper().replace(dgamma0=0.0, dgamma1=0.0)
+    assert ds.attrs["friction_law"] == "coulomb"
+    assert float(ds["critical_angle_hertz"]) == me.mindlin.critical_angle_A(me.FrictionLaw("coulomb", mu=0.3), hertz)
+    axes = me.plotting.plot_phase_diagram(ds)
+    assert "friction law 'coulomb'" in axes.get_title()

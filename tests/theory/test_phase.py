@@ -185,3 +185,34 @@ def test_same_input_same_bytes(paper, tmp_path):
     first = me.write_netcdf(me.phase_diagram(paper, scenario="B"), tmp_path / "a.nc").read_bytes()
     second = me.write_netcdf(me.phase_diagram(paper, scenario="B"), tmp_path / "b.nc").read_bytes()
     assert first == second
+
+
+def test_phase_diagram_of_another_friction_law():
+    """Scenario A without adhesion for Coulomb's and the combined law: mindlin's onsets (+inf where no spring
+    slides while indenting), the adhesive variables nan (no closed form), the law named; scenario B refused."""
+    hertz = me.Parameters.paper().replace(dgamma0=0.0, dgamma1=0.0)
+    angles = np.array([10.0, 40.0, 70.0, 90.0])
+    for friction in (me.FrictionLaw("coulomb", mu=0.3), me.FrictionLaw("tau0+coulomb", mu=0.2)):
+        ds = me.phase_diagram(hertz, angles, friction=friction)
+        expected = me.mindlin.d_crit_A(angles, friction, hertz)
+        np.testing.assert_array_equal(ds["d_crit_hertz"].values, np.where(np.isnan(expected), np.inf, expected))
+        assert np.all(np.isnan(ds["d_crit_jkr"].values)) and np.isnan(float(ds["critical_angle_jkr"]))
+        assert float(ds["critical_angle_hertz"]) == me.mindlin.critical_angle_A(friction, hertz)
+        assert ds.attrs["friction_law"] == friction.law
+    with pytest.raises(ValueError, match=r"scenario='B' is not allowed for the phase diagram of friction='coulomb'"):
+        me.phase_diagram(hertz, angles, scenario="B", friction=me.FrictionLaw("coulomb", mu=0.3))
+
+
+def test_phase_diagram_of_a_table_of_the_paraboloid():
+    """A table of the paper's paraboloid (161 points) gives Fig. 9a to its interpolation error: the depths to 1e-5 of
+    d_max (g is off by 4e-6 of its largest value), the angles to 1e-5."""
+    paper = me.Parameters.paper()
+    r = np.linspace(0.0, 4e-3, 161)
+    table = me.TabulatedProfile(r, r**2 / (2 * paper.R))
+    angles = np.array([5.0, 15.0, 22.0, 90.0])
+    ds, reference = me.phase_diagram(paper, angles, profile=table), me.phase_diagram(paper, angles)
+    for name in ("d_crit_hertz", "d_crit_jkr"):
+        np.testing.assert_allclose(ds[name].values, reference[name].values, rtol=0, atol=1e-5 * paper.d_max)
+    for name in ("critical_angle_hertz", "critical_angle_jkr"):
+        np.testing.assert_allclose(ds[name].values, reference[name].values, rtol=1e-5)
+    assert ds.attrs["profile"].startswith("tabulated profile")
