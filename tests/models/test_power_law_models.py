@@ -107,7 +107,7 @@ def test_the_discrete_model_converges_to_the_continuum_at_first_order(paper, n):
 
 @pytest.mark.parametrize("profile, error, message", [
     ("cone", TypeError, r"profile='cone' \(str\) is not allowed; allowed: None \(the paraboloid of R\), a PowerLaw "
-                        r"with n >= 1 or a FlatPunch"),
+                        r"with n >= 1, a FlatPunch or a TabulatedProfile"),
     (PowerLaw(1.0, 0.75), ValueError, r"PowerLaw.n=0.75 is not allowed in the simulators; allowed: n >= 1"),
 ])
 @pytest.mark.parametrize("method", ["discrete", "continuum"])
