@@ -22,6 +22,12 @@ shift, so where ``cot α <= κ`` no spring ever slides, and where ``cot α > κ`
 ``(cot α − κ) d = K a(d)``: the paper's (17) at the angle ``α'`` of ``cot α' = cot α − κ`` (:func:`d_crit_A`,
 :func:`critical_angle_A`). Coulomb's law alone (``K = 0``) then slides from first contact (the angle of friction
 ``tan α = 1/κ = G*/(μ E*)``).
+
+Scenario B without adhesion (in vertically to ``d_max``, every spring anchored at ``x = 0``): out at ``α`` all
+springs share the shift ``(d_max − d)/tan α``, and the edge's cap is the smallest, ``K a`` (its compression is
+zero): the onset is the paper's (20) for any ``τ0`` part, at once (``d_max``) for Coulomb's alone
+(:func:`d_crit_B`). Further in at ``α`` the old edge's cap is ``K a + κ (d − d_max)`` against the shift
+``(d − d_max)/tan α``: (20)'s "+" branch at ``α'`` (:func:`d_crit_B_indentation`).
 """
 
 from __future__ import annotations
@@ -35,7 +41,7 @@ from mdr_events.theory import power_law, symbolic
 from mdr_events.validation import check_real, real_array, validate_alpha
 
 __all__ = ["coulomb_cap_ratio", "full_slip_shift", "full_slip_force", "virgin_force", "tangential_force",
-           "d_crit_A", "critical_angle_A"]
+           "d_crit_A", "critical_angle_A", "d_crit_B", "d_crit_B_indentation", "critical_angle_B_indentation"]
 
 
 def coulomb_cap_ratio(friction: FrictionLaw, params: Parameters) -> float:
@@ -209,10 +215,7 @@ def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
         # no cap at all (μ = 0): every spring slides from first contact
         return _onset_output(np.where(alpha_arr >= 90.0, np.inf, 0.0), alpha_arr)
     vertical = alpha_arr >= 90.0
-    with np.errstate(divide="ignore"):  # α = 0: cot α = +inf, sliding from first contact
-        cot = 1.0 / np.tan(np.deg2rad(np.where(vertical, 45.0, alpha_arr)))
-    slides = (cot > kappa) & ~vertical
-    effective = np.rad2deg(np.arctan2(1.0, np.where(slides, cot - kappa, 1.0)))  # α' of cot α' = cot α − κ
+    effective, slides = _effective_angle(alpha_arr, kappa)  # (α = 0: cot α = +inf, sliding from first contact)
     if tau0_law.tau0 == 0.0:
         depth = np.zeros_like(effective)
     else:
@@ -238,3 +241,56 @@ def critical_angle_A(friction: FrictionLaw | str | None, params: Parameters, pro
         tau0_angle = power_law.critical_angle_A(indenter, params, adhesion=False)
         cot = 1.0 / np.tan(np.deg2rad(tau0_angle)) if tau0_angle > 0.0 else np.inf
     return float(np.rad2deg(np.arctan2(1.0, cot + kappa)))
+
+
+def _effective_angle(alpha_arr: np.ndarray, kappa: float) -> tuple[np.ndarray, np.ndarray]:
+    """``α'`` of ``cot α' = cot α − κ`` (degrees) and where it exists (``cot α > κ``, ``α < 90°``)."""
+    vertical = alpha_arr >= 90.0
+    with np.errstate(divide="ignore"):
+        cot = 1.0 / np.tan(np.deg2rad(np.where(vertical, 45.0, alpha_arr)))
+    exists = (cot > kappa) & ~vertical
+    return np.rad2deg(np.arctan2(1.0, np.where(exists, cot - kappa, 1.0))), exists
+
+
+def d_crit_B(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None):
+    """Depth of slip onset in scenario B's pull-off without adhesion (m; module docstring): (20)
+    (:func:`mdr_events.theory.power_law.d_crit_B`) where the law has ``τ0``'s part, ``d_max`` (at once) for Coulomb's
+    alone; ``α = 90°`` never slides (``-inf``)."""
+    friction = as_friction_law(friction)
+    alpha_arr = validate_alpha(alpha)
+    indenter = _tau0_profile(profile, params)
+    if friction.uses_tau0:
+        return power_law.d_crit_B(alpha, indenter, params, adhesion=False)
+    return _onset_output(np.where(alpha_arr >= 90.0, -np.inf, params.d_max), alpha_arr)
+
+
+def d_crit_B_indentation(alpha, friction: FrictionLaw | str | None, params: Parameters,
+                         profile: Profile | None = None):
+    """Depth of slip onset on scenario B's indentation branch without adhesion (m; module docstring): ``+inf``
+    (never) where ``cot α <= κ``, else (20)'s "+" branch at ``α'`` (``cot α' = cot α − κ``), ``d_max`` (at once) for
+    Coulomb's law alone."""
+    friction = as_friction_law(friction)
+    alpha_arr = validate_alpha(alpha)
+    indenter = _tau0_profile(profile, params)
+    kappa = coulomb_cap_ratio(friction, params)
+    if kappa == 0.0 and friction.uses_tau0:
+        return power_law.d_crit_B_indentation(alpha, indenter, params, adhesion=False)
+    effective, exists = _effective_angle(alpha_arr, kappa)
+    if friction.uses_tau0:
+        depth = np.asarray(power_law.d_crit_B_indentation(effective, indenter, params, adhesion=False), dtype=float)
+    else:
+        depth = np.full(alpha_arr.shape, params.d_max)
+    return _onset_output(np.where(exists, depth, np.inf), alpha_arr)
+
+
+def critical_angle_B_indentation(friction: FrictionLaw | str | None, params: Parameters,
+                                 profile: Profile | None = None, final_depth: float | None = None) -> float:
+    """The "+" branch's critical angle without adhesion (degrees): slip exactly at ``final_depth`` (default
+    ``2 d_max``); ``cot α_c = cot α_c(τ0) + κ`` (the angle of friction for Coulomb's law alone)."""
+    friction = as_friction_law(friction)
+    indenter = _tau0_profile(profile, params)
+    cot = 0.0
+    if friction.uses_tau0:
+        tau0_angle = power_law.critical_angle_B_indentation(indenter, params, adhesion=False, final_depth=final_depth)
+        cot = 1.0 / np.tan(np.deg2rad(tau0_angle)) if tau0_angle > 0.0 else np.inf
+    return float(np.rad2deg(np.arctan2(1.0, cot + coulomb_cap_ratio(friction, params))))

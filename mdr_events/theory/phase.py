@@ -151,13 +151,14 @@ def _numerical_phase_diagram(params: Parameters, angles: np.ndarray, scenario: s
                              coords: dict) -> xr.Dataset:
     """:func:`phase_diagram` of scenario A for another friction law (:mod:`~mdr_events.theory.mindlin`, without
     adhesion) or a tabulated profile (:mod:`~mdr_events.theory.tabulated`); same variables and encoding."""
-    if scenario != "A":
-        what = f"friction={friction.law!r}" if not friction.is_default else "a tabulated profile"
-        raise ValueError(f"scenario={scenario!r} is not allowed for the phase diagram of {what}; allowed: 'A' "
-                         "(scenario B's onset is not derived for it)")
     if isinstance(profile, TabulatedProfile) and not friction.is_default:
         raise ValueError(f"friction={friction.law!r} is not allowed with a tabulated profile's phase diagram; allowed: "
                          "'tau0'")
+    if scenario != "A" and isinstance(profile, TabulatedProfile):
+        raise ValueError(f"scenario={scenario!r} is not allowed for the phase diagram of a tabulated profile; allowed: "
+                         "'A' (scenario B's onset is not derived for it)")
+    if scenario != "A":
+        return _friction_phase_diagram_B(params, angles, profile, friction, coords)
     variables = {}
     if isinstance(profile, TabulatedProfile):
         kinds = {"hertz": ("non-adhesive", tabulated.d_crit_A(angles, profile, params, adhesion=False),
@@ -180,4 +181,30 @@ def _numerical_phase_diagram(params: Parameters, angles: np.ndarray, scenario: s
         variables[f"critical_angle_{key}"] = ((), float(angle), {"units": "degree",
                                                                   "long_name": f"critical angle, {words} (slip at d_max)"})
     return stamp(xr.Dataset(variables, coords=coords), params, scenario=scenario, content=PHASE_DIAGRAM_CONTENT,
+                 **profile_attrs(profile), **friction_attrs(friction))
+
+
+def _friction_phase_diagram_B(params: Parameters, angles: np.ndarray, profile, friction: FrictionLaw,
+                              coords: dict) -> xr.Dataset:
+    """Scenario B's phase diagram of another friction law without adhesion (:mod:`~mdr_events.theory.mindlin`); the
+    adhesive variables ``nan``."""
+    coords["branch"] = ("branch", np.array(analytic.BRANCHES), {"units": "1", "long_name": "motion at angle from d_max"})
+    hertz = np.stack([mindlin.d_crit_B(angles, friction, params, profile),
+                      mindlin.d_crit_B_indentation(angles, friction, params, profile)])
+    words = f"friction law {friction.law!r}"
+    variables = {
+        "d_crit_hertz": (("branch", "alpha"), hertz, {"units": "m", "long_name": f"slip-onset depth, non-adhesive, "
+                                                                                   f"{words}"}),
+        "d_crit_jkr": (("branch", "alpha"), np.full(hertz.shape, np.nan),
+                       {"units": "m", "long_name": f"slip-onset depth, adhesive, {words}: no closed form (nan)"}),
+        "jump_off_depth": ((), 0.0, {"units": "m", "long_name": "jump-off depth on the pull-off branch (without "
+                                                                 "adhesion the contact ends at the surface)"}),
+        "d_max": ((), params.d_max, {"units": "m", "long_name": "maximum indentation depth"}),
+        # without adhesion the contact shrinks to nothing: slip always comes first (90°, as for τ0)
+        "critical_angle_hertz": ((), 90.0, {"units": "degree", "long_name": f"critical angle, non-adhesive, {words} "
+                                                                             "(no slip before jump-off above it)"}),
+        "critical_angle_jkr": ((), np.nan, {"units": "degree", "long_name": f"critical angle, adhesive, {words}: no "
+                                                                             "closed form (nan)"}),
+    }
+    return stamp(xr.Dataset(variables, coords=coords), params, scenario="B", content=PHASE_DIAGRAM_CONTENT,
                  **profile_attrs(profile), **friction_attrs(friction))

@@ -206,3 +206,29 @@ def test_scenario_a_onsets_meet_the_closed_forms(hertz, friction, profile):
             assert math.isnan(expected) or expected > hertz.d_max
         else:
             assert onsets[0] == pytest.approx(expected, abs=1e-9 * hertz.d_max), (alpha, onsets, expected)
+
+
+@pytest.mark.parametrize("friction", [COULOMB, COMBINED], ids=lambda f: f.law)
+@pytest.mark.parametrize("scenario", ["B", "B+"])
+def test_scenario_b_onsets_meet_the_closed_forms(hertz, friction, scenario):
+    """Scenario B (out at α from d_max) and B+ (further in at α) without adhesion: the continuum's first slip onset
+    after the corner at d_max against mindlin.d_crit_B and d_crit_B_indentation (1e-9 of d_max); none on B+ above
+    its critical angle (with the default final depth 2 d_max)."""
+    closed = mindlin.d_crit_B if scenario == "B" else mindlin.d_crit_B_indentation
+    build = me.Path.scenario_B if scenario == "B" else me.Path.scenario_B_indentation
+    angles = [20.0, 50.0]
+    if scenario == "B+":
+        angles.append(1.02 * mindlin.critical_angle_B_indentation(friction, hertz))
+    for alpha in angles:
+        path = build(alpha, hertz)
+        solution = solve_path(hertz, path, friction=friction)
+        start = path.first_contact_time()
+        corner, turn = path.corner_times[1] - start, path.corner_times[2] - start  # d_max; the far end of the motion
+        onsets = [event.depth for event in solution.events
+                  if event.kind is EventKind.SLIP_ONSET and corner <= event.time < turn]
+        expected = closed(alpha, friction, hertz)
+        reached = expected <= path.waypoints[2, 1] if scenario == "B+" else expected >= path.waypoints[2, 1]
+        if reached:
+            assert onsets[0] == pytest.approx(expected, abs=1e-9 * hertz.d_max), (alpha, onsets, expected)
+        else:
+            assert not onsets, (alpha, onsets, expected)

@@ -189,3 +189,21 @@ def test_scenario_a_closed_forms_of_the_laws(hertz):
     assert below == 0.0 and math.isnan(above)
     np.testing.assert_array_equal(mindlin.d_crit_A([30.0, 90.0], FrictionLaw("coulomb", mu=0.0), hertz), [0.0, np.inf])
     assert math.isinf(mindlin.d_crit_A(90.0, combined, hertz))
+
+
+def test_scenario_b_closed_forms_of_the_laws(hertz):
+    """Out at α: the edge (compression 0) slides first, so the combined law's onset is τ0's (20) and Coulomb's alone
+    slides at once; further in, the "+" branch at α' and its critical angle, at which the onset is 2 d_max."""
+    coulomb, combined = FrictionLaw("coulomb", mu=0.3), FrictionLaw("tau0+coulomb", mu=0.2)
+    alphas = np.array([10.0, 40.0, 70.0, 90.0])
+    paraboloid = PowerLaw.paraboloid(hertz.R)
+    np.testing.assert_array_equal(mindlin.d_crit_B(alphas, combined, hertz), pl.d_crit_B(alphas, paraboloid, hertz))
+    np.testing.assert_array_equal(mindlin.d_crit_B(alphas, coulomb, hertz), [hertz.d_max] * 3 + [-np.inf])
+    angle = mindlin.critical_angle_B_indentation(combined, hertz)
+    assert mindlin.d_crit_B_indentation(angle, combined, hertz) == pytest.approx(2 * hertz.d_max, rel=1e-12)
+    friction_angle = mindlin.critical_angle_B_indentation(coulomb, hertz)
+    assert friction_angle == pytest.approx(mindlin.critical_angle_A(coulomb, hertz), rel=1e-15)
+    below, above = mindlin.d_crit_B_indentation([0.99 * friction_angle, 1.01 * friction_angle], coulomb, hertz)
+    assert below == hertz.d_max and math.isinf(above)
+    np.testing.assert_array_equal(mindlin.d_crit_B_indentation(alphas, None, hertz),
+                                  pl.d_crit_B_indentation(alphas, paraboloid, hertz))

@@ -189,7 +189,8 @@ def test_same_input_same_bytes(paper, tmp_path):
 
 def test_phase_diagram_of_another_friction_law():
     """Scenario A without adhesion for Coulomb's and the combined law: mindlin's onsets (+inf where no spring
-    slides while indenting), the adhesive variables nan (no closed form), the law named; scenario B refused."""
+    slides while indenting), the adhesive variables nan (no closed form), the law named; a table's scenario B
+    refused."""
     hertz = me.Parameters.paper().replace(dgamma0=0.0, dgamma1=0.0)
     angles = np.array([10.0, 40.0, 70.0, 90.0])
     for friction in (me.FrictionLaw("coulomb", mu=0.3), me.FrictionLaw("tau0+coulomb", mu=0.2)):
@@ -199,8 +200,12 @@ def test_phase_diagram_of_another_friction_law():
         assert np.all(np.isnan(ds["d_crit_jkr"].values)) and np.isnan(float(ds["critical_angle_jkr"]))
         assert float(ds["critical_angle_hertz"]) == me.mindlin.critical_angle_A(friction, hertz)
         assert ds.attrs["friction_law"] == friction.law
-    with pytest.raises(ValueError, match=r"scenario='B' is not allowed for the phase diagram of friction='coulomb'"):
-        me.phase_diagram(hertz, angles, scenario="B", friction=me.FrictionLaw("coulomb", mu=0.3))
+    r = np.linspace(0.0, 4e-3, 41)
+    with pytest.raises(ValueError, match=r"scenario='B' is not allowed for the phase diagram of a tabulated profile"):
+        me.phase_diagram(hertz, angles, scenario="B", profile=me.TabulatedProfile(r, r**2 / 0.06))
+    with pytest.raises(ValueError, match=r"friction='coulomb' is not allowed with a tabulated profile's phase diagram"):
+        me.phase_diagram(hertz, angles, profile=me.TabulatedProfile(r, r**2 / 0.06),
+                         friction=me.FrictionLaw("coulomb", mu=0.3))
 
 
 def test_phase_diagram_of_a_table_of_the_paraboloid():
@@ -216,3 +221,16 @@ def test_phase_diagram_of_a_table_of_the_paraboloid():
     for name in ("critical_angle_hertz", "critical_angle_jkr"):
         np.testing.assert_allclose(ds[name].values, reference[name].values, rtol=1e-5)
     assert ds.attrs["profile"].startswith("tabulated profile")
+
+
+def test_phase_diagram_b_of_another_friction_law():
+    hertz = me.Parameters.paper().replace(dgamma0=0.0, dgamma1=0.0)
+    friction = me.FrictionLaw("tau0+coulomb", mu=0.2)
+    angles = np.array([10.0, 50.0, 89.0])
+    ds = me.phase_diagram(hertz, angles, scenario="B", friction=friction)
+    np.testing.assert_array_equal(ds["d_crit_hertz"].sel(branch="pull-off").values,
+                                  me.mindlin.d_crit_B(angles, friction, hertz))
+    np.testing.assert_array_equal(ds["d_crit_hertz"].sel(branch="indentation").values,
+                                  me.mindlin.d_crit_B_indentation(angles, friction, hertz))
+    assert np.all(np.isnan(ds["d_crit_jkr"].values)) and ds.attrs["friction_law"] == "tau0+coulomb"
+    me.plotting.plot_phase_diagram(ds)  # draws without the adhesive curves
