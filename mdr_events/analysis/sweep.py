@@ -36,6 +36,9 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import EventKind, Tolerances, extremum, solve_path, tangential_work
 from mdr_events.models.continuum.solution import scan_spans
 from mdr_events.models import indenters
+from mdr_events.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
+from mdr_events.profiles import TabulatedProfile
+from mdr_events.models.continuum.caps import check_supported
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import METHODS, SCENARIO_NAMES, scenario_paths, simulate
@@ -103,6 +106,8 @@ class SweepSpec:
     limits: Limits = DEFAULT_LIMITS
     #: the indenter (``None``: the paraboloid of ``R``)
     profile: SimulatedProfile = None
+    #: the friction law (:mod:`mdr_events.friction`)
+    friction: FrictionLaw = TAU0
 
     def run(self, values: Sequence[float]) -> tuple[dict[str, float], np.ndarray | None]:
         """The :attr:`quantities` of the run at ``values`` (one per swept name), and its history (rows
@@ -117,12 +122,15 @@ class SweepSpec:
             path = self.scenario if isinstance(self.scenario, Path) else \
                 scenario_paths(params, self.scenario, [alpha], self.profile)[0][0]
             times = None if not self.history_samples else np.linspace(0.0, path.duration, self.history_samples)
-            out, history = (_continuum_quantities(params, path, self.tolerances, self.limits, times, self.profile)
+            out, history = (_continuum_quantities(params, path, self.tolerances, self.limits, times, self.profile,
+                                                  self.friction)
                             if self.method == "continuum"
-                            else _discrete_quantities(params, path, dx, self.n_steps, self.limits, times, self.profile))
+                            else _discrete_quantities(params, path, dx, self.n_steps, self.limits, times, self.profile,
+                                                      self.friction))
         for scenario in ("A", "B"):
             if f"critical_angle_{scenario}" in self.quantities:
-                out[f"critical_angle_{scenario}"] = indenters.critical_angle(params, scenario, self.profile)
+                out[f"critical_angle_{scenario}"] = indenters.critical_angle(params, scenario, self.profile,
+                                                                             self.friction)
         return {name: out[name] for name in self.quantities}, history
 
 
@@ -131,9 +139,9 @@ def _deepest_time(path: Path) -> float:
 
 
 def _continuum_quantities(params: Parameters, path: Path, tolerances: Tolerances, limits: Limits,
-                          times: np.ndarray | None, profile: SimulatedProfile = None
+                          times: np.ndarray | None, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0
                           ) -> tuple[dict[str, float], np.ndarray | None]:
-    solution = solve_path(params, path, tolerances, limits, profile)
+    solution = solve_path(params, path, tolerances, limits, profile, friction)
     scan = scan_spans(solution)  # one scan serves every extremum
     out = {"normal_force_min": extremum(solution, "normal_force", largest=False, scan=scan)[1],
            "tangential_force_max": max(abs(extremum(solution, "tangential_force", largest=True, scan=scan)[1]),
@@ -169,11 +177,11 @@ DISCRETE_STEP_PER_SPACING = 0.5
 
 
 def _discrete_quantities(params: Parameters, path: Path, dx: float | None, n_steps: int | None, limits: Limits,
-                         history_times: np.ndarray | None, profile: SimulatedProfile = None
-                         ) -> tuple[dict[str, float], np.ndarray | None]:
+                         history_times: np.ndarray | None, profile: SimulatedProfile = None,
+                         friction: FrictionLaw = TAU0) -> tuple[dict[str, float], np.ndarray | None]:
     dt = None if n_steps is not None or dx is None else DISCRETE_STEP_PER_SPACING * dx / path.speed
     run = simulate(params, path, method="discrete", dx=dx, dt=dt, n_steps=n_steps, limits=limits,
-                   profile=profile).isel(case=0)
+                   profile=profile, friction=friction).isel(case=0)
     times = run["time"].values
     quantities = {name: run[name].values for name in ("normal_force", "tangential_force", "contact_area",
                                                       "sliding_fraction")}
@@ -302,10 +310,14 @@ def _check_runs(spec: SweepSpec, grid: Grid) -> None:
                                  "in (0, 90] degrees")
             if name == "dx" and not np.all(column > 0):
                 raise ValueError(f"grid['dx'] holds {float(column[column <= 0][0])!r}; allowed: spacings > 0 (m)")
+    if spec.method == "continuum":  # (Coulomb's part needs no adhesion there)
+        check_supported(spec.friction, spec.base, spec.profile)
     if fields:
         for row in np.unique(grid.rows[:, fields], axis=0):
             try:
-                spec.base.replace(**{grid.names[i]: float(value) for i, value in zip(fields, row)})
+                params = spec.base.replace(**{grid.names[i]: float(value) for i, value in zip(fields, row)})
+                if spec.method == "continuum":
+                    check_supported(spec.friction, params, spec.profile)
             except (ValueError, TypeError) as error:
                 raise ValueError(f"grid: {error}") from None
 
@@ -319,7 +331,11 @@ def _signature(spec: SweepSpec, grid: Grid) -> str:
                        "dx": spec.dx, "n_steps": spec.n_steps, "tolerances": dataclasses.asdict(spec.tolerances),
                        "names": grid.names, "rows": grid.rows.tolist(), "quantities": spec.quantities,
                        "history_samples": spec.history_samples,
-                       **({} if spec.profile is None else {"profile": spec.profile.describe()})}, sort_keys=True)
+                       **({} if spec.profile is None else {"profile": spec.profile.describe()}),
+                       **({} if not isinstance(spec.profile, TabulatedProfile) else {"table": [spec.profile.r,
+                                                                                             spec.profile.f]}),
+                       **({} if spec.friction.is_default else {"friction": [spec.friction.law, spec.friction.mu]})},
+                      sort_keys=True)
 
 
 def _run_variables(quantities: Sequence[str], values: np.ndarray, errors: Sequence[str],
@@ -432,7 +448,8 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
           quantities: Sequence[str] | None = None, scheduler: str | None = None, workers: int | None = None,
           chunk_size: int = DEFAULT_CHUNK, history_samples: int | None = None, limits: Limits = DEFAULT_LIMITS,
           store: str | os.PathLike | None = None, resume: bool = True,
-          progress: Callable[[int, int], None] | None = None, profile: SimulatedProfile = None) -> xr.Dataset:
+          progress: Callable[[int, int], None] | None = None, profile: SimulatedProfile = None,
+          friction: FrictionLaw | str | None = None) -> xr.Dataset:
     """Run the model over a grid of parameters and return each run's scalar quantities.
 
     Parameters
@@ -474,6 +491,9 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     profile : PowerLaw, optional
         The indenter of every run, ``f = c rⁿ`` with ``n >= 1`` (default ``None``: the paraboloid of ``R``); the
         critical angles are then the power law's (:mod:`mdr_events.theory.power_law`).
+    friction : FrictionLaw or str, optional
+        The friction law of every run (default the paper's ``"tau0"``); with Coulomb's part the critical angles are
+        the closed forms without adhesion (:mod:`mdr_events.theory.mindlin`; ``nan`` for a set with adhesion).
 
     Returns
     -------
@@ -520,8 +540,9 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     samples = None if history_samples is None else check_count("history_samples", history_samples, 2)
     if not isinstance(limits, Limits):
         raise TypeError(f"limits={shown(limits)} ({type(limits).__name__}) is not allowed; allowed: a Limits")
+    friction = as_friction_law(friction)
     spec = SweepSpec(base, scenario, alpha, method, the_grid.names, tolerances,
-                     dx, n_steps, wanted, samples, limits, check_simulated_profile(profile))
+                     dx, n_steps, wanted, samples, limits, check_simulated_profile(profile), friction)
     _check_runs(spec, the_grid)
     scheduler = default_scheduler() if scheduler is None else scheduler
     if scheduler not in ("local", "serial") and not (isinstance(scheduler, str) and "://" in scheduler):
@@ -590,7 +611,8 @@ def _result(spec: SweepSpec, grid: Grid, values: np.ndarray, errors: list[str],
         attrs["alpha"] = spec.alpha
     if not isinstance(spec.scenario, str):
         attrs["path_waypoints"] = spec.scenario.describe()
-    return stamp(xr.Dataset(data, coords=coords), spec.base, **attrs, **indenters.profile_attrs(spec.profile))
+    return stamp(xr.Dataset(data, coords=coords), spec.base, **attrs, **indenters.profile_attrs(spec.profile),
+                 **friction_attrs(spec.friction))
 
 
 register_schema(SWEEP_CONTENT, {"failed": None, "error": None})

@@ -9,13 +9,15 @@ paraboloid's runs are those of before, bit for bit.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 
 import numpy as np
 
+from mdr_events.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
 from mdr_events.profiles import FlatPunch, PowerLaw, TabulatedProfile, profile_attrs
-from mdr_events.theory import analytic, power_law, symbolic, tabulated
+from mdr_events.theory import analytic, mindlin, power_law, symbolic, tabulated
 
 __all__ = ["MIN_SIMULATED_EXPONENT", "SimulatedProfile", "check_simulated_profile", "check_reach", "branch_radius", "jump_off", "spring_profile",
            "profile_attrs", "critical_angle"]
@@ -96,9 +98,16 @@ def spring_profile(params: Parameters, profile: SimulatedProfile = None) -> Call
     return lambda x: power_law.equivalent_profile(x, profile)
 
 
-def critical_angle(params: Parameters, scenario: str, profile: SimulatedProfile = None) -> float:
+def critical_angle(params: Parameters, scenario: str, profile: SimulatedProfile = None,
+                   friction: FrictionLaw = TAU0) -> float:
     """Scenario A's or B's critical angle (adhesive) for ``profile`` (:func:`mdr_events.theory.analytic.critical_angle`
-    for the paraboloid, :mod:`mdr_events.theory.power_law` for a power law)."""
+    for the paraboloid, :mod:`mdr_events.theory.power_law` for a power law, :mod:`mdr_events.theory.tabulated` for a
+    table's scenario A); for a friction law with Coulomb's part the closed forms without adhesion
+    (:mod:`mdr_events.theory.mindlin`), ``nan`` with adhesion (there are none)."""
+    if friction.coulomb_mu > 0.0 or not friction.uses_tau0:
+        if params.dgamma0 > 0.0 or params.dgamma1 > 0.0 or isinstance(profile, TabulatedProfile):
+            return math.nan
+        return mindlin.critical_angle_A(friction, params, profile) if scenario == "A" else 90.0
     if profile is None:
         return analytic.critical_angle(params, scenario)
     if isinstance(profile, TabulatedProfile):

@@ -47,3 +47,26 @@ def test_a_solution_of_another_law_is_refused(hertz, fretting):
     with pytest.raises(ValueError, match=r"solution= was solved for friction=FrictionLaw\(law='tau0'"):
         me.validate({"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}, hertz, fretting, solution=solution,
                     friction=COULOMB)
+
+
+def test_a_sweep_takes_a_friction_law(hertz):
+    """sweep(..., friction=): each run is the law's. Coulomb's law at 10° (below the angle of friction) slides from
+    first contact, so the largest F_x is μ F_N at d_max (Hertz's F_N: the closed form, for each E); the combined law's
+    critical angle of scenario A is mindlin's; the law is named; with adhesion the continuum sweep is refused before
+    anything runs."""
+    result = me.sweep({"E": [2e5, 6e5]}, "A", alpha=10.0, base=hertz, friction=COULOMB, scheduler="serial",
+                      quantities=["tangential_force_max"])
+    assert result.attrs["friction_law"] == "coulomb"
+    for E in (2e5, 6e5):
+        params = hertz.replace(E=E)
+        hertz_force = 4.0 / 3.0 * params.E_star * params.R**0.5 * params.d_max**1.5
+        assert float(result["tangential_force_max"].sel(E=E)) == pytest.approx(0.3 * hertz_force, rel=1e-9)
+    combined = FrictionLaw("tau0+coulomb", mu=0.2)
+    angles = me.sweep({"tau0": [1e3, 4e3]}, "A", alpha=10.0, base=hertz, friction=combined, scheduler="serial",
+                      quantities=["critical_angle_A"])
+    for tau0 in (1e3, 4e3):
+        assert float(angles["critical_angle_A"].sel(tau0=tau0)) == mindlin.critical_angle_A(combined,
+                                                                                           hertz.replace(tau0=tau0))
+    with pytest.raises(ValueError, match=r"grid: Parameters.dgamma0=0.01 is not allowed with the friction law"):
+        me.sweep({"dgamma0": [0.0, 0.01]}, "A", alpha=10.0, base=hertz, friction=combined, scheduler="serial",
+                 quantities=["tangential_force_max"])
