@@ -98,6 +98,7 @@ from mdr_events.models.paths import Path
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.models.simulate import scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
+from mdr_events.friction import TAU0, FrictionLaw
 from mdr_events.profiles import FlatPunch, PowerLaw
 from mdr_events.validation import shown
 
@@ -166,6 +167,7 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
               "scheduler": ("string", False), "workers": ("integer", False), "history_samples": ("integer", False)},
     "limits": {name: ("string or number", False) for name in LIMIT_UNITS},
     "profile": {"c": ("number", False), "n": ("number", False), "radius": ("number", False)},
+    "friction": {"law": ("string", True), "mu": ("number", False)},
     "output": {"directory": ("string", True), "name": ("string", False)},
 }
 REQUIRED_TABLES = ("output",)
@@ -219,6 +221,18 @@ class Study:
             return check_simulated_profile(profile)
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where} {error}") from None
+
+    @property
+    def friction(self) -> FrictionLaw:
+        """The ``[friction]`` table's law (``law``, and ``mu`` for a law with Coulomb's part), as ``--friction LAW --mu
+        MU`` on the command line; the paper's ``"tau0"`` without it."""
+        if "friction" not in self.tables:
+            return TAU0
+        table = self.tables["friction"]
+        try:
+            return FrictionLaw(table["law"], mu=table.get("mu"))
+        except (ValueError, TypeError) as error:
+            raise StudyError(f"{os.fspath(self.source)}: [friction] {error}") from None
 
 
 def _check_table(table: str, content: Any, where: str) -> None:
@@ -357,6 +371,10 @@ def load_study(path: str | os.PathLike) -> Study:
     study = Study(source, params, {table: dict(content) for table, content in document.items()}, provenance)
     study.limits  # a bad [limits] value is named now, not after the first computation
     study.profile  # so is a bad [profile]
+    study.friction  # and a bad [friction]
+    if "fit" in study.tables and not study.friction.is_default:
+        raise StudyError(f"{where}: [fit] with [friction] law = {study.friction.law!r} is not allowed; allowed: [fit] "
+                         "with the paper's law 'tau0' (fitting another friction law is not available yet)")
     return study
 
 
@@ -446,7 +464,8 @@ def _validations(study: Study, progress: Callable[[str], None]) -> list[tuple[st
     for run, file, stem in files:
         progress(f"validate: {run}")
         try:
-            report = validate(file, study.params, path, limits=study.limits, profile=study.profile, **options)
+            report = validate(file, study.params, path, limits=study.limits, profile=study.profile,
+                              friction=study.friction, **options)
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where}: [validate] {error}") from None
         report.attrs.update(study.provenance, path_description=description)
@@ -514,7 +533,7 @@ def run_sweep(study: Study, progress: Callable[[str], None] = print, scheduler: 
 
     try:
         result = sweep(grid, scenario, table.get("alpha"), base=study.params, store=store, resume=resume,
-                       limits=study.limits, profile=study.profile,
+                       limits=study.limits, profile=study.profile, friction=study.friction,
                        scheduler=scheduler or table.get("scheduler"),
                        workers=workers or table.get("workers"), progress=report, **options)
     except (ValueError, TypeError) as error:
@@ -577,7 +596,7 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
             if tolerance_names:
                 settings["tolerances"] = Tolerances(**{name: float(settings.pop(name)) for name in tolerance_names})
             dataset = simulate(study.params, scenario, alpha=alpha, method=method, limits=study.limits,
-                               profile=study.profile, **settings)
+                               profile=study.profile, friction=study.friction, **settings)
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where}: [simulation] {error}") from None
         dataset.attrs.update(study.provenance)
@@ -585,7 +604,7 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
     for scenario in study.tables.get("phase_diagram", {}).get("scenarios", []):
         progress(f"phase diagram: scenario {scenario}")
         written += write_phase_diagram(study.params, scenario, out, f"{study.name}_phase_diagram_{scenario}",
-                                       attrs=study.provenance, profile=study.profile)
+                                       attrs=study.provenance, profile=study.profile, friction=study.friction)
     for run, rendered in validations:
         written += write_rendered(rendered, out)
         written.verdicts[run] = str(rendered.report.attrs["verdict"])

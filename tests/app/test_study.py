@@ -238,3 +238,38 @@ def test_a_profile_table_gives_every_table_its_indenter(tmp_path):
     diagram = me.open_result(out / "demo_phase_diagram_A.nc")
     assert diagram.attrs["profile"] == profile.describe()
     assert float(diagram["critical_angle_jkr"]) == me.power_law.critical_angle_A(profile, params)
+
+
+def test_a_friction_table_gives_every_table_its_law(tmp_path):
+    """[friction] law, mu: the simulation and both phase diagrams are the law's, as through the Python API (the
+    study's parameters without adhesion, which Coulomb's part needs in the continuum)."""
+    text = STUDY.replace("tau0 = 30e3\n", "tau0 = 30e3\ndgamma0 = 0.0\ndgamma1 = 0.0\n").replace(
+        "[output]", '[friction]\nlaw = "tau0+coulomb"\nmu = 0.2\n\n[output]')
+    path = write(tmp_path, text)
+    assert main(["run", str(path)]) == 0
+    out = tmp_path / "out"
+    friction = me.FrictionLaw("tau0+coulomb", mu=0.2)
+    params = me.Parameters.paper(R=0.1).replace(tau0=30e3, dgamma0=0.0, dgamma1=0.0)
+    ds = me.open_result(out / "demo_simulation.nc")
+    assert ds.attrs["friction_law"] == "tau0+coulomb" and ds.attrs["friction_mu"] == 0.2
+    direct = me.simulate(params, "B", alpha=[20, 60], method="continuum", samples=301, friction=friction)
+    np.testing.assert_array_equal(ds["tangential_force"].values, direct["tangential_force"].values)
+    diagram = me.open_result(out / "demo_phase_diagram_A.nc")
+    assert float(diagram["critical_angle_hertz"]) == me.mindlin.critical_angle_A(friction, params)
+
+
+@pytest.mark.parametrize("table, fragment", [
+    ('[friction]\nlaw = "amontons"\n[phase_diagram]\nscenarios = ["A"]\n', "[friction] FrictionLaw.law='amontons' is "
+                                                                           "not allowed"),
+    ('[friction]\nlaw = "coulomb"\n[phase_diagram]\nscenarios = ["A"]\n', "[friction] mu=None is not allowed"),
+    ('[friction]\nmu = 0.3\n[phase_diagram]\nscenarios = ["A"]\n', "[friction] lacks the required key(s) law"),
+    ('[friction]\nlaw = "coulomb"\nmu = 0.3\n[fit]\ndata = "x.csv"\nfree = ["tau0"]\nscenario = "A"\nalpha = 20\n',
+     "[fit] with [friction] law = 'coulomb' is not allowed"),
+])
+def test_a_bad_friction_table_is_named(capsys, tmp_path, table, fragment):
+    path = tmp_path / "study.toml"
+    path.write_text(table + '[output]\ndirectory = "out"\n')
+    with pytest.raises(StudyError) as error:
+        load_study(path)
+    assert fragment in str(error.value)
+    assert main(["run", str(path)]) == 2
