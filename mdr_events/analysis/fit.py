@@ -53,6 +53,7 @@ from mdr_events.analysis.validate import resolve_path, times_from_contact
 from mdr_events.io.datasets import figure_of, register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
+from mdr_events.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs
 from mdr_events.models.paths import Path
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
@@ -302,11 +303,12 @@ def _shifted(path: Path, depth_offset: float) -> Path:
 
 
 def model_curves(params: Parameters, path: Path, times: np.ndarray, tolerances: Tolerances,
-                 limits: Limits, quantities: Sequence[str], profile: SimulatedProfile = None) -> ModelCurves:
+                 limits: Limits, quantities: Sequence[str], profile: SimulatedProfile = None,
+                 friction: FrictionLaw = TAU0) -> ModelCurves:
     """The model's curves at ``times`` (s on the path's clock) by the module's rule out of contact: 0 where
     the indenter is out of the elastomer, ``nan`` (left out) before a path that starts inside it and after
     one that ends in contact (the indenter ``profile``; ``None``: the paraboloid of ``params.R``)."""
-    return curves_of(solve_path(params, path, tolerances, limits, profile), path, times, quantities)
+    return curves_of(solve_path(params, path, tolerances, limits, profile, friction), path, times, quantities)
 
 
 def curves_of(solution: PathSolution, path: Path, times: np.ndarray, quantities: Sequence[str]) -> ModelCurves:
@@ -331,16 +333,18 @@ def synthetic_measurement(params: Parameters, path, alpha: float | None = None, 
                           relative_noise: float = 0.0, seed: int = 0,
                           quantities: Sequence[str] = ("normal_force", "tangential_force", "contact_area"),
                           time_shift: float = 0.0, tolerances: Tolerances = Tolerances(),
-                          limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None) -> xr.Dataset:
+                          limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
+                          friction: FrictionLaw | str | None = None) -> xr.Dataset:
     """Curves a measurement of this model would give: the continuum at ``times`` (s on the path's clock,
     the clock then reading ``times + time_shift``) plus white noise of ``relative_noise`` times each
     quantity's largest magnitude (``numpy.random.default_rng(seed)``), as a Dataset :func:`fit` reads
     (``time_origin="path_start"``, with ``time_shift`` the offset a fit should find); ``profile``: the indenter
     (``None``: the paraboloid of ``params.R``)."""
     profile = check_simulated_profile(profile)
+    friction = as_friction_law(friction)
     the_path = resolve_path(params, path, alpha, profile)
     times = np.asarray(times, dtype=float)
-    curves = model_curves(params, the_path, times, tolerances, limits, tuple(quantities), profile).values
+    curves = model_curves(params, the_path, times, tolerances, limits, tuple(quantities), profile, friction).values
     rng = np.random.default_rng(seed)
     data = {}
     for name in quantities:
@@ -350,16 +354,18 @@ def synthetic_measurement(params: Parameters, path, alpha: float | None = None, 
     coords = {"time": ("time", times + time_shift, {"units": "s", "long_name": "time of the synthetic measurement"})}
     return stamp(xr.Dataset(data, coords=coords), params, content=SYNTHETIC_CONTENT,
                  relative_noise=float(relative_noise), seed=int(seed), time_shift=float(time_shift),
-                 path_waypoints=the_path.describe(), path_speed=the_path.speed, **profile_attrs(profile))
+                 path_waypoints=the_path.describe(), path_speed=the_path.speed, **profile_attrs(profile),
+                 **friction_attrs(friction))
 
 
 class _Problem:
     """The weighted residuals of one fit, and a count of the continuum solves."""
 
     def __init__(self, free: FreeParameters, measurement: Measurement, path_of: Callable[[Parameters], Path],
-                 tolerances: Tolerances, limits: Limits, profile: SimulatedProfile = None):
+                 tolerances: Tolerances, limits: Limits, profile: SimulatedProfile = None,
+                 friction: FrictionLaw = TAU0):
         self.free, self.measurement, self.path_of = free, measurement, path_of
-        self.tolerances, self.limits, self.profile = tolerances, limits, profile
+        self.tolerances, self.limits, self.profile, self.friction = tolerances, limits, profile, friction
         self.solves = 0
         self.quantities = tuple(measurement.values)
         #: least_squares asks for the Jacobian where it just evaluated the residuals: the last (θ, curves, r)
@@ -371,7 +377,7 @@ class _Problem:
         try:
             path = _shifted(self.path_of(params), depth_offset)
             return model_curves(params, path, self.measurement.path_time - time_offset, self.tolerances,
-                                self.limits, self.quantities, self.profile)
+                                self.limits, self.quantities, self.profile, self.friction)
         except (ValueError, RuntimeError) as error:
             trial = ", ".join(f"{name}={value:.6g}" for name, value in zip(self.free.names,
                                                                              self.free.to_natural(theta)))
@@ -645,7 +651,8 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
         bounds: Mapping[str, tuple[float, float]] | None = None, noise: Mapping[str, float] | None = None,
         names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
         time_origin="first_contact", tolerances: Tolerances = Tolerances(),
-        limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None) -> FitResult:
+        limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
+        friction: FrictionLaw | str | None = None) -> FitResult:
     """Fit the continuum model to measured curves by weighted least squares.
 
     Parameters
@@ -677,6 +684,9 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     profile : PowerLaw, optional
         The indenter of the experiment, ``f = c rⁿ`` with ``n >= 1`` (default ``None``: the paraboloid of ``R``);
         ``R`` is then not a parameter of the model and cannot be free.
+    friction : FrictionLaw or str, optional
+        The friction law of the experiment, fixed (default the paper's ``"tau0"``; Coulomb's part needs a contact
+        without adhesion in the continuum): its ``μ`` is not a free parameter.
 
     Returns
     -------
@@ -689,6 +699,7 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
         exclude the start, a start of 0 for a log-scaled parameter, fewer samples than free parameters.
     """
     profile = check_simulated_profile(profile)
+    friction = as_friction_law(friction)
     if profile is not None and "R" in free:
         raise ValueError(f"free={list(free)!r} frees R with profile={profile!r}; allowed: the names of "
                          f"{list(FREE_NAMES)} but R (the power law's shape is c and n, R belongs to the paraboloid)")
@@ -698,7 +709,7 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     free_set = free_parameters(free, start, bounds, nominal.duration, max(nominal.max_depth, start.d_max))
     # a scenario is rebuilt per trial (its way out ends below the jump-off, which depends on the parameters)
     problem = _Problem(free_set, measurement, lambda params: resolve_path(params, path, alpha, profile), tolerances,
-                       limits, profile)
+                       limits, profile, friction)
     samples = sum(int(np.count_nonzero(np.isfinite(v))) for v in measurement.values.values())
     if samples <= len(free_set.names):
         raise ValueError(f"{read.source}: {samples} finite samples for {len(free_set.names)} free parameters; "
@@ -749,6 +760,7 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     if isinstance(path, str):
         attrs.update(scenario=path, alpha=float(alpha))
     attrs.update(profile_attrs(profile))
+    attrs.update(friction_attrs(friction))
     return FitResult(stamp(dataset, params, **attrs), params, time_offset, depth_offset)
 
 

@@ -372,9 +372,6 @@ def load_study(path: str | os.PathLike) -> Study:
     study.limits  # a bad [limits] value is named now, not after the first computation
     study.profile  # so is a bad [profile]
     study.friction  # and a bad [friction]
-    if "fit" in study.tables and not study.friction.is_default:
-        raise StudyError(f"{where}: [fit] with [friction] law = {study.friction.law!r} is not allowed; allowed: [fit] "
-                         "with the paper's law 'tau0' (fitting another friction law is not available yet)")
     return study
 
 
@@ -492,7 +489,7 @@ def _fit_report(study: Study, progress: Callable[[str], None]) -> tuple[str, Ren
         bounds = {name: tuple(pair) for name, pair in table.get("bounds", {}).items()}
         progress(f"fit: {table['data']} (free: {', '.join(table['free'])})")
         result = fit(data, *motion, free=table["free"], start=study.params, bounds=bounds, limits=study.limits,
-                     profile=study.profile, **options)
+                     profile=study.profile, friction=study.friction, **options)
     except (ValueError, TypeError) as error:
         raise StudyError(f"{where}: [fit] {error}") from None
     result.dataset.attrs.update(study.provenance, path_description=description)

@@ -263,8 +263,6 @@ def test_a_friction_table_gives_every_table_its_law(tmp_path):
                                                                            "not allowed"),
     ('[friction]\nlaw = "coulomb"\n[phase_diagram]\nscenarios = ["A"]\n', "[friction] mu=None is not allowed"),
     ('[friction]\nmu = 0.3\n[phase_diagram]\nscenarios = ["A"]\n', "[friction] lacks the required key(s) law"),
-    ('[friction]\nlaw = "coulomb"\nmu = 0.3\n[fit]\ndata = "x.csv"\nfree = ["tau0"]\nscenario = "A"\nalpha = 20\n',
-     "[fit] with [friction] law = 'coulomb' is not allowed"),
 ])
 def test_a_bad_friction_table_is_named(capsys, tmp_path, table, fragment):
     path = tmp_path / "study.toml"
