@@ -468,6 +468,7 @@ def _command_fit(args: argparse.Namespace) -> int:
 
     params, provenance = _validation_parameters(args)
     path, description = _validation_path(args, params)
+    friction = _friction(args)  # a bad law is named before anything is written
     out = prepare_output_directory(args.out, "--out")
     stem = f"{Path(args.data).stem}_fit"
     try:
@@ -485,7 +486,8 @@ def _command_fit(args: argparse.Namespace) -> int:
     motion = (path, None) if args.path is not None else (args.scenario, args.alpha)
     result = fit(args.data, *motion, free=args.free, start=params, bounds=_bounds(args.bounds),
                  noise=noise, names=_pairs("--names", args.names, quantities), units=units,
-                 time_origin=_time_origin(args.time_origin), limits=_limits(args), profile=_profile(args))
+                 time_origin=_time_origin(args.time_origin), limits=_limits(args), profile=_profile(args),
+                 friction=friction)
     result.dataset.attrs.update(provenance, path_description=description)
     rendered = render_fit(result.dataset, stem)
     written = write_rendered(rendered, out)
@@ -584,6 +586,7 @@ def build_parser() -> argparse.ArgumentParser:
                          help=f"the parameters to fit: {', '.join(FREE_NAMES)}")
     _measured_path_options(fitting, "measurement", start=True)
     fitting.add_argument("--out", required=True, help="output directory")
+    _friction_option(fitting)
     _profile_option(fitting)
     _limit_option(fitting)
     _column_options(fitting, "measurement's")

@@ -62,3 +62,12 @@ def test_phase_diagram_takes_a_friction_law(capsys, tmp_path):
     assert float(ds["critical_angle_hertz"]) == me.mindlin.critical_angle_A(me.FrictionLaw("coulomb", mu=0.3), hertz)
     axes = me.plotting.plot_phase_diagram(ds)
     assert "friction law 'coulomb'" in axes.get_title()
+
+
+def test_fit_refuses_a_bad_law_before_writing(capsys, tmp_path):
+    data = tmp_path / "measured.csv"
+    data.write_text("time,normal_force\n0,0\n1,1\n")
+    status, _, err = run(capsys, "fit", str(data), "--scenario", "A", "--alpha", "20", "--free", "E", "--friction",
+                         "coulomb", "--out", str(tmp_path / "new"))
+    assert status == 2 and err.count("\n") == 1 and "--friction coulomb: mu=None is not allowed" in err, err
+    assert not (tmp_path / "new").exists()
