@@ -310,7 +310,7 @@ def _check_runs(spec: SweepSpec, grid: Grid) -> None:
                                  "in (0, 90] degrees")
             if name == "dx" and not np.all(column > 0):
                 raise ValueError(f"grid['dx'] holds {float(column[column <= 0][0])!r}; allowed: spacings > 0 (m)")
-    if spec.method == "continuum":  # (Coulomb's part needs no adhesion there)
+    if spec.method == "continuum" and not fields:  # (Coulomb's part needs no adhesion there; swept sets: below)
         check_supported(spec.friction, spec.base, spec.profile)
     if fields:
         for row in np.unique(grid.rows[:, fields], axis=0):

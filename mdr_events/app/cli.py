@@ -155,7 +155,7 @@ def _profile(args: argparse.Namespace) -> SimulatedProfile:
 
 
 def _friction_option(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--friction", choices=list(FRICTION_LAWS), default="tau0",
+    parser.add_argument("--friction", choices=list(FRICTION_LAWS), default=None,
                         help="the cap on the springs' shifts: tau0 (the paper's, default), coulomb (mu times the "
                              "spring's normal force) or tau0+coulomb (their sum)")
     parser.add_argument("--mu", type=float, default=None, help="the coefficient of friction of --friction coulomb "
@@ -165,9 +165,11 @@ def _friction_option(parser: argparse.ArgumentParser) -> None:
 def _friction(args: argparse.Namespace) -> FrictionLaw:
     """The ``--friction LAW [--mu MU]`` law (default the paper's ``tau0``)."""
     try:
-        return FrictionLaw(args.friction, mu=args.mu)
+        return FrictionLaw(args.friction or "tau0", mu=args.mu)
     except (TypeError, ValueError) as error:
-        given = f"--friction {args.friction}" + ("" if args.mu is None else f" --mu {args.mu:g}")
+        law = f"--friction {args.friction}" if args.friction else "the default --friction tau0"
+        given = law if args.mu is None else (f"--mu {args.mu:g} with {law}" if not args.friction
+                                             else f"{law} --mu {args.mu:g}")
         raise UsageError(f"{given}: {error}") from None
 
 

@@ -107,7 +107,7 @@ def critical_angle(params: Parameters, scenario: str, profile: SimulatedProfile 
     if friction.coulomb_mu > 0.0 or not friction.uses_tau0:
         if params.dgamma0 > 0.0 or params.dgamma1 > 0.0 or isinstance(profile, TabulatedProfile):
             return math.nan
-        return mindlin.critical_angle_A(friction, params, profile) if scenario == "A" else 90.0
+        return (mindlin.critical_angle_A if scenario == "A" else mindlin.critical_angle_B)(friction, params, profile)
     if profile is None:
         return analytic.critical_angle(params, scenario)
     if isinstance(profile, TabulatedProfile):

@@ -32,6 +32,8 @@ zero): the onset is the paper's (20) for any ``τ0`` part, at once (``d_max``) f
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from mdr_events.friction import FrictionLaw, as_friction_law
@@ -41,7 +43,8 @@ from mdr_events.theory import power_law, symbolic
 from mdr_events.validation import check_real, real_array, validate_alpha
 
 __all__ = ["coulomb_cap_ratio", "full_slip_shift", "full_slip_force", "virgin_force", "tangential_force",
-           "d_crit_A", "critical_angle_A", "d_crit_B", "d_crit_B_indentation", "critical_angle_B_indentation"]
+           "d_crit_A", "critical_angle_A", "d_crit_B", "critical_angle_B", "d_crit_B_indentation",
+           "critical_angle_B_indentation"]
 
 
 def coulomb_cap_ratio(friction: FrictionLaw, params: Parameters) -> float:
@@ -235,19 +238,20 @@ def critical_angle_A(friction: FrictionLaw | str | None, params: Parameters, pro
     """
     friction = as_friction_law(friction)
     indenter = _tau0_profile(profile, params)
-    kappa = coulomb_cap_ratio(friction, params)
-    cot = 0.0
-    if friction.uses_tau0:
-        tau0_angle = power_law.critical_angle_A(indenter, params, adhesion=False)
-        cot = 1.0 / np.tan(np.deg2rad(tau0_angle)) if tau0_angle > 0.0 else np.inf
-    return float(np.rad2deg(np.arctan2(1.0, cot + kappa)))
+    tau0_angle = power_law.critical_angle_A(indenter, params, adhesion=False) if friction.uses_tau0 else 90.0
+    return _with_coulomb(tau0_angle, coulomb_cap_ratio(friction, params))
+
+
+def _with_coulomb(tau0_angle: float, kappa: float) -> float:
+    """The angle (degrees) of ``cot α = cot α(τ0) + κ`` (``α(τ0) = 90°``: no ``τ0`` part, the angle of friction)."""
+    cot = 1.0 / math.tan(math.radians(tau0_angle)) if 0.0 < tau0_angle < 90.0 else (math.inf if tau0_angle <= 0.0
+                                                                                     else 0.0)
+    return float(math.degrees(math.atan2(1.0, cot + kappa)))
 
 
 def _effective_angle(alpha_arr: np.ndarray, kappa: float) -> tuple[np.ndarray, np.ndarray]:
     """``α'`` of ``cot α' = cot α − κ`` (degrees) and where it exists (``cot α > κ``, ``α < 90°``)."""
-    vertical = alpha_arr >= 90.0
-    with np.errstate(divide="ignore"):
-        cot = 1.0 / np.tan(np.deg2rad(np.where(vertical, 45.0, alpha_arr)))
+    cot, vertical = _cotangent(alpha_arr)
     exists = (cot > kappa) & ~vertical
     return np.rad2deg(np.arctan2(1.0, np.where(exists, cot - kappa, 1.0))), exists
 
@@ -255,24 +259,60 @@ def _effective_angle(alpha_arr: np.ndarray, kappa: float) -> tuple[np.ndarray, n
 def d_crit_B(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None):
     """Depth of slip onset in scenario B's pull-off without adhesion (m; module docstring): (20)
     (:func:`mdr_events.theory.power_law.d_crit_B`) where the law has ``τ0``'s part, ``d_max`` (at once) for Coulomb's
-    alone; ``α = 90°`` never slides (``-inf``)."""
+    alone; ``α = 90°`` never slides (``-inf``).
+
+    The flat punch has no spring at zero compression: every cap is ``K a + κ d`` against the shift
+    ``(d_max − d) cot α``, so ``d = (d_max cot α − K a)/(cot α + κ)``, ``-inf`` below the surface (it comes off
+    first).
+    """
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
     indenter = _tau0_profile(profile, params)
+    if isinstance(indenter, FlatPunch):
+        cot, vertical = _cotangent(alpha_arr)
+        K = power_law.cap_per_radius(params) if friction.uses_tau0 else 0.0
+        depth = (params.d_max * cot - K * indenter.radius) / (cot + coulomb_cap_ratio(friction, params))
+        return _onset_output(np.where(vertical | (depth < 0.0), -np.inf, depth), alpha_arr)
     if friction.uses_tau0:
         return power_law.d_crit_B(alpha, indenter, params, adhesion=False)
     return _onset_output(np.where(alpha_arr >= 90.0, -np.inf, params.d_max), alpha_arr)
+
+
+def _cotangent(alpha_arr: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``cot α`` (``+inf`` at 0°; 1 in place of 90°) and where ``α >= 90°``."""
+    vertical = alpha_arr >= 90.0
+    with np.errstate(divide="ignore"):
+        return 1.0 / np.tan(np.deg2rad(np.where(vertical, 45.0, alpha_arr))), vertical
+
+
+def critical_angle_B(friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None) -> float:
+    """Scenario B's critical angle without adhesion (degrees): a contact that shrinks to nothing always slides first
+    (90°); the flat punch comes off whole at the surface, where its edge holds only ``K a``: ``d_max cot α_c = K a``,
+    as for ``τ0`` alone (Coulomb's part is zero at ``d = 0``)."""
+    friction = as_friction_law(friction)
+    indenter = _tau0_profile(profile, params)
+    if isinstance(indenter, FlatPunch) and friction.uses_tau0:
+        return power_law.critical_angle_B(indenter, params, adhesion=False)
+    return 90.0
 
 
 def d_crit_B_indentation(alpha, friction: FrictionLaw | str | None, params: Parameters,
                          profile: Profile | None = None):
     """Depth of slip onset on scenario B's indentation branch without adhesion (m; module docstring): ``+inf``
     (never) where ``cot α <= κ``, else (20)'s "+" branch at ``α'`` (``cot α' = cot α − κ``), ``d_max`` (at once) for
-    Coulomb's law alone."""
+    Coulomb's law alone. The flat punch: every cap ``K a + κ d`` against ``(d − d_max) cot α``,
+    ``d = (K a + d_max cot α)/(cot α − κ)``."""
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
     indenter = _tau0_profile(profile, params)
     kappa = coulomb_cap_ratio(friction, params)
+    if isinstance(indenter, FlatPunch):
+        cot, vertical = _cotangent(alpha_arr)
+        K = power_law.cap_per_radius(params) if friction.uses_tau0 else 0.0
+        slides = (cot > kappa) & ~vertical
+        with np.errstate(divide="ignore", invalid="ignore"):
+            depth = (K * indenter.radius + params.d_max * cot) / (cot - kappa)
+        return _onset_output(np.where(slides, depth, np.inf), alpha_arr)
     if kappa == 0.0 and friction.uses_tau0:
         return power_law.d_crit_B_indentation(alpha, indenter, params, adhesion=False)
     effective, exists = _effective_angle(alpha_arr, kappa)
@@ -286,11 +326,15 @@ def d_crit_B_indentation(alpha, friction: FrictionLaw | str | None, params: Para
 def critical_angle_B_indentation(friction: FrictionLaw | str | None, params: Parameters,
                                  profile: Profile | None = None, final_depth: float | None = None) -> float:
     """The "+" branch's critical angle without adhesion (degrees): slip exactly at ``final_depth`` (default
-    ``2 d_max``); ``cot α_c = cot α_c(τ0) + κ`` (the angle of friction for Coulomb's law alone)."""
+    ``2 d_max``); ``cot α_c = cot α_c(τ0) + κ`` (the angle of friction for Coulomb's law alone); the flat punch's
+    ``cot α_c = (K a + κ F)/(F − d_max)`` at the final depth ``F``."""
     friction = as_friction_law(friction)
     indenter = _tau0_profile(profile, params)
-    cot = 0.0
-    if friction.uses_tau0:
-        tau0_angle = power_law.critical_angle_B_indentation(indenter, params, adhesion=False, final_depth=final_depth)
-        cot = 1.0 / np.tan(np.deg2rad(tau0_angle)) if tau0_angle > 0.0 else np.inf
-    return float(np.rad2deg(np.arctan2(1.0, cot + coulomb_cap_ratio(friction, params))))
+    kappa = coulomb_cap_ratio(friction, params)
+    if isinstance(indenter, FlatPunch):
+        final = 2.0 * params.d_max if final_depth is None else final_depth
+        K = power_law.cap_per_radius(params) if friction.uses_tau0 else 0.0
+        return float(math.degrees(math.atan2(final - params.d_max, K * indenter.radius + kappa * final)))
+    tau0_angle = power_law.critical_angle_B_indentation(indenter, params, adhesion=False, final_depth=final_depth) \
+        if friction.uses_tau0 else 90.0
+    return _with_coulomb(tau0_angle, kappa)

@@ -55,8 +55,8 @@ def phase_diagram(
         (:mod:`mdr_events.theory.tabulated`, ``nan`` where the onset lies past the table).
     friction : FrictionLaw or str, optional
         Another friction law than the paper's ``"tau0"`` (:mod:`mdr_events.friction`): scenario A without adhesion
-        (:func:`mdr_events.theory.mindlin.d_crit_A`); the adhesive ("jkr") variables are ``nan`` (no closed form:
-        springs in tension hold no Coulomb shift), and scenario B is refused (not derived).
+        (:func:`mdr_events.theory.mindlin.d_crit_A`, ``d_crit_B``, ``d_crit_B_indentation``); the adhesive ("jkr")
+        variables are ``nan`` (no closed form: springs in tension hold no Coulomb shift).
 
     Returns
     -------
@@ -173,7 +173,9 @@ def _numerical_phase_diagram(params: Parameters, angles: np.ndarray, scenario: s
                          np.full(angles.shape, np.nan), np.nan)}
     for key, (words, depth, _) in kinds.items():
         depth = np.asarray(depth, dtype=float)
-        if key == "hertz" or isinstance(profile, TabulatedProfile):
+        if isinstance(profile, TabulatedProfile):  # nan: the onset lies past what the table reaches (unknown)
+            depth = np.where(angles >= 90.0, np.inf, depth)
+        elif key == "hertz":
             depth = np.where(np.isnan(depth) | (angles >= 90.0), np.inf, depth)  # no onset while indenting
         variables[f"d_crit_{key}"] = ("alpha", depth, {"units": "m", "long_name": f"slip-onset depth, {words}"})
     variables["d_max"] = ((), params.d_max, {"units": "m", "long_name": "maximum indentation depth"})
@@ -200,9 +202,9 @@ def _friction_phase_diagram_B(params: Parameters, angles: np.ndarray, profile, f
         "jump_off_depth": ((), 0.0, {"units": "m", "long_name": "jump-off depth on the pull-off branch (without "
                                                                  "adhesion the contact ends at the surface)"}),
         "d_max": ((), params.d_max, {"units": "m", "long_name": "maximum indentation depth"}),
-        # without adhesion the contact shrinks to nothing: slip always comes first (90°, as for τ0)
-        "critical_angle_hertz": ((), 90.0, {"units": "degree", "long_name": f"critical angle, non-adhesive, {words} "
-                                                                             "(no slip before jump-off above it)"}),
+        "critical_angle_hertz": ((), mindlin.critical_angle_B(friction, params, profile),
+                                 {"units": "degree", "long_name": f"critical angle, non-adhesive, {words} (no slip before "
+                                                                  "jump-off above it)"}),
         "critical_angle_jkr": ((), np.nan, {"units": "degree", "long_name": f"critical angle, adhesive, {words}: no "
                                                                              "closed form (nan)"}),
     }

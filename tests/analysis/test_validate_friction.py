@@ -84,3 +84,11 @@ def test_a_fit_with_coulombs_law_recovers_the_modulus(hertz, fretting):
     estimate = result.estimates["E"]
     assert estimate.lower <= hertz.E <= estimate.upper and abs(estimate.value / hertz.E - 1) < 0.01
     assert result.dataset.attrs["friction_law"] == "coulomb"
+
+
+def test_a_sweep_that_takes_the_adhesion_away_runs_coulombs_law():
+    """The base set has adhesion, but every swept set has none: the continuum sweep of Coulomb's law runs."""
+    result = me.sweep({"dgamma0": [0.0], "dgamma1": [0.0], "E": [3e5, 4e5]}, "A", alpha=10.0,
+                      base=me.Parameters.paper(), friction=COULOMB, scheduler="serial",
+                      quantities=["tangential_force_max"])
+    assert int(result.attrs["failed_runs"]) == 0 and np.all(result["tangential_force_max"].values > 0)

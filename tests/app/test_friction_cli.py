@@ -39,7 +39,7 @@ def test_simulate_and_validate_take_a_friction_law(capsys, tmp_path):
 @pytest.mark.parametrize("options, fragment", [
     (["--friction", "coulomb"], "--friction coulomb: mu=None is not allowed"),
     (["--friction", "coulomb", "--mu", "-0.2"], "--friction coulomb --mu -0.2: mu=-0.2 is not allowed"),
-    (["--mu", "0.3"], "--friction tau0 --mu 0.3: mu=0.3 is not allowed with the friction law 'tau0'"),
+    (["--mu", "0.3"], "--mu 0.3 with the default --friction tau0: mu=0.3 is not allowed with the friction law 'tau0'"),
     (["--friction", "amontons"], "--friction: invalid choice: 'amontons'"),
     (["--friction", "coulomb", "--mu", "0.3", "--method", "continuum"], "Parameters.dgamma0=0.01 is not allowed with "
                                                                         "the friction law 'coulomb'"),

@@ -103,3 +103,25 @@ def test_coulombs_law_on_a_punch_runs_in_the_discrete_model_only(paper):
     pressed = (run["sliding_fraction"].values[0] == 1.0) & (normal > 0)
     assert np.count_nonzero(pressed) > 100
     np.testing.assert_allclose(run["tangential_force"].values[0][pressed] / normal[pressed], 0.3, rtol=1e-12)
+
+
+@pytest.mark.parametrize("friction", [FrictionLaw("coulomb", mu=0.3), FrictionLaw("tau0+coulomb", mu=0.2)],
+                         ids=lambda f: f.law)
+@pytest.mark.parametrize("scenario", ["B", "B+"])
+def test_scenario_b_onsets_of_a_punch_with_coulombs_law(paper, friction, scenario):
+    """Every spring under the punch is compressed by d, so every cap is K a + κ d: out at α, d = (d_max cot α − K a) /
+    (cot α + κ); further in, d = (K a + d_max cot α)/(cot α − κ) (mindlin.d_crit_B, d_crit_B_indentation). The
+    discrete model (Δx = 1 µm; the face holds whole springs, so only its time step lags) slides first within one
+    time step's depth of it (the path moves 0.5 µm per step)."""
+    from mdr_events.theory import mindlin
+    hertz = paper.replace(dgamma0=0.0, dgamma1=0.0, tau0=1e3)  # (τ0 = 42 kPa: the punch comes off before it slides)
+    alpha, dx = 40.0, 1e-6
+    path = (me.Path.scenario_B if scenario == "B" else me.Path.scenario_B_indentation)(alpha, hertz, profile=PUNCH)
+    expected = (mindlin.d_crit_B if scenario == "B" else mindlin.d_crit_B_indentation)(alpha, friction, hertz, PUNCH)
+    run = me.simulate(hertz, path, dx=dx, dt=0.5 * dx / path.speed, profile=PUNCH, friction=friction)
+    time, depth = run["time"].values, run["indentation_depth"].values[0]
+    corner, turn = path.corner_times[1:3] - path.first_contact_time()  # d_max, and the far end of the motion at α
+    after = (time > corner) & (time <= turn) & (np.nan_to_num(run["sliding_fraction"].values[0]) > 0)
+    assert np.any(after) and 0.0 < expected < np.inf
+    found = depth[np.argmax(after)]
+    assert found == pytest.approx(expected, abs=0.5 * dx)

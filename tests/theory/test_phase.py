@@ -234,3 +234,16 @@ def test_phase_diagram_b_of_another_friction_law():
                                   me.mindlin.d_crit_B_indentation(angles, friction, hertz))
     assert np.all(np.isnan(ds["d_crit_jkr"].values)) and ds.attrs["friction_law"] == "tau0+coulomb"
     me.plotting.plot_phase_diagram(ds)  # draws without the adhesive curves
+
+
+def test_a_law_with_mu_zero_draws_the_papers_diagram_for_a_punch():
+    """tau0+coulomb with μ = 0 is the paper's law: scenario B's non-adhesive curves and critical angle of a flat punch
+    are the τ0 diagram's (a punch comes off whole at the surface: its angle is not 90°)."""
+    hertz = me.Parameters.paper().replace(dgamma0=0.0, dgamma1=0.0)
+    punch = me.FlatPunch(1e-3)
+    angles = np.array([10.0, 40.0, 70.0])
+    law = me.phase_diagram(hertz, angles, scenario="B", profile=punch, friction=me.FrictionLaw("tau0+coulomb", mu=0.0))
+    paper = me.phase_diagram(hertz, angles, scenario="B", profile=punch)
+    np.testing.assert_allclose(law["d_crit_hertz"].values, paper["d_crit_hertz"].values, rtol=1e-14)
+    assert float(law["critical_angle_hertz"]) == pytest.approx(float(paper["critical_angle_hertz"]), rel=1e-14)
+    assert float(law["critical_angle_hertz"]) < 90.0

@@ -51,7 +51,7 @@ def check_supported(friction: FrictionLaw, params: Parameters, profile=None) -> 
         return
     if isinstance(profile, FlatPunch):
         raise ValueError(f"profile={profile!r} is not allowed with the friction law {friction.law!r} in the continuum "
-                         "method; allowed: None or a PowerLaw, or method='discrete'")
+                         "method; allowed: None, a PowerLaw or a TabulatedProfile, or method='discrete'")
     for name in ("dgamma0", "dgamma1"):
         value = getattr(params, name)
         if value != 0.0:

@@ -96,7 +96,7 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
         force = span.interpolant(a / span.scale if span.variable is Variable.RADIUS else t)[0]
     out["tangential_force"] = force
     if sliding:
-        shift = model.K * a + model.caps.kappa * d if model.caps.kappa else model.K * a
+        shift = model.caps.centre_shift(a, d)
         zones = sum(span.anchors.seen_by(cap, model.caps.kappa).zone_sizes(cap, x - cap * shift, a) for cap in Cap)
         with np.errstate(invalid="ignore", divide="ignore"):
             out["sliding_fraction"] = np.where(a > 0, np.minimum(zones / a, 1.0), np.nan)

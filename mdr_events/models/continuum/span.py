@@ -130,8 +130,8 @@ class SpanIntegrator:
         self.model, self.anchors, self.span = model, anchors, span
         self.segment = span.segment
         self.K = model.K
-        #: Coulomb's cap per compression (0: ``τ0`` alone, the levels ``x ∓ K a``)
-        self.kappa = model.caps.kappa
+        #: the friction law's caps; Coulomb's cap per compression (0: ``τ0`` alone, the levels ``x ∓ K a``)
+        self.caps, self.kappa = model.caps, model.caps.kappa
         self.G2 = 2.0 * model.params.G_star
         self.moving = span.regime in (Regime.GROWING, Regime.SHRINKING)
         self.shrinking = span.regime is Regime.SHRINKING
@@ -184,9 +184,7 @@ class SpanIntegrator:
     def level(self, cap: Cap | float, var: float) -> float:
         """``x − cap · (K a + κ d)``: where the anchors of the springs at ``cap`` sit (as the cap sees them)."""
         t = self.time_of(var)
-        if self.kappa:
-            return self.segment.x(t) - cap * (self.K * self.radius_of(var) + self.kappa * self.segment.d(t))
-        return self.segment.x(t) - cap * self.K * self.radius_of(var)
+        return self.segment.x(t) - cap * self.caps.centre_shift(self.radius_of(var), self.segment.d(t))
 
     def rate(self, cap: Cap | float, var: float) -> float:
         """A quantity with the sign of ``cap · d(level)/dt``: positive while the level pushes the springs
@@ -214,7 +212,7 @@ class SpanIntegrator:
         a = self.radius_of(var)
         t = self.time_of(var)
         x = segment.x(t)
-        shift = K * a + self.kappa * segment.d(t) if self.kappa else K * a
+        shift = self.caps.centre_shift(a, segment.d(t))
         positive = self.positive.size(x - shift, a)
         negative = self.negative.size(x + shift, a)
         sticking = a - positive - negative
