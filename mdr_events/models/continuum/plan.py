@@ -75,9 +75,13 @@ def _plan_out_of_contact(model: ContinuumModel, state: ContactState, segment: Se
     springs under the Δγ0 radius jump in); else approach until it reaches the surface."""
     t = state.t
     d = segment.d(t)
-    starts_inside = state.contacts == 0 and d > 0
-    if (segment.vd > 0 and d >= -_depth_scale(model, segment, t)) or starts_inside:
-        radius = model.grow.radius(max(d, 0.0), model.tolerances.radius_rtol)
+    scale = _depth_scale(model, segment, t)
+    # reaching the surface the depth is 0 to its rounding (2e-22 m from a path starting 1e-6 m above): the contact
+    # starts at the surface's radius then, not at that rounding's (a cone's 3e-21 m, where its slip from first
+    # contact cannot be resolved)
+    starts_inside = state.contacts == 0 and d > scale
+    if (segment.vd > 0 and d >= -scale) or starts_inside:
+        radius = model.grow.radius(d if starts_inside else 0.0, model.tolerances.radius_rtol)
         touch = (EventKind.FIRST_CONTACT if state.contacts == 0 else EventKind.RE_CONTACT,)
         if model.caps.frictionless:  # τ0 = 0 (μ = 0): no spring holds any shift, all slide from the start
             touch += (EventKind.SLIP_ONSET, EventKind.FULL_SLIP)
