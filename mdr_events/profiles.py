@@ -81,7 +81,7 @@ class FlatPunch:
         return f"flat punch of radius {self.radius!r} m"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class TabulatedProfile:
     """An axisymmetric indenter given as a table ``f(r)``: measured (an AFM tip's profile) or of any shape.
 
@@ -115,6 +115,9 @@ class TabulatedProfile:
                              "strictly increasing (m)")
         object.__setattr__(self, "r", r)
         object.__setattr__(self, "f", f)
+
+    def __repr__(self) -> str:  # (a measured table has thousands of points: errors name it in one short line)
+        return f"TabulatedProfile(<{len(self.r)} points, r to {self.r[-1]!r} m, f to {self.f[-1]!r} m>)"
 
     @property
     def radius(self) -> float:

@@ -89,6 +89,13 @@ def _marker_step(values: np.ndarray) -> int:
     return max(1, int(np.count_nonzero(np.isfinite(values))) // OVERLAY_MARKERS_PER_CURVE)
 
 
+def _law_words(dataset: xr.Dataset) -> str:
+    """``", friction law 'coulomb' (mu = 0.3)"`` for a result of another law than the paper's, else ``""``."""
+    if "friction_law" not in dataset.attrs:
+        return ""
+    return f", friction law {dataset.attrs['friction_law']!r} (mu = {float(dataset.attrs['friction_mu']):g})"
+
+
 def _label(ax, alpha, depth_mm, text):
     ax.text(alpha, depth_mm, text, ha="center", va="center", fontsize=10,
             bbox={"boxstyle": "round", "facecolor": "white", "edgecolor": "0.7", "alpha": 0.85})
@@ -145,27 +152,34 @@ def plot_phase_diagram(dataset: xr.Dataset, ax=None):
             xy=(float(dataset["critical_angle_hertz"]), d_max), xytext=(40, 0.55 * top),
             arrowprops={"arrowstyle": "->", "color": "0.4"}, fontsize=9)
         _label(ax, 9.0, 0.85 * top, "sliding-ind")
-        _label(ax, 65.0, 0.25 * top, "no-sliding-ind")
+        # right of the critical angles (another law's may lie past the paper's 23°: Coulomb's 66°)
+        angles = [float(dataset[f"critical_angle_{key}"]) for key in shown]
+        _label(ax, min(max([65.0] + [angle + 8.0 for angle in angles]), 84.0), 0.25 * top, "no-sliding-ind")
         ax.set_ylim(0, top)
     else:
         branches = list(dataset["branch"].values)
         for key, eq in (("hertz", "" if other else "(20)"), ("jkr", "(Heß)" if other else "(21)")):
+            if np.all(np.isnan(dataset[f"d_crit_{key}"].values)):  # no closed form (another law, adhesive)
+                continue
             for i, branch in enumerate(branches):
                 values = dataset[f"d_crit_{key}"].sel(branch=branch).values * _MM
                 ax.plot(alpha, values, **{**style[key], "label": f"{style[key]['label']} {eq}".strip() if i == 0 else None})
         jump_off = float(dataset["jump_off_depth"]) * _MM
         ax.axhline(0.0, color="0.5", lw=0.8)
-        ax.axhline(jump_off, color="tab:red", lw=0.8, ls="-.", label="jump-off depth (Δγ1)")
+        if jump_off != 0.0:  # (without adhesion the contact ends at the surface)
+            ax.axhline(jump_off, color="tab:red", lw=0.8, ls="-.", label="jump-off depth (Δγ1)")
         top = 3.0 * d_max
         _label(ax, 60.0, 0.85 * top, "no-sliding-ind")
         _label(ax, 10.0, 0.9 * top, "sliding-ind")
         _label(ax, 62.0, 0.55 * d_max, "no-sliding-det")
         _label(ax, 8.0, 0.35 * d_max, "sliding-det")
-        critical_angle = float(dataset["critical_angle_jkr"])  # the Hertz one is 90°: nothing to mark
+        critical_angle, kind = float(dataset["critical_angle_jkr"]), "JKR"  # the Hertz one is 90°: nothing to mark
+        if not np.isfinite(critical_angle):  # another law's, without adhesion: the non-adhesive one
+            critical_angle, kind = float(dataset["critical_angle_hertz"]), "Hertz"
         ax.plot([critical_angle, critical_angle], [jump_off, d_max], color=style["jkr"]["color"], ls=":", lw=1)
         ax.plot(critical_angle, jump_off, "o", color=style["jkr"]["color"], ms=4)
         annotation_position = (75.0, 0.5 * d_max)  # free space right of "no-sliding-det"
-        ax.annotate(f"$\\alpha_c^{{JKR}}$ = {critical_angle:.2f}°", xy=(critical_angle, jump_off),
+        ax.annotate(f"$\\alpha_c^{{{kind}}}$ = {critical_angle:.2f}°", xy=(critical_angle, jump_off),
                     xytext=annotation_position, arrowprops={"arrowstyle": "->", "color": "0.4"}, fontsize=9)
         ax.set_ylim(min(2.0 * jump_off, -0.1 * d_max), top)
     ax.axhline(d_max, color="tab:blue", lw=1.0, ls="--", label="$d_{max}$")
@@ -175,9 +189,7 @@ def plot_phase_diagram(dataset: xr.Dataset, ax=None):
     ax.set_ylabel("indentation depth d (mm)")
     if "profile" in dataset.attrs or "friction_law" in dataset.attrs:  # not the paper's figure
         subject = dataset.attrs.get("profile", f"R = {R_mm:g} mm")
-        law = f", friction law {dataset.attrs['friction_law']!r} (mu = {dataset.attrs['friction_mu']:g})" \
-            if "friction_law" in dataset.attrs else ""
-        ax.set_title(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario}, {subject}{law}", fontsize=9)
+        ax.set_title(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario},\n{subject}{_law_words(dataset)}", fontsize=9)
     else:
         ax.set_title(_numbered(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario}, R = {R_mm:g} mm", dataset,
                                PHASE_DIAGRAM_FIGURES))
@@ -278,8 +290,10 @@ def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, titl
         scenario = dataset.attrs.get("scenario", "")
         path = ("custom path" if dataset.sizes[dimension] == 1 else "custom paths") if scenario == "custom" \
             else f"scenario {scenario}"
-        if "profile" in dataset.attrs:  # another indenter than the paper's: no figure of the paper, no R
-            title = f"Simulation, {path}, {dataset.attrs['profile']}, {dataset.attrs.get('method', '')}"
+        law = _law_words(dataset)
+        if "profile" in dataset.attrs or law:  # another indenter or law than the paper's: not the paper's figure
+            subject = dataset.attrs.get("profile", f"R = {dataset.attrs['param_R'] * _MM:g} mm")
+            title = f"Simulation, {path}, {subject}{law}, {dataset.attrs.get('method', '')}"
         else:
             title = _numbered(f"simulation, {path}, R = {dataset.attrs['param_R'] * _MM:g} mm, "
                               f"{dataset.attrs.get('method', '')}", dataset, SIMULATION_FIGURES)

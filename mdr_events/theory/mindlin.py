@@ -271,7 +271,9 @@ def d_crit_B(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
     if isinstance(indenter, FlatPunch):
         cot, vertical = _cotangent(alpha_arr)
         K = power_law.cap_per_radius(params) if friction.uses_tau0 else 0.0
-        depth = (params.d_max * cot - K * indenter.radius) / (cot + coulomb_cap_ratio(friction, params))
+        with np.errstate(invalid="ignore"):  # α = 0: cot α = +inf, the onset at d_max
+            depth = np.where(np.isinf(cot), params.d_max,
+                             (params.d_max * cot - K * indenter.radius) / (cot + coulomb_cap_ratio(friction, params)))
         return _onset_output(np.where(vertical | (depth < 0.0), -np.inf, depth), alpha_arr)
     if friction.uses_tau0:
         return power_law.d_crit_B(alpha, indenter, params, adhesion=False)
@@ -310,8 +312,8 @@ def d_crit_B_indentation(alpha, friction: FrictionLaw | str | None, params: Para
         cot, vertical = _cotangent(alpha_arr)
         K = power_law.cap_per_radius(params) if friction.uses_tau0 else 0.0
         slides = (cot > kappa) & ~vertical
-        with np.errstate(divide="ignore", invalid="ignore"):
-            depth = (K * indenter.radius + params.d_max * cot) / (cot - kappa)
+        with np.errstate(divide="ignore", invalid="ignore"):  # (α = 0: the limit d_max)
+            depth = np.where(np.isinf(cot), params.d_max, (K * indenter.radius + params.d_max * cot) / (cot - kappa))
         return _onset_output(np.where(slides, depth, np.inf), alpha_arr)
     if kappa == 0.0 and friction.uses_tau0:
         return power_law.d_crit_B_indentation(alpha, indenter, params, adhesion=False)

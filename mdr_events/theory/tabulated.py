@@ -6,10 +6,10 @@ Abel transform (3) reads (:func:`mdr_events.theory.symbolic.relation` ``"abel_tr
 
     ``g(x) = x ∫_0^{π/2} f'(x sin θ) dθ``,
 
-whose integrand has no singularity: Gauss–Legendre quadrature on each θ-interval between the table's radii
-(:data:`ABEL_NODES` nodes; ``f'`` is a quadratic on each, composed with ``sin``: analytic, so the error falls
-exponentially) gives ``g`` to round-off at :data:`SUBDIVISIONS` points per table interval, which a PCHIP then
-interpolates (:class:`EquivalentProfile`). ``g`` must increase (a profile that rises steeply and then flattens
+whose integrand has no singularity. On each θ-interval between the table's radii ``f'`` is a quadratic in
+``r = x sin θ``, a quadratic in ``sin θ``, whose integral is elementary: ``g`` is exact (to round-off, for the
+PCHIP of the table) at :data:`SUBDIVISIONS` points per table interval, which a PCHIP then interpolates
+(:class:`EquivalentProfile`). ``g`` must increase (a profile that rises steeply and then flattens
 may give a falling ``g``: refused, naming where), and so must each adhesive branch ``d(a) = g(a) − sqrt(2π a Δγ/E*)``
 beyond its minimum, the jump-off (:class:`TabulatedBranch`): then the radius of a depth is a bracketed root.
 
@@ -34,14 +34,15 @@ from mdr_events.profiles import TabulatedProfile
 from mdr_events.theory import power_law, symbolic
 from mdr_events.validation import validate_alpha
 
-__all__ = ["ABEL_NODES", "SUBDIVISIONS", "EquivalentProfile", "TabulatedBranch", "equivalent", "branch",
+__all__ = ["SUBDIVISIONS", "GRID_POINTS", "EquivalentProfile", "TabulatedBranch", "equivalent", "branch",
            "equivalent_profile", "normal_force", "contact_radius", "jump_off", "pull_off_force", "d_crit_A",
            "critical_angle_A"]
 
-#: Gauss–Legendre nodes per θ-interval of the Abel transform.
-ABEL_NODES = 12
-#: Points of ``g`` computed per interval of the table (besides its radii).
+#: Points of ``g`` computed per interval of the table (besides its radii), fewer for a long table: at most
+#: :data:`GRID_POINTS` in all (a measured tip of thousands of points is fine enough as it is; the quadrature's cost
+#: grows as the square of the points).
 SUBDIVISIONS = 4
+GRID_POINTS = 4000
 #: The relative accuracy of a radius root (a few ulp).
 RADIUS_RTOL = 4 * float(np.finfo(float).eps)
 
@@ -59,18 +60,25 @@ class EquivalentProfile:
         self.profile = profile
         r, f = np.array(profile.r), np.array(profile.f)
         self.x_max = float(r[-1])
-        slope = interpolate.PchipInterpolator(r, f).derivative()
-        shares = np.arange(SUBDIVISIONS) / SUBDIVISIONS
+        slope = interpolate.PchipInterpolator(r, f).derivative()  # on [r_k, r_k+1]: c2 (r − r_k)² + c1 (r − r_k) + c0
+        c2, c1, c0 = slope.c
+        subdivisions = max(1, min(SUBDIVISIONS, GRID_POINTS // (len(r) - 1)))
+        shares = np.arange(subdivisions) / subdivisions
         grid = np.append((r[:-1, None] + np.diff(r)[:, None] * shares).ravel(), r[-1])
-        nodes, weights = np.polynomial.legendre.leggauss(ABEL_NODES)
         values = np.zeros_like(grid)
         for index, x in enumerate(grid[1:], start=1):
-            # θ-intervals between the table's radii below x: f' is one quadratic on each
-            cuts = np.arcsin(np.minimum(r[r < x] / x, 1.0))
-            edges = np.append(cuts, 0.5 * math.pi)
-            lower, upper = edges[:-1, None], edges[1:, None]
-            theta = 0.5 * (upper - lower) * nodes + 0.5 * (upper + lower)
-            values[index] = x * np.sum(0.5 * (upper - lower) * weights * slope(x * np.sin(theta)))
+            # the θ-intervals between the table's radii below x; on each, with s = sin θ, f'(x s) = A + B s + C s²,
+            # whose integral over θ is exact: A Δθ − B Δcos θ + C Δ(θ/2 − sin 2θ / 4)
+            pieces = int(np.searchsorted(r, x, side="left"))
+            start = r[:pieces]
+            lower = np.arcsin(np.minimum(start / x, 1.0))
+            upper = np.append(lower[1:], 0.5 * math.pi)
+            A = c2[:pieces] * start**2 - c1[:pieces] * start + c0[:pieces]
+            B = (c1[:pieces] - 2.0 * c2[:pieces] * start) * x
+            C = c2[:pieces] * x * x
+            integral = (A * (upper - lower) - B * (np.cos(upper) - np.cos(lower))
+                        + C * (0.5 * (upper - lower) - 0.25 * (np.sin(2.0 * upper) - np.sin(2.0 * lower))))
+            values[index] = x * math.fsum(integral)
         falling = np.flatnonzero(np.diff(values) <= 0.0)
         if falling.size:
             at = grid[falling[0] + 1]

@@ -69,6 +69,7 @@ def test_a_sweep_takes_a_friction_law(hertz):
         assert float(angles["critical_angle_A"].sel(tau0=tau0)) == mindlin.critical_angle_A(combined,
                                                                                            hertz.replace(tau0=tau0))
     with pytest.raises(ValueError, match=r"grid: Parameters.dgamma0=0.01 is not allowed with the friction law"):
+        # (the base has no adhesion; one swept set has: it alone is named)
         me.sweep({"dgamma0": [0.0, 0.01]}, "A", alpha=10.0, base=hertz, friction=combined, scheduler="serial",
                  quantities=["tangential_force_max"])
 

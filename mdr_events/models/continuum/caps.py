@@ -51,10 +51,12 @@ def check_supported(friction: FrictionLaw, params: Parameters, profile=None) -> 
         return
     if isinstance(profile, FlatPunch):
         raise ValueError(f"profile={profile!r} is not allowed with the friction law {friction.law!r} in the continuum "
-                         "method; allowed: None, a PowerLaw or a TabulatedProfile, or method='discrete'")
-    for name in ("dgamma0", "dgamma1"):
-        value = getattr(params, name)
-        if value != 0.0:
-            raise ValueError(f"Parameters.{name}={value!r} is not allowed with the friction law {friction.law!r} in the "
-                             "continuum method; allowed: 0 (Coulomb's caps are exact there without adhesion), or "
-                             "method='discrete'")
+                         "method; allowed: None, a PowerLaw or a TabulatedProfile, or the discrete model "
+                         "(simulate(..., method='discrete'))")
+    adhesive = [f"Parameters.{name}={getattr(params, name)!r}" for name in ("dgamma0", "dgamma1")
+                if getattr(params, name) != 0.0]
+    if adhesive:
+        raise ValueError(f"{' and '.join(adhesive)} {'is' if len(adhesive) == 1 else 'are'} not allowed with the "
+                         f"friction law {friction.law!r} in the continuum method; allowed: dgamma0 = dgamma1 = 0 "
+                         "(Coulomb's caps are exact there without adhesion), or the discrete model "
+                         "(simulate(..., method='discrete'))")
