@@ -157,7 +157,9 @@ def tangential_force(x, depth: float, friction: FrictionLaw | str | None, params
     """
     positions = real_array("x", x, "a 1-D array of finite tangential positions (m)")
     if positions.ndim != 1 or positions.size == 0 or not np.all(np.isfinite(positions)):
-        raise ValueError(f"x of shape {positions.shape} is not allowed; allowed: a non-empty 1-D array of finite "
+        bad = f" ({np.count_nonzero(~np.isfinite(positions))} not finite: nan after a simulation's end?)" \
+            if positions.size and not np.all(np.isfinite(positions)) else ""
+        raise ValueError(f"x of shape {positions.shape}{bad} is not allowed; allowed: a non-empty 1-D array of finite "
                          "tangential positions (m)")
     depth, friction, profile = _checked(depth, friction, params, profile)
     curve = _virgin_curve(depth, friction, params, profile)
