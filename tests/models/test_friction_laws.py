@@ -242,3 +242,17 @@ def test_scenario_b_onsets_meet_the_closed_forms(hertz, friction, scenario):
             assert onsets[0] == pytest.approx(expected, abs=1e-9 * hertz.d_max), (alpha, onsets, expected)
         else:
             assert not onsets, (alpha, onsets, expected)
+
+
+@pytest.mark.parametrize("friction", [COULOMB, COMBINED], ids=lambda f: f.law)
+def test_the_integrated_force_is_the_springs_caps_on_the_stored_anchors(hertz, friction):
+    """Along growth in slip, reversals while shrinking and growing, and shrinking to zero: F_x from the ODE equals
+    2G* ∫ clip(x − Y, −ū(ξ), ū(ξ)) dξ on the stored anchors with the law's caps (AnchorMap.coulomb_shift_integral,
+    independent of the right-hand side), to 1e-9 of the largest force."""
+    from mdr_events.models.continuum import algebraic_tangential_force
+    path = me.Path(np.array([(0.0, 0.0), (60e-6, 80e-6), (20e-6, 50e-6), (50e-6, 90e-6), (-70e-6, 0.0)]), speed=1e-6)
+    solution = solve_path(hertz, path, friction=friction)
+    times = np.linspace(0.0, solution.end_time, 997)
+    integrated = evaluate(solution, times)["tangential_force"]
+    algebraic = algebraic_tangential_force(solution, times)
+    np.testing.assert_allclose(integrated, algebraic, rtol=0, atol=1e-9 * np.nanmax(np.abs(integrated)))

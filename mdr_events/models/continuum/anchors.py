@@ -330,12 +330,11 @@ class AnchorMap:
         """
         shift = caps.centre_shift(radius, depth)
         sides = [(float(cap), self.seen_by(cap, caps.kappa), x - float(cap) * shift) for cap in Cap]
-        cap_per_length = caps.K * radius + caps.kappa * depth
 
-        def cap_integral(lower: float, upper: float) -> float:
+        def cap_integral(lower: float, upper: float) -> float:  # ∫ (K a + κ (d − g)) dξ, g = d0 without adhesion
             if upper <= lower:
                 return 0.0
-            return cap_per_length * (upper - lower) - caps.kappa * (self.attach.integral(upper) - self.attach.integral(lower))
+            return shift * (upper - lower) - caps.kappa * (self.attach.integral(upper) - self.attach.integral(lower))
 
         total = 0.0
         for index, p in enumerate(self.in_contact(radius)):
