@@ -43,6 +43,7 @@ from mdr_events.io.files import check_output_stem, prepare_output_directory
 from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters, from_preset
 from mdr_events.profiles import FlatPunch, PowerLaw
+from mdr_events.io.candidates import read_profile_table
 from mdr_events.friction import FRICTION_LAWS, FrictionLaw
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.theory import symbolic
@@ -137,10 +138,18 @@ def _profile_option(parser: argparse.ArgumentParser) -> None:
                           help="the indenter f = c r^n (c in m^(1-n), n >= 1: 1 a cone) instead of the paraboloid of R")
     indenter.add_argument("--flat-punch", type=float, default=None, metavar="RADIUS",
                           help="the flat punch of this radius (m) instead of the paraboloid of R")
+    indenter.add_argument("--table", default=None, metavar="FILE",
+                          help="a tabulated indenter: a CSV file with the columns r and f (m) instead of the paraboloid")
 
 
 def _profile(args: argparse.Namespace) -> SimulatedProfile:
-    """The ``--power-law C N`` or ``--flat-punch RADIUS`` indenter (``None``: the paraboloid of the parameters' ``R``)."""
+    """The ``--power-law C N``, ``--flat-punch RADIUS`` or ``--table FILE`` indenter (``None``: the paraboloid of the
+    parameters' ``R``)."""
+    if getattr(args, "table", None) is not None:
+        try:
+            return check_simulated_profile(read_profile_table(args.table))
+        except (TypeError, ValueError) as error:
+            raise UsageError(f"--table {args.table}: {error}") from None
     if getattr(args, "flat_punch", None) is not None:
         try:
             return check_simulated_profile(FlatPunch(args.flat_punch))

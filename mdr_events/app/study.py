@@ -99,6 +99,7 @@ from mdr_events.models.indenters import SimulatedProfile, check_simulated_profil
 from mdr_events.models.simulate import scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
 from mdr_events.friction import TAU0, FrictionLaw
+from mdr_events.io.candidates import read_profile_table
 from mdr_events.profiles import FlatPunch, PowerLaw
 from mdr_events.validation import shown
 
@@ -166,7 +167,8 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
               "n_steps": ("integer", False), "quantities": ("strings", False), "chunk_size": ("integer", False),
               "scheduler": ("string", False), "workers": ("integer", False), "history_samples": ("integer", False)},
     "limits": {name: ("string or number", False) for name in LIMIT_UNITS},
-    "profile": {"c": ("number", False), "n": ("number", False), "radius": ("number", False)},
+    "profile": {"c": ("number", False), "n": ("number", False), "radius": ("number", False),
+                "table": ("string", False)},
     "friction": {"law": ("string", True), "mu": ("number", False)},
     "output": {"directory": ("string", True), "name": ("string", False)},
 }
@@ -213,11 +215,15 @@ class Study:
             return None
         table = self.tables["profile"]
         where = f"{os.fspath(self.source)}: [profile]"
-        if sorted(table) not in (["c", "n"], ["radius"]):
-            raise StudyError(f"{where} has the keys {sorted(table)}; allowed: c and n (a power law f = c r^n) or radius "
-                             "(a flat punch)")
+        if sorted(table) not in (["c", "n"], ["radius"], ["table"]):
+            raise StudyError(f"{where} has the keys {sorted(table)}; allowed: c and n (a power law f = c r^n), radius "
+                             "(a flat punch) or table (a CSV file with the columns r and f, relative to the study file)")
         try:
-            profile = FlatPunch(table["radius"]) if "radius" in table else PowerLaw(table["c"], table["n"])
+            if "table" in table:
+                file = FilePath(table["table"])
+                profile = read_profile_table(file if file.is_absolute() else self.source.parent / file)
+            else:
+                profile = FlatPunch(table["radius"]) if "radius" in table else PowerLaw(table["c"], table["n"])
             return check_simulated_profile(profile)
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where} {error}") from None

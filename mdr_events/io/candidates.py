@@ -16,6 +16,8 @@ from typing import Mapping, NamedTuple
 import numpy as np
 import xarray as xr
 
+from mdr_events.profiles import TabulatedProfile
+
 __all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor"]
 
 #: The quantities a candidate may hold, with their SI unit; ``time`` is required, and at least one other.
@@ -79,6 +81,23 @@ def _read_csv(path: Path) -> dict[str, np.ndarray]:
             except ValueError:
                 raise ValueError(f"{path}: line {number}, column {name!r}: {text!r} is not a number") from None
     return {name: np.array(values) for name, values in columns.items()}
+
+
+def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
+    """A tabulated indenter from a CSV file with a header row naming the columns ``r`` and ``f`` (m; ``#`` lines are
+    comments): :class:`~mdr_events.profiles.TabulatedProfile`. Errors name the file and what is allowed."""
+    path = Path(path)
+    if not path.is_file():
+        raise ValueError(f"table={str(path)!r}: no such file; allowed: a CSV file with the columns r and f (m)")
+    columns = _read_csv(path)
+    missing = [name for name in ("r", "f") if name not in columns]
+    if missing:
+        raise ValueError(f"{path}: no column {' or '.join(map(repr, missing))} (columns: {', '.join(columns)}); "
+                         "allowed: a header naming the columns r and f (m)")
+    try:
+        return TabulatedProfile(columns["r"], columns["f"])
+    except (ValueError, TypeError) as error:
+        raise ValueError(f"{path}: {error}") from None
 
 
 def _columns_and_units(candidate, source: str) -> tuple[dict[str, np.ndarray], dict[str, str]]:

@@ -222,3 +222,32 @@ def test_a_bad_flat_punch_is_one_line_exit_2(capsys, tmp_path, options, fragment
     status, _, err = run(capsys, "simulate", "--scenario", "A", *options, "--out", str(tmp_path / "new"))
     assert status == 2 and err.count("\n") == 1 and fragment in err, err
     assert not (tmp_path / "new").exists()
+
+
+def _write_table(path, points=41):
+    r = np.linspace(0.0, 4e-3, points)
+    path.write_text("# a paraboloid of R = 30 mm, as a measured tip would be given\nr,f\n"
+                    + "".join(f"{float(a)!r},{float(a * a / 0.06)!r}\n" for a in r))
+    return me.TabulatedProfile(r, r * r / 0.06)
+
+
+def test_simulate_takes_a_table(capsys, tmp_path):
+    """--table FILE: a CSV of r and f (m) is the indenter; the result carries the table exactly."""
+    table = _write_table(tmp_path / "tip.csv")
+    status, _, _ = run(capsys, "simulate", "--scenario", "A", "--alpha", "20", "--method", "continuum", "--table",
+                       str(tmp_path / "tip.csv"), "--out", str(tmp_path / "out"))
+    assert status == 0
+    ds = me.open_result(tmp_path / "out" / "simulation_A_continuum.nc")
+    assert ds.attrs["profile_table_r"] == ", ".join(map(repr, table.r))
+    direct = me.simulate(me.Parameters.paper(), "A", alpha=[20.0], method="continuum", profile=table)
+    np.testing.assert_array_equal(ds["tangential_force"].values, direct["tangential_force"].values)
+
+
+@pytest.mark.parametrize("text, fragment", [("x,f\n0,0\n1e-3,1e-5\n2e-3,4e-5\n", "no column 'r'"),
+                                            ("r,f\n0,0\n1e-3,2e-5\n2e-3,1e-5\n", "TabulatedProfile.f=")])
+def test_a_bad_table_is_one_line_exit_2(capsys, tmp_path, text, fragment):
+    (tmp_path / "tip.csv").write_text(text)
+    status, _, err = run(capsys, "simulate", "--scenario", "A", "--table", str(tmp_path / "tip.csv"), "--out",
+                         str(tmp_path / "new"))
+    assert status == 2 and err.count("\n") == 1 and "--table" in err and fragment in err, err
+    assert not (tmp_path / "new").exists()

@@ -271,3 +271,15 @@ def test_a_bad_friction_table_is_named(capsys, tmp_path, table, fragment):
         load_study(path)
     assert fragment in str(error.value)
     assert main(["run", str(path)]) == 2
+
+
+def test_a_profile_table_may_name_a_tabulated_tip(tmp_path):
+    """[profile] table = "tip.csv" (relative to the study file): the simulation is the table's."""
+    r = np.linspace(0.0, 1e-2, 41)  # (the study's R = 100 mm: g reaches 1 mm of depth at 10 mm)
+    (tmp_path / "tip.csv").write_text("r,f\n" + "".join(f"{float(a)!r},{float(a * a / 0.2)!r}\n" for a in r))
+    text = STUDY.replace("[output]", '[profile]\ntable = "tip.csv"\n\n[output]').replace(
+        'scenarios = ["A", "B"]', 'scenarios = ["A"]')
+    path = write(tmp_path, text)
+    assert main(["run", str(path)]) == 0
+    ds = me.open_result(tmp_path / "out" / "demo_simulation.nc")
+    assert ds.attrs["profile"].startswith("tabulated profile f(r), 41 points")
