@@ -72,15 +72,18 @@ QUANTITY_UNITS = {"normal_force": "N", "tangential_force": "N", "contact_area": 
 QUANTITY_SYMBOLS = {"normal_force": "F_N", "tangential_force": "F_x", "contact_area": "A", "contact_radius": "a"}
 #: Free parameters fitted on a log scale (moduli, radius, critical shear stress, works of adhesion): their
 #: start must be > 0, and the fit moves them by factors.
-LOG_SCALED = ("E", "R", "tau0", "dgamma0", "dgamma1")
+LOG_SCALED = ("E", "R", "tau0", "dgamma0", "dgamma1", "mu")
 #: The experiment's zero: ``time_offset`` (s; the measured clock reads it at the path's time 0, after
 #: ``time_origin``) and ``depth_offset`` (m; the path's depth zero lies this far above the real surface).
 OFFSETS = ("time_offset", "depth_offset")
 #: Every name ``free`` may hold. ``d_max`` and ``v`` are the path's, not the material's: give the path.
-FREE_NAMES = ("E", "nu", "R", "tau0", "dgamma0", "dgamma1") + OFFSETS
-OFFSET_UNITS = {"time_offset": "s", "depth_offset": "m"}
+FREE_NAMES = ("E", "nu", "R", "tau0", "dgamma0", "dgamma1", "mu") + OFFSETS
+#: The coefficient of friction of a law with Coulomb's part (:mod:`mdr_events.friction`), free beside the parameters.
+FRICTION_NAME = "mu"
+OFFSET_UNITS = {"time_offset": "s", "depth_offset": "m", "mu": "1"}
 OFFSET_LONG_NAMES = {"time_offset": "the measured clock's reading at the path's time 0 (after time_origin)",
-                     "depth_offset": "height of the path's depth zero above the real surface"}
+                     "depth_offset": "height of the path's depth zero above the real surface",
+                     "mu": "coefficient of friction of the law's Coulomb part"}
 #: ``ν`` stays below 0.5 and above −1 by this much inside the fit (the bounds of :class:`Parameters`).
 NU_MARGIN = 1e-9
 
@@ -180,6 +183,8 @@ class FreeParameters:
     upper: np.ndarray
     duration: float
     depth_scale: float
+    #: the friction law of the fit (``μ`` its start where free)
+    friction: FrictionLaw = TAU0
 
     def scale(self, name: str) -> float:
         return {"time_offset": self.duration, "depth_offset": self.depth_scale}.get(name, 1.0)
@@ -196,13 +201,27 @@ class FreeParameters:
         return self.to_scaled(self.lower), self.to_scaled(self.upper)
 
     def start_values(self) -> np.ndarray:
-        return np.array([0.0 if n in OFFSETS else getattr(self.start, n) for n in self.names])
+        return np.array([_start_value(n, self.start, self.friction) for n in self.names])
 
     def model(self, theta: np.ndarray) -> tuple[Parameters, float, float]:
         """The parameters, time offset and depth offset at ``θ``."""
         values = dict(zip(self.names, self.to_natural(theta)))
         offsets = [values.pop(name, 0.0) for name in OFFSETS]
+        values.pop(FRICTION_NAME, None)
         return self.start.replace(**values) if values else self.start, offsets[0], offsets[1]
+
+    def friction_at(self, theta: np.ndarray) -> FrictionLaw:
+        """The friction law at ``θ``: the start's, with the fitted ``μ`` where it is free."""
+        if FRICTION_NAME not in self.names:
+            return self.friction
+        return FrictionLaw(self.friction.law, mu=float(self.to_natural(theta)[self.names.index(FRICTION_NAME)]))
+
+
+def _start_value(name: str, start: Parameters, friction: FrictionLaw) -> float:
+    """A free parameter's start: 0 for an offset, the law's ``μ``, else the field of ``start``."""
+    if name in OFFSETS:
+        return 0.0
+    return friction.coulomb_mu if name == FRICTION_NAME else getattr(start, name)
 
 
 def _default_bounds(name: str) -> tuple[float, float]:
@@ -214,7 +233,7 @@ def _default_bounds(name: str) -> tuple[float, float]:
 
 
 def free_parameters(free, start: Parameters, bounds: Mapping[str, tuple[float, float]] | None,
-                    duration: float, depth_scale: float) -> FreeParameters:
+                    duration: float, depth_scale: float, friction: FrictionLaw = TAU0) -> FreeParameters:
     """Check ``free``, ``start`` and ``bounds`` (errors name the argument, its value and what is allowed)."""
     if isinstance(free, str):
         free = (free,)
@@ -230,6 +249,9 @@ def free_parameters(free, start: Parameters, bounds: Mapping[str, tuple[float, f
         raise ValueError(f"free={shown(free)} names a parameter twice; allowed: each name once")
     if not isinstance(start, Parameters):
         raise TypeError(f"start={shown(start)} ({type(start).__name__}) is not allowed; allowed: a Parameters")
+    if FRICTION_NAME in names and not friction.uses_mu:
+        raise ValueError(f"free: 'mu' is not allowed with the friction law {friction.law!r}; allowed: a law with Coulomb's "
+                         "part, e.g. friction=FrictionLaw('coulomb', mu=0.3) (its mu the start)")
     bounds = dict(bounds or {})
     for name in bounds:
         if name not in names:
@@ -245,16 +267,17 @@ def free_parameters(free, start: Parameters, bounds: Mapping[str, tuple[float, f
             given = [check_real(f"bounds[{name!r}]", value, f"a pair (lower, upper) of numbers in {_unit(name)}",
                                 finite=False) for value in pair]
             low, high = max(low, given[0]), min(high, given[1])
-        value = 0.0 if name in OFFSETS else getattr(start, name)
+        value = _start_value(name, start, friction)
         if name in LOG_SCALED and not value > 0:
-            raise ValueError(f"start.{name}={value!r} is not allowed for a free {name}; allowed: > 0 (it is fitted "
+            where = "friction.mu" if name == FRICTION_NAME else f"start.{name}"
+            raise ValueError(f"{where}={value!r} is not allowed for a free {name}; allowed: > 0 (it is fitted "
                              "on a log scale)")
         if not low <= value <= high or not low < high:
             raise ValueError(f"bounds[{name!r}]=({low!r}, {high!r}) is not allowed: it excludes the start "
                              f"{value!r} {_unit(name)}; allowed: lower < upper with the start between them")
         lower.append(low)
         upper.append(high)
-    return FreeParameters(names, start, np.array(lower), np.array(upper), duration, depth_scale)
+    return FreeParameters(names, start, np.array(lower), np.array(upper), duration, depth_scale, friction)
 
 
 class Measurement(NamedTuple):
@@ -373,11 +396,12 @@ class _Problem:
 
     def curves(self, theta: np.ndarray) -> ModelCurves:
         params, time_offset, depth_offset = self.free.model(theta)
+        friction = self.free.friction_at(theta)
         self.solves += 1
         try:
             path = _shifted(self.path_of(params), depth_offset)
             return model_curves(params, path, self.measurement.path_time - time_offset, self.tolerances,
-                                self.limits, self.quantities, self.profile, self.friction)
+                                self.limits, self.quantities, self.profile, friction)
         except (ValueError, RuntimeError) as error:
             trial = ", ".join(f"{name}={value:.6g}" for name, value in zip(self.free.names,
                                                                              self.free.to_natural(theta)))
@@ -665,7 +689,8 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
         trial (its way out depends on the parameters).
     free : sequence of str
         The parameters to fit, from :data:`FREE_NAMES`: ``E``, ``nu``, ``R``, ``tau0``, ``dgamma0``,
-        ``dgamma1`` and the offsets ``time_offset`` (s), ``depth_offset`` (m).
+        ``dgamma1``, ``mu`` (with a friction law that has Coulomb's part) and the offsets ``time_offset`` (s),
+        ``depth_offset`` (m).
     start : Parameters
         The start of the fit; the fields not free keep their values.
     bounds : mapping, optional
@@ -685,8 +710,8 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
         The indenter of the experiment, ``f = c rⁿ`` with ``n >= 1`` (default ``None``: the paraboloid of ``R``);
         ``R`` is then not a parameter of the model and cannot be free.
     friction : FrictionLaw or str, optional
-        The friction law of the experiment, fixed (default the paper's ``"tau0"``; Coulomb's part needs a contact
-        without adhesion in the continuum): its ``μ`` is not a free parameter.
+        The friction law of the experiment (default the paper's ``"tau0"``; Coulomb's part needs a contact without
+        adhesion in the continuum). With Coulomb's part, ``"mu"`` may be free: its ``μ`` is then the start.
 
     Returns
     -------
@@ -706,7 +731,7 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     read = read_candidate(measured, names, units)
     nominal = resolve_path(start, path, alpha, profile)
     measurement = _measurement(read, nominal, time_origin, noise)
-    free_set = free_parameters(free, start, bounds, nominal.duration, max(nominal.max_depth, start.d_max))
+    free_set = free_parameters(free, start, bounds, nominal.duration, max(nominal.max_depth, start.d_max), friction)
     # a scenario is rebuilt per trial (its way out ends below the jump-off, which depends on the parameters)
     problem = _Problem(free_set, measurement, lambda params: resolve_path(params, path, alpha, profile), tolerances,
                        limits, profile, friction)
@@ -760,7 +785,7 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     if isinstance(path, str):
         attrs.update(scenario=path, alpha=float(alpha))
     attrs.update(profile_attrs(profile))
-    attrs.update(friction_attrs(friction))
+    attrs.update(friction_attrs(free_set.friction_at(theta)))  # (with the fitted μ where it is free)
     return FitResult(stamp(dataset, params, **attrs), params, time_offset, depth_offset)
 
 
