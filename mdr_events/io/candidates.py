@@ -119,6 +119,16 @@ def _columns_and_units(candidate, source: str) -> tuple[dict[str, np.ndarray], d
             raise ValueError(f"{path}: cannot be read as netCDF ({error}); allowed: a CSV file with a header "
                              "or a netCDF file") from None
     if isinstance(candidate, xr.Dataset):
+        # a simulation of one case (dims ``alpha`` or ``case`` of size 1 beside ``time``) is that case's run
+        single = [dim for dim, size in candidate.sizes.items() if dim != "time" and size == 1]
+        several = [f"{dim!r} ({size})" for dim, size in candidate.sizes.items()
+                   if dim != "time" and size > 1 and any(dim in v.dims and "time" in v.dims
+                                                         for v in candidate.data_vars.values())]
+        if several:
+            raise ValueError(f"{source} holds several runs along {', '.join(several)}; allowed: one run (select it, "
+                             "e.g. dataset.isel(alpha=0) or dataset.sel(case='...'))")
+        if single:
+            candidate = candidate.isel({dim: 0 for dim in single})
         names = list(candidate.variables)
         return ({name: np.asarray(candidate[name].values, dtype=float).ravel() for name in names
                  if candidate[name].ndim <= 1 and np.issubdtype(candidate[name].dtype, np.number)},

@@ -108,3 +108,14 @@ def test_a_fit_finds_the_coefficient_of_friction(hertz, fretting):
     assert result.dataset.attrs["friction_mu"] == pytest.approx(result.estimates["mu"].value, rel=1e-15)
     with pytest.raises(ValueError, match=r"free: 'mu' is not allowed with the friction law 'tau0'"):
         me.fit(measured, fretting, free=["mu"], start=hertz)
+
+
+def test_validate_takes_a_simulation_of_one_case(hertz, fretting):
+    """A simulate() result of one case (dims case × time) is that case's run; one of several cases is refused, naming
+    the dimension and how to select."""
+    run = me.simulate(hertz, fretting, dx=2e-6, friction=COULOMB)
+    whole, selected = (me.validate(candidate, hertz, fretting, friction=COULOMB) for candidate in (run, run.isel(case=0)))
+    np.testing.assert_array_equal(whole["max_error"].values, selected["max_error"].values)
+    two = me.simulate(hertz, {"a": fretting, "b": fretting}, dx=2e-6, friction=COULOMB)
+    with pytest.raises(ValueError, match=r"holds several runs along 'case' \(2\); allowed: one run"):
+        me.validate(two, hertz, fretting, friction=COULOMB)
