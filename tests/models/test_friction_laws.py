@@ -256,3 +256,17 @@ def test_the_integrated_force_is_the_springs_caps_on_the_stored_anchors(hertz, f
     integrated = evaluate(solution, times)["tangential_force"]
     algebraic = algebraic_tangential_force(solution, times)
     np.testing.assert_allclose(integrated, algebraic, rtol=0, atol=1e-9 * np.nanmax(np.abs(integrated)))
+
+
+@pytest.mark.parametrize("friction", [COULOMB, COMBINED], ids=lambda f: f.law)
+def test_the_continuums_work_over_a_mindlin_cycle_is_the_loop_energy(hertz, friction):
+    """x: 0 → X → −X → X → −X at DEPTH: the continuum's ∫ F_x dx over the closed cycle −X → X → −X equals
+    mindlin.loop_energy(X) to 1e-8 (the solver's rtol over a loop whose area is a small difference of large
+    integrals)."""
+    from mdr_events.models.continuum import tangential_work
+    X = 0.5 * mindlin.full_slip_shift(DEPTH, friction, hertz)
+    path = me.Path(np.array([(0.0, 0.0), (0.0, DEPTH), (X, DEPTH), (-X, DEPTH), (X, DEPTH), (-X, DEPTH)]), speed=1e-6)
+    solution = solve_path(hertz, path, friction=friction)
+    start = path.first_contact_time()
+    work = tangential_work(solution, path.corner_times[3] - start, path.corner_times[5] - start)
+    assert work == pytest.approx(mindlin.loop_energy(X, DEPTH, friction, hertz), rel=1e-8)

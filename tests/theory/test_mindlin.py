@@ -13,7 +13,7 @@ from scipy import integrate, optimize
 import mdr_events as me
 from mdr_events.friction import FrictionLaw
 from mdr_events.profiles import FlatPunch, PowerLaw
-from mdr_events.theory import mindlin
+from mdr_events.theory import analytic, mindlin
 from mdr_events.theory import power_law as pl
 from mdr_events.theory import symbolic as S
 
@@ -207,3 +207,25 @@ def test_scenario_b_closed_forms_of_the_laws(hertz):
     assert below == hertz.d_max and math.isinf(above)
     np.testing.assert_array_equal(mindlin.d_crit_B_indentation(alphas, None, hertz),
                                   pl.d_crit_B_indentation(alphas, paraboloid, hertz))
+
+
+def test_loop_energy(hertz):
+    """τ0 alone: the parallelogram's 4 π a² τ0 (X − ū) beyond the stick range and 0 within it; Coulomb's law: the
+    area between an ensemble of play operators' branches over the closed loop (its midpoint rule to 1e-5), growing
+    as X³ for small loops (Mindlin & Deresiewicz: the slip annulus's width and the force both grow with X)."""
+    a = math.sqrt(hertz.R * DEPTH)
+    cap = pl.cap_per_radius(hertz) * a
+    for X in (0.5 * cap, 2.0 * cap, 10.0 * cap):
+        expected = analytic.fretting_dissipated_energy(a, X, hertz) if X > cap else 0.0
+        assert mindlin.loop_energy(X, DEPTH, None, hertz) == pytest.approx(expected, rel=1e-10, abs=1e-25)
+    coulomb = FrictionLaw("coulomb", mu=0.3)
+    X = 0.4 * mindlin.full_slip_shift(DEPTH, coulomb, hertz)
+    x = np.concatenate([np.linspace(0, X, 200), np.linspace(X, -X, 400)[1:], np.linspace(-X, X, 400)[1:],
+                        np.linspace(X, -X, 400)[1:]])
+    force = _play_ensemble(x, coulomb, hertz, None)
+    cycle = slice(598, 1397)  # −X → X → −X: one full cycle of the closed loop, from the second reversal on
+    work = float(np.trapezoid(force[cycle], x[cycle])) if hasattr(np, "trapezoid") else float(np.trapz(force[cycle],
+                                                                                                         x[cycle]))
+    assert mindlin.loop_energy(X, DEPTH, coulomb, hertz) == pytest.approx(work, rel=1e-4)
+    small = mindlin.loop_energy(np.array([1e-3, 2e-3]) * X, DEPTH, coulomb, hertz)
+    assert small[1] / small[0] == pytest.approx(8.0, rel=1e-2)
