@@ -67,10 +67,7 @@ def branch_radius(depth, params: Parameters, work_of_adhesion: float, profile: S
     if profile is None:
         return analytic.jkr_contact_radius(depth, params, work_of_adhesion)
     if isinstance(profile, FlatPunch):
-        depth = np.asarray(depth, dtype=float)
-        bottom = power_law.jump_off(profile, params, work_of_adhesion)["depth"]
-        radius = np.where(depth >= bottom, profile.radius, np.nan)
-        return float(radius) if radius.ndim == 0 else radius
+        return power_law.flat_punch_radius(depth, profile, params, work_of_adhesion)
     if isinstance(profile, TabulatedProfile):
         return tabulated.contact_radius(depth, profile, params, work_of_adhesion)
     return power_law.contact_radius(depth, profile, params, work_of_adhesion)

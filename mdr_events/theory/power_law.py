@@ -24,6 +24,7 @@ from mdr_events.validation import check_flag, check_real, validate_alpha
 __all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_force", "contact_radius",
            "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
            "critical_angle_B", "d_crit_B_indentation", "critical_angle_B_indentation", "convex_root", "branch_root", "with_radius_at",
+           "flat_punch_radius",
            "prefactor", "hess_prefactor", "check_profile",
            "ADHESIVE_MIN_EXPONENT", "ROOT_RTOL"]
 
@@ -206,6 +207,14 @@ def jump_off(profile: Profile, params: Parameters, work_of_adhesion: float) -> d
     return {"contact_radius": float(_rel("power_law_jump_off_radius").numeric(*args)),
             "depth": float(_rel("power_law_jump_off_depth").numeric(*args)),
             "normal_force": float(_rel("power_law_jump_off_force").numeric(*args))}
+
+
+def flat_punch_radius(depth, profile: FlatPunch, params: Parameters, work_of_adhesion: float, fold_share: float = 0.0):
+    """The flat punch's contact radius at ``depth``: its own radius down to the jump-off depth (``fold_share`` of it
+    below still holds), ``nan`` below."""
+    bottom = jump_off(profile, params, work_of_adhesion)["depth"] * (1.0 + fold_share)
+    depth = np.asarray(depth, dtype=float)
+    return _as_output(np.where(depth >= bottom, profile.radius, np.nan), depth)
 
 
 def pull_off_force(profile: Profile, params: Parameters, work_of_adhesion: float) -> float:

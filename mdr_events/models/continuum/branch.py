@@ -178,11 +178,10 @@ class FlatPunchBranch(Branch):
         return np.where(a > 0, self.jump_off_depth, 0.0)
 
     def radii(self, depth: np.ndarray) -> np.ndarray:
-        depth = np.asarray(depth, dtype=float)
-        return np.where(depth >= self.jump_off_depth * (1.0 + FOLD_SHARE), self.jump_off_radius, np.nan)
+        return np.asarray(power_law.flat_punch_radius(depth, self.profile, self.params, self.work, FOLD_SHARE))
 
     def radius(self, depth: float, rtol: float) -> float:
-        return self.jump_off_radius if depth >= self.jump_off_depth * (1.0 + FOLD_SHARE) else math.nan
+        return float(power_law.flat_punch_radius(depth, self.profile, self.params, self.work, FOLD_SHARE))
 
 
 class TabulatedBranch(Branch):
