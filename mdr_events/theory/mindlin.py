@@ -62,8 +62,17 @@ def _checked(depth, friction, params: Parameters, profile) -> tuple[float, Frict
         if getattr(params, name) != 0.0:
             raise ValueError(f"Parameters.{name}={getattr(params, name)!r} is not allowed here; allowed: 0 (the "
                              "closed forms of tangential loading hold for a contact without adhesion)")
-    profile = PowerLaw.paraboloid(params.R) if profile is None else power_law.check_profile(profile)
-    return depth, friction, profile
+    return depth, friction, _indenter(profile, params)
+
+
+def _indenter(profile: Profile | None, params: Parameters) -> Profile:
+    """``profile``, checked; ``None`` is the paraboloid of ``params.R``."""
+    return PowerLaw.paraboloid(params.R) if profile is None else power_law.check_profile(profile)
+
+
+def _tau0_per_radius(friction: FrictionLaw, params: Parameters) -> float:
+    """``K`` of the law's ``τ0`` part, ``ū = K a`` (13); 0 without it."""
+    return power_law.cap_per_radius(params) if friction.uses_tau0 else 0.0
 
 
 def _radius(depth: float, profile: Profile) -> float:
@@ -80,8 +89,7 @@ def full_slip_shift(depth: float, friction: FrictionLaw | str | None, params: Pa
                     profile: Profile | None = None) -> float:
     """The shift ``u_x`` from rest at which every spring slides: the centre's cap ``K a + κ d`` (m)."""
     depth, friction, profile = _checked(depth, friction, params, profile)
-    tau0_part = power_law.cap_per_radius(params) * _radius(depth, profile) if friction.uses_tau0 else 0.0
-    return tau0_part + coulomb_cap_ratio(friction, params) * depth
+    return _tau0_per_radius(friction, params) * _radius(depth, profile) + coulomb_cap_ratio(friction, params) * depth
 
 
 def full_slip_force(depth: float, friction: FrictionLaw | str | None, params: Parameters,
@@ -93,7 +101,7 @@ def full_slip_force(depth: float, friction: FrictionLaw | str | None, params: Pa
 def _virgin_curve(depth: float, friction: FrictionLaw, params: Parameters, profile: Profile):
     """``F₀`` as a function of arrays of shifts (checked arguments)."""
     radius = _radius(depth, profile)
-    cap = power_law.cap_per_radius(params) * radius if friction.uses_tau0 else 0.0
+    cap = _tau0_per_radius(friction, params) * radius
     kappa = coulomb_cap_ratio(friction, params)
     full = friction.coulomb_mu * float(power_law.normal_force(depth, None if isinstance(profile, FlatPunch) else radius,
                                                               profile, params))
@@ -217,7 +225,7 @@ def loop_energy(amplitude, depth: float, friction: FrictionLaw | str | None, par
     curve = _virgin_curve(depth, friction, params, profile)
     kinks = [full_slip_shift(depth, friction, params, profile)]
     if friction.uses_tau0 and friction.uses_mu:
-        kinks.append(power_law.cap_per_radius(params) * _radius(depth, profile))
+        kinks.append(_tau0_per_radius(friction, params) * _radius(depth, profile))
 
     def energy(X: float) -> float:
         if X == 0.0:
@@ -231,8 +239,6 @@ def loop_energy(amplitude, depth: float, friction: FrictionLaw | str | None, par
     return float(out) if np.ndim(amplitude) == 0 else out
 
 
-def _tau0_profile(profile: Profile | None, params: Parameters) -> Profile:
-    return PowerLaw.paraboloid(params.R) if profile is None else power_law.check_profile(profile)
 
 
 def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None):
@@ -254,7 +260,7 @@ def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
     """
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
-    indenter = _tau0_profile(profile, params)
+    indenter = _indenter(profile, params)
     tau0_law = params if friction.uses_tau0 else params.replace(tau0=0.0)
     kappa = coulomb_cap_ratio(friction, params)
     if kappa == 0.0:
@@ -282,7 +288,7 @@ def critical_angle_A(friction: FrictionLaw | str | None, params: Parameters, pro
     at any depth; ``"tau0+coulomb"``: ``cot α_c = cot α_c(τ0) + κ``.
     """
     friction = as_friction_law(friction)
-    indenter = _tau0_profile(profile, params)
+    indenter = _indenter(profile, params)
     tau0_angle = power_law.critical_angle_A(indenter, params, adhesion=False) if friction.uses_tau0 else 90.0
     return _with_coulomb(tau0_angle, coulomb_cap_ratio(friction, params))
 
@@ -312,10 +318,10 @@ def d_crit_B(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
     """
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
-    indenter = _tau0_profile(profile, params)
+    indenter = _indenter(profile, params)
     if isinstance(indenter, FlatPunch):
         cot, vertical = _cotangent(alpha_arr)
-        K = power_law.cap_per_radius(params) if friction.uses_tau0 else 0.0
+        K = _tau0_per_radius(friction, params)
         with np.errstate(invalid="ignore"):  # α = 0: cot α = +inf, the onset at d_max
             depth = np.where(np.isinf(cot), params.d_max,
                              (params.d_max * cot - K * indenter.radius) / (cot + coulomb_cap_ratio(friction, params)))
@@ -337,7 +343,7 @@ def critical_angle_B(friction: FrictionLaw | str | None, params: Parameters, pro
     (90°); the flat punch comes off whole at the surface, where its edge holds only ``K a``: ``d_max cot α_c = K a``,
     as for ``τ0`` alone (Coulomb's part is zero at ``d = 0``)."""
     friction = as_friction_law(friction)
-    indenter = _tau0_profile(profile, params)
+    indenter = _indenter(profile, params)
     if isinstance(indenter, FlatPunch) and friction.uses_tau0:
         return power_law.critical_angle_B(indenter, params, adhesion=False)
     return 90.0
@@ -351,11 +357,11 @@ def d_crit_B_indentation(alpha, friction: FrictionLaw | str | None, params: Para
     ``d = (K a + d_max cot α)/(cot α − κ)``."""
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
-    indenter = _tau0_profile(profile, params)
+    indenter = _indenter(profile, params)
     kappa = coulomb_cap_ratio(friction, params)
     if isinstance(indenter, FlatPunch):
         cot, vertical = _cotangent(alpha_arr)
-        K = power_law.cap_per_radius(params) if friction.uses_tau0 else 0.0
+        K = _tau0_per_radius(friction, params)
         slides = (cot > kappa) & ~vertical
         with np.errstate(divide="ignore", invalid="ignore"):  # (α = 0: the limit d_max)
             depth = np.where(np.isinf(cot), params.d_max, (K * indenter.radius + params.d_max * cot) / (cot - kappa))
@@ -376,11 +382,11 @@ def critical_angle_B_indentation(friction: FrictionLaw | str | None, params: Par
     ``2 d_max``); ``cot α_c = cot α_c(τ0) + κ`` (the angle of friction for Coulomb's law alone); the flat punch's
     ``cot α_c = (K a + κ F)/(F − d_max)`` at the final depth ``F``."""
     friction = as_friction_law(friction)
-    indenter = _tau0_profile(profile, params)
+    indenter = _indenter(profile, params)
     kappa = coulomb_cap_ratio(friction, params)
     if isinstance(indenter, FlatPunch):
         final = 2.0 * params.d_max if final_depth is None else final_depth
-        K = power_law.cap_per_radius(params) if friction.uses_tau0 else 0.0
+        K = _tau0_per_radius(friction, params)
         return float(math.degrees(math.atan2(final - params.d_max, K * indenter.radius + kappa * final)))
     tau0_angle = power_law.critical_angle_B_indentation(indenter, params, adhesion=False, final_depth=final_depth) \
         if friction.uses_tau0 else 90.0

@@ -212,6 +212,10 @@ def test_results_say_which_parameters_came_from_the_preset(tmp_path, capsys):
     ('[profile]\nradius = -1e-3\n[phase_diagram]\nscenarios = ["A"]\n', "[profile] FlatPunch.radius=-0.001 is not allowed"),
     ('[profile]\nc = 2000.0\nn = 0.5\n[phase_diagram]\nscenarios = ["A"]\n', "[profile] PowerLaw.n=0.5 is not allowed in the simulators; allowed: n >= 1"),
     ('[profile]\nc = -1.0\nn = 2.0\n[phase_diagram]\nscenarios = ["A"]\n', "[profile] PowerLaw.c=-1.0 is not allowed"),
+    ('[friction]\nlaw = "amontons"\n[phase_diagram]\nscenarios = ["A"]\n', "[friction] FrictionLaw.law='amontons' is "
+                                                                           "not allowed"),
+    ('[friction]\nlaw = "coulomb"\n[phase_diagram]\nscenarios = ["A"]\n', "[friction] mu=None is not allowed"),
+    ('[friction]\nmu = 0.3\n[phase_diagram]\nscenarios = ["A"]\n', "[friction] lacks the required key(s) law"),
 ])
 def test_bad_validate_fit_sweep_and_limits_tables_are_named(capsys, tmp_path, text, fragment):
     """Named when the study is read, and by `mdr-events run` in one line with exit status 2."""
@@ -256,21 +260,6 @@ def test_a_friction_table_gives_every_table_its_law(tmp_path):
     np.testing.assert_array_equal(ds["tangential_force"].values, direct["tangential_force"].values)
     diagram = me.open_result(out / "demo_phase_diagram_A.nc")
     assert float(diagram["critical_angle_hertz"]) == me.mindlin.critical_angle_A(friction, params)
-
-
-@pytest.mark.parametrize("table, fragment", [
-    ('[friction]\nlaw = "amontons"\n[phase_diagram]\nscenarios = ["A"]\n', "[friction] FrictionLaw.law='amontons' is "
-                                                                           "not allowed"),
-    ('[friction]\nlaw = "coulomb"\n[phase_diagram]\nscenarios = ["A"]\n', "[friction] mu=None is not allowed"),
-    ('[friction]\nmu = 0.3\n[phase_diagram]\nscenarios = ["A"]\n', "[friction] lacks the required key(s) law"),
-])
-def test_a_bad_friction_table_is_named(capsys, tmp_path, table, fragment):
-    path = tmp_path / "study.toml"
-    path.write_text(table + '[output]\ndirectory = "out"\n')
-    with pytest.raises(StudyError) as error:
-        load_study(path)
-    assert fragment in str(error.value)
-    assert main(["run", str(path)]) == 2
 
 
 def test_a_profile_table_may_name_a_tabulated_tip(tmp_path):

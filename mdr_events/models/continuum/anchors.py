@@ -345,16 +345,13 @@ class AnchorMap:
             for sign, seen, level in sides:
                 q = seen.pieces[index]
                 values = sign * seen.piece_value(q, p.start), sign * seen.piece_value(q, end)
-                if q.constant:
-                    at_cap = (p.start, end) if values[0] <= sign * level else (p.start, p.start)
-                else:
+                if not min(values) <= sign * level:  # no spring at the cap
+                    at_cap = (p.start, p.start)
+                elif max(values) <= sign * level:  # every spring (a constant piece: one value)
+                    at_cap = (p.start, end)
+                else:  # a front: the springs at the cap are on the side where sign Z is lower
                     cut = min(max(seen.inverse(q, level), p.start), end)
-                    # the springs at the cap are on the side where sign Z is lower
                     at_cap = (p.start, cut) if values[0] <= values[1] else (cut, end)
-                    if not min(values) <= sign * level:
-                        at_cap = (p.start, p.start)
-                    elif max(values) <= sign * level:
-                        at_cap = (p.start, end)
                 total += sign * cap_integral(*at_cap)
                 if at_cap[1] > at_cap[0]:
                     if at_cap[0] <= p.start:

@@ -16,7 +16,7 @@ from typing import NamedTuple
 from mdr_events.friction import FrictionLaw
 from mdr_events.parameters import Parameters
 from mdr_events.profiles import FlatPunch
-from mdr_events.theory import mindlin, symbolic
+from mdr_events.theory import mindlin, power_law
 
 
 class Caps(NamedTuple):
@@ -39,7 +39,7 @@ class Caps(NamedTuple):
 
 def caps_of(friction: FrictionLaw, params: Parameters) -> Caps:
     """The parts of ``friction``'s caps for the material of ``params``."""
-    K = float(symbolic.relation("critical_shift").numeric(1.0, params.tau0, params.G_star)) if friction.uses_tau0 else 0.0
+    K = power_law.cap_per_radius(params) if friction.uses_tau0 else 0.0
     return Caps(K, mindlin.coulomb_cap_ratio(friction, params))
 
 
