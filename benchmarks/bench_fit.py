@@ -49,8 +49,8 @@ def main() -> None:
 
     noisy = measurement(0.01)
     result = run_fit(noisy)  # builds the lambdified relations once; the counts are the same every run
-    solves = int(result.dataset["continuum_solves"])
-    evaluations = int(result.dataset["optimizer_evaluations"])
+    solves = result.optimizer.continuum_solves
+    evaluations = result.optimizer.evaluations
     fit_time = median_time(lambda: run_fit(noisy), repeat=FIT_REPEAT)
     one_solve = median_time(lambda: model_curves(p, path, times, me.Tolerances(), DEFAULT_LIMITS, QUANTITIES))
     print(f"mdr_events {me.__version__}: fit of {len(FREE)} parameters ({', '.join(FREE)}), scenario {scenario} at "
@@ -66,8 +66,8 @@ def main() -> None:
     estimates = result.estimates
     errors = {name: abs(estimates[name].value - getattr(p, name)) / abs(getattr(p, name)) for name in FREE}
     worst = max(errors, key=errors.get)
-    print(f"  no noise:   fit {clean_time:6.2f} s (median of {FIT_REPEAT}); {int(result.dataset['continuum_solves'])} "
-          f"continuum solves, {int(result.dataset['optimizer_evaluations'])} optimizer evaluations; largest "
+    print(f"  no noise:   fit {clean_time:6.2f} s (median of {FIT_REPEAT}); {result.optimizer.continuum_solves} "
+          f"continuum solves, {result.optimizer.evaluations} optimizer evaluations; largest "
           f"relative error of the estimates {errors[worst]:.1e} ({worst})")
 
 

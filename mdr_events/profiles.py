@@ -22,6 +22,12 @@ from mdr_events.validation import check_real, real_array, shown
 __all__ = ["PowerLaw", "FlatPunch", "TabulatedProfile", "Profile", "profile_attrs"]
 
 
+#: Significant digits of a computed shape in words: a shape computed from other parameters (the cone that reaches the
+#: paraboloid's radius) is determined to round-off, far below the last of these digits, so that the words are the
+#: same on every CPU (the exact values are in their own float attributes, compared numerically).
+DESCRIBED_DIGITS = 9
+
+
 @dataclass(frozen=True)
 class PowerLaw:
     """The axisymmetric power-law indenter ``f(r) = c rⁿ``.
@@ -58,8 +64,9 @@ class PowerLaw:
                               lambda value: value > 0.0), 1.0)
 
     def describe(self) -> str:
-        """The profile in words, for a dataset's ``profile`` attribute."""
-        return f"power law f = c r^n, c = {self.c!r} m^(1-n), n = {self.n!r}"
+        """The profile in words, for a dataset's ``profile`` attribute (to :data:`DESCRIBED_DIGITS`; the exact values
+        are the attributes ``profile_c`` and ``profile_n``)."""
+        return f"power law f = c r^n, c = {self.c:.{DESCRIBED_DIGITS}g} m^(1-n), n = {self.n:.{DESCRIBED_DIGITS}g}"
 
 
 @dataclass(frozen=True)
@@ -77,8 +84,9 @@ class FlatPunch:
                                                       lambda value: value > 0.0))
 
     def describe(self) -> str:
-        """The profile in words, for a dataset's ``profile`` attribute."""
-        return f"flat punch of radius {self.radius!r} m"
+        """The profile in words, for a dataset's ``profile`` attribute (to :data:`DESCRIBED_DIGITS`; the exact value
+        is the attribute ``profile_radius``)."""
+        return f"flat punch of radius {self.radius:.{DESCRIBED_DIGITS}g} m"
 
 
 @dataclass(frozen=True, repr=False)

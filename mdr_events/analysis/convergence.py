@@ -21,6 +21,7 @@ import math
 import numpy as np
 from scipy import integrate, optimize
 
+from mdr_events.io.agreement import ROUND_OFF
 from mdr_events.theory import analytic
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
@@ -148,8 +149,13 @@ def compared_samples(discrete, continuum) -> np.ndarray:
         finite = np.isfinite(area_d) & np.isfinite(area_c)
         excluded = finite & ((area_d > 0) != (area_c > 0))
         corners = c["event_time"].values[c["event_kind"].values == "corner"]
-        straddling = np.searchsorted(times, corners, side="left")  # first sample at or after the corner
-        straddling = straddling[(straddling < len(times)) & (times[np.minimum(straddling, len(times) - 1)] > corners)]
+        # a sample within the times' round-off of a corner is at it (no step straddles that corner): another CPU's
+        # rounding must not decide whether a sample lies just after a corner that falls on the grid
+        tie = ROUND_OFF * float(np.max(np.abs(times), initial=0.0))
+        first = np.searchsorted(times, corners - tie, side="left")  # first sample not before the corner
+        inside = first < len(times)
+        first, corners = first[inside], corners[inside]
+        straddling = first[times[first] > corners + tie]
         excluded[straddling] |= finite[straddling]
         rows.append(finite & ~excluded)
     return np.array(rows, dtype=bool).reshape(discrete.sizes[dimension], len(times))

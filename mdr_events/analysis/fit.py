@@ -50,6 +50,8 @@ from scipy import optimize, stats
 
 from mdr_events.io.candidates import Candidate, read_candidate
 from mdr_events.analysis.validate import resolve_path, times_from_contact
+from mdr_events.analysis.fit_accuracy import register_fit_accuracy
+from mdr_events.io.agreement import Integrated, RoundOff, register_accuracy
 from mdr_events.io.datasets import figure_of, register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
@@ -59,7 +61,7 @@ from mdr_events.models.paths import Path
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 from mdr_events.validation import check_real, shown
 
-__all__ = ["fit", "FitResult", "synthetic_measurement", "model_curves", "curves_of", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
+__all__ = ["fit", "FitResult", "OptimizerRun", "synthetic_measurement", "model_curves", "curves_of", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
            "FIT_CONTENT", "SYNTHETIC_CONTENT", "FREE_NAMES", "FITTED_QUANTITIES", "LOG_SCALED", "OFFSETS"]
 
 #: The ``content`` attribute of a fit's dataset.
@@ -377,7 +379,7 @@ def synthetic_measurement(params: Parameters, path, alpha: float | None = None, 
     coords = {"time": ("time", times + time_shift, {"units": "s", "long_name": "time of the synthetic measurement"})}
     return stamp(xr.Dataset(data, coords=coords), params, content=SYNTHETIC_CONTENT,
                  relative_noise=float(relative_noise), seed=int(seed), time_shift=float(time_shift),
-                 path_waypoints=the_path.describe(), path_speed=the_path.speed, **profile_attrs(profile),
+                 continuum_rtol=tolerances.rtol, path_waypoints=the_path.describe(), path_speed=the_path.speed, **profile_attrs(profile),
                  **friction_attrs(friction))
 
 
@@ -587,6 +589,19 @@ def _effective_moduli(free: FreeParameters, theta: np.ndarray, covariance: np.nd
     return out
 
 
+class OptimizerRun(NamedTuple):
+    """How the optimizer got there: a log, not a result (the counts depend on its path, which rounding changes
+    from one CPU to another, so no compared dataset holds them)."""
+
+    continuum_solves: int  #: continuum solves of the fit, the Jacobian's included
+    evaluations: int  #: residual evaluations of ``least_squares``
+    status: int  #: ``least_squares``' status (> 0: converged)
+    message: str  #: ``least_squares``' message
+
+    def describe(self) -> str:
+        return f"{self.continuum_solves} continuum solves, {self.evaluations} optimizer evaluations: {self.message}"
+
+
 @dataclass(frozen=True)
 class FitResult:
     """What :func:`fit` found: the labelled dataset (:attr:`dataset`, everything) and its main readings.
@@ -599,18 +614,22 @@ class FitResult:
         samples, s on the measurement's clock): ``measured_<q>``, ``fitted_<q>``, ``residual_<q>``
         (measured − fitted, ``nan`` where left out), ``left_out``; along ``quantity``: ``noise``,
         ``noise_given``, ``rms_normalised_residual``; scalars ``condition_number``, ``reduced_chi_square``,
-        ``continuum_solves``, ``E_star``/``G_star`` (with ``*_standard_error``); attributes ``verdict``,
-        ``identifiable``, ``notes``, ``warnings`` (:attr:`warnings`).
+        ``E_star``/``G_star`` (with ``*_standard_error``); attributes ``verdict``, ``identifiable``, ``notes``,
+        ``warnings`` (:attr:`warnings`), ``optimizer_converged`` and what the accuracy of the results follows from
+        (``optimizer_tolerance``, ``jacobian_step``, ``continuum_rtol``: :mod:`mdr_events.analysis.fit_accuracy`).
     parameters : Parameters
         The start with the fitted values in place.
     time_offset, depth_offset : float
         The fitted offsets (0 where not free).
+    optimizer : OptimizerRun
+        The optimizer's log: solves, evaluations, status and message.
     """
 
     dataset: xr.Dataset
     parameters: Parameters
     time_offset: float
     depth_offset: float
+    optimizer: OptimizerRun
 
     @property
     def estimates(self) -> dict[str, ParameterEstimate]:
@@ -777,8 +796,9 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     attrs = dict(content=FIT_CONTENT, verdict=verdict, identifiable=int(identifiable), notes="; ".join(notes) or "none",
                  warnings="; ".join(warnings) or "none",
                  free=", ".join(free_set.names), measured_source=read.source, time_origin=str(time_origin),
-                 path_waypoints=nominal.describe(), path_speed=nominal.speed, optimizer_status=int(solution.status),
-                 optimizer_message=str(solution.message), confidence=CONFIDENCE,
+                 path_waypoints=nominal.describe(), path_speed=nominal.speed, optimizer_converged=int(solution.status > 0),
+                 optimizer_tolerance=FIT_TOLERANCE, jacobian_step=FD_STEP, continuum_rtol=tolerances.rtol,
+                 confidence=CONFIDENCE,
                  noise_rule="given" if all_given else "estimated from the data's second differences where not given",
                  out_of_contact_rule="the model's forces and area are 0 out of the elastomer; samples before a path "
                                      "that starts inside it or after one that ends in contact are left out")
@@ -786,7 +806,8 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
         attrs.update(scenario=path, alpha=float(alpha))
     attrs.update(profile_attrs(profile))
     attrs.update(friction_attrs(free_set.friction_at(theta)))  # (with the fitted μ where it is free)
-    return FitResult(stamp(dataset, params, **attrs), params, time_offset, depth_offset)
+    run = OptimizerRun(problem.solves, int(solution.nfev), int(solution.status), str(solution.message))
+    return FitResult(stamp(dataset, params, **attrs), params, time_offset, depth_offset, run)
 
 
 def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, value, error, low, high, verdicts,
@@ -807,10 +828,6 @@ def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, v
                                              "(scaled parameters)"}),
         "reduced_chi_square": ((), reduced_chi_square, {"units": "1", "long_name": "sum of squared weighted residuals "
                                                         "per degree of freedom"}),
-        "continuum_solves": ((), np.int32(problem.solves), {"units": "1", "long_name": "continuum solves of the fit "
-                                                  "(Jacobian included)"}),
-        "optimizer_evaluations": ((), np.int32(solution.nfev), {"units": "1", "long_name": "residual evaluations of "
-                                                           "least_squares"}),
     }
     for key, (number, standard_error) in moduli.items():
         symbol = "E*" if key == "E_star" else "G*"
@@ -848,5 +865,9 @@ def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, v
 
 
 register_schema(SYNTHETIC_CONTENT, {"time": ("time",)})
+#: A synthetic measurement is the continuum's curves (to its rtol) plus seeded noise; a fit as in fit_accuracy.
+register_accuracy(SYNTHETIC_CONTENT, {**{name: Integrated("continuum_rtol") for name in FITTED_QUANTITIES},
+                                      "time": RoundOff()})
+register_fit_accuracy(FIT_CONTENT, FITTED_QUANTITIES, tuple(PARAMETER_UNITS))
 register_schema(FIT_CONTENT, {"estimate": ("parameter",), "standard_error": ("parameter",),
                               "correlation": ("parameter", "parameter_2"), "left_out": ("time",)})

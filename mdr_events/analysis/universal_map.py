@@ -13,6 +13,7 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.analysis.sweep import sweep
+from mdr_events.io.agreement import RoundOff, register_accuracy
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.parameters import Parameters
 from mdr_events.theory.analytic import dimensionless_groups
@@ -88,3 +89,6 @@ def universal_map(slip, adhesion, base: Parameters, *, scheduler: str | None = N
 
 register_schema(UNIVERSAL_MAP_CONTENT, {"critical_angle_A": ("slip", "adhesion_in"),
                                         "critical_angle_B": ("slip", "adhesion_out")})
+#: The critical angles are the phase diagram's closed forms (round-off), the groups closed forms of the inputs.
+register_accuracy(UNIVERSAL_MAP_CONTENT, {name: RoundOff() for name in ("critical_angle_A", "critical_angle_B",
+                                                                         *GROUP_NAMES)})

@@ -502,7 +502,7 @@ def _command_fit(args: argparse.Namespace) -> int:
     result.dataset.attrs.update(provenance, path_description=description)
     rendered = render_fit(result.dataset, stem)
     written = write_rendered(rendered, out)
-    print("\n".join(fit_console_summary(result.dataset, args.data)))
+    print("\n".join(fit_console_summary(result.dataset, args.data, result.optimizer)))
     print(f"  written: {', '.join(str(outcome.path) for outcome in written)}")
     return 0 if result.identifiable and not result.warnings else 1
 

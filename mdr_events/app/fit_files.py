@@ -18,6 +18,7 @@ import os
 import numpy as np
 import xarray as xr
 
+from mdr_events.analysis.fit import OptimizerRun
 from mdr_events.app.validation_files import VALIDATION_SUFFIXES, RenderedReport
 from mdr_events.parameters import PARAMETER_UNITS
 from mdr_events.plotting.figures import figure_png
@@ -58,9 +59,10 @@ def fit_markdown(fit: xr.Dataset, stem: str | None = None) -> str:
              f"- Free: {fit.attrs['free']}; the other parameters as given: " + ", ".join(
                  f"{name} = {fit.attrs[f'param_{name}']:g}" + (f" {unit}" if unit != "1" else "")
                  for name, unit in PARAMETER_UNITS.items() if name not in str(fit.attrs["free"]).split(", ")),
-             f"- Continuum solves: {int(fit['continuum_solves'])}; condition number of the weighted Jacobian: "
-             f"{float(fit['condition_number']):.4g}; reduced χ²: {float(fit['reduced_chi_square']):.4g}",
-             f"- Optimizer: {fit.attrs.get('optimizer_message', '?')}", "",
+             f"- Condition number of the weighted Jacobian: {float(fit['condition_number']):.4g}; reduced χ²: "
+             f"{float(fit['reduced_chi_square']):.4g}",
+             f"- Optimizer: {'converged' if int(fit.attrs.get('optimizer_converged', 0)) else '**did not converge**'}",
+             "",
              "## Estimates", "", f"Intervals at {100 * float(fit.attrs.get('confidence', 0.95)):g} % from the "
              "Jacobian at the optimum (asymmetric for the log-scaled parameters).", ""]
     lines += _estimate_rows(fit)
@@ -98,9 +100,10 @@ def fit_markdown(fit: xr.Dataset, stem: str | None = None) -> str:
     return "\n".join(lines) + "\n"
 
 
-def fit_console_summary(fit: xr.Dataset, name: str) -> list[str]:
-    """A few lines for the terminal: the verdict and each estimate with its interval."""
-    lines = [f"{name}: {fit.attrs['verdict']} ({int(fit['continuum_solves'])} continuum solves)"]
+def fit_console_summary(fit: xr.Dataset, name: str, optimizer: OptimizerRun | None = None) -> list[str]:
+    """A few lines for the terminal: the verdict (with the optimizer's log, if given) and each estimate with its
+    interval."""
+    lines = [f"{name}: {fit.attrs['verdict']}" + ("" if optimizer is None else f" ({optimizer.describe()})")]
     warnings = str(fit.attrs.get("warnings", "none"))
     lines += [] if warnings == "none" else [f"  warning: {warning}" for warning in warnings.split("; ")]
     for parameter in fit["parameter"].values:

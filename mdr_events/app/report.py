@@ -38,7 +38,8 @@ from mdr_events.app.report_data import (FIT_DEMO_ANGLE, FIT_DEMO_NOISE, FIT_DEMO
                                         mindlin_rows)
 from mdr_events.app.result_files import (FileOutcome, FileStatus, describe_outcomes, write_dataset, write_figure,
                                          write_phase_diagram, write_simulation, write_text)
-from mdr_events.io.datasets import DOI, RESULT_RTOL
+from mdr_events.io.agreement import rounded_text_differences
+from mdr_events.io.datasets import DOI
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 from mdr_events.profiles import FlatPunch
 from mdr_events.plotting.figures import plot_fretting
@@ -360,6 +361,18 @@ def fretting_section(study: FrettingStudy) -> list[str]:
     return lines
 
 
+#: Significant digits of a fitted value in the report: its accuracy (c standard errors, 1e-7 of it here:
+#: :mod:`mdr_events.analysis.fit_accuracy`) lies far below the last.
+FIT_DIGITS = 5
+
+
+def _estimated(value: float) -> str:
+    """A fitted value to :data:`FIT_DIGITS` significant digits, written with a decimal point or an exponent, so
+    that it reads as a rounded value (compared within one unit of its last digit), not as a count."""
+    text = f"{value:.{FIT_DIGITS}g}"
+    return text if "." in text or "e" in text else f"{value:.1f}"
+
+
 def fit_section(demo: FitDemonstration) -> list[str]:
     """The report's section on the fit demonstration: true, start and recovered parameters with intervals."""
     fitted = demo.result
@@ -374,12 +387,12 @@ def fit_section(demo: FitDemonstration) -> list[str]:
     for name, estimate in fitted.estimates.items():
         truth = getattr(demo.truth, name)
         inside = "yes" if estimate.lower <= truth <= estimate.upper else "**no**"
-        lines.append(f"| {name} | {truth:.5g} | {getattr(demo.start, name):.5g} | {estimate.value:.5g} | "
-                     f"[{estimate.lower:.5g}, {estimate.upper:.5g}] | {inside} | {estimate.identifiability.value} |")
+        lines.append(f"| {name} | {truth:.5g} | {getattr(demo.start, name):.5g} | {_estimated(estimate.value)} | "
+                     f"[{_estimated(estimate.lower)}, {_estimated(estimate.upper)}] | {inside} | "
+                     f"{estimate.identifiability.value} |")
     dataset = fitted.dataset
-    lines += ["", f"Verdict: {fitted.verdict}; condition number {fitted.condition_number:.3g}; reduced χ² "
-                  f"{float(dataset['reduced_chi_square']):.3f}; {int(dataset['continuum_solves'])} continuum solves.",
-              ""]
+    lines += ["", f"Verdict: {fitted.verdict}; condition number {fitted.condition_number:.1f}; reduced χ² "
+                  f"{float(dataset['reduced_chi_square']):.3f}.", ""]
     return lines
 
 
@@ -523,8 +536,10 @@ def _software_section(versions: dict[str, str]) -> list[str]:
         _COMPUTED_WITH + ", ".join(f"{name} {version}" for name, version in versions.items()) + ".",
         "",
         "`make` installs these versions from the lock file `constraints.txt`. With other versions (or",
-        f"another CPU) the datasets agree within {RESULT_RTOL:g} of each variable's largest magnitude",
-        "(`mdr_events.io.datasets.result_differences`) and this report, which rounds, exactly;",
+        "another CPU) each quantity of the datasets agrees within the accuracy of how it is computed",
+        "(`mdr_events.io.agreement`: round-off for closed forms and sums, the integrator's rtol for F_x,",
+        "the curvature at an extremum for its time, the optimizer's stopping tolerance for the fit), and",
+        "each number of this report within one unit of its last digit, which is coarser than that accuracy;",
         "`mdr-events reproduce` then keeps the files as they are.",
         "",
     ]
@@ -630,7 +645,7 @@ def reproduce(out: Path, progress: Callable[[str], None] = print, keep_agreeing:
     if keep_agreeing and readme.exists() and all(o.status is FileStatus.KEPT for o in outcomes):
         existing = readme.read_text()
         recorded = recorded_versions(existing)
-        if recorded and report_text(data, versions=recorded) == existing:
+        if recorded and not rounded_text_differences(report_text(data, versions=recorded), existing):
             text = existing  # the files on disk were written with the versions it records
-    done([write_text(text, readme, keep_agreeing)])
+    done([write_text(text, readme, keep_agreeing, rounded=True)])
     return outcomes

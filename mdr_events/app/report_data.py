@@ -21,6 +21,7 @@ from mdr_events.analysis.crosscheck import CROSS_CHECK_CONTENT, cross_check
 from mdr_events.analysis.fit import FitResult, fit, synthetic_measurement
 from mdr_events.analysis.universal_map import universal_map
 from mdr_events.analysis.validate import resolve_path
+from mdr_events.io.agreement import Integrated, RoundOff, register_accuracy
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import extremum, solve_path, tangential_work
 from mdr_events.models.paths import Path, exit_depth
@@ -104,6 +105,10 @@ FRETTING_VARIABLES: dict[str, tuple[tuple[str, ...], str, str]] = {
 }
 register_schema(SIMULATION_CONTENT, {name: dims for name, (dims, _, _) in FRETTING_VARIABLES.items()},
                 when=("study", FRETTING_STUDY))
+#: How the fretting study computes them: the loop's energy integrates the continuum's F_x; the rest are closed forms
+#: (the reversals are the path's corners).
+register_accuracy(SIMULATION_CONTENT, {**{name: RoundOff() for name in FRETTING_VARIABLES},
+                                       "dissipated_energy": Integrated()}, when=("study", FRETTING_STUDY))
 
 
 @dataclass
@@ -313,6 +318,8 @@ MINDLIN_VARIABLES: dict[str, tuple[tuple[str, ...], str, str]] = {
 }
 register_schema(SIMULATION_CONTENT, {name: dims for name, (dims, _, _) in MINDLIN_VARIABLES.items()},
                 when=("study", MINDLIN_STUDY))
+#: The closed form on the samples (round-off).
+register_accuracy(SIMULATION_CONTENT, {name: RoundOff() for name in MINDLIN_VARIABLES}, when=("study", MINDLIN_STUDY))
 
 
 class MindlinCheck(NamedTuple):
@@ -330,10 +337,14 @@ def mindlin_path(params: Parameters) -> tuple[Path, float]:
     return Path(np.array(waypoints), speed=params.v), depth
 
 
-def _with_closed_form(dataset: xr.Dataset, depth: float, params: Parameters) -> xr.Dataset:
-    """``dataset`` with :data:`MINDLIN_VARIABLES` on its samples at ``depth``; the springs were at rest at the
-    corner where the depth was reached (``x = 0``)."""
-    held = dataset["indentation_depth"].values[0] == depth
+def _with_closed_form(dataset: xr.Dataset, path: Path, depth: float, params: Parameters) -> xr.Dataset:
+    """``dataset`` with :data:`MINDLIN_VARIABLES` on its samples at ``depth``: from the corner where ``path`` reached
+    it on (the springs were at rest there, ``x = 0``), by time, half a sample before it, not by the sampled depth's
+    equality with ``depth`` (which the rounding of another CPU may break at the corner)."""
+    times = dataset["time"].values
+    reached = path.corner_times[1] - path.first_contact_time()
+    running = np.isfinite(dataset["indentation_depth"].values[0])
+    held = (times > reached - 0.5 * float(np.min(np.diff(times)))) & running
     x = dataset["tangential_displacement"].values[0][held]
     closed = np.full(dataset.sizes["time"], np.nan)
     closed[held] = mindlin.tangential_force(np.concatenate([[0.0], x]), depth, MINDLIN_FRICTION, params)[1:]
@@ -353,7 +364,8 @@ def mindlin_check(params: Parameters) -> MindlinCheck:
     continuum = simulate(hertz, {MINDLIN_CASE: path}, method="continuum", t=times, friction=MINDLIN_FRICTION)
     discrete = simulate(hertz, {MINDLIN_CASE: path}, dx=FIGURE_DX, dt=0.5 * FIGURE_DX / hertz.v,
                         friction=MINDLIN_FRICTION)
-    return MindlinCheck(_with_closed_form(continuum, depth, hertz), _with_closed_form(discrete, depth, hertz))
+    return MindlinCheck(_with_closed_form(continuum, path, depth, hertz),
+                        _with_closed_form(discrete, path, depth, hertz))
 
 
 class MindlinRow(NamedTuple):

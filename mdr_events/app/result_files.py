@@ -4,9 +4,9 @@ Shared by the CLI, study files and ``mdr-events reproduce``; every file is writt
 name and renamed into place (:func:`mdr_events.io.files.atomic_write`).
 
 With ``keep_agreeing=True`` a file whose content already agrees with what would be written is left
-as it is (:attr:`FileStatus.KEPT`): a dataset that agrees within
-:data:`mdr_events.io.datasets.RESULT_RTOL` (:func:`mdr_events.io.datasets.result_differences`), a figure
-with the same pixels, a text with the same characters. The figure and the event log are then drawn
+as it is (:attr:`FileStatus.KEPT`): a dataset each of whose quantities agrees within the accuracy of how it is
+computed (:func:`mdr_events.io.agreement.result_differences`), a figure with the same pixels, a text with the same
+characters (a rounded text: the same words, its numbers within one unit of their last digit). The figure and the event log are then drawn
 from the dataset on disk, so that a kept dataset keeps its figure and log too. This is what lets
 ``make reproduce`` leave a clean git tree on a machine whose rounding differs.
 
@@ -30,7 +30,7 @@ import xarray as xr
 from matplotlib import image
 from matplotlib.figure import Figure
 
-from mdr_events.io.datasets import RESULT_RTOL, result_differences
+from mdr_events.io.agreement import result_differences, rounded_text_differences
 from mdr_events.io.files import (atomic_write, check_file_path, check_output_stem, open_result,
                                  prepare_output_directory, write_netcdf)
 from mdr_events.models.simulate import case_dimension
@@ -112,9 +112,18 @@ def write_figure(figure, path: str | os.PathLike, keep_agreeing: bool = False) -
     return _write_if_new(Path(path), figure_png(figure), _same_pixels, keep_agreeing)
 
 
-def write_text(text: str, path: str | os.PathLike, keep_agreeing: bool = False) -> FileOutcome:
-    """Write a text file (UTF-8); kept if it holds the same text."""
-    return _write_if_new(Path(path), text.encode(), lambda old, new: old == new, keep_agreeing)
+def _same_rounded_text(old: bytes, new: bytes) -> bool:
+    try:
+        return not rounded_text_differences(new.decode(), old.decode())
+    except UnicodeDecodeError:  # not our text: replaced
+        return False
+
+
+def write_text(text: str, path: str | os.PathLike, keep_agreeing: bool = False, rounded: bool = False) -> FileOutcome:
+    """Write a text file (UTF-8); kept if it holds the same text (``rounded``: the same words, and its numbers
+    within one unit of their last digit, :func:`~mdr_events.io.agreement.rounded_text_differences`)."""
+    same = _same_rounded_text if rounded else (lambda old, new: old == new)
+    return _write_if_new(Path(path), text.encode(), same, keep_agreeing)
 
 
 def _check_distinct_cases(dataset: xr.Dataset) -> None:
@@ -218,7 +227,8 @@ def describe_outcomes(outcomes: list[FileOutcome]) -> str:
     """One line for a progress message: which files were written and which were kept."""
     parts = []
     for status, words in ((FileStatus.WRITTEN, "written"),
-                          (FileStatus.KEPT, f"agree with a fresh computation (within {RESULT_RTOL:g}), not rewritten")):
+                          (FileStatus.KEPT, "agree with a fresh computation (each quantity within the accuracy of how "
+                                            "it is computed), not rewritten")):
         names = [outcome.path.name for outcome in outcomes if outcome.status is status]
         if names:
             parts.append(f"{words}: {', '.join(names)}")

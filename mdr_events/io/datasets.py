@@ -8,8 +8,9 @@ float, int), so that :func:`parameters_of` can rebuild the :class:`Parameters`.
 Its ``content`` attribute names the kind of result; the module that makes a
 kind of result registers what it must hold (:func:`register_schema`) when it
 is imported, and :func:`mdr_events.io.files.open_result` checks a file read
-back against it (:func:`required_variables`). Reading and writing files is
-:mod:`mdr_events.io.files`.
+back against it (:func:`required_variables`), and declares how each of its quantities is computed
+(:func:`mdr_events.io.agreement.register_accuracy`), which sets the tolerance within which a result computed
+elsewhere agrees with it. Reading and writing files is :mod:`mdr_events.io.files`.
 """
 
 from __future__ import annotations
@@ -23,8 +24,7 @@ from mdr_events._version import __version__
 from mdr_events.parameters import Parameters
 
 __all__ = ["DOI", "REFERENCE", "PROGRAM", "STAMP_ATTRIBUTES", "stamp", "parameters_of", "Dims", "register_schema",
-           "registered_contents", "required_variables", "register_figure", "figure_of", "dims_match", "describe_dims", "RESULT_RTOL",
-           "result_differences", "assert_results_agree"]
+           "registered_contents", "required_variables", "register_figure", "figure_of", "dims_match", "describe_dims"]
 
 DOI = "10.3390/biomimetics8060477"
 REFERENCE = (
@@ -174,78 +174,3 @@ def required_variables(content: str, attrs: Mapping[str, Any]) -> dict[str, Dims
         if condition is not None and attrs.get(condition[0]) == condition[1]:
             schema.update(variables)
     return schema
-
-
-#: Relative tolerance within which a result computed on another machine or with other library versions
-#: agrees with a committed one. The continuum method integrates ``F_x`` with ``rtol = 1e-10``: a rounding
-#: difference (another NumPy's SIMD path, another SciPy's lambdified ``math``) that tips one step of the
-#: adaptive integrator from accepted to rejected moves ``F_x`` by up to that local error control. All other
-#: values (closed forms, roots converged to a few ulp, sums over springs) differ by about 1e-13, far below
-#: it. The differences seen between library versions were 2.5e-14 (simulations) and 6e-16 (phase diagrams).
-RESULT_RTOL = 1e-10
-
-
-def _float_differences(name: str, actual: np.ndarray, expected: np.ndarray, rtol: float) -> list[str]:
-    """Differences of one floating-point array: non-finite entries exactly, finite ones within ``rtol``
-    of the array's largest finite magnitude (values near a zero crossing carry the rounding of the
-    larger terms they are computed from, e.g. ``F_N`` as a difference of two integrals)."""
-    same_pattern = (np.isnan(actual) == np.isnan(expected)) & (np.isinf(actual) == np.isinf(expected))
-    if not np.all(same_pattern):
-        return [f"{name}: nan/inf at {int(np.count_nonzero(~same_pattern))} other place(s)"]
-    infinite = np.isinf(expected)
-    if np.any(actual[infinite] != expected[infinite]):
-        return [f"{name}: infinities of other sign"]
-    finite = np.isfinite(expected)
-    if not finite.any():
-        return []
-    scale = float(np.max(np.abs(expected[finite])))
-    worst = float(np.max(np.abs(actual[finite] - expected[finite])))
-    if worst > rtol * scale:
-        return [f"{name}: differs by {worst:.3g}, {worst / scale:.3g} of its largest magnitude {scale:.3g} "
-                f"(allowed: {rtol:g})"]
-    return []
-
-
-#: NumPy dtype kinds that hold strings (unicode, bytes, or Python objects as netCDF returns them).
-_STRING_KINDS = {"U", "S", "O"}
-
-
-def result_differences(actual: xr.Dataset, expected: xr.Dataset, rtol: float = RESULT_RTOL) -> list[str]:
-    """How ``actual`` differs from ``expected`` beyond the tolerance of another environment ([] if not).
-
-    Exact: dimensions and their sizes, the names of variables and coordinates, every attribute (of the
-    dataset and of each variable), and arrays of integers and strings (e.g. event kinds). Floating-point
-    arrays agree where their ``nan`` and ``inf`` match exactly and their finite values agree within
-    ``rtol`` of the array's largest finite magnitude (:data:`RESULT_RTOL`).
-    """
-    found: list[str] = []
-    if dict(actual.sizes) != dict(expected.sizes):
-        return [f"dimensions {dict(actual.sizes)} instead of {dict(expected.sizes)}"]
-    if set(actual.variables) != set(expected.variables):
-        return [f"variables {sorted(actual.variables)} instead of {sorted(expected.variables)}"]
-    if actual.attrs != expected.attrs:
-        keys = sorted(key for key in set(actual.attrs) | set(expected.attrs)
-                      if actual.attrs.get(key) != expected.attrs.get(key))
-        found.append(f"attributes {keys} differ")
-    for name in sorted(expected.variables):
-        mine, theirs = actual[name].variable, expected[name].variable
-        if mine.dims != theirs.dims or mine.attrs != theirs.attrs:
-            found.append(f"{name}: dimensions or attributes differ")
-            continue
-        values, reference = np.asarray(mine.values), np.asarray(theirs.values)
-        kinds = {values.dtype.kind, reference.dtype.kind}
-        if kinds == {"f"}:
-            found += _float_differences(name, values, reference, rtol)
-        elif kinds <= _STRING_KINDS:  # netCDF gives strings back as objects
-            if values.shape != reference.shape or not np.array_equal(values.astype(str), reference.astype(str)):
-                found.append(f"{name}: strings differ")
-        elif len(kinds) > 1 or not np.array_equal(values, reference):
-            found.append(f"{name}: values differ ({values.dtype} and {reference.dtype} compared exactly)")
-    return found
-
-
-def assert_results_agree(actual: xr.Dataset, expected: xr.Dataset, rtol: float = RESULT_RTOL) -> None:
-    """Raise ``AssertionError`` listing :func:`result_differences` if there are any."""
-    found = result_differences(actual, expected, rtol)
-    if found:
-        raise AssertionError("results disagree: " + "; ".join(found))

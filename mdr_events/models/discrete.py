@@ -59,6 +59,7 @@ from typing import Callable, NamedTuple
 
 import numpy as np
 
+from mdr_events.io.agreement import ROUND_OFF
 from mdr_events.theory import analytic
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.validation import check_real
@@ -559,10 +560,11 @@ BYTES_PER_SPRING = 256
 
 def _time_grid_size(paths: list[Path], dt: float) -> tuple[np.ndarray, np.ndarray, int]:
     """Each path's first contact and its duration from then on (s), and the samples ``k dt`` of the shared
-    time grid that covers the longest."""
+    time grid that covers the longest. A duration that is a whole number of steps to the round-off of the division
+    (``dt = duration / n_steps``) takes that number, whichever way another CPU rounds it."""
     starts = np.array([path.first_contact_time() for path in paths])
     durations = np.array([path.duration for path in paths]) - starts
-    return starts, durations, int(math.ceil(durations.max() / dt)) + 1
+    return starts, durations, int(math.ceil(durations.max() / dt * (1.0 - ROUND_OFF))) + 1
 
 
 def check_discrete_size(params: Parameters, paths: list[Path], dx: float, dt: float, limits: Limits,

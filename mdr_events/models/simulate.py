@@ -2,14 +2,17 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import Any, Literal, Mapping, NamedTuple, Sequence
 
 import numpy as np
 import xarray as xr
 
+from mdr_events.io.agreement import ExtremumTime, Integrated, Quotient, RootFound, RoundOff, register_accuracy
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import Tolerances, run_continuum
+from mdr_events.models.continuum.solution import EXTREMUM_XTOL
 from mdr_events.models.continuum.extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, extremum_names, solution_extrema
 from mdr_events.models.discrete import check_spacing, run_discrete
 from mdr_events.models.paths import Path
@@ -100,6 +103,31 @@ register_schema(SIMULATION_CONTENT, {**{name: (CASE_DIMENSIONS, "event") for nam
                 when=("method", "continuum"))
 register_schema(SIMULATION_CONTENT, {name: (CUSTOM_DIMENSION,) for name in PATH_VARIABLES},
                 when=("scenario", CUSTOM_SCENARIO))
+
+#: How each quantity of a simulation is computed (:mod:`mdr_events.io.agreement`). The discrete model: closed
+#: forms of the path and sums over the springs; the means are quotients by the area.
+MEANS = {"mean_pressure": Quotient("normal_force", "contact_area"),
+         "mean_shear_stress": Quotient("tangential_force", "contact_area")}
+register_accuracy(SIMULATION_CONTENT, {**{name: RoundOff() for name in SIMULATION_VARIABLES}, **MEANS,
+                                       "time": RoundOff(), ANGLE_DIMENSION: RoundOff(), "path_speed": RoundOff()})
+def _continuum_accuracy() -> dict:
+    """How the continuum computes what differs from the discrete model: the path is a closed form of time; ``F_N``,
+    ``a`` and ``A`` closed forms of the radius, a root found to ``radius_rtol``; ``F_x`` and the springs' slip
+    integrated to ``rtol``, and so the events (crossings of integrated quantities); each extremum as accurate as
+    its quantity, its time as the curvature there allows."""
+    integrated = {name: Integrated() for name in EVENT_VARIABLES if name not in ("event_kind", "event_direction")}
+    declared = {"normal_force": RootFound(), "contact_radius": RootFound(), "contact_area": RootFound(),
+                "tangential_force": Integrated(), "sliding_fraction": Integrated(), **integrated}
+    for quantity in EXTREMA_QUANTITIES:
+        for kind in EXTREMA_KINDS:
+            value, time = extremum_names(quantity, kind)
+            declared[value] = dataclasses.replace(declared[quantity], scale_of=quantity)
+            declared[time] = ExtremumTime(value, quantity, search_share=EXTREMUM_XTOL)
+    return declared
+
+
+CONTINUUM_ACCURACY = _continuum_accuracy()
+register_accuracy(SIMULATION_CONTENT, CONTINUUM_ACCURACY, when=("method", "continuum"))
 
 
 #: Relative accuracy the slip criterion needs: x − X(ξ) against ū(a) must keep this many digits.

@@ -7,6 +7,7 @@ from typing import Literal
 import numpy as np
 import xarray as xr
 
+from mdr_events.io.agreement import RoundOff, register_accuracy
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.parameters import Parameters
 from mdr_events.friction import FrictionLaw, as_friction_law, friction_attrs
@@ -23,6 +24,10 @@ PHASE_DIAGRAM_CONTENT = "phase diagram of slip onset"
 PHASE_DIAGRAM_VARIABLES = {"d_crit_hertz": None, "d_crit_jkr": None, "d_max": (), "critical_angle_hertz": (),
                            "critical_angle_jkr": ()}
 register_schema(PHASE_DIAGRAM_CONTENT, PHASE_DIAGRAM_VARIABLES)
+#: Every value of a phase diagram is a closed form or a root converged to round-off (the polynomial root finder,
+#: a safeguarded Newton iteration on a table's convex relations), the angles inputs.
+register_accuracy(PHASE_DIAGRAM_CONTENT, {name: RoundOff() for name in (*PHASE_DIAGRAM_VARIABLES, "jump_off_depth",
+                                                                         "alpha")})
 
 
 def default_angles(count: int = 901) -> np.ndarray:

@@ -147,7 +147,7 @@ def test_simulate_and_validate_take_a_power_law(capsys, tmp_path):
     assert status == 0
     run_file = tmp_path / "simulation_A_discrete.nc"
     ds = me.open_result(run_file)
-    assert ds.attrs["profile"] == "power law f = c r^n, c = 2000.0 m^(1-n), n = 3.0"
+    assert ds.attrs["profile"] == "power law f = c r^n, c = 2000 m^(1-n), n = 3"
     figure = me.plotting.plot_simulation(ds)
     assert "power law" in figure._suptitle.get_text() and "Fig." not in figure._suptitle.get_text()
     candidate = tmp_path / "candidate.nc"

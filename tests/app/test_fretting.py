@@ -15,7 +15,7 @@ from mdr_events.app.report_data import (FRETTING_AMPLITUDE_IN_CAPS, FRETTING_ANG
                                         FRETTING_OBLIQUE, FRETTING_VARIABLES, FRETTING_VERTICAL, closed_loop_times,
                                         fretting_paths, fretting_rows, fretting_study)
 from mdr_events.io.files import open_result, write_netcdf
-from mdr_events.io.datasets import assert_results_agree
+from mdr_events.io.agreement import assert_results_agree
 from mdr_events.models.paths import Path, exit_depth
 from mdr_events.models.simulate import simulate
 from mdr_events.theory import analytic
