@@ -6,7 +6,8 @@ name and renamed into place (:func:`mdr_events.io.files.atomic_write`).
 With ``keep_agreeing=True`` a file whose content already agrees with what would be written is left
 as it is (:attr:`FileStatus.KEPT`): a dataset each of whose quantities agrees within the accuracy of how it is
 computed (:func:`mdr_events.io.agreement.result_differences`), a figure with the same pixels, a text with the same
-characters (a rounded text: the same words, its numbers within one unit of their last digit). The figure and the event log are then drawn
+characters (a rounded text: the same words, its numbers within one unit of their last digit; an event log: the same
+rows and words, its floats within the tolerances of their variables). The figure and the event log are then drawn
 from the dataset on disk, so that a kept dataset keeps its figure and log too. This is what lets
 ``make reproduce`` leave a clean git tree on a machine whose rounding differs.
 
@@ -30,7 +31,7 @@ import xarray as xr
 from matplotlib import image
 from matplotlib.figure import Figure
 
-from mdr_events.io.agreement import result_differences, rounded_text_differences
+from mdr_events.io.agreement import result_differences, rounded_text_differences, tolerance_of
 from mdr_events.io.files import (atomic_write, check_file_path, check_output_stem, open_result,
                                  prepare_output_directory, write_netcdf)
 from mdr_events.models.simulate import case_dimension
@@ -42,7 +43,7 @@ from mdr_events.theory.phase import phase_diagram
 from mdr_events.validation import shown
 
 __all__ = ["FileStatus", "FileOutcome", "write_dataset", "write_figure", "write_text", "write_phase_diagram",
-           "write_simulation", "event_log_csv", "describe_outcomes"]
+           "write_simulation", "event_log_csv", "event_logs_agree", "describe_outcomes"]
 
 
 class FileStatus(enum.Enum):
@@ -188,7 +189,8 @@ def write_simulation(dataset: xr.Dataset, out: str | os.PathLike, stem: str, ove
     outcomes = [_write_or_keep(dataset, nc, existing),
                 _write_if_new(directory / f"{stem}.png", png, _same_pixels, keep_agreeing)]
     if events is not None:
-        outcomes.append(write_text(events, directory / f"{stem}_events.csv", keep_agreeing))
+        target = directory / f"{stem}_events.csv"
+        outcomes.append(_write_if_new(target, events.encode(), event_logs_agree(on_disk), keep_agreeing))
     return outcomes
 
 
@@ -197,6 +199,39 @@ EVENT_LOG_CASE_COLUMNS: dict[str, tuple[str, Callable[[object], str]]] = {
     "alpha": ("alpha_degree", lambda angle: f"{float(angle):.17g}"),
     "case": ("case", str),
 }
+
+
+#: The event log's columns of floats and the dataset's variables they are read from (compared within those).
+EVENT_LOG_FLOATS = {"time_s": "event_time", "depth_m": "event_depth", "radius_m": "event_radius", "x_m": "event_x"}
+
+
+def event_logs_agree(dataset: xr.Dataset) -> Callable[[bytes, bytes], bool]:
+    """Whether two event logs of ``dataset`` agree: the same rows and words, each float within the tolerance of
+    its variable in ``dataset`` (:data:`EVENT_LOG_FLOATS`; the CSV writes all 17 digits, more than the computation
+    determines)."""
+    def same(old: bytes, new: bytes) -> bool:
+        try:
+            before, after = (list(csv.DictReader(io.StringIO(text.decode()))) for text in (old, new))
+        except (UnicodeDecodeError, csv.Error):  # not our log: replaced
+            return False
+        if len(before) != len(after) or any(a.keys() != b.keys() for a, b in zip(before, after)):
+            return False
+        allowed = {column: float(np.max(tolerance_of(dataset, name), initial=0.0))
+                   for column, name in EVENT_LOG_FLOATS.items()}
+        for a, b in zip(before, after):
+            for column in a:
+                if column not in allowed:
+                    if a[column] != b[column]:
+                        return False
+                    continue
+                try:
+                    x, y = float(a[column]), float(b[column])
+                except ValueError:
+                    return False
+                if not (x == y or abs(x - y) <= allowed[column]):
+                    return False
+        return True
+    return same
 
 
 def event_log_csv(dataset: xr.Dataset) -> str:

@@ -15,8 +15,8 @@ import pytest
 import mdr_events as me
 from mdr_events.app import report
 from mdr_events.app.report_data import FIT_DEMO_NOISE, fit_demonstration
-from mdr_events.app.result_files import FileStatus
-from mdr_events.io.agreement import result_differences, rounded_text_differences
+from mdr_events.app.result_files import FileStatus, event_logs_agree, event_log_csv
+from mdr_events.io.agreement import result_differences, rounded_text_differences, tolerance_of
 from mdr_events.models.simulate import FIGURE_ANGLES
 from mdr_events.parameters import PRESETS
 
@@ -114,3 +114,24 @@ def test_a_changed_number_of_the_report_is_caught():
     assert rounded_text_differences(committed.replace("| 10° | 517.447 mN |", "| 10° | 517.449 mN |"), committed)
     assert rounded_text_differences(committed.replace("2001 samples", "2002 samples"), committed)
     assert rounded_text_differences(committed.replace("**inferred**", "inferred"), committed)
+
+
+def test_the_event_log_is_compared_within_its_variables_tolerances():
+    """The CSV writes 17 digits, more than the computation determines: an event time moved within event_time's
+    tolerance is the same log, one moved by 1e-6 of itself or another kind of event is not."""
+    dataset = me.open_result(RESULTS / "fig10_R30.nc")
+    text = event_log_csv(dataset)
+    same = event_logs_agree(dataset)
+    header, first, second, *rest = text.splitlines()
+    cells = second.split(",")
+    time = float(cells[2])
+    assert time > 0
+
+    def with_time(value: float) -> bytes:
+        return "\n".join([header, first, ",".join(cells[:2] + [repr(value)] + cells[3:]), *rest, ""]).encode()
+
+    allowed = float(np.max(tolerance_of(dataset, "event_time")))
+    assert same(text.encode(), with_time(time + 0.5 * allowed))
+    assert not same(text.encode(), with_time(time * (1 + REAL_CHANGE)))
+    assert not same(text.encode(), text.replace(cells[3], "full_slip" if cells[3] != "full_slip" else "re_stick",
+                                                1).encode())
