@@ -43,7 +43,7 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.limits import DEFAULT_LIMITS, Limits
-from mdr_events.io.candidates import Candidate, read_candidate
+from mdr_events.io.candidates import Candidate, check_run_is_finite, read_candidate
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs
@@ -228,6 +228,7 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
                          "allowed: a solution of this friction law")
     the_path = resolve_path(params, path, alpha, profile)
     read = read_candidate(candidate, names, units)
+    check_run_is_finite(read, _in_contact(read.quantities), names)
     times = times_from_contact(read, the_path, time_origin)
     solution = solve_path(params, the_path, tolerances, limits, profile, friction) if solution is None else solution
     exact = evaluate(solution, np.maximum(times, 0.0))

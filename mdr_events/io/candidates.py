@@ -18,7 +18,8 @@ import xarray as xr
 
 from mdr_events.profiles import TabulatedProfile
 
-__all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor"]
+__all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor", "check_run_is_finite",
+           "UNDEFINED_OUT_OF_CONTACT"]
 
 #: The quantities a candidate may hold, with their SI unit; ``time`` is required, and at least one other.
 CANDIDATE_QUANTITIES: dict[str, str] = {
@@ -158,7 +159,8 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
     ------
     ValueError
         Naming the source and the column: a missing time or no quantity (listing the columns found), a
-        unit that is not allowed, columns of different lengths, times that are not finite or not increasing.
+        unit that is not allowed, columns of different lengths, times that are not finite or not increasing,
+        an infinite value (with its first row; ``nan`` is a missing sample).
     """
     source = str(candidate) if isinstance(candidate, (str, os.PathLike)) else f"candidate ({type(candidate).__name__})"
     columns, declared = _columns_and_units(candidate, source)
@@ -194,4 +196,40 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
     if time.size < 2 or not np.all(np.isfinite(time)) or np.any(np.diff(time) <= 0):
         raise ValueError(f"{source}: column {names.get('time', 'time')!r} is not allowed as the time; allowed: at "
                          "least two finite, strictly increasing values")
+    for quantity, values in found.items():
+        infinite = np.flatnonzero(np.isinf(values))
+        if infinite.size:
+            row = int(infinite[0])
+            raise ValueError(f"{source}: column {names.get(quantity, quantity)!r} holds {values[row]} at data row "
+                             f"{row + 1} (time {time[row]:.9g} s){_more(infinite.size)}; allowed: finite values (nan or "
+                             "an empty field for a missing sample)")
     return Candidate(time, found, source, tuple(name for name in columns if name not in used))
+
+
+def _more(count: int) -> str:
+    return f" and {count - 1} more" if count > 1 else ""
+
+
+#: Quantities undefined out of contact (the share of the springs in contact that slide, with none in contact).
+UNDEFINED_OUT_OF_CONTACT = ("sliding_fraction",)
+
+
+def check_run_is_finite(candidate: Candidate, in_contact: np.ndarray, names: Mapping[str, str] | None = None) -> None:
+    """Refuse a simulator's run with a missing (``nan``) sample inside it: a run ends with its last finite samples
+    (``nan`` after its end, as :func:`mdr_events.simulate` writes, is fine), so a ``nan`` followed by a finite value
+    of the same column is a broken run, not one to pass (``ValueError`` naming the column and the first row). The
+    quantities of :data:`UNDEFINED_OUT_OF_CONTACT` may be ``nan`` where the run is not ``in_contact``."""
+    names = dict(names or {})
+    for quantity, values in candidate.quantities.items():
+        finite = np.isfinite(values) | ((~in_contact) if quantity in UNDEFINED_OUT_OF_CONTACT else False)
+        if not finite.any():
+            raise ValueError(f"{candidate.source}: column {names.get(quantity, quantity)!r} holds no finite value; "
+                             "allowed: a run's samples (leave the column out if the simulator does not write it)")
+        last = int(np.flatnonzero(finite)[-1])
+        inside = np.flatnonzero(~finite[:last])
+        if inside.size:
+            row = int(inside[0])
+            raise ValueError(f"{candidate.source}: column {names.get(quantity, quantity)!r} holds nan at data row "
+                             f"{row + 1} (time {candidate.time[row]:.9g} s){_more(inside.size)}, inside the run "
+                             f"(finite values follow up to row {last + 1}); allowed: a finite value at every sample "
+                             "up to the run's end (nan only after it)")

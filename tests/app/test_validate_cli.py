@@ -345,3 +345,36 @@ def test_the_figure_and_summary_are_drawn_from_the_report_only(paper, runs, tmp_
     assert sum("outside tolerance" in title for title in titles) == 1  # F_x
     labels = figure.legends[0].get_texts()
     assert any(text.get_text().startswith("left out: straddles an event") for text in labels)
+
+
+@pytest.mark.parametrize("column, row, value, words", [
+    ("normal_force", 700, np.inf, "holds inf at data row 701"),
+    ("tangential_force", 5, -np.inf, "holds -inf at data row 6"),
+    ("contact_area", 900, np.nan, "holds nan at data row 901"),       # inside the run: finite values follow
+    ("tangential_force", 1, np.nan, "holds nan at data row 2"),
+])
+def test_a_run_with_a_non_finite_sample_is_refused_never_passed(capsys, runs, tmp_path, column, row, value, words):
+    """A broken run is refused in one line naming the file, the column and the first row (it passed before: the
+    sample was left out silently); nothing is written."""
+    table = np.genfromtxt(runs / "run.csv", delimiter=",", names=True)
+    columns = {name: table[name].copy() for name in COLUMNS}
+    columns[column][row] = value
+    broken = write_csv(tmp_path / "broken.csv", columns)
+    status, _, err = validate_cli(capsys, broken, "--scenario", "A", "--alpha", "20", "--out", tmp_path / "o")
+    assert status == 2
+    assert_one_error_line(err, f"broken.csv: column {column!r} {words}")
+    assert not (tmp_path / "o").exists() or not any((tmp_path / "o").iterdir())
+
+
+def test_nan_after_the_run_and_an_undefined_share_out_of_contact_are_fine(paper, tmp_path):
+    """What a simulator naturally writes: nan after its run ends, and a sliding share of nan where no spring is in
+    contact (the package's own output has both) validates."""
+    run = discrete_run(paper)
+    sliding = run["sliding_fraction"].values
+    assert np.isnan(sliding[0]) and np.isnan(run["normal_force"].values[-1])
+    report = me.validate(run, paper, "A", ALPHA)
+    assert report.attrs["verdict"] == "pass"
+    inside = run.copy(deep=True)
+    inside["sliding_fraction"].values[500] = np.nan  # in contact: refused
+    with pytest.raises(ValueError, match="'sliding_fraction' holds nan at data row 501"):
+        me.validate(inside, paper, "A", ALPHA)
