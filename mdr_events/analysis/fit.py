@@ -499,7 +499,8 @@ def _notes(names: Sequence[str], quantities: Sequence[str], verdicts, correlatio
     for i in range(len(names)):
         for j in range(i + 1, len(names)):
             if abs(correlation[i, j]) > STRONG_CORRELATION:
-                notes.append(f"{names[i]} and {names[j]} are correlated at {correlation[i, j]:+.4f}: the data fix "
+                # (the value is the variable correlation: words with its digits would differ between CPUs)
+                notes.append(f"{names[i]} and {names[j]} are correlated beyond ±{STRONG_CORRELATION:g}: the data fix "
                              "a combination of them rather than each")
     for name, verdict in zip(names, verdicts):
         if verdict is Identifiability.AT_BOUND:

@@ -1,9 +1,13 @@
 """How a fit's results are determined, for comparing a fit computed elsewhere (:mod:`mdr_events.io.agreement`).
 
-``least_squares`` stops where the cost ``F = χ²/2`` changes by less than ``ftol F`` (the dataset's attribute
-``optimizer_tolerance``): at a quadratic minimum with the weighted Jacobian ``J`` the estimate is then determined to
-``δθ`` with ``δθᵀ JᵀJ δθ = 2 ftol F``, i.e. to ``sqrt(ftol χ²/s)`` standard errors (``s`` the variance scale: 1 with the
-noise given, the reduced χ² where it is estimated). The Jacobian is a forward difference of curves known to the
+``least_squares`` stops on the first of three criteria, each with the tolerance ``tol`` (the dataset's attribute
+``optimizer_tolerance``), and which one fires is itself a matter of rounding (this machine stops the fit of
+results/ on ``xtol``, the one that wrote it on ``ftol``). So the estimate is known to the largest of their bounds. With
+the cost ``F = χ²/2`` and the weighted Jacobian ``J`` (scaled parameters ``θ``): ``ftol`` leaves ``F`` within ``tol F``
+of its minimum, so ``δθᵀ JᵀJ δθ <= 2 tol F``: ``sqrt(tol χ²/s)`` standard errors (``s`` the variance scale: 1 with the
+noise given, the reduced χ² where it is estimated); ``xtol`` a step below ``tol (tol + |θ|)``, about 1e-11 in ``θ``,
+and ``gtol`` a gradient below ``tol``, ``tol σ²/s`` in ``θ``: both far below the first, which is the bound. A fit that
+did not converge (``optimizer_converged = 0``) has no such bound: it cannot be compared. The Jacobian is a forward difference of curves known to the
 continuum's ``rtol`` with the step ``h`` (``jacobian_step``): each column to ``2 rtol/h`` of its size, which moves the
 stationary point of Gauss–Newton by that share of a standard error (its error is not correlated with the noise) and
 the singular values by that share of the largest (Weyl), so that the standard errors, the correlations and the
@@ -35,17 +39,16 @@ from dataclasses import dataclass
 import numpy as np
 import xarray as xr
 
-from mdr_events.io.agreement import Accuracy, Integrated, RoundOff, accuracy_of, register_accuracy
+from mdr_events.io.agreement import (Accuracy, Integrated, RoundOff, accuracy_of, attribute_of, register_accuracy,
+                                     values_of)
 
 __all__ = ["FitEstimate", "FitInterval", "FitSpread", "FitCurve", "FitCost", "FitNoise", "FittedParameter",
-           "estimate_share",
+           "estimate_share", "jacobian_share",
            "spread_share", "register_fit_accuracy"]
 
 
 def _attribute(dataset: xr.Dataset, name: str) -> float:
-    if name not in dataset.attrs:
-        raise ValueError(f"the fit's accuracy needs its attribute {name!r}, which the dataset lacks")
-    return float(dataset.attrs[name])
+    return attribute_of(dataset, name, "the fit's accuracy")
 
 
 def jacobian_share(dataset: xr.Dataset) -> float:
@@ -58,7 +61,10 @@ def _quantities(dataset: xr.Dataset) -> list[str]:
 
 
 def estimate_share(dataset: xr.Dataset) -> float:
-    """``c = sqrt(ftol χ²/s) + 2 rtol/h``: the share of a standard error to which the estimates are determined."""
+    """``c = sqrt(ftol χ²/s) + 2 rtol/h``: the share of a standard error to which the estimates are determined
+    (``inf`` if the optimizer did not converge)."""
+    if not int(dataset.attrs.get("optimizer_converged", 0)):
+        return math.inf
     free = dataset.sizes["parameter"]
     compared = sum(int(np.count_nonzero(np.isfinite(dataset[f"residual_{q}"].values))) for q in _quantities(dataset))
     dof = max(compared - free, 1)
@@ -74,10 +80,6 @@ def spread_share(dataset: xr.Dataset) -> float:
     return jacobian_share(dataset) * (1.0 + float(dataset["condition_number"]))
 
 
-def _values(dataset: xr.Dataset, name: str) -> np.ndarray:
-    return np.asarray(dataset[name].values, dtype=float)
-
-
 @dataclass(frozen=True)
 class FitEstimate(Accuracy):
     """An estimate (or a function of the estimates, e.g. E*): ``c`` of its ``standard_error`` variable."""
@@ -85,7 +87,7 @@ class FitEstimate(Accuracy):
     standard_error: str = "standard_error"
 
     def tolerance(self, dataset, name):
-        return estimate_share(dataset) * np.abs(_values(dataset, self.standard_error)) + \
+        return estimate_share(dataset) * np.abs(values_of(dataset, self.standard_error)) + \
             RoundOff().tolerance(dataset, name)
 
     def describe(self):
@@ -97,7 +99,7 @@ class FitInterval(Accuracy):
     """An end of an interval, ``estimate ± half``: the estimate's tolerance plus the half-width's share."""
 
     def tolerance(self, dataset, name):
-        half = np.abs(_values(dataset, name) - _values(dataset, "estimate"))
+        half = np.abs(values_of(dataset, name) - values_of(dataset, "estimate"))
         with np.errstate(invalid="ignore"):
             return FitEstimate().tolerance(dataset, "estimate") + spread_share(dataset) * np.nan_to_num(half)
 
@@ -114,7 +116,7 @@ class FitSpread(Accuracy):
 
     def tolerance(self, dataset, name):
         share = spread_share(dataset)
-        return share * np.abs(_values(dataset, name)) if self.relative else np.asarray(2.0 * share)
+        return share * np.abs(values_of(dataset, name)) if self.relative else np.asarray(2.0 * share)
 
     def describe(self):
         return "from the forward-difference Jacobian: 2 rtol/h (1 + κ)" + ("" if self.relative else ", absolute")
@@ -123,7 +125,7 @@ class FitSpread(Accuracy):
 def _curve_share(dataset: xr.Dataset, quantity: str) -> float:
     """The continuum's accuracy of a fitted curve in noise standard deviations, ``m = rtol max|F| / σ``."""
     noise = float(dataset["noise"].sel(quantity=quantity))
-    largest = float(np.nanmax(np.abs(_values(dataset, f"fitted_{quantity}")), initial=0.0))
+    largest = float(np.nanmax(np.abs(values_of(dataset, f"fitted_{quantity}")), initial=0.0))
     return _attribute(dataset, "continuum_rtol") * largest / noise if noise > 0 else math.inf
 
 
@@ -158,7 +160,7 @@ class FitCost(Accuracy):
         if not self.per_quantity:
             reduced = float(dataset["reduced_chi_square"])
             return np.asarray(reduced * ftol + 2.0 * float(np.max(shares)) * math.sqrt(reduced) + c * c * free)
-        rms = np.abs(_values(dataset, name))
+        rms = np.abs(values_of(dataset, name))
         with np.errstate(divide="ignore"):
             return shares + c * c * free / (2.0 * rms) + rms * ftol / 2.0
 
@@ -211,8 +213,17 @@ class FittedParameter(Accuracy):
 
 
 def register_fit_accuracy(content: str, quantities: tuple[str, ...], parameters: tuple[str, ...]) -> None:
-    """Declare how each variable and fitted attribute of a fit (``content``) is computed; ``quantities`` the curves
-    a fit may hold, ``parameters`` the model's parameters (``param_<name>`` attributes)."""
+    """Declare how each variable and fitted attribute of a fit is computed (:func:`mdr_events.io.agreement.register_accuracy`).
+
+    Parameters
+    ----------
+    content : str
+        A fit's ``content`` attribute.
+    quantities : tuple of str
+        The curves a fit may hold (``measured_<q>``, ``fitted_<q>``, ``residual_<q>``).
+    parameters : tuple of str
+        The model's parameters (the ``param_<name>`` attributes).
+    """
     curves = {f"{kind}_{q}": FitCurve(q) for q in quantities for kind in ("fitted", "residual")}
     # measured curves as the continuum's (the synthetic measurements of results/ are its curves plus seeded noise;
     # a measurement read from a file is the same everywhere, and changes of it beyond that are still seen)

@@ -39,6 +39,7 @@ from mdr_events.app.report_data import (FIT_DEMO_ANGLE, FIT_DEMO_NOISE, FIT_DEMO
 from mdr_events.app.result_files import (FileOutcome, FileStatus, describe_outcomes, write_dataset, write_figure,
                                          write_phase_diagram, write_simulation, write_text)
 from mdr_events.io.agreement import rounded_text_differences
+from mdr_events.models.continuum import Tolerances
 from mdr_events.io.datasets import DOI
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 from mdr_events.profiles import FlatPunch
@@ -57,6 +58,9 @@ __all__ = ["reproduce", "report_text", "compute", "Reproduction", "PAPER_CRITICA
 #: Relative differences below this are round-off, whose digits differ between machines: the report prints
 #: "< 1e-12" for them, so that it stays the same text everywhere.
 REPORT_ROUNDOFF = 1e-12
+#: The relative accuracy of what the continuum integrates (its ``rtol``, :class:`mdr_events.io.agreement.Integrated`):
+#: a difference from it below this is printed as "< 1e-10" (the energy of a fretting loop, the flat punch's F_x).
+INTEGRATED_ACCURACY = Tolerances().rtol
 #: Packages whose versions ``results/README.md`` records (the lock file pins them, with the rest).
 RECORDED_PACKAGES = ("numpy", "scipy", "sympy", "matplotlib", "xarray", "pandas")
 #: The stem of the fretting study's files in ``results/``.
@@ -80,10 +84,11 @@ def _mm(value: float, digits: int = 4) -> str:
     return "—" if not math.isfinite(value) else f"{value * 1e3:.{digits}f}"
 
 
-def relative_difference_text(value: float) -> str:
-    """A relative difference as the report prints it: ``< 1e-12`` below :data:`REPORT_ROUNDOFF` (round-off, whose
-    digits differ between machines), else two digits (``2.5e-09``)."""
-    return f"< {REPORT_ROUNDOFF:g}" if abs(value) < REPORT_ROUNDOFF else f"{value:.1e}"
+def relative_difference_text(value: float, accuracy: float = REPORT_ROUNDOFF) -> str:
+    """A relative difference as the report prints it: ``< accuracy`` below the accuracy of what it compares (default
+    :data:`REPORT_ROUNDOFF`, round-off; :data:`INTEGRATED_ACCURACY` for a value integrated by the continuum), whose
+    digits differ between machines, else two digits (``2.5e-09``)."""
+    return f"< {accuracy:g}" if abs(value) < accuracy else f"{value:.1e}"
 
 
 # ----------------------------------------------------------------------------
@@ -356,7 +361,8 @@ def fretting_section(study: FrettingStudy) -> list[str]:
     for row in rows:
         lines.append(f"| {row.case} | {row.centre * 1e3:.4f} mm | {row.loop_start:.1f} s – {row.loop_end:.1f} s "
                      f"| {row.closed_form * 1e3:.6f} mJ | {row.continuum * 1e3:.6f} mJ "
-                     f"| {relative_difference_text(row.continuum_difference)} | {row.discrete * 1e3:.6f} mJ "
+                     f"| {relative_difference_text(row.continuum_difference, INTEGRATED_ACCURACY)} | "
+                     f"{row.discrete * 1e3:.6f} mJ "
                      f"| {row.discrete_difference:+.1e} |")
     return lines
 
@@ -367,10 +373,10 @@ FIT_DIGITS = 5
 
 
 def _estimated(value: float) -> str:
-    """A fitted value to :data:`FIT_DIGITS` significant digits, written with a decimal point or an exponent, so
-    that it reads as a rounded value (compared within one unit of its last digit), not as a count."""
-    text = f"{value:.{FIT_DIGITS}g}"
-    return text if "." in text or "e" in text else f"{value:.1f}"
+    """A fitted value to :data:`FIT_DIGITS` significant digits, trailing zeros kept, written with a fraction or an
+    exponent, so that it reads as a rounded value (compared within one unit of its last digit), not as a count."""
+    text = f"{value:#.{FIT_DIGITS}g}"
+    return f"{value:.{FIT_DIGITS - 1}e}" if text.endswith(".") else text
 
 
 def fit_section(demo: FitDemonstration) -> list[str]:
@@ -406,13 +412,13 @@ def universal_section(dataset) -> list[str]:
              "them (and the path's angle) alone; a test checks it with two parameter sets of equal groups. "
              "`universal_map.{nc,png}`: the critical angle of scenario A over (S, Γ0) and the angle of scenario B "
              f"above which the contact comes apart before sliding over (S, Γ1) at Γ0 = "
-             f"{dataset.attrs['adhesion_in_of_B']:.4g}, {dataset.sizes['slip']} × {dataset.sizes['adhesion_in']} "
+             f"{dataset.attrs['adhesion_in_of_B']:#.4g}, {dataset.sizes['slip']} × {dataset.sizes['adhesion_in']} "
              "values each, swept with `mdr_events.sweep`.", "",
              "| set | S | Γ0 | Γ1 | α_c, scenario A | angle, scenario B |", "|---|---:|---:|---:|---:|---:|"]
     for label, radius in RADII.items():
         params = Parameters.paper(R=radius)
         groups = dimensionless_groups(params)
-        lines.append(f"| paper, {label} | {groups.slip:.4g} | {groups.adhesion_in:.4g} | {groups.adhesion_out:.4g} | "
+        lines.append(f"| paper, {label} | {groups.slip:#.4g} | {groups.adhesion_in:#.4g} | {groups.adhesion_out:#.4g} | "
                      f"{critical_angle(params, 'A'):.2f}° | {critical_angle(params, 'B'):.2f}° |")
     return lines + [""]
 
@@ -443,17 +449,18 @@ def profiles_section(rows: list[ProfileRow]) -> list[str]:
         if isinstance(row.profile, FlatPunch):
             shape = f"radius {row.profile.radius * 1e3:g} mm | —"
         else:
-            shape = f"{row.profile.c:.6g} | {row.profile.n:g}"
-        lines.append(f"| {row.name.replace('_', ' ')} | {shape} | {row.pull_off_closed_form:.9g} N | "
-                     f"{row.pull_off_continuum:.9g} N | {onset} | {found} | {row.tangential_force_max:.6g} N | "
+            shape = f"{row.profile.c:#.6g} | {row.profile.n:g}"
+        lines.append(f"| {row.name.replace('_', ' ')} | {shape} | {row.pull_off_closed_form:#.9g} N | "
+                     f"{row.pull_off_continuum:#.9g} N | {onset} | {found} | {row.tangential_force_max:#.6g} N | "
                      f"{_gap_text(row.discrete_difference)} |")
     return lines + [""]
 
 
 def _gap_text(value: float) -> str:
-    """A discrete model's gap as the tables print it: three digits, or ``< 1e-12`` at round-off (the punch's springs
-    are the continuum: their digits there differ between machines)."""
-    return f"< {REPORT_ROUNDOFF:g}" if abs(value) < REPORT_ROUNDOFF else f"{value:.2e}"
+    """A discrete model's gap to the continuum's F_x as the tables print it: three digits, or ``< 1e-10`` below the
+    accuracy of the continuum's F_x (the punch's springs are the continuum: their digits there differ between
+    machines)."""
+    return f"< {INTEGRATED_ACCURACY:g}" if abs(value) < INTEGRATED_ACCURACY else f"{value:.2e}"
 
 
 def mindlin_section(rows: list[MindlinRow]) -> list[str]:

@@ -48,7 +48,8 @@ import xarray as xr
 
 __all__ = ["Accuracy", "RoundOff", "RootFound", "Integrated", "Quotient", "ExtremumTime", "ROUND_OFF_ULPS",
            "ROUND_OFF", "register_accuracy", "accuracy_of", "attribute_accuracy", "tolerance_of",
-           "result_differences", "assert_results_agree", "rounded_text_differences", "Unit"]
+           "result_differences", "assert_results_agree", "rounded_text_differences", "Unit", "values_of",
+           "attribute_of", "force_sensitivity", "SENSITIVITIES"]
 
 #: Units of round-off of a closed form or a sum, of the largest magnitude of its array. NumPy's SIMD paths of
 #: the transcendental functions are accurate to 4 ulp on every CPU (its documented bound); a closed form chains up
@@ -58,7 +59,7 @@ ROUND_OFF_ULPS = 64
 ROUND_OFF = ROUND_OFF_ULPS * float(np.finfo(float).eps)
 
 
-def _values(dataset: xr.Dataset, name: str) -> np.ndarray:
+def values_of(dataset: xr.Dataset, name: str) -> np.ndarray:
     """A variable's values as floats, or a float attribute as a 0-d array."""
     if name in dataset.variables:
         return np.asarray(dataset[name].values, dtype=float)
@@ -90,7 +91,7 @@ def _time_conditioning(dataset: xr.Dataset, name: str) -> np.ndarray | float:
 def _scale(dataset: xr.Dataset, name: str, scale_of: str | None) -> float:
     """The largest finite magnitude of ``scale_of`` (default: of ``name`` itself): what a relative accuracy is of.
     An extremum is as accurate as the quantity it is the extremum of, so its scale is that quantity's."""
-    return _largest(_values(dataset, scale_of or name))
+    return _largest(values_of(dataset, scale_of or name))
 
 
 class Accuracy(abc.ABC):
@@ -119,10 +120,35 @@ class RoundOff(Accuracy):
         return f"round-off, {ROUND_OFF_ULPS} ulp of the largest magnitude"
 
 
-def _attribute(dataset: xr.Dataset, attribute: str, name: str) -> float:
+def attribute_of(dataset: xr.Dataset, attribute: str, name: str) -> float:
+    """The float attribute ``attribute`` a tolerance of ``name`` is computed from; ``ValueError`` naming both if the
+    dataset lacks it."""
     if attribute not in dataset.attrs:
         raise ValueError(f"{name}: its accuracy is the dataset's attribute {attribute!r}, which it lacks")
     return float(dataset.attrs[attribute])
+
+
+def force_sensitivity(dataset: xr.Dataset) -> float:
+    """``d ln F_N / d ln a`` bounds of the indenter a dataset names: ``n + 1`` for a power law ``c rⁿ`` (its attribute
+    ``profile_n``; 3 for the paraboloid, which has none), 1 for the flat punch (``F_N = 2 E* a d``, its attribute
+    ``profile_radius``), and for a table (``profile_table_r``, ``profile_table_f``) one more than its largest local
+    exponent ``r f' / f`` between its points."""
+    if "profile_n" in dataset.attrs:
+        return float(dataset.attrs["profile_n"]) + 1.0
+    if "profile_radius" in dataset.attrs:
+        return 1.0
+    if "profile_table_r" in dataset.attrs:
+        r, f = (np.array([float(v) for v in str(dataset.attrs[key]).split(",")])
+                for key in ("profile_table_r", "profile_table_f"))
+        middle, mean = 0.5 * (r[1:] + r[:-1]), 0.5 * (f[1:] + f[:-1])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            exponents = np.where(mean > 0, middle * np.diff(f) / np.diff(r) / mean, 0.0)
+        return float(np.max(exponents[np.isfinite(exponents)], initial=1.0)) + 1.0
+    return 3.0
+
+
+#: Sensitivities to the root read off a dataset, by name (:class:`RootFound`).
+SENSITIVITIES = {"normal_force": force_sensitivity}
 
 
 @dataclass(frozen=True)
@@ -133,18 +159,28 @@ class _RelativeAccuracy(Accuracy):
     attribute: str
     scale_of: str | None = None
 
+    def share(self, dataset: xr.Dataset, name: str) -> float:
+        """The relative accuracy: the attribute's, plus round-off."""
+        return attribute_of(dataset, self.attribute, name) + ROUND_OFF
+
     def tolerance(self, dataset, name):
-        share = _attribute(dataset, self.attribute, name) + ROUND_OFF
-        return share * _scale(dataset, name, self.scale_of) + _time_conditioning(dataset, name)
+        return self.share(dataset, name) * _scale(dataset, name, self.scale_of) + _time_conditioning(dataset, name)
 
 
 @dataclass(frozen=True)
 class RootFound(_RelativeAccuracy):
     """A closed form of a root found to the relative accuracy in the dataset's ``attribute`` (e.g. the contact
-    radius to ``radius_rtol``): that accuracy plus round-off, of the array's largest magnitude (or of
-    ``scale_of``'s)."""
+    radius to ``radius_rtol``): that accuracy times the quantity's ``sensitivity`` to the root (``d ln Q / d ln a``:
+    1 for the radius, 2 for the area; :func:`force_sensitivity` for the normal force), plus round-off, of the
+    array's largest magnitude (or of ``scale_of``'s)."""
 
     attribute: str = "radius_rtol"
+    sensitivity: float | str = 1.0
+
+    def share(self, dataset, name):
+        sensitivity = self.sensitivity if isinstance(self.sensitivity, float) else SENSITIVITIES[self.sensitivity](
+            dataset)
+        return sensitivity * attribute_of(dataset, self.attribute, name) + ROUND_OFF
 
     def describe(self):
         return f"a root found to the relative accuracy {self.attribute}, of the largest magnitude"
@@ -171,7 +207,7 @@ class Quotient(Accuracy):
     denominator: str
 
     def tolerance(self, dataset, name):
-        quotient, denominator = _values(dataset, name), np.abs(_values(dataset, self.denominator))
+        quotient, denominator = values_of(dataset, name), np.abs(values_of(dataset, self.denominator))
         # (the numerator's and denominator's tolerances carry the conditioning along the path)
         with np.errstate(divide="ignore", invalid="ignore"):
             return (tolerance_of(dataset, self.numerator) + np.abs(quotient)
@@ -181,13 +217,38 @@ class Quotient(Accuracy):
         return f"the quotient {self.numerator} / {self.denominator}"
 
 
+def _time_of_extremum_tolerance(t: np.ndarray, f: np.ndarray, at: int, value_tolerance: float) -> float:
+    """How far the time of an extremum moves when its value moves by ``value_tolerance``, from the samples ``f`` at
+    times ``t`` around the sample ``at`` nearest to it (``nan`` where the run has ended); 0 where they cannot tell.
+
+    At the first or last sample of the run (an extremum at its start or end) or beside a plateau the time moves at
+    first order, ``tol / |F'|`` with the slope on the side that has one; inside the run the extremum is flat and its
+    time moves by ``sqrt(2 tol / |F''|)``, with ``F''`` the curvature of the parabola through three samples (large at
+    a kink, where the time is sharp)."""
+    finite = np.isfinite(f)
+    lo, hi = at, at
+    while lo > 0 and finite[lo - 1] and lo > at - 1:
+        lo -= 1
+    while hi < f.size - 1 and finite[hi + 1] and hi < at + 1:
+        hi += 1
+    slopes = [abs((f[k + 1] - f[k]) / (t[k + 1] - t[k])) for k in range(lo, hi)]
+    if hi - lo == 2:  # inside the run: three samples
+        c = t[lo:hi + 1], f[lo:hi + 1]
+        curvature = 2.0 * (c[1][0] / ((c[0][0] - c[0][1]) * (c[0][0] - c[0][2]))
+                           + c[1][1] / ((c[0][1] - c[0][0]) * (c[0][1] - c[0][2]))
+                           + c[1][2] / ((c[0][2] - c[0][0]) * (c[0][2] - c[0][1])))
+        if curvature != 0.0 and all(slope > 0.0 for slope in slopes):
+            return math.sqrt(2.0 * value_tolerance / abs(curvature))
+    moving = [slope for slope in slopes if slope > 0.0]
+    return value_tolerance / max(moving) if moving else 0.0
+
+
 @dataclass(frozen=True)
 class ExtremumTime(Accuracy):
     """The time of an extremum ``value`` of the quantity sampled in ``samples`` (along the last dimension, the
-    coordinate ``time``). A maximum is flat: where the value is known to ``tol(F)`` its time is known only to
-    ``δt = sqrt(2 tol(F) / |F''|)``, with ``F''`` the second difference of the samples around it (large at a kink,
-    where the time is sharp). Plus the search's own tolerance, ``search_share`` of the run's duration; where the
-    samples around the time are not all finite (the run's start or end) that alone."""
+    coordinate ``time``): how far it moves when its value moves by its tolerance (:func:`_time_of_extremum_tolerance`:
+    ``sqrt(2 tol(F) / |F''|)`` at a flat extremum inside the run, ``tol(F) / |F'|`` at the run's start or end and
+    beside a plateau), plus the search's own tolerance, ``search_share`` of the run's duration."""
 
     value: str
     samples: str
@@ -195,27 +256,19 @@ class ExtremumTime(Accuracy):
 
     def tolerance(self, dataset, name):
         times = np.asarray(dataset["time"].values, dtype=float)
-        found = _values(dataset, name)
+        found = values_of(dataset, name)
         samples = np.asarray(dataset[self.samples].values, dtype=float).reshape(found.size, times.size)
         value_tolerance = np.broadcast_to(tolerance_of(dataset, self.value), found.shape).ravel()
         search = self.search_share * float(times[-1] - times[0])
         out = np.full(found.size, search)
         for case, time in enumerate(found.ravel()):
-            if not math.isfinite(time) or times.size < 3:
-                continue
-            i = int(np.clip(np.argmin(np.abs(times - time)), 1, times.size - 2))
-            t, f = times[i - 1:i + 2], samples[case, i - 1:i + 2]
-            if not np.all(np.isfinite(f)):
-                continue
-            # the second derivative of the parabola through three samples (any spacing)
-            curvature = 2.0 * (f[0] / ((t[0] - t[1]) * (t[0] - t[2])) + f[1] / ((t[1] - t[0]) * (t[1] - t[2]))
-                               + f[2] / ((t[2] - t[0]) * (t[2] - t[1])))
-            if curvature != 0.0:
-                out[case] += math.sqrt(2.0 * float(value_tolerance[case]) / abs(curvature))
+            if math.isfinite(time) and times.size >= 2:
+                at = int(np.argmin(np.abs(times - time)))
+                out[case] += _time_of_extremum_tolerance(times, samples[case], at, float(value_tolerance[case]))
         return out.reshape(found.shape)
 
     def describe(self):
-        return f"the time of {self.value}: sqrt(2 tol / |F''|) from the curvature of {self.samples} there"
+        return f"the time of {self.value}: sqrt(2 tol / |F''|) or tol / |F'| from the samples of {self.samples} there"
 
 
 #: What each kind of result declares: ``content`` -> condition -> ({variable: Accuracy}, {attribute: Accuracy}).
@@ -227,9 +280,20 @@ def register_accuracy(content: str, variables: Mapping[str, Accuracy], when: tup
                       attributes: Mapping[str, Accuracy] | None = None) -> None:
     """Declare how each variable (and float attribute) of results of kind ``content`` is computed.
 
-    Called beside the definition of the variables, when their module is imported; ``when`` as for
-    :func:`mdr_events.io.datasets.register_schema` (a condition's entries replace the unconditional ones).
-    Registering the same ``content`` and ``when`` again replaces them.
+    Called beside the definition of the variables, when their module is imported. Registering the same ``content``
+    and ``when`` again replaces them.
+
+    Parameters
+    ----------
+    content : str
+        The results' ``content`` attribute.
+    variables : mapping of str to Accuracy
+        Each float variable (coordinates included) and how it is computed.
+    when : (str, object), optional
+        As for :func:`mdr_events.io.datasets.register_schema`: only for results whose attribute has that value
+        (its entries replace the unconditional ones).
+    attributes : mapping of str to Accuracy, optional
+        Float attributes computed otherwise than to round-off (e.g. a fit's ``param_<name>``).
     """
     _ACCURACIES.setdefault(content, {})[when] = (dict(variables), dict(attributes or {}))
 
@@ -251,8 +315,10 @@ def accuracy_of(dataset: xr.Dataset, name: str) -> Accuracy:
     """
     declared = _declared(dataset, 0)
     if name not in declared:
-        raise ValueError(f"variable {name!r} of content={dataset.attrs.get('content')!r} has no declared accuracy; "
-                         "allowed: variables declared with mdr_events.io.agreement.register_accuracy")
+        study = f" (study={dataset.attrs['study']!r}: its module declares them, e.g. mdr_events.app.report_data for " \
+            "the studies of results/; import it first)" if "study" in dataset.attrs else ""
+        raise ValueError(f"variable {name!r} of content={dataset.attrs.get('content')!r} has no declared accuracy"
+                         f"{study}; allowed: variables declared with mdr_events.io.agreement.register_accuracy")
     return declared[name]
 
 
@@ -280,7 +346,11 @@ def _float_differences(name: str, actual: np.ndarray, expected: np.ndarray, tole
     if np.any(actual[infinite] != expected[infinite]):
         return [f"{name}: infinities of other sign"]
     finite = np.isfinite(expected)
-    tolerance = np.broadcast_to(np.nan_to_num(tolerance, nan=0.0), expected.shape)  # unknown: exact
+    tolerance = np.broadcast_to(tolerance, expected.shape)
+    unknown = finite & ~np.isfinite(tolerance)
+    if np.any(unknown):  # an unseen parameter's infinite standard error: nothing to compare within, never "accept"
+        at = tuple(int(i) for i in np.argwhere(unknown)[0])
+        return [f"{name}: no finite tolerance at {at} ({accuracy.describe()}), so it cannot be compared"]
     with np.errstate(invalid="ignore"):  # inf - inf where both are infinite (compared above)
         excess = np.where(finite, np.abs(actual - expected) - tolerance, -np.inf)
     if excess.size and np.max(excess) > 0:
@@ -299,11 +369,12 @@ def _attribute_differences(actual: xr.Dataset, expected: xr.Dataset) -> list[str
         if floats and math.isfinite(float(theirs)):
             try:
                 allowed = float(attribute_accuracy(expected, key).tolerance(expected, key))
-            except (ValueError, KeyError):  # what its tolerance needs is missing: compared exactly
-                allowed = 0.0
-            if abs(float(mine) - float(theirs)) > allowed:
+            except (ValueError, KeyError) as error:  # what its tolerance needs is missing
+                differing.append(f"{key} (no tolerance can be derived: {error})")
+                continue
+            if not abs(float(mine) - float(theirs)) <= allowed:
                 differing.append(key)
-        elif not (np.array_equal(np.asarray(mine), np.asarray(theirs)) if floats else mine == theirs):
+        elif not (np.array_equal(np.asarray(mine), np.asarray(theirs), equal_nan=True) if floats else mine == theirs):
             differing.append(key)
     return [f"attributes {differing} differ"] if differing else []
 
@@ -315,7 +386,25 @@ def result_differences(actual: xr.Dataset, expected: xr.Dataset) -> list[str]:
     string and integer attributes, and arrays of integers and strings (e.g. event kinds). Floating-point arrays
     agree where their ``nan`` and ``inf`` match exactly and their finite values lie within the tolerance of their
     declared :class:`Accuracy`, computed from ``expected``; float attributes within theirs
-    (:func:`attribute_accuracy`).
+    (:func:`attribute_accuracy`). A finite value whose tolerance is not finite (an unseen parameter's estimate)
+    cannot be compared and is a difference.
+
+    Parameters
+    ----------
+    actual : xarray.Dataset
+        A result computed here.
+    expected : xarray.Dataset
+        The committed result of the same kind (its ``content`` selects the declared accuracies).
+
+    Returns
+    -------
+    list of str
+        One line per difference, naming the variable, where, by how much and what was allowed.
+
+    Raises
+    ------
+    ValueError
+        If a float variable of ``expected`` has no declared accuracy (:func:`accuracy_of`).
     """
     found: list[str] = []
     if dict(actual.sizes) != dict(expected.sizes):
@@ -357,16 +446,18 @@ def assert_results_agree(actual: xr.Dataset, expected: xr.Dataset) -> None:
 #: 1.0000000000331966e-4) carries their round-off.
 _DECIMAL_SLACK = 1e-9
 #: A number in rounded text: digits with an optional fraction and exponent.
-_NUMBER = re.compile(r"(?<![\w.])[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?(?![\w.])")
+_NUMBER = re.compile(r"(?<![\w.])[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?(?!\w|\.\d)")
 
 
 @dataclass(frozen=True)
 class Unit:
-    """A number as written: its value and one unit of its last written digit (``None`` for an integer, which
-    is compared exactly: a count or a label)."""
+    """A number as written: its value, one unit of its last written digit (``None`` for an integer, which is
+    compared exactly: a count or a label), and its form (decimals written, exponent or ``None``)."""
 
     value: float
     last_digit: float | None
+    decimals: int = 0
+    exponent: int | None = None
 
     @classmethod
     def read(cls, text: str) -> "Unit":
@@ -374,13 +465,37 @@ class Unit:
         if "." not in mantissa and not exponent:
             return cls(float(text), None)
         decimals = len(mantissa.partition(".")[2])
-        return cls(float(text), 10.0 ** (int(exponent or 0) - decimals))
+        power = int(exponent) if exponent else None
+        return cls(float(text), 10.0 ** ((power or 0) - decimals), decimals, power)
+
+    def rounds_alike(self, other: "Unit") -> bool:
+        """Whether ``other`` is this number rounded alike (the same format; another CPU changes digits, not
+        formats) to within one unit of the last digit: the same decimals, both with an exponent or neither, the
+        exponents equal or one apart where the mantissa rounds over 10 (9.99e-05 and 1.00e-04)."""
+        if self.last_digit is None or other.last_digit is None:
+            return self.last_digit is other.last_digit and self.value == other.value
+        if self.decimals != other.decimals or (self.exponent is None) != (other.exponent is None):
+            return False
+        if self.exponent is not None and abs(self.exponent - other.exponent) > 1:
+            return False
+        return abs(self.value - other.value) <= max(self.last_digit, other.last_digit) * (1.0 + _DECIMAL_SLACK)
 
 
 def rounded_text_differences(actual: str, expected: str) -> list[str]:
-    """How two rounded texts differ beyond a rounding boundary ([] if not): the words between the numbers must be
-    the same; integers the same; a number with a decimal point or an exponent within one unit of the last digit
-    written (the larger of the two units)."""
+    """How two rounded texts differ beyond a rounding boundary ([] if not).
+
+    Parameters
+    ----------
+    actual, expected : str
+        Texts that round their numbers (``results/README.md`` computed here and committed).
+
+    Returns
+    -------
+    list of str
+        The words between the numbers must be the same (else one line quoting the first line that differs);
+        integers (counts, labels) the same; a number with a decimal point or an exponent written alike and within
+        one unit of the last digit written (:meth:`Unit.rounds_alike`): one line per number beyond that.
+    """
     words = _NUMBER.split(actual), _NUMBER.split(expected)
     if words[0] != words[1]:
         lines = [(a, b) for a, b in zip(actual.splitlines(), expected.splitlines()) if
@@ -389,11 +504,6 @@ def rounded_text_differences(actual: str, expected: str) -> list[str]:
         return [f"the words differ: {first[0]!r} instead of {first[1]!r}"]
     found = []
     for mine, theirs in zip(_NUMBER.findall(actual), _NUMBER.findall(expected)):
-        a, b = Unit.read(mine), Unit.read(theirs)
-        if a.last_digit is None or b.last_digit is None:
-            same = mine == theirs
-        else:
-            same = abs(a.value - b.value) <= max(a.last_digit, b.last_digit) * (1.0 + _DECIMAL_SLACK)
-        if not same:
+        if not Unit.read(mine).rounds_alike(Unit.read(theirs)):
             found.append(f"{mine} instead of {theirs}")
     return found

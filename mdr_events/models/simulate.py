@@ -110,13 +110,16 @@ MEANS = {"mean_pressure": Quotient("normal_force", "contact_area"),
          "mean_shear_stress": Quotient("tangential_force", "contact_area")}
 register_accuracy(SIMULATION_CONTENT, {**{name: RoundOff() for name in SIMULATION_VARIABLES}, **MEANS,
                                        "time": RoundOff(), ANGLE_DIMENSION: RoundOff(), "path_speed": RoundOff()})
+
+
 def _continuum_accuracy() -> dict:
     """How the continuum computes what differs from the discrete model: the path is a closed form of time; ``F_N``,
     ``a`` and ``A`` closed forms of the radius, a root found to ``radius_rtol``; ``F_x`` and the springs' slip
     integrated to ``rtol``, and so the events (crossings of integrated quantities); each extremum as accurate as
     its quantity, its time as the curvature there allows."""
     integrated = {name: Integrated() for name in EVENT_VARIABLES if name not in ("event_kind", "event_direction")}
-    declared = {"normal_force": RootFound(), "contact_radius": RootFound(), "contact_area": RootFound(),
+    declared = {"normal_force": RootFound(sensitivity="normal_force"), "contact_radius": RootFound(),
+                "contact_area": RootFound(sensitivity=2.0),
                 "tangential_force": Integrated(), "sliding_fraction": Integrated(), **integrated}
     for quantity in EXTREMA_QUANTITIES:
         for kind in EXTREMA_KINDS:

@@ -125,7 +125,7 @@ def test_readme_section_lists_both_cases(study):
         line, = (line for line in text.splitlines() if line.startswith(f"| {row.case} |"))
         cells = [cell.strip() for cell in line.strip("|").split("|")]
         assert cells[3] == cells[4] == f"{row.closed_form * 1e3:.6f} mJ"
-        assert cells[5] == "< 1e-12"
+        assert cells[5] == f"< {report.INTEGRATED_ACCURACY:g}"
         assert cells[6] == f"{row.discrete * 1e3:.6f} mJ"
     assert f"X = {FRETTING_AMPLITUDE_IN_CAPS:g}ū(a_max)" in text
     assert f"Δx = {DX * 1e6:g} µm, {STEPS} time steps" in text

@@ -22,7 +22,7 @@ from mdr_events.parameters import PRESETS
 
 RESULTS = Path(__file__).resolve().parents[2] / "results"
 #: Units in the last place each input is moved by (another CPU's rounding of a closed form is a few ulp).
-NUDGES = {"E": 3, "tau0": -2, "dgamma0": 2, "dgamma1": -3, "d_max": 1, "nu": -1}
+NUDGES = {"E": 3, "nu": -1, "R": 2, "tau0": -2, "dgamma0": 2, "dgamma1": -3, "d_max": 1, "v": -2}
 #: A real change: tau0 by this share of itself (the issue's example).
 REAL_CHANGE = 1e-6
 

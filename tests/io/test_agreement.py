@@ -119,6 +119,12 @@ def test_float_attributes_within_round_off_strings_and_integers_exactly():
     ("| Fig. 8 |", "| Fig. 9 |", False),
     ("| +0.071 µm |", "| +0.072 µm |", True),
     ("| 0.5 agree |", "| 0.5 disagree |", False),   # the words
+    ("reduced χ² 0.995.", "reduced χ² 0.994.", True),  # a number ending a sentence is a number
+    ("reduced χ² 0.995.", "reduced χ² 0.997.", False),
+    ("| 0.010000 |", "| 0.020000 |", False),       # trailing zeros kept (#g): their unit is the last zero's
+    ("| 41995.2 |", "| 4.1995e+04 |", False),      # another format is another text, not a rounding
+    ("| < 1e-10 |", "| < 1e-12 |", False),
+    ("| 0.9950 |", "| 0.995 |", False),
 ])
 def test_rounded_text(mine, theirs, agree):
     assert (rounded_text_differences(mine, theirs) == []) is agree
@@ -139,3 +145,53 @@ def test_the_fit_s_shares_follow_its_stopping_tolerance_and_jacobian():
     assert np.all(tolerance > 0) and np.all(tolerance < 1e-3 * fit["standard_error"].values)
     tau0 = list(fit["parameter"].values).index("tau0")
     assert tolerance[tau0] < 1e-6 * float(fit["estimate"].values[tau0])
+
+
+def test_an_infinite_tolerance_accepts_nothing():
+    """An unseen parameter's standard error is inf: its estimate cannot be compared, which is a difference, not a
+    pass; likewise any fit whose optimizer did not converge."""
+    fit = me.open_result(RESULTS / "fit_A20_R30.nc")
+    unseen = fit.copy(deep=True)
+    unseen["standard_error"].values[0] = np.inf
+    doubled = unseen.copy(deep=True)
+    doubled["estimate"].values[0] *= 2
+    assert any("no finite tolerance" in line for line in result_differences(doubled, unseen))
+    assert any("no finite tolerance" in line for line in result_differences(unseen, unseen))
+    stopped = fit.assign_attrs(optimizer_converged=0)
+    assert any(line.startswith("estimate:") for line in result_differences(stopped, stopped))
+
+
+def test_at_the_start_of_the_run_an_extremum_s_time_moves_at_first_order():
+    """A minimum at the first sample of a rising quantity: δt = tol / |F'| (not the square root of a curvature the
+    samples do not have); beside a plateau the same."""
+    ds = dataset()
+    ds["force"].values[0] = 2.0 * ds["time"].values  # rises linearly from 0 at t = 0: its minimum is at the start
+    ds["force_max"].values[0], ds["force_max_time"].values[0] = 0.0, 0.0
+    tolerance = ExtremumTime("force_max", "force", search_share=SEARCH_SHARE).tolerance(ds, "force_max_time")
+    value_tolerance = float(np.broadcast_to(tolerance_of(ds, "force_max"), (2,))[0])
+    assert tolerance[0] == pytest.approx(value_tolerance / 2.0 + SEARCH_SHARE * 10.0, rel=1e-9)
+    plateau = dataset()
+    plateau["force"].values[0] = np.minimum(plateau["time"].values, T0)  # rises, then holds from T0 on
+    plateau["force_max"].values[0] = T0
+    tolerance = ExtremumTime("force_max", "force", search_share=SEARCH_SHARE).tolerance(plateau, "force_max_time")
+    value_tolerance = float(np.broadcast_to(tolerance_of(plateau, "force_max"), (2,))[0])
+    assert tolerance[0] <= value_tolerance / 1.0 * 1.000001 + SEARCH_SHARE * 10.0
+
+
+def test_a_nan_attribute_agrees_with_itself():
+    ds = dataset(measured=float("nan"))
+    assert result_differences(ds, ds.copy()) == []
+    assert result_differences(ds.assign_attrs(measured=1.0), ds)
+
+
+def test_the_normal_force_is_as_sensitive_to_the_radius_as_its_indenter_makes_it():
+    """d ln F_N / d ln a: n + 1 for c rⁿ (3 for the paraboloid), 1 for the flat punch, and for a table one more than
+    its steepest local exponent (a table of r⁴ gives 5)."""
+    from mdr_events.io.agreement import force_sensitivity
+    assert force_sensitivity(xr.Dataset()) == 3.0
+    assert force_sensitivity(xr.Dataset(attrs={"profile_n": 4.0})) == 5.0
+    assert force_sensitivity(xr.Dataset(attrs={"profile_radius": 1e-3})) == 1.0
+    r = np.linspace(0.0, 1e-3, 41)
+    table = xr.Dataset(attrs={"profile_table_r": ", ".join(map(repr, r.tolist())),
+                              "profile_table_f": ", ".join(map(repr, (r**4).tolist()))})
+    assert 4.9 < force_sensitivity(table) <= 5.0 + 1e-9
