@@ -19,8 +19,9 @@ SHOWN_CHARACTERS = 80
 
 
 def shown(value: Any) -> str:
-    """``repr(value)``, cut to :data:`SHOWN_CHARACTERS` characters, for a message."""
-    text = repr(value)
+    """``repr(value)`` on one line (an array's rows joined by single spaces), cut to :data:`SHOWN_CHARACTERS`
+    characters, for a message."""
+    text = " ".join(repr(value).split())
     return text if len(text) <= SHOWN_CHARACTERS else text[: SHOWN_CHARACTERS - 3] + "..."
 
 

@@ -58,6 +58,7 @@ from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solv
 from mdr_events.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs
 from mdr_events.models.paths import Path
+from mdr_events.models.scales import check_representable
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 from mdr_events.validation import check_real, shown
 
@@ -367,6 +368,7 @@ def synthetic_measurement(params: Parameters, path, alpha: float | None = None, 
     (``None``: the paraboloid of ``params.R``)."""
     profile = check_simulated_profile(profile)
     friction = as_friction_law(friction)
+    check_representable(params, profile, friction)
     the_path = resolve_path(params, path, alpha, profile)
     times = np.asarray(times, dtype=float)
     curves = model_curves(params, the_path, times, tolerances, limits, tuple(quantities), profile, friction).values
@@ -743,12 +745,16 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
         Naming the argument: an empty or all-``nan`` measurement, a name not in :data:`FREE_NAMES`, bounds that
         exclude the start, a start of 0 for a log-scaled parameter, fewer samples than free parameters.
     """
+    if not isinstance(start, Parameters):
+        raise TypeError(f"start={shown(start)} ({type(start).__name__}) is not allowed; allowed: a mdr_events.Parameters "
+                        "(the fit's start, with the fixed parameters' values)")
     profile = check_simulated_profile(profile)
     friction = as_friction_law(friction)
+    check_representable(start, profile, friction)
     if profile is not None and "R" in free:
         raise ValueError(f"free={list(free)!r} frees R with profile={profile!r}; allowed: the names of "
                          f"{list(FREE_NAMES)} but R (the power law's shape is c and n, R belongs to the paraboloid)")
-    read = read_candidate(measured, names, units)
+    read = read_candidate(measured, names, units, limits)
     nominal = resolve_path(start, path, alpha, profile)
     measurement = _measurement(read, nominal, time_origin, noise)
     free_set = free_parameters(free, start, bounds, nominal.duration, max(nominal.max_depth, start.d_max), friction)

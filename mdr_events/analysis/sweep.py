@@ -81,6 +81,9 @@ QUANTITIES: dict[str, tuple[str, str]] = {
     "critical_angle_B": ("degree", "angle of scenario B above which the contact comes apart before sliding "
                                    "(eq. 21; closed form)"),
 }
+#: Bytes per value a sweep holds at once: its array, the dataset built from it and the store's chunk (three float64
+#: copies), rounded up.
+BYTES_PER_STORED_VALUE = 32
 #: Quantities of a run's history (``history_samples``), at times spread evenly over its path.
 HISTORY_QUANTITIES: dict[str, tuple[str, str]] = {
     "normal_force": ("N", "normal force"), "tangential_force": ("N", "tangential force"),
@@ -544,11 +547,14 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     spec = SweepSpec(base, scenario, alpha, method, the_grid.names, tolerances,
                      dx, n_steps, wanted, samples, limits, check_simulated_profile(profile), friction)
     _check_runs(spec, the_grid)
+    runs = len(the_grid.rows)
+    stored = runs * (len(wanted) + (0 if samples is None else len(HISTORY_QUANTITIES) * samples))
+    limits.check(f"the sweep of {runs} runs" + ("" if samples is None else f" with history_samples={samples}"),
+                 memory=BYTES_PER_STORED_VALUE * stored, **({} if samples is None else {"samples": runs * samples}))
     scheduler = default_scheduler() if scheduler is None else scheduler
     if scheduler not in ("local", "serial") and not (isinstance(scheduler, str) and "://" in scheduler):
         raise ValueError(f"scheduler={shown(scheduler)} is not allowed; allowed: 'local', 'serial' or a dask "
                          "scheduler's address such as 'tcp://host:8786'")
-    runs = len(the_grid.rows)
     values = np.full((runs, len(wanted)), np.nan)
     histories = None if samples is None else np.full((runs, len(HISTORY_QUANTITIES), samples), np.nan)
     errors = [""] * runs

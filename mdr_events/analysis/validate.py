@@ -44,6 +44,7 @@ import xarray as xr
 
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.io.candidates import Candidate, check_run_is_finite, read_candidate
+from mdr_events.models.scales import check_representable
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs
@@ -216,10 +217,11 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
         (``"pass"``: every quantity *compared* within ``tolerance``), and ``quantities_not_compared`` and
         ``unused_columns`` (columns not named as a quantity: name them with ``names=`` to check them).
     """
-    if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and tolerance > 0):
-        raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a number > 0")
+    if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and 0 < tolerance < math.inf):
+        raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a finite number > 0")
     profile = check_simulated_profile(profile)
     friction = as_friction_law(friction)
+    check_representable(params, profile, friction)
     if solution is not None and solution.model.profile != profile:
         raise ValueError(f"solution= was solved for profile={solution.model.profile!r}, not for profile={profile!r}; "
                          "allowed: a solution of this indenter")
@@ -227,7 +229,7 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
         raise ValueError(f"solution= was solved for friction={solution.model.friction!r}, not for friction={friction!r}; "
                          "allowed: a solution of this friction law")
     the_path = resolve_path(params, path, alpha, profile)
-    read = read_candidate(candidate, names, units)
+    read = read_candidate(candidate, names, units, limits)
     check_run_is_finite(read, _in_contact(read.quantities), names)
     times = times_from_contact(read, the_path, time_origin)
     solution = solve_path(params, the_path, tolerances, limits, profile, friction) if solution is None else solution

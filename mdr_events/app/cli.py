@@ -61,8 +61,11 @@ EXIT_STATUSES = {
     2: "bad input (an argument, a value, a study file, a file that cannot be read or written)",
     3: "the computation failed although the input was accepted (solver, memory, internal error)",
     130: "interrupted (Ctrl-C)",
+    141: "the reader of the output went away (a closed pipe: `mdr-events derive | head`), silently",
     143: "terminated (SIGTERM)",
 }
+#: The exit status when the output's reader has gone: as a process ended by SIGPIPE (128 + 13).
+EXIT_BROKEN_PIPE = 141
 #: The exit status of bad input and of a failed computation.
 EXIT_BAD_INPUT, EXIT_FAILED = 2, 3
 #: Errors that are bad input (exit 2); RuntimeError and MemoryError are a failed computation (exit 3).
@@ -112,7 +115,7 @@ def _progress(message: str) -> None:
 
 def _command_derive(args: argparse.Namespace) -> None:
     rels = symbolic.relations()
-    keys = [args.key] if args.key else list(rels)
+    keys = list(rels) if args.key is None else [args.key]
     for key in keys:
         rel = symbolic.relation(key)
         number = f" {rel.equation}" if rel.equation else ""
@@ -680,6 +683,15 @@ def _outcome(error: BaseException) -> tuple[str, int]:
             "the traceback, and please report it", EXIT_FAILED)
 
 
+def _silence_stdout() -> None:
+    """Point stdout at the null device, so that the interpreter's final flush does not raise again."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):  # no real file descriptor (captured in a test): nothing to flush
+        pass
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of ``mdr-events``; returns the exit status (:data:`EXIT_STATUSES`).
 
@@ -693,10 +705,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         args = build_parser().parse_args(argv)
         debug = args.debug
-        if getattr(args, "key", None):
-            symbolic.relation(args.key)
+        if getattr(args, "key", None) is not None:
+            symbolic.relation(args.key)  # an unknown (or empty) key is bad input before anything is printed
         matplotlib.use("Agg")  # the CLI writes figures to files only: no window, whatever the user's default
         status = args.run(args)
+    except BrokenPipeError:  # the reader has gone (`| head`): nothing more to say, and no one to say it to
+        _silence_stdout()
+        return EXIT_BROKEN_PIPE
     except (Exception, KeyboardInterrupt, _Terminated) as error:
         if debug and not isinstance(error, UsageError):
             raise

@@ -591,7 +591,6 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
             scenario = _study_path(study)
         tolerance_names = sorted({"rtol", "atol"} & set(settings))
         alpha = settings.pop("alpha", None)
-        progress(f"simulation: scenario {scenario if isinstance(scenario, str) else 'custom path'}, method {method}")
         try:
             if tolerance_names and method != "continuum":
                 raise ValueError(f"{', '.join(tolerance_names)} is not allowed with method={method!r}; "
@@ -602,6 +601,8 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
                                profile=study.profile, friction=study.friction, **settings)
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where}: [simulation] {error}") from None
+        # (said once it ran: a value found wrong prints its one line, not a progress line before it)
+        progress(f"simulation: scenario {scenario if isinstance(scenario, str) else 'custom path'}, method {method}")
         dataset.attrs.update(study.provenance)
         written += write_simulation(dataset, out, f"{study.name}_simulation")
     for scenario in study.tables.get("phase_diagram", {}).get("scenarios", []):

@@ -10,12 +10,14 @@ from __future__ import annotations
 import csv
 import math
 import os
+from array import array
 from pathlib import Path
 from typing import Mapping, NamedTuple
 
 import numpy as np
 import xarray as xr
 
+from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.profiles import TabulatedProfile
 
 __all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor", "check_run_is_finite",
@@ -60,28 +62,51 @@ def unit_factor(quantity: str, unit: str, source: str) -> float:
     return allowed[unit]
 
 
-def _read_csv(path: Path) -> dict[str, np.ndarray]:
+#: Bytes a CSV file's value takes while it is read and afterwards (its float64 in a column, the arrays the validation
+#: and the fit derive from it: about six copies), rounded up.
+BYTES_PER_CSV_VALUE = 64
+#: Bytes of a CSV file read at a time while its lines are counted.
+_COUNT_CHUNK = 1 << 20
+
+
+def _line_count(path: Path) -> int:
+    """The number of lines of a file (newlines, and a last line without one), counted in chunks of bytes."""
+    lines, last = 0, b"\n"
+    with open(path, "rb") as handle:
+        while chunk := handle.read(_COUNT_CHUNK):
+            lines += chunk.count(b"\n")
+            last = chunk[-1:]
+    return lines + (last != b"\n")
+
+
+def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS) -> dict[str, np.ndarray]:
+    """A CSV file's columns (a header row; ``#`` lines are comments; a UTF-8 byte-order mark is read, as
+    spreadsheets write it), each as float64; its rows are checked against ``limits`` before they are read."""
+    rows = max(_line_count(path) - 1, 0)
     try:
-        with open(path, newline="", encoding="utf-8") as handle:
-            rows = list(csv.reader(row for row in handle if not row.lstrip().startswith("#")))
+        with open(path, newline="", encoding="utf-8-sig") as handle:
+            reader = csv.reader(row for row in handle if not row.lstrip().startswith("#"))
+            header = [name.strip() for name in next(reader, [])]
+            if not header:
+                raise ValueError(f"{path}: the file is empty; allowed: a CSV file with a header row")
+            limits.check(f"reading {path} ({rows} rows of {len(header)} columns)", samples=rows,
+                         memory=BYTES_PER_CSV_VALUE * rows * len(header))
+            columns = {name: array("d") for name in header}
+            for number, row in enumerate(reader, start=2):
+                if len(row) != len(header):
+                    raise ValueError(f"{path}: line {number} has {len(row)} fields; allowed: {len(header)} as in the "
+                                     "header")
+                for name, text in zip(header, row):
+                    try:
+                        columns[name].append(float(text) if text.strip() else math.nan)
+                    except ValueError:
+                        raise ValueError(f"{path}: line {number}, column {name!r}: {text!r} is not a number") from None
     except UnicodeDecodeError as error:
         raise ValueError(f"{path}: not UTF-8 text (byte {error.start}: {error.reason}); allowed: a CSV file with a "
                          "header row (UTF-8 text)") from None
     except csv.Error as error:
         raise ValueError(f"{path}: not a readable CSV file ({error}); allowed: a CSV file with a header row") from None
-    if not rows:
-        raise ValueError(f"{path}: the file is empty; allowed: a CSV file with a header row")
-    header = [name.strip() for name in rows[0]]
-    columns: dict[str, list[float]] = {name: [] for name in header}
-    for number, row in enumerate(rows[1:], start=2):
-        if len(row) != len(header):
-            raise ValueError(f"{path}: line {number} has {len(row)} fields; allowed: {len(header)} as in the header")
-        for name, text in zip(header, row):
-            try:
-                columns[name].append(float(text) if text.strip() else math.nan)
-            except ValueError:
-                raise ValueError(f"{path}: line {number}, column {name!r}: {text!r} is not a number") from None
-    return {name: np.array(values) for name, values in columns.items()}
+    return {name: np.frombuffer(values, dtype=float).copy() for name, values in columns.items()}
 
 
 def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
@@ -101,7 +126,8 @@ def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
         raise ValueError(f"{path}: {error}") from None
 
 
-def _columns_and_units(candidate, source: str) -> tuple[dict[str, np.ndarray], dict[str, str]]:
+def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS) -> tuple[dict[str, np.ndarray],
+                                                                                           dict[str, str]]:
     """The candidate's columns and the units they declare (a Dataset's or netCDF file's ``units``)."""
     if isinstance(candidate, (str, os.PathLike)):
         path = Path(candidate)
@@ -112,7 +138,7 @@ def _columns_and_units(candidate, source: str) -> tuple[dict[str, np.ndarray], d
             raise ValueError(f"candidate={str(candidate)!r}: no such file; allowed: a CSV or netCDF file, a Dataset or "
                              "a mapping of arrays")
         if path.suffix.lower() == ".csv":
-            return _read_csv(path), {}
+            return _read_csv(path, limits), {}
         try:
             with xr.open_dataset(path) as opened:
                 candidate = opened.load()
@@ -141,7 +167,7 @@ def _columns_and_units(candidate, source: str) -> tuple[dict[str, np.ndarray], d
 
 
 def read_candidate(candidate, names: Mapping[str, str] | None = None,
-                   units: Mapping[str, str] | None = None) -> Candidate:
+                   units: Mapping[str, str] | None = None, limits: Limits = DEFAULT_LIMITS) -> Candidate:
     """Read a simulator's output: time and any of :data:`CANDIDATE_QUANTITIES`, converted to SI.
 
     Parameters
@@ -154,6 +180,9 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
     units : mapping, optional
         Quantity -> unit (:data:`UNITS`, e.g. ``"mN"``, ``"ms"``, ``"um"``); default the ``units`` attribute of
         a Dataset's or netCDF file's variable, else SI.
+    limits : Limits, optional
+        A CSV file's rows count as ``samples`` and :data:`BYTES_PER_CSV_VALUE` each as ``memory``, checked before
+        they are read (``ResourceLimitError``).
 
     Raises
     ------
@@ -163,7 +192,7 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         an infinite value (with its first row; ``nan`` is a missing sample).
     """
     source = str(candidate) if isinstance(candidate, (str, os.PathLike)) else f"candidate ({type(candidate).__name__})"
-    columns, declared = _columns_and_units(candidate, source)
+    columns, declared = _columns_and_units(candidate, source, limits)
     names = dict(names or {})
     units = dict(units or {})
     for quantity in list(names) + list(units):
@@ -196,6 +225,15 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
     if time.size < 2 or not np.all(np.isfinite(time)) or np.any(np.diff(time) <= 0):
         raise ValueError(f"{source}: column {names.get('time', 'time')!r} is not allowed as the time; allowed: at "
                          "least two finite, strictly increasing values")
+    # a share: of the springs in contact, those that slide
+    shares = found.get("sliding_fraction", np.zeros(0))
+    outside = np.flatnonzero((shares < 0) | (shares > 1))
+    if outside.size:
+        row = int(outside[0])
+        raise ValueError(f"{source}: column {names.get('sliding_fraction', 'sliding_fraction')!r} holds "
+                         f"{float(shares[row])!r} at data row {row + 1} (time {time[row]:.9g} s){_more(outside.size)}; "
+                         "allowed: shares from 0 to 1 (nan where no spring is in contact); a percentage needs "
+                         "units={'sliding_fraction': '%'}")
     for quantity, values in found.items():
         infinite = np.flatnonzero(np.isinf(values))
         if infinite.size:

@@ -42,6 +42,7 @@ except ImportError:  # pragma: no cover - Windows: only the age counts (see STAL
     fcntl = None  # type: ignore[assignment]
 
 __all__ = ["atomic_write", "write_netcdf", "open_result", "prepare_output_directory", "check_output_stem",
+           "check_output_file",
            "check_file_path", "remove_stale_temporaries", "is_temporary_name", "TEMPORARY_MARKER"]
 
 #: What marks a temporary file of :func:`atomic_write`: ``.<target name>.mdr-tmp-<random><suffix>``.
@@ -111,27 +112,71 @@ def prepare_output_directory(path: Any, name: str) -> Path:
         broken symbolic link, or it (or the directory it would be created in) is not writable.
     """
     directory = check_file_path(name, path, f"{_ALLOWED_PATH} naming {_ALLOWED_DIRECTORY}")
-    text = os.fspath(path)  # as the user wrote it
+    why = _directory_problem(directory)
+    if why is not None:
+        raise ValueError(f"{name}={os.fspath(path)!r} is not allowed ({why}); allowed: {_ALLOWED_DIRECTORY}")
+    return directory
 
-    def refuse(why: str) -> ValueError:
-        return ValueError(f"{name}={text!r} is not allowed ({why}); allowed: {_ALLOWED_DIRECTORY}")
 
+def _directory_problem(directory: Path) -> str | None:
+    """Why ``directory`` cannot take output (:func:`prepare_output_directory`), or ``None``."""
     absolute = directory.absolute()
     existing = absolute
     while not os.path.exists(existing):  # the nearest ancestor that exists (os.path: False on any error)
         if os.path.lexists(existing):
-            raise refuse("it is a broken symbolic link" if existing == absolute
-                         else f"it lies below {existing}, a broken symbolic link")
+            return ("it is a broken symbolic link" if existing == absolute
+                    else f"it lies below {existing}, a broken symbolic link")
         if existing.parent == existing:  # pragma: no cover - the root always exists
             break
         existing = existing.parent
     if not os.path.isdir(existing):
-        raise refuse("it is a file, not a directory" if existing == absolute
-                     else f"it lies below {existing}, a file, not a directory")
+        return ("it is a file, not a directory" if existing == absolute
+                else f"it lies below {existing}, a file, not a directory")
     if not os.access(existing, os.W_OK | os.X_OK):
-        raise refuse("it is not writable" if existing == absolute
-                     else f"it cannot be created: {existing} is not writable")
-    return directory
+        return ("it is not writable" if existing == absolute
+                else f"it cannot be created: {existing} is not writable")
+    return None
+
+
+#: The longest file name most file systems take (bytes); a temporary file adds ``.``, :data:`TEMPORARY_MARKER`, eight
+#: random characters and the suffix to it.
+MAX_NAME_BYTES = 255
+_TEMPORARY_EXTRA_BYTES = 1 + len(TEMPORARY_MARKER) + 8 + 8
+_ALLOWED_FILE = (f"a file path (not a directory) of at most {MAX_NAME_BYTES - _TEMPORARY_EXTRA_BYTES} bytes of name, "
+                 f"in {_ALLOWED_DIRECTORY}")
+
+
+def check_output_file(name: str, path: Any) -> Path:
+    """``path`` as a ``Path`` if a file can be written there, checked before anything is computed or written.
+
+    Parameters
+    ----------
+    name : str
+        The argument's name for the message (``path``).
+    path : str or os.PathLike
+        The file to write.
+
+    Raises
+    ------
+    TypeError
+        If ``path`` is not a ``str`` or ``os.PathLike``.
+    ValueError
+        Naming ``name``, the value and what is allowed: ``path`` is a directory, its name is too long for a file
+        system (with the temporary file's marker), or its directory cannot take it
+        (:func:`prepare_output_directory`: a file, below a file, not writable).
+    """
+    target = check_file_path(name, path, _ALLOWED_FILE)
+    text = os.fspath(path)
+    if os.path.isdir(target):
+        raise ValueError(f"{name}={text!r} is not allowed (it is a directory); allowed: {_ALLOWED_FILE}")
+    if len(target.name.encode()) + _TEMPORARY_EXTRA_BYTES > MAX_NAME_BYTES:
+        raise ValueError(f"{name}={shown(text)} is not allowed (its name has {len(target.name.encode())} bytes); "
+                         f"allowed: {_ALLOWED_FILE}")
+    why = _directory_problem(target.parent)
+    if why is not None:
+        raise ValueError(f"{name}={text!r} is not allowed (its directory {str(target.parent)!r}: {why}); "
+                         f"allowed: {_ALLOWED_FILE}")
+    return target
 
 
 def check_output_stem(name: str, stem: Any) -> str:
@@ -242,15 +287,29 @@ def atomic_write(path: str | os.PathLike, write: Callable[[str], Any], suffix: s
     -------
     pathlib.Path
         ``path``.
+
+    Raises
+    ------
+    ValueError
+        If no file can be written at ``path`` (:func:`check_output_file`, or the file system refuses one there);
+        an ``OSError`` while writing (a full disk) names ``path``.
     """
-    target = check_file_path("path", path)
-    target.parent.mkdir(parents=True, exist_ok=True)
+    target = check_output_file("path", path)
+    try:
+        target.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as error:  # a race, or a file system that refuses (a read-only mount, /proc)
+        raise ValueError(f"path={os.fspath(path)!r} is not allowed (its directory cannot be created: "
+                         f"{error.strerror}); allowed: {_ALLOWED_FILE}") from None
     remove_stale_temporaries(target.parent)
     temporary = None
     handle = None
     try:
-        handle, temporary = tempfile.mkstemp(prefix=f".{target.name}{TEMPORARY_MARKER}", suffix=suffix,
-                                             dir=target.parent)
+        try:
+            handle, temporary = tempfile.mkstemp(prefix=f".{target.name}{TEMPORARY_MARKER}", suffix=suffix,
+                                                 dir=target.parent)
+        except OSError as error:  # the directory takes no new file (a read-only mount, /proc)
+            raise ValueError(f"path={os.fspath(path)!r} is not allowed (no file can be created there: "
+                             f"{error.strerror}); allowed: {_ALLOWED_FILE}") from None
         if fcntl is not None:
             fcntl.flock(handle, fcntl.LOCK_EX)  # held until the file is in place (closed in the finally)
         write(temporary)
@@ -286,7 +345,7 @@ def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
     if not isinstance(dataset, xr.Dataset):
         raise TypeError(f"dataset={shown(dataset)} ({type(dataset).__name__}) is not allowed; allowed: an "
                         "xarray.Dataset")
-    check_file_path("path", path)
+    check_output_file("path", path)
     return atomic_write(path, lambda temporary: dataset.to_netcdf(
         temporary, engine="scipy", format="NETCDF3_64BIT"), suffix=".nc")
 

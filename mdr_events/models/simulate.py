@@ -15,6 +15,7 @@ from mdr_events.models.continuum import Tolerances, run_continuum
 from mdr_events.models.continuum.solution import EXTREMUM_XTOL
 from mdr_events.models.continuum.extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, extremum_names, solution_extrema
 from mdr_events.models.discrete import check_spacing, run_discrete
+from mdr_events.models.scales import check_representable
 from mdr_events.models.paths import Path
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
@@ -392,6 +393,7 @@ def simulate(
         raise TypeError(f"limits={shown(limits)} is not allowed; allowed: a mdr_events.Limits")
     profile = indenters.check_simulated_profile(profile)
     friction = as_friction_law(friction)
+    check_representable(params, profile, friction)
     if method == "continuum":
         check_supported(friction, params, profile)
     cases = simulation_cases(params, scenario, alpha, profile)

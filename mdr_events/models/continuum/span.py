@@ -157,9 +157,12 @@ class SpanIntegrator:
             self.a0 = span.pinned_radius
         self.x0 = self.segment.x(t0)
         depth_term = model.grow.depth_term
-        # at a = 0 (a Hertz contact's first instant) every local length is 0: the travel up to the span's
-        # largest radius keeps the level offset above zero there (the centre's level starts at 0 and falls)
-        reach = self.a0 if self.a0 > 0 or not self.moving else self.scale * max(self.start, self.stop)
+        # a moving radius is integrated in units of the span's largest radius, and an event's root is found to 4 eps
+        # of that: the levels move by the travel up to it over that rounding, which the level offset must exceed
+        # (a span growing from 3 mm to 61 m on a path to d_max = 1e5 m located its slip onset 1e-14 m off a level
+        # resolved to 1e-18 m, and restarted there for ever); at a = 0 (a Hertz contact's first instant) every
+        # local length is 0 and that travel keeps the level offset above zero
+        reach = self.scale * max(self.start, self.stop) if self.moving else self.a0
         lengths = length_scale(anchors, model.caps.centre_shift(self.a0, self.segment.d(t0)), self.x0,
                                indenter_travel(self.segment, t0, reach, depth_term))
         # Rising events cross a level a hair beyond zero: LEVEL_ULPS ulp of the lengths involved, just
@@ -221,7 +224,9 @@ class SpanIntegrator:
         slope = self.branch.slope(a)
         # the springs at a cap carry K a + κ (d − g): d/da of it is K + κ ∂d/∂a
         cap_rate = K + self.kappa * slope if self.kappa else K
-        total = (positive - negative) * cap_rate + sticking * segment.vx * slope / segment.vd
+        # (a vertical segment drives no sticking spring, even where the slope is infinite: at a = 0 of a branch)
+        drive = sticking * segment.vx * slope / segment.vd if segment.vx else 0.0
+        total = (positive - negative) * cap_rate + drive
         if self.shrinking:  # springs leave the edge with their shift
             total += self.edge_shift(x, a)
         return [self.G2 * total * self.scale]

@@ -1,0 +1,96 @@
+"""Whether a run's numbers fit in double precision: its scales, checked before it runs.
+
+The model multiplies its scales pairwise (``a²``, ``E* a d``, ``μ F_N``, ``x ± ū``), so a run whose every scale lies
+within the square root of double precision's range, :data:`SCALE_MIN` to :data:`SCALE_MAX` (about 1.5e-154 to
+1.3e154 in SI units), keeps every product finite and normal. A scale outside, or a relation that overflows on the way
+(``Γ(n/2 + 1)`` of a power law's stretch factor beyond ``n ≈ 341``), would give ``inf`` or ``nan`` results; the run is
+refused before it starts instead, naming the scale, its value and the bound (:func:`check_representable`). A scale
+that is exactly 0 (no adhesion, no ``τ0``) is fine.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import warnings
+from typing import Callable, NamedTuple
+
+from mdr_events.friction import TAU0, FrictionLaw
+from mdr_events.models import indenters
+from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.parameters import Parameters
+from mdr_events.theory import analytic, mindlin
+
+__all__ = ["SCALE_MAX", "SCALE_MIN", "Scale", "run_scales", "check_representable"]
+
+#: The largest and smallest magnitude of a scale: the square roots of the largest double and of the smallest normal
+#: one, so that a product of two scales stays finite and normal.
+SCALE_MAX = math.sqrt(sys.float_info.max)
+SCALE_MIN = math.sqrt(sys.float_info.min)
+
+
+class Scale(NamedTuple):
+    """One scale of a run: what it is, its value (``nan`` if it could not be computed), its unit, and why not."""
+
+    name: str
+    value: float
+    unit: str
+    failure: str = ""  #: the error computing it raised (an overflow), "" if none
+
+
+def _scale(name: str, unit: str, compute: Callable[[], float]) -> Scale:
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", RuntimeWarning)  # numpy's overflow is an error here, as math's is
+            return Scale(name, float(compute()), unit)
+    except (OverflowError, ZeroDivisionError, RuntimeWarning, FloatingPointError) as error:
+        return Scale(name, math.nan, unit, str(error) or type(error).__name__)
+
+
+def run_scales(params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> list[Scale]:
+    """The scales of a run of ``params`` with ``profile`` and ``friction``: moduli, depth, the contact radius and
+    normal force at ``d_max``, the critical shift ``ū`` and Coulomb's cap there, the full-slip force, the time to
+    ``d_max`` and, with adhesion, the jump-off of the ``Δγ1`` branch."""
+    def radius() -> float:
+        return float(indenters.branch_radius(params.d_max, params, params.dgamma0, profile))
+
+    scales = [Scale("E*", params.E_star, "Pa"), Scale("G*", params.G_star, "Pa"), Scale("d_max", params.d_max, "m"),
+              Scale("the time to d_max, d_max / v", params.d_max / params.v, "s"),
+              _scale("the contact radius a at d_max", "m", radius),
+              _scale("the normal force scale E* a d_max", "N", lambda: params.E_star * radius() * params.d_max)]
+    if friction.uses_tau0:
+        scales += [_scale("the critical shift ū(a) at d_max", "m",
+                          lambda: float(analytic.critical_shift(radius(), params))),
+                   _scale("the full-slip force τ0 π a²", "N", lambda: params.tau0 * math.pi * radius() ** 2)]
+    if friction.uses_mu:
+        scales.append(_scale("Coulomb's cap μ (E*/G*) d_max", "m",
+                             lambda: mindlin.coulomb_cap_ratio(friction, params) * params.d_max))
+    if params.dgamma1 > 0:
+        for key, unit in (("contact_radius", "m"), ("depth", "m"), ("normal_force", "N")):
+            scales.append(_scale(f"the jump-off's {key.replace('_', ' ')} on the Δγ1 branch", unit,
+                                 lambda key=key: indenters.jump_off(params, params.dgamma1, profile)[key]))
+    return scales
+
+
+def check_representable(params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> None:
+    """Refuse a run whose scales (:func:`run_scales`) do not fit in double precision.
+
+    Raises
+    ------
+    ValueError
+        Naming the first scale that overflows or lies outside ``[SCALE_MIN, SCALE_MAX]`` (0 is fine), its value,
+        the parameters and indenter it follows from, and the bound.
+    """
+    for scale in run_scales(params, profile, friction):
+        magnitude = abs(scale.value)
+        if scale.failure or not math.isfinite(magnitude) or (magnitude != 0.0 and
+                                                              not SCALE_MIN <= magnitude <= SCALE_MAX):
+            value = f"overflows ({scale.failure})" if scale.failure or not math.isfinite(magnitude) else \
+                f"is {scale.value:.3g} {scale.unit}"
+            indenter = f"R={params.R!r} m" if profile is None else f"profile={profile!r}"
+            law = "" if friction.is_default else f", friction={friction!r}"
+            raise ValueError(f"E={params.E!r} Pa, nu={params.nu!r}, {indenter}, tau0={params.tau0!r} Pa, "
+                             f"dgamma0={params.dgamma0!r} J/m², dgamma1={params.dgamma1!r} J/m², d_max={params.d_max!r} "
+                             f"m, v={params.v!r} m/s{law}: {scale.name} {value}; allowed: parameters whose scales lie "
+                             f"within {SCALE_MIN:.2g} to {SCALE_MAX:.2g} in SI units (or are 0), so that their products "
+                             "stay finite in double precision")

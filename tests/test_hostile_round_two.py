@@ -1,0 +1,124 @@
+"""The second hostile round (issue 32): what a referee must refuse, guard or say in one line. Classes 1–3 (broken
+runs, non-finite and overflowing results) are in tests/app/test_validate_cli.py and tests/models/test_scales.py."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import mdr_events as me
+from mdr_events.app.cli import main
+from mdr_events.io.files import write_netcdf
+from mdr_events.limits import ResourceLimitError
+
+EXE = Path(sys.executable).parent / "mdr-events"
+PAPER = me.Parameters.paper()
+
+
+def one_line(capsys, status, expected_status=2):
+    err = capsys.readouterr().err
+    assert status == expected_status and err.count("\n") == 1 and err.startswith("mdr-events: error:"), err
+    return err
+
+
+# --- class 4: every size a user controls is checked against Limits before allocating ---------------------------
+
+def test_a_csv_of_more_rows_than_the_limits_allow_is_refused_before_it_is_read(tmp_path, capsys):
+    path = tmp_path / "long.csv"
+    path.write_text("time,normal_force\n" + "".join(f"{k},0\n" for k in range(2000)))
+    with pytest.raises(ResourceLimitError, match="long.csv.*2000 rows.*samples"):
+        me.validate(path, PAPER, "A", 20.0, limits=me.Limits(samples=1000))
+    err = one_line(capsys, main(["validate", str(path), "--scenario", "A", "--alpha", "20", "--out",
+                                 str(tmp_path / "o"), "--limit", "samples=1000"]))
+    assert "2000 rows" in err and not (tmp_path / "o").exists()
+
+
+def test_history_samples_and_angles_are_checked_before_allocating():
+    """sweep(history_samples=1e9) raised MemoryError (44.7 GiB); 1e8 angles of a phase diagram took 2 GB."""
+    with pytest.raises(ResourceLimitError, match="history_samples=1000000000.*GiB of memory"):
+        me.sweep({"tau0": [1e4, 2e4]}, "A", 20.0, base=PAPER, history_samples=10**9, scheduler="serial")
+    with pytest.raises(ResourceLimitError, match="the phase diagram of 5000 angles"):
+        me.phase_diagram(PAPER, np.linspace(0.0, 90.0, 5000), limits=me.Limits(samples=1000))
+
+
+# --- class 5: the API's errors are those of the CLI ---------------------------------------------------------------
+
+@pytest.mark.parametrize("where, words", [
+    ("{tmp}", "it is a directory"),
+    ("{tmp}/afile/x.nc", "it is a file, not a directory"),
+    ("{tmp}/afile/deeper/x.nc", "it lies below"),
+    ("{tmp}/" + "n" * 300 + ".nc", "its name has 303 bytes"),
+])
+def test_write_netcdf_names_the_path_and_what_is_allowed(tmp_path, where, words):
+    (tmp_path / "afile").write_text("a file")
+    dataset = xr.Dataset({"a": ("x", np.zeros(3))})
+    with pytest.raises(ValueError, match="allowed: a file path") as error:
+        write_netcdf(dataset, where.format(tmp=tmp_path))
+    assert words in str(error.value) and str(error.value).startswith("path=")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["afile"]
+
+
+def test_a_file_system_that_takes_no_file_is_named():
+    if not Path("/proc").is_dir():
+        pytest.skip("no /proc here")
+    with pytest.raises(ValueError, match=r"path='/proc/x.nc' is not allowed \(no file can be created there"):
+        write_netcdf(xr.Dataset({"a": ("x", np.zeros(3))}), "/proc/x.nc")
+
+
+def test_fit_without_a_start_names_it():
+    with pytest.raises(TypeError, match=r"start=None \(NoneType\) is not allowed; allowed: a mdr_events.Parameters"):
+        me.fit({"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}, "A", 20.0, free=["E"], start=None)
+
+
+@pytest.mark.parametrize("tolerance", [float("inf"), float("nan"), 0.0, -1.0])
+def test_validate_takes_a_finite_tolerance(tolerance):
+    run = {"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}
+    with pytest.raises(ValueError, match="tolerance=.* is not allowed; allowed: a finite number > 0"):
+        me.validate(run, PAPER, "A", 20.0, tolerance=tolerance)
+
+
+def test_a_sliding_share_outside_0_to_1_is_refused():
+    run = {"time": [0.0, 1.0, 2.0], "normal_force": [0.0, 1.0, 2.0], "sliding_fraction": [0.0, 5.0, 0.5]}
+    with pytest.raises(ValueError, match=r"'sliding_fraction' holds 5.0 at data row 2 .*allowed: shares from 0 to 1"):
+        me.validate(run, PAPER, "A", 20.0)
+
+
+def test_an_array_in_a_message_is_on_one_line():
+    with pytest.raises(ValueError) as error:
+        me.simulate(PAPER, "A", alpha=[20.0], method="continuum", t=np.ones((2, 2)))
+    assert "\n" not in str(error.value) and "t=array([[1., 1.], [1., 1.]])" in str(error.value)
+
+
+def test_a_huge_radius_is_one_line_without_a_warning(capsys, tmp_path):
+    """--R 1e308 printed a lambdify RuntimeWarning before the error (3 lines)."""
+    err = one_line(capsys, main(["simulate", "--scenario", "A", "--alpha", "20", "--R", "1e308", "--out",
+                                 str(tmp_path / "o")]))
+    assert "R=1e+308 m" in err and "RuntimeWarning" not in err
+
+
+def test_a_bad_simulation_table_prints_no_progress_before_its_error(capsys, tmp_path):
+    study = tmp_path / "study.toml"
+    study.write_text(f'[simulation]\nscenario = "A"\nalpha = [20]\nmethod = "continuum"\nsamples = -5\n\n'
+                     f'[output]\ndirectory = {str(tmp_path / "o")!r}\n')
+    status = main(["run", str(study)])
+    out, err = capsys.readouterr()
+    assert status == 2 and out == "" and err.count("\n") == 1 and "samples=-5" in err
+
+
+def test_derive_refuses_an_empty_key(capsys):
+    """It printed every relation and exited 0."""
+    err = one_line(capsys, main(["derive", "--key", ""]))
+    assert "unknown relation ''" in err
+
+
+def test_derive_into_a_closed_pipe_is_silent():
+    """`mdr-events derive | head -1` ended with 'error: [Errno 32] Broken pipe'."""
+    pipeline = subprocess.run(f"'{EXE}' derive | head -1", shell=True, capture_output=True, text=True,
+                              executable="/bin/bash")
+    assert pipeline.stdout.startswith("# ") and pipeline.stdout.count("\n") == 1
+    assert pipeline.stderr == ""
