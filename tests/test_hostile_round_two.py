@@ -122,3 +122,73 @@ def test_derive_into_a_closed_pipe_is_silent():
                               executable="/bin/bash")
     assert pipeline.stdout.startswith("# ") and pipeline.stdout.count("\n") == 1
     assert pipeline.stderr == ""
+
+
+# --- class 3: overflow is refused, never an internal error -------------------------------------------------------
+
+def test_a_fit_to_curves_that_are_all_zero_is_refused_in_one_line(capsys, tmp_path):
+    """It ended in OverflowError (an interval's exp), exit 3."""
+    path = tmp_path / "zeros.csv"
+    path.write_text("time,normal_force,tangential_force,contact_area\n" +
+                    "".join(f"{t},0,0,0\n" for t in np.linspace(0.0, 3000.0, 200)))
+    err = one_line(capsys, main(["fit", str(path), "--scenario", "A", "--alpha", "20", "--free", "E", "tau0",
+                                 "--out", str(tmp_path / "o")]))
+    assert "nothing to fit" in err and not (tmp_path / "o").exists()
+
+
+def test_an_unseen_log_scaled_parameter_s_interval_is_0_to_inf():
+    """A half-width beyond what exp takes: the interval (0, inf), not an OverflowError."""
+    from mdr_events.analysis.fit import _scaled_or_inf, LOG_LARGEST
+    assert _scaled_or_inf(1e300, 1e300) == float("inf") and _scaled_or_inf(2.0, 3.0) == 6.0
+    assert LOG_LARGEST == pytest.approx(709.78, abs=0.01)
+
+
+# --- class 6: the files of one run are replaced together or not at all -----------------------------------------
+
+def test_an_interrupt_while_a_run_s_files_are_written_leaves_the_previous_run_s(tmp_path, monkeypatch):
+    """Ctrl-C between the .nc and the .png left the new .nc beside the previous run's .png."""
+    from mdr_events.app import result_files
+    first = me.simulate(PAPER, "A", alpha=[20.0], method="continuum", samples=101)
+    result_files.write_simulation(first, tmp_path, "run")
+    before = {path.name: path.read_bytes() for path in tmp_path.iterdir()}
+    assert set(before) == {"run.nc", "run.png", "run_events.csv"}
+
+    planned = result_files._bytes_plan
+
+    def interrupted_png(path, data, same, keep):
+        path, pending = planned(path, data, same, keep)
+        if path.suffix == ".png":
+            def write(temporary):
+                raise KeyboardInterrupt  # Ctrl-C after the new .nc was written to its temporary file
+            pending = pending._replace(write=write)
+        return path, pending
+
+    monkeypatch.setattr(result_files, "_bytes_plan", interrupted_png)
+    second = me.simulate(PAPER, "A", alpha=[30.0], method="continuum", samples=101)
+    with pytest.raises(KeyboardInterrupt):
+        result_files.write_simulation(second, tmp_path, "run")
+    assert {path.name: path.read_bytes() for path in tmp_path.iterdir()} == before  # no temporary left either
+
+
+def test_a_signal_during_the_renames_waits_until_they_are_done(tmp_path):
+    """SIGINT raised while the files are renamed into place acts after the last: all new, or (before) all old."""
+    import os
+    import signal
+    from mdr_events.io.files import PendingFile, atomic_write_all
+    renamed = []
+    real_replace = os.replace
+
+    def replace_and_interrupt(source, target):
+        real_replace(source, target)
+        renamed.append(Path(target).name)
+        if len(renamed) == 1:
+            os.kill(os.getpid(), signal.SIGINT)  # arrives between the first rename and the second
+
+    files = [PendingFile(tmp_path / name, lambda temporary, name=name: Path(temporary).write_text(name), ".txt")
+             for name in ("a.txt", "b.txt", "c.txt")]
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(os, "replace", replace_and_interrupt)
+        with pytest.raises(KeyboardInterrupt):
+            atomic_write_all(files)
+    assert renamed == ["a.txt", "b.txt", "c.txt"]
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["a.txt", "b.txt", "c.txt"]

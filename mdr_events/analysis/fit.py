@@ -41,6 +41,7 @@ from __future__ import annotations
 
 import enum
 import math
+import sys
 from dataclasses import dataclass
 from typing import Callable, Mapping, NamedTuple, Sequence
 
@@ -555,6 +556,17 @@ def _fit_warnings(measurement: Measurement, model: ModelCurves, rms: Mapping[str
     return warnings
 
 
+#: The largest argument of exp that a double holds (log of the largest double).
+LOG_LARGEST = math.log(sys.float_info.max)
+
+
+def _scaled_or_inf(value: float, factor: float) -> float:
+    """``value * factor`` of two non-negative numbers, ``inf`` where it overflows."""
+    with np.errstate(over="ignore"):
+        product = float(np.float64(value) * np.float64(factor))
+    return product if math.isfinite(product) else math.inf
+
+
 def _intervals(free: FreeParameters, theta: np.ndarray, standard_error: np.ndarray, dof: int):
     """Estimates, standard errors and 95 % intervals in natural units (delta method for the log-scaled)."""
     quantile = float(stats.t.ppf(0.5 + CONFIDENCE / 2.0, max(dof, 1)))
@@ -563,9 +575,10 @@ def _intervals(free: FreeParameters, theta: np.ndarray, standard_error: np.ndarr
     for j, name in enumerate(free.names):
         half = quantile * standard_error[j]
         if name in LOG_SCALED:
-            natural_error.append(value[j] * standard_error[j])
-            lower.append(value[j] * math.exp(-half) if math.isfinite(half) else 0.0)
-            upper.append(value[j] * math.exp(half) if math.isfinite(half) else math.inf)
+            # (a parameter the data do not see has a half-width beyond what exp takes: its interval is (0, inf))
+            natural_error.append(_scaled_or_inf(value[j], standard_error[j]))
+            lower.append(value[j] * math.exp(-half) if half < LOG_LARGEST else 0.0)
+            upper.append(_scaled_or_inf(value[j], math.exp(half)) if half < LOG_LARGEST else math.inf)
         else:
             scale = free.scale(name)
             natural_error.append(scale * standard_error[j])
@@ -765,6 +778,9 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     if samples <= len(free_set.names):
         raise ValueError(f"{read.source}: {samples} finite samples for {len(free_set.names)} free parameters; "
                          "allowed: more samples than free parameters")
+    if all(not np.any(np.nan_to_num(values)) for values in measurement.values.values()):
+        raise ValueError(f"{read.source}: every measured {', '.join(measurement.values)} is 0: nothing to fit (the "
+                         "parameters would run off to where the model vanishes); allowed: curves of a contact")
     theta0 = free_set.to_scaled(free_set.start_values())
     lower, upper = free_set.scaled_bounds()
     solution = optimize.least_squares(problem.residuals, theta0, jac=lambda theta: problem.jacobian(theta),

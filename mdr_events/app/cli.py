@@ -358,7 +358,7 @@ def _convergence(args, spacings, params, path, options) -> tuple[tuple | None, l
 def _command_validate(args: argparse.Namespace) -> int:
     # here, not at the top: validation_files loads matplotlib.pyplot for the figures
     from mdr_events.app.validation_files import VALIDATION_SUFFIXES, console_summary, render_validation, write_rendered
-    from mdr_events.io.files import atomic_write, write_netcdf
+    from mdr_events.io.files import PendingFile, atomic_write_all, netcdf_writer
 
     params, provenance = _validation_parameters(args)
     path, description = _validation_path(args, params)
@@ -403,10 +403,11 @@ def _command_validate(args: argparse.Namespace) -> int:
         print(f"  written: {', '.join(str(outcome.path) for outcome in written)}")
     if convergence is not None:
         dataset, png = convergence
-        written = [write_netcdf(dataset, out / f"{CONVERGENCE_STEM}.nc")]
+        files = [PendingFile(out / f"{CONVERGENCE_STEM}.nc", netcdf_writer(dataset), ".nc")]
         if png is not None:
-            written.append(atomic_write(out / f"{CONVERGENCE_STEM}.png",
-                                        lambda temporary: Path(temporary).write_bytes(png), suffix=".png"))
+            files.append(PendingFile(out / f"{CONVERGENCE_STEM}.png", lambda temporary: Path(temporary).write_bytes(png),
+                                     ".png"))
+        written = atomic_write_all(files)  # together or not at all
         convergence_lines.append(f"  written: {', '.join(map(str, written))}")
     if convergence_lines:
         print("\n".join(convergence_lines))

@@ -1,7 +1,8 @@
 """Result files: a dataset as netCDF with its figure as PNG, and the event log as CSV.
 
 Shared by the CLI, study files and ``mdr-events reproduce``; every file is written to a temporary
-name and renamed into place (:func:`mdr_events.io.files.atomic_write`).
+name and renamed into place, the files of one run together (:func:`mdr_events.io.files.atomic_write_all`: an
+interrupt or an error leaves the previous run's files as they were, never a new ``.nc`` beside an old ``.png``).
 
 With ``keep_agreeing=True`` a file whose content already agrees with what would be written is left
 as it is (:attr:`FileStatus.KEPT`): a dataset each of whose quantities agrees within the accuracy of how it is
@@ -32,8 +33,8 @@ from matplotlib import image
 from matplotlib.figure import Figure
 
 from mdr_events.io.agreement import result_differences, rounded_text_differences, tolerance_of
-from mdr_events.io.files import (atomic_write, check_file_path, check_output_stem, open_result,
-                                 prepare_output_directory, write_netcdf)
+from mdr_events.io.files import (PendingFile, atomic_write_all, check_file_path, check_output_stem, netcdf_writer,
+                                 open_result, prepare_output_directory)
 from mdr_events.models.simulate import case_dimension
 from mdr_events.parameters import Parameters
 from mdr_events.friction import FrictionLaw
@@ -72,10 +73,25 @@ def _agreeing_file(dataset: xr.Dataset, target: Path, keep_agreeing: bool) -> xr
     return None
 
 
-def _write_or_keep(dataset: xr.Dataset, target: Path, existing: xr.Dataset | None) -> FileOutcome:
-    if existing is not None:
-        return FileOutcome(target, FileStatus.KEPT)
-    return FileOutcome(write_netcdf(dataset, target), FileStatus.WRITTEN)
+#: A file of a run as planned: its path, and what writes it (``None``: kept as it is).
+Planned = tuple[Path, PendingFile | None]
+
+
+def _dataset_plan(dataset: xr.Dataset, target: Path, existing: xr.Dataset | None) -> Planned:
+    return target, None if existing is not None else PendingFile(target, netcdf_writer(dataset), ".nc")
+
+
+def _bytes_plan(path: Path, data: bytes, same: Callable[[bytes, bytes], bool], keep_agreeing: bool) -> Planned:
+    if keep_agreeing and path.exists() and same(path.read_bytes(), data):
+        return path, None
+    return path, PendingFile(path, lambda temporary: Path(temporary).write_bytes(data), path.suffix)
+
+
+def _commit(plans: list[Planned]) -> list[FileOutcome]:
+    """Write the planned files of one run together (:func:`~mdr_events.io.files.atomic_write_all`: replaced
+    together or not at all) and say what happened to each."""
+    atomic_write_all([pending for _, pending in plans if pending is not None])
+    return [FileOutcome(path, FileStatus.KEPT if pending is None else FileStatus.WRITTEN) for path, pending in plans]
 
 
 def write_dataset(dataset: xr.Dataset, path: str | os.PathLike,
@@ -89,14 +105,7 @@ def write_dataset(dataset: xr.Dataset, path: str | os.PathLike,
                         "xarray.Dataset")
     target = check_file_path("path", path)
     existing = _agreeing_file(dataset, target, keep_agreeing)
-    return (dataset if existing is None else existing), _write_or_keep(dataset, target, existing)
-
-
-def _write_if_new(path: Path, data: bytes, same: Callable[[bytes, bytes], bool], keep_agreeing: bool) -> FileOutcome:
-    if keep_agreeing and path.exists() and same(path.read_bytes(), data):
-        return FileOutcome(path, FileStatus.KEPT)
-    return FileOutcome(atomic_write(path, lambda temporary: Path(temporary).write_bytes(data),
-                                    suffix=path.suffix), FileStatus.WRITTEN)
+    return (dataset if existing is None else existing), _commit([_dataset_plan(dataset, target, existing)])[0]
 
 
 def _same_pixels(old: bytes, new: bytes) -> bool:
@@ -110,7 +119,7 @@ def _same_pixels(old: bytes, new: bytes) -> bool:
 
 def write_figure(figure, path: str | os.PathLike, keep_agreeing: bool = False) -> FileOutcome:
     """Write a figure as PNG (:func:`mdr_events.plotting.figure_png`); kept if its pixels are unchanged."""
-    return _write_if_new(Path(path), figure_png(figure), _same_pixels, keep_agreeing)
+    return _commit([_bytes_plan(Path(path), figure_png(figure), _same_pixels, keep_agreeing)])[0]
 
 
 def _same_rounded_text(old: bytes, new: bytes) -> bool:
@@ -124,7 +133,7 @@ def write_text(text: str, path: str | os.PathLike, keep_agreeing: bool = False, 
     """Write a text file (UTF-8); kept if it holds the same text (``rounded``: the same words, and its numbers
     within one unit of their last digit, :func:`~mdr_events.io.agreement.rounded_text_differences`)."""
     same = _same_rounded_text if rounded else (lambda old, new: old == new)
-    return _write_if_new(Path(path), text.encode(), same, keep_agreeing)
+    return _commit([_bytes_plan(Path(path), text.encode(), same, keep_agreeing)])[0]
 
 
 def _check_distinct_cases(dataset: xr.Dataset) -> None:
@@ -153,8 +162,8 @@ def write_phase_diagram(params: Parameters, scenario: str, out: str | os.PathLik
     nc = directory / f"{stem}.nc"
     existing = _agreeing_file(dataset, nc, keep_agreeing)
     png = figure_png(plot_phase_diagram(dataset if existing is None else existing).figure)
-    return [_write_or_keep(dataset, nc, existing),
-            _write_if_new(directory / f"{stem}.png", png, _same_pixels, keep_agreeing)]
+    return _commit([_dataset_plan(dataset, nc, existing),
+                    _bytes_plan(directory / f"{stem}.png", png, _same_pixels, keep_agreeing)])
 
 
 def write_simulation(dataset: xr.Dataset, out: str | os.PathLike, stem: str, overlay: xr.Dataset | None = None,
@@ -186,12 +195,12 @@ def write_simulation(dataset: xr.Dataset, out: str | os.PathLike, stem: str, ove
     on_disk = dataset if existing is None else existing
     png = figure_png(plot(on_disk, overlay=overlay))
     events = event_log_csv(on_disk) if "event_kind" in on_disk else None
-    outcomes = [_write_or_keep(dataset, nc, existing),
-                _write_if_new(directory / f"{stem}.png", png, _same_pixels, keep_agreeing)]
+    plans = [_dataset_plan(dataset, nc, existing),
+             _bytes_plan(directory / f"{stem}.png", png, _same_pixels, keep_agreeing)]
     if events is not None:
-        target = directory / f"{stem}_events.csv"
-        outcomes.append(_write_if_new(target, events.encode(), event_logs_agree(on_disk), keep_agreeing))
-    return outcomes
+        plans.append(_bytes_plan(directory / f"{stem}_events.csv", events.encode(), event_logs_agree(on_disk),
+                                 keep_agreeing))
+    return _commit(plans)
 
 
 #: The first column of the event log CSV for each case dimension: its header and how a label is written.

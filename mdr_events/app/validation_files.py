@@ -23,7 +23,8 @@ import xarray as xr
 
 from mdr_events.analysis.validate import LEFT_OUT_CODES
 from mdr_events.app.result_files import FileOutcome, FileStatus
-from mdr_events.io.files import atomic_write, check_output_stem, prepare_output_directory, write_netcdf
+from mdr_events.io.files import (PendingFile, atomic_write_all, check_output_stem, netcdf_writer,
+                                 prepare_output_directory)
 from mdr_events.parameters import PARAMETER_UNITS
 from mdr_events.plotting.figures import figure_png
 from mdr_events.plotting.validation import plot_validation
@@ -152,10 +153,10 @@ def write_rendered(rendered: RenderedReport, out: str | os.PathLike) -> list[Fil
     prepare_output_directory(out, "out")
     check_output_stem("stem", rendered.stem)
     nc, md, png = rendered.paths(out)
-    written = [write_netcdf(rendered.report, nc),
-               atomic_write(md, lambda temporary: Path(temporary).write_text(rendered.markdown, encoding="utf-8"),
-                            suffix=".md"),
-               atomic_write(png, lambda temporary: Path(temporary).write_bytes(rendered.png), suffix=".png")]
+    written = atomic_write_all([
+        PendingFile(nc, netcdf_writer(rendered.report), ".nc"),
+        PendingFile(md, lambda temporary: Path(temporary).write_text(rendered.markdown, encoding="utf-8"), ".md"),
+        PendingFile(png, lambda temporary: Path(temporary).write_bytes(rendered.png), ".png")])  # together
     return [FileOutcome(path, FileStatus.WRITTEN) for path in written]
 
 

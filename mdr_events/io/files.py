@@ -25,10 +25,12 @@ from __future__ import annotations
 
 import os
 import re
+import signal
 import tempfile
 import time
+from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any, Callable, NamedTuple, Sequence
 
 import xarray as xr
 
@@ -41,7 +43,7 @@ try:  # POSIX: a writer locks its temporary file, so that another process never 
 except ImportError:  # pragma: no cover - Windows: only the age counts (see STALE_WITHOUT_LOCKS)
     fcntl = None  # type: ignore[assignment]
 
-__all__ = ["atomic_write", "write_netcdf", "open_result", "prepare_output_directory", "check_output_stem",
+__all__ = ["atomic_write", "atomic_write_all", "PendingFile", "netcdf_writer", "write_netcdf", "open_result", "prepare_output_directory", "check_output_stem",
            "check_output_file",
            "check_file_path", "remove_stale_temporaries", "is_temporary_name", "TEMPORARY_MARKER"]
 
@@ -264,8 +266,16 @@ def remove_stale_temporaries(directory: str | os.PathLike) -> list[Path]:
     return removed
 
 
+class PendingFile(NamedTuple):
+    """A file to write: where, a function writing its content to the path it is given, the temporary's suffix."""
+
+    path: str | os.PathLike
+    write: Callable[[str], Any]
+    suffix: str = ".tmp"
+
+
 def atomic_write(path: str | os.PathLike, write: Callable[[str], Any], suffix: str = ".tmp") -> Path:
-    """Call ``write(temporary_path)``, then rename the file onto ``path``.
+    """Call ``write(temporary_path)``, then rename the file onto ``path`` (:func:`atomic_write_all` of one file).
 
     An interrupted or failing writer leaves the old file (or none), never a
     half-written one; the temporary file sits beside the target so that the
@@ -294,40 +304,83 @@ def atomic_write(path: str | os.PathLike, write: Callable[[str], Any], suffix: s
         If no file can be written at ``path`` (:func:`check_output_file`, or the file system refuses one there);
         an ``OSError`` while writing (a full disk) names ``path``.
     """
+    return atomic_write_all([PendingFile(path, write, suffix)])[0]
+
+
+@contextmanager
+def _signals_held():
+    """Hold Ctrl-C (SIGINT) and SIGTERM while the body runs; they are delivered, and act, right after it."""
+    if not hasattr(signal, "pthread_sigmask"):  # pragma: no cover - Windows
+        yield
+        return
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+
+
+def _prepared_target(path: str | os.PathLike) -> Path:
     target = check_output_file("path", path)
     try:
         target.parent.mkdir(parents=True, exist_ok=True)
     except OSError as error:  # a race, or a file system that refuses (a read-only mount, /proc)
         raise ValueError(f"path={os.fspath(path)!r} is not allowed (its directory cannot be created: "
                          f"{error.strerror}); allowed: {_ALLOWED_FILE}") from None
-    remove_stale_temporaries(target.parent)
-    temporary = None
-    handle = None
+    return target
+
+
+def atomic_write_all(files: Sequence[PendingFile]) -> list[Path]:
+    """Write several files as one: each to its temporary (as :func:`atomic_write`), then all renamed into place with
+    Ctrl-C and SIGTERM held, so that the files of one run are replaced together or not at all (an interrupt or an
+    error while writing leaves every old file as it was; one during the renames waits until they are done).
+
+    Returns the paths, in order; raises as :func:`atomic_write`.
+    """
+    targets = [_prepared_target(file.path) for file in files]
+    for directory in dict.fromkeys(target.parent for target in targets):
+        remove_stale_temporaries(directory)
+    handles: list[int] = []
+    temporaries: list[str] = []
+    names = {}
+    placed = 0
     try:
-        try:
-            handle, temporary = tempfile.mkstemp(prefix=f".{target.name}{TEMPORARY_MARKER}", suffix=suffix,
-                                                 dir=target.parent)
-        except OSError as error:  # the directory takes no new file (a read-only mount, /proc)
-            raise ValueError(f"path={os.fspath(path)!r} is not allowed (no file can be created there: "
-                             f"{error.strerror}); allowed: {_ALLOWED_FILE}") from None
-        if fcntl is not None:
-            fcntl.flock(handle, fcntl.LOCK_EX)  # held until the file is in place (closed in the finally)
-        write(temporary)
-        mask = os.umask(0)  # mkstemp makes the file owner-only; give it the usual permissions
-        os.umask(mask)
-        os.chmod(temporary, 0o666 & ~mask)
-        os.replace(temporary, target)
-        temporary = None
+        for file, target in zip(files, targets):
+            try:
+                handle, temporary = tempfile.mkstemp(prefix=f".{target.name}{TEMPORARY_MARKER}", suffix=file.suffix,
+                                                     dir=target.parent)
+            except OSError as error:  # the directory takes no new file (a read-only mount, /proc)
+                raise ValueError(f"path={os.fspath(file.path)!r} is not allowed (no file can be created there: "
+                                 f"{error.strerror}); allowed: {_ALLOWED_FILE}") from None
+            handles.append(handle)
+            temporaries.append(temporary)
+            names[temporary] = os.fspath(target)
+            if fcntl is not None:
+                fcntl.flock(handle, fcntl.LOCK_EX)  # held until the file is in place (closed in the finally)
+            file.write(temporary)
+            mask = os.umask(0)  # mkstemp makes the file owner-only; give it the usual permissions
+            os.umask(mask)
+            os.chmod(temporary, 0o666 & ~mask)
+        with _signals_held():
+            for temporary, target in zip(temporaries, targets):
+                os.replace(temporary, target)
+                placed += 1
     except OSError as error:
-        if error.filename == temporary:  # name the file the user asked for, not a temporary one now gone
-            error.filename = os.fspath(target)
+        if error.filename in names:  # name the file the user asked for, not a temporary one now gone
+            error.filename = names[error.filename]
         raise
     finally:
-        if temporary is not None:
+        for temporary in temporaries[placed:]:
             Path(temporary).unlink(missing_ok=True)
-        if handle is not None:
+        for handle in handles:
             os.close(handle)
-    return target
+    return targets
+
+
+def netcdf_writer(dataset: xr.Dataset) -> Callable[[str], Any]:
+    """What writes ``dataset`` as netCDF to a path (the scipy backend, netCDF3 64-bit offset: no further
+    dependency), for :class:`PendingFile`."""
+    return lambda temporary: dataset.to_netcdf(temporary, engine="scipy", format="NETCDF3_64BIT")
 
 
 def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
@@ -346,8 +399,7 @@ def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
         raise TypeError(f"dataset={shown(dataset)} ({type(dataset).__name__}) is not allowed; allowed: an "
                         "xarray.Dataset")
     check_output_file("path", path)
-    return atomic_write(path, lambda temporary: dataset.to_netcdf(
-        temporary, engine="scipy", format="NETCDF3_64BIT"), suffix=".nc")
+    return atomic_write(path, netcdf_writer(dataset), suffix=".nc")
 
 
 def open_result(path: str | os.PathLike) -> xr.Dataset:
