@@ -538,12 +538,14 @@ def _fit_warnings(measurement: Measurement, model: ModelCurves, rms: Mapping[str
         warnings.append(f"the record starts {times[0] - first_contact:.4g} s after the path's first contact, in "
                         f"contact: if it starts at the first contact, give time_origin="
                         f"{measurement.candidate.time[0]:.6g}, or free time_offset")
-    # contact lost (a jump): where the data and the fit last exceed the same multiple of the noise; where the fit
-    # fades out instead (a cone's small jump-off radius), the noise moves that crossing by the fade's duration
+    # contact lost (a jump): where the data and the fit last exceed the same multiple of the noise (the data's own
+    # scatter where a given σ is smaller: a σ that understates it would take noise after the pull-off for contact);
+    # where the fit fades out instead (a cone's small jump-off radius), the noise moves that crossing by the fade's
+    # duration
     measured, fitted = np.zeros(times.size, bool), np.zeros(times.size, bool)
     strong = np.zeros(times.size, bool)
     for name, values in measurement.values.items():
-        threshold = CONTACT_NOISE_MULTIPLE * measurement.noise[name]
+        threshold = CONTACT_NOISE_MULTIPLE * max(measurement.noise[name], estimate_noise(values))
         measured |= np.nan_to_num(np.abs(values)) > threshold
         fitted |= np.nan_to_num(np.abs(model.values[name])) > threshold
         strong |= np.nan_to_num(np.abs(model.values[name])) > FADE_MULTIPLE * threshold

@@ -391,7 +391,8 @@ def _command_validate(args: argparse.Namespace) -> int:
                  if os.path.realpath(target) in inputs]
         if clash:
             raise UsageError(f"--out {args.out}: writing {clash[0]} would overwrite a run; allowed: another directory")
-        report = validate(run, params, path, **options)
+        # a file of several runs along alpha (the package's own simulate output): the one at --alpha
+        report = validate(run, params, path, select=None if args.alpha is None else {"alpha": args.alpha}, **options)
         report.attrs.update(provenance, path_description=description)
         reports.append((run, stem, report))
     rendered = [(run, render_validation(report, stem)) for run, stem, report in reports]
@@ -684,6 +685,37 @@ def _outcome(error: BaseException) -> tuple[str, int]:
             "the traceback, and please report it", EXIT_FAILED)
 
 
+#: Suffixes of the files the commands read: a value of a multi-value option with one of these is a file it took.
+FILE_SUFFIXES = (".csv", ".nc", ".toml")
+
+
+def _multi_value_options(parser: argparse.ArgumentParser) -> set[str]:
+    """The options, of every command, that take several values (``--free E tau0``, ``--dx 1e-6 2e-6``)."""
+    found = set()
+    for action in parser._actions:  # noqa: SLF001 - argparse keeps its actions there
+        if action.nargs in ("+", "*") and action.option_strings:
+            found.update(action.option_strings)
+        for sub in getattr(action, "choices", None).values() if isinstance(action, argparse._SubParsersAction) else ():
+            found |= _multi_value_options(sub)
+    return found
+
+
+def _file_taken_as_value(argv: Sequence[str]) -> str:
+    """A hint for a usage error: which multi-value option took a file as one of its values (``--free tau0 run.csv``:
+    argparse gives every word up to the next option to ``--free``), and how to write it; "" if none did."""
+    multi = _multi_value_options(build_parser())
+    option = None
+    for token in argv:
+        if token == "--":
+            return ""
+        if token.startswith("--"):
+            option = token.split("=", 1)[0] if token.split("=", 1)[0] in multi else None
+        elif option is not None and (os.path.isfile(token) or token.lower().endswith(FILE_SUFFIXES)):
+            return (f" ({option} took {token!r}, a file, as one of its values: write the file before {option}, or "
+                    f"{option} and its values last)")
+    return ""
+
+
 def _silence_stdout() -> None:
     """Point stdout at the null device, so that the interpreter's final flush does not raise again."""
     try:
@@ -717,6 +749,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         if debug and not isinstance(error, UsageError):
             raise
         text, code = _outcome(error)
+        if isinstance(error, UsageError):
+            text += _file_taken_as_value(sys.argv[1:] if argv is None else list(argv))
         print(f"mdr-events: {_one_line(text)}", file=sys.stderr)
         return code
     finally:

@@ -126,8 +126,8 @@ def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
         raise ValueError(f"{path}: {error}") from None
 
 
-def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS) -> tuple[dict[str, np.ndarray],
-                                                                                           dict[str, str]]:
+def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
+                       select: Mapping[str, object] | None = None) -> tuple[dict[str, np.ndarray], dict[str, str]]:
     """The candidate's columns and the units they declare (a Dataset's or netCDF file's ``units``)."""
     if isinstance(candidate, (str, os.PathLike)):
         path = Path(candidate)
@@ -146,14 +146,15 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS) 
             raise ValueError(f"{path}: cannot be read as netCDF ({error}); allowed: a CSV file with a header "
                              "or a netCDF file") from None
     if isinstance(candidate, xr.Dataset):
+        candidate = _selected(candidate, source, select or {})
         # a simulation of one case (dims ``alpha`` or ``case`` of size 1 beside ``time``) is that case's run
         single = [dim for dim, size in candidate.sizes.items() if dim != "time" and size == 1]
         several = [f"{dim!r} ({size})" for dim, size in candidate.sizes.items()
                    if dim != "time" and size > 1 and any(dim in v.dims and "time" in v.dims
                                                          for v in candidate.data_vars.values())]
         if several:
-            raise ValueError(f"{source} holds several runs along {', '.join(several)}; allowed: one run (select it, "
-                             "e.g. dataset.isel(alpha=0) or dataset.sel(case='...'))")
+            raise ValueError(f"{source} holds several runs along {', '.join(several)}; allowed: one run (select it: "
+                             "alpha= of its angle, on the command line --alpha; or dataset.sel(case='...'))")
         if single:
             candidate = candidate.isel({dim: 0 for dim in single})
         names = list(candidate.variables)
@@ -166,8 +167,23 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS) 
                     "mapping of arrays, or the path of a CSV or netCDF file")
 
 
+def _selected(dataset: xr.Dataset, source: str, select: Mapping[str, object]) -> xr.Dataset:
+    """The run of a dataset of several (a simulation along ``alpha``) that ``select`` names (e.g. ``{"alpha": 20}``,
+    the angle the candidate is validated at); a dimension of one run, or absent, is left as it is."""
+    for dimension, value in select.items():
+        if dimension in dataset.dims and dataset.sizes[dimension] > 1:
+            values = dataset[dimension].values
+            matches = np.flatnonzero(np.isclose(values.astype(float), float(value), rtol=0.0, atol=1e-9))
+            if matches.size != 1:
+                raise ValueError(f"{source} holds runs along {dimension!r} at {', '.join(f'{v:g}' for v in values)}, "
+                                 f"not at {dimension}={value!r}; allowed: one of those")
+            dataset = dataset.isel({dimension: int(matches[0])})
+    return dataset
+
+
 def read_candidate(candidate, names: Mapping[str, str] | None = None,
-                   units: Mapping[str, str] | None = None, limits: Limits = DEFAULT_LIMITS) -> Candidate:
+                   units: Mapping[str, str] | None = None, limits: Limits = DEFAULT_LIMITS,
+                   select: Mapping[str, object] | None = None) -> Candidate:
     """Read a simulator's output: time and any of :data:`CANDIDATE_QUANTITIES`, converted to SI.
 
     Parameters
@@ -183,6 +199,8 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
     limits : Limits, optional
         A CSV file's rows count as ``samples`` and :data:`BYTES_PER_CSV_VALUE` each as ``memory``, checked before
         they are read (``ResourceLimitError``).
+    select : mapping, optional
+        A dataset of several runs (a simulation along ``alpha``): the one at these coordinates (``{"alpha": 20}``).
 
     Raises
     ------
@@ -192,7 +210,7 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         an infinite value (with its first row; ``nan`` is a missing sample).
     """
     source = str(candidate) if isinstance(candidate, (str, os.PathLike)) else f"candidate ({type(candidate).__name__})"
-    columns, declared = _columns_and_units(candidate, source, limits)
+    columns, declared = _columns_and_units(candidate, source, limits, select)
     names = dict(names or {})
     units = dict(units or {})
     for quantity in list(names) + list(units):

@@ -151,7 +151,8 @@ def test_the_pull_off_force_is_also_compared_at_the_candidates_own_sample(paper,
 def test_a_time_axis_shorter_than_the_contact_is_refused(paper, discrete):
     run = discrete.isel(alpha=0)
     half = {name: run[name].values[: run.sizes["time"] // 2] for name in ("time", "normal_force", "contact_area")}
-    with pytest.raises(ValueError, match="column 'time' ends at .* in contact; allowed: a time axis that covers"):
+    with pytest.raises(ValueError, match="column 'time' ends at .* in contact, while the exact contact lasts beyond its "
+                                         "next sample; allowed: a time axis that covers"):
         me.validate(half, paper, "A", ALPHA)
 
 

@@ -136,7 +136,10 @@ def test_cross_check(paper):
     assert np.all(a["disagree"] == 0)
     b = me.cross_check(paper, "B", (1.0, 30.0), dx=2e-6, n_steps=8000)
     assert list(b["pinned_radius"].values) == [1, 0]
-    assert list(b["disagree"].values) == [1, 0]  # (21) ignores the pinned radius at 1°
+    # (21) ignores the pinned radius at 1°: the continuum meets the pinned onset there, d_max − tan α ū(a0)
+    assert list(b["disagree"].values) == [0, 0]
+    assert float(b["d_crit_pinned"].values[0]) == pytest.approx(float(b["d_crit_continuum"].values[0]), rel=1e-9)
+    assert abs(float(b["d_crit_closed_form"].values[0]) - float(b["d_crit_continuum"].values[0])) > 1e-7
     assert np.all(np.abs(b["discrete_minus_continuum"]) <= b["discrete_tolerance"])
     for unit_check in (a, b):
         for var in unit_check.data_vars.values():
