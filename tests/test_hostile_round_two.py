@@ -280,3 +280,14 @@ def test_every_file_the_readme_names_exists():
     import re
     named = set(re.findall(r"`(mdr_events/[\w/]+\.py)`", (root / "README.md").read_text()))
     assert named and all((root / path).is_file() for path in named), sorted(p for p in named if not (root / p).is_file())
+
+
+def test_a_long_read_says_how_far_it_is(tmp_path, capsys, monkeypatch):
+    """A long CSV file's read reports every PROGRESS_ROWS rows (here 500 of 1200)."""
+    from mdr_events.io import candidates
+    monkeypatch.setattr(candidates, "PROGRESS_ROWS", 500)
+    path = tmp_path / "long.csv"
+    path.write_text("time,normal_force\n" + "".join(f"{k},0\n" for k in range(1200)))
+    heard = []
+    candidates.read_candidate(path, progress=heard.append)
+    assert heard == [f"reading {path}: 500 of 1200 rows", f"reading {path}: 1000 of 1200 rows"]

@@ -713,7 +713,7 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
         names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
         time_origin="first_contact", tolerances: Tolerances = Tolerances(),
         limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
-        friction: FrictionLaw | str | None = None) -> FitResult:
+        friction: FrictionLaw | str | None = None, progress: Callable[[str], None] | None = None) -> FitResult:
     """Fit the continuum model to measured curves by weighted least squares.
 
     Parameters
@@ -749,6 +749,8 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     friction : FrictionLaw or str, optional
         The friction law of the experiment (default the paper's ``"tau0"``; Coulomb's part needs a contact without
         adhesion in the continuum). With Coulomb's part, ``"mu"`` may be free: its ``μ`` is then the start.
+    progress : callable, optional
+        Hears how far reading a long CSV file is (:func:`~mdr_events.io.candidates.read_candidate`).
 
     Returns
     -------
@@ -769,7 +771,7 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     if profile is not None and "R" in free:
         raise ValueError(f"free={list(free)!r} frees R with profile={profile!r}; allowed: the names of "
                          f"{list(FREE_NAMES)} but R (the power law's shape is c and n, R belongs to the paraboloid)")
-    read = read_candidate(measured, names, units, limits)
+    read = read_candidate(measured, names, units, limits, progress=progress)
     nominal = resolve_path(start, path, alpha, profile)
     measurement = _measurement(read, nominal, time_origin, noise)
     free_set = free_parameters(free, start, bounds, nominal.duration, max(nominal.max_depth, start.d_max), friction)

@@ -37,7 +37,7 @@ of a candidate event is the path's depth at its time).
 from __future__ import annotations
 
 import math
-from typing import Mapping
+from typing import Callable, Mapping
 
 import numpy as np
 import xarray as xr
@@ -180,7 +180,8 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
              time_origin="first_contact", tolerance: float = 1e-3,
              tolerances: Tolerances = Tolerances(), solution: PathSolution | None = None,
              limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
-             friction: FrictionLaw | str | None = None, select: Mapping[str, object] | None = None) -> xr.Dataset:
+             friction: FrictionLaw | str | None = None, select: Mapping[str, object] | None = None,
+             progress: Callable[[str], None] | None = None) -> xr.Dataset:
     """Compare a simulator's output with the exact continuum on the same path, sample and event by event.
 
     Parameters
@@ -217,6 +218,8 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     select : mapping, optional
         A candidate holding several runs (a simulation along ``alpha``): the one at these coordinates; default
         ``{"alpha": alpha}`` with a scenario's angle.
+    progress : callable, optional
+        Hears how far reading a long CSV file is (:func:`~mdr_events.io.candidates.read_candidate`).
 
     Returns
     -------
@@ -243,7 +246,7 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     the_path = resolve_path(params, path, alpha, profile)
     if select is None and alpha is not None:
         select = {"alpha": alpha}
-    read = read_candidate(candidate, names, units, limits, select=select)
+    read = read_candidate(candidate, names, units, limits, select=select, progress=progress)
     check_run_is_finite(read, _in_contact(read.quantities), names)
     times = times_from_contact(read, the_path, time_origin)
     solution = solve_path(params, the_path, tolerances, limits, profile, friction) if solution is None else solution

@@ -392,7 +392,8 @@ def _command_validate(args: argparse.Namespace) -> int:
         if clash:
             raise UsageError(f"--out {args.out}: writing {clash[0]} would overwrite a run; allowed: another directory")
         # a file of several runs along alpha (the package's own simulate output): the one at --alpha
-        report = validate(run, params, path, select=None if args.alpha is None else {"alpha": args.alpha}, **options)
+        report = validate(run, params, path, select=None if args.alpha is None else {"alpha": args.alpha},
+                          progress=print, **options)
         report.attrs.update(provenance, path_description=description)
         reports.append((run, stem, report))
     rendered = [(run, render_validation(report, stem)) for run, stem, report in reports]
@@ -503,7 +504,7 @@ def _command_fit(args: argparse.Namespace) -> int:
     result = fit(args.data, *motion, free=args.free, start=params, bounds=_bounds(args.bounds),
                  noise=noise, names=_pairs("--names", args.names, quantities), units=units,
                  time_origin=_time_origin(args.time_origin), limits=_limits(args), profile=_profile(args),
-                 friction=friction)
+                 friction=friction, progress=print)
     result.dataset.attrs.update(provenance, path_description=description)
     rendered = render_fit(result.dataset, stem)
     written = write_rendered(rendered, out)

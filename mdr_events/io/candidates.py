@@ -12,7 +12,7 @@ import math
 import os
 from array import array
 from pathlib import Path
-from typing import Mapping, NamedTuple
+from typing import Callable, Mapping, NamedTuple
 
 import numpy as np
 import xarray as xr
@@ -79,9 +79,15 @@ def _line_count(path: Path) -> int:
     return lines + (last != b"\n")
 
 
-def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS) -> dict[str, np.ndarray]:
+#: A CSV file read reports its progress every this many rows (a long read says how far it is).
+PROGRESS_ROWS = 1_000_000
+
+
+def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
+              progress: Callable[[str], None] | None = None) -> dict[str, np.ndarray]:
     """A CSV file's columns (a header row; ``#`` lines are comments; a UTF-8 byte-order mark is read, as
-    spreadsheets write it), each as float64; its rows are checked against ``limits`` before they are read."""
+    spreadsheets write it), each as float64; its rows are checked against ``limits`` before they are read, and
+    ``progress`` hears every :data:`PROGRESS_ROWS` of them."""
     rows = max(_line_count(path) - 1, 0)
     try:
         with open(path, newline="", encoding="utf-8-sig") as handle:
@@ -93,6 +99,8 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS) -> dict[str, np.ndarr
                          memory=BYTES_PER_CSV_VALUE * rows * len(header))
             columns = {name: array("d") for name in header}
             for number, row in enumerate(reader, start=2):
+                if progress is not None and (number - 1) % PROGRESS_ROWS == 0:
+                    progress(f"reading {path}: {number - 1} of {rows} rows")
                 if len(row) != len(header):
                     raise ValueError(f"{path}: line {number} has {len(row)} fields; allowed: {len(header)} as in the "
                                      "header")
@@ -127,7 +135,8 @@ def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
 
 
 def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
-                       select: Mapping[str, object] | None = None) -> tuple[dict[str, np.ndarray], dict[str, str]]:
+                       select: Mapping[str, object] | None = None,
+                       progress: Callable[[str], None] | None = None) -> tuple[dict[str, np.ndarray], dict[str, str]]:
     """The candidate's columns and the units they declare (a Dataset's or netCDF file's ``units``)."""
     if isinstance(candidate, (str, os.PathLike)):
         path = Path(candidate)
@@ -138,7 +147,7 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
             raise ValueError(f"candidate={str(candidate)!r}: no such file; allowed: a CSV or netCDF file, a Dataset or "
                              "a mapping of arrays")
         if path.suffix.lower() == ".csv":
-            return _read_csv(path, limits), {}
+            return _read_csv(path, limits, progress), {}
         try:
             with xr.open_dataset(path) as opened:
                 candidate = opened.load()
@@ -183,7 +192,8 @@ def _selected(dataset: xr.Dataset, source: str, select: Mapping[str, object]) ->
 
 def read_candidate(candidate, names: Mapping[str, str] | None = None,
                    units: Mapping[str, str] | None = None, limits: Limits = DEFAULT_LIMITS,
-                   select: Mapping[str, object] | None = None) -> Candidate:
+                   select: Mapping[str, object] | None = None,
+                   progress: Callable[[str], None] | None = None) -> Candidate:
     """Read a simulator's output: time and any of :data:`CANDIDATE_QUANTITIES`, converted to SI.
 
     Parameters
@@ -201,6 +211,8 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         they are read (``ResourceLimitError``).
     select : mapping, optional
         A dataset of several runs (a simulation along ``alpha``): the one at these coordinates (``{"alpha": 20}``).
+    progress : callable, optional
+        Hears how far a long CSV file's read is (every :data:`PROGRESS_ROWS` rows).
 
     Raises
     ------
@@ -210,7 +222,7 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         an infinite value (with its first row; ``nan`` is a missing sample).
     """
     source = str(candidate) if isinstance(candidate, (str, os.PathLike)) else f"candidate ({type(candidate).__name__})"
-    columns, declared = _columns_and_units(candidate, source, limits, select)
+    columns, declared = _columns_and_units(candidate, source, limits, select, progress)
     names = dict(names or {})
     units = dict(units or {})
     for quantity in list(names) + list(units):

@@ -27,6 +27,7 @@ import os
 import re
 import signal
 import tempfile
+import threading
 import time
 from contextlib import contextmanager
 from pathlib import Path
@@ -307,17 +308,35 @@ def atomic_write(path: str | os.PathLike, write: Callable[[str], Any], suffix: s
     return atomic_write_all([PendingFile(path, write, suffix)])[0]
 
 
+#: The signals :func:`atomic_write_all` holds while it renames a run's files into place.
+HELD_SIGNALS = (signal.SIGINT, signal.SIGTERM)
+
+
 @contextmanager
 def _signals_held():
-    """Hold Ctrl-C (SIGINT) and SIGTERM while the body runs; they are delivered, and act, right after it."""
-    if not hasattr(signal, "pthread_sigmask"):  # pragma: no cover - Windows
-        yield
+    """Hold Ctrl-C (SIGINT) and SIGTERM while the body runs; the first that arrived is raised again right after it,
+    to the handlers that were in place. In the main thread the Python handlers are swapped for ones that note the
+    signal (Python runs its handlers there, whichever thread the signal reached); elsewhere the signals are blocked
+    in that thread (``pthread_sigmask``)."""
+    if threading.current_thread() is not threading.main_thread():
+        if not hasattr(signal, "pthread_sigmask"):  # pragma: no cover - Windows
+            yield
+            return
+        mask = signal.pthread_sigmask(signal.SIG_BLOCK, set(HELD_SIGNALS))
+        try:
+            yield
+        finally:
+            signal.pthread_sigmask(signal.SIG_SETMASK, mask)
         return
-    previous = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
+    arrived: list[int] = []
+    previous = {number: signal.signal(number, lambda number, frame: arrived.append(number)) for number in HELD_SIGNALS}
     try:
         yield
     finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+        for number, handler in previous.items():
+            signal.signal(number, handler)
+        if arrived:
+            signal.raise_signal(arrived[0])
 
 
 def _prepared_target(path: str | os.PathLike) -> Path:
