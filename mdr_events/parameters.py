@@ -13,9 +13,9 @@ import numbers
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from mdr_events.validation import check_choice
+from mdr_events.validation import as_float, check_choice, shown
 
-__all__ = ["Parameters", "PARAMETER_UNITS", "PARAMETER_LONG_NAMES", "PRESETS", "from_preset"]
+__all__ = ["Parameters", "PARAMETER_UNITS", "PARAMETER_LONG_NAMES", "PRESETS", "from_preset", "check_parameters"]
 
 #: SI unit of every field, used for dataset attributes and the CLI help.
 PARAMETER_UNITS: dict[str, str] = {
@@ -120,10 +120,10 @@ class Parameters:
                     f"Parameters.{field.name}={value!r} has type "
                     f"{type(value).__name__}; allowed: {_ALLOWED[field.name]}"
                 )
-            value = float(value)
+            given, value = value, as_float(value)
             if not math.isfinite(value) or not _is_allowed(field.name, value):
                 raise ValueError(
-                    f"Parameters.{field.name}={value!r} is not allowed; "
+                    f"Parameters.{field.name}={shown(given)} is not allowed; "
                     f"allowed: {_ALLOWED[field.name]} ({PARAMETER_UNITS[field.name]})"
                 )
             object.__setattr__(self, field.name, value)
@@ -243,3 +243,11 @@ def from_preset(preset: str, **overrides: float) -> tuple[Parameters, dict[str, 
     params = params.replace(**overrides) if overrides else params
     taken = [name for name in PARAMETER_UNITS if name not in overrides]
     return params, {"parameters_preset": preset, "parameters_from_preset": ", ".join(taken)}
+
+
+def check_parameters(params: Any, name: str = "params") -> Parameters:
+    """``params`` if it is a :class:`Parameters`; else ``TypeError`` naming it and what is allowed."""
+    if not isinstance(params, Parameters):
+        raise TypeError(f"{name}={shown(params)} ({type(params).__name__}) is not allowed; allowed: a "
+                        "mdr_events.Parameters (e.g. Parameters.paper())")
+    return params

@@ -7,12 +7,13 @@ user sees the same kind of sentence whichever function rejects the value.
 from __future__ import annotations
 
 import math
+import sys
 import numbers
 from typing import Any, Collection
 
 import numpy as np
 
-__all__ = ["check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "validate_alpha"]
+__all__ = ["as_float", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "validate_alpha"]
 
 #: Characters of a value's ``repr`` shown in a message (a long list or a file's content is cut).
 SHOWN_CHARACTERS = 80
@@ -25,6 +26,15 @@ def shown(value: Any) -> str:
     return text if len(text) <= SHOWN_CHARACTERS else text[: SHOWN_CHARACTERS - 3] + "..."
 
 
+def as_float(value: numbers.Real) -> float:
+    """A real number as a float; an integer too large for a double (``10**400``) as ``inf``, which every check then
+    refuses as not finite (``float()`` raises ``OverflowError`` for it)."""
+    try:
+        return float(value)
+    except OverflowError:
+        return math.inf if value > 0 else -math.inf
+
+
 def check_real(name: str, value: Any, allowed: str, valid=None, finite: bool = True) -> float:
     """``value`` as a Python float if it is one real number (not a bool, complex or string), finite (unless
     ``finite`` is false: then not nan) and ``valid`` (a predicate on the float) holds; else ``TypeError`` /
@@ -34,10 +44,19 @@ def check_real(name: str, value: Any, allowed: str, valid=None, finite: bool = T
     """
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         raise TypeError(f"{name}={shown(value)} ({type(value).__name__}) is not allowed; allowed: {allowed}")
-    number = float(value)
+    number = as_float(value)
     if not ((math.isfinite(number) if finite else number == number) and (valid is None or valid(number))):
         raise ValueError(f"{name}={shown(value)} is not allowed; allowed: {allowed}")
     return number
+
+
+#: The largest and smallest magnitude of a scale of a run or of a sample read: the square roots of the largest double
+#: and of the smallest normal one, so that a product (or a square) of two stays finite and normal.
+SCALE_MAX = math.sqrt(sys.float_info.max)
+SCALE_MIN = math.sqrt(sys.float_info.min)
+#: The largest count any argument takes (steps, samples, workers): far beyond every resource limit, and exactly a
+#: double, so that sizes derived from it stay numbers.
+MAX_COUNT = 2**53
 
 
 def check_count(name: str, value: Any, minimum: int) -> int:
@@ -47,6 +66,9 @@ def check_count(name: str, value: Any, minimum: int) -> int:
                         f"allowed: an integer >= {minimum}")
     if value < minimum:
         raise ValueError(f"{name}={shown(value)} is not allowed; allowed: an integer >= {minimum}")
+    if value > MAX_COUNT:  # (a count beyond any run's reach, e.g. 10**400, which no float holds)
+        raise ValueError(f"{name}={shown(value)} is not allowed; allowed: an integer >= {minimum} and at most "
+                         f"{MAX_COUNT:.0e}")
     return int(value)
 
 
@@ -64,7 +86,7 @@ def real_array(name: str, value: Any, allowed: str) -> np.ndarray:
     if array.dtype.kind == "O":  # a list mixing Python numbers with NumPy scalars, Fractions, ...
         if not all(isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_)) for v in array.flat):
             raise TypeError(f"{name}={shown(value)} is not allowed; allowed: {allowed}")
-        return array.astype(float)
+        return np.vectorize(as_float, otypes=[float])(array) if array.size else array.astype(float)
     if array.dtype.kind not in "iuf":
         kind = _KIND_NAMES.get(array.dtype.kind, str(array.dtype))
         raise TypeError(f"{name}={shown(value)} (of {kind} values) is not allowed; allowed: {allowed}")

@@ -291,3 +291,57 @@ def test_a_long_read_says_how_far_it_is(tmp_path, capsys, monkeypatch):
     heard = []
     candidates.read_candidate(path, progress=heard.append)
     assert heard == [f"reading {path}: 500 of 1200 rows", f"reading {path}: 1000 of 1200 rows"]
+
+
+# --- the fresh round's findings (a helper's ~500 cases): mended here ---------------------------------------------
+
+@pytest.mark.parametrize("make", [
+    lambda: PAPER.replace(R=10**400),
+    lambda: me.PowerLaw(10**400, 2.0),
+    lambda: me.FrictionLaw("coulomb", mu=10**400),
+    lambda: me.simulate(PAPER, "A", alpha=[20.0], n_steps=10**400),
+    lambda: me.simulate(PAPER, "A", alpha=10**400),
+])
+def test_an_integer_too_large_for_a_double_is_named_not_an_overflow(make):
+    with pytest.raises(ValueError, match="is not allowed; allowed"):
+        make()
+
+
+@pytest.mark.parametrize("call", [lambda: me.simulate("p", "A", alpha=20), lambda: me.phase_diagram("p"),
+                                  lambda: me.cross_check("p", "A", [20]),
+                                  lambda: me.validate({"time": [0, 1], "normal_force": [0, 1]}, "p", "A", 20.0)])
+def test_parameters_of_another_type_are_named(call):
+    with pytest.raises(TypeError, match=r"params='p' \(str\) is not allowed; allowed: a mdr_events.Parameters"):
+        call()
+
+
+def test_an_output_directory_with_a_name_too_long_creates_nothing(capsys, tmp_path, monkeypatch):
+    """--out a/<300 characters> left ./a behind."""
+    monkeypatch.chdir(tmp_path)
+    err = one_line(capsys, main(["simulate", "--scenario", "A", "--alpha", "20", "--n-steps", "2000", "--out",
+                                 "a/" + "x" * 300]))
+    assert "has 300 bytes, more than a file system's 255" in err and list(tmp_path.iterdir()) == []
+
+
+def test_a_fifo_or_a_symbolic_link_is_not_replaced_by_a_file(tmp_path):
+    import os
+    os.mkfifo(tmp_path / "fifo")
+    (tmp_path / "target.nc").write_text("")
+    (tmp_path / "link.nc").symlink_to(tmp_path / "target.nc")
+    dataset = xr.Dataset({"a": ("x", np.zeros(2))})
+    with pytest.raises(ValueError, match="it is not a regular file, which the file would replace"):
+        write_netcdf(dataset, tmp_path / "fifo")
+    with pytest.raises(ValueError, match="it is a symbolic link"):
+        write_netcdf(dataset, tmp_path / "link.nc")
+    assert (tmp_path / "link.nc").is_symlink() and not (tmp_path / "fifo").is_file()
+
+
+def test_samples_beyond_double_precision_s_squares_and_a_noise_too_small_are_refused(spring_run):
+    """A normal force × 1e300 printed overflow warnings and wrote rms_error = inf; a noise of 1e-300 N made the fit's
+    χ² infinite."""
+    run = {"time": spring_run["time"].values, "normal_force": spring_run["normal_force"].values * 1e300}
+    with pytest.raises(ValueError, match=r"'normal_force' holds .* at data row .*allowed: magnitudes up to 1.3e\+154"):
+        me.validate(run, PAPER, "A", 20.0)
+    measured = {"time": spring_run["time"].values, "normal_force": spring_run["normal_force"].values}
+    with pytest.raises(ValueError, match=r"noise\['normal_force'\]=1e-300 is not allowed"):
+        me.fit(measured, "A", 20.0, free=["E"], start=PAPER, noise={"normal_force": 1e-300})

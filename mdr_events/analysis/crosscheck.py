@@ -28,7 +28,7 @@ import xarray as xr
 
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.simulate import case_dimension, simulate
-from mdr_events.parameters import Parameters
+from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.theory import analytic
 from mdr_events.validation import check_choice, validate_alpha
 
@@ -138,6 +138,7 @@ def cross_check(params: Parameters, scenario: str = "A", alpha=(10.0, 15.0, 20.0
     xarray.Dataset
         The variables of :data:`CROSS_CHECK_VARIABLES` along ``alpha`` (see the module's docstring).
     """
+    check_parameters(params)
     check_choice("scenario", scenario, analytic.SCENARIOS)
     angles = np.atleast_1d(validate_alpha(alpha))
     continuum_ds = simulate(params, scenario, alpha=angles, method="continuum")

@@ -61,7 +61,7 @@ from mdr_events.models.indenters import SimulatedProfile, check_simulated_profil
 from mdr_events.models.paths import Path
 from mdr_events.models.scales import check_representable
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
-from mdr_events.validation import check_real, shown
+from mdr_events.validation import SCALE_MAX, check_real, shown
 
 __all__ = ["fit", "FitResult", "OptimizerRun", "synthetic_measurement", "model_curves", "curves_of", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
            "FIT_CONTENT", "SYNTHETIC_CONTENT", "FREE_NAMES", "FITTED_QUANTITIES", "LOG_SCALED", "OFFSETS"]
@@ -311,8 +311,12 @@ def _measurement(read: Candidate, path: Path, time_origin, noise: Mapping[str, f
                              f"({', '.join(values)})")
     for name, series in values.items():
         given[name] = name in noise
-        sigma[name] = check_real(f"noise[{name!r}]", noise[name], f"a number > 0 ({QUANTITY_UNITS[name]})",
-                                 lambda value: value > 0) if given[name] else estimate_noise(series)
+        largest = float(np.nanmax(np.abs(series), initial=0.0))
+        # a residual over the noise, and its square, must stay finite
+        sigma[name] = check_real(f"noise[{name!r}]", noise[name], f"a number > 0 ({QUANTITY_UNITS[name]}) and at least "
+                                 f"{largest / SCALE_MAX:.3g}, the data's largest magnitude over {SCALE_MAX:.2g}",
+                                 lambda value: value > 0 and largest <= value * SCALE_MAX) if given[name] else \
+            estimate_noise(series)
     return Measurement(times_from_contact(read, path, time_origin) + path.first_contact_time(), values, sigma, given, read)
 
 

@@ -50,7 +50,7 @@ from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solv
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import scenario_paths
-from mdr_events.parameters import Parameters
+from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.friction import FrictionLaw, as_friction_law, friction_attrs
 
 __all__ = ["validate", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
@@ -232,6 +232,7 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
         (``"pass"``: every quantity *compared* within ``tolerance``), and ``quantities_not_compared`` and
         ``unused_columns`` (columns not named as a quantity: name them with ``names=`` to check them).
     """
+    check_parameters(params)
     if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and 0 < tolerance < math.inf):
         raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a finite number > 0")
     profile = check_simulated_profile(profile)

@@ -19,6 +19,7 @@ import xarray as xr
 
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.profiles import TabulatedProfile
+from mdr_events.validation import SCALE_MAX
 
 __all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor", "check_run_is_finite",
            "UNDEFINED_OUT_OF_CONTACT"]
@@ -265,6 +266,12 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
                          "allowed: shares from 0 to 1 (nan where no spring is in contact); a percentage needs "
                          "units={'sliding_fraction': '%'}")
     for quantity, values in found.items():
+        huge = np.flatnonzero(np.isfinite(values) & (np.abs(values) > SCALE_MAX))
+        if huge.size:
+            row = int(huge[0])
+            raise ValueError(f"{source}: column {names.get(quantity, quantity)!r} holds {float(values[row]):.3g} (SI) at "
+                             f"data row {row + 1}{_more(huge.size)}; allowed: magnitudes up to {SCALE_MAX:.2g} in SI "
+                             "units, so that their squares stay finite (check the unit)")
         infinite = np.flatnonzero(np.isinf(values))
         if infinite.size:
             row = int(infinite[0])

@@ -117,12 +117,16 @@ def prepare_output_directory(path: Any, name: str) -> Path:
     directory = check_file_path(name, path, f"{_ALLOWED_PATH} naming {_ALLOWED_DIRECTORY}")
     why = _directory_problem(directory)
     if why is not None:
-        raise ValueError(f"{name}={os.fspath(path)!r} is not allowed ({why}); allowed: {_ALLOWED_DIRECTORY}")
+        raise ValueError(f"{name}={shown(os.fspath(path))} is not allowed ({why}); allowed: {_ALLOWED_DIRECTORY}")
     return directory
 
 
 def _directory_problem(directory: Path) -> str | None:
-    """Why ``directory`` cannot take output (:func:`prepare_output_directory`), or ``None``."""
+    """Why ``directory`` cannot take output (:func:`prepare_output_directory`), or ``None``: checked before anything
+    is created, a name of it too long for a file system (which would fail after its parents were made) among them."""
+    long = [part for part in directory.parts if len(part.encode()) > MAX_NAME_BYTES]
+    if long:
+        return f"its part {shown(long[0])} has {len(long[0].encode())} bytes, more than a file system's {MAX_NAME_BYTES}"
     absolute = directory.absolute()
     existing = absolute
     while not os.path.exists(existing):  # the nearest ancestor that exists (os.path: False on any error)
@@ -172,6 +176,11 @@ def check_output_file(name: str, path: Any) -> Path:
     text = os.fspath(path)
     if os.path.isdir(target):
         raise ValueError(f"{name}={text!r} is not allowed (it is a directory); allowed: {_ALLOWED_FILE}")
+    if os.path.lexists(target) and (os.path.islink(target) or not os.path.isfile(target)):
+        # a FIFO, a device (/dev/null as root), a socket or a symbolic link would be replaced by a regular file
+        kind = "a symbolic link" if os.path.islink(target) else "not a regular file"
+        raise ValueError(f"{name}={text!r} is not allowed (it is {kind}, which the file would replace); allowed: "
+                         f"{_ALLOWED_FILE}, a regular file if it exists")
     if len(target.name.encode()) + _TEMPORARY_EXTRA_BYTES > MAX_NAME_BYTES:
         raise ValueError(f"{name}={shown(text)} is not allowed (its name has {len(target.name.encode())} bytes); "
                          f"allowed: {_ALLOWED_FILE}")

@@ -11,7 +11,6 @@ that is exactly 0 (no adhesion, no ``τ0``) is fine.
 from __future__ import annotations
 
 import math
-import sys
 import warnings
 from typing import Callable, NamedTuple
 
@@ -20,13 +19,10 @@ from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic, mindlin
+from mdr_events.validation import SCALE_MAX, SCALE_MIN
 
 __all__ = ["SCALE_MAX", "SCALE_MIN", "Scale", "run_scales", "check_representable"]
 
-#: The largest and smallest magnitude of a scale: the square roots of the largest double and of the smallest normal
-#: one, so that a product of two scales stays finite and normal.
-SCALE_MAX = math.sqrt(sys.float_info.max)
-SCALE_MIN = math.sqrt(sys.float_info.min)
 
 
 class Scale(NamedTuple):

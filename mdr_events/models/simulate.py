@@ -19,7 +19,7 @@ from mdr_events.models.scales import check_representable
 from mdr_events.models.paths import Path
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
-from mdr_events.parameters import Parameters
+from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.models.continuum.caps import check_supported
 from mdr_events.theory import analytic
@@ -386,6 +386,7 @@ def simulate(
         label that is not a non-empty string or is repeated, ``alpha`` with
         custom paths.
     """
+    check_parameters(params)
     check_choice("method", method, METHODS)
     if limits is None:
         limits = DEFAULT_LIMITS

@@ -10,7 +10,7 @@ import xarray as xr
 from mdr_events.io.agreement import RoundOff, register_accuracy
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits
-from mdr_events.parameters import Parameters
+from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.friction import FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.profiles import Profile, TabulatedProfile, profile_attrs
 from mdr_events.theory import analytic, mindlin, power_law, tabulated
@@ -81,6 +81,7 @@ def phase_diagram(
         scenario B, ``jump_off_depth`` (the displacement-controlled pull-off
         depth on the ``Δγ1`` branch).
     """
+    check_parameters(params)
     check_choice("scenario", scenario, analytic.SCENARIOS)
     angles = validate_alpha(default_angles() if alpha is None else alpha)
     if angles.ndim != 1 or angles.size == 0:
