@@ -345,3 +345,22 @@ def test_samples_beyond_double_precision_s_squares_and_a_noise_too_small_are_ref
     measured = {"time": spring_run["time"].values, "normal_force": spring_run["normal_force"].values}
     with pytest.raises(ValueError, match=r"noise\['normal_force'\]=1e-300 is not allowed"):
         me.fit(measured, "A", 20.0, free=["E"], start=PAPER, noise={"normal_force": 1e-300})
+
+
+def test_a_study_with_a_bad_run_prints_no_progress_before_its_error(capsys, tmp_path, spring_run):
+    """A [validate] table whose second run is broken printed 'validate: good.csv' before the error (2-3 lines)."""
+    _csv(tmp_path / "good.csv", spring_run)
+    (tmp_path / "bad.csv").write_text("time,normal_force\n0,0\n1,inf\n")
+    study = tmp_path / "study.toml"
+    study.write_text('[validate]\nruns = ["good.csv", "bad.csv"]\nscenario = "A"\nalpha = 20\ntolerance = 0.01\n\n'
+                     f'[output]\ndirectory = {str(tmp_path / "o")!r}\n')
+    status = main(["run", str(study)])
+    out, err = capsys.readouterr()
+    assert status == 2 and out == "" and err.count("\n") == 1 and "bad.csv" in err and "inf" in err
+    assert not (tmp_path / "o").exists()
+
+
+def test_a_phase_diagram_beyond_double_precision_is_refused_in_one_line(capsys, tmp_path):
+    """E = 1e-150 Pa (refused by the simulators) wrote d_crit = +inf at 438 angles, with overflow warnings."""
+    err = one_line(capsys, main(["phase-diagram", "--scenario", "A", "--E", "1e-150", "--out", str(tmp_path / "o")]))
+    assert "the critical shift" in err and "RuntimeWarning" not in err and not (tmp_path / "o").exists()

@@ -465,7 +465,6 @@ def _validations(study: Study, progress: Callable[[str], None]) -> list[tuple[st
         files.append((run, file, stem))
     reports = []
     for run, file, stem in files:
-        progress(f"validate: {run}")
         try:
             report = validate(file, study.params, path, limits=study.limits, profile=study.profile,
                               friction=study.friction, **options)
@@ -473,6 +472,8 @@ def _validations(study: Study, progress: Callable[[str], None]) -> list[tuple[st
             raise StudyError(f"{where}: [validate] {error}") from None
         report.attrs.update(study.provenance, path_description=description)
         reports.append((run, stem, report))
+    for run, _, _ in reports:  # said once every run was read: a bad one prints its one line, no progress before it
+        progress(f"validate: {run}")
     return [(run, render_validation(report, stem)) for run, stem, report in reports]
 
 
@@ -493,11 +494,11 @@ def _fit_report(study: Study, progress: Callable[[str], None]) -> tuple[str, Ren
         description = "the study's [path]" if case is None else f"scenario {case[0]}, α = {case[1]:g}°"
         options = {key: table[key] for key in ("names", "units", "time_origin", "noise") if key in table}
         bounds = {name: tuple(pair) for name, pair in table.get("bounds", {}).items()}
-        progress(f"fit: {table['data']} (free: {', '.join(table['free'])})")
         result = fit(data, *motion, free=table["free"], start=study.params, bounds=bounds, limits=study.limits,
                      profile=study.profile, friction=study.friction, **options)
     except (ValueError, TypeError) as error:
         raise StudyError(f"{where}: [fit] {error}") from None
+    progress(f"fit: {table['data']} (free: {', '.join(table['free'])})")  # once it ran: no line before an error
     result.dataset.attrs.update(study.provenance, path_description=description)
     return f"fit {table['data']}", render_fit(result.dataset, stem)
 
