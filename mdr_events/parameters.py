@@ -167,7 +167,8 @@ class Parameters:
             Indenter radius in m: 0.03 or 0.1 (the two radii of the paper).
             For another radius use ``Parameters.paper().replace(R=...)``.
         """
-        if not any(math.isclose(R, allowed, rel_tol=1e-12) for allowed in (0.03, 0.1)):
+        if isinstance(R, bool) or not isinstance(R, numbers.Real) or \
+                not any(math.isclose(as_float(R), allowed, rel_tol=1e-12) for allowed in (0.03, 0.1)):
             raise ValueError(
                 f"Parameters.paper(R={R!r}): the paper uses R = 0.03 m or 0.1 m; "
                 "for another radius use Parameters.paper().replace(R=...)"

@@ -364,3 +364,32 @@ def test_a_phase_diagram_beyond_double_precision_is_refused_in_one_line(capsys, 
     """E = 1e-150 Pa (refused by the simulators) wrote d_crit = +inf at 438 angles, with overflow warnings."""
     err = one_line(capsys, main(["phase-diagram", "--scenario", "A", "--E", "1e-150", "--out", str(tmp_path / "o")]))
     assert "the critical shift" in err and "RuntimeWarning" not in err and not (tmp_path / "o").exists()
+
+
+@pytest.mark.parametrize("call, words", [
+    (lambda: me.Parameters.paper(R="x"), r"Parameters.paper\(R='x'\): the paper uses R = 0.03 m or 0.1 m"),
+    (lambda: me.validate({"time": [0, 1], "normal_force": [0, 1]}, PAPER, "A", 20.0, units="ms"),
+     r"units='ms' \(str\) is not allowed; allowed: a mapping"),
+    (lambda: me.sweep({"tau0": [4.2e4]}, "A", 20.0, base=PAPER, scheduler="serial", progress="x"),
+     r"progress='x' \(str\) is not allowed"),
+    (lambda: me.validate({"time": [0.0, 1.0], "normal_force": np.array([True, False])}, PAPER, "A", 20.0),
+     r"column 'normal_force'=.* \(of bool values\) is not allowed"),
+    (lambda: me.validate(xr.Dataset({"normal_force": ("time", np.array(["1", "2"]))}, coords={"time": [0.0, 1.0]}),
+                         PAPER, "A", 20.0), r"column 'normal_force' holds <U1 values; allowed: real numbers"),
+])
+def test_messages_name_the_argument(call, words):
+    with pytest.raises((TypeError, ValueError), match=words):
+        call()
+
+
+def test_a_time_origin_that_collapses_the_times_is_refused_by_fit_as_by_validate(spring_run):
+    measured = {"time": spring_run["time"].values, "normal_force": spring_run["normal_force"].values}
+    with pytest.raises(ValueError, match=r"time_origin=1e\+300 is not allowed: the times minus it are no longer"):
+        me.fit(measured, "A", 20.0, free=["E"], start=PAPER, time_origin=1e300)
+
+
+def test_a_quantity_given_twice_in_units_is_refused(capsys, tmp_path, spring_run):
+    data = _csv(tmp_path / "run.csv", spring_run)
+    err = one_line(capsys, main(["validate", str(data), "--scenario", "A", "--alpha", "20", "--units",
+                                 "normal_force=N,normal_force=mN", "--out", str(tmp_path / "o")]))
+    assert "'normal_force' is given twice" in err

@@ -543,6 +543,9 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     samples = None if history_samples is None else check_count("history_samples", history_samples, 2)
     if not isinstance(limits, Limits):
         raise TypeError(f"limits={shown(limits)} ({type(limits).__name__}) is not allowed; allowed: a Limits")
+    if progress is not None and not callable(progress):
+        raise TypeError(f"progress={shown(progress)} ({type(progress).__name__}) is not allowed; allowed: None or a "
+                        "function called with (runs done, runs in all)")
     friction = as_friction_law(friction)
     spec = SweepSpec(base, scenario, alpha, method, the_grid.names, tolerances,
                      dx, n_steps, wanted, samples, limits, check_simulated_profile(profile), friction)

@@ -97,7 +97,12 @@ def times_from_contact(candidate: Candidate, path: Path, time_origin) -> np.ndar
     if isinstance(time_origin, bool) or not isinstance(time_origin, (int, float)) or not math.isfinite(time_origin):
         raise ValueError(f"time_origin={time_origin!r} is not allowed; allowed: {', '.join(map(repr, TIME_ORIGINS))} "
                          "or the candidate's time of first contact (s), a finite number")
-    return candidate.time - float(time_origin)
+    times = candidate.time - float(time_origin)
+    if np.any(np.diff(times) <= 0):  # (1e300 s: every time rounds to the same number)
+        raise ValueError(f"time_origin={time_origin!r} is not allowed: the times minus it are no longer distinct in "
+                         "double precision; allowed: the candidate's time of first contact (s), of the size of its "
+                         "times")
+    return times
 
 
 def _in_contact(quantities: Mapping[str, np.ndarray]) -> np.ndarray:

@@ -250,6 +250,8 @@ def _pairs(option: str, text: str | None, allowed: Sequence[str]) -> dict[str, s
                              "separated by commas, e.g. time=t,normal_force=Fn")
         if key not in allowed:
             raise UsageError(f"{option} {text!r}: {key!r} is not allowed; allowed: {', '.join(allowed)}")
+        if key in pairs:
+            raise UsageError(f"{option} {text!r}: {key!r} is given twice; allowed: each quantity once")
         pairs[key] = value
     return pairs
 

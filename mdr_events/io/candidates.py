@@ -19,11 +19,14 @@ import xarray as xr
 
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.profiles import TabulatedProfile
-from mdr_events.validation import SCALE_MAX
+from mdr_events.validation import SCALE_MAX, real_array, shown
 
 __all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor", "check_run_is_finite",
            "UNDEFINED_OUT_OF_CONTACT"]
 
+#: What the mapping arguments of :func:`read_candidate` look like, for a message.
+MAPPING_EXAMPLES = {"names": "{'time': 't', 'normal_force': 'Fn'}", "units": "{'time': 'ms', 'normal_force': 'mN'}",
+                    "select": "{'alpha': 20}"}
 #: The quantities a candidate may hold, with their SI unit; ``time`` is required, and at least one other.
 CANDIDATE_QUANTITIES: dict[str, str] = {
     "time": "s",
@@ -168,11 +171,18 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
         if single:
             candidate = candidate.isel({dim: 0 for dim in single})
         names = list(candidate.variables)
+        text = [name for name in names if name in CANDIDATE_QUANTITIES and not
+                np.issubdtype(candidate[name].dtype, np.number)]
+        if text:  # a quantity's column of text was dropped silently (a pass on the others)
+            raise TypeError(f"{source}: column {text[0]!r} holds {candidate[text[0]].dtype} values; allowed: real "
+                            "numbers")
         return ({name: np.asarray(candidate[name].values, dtype=float).ravel() for name in names
                  if candidate[name].ndim <= 1 and np.issubdtype(candidate[name].dtype, np.number)},
                 {name: str(candidate[name].attrs["units"]) for name in names if "units" in candidate[name].attrs})
     if isinstance(candidate, Mapping):
-        return {str(name): np.asarray(values, dtype=float).ravel() for name, values in candidate.items()}, {}
+        return {str(name): real_array(f"{source}: column {str(name)!r}", values,
+                                      "real numbers (not bools, complex numbers or strings)").ravel()
+                for name, values in candidate.items()}, {}
     raise TypeError(f"candidate of type {type(candidate).__name__} is not allowed; allowed: an xarray.Dataset, a "
                     "mapping of arrays, or the path of a CSV or netCDF file")
 
@@ -223,6 +233,10 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         an infinite value (with its first row; ``nan`` is a missing sample).
     """
     source = str(candidate) if isinstance(candidate, (str, os.PathLike)) else f"candidate ({type(candidate).__name__})"
+    for argument, given in (("names", names), ("units", units), ("select", select)):
+        if given is not None and not isinstance(given, Mapping):
+            raise TypeError(f"{argument}={shown(given)} ({type(given).__name__}) is not allowed; allowed: a mapping, "
+                            f"e.g. {MAPPING_EXAMPLES[argument]}")
     columns, declared = _columns_and_units(candidate, source, limits, select, progress)
     names = dict(names or {})
     units = dict(units or {})
