@@ -41,7 +41,7 @@ import abc
 import math
 import re
 from dataclasses import dataclass
-from typing import Any, Mapping
+from typing import Any, Callable, Mapping
 
 import numpy as np
 import xarray as xr
@@ -49,7 +49,7 @@ import xarray as xr
 __all__ = ["Accuracy", "RoundOff", "RootFound", "Integrated", "Quotient", "ExtremumTime", "ROUND_OFF_ULPS",
            "ROUND_OFF", "register_accuracy", "accuracy_of", "attribute_accuracy", "tolerance_of",
            "result_differences", "assert_results_agree", "rounded_text_differences", "Unit", "values_of",
-           "attribute_of", "force_sensitivity", "SENSITIVITIES"]
+           "attribute_of", "force_sensitivity"]
 
 #: Units of round-off of a closed form or a sum, of the largest magnitude of its array. NumPy's SIMD paths of
 #: the transcendental functions are accurate to 4 ulp on every CPU (its documented bound); a closed form chains up
@@ -147,10 +147,6 @@ def force_sensitivity(dataset: xr.Dataset) -> float:
     return 3.0
 
 
-#: Sensitivities to the root read off a dataset, by name (:class:`RootFound`).
-SENSITIVITIES = {"normal_force": force_sensitivity}
-
-
 @dataclass(frozen=True)
 class _RelativeAccuracy(Accuracy):
     """A relative accuracy held in the dataset's ``attribute``, plus round-off, of the array's largest magnitude (or
@@ -175,11 +171,10 @@ class RootFound(_RelativeAccuracy):
     array's largest magnitude (or of ``scale_of``'s)."""
 
     attribute: str = "radius_rtol"
-    sensitivity: float | str = 1.0
+    sensitivity: float | Callable[[xr.Dataset], float] = 1.0
 
     def share(self, dataset, name):
-        sensitivity = self.sensitivity if isinstance(self.sensitivity, float) else SENSITIVITIES[self.sensitivity](
-            dataset)
+        sensitivity = self.sensitivity(dataset) if callable(self.sensitivity) else self.sensitivity
         return sensitivity * attribute_of(dataset, self.attribute, name) + ROUND_OFF
 
     def describe(self):
@@ -226,11 +221,8 @@ def _time_of_extremum_tolerance(t: np.ndarray, f: np.ndarray, at: int, value_tol
     time moves by ``sqrt(2 tol / |F''|)``, with ``F''`` the curvature of the parabola through three samples (large at
     a kink, where the time is sharp)."""
     finite = np.isfinite(f)
-    lo, hi = at, at
-    while lo > 0 and finite[lo - 1] and lo > at - 1:
-        lo -= 1
-    while hi < f.size - 1 and finite[hi + 1] and hi < at + 1:
-        hi += 1
+    lo = at - 1 if at > 0 and finite[at - 1] else at  # the neighbours in the run, on either side
+    hi = at + 1 if at < f.size - 1 and finite[at + 1] else at
     slopes = [abs((f[k + 1] - f[k]) / (t[k + 1] - t[k])) for k in range(lo, hi)]
     if hi - lo == 2:  # inside the run: three samples
         c = t[lo:hi + 1], f[lo:hi + 1]

@@ -272,31 +272,28 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
                          "least two finite, strictly increasing values")
     # a share: of the springs in contact, those that slide
     shares = found.get("sliding_fraction", np.zeros(0))
-    outside = np.flatnonzero((shares < 0) | (shares > 1))
-    if outside.size:
-        row = int(outside[0])
-        raise ValueError(f"{source}: column {names.get('sliding_fraction', 'sliding_fraction')!r} holds "
-                         f"{float(shares[row])!r} at data row {row + 1} (time {time[row]:.9g} s){_more(outside.size)}; "
-                         "allowed: shares from 0 to 1 (nan where no spring is in contact); a percentage needs "
-                         "units={'sliding_fraction': '%'}")
+    _refuse_rows(source, names.get("sliding_fraction", "sliding_fraction"), shares, (shares < 0) | (shares > 1), time,
+                 "shares from 0 to 1 (nan where no spring is in contact); a percentage needs "
+                 "units={'sliding_fraction': '%'}", written=lambda value: repr(float(value)))
     for quantity, values in found.items():
-        huge = np.flatnonzero(np.isfinite(values) & (np.abs(values) > SCALE_MAX))
-        if huge.size:
-            row = int(huge[0])
-            raise ValueError(f"{source}: column {names.get(quantity, quantity)!r} holds {float(values[row]):.3g} (SI) at "
-                             f"data row {row + 1}{_more(huge.size)}; allowed: magnitudes up to {SCALE_MAX:.2g} in SI "
-                             "units, so that their squares stay finite (check the unit)")
-        infinite = np.flatnonzero(np.isinf(values))
-        if infinite.size:
-            row = int(infinite[0])
-            raise ValueError(f"{source}: column {names.get(quantity, quantity)!r} holds {values[row]} at data row "
-                             f"{row + 1} (time {time[row]:.9g} s){_more(infinite.size)}; allowed: finite values (nan or "
-                             "an empty field for a missing sample)")
+        column = names.get(quantity, quantity)
+        _refuse_rows(source, column, values, np.isfinite(values) & (np.abs(values) > SCALE_MAX), time,
+                     f"magnitudes up to {SCALE_MAX:.2g} in SI units, so that their squares stay finite (check the "
+                     "unit)", written=lambda value: f"{float(value):.3g} (SI)")
+        _refuse_rows(source, column, values, np.isinf(values), time,
+                     "finite values (nan or an empty field for a missing sample)")
     return Candidate(time, found, source, tuple(name for name in columns if name not in used))
 
 
-def _more(count: int) -> str:
-    return f" and {count - 1} more" if count > 1 else ""
+def _refuse_rows(source: str, column: str, values: np.ndarray, bad: np.ndarray, time: np.ndarray, allowed: str,
+                 written: Callable[[float], str] = str, context: str = "") -> None:
+    """Raise ``ValueError`` naming the column, the first ``bad`` row (its value and time) and how many more, if any."""
+    rows = np.flatnonzero(bad)
+    if rows.size:
+        row = int(rows[0])
+        more = f" and {rows.size - 1} more" if rows.size > 1 else ""
+        raise ValueError(f"{source}: column {column!r} holds {written(values[row])} at data row {row + 1} (time "
+                         f"{time[row]:.9g} s){more}{context}; allowed: {allowed}")
 
 
 #: Quantities undefined out of contact (the share of the springs in contact that slide, with none in contact).
@@ -315,10 +312,6 @@ def check_run_is_finite(candidate: Candidate, in_contact: np.ndarray, names: Map
             raise ValueError(f"{candidate.source}: column {names.get(quantity, quantity)!r} holds no finite value; "
                              "allowed: a run's samples (leave the column out if the simulator does not write it)")
         last = int(np.flatnonzero(finite)[-1])
-        inside = np.flatnonzero(~finite[:last])
-        if inside.size:
-            row = int(inside[0])
-            raise ValueError(f"{candidate.source}: column {names.get(quantity, quantity)!r} holds nan at data row "
-                             f"{row + 1} (time {candidate.time[row]:.9g} s){_more(inside.size)}, inside the run "
-                             f"(finite values follow up to row {last + 1}); allowed: a finite value at every sample "
-                             "up to the run's end (nan only after it)")
+        _refuse_rows(candidate.source, names.get(quantity, quantity), values, ~finite & (np.arange(values.size) < last),
+                     candidate.time, "a finite value at every sample up to the run's end (nan only after it)",
+                     context=f", inside the run (finite values follow up to row {last + 1})")

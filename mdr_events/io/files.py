@@ -426,8 +426,7 @@ def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
     if not isinstance(dataset, xr.Dataset):
         raise TypeError(f"dataset={shown(dataset)} ({type(dataset).__name__}) is not allowed; allowed: an "
                         "xarray.Dataset")
-    check_output_file("path", path)
-    return atomic_write(path, netcdf_writer(dataset), suffix=".nc")
+    return atomic_write(path, netcdf_writer(dataset), suffix=".nc")  # (it checks the path before writing)
 
 
 def open_result(path: str | os.PathLike) -> xr.Dataset:

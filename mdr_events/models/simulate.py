@@ -9,7 +9,8 @@ from typing import Any, Literal, Mapping, NamedTuple, Sequence
 import numpy as np
 import xarray as xr
 
-from mdr_events.io.agreement import ExtremumTime, Integrated, Quotient, RootFound, RoundOff, register_accuracy
+from mdr_events.io.agreement import (ExtremumTime, Integrated, Quotient, RootFound, RoundOff, force_sensitivity,
+                                     register_accuracy)
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import Tolerances, run_continuum
 from mdr_events.models.continuum.solution import EXTREMUM_XTOL
@@ -119,7 +120,7 @@ def _continuum_accuracy() -> dict:
     integrated to ``rtol``, and so the events (crossings of integrated quantities); each extremum as accurate as
     its quantity, its time as the curvature there allows."""
     integrated = {name: Integrated() for name in EVENT_VARIABLES if name not in ("event_kind", "event_direction")}
-    declared = {"normal_force": RootFound(sensitivity="normal_force"), "contact_radius": RootFound(),
+    declared = {"normal_force": RootFound(sensitivity=force_sensitivity), "contact_radius": RootFound(),
                 "contact_area": RootFound(sensitivity=2.0),
                 "tangential_force": Integrated(), "sliding_fraction": Integrated(), **integrated}
     for quantity in EXTREMA_QUANTITIES:
