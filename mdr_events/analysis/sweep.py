@@ -32,6 +32,7 @@ import xarray as xr
 from mdr_events.analysis.fit import curves_of
 from mdr_events.analysis.validate import candidate_events
 from mdr_events.io.datasets import register_schema, stamp
+from mdr_events.io.files import prepare_output_directory
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import EventKind, Tolerances, extremum, solve_path, tangential_work
 from mdr_events.models.continuum.solution import scan_spans
@@ -43,7 +44,7 @@ from mdr_events.models.indenters import SimulatedProfile, check_simulated_profil
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_UNITS, Parameters
-from mdr_events.validation import check_choice, check_count, check_real, shown
+from mdr_events.validation import check_choice, check_count, check_real, real_array, shown
 
 __all__ = ["sweep", "run_chunk", "SweepSpec", "QUANTITIES", "CLOSED_FORM_QUANTITIES", "SWEEP_CONTENT", "SWEPT_NAMES",
            "TABLE_DIMENSION",
@@ -268,16 +269,22 @@ def _values(name: str, values) -> np.ndarray:
     if name not in SWEPT_NAMES:
         raise ValueError(f"grid: {name!r} is not allowed; allowed: {', '.join(SWEPT_NAMES)}")
     try:
-        array = np.atleast_1d(np.asarray(values, dtype=float))
-    except (TypeError, ValueError):
-        raise ValueError(f"grid[{name!r}]={shown(values)} is not allowed; allowed: real numbers") from None
+        array = np.atleast_1d(real_array(f"grid[{name!r}]", values, "real numbers (not bools or strings)"))
+    except TypeError as error:
+        raise ValueError(str(error)) from None
     if array.ndim != 1 or array.size == 0 or not np.all(np.isfinite(array)):
         raise ValueError(f"grid[{name!r}]={shown(values)} is not allowed; allowed: a non-empty list of finite numbers")
     return array
 
 
-def make_grid(grid) -> Grid:
-    """Check a grid: a mapping name → values (outer product) or a sequence of mappings (a table of sets)."""
+def _check_size(limits: Limits, runs: int, names: int) -> None:
+    """The grid's own array (runs × names) within ``limits``, before it is built."""
+    limits.check(f"the grid of {runs} runs", memory=BYTES_PER_STORED_VALUE * runs * names)
+
+
+def make_grid(grid, limits: Limits | None = None) -> Grid:
+    """Check a grid: a mapping name → values (outer product) or a sequence of mappings (a table of sets);
+    with ``limits``, its size is checked against them before the outer product is built."""
     if isinstance(grid, Mapping):
         if not grid:
             raise ValueError("grid={} is not allowed; allowed: a mapping of names to values, e.g. {'tau0': [...]}")
@@ -285,6 +292,8 @@ def make_grid(grid) -> Grid:
         for name, values in coords.items():
             if len(np.unique(values)) != values.size:
                 raise ValueError(f"grid[{name!r}] repeats a value; allowed: distinct values")
+        if limits is not None:  # before the outer product is built
+            _check_size(limits, math.prod(values.size for values in coords.values()), len(coords))
         mesh = np.meshgrid(*coords.values(), indexing="ij")
         return Grid(tuple(coords), coords, np.column_stack([m.ravel() for m in mesh]), table=False)
     if isinstance(grid, Sequence) and not isinstance(grid, str) and grid and all(isinstance(r, Mapping) for r in grid):
@@ -387,6 +396,8 @@ class _Store:
         if os.path.exists(self.path) and not is_store and (not os.path.isdir(self.path) or os.listdir(self.path)):
             raise ValueError(f"store={self.path!r} exists and is not a sweep's store; allowed: a new path, an empty "
                              "directory or a sweep's store (nothing else is overwritten)")
+        if not os.path.exists(self.path):
+            prepare_output_directory(self.path, "store")
         if resume and is_store:
             existing = xr.open_zarr(self.path, zarr_format=2)
             if existing.attrs.get("sweep_signature") != signature:
@@ -399,7 +410,11 @@ class _Store:
                                  np.zeros(runs, bool), histories)
         template.attrs["sweep_signature"] = signature
         encoding = {name: {"chunks": (chunk,) + template[name].shape[1:]} for name in template.data_vars}
-        template.to_zarr(self.path, mode="w", zarr_format=2, encoding=encoding, compute=True)
+        try:
+            template.to_zarr(self.path, mode="w", zarr_format=2, encoding=encoding, compute=True)
+        except OSError as error:  # what the checks before cannot see (/proc, a full disk, a read-only mount)
+            raise ValueError(f"store={self.path!r} cannot be written ({error.strerror or error}); allowed: "
+                             "a directory this user can create and write into") from None
         self.existing = None
 
     def done(self) -> np.ndarray | None:
@@ -424,6 +439,17 @@ LOOPBACK_DASHBOARD = "127.0.0.1:0"
 def default_scheduler() -> str:
     """``"local"`` where ``dask.distributed`` is installed (the extra ``mdr_events[scale]``), else ``"serial"``."""
     return "local" if importlib.util.find_spec("distributed") is not None else "serial"
+
+
+def _check_workers(workers) -> int:
+    """A local cluster's worker count: one process per core at most (each run is single-threaded and CPU-bound,
+    so more processes than cores only compete for them, each holding its own interpreter and libraries)."""
+    cores = os.cpu_count() or 1
+    workers = check_count("workers", workers, 1)
+    if workers > cores:
+        raise ValueError(f"workers={workers} is not allowed; allowed: 1 to {cores} (this machine's cores: a run is "
+                         "single-threaded, more processes only compete for them)")
+    return workers
 
 
 def _client(scheduler, workers: int | None):
@@ -512,11 +538,13 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     """
     check_choice("method", method, METHODS)
     chunk_size = check_count("chunk_size", chunk_size, 1)
-    the_grid = make_grid(grid)
+    if not isinstance(limits, Limits):
+        raise TypeError(f"limits={shown(limits)} ({type(limits).__name__}) is not allowed; allowed: a Limits")
+    the_grid = make_grid(grid, limits)
     if "dx" in the_grid.names and method != "discrete":
         raise ValueError("grid: 'dx' is not allowed with method='continuum'; allowed: with method='discrete'")
     if workers is not None:
-        workers = check_count("workers", workers, 1)
+        workers = _check_workers(workers)
     if not isinstance(tolerances, Tolerances):
         raise TypeError(f"tolerances={shown(tolerances)} ({type(tolerances).__name__}) is not allowed; allowed: a "
                         "Tolerances")
@@ -541,8 +569,6 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
         raise ValueError(f"quantities={shown(quantities)} is not allowed; allowed: distinct names from "
                          f"{', '.join(QUANTITIES)}")
     samples = None if history_samples is None else check_count("history_samples", history_samples, 2)
-    if not isinstance(limits, Limits):
-        raise TypeError(f"limits={shown(limits)} ({type(limits).__name__}) is not allowed; allowed: a Limits")
     if progress is not None and not callable(progress):
         raise TypeError(f"progress={shown(progress)} ({type(progress).__name__}) is not allowed; allowed: None or a "
                         "function called with (runs done, runs in all)")
@@ -558,6 +584,9 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     if scheduler not in ("local", "serial") and not (isinstance(scheduler, str) and "://" in scheduler):
         raise ValueError(f"scheduler={shown(scheduler)} is not allowed; allowed: 'local', 'serial' or a dask "
                          "scheduler's address such as 'tcp://host:8786'")
+    if workers is not None and scheduler != "local":
+        raise ValueError(f"workers={workers} is not allowed with scheduler={scheduler!r}; allowed: with "
+                         "scheduler='local' (a cluster at an address has its own workers)")
     values = np.full((runs, len(wanted)), np.nan)
     histories = None if samples is None else np.full((runs, len(HISTORY_QUANTITIES), samples), np.nan)
     errors = [""] * runs

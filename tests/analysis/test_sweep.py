@@ -320,3 +320,39 @@ def test_a_power_law_sweep_reports_its_own_pull_off_force_and_refuses_R(paper):
     assert float(result["normal_force_min"].values[0]) <= float(result["pull_off_force"].values[0])
     with pytest.raises(ValueError, match=r"grid sweeps R with profile=PowerLaw\(c=2000.0, n=3.0\)"):
         me.sweep({"R": [0.01, 0.03]}, "A", 20.0, base=paper, scheduler="serial", profile=PowerLaw(2e3, 3.0))
+
+
+def test_a_store_that_cannot_be_written_is_named_before_anything_runs(paper, tmp_path):
+    """Below a file, a name part longer than a file system takes, or a place the checks cannot foresee (/proc):
+    one ValueError naming store, nothing written (not a raw OSError after the runs)."""
+    afile = tmp_path / "afile"
+    afile.write_text("keep")
+    cases = [(afile / "x.zarr", "a file, not a directory"), (tmp_path / ("a" * 300), "more than a file system's 255")]
+    if os.path.isdir("/proc/self"):
+        cases.append(("/proc/x.zarr", "cannot be written"))
+    for store, reason in cases:
+        with pytest.raises(ValueError, match=re.escape(f"store={str(store)[:40]!r}"[:-1]) + ".*" + re.escape(reason)):
+            sweep({"alpha": [10.0]}, "A", base=paper, scheduler="serial", quantities=CLOSED_FORM_QUANTITIES,
+                  store=store)
+    assert afile.read_text() == "keep" and sorted(p.name for p in tmp_path.iterdir()) == ["afile"]
+
+
+def test_workers_are_bounded_by_the_cores_and_belong_to_the_local_cluster(paper):
+    cores = os.cpu_count() or 1
+    with pytest.raises(ValueError, match=re.escape(f"workers={cores + 1} is not allowed; allowed: 1 to {cores}")):
+        sweep({"tau0": [1e3]}, "A", 20.0, base=paper, scheduler="local", workers=cores + 1)
+    with pytest.raises(ValueError, match=re.escape("workers=1 is not allowed with scheduler='serial'")):
+        sweep({"tau0": [1e3]}, "A", 20.0, base=paper, scheduler="serial", workers=1)
+
+
+def test_a_grid_too_large_is_refused_before_its_outer_product_is_built(paper):
+    """10^10 runs: refused at once by the memory limit (the outer product alone would need ~600 GiB)."""
+    grid = {"tau0": np.arange(1.0, 1e5 + 1), "E": np.arange(1.0, 1e5 + 1)}
+    with pytest.raises(me.ResourceLimitError, match="the grid of 10000000000 runs needs"):
+        sweep(grid, "A", 20.0, base=paper, scheduler="serial")
+
+
+@pytest.mark.parametrize("values, kind", [([True, False], "bool"), (["1e4", "2e4"], "str"), ([1e4, 2j], "complex")])
+def test_grid_values_that_are_not_real_numbers_are_named(paper, values, kind):
+    with pytest.raises(ValueError, match=re.escape(f"grid['tau0']={values!r} (of {kind} values) is not allowed")):
+        sweep({"tau0": values}, "A", 20.0, base=paper, scheduler="serial")
