@@ -13,11 +13,14 @@ the paraboloid of :class:`~mdr_events.Parameters` by default.
 
 from __future__ import annotations
 
+import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
+from scipy import interpolate
 
-from mdr_events.validation import check_real, real_array, shown
+from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_real, real_array, shown
 
 __all__ = ["PowerLaw", "FlatPunch", "TabulatedProfile", "Profile", "profile_attrs"]
 
@@ -121,6 +124,7 @@ class TabulatedProfile:
         if f[0] != 0.0 or any(b <= a for a, b in zip(f, f[1:])):
             raise ValueError(f"TabulatedProfile.f={shown(self.f)} is not allowed; allowed: heights from 0 at r = 0, "
                              "strictly increasing (m)")
+        _check_table_scales(r, f)
         object.__setattr__(self, "r", r)
         object.__setattr__(self, "f", f)
 
@@ -135,6 +139,33 @@ class TabulatedProfile:
     def describe(self) -> str:
         """The profile in words, for a dataset's ``profile`` attribute."""
         return f"tabulated profile f(r), {len(self.r)} points to r = {self.r[-1]!r} m, f = {self.f[-1]!r} m there"
+
+
+def _check_table_scales(r: tuple[float, ...], f: tuple[float, ...]) -> None:
+    """Refuse a table whose scales do not fit in double precision: its last radius and height, its narrowest
+    interval, and the coefficients of its interpolant's slope on each interval, ``f' = c₀ + c₁ s + c₂ s²`` (the
+    Abel transform multiplies them by radii: the bounds of :mod:`mdr_events.theory.scales`, 0 allowed)."""
+    radii, heights = np.array(r), np.array(f)
+    scales = {"its last radius (m)": radii[-1], "its last height (m)": heights[-1],
+              "its narrowest interval of r (m)": np.min(np.diff(radii))}
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", RuntimeWarning)
+            slope = interpolate.PchipInterpolator(radii, heights).derivative().c
+            for order, unit in enumerate(("1", "1/m", "1/m²")):
+                scales[f"its interpolant's largest slope coefficient c{order} ({unit})"] = np.max(np.abs(slope[2 - order]))
+    except (RuntimeWarning, FloatingPointError, OverflowError) as error:
+        scales["its interpolant's slope coefficients"] = math.inf
+        failure = str(error)
+    else:
+        failure = ""
+    for what, value in scales.items():
+        if value != 0.0 and not SCALE_MIN <= abs(value) <= SCALE_MAX:
+            shown_value = f"overflow ({failure})" if failure and not math.isfinite(value) else f"{value:.3g}"
+            raise ValueError(f"TabulatedProfile(<{len(r)} points, r to {r[-1]!r} m, f to {f[-1]!r} m>) is not allowed: "
+                             f"{what} is {shown_value}; allowed: a table whose scales lie within {SCALE_MIN:.2g} to "
+                             f"{SCALE_MAX:.2g} in SI units (or are 0), so that their products stay finite in double "
+                             "precision")
 
 
 def _table_column(name: str, values) -> tuple[float, ...]:

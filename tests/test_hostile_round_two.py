@@ -3,6 +3,7 @@ runs, non-finite and overflowing results) are in tests/app/test_validate_cli.py 
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -393,3 +394,27 @@ def test_a_quantity_given_twice_in_units_is_refused(capsys, tmp_path, spring_run
     err = one_line(capsys, main(["validate", str(data), "--scenario", "A", "--alpha", "20", "--units",
                                  "normal_force=N,normal_force=mN", "--out", str(tmp_path / "o")]))
     assert "'normal_force' is given twice" in err
+
+
+# --- fit's bounds: what the optimizer cannot scale is refused; a message shows the bounds as given --------------
+
+def test_an_offsets_finite_bound_too_far_for_the_optimizer_is_refused_and_inf_is_not():
+    """±1e300 s overflowed the trust region's scaling (the distance to a bound) in warnings; ±inf is no bound."""
+    from mdr_events.analysis.fit import OFFSET_BOUND_REACH, free_parameters
+    duration, depth = 2.0, 1e-3
+    for name, scale in (("time_offset", duration), ("depth_offset", depth)):
+        free_parameters([name], PAPER, {name: (-np.inf, np.inf)}, duration, depth)
+        free_parameters([name], PAPER, {name: (-OFFSET_BOUND_REACH * scale, OFFSET_BOUND_REACH * scale)}, duration, depth)
+        with pytest.raises(ValueError, match=re.escape(f"bounds['{name}']=(-1e+300, 1e+300) is not allowed; allowed: "
+                                                       f"finite bounds within ±{OFFSET_BOUND_REACH * scale:.3g}")):
+            free_parameters([name], PAPER, {name: (-1e300, 1e300)}, duration, depth)
+
+
+@pytest.mark.parametrize("given, expected", [
+    ((0.5, 0.6), "bounds['nu']=(0.5, 0.6) is not allowed: it leaves nothing of nu's range"),
+    ((-5.0, 0.2), "bounds['nu']=(-5.0, 0.2) is not allowed: it excludes the start 0.3;"),
+])
+def test_a_refused_bound_is_shown_as_given_not_as_clipped(given, expected):
+    from mdr_events.analysis.fit import free_parameters
+    with pytest.raises(ValueError, match=re.escape(expected)):
+        free_parameters(["nu"], PAPER.replace(nu=0.3), {"nu": given}, 1.0, 1.0)

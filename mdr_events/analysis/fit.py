@@ -59,7 +59,7 @@ from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solv
 from mdr_events.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs
 from mdr_events.models.paths import Path
-from mdr_events.models.scales import check_representable
+from mdr_events.theory.scales import check_representable
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 from mdr_events.validation import SCALE_MAX, check_real, shown
 
@@ -90,6 +90,10 @@ OFFSET_LONG_NAMES = {"time_offset": "the measured clock's reading at the path's 
                      "mu": "coefficient of friction of the law's Coulomb part"}
 #: ``ν`` stays below 0.5 and above −1 by this much inside the fit (the bounds of :class:`Parameters`).
 NU_MARGIN = 1e-9
+#: A finite bound of an offset lies within this many of its scales (the path's duration, its deepest point):
+#: farther, the model leaves the measured window long before, and the optimizer's step scaling (the distance
+#: to a bound) would overflow. ``±inf`` is no bound.
+OFFSET_BOUND_REACH = 1e6
 
 #: Forward-difference step of the Jacobian in the scaled parameters. The continuum's curves are exact to
 #: about 1e-10 relative (``Tolerances.rtol``): the rounding part of a column's error is then ~1e-4, the
@@ -150,6 +154,12 @@ class ParameterEstimate(NamedTuple):
 
 def _unit(name: str) -> str:
     return OFFSET_UNITS.get(name) or PARAMETER_UNITS[name]
+
+
+def _in_unit(name: str) -> str:
+    """`` <unit>`` after a value, nothing for a dimensionless one."""
+    unit = _unit(name)
+    return "" if unit == "1" else f" {unit}"
 
 
 def _long_name(name: str) -> str:
@@ -236,6 +246,17 @@ def _default_bounds(name: str) -> tuple[float, float]:
     return -math.inf, math.inf
 
 
+def _check_offset_bounds(name: str, given: Sequence[float], duration: float, depth_scale: float) -> None:
+    """An offset's finite bounds within :data:`OFFSET_BOUND_REACH` of its scale."""
+    if name not in OFFSETS:
+        return
+    reach = OFFSET_BOUND_REACH * (duration if name == "time_offset" else depth_scale)
+    if any(math.isfinite(bound) and abs(bound) > reach for bound in given):
+        raise ValueError(f"bounds[{name!r}]=({given[0]!r}, {given[1]!r}) is not allowed; allowed: finite bounds within "
+                         f"±{reach:.3g} {_unit(name)} ({OFFSET_BOUND_REACH:g} times the path's "
+                         f"{'duration' if name == 'time_offset' else 'deepest point'}), or ±inf for no bound")
+
+
 def free_parameters(free, start: Parameters, bounds: Mapping[str, tuple[float, float]] | None,
                     duration: float, depth_scale: float, friction: FrictionLaw = TAU0) -> FreeParameters:
     """Check ``free``, ``start`` and ``bounds`` (errors name the argument, its value and what is allowed)."""
@@ -270,15 +291,21 @@ def free_parameters(free, start: Parameters, bounds: Mapping[str, tuple[float, f
                                  f"in {_unit(name)}")
             given = [check_real(f"bounds[{name!r}]", value, f"a pair (lower, upper) of numbers in {_unit(name)}",
                                 finite=False) for value in pair]
+            _check_offset_bounds(name, given, duration, depth_scale)
+            if max(low, given[0]) >= min(high, given[1]):
+                raise ValueError(f"bounds[{name!r}]=({given[0]!r}, {given[1]!r}) is not allowed: it leaves nothing of "
+                                 f"{name}'s range [{low!r}, {high!r}]{_in_unit(name)}; allowed: lower < upper, "
+                                 "overlapping that range")
             low, high = max(low, given[0]), min(high, given[1])
+        shown_bounds = f"({given[0]!r}, {given[1]!r})" if name in bounds else f"({low!r}, {high!r})"
         value = _start_value(name, start, friction)
         if name in LOG_SCALED and not value > 0:
             where = "friction.mu" if name == FRICTION_NAME else f"start.{name}"
             raise ValueError(f"{where}={value!r} is not allowed for a free {name}; allowed: > 0 (it is fitted "
                              "on a log scale)")
         if not low <= value <= high or not low < high:
-            raise ValueError(f"bounds[{name!r}]=({low!r}, {high!r}) is not allowed: it excludes the start "
-                             f"{value!r} {_unit(name)}; allowed: lower < upper with the start between them")
+            raise ValueError(f"bounds[{name!r}]={shown_bounds} is not allowed: it excludes the start "
+                             f"{value!r}{_in_unit(name)}; allowed: lower < upper with the start between them")
         lower.append(low)
         upper.append(high)
     return FreeParameters(names, start, np.array(lower), np.array(upper), duration, depth_scale, friction)

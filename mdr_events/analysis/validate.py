@@ -44,7 +44,7 @@ import xarray as xr
 
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.io.candidates import Candidate, check_run_is_finite, read_candidate
-from mdr_events.models.scales import check_representable
+from mdr_events.theory.scales import check_representable
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs

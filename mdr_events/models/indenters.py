@@ -18,6 +18,7 @@ from mdr_events.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
 from mdr_events.profiles import FlatPunch, PowerLaw, TabulatedProfile, profile_attrs
 from mdr_events.theory import analytic, mindlin, power_law, symbolic, tabulated
+from mdr_events.theory.branches import branch_radius, jump_off
 
 __all__ = ["MIN_SIMULATED_EXPONENT", "SimulatedProfile", "check_simulated_profile", "check_reach", "branch_radius", "jump_off", "spring_profile",
            "profile_attrs", "critical_angle"]
@@ -59,27 +60,6 @@ def check_reach(params: Parameters, depth: float, profile: SimulatedProfile, lab
         raise ValueError(f"{label} reaches the depth {depth:.6g} m; allowed for {profile.describe()!r}: at most "
                          f"{deepest:.6g} m, where the contact radius reaches the table's last radius (a table reaching "
                          "further, or a shallower path)")
-
-
-def branch_radius(depth, params: Parameters, work_of_adhesion: float, profile: SimulatedProfile = None):
-    """The contact radius on the branch of ``work_of_adhesion`` at ``depth`` (``nan`` below its jump-off; the
-    flat punch's radius down to its jump-off)."""
-    if profile is None:
-        return analytic.jkr_contact_radius(depth, params, work_of_adhesion)
-    if isinstance(profile, FlatPunch):
-        return power_law.flat_punch_radius(depth, profile, params, work_of_adhesion)
-    if isinstance(profile, TabulatedProfile):
-        return tabulated.contact_radius(depth, profile, params, work_of_adhesion)
-    return power_law.contact_radius(depth, profile, params, work_of_adhesion)
-
-
-def jump_off(params: Parameters, work_of_adhesion: float, profile: SimulatedProfile = None) -> dict[str, float]:
-    """The branch's jump-off under displacement control (``contact_radius``, ``depth``, ``normal_force``)."""
-    if profile is None:
-        return analytic.jump_off(params, work_of_adhesion)
-    if isinstance(profile, TabulatedProfile):
-        return tabulated.jump_off(profile, params, work_of_adhesion)
-    return power_law.jump_off(profile, params, work_of_adhesion)
 
 
 def spring_profile(params: Parameters, profile: SimulatedProfile = None) -> Callable[[np.ndarray], np.ndarray]:

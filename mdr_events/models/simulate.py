@@ -16,7 +16,7 @@ from mdr_events.models.continuum import Tolerances, run_continuum
 from mdr_events.models.continuum.solution import EXTREMUM_XTOL
 from mdr_events.models.continuum.extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, extremum_names, solution_extrema
 from mdr_events.models.discrete import check_spacing, run_discrete
-from mdr_events.models.scales import check_representable
+from mdr_events.theory.scales import check_representable
 from mdr_events.models.paths import Path
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile

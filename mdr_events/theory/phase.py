@@ -14,6 +14,7 @@ from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.friction import FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.profiles import Profile, TabulatedProfile, profile_attrs
 from mdr_events.theory import analytic, mindlin, power_law, tabulated
+from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_choice, validate_alpha
 
 __all__ = ["phase_diagram", "default_angles", "PHASE_DIAGRAM_CONTENT", "PHASE_DIAGRAM_VARIABLES"]
@@ -92,6 +93,8 @@ def phase_diagram(
                  memory=BYTES_PER_ANGLE * angles.size)
     coords = {"alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})}
     friction = as_friction_law(friction)
+    # (the closed forms overflow as the runs would: E = 1e-150 Pa gave d_crit = +inf at 438 angles with warnings)
+    check_representable(params, profile, friction)
     if not friction.is_default or isinstance(profile, TabulatedProfile):
         return _numerical_phase_diagram(params, angles, scenario, profile, friction, coords)
     if profile is not None:

@@ -15,10 +15,10 @@ import warnings
 from typing import Callable, NamedTuple
 
 from mdr_events.friction import TAU0, FrictionLaw
-from mdr_events.models import indenters
-from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.parameters import Parameters
-from mdr_events.theory import analytic, mindlin
+from mdr_events.profiles import Profile, TabulatedProfile
+from mdr_events.theory import analytic, mindlin, tabulated
+from mdr_events.theory.branches import branch_radius, jump_off
 from mdr_events.validation import SCALE_MAX, SCALE_MIN
 
 __all__ = ["SCALE_MAX", "SCALE_MIN", "Scale", "run_scales", "check_representable"]
@@ -43,12 +43,12 @@ def _scale(name: str, unit: str, compute: Callable[[], float]) -> Scale:
         return Scale(name, math.nan, unit, str(error) or type(error).__name__)
 
 
-def run_scales(params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> list[Scale]:
+def run_scales(params: Parameters, profile: Profile | None = None, friction: FrictionLaw = TAU0) -> list[Scale]:
     """The scales of a run of ``params`` with ``profile`` and ``friction``: moduli, depth, the contact radius and
     normal force at ``d_max``, the critical shift ``ū`` and Coulomb's cap there, the full-slip force, the time to
     ``d_max`` and, with adhesion, the jump-off of the ``Δγ1`` branch."""
-    def radius() -> float:
-        return float(indenters.branch_radius(params.d_max, params, params.dgamma0, profile))
+    def radius() -> float:  # (a table's reach is checked apart, with its own message: check_reach)
+        return float(branch_radius(_deepest_reached(params, profile), params, params.dgamma0, profile))
 
     scales = [Scale("E*", params.E_star, "Pa"), Scale("G*", params.G_star, "Pa"), Scale("d_max", params.d_max, "m"),
               Scale("the time to d_max, d_max / v", params.d_max / params.v, "s"),
@@ -64,11 +64,22 @@ def run_scales(params: Parameters, profile: SimulatedProfile = None, friction: F
     if params.dgamma1 > 0:
         for key, unit in (("contact_radius", "m"), ("depth", "m"), ("normal_force", "N")):
             scales.append(_scale(f"the jump-off's {key.replace('_', ' ')} on the Δγ1 branch", unit,
-                                 lambda key=key: indenters.jump_off(params, params.dgamma1, profile)[key]))
+                                 lambda key=key: jump_off(params, params.dgamma1, profile)[key]))
     return scales
 
 
-def check_representable(params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> None:
+def _deepest_reached(params: Parameters, profile: Profile | None) -> float:
+    """``d_max``, or a table's deepest reach if less (the depth beyond is refused by
+    :func:`~mdr_events.models.indenters.check_reach`, naming the table)."""
+    if not isinstance(profile, TabulatedProfile):
+        return params.d_max
+    try:
+        return min(params.d_max, tabulated.branch(profile, params, params.dgamma0).deepest)
+    except (ValueError, ArithmeticError):  # (the radius's own scale then names what fails)
+        return params.d_max
+
+
+def check_representable(params: Parameters, profile: Profile | None = None, friction: FrictionLaw = TAU0) -> None:
     """Refuse a run whose scales (:func:`run_scales`) do not fit in double precision.
 
     Raises
@@ -81,8 +92,8 @@ def check_representable(params: Parameters, profile: SimulatedProfile = None, fr
         magnitude = abs(scale.value)
         if scale.failure or not math.isfinite(magnitude) or (magnitude != 0.0 and
                                                               not SCALE_MIN <= magnitude <= SCALE_MAX):
-            value = f"overflows ({scale.failure})" if scale.failure or not math.isfinite(magnitude) else \
-                f"is {scale.value:.3g} {scale.unit}"
+            value = (f"overflows ({scale.failure})" if scale.failure else f"is not finite ({scale.value!r})"
+                     if not math.isfinite(magnitude) else f"is {scale.value:.3g} {scale.unit}")
             indenter = f"R={params.R!r} m" if profile is None else f"profile={profile!r}"
             law = "" if friction.is_default else f", friction={friction!r}"
             raise ValueError(f"E={params.E!r} Pa, nu={params.nu!r}, {indenter}, tau0={params.tau0!r} Pa, "

@@ -12,7 +12,8 @@ import mdr_events as me
 from mdr_events.app.cli import main
 from mdr_events.limits import ResourceLimitError
 from mdr_events.models import indenters
-from mdr_events.models.scales import SCALE_MAX, SCALE_MIN, check_representable, run_scales
+from mdr_events.theory import tabulated
+from mdr_events.theory.scales import SCALE_MAX, SCALE_MIN, check_representable, run_scales
 
 PAPER = me.Parameters.paper()
 
@@ -139,3 +140,45 @@ def test_the_windows_ends_run(method):
                 params = params.replace(**{name: getattr(params, name) * 10.0 ** exponent})
             ds = _run(method, params, law, None)
             assert np.all(np.isfinite(ds["normal_force"].values[np.isfinite(ds["indentation_depth"].values)])), name
+
+
+SPHERE_RADII = np.linspace(0.0, 5e-3, 50)
+
+
+def sphere_table(radius_factor=1.0, height_factor=1.0):
+    return me.TabulatedProfile(tuple(SPHERE_RADII * radius_factor),
+                               tuple(height_factor * SPHERE_RADII**2 / (2 * PAPER.R)))
+
+
+@pytest.mark.parametrize("radius_factor, height_factor, scale", [
+    (1e150, 1e150, "its interpolant's largest slope coefficient c2 (1/m²) is 3.6"),  # c₂ ~ 1e-295: g's products fail
+    (1.0, 1e150, "its interpolant's largest slope coefficient c2 (1/m²) is 3.6"),
+    (1e150, 1.0, "its interpolant's largest slope coefficient c1 (1/m) is 7.5e-299"),
+    (1e-150, 1.0, "its narrowest interval of r (m) is 1.02e-154"),
+])
+def test_a_table_beyond_double_precision_is_refused_by_itself(radius_factor, height_factor, scale):
+    """A sphere's table stretched by 1e±150: refused when it is made, naming the scale (it gave nan in the continuum's
+    right-hand side, or an overflow warning in its interpolant, before)."""
+    with pytest.raises(ValueError, match=r"TabulatedProfile\(<50 points.*is not allowed: .*allowed: a table whose "
+                                         r"scales lie within 1.5e-154 to 1.3e\+154") as error:
+        sphere_table(radius_factor, height_factor)
+    assert scale in str(error.value)
+
+
+def test_a_table_that_ends_before_d_max_is_named_as_such_not_as_an_overflow():
+    """The contact radius at d_max lies beyond the table: check_reach's message (the table's deepest reach), not
+    'the contact radius overflows' (run_scales takes the radius at the deepest reach)."""
+    table = sphere_table()
+    deepest = float(tabulated.branch(table, PAPER, PAPER.dgamma0).deepest)
+    check_representable(PAPER.replace(d_max=1e-3), table)
+    with pytest.raises(ValueError, match=f"reaches the depth 0.001 m; allowed for .*at most {deepest:.6g} m"):
+        me.simulate(PAPER.replace(d_max=1e-3), "A", alpha=[20.0], profile=table)
+
+
+def test_the_phase_diagram_refuses_what_the_simulators_refuse():
+    """The closed forms multiply the same scales: E = 1e-150 Pa gave d_crit = +inf with overflow warnings."""
+    with pytest.raises(ValueError, match="the critical shift ū\\(a\\) at d_max is 2.59e\\+203 m; allowed: parameters"):
+        me.phase_diagram(PAPER.replace(E=1e-150), scenario="A")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert np.all(np.isfinite(me.phase_diagram(PAPER, [10.0, 30.0], scenario="A")["d_crit_jkr"].values))
