@@ -17,6 +17,7 @@ from typing import Callable, Mapping, NamedTuple
 import numpy as np
 import xarray as xr
 
+from mdr_events.io.files import load_netcdf
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.profiles import TabulatedProfile
 from mdr_events.validation import SCALE_MAX, real_array, shown
@@ -152,12 +153,7 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
                              "a mapping of arrays")
         if path.suffix.lower() == ".csv":
             return _read_csv(path, limits, progress), {}
-        try:
-            with xr.open_dataset(path) as opened:
-                candidate = opened.load()
-        except Exception as error:  # noqa: BLE001 - any reader failure is a file the user must fix
-            raise ValueError(f"{path}: cannot be read as netCDF ({error}); allowed: a CSV file with a header "
-                             "or a netCDF file") from None
+        candidate = load_netcdf(path, str(path), "a CSV file with a header or a netCDF-3 file")
     if isinstance(candidate, xr.Dataset):
         candidate = _selected(candidate, source, select or {})
         # a simulation of one case (dims ``alpha`` or ``case`` of size 1 beside ``time``) is that case's run

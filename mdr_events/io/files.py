@@ -45,7 +45,7 @@ except ImportError:  # pragma: no cover - Windows: only the age counts (see STAL
     fcntl = None  # type: ignore[assignment]
 
 __all__ = ["atomic_write", "atomic_write_all", "PendingFile", "netcdf_writer", "write_netcdf", "open_result", "prepare_output_directory", "check_output_stem",
-           "check_output_file",
+           "check_output_file", "load_netcdf",
            "check_file_path", "remove_stale_temporaries", "is_temporary_name", "TEMPORARY_MARKER"]
 
 #: What marks a temporary file of :func:`atomic_write`: ``.<target name>.mdr-tmp-<random><suffix>``.
@@ -438,25 +438,47 @@ def open_result(path: str | os.PathLike) -> xr.Dataset:
     ``units`` / ``long_name``) that its kind of result (``content``) must hold.
     """
     where = repr(os.fspath(check_file_path("path", path, f"{_ALLOWED_PATH} naming a netCDF file")))
-    dataset = _load_netcdf(path, where)
+    dataset = load_netcdf(path, where)
     _check_stamp(dataset, where)
     _check_variables(dataset, where)
     return dataset
 
 
-def _load_netcdf(path: str | os.PathLike, where: str) -> xr.Dataset:
-    """The netCDF file at ``path``, fully loaded (``ValueError`` if missing or unreadable)."""
+#: The first bytes of a netCDF-3 file (the classic and 64-bit offset formats, what SciPy reads and this package writes).
+NETCDF3_MAGIC = b"CDF"
+#: The first bytes of an HDF5 file (netCDF-4), which needs a reader this package does not install.
+HDF5_MAGIC = b"\x89HDF"
+
+
+def _netcdf_kind_problem(path: str | os.PathLike) -> str | None:
+    """Why ``path`` is no netCDF-3 file, from its first bytes (``None`` if it may be one)."""
+    with open(path, "rb") as handle:
+        head = handle.read(len(HDF5_MAGIC))
+    if not head:
+        return "it is empty"
+    if head.startswith(HDF5_MAGIC):
+        return ("it is netCDF-4 (HDF5), which needs h5netcdf or netCDF4; write it as netCDF-3, e.g. "
+                "dataset.to_netcdf(path, format='NETCDF3_64BIT'), or give a CSV file")
+    if not head.startswith(NETCDF3_MAGIC):
+        return f"it does not start as a netCDF file does: {head!r}"
+    return None
+
+
+def load_netcdf(path: str | os.PathLike, where: str, allowed: str = f"a netCDF file written by {PROGRAM}") -> xr.Dataset:
+    """The netCDF-3 file at ``path``, fully loaded and closed; ``ValueError`` naming ``where`` and ``allowed`` if it is
+    missing, a directory, empty, netCDF-4 or unreadable (the reader's message on one line)."""
     if os.path.isdir(path):
-        raise ValueError(f"{where} is a directory; allowed: a netCDF file written by {PROGRAM}")
+        raise ValueError(f"{where} is a directory; allowed: {allowed}")
     try:
-        with xr.open_dataset(path, engine="scipy") as handle:
-            return handle.load()
+        why = _netcdf_kind_problem(path)
+        if why is None:
+            with xr.open_dataset(path, engine="scipy") as handle:
+                return handle.load()
     except FileNotFoundError:
-        raise ValueError(f"{where}: no such file") from None
+        raise ValueError(f"{where}: no such file; allowed: {allowed}") from None
     except (OSError, ValueError, TypeError, IndexError, KeyError) as error:
-        reason = " ".join(str(error).split())  # one line: the reader's message may span several
-        raise ValueError(f"{where} is not a readable netCDF file ({type(error).__name__}: {reason}); allowed: a "
-                         f"netCDF file written by {PROGRAM}") from None
+        why = f"{type(error).__name__}: {' '.join(str(error).split())}"  # one line: the reader's may span several
+    raise ValueError(f"{where} is not a readable netCDF file ({why}); allowed: {allowed}")
 
 
 def _check_stamp(dataset: xr.Dataset, where: str) -> None:

@@ -280,3 +280,20 @@ def test_stems_that_leave_the_directory_are_refused(stem):
         check_output_stem("stem", stem)
     with pytest.raises(TypeError, match=r"stem=3 \(int\) is not allowed"):
         check_output_stem("stem", 3)
+
+
+@pytest.mark.parametrize("content, reason", [
+    (b"", "(it is empty)"),
+    (b"\x89HDF\r\n\x1a\n" + bytes(64), "(it is netCDF-4 (HDF5), which needs h5netcdf or netCDF4; write it as netCDF-3"),
+    (b"time,normal_force\n0,1\n", "(it does not start as a netCDF file does: b'time')"),
+])
+def test_a_file_that_is_no_netcdf_3_says_what_it_is_in_every_reader(tmp_path, content, reason):
+    """open_result and the candidates' reader share load_netcdf: an empty file, a netCDF-4 file (SciPy reads netCDF-3
+    only) or text named in one short line (the reader's own message listed xarray's engines and two URLs)."""
+    path = tmp_path / "run.nc"
+    path.write_bytes(content)
+    for read in (me.open_result, lambda p: me.validate(p, me.Parameters.paper(), "A", 20.0)):
+        with pytest.raises(ValueError) as error:
+            read(path)
+        message = str(error.value)
+        assert "is not a readable netCDF file " + reason in message and "\n" not in message and "http" not in message
