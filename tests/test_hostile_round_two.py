@@ -418,3 +418,22 @@ def test_a_refused_bound_is_shown_as_given_not_as_clipped(given, expected):
     from mdr_events.analysis.fit import free_parameters
     with pytest.raises(ValueError, match=re.escape(expected)):
         free_parameters(["nu"], PAPER.replace(nu=0.3), {"nu": given}, 1.0, 1.0)
+
+
+@pytest.mark.parametrize("as_candidate", [
+    lambda time, force: {"time": time, "normal_force": force},
+    lambda time, force: xr.Dataset({"normal_force": ("time", force)}, coords={"time": time}),
+])
+def test_a_candidate_in_memory_counts_its_samples_against_the_limits(as_candidate):
+    """A mapping or a Dataset is checked as a file's rows are (the exact solution is computed at every sample)."""
+    time = np.linspace(0.0, 1.0, 2000)
+    with pytest.raises(ResourceLimitError, match="2000 samples.*samples"):
+        me.validate(as_candidate(time, np.zeros_like(time)), PAPER, "A", 20.0, limits=me.Limits(samples=1000))
+
+
+def test_a_netcdf_candidate_counts_its_bytes_as_memory_before_it_is_loaded(tmp_path):
+    path = tmp_path / "run.nc"
+    time = np.linspace(0.0, 1.0, 2000)
+    xr.Dataset({"normal_force": ("time", np.zeros_like(time))}, coords={"time": time}).to_netcdf(path, engine="scipy")
+    with pytest.raises(ResourceLimitError, match=f"reading {re.escape(str(path))} \\({path.stat().st_size} bytes\\)"):
+        me.validate(path, PAPER, "A", 20.0, limits=me.Limits(memory=1000))

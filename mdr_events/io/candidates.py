@@ -153,6 +153,8 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
                              "a mapping of arrays")
         if path.suffix.lower() == ".csv":
             return _read_csv(path, limits, progress), {}
+        # (loaded whole: its size counts as memory before it is read, as a CSV's rows do)
+        limits.check(f"reading {path} ({path.stat().st_size} bytes)", memory=path.stat().st_size)
         candidate = load_netcdf(path, str(path), "a CSV file with a header or a netCDF-3 file")
     if isinstance(candidate, xr.Dataset):
         candidate = _selected(candidate, source, select or {})
@@ -256,6 +258,7 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         raise ValueError(f"{source}: no time column; columns found: {', '.join(columns) or 'none'}; allowed: a column "
                          "'time' or names={'time': <your column>}")
     time = found.pop("time")
+    limits.check(f"{source} ({time.size} samples)", samples=time.size)  # (an array or a Dataset as a file's rows)
     if not found:
         raise ValueError(f"{source}: none of {', '.join(q for q in CANDIDATE_QUANTITIES if q != 'time')} found; "
                          f"columns found: {', '.join(columns)}; name yours with names={{quantity: column}}")

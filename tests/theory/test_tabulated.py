@@ -96,7 +96,10 @@ def test_the_branch_is_consistent_with_itself(paper):
 
 
 @pytest.mark.parametrize("make, exception, words", [
-    (lambda: TabulatedProfile([0.0, 1e-3], [0.0, 1e-5]), ValueError, ["lengths 2 and 2", "at least 3"]),
+    (lambda: TabulatedProfile([0.0, 1e-3], [0.0, 1e-5]), ValueError, ["lengths 2 and 2", "3 to 10000"]),
+    # (the quadrature costs the square of the points: 10^6 would take some ten hours)
+    (lambda: TabulatedProfile(np.linspace(0.0, 1e-3, 10_001), np.linspace(0.0, 1e-3, 10_001) ** 2), ValueError,
+     ["lengths 10001 and 10001", "3 to 10000", "resample"]),
     (lambda: TabulatedProfile([0.0, 1e-3, 2e-3], [0.0, 1e-5]), ValueError, ["lengths 3 and 2"]),
     (lambda: TabulatedProfile([1e-4, 1e-3, 2e-3], [0.0, 1e-5, 2e-5]), ValueError, ["TabulatedProfile.r=", "from 0"]),
     (lambda: TabulatedProfile([0.0, 2e-3, 1e-3], [0.0, 1e-5, 2e-5]), ValueError, ["strictly increasing radii"]),
