@@ -437,3 +437,10 @@ def test_a_netcdf_candidate_counts_its_bytes_as_memory_before_it_is_loaded(tmp_p
     xr.Dataset({"normal_force": ("time", np.zeros_like(time))}, coords={"time": time}).to_netcdf(path, engine="scipy")
     with pytest.raises(ResourceLimitError, match=f"reading {re.escape(str(path))} \\({path.stat().st_size} bytes\\)"):
         me.validate(path, PAPER, "A", 20.0, limits=me.Limits(memory=1000))
+
+
+@pytest.mark.parametrize("scenario", ["A", "B", "B+"])
+def test_an_angle_so_small_that_its_path_cannot_be_built_is_named(scenario):
+    """1e-300°: the waypoints lie ~1e298 m apart and the path refuses them; the message starts with the angle."""
+    with pytest.raises(ValueError, match=re.escape(f"alpha=1e-300 (degrees) in scenario {scenario}: ")):
+        me.simulate(PAPER, scenario, alpha=[1e-300])

@@ -228,9 +228,15 @@ def simulation_cases(params: Parameters, scenario, alpha, profile: SimulatedProf
             raise ValueError(f"alpha={shown(alpha)} repeats {float(values[counts > 1][0])!r}; allowed: distinct "
                              "angles (each labels one case)")
         build = {"A": Path.scenario_A, "B": Path.scenario_B, "B+": Path.scenario_B_indentation}[scenario]
-        paths = [build(float(angle), params, profile=profile) for angle in angles]
-        for angle, path in zip(angles, paths):
-            check_path_extent(params, path, f"alpha={float(angle)!r} (degrees) in scenario {scenario}", profile)
+        paths = []
+        for angle in angles:
+            label = f"alpha={float(angle)!r} (degrees) in scenario {scenario}"
+            try:  # (an angle of 1e-300° makes waypoints 1e298 m apart: the path refuses them, the angle is named)
+                path = build(float(angle), params, profile=profile)
+            except ValueError as error:
+                raise ValueError(f"{label}: {error}") from None
+            check_path_extent(params, path, label, profile)
+            paths.append(path)
         return Cases(paths, ANGLE_DIMENSION, angles)
     if not isinstance(scenario, (Path, Mapping, list, tuple)):
         raise TypeError(f"scenario={scenario!r} ({type(scenario).__name__}) is not allowed; allowed: "
