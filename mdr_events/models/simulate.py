@@ -234,6 +234,8 @@ def simulation_cases(params: Parameters, scenario, alpha, profile: SimulatedProf
             try:  # (an angle of 1e-300° makes waypoints 1e298 m apart: the path refuses them, the angle is named)
                 path = build(float(angle), params, profile=profile)
             except ValueError as error:
+                if str(error).startswith("alpha="):  # (the path names the angle itself)
+                    raise
                 raise ValueError(f"{label}: {error}") from None
             check_path_extent(params, path, label, profile)
             paths.append(path)
