@@ -17,10 +17,9 @@ rules of :mod:`mdr_events.analysis.validate` (first sample sliding, first sample
 
 from __future__ import annotations
 
+import concurrent.futures
 import dataclasses
-import importlib.util
 import json
-import logging
 import math
 import os
 from dataclasses import dataclass
@@ -29,6 +28,7 @@ from typing import Callable, Mapping, NamedTuple, Sequence
 import numpy as np
 import xarray as xr
 
+from mdr_events.analysis.executors import check_scheduler, check_workers, open_executor
 from mdr_events.analysis.fit import curves_of
 from mdr_events.analysis.validate import candidate_events
 from mdr_events.io.datasets import register_schema, stamp
@@ -48,7 +48,7 @@ from mdr_events.validation import check_choice, check_count, check_real, real_ar
 
 __all__ = ["sweep", "run_chunk", "SweepSpec", "QUANTITIES", "CLOSED_FORM_QUANTITIES", "SWEEP_CONTENT", "SWEPT_NAMES",
            "TABLE_DIMENSION",
-           "ChunkResult", "default_scheduler", "LOOPBACK_DASHBOARD"]
+           "ChunkResult"]
 
 #: The ``content`` attribute of a sweep's dataset.
 SWEEP_CONTENT = "parameter sweep"
@@ -432,46 +432,6 @@ def _chunks(runs: int, size: int) -> list[tuple[int, int]]:
     return [(start, min(start + size, runs)) for start in range(0, runs, size)]
 
 
-#: The local cluster's dashboard: on loopback, on a free port (None would take the default :8787).
-LOOPBACK_DASHBOARD = "127.0.0.1:0"
-
-
-def default_scheduler() -> str:
-    """``"local"`` where ``dask.distributed`` is installed (the extra ``mdr_events[scale]``), else ``"serial"``."""
-    return "local" if importlib.util.find_spec("distributed") is not None else "serial"
-
-
-def _check_workers(workers) -> int:
-    """A local cluster's worker count: one process per core at most (each run is single-threaded and CPU-bound,
-    so more processes than cores only compete for them, each holding its own interpreter and libraries)."""
-    cores = os.cpu_count() or 1
-    workers = check_count("workers", workers, 1)
-    if workers > cores:
-        raise ValueError(f"workers={workers} is not allowed; allowed: 1 to {cores} (this machine's cores: a run is "
-                         "single-threaded, more processes only compete for them)")
-    return workers
-
-
-def _client(scheduler, workers: int | None):
-    """A ``distributed.Client``: on a new ``LocalCluster`` (``"local"``; loopback only, one thread per worker
-    process) or on the cluster at ``scheduler`` (an address). Returns the client and what to close."""
-    try:
-        from distributed import Client, LocalCluster
-    except ModuleNotFoundError:
-        raise ValueError(f"scheduler={scheduler!r} needs dask.distributed; allowed: scheduler='serial', or install "
-                         "the extra: pip install 'mdr_events[scale]'") from None
-    if scheduler == "local":
-        cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
-                               host="127.0.0.1", dashboard_address=LOOPBACK_DASHBOARD,
-                               silence_logs=logging.ERROR)  # not a page of warnings when Ctrl-C stops the workers
-        try:
-            return Client(cluster), cluster
-        except BaseException:
-            cluster.close()
-            raise
-    return Client(scheduler), None
-
-
 def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, method: str = "continuum",
           dx: float | None = None, n_steps: int | None = None, tolerances: Tolerances = Tolerances(),
           quantities: Sequence[str] | None = None, scheduler: str | None = None, workers: int | None = None,
@@ -500,10 +460,13 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     quantities : sequence of str, optional
         Which of :data:`QUANTITIES` (default all); only closed-form ones (:data:`CLOSED_FORM_QUANTITIES`) run no
         model.
-    scheduler : "local", "serial" or str, optional
+    scheduler : "serial", "local", str, distributed.Client or concurrent.futures.Executor, optional
+        Where the chunks run (:mod:`mdr_events.analysis.executors`): ``"serial"``: here, one chunk after another;
         ``"local"``: a ``dask.distributed.LocalCluster`` of ``workers`` processes (default: the machine's cores),
-        on loopback; ``"serial"``: here, one chunk after another; else the address of a running dask scheduler
-        (``"tcp://host:8786"``). Every choice gives the same numbers. Default: :func:`default_scheduler`.
+        on loopback; an address of a running dask scheduler (``"tcp://host:8786"``); a ``distributed.Client``
+        (e.g. the one a notebook made) or any ``concurrent.futures.Executor``, used and left open. Default: the
+        active dask client if there is one, else ``"local"`` where ``distributed`` is installed, else
+        ``"serial"``. Every engine gives the same numbers.
     chunk_size : int
         Runs per task (and per Zarr chunk of the store).
     history_samples : int, optional
@@ -543,8 +506,9 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     the_grid = make_grid(grid, limits)
     if "dx" in the_grid.names and method != "discrete":
         raise ValueError("grid: 'dx' is not allowed with method='continuum'; allowed: with method='discrete'")
+    check_scheduler(scheduler, workers)
     if workers is not None:
-        workers = _check_workers(workers)
+        workers = check_workers(workers)
     if not isinstance(tolerances, Tolerances):
         raise TypeError(f"tolerances={shown(tolerances)} ({type(tolerances).__name__}) is not allowed; allowed: a "
                         "Tolerances")
@@ -580,13 +544,6 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
     stored = runs * (len(wanted) + (0 if samples is None else len(HISTORY_QUANTITIES) * samples))
     limits.check(f"the sweep of {runs} runs" + ("" if samples is None else f" with history_samples={samples}"),
                  memory=BYTES_PER_STORED_VALUE * stored, **({} if samples is None else {"samples": runs * samples}))
-    scheduler = default_scheduler() if scheduler is None else scheduler
-    if scheduler not in ("local", "serial") and not (isinstance(scheduler, str) and "://" in scheduler):
-        raise ValueError(f"scheduler={shown(scheduler)} is not allowed; allowed: 'local', 'serial' or a dask "
-                         "scheduler's address such as 'tcp://host:8786'")
-    if workers is not None and scheduler != "local":
-        raise ValueError(f"workers={workers} is not allowed with scheduler={scheduler!r}; allowed: with "
-                         "scheduler='local' (a cluster at an address has its own workers)")
     values = np.full((runs, len(wanted)), np.nan)
     histories = None if samples is None else np.full((runs, len(HISTORY_QUANTITIES), samples), np.nan)
     errors = [""] * runs
@@ -616,23 +573,23 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
         if progress is not None:
             progress(finished, runs)
 
-    if scheduler == "serial":
-        for start, stop in pending:
-            record(start, run_chunk(spec, the_grid.rows[start:stop]))
-    elif pending:
-        from distributed import as_completed
-        client, cluster = _client(scheduler, workers)
-        try:
-            spec_future = client.scatter(spec, broadcast=True)
-            futures = {client.submit(run_chunk, spec_future, the_grid.rows[start:stop], pure=False): start
-                       for start, stop in pending}
-            for future, result in as_completed(futures, with_results=True):
-                record(futures[future], result)
-        finally:
-            client.close()
-            if cluster is not None:
-                cluster.close()
+    if pending:  # (a store that holds every run starts no engine)
+        _run_chunks(spec, the_grid, pending, scheduler, workers, record)
     return _result(spec, the_grid, values, errors, histories)
+
+
+def _run_chunks(spec: SweepSpec, grid: Grid, pending: list[tuple[int, int]], scheduler, workers: int | None,
+                record: Callable[[int, ChunkResult], None]) -> None:
+    """Run the pending chunks on the engine of ``scheduler`` (:func:`~mdr_events.analysis.executors.open_executor`),
+    recording each here as it completes; on an error, Ctrl-C or a ``record`` that stops, nothing more runs."""
+    with open_executor(scheduler, workers) as executor:
+        futures = {executor.submit(run_chunk, spec, grid.rows[start:stop]): start for start, stop in pending}
+        try:
+            for future in concurrent.futures.as_completed(futures):
+                record(futures[future], future.result())
+        finally:
+            for future in futures:
+                future.cancel()
 
 
 def _result(spec: SweepSpec, grid: Grid, values: np.ndarray, errors: list[str],

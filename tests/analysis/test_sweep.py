@@ -10,7 +10,8 @@ import pytest
 import xarray as xr
 
 import mdr_events as me
-from mdr_events.analysis.sweep import CLOSED_FORM_QUANTITIES, LOOPBACK_DASHBOARD, QUANTITIES, sweep
+from mdr_events.analysis.executors import LOOPBACK_DASHBOARD
+from mdr_events.analysis.sweep import CLOSED_FORM_QUANTITIES, QUANTITIES, sweep
 from mdr_events.theory.analytic import d_crit, dimensionless_groups
 
 distributed = pytest.importorskip("distributed")
@@ -59,6 +60,21 @@ def test_slip_onset_and_the_critical_angle_agree_with_the_closed_forms(paper, se
 def test_a_local_cluster_gives_the_serial_numbers_bit_for_bit(paper, serial, cluster):
     on_cluster = sweep(GRID, "A", base=paper, scheduler=cluster.scheduler_address, chunk_size=5)
     xr.testing.assert_identical(on_cluster, serial)
+
+
+def test_a_client_object_the_active_client_and_an_executor_give_the_serial_numbers_bit_for_bit(paper, serial,
+                                                                                               cluster):
+    """One seam (concurrent.futures): a distributed.Client passed in, the client made current (scheduler=None) and
+    a ProcessPoolExecutor; the caller's client and executor stay open."""
+    import concurrent.futures
+
+    with distributed.Client(cluster.scheduler_address) as client:
+        xr.testing.assert_identical(sweep(GRID, "A", base=paper, scheduler=client, chunk_size=5), serial)
+        xr.testing.assert_identical(sweep(GRID, "A", base=paper, chunk_size=5), serial)  # the active client
+        assert client.status == "running"
+    with concurrent.futures.ProcessPoolExecutor(max_workers=2) as pool:
+        xr.testing.assert_identical(sweep(GRID, "A", base=paper, scheduler=pool, chunk_size=5), serial)
+        assert pool.submit(abs, -1).result() == 1  # still open
 
 
 def test_a_worker_killed_mid_sweep_does_not_change_the_result(paper, serial, cluster):

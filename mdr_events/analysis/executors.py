@@ -1,0 +1,127 @@
+"""Where a sweep's chunks run: one :class:`concurrent.futures.Executor` for every engine.
+
+:func:`open_executor` turns what a user names into an executor and closes what it opened itself:
+
+==========================================  ===============================================================
+``scheduler``                               the executor
+==========================================  ===============================================================
+``"serial"``                                a :class:`~concurrent.futures.ThreadPoolExecutor` of one thread: here,
+                                            one chunk after another (the caller records each as it completes)
+``"local"``                                 a new ``distributed.LocalCluster`` of ``workers`` processes on
+                                            loopback, through ``Client.get_executor()``
+an address (``"tcp://host:8786"``)          a ``distributed.Client`` of that scheduler, through its executor
+a ``distributed.Client``                    its executor (the client stays open: it is the caller's)
+a ``concurrent.futures.Executor``           itself (not shut down: it is the caller's)
+``None``                                    the active dask client if there is one, else ``"local"`` where
+                                            ``distributed`` is installed, else ``"serial"``
+==========================================  ===============================================================
+
+Every engine runs the same function on the same chunks, so that the numbers are identical on each.
+"""
+
+from __future__ import annotations
+
+import concurrent.futures
+import importlib.util
+import logging
+import os
+from collections.abc import Iterator
+from contextlib import contextmanager
+
+from mdr_events.validation import check_count, shown
+
+__all__ = ["open_executor", "default_scheduler", "check_workers", "LOOPBACK_DASHBOARD", "SCHEDULER_ALLOWED"]
+
+#: The local cluster's dashboard: on loopback, on a free port (None would take the default :8787).
+LOOPBACK_DASHBOARD = "127.0.0.1:0"
+#: What ``scheduler`` may be, for messages.
+SCHEDULER_ALLOWED = ("'serial', 'local', a dask scheduler's address such as 'tcp://host:8786', a "
+                     "distributed.Client, a concurrent.futures.Executor, or None")
+
+
+def default_scheduler() -> str:
+    """``"local"`` where ``dask.distributed`` is installed (the extra ``mdr_events[scale]``), else ``"serial"``."""
+    return "local" if importlib.util.find_spec("distributed") is not None else "serial"
+
+
+def check_workers(workers) -> int:
+    """A local cluster's worker count: one process per core at most (each run is single-threaded and CPU-bound,
+    so more processes than cores only compete for them, each holding its own interpreter and libraries)."""
+    cores = os.cpu_count() or 1
+    workers = check_count("workers", workers, 1)
+    if workers > cores:
+        raise ValueError(f"workers={workers} is not allowed; allowed: 1 to {cores} (this machine's cores: a run is "
+                         "single-threaded, more processes only compete for them)")
+    return workers
+
+
+def _active_client():
+    """The dask client this process made current (``distributed.default_client``), or ``None``."""
+    if importlib.util.find_spec("distributed") is None:
+        return None
+    from distributed import default_client
+    try:
+        return default_client()
+    except ValueError:  # no client
+        return None
+
+
+def _is_client(scheduler) -> bool:
+    if importlib.util.find_spec("distributed") is None:
+        return False
+    from distributed import Client
+    return isinstance(scheduler, Client)
+
+
+def check_scheduler(scheduler, workers: int | None) -> None:
+    """Refuse a ``scheduler`` that names no engine, and ``workers`` beside anything but ``"local"``."""
+    named = scheduler in ("serial", "local") or (isinstance(scheduler, str) and "://" in scheduler)
+    if not (named or scheduler is None or _is_client(scheduler)
+            or isinstance(scheduler, concurrent.futures.Executor)):
+        raise ValueError(f"scheduler={shown(scheduler)} is not allowed; allowed: {SCHEDULER_ALLOWED}")
+    if workers is not None and scheduler not in ("local", None):
+        raise ValueError(f"workers={workers} is not allowed with scheduler={shown(scheduler)}; allowed: with "
+                         "scheduler='local' (any other engine has its own workers)")
+
+
+def _distributed(scheduler):
+    try:
+        import distributed
+    except ModuleNotFoundError:
+        raise ValueError(f"scheduler={scheduler!r} needs dask.distributed; allowed: scheduler='serial', or install "
+                         "the extra: pip install 'mdr_events[scale]'") from None
+    return distributed
+
+
+@contextmanager
+def open_executor(scheduler=None, workers: int | None = None) -> Iterator[concurrent.futures.Executor]:
+    """The executor of ``scheduler`` (see the module's table); what this opened is closed on leaving, and futures
+    still pending are the caller's to cancel.
+
+    Raises
+    ------
+    ValueError
+        Naming ``scheduler`` (no engine, or ``distributed`` not installed) or ``workers`` (not with ``"local"``).
+    """
+    check_scheduler(scheduler, workers)
+    if workers is not None:
+        workers = check_workers(workers)
+    if scheduler is None:
+        scheduler = "local" if workers is not None else _active_client() or default_scheduler()
+    if isinstance(scheduler, concurrent.futures.Executor):
+        yield scheduler
+    elif scheduler == "serial":
+        with concurrent.futures.ThreadPoolExecutor(max_workers=1) as executor:
+            yield executor
+    elif _is_client(scheduler):
+        yield scheduler.get_executor(pure=False)
+    elif scheduler == "local":
+        distributed = _distributed(scheduler)
+        with distributed.LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
+                                      processes=True, host="127.0.0.1", dashboard_address=LOOPBACK_DASHBOARD,
+                                      silence_logs=logging.ERROR) as cluster:  # (no page of warnings on Ctrl-C)
+            with distributed.Client(cluster) as client:
+                yield client.get_executor(pure=False)
+    else:
+        with _distributed(scheduler).Client(scheduler) as client:
+            yield client.get_executor(pure=False)
