@@ -56,8 +56,8 @@ from mdr_events.models.continuum import evaluate, extremum, solve_path
 from mdr_events.analysis.convergence import exact_references_A
 from mdr_events.models.discrete import run_discrete
 from mdr_events.models.paths import Path, exit_depth
-from mdr_events.friction import FrictionLaw
-from mdr_events.profiles import PowerLaw
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.indenters import PowerLaw
 from mdr_events.theory import mindlin, power_law
 from mdr_events.theory import analytic
 

@@ -7,8 +7,8 @@ an angle, with Heß's adhesion rule (two works of adhesion) and a
 spring-slip criterion.
 
 Layers, bottom to top (a module imports only from its own layer or those
-below; ``tests/test_layers.py`` checks it): ``parameters``, ``profiles``, ``friction`` and ``validation``
-→ ``io`` (``datasets``: stamp, result schemas, comparison; ``files``: netCDF
+below; ``tests/test_layers.py`` checks it): ``parameters``, ``validation`` and ``limits`` → ``contact`` (the
+physical model as data: ``Contact`` of an ``Elastomer``, an indenter, ``Adhesion`` and a ``FrictionLaw``) → ``io`` (``datasets``: stamp, result schemas, comparison; ``files``: netCDF
 in and out) → ``theory`` (``symbolic`` SymPy derivations, ``analytic`` closed
 forms, ``power_law`` those of other indenters, ``tabulated`` a table's, ``mindlin`` tangential loading at a constant depth, ``phase``
 diagrams) → ``models`` (``paths``, ``discrete`` springs,
@@ -19,8 +19,8 @@ diagrams) → ``models`` (``paths``, ``discrete`` springs,
 
 from mdr_events._version import __version__
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, PowerLaw, TabulatedProfile
-from mdr_events.friction import FRICTION_LAWS, FrictionLaw
+from mdr_events.contact import (Adhesion, Contact, Elastomer, FRICTION_LAWS, FlatPunch, FrictionLaw, Paraboloid,
+                                PowerLaw, TabulatedProfile)
 from mdr_events.limits import Limits, ResourceLimitError
 from mdr_events.io.datasets import DOI
 from mdr_events.io.files import open_result, write_netcdf
@@ -52,6 +52,10 @@ from mdr_events import plotting  # noqa: F401 - registers the figures of the res
 from mdr_events.app.study import load_study, run_study
 
 __all__ = [
+    "Adhesion",
+    "Contact",
+    "Elastomer",
+    "Paraboloid",
     "Limits",
     "ResourceLimitError",
     "__version__",

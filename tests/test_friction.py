@@ -1,4 +1,4 @@
-"""The friction laws as data (mdr_events.friction): names, μ, what each law uses, and the attributes a result
+"""The friction laws as data (mdr_events.contact.friction): names, μ, what each law uses, and the attributes a result
 carries; bad input named."""
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
+from mdr_events.contact.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
 
 
 def test_the_default_is_the_papers_law():

@@ -1,6 +1,7 @@
 """Imports point down only: no module of mdr_events imports from a layer above its own.
 
-Layers, bottom to top: the foundation (``parameters``, ``profiles``, ``validation``, ``limits``, ``_version``), ``io``,
+Layers, bottom to top: the foundation (``parameters``, ``validation``, ``limits``, ``_version``), ``contact`` (the
+physical model as data), ``io``,
 ``theory``, ``models`` (with ``models/continuum``), ``analysis``, ``plotting``, ``app``. A module may
 import from its own layer and those below. Every import counts, also one inside a function or under
 ``TYPE_CHECKING``. ``mdr_events/__init__.py`` (the public API) and ``_version.py`` are exempt as
@@ -20,8 +21,8 @@ import mdr_events
 PACKAGE = Path(mdr_events.__file__).resolve().parent
 
 #: Layers from the bottom: the first component(s) of a module's name under mdr_events -> its layer.
-LAYERS = ("foundation", "io", "theory", "models", "analysis", "plotting", "app", "package")
-FOUNDATION_MODULES = ("parameters", "profiles", "friction", "validation", "limits", "_version")
+LAYERS = ("foundation", "contact", "io", "theory", "models", "analysis", "plotting", "app", "package")
+FOUNDATION_MODULES = ("parameters", "validation", "limits", "_version")
 EXEMPT_IMPORTERS = ("mdr_events", "mdr_events._version")
 
 

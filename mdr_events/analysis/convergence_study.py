@@ -41,7 +41,7 @@ from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.parameters import Parameters
-from mdr_events.friction import FrictionLaw, as_friction_law
+from mdr_events.contact.friction import FrictionLaw, as_friction_law
 
 __all__ = ["convergence_study", "fit_observed_order", "OrderFit", "CONVERGENCE_STUDY_CONTENT", "NORMS",
            "CONVERGES_SHARE", "SPREAD_FACTOR", "MIN_SPACINGS"]

@@ -56,7 +56,7 @@ from mdr_events.io.agreement import Integrated, RoundOff, register_accuracy
 from mdr_events.io.datasets import figure_of, register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
-from mdr_events.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
+from mdr_events.contact.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs
 from mdr_events.models.paths import Path
 from mdr_events.theory.scales import check_representable
@@ -82,7 +82,7 @@ LOG_SCALED = ("E", "R", "tau0", "dgamma0", "dgamma1", "mu")
 OFFSETS = ("time_offset", "depth_offset")
 #: Every name ``free`` may hold. ``d_max`` and ``v`` are the path's, not the material's: give the path.
 FREE_NAMES = ("E", "nu", "R", "tau0", "dgamma0", "dgamma1", "mu") + OFFSETS
-#: The coefficient of friction of a law with Coulomb's part (:mod:`mdr_events.friction`), free beside the parameters.
+#: The coefficient of friction of a law with Coulomb's part (:mod:`mdr_events.contact.friction`), free beside the parameters.
 FRICTION_NAME = "mu"
 OFFSET_UNITS = {"time_offset": "s", "depth_offset": "m", "mu": "1"}
 OFFSET_LONG_NAMES = {"time_offset": "the measured clock's reading at the path's time 0 (after time_origin)",

@@ -37,8 +37,8 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import EventKind, Tolerances, extremum, solve_path, tangential_work
 from mdr_events.models.continuum.solution import scan_spans
 from mdr_events.models import indenters
-from mdr_events.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
-from mdr_events.profiles import TabulatedProfile
+from mdr_events.contact.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
+from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.models.continuum.caps import check_supported
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.models.paths import Path
@@ -110,7 +110,7 @@ class SweepSpec:
     limits: Limits = DEFAULT_LIMITS
     #: the indenter (``None``: the paraboloid of ``R``)
     profile: SimulatedProfile = None
-    #: the friction law (:mod:`mdr_events.friction`)
+    #: the friction law (:mod:`mdr_events.contact.friction`)
     friction: FrictionLaw = TAU0
 
     def run(self, values: Sequence[float]) -> tuple[dict[str, float], np.ndarray | None]:

@@ -51,7 +51,7 @@ from mdr_events.models.indenters import SimulatedProfile, check_simulated_profil
 from mdr_events.models.paths import Path
 from mdr_events.models.simulate import scenario_paths
 from mdr_events.parameters import Parameters, check_parameters
-from mdr_events.friction import FrictionLaw, as_friction_law, friction_attrs
+from mdr_events.contact.friction import FrictionLaw, as_friction_law, friction_attrs
 
 __all__ = ["validate", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
 

@@ -42,9 +42,9 @@ from mdr_events.io.candidates import CANDIDATE_QUANTITIES, unit_factor
 from mdr_events.io.files import check_output_stem, prepare_output_directory
 from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES, scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters, from_preset
-from mdr_events.profiles import FlatPunch, PowerLaw
+from mdr_events.contact.indenters import FlatPunch, PowerLaw
 from mdr_events.io.candidates import read_profile_table
-from mdr_events.friction import FRICTION_LAWS, FrictionLaw
+from mdr_events.contact.friction import FRICTION_LAWS, FrictionLaw
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.theory import symbolic
 

@@ -42,7 +42,7 @@ from mdr_events.io.agreement import rounded_text_differences
 from mdr_events.models.continuum import Tolerances
 from mdr_events.io.datasets import DOI
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
-from mdr_events.profiles import FlatPunch
+from mdr_events.contact.indenters import FlatPunch
 from mdr_events.plotting.figures import plot_fretting
 from mdr_events.plotting.fit import plot_fit
 from mdr_events.plotting.universal import plot_universal_map

@@ -28,8 +28,8 @@ from mdr_events.models.paths import Path, exit_depth
 from mdr_events.models.simulate import (CUSTOM_DIMENSION, SIMULATION_CONTENT, case_dimension, scenario_paths,
                                         simulate)
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, PowerLaw
-from mdr_events.friction import FrictionLaw
+from mdr_events.contact.indenters import FlatPunch, PowerLaw
+from mdr_events.contact.friction import FrictionLaw
 from mdr_events.theory import analytic, mindlin, power_law
 
 __all__ = ["Reproduction", "compute", "jobs", "COMPUTE_STEPS", "critical_angles_A", "critical_angles_B",

@@ -37,8 +37,8 @@ from mdr_events.io.files import (PendingFile, atomic_write_all, check_file_path,
                                  open_result, prepare_output_directory)
 from mdr_events.models.simulate import case_dimension
 from mdr_events.parameters import Parameters
-from mdr_events.friction import FrictionLaw
-from mdr_events.profiles import Profile
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.indenters import Profile
 from mdr_events.plotting.figures import figure_png, plot_phase_diagram, plot_simulation
 from mdr_events.theory.phase import phase_diagram
 from mdr_events.validation import shown

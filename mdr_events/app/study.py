@@ -98,9 +98,9 @@ from mdr_events.models.paths import Path
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.models.simulate import scenario_paths, simulate
 from mdr_events.parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
-from mdr_events.friction import TAU0, FrictionLaw
+from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.io.candidates import read_profile_table
-from mdr_events.profiles import FlatPunch, PowerLaw
+from mdr_events.contact.indenters import FlatPunch, PowerLaw
 from mdr_events.validation import shown
 
 if TYPE_CHECKING:

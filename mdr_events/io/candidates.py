@@ -19,7 +19,7 @@ import xarray as xr
 
 from mdr_events.io.files import load_netcdf
 from mdr_events.limits import DEFAULT_LIMITS, Limits
-from mdr_events.profiles import TabulatedProfile
+from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.validation import SCALE_MAX, real_array, shown
 
 __all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor", "check_run_is_finite",
@@ -124,7 +124,7 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
 
 def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
     """A tabulated indenter from a CSV file with a header row naming the columns ``r`` and ``f`` (m; ``#`` lines are
-    comments): :class:`~mdr_events.profiles.TabulatedProfile`. Errors name the file and what is allowed."""
+    comments): :class:`~mdr_events.contact.indenters.TabulatedProfile`. Errors name the file and what is allowed."""
     path = Path(path)
     if not path.is_file():
         raise ValueError(f"table={str(path)!r}: no such file; allowed: a CSV file with the columns r and f (m)")

@@ -69,8 +69,8 @@ from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
-from mdr_events.profiles import PowerLaw
-from mdr_events.friction import TAU0, FrictionLaw, as_friction_law
+from mdr_events.contact.indenters import PowerLaw
+from mdr_events.contact.friction import TAU0, FrictionLaw, as_friction_law
 from mdr_events.theory import mindlin
 
 __all__ = ["run_discrete", "paraboloid_profile", "MIN_SPRINGS_IN_CONTACT"]
@@ -601,12 +601,12 @@ def run_discrete(
     dt : float
         Time step in s (the grid is ``k dt``, shared by all cases).
     profile : PowerLaw or callable, optional
-        The indenter: a :class:`~mdr_events.profiles.PowerLaw` (``n >= 1``), or its springs' profile ``g(x)``
+        The indenter: a :class:`~mdr_events.contact.indenters.PowerLaw` (``n >= 1``), or its springs' profile ``g(x)``
         (vectorised); default the paraboloid (4).
     limits : Limits, optional
         Refuse, before allocating, a run whose steps, springs or memory exceed them (:func:`check_discrete_size`).
     friction : FrictionLaw or str, optional
-        The cap on the springs' shifts (:mod:`mdr_events.friction`); default the paper's ``"tau0"``. A law with
+        The cap on the springs' shifts (:mod:`mdr_events.contact.friction`); default the paper's ``"tau0"``. A law with
         Coulomb's part gives every spring its own cap and is stepped spring by spring
         (:func:`_run_case_per_spring`).
 

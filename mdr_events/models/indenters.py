@@ -1,6 +1,6 @@
 """The indenter the simulators take: the paper's paraboloid (``profile=None``, of ``Parameters.R``), a
-power law ``f = c rⁿ`` (:class:`~mdr_events.profiles.PowerLaw`, ``n >= 1``) or the flat punch
-(:class:`~mdr_events.profiles.FlatPunch`), and what the paths and the discrete model read off it: the radius
+power law ``f = c rⁿ`` (:class:`~mdr_events.contact.indenters.PowerLaw`, ``n >= 1``) or the flat punch
+(:class:`~mdr_events.contact.indenters.FlatPunch`), and what the paths and the discrete model read off it: the radius
 of a depth on a branch, the jump-off, the springs' profile ``g(x)``.
 
 For ``profile=None`` every function is the paper's own (:mod:`mdr_events.theory.analytic`), so that the
@@ -14,9 +14,9 @@ from collections.abc import Callable
 
 import numpy as np
 
-from mdr_events.friction import TAU0, FrictionLaw
+from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, PowerLaw, TabulatedProfile, profile_attrs
+from mdr_events.contact.indenters import FlatPunch, PowerLaw, TabulatedProfile, profile_attrs
 from mdr_events.theory import analytic, mindlin, power_law, symbolic, tabulated
 from mdr_events.theory.branches import branch_radius, jump_off
 

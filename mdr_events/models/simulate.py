@@ -21,7 +21,7 @@ from mdr_events.models.paths import Path
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.parameters import Parameters, check_parameters
-from mdr_events.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
+from mdr_events.contact.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.models.continuum.caps import check_supported
 from mdr_events.theory import analytic
 from mdr_events.limits import DEFAULT_LIMITS, Limits
@@ -368,12 +368,12 @@ def simulate(
         output samples, 2000 waypoints per path for the continuum); a larger run is refused before it
         starts with :class:`~mdr_events.limits.ResourceLimitError` giving the estimate.
     profile : PowerLaw, optional
-        The indenter, a power law ``f = c rⁿ`` with ``n >= 1`` (:class:`~mdr_events.profiles.PowerLaw`; the
+        The indenter, a power law ``f = c rⁿ`` with ``n >= 1`` (:class:`~mdr_events.contact.indenters.PowerLaw`; the
         cone is ``n = 1``); default ``None``, the paper's paraboloid of ``params.R`` (then ``R`` is the
         only use of the indenter's shape). Both methods take it; the dataset then has the attribute
         ``profile`` saying which (absent: the paraboloid).
     friction : FrictionLaw or str, optional
-        The cap on the springs' shifts (:mod:`mdr_events.friction`): default the paper's ``"tau0"``;
+        The cap on the springs' shifts (:mod:`mdr_events.contact.friction`): default the paper's ``"tau0"``;
         ``FrictionLaw("coulomb", mu=0.3)`` or ``FrictionLaw("tau0+coulomb", mu=0.3)``. The discrete method takes
         every law; the continuum takes Coulomb's part for a contact without adhesion (``dgamma0 = dgamma1 = 0``).
         The dataset then has the attributes ``friction_law``, ``friction_mu`` and ``friction_cap``.

@@ -5,7 +5,7 @@ table."""
 from __future__ import annotations
 
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, Profile, TabulatedProfile
+from mdr_events.contact.indenters import FlatPunch, Profile, TabulatedProfile
 from mdr_events.theory import analytic, power_law, tabulated
 
 __all__ = ["branch_radius", "jump_off"]

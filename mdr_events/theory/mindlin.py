@@ -2,7 +2,7 @@
 the slip onset of proportional loading (scenario A).
 
 At a constant depth ``d`` without adhesion every spring in contact keeps its cap (the friction law's,
-:mod:`mdr_events.friction`): ``ū(ξ) = K a + κ (d − g(ξ))`` with ``K a`` the part of ``τ0`` (13) and
+:mod:`mdr_events.contact.friction`): ``ū(ξ) = K a + κ (d − g(ξ))`` with ``K a`` the part of ``τ0`` (13) and
 ``κ = μ E*/G*`` Coulomb's (:func:`coulomb_cap_ratio`). Each spring is then a play operator of its own cap,
 and, from rest, a tangential shift ``u_x`` of the indenter gives the *virgin curve*
 
@@ -37,9 +37,9 @@ import math
 import numpy as np
 from scipy import integrate
 
-from mdr_events.friction import FrictionLaw, as_friction_law
+from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, PowerLaw, Profile
+from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
 from mdr_events.theory import power_law, symbolic
 from mdr_events.validation import check_real, real_array, validate_alpha
 

@@ -11,8 +11,8 @@ from mdr_events.io.agreement import RoundOff, register_accuracy
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.parameters import Parameters, check_parameters
-from mdr_events.friction import FrictionLaw, as_friction_law, friction_attrs
-from mdr_events.profiles import Profile, TabulatedProfile, profile_attrs
+from mdr_events.contact.friction import FrictionLaw, as_friction_law, friction_attrs
+from mdr_events.contact.indenters import Profile, TabulatedProfile, profile_attrs
 from mdr_events.theory import analytic, mindlin, power_law, tabulated
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_choice, validate_alpha
@@ -65,7 +65,7 @@ def phase_diagram(
         are then the non-adhesive ones, "jkr" the adhesive (Heß's rule). A :class:`TabulatedProfile` has scenario A's
         (:mod:`mdr_events.theory.tabulated`, ``nan`` where the onset lies past the table).
     friction : FrictionLaw or str, optional
-        Another friction law than the paper's ``"tau0"`` (:mod:`mdr_events.friction`): scenario A without adhesion
+        Another friction law than the paper's ``"tau0"`` (:mod:`mdr_events.contact.friction`): scenario A without adhesion
         (:func:`mdr_events.theory.mindlin.d_crit_A`, ``d_crit_B``, ``d_crit_B_indentation``); the adhesive ("jkr")
         variables are ``nan`` (no closed form: springs in tension hold no Coulomb shift).
     limits : Limits, optional

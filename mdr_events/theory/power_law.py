@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, PowerLaw, Profile
+from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
 from mdr_events.theory import symbolic
 from mdr_events.validation import check_flag, check_real, validate_alpha
 
@@ -47,7 +47,7 @@ def check_profile(profile) -> Profile:
     """``profile`` if it is a :class:`PowerLaw` or a :class:`FlatPunch`; else ``TypeError`` naming it."""
     if not isinstance(profile, (PowerLaw, FlatPunch)):
         raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: a PowerLaw or "
-                        "a FlatPunch (mdr_events.profiles)")
+                        "a FlatPunch (mdr_events.contact.indenters)")
     return profile
 
 

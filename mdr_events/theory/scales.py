@@ -14,9 +14,9 @@ import math
 import warnings
 from typing import Callable, NamedTuple
 
-from mdr_events.friction import TAU0, FrictionLaw
+from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import Profile, TabulatedProfile
+from mdr_events.contact.indenters import Profile, TabulatedProfile
 from mdr_events.theory import analytic, mindlin, tabulated
 from mdr_events.theory.branches import branch_radius, jump_off
 from mdr_events.validation import SCALE_MAX, SCALE_MIN

@@ -1,4 +1,4 @@
-"""The tabulated indenter (:class:`~mdr_events.profiles.TabulatedProfile`): the Abel transform (3) of a table
+"""The tabulated indenter (:class:`~mdr_events.contact.indenters.TabulatedProfile`): the Abel transform (3) of a table
 ``f(r)`` computed numerically, and Heß's relations on it where no closed form exists.
 
 The table is interpolated by a monotone cubic (PCHIP, continuously differentiable). With ``r = x sin θ`` the
@@ -30,7 +30,7 @@ import numpy as np
 from scipy import interpolate, optimize
 
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import TabulatedProfile
+from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.theory import power_law, symbolic
 from mdr_events.validation import validate_alpha
 

@@ -257,7 +257,7 @@ def test_a_cone_experiment_is_fitted_with_its_indenter(paper):
     """Synthetic data of a cone (1 % noise): τ0 and Δγ1 from 30 % off lie in their 95 % intervals when the fit
     knows the indenter, without warnings; the paraboloid's curve lies ten noise levels away. R cannot be free
     with a power law."""
-    from mdr_events.profiles import PowerLaw
+    from mdr_events.contact.indenters import PowerLaw
 
     cone = PowerLaw.cone(0.1)
     path = me.Path.scenario_A(20.0, paper, profile=cone)
@@ -284,7 +284,7 @@ def test_a_good_cone_fit_is_not_warned_of_a_lost_contact(paper, seed):
     """A cone's area and F_x fade out before its small jump-off radius comes off: the data's last sample above
     the noise moves by the fade's duration (5 s at 1 % noise), which is no clock offset (the warning fired on
     every seed)."""
-    from mdr_events.profiles import PowerLaw
+    from mdr_events.contact.indenters import PowerLaw
 
     cone = PowerLaw.cone(0.1)
     measured = synthetic_measurement(paper, "A", 20.0, times=np.linspace(0.0, 1250.0, 2001), relative_noise=0.01,

@@ -302,7 +302,7 @@ def test_a_table_may_name_its_fields_in_any_order(paper):
 def test_a_sweep_of_a_power_law_indenter_meets_its_closed_forms(paper):
     """profile=PowerLaw: the onset depths are the power law's (18) to 1e-9 (nan where it lies beyond d_max and
     the run slides later), the critical angles its own, the result names the indenter."""
-    from mdr_events.profiles import PowerLaw
+    from mdr_events.contact.indenters import PowerLaw
     from mdr_events.theory import power_law
 
     cone = PowerLaw.cone(0.1)
@@ -323,7 +323,7 @@ def test_a_sweep_of_a_power_law_indenter_meets_its_closed_forms(paper):
 def test_a_power_law_sweep_reports_its_own_pull_off_force_and_refuses_R(paper):
     """The pull-off force is F_N (10) of the power law at the pull-off (the least normal force, its force-control
     minimum, lies below it), not the paraboloid's; sweeping R with a power law is refused by name."""
-    from mdr_events.profiles import PowerLaw
+    from mdr_events.contact.indenters import PowerLaw
     from mdr_events.theory import power_law
 
     quartic = power_law.with_radius_at(4.0, math.sqrt(paper.R * paper.d_max), paper.d_max)

@@ -181,7 +181,7 @@ def test_a_power_law_candidate_is_validated_against_its_own_indenter(paper):
     """A discrete run of a power-law indenter (n = 3, Δx = 2 µm) passes against the power-law continuum (its
     first-order gap, below 1e-3 of each range) and fails against the paraboloid's: the door tells the indenters
     apart. The report names the profile."""
-    from mdr_events.profiles import PowerLaw
+    from mdr_events.contact.indenters import PowerLaw
 
     profile = PowerLaw(2e3, 3.0)
     candidate = me.simulate(paper, "A", alpha=20.0, dx=2e-6, profile=profile).isel(alpha=0)
@@ -195,7 +195,7 @@ def test_a_power_law_candidate_is_validated_against_its_own_indenter(paper):
 
 def test_a_solution_of_another_indenter_is_refused(paper):
     from mdr_events.models.continuum import solve_path
-    from mdr_events.profiles import PowerLaw
+    from mdr_events.contact.indenters import PowerLaw
 
     candidate = me.simulate(paper, "A", alpha=20.0, dx=4e-6, n_steps=2000).isel(alpha=0)
     solution = solve_path(paper, me.Path.scenario_A(20.0, paper))

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events.friction import FrictionLaw
+from mdr_events.contact.friction import FrictionLaw
 from mdr_events.analysis.fit import synthetic_measurement
 from mdr_events.models.continuum import solve_path
 from mdr_events.theory import mindlin
@@ -45,7 +45,7 @@ def test_a_coulomb_simulator_converges_to_the_exact_reference(hertz, fretting):
 
 def test_a_solution_of_another_law_is_refused(hertz, fretting):
     solution = solve_path(hertz, fretting)
-    with pytest.raises(ValueError, match=r"solution= was solved for friction=FrictionLaw\(law='tau0'"):
+    with pytest.raises(ValueError, match=r"solution= was solved for friction=FrictionLaw\('tau0'\)"):
         me.validate({"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}, hertz, fretting, solution=solution,
                     friction=COULOMB)
 

@@ -10,9 +10,9 @@ import pytest
 
 import mdr_events as me
 from mdr_events.analysis.convergence import history_differences
-from mdr_events.friction import FrictionLaw
+from mdr_events.contact.friction import FrictionLaw
 from mdr_events.models.continuum import EventKind, extremum, solve_path
-from mdr_events.profiles import FlatPunch
+from mdr_events.contact.indenters import FlatPunch
 from mdr_events.theory import power_law as pl
 
 PUNCH = FlatPunch(1.5e-3)

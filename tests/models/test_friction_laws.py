@@ -11,9 +11,9 @@ import pytest
 
 import mdr_events as me
 from mdr_events.analysis.convergence import history_differences, observed_orders
-from mdr_events.friction import FrictionLaw
+from mdr_events.contact.friction import FrictionLaw
 from mdr_events.models.continuum import EventKind, evaluate, solve_path
-from mdr_events.profiles import PowerLaw
+from mdr_events.contact.indenters import PowerLaw
 from mdr_events.theory import mindlin
 from mdr_events.theory import power_law as pl
 

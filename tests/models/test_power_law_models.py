@@ -10,7 +10,7 @@ import pytest
 
 import mdr_events as me
 from mdr_events.analysis.convergence import HISTORY_QUANTITIES, history_differences, observed_orders
-from mdr_events.profiles import PowerLaw
+from mdr_events.contact.indenters import PowerLaw
 from mdr_events.theory import power_law as pl
 
 #: Exact closed forms against the continuum: its radii and event roots are converged to about 1e-14, the

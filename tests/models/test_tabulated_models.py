@@ -10,7 +10,7 @@ import pytest
 import mdr_events as me
 from mdr_events.analysis.convergence import history_differences, observed_orders
 from mdr_events.models.continuum import EventKind, extremum, solve_path
-from mdr_events.profiles import TabulatedProfile
+from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.theory import tabulated as tb
 
 REACH = 4e-3

@@ -11,8 +11,8 @@ import pytest
 from scipy import integrate, optimize
 
 import mdr_events as me
-from mdr_events.friction import FrictionLaw
-from mdr_events.profiles import FlatPunch, PowerLaw
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.indenters import FlatPunch, PowerLaw
 from mdr_events.theory import analytic, mindlin
 from mdr_events.theory import power_law as pl
 from mdr_events.theory import symbolic as S

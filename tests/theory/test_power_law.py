@@ -12,7 +12,7 @@ import sympy as sp
 from scipy import integrate, optimize
 
 import mdr_events as me
-from mdr_events.profiles import FlatPunch, PowerLaw
+from mdr_events.contact.indenters import FlatPunch, PowerLaw
 from mdr_events.theory import analytic
 from mdr_events.theory import power_law as pl
 from mdr_events.theory import symbolic as S

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events.profiles import PowerLaw, TabulatedProfile
+from mdr_events.contact.indenters import PowerLaw, TabulatedProfile
 from mdr_events.theory import analytic
 from mdr_events.theory import power_law as pl
 from mdr_events.theory import symbolic as S

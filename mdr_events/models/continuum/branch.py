@@ -10,7 +10,7 @@ import numpy as np
 
 from mdr_events.theory import analytic, power_law, symbolic, tabulated
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, PowerLaw, TabulatedProfile
+from mdr_events.contact.indenters import FlatPunch, PowerLaw, TabulatedProfile
 
 #: A depth this share below the jump-off depth still gives the jump-off radius: a radius pinned just
 #: outside the fold is released at a depth that rounds below it.
@@ -93,7 +93,7 @@ class Branch:
 
 
 class PowerLawBranch(Branch):
-    """The branch of the power law ``f = c rⁿ`` (:class:`~mdr_events.profiles.PowerLaw`):
+    """The branch of the power law ``f = c rⁿ`` (:class:`~mdr_events.contact.indenters.PowerLaw`):
     ``d = κ c aⁿ − sqrt(2π a Δγ / E*)`` (:mod:`mdr_events.theory.power_law`); the radius of a depth is the root of
     a convex function of ``s = √a`` above the jump-off (:func:`~mdr_events.theory.power_law.branch_root`)."""
 
@@ -142,7 +142,7 @@ class PowerLawBranch(Branch):
 
 
 class FlatPunchBranch(Branch):
-    """The flat punch of radius ``R_p`` (:class:`~mdr_events.profiles.FlatPunch`): every spring under it has
+    """The flat punch of radius ``R_p`` (:class:`~mdr_events.contact.indenters.FlatPunch`): every spring under it has
     ``g = 0``, so the contact is the punch's whole face from the first touch (``d >= 0``) on and never grows
     beyond it (:meth:`growth_depth` is ``+inf``); its edge springs reach Heß's limit (8) at
     ``d = −sqrt(2π R_p Δγ / E*)``, the jump-off, where every spring lets go at once (Kendall's pull-off).
@@ -185,7 +185,7 @@ class FlatPunchBranch(Branch):
 
 
 class TabulatedBranch(Branch):
-    """The branch of a tabulated profile (:class:`~mdr_events.profiles.TabulatedProfile`): ``d = g(a) − sqrt(2π a
+    """The branch of a tabulated profile (:class:`~mdr_events.contact.indenters.TabulatedProfile`): ``d = g(a) − sqrt(2π a
     Δγ / E*)`` with ``g`` the table's numerical Abel transform (:mod:`mdr_events.theory.tabulated`); the radius of a
     depth a bracketed root above the jump-off."""
 

@@ -1,7 +1,7 @@
 """The friction law's caps on the springs' shifts, as the continuum uses them.
 
 A spring at ``ξ`` of a contact of radius ``a`` at depth ``d`` slides once its shift reaches
-``ū(ξ) = K a + κ (d − g(ξ))`` (:mod:`mdr_events.friction`): ``K a`` is the part of ``τ0`` (13), the same for every
+``ū(ξ) = K a + κ (d − g(ξ))`` (:mod:`mdr_events.contact.friction`): ``K a`` is the part of ``τ0`` (13), the same for every
 spring, and ``κ = μ E*/G*`` Coulomb's, proportional to the spring's compression. Each cap's *level*, where the
 anchors of its springs sit, is ``x − cap (K a + κ d)`` in the coordinates the cap sees the anchors in
 (:meth:`~.anchors.AnchorMap.seen_by`: ``Y − cap κ g``), so the slip zones are laid out as for ``τ0`` alone.
@@ -13,9 +13,9 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
-from mdr_events.friction import FrictionLaw
+from mdr_events.contact.friction import FrictionLaw
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch
+from mdr_events.contact.indenters import FlatPunch
 from mdr_events.theory import mindlin, power_law
 
 

@@ -9,9 +9,9 @@ from typing import NamedTuple
 import numpy as np
 
 from mdr_events.theory import analytic, power_law, symbolic, tabulated
-from mdr_events.friction import TAU0, FrictionLaw
+from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
-from mdr_events.profiles import FlatPunch, PowerLaw, TabulatedProfile
+from mdr_events.contact.indenters import FlatPunch, PowerLaw, TabulatedProfile
 from mdr_events.models.paths import Path
 from .branch import Branch, make_branch
 from .caps import caps_of, check_supported
@@ -29,7 +29,7 @@ class ContinuumModel:
     profile : PowerLaw, FlatPunch or None
         The indenter (``None``: the paper's paraboloid of ``params.R``).
     friction : FrictionLaw
-        The cap on the springs' shifts (:mod:`mdr_events.friction`).
+        The cap on the springs' shifts (:mod:`mdr_events.contact.friction`).
     caps : Caps
         Its two parts, ``ū(ξ) = K a + κ (d − g(ξ))``.
     K : float

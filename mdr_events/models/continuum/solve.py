@@ -16,7 +16,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from mdr_events.models.indenters import SimulatedProfile, check_reach, check_simulated_profile
-from mdr_events.friction import FrictionLaw, as_friction_law
+from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from .anchors import AnchorMap, Piece
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
 from .plan import Action, SpanPlan, plan_span

@@ -1,14 +1,16 @@
-"""Indenter profiles as data: the power law ``f(r) = c rⁿ`` and the flat punch.
+"""Indenters as data: the paper's paraboloid, the power law ``f(r) = c rⁿ``, the flat punch and a table ``f(r)``.
 
-The paper's indenter is the paraboloid ``f = r²/(2R)``, the power law with ``n = 2`` and
-``c = 1/(2R)`` (:meth:`PowerLaw.paraboloid`). The MDR maps any axisymmetric profile to the
-equivalent profile ``g(x)`` of the springs by the Abel transform (3); for the power law
-``g(x) = κₙ c |x|ⁿ`` with ``κₙ = √π Γ(n/2 + 1) / Γ(n/2 + 1/2)`` (2 for the paraboloid, π/2 for the cone;
-derived in :mod:`mdr_events.theory.symbolic`, evaluated in :mod:`mdr_events.theory.power_law`).
+The paper's indenter is the paraboloid ``f = r²/(2R)`` (:class:`Paraboloid`, eq. (4)), the power law with ``n = 2``
+and ``c = 1/(2R)`` (:meth:`PowerLaw.paraboloid`); the paraboloid keeps its own type so that the paper's functions
+serve it bit for bit. The MDR maps any axisymmetric profile to the equivalent profile ``g(x)`` of the springs by the
+Abel transform (3); for the power law ``g(x) = κₙ c |x|ⁿ`` with ``κₙ = √π Γ(n/2 + 1) / Γ(n/2 + 1/2)`` (2 for the
+paraboloid, π/2 for the cone; derived in :mod:`mdr_events.theory.symbolic`, evaluated in
+:mod:`mdr_events.theory.power_law`).
 
-The closed forms of the theory layer take both; the simulators (continuum and discrete), ``validate``,
-``fit``, ``sweep`` and the command line take a power law with ``n >= 1`` or a flat punch (``profile=``), and
-the paraboloid of :class:`~mdr_events.Parameters` by default.
+Each kind says what it is in words (``describe``) and in a result's attributes (``to_attrs``; read back by
+:func:`indenter_from_attrs`). The closed forms of the theory layer take every kind; the simulators (continuum and
+discrete), ``validate``, ``fit``, ``sweep`` and the command line take a power law with ``n >= 1``, the flat punch
+and a table beside the paraboloid.
 """
 
 from __future__ import annotations
@@ -22,13 +24,39 @@ from scipy import interpolate
 
 from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_real, real_array, shown
 
-__all__ = ["PowerLaw", "FlatPunch", "TabulatedProfile", "Profile", "profile_attrs"]
+__all__ = ["Paraboloid", "PowerLaw", "FlatPunch", "TabulatedProfile", "Profile", "Indenter", "profile_attrs",
+           "indenter_from_attrs"]
 
 
 #: Significant digits of a computed shape in words: a shape computed from other parameters (the cone that reaches the
 #: paraboloid's radius) is determined to round-off, far below the last of these digits, so that the words are the
 #: same on every CPU (the exact values are in their own float attributes, compared numerically).
 DESCRIBED_DIGITS = 9
+
+
+@dataclass(frozen=True)
+class Paraboloid:
+    """The paper's indenter (4): ``f(r) = r²/(2R)``, a sphere of radius ``R`` near its tip.
+
+    Attributes
+    ----------
+    R : float
+        Radius of curvature in m, finite and > 0.
+    """
+
+    R: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "R", check_real("Paraboloid.R", self.R, "a finite number > 0 (m)",
+                                                 lambda value: value > 0.0))
+
+    def describe(self) -> str:
+        """The profile in words."""
+        return f"paraboloid f = r^2/(2R), R = {self.R:.{DESCRIBED_DIGITS}g} m"
+
+    def to_attrs(self) -> dict[str, object]:
+        """A result's attributes: ``param_R`` and its unit (the paper's results name no other indenter)."""
+        return {"param_R": self.R, "param_R_units": "m"}
 
 
 @dataclass(frozen=True)
@@ -71,6 +99,10 @@ class PowerLaw:
         are the attributes ``profile_c`` and ``profile_n``)."""
         return f"power law f = c r^n, c = {self.c:.{DESCRIBED_DIGITS}g} m^(1-n), n = {self.n:.{DESCRIBED_DIGITS}g}"
 
+    def to_attrs(self) -> dict[str, object]:
+        """A result's attributes: ``profile`` (in words), ``profile_c`` and ``profile_n``."""
+        return {"profile": self.describe(), "profile_c": self.c, "profile_n": self.n}
+
 
 @dataclass(frozen=True)
 class FlatPunch:
@@ -90,6 +122,10 @@ class FlatPunch:
         """The profile in words, for a dataset's ``profile`` attribute (to :data:`DESCRIBED_DIGITS`; the exact value
         is the attribute ``profile_radius``)."""
         return f"flat punch of radius {self.radius:.{DESCRIBED_DIGITS}g} m"
+
+    def to_attrs(self) -> dict[str, object]:
+        """A result's attributes: ``profile`` (in words) and ``profile_radius``."""
+        return {"profile": self.describe(), "profile_radius": self.radius}
 
 
 #: The most points a :class:`TabulatedProfile` takes: its Abel transform's quadrature costs the square of the points
@@ -147,6 +183,12 @@ class TabulatedProfile:
         """The profile in words, for a dataset's ``profile`` attribute."""
         return f"tabulated profile f(r), {len(self.r)} points to r = {self.r[-1]!r} m, f = {self.f[-1]!r} m there"
 
+    def to_attrs(self) -> dict[str, object]:
+        """A result's attributes: ``profile`` (in words) and the table itself, ``profile_table_r`` and
+        ``profile_table_f`` (every value as Python writes it back, exact, separated by commas)."""
+        return {"profile": self.describe(), "profile_table_r": ", ".join(map(repr, self.r)),
+                "profile_table_f": ", ".join(map(repr, self.f))}
+
 
 def _check_table_scales(r: tuple[float, ...], f: tuple[float, ...]) -> None:
     """Refuse a table whose scales do not fit in double precision: its last radius and height, its narrowest
@@ -183,24 +225,31 @@ def _table_column(name: str, values) -> tuple[float, ...]:
     return tuple(float(value) for value in column)
 
 
-#: Any profile the theory layer takes.
+#: Any profile the theory layer takes beside the paraboloid of ``Parameters.R``.
 Profile = PowerLaw | FlatPunch | TabulatedProfile
+#: Any indenter.
+Indenter = Paraboloid | PowerLaw | FlatPunch | TabulatedProfile
+#: What each kind is called in a note (the paraboloid names itself by ``param_R``).
+_KIND_NAMES = {PowerLaw: "power law", FlatPunch: "flat punch", TabulatedProfile: "tabulated profile"}
 
 
 def profile_attrs(profile: Profile | None) -> dict[str, object]:
-    """A result's attributes naming another indenter than the paraboloid: ``profile`` (in words), ``profile_c`` and
-    ``profile_n`` (a power law), ``profile_radius`` (a flat punch) or ``profile_table_r`` and ``profile_table_f``
-    (a table, its values in m separated by commas), and ``profile_note`` (``param_R`` is then unused); none for the
-    paraboloid (``None``)."""
+    """A result of :class:`~mdr_events.Parameters` and another indenter than its paraboloid: the indenter's attributes
+    (``to_attrs``) and ``profile_note`` (``param_R`` is then unused); none for the paraboloid (``None``)."""
     if profile is None:
         return {}
-    if isinstance(profile, PowerLaw):
-        kind, shape = "power law", {"profile_c": float(profile.c), "profile_n": float(profile.n)}
-    elif isinstance(profile, TabulatedProfile):
-        # the table itself, every value as Python writes it back (exact), as two comma-separated strings
-        kind, shape = "tabulated profile", {"profile_table_r": ", ".join(map(repr, profile.r)),
-                                            "profile_table_f": ", ".join(map(repr, profile.f))}
-    else:
-        kind, shape = "flat punch", {"profile_radius": float(profile.radius)}
-    return {"profile": profile.describe(), **shape,
-            "profile_note": f"the indenter is this {kind}: param_R (the paraboloid's radius) is not used"}
+    return {**profile.to_attrs(), "profile_note": f"the indenter is this {_KIND_NAMES[type(profile)]}: param_R (the "
+                                                   "paraboloid's radius) is not used"}
+
+
+def indenter_from_attrs(attrs) -> Indenter:
+    """The indenter a result names (its ``to_attrs``): a power law, flat punch or table where ``profile_*`` says so,
+    else the paraboloid of ``param_R``."""
+    if "profile_c" in attrs:
+        return PowerLaw(float(attrs["profile_c"]), float(attrs["profile_n"]))
+    if "profile_radius" in attrs:
+        return FlatPunch(float(attrs["profile_radius"]))
+    if "profile_table_r" in attrs:
+        return TabulatedProfile(*(tuple(float(value) for value in str(attrs[name]).split(","))
+                                  for name in ("profile_table_r", "profile_table_f")))
+    return Paraboloid(float(attrs["param_R"]))

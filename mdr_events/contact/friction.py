@@ -33,7 +33,7 @@ FRICTION_LAWS: dict[str, tuple[bool, bool]] = {
 }
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class FrictionLaw:
     """A friction law by name (:data:`FRICTION_LAWS`) and its coefficient of friction.
 
@@ -44,13 +44,24 @@ class FrictionLaw:
     mu : float or None
         The coefficient of friction ``μ`` (finite, >= 0): required by the laws with Coulomb's part, not
         allowed with ``"tau0"`` (it would be silently unused).
+    tau0 : float or None
+        The critical mean shear stress ``τ0`` in Pa (finite, >= 0) of the laws with its part, not allowed with
+        ``"coulomb"``. A :class:`~mdr_events.Contact` needs it; ``None``: ``Parameters.tau0`` (the keyword
+        form ``friction=`` beside :class:`~mdr_events.Parameters`).
     """
 
     law: str = "tau0"
     mu: float | None = None
+    tau0: float | None = None
 
     def __post_init__(self) -> None:
         check_choice("FrictionLaw.law", self.law, FRICTION_LAWS)
+        if self.tau0 is not None:
+            if not self.uses_tau0:
+                raise ValueError(f"tau0={shown(self.tau0)} is not allowed with the friction law {self.law!r} (it has no "
+                                 "τ0 part); allowed: None, or the law 'tau0' or 'tau0+coulomb'")
+            object.__setattr__(self, "tau0", check_real("tau0", self.tau0, "a finite number >= 0 (Pa, the critical "
+                                                        "mean shear stress)", lambda value: value >= 0.0))
         if self.uses_mu:
             if self.mu is None:
                 raise ValueError(f"mu=None is not allowed with the friction law {self.law!r}; "
@@ -60,6 +71,10 @@ class FrictionLaw:
         elif self.mu is not None:
             raise ValueError(f"mu={shown(self.mu)} is not allowed with the friction law {self.law!r} (it has no "
                              f"Coulomb part); allowed: None, or the law 'coulomb' or 'tau0+coulomb'")
+
+    def __repr__(self) -> str:
+        values = "".join(f", {name}={getattr(self, name)!r}" for name in ("mu", "tau0") if getattr(self, name) is not None)
+        return f"FrictionLaw({self.law!r}{values})"
 
     @property
     def uses_tau0(self) -> bool:
@@ -80,6 +95,27 @@ class FrictionLaw:
     def coulomb_mu(self) -> float:
         """``μ`` of the Coulomb part (0 for ``"tau0"``)."""
         return float(self.mu) if self.uses_mu else 0.0
+
+    @property
+    def is_complete(self) -> bool:
+        """Whether every part the law uses has its value (``τ0`` given where the law uses it)."""
+        return not self.uses_tau0 or self.tau0 is not None
+
+    def to_attrs(self) -> dict[str, object]:
+        """A result's attributes: ``param_tau0`` and its unit where the law uses ``τ0``; for another law than the
+        paper's also ``friction_law``, ``friction_mu`` and ``friction_cap`` (the cap in words)."""
+        attrs: dict[str, object] = {} if self.tau0 is None else {"param_tau0": self.tau0, "param_tau0_units": "Pa"}
+        if not self.is_default:
+            attrs.update(friction_law=self.law, friction_mu=float(self.mu), friction_cap=self.describe())
+        return attrs
+
+    @classmethod
+    def from_attrs(cls, attrs) -> "FrictionLaw":
+        """The law a result was computed with (:meth:`to_attrs`; ``friction_law`` absent: the paper's)."""
+        law = str(attrs.get("friction_law", "tau0"))
+        mu = float(attrs["friction_mu"]) if FRICTION_LAWS.get(law, (0, 0))[1] else None
+        tau0 = float(attrs["param_tau0"]) if FRICTION_LAWS.get(law, (0, 0))[0] else None
+        return cls(law, mu=mu, tau0=tau0)
 
     def describe(self) -> str:
         """The law in words, for a dataset's ``friction_law`` attribute."""

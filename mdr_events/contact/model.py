@@ -1,0 +1,148 @@
+"""The physical model as one value: the elastomer, the indenter, the adhesion and the friction law.
+
+A :class:`Contact` is immutable and validated once, when it is made; every layer takes it whole. It says what it
+is in a short ``repr`` and in the attributes it stamps on results (:meth:`Contact.to_attrs`, read back by
+:meth:`Contact.from_attrs`, which also reads the files written with :class:`~mdr_events.Parameters`). A value inside
+is changed by its dotted name (``contact.replace(**{"friction.mu": 0.4})``) or by its short name
+(``contact.replace(mu=0.4)``), as fits and sweeps do (:data:`SHORT_NAMES`).
+
+What the indenter moves along (depth, angle, speed) is not part of the contact: it is the motion's.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from typing import Any, Mapping
+
+from mdr_events.contact.adhesion import NO_ADHESION, Adhesion
+from mdr_events.contact.elastomer import Elastomer
+from mdr_events.contact.friction import FrictionLaw, as_friction_law
+from mdr_events.contact.indenters import FlatPunch, Indenter, Paraboloid, PowerLaw, TabulatedProfile, \
+    indenter_from_attrs
+from mdr_events.parameters import Parameters
+from mdr_events.validation import shown
+
+__all__ = ["Contact", "SHORT_NAMES", "PARTS"]
+
+#: The parts of a contact and the types each may be.
+PARTS: dict[str, tuple[type, ...]] = {
+    "elastomer": (Elastomer,),
+    "indenter": (Paraboloid, PowerLaw, FlatPunch, TabulatedProfile),
+    "adhesion": (Adhesion,),
+    "friction": (FrictionLaw,),
+}
+#: Short names of the values inside a contact (those of :class:`~mdr_events.Parameters` and ``mu``) → dotted names.
+SHORT_NAMES: dict[str, str] = {
+    "E": "elastomer.E", "nu": "elastomer.nu", "R": "indenter.R", "c": "indenter.c", "n": "indenter.n",
+    "radius": "indenter.radius", "dgamma0": "adhesion.dgamma0", "dgamma1": "adhesion.dgamma1",
+    "tau0": "friction.tau0", "mu": "friction.mu",
+}
+
+
+@dataclass(frozen=True, repr=False)
+class Contact:
+    """A rigid indenter on an elastomer, with adhesion and friction: the physical model of section 4.
+
+    Attributes
+    ----------
+    elastomer : Elastomer
+        ``E`` and ``ν``: the springs' stiffness per width ``E*`` (5) and ``G*`` (6).
+    indenter : Paraboloid, PowerLaw, FlatPunch or TabulatedProfile
+        The indenter's profile ``f(r)``; the springs see its Abel transform ``g(x)`` (3).
+    adhesion : Adhesion
+        Heß's rule (8) with ``Δγ0`` in and ``Δγ1`` out; default none (Hertz).
+    friction : FrictionLaw
+        The cap on the springs' shifts (:mod:`mdr_events.contact.friction`) with every value it uses: ``τ0`` for the
+        paper's law (13), ``μ`` for Coulomb's, both for their sum.
+
+    Raises
+    ------
+    TypeError
+        A part of another type, naming it and what is allowed.
+    ValueError
+        A friction law without a value it uses (``FrictionLaw("tau0")`` without ``tau0``).
+    """
+
+    elastomer: Elastomer
+    indenter: Indenter
+    adhesion: Adhesion = NO_ADHESION
+    friction: FrictionLaw = FrictionLaw("tau0", tau0=0.0)
+
+    def __post_init__(self) -> None:
+        for name, kinds in PARTS.items():
+            part = getattr(self, name)
+            if not isinstance(part, kinds):
+                raise TypeError(f"Contact.{name}={shown(part)} ({type(part).__name__}) is not allowed; allowed: "
+                                f"{' or '.join(kind.__name__ for kind in kinds)}")
+        if not self.friction.is_complete:
+            raise ValueError(f"Contact.friction={self.friction!r} is not allowed: the law {self.friction.law!r} uses "
+                             "tau0; allowed: a law with its values, e.g. FrictionLaw('tau0', tau0=42e3)")
+
+    def __repr__(self) -> str:
+        return f"Contact({self.elastomer!r}, {self.indenter!r}, {self.adhesion!r}, {self.friction!r})"
+
+    # --- construction ---------------------------------------------------------------------------------------------
+    @classmethod
+    def paper(cls, R: float = 0.03) -> "Contact":
+        """The contact of section 4 (:meth:`Parameters.paper <mdr_events.Parameters.paper>`: ``E``, ``ν``
+        inferred; ``R`` 30 mm or 100 mm, ``τ0``, ``Δγ0``, ``Δγ1`` quoted)."""
+        return cls.from_parameters(Parameters.paper(R))
+
+    @classmethod
+    def from_parameters(cls, params: Parameters, profile: Indenter | None = None,
+                        friction: FrictionLaw | str | None = None) -> "Contact":
+        """The contact of ``params`` (its ``d_max`` and ``v`` are the motion's), with ``profile`` instead of its
+        paraboloid and ``friction`` instead of the paper's law (``τ0`` from ``params`` where the law uses it)."""
+        law = as_friction_law(friction)
+        if law.uses_tau0 and law.tau0 is None:
+            law = dataclasses.replace(law, tau0=params.tau0)
+        return cls(Elastomer(params.E, params.nu), Paraboloid(params.R) if profile is None else profile,
+                   Adhesion(params.dgamma0, params.dgamma1), law)
+
+    @classmethod
+    def from_attrs(cls, attrs: Mapping[str, Any]) -> "Contact":
+        """The contact a result was computed for (:meth:`to_attrs`, or the attributes of
+        :meth:`Parameters.to_attrs <mdr_events.Parameters.to_attrs>` with ``profile_*`` and ``friction_*``)."""
+        return cls(Elastomer.from_attrs(attrs), indenter_from_attrs(attrs), Adhesion.from_attrs(attrs),
+                   FrictionLaw.from_attrs(attrs))
+
+    # --- reading and changing values ------------------------------------------------------------------------------
+    def value(self, name: str) -> float:
+        """The value of a dotted (``"friction.mu"``) or short (``"mu"``) name."""
+        part, field = self._path(name)
+        return getattr(getattr(self, part), field)
+
+    def replace(self, **changes: float) -> "Contact":
+        """A copy with values changed by dotted or short name (validated again), e.g.
+        ``contact.replace(**{"elastomer.E": 1e6}, mu=0.4)``."""
+        parts: dict[str, dict[str, float]] = {}
+        for name, value in changes.items():
+            part, field = self._path(name)
+            parts.setdefault(part, {})[field] = value
+        return dataclasses.replace(self, **{part: dataclasses.replace(getattr(self, part), **fields)
+                                            for part, fields in parts.items()})
+
+    def _path(self, name: str) -> tuple[str, str]:
+        """``(part, field)`` of a dotted or short name that this contact holds; else an error listing those it does."""
+        dotted = SHORT_NAMES.get(name, name)
+        part, _, field = dotted.partition(".")
+        held = getattr(self, part, None) if part in PARTS else None
+        if held is None or field not in {f.name for f in dataclasses.fields(held)} or field == "law":
+            raise ValueError(f"{name!r} is not a value of this contact; allowed: {', '.join(self.names())} (or their "
+                           "short names: " + ", ".join(short for short, full in SHORT_NAMES.items()
+                                                       if full in self.names()) + ")")
+        return part, field
+
+    def names(self) -> list[str]:
+        """The dotted names of the values this contact holds (``friction.mu`` only for a law with Coulomb's part)."""
+        return [f"{part}.{field.name}" for part in PARTS for field in dataclasses.fields(getattr(self, part))
+                if field.name != "law" and getattr(getattr(self, part), field.name) is not None]
+
+    # --- results --------------------------------------------------------------------------------------------------
+    def to_attrs(self) -> dict[str, Any]:
+        """The attributes a result of this contact carries: each part's (``param_E``, ``param_nu``, ``param_E_star``,
+        ``param_G_star``; ``param_R`` or ``profile_*``; ``param_dgamma0``, ``param_dgamma1``; ``param_tau0`` where
+        the law uses it, ``friction_*`` for another law than the paper's)."""
+        return {**self.elastomer.to_attrs(), **self.indenter.to_attrs(), **self.adhesion.to_attrs(),
+                **self.friction.to_attrs()}
