@@ -31,7 +31,9 @@ import numpy as np
 
 import mdr_events as me
 from mdr_events.models import discrete
-from mdr_events.models.simulate import _time_step, simulation_cases, simulate
+from mdr_events.models.methods import Discrete
+from mdr_events.models.motion import simulation_cases
+from mdr_events.models.simulate import simulate
 
 ZIGZAG = me.Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)], 1e-6)
 
@@ -75,7 +77,7 @@ def peak_memory(function) -> float:
 def stepping_peak(p, kwargs) -> float:
     """Peak traced memory of the stepping of each case beyond its preallocated outputs (largest case), kB."""
     paths = simulation_cases(p, kwargs["scenario"], kwargs.get("alpha")).paths
-    run = discrete._prepare(p, paths, kwargs["dx"], _time_step(paths, None, kwargs["n_steps"]),
+    run = discrete._prepare(p, paths, kwargs["dx"], Discrete(n_steps=kwargs["n_steps"])._time_step(paths),
                             discrete.paraboloid_profile(p))
     n = run.time.size
     peaks = []

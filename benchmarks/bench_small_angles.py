@@ -25,7 +25,7 @@ import numpy as np
 
 import mdr_events as me
 from mdr_events.models.continuum import MAX_TRAVEL_PER_CAP, ContinuumModel, kinematics, resolution
-from mdr_events.models.simulate import scenario_paths
+from mdr_events.models.motion import scenario_paths
 
 EPS = float(np.finfo(float).eps)
 

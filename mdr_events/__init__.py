@@ -39,6 +39,8 @@ from mdr_events.theory.analytic import (
 from mdr_events.models import continuum
 from mdr_events.models.continuum import Tolerances
 from mdr_events.models.paths import Path
+from mdr_events.models.motion import Paths, Scenario
+from mdr_events.models.methods import Continuum, Discrete
 # The three modules that make results register their schemas when imported, so that open_result
 # knows every kind of result whatever a user imports (any import of mdr_events.* runs this file first).
 from mdr_events.theory.phase import phase_diagram
@@ -68,6 +70,10 @@ __all__ = [
     "PowerLaw",
     "TabulatedProfile",
     "Path",
+    "Paths",
+    "Scenario",
+    "Continuum",
+    "Discrete",
     "Tolerances",
     "analytic",
     "power_law",

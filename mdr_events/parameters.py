@@ -76,9 +76,10 @@ class Parameters:
         Young's modulus of the elastomer in Pa.
     nu : float
         Poisson's ratio of the elastomer, in (-1, 0.5].
-    R : float
+    R : float or None
         Radius of the indenter in m; the sphere is replaced by the paraboloid
-        ``f(r) = r**2 / (2 R)``, eq. (4).
+        ``f(r) = r**2 / (2 R)``, eq. (4). ``None`` for another indenter (the simulators' ``profile=``; what
+        :meth:`Contact.parameters <mdr_events.Contact.parameters>` gives for one).
     tau0 : float
         Critical mean shear stress of stationary sliding in Pa; fixes the
         critical spring shift ``ū(a) = π a τ0 / (2 G*)``, eq. (13).
@@ -105,7 +106,7 @@ class Parameters:
 
     E: float
     nu: float
-    R: float
+    R: float | None
     tau0: float
     dgamma0: float
     dgamma1: float
@@ -115,6 +116,8 @@ class Parameters:
     def __post_init__(self) -> None:
         for field in dataclasses.fields(self):
             value = getattr(self, field.name)
+            if field.name == "R" and value is None:  # (another indenter than the paraboloid: Contact.parameters)
+                continue
             if isinstance(value, bool) or not isinstance(value, numbers.Real):
                 raise TypeError(
                     f"Parameters.{field.name}={value!r} has type "
@@ -216,6 +219,8 @@ class Parameters:
         """netCDF-safe attributes: ``param_<name>`` (float) and its units."""
         attrs: dict[str, Any] = {}
         for name, value in self.as_dict().items():
+            if value is None:  # (R of another indenter: it names itself)
+                continue
             attrs[f"param_{name}"] = float(value)
             attrs[f"param_{name}_units"] = PARAMETER_UNITS[name]
         attrs["param_E_star"] = self.E_star
@@ -226,10 +231,10 @@ class Parameters:
     def from_attrs(cls, attrs: Mapping[str, Any]) -> "Parameters":
         """Rebuild the parameters from :meth:`to_attrs` output (e.g. a file)."""
         names = [f.name for f in dataclasses.fields(cls)]
-        missing = [f"param_{n}" for n in names if f"param_{n}" not in attrs]
+        missing = [f"param_{n}" for n in names if f"param_{n}" not in attrs and not (n == "R" and "profile" in attrs)]
         if missing:
             raise ValueError(f"attrs lack the parameter attribute(s) {missing}")
-        return cls(**{n: float(attrs[f"param_{n}"]) for n in names})
+        return cls(**{n: float(attrs[f"param_{n}"]) if f"param_{n}" in attrs else None for n in names})
 
 
 def from_preset(preset: str, **overrides: float) -> tuple[Parameters, dict[str, str]]:

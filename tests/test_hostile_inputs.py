@@ -16,7 +16,7 @@ import mdr_events as me
 from mdr_events.limits import DEFAULT_LIMITS, Limits, ResourceLimitError, parse_limit
 from mdr_events.models.continuum import (MAX_TRAVEL_PER_CAP, ContinuumModel, kinematics, resolution,
                                          solve_path)
-from mdr_events.models.simulate import scenario_paths
+from mdr_events.models.motion import scenario_paths
 
 #: |F_x| <= τ0 A holds to the solver's accuracy (relative to the largest τ0 A of the run).
 CAP_SHARE = 1e-9

@@ -28,7 +28,8 @@ from mdr_events.models.paths import Path
 from mdr_events.models.continuum import NEGLIGIBLE_SHARE, solve_path
 from mdr_events.models.continuum.extrema import solution_extrema
 from mdr_events.models.discrete import run_discrete
-from mdr_events.models.simulate import case_dimension, simulate
+from mdr_events.models.motion import case_dimension
+from mdr_events.models.simulate import simulate
 
 __all__ = ["exact_references_A", "discrete_errors", "discrete_minus_continuum", "history_differences",
            "compared_samples", "first_order_error_bound", "observed_orders"]

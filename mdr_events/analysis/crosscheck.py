@@ -27,7 +27,8 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.io.datasets import register_schema, stamp
-from mdr_events.models.simulate import case_dimension, simulate
+from mdr_events.models.motion import case_dimension
+from mdr_events.models.simulate import simulate
 from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.theory import analytic
 from mdr_events.validation import check_choice, validate_alpha

@@ -42,7 +42,9 @@ from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.models.continuum.caps import check_supported
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.models.paths import Path
-from mdr_events.models.simulate import METHODS, SCENARIO_NAMES, scenario_paths, simulate
+from mdr_events.models.methods import METHODS
+from mdr_events.models.motion import SCENARIO_NAMES, scenario_paths
+from mdr_events.models.simulate import simulate
 from mdr_events.parameters import PARAMETER_UNITS, Parameters
 from mdr_events.validation import check_choice, check_count, check_real, real_array, shown
 

@@ -49,7 +49,7 @@ from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs
 from mdr_events.models.paths import Path
-from mdr_events.models.simulate import scenario_paths
+from mdr_events.models.motion import scenario_paths
 from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.contact.friction import FrictionLaw, as_friction_law, friction_attrs
 

@@ -40,7 +40,9 @@ from mdr_events.analysis.validate import TIME_ORIGINS, validate
 from mdr_events.app.study import load_parameters_file, load_path_file, load_study, run_study, run_sweep, sweep_store
 from mdr_events.io.candidates import CANDIDATE_QUANTITIES, unit_factor
 from mdr_events.io.files import check_output_stem, prepare_output_directory
-from mdr_events.models.simulate import DEFAULT_DX, DEFAULT_STEPS, METHODS, SCENARIO_NAMES, scenario_paths, simulate
+from mdr_events.models.methods import DEFAULT_DX, DEFAULT_STEPS, METHODS
+from mdr_events.models.motion import SCENARIO_NAMES, scenario_paths
+from mdr_events.models.simulate import simulate
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters, from_preset
 from mdr_events.contact.indenters import FlatPunch, PowerLaw
 from mdr_events.io.candidates import read_profile_table

@@ -25,8 +25,9 @@ from mdr_events.io.agreement import Integrated, RoundOff, register_accuracy
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import extremum, solve_path, tangential_work
 from mdr_events.models.paths import Path, exit_depth
-from mdr_events.models.simulate import (CUSTOM_DIMENSION, SIMULATION_CONTENT, case_dimension, scenario_paths,
-                                        simulate)
+from mdr_events.models.motion import CUSTOM_DIMENSION, case_dimension, scenario_paths
+from mdr_events.models.simulate import simulate
+from mdr_events.models.simulation_schema import SIMULATION_CONTENT
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw
 from mdr_events.contact.friction import FrictionLaw

@@ -35,7 +35,7 @@ from matplotlib.figure import Figure
 from mdr_events.io.agreement import result_differences, rounded_text_differences, tolerance_of
 from mdr_events.io.files import (PendingFile, atomic_write_all, check_file_path, check_output_stem, netcdf_writer,
                                  open_result, prepare_output_directory)
-from mdr_events.models.simulate import case_dimension
+from mdr_events.models.motion import case_dimension
 from mdr_events.parameters import Parameters
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import Profile

@@ -96,7 +96,8 @@ from mdr_events.limits import DEFAULT_LIMITS, LIMIT_UNITS, Limits, parse_limit
 from mdr_events.models.continuum import Tolerances
 from mdr_events.models.paths import Path
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
-from mdr_events.models.simulate import scenario_paths, simulate
+from mdr_events.models.motion import scenario_paths
+from mdr_events.models.simulate import simulate
 from mdr_events.parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
 from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.io.candidates import read_profile_table

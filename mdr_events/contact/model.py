@@ -107,6 +107,21 @@ class Contact:
         return cls(Elastomer.from_attrs(attrs), indenter_from_attrs(attrs), Adhesion.from_attrs(attrs),
                    FrictionLaw.from_attrs(attrs))
 
+    # --- the simulators' keywords -----------------------------------------------------------------------------
+    @property
+    def profile(self) -> PowerLaw | FlatPunch | TabulatedProfile | None:
+        """The indenter as the keyword ``profile=`` of the layers below takes it: ``None`` for the paraboloid
+        (theirs of ``Parameters.R``, the paper's functions bit for bit), else the indenter."""
+        return None if isinstance(self.indenter, Paraboloid) else self.indenter
+
+    def parameters(self, d_max: float, v: float) -> Parameters:
+        """The flat record the layers below take, with the motion's ``d_max`` and ``v``: ``R`` of the paraboloid
+        (``None`` for another indenter, which :attr:`profile` gives), ``τ0`` of the friction law (0 for
+        Coulomb's, which has none)."""
+        R = self.indenter.R if isinstance(self.indenter, Paraboloid) else None
+        return Parameters(E=self.elastomer.E, nu=self.elastomer.nu, R=R, tau0=self.friction.tau0 or 0.0,
+                          dgamma0=self.adhesion.dgamma0, dgamma1=self.adhesion.dgamma1, d_max=d_max, v=v)
+
     # --- reading and changing values ------------------------------------------------------------------------------
     def value(self, name: str) -> float:
         """The value of a dotted (``"friction.mu"``) or short (``"mu"``) name."""

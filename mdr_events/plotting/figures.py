@@ -19,7 +19,7 @@ import xarray as xr
 from matplotlib.layout_engine import ConstrainedLayoutEngine
 
 from mdr_events.io.files import atomic_write
-from mdr_events.models.simulate import case_dimension, case_text
+from mdr_events.models.motion import case_dimension, case_text
 from mdr_events.parameters import Parameters
 from mdr_events.theory.phase import PHASE_DIAGRAM_CONTENT
 

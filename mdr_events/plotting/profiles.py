@@ -11,7 +11,7 @@ import numpy as np
 import xarray as xr
 from matplotlib.figure import Figure
 
-from mdr_events.models.simulate import case_dimension
+from mdr_events.models.motion import case_dimension
 from mdr_events.plotting.figures import LEGEND_BORDER_PAD, LEGEND_FONTSIZE, add_inferred_footnote
 
 __all__ = ["plot_profile_comparison"]

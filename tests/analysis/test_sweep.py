@@ -238,7 +238,7 @@ def test_histories_are_the_runs_curves_and_resume_with_the_store(paper, tmp_path
     solve) bit for bit; a store with histories resumes like any other."""
     from mdr_events.analysis.fit import model_curves
     from mdr_events.limits import DEFAULT_LIMITS
-    from mdr_events.models.simulate import scenario_paths
+    from mdr_events.models.motion import scenario_paths
 
     grid = {"alpha": [15.0, 30.0, 60.0]}
     store = tmp_path / "histories.zarr"

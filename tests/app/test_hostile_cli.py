@@ -34,11 +34,11 @@ AS_ROOT = hasattr(os, "geteuid") and os.geteuid() == 0
 
 #: Injected failures: Python run by ``sitecustomize.py`` before the console script.
 SOLVER_GIVES_UP = """
-import mdr_events.models.simulate as simulate
+import mdr_events.models.methods as methods
 def run_continuum(*args, **kwargs):
     raise RuntimeError("the continuum method made no progress at t = 1.5 s after 8 restarts\\n"
                        "radius 1e-4 m; caps: stick, stick; last event: slip_onset")
-simulate.run_continuum = run_continuum
+methods.run_continuum = run_continuum
 """
 #: A slow disk: the first netCDF file is written half, then the writer waits (to be killed).
 SLOW_DISK = """

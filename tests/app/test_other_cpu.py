@@ -17,7 +17,7 @@ from mdr_events.app import report
 from mdr_events.app.report_data import FIT_DEMO_NOISE, fit_demonstration
 from mdr_events.app.result_files import FileStatus, event_logs_agree, event_log_csv
 from mdr_events.io.agreement import result_differences, rounded_text_differences, tolerance_of
-from mdr_events.models.simulate import FIGURE_ANGLES
+from mdr_events.models.motion import FIGURE_ANGLES
 from mdr_events.parameters import PRESETS
 
 RESULTS = Path(__file__).resolve().parents[2] / "results"

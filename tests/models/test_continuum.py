@@ -10,7 +10,7 @@ import mdr_events as me
 from mdr_events.models import continuum
 from mdr_events.models.continuum import solve_path
 from mdr_events.analysis.convergence import HISTORY_QUANTITIES, discrete_minus_continuum, exact_references_A, observed_orders
-from mdr_events.models.simulate import SIMULATION_VARIABLES
+from mdr_events.models.simulation_schema import SIMULATION_VARIABLES
 from mdr_events.models.paths import Path
 
 

@@ -10,7 +10,9 @@ import mdr_events as me
 from mdr_events.analysis.convergence import discrete_errors, exact_references_A, observed_orders
 from mdr_events.models.discrete import run_discrete
 from mdr_events.models.paths import Path, exit_depth
-from mdr_events.models.simulate import FIGURE_ANGLES, SIMULATION_VARIABLES, simulate
+from mdr_events.models.motion import FIGURE_ANGLES
+from mdr_events.models.simulate import simulate
+from mdr_events.models.simulation_schema import SIMULATION_VARIABLES
 
 DX = 2e-6  # 1 550 springs per side at d_max for R = 30 mm
 

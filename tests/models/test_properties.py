@@ -26,7 +26,8 @@ from mdr_events.models import continuum
 from mdr_events.theory import analytic
 from mdr_events.theory import symbolic
 from mdr_events.analysis.convergence import HISTORY_QUANTITIES, compared_samples, first_order_error_bound
-from mdr_events.models.simulate import MIN_STEPS_PER_SEGMENT, scenario_paths
+from mdr_events.models.methods import MIN_STEPS_PER_SEGMENT
+from mdr_events.models.motion import scenario_paths
 
 
 #: HYPOTHESIS_PROFILE=explore (see conftest.py) draws five times as many fresh examples.

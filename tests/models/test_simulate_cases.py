@@ -20,8 +20,9 @@ from mdr_events.io.datasets import dims_match, required_variables
 from mdr_events.io.files import open_result, write_netcdf
 from mdr_events.models.continuum import evaluate, solve_path
 from mdr_events.models.continuum.extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, extremum_names, solution_extrema
-from mdr_events.models.simulate import (CASE_DIMENSIONS, EVENT_VARIABLES, EXTREMA_VARIABLES, PATH_VARIABLES,
-                                        SIMULATION_CONTENT, SIMULATION_VARIABLES)
+from mdr_events.models.motion import CASE_DIMENSIONS
+from mdr_events.models.simulation_schema import (EVENT_VARIABLES, EXTREMA_VARIABLES, PATH_VARIABLES,
+                                                 SIMULATION_CONTENT, SIMULATION_VARIABLES)
 
 METHODS = ("discrete", "continuum")
 #: Coarse runs for the labelling tests: the discrete spacing and steps, the continuum's samples.

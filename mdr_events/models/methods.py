@@ -1,0 +1,216 @@
+"""The method as a value: how a simulation is computed, looked up by name with its options.
+
+=================  ======================================  =====================================================
+name               class                                   options
+=================  ======================================  =====================================================
+``"discrete"``     :class:`Discrete`: the paper's springs  ``dx`` (spacing), ``dt`` or ``n_steps`` (time step)
+``"continuum"``    :class:`Continuum`: their Δx → 0 limit  ``tolerances``, ``samples`` or ``t`` (output times)
+=================  ======================================  =====================================================
+
+As ``solve_ivp`` maps a method's name to a class and forwards its options, :func:`as_method` makes the class of a
+name with the options given beside it; each class checks its own options when made, so that no option is checked
+against another method's. A new method is one class here with ``OPTIONS``, ``simulate`` and its entry in
+:data:`METHODS`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, fields
+from typing import Any, ClassVar, Mapping
+
+import numpy as np
+import xarray as xr
+
+from mdr_events.contact.friction import TAU0, FrictionLaw, friction_attrs
+from mdr_events.limits import Limits
+from mdr_events.models import indenters
+from mdr_events.models.continuum import Tolerances, run_continuum
+from mdr_events.models.continuum.caps import check_supported
+from mdr_events.models.continuum.extrema import solution_extrema
+from mdr_events.models.discrete import check_spacing, run_discrete
+from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.motion import CUSTOM_SCENARIO, Cases
+from mdr_events.models.paths import Path
+from mdr_events.models.simulation_schema import (SIMULATION_CONTENT, coordinates_last, event_log, extrema_dataset,
+                                                 simulation_dataset)
+from mdr_events.parameters import Parameters
+from mdr_events.validation import check_count, check_real, real_array, shown
+
+__all__ = ["Discrete", "Continuum", "Method", "METHODS", "as_method", "check_time_step", "DEFAULT_DX",
+           "DEFAULT_STEPS", "DEFAULT_SAMPLES", "MIN_STEPS_PER_SEGMENT"]
+
+DEFAULT_DX = 1e-6
+DEFAULT_STEPS = 10_000
+DEFAULT_SAMPLES = 2001
+#: The discrete model needs at least this many time steps on every path segment it is in contact on.
+MIN_STEPS_PER_SEGMENT = 10
+
+
+def _scenario_name(scenario: str, cases: Cases) -> str:
+    """The ``scenario`` attribute: the scenario's name, or ``"custom"``."""
+    return CUSTOM_SCENARIO if cases.custom else scenario
+
+
+@dataclass(frozen=True)
+class Discrete:
+    """The paper's spring array (:mod:`mdr_events.models.discrete`).
+
+    Attributes
+    ----------
+    dx : float
+        Spring spacing Δx in m (default 1 µm); at least 10 springs per side must be in contact at ``d_max``.
+    dt : float, optional
+        Time step in s; or
+    n_steps : int, optional
+        the number of steps of the longest case (default 10 000); not both. One time grid serves every case.
+    """
+
+    name: ClassVar[str] = "discrete"
+    dx: float = DEFAULT_DX
+    dt: float | None = None
+    n_steps: int | None = None
+
+    def __post_init__(self) -> None:
+        if self.dt is not None and self.n_steps is not None:
+            raise ValueError("give dt or n_steps, not both")
+        if self.dt is not None:
+            object.__setattr__(self, "dt", check_real("dt", self.dt, "a finite time step > 0 (s)",
+                                                      lambda value: value > 0))
+        if self.n_steps is not None:
+            object.__setattr__(self, "n_steps", check_count("n_steps", self.n_steps, 10))
+
+    def simulate(self, params: Parameters, cases: Cases, scenario: str, limits: Limits,
+                 profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> xr.Dataset:
+        """Run the cases with the springs; the dataset of :mod:`~mdr_events.models.simulation_schema` with the
+        attributes ``dx``, ``dt`` and ``spring_count_per_side``."""
+        paths = cases.paths
+        for path in paths:
+            path.first_contact_time()  # a path that never touches the surface is an error first
+        dx = check_spacing(params, self.dx, depth=min(params.d_max, max(path.max_depth for path in paths)),
+                           profile=profile)
+        step = self._time_step(paths)
+        check_time_step(paths, step, self.dt, self.n_steps)
+        raw = run_discrete(params, paths, dx, step, profile=profile, limits=limits, friction=friction)
+        attrs = dict(method=self.name, scenario=_scenario_name(scenario, cases), dx=float(dx), dt=step,
+                     spring_count_per_side=int(raw["spring_count"]), content=SIMULATION_CONTENT,
+                     **indenters.profile_attrs(profile), **friction_attrs(friction))
+        return simulation_dataset(params, cases, raw["time"], raw, **attrs)
+
+    def _time_step(self, paths: list[Path]) -> float:
+        if self.dt is not None:
+            return self.dt
+        longest = max(path.duration - path.first_contact_time() for path in paths)
+        return longest / (DEFAULT_STEPS if self.n_steps is None else self.n_steps)
+
+
+def check_time_step(paths: list[Path], step: float, dt: float | None, n_steps: int | None) -> None:
+    """Reject a time step that cannot resolve a path segment after first contact.
+
+    Every segment (from first contact on) must get :data:`MIN_STEPS_PER_SEGMENT`
+    steps; otherwise, e.g. for a tiny ``d_max``, the discrete model would jump
+    over the whole indentation. The error names the largest ``dt`` (or the
+    smallest ``n_steps``) that would do.
+    """
+    shortest = math.inf
+    for path in paths:
+        start = path.first_contact_time()
+        times = path.corner_times
+        for t0, t1 in zip(times[:-1], times[1:]):
+            if t1 > start:
+                shortest = min(shortest, t1 - max(t0, start))
+    largest = shortest / MIN_STEPS_PER_SEGMENT
+    if step <= largest * (1 + 1e-12):
+        return
+    if dt is not None:
+        raise ValueError(f"dt={dt!r} is too coarse: the shortest path segment in contact lasts {shortest:.6g} s; "
+                         f"allowed: dt <= {largest:.6g} s ({MIN_STEPS_PER_SEGMENT} steps per segment)")
+    longest = max(path.duration - path.first_contact_time() for path in paths)
+    needed = math.ceil(longest / largest)
+    given = DEFAULT_STEPS if n_steps is None else n_steps
+    raise ValueError(f"n_steps={given!r} is too few: the shortest path segment in contact lasts {shortest:.6g} s of "
+                     f"{longest:.6g} s; allowed: n_steps >= {needed} (or dt <= {largest:.6g} s)")
+
+
+@dataclass(frozen=True, eq=False)
+class Continuum:
+    """The springs' Δx → 0 limit integrated between events (:mod:`mdr_events.models.continuum`): exact to its
+    tolerances, with the event log and each case's exact extrema.
+
+    Attributes
+    ----------
+    tolerances : Tolerances
+        Solver and root-finding tolerances (default ``rtol = 1e-10``, ``atol = 1e-14`` N, ``radius_rtol = 1e-14``).
+    samples : int
+        Without ``t``: the number of output times to the end of the longest run (default 2001, at least 2).
+    t : sequence of float, optional
+        The output times in s from first contact (increasing, >= 0).
+    """
+
+    name: ClassVar[str] = "continuum"
+    tolerances: Tolerances = Tolerances()
+    samples: int = DEFAULT_SAMPLES
+    t: np.ndarray | None = None
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.tolerances, Tolerances):
+            raise TypeError(f"tolerances={self.tolerances!r} is not allowed; allowed: a mdr_events.Tolerances")
+        object.__setattr__(self, "samples", check_count("samples", self.samples, 2))
+        if self.t is not None:
+            allowed = "a non-empty, strictly increasing 1-D grid of finite times >= 0 (s)"
+            times = real_array("t", self.t, "a strictly increasing 1-D grid of finite times >= 0 (s)")
+            if times.ndim != 1 or times.size == 0 or not np.all(np.isfinite(times)) or times[0] < 0 \
+                    or np.any(np.diff(times) <= 0):
+                raise ValueError(f"t={shown(self.t)} is not allowed; allowed: {allowed}")
+            times.setflags(write=False)
+            object.__setattr__(self, "t", times)
+
+    def simulate(self, params: Parameters, cases: Cases, scenario: str, limits: Limits,
+                 profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> xr.Dataset:
+        """Solve the cases exactly; the dataset of :mod:`~mdr_events.models.simulation_schema` with the event log,
+        the extrema and the attributes ``rtol``, ``atol`` and ``radius_rtol``."""
+        check_supported(friction, params, profile)
+        tolerances = self.tolerances
+        raw = run_continuum(params, cases.paths, self.t, samples=self.samples, tolerances=tolerances, limits=limits,
+                            profile=profile, friction=friction)
+        attrs = dict(method=self.name, scenario=_scenario_name(scenario, cases),
+                     rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
+                     content=SIMULATION_CONTENT, **indenters.profile_attrs(profile), **friction_attrs(friction))
+        dataset = simulation_dataset(params, cases, raw["time"], raw, **attrs)
+        extrema = [solution_extrema(solution) for solution in raw["solutions"]]
+        dataset = dataset.merge(event_log(raw["events"], cases.dimension)).merge(
+            extrema_dataset(extrema, cases.dimension))
+        return coordinates_last(dataset)
+
+
+#: A method.
+Method = Discrete | Continuum
+#: The methods by name.
+METHODS: dict[str, type] = {"discrete": Discrete, "continuum": Continuum}
+
+
+def as_method(method, options: Mapping[str, Any] | None = None) -> Method:
+    """``method`` as a method value: a name of :data:`METHODS` made with ``options`` (those given as ``None`` are
+    left to the method's defaults), or a method as it is (no options beside it).
+
+    Raises
+    ------
+    ValueError
+        An unknown name, or an option the method does not take (naming the method's own), or options beside a
+        method value.
+    """
+    given = {name: value for name, value in (options or {}).items() if value is not None}
+    if isinstance(method, (Discrete, Continuum)):
+        if given:
+            raise ValueError(f"{', '.join(given)} is not allowed beside method={method!r}; allowed: the method's own "
+                             "options")
+        return method
+    if not isinstance(method, str) or method not in METHODS:
+        raise ValueError(f"method={shown(method)} is not allowed; allowed: {', '.join(map(repr, METHODS))}, or a "
+                         "Discrete or Continuum")
+    kind = METHODS[method]
+    own = [field.name for field in fields(kind)]
+    for name in given:
+        if name not in own:
+            raise ValueError(f"{name} is not allowed with method={method!r}; allowed: {', '.join(own)}")
+    return kind(**given)

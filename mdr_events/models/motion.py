@@ -1,0 +1,306 @@
+"""The motion as a value: the paper's scenarios at their angles, or custom paths; and the cases they give.
+
+A :class:`Scenario` is one of the paper's motions (A: eq. (14), B: eq. (19), B+: the "+" branch of Fig. 9b) at one
+or several angles, to the depth ``d_max`` at the speed ``v``; :class:`Paths` are paths of any shape
+(:class:`~mdr_events.Path`), labelled. Either gives the :class:`Cases` of a run (one path each, along ``alpha`` or
+``case``) for a contact (:meth:`Scenario.cases`: the way out ends below the contact's jump-off). :func:`as_motion`
+reads what ``simulate`` and the other entry points are given: a motion, a scenario's name with ``alpha``, or paths.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Mapping, NamedTuple, Sequence
+
+import numpy as np
+import xarray as xr
+
+from mdr_events.models import indenters
+from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.paths import Path
+from mdr_events.parameters import Parameters
+from mdr_events.theory import analytic
+from mdr_events.validation import check_real, shown, validate_alpha
+
+__all__ = ["Scenario", "Paths", "Motion", "as_motion", "Cases", "simulation_cases", "scenario_paths",
+           "case_dimension", "case_text", "check_path_extent", "FIGURE_ANGLES", "SCENARIO_NAMES",
+           "ANGLE_DIMENSION", "CUSTOM_DIMENSION", "CASE_DIMENSIONS", "CUSTOM_SCENARIO", "SLIP_DIGITS"]
+
+#: The paper's depth and speed (``Parameters.paper``): a scenario's defaults.
+PAPER_D_MAX, PAPER_V = 0.3e-3, 1e-6
+
+#: The angles of Fig. 8 and Fig. 10.
+FIGURE_ANGLES = (10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0)
+SCENARIO_NAMES = ("A", "B", "B+")
+#: The dimension of a simulation's cases: ``alpha`` (path angle, degrees) for the paper's scenarios,
+#: ``case`` (a name) for custom paths.
+ANGLE_DIMENSION, CUSTOM_DIMENSION = "alpha", "case"
+CASE_DIMENSIONS = (ANGLE_DIMENSION, CUSTOM_DIMENSION)
+#: The ``scenario`` attribute of a simulation of custom paths.
+CUSTOM_SCENARIO = "custom"
+
+#: Relative accuracy the slip criterion needs: x − X(ξ) against ū(a) must keep this many digits.
+SLIP_DIGITS = 1e-9
+
+
+def check_path_extent(params: Parameters, path: Path, label: str, profile: SimulatedProfile = None) -> None:
+    """Reject a path so long that ``x − X(ξ)`` cannot be compared with ``ū(a)`` in double precision.
+
+    The positions along the path are rounded to ``eps · |x|``; the slip
+    criterion compares differences of them with ``ū(a)`` (at ``d_max``) or,
+    without friction, with ``d_max``. A path whose tangential extent exceeds
+    ``SLIP_DIGITS · max(ū, d_max) / eps`` (about 3 km for the paper's
+    parameters: a path angle of a few 1e-6 degrees) is an error, not a
+    silently wrong result.
+    """
+    indenters.check_reach(params, path.max_depth, profile, label)
+    radius = float(indenters.branch_radius(params.d_max, params, params.dgamma0, profile))
+    reference = max(float(analytic.critical_shift(radius, params)), params.d_max)
+    limit = SLIP_DIGITS * reference / np.finfo(float).eps
+    extent = float(np.max(np.abs(path.waypoints[:, 0])))
+    if extent > limit:
+        raise ValueError(f"{label}: the path reaches x = {extent:.3g} m; allowed: |x| <= {limit:.3g} m, beyond "
+                         f"which double precision cannot resolve the slip criterion (shift vs {reference:.3g} m)")
+
+
+class Cases(NamedTuple):
+    """The cases of a simulation: one path each, labelled along ``dimension`` by ``labels``."""
+
+    paths: list[Path]
+    #: ``"alpha"`` (the paper's scenarios) or ``"case"`` (custom paths)
+    dimension: str
+    #: the angles in degrees (float) or the case names (str), one per path
+    labels: np.ndarray
+
+    @property
+    def custom(self) -> bool:
+        return self.dimension == CUSTOM_DIMENSION
+
+
+#: What ``scenario`` may be, for messages.
+SCENARIO_ALLOWED = ("'A', 'B', 'B+', a Path, a non-empty list of Paths, or a non-empty mapping "
+                    "{label (non-empty str): Path}")
+
+
+def _custom_paths(scenario: Path | Sequence[Path] | Mapping[str, Path]) -> dict[str, Path]:
+    """The custom paths of ``scenario`` by label; a single path or a list is labelled ``"path 1"``, ...
+
+    Raises ``ValueError`` for an empty list or mapping or repeated labels and ``TypeError`` for an
+    element that is not a :class:`Path` or a label that is not a non-empty string.
+    """
+    if isinstance(scenario, Path):
+        return {"path 1": scenario}
+    if isinstance(scenario, Mapping):
+        labels, paths = list(scenario.keys()), [scenario[label] for label in scenario.keys()]
+        where = [f"scenario[{label!r}]" for label in labels]
+    else:
+        paths = list(scenario)
+        labels = [f"path {number}" for number in range(1, len(paths) + 1)]
+        where = [f"scenario[{index}]" for index in range(len(paths))]
+    if not paths:
+        raise ValueError(f"scenario={scenario!r} is not allowed: it holds no path; allowed: {SCENARIO_ALLOWED}")
+    for label in labels:
+        if not isinstance(label, str) or not label:
+            raise TypeError(f"scenario has the label {label!r} ({type(label).__name__}); allowed: labels that are "
+                            "non-empty strings")
+    repeated = sorted({label for label in labels if labels.count(label) > 1})
+    if repeated:
+        raise ValueError(f"scenario has the label(s) {repeated} more than once; allowed: distinct labels")
+    for name, path in zip(where, paths):
+        if not isinstance(path, Path):
+            raise TypeError(f"{name}={path!r} ({type(path).__name__}) is not allowed; allowed: a "
+                            "mdr_events.Path")
+    return dict(zip(labels, paths))
+
+
+def _scenario_cases(params: Parameters, name: str, angles: np.ndarray, profile: SimulatedProfile = None,
+                    final_depth: float | None = None) -> Cases:
+    """One path of scenario ``name`` per angle, each checked by :func:`check_path_extent` (the paths end below the
+    jump-off of ``profile``'s ``Δγ1`` branch)."""
+    paths = []
+    for angle in angles:
+        label = f"alpha={float(angle)!r} (degrees) in scenario {name}"
+        try:  # (an angle of 1e-300° makes waypoints 1e298 m apart: the path refuses them, the angle is named)
+            if name == "A":
+                path = Path.scenario_A(float(angle), params, profile=profile)
+            elif name == "B":
+                path = Path.scenario_B(float(angle), params, profile=profile)
+            else:
+                path = Path.scenario_B_indentation(float(angle), params, final_depth, profile=profile)
+        except ValueError as error:
+            if str(error).startswith("alpha="):  # (the path names the angle itself)
+                raise
+            raise ValueError(f"{label}: {error}") from None
+        check_path_extent(params, path, label, profile)
+        paths.append(path)
+    return Cases(paths, ANGLE_DIMENSION, np.asarray(angles, dtype=float))
+
+
+def simulation_cases(params: Parameters, scenario, alpha, profile: SimulatedProfile = None) -> Cases:
+    """The cases of ``simulate(params, scenario, alpha)`` (:func:`as_motion` of the three, then its cases)."""
+    return as_motion(scenario, alpha, params.d_max, params.v).cases(params, profile)
+
+
+def scenario_paths(params: Parameters, scenario, alpha, profile: SimulatedProfile = None) -> tuple[list[Path], np.ndarray]:
+    """The paths of :func:`simulation_cases` and their labels (angles in degrees, or case names)."""
+    cases = simulation_cases(params, scenario, alpha, profile)
+    return cases.paths, cases.labels
+
+
+def case_dimension(dataset: xr.Dataset) -> str:
+    """The dimension along which a simulation's cases lie: ``"case"`` (custom paths) or ``"alpha"``."""
+    found = [name for name in CASE_DIMENSIONS if name in dataset.dims]
+    if len(found) != 1:
+        raise ValueError(f"a simulation with the dimensions {tuple(dataset.dims)} is not allowed; allowed: "
+                         f"exactly one of {CASE_DIMENSIONS}")
+    return found[0]
+
+
+def case_text(dimension: str, label) -> str:
+    """How a case is named in messages and legends: ``α = 20°`` or its label."""
+    return f"α = {float(label):g}°" if dimension == ANGLE_DIMENSION else str(label)
+
+
+
+def _angles(alpha) -> tuple[float, ...]:
+    """The angles of a scenario: one or a 1-D list, distinct, each in [0, 90] degrees."""
+    angles = np.atleast_1d(validate_alpha(alpha))
+    if angles.ndim != 1 or angles.size == 0:
+        raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: one angle or a 1-D list")
+    values, counts = np.unique(angles, return_counts=True)
+    if np.any(counts > 1):
+        raise ValueError(f"alpha={shown(alpha)} repeats {float(values[counts > 1][0])!r}; allowed: distinct "
+                         "angles (each labels one case)")
+    return tuple(float(angle) for angle in angles)
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """One of the paper's scenarios at one or several path angles.
+
+    Attributes
+    ----------
+    name : {"A", "B", "B+"}
+        ``"A"``: in at angle α to ``d_max``, out vertically (14); ``"B"``: in vertically, out at angle α (19);
+        ``"B+"``: in vertically to ``d_max``, further in at α to ``final_depth``, out vertically (Fig. 9b, "+").
+    alpha : float or sequence of float
+        Path angles to the surface in degrees, distinct, in [0, 90] (default 10°, 20°, …, 80°: Fig. 8 and 10);
+        one case each.
+    d_max : float
+        The turning depth in m (default the paper's 0.3 mm).
+    v : float
+        The speed along the path in m/s (default the paper's 1 µm/s; the model is rate independent, so ``v``
+        only sets the time axis).
+    final_depth : float, optional
+        ``"B+"`` only: the deepest point, > ``d_max`` (default ``2 d_max``).
+    """
+
+    name: str = "A"
+    alpha: tuple[float, ...] = FIGURE_ANGLES
+    d_max: float = PAPER_D_MAX
+    v: float = PAPER_V
+    final_depth: float | None = None
+
+    def __post_init__(self) -> None:
+        if self.name not in SCENARIO_NAMES:
+            raise ValueError(f"scenario={self.name!r} is not allowed; allowed: {SCENARIO_ALLOWED}")
+        object.__setattr__(self, "alpha", _angles(self.alpha))
+        object.__setattr__(self, "d_max", check_real("d_max", self.d_max, "a finite number > 0 (m)",
+                                                     lambda value: value > 0.0))
+        object.__setattr__(self, "v", check_real("v", self.v, "a finite number > 0 (m/s)", lambda value: value > 0.0))
+        if self.final_depth is not None:
+            if self.name != "B+":
+                raise ValueError(f"final_depth={shown(self.final_depth)} is not allowed with scenario {self.name!r}; "
+                                 "allowed: with 'B+'")
+            object.__setattr__(self, "final_depth", check_real(
+                "final_depth", self.final_depth, f"a finite number > d_max = {self.d_max!r} (m)",
+                lambda value: value > self.d_max))
+
+    @property
+    def dimension(self) -> str:
+        return ANGLE_DIMENSION
+
+    def cases(self, params: Parameters, profile: SimulatedProfile = None) -> Cases:
+        """One path per angle for the contact of ``params`` and ``profile`` (its ``d_max`` and ``v`` this
+        scenario's)."""
+        return _scenario_cases(params, self.name, np.array(self.alpha), profile, self.final_depth)
+
+    def to_attrs(self) -> dict[str, object]:
+        """A result's attributes: ``scenario`` and ``param_d_max``, ``param_v`` with their units."""
+        return {"scenario": self.name, "param_d_max": self.d_max, "param_d_max_units": "m", "param_v": self.v,
+                "param_v_units": "m s-1"}
+
+
+@dataclass(frozen=True)
+class Paths:
+    """Custom paths, one case each, labelled along ``case``.
+
+    Attributes
+    ----------
+    paths : Path, sequence of Path or mapping of str to Path
+        A path, a non-empty list of them (labelled ``"path 1"``, ``"path 2"``, ...) or a mapping
+        ``{label: Path}`` (its keys, non-empty strings, the labels); the paths may have different speeds. Kept as
+        the mapping.
+    d_max, v : float, optional
+        The depth (m) and speed (m/s) the run's checks measure against and its result names (``param_d_max``,
+        ``param_v``): default the deepest point of the paths and the slowest speed.
+    """
+
+    paths: Mapping[str, Path]
+    d_max: float | None = None
+    v: float | None = None
+
+    def __post_init__(self) -> None:
+        paths = _custom_paths(self.paths)
+        object.__setattr__(self, "paths", paths)
+        deepest = max(path.max_depth for path in paths.values())
+        if self.d_max is None:
+            if not deepest > 0.0:
+                raise ValueError("the paths never enter the elastomer (d > 0); there is no contact to simulate")
+            object.__setattr__(self, "d_max", deepest)
+        object.__setattr__(self, "d_max", check_real("d_max", self.d_max, "a finite number > 0 (m)",
+                                                     lambda value: value > 0.0))
+        slowest = min(path.speed for path in paths.values())
+        object.__setattr__(self, "v", check_real("v", slowest if self.v is None else self.v,
+                                                 "a finite number > 0 (m/s)", lambda value: value > 0.0))
+
+    @property
+    def dimension(self) -> str:
+        return CUSTOM_DIMENSION
+
+    def cases(self, params: Parameters, profile: SimulatedProfile = None) -> Cases:
+        """The paths, each checked by :func:`check_path_extent`."""
+        for label, path in self.paths.items():
+            check_path_extent(params, path, f"scenario path {label!r}", profile)
+        return Cases(list(self.paths.values()), CUSTOM_DIMENSION, np.array(list(self.paths), dtype=str))
+
+    def to_attrs(self) -> dict[str, object]:
+        """A result's attributes: ``scenario`` (``"custom"``) and ``param_d_max``, ``param_v`` with their units."""
+        return {"scenario": CUSTOM_SCENARIO, "param_d_max": self.d_max, "param_d_max_units": "m",
+                "param_v": self.v, "param_v_units": "m s-1"}
+
+
+#: A motion.
+Motion = Scenario | Paths
+
+
+def as_motion(motion, alpha=None, d_max: float | None = None, v: float | None = None) -> Motion:
+    """``motion`` as a :class:`Scenario` or :class:`Paths`: a motion as it is (``alpha``, ``d_max`` and ``v`` must
+    then be ``None``), a scenario's name with ``alpha`` (default Fig. 8's angles) or paths (a :class:`Path`, a list,
+    a mapping; ``alpha`` must be ``None``); ``d_max`` and ``v`` default to the paper's for a scenario and to the
+    paths' own for paths."""
+    if isinstance(motion, (Scenario, Paths)):
+        given = [name for name, value in (("alpha", alpha), ("d_max", d_max), ("v", v)) if value is not None]
+        if given:
+            raise ValueError(f"{', '.join(given)} is not allowed beside motion={motion!r}; allowed: the motion's own")
+        return motion
+    if isinstance(motion, str):
+        return Scenario(motion, FIGURE_ANGLES if alpha is None else alpha, PAPER_D_MAX if d_max is None else d_max,
+                        PAPER_V if v is None else v)
+    if not isinstance(motion, (Path, Mapping, list, tuple)):
+        raise TypeError(f"scenario={shown(motion)} ({type(motion).__name__}) is not allowed; allowed: "
+                        f"{SCENARIO_ALLOWED}, a Scenario or Paths")
+    if alpha is not None:
+        raise ValueError(f"alpha={alpha!r} is not allowed with custom paths (their waypoints fix the motion); "
+                         "allowed: alpha=None")
+    return Paths(motion, d_max, v)
