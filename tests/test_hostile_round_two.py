@@ -76,10 +76,11 @@ def test_fit_without_a_start_names_it():
         me.fit({"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}, "A", 20.0, free=["E"], start=None)
 
 
-@pytest.mark.parametrize("tolerance", [float("inf"), float("nan"), 0.0, -1.0])
-def test_validate_takes_a_finite_tolerance(tolerance):
+@pytest.mark.parametrize("tolerance", [float("inf"), float("nan"), 0.0, -1.0, 1.5, 1e300])
+def test_validate_takes_a_tolerance_below_the_range(tolerance):
+    """Above 1 (the whole range of the quantity) every run would pass."""
     run = {"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}
-    with pytest.raises(ValueError, match="tolerance=.* is not allowed; allowed: a finite number > 0"):
+    with pytest.raises(ValueError, match=r"tolerance=.* is not allowed; allowed: a number in \(0, 1\]"):
         me.validate(run, PAPER, "A", 20.0, tolerance=tolerance)
 
 
@@ -447,3 +448,81 @@ def test_an_angle_so_small_that_its_path_cannot_be_built_is_named(scenario):
     """1e-300°: the waypoints lie ~1e298 m apart and the path refuses them; the message starts with the angle."""
     with pytest.raises(ValueError, match=re.escape(f"alpha=1e-300 (degrees) in scenario {scenario}: ")):
         me.simulate(PAPER, scenario, alpha=[1e-300])
+
+
+# --- the fresh round's referee cases: a broken run never passes ------------------------------------------------
+
+@pytest.fixture(scope="module")
+def exact_run():
+    """The exact run of scenario A at 20° as a simulator would write it (a pass against itself)."""
+    run = me.simulate(PAPER, "A", [20.0], method="continuum").isel(alpha=0)
+    return {name: run[name].values.copy() for name in ("time", "normal_force", "tangential_force", "contact_area",
+                                                       "sliding_fraction")}
+
+
+def changed(run, **changes):
+    copy = {name: values.copy() for name, values in run.items()}
+    for name, change in changes.items():
+        change(copy[name]) if callable(change) else copy.__setitem__(name, change)
+    return copy
+
+
+def test_the_exact_run_passes_and_compares_every_sample_in_and_out_of_contact(exact_run):
+    report = me.validate(exact_run, PAPER, "A", 20.0)
+    assert report.attrs["verdict"] == "pass" and float(report["max_error"].max()) == 0.0
+    codes = report["left_out"].values
+    assert codes[-1] == 0  # the sample after the pull-off, both runs out of contact, is compared
+    assert set(codes[codes != 0]) <= {3} and np.count_nonzero(codes) <= 2  # only samples straddling the corner
+
+
+@pytest.mark.parametrize("share, columns", [(0.1, ("normal_force", "tangential_force", "contact_area")),
+                                            (0.5, ("normal_force", "tangential_force", "contact_area")),
+                                            (0.9, ("normal_force", "tangential_force", "contact_area")),
+                                            (0.5, ("tangential_force",)), (0.1, ("contact_area",))])
+def test_a_run_whose_values_stop_in_contact_is_refused(exact_run, share, columns):
+    """nan from a share of the samples on while the exact contact goes on: it passed with every error 0."""
+    row = int(share * exact_run["time"].size)
+    run = changed(exact_run, **{name: (lambda values: values.__setitem__(slice(row, None), np.nan)) for name in columns})
+    with pytest.raises(ValueError, match=re.escape(f"column {columns[0]!r} is nan from row {row + 1} on") +
+                       ".*in contact, while the exact contact lasts beyond its next sample"):
+        me.validate(run, PAPER, "A", 20.0)
+
+
+@pytest.mark.parametrize("factor", [1e3, 1e6, 1e9, 1e20])
+def test_a_time_column_in_another_unit_is_refused_not_passed(exact_run, factor):
+    """µs read as s put one sample in the exact contact: a pass on that sample."""
+    with pytest.raises(ValueError, match=r"[0-9] samples of the candidate are in contact while the exact run is.*"
+                                         r"allowed: at least 10: check the time column's unit"):
+        me.validate(changed(exact_run, time=exact_run["time"] * factor), PAPER, "A", 20.0)
+
+
+def test_two_samples_are_too_few_to_referee(exact_run):
+    run = {name: values[[0, values.size - 1]] for name, values in exact_run.items()}
+    with pytest.raises(ValueError, match="allowed: at least 10"):
+        me.validate(run, PAPER, "A", 20.0)
+
+
+def test_a_force_after_the_pull_off_fails(exact_run):
+    """Out of contact both runs' forces are 0: a 1e150 N sample after the pull-off (not compared before) fails."""
+    run = changed(exact_run, normal_force=lambda values: values.__setitem__(-1, 1e150))
+    report = me.validate(run, PAPER, "A", 20.0)
+    assert report.attrs["verdict"] == "fail" and float(report["max_error"].sel(quantity="normal_force")) > 1e100
+
+
+def test_a_sliding_fraction_alone_is_named(exact_run):
+    run = {"time": exact_run["time"], "sliding_fraction": exact_run["sliding_fraction"]}
+    with pytest.raises(ValueError, match="none of normal_force, tangential_force, contact_area, contact_radius found"):
+        me.validate(run, PAPER, "A", 20.0)
+
+
+def test_one_column_read_as_two_quantities_is_refused(exact_run):
+    with pytest.raises(ValueError, match=re.escape("names['normal_force']='time' is the column of 'time' too")):
+        me.validate(exact_run, PAPER, "A", 20.0, names={"normal_force": "time"})
+
+
+def test_a_column_of_two_runs_is_refused_and_one_of_shape_1_n_read(exact_run):
+    two = changed(exact_run, normal_force=np.vstack([exact_run["normal_force"]] * 2))
+    with pytest.raises(ValueError, match=r"column 'normal_force' of shape \(2, 2001\) is not allowed; allowed: one run"):
+        me.validate(two, PAPER, "A", 20.0)
+    one = changed(exact_run, normal_force=exact_run["normal_force"][None, :])
+    assert me.validate(one, PAPER, "A", 20.0).attrs["verdict"] == "pass"

@@ -65,11 +65,16 @@ VALIDATED_EVENTS = ("slip_onset", "full_slip", "detachment_starts", "pull_off")
 FULL_SLIP_SHARE = 1e-3
 #: Continuum events after which the first sample is left out (a corner cut, a contact made or lost).
 STRADDLED_EVENTS = ("corner", "tangential_reversal", "first_contact", "re_contact", "pull_off", "contact_ends")
+#: Of those, the events that end a contact.
+CONTACT_ENDING_EVENTS = ("pull_off", "contact_ends")
 #: Quantities compared sample by sample (the sliding fraction only serves the events).
 COMPARED = ("normal_force", "tangential_force", "contact_area", "contact_radius")
 UNITS = {"normal_force": "N", "tangential_force": "N", "contact_area": "m2", "contact_radius": "m"}
 #: A candidate still in contact at its last sample must reach the exact run's end to this share.
 TIME_AXIS_SHARE = 1e-3
+#: The fewest samples of a candidate that must lie within the exact contact: fewer cannot show its curves (two
+#: samples, or a time column in µs read as s, left one or two samples to compare, and a pass).
+MIN_SAMPLES_IN_CONTACT = 10
 #: The time origins :func:`validate` accepts besides a number.
 TIME_ORIGINS = ("first_contact", "path_start")
 
@@ -116,23 +121,45 @@ def _in_contact(quantities: Mapping[str, np.ndarray]) -> np.ndarray:
 
 def _left_out(times: np.ndarray, exact: dict, candidate: dict, contact: np.ndarray, events) -> np.ndarray:
     codes = np.zeros(times.shape, dtype=np.int8)
-    finite = np.all([np.isfinite(values) for values in candidate.values()], axis=0) & np.isfinite(
-        exact["contact_radius"])
+    finite = np.all([np.isfinite(values) for name, values in candidate.items() if name in COMPARED], axis=0) & \
+        np.isfinite(exact["contact_radius"])  # (the sliding fraction, nan out of contact, only serves the events)
     codes[~finite] = 1
     differs = finite & (contact != (exact["contact_radius"] > 0))
     codes[differs] = 2
+    out_of_contact = ~contact & ~(exact["contact_radius"] > 0)
     for event in events:
         if event.kind.value in STRADDLED_EVENTS:
             after = int(np.searchsorted(times, event.time, side="left"))
-            if after < len(times) and times[after] > event.time and codes[after] == 0 and after > 0:
-                codes[after] = 3
+            if after < len(times) and times[after] > event.time and codes[after] == 0 and after > 0 and \
+                    not (event.kind.value in CONTACT_ENDING_EVENTS and out_of_contact[after]):
+                codes[after] = 3  # (after a pull-off both runs out of contact are compared: every force 0)
     return codes
+
+
+def _check_run_covers_the_contact(read: Candidate, times: np.ndarray, contact: np.ndarray, solution: PathSolution,
+                                  names: Mapping[str, str] | None) -> None:
+    """Refuse a run that stops while it is in contact and the exact contact goes on past its next sample: its time
+    axis ends there, or a column's values do (``nan`` from there on: a run cut short, not one to pass)."""
+    names = dict(names or {})
+    ends = {names.get("time", "time"): len(times) - 1}
+    for quantity, values in read.quantities.items():
+        finite = np.flatnonzero(np.isfinite(values))
+        if quantity in COMPARED and finite.size and finite[-1] < len(times) - 1:
+            ends[names.get(quantity, quantity)] = int(finite[-1])
+    for column, last in ends.items():
+        if contact[last] and times[last] < solution.end_time * (1.0 - TIME_AXIS_SHARE) and \
+                not _contact_ends_within_a_step(solution, times[:last + 1]):
+            where = (f"ends at {times[last]:.6g} s from first contact" if last == len(times) - 1 else
+                     f"is nan from row {last + 2} on (after {times[last]:.6g} s from first contact)")
+            raise ValueError(f"{read.source}: column {column!r} {where}, in contact, while the exact contact lasts "
+                             "beyond its next sample; allowed: values that cover the contact up to the run's last "
+                             f"sample in contact (the exact run lasts {solution.end_time:.6g} s)")
 
 
 def _contact_ends_within_a_step(solution: PathSolution, times: np.ndarray) -> bool:
     """Whether the exact contact has ended by the candidate's next sample (its last time plus its last spacing): a
     simulator that stops writing at its last sample in contact (the pull-off) covers the contact."""
-    following = float(times[-1] + (times[-1] - times[-2]))
+    following = float(times[-1] + (times[-1] - times[-2])) if len(times) > 1 else float(times[-1])
     if following >= solution.end_time:
         return True
     return not float(evaluate(solution, np.array([max(following, 0.0)]))["contact_radius"][0]) > 0.0
@@ -238,8 +265,9 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
         ``unused_columns`` (columns not named as a quantity: name them with ``names=`` to check them).
     """
     check_parameters(params)
-    if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and 0 < tolerance < math.inf):
-        raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a finite number > 0")
+    if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and 0 < tolerance <= 1):
+        raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a number in (0, 1] (the largest error "
+                         "relative to the quantity's range: above 1 every run would pass)")
     profile = check_simulated_profile(profile)
     friction = as_friction_law(friction)
     check_representable(params, profile, friction)
@@ -253,32 +281,37 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     if select is None and alpha is not None:
         select = {"alpha": alpha}
     read = read_candidate(candidate, names, units, limits, select=select, progress=progress)
+    if not any(name in COMPARED for name in read.quantities):
+        raise ValueError(f"{read.source}: none of {', '.join(COMPARED)} found (columns read: "
+                         f"{', '.join(read.quantities)}); allowed: at least one of them (the sliding fraction alone "
+                         "serves only the events)")
     check_run_is_finite(read, _in_contact(read.quantities), names)
     times = times_from_contact(read, the_path, time_origin)
     solution = solve_path(params, the_path, tolerances, limits, profile, friction) if solution is None else solution
     exact = evaluate(solution, np.maximum(times, 0.0))
     before = times < 0
+    # (after a run that ended by coming apart the indenter stays out: every force and the radius are 0, as a
+    # candidate that keeps writing shows them; a force there is an error like any other)
+    after = (times > solution.end_time) if solution.ended_by_contact else np.zeros(times.shape, bool)
     for name in ("normal_force", "tangential_force", "contact_radius"):
-        exact[name][before] = 0.0
+        exact[name][before | after] = 0.0
     exact["contact_area"] = math.pi * exact["contact_radius"] ** 2
     quantities = {name: values for name, values in read.quantities.items()}
     contact = _in_contact(quantities)
     if not np.any(contact):
         raise ValueError(f"{read.source}: the candidate never touches (no sample in contact); allowed: a run "
                          "that makes contact")
-    if contact[-1] and times[-1] < solution.end_time * (1.0 - TIME_AXIS_SHARE) and \
-            not _contact_ends_within_a_step(solution, times):
-        raise ValueError(f"{read.source}: column {(names or {}).get('time', 'time')!r} ends at {times[-1]:.6g} s from "
-                         f"first contact, in contact, while the exact contact lasts beyond its next sample; allowed: a "
-                         f"time axis that covers the contact up to its last sample in contact (the exact run lasts "
-                         f"{solution.end_time:.6g} s)")
+    _check_run_covers_the_contact(read, times, contact, solution, names)
     codes = _left_out(times, exact, quantities, contact, solution.events)
-    in_contact = (exact["contact_radius"] > 0) & contact
-    compared = (codes == 0) & in_contact
-    if not np.any(compared):
-        raise ValueError(f"{read.source}: no sample of the candidate is in contact while the exact run is (its "
-                         f"time runs {times[0]:.6g}…{times[-1]:.6g} s from first contact, the exact contact "
-                         f"0…{solution.end_time:.6g} s); check the time column's unit and time_origin")
+    exact_contact = exact["contact_radius"] > 0
+    in_contact = exact_contact & contact
+    if np.count_nonzero((codes == 0) & in_contact) < MIN_SAMPLES_IN_CONTACT:
+        raise ValueError(f"{read.source}: {np.count_nonzero((codes == 0) & in_contact)} samples of the candidate are "
+                         f"in contact while the exact run is (its time runs {times[0]:.6g}…{times[-1]:.6g} s from "
+                         f"first contact, the exact contact 0…{solution.end_time:.6g} s); allowed: at least "
+                         f"{MIN_SAMPLES_IN_CONTACT}: check the time column's unit and time_origin")
+    # compared: both runs in contact, and both out of it (where every force, the radius and the area are 0)
+    compared = (codes == 0) & (in_contact | (~exact_contact & ~contact))
 
     data = {"left_out": (("time",), codes, {"units": "1", "long_name": "why a sample is left out",
                                             "flag_values": np.array(list(LEFT_OUT_CODES), dtype=np.int8),

@@ -178,9 +178,14 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
                  if candidate[name].ndim <= 1 and np.issubdtype(candidate[name].dtype, np.number)},
                 {name: str(candidate[name].attrs["units"]) for name in names if "units" in candidate[name].attrs})
     if isinstance(candidate, Mapping):
-        return {str(name): real_array(f"{source}: column {str(name)!r}", values,
-                                      "real numbers (not bools, complex numbers or strings)").ravel()
-                for name, values in candidate.items()}, {}
+        columns = {str(name): real_array(f"{source}: column {str(name)!r}", values,
+                                         "real numbers (not bools, complex numbers or strings)")
+                   for name, values in candidate.items()}
+        for name, column in columns.items():
+            if sum(size > 1 for size in column.shape) > 1:  # (a (1, n) array is one run; (2, n) would be two)
+                raise ValueError(f"{source}: column {name!r} of shape {column.shape} is not allowed; allowed: one "
+                                 "run, a 1-D array")
+        return {name: column.ravel() for name, column in columns.items()}, {}
     raise TypeError(f"candidate of type {type(candidate).__name__} is not allowed; allowed: an xarray.Dataset, a "
                     "mapping of arrays, or the path of a CSV or netCDF file")
 
@@ -251,6 +256,10 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
                 raise ValueError(f"{source}: names[{quantity!r}]={column!r} is not a column; columns found: "
                                  f"{', '.join(columns) or 'none'}")
             continue
+        if column in used:  # (one column read as two quantities, e.g. names={'normal_force': 'time'})
+            other = next(name for name in found if names.get(name, name) == column)
+            raise ValueError(f"{source}: names[{quantity!r}]={column!r} is the column of {other!r} too; allowed: one "
+                             "column per quantity")
         unit = units.get(quantity, declared.get(column, CANDIDATE_QUANTITIES[quantity]))
         found[quantity] = columns[column] * unit_factor(quantity, unit, source)
         used.add(column)
