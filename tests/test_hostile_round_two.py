@@ -526,3 +526,18 @@ def test_a_column_of_two_runs_is_refused_and_one_of_shape_1_n_read(exact_run):
         me.validate(two, PAPER, "A", 20.0)
     one = changed(exact_run, normal_force=exact_run["normal_force"][None, :])
     assert me.validate(one, PAPER, "A", 20.0).attrs["verdict"] == "pass"
+
+
+@pytest.mark.parametrize("path, scale", [
+    (me.Path([(0.0, 0.0), (0.0, 1e300)], 1e-6), "its largest coordinate is 1e+300 m"),
+    (me.Path([(0.0, 0.0), (0.0, 1e100), (0.0, -1.0)], 1e-6), "the normal force scale E* a d_max"),
+    (me.Path([(0.0, 0.0), (0.0, 3e-4), (0.0, -1e-4)], 1e-300), "its duration is 7e+296 s"),
+    (me.Path([(0.0, 0.0), (0.0, 3e-4), (0.0, -1e-4)], 1e300), "the time to d_max, d_max / v is 3e-304 s"),
+])
+@pytest.mark.parametrize("method", ["continuum", "discrete"])
+def test_a_custom_path_beyond_double_precision_is_refused(path, scale, method):
+    """Custom paths skipped the scale checks: nan forces with hundreds of overflow warnings."""
+    with pytest.raises(ValueError, match=re.escape("scenario path 'path 1'") + ".*" + re.escape(scale)):
+        me.simulate(PAPER, path, method=method)
+    with pytest.raises(ValueError, match=re.escape(scale)):
+        me.validate({"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}, PAPER, path)

@@ -49,7 +49,7 @@ from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs
 from mdr_events.models.paths import Path
-from mdr_events.models.motion import scenario_paths
+from mdr_events.models.motion import check_path_representable, scenario_paths
 from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.contact.friction import FrictionLaw, as_friction_law, friction_attrs
 
@@ -85,6 +85,7 @@ def resolve_path(params: Parameters, path, alpha, profile: SimulatedProfile = No
     if isinstance(path, Path):
         if alpha is not None:
             raise ValueError(f"alpha={alpha!r} is not allowed with a Path (its waypoints fix the motion)")
+        check_path_representable(params, path, "path", profile)
         return path
     if alpha is None or np.ndim(alpha) != 0:
         raise ValueError(f"alpha={alpha!r} is not allowed with scenario {path!r}; allowed: one angle in degrees")

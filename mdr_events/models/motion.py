@@ -15,15 +15,17 @@ from typing import Mapping, NamedTuple, Sequence
 import numpy as np
 import xarray as xr
 
+from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic
-from mdr_events.validation import check_real, shown, validate_alpha
+from mdr_events.theory.scales import check_representable
+from mdr_events.validation import SCALE_MAX, check_real, shown, validate_alpha
 
 __all__ = ["Scenario", "Paths", "Motion", "as_motion", "Cases", "simulation_cases", "scenario_paths",
-           "case_dimension", "case_text", "check_path_extent", "FIGURE_ANGLES", "SCENARIO_NAMES",
+           "case_dimension", "case_text", "check_path_extent", "check_path_representable", "FIGURE_ANGLES", "SCENARIO_NAMES",
            "ANGLE_DIMENSION", "CUSTOM_DIMENSION", "CASE_DIMENSIONS", "CUSTOM_SCENARIO", "SLIP_DIGITS"]
 
 #: The paper's depth and speed (``Parameters.paper``): a scenario's defaults.
@@ -61,6 +63,23 @@ def check_path_extent(params: Parameters, path: Path, label: str, profile: Simul
     if extent > limit:
         raise ValueError(f"{label}: the path reaches x = {extent:.3g} m; allowed: |x| <= {limit:.3g} m, beyond "
                          f"which double precision cannot resolve the slip criterion (shift vs {reference:.3g} m)")
+
+
+def check_path_representable(params: Parameters, path: Path, label: str, profile: SimulatedProfile = None,
+                             friction: FrictionLaw = TAU0) -> None:
+    """Refuse a path whose own scales do not fit in double precision: its coordinates and duration within
+    :data:`~mdr_events.validation.SCALE_MAX`, and the run's scales (:func:`~mdr_events.theory.scales.check_representable`)
+    with its deepest point as ``d_max`` and its speed as ``v`` (a path to 1e300 m gave nan forces)."""
+    largest = float(np.max(np.abs(path.waypoints)))
+    for what, value, unit in (("its largest coordinate", largest, "m"), ("its duration", path.duration, "s")):
+        if not value <= SCALE_MAX:
+            raise ValueError(f"{label}: {what} is {value:.3g} {unit}; allowed: at most {SCALE_MAX:.2g} {unit}, so that "
+                             "products stay finite in double precision")
+    try:
+        check_representable(params.replace(d_max=path.max_depth, v=path.speed) if path.max_depth > 0.0 else
+                             params.replace(v=path.speed), profile, friction)
+    except ValueError as error:
+        raise ValueError(f"{label} (its deepest point as d_max, its speed as v): {error}") from None
 
 
 class Cases(NamedTuple):
@@ -220,7 +239,7 @@ class Scenario:
     def dimension(self) -> str:
         return ANGLE_DIMENSION
 
-    def cases(self, params: Parameters, profile: SimulatedProfile = None) -> Cases:
+    def cases(self, params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> Cases:
         """One path per angle for the contact of ``params`` and ``profile`` (its ``d_max`` and ``v`` this
         scenario's)."""
         return _scenario_cases(params, self.name, np.array(self.alpha), profile, self.final_depth)
@@ -268,9 +287,10 @@ class Paths:
     def dimension(self) -> str:
         return CUSTOM_DIMENSION
 
-    def cases(self, params: Parameters, profile: SimulatedProfile = None) -> Cases:
-        """The paths, each checked by :func:`check_path_extent`."""
+    def cases(self, params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> Cases:
+        """The paths, each checked by :func:`check_path_representable` and :func:`check_path_extent`."""
         for label, path in self.paths.items():
+            check_path_representable(params, path, f"scenario path {label!r}", profile, friction)
             check_path_extent(params, path, f"scenario path {label!r}", profile)
         return Cases(list(self.paths.values()), CUSTOM_DIMENSION, np.array(list(self.paths), dtype=str))
 

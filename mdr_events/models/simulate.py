@@ -135,6 +135,6 @@ def simulate(
     elif not isinstance(limits, Limits):
         raise TypeError(f"limits={shown(limits)} is not allowed; allowed: a mdr_events.Limits")
     check_representable(job.params, job.profile, job.friction)
-    cases = job.motion.cases(job.params, job.profile)
+    cases = job.motion.cases(job.params, job.profile, job.friction)
     return job.method.simulate(job.params, cases, job.motion.to_attrs()["scenario"], limits, job.profile,
                                job.friction)

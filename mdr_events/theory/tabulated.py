@@ -145,9 +145,10 @@ class TabulatedBranch:
         grid = self.shape.grid
         depths = self.shape.values - self.k * np.sqrt(grid)
         lowest = int(np.argmin(depths))
-        if self.k > 0.0 and 0 < lowest < len(grid) - 1:  # refine the minimum between its grid neighbours
-            found = optimize.minimize_scalar(self.depth, bounds=(grid[lowest - 1], grid[lowest + 1]), method="bounded",
-                                             options={"xatol": 1e-14 * grid[-1]})
+        if self.k > 0.0 and lowest < len(grid) - 1:  # refine the minimum between its grid neighbours (at the tip
+            # too: a cone-like tip, g' > 0 at 0, has its minimum at a radius far below the first grid point)
+            found = optimize.minimize_scalar(self.depth, bounds=(grid[max(lowest - 1, 0)], grid[lowest + 1]),
+                                             method="bounded", options={"xatol": 1e-14 * grid[-1]})
             self.jump_off_radius = float(found.x)
         else:
             self.jump_off_radius = float(grid[lowest])

@@ -87,3 +87,23 @@ def test_a_path_deeper_than_the_table_reaches_is_refused(paper):
                  lambda: solve_path(paper, path, profile=table)):
         with pytest.raises(ValueError, match=r"reaches the depth .* allowed for 'tabulated profile f\(r\), 41 points"):
             call()
+
+
+@pytest.mark.parametrize("points", [3, 11, 81])
+def test_a_table_of_a_cone_is_the_cone_in_the_continuum(points):
+    """A linear table has a cone's tip (g' > 0 at 0): its adhesive branch's minimum lies far below the first grid
+    point (1.5 µm here, the table's step up to 10 mm). It was missed (jump-off at a = 0) and the continuum failed
+    with an infinite slope; now the jump-off and the run are the cone's, to round-off (g of a linear table is exact)."""
+    from mdr_events.theory import power_law, tabulated
+
+    params = me.Parameters.paper()
+    radii = np.linspace(0.0, 2e-2, points)
+    table, cone = me.TabulatedProfile(tuple(radii), tuple(0.1 * radii)), me.PowerLaw.cone(0.1)
+    expected = power_law.jump_off(cone, params, params.dgamma0)
+    line = tabulated.branch(table, params, params.dgamma0)
+    assert line.jump_off_radius == pytest.approx(expected["contact_radius"], rel=1e-7)  # a flat minimum: xatol
+    assert line.jump_off_depth == pytest.approx(expected["depth"], rel=1e-12)
+    runs = [me.simulate(params, "A", [20.0], method="continuum", profile=shape).isel(alpha=0) for shape in (table, cone)]
+    for name in ("normal_force", "tangential_force"):
+        scale = float(np.abs(runs[1][name]).max())
+        assert float(np.abs(runs[0][name] - runs[1][name]).max()) < 1e-9 * scale
