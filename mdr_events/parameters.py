@@ -234,7 +234,17 @@ class Parameters:
         missing = [f"param_{n}" for n in names if f"param_{n}" not in attrs and not (n == "R" and "profile" in attrs)]
         if missing:
             raise ValueError(f"attrs lack the parameter attribute(s) {missing}")
-        return cls(**{n: float(attrs[f"param_{n}"]) if f"param_{n}" in attrs else None for n in names})
+        values = {}
+        for n in names:
+            if f"param_{n}" not in attrs:
+                values[n] = None
+                continue
+            try:
+                values[n] = float(attrs[f"param_{n}"])
+            except (TypeError, ValueError):
+                raise ValueError(f"the attribute param_{n}={shown(attrs[f'param_{n}'])} is not allowed; allowed: a "
+                                 f"number ({PARAMETER_UNITS[n]})") from None
+        return cls(**values)
 
 
 def from_preset(preset: str, **overrides: float) -> tuple[Parameters, dict[str, str]]:

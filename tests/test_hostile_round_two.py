@@ -3,6 +3,7 @@ runs, non-finite and overflowing results) are in tests/app/test_validate_cli.py 
 
 from __future__ import annotations
 
+import os
 import re
 import subprocess
 import sys
@@ -14,6 +15,8 @@ import xarray as xr
 
 import mdr_events as me
 from mdr_events.app.cli import main
+from mdr_events.app.study import load_study
+from mdr_events.io.candidates import read_profile_table
 from mdr_events.io.files import write_netcdf
 from mdr_events.limits import ResourceLimitError
 
@@ -67,7 +70,7 @@ def test_write_netcdf_names_the_path_and_what_is_allowed(tmp_path, where, words)
 def test_a_file_system_that_takes_no_file_is_named():
     if not Path("/proc").is_dir():
         pytest.skip("no /proc here")
-    with pytest.raises(ValueError, match=r"path='/proc/x.nc' is not allowed \(no file can be created there"):
+    with pytest.raises(ValueError, match=r"path='/proc/x.nc' is not allowed \(its directory '/proc': it lies in /proc"):
         write_netcdf(xr.Dataset({"a": ("x", np.zeros(3))}), "/proc/x.nc")
 
 
@@ -541,3 +544,114 @@ def test_a_custom_path_beyond_double_precision_is_refused(path, scale, method):
         me.simulate(PAPER, path, method=method)
     with pytest.raises(ValueError, match=re.escape(scale)):
         me.validate({"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}, PAPER, path)
+
+
+# --- the fresh round's other findings ----------------------------------------------------------------------------
+
+@pytest.mark.parametrize("out, reason", [("/", "the file system's root"), ("/dev/mdr_x", "it lies in /dev"),
+                                         ("/proc/mdr_x", "it lies in /proc"), ("/sys/mdr_x", "it lies in /sys")])
+def test_system_directories_take_no_output(out, reason, capsys):
+    """--out /dev/x wrote three files into /dev, --out / into the root."""
+    err = one_line(capsys, main(["phase-diagram", "--scenario", "A", "--out", out]))
+    assert reason in err and not Path("/dev/mdr_x").exists() and not Path("/phase_diagram_A.nc").exists()
+
+
+def test_a_file_named_like_a_temporary_one_is_refused_and_a_user_s_look_alike_is_kept(tmp_path):
+    from mdr_events.io.files import is_temporary_name
+    with pytest.raises(ValueError, match=re.escape("its name holds '.mdr-tmp-'")):
+        write_netcdf(me.phase_diagram(PAPER, [10.0]), tmp_path / ".keep.mdr-tmp-mine.nc")
+    assert not is_temporary_name(".results.mdr-tmp-keep.nc")  # a user's file: not removed as stale
+    assert is_temporary_name(".results.nc.mdr-tmp-w6fmphxc.nc")  # tempfile's eight random characters
+
+
+def test_a_fifo_or_a_device_is_named_by_every_reader(tmp_path):
+    """open_result hung on a FIFO; the readers said "no such file" for a device."""
+    fifo = tmp_path / "pipe.nc"
+    os.mkfifo(fifo)
+    for path in (fifo, Path("/dev/zero")):
+        with pytest.raises(ValueError, match="is not a regular file"):
+            me.open_result(path)
+        with pytest.raises(ValueError, match="is not a regular file"):
+            me.validate(str(path), PAPER, "A", 20.0)
+        with pytest.raises(ValueError, match="is not a regular file"):
+            read_profile_table(path)
+
+
+def test_a_study_file_that_is_a_device_or_too_large_is_refused_and_one_with_a_bom_read(tmp_path):
+    with pytest.raises(me.app.study.StudyError, match="is not a regular file"):
+        load_study("/dev/zero")
+    big = tmp_path / "big.toml"
+    big.write_bytes(b"#" * (me.app.study.MAX_TOML_BYTES + 1))
+    with pytest.raises(me.app.study.StudyError, match=f"has {me.app.study.MAX_TOML_BYTES + 1} bytes"):
+        load_study(big)
+    bom = tmp_path / "bom.toml"
+    bom.write_bytes(b"\xef\xbb\xbf[parameters]\npreset = \"paper-R30\"\n[phase_diagram]\nscenarios = [\"A\"]\n"
+                    b"[output]\ndirectory = \"out\"\n")
+    assert load_study(bom).params == PAPER
+
+
+def test_a_scenario_path_of_parameters_of_another_type_is_named():
+    with pytest.raises(TypeError, match=r"params='p' \(str\) is not allowed; allowed: a mdr_events.Parameters"):
+        me.Path.scenario_B(30.0, "p")
+
+
+def test_a_convergence_plot_of_exact_candidates_draws():
+    """Every error 0 (candidates equal to the exact run): matplotlib's "cannot be log-scaled" was the message."""
+    from mdr_events.plotting.convergence import plot_convergence_study
+    exact = me.simulate(PAPER, "A", [20.0], method="continuum").isel(alpha=0)
+    run = {name: exact[name].values for name in ("time", "normal_force", "tangential_force", "contact_area")}
+    study = me.convergence_study({1e-6: run, 2e-6: run, 4e-6: run}, PAPER, "A", 20.0)
+    figure = plot_convergence_study(study)
+    figure.canvas.draw()
+    assert "every error is 0" in [text.get_text() for ax in figure.axes for text in ax.texts]
+
+
+def test_a_sweep_checks_each_value_once_not_each_combination():
+    """2000 × 2000 values were checked combination by combination (minutes before the first run); the continuum's
+    refusal of Δγ with Coulomb's part still sees a refused value whichever name holds it."""
+    import time
+    coulomb = me.FrictionLaw("coulomb", mu=0.3)
+    started = time.perf_counter()
+    with pytest.raises(ResourceLimitError):  # checked through, then refused by the (small) memory limit
+        me.sweep({"tau0": np.linspace(1e3, 1e5, 2000), "E": np.linspace(1e5, 1e6, 2000)}, "A", 20.0, base=PAPER,
+                 scheduler="serial", limits=me.Limits(memory=1e6))
+    assert time.perf_counter() - started < 30.0  # (a generous bound on a loaded machine: it takes well under 1 s)
+    swept = me.sweep({"dgamma0": [0.0], "dgamma1": [0.0]}, "A", 20.0, base=PAPER, scheduler="serial",
+                     friction=coulomb, quantities=("critical_angle_A",))
+    assert not bool(swept["failed"].any())
+    with pytest.raises(ValueError, match="Parameters.dgamma0=0.1 is not allowed with the friction law 'coulomb'"):
+        me.sweep({"dgamma0": [0.0, 0.1], "dgamma1": [0.0]}, "A", 20.0, base=PAPER, scheduler="serial", friction=coulomb)
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: me.simulate(PAPER, "A", 20.0, method="continuum", samples=10, t=[0.0, 1.0, 2.0]),
+     "give t or samples, not both"),
+    (lambda: me.sweep({"tau0": [1e4]}, "A", 20.0, base=PAPER, scheduler="serial", quantities="critical_angle_A"),
+     "quantities='critical_angle_A' (str) is not allowed; allowed: a sequence of names"),
+    (lambda: me.sweep({"alpha": [10.0, 20.0]}, "A", 20.0, base=PAPER, scheduler="serial"),
+     "alpha=20.0 is not allowed with 'alpha' in the grid"),
+    (lambda: me.fit({"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}, "A", 20.0, free=["E"], start=PAPER, progress=5),
+     "progress=5 (int) is not allowed"),
+])
+def test_ambiguous_arguments_are_refused(call, message):
+    with pytest.raises((TypeError, ValueError), match=re.escape(message)):
+        call()
+
+
+def test_a_csv_cell_with_an_underscore_is_not_a_number(tmp_path):
+    path = tmp_path / "run.csv"
+    path.write_text("time,normal_force\n0,0\n1,0_0.5\n")
+    with pytest.raises(ValueError, match=re.escape("line 3, column 'normal_force': '0_0.5' is not a number")):
+        me.validate(path, PAPER, "A", 20.0)
+
+
+def test_the_phase_diagram_s_command_takes_what_the_closed_forms_take(tmp_path, capsys):
+    """--power-law 1 0.6 was refused "in the simulators"; the phase diagram's own limit names itself."""
+    err = one_line(capsys, main(["phase-diagram", "--scenario", "A", "--power-law", "1", "0.6", "--out",
+                                 str(tmp_path / "o")]))
+    assert "in the simulators" not in err and "for the adhesive slip onset" in err
+
+
+def test_a_parameter_attribute_that_is_no_number_is_named():
+    with pytest.raises(ValueError, match=re.escape("the attribute param_E='abc' is not allowed; allowed: a number")):
+        me.Parameters.from_attrs({**PAPER.to_attrs(), "param_E": "abc"})

@@ -123,5 +123,10 @@ def open_executor(scheduler=None, workers: int | None = None) -> Iterator[concur
             with distributed.Client(cluster) as client:
                 yield client.get_executor(pure=False)
     else:
-        with _distributed(scheduler).Client(scheduler) as client:
+        try:
+            client = _distributed(scheduler).Client(scheduler)
+        except OSError as error:  # (no scheduler there: dask gives up after its connect timeout)
+            raise ValueError(f"scheduler={scheduler!r} cannot be reached ({error}); allowed: the address of a running "
+                             "dask scheduler, or 'local' / 'serial'") from None
+        with client:
             yield client.get_executor(pure=False)

@@ -798,6 +798,9 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
                         "(the fit's start, with the fixed parameters' values)")
     profile = check_simulated_profile(profile)
     friction = as_friction_law(friction)
+    if progress is not None and not callable(progress):
+        raise TypeError(f"progress={shown(progress)} ({type(progress).__name__}) is not allowed; allowed: None or a "
+                        "function called with a line of text")
     check_representable(start, profile, friction)
     if profile is not None and "R" in free:
         raise ValueError(f"free={list(free)!r} frees R with profile={profile!r}; allowed: the names of "

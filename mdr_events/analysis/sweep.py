@@ -326,14 +326,21 @@ def _check_runs(spec: SweepSpec, grid: Grid) -> None:
                 raise ValueError(f"grid['dx'] holds {float(column[column <= 0][0])!r}; allowed: spacings > 0 (m)")
     if spec.method == "continuum" and not fields:  # (Coulomb's part needs no adhesion there; swept sets: below)
         check_supported(spec.friction, spec.base, spec.profile)
-    if fields:
-        for row in np.unique(grid.rows[:, fields], axis=0):
-            try:
-                params = spec.base.replace(**{grid.names[i]: float(value) for i, value in zip(fields, row)})
-                if spec.method == "continuum":
-                    check_supported(spec.friction, params, spec.profile)
-            except (ValueError, TypeError) as error:
-                raise ValueError(f"grid: {error}") from None
+    # a table's sets are checked whole; an outer product's values one name at a time, beside the first value of
+    # every other swept name (a field is valid alone, and the continuum refuses a set by a value of one field alone:
+    # a nonzero Δγ with Coulomb's part): not every combination, which for 2000 × 2000 values took minutes
+    sets = np.unique(grid.rows[:, fields], axis=0) if grid.table else \
+        [(i, value) for i in fields for value in grid.coords[grid.names[i]]]
+    firsts = {} if grid.table else {grid.names[i]: float(grid.coords[grid.names[i]][0]) for i in fields}
+    for entry in (sets if fields else []):
+        changes = ({grid.names[i]: float(value) for i, value in zip(fields, entry)} if grid.table else
+                   {**firsts, grid.names[entry[0]]: float(entry[1])})
+        try:
+            params = spec.base.replace(**changes)
+            if spec.method == "continuum":
+                check_supported(spec.friction, params, spec.profile)
+        except (ValueError, TypeError) as error:
+            raise ValueError(f"grid: {error}") from None
 
 
 # ------------------------------------------------------------------------------------------------------------
@@ -520,6 +527,8 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
         dx = check_real("dx", dx, "a spacing > 0 (m)", lambda value: value > 0)
     if isinstance(scenario, str):
         check_choice("scenario", scenario, SCENARIO_NAMES)
+        if alpha is not None and "alpha" in the_grid.names:  # (the grid's angles would silently win)
+            raise ValueError(f"alpha={alpha!r} is not allowed with 'alpha' in the grid; allowed: one of them")
         if alpha is None and "alpha" not in the_grid.names:
             raise ValueError(f"scenario={scenario!r} needs an angle; allowed: alpha=DEG or 'alpha' in the grid")
     elif not isinstance(scenario, Path):
@@ -528,6 +537,9 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
         raise ValueError("alpha is not allowed with a Path (its waypoints fix the motion)")
     if not isinstance(base, Parameters):
         raise TypeError(f"base={shown(base)} ({type(base).__name__}) is not allowed; allowed: a Parameters")
+    if isinstance(quantities, str):  # (a name alone would be read letter by letter)
+        raise TypeError(f"quantities={quantities!r} (str) is not allowed; allowed: a sequence of names, e.g. "
+                        f"({quantities!r},)")
     wanted = tuple(QUANTITIES) if quantities is None else tuple(quantities)
     for name in wanted:
         check_choice("quantities", name, QUANTITIES)

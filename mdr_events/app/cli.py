@@ -47,7 +47,7 @@ from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS
 from mdr_events.contact.indenters import FlatPunch, PowerLaw
 from mdr_events.io.candidates import read_profile_table
 from mdr_events.contact.friction import FRICTION_LAWS, FrictionLaw
-from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
+from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile as _check_simulated
 from mdr_events.theory import symbolic
 
 #: The first line of ``mdr-events --help`` (plain text: argparse prints it as it is).
@@ -128,7 +128,7 @@ def _command_derive(args: argparse.Namespace) -> None:
 
 def _command_phase_diagram(args: argparse.Namespace) -> None:
     params, provenance = _parameters(args)
-    profile = _profile(args)
+    profile = _profile(args, simulated=False)
     friction = _friction(args)
     out = prepare_output_directory(args.out, "--out")
     stem = f"phase_diagram_{args.scenario}"
@@ -147,9 +147,11 @@ def _profile_option(parser: argparse.ArgumentParser) -> None:
                           help="a tabulated indenter: a CSV file with the columns r and f (m) instead of the paraboloid")
 
 
-def _profile(args: argparse.Namespace) -> SimulatedProfile:
+def _profile(args: argparse.Namespace, simulated: bool = True) -> SimulatedProfile:
     """The ``--power-law C N``, ``--flat-punch RADIUS`` or ``--table FILE`` indenter (``None``: the paraboloid of the
-    parameters' ``R``)."""
+    parameters' ``R``); ``simulated``: one the simulators take (a power law from the cone on), else any the closed
+    forms take (the phase diagram's)."""
+    check_simulated_profile = _check_simulated if simulated else (lambda profile: profile)
     if getattr(args, "table", None) is not None:
         try:
             return check_simulated_profile(read_profile_table(args.table))
@@ -764,5 +766,17 @@ def main(argv: Sequence[str] | None = None) -> int:
     return 0 if status is None else int(status)
 
 
+def console_main() -> int:
+    """The console script ``mdr-events``: :func:`main`; after an interrupt, what the interpreter's shutdown would
+    print (a storage library's pending tasks destroyed, thousands of lines after a SIGTERM mid-sweep) is not shown:
+    the one line said what happened."""
+    status = main()
+    if status in (128 + signal.SIGINT, 128 + signal.SIGTERM):
+        sys.stderr.flush()
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stderr.fileno())
+    return status
+
+
 if __name__ == "__main__":  # pragma: no cover
-    sys.exit(main())
+    sys.exit(console_main())

@@ -315,6 +315,10 @@ def _measured_case(document: dict[str, Any], where: str, name: str) -> tuple[str
     return str(scenario), float(angles[0])
 
 
+#: The largest study or parameter file read (bytes): far above any study, far below what would take long to parse.
+MAX_TOML_BYTES = 2**22
+
+
 def _read_toml(path: Any, what: str) -> tuple[dict[str, Any], FilePath]:
     """The TOML document of the file at ``path`` (a ``what``, e.g. "study file") and the file's path.
 
@@ -324,9 +328,13 @@ def _read_toml(path: Any, what: str) -> tuple[dict[str, Any], FilePath]:
     source = check_file_path("path", path, f"a str or os.PathLike naming a {what} (.toml)")
     where = os.fspath(source)
     allowed = f"allowed: a {what}, TOML in UTF-8 text"
+    if os.path.exists(source) and not os.path.isdir(source) and not os.path.isfile(source):
+        raise StudyError(f"{where} is not a regular file (a device, FIFO or socket); {allowed}")
     try:
-        with open(source, "rb") as handle:
-            return tomllib.load(handle), source
+        if os.path.getsize(source) > MAX_TOML_BYTES:
+            raise StudyError(f"{where} has {os.path.getsize(source)} bytes; {allowed}, at most {MAX_TOML_BYTES} bytes")
+        with open(source, "rb") as handle:  # (a byte-order mark, as "UTF-8 with BOM" editors write, is read)
+            return tomllib.loads(handle.read().decode("utf-8-sig")), source
     except FileNotFoundError:
         raise StudyError(f"{where}: no such {what}") from None
     except IsADirectoryError:
@@ -579,9 +587,12 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
     except ValueError as error:
         raise StudyError(f"{where}: {error}") from None
     written = StudyOutcomes()
-    for scenario in study.tables.get("phase_diagram", {}).get("scenarios", []):
+    scenarios = study.tables.get("phase_diagram", {}).get("scenarios", [])
+    for scenario in scenarios:
         if scenario not in ("A", "B"):
             raise StudyError(f"{where}: [phase_diagram] scenarios contains {scenario!r}; allowed: 'A', 'B'")
+    if len(set(scenarios)) != len(scenarios):  # (each would be computed and written again)
+        raise StudyError(f"{where}: [phase_diagram] scenarios={scenarios!r} repeats a scenario; allowed: each once")
     validations = _validations(study, progress)
     fitted = _fit_report(study, progress)
     simulation = study.tables.get("simulation")

@@ -111,6 +111,8 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
                                      "header")
                 for name, text in zip(header, row):
                     try:
+                        if "_" in text:  # (Python's float reads "0_0.0" as 0.0: a digit separator no CSV means)
+                            raise ValueError(text)
                         columns[name].append(float(text) if text.strip() else math.nan)
                     except ValueError:
                         raise ValueError(f"{path}: line {number}, column {name!r}: {text!r} is not a number") from None
@@ -127,7 +129,10 @@ def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
     comments): :class:`~mdr_events.contact.indenters.TabulatedProfile`. Errors name the file and what is allowed."""
     path = Path(path)
     if not path.is_file():
-        raise ValueError(f"table={str(path)!r}: no such file; allowed: a CSV file with the columns r and f (m)")
+        what = ("is a directory" if path.is_dir() else "is not a regular file (a device, FIFO or socket)"
+                if path.exists() else ": no such file")
+        raise ValueError(f"table={str(path)!r}{'' if what.startswith(':') else ' '}{what}; allowed: a CSV file with "
+                         "the columns r and f (m)")
     columns = _read_csv(path)
     missing = [name for name in ("r", "f") if name not in columns]
     if missing:
@@ -149,8 +154,9 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
             raise ValueError(f"candidate={str(candidate)!r} is a directory; allowed: a CSV or netCDF file, a Dataset "
                              "or a mapping of arrays")
         if not path.is_file():
-            raise ValueError(f"candidate={str(candidate)!r}: no such file; allowed: a CSV or netCDF file, a Dataset or "
-                             "a mapping of arrays")
+            what = "is not a regular file (a device, FIFO or socket)" if path.exists() else ": no such file"
+            raise ValueError(f"candidate={str(candidate)!r}{'' if what.startswith(':') else ' '}{what}; allowed: a CSV "
+                             "or netCDF file, a Dataset or a mapping of arrays")
         if path.suffix.lower() == ".csv":
             return _read_csv(path, limits, progress), {}
         # (loaded whole: its size counts as memory before it is read, as a CSV's rows do)

@@ -50,7 +50,9 @@ __all__ = ["atomic_write", "atomic_write_all", "PendingFile", "netcdf_writer", "
 
 #: What marks a temporary file of :func:`atomic_write`: ``.<target name>.mdr-tmp-<random><suffix>``.
 TEMPORARY_MARKER = ".mdr-tmp-"
-_TEMPORARY_NAME = re.compile(r"^\..+" + re.escape(TEMPORARY_MARKER) + r"[A-Za-z0-9_]+(\.[A-Za-z0-9]+)?$")
+#: (the random part is ``tempfile``'s: eight lower-case letters, digits or underscores; a user's file that merely holds
+#: the marker, ``.results.mdr-tmp-keep.nc``, is not taken for one)
+_TEMPORARY_NAME = re.compile(r"^\..+" + re.escape(TEMPORARY_MARKER) + r"[a-z0-9_]{8}(\.[A-Za-z0-9]+)?$")
 #: When this process started (close enough: when this module was imported). A temporary file modified
 #: later may belong to a writer that has just created it and not yet locked it; it is never stale.
 PROCESS_STARTED = time.time()
@@ -121,6 +123,10 @@ def prepare_output_directory(path: Any, name: str) -> Path:
     return directory
 
 
+#: Directories that hold devices and the kernel's views, not files: no output goes there (nor into the root itself).
+SYSTEM_DIRECTORIES = ("/dev", "/proc", "/sys")
+
+
 def _directory_problem(directory: Path) -> str | None:
     """Why ``directory`` cannot take output (:func:`prepare_output_directory`), or ``None``: checked before anything
     is created, a name of it too long for a file system (which would fail after its parents were made) among them."""
@@ -128,6 +134,12 @@ def _directory_problem(directory: Path) -> str | None:
     if long:
         return f"its part {shown(long[0])} has {len(long[0].encode())} bytes, more than a file system's {MAX_NAME_BYTES}"
     absolute = directory.absolute()
+    real = Path(os.path.realpath(absolute))
+    if real == Path(real.anchor):
+        return f"it is {real}, the file system's root"
+    for system in SYSTEM_DIRECTORIES:
+        if real == Path(system) or Path(system) in real.parents:
+            return f"it lies in {system}, a directory of devices or of the kernel's views, not of files"
     existing = absolute
     while not os.path.exists(existing):  # the nearest ancestor that exists (os.path: False on any error)
         if os.path.lexists(existing):
@@ -181,6 +193,9 @@ def check_output_file(name: str, path: Any) -> Path:
         kind = "a symbolic link" if os.path.islink(target) else "not a regular file"
         raise ValueError(f"{name}={text!r} is not allowed (it is {kind}, which the file would replace); allowed: "
                          f"{_ALLOWED_FILE}, a regular file if it exists")
+    if TEMPORARY_MARKER in target.name:  # (the next write into its directory would take it for stale and remove it)
+        raise ValueError(f"{name}={shown(text)} is not allowed (its name holds {TEMPORARY_MARKER!r}, which marks the "
+                         f"temporary files this package removes); allowed: {_ALLOWED_FILE}, without that marker")
     if len(target.name.encode()) + _TEMPORARY_EXTRA_BYTES > MAX_NAME_BYTES:
         raise ValueError(f"{name}={shown(text)} is not allowed (its name has {len(target.name.encode())} bytes); "
                          f"allowed: {_ALLOWED_FILE}")
@@ -469,6 +484,8 @@ def load_netcdf(path: str | os.PathLike, where: str, allowed: str = f"a netCDF f
     missing, a directory, empty, netCDF-4 or unreadable (the reader's message on one line)."""
     if os.path.isdir(path):
         raise ValueError(f"{where} is a directory; allowed: {allowed}")
+    if os.path.exists(path) and not os.path.isfile(path):  # (a FIFO would block the read forever)
+        raise ValueError(f"{where} is not a regular file (a device, FIFO or socket); allowed: {allowed}")
     try:
         why = _netcdf_kind_problem(path)
         if why is None:

@@ -141,7 +141,7 @@ class Continuum:
     ----------
     tolerances : Tolerances
         Solver and root-finding tolerances (default ``rtol = 1e-10``, ``atol = 1e-14`` N, ``radius_rtol = 1e-14``).
-    samples : int
+    samples : int, optional
         Without ``t``: the number of output times to the end of the longest run (default 2001, at least 2).
     t : sequence of float, optional
         The output times in s from first contact (increasing, >= 0).
@@ -149,13 +149,16 @@ class Continuum:
 
     name: ClassVar[str] = "continuum"
     tolerances: Tolerances = Tolerances()
-    samples: int = DEFAULT_SAMPLES
+    samples: int | None = None
     t: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         if not isinstance(self.tolerances, Tolerances):
             raise TypeError(f"tolerances={self.tolerances!r} is not allowed; allowed: a mdr_events.Tolerances")
-        object.__setattr__(self, "samples", check_count("samples", self.samples, 2))
+        if self.samples is not None and self.t is not None:  # (t was used and samples ignored)
+            raise ValueError("give t or samples, not both")
+        object.__setattr__(self, "samples", DEFAULT_SAMPLES if self.samples is None else
+                           check_count("samples", self.samples, 2))
         if self.t is not None:
             allowed = "a non-empty, strictly increasing 1-D grid of finite times >= 0 (s)"
             times = real_array("t", self.t, "a strictly increasing 1-D grid of finite times >= 0 (s)")

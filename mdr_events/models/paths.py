@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mdr_events.theory import analytic
-from mdr_events.parameters import Parameters
+from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.validation import check_real, real_array, shown, validate_alpha
@@ -131,6 +131,7 @@ class Path:
     @classmethod
     def scenario_A(cls, alpha: float, params: Parameters, profile: SimulatedProfile = None) -> "Path":
         """Eq. (14): in at angle α from the surface to ``d_max``, then vertically out."""
+        check_parameters(params)
         angle = _check_angle(alpha)
         if angle == 0.0:
             raise ValueError("alpha=0.0 in scenario A: a path parallel to the surface never reaches d_max; "
@@ -147,6 +148,7 @@ class Path:
         out: it then ends after ``slide_length`` (default: four times the
         critical shift ``ū`` of the contact at ``d_max``).
         """
+        check_parameters(params)
         angle = _check_angle(alpha)
         end = exit_depth(params, profile)
         if angle == 0.0:
@@ -164,6 +166,7 @@ class Path:
                                profile: SimulatedProfile = None) -> "Path":
         """The "+" branch of Fig. 9b: vertically to ``d_max``, further in at angle α to
         ``final_depth`` (default ``2 d_max``), then vertically out."""
+        check_parameters(params)
         angle = _check_angle(alpha)
         final = 2.0 * params.d_max if final_depth is None else float(final_depth)
         if not final > params.d_max:

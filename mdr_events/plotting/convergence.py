@@ -61,9 +61,11 @@ def plot_convergence_study(study: xr.Dataset):
                                 sharex=True, squeeze=False, constrained_layout=True)
     for ax, quantity in zip(axes[0], quantities):
         largest_coarse = np.nan
+        shown_errors = 0
         for norm in NORMS:
             style = NORM_STYLES[norm]
             errors = _positive(study[norm].sel(quantity=quantity).values)
+            shown_errors += int(np.count_nonzero(np.isfinite(errors)))
             fitted = _positive(study[f"{norm}_fitted"].sel(quantity=quantity).values)
             order = float(study[f"{norm}_order"].sel(quantity=quantity))
             spread = float(study[f"{norm}_order_spread"].sel(quantity=quantity))
@@ -81,7 +83,11 @@ def plot_convergence_study(study: xr.Dataset):
             ax.plot(dx * _UM, reference, color="0.5", lw=1.0, ls="--", label=REFERENCE_LABEL.format(order=expected),
                     gid="reference")
         ax.set_xscale("log")
-        ax.set_yscale("log")
+        ax.set_xlim(0.8 * np.min(dx) * _UM, 1.25 * np.max(dx) * _UM)  # (also where no error is drawn)
+        if shown_errors:
+            ax.set_yscale("log")
+        else:  # (every error 0: candidates equal to the exact run; a log axis has nothing to show)
+            ax.text(0.5, 0.5, "every error is 0", transform=ax.transAxes, ha="center", va="center", fontsize=9)
         ax.set_xticks(dx * _UM, [f"{value:g}" for value in dx * _UM])
         ax.xaxis.set_minor_formatter(NullFormatter())
         ax.set_title(QUANTITY_TITLES.get(quantity, quantity), fontsize=10)

@@ -345,7 +345,7 @@ def test_a_store_that_cannot_be_written_is_named_before_anything_runs(paper, tmp
     afile.write_text("keep")
     cases = [(afile / "x.zarr", "a file, not a directory"), (tmp_path / ("a" * 300), "more than a file system's 255")]
     if os.path.isdir("/proc/self"):
-        cases.append(("/proc/x.zarr", "cannot be written"))
+        cases.append(("/proc/x.zarr", "it lies in /proc"))
     for store, reason in cases:
         with pytest.raises(ValueError, match=re.escape(f"store={str(store)[:40]!r}"[:-1]) + ".*" + re.escape(reason)):
             sweep({"alpha": [10.0]}, "A", base=paper, scheduler="serial", quantities=CLOSED_FORM_QUANTITIES,
@@ -372,3 +372,12 @@ def test_a_grid_too_large_is_refused_before_its_outer_product_is_built(paper):
 def test_grid_values_that_are_not_real_numbers_are_named(paper, values, kind):
     with pytest.raises(ValueError, match=re.escape(f"grid['tau0']={values!r} (of {kind} values) is not allowed")):
         sweep({"tau0": values}, "A", 20.0, base=paper, scheduler="serial")
+
+
+def test_a_scheduler_that_cannot_be_reached_is_named(paper):
+    """A raw OSError after dask's connect timeout (shortened here)."""
+    import dask
+    with dask.config.set({"distributed.comm.timeouts.connect": "1s"}):
+        with pytest.raises(ValueError, match=re.escape("scheduler='tcp://127.0.0.1:1' cannot be reached")):
+            sweep({"tau0": [1e3, 2e3]}, "A", 20.0, base=paper, scheduler="tcp://127.0.0.1:1",
+                  quantities=CLOSED_FORM_QUANTITIES)
