@@ -137,6 +137,32 @@ def _left_out(times: np.ndarray, exact: dict, candidate: dict, contact: np.ndarr
     return codes
 
 
+def _exact_at(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]:
+    """The exact quantities at the candidate's times (s from first contact): 0 before the contact, and after a run
+    that ended by coming apart (the indenter stays out, as a candidate that keeps writing shows)."""
+    exact = evaluate(solution, np.maximum(times, 0.0))
+    after = (times > solution.end_time) if solution.ended_by_contact else np.zeros(times.shape, bool)
+    for name in ("normal_force", "tangential_force", "contact_radius"):
+        exact[name][(times < 0) | after] = 0.0
+    exact["contact_area"] = math.pi * exact["contact_radius"] ** 2
+    return exact
+
+
+def _compared_samples(source: str, times: np.ndarray, exact: dict, quantities: dict, contact: np.ndarray,
+                      solution: PathSolution) -> tuple[np.ndarray, np.ndarray]:
+    """Each sample's ``left_out`` code and whether it is compared: both runs in contact, or both out of it (every
+    force, the radius and the area 0 there); at least :data:`MIN_SAMPLES_IN_CONTACT` inside the exact contact."""
+    codes = _left_out(times, exact, quantities, contact, solution.events)
+    exact_contact = exact["contact_radius"] > 0
+    inside = int(np.count_nonzero((codes == 0) & exact_contact & contact))
+    if inside < MIN_SAMPLES_IN_CONTACT:
+        raise ValueError(f"{source}: {inside} samples of the candidate are in contact while the exact run is (its "
+                         f"time runs {times[0]:.6g}…{times[-1]:.6g} s from first contact, the exact contact "
+                         f"0…{solution.end_time:.6g} s); allowed: at least {MIN_SAMPLES_IN_CONTACT}: check the time "
+                         "column's unit and time_origin")
+    return codes, (codes == 0) & ((exact_contact & contact) | (~exact_contact & ~contact))
+
+
 def _check_run_covers_the_contact(read: Candidate, times: np.ndarray, contact: np.ndarray, solution: PathSolution,
                                   names: Mapping[str, str] | None) -> None:
     """Refuse a run that stops while it is in contact and the exact contact goes on past its next sample: its time
@@ -289,30 +315,14 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     check_run_is_finite(read, _in_contact(read.quantities), names)
     times = times_from_contact(read, the_path, time_origin)
     solution = solve_path(params, the_path, tolerances, limits, profile, friction) if solution is None else solution
-    exact = evaluate(solution, np.maximum(times, 0.0))
-    before = times < 0
-    # (after a run that ended by coming apart the indenter stays out: every force and the radius are 0, as a
-    # candidate that keeps writing shows them; a force there is an error like any other)
-    after = (times > solution.end_time) if solution.ended_by_contact else np.zeros(times.shape, bool)
-    for name in ("normal_force", "tangential_force", "contact_radius"):
-        exact[name][before | after] = 0.0
-    exact["contact_area"] = math.pi * exact["contact_radius"] ** 2
+    exact = _exact_at(solution, times)
     quantities = {name: values for name, values in read.quantities.items()}
     contact = _in_contact(quantities)
     if not np.any(contact):
         raise ValueError(f"{read.source}: the candidate never touches (no sample in contact); allowed: a run "
                          "that makes contact")
     _check_run_covers_the_contact(read, times, contact, solution, names)
-    codes = _left_out(times, exact, quantities, contact, solution.events)
-    exact_contact = exact["contact_radius"] > 0
-    in_contact = exact_contact & contact
-    if np.count_nonzero((codes == 0) & in_contact) < MIN_SAMPLES_IN_CONTACT:
-        raise ValueError(f"{read.source}: {np.count_nonzero((codes == 0) & in_contact)} samples of the candidate are "
-                         f"in contact while the exact run is (its time runs {times[0]:.6g}…{times[-1]:.6g} s from "
-                         f"first contact, the exact contact 0…{solution.end_time:.6g} s); allowed: at least "
-                         f"{MIN_SAMPLES_IN_CONTACT}: check the time column's unit and time_origin")
-    # compared: both runs in contact, and both out of it (where every force, the radius and the area are 0)
-    compared = (codes == 0) & (in_contact | (~exact_contact & ~contact))
+    codes, compared = _compared_samples(read.source, times, exact, quantities, contact, solution)
 
     data = {"left_out": (("time",), codes, {"units": "1", "long_name": "why a sample is left out",
                                             "flag_values": np.array(list(LEFT_OUT_CODES), dtype=np.int8),
