@@ -47,11 +47,16 @@ from mdr_events.io.candidates import Candidate, check_run_is_finite, read_candid
 from mdr_events.theory.scales import check_representable
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
-from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs
+from mdr_events.contact import Contact
+from mdr_events.models.indenters import SimulatedProfile, profile_attrs
+from mdr_events.models.methods import Continuum
+from mdr_events.models.motion import Paths
+from mdr_events.models.simulate import ModelJob, model_job
 from mdr_events.models.paths import Path
 from mdr_events.models.motion import check_path_representable, scenario_paths
-from mdr_events.parameters import Parameters, check_parameters
-from mdr_events.contact.friction import FrictionLaw, as_friction_law, friction_attrs
+from mdr_events.parameters import Parameters
+from mdr_events.validation import shown
+from mdr_events.contact.friction import friction_attrs
 
 __all__ = ["validate", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
 
@@ -234,13 +239,45 @@ def candidate_events(times, quantities, contact, params) -> dict[str, float]:
     return out
 
 
-def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
-             names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
-             time_origin="first_contact", tolerance: float = 1e-3,
-             tolerances: Tolerances = Tolerances(), solution: PathSolution | None = None,
-             limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
-             friction: FrictionLaw | str | None = None, select: Mapping[str, object] | None = None,
-             progress: Callable[[str], None] | None = None) -> xr.Dataset:
+def _reference(reference, tolerances, solution) -> tuple[PathSolution | None, Tolerances]:
+    """The solution at hand (or ``None``) and the tolerances of the exact reference: ``reference`` (a
+    :class:`~mdr_events.Continuum` or a solution), or the keywords of before (``tolerances=``, ``solution=``)."""
+    given = [name for name, value in (("reference", reference), ("tolerances", tolerances), ("solution", solution))
+             if value is not None]
+    if len(given) > 1:
+        raise ValueError(f"{' and '.join(given)} are not allowed together; allowed: one of them")
+    if isinstance(reference, PathSolution) or solution is not None:
+        found = reference if solution is None else solution
+        if not isinstance(found, PathSolution):
+            raise TypeError(f"solution={shown(found)} ({type(found).__name__}) is not allowed; allowed: a PathSolution")
+        return found, Tolerances()  # (the tolerances serve a solve, and there is none)
+    if reference is not None and not isinstance(reference, Continuum):
+        raise TypeError(f"reference={shown(reference)} ({type(reference).__name__}) is not allowed; allowed: a "
+                        "Continuum (its tolerances) or a PathSolution")
+    if tolerances is not None and not isinstance(tolerances, Tolerances):
+        raise TypeError(f"tolerances={shown(tolerances)} ({type(tolerances).__name__}) is not allowed; allowed: a "
+                        "Tolerances")
+    return None, (reference.tolerances if reference is not None else tolerances or Tolerances())
+
+
+def _one_path(job: ModelJob) -> tuple[Path, float | None]:
+    """The one path a candidate ran (its motion must have one case) and its angle (``None``: a custom path)."""
+    if isinstance(job.motion, Paths):
+        label, path = next(iter(job.motion.paths.items()))
+        if len(job.motion.paths) != 1:
+            raise ValueError(f"motion holds {len(job.motion.paths)} paths; allowed: the one the candidate ran")
+        check_path_representable(job.params, path, "path", job.profile, job.friction)
+        return path, None
+    if len(job.motion.alpha) != 1:
+        raise ValueError(f"motion={job.motion!r} holds {len(job.motion.alpha)} angles; allowed: the one the candidate "
+                         "ran")
+    return job.motion.cases(job.params, job.profile, job.friction).paths[0], job.motion.alpha[0]
+
+
+def validate(candidate, contact: Contact | Parameters, motion, alpha: float | None = None, *,
+             tolerance: float = 1e-3, reference: Continuum | PathSolution | None = None,
+             limits: Limits = DEFAULT_LIMITS, progress: Callable[[str], None] | None = None,
+             **options) -> xr.Dataset:
     """Compare a simulator's output with the exact continuum on the same path, sample and event by event.
 
     Parameters
@@ -249,36 +286,34 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
         Time and at least one of ``normal_force``, ``tangential_force``, ``contact_area``,
         ``contact_radius`` (and optionally ``sliding_fraction``, for the slip events);
         :func:`mdr_events.io.candidates.read_candidate`.
-    params : Parameters
-    path : Path or {"A", "B", "B+"}
-        The path the candidate ran; a scenario needs ``alpha`` (one angle, degrees).
+    contact : Contact or Parameters
+        The contact the candidate simulated (:class:`~mdr_events.Contact`); a :class:`~mdr_events.Parameters` is read
+        as by :func:`mdr_events.simulate` (with ``profile=`` and ``friction=`` among the options).
+    motion : Scenario, Paths, Path or {"A", "B", "B+"}
+        The one path the candidate ran: a :class:`~mdr_events.Scenario` of one angle, :class:`~mdr_events.Paths` of
+        one path or a :class:`Path`; or a scenario's name with ``alpha`` (one angle, degrees).
+    tolerance : float
+        The verdict's bound on each quantity's ``max_error`` (relative to its range), in (0, 1].
+    reference : Continuum or PathSolution, optional
+        The exact reference: the continuum with its tolerances (default ``Continuum()``), or its solution of this
+        path, contact and tolerances if already at hand (:func:`~mdr_events.analysis.convergence_study.convergence_study`
+        solves once for all spacings). ``tolerances=`` and ``solution=`` among the options say the same.
+    limits : Limits
+        What the continuum run may use (a measured path of more than ``limits.waypoints`` waypoints is
+        refused unless raised).
+    progress : callable, optional
+        Hears how far reading a long CSV file is (:func:`~mdr_events.io.candidates.read_candidate`).
+    **options
+        How to read the candidate: ``names``, ``units``, ``time_origin``, ``select`` (below); beside a
+        :class:`~mdr_events.Parameters` also ``profile`` and ``friction``.
     names, units : mapping, optional
         Quantity -> your column name; quantity -> your unit (``"mN"``, ``"ms"``, ``"um"``, ...).
     time_origin : "first_contact", "path_start" or float
         What the candidate's time counts from: the first contact (default), the path's start, or a
         number: the candidate's time at first contact (s).
-    tolerance : float
-        The verdict's bound on each quantity's ``max_error`` (relative to its range).
-    tolerances : Tolerances
-        The continuum's solver tolerances.
-    solution : PathSolution, optional
-        The continuum solution of this path with these parameters and tolerances, if already at hand
-        (:func:`~mdr_events.analysis.convergence_study.convergence_study` solves once for all spacings).
-    limits : Limits
-        What the continuum run may use (a measured path of more than ``limits.waypoints`` waypoints is
-        refused unless raised).
-    profile : PowerLaw, optional
-        The indenter the candidate simulated: a power law ``f = c rⁿ``, ``n >= 1`` (default ``None``, the paper's
-        paraboloid of ``params.R``); the report then has the attribute ``profile``.
-    friction : FrictionLaw or str, optional
-        The friction law the candidate simulated (default the paper's ``"tau0"``; Coulomb's part needs a contact
-        without adhesion, e.g. a Cattaneo–Mindlin test of a DEM contact model); the report then has the attributes
-        ``friction_law`` and ``friction_mu``.
     select : mapping, optional
         A candidate holding several runs (a simulation along ``alpha``): the one at these coordinates; default
         ``{"alpha": alpha}`` with a scenario's angle.
-    progress : callable, optional
-        Hears how far reading a long CSV file is (:func:`~mdr_events.io.candidates.read_candidate`).
 
     Returns
     -------
@@ -291,12 +326,20 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
         (``"pass"``: every quantity *compared* within ``tolerance``), and ``quantities_not_compared`` and
         ``unused_columns`` (columns not named as a quantity: name them with ``names=`` to check them).
     """
-    check_parameters(params)
+    options = dict(options)
+    names, units, select = (options.pop(name, None) for name in ("names", "units", "select"))
+    time_origin = options.pop("time_origin", "first_contact")
+    solution, tolerances = _reference(reference, options.pop("tolerances", None), options.pop("solution", None))
+    if isinstance(motion, str) and (alpha is None or np.ndim(alpha) != 0):  # (a scenario of several angles)
+        raise ValueError(f"alpha={alpha!r} is not allowed with scenario {motion!r}; allowed: one angle in degrees")
+    job = model_job(contact, motion, alpha, options)
+    if options:
+        raise TypeError(f"validate() got an unexpected keyword argument {next(iter(options))!r}; allowed: names, "
+                        "units, time_origin, select (and profile, friction beside a Parameters)")
+    params, profile, friction = job.params, job.profile, job.friction
     if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and 0 < tolerance <= 1):
         raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a number in (0, 1] (the largest error "
                          "relative to the quantity's range: above 1 every run would pass)")
-    profile = check_simulated_profile(profile)
-    friction = as_friction_law(friction)
     check_representable(params, profile, friction)
     if solution is not None and solution.model.profile != profile:
         raise ValueError(f"solution= was solved for profile={solution.model.profile!r}, not for profile={profile!r}; "
@@ -304,9 +347,9 @@ def validate(candidate, params: Parameters, path, alpha: float | None = None, *,
     if solution is not None and solution.model.friction != friction:
         raise ValueError(f"solution= was solved for friction={solution.model.friction!r}, not for friction={friction!r}; "
                          "allowed: a solution of this friction law")
-    the_path = resolve_path(params, path, alpha, profile)
-    if select is None and alpha is not None:
-        select = {"alpha": alpha}
+    the_path, angle = _one_path(job)
+    if select is None and angle is not None:
+        select = {"alpha": angle}
     read = read_candidate(candidate, names, units, limits, select=select, progress=progress)
     if not any(name in COMPARED for name in read.quantities):
         raise ValueError(f"{read.source}: none of {', '.join(COMPARED)} found (columns read: "

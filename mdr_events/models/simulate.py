@@ -26,47 +26,57 @@ from mdr_events.parameters import Parameters
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import shown
 
-__all__ = ["simulate", "simulation_job", "SimulationJob", "METHODS"]
+__all__ = ["simulate", "simulation_job", "SimulationJob", "model_job", "ModelJob", "METHODS"]
 
 
-class SimulationJob(NamedTuple):
-    """What a simulation runs: the contact along the motion with the method, and the flat keywords the layers below
-    take (``params`` with the motion's ``d_max`` and ``v``, ``profile``, the friction law without ``τ0``, which
-    ``params`` holds)."""
+class ModelJob(NamedTuple):
+    """A contact along a motion, and the flat keywords the layers below take (``params`` with the motion's ``d_max``
+    and ``v``, ``profile``, the friction law without ``τ0``, which ``params`` holds)."""
 
     contact: Contact
     motion: Motion
-    method: Method
     params: Parameters
     profile: SimulatedProfile
     friction: FrictionLaw
 
 
-def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any]) -> SimulationJob:
-    """The job of ``simulate(contact, motion, alpha, method, **options)``: a :class:`~mdr_events.Contact` with a
-    motion (or a scenario's name and ``alpha``) and the method's options; or the keywords of before, a
-    :class:`~mdr_events.Parameters` (its ``d_max`` and ``v`` the motion's) with ``profile=`` and ``friction=``
-    among the options, whose results keep its attributes as they were (``param_R`` beside a profile)."""
-    options = dict(options)
+class SimulationJob(NamedTuple):
+    """What a simulation runs: the contact along the motion (:class:`ModelJob`) with the method."""
+
+    model: ModelJob
+    method: Method
+
+
+def model_job(contact, motion, alpha, options: dict[str, Any]) -> ModelJob:
+    """The contact and motion of ``contact``, ``motion`` and ``alpha`` (a scenario's name with its angles): a
+    :class:`~mdr_events.Contact` with a motion; or the keywords of before, a :class:`~mdr_events.Parameters` (its
+    ``d_max`` and ``v`` the motion's) with ``profile`` and ``friction`` taken out of ``options``, whose results keep
+    its attributes as they were (``param_R`` beside a profile). The one place the keywords are converted."""
     indenter, law = options.pop("profile", None), options.pop("friction", None)
     if isinstance(contact, Parameters):
         params, profile = contact, indenters.check_simulated_profile(indenter)
         friction = as_friction_law(law)
-        contact = Contact.from_parameters(params, profile, friction)
-        motion = as_motion(motion, alpha, params.d_max, params.v)
-    elif isinstance(contact, Contact):
-        for name, value in (("profile", indenter), ("friction", law)):
-            if value is not None:
-                raise ValueError(f"{name}={shown(value)} is not allowed beside a Contact; allowed: the contact's own "
-                                 f"({'Contact.indenter' if name == 'profile' else 'Contact.friction'})")
-        motion = as_motion(motion, alpha)
-        profile = indenters.check_simulated_profile(contact.profile)
-        friction = dataclasses.replace(contact.friction, tau0=None)
-        params = contact.parameters(motion.d_max, motion.v)
-    else:
+        return ModelJob(Contact.from_parameters(params, profile, friction), as_motion(motion, alpha, params.d_max,
+                                                                                        params.v), params, profile,
+                        friction)
+    if not isinstance(contact, Contact):
         raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a "
                         "mdr_events.Contact (e.g. Contact.paper()) or a mdr_events.Parameters")
-    return SimulationJob(contact, motion, as_method(method, options), params, profile, friction)
+    for name, value in (("profile", indenter), ("friction", law)):
+        if value is not None:
+            raise ValueError(f"{name}={shown(value)} is not allowed beside a Contact; allowed: the contact's own "
+                             f"({'Contact.indenter' if name == 'profile' else 'Contact.friction'})")
+    motion = as_motion(motion, alpha)
+    return ModelJob(contact, motion, contact.parameters(motion.d_max, motion.v),
+                    indenters.check_simulated_profile(contact.profile), dataclasses.replace(contact.friction, tau0=None))
+
+
+def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any]) -> SimulationJob:
+    """The job of ``simulate(contact, motion, alpha, method, **options)``: :func:`model_job`, and the method by name
+    with the remaining options (:func:`~mdr_events.models.methods.as_method`)."""
+    options = dict(options)
+    model = model_job(contact, motion, alpha, options)
+    return SimulationJob(model, as_method(method, options))
 
 
 def simulate(
@@ -129,12 +139,12 @@ def simulate(
         label that is not a non-empty string or is repeated, ``alpha`` with
         custom paths.
     """
-    job = simulation_job(contact, motion, alpha, method, options)
+    model, method = simulation_job(contact, motion, alpha, method, options)
     if limits is None:
         limits = DEFAULT_LIMITS
     elif not isinstance(limits, Limits):
         raise TypeError(f"limits={shown(limits)} is not allowed; allowed: a mdr_events.Limits")
-    check_representable(job.params, job.profile, job.friction)
-    cases = job.motion.cases(job.params, job.profile, job.friction)
-    return job.method.simulate(job.params, cases, job.motion.to_attrs()["scenario"], limits, job.profile,
-                               job.friction)
+    check_representable(model.params, model.profile, model.friction)
+    cases = model.motion.cases(model.params, model.profile, model.friction)
+    return method.simulate(model.params, cases, model.motion.to_attrs()["scenario"], limits, model.profile,
+                           model.friction)

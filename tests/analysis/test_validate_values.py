@@ -1,0 +1,59 @@
+"""validate takes the contact, the motion and the exact reference as values (issue 35): the same report as the
+keywords of before, each conversion in one place, and what does not fit named."""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.models.continuum import Tolerances, solve_path
+
+PAPER = me.Parameters.paper()
+
+
+@pytest.fixture(scope="module")
+def run():
+    discrete = me.simulate(PAPER, "A", [20.0], method="discrete", dx=4e-6, n_steps=2000).isel(alpha=0)
+    return {name: discrete[name].values for name in ("time", "normal_force", "tangential_force", "contact_area")}
+
+
+def same_report(new, old):
+    assert new.attrs == old.attrs
+    for name in old.variables:
+        np.testing.assert_array_equal(new[name].values, old[name].values, err_msg=name)
+
+
+def test_a_contact_and_a_scenario_give_the_keywords_report(run):
+    old = me.validate(run, PAPER, "A", 20.0, tolerance=0.05)
+    same_report(me.validate(run, me.Contact.paper(), me.Scenario("A", 20.0), tolerance=0.05), old)
+    same_report(me.validate(run, me.Contact.paper(), "A", 20.0, tolerance=0.05), old)
+    tight = Tolerances(rtol=1e-11)
+    same_report(me.validate(run, PAPER, "A", 20.0, tolerance=0.05, reference=me.Continuum(tolerances=tight)),
+                me.validate(run, PAPER, "A", 20.0, tolerance=0.05, tolerances=tight))
+
+
+def test_a_solution_at_hand_is_a_reference(run):
+    path = me.Path.scenario_A(20.0, PAPER)
+    solution = solve_path(PAPER, path)
+    same_report(me.validate(run, PAPER, path, reference=solution, tolerance=0.05),
+                me.validate(run, PAPER, path, solution=solution, tolerance=0.05))
+
+
+@pytest.mark.parametrize("call, error, words", [
+    (lambda run: me.validate(run, PAPER, "A", 20.0, reference=me.Continuum(), tolerances=Tolerances()), ValueError,
+     "reference and tolerances are not allowed together"),
+    (lambda run: me.validate(run, PAPER, "A", 20.0, reference="exact"), TypeError, "reference='exact' (str)"),
+    (lambda run: me.validate(run, PAPER, "A", 20.0, nmaes={"time": "t"}), TypeError,
+     "unexpected keyword argument 'nmaes'; allowed: names, units, time_origin, select"),
+    (lambda run: me.validate(run, me.Contact.paper(), me.Scenario("A", [20.0, 30.0])), ValueError,
+     "holds 2 angles; allowed: the one the candidate ran"),
+    (lambda run: me.validate(run, PAPER, "A"), ValueError, "alpha=None is not allowed with scenario 'A'"),
+    (lambda run: me.validate(run, me.Contact.paper(), "A", 20.0, profile=me.PowerLaw.cone(0.1)), ValueError,
+     "is not allowed beside a Contact"),
+])
+def test_what_does_not_fit_is_named(run, call, error, words):
+    with pytest.raises(error, match=re.escape(words)):
+        call(run)
