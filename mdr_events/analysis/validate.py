@@ -37,7 +37,7 @@ of a candidate event is the path's depth at its time).
 from __future__ import annotations
 
 import math
-from typing import Callable, Mapping
+from typing import Any, Callable, Mapping, NamedTuple
 
 import numpy as np
 import xarray as xr
@@ -274,6 +274,48 @@ def _one_path(job: ModelJob) -> tuple[Path, float | None]:
     return job.motion.cases(job.params, job.profile, job.friction).paths[0], job.motion.alpha[0]
 
 
+class ValidationJob(NamedTuple):
+    """What :func:`validate` compares: the contact along the one path the candidate ran (:class:`ModelJob`), how to
+    read the candidate, and the exact reference (a solution at hand, or the tolerances to solve with)."""
+
+    model: ModelJob
+    path: Path
+    names: Mapping[str, str] | None
+    units: Mapping[str, str] | None
+    time_origin: Any
+    select: Mapping[str, object] | None
+    solution: PathSolution | None
+    tolerances: Tolerances
+
+
+def _validation_job(contact, motion, alpha, tolerance, reference, options: Mapping[str, Any]) -> ValidationJob:
+    """The job of ``validate(candidate, contact, motion, alpha, tolerance=, reference=, **options)``, every argument
+    checked (the keywords of before converted by :func:`~mdr_events.models.simulate.model_job`)."""
+    options = dict(options)
+    names, units, select = (options.pop(name, None) for name in ("names", "units", "select"))
+    time_origin = options.pop("time_origin", "first_contact")
+    solution, tolerances = _reference(reference, options.pop("tolerances", None), options.pop("solution", None))
+    if isinstance(motion, str) and (alpha is None or np.ndim(alpha) != 0):  # (a scenario of several angles)
+        raise ValueError(f"alpha={alpha!r} is not allowed with scenario {motion!r}; allowed: one angle in degrees")
+    model = model_job(contact, motion, alpha, options)
+    if options:
+        raise TypeError(f"validate() got an unexpected keyword argument {next(iter(options))!r}; allowed: names, "
+                        "units, time_origin, select (and profile, friction beside a Parameters)")
+    if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and 0 < tolerance <= 1):
+        raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a number in (0, 1] (the largest error "
+                         "relative to the quantity's range: above 1 every run would pass)")
+    check_representable(model.params, model.profile, model.friction)
+    for name in ("profile", "friction"):
+        if solution is not None and getattr(solution.model, name) != getattr(model, name):
+            raise ValueError(f"solution= was solved for {name}={getattr(solution.model, name)!r}, not for "
+                             f"{name}={getattr(model, name)!r}; allowed: a solution of this "
+                             f"{'indenter' if name == 'profile' else 'friction law'}")
+    path, angle = _one_path(model)
+    if select is None and angle is not None:
+        select = {"alpha": angle}
+    return ValidationJob(model, path, names, units, time_origin, select, solution, tolerances)
+
+
 def validate(candidate, contact: Contact | Parameters, motion, alpha: float | None = None, *,
              tolerance: float = 1e-3, reference: Continuum | PathSolution | None = None,
              limits: Limits = DEFAULT_LIMITS, progress: Callable[[str], None] | None = None,
@@ -326,30 +368,9 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
         (``"pass"``: every quantity *compared* within ``tolerance``), and ``quantities_not_compared`` and
         ``unused_columns`` (columns not named as a quantity: name them with ``names=`` to check them).
     """
-    options = dict(options)
-    names, units, select = (options.pop(name, None) for name in ("names", "units", "select"))
-    time_origin = options.pop("time_origin", "first_contact")
-    solution, tolerances = _reference(reference, options.pop("tolerances", None), options.pop("solution", None))
-    if isinstance(motion, str) and (alpha is None or np.ndim(alpha) != 0):  # (a scenario of several angles)
-        raise ValueError(f"alpha={alpha!r} is not allowed with scenario {motion!r}; allowed: one angle in degrees")
-    job = model_job(contact, motion, alpha, options)
-    if options:
-        raise TypeError(f"validate() got an unexpected keyword argument {next(iter(options))!r}; allowed: names, "
-                        "units, time_origin, select (and profile, friction beside a Parameters)")
-    params, profile, friction = job.params, job.profile, job.friction
-    if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and 0 < tolerance <= 1):
-        raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a number in (0, 1] (the largest error "
-                         "relative to the quantity's range: above 1 every run would pass)")
-    check_representable(params, profile, friction)
-    if solution is not None and solution.model.profile != profile:
-        raise ValueError(f"solution= was solved for profile={solution.model.profile!r}, not for profile={profile!r}; "
-                         "allowed: a solution of this indenter")
-    if solution is not None and solution.model.friction != friction:
-        raise ValueError(f"solution= was solved for friction={solution.model.friction!r}, not for friction={friction!r}; "
-                         "allowed: a solution of this friction law")
-    the_path, angle = _one_path(job)
-    if select is None and angle is not None:
-        select = {"alpha": angle}
+    job = _validation_job(contact, motion, alpha, tolerance, reference, options)
+    params, profile, friction, the_path = job.model.params, job.model.profile, job.model.friction, job.path
+    names, units, time_origin, select, solution = job.names, job.units, job.time_origin, job.select, job.solution
     read = read_candidate(candidate, names, units, limits, select=select, progress=progress)
     if not any(name in COMPARED for name in read.quantities):
         raise ValueError(f"{read.source}: none of {', '.join(COMPARED)} found (columns read: "
@@ -357,7 +378,7 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
                          "serves only the events)")
     check_run_is_finite(read, _in_contact(read.quantities), names)
     times = times_from_contact(read, the_path, time_origin)
-    solution = solve_path(params, the_path, tolerances, limits, profile, friction) if solution is None else solution
+    solution = solve_path(params, the_path, job.tolerances, limits, profile, friction) if solution is None else solution
     exact = _exact_at(solution, times)
     quantities = {name: values for name, values in read.quantities.items()}
     contact = _in_contact(quantities)
