@@ -36,12 +36,12 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.limits import DEFAULT_LIMITS, Limits
-from mdr_events.analysis.validate import COMPARED, VALIDATED_EVENTS, resolve_path, validate
+from mdr_events.analysis.validate import COMPARED, DEFAULT_TOLERANCE, VALIDATED_EVENTS, _validation_job, validate
+from mdr_events.contact import Contact
 from mdr_events.io.datasets import register_schema, stamp
-from mdr_events.models.continuum import solve_path
-from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.continuum import PathSolution, solve_path
+from mdr_events.models.methods import Continuum
 from mdr_events.parameters import Parameters
-from mdr_events.contact.friction import FrictionLaw, as_friction_law
 
 __all__ = ["convergence_study", "fit_observed_order", "OrderFit", "CONVERGENCE_STUDY_CONTENT", "NORMS",
            "CONVERGES_SHARE", "SPREAD_FACTOR", "MIN_SPACINGS"]
@@ -137,11 +137,10 @@ def _spacings(candidates_by_dx) -> list[float]:
     return spacings
 
 
-def convergence_study(candidates_by_dx: Mapping[float, object], params: Parameters, path, alpha: float | None = None,
-                      *, names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
-                      time_origin="first_contact", expected_order: float = 1.0,
-                      limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
-                      friction: FrictionLaw | str | None = None) -> xr.Dataset:
+def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact | Parameters, motion,
+                      alpha: float | None = None, *, expected_order: float = 1.0,
+                      reference: Continuum | PathSolution | None = None, limits: Limits = DEFAULT_LIMITS,
+                      **options) -> xr.Dataset:
     """The observed order of convergence of a simulator to the exact continuum, from three or more spacings.
 
     The continuum is solved once for the path, and each candidate validated once against that solution
@@ -154,17 +153,15 @@ def convergence_study(candidates_by_dx: Mapping[float, object], params: Paramete
     candidates_by_dx : mapping of float to candidate
         Spacing ``Δx`` (m) -> the simulator's output at that spacing: an xarray Dataset, a mapping of
         arrays, or a CSV / netCDF file (:func:`mdr_events.validate`). At least three distinct spacings.
-    params, path, alpha, names, units, time_origin
-        As for :func:`mdr_events.validate`.
+    contact, motion, alpha, reference, **options
+        As for :func:`mdr_events.validate` (the contact, the one path, the exact reference; how to read the
+        candidates: ``names``, ``units``, ``time_origin``, ``select``; beside a Parameters ``profile`` and
+        ``friction``).
     expected_order : float
         The order the simulator should have (> 0; 1 for the paper's spring model), reported beside the
         observed ones and used by ``converges``.
     limits : Limits
         What the continuum run may use (:func:`mdr_events.validate`).
-    profile : PowerLaw, optional
-        The indenter the candidates simulated (default ``None``: the paraboloid of ``params.R``).
-    friction : FrictionLaw or str, optional
-        The friction law the candidates simulated (default the paper's ``"tau0"``; :func:`mdr_events.validate`).
 
     Returns
     -------
@@ -188,12 +185,12 @@ def convergence_study(candidates_by_dx: Mapping[float, object], params: Paramete
     order = sorted(range(len(spacings)), key=lambda i: -spacings[i])
     keys = list(candidates_by_dx)
     # one continuum solution serves every spacing: the study costs one solve and the comparisons
-    friction = as_friction_law(friction)
-    solution = solve_path(params, resolve_path(params, path, alpha, profile), limits=limits, profile=profile,
-                          friction=friction)
-    reports = [validate(candidates_by_dx[keys[i]], params, path, alpha, names=names, units=units,
-                        time_origin=time_origin, solution=solution, profile=profile, friction=friction)
-               for i in order]
+    job = _validation_job(contact, motion, alpha, DEFAULT_TOLERANCE, reference, options)
+    model = job.model
+    solution = job.solution or solve_path(model.params, job.path, job.tolerances, limits, model.profile, model.friction)
+    reading = {name: value for name, value in options.items() if name not in ("tolerances", "solution")}
+    reports = [validate(candidates_by_dx[keys[i]], contact, motion, alpha, reference=solution, limits=limits,
+                        **reading) for i in order]
     dx = np.array([spacings[i] for i in order])
 
     found = {str(name) for report in reports for name in report["quantity"].values}
@@ -253,12 +250,12 @@ def convergence_study(candidates_by_dx: Mapping[float, object], params: Paramete
               "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
     first = reports[0].attrs
     attrs = dict(content=CONVERGENCE_STUDY_CONTENT, verdict=verdict, expected_order=expected_order,
-                 converges_rule=CONVERGES_RULE, time_origin=str(time_origin),
+                 converges_rule=CONVERGES_RULE, time_origin=str(job.time_origin),
                  candidate_sources="; ".join(str(report.attrs["candidate_source"]) for report in reports),
                  path_waypoints=first["path_waypoints"], path_speed=first["path_speed"])
     # the indenter and the friction law, as the reports name them
     attrs.update({key: value for key, value in first.items() if key.startswith(("profile", "friction_"))})
-    return stamp(xr.Dataset(data, coords=coords), params, **attrs)
+    return stamp(xr.Dataset(data, coords=coords), model.params, **attrs)
 
 
 register_schema(CONVERGENCE_STUDY_CONTENT, {

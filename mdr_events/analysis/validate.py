@@ -58,7 +58,7 @@ from mdr_events.parameters import Parameters
 from mdr_events.validation import shown
 from mdr_events.contact.friction import friction_attrs
 
-__all__ = ["validate", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
+__all__ = ["validate", "DEFAULT_TOLERANCE", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
 
 #: The ``content`` attribute of a validation report.
 VALIDATION_CONTENT = "validation of a simulator against the exact continuum"
@@ -80,6 +80,8 @@ TIME_AXIS_SHARE = 1e-3
 #: The fewest samples of a candidate that must lie within the exact contact: fewer cannot show its curves (two
 #: samples, or a time column in µs read as s, left one or two samples to compare, and a pass).
 MIN_SAMPLES_IN_CONTACT = 10
+#: The verdict's bound on each quantity's max error, relative to its range, unless given.
+DEFAULT_TOLERANCE = 1e-3
 #: The time origins :func:`validate` accepts besides a number.
 TIME_ORIGINS = ("first_contact", "path_start")
 
@@ -317,7 +319,7 @@ def _validation_job(contact, motion, alpha, tolerance, reference, options: Mappi
 
 
 def validate(candidate, contact: Contact | Parameters, motion, alpha: float | None = None, *,
-             tolerance: float = 1e-3, reference: Continuum | PathSolution | None = None,
+             tolerance: float = DEFAULT_TOLERANCE, reference: Continuum | PathSolution | None = None,
              limits: Limits = DEFAULT_LIMITS, progress: Callable[[str], None] | None = None,
              **options) -> xr.Dataset:
     """Compare a simulator's output with the exact continuum on the same path, sample and event by event.

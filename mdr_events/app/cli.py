@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import argparse
 import importlib
-import inspect
 import math
 import os
 import re
@@ -340,10 +339,9 @@ def _convergence(args, spacings, params, path, options) -> tuple[tuple | None, l
         if isinstance(error, ModuleNotFoundError) and error.name != CONVERGENCE_MODULE:
             raise
         return None, [f"convergence study skipped ({CONVERGENCE_MODULE}.convergence_study is not available)"]
-    accepted = inspect.signature(study).parameters
-    takes_any = any(p.kind is inspect.Parameter.VAR_KEYWORD for p in accepted.values())
-    extra = {key: value for key, value in options.items() if takes_any or key in accepted}
-    dataset = study(dict(zip(spacings, args.runs)), params, path, **extra)
+    # every option of validate but the verdict's tolerance (the study's verdict is the observed order)
+    dataset = study(dict(zip(spacings, args.runs)), params, path,
+                    **{key: value for key, value in options.items() if key != "tolerance"})
     try:
         from mdr_events.plotting.convergence import plot_convergence_study
         from mdr_events.plotting.figures import figure_png

@@ -57,3 +57,14 @@ def test_a_solution_at_hand_is_a_reference(run):
 def test_what_does_not_fit_is_named(run, call, error, words):
     with pytest.raises(error, match=re.escape(words)):
         call(run)
+
+
+def test_a_convergence_study_takes_the_same_values():
+    runs = {}
+    for dx in (8e-6, 4e-6, 2e-6):
+        discrete = me.simulate(PAPER, "A", [20.0], method="discrete", dx=dx, n_steps=2000).isel(alpha=0)
+        runs[dx] = {name: discrete[name].values for name in ("time", "normal_force", "contact_area")}
+    old = me.convergence_study(runs, PAPER, "A", 20.0)
+    new = me.convergence_study(runs, me.Contact.paper(), me.Scenario("A", 20.0), reference=me.Continuum())
+    same_report(new, old)
+    assert old.attrs["verdict"] == "converges"
