@@ -105,8 +105,12 @@ def check_choice(name: str, value: Any, allowed: Collection) -> None:
     allowed : collection
         The allowed values, listed (as their ``repr``) in the message.
     """
-    if value not in allowed:
-        raise ValueError(f"{name}={value!r} is not allowed; allowed: {', '.join(map(repr, allowed))}")
+    try:
+        known = value in allowed
+    except TypeError:  # (a list or a dict: unhashable, so in no set or mapping of names)
+        known = False
+    if not known:
+        raise ValueError(f"{name}={shown(value)} is not allowed; allowed: {', '.join(map(repr, allowed))}")
 
 
 def check_flag(name: str, value: Any) -> None:

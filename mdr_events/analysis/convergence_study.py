@@ -42,6 +42,7 @@ from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import PathSolution, solve_path
 from mdr_events.models.methods import Continuum
 from mdr_events.parameters import Parameters
+from mdr_events.validation import SCALE_MAX, SCALE_MIN
 
 __all__ = ["convergence_study", "fit_observed_order", "OrderFit", "CONVERGENCE_STUDY_CONTENT", "NORMS",
            "CONVERGES_SHARE", "SPREAD_FACTOR", "MIN_SPACINGS"]
@@ -119,13 +120,14 @@ def _converges(order: float, spread: float, expected_order: float) -> bool:
 
 
 def _spacings(candidates_by_dx) -> list[float]:
-    allowed = (f"allowed: a mapping of at least {MIN_SPACINGS} spacings Δx (m; distinct finite numbers > 0) to "
-               "candidates (anything mdr_events.validate takes)")
+    allowed = (f"allowed: a mapping of at least {MIN_SPACINGS} spacings Δx (m; distinct numbers from "
+               f"{SCALE_MIN:.2g} to {SCALE_MAX:.2g}, whose logarithms are fitted and drawn) to candidates (anything "
+               "mdr_events.validate takes)")
     if not isinstance(candidates_by_dx, Mapping):
         raise ValueError(f"candidates_by_dx of type {type(candidates_by_dx).__name__} is not allowed; {allowed}")
     keys = list(candidates_by_dx)
     bad = [key for key in keys if isinstance(key, bool) or not isinstance(key, Real)
-           or not math.isfinite(float(key)) or float(key) <= 0]
+           or not SCALE_MIN <= float(key) <= SCALE_MAX]
     if bad:
         raise ValueError(f"candidates_by_dx has the spacing(s) {', '.join(map(repr, bad))}; {allowed}")
     spacings = [float(key) for key in keys]

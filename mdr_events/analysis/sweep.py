@@ -46,6 +46,7 @@ from mdr_events.models.methods import METHODS
 from mdr_events.models.motion import SCENARIO_NAMES, scenario_paths
 from mdr_events.models.simulate import simulate
 from mdr_events.parameters import PARAMETER_UNITS, Parameters
+from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_choice, check_count, check_real, real_array, shown
 
 __all__ = ["sweep", "run_chunk", "SweepSpec", "QUANTITIES", "CLOSED_FORM_QUANTITIES", "SWEEP_CONTENT", "SWEPT_NAMES",
@@ -319,13 +320,16 @@ def _check_runs(spec: SweepSpec, grid: Grid) -> None:
     for i, name in enumerate(grid.names):
         if name in EXTRA_NAMES:
             column = grid.rows[:, i]
-            if name == "alpha" and not np.all((column > 0) & (column <= 90)):
-                raise ValueError(f"grid['alpha'] holds {float(column[(column <= 0) | (column > 90)][0])!r}; allowed: angles "
-                                 "in (0, 90] degrees")
+            bad = ~((column > 0) & (column <= 90) & (np.tan(np.radians(column)) > 0))
+            if name == "alpha" and np.any(bad):
+                raise ValueError(f"grid['alpha'] holds {float(column[bad][0])!r}; allowed: angles in (0, 90] degrees "
+                                 "whose tangent is a number (not 5e-324, whose radians underflow to 0)")
             if name == "dx" and not np.all(column > 0):
                 raise ValueError(f"grid['dx'] holds {float(column[column <= 0][0])!r}; allowed: spacings > 0 (m)")
-    if spec.method == "continuum" and not fields:  # (Coulomb's part needs no adhesion there; swept sets: below)
-        check_supported(spec.friction, spec.base, spec.profile)
+    if not fields:  # (swept sets: below)
+        check_representable(spec.base, spec.profile, spec.friction)
+        if spec.method == "continuum":  # (Coulomb's part needs no adhesion there)
+            check_supported(spec.friction, spec.base, spec.profile)
     # a table's sets are checked whole; an outer product's values one name at a time, beside the first value of
     # every other swept name (a field is valid alone, and the continuum refuses a set by a value of one field alone:
     # a nonzero Δγ with Coulomb's part): not every combination, which for 2000 × 2000 values took minutes
@@ -337,6 +341,7 @@ def _check_runs(spec: SweepSpec, grid: Grid) -> None:
                    {**firsts, grid.names[entry[0]]: float(entry[1])})
         try:
             params = spec.base.replace(**changes)
+            check_representable(params, spec.profile, spec.friction)  # (E = 1e300 was a failed run, not refused)
             if spec.method == "continuum":
                 check_supported(spec.friction, params, spec.profile)
         except (ValueError, TypeError) as error:
@@ -522,7 +527,8 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
         raise TypeError(f"tolerances={shown(tolerances)} ({type(tolerances).__name__}) is not allowed; allowed: a "
                         "Tolerances")
     if alpha is not None:
-        alpha = check_real("alpha", alpha, "an angle in (0, 90] degrees", lambda value: 0 < value <= 90)
+        alpha = check_real("alpha", alpha, "an angle in (0, 90] degrees whose tangent is a number",
+                           lambda value: 0 < value <= 90 and math.tan(math.radians(value)) > 0)
     if dx is not None:
         dx = check_real("dx", dx, "a spacing > 0 (m)", lambda value: value > 0)
     if isinstance(scenario, str):
@@ -597,7 +603,11 @@ def _run_chunks(spec: SweepSpec, grid: Grid, pending: list[tuple[int, int]], sch
     """Run the pending chunks on the engine of ``scheduler`` (:func:`~mdr_events.analysis.executors.open_executor`),
     recording each here as it completes; on an error, Ctrl-C or a ``record`` that stops, nothing more runs."""
     with open_executor(scheduler, workers) as executor:
-        futures = {executor.submit(run_chunk, spec, grid.rows[start:stop]): start for start, stop in pending}
+        try:
+            futures = {executor.submit(run_chunk, spec, grid.rows[start:stop]): start for start, stop in pending}
+        except RuntimeError as error:  # (an executor already shut down)
+            raise ValueError(f"scheduler={shown(scheduler)} takes no tasks ({error}); allowed: a running executor or "
+                             "client") from None
         try:
             for future in concurrent.futures.as_completed(futures):
                 record(futures[future], future.result())

@@ -55,7 +55,7 @@ from mdr_events.models.simulate import ModelJob, model_job
 from mdr_events.models.paths import Path
 from mdr_events.models.motion import check_path_representable, scenario_paths
 from mdr_events.parameters import Parameters
-from mdr_events.validation import shown
+from mdr_events.validation import check_real, shown
 from mdr_events.contact.friction import friction_attrs
 
 __all__ = ["validate", "DEFAULT_TOLERANCE", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
@@ -303,9 +303,8 @@ def _validation_job(contact, motion, alpha, tolerance, reference, options: Mappi
     if options:
         raise TypeError(f"validate() got an unexpected keyword argument {next(iter(options))!r}; allowed: names, "
                         "units, time_origin, select (and profile, friction beside a Parameters)")
-    if not (isinstance(tolerance, (int, float)) and not isinstance(tolerance, bool) and 0 < tolerance <= 1):
-        raise ValueError(f"tolerance={tolerance!r} is not allowed; allowed: a number in (0, 1] (the largest error "
-                         "relative to the quantity's range: above 1 every run would pass)")
+    check_real("tolerance", tolerance, "a number in (0, 1] (the largest error relative to the quantity's range: "
+               "above 1 every run would pass)", lambda value: 0 < value <= 1)
     check_representable(model.params, model.profile, model.friction)
     for name in ("profile", "friction"):
         if solution is not None and getattr(solution.model, name) != getattr(model, name):

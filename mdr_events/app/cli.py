@@ -43,6 +43,7 @@ from mdr_events.models.methods import DEFAULT_DX, DEFAULT_STEPS, METHODS
 from mdr_events.models.motion import SCENARIO_NAMES, scenario_paths
 from mdr_events.models.simulate import simulate
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters, from_preset
+from mdr_events.validation import SCALE_MAX, SCALE_MIN
 from mdr_events.contact.indenters import FlatPunch, PowerLaw
 from mdr_events.io.candidates import read_profile_table
 from mdr_events.contact.friction import FRICTION_LAWS, FrictionLaw
@@ -310,9 +311,10 @@ def _spacings(args: argparse.Namespace) -> tuple[list[float] | None, str | None]
         if len(args.dx) != len(args.runs):
             raise UsageError(f"--dx has {len(args.dx)} values and there are {len(args.runs)} runs; allowed: one "
                              "spacing (m) per run, in the order of the runs")
-        bad = [value for value in args.dx if not (math.isfinite(value) and value > 0)]
+        bad = [value for value in args.dx if not SCALE_MIN <= value <= SCALE_MAX]
         if bad:
-            raise UsageError(f"--dx {bad[0]!r} is not allowed; allowed: spacings > 0 (m)")
+            raise UsageError(f"--dx {bad[0]!r} is not allowed; allowed: spacings (m) from {SCALE_MIN:.2g} to "
+                             f"{SCALE_MAX:.2g}")
         if len(set(args.dx)) != len(args.dx):
             raise UsageError(f"--dx {' '.join(f'{value:g}' for value in args.dx)} repeats a spacing; allowed: "
                              "one different spacing (m) per run")
@@ -769,6 +771,8 @@ def console_main() -> int:
     print (a storage library's pending tasks destroyed, thousands of lines after a SIGTERM mid-sweep) is not shown:
     the one line said what happened."""
     status = main()
+    for signum in (signal.SIGINT, signal.SIGTERM):  # (the work is done: a signal now would end it silently with 130)
+        signal.signal(signum, signal.SIG_IGN)
     if status in (128 + signal.SIGINT, 128 + signal.SIGTERM):
         sys.stderr.flush()
         devnull = os.open(os.devnull, os.O_WRONLY)

@@ -252,4 +252,7 @@ def indenter_from_attrs(attrs) -> Indenter:
     if "profile_table_r" in attrs:
         return TabulatedProfile(*(tuple(float(value) for value in str(attrs[name]).split(","))
                                   for name in ("profile_table_r", "profile_table_f")))
+    if "profile" in attrs:  # (a profile in words without its shape: not the paraboloid silently)
+        raise ValueError(f"profile={shown(attrs['profile'])} without its shape (profile_c and profile_n, "
+                         "profile_radius or profile_table_r and profile_table_f)")
     return Paraboloid(float(attrs["param_R"]))

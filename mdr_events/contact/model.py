@@ -20,7 +20,7 @@ from mdr_events.contact.elastomer import Elastomer
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.contact.indenters import FlatPunch, Indenter, Paraboloid, PowerLaw, TabulatedProfile, \
     indenter_from_attrs
-from mdr_events.parameters import Parameters
+from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.validation import shown
 
 __all__ = ["Contact", "SHORT_NAMES", "PARTS"]
@@ -38,6 +38,11 @@ SHORT_NAMES: dict[str, str] = {
     "radius": "indenter.radius", "dgamma0": "adhesion.dgamma0", "dgamma1": "adhesion.dgamma1",
     "tau0": "friction.tau0", "mu": "friction.mu",
 }
+
+
+#: The attributes of a contact that hold numbers.
+NUMERIC_ATTRIBUTES = ("param_E", "param_nu", "param_R", "param_dgamma0", "param_dgamma1", "param_tau0", "friction_mu",
+                      "profile_c", "profile_n", "profile_radius")
 
 
 @dataclass(frozen=True, repr=False)
@@ -94,6 +99,7 @@ class Contact:
                         friction: FrictionLaw | str | None = None) -> "Contact":
         """The contact of ``params`` (its ``d_max`` and ``v`` are the motion's), with ``profile`` instead of its
         paraboloid and ``friction`` instead of the paper's law (``τ0`` from ``params`` where the law uses it)."""
+        check_parameters(params)
         law = as_friction_law(friction)
         if law.uses_tau0 and law.tau0 is None:
             law = dataclasses.replace(law, tau0=params.tau0)
@@ -104,8 +110,24 @@ class Contact:
     def from_attrs(cls, attrs: Mapping[str, Any]) -> "Contact":
         """The contact a result was computed for (:meth:`to_attrs`, or the attributes of
         :meth:`Parameters.to_attrs <mdr_events.Parameters.to_attrs>` with ``profile_*`` and ``friction_*``)."""
-        return cls(Elastomer.from_attrs(attrs), indenter_from_attrs(attrs), Adhesion.from_attrs(attrs),
-                   FrictionLaw.from_attrs(attrs))
+        if not isinstance(attrs, Mapping):
+            raise TypeError(f"attrs={shown(attrs)} ({type(attrs).__name__}) is not allowed; allowed: a mapping of a "
+                            "result's attributes")
+        for key in NUMERIC_ATTRIBUTES:
+            if key in attrs:
+                try:
+                    float(attrs[key])
+                except (TypeError, ValueError):
+                    raise ValueError(f"the attribute {key}={shown(attrs[key])} is not allowed; allowed: a number") \
+                        from None
+        try:
+            return cls(Elastomer.from_attrs(attrs), indenter_from_attrs(attrs), Adhesion.from_attrs(attrs),
+                       FrictionLaw.from_attrs(attrs))
+        except KeyError as error:
+            raise ValueError(f"attrs lack the attribute {error.args[0]!r}; allowed: a result's attributes "
+                             "(Contact.to_attrs)") from None
+        except (TypeError, ValueError) as error:
+            raise ValueError(f"attrs do not describe a contact: {error}") from None
 
     # --- the simulators' keywords -----------------------------------------------------------------------------
     @property

@@ -20,7 +20,7 @@ import xarray as xr
 from mdr_events.io.files import load_netcdf
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.contact.indenters import TabulatedProfile
-from mdr_events.validation import SCALE_MAX, real_array, shown
+from mdr_events.validation import SCALE_MAX, check_real, real_array, shown
 
 __all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor", "check_run_is_finite",
            "UNDEFINED_OUT_OF_CONTACT"]
@@ -61,7 +61,7 @@ class Candidate(NamedTuple):
 def unit_factor(quantity: str, unit: str, source: str) -> float:
     """The factor to SI of ``unit`` for ``quantity`` (:data:`UNITS`); ``ValueError`` naming ``source`` else."""
     allowed = UNITS[CANDIDATE_QUANTITIES[quantity]]
-    if unit not in allowed:
+    if not isinstance(unit, str) or unit not in allowed:  # (a list is no unit, and unhashable)
         raise ValueError(f"{source}: units[{quantity!r}]={unit!r} is not allowed; allowed: "
                          f"{', '.join(repr(name) for name in allowed)}")
     return allowed[unit]
@@ -100,6 +100,10 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
             header = [name.strip() for name in next(reader, [])]
             if not header:
                 raise ValueError(f"{path}: the file is empty; allowed: a CSV file with a header row")
+            repeated = sorted({name for name in header if header.count(name) > 1})
+            if repeated:
+                raise ValueError(f"{path}: the header names {', '.join(map(repr, repeated))} more than once; allowed: "
+                                 "each column's name once")
             limits.check(f"reading {path} ({rows} rows of {len(header)} columns)", samples=rows,
                          memory=BYTES_PER_CSV_VALUE * rows * len(header))
             columns = {name: array("d") for name in header}
@@ -201,6 +205,7 @@ def _selected(dataset: xr.Dataset, source: str, select: Mapping[str, object]) ->
     the angle the candidate is validated at); a dimension of one run, or absent, is left as it is."""
     for dimension, value in select.items():
         if dimension in dataset.dims and dataset.sizes[dimension] > 1:
+            value = check_real(f"select[{dimension!r}]", value, "one coordinate value, a number")
             values = dataset[dimension].values
             matches = np.flatnonzero(np.isclose(values.astype(float), float(value), rtol=0.0, atol=1e-9))
             if matches.size != 1:

@@ -37,6 +37,7 @@ import xarray as xr
 
 from mdr_events.io.datasets import (PROGRAM, STAMP_ATTRIBUTES, describe_dims, dims_match, parameters_of,
                                    required_variables)
+from mdr_events.contact import Contact
 from mdr_events.validation import shown
 
 try:  # POSIX: a writer locks its temporary file, so that another process never takes it for stale
@@ -423,7 +424,16 @@ def atomic_write_all(files: Sequence[PendingFile]) -> list[Path]:
 def netcdf_writer(dataset: xr.Dataset) -> Callable[[str], Any]:
     """What writes ``dataset`` as netCDF to a path (the scipy backend, netCDF3 64-bit offset: no further
     dependency), for :class:`PendingFile`."""
-    return lambda temporary: dataset.to_netcdf(temporary, engine="scipy", format="NETCDF3_64BIT")
+    def write(temporary: str) -> None:
+        try:
+            dataset.to_netcdf(temporary, engine="scipy", format="NETCDF3_64BIT")
+        except (ValueError, TypeError, OverflowError) as error:  # (what netCDF-3 cannot hold, in xarray's words)
+            reason = " ".join(str(error).split())
+            raise ValueError(f"dataset cannot be written as netCDF-3 ({type(error).__name__}: {reason}); allowed: "
+                             "variables and attributes netCDF-3 holds (integers of at most 32 bits, floats, text; "
+                             "attributes of numbers or text)") from None
+
+    return write
 
 
 def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
@@ -441,6 +451,8 @@ def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
     if not isinstance(dataset, xr.Dataset):
         raise TypeError(f"dataset={shown(dataset)} ({type(dataset).__name__}) is not allowed; allowed: an "
                         "xarray.Dataset")
+    if isinstance(dataset, xr.Dataset) and dataset.attrs.get("program") == PROGRAM:
+        _check_stamp(dataset, "dataset")  # (a result open_result would refuse is not written: param_E = inf)
     return atomic_write(path, netcdf_writer(dataset), suffix=".nc")  # (it checks the path before writing)
 
 
@@ -507,6 +519,7 @@ def _check_stamp(dataset: xr.Dataset, where: str) -> None:
         raise ValueError(f"{where} lacks the attribute(s) {missing}")
     try:
         parameters_of(dataset)
+        Contact.from_attrs(dataset.attrs)  # (the indenter and the friction law it names, consistently)
     except (ValueError, TypeError) as error:
         raise ValueError(f"{where}: {error}") from None
 

@@ -57,9 +57,11 @@ def check_reach(params: Parameters, depth: float, profile: SimulatedProfile, lab
         return
     deepest = tabulated.branch(profile, params, params.dgamma0).deepest
     if depth > deepest:
-        raise ValueError(f"{label} reaches the depth {depth:.6g} m; allowed for {profile.describe()!r}: at most "
-                         f"{deepest:.6g} m, where the contact radius reaches the table's last radius (a table reaching "
-                         "further, or a shallower path)")
+        where = (f"at most {deepest:.6g} m, where the contact radius reaches the table's last radius" if deepest > 0 else
+                 f"none: with this adhesion the contact radius reaches the table's last radius above the surface "
+                 f"(at d = {deepest:.3g} m)")
+        raise ValueError(f"{label} reaches the depth {depth:.6g} m; allowed for {profile.describe()!r}: {where} (a "
+                         "table reaching further, or a shallower path)")
 
 
 def spring_profile(params: Parameters, profile: SimulatedProfile = None) -> Callable[[np.ndarray], np.ndarray]:

@@ -9,7 +9,7 @@ reads what ``simulate`` and the other entry points are given: a motion, a scenar
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Mapping, NamedTuple, Sequence
 
 import numpy as np
@@ -260,28 +260,34 @@ class Paths:
         A path, a non-empty list of them (labelled ``"path 1"``, ``"path 2"``, ...) or a mapping
         ``{label: Path}`` (its keys, non-empty strings, the labels); the paths may have different speeds. Kept as
         the mapping.
-    d_max, v : float, optional
-        The depth (m) and speed (m/s) the run's checks measure against and its result names (``param_d_max``,
-        ``param_v``): default the deepest point of the paths and the slowest speed.
+
+    The depth and speed the run's checks measure against and its result names (``param_d_max``, ``param_v``) are
+    the paths' own: :attr:`d_max` their deepest point, :attr:`v` the slowest speed.
     """
 
     paths: Mapping[str, Path]
-    d_max: float | None = None
-    v: float | None = None
+    d_max: float = field(init=False)
+    v: float = field(init=False)
 
     def __post_init__(self) -> None:
         paths = _custom_paths(self.paths)
         object.__setattr__(self, "paths", paths)
-        deepest = max(path.max_depth for path in paths.values())
-        if self.d_max is None:
-            if not deepest > 0.0:
-                raise ValueError("the paths never enter the elastomer (d > 0); there is no contact to simulate")
-            object.__setattr__(self, "d_max", deepest)
-        object.__setattr__(self, "d_max", check_real("d_max", self.d_max, "a finite number > 0 (m)",
-                                                     lambda value: value > 0.0))
-        slowest = min(path.speed for path in paths.values())
-        object.__setattr__(self, "v", check_real("v", slowest if self.v is None else self.v,
-                                                 "a finite number > 0 (m/s)", lambda value: value > 0.0))
+        for label, path in paths.items():
+            if not path.max_depth > 0.0:
+                raise ValueError(f"scenario path {label!r} never enters the elastomer (d > 0); allowed: paths that "
+                                 "make contact")
+        object.__setattr__(self, "d_max", max(path.max_depth for path in paths.values()))
+        object.__setattr__(self, "v", min(path.speed for path in paths.values()))
+
+    @classmethod
+    def named_by(cls, paths, d_max: float, v: float) -> "Paths":
+        """The keywords of before: paths whose run a :class:`~mdr_events.Parameters`' ``d_max`` and ``v`` name (its
+        checks and its ``param_d_max``, ``param_v``), as they did (:func:`as_motion` beside a Parameters)."""
+        motion = object.__new__(cls)
+        object.__setattr__(motion, "paths", _custom_paths(paths))
+        object.__setattr__(motion, "d_max", d_max)
+        object.__setattr__(motion, "v", v)
+        return motion
 
     @property
     def dimension(self) -> str:
@@ -290,6 +296,10 @@ class Paths:
     def cases(self, params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> Cases:
         """The paths, each checked by :func:`check_path_representable` and :func:`check_path_extent`."""
         for label, path in self.paths.items():
+            try:
+                path.first_contact_time()
+            except ValueError as error:
+                raise ValueError(f"scenario path {label!r}: {error}") from None
             check_path_representable(params, path, f"scenario path {label!r}", profile, friction)
             check_path_extent(params, path, f"scenario path {label!r}", profile)
         return Cases(list(self.paths.values()), CUSTOM_DIMENSION, np.array(list(self.paths), dtype=str))
@@ -310,9 +320,11 @@ def as_motion(motion, alpha=None, d_max: float | None = None, v: float | None = 
     a mapping; ``alpha`` must be ``None``); ``d_max`` and ``v`` default to the paper's for a scenario and to the
     paths' own for paths."""
     if isinstance(motion, (Scenario, Paths)):
-        given = [name for name, value in (("alpha", alpha), ("d_max", d_max), ("v", v)) if value is not None]
+        given = [f"{name}={shown(value)}" for name, value in (("alpha", alpha), ("d_max", d_max), ("v", v))
+                 if value is not None]
         if given:
-            raise ValueError(f"{', '.join(given)} is not allowed beside motion={motion!r}; allowed: the motion's own")
+            raise ValueError(f"{', '.join(given)} is not allowed beside motion={motion!r}; allowed: the motion's own "
+                             "(a method is simulate's fourth argument, or method=)")
         return motion
     if isinstance(motion, str):
         return Scenario(motion, FIGURE_ANGLES if alpha is None else alpha, PAPER_D_MAX if d_max is None else d_max,
@@ -323,4 +335,4 @@ def as_motion(motion, alpha=None, d_max: float | None = None, v: float | None = 
     if alpha is not None:
         raise ValueError(f"alpha={alpha!r} is not allowed with custom paths (their waypoints fix the motion); "
                          "allowed: alpha=None")
-    return Paths(motion, d_max, v)
+    return Paths(motion) if d_max is None and v is None else Paths.named_by(motion, d_max, v)

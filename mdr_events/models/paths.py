@@ -59,7 +59,11 @@ def _check_angle(alpha: float) -> float:
     values = validate_alpha(alpha)
     if values.ndim != 0:
         raise TypeError(f"alpha={alpha!r}: a path takes one angle (degrees)")
-    return float(values)
+    angle = float(values)
+    if angle > 0.0 and math.tan(math.radians(angle)) == 0.0:  # (5e-324°: its radians underflow to 0)
+        raise ValueError(f"alpha={alpha!r} (degrees) is not allowed: its tangent underflows to 0 in double precision; "
+                         "allowed: 0, or an angle whose path stays finite (see the path's extent limit)")
+    return angle
 
 
 #: The shortest segment a path may have, as a share of its longest.

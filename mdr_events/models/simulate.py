@@ -19,7 +19,7 @@ from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
-from mdr_events.models.methods import METHODS, Method, as_method
+from mdr_events.models.methods import METHODS, Continuum, Discrete, Method, as_method
 from mdr_events.models.motion import Motion, as_motion
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
@@ -75,6 +75,8 @@ def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any]) -
     """The job of ``simulate(contact, motion, alpha, method, **options)``: :func:`model_job`, and the method by name
     with the remaining options (:func:`~mdr_events.models.methods.as_method`)."""
     options = dict(options)
+    if isinstance(alpha, (str, Discrete, Continuum)) and method == "discrete":  # simulate(contact, motion, method)
+        alpha, method = None, alpha
     model = model_job(contact, motion, alpha, options)
     return SimulationJob(model, as_method(method, options))
 

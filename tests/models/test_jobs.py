@@ -50,7 +50,7 @@ def test_another_indenter_and_law_give_the_keywords_numbers_and_name_only_what_t
 def test_custom_paths_as_a_motion():
     path = me.Path([(0.0, -1e-5), (1e-4, 2e-4), (3e-4, 2e-4), (3e-4, -1e-4)], 1e-6)
     old = me.simulate(PAPER, {"zig": path}, method="continuum")
-    new = me.simulate(CONTACT, me.Paths({"zig": path}, d_max=PAPER.d_max, v=PAPER.v), method="continuum")
+    new = me.simulate(CONTACT, me.Paths.named_by({"zig": path}, PAPER.d_max, PAPER.v), method="continuum")
     same_numbers(new, old)
     assert new.attrs == old.attrs
     default = me.Paths([path])
@@ -66,8 +66,9 @@ def test_custom_paths_as_a_motion():
     (lambda: me.Scenario("B+", final_depth=1e-4), "final_depth=0.0001 is not allowed; allowed: a finite number > "
                                                    "d_max = 0.0003 (m)"),
     (lambda: me.Paths([]), "it holds no path"),
-    (lambda: me.Paths([me.Path([(0.0, -1.0), (1.0, -2.0)], 1.0)]), "the paths never enter the elastomer"),
-    (lambda: as_motion(me.Scenario("A"), alpha=20.0), "alpha is not allowed beside motion=Scenario("),
+    (lambda: me.Paths([me.Path([(0.0, -1.0), (1.0, -2.0)], 1.0)]), "scenario path 'path 1' never enters the elastomer"),
+    (lambda: me.Paths([me.Path([(0.0, 0.0), (0.0, 1e-4)], 1e-6)], v=5.0), "unexpected keyword argument 'v'"),
+    (lambda: as_motion(me.Scenario("A"), alpha=20.0), "alpha=20.0 is not allowed beside motion=Scenario("),
     (lambda: as_motion(me.Path([(0.0, 0.0), (0.0, 1e-4)], 1e-6), alpha=20.0), "alpha=20.0 is not allowed with "
                                                                               "custom paths"),
     (lambda: as_motion(3.0), "scenario=3.0 (float) is not allowed"),

@@ -148,7 +148,7 @@ def test_failed_write_leaves_no_file(paper, tmp_path):
     """A write that the netCDF backend refuses leaves no file behind and an earlier file intact.
 
     A dict attribute is not netCDF-serialisable: xarray raises ``TypeError`` ("Invalid value for
-    attr ...") inside the writer, after :func:`mdr_events.io.files.atomic_write` has created its
+    attr ...", named in a ``ValueError`` of the writer's) inside the writer, after :func:`mdr_events.io.files.atomic_write` has created its
     temporary file. Fails if the temporary file is not removed, if the target is written or
     truncated before the writer succeeds, if the error is swallowed, or if something else goes
     wrong first (a ``NameError``, a ``ValueError`` ... would not match).
@@ -156,13 +156,13 @@ def test_failed_write_leaves_no_file(paper, tmp_path):
     ds = me.phase_diagram(paper, [10.0, 20.0])
     ds.attrs["fine"] = 1  # an int attribute is netCDF-safe
     ds["d_crit_hertz"].attrs["bad"] = {"not": "netcdf"}
-    refused = r"Invalid value for attr 'bad': \{'not': 'netcdf'\}"
-    with pytest.raises(TypeError, match=refused):
+    refused = r"dataset cannot be written as netCDF-3 \(TypeError: Invalid value for attr 'bad': \{'not': 'netcdf'\}"
+    with pytest.raises(ValueError, match=refused):
         me.write_netcdf(ds, tmp_path / "x.nc")
     assert list(tmp_path.iterdir()) == []
     good = me.write_netcdf(me.phase_diagram(paper, [10.0]), tmp_path / "x.nc")
     before = good.read_bytes()
-    with pytest.raises(TypeError, match=refused):
+    with pytest.raises(ValueError, match=refused):
         me.write_netcdf(ds, good)
     assert list(tmp_path.iterdir()) == [good] and good.read_bytes() == before
 
