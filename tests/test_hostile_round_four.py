@@ -150,3 +150,45 @@ def test_a_table_too_short_for_any_contact_says_so():
 def test_a_sweep_refuses_a_value_beyond_double_precision_before_running():
     with pytest.raises(ValueError, match=re.escape("grid: ") + ".*E\\* is 1.33e\\+300 Pa"):
         me.sweep({"E": [1e300]}, "A", 20.0, base=PAPER, scheduler="serial")
+
+
+@pytest.fixture(scope="module")
+def exact_run():
+    run = me.simulate(PAPER, "A", [20.0], method="continuum").isel(alpha=0)
+    return {name: run[name].values.copy() for name in ("time", "normal_force", "tangential_force", "contact_area",
+                                                       "sliding_fraction")}
+
+
+def zeroed(run, where):
+    copy = {name: values.copy() for name, values in run.items()}
+    for name in ("normal_force", "tangential_force", "contact_area", "sliding_fraction"):
+        copy[name][where] = 0.0
+    return copy
+
+
+@pytest.mark.parametrize("case", ["cut short", "blanked in the middle", "fifteen samples", "area blanked"])
+def test_a_run_in_contact_for_less_than_the_exact_one_fails(exact_run, case):
+    """Zeros instead of the contact: the samples where one run is in contact were left out of the norms, and a run
+    cut short at half its contact passed with every error 0. Now their time counts against the tolerance."""
+    inside = np.flatnonzero(exact_run["contact_area"] > 0)
+    if case == "cut short":
+        run = zeroed(exact_run, slice(1000, None))
+    elif case == "blanked in the middle":
+        run = zeroed(exact_run, slice(inside[100], inside[-100]))
+    elif case == "fifteen samples":
+        keep = np.zeros(exact_run["time"].size, bool)
+        keep[inside[:: inside.size // 15][:15]] = True
+        run = zeroed(exact_run, ~keep & (exact_run["contact_area"] > 0))
+    else:
+        run = {name: values.copy() for name, values in exact_run.items()}
+        run["contact_area"][inside[100]:inside[-100]] = 0.0
+    report = me.validate(run, PAPER, "A", 20.0)
+    assert report.attrs["verdict"] == "fail" and float(report["contact_differs_share"]) > 0.4
+
+
+def test_the_exact_run_and_a_fine_discrete_one_keep_their_contact():
+    """The share of a discrete run is its pull-off's few samples: far below the tolerance, the verdict its norms'."""
+    for run, expected in ((me.simulate(PAPER, "A", [20.0], method="continuum"), 0.0),
+                          (me.simulate(PAPER, "A", [20.0], method="discrete", dx=2e-6), 1e-4)):
+        report = me.validate(run, PAPER, "A", 20.0)
+        assert report.attrs["verdict"] == "pass" and float(report["contact_differs_share"]) <= expected

@@ -58,7 +58,7 @@ from mdr_events.parameters import Parameters
 from mdr_events.validation import check_real, shown
 from mdr_events.contact.friction import friction_attrs
 
-__all__ = ["validate", "DEFAULT_TOLERANCE", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
+__all__ = ["validate", "DEFAULT_TOLERANCE", "contact_differs_share", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
 
 #: The ``content`` attribute of a validation report.
 VALIDATION_CONTENT = "validation of a simulator against the exact continuum"
@@ -72,6 +72,8 @@ FULL_SLIP_SHARE = 1e-3
 STRADDLED_EVENTS = ("corner", "tangential_reversal", "first_contact", "re_contact", "pull_off", "contact_ends")
 #: Of those, the events that end a contact.
 CONTACT_ENDING_EVENTS = ("pull_off", "contact_ends")
+#: The quantities that show where a run is in contact (``A > 0``, ``a > 0``, ``F_N ≠ 0``; :func:`_in_contact`).
+CONTACT_INDICATORS = ("contact_area", "contact_radius", "normal_force")
 #: Quantities compared sample by sample (the sliding fraction only serves the events).
 COMPARED = ("normal_force", "tangential_force", "contact_area", "contact_radius")
 UNITS = {"normal_force": "N", "tangential_force": "N", "contact_area": "m2", "contact_radius": "m"}
@@ -188,6 +190,19 @@ def _check_run_covers_the_contact(read: Candidate, times: np.ndarray, contact: n
             raise ValueError(f"{read.source}: column {column!r} {where}, in contact, while the exact contact lasts "
                              "beyond its next sample; allowed: values that cover the contact up to the run's last "
                              f"sample in contact (the exact run lasts {solution.end_time:.6g} s)")
+
+
+def contact_differs_share(times: np.ndarray, codes: np.ndarray, exact_contact: np.ndarray) -> float:
+    """The time during which one run is in contact and the other is not (``left_out`` code 2), as a share of the
+    time the exact run is in contact, both measured on the candidate's samples (each sample stands for half the
+    intervals on either side). A run cut short, or blanked out with zeros, is in contact for less: its samples
+    there were left out of the norms, and it passed."""
+    if times.size < 2:
+        return 0.0
+    gaps = np.diff(times)
+    weights = 0.5 * (np.append(gaps, 0.0) + np.insert(gaps, 0, 0.0))
+    inside = float(np.sum(weights[exact_contact]))
+    return float(np.sum(weights[codes == 2]) / inside) if inside > 0 else 0.0
 
 
 def _contact_ends_within_a_step(solution: PathSolution, times: np.ndarray) -> bool:
@@ -408,6 +423,12 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
                                                        "to the exact quantity's range over the compared samples"})
     within = np.array([value <= tolerance for value in norms["max_error"]], dtype=np.int8)
     data["within_tolerance"] = (("quantity",), within, {"units": "1", "long_name": "max_error <= tolerance (1: yes)"})
+    # (a tangential force alone does not say where a run is in contact: it may be 0 in contact, so no share then)
+    differs = contact_differs_share(times, codes, exact["contact_radius"] > 0) if any(
+        name in quantities for name in CONTACT_INDICATORS) else math.nan
+    data["contact_differs_share"] = ((), differs, {"units": "1", "long_name": "time in contact in one run only, as a "
+                                                   "share of the exact contact's time (the verdict's bound: tolerance; "
+                                                   "nan: a tangential force alone does not show the contact)"})
 
     found = candidate_events(times, quantities, contact, params)
     first = {}
@@ -444,7 +465,7 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
     coords = {"time": ("time", times, {"units": "s", "long_name": "time from first contact"}),
               "quantity": ("quantity", np.array(present), {"units": "1", "long_name": "quantity compared"}),
               "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
-    verdict = "pass" if within.size and np.all(within) else "fail"
+    verdict = "pass" if within.size and np.all(within) and not differs > tolerance else "fail"
     not_compared = [name for name in COMPARED if name not in quantities]
     attrs = dict(content=VALIDATION_CONTENT, candidate_source=read.source, tolerance=float(tolerance),
                  unused_columns=", ".join(read.unused) or "none",
