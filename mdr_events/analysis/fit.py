@@ -50,7 +50,9 @@ import xarray as xr
 from scipy import optimize, stats
 
 from mdr_events.io.candidates import Candidate, read_candidate
-from mdr_events.analysis.validate import resolve_path, times_from_contact
+from mdr_events.analysis.validate import one_path, one_path_job, reference_of, resolve_path, times_from_contact
+from mdr_events.contact import Contact
+from mdr_events.models.methods import Continuum
 from mdr_events.analysis.fit_accuracy import register_fit_accuracy
 from mdr_events.io.agreement import Integrated, RoundOff, register_accuracy
 from mdr_events.io.datasets import figure_of, register_schema, stamp
@@ -389,21 +391,29 @@ def curves_of(solution: PathSolution, path: Path, times: np.ndarray, quantities:
     return ModelCurves({name: out[name] for name in quantities}, in_contact)
 
 
-def synthetic_measurement(params: Parameters, path, alpha: float | None = None, *, times: np.ndarray,
-                          relative_noise: float = 0.0, seed: int = 0,
-                          quantities: Sequence[str] = ("normal_force", "tangential_force", "contact_area"),
-                          time_shift: float = 0.0, tolerances: Tolerances = Tolerances(),
-                          limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
-                          friction: FrictionLaw | str | None = None) -> xr.Dataset:
+def synthetic_measurement(contact: Contact | Parameters, motion, alpha: float | None = None, *, times: np.ndarray,
+                          relative_noise: float = 0.0, reference: Continuum | None = None,
+                          limits: Limits = DEFAULT_LIMITS, **options) -> xr.Dataset:
     """Curves a measurement of this model would give: the continuum at ``times`` (s on the path's clock,
     the clock then reading ``times + time_shift``) plus white noise of ``relative_noise`` times each
     quantity's largest magnitude (``numpy.random.default_rng(seed)``), as a Dataset :func:`fit` reads
-    (``time_origin="path_start"``, with ``time_shift`` the offset a fit should find); ``profile``: the indenter
-    (``None``: the paraboloid of ``params.R``)."""
-    profile = check_simulated_profile(profile)
-    friction = as_friction_law(friction)
+    (``time_origin="path_start"``, with ``time_shift`` the offset a fit should find).
+
+    ``contact``, ``motion`` and ``alpha`` are the one path's, as :func:`mdr_events.validate` takes them;
+    ``reference`` the continuum with its tolerances. The options: ``seed`` (default 0), ``quantities`` (default
+    ``F_N``, ``F_x``, ``A``), ``time_shift`` (s, default 0); beside a :class:`~mdr_events.Parameters` also
+    ``profile``, ``friction`` and ``tolerances``."""
+    options = dict(options)
+    seed, time_shift = options.pop("seed", 0), options.pop("time_shift", 0.0)
+    quantities = options.pop("quantities", ("normal_force", "tangential_force", "contact_area"))
+    _, tolerances = reference_of(reference, options.pop("tolerances", None), None)
+    job = one_path_job(contact, motion, alpha, options)
+    if options:
+        raise TypeError(f"synthetic_measurement() got an unexpected keyword argument {next(iter(options))!r}; "
+                        "allowed: seed, quantities, time_shift (and profile, friction, tolerances beside a Parameters)")
+    params, profile, friction = job.params, job.profile, job.friction
     check_representable(params, profile, friction)
-    the_path = resolve_path(params, path, alpha, profile)
+    the_path, _ = one_path(job)
     times = np.asarray(times, dtype=float)
     curves = model_curves(params, the_path, times, tolerances, limits, tuple(quantities), profile, friction).values
     rng = np.random.default_rng(seed)

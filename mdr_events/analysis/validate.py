@@ -256,7 +256,7 @@ def candidate_events(times, quantities, contact, params) -> dict[str, float]:
     return out
 
 
-def _reference(reference, tolerances, solution) -> tuple[PathSolution | None, Tolerances]:
+def reference_of(reference, tolerances, solution) -> tuple[PathSolution | None, Tolerances]:
     """The solution at hand (or ``None``) and the tolerances of the exact reference: ``reference`` (a
     :class:`~mdr_events.Continuum` or a solution), or the keywords of before (``tolerances=``, ``solution=``)."""
     given = [name for name, value in (("reference", reference), ("tolerances", tolerances), ("solution", solution))
@@ -277,7 +277,7 @@ def _reference(reference, tolerances, solution) -> tuple[PathSolution | None, To
     return None, (reference.tolerances if reference is not None else tolerances or Tolerances())
 
 
-def _one_path(job: ModelJob) -> tuple[Path, float | None]:
+def one_path(job: ModelJob) -> tuple[Path, float | None]:
     """The one path a candidate ran (its motion must have one case) and its angle (``None``: a custom path)."""
     if isinstance(job.motion, Paths):
         label, path = next(iter(job.motion.paths.items()))
@@ -305,16 +305,22 @@ class ValidationJob(NamedTuple):
     tolerances: Tolerances
 
 
+def one_path_job(contact, motion, alpha, options: dict[str, Any]) -> ModelJob:
+    """:func:`~mdr_events.models.simulate.model_job` of a motion of one path (a scenario's name needs one angle;
+    :func:`one_path` checks a Scenario's or Paths')."""
+    if isinstance(motion, str) and (alpha is None or np.ndim(alpha) != 0):  # (a scenario of several angles)
+        raise ValueError(f"alpha={alpha!r} is not allowed with scenario {motion!r}; allowed: one angle in degrees")
+    return model_job(contact, motion, alpha, options)
+
+
 def _validation_job(contact, motion, alpha, tolerance, reference, options: Mapping[str, Any]) -> ValidationJob:
     """The job of ``validate(candidate, contact, motion, alpha, tolerance=, reference=, **options)``, every argument
     checked (the keywords of before converted by :func:`~mdr_events.models.simulate.model_job`)."""
     options = dict(options)
     names, units, select = (options.pop(name, None) for name in ("names", "units", "select"))
     time_origin = options.pop("time_origin", "first_contact")
-    solution, tolerances = _reference(reference, options.pop("tolerances", None), options.pop("solution", None))
-    if isinstance(motion, str) and (alpha is None or np.ndim(alpha) != 0):  # (a scenario of several angles)
-        raise ValueError(f"alpha={alpha!r} is not allowed with scenario {motion!r}; allowed: one angle in degrees")
-    model = model_job(contact, motion, alpha, options)
+    solution, tolerances = reference_of(reference, options.pop("tolerances", None), options.pop("solution", None))
+    model = one_path_job(contact, motion, alpha, options)
     if options:
         raise TypeError(f"validate() got an unexpected keyword argument {next(iter(options))!r}; allowed: names, "
                         "units, time_origin, select (and profile, friction beside a Parameters)")
@@ -326,7 +332,7 @@ def _validation_job(contact, motion, alpha, tolerance, reference, options: Mappi
             raise ValueError(f"solution= was solved for {name}={getattr(solution.model, name)!r}, not for "
                              f"{name}={getattr(model, name)!r}; allowed: a solution of this "
                              f"{'indenter' if name == 'profile' else 'friction law'}")
-    path, angle = _one_path(model)
+    path, angle = one_path(model)
     if select is None and angle is not None:
         select = {"alpha": angle}
     return ValidationJob(model, path, names, units, time_origin, select, solution, tolerances)

@@ -68,3 +68,14 @@ def test_a_convergence_study_takes_the_same_values():
     new = me.convergence_study(runs, me.Contact.paper(), me.Scenario("A", 20.0), reference=me.Continuum())
     same_report(new, old)
     assert old.attrs["verdict"] == "converges"
+
+
+def test_a_synthetic_measurement_takes_the_same_values():
+    times = np.linspace(0.0, 1200.0, 51)
+    from mdr_events.analysis.fit import synthetic_measurement
+    old = synthetic_measurement(PAPER, "A", 20.0, times=times, relative_noise=0.01, seed=3, time_shift=2.0)
+    new = synthetic_measurement(me.Contact.paper(), me.Scenario("A", 20.0), times=times, relative_noise=0.01,
+                                   seed=3, time_shift=2.0, reference=me.Continuum())
+    same_report(new, old)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'sed'"):
+        synthetic_measurement(PAPER, "A", 20.0, times=times, sed=3)
