@@ -43,23 +43,25 @@ import enum
 import math
 import sys
 from dataclasses import dataclass
-from typing import Callable, Mapping, NamedTuple, Sequence
+from typing import Any, Callable, Mapping, NamedTuple, Sequence
 
 import numpy as np
 import xarray as xr
 from scipy import optimize, stats
 
 from mdr_events.io.candidates import Candidate, read_candidate
-from mdr_events.analysis.validate import one_path, one_path_job, reference_of, resolve_path, times_from_contact
+from mdr_events.analysis.validate import one_path, one_path_job, reference_of, times_from_contact
 from mdr_events.contact import Contact
 from mdr_events.models.methods import Continuum
+from mdr_events.models.motion import Scenario
+from mdr_events.models.simulate import ModelJob
 from mdr_events.analysis.fit_accuracy import register_fit_accuracy
 from mdr_events.io.agreement import Integrated, RoundOff, register_accuracy
 from mdr_events.io.datasets import figure_of, register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
-from mdr_events.contact.friction import TAU0, FrictionLaw, as_friction_law, friction_attrs
-from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile, profile_attrs
+from mdr_events.contact.friction import TAU0, FrictionLaw, friction_attrs
+from mdr_events.models.indenters import SimulatedProfile, profile_attrs
 from mdr_events.models.paths import Path
 from mdr_events.theory.scales import check_representable
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
@@ -751,12 +753,46 @@ class FitResult:
         return figure_of(self.dataset)(self.dataset, title=title)
 
 
-def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], start: Parameters,
-        bounds: Mapping[str, tuple[float, float]] | None = None, noise: Mapping[str, float] | None = None,
-        names: Mapping[str, str] | None = None, units: Mapping[str, str] | None = None,
-        time_origin="first_contact", tolerances: Tolerances = Tolerances(),
-        limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
-        friction: FrictionLaw | str | None = None, progress: Callable[[str], None] | None = None) -> FitResult:
+class FitJob(NamedTuple):
+    """What :func:`fit` fits: the start's contact along the one path (:class:`ModelJob`; ``path_of`` rebuilds the
+    path for a trial's parameters), the bounds and noise, how to read the data, the continuum's tolerances."""
+
+    model: ModelJob
+    path_of: Callable[[Parameters], Path]
+    bounds: Mapping[str, tuple[float, float]] | None
+    noise: Mapping[str, float] | None
+    names: Mapping[str, str] | None
+    units: Mapping[str, str] | None
+    time_origin: Any
+    tolerances: Tolerances
+
+
+def _fit_job(contact, motion, alpha, reference, options: Mapping[str, Any]) -> FitJob:
+    """The job of :func:`fit`; the keywords of before, ``fit(measured, path, alpha, start=params, ...)``, read in this
+    one place (their path and angle come where the contact and the motion now do)."""
+    options = dict(options)
+    if "start" in options:
+        if motion is not None and alpha is not None:
+            raise ValueError(f"alpha={alpha!r} is not allowed twice (the third argument is the angle with start=)")
+        contact, motion, alpha = options.pop("start"), contact, (motion if motion is not None else alpha)
+        if not isinstance(contact, (Parameters, Contact)):
+            raise TypeError(f"start={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a "
+                            "mdr_events.Parameters (the fit's start, with the fixed parameters' values)")
+    values = {name: options.pop(name, None) for name in ("bounds", "noise", "names", "units")}
+    time_origin = options.pop("time_origin", "first_contact")
+    _, tolerances = reference_of(reference, options.pop("tolerances", None), None)
+    model = one_path_job(contact, motion, alpha, options)
+    if options:
+        raise TypeError(f"fit() got an unexpected keyword argument {next(iter(options))!r}; allowed: bounds, noise, "
+                        "names, units, time_origin (and start, profile, friction, tolerances as before)")
+    one_path(model)  # (one path: checked once, before any trial)
+    return FitJob(model, lambda params: one_path(model._replace(params=params))[0], values["bounds"],
+                  values["noise"], values["names"], values["units"], time_origin, tolerances)
+
+
+def fit(measured, contact: Contact | Parameters | None = None, motion=None, alpha: float | None = None, *,
+        free: Sequence[str], reference: Continuum | None = None, limits: Limits = DEFAULT_LIMITS,
+        progress: Callable[[str], None] | None = None, **options) -> FitResult:
     """Fit the continuum model to measured curves by weighted least squares.
 
     Parameters
@@ -764,15 +800,23 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     measured : xarray.Dataset, mapping of arrays, or the path of a CSV / netCDF file
         Time and any of ``normal_force``, ``tangential_force``, ``contact_area``, ``contact_radius``
         (:func:`mdr_events.io.candidates.read_candidate`; ``nan`` marks a missing sample).
-    path : Path or {"A", "B", "B+"}
-        The path of the experiment; a scenario needs ``alpha`` (one angle, degrees) and is rebuilt for each
-        trial (its way out depends on the parameters).
+    contact : Contact or Parameters
+        The start of the fit: the contact (:class:`~mdr_events.Contact`, or a :class:`~mdr_events.Parameters` with
+        ``profile=`` and ``friction=`` among the options); the values not free keep theirs.
+    motion, alpha
+        The one path of the experiment, as :func:`mdr_events.validate` takes it (a :class:`~mdr_events.Scenario` of
+        one angle or a scenario's name with ``alpha``, rebuilt for each trial: its way out depends on the
+        parameters; :class:`~mdr_events.Paths` of one path or a :class:`Path`). The keywords of before,
+        ``fit(measured, path, alpha, start=params, ...)``, are read too.
     free : sequence of str
         The parameters to fit, from :data:`FREE_NAMES`: ``E``, ``nu``, ``R``, ``tau0``, ``dgamma0``,
         ``dgamma1``, ``mu`` (with a friction law that has Coulomb's part) and the offsets ``time_offset`` (s),
         ``depth_offset`` (m).
-    start : Parameters
-        The start of the fit; the fields not free keep their values.
+    reference : Continuum, optional
+        The continuum with its tolerances (default ``Continuum()``; ``tolerances=`` among the options says the same).
+    **options
+        ``bounds``, ``noise``, ``names``, ``units``, ``time_origin`` (below); beside a Parameters also ``profile``
+        and ``friction``.
     bounds : mapping, optional
         Free name → ``(lower, upper)`` in its unit; default: the physical ranges (moduli, τ0 and works of
         adhesion > 0 on their log scale, ``ν`` in (−1, 0.5], the offsets unbounded).
@@ -782,16 +826,9 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
     names, units, time_origin
         As in :func:`mdr_events.validate`: your column names and units; what the measured time counts from
         (``"first_contact"`` of the path as given, ``"path_start"``, or the measured time at first contact).
-    tolerances : Tolerances
-        The continuum's solver tolerances.
     limits : Limits
-        What each continuum run may use.
-    profile : PowerLaw, optional
-        The indenter of the experiment, ``f = c rⁿ`` with ``n >= 1`` (default ``None``: the paraboloid of ``R``);
-        ``R`` is then not a parameter of the model and cannot be free.
-    friction : FrictionLaw or str, optional
-        The friction law of the experiment (default the paper's ``"tau0"``; Coulomb's part needs a contact without
-        adhesion in the continuum). With Coulomb's part, ``"mu"`` may be free: its ``μ`` is then the start.
+        What each continuum run may use. Another indenter than the paraboloid has no ``R`` to free; with Coulomb's
+        part in the friction law, ``"mu"`` may be free (its ``μ`` the start).
     progress : callable, optional
         Hears how far reading a long CSV file is (:func:`~mdr_events.io.candidates.read_candidate`).
 
@@ -805,11 +842,10 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
         Naming the argument: an empty or all-``nan`` measurement, a name not in :data:`FREE_NAMES`, bounds that
         exclude the start, a start of 0 for a log-scaled parameter, fewer samples than free parameters.
     """
-    if not isinstance(start, Parameters):
-        raise TypeError(f"start={shown(start)} ({type(start).__name__}) is not allowed; allowed: a mdr_events.Parameters "
-                        "(the fit's start, with the fixed parameters' values)")
-    profile = check_simulated_profile(profile)
-    friction = as_friction_law(friction)
+    job = _fit_job(contact, motion, alpha, reference, options)
+    start, profile, friction, path_of = job.model.params, job.model.profile, job.model.friction, job.path_of
+    bounds, noise, names, units, time_origin = job.bounds, job.noise, job.names, job.units, job.time_origin
+    tolerances = job.tolerances
     if progress is not None and not callable(progress):
         raise TypeError(f"progress={shown(progress)} ({type(progress).__name__}) is not allowed; allowed: None or a "
                         "function called with a line of text")
@@ -818,12 +854,11 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
         raise ValueError(f"free={list(free)!r} frees R with profile={profile!r}; allowed: the names of "
                          f"{list(FREE_NAMES)} but R (the power law's shape is c and n, R belongs to the paraboloid)")
     read = read_candidate(measured, names, units, limits, progress=progress)
-    nominal = resolve_path(start, path, alpha, profile)
+    nominal = path_of(start)
     measurement = _measurement(read, nominal, time_origin, noise)
     free_set = free_parameters(free, start, bounds, nominal.duration, max(nominal.max_depth, start.d_max), friction)
     # a scenario is rebuilt per trial (its way out ends below the jump-off, which depends on the parameters)
-    problem = _Problem(free_set, measurement, lambda params: resolve_path(params, path, alpha, profile), tolerances,
-                       limits, profile, friction)
+    problem = _Problem(free_set, measurement, path_of, tolerances, limits, profile, friction)
     samples = sum(int(np.count_nonzero(np.isfinite(v))) for v in measurement.values.values())
     if samples <= len(free_set.names):
         raise ValueError(f"{read.source}: {samples} finite samples for {len(free_set.names)} free parameters; "
@@ -875,8 +910,8 @@ def fit(measured, path, alpha: float | None = None, *, free: Sequence[str], star
                  noise_rule="given" if all_given else "estimated from the data's second differences where not given",
                  out_of_contact_rule="the model's forces and area are 0 out of the elastomer; samples before a path "
                                      "that starts inside it or after one that ends in contact are left out")
-    if isinstance(path, str):
-        attrs.update(scenario=path, alpha=float(alpha))
+    if isinstance(job.model.motion, Scenario):
+        attrs.update(scenario=job.model.motion.name, alpha=float(job.model.motion.alpha[0]))
     attrs.update(profile_attrs(profile))
     attrs.update(friction_attrs(free_set.friction_at(theta)))  # (with the fitted μ where it is free)
     run = OptimizerRun(problem.solves, int(solution.nfev), int(solution.status), str(solution.message))

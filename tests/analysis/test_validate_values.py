@@ -75,7 +75,22 @@ def test_a_synthetic_measurement_takes_the_same_values():
     from mdr_events.analysis.fit import synthetic_measurement
     old = synthetic_measurement(PAPER, "A", 20.0, times=times, relative_noise=0.01, seed=3, time_shift=2.0)
     new = synthetic_measurement(me.Contact.paper(), me.Scenario("A", 20.0), times=times, relative_noise=0.01,
-                                   seed=3, time_shift=2.0, reference=me.Continuum())
+                                seed=3, time_shift=2.0, reference=me.Continuum())
     same_report(new, old)
     with pytest.raises(TypeError, match="unexpected keyword argument 'sed'"):
         synthetic_measurement(PAPER, "A", 20.0, times=times, sed=3)
+
+
+def test_a_fit_takes_the_same_values():
+    """fit(measured, contact, motion, free=...) and the keywords of before, fit(measured, path, alpha, start=...),
+    find the same parameters, bit for bit."""
+    from mdr_events.analysis.fit import synthetic_measurement
+    truth = PAPER.replace(tau0=30e3)
+    times = np.linspace(0.0, 1200.0, 41)
+    data = synthetic_measurement(truth, "A", 20.0, times=times, relative_noise=0.01, seed=1)
+    old = me.fit(data, "A", 20.0, free=["tau0"], start=PAPER, time_origin="path_start")
+    new = me.fit(data, me.Contact.paper(), me.Scenario("A", 20.0), free=["tau0"], time_origin="path_start",
+                 reference=me.Continuum())
+    assert new.parameters == old.parameters and new.dataset.attrs == old.dataset.attrs
+    with pytest.raises(TypeError, match="unexpected keyword argument 'boundz'"):
+        me.fit(data, me.Contact.paper(), "A", 20.0, free=["tau0"], boundz={})
