@@ -67,7 +67,7 @@ def test_open_result_refuses_a_file_whose_contact_does_not_add_up(tmp_path):
 
 @pytest.mark.parametrize("call, error, words", [
     (lambda: me.Contact(me.Elastomer(1e6, 0.5), None), TypeError, "Contact.indenter=None"),
-    (lambda: me.Contact.from_attrs(None), TypeError, "attrs=None (NoneType) is not allowed"),
+    (lambda: me.Contact.from_attrs(None), TypeError, "attrs of type NoneType are not allowed"),
     (lambda: me.Contact.from_parameters({"E": 1}), TypeError, "params={'E': 1} (dict) is not allowed"),
     (lambda: me.FrictionLaw(["tau0"]), ValueError, "FrictionLaw.law=['tau0'] is not allowed"),
     (lambda: me.validate({"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}, PAPER, "A", 20.0, units={"time": ["ms"]}),
@@ -192,3 +192,83 @@ def test_the_exact_run_and_a_fine_discrete_one_keep_their_contact():
                           (me.simulate(PAPER, "A", [20.0], method="discrete", dx=2e-6), 1e-4)):
         report = me.validate(run, PAPER, "A", 20.0)
         assert report.attrs["verdict"] == "pass" and float(report["contact_differs_share"]) <= expected
+
+
+# --- the fifth round ------------------------------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def exact_columns():
+    run = me.simulate(PAPER, "A", [20.0], method="continuum").isel(alpha=0)
+    return {name: run[name].values.copy() for name in ("time", "normal_force", "tangential_force", "contact_area",
+                                                       "contact_radius", "sliding_fraction")}
+
+
+@pytest.mark.parametrize("rows", [slice(200, None), slice(1000, None), slice(1800, None), np.r_[0:1000, 2000],
+                                  np.r_[0, 1000:2001]], ids=["start cut 10 %", "start cut 50 %", "start cut 90 %",
+                                                            "middle cut out", "only the first row before"])
+def test_a_run_that_does_not_sample_the_exact_contact_fails(exact_columns, rows):
+    """Its samples were the exact values where it had them: a pass. The exact contact's time before the first sample
+    and inside gaps of ten median spacings now counts as not matched."""
+    report = me.validate({name: values[rows] for name, values in exact_columns.items()}, PAPER, "A", 20.0)
+    assert report.attrs["verdict"] == "fail" and float(report["contact_differs_share"]) > 0.09
+
+
+@pytest.mark.parametrize("change", ["garbage out of contact", "spike at the corner"])
+def test_a_sample_left_out_still_lies_within_one_range(exact_columns, change):
+    """A left-out sample (contact differs, straddles an event) was not bounded at all: 5 N hidden as "no contact",
+    100 ranges after the corner. Within one range is what an event's timing changes (a fine discrete run: 0.2)."""
+    run = {name: values.copy() for name, values in exact_columns.items()}
+    if change == "garbage out of contact":
+        run["normal_force"][1000], run["contact_area"][1000], run["contact_radius"][1000] = 5.0, 0.0, 0.0
+    else:
+        run["normal_force"][1459] += 100 * float(np.ptp(run["normal_force"]))
+    report = me.validate(run, PAPER, "A", 20.0)
+    assert report.attrs["verdict"] == "fail" and float(report["left_out_max_error"].max()) > 1.0
+    fine = me.validate(me.simulate(PAPER, "A", [20.0], method="discrete", dx=2e-6), PAPER, "A", 20.0)
+    assert float(fine["left_out_max_error"].max()) < 0.5
+
+
+def test_a_store_goes_where_a_file_would(tmp_path):
+    """A sweep's store was created in the root; one named with the temporary marker was taken."""
+    for store, words in (("/mdr_x.zarr", "it is /, the file system's root"),
+                         (tmp_path / ".x.mdr-tmp-1.zarr", "its name holds '.mdr-tmp-'")):
+        with pytest.raises(ValueError, match=re.escape(words)):
+            me.sweep({"tau0": [3e4]}, "A", 20.0, base=PAPER, scheduler="serial", store=store,
+                     quantities=("critical_angle_A",))
+    with pytest.raises(ValueError, match="control character"):
+        write_netcdf(me.phase_diagram(PAPER, [10.0]), tmp_path / "a\nb.nc")
+
+
+@pytest.mark.parametrize("call, error, words", [
+    (lambda: CONTACT.value(1), TypeError, "name=1 (int) is not allowed"),
+    (lambda: me.Contact.from_attrs({**CONTACT.to_attrs(), "param_E": 10**400}), ValueError, "param_E="),
+    (lambda: me.Contact.from_attrs({**CONTACT.to_attrs(), "param_E": True}), ValueError, "param_E=True"),
+    (lambda: me.Contact.from_attrs(me.simulate(PAPER, "A", [20.0], method="continuum")), TypeError,
+     "attrs of type Dataset are not allowed"),
+    (lambda: me.Paths(None), TypeError, "paths=None (NoneType) is not allowed"),
+    (lambda: me.Scenario(np.array(["A", "B"])), ValueError, "is not allowed"),
+    (lambda: me.sweep({"tau0": [3e4]}, "A", 20.0, base=PAPER, scheduler="tcp://"), ValueError,
+     "scheduler='tcp://' cannot be reached"),
+    (lambda: me.simulate(CONTACT, "A", "20"), TypeError, "alpha='20' (of str values) is not allowed"),
+    (lambda: me.simulate(CONTACT, "A", me.Continuum(), method="discrete"), ValueError, "allowed: one method"),
+    (lambda: me.Paths.named_by([me.Path([(0.0, 0.0), (0.0, 1e-4)], 1e-6)], -1.0, 1e-6), ValueError, "d_max=-1.0"),
+    (lambda: me.Discrete(dx=float("nan")), ValueError, "dx=nan is not allowed"),
+    (lambda: me.sweep({"tau0": [3e4]}, "A", 20.0, base=PAPER, method="continuum", dx=1e-6), ValueError,
+     "dx=1e-06 is not allowed with method='continuum'"),
+    (lambda: CONTACT.replace(E=1e6, **{"elastomer.E": 2e6}), ValueError, "which another name changes too"),
+    (lambda: me.Contact.from_parameters(PAPER, profile="cone"), TypeError, "profile='cone' (str) is not allowed"),
+    (lambda: me.convergence_study({8e-6: {}, 4e-6: {}, 2e-6: {}}, PAPER, "A", 20.0, foo=1), TypeError,
+     "convergence_study() got an unexpected keyword argument 'foo'"),
+    (lambda: me.sweep({"tau0": [3e4]}, "A", 20.0, base=PAPER, scheduler="serial", resume="yes"), TypeError,
+     "resume='yes' is not allowed"),
+])
+def test_the_fifth_round_s_values_are_named(call, error, words):
+    with pytest.raises(error, match=re.escape(words)):
+        call()
+
+
+def test_continuum_values_compare_by_value_and_paths_say_their_labels():
+    assert me.Continuum() == me.Continuum() and me.Continuum(t=[0.0, 1.0]) == me.Continuum(t=[0.0, 1.0])
+    assert me.Continuum(samples=5) != me.Continuum()
+    path = me.Path([(0.0, 0.0), (0.0, 1e-4)], 1e-6)
+    assert repr(me.Paths({"in": path, "again": path})) == "Paths(<2 paths: 'in', 'again'>)"

@@ -187,7 +187,7 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
     order = sorted(range(len(spacings)), key=lambda i: -spacings[i])
     keys = list(candidates_by_dx)
     # one continuum solution serves every spacing: the study costs one solve and the comparisons
-    job = _validation_job(contact, motion, alpha, DEFAULT_TOLERANCE, reference, options)
+    job = _validation_job(contact, motion, alpha, DEFAULT_TOLERANCE, reference, options, "convergence_study")
     model = job.model
     solution = job.solution or solve_path(model.params, job.path, job.tolerances, limits, model.profile, model.friction)
     reading = {name: value for name, value in options.items() if name not in ("tolerances", "solution")}

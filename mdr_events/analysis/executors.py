@@ -125,7 +125,7 @@ def open_executor(scheduler=None, workers: int | None = None) -> Iterator[concur
     else:
         try:
             client = _distributed(scheduler).Client(scheduler)
-        except OSError as error:  # (no scheduler there: dask gives up after its connect timeout)
+        except (OSError, ValueError) as error:  # (no scheduler there, or no address: 'tcp://' has no port)
             raise ValueError(f"scheduler={scheduler!r} cannot be reached ({error}); allowed: the address of a running "
                              "dask scheduler, or 'local' / 'serial'") from None
         with client:

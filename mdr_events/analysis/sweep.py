@@ -32,7 +32,7 @@ from mdr_events.analysis.executors import check_scheduler, check_workers, open_e
 from mdr_events.analysis.fit import curves_of
 from mdr_events.analysis.validate import candidate_events
 from mdr_events.io.datasets import register_schema, stamp
-from mdr_events.io.files import prepare_output_directory
+from mdr_events.io.files import check_output_file, prepare_output_directory
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import EventKind, Tolerances, extremum, solve_path, tangential_work
 from mdr_events.models.continuum.solution import scan_spans
@@ -47,7 +47,7 @@ from mdr_events.models.motion import SCENARIO_NAMES, scenario_paths
 from mdr_events.models.simulate import simulate
 from mdr_events.parameters import PARAMETER_UNITS, Parameters
 from mdr_events.theory.scales import check_representable
-from mdr_events.validation import check_choice, check_count, check_real, real_array, shown
+from mdr_events.validation import check_choice, check_count, check_flag, check_real, real_array, shown
 
 __all__ = ["sweep", "run_chunk", "SweepSpec", "QUANTITIES", "CLOSED_FORM_QUANTITIES", "SWEEP_CONTENT", "SWEPT_NAMES",
            "TABLE_DIMENSION",
@@ -412,6 +412,9 @@ class _Store:
                              "directory or a sweep's store (nothing else is overwritten)")
         if not os.path.exists(self.path):
             prepare_output_directory(self.path, "store")
+            # (its parent takes it as an output directory takes a file: not the root, no temporary marker)
+            parent = os.path.dirname(os.path.abspath(self.path))
+            check_output_file("store", os.path.join(parent, os.path.basename(os.path.normpath(self.path))))
         if resume and is_store:
             existing = xr.open_zarr(self.path, zarr_format=2)
             if existing.attrs.get("sweep_signature") != signature:
@@ -530,7 +533,10 @@ def sweep(grid, scenario="A", alpha: float | None = None, *, base: Parameters, m
         alpha = check_real("alpha", alpha, "an angle in (0, 90] degrees whose tangent is a number",
                            lambda value: 0 < value <= 90 and math.tan(math.radians(value)) > 0)
     if dx is not None:
+        if method != "discrete":  # (simulate refuses it too: the continuum has no springs)
+            raise ValueError(f"dx={shown(dx)} is not allowed with method={method!r}; allowed: with method='discrete'")
         dx = check_real("dx", dx, "a spacing > 0 (m)", lambda value: value > 0)
+    check_flag("resume", resume)
     if isinstance(scenario, str):
         check_choice("scenario", scenario, SCENARIO_NAMES)
         if alpha is not None and "alpha" in the_grid.names:  # (the grid's angles would silently win)
@@ -605,7 +611,7 @@ def _run_chunks(spec: SweepSpec, grid: Grid, pending: list[tuple[int, int]], sch
     with open_executor(scheduler, workers) as executor:
         try:
             futures = {executor.submit(run_chunk, spec, grid.rows[start:stop]): start for start, stop in pending}
-        except RuntimeError as error:  # (an executor already shut down)
+        except Exception as error:  # noqa: BLE001 - an executor shut down, a client closed: it takes no tasks
             raise ValueError(f"scheduler={shown(scheduler)} takes no tasks ({error}); allowed: a running executor or "
                              "client") from None
         try:

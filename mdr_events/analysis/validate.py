@@ -79,6 +79,11 @@ COMPARED = ("normal_force", "tangential_force", "contact_area", "contact_radius"
 UNITS = {"normal_force": "N", "tangential_force": "N", "contact_area": "m2", "contact_radius": "m"}
 #: A candidate still in contact at its last sample must reach the exact run's end to this share.
 TIME_AXIS_SHARE = 1e-3
+#: A gap between a candidate's samples this many times their median spacing leaves the exact contact in it unsampled.
+GAP_FACTOR = 10.0
+#: A sample left out (its contact differs, or it straddles an event) still lies within this many ranges of the exact
+#: value: what an event's timing can change (a jump to 0 at the pull-off); a spike of 100 ranges there passed.
+LEFT_OUT_BOUND = 1.0
 #: The fewest samples of a candidate that must lie within the exact contact: fewer cannot show its curves (two
 #: samples, or a time column in µs read as s, left one or two samples to compare, and a pass).
 MIN_SAMPLES_IN_CONTACT = 10
@@ -205,6 +210,31 @@ def contact_differs_share(times: np.ndarray, codes: np.ndarray, exact_contact: n
     return float(np.sum(weights[codes == 2]) / inside) if inside > 0 else 0.0
 
 
+def uncovered_share(times: np.ndarray, solution: PathSolution) -> float:
+    """The exact contact's time the candidate does not sample, as a share of it: before its first sample (a run whose
+    start is cut off), and inside gaps longer than :data:`GAP_FACTOR` times its median spacing (a run with its middle
+    cut out); the exact contact taken as ``[0, end_time]`` from first contact."""
+    end = solution.end_time
+    if not end > 0.0 or times.size < 2:
+        return 0.0
+    gaps = np.diff(times)
+    wide = gaps > GAP_FACTOR * float(np.median(gaps))
+    starts, stops = np.append(-np.inf, times[:-1][wide]), np.append(times[0], times[1:][wide])
+    overlap = np.clip(np.minimum(stops, end) - np.maximum(starts, 0.0), 0.0, None)
+    return float(np.sum(overlap)) / end
+
+
+def _left_out_error(candidate: np.ndarray, exact: np.ndarray, codes: np.ndarray, compared: np.ndarray) -> float:
+    """The largest difference of the samples left out for a contact that differs or an event they straddle, relative
+    to the exact quantity's range over the compared samples (0 if none)."""
+    left = (codes >= 2) & np.isfinite(candidate)
+    if not np.any(left) or not np.any(compared):
+        return 0.0
+    e = exact[compared]
+    spread = float(np.max(e) - np.min(e)) or float(np.max(np.abs(e))) or 1.0
+    return float(np.max(np.abs(candidate[left] - exact[left]))) / spread
+
+
 def _contact_ends_within_a_step(solution: PathSolution, times: np.ndarray) -> bool:
     """Whether the exact contact has ended by the candidate's next sample (its last time plus its last spacing): a
     simulator that stops writing at its last sample in contact (the pull-off) covers the contact."""
@@ -313,7 +343,8 @@ def one_path_job(contact, motion, alpha, options: dict[str, Any]) -> ModelJob:
     return model_job(contact, motion, alpha, options)
 
 
-def _validation_job(contact, motion, alpha, tolerance, reference, options: Mapping[str, Any]) -> ValidationJob:
+def _validation_job(contact, motion, alpha, tolerance, reference, options: Mapping[str, Any],
+                    caller: str = "validate") -> ValidationJob:
     """The job of ``validate(candidate, contact, motion, alpha, tolerance=, reference=, **options)``, every argument
     checked (the keywords of before converted by :func:`~mdr_events.models.simulate.model_job`)."""
     options = dict(options)
@@ -322,7 +353,7 @@ def _validation_job(contact, motion, alpha, tolerance, reference, options: Mappi
     solution, tolerances = reference_of(reference, options.pop("tolerances", None), options.pop("solution", None))
     model = one_path_job(contact, motion, alpha, options)
     if options:
-        raise TypeError(f"validate() got an unexpected keyword argument {next(iter(options))!r}; allowed: names, "
+        raise TypeError(f"{caller}() got an unexpected keyword argument {next(iter(options))!r}; allowed: names, "
                         "units, time_origin, select (and profile, friction beside a Parameters)")
     check_real("tolerance", tolerance, "a number in (0, 1] (the largest error relative to the quantity's range: "
                "above 1 every run would pass)", lambda value: 0 < value <= 1)
@@ -416,7 +447,9 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
                                                                       for m in LEFT_OUT_CODES.values())})}
     present = [name for name in COMPARED if name in quantities]
     norms = {"max_error": [], "rms_error": [], "l1_error": []}
+    left_out_errors = []
     for name in present:
+        left_out_errors.append(_left_out_error(quantities[name], exact[name], codes, compared))
         difference = np.where(compared, quantities[name] - exact[name], np.nan)
         data[f"candidate_{name}"] = (("time",), quantities[name], {"units": UNITS[name], "long_name": f"candidate {name}"})
         data[f"exact_{name}"] = (("time",), exact[name], {"units": UNITS[name], "long_name": f"exact {name} (continuum)"})
@@ -429,12 +462,16 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
                                                        "to the exact quantity's range over the compared samples"})
     within = np.array([value <= tolerance for value in norms["max_error"]], dtype=np.int8)
     data["within_tolerance"] = (("quantity",), within, {"units": "1", "long_name": "max_error <= tolerance (1: yes)"})
+    data["left_out_max_error"] = (("quantity",), np.array(left_out_errors), {
+        "units": "1", "long_name": f"max error of the samples left out (contact differs, straddles an event) relative to "
+                                   f"the range; the verdict's bound: {LEFT_OUT_BOUND:g} (what an event's timing changes)"})
     # (a tangential force alone does not say where a run is in contact: it may be 0 in contact, so no share then)
-    differs = contact_differs_share(times, codes, exact["contact_radius"] > 0) if any(
-        name in quantities for name in CONTACT_INDICATORS) else math.nan
-    data["contact_differs_share"] = ((), differs, {"units": "1", "long_name": "time in contact in one run only, as a "
-                                                   "share of the exact contact's time (the verdict's bound: tolerance; "
-                                                   "nan: a tangential force alone does not show the contact)"})
+    differs = contact_differs_share(times, codes, exact["contact_radius"] > 0) + uncovered_share(times, solution) \
+        if any(name in quantities for name in CONTACT_INDICATORS) else math.nan
+    data["contact_differs_share"] = ((), differs, {"units": "1", "long_name": "time of the exact contact in contact in "
+                                                   "one run only or not sampled, as a share of the exact contact's time "
+                                                   "(the verdict's bound: tolerance; nan: a tangential force alone does "
+                                                   "not show the contact)"})
 
     found = candidate_events(times, quantities, contact, params)
     first = {}
@@ -471,7 +508,8 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
     coords = {"time": ("time", times, {"units": "s", "long_name": "time from first contact"}),
               "quantity": ("quantity", np.array(present), {"units": "1", "long_name": "quantity compared"}),
               "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
-    verdict = "pass" if within.size and np.all(within) and not differs > tolerance else "fail"
+    verdict = "pass" if (within.size and np.all(within) and not differs > tolerance
+                         and not np.any(np.array(left_out_errors) > LEFT_OUT_BOUND)) else "fail"
     not_compared = [name for name in COMPARED if name not in quantities]
     attrs = dict(content=VALIDATION_CONTENT, candidate_source=read.source, tolerance=float(tolerance),
                  unused_columns=", ".join(read.unused) or "none",

@@ -250,8 +250,14 @@ def indenter_from_attrs(attrs) -> Indenter:
     if "profile_radius" in attrs:
         return FlatPunch(float(attrs["profile_radius"]))
     if "profile_table_r" in attrs:
-        return TabulatedProfile(*(tuple(float(value) for value in str(attrs[name]).split(","))
-                                  for name in ("profile_table_r", "profile_table_f")))
+        columns = []
+        for name in ("profile_table_r", "profile_table_f"):
+            try:
+                columns.append(tuple(float(value) for value in str(attrs[name]).split(",")))
+            except ValueError:
+                raise ValueError(f"the attribute {name}={shown(attrs[name])} is not allowed; allowed: numbers "
+                                 "separated by commas") from None
+        return TabulatedProfile(*columns)
     if "profile" in attrs:  # (a profile in words without its shape: not the paraboloid silently)
         raise ValueError(f"profile={shown(attrs['profile'])} without its shape (profile_c and profile_n, "
                          "profile_radius or profile_table_r and profile_table_f)")

@@ -100,6 +100,9 @@ class Contact:
         """The contact of ``params`` (its ``d_max`` and ``v`` are the motion's), with ``profile`` instead of its
         paraboloid and ``friction`` instead of the paper's law (``τ0`` from ``params`` where the law uses it)."""
         check_parameters(params)
+        if profile is not None and not isinstance(profile, PARTS["indenter"]):
+            raise TypeError(f"profile={shown(profile)} ({type(profile).__name__}) is not allowed; allowed: None (the "
+                            "paraboloid of params.R), a PowerLaw, a FlatPunch or a TabulatedProfile")
         law = as_friction_law(friction)
         if law.uses_tau0 and law.tau0 is None:
             law = dataclasses.replace(law, tau0=params.tau0)
@@ -110,14 +113,16 @@ class Contact:
     def from_attrs(cls, attrs: Mapping[str, Any]) -> "Contact":
         """The contact a result was computed for (:meth:`to_attrs`, or the attributes of
         :meth:`Parameters.to_attrs <mdr_events.Parameters.to_attrs>` with ``profile_*`` and ``friction_*``)."""
-        if not isinstance(attrs, Mapping):
-            raise TypeError(f"attrs={shown(attrs)} ({type(attrs).__name__}) is not allowed; allowed: a mapping of a "
-                            "result's attributes")
+        if not isinstance(attrs, Mapping) or hasattr(attrs, "data_vars"):  # (a Dataset is a mapping of variables)
+            raise TypeError(f"attrs of type {type(attrs).__name__} are not allowed; allowed: a mapping of a result's "
+                            "attributes (dataset.attrs)")
         for key in NUMERIC_ATTRIBUTES:
             if key in attrs:
                 try:
+                    if isinstance(attrs[key], bool):
+                        raise TypeError(key)
                     float(attrs[key])
-                except (TypeError, ValueError):
+                except (TypeError, ValueError, OverflowError):
                     raise ValueError(f"the attribute {key}={shown(attrs[key])} is not allowed; allowed: a number") \
                         from None
         try:
@@ -126,7 +131,7 @@ class Contact:
         except KeyError as error:
             raise ValueError(f"attrs lack the attribute {error.args[0]!r}; allowed: a result's attributes "
                              "(Contact.to_attrs)") from None
-        except (TypeError, ValueError) as error:
+        except (TypeError, ValueError, OverflowError) as error:
             raise ValueError(f"attrs do not describe a contact: {error}") from None
 
     # --- the simulators' keywords -----------------------------------------------------------------------------
@@ -156,12 +161,18 @@ class Contact:
         parts: dict[str, dict[str, float]] = {}
         for name, value in changes.items():
             part, field = self._path(name)
+            if field in parts.get(part, {}):  # (E= and **{"elastomer.E": ...}: one would silently win)
+                raise ValueError(f"{name!r} changes {part}.{field}, which another name changes too; allowed: each "
+                                 "value once")
             parts.setdefault(part, {})[field] = value
         return dataclasses.replace(self, **{part: dataclasses.replace(getattr(self, part), **fields)
                                             for part, fields in parts.items()})
 
     def _path(self, name: str) -> tuple[str, str]:
         """``(part, field)`` of a dotted or short name that this contact holds; else an error listing those it does."""
+        if not isinstance(name, str):
+            raise TypeError(f"name={shown(name)} ({type(name).__name__}) is not allowed; allowed: a dotted or short name "
+                            f"({', '.join(self.names())})")
         dotted = SHORT_NAMES.get(name, name)
         part, _, field = dotted.partition(".")
         held = getattr(self, part, None) if part in PARTS else None

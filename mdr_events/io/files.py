@@ -194,6 +194,9 @@ def check_output_file(name: str, path: Any) -> Path:
         kind = "a symbolic link" if os.path.islink(target) else "not a regular file"
         raise ValueError(f"{name}={text!r} is not allowed (it is {kind}, which the file would replace); allowed: "
                          f"{_ALLOWED_FILE}, a regular file if it exists")
+    if any(ord(character) < 32 or ord(character) == 127 for character in target.name):  # (a newline in a file name)
+        raise ValueError(f"{name}={shown(text)} is not allowed (its name holds a control character); allowed: "
+                         f"{_ALLOWED_FILE}, without control characters")
     if TEMPORARY_MARKER in target.name:  # (the next write into its directory would take it for stale and remove it)
         raise ValueError(f"{name}={shown(text)} is not allowed (its name holds {TEMPORARY_MARKER!r}, which marks the "
                          f"temporary files this package removes); allowed: {_ALLOWED_FILE}, without that marker")

@@ -72,6 +72,7 @@ class Discrete:
     n_steps: int | None = None
 
     def __post_init__(self) -> None:
+        object.__setattr__(self, "dx", check_real("dx", self.dx, "a spacing > 0 (m)", lambda value: value > 0))
         if self.dt is not None and self.n_steps is not None:
             raise ValueError("give dt or n_steps, not both")
         if self.dt is not None:
@@ -167,6 +168,14 @@ class Continuum:
                 raise ValueError(f"t={shown(self.t)} is not allowed; allowed: {allowed}")
             times.setflags(write=False)
             object.__setattr__(self, "t", times)
+
+    def __eq__(self, other) -> bool:  # (its output times are an array: compared by value)
+        if not isinstance(other, Continuum):
+            return NotImplemented
+        same_times = (self.t is None) == (other.t is None) and (self.t is None or np.array_equal(self.t, other.t))
+        return self.tolerances == other.tolerances and self.samples == other.samples and same_times
+
+    __hash__ = None
 
     def simulate(self, params: Parameters, cases: Cases, scenario: str, limits: Limits,
                  profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> xr.Dataset:

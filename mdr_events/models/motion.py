@@ -109,6 +109,9 @@ def _custom_paths(scenario: Path | Sequence[Path] | Mapping[str, Path]) -> dict[
     """
     if isinstance(scenario, Path):
         return {"path 1": scenario}
+    if not isinstance(scenario, (Mapping, list, tuple)):
+        raise TypeError(f"paths={shown(scenario)} ({type(scenario).__name__}) is not allowed; allowed: "
+                        f"{SCENARIO_ALLOWED}")
     if isinstance(scenario, Mapping):
         labels, paths = list(scenario.keys()), [scenario[label] for label in scenario.keys()]
         where = [f"scenario[{label!r}]" for label in labels]
@@ -221,7 +224,7 @@ class Scenario:
     final_depth: float | None = None
 
     def __post_init__(self) -> None:
-        if self.name not in SCENARIO_NAMES:
+        if not isinstance(self.name, str) or self.name not in SCENARIO_NAMES:
             raise ValueError(f"scenario={self.name!r} is not allowed; allowed: {SCENARIO_ALLOWED}")
         object.__setattr__(self, "alpha", _angles(self.alpha))
         object.__setattr__(self, "d_max", check_real("d_max", self.d_max, "a finite number > 0 (m)",
@@ -250,7 +253,7 @@ class Scenario:
                 "param_v_units": "m s-1"}
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class Paths:
     """Custom paths, one case each, labelled along ``case``.
 
@@ -285,9 +288,13 @@ class Paths:
         checks and its ``param_d_max``, ``param_v``), as they did (:func:`as_motion` beside a Parameters)."""
         motion = object.__new__(cls)
         object.__setattr__(motion, "paths", _custom_paths(paths))
-        object.__setattr__(motion, "d_max", d_max)
-        object.__setattr__(motion, "v", v)
+        object.__setattr__(motion, "d_max", check_real("d_max", d_max, "a finite number > 0 (m)",
+                                                       lambda value: value > 0.0))
+        object.__setattr__(motion, "v", check_real("v", v, "a finite number > 0 (m/s)", lambda value: value > 0.0))
         return motion
+
+    def __repr__(self) -> str:  # (a path's waypoints may be thousands: the labels say which)
+        return f"Paths(<{len(self.paths)} path{'s' * (len(self.paths) > 1)}: {', '.join(map(repr, self.paths))}>)"
 
     @property
     def dimension(self) -> str:

@@ -26,6 +26,9 @@ from mdr_events.parameters import Parameters
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import shown
 
+#: The method of simulate unless given: the paper's springs.
+DEFAULT_METHOD = "discrete"
+
 __all__ = ["simulate", "simulation_job", "SimulationJob", "model_job", "ModelJob", "METHODS"]
 
 
@@ -75,17 +78,20 @@ def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any]) -
     """The job of ``simulate(contact, motion, alpha, method, **options)``: :func:`model_job`, and the method by name
     with the remaining options (:func:`~mdr_events.models.methods.as_method`)."""
     options = dict(options)
-    if isinstance(alpha, (str, Discrete, Continuum)) and method == "discrete":  # simulate(contact, motion, method)
+    if isinstance(alpha, (Discrete, Continuum)) or (isinstance(alpha, str) and alpha in METHODS):
+        if method is not None:  # simulate(contact, motion, method): the third argument is the method
+            raise ValueError(f"method={shown(method)} is not allowed beside the method {shown(alpha)} given third; "
+                             "allowed: one method")
         alpha, method = None, alpha
     model = model_job(contact, motion, alpha, options)
-    return SimulationJob(model, as_method(method, options))
+    return SimulationJob(model, as_method(DEFAULT_METHOD if method is None else method, options))
 
 
 def simulate(
     contact: Contact | Parameters,
     motion: Motion | str | Path | Sequence[Path] | Mapping[str, Path] = "A",
     alpha: float | Sequence[float] | None = None,
-    method: str | Method = "discrete",
+    method: str | Method | None = None,
     *,
     limits: Limits | None = None,
     **options: Any,
@@ -107,7 +113,7 @@ def simulate(
     alpha : float or sequence of float, optional
         With a scenario's name: angles in degrees (default 10°, 20°, …, 80°, as in Fig. 8 and 10).
     method : {"discrete", "continuum"}, Discrete or Continuum
-        ``"discrete"``: the paper's spring array (:mod:`mdr_events.models.discrete`).
+        ``"discrete"`` (the default): the paper's spring array (:mod:`mdr_events.models.discrete`).
         ``"continuum"``: its Δx → 0 limit integrated between events
         (:mod:`mdr_events.models.continuum`); adds the event log along
         ``event`` and each case's exact extrema (:data:`EXTREMA_VARIABLES`).

@@ -383,3 +383,10 @@ def test_a_scheduler_that_cannot_be_reached_is_named(paper):
         with pytest.raises(ValueError, match=re.escape("scheduler='tcp://127.0.0.1:1' cannot be reached")):
             sweep({"tau0": [1e3, 2e3]}, "A", 20.0, base=paper, scheduler="tcp://127.0.0.1:1",
                   quantities=CLOSED_FORM_QUANTITIES)
+
+
+def test_a_closed_client_is_named(paper, cluster):
+    client = distributed.Client(cluster.scheduler_address)
+    client.close()
+    with pytest.raises(ValueError, match="takes no tasks"):
+        sweep({"tau0": [3e4]}, "A", 20.0, base=paper, scheduler=client, quantities=CLOSED_FORM_QUANTITIES)
