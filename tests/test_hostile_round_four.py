@@ -272,3 +272,12 @@ def test_continuum_values_compare_by_value_and_paths_say_their_labels():
     assert me.Continuum(samples=5) != me.Continuum()
     path = me.Path([(0.0, 0.0), (0.0, 1e-4)], 1e-6)
     assert repr(me.Paths({"in": path, "again": path})) == "Paths(<2 paths: 'in', 'again'>)"
+
+
+def test_a_file_of_several_runs_points_to_select_and_a_paraboloid_profile_to_its_place():
+    several = me.simulate(PAPER, "A", [10.0, 20.0], method="continuum")
+    path = me.Path.scenario_A(20.0, PAPER)
+    with pytest.raises(ValueError, match=re.escape("select={'alpha': its angle}")):
+        me.validate(several, PAPER, path)
+    with pytest.raises(TypeError, match=re.escape("the paraboloid is Parameters.R's: leave profile=None")):
+        me.simulate(PAPER, "A", [20.0], profile=me.Paraboloid(0.03))

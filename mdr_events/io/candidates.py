@@ -175,7 +175,8 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
                                                          for v in candidate.data_vars.values())]
         if several:
             raise ValueError(f"{source} holds several runs along {', '.join(several)}; allowed: one run (select it: "
-                             "alpha= of its angle, on the command line --alpha; or dataset.sel(case='...'))")
+                             "select={'alpha': its angle}, or alpha= with a scenario; on the command line --alpha; or "
+                             "dataset.sel(case='...'))")
         if single:
             candidate = candidate.isel({dim: 0 for dim in single})
         names = list(candidate.variables)

@@ -16,7 +16,7 @@ import numpy as np
 
 from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
-from mdr_events.contact.indenters import FlatPunch, PowerLaw, TabulatedProfile, profile_attrs
+from mdr_events.contact.indenters import FlatPunch, Paraboloid, PowerLaw, TabulatedProfile, profile_attrs
 from mdr_events.theory import analytic, mindlin, power_law, symbolic, tabulated
 from mdr_events.theory.branches import branch_radius, jump_off
 
@@ -41,7 +41,9 @@ def check_simulated_profile(profile) -> SimulatedProfile:
         tabulated.equivalent(profile)  # its g(x) must increase (an error names where)
         return profile
     if not isinstance(profile, PowerLaw):
-        raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: None (the "
+        hint = (" (the paraboloid is Parameters.R's: leave profile=None, or give a Contact with it)"
+                if isinstance(profile, Paraboloid) else "")
+        raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed{hint}; allowed: None (the "
                         f"paraboloid of R), a PowerLaw with n >= {MIN_SIMULATED_EXPONENT:g}, a FlatPunch or a "
                         "TabulatedProfile")
     if not profile.n >= MIN_SIMULATED_EXPONENT:
