@@ -54,6 +54,21 @@ _ALLOWED: dict[str, str] = {
 }
 
 
+def shear_modulus(E: float, nu: float) -> float:
+    """``G = E / (2 (1 + ν))`` (Pa)."""
+    return E / (2.0 * (1.0 + nu))
+
+
+def effective_normal_modulus(E: float, nu: float) -> float:
+    """``E* = E / (1 - ν²)`` of a rigid indenter on an elastic half-space (Pa, eq. (5))."""
+    return E / (1.0 - nu**2)
+
+
+def effective_tangential_modulus(E: float, nu: float) -> float:
+    """``G* = 4 G / (2 - ν)`` of a rigid indenter on an elastic half-space (Pa, eq. (6))."""
+    return 4.0 * shear_modulus(E, nu) / (2.0 - nu)
+
+
 def _is_allowed(name: str, value: float) -> bool:
     if name == "nu":
         return -1.0 < value <= 0.5
@@ -136,17 +151,17 @@ class Parameters:
     @property
     def G(self) -> float:
         """Shear modulus ``G = E / (2 (1 + ν))`` in Pa."""
-        return self.E / (2.0 * (1.0 + self.nu))
+        return shear_modulus(self.E, self.nu)
 
     @property
     def E_star(self) -> float:
         """Effective normal modulus ``E* = E / (1 - ν²)`` in Pa (eq. (5))."""
-        return self.E / (1.0 - self.nu**2)
+        return effective_normal_modulus(self.E, self.nu)
 
     @property
     def G_star(self) -> float:
         """Effective tangential modulus ``G* = 4 G / (2 - ν)`` in Pa (eq. (6))."""
-        return 4.0 * self.G / (2.0 - self.nu)
+        return effective_tangential_modulus(self.E, self.nu)
 
     # ------------------------------------------------------------------
     # construction helpers

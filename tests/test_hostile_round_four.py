@@ -7,20 +7,16 @@ import re
 
 import numpy as np
 import pytest
-import xarray as xr
 
 import mdr_events as me
 from mdr_events.app.cli import main
 from mdr_events.io.files import write_netcdf
+from test_hostile_round_two import one_line
 
 PAPER = me.Parameters.paper()
 CONTACT = me.Contact.paper()
 
 
-def one_line(capsys, status, expected_status=2):
-    err = capsys.readouterr().err
-    assert status == expected_status and err.count("\n") == 1 and err.startswith("mdr-events: error:"), err
-    return err
 
 
 @pytest.mark.parametrize("call", [

@@ -53,7 +53,7 @@ from mdr_events.models.methods import Continuum
 from mdr_events.models.motion import Paths
 from mdr_events.models.simulate import ModelJob, model_job
 from mdr_events.models.paths import Path
-from mdr_events.models.motion import check_path_representable, scenario_paths
+from mdr_events.models.motion import check_path_representable
 from mdr_events.parameters import Parameters
 from mdr_events.validation import check_real, shown
 from mdr_events.contact.friction import friction_attrs
@@ -95,16 +95,8 @@ TIME_ORIGINS = ("first_contact", "path_start")
 
 def resolve_path(params: Parameters, path, alpha, profile: SimulatedProfile = None) -> Path:
     """The :class:`Path` validated: ``path`` itself, or the scenario's path at the one angle ``alpha`` (ending below
-    the jump-off of ``profile``, ``None``: the paraboloid)."""
-    if isinstance(path, Path):
-        if alpha is not None:
-            raise ValueError(f"alpha={alpha!r} is not allowed with a Path (its waypoints fix the motion)")
-        check_path_representable(params, path, "path", profile)
-        return path
-    if alpha is None or np.ndim(alpha) != 0:
-        raise ValueError(f"alpha={alpha!r} is not allowed with scenario {path!r}; allowed: one angle in degrees")
-    paths, _ = scenario_paths(params, path, [alpha], profile)
-    return paths[0]
+    the jump-off of ``profile``, ``None``: the paraboloid); :func:`one_path` of the keywords of before."""
+    return one_path(one_path_job(params, path, alpha, {"profile": profile}))[0]
 
 
 def times_from_contact(candidate: Candidate, path: Path, time_origin) -> np.ndarray:
@@ -230,9 +222,7 @@ def _left_out_error(candidate: np.ndarray, exact: np.ndarray, codes: np.ndarray,
     left = (codes >= 2) & np.isfinite(candidate)
     if not np.any(left) or not np.any(compared):
         return 0.0
-    e = exact[compared]
-    spread = float(np.max(e) - np.min(e)) or float(np.max(np.abs(e))) or 1.0
-    return float(np.max(np.abs(candidate[left] - exact[left]))) / spread
+    return float(np.max(np.abs(candidate[left] - exact[left]))) / _spread(exact, compared)
 
 
 def _contact_ends_within_a_step(solution: PathSolution, times: np.ndarray) -> bool:
@@ -244,13 +234,20 @@ def _contact_ends_within_a_step(solution: PathSolution, times: np.ndarray) -> bo
     return not float(evaluate(solution, np.array([max(following, 0.0)]))["contact_radius"][0]) > 0.0
 
 
+def _spread(exact: np.ndarray, compared: np.ndarray) -> float:
+    """The exact quantity's range over the compared samples (its largest magnitude if flat, else 1): what every
+    error of it is relative to."""
+    e = exact[compared]
+    return float(np.max(e) - np.min(e)) or float(np.max(np.abs(e))) or 1.0
+
+
 def _norms(times, difference, exact, compared) -> tuple[float, float, float]:
     """max, RMS and time-weighted L1 of the difference over the compared samples, each relative to the
     exact quantity's range there."""
     if not np.any(compared):
         return math.nan, math.nan, math.nan
-    d, e, t = difference[compared], exact[compared], times[compared]
-    spread = float(np.max(e) - np.min(e)) or float(np.max(np.abs(e))) or 1.0
+    d, t = difference[compared], times[compared]
+    spread = _spread(exact, compared)
     l1 = float(np.trapezoid(np.abs(d), t) / (t[-1] - t[0])) if t.size > 1 else float(abs(d[0]))
     return float(np.max(np.abs(d))) / spread, float(np.sqrt(np.mean(d**2))) / spread, l1 / spread
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Mapping
 
+from mdr_events.parameters import effective_normal_modulus, effective_tangential_modulus, shear_modulus
 from mdr_events.validation import check_real
 
 __all__ = ["Elastomer"]
@@ -40,17 +41,17 @@ class Elastomer:
     @property
     def G(self) -> float:
         """Shear modulus ``G = E / (2 (1 + ν))`` in Pa."""
-        return self.E / (2.0 * (1.0 + self.nu))
+        return shear_modulus(self.E, self.nu)
 
     @property
     def E_star(self) -> float:
         """Effective normal modulus ``E* = E / (1 - ν²)`` in Pa (eq. (5))."""
-        return self.E / (1.0 - self.nu**2)
+        return effective_normal_modulus(self.E, self.nu)
 
     @property
     def G_star(self) -> float:
         """Effective tangential modulus ``G* = 4 G / (2 - ν)`` in Pa (eq. (6))."""
-        return 4.0 * self.G / (2.0 - self.nu)
+        return effective_tangential_modulus(self.E, self.nu)
 
     def to_attrs(self) -> dict[str, Any]:
         """A result's attributes: ``param_E``, ``param_nu`` with their units, and ``param_E_star``, ``param_G_star``."""

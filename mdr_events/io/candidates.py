@@ -17,7 +17,7 @@ from typing import Callable, Mapping, NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.io.files import load_netcdf
+from mdr_events.io.files import input_file_problem, load_netcdf
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.validation import SCALE_MAX, check_real, real_array, shown
@@ -132,11 +132,9 @@ def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
     """A tabulated indenter from a CSV file with a header row naming the columns ``r`` and ``f`` (m; ``#`` lines are
     comments): :class:`~mdr_events.contact.indenters.TabulatedProfile`. Errors name the file and what is allowed."""
     path = Path(path)
-    if not path.is_file():
-        what = ("is a directory" if path.is_dir() else "is not a regular file (a device, FIFO or socket)"
-                if path.exists() else ": no such file")
-        raise ValueError(f"table={str(path)!r}{'' if what.startswith(':') else ' '}{what}; allowed: a CSV file with "
-                         "the columns r and f (m)")
+    problem = input_file_problem(path)
+    if problem is not None:
+        raise ValueError(f"table={str(path)!r}{problem}; allowed: a CSV file with the columns r and f (m)")
     columns = _read_csv(path)
     missing = [name for name in ("r", "f") if name not in columns]
     if missing:
@@ -154,13 +152,10 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
     """The candidate's columns and the units they declare (a Dataset's or netCDF file's ``units``)."""
     if isinstance(candidate, (str, os.PathLike)):
         path = Path(candidate)
-        if path.is_dir():
-            raise ValueError(f"candidate={str(candidate)!r} is a directory; allowed: a CSV or netCDF file, a Dataset "
-                             "or a mapping of arrays")
-        if not path.is_file():
-            what = "is not a regular file (a device, FIFO or socket)" if path.exists() else ": no such file"
-            raise ValueError(f"candidate={str(candidate)!r}{'' if what.startswith(':') else ' '}{what}; allowed: a CSV "
-                             "or netCDF file, a Dataset or a mapping of arrays")
+        problem = input_file_problem(path)
+        if problem is not None:
+            raise ValueError(f"candidate={str(candidate)!r}{problem}; allowed: a CSV or netCDF file, a Dataset or a "
+                             "mapping of arrays")
         if path.suffix.lower() == ".csv":
             return _read_csv(path, limits, progress), {}
         # (loaded whole: its size counts as memory before it is read, as a CSV's rows do)

@@ -46,7 +46,7 @@ except ImportError:  # pragma: no cover - Windows: only the age counts (see STAL
     fcntl = None  # type: ignore[assignment]
 
 __all__ = ["atomic_write", "atomic_write_all", "PendingFile", "netcdf_writer", "write_netcdf", "open_result", "prepare_output_directory", "check_output_stem",
-           "check_output_file", "load_netcdf",
+           "check_output_file", "load_netcdf", "input_file_problem",
            "check_file_path", "remove_stale_temporaries", "is_temporary_name", "TEMPORARY_MARKER"]
 
 #: What marks a temporary file of :func:`atomic_write`: ``.<target name>.mdr-tmp-<random><suffix>``.
@@ -494,13 +494,22 @@ def _netcdf_kind_problem(path: str | os.PathLike) -> str | None:
     return None
 
 
+def input_file_problem(path: str | os.PathLike) -> str | None:
+    """Why ``path`` is no file to read, as the end of a message after its name (`` is a directory``, `` is not a
+    regular file (...)``: a FIFO would block the read forever, ``: no such file``); ``None`` for a regular file."""
+    if os.path.isfile(path):
+        return None
+    if os.path.isdir(path):
+        return " is a directory"
+    return " is not a regular file (a device, FIFO or socket)" if os.path.exists(path) else ": no such file"
+
+
 def load_netcdf(path: str | os.PathLike, where: str, allowed: str = f"a netCDF file written by {PROGRAM}") -> xr.Dataset:
     """The netCDF-3 file at ``path``, fully loaded and closed; ``ValueError`` naming ``where`` and ``allowed`` if it is
     missing, a directory, empty, netCDF-4 or unreadable (the reader's message on one line)."""
-    if os.path.isdir(path):
-        raise ValueError(f"{where} is a directory; allowed: {allowed}")
-    if os.path.exists(path) and not os.path.isfile(path):  # (a FIFO would block the read forever)
-        raise ValueError(f"{where} is not a regular file (a device, FIFO or socket); allowed: {allowed}")
+    problem = input_file_problem(path)
+    if problem is not None:
+        raise ValueError(f"{where}{problem}; allowed: {allowed}")
     try:
         why = _netcdf_kind_problem(path)
         if why is None:

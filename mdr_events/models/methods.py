@@ -30,7 +30,7 @@ from mdr_events.models.continuum.caps import check_supported
 from mdr_events.models.continuum.extrema import solution_extrema
 from mdr_events.models.discrete import check_spacing, run_discrete
 from mdr_events.models.indenters import SimulatedProfile
-from mdr_events.models.motion import CUSTOM_SCENARIO, Cases
+from mdr_events.models.motion import Cases
 from mdr_events.models.paths import Path
 from mdr_events.models.simulation_schema import (SIMULATION_CONTENT, coordinates_last, event_log, extrema_dataset,
                                                  simulation_dataset)
@@ -45,11 +45,6 @@ DEFAULT_STEPS = 10_000
 DEFAULT_SAMPLES = 2001
 #: The discrete model needs at least this many time steps on every path segment it is in contact on.
 MIN_STEPS_PER_SEGMENT = 10
-
-
-def _scenario_name(scenario: str, cases: Cases) -> str:
-    """The ``scenario`` attribute: the scenario's name, or ``"custom"``."""
-    return CUSTOM_SCENARIO if cases.custom else scenario
 
 
 @dataclass(frozen=True)
@@ -93,7 +88,7 @@ class Discrete:
         step = self._time_step(paths)
         check_time_step(paths, step, self.dt, self.n_steps)
         raw = run_discrete(params, paths, dx, step, profile=profile, limits=limits, friction=friction)
-        attrs = dict(method=self.name, scenario=_scenario_name(scenario, cases), dx=float(dx), dt=step,
+        attrs = dict(method=self.name, scenario=scenario, dx=float(dx), dt=step,
                      spring_count_per_side=int(raw["spring_count"]), content=SIMULATION_CONTENT,
                      **indenters.profile_attrs(profile), **friction_attrs(friction))
         return simulation_dataset(params, cases, raw["time"], raw, **attrs)
@@ -185,7 +180,7 @@ class Continuum:
         tolerances = self.tolerances
         raw = run_continuum(params, cases.paths, self.t, samples=self.samples, tolerances=tolerances, limits=limits,
                             profile=profile, friction=friction)
-        attrs = dict(method=self.name, scenario=_scenario_name(scenario, cases),
+        attrs = dict(method=self.name, scenario=scenario,
                      rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
                      content=SIMULATION_CONTENT, **indenters.profile_attrs(profile), **friction_attrs(friction))
         dataset = simulation_dataset(params, cases, raw["time"], raw, **attrs)
