@@ -49,7 +49,7 @@ from mdr_events.analysis.crosscheck import cross_check
 from mdr_events.analysis.validate import validate
 from mdr_events.analysis.convergence_study import convergence_study
 from mdr_events.analysis.fit import FitResult, fit
-from mdr_events.analysis.sweep import sweep
+from mdr_events.analysis.sweep import Engine, SweepOutput, sweep
 from mdr_events import plotting  # noqa: F401 - registers the figures of the result objects (FitResult.plot)
 from mdr_events.app.study import load_study, run_study
 
@@ -74,6 +74,8 @@ __all__ = [
     "Scenario",
     "Continuum",
     "Discrete",
+    "Engine",
+    "SweepOutput",
     "Tolerances",
     "analytic",
     "power_law",

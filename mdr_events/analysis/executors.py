@@ -27,10 +27,16 @@ import logging
 import os
 from collections.abc import Iterator
 from contextlib import contextmanager
+from dataclasses import dataclass
+from typing import Any, Callable
 
 from mdr_events.validation import check_count, shown
 
-__all__ = ["open_executor", "default_scheduler", "check_workers", "LOOPBACK_DASHBOARD", "SCHEDULER_ALLOWED"]
+__all__ = ["Engine", "open_executor", "default_scheduler", "check_workers", "LOOPBACK_DASHBOARD", "SCHEDULER_ALLOWED",
+           "DEFAULT_CHUNK"]
+
+#: Runs per chunk (one task) by default: enough that the engine's overhead per run is far below a run's cost.
+DEFAULT_CHUNK = 50
 
 #: The local cluster's dashboard: on loopback, on a free port (None would take the default :8787).
 LOOPBACK_DASHBOARD = "127.0.0.1:0"
@@ -130,3 +136,39 @@ def open_executor(scheduler=None, workers: int | None = None) -> Iterator[concur
                              "dask scheduler, or 'local' / 'serial'") from None
         with client:
             yield client.get_executor(pure=False)
+
+
+@dataclass(frozen=True)
+class Engine:
+    """Where a sweep's runs are carried out, in chunks, and who hears of their progress.
+
+    Attributes
+    ----------
+    scheduler : "serial", "local", str, distributed.Client or concurrent.futures.Executor, optional
+        Where the chunks run (the module's table; default: the active dask client if there is one, else
+        ``"local"`` where ``distributed`` is installed, else ``"serial"``).
+    workers : int, optional
+        With ``"local"``: the cluster's processes (default the machine's cores; at most that many).
+    chunk_size : int
+        Runs per task (and per Zarr chunk of a store).
+    progress : callable, optional
+        Called with (runs done, runs in all) after each chunk.
+    """
+
+    scheduler: Any = None
+    workers: int | None = None
+    chunk_size: int = DEFAULT_CHUNK
+    progress: Callable[[int, int], None] | None = None
+
+    def __post_init__(self) -> None:
+        check_scheduler(self.scheduler, self.workers)
+        if self.workers is not None:
+            object.__setattr__(self, "workers", check_workers(self.workers))
+        object.__setattr__(self, "chunk_size", check_count("chunk_size", self.chunk_size, 1))
+        if self.progress is not None and not callable(self.progress):
+            raise TypeError(f"progress={shown(self.progress)} ({type(self.progress).__name__}) is not allowed; "
+                            "allowed: None or a function called with (runs done, runs in all)")
+
+    def open(self):
+        """The executor of :attr:`scheduler` (:func:`open_executor`), a context manager."""
+        return open_executor(self.scheduler, self.workers)

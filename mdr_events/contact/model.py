@@ -23,7 +23,7 @@ from mdr_events.contact.indenters import FlatPunch, Indenter, Paraboloid, PowerL
 from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.validation import shown
 
-__all__ = ["Contact", "SHORT_NAMES", "PARTS"]
+__all__ = ["Contact", "SHORT_NAMES", "PARTS", "UNITS"]
 
 #: The parts of a contact and the types each may be.
 PARTS: dict[str, tuple[type, ...]] = {
@@ -37,6 +37,12 @@ SHORT_NAMES: dict[str, str] = {
     "E": "elastomer.E", "nu": "elastomer.nu", "R": "indenter.R", "c": "indenter.c", "n": "indenter.n",
     "radius": "indenter.radius", "dgamma0": "adhesion.dgamma0", "dgamma1": "adhesion.dgamma1",
     "tau0": "friction.tau0", "mu": "friction.mu",
+}
+#: The unit of each value inside a contact, by dotted name (``c`` of ``f = c rⁿ`` is in m^(1-n)).
+UNITS: dict[str, str] = {
+    "elastomer.E": "Pa", "elastomer.nu": "1", "indenter.R": "m", "indenter.c": "m^(1-n)", "indenter.n": "1",
+    "indenter.radius": "m", "adhesion.dgamma0": "J m-2", "adhesion.dgamma1": "J m-2", "friction.tau0": "Pa",
+    "friction.mu": "1",
 }
 
 
@@ -167,6 +173,17 @@ class Contact:
             parts.setdefault(part, {})[field] = value
         return dataclasses.replace(self, **{part: dataclasses.replace(getattr(self, part), **fields)
                                             for part, fields in parts.items()})
+
+    def holds(self, name: str) -> bool:
+        """Whether ``name`` (dotted or short) is a value of this contact."""
+        return isinstance(name, str) and SHORT_NAMES.get(name, name) in self.names()
+
+    def unit(self, name: str) -> str:
+        """The unit of a dotted or short name of this contact (:data:`UNITS`)."""
+        part, field = self._path(name)
+        if not self.holds(name):  # (a law's mu or tau0 that it does not use)
+            raise ValueError(f"{name!r} is not a value of this contact; allowed: {', '.join(self.names())}")
+        return UNITS[f"{part}.{field}"]
 
     def _path(self, name: str) -> tuple[str, str]:
         """``(part, field)`` of a dotted or short name that this contact holds; else an error listing those it does."""

@@ -9,8 +9,8 @@ name               class                                   options
 
 As ``solve_ivp`` maps a method's name to a class and forwards its options, :func:`as_method` makes the class of a
 name with the options given beside it; each class checks its own options when made, so that no option is checked
-against another method's. A new method is one class here with ``OPTIONS``, ``simulate`` and its entry in
-:data:`METHODS`.
+against another method's. A new method is one class here with its options as fields, ``check_model``,
+``simulate`` and its entry in :data:`METHODS`.
 """
 
 from __future__ import annotations
@@ -75,6 +75,9 @@ class Discrete:
                                                       lambda value: value > 0))
         if self.n_steps is not None:
             object.__setattr__(self, "n_steps", check_count("n_steps", self.n_steps, 10))
+
+    def check_model(self, params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> None:
+        """Nothing to refuse: the springs take every indenter, friction law and adhesion."""
 
     def simulate(self, params: Parameters, cases: Cases, scenario: str, limits: Limits,
                  profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> xr.Dataset:
@@ -172,11 +175,16 @@ class Continuum:
 
     __hash__ = None
 
+    def check_model(self, params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> None:
+        """Refuse what the continuum does not take (:func:`~mdr_events.models.continuum.caps.check_supported`:
+        Coulomb's part with adhesion)."""
+        check_supported(friction, params, profile)
+
     def simulate(self, params: Parameters, cases: Cases, scenario: str, limits: Limits,
                  profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> xr.Dataset:
         """Solve the cases exactly; the dataset of :mod:`~mdr_events.models.simulation_schema` with the event log,
         the extrema and the attributes ``rtol``, ``atol`` and ``radius_rtol``."""
-        check_supported(friction, params, profile)
+        self.check_model(params, profile, friction)
         tolerances = self.tolerances
         raw = run_continuum(params, cases.paths, self.t, samples=self.samples, tolerances=tolerances, limits=limits,
                             profile=profile, friction=friction)

@@ -160,11 +160,11 @@ def test_the_discrete_method_converges_to_the_continuum_quantities(paper):
 
 
 @pytest.mark.parametrize("grid, message", [
-    ({"mu": [1.0]}, "grid: 'mu' is not allowed"),
+    ({"mu": [1.0]}, "grid: 'mu' is not a value of this contact (friction=FrictionLaw('tau0'"),
     ({}, "grid={} is not allowed"),
     ({"tau0": []}, "allowed: a non-empty list of finite numbers"),
     ({"tau0": [1e3, float("nan")]}, "allowed: a non-empty list of finite numbers"),
-    ({"nu": [0.3, 0.7]}, "Parameters.nu=0.7 is not allowed"),
+    ({"nu": [0.3, 0.7]}, "Elastomer.nu=0.7 is not allowed"),
     ({"alpha": [20.0, 95.0]}, "grid['alpha'] holds 95.0"),
     ({"tau0": [1e3, 1e3]}, "repeats a value"),
     ({"dx": [1e-6]}, "'dx' is not allowed with method='continuum'"),
@@ -336,7 +336,7 @@ def test_a_power_law_sweep_reports_its_own_pull_off_force_and_refuses_R(paper):
     assert depth == pytest.approx(fold["depth"], rel=1e-9)
     assert float(result["pull_off_force"].values[0]) == pytest.approx(fold["normal_force"], rel=1e-9)
     assert float(result["normal_force_min"].values[0]) <= float(result["pull_off_force"].values[0])
-    with pytest.raises(ValueError, match=r"grid sweeps R with profile=PowerLaw\(c=2000.0, n=3.0\)"):
+    with pytest.raises(ValueError, match=r"grid: .R. is not a value of this contact \(indenter=PowerLaw\(c=2000.0, n=3.0\)\)"):
         me.sweep({"R": [0.01, 0.03]}, "A", 20.0, base=paper, scheduler="serial", profile=PowerLaw(2e3, 3.0))
 
 

@@ -88,7 +88,7 @@ def test_a_bad_grid_value_is_named_before_anything_runs(capsys, tmp_path):
     study.write_text('[sweep]\ngrid = { nu = [0.3, 0.7] }\nalpha = 20\nscheduler = "serial"\n'
                      '[output]\ndirectory = "out"\n')
     assert main(["sweep", str(study)]) == 2
-    assert_one_error_line(capsys.readouterr().err, "[sweep] grid: Parameters.nu=0.7 is not allowed")
+    assert_one_error_line(capsys.readouterr().err, "[sweep] grid: Elastomer.nu=0.7 is not allowed")
     assert not (tmp_path / "out" / "study_sweep.zarr").exists()
 
 

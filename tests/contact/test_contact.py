@@ -120,3 +120,18 @@ def test_a_changed_value_is_validated_again():
 def test_no_adhesion_is_hertz_s_contact():
     assert not NO_ADHESION.is_adhesive and me.Adhesion(0.0, 0.1).is_adhesive
     assert me.Contact(me.Elastomer(1e6, 0.5), me.Paraboloid(0.01)).adhesion is NO_ADHESION
+
+
+def test_every_value_of_every_part_has_a_unit():
+    """Contact.unit: each dotted name of each kind of part (a sweep labels its coordinates with it)."""
+    import dataclasses
+
+    from mdr_events.contact.model import PARTS, UNITS
+    numbers = {f"{part}.{field.name}" for part, kinds in PARTS.items() for kind in kinds
+               for field in dataclasses.fields(kind) if field.type in ("float", "float | None")}
+    assert numbers == set(UNITS)
+    contact = me.Contact.paper()
+    assert contact.unit("E") == contact.unit("elastomer.E") == "Pa" and contact.unit("dgamma1") == "J m-2"
+    assert contact.holds("tau0") and contact.holds("friction.tau0") and not contact.holds("mu")
+    with pytest.raises(ValueError, match="'mu' is not a value of this contact"):
+        contact.unit("mu")

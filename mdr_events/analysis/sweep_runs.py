@@ -1,0 +1,258 @@
+"""The runs of a sweep: what every run shares (:class:`SweepSpec`), a run's scalar quantities and history per method,
+and a chunk of runs as one task (:func:`run_chunk`, a plain function of picklable arguments).
+
+A run is the sweep's contact, motion and method with the swept names' values put in (:meth:`SweepSpec.job`). Its
+quantities (:data:`QUANTITIES`) are exact for the continuum (the solution's extrema and event log,
+:mod:`mdr_events.models.continuum`); for the discrete method they are read off its samples by the rules of
+:mod:`mdr_events.analysis.validate` (first sample sliding, first sample out of contact, ...). What a method gives is
+looked up by its name (:data:`METHOD_QUANTITIES`): a new method is one function there.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+from typing import Callable, NamedTuple, Sequence
+
+import numpy as np
+
+from mdr_events.analysis.fit import curves_of
+from mdr_events.analysis.validate import candidate_events
+from mdr_events.contact import Contact
+from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.models import indenters
+from mdr_events.models.continuum import EventKind, extremum, solve_path, tangential_work
+from mdr_events.models.continuum.solution import scan_spans
+from mdr_events.models.methods import Continuum, Discrete, Method
+from mdr_events.models.motion import Motion, Paths
+from mdr_events.models.paths import Path
+from mdr_events.models.simulate import ModelJob, model_job, simulate
+
+__all__ = ["SweepSpec", "run_chunk", "ChunkResult", "QUANTITIES", "HISTORY_QUANTITIES", "CLOSED_FORM_QUANTITIES",
+           "MOTION_NAMES", "METHOD_NAMES", "METHOD_QUANTITIES", "DISCRETE_STEP_PER_SPACING", "ERROR_CHARACTERS"]
+
+#: Scalar quantities of each run: name -> (unit, long name).
+QUANTITIES: dict[str, tuple[str, str]] = {
+    "normal_force_min": ("N", "smallest normal force (largest adhesive pull)"),
+    "tangential_force_max": ("N", "largest |F_x|"),
+    "contact_area_max": ("m2", "largest contact area"),
+    "slip_onset_in_time": ("s", "first slip onset before the path's deepest point (s from the path's start)"),
+    "slip_onset_in_depth": ("m", "depth at the first slip onset before the path's deepest point"),
+    "slip_onset_out_time": ("s", "first slip onset after the path's deepest point (s from the path's start)"),
+    "slip_onset_out_depth": ("m", "depth at the first slip onset after the path's deepest point"),
+    "full_slip_time": ("s", "first full slip (s from the path's start)"),
+    "pull_off_time": ("s", "pull-off (s from the path's start)"),
+    "pull_off_depth": ("m", "depth at the pull-off"),
+    "pull_off_force": ("N", "normal force at the pull-off"),
+    "tangential_work": ("J", "work of the tangential force over the run, ∫ F_x dx: all of it dissipated where the "
+                             "run ends out of contact (the springs detach and forget their shift)"),
+    "event_count": ("1", "events logged (continuum) / found (discrete)"),
+    "critical_angle_A": ("degree", "critical angle of scenario A (eq. 18; closed form)"),
+    "critical_angle_B": ("degree", "angle of scenario B above which the contact comes apart before sliding "
+                                   "(eq. 21; closed form)"),
+}
+#: Quantities of a run's history (``history_samples``), at times spread evenly over its path.
+HISTORY_QUANTITIES: dict[str, tuple[str, str]] = {
+    "normal_force": ("N", "normal force"), "tangential_force": ("N", "tangential force"),
+    "contact_area": ("m2", "contact area")}
+#: Quantities of the closed forms alone: a sweep asking only for these runs no model.
+CLOSED_FORM_QUANTITIES = ("critical_angle_A", "critical_angle_B")
+#: Names a grid may sweep that are the motion's (with their units): the angle of a scenario, its depth and speed.
+MOTION_NAMES = {"alpha": "degree", "d_max": "m", "v": "m s-1"}
+#: Names a grid may sweep that are the method's: the discrete spacing.
+METHOD_NAMES = {"dx": "m"}
+#: Characters of a failed run's error kept in the result.
+ERROR_CHARACTERS = 200
+#: The discrete model's time step per spring spacing of travel when its method gives neither ``dt`` nor ``n_steps``:
+#: the time step is refined with the spacing (both are first order; a fixed step would stop the convergence).
+DISCRETE_STEP_PER_SPACING = 0.5
+
+
+@dataclass(frozen=True)
+class SweepSpec:
+    """What every run of a sweep shares (picklable: sent to the workers once per chunk).
+
+    Attributes
+    ----------
+    contact, motion, method
+        The run before the grid's values are put in: a :class:`~mdr_events.Contact`, a
+        :class:`~mdr_events.Scenario` of one angle (any, if the grid sweeps ``alpha``) or
+        :class:`~mdr_events.Paths` of one path, and a method value.
+    names : tuple of str
+        The swept names: the contact's (dotted or short), :data:`MOTION_NAMES` and :data:`METHOD_NAMES`.
+    quantities : tuple of str
+        Which of :data:`QUANTITIES` each run keeps.
+    history_samples : int, optional
+        Each run's F_N, F_x and A at this many times spread evenly over its path.
+    limits : Limits
+        What each run may use.
+    """
+
+    contact: Contact
+    motion: Motion
+    method: Method
+    names: tuple[str, ...]
+    quantities: tuple[str, ...] = tuple(QUANTITIES)
+    history_samples: int | None = None
+    limits: Limits = DEFAULT_LIMITS
+
+    def job(self, values: Sequence[float]) -> tuple[ModelJob, Method]:
+        """The model and method of the run at ``values`` (one per swept name), each value validated where it goes."""
+        settings = dict(zip(self.names, (float(value) for value in values)))
+        changes = {name: value for name, value in settings.items()
+                   if name not in MOTION_NAMES and name not in METHOD_NAMES}
+        contact = self.contact.replace(**changes) if changes else self.contact
+        method = dataclasses.replace(self.method, dx=settings["dx"]) if "dx" in settings else self.method
+        return model_job(contact, _motion_at(self.motion, settings), None, {}), method
+
+    def run(self, values: Sequence[float]) -> tuple[dict[str, float], np.ndarray | None]:
+        """The :attr:`quantities` of the run at ``values``, and its history (rows :data:`HISTORY_QUANTITIES`,
+        ``history_samples`` columns over the path's duration) if asked for; the model runs only if one of them
+        needs it (not for :data:`CLOSED_FORM_QUANTITIES` alone)."""
+        model, method = self.job(values)
+        out, history = {}, None
+        if set(self.quantities) - set(CLOSED_FORM_QUANTITIES) or self.history_samples:
+            path = model.motion.cases(model.params, model.profile, model.friction).paths[0]
+            times = None if not self.history_samples else np.linspace(0.0, path.duration, self.history_samples)
+            out, history = METHOD_QUANTITIES[method.name](model, path, method, self.limits, times)
+        for scenario in ("A", "B"):
+            if f"critical_angle_{scenario}" in self.quantities:
+                out[f"critical_angle_{scenario}"] = indenters.critical_angle(model.params, scenario, model.profile,
+                                                                             model.friction)
+        return {name: out[name] for name in self.quantities}, history
+
+
+def _motion_at(motion: Motion, settings: dict[str, float]) -> Motion:
+    """The motion with the swept angle, depth and speed of a run put in."""
+    changes = {name: settings[name] for name in ("d_max", "v") if name in settings}
+    if isinstance(motion, Paths):
+        return Paths.named_by(motion.paths, changes.get("d_max", motion.d_max), changes.get("v", motion.v)) \
+            if changes else motion
+    if "alpha" in settings:
+        changes["alpha"] = (settings["alpha"],)
+    return dataclasses.replace(motion, **changes) if changes else motion
+
+
+def _deepest_time(path: Path) -> float:
+    return float(path.corner_times[int(np.argmax(path.waypoints[:, 1]))])
+
+
+def _first_events(solution, path: Path) -> dict[str, object]:
+    """The first slip onset on the way in and on the way out, the first full slip and the pull-off."""
+    deepest = _deepest_time(path)
+    first: dict[str, object] = {}
+    for event in solution.events:
+        kind = event.kind
+        if kind is EventKind.SLIP_ONSET:
+            first.setdefault("slip_onset_in" if event.time <= deepest else "slip_onset_out", event)
+        elif kind is EventKind.FULL_SLIP:
+            first.setdefault("full_slip", event)
+        elif kind in (EventKind.PULL_OFF, EventKind.CONTACT_ENDS):
+            first.setdefault("pull_off", event)
+    return first
+
+
+def continuum_quantities(model: ModelJob, path: Path, method: Continuum, limits: Limits,
+                         times: np.ndarray | None) -> tuple[dict[str, float], np.ndarray | None]:
+    """A run's quantities from the exact solution (its extrema and event log), and its history at ``times``."""
+    solution = solve_path(model.params, path, method.tolerances, limits, model.profile, model.friction)
+    scan = scan_spans(solution)  # one scan serves every extremum
+    out = {"normal_force_min": extremum(solution, "normal_force", largest=False, scan=scan)[1],
+           "tangential_force_max": max(abs(extremum(solution, "tangential_force", largest=True, scan=scan)[1]),
+                                       abs(extremum(solution, "tangential_force", largest=False, scan=scan)[1])),
+           "contact_area_max": extremum(solution, "contact_area", largest=True, scan=scan)[1],
+           "tangential_work": tangential_work(solution), "event_count": float(len(solution.events))}
+    first = _first_events(solution, path)
+    for key in ("slip_onset_in", "slip_onset_out", "full_slip", "pull_off"):
+        event = first.get(key)
+        out[f"{key}_time"] = float(event.time) if event else math.nan
+        if key != "full_slip":
+            out[f"{key}_depth"] = float(event.depth) if event else math.nan
+    pull = first.get("pull_off")
+    out["pull_off_force"] = float(solution.model.normal_force(pull.depth, pull.radius)) if pull else math.nan
+    if times is None:
+        return out, None
+    curves = curves_of(solution, path, times, tuple(HISTORY_QUANTITIES)).values
+    return out, np.array([curves[name] for name in HISTORY_QUANTITIES])
+
+
+def _discrete_run(model: ModelJob, path: Path, method: Discrete, limits: Limits):
+    """The discrete model along ``path`` (its time step refined with the spacing unless the method gives one)."""
+    if method.dt is None and method.n_steps is None:
+        method = dataclasses.replace(method, dt=DISCRETE_STEP_PER_SPACING * method.dx / path.speed)
+    paths = Paths.named_by([path], model.motion.d_max, model.motion.v)
+    return simulate(model.contact, paths, method, limits=limits).isel(case=0)
+
+
+def discrete_quantities(model: ModelJob, path: Path, method: Discrete, limits: Limits,
+                        history_times: np.ndarray | None) -> tuple[dict[str, float], np.ndarray | None]:
+    """A run's quantities read off the discrete model's samples, and its history at ``history_times``."""
+    run = _discrete_run(model, path, method, limits)
+    times = run["time"].values
+    quantities = {name: run[name].values for name in ("normal_force", "tangential_force", "contact_area",
+                                                      "sliding_fraction")}
+    contact = np.nan_to_num(quantities["contact_area"]) > 0
+    found = candidate_events(times, quantities, contact, model.params)
+    start = path.first_contact_time()
+    depth = run["indentation_depth"].values
+    deepest = _deepest_time(path)
+    slides = np.nan_to_num(quantities["sliding_fraction"]) > 0
+    sliding = np.flatnonzero(slides & ~np.concatenate([[False], slides[:-1]]))  # onsets: sliding, not before
+    path_times = times + start
+    onset_in = sliding[path_times[sliding] <= deepest]
+    onset_out = sliding[path_times[sliding] > deepest]
+    lost = found["last_in_contact"] + 1 if found["last_in_contact"] >= 0 else -1
+    x = run["tangential_displacement"].values
+    finite = np.isfinite(quantities["tangential_force"]) & np.isfinite(x)
+    history = None if history_times is None else np.array(
+        [np.interp(history_times, path_times, np.nan_to_num(run[name].values), left=0.0, right=math.nan)
+         for name in HISTORY_QUANTITIES])
+    return {
+        "normal_force_min": float(np.nanmin(quantities["normal_force"])),
+        "tangential_force_max": float(np.nanmax(np.abs(quantities["tangential_force"]))),
+        "contact_area_max": float(np.nanmax(quantities["contact_area"])),
+        "slip_onset_in_time": float(path_times[onset_in[0]]) if onset_in.size else math.nan,
+        "slip_onset_in_depth": float(depth[onset_in[0]]) if onset_in.size else math.nan,
+        "slip_onset_out_time": float(path_times[onset_out[0]]) if onset_out.size else math.nan,
+        "slip_onset_out_depth": float(depth[onset_out[0]]) if onset_out.size else math.nan,
+        "full_slip_time": found["full_slip"] + start if math.isfinite(found["full_slip"]) else math.nan,
+        "pull_off_time": found["pull_off"] + start if math.isfinite(found["pull_off"]) else math.nan,
+        "pull_off_depth": float(depth[lost]) if lost >= 0 else math.nan,
+        "pull_off_force": found["pull_off_force"],
+        "tangential_work": float(np.trapezoid(quantities["tangential_force"][finite], x[finite])),
+        "event_count": float(sum(math.isfinite(found[k]) for k in ("slip_onset", "full_slip", "detachment_starts",
+                                                                    "pull_off"))),
+    }, history
+
+
+#: A run's quantities and history by the method's name.
+METHOD_QUANTITIES: dict[str, Callable[..., tuple[dict[str, float], np.ndarray | None]]] = {
+    Continuum.name: continuum_quantities, Discrete.name: discrete_quantities}
+
+
+class ChunkResult(NamedTuple):
+    """The quantities of a chunk's runs (runs × :data:`QUANTITIES`, ``nan`` where a run failed) and each run's
+    error (``""``: it ran)."""
+
+    values: np.ndarray
+    errors: list[str]
+    histories: np.ndarray | None = None  #: runs × :data:`HISTORY_QUANTITIES` × samples (``history_samples``)
+
+
+def run_chunk(spec: SweepSpec, rows: np.ndarray) -> ChunkResult:
+    """Run every row (the swept names' values) of a chunk; a run that raises is recorded, not raised."""
+    values = np.full((len(rows), len(spec.quantities)), np.nan)
+    histories = None if not spec.history_samples else \
+        np.full((len(rows), len(HISTORY_QUANTITIES), spec.history_samples), np.nan)
+    errors = []
+    for i, row in enumerate(rows):
+        try:
+            out, history = spec.run(row)
+            values[i] = list(out.values())
+            if histories is not None:
+                histories[i] = history
+            errors.append("")
+        except Exception as error:  # noqa: BLE001 - a failed run is a result of the sweep, recorded with its error
+            errors.append(f"{type(error).__name__}: {error}"[:ERROR_CHARACTERS])
+    return ChunkResult(values, errors, histories)

@@ -1,0 +1,103 @@
+"""A sweep's Zarr store: its runs along a flat ``run`` dimension, one chunk per task, written as chunks complete and
+read back on resuming (:class:`Store`); and the variables of the runs in any layout (:func:`run_variables`)."""
+
+from __future__ import annotations
+
+import os
+from typing import Sequence
+
+import numpy as np
+import xarray as xr
+
+from mdr_events.analysis.sweep_runs import ERROR_CHARACTERS, HISTORY_QUANTITIES, QUANTITIES, ChunkResult
+from mdr_events.io.files import check_output_file, prepare_output_directory
+
+__all__ = ["Store", "run_variables"]
+
+
+def run_variables(quantities: Sequence[str], values: np.ndarray, errors: Sequence[str],
+                  histories: np.ndarray | None, dims: tuple[str, ...], shape: tuple[int, ...],
+                  error_dtype=str) -> dict:
+    """The variables of the runs (quantities, histories, ``failed``, ``error``) laid out in ``dims`` of ``shape``:
+    the store's flat ``run``, or the grid's dimensions."""
+    data = {name: (dims, values[:, i].reshape(shape), {"units": QUANTITIES[name][0], "long_name": QUANTITIES[name][1]})
+            for i, name in enumerate(quantities)}
+    if histories is not None:
+        data.update({f"history_{name}": ((*dims, "sample"), histories[:, i, :].reshape(*shape, histories.shape[-1]),
+                                         {"units": unit, "long_name": f"{text} at times spread evenly over the "
+                                                                      "run's path"})
+                     for i, (name, (unit, text)) in enumerate(HISTORY_QUANTITIES.items())})
+    data["failed"] = (dims, np.array([bool(e) for e in errors], dtype=np.int8).reshape(shape),
+                      {"units": "1", "long_name": "1: the run raised (see error)"})
+    data["error"] = (dims, np.array(errors, dtype=error_dtype).reshape(shape),
+                     {"units": "1", "long_name": "the error of a failed run"})
+    return data
+
+
+def _flat_dataset(quantities: Sequence[str], values: np.ndarray, errors: Sequence[str],
+                  done: np.ndarray, histories: np.ndarray | None = None) -> xr.Dataset:
+    """The store's layout: the runs along ``run`` (errors of a fixed width), and whether each is ``done``."""
+    data = run_variables(quantities, values, errors, histories, ("run",), (len(errors),),
+                         error_dtype=f"<U{ERROR_CHARACTERS}")
+    data["done"] = (("run",), done.astype(np.int8), {"units": "1", "long_name": "1: the run's chunk is written"})
+    return xr.Dataset(data)
+
+
+def _is_sweep_store(path: str) -> bool:
+    """Whether ``path`` holds a Zarr store written by a sweep (its group has a ``sweep_signature``)."""
+    try:
+        return "sweep_signature" in xr.open_zarr(path, zarr_format=2).attrs
+    except Exception:  # noqa: BLE001 - anything that is not such a store, whatever the reader says of it
+        return False
+
+
+class Store:
+    """A Zarr store holding the sweep's runs along a flat ``run`` dimension, one chunk per task.
+
+    ``signature`` says which sweep a store holds: resuming another sweep's store is refused.
+    """
+
+    def __init__(self, path: str | os.PathLike, signature: str, quantities: Sequence[str], runs: int, chunk: int,
+                 resume: bool, history_samples: int | None = None):
+        self.path, self.chunk, self.quantities = os.fspath(path), chunk, tuple(quantities)
+        is_store = _is_sweep_store(self.path)
+        if os.path.exists(self.path) and not is_store and (not os.path.isdir(self.path) or os.listdir(self.path)):
+            raise ValueError(f"store={self.path!r} exists and is not a sweep's store; allowed: a new path, an empty "
+                             "directory or a sweep's store (nothing else is overwritten)")
+        if not os.path.exists(self.path):
+            prepare_output_directory(self.path, "store")
+            # (its parent takes it as an output directory takes a file: not the root, no temporary marker)
+            parent = os.path.dirname(os.path.abspath(self.path))
+            check_output_file("store", os.path.join(parent, os.path.basename(os.path.normpath(self.path))))
+        if resume and is_store:
+            existing = xr.open_zarr(self.path, zarr_format=2)
+            if existing.attrs.get("sweep_signature") != signature:
+                raise ValueError(f"store={self.path!r} holds another sweep (other parameters, grid or options); "
+                                 "allowed: this sweep's store to resume, or resume=False to start it afresh")
+            self.existing = existing.load()
+            return
+        self._lay_out(signature, runs, chunk, history_samples)
+        self.existing = None
+
+    def _lay_out(self, signature: str, runs: int, chunk: int, history_samples: int | None) -> None:
+        """Write the empty store (every run not done) before the first run."""
+        histories = None if not history_samples else np.full((runs, len(HISTORY_QUANTITIES), history_samples), np.nan)
+        template = _flat_dataset(self.quantities, np.full((runs, len(self.quantities)), np.nan), [""] * runs,
+                                 np.zeros(runs, bool), histories)
+        template.attrs["sweep_signature"] = signature
+        encoding = {name: {"chunks": (chunk,) + template[name].shape[1:]} for name in template.data_vars}
+        try:
+            template.to_zarr(self.path, mode="w", zarr_format=2, encoding=encoding, compute=True)
+        except OSError as error:  # what the checks before cannot see (/proc, a full disk, a read-only mount)
+            raise ValueError(f"store={self.path!r} cannot be written ({error.strerror or error}); allowed: "
+                             "a directory this user can create and write into") from None
+
+    def done(self) -> np.ndarray | None:
+        """Which runs the store holds already (``None``: a new store)."""
+        return None if self.existing is None else self.existing["done"].values.astype(bool)
+
+    def write(self, start: int, result: ChunkResult) -> None:
+        """Write a chunk's runs into their region, marked done."""
+        part = _flat_dataset(self.quantities, result.values, result.errors, np.ones(len(result.errors), bool),
+                             result.histories)
+        part.to_zarr(self.path, region={"run": slice(start, start + len(result.errors))}, zarr_format=2)
