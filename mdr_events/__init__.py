@@ -47,6 +47,7 @@ from mdr_events.theory.phase import phase_diagram
 from mdr_events.models.simulate import simulate
 from mdr_events.analysis.crosscheck import cross_check
 from mdr_events.analysis.validate import validate
+from mdr_events.analysis.reports import ConvergenceReport, ConvergenceVerdict, ValidationReport, Verdict
 from mdr_events.analysis.convergence_study import convergence_study
 from mdr_events.analysis.fit import FitResult, fit
 from mdr_events.analysis.sweep import Engine, SweepOutput, sweep
@@ -75,6 +76,10 @@ __all__ = [
     "Continuum",
     "Discrete",
     "Engine",
+    "ConvergenceReport",
+    "ConvergenceVerdict",
+    "ValidationReport",
+    "Verdict",
     "SweepOutput",
     "Tolerances",
     "analytic",

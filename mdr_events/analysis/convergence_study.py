@@ -36,6 +36,7 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.analysis.reports import CONVERGENCE_STUDY_CONTENT, ConvergenceVerdict
 from mdr_events.analysis.validate import COMPARED, DEFAULT_TOLERANCE, VALIDATED_EVENTS, _validation_job, validate
 from mdr_events.contact import Contact
 from mdr_events.io.datasets import register_schema, stamp
@@ -48,7 +49,6 @@ __all__ = ["convergence_study", "fit_observed_order", "OrderFit", "CONVERGENCE_S
            "CONVERGES_SHARE", "SPREAD_FACTOR", "MIN_SPACINGS"]
 
 #: The ``content`` attribute of a convergence study.
-CONVERGENCE_STUDY_CONTENT = "observed order of convergence of a simulator to the exact continuum"
 #: The norms of :func:`mdr_events.validate` fitted, per quantity.
 NORMS = ("max_error", "rms_error", "l1_error")
 #: A row converges when ``order − SPREAD_FACTOR · spread >= CONVERGES_SHARE · expected_order``.
@@ -242,16 +242,16 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
 
     with_fit = [(data[f"{key}_converges"][1], np.isfinite(data[f"{key}_order"][1])) for key in NORMS]
     if not any(np.any(finite) for _, finite in with_fit):
-        verdict = "undetermined"
+        verdict = ConvergenceVerdict.UNDETERMINED
     elif all(np.all(flags[finite] == 1) for flags, finite in with_fit):
-        verdict = "converges"
+        verdict = ConvergenceVerdict.CONVERGES
     else:
-        verdict = "does not converge"
+        verdict = ConvergenceVerdict.DOES_NOT_CONVERGE
     coords = {"dx": ("dx", dx, {"units": "m", "long_name": "spacing of the springs"}),
               "quantity": ("quantity", np.array(quantities), {"units": "1", "long_name": "quantity compared"}),
               "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
     first = reports[0].attrs
-    attrs = dict(content=CONVERGENCE_STUDY_CONTENT, verdict=verdict, expected_order=expected_order,
+    attrs = dict(content=CONVERGENCE_STUDY_CONTENT, verdict=verdict.value, expected_order=expected_order,
                  converges_rule=CONVERGES_RULE, time_origin=str(job.time_origin),
                  candidate_sources="; ".join(str(report.attrs["candidate_source"]) for report in reports),
                  path_waypoints=first["path_waypoints"], path_speed=first["path_speed"])

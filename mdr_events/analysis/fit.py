@@ -57,7 +57,7 @@ from mdr_events.models.motion import Scenario
 from mdr_events.models.simulate import ModelJob
 from mdr_events.analysis.fit_accuracy import register_fit_accuracy
 from mdr_events.io.agreement import Integrated, RoundOff, register_accuracy
-from mdr_events.io.datasets import figure_of, register_schema, stamp
+from mdr_events.io.datasets import figure_of, read_text_list, register_schema, stamp, text_list_attrs
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
 from mdr_events.contact.friction import TAU0, FrictionLaw, friction_attrs
@@ -684,15 +684,15 @@ class FitResult:
         The start with the fitted values in place.
     time_offset, depth_offset : float
         The fitted offsets (0 where not free).
-    optimizer : OptimizerRun
-        The optimizer's log: solves, evaluations, status and message.
+    optimizer : OptimizerRun or None
+        The optimizer's log: solves, evaluations, status and message (``None`` for a result read from a file).
     """
 
     dataset: xr.Dataset
     parameters: Parameters
     time_offset: float
     depth_offset: float
-    optimizer: OptimizerRun
+    optimizer: OptimizerRun | None
 
     @property
     def estimates(self) -> dict[str, ParameterEstimate]:
@@ -726,8 +726,28 @@ class FitResult:
     def warnings(self) -> list[str]:
         """What says the fit does not describe the data (residuals far above the noise, a unit or a time origin
         that looks wrong); empty for a good fit. The intervals assume the model describes the data."""
-        text = str(self.dataset.attrs["warnings"])
-        return [] if text == "none" else text.split("; ")
+        return read_text_list(self.dataset.attrs, "warnings")
+
+    @property
+    def notes(self) -> list[str]:
+        """What the identifiability analysis says beside the verdicts (strong correlations, a bound reached)."""
+        return read_text_list(self.dataset.attrs, "notes")
+
+    @classmethod
+    def from_dataset(cls, dataset: xr.Dataset) -> "FitResult":
+        """The result of a fit's dataset (e.g. a file read by :func:`~mdr_events.open_result`; those written before
+        the lists of notes and warnings too): its parameters from the attributes, the fitted offsets from the
+        estimates (0 where not free); :attr:`optimizer` is ``None`` (its log is in no dataset)."""
+        if not isinstance(dataset, xr.Dataset) or dataset.attrs.get("content") != FIT_CONTENT:
+            found = dataset.attrs.get("content") if isinstance(dataset, xr.Dataset) else type(dataset).__name__
+            raise ValueError(f"dataset of {found!r} is not allowed; allowed: a fit ({FIT_CONTENT!r})")
+        names = [str(name) for name in dataset["parameter"].values]
+        offset = {name: float(dataset["estimate"].sel(parameter=name)) if name in names else 0.0
+                  for name in ("time_offset", "depth_offset")}
+        return cls(dataset, Parameters.from_attrs(dataset.attrs), offset["time_offset"], offset["depth_offset"], None)
+
+    def to_dataset(self) -> xr.Dataset:
+        return self.dataset
 
     def __repr__(self) -> str:
         lines = [f"FitResult: {self.verdict}"]
@@ -901,8 +921,8 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
                              fitted_path.duration, "time_offset" in free_set.names)
     if warnings:
         verdict += f"; but the fit does not describe the data ({len(warnings)} warning{'s' * (len(warnings) > 1)})"
-    attrs = dict(content=FIT_CONTENT, verdict=verdict, identifiable=int(identifiable), notes="; ".join(notes) or "none",
-                 warnings="; ".join(warnings) or "none",
+    attrs = dict(content=FIT_CONTENT, verdict=verdict, identifiable=int(identifiable),
+                 **text_list_attrs("notes", notes), **text_list_attrs("warnings", warnings),
                  free=", ".join(free_set.names), measured_source=read.source, time_origin=str(time_origin),
                  path_waypoints=nominal.describe(), path_speed=nominal.speed, optimizer_converged=int(solution.status > 0),
                  optimizer_tolerance=FIT_TOLERANCE, jacobian_step=FD_STEP, continuum_rtol=tolerances.rtol,

@@ -42,6 +42,7 @@ from typing import Any, Callable, Mapping, NamedTuple
 import numpy as np
 import xarray as xr
 
+from mdr_events.analysis.reports import LEFT_OUT_BOUND, VALIDATION_CONTENT, Verdict, validation_failures
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.io.candidates import Candidate, check_run_is_finite, read_candidate
 from mdr_events.theory.scales import check_representable
@@ -61,7 +62,6 @@ from mdr_events.contact.friction import friction_attrs
 __all__ = ["validate", "DEFAULT_TOLERANCE", "contact_differs_share", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
 
 #: The ``content`` attribute of a validation report.
-VALIDATION_CONTENT = "validation of a simulator against the exact continuum"
 #: ``left_out`` codes -> meaning.
 LEFT_OUT_CODES = {0: "compared", 1: "outside the runs", 2: "contact differs", 3: "straddles an event"}
 #: Events compared, in the order of the report's ``event`` dimension.
@@ -81,9 +81,6 @@ UNITS = {"normal_force": "N", "tangential_force": "N", "contact_area": "m2", "co
 TIME_AXIS_SHARE = 1e-3
 #: A gap between a candidate's samples this many times their median spacing leaves the exact contact in it unsampled.
 GAP_FACTOR = 10.0
-#: A sample left out (its contact differs, or it straddles an event) still lies within this many ranges of the exact
-#: value: what an event's timing can change (a jump to 0 at the pull-off); a spike of 100 ranges there passed.
-LEFT_OUT_BOUND = 1.0
 #: The fewest samples of a candidate that must lie within the exact contact: fewer cannot show its curves (two
 #: samples, or a time column in µs read as s, left one or two samples to compare, and a pass).
 MIN_SAMPLES_IN_CONTACT = 10
@@ -505,13 +502,13 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
     coords = {"time": ("time", times, {"units": "s", "long_name": "time from first contact"}),
               "quantity": ("quantity", np.array(present), {"units": "1", "long_name": "quantity compared"}),
               "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
-    verdict = "pass" if (within.size and np.all(within) and not differs > tolerance
-                         and not np.any(np.array(left_out_errors) > LEFT_OUT_BOUND)) else "fail"
+    verdict = Verdict.FAIL if validation_failures(present, norms["max_error"], differs, left_out_errors, tolerance) \
+        else Verdict.PASS
     not_compared = [name for name in COMPARED if name not in quantities]
     attrs = dict(content=VALIDATION_CONTENT, candidate_source=read.source, tolerance=float(tolerance),
                  unused_columns=", ".join(read.unused) or "none",
                  quantities_not_compared=", ".join(not_compared) or "none",
-                 time_origin=str(time_origin), verdict=verdict, path_waypoints=the_path.describe(),
+                 time_origin=str(time_origin), verdict=verdict.value, path_waypoints=the_path.describe(),
                  path_speed=the_path.speed)
     attrs.update(profile_attrs(profile))
     attrs.update(friction_attrs(friction))

@@ -18,6 +18,7 @@ import os
 import numpy as np
 import xarray as xr
 
+from mdr_events.io.datasets import read_text_list
 from mdr_events.analysis.fit import OptimizerRun
 from mdr_events.app.validation_files import VALIDATION_SUFFIXES, RenderedReport
 from mdr_events.parameters import PARAMETER_UNITS
@@ -71,14 +72,14 @@ def fit_markdown(fit: xr.Dataset, stem: str | None = None) -> str:
         lines += ["", f"Effective moduli at the fit: E* = {float(fit['E_star']):.6g} ± "
                       f"{float(fit['E_star_standard_error']):.3g} Pa, G* = {float(fit['G_star']):.6g} ± "
                       f"{float(fit['G_star_standard_error']):.3g} Pa."]
-    warnings = str(fit.attrs.get("warnings", "none"))
-    if warnings != "none":
+    warnings = read_text_list(fit.attrs, "warnings")
+    if warnings:
         lines += ["", "## Warnings: the fit does not describe the data", "",
                   "The intervals above assume it does; fix these first.", ""] + \
-            [f"- **{warning}**" for warning in warnings.split("; ")]
-    notes = str(fit.attrs.get("notes", "none"))
-    if notes != "none":
-        lines += ["", "## Notes", ""] + [f"- {note}" for note in notes.split("; ")]
+            [f"- **{warning}**" for warning in warnings]
+    notes = read_text_list(fit.attrs, "notes")
+    if notes:
+        lines += ["", "## Notes", ""] + [f"- {note}" for note in notes]
     lines += ["", "## Residuals", "", "| quantity | noise σ | source | RMS residual / σ |", "|---|---:|---|---:|"]
     for name in fit["quantity"].values:
         row = fit.sel(quantity=name)
@@ -104,8 +105,7 @@ def fit_console_summary(fit: xr.Dataset, name: str, optimizer: OptimizerRun | No
     """A few lines for the terminal: the verdict (with the optimizer's log, if given) and each estimate with its
     interval."""
     lines = [f"{name}: {fit.attrs['verdict']}" + ("" if optimizer is None else f" ({optimizer.describe()})")]
-    warnings = str(fit.attrs.get("warnings", "none"))
-    lines += [] if warnings == "none" else [f"  warning: {warning}" for warning in warnings.split("; ")]
+    lines += [f"  warning: {warning}" for warning in read_text_list(fit.attrs, "warnings")]
     for parameter in fit["parameter"].values:
         row = fit.sel(parameter=parameter)
         unit = str(row["parameter_units"].values)

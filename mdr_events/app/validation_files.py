@@ -21,6 +21,7 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
+from mdr_events.analysis.reports import ValidationReport, Verdict
 from mdr_events.analysis.validate import LEFT_OUT_CODES
 from mdr_events.app.result_files import FileOutcome, FileStatus
 from mdr_events.io.files import (PendingFile, atomic_write_all, check_output_stem, netcdf_writer,
@@ -68,13 +69,13 @@ def _left_out_counts(report: xr.Dataset) -> dict[int, int]:
 
 def validation_markdown(report: xr.Dataset, stem: str | None = None) -> str:
     """The Markdown summary of a validation report (``<stem>.md``; ``stem`` names the figure beside it)."""
-    verdict = str(report.attrs["verdict"])
-    tolerance = float(report.attrs["tolerance"])
+    typed = ValidationReport.from_dataset(report)
+    verdict, tolerance = typed.verdict, typed.tolerance
     source = str(report.attrs.get("candidate_source", "candidate"))
     counts = _left_out_counts(report)
     lines = [f"# Validation of `{os.path.basename(source)}` against the exact continuum", "",
              f"**Verdict: {verdict}** — "
-             + ("every quantity's" if verdict == "pass" else "not every quantity's")
+             + ("every quantity's" if verdict is Verdict.PASS else "not every quantity's")
              + f" max error is within the tolerance {tolerance:g} (relative to the exact quantity's range).", "",
              f"- Candidate: `{source}`",
              f"- Not compared: {report.attrs.get('quantities_not_compared', 'none')}; columns not read: "
@@ -133,7 +134,7 @@ def console_summary(report: xr.Dataset, name: str) -> list[str]:
     events = ", ".join(f"{EVENT_NAMES.get(str(event), str(event))} "
                        f"{_number(report['event_time_error'].sel(event=event), 3, True)}"
                        for event in report["event"].values)
-    return [f"{name}: {str(report.attrs['verdict']).upper()} (tolerance {tolerance:g}; "
+    return [f"{name}: {str(ValidationReport.from_dataset(report).verdict).upper()} (tolerance {tolerance:g}; "
             f"{int(report['samples_compared'])} samples compared, {int(report['samples_left_out'])} left out)",
             f"  max error / range: {errors}",
             f"  event time error (s): {events}",

@@ -15,7 +15,7 @@ elsewhere agrees with it. Reading and writing files is :mod:`mdr_events.io.files
 
 from __future__ import annotations
 
-from typing import Any, Mapping
+from typing import Any, Mapping, Sequence
 
 import numpy as np
 import xarray as xr
@@ -23,7 +23,8 @@ import xarray as xr
 from mdr_events._version import __version__
 from mdr_events.parameters import Parameters
 
-__all__ = ["DOI", "REFERENCE", "PROGRAM", "STAMP_ATTRIBUTES", "stamp", "parameters_of", "Dims", "register_schema",
+__all__ = ["DOI", "REFERENCE", "PROGRAM", "STAMP_ATTRIBUTES", "stamp", "parameters_of", "text_list_attrs",
+           "read_text_list", "Dims", "register_schema",
            "registered_contents", "required_variables", "register_figure", "figure_of", "dims_match", "describe_dims"]
 
 DOI = "10.3390/biomimetics8060477"
@@ -79,6 +80,21 @@ def stamp(dataset: xr.Dataset, params: Parameters, **attrs: Any) -> xr.Dataset:
 def parameters_of(dataset: xr.Dataset) -> Parameters:
     """The :class:`Parameters` a dataset was computed with."""
     return Parameters.from_attrs(dataset.attrs)
+
+
+def text_list_attrs(name: str, items: Sequence[str]) -> dict[str, Any]:
+    """A list of texts as attributes netCDF-3 holds, each whole: ``name`` (how many) and ``name_1``, ``name_2``, ...
+    (:func:`read_text_list` reads them back, and the joined text of files written before)."""
+    return {name: len(items), **{f"{name}_{index}": str(text) for index, text in enumerate(items, start=1)}}
+
+
+def read_text_list(attrs: Mapping[str, Any], name: str) -> list[str]:
+    """The texts of :func:`text_list_attrs`; of a file written before them, its ``"; "``-joined text (``"none"``:
+    none)."""
+    count = attrs.get(name, 0)
+    if isinstance(count, str):  # (written before: the texts joined)
+        return [] if count in ("none", "") else count.split("; ")
+    return [str(attrs[f"{name}_{index}"]) for index in range(1, int(count) + 1)]
 
 
 #: Attributes every result carries.

@@ -215,3 +215,15 @@ def test_importing_the_figure_module_leaves_the_backend_alone():
     result = subprocess.run([sys.executable, "-c", code], env=environment, cwd=REPOSITORY, capture_output=True,
                             text=True, check=True)
     assert result.stdout.strip().splitlines()[-1] == "svg"
+
+
+def test_the_convergence_report_is_typed():
+    import xarray as xr
+
+    import mdr_events as me
+    from mdr_events.analysis.reports import CONVERGENCE_STUDY_CONTENT
+    dataset = xr.Dataset(attrs={"content": CONVERGENCE_STUDY_CONTENT, "verdict": "does not converge",
+                                "expected_order": 1.0})
+    report = me.ConvergenceReport.from_dataset(dataset)
+    assert report.verdict is me.ConvergenceVerdict.DOES_NOT_CONVERGE and report.expected_order == 1.0
+    assert report.to_dataset() is dataset

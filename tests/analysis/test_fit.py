@@ -86,7 +86,7 @@ def test_tau0_from_the_normal_force_alone_is_flagged_not_identifiable(paper):
     assert math.isinf(tau0.standard_error) and tau0.lower == 0.0 and math.isinf(tau0.upper)
     assert result.estimates["dgamma1"].identifiability is Identifiability.DETERMINED
     assert not result.identifiable and "tau0 (not identifiable)" in result.verdict
-    assert "tau0 acts only on F_x" in result.dataset.attrs["notes"]
+    assert "tau0 acts only on F_x" in " ".join(result.notes)
     assert math.isinf(result.condition_number) or result.condition_number > 1e6
 
 
@@ -144,7 +144,7 @@ def test_e_and_nu_are_reported_as_effective_moduli(paper):
     assert result.parameters.nu == pytest.approx(0.4, rel=1e-6)
     assert float(result.dataset["E_star"]) == pytest.approx(truth.E_star, rel=1e-6)
     assert float(result.dataset["G_star"]) == pytest.approx(truth.G_star, rel=1e-6)
-    assert "E and ν enter the model only through E*" in result.dataset.attrs["notes"]
+    assert "E and ν enter the model only through E*" in " ".join(result.notes)
 
 
 def test_nu_at_its_bound_is_fitted_and_reported_at_the_bound(paper):
@@ -240,7 +240,7 @@ def test_bounds_may_be_a_numpy_pair_and_bind_the_estimate(paper):
                     bounds={"tau0": np.array([20e3, 40e3])})
     assert result.parameters.tau0 == pytest.approx(40e3, rel=1e-9)  # the truth (42 kPa) lies beyond the bound
     assert result.estimates["tau0"].identifiability is Identifiability.AT_BOUND
-    assert "tau0 sits on a bound" in result.dataset.attrs["notes"]
+    assert "tau0 sits on a bound" in " ".join(result.notes)
 
 
 def test_a_start_of_zero_cannot_be_fitted_on_a_log_scale(paper):
@@ -294,3 +294,24 @@ def test_a_good_cone_fit_is_not_warned_of_a_lost_contact(paper, seed):
     assert result.warnings == []
     estimate = result.estimates["tau0"]  # within 4 standard errors (a 95 % interval misses one seed in 20)
     assert abs(estimate.value - paper.tau0) <= 4 * estimate.standard_error
+
+
+def test_a_fit_result_round_trips_through_its_file_and_reads_files_written_before(tmp_path):
+    """FitResult.from_dataset: the lists of notes and warnings whole (each text its own attribute), the
+    identifiability a bool, the parameters and offsets; a file written before (texts joined by '; ') still reads."""
+    import os
+
+    from mdr_events.io.datasets import read_text_list, text_list_attrs
+    committed = me.open_result(os.path.join(os.path.dirname(__file__), "..", "..", "results", "fit_A20_R30.nc"))
+    result = me.FitResult.from_dataset(committed)
+    assert result.identifiable is True and result.optimizer is None
+    assert result.to_dataset() is committed and result.parameters == me.Parameters.from_attrs(committed.attrs)
+    written = committed.copy()
+    written.attrs.update({"warnings": "a; b", "notes": "none"})  # (as files were written before)
+    for key in [key for key in written.attrs if key.startswith(("warnings_", "notes_"))]:
+        del written.attrs[key]
+    before = me.FitResult.from_dataset(written)
+    assert before.warnings == ["a", "b"] and before.notes == []
+    texts = ["the residuals; of F_N are large", "a unit looks wrong"]
+    assert read_text_list(text_list_attrs("warnings", texts), "warnings") == texts  # ("; " inside a text kept)
+    assert read_text_list(text_list_attrs("warnings", []), "warnings") == []

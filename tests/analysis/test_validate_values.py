@@ -94,3 +94,30 @@ def test_a_fit_takes_the_same_values():
     assert new.parameters == old.parameters and new.dataset.attrs == old.dataset.attrs
     with pytest.raises(TypeError, match="unexpected keyword argument 'boundz'"):
         me.fit(data, me.Contact.paper(), "A", 20.0, free=["tau0"], boundz={})
+
+
+def test_the_report_is_typed_and_round_trips_through_a_file(run, tmp_path):
+    """ValidationReport: the verdict an enum, what fails in words by the rule the verdict is set by; the file read
+    back gives the same report."""
+    passing = me.validate(run, PAPER, "A", 20.0, tolerance=0.05)
+    failing = me.validate(run, PAPER, "A", 20.0, tolerance=1e-6)
+    for dataset, verdict in ((passing, me.Verdict.PASS), (failing, me.Verdict.FAIL)):
+        report = me.ValidationReport.from_dataset(dataset)
+        assert report.verdict is verdict and report.passed == (verdict is me.Verdict.PASS)
+        assert bool(report.failures) == (verdict is me.Verdict.FAIL)
+        read = me.ValidationReport.from_dataset(me.open_result(me.write_netcdf(dataset, tmp_path / f"{verdict}.nc")))
+        assert read.verdict is verdict and read.failures == report.failures and read.to_dataset().identical(
+            me.open_result(tmp_path / f"{verdict}.nc"))
+    failures = me.ValidationReport.from_dataset(failing).failures
+    assert any(text.startswith("normal_force: max error") and "> tolerance 1e-06" in text for text in failures)
+    assert me.Verdict.PASS == "pass" and str(me.Verdict.FAIL) == "fail"  # (the attribute's text)
+    with pytest.raises(ValueError, match="allowed: a validation"):
+        me.ValidationReport.from_dataset(me.simulate(PAPER, "A", [20.0], method="continuum", samples=5))
+
+
+def test_the_rule_of_the_verdict_names_each_failure():
+    from mdr_events.analysis.reports import validation_failures
+    assert validation_failures([], [], 0.0, [], 0.1) == ["no quantity compared"]
+    assert validation_failures(["normal_force"], [0.05], 0.0, [0.5], 0.1) == []
+    assert len(validation_failures(["normal_force", "contact_area"], [0.2, float("nan")], 0.3, [2.0, 0.0], 0.1)) == 4
+    assert validation_failures(["tangential_force"], [0.05], float("nan"), [0.0], 0.1) == []  # (no contact shown)

@@ -1,0 +1,149 @@
+"""What the referees conclude, typed: the verdicts as enums, and the reports of :func:`~mdr_events.validate` and
+:func:`~mdr_events.convergence_study` as objects over their datasets.
+
+A report's dataset is what is written and read (netCDF); :meth:`ValidationReport.from_dataset` and
+:meth:`~ValidationReport.to_dataset` round-trip it, files written before included. The rule of a validation's verdict
+is here, once (:func:`validation_failures`): :func:`~mdr_events.validate` sets the verdict by it, and a report lists
+what failed by it.
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from dataclasses import dataclass
+from typing import Sequence
+
+import numpy as np
+import xarray as xr
+
+__all__ = ["Verdict", "ConvergenceVerdict", "ValidationReport", "ConvergenceReport", "validation_failures",
+           "LEFT_OUT_BOUND", "VALIDATION_CONTENT", "CONVERGENCE_STUDY_CONTENT"]
+
+#: The ``content`` attribute of a validation's and of a convergence study's dataset.
+VALIDATION_CONTENT = "validation of a simulator against the exact continuum"
+CONVERGENCE_STUDY_CONTENT = "observed order of convergence of a simulator to the exact continuum"
+#: A sample left out (its contact differs, or it straddles an event) still lies within this many ranges of the exact
+#: value: what an event's timing can change (a jump to 0 at the pull-off); a spike of 100 ranges there passed.
+LEFT_OUT_BOUND = 1.0
+
+
+class Verdict(str, enum.Enum):
+    """A validation's verdict (its value is the attribute ``verdict`` of the dataset)."""
+
+    PASS = "pass"
+    FAIL = "fail"
+
+    def __str__(self) -> str:
+        return self.value
+
+
+class ConvergenceVerdict(str, enum.Enum):
+    """A convergence study's verdict (its value is the attribute ``verdict`` of the dataset)."""
+
+    CONVERGES = "converges"
+    DOES_NOT_CONVERGE = "does not converge"
+    UNDETERMINED = "undetermined"
+
+    def __str__(self) -> str:
+        return self.value
+
+
+def validation_failures(quantities: Sequence[str], max_errors: Sequence[float], contact_differs: float,
+                        left_out_errors: Sequence[float], tolerance: float) -> list[str]:
+    """What fails a validation, in words (none: it passes): no quantity compared; a quantity's max error above
+    ``tolerance`` (or not a number); the share of the exact contact's time in contact in one run only above
+    ``tolerance``; a sample left out farther than :data:`LEFT_OUT_BOUND` ranges from the exact value."""
+    if not len(quantities):
+        return ["no quantity compared"]
+    failures = [f"{name}: max error {error:.3g} of its range > tolerance {tolerance:g}"
+                for name, error in zip(quantities, max_errors) if not error <= tolerance]
+    if contact_differs > tolerance:  # (nan: a tangential force alone does not show the contact)
+        failures.append(f"contact: {contact_differs:.3g} of the exact contact's time in contact in one run only or "
+                        f"not sampled > tolerance {tolerance:g}")
+    failures += [f"{name}: a sample left out lies {error:.3g} ranges from the exact value > {LEFT_OUT_BOUND:g}"
+                 for name, error in zip(quantities, left_out_errors) if error > LEFT_OUT_BOUND]
+    return failures
+
+
+def _checked(dataset, content: str, kind: str) -> xr.Dataset:
+    if not isinstance(dataset, xr.Dataset) or dataset.attrs.get("content") != content:
+        found = dataset.attrs.get("content") if isinstance(dataset, xr.Dataset) else type(dataset).__name__
+        raise ValueError(f"dataset of {found!r} is not allowed; allowed: a {kind} ({content!r})")
+    return dataset
+
+
+@dataclass(frozen=True)
+class ValidationReport:
+    """A validation (:func:`~mdr_events.validate`): its dataset and what it concludes.
+
+    Attributes
+    ----------
+    dataset : xarray.Dataset
+        Everything: the samples side by side, the norms, the events, the attributes.
+    """
+
+    dataset: xr.Dataset
+
+    def __post_init__(self) -> None:
+        _checked(self.dataset, VALIDATION_CONTENT, "validation")
+
+    @classmethod
+    def from_dataset(cls, dataset: xr.Dataset) -> "ValidationReport":
+        """The report of a validation's dataset (e.g. read by :func:`~mdr_events.open_result`)."""
+        return cls(dataset)
+
+    def to_dataset(self) -> xr.Dataset:
+        return self.dataset
+
+    @property
+    def verdict(self) -> Verdict:
+        return Verdict(str(self.dataset.attrs["verdict"]))
+
+    @property
+    def passed(self) -> bool:
+        return self.verdict is Verdict.PASS
+
+    @property
+    def tolerance(self) -> float:
+        return float(self.dataset.attrs["tolerance"])
+
+    @property
+    def failures(self) -> list[str]:
+        """What fails, in words (:func:`validation_failures`); empty for a pass."""
+        data = self.dataset
+        quantities = [str(name) for name in data["quantity"].values]
+        share = float(data["contact_differs_share"]) if "contact_differs_share" in data else math.nan
+        left_out = data["left_out_max_error"].values if "left_out_max_error" in data else np.zeros(len(quantities))
+        return validation_failures(quantities, data["max_error"].values, share, left_out, self.tolerance)
+
+
+@dataclass(frozen=True)
+class ConvergenceReport:
+    """A convergence study (:func:`~mdr_events.convergence_study`): its dataset and its verdict.
+
+    Attributes
+    ----------
+    dataset : xarray.Dataset
+        Everything: per spacing the norms, the observed orders, the event errors.
+    """
+
+    dataset: xr.Dataset
+
+    def __post_init__(self) -> None:
+        _checked(self.dataset, CONVERGENCE_STUDY_CONTENT, "convergence study")
+
+    @classmethod
+    def from_dataset(cls, dataset: xr.Dataset) -> "ConvergenceReport":
+        return cls(dataset)
+
+    def to_dataset(self) -> xr.Dataset:
+        return self.dataset
+
+    @property
+    def verdict(self) -> ConvergenceVerdict:
+        return ConvergenceVerdict(str(self.dataset.attrs["verdict"]))
+
+    @property
+    def expected_order(self) -> float:
+        return float(self.dataset.attrs["expected_order"])
