@@ -25,7 +25,7 @@ Rules, applied at every time step:
 - **Forces (15).** ``F_N = 2 Σ E* Δx (d − g(x_j))`` (from prefix sums of
   ``g``) and ``F_x = 2 Σ G* Δx u_j`` over the springs in contact.
 
-Stepping (:class:`_Springs`): a spring's shift is ``u = x − Y`` with its
+Stepping (:class:`~mdr_events.models.spring_groups.SpringGroups`): a spring's shift is ``u = x − Y`` with its
 anchor ``Y`` (``Y = x`` when it attaches; clipping moves ``Y`` with the window
 ``[x − ū, x + ū]``), so a step moves no spring that sticks. Springs that reach
 a cap share its anchor from then on and are kept as one group; the anchors
@@ -52,7 +52,6 @@ path never enters again, the run ends at that first sample without contact
 
 from __future__ import annotations
 
-import heapq
 import math
 from array import array
 from typing import Callable, NamedTuple
@@ -67,6 +66,7 @@ from mdr_events.validation import check_real
 from mdr_events.theory import symbolic
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
+from mdr_events.models.spring_groups import SpringGroups, scale_bits, scaled, unscaled
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.contact.indenters import PowerLaw
@@ -149,226 +149,9 @@ def check_spacing(params: Parameters, dx: float, depth: float | None = None, pro
     return dx
 
 
-def _scale_bits(*arrays: np.ndarray) -> int:
-    """The smallest ``bits`` that makes every value of ``arrays`` an integer multiple of ``2**-bits``."""
-    values = np.concatenate([np.ravel(part) for part in arrays])
-    values = values[values != 0.0]
-    if not values.size:
-        return 0
-    # v = f 2**e with 0.5 <= |f| < 1 and 53 significant bits: a multiple of 2**(e - 53)
-    return max(0, 53 - int(np.frexp(values)[1].min()))
-
-
-def _scaled(values: np.ndarray, bits: int) -> list[int]:
-    """``values * 2**bits`` as exact Python integers (each value a multiple of ``2**-bits``)."""
-    values = np.asarray(values, dtype=float)
-    largest = float(np.max(np.abs(values))) if values.size else 0.0
-    if largest == 0.0 or math.frexp(largest)[1] + bits < 1000:  # ldexp exact, no overflow
-        return [int(value) for value in np.ldexp(values, bits).tolist()]
-    scaled = []
-    for value in values.tolist():
-        numerator, denominator = value.as_integer_ratio()
-        scaled.append(numerator << (bits - denominator.bit_length() + 1))
-    return scaled
-
-
-def _unscaled(value: int, bits: int) -> float:
-    """The float nearest to ``value * 2**-bits`` (correctly rounded, subnormal results aside)."""
-    if bits <= 900:  # float(value) is finite here: round once, then scale by an exact power of two
-        return float(value) * 2.0 ** -bits
-    return value / (1 << bits)
-
-
-class _Springs:
-    """The springs in contact of one case, in groups that share one shift; every sum exact.
-
-    A spring in contact has an anchor ``Y``, the position of the indenter at
-    which it would be unstretched, and the shift ``u = x − Y``: it attaches
-    with ``Y = x``, keeps ``Y`` while it sticks, and where the cap clips it,
-    ``Y`` moves with the window ``[x − ū, x + ū]`` (a play operator per
-    spring): the spring sits at ``u = +ū`` with ``Y = x − ū`` (the *low* cap)
-    or at ``u = −ū`` with ``Y = x + ū`` (the *high* cap). Springs that once
-    share a shift share it until they detach, so they are kept as *groups*
-    (union-find, each spring reached through its index range, a stack from the
-    centre out: springs attach and detach at the edge).
-
-    Anchors are integers in units of ``2**-bits`` m: every sample of ``x`` and
-    every cap ``ū(a)`` is such an integer, so the shifts ``x − Y`` and the sum
-    of the anchors of the springs in contact (:attr:`anchor_sum`, updated
-    only where springs attach, detach or are clipped) are exact, with no
-    drift over any number of steps; ``Σ u = m x − Σ Y`` is rounded once.
-
-    Per step the work is the springs' groups that change: the two caps (their
-    anchors follow the window), the free groups that the window reaches (from
-    two heaps of the free groups' anchors: lowest and highest first) and the
-    index ranges that detach. A step that clips nothing costs O(1).
-    """
-
-    __slots__ = ("parent", "count", "anchor", "free", "lows", "highs", "starts", "groups", "low_cap", "high_cap",
-                 "anchor_sum")
-
-    #: Groups and heap entries allowed beyond the live bound before they are compacted (:meth:`_bound`).
-    SLACK = 256
-
-    def __init__(self) -> None:
-        self.reset()
-
-    def reset(self) -> None:
-        """No springs in contact (the contact came apart)."""
-        self.parent: list[int] = []  # union-find: a group merged into a cap points towards it
-        self.count: list[int] = []  # springs of a root group
-        self.anchor: list[int] = []  # anchor of a root group (2**-bits m)
-        self.free: list[bool] = []  # a root group that sticks (in the heaps), not a cap
-        self.lows: list[tuple[int, int]] = []  # (anchor, group): a min-heap of the free groups
-        self.highs: list[tuple[int, int]] = []  # (-anchor, group): a max-heap of the free groups
-        self.starts: list[int] = []  # index ranges from the centre out: first spring of each ...
-        self.groups: list[int] = []  # ... and its group
-        self.low_cap = -1  # the group at u = +ū (anchor x − ū), or -1
-        self.high_cap = -1  # the group at u = −ū (anchor x + ū), or -1
-        self.anchor_sum = 0  # Σ Y over the springs in contact (2**-bits m), exact
-
-    def _root(self, group: int) -> int:
-        parent = self.parent
-        root = group
-        while parent[root] != root:
-            root = parent[root]
-        while parent[group] != root:  # path compression
-            parent[group], group = root, parent[group]
-        return root
-
-    def attach(self, start: int, stop: int, anchor: int) -> None:
-        """Springs ``start ≤ j < stop`` attach with zero shift at the position ``anchor``."""
-        self.anchor_sum += (stop - start) * anchor
-        if self.groups:
-            group = self.groups[-1]  # the outermost springs stick at the same anchor (x did not move): join them
-            if self.parent[group] == group and self.free[group] and self.anchor[group] == anchor:
-                self.count[group] += stop - start
-                return
-        group = len(self.parent)
-        self.parent.append(group)
-        self.count.append(stop - start)
-        self.anchor.append(anchor)
-        self.free.append(True)
-        heapq.heappush(self.lows, (anchor, group))
-        heapq.heappush(self.highs, (-anchor, group))
-        self.starts.append(start)
-        self.groups.append(group)
-        self._bound()
-
-    def detach(self, top: int, stop: int) -> None:
-        """Springs ``stop ≤ j < top`` (the outermost ``top − stop``) detach and forget their shift."""
-        starts, groups, count = self.starts, self.groups, self.count
-        while top > stop:
-            start = starts[-1]
-            root = self._root(groups[-1])
-            low = start if start > stop else stop
-            leaving = top - low
-            count[root] -= leaving
-            self.anchor_sum -= leaving * self.anchor[root]
-            if low == start:
-                starts.pop()
-                groups.pop()
-            top = low
-
-    def _live(self, group: int, anchor: int) -> bool:
-        """A heap entry that is still a free group at that anchor (entries are removed lazily)."""
-        return self.parent[group] == group and self.free[group] and self.count[group] > 0 \
-            and self.anchor[group] == anchor
-
-    def _take(self, cap: int, group: int, level: int) -> int:
-        """The free ``group`` reaches the cap at anchor ``level``: it joins ``cap`` (or becomes it)."""
-        self.free[group] = False
-        self.anchor_sum += self.count[group] * (level - self.anchor[group])
-        if cap < 0:
-            self.anchor[group] = level
-            return group
-        self.parent[group] = cap
-        self.count[cap] += self.count[group]
-        return cap
-
-    def _settle(self, cap: int, level: int, low: bool) -> int:
-        """The cap group ``cap`` moves with its level if it still sits at or beyond it; if the
-        level moved back past it, its springs stick again where they are (a free group). The cap after."""
-        if self.count[cap] == 0:
-            return -1
-        anchor = self.anchor[cap]
-        if (anchor > level) if low else (anchor < level):
-            self.free[cap] = True
-            heapq.heappush(self.lows, (anchor, cap))
-            heapq.heappush(self.highs, (-anchor, cap))
-            return -1
-        self.anchor_sum += self.count[cap] * (level - anchor)
-        self.anchor[cap] = level
-        return cap
-
-    def clip(self, low: int, high: int) -> int:
-        """Clip every shift to the window ``[low, high] = [x − ū, x + ū]`` of anchors; the number of
-        springs at a cap (``|u| = ū``) after it."""
-        count, lows, highs = self.count, self.lows, self.highs
-        # both caps first: a cap left behind by a long step may be reached by the other level
-        low_cap, high_cap = self.low_cap, self.high_cap
-        if low_cap >= 0:
-            low_cap = self._settle(low_cap, low, True)
-        if high_cap >= 0:
-            high_cap = self._settle(high_cap, high, False)
-        while lows and lows[0][0] <= low:
-            anchor, group = heapq.heappop(lows)
-            if self._live(group, anchor):
-                low_cap = self._take(low_cap, group, low)
-        while highs and -highs[0][0] >= high:
-            anchor, group = heapq.heappop(highs)
-            if self._live(group, -anchor):
-                high_cap = self._take(high_cap, group, high)
-        released = (self.low_cap >= 0 > low_cap) or (self.high_cap >= 0 > high_cap)
-        self.low_cap, self.high_cap = low_cap, high_cap
-        at_caps = (count[low_cap] if low_cap >= 0 else 0) + (count[high_cap] if high_cap >= 0 else 0)
-        if released:
-            self._bound()  # a released cap added heap entries
-        return at_caps
-
-    def _bound(self) -> None:
-        """Compact when the groups and heap entries (live or stale) outgrow the index ranges. Each
-        range holds at most one live root with a few live heap entries, so memory stays linear in
-        the springs in contact; a compaction is linear in the ranges and follows as many new
-        entries or detached ranges (amortised O(1) per attach, detach or release)."""
-        if len(self.parent) + len(self.lows) + len(self.highs) > 8 * len(self.starts) + self.SLACK:
-            self._compact()
-
-    def _compact(self) -> None:
-        """Renumber the live groups (roots), join neighbouring index ranges of one group, rebuild the
-        heaps: memory stays linear in the springs in contact, whatever the number of steps."""
-        renumbered: dict[int, int] = {}
-        starts: list[int] = []
-        groups: list[int] = []
-        for start, group in zip(self.starts, self.groups):
-            new = renumbered.setdefault(self._root(group), len(renumbered))
-            if not groups or groups[-1] != new:
-                starts.append(start)
-                groups.append(new)
-        roots = list(renumbered)
-        self.parent = list(range(len(roots)))
-        self.count = [self.count[root] for root in roots]
-        self.anchor = [self.anchor[root] for root in roots]
-        self.free = [self.free[root] for root in roots]
-        self.low_cap = renumbered.get(self.low_cap, -1)
-        self.high_cap = renumbered.get(self.high_cap, -1)
-        self.starts, self.groups = starts, groups
-        self.lows = [(anchor, group) for group, (anchor, free) in enumerate(zip(self.anchor, self.free)) if free]
-        self.highs = [(-anchor, group) for anchor, group in self.lows]
-        heapq.heapify(self.lows)
-        heapq.heapify(self.highs)
-
-    def shifts(self, x: int, springs: int) -> list[int]:
-        """Every spring's shift ``x − Y`` (2**-bits m), from the centre out; ``springs`` in contact."""
-        shifts: list[int] = []
-        for start, stop, group in zip(self.starts, self.starts[1:] + [springs], self.groups):
-            shifts.extend([x - self.anchor[self._root(group)]] * (stop - start))
-        return shifts
-
-
 class _Grid:
     """What every case of a run shares: the springs' thresholds, the caps ``ū(m Δx)`` and the integer
-    scale of the positions (:class:`_Springs`: units of ``2**-bits`` m)."""
+    scale of the positions (:class:`~mdr_events.models.spring_groups.SpringGroups`: units of ``2**-bits`` m)."""
 
     def __init__(self, attach: _Threshold, detach: _Threshold, first_touch: float, caps: np.ndarray, bits: int,
                  g: np.ndarray | None = None, coulomb: float = 0.0):
@@ -382,11 +165,11 @@ class _Grid:
         self.caps = caps.tolist()
         self.n_springs = len(self.caps) - 1
         self.bits = bits
-        self.caps_scaled = _scaled(caps, bits)
+        self.caps_scaled = scaled(caps, bits)
 
     def to_float(self, value: int) -> float:
         """An integer in units of ``2**-bits`` m as the nearest float (m)."""
-        return _unscaled(value, self.bits)
+        return unscaled(value, self.bits)
 
 
 #: Samples per block of a case: the per-sample Python values live for one block only.
@@ -394,31 +177,25 @@ _BLOCK = 8192
 
 
 def _run_case(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last: int, last_entry: float,
-              counts: np.ndarray, sums: np.ndarray, sliding: np.ndarray, springs: _Springs | None = None) -> int:
+              counts: np.ndarray, sums: np.ndarray, sliding: np.ndarray, springs: SpringGroups | None = None) -> int:
     """Step one case from sample 0 to ``last``, or to its pull-off if its path does not enter again.
 
     Writes, per sample, the springs in contact per side to ``counts``, ``Σ u`` over them (m) to
     ``sums`` and the springs at a cap (every spring in contact where ``ū = 0``) to ``sliding``;
     returns the last sample. ``springs`` ends holding the final state (for inspection).
     """
-    springs = _Springs() if springs is None else springs
+    springs = SpringGroups() if springs is None else springs
     attach_threshold, detach_threshold = grid.attach_threshold, grid.detach_threshold
     detach_lowest, first_touch = grid.detach_lowest, grid.first_touch
     caps, caps_scaled, bits = grid.caps, grid.caps_scaled, grid.bits
     to_float = grid.to_float
 
-    depth_before = float(d[0])
-    m = int(grid.attach.count(d[:1])[0]) if depth_before >= first_touch else 0
-    if m:
-        springs.attach(0, m, _scaled(x[:1], bits)[0])
-    # every spring has just attached (u = 0): at a cap only where ū = 0, though sample 0 records none
-    total, at_caps = 0.0, (m if m and not caps[m] > 0.0 else 0)
-    counts[0], sums[0], sliding[0] = m, total, 0
-    x_before = float(x[0])
+    m, total, at_caps = _first_sample(grid, x, d, springs, counts, sums, sliding)
+    depth_before, x_before = float(d[0]), float(x[0])
     k = 1
     while k <= last:
         block = slice(k, min(last, k + _BLOCK - 1) + 1)
-        xs, ds, positions = x[block].tolist(), d[block].tolist(), _scaled(x[block], bits)
+        xs, ds, positions = x[block].tolist(), d[block].tolist(), scaled(x[block], bits)
         grows, shrinks = grid.attach.count(d[block]).tolist(), grid.detach.count(d[block]).tolist()
         block_counts, block_sums, block_sliding = array("q"), array("d"), array("q")
         for i, depth in enumerate(ds):
@@ -467,6 +244,19 @@ def _run_case(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last:
         written = slice(block.start, block.start + len(block_counts))
         counts[written], sums[written], sliding[written] = block_counts, block_sums, block_sliding
     return last
+
+
+def _first_sample(grid: _Grid, x: np.ndarray, d: np.ndarray, springs: SpringGroups, counts: np.ndarray,
+                  sums: np.ndarray, sliding: np.ndarray) -> tuple[int, float, int]:
+    """Attach the springs the first sample touches and record it; returns the springs in contact per side,
+    ``Σ u`` (0) and the springs at a cap."""
+    m = int(grid.attach.count(d[:1])[0]) if float(d[0]) >= grid.first_touch else 0
+    if m:
+        springs.attach(0, m, scaled(x[:1], grid.bits)[0])
+    # every spring has just attached (u = 0): at a cap only where ū = 0, though sample 0 records none
+    total, at_caps = 0.0, (m if m and not grid.caps[m] > 0.0 else 0)
+    counts[0], sums[0], sliding[0] = m, total, 0
+    return m, total, at_caps
 
 
 def _run_case_per_spring(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last: int,
@@ -548,7 +338,7 @@ def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
     # ū is linear in a (13); a law without τ0's part has none
     shift_per_radius = float(analytic.critical_shift(1.0, params)) if friction.uses_tau0 else 0.0
     caps = (shift_per_radius * dx) * np.arange(n_springs + 1)  # ū(m Δx) for m springs per side
-    grid = _Grid(attach, detach, g[0], caps, _scale_bits(x_path, caps), g, mindlin.coulomb_cap_ratio(friction, params))
+    grid = _Grid(attach, detach, g[0], caps, scale_bits(x_path, caps), g, mindlin.coulomb_cap_ratio(friction, params))
     return _Setup(time, x_path, d_path, last_sample, last_entries, grid, g_prefix)
 
 

@@ -127,75 +127,100 @@ def plot_phase_diagram(dataset: xr.Dataset, ax=None):
     if ax is None:
         _, ax = plt.subplots(figsize=(6.4, 4.8), constrained_layout=True)
     scenario = dataset.attrs["scenario"]
-    alpha = dataset["alpha"].values
     d_max = float(dataset["d_max"]) * _MM
-    R_mm = dataset.attrs["param_R"] * _MM
-    style = {"hertz": dict(color="k", ls="-", label="non-adhesive"),
-             "jkr": dict(color="tab:red", ls="--", label="adhesive")}
-    # another indenter or friction law: the paper's equation numbers are the paraboloid's with τ0
-    other = "profile" in dataset.attrs or "friction_law" in dataset.attrs
     if scenario == "A":
-        for key, eq in (("hertz", "" if other else "(17)"), ("jkr", "(Heß)" if other else "(18)")):
-            depths = dataset[f"d_crit_{key}"].values
-            if np.all(np.isnan(depths)):  # no closed form (a friction law with Coulomb's part, adhesive)
-                continue
-            ax.plot(alpha, depths * _MM, **{**style[key], "label": f"{style[key]['label']} {eq}".strip()})
-        top = 2.0 * d_max
-        shown = [key for key in ("hertz", "jkr") if np.isfinite(float(dataset[f"critical_angle_{key}"]))]
-        for key in shown:  # (an adhesive angle without closed form, nan, is not drawn)
-            angle = float(dataset[f"critical_angle_{key}"])
-            ax.plot([angle, angle], [0, d_max], color=style[key]["color"], ls=":", lw=1)
-            ax.plot(angle, d_max, "o", color=style[key]["color"], ms=4)
-        names = {"hertz": "Hertz", "jkr": "JKR"}
-        ax.annotate(
-            "\n".join(f"$\\alpha_c^{{{names[key]}}}$ = {float(dataset[f'critical_angle_{key}']):.2f}°" for key in shown),
-            xy=(float(dataset["critical_angle_hertz"]), d_max), xytext=(40, 0.55 * top),
-            arrowprops={"arrowstyle": "->", "color": "0.4"}, fontsize=9)
-        _label(ax, 9.0, 0.85 * top, "sliding-ind")
-        # right of the critical angles (another law's may lie past the paper's 23°: Coulomb's 66°)
-        angles = [float(dataset[f"critical_angle_{key}"]) for key in shown]
-        _label(ax, min(max([65.0] + [angle + 8.0 for angle in angles]), 84.0), 0.25 * top, "no-sliding-ind")
-        ax.set_ylim(0, top)
+        _draw_phase_diagram_A(ax, dataset, d_max)
     else:
-        branches = list(dataset["branch"].values)
-        for key, eq in (("hertz", "" if other else "(20)"), ("jkr", "(Heß)" if other else "(21)")):
-            if np.all(np.isnan(dataset[f"d_crit_{key}"].values)):  # no closed form (another law, adhesive)
-                continue
-            for i, branch in enumerate(branches):
-                values = dataset[f"d_crit_{key}"].sel(branch=branch).values * _MM
-                ax.plot(alpha, values, **{**style[key], "label": f"{style[key]['label']} {eq}".strip() if i == 0 else None})
-        jump_off = float(dataset["jump_off_depth"]) * _MM
-        ax.axhline(0.0, color="0.5", lw=0.8)
-        if jump_off != 0.0:  # (without adhesion the contact ends at the surface)
-            ax.axhline(jump_off, color="tab:red", lw=0.8, ls="-.", label="jump-off depth (Δγ1)")
-        top = 3.0 * d_max
-        _label(ax, 60.0, 0.85 * top, "no-sliding-ind")
-        _label(ax, 10.0, 0.9 * top, "sliding-ind")
-        _label(ax, 62.0, 0.55 * d_max, "no-sliding-det")
-        _label(ax, 8.0, 0.35 * d_max, "sliding-det")
-        critical_angle, kind = float(dataset["critical_angle_jkr"]), "JKR"  # the Hertz one is 90°: nothing to mark
-        if not np.isfinite(critical_angle):  # another law's, without adhesion: the non-adhesive one
-            critical_angle, kind = float(dataset["critical_angle_hertz"]), "Hertz"
-        ax.plot([critical_angle, critical_angle], [jump_off, d_max], color=style["jkr"]["color"], ls=":", lw=1)
-        ax.plot(critical_angle, jump_off, "o", color=style["jkr"]["color"], ms=4)
-        annotation_position = (75.0, 0.5 * d_max)  # free space right of "no-sliding-det"
-        ax.annotate(f"$\\alpha_c^{{{kind}}}$ = {critical_angle:.2f}°", xy=(critical_angle, jump_off),
-                    xytext=annotation_position, arrowprops={"arrowstyle": "->", "color": "0.4"}, fontsize=9)
-        ax.set_ylim(min(2.0 * jump_off, -0.1 * d_max), top)
+        _draw_phase_diagram_B(ax, dataset, d_max)
     ax.axhline(d_max, color="tab:blue", lw=1.0, ls="--", label="$d_{max}$")
     ax.set_xlim(0, 90)
     ax.set_xticks(np.arange(0, 91, 10))
     ax.set_xlabel("path angle α (°)")
     ax.set_ylabel("indentation depth d (mm)")
-    if "profile" in dataset.attrs or "friction_law" in dataset.attrs:  # not the paper's figure
-        subject = dataset.attrs.get("profile", f"R = {R_mm:g} mm")
-        ax.set_title(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario},\n{subject}{_law_words(dataset)}", fontsize=9)
-    else:
-        ax.set_title(_numbered(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario}, R = {R_mm:g} mm", dataset,
-                               PHASE_DIAGRAM_FIGURES))
+    ax.set_title(_phase_diagram_title(dataset, scenario), **({"fontsize": 9} if _is_other_model(dataset) else {}))
     ax.legend(loc="upper right" if scenario == "A" else "center right", fontsize=8)
     add_inferred_footnote(ax.figure, dataset)
     return ax
+
+
+#: How the phase diagram draws its curves: non-adhesive solid, adhesive dashed.
+_PHASE_STYLE = {"hertz": dict(color="k", ls="-", label="non-adhesive"),
+                "jkr": dict(color="tab:red", ls="--", label="adhesive")}
+
+
+def _is_other_model(dataset: xr.Dataset) -> bool:
+    """Another indenter or friction law than the paper's: the paper's equation numbers are the paraboloid's with
+    ``τ0``, and the figure is not the paper's."""
+    return "profile" in dataset.attrs or "friction_law" in dataset.attrs
+
+
+def _draw_phase_diagram_A(ax, dataset: xr.Dataset, d_max: float) -> None:
+    """Scenario A's curves (17), (18), its critical angles at ``d_max`` (mm) and its regions."""
+    alpha = dataset["alpha"].values
+    other = _is_other_model(dataset)
+    for key, eq in (("hertz", "" if other else "(17)"), ("jkr", "(Heß)" if other else "(18)")):
+        depths = dataset[f"d_crit_{key}"].values
+        if np.all(np.isnan(depths)):  # no closed form (a friction law with Coulomb's part, adhesive)
+            continue
+        ax.plot(alpha, depths * _MM, **{**_PHASE_STYLE[key], "label": f"{_PHASE_STYLE[key]['label']} {eq}".strip()})
+    top = 2.0 * d_max
+    shown = [key for key in ("hertz", "jkr") if np.isfinite(float(dataset[f"critical_angle_{key}"]))]
+    for key in shown:  # (an adhesive angle without closed form, nan, is not drawn)
+        angle = float(dataset[f"critical_angle_{key}"])
+        ax.plot([angle, angle], [0, d_max], color=_PHASE_STYLE[key]["color"], ls=":", lw=1)
+        ax.plot(angle, d_max, "o", color=_PHASE_STYLE[key]["color"], ms=4)
+    names = {"hertz": "Hertz", "jkr": "JKR"}
+    ax.annotate(
+        "\n".join(f"$\\alpha_c^{{{names[key]}}}$ = {float(dataset[f'critical_angle_{key}']):.2f}°" for key in shown),
+        xy=(float(dataset["critical_angle_hertz"]), d_max), xytext=(40, 0.55 * top),
+        arrowprops={"arrowstyle": "->", "color": "0.4"}, fontsize=9)
+    _label(ax, 9.0, 0.85 * top, "sliding-ind")
+    # right of the critical angles (another law's may lie past the paper's 23°: Coulomb's 66°)
+    angles = [float(dataset[f"critical_angle_{key}"]) for key in shown]
+    _label(ax, min(max([65.0] + [angle + 8.0 for angle in angles]), 84.0), 0.25 * top, "no-sliding-ind")
+    ax.set_ylim(0, top)
+
+
+def _draw_phase_diagram_B(ax, dataset: xr.Dataset, d_max: float) -> None:
+    """Scenario B's curves (20), (21) on both branches, the jump-off depth, its regions and the critical angle
+    standing on the jump-off depth (``d_max`` in mm)."""
+    alpha = dataset["alpha"].values
+    other = _is_other_model(dataset)
+    branches = list(dataset["branch"].values)
+    for key, eq in (("hertz", "" if other else "(20)"), ("jkr", "(Heß)" if other else "(21)")):
+        if np.all(np.isnan(dataset[f"d_crit_{key}"].values)):  # no closed form (another law, adhesive)
+            continue
+        for i, branch in enumerate(branches):
+            values = dataset[f"d_crit_{key}"].sel(branch=branch).values * _MM
+            ax.plot(alpha, values, **{**_PHASE_STYLE[key],
+                                      "label": f"{_PHASE_STYLE[key]['label']} {eq}".strip() if i == 0 else None})
+    jump_off = float(dataset["jump_off_depth"]) * _MM
+    ax.axhline(0.0, color="0.5", lw=0.8)
+    if jump_off != 0.0:  # (without adhesion the contact ends at the surface)
+        ax.axhline(jump_off, color="tab:red", lw=0.8, ls="-.", label="jump-off depth (Δγ1)")
+    top = 3.0 * d_max
+    _label(ax, 60.0, 0.85 * top, "no-sliding-ind")
+    _label(ax, 10.0, 0.9 * top, "sliding-ind")
+    _label(ax, 62.0, 0.55 * d_max, "no-sliding-det")
+    _label(ax, 8.0, 0.35 * d_max, "sliding-det")
+    critical_angle, kind = float(dataset["critical_angle_jkr"]), "JKR"  # the Hertz one is 90°: nothing to mark
+    if not np.isfinite(critical_angle):  # another law's, without adhesion: the non-adhesive one
+        critical_angle, kind = float(dataset["critical_angle_hertz"]), "Hertz"
+    ax.plot([critical_angle, critical_angle], [jump_off, d_max], color=_PHASE_STYLE["jkr"]["color"], ls=":", lw=1)
+    ax.plot(critical_angle, jump_off, "o", color=_PHASE_STYLE["jkr"]["color"], ms=4)
+    annotation_position = (75.0, 0.5 * d_max)  # free space right of "no-sliding-det"
+    ax.annotate(f"$\\alpha_c^{{{kind}}}$ = {critical_angle:.2f}°", xy=(critical_angle, jump_off),
+                xytext=annotation_position, arrowprops={"arrowstyle": "->", "color": "0.4"}, fontsize=9)
+    ax.set_ylim(min(2.0 * jump_off, -0.1 * d_max), top)
+
+
+def _phase_diagram_title(dataset: xr.Dataset, scenario: str) -> str:
+    """The phase diagram's title: the paper's figure number only for a paper preset's own model."""
+    R_mm = dataset.attrs["param_R"] * _MM
+    if _is_other_model(dataset):  # not the paper's figure
+        subject = dataset.attrs.get("profile", f"R = {R_mm:g} mm")
+        return f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario},\n{subject}{_law_words(dataset)}"
+    return _numbered(f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario}, R = {R_mm:g} mm", dataset, PHASE_DIAGRAM_FIGURES)
 
 
 #: Resolution of the PNG files (dots per inch).

@@ -41,6 +41,7 @@ from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
 from mdr_events.theory import power_law, symbolic
+from mdr_events.theory.kinds import theory_of
 from mdr_events.validation import check_real, real_array, validate_alpha
 
 __all__ = ["coulomb_cap_ratio", "full_slip_shift", "full_slip_force", "virgin_force", "tangential_force", "loop_energy",
@@ -76,9 +77,8 @@ def _tau0_per_radius(friction: FrictionLaw, params: Parameters) -> float:
 
 
 def _radius(depth: float, profile: Profile) -> float:
-    if isinstance(profile, FlatPunch):
-        return profile.radius
-    return float(power_law.contact_radius(depth, profile, _NO_ADHESION, 0.0))
+    """The contact radius at ``depth`` (> 0) without adhesion (the flat punch's own)."""
+    return float(theory_of(profile).branch_radius(depth, profile, _NO_ADHESION, 0.0))
 
 
 #: The non-adhesive radius needs no material (any valid parameters serve :func:`power_law.contact_radius`).
@@ -103,8 +103,7 @@ def _virgin_curve(depth: float, friction: FrictionLaw, params: Parameters, profi
     radius = _radius(depth, profile)
     cap = _tau0_per_radius(friction, params) * radius
     kappa = coulomb_cap_ratio(friction, params)
-    full = friction.coulomb_mu * float(power_law.normal_force(depth, None if isinstance(profile, FlatPunch) else radius,
-                                                              profile, params))
+    full = friction.coulomb_mu * float(power_law.normal_force(depth, radius, profile, params))
 
     def curve(values: np.ndarray) -> np.ndarray:
         magnitude = np.abs(values)

@@ -14,6 +14,7 @@ from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.contact.friction import FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.contact.indenters import Profile, TabulatedProfile, profile_attrs
 from mdr_events.theory import analytic, mindlin, power_law, tabulated
+from mdr_events.theory.kinds import theory_of
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_choice, validate_alpha
 
@@ -95,10 +96,16 @@ def phase_diagram(
     friction = as_friction_law(friction)
     # (the closed forms overflow as the runs would: E = 1e-150 Pa gave d_crit = +inf at 438 angles with warnings)
     check_representable(params, profile, friction)
-    if not friction.is_default or isinstance(profile, TabulatedProfile):
-        return _numerical_phase_diagram(params, angles, scenario, profile, friction, coords)
-    if profile is not None:
-        return _profile_phase_diagram(params, angles, scenario, profile, coords)
+    if not friction.is_default:
+        return _friction_phase_diagram(params, angles, scenario, profile, friction, coords)
+    return _PAPER_LAW_PHASE_DIAGRAMS.get(type(profile), _profile_phase_diagram)(params, angles, scenario, profile,
+                                                                                coords)
+
+
+def _paper_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, profile: None,
+                         coords: dict) -> xr.Dataset:
+    """:func:`phase_diagram` of the paper's paraboloid and friction law: eqs. (17), (18) or (20), (21)
+    (:mod:`~mdr_events.theory.analytic`), Fig. 9a or 9b for a paper preset."""
     variables = {}
     if scenario == "A":
         for key, adhesive, eq in (("hertz", False, "(17)"), ("jkr", True, "(18)")):
@@ -168,42 +175,59 @@ def _profile_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str
                  **profile_attrs(profile))
 
 
-def _numerical_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, profile, friction: FrictionLaw,
+def _tabulated_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, profile: TabulatedProfile,
                              coords: dict) -> xr.Dataset:
-    """:func:`phase_diagram` of scenario A for another friction law (:mod:`~mdr_events.theory.mindlin`, without
-    adhesion) or a tabulated profile (:mod:`~mdr_events.theory.tabulated`); same variables and encoding."""
-    if isinstance(profile, TabulatedProfile) and not friction.is_default:
-        raise ValueError(f"friction={friction.law!r} is not allowed with a tabulated profile's phase diagram; allowed: "
-                         "'tau0'")
-    if scenario != "A" and isinstance(profile, TabulatedProfile):
+    """:func:`phase_diagram` of scenario A for a tabulated profile (:mod:`~mdr_events.theory.tabulated`); same
+    variables and encoding, ``nan`` where the onset lies past what the table reaches (unknown)."""
+    if scenario != "A":
         raise ValueError(f"scenario={scenario!r} is not allowed for the phase diagram of a tabulated profile; allowed: "
                          "'A' (scenario B's onset is not derived for it)")
+    kinds = {"hertz": ("non-adhesive", tabulated.d_crit_A(angles, profile, params, adhesion=False),
+                       tabulated.critical_angle_A(profile, params, adhesion=False)),
+             "jkr": ("adhesive (Heß)", tabulated.d_crit_A(angles, profile, params, adhesion=True),
+                     tabulated.critical_angle_A(profile, params, adhesion=True))}
+    depths = {key: np.where(angles >= 90.0, np.inf, np.asarray(depth, dtype=float))
+              for key, (_, depth, _) in kinds.items()}
+    return _onset_dataset_A(params, kinds, depths, coords, profile, as_friction_law(None))
+
+
+#: :func:`phase_diagram` under the paper's friction law, by the indenter's type (any other indenter:
+#: :func:`_profile_phase_diagram`, the closed forms of :mod:`~mdr_events.theory.power_law`).
+_PAPER_LAW_PHASE_DIAGRAMS = {type(None): _paper_phase_diagram, TabulatedProfile: _tabulated_phase_diagram}
+
+
+def _friction_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, profile, friction: FrictionLaw,
+                            coords: dict) -> xr.Dataset:
+    """:func:`phase_diagram` for another friction law (:mod:`~mdr_events.theory.mindlin`, without adhesion); same
+    variables and encoding, the adhesive ones ``nan``."""
+    if not theory_of(profile).friction_closed_forms:
+        raise ValueError(f"friction={friction.law!r} is not allowed with a tabulated profile's phase diagram; allowed: "
+                         "'tau0'")
     if scenario != "A":
         return _friction_phase_diagram_B(params, angles, profile, friction, coords)
+    kinds = {"hertz": (f"non-adhesive, friction law {friction.law!r}", mindlin.d_crit_A(angles, friction, params,
+                                                                                        profile),
+                       mindlin.critical_angle_A(friction, params, profile)),
+             "jkr": (f"adhesive, friction law {friction.law!r}: no closed form (nan)",
+                     np.full(angles.shape, np.nan), np.nan)}
+    hertz = np.asarray(kinds["hertz"][1], dtype=float)
+    depths = {"hertz": np.where(np.isnan(hertz) | (angles >= 90.0), np.inf, hertz),  # no onset while indenting
+              "jkr": np.asarray(kinds["jkr"][1], dtype=float)}
+    return _onset_dataset_A(params, kinds, depths, coords, profile, friction)
+
+
+def _onset_dataset_A(params: Parameters, kinds: dict, depths: dict[str, np.ndarray], coords: dict, profile,
+                     friction: FrictionLaw) -> xr.Dataset:
+    """Scenario A's phase diagram of the onset ``depths`` and the ``kinds`` (key -> words, depths as computed,
+    critical angle), stamped with the indenter and the friction law."""
     variables = {}
-    if isinstance(profile, TabulatedProfile):
-        kinds = {"hertz": ("non-adhesive", tabulated.d_crit_A(angles, profile, params, adhesion=False),
-                           tabulated.critical_angle_A(profile, params, adhesion=False)),
-                 "jkr": ("adhesive (Heß)", tabulated.d_crit_A(angles, profile, params, adhesion=True),
-                         tabulated.critical_angle_A(profile, params, adhesion=True))}
-    else:
-        kinds = {"hertz": (f"non-adhesive, friction law {friction.law!r}", mindlin.d_crit_A(angles, friction, params,
-                                                                                            profile),
-                           mindlin.critical_angle_A(friction, params, profile)),
-                 "jkr": (f"adhesive, friction law {friction.law!r}: no closed form (nan)",
-                         np.full(angles.shape, np.nan), np.nan)}
-    for key, (words, depth, _) in kinds.items():
-        depth = np.asarray(depth, dtype=float)
-        if isinstance(profile, TabulatedProfile):  # nan: the onset lies past what the table reaches (unknown)
-            depth = np.where(angles >= 90.0, np.inf, depth)
-        elif key == "hertz":
-            depth = np.where(np.isnan(depth) | (angles >= 90.0), np.inf, depth)  # no onset while indenting
-        variables[f"d_crit_{key}"] = ("alpha", depth, {"units": "m", "long_name": f"slip-onset depth, {words}"})
+    for key, (words, _, _) in kinds.items():
+        variables[f"d_crit_{key}"] = ("alpha", depths[key], {"units": "m", "long_name": f"slip-onset depth, {words}"})
     variables["d_max"] = ((), params.d_max, {"units": "m", "long_name": "maximum indentation depth"})
     for key, (words, _, angle) in kinds.items():
         variables[f"critical_angle_{key}"] = ((), float(angle), {"units": "degree",
                                                                   "long_name": f"critical angle, {words} (slip at d_max)"})
-    return stamp(xr.Dataset(variables, coords=coords), params, scenario=scenario, content=PHASE_DIAGRAM_CONTENT,
+    return stamp(xr.Dataset(variables, coords=coords), params, scenario="A", content=PHASE_DIAGRAM_CONTENT,
                  **profile_attrs(profile), **friction_attrs(friction))
 
 

@@ -16,9 +16,10 @@ from typing import Callable, NamedTuple
 
 from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
-from mdr_events.contact.indenters import Profile, TabulatedProfile
-from mdr_events.theory import analytic, mindlin, tabulated
+from mdr_events.contact.indenters import Profile
+from mdr_events.theory import analytic, mindlin
 from mdr_events.theory.branches import branch_radius, jump_off
+from mdr_events.theory.kinds import theory_of
 from mdr_events.validation import SCALE_MAX, SCALE_MIN
 
 __all__ = ["SCALE_MAX", "SCALE_MIN", "Scale", "run_scales", "check_representable"]
@@ -71,10 +72,8 @@ def run_scales(params: Parameters, profile: Profile | None = None, friction: Fri
 def _deepest_reached(params: Parameters, profile: Profile | None) -> float:
     """``d_max``, or a table's deepest reach if less (the depth beyond is refused by
     :func:`~mdr_events.models.indenters.check_reach`, naming the table)."""
-    if not isinstance(profile, TabulatedProfile):
-        return params.d_max
     try:
-        return min(params.d_max, tabulated.branch(profile, params, params.dgamma0).deepest)
+        return min(params.d_max, theory_of(profile).deepest(profile, params))
     except (ValueError, ArithmeticError):  # (the radius's own scale then names what fails)
         return params.d_max
 

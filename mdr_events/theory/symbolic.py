@@ -20,6 +20,12 @@ Symbols (all SI): ``x`` MDR coordinate, ``r`` radial coordinate, ``R``
 indenter radius, ``E_star``/``G_star`` effective moduli, ``tau0`` critical
 shear stress, ``dgamma`` work of adhesion, ``d`` indentation depth, ``d_max``
 turning depth, ``a`` contact radius, ``s = sqrt(a)``, ``alpha`` path angle.
+
+Why one module of about 760 lines: the on-disk cache of the derivations is keyed by the hash of this file's
+source (:func:`cache_path`), so everything that can change a derived relation (the symbols, the
+:class:`Relation` whose fields the cache stores, every derivation and its helpers) lives here, where an edit
+cannot leave a stale cache behind. Each derivation is split into sections of one step of the paper each
+(:func:`derive_afresh`).
 """
 
 from __future__ import annotations
@@ -318,15 +324,34 @@ def derive() -> dict[str, Relation]:
     return {rel.key: rel for rel in _cached("model", lambda: list(derive_afresh().values()))}
 
 
+#: What a derivation section is handed: it files one relation (in derivation order) and returns it.
+AddRelation = Callable[[Relation], Relation]
+
+
 def derive_afresh() -> dict[str, Relation]:
-    """Run every derivation with SymPy (about 4 s), bypassing any cache."""
+    """Run every derivation with SymPy (about 4 s), bypassing any cache.
+
+    The sections run in the paper's order, each adding its relations and handing on the expressions the
+    next ones build on; the relations come back by key in that order.
+    """
     out: dict[str, Relation] = {}
 
     def add(rel: Relation) -> Relation:
         out[rel.key] = rel
         return rel
 
-    # --- (3), (4): profiles -------------------------------------------------
+    g_parab = _derive_profiles(add)
+    displacement, depth_of_radius = _derive_adhesive_branch(add, g_parab)
+    force_pinned, force_jkr = _derive_normal_forces(add, displacement, depth_of_radius)
+    hertz_radius = _derive_branch_points(add, depth_of_radius, force_pinned, force_jkr)
+    critical_shift = _derive_tangential_springs(add, depth_of_radius)
+    _derive_scenario_A(add, depth_of_radius, hertz_radius, critical_shift)
+    _derive_scenario_B(add, depth_of_radius, hertz_radius, critical_shift)
+    return out
+
+
+def _derive_profiles(add: AddRelation) -> sp.Expr:
+    """(3), (4): the Abel transform and the profiles of the paraboloid and the cone; returns the paraboloid's."""
     g_abel = sp.Eq(
         g(x),
         x * sp.Integral(sp.Derivative(f(r), r) / sp.sqrt(x**2 - r**2), (r, 0, x)),
@@ -336,8 +361,11 @@ def derive_afresh() -> dict[str, Relation]:
     add(Relation("profile_paraboloid", "(4)", "MDR profile of the paraboloid f = r^2/(2R)", g(x), g_parab, (x, R)))
     g_cone = abel_transform(r * sp.tan(theta))
     add(Relation("profile_cone", "(3)", "MDR profile of the cone f = r tan(theta)", g(x), g_cone, (x, theta)))
+    return g_parab
 
-    # --- (7), (8), (9): Heß's rule gives JKR ---------------------------------
+
+def _derive_adhesive_branch(add: AddRelation, g_parab: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """(7), (8), (9): Heß's rule gives JKR; returns the springs' displacement and the branch's depth ``d(a)``."""
     displacement = d - g_parab  # (7), positive = compressed
     add(Relation("normal_displacement", "(7)", "normal spring displacement u_z = d - g(x)",
                  u_z, displacement, (d, x, R)))
@@ -351,16 +379,24 @@ def derive_afresh() -> dict[str, Relation]:
 
     add(Relation("jkr_depth_slope", "(9)", "slope dd/da of the adhesive branch (9)",
                  sp.Derivative(d, a), sp.diff(depth_of_radius, a), (a, R, E_star, dgamma)))
+    return displacement, depth_of_radius
 
-    # --- (10): normal force --------------------------------------------------
+
+def _derive_normal_forces(add: AddRelation, displacement: sp.Expr, depth_of_radius: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """(10): the normal force at any depth and radius and on the adhesive branch; returns both."""
     force_pinned = sp.expand(2 * E_star * sp.integrate(displacement, (x, 0, a)))
     add(Relation("normal_force", "(10)", "normal force of the springs in contact, any d and a",
                  F_N, force_pinned, (d, a, R, E_star)))
     force_jkr = sp.simplify(sp.expand(force_pinned.subs(d, depth_of_radius)))
     add(Relation("jkr_normal_force", "(10)", "normal force of the adhesive contact of radius a",
                  F_N, force_jkr, (a, R, E_star, dgamma)))
+    return force_pinned, force_jkr
 
-    # --- consequences of (9), (10) -------------------------------------------
+
+def _derive_branch_points(add: AddRelation, depth_of_radius: sp.Expr, force_pinned: sp.Expr,
+                          force_jkr: sp.Expr) -> sp.Expr:
+    """Consequences of (9), (10): Hertz's contact, the jump-in, the pull-off and the jump-off; returns Hertz's
+    radius ``a(d)``."""
     hertz_radius = sp.solve(sp.Eq(d, depth_of_radius.subs(dgamma, 0)), a)[0]
     add(Relation("hertz_radius", "(16)", "non-adhesive (Hertz) contact radius", a, hertz_radius, (d, R)))
     hertz_force = sp.simplify(force_pinned.subs(a, hertz_radius))
@@ -380,8 +416,12 @@ def derive_afresh() -> dict[str, Relation]:
                  d, sp.simplify(depth_of_radius.subs(a, a_jump_off)), (R, E_star, dgamma)))
     add(Relation("jump_off_force", "", "normal force at the jump-off under displacement control",
                  F_N, sp.simplify(force_jkr.subs(a, a_jump_off)), (R, dgamma)))
+    return hertz_radius
 
-    # --- (11)-(13): tangential springs ---------------------------------------
+
+def _derive_tangential_springs(add: AddRelation, depth_of_radius: sp.Expr) -> sp.Expr:
+    """(11)–(13): the tangential springs' critical shift, a fixed contact's fretting loop, and the branch's
+    integral over the radius (for attach maps); returns the critical shift ``ū(a)``."""
     # (11) τ = Σ G* Δx u_x / (π a²); stationary sliding: n springs all at ū, n Δx = 2a
     tau_stationary = (G_star * dx * n_springs * u_bar / (sp.pi * a**2)).subs(n_springs, 2 * a / dx)
     add(Relation("stationary_shear_stress", "(12)", "mean shear stress with every spring at ū",
@@ -390,22 +430,30 @@ def derive_afresh() -> dict[str, Relation]:
     jkr_depth_integral = sp.integrate(depth_of_radius.subs(a, x), (x, 0, a))
     add(Relation("critical_shift", "(13)", "critical spring shift ū(a)",
                  u_bar, critical_shift, (a, tau0, G_star)))
+    add(Relation("fretting_dissipated_energy", "", "energy dissipated per cycle x: −X → X → −X of a fixed "
+                 "contact (X > ū): the parallelogram's area", W, _fretting_loop_work(critical_shift),
+                 (a, X, tau0, G_star)))
+    add(Relation("jkr_depth_integral", "(9)", "integral of the branch (9) over the radius, for attach maps",
+                 sp.Integral(d, (a, 0, a)), jkr_depth_integral, (a, R, E_star, dgamma)))
+    return critical_shift
 
-    # fretting at a fixed contact: every spring shares one anchor, clipped to [x − ū, x + ū]; x: −X → X → −X
-    # (X > ū). F_x = 2G* a (x − Y) rises from −P with slope 2G* a to the plateau P = 2G* a ū, and back.
+
+def _fretting_loop_work(critical_shift: sp.Expr) -> sp.Expr:
+    """The work of one fretting cycle of a fixed contact: every spring shares one anchor, clipped to
+    ``[x − ū, x + ū]``; ``x: −X → X → −X`` (``X > ū``). ``F_x = 2G* a (x − Y)`` rises from ``−P`` with slope
+    ``2G* a`` to the plateau ``P = 2G* a ū``, and back."""
     plateau = 2 * G_star * a * u_bar
     rising = sp.integrate(-plateau + 2 * G_star * a * (x + X), (x, -X, -X + 2 * u_bar)) \
         + sp.integrate(plateau, (x, -X + 2 * u_bar, X))
     falling = sp.integrate(-plateau, (x, -X, X - 2 * u_bar)) \
         + sp.integrate(plateau - 2 * G_star * a * (X - x), (x, X - 2 * u_bar, X))
-    loop_work = sp.factor(sp.simplify((rising - falling).subs(u_bar, critical_shift)))
-    add(Relation("fretting_dissipated_energy", "", "energy dissipated per cycle x: −X → X → −X of a fixed "
-                 "contact (X > ū): the parallelogram's area", W, loop_work, (a, X, tau0, G_star)))
+    return sp.factor(sp.simplify((rising - falling).subs(u_bar, critical_shift)))
 
-    add(Relation("jkr_depth_integral", "(9)", "integral of the branch (9) over the radius, for attach maps",
-                 sp.Integral(d, (a, 0, a)), jkr_depth_integral, (a, R, E_star, dgamma)))
 
-    # --- (14), (17), (18): scenario A -----------------------------------------
+def _derive_scenario_A(add: AddRelation, depth_of_radius: sp.Expr, hertz_radius: sp.Expr,
+                       critical_shift: sp.Expr) -> None:
+    """(14), (17), (18): slip onset in scenario A, the critical angles of both scenarios, and the branch's radius
+    at a given depth as a quartic."""
     # on the path (14) x = d / tan α; slip starts when x reaches ū(a)
     onset_A = sp.Eq(d / tan_alpha, critical_shift)
     d_crit_A_hertz = _single_positive(sp.solve(onset_A.subs(a, hertz_radius), d), "(17)")
@@ -433,7 +481,10 @@ def derive_afresh() -> dict[str, Relation]:
     add(Relation("jkr_radius_quartic", "(9)", "contact radius at a given depth, quartic in s = sqrt(a)",
                  depth_quartic, sp.Integer(0), (s, d, R, E_star, dgamma), variable=s))
 
-    # --- (19), (20), (21): scenario B -----------------------------------------
+
+def _derive_scenario_B(add: AddRelation, depth_of_radius: sp.Expr, hertz_radius: sp.Expr,
+                       critical_shift: sp.Expr) -> None:
+    """(19), (20), (21): slip onset in scenario B, out of ``d_max`` (pull-off) and further in (indentation)."""
     onset_B = sp.Eq((d_max - d) / tan_alpha, critical_shift.subs(a, hertz_radius))
     kk = sp.pi * tau0 * sp.sqrt(R) * tan_alpha / (2 * G_star)
     squared = sp.expand((onset_B.lhs**2 - onset_B.rhs**2) * tan_alpha**2)
@@ -459,7 +510,6 @@ def derive_afresh() -> dict[str, Relation]:
                      quartic, sp.Integer(0), (s, tan_alpha, d_max, R, tau0, G_star, E_star, dgamma), variable=s))
         add(Relation(f"slip_depth_B_{branch}", "(21)", "depth of slip onset from its contact radius, scenario B",
                      d, d_max + sign * tan_alpha * critical_shift, (a, tan_alpha, d_max, tau0, G_star)))
-    return out
 
 
 @functools.cache
@@ -507,12 +557,27 @@ def power_law_model_afresh() -> dict[str, Relation]:
     """The derivation of :func:`derive_power_law_model` with SymPy (about 8 s), bypassing any cache."""
     out: dict[str, Relation] = {}
 
-    def add(rel: Relation) -> None:
+    def add(rel: Relation) -> Relation:
         out[rel.key] = rel
+        return rel
 
     profile = derive_power_law().rhs  # g(x) = κ c xⁿ
-    # (3) with r = x sin θ: g(x) = x ∫_0^{π/2} f'(x sin θ) dθ, no singularity at r = x (the tabulated profile's
-    # quadrature); checked on power laws of whole exponents (SymPy integrates sinⁿ⁻¹ θ for those, not for a symbol n)
+    _derive_angular_abel_transform(add, profile)
+    hess, hertz_radius = _derive_power_law_branch(add, profile)
+    # (17) for the power law: on the path (14) x = d / tan α slip starts when x reaches ū(a) = K a, a = a(d);
+    # d^((n−1)/n) ∝ tan α: a closed form for n ≠ 1. The cone (n = 1) slides from first contact or never.
+    critical_shift = derive()["critical_shift"].rhs  # (13)
+    onset = sp.Eq(d / tan_alpha, critical_shift.subs(a, hertz_radius))
+    add(Relation("power_law_d_crit_A_hertz", "(17)", "slip-onset depth, scenario A, non-adhesive power law "
+                 "(n != 1)", d, _single_positive(sp.solve(onset, d), "power-law (17)"), (tan_alpha, c, n, tau0, G_star)))
+    _derive_flat_punch(add, hess, critical_shift)
+    return out
+
+
+def _derive_angular_abel_transform(add: AddRelation, profile: sp.Expr) -> None:
+    """(3) with ``r = x sin θ``: ``g(x) = x ∫_0^{π/2} f'(x sin θ) dθ``, no singularity at ``r = x`` (the tabulated
+    profile's quadrature); checked against ``profile``, the power law's ``g(x)``, on whole exponents (SymPy
+    integrates ``sinⁿ⁻¹ θ`` for those, not for a symbol ``n``)."""
     angular = x * sp.Integral(sp.Subs(sp.Derivative(f(r), r), r, x * sp.sin(theta)), (theta, 0, sp.pi / 2))
     for exponent in (1, 2, 3, 4):
         power = c * r**exponent
@@ -521,6 +586,11 @@ def power_law_model_afresh() -> dict[str, Relation]:
             raise RuntimeError(f"the angular form of the Abel transform does not give g(x) of c r^{exponent}")
     add(Relation("abel_transform_angular", "(3)", "Abel transform with r = x sin(theta): no singular integrand",
                  g(x), angular))
+
+
+def _derive_power_law_branch(add: AddRelation, profile: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """(7)–(10) for the power law of MDR profile ``profile``: the adhesive branch, its forces, its jump-in,
+    pull-off and jump-off; returns Heß's limit (8) and the non-adhesive radius ``a(d)``."""
     displacement = d - profile  # (7)
     hess = sp.sqrt(2 * sp.pi * a * dgamma / E_star)  # (8)
     depth_of_radius = sp.solve(sp.Eq(-displacement.subs(x, a), hess), d)[0]
@@ -541,6 +611,12 @@ def power_law_model_afresh() -> dict[str, Relation]:
     hertz_radius = _single_positive(sp.solve(sp.Eq(d, depth_of_radius.subs(dgamma, 0)), a), "power-law radius")
     add(Relation("power_law_hertz_radius", "(16)", "non-adhesive contact radius of the power law",
                  a, hertz_radius, (d, c, n)))
+    _derive_power_law_branch_points(add, depth_of_radius, force_branch)
+    return hess, hertz_radius
+
+
+def _derive_power_law_branch_points(add: AddRelation, depth_of_radius: sp.Expr, force_branch: sp.Expr) -> None:
+    """The power law's jump-in, pull-off (force control) and jump-off (displacement control) on its branch."""
     fixed = (c, n, E_star, dgamma)
     add(Relation("power_law_jump_in_radius", "", "contact radius at zero depth (jump-in), power law",
                  a, _single_positive(sp.solve(sp.Eq(depth_of_radius, 0), a), "power-law jump-in"), fixed))
@@ -556,14 +632,11 @@ def power_law_model_afresh() -> dict[str, Relation]:
                  d, sp.simplify(depth_of_radius.subs(a, a_jump_off)), fixed))
     add(Relation("power_law_jump_off_force", "", "normal force at the jump-off under displacement control, "
                  "power law", F_N, sp.simplify(force_branch.subs(a, a_jump_off)), fixed))
-    # (17) for the power law: on the path (14) x = d / tan α slip starts when x reaches ū(a) = K a, a = a(d);
-    # d^((n−1)/n) ∝ tan α: a closed form for n ≠ 1. The cone (n = 1) slides from first contact or never.
-    critical_shift = derive()["critical_shift"].rhs  # (13)
-    onset = sp.Eq(d / tan_alpha, critical_shift.subs(a, hertz_radius))
-    add(Relation("power_law_d_crit_A_hertz", "(17)", "slip-onset depth, scenario A, non-adhesive power law "
-                 "(n != 1)", d, _single_positive(sp.solve(onset, d), "power-law (17)"), (tan_alpha, c, n, tau0, G_star)))
 
-    # --- the flat punch of radius a: g = 0 under it, every spring compressed by d ----------------------
+
+def _derive_flat_punch(add: AddRelation, hess: sp.Expr, critical_shift: sp.Expr) -> None:
+    """The flat punch of radius ``a``: ``g = 0`` under it, every spring compressed by ``d``; its force, Kendall's
+    pull-off (Heß's limit ``hess`` at every spring at once) and scenario A's onset (``critical_shift`` (13))."""
     punch_force = 2 * E_star * sp.integrate(d, (x, 0, a))
     add(Relation("flat_punch_normal_force", "(10)", "normal force of a flat punch of radius a at depth d",
                  F_N, punch_force, (d, a, E_star)))
@@ -575,7 +648,6 @@ def power_law_model_afresh() -> dict[str, Relation]:
     # every spring attaches at first contact at one x: all reach ū together (onset is full slip)
     add(Relation("flat_punch_d_crit_A", "(17)", "slip-onset (and full-slip) depth, scenario A, flat punch",
                  d, sp.solve(sp.Eq(d / tan_alpha, critical_shift), d)[0], (a, tan_alpha, tau0, G_star)))
-    return out
 
 
 #: Keys of the friction-law relations (:func:`derive_friction_model`).

@@ -423,7 +423,7 @@ def test_re_entry_in_the_step_the_contact_comes_apart_goes_on(paper):
 # ----------------------------------------------------------------------------------------------
 # The stepping kernel: exact running sums, the rules stepped spring by spring, batches
 
-from mdr_events.models import discrete  # noqa: E402  (the kernel's internals)
+from mdr_events.models import discrete, spring_groups  # noqa: E402  (the kernel's internals)
 
 #: Spring spacing of the long runs: about 155 springs per side at d_max.
 LONG_DX = 20e-6
@@ -470,7 +470,7 @@ def test_running_sums_equal_a_full_re_sum_after_a_million_steps(paper):
     dt = (path.duration - path.first_contact_time()) / 1_000_000
     raw = run_discrete(paper, [path], LONG_DX, dt)
     run = discrete._prepare(paper, [path], LONG_DX, dt, discrete.paraboloid_profile(paper))
-    springs = discrete._Springs()
+    springs = spring_groups.SpringGroups()
     last, counts, sums, sliding = step_case(discrete._run_case, run, springs=springs)
     assert last == 1_000_000 == raw["time"].size - 1
     m = int(counts[-1])
@@ -483,7 +483,7 @@ def test_running_sums_equal_a_full_re_sum_after_a_million_steps(paper):
     resummed = 2.0 * p.E_star * dx * math.fsum(depth - g)
     assert abs(normal[-1] - resummed) <= SUM_RTOL * np.abs(normal).max()
 
-    position = discrete._scaled(run.x[-1:, 0], run.grid.bits)[0]
+    position = spring_groups.scaled(run.x[-1:, 0], run.grid.bits)[0]
     shifts = springs.shifts(position, m)
     assert len(shifts) == m
     tangential = raw["tangential_force"][0]
@@ -496,7 +496,7 @@ def test_running_sums_equal_a_full_re_sum_after_a_million_steps(paper):
     assert sum(abs(u) == cap for u in shifts) == sliding[-1] == round(raw["sliding_fraction"][0, -1] * m)
     assert len(set(shifts)) > 10  # springs that attached along the last stroke: many shifts
     entries = len(springs.parent) + len(springs.lows) + len(springs.highs)
-    assert entries <= 8 * run.grid.n_springs + discrete._Springs.SLACK
+    assert entries <= 8 * run.grid.n_springs + spring_groups.SpringGroups.SLACK
 
 
 REFERENCE_PATHS = {
@@ -582,8 +582,8 @@ def test_the_integer_scale_holds_every_position_exactly():
     correctly rounded float."""
     values = np.array([0.0, 5e-324, -1e-300, 1e-20, 0.1, -1.5, 3.0e3, 2.0 / 3.0])
     for chosen in (values[3:], values):  # bits small enough for ldexp; subnormals need the fallback
-        bits = discrete._scale_bits(chosen)
-        scaled = discrete._scaled(chosen, bits)
-        assert [discrete._unscaled(v, bits) for v in scaled] == chosen.tolist()
-        assert discrete._unscaled(sum(scaled), bits) == math.fsum(chosen)
-    assert discrete._scale_bits(values) > 1000 > discrete._scale_bits(values[3:])
+        bits = spring_groups.scale_bits(chosen)
+        scaled = spring_groups.scaled(chosen, bits)
+        assert [spring_groups.unscaled(v, bits) for v in scaled] == chosen.tolist()
+        assert spring_groups.unscaled(sum(scaled), bits) == math.fsum(chosen)
+    assert spring_groups.scale_bits(values) > 1000 > spring_groups.scale_bits(values[3:])

@@ -226,8 +226,10 @@ def make_branch(params: Parameters, work: float, profile: PowerLaw | FlatPunch |
     """The branch of ``work`` for ``profile`` (``None``: the paraboloid of ``params.R``, the paper's)."""
     if profile is None:
         return Branch(params, work)
-    if isinstance(profile, FlatPunch):
-        return FlatPunchBranch(params, work, profile)
-    if isinstance(profile, TabulatedProfile):
-        return TabulatedBranch(params, work, profile)
-    return PowerLawBranch(params, work, profile)
+    return _BRANCH_CLASSES.get(type(profile), PowerLawBranch)(params, work, profile)
+
+
+#: The branch class of each kind of indenter but the paper's paraboloid, by its type (anything else is handed to
+#: :class:`PowerLawBranch`, whose relations name what they take).
+_BRANCH_CLASSES: dict[type, type[Branch]] = {PowerLaw: PowerLawBranch, FlatPunch: FlatPunchBranch,
+                                             TabulatedProfile: TabulatedBranch}

@@ -1,0 +1,135 @@
+"""Each kind of indenter's theory, looked up by its type in one place (:func:`theory_of`).
+
+The indenter types (:mod:`mdr_events.contact.indenters`) are data and sit below the theory, so what the theory
+computes for each kind is filed here by type: the contact radius of a depth on an adhesive branch, the branch's
+jump-off, how deep the indenter reaches, the springs' profile ``g(x)``, the critical angles of the paper's friction
+law ``τ0``, and whether the closed forms of the other friction laws (:mod:`mdr_events.theory.mindlin`) serve it.
+The layers above ask for these by name instead of testing the type. ``None`` is the paper's paraboloid of
+``Parameters.R``, served by the paper's own functions (:mod:`mdr_events.theory.analytic`) bit for bit.
+
+A new kind of indenter is one more entry of :data:`_THEORIES` (with its relations in
+:mod:`mdr_events.theory.symbolic` and its closed forms in a module of its own).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile, TabulatedProfile
+from mdr_events.parameters import Parameters
+from mdr_events.theory import analytic, power_law, symbolic, tabulated
+
+__all__ = ["IndenterTheory", "theory_of"]
+
+#: The springs' profile ``g(x)`` as a function of positions (m).
+SpringProfile = Callable[[np.ndarray], np.ndarray]
+
+
+@dataclass(frozen=True)
+class IndenterTheory:
+    """What the theory computes for one kind of indenter (``profile`` is the indenter, ``None`` the paraboloid).
+
+    Attributes
+    ----------
+    branch_radius : callable
+        ``(depth, profile, params, work_of_adhesion)``: the contact radius on the branch of ``work_of_adhesion`` at
+        ``depth`` (``nan`` below its jump-off; the flat punch's own radius down to it).
+    jump_off : callable
+        ``(profile, params, work_of_adhesion)``: the branch's jump-off under displacement control
+        (``contact_radius``, ``depth``, ``normal_force``).
+    deepest : callable
+        ``(profile, params)``: the deepest depth a path may reach (m): ``+inf`` for an indenter of any extent, a
+        table's where the contact radius on the ``Δγ0`` branch reaches its last radius.
+    spring_profile : callable
+        ``(profile, params)``: the springs' profile ``g(x)`` as derived by :mod:`~mdr_events.theory.symbolic`.
+    critical_angle : callable
+        ``(profile, params, scenario)``: scenario A's or B's adhesive critical angle under ``τ0`` (degrees).
+    friction_closed_forms : bool
+        Whether :mod:`mdr_events.theory.mindlin`'s closed forms of the other friction laws take the kind.
+    """
+
+    branch_radius: Callable[..., object]
+    jump_off: Callable[[Profile | None, Parameters, float], dict[str, float]]
+    deepest: Callable[[Profile | None, Parameters], float]
+    spring_profile: Callable[[Profile | None, Parameters], SpringProfile]
+    critical_angle: Callable[[Profile | None, Parameters, str], float]
+    friction_closed_forms: bool
+
+
+def _any_depth(profile: Profile | None, params: Parameters) -> float:
+    """An indenter of any extent reaches any depth."""
+    return math.inf
+
+
+def _paraboloid_springs(profile: None, params: Parameters) -> SpringProfile:
+    """``g(x) = x²/R`` (4)."""
+    relation = symbolic.relation("profile_paraboloid")
+    return lambda x: relation.numeric(x, params.R)
+
+
+def _power_law_springs(profile: PowerLaw, params: Parameters) -> SpringProfile:
+    """``g(x) = κ c |x|ⁿ`` (3)."""
+    return lambda x: power_law.equivalent_profile(x, profile)
+
+
+def _flat_punch_springs(profile: FlatPunch, params: Parameters) -> SpringProfile:
+    """``0`` under the punch's face and ``+inf`` beyond it (no spring there is ever touched)."""
+    return lambda x: np.where(np.abs(np.asarray(x, dtype=float)) <= profile.radius, 0.0, np.inf)
+
+
+def _power_law_critical_angle(profile: PowerLaw | FlatPunch, params: Parameters, scenario: str) -> float:
+    return power_law.critical_angle_A(profile, params) if scenario == "A" else power_law.critical_angle_B(profile,
+                                                                                                          params)
+
+
+def _table_critical_angle(profile: TabulatedProfile, params: Parameters, scenario: str) -> float:
+    if scenario != "A":
+        raise ValueError(f"scenario={scenario!r} is not allowed for a tabulated profile's critical angle; allowed: "
+                         "'A' (scenario B's onset on a table is not derived yet)")
+    return tabulated.critical_angle_A(profile, params)
+
+
+_PARABOLOID = IndenterTheory(
+    branch_radius=lambda depth, profile, params, work: analytic.jkr_contact_radius(depth, params, work),
+    jump_off=lambda profile, params, work: analytic.jump_off(params, work),
+    deepest=_any_depth,
+    spring_profile=_paraboloid_springs,
+    critical_angle=lambda profile, params, scenario: analytic.critical_angle(params, scenario),
+    friction_closed_forms=True)
+_POWER_LAW = IndenterTheory(
+    branch_radius=power_law.contact_radius,
+    jump_off=power_law.jump_off,
+    deepest=_any_depth,
+    spring_profile=_power_law_springs,
+    critical_angle=_power_law_critical_angle,
+    friction_closed_forms=True)
+_FLAT_PUNCH = IndenterTheory(
+    branch_radius=power_law.flat_punch_radius,
+    jump_off=power_law.jump_off,
+    deepest=_any_depth,
+    spring_profile=_flat_punch_springs,
+    critical_angle=_power_law_critical_angle,
+    friction_closed_forms=True)
+_TABLE = IndenterTheory(
+    branch_radius=tabulated.contact_radius,
+    jump_off=tabulated.jump_off,
+    deepest=lambda profile, params: tabulated.branch(profile, params, params.dgamma0).deepest,
+    spring_profile=lambda profile, params: tabulated.equivalent(profile),
+    critical_angle=_table_critical_angle,
+    friction_closed_forms=False)
+
+#: Each kind's theory by the indenter's type (``NoneType``: the paraboloid of ``Parameters.R``).
+_THEORIES: dict[type, IndenterTheory] = {type(None): _PARABOLOID, PowerLaw: _POWER_LAW, FlatPunch: _FLAT_PUNCH,
+                                         TabulatedProfile: _TABLE}
+
+
+def theory_of(profile: Profile | None) -> IndenterTheory:
+    """The theory of ``profile``'s kind (``None``: the paraboloid of ``Parameters.R``).
+
+    Anything else is handed to the power law's functions, which name what they take (``TypeError``).
+    """
+    return _THEORIES.get(type(profile), _POWER_LAW)

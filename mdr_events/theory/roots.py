@@ -1,0 +1,206 @@
+"""The one polynomial root finder of the closed forms: the unique positive root of a polynomial with one sign
+change (the cubic of (18), the quartics of (9) and (21)) by a vectorised, safeguarded Newton iteration from an
+upper bound (no Python loop over angles), with a path for Python floats (the continuum's hot loop) and a bracketed
+fallback. Kept apart from :mod:`mdr_events.theory.analytic`, which evaluates the relations it solves.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["positive_polynomial_root"]
+
+_EPS = np.finfo(float).eps
+_FLOAT_EPS = float(_EPS)
+#: Scalar types recognised at once for the Python-float path of :func:`positive_polynomial_root`
+#: (``numpy.float64`` is a ``float``).
+_SCALARS = (float, int)
+
+
+def _horner(coefficients, x):
+    """Value and derivative of the polynomial at ``x`` (Horner's scheme)."""
+    value = coefficients[0] * x + coefficients[1]
+    slope = coefficients[0]
+    for coefficient in coefficients[2:]:
+        slope = slope * x + value
+        value = value * x + coefficient
+    return value, slope
+
+
+_ROOTS = {1: lambda v: v, 2: np.sqrt, 3: np.cbrt}
+
+
+def _upper_root_bound(coeffs: list) -> np.ndarray:
+    """An upper bound of the positive roots of a monic polynomial, elementwise.
+
+    For every positive term ``c_j s^j`` above which no coefficient is
+    negative, ``p(s) > 0`` as soon as ``c_j s^j`` beats each of the ``m``
+    lower terms ``m |c_i| s^i``, i.e. for
+    ``s >= max_i (m |c_i| / c_j)^(1/(j-i))``; the smallest such bound is used.
+    It is tight where one positive term dominates, e.g. ``P s²`` of (21) near
+    α = 90°, where a bound on all root moduli (Fujiwara) would be orders of
+    magnitude too large. Coefficients that are the scalar 0 are skipped.
+    """
+    present = [i for i, cf in enumerate(coeffs) if not (np.ndim(cf) == 0 and cf == 0)]
+    bound = np.inf
+    nothing_negative_above = True
+    for j in present[:-1]:
+        cj = coeffs[j]
+        lower = [i for i in present if i > j]
+        m = float(len(lower))
+        candidate = 0.0
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for i in lower:
+                ratio = m * np.abs(coeffs[i]) / cj
+                root = _ROOTS.get(i - j, lambda v, e=1.0 / (i - j): v**e)
+                candidate = np.maximum(candidate, root(ratio))
+        if j == 0:
+            bound = candidate
+        else:
+            usable = nothing_negative_above & (cj > 0.0)
+            bound = np.where(usable, np.minimum(bound, candidate), bound)
+        nothing_negative_above = nothing_negative_above & (cj >= 0.0)
+    return bound
+
+
+def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100, rtol: float = 4 * _EPS):
+    """Largest positive root of monic polynomials, vectorised over their coefficients.
+
+    Parameters
+    ----------
+    coefficients : sequence of array_like
+        ``[1, c_{n-1}, ..., c_0]`` (highest power first), each broadcastable
+        to the common shape of the problem.
+    lower : array_like
+        A point with ``p(lower) <= 0``: the root sought is the largest root,
+        which lies above it (0 where ``c_0 <= 0``; the minimum of ``p`` for a
+        polynomial with two positive roots).
+    max_iterations : int
+        Safety bound; convergence takes 4–8 iterations in practice.
+    rtol : float
+        Relative step at which the iteration stops (default 4 ulp).
+
+    Returns
+    -------
+    numpy.ndarray or float
+        The root, converged to ``rtol``; a ``float`` when every coefficient and
+        ``lower`` are scalars.
+
+    Notes
+    -----
+    Newton's method starts from an upper bound of the roots
+    (:func:`_upper_root_bound`). Where ``p`` is convex between the root and
+    the start (true for every polynomial of this model), the iterates descend
+    monotonically onto the largest root. An element whose iterate ever falls
+    where ``p < 0`` (an overshoot, so not convex there) is solved again with
+    a bracketed Newton–bisection iteration on ``[lower, bound]``.
+
+    Scalars take the same iteration in Python floats (:func:`_scalar_root`), about
+    50 times faster than NumPy on one element: the continuum method calls it from
+    its right-hand side.
+    """
+    if len(coefficients) < 2:
+        raise ValueError("positive_polynomial_root needs a polynomial of degree >= 1")
+    if isinstance(lower, _SCALARS) and all(isinstance(cf, _SCALARS) for cf in coefficients) \
+            or np.ndim(lower) == 0 and all(np.ndim(cf) == 0 for cf in coefficients):
+        return _scalar_root([float(cf) for cf in coefficients], float(lower), max_iterations, rtol)
+    coeffs = [np.asarray(cf, dtype=float) for cf in coefficients]
+    shape = np.broadcast_shapes(*[cf.shape for cf in coeffs], np.shape(lower))
+    lower = np.broadcast_to(np.asarray(lower, dtype=float), shape)
+    start = np.maximum(_upper_root_bound(coeffs), lower) * (1.0 + 8 * _EPS)
+    x = np.broadcast_to(start, shape).copy()
+    # in-place buffers: for large arrays allocation, not arithmetic, is the cost
+    value, slope, step, tolerance = (np.empty(shape) for _ in range(4))
+    overshoot = np.zeros(shape, dtype=bool)
+    for _ in range(max_iterations):
+        np.multiply(x, coeffs[0], out=value)
+        value += coeffs[1]
+        slope[...] = coeffs[0]
+        for coefficient in coeffs[2:]:
+            slope *= x
+            slope += value
+            value *= x
+            value += coefficient
+        np.divide(value, slope, out=step)
+        x -= step
+        np.abs(x, out=tolerance)
+        tolerance *= rtol
+        overshoot |= step < -tolerance  # an upward step: p < 0 beyond rounding
+        np.abs(step, out=step)
+        if np.all(step <= tolerance):
+            break
+    redo = overshoot | ~np.isfinite(x)
+    if np.any(redo):
+        x[redo] = _bracketed_root([np.broadcast_to(cf, shape)[redo] for cf in coeffs],
+                                  lower[redo], start[redo], max_iterations)
+    return x
+
+
+def _scalar_root(coeffs: list[float], lower: float, max_iterations: int, rtol: float) -> float:
+    """:func:`positive_polynomial_root` for one polynomial, in Python floats.
+
+    Newton's method descends from the bound of :func:`_upper_root_bound` (here for
+    floats, :func:`_scalar_upper_root_bound`) and never below ``lower``; an iterate
+    where ``p < 0`` (an overshoot) hands over to the bracketed iteration on
+    ``[lower, bound]``.
+    """
+    rtol = float(rtol)  # Python floats throughout: NumPy scalars would make every step ten times dearer
+    start = max(_scalar_upper_root_bound(coeffs), lower) * (1.0 + 8 * _FLOAT_EPS)
+    x = start
+    for _ in range(max_iterations):
+        value, slope = _horner(coeffs, x)
+        step = value / slope if slope > 0.0 else -math.inf
+        if step < -rtol * abs(x):  # an upward step: p < 0 beyond rounding (an overshoot), or a fold
+            root = _bracketed_root([np.array([cf]) for cf in coeffs], np.array([lower]), np.array([start]),
+                                   max_iterations)
+            return float(root[0])
+        x_new = max(x - step, lower)
+        if abs(x_new - x) <= rtol * abs(x_new):
+            return x_new
+        x = x_new
+    return x
+
+
+def _scalar_upper_root_bound(coeffs: list[float]) -> float:
+    """:func:`_upper_root_bound` of one polynomial, in floats (the same rule, term by term)."""
+    present = [i for i, cf in enumerate(coeffs) if cf != 0.0]
+    bound = math.inf
+    nothing_negative_above = True
+    for j in present[:-1]:
+        cj = coeffs[j]
+        lower = [i for i in present if i > j]
+        if cj > 0.0 and (nothing_negative_above or j == 0):
+            candidate = max((len(lower) * abs(coeffs[i]) / cj) ** (1.0 / (i - j)) for i in lower)
+            bound = candidate if j == 0 else min(bound, candidate)
+        nothing_negative_above = nothing_negative_above and cj >= 0.0
+    return bound
+
+
+def _bracketed_root(coeffs, lo, hi, max_iterations):
+    """Newton steps kept inside ``[lo, hi]`` (``p(lo) <= 0 < p(hi)``), bisection otherwise."""
+    lo, hi = lo.copy(), hi.copy()
+    x = hi.copy()
+    for _ in range(4 * max_iterations):
+        value, slope = _horner(coeffs, x)
+        below = value <= 0.0
+        lo = np.where(below, x, lo)
+        hi = np.where(below, hi, x)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            candidate = x - value / slope
+        inside = (candidate >= lo) & (candidate <= hi)
+        candidate = np.where(inside, candidate, 0.5 * (lo + hi))
+        # converged; or the bracket has closed, or p(x) is zero to its evaluation error (near a
+        # double root, e.g. at the pull-off fold, Newton is slow and the root is only this accurate)
+        noise, _ = _horner([np.abs(cf) for cf in coeffs], np.abs(x))
+        done = np.all((np.abs(candidate - x) <= 4 * _EPS * np.abs(candidate)) | (hi - lo <= 4 * _EPS * np.abs(hi))
+                      | (np.abs(value) <= 8 * _EPS * noise))
+        x = candidate
+        if done:
+            break
+    return x
+
+
+# ----------------------------------------------------------------------------
+# normal contact, eqs. (7)-(10), (16)
