@@ -14,7 +14,7 @@ forms, ``power_law`` those of other indenters, ``tabulated`` a table's, ``mindli
 diagrams) → ``models`` (``paths``, ``discrete`` springs,
 ``continuum`` event-driven and exact, ``simulate``) → ``analysis``
 (``crosscheck``, ``convergence``, ``validate``, ``fit``, ``sweep``) → ``plotting`` → ``app`` (``cli``,
-``study``, ``report``, ``result_files``).
+``study``, ``result_files``; beside it ``reproduction``, the sections of ``results/``).
 """
 
 from mdr_events._version import __version__

@@ -2,7 +2,8 @@
 
 Layers, bottom to top: the foundation (``parameters``, ``validation``, ``limits``, ``_version``), ``contact`` (the
 physical model as data), ``io``,
-``theory``, ``models`` (with ``models/continuum``), ``analysis``, ``plotting``, ``app``. A module may
+``theory``, ``models`` (with ``models/continuum``), ``analysis``, ``plotting``, ``app`` (with ``reproduction``, the
+paper's reproduction, a folder of its own at the same level). A module may
 import from its own layer and those below. Every import counts, also one inside a function or under
 ``TYPE_CHECKING``. ``mdr_events/__init__.py`` (the public API) and ``_version.py`` are exempt as
 importers; importing the package itself (``from mdr_events import ...``) from a module is importing
@@ -23,6 +24,8 @@ PACKAGE = Path(mdr_events.__file__).resolve().parent
 #: Layers from the bottom: the first component(s) of a module's name under mdr_events -> its layer.
 LAYERS = ("foundation", "contact", "io", "theory", "models", "analysis", "plotting", "app", "package")
 FOUNDATION_MODULES = ("parameters", "validation", "limits", "_version")
+#: Folders that sit at the level of a layer without being named after it: folder -> its layer.
+FOLDER_LAYERS = {"reproduction": "app"}
 EXEMPT_IMPORTERS = ("mdr_events", "mdr_events._version")
 
 
@@ -37,6 +40,8 @@ def layer_of(module: str) -> str:
         return "foundation"
     if parts[1] in LAYERS[1:-1]:
         return parts[1]
+    if parts[1] in FOLDER_LAYERS:
+        return FOLDER_LAYERS[parts[1]]
     raise ValueError(f"{module} belongs to no layer: add it to tests/test_layers.py")
 
 
@@ -100,7 +105,11 @@ def test_every_layer_has_modules():
     ("mdr_events.models.continuum.solve", "from ...app.cli import main", ["mdr_events.app.cli (app)"]),
     ("mdr_events.models.continuum", "from .solve import run_continuum\nfrom ..paths import Path", []),
     ("mdr_events.analysis.crosscheck", "from mdr_events.models.simulate import simulate\nimport numpy", []),
-], ids=["io-plotting", "in-function", "type-checking", "package-itself", "relative-up", "relative-down", "down"])
+    ("mdr_events.reproduction.runner", "from mdr_events.app.result_files import write_text", []),
+    ("mdr_events.plotting.figures", "from mdr_events.reproduction.fretting import FRETTING_STEM",
+     ["mdr_events.reproduction.fretting (app)"]),
+], ids=["io-plotting", "in-function", "type-checking", "package-itself", "relative-up", "relative-down", "down",
+        "reproduction-app", "plotting-reproduction"])
 def test_an_upward_import_is_found(module, source, expected):
     is_package = module == "mdr_events.models.continuum"
     assert upward_imports(source, module, is_package) == expected

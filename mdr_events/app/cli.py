@@ -32,7 +32,7 @@ import matplotlib
 
 from mdr_events.limits import DEFAULT_LIMITS, LIMIT_UNITS, Limits, parse_limit
 from mdr_events._version import __version__
-from mdr_events.app.report import reproduce
+from mdr_events.reproduction import reproduce
 from mdr_events.app.result_files import write_phase_diagram, write_simulation
 from mdr_events.analysis.fit import FREE_NAMES, fit
 from mdr_events.analysis.validate import TIME_ORIGINS, validate

@@ -44,7 +44,7 @@ from mdr_events.theory.phase import phase_diagram
 from mdr_events.validation import shown
 
 __all__ = ["FileStatus", "FileOutcome", "write_dataset", "write_figure", "write_text", "write_phase_diagram",
-           "write_simulation", "event_log_csv", "event_logs_agree", "describe_outcomes"]
+           "write_phase_diagram_dataset", "write_simulation", "event_log_csv", "event_logs_agree", "describe_outcomes"]
 
 
 class FileStatus(enum.Enum):
@@ -159,6 +159,15 @@ def write_phase_diagram(params: Parameters, scenario: str, out: str | os.PathLik
     check_output_stem("stem", stem)
     dataset = phase_diagram(params, scenario=scenario, profile=profile, friction=friction)
     dataset.attrs.update(attrs or {})
+    return write_phase_diagram_dataset(dataset, directory, stem, keep_agreeing)
+
+
+def write_phase_diagram_dataset(dataset: xr.Dataset, out: str | os.PathLike, stem: str,
+                                keep_agreeing: bool = False) -> list[FileOutcome]:
+    """Write a computed phase diagram (:func:`mdr_events.theory.phase.phase_diagram`) as ``stem.nc`` and its figure
+    as ``stem.png``, both together; the directory and the stem are checked and the figure drawn first."""
+    directory = prepare_output_directory(out, "out")
+    check_output_stem("stem", stem)
     nc = directory / f"{stem}.nc"
     existing = _agreeing_file(dataset, nc, keep_agreeing)
     png = figure_png(plot_phase_diagram(dataset if existing is None else existing).figure)

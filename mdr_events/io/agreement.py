@@ -307,7 +307,7 @@ def accuracy_of(dataset: xr.Dataset, name: str) -> Accuracy:
     """
     declared = _declared(dataset, 0)
     if name not in declared:
-        study = f" (study={dataset.attrs['study']!r}: its module declares them, e.g. mdr_events.app.report_data for " \
+        study = f" (study={dataset.attrs['study']!r}: its module declares them, e.g. mdr_events.reproduction for " \
             "the studies of results/; import it first)" if "study" in dataset.attrs else ""
         raise ValueError(f"variable {name!r} of content={dataset.attrs.get('content')!r} has no declared accuracy"
                          f"{study}; allowed: variables declared with mdr_events.io.agreement.register_accuracy")

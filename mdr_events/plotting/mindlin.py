@@ -1,4 +1,4 @@
-"""The Cattaneo–Mindlin check (:func:`mdr_events.app.report_data.mindlin_check`): the tangential force against the
+"""The Cattaneo–Mindlin check (:func:`mdr_events.reproduction.mindlin.mindlin_check`): the tangential force against the
 tangential displacement at the constant depth (continuum as a line, discrete model as open markers, the closed
 form dashed), and each method's difference from the closed form against time. Drawn from the datasets only."""
 

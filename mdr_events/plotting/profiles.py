@@ -1,4 +1,4 @@
-"""The figure comparing indenters (:func:`mdr_events.app.report_data.profile_comparison`): the normal force, the
+"""The figure comparing indenters (:func:`mdr_events.reproduction.profiles.profile_comparison`): the normal force, the
 tangential force and the contact radius against time, one colour per profile, the continuum as lines and the
 discrete model as open markers. Drawn from the datasets only."""
 

@@ -12,7 +12,7 @@ from matplotlib.colors import to_hex
 
 import mdr_events as me
 from mdr_events.parameters import Parameters
-from mdr_events.app.report_data import fretting_study
+from mdr_events.reproduction.fretting import fretting_study
 from mdr_events.plotting import plot_fretting
 from mdr_events.plotting.figures import (FRETTING_CLOSED_FORM_LABEL, FRETTING_MARKERS_PER_CURVE, INFERRED_FOOTNOTE,
                                          OVERLAY_MARKERS_PER_CURVE, plot_phase_diagram, plot_simulation)
@@ -257,7 +257,7 @@ def test_importing_plotting_leaves_the_backend_alone(user_choice):
 def test_profile_comparison_draws_each_indenter_with_its_exponent():
     """Three panels, a line per indenter (labelled with n, from the dataset's profile attribute) and the discrete
     model's markers in the same colour."""
-    from mdr_events.app.report_data import matching_power_law
+    from mdr_events.reproduction.profiles import matching_power_law
     from mdr_events.plotting import plot_profile_comparison
 
     params = Parameters.paper()

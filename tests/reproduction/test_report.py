@@ -2,8 +2,9 @@
 
 Across machines and library versions each quantity of the datasets is compared within the accuracy of how it is
 computed (:mod:`mdr_events.io.agreement`; exact for dimensions, strings and integers); the report, which rounds,
-within one unit of each number's last digit (tests/app/test_other_cpu.py plays another CPU). Bit-identical output on repeat within one environment is
-tested where each result is made (tests/io/test_files.py, tests/models/test_discrete.py, test_properties.py).
+within one unit of each number's last digit (tests/reproduction/test_other_cpu.py plays another CPU). Bit-identical
+output on repeat within one environment is tested where each result is made (tests/io/test_files.py,
+tests/models/test_discrete.py, test_properties.py).
 """
 
 import re
@@ -13,7 +14,15 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events.app import report
+from mdr_events.reproduction import runner
+from mdr_events.reproduction.common import FIGURE_NUMBERS, RADII
+from mdr_events.reproduction.fit_demo import FIT_STEM
+from mdr_events.reproduction.fretting import FRETTING_STEM
+from mdr_events.reproduction.markdown import INTEGRATED_ACCURACY
+from mdr_events.reproduction.mindlin import MINDLIN_STEM, mindlin_rows
+from mdr_events.reproduction.profiles import PROFILE_STEM, profile_rows
+from mdr_events.reproduction.readme import RECORDED_PACKAGES, recorded_versions
+from mdr_events.reproduction.universal import UNIVERSAL_STEM
 from mdr_events.io.agreement import assert_results_agree, result_differences, rounded_text_differences, tolerance_of
 from mdr_events.io.files import write_netcdf
 from mdr_events.app.result_files import FileStatus
@@ -26,7 +35,7 @@ RESULTS = ROOT / "results"
 def computed():
     """One fresh computation of everything behind results/ (about 20 s) and the progress messages it sent."""
     messages = []
-    return report.compute(messages.append), messages
+    return runner.compute(messages.append), messages
 
 
 @pytest.fixture(scope="module")
@@ -44,35 +53,36 @@ def test_committed_report_matches_a_fresh_computation(fresh):
     """Every rounded number of results/README.md is what this machine computes; only the software section
     may differ (it records the versions results/ was written with, which need not be this machine's)."""
     committed = (RESULTS / "README.md").read_text()
-    recorded = report.recorded_versions(committed)
-    assert set(recorded) == {"Python", *report.RECORDED_PACKAGES}
-    assert rounded_text_differences(report.report_text(fresh, versions=recorded), committed) == []
+    recorded = recorded_versions(committed)
+    assert set(recorded) == {"Python", *RECORDED_PACKAGES}
+    assert rounded_text_differences(runner.report_text(fresh, versions=recorded), committed) == []
 
 
 def test_results_were_written_with_the_locked_versions():
     """The lock file pins exactly the versions that results/README.md says results/ was written with."""
-    recorded = report.recorded_versions((RESULTS / "README.md").read_text())
+    recorded = recorded_versions((RESULTS / "README.md").read_text())
     locked = locked_versions()
-    for name in report.RECORDED_PACKAGES:
+    for name in RECORDED_PACKAGES:
         assert recorded[name] == locked[name], name
 
 
 def test_committed_datasets_agree_with_a_fresh_computation(fresh):
-    for (label, scenario), dataset in fresh.continuum.items():
-        stem = f"fig{report.FIGURE_NUMBERS[scenario]}_{label}"
+    figures = fresh["figures"]
+    for (label, scenario), dataset in figures.continuum.items():
+        stem = f"fig{FIGURE_NUMBERS[scenario]}_{label}"
         assert_results_agree(dataset, me.open_result(RESULTS / f"{stem}.nc"))
-        assert_results_agree(fresh.discrete[(label, scenario)], me.open_result(RESULTS / f"{stem}_discrete.nc"))
+        assert_results_agree(figures.discrete[(label, scenario)], me.open_result(RESULTS / f"{stem}_discrete.nc"))
         assert (RESULTS / f"{stem}.png").stat().st_size > 0
         assert (RESULTS / f"{stem}_events.csv").read_text().startswith("alpha_degree,event,time_s,kind")
-    stem = report.FRETTING_STEM
-    assert_results_agree(fresh.fretting.continuum, me.open_result(RESULTS / f"{stem}.nc"))
-    assert_results_agree(fresh.fretting.discrete, me.open_result(RESULTS / f"{stem}_discrete.nc"))
+    stem = FRETTING_STEM
+    assert_results_agree(fresh["fretting"].continuum, me.open_result(RESULTS / f"{stem}.nc"))
+    assert_results_agree(fresh["fretting"].discrete, me.open_result(RESULTS / f"{stem}_discrete.nc"))
     assert (RESULTS / f"{stem}.png").stat().st_size > 0
     events = (RESULTS / f"{stem}_events.csv").read_text()
     assert events.startswith("case,event,time_s,kind") and events.count("tangential_reversal") == 12
-    assert_results_agree(fresh.fitting.measured, me.open_result(RESULTS / f"{report.FIT_STEM}_measured.nc"))
-    assert_results_agree(fresh.fitting.result.dataset, me.open_result(RESULTS / f"{report.FIT_STEM}.nc"))
-    assert_results_agree(fresh.universal, me.open_result(RESULTS / f"{report.UNIVERSAL_STEM}.nc"))
+    assert_results_agree(fresh["fit"].measured, me.open_result(RESULTS / f"{FIT_STEM}_measured.nc"))
+    assert_results_agree(fresh["fit"].result.dataset, me.open_result(RESULTS / f"{FIT_STEM}.nc"))
+    assert_results_agree(fresh["universal"], me.open_result(RESULTS / f"{UNIVERSAL_STEM}.nc"))
 
 
 def test_every_committed_quantity_declares_how_it_is_computed():
@@ -94,12 +104,12 @@ def test_the_other_indenters_meet_their_closed_forms(fresh):
     (18),
     both to 1e-9, and the discrete model (Δx = 1 µm) lies within 1e-3 of the largest F_x (first order: about
     1e-3 per µm, as for the paraboloid)."""
-    for name in fresh.profiles.profiles:
-        stem = f"{report.PROFILE_STEM}_{name}"
-        assert_results_agree(fresh.profiles.continuum[name], me.open_result(RESULTS / f"{stem}.nc"))
-        assert_results_agree(fresh.profiles.discrete[name], me.open_result(RESULTS / f"{stem}_discrete.nc"))
-    assert (RESULTS / f"{report.PROFILE_STEM}.png").stat().st_size > 0
-    rows = report.profile_rows(fresh.profiles, me.Parameters.paper())
+    for name in fresh["profiles"].profiles:
+        stem = f"{PROFILE_STEM}_{name}"
+        assert_results_agree(fresh["profiles"].continuum[name], me.open_result(RESULTS / f"{stem}.nc"))
+        assert_results_agree(fresh["profiles"].discrete[name], me.open_result(RESULTS / f"{stem}_discrete.nc"))
+    assert (RESULTS / f"{PROFILE_STEM}.png").stat().st_size > 0
+    rows = profile_rows(fresh["profiles"], me.Parameters.paper())
     assert [getattr(row.profile, "n", "punch") for row in rows] == [1.0, 2.0, 4.0, "punch"]
     for row in rows:
         assert row.pull_off_continuum == pytest.approx(row.pull_off_closed_form, rel=1e-9), row.name
@@ -113,12 +123,12 @@ def test_the_other_indenters_meet_their_closed_forms(fresh):
 def test_the_cattaneo_mindlin_check_meets_its_closed_form(fresh):
     """results/mindlin_coulomb*: the committed files agree with a fresh run and carry the closed form; the continuum
     equals it to 1e-9 of μ F_N, the discrete model (Δx = 1 µm, first order) to 1e-5; the loop goes to full slip."""
-    stem = report.MINDLIN_STEM
-    continuum, discrete = fresh.mindlin
+    stem = MINDLIN_STEM
+    continuum, discrete = fresh["mindlin"]
     assert_results_agree(continuum, me.open_result(RESULTS / f"{stem}.nc"))
     assert_results_agree(discrete, me.open_result(RESULTS / f"{stem}_discrete.nc"))
     assert (RESULTS / f"{stem}.png").stat().st_size > 0
-    rows = report.mindlin_rows(fresh.mindlin)
+    rows = mindlin_rows(fresh["mindlin"])
     assert rows[0].max_difference < 1e-9 and rows[1].max_difference < 1e-5
     full = 0.3 * np.nanmax(continuum["normal_force"].values)
     assert np.nanmax(continuum["cattaneo_mindlin_force"].values) == pytest.approx(full, rel=1e-12)
@@ -155,8 +165,8 @@ def test_the_comparison_catches_what_the_tolerance_does_not_allow():
 def test_adhesive_strength_is_the_jkr_value_for_every_angle(fresh):
     """Section 4.2 (1): |F_N,min| = (3/2) π Δγ1 R for all angles, from the solution's exact minimum (the
     Brent refinement leaves a second-order value error; the radius root is exact to a few ulp)."""
-    for (label, scenario), extremes in fresh.extremes.items():
-        params = me.Parameters.paper(R=report.RADII[label])
+    for (label, scenario), extremes in fresh["figures"].extremes.items():
+        params = me.Parameters.paper(R=RADII[label])
         np.testing.assert_allclose(extremes["normal_force_min"], me.pull_off_force(params, params.dgamma1),
                                    rtol=1e-12)
 
@@ -164,25 +174,25 @@ def test_adhesive_strength_is_the_jkr_value_for_every_angle(fresh):
 def test_maximum_normal_force_is_exact_and_the_same_for_every_angle(fresh):
     """Section 4.2 (2): F_N,max is the JKR force (10) at d_max on the Δγ0 branch whatever α (it was read off
     2001 samples and varied with α before)."""
-    for (label, _), extremes in fresh.extremes.items():
-        params = me.Parameters.paper(R=report.RADII[label])
+    for (label, _), extremes in fresh["figures"].extremes.items():
+        params = me.Parameters.paper(R=RADII[label])
         exact = me.jkr_normal_force(me.jkr_contact_radius(params.d_max, params, params.dgamma0), params,
                                     params.dgamma0)
         np.testing.assert_allclose(extremes["normal_force_max"], exact, rtol=1e-13)
-    assert "| 10° | 517.447 mN |" in report.report_text(fresh)
+    assert "| 10° | 517.447 mN |" in runner.report_text(fresh)
 
 
 def test_reproduce_keeps_files_that_agree_and_rewrites_those_that_do_not(fresh, tmp_path, monkeypatch):
     """`mdr-events reproduce` leaves a file alone when its content agrees with the fresh computation (so that
     git status stays clean on another machine) and says so; a real change is written."""
-    def replay(progress=None):
+    def replay(progress=None, sections=None):
         """The fresh computation, with one message per step as compute sends them (counted below)."""
-        for number in range(report.COMPUTE_STEPS):
+        for number in range(runner.COMPUTE_STEPS):
             progress(f"computing, step {number + 1}")
         return fresh
 
-    monkeypatch.setattr(report, "compute", replay)
-    first = report.reproduce(tmp_path, progress=lambda message: None)
+    monkeypatch.setattr(runner, "compute", replay)
+    first = runner.reproduce(tmp_path, progress=lambda message: None)
     assert {outcome.status for outcome in first} == {FileStatus.WRITTEN}
     before = {path.name: path.read_bytes() for path in tmp_path.iterdir()}
 
@@ -195,7 +205,7 @@ def test_reproduce_keeps_files_that_agree_and_rewrites_those_that_do_not(fresh, 
     nudged_bytes = target.read_bytes()
     assert nudged_bytes != before["fig8_R30.nc"]
     messages = []
-    second = report.reproduce(tmp_path, progress=messages.append)
+    second = runner.reproduce(tmp_path, progress=messages.append)
     assert {outcome.status for outcome in second} == {FileStatus.KEPT}
     assert target.read_bytes() == nudged_bytes
     assert any("fig8_R30.nc" in message and "not rewritten" in message for message in messages)
@@ -204,13 +214,13 @@ def test_reproduce_keeps_files_that_agree_and_rewrites_those_that_do_not(fresh, 
     numbers = [(int(m.group(1)), int(m.group(2))) for m in steps if m]
     total = numbers[0][1]
     assert numbers == [(k, total) for k in range(1, total + 1)]
-    fretting = [f"{report.FRETTING_STEM}{suffix}" for suffix in ("_discrete.nc", ".nc", ".png", "_events.csv")]
+    fretting = [f"{FRETTING_STEM}{suffix}" for suffix in ("_discrete.nc", ".nc", ".png", "_events.csv")]
     assert any(all(name in message for name in fretting) and "not rewritten" in message for message in messages)
 
     # a real change (beyond the tolerance) is rewritten, the rest kept
     nudged["normal_force"].values[0, 10] *= 1 + 1e-6
     write_netcdf(nudged, target)
-    third = {outcome.path.name: outcome.status for outcome in report.reproduce(tmp_path, progress=lambda m: None)}
+    third = {outcome.path.name: outcome.status for outcome in runner.reproduce(tmp_path, progress=lambda m: None)}
     assert third["fig8_R30.nc"] is FileStatus.WRITTEN and third["fig10_R30.nc"] is FileStatus.KEPT
     assert target.read_bytes() == before["fig8_R30.nc"]
     assert {path.name: path.read_bytes() for path in tmp_path.iterdir()} == before
@@ -219,7 +229,7 @@ def test_reproduce_keeps_files_that_agree_and_rewrites_those_that_do_not(fresh, 
 def test_compute_sends_one_progress_message_per_step(computed):
     """reproduce numbers its steps out of a total that counts compute's as COMPUTE_STEPS."""
     _, messages = computed
-    assert len(messages) == report.COMPUTE_STEPS
+    assert len(messages) == runner.COMPUTE_STEPS
     assert messages[-5].startswith("fretting at d_max, R = 30 mm")
     assert messages[-4].startswith("fit of 4 parameters to synthetic measurements")
     assert messages[-3].startswith("universal map: critical angles")
@@ -228,7 +238,7 @@ def test_compute_sends_one_progress_message_per_step(computed):
 
 
 def test_report_states_the_papers_numbers_beside_ours(fresh):
-    text = report.report_text(fresh)
+    text = runner.report_text(fresh)
     assert "| 23.59° |" in text and "| 22.87° |" in text
     assert "**inferred**" in text
     for heading in ("### (1)", "### (2)", "### (3)", "### (4)", "## Slip onset: closed form, continuum and discrete",
@@ -239,4 +249,4 @@ def test_report_states_the_papers_numbers_beside_ours(fresh):
     # the fretting section lists both cases, the continuum equal to the closed form
     for case in ("vertical", "oblique 20°"):
         line, = (line for line in text.splitlines() if line.startswith(f"| {case} |"))
-        assert f"| < {report.INTEGRATED_ACCURACY:g} |" in line
+        assert f"| < {INTEGRATED_ACCURACY:g} |" in line

@@ -2,7 +2,7 @@
 oblique indentation, the energy dissipated per cycle beside its closed form, and its README section.
 
 Fast settings (101 continuum samples, Δx = 4 µm, 2000 time steps); the committed files are compared with a
-fresh computation at the report's own settings in tests/app/test_report.py.
+fresh computation at the report's own settings in tests/reproduction/test_report.py.
 """
 
 import math
@@ -10,10 +10,10 @@ import math
 import numpy as np
 import pytest
 
-from mdr_events.app import report
-from mdr_events.app.report_data import (FRETTING_AMPLITUDE_IN_CAPS, FRETTING_ANGLE, FRETTING_CYCLES,
-                                        FRETTING_OBLIQUE, FRETTING_VARIABLES, FRETTING_VERTICAL, closed_loop_times,
-                                        fretting_paths, fretting_rows, fretting_study)
+from mdr_events.reproduction.fretting import (FRETTING_AMPLITUDE_IN_CAPS, FRETTING_ANGLE, FRETTING_CYCLES,
+                                             FRETTING_OBLIQUE, FRETTING_VARIABLES, FRETTING_VERTICAL, closed_loop_times,
+                                             fretting_lines, fretting_paths, fretting_rows, fretting_study)
+from mdr_events.reproduction.markdown import INTEGRATED_ACCURACY, relative_difference_text
 from mdr_events.io.files import open_result, write_netcdf
 from mdr_events.io.agreement import assert_results_agree
 from mdr_events.models.paths import Path, exit_depth
@@ -119,13 +119,13 @@ def test_discrete_value_is_near_the_closed_form(study, paper):
 
 
 def test_readme_section_lists_both_cases(study):
-    text = "\n".join(report.fretting_section(study))
+    text = "\n".join(fretting_lines(study))
     assert text.startswith("\n## Fretting at d_max (R = 30 mm)")
     for row in fretting_rows(study):
         line, = (line for line in text.splitlines() if line.startswith(f"| {row.case} |"))
         cells = [cell.strip() for cell in line.strip("|").split("|")]
         assert cells[3] == cells[4] == f"{row.closed_form * 1e3:.6f} mJ"
-        assert cells[5] == f"< {report.INTEGRATED_ACCURACY:g}"
+        assert cells[5] == f"< {INTEGRATED_ACCURACY:g}"
         assert cells[6] == f"{row.discrete * 1e3:.6f} mJ"
     assert f"X = {FRETTING_AMPLITUDE_IN_CAPS:g}ū(a_max)" in text
     assert f"Δx = {DX * 1e6:g} µm, {STEPS} time steps" in text
@@ -134,7 +134,7 @@ def test_readme_section_lists_both_cases(study):
 @pytest.mark.parametrize("value, text", [(9.6e-16, "< 1e-12"), (-3e-13, "< 1e-12"), (2e-9, "2.0e-09"),
                                          (1.04e-12, "1.0e-12")])
 def test_relative_differences_below_round_off_print_the_same_everywhere(value, text):
-    assert report.relative_difference_text(value) == text
+    assert relative_difference_text(value) == text
 
 
 def test_fretting_dataset_reads_back_and_its_schema_asks_for_the_loop(study, tmp_path):

@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events.app import report
-from mdr_events.app.report_data import FIT_DEMO_NOISE, fit_demonstration
+from mdr_events.reproduction import runner
+from mdr_events.reproduction.fit_demo import FIT_DEMO_NOISE, FIT_STEM, fit_demonstration
 from mdr_events.app.result_files import FileStatus, event_logs_agree, event_log_csv
 from mdr_events.io.agreement import result_differences, rounded_text_differences, tolerance_of
 from mdr_events.models.motion import FIGURE_ANGLES
@@ -55,7 +55,7 @@ def reproduced(tmp_path_factory):
         patch.setattr(me.Parameters, "paper", staticmethod(nudged_paper))
         patch.setattr(me.Parameters, "preset_name", preset_name)
         assert me.Parameters.paper() != _paper()  # the inputs did move
-        outcomes = report.reproduce(copy, progress=lambda message: None)
+        outcomes = runner.reproduce(copy, progress=lambda message: None)
     return outcomes, copy
 
 
@@ -89,7 +89,7 @@ def test_a_real_change_of_tau0_is_still_caught():
     assert any(line.startswith("tangential_force:") for line in found), found
 
     fitted = fit_demonstration(params)
-    committed_fit = me.open_result(RESULTS / f"{report.FIT_STEM}.nc")
+    committed_fit = me.open_result(RESULTS / f"{FIT_STEM}.nc")
     assert FIT_DEMO_NOISE > 0
     found = result_differences(fitted.result.dataset, committed_fit)
     assert any(line.startswith("estimate:") for line in found), found

@@ -1,0 +1,90 @@
+"""A section of the reproduction: what it computes (in steps, one progress message each), the files it writes
+into ``results/`` and its part of ``results/README.md``.
+
+A new section is one module that builds a :class:`Section` and one entry in
+:data:`mdr_events.reproduction.runner.SECTIONS`: the runner computes, writes and renders it in that order, and
+counts its steps.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable
+
+from mdr_events.app.result_files import FileOutcome
+
+__all__ = ["Progress", "Step", "Section", "Reproduction", "FileWriter"]
+
+#: What hears the progress messages (``print`` on the command line).
+Progress = Callable[[str], None]
+#: Writes a section's data into a directory (``keep_agreeing``): one list of outcomes per progress line.
+FileWriter = Callable[[Any, Path, bool], list[list[FileOutcome]]]
+#: Everything the report and the files are made of: each section's name -> what it computed.
+Reproduction = dict[str, Any]
+
+
+@dataclass(frozen=True)
+class Step:
+    """One computation of a section and the progress message that announces it.
+
+    Attributes
+    ----------
+    message : str
+        Sent before it runs.
+    run : Callable[[], Any]
+        The computation; it reads the parameters when it runs (``Parameters.paper()``), not when defined.
+    """
+
+    message: str
+    run: Callable[[], Any]
+
+
+@dataclass(frozen=True)
+class Section:
+    """One part of ``results/``: its computation, its files, its Markdown.
+
+    Attributes
+    ----------
+    name : str
+        Its key in a :data:`Reproduction`.
+    steps : tuple of Step
+        What it computes, in order, one progress message each (none: what it reports are closed forms, which
+        ``collect`` evaluates).
+    collect : Callable[[list], Any]
+        The section's data from the results of its steps, in their order.
+    render : Callable[[Any], list[str]]
+        Its lines of ``results/README.md`` from its data.
+    write : FileWriter, optional
+        Writes its files (default: it has none).
+    writing : str
+        The progress message of its write step (one step, only if it writes files).
+    files : tuple of str
+        Its lines of the report's list of files.
+    """
+
+    name: str
+    steps: tuple[Step, ...]
+    collect: Callable[[list[Any]], Any]
+    render: Callable[[Any], list[str]]
+    write: FileWriter | None = None
+    writing: str = ""
+    files: tuple[str, ...] = ()
+
+    @property
+    def writes_files(self) -> bool:
+        """Whether it writes files (then its write step is one more progress message)."""
+        return self.write is not None
+
+    @property
+    def step_count(self) -> int:
+        """Its progress messages: one per step, and one for writing its files if it has any."""
+        return len(self.steps) + int(self.writes_files)
+
+    def compute(self, progress: Progress) -> Any:
+        """Run its steps in order, announcing each to ``progress``, and collect their results."""
+        results = []
+        for step in self.steps:
+            progress(step.message)
+            results.append(step.run())
+        return self.collect(results)
