@@ -25,6 +25,8 @@ import concurrent.futures
 import importlib.util
 import logging
 import os
+import signal
+import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
@@ -100,6 +102,22 @@ def _distributed(scheduler):
 
 
 @contextmanager
+def _workers_deaf_to_ctrl_c() -> Iterator[None]:
+    """While a local cluster starts, Ctrl-C (SIGINT) is ignored, so that the worker processes it starts inherit the
+    disposition: a Ctrl-C at the terminal reaches every process of its group, and each worker printed its own
+    traceback; this process alone hears it, and closes the cluster. (Only in the main thread, where a handler can
+    be set; a Ctrl-C while the cluster starts waits until it has.)"""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
+@contextmanager
 def open_executor(scheduler=None, workers: int | None = None) -> Iterator[concurrent.futures.Executor]:
     """The executor of ``scheduler`` (see the module's table); what this opened is closed on leaving, and futures
     still pending are the caller's to cancel.
@@ -123,11 +141,12 @@ def open_executor(scheduler=None, workers: int | None = None) -> Iterator[concur
         yield scheduler.get_executor(pure=False)
     elif scheduler == "local":
         distributed = _distributed(scheduler)
-        with distributed.LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
-                                      processes=True, host="127.0.0.1", dashboard_address=LOOPBACK_DASHBOARD,
-                                      silence_logs=logging.ERROR) as cluster:  # (no page of warnings on Ctrl-C)
-            with distributed.Client(cluster) as client:
-                yield client.get_executor(pure=False)
+        with _workers_deaf_to_ctrl_c():
+            cluster = distributed.LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
+                                               processes=True, host="127.0.0.1", dashboard_address=LOOPBACK_DASHBOARD,
+                                               silence_logs=logging.ERROR)  # (no page of warnings on Ctrl-C)
+        with cluster, distributed.Client(cluster) as client:
+            yield client.get_executor(pure=False)
     else:
         try:
             client = _distributed(scheduler).Client(scheduler)

@@ -109,3 +109,25 @@ def test_a_limits_table_reaches_every_run_of_a_study(capsys, tmp_path):
     error = capsys.readouterr().err.splitlines()[-1]  # after the progress line, the one error line
     assert error.startswith("mdr-events: error:") and "needs 5e+03 discrete time steps" in error
     assert not (tmp_path / "out2").exists() or not any((tmp_path / "out2").iterdir())
+
+
+def test_ctrl_c_on_a_local_cluster_sweep_prints_one_line(tmp_path):
+    """A Ctrl-C at the terminal reaches every process of the group: the workers (which ignore it) printed a
+    traceback each; now the one line of the command alone, and the cluster closed."""
+    import signal
+    import time
+
+    study = tmp_path / "study.toml"
+    study.write_text(STUDY.replace("grid = { tau0 = [30e3, 42e3], alpha = [10, 20, 30] }",
+                                   "grid = { tau0 = [30e3, 42e3, 55e3, 70e3], alpha = [10, 15, 20, 25, 30, 35, 40] }")
+                     .replace("chunk_size = 2", "chunk_size = 1").replace("{extra}", ""))
+    process = subprocess.Popen([*console_script(), "sweep", str(study), "--workers", "2"], cwd=tmp_path,
+                               stderr=subprocess.PIPE, text=True, start_new_session=True)
+    first = process.stderr.readline()  # the first chunk's progress: the workers are up and running
+    assert first.startswith("sweep: "), first
+    time.sleep(0.5)
+    os.killpg(process.pid, signal.SIGINT)  # as the terminal sends it: to the whole group
+    _, rest = process.communicate(timeout=120)
+    assert process.returncode == 128 + signal.SIGINT, rest
+    assert "Traceback" not in rest and "KeyboardInterrupt" not in rest, rest
+    assert rest.strip().splitlines()[-1].startswith("mdr-events: interrupted (Ctrl-C)"), rest
