@@ -119,13 +119,14 @@ def test_ctrl_c_on_a_local_cluster_sweep_prints_one_line(tmp_path):
 
     study = tmp_path / "study.toml"
     study.write_text(STUDY.replace("grid = { tau0 = [30e3, 42e3], alpha = [10, 20, 30] }",
-                                   "grid = { tau0 = [30e3, 42e3, 55e3, 70e3], alpha = [10, 15, 20, 25, 30, 35, 40] }")
+                                   "grid = { tau0 = [20e3, 30e3, 42e3, 55e3, 70e3, 85e3, 100e3, 120e3], "
+                                   "alpha = [5, 10, 15, 20, 25, 30, 35, 40, 45, 50, 55, 60, 65, 70] }")
                      .replace("chunk_size = 2", "chunk_size = 1").replace("{extra}", ""))
     process = subprocess.Popen([*console_script(), "sweep", str(study), "--workers", "2"], cwd=tmp_path,
                                stderr=subprocess.PIPE, text=True, start_new_session=True)
-    first = process.stderr.readline()  # the first chunk's progress: the workers are up and running
+    first = process.stderr.readline()  # the first chunk's progress: the workers are up and running (of 112 runs)
     assert first.startswith("sweep: "), first
-    time.sleep(0.5)
+    time.sleep(0.2)
     os.killpg(process.pid, signal.SIGINT)  # as the terminal sends it: to the whole group
     _, rest = process.communicate(timeout=120)
     assert process.returncode == 128 + signal.SIGINT, rest
