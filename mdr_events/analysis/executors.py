@@ -144,7 +144,7 @@ def open_executor(scheduler=None, workers: int | None = None) -> Iterator[concur
         with _workers_deaf_to_ctrl_c():
             cluster = distributed.LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
                                                processes=True, host="127.0.0.1", dashboard_address=LOOPBACK_DASHBOARD,
-                                               silence_logs=logging.ERROR)  # (no page of warnings on Ctrl-C)
+                                               silence_logs=logging.CRITICAL)  # (a run's error is its own result)
         with cluster, distributed.Client(cluster) as client:
             yield client.get_executor(pure=False)
     else:
