@@ -129,7 +129,7 @@ def plot_phase_diagram(dataset: xr.Dataset, ax=None):
     scenario = dataset.attrs["scenario"]
     alpha = dataset["alpha"].values
     d_max = float(dataset["d_max"]) * _MM
-    R_mm = dataset.attrs["param_R"] * _MM
+    R_mm = dataset.attrs.get("param_R", np.nan) * _MM  # (another indenter's result may have no R)
     style = {"hertz": dict(color="k", ls="-", label="non-adhesive"),
              "jkr": dict(color="tab:red", ls="--", label="adhesive")}
     # another indenter or friction law: the paper's equation numbers are the paraboloid's with τ0
@@ -292,7 +292,8 @@ def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, titl
             else f"scenario {scenario}"
         law = _law_words(dataset)
         if "profile" in dataset.attrs or law:  # another indenter or law than the paper's: not the paper's figure
-            subject = dataset.attrs.get("profile", f"R = {dataset.attrs['param_R'] * _MM:g} mm")
+            subject = dataset.attrs["profile"] if "profile" in dataset.attrs else \
+                f"R = {dataset.attrs['param_R'] * _MM:g} mm"  # (another indenter's result may have no R)
             title = f"Simulation, {path}, {subject}{law}, {dataset.attrs.get('method', '')}"
         else:
             title = _numbered(f"simulation, {path}, R = {dataset.attrs['param_R'] * _MM:g} mm, "
