@@ -86,6 +86,46 @@ def test_no_module_imports_from_a_higher_layer(path):
     assert not found, f"{module} ({layer_of(module)}) imports from a higher layer: {', '.join(found)}"
 
 
+#: Inside ``app``, from the bottom: the shared parsers and the files of results; the typed jobs; study files; the
+#: command line (a package of one module per verb). A module imports from its own level and those below.
+APP_LEVELS = {
+    "inputs": 0, "result_files": 0, "validation_files": 0, "fit_files": 0,
+    "jobs": 1,
+    "study_format": 2, "study": 2,
+    "cli": 3,
+}
+
+
+def app_level(module: str) -> int:
+    """The level inside ``app`` of a module of ``mdr_events.app`` (:data:`APP_LEVELS`)."""
+    parts = module.split(".")
+    if parts[:2] != ["mdr_events", "app"] or len(parts) < 3:
+        raise ValueError(f"{module} is not a module inside mdr_events.app")
+    if parts[2] not in APP_LEVELS:
+        raise ValueError(f"{module} has no level inside app: add it to APP_LEVELS in tests/test_layers.py")
+    return APP_LEVELS[parts[2]]
+
+
+@pytest.mark.parametrize("path", [path for path in package_modules() if module_name(path).startswith("mdr_events.app.")],
+                         ids=lambda path: module_name(path))
+def test_app_modules_import_down_only(path):
+    """The command line and study files build jobs; jobs call the library and the writers; never the other way."""
+    module = module_name(path)
+    found = sorted(f"{target} (level {app_level(target)})"
+                   for target in imported_modules(path.read_text(), module, path.name == "__init__.py")
+                   if target.startswith("mdr_events.app.") and app_level(target) > app_level(module))
+    assert not found, f"{module} (level {app_level(module)}) imports from above: {', '.join(found)}"
+
+
+def test_an_upward_import_inside_app_is_found():
+    source = "from mdr_events.app.cli import main\nfrom mdr_events.app.inputs import limits\n"
+    above = [target for target in imported_modules(source, "mdr_events.app.jobs")
+             if app_level(target) > app_level("mdr_events.app.jobs")]
+    assert above == ["mdr_events.app.cli"]
+    with pytest.raises(ValueError, match="no level inside app"):
+        app_level("mdr_events.app.somewhere")
+
+
 def test_every_layer_has_modules():
     layers = {layer_of(module_name(path)) for path in package_modules()}
     assert layers == set(LAYERS) - {"package"}

@@ -216,7 +216,7 @@ def _draw_phase_diagram_B(ax, dataset: xr.Dataset, d_max: float) -> None:
 
 def _phase_diagram_title(dataset: xr.Dataset, scenario: str) -> str:
     """The phase diagram's title: the paper's figure number only for a paper preset's own model."""
-    R_mm = dataset.attrs["param_R"] * _MM
+    R_mm = dataset.attrs.get("param_R", np.nan) * _MM  # (another indenter's result may have no R)
     if _is_other_model(dataset):  # not the paper's figure
         subject = dataset.attrs.get("profile", f"R = {R_mm:g} mm")
         return f"{PHASE_DIAGRAM_CONTENT}, scenario {scenario},\n{subject}{_law_words(dataset)}"
@@ -317,7 +317,8 @@ def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, titl
             else f"scenario {scenario}"
         law = _law_words(dataset)
         if "profile" in dataset.attrs or law:  # another indenter or law than the paper's: not the paper's figure
-            subject = dataset.attrs.get("profile", f"R = {dataset.attrs['param_R'] * _MM:g} mm")
+            subject = dataset.attrs["profile"] if "profile" in dataset.attrs else \
+                f"R = {dataset.attrs['param_R'] * _MM:g} mm"  # (another indenter's result may have no R)
             title = f"Simulation, {path}, {subject}{law}, {dataset.attrs.get('method', '')}"
         else:
             title = _numbered(f"simulation, {path}, R = {dataset.attrs['param_R'] * _MM:g} mm, "

@@ -1,0 +1,222 @@
+"""Command line: ``mdr-events derive | phase-diagram | simulate | validate | fit | sweep | run | reproduce``.
+
+Every error prints one line ``mdr-events: error: ...`` on stderr (no traceback; ``mdr-events --debug ...``
+re-raises it with its traceback). The exit status (:data:`EXIT_STATUSES`):
+
+- 0: done;
+- 1: ``mdr-events validate`` (or ``run`` with a ``[validate]`` table): a run is outside its tolerance;
+  ``mdr-events fit`` (or ``run`` with a ``[fit]`` table): a free parameter is not determined by the data;
+- 2: bad input: an argument, a value, a study file or a file that cannot be read or written (``ValueError``,
+  ``TypeError``, ``KeyError``, ``OSError``), named with its value and what is allowed. Output directories
+  are checked before anything is computed (:func:`~mdr_events.io.files.prepare_output_directory`);
+- 3: the computation failed although the input was accepted: the solver gave up (``RuntimeError``), memory
+  or another resource ran out (``MemoryError``), or an internal error (any other exception): please report it;
+- 130 / 143: interrupted by Ctrl-C (SIGINT) / terminated (SIGTERM). Both remove the temporary file being
+  written (:func:`~mdr_events.io.files.atomic_write`): no file is left half-written.
+
+One module per verb (:data:`VERBS`): each adds its parser (``add_arguments(subparsers)``) and turns argparse's
+namespace into a typed job of :mod:`mdr_events.app.jobs` (``job(args)``), the job a study file's table gives for the
+same input; ``run(args)`` runs it and prints what it wrote. The options several verbs share, and how they are read
+through the shared parsers (:mod:`mdr_events.app.inputs`), are in :mod:`mdr_events.app.cli._options`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import signal
+import sys
+import threading
+from typing import Sequence
+
+import matplotlib
+
+from mdr_events._version import __version__
+from mdr_events.app.cli import derive, fit, phase_diagram, reproduce, run, simulate, sweep, validate
+from mdr_events.app.cli._options import Parser, UsageError
+from mdr_events.theory import symbolic
+
+__all__ = ["main", "console_main", "build_parser", "UsageError", "EXIT_STATUSES", "VERBS"]
+
+#: The verbs in the order ``--help`` lists them: each module's ``add_arguments`` adds its parser.
+VERBS = (derive, phase_diagram, simulate, validate, fit, sweep, run, reproduce)
+
+#: The first line of ``mdr-events --help`` (plain text: argparse prints it as it is).
+DESCRIPTION = ("Adhesive indentation and detachment at an angle with the Method of Dimensionality Reduction "
+               "(Lyashenko, Popov & Borysiuk 2023, section 4).")
+
+
+#: Exit status -> when.
+EXIT_STATUSES = {
+    0: "done",
+    1: "validate: a run is outside its tolerance; fit: a free parameter is not determined or the fit does not "
+       "describe the data",
+    2: "bad input (an argument, a value, a study file, a file that cannot be read or written)",
+    3: "the computation failed although the input was accepted (solver, memory, internal error)",
+    130: "interrupted (Ctrl-C)",
+    141: "the reader of the output went away (a closed pipe: `mdr-events derive | head`), silently",
+    143: "terminated (SIGTERM)",
+}
+#: The exit status when the output's reader has gone: as a process ended by SIGPIPE (128 + 13).
+EXIT_BROKEN_PIPE = 141
+#: The exit status of bad input and of a failed computation.
+EXIT_BAD_INPUT, EXIT_FAILED = 2, 3
+#: Errors that are bad input (exit 2); RuntimeError and MemoryError are a failed computation (exit 3).
+INPUT_ERRORS = (ValueError, TypeError, KeyError, OSError)
+COMPUTATION_ERRORS = (RuntimeError, MemoryError)
+
+
+class _Terminated(BaseException):
+    """SIGTERM arrived: raised in the main thread, so that every ``finally`` (temporary files) runs."""
+
+
+def progress(message: str) -> None:
+    """A progress line, on stderr (stdout holds the files written and the summaries)."""
+    print(message, file=sys.stderr, flush=True)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The parser of ``mdr-events``: one sub-parser per verb (:data:`VERBS`), each setting ``run``."""
+    parser = Parser(prog="mdr-events", description=DESCRIPTION, epilog="exit status: " + "; ".join(
+        f"{status} {meaning}" for status, meaning in EXIT_STATUSES.items()))
+    parser.add_argument("--version", action="version", version=f"mdr_events {__version__}")
+    parser.add_argument("--debug", action="store_true",
+                        help="on an error, show the traceback (re-raise it) instead of one line")
+    # not required here: a missing command is reported by main(), after unknown options are named
+    commands = parser.add_subparsers(dest="command", parser_class=Parser)
+    for verb in VERBS:
+        verb.add_arguments(commands)
+    names = ", ".join(commands.choices)
+
+    def missing_command(args: argparse.Namespace) -> None:  # a command's own default replaces this one
+        raise UsageError(f"a command is required; allowed: {names}")
+
+    parser.set_defaults(run=missing_command)
+    return parser
+
+
+def _one_line(message: str) -> str:
+    """A message on one line: its lines joined (nothing is cut)."""
+    return " ".join(line.strip() for line in message.splitlines() if line.strip())
+
+
+def _message(error: BaseException) -> str:
+    """What an error says, for ``mdr-events: error: ...``."""
+    if isinstance(error, KeyError) and error.args:
+        return str(error.args[0])
+    if isinstance(error, OSError) and error.filename is not None:
+        files = " -> ".join(os.fsdecode(name) for name in (error.filename, error.filename2) if name is not None)
+        return f"{files}: {error.strerror or error}"
+    return str(error)
+
+
+def _on_sigterm(signum: int, frame) -> None:
+    signal.signal(signum, signal.SIG_IGN)  # a second SIGTERM must not interrupt the clean-up
+    raise _Terminated(signum)
+
+
+def _outcome(error: BaseException) -> tuple[str, int]:
+    """The line to print for an error that ends the command, and the exit status (:data:`EXIT_STATUSES`)."""
+    if isinstance(error, UsageError):
+        return f"error: {error}", EXIT_BAD_INPUT
+    if isinstance(error, _Terminated):
+        return "terminated (SIGTERM); no file was left half-written", 128 + signal.SIGTERM
+    if isinstance(error, KeyboardInterrupt):
+        return "interrupted (Ctrl-C); no file was left half-written", 128 + signal.SIGINT
+    if isinstance(error, INPUT_ERRORS):
+        return f"error: {_message(error)}", EXIT_BAD_INPUT
+    what = "the computation failed" if isinstance(error, COMPUTATION_ERRORS) else "internal error"
+    return (f"error: {what} ({type(error).__name__}: {_message(error) or 'no message'}); rerun with --debug for "
+            "the traceback, and please report it", EXIT_FAILED)
+
+
+#: Suffixes of the files the commands read: a value of a multi-value option with one of these is a file it took.
+FILE_SUFFIXES = (".csv", ".nc", ".toml")
+
+
+def _multi_value_options(parser: argparse.ArgumentParser) -> set[str]:
+    """The options, of every command, that take several values (``--free E tau0``, ``--dx 1e-6 2e-6``)."""
+    found = set()
+    for action in parser._actions:  # noqa: SLF001 - argparse keeps its actions there
+        if action.nargs in ("+", "*") and action.option_strings:
+            found.update(action.option_strings)
+        for sub in getattr(action, "choices", None).values() if isinstance(action, argparse._SubParsersAction) else ():
+            found |= _multi_value_options(sub)
+    return found
+
+
+def _file_taken_as_value(argv: Sequence[str]) -> str:
+    """A hint for a usage error: which multi-value option took a file as one of its values (``--free tau0 run.csv``:
+    argparse gives every word up to the next option to ``--free``), and how to write it; "" if none did."""
+    multi = _multi_value_options(build_parser())
+    option = None
+    for token in argv:
+        if token == "--":
+            return ""
+        if token.startswith("--"):
+            option = token.split("=", 1)[0] if token.split("=", 1)[0] in multi else None
+        elif option is not None and (os.path.isfile(token) or token.lower().endswith(FILE_SUFFIXES)):
+            return (f" ({option} took {token!r}, a file, as one of its values: write the file before {option}, or "
+                    f"{option} and its values last)")
+    return ""
+
+
+def _silence_stdout() -> None:
+    """Point stdout at the null device, so that the interpreter's final flush does not raise again."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):  # no real file descriptor (captured in a test): nothing to flush
+        pass
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of ``mdr-events``; returns the exit status (:data:`EXIT_STATUSES`).
+
+    An error prints one line on stderr (``mdr-events: error: ...``); with ``--debug`` it is re-raised with
+    its traceback (a usage error excepted). SIGTERM is handled like Ctrl-C while the command runs: the file
+    being written is removed (its temporary file), and the status is 143.
+    """
+    handles_sigterm = threading.current_thread() is threading.main_thread()  # signals reach the main thread only
+    previous = signal.signal(signal.SIGTERM, _on_sigterm) if handles_sigterm else None
+    debug = False
+    try:
+        args = build_parser().parse_args(argv)
+        debug = args.debug
+        if getattr(args, "key", None) is not None:
+            symbolic.relation(args.key)  # an unknown (or empty) key is bad input before anything is printed
+        matplotlib.use("Agg")  # the CLI writes figures to files only: no window, whatever the user's default
+        status = args.run(args)
+    except BrokenPipeError:  # the reader has gone (`| head`): nothing more to say, and no one to say it to
+        _silence_stdout()
+        return EXIT_BROKEN_PIPE
+    except (Exception, KeyboardInterrupt, _Terminated) as error:
+        if debug and not isinstance(error, UsageError):
+            raise
+        text, code = _outcome(error)
+        if isinstance(error, UsageError):
+            text += _file_taken_as_value(sys.argv[1:] if argv is None else list(argv))
+        print(f"mdr-events: {_one_line(text)}", file=sys.stderr)
+        return code
+    finally:
+        if handles_sigterm:
+            signal.signal(signal.SIGTERM, signal.SIG_DFL if previous is None else previous)
+    return 0 if status is None else int(status)
+
+
+def console_main() -> int:
+    """The console script ``mdr-events``: :func:`main`; after an interrupt, what the interpreter's shutdown would
+    print (a storage library's pending tasks destroyed, thousands of lines after a SIGTERM mid-sweep) is not shown:
+    the one line said what happened."""
+    status = main()
+    for signum in (signal.SIGINT, signal.SIGTERM):  # (the work is done: a signal now would end it silently with 130)
+        signal.signal(signum, signal.SIG_IGN)
+    if status in (128 + signal.SIGINT, 128 + signal.SIGTERM):
+        sys.stderr.flush()
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stderr.fileno())
+    return status
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(console_main())

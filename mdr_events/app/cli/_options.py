@@ -1,0 +1,249 @@
+"""The options several verbs share, and how their values become the package's values (:mod:`mdr_events.app.inputs`).
+
+Each ``*_options`` function adds options to a verb's parser; the function of the same input's name reads them from
+argparse's namespace through the shared parser and names the option in a :class:`UsageError` where it fails.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+from typing import Sequence
+
+from mdr_events.app import inputs
+from mdr_events.analysis.validate import TIME_ORIGINS
+from mdr_events.contact import Contact
+from mdr_events.contact.friction import FRICTION_LAWS, FrictionLaw
+from mdr_events.io.candidates import CANDIDATE_QUANTITIES
+from mdr_events.limits import LIMIT_UNITS, Limits
+from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.motion import SCENARIO_NAMES, Motion
+from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters
+
+
+class UsageError(Exception):
+    """A user error: reported in one line, exit status 2."""
+
+
+class Parser(argparse.ArgumentParser):
+    """An argument parser whose errors are one line (:class:`UsageError`) naming where the allowed options are."""
+
+    def error(self, message: str) -> None:  # one line, no usage block
+        raise UsageError(message)
+
+    def parse_args(self, args=None, namespace=None):  # unknown options named with where to find the allowed
+        parsed, extras = self.parse_known_args(args, namespace)
+        if extras:
+            command = getattr(parsed, "command", None)
+            where = f"{self.prog} {command}" if command else self.prog
+            raise UsageError(f"unrecognized argument(s) {' '.join(extras)}; allowed: the options listed by "
+                             f"{where} --help")
+        return parsed
+
+
+def output_directory(args: argparse.Namespace):
+    """``--out``, prepared (a directory that exists or can be created, writable), before anything is computed."""
+    from mdr_events.io.files import prepare_output_directory
+
+    return prepare_output_directory(args.out, "--out")
+
+
+# --- parameters -------------------------------------------------------------------------------------------------
+def value_options(parser: argparse.ArgumentParser) -> None:
+    """``--E``, ``--nu``, ...: one option per parameter, in SI units."""
+    for name, long_name in PARAMETER_LONG_NAMES.items():
+        parser.add_argument(f"--{name}", type=float, default=None, metavar="VALUE",
+                            help=f"{long_name} [{PARAMETER_UNITS[name]}]")
+
+
+def parameter_options(parser: argparse.ArgumentParser) -> None:
+    """``--preset`` and the parameters' values (``phase-diagram``, ``simulate``)."""
+    parser.add_argument("--preset", choices=sorted(PRESETS), default=inputs.DEFAULT_PRESET,
+                        help="parameter set of the paper (default paper-R30); the options below override it")
+    value_options(parser)
+
+
+def _changes(args: argparse.Namespace) -> dict[str, float]:
+    return {name: getattr(args, name) for name in PARAMETER_UNITS if getattr(args, name) is not None}
+
+
+def parameters(args: argparse.Namespace) -> tuple[Parameters, dict[str, str]]:
+    """The parameters of ``--preset`` with the options given, and attributes saying which came from the preset."""
+    return inputs.parameters(args.preset, _changes(args))
+
+
+def measured_parameters(args: argparse.Namespace) -> tuple[Parameters, dict[str, str]]:
+    """The parameters of ``validate`` and ``fit``: ``--params FILE`` or ``--preset``, with the options given."""
+    from mdr_events.app.study import load_parameters_file
+
+    if args.params is not None:
+        try:
+            return load_parameters_file(args.params, _changes(args))
+        except ValueError as error:
+            raise UsageError(f"--params {error}") from None
+    try:
+        return inputs.parameters(args.preset, _changes(args))
+    except ValueError as error:
+        raise UsageError(str(error)) from None
+
+
+# --- the indenter, the friction law, the limits -----------------------------------------------------------------
+def profile_options(parser: argparse.ArgumentParser) -> None:
+    """``--power-law C N``, ``--flat-punch RADIUS`` or ``--table FILE``."""
+    indenter = parser.add_mutually_exclusive_group()
+    indenter.add_argument("--power-law", type=float, nargs=2, default=None, metavar=("C", "N"),
+                          help="the indenter f = c r^n (c in m^(1-n), n >= 1: 1 a cone) instead of the paraboloid of R")
+    indenter.add_argument("--flat-punch", type=float, default=None, metavar="RADIUS",
+                          help="the flat punch of this radius (m) instead of the paraboloid of R")
+    indenter.add_argument("--table", default=None, metavar="FILE",
+                          help="a tabulated indenter: a CSV file with the columns r and f (m) instead of the paraboloid")
+
+
+def profile(args: argparse.Namespace, simulated: bool = True) -> SimulatedProfile:
+    """The indenter of :func:`profile_options` (``None``: the paraboloid of the parameters' ``R``); ``simulated``: one
+    the simulators take, else any the closed forms take (the phase diagram's)."""
+    if args.table is not None:
+        given = f"--table {args.table}"
+    elif args.flat_punch is not None:
+        given = f"--flat-punch {args.flat_punch:g}"
+    elif args.power_law is not None:
+        given = f"--power-law {' '.join(f'{value:g}' for value in args.power_law)}"
+    else:
+        return None
+    try:
+        return inputs.indenter(args.power_law, args.flat_punch, args.table, simulated)
+    except (TypeError, ValueError) as error:
+        raise UsageError(f"{given}: {error}") from None
+
+
+def friction_options(parser: argparse.ArgumentParser) -> None:
+    """``--friction LAW`` and ``--mu MU``."""
+    parser.add_argument("--friction", choices=list(FRICTION_LAWS), default=None,
+                        help="the cap on the springs' shifts: tau0 (the paper's, default), coulomb (mu times the "
+                             "spring's normal force) or tau0+coulomb (their sum)")
+    parser.add_argument("--mu", type=float, default=None, help="the coefficient of friction of --friction coulomb "
+                        "or tau0+coulomb")
+
+
+def friction(args: argparse.Namespace) -> FrictionLaw:
+    """The ``--friction LAW [--mu MU]`` law (default the paper's ``tau0``)."""
+    try:
+        return inputs.friction(args.friction, args.mu)
+    except (TypeError, ValueError) as error:
+        law = f"--friction {args.friction}" if args.friction else "the default --friction tau0"
+        given = law if args.mu is None else (f"--mu {args.mu:g} with {law}" if not args.friction
+                                             else f"{law} --mu {args.mu:g}")
+        raise UsageError(f"{given}: {error}") from None
+
+
+def contact(args: argparse.Namespace, params: Parameters, simulated: bool = True) -> Contact:
+    """The contact of ``params`` with the indenter and the friction law of the options."""
+    return inputs.contact(params, profile(args, simulated), friction(args))
+
+
+def limit_options(parser: argparse.ArgumentParser) -> None:
+    """``--limit NAME=VALUE`` (repeatable): raise a resource limit of :class:`~mdr_events.limits.Limits`."""
+    parser.add_argument("--limit", action="append", default=[], metavar="NAME=VALUE",
+                        help="raise a resource limit, e.g. --limit steps=1e8 --limit memory=8GiB (names: "
+                             + ", ".join(f"{name}: {meaning}" for name, meaning in LIMIT_UNITS.items())
+                             + "; inf: none)")
+
+
+def limits(args: argparse.Namespace) -> Limits:
+    """The limits of ``--limit`` options, on top of the defaults."""
+    return inputs.limits(args.limit)
+
+
+# --- measured runs: validate and fit -------------------------------------------------------------------------------
+def measured_path_options(parser: argparse.ArgumentParser, what: str, start: bool = False) -> None:
+    """The parameters (preset, file or values) and the path (scenario and angle, or a path file) of measured
+    runs: ``validate`` and ``fit``."""
+    role = "the start of the fit" if start else "the parameters"
+    source = parser.add_mutually_exclusive_group()
+    source.add_argument("--preset", choices=sorted(PRESETS), default=None,
+                        help=f"{role}: a parameter set of the paper (default paper-R30); the options below override it")
+    source.add_argument("--params", default=None, metavar="FILE",
+                        help=f"{role}: a TOML file with a [parameters] table as in a study file (e.g. the study file)")
+    value_options(parser)
+    motion = parser.add_mutually_exclusive_group(required=True)
+    motion.add_argument("--scenario", choices=list(SCENARIO_NAMES), help=f"the scenario the {what} took (with --alpha)")
+    motion.add_argument("--path", default=None, metavar="FILE",
+                        help="a TOML file with a [path] table as in a study file: waypoints = [[x, d], ...] (m), "
+                             "speed (m/s, default the parameters' v)")
+    parser.add_argument("--alpha", type=float, default=None, metavar="DEG", help="the scenario's angle in degrees")
+
+
+def measured_motion(args: argparse.Namespace, params: Parameters, contact: Contact) -> tuple[Motion, str]:
+    """The one path the runs took (:func:`measured_path_options`) as a motion, and a description of it."""
+    from mdr_events.app.study import load_path_file
+
+    if args.path is not None:
+        if args.alpha is not None:
+            raise UsageError(f"--alpha {args.alpha:g} is not allowed with --path (its waypoints fix the motion)")
+        try:
+            return inputs.paths(load_path_file(args.path, params), params), f"from the path file {args.path}"
+        except ValueError as error:
+            raise UsageError(f"--path {error}") from None
+    if args.alpha is None:
+        raise UsageError(f"--scenario {args.scenario} needs --alpha (one angle in degrees)")
+    try:
+        motion = inputs.scenario(args.scenario, [args.alpha], params)
+        motion.cases(params, contact.profile)  # (an angle whose path cannot be run is named with --alpha)
+    except (ValueError, TypeError) as error:
+        raise UsageError(f"--alpha {args.alpha:g}: {error}") from None
+    return motion, f"scenario {args.scenario}, α = {args.alpha:g}°"
+
+
+def column_options(parser: argparse.ArgumentParser, whose: str) -> None:
+    """Your column names, units and time origin (``validate`` and ``fit``)."""
+    parser.add_argument("--names", default=None, metavar="Q=COLUMN,...",
+                        help="your column names, e.g. time=t,normal_force=Fn (quantities: "
+                             f"{', '.join(CANDIDATE_QUANTITIES)})")
+    parser.add_argument("--units", default=None, metavar="Q=UNIT,...",
+                        help="your units, e.g. time=ms,normal_force=mN,contact_area=mm2 (default SI)")
+    parser.add_argument("--time-origin", default="first_contact", metavar="ORIGIN",
+                        help=f"what the {whose} time counts from: first_contact (default), path_start, or the "
+                             f"{whose} time of first contact in s")
+
+
+def pairs(option: str, text: str | None, allowed: Sequence[str]) -> dict[str, str]:
+    """``time=t,normal_force=Fn`` -> ``{"time": "t", "normal_force": "Fn"}``; a bad item names the option."""
+    if text is None:
+        return {}
+    found: dict[str, str] = {}
+    for item in text.split(","):
+        key, equals, value = (part.strip() for part in item.partition("="))
+        if not equals or not key or not value:
+            raise UsageError(f"{option} {text!r}: {item.strip()!r} is not allowed; allowed: QUANTITY=VALUE pairs "
+                             "separated by commas, e.g. time=t,normal_force=Fn")
+        if key not in allowed:
+            raise UsageError(f"{option} {text!r}: {key!r} is not allowed; allowed: {', '.join(allowed)}")
+        if key in found:
+            raise UsageError(f"{option} {text!r}: {key!r} is given twice; allowed: each quantity once")
+        found[key] = value
+    return found
+
+
+def time_origin(text: str) -> str | float:
+    """``--time-origin``: a name of :data:`~mdr_events.analysis.validate.TIME_ORIGINS` or a finite time in s."""
+    if text in TIME_ORIGINS:
+        return text
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not math.isfinite(value):
+        raise UsageError(f"--time-origin {text!r} is not allowed; allowed: {', '.join(TIME_ORIGINS)} or the runs' "
+                         "time of first contact in s (a finite number)")
+    return value
+
+
+def check_not_overwritten(args: argparse.Namespace, out, stem: str, suffixes: Sequence[str], inputs_: Sequence[str],
+                          what: str) -> None:
+    """Refuse an ``--out`` where writing ``<stem><suffix>`` would overwrite one of the input files."""
+    given = {os.path.realpath(name) for name in inputs_}
+    clash = [target for target in (out / f"{stem}{suffix}" for suffix in suffixes) if os.path.realpath(target) in given]
+    if clash:
+        raise UsageError(f"--out {args.out}: writing {what.replace('{target}', str(clash[0]))}; allowed: another "
+                         "directory")

@@ -1,0 +1,29 @@
+"""``mdr-events reproduce``: regenerate ``results/`` (figures, datasets, report)."""
+
+from __future__ import annotations
+
+import argparse
+
+from mdr_events.app.cli import _options
+from mdr_events.app.jobs import ReproduceJob
+
+
+def add_arguments(commands: argparse._SubParsersAction) -> None:
+    """Add ``reproduce`` and its options."""
+    reproduce = commands.add_parser("reproduce", help="regenerate results/ (figures, datasets, report)")
+    reproduce.add_argument("--out", default="results", help="output directory (default results)")
+    reproduce.add_argument("--rewrite", action="store_true",
+                           help="rewrite every file, also those that agree with a fresh computation")
+    reproduce.set_defaults(run=run)
+
+
+def job(args: argparse.Namespace) -> ReproduceJob:
+    """The reproduction the options ask for."""
+    return ReproduceJob(args.rewrite)
+
+
+def run(args: argparse.Namespace) -> None:
+    """Recompute and write ``results/``, saying what happens on stderr."""
+    from mdr_events.app.cli import progress
+
+    job(args).run(_options.output_directory(args), progress)

@@ -1,0 +1,53 @@
+"""``mdr-events simulate``: a simulation of Fig. 8 (A) or Fig. 10 (B), written as .nc and .png."""
+
+from __future__ import annotations
+
+import argparse
+
+from mdr_events.app import inputs
+from mdr_events.app.cli import _options
+from mdr_events.app.jobs import SimulateJob
+from mdr_events.models.methods import DEFAULT_DX, DEFAULT_STEPS, METHODS
+from mdr_events.models.motion import SCENARIO_NAMES
+
+#: The options of the discrete method, passed only when given (so that the continuum names them as in Python).
+DISCRETE_OPTIONS = ("dx", "dt", "n_steps")
+
+
+def add_arguments(commands: argparse._SubParsersAction) -> None:
+    """Add ``simulate`` and its options."""
+    sim = commands.add_parser("simulate", help="simulate Fig. 8 (A) / Fig. 10 (B); write .nc and .png")
+    sim.add_argument("--scenario", choices=list(SCENARIO_NAMES), required=True)
+    sim.add_argument("--method", choices=list(METHODS), default="discrete")
+    sim.add_argument("--alpha", type=float, nargs="+", default=None, metavar="DEG",
+                     help="angles in degrees (default 10 20 ... 80)")
+    sim.add_argument("--dx", type=float, default=None,
+                     help=f"discrete method: spring spacing in m (default {DEFAULT_DX:g})")
+    steps = sim.add_mutually_exclusive_group()
+    steps.add_argument("--dt", type=float, default=None, help="discrete method: time step in s")
+    steps.add_argument("--n-steps", type=int, default=None,
+                       help=f"discrete method: time steps of the longest case (default {DEFAULT_STEPS})")
+    sim.add_argument("--out", required=True, help="output directory")
+    _options.profile_options(sim)
+    _options.friction_options(sim)
+    _options.limit_options(sim)
+    _options.parameter_options(sim)
+    sim.set_defaults(run=run)
+
+
+def job(args: argparse.Namespace) -> SimulateJob:
+    """The simulation the options ask for."""
+    params, provenance = _options.parameters(args)
+    contact = _options.contact(args, params)
+    options = {name: getattr(args, name) for name in DISCRETE_OPTIONS if getattr(args, name) is not None}
+    return SimulateJob(contact, inputs.scenario(args.scenario, args.alpha, params), inputs.method(args.method, options),
+                       _options.limits(args), provenance,
+                       f"simulation_{args.scenario.replace('+', 'plus')}_{args.method}")
+
+
+def run(args: argparse.Namespace) -> None:
+    """Simulate and write; print the files written."""
+    spec = job(args)  # every value checked (the method's options too) before the output directory is made
+    out = _options.output_directory(args)  # before the simulation, which may take minutes
+    for outcome in spec.run(out):
+        print(outcome.path)

@@ -1,0 +1,48 @@
+"""``mdr-events sweep``: the ``[sweep]`` table of a study file on dask (a local cluster, or ``--scheduler ADDRESS``)."""
+
+from __future__ import annotations
+
+import argparse
+
+from mdr_events.app.cli._options import UsageError
+
+
+def add_arguments(commands: argparse._SubParsersAction) -> None:
+    """Add ``sweep`` and its options."""
+    sweeping = commands.add_parser(
+        "sweep", help="run the [sweep] table of a study file on dask (a local cluster, or --scheduler ADDRESS)",
+        description="Run a parameter sweep described by the [sweep] table of a study file (mdr_events.sweep): "
+                    "<name>_sweep.zarr is written chunk by chunk (--resume continues an interrupted one) and "
+                    "<name>_sweep.nc holds the labelled result.")
+    sweeping.add_argument("study", help="the study file, e.g. study.toml")
+    sweeping.add_argument("--scheduler", default=None, metavar="ADDRESS",
+                          help="'local' (a LocalCluster on this machine, the default), 'serial', or a running dask "
+                               "scheduler's address such as tcp://host:8786")
+    sweeping.add_argument("--workers", type=int, default=None, metavar="N",
+                          help="worker processes of the local cluster (default: the machine's cores)")
+    store = sweeping.add_mutually_exclusive_group()
+    store.add_argument("--resume", action="store_true",
+                       help="continue the store of an interrupted sweep (its done chunks are not run again)")
+    store.add_argument("--restart", action="store_true",
+                       help="start afresh, replacing the store of an earlier sweep (without --resume or --restart an "
+                            "existing store is an error)")
+    sweeping.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run the study's sweep job with the options' scheduler and workers; print the files written."""
+    from mdr_events.app.cli import progress
+    from mdr_events.app.study import load_study, run_sweep, sweep_store
+
+    if args.workers is not None and args.workers < 1:
+        raise UsageError(f"--workers {args.workers} is not allowed; allowed: an integer >= 1")
+    study = load_study(args.study)
+    store = sweep_store(study)
+    if store.exists() and not (args.resume or args.restart):
+        raise UsageError(f"{store} holds an earlier sweep; allowed: --resume to continue it (its done chunks are "
+                         "kept), --restart to start afresh")
+    outcomes = run_sweep(study, progress=progress, scheduler=args.scheduler, workers=args.workers,
+                         resume=args.resume)
+    for outcome in outcomes:
+        print(outcome.path)
+    return 0

@@ -1,0 +1,141 @@
+"""``mdr-events validate``: a simulator's runs against the exact continuum (and, over three or more spacings, the
+convergence study); per run a .nc report, a Markdown summary and a figure."""
+
+from __future__ import annotations
+
+import argparse
+import math
+import re
+from pathlib import Path
+
+from mdr_events.app.cli import _options
+from mdr_events.app.cli._options import UsageError
+from mdr_events.app.jobs import CONVERGENCE_STEM, ValidateJob, Validated
+from mdr_events.io.candidates import CANDIDATE_QUANTITIES
+from mdr_events.io.files import check_output_stem
+from mdr_events.validation import SCALE_MAX, SCALE_MIN
+
+#: A spacing in a run's file name: ``dx`` then a number and an optional unit (``run_dx2um.csv``, ``dx=2e-6.csv``).
+SPACING_IN_NAME = re.compile(r"(?:^|[^A-Za-z])dx[_=-]?(\d+(?:\.\d+)?(?:[eE][-+]?\d+)?)(nm|um|µm|mm|m)?(?![A-Za-z])")
+SPACING_UNITS = {None: 1.0, "m": 1.0, "mm": 1e-3, "um": 1e-6, "µm": 1e-6, "nm": 1e-9}
+#: The least number of spacings for a convergence study (an order from a least-squares slope with its spread).
+CONVERGENCE_MIN_RUNS = 3
+
+
+def add_arguments(commands: argparse._SubParsersAction) -> None:
+    """Add ``validate`` and its options."""
+    check = commands.add_parser(
+        "validate", help="validate a simulator's runs (CSV or netCDF) against the exact continuum",
+        description="Validate runs of a simulator against the exact continuum (mdr_events.validate); write "
+                    "<run>.nc, <run>.md and <run>.png per run into --out; exit 0 if every run is within the "
+                    "tolerance, 1 if not, 2 for bad input.")
+    check.add_argument("runs", nargs="+", metavar="RUN", help="a run: a CSV file with a header row, or netCDF")
+    _options.measured_path_options(check, "runs")
+    check.add_argument("--out", required=True, help="output directory")
+    _options.friction_options(check)
+    _options.profile_options(check)
+    _options.limit_options(check)
+    check.add_argument("--tolerance", type=float, default=1e-3,
+                       help="bound on each quantity's max error relative to its range (default 1e-3)")
+    _options.column_options(check, "runs'")
+    check.add_argument("--dx", type=float, nargs="+", default=None, metavar="M",
+                       help="the spring spacing of each run (m), in the order of the runs and after them, for a "
+                            "convergence study of three or more runs (default: from names such as run_dx2um.csv)")
+    check.set_defaults(run=run)
+
+
+def spacings(args: argparse.Namespace) -> tuple[list[float] | None, str | None]:
+    """The spacing of each run for a convergence study: ``--dx`` (one per run), else from every run's file
+    name; ``None`` and why not (``None``: nothing to say) where there is no study."""
+    if args.dx is not None:
+        if len(args.dx) != len(args.runs):
+            raise UsageError(f"--dx has {len(args.dx)} values and there are {len(args.runs)} runs; allowed: one "
+                             "spacing (m) per run, in the order of the runs")
+        bad = [value for value in args.dx if not SCALE_MIN <= value <= SCALE_MAX]
+        if bad:
+            raise UsageError(f"--dx {bad[0]!r} is not allowed; allowed: spacings (m) from {SCALE_MIN:.2g} to "
+                             f"{SCALE_MAX:.2g}")
+        if len(set(args.dx)) != len(args.dx):
+            raise UsageError(f"--dx {' '.join(f'{value:g}' for value in args.dx)} repeats a spacing; allowed: "
+                             "one different spacing (m) per run")
+        found = list(args.dx)
+    else:
+        matches = [SPACING_IN_NAME.search(Path(run).stem) for run in args.runs]
+        if len(args.runs) < CONVERGENCE_MIN_RUNS or not all(matches):
+            return None, None
+        found = [float(match.group(1)) * SPACING_UNITS[match.group(2)] for match in matches]
+        if len(set(found)) != len(found) or not all(value > 0 for value in found):
+            return None, "convergence study skipped (the spacings in the runs' names repeat; give --dx)"
+    if len(found) < CONVERGENCE_MIN_RUNS:
+        return None, (f"convergence study skipped (it needs {CONVERGENCE_MIN_RUNS} or more spacings; --dx gives "
+                      f"{len(found)})")
+    return found, None
+
+
+def _stems(args: argparse.Namespace, study: bool) -> tuple[str, ...]:
+    """Each run's report stem (its file's stem), checked: distinct, plain, not the convergence study's."""
+    stems: dict[str, str] = {}
+    for run in args.runs:
+        stem = Path(run).stem
+        if stem in stems:
+            raise UsageError(f"the runs {stems[stem]} and {run} would both be written as {stem}.*; allowed: runs "
+                             "with different file names")
+        if stem == CONVERGENCE_STEM and study:
+            raise UsageError(f"the run {run} would be written as {stem}.*, the convergence study's files; allowed: "
+                             "another file name")
+        try:
+            check_output_stem("stem", stem)
+        except ValueError as error:
+            raise UsageError(f"the run {run} would be written as {stem}.*: {error}") from None
+        stems[stem] = run
+    return tuple(stems)
+
+
+def job(args: argparse.Namespace) -> tuple[ValidateJob, str | None]:
+    """The validation the options ask for, and a note on the convergence study (``None``: nothing to say)."""
+    params, provenance = _options.measured_parameters(args)
+    contact = _options.contact(args, params)
+    motion, description = _options.measured_motion(args, params, contact)
+    names = _options.pairs("--names", args.names, list(CANDIDATE_QUANTITIES))
+    units = _options.pairs("--units", args.units, list(CANDIDATE_QUANTITIES))
+    origin, limits = _options.time_origin(args.time_origin), _options.limits(args)
+    if not (math.isfinite(args.tolerance) and args.tolerance > 0):
+        raise UsageError(f"--tolerance {args.tolerance!r} is not allowed; allowed: a number > 0")
+    found, note = spacings(args)  # a bad --dx is named before any run is read
+    spec = ValidateJob(tuple(args.runs), tuple(Path(run) for run in args.runs), _stems(args, found is not None),
+                       contact, motion, description, args.tolerance, names, units, origin, limits, provenance,
+                       None if found is None else tuple(found))
+    return spec, note
+
+
+def _print(validated: Validated, note: str | None, out: Path) -> int:
+    """Write the reports (and the convergence study), print what they say; the exit status."""
+    from mdr_events.app.validation_files import console_summary, write_rendered
+
+    lines = [note] if note else []
+    for run, files in validated.reports:
+        written = write_rendered(files, out)
+        print("\n".join(console_summary(files.report, run)))
+        print(f"  written: {', '.join(str(outcome.path) for outcome in written)}")
+    if validated.convergence is not None:
+        lines = list(validated.convergence.lines)
+        if validated.convergence.dataset is not None:
+            written = ValidateJob.write_convergence(validated.convergence, out)  # together or not at all
+            lines.append(f"  written: {', '.join(map(str, written))}")
+    if lines:
+        print("\n".join(lines))
+    failed = [run for run, files in validated.reports if files.report.attrs["verdict"] != "pass"]
+    count = len(validated.reports)
+    print(f"{count} run{'s' if count != 1 else ''}: {count - len(failed)} pass, {len(failed)} fail")
+    return 1 if failed else 0
+
+
+def run(args: argparse.Namespace) -> int:
+    """Validate every run (first) and render its files, then write them: bad input writes nothing."""
+    from mdr_events.app.validation_files import VALIDATION_SUFFIXES
+
+    spec, note = job(args)
+    out = _options.output_directory(args)
+    for stem in spec.stems:
+        _options.check_not_overwritten(args, out, stem, VALIDATION_SUFFIXES, args.runs, "{target} would overwrite a run")
+    return _print(spec.compute(progress=print), note, out)

@@ -1,0 +1,171 @@
+"""One parser per input, shared by both front ends: the command line (:mod:`mdr_events.app.cli`) and study files
+(:mod:`mdr_events.app.study`).
+
+Each turns the values a front end read (from ``argparse`` or from a TOML table) into the package's value, and
+raises ``ValueError`` or ``TypeError`` with the library's own message; the front end prefixes it with where the
+value came from (``--power-law 2000 0.5: ...``, ``study.toml: [profile] ...``) and turns it into its error.
+
+=============  ==========================================  ===============================================
+input          parser                                      value
+=============  ==========================================  ===============================================
+parameters     :func:`parameters`                          :class:`~mdr_events.Parameters` and provenance
+indenter       :func:`indenter`                            ``None`` (the paraboloid of ``R``) or an indenter
+friction       :func:`friction`                            :class:`~mdr_events.FrictionLaw`
+limits         :func:`limits`                              :class:`~mdr_events.Limits`
+a path         :func:`path`                                :class:`~mdr_events.Path`
+the contact    :func:`contact`                             :class:`~mdr_events.Contact`
+the motion     :func:`scenario`, :func:`paths`             :class:`~mdr_events.Scenario`, :class:`~mdr_events.Paths`
+the method     :func:`method`                              :class:`~mdr_events.Discrete`, :class:`~mdr_events.Continuum`
+=============  ==========================================  ===============================================
+"""
+
+from __future__ import annotations
+
+from typing import Any, Iterable, Mapping, Sequence
+
+from mdr_events.contact import Contact
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.indenters import FlatPunch, PowerLaw
+from mdr_events.io.candidates import read_profile_table
+from mdr_events.limits import DEFAULT_LIMITS, Limits, parse_limit
+from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
+from mdr_events.models.methods import Method, as_method
+from mdr_events.models.motion import FIGURE_ANGLES, Paths, Scenario
+from mdr_events.models.paths import Path
+from mdr_events.parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
+
+__all__ = ["parameters", "indenter", "friction", "limits", "path", "contact", "scenario", "paths", "method",
+           "DEFAULT_PRESET"]
+
+#: The preset of the paper both front ends start from when none is named.
+DEFAULT_PRESET = "paper-R30"
+
+
+def parameters(preset: str | None, values: Mapping[str, float], overrides: Mapping[str, float] | None = None,
+               complete: bool = False) -> tuple[Parameters, dict[str, str]]:
+    """The parameters of ``preset`` (default :data:`DEFAULT_PRESET`) with ``values`` on top, and the attributes saying
+    which came from the preset (:func:`~mdr_events.parameters.from_preset`).
+
+    Parameters
+    ----------
+    preset : str, optional
+        A preset of :data:`~mdr_events.parameters.PRESETS`.
+    values : mapping of str to float
+        Parameter values in SI units.
+    overrides : mapping of str to float, optional
+        Values on top of ``values`` (``--E`` beside ``--params FILE``).
+    complete : bool
+        Without a preset: ``values`` must name all eight parameters (a study's ``[parameters]`` table without a
+        preset), which are then the parameters, with no provenance.
+
+    Raises
+    ------
+    ValueError
+        A missing parameter (``complete``), an unknown preset or a value :class:`~mdr_events.Parameters` refuses.
+    """
+    if preset is None and complete:
+        missing = [name for name in PARAMETER_UNITS if name not in values]
+        if missing:
+            raise ValueError(f"without a preset lacks {', '.join(missing)}; allowed: all eight of "
+                             f"{', '.join(PARAMETER_UNITS)}, or preset = " + " or ".join(map(repr, PRESETS))
+                             + " and any of them as overrides")
+    values = {key: float(value) for key, value in {**values, **(overrides or {})}.items()}
+    if preset is None and complete:
+        return Parameters(**values), {}
+    return from_preset(DEFAULT_PRESET if preset is None else preset, **values)
+
+
+def indenter(power_law: Sequence[float] | None = None, radius: float | None = None, table: Any = None,
+             simulated: bool = True) -> SimulatedProfile:
+    """The indenter of one of ``power_law`` (``(c, n)``: ``f = c rⁿ``), ``radius`` (the flat punch) or ``table`` (a CSV
+    file with the columns ``r`` and ``f``); ``None`` without any: the paraboloid of the parameters' ``R``.
+
+    ``simulated``: one the simulators take (a power law from the cone on), else any the closed forms take (the
+    phase diagram's).
+
+    Raises
+    ------
+    ValueError, TypeError
+        The indenter's own message (a value it refuses, a table that cannot be read).
+    """
+    if table is not None:
+        profile = read_profile_table(table)
+    elif radius is not None:
+        profile = FlatPunch(radius)
+    elif power_law is not None:
+        profile = PowerLaw(*power_law)
+    else:
+        return None
+    return check_simulated_profile(profile) if simulated else profile
+
+
+def friction(law: str | None = None, mu: float | None = None) -> FrictionLaw:
+    """The friction law ``law`` (default the paper's ``"tau0"``) with ``mu`` for a law with Coulomb's part.
+
+    Raises
+    ------
+    ValueError, TypeError
+        The law's own message (an unknown law, ``mu`` missing or given to a law without Coulomb's part).
+    """
+    return FrictionLaw(law or "tau0", mu=mu)
+
+
+def limits(items: Iterable[str]) -> Limits:
+    """The resource limits of ``NAME=VALUE`` items (``--limit``, a ``[limits]`` table) over the defaults.
+
+    Raises
+    ------
+    ValueError
+        An unknown name or a value that is not a number (:func:`~mdr_events.limits.parse_limit`).
+    """
+    found = DEFAULT_LIMITS
+    for text in items:
+        found = parse_limit(text, found)
+    return found
+
+
+def path(waypoints: Sequence[Sequence[float]], speed: float | None, params: Parameters) -> Path:
+    """The path through ``waypoints`` (x, d) in m at ``speed`` (m/s, default the parameters' ``v``).
+
+    Raises
+    ------
+    ValueError, TypeError
+        The path's own message.
+    """
+    return Path(waypoints, params.v if speed is None else speed)
+
+
+def contact(params: Parameters, profile: SimulatedProfile = None, law: FrictionLaw | None = None) -> Contact:
+    """The :class:`~mdr_events.Contact` of ``params`` with ``profile`` (``None``: its paraboloid) and the friction
+    law ``law`` (default the paper's, ``τ0`` from ``params``)."""
+    return Contact.from_parameters(params, profile, law)
+
+
+def scenario(name: str, alpha: float | Sequence[float] | None, params: Parameters) -> Scenario:
+    """The paper's scenario ``name`` at the angles ``alpha`` (degrees; default those of Fig. 8 and 10), to the
+    parameters' ``d_max`` at their ``v``.
+
+    Raises
+    ------
+    ValueError, TypeError
+        An unknown scenario, or angles :class:`~mdr_events.Scenario` refuses.
+    """
+    return Scenario(name, FIGURE_ANGLES if alpha is None else alpha, params.d_max, params.v)
+
+
+def paths(custom: Path, params: Parameters) -> Paths:
+    """One custom path, labelled ``"path 1"``, whose run the parameters' ``d_max`` and ``v`` name (its checks and
+    ``param_d_max``, ``param_v``), as they always did (:meth:`~mdr_events.Paths.named_by`)."""
+    return Paths.named_by(custom, params.d_max, params.v)
+
+
+def method(name: str, options: Mapping[str, Any]) -> Method:
+    """The method ``name`` (``"discrete"``, ``"continuum"``) with its options; those given as ``None`` take the
+    method's defaults (:func:`~mdr_events.models.methods.as_method`).
+
+    Raises
+    ------
+    ValueError, TypeError
+        An unknown method, an option of another method or a value the method refuses.
+    """
+    return as_method(name, options)

@@ -1,0 +1,401 @@
+"""The typed jobs both front ends build: one frozen spec per verb, whose ``run`` calls the library and writes its files.
+
+The command line (:mod:`mdr_events.app.cli`, one module per verb) turns its options into a job, and a study file
+(:mod:`mdr_events.app.study`) its tables, through the same parsers (:mod:`mdr_events.app.inputs`); for the same input
+both build equal jobs, which differ only in the stem of the files they write. A job holds the package's values
+(:class:`~mdr_events.Contact`, :class:`~mdr_events.Scenario` or :class:`~mdr_events.Paths`, :class:`~mdr_events.Discrete`
+or :class:`~mdr_events.Continuum`, :class:`~mdr_events.Limits`), checked when it was built.
+
+=================  ===============================  ==========================================================
+verb               job                              library
+=================  ===============================  ==========================================================
+``derive``         :class:`DeriveJob`               :mod:`mdr_events.theory.symbolic`
+``phase-diagram``  :class:`PhaseJob`                :func:`~mdr_events.phase_diagram`
+``simulate``       :class:`SimulateJob`             :func:`~mdr_events.simulate`
+``validate``       :class:`ValidateJob`             :func:`~mdr_events.validate`, ``convergence_study``
+``fit``            :class:`FitJob`                  :func:`~mdr_events.fit`
+``sweep``          :class:`SweepJob`                :func:`~mdr_events.sweep`
+``reproduce``      :class:`ReproduceJob`            :func:`mdr_events.reproduction.reproduce`
+=================  ===============================  ==========================================================
+
+A job that reads measured runs (:class:`ValidateJob`, :class:`FitJob`) computes first (``compute``: everything read
+and checked, the files rendered) and writes after (``write``), so that a front end can read every input before it
+writes anything; ``run`` does both.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import importlib
+import math
+from dataclasses import dataclass, field
+from pathlib import Path as FilePath
+from typing import TYPE_CHECKING, Any, Callable, Mapping, NamedTuple
+
+import xarray as xr
+
+from mdr_events.analysis.fit import FitResult, fit
+from mdr_events.analysis.sweep import sweep
+from mdr_events.analysis.validate import validate
+from mdr_events.contact import Contact
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.methods import Method
+from mdr_events.models.motion import Motion
+from mdr_events.models.paths import Path
+from mdr_events.models.simulate import simulate
+from mdr_events.parameters import Parameters
+
+if TYPE_CHECKING:
+    from mdr_events.app.result_files import FileOutcome
+    from mdr_events.app.validation_files import RenderedReport
+
+__all__ = ["DeriveJob", "PhaseJob", "SimulateJob", "ValidateJob", "Convergence", "FitJob", "SweepJob", "ReproduceJob",
+           "Job", "CONVERGENCE_MODULE", "CONVERGENCE_STEM"]
+
+Progress = Callable[[str], None]
+
+#: Where :class:`ValidateJob` finds the convergence study (optional: skipped while the module is missing).
+CONVERGENCE_MODULE = "mdr_events.analysis.convergence_study"
+#: The file stem of the convergence study.
+CONVERGENCE_STEM = "convergence_study"
+
+
+def _quiet(message: str) -> None:
+    """A progress callback that says nothing."""
+
+
+@dataclass(frozen=True)
+class DeriveJob:
+    """Print the relations SymPy derives (``mdr-events derive``): each, or the one of ``key``, pretty or LaTeX."""
+
+    latex: bool = False
+    key: str | None = None
+
+    def run(self, out: FilePath | None = None, progress: Progress = _quiet) -> None:
+        """Print the relations on stdout."""
+        from mdr_events.theory import symbolic
+
+        keys = list(symbolic.relations()) if self.key is None else [self.key]
+        for key in keys:
+            rel = symbolic.relation(key)
+            number = f" {rel.equation}" if rel.equation else ""
+            print(f"# {rel.key}{number}: {rel.title}")
+            print(rel.latex() if self.latex else rel.pretty())
+            print()
+
+
+@dataclass(frozen=True)
+class PhaseJob:
+    """The phase diagram of a scenario (Fig. 9a/9b) for a contact; written as ``<stem>.nc`` and ``<stem>.png``.
+
+    Attributes
+    ----------
+    contact : Contact
+        The physical model.
+    scenario : {"A", "B"}
+        The scenario.
+    d_max, v : float
+        The depth and speed the diagram is drawn for (m, m/s).
+    provenance : mapping
+        Attributes every written result carries (which parameters came from a preset).
+    stem : str
+        The files' stem.
+    """
+
+    contact: Contact
+    scenario: str
+    d_max: float
+    v: float
+    provenance: Mapping[str, str] = field(default_factory=dict)
+    stem: str = "phase_diagram"
+
+    def run(self, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
+        """Compute the diagram and write its files into ``out``."""
+        from mdr_events.app.result_files import write_phase_diagram
+
+        return write_phase_diagram(self.contact.parameters(self.d_max, self.v), self.scenario, out, self.stem,
+                                   attrs=dict(self.provenance), profile=self.contact.profile,
+                                   friction=dataclasses.replace(self.contact.friction, tau0=None))
+
+
+@dataclass(frozen=True)
+class SimulateJob:
+    """A simulation: ``simulate(contact, motion, method)``; written as ``<stem>.nc``, ``.png`` (and the event log).
+
+    Attributes
+    ----------
+    contact : Contact
+    motion : Scenario or Paths
+    method : Discrete or Continuum
+    limits : Limits
+    provenance : mapping
+        Attributes the result carries.
+    stem : str
+        The files' stem.
+    """
+
+    contact: Contact
+    motion: Motion
+    method: Method
+    limits: Limits = DEFAULT_LIMITS
+    provenance: Mapping[str, str] = field(default_factory=dict)
+    stem: str = "simulation"
+
+    def compute(self) -> xr.Dataset:
+        """The simulation, with the provenance attributes."""
+        dataset = simulate(self.contact, self.motion, self.method, limits=self.limits)
+        dataset.attrs.update(self.provenance)
+        return dataset
+
+    def write(self, dataset: xr.Dataset, out: FilePath) -> list[FileOutcome]:
+        """Write the simulation into ``out``."""
+        from mdr_events.app.result_files import write_simulation
+
+        return write_simulation(dataset, out, self.stem)
+
+    def run(self, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
+        """Simulate and write."""
+        return self.write(self.compute(), out)
+
+
+class Convergence(NamedTuple):
+    """A convergence study computed and drawn but not written, and the lines to print about it."""
+
+    dataset: xr.Dataset | None
+    png: bytes | None
+    lines: list[str]
+
+
+class Validated(NamedTuple):
+    """What :meth:`ValidateJob.compute` gives: each run (as given) with its rendered report, and the convergence
+    study (``None``: none was asked for)."""
+
+    reports: list[tuple[str, RenderedReport]]
+    convergence: Convergence | None
+
+
+@dataclass(frozen=True)
+class ValidateJob:
+    """Runs of a simulator against the exact continuum: each written as ``<stem>.nc``, ``.md`` and ``.png``; with
+    ``spacings`` also the convergence study over them.
+
+    Attributes
+    ----------
+    runs : tuple of str
+        The runs as given (their names in messages).
+    files : tuple of pathlib.Path
+        The files of the runs.
+    stems : tuple of str
+        The stem each run's report is written with.
+    contact, motion
+        The contact and the motion of the one path the runs took (a Scenario of one angle, or Paths of one path).
+    description : str
+        The path, for the report.
+    tolerance : float
+        The verdict's bound on each quantity's max error relative to its range.
+    names, units, time_origin
+        How to read the runs (:func:`~mdr_events.validate`).
+    spacings : tuple of float, optional
+        One spacing per run (m) for a convergence study.
+    """
+
+    runs: tuple[str, ...]
+    files: tuple[FilePath, ...]
+    stems: tuple[str, ...]
+    contact: Contact
+    motion: Motion
+    description: str
+    tolerance: float = 1e-3
+    names: Mapping[str, str] = field(default_factory=dict)
+    units: Mapping[str, str] = field(default_factory=dict)
+    time_origin: str | float = "first_contact"
+    limits: Limits = DEFAULT_LIMITS
+    provenance: Mapping[str, str] = field(default_factory=dict)
+    spacings: tuple[float, ...] | None = None
+
+    def _options(self) -> dict[str, Any]:
+        return dict(names=dict(self.names), units=dict(self.units), time_origin=self.time_origin, limits=self.limits)
+
+    def compute(self, progress: Progress | None = None) -> Validated:
+        """Validate every run (and the convergence study) and render the files; nothing is written."""
+        from mdr_events.app.validation_files import render_validation
+
+        reports = []
+        for run, file, stem in zip(self.runs, self.files, self.stems):
+            report = validate(file, self.contact, self.motion, tolerance=self.tolerance, progress=progress,
+                              **self._options())
+            report.attrs.update(self.provenance, path_description=self.description)
+            reports.append((run, render_validation(report, stem)))
+        return Validated(reports, None if self.spacings is None else self._convergence())
+
+    def _convergence(self) -> Convergence:
+        """The convergence study of the runs by spacing, computed and drawn."""
+        try:
+            study = importlib.import_module(CONVERGENCE_MODULE).convergence_study
+        except (ModuleNotFoundError, AttributeError) as error:
+            if isinstance(error, ModuleNotFoundError) and error.name != CONVERGENCE_MODULE:
+                raise
+            return Convergence(None, None, [f"convergence study skipped ({CONVERGENCE_MODULE}.convergence_study is "
+                                            "not available)"])
+        # every option of validate but the verdict's tolerance (the study's verdict is the observed order)
+        dataset = study(dict(zip(self.spacings, self.files)), self.contact, self.motion, **self._options())
+        try:
+            from mdr_events.plotting.convergence import plot_convergence_study
+            from mdr_events.plotting.figures import figure_png
+            png = figure_png(plot_convergence_study(dataset))
+        except ImportError:
+            png = None
+        lines = [f"convergence study ({len(self.spacings)} spacings): {dataset.attrs.get('verdict', '?')}"]
+        if "max_error_order" in dataset:
+            orders = dataset["max_error_order"]
+            spreads = dataset.get("max_error_order_spread", orders * math.nan)
+            lines.append("  observed order of the max error: " + ", ".join(
+                f"{name} {float(orders.sel(quantity=name)):.2f} ± {float(spreads.sel(quantity=name)):.2f}"
+                for name in orders["quantity"].values)
+                + (f" (expected {float(dataset['expected_order']):g})" if "expected_order" in dataset else ""))
+        return Convergence(dataset, png, lines)
+
+    @staticmethod
+    def write_convergence(convergence: Convergence, out: FilePath) -> list[FilePath]:
+        """Write the convergence study's ``.nc`` and ``.png`` into ``out``, together or not at all."""
+        from mdr_events.io.files import PendingFile, atomic_write_all, netcdf_writer
+
+        png = convergence.png
+        files = [PendingFile(out / f"{CONVERGENCE_STEM}.nc", netcdf_writer(convergence.dataset), ".nc")]
+        if png is not None:
+            files.append(PendingFile(out / f"{CONVERGENCE_STEM}.png",
+                                     lambda temporary: FilePath(temporary).write_bytes(png), ".png"))
+        return atomic_write_all(files)
+
+
+@dataclass(frozen=True)
+class FitJob:
+    """A fit of the continuum to a measurement (:func:`~mdr_events.fit`): written as ``<stem>.nc``, ``.md``, ``.png``.
+
+    Attributes
+    ----------
+    data : str
+        The measurement as given (its name in messages).
+    file : pathlib.Path
+        Its file.
+    stem : str
+        The stem of the fit's files.
+    contact, motion
+        The fit's start and the one path of the experiment.
+    description : str
+        The path, for the report.
+    free : tuple of str
+        The parameters to fit.
+    bounds, noise, names, units, time_origin
+        As :func:`~mdr_events.fit` takes them (SI units).
+    """
+
+    data: str
+    file: FilePath
+    stem: str
+    contact: Contact
+    motion: Motion
+    description: str
+    free: tuple[str, ...]
+    bounds: Mapping[str, tuple[float, float]] = field(default_factory=dict)
+    noise: Mapping[str, float] = field(default_factory=dict)
+    names: Mapping[str, str] = field(default_factory=dict)
+    units: Mapping[str, str] = field(default_factory=dict)
+    time_origin: str | float = "first_contact"
+    limits: Limits = DEFAULT_LIMITS
+    provenance: Mapping[str, str] = field(default_factory=dict)
+
+    def compute(self, progress: Progress | None = None) -> tuple[FitResult, RenderedReport]:
+        """Fit and render the files; nothing is written."""
+        from mdr_events.app.fit_files import render_fit
+
+        result = fit(self.file, self.contact, self.motion, free=list(self.free), limits=self.limits,
+                     progress=progress, bounds=dict(self.bounds), noise=dict(self.noise), names=dict(self.names),
+                     units=dict(self.units), time_origin=self.time_origin)
+        result.dataset.attrs.update(self.provenance, path_description=self.description)
+        return result, render_fit(result.dataset, self.stem)
+
+
+@dataclass(frozen=True)
+class SweepJob:
+    """A parameter sweep (:func:`~mdr_events.sweep`), written chunk by chunk to ``store`` and as ``<stem>.nc``.
+
+    Attributes
+    ----------
+    grid : mapping or list of mappings
+        Names to values (the outer product), or parameter sets.
+    scenario : str or Path
+        The scenario's name, or the one custom path.
+    alpha : float, optional
+        The angle, unless the grid sweeps it.
+    base : Parameters
+        The values not swept.
+    profile, friction
+        The indenter (``None``: the paraboloid) and the friction law.
+    options : mapping
+        ``method``, ``dx``, ``n_steps``, ``chunk_size``, ``history_samples``, ``quantities`` as given.
+    scheduler, workers
+        Where the chunks run (``None``: the sweep's default).
+    store : pathlib.Path
+        The Zarr store.
+    stem : str
+        The stem of the labelled result's file.
+    """
+
+    grid: Any
+    scenario: str | Path
+    alpha: float | None
+    base: Parameters
+    profile: SimulatedProfile
+    friction: FrictionLaw
+    store: FilePath
+    stem: str
+    options: Mapping[str, Any] = field(default_factory=dict)
+    scheduler: str | None = None
+    workers: int | None = None
+    limits: Limits = DEFAULT_LIMITS
+    provenance: Mapping[str, str] = field(default_factory=dict)
+
+    def compute(self, progress: Progress = _quiet, resume: bool = False) -> xr.Dataset:
+        """Run the sweep (the store written chunk by chunk; ``resume``: an interrupted one continued)."""
+
+        def report(done: int, total: int) -> None:
+            progress(f"sweep: {done}/{total} runs")
+
+        result = sweep(self.grid, self.scenario, self.alpha, base=self.base, store=self.store, resume=resume,
+                       limits=self.limits, profile=self.profile, friction=self.friction, scheduler=self.scheduler,
+                       workers=self.workers, progress=report, **self.options)
+        result.attrs.update(self.provenance)
+        return result
+
+    def write(self, result: xr.Dataset, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
+        """Say how many runs failed and write ``<stem>.nc`` into ``out``; the store and the file written."""
+        from mdr_events.app.result_files import FileOutcome, FileStatus
+        from mdr_events.io.files import write_netcdf
+
+        progress(f"sweep: {result.attrs['runs']} runs, {result.attrs['failed_runs']} failed")
+        return [FileOutcome(self.store, FileStatus.WRITTEN),
+                FileOutcome(write_netcdf(result, out / f"{self.stem}.nc"), FileStatus.WRITTEN)]
+
+    def run(self, out: FilePath, progress: Progress = _quiet, resume: bool = False) -> list[FileOutcome]:
+        """Run the sweep and write its result."""
+        return self.write(self.compute(progress, resume), out, progress)
+
+
+@dataclass(frozen=True)
+class ReproduceJob:
+    """Everything in ``results/`` (:func:`mdr_events.reproduction.reproduce`); ``rewrite``: also the files that agree."""
+
+    rewrite: bool = False
+
+    def run(self, out: FilePath, progress: Progress = _quiet) -> None:
+        """Recompute and write the results into ``out``."""
+        from mdr_events.reproduction import reproduce
+
+        reproduce(out, progress=progress, keep_agreeing=not self.rewrite)
+
+
+#: A job.
+Job = DeriveJob | PhaseJob | SimulateJob | ValidateJob | FitJob | SweepJob | ReproduceJob

@@ -1,0 +1,201 @@
+"""The study file's format: its tables and keys (:data:`SCHEMA`), how each is checked, and how the file is read.
+
+A study (:mod:`mdr_events.app.study`) is read in two steps: this module checks the TOML document against the
+schema (unknown tables or keys, values of the wrong kind, missing required keys, tables that need each other: each
+named with the file, the table and the key); the study then builds its typed jobs from the checked tables through
+the shared parsers (:mod:`mdr_events.app.inputs`).
+"""
+
+from __future__ import annotations
+
+import os
+import tomllib
+from pathlib import Path as FilePath
+from typing import Any, Callable
+
+from mdr_events.io.files import check_file_path, check_output_stem
+from mdr_events.limits import LIMIT_UNITS
+from mdr_events.parameters import PARAMETER_UNITS
+
+__all__ = ["StudyError", "SCHEMA", "REQUIRED_TABLES", "MAX_TOML_BYTES", "check_table", "check_tables",
+           "measured_case", "read_toml", "one_table"]
+
+
+class StudyError(ValueError):
+    """A study file that cannot be run; the message names the file, table and key."""
+
+
+# kind -> (check, description of what is allowed)
+def _is_number(value: Any) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+_KINDS: dict[str, tuple[Callable[[Any], bool], str]] = {
+    "number": (_is_number, "a number"),
+    "integer": (lambda v: isinstance(v, int) and not isinstance(v, bool), "an integer"),
+    "string": (lambda v: isinstance(v, str), "a string"),
+    "numbers": (lambda v: _is_number(v) or (isinstance(v, list) and len(v) > 0 and all(map(_is_number, v))),
+                "a number or a non-empty list of numbers"),
+    "strings": (lambda v: isinstance(v, list) and len(v) > 0 and all(isinstance(s, str) for s in v),
+                "a non-empty list of strings"),
+    "points": (lambda v: isinstance(v, list) and len(v) >= 2
+               and all(isinstance(p, list) and len(p) == 2 and all(map(_is_number, p)) for p in v),
+               "a list of at least two [x, d] pairs of numbers (m)"),
+    "string table": (lambda v: isinstance(v, dict) and all(isinstance(s, str) for s in v.values()),
+                     'a table of strings, e.g. { time = "t", normal_force = "Fn" }'),
+    "string or number": (lambda v: isinstance(v, str) or _is_number(v), "a string or a number"),
+    "number table": (lambda v: isinstance(v, dict) and all(map(_is_number, v.values())),
+                     "a table of numbers, e.g. { normal_force = 1e-3 }"),
+    "bounds table": (lambda v: isinstance(v, dict) and all(isinstance(p, list) and len(p) == 2
+                                                            and all(map(_is_number, p)) for p in v.values()),
+                     "a table of [lower, upper] pairs, e.g. { tau0 = [1e3, 1e6] }"),
+    "grid table": (lambda v: isinstance(v, dict) and len(v) > 0 and all(
+        _is_number(p) or (isinstance(p, list) and len(p) > 0 and all(map(_is_number, p))) for p in v.values()),
+                   "a table of names to lists of numbers, e.g. { tau0 = [30e3, 42e3], alpha = [10, 20] }"),
+    "tables": (lambda v: isinstance(v, list) and len(v) > 0 and all(
+        isinstance(row, dict) and all(map(_is_number, row.values())) for row in v),
+               "a list of tables of numbers (parameter sets), e.g. [{ tau0 = 30e3 }, { tau0 = 42e3 }]"),
+}
+
+#: Table -> key -> (kind, required).
+SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
+    "parameters": {"preset": ("string", False), **{name: ("number", False) for name in PARAMETER_UNITS}},
+    "simulation": {"scenario": ("string", False), "alpha": ("numbers", False), "method": ("string", False),
+                   "dx": ("number", False), "dt": ("number", False), "n_steps": ("integer", False),
+                   "samples": ("integer", False), "rtol": ("number", False), "atol": ("number", False)},
+    "path": {"waypoints": ("points", True), "speed": ("number", False)},
+    "phase_diagram": {"scenarios": ("strings", True)},
+    "validate": {"runs": ("strings", True), "tolerance": ("number", False), "names": ("string table", False),
+                 "units": ("string table", False), "time_origin": ("string or number", False),
+                 "scenario": ("string", False), "alpha": ("numbers", False)},
+    "fit": {"data": ("string", True), "free": ("strings", True), "names": ("string table", False),
+            "units": ("string table", False), "time_origin": ("string or number", False),
+            "noise": ("number table", False), "bounds": ("bounds table", False), "scenario": ("string", False),
+            "alpha": ("numbers", False)},
+    "sweep": {"grid": ("grid table", False), "sets": ("tables", False), "scenario": ("string", False),
+              "alpha": ("number", False), "method": ("string", False), "dx": ("number", False),
+              "n_steps": ("integer", False), "quantities": ("strings", False), "chunk_size": ("integer", False),
+              "scheduler": ("string", False), "workers": ("integer", False), "history_samples": ("integer", False)},
+    "limits": {name: ("string or number", False) for name in LIMIT_UNITS},
+    "profile": {"c": ("number", False), "n": ("number", False), "radius": ("number", False),
+                "table": ("string", False)},
+    "friction": {"law": ("string", True), "mu": ("number", False)},
+    "output": {"directory": ("string", True), "name": ("string", False)},
+}
+REQUIRED_TABLES = ("output",)
+
+
+def check_table(table: str, content: Any, where: str) -> None:
+    """Raise :class:`StudyError` unless ``content`` is a table ``[table]`` of known keys of the right kinds."""
+    if not isinstance(content, dict):
+        raise StudyError(f"{where}: {table} = {content!r} is not allowed; allowed: a table [{table}]")
+    keys = SCHEMA[table]
+    for key, value in content.items():
+        if key not in keys:
+            raise StudyError(f"{where}: unknown key {key!r} in [{table}]; allowed: {', '.join(keys)}")
+        check, allowed = _KINDS[keys[key][0]]
+        if not check(value):
+            raise StudyError(f"{where}: [{table}] {key} = {value!r} is not allowed; allowed: {allowed}")
+    missing = [key for key, (_, required) in keys.items() if required and key not in content]
+    if missing:
+        raise StudyError(f"{where}: [{table}] lacks the required key(s) {', '.join(missing)}")
+
+
+def check_tables(document: dict[str, Any], where: str) -> None:
+    for table, content in document.items():
+        if table not in SCHEMA:
+            raise StudyError(f"{where}: unknown table [{table}]; allowed: "
+                             + ", ".join(f"[{name}]" for name in SCHEMA))
+        check_table(table, content, where)
+    for table in REQUIRED_TABLES:
+        if table not in document:
+            raise StudyError(f"{where}: the required table [{table}] is missing")
+    if not {"simulation", "phase_diagram", "validate", "fit", "sweep"} & set(document):
+        raise StudyError(f"{where}: nothing to compute; give a [simulation] table, a [phase_diagram] table, "
+                         "a [validate] table, a [fit] table, a [sweep] table or several")
+    if "path" in document and not {"simulation", "validate", "fit", "sweep"} & set(document):
+        raise StudyError(f"{where}: a [path] needs a [simulation] table (method, dx, ...), a [validate] table, a "
+                         "[fit] table or a [sweep] table")
+    if "sweep" in document and ("grid" in document["sweep"]) == ("sets" in document["sweep"]):
+        raise StudyError(f"{where}: [sweep] needs one of grid (names to values: the outer product) and sets "
+                         "(a list of parameter sets)")
+    simulation = document.get("simulation", {})
+    if "path" in document and ("scenario" in simulation or "alpha" in simulation):
+        raise StudyError(f"{where}: [simulation] scenario and alpha are not allowed with a [path] "
+                         "(its waypoints fix the motion)")
+    if "simulation" in document and "path" not in document and "scenario" not in simulation:
+        raise StudyError(f"{where}: [simulation] lacks the required key scenario (or give a [path] table)")
+    for table in ("validate", "fit"):
+        if table in document:
+            measured_case(document, where, table)
+    if "name" in document["output"]:
+        try:
+            check_output_stem("[output] name", document["output"]["name"])
+        except ValueError as error:
+            raise StudyError(f"{where}: {error}") from None
+
+
+def measured_case(document: dict[str, Any], where: str, name: str) -> tuple[str, float] | None:
+    """The scenario and angle the measured runs of table ``[name]`` (``validate``, ``fit``) took, or ``None`` for
+    the study's ``[path]``."""
+    table, simulation = document[name], document.get("simulation", {})
+    if "path" in document:
+        if "scenario" in table or "alpha" in table:
+            raise StudyError(f"{where}: [{name}] scenario and alpha are not allowed with a [path] "
+                             "(the runs are taken along its waypoints)")
+        return None
+    owner = name if "scenario" in table else "simulation"
+    scenario = table.get("scenario", simulation.get("scenario"))
+    if scenario is None:
+        raise StudyError(f"{where}: [{name}] lacks the key scenario; allowed: scenario and alpha in [{name}], "
+                         "a [simulation] scenario and alpha, or a [path] table")
+    owner = name if "alpha" in table else owner
+    alpha = table.get("alpha", simulation.get("alpha"))
+    angles = alpha if isinstance(alpha, list) else [] if alpha is None else [alpha]
+    if len(angles) != 1:
+        raise StudyError(f"{where}: [{name}] needs one angle; [{owner}] alpha = {alpha!r} is not allowed; "
+                         f"allowed: one angle in degrees (give alpha in [{name}])")
+    return str(scenario), float(angles[0])
+
+
+#: The largest study or parameter file read (bytes): far above any study, far below what would take long to parse.
+MAX_TOML_BYTES = 2**22
+
+
+def read_toml(path: Any, what: str) -> tuple[dict[str, Any], FilePath]:
+    """The TOML document of the file at ``path`` (a ``what``, e.g. "study file") and the file's path.
+
+    Raises ``TypeError`` if ``path`` is not a ``str`` or ``os.PathLike``, and :class:`StudyError` naming the
+    file if it is missing, a directory, unreadable, not UTF-8 text or not valid TOML.
+    """
+    source = check_file_path("path", path, f"a str or os.PathLike naming a {what} (.toml)")
+    where = os.fspath(source)
+    allowed = f"allowed: a {what}, TOML in UTF-8 text"
+    if os.path.exists(source) and not os.path.isdir(source) and not os.path.isfile(source):
+        raise StudyError(f"{where} is not a regular file (a device, FIFO or socket); {allowed}")
+    try:
+        if os.path.getsize(source) > MAX_TOML_BYTES:
+            raise StudyError(f"{where} has {os.path.getsize(source)} bytes; {allowed}, at most {MAX_TOML_BYTES} bytes")
+        with open(source, "rb") as handle:  # (a byte-order mark, as "UTF-8 with BOM" editors write, is read)
+            return tomllib.loads(handle.read().decode("utf-8-sig")), source
+    except FileNotFoundError:
+        raise StudyError(f"{where}: no such {what}") from None
+    except IsADirectoryError:
+        raise StudyError(f"{where} is a directory; {allowed}") from None
+    except UnicodeDecodeError as error:
+        raise StudyError(f"{where}: not UTF-8 text (byte {error.start}: {error.reason}); {allowed}") from None
+    except tomllib.TOMLDecodeError as error:
+        raise StudyError(f"{where}: not valid TOML ({error}); {allowed}") from None
+    except OSError as error:
+        raise StudyError(f"{where} cannot be read ({error.strerror or error}); {allowed}") from None
+
+
+def one_table(path: str | os.PathLike, table: str, what: str) -> tuple[dict[str, Any], str]:
+    document, source = read_toml(path, what)
+    where = os.fspath(source)
+    if table not in document:
+        raise StudyError(f"{where}: no [{table}] table; tables found: "
+                         f"{', '.join(f'[{name}]' for name in document) or 'none'}; allowed: a TOML file with a "
+                         f"[{table}] table as in a study file")
+    check_table(table, document[table], where)
+    return document[table], where
