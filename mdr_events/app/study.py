@@ -92,6 +92,8 @@ from dataclasses import dataclass
 from pathlib import Path as FilePath
 from typing import TYPE_CHECKING, Any, Callable, Iterable, NamedTuple
 
+from mdr_events.analysis.fit import FitResult
+from mdr_events.analysis.reports import ValidationReport, Verdict
 from mdr_events.app import inputs
 from mdr_events.app.jobs import FitJob, Job, PhaseJob, SimulateJob, SweepJob, ValidateJob
 from mdr_events.app.study_format import (MAX_TOML_BYTES, REQUIRED_TABLES, SCHEMA, StudyError, check_tables,
@@ -392,12 +394,12 @@ def load_path_file(path: str | os.PathLike, params: Parameters) -> Path:
 
 class StudyOutcomes(list):
     """The files a study wrote (a list of :class:`~mdr_events.app.result_files.FileOutcome`), and
-    ``verdicts``: each ``[validate]`` run (as written in the study) -> ``"pass"`` or ``"fail"``, and
-    ``"fit <data>"`` -> ``"pass"`` (every free parameter determined) or ``"fail"``."""
+    ``verdicts``: each ``[validate]`` run (as written in the study) -> its :class:`~mdr_events.Verdict`, and
+    ``"fit <data>"`` -> ``Verdict.PASS`` (every free parameter determined) or ``Verdict.FAIL``."""
 
-    def __init__(self, outcomes: Iterable[FileOutcome] = (), verdicts: dict[str, str] | None = None) -> None:
+    def __init__(self, outcomes: Iterable[FileOutcome] = (), verdicts: dict[str, Verdict] | None = None) -> None:
         super().__init__(outcomes)
-        self.verdicts: dict[str, str] = dict(verdicts or {})
+        self.verdicts: dict[str, Verdict] = dict(verdicts or {})
 
 
 def sweep_store(study: Study) -> FilePath:
@@ -479,13 +481,13 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
         written += job.run(out)
     for run, rendered in validated.reports if validated else ():
         written += write_rendered(rendered, out)
-        written.verdicts[run] = str(rendered.report.attrs["verdict"])
+        written.verdicts[run] = ValidationReport.from_dataset(rendered.report).verdict
         progress(f"validate: {run}: {written.verdicts[run]}")
     if study.sweep is not None:
         written += run_sweep(study, progress)
     if fitted is not None:
         label, rendered = f"fit {study.fit.data}", fitted[1]
         written += write_rendered(rendered, out)
-        written.verdicts[label] = "pass" if rendered.report.attrs["identifiable"] else "fail"
+        written.verdicts[label] = Verdict.PASS if FitResult.from_dataset(rendered.report).identifiable else Verdict.FAIL
         progress(f"{label}: {rendered.report.attrs['verdict']}")
     return written

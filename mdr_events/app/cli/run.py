@@ -15,12 +15,13 @@ def add_arguments(commands: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     """Run every job of the study; print the files written and which runs failed; exit 1 if one did."""
     from mdr_events.app.cli import progress
+    from mdr_events.analysis.reports import Verdict
     from mdr_events.app.study import load_study, run_study
 
     outcomes = run_study(load_study(args.study), progress=progress)
     for outcome in outcomes:
         print(outcome.path)
-    failed = [run for run, verdict in getattr(outcomes, "verdicts", {}).items() if verdict != "pass"]
+    failed = [run for run, verdict in getattr(outcomes, "verdicts", {}).items() if verdict is not Verdict.PASS]
     if failed:
         print(f"{'validation ' if all(not run.startswith('fit ') for run in failed) else ''}failed: {', '.join(failed)}")
     return 1 if failed else 0

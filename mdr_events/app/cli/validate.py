@@ -8,6 +8,7 @@ import math
 import re
 from pathlib import Path
 
+from mdr_events.analysis.reports import ValidationReport
 from mdr_events.app.cli import _options
 from mdr_events.app.cli._options import UsageError
 from mdr_events.app.jobs import CONVERGENCE_STEM, ValidateJob, Validated
@@ -124,7 +125,7 @@ def _print(validated: Validated, note: str | None, out: Path) -> int:
             lines.append(f"  written: {', '.join(map(str, written))}")
     if lines:
         print("\n".join(lines))
-    failed = [run for run, files in validated.reports if files.report.attrs["verdict"] != "pass"]
+    failed = [run for run, files in validated.reports if not ValidationReport.from_dataset(files.report).passed]
     count = len(validated.reports)
     print(f"{count} run{'s' if count != 1 else ''}: {count - len(failed)} pass, {len(failed)} fail")
     return 1 if failed else 0

@@ -1,0 +1,233 @@
+"""The samples of a validation: where each run is in contact, which samples are compared and why the others are
+left out, the norms of the differences, and the events read off a candidate's samples (:func:`candidate_events`).
+
+Samples left out (``left_out``, coded, and counted):
+
+- ``1`` outside the runs: after the end of either run (``nan``), not counted as left out;
+- ``2`` contact differs: one method in contact and the other not. The jump-in and the jump-off are
+  discontinuities in time that a discrete model meets up to one step (and one spring) apart, so a
+  pointwise difference there is the whole jump however fine the model;
+- ``3`` straddles an event: the first sample after a path corner (a time-stepping model moves
+  straight from one sample to the next and cuts the corner) or a contact made or lost.
+
+Norms over the samples compared in contact, each relative to the range (max − min) of the exact
+quantity there: ``max_error`` (max |Δ|), ``rms_error`` (root mean square) and ``l1_error``
+(time-weighted mean of |Δ|, trapezoid rule over the compared samples).
+
+Events found in the candidate by these rules (``nan`` where the candidate lacks what a rule needs):
+
+- **slip onset**: the first sample with ``sliding_fraction > 0``;
+- **full slip**: the first sample with ``sliding_fraction >= 1``, or without a sliding fraction, with
+  ``|F_x| >= (1 − FULL_SLIP_SHARE) τ0 A``;
+- **start of detachment**: the first sample after the largest contact area (or radius) at which it is
+  smaller than that largest value;
+- **pull-off**: the first sample without contact after a contact (contact: ``A > 0``, or ``a > 0``, or
+  ``F_N ≠ 0`` without either); its force is ``F_N`` of the last sample in contact, reported beside
+  the exact force at the jump and the exact ``F_N`` at that same sample (``F_N(t)`` has an infinite
+  slope at the jump, so a sampled force converges to the jump's only as ``sqrt(Δt)``).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Mapping
+
+import numpy as np
+
+from mdr_events.io.candidates import Candidate
+from mdr_events.models.continuum import PathSolution, evaluate
+
+__all__ = ["in_contact", "exact_at", "compared_samples", "check_run_covers_the_contact", "contact_differs_share",
+           "uncovered_share", "left_out_error", "exact_range", "relative_norms", "candidate_events", "LEFT_OUT_CODES",
+           "VALIDATED_EVENTS", "FULL_SLIP_SHARE", "COMPARED", "UNITS", "CONTACT_INDICATORS", "MIN_SAMPLES_IN_CONTACT",
+           "GAP_FACTOR", "TIME_AXIS_SHARE"]
+
+
+#: ``left_out`` codes -> meaning.
+LEFT_OUT_CODES = {0: "compared", 1: "outside the runs", 2: "contact differs", 3: "straddles an event"}
+#: Events compared, in the order of the report's ``event`` dimension.
+VALIDATED_EVENTS = ("slip_onset", "full_slip", "detachment_starts", "pull_off")
+#: A candidate without a sliding fraction is in full slip where |F_x| reaches this share below τ0 A.
+FULL_SLIP_SHARE = 1e-3
+#: Continuum events after which the first sample is left out (a corner cut, a contact made or lost).
+STRADDLED_EVENTS = ("corner", "tangential_reversal", "first_contact", "re_contact", "pull_off", "contact_ends")
+#: Of those, the events that end a contact.
+CONTACT_ENDING_EVENTS = ("pull_off", "contact_ends")
+#: The quantities that show where a run is in contact (``A > 0``, ``a > 0``, ``F_N ≠ 0``; :func:`in_contact`).
+CONTACT_INDICATORS = ("contact_area", "contact_radius", "normal_force")
+#: Quantities compared sample by sample (the sliding fraction only serves the events).
+COMPARED = ("normal_force", "tangential_force", "contact_area", "contact_radius")
+UNITS = {"normal_force": "N", "tangential_force": "N", "contact_area": "m2", "contact_radius": "m"}
+#: A candidate still in contact at its last sample must reach the exact run's end to this share.
+TIME_AXIS_SHARE = 1e-3
+#: A gap between a candidate's samples this many times their median spacing leaves the exact contact in it unsampled.
+GAP_FACTOR = 10.0
+#: The fewest samples of a candidate that must lie within the exact contact: fewer cannot show its curves (two
+#: samples, or a time column in µs read as s, left one or two samples to compare, and a pass).
+MIN_SAMPLES_IN_CONTACT = 10
+
+
+def in_contact(quantities: Mapping[str, np.ndarray]) -> np.ndarray:
+    """Where a run is in contact: ``A > 0``, else ``a > 0``, else ``F_N ≠ 0`` (``nan``: unknown, False)."""
+    for name in ("contact_area", "contact_radius"):
+        if name in quantities:
+            return np.nan_to_num(quantities[name]) > 0
+    return np.nan_to_num(quantities["normal_force"]) != 0 if "normal_force" in quantities else \
+        np.nan_to_num(quantities["tangential_force"]) != 0
+
+
+def _left_out(times: np.ndarray, exact: dict, candidate: dict, contact: np.ndarray, events) -> np.ndarray:
+    codes = np.zeros(times.shape, dtype=np.int8)
+    finite = np.all([np.isfinite(values) for name, values in candidate.items() if name in COMPARED], axis=0) & \
+        np.isfinite(exact["contact_radius"])  # (the sliding fraction, nan out of contact, only serves the events)
+    codes[~finite] = 1
+    differs = finite & (contact != (exact["contact_radius"] > 0))
+    codes[differs] = 2
+    out_of_contact = ~contact & ~(exact["contact_radius"] > 0)
+    for event in events:
+        if event.kind.value in STRADDLED_EVENTS:
+            after = int(np.searchsorted(times, event.time, side="left"))
+            if after < len(times) and times[after] > event.time and codes[after] == 0 and after > 0 and \
+                    not (event.kind.value in CONTACT_ENDING_EVENTS and out_of_contact[after]):
+                codes[after] = 3  # (after a pull-off both runs out of contact are compared: every force 0)
+    return codes
+
+
+def exact_at(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]:
+    """The exact quantities at the candidate's times (s from first contact): 0 before the contact, and after a run
+    that ended by coming apart (the indenter stays out, as a candidate that keeps writing shows)."""
+    exact = evaluate(solution, np.maximum(times, 0.0))
+    after = (times > solution.end_time) if solution.ended_by_contact else np.zeros(times.shape, bool)
+    for name in ("normal_force", "tangential_force", "contact_radius"):
+        exact[name][(times < 0) | after] = 0.0
+    exact["contact_area"] = math.pi * exact["contact_radius"] ** 2
+    return exact
+
+
+def compared_samples(source: str, times: np.ndarray, exact: dict, quantities: dict, contact: np.ndarray,
+                      solution: PathSolution) -> tuple[np.ndarray, np.ndarray]:
+    """Each sample's ``left_out`` code and whether it is compared: both runs in contact, or both out of it (every
+    force, the radius and the area 0 there); at least :data:`MIN_SAMPLES_IN_CONTACT` inside the exact contact."""
+    codes = _left_out(times, exact, quantities, contact, solution.events)
+    exact_contact = exact["contact_radius"] > 0
+    inside = int(np.count_nonzero((codes == 0) & exact_contact & contact))
+    if inside < MIN_SAMPLES_IN_CONTACT:
+        raise ValueError(f"{source}: {inside} samples of the candidate are in contact while the exact run is (its "
+                         f"time runs {times[0]:.6g}…{times[-1]:.6g} s from first contact, the exact contact "
+                         f"0…{solution.end_time:.6g} s); allowed: at least {MIN_SAMPLES_IN_CONTACT}: check the time "
+                         "column's unit and time_origin")
+    return codes, (codes == 0) & ((exact_contact & contact) | (~exact_contact & ~contact))
+
+
+def check_run_covers_the_contact(read: Candidate, times: np.ndarray, contact: np.ndarray, solution: PathSolution,
+                                  names: Mapping[str, str] | None) -> None:
+    """Refuse a run that stops while it is in contact and the exact contact goes on past its next sample: its time
+    axis ends there, or a column's values do (``nan`` from there on: a run cut short, not one to pass)."""
+    names = dict(names or {})
+    ends = {names.get("time", "time"): len(times) - 1}
+    for quantity, values in read.quantities.items():
+        finite = np.flatnonzero(np.isfinite(values))
+        if quantity in COMPARED and finite.size and finite[-1] < len(times) - 1:
+            ends[names.get(quantity, quantity)] = int(finite[-1])
+    for column, last in ends.items():
+        if contact[last] and times[last] < solution.end_time * (1.0 - TIME_AXIS_SHARE) and \
+                not _contact_ends_within_a_step(solution, times[:last + 1]):
+            where = (f"ends at {times[last]:.6g} s from first contact" if last == len(times) - 1 else
+                     f"is nan from row {last + 2} on (after {times[last]:.6g} s from first contact)")
+            raise ValueError(f"{read.source}: column {column!r} {where}, in contact, while the exact contact lasts "
+                             "beyond its next sample; allowed: values that cover the contact up to the run's last "
+                             f"sample in contact (the exact run lasts {solution.end_time:.6g} s)")
+
+
+def contact_differs_share(times: np.ndarray, codes: np.ndarray, exact_contact: np.ndarray) -> float:
+    """The time during which one run is in contact and the other is not (``left_out`` code 2), as a share of the
+    time the exact run is in contact, both measured on the candidate's samples (each sample stands for half the
+    intervals on either side). A run cut short, or blanked out with zeros, is in contact for less: its samples
+    there were left out of the norms, and it passed."""
+    if times.size < 2:
+        return 0.0
+    gaps = np.diff(times)
+    weights = 0.5 * (np.append(gaps, 0.0) + np.insert(gaps, 0, 0.0))
+    inside = float(np.sum(weights[exact_contact]))
+    return float(np.sum(weights[codes == 2]) / inside) if inside > 0 else 0.0
+
+
+def uncovered_share(times: np.ndarray, solution: PathSolution) -> float:
+    """The exact contact's time the candidate does not sample, as a share of it: before its first sample (a run whose
+    start is cut off), and inside gaps longer than :data:`GAP_FACTOR` times its median spacing (a run with its middle
+    cut out); the exact contact taken as ``[0, end_time]`` from first contact."""
+    end = solution.end_time
+    if not end > 0.0 or times.size < 2:
+        return 0.0
+    gaps = np.diff(times)
+    wide = gaps > GAP_FACTOR * float(np.median(gaps))
+    starts, stops = np.append(-np.inf, times[:-1][wide]), np.append(times[0], times[1:][wide])
+    overlap = np.clip(np.minimum(stops, end) - np.maximum(starts, 0.0), 0.0, None)
+    return float(np.sum(overlap)) / end
+
+
+def left_out_error(candidate: np.ndarray, exact: np.ndarray, codes: np.ndarray, compared: np.ndarray) -> float:
+    """The largest difference of the samples left out for a contact that differs or an event they straddle, relative
+    to the exact quantity's range over the compared samples (0 if none)."""
+    left = (codes >= 2) & np.isfinite(candidate)
+    if not np.any(left) or not np.any(compared):
+        return 0.0
+    return float(np.max(np.abs(candidate[left] - exact[left]))) / exact_range(exact, compared)
+
+
+def _contact_ends_within_a_step(solution: PathSolution, times: np.ndarray) -> bool:
+    """Whether the exact contact has ended by the candidate's next sample (its last time plus its last spacing): a
+    simulator that stops writing at its last sample in contact (the pull-off) covers the contact."""
+    following = float(times[-1] + (times[-1] - times[-2])) if len(times) > 1 else float(times[-1])
+    if following >= solution.end_time:
+        return True
+    return not float(evaluate(solution, np.array([max(following, 0.0)]))["contact_radius"][0]) > 0.0
+
+
+def exact_range(exact: np.ndarray, compared: np.ndarray) -> float:
+    """The exact quantity's range over the compared samples (its largest magnitude if flat, else 1): what every
+    error of it is relative to."""
+    e = exact[compared]
+    return float(np.max(e) - np.min(e)) or float(np.max(np.abs(e))) or 1.0
+
+
+def relative_norms(times, difference, exact, compared) -> tuple[float, float, float]:
+    """max, RMS and time-weighted L1 of the difference over the compared samples, each relative to the
+    exact quantity's range there."""
+    if not np.any(compared):
+        return math.nan, math.nan, math.nan
+    d, t = difference[compared], times[compared]
+    spread = exact_range(exact, compared)
+    l1 = float(np.trapezoid(np.abs(d), t) / (t[-1] - t[0])) if t.size > 1 else float(abs(d[0]))
+    return float(np.max(np.abs(d))) / spread, float(np.sqrt(np.mean(d**2))) / spread, l1 / spread
+
+
+def candidate_events(times, quantities, contact, params) -> dict[str, float]:
+    """Times of the events by the module's rules (times as given; also ``pull_off_force`` and
+    ``last_in_contact``, the index of the last sample in contact, -1 if none) (``nan`` where not found or not determinable)."""
+    out = {name: math.nan for name in VALIDATED_EVENTS}
+    out["pull_off_force"] = math.nan
+    out["last_in_contact"] = -1
+    sliding = quantities.get("sliding_fraction")
+    if sliding is not None:
+        onset = np.flatnonzero(np.nan_to_num(sliding) > 0)
+        full = np.flatnonzero(np.nan_to_num(sliding) >= 1)
+        out["slip_onset"] = float(times[onset[0]]) if onset.size else math.nan
+        out["full_slip"] = float(times[full[0]]) if full.size else math.nan
+    elif "tangential_force" in quantities and ("contact_area" in quantities or "contact_radius" in quantities):
+        area = quantities.get("contact_area", math.pi * quantities.get("contact_radius", np.nan) ** 2)
+        full = np.flatnonzero((area > 0) & (np.abs(quantities["tangential_force"])
+                                            >= (1 - FULL_SLIP_SHARE) * params.tau0 * area))
+        out["full_slip"] = float(times[full[0]]) if full.size else math.nan
+    size = quantities.get("contact_area", quantities.get("contact_radius"))
+    if size is not None and np.any(np.isfinite(size)):
+        largest = int(np.nanargmax(size))
+        smaller = np.flatnonzero(np.nan_to_num(size[largest:], nan=np.inf) < size[largest])
+        out["detachment_starts"] = float(times[largest + smaller[0]]) if smaller.size else math.nan
+    lost = np.flatnonzero(contact[:-1] & ~contact[1:])
+    if lost.size:
+        out["pull_off"] = float(times[lost[0] + 1])
+        out["last_in_contact"] = int(lost[0])
+        if "normal_force" in quantities:
+            out["pull_off_force"] = float(quantities["normal_force"][lost[0]])
+    return out
