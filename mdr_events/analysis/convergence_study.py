@@ -194,64 +194,17 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
     reports = [validate(candidates_by_dx[keys[i]], contact, motion, alpha, reference=solution, limits=limits,
                         **reading) for i in order]
     dx = np.array([spacings[i] for i in order])
-
     found = {str(name) for report in reports for name in report["quantity"].values}
     quantities = [name for name in COMPARED if name in found]
-    norms = {key: np.stack([report[key].reindex(quantity=quantities).values for report in reports])
-             for key in NORMS}
-    event_time = np.abs(np.stack([report["event_time_error"].sel(event=list(VALIDATED_EVENTS)).values
-                                  for report in reports]))
-    event_depth = np.abs(np.stack([report["event_depth_error"].sel(event=list(VALIDATED_EVENTS)).values
-                                   for report in reports]))
-    pull_off = np.abs(np.array([float(report["pull_off_force_candidate"]) - float(report["pull_off_force_exact"])
-                                for report in reports]))
-
-    data: dict[str, tuple] = {}
-
-    def add(key, values, dims, unit, text, row_text):
-        """``key`` (``dx`` × ``dims``) and its fits, one per row along ``dims`` (none: one row)."""
-        data[key] = (("dx", *dims), values, {"units": unit, "long_name": text})
-        columns = values.reshape(len(dx), -1)
-        fits = [fit_observed_order(dx, columns[:, j]) for j in range(columns.shape[1])]
-        shape = values.shape[1:]
-        orders = np.array([fit.order for fit in fits]).reshape(shape)
-        spreads = np.array([fit.spread for fit in fits]).reshape(shape)
-        flags = np.array([_converges(fit.order, fit.spread, expected_order) for fit in fits],
-                         dtype=np.int8).reshape(shape)
-        fitted = np.stack([fit.fitted for fit in fits], axis=1).reshape(values.shape)
-        data[f"{key}_order"] = (dims, orders, {"units": "1", "long_name": f"observed order of the {row_text}: "
-                                               "least-squares slope of log(error) against log(dx)"})
-        data[f"{key}_order_spread"] = (dims, spreads, {"units": "1", "long_name": f"standard error of the observed "
-                                                       f"order of the {row_text}"})
-        data[f"{key}_converges"] = (dims, flags, {"units": "1", "long_name": f"the {row_text} converges (1: yes): "
-                                                  f"{CONVERGES_RULE}"})
-        data[f"{key}_fitted"] = (("dx", *dims), fitted, {"units": unit, "long_name": f"fitted {row_text}, "
-                                                         "C dx**order"})
-
-    for key in NORMS:
-        text = f"{key.replace('_', ' ')} relative to the exact quantity's range"
-        add(key, norms[key], ("quantity",), "1", text, key.replace("_", " "))
-    add("event_time_error", event_time, ("event",), "s", "|candidate − exact| event time", "event time error")
-    add("event_depth_error", event_depth, ("event",), "m", "|candidate − exact| event depth", "event depth error")
-    add("pull_off_force_error", pull_off, (), "N", "|candidate − exact| F_N at the pull-off",
-        "pull-off force error")
-    data["expected_order"] = ((), expected_order, {"units": "1", "long_name": "expected order of convergence"})
+    data = _order_variables(reports, dx, quantities, expected_order)
     for key, text in (("samples_compared", "samples compared"),
                       ("samples_left_out", "samples of the runs left out (contact differs, straddles an event)")):
         data[key] = (("dx",), np.array([int(report[key]) for report in reports]), {"units": "1", "long_name": text})
-
-    with_fit = [(data[f"{key}_converges"][1], np.isfinite(data[f"{key}_order"][1])) for key in NORMS]
-    if not any(np.any(finite) for _, finite in with_fit):
-        verdict = ConvergenceVerdict.UNDETERMINED
-    elif all(np.all(flags[finite] == 1) for flags, finite in with_fit):
-        verdict = ConvergenceVerdict.CONVERGES
-    else:
-        verdict = ConvergenceVerdict.DOES_NOT_CONVERGE
     coords = {"dx": ("dx", dx, {"units": "m", "long_name": "spacing of the springs"}),
               "quantity": ("quantity", np.array(quantities), {"units": "1", "long_name": "quantity compared"}),
               "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
     first = reports[0].attrs
-    attrs = dict(content=CONVERGENCE_STUDY_CONTENT, verdict=verdict.value, expected_order=expected_order,
+    attrs = dict(content=CONVERGENCE_STUDY_CONTENT, verdict=_verdict(data).value, expected_order=expected_order,
                  converges_rule=CONVERGES_RULE, time_origin=str(job.time_origin),
                  candidate_sources="; ".join(str(report.attrs["candidate_source"]) for report in reports),
                  path_waypoints=first["path_waypoints"], path_speed=first["path_speed"])
@@ -259,6 +212,57 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
     attrs.update({key: value for key, value in first.items() if key.startswith(("profile", "friction_"))})
     return stamp(xr.Dataset(data, coords=coords), model.params, **attrs)
 
+
+def _fitted_variables(data: dict, key: str, values: np.ndarray, dx: np.ndarray, dims: tuple[str, ...], unit: str,
+                      text: str, row_text: str, expected_order: float) -> None:
+    """``key`` (``dx`` × ``dims``) and its fits, one per row along ``dims`` (none: one row): the observed order, its
+    standard error, whether it converges and the fitted line."""
+    data[key] = (("dx", *dims), values, {"units": unit, "long_name": text})
+    columns = values.reshape(len(dx), -1)
+    fits = [fit_observed_order(dx, columns[:, j]) for j in range(columns.shape[1])]
+    shape = values.shape[1:]
+    orders = np.array([fit.order for fit in fits]).reshape(shape)
+    spreads = np.array([fit.spread for fit in fits]).reshape(shape)
+    flags = np.array([_converges(fit.order, fit.spread, expected_order) for fit in fits], dtype=np.int8).reshape(shape)
+    fitted = np.stack([fit.fitted for fit in fits], axis=1).reshape(values.shape)
+    data[f"{key}_order"] = (dims, orders, {"units": "1", "long_name": f"observed order of the {row_text}: "
+                                           "least-squares slope of log(error) against log(dx)"})
+    data[f"{key}_order_spread"] = (dims, spreads, {"units": "1", "long_name": f"standard error of the observed "
+                                                   f"order of the {row_text}"})
+    data[f"{key}_converges"] = (dims, flags, {"units": "1", "long_name": f"the {row_text} converges (1: yes): "
+                                              f"{CONVERGES_RULE}"})
+    data[f"{key}_fitted"] = (("dx", *dims), fitted, {"units": unit, "long_name": f"fitted {row_text}, C dx**order"})
+
+
+def _order_variables(reports: list[xr.Dataset], dx: np.ndarray, quantities: list[str], expected_order: float
+                     ) -> dict[str, tuple]:
+    """The norms, event errors and pull-off force error of the reports along ``dx``, each with its observed order."""
+    data: dict[str, tuple] = {}
+    for key in NORMS:
+        values = np.stack([report[key].reindex(quantity=quantities).values for report in reports])
+        _fitted_variables(data, key, values, dx, ("quantity",), "1",
+                          f"{key.replace('_', ' ')} relative to the exact quantity's range", key.replace("_", " "),
+                          expected_order)
+    for key, unit, what in (("event_time_error", "s", "time"), ("event_depth_error", "m", "depth")):
+        values = np.abs(np.stack([report[key].sel(event=list(VALIDATED_EVENTS)).values for report in reports]))
+        _fitted_variables(data, key, values, dx, ("event",), unit, f"|candidate − exact| event {what}",
+                          f"event {what} error", expected_order)
+    pull_off = np.abs(np.array([float(report["pull_off_force_candidate"]) - float(report["pull_off_force_exact"])
+                                for report in reports]))
+    _fitted_variables(data, "pull_off_force_error", pull_off, dx, (), "N", "|candidate − exact| F_N at the pull-off",
+                      "pull-off force error", expected_order)
+    data["expected_order"] = ((), expected_order, {"units": "1", "long_name": "expected order of convergence"})
+    return data
+
+
+def _verdict(data: dict[str, tuple]) -> ConvergenceVerdict:
+    """The norms' verdict: undetermined without any fitted order; converges if every fitted order does."""
+    with_fit = [(data[f"{key}_converges"][1], np.isfinite(data[f"{key}_order"][1])) for key in NORMS]
+    if not any(np.any(finite) for _, finite in with_fit):
+        return ConvergenceVerdict.UNDETERMINED
+    if all(np.all(flags[finite] == 1) for flags, finite in with_fit):
+        return ConvergenceVerdict.CONVERGES
+    return ConvergenceVerdict.DOES_NOT_CONVERGE
 
 register_schema(CONVERGENCE_STUDY_CONTENT, {
     **{key: ("dx", "quantity") for key in NORMS},
