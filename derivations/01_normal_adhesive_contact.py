@@ -107,7 +107,8 @@ print("pull-off force", forces.min(), "N")
 
 # %% [markdown]
 # ## Step 6 — the JKR curve with the paper's two works of adhesion
-# With `mdr_events.Parameters.paper()`: the springs attach with `Δγ0` on the
+# With `mdr_events.Contact.paper()` (the elastomer, the paraboloid of `R = 30` mm, the
+# two works of adhesion, `τ0`) and the paper's depth `d_max` (a motion's, `Scenario`): the springs attach with `Δγ0` on the
 # way in and come off with `Δγ1` on the way out (Heß's rule with two works of
 # adhesion). Each branch is traced parametrically in `a` by (9) and (10), up
 # to `d_max`. Under displacement control the part with `∂d/∂a > 0` (`a` above
@@ -124,30 +125,33 @@ import matplotlib.pyplot as plt
 import mdr_events as me
 from mdr_events.theory import analytic
 
-p = me.Parameters.paper()
+contact = me.Contact.paper()
+d_max = me.Scenario("A").d_max  # the paper's 0.3 mm
+dgamma0, dgamma1 = contact.adhesion.dgamma0, contact.adhesion.dgamma1
 branches = {}
-for name, work, colour in (("Δγ0 (in)", p.dgamma0, "tab:blue"), ("Δγ1 (out)", p.dgamma1, "tab:red")):
-    radius = np.linspace(1e-6, float(me.jkr_contact_radius(p.d_max, p, work)), 4001)
-    branches[name] = dict(work=work, colour=colour, radius=radius, jump_off=analytic.jump_off(p, work),
-                          depth=me.jkr_depth(radius, p, work), force=me.jkr_normal_force(radius, p, work))
-a_in = analytic.jump_in_radius(p, p.dgamma0)
-jump_in = dict(depth=float(me.jkr_depth(a_in, p, p.dgamma0)), force=float(me.jkr_normal_force(a_in, p, p.dgamma0)))
-jump_off = analytic.jump_off(p, p.dgamma1)
-a_pinned = float(me.jkr_contact_radius(p.d_max, p, p.dgamma0))
-pinned_depth = np.linspace(float(me.jkr_depth(a_pinned, p, p.dgamma1)), p.d_max, 200)
-pinned_force = analytic.normal_force(pinned_depth, a_pinned, p)
+for name, work, colour in (("Δγ0 (in)", dgamma0, "tab:blue"), ("Δγ1 (out)", dgamma1, "tab:red")):
+    radius = np.linspace(1e-6, float(me.jkr_contact_radius(d_max, contact, work)), 4001)
+    branches[name] = dict(work=work, colour=colour, radius=radius, jump_off=me.jump_off(contact, work),
+                          depth=me.jkr_depth(radius, contact, work), force=me.jkr_normal_force(radius, contact, work))
+a_in = analytic.jump_in_radius(contact, dgamma0)
+jump_in = dict(depth=float(me.jkr_depth(a_in, contact, dgamma0)),
+               force=float(me.jkr_normal_force(a_in, contact, dgamma0)))
+jump_off = me.jump_off(contact, dgamma1)
+a_pinned = float(me.jkr_contact_radius(d_max, contact, dgamma0))
+pinned_depth = np.linspace(float(me.jkr_depth(a_pinned, contact, dgamma1)), d_max, 200)
+pinned_force = analytic.normal_force(pinned_depth, a_pinned, contact)
 
 # the marked points lie where they should: jump-in at d = 0, jump-off at the minimum depth of its
 # branch with the force −(5/6)πΔγ1 R; both branches end at d_max; the pinned line meets both branches
-assert abs(jump_in["depth"]) < 1e-12 * p.d_max
+assert abs(jump_in["depth"]) < 1e-12 * d_max
 out = branches["Δγ1 (out)"]
 assert math.isclose(out["depth"].min(), jump_off["depth"], rel_tol=1e-6)
 assert abs(out["radius"][out["depth"].argmin()] - jump_off["contact_radius"]) <= out["radius"][1] - out["radius"][0]
-assert math.isclose(jump_off["normal_force"], -5 / 6 * math.pi * p.dgamma1 * p.R, rel_tol=1e-12)
+assert math.isclose(jump_off["normal_force"], -5 / 6 * math.pi * dgamma1 * contact.indenter.R, rel_tol=1e-12)
 for branch in branches.values():
-    assert math.isclose(branch["depth"][-1], p.d_max, rel_tol=1e-12)
+    assert math.isclose(branch["depth"][-1], d_max, rel_tol=1e-12)
 assert math.isclose(pinned_force[-1], branches["Δγ0 (in)"]["force"][-1], rel_tol=1e-10)
-assert math.isclose(pinned_force[0], float(me.jkr_normal_force(a_pinned, p, p.dgamma1)), rel_tol=1e-10)
+assert math.isclose(pinned_force[0], float(me.jkr_normal_force(a_pinned, contact, dgamma1)), rel_tol=1e-10)
 
 # %%
 fig, axes = plt.subplots(1, 2, figsize=(11, 4.2), constrained_layout=True)
@@ -171,5 +175,5 @@ for ax, zoom in zip(axes, (False, True)):
         ax.set_ylim(-25, 10)
         ax.set_title("zoom: jump-in and jump-off")
     else:
-        ax.set_title(f"JKR branches (9), (10), R = {p.R * 1e3:g} mm")
+        ax.set_title(f"JKR branches (9), (10), R = {contact.indenter.R * 1e3:g} mm")
         ax.legend(fontsize=8)

@@ -72,8 +72,8 @@ import matplotlib.pyplot as plt
 import mdr_events as me
 from mdr_events.theory import analytic
 
-p = me.Parameters.paper()
-ds = me.simulate(p, "A", alpha=[20.0], method="continuum", samples=801).sel(alpha=20.0)
+contact = me.Contact.paper()
+ds = me.simulate(contact, me.Scenario("A", 20.0), me.Continuum(samples=801)).sel(alpha=20.0)
 time = ds["time"].values
 radius = ds["contact_radius"].values
 front = ds["sliding_fraction"].values * radius
@@ -85,9 +85,9 @@ event_depth = dict(zip(ds["event_kind"].values, ds["event_depth"].values))
 in_contact = radius > 0
 assert np.all(front[in_contact] <= radius[in_contact] * (1 + 1e-12))
 assert np.all(front[time < events["slip_onset"]] == 0.0)
-assert math.isclose(event_depth["slip_onset"], me.d_crit(20.0, p, "A", adhesion=True), rel_tol=1e-7)
+assert math.isclose(event_depth["slip_onset"], me.d_crit(20.0, contact, "A", adhesion=True), rel_tol=1e-7)
 opened = front[time > events["slip_onset"]][0]
-assert opened >= analytic.jump_in_radius(p, p.dgamma0) * (1 - 1e-9)
+assert opened >= analytic.jump_in_radius(contact, contact.adhesion.dgamma0) * (1 - 1e-9)
 after_full_slip = (time > events["full_slip"]) & in_contact
 assert after_full_slip.any() and np.allclose(front[after_full_slip], radius[after_full_slip], rtol=1e-9)
 

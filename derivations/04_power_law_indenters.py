@@ -30,7 +30,9 @@ from mdr_events.theory import symbolic
 from mdr_events.theory.symbolic import relation
 
 S = symbolic
-p = me.Parameters.paper()
+contact = me.Contact.paper()  # the paper's elastomer, paraboloid, adhesion and τ0
+d_max = me.Scenario("A").d_max  # the paper's depth (0.3 mm), a motion's
+p = contact.parameters(d_max, me.Scenario("A").v)  # the flat record mdr_events.power_law's functions take
 
 # %% [markdown]
 # ## Step 1 — the equivalent profile
@@ -130,7 +132,7 @@ for n in (1.5, 3.0):
     shape = PowerLaw(2.0e3 if n == 3.0 else 20.0, n)
     depth = power_law.d_crit_A(alpha, shape, p, adhesion=True)
     radius = power_law.contact_radius(depth, shape, p, p.dgamma0)
-    assert math.isclose(depth / math.tan(math.radians(alpha)), float(me.critical_shift(radius, p)), rel_tol=1e-12)
+    assert math.isclose(depth / math.tan(math.radians(alpha)), float(me.critical_shift(radius, contact)), rel_tol=1e-12)
 
 # %% [markdown]
 # ## The normal force and the critical angles of four indenters
@@ -168,6 +170,9 @@ ax_angle.bar(positions + 0.2, angles_b, 0.4, label="scenario B: comes apart befo
 ax_angle.set_xticks(positions, names, rotation=15)
 ax_angle.set(ylabel="critical angle (°)", title="critical angles, the paper's material and adhesion")
 ax_angle.legend(loc="upper right", fontsize="small")
-assert math.isclose(angles_a[1], me.critical_angle(p, "A"), rel_tol=1e-12)
-assert math.isclose(angles_b[1], me.critical_angle(p, "B"), rel_tol=1e-12)
+assert math.isclose(angles_a[1], me.critical_angle(contact, "A", d_max=d_max), rel_tol=1e-12)
+assert math.isclose(angles_b[1], me.critical_angle(contact, "B", d_max=d_max), rel_tol=1e-12)
+for shape, angle in zip([*shapes.values(), punch], angles_a):  # each indenter's contact draws its phase diagram
+    shaped = me.Contact(contact.elastomer, shape, contact.adhesion, contact.friction)
+    assert me.phase_diagram(shaped, [20.0], "A", d_max=d_max)["critical_angle_jkr"] == angle
 print({name: (round(a_, 3), round(b_, 3)) for name, a_, b_ in zip(names, angles_a, angles_b)})

@@ -29,8 +29,10 @@ from mdr_events import FrictionLaw, mindlin
 from mdr_events.theory import symbolic as S
 from mdr_events.theory.symbolic import relation
 
-hertz = me.Parameters.paper().replace(dgamma0=0.0, dgamma1=0.0)
+hertz = me.Parameters.paper().replace(dgamma0=0.0, dgamma1=0.0)  # the flat record mindlin's closed forms take
 coulomb = FrictionLaw("coulomb", mu=0.3)
+# the same contact as one value (no adhesion: Hertz), for the simulations
+contact = me.Contact(me.Elastomer(hertz.E, hertz.nu), me.Paraboloid(hertz.R), friction=coulomb)
 
 # %% [markdown]
 # ## Step 1 — the cap of one spring
@@ -80,7 +82,7 @@ for u_x in shifts[1::10]:
 path = me.Path([(0, 0), (0, d), (0.6 * full, d), (-0.6 * full, d), (0.6 * full, d), (1.2 * full, d)], speed=1e-6)
 start = path.first_contact_time()
 times = np.union1d(np.linspace(0, path.duration - start, 1201), path.corner_times - start)
-exact = me.simulate(hertz, path, method="continuum", t=times, friction=coulomb)
+exact = me.simulate(contact, path, me.Continuum(t=times))
 held = exact["indentation_depth"].values[0] == d
 x = exact["tangential_displacement"].values[0][held]
 closed = mindlin.tangential_force(x, d, coulomb, hertz)
@@ -103,7 +105,7 @@ ax.legend()
 # %%
 angle = mindlin.critical_angle_A(coulomb, hertz)
 assert math.isclose(angle, math.degrees(math.atan(hertz.G_star / (0.3 * hertz.E_star))), rel_tol=1e-15)
-below = me.simulate(hertz, "A", alpha=[0.9 * angle], method="continuum", samples=201, friction=coulomb)
+below = me.simulate(contact, me.Scenario("A", 0.9 * angle), me.Continuum(samples=201))
 pressed = below["normal_force"].values[0] > 0
 ratio = below["tangential_force"].values[0][pressed] / below["normal_force"].values[0][pressed]
 indenting = ratio[: len(ratio) // 3]  # (the path turns back at d_max, two thirds of the run from its end)

@@ -15,7 +15,8 @@ from typing import Any, Mapping
 
 from mdr_events.validation import as_float, check_choice, shown
 
-__all__ = ["Parameters", "PARAMETER_UNITS", "PARAMETER_LONG_NAMES", "PRESETS", "from_preset", "check_parameters"]
+__all__ = ["Parameters", "PARAMETER_UNITS", "PARAMETER_LONG_NAMES", "PRESETS", "PAPER_D_MAX", "PAPER_V", "from_preset",
+           "check_parameters"]
 
 #: SI unit of every field, used for dataset attributes and the CLI help.
 PARAMETER_UNITS: dict[str, str] = {
@@ -79,6 +80,9 @@ def _is_allowed(name: str, value: float) -> bool:
 
 #: Named parameter sets of the paper (CLI ``--preset``, study files): the radius of ``Parameters.paper``.
 PRESETS = {"paper-R30": 0.03, "paper-R100": 0.1}
+#: The paper's depth ``d_max`` (m, quoted) and speed ``v`` (m/s, inferred) of :meth:`Parameters.paper`: the defaults of
+#: a motion (``Scenario``) and of the closed forms of a :class:`~mdr_events.Contact` (which holds neither).
+PAPER_D_MAX, PAPER_V = 0.3e-3, 1e-6
 
 
 @dataclass(frozen=True)
@@ -198,8 +202,8 @@ class Parameters:
             tau0=42e3,
             dgamma0=0.01,
             dgamma1=0.15,
-            d_max=0.3e-3,
-            v=1e-6,
+            d_max=PAPER_D_MAX,
+            v=PAPER_V,
         )
 
     #: Fields of :meth:`paper` that are inferred rather than quoted.

@@ -29,17 +29,18 @@ WRONG = ("hess_sqrt2", "stiffness_E", "no_hysteresis")
 
 
 @pytest.fixture(scope="module")
-def right(paper, tmp_path_factory):
+def right(tmp_path_factory):
     """The right simulator's reports at the script's four spacings, {dx: report}."""
     out = tmp_path_factory.mktemp("right")
-    return {dx: example.run_and_validate(paper, dx, out)[0] for dx in example.SPACINGS}
+    return {dx: example.run_and_validate(me.Contact.paper(), dx, out)[0] for dx in example.SPACINGS}
 
 
 @pytest.fixture(scope="module")
-def variants(paper, tmp_path_factory):
+def variants(tmp_path_factory):
     """Every variant's reports at the script's three spacings, {variant: [report, ...]}."""
     out = tmp_path_factory.mktemp("variants")
-    return {variant: [example.run_and_validate(paper, dx, out, variant)[0] for dx in example.WRONG_SPACINGS]
+    return {variant: [example.run_and_validate(me.Contact.paper(), dx, out, variant)[0]
+                      for dx in example.WRONG_SPACINGS]
             for variant in sim.VARIANTS}
 
 
@@ -116,11 +117,12 @@ def test_package_convergence_study_says_converges(paper, tmp_path):
     convergence_study = example.find_convergence_study()
     if convergence_study is None:
         pytest.skip("mdr_events.analysis.convergence_study is not in this version")
-    csvs = {dx: example.run_and_validate(paper, dx, tmp_path)[1] for dx in example.SPACINGS}
+    csvs = {dx: example.run_and_validate(me.Contact.paper(), dx, tmp_path)[1] for dx in example.SPACINGS}
     study = convergence_study(csvs, paper, "A", alpha=example.ALPHA)
     assert study.attrs["verdict"] == "converges"
     assert np.all(study["max_error_order"].values > 0.7)
-    wrong = {dx: example.run_and_validate(paper, dx, tmp_path, "stiffness_E")[1] for dx in example.SPACINGS}
+    wrong = {dx: example.run_and_validate(me.Contact.paper(), dx, tmp_path, "stiffness_E")[1]
+             for dx in example.SPACINGS}
     assert convergence_study(wrong, paper, "A", alpha=example.ALPHA).attrs["verdict"] == "does not converge"
 
 
@@ -136,7 +138,7 @@ FLAGGED_EVENTS = {"right": set(), "hess_sqrt2": {"slip_onset", "full_slip", "det
 def test_flags(paper, variants, variant):
     """The script's flags: an error outside the tolerance that does not shrink with Δx."""
     reports = variants[variant]
-    found = {flag.split(" ")[0] for flag in example.flags(reports[-2], reports[-1], example.WRONG_SPACINGS[-1], paper)}
+    found = {flag.split(" ")[0] for flag in example.flags(reports[-2], reports[-1], example.WRONG_SPACINGS[-1])}
     assert found == FLAGGED_QUANTITIES[variant] | FLAGGED_EVENTS[variant]
     verdicts = {report.attrs["verdict"] for report in reports}
     assert verdicts == ({"pass"} if variant == "right" else {"fail"})

@@ -20,29 +20,31 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))  # my_simulator.py sits
 import my_simulator as sim  # noqa: E402
 
 ALPHA = 20.0  # degrees
+#: The motion: scenario A at ALPHA to the paper's depth d_max = 0.3 mm at its speed v = 1 µm/s.
+SCENARIO = me.Scenario("A", ALPHA)
 SPACINGS = (8e-6, 4e-6, 2e-6, 1e-6)  # m
 WRONG_SPACINGS = (4e-6, 2e-6, 1e-6)  # m: does an error shrink with Δx?
 QUANTITIES = ("normal_force", "tangential_force", "contact_area")
 SYMBOLS = {"normal_force": "F_N", "tangential_force": "F_x", "contact_area": "A"}
 
 
-def time_step(dx, params):
-    """dt = 0.5 Δx / v: each step moves the indenter half a spring spacing."""
-    return 0.5 * dx / params.v
+def time_step(dx, motion=SCENARIO):
+    """dt = 0.5 Δx / v: each step moves the indenter half a spring spacing (``v`` the motion's speed)."""
+    return 0.5 * dx / motion.v
 
 
-def tolerance(dx, params):
+def tolerance(dx, contact):
     """The resolution of the springs: one spring row per side, 2 Δx / a(d_max) of the contact area
     (and of the full-slip F_x = π a² τ0), a = JKR radius at d_max."""
-    return 2 * dx / float(me.jkr_contact_radius(params.d_max, params, params.dgamma0))
+    return 2 * dx / float(me.jkr_contact_radius(SCENARIO.d_max, contact, contact.adhesion.dgamma0))
 
 
-def run_and_validate(params, dx, out_dir, variant="right"):
+def run_and_validate(contact, dx, out_dir, variant="right"):
     """Simulate, write the CSV and validate it: the report (xarray.Dataset) and the CSV's path."""
-    result = sim.simulate(sim.PAPER, ALPHA, dx, time_step(dx, params), variant)
+    result = sim.simulate(sim.PAPER, ALPHA, dx, time_step(dx), variant)
     csv_path = Path(out_dir) / f"{variant}_dx{dx * 1e6:g}um.csv"
     sim.write_csv(result, csv_path)
-    return me.validate(csv_path, params, "A", ALPHA, tolerance=tolerance(dx, params)), csv_path
+    return me.validate(csv_path, contact, SCENARIO, tolerance=tolerance(dx, contact)), csv_path
 
 
 def observed_order(spacings, errors):
@@ -50,7 +52,7 @@ def observed_order(spacings, errors):
     return float(np.polyfit(np.log(spacings), np.log(errors), 1)[0])
 
 
-def flags(coarse, fine, dx_fine, params):
+def flags(coarse, fine, dx_fine):
     """What a wrong model shows and a right one does not, from reports at two spacings (Δx and Δx/2):
     a quantity outside the tolerance whose error does not shrink with Δx (order < 0.4), and an event
     more than 4 time steps off at the finer spacing that does not shrink either."""
@@ -62,22 +64,22 @@ def flags(coarse, fine, dx_fine, params):
             out.append(f"{SYMBOLS[q]} (max error {e_fine:.1e}, order {np.log2(e_coarse / e_fine):.2f})")
     for event in fine.event.values:
         e_coarse, e_fine = (float(report.event_time_error.sel(event=event)) for report in (coarse, fine))
-        if abs(e_fine) > 4 * time_step(dx_fine, params) and abs(e_fine) > shrink * abs(e_coarse):
+        if abs(e_fine) > 4 * time_step(dx_fine) and abs(e_fine) > shrink * abs(e_coarse):
             out.append(f"{event} ({e_fine:+.1f} s)")
     return out
 
 
-def validate_right(params, out_dir):
+def validate_right(contact, out_dir):
     """The right simulator at SPACINGS: reports by spacing, the CSVs by spacing."""
     print(f"right simulator, scenario A at {ALPHA:g}°, dt = 0.5 Δx / v; tolerance 2 Δx / a(d_max); "
           "max errors relative to each quantity's range:")
     print("  Δx/µm  dt/s  samples    max F_N    max F_x      max A  tolerance  verdict")
     reports, csvs = {}, {}
     for dx in SPACINGS:
-        report, csvs[dx] = run_and_validate(params, dx, out_dir)
+        report, csvs[dx] = run_and_validate(contact, dx, out_dir)
         reports[dx] = report
         errors = "".join(f"{float(report.max_error.sel(quantity=q)):11.2e}" for q in QUANTITIES)
-        print(f"  {dx * 1e6:5g} {time_step(dx, params):5g} {report.time.size:8d}{errors}"
+        print(f"  {dx * 1e6:5g} {time_step(dx):5g} {report.time.size:8d}{errors}"
               f"{report.attrs['tolerance']:11.2e}  {report.attrs['verdict']}")
     print("  event time errors / s (candidate − exact; exact times in s from first contact):")
     print("  Δx/µm" + "".join(f"{e:>19}" for e in reports[SPACINGS[0]].event.values))
@@ -98,7 +100,7 @@ def validate_right(params, out_dir):
 
 
 def find_convergence_study():
-    """mdr_events' own convergence study (``convergence_study(candidates_by_dx, params, path, alpha=)``),
+    """mdr_events' own convergence study (``convergence_study(candidates_by_dx, contact, motion)``),
     or None where this version of mdr_events has none."""
     convergence_study = getattr(me, "convergence_study", None)
     if convergence_study is None:
@@ -111,13 +113,13 @@ def find_convergence_study():
     return convergence_study if callable(convergence_study) else None
 
 
-def package_convergence_study(params, csvs):
+def package_convergence_study(contact, csvs):
     """The observed orders by mdr_events.analysis.convergence_study of the same CSVs, if it exists."""
     convergence_study = find_convergence_study()
     if convergence_study is None:
         print("mdr_events.analysis.convergence_study is not in this version of mdr_events: skipped")
         return None
-    study = convergence_study(csvs, params, "A", alpha=ALPHA)
+    study = convergence_study(csvs, contact, SCENARIO)
     print(f"mdr_events.analysis.convergence_study: verdict {study.attrs.get('verdict')!r}; observed orders ± spread:")
     for name in [name for name in study.data_vars if name.endswith("_order") and name != "expected_order"]:
         order, spread = study[name], study.get(f"{name}_spread", study[name] * np.nan)
@@ -130,7 +132,7 @@ def package_convergence_study(params, csvs):
     return study
 
 
-def validate_wrong(params, out_dir):
+def validate_wrong(contact, out_dir):
     """Each variant at WRONG_SPACINGS: its max errors, event errors, what flags it (from the two finest)
     and, if mdr_events has it, the verdict of convergence_study."""
     convergence_study = find_convergence_study()
@@ -138,9 +140,9 @@ def validate_wrong(params, out_dir):
           "outside the tolerance whose error does not shrink with Δx, an event > 4 steps off that does not shrink")
     found = {}
     for variant, what in sim.VARIANTS.items():
-        runs = [run_and_validate(params, dx, out_dir, variant) for dx in WRONG_SPACINGS]
+        runs = [run_and_validate(contact, dx, out_dir, variant) for dx in WRONG_SPACINGS]
         reports = [report for report, _ in runs]
-        found[variant] = flags(reports[-2], reports[-1], WRONG_SPACINGS[-1], params)
+        found[variant] = flags(reports[-2], reports[-1], WRONG_SPACINGS[-1])
         print(f"  {variant} ({what}): verdicts {', '.join(r.attrs['verdict'] for r in reports)}")
         print("    max errors: " + "; ".join(f"{SYMBOLS[q]} " + " → ".join(
             f"{float(r.max_error.sel(quantity=q)):.1e}" for r in reports) for q in QUANTITIES))
@@ -149,7 +151,7 @@ def validate_wrong(params, out_dir):
         print(f"    pull-off force {float(reports[-1].pull_off_force_candidate):.5f} N "
               f"(exact {float(reports[-1].pull_off_force_exact):.5f} N)")
         if convergence_study is not None:
-            study = convergence_study({dx: csv for dx, (_, csv) in zip(WRONG_SPACINGS, runs)}, params, "A", alpha=ALPHA)
+            study = convergence_study({dx: csv for dx, (_, csv) in zip(WRONG_SPACINGS, runs)}, contact, SCENARIO)
             print(f"    convergence_study verdict: {study.attrs.get('verdict')}")
         print(f"    flagged by: {', '.join(found[variant]) or 'nothing'}")
     return found
@@ -157,16 +159,16 @@ def validate_wrong(params, out_dir):
 
 def main(out_dir=None):
     """Everything above, printed; returns the right simulator's reports by Δx and each variant's flags."""
-    params = me.Parameters.paper()
-    print(f"mdr_events.Parameters.paper(): {params}")
-    if params.as_dict() != sim.PAPER:
-        raise SystemExit(f"my_simulator.PAPER differs from Parameters.paper(): {sim.PAPER}")
+    contact = me.Contact.paper()
+    print(f"mdr_events.Contact.paper(): {contact}; {SCENARIO}")
+    if contact.parameters(SCENARIO.d_max, SCENARIO.v).as_dict() != sim.PAPER:
+        raise SystemExit(f"my_simulator.PAPER differs from Contact.paper() and {SCENARIO}: {sim.PAPER}")
     with tempfile.TemporaryDirectory() as scratch:
         out = Path(out_dir or scratch)
         out.mkdir(parents=True, exist_ok=True)
-        reports, csvs = validate_right(params, out)
-        package_convergence_study(params, csvs)
-        return reports, validate_wrong(params, out)
+        reports, csvs = validate_right(contact, out)
+        package_convergence_study(contact, csvs)
+        return reports, validate_wrong(contact, out)
 
 
 if __name__ == "__main__":

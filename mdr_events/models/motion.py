@@ -19,7 +19,7 @@ from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
-from mdr_events.parameters import Parameters
+from mdr_events.parameters import PAPER_D_MAX, PAPER_V, Parameters  # (the paper's depth and speed: a scenario's defaults)
 from mdr_events.theory import analytic
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import SCALE_MAX, check_real, shown, validate_alpha
@@ -28,8 +28,6 @@ __all__ = ["Scenario", "Paths", "Motion", "as_motion", "Cases", "simulation_case
            "case_dimension", "case_text", "check_path_extent", "check_path_representable", "FIGURE_ANGLES", "SCENARIO_NAMES",
            "ANGLE_DIMENSION", "CUSTOM_DIMENSION", "CASE_DIMENSIONS", "CUSTOM_SCENARIO", "SLIP_DIGITS"]
 
-#: The paper's depth and speed (``Parameters.paper``): a scenario's defaults.
-PAPER_D_MAX, PAPER_V = 0.3e-3, 1e-6
 
 #: The angles of Fig. 8 and Fig. 10.
 FIGURE_ANGLES = (10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0)

@@ -7,6 +7,11 @@ physical root is found by :func:`~mdr_events.theory.roots.positive_polynomial_ro
 safeguarded Newton iteration: no Python loop over angles.
 
 Angles are in degrees, lengths in metres, forces in newtons.
+
+Each public function takes the physical model as a :class:`~mdr_events.Contact` of the paper's paraboloid (4) under
+its friction law (13) (with the depth ``d_max=`` where a relation needs the motion's depth: (20), (21) and the
+critical angles), or as the keywords of before, a :class:`~mdr_events.Parameters`; both are read by
+:func:`~mdr_events.theory.job.paper_parameters` and give the same numbers.
 """
 
 from __future__ import annotations
@@ -19,6 +24,7 @@ import numpy as np
 from mdr_events.theory import symbolic
 from mdr_events.theory.roots import positive_polynomial_root
 from mdr_events.parameters import Parameters
+from mdr_events.theory.job import ContactLike, paper_parameters
 from mdr_events.validation import check_choice, check_flag, validate_alpha
 
 __all__ = [
@@ -60,31 +66,36 @@ def _as_output(values: np.ndarray, like: np.ndarray):
 
 # ----------------------------------------------------------------------------
 # polynomial roots
-def jkr_depth(contact_radius, params: Parameters, work_of_adhesion: float):
+def jkr_depth(contact_radius, contact: ContactLike, work_of_adhesion: float):
     """Indentation depth of the adhesive contact of radius ``a``, eq. (9)."""
+    params = paper_parameters(contact, "jkr_depth")
     return _rel("jkr_depth").numeric(contact_radius, params.R, params.E_star, work_of_adhesion)
 
 
-def jkr_normal_force(contact_radius, params: Parameters, work_of_adhesion: float):
+def jkr_normal_force(contact_radius, contact: ContactLike, work_of_adhesion: float):
     """Normal force of the adhesive contact of radius ``a``, eq. (10)."""
+    params = paper_parameters(contact, "jkr_normal_force")
     return _rel("jkr_normal_force").numeric(contact_radius, params.R, params.E_star, work_of_adhesion)
 
 
-def normal_force(depth, contact_radius, params: Parameters):
+def normal_force(depth, contact_radius, contact: ContactLike):
     """Normal force of the springs in ``|x| < a`` at depth ``d`` (any, e.g. pinned ``a``), eq. (10)."""
+    params = paper_parameters(contact, "normal_force")
     return _rel("normal_force").numeric(depth, contact_radius, params.R, params.E_star)
 
 
-def hertz_contact_radius(depth, params: Parameters):
+def hertz_contact_radius(depth, contact: ContactLike):
     """Non-adhesive contact radius ``a = sqrt(R d)``, eq. (16)."""
+    params = paper_parameters(contact, "hertz_contact_radius")
     return _rel("hertz_radius").numeric(np.maximum(depth, 0.0), params.R)
 
 
-def jump_off(params: Parameters, work_of_adhesion: float) -> dict[str, float]:
-    """Jump-off point under displacement control (``∂d/∂a = 0`` on the branch).
+def jump_off(contact: ContactLike, work_of_adhesion: float) -> dict[str, float]:
+    """Jump-off point under displacement control (``∂d/∂a = 0`` on the branch (9)).
 
-    Returns ``contact_radius``, ``depth`` and ``normal_force`` at the jump-off.
+    Returns ``contact_radius``, ``depth`` and ``normal_force`` (10) at the jump-off.
     """
+    params = paper_parameters(contact, "jump_off")
     args = (params.R, params.E_star, work_of_adhesion)
     return {
         "contact_radius": float(_rel("jump_off_radius").numeric(*args)),
@@ -93,22 +104,25 @@ def jump_off(params: Parameters, work_of_adhesion: float) -> dict[str, float]:
     }
 
 
-def jump_in_radius(params: Parameters, work_of_adhesion: float) -> float:
+def jump_in_radius(contact: ContactLike, work_of_adhesion: float) -> float:
     """Contact radius on first touch (``d = 0`` on the stable branch of (9))."""
+    params = paper_parameters(contact, "jump_in_radius")
     return float(_rel("jump_in_radius").numeric(params.R, params.E_star, work_of_adhesion))
 
 
-def pull_off_force(params: Parameters, work_of_adhesion: float) -> float:
-    """JKR pull-off force ``−(3/2) π Δγ R``: the minimum of (10) along the branch."""
+def pull_off_force(contact: ContactLike, work_of_adhesion: float) -> float:
+    """JKR pull-off force ``−(3/2) π Δγ R``: the minimum of (10) along the branch (9)."""
+    params = paper_parameters(contact, "pull_off_force")
     return float(_rel("pull_off_force").numeric(params.R, work_of_adhesion))
 
 
-def jkr_contact_radius(depth, params: Parameters, work_of_adhesion: float):
+def jkr_contact_radius(depth, contact: ContactLike, work_of_adhesion: float):
     """Contact radius on the stable branch of (9) for a depth ``d``.
 
     The stable branch is ``a >= a_jump-off`` (``∂d/∂a >= 0``). Depths below the
     jump-off depth have no contact: the result is ``nan`` there.
     """
+    params = paper_parameters(contact, "jkr_contact_radius")
     depth_arr = np.asarray(depth, dtype=float)
     if work_of_adhesion == 0.0:
         return _as_output(np.where(depth_arr >= 0, hertz_contact_radius(depth_arr, params), np.nan), depth_arr)
@@ -123,15 +137,17 @@ def jkr_contact_radius(depth, params: Parameters, work_of_adhesion: float):
 
 # ----------------------------------------------------------------------------
 # tangential springs, eq. (13)
-def critical_shift(contact_radius, params: Parameters):
+def critical_shift(contact_radius, contact: ContactLike):
     """Critical spring shift ``ū(a) = π a τ0 / (2 G*)``, eq. (13)."""
+    params = paper_parameters(contact, "critical_shift")
     return _rel("critical_shift").numeric(contact_radius, params.tau0, params.G_star)
 
 
-def fretting_dissipated_energy(contact_radius, amplitude, params: Parameters):
+def fretting_dissipated_energy(contact_radius, amplitude, contact: ContactLike):
     """Energy dissipated per cycle ``x: −X → X → −X`` by a fixed contact of radius ``a`` (J): the area
     ``4 π a² τ0 (X − ū)`` of the parallelogram ``F_x = 2G* a (x − Y)``, ``Y`` clipped to
-    ``[x − ū, x + ū]`` (plateaus ``±π a² τ0``); for ``X > ū`` (smaller loops stick and dissipate nothing)."""
+    ``[x − ū, x + ū]`` (plateaus ``±π a² τ0``, (13)); for ``X > ū`` (smaller loops stick and dissipate nothing)."""
+    params = paper_parameters(contact, "fretting_dissipated_energy")
     return _rel("fretting_dissipated_energy").numeric(contact_radius, amplitude, params.tau0, params.G_star)
 
 
@@ -139,10 +155,12 @@ def fretting_dissipated_energy(contact_radius, amplitude, params: Parameters):
 # slip onset, eqs. (17), (18), (20), (21)
 def d_crit(
     alpha,
-    params: Parameters,
+    contact: ContactLike,
     scenario: Literal["A", "B"] = "A",
     adhesion: bool = False,
     branch: Literal["pull-off", "indentation"] | None = None,
+    *,
+    d_max: float | None = None,
 ):
     """Indentation depth at which the springs start to slide, eqs. (17)–(21).
 
@@ -150,8 +168,9 @@ def d_crit(
     ----------
     alpha : float or array_like
         Path angle to the surface in degrees, in [0, 90].
-    params : Parameters
-        Material, indenter and adhesion.
+    contact : Contact or Parameters
+        Material, indenter (the paraboloid (4)), adhesion and ``τ0`` (13): a :class:`~mdr_events.Contact`, or a
+        :class:`~mdr_events.Parameters` (the keywords of before, with its own ``d_max``).
     scenario : {"A", "B"}
         ``"A"``: indentation at angle α from first contact, eqs. (14), (17),
         (18). ``"B"``: vertical indentation to ``d_max`` then motion at angle α,
@@ -164,6 +183,9 @@ def d_crit(
         Scenario B only (default "pull-off"): from ``d_max`` out at angle α (the "−" sign of (21),
         smaller root of (20)) or further in at angle α (the "+" sign, larger
         root of (20)).
+    d_max : float, optional
+        With a Contact: the depth of the motion (m; default the paper's 0.3 mm), which scenario B's (20), (21)
+        start from.
 
     Returns
     -------
@@ -189,6 +211,7 @@ def d_crit(
     the start of pull-off; in the model it is pinned first (see
     :mod:`mdr_events` docs on the continuum method).
     """
+    params = paper_parameters(contact, "d_crit", d_max)
     check_choice("scenario", scenario, SCENARIOS)
     if scenario == "A" and branch is not None:
         raise ValueError(f"branch={branch!r} is not allowed with scenario 'A'; allowed: None (branch is for scenario B)")
@@ -237,9 +260,13 @@ def d_crit(
 CRITICAL_ANGLE_SCENARIOS = ("A", "B", "B+")
 
 
-def critical_angle(params: Parameters, scenario: Literal["A", "B", "B+"] = "A", adhesion: bool = True,
-                   final_depth: float | None = None) -> float:
+def critical_angle(contact: ContactLike, scenario: Literal["A", "B", "B+"] = "A", adhesion: bool = True,
+                   final_depth: float | None = None, *, d_max: float | None = None) -> float:
     """Critical path angle in degrees.
+
+    ``contact`` is a :class:`~mdr_events.Contact` of the paraboloid (4) under the law (13), with the motion's depth
+    ``d_max`` (m; default the paper's 0.3 mm), or a :class:`~mdr_events.Parameters` (the keywords of before, with its
+    own ``d_max``).
 
     Scenario A: the angle at which slip begins exactly at ``d_max``
     (``d_crit(α_c) = d_max``); for α < α_c the springs slide during
@@ -260,9 +287,9 @@ def critical_angle(params: Parameters, scenario: Literal["A", "B", "B+"] = "A", 
     the radius of ``final_depth`` on the ``Δγ0`` branch): for α < α_c the springs
     slide before the path turns back.
     """
+    p = paper_parameters(contact, "critical_angle", d_max)
     check_choice("scenario", scenario, CRITICAL_ANGLE_SCENARIOS)
     check_flag("adhesion", adhesion)
-    p = params
     if final_depth is not None and scenario != "B+":
         raise ValueError(f"final_depth={final_depth!r} is not allowed with scenario {scenario!r}; "
                          "allowed: None (final_depth is for scenario 'B+')")
@@ -301,7 +328,7 @@ class DimensionlessGroups(NamedTuple):
     adhesion_out: float  #: Γ1 = 2π Δγ1 √R / (E* d_max^(3/2))
 
 
-def dimensionless_groups(params: Parameters) -> DimensionlessGroups:
+def dimensionless_groups(contact: ContactLike, *, d_max: float | None = None) -> DimensionlessGroups:
     """The slip parameter and the two adhesion parameters of the model.
 
     Measure depths in ``d_max`` (``d = d_max d̂``), radii in ``√(R d_max)`` (``a = √(R d_max) â``) and tangential
@@ -312,7 +339,11 @@ def dimensionless_groups(params: Parameters) -> DimensionlessGroups:
     every angle, every depth over ``d_max`` and every ratio such as ``F_x / (π a² τ0)`` depends on
     ``(S, Γ0, Γ1)`` and the path's angle alone: two parameter sets with the same groups have the same
     critical angles (17), (18), (21).
+
+    ``contact``: a :class:`~mdr_events.Contact` of the paraboloid under the law (13) with the depth ``d_max`` (m;
+    default the paper's 0.3 mm), or a :class:`~mdr_events.Parameters` (its own ``d_max``).
     """
+    params = paper_parameters(contact, "dimensionless_groups", d_max)
     root = math.sqrt(params.R)
     scale = params.E_star * params.d_max**1.5
     return DimensionlessGroups(math.pi * params.tau0 * root / (2.0 * params.G_star * math.sqrt(params.d_max)),

@@ -1,4 +1,10 @@
-"""Phase diagrams of Fig. 9a (scenario A) and Fig. 9b (scenario B) as datasets."""
+"""Phase diagrams of Fig. 9a (scenario A) and Fig. 9b (scenario B) as datasets.
+
+:func:`phase_diagram` takes the physical model as a :class:`~mdr_events.Contact` with the motion's depth ``d_max``,
+or as the keywords of before (:class:`~mdr_events.Parameters` with ``profile=`` and ``friction=``); both are read by
+:func:`~mdr_events.theory.job.theory_job` and give the same dataset (a contact's with the paper's speed ``v`` in its
+stamp, which no closed form uses).
+"""
 
 from __future__ import annotations
 
@@ -10,10 +16,11 @@ import xarray as xr
 from mdr_events.io.agreement import RoundOff, register_accuracy
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits
-from mdr_events.parameters import Parameters, check_parameters
+from mdr_events.parameters import Parameters
 from mdr_events.contact.friction import FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.contact.indenters import Profile, TabulatedProfile, profile_attrs
 from mdr_events.theory import analytic, mindlin, power_law, tabulated
+from mdr_events.theory.job import ContactLike, theory_job
 from mdr_events.theory.kinds import theory_of
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_choice, validate_alpha
@@ -42,36 +49,45 @@ def default_angles(count: int = 901) -> np.ndarray:
 
 
 def phase_diagram(
-    params: Parameters,
+    contact: ContactLike,
     alpha=None,
     scenario: Literal["A", "B"] = "A",
     profile: Profile | None = None,
     friction: FrictionLaw | str | None = None,
     limits: Limits = DEFAULT_LIMITS,
+    *,
+    d_max: float | None = None,
 ) -> xr.Dataset:
     """Slip-onset depth against path angle: the phase diagram of Fig. 9a or 9b.
 
     Parameters
     ----------
-    params : Parameters
-        Material, indenter and adhesion.
+    contact : Contact or Parameters
+        The physical model: a :class:`~mdr_events.Contact` (elastomer, indenter, adhesion, friction law), with the
+        depth ``d_max``; or the keywords of before, a :class:`~mdr_events.Parameters` (material, the paraboloid of
+        its ``R``, adhesion, ``τ0`` and its own ``d_max``) with ``profile`` and ``friction``.
     alpha : array_like, optional
         Angles in degrees, in [0, 90]; default 0°, 0.1°, …, 90°.
     scenario : {"A", "B"}
         ``"A"``: Fig. 9a, eqs. (17) and (18). ``"B"``: Fig. 9b, eqs. (20)
         and (21), with a dimension ``branch`` = ``pull-off``, ``indentation``.
     profile : PowerLaw or FlatPunch, optional
-        Another indenter than the paper's paraboloid of ``params.R`` (:mod:`mdr_events.theory.power_law`); the
-        dataset then names it in the attribute ``profile`` and is not the paper's figure. The "hertz" variables
-        are then the non-adhesive ones, "jkr" the adhesive (Heß's rule). A :class:`TabulatedProfile` has scenario A's
+        Beside a :class:`~mdr_events.Parameters` only (a contact's is ``Contact.indenter``). Another indenter than
+        the paper's paraboloid of ``params.R`` (:mod:`mdr_events.theory.power_law`); the dataset then names it in
+        the attribute ``profile`` and is not the paper's figure. The "hertz" variables are then the non-adhesive
+        ones, "jkr" the adhesive (Heß's rule). A :class:`TabulatedProfile` has scenario A's
         (:mod:`mdr_events.theory.tabulated`, ``nan`` where the onset lies past the table).
     friction : FrictionLaw or str, optional
-        Another friction law than the paper's ``"tau0"`` (:mod:`mdr_events.contact.friction`): scenario A without adhesion
+        Beside a :class:`~mdr_events.Parameters` only (a contact's is ``Contact.friction``). Another friction law
+        than the paper's ``"tau0"`` (:mod:`mdr_events.contact.friction`): scenario A without adhesion
         (:func:`mdr_events.theory.mindlin.d_crit_A`, ``d_crit_B``, ``d_crit_B_indentation``); the adhesive ("jkr")
         variables are ``nan`` (no closed form: springs in tension hold no Coulomb shift).
     limits : Limits, optional
         The angles count as ``samples``, and :data:`BYTES_PER_ANGLE` each as ``memory``: checked before anything
         is computed (``ResourceLimitError``).
+    d_max : float, optional
+        With a Contact: the maximum indentation depth of the scenario, eqs. (14) and (19) (m; default the paper's
+        0.3 mm).
 
     Returns
     -------
@@ -83,7 +99,7 @@ def phase_diagram(
         scenario B, ``jump_off_depth`` (the displacement-controlled pull-off
         depth on the ``Δγ1`` branch).
     """
-    check_parameters(params)
+    params, profile, friction = theory_job(contact, d_max, profile, friction)
     check_choice("scenario", scenario, analytic.SCENARIOS)
     angles = validate_alpha(default_angles() if alpha is None else alpha)
     if angles.ndim != 1 or angles.size == 0:
@@ -93,7 +109,6 @@ def phase_diagram(
     limits.check(f"the phase diagram of {angles.size} angles", samples=angles.size,
                  memory=BYTES_PER_ANGLE * angles.size)
     coords = {"alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})}
-    friction = as_friction_law(friction)
     # (the closed forms overflow as the runs would: E = 1e-150 Pa gave d_crit = +inf at 438 angles with warnings)
     check_representable(params, profile, friction)
     if not friction.is_default:
