@@ -66,6 +66,9 @@ from mdr_events.models.paths import Path
 from mdr_events.theory.scales import check_representable
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 from mdr_events.validation import SCALE_MAX, check_real, shown
+from mdr_events.analysis.fit_parameters import (FREE_NAMES, FRICTION_NAME, LOG_SCALED, NU_MARGIN, OFFSET_BOUND_REACH,
+                                                OFFSET_LONG_NAMES, OFFSET_UNITS, OFFSETS, FreeParameters,
+                                                free_parameters, unit_of)
 
 __all__ = ["fit", "FitResult", "OptimizerRun", "synthetic_measurement", "model_curves", "curves_of", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
            "FIT_CONTENT", "SYNTHETIC_CONTENT", "FREE_NAMES", "FITTED_QUANTITIES", "LOG_SCALED", "OFFSETS"]
@@ -78,26 +81,6 @@ SYNTHETIC_CONTENT = "synthetic measurement of the model"
 FITTED_QUANTITIES = ("normal_force", "tangential_force", "contact_area", "contact_radius")
 QUANTITY_UNITS = {"normal_force": "N", "tangential_force": "N", "contact_area": "m2", "contact_radius": "m"}
 QUANTITY_SYMBOLS = {"normal_force": "F_N", "tangential_force": "F_x", "contact_area": "A", "contact_radius": "a"}
-#: Free parameters fitted on a log scale (moduli, radius, critical shear stress, works of adhesion): their
-#: start must be > 0, and the fit moves them by factors.
-LOG_SCALED = ("E", "R", "tau0", "dgamma0", "dgamma1", "mu")
-#: The experiment's zero: ``time_offset`` (s; the measured clock reads it at the path's time 0, after
-#: ``time_origin``) and ``depth_offset`` (m; the path's depth zero lies this far above the real surface).
-OFFSETS = ("time_offset", "depth_offset")
-#: Every name ``free`` may hold. ``d_max`` and ``v`` are the path's, not the material's: give the path.
-FREE_NAMES = ("E", "nu", "R", "tau0", "dgamma0", "dgamma1", "mu") + OFFSETS
-#: The coefficient of friction of a law with Coulomb's part (:mod:`mdr_events.contact.friction`), free beside the parameters.
-FRICTION_NAME = "mu"
-OFFSET_UNITS = {"time_offset": "s", "depth_offset": "m", "mu": "1"}
-OFFSET_LONG_NAMES = {"time_offset": "the measured clock's reading at the path's time 0 (after time_origin)",
-                     "depth_offset": "height of the path's depth zero above the real surface",
-                     "mu": "coefficient of friction of the law's Coulomb part"}
-#: ``ν`` stays below 0.5 and above −1 by this much inside the fit (the bounds of :class:`Parameters`).
-NU_MARGIN = 1e-9
-#: A finite bound of an offset lies within this many of its scales (the path's duration, its deepest point):
-#: farther, the model leaves the measured window long before, and the optimizer's step scaling (the distance
-#: to a bound) would overflow. ``±inf`` is no bound.
-OFFSET_BOUND_REACH = 1e6
 
 #: Forward-difference step of the Jacobian in the scaled parameters. The continuum's curves are exact to
 #: about 1e-10 relative (``Tolerances.rtol``): the rounding part of a column's error is then ~1e-4, the
@@ -156,20 +139,6 @@ class ParameterEstimate(NamedTuple):
     identifiability: Identifiability
 
 
-def _unit(name: str) -> str:
-    return OFFSET_UNITS.get(name) or PARAMETER_UNITS[name]
-
-
-def _in_unit(name: str) -> str:
-    """`` <unit>`` after a value, nothing for a dimensionless one."""
-    unit = _unit(name)
-    return "" if unit == "1" else f" {unit}"
-
-
-def _long_name(name: str) -> str:
-    return OFFSET_LONG_NAMES.get(name) or PARAMETER_LONG_NAMES[name]
-
-
 def estimate_noise(values: np.ndarray) -> float:
     """The noise's standard deviation in a sampled curve, from its second differences (robust).
 
@@ -185,134 +154,6 @@ def estimate_noise(values: np.ndarray) -> float:
     second = np.diff(finite, 2)
     mad = float(np.median(np.abs(second - np.median(second))))
     return max(1.4826 * mad / math.sqrt(6.0), floor)
-
-
-@dataclass(frozen=True)
-class FreeParameters:
-    """The free parameters of a fit, their scaling and bounds: ``θ`` (scaled) ↔ natural values.
-
-    ``θ = log(value)`` for :data:`LOG_SCALED`, ``ν`` itself, ``time_offset / duration`` and
-    ``depth_offset / depth_scale`` (the path's duration and deepest point give the offsets their scale).
-    """
-
-    names: tuple[str, ...]
-    start: Parameters
-    lower: np.ndarray  #: natural units
-    upper: np.ndarray
-    duration: float
-    depth_scale: float
-    #: the friction law of the fit (``μ`` its start where free)
-    friction: FrictionLaw = TAU0
-
-    def scale(self, name: str) -> float:
-        return {"time_offset": self.duration, "depth_offset": self.depth_scale}.get(name, 1.0)
-
-    def to_scaled(self, values: Sequence[float]) -> np.ndarray:
-        """``θ`` of natural values (a bound of 0 of a log-scaled parameter is ``-inf``)."""
-        return np.array([(math.log(v) if v > 0 else -math.inf) if n in LOG_SCALED else v / self.scale(n)
-                         for n, v in zip(self.names, values)])
-
-    def to_natural(self, theta: np.ndarray) -> np.ndarray:
-        return np.array([math.exp(t) if n in LOG_SCALED else t * self.scale(n) for n, t in zip(self.names, theta)])
-
-    def scaled_bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        return self.to_scaled(self.lower), self.to_scaled(self.upper)
-
-    def start_values(self) -> np.ndarray:
-        return np.array([_start_value(n, self.start, self.friction) for n in self.names])
-
-    def model(self, theta: np.ndarray) -> tuple[Parameters, float, float]:
-        """The parameters, time offset and depth offset at ``θ``."""
-        values = dict(zip(self.names, self.to_natural(theta)))
-        offsets = [values.pop(name, 0.0) for name in OFFSETS]
-        values.pop(FRICTION_NAME, None)
-        return self.start.replace(**values) if values else self.start, offsets[0], offsets[1]
-
-    def friction_at(self, theta: np.ndarray) -> FrictionLaw:
-        """The friction law at ``θ``: the start's, with the fitted ``μ`` where it is free."""
-        if FRICTION_NAME not in self.names:
-            return self.friction
-        return FrictionLaw(self.friction.law, mu=float(self.to_natural(theta)[self.names.index(FRICTION_NAME)]))
-
-
-def _start_value(name: str, start: Parameters, friction: FrictionLaw) -> float:
-    """A free parameter's start: 0 for an offset, the law's ``μ``, else the field of ``start``."""
-    if name in OFFSETS:
-        return 0.0
-    return friction.coulomb_mu if name == FRICTION_NAME else getattr(start, name)
-
-
-def _default_bounds(name: str) -> tuple[float, float]:
-    if name == "nu":
-        return -1.0 + NU_MARGIN, 0.5
-    if name in LOG_SCALED:
-        return 0.0, math.inf
-    return -math.inf, math.inf
-
-
-def _check_offset_bounds(name: str, given: Sequence[float], duration: float, depth_scale: float) -> None:
-    """An offset's finite bounds within :data:`OFFSET_BOUND_REACH` of its scale."""
-    if name not in OFFSETS:
-        return
-    reach = OFFSET_BOUND_REACH * (duration if name == "time_offset" else depth_scale)
-    if any(math.isfinite(bound) and abs(bound) > reach for bound in given):
-        raise ValueError(f"bounds[{name!r}]=({given[0]!r}, {given[1]!r}) is not allowed; allowed: finite bounds within "
-                         f"±{reach:.3g} {_unit(name)} ({OFFSET_BOUND_REACH:g} times the path's "
-                         f"{'duration' if name == 'time_offset' else 'deepest point'}), or ±inf for no bound")
-
-
-def free_parameters(free, start: Parameters, bounds: Mapping[str, tuple[float, float]] | None,
-                    duration: float, depth_scale: float, friction: FrictionLaw = TAU0) -> FreeParameters:
-    """Check ``free``, ``start`` and ``bounds`` (errors name the argument, its value and what is allowed)."""
-    if isinstance(free, str):
-        free = (free,)
-    names = tuple(free) if isinstance(free, Sequence) else ()
-    if not names or not all(isinstance(name, str) for name in names):
-        raise ValueError(f"free={shown(free)} is not allowed; allowed: a non-empty sequence of names from "
-                         f"{', '.join(FREE_NAMES)}")
-    for name in names:
-        if name not in FREE_NAMES:
-            hint = " (the path's, not the material's: give the path)" if name in ("d_max", "v") else ""
-            raise ValueError(f"free: {name!r} is not allowed{hint}; allowed: {', '.join(FREE_NAMES)}")
-    if len(set(names)) != len(names):
-        raise ValueError(f"free={shown(free)} names a parameter twice; allowed: each name once")
-    if not isinstance(start, Parameters):
-        raise TypeError(f"start={shown(start)} ({type(start).__name__}) is not allowed; allowed: a Parameters")
-    if FRICTION_NAME in names and not friction.uses_mu:
-        raise ValueError(f"free: 'mu' is not allowed with the friction law {friction.law!r}; allowed: a law with Coulomb's "
-                         "part, e.g. friction=FrictionLaw('coulomb', mu=0.3) (its mu the start)")
-    bounds = dict(bounds or {})
-    for name in bounds:
-        if name not in names:
-            raise ValueError(f"bounds: {name!r} is not allowed; allowed: the free parameters ({', '.join(names)})")
-    lower, upper = [], []
-    for name in names:
-        low, high = _default_bounds(name)
-        if name in bounds:
-            pair = bounds[name]
-            if isinstance(pair, (str, bytes)) or not (isinstance(pair, (Sequence, np.ndarray)) and len(pair) == 2):
-                raise ValueError(f"bounds[{name!r}]={shown(pair)} is not allowed; allowed: a pair (lower, upper) "
-                                 f"in {_unit(name)}")
-            given = [check_real(f"bounds[{name!r}]", value, f"a pair (lower, upper) of numbers in {_unit(name)}",
-                                finite=False) for value in pair]
-            _check_offset_bounds(name, given, duration, depth_scale)
-            if max(low, given[0]) >= min(high, given[1]):
-                raise ValueError(f"bounds[{name!r}]=({given[0]!r}, {given[1]!r}) is not allowed: it leaves nothing of "
-                                 f"{name}'s range [{low!r}, {high!r}]{_in_unit(name)}; allowed: lower < upper, "
-                                 "overlapping that range")
-            low, high = max(low, given[0]), min(high, given[1])
-        shown_bounds = f"({given[0]!r}, {given[1]!r})" if name in bounds else f"({low!r}, {high!r})"
-        value = _start_value(name, start, friction)
-        if name in LOG_SCALED and not value > 0:
-            where = "friction.mu" if name == FRICTION_NAME else f"start.{name}"
-            raise ValueError(f"{where}={value!r} is not allowed for a free {name}; allowed: > 0 (it is fitted "
-                             "on a log scale)")
-        if not low <= value <= high or not low < high:
-            raise ValueError(f"bounds[{name!r}]={shown_bounds} is not allowed: it excludes the start "
-                             f"{value!r}{_in_unit(name)}; allowed: lower < upper with the start between them")
-        lower.append(low)
-        upper.append(high)
-    return FreeParameters(names, start, np.array(lower), np.array(upper), duration, depth_scale, friction)
 
 
 class Measurement(NamedTuple):
@@ -986,7 +827,7 @@ def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, v
         "quantity": ("quantity", np.array(quantities), {"units": "1", "long_name": "quantity fitted"}),
         "parameter": ("parameter", np.array(names), {"units": "1", "long_name": "free parameter"}),
         "parameter_2": ("parameter_2", np.array(names), {"units": "1", "long_name": "free parameter"}),
-        "parameter_units": ("parameter", np.array([_unit(n) for n in names]), {"units": "1",
+        "parameter_units": ("parameter", np.array([unit_of(n) for n in names]), {"units": "1",
                                                                                 "long_name": "unit of the parameter"}),
     }
     return xr.Dataset(data, coords=coords)
