@@ -69,18 +69,15 @@ from mdr_events.validation import SCALE_MAX, check_real, shown
 from mdr_events.analysis.fit_parameters import (FREE_NAMES, FRICTION_NAME, LOG_SCALED, NU_MARGIN, OFFSET_BOUND_REACH,
                                                 OFFSET_LONG_NAMES, OFFSET_UNITS, OFFSETS, FreeParameters,
                                                 free_parameters, unit_of)
+from mdr_events.analysis.fit_data import (FITTED_QUANTITIES, NOISE_FLOOR_SHARE, QUANTITY_SYMBOLS, QUANTITY_UNITS,
+                                          SYNTHETIC_CONTENT, Measurement, ModelCurves, curves_of, estimate_noise,
+                                          measurement_of, model_curves, shifted_path, synthetic_measurement)
 
 __all__ = ["fit", "FitResult", "OptimizerRun", "synthetic_measurement", "model_curves", "curves_of", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
            "FIT_CONTENT", "SYNTHETIC_CONTENT", "FREE_NAMES", "FITTED_QUANTITIES", "LOG_SCALED", "OFFSETS"]
 
 #: The ``content`` attribute of a fit's dataset.
 FIT_CONTENT = "fit of the model to measured curves"
-#: The ``content`` attribute of :func:`synthetic_measurement`'s dataset.
-SYNTHETIC_CONTENT = "synthetic measurement of the model"
-#: Measured quantities a fit compares (any subset; the sliding fraction is not measured).
-FITTED_QUANTITIES = ("normal_force", "tangential_force", "contact_area", "contact_radius")
-QUANTITY_UNITS = {"normal_force": "N", "tangential_force": "N", "contact_area": "m2", "contact_radius": "m"}
-QUANTITY_SYMBOLS = {"normal_force": "F_N", "tangential_force": "F_x", "contact_area": "A", "contact_radius": "a"}
 
 #: Forward-difference step of the Jacobian in the scaled parameters. The continuum's curves are exact to
 #: about 1e-10 relative (``Tolerances.rtol``): the rounding part of a column's error is then ~1e-4, the
@@ -102,8 +99,6 @@ POOR_STANDARD_ERROR = 0.5
 STRONG_CORRELATION = 0.99
 #: An estimate within this (scaled) of a bound sits on it.
 BOUND_SHARE = 1e-8
-#: The noise estimate never falls below this share of the quantity's largest magnitude (noise-free data).
-NOISE_FLOOR_SHARE = 1e-12
 #: The confidence level of the intervals.
 CONFIDENCE = 0.95
 #: A fit whose residuals exceed this many times the noise (RMS, any quantity) does not describe the data.
@@ -139,139 +134,6 @@ class ParameterEstimate(NamedTuple):
     identifiability: Identifiability
 
 
-def estimate_noise(values: np.ndarray) -> float:
-    """The noise's standard deviation in a sampled curve, from its second differences (robust).
-
-    For white noise of deviation σ on a curve smooth over a few samples, ``Δ²y`` has deviation ``σ√6``; the
-    median absolute deviation (×1.4826) ignores the few jumps (contact made, pull-off) and corners. Never
-    below :data:`NOISE_FLOOR_SHARE` of the largest magnitude (noise-free data). ``nan`` samples are skipped.
-    """
-    finite = np.asarray(values, dtype=float)
-    finite = finite[np.isfinite(finite)]
-    floor = NOISE_FLOOR_SHARE * float(np.max(np.abs(finite), initial=0.0)) or NOISE_FLOOR_SHARE
-    if finite.size < 4:
-        return floor
-    second = np.diff(finite, 2)
-    mad = float(np.median(np.abs(second - np.median(second))))
-    return max(1.4826 * mad / math.sqrt(6.0), floor)
-
-
-class Measurement(NamedTuple):
-    """The measured curves on the path's clock, and each quantity's noise."""
-
-    path_time: np.ndarray  #: s from the nominal path's start, before the time offset
-    values: dict[str, np.ndarray]
-    noise: dict[str, float]
-    noise_given: dict[str, bool]
-    candidate: Candidate
-
-
-def _measurement(read: Candidate, path: Path, time_origin, noise: Mapping[str, float] | None) -> Measurement:
-    values = {name: read.quantities[name] for name in FITTED_QUANTITIES if name in read.quantities}
-    if not values:
-        raise ValueError(f"{read.source}: none of {', '.join(FITTED_QUANTITIES)} to fit; found: "
-                         f"{', '.join(read.quantities)}")
-    for name, series in values.items():
-        if not np.any(np.isfinite(series)):
-            raise ValueError(f"{read.source}: {name} has no finite sample; allowed: measured values (nan marks a "
-                             "missing sample)")
-    noise = dict(noise or {})
-    sigma, given = {}, {}
-    for name in noise:
-        if name not in values:
-            raise ValueError(f"noise: {name!r} is not allowed; allowed: the quantities measured "
-                             f"({', '.join(values)})")
-    for name, series in values.items():
-        given[name] = name in noise
-        largest = float(np.nanmax(np.abs(series), initial=0.0))
-        # a residual over the noise, and its square, must stay finite, and so must the weight 1/noise² (1e200
-        # underflowed it to 0: divisions by zero in the covariance)
-        sigma[name] = check_real(f"noise[{name!r}]", noise[name], f"a number > 0 ({QUANTITY_UNITS[name]}) from "
-                                 f"{largest / SCALE_MAX:.3g} to {max(largest, 1.0) * SCALE_MAX:.3g}, the data's largest "
-                                 f"magnitude over and times {SCALE_MAX:.2g}",
-                                 lambda value: value > 0 and largest <= value * SCALE_MAX
-                                 and value <= max(largest, 1.0) * SCALE_MAX) if given[name] else estimate_noise(series)
-    return Measurement(times_from_contact(read, path, time_origin) + path.first_contact_time(), values, sigma, given, read)
-
-
-class ModelCurves(NamedTuple):
-    """The model at the measured samples: each quantity (``nan``: left out) and where it is in contact."""
-
-    values: dict[str, np.ndarray]
-    in_contact: np.ndarray
-
-
-def _shifted(path: Path, depth_offset: float) -> Path:
-    if depth_offset == 0.0:
-        return path
-    return Path(path.waypoints - np.array([0.0, depth_offset]), path.speed, path.alpha)
-
-
-def model_curves(params: Parameters, path: Path, times: np.ndarray, tolerances: Tolerances,
-                 limits: Limits, quantities: Sequence[str], profile: SimulatedProfile = None,
-                 friction: FrictionLaw = TAU0) -> ModelCurves:
-    """The model's curves at ``times`` (s on the path's clock) by the module's rule out of contact: 0 where
-    the indenter is out of the elastomer, ``nan`` (left out) before a path that starts inside it and after
-    one that ends in contact (the indenter ``profile``; ``None``: the paraboloid of ``params.R``)."""
-    return curves_of(solve_path(params, path, tolerances, limits, profile, friction), path, times, quantities)
-
-
-def curves_of(solution: PathSolution, path: Path, times: np.ndarray, quantities: Sequence[str]) -> ModelCurves:
-    """:func:`model_curves` of a solution at hand (``path``: the one it solved)."""
-    since_contact = times - solution.t_contact
-    filled = evaluate(solution, np.maximum(since_contact, 0.0))
-    radius = filled["contact_radius"]
-    out = {"normal_force": filled["normal_force"], "tangential_force": filled["tangential_force"],
-           "contact_radius": radius, "contact_area": math.pi * radius**2}
-    before = since_contact < 0
-    after = since_contact > solution.end_time
-    in_contact = (np.nan_to_num(radius) > 0) & ~before & ~after  # evaluate's radius at t < 0 is that at contact
-    outside_before = path.waypoints[0, 1] <= 0.0
-    for name in quantities:
-        values = out[name]
-        values[before] = 0.0 if outside_before else math.nan
-        values[after] = 0.0 if solution.ended_by_contact else math.nan
-    return ModelCurves({name: out[name] for name in quantities}, in_contact)
-
-
-def synthetic_measurement(contact: Contact | Parameters, motion, alpha: float | None = None, *, times: np.ndarray,
-                          relative_noise: float = 0.0, reference: Continuum | None = None,
-                          limits: Limits = DEFAULT_LIMITS, **options) -> xr.Dataset:
-    """Curves a measurement of this model would give: the continuum at ``times`` (s on the path's clock,
-    the clock then reading ``times + time_shift``) plus white noise of ``relative_noise`` times each
-    quantity's largest magnitude (``numpy.random.default_rng(seed)``), as a Dataset :func:`fit` reads
-    (``time_origin="path_start"``, with ``time_shift`` the offset a fit should find).
-
-    ``contact``, ``motion`` and ``alpha`` are the one path's, as :func:`mdr_events.validate` takes them;
-    ``reference`` the continuum with its tolerances. The options: ``seed`` (default 0), ``quantities`` (default
-    ``F_N``, ``F_x``, ``A``), ``time_shift`` (s, default 0); beside a :class:`~mdr_events.Parameters` also
-    ``profile``, ``friction`` and ``tolerances``."""
-    options = dict(options)
-    seed, time_shift = options.pop("seed", 0), options.pop("time_shift", 0.0)
-    quantities = options.pop("quantities", ("normal_force", "tangential_force", "contact_area"))
-    _, tolerances = reference_of(reference, options.pop("tolerances", None), None)
-    job = one_path_job(contact, motion, alpha, options)
-    if options:
-        raise TypeError(f"synthetic_measurement() got an unexpected keyword argument {next(iter(options))!r}; "
-                        "allowed: seed, quantities, time_shift (and profile, friction, tolerances beside a Parameters)")
-    params, profile, friction = job.params, job.profile, job.friction
-    check_representable(params, profile, friction)
-    the_path, _ = one_path(job)
-    times = np.asarray(times, dtype=float)
-    curves = model_curves(params, the_path, times, tolerances, limits, tuple(quantities), profile, friction).values
-    rng = np.random.default_rng(seed)
-    data = {}
-    for name in quantities:
-        noise = relative_noise * float(np.nanmax(np.abs(curves[name]))) * rng.standard_normal(times.size)
-        data[name] = (("time",), curves[name] + noise, {"units": QUANTITY_UNITS[name],
-                                                        "long_name": f"synthetic measured {QUANTITY_SYMBOLS[name]}"})
-    coords = {"time": ("time", times + time_shift, {"units": "s", "long_name": "time of the synthetic measurement"})}
-    return stamp(xr.Dataset(data, coords=coords), params, content=SYNTHETIC_CONTENT,
-                 relative_noise=float(relative_noise), seed=int(seed), time_shift=float(time_shift),
-                 continuum_rtol=tolerances.rtol, path_waypoints=the_path.describe(), path_speed=the_path.speed, **profile_attrs(profile),
-                 **friction_attrs(friction))
-
-
 class _Problem:
     """The weighted residuals of one fit, and a count of the continuum solves."""
 
@@ -290,7 +152,7 @@ class _Problem:
         friction = self.free.friction_at(theta)
         self.solves += 1
         try:
-            path = _shifted(self.path_of(params), depth_offset)
+            path = shifted_path(self.path_of(params), depth_offset)
             return model_curves(params, path, self.measurement.path_time - time_offset, self.tolerances,
                                 self.limits, self.quantities, self.profile, friction)
         except (ValueError, RuntimeError) as error:
@@ -716,7 +578,7 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
                          f"{list(FREE_NAMES)} but R (the power law's shape is c and n, R belongs to the paraboloid)")
     read = read_candidate(measured, names, units, limits, progress=progress)
     nominal = path_of(start)
-    measurement = _measurement(read, nominal, time_origin, noise)
+    measurement = measurement_of(read, nominal, time_origin, noise)
     free_set = free_parameters(free, start, bounds, nominal.duration, max(nominal.max_depth, start.d_max), friction)
     # a scenario is rebuilt per trial (its way out ends below the jump-off, which depends on the parameters)
     problem = _Problem(free_set, measurement, path_of, tolerances, limits, profile, friction)
@@ -757,7 +619,7 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
     verdict = "every free parameter is determined" if identifiable else \
         "not every free parameter is determined: " + ", ".join(undetermined)
     rms = dict(zip(problem.quantities, dataset["rms_normalised_residual"].values.tolist()))
-    fitted_path = _shifted(problem.path_of(params), depth_offset)
+    fitted_path = shifted_path(problem.path_of(params), depth_offset)
     warnings = _fit_warnings(measurement, model, rms, fitted_path.first_contact_time(), time_offset,
                              fitted_path.duration, "time_offset" in free_set.names)
     if warnings:
@@ -833,10 +695,6 @@ def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, v
     return xr.Dataset(data, coords=coords)
 
 
-register_schema(SYNTHETIC_CONTENT, {"time": ("time",)})
-#: A synthetic measurement is the continuum's curves (to its rtol) plus seeded noise; a fit as in fit_accuracy.
-register_accuracy(SYNTHETIC_CONTENT, {**{name: Integrated("continuum_rtol") for name in FITTED_QUANTITIES},
-                                      "time": RoundOff()})
 register_fit_accuracy(FIT_CONTENT, FITTED_QUANTITIES, tuple(PARAMETER_UNITS))
 register_schema(FIT_CONTENT, {"estimate": ("parameter",), "standard_error": ("parameter",),
                               "correlation": ("parameter", "parameter_2"), "left_out": ("time",)})
