@@ -72,6 +72,7 @@ from mdr_events.analysis.fit_parameters import (FREE_NAMES, FRICTION_NAME, LOG_S
 from mdr_events.analysis.fit_data import (FITTED_QUANTITIES, NOISE_FLOOR_SHARE, QUANTITY_SYMBOLS, QUANTITY_UNITS,
                                           SYNTHETIC_CONTENT, Measurement, ModelCurves, curves_of, estimate_noise,
                                           measurement_of, model_curves, shifted_path, synthetic_measurement)
+from mdr_events.analysis.fit_problem import FD_STEP, FIT_TOLERANCE, MAX_EVALUATIONS_PER_PARAMETER, Problem
 
 __all__ = ["fit", "FitResult", "OptimizerRun", "synthetic_measurement", "model_curves", "curves_of", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
            "FIT_CONTENT", "SYNTHETIC_CONTENT", "FREE_NAMES", "FITTED_QUANTITIES", "LOG_SCALED", "OFFSETS"]
@@ -79,15 +80,6 @@ __all__ = ["fit", "FitResult", "OptimizerRun", "synthetic_measurement", "model_c
 #: The ``content`` attribute of a fit's dataset.
 FIT_CONTENT = "fit of the model to measured curves"
 
-#: Forward-difference step of the Jacobian in the scaled parameters. The continuum's curves are exact to
-#: about 1e-10 relative (``Tolerances.rtol``): the rounding part of a column's error is then ~1e-4, the
-#: truncation part ~1e-6 (the step times the curvature): enough for Gauss–Newton and the covariance.
-FD_STEP = 1e-6
-#: Convergence of ``least_squares`` (``xtol``, ``ftol``, ``gtol``): far below the noise, near the curves'
-#: accuracy, so that noise-free data are recovered to 1e-6.
-FIT_TOLERANCE = 1e-12
-#: Function evaluations (continuum solves besides the Jacobian's) per free parameter at most.
-MAX_EVALUATIONS_PER_PARAMETER = 50
 #: Singular values below this share of the largest are directions the data do not see: the Jacobian's
 #: rounding (FD_STEP against the curves' 1e-10) is ~1e-4 of a column, a parameter without effect sits
 #: at ~1e-10 of the others; 1e-6 lies between.
@@ -132,71 +124,6 @@ class ParameterEstimate(NamedTuple):
     lower: float
     upper: float
     identifiability: Identifiability
-
-
-class _Problem:
-    """The weighted residuals of one fit, and a count of the continuum solves."""
-
-    def __init__(self, free: FreeParameters, measurement: Measurement, path_of: Callable[[Parameters], Path],
-                 tolerances: Tolerances, limits: Limits, profile: SimulatedProfile = None,
-                 friction: FrictionLaw = TAU0):
-        self.free, self.measurement, self.path_of = free, measurement, path_of
-        self.tolerances, self.limits, self.profile, self.friction = tolerances, limits, profile, friction
-        self.solves = 0
-        self.quantities = tuple(measurement.values)
-        #: least_squares asks for the Jacobian where it just evaluated the residuals: the last (θ, curves, r)
-        self._last: tuple[np.ndarray, ModelCurves, np.ndarray] | None = None
-
-    def curves(self, theta: np.ndarray) -> ModelCurves:
-        params, time_offset, depth_offset = self.free.model(theta)
-        friction = self.free.friction_at(theta)
-        self.solves += 1
-        try:
-            path = shifted_path(self.path_of(params), depth_offset)
-            return model_curves(params, path, self.measurement.path_time - time_offset, self.tolerances,
-                                self.limits, self.quantities, self.profile, friction)
-        except (ValueError, RuntimeError) as error:
-            trial = ", ".join(f"{name}={value:.6g}" for name, value in zip(self.free.names,
-                                                                             self.free.to_natural(theta)))
-            raise type(error)(f"the fit tried {trial}, and the model refused: {error}; narrow the fit with "
-                              "bounds= or a better start") from error
-
-    def evaluated(self, theta: np.ndarray) -> tuple[ModelCurves, np.ndarray]:
-        """The curves and the weighted residuals at ``θ`` (the last ones again without a solve)."""
-        if self._last is None or not np.array_equal(self._last[0], theta):
-            curves = self.curves(theta)
-            self._last = (np.array(theta, copy=True), curves, self.weighted(curves))
-        return self._last[1], self._last[2]
-
-    def residuals(self, theta: np.ndarray) -> np.ndarray:
-        return self.evaluated(theta)[1]
-
-    def weighted(self, curves: ModelCurves) -> np.ndarray:
-        parts = []
-        for name in self.quantities:
-            difference = (curves.values[name] - self.measurement.values[name]) / self.measurement.noise[name]
-            parts.append(np.where(np.isfinite(difference), difference, 0.0))
-        return np.concatenate(parts)
-
-    def jacobian(self, theta: np.ndarray) -> np.ndarray:
-        """Forward differences of :data:`FD_STEP` in each scaled parameter (backward at an upper bound).
-
-        A sample whose contact state the step changes (the jump at a pull-off or a contact made moved across
-        it) has no derivative there: its entry is 0 (the residual is flat on either side of the jump), not
-        the jump over the step, which would claim a precision the data do not have.
-        """
-        curves, base = self.evaluated(theta)
-        same_state = np.tile(curves.in_contact, len(self.quantities))
-        _, upper = self.free.scaled_bounds()
-        columns = []
-        for j in range(theta.size):
-            step = FD_STEP if theta[j] + FD_STEP <= upper[j] else -FD_STEP
-            moved = theta.copy()
-            moved[j] += step
-            trial = self.curves(moved)
-            column = (self.weighted(trial) - base) / step
-            columns.append(np.where(same_state == np.tile(trial.in_contact, len(self.quantities)), column, 0.0))
-        return np.column_stack(columns)
 
 
 def _identifiability(jacobian: np.ndarray, theta: np.ndarray, lower: np.ndarray, upper: np.ndarray,
@@ -581,7 +508,7 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
     measurement = measurement_of(read, nominal, time_origin, noise)
     free_set = free_parameters(free, start, bounds, nominal.duration, max(nominal.max_depth, start.d_max), friction)
     # a scenario is rebuilt per trial (its way out ends below the jump-off, which depends on the parameters)
-    problem = _Problem(free_set, measurement, path_of, tolerances, limits, profile, friction)
+    problem = Problem(free_set, measurement, path_of, tolerances, limits, profile, friction)
     samples = sum(int(np.count_nonzero(np.isfinite(v))) for v in measurement.values.values())
     if samples <= len(free_set.names):
         raise ValueError(f"{read.source}: {samples} finite samples for {len(free_set.names)} free parameters; "
@@ -642,7 +569,7 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
 
 
 def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, value, error, low, high, verdicts,
-             correlation, condition, reduced_chi_square, moduli, problem: _Problem, solution) -> xr.Dataset:
+             correlation, condition, reduced_chi_square, moduli, problem: Problem, solution) -> xr.Dataset:
     names = list(free.names)
     data = {
         "estimate": (("parameter",), value, {"units": "see parameter_units", "long_name": "fitted value"}),
