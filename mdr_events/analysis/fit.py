@@ -14,71 +14,58 @@ the data (:func:`estimate_noise`). ``scipy.optimize.least_squares`` minimises ``
 parameters in scaled form (:data:`LOG_SCALED` on a log scale, the offsets relative to the path's duration
 and depth; :class:`FreeParameters`).
 
-**Samples out of contact** (the documented rule; never a ``nan`` set to 0). The model's forces and area are
-exactly 0 while the indenter is out of the elastomer: before the first contact, after the pull-off, after a
-path that ends outside it, before a path that starts outside it. Those samples are compared with 0 like any
-other (a force measured after the pull-off is the instrument's noise around zero, and the time of the jump
-is information on ``Δγ1``). The model says nothing before a path that starts inside the elastomer or after
-one that ends in contact: samples there are *left out*, and so are samples whose measured value is ``nan``.
-Left-out samples contribute a zero residual (the residual vector keeps its length) and are counted.
+The fit's parts, one idea each, every name re-exported here as before:
 
-**Uncertainty.** The covariance of the scaled parameters is ``s² (JᵀJ)⁻¹`` with ``J`` the Jacobian of the
-weighted residuals at the optimum (pseudo-inverse over its singular values above :data:`RCOND` of the
-largest), ``s² = Σr²/(n − p)`` where the noise was estimated and ``s² = 1`` where it was given (as
-``scipy.optimize.curve_fit`` with ``absolute_sigma``). Standard errors and 95 % intervals (Student t,
-``n − p`` degrees of freedom) follow in the scaled form and are mapped back (asymmetric for the log-scaled
-parameters).
-
-**Identifiability** (:class:`Identifiability`) per parameter: ``NOT_IDENTIFIABLE`` where it lies in a
-direction the data do not see (a singular value below :data:`RCOND` of the largest: e.g. ``τ0`` from
-``F_N`` alone, which does not depend on friction in the MDR's uncoupled springs); ``POORLY_DETERMINED``
-where its scaled standard error exceeds :data:`POOR_STANDARD_ERROR`; ``AT_BOUND`` where the estimate sits
-on a bound (its interval is not a linearisation's); else ``DETERMINED``. Pairs correlated beyond
-:data:`STRONG_CORRELATION` are named: the data fix only a combination of them.
+- :mod:`~mdr_events.analysis.fit_parameters`: the free parameters, their units, scaling, bounds and starts;
+- :mod:`~mdr_events.analysis.fit_data`: the measurement, its noise, the model's curves at its samples (with the
+  rule for samples out of contact) and synthetic measurements;
+- :mod:`~mdr_events.analysis.fit_problem`: the weighted residuals, their Jacobian and the least-squares solve;
+- :mod:`~mdr_events.analysis.fit_diagnostics`: the uncertainty (covariance, intervals), identifiability, notes
+  and warnings at the optimum;
+- :mod:`~mdr_events.analysis.fit_accuracy`: how a fit's results are determined (when two fits agree);
+- this module: the job of :func:`fit`, the fit itself, its dataset and :class:`FitResult`.
 """
 
 from __future__ import annotations
 
-import enum
 import math
-import sys
 from dataclasses import dataclass
 from typing import Any, Callable, Mapping, NamedTuple, Sequence
 
 import numpy as np
 import xarray as xr
-from scipy import optimize, stats
+from scipy import optimize
 
-from mdr_events.io.candidates import Candidate, read_candidate
-from mdr_events.analysis.validate import one_path, one_path_job, reference_of, times_from_contact
-from mdr_events.contact import Contact
-from mdr_events.models.methods import Continuum
-from mdr_events.models.motion import Scenario
-from mdr_events.models.simulate import ModelJob
 from mdr_events.analysis.fit_accuracy import register_fit_accuracy
-from mdr_events.io.agreement import Integrated, RoundOff, register_accuracy
-from mdr_events.io.datasets import figure_of, read_text_list, register_schema, stamp, text_list_attrs
-from mdr_events.limits import DEFAULT_LIMITS, Limits
-from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
-from mdr_events.contact.friction import TAU0, FrictionLaw, friction_attrs
-from mdr_events.models.indenters import SimulatedProfile, profile_attrs
-from mdr_events.models.paths import Path
-from mdr_events.theory.scales import check_representable
-from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
-from mdr_events.validation import SCALE_MAX, check_real, shown
-from mdr_events.analysis.fit_parameters import (FREE_NAMES, FRICTION_NAME, LOG_SCALED, NU_MARGIN, OFFSET_BOUND_REACH,
-                                                OFFSET_LONG_NAMES, OFFSET_UNITS, OFFSETS, FreeParameters,
-                                                free_parameters, unit_of)
+# (the fit's parts: every name of before is importable from here too)
 from mdr_events.analysis.fit_data import (FITTED_QUANTITIES, NOISE_FLOOR_SHARE, QUANTITY_SYMBOLS, QUANTITY_UNITS,
                                           SYNTHETIC_CONTENT, Measurement, ModelCurves, curves_of, estimate_noise,
                                           measurement_of, model_curves, shifted_path, synthetic_measurement)
-from mdr_events.analysis.fit_problem import FD_STEP, FIT_TOLERANCE, MAX_EVALUATIONS_PER_PARAMETER, Problem
 from mdr_events.analysis.fit_diagnostics import (BOUND_SHARE, CONFIDENCE, CONTACT_NOISE_MULTIPLE, CONTACT_TIME_SHARE,
                                                  FADE_MULTIPLE, LOG_LARGEST, MAGNITUDE_FACTOR, MISFIT_RMS,
                                                  POOR_STANDARD_ERROR, RCOND, STRONG_CORRELATION, TANGENTIAL_ONLY,
                                                  Identifiability, ParameterEstimate, _scaled_or_inf, effective_moduli,
                                                  fit_warnings, identifiability_notes, identifiability_of,
                                                  natural_intervals)
+from mdr_events.analysis.fit_parameters import (FREE_NAMES, FRICTION_NAME, LOG_SCALED, NU_MARGIN, OFFSET_BOUND_REACH,
+                                                OFFSET_LONG_NAMES, OFFSET_UNITS, OFFSETS, FreeParameters,
+                                                free_parameters, unit_of)
+from mdr_events.analysis.fit_problem import FD_STEP, FIT_TOLERANCE, MAX_EVALUATIONS_PER_PARAMETER, Problem, solve
+from mdr_events.analysis.validate import one_path, one_path_job, reference_of
+from mdr_events.contact import Contact
+from mdr_events.contact.friction import friction_attrs
+from mdr_events.io.candidates import Candidate, read_candidate
+from mdr_events.io.datasets import figure_of, read_text_list, register_schema, stamp, text_list_attrs
+from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.models.continuum import Tolerances
+from mdr_events.models.indenters import profile_attrs
+from mdr_events.models.methods import Continuum
+from mdr_events.models.motion import Scenario
+from mdr_events.models.paths import Path
+from mdr_events.models.simulate import ModelJob
+from mdr_events.parameters import PARAMETER_UNITS, Parameters
+from mdr_events.theory.scales import check_representable
+from mdr_events.validation import shown
 
 __all__ = ["fit", "FitResult", "OptimizerRun", "synthetic_measurement", "model_curves", "curves_of", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
            "FIT_CONTENT", "SYNTHETIC_CONTENT", "FREE_NAMES", "FITTED_QUANTITIES", "LOG_SCALED", "OFFSETS"]
@@ -298,9 +285,24 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
         exclude the start, a start of 0 for a log-scaled parameter, fewer samples than free parameters.
     """
     job = _fit_job(contact, motion, alpha, reference, options)
-    start, profile, friction, path_of = job.model.params, job.model.profile, job.model.friction, job.path_of
-    bounds, noise, names, units, time_origin = job.bounds, job.noise, job.names, job.units, job.time_origin
-    tolerances = job.tolerances
+    _check_fit(job, free, progress)
+    read = read_candidate(measured, job.names, job.units, limits, progress=progress)
+    nominal = job.path_of(job.model.params)
+    problem = _problem(job, read, nominal, free, limits)
+    solution = solve(problem)
+    optimum = _optimum(problem, solution)
+    params, time_offset, depth_offset = problem.free.model(optimum.theta)
+    dataset = _dataset(problem, optimum, params)
+    warnings = _warnings(problem, optimum, dataset, params, time_offset, depth_offset)
+    attrs = _attrs(job, nominal, problem, solution, optimum, warnings)
+    run = OptimizerRun(problem.solves, int(solution.nfev), int(solution.status), str(solution.message))
+    return FitResult(stamp(dataset, params, **attrs), params, time_offset, depth_offset, run)
+
+
+def _check_fit(job: FitJob, free: Sequence[str], progress: Callable[[str], None] | None) -> None:
+    """The checks of :func:`fit` before the data are read: ``progress``, the start's scales, ``R`` free only with
+    the paraboloid."""
+    start, profile, friction = job.model.params, job.model.profile, job.model.friction
     if progress is not None and not callable(progress):
         raise TypeError(f"progress={shown(progress)} ({type(progress).__name__}) is not allowed; allowed: None or a "
                         "function called with a line of text")
@@ -308,12 +310,16 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
     if profile is not None and "R" in free:
         raise ValueError(f"free={list(free)!r} frees R with profile={profile!r}; allowed: the names of "
                          f"{list(FREE_NAMES)} but R (the power law's shape is c and n, R belongs to the paraboloid)")
-    read = read_candidate(measured, names, units, limits, progress=progress)
-    nominal = path_of(start)
-    measurement = measurement_of(read, nominal, time_origin, noise)
-    free_set = free_parameters(free, start, bounds, nominal.duration, max(nominal.max_depth, start.d_max), friction)
+
+
+def _problem(job: FitJob, read: Candidate, nominal: Path, free: Sequence[str], limits: Limits) -> Problem:
+    """The weighted residuals of the fit: the measurement on the nominal path's clock, the free parameters checked,
+    more samples than free parameters and not all of them 0."""
+    start, profile, friction = job.model.params, job.model.profile, job.model.friction
+    measurement = measurement_of(read, nominal, job.time_origin, job.noise)
+    free_set = free_parameters(free, start, job.bounds, nominal.duration, max(nominal.max_depth, start.d_max), friction)
     # a scenario is rebuilt per trial (its way out ends below the jump-off, which depends on the parameters)
-    problem = Problem(free_set, measurement, path_of, tolerances, limits, profile, friction)
+    problem = Problem(free_set, measurement, job.path_of, job.tolerances, limits, profile, friction)
     samples = sum(int(np.count_nonzero(np.isfinite(v))) for v in measurement.values.values())
     if samples <= len(free_set.names):
         raise ValueError(f"{read.source}: {samples} finite samples for {len(free_set.names)} free parameters; "
@@ -321,61 +327,111 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
     if all(not np.any(np.nan_to_num(values)) for values in measurement.values.values()):
         raise ValueError(f"{read.source}: every measured {', '.join(measurement.values)} is 0: nothing to fit (the "
                          "parameters would run off to where the model vanishes); allowed: curves of a contact")
-    theta0 = free_set.to_scaled(free_set.start_values())
-    lower, upper = free_set.scaled_bounds()
-    solution = optimize.least_squares(problem.residuals, theta0, jac=lambda theta: problem.jacobian(theta),
-                                      bounds=(lower, upper), method="trf", x_scale=1.0, xtol=FIT_TOLERANCE,
-                                      ftol=FIT_TOLERANCE, gtol=FIT_TOLERANCE,
-                                      max_nfev=MAX_EVALUATIONS_PER_PARAMETER * len(free_set.names))
+    return problem
+
+
+class _Optimum(NamedTuple):
+    """What the optimum says in the scaled parameters: the curves there, the samples compared, the goodness of fit
+    and the identifiability analysis (:func:`~mdr_events.analysis.fit_diagnostics.identifiability_of`)."""
+
+    theta: np.ndarray
+    model: ModelCurves
+    compared: dict[str, np.ndarray]  #: per quantity: the samples where both the data and the model have a value
+    dof: int
+    chi_square: float
+    all_given: bool  #: every quantity's noise given (none estimated)
+    covariance: np.ndarray
+    scaled_error: np.ndarray
+    condition: float
+    verdicts: list[Identifiability]
+    correlation: np.ndarray
+
+    @property
+    def reduced_chi_square(self) -> float:
+        return self.chi_square / max(self.dof, 1)
+
+
+def _optimum(problem: Problem, solution: optimize.OptimizeResult) -> _Optimum:
+    """The analysis at the optimum ``solution.x``, with the Jacobian ``least_squares`` asked for there last."""
     theta = solution.x
     model, residual = problem.evaluated(theta)
-    curves = model.values
-    jacobian = solution.jac  # our Jacobian at the optimum: least_squares asked for it there last
-    compared = {name: np.isfinite(curves[name]) & np.isfinite(measurement.values[name])
+    measurement = problem.measurement
+    compared = {name: np.isfinite(model.values[name]) & np.isfinite(measurement.values[name])
                 for name in problem.quantities}
-    n_compared = sum(int(np.count_nonzero(mask)) for mask in compared.values())
-    dof = n_compared - theta.size
+    dof = sum(int(np.count_nonzero(mask)) for mask in compared.values()) - theta.size
     chi_square = float(residual @ residual)
     all_given = all(measurement.noise_given.values())
     variance_scale = 1.0 if all_given else chi_square / max(dof, 1)
-    covariance, scaled_error, condition, verdicts, correlation = identifiability_of(
-        jacobian, theta, lower, upper, variance_scale)
-    params, time_offset, depth_offset = free_set.model(theta)
-    value, error, low, high = natural_intervals(free_set, theta, scaled_error, dof)
-    notes = identifiability_notes(free_set.names, problem.quantities, verdicts, correlation)
-    moduli = effective_moduli(free_set, theta, covariance, params)
-    dataset = _dataset(free_set, measurement, curves, compared, value, error, low, high, verdicts, correlation,
-                       condition, chi_square / max(dof, 1), moduli, problem, solution)
-    identifiable = all(v is Identifiability.DETERMINED for v in verdicts)
-    undetermined = [f"{n} ({v.value})" for n, v in zip(free_set.names, verdicts) if v is not Identifiability.DETERMINED]
-    verdict = "every free parameter is determined" if identifiable else \
-        "not every free parameter is determined: " + ", ".join(undetermined)
+    lower, upper = problem.free.scaled_bounds()
+    analysis = identifiability_of(solution.jac, theta, lower, upper, variance_scale)
+    return _Optimum(theta, model, compared, dof, chi_square, all_given, *analysis)
+
+
+def _warnings(problem: Problem, optimum: _Optimum, dataset: xr.Dataset, params: Parameters, time_offset: float,
+              depth_offset: float) -> list[str]:
+    """:func:`~mdr_events.analysis.fit_diagnostics.fit_warnings` of the fit, along the fitted path."""
     rms = dict(zip(problem.quantities, dataset["rms_normalised_residual"].values.tolist()))
     fitted_path = shifted_path(problem.path_of(params), depth_offset)
-    warnings = fit_warnings(measurement, model, rms, fitted_path.first_contact_time(), time_offset,
-                             fitted_path.duration, "time_offset" in free_set.names)
+    return fit_warnings(problem.measurement, optimum.model, rms, fitted_path.first_contact_time(), time_offset,
+                        fitted_path.duration, "time_offset" in problem.free.names)
+
+
+def _verdict(names: Sequence[str], verdicts: Sequence[Identifiability], warnings: Sequence[str]) -> tuple[bool, str]:
+    """Whether every free parameter is determined, and the verdict in words (naming the others and the warnings)."""
+    identifiable = all(v is Identifiability.DETERMINED for v in verdicts)
+    undetermined = [f"{n} ({v.value})" for n, v in zip(names, verdicts) if v is not Identifiability.DETERMINED]
+    verdict = "every free parameter is determined" if identifiable else \
+        "not every free parameter is determined: " + ", ".join(undetermined)
     if warnings:
         verdict += f"; but the fit does not describe the data ({len(warnings)} warning{'s' * (len(warnings) > 1)})"
+    return identifiable, verdict
+
+
+def _attrs(job: FitJob, nominal: Path, problem: Problem, solution: optimize.OptimizeResult, optimum: _Optimum,
+           warnings: list[str]) -> dict[str, Any]:
+    """The attributes of a fit's dataset: the verdict, notes and warnings, what was fitted to what, the rules and
+    what the accuracy of the results follows from, the path, indenter and friction law (with the fitted ``μ``)."""
+    free = problem.free
+    identifiable, verdict = _verdict(free.names, optimum.verdicts, warnings)
+    notes = identifiability_notes(free.names, problem.quantities, optimum.verdicts, optimum.correlation)
     attrs = dict(content=FIT_CONTENT, verdict=verdict, identifiable=int(identifiable),
                  **text_list_attrs("notes", notes), **text_list_attrs("warnings", warnings),
-                 free=", ".join(free_set.names), measured_source=read.source, time_origin=str(time_origin),
-                 path_waypoints=nominal.describe(), path_speed=nominal.speed, optimizer_converged=int(solution.status > 0),
-                 optimizer_tolerance=FIT_TOLERANCE, jacobian_step=FD_STEP, continuum_rtol=tolerances.rtol,
-                 confidence=CONFIDENCE,
-                 noise_rule="given" if all_given else "estimated from the data's second differences where not given",
+                 free=", ".join(free.names), measured_source=problem.measurement.candidate.source,
+                 time_origin=str(job.time_origin), path_waypoints=nominal.describe(), path_speed=nominal.speed,
+                 optimizer_converged=int(solution.status > 0), optimizer_tolerance=FIT_TOLERANCE,
+                 jacobian_step=FD_STEP, continuum_rtol=job.tolerances.rtol, confidence=CONFIDENCE,
+                 noise_rule="given" if optimum.all_given else
+                 "estimated from the data's second differences where not given",
                  out_of_contact_rule="the model's forces and area are 0 out of the elastomer; samples before a path "
                                      "that starts inside it or after one that ends in contact are left out")
     if isinstance(job.model.motion, Scenario):
         attrs.update(scenario=job.model.motion.name, alpha=float(job.model.motion.alpha[0]))
-    attrs.update(profile_attrs(profile))
-    attrs.update(friction_attrs(free_set.friction_at(theta)))  # (with the fitted μ where it is free)
-    run = OptimizerRun(problem.solves, int(solution.nfev), int(solution.status), str(solution.message))
-    return FitResult(stamp(dataset, params, **attrs), params, time_offset, depth_offset, run)
+    attrs.update(profile_attrs(job.model.profile))
+    attrs.update(friction_attrs(free.friction_at(optimum.theta)))  # (with the fitted μ where it is free)
+    return attrs
 
 
-def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, value, error, low, high, verdicts,
-             correlation, condition, reduced_chi_square, moduli, problem: Problem, solution) -> xr.Dataset:
-    names = list(free.names)
+def _dataset(problem: Problem, optimum: _Optimum, params: Parameters) -> xr.Dataset:
+    """The fit's dataset without its attributes: the estimates (:func:`_parameter_variables`), the curves
+    (:func:`_curve_variables`), their coordinates."""
+    names = list(problem.free.names)
+    quantities = list(problem.quantities)
+    coords = {
+        "time": ("time", problem.measurement.candidate.time, {"units": "s", "long_name": "measured time"}),
+        "quantity": ("quantity", np.array(quantities), {"units": "1", "long_name": "quantity fitted"}),
+        "parameter": ("parameter", np.array(names), {"units": "1", "long_name": "free parameter"}),
+        "parameter_2": ("parameter_2", np.array(names), {"units": "1", "long_name": "free parameter"}),
+        "parameter_units": ("parameter", np.array([unit_of(n) for n in names]), {"units": "1",
+                                                                                  "long_name": "unit of the parameter"}),
+    }
+    data = {**_parameter_variables(problem.free, optimum, params), **_curve_variables(problem, optimum)}
+    return xr.Dataset(data, coords=coords)
+
+
+def _parameter_variables(free: FreeParameters, optimum: _Optimum, params: Parameters) -> dict[str, tuple]:
+    """The variables along ``parameter`` (estimates, intervals, verdicts, correlation), the scalars (condition
+    number, reduced chi-square) and the effective moduli with their standard errors."""
+    value, error, low, high = natural_intervals(free, optimum.theta, optimum.scaled_error, optimum.dof)
     data = {
         "estimate": (("parameter",), value, {"units": "see parameter_units", "long_name": "fitted value"}),
         "start": (("parameter",), free.start_values(), {"units": "see parameter_units", "long_name": "start value"}),
@@ -383,21 +439,30 @@ def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, v
                                                    "long_name": "standard error (linearised at the optimum)"}),
         "lower_95": (("parameter",), low, {"units": "see parameter_units", "long_name": "lower end of the 95 % interval"}),
         "upper_95": (("parameter",), high, {"units": "see parameter_units", "long_name": "upper end of the 95 % interval"}),
-        "identifiability": (("parameter",), np.array([v.value for v in verdicts]),
+        "identifiability": (("parameter",), np.array([v.value for v in optimum.verdicts]),
                             {"units": "1", "long_name": "what the data say of the parameter"}),
-        "correlation": (("parameter", "parameter_2"), correlation, {"units": "1", "long_name": "correlation of the "
-                                                                    "scaled parameters' estimates"}),
-        "condition_number": ((), condition, {"units": "1", "long_name": "condition number of the weighted Jacobian "
-                                             "(scaled parameters)"}),
-        "reduced_chi_square": ((), reduced_chi_square, {"units": "1", "long_name": "sum of squared weighted residuals "
-                                                        "per degree of freedom"}),
+        "correlation": (("parameter", "parameter_2"), optimum.correlation, {"units": "1", "long_name": "correlation of "
+                                                                            "the scaled parameters' estimates"}),
+        "condition_number": ((), optimum.condition, {"units": "1", "long_name": "condition number of the weighted "
+                                                     "Jacobian (scaled parameters)"}),
+        "reduced_chi_square": ((), optimum.reduced_chi_square, {"units": "1", "long_name": "sum of squared weighted "
+                                                                "residuals per degree of freedom"}),
     }
-    for key, (number, standard_error) in moduli.items():
+    for key, (number, standard_error) in effective_moduli(free, optimum.theta, optimum.covariance, params).items():
         symbol = "E*" if key == "E_star" else "G*"
         data[key] = ((), number, {"units": "Pa", "long_name": f"effective modulus {symbol} at the fit"})
         data[f"{key}_standard_error"] = ((), standard_error, {"units": "Pa", "long_name": f"standard error of {symbol}"})
+    return data
+
+
+def _curve_variables(problem: Problem, optimum: _Optimum) -> dict[str, tuple]:
+    """The variables along ``time`` (measured, fitted, residual, left out) and along ``quantity`` (the noise, whether
+    it was given, the RMS normalised residual)."""
+    measurement, curves, compared = problem.measurement, optimum.model.values, optimum.compared
+    quantities = list(problem.quantities)
+    data = {}
     left_out = np.zeros(measurement.path_time.size, dtype=np.int8)
-    for name in problem.quantities:
+    for name in quantities:
         unit = QUANTITY_UNITS[name]
         symbol = QUANTITY_SYMBOLS[name]
         data[f"measured_{name}"] = (("time",), measurement.values[name], {"units": unit, "long_name": f"measured {symbol}"})
@@ -407,7 +472,6 @@ def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, v
         left_out |= (~compared[name]).astype(np.int8)
     data["left_out"] = (("time",), left_out, {"units": "1", "long_name": "1: a sample left out of some quantity "
                                               "(missing, or where the model says nothing)"})
-    quantities = list(problem.quantities)
     rms = [float(np.sqrt(np.mean(((curves[q] - measurement.values[q])[compared[q]] / measurement.noise[q]) ** 2)))
            if np.any(compared[q]) else math.nan for q in quantities]
     data["noise"] = (("quantity",), np.array([measurement.noise[q] for q in quantities]),
@@ -416,17 +480,10 @@ def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, v
                            {"units": "1", "long_name": "1: noise given, 0: estimated from the data"})
     data["rms_normalised_residual"] = (("quantity",), np.array(rms), {"units": "1", "long_name": "RMS of the residual "
                                                                       "over the noise (about 1 for a good fit)"})
-    coords = {
-        "time": ("time", measurement.candidate.time, {"units": "s", "long_name": "measured time"}),
-        "quantity": ("quantity", np.array(quantities), {"units": "1", "long_name": "quantity fitted"}),
-        "parameter": ("parameter", np.array(names), {"units": "1", "long_name": "free parameter"}),
-        "parameter_2": ("parameter_2", np.array(names), {"units": "1", "long_name": "free parameter"}),
-        "parameter_units": ("parameter", np.array([unit_of(n) for n in names]), {"units": "1",
-                                                                                "long_name": "unit of the parameter"}),
-    }
-    return xr.Dataset(data, coords=coords)
+    return data
 
 
+#: A fit is determined as in fit_accuracy (a synthetic measurement's accuracy: fit_data).
 register_fit_accuracy(FIT_CONTENT, FITTED_QUANTITIES, tuple(PARAMETER_UNITS))
 register_schema(FIT_CONTENT, {"estimate": ("parameter",), "standard_error": ("parameter",),
                               "correlation": ("parameter", "parameter_2"), "left_out": ("time",)})
