@@ -55,6 +55,7 @@ def _in_unit(name: str) -> str:
 
 
 def _long_name(name: str) -> str:
+    """The long name of a free parameter."""
     return OFFSET_LONG_NAMES.get(name) or PARAMETER_LONG_NAMES[name]
 
 
@@ -77,6 +78,7 @@ class FreeParameters:
     friction: FrictionLaw = TAU0
 
     def scale(self, name: str) -> float:
+        """The scale of a parameter not on a log scale: the path's duration or deepest point for an offset, else 1."""
         return {"time_offset": self.duration, "depth_offset": self.depth_scale}.get(name, 1.0)
 
     def to_scaled(self, values: Sequence[float]) -> np.ndarray:
@@ -85,12 +87,15 @@ class FreeParameters:
                          for n, v in zip(self.names, values)])
 
     def to_natural(self, theta: np.ndarray) -> np.ndarray:
+        """The natural values of ``θ`` (the inverse of :meth:`to_scaled`)."""
         return np.array([math.exp(t) if n in LOG_SCALED else t * self.scale(n) for n, t in zip(self.names, theta)])
 
     def scaled_bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """The lower and upper bounds of ``θ``."""
         return self.to_scaled(self.lower), self.to_scaled(self.upper)
 
     def start_values(self) -> np.ndarray:
+        """The start of each free parameter in natural units (0 for an offset)."""
         return np.array([_start_value(n, self.start, self.friction) for n in self.names])
 
     def model(self, theta: np.ndarray) -> tuple[Parameters, float, float]:
@@ -115,6 +120,7 @@ def _start_value(name: str, start: Parameters, friction: FrictionLaw) -> float:
 
 
 def _default_bounds(name: str) -> tuple[float, float]:
+    """A free parameter's physical range: ``ν`` in (−1, 0.5], the log-scaled > 0, the offsets unbounded."""
     if name == "nu":
         return -1.0 + NU_MARGIN, 0.5
     if name in LOG_SCALED:
@@ -133,9 +139,32 @@ def _check_offset_bounds(name: str, given: Sequence[float], duration: float, dep
                          f"{'duration' if name == 'time_offset' else 'deepest point'}), or ±inf for no bound")
 
 
-def free_parameters(free, start: Parameters, bounds: Mapping[str, tuple[float, float]] | None,
+def free_parameters(free: str | Sequence[str], start: Parameters, bounds: Mapping[str, tuple[float, float]] | None,
                     duration: float, depth_scale: float, friction: FrictionLaw = TAU0) -> FreeParameters:
-    """Check ``free``, ``start`` and ``bounds`` (errors name the argument, its value and what is allowed)."""
+    """Check ``free``, ``start`` and ``bounds`` (errors name the argument, its value and what is allowed).
+
+    Parameters
+    ----------
+    free : str or sequence of str
+        The names to fit, from :data:`FREE_NAMES`, each once (``mu`` only with a law that has Coulomb's part).
+    start : Parameters
+        The start; a log-scaled free parameter's start must be > 0.
+    bounds : mapping or None
+        Free name → ``(lower, upper)`` in its unit, overlapping its physical range and holding the start.
+    duration, depth_scale : float
+        The path's duration (s) and deepest point (m): the scales of the offsets.
+    friction : FrictionLaw
+        The fit's friction law (``μ`` its start where free).
+
+    Returns
+    -------
+    FreeParameters
+
+    Raises
+    ------
+    ValueError, TypeError
+        Naming the argument, its value and what is allowed.
+    """
     if isinstance(free, str):
         free = (free,)
     names = tuple(free) if isinstance(free, Sequence) else ()

@@ -55,6 +55,7 @@ class Problem:
         self._last: tuple[np.ndarray, ModelCurves, np.ndarray] | None = None
 
     def curves(self, theta: np.ndarray) -> ModelCurves:
+        """The model's curves at ``θ`` (one continuum solve); a trial the model refuses is named in the error."""
         params, time_offset, depth_offset = self.free.model(theta)
         friction = self.free.friction_at(theta)
         self.solves += 1
@@ -76,9 +77,11 @@ class Problem:
         return self._last[1], self._last[2]
 
     def residuals(self, theta: np.ndarray) -> np.ndarray:
+        """The weighted residuals at ``θ`` (``least_squares``' function)."""
         return self.evaluated(theta)[1]
 
     def weighted(self, curves: ModelCurves) -> np.ndarray:
+        """``(model − measured) / σ`` of every quantity, one after the other; 0 where a sample is left out."""
         parts = []
         for name in self.quantities:
             difference = (curves.values[name] - self.measurement.values[name]) / self.measurement.noise[name]
