@@ -14,642 +14,64 @@ the data (:func:`estimate_noise`). ``scipy.optimize.least_squares`` minimises ``
 parameters in scaled form (:data:`LOG_SCALED` on a log scale, the offsets relative to the path's duration
 and depth; :class:`FreeParameters`).
 
-**Samples out of contact** (the documented rule; never a ``nan`` set to 0). The model's forces and area are
-exactly 0 while the indenter is out of the elastomer: before the first contact, after the pull-off, after a
-path that ends outside it, before a path that starts outside it. Those samples are compared with 0 like any
-other (a force measured after the pull-off is the instrument's noise around zero, and the time of the jump
-is information on ``Δγ1``). The model says nothing before a path that starts inside the elastomer or after
-one that ends in contact: samples there are *left out*, and so are samples whose measured value is ``nan``.
-Left-out samples contribute a zero residual (the residual vector keeps its length) and are counted.
+The fit's parts, one idea each, every name re-exported here as before:
 
-**Uncertainty.** The covariance of the scaled parameters is ``s² (JᵀJ)⁻¹`` with ``J`` the Jacobian of the
-weighted residuals at the optimum (pseudo-inverse over its singular values above :data:`RCOND` of the
-largest), ``s² = Σr²/(n − p)`` where the noise was estimated and ``s² = 1`` where it was given (as
-``scipy.optimize.curve_fit`` with ``absolute_sigma``). Standard errors and 95 % intervals (Student t,
-``n − p`` degrees of freedom) follow in the scaled form and are mapped back (asymmetric for the log-scaled
-parameters).
-
-**Identifiability** (:class:`Identifiability`) per parameter: ``NOT_IDENTIFIABLE`` where it lies in a
-direction the data do not see (a singular value below :data:`RCOND` of the largest: e.g. ``τ0`` from
-``F_N`` alone, which does not depend on friction in the MDR's uncoupled springs); ``POORLY_DETERMINED``
-where its scaled standard error exceeds :data:`POOR_STANDARD_ERROR`; ``AT_BOUND`` where the estimate sits
-on a bound (its interval is not a linearisation's); else ``DETERMINED``. Pairs correlated beyond
-:data:`STRONG_CORRELATION` are named: the data fix only a combination of them.
+- :mod:`~mdr_events.analysis.fit_parameters`: the free parameters, their units, scaling, bounds and starts;
+- :mod:`~mdr_events.analysis.fit_data`: the measurement, its noise, the model's curves at its samples (with the
+  rule for samples out of contact) and synthetic measurements;
+- :mod:`~mdr_events.analysis.fit_problem`: the weighted residuals, their Jacobian and the least-squares solve;
+- :mod:`~mdr_events.analysis.fit_diagnostics`: the uncertainty (covariance, intervals), identifiability, notes
+  and warnings at the optimum;
+- :mod:`~mdr_events.analysis.fit_accuracy`: how a fit's results are determined (when two fits agree);
+- this module: the job of :func:`fit`, the fit itself, its dataset and :class:`FitResult`.
 """
 
 from __future__ import annotations
 
-import enum
 import math
-import sys
 from dataclasses import dataclass
 from typing import Any, Callable, Mapping, NamedTuple, Sequence
 
 import numpy as np
 import xarray as xr
-from scipy import optimize, stats
+from scipy import optimize
 
-from mdr_events.io.candidates import Candidate, read_candidate
-from mdr_events.analysis.validate import one_path, one_path_job, reference_of, times_from_contact
-from mdr_events.contact import Contact
-from mdr_events.models.methods import Continuum
-from mdr_events.models.motion import Scenario
-from mdr_events.models.simulate import ModelJob
 from mdr_events.analysis.fit_accuracy import register_fit_accuracy
-from mdr_events.io.agreement import Integrated, RoundOff, register_accuracy
+# (the fit's parts: every name of before is importable from here too)
+from mdr_events.analysis.fit_data import (FITTED_QUANTITIES, NOISE_FLOOR_SHARE, QUANTITY_SYMBOLS, QUANTITY_UNITS,
+                                          SYNTHETIC_CONTENT, Measurement, ModelCurves, curves_of, estimate_noise,
+                                          measurement_of, model_curves, shifted_path, synthetic_measurement)
+from mdr_events.analysis.fit_diagnostics import (BOUND_SHARE, CONFIDENCE, CONTACT_NOISE_MULTIPLE, CONTACT_TIME_SHARE,
+                                                 FADE_MULTIPLE, LOG_LARGEST, MAGNITUDE_FACTOR, MISFIT_RMS,
+                                                 POOR_STANDARD_ERROR, RCOND, STRONG_CORRELATION, TANGENTIAL_ONLY,
+                                                 Identifiability, ParameterEstimate, _scaled_or_inf, effective_moduli,
+                                                 fit_warnings, identifiability_notes, identifiability_of,
+                                                 natural_intervals)
+from mdr_events.analysis.fit_parameters import (FREE_NAMES, FRICTION_NAME, LOG_SCALED, NU_MARGIN, OFFSET_BOUND_REACH,
+                                                OFFSET_LONG_NAMES, OFFSET_UNITS, OFFSETS, FreeParameters,
+                                                free_parameters, unit_of)
+from mdr_events.analysis.fit_problem import FD_STEP, FIT_TOLERANCE, MAX_EVALUATIONS_PER_PARAMETER, Problem, solve
+from mdr_events.analysis.validate import one_path, one_path_job, reference_of
+from mdr_events.contact import Contact
+from mdr_events.contact.friction import friction_attrs
+from mdr_events.io.candidates import Candidate, read_candidate
 from mdr_events.io.datasets import figure_of, read_text_list, register_schema, stamp, text_list_attrs
 from mdr_events.limits import DEFAULT_LIMITS, Limits
-from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
-from mdr_events.contact.friction import TAU0, FrictionLaw, friction_attrs
-from mdr_events.models.indenters import SimulatedProfile, profile_attrs
+from mdr_events.models.continuum import Tolerances
+from mdr_events.models.indenters import profile_attrs
+from mdr_events.models.methods import Continuum
+from mdr_events.models.motion import Scenario
 from mdr_events.models.paths import Path
+from mdr_events.models.simulate import ModelJob
+from mdr_events.parameters import PARAMETER_UNITS, Parameters
 from mdr_events.theory.scales import check_representable
-from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
-from mdr_events.validation import SCALE_MAX, check_real, shown
+from mdr_events.validation import shown
 
 __all__ = ["fit", "FitResult", "OptimizerRun", "synthetic_measurement", "model_curves", "curves_of", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
            "FIT_CONTENT", "SYNTHETIC_CONTENT", "FREE_NAMES", "FITTED_QUANTITIES", "LOG_SCALED", "OFFSETS"]
 
 #: The ``content`` attribute of a fit's dataset.
 FIT_CONTENT = "fit of the model to measured curves"
-#: The ``content`` attribute of :func:`synthetic_measurement`'s dataset.
-SYNTHETIC_CONTENT = "synthetic measurement of the model"
-#: Measured quantities a fit compares (any subset; the sliding fraction is not measured).
-FITTED_QUANTITIES = ("normal_force", "tangential_force", "contact_area", "contact_radius")
-QUANTITY_UNITS = {"normal_force": "N", "tangential_force": "N", "contact_area": "m2", "contact_radius": "m"}
-QUANTITY_SYMBOLS = {"normal_force": "F_N", "tangential_force": "F_x", "contact_area": "A", "contact_radius": "a"}
-#: Free parameters fitted on a log scale (moduli, radius, critical shear stress, works of adhesion): their
-#: start must be > 0, and the fit moves them by factors.
-LOG_SCALED = ("E", "R", "tau0", "dgamma0", "dgamma1", "mu")
-#: The experiment's zero: ``time_offset`` (s; the measured clock reads it at the path's time 0, after
-#: ``time_origin``) and ``depth_offset`` (m; the path's depth zero lies this far above the real surface).
-OFFSETS = ("time_offset", "depth_offset")
-#: Every name ``free`` may hold. ``d_max`` and ``v`` are the path's, not the material's: give the path.
-FREE_NAMES = ("E", "nu", "R", "tau0", "dgamma0", "dgamma1", "mu") + OFFSETS
-#: The coefficient of friction of a law with Coulomb's part (:mod:`mdr_events.contact.friction`), free beside the parameters.
-FRICTION_NAME = "mu"
-OFFSET_UNITS = {"time_offset": "s", "depth_offset": "m", "mu": "1"}
-OFFSET_LONG_NAMES = {"time_offset": "the measured clock's reading at the path's time 0 (after time_origin)",
-                     "depth_offset": "height of the path's depth zero above the real surface",
-                     "mu": "coefficient of friction of the law's Coulomb part"}
-#: ``ν`` stays below 0.5 and above −1 by this much inside the fit (the bounds of :class:`Parameters`).
-NU_MARGIN = 1e-9
-#: A finite bound of an offset lies within this many of its scales (the path's duration, its deepest point):
-#: farther, the model leaves the measured window long before, and the optimizer's step scaling (the distance
-#: to a bound) would overflow. ``±inf`` is no bound.
-OFFSET_BOUND_REACH = 1e6
-
-#: Forward-difference step of the Jacobian in the scaled parameters. The continuum's curves are exact to
-#: about 1e-10 relative (``Tolerances.rtol``): the rounding part of a column's error is then ~1e-4, the
-#: truncation part ~1e-6 (the step times the curvature): enough for Gauss–Newton and the covariance.
-FD_STEP = 1e-6
-#: Convergence of ``least_squares`` (``xtol``, ``ftol``, ``gtol``): far below the noise, near the curves'
-#: accuracy, so that noise-free data are recovered to 1e-6.
-FIT_TOLERANCE = 1e-12
-#: Function evaluations (continuum solves besides the Jacobian's) per free parameter at most.
-MAX_EVALUATIONS_PER_PARAMETER = 50
-#: Singular values below this share of the largest are directions the data do not see: the Jacobian's
-#: rounding (FD_STEP against the curves' 1e-10) is ~1e-4 of a column, a parameter without effect sits
-#: at ~1e-10 of the others; 1e-6 lies between.
-RCOND = 1e-6
-#: A scaled standard error above this is "poorly determined": a factor e^(1.96·0.5) ≈ 2.7 at 95 % for the
-#: log-scaled parameters, half the path's duration or depth for the offsets, ±1 in ν.
-POOR_STANDARD_ERROR = 0.5
-#: Pairs correlated beyond this (in absolute value) are named: only a combination is determined.
-STRONG_CORRELATION = 0.99
-#: An estimate within this (scaled) of a bound sits on it.
-BOUND_SHARE = 1e-8
-#: The noise estimate never falls below this share of the quantity's largest magnitude (noise-free data).
-NOISE_FLOOR_SHARE = 1e-12
-#: The confidence level of the intervals.
-CONFIDENCE = 0.95
-#: A fit whose residuals exceed this many times the noise (RMS, any quantity) does not describe the data.
-MISFIT_RMS = 2.0
-#: A measured sample is in contact where a quantity exceeds this many times its noise.
-CONTACT_NOISE_MULTIPLE = 5.0
-#: The fit's curves fade out (rather than jump) at the loss of contact over the time they spend between this
-#: many contact thresholds and one: the data's crossing may lie anywhere in it.
-FADE_MULTIPLE = 3.0
-#: Contact lost this far apart in the data and the fit, or a record starting this far after the first contact
-#: (a share of the path's duration; at least two sample spacings), points to a wrong time origin.
-CONTACT_TIME_SHARE = 1e-3
-#: Measured and fitted magnitudes (largest |value|) further apart than this factor point to a wrong unit.
-MAGNITUDE_FACTOR = 10.0
-
-
-class Identifiability(enum.Enum):
-    """What the data say of one free parameter (see the module's notes)."""
-
-    DETERMINED = "determined"
-    POORLY_DETERMINED = "poorly determined"
-    NOT_IDENTIFIABLE = "not identifiable"
-    AT_BOUND = "at a bound"
-
-
-class ParameterEstimate(NamedTuple):
-    """One fitted parameter: the estimate, its standard error and 95 % interval (natural units), the verdict."""
-
-    value: float
-    standard_error: float
-    lower: float
-    upper: float
-    identifiability: Identifiability
-
-
-def _unit(name: str) -> str:
-    return OFFSET_UNITS.get(name) or PARAMETER_UNITS[name]
-
-
-def _in_unit(name: str) -> str:
-    """`` <unit>`` after a value, nothing for a dimensionless one."""
-    unit = _unit(name)
-    return "" if unit == "1" else f" {unit}"
-
-
-def _long_name(name: str) -> str:
-    return OFFSET_LONG_NAMES.get(name) or PARAMETER_LONG_NAMES[name]
-
-
-def estimate_noise(values: np.ndarray) -> float:
-    """The noise's standard deviation in a sampled curve, from its second differences (robust).
-
-    For white noise of deviation σ on a curve smooth over a few samples, ``Δ²y`` has deviation ``σ√6``; the
-    median absolute deviation (×1.4826) ignores the few jumps (contact made, pull-off) and corners. Never
-    below :data:`NOISE_FLOOR_SHARE` of the largest magnitude (noise-free data). ``nan`` samples are skipped.
-    """
-    finite = np.asarray(values, dtype=float)
-    finite = finite[np.isfinite(finite)]
-    floor = NOISE_FLOOR_SHARE * float(np.max(np.abs(finite), initial=0.0)) or NOISE_FLOOR_SHARE
-    if finite.size < 4:
-        return floor
-    second = np.diff(finite, 2)
-    mad = float(np.median(np.abs(second - np.median(second))))
-    return max(1.4826 * mad / math.sqrt(6.0), floor)
-
-
-@dataclass(frozen=True)
-class FreeParameters:
-    """The free parameters of a fit, their scaling and bounds: ``θ`` (scaled) ↔ natural values.
-
-    ``θ = log(value)`` for :data:`LOG_SCALED`, ``ν`` itself, ``time_offset / duration`` and
-    ``depth_offset / depth_scale`` (the path's duration and deepest point give the offsets their scale).
-    """
-
-    names: tuple[str, ...]
-    start: Parameters
-    lower: np.ndarray  #: natural units
-    upper: np.ndarray
-    duration: float
-    depth_scale: float
-    #: the friction law of the fit (``μ`` its start where free)
-    friction: FrictionLaw = TAU0
-
-    def scale(self, name: str) -> float:
-        return {"time_offset": self.duration, "depth_offset": self.depth_scale}.get(name, 1.0)
-
-    def to_scaled(self, values: Sequence[float]) -> np.ndarray:
-        """``θ`` of natural values (a bound of 0 of a log-scaled parameter is ``-inf``)."""
-        return np.array([(math.log(v) if v > 0 else -math.inf) if n in LOG_SCALED else v / self.scale(n)
-                         for n, v in zip(self.names, values)])
-
-    def to_natural(self, theta: np.ndarray) -> np.ndarray:
-        return np.array([math.exp(t) if n in LOG_SCALED else t * self.scale(n) for n, t in zip(self.names, theta)])
-
-    def scaled_bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        return self.to_scaled(self.lower), self.to_scaled(self.upper)
-
-    def start_values(self) -> np.ndarray:
-        return np.array([_start_value(n, self.start, self.friction) for n in self.names])
-
-    def model(self, theta: np.ndarray) -> tuple[Parameters, float, float]:
-        """The parameters, time offset and depth offset at ``θ``."""
-        values = dict(zip(self.names, self.to_natural(theta)))
-        offsets = [values.pop(name, 0.0) for name in OFFSETS]
-        values.pop(FRICTION_NAME, None)
-        return self.start.replace(**values) if values else self.start, offsets[0], offsets[1]
-
-    def friction_at(self, theta: np.ndarray) -> FrictionLaw:
-        """The friction law at ``θ``: the start's, with the fitted ``μ`` where it is free."""
-        if FRICTION_NAME not in self.names:
-            return self.friction
-        return FrictionLaw(self.friction.law, mu=float(self.to_natural(theta)[self.names.index(FRICTION_NAME)]))
-
-
-def _start_value(name: str, start: Parameters, friction: FrictionLaw) -> float:
-    """A free parameter's start: 0 for an offset, the law's ``μ``, else the field of ``start``."""
-    if name in OFFSETS:
-        return 0.0
-    return friction.coulomb_mu if name == FRICTION_NAME else getattr(start, name)
-
-
-def _default_bounds(name: str) -> tuple[float, float]:
-    if name == "nu":
-        return -1.0 + NU_MARGIN, 0.5
-    if name in LOG_SCALED:
-        return 0.0, math.inf
-    return -math.inf, math.inf
-
-
-def _check_offset_bounds(name: str, given: Sequence[float], duration: float, depth_scale: float) -> None:
-    """An offset's finite bounds within :data:`OFFSET_BOUND_REACH` of its scale."""
-    if name not in OFFSETS:
-        return
-    reach = OFFSET_BOUND_REACH * (duration if name == "time_offset" else depth_scale)
-    if any(math.isfinite(bound) and abs(bound) > reach for bound in given):
-        raise ValueError(f"bounds[{name!r}]=({given[0]!r}, {given[1]!r}) is not allowed; allowed: finite bounds within "
-                         f"±{reach:.3g} {_unit(name)} ({OFFSET_BOUND_REACH:g} times the path's "
-                         f"{'duration' if name == 'time_offset' else 'deepest point'}), or ±inf for no bound")
-
-
-def free_parameters(free, start: Parameters, bounds: Mapping[str, tuple[float, float]] | None,
-                    duration: float, depth_scale: float, friction: FrictionLaw = TAU0) -> FreeParameters:
-    """Check ``free``, ``start`` and ``bounds`` (errors name the argument, its value and what is allowed)."""
-    if isinstance(free, str):
-        free = (free,)
-    names = tuple(free) if isinstance(free, Sequence) else ()
-    if not names or not all(isinstance(name, str) for name in names):
-        raise ValueError(f"free={shown(free)} is not allowed; allowed: a non-empty sequence of names from "
-                         f"{', '.join(FREE_NAMES)}")
-    for name in names:
-        if name not in FREE_NAMES:
-            hint = " (the path's, not the material's: give the path)" if name in ("d_max", "v") else ""
-            raise ValueError(f"free: {name!r} is not allowed{hint}; allowed: {', '.join(FREE_NAMES)}")
-    if len(set(names)) != len(names):
-        raise ValueError(f"free={shown(free)} names a parameter twice; allowed: each name once")
-    if not isinstance(start, Parameters):
-        raise TypeError(f"start={shown(start)} ({type(start).__name__}) is not allowed; allowed: a Parameters")
-    if FRICTION_NAME in names and not friction.uses_mu:
-        raise ValueError(f"free: 'mu' is not allowed with the friction law {friction.law!r}; allowed: a law with Coulomb's "
-                         "part, e.g. friction=FrictionLaw('coulomb', mu=0.3) (its mu the start)")
-    bounds = dict(bounds or {})
-    for name in bounds:
-        if name not in names:
-            raise ValueError(f"bounds: {name!r} is not allowed; allowed: the free parameters ({', '.join(names)})")
-    lower, upper = [], []
-    for name in names:
-        low, high = _default_bounds(name)
-        if name in bounds:
-            pair = bounds[name]
-            if isinstance(pair, (str, bytes)) or not (isinstance(pair, (Sequence, np.ndarray)) and len(pair) == 2):
-                raise ValueError(f"bounds[{name!r}]={shown(pair)} is not allowed; allowed: a pair (lower, upper) "
-                                 f"in {_unit(name)}")
-            given = [check_real(f"bounds[{name!r}]", value, f"a pair (lower, upper) of numbers in {_unit(name)}",
-                                finite=False) for value in pair]
-            _check_offset_bounds(name, given, duration, depth_scale)
-            if max(low, given[0]) >= min(high, given[1]):
-                raise ValueError(f"bounds[{name!r}]=({given[0]!r}, {given[1]!r}) is not allowed: it leaves nothing of "
-                                 f"{name}'s range [{low!r}, {high!r}]{_in_unit(name)}; allowed: lower < upper, "
-                                 "overlapping that range")
-            low, high = max(low, given[0]), min(high, given[1])
-        shown_bounds = f"({given[0]!r}, {given[1]!r})" if name in bounds else f"({low!r}, {high!r})"
-        value = _start_value(name, start, friction)
-        if name in LOG_SCALED and not value > 0:
-            where = "friction.mu" if name == FRICTION_NAME else f"start.{name}"
-            raise ValueError(f"{where}={value!r} is not allowed for a free {name}; allowed: > 0 (it is fitted "
-                             "on a log scale)")
-        if not low <= value <= high or not low < high:
-            raise ValueError(f"bounds[{name!r}]={shown_bounds} is not allowed: it excludes the start "
-                             f"{value!r}{_in_unit(name)}; allowed: lower < upper with the start between them")
-        lower.append(low)
-        upper.append(high)
-    return FreeParameters(names, start, np.array(lower), np.array(upper), duration, depth_scale, friction)
-
-
-class Measurement(NamedTuple):
-    """The measured curves on the path's clock, and each quantity's noise."""
-
-    path_time: np.ndarray  #: s from the nominal path's start, before the time offset
-    values: dict[str, np.ndarray]
-    noise: dict[str, float]
-    noise_given: dict[str, bool]
-    candidate: Candidate
-
-
-def _measurement(read: Candidate, path: Path, time_origin, noise: Mapping[str, float] | None) -> Measurement:
-    values = {name: read.quantities[name] for name in FITTED_QUANTITIES if name in read.quantities}
-    if not values:
-        raise ValueError(f"{read.source}: none of {', '.join(FITTED_QUANTITIES)} to fit; found: "
-                         f"{', '.join(read.quantities)}")
-    for name, series in values.items():
-        if not np.any(np.isfinite(series)):
-            raise ValueError(f"{read.source}: {name} has no finite sample; allowed: measured values (nan marks a "
-                             "missing sample)")
-    noise = dict(noise or {})
-    sigma, given = {}, {}
-    for name in noise:
-        if name not in values:
-            raise ValueError(f"noise: {name!r} is not allowed; allowed: the quantities measured "
-                             f"({', '.join(values)})")
-    for name, series in values.items():
-        given[name] = name in noise
-        largest = float(np.nanmax(np.abs(series), initial=0.0))
-        # a residual over the noise, and its square, must stay finite, and so must the weight 1/noise² (1e200
-        # underflowed it to 0: divisions by zero in the covariance)
-        sigma[name] = check_real(f"noise[{name!r}]", noise[name], f"a number > 0 ({QUANTITY_UNITS[name]}) from "
-                                 f"{largest / SCALE_MAX:.3g} to {max(largest, 1.0) * SCALE_MAX:.3g}, the data's largest "
-                                 f"magnitude over and times {SCALE_MAX:.2g}",
-                                 lambda value: value > 0 and largest <= value * SCALE_MAX
-                                 and value <= max(largest, 1.0) * SCALE_MAX) if given[name] else estimate_noise(series)
-    return Measurement(times_from_contact(read, path, time_origin) + path.first_contact_time(), values, sigma, given, read)
-
-
-class ModelCurves(NamedTuple):
-    """The model at the measured samples: each quantity (``nan``: left out) and where it is in contact."""
-
-    values: dict[str, np.ndarray]
-    in_contact: np.ndarray
-
-
-def _shifted(path: Path, depth_offset: float) -> Path:
-    if depth_offset == 0.0:
-        return path
-    return Path(path.waypoints - np.array([0.0, depth_offset]), path.speed, path.alpha)
-
-
-def model_curves(params: Parameters, path: Path, times: np.ndarray, tolerances: Tolerances,
-                 limits: Limits, quantities: Sequence[str], profile: SimulatedProfile = None,
-                 friction: FrictionLaw = TAU0) -> ModelCurves:
-    """The model's curves at ``times`` (s on the path's clock) by the module's rule out of contact: 0 where
-    the indenter is out of the elastomer, ``nan`` (left out) before a path that starts inside it and after
-    one that ends in contact (the indenter ``profile``; ``None``: the paraboloid of ``params.R``)."""
-    return curves_of(solve_path(params, path, tolerances, limits, profile, friction), path, times, quantities)
-
-
-def curves_of(solution: PathSolution, path: Path, times: np.ndarray, quantities: Sequence[str]) -> ModelCurves:
-    """:func:`model_curves` of a solution at hand (``path``: the one it solved)."""
-    since_contact = times - solution.t_contact
-    filled = evaluate(solution, np.maximum(since_contact, 0.0))
-    radius = filled["contact_radius"]
-    out = {"normal_force": filled["normal_force"], "tangential_force": filled["tangential_force"],
-           "contact_radius": radius, "contact_area": math.pi * radius**2}
-    before = since_contact < 0
-    after = since_contact > solution.end_time
-    in_contact = (np.nan_to_num(radius) > 0) & ~before & ~after  # evaluate's radius at t < 0 is that at contact
-    outside_before = path.waypoints[0, 1] <= 0.0
-    for name in quantities:
-        values = out[name]
-        values[before] = 0.0 if outside_before else math.nan
-        values[after] = 0.0 if solution.ended_by_contact else math.nan
-    return ModelCurves({name: out[name] for name in quantities}, in_contact)
-
-
-def synthetic_measurement(contact: Contact | Parameters, motion, alpha: float | None = None, *, times: np.ndarray,
-                          relative_noise: float = 0.0, reference: Continuum | None = None,
-                          limits: Limits = DEFAULT_LIMITS, **options) -> xr.Dataset:
-    """Curves a measurement of this model would give: the continuum at ``times`` (s on the path's clock,
-    the clock then reading ``times + time_shift``) plus white noise of ``relative_noise`` times each
-    quantity's largest magnitude (``numpy.random.default_rng(seed)``), as a Dataset :func:`fit` reads
-    (``time_origin="path_start"``, with ``time_shift`` the offset a fit should find).
-
-    ``contact``, ``motion`` and ``alpha`` are the one path's, as :func:`mdr_events.validate` takes them;
-    ``reference`` the continuum with its tolerances. The options: ``seed`` (default 0), ``quantities`` (default
-    ``F_N``, ``F_x``, ``A``), ``time_shift`` (s, default 0); beside a :class:`~mdr_events.Parameters` also
-    ``profile``, ``friction`` and ``tolerances``."""
-    options = dict(options)
-    seed, time_shift = options.pop("seed", 0), options.pop("time_shift", 0.0)
-    quantities = options.pop("quantities", ("normal_force", "tangential_force", "contact_area"))
-    _, tolerances = reference_of(reference, options.pop("tolerances", None), None)
-    job = one_path_job(contact, motion, alpha, options)
-    if options:
-        raise TypeError(f"synthetic_measurement() got an unexpected keyword argument {next(iter(options))!r}; "
-                        "allowed: seed, quantities, time_shift (and profile, friction, tolerances beside a Parameters)")
-    params, profile, friction = job.params, job.profile, job.friction
-    check_representable(params, profile, friction)
-    the_path, _ = one_path(job)
-    times = np.asarray(times, dtype=float)
-    curves = model_curves(params, the_path, times, tolerances, limits, tuple(quantities), profile, friction).values
-    rng = np.random.default_rng(seed)
-    data = {}
-    for name in quantities:
-        noise = relative_noise * float(np.nanmax(np.abs(curves[name]))) * rng.standard_normal(times.size)
-        data[name] = (("time",), curves[name] + noise, {"units": QUANTITY_UNITS[name],
-                                                        "long_name": f"synthetic measured {QUANTITY_SYMBOLS[name]}"})
-    coords = {"time": ("time", times + time_shift, {"units": "s", "long_name": "time of the synthetic measurement"})}
-    return stamp(xr.Dataset(data, coords=coords), params, content=SYNTHETIC_CONTENT,
-                 relative_noise=float(relative_noise), seed=int(seed), time_shift=float(time_shift),
-                 continuum_rtol=tolerances.rtol, path_waypoints=the_path.describe(), path_speed=the_path.speed, **profile_attrs(profile),
-                 **friction_attrs(friction))
-
-
-class _Problem:
-    """The weighted residuals of one fit, and a count of the continuum solves."""
-
-    def __init__(self, free: FreeParameters, measurement: Measurement, path_of: Callable[[Parameters], Path],
-                 tolerances: Tolerances, limits: Limits, profile: SimulatedProfile = None,
-                 friction: FrictionLaw = TAU0):
-        self.free, self.measurement, self.path_of = free, measurement, path_of
-        self.tolerances, self.limits, self.profile, self.friction = tolerances, limits, profile, friction
-        self.solves = 0
-        self.quantities = tuple(measurement.values)
-        #: least_squares asks for the Jacobian where it just evaluated the residuals: the last (θ, curves, r)
-        self._last: tuple[np.ndarray, ModelCurves, np.ndarray] | None = None
-
-    def curves(self, theta: np.ndarray) -> ModelCurves:
-        params, time_offset, depth_offset = self.free.model(theta)
-        friction = self.free.friction_at(theta)
-        self.solves += 1
-        try:
-            path = _shifted(self.path_of(params), depth_offset)
-            return model_curves(params, path, self.measurement.path_time - time_offset, self.tolerances,
-                                self.limits, self.quantities, self.profile, friction)
-        except (ValueError, RuntimeError) as error:
-            trial = ", ".join(f"{name}={value:.6g}" for name, value in zip(self.free.names,
-                                                                             self.free.to_natural(theta)))
-            raise type(error)(f"the fit tried {trial}, and the model refused: {error}; narrow the fit with "
-                              "bounds= or a better start") from error
-
-    def evaluated(self, theta: np.ndarray) -> tuple[ModelCurves, np.ndarray]:
-        """The curves and the weighted residuals at ``θ`` (the last ones again without a solve)."""
-        if self._last is None or not np.array_equal(self._last[0], theta):
-            curves = self.curves(theta)
-            self._last = (np.array(theta, copy=True), curves, self.weighted(curves))
-        return self._last[1], self._last[2]
-
-    def residuals(self, theta: np.ndarray) -> np.ndarray:
-        return self.evaluated(theta)[1]
-
-    def weighted(self, curves: ModelCurves) -> np.ndarray:
-        parts = []
-        for name in self.quantities:
-            difference = (curves.values[name] - self.measurement.values[name]) / self.measurement.noise[name]
-            parts.append(np.where(np.isfinite(difference), difference, 0.0))
-        return np.concatenate(parts)
-
-    def jacobian(self, theta: np.ndarray) -> np.ndarray:
-        """Forward differences of :data:`FD_STEP` in each scaled parameter (backward at an upper bound).
-
-        A sample whose contact state the step changes (the jump at a pull-off or a contact made moved across
-        it) has no derivative there: its entry is 0 (the residual is flat on either side of the jump), not
-        the jump over the step, which would claim a precision the data do not have.
-        """
-        curves, base = self.evaluated(theta)
-        same_state = np.tile(curves.in_contact, len(self.quantities))
-        _, upper = self.free.scaled_bounds()
-        columns = []
-        for j in range(theta.size):
-            step = FD_STEP if theta[j] + FD_STEP <= upper[j] else -FD_STEP
-            moved = theta.copy()
-            moved[j] += step
-            trial = self.curves(moved)
-            column = (self.weighted(trial) - base) / step
-            columns.append(np.where(same_state == np.tile(trial.in_contact, len(self.quantities)), column, 0.0))
-        return np.column_stack(columns)
-
-
-def _identifiability(jacobian: np.ndarray, theta: np.ndarray, lower: np.ndarray, upper: np.ndarray,
-                     variance_scale: float):
-    """Covariance (scaled), the condition number and the verdict per parameter."""
-    _, singular, vt = np.linalg.svd(jacobian, full_matrices=False)
-    largest = singular[0] if singular.size and singular[0] > 0 else 1.0
-    seen = singular > RCOND * largest
-    condition = float(singular[0] / singular[-1]) if singular[-1] > 0 else math.inf
-    inverse = np.where(seen, 1.0 / np.where(seen, singular, 1.0) ** 2, 0.0)
-    covariance = (vt.T * inverse) @ vt * variance_scale
-    unseen = np.any(np.abs(vt[~seen]) > math.sqrt(RCOND), axis=0) if np.any(~seen) else np.zeros(theta.size, bool)
-    standard_error = np.sqrt(np.maximum(np.diag(covariance), 0.0))
-    standard_error[unseen] = math.inf
-    verdicts = []
-    for j in range(theta.size):
-        if unseen[j]:
-            verdicts.append(Identifiability.NOT_IDENTIFIABLE)
-        elif theta[j] - lower[j] <= BOUND_SHARE * max(1.0, abs(theta[j])) or \
-                upper[j] - theta[j] <= BOUND_SHARE * max(1.0, abs(theta[j])):
-            verdicts.append(Identifiability.AT_BOUND)
-        elif standard_error[j] > POOR_STANDARD_ERROR:
-            verdicts.append(Identifiability.POORLY_DETERMINED)
-        else:
-            verdicts.append(Identifiability.DETERMINED)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        correlation = covariance / np.outer(standard_error, standard_error)
-    correlation[unseen, :] = math.nan
-    correlation[:, unseen] = math.nan
-    np.fill_diagonal(correlation, 1.0)
-    return covariance, standard_error, condition, verdicts, correlation
-
-
-#: Parameters the normal problem does not depend on: uncoupled springs (MDR) make F_N, A and a independent of
-#: friction and of the tangential stiffness.
-TANGENTIAL_ONLY = ("tau0",)
-
-
-def _notes(names: Sequence[str], quantities: Sequence[str], verdicts, correlation) -> list[str]:
-    notes = []
-    if "tangential_force" not in quantities:
-        for name in names:
-            if name in TANGENTIAL_ONLY:
-                notes.append(f"{name} acts only on F_x (the MDR's springs are uncoupled: F_N, A and a do not depend on "
-                             "friction); without F_x data it cannot be determined")
-    if "E" in names or "nu" in names:
-        notes.append("E and ν enter the model only through E* = E/(1−ν²) (normal) and G* = 2E/((1+ν)(2−ν)) "
-                     "(tangential); E* and G* are reported beside them")
-        if "nu" in names and "tangential_force" not in quantities:
-            notes.append("ν changes G*/E* only, and G* acts only on F_x: without F_x data ν cannot be determined")
-    for i in range(len(names)):
-        for j in range(i + 1, len(names)):
-            if abs(correlation[i, j]) > STRONG_CORRELATION:
-                # (the value is the variable correlation: words with its digits would differ between CPUs)
-                notes.append(f"{names[i]} and {names[j]} are correlated beyond ±{STRONG_CORRELATION:g}: the data fix "
-                             "a combination of them rather than each")
-    for name, verdict in zip(names, verdicts):
-        if verdict is Identifiability.AT_BOUND:
-            notes.append(f"{name} sits on a bound: its interval is not a linearisation's, widen the bound or fix it")
-    return notes
-
-
-def _fit_warnings(measurement: Measurement, model: ModelCurves, rms: Mapping[str, float], first_contact: float,
-                  time_offset: float, duration: float, offset_free: bool) -> list[str]:
-    """What says the fit does not describe the data, whatever the intervals say: residuals far above the noise,
-    magnitudes or a time span that point to a wrong unit, a record that starts after the first contact (in
-    contact: the offset a fit of Δγ1 would hide), contact lost at another time than in the fit."""
-    warnings = []
-    for name, value in rms.items():
-        if value > MISFIT_RMS:
-            warnings.append(f"the residuals of {name} are {value:.3g} times its noise: the model does not describe "
-                            "the data (check the units, time_origin, the path and the free parameters)")
-    for name, values in measurement.values.items():
-        measured, fitted = np.nanmax(np.abs(values)), np.nanmax(np.abs(model.values[name]), initial=0.0)
-        if fitted > 0 and not 1.0 / MAGNITUDE_FACTOR <= measured / fitted <= MAGNITUDE_FACTOR:
-            warnings.append(f"the measured {name} reaches {measured:.3g} {QUANTITY_UNITS[name]}, the fit "
-                            f"{fitted:.3g}: check its unit (units=)")
-    times = measurement.path_time - time_offset
-    span = float(times[-1] - times[0])
-    if not duration / MAGNITUDE_FACTOR <= span <= MAGNITUDE_FACTOR * duration:
-        warnings.append(f"the measured time spans {span:.3g} s and the path lasts {duration:.3g} s: check the unit of "
-                        "time (units=)")
-    tolerance = max(CONTACT_TIME_SHARE * duration, 2.0 * float(np.median(np.diff(times))))
-    if offset_free:
-        return warnings
-    if model.in_contact[0] and times[0] - first_contact > tolerance:
-        warnings.append(f"the record starts {times[0] - first_contact:.4g} s after the path's first contact, in "
-                        f"contact: if it starts at the first contact, give time_origin="
-                        f"{measurement.candidate.time[0]:.6g}, or free time_offset")
-    # contact lost (a jump): where the data and the fit last exceed the same multiple of the noise (the data's own
-    # scatter where a given σ is smaller: a σ that understates it would take noise after the pull-off for contact);
-    # where the fit fades out instead (a cone's small jump-off radius), the noise moves that crossing by the fade's
-    # duration
-    measured, fitted = np.zeros(times.size, bool), np.zeros(times.size, bool)
-    strong = np.zeros(times.size, bool)
-    for name, values in measurement.values.items():
-        threshold = CONTACT_NOISE_MULTIPLE * max(measurement.noise[name], estimate_noise(values))
-        measured |= np.nan_to_num(np.abs(values)) > threshold
-        fitted |= np.nan_to_num(np.abs(model.values[name])) > threshold
-        strong |= np.nan_to_num(np.abs(model.values[name])) > FADE_MULTIPLE * threshold
-    if measured.any() and fitted.any() and not measured[-1] and not fitted[-1]:
-        lost, fitted_lost = times[np.flatnonzero(measured)[-1]], times[np.flatnonzero(fitted)[-1]]
-        fade = fitted_lost - times[np.flatnonzero(strong)[-1]] if strong.any() else 0.0
-        if abs(lost - fitted_lost) > tolerance + fade:
-            warnings.append(f"the data lose contact at {lost:.6g} s, the fit at {fitted_lost:.6g} s (the path's "
-                            "clock): free time_offset or give time_origin")
-    return warnings
-
-
-#: The largest argument of exp that a double holds (log of the largest double).
-LOG_LARGEST = math.log(sys.float_info.max)
-
-
-def _scaled_or_inf(value: float, factor: float) -> float:
-    """``value * factor`` of two non-negative numbers, ``inf`` where it overflows."""
-    with np.errstate(over="ignore"):
-        product = float(np.float64(value) * np.float64(factor))
-    return product if math.isfinite(product) else math.inf
-
-
-def _intervals(free: FreeParameters, theta: np.ndarray, standard_error: np.ndarray, dof: int):
-    """Estimates, standard errors and 95 % intervals in natural units (delta method for the log-scaled)."""
-    quantile = float(stats.t.ppf(0.5 + CONFIDENCE / 2.0, max(dof, 1)))
-    value = free.to_natural(theta)
-    natural_error, lower, upper = [], [], []
-    for j, name in enumerate(free.names):
-        half = quantile * standard_error[j]
-        if name in LOG_SCALED:
-            # (a parameter the data do not see has a half-width beyond what exp takes: its interval is (0, inf))
-            natural_error.append(_scaled_or_inf(value[j], standard_error[j]))
-            lower.append(value[j] * math.exp(-half) if half < LOG_LARGEST else 0.0)
-            upper.append(_scaled_or_inf(value[j], math.exp(half)) if half < LOG_LARGEST else math.inf)
-        else:
-            scale = free.scale(name)
-            natural_error.append(scale * standard_error[j])
-            lower.append(value[j] - scale * half)
-            upper.append(value[j] + scale * half)
-    return value, np.array(natural_error), np.array(lower), np.array(upper)
-
-
-def _effective_moduli(free: FreeParameters, theta: np.ndarray, covariance: np.ndarray, params: Parameters):
-    """E* and G* with their standard errors (delta method over the scaled parameters; the step backward at an
-    upper bound, as in the Jacobian: ν = 0.5 is the paper's)."""
-    _, upper = free.scaled_bounds()
-    out = {}
-    for key, read in (("E_star", lambda p: p.E_star), ("G_star", lambda p: p.G_star)):
-        gradient = np.zeros(theta.size)
-        for j, name in enumerate(free.names):
-            if name in ("E", "nu"):
-                step = FD_STEP if theta[j] + FD_STEP <= upper[j] else -FD_STEP
-                moved = theta.copy()
-                moved[j] += step
-                gradient[j] = (read(free.model(moved)[0]) - read(params)) / step
-        variance = float(gradient @ covariance @ gradient)
-        out[key] = (read(params), math.sqrt(max(variance, 0.0)))
-    return out
 
 
 class OptimizerRun(NamedTuple):
@@ -863,9 +285,24 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
         exclude the start, a start of 0 for a log-scaled parameter, fewer samples than free parameters.
     """
     job = _fit_job(contact, motion, alpha, reference, options)
-    start, profile, friction, path_of = job.model.params, job.model.profile, job.model.friction, job.path_of
-    bounds, noise, names, units, time_origin = job.bounds, job.noise, job.names, job.units, job.time_origin
-    tolerances = job.tolerances
+    _check_fit(job, free, progress)
+    read = read_candidate(measured, job.names, job.units, limits, progress=progress)
+    nominal = job.path_of(job.model.params)
+    problem = _problem(job, read, nominal, free, limits)
+    solution = solve(problem)
+    optimum = _optimum(problem, solution)
+    params, time_offset, depth_offset = problem.free.model(optimum.theta)
+    dataset = _dataset(problem, optimum, params)
+    warnings = _warnings(problem, optimum, dataset, params, time_offset, depth_offset)
+    attrs = _attrs(job, nominal, problem, solution, optimum, warnings)
+    run = OptimizerRun(problem.solves, int(solution.nfev), int(solution.status), str(solution.message))
+    return FitResult(stamp(dataset, params, **attrs), params, time_offset, depth_offset, run)
+
+
+def _check_fit(job: FitJob, free: Sequence[str], progress: Callable[[str], None] | None) -> None:
+    """The checks of :func:`fit` before the data are read: ``progress``, the start's scales, ``R`` free only with
+    the paraboloid."""
+    start, profile, friction = job.model.params, job.model.profile, job.model.friction
     if progress is not None and not callable(progress):
         raise TypeError(f"progress={shown(progress)} ({type(progress).__name__}) is not allowed; allowed: None or a "
                         "function called with a line of text")
@@ -873,12 +310,16 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
     if profile is not None and "R" in free:
         raise ValueError(f"free={list(free)!r} frees R with profile={profile!r}; allowed: the names of "
                          f"{list(FREE_NAMES)} but R (the power law's shape is c and n, R belongs to the paraboloid)")
-    read = read_candidate(measured, names, units, limits, progress=progress)
-    nominal = path_of(start)
-    measurement = _measurement(read, nominal, time_origin, noise)
-    free_set = free_parameters(free, start, bounds, nominal.duration, max(nominal.max_depth, start.d_max), friction)
+
+
+def _problem(job: FitJob, read: Candidate, nominal: Path, free: Sequence[str], limits: Limits) -> Problem:
+    """The weighted residuals of the fit: the measurement on the nominal path's clock, the free parameters checked,
+    more samples than free parameters and not all of them 0."""
+    start, profile, friction = job.model.params, job.model.profile, job.model.friction
+    measurement = measurement_of(read, nominal, job.time_origin, job.noise)
+    free_set = free_parameters(free, start, job.bounds, nominal.duration, max(nominal.max_depth, start.d_max), friction)
     # a scenario is rebuilt per trial (its way out ends below the jump-off, which depends on the parameters)
-    problem = _Problem(free_set, measurement, path_of, tolerances, limits, profile, friction)
+    problem = Problem(free_set, measurement, job.path_of, job.tolerances, limits, profile, friction)
     samples = sum(int(np.count_nonzero(np.isfinite(v))) for v in measurement.values.values())
     if samples <= len(free_set.names):
         raise ValueError(f"{read.source}: {samples} finite samples for {len(free_set.names)} free parameters; "
@@ -886,61 +327,111 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
     if all(not np.any(np.nan_to_num(values)) for values in measurement.values.values()):
         raise ValueError(f"{read.source}: every measured {', '.join(measurement.values)} is 0: nothing to fit (the "
                          "parameters would run off to where the model vanishes); allowed: curves of a contact")
-    theta0 = free_set.to_scaled(free_set.start_values())
-    lower, upper = free_set.scaled_bounds()
-    solution = optimize.least_squares(problem.residuals, theta0, jac=lambda theta: problem.jacobian(theta),
-                                      bounds=(lower, upper), method="trf", x_scale=1.0, xtol=FIT_TOLERANCE,
-                                      ftol=FIT_TOLERANCE, gtol=FIT_TOLERANCE,
-                                      max_nfev=MAX_EVALUATIONS_PER_PARAMETER * len(free_set.names))
+    return problem
+
+
+class _Optimum(NamedTuple):
+    """What the optimum says in the scaled parameters: the curves there, the samples compared, the goodness of fit
+    and the identifiability analysis (:func:`~mdr_events.analysis.fit_diagnostics.identifiability_of`)."""
+
+    theta: np.ndarray
+    model: ModelCurves
+    compared: dict[str, np.ndarray]  #: per quantity: the samples where both the data and the model have a value
+    dof: int
+    chi_square: float
+    all_given: bool  #: every quantity's noise given (none estimated)
+    covariance: np.ndarray
+    scaled_error: np.ndarray
+    condition: float
+    verdicts: list[Identifiability]
+    correlation: np.ndarray
+
+    @property
+    def reduced_chi_square(self) -> float:
+        return self.chi_square / max(self.dof, 1)
+
+
+def _optimum(problem: Problem, solution: optimize.OptimizeResult) -> _Optimum:
+    """The analysis at the optimum ``solution.x``, with the Jacobian ``least_squares`` asked for there last."""
     theta = solution.x
     model, residual = problem.evaluated(theta)
-    curves = model.values
-    jacobian = solution.jac  # our Jacobian at the optimum: least_squares asked for it there last
-    compared = {name: np.isfinite(curves[name]) & np.isfinite(measurement.values[name])
+    measurement = problem.measurement
+    compared = {name: np.isfinite(model.values[name]) & np.isfinite(measurement.values[name])
                 for name in problem.quantities}
-    n_compared = sum(int(np.count_nonzero(mask)) for mask in compared.values())
-    dof = n_compared - theta.size
+    dof = sum(int(np.count_nonzero(mask)) for mask in compared.values()) - theta.size
     chi_square = float(residual @ residual)
     all_given = all(measurement.noise_given.values())
     variance_scale = 1.0 if all_given else chi_square / max(dof, 1)
-    covariance, scaled_error, condition, verdicts, correlation = _identifiability(
-        jacobian, theta, lower, upper, variance_scale)
-    params, time_offset, depth_offset = free_set.model(theta)
-    value, error, low, high = _intervals(free_set, theta, scaled_error, dof)
-    notes = _notes(free_set.names, problem.quantities, verdicts, correlation)
-    moduli = _effective_moduli(free_set, theta, covariance, params)
-    dataset = _dataset(free_set, measurement, curves, compared, value, error, low, high, verdicts, correlation,
-                       condition, chi_square / max(dof, 1), moduli, problem, solution)
+    lower, upper = problem.free.scaled_bounds()
+    analysis = identifiability_of(solution.jac, theta, lower, upper, variance_scale)
+    return _Optimum(theta, model, compared, dof, chi_square, all_given, *analysis)
+
+
+def _warnings(problem: Problem, optimum: _Optimum, dataset: xr.Dataset, params: Parameters, time_offset: float,
+              depth_offset: float) -> list[str]:
+    """:func:`~mdr_events.analysis.fit_diagnostics.fit_warnings` of the fit, along the fitted path."""
+    rms = dict(zip(problem.quantities, dataset["rms_normalised_residual"].values.tolist()))
+    fitted_path = shifted_path(problem.path_of(params), depth_offset)
+    return fit_warnings(problem.measurement, optimum.model, rms, fitted_path.first_contact_time(), time_offset,
+                        fitted_path.duration, "time_offset" in problem.free.names)
+
+
+def _verdict(names: Sequence[str], verdicts: Sequence[Identifiability], warnings: Sequence[str]) -> tuple[bool, str]:
+    """Whether every free parameter is determined, and the verdict in words (naming the others and the warnings)."""
     identifiable = all(v is Identifiability.DETERMINED for v in verdicts)
-    undetermined = [f"{n} ({v.value})" for n, v in zip(free_set.names, verdicts) if v is not Identifiability.DETERMINED]
+    undetermined = [f"{n} ({v.value})" for n, v in zip(names, verdicts) if v is not Identifiability.DETERMINED]
     verdict = "every free parameter is determined" if identifiable else \
         "not every free parameter is determined: " + ", ".join(undetermined)
-    rms = dict(zip(problem.quantities, dataset["rms_normalised_residual"].values.tolist()))
-    fitted_path = _shifted(problem.path_of(params), depth_offset)
-    warnings = _fit_warnings(measurement, model, rms, fitted_path.first_contact_time(), time_offset,
-                             fitted_path.duration, "time_offset" in free_set.names)
     if warnings:
         verdict += f"; but the fit does not describe the data ({len(warnings)} warning{'s' * (len(warnings) > 1)})"
+    return identifiable, verdict
+
+
+def _attrs(job: FitJob, nominal: Path, problem: Problem, solution: optimize.OptimizeResult, optimum: _Optimum,
+           warnings: list[str]) -> dict[str, Any]:
+    """The attributes of a fit's dataset: the verdict, notes and warnings, what was fitted to what, the rules and
+    what the accuracy of the results follows from, the path, indenter and friction law (with the fitted ``μ``)."""
+    free = problem.free
+    identifiable, verdict = _verdict(free.names, optimum.verdicts, warnings)
+    notes = identifiability_notes(free.names, problem.quantities, optimum.verdicts, optimum.correlation)
     attrs = dict(content=FIT_CONTENT, verdict=verdict, identifiable=int(identifiable),
                  **text_list_attrs("notes", notes), **text_list_attrs("warnings", warnings),
-                 free=", ".join(free_set.names), measured_source=read.source, time_origin=str(time_origin),
-                 path_waypoints=nominal.describe(), path_speed=nominal.speed, optimizer_converged=int(solution.status > 0),
-                 optimizer_tolerance=FIT_TOLERANCE, jacobian_step=FD_STEP, continuum_rtol=tolerances.rtol,
-                 confidence=CONFIDENCE,
-                 noise_rule="given" if all_given else "estimated from the data's second differences where not given",
+                 free=", ".join(free.names), measured_source=problem.measurement.candidate.source,
+                 time_origin=str(job.time_origin), path_waypoints=nominal.describe(), path_speed=nominal.speed,
+                 optimizer_converged=int(solution.status > 0), optimizer_tolerance=FIT_TOLERANCE,
+                 jacobian_step=FD_STEP, continuum_rtol=job.tolerances.rtol, confidence=CONFIDENCE,
+                 noise_rule="given" if optimum.all_given else
+                 "estimated from the data's second differences where not given",
                  out_of_contact_rule="the model's forces and area are 0 out of the elastomer; samples before a path "
                                      "that starts inside it or after one that ends in contact are left out")
     if isinstance(job.model.motion, Scenario):
         attrs.update(scenario=job.model.motion.name, alpha=float(job.model.motion.alpha[0]))
-    attrs.update(profile_attrs(profile))
-    attrs.update(friction_attrs(free_set.friction_at(theta)))  # (with the fitted μ where it is free)
-    run = OptimizerRun(problem.solves, int(solution.nfev), int(solution.status), str(solution.message))
-    return FitResult(stamp(dataset, params, **attrs), params, time_offset, depth_offset, run)
+    attrs.update(profile_attrs(job.model.profile))
+    attrs.update(friction_attrs(free.friction_at(optimum.theta)))  # (with the fitted μ where it is free)
+    return attrs
 
 
-def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, value, error, low, high, verdicts,
-             correlation, condition, reduced_chi_square, moduli, problem: _Problem, solution) -> xr.Dataset:
-    names = list(free.names)
+def _dataset(problem: Problem, optimum: _Optimum, params: Parameters) -> xr.Dataset:
+    """The fit's dataset without its attributes: the estimates (:func:`_parameter_variables`), the curves
+    (:func:`_curve_variables`), their coordinates."""
+    names = list(problem.free.names)
+    quantities = list(problem.quantities)
+    coords = {
+        "time": ("time", problem.measurement.candidate.time, {"units": "s", "long_name": "measured time"}),
+        "quantity": ("quantity", np.array(quantities), {"units": "1", "long_name": "quantity fitted"}),
+        "parameter": ("parameter", np.array(names), {"units": "1", "long_name": "free parameter"}),
+        "parameter_2": ("parameter_2", np.array(names), {"units": "1", "long_name": "free parameter"}),
+        "parameter_units": ("parameter", np.array([unit_of(n) for n in names]), {"units": "1",
+                                                                                  "long_name": "unit of the parameter"}),
+    }
+    data = {**_parameter_variables(problem.free, optimum, params), **_curve_variables(problem, optimum)}
+    return xr.Dataset(data, coords=coords)
+
+
+def _parameter_variables(free: FreeParameters, optimum: _Optimum, params: Parameters) -> dict[str, tuple]:
+    """The variables along ``parameter`` (estimates, intervals, verdicts, correlation), the scalars (condition
+    number, reduced chi-square) and the effective moduli with their standard errors."""
+    value, error, low, high = natural_intervals(free, optimum.theta, optimum.scaled_error, optimum.dof)
     data = {
         "estimate": (("parameter",), value, {"units": "see parameter_units", "long_name": "fitted value"}),
         "start": (("parameter",), free.start_values(), {"units": "see parameter_units", "long_name": "start value"}),
@@ -948,21 +439,30 @@ def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, v
                                                    "long_name": "standard error (linearised at the optimum)"}),
         "lower_95": (("parameter",), low, {"units": "see parameter_units", "long_name": "lower end of the 95 % interval"}),
         "upper_95": (("parameter",), high, {"units": "see parameter_units", "long_name": "upper end of the 95 % interval"}),
-        "identifiability": (("parameter",), np.array([v.value for v in verdicts]),
+        "identifiability": (("parameter",), np.array([v.value for v in optimum.verdicts]),
                             {"units": "1", "long_name": "what the data say of the parameter"}),
-        "correlation": (("parameter", "parameter_2"), correlation, {"units": "1", "long_name": "correlation of the "
-                                                                    "scaled parameters' estimates"}),
-        "condition_number": ((), condition, {"units": "1", "long_name": "condition number of the weighted Jacobian "
-                                             "(scaled parameters)"}),
-        "reduced_chi_square": ((), reduced_chi_square, {"units": "1", "long_name": "sum of squared weighted residuals "
-                                                        "per degree of freedom"}),
+        "correlation": (("parameter", "parameter_2"), optimum.correlation, {"units": "1", "long_name": "correlation of "
+                                                                            "the scaled parameters' estimates"}),
+        "condition_number": ((), optimum.condition, {"units": "1", "long_name": "condition number of the weighted "
+                                                     "Jacobian (scaled parameters)"}),
+        "reduced_chi_square": ((), optimum.reduced_chi_square, {"units": "1", "long_name": "sum of squared weighted "
+                                                                "residuals per degree of freedom"}),
     }
-    for key, (number, standard_error) in moduli.items():
+    for key, (number, standard_error) in effective_moduli(free, optimum.theta, optimum.covariance, params).items():
         symbol = "E*" if key == "E_star" else "G*"
         data[key] = ((), number, {"units": "Pa", "long_name": f"effective modulus {symbol} at the fit"})
         data[f"{key}_standard_error"] = ((), standard_error, {"units": "Pa", "long_name": f"standard error of {symbol}"})
+    return data
+
+
+def _curve_variables(problem: Problem, optimum: _Optimum) -> dict[str, tuple]:
+    """The variables along ``time`` (measured, fitted, residual, left out) and along ``quantity`` (the noise, whether
+    it was given, the RMS normalised residual)."""
+    measurement, curves, compared = problem.measurement, optimum.model.values, optimum.compared
+    quantities = list(problem.quantities)
+    data = {}
     left_out = np.zeros(measurement.path_time.size, dtype=np.int8)
-    for name in problem.quantities:
+    for name in quantities:
         unit = QUANTITY_UNITS[name]
         symbol = QUANTITY_SYMBOLS[name]
         data[f"measured_{name}"] = (("time",), measurement.values[name], {"units": unit, "long_name": f"measured {symbol}"})
@@ -972,7 +472,6 @@ def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, v
         left_out |= (~compared[name]).astype(np.int8)
     data["left_out"] = (("time",), left_out, {"units": "1", "long_name": "1: a sample left out of some quantity "
                                               "(missing, or where the model says nothing)"})
-    quantities = list(problem.quantities)
     rms = [float(np.sqrt(np.mean(((curves[q] - measurement.values[q])[compared[q]] / measurement.noise[q]) ** 2)))
            if np.any(compared[q]) else math.nan for q in quantities]
     data["noise"] = (("quantity",), np.array([measurement.noise[q] for q in quantities]),
@@ -981,21 +480,10 @@ def _dataset(free: FreeParameters, measurement: Measurement, curves, compared, v
                            {"units": "1", "long_name": "1: noise given, 0: estimated from the data"})
     data["rms_normalised_residual"] = (("quantity",), np.array(rms), {"units": "1", "long_name": "RMS of the residual "
                                                                       "over the noise (about 1 for a good fit)"})
-    coords = {
-        "time": ("time", measurement.candidate.time, {"units": "s", "long_name": "measured time"}),
-        "quantity": ("quantity", np.array(quantities), {"units": "1", "long_name": "quantity fitted"}),
-        "parameter": ("parameter", np.array(names), {"units": "1", "long_name": "free parameter"}),
-        "parameter_2": ("parameter_2", np.array(names), {"units": "1", "long_name": "free parameter"}),
-        "parameter_units": ("parameter", np.array([_unit(n) for n in names]), {"units": "1",
-                                                                                "long_name": "unit of the parameter"}),
-    }
-    return xr.Dataset(data, coords=coords)
+    return data
 
 
-register_schema(SYNTHETIC_CONTENT, {"time": ("time",)})
-#: A synthetic measurement is the continuum's curves (to its rtol) plus seeded noise; a fit as in fit_accuracy.
-register_accuracy(SYNTHETIC_CONTENT, {**{name: Integrated("continuum_rtol") for name in FITTED_QUANTITIES},
-                                      "time": RoundOff()})
+#: A fit is determined as in fit_accuracy (a synthetic measurement's accuracy: fit_data).
 register_fit_accuracy(FIT_CONTENT, FITTED_QUANTITIES, tuple(PARAMETER_UNITS))
 register_schema(FIT_CONTENT, {"estimate": ("parameter",), "standard_error": ("parameter",),
                               "correlation": ("parameter", "parameter_2"), "left_out": ("time",)})

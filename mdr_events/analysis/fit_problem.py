@@ -1,0 +1,132 @@
+"""The least-squares problem of a fit (:func:`mdr_events.analysis.fit.fit`): its residuals, Jacobian and solve.
+
+The residuals are
+
+``r = (model − measured) / σ_q``
+
+per quantity ``q`` and sample, with ``σ_q`` the noise of the quantity
+(:class:`~mdr_events.analysis.fit_data.Measurement`); samples left out (:mod:`mdr_events.analysis.fit_data`)
+contribute 0. :class:`Problem` evaluates them at the scaled parameters ``θ``
+(:class:`~mdr_events.analysis.fit_parameters.FreeParameters`), one continuum solve per trial, and their Jacobian
+by forward differences of :data:`FD_STEP`; :func:`solve` minimises ``Σ r²`` with
+``scipy.optimize.least_squares`` to :data:`FIT_TOLERANCE`.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+from scipy import optimize
+
+from mdr_events.analysis.fit_data import Measurement, ModelCurves, model_curves, shifted_path
+from mdr_events.analysis.fit_parameters import FreeParameters
+from mdr_events.contact.friction import TAU0, FrictionLaw
+from mdr_events.limits import Limits
+from mdr_events.models.continuum import Tolerances
+from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.paths import Path
+from mdr_events.parameters import Parameters
+
+__all__ = ["Problem", "solve", "FD_STEP", "FIT_TOLERANCE", "MAX_EVALUATIONS_PER_PARAMETER"]
+
+#: Forward-difference step of the Jacobian in the scaled parameters. The continuum's curves are exact to
+#: about 1e-10 relative (``Tolerances.rtol``): the rounding part of a column's error is then ~1e-4, the
+#: truncation part ~1e-6 (the step times the curvature): enough for Gauss–Newton and the covariance.
+FD_STEP = 1e-6
+#: Convergence of ``least_squares`` (``xtol``, ``ftol``, ``gtol``): far below the noise, near the curves'
+#: accuracy, so that noise-free data are recovered to 1e-6.
+FIT_TOLERANCE = 1e-12
+#: Function evaluations (continuum solves besides the Jacobian's) per free parameter at most.
+MAX_EVALUATIONS_PER_PARAMETER = 50
+
+
+class Problem:
+    """The weighted residuals of one fit, and a count of the continuum solves."""
+
+    def __init__(self, free: FreeParameters, measurement: Measurement, path_of: Callable[[Parameters], Path],
+                 tolerances: Tolerances, limits: Limits, profile: SimulatedProfile = None,
+                 friction: FrictionLaw = TAU0):
+        self.free, self.measurement, self.path_of = free, measurement, path_of
+        self.tolerances, self.limits, self.profile, self.friction = tolerances, limits, profile, friction
+        self.solves = 0
+        self.quantities = tuple(measurement.values)
+        #: least_squares asks for the Jacobian where it just evaluated the residuals: the last (θ, curves, r)
+        self._last: tuple[np.ndarray, ModelCurves, np.ndarray] | None = None
+
+    def curves(self, theta: np.ndarray) -> ModelCurves:
+        """The model's curves at ``θ`` (one continuum solve); a trial the model refuses is named in the error."""
+        params, time_offset, depth_offset = self.free.model(theta)
+        friction = self.free.friction_at(theta)
+        self.solves += 1
+        try:
+            path = shifted_path(self.path_of(params), depth_offset)
+            return model_curves(params, path, self.measurement.path_time - time_offset, self.tolerances,
+                                self.limits, self.quantities, self.profile, friction)
+        except (ValueError, RuntimeError) as error:
+            trial = ", ".join(f"{name}={value:.6g}" for name, value in zip(self.free.names,
+                                                                             self.free.to_natural(theta)))
+            raise type(error)(f"the fit tried {trial}, and the model refused: {error}; narrow the fit with "
+                              "bounds= or a better start") from error
+
+    def evaluated(self, theta: np.ndarray) -> tuple[ModelCurves, np.ndarray]:
+        """The curves and the weighted residuals at ``θ`` (the last ones again without a solve)."""
+        if self._last is None or not np.array_equal(self._last[0], theta):
+            curves = self.curves(theta)
+            self._last = (np.array(theta, copy=True), curves, self.weighted(curves))
+        return self._last[1], self._last[2]
+
+    def residuals(self, theta: np.ndarray) -> np.ndarray:
+        """The weighted residuals at ``θ`` (``least_squares``' function)."""
+        return self.evaluated(theta)[1]
+
+    def weighted(self, curves: ModelCurves) -> np.ndarray:
+        """``(model − measured) / σ`` of every quantity, one after the other; 0 where a sample is left out."""
+        parts = []
+        for name in self.quantities:
+            difference = (curves.values[name] - self.measurement.values[name]) / self.measurement.noise[name]
+            parts.append(np.where(np.isfinite(difference), difference, 0.0))
+        return np.concatenate(parts)
+
+    def jacobian(self, theta: np.ndarray) -> np.ndarray:
+        """Forward differences of :data:`FD_STEP` in each scaled parameter (backward at an upper bound).
+
+        A sample whose contact state the step changes (the jump at a pull-off or a contact made moved across
+        it) has no derivative there: its entry is 0 (the residual is flat on either side of the jump), not
+        the jump over the step, which would claim a precision the data do not have.
+        """
+        curves, base = self.evaluated(theta)
+        same_state = np.tile(curves.in_contact, len(self.quantities))
+        _, upper = self.free.scaled_bounds()
+        columns = []
+        for j in range(theta.size):
+            step = FD_STEP if theta[j] + FD_STEP <= upper[j] else -FD_STEP
+            moved = theta.copy()
+            moved[j] += step
+            trial = self.curves(moved)
+            column = (self.weighted(trial) - base) / step
+            columns.append(np.where(same_state == np.tile(trial.in_contact, len(self.quantities)), column, 0.0))
+        return np.column_stack(columns)
+
+
+def solve(problem: Problem) -> optimize.OptimizeResult:
+    """Minimise the problem's ``Σ r²`` from the start values, within the bounds (scaled parameters).
+
+    Parameters
+    ----------
+    problem : Problem
+        The weighted residuals of the fit.
+
+    Returns
+    -------
+    scipy.optimize.OptimizeResult
+        ``least_squares``' result: ``x`` the scaled optimum, ``jac`` the Jacobian there (the problem's own,
+        asked for at the optimum last), ``nfev``, ``status`` and ``message``.
+    """
+    free = problem.free
+    theta0 = free.to_scaled(free.start_values())
+    lower, upper = free.scaled_bounds()
+    return optimize.least_squares(problem.residuals, theta0, jac=lambda theta: problem.jacobian(theta),
+                                  bounds=(lower, upper), method="trf", x_scale=1.0, xtol=FIT_TOLERANCE,
+                                  ftol=FIT_TOLERANCE, gtol=FIT_TOLERANCE,
+                                  max_nfev=MAX_EVALUATIONS_PER_PARAMETER * len(free.names))
