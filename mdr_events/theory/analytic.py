@@ -23,7 +23,6 @@ import numpy as np
 
 from mdr_events.theory import symbolic
 from mdr_events.theory.roots import positive_polynomial_root
-from mdr_events.parameters import Parameters
 from mdr_events.theory.job import ContactLike, paper_parameters
 from mdr_events.validation import check_choice, check_flag, validate_alpha
 
