@@ -50,10 +50,12 @@ class ConvergenceVerdict(str, enum.Enum):
 
 
 def validation_failures(quantities: Sequence[str], max_errors: Sequence[float], contact_differs: float,
-                        left_out_errors: Sequence[float], tolerance: float) -> list[str]:
+                        left_out_errors: Sequence[float], tolerance: float,
+                        corner_excess: Sequence[float] = ()) -> list[str]:
     """What fails a validation, in words (none: it passes): no quantity compared; a quantity's max error above
     ``tolerance`` (or not a number); the share of the exact contact's time in contact in one run only above
-    ``tolerance``; a sample left out farther than :data:`LEFT_OUT_BOUND` ranges from the exact value."""
+    ``tolerance``; a sample left out farther than :data:`LEFT_OUT_BOUND` ranges from the exact value; a sample at a
+    corner or a reversal farther than ``tolerance`` beyond the exact change beside it."""
     if not len(quantities):
         return ["no quantity compared"]
     failures = [f"{name}: max error {error:.3g} of its range > tolerance {tolerance:g}"
@@ -63,6 +65,8 @@ def validation_failures(quantities: Sequence[str], max_errors: Sequence[float], 
                         f"not sampled > tolerance {tolerance:g}")
     failures += [f"{name}: a sample left out lies {error:.3g} ranges from the exact value > {LEFT_OUT_BOUND:g}"
                  for name, error in zip(quantities, left_out_errors) if error > LEFT_OUT_BOUND]
+    failures += [f"{name}: a sample at a corner lies {excess:.3g} of its range beyond the exact change there > "
+                 f"tolerance {tolerance:g}" for name, excess in zip(quantities, corner_excess) if excess > tolerance]
     return failures
 
 
@@ -115,7 +119,8 @@ class ValidationReport:
         quantities = [str(name) for name in data["quantity"].values]
         share = float(data["contact_differs_share"]) if "contact_differs_share" in data else math.nan
         left_out = data["left_out_max_error"].values if "left_out_max_error" in data else np.zeros(len(quantities))
-        return validation_failures(quantities, data["max_error"].values, share, left_out, self.tolerance)
+        corner = data["corner_max_excess"].values if "corner_max_excess" in data else ()  # (files written before)
+        return validation_failures(quantities, data["max_error"].values, share, left_out, self.tolerance, corner)
 
 
 @dataclass(frozen=True)

@@ -38,7 +38,7 @@ from mdr_events.io.candidates import Candidate
 from mdr_events.models.continuum import PathSolution, evaluate
 
 __all__ = ["in_contact", "exact_at", "compared_samples", "check_run_covers_the_contact", "contact_differs_share",
-           "uncovered_share", "left_out_error", "exact_range", "relative_norms", "candidate_events", "LEFT_OUT_CODES",
+           "uncovered_share", "left_out_error", "corner_excess", "CONTINUOUS_EVENTS", "exact_range", "relative_norms", "candidate_events", "LEFT_OUT_CODES",
            "VALIDATED_EVENTS", "FULL_SLIP_SHARE", "COMPARED", "UNITS", "CONTACT_INDICATORS", "MIN_SAMPLES_IN_CONTACT",
            "GAP_FACTOR", "TIME_AXIS_SHARE"]
 
@@ -154,16 +154,47 @@ def contact_differs_share(times: np.ndarray, codes: np.ndarray, exact_contact: n
 
 def uncovered_share(times: np.ndarray, solution: PathSolution) -> float:
     """The exact contact's time the candidate does not sample, as a share of it: before its first sample (a run whose
-    start is cut off), and inside gaps longer than :data:`GAP_FACTOR` times its median spacing (a run with its middle
-    cut out); the exact contact taken as ``[0, end_time]`` from first contact."""
+    start is cut off), inside gaps longer than :data:`GAP_FACTOR` times its median spacing within the exact contact
+    (a run with its middle cut out; rows spaced widely out of contact do not widen what counts as a gap), and after
+    its last sample (a tail cut off); the exact contact taken as ``[0, end_time]`` from first contact."""
     end = solution.end_time
     if not end > 0.0 or times.size < 2:
         return 0.0
     gaps = np.diff(times)
-    wide = gaps > GAP_FACTOR * float(np.median(gaps))
-    starts, stops = np.append(-np.inf, times[:-1][wide]), np.append(times[0], times[1:][wide])
+    inside = (times[:-1] >= 0.0) & (times[1:] <= end)
+    typical = float(np.median(gaps[inside])) if np.count_nonzero(inside) >= 2 else 0.0
+    wide = gaps > GAP_FACTOR * typical
+    starts = np.concatenate([[-np.inf], times[:-1][wide], [times[-1]]])
+    stops = np.concatenate([[times[0]], times[1:][wide], [np.inf]])
+    # (the tail: up to the candidate's next sample it is covered, as for a run that stops writing at its pull-off)
+    starts[-1] = times[-1] + (gaps[-1] if gaps[-1] <= GAP_FACTOR * typical else 0.0)
     overlap = np.clip(np.minimum(stops, end) - np.maximum(starts, 0.0), 0.0, None)
     return float(np.sum(overlap)) / end
+
+
+#: Continuum events at which the curves keep their value (a corner of the path, a reversal of its tangential motion):
+#: a sample straddling one differs from the exact by what a step cuts off, not by a jump.
+CONTINUOUS_EVENTS = ("corner", "tangential_reversal")
+
+
+def corner_excess(times: np.ndarray, candidate: np.ndarray, exact: np.ndarray, codes: np.ndarray,
+                  compared: np.ndarray, events) -> float:
+    """The largest difference of a sample straddling a corner or a reversal (``left_out`` code 3) beyond the exact
+    quantity's change over the intervals beside it (what cutting the corner can change), relative to the exact
+    quantity's range over the compared samples (0 if none): a spike there was bounded only by one range."""
+    if not np.any(compared):
+        return 0.0
+    worst = 0.0
+    for event in events:
+        if event.kind.value not in CONTINUOUS_EVENTS:
+            continue
+        k = int(np.searchsorted(times, event.time, side="left"))
+        if not (0 < k < len(times) and codes[k] == 3 and np.isfinite(candidate[k])):
+            continue
+        neighbours = exact[max(k - 1, 0):min(k + 2, len(times))]
+        change = float(np.max(neighbours) - np.min(neighbours))
+        worst = max(worst, abs(float(candidate[k] - exact[k])) - change)
+    return worst / exact_range(exact, compared)
 
 
 def left_out_error(candidate: np.ndarray, exact: np.ndarray, codes: np.ndarray, compared: np.ndarray) -> float:

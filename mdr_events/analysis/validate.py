@@ -18,10 +18,10 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.analysis.reports import LEFT_OUT_BOUND, VALIDATION_CONTENT, Verdict, validation_failures
-from mdr_events.analysis.samples import (COMPARED, CONTACT_INDICATORS, LEFT_OUT_CODES, UNITS, VALIDATED_EVENTS,
-                                        FULL_SLIP_SHARE, candidate_events, check_run_covers_the_contact,
-                                        compared_samples, contact_differs_share, exact_at, in_contact, left_out_error,
-                                        relative_norms, uncovered_share)
+from mdr_events.analysis.samples import (COMPARED, CONTACT_INDICATORS, FULL_SLIP_SHARE, LEFT_OUT_CODES, UNITS,
+                                        VALIDATED_EVENTS, candidate_events, check_run_covers_the_contact,
+                                        compared_samples, contact_differs_share, corner_excess, exact_at, in_contact,
+                                        left_out_error, relative_norms, uncovered_share)
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.io.candidates import Candidate, check_run_is_finite, read_candidate
 from mdr_events.theory.scales import check_representable
@@ -147,9 +147,25 @@ def _validation_job(contact, motion, alpha, tolerance, reference, options: Mappi
                              f"{name}={getattr(model, name)!r}; allowed: a solution of this "
                              f"{'indenter' if name == 'profile' else 'friction law'}")
     path, angle = one_path(model)
+    if solution is not None:
+        _check_solution_is_of(solution, model, path)
     if select is None and angle is not None:
         select = {"alpha": angle}
     return ValidationJob(model, path, names, units, time_origin, select, solution, tolerances)
+
+
+def _check_solution_is_of(solution: PathSolution, model: ModelJob, path: Path) -> None:
+    """Refuse a solution at hand of other parameters or another path than the run judged (a run of τ0 = 20 kPa
+    passed as the paper's contact beside a solution of 20 kPa)."""
+    if solution.params != model.params:
+        differ = [f"{name}={getattr(solution.params, name)!r} (judged: {getattr(model.params, name)!r})"
+                  for name in model.params.as_dict() if getattr(solution.params, name) != getattr(model.params, name)]
+        raise ValueError(f"solution= was solved for {', '.join(differ)}; allowed: a solution of the contact and "
+                         "motion judged")
+    solved = solution.path
+    if solved is not None and not (np.array_equal(solved.waypoints, path.waypoints) and solved.speed == path.speed):
+        raise ValueError(f"solution= was solved along {solved.describe()} at {solved.speed!r} m/s, not along the path "
+                         f"judged ({path.describe()} at {path.speed!r} m/s); allowed: a solution of that path")
 
 
 def validate(candidate, contact: Contact | Parameters, motion, alpha: float | None = None, *,
@@ -210,7 +226,7 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
         "units": "1", "long_name": "why a sample is left out", "flag_values": np.array(list(LEFT_OUT_CODES), dtype=np.int8),
         "flag_meanings": " ".join(m.replace(" ", "_") for m in LEFT_OUT_CODES.values())})}
     present = [name for name in COMPARED if name in samples.quantities]
-    max_errors, left_out_errors = _norm_variables(data, samples, present, tolerance)
+    max_errors, left_out_errors, corner = _norm_variables(data, samples, present, tolerance)
     differs = _contact_variable(data, samples)
     _event_variables(data, samples, job)
     data["samples_compared"] = ((), int(np.count_nonzero(samples.compared)), {"units": "1",
@@ -220,7 +236,7 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
     coords = {"time": ("time", samples.times, {"units": "s", "long_name": "time from first contact"}),
               "quantity": ("quantity", np.array(present), {"units": "1", "long_name": "quantity compared"}),
               "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
-    verdict = Verdict.FAIL if validation_failures(present, max_errors, differs, left_out_errors, tolerance) \
+    verdict = Verdict.FAIL if validation_failures(present, max_errors, differs, left_out_errors, tolerance, corner) \
         else Verdict.PASS
     read, model = samples.read, job.model
     attrs = dict(content=VALIDATION_CONTENT, candidate_source=read.source, tolerance=float(tolerance),
@@ -270,14 +286,17 @@ def _samples(job: ValidationJob, candidate, limits: Limits, progress) -> _Sample
 
 
 def _norm_variables(data: dict, samples: _Samples, present: list[str], tolerance: float
-                    ) -> tuple[list[float], list[float]]:
+                    ) -> tuple[list[float], list[float], list[float]]:
     """Per quantity: the candidate, the exact values and their difference along time, the norms, whether within
-    ``tolerance``, and the largest error of the samples left out; returns the max errors and those left-out errors."""
+    ``tolerance``, the largest error of the samples left out and of those at a corner beyond the exact change there;
+    returns the max errors, the left-out errors and the corners' excess."""
     norms = {"max_error": [], "rms_error": [], "l1_error": []}
-    left_out_errors = []
+    left_out_errors, excess = [], []
     for name in present:
         candidate, exact = samples.quantities[name], samples.exact[name]
         left_out_errors.append(left_out_error(candidate, exact, samples.codes, samples.compared))
+        excess.append(corner_excess(samples.times, candidate, exact, samples.codes, samples.compared,
+                                    samples.solution.events))
         difference = np.where(samples.compared, candidate - exact, np.nan)
         data[f"candidate_{name}"] = (("time",), candidate, {"units": UNITS[name], "long_name": f"candidate {name}"})
         data[f"exact_{name}"] = (("time",), exact, {"units": UNITS[name], "long_name": f"exact {name} (continuum)"})
@@ -293,7 +312,11 @@ def _norm_variables(data: dict, samples: _Samples, present: list[str], tolerance
     data["left_out_max_error"] = (("quantity",), np.array(left_out_errors), {
         "units": "1", "long_name": f"max error of the samples left out (contact differs, straddles an event) relative to "
                                    f"the range; the verdict's bound: {LEFT_OUT_BOUND:g} (what an event's timing changes)"})
-    return norms["max_error"], left_out_errors
+    data["corner_max_excess"] = (("quantity",), np.array(excess), {
+        "units": "1", "long_name": "max error of a sample straddling a corner or a reversal beyond the exact change "
+                                   "over the intervals beside it, relative to the range (the verdict's bound: "
+                                   "tolerance)"})
+    return norms["max_error"], left_out_errors, excess
 
 
 def _contact_variable(data: dict, samples: _Samples) -> float:

@@ -174,6 +174,11 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
                              "dataset.sel(case='...'))")
         if single:
             candidate = candidate.isel({dim: 0 for dim in single})
+        for name, variable in candidate.data_vars.items():  # (time named otherwise: a column of two runs was dropped)
+            if sum(size > 1 for size in variable.shape) > 1 and np.issubdtype(variable.dtype, np.number):
+                raise ValueError(f"{source}: column {str(name)!r} of dims {dict(variable.sizes)} holds several runs; "
+                                 "allowed: one run, a column along one dimension (select the run: "
+                                 "dataset.isel(...) or select=)")
         names = list(candidate.variables)
         text = [name for name in names if name in CANDIDATE_QUANTITIES and not
                 np.issubdtype(candidate[name].dtype, np.number)]

@@ -32,6 +32,8 @@ class PathSolution:
         Time of first contact on the path (s); the solution's times count from it.
     end_time : float
         End of the run (s from first contact): the pull-off, or the end of the path.
+    path : Path, optional
+        The path solved (a referee checks that a solution at hand is of the path it judges).
     """
 
     model: ContinuumModel
@@ -39,6 +41,7 @@ class PathSolution:
     events: list[Event] = field(default_factory=list)
     t_contact: float = 0.0
     end_time: float = 0.0
+    path: object = None
 
     @property
     def params(self) -> Parameters:

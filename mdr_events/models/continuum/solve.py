@@ -41,7 +41,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     model = ContinuumModel(params, tolerances, profile, as_friction_law(friction))
     segments = kinematics(path)
     check_resolvable(model, path, segments)
-    solution = PathSolution(model, t_contact=path.first_contact_time())
+    solution = PathSolution(model, t_contact=path.first_contact_time(), path=path)
     state = ContactState(t=solution.t_contact, anchors=AnchorMap(model.grow, tolerances.radius_rtol))
     entries = path.entry_times()
     heading = 0.0  # the sign of the last tangential motion

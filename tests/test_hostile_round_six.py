@@ -1,0 +1,90 @@
+"""The sixth hostile round (issue 32): what passed the referee or crashed, each with the case that showed it."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import mdr_events as me
+from mdr_events.analysis.reports import ValidationReport
+
+PAPER = me.Parameters.paper()
+
+
+def exact_run(params, alpha, times):
+    """The exact run of scenario A at ``alpha`` sampled at ``times`` (s from first contact), 0 out of contact."""
+    solution = me.continuum.solve_path(params, me.Path.scenario_A(alpha, params))
+    values = me.continuum.evaluate(solution, np.clip(times, 0.0, solution.end_time))
+    run = {"time": times}
+    for name in ("normal_force", "tangential_force", "contact_radius"):
+        column = np.array(values[name])
+        column[(times < 0) | (times > solution.end_time)] = 0.0
+        run[name] = column
+    return run, solution
+
+
+@pytest.fixture(scope="module")
+def contact_time():
+    return exact_run(PAPER, 20.0, np.zeros(1))[1].end_time
+
+
+def test_a_solution_at_hand_must_be_of_the_contact_and_the_path_judged():
+    """R1: a run of τ0 = 20 kPa passed as the paper's contact beside a solution of 20 kPa (and a 30° run at 20°)."""
+    softer = PAPER.replace(tau0=20e3)
+    run, solution = exact_run(softer, 20.0, np.linspace(-60.0, 1300.0, 4001))
+    assert me.validate(run, PAPER, "A", 20.0).attrs["verdict"] == "fail"
+    for given in (dict(reference=solution), dict(solution=solution)):
+        with pytest.raises(ValueError, match=r"solution= was solved for tau0=20000.0 \(judged: 42000.0\)"):
+            me.validate(run, PAPER, "A", 20.0, **given)
+    steeper = me.continuum.solve_path(PAPER, me.Path.scenario_A(30.0, PAPER))
+    with pytest.raises(ValueError, match="solution= was solved along"):
+        me.validate(run, PAPER, "A", 20.0, reference=steeper)
+    with pytest.raises(ValueError, match="solution= was solved along"):
+        me.convergence_study({2e-6: run, 4e-6: run, 8e-6: run}, PAPER, "A", 20.0, reference=steeper)
+    same = me.continuum.solve_path(softer, me.Path.scenario_A(20.0, softer))
+    assert me.validate(run, softer, "A", 20.0, reference=same).attrs["verdict"] == "pass"
+
+
+def test_a_contact_cut_out_behind_widely_spaced_rows_fails(contact_time):
+    """R2: rows before the contact spaced T/5 widened the gap rule's median, and 99 % of the contact cut out passed."""
+    T = contact_time
+    times = np.concatenate([-np.arange(20000, 0, -1) * T / 5, np.linspace(0.0005 * T, 0.01 * T, 12), [1.05 * T]])
+    report = me.validate(exact_run(PAPER, 20.0, times)[0], PAPER, "A", 20.0)
+    assert report.attrs["verdict"] == "fail" and float(report["contact_differs_share"]) > 0.98
+    # a tail cut off after 60 % of the contact, its last sample far beyond: not sampled, not passed
+    tail = np.concatenate([np.linspace(0.0, 0.6 * T, 3000), [1.4 * T]])
+    cut = me.validate(exact_run(PAPER, 20.0, tail)[0], PAPER, "A", 20.0)
+    assert cut.attrs["verdict"] == "fail" and float(cut["contact_differs_share"]) == pytest.approx(0.4, abs=0.01)
+    whole = me.validate(exact_run(PAPER, 20.0, np.linspace(-0.05 * T, 1.05 * T, 4001))[0], PAPER, "A", 20.0)
+    assert whole.attrs["verdict"] == "pass" and float(whole["contact_differs_share"]) < 1e-3
+
+
+def test_a_spike_at_a_corner_fails(contact_time):
+    """R3: a spike of 0.9 range on the first sample after the d_max corner passed (the left-out bound of one range is
+    for a contact made or lost, where the curves jump; at a corner they keep their value)."""
+    T = contact_time
+    times = np.linspace(-0.05 * T, 1.05 * T, 4001)
+    good, _ = exact_run(PAPER, 20.0, times)
+    path = me.Path.scenario_A(20.0, PAPER)
+    corner = path.corner_times[1] - path.first_contact_time()
+    after = int(np.searchsorted(times, corner, side="right"))
+    for name in ("normal_force", "tangential_force", "contact_radius"):
+        spiked = {key: values.copy() for key, values in good.items()}
+        spiked[name][after] += 0.9 * np.ptp(good[name])
+        report = me.validate(spiked, PAPER, "A", 20.0)
+        assert report.attrs["verdict"] == "fail", name
+        assert any(text.startswith(f"{name}: a sample at a corner") for text in ValidationReport(report).failures)
+        small = {key: values.copy() for key, values in good.items()}
+        small[name][after] += 0.5e-3 * np.ptp(good[name])  # (within the tolerance beyond the change there)
+        assert me.validate(small, PAPER, "A", 20.0).attrs["verdict"] == "pass", name
+
+
+def test_a_column_of_two_runs_along_another_dimension_is_refused(contact_time):
+    """R4: with time along 't', a normal force of two runs was dropped silently and the rest passed."""
+    times = np.linspace(-0.05 * contact_time, 1.05 * contact_time, 2001)
+    run, _ = exact_run(PAPER, 20.0, times)
+    dataset = xr.Dataset({"time": ("t", times), "contact_radius": ("t", run["contact_radius"]),
+                          "normal_force": (("run", "t"), [run["normal_force"], 3 * run["normal_force"]])})
+    with pytest.raises(ValueError, match="column 'normal_force' of dims .* holds several runs"):
+        me.validate(dataset, PAPER, "A", 20.0)
