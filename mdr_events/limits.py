@@ -11,9 +11,9 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
-from mdr_events.validation import check_real
+from mdr_events.validation import check_real, shown
 
-__all__ = ["Limits", "ResourceLimitError", "DEFAULT_LIMITS", "LIMIT_UNITS", "parse_limit"]
+__all__ = ["Limits", "ResourceLimitError", "DEFAULT_LIMITS", "LIMIT_UNITS", "parse_limit", "check_limits"]
 
 #: What each limit counts, for messages and the CLI help.
 LIMIT_UNITS = {
@@ -111,3 +111,12 @@ def parse_limit(text: str, limits: Limits = DEFAULT_LIMITS) -> Limits:
         raise ValueError(f"--limit {text!r} is not allowed; allowed: a number > 0 or inf"
                          + (" (memory: with KiB, MiB, GiB, kB, MB, GB)" if name == "memory" else "")) from None
     return dataclasses.replace(limits, **{name: number})
+
+
+def check_limits(limits) -> "Limits":
+    """``limits`` if it is a :class:`Limits` (``None``: the defaults); else ``TypeError`` naming it."""
+    if limits is None:
+        return DEFAULT_LIMITS
+    if not isinstance(limits, Limits):
+        raise TypeError(f"limits={shown(limits)} ({type(limits).__name__}) is not allowed; allowed: a mdr_events.Limits")
+    return limits

@@ -13,7 +13,7 @@ from typing import Any, Collection
 
 import numpy as np
 
-__all__ = ["as_float", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "validate_alpha"]
+__all__ = ["as_float", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "validate_alpha", "check_callback"]
 
 #: Characters of a value's ``repr`` shown in a message (a long list or a file's content is cut).
 SHOWN_CHARACTERS = 80
@@ -145,3 +145,11 @@ def validate_alpha(alpha) -> np.ndarray:
         first = float(values[bad].flat[0])
         raise ValueError(f"alpha={first!r} (degrees) is not allowed; allowed: finite angles in [0, 90]")
     return values
+
+
+def check_callback(name: str, value: Any, called_with: str) -> Any:
+    """``value`` if it is ``None`` or callable; else ``TypeError`` naming it and what it is called with."""
+    if value is not None and not callable(value):
+        raise TypeError(f"{name}={shown(value)} ({type(value).__name__}) is not allowed; allowed: None or a function "
+                        f"called with {called_with}")
+    return value

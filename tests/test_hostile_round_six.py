@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 import xarray as xr
 
 import mdr_events as me
+from mdr_events.analysis.fit import synthetic_measurement
 from mdr_events.analysis.reports import ValidationReport
 
 PAPER = me.Parameters.paper()
@@ -88,3 +91,87 @@ def test_a_column_of_two_runs_along_another_dimension_is_refused(contact_time):
                           "normal_force": (("run", "t"), [run["normal_force"], 3 * run["normal_force"]])})
     with pytest.raises(ValueError, match="column 'normal_force' of dims .* holds several runs"):
         me.validate(dataset, PAPER, "A", 20.0)
+
+
+SYNTHETIC_TIMES = np.linspace(0.0, 1400.0, 201)
+
+
+@pytest.mark.parametrize("arguments, error, message", [
+    (dict(quantities=("bogus",)), ValueError, "quantities=('bogus',) is not allowed"),
+    (dict(quantities=("sliding_fraction",)), ValueError, "allowed: distinct names of normal_force"),
+    (dict(quantities="normal_force"), ValueError, "quantities='normal_force' is not allowed"),
+    (dict(quantities=()), ValueError, "quantities=() is not allowed"),
+    (dict(times=np.ones((3, 3))), ValueError, "times="),
+    (dict(times=[0.0, float("nan")]), ValueError, "times="),
+    (dict(times=[5.0, 1.0]), ValueError, "strictly increasing"),
+    (dict(times=[0.0, 1e300]), ValueError, "within ±"),
+    (dict(relative_noise=float("nan")), ValueError, "relative_noise=nan"),
+    (dict(relative_noise=float("inf")), ValueError, "relative_noise=inf"),
+    (dict(relative_noise=-0.01), ValueError, "relative_noise=-0.01"),
+    (dict(relative_noise=True), TypeError, "relative_noise=True"),
+    (dict(time_shift=float("inf")), ValueError, "time_shift=inf"),
+    (dict(time_shift=1e300), ValueError, "time_shift=1e+300"),
+    (dict(limits=None, times=np.linspace(0.0, 1400.0, 20_000_001)), me.ResourceLimitError, "samples"),
+    (dict(limits=me.Limits(samples=100)), me.ResourceLimitError, "samples"),
+])
+def test_a_synthetic_measurement_names_what_it_refuses(arguments, error, message):
+    """C2: synthetic_measurement checked almost nothing: KeyError, IndexError, nan curves, 3e7 samples taken."""
+    arguments = {"times": SYNTHETIC_TIMES, **arguments}
+    with pytest.raises(error) as raised:
+        synthetic_measurement(me.Contact.paper(), "A", 20.0, **arguments)
+    assert message in str(raised.value)
+
+
+def test_limits_and_progress_are_named(contact_time):
+    """C3: limits=None and progress=3 reached an AttributeError and a TypeError deep inside."""
+    run, _ = exact_run(PAPER, 20.0, np.linspace(-0.05 * contact_time, 1.05 * contact_time, 401))
+    assert me.validate(run, PAPER, "A", 20.0, limits=None).attrs["verdict"] == "pass"  # (None: the defaults)
+    with pytest.raises(TypeError, match="limits='2 GiB' .* allowed: a mdr_events.Limits"):
+        me.validate(run, PAPER, "A", 20.0, limits="2 GiB")
+    with pytest.raises(TypeError, match="progress=3 .* allowed: None or a function"):
+        me.validate(run, PAPER, "A", 20.0, progress=3)
+    measured = synthetic_measurement(PAPER, "A", 20.0, times=SYNTHETIC_TIMES)
+    with pytest.raises(TypeError, match="limits='2 GiB'"):
+        me.fit(measured, PAPER, "A", 20.0, free=["E"], limits="2 GiB")
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda run: me.validate(run, PAPER, "A", 20.0, time_origin=10**400), "time_origin=1000"),
+    (lambda run: me.convergence_study({2e-6: run, 4e-6: run, 8e-6: run}, PAPER, "A", 20.0, expected_order=10**400),
+     "expected_order=1000"),
+    (lambda run: me.convergence_study({10**400: run, 4e-6: run, 8e-6: run}, PAPER, "A", 20.0), re.escape("spacing(s) 1000")),
+    (lambda run: me.critical_shift(10**400, PAPER), "contact_radius=1000"),
+    (lambda run: me.jkr_depth(10**400, PAPER, PAPER.dgamma0), "contact_radius=1000"),
+    (lambda run: me.jump_off(PAPER, 10**400), "work_of_adhesion=1000"),
+])
+def test_an_integer_beyond_double_is_named_not_an_overflow(contact_time, call, message):
+    """C4: 10**400 raised OverflowError (exit 3 on the command line) instead of naming the argument."""
+    run, _ = exact_run(PAPER, 20.0, np.linspace(-0.05 * contact_time, 1.05 * contact_time, 401))
+    with pytest.raises(ValueError, match=message):
+        call(run)
+
+
+def test_a_study_with_an_integer_beyond_double_exits_2(tmp_path, capsys):
+    from mdr_events.app.cli import main
+    study = tmp_path / "study.toml"
+    study.write_text(f"[parameters]\npreset = \"paper-R30\"\nE = {10**400}\n[phase_diagram]\nscenarios = [\"A\"]\n"
+                     "[output]\ndirectory = \"out\"\n")
+    assert main(["run", str(study)]) == 2
+    error = capsys.readouterr().err.strip().splitlines()
+    assert len(error) == 1 and "E" in error[0] and "internal error" not in error[0]
+
+
+@pytest.mark.parametrize("grid, scheduler, message", [
+    ([{}], "serial", "grid=[{}] is not allowed"),
+    ({"tau0": [3e4]}, "ucx://127.0.0.1:1", "scheduler='ucx://127.0.0.1:1' is not allowed: its protocol needs"),
+    ({"tau0": [3e4]}, "tls://127.0.0.1:1", "scheduler='tls://127.0.0.1:1' is not allowed: its protocol needs"),
+    ({"tau0": [3e4]}, "tcp://127.0.0.1:1", "scheduler='tcp://127.0.0.1:1' cannot be reached"),
+])
+def test_a_sweep_names_an_empty_set_and_a_protocol_without_its_setup(grid, scheduler, message):
+    """C5: 'need at least one array to concatenate', an abstract UCX connector, an AssertionError of TLS (and a
+    client that failed to start left dask's scheduler set to it: later computations failed)."""
+    import dask
+    before = dask.config.get("scheduler", None)
+    with pytest.raises(ValueError, match=re.escape(message)):
+        me.sweep(grid, me.Contact.paper(), "A", 20.0, scheduler=scheduler)
+    assert dask.config.get("scheduler", None) == before

@@ -43,7 +43,7 @@ from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import PathSolution, solve_path
 from mdr_events.models.methods import Continuum
 from mdr_events.parameters import Parameters
-from mdr_events.validation import SCALE_MAX, SCALE_MIN
+from mdr_events.validation import SCALE_MAX, SCALE_MIN, as_float
 
 __all__ = ["convergence_study", "fit_observed_order", "OrderFit", "CONVERGENCE_STUDY_CONTENT", "NORMS",
            "CONVERGES_SHARE", "SPREAD_FACTOR", "MIN_SPACINGS"]
@@ -127,7 +127,7 @@ def _spacings(candidates_by_dx) -> list[float]:
         raise ValueError(f"candidates_by_dx of type {type(candidates_by_dx).__name__} is not allowed; {allowed}")
     keys = list(candidates_by_dx)
     bad = [key for key in keys if isinstance(key, bool) or not isinstance(key, Real)
-           or not SCALE_MIN <= float(key) <= SCALE_MAX]
+           or not SCALE_MIN <= as_float(key) <= SCALE_MAX]
     if bad:
         raise ValueError(f"candidates_by_dx has the spacing(s) {', '.join(map(repr, bad))}; {allowed}")
     spacings = [float(key) for key in keys]
@@ -180,7 +180,7 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
         ``converges_rule``, ``candidate_sources``.
     """
     if isinstance(expected_order, bool) or not isinstance(expected_order, Real) \
-            or not math.isfinite(float(expected_order)) or expected_order <= 0:
+            or not math.isfinite(as_float(expected_order)) or expected_order <= 0:
         raise ValueError(f"expected_order={expected_order!r} is not allowed; allowed: a finite number > 0")
     expected_order = float(expected_order)
     spacings = _spacings(candidates_by_dx)

@@ -42,6 +42,8 @@ DEFAULT_CHUNK = 50
 
 #: The local cluster's dashboard: on loopback, on a free port (None would take the default :8787).
 LOOPBACK_DASHBOARD = "127.0.0.1:0"
+#: The protocols of a scheduler's address that need no setup of their own.
+ADDRESS_PROTOCOLS = ("tcp",)
 #: What ``scheduler`` may be, for messages.
 SCHEDULER_ALLOWED = ("'serial', 'local', a dask scheduler's address such as 'tcp://host:8786', a "
                      "distributed.Client, a concurrent.futures.Executor, or None")
@@ -87,6 +89,10 @@ def check_scheduler(scheduler, workers: int | None) -> None:
     if not (named or scheduler is None or _is_client(scheduler)
             or isinstance(scheduler, concurrent.futures.Executor)):
         raise ValueError(f"scheduler={shown(scheduler)} is not allowed; allowed: {SCHEDULER_ALLOWED}")
+    if isinstance(scheduler, str) and "://" in scheduler and scheduler.partition("://")[0] not in ADDRESS_PROTOCOLS:
+        raise ValueError(f"scheduler={scheduler!r} is not allowed: its protocol needs a setup of its own (certificates "
+                         "for tls://, UCX for ucx://); allowed: an address of " + " or ".join(
+                             f"{protocol}://" for protocol in ADDRESS_PROTOCOLS))
     if workers is not None and scheduler not in ("local", None):
         raise ValueError(f"workers={workers} is not allowed with scheduler={shown(scheduler)}; allowed: with "
                          "scheduler='local' (any other engine has its own workers)")
@@ -99,6 +105,16 @@ def _distributed(scheduler):
         raise ValueError(f"scheduler={scheduler!r} needs dask.distributed; allowed: scheduler='serial', or install "
                          "the extra: pip install 'mdr_events[scale]'") from None
     return distributed
+
+
+def _restore_dask_scheduler(before) -> None:
+    """Put dask's ``scheduler`` setting back as it was (a ``Client`` sets it when made, even if it then fails)."""
+    import dask
+
+    if before is None:
+        dask.config.config.pop("scheduler", None)
+    else:
+        dask.config.set(scheduler=before)
 
 
 @contextmanager
@@ -148,11 +164,16 @@ def open_executor(scheduler=None, workers: int | None = None) -> Iterator[concur
         with cluster, distributed.Client(cluster) as client:
             yield client.get_executor(pure=False)
     else:
+        distributed = _distributed(scheduler)
+        import dask
+
+        before = dask.config.get("scheduler", None)
         try:
-            client = _distributed(scheduler).Client(scheduler)
-        except (OSError, ValueError) as error:  # (no scheduler there, or no address: 'tcp://' has no port)
-            raise ValueError(f"scheduler={scheduler!r} cannot be reached ({error}); allowed: the address of a running "
-                             "dask scheduler, or 'local' / 'serial'") from None
+            client = distributed.Client(scheduler)
+        except (OSError, ValueError, TypeError) as error:  # (no scheduler there, or no address: 'tcp://' has no port)
+            _restore_dask_scheduler(before)  # (a client that failed to start left itself dask's scheduler)
+            raise ValueError(f"scheduler={scheduler!r} cannot be reached ({type(error).__name__}: {error}); allowed: the "
+                             "address of a running dask scheduler, or 'local' / 'serial'") from None
         with client:
             yield client.get_executor(pure=False)
 

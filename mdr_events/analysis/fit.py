@@ -56,7 +56,7 @@ from mdr_events.contact import Contact
 from mdr_events.contact.friction import friction_attrs
 from mdr_events.io.candidates import Candidate, read_candidate
 from mdr_events.io.datasets import figure_of, read_text_list, register_schema, stamp, text_list_attrs
-from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models.continuum import Tolerances
 from mdr_events.models.indenters import profile_attrs
 from mdr_events.models.methods import Continuum
@@ -65,7 +65,7 @@ from mdr_events.models.paths import Path
 from mdr_events.models.simulate import ModelJob
 from mdr_events.parameters import PARAMETER_UNITS, Parameters
 from mdr_events.theory.scales import check_representable
-from mdr_events.validation import shown
+from mdr_events.validation import check_callback, shown
 
 __all__ = ["fit", "FitResult", "OptimizerRun", "synthetic_measurement", "model_curves", "curves_of", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
            "FIT_CONTENT", "SYNTHETIC_CONTENT", "FREE_NAMES", "FITTED_QUANTITIES", "LOG_SCALED", "OFFSETS"]
@@ -286,6 +286,7 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
     """
     job = _fit_job(contact, motion, alpha, reference, options)
     _check_fit(job, free, progress)
+    limits = check_limits(limits)
     read = read_candidate(measured, job.names, job.units, limits, progress=progress)
     nominal = job.path_of(job.model.params)
     problem = _problem(job, read, nominal, free, limits)
@@ -303,9 +304,7 @@ def _check_fit(job: FitJob, free: Sequence[str], progress: Callable[[str], None]
     """The checks of :func:`fit` before the data are read: ``progress``, the start's scales, ``R`` free only with
     the paraboloid."""
     start, profile, friction = job.model.params, job.model.profile, job.model.friction
-    if progress is not None and not callable(progress):
-        raise TypeError(f"progress={shown(progress)} ({type(progress).__name__}) is not allowed; allowed: None or a "
-                        "function called with a line of text")
+    check_callback("progress", progress, "a line of text")
     check_representable(start, profile, friction)
     if profile is not None and "R" in free:
         raise ValueError(f"free={list(free)!r} frees R with profile={profile!r}; allowed: the names of "

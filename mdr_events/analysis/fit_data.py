@@ -27,14 +27,14 @@ from mdr_events.contact.friction import TAU0, FrictionLaw, friction_attrs
 from mdr_events.io.agreement import Integrated, RoundOff, register_accuracy
 from mdr_events.io.candidates import Candidate
 from mdr_events.io.datasets import register_schema, stamp
-from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
 from mdr_events.models.indenters import SimulatedProfile, profile_attrs
 from mdr_events.models.methods import Continuum
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 from mdr_events.theory.scales import check_representable
-from mdr_events.validation import SCALE_MAX, check_real
+from mdr_events.validation import SCALE_MAX, check_count, check_real, real_array, shown
 
 __all__ = ["estimate_noise", "Measurement", "measurement_of", "ModelCurves", "model_curves", "curves_of",
            "shifted_path", "synthetic_measurement", "SYNTHETIC_CONTENT", "FITTED_QUANTITIES"]
@@ -169,6 +169,34 @@ def curves_of(solution: PathSolution, path: Path, times: np.ndarray, quantities:
     return ModelCurves({name: out[name] for name in quantities}, in_contact)
 
 
+#: The largest relative noise a synthetic measurement takes: noise of the curves' own size.
+MAX_RELATIVE_NOISE = 1.0
+
+
+def _synthetic_arguments(times, quantities, relative_noise, time_shift, seed, limits: Limits) -> tuple:
+    """Each argument of :func:`synthetic_measurement` checked, named where refused: the times a finite, strictly
+    increasing 1-D grid within ``limits.samples`` (and scales that stay numbers), the quantities distinct names of
+    :data:`FITTED_QUANTITIES`, the noise in ``[0, MAX_RELATIVE_NOISE]``, the shift a finite time."""
+    limits = check_limits(limits)
+    grid = real_array("times", times, "a strictly increasing 1-D grid of finite times (s)")
+    limits.check(f"a synthetic measurement of {grid.size} samples", samples=grid.size,
+                 memory=8 * grid.size * (len(FITTED_QUANTITIES) + 2))
+    if grid.ndim != 1 or grid.size < 2 or not np.all(np.isfinite(grid)) or np.any(np.diff(grid) <= 0) \
+            or np.max(np.abs(grid)) > SCALE_MAX:
+        raise ValueError(f"times={shown(times)} is not allowed; allowed: a strictly increasing 1-D grid of at least 2 "
+                         f"finite times (s) within ±{SCALE_MAX:.2g}")
+    if isinstance(quantities, str) or not all(isinstance(name, str) for name in quantities) or not quantities \
+            or len(set(quantities)) != len(quantities) or not set(quantities) <= set(FITTED_QUANTITIES):
+        raise ValueError(f"quantities={shown(quantities)} is not allowed; allowed: distinct names of "
+                         f"{', '.join(FITTED_QUANTITIES)}, e.g. ('normal_force',)")
+    noise = check_real("relative_noise", relative_noise, f"a share of each curve's largest value in [0, "
+                       f"{MAX_RELATIVE_NOISE:g}]", lambda value: 0.0 <= value <= MAX_RELATIVE_NOISE)
+    shift = check_real("time_shift", time_shift, f"a finite time (s) within ±{SCALE_MAX:.2g}",
+                       lambda value: abs(value) <= SCALE_MAX and np.all(np.diff(grid + value) > 0))
+    check_count("seed", seed, 0)
+    return grid, tuple(quantities), noise, shift
+
+
 def synthetic_measurement(contact: Contact | Parameters, motion, alpha: float | None = None, *, times: np.ndarray,
                           relative_noise: float = 0.0, reference: Continuum | None = None,
                           limits: Limits = DEFAULT_LIMITS, **options) -> xr.Dataset:
@@ -192,7 +220,9 @@ def synthetic_measurement(contact: Contact | Parameters, motion, alpha: float | 
     params, profile, friction = job.params, job.profile, job.friction
     check_representable(params, profile, friction)
     the_path, _ = one_path(job)
-    times = np.asarray(times, dtype=float)
+    limits = check_limits(limits)
+    times, quantities, relative_noise, time_shift = _synthetic_arguments(times, quantities, relative_noise, time_shift,
+                                                                         seed, limits)
     curves = model_curves(params, the_path, times, tolerances, limits, tuple(quantities), profile, friction).values
     rng = np.random.default_rng(seed)
     data = {}

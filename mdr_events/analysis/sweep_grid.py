@@ -92,6 +92,9 @@ def make_grid(grid, allowed: Sequence[str], limits: Limits | None = None, contac
         return Grid(tuple(coords), coords, np.column_stack([m.ravel() for m in mesh]), table=False)
     if isinstance(grid, Sequence) and not isinstance(grid, str) and grid and all(isinstance(r, Mapping) for r in grid):
         names = tuple(str(name) for name in grid[0])
+        if not names:
+            raise ValueError("grid=[{}] is not allowed; allowed: parameter sets that each name at least one value, e.g. "
+                             "[{'tau0': 3e4}, {'tau0': 4e4}]")
         for index, row in enumerate(grid):
             if set(map(str, row)) != set(names):
                 raise ValueError(f"grid[{index}] names {sorted(map(str, row))}; allowed: the names of grid[0] "

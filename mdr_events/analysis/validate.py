@@ -22,7 +22,7 @@ from mdr_events.analysis.samples import (COMPARED, CONTACT_INDICATORS, FULL_SLIP
                                         VALIDATED_EVENTS, candidate_events, check_run_covers_the_contact,
                                         compared_samples, contact_differs_share, corner_excess, exact_at, in_contact,
                                         left_out_error, relative_norms, uncovered_share)
-from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.io.candidates import Candidate, check_run_is_finite, read_candidate
 from mdr_events.theory.scales import check_representable
 from mdr_events.io.datasets import register_schema, stamp
@@ -35,7 +35,7 @@ from mdr_events.models.simulate import ModelJob, model_job
 from mdr_events.models.paths import Path
 from mdr_events.models.motion import check_path_representable
 from mdr_events.parameters import Parameters
-from mdr_events.validation import check_real, shown
+from mdr_events.validation import as_float, check_callback, check_real, shown
 from mdr_events.contact.friction import friction_attrs
 
 __all__ = ["validate", "DEFAULT_TOLERANCE", "contact_differs_share", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
@@ -58,7 +58,7 @@ def times_from_contact(candidate: Candidate, path: Path, time_origin) -> np.ndar
             raise ValueError(f"time_origin={time_origin!r} is not allowed; allowed: {', '.join(map(repr, TIME_ORIGINS))} "
                              "or the candidate's time of first contact (s)")
         return candidate.time - (path.first_contact_time() if time_origin == "path_start" else 0.0)
-    if isinstance(time_origin, bool) or not isinstance(time_origin, (int, float)) or not math.isfinite(time_origin):
+    if isinstance(time_origin, bool) or not isinstance(time_origin, (int, float)) or not math.isfinite(as_float(time_origin)):
         raise ValueError(f"time_origin={time_origin!r} is not allowed; allowed: {', '.join(map(repr, TIME_ORIGINS))} "
                          "or the candidate's time of first contact (s), a finite number")
     times = candidate.time - float(time_origin)
@@ -221,6 +221,8 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
         ``unused_columns`` (columns not named as a quantity: name them with ``names=`` to check them).
     """
     job = _validation_job(contact, motion, alpha, tolerance, reference, options)
+    limits = check_limits(limits)
+    check_callback("progress", progress, "a line of text")
     samples = _samples(job, candidate, limits, progress)
     data = {"left_out": (("time",), samples.codes, {
         "units": "1", "long_name": "why a sample is left out", "flag_values": np.array(list(LEFT_OUT_CODES), dtype=np.int8),

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from typing import Any, Iterable, Mapping, Sequence
 
+from mdr_events.validation import as_float
 from mdr_events.contact import Contact
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import FlatPunch, PowerLaw
@@ -69,7 +70,7 @@ def parameters(preset: str | None, values: Mapping[str, float], overrides: Mappi
             raise ValueError(f"without a preset lacks {', '.join(missing)}; allowed: all eight of "
                              f"{', '.join(PARAMETER_UNITS)}, or preset = " + " or ".join(map(repr, PRESETS))
                              + " and any of them as overrides")
-    values = {key: float(value) for key, value in {**values, **(overrides or {})}.items()}
+    values = {key: as_float(value) for key, value in {**values, **(overrides or {})}.items()}
     if preset is None and complete:
         return Parameters(**values), {}
     return from_preset(DEFAULT_PRESET if preset is None else preset, **values)

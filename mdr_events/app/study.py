@@ -107,7 +107,7 @@ from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.motion import Motion, Scenario
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
-from mdr_events.validation import shown
+from mdr_events.validation import as_float, shown
 
 if TYPE_CHECKING:
     from mdr_events.app.result_files import FileOutcome
@@ -260,7 +260,7 @@ def _simulation(tables: _Tables) -> SimulateJob | None:
             raise ValueError(f"{', '.join(tolerance_names)} is not allowed with method={method!r}; "
                              "allowed: with method = 'continuum'")
         if tolerance_names:
-            settings["tolerances"] = Tolerances(**{key: float(settings.pop(key)) for key in tolerance_names})
+            settings["tolerances"] = Tolerances(**{key: as_float(settings.pop(key)) for key in tolerance_names})
         motion = inputs.paths(tables.path, tables.params) if tables.path is not None else \
             inputs.scenario(name, alpha, tables.params)
         return SimulateJob(tables.contact, motion, inputs.method(method, settings), tables.limits, tables.provenance,

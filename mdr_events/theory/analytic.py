@@ -24,7 +24,7 @@ import numpy as np
 from mdr_events.theory import symbolic
 from mdr_events.theory.roots import positive_polynomial_root
 from mdr_events.theory.job import ContactLike, paper_parameters
-from mdr_events.validation import check_choice, check_flag, validate_alpha
+from mdr_events.validation import check_choice, check_flag, real_array, shown, validate_alpha
 
 __all__ = [
     "DimensionlessGroups",
@@ -59,6 +59,17 @@ def _tan_degrees(alpha_deg: np.ndarray) -> np.ndarray:
         return np.where(alpha_deg == 90.0, np.inf, np.tan(np.deg2rad(alpha_deg)))
 
 
+def _finite(**arguments) -> None:
+    """Refuse an argument with an entry that is no finite real number (``10**400`` read as inf), naming it. A float
+    array is the caller's to keep finite (its inf gives inf): checking it would cost the continuum's hot loop."""
+    for name, value in arguments.items():
+        if type(value) is float and math.isfinite(value) or isinstance(value, np.ndarray) and value.dtype.kind == "f":
+            continue
+        values = real_array(name, value, "real numbers")
+        if not np.all(np.isfinite(values)):
+            raise ValueError(f"{name}={shown(value)} is not allowed; allowed: finite real numbers (SI units)")
+
+
 def _as_output(values: np.ndarray, like: np.ndarray):
     return float(values) if np.ndim(like) == 0 else values
 
@@ -67,24 +78,28 @@ def _as_output(values: np.ndarray, like: np.ndarray):
 # polynomial roots
 def jkr_depth(contact_radius, contact: ContactLike, work_of_adhesion: float):
     """Indentation depth of the adhesive contact of radius ``a``, eq. (9)."""
+    _finite(contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jkr_depth")
     return _rel("jkr_depth").numeric(contact_radius, params.R, params.E_star, work_of_adhesion)
 
 
 def jkr_normal_force(contact_radius, contact: ContactLike, work_of_adhesion: float):
     """Normal force of the adhesive contact of radius ``a``, eq. (10)."""
+    _finite(contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jkr_normal_force")
     return _rel("jkr_normal_force").numeric(contact_radius, params.R, params.E_star, work_of_adhesion)
 
 
 def normal_force(depth, contact_radius, contact: ContactLike):
     """Normal force of the springs in ``|x| < a`` at depth ``d`` (any, e.g. pinned ``a``), eq. (10)."""
+    _finite(depth=depth, contact_radius=contact_radius)
     params = paper_parameters(contact, "normal_force")
     return _rel("normal_force").numeric(depth, contact_radius, params.R, params.E_star)
 
 
 def hertz_contact_radius(depth, contact: ContactLike):
     """Non-adhesive contact radius ``a = sqrt(R d)``, eq. (16)."""
+    _finite(depth=depth)
     params = paper_parameters(contact, "hertz_contact_radius")
     return _rel("hertz_radius").numeric(np.maximum(depth, 0.0), params.R)
 
@@ -94,6 +109,7 @@ def jump_off(contact: ContactLike, work_of_adhesion: float) -> dict[str, float]:
 
     Returns ``contact_radius``, ``depth`` and ``normal_force`` (10) at the jump-off.
     """
+    _finite(work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jump_off")
     args = (params.R, params.E_star, work_of_adhesion)
     return {
@@ -105,12 +121,14 @@ def jump_off(contact: ContactLike, work_of_adhesion: float) -> dict[str, float]:
 
 def jump_in_radius(contact: ContactLike, work_of_adhesion: float) -> float:
     """Contact radius on first touch (``d = 0`` on the stable branch of (9))."""
+    _finite(work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jump_in_radius")
     return float(_rel("jump_in_radius").numeric(params.R, params.E_star, work_of_adhesion))
 
 
 def pull_off_force(contact: ContactLike, work_of_adhesion: float) -> float:
     """JKR pull-off force ``−(3/2) π Δγ R``: the minimum of (10) along the branch (9)."""
+    _finite(work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "pull_off_force")
     return float(_rel("pull_off_force").numeric(params.R, work_of_adhesion))
 
@@ -121,6 +139,7 @@ def jkr_contact_radius(depth, contact: ContactLike, work_of_adhesion: float):
     The stable branch is ``a >= a_jump-off`` (``∂d/∂a >= 0``). Depths below the
     jump-off depth have no contact: the result is ``nan`` there.
     """
+    _finite(depth=depth, work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jkr_contact_radius")
     depth_arr = np.asarray(depth, dtype=float)
     if work_of_adhesion == 0.0:
@@ -138,6 +157,7 @@ def jkr_contact_radius(depth, contact: ContactLike, work_of_adhesion: float):
 # tangential springs, eq. (13)
 def critical_shift(contact_radius, contact: ContactLike):
     """Critical spring shift ``ū(a) = π a τ0 / (2 G*)``, eq. (13)."""
+    _finite(contact_radius=contact_radius)
     params = paper_parameters(contact, "critical_shift")
     return _rel("critical_shift").numeric(contact_radius, params.tau0, params.G_star)
 
@@ -146,6 +166,7 @@ def fretting_dissipated_energy(contact_radius, amplitude, contact: ContactLike):
     """Energy dissipated per cycle ``x: −X → X → −X`` by a fixed contact of radius ``a`` (J): the area
     ``4 π a² τ0 (X − ū)`` of the parallelogram ``F_x = 2G* a (x − Y)``, ``Y`` clipped to
     ``[x − ū, x + ū]`` (plateaus ``±π a² τ0``, (13)); for ``X > ū`` (smaller loops stick and dissipate nothing)."""
+    _finite(contact_radius=contact_radius, amplitude=amplitude)
     params = paper_parameters(contact, "fretting_dissipated_energy")
     return _rel("fretting_dissipated_energy").numeric(contact_radius, amplitude, params.tau0, params.G_star)
 
