@@ -175,3 +175,31 @@ def test_a_sweep_names_an_empty_set_and_a_protocol_without_its_setup(grid, sched
     with pytest.raises(ValueError, match=re.escape(message)):
         me.sweep(grid, me.Contact.paper(), "A", 20.0, scheduler=scheduler)
     assert dask.config.get("scheduler", None) == before
+
+
+def test_a_contact_names_only_what_it_holds_and_reads_attributes_whole():
+    """C7: Contact.value('mu') of the τ0 law gave None; a stray friction_mu or profile_n was read silently."""
+    contact = me.Contact.paper()
+    with pytest.raises(ValueError, match="'mu' is not a value of this contact"):
+        contact.value("mu")
+    attrs = contact.to_attrs()
+    with pytest.raises(ValueError, match="friction_mu=0.3 beside the law 'tau0' is not allowed"):
+        me.Contact.from_attrs({**attrs, "friction_mu": 0.3})
+    with pytest.raises(ValueError, match="profile_n do not name one indenter"):
+        me.Contact.from_attrs({**attrs, "profile_n": 2.0})
+    with pytest.raises(ValueError, match="profile_c, profile_n, profile_radius do not name one indenter"):
+        me.Contact.from_attrs({**attrs, "profile_c": 1.0, "profile_n": 2.0, "profile_radius": 1e-3})
+    assert me.Contact.from_attrs(attrs) == contact
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: me.simulate(PAPER, me.Scenario("A", alpha=20.0)), "allowed: Contact.from_parameters(params) with the "
+                                                                "motion"),
+    (lambda: me.Discrete(dt=1.0, n_steps=10), "dt=1.0 and n_steps=10 are not allowed together"),
+    (lambda: me.Continuum(t=[0.0, 1.0], samples=5), "samples=5 are not allowed together"),
+])
+def test_the_messages_say_what_was_given(call, message):
+    """C8: a d_max and v the user never gave; 'give dt or n_steps, not both' without the values."""
+    with pytest.raises(ValueError) as raised:
+        call()
+    assert message in str(raised.value)

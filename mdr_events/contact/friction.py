@@ -113,6 +113,9 @@ class FrictionLaw:
     def from_attrs(cls, attrs) -> "FrictionLaw":
         """The law a result was computed with (:meth:`to_attrs`; ``friction_law`` absent: the paper's)."""
         law = str(attrs.get("friction_law", "tau0"))
+        if "friction_mu" in attrs and not FRICTION_LAWS.get(law, (0, 0))[1]:  # (its μ was dropped silently)
+            raise ValueError(f"the attribute friction_mu={shown(attrs['friction_mu'])} beside the law {law!r} is not "
+                             "allowed; allowed: friction_mu with friction_law 'coulomb' or 'tau0+coulomb'")
         mu = float(attrs["friction_mu"]) if FRICTION_LAWS.get(law, (0, 0))[1] else None
         tau0 = float(attrs["param_tau0"]) if FRICTION_LAWS.get(law, (0, 0))[0] else None
         return cls(law, mu=mu, tau0=tau0)

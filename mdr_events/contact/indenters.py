@@ -244,7 +244,15 @@ def profile_attrs(profile: Profile | None) -> dict[str, object]:
 
 def indenter_from_attrs(attrs) -> Indenter:
     """The indenter a result names (its ``to_attrs``): a power law, flat punch or table where ``profile_*`` says so,
-    else the paraboloid of ``param_R``."""
+    else the paraboloid of ``param_R``; the attributes of an indenter in part, or of two, are refused (a stray
+    ``profile_n`` beside ``param_R`` was read silently as the paraboloid)."""
+    groups = [group for group in (("profile_c", "profile_n"), ("profile_radius",),
+                                  ("profile_table_r", "profile_table_f")) if any(key in attrs for key in group)]
+    if len(groups) > 1 or (groups and not all(key in attrs for key in groups[0])):
+        found = [key for group in groups for key in group if key in attrs]
+        raise ValueError(f"the attributes {', '.join(found)} do not name one indenter; allowed: profile_c and "
+                         "profile_n, profile_radius, or profile_table_r and profile_table_f (or none: the paraboloid "
+                         "of param_R)")
     if "profile_c" in attrs:
         return PowerLaw(float(attrs["profile_c"]), float(attrs["profile_n"]))
     if "profile_radius" in attrs:

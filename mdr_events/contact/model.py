@@ -157,8 +157,10 @@ class Contact:
 
     # --- reading and changing values ------------------------------------------------------------------------------
     def value(self, name: str) -> float:
-        """The value of a dotted (``"friction.mu"``) or short (``"mu"``) name."""
+        """The value of a dotted (``"friction.mu"``) or short (``"mu"``) name of this contact (:meth:`names`)."""
         part, field = self._path(name)
+        if not self.holds(name):  # (a law's mu or tau0 that it does not use: None was returned)
+            raise ValueError(f"{name!r} is not a value of this contact; allowed: {', '.join(self.names())}")
         return getattr(getattr(self, part), field)
 
     def replace(self, **changes: float) -> "Contact":

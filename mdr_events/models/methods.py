@@ -69,7 +69,8 @@ class Discrete:
     def __post_init__(self) -> None:
         object.__setattr__(self, "dx", check_real("dx", self.dx, "a spacing > 0 (m)", lambda value: value > 0))
         if self.dt is not None and self.n_steps is not None:
-            raise ValueError("give dt or n_steps, not both")
+            raise ValueError(f"dt={shown(self.dt)} and n_steps={shown(self.n_steps)} are not allowed together; allowed: "
+                             "one of them (give dt or n_steps, not both)")
         if self.dt is not None:
             object.__setattr__(self, "dt", check_real("dt", self.dt, "a finite time step > 0 (s)",
                                                       lambda value: value > 0))
@@ -155,7 +156,8 @@ class Continuum:
         if not isinstance(self.tolerances, Tolerances):
             raise TypeError(f"tolerances={self.tolerances!r} is not allowed; allowed: a mdr_events.Tolerances")
         if self.samples is not None and self.t is not None:  # (t was used and samples ignored)
-            raise ValueError("give t or samples, not both")
+            raise ValueError(f"t={shown(self.t)} and samples={shown(self.samples)} are not allowed together; allowed: "
+                             "one of them (give t or samples, not both)")
         object.__setattr__(self, "samples", DEFAULT_SAMPLES if self.samples is None else
                            check_count("samples", self.samples, 2))
         if self.t is not None:

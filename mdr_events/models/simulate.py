@@ -20,7 +20,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.methods import METHODS, Continuum, Discrete, Method, as_method
-from mdr_events.models.motion import Motion, as_motion
+from mdr_events.models.motion import Motion, Paths, Scenario, as_motion
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 from mdr_events.theory.scales import check_representable
@@ -57,6 +57,10 @@ def model_job(contact, motion, alpha, options: dict[str, Any]) -> ModelJob:
     its attributes as they were (``param_R`` beside a profile). The one place the keywords are converted."""
     indenter, law = options.pop("profile", None), options.pop("friction", None)
     if isinstance(contact, Parameters):
+        if isinstance(motion, (Scenario, Paths)):  # (the Parameters' d_max and v were named as if given beside it)
+            raise ValueError(f"motion={motion!r} is not allowed beside a Parameters, whose d_max and v are a motion of "
+                             "its own; allowed: Contact.from_parameters(params) with the motion, or the scenario's name "
+                             "with alpha beside the Parameters")
         params, profile = contact, indenters.check_simulated_profile(indenter)
         friction = as_friction_law(law)
         return ModelJob(Contact.from_parameters(params, profile, friction), as_motion(motion, alpha, params.d_max,

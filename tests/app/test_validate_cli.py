@@ -210,7 +210,7 @@ A20 = ["--scenario", "A", "--alpha", "20"]
     (["run.csv", *A20, "--params", "nope.toml"], "--params nope.toml: no such parameters file"),
     (["run.csv", *A20, "--E", "-1"], "Parameters.E=-1.0 is not allowed"),
     # options
-    (["run.csv", *A20, "--tolerance", "0"], "--tolerance 0.0 is not allowed; allowed: a number > 0"),
+    (["run.csv", *A20, "--tolerance", "0"], "--tolerance 0.0 is not allowed; allowed: a number in (0, 1]"),
     (["run.csv", *A20, "--time-origin", "soon"],
      "--time-origin 'soon' is not allowed; allowed: first_contact, path_start"),
     (["run.csv", *A20, "--dx", "1e-6", "2e-6"], "--dx has 2 values and there are 1 runs"),

@@ -100,8 +100,9 @@ def job(args: argparse.Namespace) -> tuple[ValidateJob, str | None]:
     names = _options.pairs("--names", args.names, list(CANDIDATE_QUANTITIES))
     units = _options.pairs("--units", args.units, list(CANDIDATE_QUANTITIES))
     origin, limits = _options.time_origin(args.time_origin), _options.limits(args)
-    if not (math.isfinite(args.tolerance) and args.tolerance > 0):
-        raise UsageError(f"--tolerance {args.tolerance!r} is not allowed; allowed: a number > 0")
+    if not (math.isfinite(args.tolerance) and 0 < args.tolerance <= 1):
+        raise UsageError(f"--tolerance {args.tolerance!r} is not allowed; allowed: a number in (0, 1] (the largest "
+                         "error relative to the quantity's range)")
     found, note = spacings(args)  # a bad --dx is named before any run is read
     spec = ValidateJob(tuple(args.runs), tuple(Path(run) for run in args.runs), _stems(args, found is not None),
                        contact, motion, description, args.tolerance, names, units, origin, limits, provenance,
