@@ -203,3 +203,14 @@ def test_the_messages_say_what_was_given(call, message):
     with pytest.raises(ValueError) as raised:
         call()
     assert message in str(raised.value)
+
+
+@pytest.mark.parametrize("verb", ["validate", "fit"])
+def test_an_angle_given_twice_is_refused(verb, tmp_path, capsys):
+    """C8: two --alpha options: the last won silently."""
+    from mdr_events.app.cli import main
+    extra = ["--free", "E"] if verb == "fit" else []
+    assert main([verb, str(tmp_path / "run.csv"), "--scenario", "A", "--alpha", "20", "--alpha", "30", *extra,
+                 "--out", str(tmp_path / "out")]) == 2
+    error = capsys.readouterr().err.strip().splitlines()
+    assert len(error) == 1 and "--alpha: given twice (20.0 and 30.0)" in error[0]

@@ -26,6 +26,16 @@ class UsageError(Exception):
     """A user error: reported in one line, exit status 2."""
 
 
+class StoreOnce(argparse.Action):
+    """Store an option's value, refusing the option given twice (the last one silently won)."""
+
+    def __call__(self, parser, namespace, values, option_string=None) -> None:
+        if getattr(namespace, self.dest, None) is not None:
+            raise argparse.ArgumentError(self, f"given twice ({getattr(namespace, self.dest)!r} and {values!r}); "
+                                               "allowed: once (the one path the runs took)")
+        setattr(namespace, self.dest, values)
+
+
 class Parser(argparse.ArgumentParser):
     """An argument parser whose errors are one line (:class:`UsageError`) naming where the allowed options are."""
 
@@ -171,7 +181,8 @@ def measured_path_options(parser: argparse.ArgumentParser, what: str, start: boo
     motion.add_argument("--path", default=None, metavar="FILE",
                         help="a TOML file with a [path] table as in a study file: waypoints = [[x, d], ...] (m), "
                              "speed (m/s, default the parameters' v)")
-    parser.add_argument("--alpha", type=float, default=None, metavar="DEG", help="the scenario's angle in degrees")
+    parser.add_argument("--alpha", type=float, default=None, metavar="DEG", action=StoreOnce,
+                        help="the scenario's angle in degrees")
 
 
 def measured_motion(args: argparse.Namespace, params: Parameters, contact: Contact) -> tuple[Motion, str]:
