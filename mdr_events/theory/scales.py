@@ -48,8 +48,17 @@ def run_scales(params: Parameters, profile: Profile | None = None, friction: Fri
     """The scales of a run of ``params`` with ``profile`` and ``friction``: moduli, depth, the contact radius and
     normal force at ``d_max``, the critical shift ``ū`` and Coulomb's cap there, the full-slip force, the time to
     ``d_max`` and, with adhesion, the jump-off of the ``Δγ1`` branch."""
+    known: dict[str, object] = {}  # (each computed once: a sweep checks every value of its grid)
+
     def radius() -> float:  # (a table's reach is checked apart, with its own message: check_reach)
-        return float(branch_radius(_deepest_reached(params, profile), params, params.dgamma0, profile))
+        if "radius" not in known:
+            known["radius"] = float(branch_radius(_deepest_reached(params, profile), params, params.dgamma0, profile))
+        return known["radius"]
+
+    def jump(key: str) -> float:
+        if "jump" not in known:
+            known["jump"] = jump_off(params, params.dgamma1, profile)
+        return known["jump"][key]
 
     scales = [Scale("E*", params.E_star, "Pa"), Scale("G*", params.G_star, "Pa"), Scale("d_max", params.d_max, "m"),
               Scale("the time to d_max, d_max / v", params.d_max / params.v, "s"),
@@ -65,7 +74,7 @@ def run_scales(params: Parameters, profile: Profile | None = None, friction: Fri
     if params.dgamma1 > 0:
         for key, unit in (("contact_radius", "m"), ("depth", "m"), ("normal_force", "N")):
             scales.append(_scale(f"the jump-off's {key.replace('_', ' ')} on the Δγ1 branch", unit,
-                                 lambda key=key: jump_off(params, params.dgamma1, profile)[key]))
+                                 lambda key=key: jump(key)))
     return scales
 
 
