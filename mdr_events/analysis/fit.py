@@ -36,6 +36,7 @@ import numpy as np
 import xarray as xr
 from scipy import optimize
 
+from mdr_events.analysis.reports import check_content
 from mdr_events.analysis.fit_accuracy import register_fit_accuracy
 # (the fit's parts: every name of before is importable from here too)
 from mdr_events.analysis.fit_data import (FITTED_QUANTITIES, NOISE_FLOOR_SHARE, QUANTITY_SYMBOLS, QUANTITY_UNITS,
@@ -160,9 +161,7 @@ class FitResult:
         """The result of a fit's dataset (e.g. a file read by :func:`~mdr_events.open_result`; those written before
         the lists of notes and warnings too): its parameters from the attributes, the fitted offsets from the
         estimates (0 where not free); :attr:`optimizer` is ``None`` (its log is in no dataset)."""
-        if not isinstance(dataset, xr.Dataset) or dataset.attrs.get("content") != FIT_CONTENT:
-            found = dataset.attrs.get("content") if isinstance(dataset, xr.Dataset) else type(dataset).__name__
-            raise ValueError(f"dataset of {found!r} is not allowed; allowed: a fit ({FIT_CONTENT!r})")
+        check_content(dataset, FIT_CONTENT, "fit")
         names = [str(name) for name in dataset["parameter"].values]
         offset = {name: float(dataset["estimate"].sel(parameter=name)) if name in names else 0.0
                   for name in ("time_offset", "depth_offset")}

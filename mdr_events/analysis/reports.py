@@ -12,13 +12,13 @@ from __future__ import annotations
 import enum
 import math
 from dataclasses import dataclass
-from typing import Sequence
+from typing import ClassVar, Sequence
 
 import numpy as np
 import xarray as xr
 
 __all__ = ["Verdict", "ConvergenceVerdict", "ValidationReport", "ConvergenceReport", "validation_failures",
-           "LEFT_OUT_BOUND", "VALIDATION_CONTENT", "CONVERGENCE_STUDY_CONTENT"]
+           "LEFT_OUT_BOUND", "VALIDATION_CONTENT", "check_content", "CONVERGENCE_STUDY_CONTENT"]
 
 #: The ``content`` attribute of a validation's and of a convergence study's dataset.
 VALIDATION_CONTENT = "validation of a simulator against the exact continuum"
@@ -70,7 +70,9 @@ def validation_failures(quantities: Sequence[str], max_errors: Sequence[float], 
     return failures
 
 
-def _checked(dataset, content: str, kind: str) -> xr.Dataset:
+def check_content(dataset, content: str, kind: str) -> xr.Dataset:
+    """``dataset`` if it is a Dataset of ``content`` (its attribute); else ``ValueError`` naming what it is and the
+    ``kind`` of result allowed."""
     if not isinstance(dataset, xr.Dataset) or dataset.attrs.get("content") != content:
         found = dataset.attrs.get("content") if isinstance(dataset, xr.Dataset) else type(dataset).__name__
         raise ValueError(f"dataset of {found!r} is not allowed; allowed: a {kind} ({content!r})")
@@ -78,7 +80,27 @@ def _checked(dataset, content: str, kind: str) -> xr.Dataset:
 
 
 @dataclass(frozen=True)
-class ValidationReport:
+class _Report:
+    """A result held as its dataset (what is written and read), checked to be of its kind when made."""
+
+    CONTENT: ClassVar[str]
+    KIND: ClassVar[str]
+    dataset: xr.Dataset
+
+    def __post_init__(self) -> None:
+        check_content(self.dataset, self.CONTENT, self.KIND)
+
+    @classmethod
+    def from_dataset(cls, dataset: xr.Dataset):
+        """The report of a dataset of its kind (e.g. read by :func:`~mdr_events.open_result`)."""
+        return cls(dataset)
+
+    def to_dataset(self) -> xr.Dataset:
+        return self.dataset
+
+
+@dataclass(frozen=True)
+class ValidationReport(_Report):
     """A validation (:func:`~mdr_events.validate`): its dataset and what it concludes.
 
     Attributes
@@ -87,18 +109,8 @@ class ValidationReport:
         Everything: the samples side by side, the norms, the events, the attributes.
     """
 
-    dataset: xr.Dataset
-
-    def __post_init__(self) -> None:
-        _checked(self.dataset, VALIDATION_CONTENT, "validation")
-
-    @classmethod
-    def from_dataset(cls, dataset: xr.Dataset) -> "ValidationReport":
-        """The report of a validation's dataset (e.g. read by :func:`~mdr_events.open_result`)."""
-        return cls(dataset)
-
-    def to_dataset(self) -> xr.Dataset:
-        return self.dataset
+    CONTENT: ClassVar[str] = VALIDATION_CONTENT
+    KIND: ClassVar[str] = "validation"
 
     @property
     def verdict(self) -> Verdict:
@@ -124,7 +136,7 @@ class ValidationReport:
 
 
 @dataclass(frozen=True)
-class ConvergenceReport:
+class ConvergenceReport(_Report):
     """A convergence study (:func:`~mdr_events.convergence_study`): its dataset and its verdict.
 
     Attributes
@@ -133,17 +145,8 @@ class ConvergenceReport:
         Everything: per spacing the norms, the observed orders, the event errors.
     """
 
-    dataset: xr.Dataset
-
-    def __post_init__(self) -> None:
-        _checked(self.dataset, CONVERGENCE_STUDY_CONTENT, "convergence study")
-
-    @classmethod
-    def from_dataset(cls, dataset: xr.Dataset) -> "ConvergenceReport":
-        return cls(dataset)
-
-    def to_dataset(self) -> xr.Dataset:
-        return self.dataset
+    CONTENT: ClassVar[str] = CONVERGENCE_STUDY_CONTENT
+    KIND: ClassVar[str] = "convergence study"
 
     @property
     def verdict(self) -> ConvergenceVerdict:
