@@ -23,6 +23,7 @@ from mdr_events.models.methods import METHODS, Continuum, Discrete, Method, as_m
 from mdr_events.models.motion import Motion, Paths, Scenario, as_motion
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
+from mdr_events.theory.job import contact_alone
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import shown
 
@@ -66,13 +67,7 @@ def model_job(contact, motion, alpha, options: dict[str, Any]) -> ModelJob:
         return ModelJob(Contact.from_parameters(params, profile, friction), as_motion(motion, alpha, params.d_max,
                                                                                         params.v), params, profile,
                         friction)
-    if not isinstance(contact, Contact):
-        raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a "
-                        "mdr_events.Contact (e.g. Contact.paper()) or a mdr_events.Parameters")
-    for name, value in (("profile", indenter), ("friction", law)):
-        if value is not None:
-            raise ValueError(f"{name}={shown(value)} is not allowed beside a Contact; allowed: the contact's own "
-                             f"({'Contact.indenter' if name == 'profile' else 'Contact.friction'})")
+    contact = contact_alone(contact, indenter, law)
     motion = as_motion(motion, alpha)
     return ModelJob(contact, motion, contact.parameters(motion.d_max, motion.v),
                     indenters.check_simulated_profile(contact.profile), dataclasses.replace(contact.friction, tau0=None))

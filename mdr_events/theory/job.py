@@ -20,7 +20,7 @@ from mdr_events.contact.model import Contact
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V, Parameters
 from mdr_events.validation import check_real, shown
 
-__all__ = ["TheoryJob", "theory_job", "paper_parameters", "ContactLike"]
+__all__ = ["TheoryJob", "theory_job", "contact_alone", "paper_parameters", "ContactLike"]
 
 #: What the theory's public functions take as the physical model.
 ContactLike = Contact | Parameters
@@ -35,6 +35,20 @@ class TheoryJob(NamedTuple):
     profile: Profile | None
     #: the friction law, its ``τ0`` in ``params`` (the law of (13) by default)
     friction: FrictionLaw
+
+
+def contact_alone(contact: Any, profile: Any = None, friction: Any = None) -> Contact:
+    """``contact`` if it is a :class:`~mdr_events.Contact` with no ``profile`` or ``friction`` beside it (it holds its
+    own); else the error naming it (the check of every entry point's contact form, :func:`theory_job` and
+    :func:`mdr_events.models.simulate.model_job`)."""
+    if not isinstance(contact, Contact):
+        raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a "
+                        "mdr_events.Contact (e.g. Contact.paper()) or a mdr_events.Parameters")
+    for name, value, own in (("profile", profile, "Contact.indenter"), ("friction", friction, "Contact.friction")):
+        if value is not None:
+            raise ValueError(f"{name}={shown(value)} is not allowed beside a Contact; allowed: the contact's own "
+                             f"({own})")
+    return contact
 
 
 def theory_job(contact: Any, d_max: float | None = None, profile: Any = None, friction: Any = None) -> TheoryJob:
@@ -71,13 +85,7 @@ def theory_job(contact: Any, d_max: float | None = None, profile: Any = None, fr
             raise ValueError(f"d_max={shown(d_max)} is not allowed beside Parameters; allowed: None (its own "
                              f"d_max = {contact.d_max!r} m; Parameters.replace(d_max=...) changes it)")
         return TheoryJob(contact, profile, as_friction_law(friction))
-    if not isinstance(contact, Contact):
-        raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a "
-                        "mdr_events.Contact (e.g. Contact.paper()) or a mdr_events.Parameters")
-    for name, value, own in (("profile", profile, "Contact.indenter"), ("friction", friction, "Contact.friction")):
-        if value is not None:
-            raise ValueError(f"{name}={shown(value)} is not allowed beside a Contact; allowed: the contact's own "
-                             f"({own})")
+    contact = contact_alone(contact, profile, friction)
     depth = PAPER_D_MAX if d_max is None else check_real("d_max", d_max, "a finite number > 0 (m)",
                                                          lambda value: value > 0.0)
     return TheoryJob(contact.parameters(depth, PAPER_V), contact.profile,
