@@ -316,7 +316,8 @@ def test_an_integer_too_large_for_a_double_is_named_not_an_overflow(make):
     (lambda: me.simulate("p", "A", alpha=20), r"contact='p' \(str\) is not allowed; allowed: a mdr_events.Contact"),
     (lambda: me.phase_diagram("p"), r"contact='p' \(str\) is not allowed; allowed: a mdr_events.Contact \(e.g. "
                                     r"Contact.paper\(\)\) or a mdr_events.Parameters"),
-    (lambda: me.cross_check("p", "A", [20]), r"params='p' \(str\) is not allowed; allowed: a mdr_events.Parameters"),
+    (lambda: me.cross_check("p", "A", [20]), r"contact='p' \(str\) is not allowed; allowed: a mdr_events.Contact \(e.g. "
+                                                  r"Contact.paper\(\)\) or a mdr_events.Parameters"),
     (lambda: me.validate({"time": [0, 1], "normal_force": [0, 1]}, "p", "A", 20.0),
      r"contact='p' \(str\) is not allowed; allowed: a mdr_events.Contact")])
 def test_parameters_of_another_type_are_named(call, expected):

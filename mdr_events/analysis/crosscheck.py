@@ -26,11 +26,14 @@ import math
 import numpy as np
 import xarray as xr
 
+from mdr_events.contact import Contact
 from mdr_events.io.datasets import register_schema, stamp
-from mdr_events.models.motion import case_dimension
+from mdr_events.models.methods import Continuum, Discrete
+from mdr_events.models.motion import Scenario, case_dimension
 from mdr_events.models.simulate import simulate
-from mdr_events.parameters import Parameters, check_parameters
+from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic
+from mdr_events.theory.job import ContactLike, paper_parameters
 from mdr_events.validation import check_choice, validate_alpha
 
 __all__ = ["cross_check", "CROSS_CHECK_CONTENT", "CROSS_CHECK_VARIABLES"]
@@ -120,30 +123,35 @@ def _cross_check_dataset(angles: np.ndarray, values: dict[str, np.ndarray], scen
         "alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})})
 
 
-def cross_check(params: Parameters, scenario: str = "A", alpha=(10.0, 15.0, 20.0), dx: float = 2e-6,
-                n_steps: int = 10_000) -> xr.Dataset:
+def cross_check(contact: ContactLike, scenario: str = "A", alpha=(10.0, 15.0, 20.0), dx: float = 2e-6,
+                n_steps: int = 10_000, *, d_max: float | None = None) -> xr.Dataset:
     """Slip-onset depth from (18)/(21), the continuum and the discrete model, with differences and flags.
 
     Parameters
     ----------
-    params : Parameters
+    contact : Contact or Parameters
+        The paper's paraboloid (4) under its law (13), with adhesion (9): a :class:`~mdr_events.Contact`, or a
+        :class:`~mdr_events.Parameters` (the keywords of before, with its own ``d_max`` and ``v``).
     scenario : {"A", "B"}
         ``"A"``: the slip onset during indentation, eq. (18); ``"B"``: during pull-off, eq. (21).
     alpha : sequence of float
         Path angles in degrees.
     dx, n_steps : float, int
         The discrete model's spring spacing (m) and number of time steps.
+    d_max : float, optional
+        With a Contact: the turning depth of the scenario (m; default the paper's 0.3 mm).
 
     Returns
     -------
     xarray.Dataset
         The variables of :data:`CROSS_CHECK_VARIABLES` along ``alpha`` (see the module's docstring).
     """
-    check_parameters(params)
+    params = paper_parameters(contact, "cross_check", d_max)
     check_choice("scenario", scenario, analytic.SCENARIOS)
     angles = np.atleast_1d(validate_alpha(alpha))
-    continuum_ds = simulate(params, scenario, alpha=angles, method="continuum")
-    discrete_ds = simulate(params, scenario, alpha=angles, dx=dx, n_steps=n_steps)
+    model, motion = Contact.from_parameters(params), Scenario(scenario, tuple(angles), params.d_max, params.v)
+    continuum_ds = simulate(model, motion, method=Continuum())
+    discrete_ds = simulate(model, motion, method=Discrete(dx=dx, n_steps=n_steps))
     closed = np.atleast_1d(analytic.d_crit(angles, params, scenario, adhesion=True))
     continuum = _continuum_slip_onset(continuum_ds, scenario)
     discrete = _first_slip(discrete_ds, scenario, params)

@@ -63,7 +63,7 @@ from mdr_events.models.indenters import profile_attrs
 from mdr_events.models.methods import Continuum
 from mdr_events.models.motion import Scenario
 from mdr_events.models.paths import Path
-from mdr_events.models.simulate import ModelJob
+from mdr_events.models.job import ModelJob
 from mdr_events.parameters import PARAMETER_UNITS, Parameters
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_callback, shown

@@ -42,7 +42,8 @@ from mdr_events.models import indenters
 from mdr_events.contact.friction import friction_attrs
 from mdr_events.models.methods import DEFAULT_STEPS, Continuum, Discrete, Method, as_method
 from mdr_events.models.motion import FIGURE_ANGLES, Motion, Paths, Scenario
-from mdr_events.models.simulate import ModelJob, model_job
+from mdr_events.models.job import ModelJob
+from mdr_events.models.simulate import model_job
 from mdr_events.parameters import Parameters
 from mdr_events.validation import check_choice, check_count, check_flag, check_real, shown
 

@@ -142,6 +142,6 @@ def check_runs(spec: SweepSpec, grid: Grid) -> None:
         try:
             model, method = spec.job(row)
             check_representable(model.params, model.profile, model.friction)  # (E = 1e300 was a failed run)
-            method.check_model(model.params, model.profile, model.friction)
+            method.check_model(model)
         except (ValueError, TypeError) as error:
             raise ValueError(f"grid: {error}") from None

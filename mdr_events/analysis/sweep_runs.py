@@ -27,7 +27,8 @@ from mdr_events.models.continuum.solution import scan_spans
 from mdr_events.models.methods import Continuum, Discrete, Method
 from mdr_events.models.motion import Motion, Paths
 from mdr_events.models.paths import Path
-from mdr_events.models.simulate import ModelJob, model_job, simulate
+from mdr_events.models.job import ModelJob
+from mdr_events.models.simulate import model_job, simulate
 
 __all__ = ["SweepSpec", "run_chunk", "ChunkResult", "QUANTITIES", "HISTORY_QUANTITIES", "CLOSED_FORM_QUANTITIES",
            "MOTION_NAMES", "METHOD_NAMES", "METHOD_QUANTITIES", "DISCRETE_STEP_PER_SPACING", "ERROR_CHARACTERS"]

@@ -31,7 +31,8 @@ from mdr_events.contact import Contact
 from mdr_events.models.indenters import SimulatedProfile, profile_attrs
 from mdr_events.models.methods import Continuum
 from mdr_events.models.motion import Paths
-from mdr_events.models.simulate import ModelJob, model_job
+from mdr_events.models.job import ModelJob
+from mdr_events.models.simulate import model_job
 from mdr_events.models.paths import Path
 from mdr_events.models.motion import check_path_representable
 from mdr_events.parameters import Parameters

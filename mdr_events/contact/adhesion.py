@@ -3,7 +3,12 @@
 The paper's law is rate independent with a hysteresis: springs attach on the way in as Heß's rule with the work
 of adhesion ``Δγ0`` says, and let go on the way out as it says with ``Δγ1`` (>= or < ``Δγ0``); ``Δγ0 = Δγ1 = 0``
 is the non-adhesive (Hertz) contact. A law that depends on the edge's speed goes beside :class:`Adhesion` here,
-with the same methods.
+with the same methods; each method registers the law's kernel by its type (the continuum's edge rule in
+:mod:`mdr_events.models.continuum.edges`, the springs' thresholds in :mod:`mdr_events.models.discrete`).
+
+The flat record :class:`~mdr_events.Parameters` holds a law's works at rest (``dgamma0``, ``dgamma1``): what sizes
+a run (the springs it needs, the depth a scenario comes out to) is computed from them, and a kernel given a law
+checks that it is the one of its parameters (:func:`law_of`).
 """
 
 from __future__ import annotations
@@ -11,9 +16,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from mdr_events.validation import check_real
+from mdr_events.validation import check_real, shown
 
-__all__ = ["Adhesion", "NO_ADHESION"]
+__all__ = ["Adhesion", "NO_ADHESION", "AdhesionLaw", "law_of"]
 
 
 @dataclass(frozen=True)
@@ -37,6 +42,11 @@ class Adhesion:
                                                       "a finite number >= 0 (J m-2)", lambda value: value >= 0.0))
 
     @property
+    def works_at_rest(self) -> tuple[float, float]:
+        """``(Δγ0, Δγ1)``: the works of adhesion of an edge at rest, which :class:`~mdr_events.Parameters` holds."""
+        return (self.dgamma0, self.dgamma1)
+
+    @property
     def is_adhesive(self) -> bool:
         """Whether either work of adhesion is positive (else the contact is Hertz's)."""
         return self.dgamma0 > 0.0 or self.dgamma1 > 0.0
@@ -54,3 +64,29 @@ class Adhesion:
 
 #: No adhesion: Hertz's contact.
 NO_ADHESION = Adhesion()
+
+#: An adhesion law (today the paper's; a rate-dependent law joins this union).
+AdhesionLaw = Adhesion
+
+
+def law_of(params: Any, adhesion: AdhesionLaw | None = None) -> AdhesionLaw:
+    """The adhesion law a kernel runs: ``adhesion``, whose works at rest must be those of ``params`` (the flat record
+    the kernel sizes the run with), or without it the paper's law of ``params.dgamma0`` and ``params.dgamma1``.
+
+    Raises
+    ------
+    TypeError
+        ``adhesion`` that is not an adhesion law.
+    ValueError
+        A law whose works at rest differ from the parameters' (naming both).
+    """
+    if adhesion is None:
+        return Adhesion(params.dgamma0, params.dgamma1)
+    if not isinstance(adhesion, AdhesionLaw):
+        raise TypeError(f"adhesion={shown(adhesion)} ({type(adhesion).__name__}) is not allowed; allowed: None (the "
+                        "law of the parameters' dgamma0 and dgamma1) or an Adhesion")
+    if adhesion.works_at_rest != (params.dgamma0, params.dgamma1):
+        raise ValueError(f"adhesion={adhesion!r} is not allowed with dgamma0={params.dgamma0!r}, "
+                         f"dgamma1={params.dgamma1!r} J/m²; allowed: a law whose works at rest are the parameters' "
+                         "(Contact.parameters gives them)")
+    return adhesion

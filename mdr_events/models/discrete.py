@@ -61,7 +61,7 @@ import numpy as np
 from mdr_events.io.agreement import ROUND_OFF
 from mdr_events.theory import analytic
 from mdr_events.limits import DEFAULT_LIMITS, Limits
-from mdr_events.validation import check_real
+from mdr_events.validation import check_real, shown
 
 from mdr_events.theory import symbolic
 from mdr_events.parameters import Parameters
@@ -70,10 +70,12 @@ from mdr_events.models.spring_groups import SpringGroups, scale_bits, scaled, un
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.contact.indenters import PowerLaw
-from mdr_events.contact.friction import TAU0, FrictionLaw, as_friction_law
+from mdr_events.contact.adhesion import Adhesion, AdhesionLaw, law_of
+from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.theory import mindlin
 
-__all__ = ["run_discrete", "paraboloid_profile", "MIN_SPRINGS_IN_CONTACT"]
+__all__ = ["run_discrete", "paraboloid_profile", "MIN_SPRINGS_IN_CONTACT", "Thresholds", "THRESHOLD_RULES",
+           "spring_thresholds", "check_thresholds_known"]
 
 #: Fewer springs than this per side at ``d_max`` is too coarse (an error).
 MIN_SPRINGS_IN_CONTACT = 10
@@ -122,12 +124,42 @@ class _Threshold:
         return np.where(holds, m, inner)
 
 
-def _spring_count(params: Parameters, dx: float, max_depth: float, profile) -> int:
+class Thresholds(NamedTuple):
+    """The springs' thresholds of an adhesion law: attaching on the way in, letting go on the way out."""
+
+    attach: _Threshold
+    detach: _Threshold
+
+
+def hysteresis_thresholds(adhesion: Adhesion, g: np.ndarray, positions: np.ndarray, params: Parameters) -> Thresholds:
+    """The paper's rate-independent law: Heß's limit (8) with ``Δγ0`` to attach and ``Δγ1`` to let go."""
+    return Thresholds(_Threshold(g, positions, params, adhesion.dgamma0),
+                      _Threshold(g, positions, params, adhesion.dgamma1))
+
+
+#: The springs' thresholds of each adhesion law, by its type.
+THRESHOLD_RULES: dict[type, Callable[..., Thresholds]] = {Adhesion: hysteresis_thresholds}
+
+
+def check_thresholds_known(adhesion: AdhesionLaw) -> None:
+    """Refuse an adhesion law without thresholds in :data:`THRESHOLD_RULES`, naming those with them."""
+    if type(adhesion) not in THRESHOLD_RULES:
+        raise TypeError(f"adhesion={shown(adhesion)} ({type(adhesion).__name__}) is not allowed in the discrete "
+                        f"method; allowed: {', '.join(kind.__name__ for kind in THRESHOLD_RULES)}")
+
+
+def spring_thresholds(adhesion: AdhesionLaw, g: np.ndarray, positions: np.ndarray, params: Parameters) -> Thresholds:
+    """The thresholds of ``adhesion`` for springs at ``positions`` on the profile ``g`` of ``params``' material."""
+    check_thresholds_known(adhesion)
+    return THRESHOLD_RULES[type(adhesion)](adhesion, g, positions, params)
+
+
+def _spring_count(params: Parameters, dx: float, max_depth: float, profile, adhesion: AdhesionLaw) -> int:
     """Springs per side needed to hold the largest contact of the path, with margin."""
     count = 64
     while True:
         positions = (np.arange(count) + 0.5) * dx
-        attach = _Threshold(profile(positions), positions, params, params.dgamma0)
+        attach = spring_thresholds(adhesion, profile(positions), positions, params).attach
         needed = int(attach.count(np.array([max_depth]))[0])
         if needed < count - 1:
             return needed + 2
@@ -317,7 +349,7 @@ class _Setup(NamedTuple):
 
 
 def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
-             profile: Callable[[np.ndarray], np.ndarray], friction: FrictionLaw = TAU0) -> _Setup:
+             profile: Callable[[np.ndarray], np.ndarray], friction: FrictionLaw, adhesion: AdhesionLaw) -> _Setup:
     """The time grid, every case's samples and the springs of :func:`run_discrete`."""
     starts, durations, n_time = _time_grid_size(paths, dt)
     # the last entry into the elastomer, in time from first contact (0 for a path with one entry)
@@ -329,12 +361,11 @@ def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
     x_path, d_path = positions
     last_sample = np.minimum(np.floor(durations / dt + 0.5).astype(np.int64), n_time - 1)
 
-    n_springs = _spring_count(params, dx, max(path.max_depth for path in paths), profile)
+    n_springs = _spring_count(params, dx, max(path.max_depth for path in paths), profile, adhesion)
     xi = (np.arange(n_springs) + 0.5) * dx
     g = profile(xi)
     g_prefix = np.concatenate([[0.0], np.cumsum(g)])
-    attach = _Threshold(g, xi, params, params.dgamma0)
-    detach = _Threshold(g, xi, params, params.dgamma1)
+    attach, detach = spring_thresholds(adhesion, g, xi, params)
     # ū is linear in a (13); a law without τ0's part has none
     shift_per_radius = float(analytic.critical_shift(1.0, params)) if friction.uses_tau0 else 0.0
     caps = (shift_per_radius * dx) * np.arange(n_springs + 1)  # ū(m Δx) for m springs per side
@@ -377,6 +408,7 @@ def run_discrete(
     profile: PowerLaw | Callable[[np.ndarray], np.ndarray] | None = None,
     limits: Limits = DEFAULT_LIMITS,
     friction: FrictionLaw | str | None = None,
+    adhesion: AdhesionLaw | None = None,
 ) -> dict[str, np.ndarray]:
     """Run the spring model for several paths on a common time grid.
 
@@ -399,6 +431,9 @@ def run_discrete(
         The cap on the springs' shifts (:mod:`mdr_events.contact.friction`); default the paper's ``"tau0"``. A law with
         Coulomb's part gives every spring its own cap and is stepped spring by spring
         (:func:`_run_case_per_spring`).
+    adhesion : Adhesion, optional
+        The adhesion law, whose thresholds the springs follow (:data:`THRESHOLD_RULES`); default the paper's law of
+        ``params.dgamma0`` and ``params.dgamma1`` (:func:`~mdr_events.contact.adhesion.law_of`).
 
     Returns
     -------
@@ -410,12 +445,13 @@ def run_discrete(
         ``contact_radius``, ``sliding_fraction``, ``springs_in_contact``.
     """
     indenter = indenters.check_simulated_profile(profile) if not callable(profile) else None
-    friction = as_friction_law(friction)
+    friction, adhesion = as_friction_law(friction), law_of(params, adhesion)
+    check_thresholds_known(adhesion)
     for index, path in enumerate(paths):
         indenters.check_reach(params, path.max_depth, indenter, f"path {index}")
     check_discrete_size(params, paths, dx, dt, limits, indenter)
     run = _prepare(params, paths, dx, dt, profile if callable(profile) else indenters.spring_profile(params, indenter),
-                   friction)
+                   friction, adhesion)
     step_case = _run_case_per_spring if run.grid.coulomb > 0.0 else _run_case
     time, x_path, d_path, last_sample = run.time, run.x, run.d, run.last_sample.copy()
     n_cases, n_time = len(paths), time.size

@@ -10,7 +10,7 @@ name               class                                   options
 As ``solve_ivp`` maps a method's name to a class and forwards its options, :func:`as_method` makes the class of a
 name with the options given beside it; each class checks its own options when made, so that no option is checked
 against another method's. A new method is one class here with its options as fields, ``check_model``,
-``simulate`` and its entry in :data:`METHODS`.
+``simulate`` (both take the :class:`~mdr_events.models.job.ModelJob`) and its entry in :data:`METHODS`.
 """
 
 from __future__ import annotations
@@ -22,19 +22,19 @@ from typing import Any, ClassVar, Mapping
 import numpy as np
 import xarray as xr
 
-from mdr_events.contact.friction import TAU0, FrictionLaw, friction_attrs
+from mdr_events.contact.friction import friction_attrs
 from mdr_events.limits import Limits
 from mdr_events.models import indenters
 from mdr_events.models.continuum import Tolerances, run_continuum
 from mdr_events.models.continuum.caps import check_supported
+from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.extrema import solution_extrema
-from mdr_events.models.discrete import check_spacing, run_discrete
-from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.discrete import check_spacing, check_thresholds_known, run_discrete
+from mdr_events.models.job import ModelJob
 from mdr_events.models.motion import Cases
 from mdr_events.models.paths import Path
 from mdr_events.models.simulation_schema import (SIMULATION_CONTENT, coordinates_last, event_log, extrema_dataset,
                                                  simulation_dataset)
-from mdr_events.parameters import Parameters
 from mdr_events.validation import check_count, check_real, real_array, shown
 
 __all__ = ["Discrete", "Continuum", "Method", "METHODS", "as_method", "check_time_step", "DEFAULT_DX",
@@ -77,13 +77,16 @@ class Discrete:
         if self.n_steps is not None:
             object.__setattr__(self, "n_steps", check_count("n_steps", self.n_steps, 10))
 
-    def check_model(self, params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> None:
-        """Nothing to refuse: the springs take every indenter, friction law and adhesion."""
+    def check_model(self, model: ModelJob) -> None:
+        """Refuse an adhesion law the springs have no thresholds for (:func:`~mdr_events.models.discrete.
+        spring_thresholds`); they take every indenter and friction law."""
+        check_thresholds_known(model.adhesion)
 
-    def simulate(self, params: Parameters, cases: Cases, scenario: str, limits: Limits,
-                 profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> xr.Dataset:
+    def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Run the cases with the springs; the dataset of :mod:`~mdr_events.models.simulation_schema` with the
         attributes ``dx``, ``dt`` and ``spring_count_per_side``."""
+        self.check_model(model)
+        params, profile, friction = model.params, model.profile, model.friction
         paths = cases.paths
         for path in paths:
             path.first_contact_time()  # a path that never touches the surface is an error first
@@ -91,8 +94,9 @@ class Discrete:
                            profile=profile)
         step = self._time_step(paths)
         check_time_step(paths, step, self.dt, self.n_steps)
-        raw = run_discrete(params, paths, dx, step, profile=profile, limits=limits, friction=friction)
-        attrs = dict(method=self.name, scenario=scenario, dx=float(dx), dt=step,
+        raw = run_discrete(params, paths, dx, step, profile=profile, limits=limits, friction=friction,
+                           adhesion=model.adhesion)
+        attrs = dict(method=self.name, scenario=model.scenario, dx=float(dx), dt=step,
                      spring_count_per_side=int(raw["spring_count"]), content=SIMULATION_CONTENT,
                      **indenters.profile_attrs(profile), **friction_attrs(friction))
         return simulation_dataset(params, cases, raw["time"], raw, **attrs)
@@ -177,20 +181,22 @@ class Continuum:
 
     __hash__ = None
 
-    def check_model(self, params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> None:
+    def check_model(self, model: ModelJob) -> None:
         """Refuse what the continuum does not take (:func:`~mdr_events.models.continuum.caps.check_supported`:
-        Coulomb's part with adhesion)."""
-        check_supported(friction, params, profile)
+        Coulomb's part with adhesion; :func:`~mdr_events.models.continuum.edges.check_edge_known`: an adhesion law
+        without an edge rule)."""
+        check_edge_known(model.adhesion)
+        check_supported(model.friction, model.params, model.profile)
 
-    def simulate(self, params: Parameters, cases: Cases, scenario: str, limits: Limits,
-                 profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> xr.Dataset:
+    def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Solve the cases exactly; the dataset of :mod:`~mdr_events.models.simulation_schema` with the event log,
         the extrema and the attributes ``rtol``, ``atol`` and ``radius_rtol``."""
-        self.check_model(params, profile, friction)
+        self.check_model(model)
+        params, profile, friction = model.params, model.profile, model.friction
         tolerances = self.tolerances
         raw = run_continuum(params, cases.paths, self.t, samples=self.samples, tolerances=tolerances, limits=limits,
-                            profile=profile, friction=friction)
-        attrs = dict(method=self.name, scenario=scenario,
+                            profile=profile, friction=friction, adhesion=model.adhesion)
+        attrs = dict(method=self.name, scenario=model.scenario,
                      rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
                      content=SIMULATION_CONTENT, **indenters.profile_attrs(profile), **friction_attrs(friction))
         dataset = simulation_dataset(params, cases, raw["time"], raw, **attrs)

@@ -15,10 +15,10 @@ from typing import Any, Mapping, NamedTuple, Sequence
 import xarray as xr
 
 from mdr_events.contact import Contact
-from mdr_events.contact.friction import FrictionLaw, as_friction_law
+from mdr_events.contact.friction import as_friction_law
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models import indenters
-from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.job import ModelJob
 from mdr_events.models.methods import METHODS, Continuum, Discrete, Method, as_method
 from mdr_events.models.motion import Motion, Paths, Scenario, as_motion
 from mdr_events.models.paths import Path
@@ -30,18 +30,7 @@ from mdr_events.validation import shown
 #: The method of simulate unless given: the paper's springs.
 DEFAULT_METHOD = "discrete"
 
-__all__ = ["simulate", "simulation_job", "SimulationJob", "model_job", "ModelJob", "METHODS"]
-
-
-class ModelJob(NamedTuple):
-    """A contact along a motion, and the flat keywords the layers below take (``params`` with the motion's ``d_max``
-    and ``v``, ``profile``, the friction law without ``τ0``, which ``params`` holds)."""
-
-    contact: Contact
-    motion: Motion
-    params: Parameters
-    profile: SimulatedProfile
-    friction: FrictionLaw
+__all__ = ["simulate", "simulation_job", "SimulationJob", "model_job", "METHODS"]
 
 
 class SimulationJob(NamedTuple):
@@ -153,5 +142,4 @@ def simulate(
         raise TypeError(f"limits={shown(limits)} is not allowed; allowed: a mdr_events.Limits")
     check_representable(model.params, model.profile, model.friction)
     cases = model.motion.cases(model.params, model.profile, model.friction)
-    return method.simulate(model.params, cases, model.motion.to_attrs()["scenario"], limits, model.profile,
-                           model.friction)
+    return method.simulate(model, cases, limits)

@@ -11,6 +11,7 @@ from typing import NamedTuple
 import xarray as xr
 
 from mdr_events.analysis.crosscheck import CROSS_CHECK_CONTENT, cross_check
+from mdr_events.contact import Contact
 from mdr_events.parameters import Parameters
 from mdr_events.reproduction.common import FIGURE_ANGLES, FIGURE_DX, FIGURE_STEPS, jobs
 from mdr_events.reproduction.markdown import markdown_table
@@ -116,7 +117,7 @@ def cross_check_lines(cross_checks: dict[tuple[str, str], xr.Dataset]) -> list[s
 
 
 def _compute(radius: float, scenario: str) -> xr.Dataset:
-    return cross_check(Parameters.paper(R=radius), scenario, FIGURE_ANGLES, dx=FIGURE_DX, n_steps=FIGURE_STEPS)
+    return cross_check(Contact.paper(R=radius), scenario, FIGURE_ANGLES, dx=FIGURE_DX, n_steps=FIGURE_STEPS)
 
 
 CROSS_CHECK = Section(

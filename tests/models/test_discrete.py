@@ -424,6 +424,8 @@ def test_re_entry_in_the_step_the_contact_comes_apart_goes_on(paper):
 # The stepping kernel: exact running sums, the rules stepped spring by spring, batches
 
 from mdr_events.models import discrete, spring_groups  # noqa: E402  (the kernel's internals)
+from mdr_events.contact.adhesion import law_of  # noqa: E402
+from mdr_events.contact.friction import TAU0  # noqa: E402
 
 #: Spring spacing of the long runs: about 155 springs per side at d_max.
 LONG_DX = 20e-6
@@ -458,7 +460,7 @@ def step_case(kernel, run, case=0, springs=None):
 
 def prepare(p, paths, dx, steps):
     longest = max(path.duration - path.first_contact_time() for path in paths)
-    return discrete._prepare(p, paths, dx, longest / steps, discrete.paraboloid_profile(p))
+    return discrete._prepare(p, paths, dx, longest / steps, discrete.paraboloid_profile(p), TAU0, law_of(p))
 
 
 def test_running_sums_equal_a_full_re_sum_after_a_million_steps(paper):
@@ -469,7 +471,7 @@ def test_running_sums_equal_a_full_re_sum_after_a_million_steps(paper):
     path = reciprocating_path(paper, 200)
     dt = (path.duration - path.first_contact_time()) / 1_000_000
     raw = run_discrete(paper, [path], LONG_DX, dt)
-    run = discrete._prepare(paper, [path], LONG_DX, dt, discrete.paraboloid_profile(paper))
+    run = discrete._prepare(paper, [path], LONG_DX, dt, discrete.paraboloid_profile(paper), TAU0, law_of(paper))
     springs = spring_groups.SpringGroups()
     last, counts, sums, sliding = step_case(discrete._run_case, run, springs=springs)
     assert last == 1_000_000 == raw["time"].size - 1

@@ -11,6 +11,7 @@ module                     one idea
 :mod:`.state`              regimes, caps, slip summaries, events, the zone table, the loop's state
 :mod:`.tolerances`         the user's :class:`Tolerances` and the named fixed ones
 :mod:`.branch`             one adhesive branch (9): depth ↔ radius, slope, integral
+:mod:`.edges`              the edge of each adhesion law: the branches a radius grows and shrinks along
 :mod:`.anchors`            the stored anchors ``Y(ξ)``: zone sizes, the play operator's clip, the force
 :mod:`.zones`              one cap's slip zone laid out at a span's start, continued smoothly
 :mod:`.model`              the two branches and the cap ``ū = K a``; the path as linear segments

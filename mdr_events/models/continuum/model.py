@@ -13,7 +13,9 @@ from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, TabulatedProfile
 from mdr_events.models.paths import Path
-from .branch import Branch, make_branch
+from mdr_events.contact.adhesion import AdhesionLaw, law_of
+from .branch import Branch
+from .edges import edge_of
 from .caps import caps_of, check_supported
 from .state import Regime
 from .tolerances import NEGLIGIBLE_SHARE, PIECE_SHARE, SEGMENT_RESOLUTION, Tolerances
@@ -24,8 +26,11 @@ class ContinuumModel:
 
     Attributes
     ----------
+    adhesion : Adhesion
+        The adhesion law (:func:`~mdr_events.contact.adhesion.law_of`: the paper's law of ``params`` by default).
     grow, shrink : Branch
-        The ``Δγ0`` (attach) and ``Δγ1`` (detach) branches of (9).
+        The branches its edge follows (:func:`~.edges.edge_of`): for the paper's law the ``Δγ0`` (attach) and
+        ``Δγ1`` (detach) branches of (9).
     profile : PowerLaw, FlatPunch or None
         The indenter (``None``: the paper's paraboloid of ``params.R``).
     friction : FrictionLaw
@@ -37,14 +42,14 @@ class ContinuumModel:
     """
 
     def __init__(self, params: Parameters, tolerances: Tolerances, profile: PowerLaw | FlatPunch | None = None,
-                 friction: FrictionLaw = TAU0):
+                 friction: FrictionLaw = TAU0, adhesion: AdhesionLaw | None = None):
         check_supported(friction, params, profile)
         self.params = params
         self.tolerances = tolerances
         self.profile = profile
         self.friction = friction
-        self.grow = make_branch(params, params.dgamma0, profile)
-        self.shrink = make_branch(params, params.dgamma1, profile)
+        self.adhesion = law_of(params, adhesion)
+        self.grow, self.shrink = edge_of(self.adhesion, params, profile)
         self.caps = caps_of(friction, params)
         self.K = self.caps.K
 

@@ -128,7 +128,7 @@ def _plan_outward(model: ContinuumModel, state: ContactState, segment: Segment) 
         return SpanPlan(Action.CONTACT, Regime.PINNED, t, t_end,
                         _end_kind(t_end, segment, EventKind.DETACHMENT_STARTS), a, force)
     t_end = min(segment.t1, segment.time_at_depth(model.shrink.jump_off_depth))
-    ending = EventKind.PULL_OFF if model.params.dgamma1 > 0 else EventKind.CONTACT_ENDS
+    ending = EventKind.PULL_OFF if model.shrink.work > 0 else EventKind.CONTACT_ENDS
     # the radius leaves the pinned or growing state at once (Δγ1 <= Δγ0)
     entry = () if state.detaching else (EventKind.DETACHMENT_STARTS,)
     on_branch = model.shrink.radius(d, model.tolerances.radius_rtol)

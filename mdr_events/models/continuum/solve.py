@@ -16,6 +16,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from mdr_events.models.indenters import SimulatedProfile, check_reach, check_simulated_profile
+from mdr_events.contact.adhesion import AdhesionLaw
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from .anchors import AnchorMap, Piece
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
@@ -29,16 +30,17 @@ from .zones import lay_out_zones
 
 def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Tolerances(),
                limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
-               friction: FrictionLaw | str | None = None) -> PathSolution:
+               friction: FrictionLaw | str | None = None, adhesion: AdhesionLaw | None = None) -> PathSolution:
     """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`) for the indenter
-    ``profile`` (``None``: the paper's paraboloid of ``params.R``) and the friction law ``friction`` (``None``:
-    the paper's ``"tau0"``; Coulomb's part needs a contact without adhesion); a path with more waypoints than
+    ``profile`` (``None``: the paper's paraboloid of ``params.R``), the friction law ``friction`` (``None``:
+    the paper's ``"tau0"``; Coulomb's part needs a contact without adhesion) and the adhesion law ``adhesion``
+    (``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``); a path with more waypoints than
     ``limits.waypoints`` is refused before the work starts."""
     limits.check(f"the continuum run of a path with {len(path.waypoints)} waypoints",
                  waypoints=len(path.waypoints))
     profile = check_simulated_profile(profile)
     check_reach(params, path.max_depth, profile, "the path")
-    model = ContinuumModel(params, tolerances, profile, as_friction_law(friction))
+    model = ContinuumModel(params, tolerances, profile, as_friction_law(friction), adhesion)
     segments = kinematics(path)
     check_resolvable(model, path, segments)
     solution = PathSolution(model, t_contact=path.first_contact_time(), path=path)
@@ -241,8 +243,9 @@ BYTES_PER_SAMPLE = 128
 def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | None = None,
                   samples: int = 2001, tolerances: Tolerances = Tolerances(),
                   limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
-                  friction: FrictionLaw | str | None = None) -> dict:
-    """Solve every path and fill a common time grid (default: ``samples`` points to the longest run).
+                  friction: FrictionLaw | str | None = None, adhesion: AdhesionLaw | None = None) -> dict:
+    """Solve every path (:func:`solve_path`) and fill a common time grid (default: ``samples`` points to the longest
+    run).
 
     Returns the arrays of :func:`evaluate` stacked to (n_cases, n_time), ``time``, the event
     log ``events`` (one list of :class:`Event` per case) and the ``solutions`` (one
@@ -251,7 +254,7 @@ def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | Non
     n_time = samples if times is None else len(times)
     limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
                  memory=n_time * len(paths) * BYTES_PER_SAMPLE)
-    solutions = [solve_path(params, path, tolerances, limits, profile, friction) for path in paths]
+    solutions = [solve_path(params, path, tolerances, limits, profile, friction, adhesion) for path in paths]
     if times is None:
         longest = max(solution.end_time for solution in solutions)
         times = np.linspace(0.0, longest * (1.0 + 1.0 / samples), samples)
