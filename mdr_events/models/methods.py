@@ -194,8 +194,8 @@ class Continuum:
         self.check_model(model)
         params, profile, friction = model.params, model.profile, model.friction
         tolerances = self.tolerances
-        raw = run_continuum(params, cases.paths, self.t, samples=self.samples, tolerances=tolerances, limits=limits,
-                            profile=profile, friction=friction, adhesion=model.adhesion)
+        raw = run_continuum(params, cases.paths, self.samples if self.t is None else self.t, tolerances, limits,
+                            profile, friction, model.adhesion)
         attrs = dict(method=self.name, scenario=model.scenario,
                      rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
                      content=SIMULATION_CONTENT, **indenters.profile_attrs(profile), **friction_attrs(friction))

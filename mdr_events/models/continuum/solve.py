@@ -240,22 +240,23 @@ def end_contact(state: ContactState) -> None:
 BYTES_PER_SAMPLE = 128
 
 
-def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | None = None,
-                  samples: int = 2001, tolerances: Tolerances = Tolerances(),
-                  limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
-                  friction: FrictionLaw | str | None = None, adhesion: AdhesionLaw | None = None) -> dict:
-    """Solve every path (:func:`solve_path`) and fill a common time grid (default: ``samples`` points to the longest
-    run).
+def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | int = 2001,
+                  tolerances: Tolerances = Tolerances(), limits: Limits = DEFAULT_LIMITS,
+                  profile: SimulatedProfile = None, friction: FrictionLaw | str | None = None,
+                  adhesion: AdhesionLaw | None = None) -> dict:
+    """Solve every path (:func:`solve_path`) and fill a common time grid: the output ``times``, or as many samples
+    as ``times`` says spread to the longest run.
 
     Returns the arrays of :func:`evaluate` stacked to (n_cases, n_time), ``time``, the event
     log ``events`` (one list of :class:`Event` per case) and the ``solutions`` (one
     :class:`PathSolution` per case). The output's size is checked against ``limits`` first.
     """
-    n_time = samples if times is None else len(times)
+    samples = times if isinstance(times, int) else None
+    n_time = samples if samples is not None else len(times)
     limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
                  memory=n_time * len(paths) * BYTES_PER_SAMPLE)
     solutions = [solve_path(params, path, tolerances, limits, profile, friction, adhesion) for path in paths]
-    if times is None:
+    if samples is not None:
         longest = max(solution.end_time for solution in solutions)
         times = np.linspace(0.0, longest * (1.0 + 1.0 / samples), samples)
     times = np.asarray(times, dtype=float)
