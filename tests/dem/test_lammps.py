@@ -210,3 +210,26 @@ def test_the_cli_refuses_a_tangential_model_without_mu(tmp_path, capsys):
     status = main(["lammps-check", "--normal", "jkr", "--tangential", "mindlin", "--scenario", "A", "--alpha", "20",
                    "--out", str(tmp_path)])
     assert status == 2 and "needs --mu" in capsys.readouterr().err
+
+
+@needs_lammps
+def test_a_study_table_runs_the_same_check(tmp_path):
+    study = tmp_path / "study.toml"
+    study.write_text('[parameters]\npreset = "paper-R30"\ndgamma0 = 0.15\ndgamma1 = 0.15\n[lammps_check]\n'
+                     'normal = "jkr"\ntangential = "mindlin"\nmu = 0.5\nscenario = "A"\nalpha = 20\nsteps = 2000\n'
+                     '[output]\ndirectory = "out"\n', encoding="utf-8")
+    assert main(["run", str(study)]) == 1  # (LAMMPS's JKR lets go early: the verdict fails)
+    assert {path.suffix for path in (tmp_path / "out").glob("study_lammps_check.*")} == {".nc", ".md", ".png", ".lmp"}
+    cli = tmp_path / "cli"
+    assert main(["lammps-check", "--normal", "jkr", "--tangential", "mindlin", "--mu", "0.5", "--dgamma0", "0.15",
+                 "--dgamma1", "0.15", "--scenario", "A", "--alpha", "20", "--steps", "2000", "--out", str(cli)]) == 1
+    same = me.open_result(cli / "lammps_check.nc"), me.open_result(tmp_path / "out" / "study_lammps_check.nc")
+    assert np.array_equal(same[0]["candidate_normal_force"].values, same[1]["candidate_normal_force"].values)
+
+
+def test_a_study_table_without_mu_for_its_tangential_model_is_named(tmp_path):
+    study = tmp_path / "study.toml"
+    study.write_text('[lammps_check]\nnormal = "jkr"\ntangential = "mindlin"\nscenario = "A"\nalpha = 20\n'
+                     '[output]\ndirectory = "out"\n', encoding="utf-8")
+    with pytest.raises(me.app.study.StudyError, match=r"\[lammps_check\] mu is required"):
+        me.load_study(study)
