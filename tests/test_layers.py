@@ -25,7 +25,7 @@ PACKAGE = Path(mdr_events.__file__).resolve().parent
 LAYERS = ("foundation", "contact", "io", "theory", "models", "analysis", "plotting", "app", "package")
 FOUNDATION_MODULES = ("parameters", "validation", "limits", "_version")
 #: Folders that sit at the level of a layer without being named after it: folder -> its layer.
-FOLDER_LAYERS = {"reproduction": "app"}
+FOLDER_LAYERS = {"reproduction": "app", "dem": "analysis"}
 EXEMPT_IMPORTERS = ("mdr_events", "mdr_events._version")
 
 

@@ -16,6 +16,7 @@ verb               job                              library
 ``fit``            :class:`FitJob`                  :func:`~mdr_events.fit`
 ``sweep``          :class:`SweepJob`                :func:`~mdr_events.sweep`
 ``reproduce``      :class:`ReproduceJob`            :func:`mdr_events.reproduction.reproduce`
+``lammps-check``   :class:`LammpsCheckJob`          :func:`mdr_events.dem.lammps_check`
 =================  ===============================  ==========================================================
 
 A job that reads measured runs (:class:`ValidateJob`, :class:`FitJob`) computes first (``compute``: everything read
@@ -52,7 +53,7 @@ if TYPE_CHECKING:
     from mdr_events.app.validation_files import RenderedReport
 
 __all__ = ["DeriveJob", "PhaseJob", "SimulateJob", "ValidateJob", "Convergence", "FitJob", "SweepJob", "ReproduceJob",
-           "Job", "CONVERGENCE_MODULE", "CONVERGENCE_STEM"]
+           "LammpsCheckJob", "Job", "CONVERGENCE_MODULE", "CONVERGENCE_STEM", "DECK_SUFFIX"]
 
 Progress = Callable[[str], None]
 
@@ -397,5 +398,73 @@ class ReproduceJob:
         reproduce(out, progress=progress, keep_agreeing=not self.rewrite)
 
 
+#: The suffix of the LAMMPS input deck :class:`LammpsCheckJob` writes beside the report.
+DECK_SUFFIX = ".lmp"
+
+
+@dataclass(frozen=True)
+class LammpsCheckJob:
+    """A LAMMPS granular model run along one path and validated against the exact continuum
+    (:func:`~mdr_events.dem.lammps_check`): written as ``<stem>.nc``, ``.md``, ``.png`` (the report, as
+    ``validate`` writes it) and ``<stem>.lmp`` (the input deck, to rerun it with ``lmp -in <stem>.lmp``).
+
+    Attributes
+    ----------
+    contact, motion
+        The contact and the motion of one path.
+    description : str
+        The path, for the report.
+    normal, tangential : str
+        LAMMPS's models.
+    steps, dt
+        LAMMPS's number of steps or time step (``None``: the default).
+    tolerance : float
+        The verdict's bound.
+    """
+
+    contact: Contact
+    motion: Motion
+    description: str
+    normal: str
+    tangential: str = "none"
+    steps: int | None = None
+    dt: float | None = None
+    tolerance: float = 1e-3
+    limits: Limits = DEFAULT_LIMITS
+    provenance: Mapping[str, str] = field(default_factory=dict)
+    stem: str = "lammps_check"
+
+    def compute(self) -> RenderedReport:
+        """Run LAMMPS, validate and render the files; nothing is written."""
+        from mdr_events.app.validation_files import render_validation
+        from mdr_events.dem import lammps_check
+
+        _, report = lammps_check(self.contact, self.motion, normal=self.normal, tangential=self.tangential,
+                                 steps=self.steps, dt=self.dt, tolerance=self.tolerance, limits=self.limits)
+        report.attrs.update(self.provenance, path_description=self.description)
+        return render_validation(report, self.stem)
+
+    @staticmethod
+    def write(rendered: RenderedReport, out: FilePath) -> list[FilePath]:
+        """Write the report's three files and the deck into ``out``, together or not at all."""
+        from mdr_events.io.files import PendingFile, atomic_write_all, netcdf_writer
+        from mdr_events.io.paths import check_output_stem, prepare_output_directory
+
+        prepare_output_directory(out, "out")
+        check_output_stem("stem", rendered.stem)
+        nc, md, png = rendered.paths(out)
+        deck = rendered.report.attrs["lammps_input_deck"]
+        return atomic_write_all([
+            PendingFile(nc, netcdf_writer(rendered.report), ".nc"),
+            PendingFile(md, lambda temporary: FilePath(temporary).write_text(rendered.markdown, encoding="utf-8"), ".md"),
+            PendingFile(png, lambda temporary: FilePath(temporary).write_bytes(rendered.png), ".png"),
+            PendingFile(FilePath(out) / f"{rendered.stem}{DECK_SUFFIX}",
+                        lambda temporary: FilePath(temporary).write_text(deck, encoding="utf-8"), DECK_SUFFIX)])
+
+    def run(self, out: FilePath, progress: Progress = _quiet) -> list[FilePath]:
+        """Compute and write."""
+        return self.write(self.compute(), out)
+
+
 #: A job.
-Job = DeriveJob | PhaseJob | SimulateJob | ValidateJob | FitJob | SweepJob | ReproduceJob
+Job = DeriveJob | PhaseJob | SimulateJob | ValidateJob | FitJob | SweepJob | ReproduceJob | LammpsCheckJob

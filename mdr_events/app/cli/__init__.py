@@ -1,10 +1,12 @@
-"""Command line: ``mdr-events derive | phase-diagram | simulate | validate | fit | sweep | run | reproduce``.
+"""Command line: ``mdr-events derive | phase-diagram | simulate | validate | fit | sweep | run | reproduce |
+lammps-check``.
 
 Every error prints one line ``mdr-events: error: ...`` on stderr (no traceback; ``mdr-events --debug ...``
 re-raises it with its traceback). The exit status (:data:`EXIT_STATUSES`):
 
 - 0: done;
-- 1: ``mdr-events validate`` (or ``run`` with a ``[validate]`` table): a run is outside its tolerance;
+- 1: ``mdr-events validate`` (or ``run`` with a ``[validate]`` table) or ``lammps-check``: a run is outside its
+  tolerance;
   ``mdr-events fit`` (or ``run`` with a ``[fit]`` table): a free parameter is not determined by the data;
 - 2: bad input: an argument, a value, a study file or a file that cannot be read or written (``ValueError``,
   ``TypeError``, ``KeyError``, ``OSError``), named with its value and what is allowed. Output directories
@@ -32,14 +34,14 @@ from typing import Sequence
 import matplotlib
 
 from mdr_events._version import __version__
-from mdr_events.app.cli import derive, fit, phase_diagram, reproduce, run, simulate, sweep, validate
+from mdr_events.app.cli import derive, fit, lammps_check, phase_diagram, reproduce, run, simulate, sweep, validate
 from mdr_events.app.cli._options import Parser, UsageError
 from mdr_events.theory import symbolic
 
 __all__ = ["main", "console_main", "build_parser", "UsageError", "EXIT_STATUSES", "VERBS"]
 
 #: The verbs in the order ``--help`` lists them: each module's ``add_arguments`` adds its parser.
-VERBS = (derive, phase_diagram, simulate, validate, fit, sweep, run, reproduce)
+VERBS = (derive, phase_diagram, simulate, validate, fit, sweep, run, reproduce, lammps_check)
 
 #: The first line of ``mdr-events --help`` (plain text: argparse prints it as it is).
 DESCRIPTION = ("Adhesive indentation and detachment at an angle with the Method of Dimensionality Reduction "
@@ -49,7 +51,7 @@ DESCRIPTION = ("Adhesive indentation and detachment at an angle with the Method 
 #: Exit status -> when.
 EXIT_STATUSES = {
     0: "done",
-    1: "validate: a run is outside its tolerance; fit: a free parameter is not determined or the fit does not "
+    1: "validate, lammps-check: a run is outside its tolerance; fit: a free parameter is not determined or the fit does not "
        "describe the data",
     2: "bad input (an argument, a value, a study file, a file that cannot be read or written)",
     3: "the computation failed although the input was accepted (solver, memory, internal error)",
