@@ -344,7 +344,7 @@ def _event_variables(data: dict, samples: _Samples, job: ValidationJob) -> tuple
     events compared and those the candidate cannot show, with why."""
     paper_law = job.model.friction.is_default
     found = candidate_events(samples.times, samples.quantities, samples.contact, job.model.params, paper_law)
-    not_shown = events_not_shown(samples.quantities, paper_law)
+    not_shown = events_not_shown(samples.quantities)
     first = {}
     for event in samples.solution.events:
         first.setdefault("pull_off" if event.kind.value == "contact_ends" else event.kind.value, event)
@@ -355,7 +355,8 @@ def _event_variables(data: dict, samples: _Samples, job: ValidationJob) -> tuple
     touching = np.flatnonzero(samples.contact)
     errors = event_time_errors(exact_times, candidate_times,
                                (samples.solution.end_time, job.path.duration - start),
-                               (float(samples.times[touching[-1]]), float(samples.times[-1])), job.path.duration)
+                               (float(samples.times[touching[-1]]), float(samples.times[-1])), job.path.duration,
+                               samples.times)
     errors[[kind in not_shown for kind in VALIDATED_EVENTS]] = math.nan
     candidate_depths = np.where(np.isfinite(candidate_times),
                                 job.path.position(start + np.nan_to_num(candidate_times))[1], np.nan)
@@ -366,9 +367,9 @@ def _event_variables(data: dict, samples: _Samples, job: ValidationJob) -> tuple
             ("event_depth_exact", exact_depths, "m", "depth at the event, continuum"),
             ("event_depth_candidate", candidate_depths, "m", "depth at the candidate's event"),
             ("event_depth_error", candidate_depths - exact_depths, "m", "candidate − exact event depth"),
-            ("event_time_relative_error", errors, "1", "|candidate − exact| event time relative to the path's "
-             "duration; for an event in one run only, how long before the other stops showing it (the verdict's "
-             "bound: tolerance; nan: not compared)")):
+            ("event_time_relative_error", errors, "1", "|candidate − exact| event time beyond the candidate's sample "
+             "spacing there, relative to the path's duration; for an event in one run only, how long before the other "
+             "stops showing it (the verdict's bound: tolerance; nan: not compared)")):
         data[key] = (("event",), values, {"units": unit, "long_name": text})
     pull = first.get("pull_off")
     exact_force = float(samples.solution.model.normal_force(pull.depth, pull.radius)) if pull else math.nan
