@@ -7,6 +7,7 @@ verdicts, event errors and the observed order of convergence (first order expect
 three wrong variants (and the right one beside them) at three spacings, and what flags each.
 The CSVs go to OUT_DIR (default: a temporary directory, removed at the end).
 """
+import functools
 import sys
 import tempfile
 import types
@@ -15,6 +16,8 @@ from pathlib import Path
 import numpy as np
 
 import mdr_events as me
+from mdr_events.analysis.convergence import slip_onset_delay_bound
+from mdr_events.models.continuum import solve_path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))  # my_simulator.py sits beside this script
 import my_simulator as sim  # noqa: E402
@@ -34,9 +37,24 @@ def time_step(dx, motion=SCENARIO):
 
 
 def tolerance(dx, contact):
-    """The resolution of the springs: one spring row per side, 2 Δx / a(d_max) of the contact area
-    (and of the full-slip F_x = π a² τ0), a = JKR radius at d_max."""
-    return 2 * dx / float(me.jkr_contact_radius(SCENARIO.d_max, contact, contact.adhesion.dgamma0))
+    """What a spring model at Δx (dt = time_step(Δx)) is judged at: the larger of
+
+    - the resolution of the springs: one spring row per side, 2 Δx / a(d_max) of the contact area (and of the
+      full-slip F_x = π a² τ0), a = JKR radius at d_max: the norms;
+    - the lag of its slip onset beyond one step, relative to the path's duration: the oldest springs attach at the
+      end of the step that touches (a step's travel short) and their cap is that of a radius rounded to Δx/2,
+      amplified by |ẋ|/(|ẋ| − K ȧ) (mdr_events.analysis.convergence.slip_onset_delay_bound): 1.5 times the first.
+    """
+    springs = 2 * dx / float(me.jkr_contact_radius(SCENARIO.d_max, contact, contact.adhesion.dgamma0))
+    params = contact.parameters(SCENARIO.d_max, SCENARIO.v)
+    solution = exact_solution(params)
+    return max(springs, slip_onset_delay_bound(solution, params, dx, time_step(dx)) / solution.path.duration)
+
+
+@functools.lru_cache(maxsize=None)
+def exact_solution(params):
+    """The exact continuum along the scenario's path (solved once)."""
+    return solve_path(params, me.Path.scenario_A(ALPHA, params))
 
 
 def run_and_validate(contact, dx, out_dir, variant="right"):
@@ -71,7 +89,8 @@ def flags(coarse, fine, dx_fine):
 
 def validate_right(contact, out_dir):
     """The right simulator at SPACINGS: reports by spacing, the CSVs by spacing."""
-    print(f"right simulator, scenario A at {ALPHA:g}°, dt = 0.5 Δx / v; tolerance 2 Δx / a(d_max); "
+    print(f"right simulator, scenario A at {ALPHA:g}°, dt = 0.5 Δx / v; tolerance max(2 Δx / a(d_max), slip onset "
+          "lag bound / duration); "
           "max errors relative to each quantity's range:")
     print("  Δx/µm  dt/s  samples    max F_N    max F_x      max A  tolerance  verdict")
     reports, csvs = {}, {}

@@ -24,6 +24,11 @@ Rules:
   ``"undetermined"`` when none has a fit. The event rows are reported beside them but left out of the
   verdict: a time-stepping model finds an event on its sample grid, so its event errors are not a smooth
   function of ``Δx`` (their observed orders come out erratic even for a right simulator).
+
+Beside the orders, each spacing keeps its validation's verdict (``validation_verdict``, 1: pass, by
+:func:`~mdr_events.analysis.reports.validation_failures` at ``tolerance``: the norms, the contact and the events, as
+:func:`~mdr_events.validate`, the command line and study files judge a run) and its event errors relative to the
+path's duration (``event_time_relative_error``, the verdict's measure).
 """
 
 from __future__ import annotations
@@ -36,7 +41,7 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.limits import DEFAULT_LIMITS, Limits
-from mdr_events.analysis.reports import CONVERGENCE_STUDY_CONTENT, ConvergenceVerdict
+from mdr_events.analysis.reports import CONVERGENCE_STUDY_CONTENT, ConvergenceVerdict, ValidationReport
 from mdr_events.analysis.validate import COMPARED, DEFAULT_TOLERANCE, VALIDATED_EVENTS, _validation_job, validate
 from mdr_events.contact import Contact
 from mdr_events.io.datasets import register_schema, stamp
@@ -141,6 +146,7 @@ def _spacings(candidates_by_dx) -> list[float]:
 
 def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact | Parameters, motion,
                       alpha: float | None = None, *, expected_order: float = 1.0,
+                      tolerance: float = DEFAULT_TOLERANCE,
                       reference: Continuum | PathSolution | None = None, limits: Limits = DEFAULT_LIMITS,
                       **options) -> xr.Dataset:
     """The observed order of convergence of a simulator to the exact continuum, from three or more spacings.
@@ -162,6 +168,9 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
     expected_order : float
         The order the simulator should have (> 0; 1 for the paper's spring model), reported beside the
         observed ones and used by ``converges``.
+    tolerance : float
+        The bound of each spacing's validation verdict (:func:`mdr_events.validate`'s, in (0, 1]); not used by the
+        study's own verdict (the observed order).
     limits : Limits
         What the continuum run may use (:func:`mdr_events.validate`).
 
@@ -175,8 +184,9 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
         errors ``E``: ``E_order`` (the observed order, along ``quantity`` / ``event`` / scalar),
         ``E_order_spread`` (its standard error), ``E_converges`` (1: yes) and ``E_fitted`` (the fitted
         line ``C Δx^order`` at each spacing, same dims and unit as ``E``). Also ``expected_order``,
-        ``samples_compared`` and ``samples_left_out`` (per ``dx``). Attributes ``verdict``
-        (``"converges"``, ``"does not converge"``, ``"undetermined"``), ``expected_order``,
+        ``samples_compared``, ``samples_left_out`` and ``validation_verdict`` (1: pass; per ``dx``) and
+        ``event_time_relative_error`` (``dx`` × ``event``: validate's, ``nan`` not compared). Attributes ``verdict``
+        (``"converges"``, ``"does not converge"``, ``"undetermined"``), ``expected_order``, ``tolerance``,
         ``converges_rule``, ``candidate_sources``.
     """
     if isinstance(expected_order, bool) or not isinstance(expected_order, Real) \
@@ -187,12 +197,12 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
     order = sorted(range(len(spacings)), key=lambda i: -spacings[i])
     keys = list(candidates_by_dx)
     # one continuum solution serves every spacing: the study costs one solve and the comparisons
-    job = _validation_job(contact, motion, alpha, DEFAULT_TOLERANCE, reference, options, "convergence_study")
+    job = _validation_job(contact, motion, alpha, tolerance, reference, options, "convergence_study")
     model = job.model
     solution = job.solution or solve_path(model.params, job.path, job.tolerances, limits, model.profile, model.friction)
     reading = {name: value for name, value in options.items() if name not in ("tolerances", "solution")}
-    reports = [validate(candidates_by_dx[keys[i]], contact, motion, alpha, reference=solution, limits=limits,
-                        **reading) for i in order]
+    reports = [validate(candidates_by_dx[keys[i]], contact, motion, alpha, tolerance=tolerance, reference=solution,
+                        limits=limits, **reading) for i in order]
     dx = np.array([spacings[i] for i in order])
     found = {str(name) for report in reports for name in report["quantity"].values}
     quantities = [name for name in COMPARED if name in found]
@@ -200,17 +210,32 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
     for key, text in (("samples_compared", "samples compared"),
                       ("samples_left_out", "samples of the runs left out (contact differs, straddles an event)")):
         data[key] = (("dx",), np.array([int(report[key]) for report in reports]), {"units": "1", "long_name": text})
+    _validation_variables(data, reports)
     coords = {"dx": ("dx", dx, {"units": "m", "long_name": "spacing of the springs"}),
               "quantity": ("quantity", np.array(quantities), {"units": "1", "long_name": "quantity compared"}),
               "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
     first = reports[0].attrs
     attrs = dict(content=CONVERGENCE_STUDY_CONTENT, verdict=_verdict(data).value, expected_order=expected_order,
+                 tolerance=float(tolerance),
                  converges_rule=CONVERGES_RULE, time_origin=str(job.time_origin),
                  candidate_sources="; ".join(str(report.attrs["candidate_source"]) for report in reports),
                  path_waypoints=first["path_waypoints"], path_speed=first["path_speed"])
     # the indenter and the friction law, as the reports name them
     attrs.update({key: value for key, value in first.items() if key.startswith(("profile", "friction_"))})
     return stamp(xr.Dataset(data, coords=coords), model.params, **attrs)
+
+
+def _validation_variables(data: dict, reports: list[xr.Dataset]) -> None:
+    """Per spacing, its validation's verdict (the one rule: :func:`~mdr_events.analysis.reports.validation_failures`)
+    and its event errors relative to the path's duration."""
+    passed = [ValidationReport.from_dataset(report).passed for report in reports]
+    data["validation_verdict"] = (("dx",), np.array(passed, dtype=np.int8), {
+        "units": "1", "long_name": "the validation's verdict at this spacing (1: pass: the norms, the contact and the "
+                                   "events within the tolerance; validate's rule)"})
+    data["event_time_relative_error"] = (("dx", "event"), np.stack(
+        [report["event_time_relative_error"].sel(event=list(VALIDATED_EVENTS)).values for report in reports]), {
+        "units": "1", "long_name": "|candidate − exact| event time beyond the candidate's sample spacing, relative to "
+                                   "the path's duration (validate's; nan: not compared)"})
 
 
 def _fitted_variables(data: dict, key: str, values: np.ndarray, dx: np.ndarray, dims: tuple[str, ...], unit: str,

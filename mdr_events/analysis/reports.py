@@ -12,12 +12,12 @@ from __future__ import annotations
 import enum
 import math
 from dataclasses import dataclass
-from typing import ClassVar, Sequence
+from typing import ClassVar, NamedTuple, Sequence
 
 import numpy as np
 import xarray as xr
 
-__all__ = ["Verdict", "ConvergenceVerdict", "ValidationReport", "ConvergenceReport", "validation_failures",
+__all__ = ["Verdict", "ConvergenceVerdict", "ValidationReport", "ConvergenceReport", "validation_failures", "EventTimes",
            "LEFT_OUT_BOUND", "VALIDATION_CONTENT", "check_content", "CONVERGENCE_STUDY_CONTENT"]
 
 #: The ``content`` attribute of a validation's and of a convergence study's dataset.
@@ -49,13 +49,41 @@ class ConvergenceVerdict(str, enum.Enum):
         return self.value
 
 
+class EventTimes(NamedTuple):
+    """The events compared, their times (s from first contact, ``nan``: not in that run) and their errors relative
+    to the path's duration (``nan``: not compared)."""
+
+    names: Sequence[str]
+    exact: Sequence[float]
+    candidate: Sequence[float]
+    errors: Sequence[float]
+
+
+def _event_failures(events: EventTimes, tolerance: float) -> list[str]:
+    failures = []
+    for name, exact, candidate, error in zip(*events):
+        if not error > tolerance:  # (nan: not compared)
+            continue
+        if math.isfinite(exact) and math.isfinite(candidate):
+            failures.append(f"{name}: at {candidate:.6g} s in the candidate, {exact:.6g} s exact: {error:.3g} of the "
+                            f"path's duration > tolerance {tolerance:g}")
+        elif math.isfinite(exact):
+            failures.append(f"{name}: not in the candidate (exact at {exact:.6g} s, {error:.3g} of the path's duration "
+                            f"before the candidate stops showing it) > tolerance {tolerance:g}")
+        else:
+            failures.append(f"{name}: at {candidate:.6g} s in the candidate, not in the exact run ({error:.3g} of "
+                            f"the path's duration before it ends) > tolerance {tolerance:g}")
+    return failures
+
+
 def validation_failures(quantities: Sequence[str], max_errors: Sequence[float], contact_differs: float,
                         left_out_errors: Sequence[float], tolerance: float,
-                        corner_excess: Sequence[float] = ()) -> list[str]:
+                        corner_excess: Sequence[float] = (), events: EventTimes | None = None) -> list[str]:
     """What fails a validation, in words (none: it passes): no quantity compared; a quantity's max error above
     ``tolerance`` (or not a number); the share of the exact contact's time in contact in one run only above
     ``tolerance``; a sample left out farther than :data:`LEFT_OUT_BOUND` ranges from the exact value; a sample at a
-    corner or a reversal farther than ``tolerance`` beyond the exact change beside it."""
+    corner or a reversal farther than ``tolerance`` beyond the exact change beside it; an event's time off by more
+    than ``tolerance`` of the path's duration, or in one run only (:class:`EventTimes`)."""
     if not len(quantities):
         return ["no quantity compared"]
     failures = [f"{name}: max error {error:.3g} of its range > tolerance {tolerance:g}"
@@ -67,7 +95,7 @@ def validation_failures(quantities: Sequence[str], max_errors: Sequence[float], 
                  for name, error in zip(quantities, left_out_errors) if error > LEFT_OUT_BOUND]
     failures += [f"{name}: a sample at a corner lies {excess:.3g} of its range beyond the exact change there > "
                  f"tolerance {tolerance:g}" for name, excess in zip(quantities, corner_excess) if excess > tolerance]
-    return failures
+    return failures + ([] if events is None else _event_failures(events, tolerance))
 
 
 def check_content(dataset, content: str, kind: str) -> xr.Dataset:
@@ -132,7 +160,11 @@ class ValidationReport(_Report):
         share = float(data["contact_differs_share"]) if "contact_differs_share" in data else math.nan
         left_out = data["left_out_max_error"].values if "left_out_max_error" in data else np.zeros(len(quantities))
         corner = data["corner_max_excess"].values if "corner_max_excess" in data else ()  # (files written before)
-        return validation_failures(quantities, data["max_error"].values, share, left_out, self.tolerance, corner)
+        events = EventTimes([str(name) for name in data["event"].values], data["event_time_exact"].values,
+                            data["event_time_candidate"].values, data["event_time_relative_error"].values) \
+            if "event_time_relative_error" in data else None  # (files written before compared no events)
+        return validation_failures(quantities, data["max_error"].values, share, left_out, self.tolerance, corner,
+                                   events)
 
 
 @dataclass(frozen=True)

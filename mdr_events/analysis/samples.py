@@ -38,15 +38,18 @@ from mdr_events.io.candidates import Candidate
 from mdr_events.models.continuum import PathSolution, evaluate
 
 __all__ = ["in_contact", "exact_at", "compared_samples", "check_run_covers_the_contact", "contact_differs_share",
-           "uncovered_share", "left_out_error", "corner_excess", "CONTINUOUS_EVENTS", "exact_range", "relative_norms", "candidate_events", "LEFT_OUT_CODES",
-           "VALIDATED_EVENTS", "FULL_SLIP_SHARE", "COMPARED", "UNITS", "CONTACT_INDICATORS", "MIN_SAMPLES_IN_CONTACT",
+           "uncovered_share", "left_out_error", "corner_excess", "CONTINUOUS_EVENTS", "exact_range", "relative_norms",
+           "candidate_events", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "CONTACT_MAKING_EVENTS", "events_not_shown",
+           "event_time_errors", "FULL_SLIP_SHARE", "COMPARED", "UNITS", "CONTACT_INDICATORS", "MIN_SAMPLES_IN_CONTACT",
            "GAP_FACTOR", "TIME_AXIS_SHARE"]
 
 
 #: ``left_out`` codes -> meaning.
 LEFT_OUT_CODES = {0: "compared", 1: "outside the runs", 2: "contact differs", 3: "straddles an event"}
 #: Events compared, in the order of the report's ``event`` dimension.
-VALIDATED_EVENTS = ("slip_onset", "full_slip", "detachment_starts", "pull_off")
+VALIDATED_EVENTS = ("first_contact", "slip_onset", "full_slip", "detachment_starts", "pull_off", "re_contact")
+#: Of those, the events that make a contact (the others happen in contact).
+CONTACT_MAKING_EVENTS = ("first_contact", "re_contact")
 #: A candidate without a sliding fraction is in full slip where |F_x| reaches this share below τ0 A.
 FULL_SLIP_SHARE = 1e-3
 #: Continuum events after which the first sample is left out (a corner cut, a contact made or lost).
@@ -233,19 +236,25 @@ def relative_norms(times, difference, exact, compared) -> tuple[float, float, fl
     return float(np.max(np.abs(d))) / spread, float(np.sqrt(np.mean(d**2))) / spread, l1 / spread
 
 
-def candidate_events(times, quantities, contact, params) -> dict[str, float]:
+def candidate_events(times, quantities, contact, params, full_slip_by_force: bool = True) -> dict[str, float]:
     """Times of the events by the module's rules (times as given; also ``pull_off_force`` and
-    ``last_in_contact``, the index of the last sample in contact, -1 if none) (``nan`` where not found or not determinable)."""
+    ``last_in_contact``, the index of the last sample in contact, -1 if none) (``nan`` where not found or not
+    determinable); without a sliding fraction, full slip is read off ``|F_x|`` against ``τ0 A`` only with
+    ``full_slip_by_force`` (the paper's law: under Coulomb's the cap is not ``τ0 A``)."""
     out = {name: math.nan for name in VALIDATED_EVENTS}
     out["pull_off_force"] = math.nan
     out["last_in_contact"] = -1
+    touching = np.flatnonzero(contact)
+    if touching.size:
+        out["first_contact"] = float(times[touching[0]])
     sliding = quantities.get("sliding_fraction")
     if sliding is not None:
         onset = np.flatnonzero(np.nan_to_num(sliding) > 0)
         full = np.flatnonzero(np.nan_to_num(sliding) >= 1)
         out["slip_onset"] = float(times[onset[0]]) if onset.size else math.nan
         out["full_slip"] = float(times[full[0]]) if full.size else math.nan
-    elif "tangential_force" in quantities and ("contact_area" in quantities or "contact_radius" in quantities):
+    elif full_slip_by_force and "tangential_force" in quantities and ("contact_area" in quantities
+                                                                   or "contact_radius" in quantities):
         area = quantities.get("contact_area", math.pi * quantities.get("contact_radius", np.nan) ** 2)
         full = np.flatnonzero((area > 0) & (np.abs(quantities["tangential_force"])
                                             >= (1 - FULL_SLIP_SHARE) * params.tau0 * area))
@@ -261,4 +270,41 @@ def candidate_events(times, quantities, contact, params) -> dict[str, float]:
         out["last_in_contact"] = int(lost[0])
         if "normal_force" in quantities:
             out["pull_off_force"] = float(quantities["normal_force"][lost[0]])
+        again = np.flatnonzero(contact[lost[0] + 1:])
+        out["re_contact"] = float(times[lost[0] + 1 + again[0]]) if again.size else math.nan
     return out
+
+
+def events_not_shown(quantities: Mapping[str, np.ndarray]) -> dict[str, str]:
+    """The events a candidate's quantities cannot show, each with the reason (the others are compared)."""
+    size = "contact_area" in quantities or "contact_radius" in quantities
+    contact = "" if any(name in quantities for name in CONTACT_INDICATORS) else \
+        "a tangential force alone does not show where the run is in contact"
+    sliding = "sliding_fraction" in quantities
+    reasons = {"first_contact": contact, "pull_off": contact, "re_contact": contact,
+               "detachment_starts": "" if size else "no contact area or radius",
+               "slip_onset": "" if sliding else "no sliding_fraction",
+               "full_slip": "" if sliding else "no sliding_fraction (F_x approaches τ0 A gradually: the exact solution "
+                                               "itself reaches it within FULL_SLIP_SHARE 0.4 % of the path early)"}
+    return {name: reason for name, reason in reasons.items() if reason}
+
+
+def event_time_errors(exact: np.ndarray, candidate: np.ndarray, exact_ends: tuple[float, float],
+                      candidate_ends: tuple[float, float], duration: float, times: np.ndarray) -> np.ndarray:
+    """Per event of :data:`VALIDATED_EVENTS`: ``|Δt|`` beyond the candidate's sample spacing there (an event is found
+    at the first sample past it: up to one spacing late, the exact solution sampled too), relative to the path's
+    ``duration``; for an event in one run
+    only, how long before the other run could no longer show it (an event in contact: the end of its contact; one
+    that makes a contact: its last sample) it lies, relative to the duration (0 beyond that: it may not have reached
+    it); ``nan`` for an event in neither. ``*_ends``: (end of the contact, last time) of each run."""
+    errors = np.full(len(VALIDATED_EVENTS), np.nan)
+    for i, name in enumerate(VALIDATED_EVENTS):
+        which = 1 if name in CONTACT_MAKING_EVENTS else 0
+        if np.isfinite(exact[i]) and np.isfinite(candidate[i]):
+            found = min(max(int(np.searchsorted(times, candidate[i])), 1), len(times) - 1)
+            errors[i] = max(abs(candidate[i] - exact[i]) - (times[found] - times[found - 1]), 0.0) / duration
+        elif np.isfinite(exact[i]):
+            errors[i] = max(candidate_ends[which] - exact[i], 0.0) / duration
+        elif np.isfinite(candidate[i]):
+            errors[i] = max(exact_ends[which] - candidate[i], 0.0) / duration
+    return errors

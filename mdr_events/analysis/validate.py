@@ -17,15 +17,17 @@ from typing import Any, Callable, Mapping, NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.analysis.reports import LEFT_OUT_BOUND, VALIDATION_CONTENT, Verdict, validation_failures
+from mdr_events.analysis.reports import (LEFT_OUT_BOUND, VALIDATION_CONTENT, EventTimes, Verdict,
+                                        validation_failures)
 from mdr_events.analysis.samples import (COMPARED, CONTACT_INDICATORS, FULL_SLIP_SHARE, LEFT_OUT_CODES, UNITS,
                                         VALIDATED_EVENTS, candidate_events, check_run_covers_the_contact,
-                                        compared_samples, contact_differs_share, corner_excess, exact_at, in_contact,
-                                        left_out_error, relative_norms, uncovered_share)
+                                        compared_samples, contact_differs_share, corner_excess, event_time_errors,
+                                        events_not_shown, exact_at, in_contact, left_out_error, relative_norms,
+                                        uncovered_share)
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.io.candidates import Candidate, check_run_is_finite, read_candidate
 from mdr_events.theory.scales import check_representable
-from mdr_events.io.datasets import register_schema, stamp
+from mdr_events.io.datasets import register_schema, stamp, text_list_attrs
 from mdr_events.models.continuum import PathSolution, Tolerances, solve_path
 from mdr_events.contact import Contact
 from mdr_events.models.indenters import SimulatedProfile, profile_attrs
@@ -231,7 +233,7 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
     present = [name for name in COMPARED if name in samples.quantities]
     max_errors, left_out_errors, corner = _norm_variables(data, samples, present, tolerance)
     differs = _contact_variable(data, samples)
-    _event_variables(data, samples, job)
+    events, not_shown = _event_variables(data, samples, job)
     data["samples_compared"] = ((), int(np.count_nonzero(samples.compared)), {"units": "1",
                                                                               "long_name": "samples compared"})
     data["samples_left_out"] = ((), int(np.count_nonzero(samples.codes > 1)), {
@@ -239,12 +241,14 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
     coords = {"time": ("time", samples.times, {"units": "s", "long_name": "time from first contact"}),
               "quantity": ("quantity", np.array(present), {"units": "1", "long_name": "quantity compared"}),
               "event": ("event", np.array(VALIDATED_EVENTS), {"units": "1", "long_name": "event compared"})}
-    verdict = Verdict.FAIL if validation_failures(present, max_errors, differs, left_out_errors, tolerance, corner) \
-        else Verdict.PASS
+    failures = validation_failures(present, max_errors, differs, left_out_errors, tolerance, corner, events)
+    verdict = Verdict.FAIL if failures else Verdict.PASS
     read, model = samples.read, job.model
     attrs = dict(content=VALIDATION_CONTENT, candidate_source=read.source, tolerance=float(tolerance),
                  unused_columns=", ".join(read.unused) or "none",
                  quantities_not_compared=", ".join(name for name in COMPARED if name not in present) or "none",
+                 events_not_compared="; ".join(f"{name} ({why})" for name, why in not_shown.items()) or "none",
+                 **text_list_attrs("failures", failures),
                  time_origin=str(job.time_origin), verdict=verdict.value, path_waypoints=job.path.describe(),
                  path_speed=job.path.speed, **profile_attrs(model.profile), **friction_attrs(model.friction))
     return stamp(xr.Dataset(data, coords=coords), model.params, **attrs)
@@ -335,16 +339,26 @@ def _contact_variable(data: dict, samples: _Samples) -> float:
     return differs
 
 
-def _event_variables(data: dict, samples: _Samples, job: ValidationJob) -> None:
-    """Each validated event's time and depth, exact and the candidate's, their errors, and the pull-off force."""
-    found = candidate_events(samples.times, samples.quantities, samples.contact, job.model.params)
+def _event_variables(data: dict, samples: _Samples, job: ValidationJob) -> tuple[EventTimes, dict[str, str]]:
+    """Each validated event's time and depth, exact and the candidate's, their errors (the time's also relative to
+    the path's duration, where the candidate's quantities show the event), and the pull-off force; returns the
+    events compared and those the candidate cannot show, with why."""
+    paper_law = job.model.friction.is_default
+    found = candidate_events(samples.times, samples.quantities, samples.contact, job.model.params, paper_law)
+    not_shown = events_not_shown(samples.quantities)
     first = {}
     for event in samples.solution.events:
         first.setdefault("pull_off" if event.kind.value == "contact_ends" else event.kind.value, event)
     exact_times = np.array([first[kind].time if kind in first else math.nan for kind in VALIDATED_EVENTS])
     exact_depths = np.array([first[kind].depth if kind in first else math.nan for kind in VALIDATED_EVENTS])
-    candidate_times = np.array([found[kind] for kind in VALIDATED_EVENTS])
+    candidate_times = np.array([math.nan if kind in not_shown else found[kind] for kind in VALIDATED_EVENTS])
     start = job.path.first_contact_time()
+    touching = np.flatnonzero(samples.contact)
+    errors = event_time_errors(exact_times, candidate_times,
+                               (samples.solution.end_time, job.path.duration - start),
+                               (float(samples.times[touching[-1]]), float(samples.times[-1])), job.path.duration,
+                               samples.times)
+    errors[[kind in not_shown for kind in VALIDATED_EVENTS]] = math.nan
     candidate_depths = np.where(np.isfinite(candidate_times),
                                 job.path.position(start + np.nan_to_num(candidate_times))[1], np.nan)
     for key, values, unit, text in (
@@ -353,7 +367,10 @@ def _event_variables(data: dict, samples: _Samples, job: ValidationJob) -> None:
             ("event_time_error", candidate_times - exact_times, "s", "candidate − exact event time"),
             ("event_depth_exact", exact_depths, "m", "depth at the event, continuum"),
             ("event_depth_candidate", candidate_depths, "m", "depth at the candidate's event"),
-            ("event_depth_error", candidate_depths - exact_depths, "m", "candidate − exact event depth")):
+            ("event_depth_error", candidate_depths - exact_depths, "m", "candidate − exact event depth"),
+            ("event_time_relative_error", errors, "1", "|candidate − exact| event time beyond the candidate's sample "
+             "spacing there, relative to the path's duration; for an event in one run only, how long before the other "
+             "stops showing it (the verdict's bound: tolerance; nan: not compared)")):
         data[key] = (("event",), values, {"units": unit, "long_name": text})
     pull = first.get("pull_off")
     exact_force = float(samples.solution.model.normal_force(pull.depth, pull.radius)) if pull else math.nan
@@ -365,6 +382,7 @@ def _event_variables(data: dict, samples: _Samples, job: ValidationJob) -> None:
         (), float(samples.exact["normal_force"][last]) if last >= 0 else math.nan,
         {"units": "N", "long_name": "exact F_N at the candidate's last sample in contact (F_N(t) is steep before the "
                                     "jump: compare with the candidate's there, not with the jump's)"})
+    return EventTimes(VALIDATED_EVENTS, exact_times, candidate_times, errors), not_shown
 
 register_schema(VALIDATION_CONTENT, {"left_out": ("time",), "max_error": ("quantity",), "rms_error": ("quantity",),
                                      "l1_error": ("quantity",), "within_tolerance": ("quantity",),

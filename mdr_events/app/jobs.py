@@ -240,8 +240,10 @@ class ValidateJob:
                 raise
             return Convergence(None, None, [f"convergence study skipped ({CONVERGENCE_MODULE}.convergence_study is "
                                             "not available)"])
-        # every option of validate but the verdict's tolerance (the study's verdict is the observed order)
-        dataset = study(dict(zip(self.spacings, self.files)), self.contact, self.motion, **self._options())
+        # every option of validate, the tolerance too: each spacing's verdict is its run's (the study's own verdict
+        # is the observed order)
+        dataset = study(dict(zip(self.spacings, self.files)), self.contact, self.motion, tolerance=self.tolerance,
+                        **self._options())
         try:
             from mdr_events.plotting.convergence import plot_convergence_study
             from mdr_events.plotting.figures import figure_png

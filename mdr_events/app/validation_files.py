@@ -36,8 +36,8 @@ __all__ = ["RenderedReport", "VALIDATION_SUFFIXES", "render_validation", "write_
 #: The files of one validated run, by suffix.
 VALIDATION_SUFFIXES = (".nc", ".md", ".png")
 #: How the report's events are named in the summaries.
-EVENT_NAMES = {"slip_onset": "slip onset", "full_slip": "full slip", "detachment_starts": "start of detachment",
-               "pull_off": "pull-off"}
+EVENT_NAMES = {"first_contact": "first contact", "slip_onset": "slip onset", "full_slip": "full slip",
+               "detachment_starts": "start of detachment", "pull_off": "pull-off", "re_contact": "re-contact"}
 
 
 class RenderedReport(NamedTuple):
@@ -75,9 +75,15 @@ def validation_markdown(report: xr.Dataset, stem: str | None = None) -> str:
     counts = _left_out_counts(report)
     lines = [f"# Validation of `{os.path.basename(source)}` against the exact continuum", "",
              f"**Verdict: {verdict}** — "
-             + ("every quantity's" if verdict is Verdict.PASS else "not every quantity's")
-             + f" max error is within the tolerance {tolerance:g} (relative to the exact quantity's range).", "",
-             f"- Candidate: `{source}`",
+             + ("every quantity's max error, the contact and every event compared are" if verdict is Verdict.PASS
+                else "not everything is")
+             + f" within the tolerance {tolerance:g} (errors relative to the exact quantity's range, event times to "
+             "the path's duration).", ""]
+    failures = typed.failures
+    if failures:
+        lines += ["## Failing", ""] + [f"- **{text}**" for text in failures] + [""]
+    lines += [f"- Candidate: `{source}`",
+             f"- Events not compared: {report.attrs.get('events_not_compared', 'none')}",
              f"- Not compared: {report.attrs.get('quantities_not_compared', 'none')}; columns not read: "
              f"{report.attrs.get('unused_columns', 'none')} (name them with --names to check them)",
              f"- Tolerance: {tolerance:g} (max error relative to the range of the exact quantity over the compared "
@@ -106,12 +112,14 @@ def validation_markdown(report: xr.Dataset, stem: str | None = None) -> str:
     lines += ["", "## Events", "",
               "Found in the candidate by the rules of `mdr_events.analysis.validate`; compared with the first event of "
               "each kind in the continuum's log (times from first contact; — where not found).", "",
-              "| event | exact time (s) | candidate time (s) | time error (s) | exact depth (µm) "
-              "| candidate depth (µm) | depth error (µm) |", "|---|---:|---:|---:|---:|---:|---:|"]
+              "| event | exact time (s) | candidate time (s) | time error (s) | / duration | exact depth (µm) "
+              "| candidate depth (µm) | depth error (µm) |", "|---|---:|---:|---:|---:|---:|---:|---:|"]
     for event in report["event"].values:
         row = report.sel(event=event)
+        relative = row["event_time_relative_error"] if "event_time_relative_error" in row else math.nan
         cells = [EVENT_NAMES.get(str(event), str(event)), _number(row["event_time_exact"], 6),
                  _number(row["event_time_candidate"], 6), _number(row["event_time_error"], 3, True),
+                 _number(relative, 3),
                  _number(row["event_depth_exact"] * 1e6, 6), _number(row["event_depth_candidate"] * 1e6, 6),
                  _number(row["event_depth_error"] * 1e6, 3, True)]
         lines.append(f"| {' | '.join(cells)} |")
@@ -134,8 +142,10 @@ def console_summary(report: xr.Dataset, name: str) -> list[str]:
     events = ", ".join(f"{EVENT_NAMES.get(str(event), str(event))} "
                        f"{_number(report['event_time_error'].sel(event=event), 3, True)}"
                        for event in report["event"].values)
-    return [f"{name}: {str(ValidationReport.from_dataset(report).verdict).upper()} (tolerance {tolerance:g}; "
+    typed = ValidationReport.from_dataset(report)
+    return [f"{name}: {str(typed.verdict).upper()} (tolerance {tolerance:g}; "
             f"{int(report['samples_compared'])} samples compared, {int(report['samples_left_out'])} left out)",
+            *[f"  failing: {text}" for text in typed.failures],
             f"  max error / range: {errors}",
             f"  event time error (s): {events}",
             f"  not compared: {report.attrs.get('quantities_not_compared', 'none')}; columns not read: "

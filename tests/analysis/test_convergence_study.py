@@ -13,6 +13,7 @@ import xarray as xr
 import mdr_events as me
 from mdr_events.analysis import convergence_study as module
 from mdr_events.analysis.convergence_study import NORMS, convergence_study, fit_observed_order
+from mdr_events.analysis.samples import VALIDATED_EVENTS
 from mdr_events.plotting.convergence import REFERENCE_LABEL, plot_convergence_study
 
 ALPHA = 20.0
@@ -119,8 +120,14 @@ def test_the_layout(study, runs):
     assert study["event_time_error"].dims == ("dx", "event")
     assert study["event_depth_error_order"].dims == ("event",)
     assert study["pull_off_force_error"].dims == ("dx",) and study["pull_off_force_error_order"].dims == ()
-    assert list(study["event"].values) == ["slip_onset", "full_slip", "detachment_starts", "pull_off"]
-    assert np.all(study["event_time_error"].values >= 0) and np.all(study["pull_off_force_error"].values >= 0)
+    assert list(study["event"].values) == list(VALIDATED_EVENTS)
+    assert study["event_time_relative_error"].dims == ("dx", "event") and study["validation_verdict"].dims == ("dx",)
+    errors = study["event_time_error"].values
+    assert np.all(np.isnan(errors) | (errors >= 0)) and np.all(study["pull_off_force_error"].values >= 0)
+    # every event the runs show has an error at every spacing; re-contact is in none of them (nan, no fit)
+    assert np.all(np.isnan(study["event_time_error"].sel(event="re_contact").values))
+    assert np.all(np.isfinite(study["event_time_error"].drop_sel(event="re_contact").values))
+    assert np.isnan(float(study["event_time_error_order"].sel(event="re_contact")))
     for name, variable in study.variables.items():
         assert "units" in variable.attrs and "long_name" in variable.attrs, name
 
@@ -132,6 +139,8 @@ def test_the_errors_are_validates(paper, runs, study):
     for norm in NORMS:
         np.testing.assert_array_equal(row[norm].sel(quantity=report["quantity"].values).values, report[norm].values)
     np.testing.assert_array_equal(row["event_time_error"].values, np.abs(report["event_time_error"].values))
+    np.testing.assert_array_equal(row["event_time_relative_error"].values, report["event_time_relative_error"].values)
+    assert int(row["validation_verdict"]) == int(me.ValidationReport.from_dataset(report).passed)
     np.testing.assert_array_equal(row["event_depth_error"].values, np.abs(report["event_depth_error"].values))
     assert float(row["pull_off_force_error"]) == abs(float(report["pull_off_force_candidate"])
                                                      - float(report["pull_off_force_exact"]))
