@@ -69,6 +69,18 @@ def test_a_verb_loads_what_it_needs_only():
                            "mdr_events.plotting"}, sorted(simulate)
 
 
+def test_a_usage_error_loads_the_options_of_its_verb_only():
+    """The hint on a file taken by a multi-value option reads the options of the verb used, not of every verb."""
+    loaded = loaded_after(textwrap.dedent("""
+        import contextlib, io
+        from mdr_events.app.cli import main
+        with contextlib.redirect_stderr(io.StringIO()):
+            assert main(["run", "--no-such-option", "study.toml"]) == 2
+    """))
+    assert not loaded & {"numpy", "mdr_events.app.inputs", "mdr_events.analysis.fit",
+                         "mdr_events.models.methods"}, sorted(loaded)
+
+
 @pytest.mark.parametrize("name", mdr_events.__all__)
 def test_every_public_name_resolves(name):
     namespace: dict = {}

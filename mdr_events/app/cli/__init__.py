@@ -136,21 +136,23 @@ def _outcome(error: BaseException) -> tuple[str, int]:
 FILE_SUFFIXES = (".csv", ".nc", ".toml")
 
 
-def _multi_value_options(parser: argparse.ArgumentParser) -> set[str]:
-    """The options, of every command, that take several values (``--free E tau0``, ``--dx 1e-6 2e-6``)."""
+def _multi_value_options(parser: argparse.ArgumentParser, words: Sequence[str] | None = None) -> set[str]:
+    """The options, of every command (of those among ``words``, if given: the command line's, so that only the verb
+    used has its options added), that take several values (``--free E tau0``, ``--dx 1e-6 2e-6``)."""
     found = set()
     for action in parser.filled()._actions:  # noqa: SLF001 - argparse keeps its actions there
         if action.nargs in ("+", "*") and action.option_strings:
             found.update(action.option_strings)
-        for sub in getattr(action, "choices", None).values() if isinstance(action, argparse._SubParsersAction) else ():
-            found |= _multi_value_options(sub)
+        for name, sub in action.choices.items() if isinstance(action, argparse._SubParsersAction) else ():
+            if words is None or name in words:
+                found |= _multi_value_options(sub)
     return found
 
 
 def _file_taken_as_value(argv: Sequence[str]) -> str:
     """A hint for a usage error: which multi-value option took a file as one of its values (``--free tau0 run.csv``:
     argparse gives every word up to the next option to ``--free``), and how to write it; "" if none did."""
-    multi = _multi_value_options(build_parser())
+    multi = _multi_value_options(build_parser(), argv)
     option = None
     for token in argv:
         if token == "--":
