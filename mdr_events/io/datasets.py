@@ -21,6 +21,7 @@ import numpy as np
 import xarray as xr
 
 from mdr_events._version import __version__
+from mdr_events.io.registrars import load_registrars
 from mdr_events.parameters import Parameters
 
 __all__ = ["DOI", "REFERENCE", "PROGRAM", "STAMP_ATTRIBUTES", "stamp", "parameters_of", "text_list_attrs",
@@ -144,10 +145,11 @@ def register_figure(content: str, draw) -> None:
 
 def figure_of(dataset: xr.Dataset):
     """The drawing function registered for ``dataset``'s kind (its ``content`` attribute)."""
+    load_registrars("figures")
     content = dataset.attrs.get("content")
     if content not in _FIGURES:
         raise ValueError(f"no figure is registered for content={content!r}; allowed: {sorted(_FIGURES)} "
-                         "(import mdr_events, which registers them)")
+                         "(the modules named in mdr_events/__init__.py register them)")
     return _FIGURES[content]
 
 
@@ -175,6 +177,7 @@ def describe_dims(required: Dims) -> str:
 
 def registered_contents() -> list[str]:
     """The kinds of result (``content`` attributes) with a schema, sorted."""
+    load_registrars("schemas")
     return sorted(_SCHEMAS)
 
 
@@ -183,6 +186,7 @@ def required_variables(content: str, attrs: Mapping[str, Any]) -> dict[str, Dims
 
     Raises ``ValueError`` if no schema is registered for ``content``.
     """
+    load_registrars("schemas")
     if content not in _SCHEMAS:
         raise ValueError(f"unknown content {content!r}; allowed: {registered_contents()}")
     schema = dict(_SCHEMAS[content].get(None, {}))

@@ -20,6 +20,11 @@ One module per verb (:data:`VERBS`): each adds its parser (``add_arguments(subpa
 namespace into a typed job of :mod:`mdr_events.app.jobs` (``job(args)``), the job a study file's table gives for the
 same input; ``run(args)`` runs it and prints what it wrote. The options several verbs share, and how they are read
 through the shared parsers (:mod:`mdr_events.app.inputs`), are in :mod:`mdr_events.app.cli._options`.
+
+Importing this module imports the standard library only: ``mdr-events --help`` lists the verbs without loading the
+package, a verb's options are added (and what they need imported) when the verb is used
+(:meth:`~mdr_events.app.cli._options.Parser.filled`), and everything else is imported inside :func:`main`, where a
+Ctrl-C (even during the imports) prints one line and exits with 130.
 """
 
 from __future__ import annotations
@@ -31,12 +36,9 @@ import sys
 import threading
 from typing import Sequence
 
-import matplotlib
-
 from mdr_events._version import __version__
 from mdr_events.app.cli import derive, fit, lammps_check, phase_diagram, reproduce, run, simulate, sweep, validate
 from mdr_events.app.cli._options import Parser, UsageError
-from mdr_events.theory import symbolic
 
 __all__ = ["main", "console_main", "build_parser", "UsageError", "EXIT_STATUSES", "VERBS"]
 
@@ -136,21 +138,23 @@ def _outcome(error: BaseException) -> tuple[str, int]:
 FILE_SUFFIXES = (".csv", ".nc", ".toml")
 
 
-def _multi_value_options(parser: argparse.ArgumentParser) -> set[str]:
-    """The options, of every command, that take several values (``--free E tau0``, ``--dx 1e-6 2e-6``)."""
+def _multi_value_options(parser: argparse.ArgumentParser, words: Sequence[str] | None = None) -> set[str]:
+    """The options, of every command (of those among ``words``, if given: the command line's, so that only the verb
+    used has its options added), that take several values (``--free E tau0``, ``--dx 1e-6 2e-6``)."""
     found = set()
-    for action in parser._actions:  # noqa: SLF001 - argparse keeps its actions there
+    for action in parser.filled()._actions:  # noqa: SLF001 - argparse keeps its actions there
         if action.nargs in ("+", "*") and action.option_strings:
             found.update(action.option_strings)
-        for sub in getattr(action, "choices", None).values() if isinstance(action, argparse._SubParsersAction) else ():
-            found |= _multi_value_options(sub)
+        for name, sub in action.choices.items() if isinstance(action, argparse._SubParsersAction) else ():
+            if words is None or name in words:
+                found |= _multi_value_options(sub)
     return found
 
 
 def _file_taken_as_value(argv: Sequence[str]) -> str:
     """A hint for a usage error: which multi-value option took a file as one of its values (``--free tau0 run.csv``:
     argparse gives every word up to the next option to ``--free``), and how to write it; "" if none did."""
-    multi = _multi_value_options(build_parser())
+    multi = _multi_value_options(build_parser(), argv)
     option = None
     for token in argv:
         if token == "--":
@@ -186,8 +190,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = build_parser().parse_args(argv)
         debug = args.debug
         if getattr(args, "key", None) is not None:
+            from mdr_events.theory import symbolic
+
             symbolic.relation(args.key)  # an unknown (or empty) key is bad input before anything is printed
-        matplotlib.use("Agg")  # the CLI writes figures to files only: no window, whatever the user's default
+        if args.command is not None and getattr(args, "figures", True):  # (derive draws none: no matplotlib)
+            import matplotlib
+
+            matplotlib.use("Agg")  # the CLI writes figures to files only: no window, whatever the user's default
         status = args.run(args)
     except BrokenPipeError:  # the reader has gone (`| head`): nothing more to say, and no one to say it to
         _silence_stdout()

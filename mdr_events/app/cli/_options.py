@@ -2,6 +2,10 @@
 
 Each ``*_options`` function adds options to a verb's parser; the function of the same input's name reads them from
 argparse's namespace through the shared parser and names the option in a :class:`UsageError` where it fails.
+
+This module imports only the standard library when imported: ``mdr-events --help`` lists the verbs without loading
+the package, and a verb's options are added (and what they need imported) when the verb is used
+(:meth:`Parser.filled`).
 """
 
 from __future__ import annotations
@@ -9,17 +13,15 @@ from __future__ import annotations
 import argparse
 import math
 import os
-from typing import Sequence
+from typing import TYPE_CHECKING, Callable, Sequence
 
-from mdr_events.app import inputs
-from mdr_events.analysis.validate import TIME_ORIGINS
-from mdr_events.contact import Contact
-from mdr_events.contact.friction import FRICTION_LAWS, FrictionLaw
-from mdr_events.io.candidates import CANDIDATE_QUANTITIES
-from mdr_events.limits import LIMIT_UNITS, Limits
-from mdr_events.models.indenters import SimulatedProfile
-from mdr_events.models.motion import SCENARIO_NAMES, Motion
-from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, PRESETS, Parameters
+if TYPE_CHECKING:
+    from mdr_events.contact import Contact
+    from mdr_events.contact.friction import FrictionLaw
+    from mdr_events.limits import Limits
+    from mdr_events.models.indenters import SimulatedProfile
+    from mdr_events.models.motion import Motion
+    from mdr_events.parameters import Parameters
 
 
 class UsageError(Exception):
@@ -37,7 +39,31 @@ class StoreOnce(argparse.Action):
 
 
 class Parser(argparse.ArgumentParser):
-    """An argument parser whose errors are one line (:class:`UsageError`) naming where the allowed options are."""
+    """An argument parser whose errors are one line (:class:`UsageError`) naming where the allowed options are.
+
+    ``fill``, a function of the parser, adds its arguments when they are first needed (to parse, to show the help, to
+    list them: :meth:`filled`), so that a verb's imports are made only when the verb is used.
+    """
+
+    def __init__(self, *args, fill: Callable[[Parser], None] | None = None, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self._fill = fill
+
+    def filled(self) -> Parser:
+        """This parser with its arguments added (``fill`` called once)."""
+        fill, self._fill = self._fill, None
+        if fill is not None:
+            fill(self)
+        return self
+
+    def parse_known_args(self, args=None, namespace=None):  # (argparse parses a verb's arguments through this)
+        return super(Parser, self.filled()).parse_known_args(args, namespace)
+
+    def format_help(self) -> str:
+        return super(Parser, self.filled()).format_help()
+
+    def format_usage(self) -> str:
+        return super(Parser, self.filled()).format_usage()
 
     def error(self, message: str) -> None:  # one line, no usage block
         raise UsageError(message)
@@ -62,6 +88,8 @@ def output_directory(args: argparse.Namespace):
 # --- parameters -------------------------------------------------------------------------------------------------
 def value_options(parser: argparse.ArgumentParser) -> None:
     """``--E``, ``--nu``, ...: one option per parameter, in SI units."""
+    from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS
+
     for name, long_name in PARAMETER_LONG_NAMES.items():
         parser.add_argument(f"--{name}", type=float, default=None, metavar="VALUE",
                             help=f"{long_name} [{PARAMETER_UNITS[name]}]")
@@ -69,22 +97,30 @@ def value_options(parser: argparse.ArgumentParser) -> None:
 
 def parameter_options(parser: argparse.ArgumentParser) -> None:
     """``--preset`` and the parameters' values (``phase-diagram``, ``simulate``)."""
+    from mdr_events.app import inputs
+    from mdr_events.parameters import PRESETS
+
     parser.add_argument("--preset", choices=sorted(PRESETS), default=inputs.DEFAULT_PRESET,
                         help="parameter set of the paper (default paper-R30); the options below override it")
     value_options(parser)
 
 
 def _changes(args: argparse.Namespace) -> dict[str, float]:
+    from mdr_events.parameters import PARAMETER_UNITS
+
     return {name: getattr(args, name) for name in PARAMETER_UNITS if getattr(args, name) is not None}
 
 
 def parameters(args: argparse.Namespace) -> tuple[Parameters, dict[str, str]]:
     """The parameters of ``--preset`` with the options given, and attributes saying which came from the preset."""
+    from mdr_events.app import inputs
+
     return inputs.parameters(args.preset, _changes(args))
 
 
 def measured_parameters(args: argparse.Namespace) -> tuple[Parameters, dict[str, str]]:
     """The parameters of ``validate`` and ``fit``: ``--params FILE`` or ``--preset``, with the options given."""
+    from mdr_events.app import inputs
     from mdr_events.app.study import load_parameters_file
 
     if args.params is not None:
@@ -113,6 +149,8 @@ def profile_options(parser: argparse.ArgumentParser) -> None:
 def profile(args: argparse.Namespace, simulated: bool = True) -> SimulatedProfile:
     """The indenter of :func:`profile_options` (``None``: the paraboloid of the parameters' ``R``); ``simulated``: one
     the simulators take, else any the closed forms take (the phase diagram's)."""
+    from mdr_events.app import inputs
+
     if args.table is not None:
         given = f"--table {args.table}"
     elif args.flat_punch is not None:
@@ -129,6 +167,8 @@ def profile(args: argparse.Namespace, simulated: bool = True) -> SimulatedProfil
 
 def friction_options(parser: argparse.ArgumentParser) -> None:
     """``--friction LAW`` and ``--mu MU``."""
+    from mdr_events.contact.friction import FRICTION_LAWS
+
     parser.add_argument("--friction", choices=list(FRICTION_LAWS), default=None,
                         help="the cap on the springs' shifts: tau0 (the paper's, default), coulomb (mu times the "
                              "spring's normal force) or tau0+coulomb (their sum)")
@@ -138,6 +178,8 @@ def friction_options(parser: argparse.ArgumentParser) -> None:
 
 def friction(args: argparse.Namespace) -> FrictionLaw:
     """The ``--friction LAW [--mu MU]`` law (default the paper's ``tau0``)."""
+    from mdr_events.app import inputs
+
     try:
         return inputs.friction(args.friction, args.mu)
     except (TypeError, ValueError) as error:
@@ -149,11 +191,15 @@ def friction(args: argparse.Namespace) -> FrictionLaw:
 
 def contact(args: argparse.Namespace, params: Parameters, simulated: bool = True) -> Contact:
     """The contact of ``params`` with the indenter and the friction law of the options."""
+    from mdr_events.app import inputs
+
     return inputs.contact(params, profile(args, simulated), friction(args))
 
 
 def limit_options(parser: argparse.ArgumentParser) -> None:
     """``--limit NAME=VALUE`` (repeatable): raise a resource limit of :class:`~mdr_events.limits.Limits`."""
+    from mdr_events.limits import LIMIT_UNITS
+
     parser.add_argument("--limit", action="append", default=[], metavar="NAME=VALUE",
                         help="raise a resource limit, e.g. --limit steps=1e8 --limit memory=8GiB (names: "
                              + ", ".join(f"{name}: {meaning}" for name, meaning in LIMIT_UNITS.items())
@@ -162,6 +208,8 @@ def limit_options(parser: argparse.ArgumentParser) -> None:
 
 def limits(args: argparse.Namespace) -> Limits:
     """The limits of ``--limit`` options, on top of the defaults."""
+    from mdr_events.app import inputs
+
     return inputs.limits(args.limit)
 
 
@@ -169,6 +217,9 @@ def limits(args: argparse.Namespace) -> Limits:
 def measured_path_options(parser: argparse.ArgumentParser, what: str, start: bool = False) -> None:
     """The parameters (preset, file or values) and the path (scenario and angle, or a path file) of measured
     runs: ``validate`` and ``fit``."""
+    from mdr_events.models.motion import SCENARIO_NAMES
+    from mdr_events.parameters import PRESETS
+
     role = "the start of the fit" if start else "the parameters"
     source = parser.add_mutually_exclusive_group()
     source.add_argument("--preset", choices=sorted(PRESETS), default=None,
@@ -187,6 +238,7 @@ def measured_path_options(parser: argparse.ArgumentParser, what: str, start: boo
 
 def measured_motion(args: argparse.Namespace, params: Parameters, contact: Contact) -> tuple[Motion, str]:
     """The one path the runs took (:func:`measured_path_options`) as a motion, and a description of it."""
+    from mdr_events.app import inputs
     from mdr_events.app.study import load_path_file
 
     if args.path is not None:
@@ -208,6 +260,8 @@ def measured_motion(args: argparse.Namespace, params: Parameters, contact: Conta
 
 def column_options(parser: argparse.ArgumentParser, whose: str) -> None:
     """Your column names, units and time origin (``validate`` and ``fit``)."""
+    from mdr_events.io.candidates import CANDIDATE_QUANTITIES
+
     parser.add_argument("--names", default=None, metavar="Q=COLUMN,...",
                         help="your column names, e.g. time=t,normal_force=Fn (quantities: "
                              f"{', '.join(CANDIDATE_QUANTITIES)})")
@@ -238,6 +292,8 @@ def pairs(option: str, text: str | None, allowed: Sequence[str]) -> dict[str, st
 
 def time_origin(text: str) -> str | float:
     """``--time-origin``: a name of :data:`~mdr_events.analysis.validate.TIME_ORIGINS` or a finite time in s."""
+    from mdr_events.analysis.validate import TIME_ORIGINS
+
     if text in TIME_ORIGINS:
         return text
     try:

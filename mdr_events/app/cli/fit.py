@@ -4,24 +4,29 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
-from typing import Sequence
+from typing import TYPE_CHECKING, Sequence
 
-from mdr_events.analysis.fit import FREE_NAMES
 from mdr_events.app.cli import _options
 from mdr_events.app.cli._options import UsageError
-from mdr_events.app.jobs import FitJob
-from mdr_events.io.candidates import CANDIDATE_QUANTITIES, unit_factor
-from mdr_events.io.files import check_output_stem
+
+if TYPE_CHECKING:
+    from mdr_events.app.jobs import FitJob
 
 
 def add_arguments(commands: argparse._SubParsersAction) -> None:
-    """Add ``fit`` and its options."""
-    fitting = commands.add_parser(
-        "fit", help="fit the model's parameters to measured curves (CSV or netCDF)",
+    """Add ``fit``; its options are added when it is used (:func:`fill`)."""
+    commands.add_parser(
+        "fit", help="fit the model's parameters to measured curves (CSV or netCDF)", fill=fill,
         description="Fit free parameters of the continuum model to measured F_N, F_x, A or a (mdr_events.fit); "
                     "write <data>_fit.nc, .md and .png into --out; exit 0 if every free parameter is determined "
                     "and the fit describes the data, 1 if not (a parameter not identifiable, poorly determined or "
                     "at a bound; a warning such as residuals far above the noise), 2 for bad input.")
+
+
+def fill(fitting: argparse.ArgumentParser) -> None:
+    """Add the options of ``fit``."""
+    from mdr_events.analysis.fit import FREE_NAMES
+
     fitting.add_argument("data", metavar="DATA", help="the measurement: a CSV file with a header row, or netCDF")
     fitting.add_argument("--free", nargs="+", required=True, metavar="NAME",
                          help=f"the parameters to fit: {', '.join(FREE_NAMES)}")
@@ -68,6 +73,10 @@ def bounds(items: Sequence[str] | None) -> dict[str, tuple[float, float]]:
 
 def job(args: argparse.Namespace) -> FitJob:
     """The fit the options ask for."""
+    from mdr_events.app.jobs import FitJob
+    from mdr_events.io.candidates import CANDIDATE_QUANTITIES, unit_factor
+    from mdr_events.io.files import check_output_stem
+
     params, provenance = _options.measured_parameters(args)
     contact = _options.contact(args, params)  # a bad law is named before anything is written
     motion, description = _options.measured_motion(args, params, contact)

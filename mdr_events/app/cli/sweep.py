@@ -8,12 +8,17 @@ from mdr_events.app.cli._options import UsageError
 
 
 def add_arguments(commands: argparse._SubParsersAction) -> None:
-    """Add ``sweep`` and its options."""
-    sweeping = commands.add_parser(
+    """Add ``sweep``; its options are added when it is used (:func:`fill`)."""
+    commands.add_parser(
         "sweep", help="run the [sweep] table of a study file on dask (a local cluster, or --scheduler ADDRESS)",
+        fill=fill,
         description="Run a parameter sweep described by the [sweep] table of a study file (mdr_events.sweep): "
                     "<name>_sweep.zarr is written chunk by chunk (--resume continues an interrupted one) and "
                     "<name>_sweep.nc holds the labelled result.")
+
+
+def fill(sweeping: argparse.ArgumentParser) -> None:
+    """Add the options of ``sweep``."""
     sweeping.add_argument("study", help="the study file, e.g. study.toml")
     sweeping.add_argument("--scheduler", default=None, metavar="ADDRESS",
                           help="'local' (a LocalCluster on this machine, the default), 'serial', or a running dask "

@@ -7,14 +7,13 @@ import argparse
 import math
 import re
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from mdr_events.analysis.reports import ValidationReport
 from mdr_events.app.cli import _options
 from mdr_events.app.cli._options import UsageError
-from mdr_events.app.jobs import CONVERGENCE_STEM, ValidateJob, Validated
-from mdr_events.io.candidates import CANDIDATE_QUANTITIES
-from mdr_events.io.files import check_output_stem
-from mdr_events.validation import SCALE_MAX, SCALE_MIN
+
+if TYPE_CHECKING:
+    from mdr_events.app.jobs import ValidateJob, Validated
 
 #: A spacing in a run's file name: ``dx`` then a number and an optional unit (``run_dx2um.csv``, ``dx=2e-6.csv``).
 SPACING_IN_NAME = re.compile(r"(?:^|[^A-Za-z])dx[_=-]?(\d+(?:\.\d+)?(?:[eE][-+]?\d+)?)(nm|um|µm|mm|m)?(?![A-Za-z])")
@@ -24,12 +23,16 @@ CONVERGENCE_MIN_RUNS = 3
 
 
 def add_arguments(commands: argparse._SubParsersAction) -> None:
-    """Add ``validate`` and its options."""
-    check = commands.add_parser(
-        "validate", help="validate a simulator's runs (CSV or netCDF) against the exact continuum",
+    """Add ``validate``; its options are added when it is used (:func:`fill`)."""
+    commands.add_parser(
+        "validate", help="validate a simulator's runs (CSV or netCDF) against the exact continuum", fill=fill,
         description="Validate runs of a simulator against the exact continuum (mdr_events.validate); write "
                     "<run>.nc, <run>.md and <run>.png per run into --out; exit 0 if every run is within the "
                     "tolerance, 1 if not, 2 for bad input.")
+
+
+def fill(check: argparse.ArgumentParser) -> None:
+    """Add the options of ``validate``."""
     check.add_argument("runs", nargs="+", metavar="RUN", help="a run: a CSV file with a header row, or netCDF")
     _options.measured_path_options(check, "runs")
     check.add_argument("--out", required=True, help="output directory")
@@ -48,6 +51,8 @@ def add_arguments(commands: argparse._SubParsersAction) -> None:
 def spacings(args: argparse.Namespace) -> tuple[list[float] | None, str | None]:
     """The spacing of each run for a convergence study: ``--dx`` (one per run), else from every run's file
     name; ``None`` and why not (``None``: nothing to say) where there is no study."""
+    from mdr_events.validation import SCALE_MAX, SCALE_MIN
+
     if args.dx is not None:
         if len(args.dx) != len(args.runs):
             raise UsageError(f"--dx has {len(args.dx)} values and there are {len(args.runs)} runs; allowed: one "
@@ -75,6 +80,9 @@ def spacings(args: argparse.Namespace) -> tuple[list[float] | None, str | None]:
 
 def _stems(args: argparse.Namespace, study: bool) -> tuple[str, ...]:
     """Each run's report stem (its file's stem), checked: distinct, plain, not the convergence study's."""
+    from mdr_events.app.jobs import CONVERGENCE_STEM
+    from mdr_events.io.files import check_output_stem
+
     stems: dict[str, str] = {}
     for run in args.runs:
         stem = Path(run).stem
@@ -94,6 +102,9 @@ def _stems(args: argparse.Namespace, study: bool) -> tuple[str, ...]:
 
 def job(args: argparse.Namespace) -> tuple[ValidateJob, str | None]:
     """The validation the options ask for, and a note on the convergence study (``None``: nothing to say)."""
+    from mdr_events.app.jobs import ValidateJob
+    from mdr_events.io.candidates import CANDIDATE_QUANTITIES
+
     params, provenance = _options.measured_parameters(args)
     contact = _options.contact(args, params)
     motion, description = _options.measured_motion(args, params, contact)
@@ -112,6 +123,8 @@ def job(args: argparse.Namespace) -> tuple[ValidateJob, str | None]:
 
 def _print(validated: Validated, note: str | None, out: Path) -> int:
     """Write the reports (and the convergence study), print what they say; the exit status."""
+    from mdr_events.analysis.reports import ValidationReport
+    from mdr_events.app.jobs import ValidateJob
     from mdr_events.app.validation_files import console_summary, write_rendered
 
     lines = [note] if note else []
