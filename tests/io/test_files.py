@@ -42,7 +42,21 @@ def results(paper_module):
                       time_origin="path_start").dataset,
         "sweep": me.sweep({"tau0": [30e3, 42e3]}, "A", 20.0, base=p, scheduler="serial"),
         "universal_map": universal_map([1.0, 2.0], [0.0, 0.1], p, scheduler="serial"),
+        **_lammps_run(),
     }
+
+
+def _lammps_run() -> dict:
+    """A LAMMPS run (mdr_events.dem) where LAMMPS loads (the extra [lammps]); nothing elsewhere."""
+    from mdr_events.dem import runner
+
+    try:
+        runner.load_lammps()
+    except runner.LammpsUnavailable:
+        return {}
+    path = me.Path([(0.0, 0.0), (0.0, 1e-4), (0.0, -1e-5)], speed=1e-6)
+    frictionless = me.Contact.paper().replace(tau0=0.0)
+    return {"lammps_run": runner.run_lammps(frictionless, path, steps=1000)}
 
 
 @pytest.fixture(scope="module")
@@ -67,7 +81,12 @@ def test_every_result_reads_back_identical(results, tmp_path, name):
 def test_every_kind_of_result_has_its_schema_whatever_is_imported(results):
     # each producer registers its schema when imported; any import of mdr_events.* runs the package's
     # __init__ first, which imports them all
-    assert {dataset.attrs["content"] for dataset in results.values()} == set(datasets.registered_contents())
+    from mdr_events.dem.runner import LAMMPS_RUN_CONTENT
+
+    produced = {dataset.attrs["content"] for dataset in results.values()}
+    if "lammps_run" not in results:  # (without LAMMPS no run is made, and its schema is registered all the same)
+        produced.add(LAMMPS_RUN_CONTENT)
+    assert produced == set(datasets.registered_contents())
     code = "from mdr_events.io.datasets import registered_contents; print(registered_contents())"
     printed = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert printed.strip() == str(datasets.registered_contents())

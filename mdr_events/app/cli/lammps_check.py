@@ -68,6 +68,7 @@ def _friction(args: argparse.Namespace) -> FrictionLaw:
 
 def job(args: argparse.Namespace) -> LammpsCheckJob:
     """The check the options ask for."""
+    from mdr_events.app import inputs
     from mdr_events.app.jobs import LammpsCheckJob
     from mdr_events.dem.mapping import NORMAL_MODELS, TANGENTIAL_MODELS
     from mdr_events.io.paths import check_output_stem
@@ -77,7 +78,7 @@ def job(args: argparse.Namespace) -> LammpsCheckJob:
         if value not in allowed:
             raise UsageError(f"{option} {value!r} is not supported; allowed: {', '.join(allowed)}")
     params, provenance = _options.measured_parameters(args)
-    contact = _options.inputs.contact(params, None, _friction(args))
+    contact = inputs.contact(params, None, _friction(args))
     motion, description = _options.measured_motion(args, params, contact)
     if not (math.isfinite(args.tolerance) and 0 < args.tolerance <= 1):
         raise UsageError(f"--tolerance {args.tolerance!r} is not allowed; allowed: a number in (0, 1] (the largest "
