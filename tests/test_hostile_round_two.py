@@ -621,8 +621,10 @@ def test_a_sweep_checks_each_value_once_not_each_combination():
     swept = me.sweep({"dgamma0": [0.0], "dgamma1": [0.0]}, "A", 20.0, base=PAPER, scheduler="serial",
                      friction=coulomb, quantities=("critical_angle_A",))
     assert not bool(swept["failed"].any())
-    with pytest.raises(ValueError, match="Parameters.dgamma0=0.1 is not allowed with the friction law 'coulomb'"):
-        me.sweep({"dgamma0": [0.0, 0.1], "dgamma1": [0.0]}, "A", 20.0, base=PAPER, scheduler="serial", friction=coulomb)
+    combined = me.FrictionLaw("tau0+coulomb", mu=0.3)  # (Coulomb's law alone now runs with adhesion)
+    with pytest.raises(ValueError, match="Parameters.dgamma0=0.1 is not allowed with the friction law 'tau0\\+coulomb'"):
+        me.sweep({"dgamma0": [0.0, 0.1], "dgamma1": [0.0]}, "A", 20.0, base=PAPER, scheduler="serial",
+                 friction=combined)
 
 
 @pytest.mark.parametrize("call, message", [

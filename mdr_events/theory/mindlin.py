@@ -16,6 +16,14 @@ until the branch reaches the point its predecessor started from, where that one 
 unloading from ``(X, F₀(X))`` runs to ``(−X, −F₀(X))`` and rejoins the virgin curve (Mindlin & Deresiewicz
 1953; the loops of a fretting contact).
 
+With adhesion (Heß's rule, (8)–(9)) the springs beyond ``x_c``, where ``g(x_c) = d``, are in tension and hold no
+Coulomb shift: the cap is ``K a + κ max(d − g(ξ), 0)``, with ``a >= x_c`` the contact radius that the history pins
+between the branches (the ``radius`` argument; default the ``Δγ0`` branch's, indented to ``d``). The virgin curve is
+then ``2G* a min(u_x, K a) + μ (F_N^H(d) − F_N^H(d − max(u_x − K a, 0)/κ))`` with ``F_N^H`` the force of the
+compressed zone alone, the non-adhesive one of the depth (derived in
+:func:`mdr_events.theory.symbolic.derive_adhesive_friction_model`): Coulomb's part does not depend on ``Δγ`` at all,
+and full slip is ``τ0 π a² + μ F_N^H(d)``, not ``μ F_N``, which the tensile springs lower.
+
 Along scenario A's path (14), ``x = d / tan α`` from first contact without adhesion, a spring attached at depth
 ``d_ξ`` holds the shift ``(d − d_ξ)/tan α`` against the cap ``K a + κ (d − d_ξ)``: the Coulomb part grows with the
 shift, so where ``cot α <= κ`` no spring ever slides, and where ``cot α > κ`` the centre's spring slides first, when
@@ -58,12 +66,25 @@ def coulomb_cap_ratio(friction: FrictionLaw, params: Parameters) -> float:
 
 def _checked(depth, friction, params: Parameters, profile) -> tuple[float, FrictionLaw, Profile]:
     depth = check_real("depth", depth, "a finite number > 0 (m)", lambda value: value > 0.0)
-    friction = as_friction_law(friction)
-    for name in ("dgamma0", "dgamma1"):
-        if getattr(params, name) != 0.0:
-            raise ValueError(f"Parameters.{name}={getattr(params, name)!r} is not allowed here; allowed: 0 (the "
-                             "closed forms of tangential loading hold for a contact without adhesion)")
-    return depth, friction, _indenter(profile, params)
+    return depth, as_friction_law(friction), _indenter(profile, params)
+
+
+def _contact_radius(depth: float, params: Parameters, profile: Profile, radius) -> float:
+    """The radius ``a`` of the contact at ``depth`` (m): ``radius`` checked, or without it the radius indented to
+    ``depth`` (the ``Δγ0`` branch (9); without adhesion the compressed zone's ``x_c``). A radius below ``x_c`` (where
+    ``g(x_c) = d``) is no contact at that depth: every spring under the indenter is in contact."""
+    zone = _radius(depth, profile)
+    if radius is None:
+        if params.dgamma0 == 0.0:
+            return zone
+        return float(theory_of(profile).branch_radius(depth, profile, params, params.dgamma0))
+    allowed = f"a finite radius >= the compressed zone's x_c = {zone!r} m at depth {depth!r} m, or None"
+    return check_real("radius", radius, allowed, lambda value: value >= zone * (1.0 - _RADIUS_SHARE))
+
+
+#: A given contact radius may lie this share below the compressed zone's ``x_c`` (the rounding of a radius found
+#: by a root of (9) at a depth whose zone it equals, without adhesion).
+_RADIUS_SHARE = 1e-12
 
 
 def _indenter(profile: Profile | None, params: Parameters) -> Profile:
@@ -86,28 +107,34 @@ _NO_ADHESION = Parameters(E=1.0, nu=0.0, R=1.0, tau0=0.0, dgamma0=0.0, dgamma1=0
 
 
 def full_slip_shift(depth: float, friction: FrictionLaw | str | None, params: Parameters,
-                    profile: Profile | None = None) -> float:
-    """The shift ``u_x`` from rest at which every spring slides: the centre's cap ``K a + κ d`` (m)."""
+                    profile: Profile | None = None, radius: float | None = None) -> float:
+    """The shift ``u_x`` from rest at which every spring slides: the centre's cap ``K a + κ d`` (m)
+    (``adhesive_full_slip_shift``; ``radius`` as for :func:`virgin_force`)."""
     depth, friction, profile = _checked(depth, friction, params, profile)
-    return _tau0_per_radius(friction, params) * _radius(depth, profile) + coulomb_cap_ratio(friction, params) * depth
+    contact = _contact_radius(depth, params, profile, radius)
+    return _tau0_per_radius(friction, params) * contact + coulomb_cap_ratio(friction, params) * depth
 
 
 def full_slip_force(depth: float, friction: FrictionLaw | str | None, params: Parameters,
-                    profile: Profile | None = None) -> float:
-    """The force of full slip, ``τ0 π a² + μ F_N(d)`` (N; either part as the law has it)."""
-    return float(virgin_force(np.inf, depth, friction, params, profile))
+                    profile: Profile | None = None, radius: float | None = None) -> float:
+    """The force of full slip, ``τ0 π a² + μ F_N^H(d)`` (N; either part as the law has it; ``F_N^H`` the compressed
+    springs' push, ``F_N`` itself without adhesion: ``adhesive_full_slip_force``; ``radius`` as for
+    :func:`virgin_force`)."""
+    return float(virgin_force(np.inf, depth, friction, params, profile, radius))
 
 
-def _virgin_curve(depth: float, friction: FrictionLaw, params: Parameters, profile: Profile):
-    """``F₀`` as a function of arrays of shifts (checked arguments)."""
-    radius = _radius(depth, profile)
-    cap = _tau0_per_radius(friction, params) * radius
+def _virgin_curve(depth: float, friction: FrictionLaw, params: Parameters, profile: Profile, contact=None):
+    """``F₀`` as a function of arrays of shifts (checked arguments): the ``τ0`` part over the contact of radius
+    ``contact`` (:func:`_contact_radius`), Coulomb's over the compressed zone ``x_c``."""
+    radius = _radius(depth, profile)  # x_c: every spring of a contact without adhesion
+    contact = _contact_radius(depth, params, profile, contact)
+    cap = _tau0_per_radius(friction, params) * contact
     kappa = coulomb_cap_ratio(friction, params)
     full = friction.coulomb_mu * float(power_law.normal_force(depth, radius, profile, params))
 
     def curve(values: np.ndarray) -> np.ndarray:
         magnitude = np.abs(values)
-        force = 2.0 * params.G_star * radius * np.minimum(magnitude, cap)
+        force = 2.0 * params.G_star * contact * np.minimum(magnitude, cap)
         if kappa > 0.0:
             sliding = np.minimum(np.maximum(magnitude - cap, 0.0), kappa * depth)  # the centre's cap: full slip
             if isinstance(profile, FlatPunch):  # every spring compressed by d: F_N is linear in the depth
@@ -124,9 +151,10 @@ def _virgin_curve(depth: float, friction: FrictionLaw, params: Parameters, profi
 
 
 def virgin_force(shift, depth: float, friction: FrictionLaw | str | None, params: Parameters,
-                 profile: Profile | None = None):
+                 profile: Profile | None = None, radius: float | None = None):
     """``F₀``: the tangential force (N) at a shift ``u_x`` of the indenter from rest (m, any sign: ``F₀`` is odd),
-    at the constant depth ``d`` of a contact without adhesion (module docstring).
+    at the constant depth ``d`` (module docstring; with adhesion ``adhesive_virgin_force``: the ``τ0`` part over the
+    contact of radius ``a``, Coulomb's part Cattaneo–Mindlin's of the compressed zone ``x_c``, free of ``Δγ``).
 
     Parameters
     ----------
@@ -137,20 +165,24 @@ def virgin_force(shift, depth: float, friction: FrictionLaw | str | None, params
     friction : FrictionLaw or str or None
         The friction law (``None``: the paper's ``"tau0"``).
     params : Parameters
-        The material and ``τ0``; ``Δγ0`` and ``Δγ1`` must be 0.
+        The material, ``τ0`` and ``Δγ0`` (the default radius).
     profile : PowerLaw or FlatPunch, optional
         The indenter; default the paraboloid of ``params.R``.
+    radius : float, optional
+        The contact radius ``a`` (m, at least the compressed zone's ``x_c``): an adhesive contact's radius is pinned
+        by its history between the branches (9). Default: the ``Δγ0`` branch's at ``d`` (indented to ``d``), ``x_c``
+        without adhesion.
     """
     depth, friction, profile = _checked(depth, friction, params, profile)
     values = real_array("shift", shift, "real numbers (m)")
     if np.any(np.isnan(values)):
         raise ValueError(f"shift={shift!r} is not allowed; allowed: real numbers, not nan (m)")
-    force = _virgin_curve(depth, friction, params, profile)(values)
+    force = _virgin_curve(depth, friction, params, profile, radius)(values)
     return float(force) if np.ndim(shift) == 0 else force
 
 
 def tangential_force(x, depth: float, friction: FrictionLaw | str | None, params: Parameters,
-                     profile: Profile | None = None) -> np.ndarray:
+                     profile: Profile | None = None, radius: float | None = None) -> np.ndarray:
     """The tangential force (N) along a tangential path at a constant depth, springs at rest at ``x[0]``.
 
     Masing's rules with memory (module docstring) on the samples ``x`` (m): a reversal is where the motion
@@ -160,7 +192,7 @@ def tangential_force(x, depth: float, friction: FrictionLaw | str | None, params
     ----------
     x : array_like
         The indenter's tangential position at successive instants (1-D, m).
-    depth, friction, params, profile
+    depth, friction, params, profile, radius
         As for :func:`virgin_force`.
     """
     positions = real_array("x", x, "a 1-D array of finite tangential positions (m)")
@@ -170,7 +202,7 @@ def tangential_force(x, depth: float, friction: FrictionLaw | str | None, params
         raise ValueError(f"x of shape {positions.shape}{bad} is not allowed; allowed: a non-empty 1-D array of finite "
                          "tangential positions (m)")
     depth, friction, profile = _checked(depth, friction, params, profile)
-    curve = _virgin_curve(depth, friction, params, profile)
+    curve = _virgin_curve(depth, friction, params, profile, radius)
     shifts = positions - positions[0]
     force = np.empty_like(shifts)
     turns: list[tuple[float, float]] = []  # reversal points (shift, force), the last the current branch's start
@@ -197,7 +229,7 @@ def tangential_force(x, depth: float, friction: FrictionLaw | str | None, params
 
 
 def loop_energy(amplitude, depth: float, friction: FrictionLaw | str | None, params: Parameters,
-                profile: Profile | None = None):
+                profile: Profile | None = None, radius: float | None = None):
     """Energy dissipated per cycle ``x: −X → X → −X`` at a constant depth once the loop is closed (J; Mindlin &
     Deresiewicz 1953 for the sphere's Coulomb law):
 
@@ -214,17 +246,17 @@ def loop_energy(amplitude, depth: float, friction: FrictionLaw | str | None, par
     ----------
     amplitude : float or array_like
         The loop's half-width ``X`` (m, >= 0).
-    depth, friction, params, profile
+    depth, friction, params, profile, radius
         As for :func:`virgin_force`.
     """
     depth, friction, profile = _checked(depth, friction, params, profile)
     values = real_array("amplitude", amplitude, "finite numbers >= 0 (m)")
     if not np.all(np.isfinite(values) & (values >= 0.0)):
         raise ValueError(f"amplitude={amplitude!r} is not allowed; allowed: finite numbers >= 0 (m)")
-    curve = _virgin_curve(depth, friction, params, profile)
-    kinks = [full_slip_shift(depth, friction, params, profile)]
+    curve = _virgin_curve(depth, friction, params, profile, radius)
+    kinks = [full_slip_shift(depth, friction, params, profile, radius)]
     if friction.uses_tau0 and friction.uses_mu:
-        kinks.append(_tau0_per_radius(friction, params) * _radius(depth, profile))
+        kinks.append(_tau0_per_radius(friction, params) * _contact_radius(depth, params, profile, radius))
 
     def energy(X: float) -> float:
         if X == 0.0:

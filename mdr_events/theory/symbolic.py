@@ -54,6 +54,8 @@ __all__ = [
     "POWER_LAW_KEYS",
     "derive_friction_model",
     "FRICTION_KEYS",
+    "derive_adhesive_friction_model",
+    "ADHESIVE_FRICTION_KEYS",
     "SYMBOLS",
 ]
 
@@ -702,6 +704,105 @@ def friction_model_afresh() -> dict[str, Relation]:
     return out
 
 
+#: Keys of the relations of Coulomb's law with adhesion (:func:`derive_adhesive_friction_model`).
+ADHESIVE_FRICTION_KEYS = ("compression_boundary", "compression_boundary_rate", "adhesive_friction_cap",
+                          "adhesive_virgin_force", "adhesive_full_slip_shift", "adhesive_full_slip_force",
+                          "compressed_normal_force")
+
+
+@functools.cache
+def derive_adhesive_friction_model() -> dict[str, Relation]:
+    """Coulomb's law of the springs in an adhesive contact (Heß's rule (8)–(9) with the caps of
+    :func:`derive_friction_model`).
+
+    A spring at ``ξ`` is compressed where ``d > g(ξ)``, in tension (the adhesive annulus) where ``d < g(ξ) <= g(a)``;
+    its cap is ``ū(ξ) = K a + κ max(d − g(ξ), 0)``. The boundary ``x_c`` (``g(x_c) = d``) is the non-adhesive radius
+    (16) of the depth, whatever the adhesive radius ``a >= x_c`` does: it moves with the depth alone,
+    ``dx_c/dd = 1/g'(x_c)``. The cap is continuous there (``K a`` on both sides), so a spring crossing ``x_c`` keeps
+    its shift. Under ``"coulomb"`` alone (``K = 0``) every spring in tension slides with zero shift (it follows the
+    indenter) and enters compression at ``x_c`` with none, as a spring attaching to a contact without adhesion does:
+    the compressed zone is the non-adhesive contact of the same depth history. At a constant depth, from rest,
+    the derivation sums the springs (stick, compressed at the cap, tensile at ``K a``) and checks that
+    ``F_x = τ0 π a² + μ (F_N^H(d) − F_N^H(d − (u_x − K a)/κ))`` for ``u_x >= K a``: the Coulomb part is
+    Cattaneo–Mindlin's of the compressed zone, free of ``Δγ`` and of ``a``; full slip is ``τ0 π a² + μ F_N^H(d)``,
+    ``F_N^H(d) = F_N(d, a) + 2E* ∫_{x_c}^a (g − d) dξ`` the compressed springs' push alone.
+    """
+    return {rel.key: rel for rel in _cached("adhesive_friction_model",
+                                            lambda: list(adhesive_friction_model_afresh().values()))}
+
+
+def adhesive_friction_model_afresh() -> dict[str, Relation]:
+    """The derivation of :func:`derive_adhesive_friction_model` with SymPy, bypassing any cache."""
+    out: dict[str, Relation] = {}
+
+    def add(rel: Relation) -> None:
+        out[rel.key] = rel
+
+    profile = derive_power_law().rhs  # g(ξ) = κ_n c ξⁿ
+    model = derive_power_law_model()
+    hertz_radius = model["power_law_hertz_radius"].rhs
+    boundary = _single_positive(sp.solve(sp.Eq(profile, d), x), "compression boundary")
+    if not _vanishes(boundary - hertz_radius):
+        raise RuntimeError("the compression boundary g(x_c) = d is not the non-adhesive radius (16)")
+    add(Relation("compression_boundary", "(7)", "boundary x_c between compressed and tensile springs, g(x_c) = d: the "
+                 "non-adhesive radius of the depth", x, boundary, (d, c, n)))
+    rate = sp.simplify(sp.diff(boundary, d))
+    if not _vanishes(rate * sp.diff(profile, x).subs(x, boundary) - 1):
+        raise RuntimeError("dx_c/dd is not 1/g'(x_c)")
+    add(Relation("compression_boundary_rate", "(7)", "dx_c/dd: the boundary moves with the depth alone", 
+                 sp.Derivative(x, d), rate, (d, c, n)))
+    kappa = derive_friction_model()["coulomb_critical_shift"].rhs.subs(u_z, 1)  # κ = μ E*/G*
+    tau0_cap = derive()["critical_shift"].rhs  # K a (13)
+    cap = tau0_cap + kappa * sp.Max(d - profile, 0)
+    if not (_vanishes(cap.subs(x, boundary) - tau0_cap) and _vanishes(cap.subs(x, 0) - tau0_cap - kappa * d)):
+        raise RuntimeError("the cap is not K a at the compression boundary and K a + κ d at the centre")
+    add(Relation("adhesive_friction_cap", "(13)", "the cap of the spring at x: K a + mu (E*/G*) max(d - g(x), 0)",
+                 u_bar, cap, (x, d, a, tau0, mu, c, n, E_star, G_star)))
+    _derive_adhesive_virgin_curve(add, profile, boundary, kappa, tau0_cap, model)
+    return out
+
+
+def _vanishes(expr: sp.Expr) -> bool:
+    """Whether ``expr`` is identically 0 where the springs are compressed (``d > 0``: powers of ``d`` combine)."""
+    depth = sp.Symbol("d_positive", positive=True)
+    expr = sp.expand_power_base(sp.expand(expr.subs(d, depth)), force=True)
+    return sp.simplify(sp.powsimp(expr, force=True)) == 0
+
+
+def _derive_adhesive_virgin_curve(add: AddRelation, profile: sp.Expr, boundary: sp.Expr, kappa: sp.Expr,
+                                  tau0_cap: sp.Expr, model: dict[str, Relation]) -> None:
+    """The virgin curve at a constant depth ``d`` of a contact of radius ``a >= x_c`` from rest, summed over the
+    springs: those sticking (``ξ < c'``, shift ``u_x``), the compressed ones at their caps (``c' < ξ < x_c``) and the
+    tensile ones at ``K a`` (``x_c < ξ < a``); checked against Cattaneo–Mindlin's form of the compressed zone."""
+    pinned_force = model["power_law_normal_force"].rhs  # F_N(d, a) (10), any a
+    hertz_force = pinned_force.subs(a, boundary)  # F_N^H(d): the springs under x_c
+    lowered = d - (u_x - tau0_cap) / kappa  # the compressed springs with K a + κ (d − g) > u_x stick
+    stick = boundary.subs(d, lowered)
+    springs = 2 * G_star * (u_x * stick + sp.integrate(tau0_cap + kappa * (d - profile), (x, stick, boundary))
+                            + tau0_cap * (a - boundary))
+    closed = sp.pi * tau0 * a**2 + mu * (hertz_force - hertz_force.subs(d, lowered))
+    if not _vanishes(springs - closed):
+        raise RuntimeError("the adhesive virgin curve of the springs is not tau0 pi a^2 + mu (F_H(d) - F_H(d'))")
+    if sp.simplify(2 * G_star * tau0_cap * a - sp.pi * tau0 * a**2) != 0:
+        raise RuntimeError("the tau0 part of full slip is not tau0 pi a^2")
+    arguments = (u_x, d, a, tau0, mu, c, n, E_star, G_star)
+    add(Relation("adhesive_virgin_force", "", "tangential force of an adhesive power-law contact of radius a at depth "
+                 "d shifted by u_x from rest, K a <= u_x <= K a + mu (E*/G*) d (the Coulomb part is Cattaneo-Mindlin's "
+                 "of the compressed zone, free of dgamma)", F_x, closed, arguments))
+    add(Relation("adhesive_full_slip_shift", "", "shift from rest at which every spring of an adhesive contact slides: "
+                 "the centre's cap K a + mu (E*/G*) d", u_x, sp.solve(sp.Eq(lowered, 0), u_x)[0],
+                 (d, a, tau0, mu, E_star, G_star)))
+    tension = 2 * E_star * sp.integrate(profile - d, (x, boundary, a))  # the tensile springs' pull
+    if not _vanishes(pinned_force + tension - hertz_force):
+        raise RuntimeError("F_N(d, a) plus the tensile springs' pull is not the compressed springs' push")
+    add(Relation("compressed_normal_force", "(10)", "normal force of the compressed springs alone, F_N(d, a) + "
+                 "2 E* int_{x_c}^a (g - d): the non-adhesive force of the depth", F_N, hertz_force, (d, c, n, E_star)))
+    add(Relation("adhesive_full_slip_force", "", "tangential force of full slip of an adhesive contact: "
+                 "tau0 pi a^2 + mu F_N^H(d)", F_x, sp.pi * tau0 * a**2 + mu * hertz_force, (d, a, tau0, mu, c, n, E_star)))
+    if not _vanishes(closed.subs(u_x, tau0_cap + kappa * d) - sp.pi * tau0 * a**2 - mu * hertz_force):
+        raise RuntimeError("the virgin curve at the centre's cap is not the force of full slip")
+
+
 def _reduce_to_polynomial(depth_a: sp.Expr, depth_b: sp.Expr, divide_by: sp.Expr | None = None) -> sp.Expr:
     """Eliminate ``d`` from ``d = depth_a(a)`` and ``d = depth_b(a)``.
 
@@ -746,6 +847,7 @@ def relations() -> dict[str, Relation]:
     ordered.update(model)
     ordered.update(derive_power_law_model())
     ordered.update(derive_friction_model())
+    ordered.update(derive_adhesive_friction_model())
     return ordered
 
 
@@ -757,9 +859,11 @@ def relation(key: str) -> Relation:
         return derive_power_law_model()[key]
     if key in FRICTION_KEYS:
         return derive_friction_model()[key]
+    if key in ADHESIVE_FRICTION_KEYS:
+        return derive_adhesive_friction_model()[key]
     rels = derive()
     try:
         return rels[key]
     except KeyError:
-        known = sorted([*rels, "profile_power_law", *POWER_LAW_KEYS, *FRICTION_KEYS])
+        known = sorted([*rels, "profile_power_law", *POWER_LAW_KEYS, *FRICTION_KEYS, *ADHESIVE_FRICTION_KEYS])
         raise KeyError(f"unknown relation {key!r}; known: {known}") from None

@@ -32,7 +32,8 @@ reaches the centre or the edge, and re-sticks when its level turns back; these e
 event functions. The algebraic form ``F_x = 2G* ∫_0^a clip(x − Y, −ū, ū) dξ`` checks the
 integrated force (:func:`algebraic_tangential_force`).
 
-Limits: the profile is the paraboloid (4) and the cap the paper's ``ū = π a τ0/(2G*)`` (13).
+Friction laws: the cap ``ū(ξ) = K a + κ (d − g(ξ))`` (:mod:`.caps`); with adhesion Coulomb's law alone runs as the
+compressed zone beside the contact (``PathSolution.compressed``), both parts together are refused.
 """
 
 from .anchors import AnchorMap, Piece

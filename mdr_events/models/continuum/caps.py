@@ -5,8 +5,13 @@ A spring at ``ξ`` of a contact of radius ``a`` at depth ``d`` slides once its s
 spring, and ``κ = μ E*/G*`` Coulomb's, proportional to the spring's compression. Each cap's *level*, where the
 anchors of its springs sit, is ``x − cap (K a + κ d)`` in the coordinates the cap sees the anchors in
 (:meth:`~.anchors.AnchorMap.seen_by`: ``Y − cap κ g``), so the slip zones are laid out as for ``τ0`` alone.
-Coulomb's part needs a contact without adhesion (:func:`check_supported`): then every spring in contact is
-compressed and springs attach along ``d0 = g``.
+Without adhesion every spring in contact is compressed and springs attach along ``d0 = g``. With adhesion the springs
+beyond ``x_c`` (``g(x_c) = d``) are in tension, with the cap ``K a`` alone
+(:func:`~mdr_events.theory.symbolic.derive_adhesive_friction_model`). Coulomb's law alone (``K = 0``) is then exact by
+the compressed zone (:func:`compressed_zone_alone`): the springs in tension slide with no shift and enter compression
+at ``x_c`` with none, as springs attaching to a contact without adhesion do, so the tangential force is that of the
+non-adhesive contact of the same path (``solve_path`` runs it beside the adhesive contact's radius). Both parts with
+adhesion, and Coulomb's part on the flat punch, are refused (:func:`check_supported`; the discrete method runs them).
 """
 
 from __future__ import annotations
@@ -43,10 +48,18 @@ def caps_of(friction: FrictionLaw, params: Parameters) -> Caps:
     return Caps(K, mindlin.coulomb_cap_ratio(friction, params))
 
 
+def compressed_zone_alone(caps: Caps, dgamma0: float, dgamma1: float) -> bool:
+    """Whether the tangential force is the compressed zone's alone: Coulomb's caps without ``τ0``'s part (``K = 0``)
+    in an adhesive contact (``Δγ0`` or ``Δγ1`` > 0; module docstring)."""
+    return caps.K == 0.0 and caps.kappa > 0.0 and (dgamma0 != 0.0 or dgamma1 != 0.0)
+
+
 def check_supported(friction: FrictionLaw, params: Parameters, profile=None) -> None:
-    """Refuse Coulomb's part with adhesion: springs in tension hold no Coulomb shift, and the anchors laid along
-    the adhesive branch are no longer seen as single pieces by the caps (the discrete method runs it); and with
-    the flat punch, whose springs all rest on ``g = 0`` (the caps' coordinates have no ``g`` to follow)."""
+    """Refuse both parts of a law with adhesion: the springs in tension keep ``τ0``'s cap ``K a`` while the compressed
+    ones add Coulomb's, one play operator per spring on anchors laid along the adhesive branch, which the caps no
+    longer see as single pieces (not done yet: the discrete method runs it); and Coulomb's part with the flat punch,
+    whose springs all rest on ``g = 0`` (the caps' coordinates have no ``g`` to follow). Coulomb's law alone with
+    adhesion is exact (:func:`compressed_zone_alone`)."""
     if friction.coulomb_mu == 0.0:  # no Coulomb part (μ = 0 adds nothing to the caps)
         return
     if isinstance(profile, FlatPunch):
@@ -55,8 +68,9 @@ def check_supported(friction: FrictionLaw, params: Parameters, profile=None) -> 
                          "(simulate(..., method='discrete'))")
     adhesive = [f"Parameters.{name}={getattr(params, name)!r}" for name in ("dgamma0", "dgamma1")
                 if getattr(params, name) != 0.0]
-    if adhesive:
+    if adhesive and caps_of(friction, params).K > 0.0:
         raise ValueError(f"{' and '.join(adhesive)} {'is' if len(adhesive) == 1 else 'are'} not allowed with the "
-                         f"friction law {friction.law!r} in the continuum method; allowed: dgamma0 = dgamma1 = 0 "
-                         "(Coulomb's caps are exact there without adhesion), or the discrete model "
+                         f"friction law {friction.law!r} in the continuum method (τ0's cap in the adhesive annulus "
+                         "beside Coulomb's in the compressed zone is not done yet); allowed: dgamma0 = dgamma1 = 0, "
+                         "tau0=0 or the law 'coulomb' (exact with adhesion), or the discrete model "
                          "(simulate(..., method='discrete'))")

@@ -51,15 +51,18 @@ def solution_extrema(solution: PathSolution) -> dict[str, float]:
     out: dict[str, float] = {}
     scan = scan_spans(solution)
     for quantity in EXTREMA_QUANTITIES:
-        found = {kind: extremum(solution, quantity, largest, scan) for kind, largest in EXTREMA_KINDS.items()}
+        # (Coulomb's law alone with adhesion: F_x and its end are the compressed zone's run)
+        source = solution.compressed if quantity == "tangential_force" and solution.compressed else solution
+        found = {kind: extremum(source, quantity, largest, scan if source is solution else None)
+                 for kind, largest in EXTREMA_KINDS.items()}
         size = max(abs(value) for _, value in found.values())
         for kind, largest in EXTREMA_KINDS.items():
             time, value = found[kind]
             # the 0 after the contact only where it is beyond the extremum by more than rounding (else the
             # extremum's earlier time stays, as for every tie)
             beyond = (VALUE_AFTER_CONTACT - value) * (1.0 if largest else -1.0)
-            if solution.ended_by_contact and beyond > EXTREMUM_TIE * size:
-                time, value = solution.end_time, VALUE_AFTER_CONTACT
+            if source.ended_by_contact and beyond > EXTREMUM_TIE * size:
+                time, value = source.end_time, VALUE_AFTER_CONTACT
             if abs(value) <= EXTREMUM_TIE * size:
                 value = 0.0  # zero to rounding of the run's size (e.g. F_x at first contact): exactly zero
             value_name, time_name = extremum_names(quantity, kind)

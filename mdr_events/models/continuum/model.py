@@ -16,7 +16,7 @@ from mdr_events.models.paths import Path
 from mdr_events.contact.adhesion import AdhesionLaw, law_of
 from .branch import Branch
 from .edges import edge_of
-from .caps import caps_of, check_supported
+from .caps import Caps, caps_of, check_supported, compressed_zone_alone
 from .state import Regime
 from .tolerances import NEGLIGIBLE_SHARE, PIECE_SHARE, SEGMENT_RESOLUTION, Tolerances
 
@@ -39,6 +39,10 @@ class ContinuumModel:
         Its two parts, ``ū(ξ) = K a + κ (d − g(ξ))``.
     K : float
         Critical shift per contact radius of ``τ0``'s part, ``ū(a) = K a`` (13) (0 for ``"coulomb"``).
+    zone_params : Parameters or None
+        Coulomb's law alone with adhesion (:func:`~.caps.compressed_zone_alone`): the parameters of the compressed
+        zone, the contact without adhesion whose run gives the tangential force (``solve_path``); this model's own
+        springs then hold no shift (``caps`` frictionless). ``None`` otherwise.
     """
 
     def __init__(self, params: Parameters, tolerances: Tolerances, profile: PowerLaw | FlatPunch | None = None,
@@ -51,6 +55,11 @@ class ContinuumModel:
         self.adhesion = law_of(params, adhesion)
         self.grow, self.shrink = edge_of(self.adhesion, params, profile)
         self.caps = caps_of(friction, params)
+        self.zone_params = None
+        dgammas = (getattr(self.adhesion, "dgamma0", 0.0), getattr(self.adhesion, "dgamma1", 0.0))
+        if compressed_zone_alone(self.caps, *dgammas):
+            self.zone_params = params.replace(dgamma0=0.0, dgamma1=0.0)
+            self.caps = Caps(0.0, 0.0)
         self.K = self.caps.K
 
     def normal_force(self, depth, radius):

@@ -34,6 +34,10 @@ class PathSolution:
         End of the run (s from first contact): the pull-off, or the end of the path.
     path : Path, optional
         The path solved (a referee checks that a solution at hand is of the path it judges).
+    compressed : PathSolution, optional
+        Coulomb's law alone with adhesion (:func:`~.caps.compressed_zone_alone`): the run of the compressed zone, the
+        same path without adhesion, whose tangential force, work and slip are the contact's (its springs in tension
+        slide with no shift); ``None`` otherwise.
     """
 
     model: ContinuumModel
@@ -42,6 +46,7 @@ class PathSolution:
     t_contact: float = 0.0
     end_time: float = 0.0
     path: object = None
+    compressed: "PathSolution | None" = None
 
     @property
     def params(self) -> Parameters:
@@ -98,12 +103,29 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     else:
         force = span.interpolant(a / span.scale if span.variable is Variable.RADIUS else t)[0]
     out["tangential_force"] = force
+    if solution.compressed is not None:
+        out["tangential_force"], zone_sliding = _compressed_zone(solution.compressed, times, a)
+        if sliding:
+            out["sliding_fraction"] = zone_sliding
+        return out
     if sliding:
         shift = model.caps.centre_shift(a, d)
         zones = sum(span.anchors.seen_by(cap, model.caps.kappa).zone_sizes(cap, x - cap * shift, a) for cap in Cap)
         with np.errstate(invalid="ignore", divide="ignore"):
             out["sliding_fraction"] = np.where(a > 0, np.minimum(zones / a, 1.0), np.nan)
     return out
+
+
+def _compressed_zone(zone: PathSolution, times: np.ndarray, radius: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The tangential force of the compressed zone's run ``zone`` at ``times`` (0 where the zone has no contact) and
+    the sliding fraction of the contact of radius ``radius``: the zone's sliding springs and every spring in tension
+    (``x_c < ξ < a``: a zero cap)."""
+    filled = evaluate(zone, np.atleast_1d(np.asarray(times, dtype=float)))
+    force = np.nan_to_num(filled["tangential_force"])
+    x_c = np.nan_to_num(filled["contact_radius"])
+    sliding_springs = np.nan_to_num(filled["sliding_fraction"]) * x_c + (radius - x_c)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return force, np.where(radius > 0, np.clip(sliding_springs / radius, 0.0, 1.0), np.nan)
 
 
 def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]:
@@ -201,6 +223,8 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
     """
     if quantity not in EXTREMUM_QUANTITIES:
         raise ValueError(f"quantity={quantity!r} is not allowed; allowed: {', '.join(EXTREMUM_QUANTITIES)}")
+    if quantity == "tangential_force" and solution.compressed is not None:  # the compressed zone's spans hold F_x
+        return extremum(solution.compressed, quantity, largest)
     scan = scan_spans(solution) if scan is None else scan
     sign = 1.0 if largest else -1.0
     candidates = []
@@ -257,7 +281,9 @@ def _scalar_quantity(solution: PathSolution, index: int, time: float, quantity: 
         a = model.shrink.radius(max(d, model.shrink.jump_off_depth), rtol)
     else:
         a = span.pinned_radius
-    if span.interpolant is None:
+    if solution.compressed is not None:
+        force = float(_compressed_zone(solution.compressed, np.array([time]), np.array([a]))[0][0])
+    elif span.interpolant is None:
         force = span.force
     else:
         force = float(span.interpolant(a / span.scale if span.variable is Variable.RADIUS
@@ -278,6 +304,9 @@ def algebraic_tangential_force(solution: PathSolution, times: np.ndarray) -> np.
     """
     model = solution.model
     times = np.asarray(times, dtype=float)
+    if solution.compressed is not None:  # the compressed zone's anchors (0 where it has no contact)
+        zone = np.nan_to_num(algebraic_tangential_force(solution.compressed, times))
+        return np.where(times <= solution.end_time, zone, np.nan)
     filled = evaluate(solution, times)
     owner = solution.span_index(times)
     out = np.full(len(times), np.nan)
@@ -312,6 +341,8 @@ def tangential_work(solution: PathSolution, start: float | None = None, end: flo
     """
     lower = 0.0 if start is None else float(start)
     upper = solution.end_time if end is None else min(float(end), solution.end_time)
+    if solution.compressed is not None:  # the compressed zone's force (none after its run: no contact)
+        return tangential_work(solution.compressed, lower, upper) if upper > lower else 0.0
     nodes, weights = np.polynomial.legendre.leggauss(WORK_NODES)
     total = 0.0
     for span in solution.spans:

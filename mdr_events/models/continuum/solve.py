@@ -69,7 +69,30 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     if state.running:
         log(solution, segments[-1], (EventKind.PATH_END, segments[-1].t1, state.radius, 0))
     solution.end_time = (solution.spans[-1].t_end if solution.spans else solution.t_contact) - solution.t_contact
+    if model.zone_params is not None:  # Coulomb's law alone with adhesion: the compressed zone's force
+        attach_compressed_zone(solution, solve_path(model.zone_params, path, tolerances, limits, profile,
+                                                    model.friction))
     return solution
+
+
+#: What the compressed zone's run logs of its slip (the adhesive contact's own run logs its radius and contact).
+SLIP_KINDS = frozenset({EventKind.SLIP_ONSET, EventKind.FULL_SLIP, EventKind.FRONT_AT_CENTRE, EventKind.FRONT_AT_EDGE,
+                        EventKind.RE_STICK})
+
+
+def attach_compressed_zone(solution: PathSolution, zone: PathSolution) -> None:
+    """Give the adhesive contact's ``solution`` (its springs without shift) the tangential force of ``zone``, the run of
+    its compressed zone (:func:`~.caps.compressed_zone_alone`, the same path without adhesion), and the zone's slip
+    events in its log, with the contact's radius; the contact's own slip events (its springs all slide at a zero cap)
+    are dropped. At equal times the contact's events come first, an ending last."""
+    solution.compressed = zone
+    slips = [event for event in zone.events if event.kind in SLIP_KINDS]
+    if slips:
+        radii = evaluate(solution, np.array([event.time for event in slips]))["contact_radius"]
+        slips = [event._replace(radius=float(radius)) for event, radius in zip(slips, radii)]
+    kept = [event for event in solution.events if event.kind not in SLIP_KINDS]
+    ending = CONTACT_ENDING | {EventKind.PATH_END}
+    solution.events = sorted(kept + slips, key=lambda event: (event.time, event.kind in ending))
 
 
 class RestartGuard:
