@@ -443,9 +443,9 @@ class LammpsCheckJob:
     def compute(self) -> RenderedReport:
         """Run LAMMPS, validate and render the files; nothing is written."""
         from mdr_events.app.validation_files import render_validation
-        from mdr_events.dem import lammps_check
+        from mdr_events.dem import LammpsModel, lammps_check
 
-        _, report = lammps_check(self.contact, self.motion, normal=self.normal, tangential=self.tangential,
+        _, report = lammps_check(self.contact, self.motion, model=LammpsModel(self.normal, self.tangential),
                                  steps=self.steps, dt=self.dt, tolerance=self.tolerance, limits=self.limits)
         report.attrs.update(self.provenance, path_description=self.description)
         return render_validation(report, self.stem)

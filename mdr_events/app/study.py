@@ -89,6 +89,9 @@ parsers the command line uses too (:mod:`mdr_events.app.inputs`): a value found 
 The ``[parameters]`` and ``[path]`` tables can also be read alone (:func:`load_parameters_file`,
 :func:`load_path_file`): ``mdr-events validate --params FILE --path FILE`` takes them from any TOML file
 holding them, a study file among others.
+
+The module is a little over 500 lines because it holds this reference of the format beside one small builder per
+table (each making its job from the table's values); the format's checks are apart, in ``study_format``.
 """
 
 from __future__ import annotations

@@ -102,18 +102,36 @@ def validation_markdown(report: xr.Dataset, stem: str | None = None) -> str:
     if "parameters_preset" in report.attrs:
         lines.append(f"- Preset: {report.attrs['parameters_preset']} (from it: "
                      f"{report.attrs.get('parameters_from_preset') or 'none'})")
-    lines += ["", "## Norms", "",
-              "Over the samples compared in contact, each relative to the exact quantity's range there.", "",
-              "| quantity | max | RMS | L1 | within tolerance |", "|---|---:|---:|---:|:---:|"]
+    lines += _norm_rows(report) + _event_rows(report)
+    exact_force, candidate_force = float(report["pull_off_force_exact"]), float(report["pull_off_force_candidate"])
+    lines += ["", f"Pull-off force (mN): exact {_number(exact_force * 1e3, 6)}, candidate (last sample in contact) "
+                  f"{_number(candidate_force * 1e3, 6)}, "
+                  f"error {_number((candidate_force - exact_force) * 1e3, 3, True)}."]
+    if stem is not None:
+        lines += ["", f"![candidate and exact against time, the difference below]({stem}.png)",
+                  "", f"The whole report: `{stem}.nc` (`mdr_events.open_result`)."]
+    return "\n".join(lines) + "\n"
+
+
+def _norm_rows(report: xr.Dataset) -> list[str]:
+    """The Markdown section of a validation report's norms, one row per quantity."""
+    lines = ["", "## Norms", "",
+             "Over the samples compared in contact, each relative to the exact quantity's range there.", "",
+             "| quantity | max | RMS | L1 | within tolerance |", "|---|---:|---:|---:|:---:|"]
     for name in report["quantity"].values:
         row = report.sel(quantity=name)
         lines.append(f"| {name} | {_number(row['max_error'], 3)} | {_number(row['rms_error'], 3)} | "
                      f"{_number(row['l1_error'], 3)} | {'yes' if int(row['within_tolerance']) else '**no**'} |")
-    lines += ["", "## Events", "",
-              "Found in the candidate by the rules of `mdr_events.analysis.validate`; compared with the first event of "
-              "each kind in the continuum's log (times from first contact; — where not found).", "",
-              "| event | exact time (s) | candidate time (s) | time error (s) | / duration | exact depth (µm) "
-              "| candidate depth (µm) | depth error (µm) |", "|---|---:|---:|---:|---:|---:|---:|---:|"]
+    return lines
+
+
+def _event_rows(report: xr.Dataset) -> list[str]:
+    """The Markdown section of a validation report's events, one row per event."""
+    lines = ["", "## Events", "",
+             "Found in the candidate by the rules of `mdr_events.analysis.validate`; compared with the first event of "
+             "each kind in the continuum's log (times from first contact; — where not found).", "",
+             "| event | exact time (s) | candidate time (s) | time error (s) | / duration | exact depth (µm) "
+             "| candidate depth (µm) | depth error (µm) |", "|---|---:|---:|---:|---:|---:|---:|---:|"]
     for event in report["event"].values:
         row = report.sel(event=event)
         relative = row["event_time_relative_error"] if "event_time_relative_error" in row else math.nan
@@ -123,14 +141,7 @@ def validation_markdown(report: xr.Dataset, stem: str | None = None) -> str:
                  _number(row["event_depth_exact"] * 1e6, 6), _number(row["event_depth_candidate"] * 1e6, 6),
                  _number(row["event_depth_error"] * 1e6, 3, True)]
         lines.append(f"| {' | '.join(cells)} |")
-    exact_force, candidate_force = float(report["pull_off_force_exact"]), float(report["pull_off_force_candidate"])
-    lines += ["", f"Pull-off force (mN): exact {_number(exact_force * 1e3, 6)}, candidate (last sample in contact) "
-                  f"{_number(candidate_force * 1e3, 6)}, "
-                  f"error {_number((candidate_force - exact_force) * 1e3, 3, True)}."]
-    if stem is not None:
-        lines += ["", f"![candidate and exact against time, the difference below]({stem}.png)",
-                  "", f"The whole report: `{stem}.nc` (`mdr_events.open_result`)."]
-    return "\n".join(lines) + "\n"
+    return lines
 
 
 def console_summary(report: xr.Dataset, name: str) -> list[str]:
