@@ -39,16 +39,14 @@ from mdr_events.limits import DEFAULT_LIMITS
 if TYPE_CHECKING:
     import xarray as xr
 
+    from mdr_events.analysis.executors import Engine
     from mdr_events.analysis.fit import FitResult
+    from mdr_events.analysis.sweep import SweepOutput
     from mdr_events.app.result_files import FileOutcome
     from mdr_events.contact import Contact
-    from mdr_events.contact.friction import FrictionLaw
     from mdr_events.limits import Limits
-    from mdr_events.models.indenters import SimulatedProfile
     from mdr_events.models.methods import Method
     from mdr_events.models.motion import Motion
-    from mdr_events.models.paths import Path
-    from mdr_events.parameters import Parameters
     from mdr_events.app.validation_files import RenderedReport
 
 __all__ = ["DeriveJob", "PhaseJob", "SimulateJob", "ValidateJob", "Convergence", "FitJob", "SweepJob", "ReproduceJob",
@@ -326,43 +324,44 @@ class FitJob:
 
 @dataclass(frozen=True)
 class SweepJob:
-    """A parameter sweep (:func:`~mdr_events.sweep`), written chunk by chunk to ``store`` and as ``<stem>.nc``.
+    """A parameter sweep (:func:`~mdr_events.sweep`), written chunk by chunk to its store and as ``<stem>.nc``.
 
     Attributes
     ----------
     grid : mapping or list of mappings
-        Names to values (the outer product), or parameter sets.
-    scenario : str or Path
-        The scenario's name, or the one custom path.
-    alpha : float, optional
-        The angle, unless the grid sweeps it.
-    base : Parameters
-        The values not swept.
-    profile, friction
-        The indenter (``None``: the paraboloid) and the friction law.
-    options : mapping
-        ``method``, ``dx``, ``n_steps``, ``chunk_size``, ``history_samples``, ``quantities`` as given.
-    scheduler, workers
-        Where the chunks run (``None``: the sweep's default).
-    store : pathlib.Path
-        The Zarr store.
+        Names to values (the outer product), or sets of values (:func:`~mdr_events.sweep`).
+    contact : Contact
+        The model of every run before the grid's values are put in.
+    motion : Scenario or Paths
+        A scenario of one angle (any, if the grid sweeps ``alpha``), or the one custom path.
+    method : Discrete or Continuum
+        The method with its options.
+    output : SweepOutput
+        The quantities, the histories and the Zarr store (``resume`` is set when it runs).
+    engine : Engine
+        Where the chunks run: scheduler, workers, chunk size (the progress is set when it runs).
     stem : str
         The stem of the labelled result's file.
+    limits : Limits
+        What each run may use.
+    provenance : mapping
+        Attributes every written result carries.
     """
 
     grid: Any
-    scenario: str | Path
-    alpha: float | None
-    base: Parameters
-    profile: SimulatedProfile
-    friction: FrictionLaw
-    store: FilePath
+    contact: Contact
+    motion: Motion
+    method: Method
+    output: SweepOutput
+    engine: Engine
     stem: str
-    options: Mapping[str, Any] = field(default_factory=dict)
-    scheduler: str | None = None
-    workers: int | None = None
     limits: Limits = DEFAULT_LIMITS
     provenance: Mapping[str, str] = field(default_factory=dict)
+
+    @property
+    def store(self) -> FilePath:
+        """The Zarr store the sweep writes as it goes."""
+        return FilePath(self.output.store)
 
     def compute(self, progress: Progress = _quiet, resume: bool = False) -> xr.Dataset:
         """Run the sweep (the store written chunk by chunk; ``resume``: an interrupted one continued)."""
@@ -371,9 +370,9 @@ class SweepJob:
         def report(done: int, total: int) -> None:
             progress(f"sweep: {done}/{total} runs")
 
-        result = sweep(self.grid, self.scenario, self.alpha, base=self.base, store=self.store, resume=resume,
-                       limits=self.limits, profile=self.profile, friction=self.friction, scheduler=self.scheduler,
-                       workers=self.workers, progress=report, **self.options)
+        result = sweep(self.grid, self.contact, self.motion, None, self.method,
+                       output=dataclasses.replace(self.output, resume=resume),
+                       engine=dataclasses.replace(self.engine, progress=report), limits=self.limits)
         result.attrs.update(self.provenance)
         return result
 

