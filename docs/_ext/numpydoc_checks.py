@@ -11,7 +11,9 @@ from __future__ import annotations
 
 import importlib
 import inspect
+import re
 import types
+from pathlib import Path
 
 #: The checks (numpydoc's codes): a docstring exists and has a summary; every parameter is documented, with
 #: a type, in the signature's order and nothing else; a function returns through a documented Returns (or
@@ -29,11 +31,38 @@ NUMPYDOC_CHECKS = {
 PUBLIC_MODULES = ("mdr_events.theory.analytic", "mdr_events.theory.power_law", "mdr_events.theory.mindlin",
                   "mdr_events.theory.tabulated", "mdr_events.theory.symbolic", "mdr_events.models.continuum")
 
-#: Objects documented in the build that are not public (the internals' pages, ``docs/api/internals``):
-#: their names are ``mdr_events.<module>.<...>`` outside the public modules. numpydoc skips them.
-PUBLIC_EXCLUDE = {r"^mdr_events\.(?!(" + "|".join(name.removeprefix("mdr_events.").replace(".", r"\.")
-                                                  for name in PUBLIC_MODULES) + r")\.)[a-z_]+(\.[a-z_]+)*\.",
-                  r"\.__init__$"}
+#: Public objects whose docstrings still fail a check (most: a Parameters or Returns section in prose only), by
+#: their public name. numpydoc skips them in the build and ``tests/test_docs.py`` allows them; a name fixed
+#: must leave this file (the test says so), a new public object must pass. The Enums (``Verdict``, ...) are here
+#: for PR01 on the Enum machinery's own signature (value, names, module, ...), which their docstrings do not document.
+KNOWN_FAILURES_FILE = Path(__file__).with_name("numpydoc_known_failures.txt")
+
+
+def known_failures() -> set[str]:
+    """The public names of :data:`KNOWN_FAILURES_FILE` (one a line; ``#`` comments)."""
+    lines = KNOWN_FAILURES_FILE.read_text(encoding="utf-8").splitlines()
+    return {line.split("#")[0].strip() for line in lines if line.split("#")[0].strip()}
+
+
+#: Objects documented in the build that numpydoc skips: the internals' pages (``docs/api/internals``), whose
+#: names are ``mdr_events.<module>.<...>`` outside the public modules (and the continuum's own submodules), and
+#: the known failures.
+INTERNAL_PATTERNS = {r"^mdr_events\.(?!(" + "|".join(name.removeprefix("mdr_events.").replace(".", r"\.")
+                                                      for name in ("mdr_events.theory.analytic",
+                                                                   "mdr_events.theory.power_law",
+                                                                   "mdr_events.theory.mindlin",
+                                                                   "mdr_events.theory.tabulated",
+                                                                   "mdr_events.theory.symbolic",
+                                                                   "mdr_events.models.continuum"))
+                     + r")\.)[a-z_]+(\.[a-z_]+)*\.",
+                     r"^mdr_events\.models\.continuum\.[a-z_]+\.",
+                     r"\.__init__$",
+                     r"\.[A-Z][A-Z0-9_]+$"}   # constants (FRICTION_LAWS, ...): data, no signature to check
+
+
+def public_exclude() -> set[str]:
+    """numpydoc's ``numpydoc_validation_exclude``: the internals and each known failure, by its exact name."""
+    return INTERNAL_PATTERNS | {"^" + re.escape(name) + "$" for name in known_failures()}
 
 
 def _members(cls: type) -> list[str]:
@@ -47,43 +76,43 @@ def _members(cls: type) -> list[str]:
     return names
 
 
-def public_objects() -> list[str]:
-    """The dotted names (as numpydoc imports them) of every public function, class, method and property."""
+def public_objects() -> dict[str, str]:
+    """Every public function, class, method and property: its public name (as the build documents it:
+    ``mdr_events.Contact.replace``, ``mdr_events.theory.power_law.branch_depth``) -> the name numpydoc imports."""
     import mdr_events
 
-    names = []
+    found = {}
 
-    def add(obj, name):
+    def add(obj, public, where):
         if isinstance(obj, type):
-            names.append(name)
-            names.extend(f"{name}.{member}" for member in _members(obj))
-        elif inspect.isfunction(obj) or inspect.isbuiltin(obj):
-            names.append(name)
+            found[public] = where
+            for member in _members(obj):
+                found[f"{public}.{member}"] = f"{where}.{member}"
+        elif inspect.isfunction(obj):
+            found[public] = where
 
     for name in mdr_events.__all__:
         obj = getattr(mdr_events, name)
-        if isinstance(obj, types.ModuleType):
-            continue
         if isinstance(obj, type) or inspect.isfunction(obj):
-            add(obj, f"{obj.__module__}.{obj.__qualname__}")
+            add(obj, f"mdr_events.{name}", f"{obj.__module__}.{obj.__qualname__}")
     for module_name in PUBLIC_MODULES:
         module = importlib.import_module(module_name)
         for name in module.__all__:
             obj = getattr(module, name)
             if isinstance(obj, type) or inspect.isfunction(obj):
-                add(obj, f"{obj.__module__}.{obj.__qualname__}")
-    return sorted(set(names))
+                add(obj, f"{module_name}.{name}", f"{obj.__module__}.{obj.__qualname__}")
+    return dict(sorted(found.items()))
 
 
 def failures(checks=NUMPYDOC_CHECKS) -> dict[str, list[str]]:
-    """Each public object whose docstring fails one of ``checks``: its name -> the messages."""
+    """Each public object whose docstring fails one of ``checks``: its public name -> the messages."""
     from numpydoc.validate import validate
 
     found = {}
-    for name in public_objects():
-        errors = [f"{code}: {message}" for code, message in validate(name)["errors"] if code in checks]
+    for public, where in public_objects().items():
+        errors = [f"{code}: {message}" for code, message in validate(where)["errors"] if code in checks]
         if errors:
-            found[name] = errors
+            found[public] = errors
     return found
 
 

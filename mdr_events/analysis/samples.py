@@ -11,8 +11,8 @@ Samples left out (``left_out``, coded, and counted):
   straight from one sample to the next and cuts the corner) or a contact made or lost.
 
 Norms over the samples compared in contact, each relative to the range (max − min) of the exact
-quantity there: ``max_error`` (max |Δ|), ``rms_error`` (root mean square) and ``l1_error``
-(time-weighted mean of |Δ|, trapezoid rule over the compared samples).
+quantity there: ``max_error`` (max ``|Δ|``), ``rms_error`` (root mean square) and ``l1_error``
+(time-weighted mean of ``|Δ|``, trapezoid rule over the compared samples).
 
 Events found in the candidate by these rules (``nan`` where the candidate lacks what a rule needs):
 
