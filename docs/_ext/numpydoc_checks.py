@@ -88,7 +88,7 @@ def public_objects() -> dict[str, str]:
             found[public] = where
             for member in _members(obj):
                 found[f"{public}.{member}"] = f"{where}.{member}"
-        elif inspect.isfunction(obj):
+        elif inspect.isfunction(getattr(obj, "__wrapped__", obj)):
             found[public] = where
 
     for name in mdr_events.__all__:
@@ -99,7 +99,7 @@ def public_objects() -> dict[str, str]:
         module = importlib.import_module(module_name)
         for name in module.__all__:
             obj = getattr(module, name)
-            if isinstance(obj, type) or inspect.isfunction(obj):
+            if isinstance(obj, type) or inspect.isfunction(getattr(obj, "__wrapped__", obj)):   # (cached ones too)
                 add(obj, f"{module_name}.{name}", f"{obj.__module__}.{obj.__qualname__}")
     return dict(sorted(found.items()))
 

@@ -47,7 +47,7 @@ __all__ = ["in_contact", "exact_at", "compared_samples", "check_run_covers_the_c
 LEFT_OUT_CODES = {0: "compared", 1: "outside the runs", 2: "contact differs", 3: "straddles an event"}
 #: Events compared, in the order of the report's ``event`` dimension.
 VALIDATED_EVENTS = ("slip_onset", "full_slip", "detachment_starts", "pull_off")
-#: A candidate without a sliding fraction is in full slip where |F_x| reaches this share below τ0 A.
+#: A candidate without a sliding fraction is in full slip where ``|F_x|`` reaches this share below τ0 A.
 FULL_SLIP_SHARE = 1e-3
 #: Continuum events after which the first sample is left out (a corner cut, a contact made or lost).
 STRADDLED_EVENTS = ("corner", "tangential_reversal", "first_contact", "re_contact", "pull_off", "contact_ends")
