@@ -44,9 +44,10 @@ $(DOCS_STAMP): $(STAMP)
 	touch $(DOCS_STAMP)
 
 # Warnings are errors (-W --keep-going: every warning is listed, then the build fails); no network needed.
-# Every tutorial and derivation notebook is executed; MPLBACKEND=Agg: no window opens.
+# Every tutorial and derivation notebook is executed, in a kernel whose figures are shown inline (MPLBACKEND
+# must not be set: a forced backend would keep them out of the pages).
 docs: $(DOCS_STAMP)
-	MPLBACKEND=Agg $(BIN)/python -m sphinx -b html -W --keep-going -n -q docs docs/_build/html
+	env -u MPLBACKEND $(BIN)/python -m sphinx -b html -W --keep-going -n -q docs docs/_build/html
 	@echo "docs: open docs/_build/html/index.html"
 
 benchmark: $(STAMP)

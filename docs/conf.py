@@ -10,15 +10,12 @@ numpydoc validates the docstring of every public function and class (:data:`NUMP
 
 from __future__ import annotations
 
-import os
-import shutil
 import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 sys.path.insert(0, str(HERE / "_ext"))
-os.environ.setdefault("MPLBACKEND", "Agg")
 
 import mdr_events  # noqa: E402
 from numpydoc_checks import NUMPYDOC_CHECKS, public_exclude  # noqa: E402

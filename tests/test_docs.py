@@ -73,3 +73,11 @@ def test_the_makefile_builds_the_docs_with_warnings_as_errors():
     makefile = (DOCS.parent / "Makefile").read_text()
     assert re.search(r"^docs: ", makefile, flags=re.MULTILINE)
     assert "-W --keep-going" in makefile and "docs/_build/html" in makefile
+
+
+def test_the_notebooks_keep_their_inline_figures():
+    """Neither the Makefile's docs target nor docs/conf.py forces a matplotlib backend: the kernels that execute the
+    tutorials inherit the environment, and MPLBACKEND=Agg there would leave every page without its figures."""
+    recipe = (DOCS.parent / "Makefile").read_text().split("\ndocs:", 1)[1].split("\n\n", 1)[0]
+    assert "env -u MPLBACKEND" in recipe and "MPLBACKEND=" not in recipe
+    assert "MPLBACKEND" not in (DOCS / "conf.py").read_text()
