@@ -91,6 +91,13 @@ numpydoc_validation_checks = NUMPYDOC_CHECKS
 numpydoc_validation_exclude = public_exclude()
 add_module_names = False
 
+# A public class (mdr_events.Contact) is documented on its API page and, under the module that defines it
+# (mdr_events.contact.model.Contact), on the internals' pages. autodoc would declare the second name as the
+# first one's canonical name too, and the two declarations collide; each page keeps its own name instead.
+from sphinx.ext.autodoc import ClassDocumenter  # noqa: E402
+
+ClassDocumenter.get_canonical_fullname = lambda self: None
+
 # ---------------------------------------------------------------------------------------------- notebooks
 nb_execution_mode = "force"             # every tutorial runs during the build
 nb_execution_timeout = 600
