@@ -94,9 +94,14 @@ add_module_names = False
 # A public class (mdr_events.Contact) is documented on its API page and, under the module that defines it
 # (mdr_events.contact.model.Contact), on the internals' pages. autodoc would declare the second name as the
 # first one's canonical name too, and the two declarations collide; each page keeps its own name instead.
-from sphinx.ext.autodoc import ClassDocumenter  # noqa: E402
+try:  # Sphinx >= 9 (the lock file's): the class's properties give the canonical name
+    from sphinx.ext.autodoc._property_types import _ClassDefProperties  # noqa: E402
 
-ClassDocumenter.get_canonical_fullname = lambda self: None
+    _ClassDefProperties.canonical_full_name = property(lambda self: None)
+except ImportError:  # Sphinx < 9
+    from sphinx.ext.autodoc import ClassDocumenter  # noqa: E402
+
+    ClassDocumenter.get_canonical_fullname = lambda self: None
 
 # ---------------------------------------------------------------------------------------------- notebooks
 nb_execution_mode = "force"             # every tutorial runs during the build
