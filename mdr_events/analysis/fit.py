@@ -244,38 +244,42 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
     contact : Contact or Parameters
         The start of the fit: the contact (:class:`~mdr_events.Contact`, or a :class:`~mdr_events.Parameters` with
         ``profile=`` and ``friction=`` among the options); the values not free keep theirs.
-    motion, alpha
+    motion : Scenario, Paths, Path or {"A", "B", "B+"}
         The one path of the experiment, as :func:`mdr_events.validate` takes it (a :class:`~mdr_events.Scenario` of
         one angle or a scenario's name with ``alpha``, rebuilt for each trial: its way out depends on the
         parameters; :class:`~mdr_events.Paths` of one path or a :class:`Path`). The keywords of before,
         ``fit(measured, path, alpha, start=params, ...)``, are read too.
+    alpha : float, optional
+        With a scenario's name: the path's angle (degrees).
     free : sequence of str
         The parameters to fit, from :data:`FREE_NAMES`: ``E``, ``nu``, ``R``, ``tau0``, ``dgamma0``,
         ``dgamma1``, ``mu`` (with a friction law that has Coulomb's part) and the offsets ``time_offset`` (s),
         ``depth_offset`` (m).
     reference : Continuum, optional
         The continuum with its tolerances (default ``Continuum()``; ``tolerances=`` among the options says the same).
-    **options
-        ``bounds``, ``noise``, ``names``, ``units``, ``time_origin`` (below); beside a Parameters also ``profile``
-        and ``friction``.
-    bounds : mapping, optional
-        Free name → ``(lower, upper)`` in its unit; default: the physical ranges (moduli, τ0 and works of
-        adhesion > 0 on their log scale, ``ν`` in (−1, 0.5], the offsets unbounded).
-    noise : mapping, optional
-        Quantity → the standard deviation of its measurement noise (SI units); the others are estimated
-        (:func:`estimate_noise`). Residuals are weighted by ``1/σ``.
-    names, units, time_origin
-        As in :func:`mdr_events.validate`: your column names and units; what the measured time counts from
-        (``"first_contact"`` of the path as given, ``"path_start"``, or the measured time at first contact).
     limits : Limits
         What each continuum run may use. Another indenter than the paraboloid has no ``R`` to free; with Coulomb's
         part in the friction law, ``"mu"`` may be free (its ``μ`` the start).
     progress : callable, optional
         Hears how far reading a long CSV file is (:func:`~mdr_events.io.candidates.read_candidate`).
+    **options
+        Beside a Parameters also ``profile`` and ``friction``; and:
+
+        ``bounds`` : mapping, optional
+            Free name → ``(lower, upper)`` in its unit; default: the physical ranges (moduli, τ0 and works of
+            adhesion > 0 on their log scale, ``ν`` in (−1, 0.5], the offsets unbounded).
+        ``noise`` : mapping, optional
+            Quantity → the standard deviation of its measurement noise (SI units); the others are estimated
+            (:func:`~mdr_events.analysis.fit_data.estimate_noise`). Residuals are weighted by ``1/σ``.
+        ``names``, ``units``, ``time_origin``
+            As in :func:`mdr_events.validate`: your column names and units; what the measured time counts from
+            (``"first_contact"`` of the path as given, ``"path_start"``, or the measured time at first contact).
 
     Returns
     -------
     FitResult
+        The estimates with their standard errors, 95 % intervals and identifiability, the correlations, the
+        verdict and warnings, the fitted parameters and the labelled dataset (:class:`FitResult`).
 
     Raises
     ------

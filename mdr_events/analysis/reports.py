@@ -1,8 +1,8 @@
 """What the referees conclude, typed: the verdicts as enums, and the reports of :func:`~mdr_events.validate` and
 :func:`~mdr_events.convergence_study` as objects over their datasets.
 
-A report's dataset is what is written and read (netCDF); :meth:`ValidationReport.from_dataset` and
-:meth:`~ValidationReport.to_dataset` round-trip it, files written before included. The rule of a validation's verdict
+A report's dataset is what is written and read (netCDF); ``ValidationReport.from_dataset`` and
+``to_dataset`` round-trip it, files written before included. The rule of a validation's verdict
 is here, once (:func:`validation_failures`): :func:`~mdr_events.validate` sets the verdict by it, and a report lists
 what failed by it.
 """

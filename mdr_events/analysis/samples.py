@@ -11,8 +11,8 @@ Samples left out (``left_out``, coded, and counted):
   straight from one sample to the next and cuts the corner) or a contact made or lost.
 
 Norms over the samples compared in contact, each relative to the range (max − min) of the exact
-quantity there: ``max_error`` (max |Δ|), ``rms_error`` (root mean square) and ``l1_error``
-(time-weighted mean of |Δ|, trapezoid rule over the compared samples).
+quantity there: ``max_error`` (max ``|Δ|``), ``rms_error`` (root mean square) and ``l1_error``
+(time-weighted mean of ``|Δ|``, trapezoid rule over the compared samples).
 
 Events found in the candidate by these rules (``nan`` where the candidate lacks what a rule needs):
 
@@ -50,7 +50,7 @@ LEFT_OUT_CODES = {0: "compared", 1: "outside the runs", 2: "contact differs", 3:
 VALIDATED_EVENTS = ("first_contact", "slip_onset", "full_slip", "detachment_starts", "pull_off", "re_contact")
 #: Of those, the events that make a contact (the others happen in contact).
 CONTACT_MAKING_EVENTS = ("first_contact", "re_contact")
-#: A candidate without a sliding fraction is in full slip where |F_x| reaches this share below τ0 A.
+#: A candidate without a sliding fraction is in full slip where ``|F_x|`` reaches this share below τ0 A.
 FULL_SLIP_SHARE = 1e-3
 #: Continuum events after which the first sample is left out (a corner cut, a contact made or lost).
 STRADDLED_EVENTS = ("corner", "tangential_reversal", "first_contact", "re_contact", "pull_off", "contact_ends")

@@ -188,7 +188,9 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
         as by :func:`mdr_events.simulate` (with ``profile=`` and ``friction=`` among the options).
     motion : Scenario, Paths, Path or {"A", "B", "B+"}
         The one path the candidate ran: a :class:`~mdr_events.Scenario` of one angle, :class:`~mdr_events.Paths` of
-        one path or a :class:`Path`; or a scenario's name with ``alpha`` (one angle, degrees).
+        one path or a :class:`Path`; or a scenario's name with ``alpha``.
+    alpha : float, optional
+        With a scenario's name: the path's angle (one angle, degrees).
     tolerance : float
         The verdict's bound on each quantity's ``max_error`` (relative to its range), in (0, 1].
     reference : Continuum or PathSolution, optional
@@ -201,16 +203,16 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
     progress : callable, optional
         Hears how far reading a long CSV file is (:func:`~mdr_events.io.candidates.read_candidate`).
     **options
-        How to read the candidate: ``names``, ``units``, ``time_origin``, ``select`` (below); beside a
-        :class:`~mdr_events.Parameters` also ``profile`` and ``friction``.
-    names, units : mapping, optional
-        Quantity -> your column name; quantity -> your unit (``"mN"``, ``"ms"``, ``"um"``, ...).
-    time_origin : "first_contact", "path_start" or float
-        What the candidate's time counts from: the first contact (default), the path's start, or a
-        number: the candidate's time at first contact (s).
-    select : mapping, optional
-        A candidate holding several runs (a simulation along ``alpha``): the one at these coordinates; default
-        ``{"alpha": alpha}`` with a scenario's angle.
+        How to read the candidate; beside a :class:`~mdr_events.Parameters` also ``profile`` and ``friction``:
+
+        ``names``, ``units`` : mapping, optional
+            Quantity -> your column name; quantity -> your unit (``"mN"``, ``"ms"``, ``"um"``, ...).
+        ``time_origin`` : "first_contact", "path_start" or float
+            What the candidate's time counts from: the first contact (default), the path's start, or a
+            number: the candidate's time at first contact (s).
+        ``select`` : mapping, optional
+            A candidate holding several runs (a simulation along ``alpha``): the one at these coordinates;
+            default ``{"alpha": alpha}`` with a scenario's angle.
 
     Returns
     -------

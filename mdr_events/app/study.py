@@ -408,6 +408,16 @@ def _sweep(tables: _Tables, output_directory: FilePath) -> SweepJob | None:
 def load_study(path: str | os.PathLike) -> Study:
     """Read and check a study file, and build its jobs.
 
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The study file (TOML, the format of :mod:`mdr_events.app.study`).
+
+    Returns
+    -------
+    Study
+        The study's typed jobs, one per table, nothing run yet (:func:`run_study` runs them).
+
     Raises
     ------
     TypeError
@@ -506,6 +516,19 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
     The output directory (``[output] directory``: a directory that exists or can be created, writable) and
     the files' stem are checked before anything is computed, and the ``[validate]`` runs and the ``[fit]``
     measurement are read before anything is written: a run that cannot be read writes nothing.
+
+    Parameters
+    ----------
+    study : Study
+        The study read by :func:`load_study`.
+    progress : callable
+        Called with a line of text at each step (default :func:`print`).
+
+    Returns
+    -------
+    StudyOutcomes
+        The files written, each with what became of it, and the verdicts of the ``[validate]`` runs and the
+        ``[fit]``.
 
     Raises
     ------

@@ -260,6 +260,18 @@ def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
     The scipy backend (netCDF3, 64-bit offset) is used so that no further
     dependency is needed.
 
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        The result to write (its attributes as they are; :func:`open_result` reads it back).
+    path : str or os.PathLike
+        The file to write; its folder must exist. A file there is replaced only once the new one is complete.
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+
     Raises
     ------
     TypeError
@@ -281,6 +293,16 @@ def open_result(path: str | os.PathLike) -> xr.Dataset:
     the file and what is wrong when it is missing, a directory, not a readable netCDF file, was not
     written by this package, lacks a stamp attribute or a parameter, or lacks a variable (or its
     ``units`` / ``long_name``) that its kind of result (``content``) must hold.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        A netCDF file written by :func:`write_netcdf` (a simulation, a phase diagram, a report, a fit, ...).
+
+    Returns
+    -------
+    xarray.Dataset
+        The result, loaded into memory (the file is closed), with its stamp and parameters as attributes.
     """
     where = repr(os.fspath(check_file_path("path", path, f"{ALLOWED_PATH} naming a netCDF file")))
     dataset = load_netcdf(path, where)

@@ -78,8 +78,8 @@ class Discrete:
             object.__setattr__(self, "n_steps", check_count("n_steps", self.n_steps, 10))
 
     def check_model(self, model: ModelJob) -> None:
-        """Refuse an adhesion law the springs have no thresholds for (:func:`~mdr_events.models.discrete.
-        spring_thresholds`); they take every indenter and friction law."""
+        """Refuse an adhesion law the springs have no thresholds for
+        (:func:`~mdr_events.models.discrete.spring_thresholds`); they take every indenter and friction law."""
         check_thresholds_known(model.adhesion)
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:

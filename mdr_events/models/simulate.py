@@ -95,7 +95,7 @@ def simulate(
     motion : Scenario, Paths, {"A", "B", "B+"}, Path, list of Path or mapping of str to Path
         A :class:`~mdr_events.Scenario` (one case per angle) or :class:`~mdr_events.Paths` (one case per path);
         or a scenario's name with ``alpha`` (``"A"``: eq. (14); ``"B"``: eq. (19); ``"B+"``: the "+" branch of
-        Fig. 9b, :meth:`Path.scenario_B_indentation`), or custom paths: a :class:`Path`, a non-empty list of
+        Fig. 9b, :meth:`~mdr_events.Path.scenario_B_indentation`), or custom paths: a :class:`Path`, a non-empty list of
         them (labelled ``"path 1"``, ``"path 2"``, ...) or a mapping ``{label: Path}``; the paths may have
         different speeds.
     alpha : float or sequence of float, optional

@@ -23,7 +23,7 @@ from mdr_events.reproduction.section import Section, Step
 
 __all__ = ["FIGURES", "FigureRuns", "EXTREMES", "figure_stem"]
 
-#: Extremes of the continuum runs the report quotes (exact, from the solution: :func:`continuum.extremum`):
+#: Extremes of the continuum runs the report quotes (exact, from the solution: :func:`mdr_events.models.continuum.extremum`):
 #: name -> (quantity, largest).
 EXTREMES = {"normal_force_max": ("normal_force", True), "normal_force_min": ("normal_force", False),
             "tangential_force_max": ("tangential_force", True), "contact_area_max": ("contact_area", True),

@@ -100,7 +100,7 @@ class FrettingContact(NamedTuple):
     @property
     def dissipated_energy(self) -> float:
         """The energy dissipated per cycle ``x_c − X → x_c + X → x_c − X``: ``4 π a² τ0 (X − ū)`` (J), the area of
-        the parallelogram (``X > ū``), :func:`mdr_events.theory.analytic.fretting_dissipated_energy`."""
+        the parallelogram (``X > ū``), :func:`mdr_events.fretting_dissipated_energy`."""
         return float(analytic.fretting_dissipated_energy(self.radius, self.amplitude, self.params))
 
     def parallelogram(self, centre: float) -> tuple[np.ndarray, np.ndarray]:

@@ -67,7 +67,7 @@ class ProfileRow(NamedTuple):
     onset_closed_form: float  #: slip-onset depth (18) (m; nan: none before d_max)
     onset_continuum: float  #: the continuum's first slip onset while indenting (m; nan: none)
     tangential_force_max: float  #: the continuum's largest F_x (N)
-    discrete_difference: float  #: max_t |discrete − continuum| of F_x over its largest value
+    discrete_difference: float  #: max_t ``|discrete − continuum|`` of F_x over its largest value
 
 
 def profile_rows(comparison: ProfileComparison, params: Parameters) -> list[ProfileRow]:

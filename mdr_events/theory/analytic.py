@@ -77,37 +77,128 @@ def _as_output(values: np.ndarray, like: np.ndarray):
 # ----------------------------------------------------------------------------
 # polynomial roots
 def jkr_depth(contact_radius, contact: ContactLike, work_of_adhesion: float):
-    """Indentation depth of the adhesive contact of radius ``a``, eq. (9)."""
+    r"""Indentation depth of the adhesive contact of radius ``a``, eq. (9).
+
+    .. math:: d = \frac{a^2}{R} - \sqrt{\frac{2 \pi a \Delta\gamma}{E^*}} \qquad (9)
+
+    Parameters
+    ----------
+    contact_radius : float or array_like
+        The contact radius ``a`` (m).
+    contact : Contact or Parameters
+        The paper's paraboloid (4), its elastomer and adhesion: a :class:`~mdr_events.Contact`, or a
+        :class:`~mdr_events.Parameters` (the keywords of before).
+    work_of_adhesion : float
+        ``Δγ`` (J/m²): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The depth ``d`` (m), the shape of ``contact_radius``.
+    """
     _finite(contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jkr_depth")
     return _rel("jkr_depth").numeric(contact_radius, params.R, params.E_star, work_of_adhesion)
 
 
 def jkr_normal_force(contact_radius, contact: ContactLike, work_of_adhesion: float):
-    """Normal force of the adhesive contact of radius ``a``, eq. (10)."""
+    r"""Normal force of the adhesive contact of radius ``a``, eq. (10).
+
+    .. math:: F_N = \frac{4 E^* a^3}{3 R} - \sqrt{8 \pi E^* \Delta\gamma\, a^3} \qquad (10)
+
+    (the force (10) at the depth (9)).
+
+    Parameters
+    ----------
+    contact_radius : float or array_like
+        The contact radius ``a`` (m).
+    contact : Contact or Parameters
+        The paper's paraboloid (4), its elastomer and adhesion: a :class:`~mdr_events.Contact`, or a
+        :class:`~mdr_events.Parameters` (the keywords of before).
+    work_of_adhesion : float
+        ``Δγ`` (J/m²): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The normal force ``F_N`` (N; negative: tensile), the shape of ``contact_radius``.
+    """
     _finite(contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jkr_normal_force")
     return _rel("jkr_normal_force").numeric(contact_radius, params.R, params.E_star, work_of_adhesion)
 
 
 def normal_force(depth, contact_radius, contact: ContactLike):
-    """Normal force of the springs in ``|x| < a`` at depth ``d`` (any, e.g. pinned ``a``), eq. (10)."""
+    r"""Normal force of the springs in ``|x| < a`` at depth ``d`` (any, e.g. pinned ``a``), eq. (10).
+
+    .. math:: F_N = 2 E^* a d - \frac{2 E^* a^3}{3 R} \qquad (10)
+
+    Parameters
+    ----------
+    depth : float or array_like
+        The indentation depth ``d`` (m).
+    contact_radius : float or array_like
+        The contact radius ``a`` (m), any (e.g. pinned).
+    contact : Contact or Parameters
+        The paper's paraboloid (4), its elastomer and adhesion: a :class:`~mdr_events.Contact`, or a
+        :class:`~mdr_events.Parameters` (the keywords of before).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The normal force ``F_N`` (N).
+    """
     _finite(depth=depth, contact_radius=contact_radius)
     params = paper_parameters(contact, "normal_force")
     return _rel("normal_force").numeric(depth, contact_radius, params.R, params.E_star)
 
 
 def hertz_contact_radius(depth, contact: ContactLike):
-    """Non-adhesive contact radius ``a = sqrt(R d)``, eq. (16)."""
+    r"""Non-adhesive contact radius ``a = sqrt(R d)``, eq. (16).
+
+    .. math:: a = \sqrt{R d} \qquad (16)
+
+    Parameters
+    ----------
+    depth : float or array_like
+        The indentation depth ``d`` (m); negative depths give ``a = 0``.
+    contact : Contact or Parameters
+        The paper's paraboloid (4), its elastomer and adhesion: a :class:`~mdr_events.Contact`, or a
+        :class:`~mdr_events.Parameters` (the keywords of before).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The contact radius ``a`` (m).
+    """
     _finite(depth=depth)
     params = paper_parameters(contact, "hertz_contact_radius")
     return _rel("hertz_radius").numeric(np.maximum(depth, 0.0), params.R)
 
 
 def jump_off(contact: ContactLike, work_of_adhesion: float) -> dict[str, float]:
-    """Jump-off point under displacement control (``∂d/∂a = 0`` on the branch (9)).
+    r"""Jump-off point under displacement control (``∂d/∂a = 0`` on the branch (9)).
 
     Returns ``contact_radius``, ``depth`` and ``normal_force`` (10) at the jump-off.
+
+    .. math::
+
+       a = \frac{1}{2} \left(\frac{\pi R^2 \Delta\gamma}{E^*}\right)^{1/3}, \quad
+       d = -\frac{3}{4} \left(\frac{\pi^2 R \Delta\gamma^2}{E^{*2}}\right)^{1/3}, \quad
+       F_N = -\frac{5}{6} \pi R \Delta\gamma
+
+    Parameters
+    ----------
+    contact : Contact or Parameters
+        The paper's paraboloid (4), its elastomer and adhesion: a :class:`~mdr_events.Contact`, or a
+        :class:`~mdr_events.Parameters` (the keywords of before).
+    work_of_adhesion : float
+        ``Δγ`` (J/m²): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
+
+    Returns
+    -------
+    dict of str to float
+        ``contact_radius`` (m), ``depth`` (m) and ``normal_force`` (N) at the jump-off.
     """
     _finite(work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jump_off")
@@ -120,14 +211,46 @@ def jump_off(contact: ContactLike, work_of_adhesion: float) -> dict[str, float]:
 
 
 def jump_in_radius(contact: ContactLike, work_of_adhesion: float) -> float:
-    """Contact radius on first touch (``d = 0`` on the stable branch of (9))."""
+    r"""Contact radius on first touch (``d = 0`` on the stable branch of (9)).
+
+    .. math:: a = \left(\frac{2 \pi R^2 \Delta\gamma}{E^*}\right)^{1/3}
+
+    Parameters
+    ----------
+    contact : Contact or Parameters
+        The paper's paraboloid (4), its elastomer and adhesion: a :class:`~mdr_events.Contact`, or a
+        :class:`~mdr_events.Parameters` (the keywords of before).
+    work_of_adhesion : float
+        ``Δγ`` (J/m²): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
+
+    Returns
+    -------
+    float
+        The contact radius (m) at first touch.
+    """
     _finite(work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jump_in_radius")
     return float(_rel("jump_in_radius").numeric(params.R, params.E_star, work_of_adhesion))
 
 
 def pull_off_force(contact: ContactLike, work_of_adhesion: float) -> float:
-    """JKR pull-off force ``−(3/2) π Δγ R``: the minimum of (10) along the branch (9)."""
+    r"""JKR pull-off force ``−(3/2) π Δγ R``: the minimum of (10) along the branch (9).
+
+    .. math:: F_\mathrm{pull\text{-}off} = -\frac{3}{2} \pi \Delta\gamma R
+
+    Parameters
+    ----------
+    contact : Contact or Parameters
+        The paper's paraboloid (4), its elastomer and adhesion: a :class:`~mdr_events.Contact`, or a
+        :class:`~mdr_events.Parameters` (the keywords of before).
+    work_of_adhesion : float
+        ``Δγ`` (J/m²): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
+
+    Returns
+    -------
+    float
+        The pull-off force (N, negative) under force control.
+    """
     _finite(work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "pull_off_force")
     return float(_rel("pull_off_force").numeric(params.R, work_of_adhesion))
@@ -138,6 +261,22 @@ def jkr_contact_radius(depth, contact: ContactLike, work_of_adhesion: float):
 
     The stable branch is ``a >= a_jump-off`` (``∂d/∂a >= 0``). Depths below the
     jump-off depth have no contact: the result is ``nan`` there.
+
+    Parameters
+    ----------
+    depth : float or array_like
+        The indentation depth ``d`` (m).
+    contact : Contact or Parameters
+        The paper's paraboloid (4), its elastomer and adhesion: a :class:`~mdr_events.Contact`, or a
+        :class:`~mdr_events.Parameters` (the keywords of before).
+    work_of_adhesion : float
+        ``Δγ`` (J/m²): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The contact radius ``a`` (m) on the stable branch of (9), ``nan`` below the jump-off depth; the shape of
+        ``depth``.
     """
     _finite(depth=depth, work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jkr_contact_radius")
@@ -156,16 +295,50 @@ def jkr_contact_radius(depth, contact: ContactLike, work_of_adhesion: float):
 # ----------------------------------------------------------------------------
 # tangential springs, eq. (13)
 def critical_shift(contact_radius, contact: ContactLike):
-    """Critical spring shift ``ū(a) = π a τ0 / (2 G*)``, eq. (13)."""
+    r"""Critical spring shift ``ū(a) = π a τ0 / (2 G*)``, eq. (13).
+
+    .. math:: \bar u(a) = \frac{\pi a \tau_0}{2 G^*} \qquad (13)
+
+    Parameters
+    ----------
+    contact_radius : float or array_like
+        The contact radius ``a`` (m).
+    contact : Contact or Parameters
+        The paper's paraboloid (4) under the law (13) (its ``τ0`` and ``G*``): a :class:`~mdr_events.Contact`, or
+        a :class:`~mdr_events.Parameters` (the keywords of before).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The critical shift ``ū`` (m) of a spring: beyond it the spring slides.
+    """
     _finite(contact_radius=contact_radius)
     params = paper_parameters(contact, "critical_shift")
     return _rel("critical_shift").numeric(contact_radius, params.tau0, params.G_star)
 
 
 def fretting_dissipated_energy(contact_radius, amplitude, contact: ContactLike):
-    """Energy dissipated per cycle ``x: −X → X → −X`` by a fixed contact of radius ``a`` (J): the area
+    r"""Energy dissipated per cycle ``x: −X → X → −X`` by a fixed contact of radius ``a`` (J): the area
     ``4 π a² τ0 (X − ū)`` of the parallelogram ``F_x = 2G* a (x − Y)``, ``Y`` clipped to
-    ``[x − ū, x + ū]`` (plateaus ``±π a² τ0``, (13)); for ``X > ū`` (smaller loops stick and dissipate nothing)."""
+    ``[x − ū, x + ū]`` (plateaus ``±π a² τ0``, (13)); for ``X > ū`` (smaller loops stick and dissipate nothing).
+
+    .. math:: W = 4 \pi a^2 \tau_0 (X - \bar u), \qquad \bar u = \frac{\pi a \tau_0}{2 G^*} \quad (13)
+
+    Parameters
+    ----------
+    contact_radius : float or array_like
+        The fixed contact radius ``a`` (m).
+    amplitude : float or array_like
+        The amplitude ``X`` (m) of the tangential motion, ``X > ū``.
+    contact : Contact or Parameters
+        The paper's paraboloid (4) under the law (13) (its ``τ0`` and ``G*``): a :class:`~mdr_events.Contact`, or
+        a :class:`~mdr_events.Parameters` (the keywords of before).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The energy dissipated per cycle ``W`` (J).
+    """
     _finite(contact_radius=contact_radius, amplitude=amplitude)
     params = paper_parameters(contact, "fretting_dissipated_energy")
     return _rel("fretting_dissipated_energy").numeric(contact_radius, amplitude, params.tau0, params.G_star)
@@ -282,7 +455,7 @@ CRITICAL_ANGLE_SCENARIOS = ("A", "B", "B+")
 
 def critical_angle(contact: ContactLike, scenario: Literal["A", "B", "B+"] = "A", adhesion: bool = True,
                    final_depth: float | None = None, *, d_max: float | None = None) -> float:
-    """Critical path angle in degrees.
+    r"""Critical path angle in degrees.
 
     ``contact`` is a :class:`~mdr_events.Contact` of the paraboloid (4) under the law (13), with the motion's depth
     ``d_max`` (m; default the paper's 0.3 mm), or a :class:`~mdr_events.Parameters` (the keywords of before, with its
@@ -306,6 +479,37 @@ def critical_angle(contact: ContactLike, scenario: Literal["A", "B", "B+"] = "A"
     exactly at ``final_depth`` (the "+" sign of (21), or the larger root of (20), at
     the radius of ``final_depth`` on the ``Δγ0`` branch): for α < α_c the springs
     slide before the path turns back.
+
+    At the critical angle of scenario A the slip depth of (17) or (18) equals ``d_max``; with the contact radius
+    ``a`` there,
+
+    .. math:: \tan \alpha_c = \frac{2 G^* d_\mathrm{max}}{\pi a \tau_0}.
+
+    In scenario B (21) at the jump-off point ``(a, d)`` of the ``Δγ1`` branch, and in B+ (21) with the "+" sign
+    at ``final_depth``:
+
+    .. math:: \tan \alpha_c = \frac{2 G^* (d_\mathrm{max} - d)}{\pi a \tau_0}, \qquad
+              \tan \alpha_c = \frac{2 G^* (d - d_\mathrm{max})}{\pi a \tau_0}.
+
+    Parameters
+    ----------
+    contact : Contact or Parameters
+        The paper's paraboloid (4) under the law (13): a :class:`~mdr_events.Contact` (with ``d_max``), or a
+        :class:`~mdr_events.Parameters` (the keywords of before, with its own ``d_max``).
+    scenario : {"A", "B", "B+"}
+        The path: ``"A"`` (14), ``"B"`` (19) pulled off at the angle, ``"B+"`` pressed further in at the angle.
+    adhesion : bool
+        ``True`` (the default): the JKR radius (9) with ``Δγ0`` in and ``Δγ1`` out; ``False``: the Hertz radius
+        (16).
+    final_depth : float, optional
+        Scenario B+ only: the depth (m) the path reaches (default ``2 d_max``).
+    d_max : float, optional
+        With a Contact: the motion's depth (m; default the paper's 0.3 mm).
+
+    Returns
+    -------
+    float
+        The critical angle in degrees (90 where slip always comes first).
     """
     p = paper_parameters(contact, "critical_angle", d_max)
     check_choice("scenario", scenario, CRITICAL_ANGLE_SCENARIOS)
@@ -349,7 +553,7 @@ class DimensionlessGroups(NamedTuple):
 
 
 def dimensionless_groups(contact: ContactLike, *, d_max: float | None = None) -> DimensionlessGroups:
-    """The slip parameter and the two adhesion parameters of the model.
+    r"""The slip parameter and the two adhesion parameters of the model.
 
     Measure depths in ``d_max`` (``d = d_max d̂``), radii in ``√(R d_max)`` (``a = √(R d_max) â``) and tangential
     lengths in ``d_max`` (the paths (14), (19) move ``x = d / tan α``). Then the branch (9) reads
@@ -362,6 +566,22 @@ def dimensionless_groups(contact: ContactLike, *, d_max: float | None = None) ->
 
     ``contact``: a :class:`~mdr_events.Contact` of the paraboloid under the law (13) with the depth ``d_max`` (m;
     default the paper's 0.3 mm), or a :class:`~mdr_events.Parameters` (its own ``d_max``).
+
+    .. math:: S = \frac{\pi \tau_0 \sqrt{R}}{2 G^* \sqrt{d_\mathrm{max}}}, \qquad
+              \Gamma_{0,1} = \frac{2 \pi \Delta\gamma_{0,1} \sqrt{R}}{E^* d_\mathrm{max}^{3/2}}
+
+    Parameters
+    ----------
+    contact : Contact or Parameters
+        A :class:`~mdr_events.Contact` of the paraboloid under the law (13), or a :class:`~mdr_events.Parameters`
+        (its own ``d_max``).
+    d_max : float, optional
+        With a Contact: the motion's depth (m; default the paper's 0.3 mm).
+
+    Returns
+    -------
+    DimensionlessGroups
+        ``(S, Γ0, Γ1)``.
     """
     params = paper_parameters(contact, "dimensionless_groups", d_max)
     root = math.sqrt(params.R)

@@ -238,7 +238,7 @@ def loop_energy(amplitude, depth: float, friction: FrictionLaw | str | None, par
     the area between Masing's branches ``−F₀(X) + 2 F₀((x + X)/2)`` (moving towards ``+X``, above) and
     ``F₀(X) − 2 F₀((X − x)/2)`` (moving back, below), with the virgin
     curve ``F₀`` of :func:`virgin_force` (integrated between its kinks by adaptive quadrature, to 1e-12). For ``τ0``
-    alone it is the parallelogram's ``4 π a² τ0 (X − ū)`` (:func:`mdr_events.analytic.fretting_dissipated_energy`);
+    alone it is the parallelogram's ``4 π a² τ0 (X − ū)`` (:func:`mdr_events.fretting_dissipated_energy`);
     a loop within the stick range dissipates nothing under ``τ0``, and always a little under Coulomb's law (whose
     edge springs hold no shift).
 

@@ -24,7 +24,7 @@ class Branch:
     The scalar methods use the derived relations compiled for Python floats
     (:attr:`mdr_events.symbolic.Relation.scalar`): the right-hand side and the event functions of
     the continuum method call them thousands of times per run. The radius of a depth is the largest
-    positive root of the quartic in ``s = sqrt(a)`` (:func:`mdr_events.analytic.positive_polynomial_root`),
+    positive root of the quartic in ``s = sqrt(a)`` (:func:`mdr_events.theory.roots.positive_polynomial_root`),
     above the jump-off radius (the stable branch).
     """
 
