@@ -36,6 +36,8 @@ def lammps_check(contact: Contact, motion, alpha: float | None = None, *, model:
         :func:`~mdr_events.dem.mapping.wall_coefficients` gives LAMMPS's numbers.
     motion : Scenario, Paths, Path or {"A", "B", "B+"}
         One path: a Scenario of one angle, Paths of one path, a Path, or a scenario's name with ``alpha``.
+    alpha : float, optional
+        With a scenario's name: its angle in degrees.
     model : LammpsModel
         LAMMPS's normal and tangential models by name (:data:`~mdr_events.dem.mapping.NORMAL_MODELS`,
         :data:`~mdr_events.dem.mapping.TANGENTIAL_MODELS`); default Hertz without friction.
@@ -43,6 +45,8 @@ def lammps_check(contact: Contact, motion, alpha: float | None = None, *, model:
         LAMMPS's number of steps or time step (default 10⁴ steps).
     tolerance : float
         The verdict's bound (:func:`~mdr_events.validate`).
+    limits : Limits
+        What the continuum run may use (:func:`~mdr_events.validate`).
 
     Returns
     -------
