@@ -47,6 +47,7 @@ $(DOCS_STAMP): $(STAMP)
 # Every tutorial and derivation notebook is executed, in a kernel whose figures are shown inline (MPLBACKEND
 # must not be set: a forced backend would keep them out of the pages).
 docs: $(DOCS_STAMP)
+	rm -rf docs/api/generated docs/api/internals   # (autosummary's stubs: made afresh, none left of a renamed module)
 	env -u MPLBACKEND $(BIN)/python -m sphinx -b html -W --keep-going -n -q docs docs/_build/html
 	@echo "docs: open docs/_build/html/index.html"
 
