@@ -230,11 +230,13 @@ def test_compute_sends_one_progress_message_per_step(computed):
     """reproduce numbers its steps out of a total that counts compute's as COMPUTE_STEPS."""
     _, messages = computed
     assert len(messages) == runner.COMPUTE_STEPS
-    assert messages[-5].startswith("fretting at d_max, R = 30 mm")
-    assert messages[-4].startswith("fit of 4 parameters to synthetic measurements")
-    assert messages[-3].startswith("universal map: critical angles")
-    assert messages[-2].startswith("other indenters: cone, paraboloid, quartic and flat punch")
-    assert messages[-1].startswith("Cattaneo–Mindlin: Coulomb's law")
+    assert messages[-8].startswith("fretting at d_max, R = 30 mm")
+    assert messages[-7].startswith("fit of 4 parameters to synthetic measurements")
+    assert messages[-6].startswith("universal map: critical angles")
+    assert messages[-5].startswith("other indenters: cone, paraboloid, quartic and flat punch")
+    assert messages[-4].startswith("Cattaneo–Mindlin: Coulomb's law")
+    assert [message.split(":")[0] for message in messages[-3:]] == ["LAMMPS hertz/material", "LAMMPS jkr",
+                                                                    "LAMMPS dmt"]
 
 
 def test_report_states_the_papers_numbers_beside_ours(fresh):
