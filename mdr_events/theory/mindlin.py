@@ -53,6 +53,7 @@ from mdr_events.theory.kinds import theory_of
 from mdr_events.validation import check_real, real_array, validate_alpha
 
 __all__ = ["coulomb_cap_ratio", "full_slip_shift", "full_slip_force", "virgin_force", "tangential_force", "loop_energy",
+           "flat_punch_force",
            "d_crit_A", "critical_angle_A", "d_crit_B", "critical_angle_B", "d_crit_B_indentation",
            "critical_angle_B_indentation"]
 
@@ -270,6 +271,46 @@ def loop_energy(amplitude, depth: float, friction: FrictionLaw | str | None, par
     return float(out) if np.ndim(amplitude) == 0 else out
 
 
+
+def flat_punch_force(x, depth, friction: FrictionLaw | str | None, params: Parameters, profile: FlatPunch):
+    """The tangential force (N) of a flat punch in contact along the samples ``(x, depth)`` of a path, the springs at
+    rest at the first sample (``flat_punch_friction_cap``, ``flat_punch_full_slip_force``).
+
+    Every spring under the face has the cap ``ū = K a + κ max(d, 0)`` (``a`` the punch's radius; ``K a`` alone in
+    tension, an adhesive punch held above the surface) and one anchor history: the springs are one play operator,
+    ``F_x = 2G* a u`` with ``u_k = clip(u_{k−1} + x_k − x_{k−1}, −ū_k, ū_k)``. Between samples on a straight piece of
+    the path, ``x`` and ``ū`` linear (``d`` not crossing 0), ``min_s (ū(s) − x(s))`` lies at an end, so each step is
+    exact: the force is exact at samples that hold the path's corners and its crossings of ``d = 0``.
+
+    Parameters
+    ----------
+    x, depth : array_like
+        The indenter's tangential position and depth at successive instants (1-D, equal lengths, finite, m), the
+        contact held throughout (no pull-off between them).
+    friction : FrictionLaw or str or None
+    params : Parameters
+        The material and ``τ0``.
+    profile : FlatPunch
+    """
+    if not isinstance(profile, FlatPunch):
+        raise TypeError(f"profile={profile!r} is not allowed for flat_punch_force; allowed: a FlatPunch")
+    friction = as_friction_law(friction)
+    positions = real_array("x", x, "a 1-D array of finite tangential positions (m)")
+    depths = real_array("depth", depth, "a 1-D array of finite depths (m), one per x")
+    if positions.ndim != 1 or depths.shape != positions.shape or not np.all(np.isfinite(positions) & np.isfinite(depths)):
+        raise ValueError(f"x of shape {positions.shape} and depth of shape {depths.shape} are not allowed; allowed: "
+                         "1-D arrays of finite numbers of one length (m)")
+    cap = symbolic.relation("flat_punch_friction_cap").numeric(depths, profile.radius, params.tau0 if friction.uses_tau0
+                                                               else 0.0, friction.coulomb_mu, params.E_star,
+                                                               params.G_star)
+    caps = np.broadcast_to(np.asarray(cap, dtype=float), positions.shape)
+    shift = np.empty_like(positions)
+    u = 0.0
+    for k in range(positions.size):
+        step = positions[k] - positions[k - 1] if k else 0.0
+        u = min(max(u + step, -caps[k]), caps[k])
+        shift[k] = u
+    return 2.0 * params.G_star * profile.radius * shift
 
 
 def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None):

@@ -33,7 +33,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                friction: FrictionLaw | str | None = None, adhesion: AdhesionLaw | None = None) -> PathSolution:
     """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`) for the indenter
     ``profile`` (``None``: the paper's paraboloid of ``params.R``), the friction law ``friction`` (``None``:
-    the paper's ``"tau0"``; Coulomb's part needs a contact without adhesion) and the adhesion law ``adhesion``
+    the paper's ``"tau0"``; Coulomb's part with ``τ0``'s and adhesion needs the flat punch: :func:`~.caps.check_supported`) and the adhesion law ``adhesion``
     (``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``); a path with more waypoints than
     ``limits.waypoints`` is refused before the work starts."""
     limits.check(f"the continuum run of a path with {len(path.waypoints)} waypoints",
@@ -225,9 +225,10 @@ def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOut
 
 
 def full_slip_force(model: ContinuumModel, radius: float, depth: float) -> float:
-    """``|F_x|`` with every spring at one cap: ``2G* K a² = τ0 π a²``, plus ``μ F_N`` (10) with Coulomb's part."""
+    """``|F_x|`` with every spring at one cap: ``2G* K a² = τ0 π a²``, plus ``μ F_N`` (10) with Coulomb's part (0 in
+    tension: the adhesive flat punch above the surface, ``flat_punch_full_slip_force``)."""
     force = 2.0 * model.params.G_star * model.K * radius**2
-    if model.caps.kappa:
+    if model.caps.kappa and depth > 0.0:
         force += model.friction.coulomb_mu * float(model.normal_force(depth, radius))
     return force
 
