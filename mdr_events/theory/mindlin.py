@@ -53,7 +53,7 @@ from mdr_events.theory.kinds import theory_of
 from mdr_events.validation import check_real, real_array, validate_alpha
 
 __all__ = ["coulomb_cap_ratio", "full_slip_shift", "full_slip_force", "virgin_force", "tangential_force", "loop_energy",
-           "flat_punch_force",
+           "flat_punch_force", "adhesive_onset_A_is_non_adhesive",
            "d_crit_A", "critical_angle_A", "d_crit_B", "critical_angle_B", "d_crit_B_indentation",
            "critical_angle_B_indentation"]
 
@@ -313,12 +313,24 @@ def flat_punch_force(x, depth, friction: FrictionLaw | str | None, params: Param
     return 2.0 * params.G_star * profile.radius * shift
 
 
-def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None):
-    """Depth of slip onset in scenario A without adhesion (m) for any friction law (module docstring).
+def adhesive_onset_A_is_non_adhesive(friction: FrictionLaw | str | None, profile: Profile | None) -> bool:
+    """Whether scenario A's onset with adhesion (Heß's rule, any ``Δγ0``, ``Δγ1``) is the one without: Coulomb's law
+    alone, whose tangential force is the compressed zone's, the contact without adhesion of the same path
+    (``derive_adhesive_friction_model``), and any law on the flat punch, whose springs are all compressed while it is
+    pressed in (its contact starts at ``d = 0`` with or without adhesion; ``flat_punch_friction_cap``)."""
+    friction = as_friction_law(friction)
+    return isinstance(profile, FlatPunch) or (friction.uses_mu and not friction.uses_tau0)
 
-    ``"tau0"``: (17) (:func:`mdr_events.theory.power_law.d_crit_A`). With Coulomb's part: ``nan`` (never) where
-    ``cot α <= κ``; else (17) at the angle ``α'`` with ``cot α' = cot α − κ``, which for ``"coulomb"`` alone is 0
-    (from first contact). ``α = 90°`` never slides (``+inf``).
+
+def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None,
+             adhesion: bool = False):
+    """Depth of slip onset in scenario A (m) for any friction law (module docstring).
+
+    ``"tau0"``: (17) (:func:`mdr_events.theory.power_law.d_crit_A`; (18) with ``adhesion``). With Coulomb's part:
+    ``nan`` (never) where ``cot α <= κ``; else (17) at the angle ``α'`` with ``cot α' = cot α − κ``, which for
+    ``"coulomb"`` alone is 0 (from first contact). ``α = 90°`` never slides (``+inf``). With ``adhesion`` and Coulomb's
+    part the onset is the one without where :func:`adhesive_onset_A_is_non_adhesive` (``"coulomb"`` alone, the flat
+    punch); ``"tau0+coulomb"`` on a curved indenter has no closed form (``nan``, as the continuum refuses it).
 
     Parameters
     ----------
@@ -326,13 +338,19 @@ def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
         Path angles in degrees, in (0, 90].
     friction : FrictionLaw or str or None
     params : Parameters
-        ``Δγ0`` is not used (the onset without adhesion).
+        ``Δγ0`` is used with ``adhesion`` alone.
     profile : PowerLaw or FlatPunch, optional
         Default the paraboloid of ``params.R``.
+    adhesion : bool, optional
+        The onset with Heß's rule (``params.dgamma0``, ``dgamma1``) rather than without.
     """
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
     indenter = _indenter(profile, params)
+    if adhesion and coulomb_cap_ratio(friction, params) == 0.0 and friction.uses_tau0:
+        return power_law.d_crit_A(alpha, indenter, params, adhesion=True)
+    if adhesion and not adhesive_onset_A_is_non_adhesive(friction, indenter):
+        return _onset_output(np.full(alpha_arr.shape, np.nan), alpha_arr)
     tau0_law = params if friction.uses_tau0 else params.replace(tau0=0.0)
     kappa = coulomb_cap_ratio(friction, params)
     if kappa == 0.0:
@@ -353,14 +371,20 @@ def _onset_output(values: np.ndarray, alpha: np.ndarray):
     return float(values) if np.ndim(alpha) == 0 else values
 
 
-def critical_angle_A(friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None) -> float:
-    """Scenario A's critical angle without adhesion (degrees): below it the springs slide before ``d_max``.
+def critical_angle_A(friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None,
+                     adhesion: bool = False) -> float:
+    """Scenario A's critical angle (degrees): below it the springs slide before ``d_max``.
 
     ``"tau0"``: ``tan α_c = d_max / ū(a(d_max))``; ``"coulomb"``: the angle of friction, ``tan α_c = 1/κ = G*/(μ E*)``,
-    at any depth; ``"tau0+coulomb"``: ``cot α_c = cot α_c(τ0) + κ``.
+    at any depth; ``"tau0+coulomb"``: ``cot α_c = cot α_c(τ0) + κ``. With ``adhesion`` as for :func:`d_crit_A`: the
+    angle without where :func:`adhesive_onset_A_is_non_adhesive`, ``nan`` for ``"tau0+coulomb"`` on a curved indenter.
     """
     friction = as_friction_law(friction)
     indenter = _indenter(profile, params)
+    if adhesion and coulomb_cap_ratio(friction, params) == 0.0 and friction.uses_tau0:
+        return float(power_law.critical_angle_A(indenter, params, adhesion=True))
+    if adhesion and not adhesive_onset_A_is_non_adhesive(friction, indenter):
+        return math.nan
     tau0_angle = power_law.critical_angle_A(indenter, params, adhesion=False) if friction.uses_tau0 else 90.0
     return _with_coulomb(tau0_angle, coulomb_cap_ratio(friction, params))
 
