@@ -48,7 +48,8 @@ class Caps(NamedTuple):
         tension, ``d < 0``: an adhesive flat punch held above the surface, ``K a`` alone)."""
         if not self.kappa:
             return self.K * radius
-        return self.K * radius + self.kappa * (max(depth, 0.0) if isinstance(depth, float) else np.maximum(depth, 0.0))
+        pressed = (depth if depth > 0.0 else 0.0) if type(depth) is float else np.maximum(depth, 0.0)
+        return self.K * radius + self.kappa * pressed
 
 
 def caps_of(friction: FrictionLaw, params: Parameters) -> Caps:

@@ -21,7 +21,7 @@ from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from .anchors import AnchorMap, Piece
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
 from .plan import Action, SpanPlan, plan_span
-from .solution import PathSolution, evaluate
+from .solution import PathSolution, contact_radii, evaluate
 from .span import Span, SpanOutcome, Trigger, integrate_span
 from .state import CONTACT_ENDING, NO_ZONE, Cap, ContactState, Event, EventKind, Regime, Slip, zone_events
 from .tolerances import MAX_RESTARTS, Tolerances
@@ -88,7 +88,7 @@ def attach_compressed_zone(solution: PathSolution, zone: PathSolution) -> None:
     solution.compressed = zone
     slips = [event for event in zone.events if event.kind in SLIP_KINDS]
     if slips:
-        radii = evaluate(solution, np.array([event.time for event in slips]))["contact_radius"]
+        radii = contact_radii(solution, np.array([event.time for event in slips]))
         slips = [event._replace(radius=float(radius)) for event, radius in zip(slips, radii)]
     kept = [event for event in solution.events if event.kind not in SLIP_KINDS]
     ending = CONTACT_ENDING | {EventKind.PATH_END}
