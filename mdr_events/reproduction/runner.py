@@ -21,6 +21,7 @@ from mdr_events.reproduction.figures import FIGURES
 from mdr_events.reproduction.fit_demo import FIT
 from mdr_events.reproduction.fretting import FRETTING
 from mdr_events.reproduction.mindlin import MINDLIN
+from mdr_events.reproduction.mindlin_adhesive import MINDLIN_ADHESIVE
 from mdr_events.reproduction.parameter_table import PARAMETERS
 from mdr_events.reproduction.phase_diagrams import PHASE_DIAGRAMS
 from mdr_events.reproduction.profiles import PROFILES
@@ -33,7 +34,7 @@ __all__ = ["SECTIONS", "COMPUTE_STEPS", "step_count", "compute", "report_text", 
 
 #: The sections in the report's order, which is also the order they are computed and written in.
 SECTIONS: tuple[Section, ...] = (PHASE_DIAGRAMS, CRITICAL_ANGLES, CROSS_CHECK, FIGURES, CONVERGENCE, FRETTING, FIT,
-                                 UNIVERSAL, PROFILES, MINDLIN, PARAMETERS)
+                                 UNIVERSAL, PROFILES, MINDLIN, MINDLIN_ADHESIVE, PARAMETERS)
 #: Progress messages :func:`compute` sends: one per step of every section.
 COMPUTE_STEPS = sum(len(section.steps) for section in SECTIONS)
 #: The progress message of the last step, writing the report.
