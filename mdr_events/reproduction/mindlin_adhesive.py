@@ -127,6 +127,6 @@ MINDLIN_ADHESIVE = Section(
     render=adhesive_lines,
     write=_write,
     writing="writing the Cattaneo–Mindlin check with adhesion (.nc, .png)",
-    files=(f"- `{MINDLIN_ADHESIVE_STEM}.{{nc,png}}` (continuum) and `{MINDLIN_ADHESIVE_STEM}_discrete.nc`: Coulomb's law "
-           "with", "  adhesion at a constant depth against Cattaneo–Mindlin of the compressed zone."),
+    files=(f"- `{MINDLIN_ADHESIVE_STEM}.{{nc,png}}` (continuum) and `{MINDLIN_ADHESIVE_STEM}_discrete.nc`: "
+           "Coulomb's law with", "  adhesion at a constant depth against Cattaneo–Mindlin of the compressed zone."),
 )

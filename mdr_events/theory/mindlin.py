@@ -297,7 +297,8 @@ def flat_punch_force(x, depth, friction: FrictionLaw | str | None, params: Param
     friction = as_friction_law(friction)
     positions = real_array("x", x, "a 1-D array of finite tangential positions (m)")
     depths = real_array("depth", depth, "a 1-D array of finite depths (m), one per x")
-    if positions.ndim != 1 or depths.shape != positions.shape or not np.all(np.isfinite(positions) & np.isfinite(depths)):
+    finite = np.all(np.isfinite(positions)) and np.all(np.isfinite(depths))
+    if positions.ndim != 1 or depths.shape != positions.shape or not finite:
         raise ValueError(f"x of shape {positions.shape} and depth of shape {depths.shape} are not allowed; allowed: "
                          "1-D arrays of finite numbers of one length (m)")
     cap = symbolic.relation("flat_punch_friction_cap").numeric(depths, profile.radius, params.tau0 if friction.uses_tau0

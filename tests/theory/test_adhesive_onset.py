@@ -63,4 +63,5 @@ def test_the_combined_law_on_a_curved_indenter_has_no_adhesive_onset():
     assert np.all(np.isnan(mindlin.d_crit_A(ANGLES, friction, params, adhesion=True)))
     assert math.isnan(mindlin.critical_angle_A(friction, params, adhesion=True))
     diagram = me.phase_diagram(params, ANGLES, friction=friction)
-    assert np.all(np.isnan(diagram["d_crit_jkr"].values)) and "no closed form" in diagram["d_crit_jkr"].attrs["long_name"]
+    assert np.all(np.isnan(diagram["d_crit_jkr"].values))
+    assert "no closed form" in diagram["d_crit_jkr"].attrs["long_name"]

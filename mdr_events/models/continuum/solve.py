@@ -33,7 +33,8 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                friction: FrictionLaw | str | None = None, adhesion: AdhesionLaw | None = None) -> PathSolution:
     """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`) for the indenter
     ``profile`` (``None``: the paper's paraboloid of ``params.R``), the friction law ``friction`` (``None``:
-    the paper's ``"tau0"``; Coulomb's part with ``τ0``'s and adhesion needs the flat punch: :func:`~.caps.check_supported`) and the adhesion law ``adhesion``
+    the paper's ``"tau0"``; both parts with adhesion need the flat punch: :func:`~.caps.check_supported`) and the
+    adhesion law ``adhesion``
     (``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``); a path with more waypoints than
     ``limits.waypoints`` is refused before the work starts."""
     limits.check(f"the continuum run of a path with {len(path.waypoints)} waypoints",
