@@ -708,7 +708,7 @@ def friction_model_afresh() -> dict[str, Relation]:
 ADHESIVE_FRICTION_KEYS = ("compression_boundary", "compression_boundary_rate", "adhesive_friction_cap",
                           "adhesive_virgin_force", "adhesive_full_slip_shift", "adhesive_full_slip_force",
                           "compressed_normal_force", "flat_punch_friction_cap", "flat_punch_full_slip_force",
-                          "flat_punch_loop_energy")
+                          "flat_punch_loop_energy", "adhesive_seen_piece_turn")
 
 
 @functools.cache
@@ -761,7 +761,29 @@ def adhesive_friction_model_afresh() -> dict[str, Relation]:
                  u_bar, cap, (x, d, a, tau0, mu, c, n, E_star, G_star)))
     _derive_adhesive_virgin_curve(add, profile, boundary, kappa, tau0_cap, model)
     _derive_flat_punch_friction(add, cap, kappa, tau0_cap)
+    _derive_seen_piece_turn(add, profile, model)
     return out
+
+
+def _derive_seen_piece_turn(add: AddRelation, profile: sp.Expr, model: dict[str, Relation]) -> None:
+    """Where a piece of anchors laid along the ``Δγ0`` branch turns, as a cap sees it in the compressed zone.
+
+    Springs attaching as the radius grows along the ``Δγ0`` branch ``d0(ξ)`` (9) get ``Y = x0 + r (d0(ξ) − d_ref)``
+    (``r = v_x/v_d`` of the segment); once ``x_c`` passes them the cap ``±`` compares ``Z = Y − σ g(ξ)`` with its level
+    (``σ = ±κ``). With adhesion ``d0 ≠ g``, so ``Z`` is no piece of the same kind and not monotone: ``dZ/dξ = 0`` where
+    ``(r − σ) g'(ξ) = r sqrt(2π Δγ0/(E* ξ))/2``, one radius when ``r/(r − σ) > 0`` (none otherwise), derived here
+    for the power law. (The groundwork of ``"tau0+coulomb"`` with adhesion in the continuum: the pieces split there.)
+    """
+    ratio, sigma = sp.Symbol("r_Y", real=True), sp.Symbol("sigma", real=True)
+    attach = model["power_law_depth"].rhs.subs(a, x)
+    seen = ratio * attach - sigma * profile  # Z up to the constant x0 − r d_ref
+    slope = sp.simplify(sp.diff(seen, x) * sp.sqrt(x))
+    roots = sp.solve(sp.Eq(slope, 0), x)
+    if len(roots) != 1:
+        raise RuntimeError(f"the seen piece's slope has {len(roots)} roots, not one")
+    add(Relation("adhesive_seen_piece_turn", "(9)", "radius where a piece of anchors laid along the dgamma0 branch "
+                 "turns as a cap sees it in the compressed zone, Y - sigma g with sigma = cap mu E*/G* (exists where "
+                 "r_Y/(r_Y - sigma) > 0)", x, roots[0], (ratio, sigma, dgamma, c, n, E_star)))
 
 
 def _derive_flat_punch_friction(add: AddRelation, cap: sp.Expr, kappa: sp.Expr, tau0_cap: sp.Expr) -> None:
