@@ -144,6 +144,39 @@ def main() -> None:
     many_waypoints(p)
     power_laws(p)
     friction_laws(p)
+    coulomb_with_adhesion(p)
+
+
+def coulomb_with_adhesion(p: me.Parameters) -> None:
+    """Coulomb's law with the paper's adhesion (issue 26: scenario A at 20° within 2x of the τ0 run; a 10-cycle fretting
+    path under 100 ms), and every law on the flat punch with adhesion: solve + fill 2001 samples, medians of 7."""
+    coulomb, combined = FrictionLaw("coulomb", mu=0.3), FrictionLaw("tau0+coulomb", mu=0.3)
+    depth = p.d_max / 3.0
+    X = 0.6 * mindlin.full_slip_shift(depth, coulomb, p)
+    fretting = Path(np.array([(0.0, 0.0), (0.0, depth)] + [(sign * X, depth) for sign in (1, -1) * 10]
+                             + [(0.0, depth), (0.0, 0.0)]), speed=p.v)
+
+    def timed(path, friction, profile=None, params=p):
+        def run():
+            solution = solve_path(params, path, friction=friction, profile=profile)
+            return evaluate(solution, np.linspace(0.0, solution.end_time * 1.0005, 2001))
+
+        run()
+        return median_time(run)
+
+    print("Coulomb's law with the paper's adhesion: solve + fill 2001 samples, median of 7")
+    scenario = Path.scenario_A(20.0, p)
+    tau0, with_coulomb = timed(scenario, FrictionLaw()), timed(scenario, coulomb)
+    print(f"  scenario A at 20°: tau0 {tau0 * 1e3:.1f} ms, coulomb {with_coulomb * 1e3:.1f} ms: "
+          f"{with_coulomb / tau0:.2f}x (target <= 2x)")
+    hertz = p.replace(dgamma0=0.0, dgamma1=0.0)
+    adhesive, alone = timed(fretting, coulomb), timed(fretting, coulomb, params=hertz)
+    print(f"  10-cycle fretting at d_max/3 (±0.6 of the full-slip shift): coulomb {adhesive * 1e3:.1f} ms (target < 100 "
+          f"ms); without adhesion {alone * 1e3:.1f} ms: {adhesive / alone:.2f}x (the compressed zone is that run)")
+    punch = me.FlatPunch(1.5e-3)
+    punch_A = Path.scenario_A(20.0, p, profile=punch)
+    print("  flat punch, scenario A at 20°: " + ", ".join(
+        f"{law.law} {timed(punch_A, law, punch) * 1e3:.1f} ms" for law in (FrictionLaw(), coulomb, combined)))
 
 
 def power_laws(p: me.Parameters) -> None:

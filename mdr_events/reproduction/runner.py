@@ -22,6 +22,7 @@ from mdr_events.reproduction.fit_demo import FIT
 from mdr_events.reproduction.fretting import FRETTING
 from mdr_events.reproduction.lammps import LAMMPS
 from mdr_events.reproduction.mindlin import MINDLIN
+from mdr_events.reproduction.mindlin_adhesive import MINDLIN_ADHESIVE
 from mdr_events.reproduction.parameter_table import PARAMETERS
 from mdr_events.reproduction.phase_diagrams import PHASE_DIAGRAMS
 from mdr_events.reproduction.profiles import PROFILES
@@ -34,7 +35,7 @@ __all__ = ["SECTIONS", "COMPUTE_STEPS", "step_count", "compute", "report_text", 
 
 #: The sections in the report's order, which is also the order they are computed and written in.
 SECTIONS: tuple[Section, ...] = (PHASE_DIAGRAMS, CRITICAL_ANGLES, CROSS_CHECK, FIGURES, CONVERGENCE, FRETTING, FIT,
-                                 UNIVERSAL, PROFILES, MINDLIN, LAMMPS, PARAMETERS)
+                                 UNIVERSAL, PROFILES, MINDLIN, MINDLIN_ADHESIVE, LAMMPS, PARAMETERS)
 #: Progress messages :func:`compute` sends: one per step of every section.
 COMPUTE_STEPS = sum(len(section.steps) for section in SECTIONS)
 #: The progress message of the last step, writing the report.

@@ -53,6 +53,7 @@ from mdr_events.theory.kinds import theory_of
 from mdr_events.validation import check_real, real_array, validate_alpha
 
 __all__ = ["coulomb_cap_ratio", "full_slip_shift", "full_slip_force", "virgin_force", "tangential_force", "loop_energy",
+           "flat_punch_force", "adhesive_onset_A_is_non_adhesive",
            "d_crit_A", "critical_angle_A", "d_crit_B", "critical_angle_B", "d_crit_B_indentation",
            "critical_angle_B_indentation"]
 
@@ -271,13 +272,66 @@ def loop_energy(amplitude, depth: float, friction: FrictionLaw | str | None, par
 
 
 
+def flat_punch_force(x, depth, friction: FrictionLaw | str | None, params: Parameters, profile: FlatPunch):
+    """The tangential force (N) of a flat punch in contact along the samples ``(x, depth)`` of a path, the springs at
+    rest at the first sample (``flat_punch_friction_cap``, ``flat_punch_full_slip_force``).
 
-def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None):
-    """Depth of slip onset in scenario A without adhesion (m) for any friction law (module docstring).
+    Every spring under the face has the cap ``ū = K a + κ max(d, 0)`` (``a`` the punch's radius; ``K a`` alone in
+    tension, an adhesive punch held above the surface) and one anchor history: the springs are one play operator,
+    ``F_x = 2G* a u`` with ``u_k = clip(u_{k−1} + x_k − x_{k−1}, −ū_k, ū_k)``. Between samples on a straight piece of
+    the path, ``x`` and ``ū`` linear (``d`` not crossing 0), ``min_s (ū(s) − x(s))`` lies at an end, so each step is
+    exact: the force is exact at samples that hold the path's corners and its crossings of ``d = 0``.
 
-    ``"tau0"``: (17) (:func:`mdr_events.theory.power_law.d_crit_A`). With Coulomb's part: ``nan`` (never) where
-    ``cot α <= κ``; else (17) at the angle ``α'`` with ``cot α' = cot α − κ``, which for ``"coulomb"`` alone is 0
-    (from first contact). ``α = 90°`` never slides (``+inf``).
+    Parameters
+    ----------
+    x, depth : array_like
+        The indenter's tangential position and depth at successive instants (1-D, equal lengths, finite, m), the
+        contact held throughout (no pull-off between them).
+    friction : FrictionLaw or str or None
+    params : Parameters
+        The material and ``τ0``.
+    profile : FlatPunch
+    """
+    if not isinstance(profile, FlatPunch):
+        raise TypeError(f"profile={profile!r} is not allowed for flat_punch_force; allowed: a FlatPunch")
+    friction = as_friction_law(friction)
+    positions = real_array("x", x, "a 1-D array of finite tangential positions (m)")
+    depths = real_array("depth", depth, "a 1-D array of finite depths (m), one per x")
+    finite = np.all(np.isfinite(positions)) and np.all(np.isfinite(depths))
+    if positions.ndim != 1 or depths.shape != positions.shape or not finite:
+        raise ValueError(f"x of shape {positions.shape} and depth of shape {depths.shape} are not allowed; allowed: "
+                         "1-D arrays of finite numbers of one length (m)")
+    cap = symbolic.relation("flat_punch_friction_cap").numeric(depths, profile.radius, params.tau0 if friction.uses_tau0
+                                                               else 0.0, friction.coulomb_mu, params.E_star,
+                                                               params.G_star)
+    caps = np.broadcast_to(np.asarray(cap, dtype=float), positions.shape)
+    shift = np.empty_like(positions)
+    u = 0.0
+    for k in range(positions.size):
+        step = positions[k] - positions[k - 1] if k else 0.0
+        u = min(max(u + step, -caps[k]), caps[k])
+        shift[k] = u
+    return 2.0 * params.G_star * profile.radius * shift
+
+
+def adhesive_onset_A_is_non_adhesive(friction: FrictionLaw | str | None, profile: Profile | None) -> bool:
+    """Whether scenario A's onset with adhesion (Heß's rule, any ``Δγ0``, ``Δγ1``) is the one without: Coulomb's law
+    alone, whose tangential force is the compressed zone's, the contact without adhesion of the same path
+    (``derive_adhesive_friction_model``), and any law on the flat punch, whose springs are all compressed while it is
+    pressed in (its contact starts at ``d = 0`` with or without adhesion; ``flat_punch_friction_cap``)."""
+    friction = as_friction_law(friction)
+    return isinstance(profile, FlatPunch) or (friction.uses_mu and not friction.uses_tau0)
+
+
+def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None,
+             adhesion: bool = False):
+    """Depth of slip onset in scenario A (m) for any friction law (module docstring).
+
+    ``"tau0"``: (17) (:func:`mdr_events.theory.power_law.d_crit_A`; (18) with ``adhesion``). With Coulomb's part:
+    ``nan`` (never) where ``cot α <= κ``; else (17) at the angle ``α'`` with ``cot α' = cot α − κ``, which for
+    ``"coulomb"`` alone is 0 (from first contact). ``α = 90°`` never slides (``+inf``). With ``adhesion`` and Coulomb's
+    part the onset is the one without where :func:`adhesive_onset_A_is_non_adhesive` (``"coulomb"`` alone, the flat
+    punch); ``"tau0+coulomb"`` on a curved indenter has no closed form (``nan``, as the continuum refuses it).
 
     Parameters
     ----------
@@ -285,13 +339,19 @@ def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
         Path angles in degrees, in (0, 90].
     friction : FrictionLaw or str or None
     params : Parameters
-        ``Δγ0`` is not used (the onset without adhesion).
+        ``Δγ0`` is used with ``adhesion`` alone.
     profile : PowerLaw or FlatPunch, optional
         Default the paraboloid of ``params.R``.
+    adhesion : bool, optional
+        The onset with Heß's rule (``params.dgamma0``, ``dgamma1``) rather than without.
     """
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
     indenter = _indenter(profile, params)
+    if adhesion and coulomb_cap_ratio(friction, params) == 0.0 and friction.uses_tau0:
+        return power_law.d_crit_A(alpha, indenter, params, adhesion=True)
+    if adhesion and not adhesive_onset_A_is_non_adhesive(friction, indenter):
+        return _onset_output(np.full(alpha_arr.shape, np.nan), alpha_arr)
     tau0_law = params if friction.uses_tau0 else params.replace(tau0=0.0)
     kappa = coulomb_cap_ratio(friction, params)
     if kappa == 0.0:
@@ -312,14 +372,20 @@ def _onset_output(values: np.ndarray, alpha: np.ndarray):
     return float(values) if np.ndim(alpha) == 0 else values
 
 
-def critical_angle_A(friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None) -> float:
-    """Scenario A's critical angle without adhesion (degrees): below it the springs slide before ``d_max``.
+def critical_angle_A(friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None,
+                     adhesion: bool = False) -> float:
+    """Scenario A's critical angle (degrees): below it the springs slide before ``d_max``.
 
     ``"tau0"``: ``tan α_c = d_max / ū(a(d_max))``; ``"coulomb"``: the angle of friction, ``tan α_c = 1/κ = G*/(μ E*)``,
-    at any depth; ``"tau0+coulomb"``: ``cot α_c = cot α_c(τ0) + κ``.
+    at any depth; ``"tau0+coulomb"``: ``cot α_c = cot α_c(τ0) + κ``. With ``adhesion`` as for :func:`d_crit_A`: the
+    angle without where :func:`adhesive_onset_A_is_non_adhesive`, ``nan`` for ``"tau0+coulomb"`` on a curved indenter.
     """
     friction = as_friction_law(friction)
     indenter = _indenter(profile, params)
+    if adhesion and coulomb_cap_ratio(friction, params) == 0.0 and friction.uses_tau0:
+        return float(power_law.critical_angle_A(indenter, params, adhesion=True))
+    if adhesion and not adhesive_onset_A_is_non_adhesive(friction, indenter):
+        return math.nan
     tau0_angle = power_law.critical_angle_A(indenter, params, adhesion=False) if friction.uses_tau0 else 90.0
     return _with_coulomb(tau0_angle, coulomb_cap_ratio(friction, params))
 

@@ -707,7 +707,8 @@ def friction_model_afresh() -> dict[str, Relation]:
 #: Keys of the relations of Coulomb's law with adhesion (:func:`derive_adhesive_friction_model`).
 ADHESIVE_FRICTION_KEYS = ("compression_boundary", "compression_boundary_rate", "adhesive_friction_cap",
                           "adhesive_virgin_force", "adhesive_full_slip_shift", "adhesive_full_slip_force",
-                          "compressed_normal_force")
+                          "compressed_normal_force", "flat_punch_friction_cap", "flat_punch_full_slip_force",
+                          "flat_punch_loop_energy", "adhesive_seen_piece_turn")
 
 
 @functools.cache
@@ -759,7 +760,61 @@ def adhesive_friction_model_afresh() -> dict[str, Relation]:
     add(Relation("adhesive_friction_cap", "(13)", "the cap of the spring at x: K a + mu (E*/G*) max(d - g(x), 0)",
                  u_bar, cap, (x, d, a, tau0, mu, c, n, E_star, G_star)))
     _derive_adhesive_virgin_curve(add, profile, boundary, kappa, tau0_cap, model)
+    _derive_flat_punch_friction(add, cap, kappa, tau0_cap)
+    _derive_seen_piece_turn(add, profile, model)
     return out
+
+
+def _derive_seen_piece_turn(add: AddRelation, profile: sp.Expr, model: dict[str, Relation]) -> None:
+    """Where a piece of anchors laid along the ``Δγ0`` branch turns, as a cap sees it in the compressed zone.
+
+    Springs attaching as the radius grows along the ``Δγ0`` branch ``d0(ξ)`` (9) get ``Y = x0 + r (d0(ξ) − d_ref)``
+    (``r = v_x/v_d`` of the segment); once ``x_c`` passes them the cap ``±`` compares ``Z = Y − σ g(ξ)`` with its level
+    (``σ = ±κ``). With adhesion ``d0 ≠ g``, so ``Z`` is no piece of the same kind and not monotone: ``dZ/dξ = 0`` where
+    ``(r − σ) g'(ξ) = r sqrt(2π Δγ0/(E* ξ))/2``, one radius when ``r/(r − σ) > 0`` (none otherwise), derived here
+    for the power law. (The groundwork of ``"tau0+coulomb"`` with adhesion in the continuum: the pieces split there.)
+    """
+    ratio, sigma = sp.Symbol("r_Y", real=True), sp.Symbol("sigma", real=True)
+    attach = model["power_law_depth"].rhs.subs(a, x)
+    seen = ratio * attach - sigma * profile  # Z up to the constant x0 − r d_ref
+    slope = sp.simplify(sp.diff(seen, x) * sp.sqrt(x))
+    roots = sp.solve(sp.Eq(slope, 0), x)
+    if len(roots) != 1:
+        raise RuntimeError(f"the seen piece's slope has {len(roots)} roots, not one")
+    add(Relation("adhesive_seen_piece_turn", "(9)", "radius where a piece of anchors laid along the dgamma0 branch "
+                 "turns as a cap sees it in the compressed zone, Y - sigma g with sigma = cap mu E*/G* (exists where "
+                 "r_Y/(r_Y - sigma) > 0)", x, roots[0], (ratio, sigma, dgamma, c, n, E_star)))
+
+
+def _derive_flat_punch_friction(add: AddRelation, cap: sp.Expr, kappa: sp.Expr, tau0_cap: sp.Expr) -> None:
+    """The friction laws on the flat punch of radius ``a``: ``g = 0`` under the face, so every spring has the cap
+    ``K a + κ max(d, 0)`` (the power law's ``cap`` at ``g = 0``; in tension at ``d < 0``, the adhesive punch held
+    above the surface, ``K a`` alone) and, attached together at the first touch, one anchor history: the springs are
+    one play operator ``u ← clip(u + Δx, −ū, ū)``, ``F_x = 2G* a u``, piecewise linear in time on a straight path
+    segment (``ū`` linear in ``d`` on either side of ``d = 0``). Full slip is ``τ0 π a² + μ F_N^H``, ``F_N^H`` the
+    punch's push ``2E* a max(d, 0)``; the loop ``−X → X → −X`` at a constant depth (``X >= ū``) is a parallelogram,
+    checked against Masing's ``8 ∫_0^X F₀ − 4 X F₀(X)`` of the virgin curve ``F₀ = 2G* a min(u, ū)``."""
+    punch_cap = cap.subs(x, 0)  # g(0) = 0: the cap of every spring under the face
+    under_face = sp.Max(d, 0)
+    if not _vanishes(punch_cap - tau0_cap - kappa * d) or sp.simplify(punch_cap.subs(d, -d_max) - tau0_cap) != 0:
+        raise RuntimeError("the flat punch's cap is not K a + κ d when pressed and K a in tension")
+    add(Relation("flat_punch_friction_cap", "(13)", "the cap of every spring under a flat punch of radius a: "
+                 "K a + mu (E*/G*) max(d, 0)", u_bar, tau0_cap + kappa * under_face, (d, a, tau0, mu, E_star, G_star)))
+    push = 2 * E_star * sp.integrate(under_face, (x, 0, a))  # the compressed springs' push, 0 in tension
+    full = sp.simplify(2 * G_star * sp.integrate(tau0_cap + kappa * under_face, (x, 0, a)))
+    if sp.simplify(full - sp.pi * tau0 * a**2 - mu * push) != 0:
+        raise RuntimeError("the flat punch's full slip is not tau0 pi a^2 + mu 2 E* a max(d, 0)")
+    add(Relation("flat_punch_full_slip_force", "", "tangential force of full slip of a flat punch of radius a: "
+                 "tau0 pi a^2 + mu 2 E* a max(d, 0)", F_x, sp.pi * tau0 * a**2 + mu * push, (d, a, tau0, mu, E_star)))
+    u = sp.Symbol("u", positive=True)
+    virgin = 2 * G_star * a * sp.Min(u, u_bar)  # F₀ from rest: every spring sticks up to the common cap
+    masing = sp.simplify(8 * sp.integrate(virgin.subs(u, x), (x, 0, X)) - 4 * X * virgin.subs(u, X))
+    parallelogram = 4 * (2 * G_star * a * u_bar) * (X - u_bar)  # ± the full slip force over the sliding stroke
+    excess = sp.Symbol("excess", positive=True)  # X − ū > 0: the sliding stroke
+    if sp.simplify(masing.subs(X, u_bar + excess) - parallelogram.subs(X, u_bar + excess)) != 0:
+        raise RuntimeError("the flat punch's Masing loop is not the parallelogram 8 G* a u_bar (X - u_bar)")
+    add(Relation("flat_punch_loop_energy", "", "energy dissipated per cycle -X -> X -> -X of a flat punch of radius a "
+                 "at a constant depth whose cap is u_bar, X >= u_bar", W, sp.expand(parallelogram), (X, a, u_bar, G_star)))
 
 
 def _vanishes(expr: sp.Expr) -> bool:

@@ -11,7 +11,7 @@ import pytest
 import mdr_events as me
 from mdr_events.analysis.convergence import history_differences, observed_orders
 from mdr_events.contact.friction import FrictionLaw
-from mdr_events.contact.indenters import FlatPunch, PowerLaw
+from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import EventKind, evaluate, solve_path, tangential_work
 from mdr_events.models.continuum.solution import algebraic_tangential_force
 from mdr_events.theory import mindlin
@@ -124,8 +124,6 @@ def test_the_discrete_model_converges_to_the_continuum_on_a_fretting_path_with_r
                          friction=FrictionLaw("tau0+coulomb", mu=0.3)),
      ["Parameters.dgamma0=0.01 and Parameters.dgamma1=0.15 are not allowed", "'tau0+coulomb'", "not done yet",
       "method='discrete'"]),
-    (lambda: me.simulate(me.Parameters.paper(), "A", alpha=[20.0], method="continuum", friction=COULOMB,
-                         profile=FlatPunch(1e-3)), ["FlatPunch", "'coulomb'", "method='discrete'"]),
 ])
 def test_what_the_continuum_still_refuses_is_named(call, words):
     with pytest.raises(ValueError) as caught:

@@ -20,6 +20,7 @@ from mdr_events.reproduction.fit_demo import FIT_STEM
 from mdr_events.reproduction.fretting import FRETTING_STEM
 from mdr_events.reproduction.markdown import INTEGRATED_ACCURACY
 from mdr_events.reproduction.mindlin import MINDLIN_STEM, mindlin_rows
+from mdr_events.reproduction.mindlin_adhesive import MINDLIN_ADHESIVE_STEM, adhesive_rows
 from mdr_events.reproduction.profiles import PROFILE_STEM, profile_rows
 from mdr_events.reproduction.readme import RECORDED_PACKAGES, recorded_versions
 from mdr_events.reproduction.universal import UNIVERSAL_STEM
@@ -135,6 +136,25 @@ def test_the_cattaneo_mindlin_check_meets_its_closed_form(fresh):
     assert continuum.attrs["friction_law"] == "coulomb" and continuum.attrs["param_dgamma0"] == 0.0
 
 
+def test_the_cattaneo_mindlin_check_with_adhesion_is_free_of_it(fresh):
+    """results/mindlin_coulomb_adhesive*: the committed files agree with a fresh run; with the paper's adhesion the
+    continuum equals the closed form without adhesion to 1e-9 of μ F_N^H and its own run without adhesion to rounding
+    (Coulomb's part is the compressed zone's), the discrete model (Δx = 1 µm) to 1e-5 and 1e-12; full slip is
+    μ F_N^H, above μ F_N (the tensile annulus pulls)."""
+    check = fresh["mindlin_adhesive"]
+    assert_results_agree(check.adhesive.continuum, me.open_result(RESULTS / f"{MINDLIN_ADHESIVE_STEM}.nc"))
+    assert_results_agree(check.adhesive.discrete, me.open_result(RESULTS / f"{MINDLIN_ADHESIVE_STEM}_discrete.nc"))
+    assert (RESULTS / f"{MINDLIN_ADHESIVE_STEM}.png").stat().st_size > 0
+    continuum, discrete = adhesive_rows(check)
+    assert continuum.max_difference < 1e-9 and continuum.from_without < 1e-12
+    assert discrete.max_difference < 1e-5 and discrete.from_without < 1e-12
+    exact = check.adhesive.continuum
+    full = np.nanmax(exact["cattaneo_mindlin_force"].values)
+    assert np.nanmax(exact["tangential_force"].values) == pytest.approx(full, rel=1e-12)
+    assert full > (1 + 1e-3) * 0.3 * np.nanmax(exact["normal_force"].values)
+    assert exact.attrs["param_dgamma0"] == 0.01 and exact.attrs["friction_law"] == "coulomb"
+
+
 def test_the_comparison_catches_what_the_tolerance_does_not_allow():
     """F_x's tolerance is the integrator's rtol of its largest magnitude and nothing else is loose: a change of
     3 rtol at the largest value, a moved nan, an event kind or an attribute is a difference."""
@@ -230,11 +250,12 @@ def test_compute_sends_one_progress_message_per_step(computed):
     """reproduce numbers its steps out of a total that counts compute's as COMPUTE_STEPS."""
     _, messages = computed
     assert len(messages) == runner.COMPUTE_STEPS
-    assert messages[-8].startswith("fretting at d_max, R = 30 mm")
-    assert messages[-7].startswith("fit of 4 parameters to synthetic measurements")
-    assert messages[-6].startswith("universal map: critical angles")
-    assert messages[-5].startswith("other indenters: cone, paraboloid, quartic and flat punch")
-    assert messages[-4].startswith("Cattaneo–Mindlin: Coulomb's law")
+    assert messages[-9].startswith("fretting at d_max, R = 30 mm")
+    assert messages[-8].startswith("fit of 4 parameters to synthetic measurements")
+    assert messages[-7].startswith("universal map: critical angles")
+    assert messages[-6].startswith("other indenters: cone, paraboloid, quartic and flat punch")
+    assert messages[-5].startswith("Cattaneo–Mindlin: Coulomb's law")
+    assert messages[-4].startswith("Cattaneo–Mindlin with adhesion: Coulomb's law")
     assert [message.split(":")[0] for message in messages[-3:]] == ["LAMMPS hertz/material", "LAMMPS jkr",
                                                                     "LAMMPS dmt"]
 

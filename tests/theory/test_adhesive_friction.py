@@ -193,3 +193,30 @@ def test_the_discrete_model_converges_to_the_adhesive_closed_form_at_first_order
     assert observed_orders(spacings[::2], errors[::2])[0] > 0.8, errors
     radius = math.sqrt(params.R * DEPTH)
     assert np.all(np.array(errors) <= 1.5 * np.array(spacings) / radius), errors
+
+
+@pytest.mark.parametrize("profile", PROFILES, ids=["paraboloid", "cone", "n3"])
+def test_a_piece_laid_along_the_adhesive_branch_turns_where_derived(profile):
+    """``Z = r d0(ξ) − σ g(ξ)`` (a piece of anchors laid along the Δγ0 branch, as the cap σ = ±κ sees it in the compressed
+    zone; the groundwork of "tau0+coulomb" with adhesion): its slope ``r d0' − σ g'`` (the derived slopes of (9) with
+    and without adhesion) vanishes at ``adhesive_seen_piece_turn`` and changes sign there where ``r/(r − σ) > 0``;
+    where ``r/(r − σ) < 0`` it keeps its sign (no turn)."""
+    params = _params(0.01, 0.15)
+    indenter = _indenter(profile, params)
+    kappa = mindlin.coulomb_cap_ratio(COULOMB, params)
+    slope = S.relation("power_law_depth_slope")
+
+    def seen_slope(xi, r, sigma):
+        d0 = float(slope.numeric(xi, indenter.c, indenter.n, params.E_star, params.dgamma0))
+        g = float(slope.numeric(xi, indenter.c, indenter.n, params.E_star, 0.0))
+        return r * d0 - sigma * g, abs(r * d0) + abs(sigma * g)
+
+    turn = S.relation("adhesive_seen_piece_turn")
+    for r, sigma in ((2.0 * kappa, kappa), (-0.5 * kappa, kappa), (3.0 * kappa, -kappa)):
+        xi = float(turn.numeric(r, sigma, params.dgamma0, indenter.c, indenter.n, params.E_star))
+        value, size = seen_slope(xi, r, sigma)
+        assert abs(value) < 1e-12 * size, (r, sigma, xi)
+        below, above = seen_slope(xi * (1 - 1e-3), r, sigma)[0], seen_slope(xi * (1 + 1e-3), r, sigma)[0]
+        assert below * above < 0, (r, sigma)
+    signs = {np.sign(seen_slope(xi, 0.5 * kappa, kappa)[0]) for xi in np.geomspace(1e-7, 1e-2, 200)}
+    assert len(signs) == 1  # r/(r − σ) = −1: no turn

@@ -189,15 +189,19 @@ def test_same_input_same_bytes(paper, tmp_path):
 
 def test_phase_diagram_of_another_friction_law():
     """Scenario A without adhesion for Coulomb's and the combined law: mindlin's onsets (+inf where no spring
-    slides while indenting), the adhesive variables nan (no closed form), the law named; a table's scenario B
-    refused."""
+    slides while indenting); the adhesive variables Coulomb's alone the same (the compressed zone's onset), the
+    combined law's nan (no closed form); the law named; a table's scenario B refused."""
     hertz = me.Parameters.paper().replace(dgamma0=0.0, dgamma1=0.0)
     angles = np.array([10.0, 40.0, 70.0, 90.0])
     for friction in (me.FrictionLaw("coulomb", mu=0.3), me.FrictionLaw("tau0+coulomb", mu=0.2)):
         ds = me.phase_diagram(hertz, angles, friction=friction)
         expected = me.mindlin.d_crit_A(angles, friction, hertz)
         np.testing.assert_array_equal(ds["d_crit_hertz"].values, np.where(np.isnan(expected), np.inf, expected))
-        assert np.all(np.isnan(ds["d_crit_jkr"].values)) and np.isnan(float(ds["critical_angle_jkr"]))
+        if friction.law == "coulomb":
+            np.testing.assert_array_equal(ds["d_crit_jkr"].values, ds["d_crit_hertz"].values)
+            assert float(ds["critical_angle_jkr"]) == float(ds["critical_angle_hertz"])
+        else:
+            assert np.all(np.isnan(ds["d_crit_jkr"].values)) and np.isnan(float(ds["critical_angle_jkr"]))
         assert float(ds["critical_angle_hertz"]) == me.mindlin.critical_angle_A(friction, hertz)
         assert ds.attrs["friction_law"] == friction.law
     r = np.linspace(0.0, 4e-3, 41)

@@ -32,8 +32,9 @@ reaches the centre or the edge, and re-sticks when its level turns back; these e
 event functions. The algebraic form ``F_x = 2G* ∫_0^a clip(x − Y, −ū, ū) dξ`` checks the
 integrated force (:func:`algebraic_tangential_force`).
 
-Friction laws: the cap ``ū(ξ) = K a + κ (d − g(ξ))`` (:mod:`.caps`); with adhesion Coulomb's law alone runs as the
-compressed zone beside the contact (``PathSolution.compressed``), both parts together are refused.
+Friction laws: the cap ``ū(ξ) = K a + κ max(d − g(ξ), 0)`` (:mod:`.caps`); with adhesion Coulomb's law alone runs as
+the compressed zone beside the contact (``PathSolution.compressed``); on the flat punch every law, with or without
+adhesion, is one play operator of the face; both parts together with adhesion on a curved indenter are refused.
 """
 
 from .anchors import AnchorMap, Piece

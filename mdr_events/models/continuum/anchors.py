@@ -209,9 +209,9 @@ class AnchorMap:
         A spring is at the cap where ``cap (x − Y) >= K a + κ (d − g)``, i.e. ``cap Z <= cap (x − cap (K a + κ d))``:
         a level the same for every spring, as with ``τ0`` alone. Without adhesion springs attach along
         ``d0 = g``, so a piece ``x0 + r (g − d_ref)`` is seen as ``x0 − cap κ d_ref + (r − cap κ)(g − d_ref)``: a
-        piece of the same kind, monotone in ``ξ``.
+        piece of the same kind, monotone in ``ξ``. Under the flat punch's face ``g = 0``: the map itself.
         """
-        if kappa == 0.0:
+        if kappa == 0.0 or getattr(self.attach, "flat", False):
             return self
         shift = float(cap) * kappa
         seen = [Piece(p.start, p.end, p.x0 - shift * p.d_ref, p.ratio - shift, p.d_ref) for p in self.pieces]

@@ -28,6 +28,11 @@ class Branch:
     above the jump-off radius (the stable branch).
     """
 
+    #: whether every spring in contact rests on ``g = 0`` (the flat punch's face): Coulomb's caps ``K a + κ max(d, 0)``
+    #: are then the same for all of them, and the anchors are compared with the levels as they are
+    #: (:meth:`~.anchors.AnchorMap.seen_by`)
+    flat = False
+
     def __init__(self, params: Parameters, work: float):
         self.params = params
         self.work = work
@@ -150,6 +155,8 @@ class FlatPunchBranch(Branch):
     The radius of any depth down to the jump-off is ``R_p``; the branch's depth at ``R_p`` is the jump-off's
     (where detachment starts); no span ever moves the radius (the planner pins it).
     """
+
+    flat = True
 
     def __init__(self, params: Parameters, work: float, profile: FlatPunch):
         self.params, self.work, self.profile = params, work, profile

@@ -10,13 +10,19 @@ beyond ``x_c`` (``g(x_c) = d``) are in tension, with the cap ``K a`` alone
 (:func:`~mdr_events.theory.symbolic.derive_adhesive_friction_model`). Coulomb's law alone (``K = 0``) is then exact by
 the compressed zone (:func:`compressed_zone_alone`): the springs in tension slide with no shift and enter compression
 at ``x_c`` with none, as springs attaching to a contact without adhesion do, so the tangential force is that of the
-non-adhesive contact of the same path (``solve_path`` runs it beside the adhesive contact's radius). Both parts with
-adhesion, and Coulomb's part on the flat punch, are refused (:func:`check_supported`; the discrete method runs them).
+non-adhesive contact of the same path (``solve_path`` runs it beside the adhesive contact's radius). On the flat punch
+every spring rests on ``g = 0``: all share the cap ``K a + κ max(d, 0)`` (``flat_punch_friction_cap``; ``K a`` alone
+in tension, an adhesive punch held above the surface) and one anchor history, one play operator; the anchors are seen
+as they are (the branch's ``flat``), every span is pinned, linear in time, and the planner ends a span where the depth
+crosses 0 (the caps' kink). Both parts with adhesion on a curved indenter are refused (:func:`check_supported`; the
+discrete method runs them).
 """
 
 from __future__ import annotations
 
 from typing import NamedTuple
+
+import numpy as np
 
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.parameters import Parameters
@@ -38,8 +44,12 @@ class Caps(NamedTuple):
         return self.K == 0.0 and self.kappa == 0.0
 
     def centre_shift(self, radius: float, depth: float) -> float:
-        """The cap of the spring at the centre, ``K a + κ d``, by which each level stands off ``x``."""
-        return self.K * radius + self.kappa * depth if self.kappa else self.K * radius
+        """The cap of the spring at the centre, ``K a + κ max(d, 0)``, by which each level stands off ``x`` (in
+        tension, ``d < 0``: an adhesive flat punch held above the surface, ``K a`` alone)."""
+        if not self.kappa:
+            return self.K * radius
+        pressed = (depth if depth > 0.0 else 0.0) if type(depth) is float else np.maximum(depth, 0.0)
+        return self.K * radius + self.kappa * pressed
 
 
 def caps_of(friction: FrictionLaw, params: Parameters) -> Caps:
@@ -55,17 +65,12 @@ def compressed_zone_alone(caps: Caps, dgamma0: float, dgamma1: float) -> bool:
 
 
 def check_supported(friction: FrictionLaw, params: Parameters, profile=None) -> None:
-    """Refuse both parts of a law with adhesion: the springs in tension keep ``τ0``'s cap ``K a`` while the compressed
-    ones add Coulomb's, one play operator per spring on anchors laid along the adhesive branch, which the caps no
-    longer see as single pieces (not done yet: the discrete method runs it); and Coulomb's part with the flat punch,
-    whose springs all rest on ``g = 0`` (the caps' coordinates have no ``g`` to follow). Coulomb's law alone with
-    adhesion is exact (:func:`compressed_zone_alone`)."""
-    if friction.coulomb_mu == 0.0:  # no Coulomb part (μ = 0 adds nothing to the caps)
+    """Refuse both parts of a law with adhesion on a curved indenter: the springs in tension keep ``τ0``'s cap ``K a``
+    while the compressed ones add Coulomb's, one play operator per spring on anchors laid along the adhesive branch,
+    which the caps no longer see as single pieces (not done yet: the discrete method runs it). Coulomb's law alone with
+    adhesion is exact (:func:`compressed_zone_alone`), and so is any law on the flat punch (module docstring)."""
+    if friction.coulomb_mu == 0.0 or isinstance(profile, FlatPunch):  # no Coulomb part, or one play operator
         return
-    if isinstance(profile, FlatPunch):
-        raise ValueError(f"profile={profile!r} is not allowed with the friction law {friction.law!r} in the continuum "
-                         "method; allowed: None, a PowerLaw or a TabulatedProfile, or the discrete model "
-                         "(simulate(..., method='discrete'))")
     adhesive = [f"Parameters.{name}={getattr(params, name)!r}" for name in ("dgamma0", "dgamma1")
                 if getattr(params, name) != 0.0]
     if adhesive and caps_of(friction, params).K > 0.0:

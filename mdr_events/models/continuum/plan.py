@@ -70,6 +70,19 @@ def _end_kind(t_end: float, segment: Segment, kind: EventKind) -> EventKind | No
     return None if t_end >= segment.t1 else kind
 
 
+def _at_surface(model: ContinuumModel, segment: Segment, t: float, t_end: float,
+                kind: EventKind | None) -> tuple[float, EventKind | None]:
+    """A pinned span's end where Coulomb's caps ``K a + κ max(d, 0)`` have their kink: the depth crossing 0 before
+    ``t_end`` (the adhesive flat punch pulled into tension or pressed back), without an event (the next plan goes on
+    from there, with the caps' new rate); else ``t_end`` and its event ``kind``."""
+    if not model.caps.kappa or segment.vd == 0.0:
+        return t_end, kind
+    d, scale = segment.d(t), _depth_scale(model, segment, t)
+    if (d < -scale if segment.vd > 0 else d > scale) and segment.time_at_depth(0.0) < t_end:
+        return segment.time_at_depth(0.0), None
+    return t_end, kind
+
+
 def _plan_out_of_contact(model: ContinuumModel, state: ContactState, segment: Segment) -> SpanPlan:
     """Contact where the indenter reaches the surface going in, or at once if the path starts inside (the
     springs under the Δγ0 radius jump in); else approach until it reaches the surface."""
@@ -97,8 +110,8 @@ def _plan_inward(model: ContinuumModel, state: ContactState, segment: Segment) -
     threshold = model.grow.growth_depth(a)
     if d < threshold - _depth_scale(model, segment, t):
         t_end = min(segment.t1, segment.time_at_depth(threshold))
-        return SpanPlan(Action.CONTACT, Regime.PINNED, t, t_end, _end_kind(t_end, segment, EventKind.GROWTH_RESUMES),
-                        a, state.force)
+        t_end, kind = _at_surface(model, segment, t, t_end, _end_kind(t_end, segment, EventKind.GROWTH_RESUMES))
+        return SpanPlan(Action.CONTACT, Regime.PINNED, t, t_end, kind, a, state.force)
     growth: tuple[Piece, ...] = ()
     jumped_from = None
     # an adhesive contact held above the surface (d < 0) presses in along the Δγ0 branch there, down to its fold
@@ -125,8 +138,8 @@ def _plan_outward(model: ContinuumModel, state: ContactState, segment: Segment) 
         return SpanPlan(Action.COME_OFF, Regime.PINNED, t, t, EventKind.PULL_OFF, a, force)
     if not touches_branch:
         t_end = min(segment.t1, segment.time_at_depth(threshold))
-        return SpanPlan(Action.CONTACT, Regime.PINNED, t, t_end,
-                        _end_kind(t_end, segment, EventKind.DETACHMENT_STARTS), a, force)
+        t_end, kind = _at_surface(model, segment, t, t_end, _end_kind(t_end, segment, EventKind.DETACHMENT_STARTS))
+        return SpanPlan(Action.CONTACT, Regime.PINNED, t, t_end, kind, a, force)
     t_end = min(segment.t1, segment.time_at_depth(model.shrink.jump_off_depth))
     ending = EventKind.PULL_OFF if model.shrink.work > 0 else EventKind.CONTACT_ENDS
     # the radius leaves the pinned or growing state at once (Δγ1 <= Δγ0)

@@ -75,11 +75,34 @@ EVALUATED_QUANTITIES = ("indentation_depth", "tangential_displacement", "normal_
                         "contact_radius", "sliding_fraction")
 
 
-def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding: bool = True) -> dict[str, np.ndarray]:
+def _span_radius(model, span: Span, d: np.ndarray) -> np.ndarray:
+    """The contact radius of a span in contact at the depths ``d``: on its branch of (9), or pinned."""
+    if span.regime is Regime.GROWING:  # on the Δγ0 branch, above its fold; a sample may sit below it to rounding
+        return model.grow.radii(np.maximum(d, model.grow.jump_off_depth))
+    if span.regime is Regime.SHRINKING:  # the last sample may sit on the fold to rounding
+        return model.shrink.radii(np.maximum(d, model.shrink.jump_off_depth))
+    return np.full(np.shape(d), span.pinned_radius)
+
+
+def contact_radii(solution: PathSolution, times: np.ndarray) -> np.ndarray:
+    """The contact radius at ``times`` (s from first contact, within the run), as :func:`evaluate` gives it, alone."""
+    times = np.asarray(times, dtype=float)
+    out = np.zeros(times.shape)
+    owner = solution.span_index(times)
+    for index in np.unique(owner):
+        span, rows = solution.spans[index], owner == index
+        if span.regime is not Regime.NONE:
+            out[rows] = _span_radius(solution.model, span, span.segment.d(solution.t_contact + times[rows]))
+    return out
+
+
+def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding: bool = True,
+                  zone: dict[str, np.ndarray] | None = None) -> dict[str, np.ndarray]:
     """Every quantity of :data:`EVALUATED_QUANTITIES` at ``times`` (s from first contact) within span
     ``index``, as a vectorised function of time: the kinematics are linear, the radius follows its
     branch of (9) (or is pinned), ``F_N`` is (10), ``F_x`` is the span's interpolant and the sliding
-    fraction is the slip front of the span's anchor map."""
+    fraction is the slip front of the span's anchor map. ``zone``: the compressed zone's run already evaluated at
+    ``times`` (:func:`evaluate` fills it once for every span)."""
     model = solution.model
     span = solution.spans[index]
     t = solution.t_contact + np.asarray(times, dtype=float)
@@ -90,12 +113,7 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
         out.update(normal_force=zero, tangential_force=zero, contact_radius=zero,
                    sliding_fraction=np.full(t.shape, np.nan))
         return out
-    if span.regime is Regime.GROWING:  # on the Δγ0 branch, above its fold; a sample may sit below it to rounding
-        a = model.grow.radii(np.maximum(d, model.grow.jump_off_depth))
-    elif span.regime is Regime.SHRINKING:  # the last sample may sit on the fold to rounding
-        a = model.shrink.radii(np.maximum(d, model.shrink.jump_off_depth))
-    else:
-        a = np.full(t.shape, span.pinned_radius)
+    a = _span_radius(model, span, d)
     out["contact_radius"] = a
     out["normal_force"] = np.asarray(model.normal_force(d, a), dtype=float)  # (10)
     if span.interpolant is None:
@@ -104,7 +122,7 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
         force = span.interpolant(a / span.scale if span.variable is Variable.RADIUS else t)[0]
     out["tangential_force"] = force
     if solution.compressed is not None:
-        out["tangential_force"], zone_sliding = _compressed_zone(solution.compressed, times, a)
+        out["tangential_force"], zone_sliding = _compressed_zone(solution.compressed, times, a, zone)
         if sliding:
             out["sliding_fraction"] = zone_sliding
         return out
@@ -116,11 +134,13 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     return out
 
 
-def _compressed_zone(zone: PathSolution, times: np.ndarray, radius: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _compressed_zone(zone: PathSolution, times: np.ndarray, radius: np.ndarray,
+                     filled: dict[str, np.ndarray] | None = None) -> tuple[np.ndarray, np.ndarray]:
     """The tangential force of the compressed zone's run ``zone`` at ``times`` (0 where the zone has no contact) and
     the sliding fraction of the contact of radius ``radius``: the zone's sliding springs and every spring in tension
-    (``x_c < ξ < a``: a zero cap)."""
-    filled = evaluate(zone, np.atleast_1d(np.asarray(times, dtype=float)))
+    (``x_c < ξ < a``: a zero cap); ``filled``: the zone's run evaluated at ``times`` already."""
+    if filled is None:
+        filled = evaluate(zone, np.atleast_1d(np.asarray(times, dtype=float)))
     force = np.nan_to_num(filled["tangential_force"])
     x_c = np.nan_to_num(filled["contact_radius"])
     sliding_springs = np.nan_to_num(filled["sliding_fraction"]) * x_c + (radius - x_c)
@@ -147,10 +167,13 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
         out["tangential_displacement"][first] = last.x(t)
         for name in ("normal_force", "tangential_force", "contact_radius"):
             out[name][first] = 0.0
+    # the compressed zone's run (Coulomb's law alone with adhesion) evaluated once, not span by span
+    zone = evaluate(solution.compressed, times) if solution.compressed is not None else None
     for index in range(len(solution.spans)):
         rows = np.flatnonzero(inside & (owner == index))
         if rows.size:
-            for name, values in evaluate_span(solution, index, times[rows]).items():
+            part = {name: values[rows] for name, values in zone.items()} if zone is not None else None
+            for name, values in evaluate_span(solution, index, times[rows], zone=part).items():
                 out[name][rows] = values
     return out
 

@@ -21,7 +21,7 @@ from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from .anchors import AnchorMap, Piece
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
 from .plan import Action, SpanPlan, plan_span
-from .solution import PathSolution, evaluate
+from .solution import PathSolution, contact_radii, evaluate
 from .span import Span, SpanOutcome, Trigger, integrate_span
 from .state import CONTACT_ENDING, NO_ZONE, Cap, ContactState, Event, EventKind, Regime, Slip, zone_events
 from .tolerances import MAX_RESTARTS, Tolerances
@@ -33,7 +33,8 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                friction: FrictionLaw | str | None = None, adhesion: AdhesionLaw | None = None) -> PathSolution:
     """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`) for the indenter
     ``profile`` (``None``: the paper's paraboloid of ``params.R``), the friction law ``friction`` (``None``:
-    the paper's ``"tau0"``; Coulomb's part needs a contact without adhesion) and the adhesion law ``adhesion``
+    the paper's ``"tau0"``; both parts with adhesion need the flat punch: :func:`~.caps.check_supported`) and the
+    adhesion law ``adhesion``
     (``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``); a path with more waypoints than
     ``limits.waypoints`` is refused before the work starts."""
     limits.check(f"the continuum run of a path with {len(path.waypoints)} waypoints",
@@ -88,7 +89,7 @@ def attach_compressed_zone(solution: PathSolution, zone: PathSolution) -> None:
     solution.compressed = zone
     slips = [event for event in zone.events if event.kind in SLIP_KINDS]
     if slips:
-        radii = evaluate(solution, np.array([event.time for event in slips]))["contact_radius"]
+        radii = contact_radii(solution, np.array([event.time for event in slips]))
         slips = [event._replace(radius=float(radius)) for event, radius in zip(slips, radii)]
     kept = [event for event in solution.events if event.kind not in SLIP_KINDS]
     ending = CONTACT_ENDING | {EventKind.PATH_END}
@@ -225,9 +226,10 @@ def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOut
 
 
 def full_slip_force(model: ContinuumModel, radius: float, depth: float) -> float:
-    """``|F_x|`` with every spring at one cap: ``2G* K a² = τ0 π a²``, plus ``μ F_N`` (10) with Coulomb's part."""
+    """``|F_x|`` with every spring at one cap: ``2G* K a² = τ0 π a²``, plus ``μ F_N`` (10) with Coulomb's part (0 in
+    tension: the adhesive flat punch above the surface, ``flat_punch_full_slip_force``)."""
     force = 2.0 * model.params.G_star * model.K * radius**2
-    if model.caps.kappa:
+    if model.caps.kappa and depth > 0.0:
         force += model.friction.coulomb_mu * float(model.normal_force(depth, radius))
     return force
 

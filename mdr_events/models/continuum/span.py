@@ -4,6 +4,8 @@ The force obeys
 
     dF_x/dt = 2G* [ (n₊ − n₋) dū/dt + (a − n₊ − n₋) dx/dt + (da/dt) u(a) ],
 
+(``dū/dt = K ȧ + κ ∂d/∂t``: a pinned span's caps follow the depth, ``κ v_d`` while pressed, 0 in tension)
+
 with ``n₊``, ``n₋`` the sizes of the slip zones at the caps ``u = +ū`` and ``u = −ū`` (their springs
 follow the cap, the sticking ones the indenter; springs leave at the edge with their shift ``u(a)``),
 integrated by :func:`scipy.integrate.solve_ivp` (DOP853, dense output). A pinned span is integrated
@@ -155,6 +157,9 @@ class SpanIntegrator:
         else:
             self.start, self.stop = t0, t1
             self.a0 = span.pinned_radius
+        #: a pinned span's ``dd/dt`` where Coulomb's caps follow it: ``v_d`` while pressed (``d > 0``), 0 in tension
+        #: (the planner ends a span where the depth crosses 0, so the span's middle tells)
+        self.depth_rate = self.segment.vd if self.segment.d(0.5 * (t0 + t1)) > 0.0 else 0.0
         self.x0 = self.segment.x(t0)
         depth_term = model.grow.depth_term
         # a moving radius is integrated in units of the span's largest radius, and an event's root is found to 4 eps
@@ -193,7 +198,7 @@ class SpanIntegrator:
         """A quantity with the sign of ``cap · d(level)/dt``: positive while the level pushes the springs
         at the cap (moving radius: ``cap · v_x · ∂d/∂a − K v_d − κ v_d ∂d/∂a``, the rate times ``∂d/∂a > 0``)."""
         if not self.moving:
-            return cap * self.segment.vx - self.kappa * self.segment.vd
+            return cap * self.segment.vx - self.kappa * self.depth_rate
         if self.kappa and self.K == 0.0:
             # Coulomb's caps alone: the rate's sign is that of cap · v_x − κ v_d, constant on the segment (times
             # ∂d/∂a it would vanish at a = 0, where a contact without adhesion ends: no turn there)
@@ -219,8 +224,11 @@ class SpanIntegrator:
         positive = self.positive.size(x - shift, a)
         negative = self.negative.size(x + shift, a)
         sticking = a - positive - negative
-        if not self.moving:  # (a pinned radius: the caps keep still, as without adhesion κ needs v_d = 0)
-            return [self.G2 * sticking * segment.vx]
+        if not self.moving:  # a pinned radius: the caps follow the depth alone, κ v_d per spring at a cap while pressed
+            total = sticking * segment.vx
+            if self.kappa and self.depth_rate:
+                total += (positive - negative) * self.kappa * self.depth_rate
+            return [self.G2 * total]
         slope = self.branch.slope(a)
         # the springs at a cap carry K a + κ (d − g): d/da of it is K + κ ∂d/∂a
         cap_rate = K + self.kappa * slope if self.kappa else K
@@ -291,17 +299,21 @@ class SpanIntegrator:
 
     def force_is_linear(self) -> bool:
         """A pinned span without fronts: the slip zones hold whole pieces and keep their sizes until an
-        event, so ``dF_x/dt = 2G* (a − n₊ − n₋) v_x`` is constant and the events' times are closed forms."""
+        event, so ``dF_x/dt = 2G* ((a − n₊ − n₋) v_x + (n₊ − n₋) κ ḋ)`` is constant and the events' times are
+        closed forms (``ḋ``: :attr:`depth_rate`)."""
         return not self.moving and not self.positive.fronts and not self.negative.fronts
 
     def linear_span(self, force: float) -> SpanOutcome:
         """:meth:`force_is_linear`: the force and the first event in closed form (the levels are linear in
         time; each cap's target is fixed), the span's interpolant a :class:`LinearForce`."""
         a = self.span.pinned_radius
-        rate = self.G2 * (a - self.positive.size(0.0, a) - self.negative.size(0.0, a)) * self.segment.vx
+        positive, negative = self.positive.size(0.0, a), self.negative.size(0.0, a)
+        rate = self.G2 * (a - positive - negative) * self.segment.vx
+        if self.kappa and self.depth_rate:  # the springs at a cap follow κ d (the flat punch pressed in or out)
+            rate += self.G2 * (positive - negative) * self.kappa * self.depth_rate
         t_stop, fired = self.stop, frozenset()
         for event in self.event_functions():  # only ZONE_REACHES in a pinned span: linear in time
-            speed = event.trigger is Trigger.ZONE_REACHES and event.cap * self.segment.vx - self.kappa * self.segment.vd
+            speed = event.trigger is Trigger.ZONE_REACHES and event.cap * self.segment.vx - self.kappa * self.depth_rate
             if speed and speed > 0.0:
                 when = self.start - event(self.start) / speed
                 if when < t_stop:
@@ -313,9 +325,10 @@ class SpanIntegrator:
 
     def force_is_constant(self) -> bool:
         """Nothing moves the force: a span of zero extent, or a pinned one without tangential motion or
-        with every spring at one cap."""
+        with every spring at one cap, whose caps keep still (no Coulomb part following the depth)."""
         full = any(self.zones[cap].summary(self.a0).slip is Slip.FULL for cap in Cap)
-        return self.start == self.stop or (not self.moving and (self.segment.vx == 0.0 or full))
+        still = not (self.kappa and self.depth_rate)
+        return self.start == self.stop or (not self.moving and still and (self.segment.vx == 0.0 or full))
 
 
 class LinearForce:

@@ -31,7 +31,8 @@ PARTIAL     PARTIAL     FRONT_AT_CENTRE / FRONT_AT_EDGE when the zone first reac
 Radius regime transitions are fixed by the path and the branches (closed form, see ``plan``):
 ``NONE → GROWING`` at first contact and at every re-contact, ``PINNED → GROWING`` at growth_resumes,
 ``PINNED → SHRINKING`` at detachment_starts, ``SHRINKING → NONE`` at pull_off or contact_ends, and
-a new regime at every path corner.
+a new regime at every path corner; with Coulomb's caps ``PINNED → PINNED`` where the depth crosses 0 (the adhesive
+flat punch into tension or back: the caps' rate changes, nothing is logged).
 """
 
 from __future__ import annotations

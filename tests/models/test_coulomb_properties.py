@@ -1,0 +1,106 @@
+"""Property-based tests of Coulomb's part with adhesion and on the flat punch (hypothesis; bounded example counts),
+as tests/models/test_properties.py draws the τ0 law's: parameters log-uniformly over ranges well beyond the paper's
+(works of adhesion in either order or zero), μ 0.05–1, random paths (reversals, pinned slides, re-indentation, a
+pull-off and a new contact).
+
+- Coulomb's law alone with adhesion (the compressed zone): the integrated F_x is the algebraic form on the stored
+  anchors, and never beyond full slip μ F_N^H(d), the compressed springs' push (free of Δγ).
+- The flat punch, both laws, with or without adhesion: F_x is the play operator of the face
+  (mindlin.flat_punch_force) while the first contact holds, exact at the corners and the crossings of d = 0.
+"""
+
+import math
+import os
+
+import numpy as np
+from hypothesis import HealthCheck, event, given, settings
+from hypothesis import strategies as st
+
+import mdr_events as me
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.models import continuum
+from mdr_events.theory import mindlin
+
+from test_properties import (ALGEBRAIC_ROUNDING, label_parameters, label_path, parameters, path_points,
+                             work_of_adhesion)
+
+SCALE = 5 if os.environ.get("HYPOTHESIS_PROFILE") == "explore" else 1
+#: The integrated force against the algebraic form and the closed forms, as a share of the run's largest force: the
+#: integration's rtol (1e-10) accumulated over the spans, with room for the positions' rounding (the τ0 law's
+#: property test takes 1e-7 of its largest value as well)
+FORCE_SHARE = 1e-7
+
+
+def coefficients():
+    return st.floats(0.05, 1.0)
+
+
+@st.composite
+def adhesive_coulomb_paths(draw):
+    """A paraboloid with adhesion (both works > 0, in either order), Coulomb's law alone, a random path."""
+    params = draw(parameters(adhesion=st.floats(1e-3, 0.5), friction=st.just(0.0)))
+    return params, FrictionLaw("coulomb", mu=draw(coefficients())), me.Path(path_points(draw, params), params.v)
+
+
+@settings(max_examples=20 * SCALE, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(adhesive_coulomb_paths())
+def test_coulomb_with_adhesion_is_its_algebraic_form_within_full_slip(case):
+    params, friction, path = case
+    label_parameters(params)
+    label_path(path)
+    solution = continuum.solve_path(params, path, friction=friction)
+    times = np.linspace(0.0, solution.end_time, 301)[:-1]
+    filled = continuum.evaluate(solution, times)
+    algebraic = continuum.algebraic_tangential_force(solution, times)
+    scale = max(float(np.max(np.abs(algebraic))), 1e-300)
+    # as the τ0 law's property test: plus the algebraic form's rounding of x − Y and the velocity components the
+    # integration drops (a vertical path has F_x ≡ 0 integrated, and 1e-16 N of rounding in the algebraic form)
+    rounding = 2 * params.G_star * np.nanmax(filled["contact_radius"]) * (
+        ALGEBRAIC_ROUNDING * np.nanmax(np.abs(filled["tangential_displacement"]))
+        + continuum.NEGLIGIBLE_SHARE * path.speed * path.duration)
+    tolerance = FORCE_SHARE * scale + rounding
+    np.testing.assert_allclose(filled["tangential_force"], algebraic, rtol=0, atol=tolerance)
+    depth = np.maximum(filled["indentation_depth"], 0.0)
+    push = 4.0 / 3.0 * params.E_star * math.sqrt(params.R) * depth**1.5  # F_N^H(d) of the paraboloid
+    assert np.all(np.abs(filled["tangential_force"]) <= friction.mu * push + tolerance)
+    wholly = (push > 0.0) & (np.abs(filled["tangential_force"]) >= friction.mu * push * (1 - 1e-9))
+    event("slides wholly" if np.any(wholly) else "never slides wholly")
+
+
+@st.composite
+def punch_paths(draw):
+    """A flat punch of 0.5–5 mm, either law (τ0 > 0 for the combined one), adhesion or none, a random path."""
+    params = draw(parameters(adhesion=work_of_adhesion(), friction=st.floats(1e3, 2e5).map(float)))
+    law = draw(st.sampled_from(["coulomb", "tau0+coulomb"]))
+    punch = me.FlatPunch(draw(st.floats(5e-4, 5e-3)))
+    return params, FrictionLaw(law, mu=draw(coefficients())), punch, me.Path(path_points(draw, params), params.v)
+
+
+def _samples(path, n=2001):
+    """Times from first contact holding every corner and every crossing of d = 0."""
+    corners = path.corner_times - path.first_contact_time()
+    waypoints = path.waypoints
+    crossings = [corners[i] + (corners[i + 1] - corners[i]) * waypoints[i, 1] / (waypoints[i, 1] - waypoints[i + 1, 1])
+                 for i in range(len(waypoints) - 1) if waypoints[i, 1] * waypoints[i + 1, 1] < 0]
+    times = np.union1d(np.linspace(0.0, corners[-1], n), np.concatenate([corners, crossings]))
+    return times[times >= 0.0]
+
+
+@settings(max_examples=30 * SCALE, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(punch_paths())
+def test_the_flat_punch_is_one_play_operator(case):
+    params, friction, punch, path = case
+    label_parameters(params)
+    label_path(path)
+    event(friction.law)
+    solution = continuum.solve_path(params, path, profile=punch, friction=friction)
+    times = _samples(path)
+    times = times[times <= solution.end_time]
+    filled = continuum.evaluate(solution, times)
+    touching = filled["contact_radius"] > 0
+    held = np.flatnonzero(~touching)[0] if not touching.all() else times.size  # the first contact
+    event("pulled off" if held < times.size else "held to the end")
+    expected = mindlin.flat_punch_force(filled["tangential_displacement"][:held], filled["indentation_depth"][:held],
+                                        friction, params, punch)
+    scale = max(float(np.max(np.abs(expected), initial=0.0)), 1e-300)
+    np.testing.assert_allclose(filled["tangential_force"][:held], expected, rtol=0, atol=FORCE_SHARE * scale)
