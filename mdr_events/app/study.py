@@ -91,7 +91,7 @@ The ``[parameters]`` and ``[path]`` tables can also be read alone (:func:`load_p
 :func:`load_path_file`): ``mdr-events validate --params FILE --path FILE`` takes them from any TOML file
 holding them, a study file among others.
 
-The module is a little over 500 lines because it holds this reference of the format beside one small builder per
+The module is over 500 lines because it holds this reference of the format beside one small builder per
 table (each making its job from the table's values); the format's checks are apart, in ``study_format``.
 """
 

@@ -36,6 +36,9 @@ springs share the shift ``(d_max − d)/tan α``, and the edge's cap is the smal
 zero): the onset is the paper's (20) for any ``τ0`` part, at once (``d_max``) for Coulomb's alone
 (:func:`d_crit_B`). Further in at ``α`` the old edge's cap is ``K a + κ (d − d_max)`` against the shift
 ``(d − d_max)/tan α``: (20)'s "+" branch at ``α'`` (:func:`d_crit_B_indentation`).
+
+The module is a little over 500 lines: one closed form per function for each friction law (virgin curves, Masing's
+loops, full slip, the onsets of scenarios A and B, the flat punch), each with its numpydoc sections.
 """
 
 from __future__ import annotations
@@ -288,9 +291,16 @@ def flat_punch_force(x, depth, friction: FrictionLaw | str | None, params: Param
         The indenter's tangential position and depth at successive instants (1-D, equal lengths, finite, m), the
         contact held throughout (no pull-off between them).
     friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
     params : Parameters
         The material and ``τ0``.
     profile : FlatPunch
+        The punch (its radius is the contact's).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``F_x`` (N) at each sample, the shape of ``x``.
     """
     if not isinstance(profile, FlatPunch):
         raise TypeError(f"profile={profile!r} is not allowed for flat_punch_force; allowed: a FlatPunch")
@@ -318,7 +328,20 @@ def adhesive_onset_A_is_non_adhesive(friction: FrictionLaw | str | None, profile
     """Whether scenario A's onset with adhesion (Heß's rule, any ``Δγ0``, ``Δγ1``) is the one without: Coulomb's law
     alone, whose tangential force is the compressed zone's, the contact without adhesion of the same path
     (``derive_adhesive_friction_model``), and any law on the flat punch, whose springs are all compressed while it is
-    pressed in (its contact starts at ``d = 0`` with or without adhesion; ``flat_punch_friction_cap``)."""
+    pressed in (its contact starts at ``d = 0`` with or without adhesion; ``flat_punch_friction_cap``).
+
+    Parameters
+    ----------
+    friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
+    profile : PowerLaw, FlatPunch, TabulatedProfile or None
+        The indenter (``None``: the paraboloid).
+
+    Returns
+    -------
+    bool
+        ``True`` where the adhesive onset equals the non-adhesive one.
+    """
     friction = as_friction_law(friction)
     return isinstance(profile, FlatPunch) or (friction.uses_mu and not friction.uses_tau0)
 
