@@ -253,24 +253,18 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
         return extremum(solution.compressed, quantity, largest)
     scan = scan_spans(solution) if scan is None else scan
     sign = 1.0 if largest else -1.0
-    candidates = []
-    for index, (times, filled) in enumerate(zip(scan.times, scan.values)):
-        values = sign * _quantity(filled, quantity)
-        if not np.any(np.isfinite(values)):
-            continue
-        i = int(np.argmax(values >= np.nanmax(values) - EXTREMUM_TIE * np.nanmax(np.abs(values))))  # earliest tie
-        reach = float(np.nanmax(np.abs(np.diff(values)), initial=0.0)) if len(values) > 1 else 0.0
-        candidates.append((float(values[i]), reach, index, i))
-    if not candidates:
+    best, reach, first, size = _scanned_extremes(scan, quantity, sign)
+    spans = np.flatnonzero(np.isfinite(best))
+    if not spans.size:
         return math.nan, math.nan
-    best_scanned = max(value for value, *_ in candidates)
+    best_scanned = float(np.max(best[spans]))
+    # the radius is monotone on a span: the area's extremes are at the span's ends, which the scan holds
+    monotone = quantity in ("contact_radius", "contact_area")
     results = []
-    for value, reach, index, i in candidates:
-        times = scan.times[index]
+    for index in spans.tolist():
+        times, i, value = scan.times[index], int(first[index]), float(best[index])
         time = float(times[i])
-        # the radius is monotone on a span: the area's extremes are at the span's ends, which the scan holds
-        monotone = quantity in ("contact_radius", "contact_area")
-        if len(times) > 1 and value + reach >= best_scanned and not monotone:
+        if len(times) > 1 and value + reach[index] >= best_scanned and not monotone:
             ends = (max(i - 1, 0), min(i + 1, len(times) - 1))
             radii = scan.values[index]["contact_radius"]
             points = stationary_points(solution, index, quantity, (float(times[ends[0]]), float(times[ends[1]])),
@@ -284,10 +278,32 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
     best_value = max(value for _, value in results)
     # the earliest time at which the extremum is reached, to rounding of the quantity's size along the run (a
     # plateau such as F_x in full slip, or a quantity that stays at zero, has ties that rounding would pick)
-    size = max(float(np.nanmax(np.abs(_quantity(filled, quantity)), initial=0.0)) for filled in scan.values)
     best_time, best_value = min((time, value) for time, value in results
                                 if value >= best_value - EXTREMUM_TIE * max(size, abs(best_value)))
     return best_time, sign * best_value
+
+
+def _scanned_extremes(scan: ExtremumScan, quantity: str,
+                      sign: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+    """Per span of ``scan``, of ``sign`` times ``quantity``: the best scanned value (``nan`` where none is finite), its
+    largest change between neighbouring scan points (0 for one point), the index of the earliest scan point within
+    :data:`EXTREMUM_TIE` of it; and the quantity's largest magnitude over the run. All spans at once: their scans
+    padded with ``nan`` to one matrix."""
+    width = max(len(times) for times in scan.times)
+    matrix = np.full((len(scan.times), width), np.nan)
+    for row, filled in enumerate(scan.values):
+        values = _quantity(filled, quantity)
+        matrix[row, :len(values)] = values
+    magnitude = np.abs(matrix)
+    matrix *= sign
+    with np.errstate(invalid="ignore"):
+        best = np.fmax.reduce(matrix, axis=1)
+        largest = np.fmax.reduce(magnitude, axis=1)
+        first = np.argmax(matrix >= (best - EXTREMUM_TIE * largest)[:, None], axis=1)  # earliest tie
+        reach = np.fmax(np.fmax.reduce(np.abs(np.diff(matrix, axis=1)), axis=1), 0.0) if width > 1 \
+            else np.zeros(len(best))
+    size = float(np.fmax.reduce(largest[np.isfinite(largest)], initial=0.0))
+    return best, reach, first, size
 
 
 def _bounded_search(solution: PathSolution, index: int, quantity: str, sign: float, times: np.ndarray,
