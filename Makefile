@@ -24,14 +24,18 @@ $(STAMP): pyproject.toml $(LOCK)
 	$(call LOCKED_PIP,$(BIN)) -e '.[$(EXTRAS)]'
 	touch $(STAMP)
 
+# every core (pytest-xdist); a module's tests on one worker, so that its module-scoped fixtures (a fresh
+# computation of results/, shared solutions) are computed once
+PYTEST_PARALLEL := -n auto --dist loadscope
+
 test: $(STAMP)
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q $(PYTEST_PARALLEL)
 
 test-newest:
 	test -x .venv-newest/bin/python || $(PYTHON) -m venv .venv-newest
 	.venv-newest/bin/python -m pip install --quiet --upgrade pip
 	.venv-newest/bin/python -m pip install --quiet --upgrade --upgrade-strategy eager -e '.[$(EXTRAS)]'
-	.venv-newest/bin/python -m pytest -q
+	.venv-newest/bin/python -m pytest -q $(PYTEST_PARALLEL)
 
 reproduce: $(STAMP)
 	$(BIN)/mdr-events reproduce --out results
@@ -55,6 +59,7 @@ benchmark: $(STAMP)
 	$(BIN)/python benchmarks/bench_import.py
 	$(BIN)/python benchmarks/bench_phase_diagram.py
 	$(BIN)/python benchmarks/bench_discrete.py
+	$(BIN)/python benchmarks/bench_simulate.py
 	$(BIN)/python benchmarks/bench_continuum.py
 	$(BIN)/python benchmarks/bench_validate.py
 	$(BIN)/python benchmarks/bench_fit.py

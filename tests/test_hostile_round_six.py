@@ -171,6 +171,10 @@ def test_a_study_with_an_integer_beyond_double_exits_2(tmp_path, capsys):
     assert len(error) == 1 and "E" in error[0] and "internal error" not in error[0]
 
 
+#: How long the client tries to reach a scheduler that is not there (dask's default is 30 s).
+UNREACHABLE_TIMEOUT = "2s"
+
+
 @pytest.mark.parametrize("grid, scheduler, message", [
     ([{}], "serial", "grid=[{}] is not allowed"),
     ({"tau0": [3e4]}, "ucx://127.0.0.1:1", "scheduler='ucx://127.0.0.1:1' is not allowed: its protocol needs"),
@@ -182,7 +186,10 @@ def test_a_sweep_names_an_empty_set_and_a_protocol_without_its_setup(grid, sched
     client that failed to start left dask's scheduler set to it: later computations failed)."""
     import dask
     before = dask.config.get("scheduler", None)
-    with pytest.raises(ValueError, match=re.escape(message)):
+    # (nothing listens on port 1: the client gives up after its connect timeout, 30 s by default; the message is the
+    # same after UNREACHABLE_TIMEOUT)
+    with pytest.raises(ValueError, match=re.escape(message)), \
+            dask.config.set({"distributed.comm.timeouts.connect": UNREACHABLE_TIMEOUT}):
         me.sweep(grid, me.Contact.paper(), "A", 20.0, scheduler=scheduler)
     assert dask.config.get("scheduler", None) == before
 

@@ -1,9 +1,9 @@
 """Exact extrema of a continuum run: the largest and smallest ``F_N``, ``F_x`` and contact area ``A``.
 
 Each comes from the solution's spans (:func:`mdr_events.models.continuum.solution.extremum`: a scan
-of every span brackets the extremum, a bounded Brent search refines its time to
-``EXTREMUM_XTOL`` of the span's length), not from output samples, so that it does not depend on
-the output grid. A run that ends because the contact comes apart (pull-off, or the contact ending
+of every span brackets the extremum, the roots of its derivative refine it, from the span's dense output
+and the branch's closed forms, :mod:`~mdr_events.models.continuum.stationary`), not from output samples,
+so that it does not depend on the output grid. A run that ends because the contact comes apart (pull-off, or the contact ending
 at zero radius) has ``F_N = F_x = A = 0`` just after its end, as the output samples show it
 (:func:`~mdr_events.models.continuum.solution.evaluate`); that value counts too, at the run's end.
 """

@@ -14,6 +14,7 @@ from mdr_events.parameters import Parameters
 from .model import ContinuumModel
 from .span import Span, Variable
 from .state import CONTACT_ENDING, Cap, Event, Regime
+from .stationary import stationary_points
 
 
 @dataclass
@@ -97,12 +98,12 @@ def contact_radii(solution: PathSolution, times: np.ndarray) -> np.ndarray:
 
 
 def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding: bool = True,
-                  zone: dict[str, np.ndarray] | None = None) -> dict[str, np.ndarray]:
+                  zone: dict[str, np.ndarray] | None = None, radii: np.ndarray | None = None) -> dict[str, np.ndarray]:
     """Every quantity of :data:`EVALUATED_QUANTITIES` at ``times`` (s from first contact) within span
     ``index``, as a vectorised function of time: the kinematics are linear, the radius follows its
-    branch of (9) (or is pinned), ``F_N`` is (10), ``F_x`` is the span's interpolant and the sliding
-    fraction is the slip front of the span's anchor map. ``zone``: the compressed zone's run already evaluated at
-    ``times`` (:func:`evaluate` fills it once for every span)."""
+    branch of (9) (or is pinned; ``radii``, where given, are the radii at ``times``), ``F_N`` is (10), ``F_x`` is
+    the span's interpolant and the sliding fraction is the slip front of the span's anchor map. ``zone``: the
+    compressed zone's run already evaluated at ``times`` (:func:`evaluate` fills it once for every span)."""
     model = solution.model
     span = solution.spans[index]
     t = solution.t_contact + np.asarray(times, dtype=float)
@@ -113,7 +114,7 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
         out.update(normal_force=zero, tangential_force=zero, contact_radius=zero,
                    sliding_fraction=np.full(t.shape, np.nan))
         return out
-    a = _span_radius(model, span, d)
+    a = np.asarray(radii, dtype=float) if radii is not None else _span_radius(model, span, d)
     out["contact_radius"] = a
     out["normal_force"] = np.asarray(model.normal_force(d, a), dtype=float)  # (10)
     if span.interpolant is None:
@@ -210,14 +211,34 @@ class ExtremumScan(NamedTuple):
 
 
 def scan_spans(solution: PathSolution) -> ExtremumScan:
-    """Sample every span for :func:`extremum` (one scan serves every quantity and both extremes)."""
+    """Sample every span for :func:`extremum` (one scan serves every quantity and both extremes): evenly in
+    time on a pinned radius, evenly in the radius on a moving one (the variable of its interpolant; the time
+    of each radius that of its depth on the branch, which needs no root)."""
     times, values = [], []
     for index, span in enumerate(solution.spans):
         lower, upper = span.t_start - solution.t_contact, span.t_end - solution.t_contact
-        grid = np.linspace(lower, upper, EXTREMUM_GRID if upper > lower else 1)
+        count = EXTREMUM_GRID if upper > lower else 1
+        if span.regime in (Regime.GROWING, Regime.SHRINKING):
+            grid, radii = _radius_grid(solution, span, lower, upper, count)
+        else:
+            grid, radii = np.linspace(lower, upper, count), None
         times.append(grid)
-        values.append(evaluate_span(solution, index, grid, sliding=False))
+        values.append(evaluate_span(solution, index, grid, sliding=False, radii=radii))
     return ExtremumScan(times, values)
+
+
+def _radius_grid(solution: PathSolution, span: Span, lower: float, upper: float,
+                 count: int) -> tuple[np.ndarray, np.ndarray]:
+    """``count`` radii evenly from the radius at ``lower`` to that at ``upper`` (s from first contact; the
+    span's ends, whose radii are roots of their depths) along the span's branch, and their times (in
+    ``[lower, upper]``, non-decreasing)."""
+    branch, rtol = solution.model.branch(span.regime), solution.model.tolerances.radius_rtol
+    ends = [branch.radius(max(float(span.segment.d(solution.t_contact + t)), branch.jump_off_depth), rtol)
+            for t in (lower, upper)]
+    radii = np.linspace(ends[0], ends[1], count)
+    inner = span.segment.time_at_depth(branch.depths(radii[1:-1])) - solution.t_contact
+    grid = np.concatenate([[lower], np.clip(inner, lower, upper), [upper]]) if count > 1 else np.array([lower])
+    return np.maximum.accumulate(grid), radii
 
 
 def extremum(solution: PathSolution, quantity: str, largest: bool = True,
@@ -229,7 +250,9 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
     inside it. A scan of :data:`EXTREMUM_GRID` points per span (:func:`scan_spans`) brackets it
     (within one grid interval of the best point, at an end too); the spans that can hold the
     extremum (their best scanned value, raised by their largest change between neighbouring scan
-    points, reaches the best scanned value of the run) are refined by a bounded Brent search to
+    points, reaches the best scanned value of the run) are refined within one grid interval of the
+    best point by the roots of the quantity's derivative (:func:`~.stationary.stationary_points`: the
+    span's dense output and the branch's closed forms), the means by a bounded Brent search to
     :data:`EXTREMUM_XTOL` of the span's length. Of values equal to :data:`EXTREMUM_TIE` (a plateau) the
     earliest time is reported, so that the time does not hang on rounding. The means (``mean_pressure``, ``mean_shear_stress``)
     are taken over the spans in contact.
@@ -250,44 +273,74 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
         return extremum(solution.compressed, quantity, largest)
     scan = scan_spans(solution) if scan is None else scan
     sign = 1.0 if largest else -1.0
-    candidates = []
-    for index, (times, filled) in enumerate(zip(scan.times, scan.values)):
-        values = sign * _quantity(filled, quantity)
-        if not np.any(np.isfinite(values)):
-            continue
-        i = int(np.argmax(values >= np.nanmax(values) - EXTREMUM_TIE * np.nanmax(np.abs(values))))  # earliest tie
-        reach = float(np.nanmax(np.abs(np.diff(values)), initial=0.0)) if len(values) > 1 else 0.0
-        candidates.append((float(values[i]), reach, index, i))
-    if not candidates:
+    best, reach, first, size = _scanned_extremes(scan, quantity, sign)
+    spans = np.flatnonzero(np.isfinite(best))
+    if not spans.size:
         return math.nan, math.nan
-    best_scanned = max(value for value, *_ in candidates)
+    best_scanned = float(np.max(best[spans]))
+    # the radius is monotone on a span: the area's extremes are at the span's ends, which the scan holds
+    monotone = quantity in ("contact_radius", "contact_area")
     results = []
-    for value, reach, index, i in candidates:
-        times = scan.times[index]
+    for index in spans.tolist():
+        times, i, value = scan.times[index], int(first[index]), float(best[index])
         time = float(times[i])
-        # the radius is monotone on a span: the area's extremes are at the span's ends, which the scan holds
-        monotone = quantity in ("contact_radius", "contact_area")
-        if len(times) > 1 and value + reach >= best_scanned and not monotone:
-            # searched in the time from the bracket's start: the bounded search adds sqrt(eps) of the variable's
-            # size to its tolerance, 0.26 s at t = 1.7e7 s (a path at 1e-3°), where a force minimum lasts 0.03 s
-            origin = float(times[max(i - 1, 0)])
-
-            def objective(s: float) -> float:
-                return -sign * _scalar_quantity(solution, index, origin + s, quantity)
-
-            bracket = (0.0, float(times[min(i + 1, len(times) - 1)]) - origin)
-            refined = optimize.minimize_scalar(objective, bounds=bracket, method="bounded",
-                                               options={"xatol": EXTREMUM_XTOL * (times[-1] - times[0])})
-            if -refined.fun > value * (1.0 + EXTREMUM_TIE) + EXTREMUM_TIE * abs(value):
-                time, value = origin + float(refined.x), float(-refined.fun)
+        if len(times) > 1 and value + reach[index] >= best_scanned and not monotone:
+            ends = (max(i - 1, 0), min(i + 1, len(times) - 1))
+            radii = scan.values[index]["contact_radius"]
+            points = stationary_points(solution, index, quantity, (float(times[ends[0]]), float(times[ends[1]])),
+                                       (float(radii[ends[0]]), float(radii[ends[1]])))
+            if points is None:
+                points = [_bounded_search(solution, index, quantity, sign, times, i)]
+            for found_time, found in points:
+                if sign * found > value * (1.0 + EXTREMUM_TIE) + EXTREMUM_TIE * abs(value):
+                    time, value = found_time, sign * found
         results.append((time, value))
     best_value = max(value for _, value in results)
     # the earliest time at which the extremum is reached, to rounding of the quantity's size along the run (a
     # plateau such as F_x in full slip, or a quantity that stays at zero, has ties that rounding would pick)
-    size = max(float(np.nanmax(np.abs(_quantity(filled, quantity)), initial=0.0)) for filled in scan.values)
     best_time, best_value = min((time, value) for time, value in results
                                 if value >= best_value - EXTREMUM_TIE * max(size, abs(best_value)))
     return best_time, sign * best_value
+
+
+def _scanned_extremes(scan: ExtremumScan, quantity: str,
+                      sign: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+    """Per span of ``scan``, of ``sign`` times ``quantity``: the best scanned value (``nan`` where none is finite), its
+    largest change between neighbouring scan points (0 for one point), the index of the earliest scan point within
+    :data:`EXTREMUM_TIE` of it; and the quantity's largest magnitude over the run. All spans at once: their scans
+    padded with ``nan`` to one matrix."""
+    width = max(len(times) for times in scan.times)
+    matrix = np.full((len(scan.times), width), np.nan)
+    for row, filled in enumerate(scan.values):
+        values = _quantity(filled, quantity)
+        matrix[row, :len(values)] = values
+    magnitude = np.abs(matrix)
+    matrix *= sign
+    with np.errstate(invalid="ignore"):
+        best = np.fmax.reduce(matrix, axis=1)
+        largest = np.fmax.reduce(magnitude, axis=1)
+        first = np.argmax(matrix >= (best - EXTREMUM_TIE * largest)[:, None], axis=1)  # earliest tie
+        reach = np.fmax(np.fmax.reduce(np.abs(np.diff(matrix, axis=1)), axis=1), 0.0) if width > 1 \
+            else np.zeros(len(best))
+    size = float(np.fmax.reduce(largest[np.isfinite(largest)], initial=0.0))
+    return best, reach, first, size
+
+
+def _bounded_search(solution: PathSolution, index: int, quantity: str, sign: float, times: np.ndarray,
+                    i: int) -> tuple[float, float]:
+    """:func:`extremum`'s refinement of a quantity without a derivative route (:func:`~.stationary.stationary_points`:
+    the means): a bounded Brent search of the time around scan point ``i``, to :data:`EXTREMUM_XTOL` of the span.
+    Searched in the time from the bracket's start: the bounded search adds sqrt(eps) of the variable's size to its
+    tolerance, 0.26 s at t = 1.7e7 s (a path at 1e-3°), where a force minimum lasts 0.03 s."""
+    origin = float(times[max(i - 1, 0)])
+
+    def objective(s: float) -> float:
+        return -sign * _scalar_quantity(solution, index, origin + s, quantity)
+
+    bracket = (0.0, float(times[min(i + 1, len(times) - 1)]) - origin)
+    refined = optimize.minimize_scalar(objective, bounds=bracket, method="bounded",
+                                       options={"xatol": EXTREMUM_XTOL * (times[-1] - times[0])})
+    return origin + float(refined.x), -sign * float(refined.fun)
 
 
 def _scalar_quantity(solution: PathSolution, index: int, time: float, quantity: str) -> float:

@@ -1,0 +1,171 @@
+"""Benchmark: ``simulate`` of the continuum against its own ``solve_path`` (issue 28, item 1).
+
+For each path below it prints the medians, measured interleaved in one run, of
+
+- ``solve_path`` alone;
+- ``solution_extrema`` of that solution alone (the six exact extrema ``simulate`` adds; target: at most half the
+  solve);
+- ``simulate`` as users call it (2001 samples, the event log, the extrema, the dataset; target: at most 1.5x the
+  solve on every path, under 2 ms for scenario A or B at one angle on a quiet machine);
+
+and for the tabulated profile (a 41-point table of the paper's paraboloid) its ``simulate`` over the paraboloid's
+(target: at most 3x).
+
+Paths: scenarios A and B at 20° and 30°; the zigzag of ``bench_discrete.py`` (in with tangential reversals, a pinned
+zigzag, out); the 10-cycle reciprocating path of ``bench_continuum.py``; scenario A at 20° with the table.
+
+``--against DIR`` measures a checkout of another commit side by side: each checkout runs in a worker process of its
+own (its package first on ``PYTHONPATH``) and the repetitions alternate between them, so that both see the same
+load; it prints each figure's ratio before / now. E.g. ``git worktree add /tmp/before <commit>`` then
+``--against /tmp/before``.
+
+Run: ``python benchmarks/bench_simulate.py [--repeat N] [--against DIR]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+#: Targets of issue 28: simulate / solve_path, extrema / solve_path, table / paraboloid, simulate of A or B (s).
+SIMULATE_RATIO, EXTREMA_RATIO, TABLE_RATIO, SIMULATE_TARGET = 1.5, 0.5, 3.0, 2e-3
+#: The benchmark's paths, by label.
+PATHS = ("A 20°", "A 30°", "B 20°", "B 30°", "zigzag", "reciprocating", "A 20° table")
+#: What is timed of each path.
+TASKS = ("solve", "extrema", "simulate")
+
+
+def _build(label: str):
+    """``(contact, path, options, simulate_call)`` of a path of :data:`PATHS` (imports the checkout's package)."""
+    import math
+
+    import numpy as np
+
+    import mdr_events as me
+    from mdr_events.models.paths import Path as P, exit_depth
+    from mdr_events.theory import analytic
+
+    p = me.Parameters.paper()
+    options = {}
+    if label.endswith("table"):
+        r = np.linspace(0.0, 4e-3, 41)
+        options["profile"] = me.TabulatedProfile(r, r**2 / (2 * p.R))
+    if label.startswith(("A", "B")):
+        name, angle = label[0], float(label.split()[1].rstrip("°"))
+        path = getattr(P, f"scenario_{name}")(angle, p, **options)
+        return p, path, options, lambda: me.simulate(p, name, alpha=[angle], method="continuum", **options)
+    if label == "zigzag":
+        path = me.Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)], p.v)
+    else:  # in at 20° to (x_c, d_max), 10 cycles x_c ± 3 ū(a_max), out vertically
+        amplitude = 3.0 * float(analytic.critical_shift(float(analytic.jkr_contact_radius(p.d_max, p, p.dgamma0)), p))
+        x_c = p.d_max / math.tan(math.radians(20.0))
+        turns = [(x_c + amplitude * (1 if i % 2 == 0 else -1), p.d_max) for i in range(20)]
+        path = me.Path([(0.0, 0.0), (x_c, p.d_max), *turns, (x_c, p.d_max), (x_c, exit_depth(p))], p.v)
+    return p, path, options, lambda: me.simulate(p, path, method="continuum")
+
+
+def _tasks() -> dict[str, callable]:
+    """Every ``"<path>|<task>"`` of this checkout, as a function to time."""
+    from mdr_events.models.continuum import solve_path
+    from mdr_events.models.continuum.extrema import solution_extrema
+
+    tasks = {}
+    for label in PATHS:
+        p, path, options, run = _build(label)
+        solution = solve_path(p, path, **options)
+        tasks[f"{label}|solve"] = lambda p=p, path=path, options=options: solve_path(p, path, **options)
+        tasks[f"{label}|extrema"] = lambda solution=solution: solution_extrema(solution)
+        tasks[f"{label}|simulate"] = run
+        run()  # once unmeasured: caches, lambdified relations
+    return tasks
+
+
+def worker() -> None:
+    """Time the tasks named on standard input, one per line, printing each time (s)."""
+    tasks = _tasks()
+    print("ready", flush=True)
+    for line in sys.stdin:
+        start = time.perf_counter()
+        tasks[line.strip()]()
+        print(time.perf_counter() - start, flush=True)
+
+
+class Checkout:
+    """A worker process timing the package of one checkout."""
+
+    def __init__(self, root: str):
+        env = dict(os.environ)
+        env["PYTHONPATH"] = os.pathsep.join([root, *filter(None, [env.get("PYTHONPATH")])])
+        self.process = subprocess.Popen([sys.executable, __file__, "--worker"], env=env, cwd=root, text=True,
+                                        stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+        assert self.process.stdout.readline().strip() == "ready"
+
+    def time(self, task: str) -> float:
+        self.process.stdin.write(task + "\n")
+        self.process.stdin.flush()
+        return float(self.process.stdout.readline())
+
+    def close(self) -> None:
+        self.process.stdin.close()
+        self.process.wait()
+
+
+def measure(checkouts: list[Checkout], repeat: int) -> list[dict[str, float]]:
+    """The median time of every task in each checkout, the repetitions alternating between checkouts."""
+    times = [{f"{label}|{task}": [] for label in PATHS for task in TASKS} for _ in checkouts]
+    for _ in range(repeat):
+        for task in times[0]:
+            for checkout, found in zip(checkouts, times):
+                found[task].append(checkout.time(task))
+    return [{task: statistics.median(values) for task, values in found.items()} for found in times]
+
+
+def report(name: str, medians: dict[str, float]) -> None:
+    """Print one checkout's figures with their targets."""
+    print(f"  {name}:")
+    for label in PATHS:
+        solve, extrema, run = (medians[f"{label}|{task}"] for task in TASKS)
+        absolute = f", target < {SIMULATE_TARGET * 1e3:.0f} ms" if label[0] in "AB" and "table" not in label else ""
+        print(f"    {label:14s} solve_path {solve * 1e3:6.1f} ms | extrema {extrema * 1e3:6.1f} ms = "
+              f"{extrema / solve:4.2f}x solve (target <= {EXTREMA_RATIO}) | simulate {run * 1e3:6.1f} ms = "
+              f"{run / solve:4.2f}x solve (target <= {SIMULATE_RATIO}{absolute})")
+    table = medians["A 20° table|simulate"] / medians["A 20°|simulate"]
+    print(f"    table profile / paraboloid, simulate A 20°: {table:.2f}x (target <= {TABLE_RATIO})")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=9, help="runs per figure (median; default 9)")
+    parser.add_argument("--against", default=None, metavar="DIR", help="a checkout to measure side by side")
+    parser.add_argument("--worker", action="store_true", help=argparse.SUPPRESS)
+    options = parser.parse_args()
+    if options.worker:
+        worker()
+        return
+    roots = {"this checkout": str(Path(__file__).resolve().parent.parent)}
+    if options.against:
+        roots[f"--against {options.against}"] = str(Path(options.against).resolve())
+    checkouts = [Checkout(root) for root in roots.values()]
+    try:
+        medians = measure(checkouts, options.repeat)
+    finally:
+        for checkout in checkouts:
+            checkout.close()
+    print(f"continuum: solve_path, solution_extrema and simulate (2001 samples), medians of {options.repeat}, "
+          "interleaved")
+    for name, found in zip(roots, medians):
+        report(name, found)
+    if len(medians) == 2:
+        now, before = medians
+        print("  ratio before / now: " + ", ".join(
+            f"{label} simulate {before[f'{label}|simulate'] / now[f'{label}|simulate']:.1f}x "
+            f"(extrema {before[f'{label}|extrema'] / now[f'{label}|extrema']:.1f}x)" for label in PATHS))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,136 @@
+"""Where a quantity of one span is stationary: :func:`~.solution.extremum`'s refinement of a bracketed extremum by
+the roots of the quantity's derivative, from the span's own closed forms and dense output (no generic minimisation,
+no radius root per evaluation).
+
+- ``F_x``: the span's interpolant is a polynomial on each solver step in its variable (DOP853's dense output, degree
+  :data:`DENSE_DEGREE`; the time, or the radius over the span's scale, which is monotone in time on a moving span).
+  Each step's polynomial is read off at ``DENSE_DEGREE + 1`` Chebyshev points (exactly: the interpolant *is* that
+  polynomial), differentiated, and the real roots of the derivative in the bracket are the stationary points. A
+  force linear in time (:class:`~.span.LinearForce`) or constant has none inside a span.
+- ``F_N`` on a moving radius: along the branch ``F_N(a) = 2E* (a d(a) − ∫_0^a g)`` (10), so
+  ``dF_N/da = 2E* (d(a) + a d'(a) − g(a))`` (the branch's depth, slope and profile term :meth:`~.branch.Branch.
+  depth_term`); its root in the bracket is found by ``brentq`` in the radius, and the time is that of the depth
+  (linear in time on a segment). On a pinned radius ``F_N`` is linear in the depth, hence in time: no stationary
+  point inside a span (its extremes are the span's ends, which the scan holds).
+- The contact radius and area are monotone on a span.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.polynomial import chebyshev
+from scipy import optimize
+
+from .span import Variable
+from .state import Regime
+from .tolerances import EPS
+
+__all__ = ["DENSE_DEGREE", "stationary_points"]
+
+#: Degree of the polynomial of one step of DOP853's dense output (``solve_ivp``'s interpolant of ``F_x``).
+DENSE_DEGREE = 7
+#: The Chebyshev points on [-1, 1] at which a step's polynomial is read off (first kind, ``DENSE_DEGREE + 1``).
+_NODES = np.cos(np.pi * (np.arange(DENSE_DEGREE + 1) + 0.5) / (DENSE_DEGREE + 1))
+#: Node values -> Chebyshev coefficients of the derivative (in the step's variable over [-1, 1]): the interpolation
+#: at :data:`_NODES` followed by the derivative, as one matrix.
+_DERIVATIVE = chebyshev.chebder(np.linalg.inv(chebyshev.chebvander(_NODES, DENSE_DEGREE)))
+#: A root of the derivative counts as real where its imaginary part is below this share of the step (the companion
+#: matrix's rounding: a double root at a flat extremum splits into a complex pair of about sqrt(eps)).
+IMAGINARY_SHARE = 1e-6
+#: ``brentq``'s relative tolerance on the stationary radius of ``F_N`` (a few ulp).
+RADIUS_RTOL = 4 * EPS
+
+
+def stationary_points(solution, index: int, quantity: str, times: tuple[float, float],
+                      radii: tuple[float, float]) -> list[tuple[float, float]] | None:
+    """The points of span ``index`` inside the bracket where ``quantity`` is stationary, with its values there.
+
+    Parameters
+    ----------
+    solution : PathSolution
+    index : int
+        The span.
+    quantity : str
+        ``"normal_force"``, ``"tangential_force"``, ``"contact_radius"`` or ``"contact_area"``.
+    times : tuple of float
+        The bracket's ends (s from first contact), increasing, within the span.
+    radii : tuple of float
+        The contact radius at those times (m).
+
+    Returns
+    -------
+    list of (float, float) or None
+        ``(time, value)`` of each stationary point inside the bracket (times from first contact; none: the
+        extremes are the bracket's ends); ``None`` where the quantity has no derivative route here (the caller
+        refines otherwise).
+    """
+    span = solution.spans[index]
+    if span.regime is Regime.NONE or quantity in ("contact_radius", "contact_area"):
+        return []
+    if quantity == "normal_force":
+        return _normal_force_points(solution, span, times, radii) if span.regime is not Regime.PINNED else []
+    if quantity != "tangential_force" or solution.compressed is not None:
+        return None
+    if span.interpolant is None:  # a constant force
+        return []
+    if not hasattr(span.interpolant, "interpolants"):  # a force linear in time
+        return [] if span.variable is Variable.TIME else None
+    if span.variable is Variable.TIME:
+        bracket = (solution.t_contact + times[0], solution.t_contact + times[1])
+    else:
+        bracket = (radii[0] / span.scale, radii[1] / span.scale)
+    points = []
+    for var in _dense_output_roots(span.interpolant, min(bracket), max(bracket)):
+        value = float(span.interpolant(var)[0])
+        if span.variable is Variable.TIME:
+            time = var - solution.t_contact
+        else:
+            time = _time_of_radius(solution, span, var * span.scale)
+        points.append((min(max(time, times[0]), times[1]), value))
+    return points
+
+
+def _dense_output_roots(interpolant, low: float, high: float) -> list[float]:
+    """The real roots in ``[low, high]`` of the derivative of ``solve_ivp``'s dense output, step by step."""
+    ts = np.asarray(interpolant.ts, dtype=float)
+    roots = []
+    for k, step in enumerate(interpolant.interpolants):
+        start, end = min(ts[k], ts[k + 1]), max(ts[k], ts[k + 1])
+        lower, upper = max(start, low), min(end, high)
+        if not upper > lower:
+            continue
+        centre, half = 0.5 * (start + end), 0.5 * (end - start)
+        for root in chebyshev.chebroots(_DERIVATIVE @ step(centre + half * _NODES)[0]):
+            var = centre + half * float(root.real)
+            if abs(root.imag) <= IMAGINARY_SHARE and lower <= var <= upper:
+                roots.append(var)
+    return roots
+
+
+def _normal_force_points(solution, span, times: tuple[float, float],
+                         radii: tuple[float, float]) -> list[tuple[float, float]] | None:
+    """The radius in the bracket where ``dF_N/da = 2E* (d + a d' − g)`` vanishes along the span's branch."""
+    model = solution.model
+    branch = model.branch(span.regime)
+
+    def slope(a: float) -> float:  # dF_N/da over 2E*
+        return branch.depth(a) + a * branch.slope(a) - branch.depth_term(a)
+
+    low, high = min(radii), max(radii)
+    ends = (slope(low), slope(high))
+    if not all(math.isfinite(value) for value in ends):
+        return None
+    if ends[0] * ends[1] > 0.0 or not high > low:
+        return []
+    radius = optimize.brentq(slope, low, high, xtol=RADIUS_RTOL * high, rtol=RADIUS_RTOL)
+    value = float(model.normal_force(branch.depth(radius), radius))
+    return [(min(max(_time_of_radius(solution, span, radius), times[0]), times[1]), value)]
+
+
+def _time_of_radius(solution, span, radius: float) -> float:
+    """The time (s from first contact) at which a moving radius of ``span`` is ``radius``: that of its depth."""
+    depth = solution.model.branch(span.regime).depth(radius)
+    time = span.segment.time_at_depth(depth) - solution.t_contact
+    return min(max(time, span.t_start - solution.t_contact), span.t_end - solution.t_contact)
