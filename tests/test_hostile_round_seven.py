@@ -194,3 +194,26 @@ def test_the_closed_forms_refuse_what_the_parameters_refuse(call, words):
     with pytest.raises(ValueError) as raised:
         call()
     assert words in str(raised.value)
+
+
+# --- C6: a bool among the numbers of a list was read as 1 (an angle of 1°, a time of 1 s, a coordinate of 1 m) ------
+@pytest.mark.parametrize("call, error, words", [
+    (lambda: me.Scenario("A", [True, 20]), TypeError, "alpha=[True, 20] (holding a bool) is not allowed"),
+    (lambda: me.phase_diagram(CONTACT, [True, 30.0]), TypeError, "alpha=[True, 30.0] (holding a bool) is not allowed"),
+    (lambda: me.Path([(True, 0), (0, 3e-4), (0, -1e-4)], 1e-6), TypeError,
+     "waypoints=[(True, 0), (0, 0.0003), (0, -0.0001)]"),
+    (lambda: me.Path([(np.bool_(True), 0), (0, 3e-4), (0, -1e-4)], 1e-6), TypeError,
+     "(holding a bool) is not allowed"),
+    (lambda: me.Continuum(t=[0, True, 2]), TypeError, "t=[0, True, 2] (holding a bool) is not allowed"),
+    (lambda: me.sweep({"tau0": [True, 3e4]}, CONTACT, "A", 20.0, engine=me.Engine(scheduler="serial"),
+                      output=me.SweepOutput(quantities=("critical_angle_A",))), ValueError,
+     "grid['tau0']=[True, 30000.0]"),
+    (lambda: synthetic_measurement(CONTACT, "A", 20.0, times=[0, True, 5]), TypeError, "times=[0, True, 5]"),
+    (lambda: me.d_crit([True, 20], CONTACT), TypeError, "alpha=[True, 20] (holding a bool)"),
+])
+def test_a_bool_among_numbers_is_named(call, error, words):
+    """A bool alone was refused (alpha=True); NumPy turned one in a list into the number 1 and the run went on (the
+    sweep's grid names its values' errors as ValueError)."""
+    with pytest.raises(error) as raised:
+        call()
+    assert words in str(raised.value)
