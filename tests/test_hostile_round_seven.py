@@ -217,3 +217,15 @@ def test_a_bool_among_numbers_is_named(call, error, words):
     with pytest.raises(error) as raised:
         call()
     assert words in str(raised.value)
+
+
+# --- C7: a scheduler's address of an unknown protocol was said to need certificates or UCX ---------------------------
+@pytest.mark.parametrize("address, words", [
+    ("foo://host:1", "foo:// is no protocol of a dask scheduler; allowed: an address of tcp://"),
+    ("http://host:1", "http:// is no protocol of a dask scheduler"),
+    ("tls://host:1", "its protocol needs a setup of its own (certificates for tls://, UCX for ucx://)"),
+])
+def test_a_scheduler_s_protocol_is_named_for_what_it_is(address, words):
+    with pytest.raises(ValueError) as raised:
+        me.Engine(scheduler=address)
+    assert words in str(raised.value)
