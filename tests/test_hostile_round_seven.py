@@ -229,3 +229,37 @@ def test_a_scheduler_s_protocol_is_named_for_what_it_is(address, words):
     with pytest.raises(ValueError) as raised:
         me.Engine(scheduler=address)
     assert words in str(raised.value)
+
+
+# --- C8: the continuum solution's functions took any times: a time before the first contact extrapolated -----------
+@pytest.fixture(scope="module")
+def solution():
+    return me.continuum.solve_path(PAPER, me.Path.scenario_A(20.0, PAPER))
+
+
+@pytest.mark.parametrize("times, error, words", [
+    ([-5.0], ValueError, "times=[-5.0] is not allowed; allowed: one time or a 1-D array of finite times >= 0"),
+    ([np.nan], ValueError, "times=[nan] is not allowed"),
+    ("abc", TypeError, "times='abc' (of str values) is not allowed"),           # could not convert string to float
+    ([[1.0, 2.0]], ValueError, "times=[[1.0, 2.0]] is not allowed"),          # IndexError
+])
+def test_evaluate_refuses_times_the_solution_does_not_cover(solution, times, error, words):
+    """At -5 s (before the first contact) it gave F_N = -1.41 mN, extrapolated; 'abc' and a 2-D grid were NumPy's
+    errors (ValueError: could not convert, IndexError)."""
+    with pytest.raises(error) as raised:
+        me.continuum.evaluate(solution, times)
+    assert words in str(raised.value)
+
+
+@pytest.mark.parametrize("start, end, error, words", [
+    (100.0, 50.0, ValueError, "start=100.0 and end=50.0 are not allowed; allowed: start <= end"),   # 0 J
+    (float("nan"), 50.0, ValueError, "start=nan is not allowed; allowed: a finite time >= 0"),        # 4.3e-7 J
+    (-10.0, None, ValueError, "start=-10.0 is not allowed"),
+    ("abc", None, TypeError, "start='abc' (str) is not allowed"),                                      # float('abc')
+])
+def test_the_tangential_work_names_its_bounds(solution, start, end, error, words):
+    with pytest.raises(error) as raised:
+        me.continuum.tangential_work(solution, start, end)
+    assert words in str(raised.value)
+    assert me.continuum.tangential_work(solution, None, None) == me.continuum.tangential_work(solution, 0.0,
+                                                                                             solution.end_time)

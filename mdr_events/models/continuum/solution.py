@@ -11,6 +11,7 @@ import numpy as np
 from scipy import optimize
 
 from mdr_events.parameters import Parameters
+from mdr_events.validation import check_real, real_array, shown
 from .model import ContinuumModel
 from .span import Span, Variable
 from .state import CONTACT_ENDING, Cap, Event, Regime
@@ -106,13 +107,25 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     return out
 
 
+def check_times(name: str, times) -> np.ndarray:
+    """``times`` (s from first contact) as a float array of one dimension at most, every entry finite and ``>= 0``;
+    else ``TypeError`` or ``ValueError`` naming the argument (a time before the first contact was extrapolated to, a
+    string or a 2-D grid was a raw error of NumPy's)."""
+    values = real_array(name, times, "times in s from first contact (real numbers >= 0)")
+    if values.ndim > 1 or not np.all(np.isfinite(values)) or np.any(values < 0.0):
+        raise ValueError(f"{name}={shown(times)} is not allowed; allowed: one time or a 1-D array of finite times "
+                         ">= 0 (s from first contact; the solution says nothing before it)")
+    return values
+
+
 def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]:
     """Fill a time grid (s from first contact) span by span (:func:`evaluate_span`).
 
     Samples after the end of the run are ``nan``, except the first sample after a pull-off if it lies on
-    the pull-off's path segment, which shows the contact gone (forces and radius 0).
+    the pull-off's path segment, which shows the contact gone (forces and radius 0). Times that are no finite
+    numbers ``>= 0`` are refused (:func:`check_times`).
     """
-    times = np.asarray(times, dtype=float)
+    times = np.atleast_1d(check_times("times", times))
     out = {name: np.full(len(times), np.nan) for name in EVALUATED_QUANTITIES}
     inside = times <= solution.end_time
     owner = solution.span_index(times)
@@ -310,8 +323,13 @@ def tangential_work(solution: PathSolution, start: float | None = None, end: flo
     :data:`WORK_NODES`-point Gauss–Legendre quadrature: in time on pinned spans (``dx = v_x dt``), in the
     radius on moving ones (``dx = v_x (∂d/∂a)/v_d da``).
     """
-    lower = 0.0 if start is None else float(start)
-    upper = solution.end_time if end is None else min(float(end), solution.end_time)
+    allowed = "a finite time >= 0 (s from first contact) or None"
+    lower = 0.0 if start is None else check_real("start", start, allowed, lambda value: value >= 0.0)
+    upper = solution.end_time if end is None else min(check_real("end", end, allowed, lambda value: value >= 0.0),
+                                                      solution.end_time)
+    if start is not None and end is not None and not lower <= upper:  # (reversed: 0 J, silently)
+        raise ValueError(f"start={shown(start)} and end={shown(end)} are not allowed; allowed: start <= end (s from "
+                         "first contact)")
     nodes, weights = np.polynomial.legendre.leggauss(WORK_NODES)
     total = 0.0
     for span in solution.spans:
