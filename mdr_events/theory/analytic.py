@@ -82,6 +82,12 @@ def _finite(**arguments) -> None:
                              f"{'from 0' if low == 0.0 else f'from {low:.2g}'} to {SCALE_MAX:.2g} (SI units)")
 
 
+class ResultOverflowError(ValueError, OverflowError):
+    """A closed form's result overflows double precision for the arguments and parameters given: a ``ValueError``
+    (the input asks too much), and an ``OverflowError``, so that :mod:`mdr_events.theory.scales` names the parameter
+    scale behind it as it does for math's overflows."""
+
+
 def _representable(compute, function: str, **arguments):
     """``compute()`` if every entry is finite (computed without a RuntimeWarning); else ``ValueError``: the arguments'
     result overflows double precision."""
@@ -90,8 +96,8 @@ def _representable(compute, function: str, **arguments):
     if np.all(np.isfinite(list(result.values()) if isinstance(result, dict) else result)):
         return result
     given = ", ".join(f"{name}={shown(value)}" for name, value in arguments.items())
-    raise ValueError(f"{function}({given}) is not allowed: its result overflows double precision; allowed: arguments "
-                     "and parameters whose result is a finite number")
+    raise ResultOverflowError(f"{function}({given}) is not allowed: its result overflows double precision; allowed: "
+                              "arguments and parameters whose result is a finite number")
 
 
 def _as_output(values: np.ndarray, like: np.ndarray):
