@@ -238,14 +238,15 @@ def solution():
 
 
 @pytest.mark.parametrize("times, error, words", [
-    ([-5.0], ValueError, "times=[-5.0] is not allowed; allowed: one time or a 1-D array of finite times >= 0"),
+    ([-5.0], ValueError, "times=[-5.0] is not allowed; allowed: one time or a 1-D array of finite times >= -0 (s "
+                         "from first contact: the path's start"),
     ([np.nan], ValueError, "times=[nan] is not allowed"),
     ("abc", TypeError, "times='abc' (of str values) is not allowed"),           # could not convert string to float
     ([[1.0, 2.0]], ValueError, "times=[[1.0, 2.0]] is not allowed"),          # IndexError
 ])
 def test_evaluate_refuses_times_the_solution_does_not_cover(solution, times, error, words):
-    """At -5 s (before the first contact) it gave F_N = -1.41 mN, extrapolated; 'abc' and a 2-D grid were NumPy's
-    errors (ValueError: could not convert, IndexError)."""
+    """At -5 s (before the path's start, at the first contact) it gave F_N = -1.41 mN, extrapolated; 'abc' and a 2-D
+    grid were NumPy's errors (ValueError: could not convert, IndexError)."""
     with pytest.raises(error) as raised:
         me.continuum.evaluate(solution, times)
     assert words in str(raised.value)
@@ -253,7 +254,7 @@ def test_evaluate_refuses_times_the_solution_does_not_cover(solution, times, err
 
 @pytest.mark.parametrize("start, end, error, words", [
     (100.0, 50.0, ValueError, "start=100.0 and end=50.0 are not allowed; allowed: start <= end"),   # 0 J
-    (float("nan"), 50.0, ValueError, "start=nan is not allowed; allowed: a finite time >= 0"),        # 4.3e-7 J
+    (float("nan"), 50.0, ValueError, "start=nan is not allowed; allowed: a finite time >= -0 (s from first"),
     (-10.0, None, ValueError, "start=-10.0 is not allowed"),
     ("abc", None, TypeError, "start='abc' (str) is not allowed"),                                      # float('abc')
 ])
@@ -263,3 +264,17 @@ def test_the_tangential_work_names_its_bounds(solution, start, end, error, words
     assert words in str(raised.value)
     assert me.continuum.tangential_work(solution, None, None) == me.continuum.tangential_work(solution, 0.0,
                                                                                              solution.end_time)
+
+
+def test_before_the_first_contact_a_solution_is_out_of_contact():
+    """A path that starts 100 s above the surface: its times before the first contact were the first span's values
+    extrapolated back (a force where there is no contact); now the path's position, forces and radius 0."""
+    path = me.Path([(0.0, -1e-4), (0.0, 3e-4), (0.0, -2e-4)], 1e-6)
+    solution = me.continuum.solve_path(PAPER, path)
+    out = me.continuum.evaluate(solution, [-100.0, -50.0, 0.0])
+    assert list(out["normal_force"][:2]) == [0.0, 0.0] and list(out["contact_radius"][:2]) == [0.0, 0.0]
+    # (the depth from the path's clock, t_contact - 100 s: its round-off, a few ulp of the time over the speed)
+    np.testing.assert_allclose(out["indentation_depth"][:2], [-1e-4, -5e-5], rtol=64 * np.finfo(float).eps, atol=0)
+    assert out["contact_radius"][2] > 0.0
+    with pytest.raises(ValueError, match=r"times=\[-101.0\] is not allowed; allowed: .* finite times >= -100"):
+        me.continuum.evaluate(solution, [-101.0])
