@@ -76,6 +76,19 @@ def check_count(name: str, value: Any, minimum: int) -> int:
 _KIND_NAMES = {"b": "bool", "c": "complex", "U": "str", "S": "bytes", "M": "datetime", "m": "timedelta"}
 
 
+def _holds_a_bool(value) -> bool:
+    """Whether a (nested) list or tuple holds a bool (Python's or NumPy's) among its numbers."""
+    pending = [value]
+    while pending:
+        items = pending.pop()
+        kinds = set(map(type, items))
+        if bool in kinds or np.bool_ in kinds:
+            return True
+        if list in kinds or tuple in kinds:
+            pending.extend(item for item in items if type(item) is list or type(item) is tuple)
+    return False
+
+
 def real_array(name: str, value: Any, allowed: str) -> np.ndarray:
     """``value`` as a float array if every entry is a real number (integers and floats of any width;
     not bools, complex numbers, strings or objects); else ``TypeError`` naming it and ``allowed``."""
@@ -83,6 +96,9 @@ def real_array(name: str, value: Any, allowed: str) -> np.ndarray:
         array = np.asarray(value)
     except (TypeError, ValueError):  # ragged nesting
         raise TypeError(f"{name}={shown(value)} is not allowed; allowed: {allowed}") from None
+    if array.dtype.kind in "iuf" and isinstance(value, (list, tuple)) and _holds_a_bool(value):
+        # (NumPy makes [True, 20] integers: the bool was read as the angle 1°, the time 1 s, the coordinate 1 m)
+        raise TypeError(f"{name}={shown(value)} (holding a bool) is not allowed; allowed: {allowed}")
     if array.dtype.kind == "O":  # a list mixing Python numbers with NumPy scalars, Fractions, ...
         if not all(isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_)) for v in array.flat):
             raise TypeError(f"{name}={shown(value)} is not allowed; allowed: {allowed}")

@@ -40,7 +40,7 @@ from typing import Mapping, NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.analysis.reports import CONVERGENCE_STUDY_CONTENT, ConvergenceVerdict, ValidationReport
 from mdr_events.analysis.validate import COMPARED, DEFAULT_TOLERANCE, VALIDATED_EVENTS, _validation_job, validate
 from mdr_events.contact import Contact
@@ -200,6 +200,7 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
             or not math.isfinite(as_float(expected_order)) or expected_order <= 0:
         raise ValueError(f"expected_order={expected_order!r} is not allowed; allowed: a finite number > 0")
     expected_order = float(expected_order)
+    limits = check_limits(limits)
     spacings = _spacings(candidates_by_dx)
     order = sorted(range(len(spacings)), key=lambda i: -spacings[i])
     keys = list(candidates_by_dx)

@@ -44,6 +44,8 @@ DEFAULT_CHUNK = 50
 LOOPBACK_DASHBOARD = "127.0.0.1:0"
 #: The protocols of a scheduler's address that need no setup of their own.
 ADDRESS_PROTOCOLS = ("tcp",)
+#: Protocols of dask's schedulers that need a setup of their own (certificates, UCX), refused with that reason.
+SETUP_PROTOCOLS = ("tls", "ucx", "ws", "wss")
 #: What ``scheduler`` may be, for messages.
 SCHEDULER_ALLOWED = ("'serial', 'local', a dask scheduler's address such as 'tcp://host:8786', a "
                      "distributed.Client, a concurrent.futures.Executor, or None")
@@ -89,10 +91,12 @@ def check_scheduler(scheduler, workers: int | None) -> None:
     if not (named or scheduler is None or _is_client(scheduler)
             or isinstance(scheduler, concurrent.futures.Executor)):
         raise ValueError(f"scheduler={shown(scheduler)} is not allowed; allowed: {SCHEDULER_ALLOWED}")
-    if isinstance(scheduler, str) and "://" in scheduler and scheduler.partition("://")[0] not in ADDRESS_PROTOCOLS:
-        raise ValueError(f"scheduler={scheduler!r} is not allowed: its protocol needs a setup of its own (certificates "
-                         "for tls://, UCX for ucx://); allowed: an address of " + " or ".join(
-                             f"{protocol}://" for protocol in ADDRESS_PROTOCOLS))
+    protocol = scheduler.partition("://")[0] if isinstance(scheduler, str) and "://" in scheduler else None
+    if protocol is not None and protocol not in ADDRESS_PROTOCOLS:
+        why = ("its protocol needs a setup of its own (certificates for tls://, UCX for ucx://)"
+               if protocol in SETUP_PROTOCOLS else f"{protocol}:// is no protocol of a dask scheduler")
+        raise ValueError(f"scheduler={scheduler!r} is not allowed: {why}; allowed: an address of " + " or ".join(
+            f"{name}://" for name in ADDRESS_PROTOCOLS))
     if workers is not None and scheduler not in ("local", None):
         raise ValueError(f"workers={workers} is not allowed with scheduler={shown(scheduler)}; allowed: with "
                          "scheduler='local' (any other engine has its own workers)")

@@ -14,6 +14,8 @@ by forward differences of :data:`FD_STEP`; :func:`solve` minimises ``Σ r²`` wi
 
 from __future__ import annotations
 
+import math
+import sys
 from typing import Callable
 
 import numpy as np
@@ -28,7 +30,7 @@ from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 
-__all__ = ["Problem", "solve", "FD_STEP", "FIT_TOLERANCE", "MAX_EVALUATIONS_PER_PARAMETER"]
+__all__ = ["Problem", "solve", "largest_residual", "FD_STEP", "FIT_TOLERANCE", "MAX_EVALUATIONS_PER_PARAMETER"]
 
 #: Forward-difference step of the Jacobian in the scaled parameters. The continuum's curves are exact to
 #: about 1e-10 relative (``Tolerances.rtol``): the rounding part of a column's error is then ~1e-4, the
@@ -37,6 +39,13 @@ FD_STEP = 1e-6
 #: Convergence of ``least_squares`` (``xtol``, ``ftol``, ``gtol``): far below the noise, near the curves'
 #: accuracy, so that noise-free data are recovered to 1e-6.
 FIT_TOLERANCE = 1e-12
+def largest_residual(samples: int) -> float:
+    """The largest weighted residual a fit of ``samples`` residuals takes: the Jacobian's forward differences reach
+    ``2|r|/FD_STEP`` (a residual's change over the step up to twice its size), and ``least_squares`` sums ``samples``
+    squares of them (``JᵀJ``, the cost), which must stay below the largest double with a factor 2 to spare."""
+    return FD_STEP * math.sqrt(sys.float_info.max / max(samples, 1)) / 4.0
+
+
 #: Function evaluations (continuum solves besides the Jacobian's) per free parameter at most.
 MAX_EVALUATIONS_PER_PARAMETER = 50
 
@@ -81,11 +90,27 @@ class Problem:
         return self.evaluated(theta)[1]
 
     def weighted(self, curves: ModelCurves) -> np.ndarray:
-        """``(model − measured) / σ`` of every quantity, one after the other; 0 where a sample is left out."""
+        """``(model − measured) / σ`` of every quantity, one after the other; 0 where a sample is left out.
+
+        Raises ``ValueError`` where a residual exceeds :func:`largest_residual` (its square and the Jacobian's would
+        overflow: the optimizer took nan steps), naming the quantity, the noise and both curves' magnitudes."""
         parts = []
+        bound = largest_residual(sum(values.size for values in self.measurement.values.values()))
         for name in self.quantities:
-            difference = (curves.values[name] - self.measurement.values[name]) / self.measurement.noise[name]
-            parts.append(np.where(np.isfinite(difference), difference, 0.0))
+            measured, noise = self.measurement.values[name], self.measurement.noise[name]
+            with np.errstate(over="ignore"):
+                difference = (curves.values[name] - measured) / noise
+            difference = np.where(np.isnan(difference), 0.0, difference)
+            if not np.all(np.abs(difference) <= bound):
+                model = float(np.nanmax(np.abs(curves.values[name]), initial=0.0))
+                data = float(np.nanmax(np.abs(measured), initial=0.0))
+                raise ValueError(f"{self.measurement.candidate.source}: {name}'s residual (model − measured)/σ "
+                                 f"reaches {float(np.max(np.abs(difference))):.3g} with the noise σ = {noise:.3g} "
+                                 f"({'given' if self.measurement.noise_given[name] else 'estimated from the data'}), "
+                                 f"the model's largest |{name}| {model:.3g} and the measured {data:.3g} (SI); allowed: "
+                                 f"residuals up to {bound:.3g}, whose squares stay finite (check the data's unit, "
+                                 "units=, or give noise=)")
+            parts.append(difference)
         return np.concatenate(parts)
 
     def jacobian(self, theta: np.ndarray) -> np.ndarray:

@@ -88,7 +88,7 @@ def validation_failures(quantities: Sequence[str], max_errors: Sequence[float], 
         return ["no quantity compared"]
     failures = [f"{name}: max error {error:.3g} of its range > tolerance {tolerance:g}"
                 for name, error in zip(quantities, max_errors) if not error <= tolerance]
-    if contact_differs > tolerance:  # (nan: a tangential force alone does not show the contact)
+    if contact_differs > tolerance:  # (nan: a report written before, of a tangential force alone)
         failures.append(f"contact: {contact_differs:.3g} of the exact contact's time in contact in one run only or "
                         f"not sampled > tolerance {tolerance:g}")
     failures += [f"{name}: a sample left out lies {error:.3g} ranges from the exact value > {LEFT_OUT_BOUND:g}"

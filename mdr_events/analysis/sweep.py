@@ -37,7 +37,7 @@ from mdr_events.analysis.sweep_runs import (CLOSED_FORM_QUANTITIES, DISCRETE_STE
                                             QUANTITIES, ChunkResult, SweepSpec, run_chunk)
 from mdr_events.analysis.sweep_store import Store, run_variables
 from mdr_events.io.datasets import register_schema, stamp
-from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models import indenters
 from mdr_events.contact.friction import friction_attrs
 from mdr_events.models.methods import DEFAULT_STEPS, Continuum, Discrete, Method, as_method
@@ -181,8 +181,7 @@ def sweep_job(grid, contact, motion, alpha, method, options: Mapping[str, Any]) 
     limits = options.pop("limits", DEFAULT_LIMITS)
     if "base" in options:
         contact, motion, alpha = _before(contact, motion, alpha, method, options, grid_names)
-    if not isinstance(limits, Limits):
-        raise TypeError(f"limits={shown(limits)} ({type(limits).__name__}) is not allowed; allowed: a Limits")
+    limits = check_limits(limits)
     engine = _parts(options, ENGINE_OPTIONS, engine, Engine, "engine")
     output = _parts(options, OUTPUT_OPTIONS, output, SweepOutput, "output")
     if alpha is not None:
@@ -255,6 +254,7 @@ def sweep(grid, contact=None, motion=None, alpha: float | None = None, method: s
         Before anything runs, naming the argument: an unknown name, an empty or non-finite grid, a value the contact
         refuses, a scenario without an angle, a store of another sweep.
     """
+    limits = check_limits(limits)
     job = sweep_job(grid, contact, motion, alpha, method, dict(options, output=output, engine=engine, limits=limits))
     spec, runs = job.spec, len(job.grid.rows)
     samples = spec.history_samples

@@ -329,15 +329,17 @@ def _norm_variables(data: dict, samples: _Samples, present: list[str], tolerance
 
 
 def _contact_variable(data: dict, samples: _Samples) -> float:
-    """The share of the exact contact's time in contact in one run only or not sampled (``nan`` where a tangential
-    force alone does not show where the candidate is in contact: it may be 0 in contact)."""
-    differs = contact_differs_share(samples.times, samples.codes, samples.exact["contact_radius"] > 0) + \
-        uncovered_share(samples.times, samples.solution) \
-        if any(name in samples.quantities for name in CONTACT_INDICATORS) else math.nan
+    """The share of the exact contact's time in contact in one run only or not sampled. A tangential force alone does
+    not show where the candidate is in contact (it may be 0 in contact): its share counts the time not sampled only
+    (a run with its start, middle or tail cut out), which the time axis alone shows."""
+    uncovered = uncovered_share(samples.times, samples.solution)
+    shows_contact = any(name in samples.quantities for name in CONTACT_INDICATORS)
+    differs = uncovered + (contact_differs_share(samples.times, samples.codes, samples.exact["contact_radius"] > 0)
+                           if shows_contact else 0.0)
     data["contact_differs_share"] = ((), differs, {"units": "1", "long_name": "time of the exact contact in contact in "
                                                    "one run only or not sampled, as a share of the exact contact's time "
-                                                   "(the verdict's bound: tolerance; nan: a tangential force alone does "
-                                                   "not show the contact)"})
+                                                   "(the verdict's bound: tolerance; a tangential force alone does "
+                                                   "not show the contact: the time not sampled only)"})
     return differs
 
 

@@ -12,7 +12,7 @@ import math
 import os
 from array import array
 from pathlib import Path
-from typing import Callable, Mapping, NamedTuple
+from typing import Callable, Collection, Mapping, NamedTuple
 
 import numpy as np
 import xarray as xr
@@ -25,6 +25,8 @@ from mdr_events.validation import SCALE_MAX, check_real, real_array, shown
 __all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor", "check_run_is_finite",
            "UNDEFINED_OUT_OF_CONTACT"]
 
+#: The kinds of NumPy arrays a column of real numbers has: integers and floats (not bools, complex numbers, times).
+REAL_KINDS = "iuf"
 #: What the mapping arguments of :func:`read_candidate` look like, for a message.
 MAPPING_EXAMPLES = {"names": "{'time': 't', 'normal_force': 'Fn'}", "units": "{'time': 'ms', 'normal_force': 'mN'}",
                     "select": "{'alpha': 20}"}
@@ -90,13 +92,21 @@ PROGRESS_ROWS = 1_000_000
 
 def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
               progress: Callable[[str], None] | None = None) -> dict[str, np.ndarray]:
-    """A CSV file's columns (a header row; ``#`` lines are comments; a UTF-8 byte-order mark is read, as
-    spreadsheets write it), each as float64; its rows are checked against ``limits`` before they are read, and
-    ``progress`` hears every :data:`PROGRESS_ROWS` of them."""
+    """A CSV file's columns (a header row; ``#`` lines are comments and blank lines are skipped, as spreadsheets and
+    editors leave them at the end; a UTF-8 byte-order mark is read, as spreadsheets write it), each as float64; its
+    rows are checked against ``limits`` before they are read, ``progress`` hears every :data:`PROGRESS_ROWS` of them,
+    and errors name the file's own line number."""
     rows = max(_line_count(path) - 1, 0)
+    line = [0]  # the file's line the reader is at (comments and blank lines counted)
+
+    def data_lines(handle):
+        for line[0], text in enumerate(handle, start=1):
+            if text.strip() and not text.lstrip().startswith("#"):
+                yield text
+
     try:
         with open(path, newline="", encoding="utf-8-sig") as handle:
-            reader = csv.reader(row for row in handle if not row.lstrip().startswith("#"))
+            reader = csv.reader(data_lines(handle))
             header = [name.strip() for name in next(reader, [])]
             if not header:
                 raise ValueError(f"{path}: the file is empty; allowed: a CSV file with a header row")
@@ -107,25 +117,31 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
             limits.check(f"reading {path} ({rows} rows of {len(header)} columns)", samples=rows,
                          memory=BYTES_PER_CSV_VALUE * rows * len(header))
             columns = {name: array("d") for name in header}
-            for number, row in enumerate(reader, start=2):
-                if progress is not None and (number - 1) % PROGRESS_ROWS == 0:
-                    progress(f"reading {path}: {number - 1} of {rows} rows")
-                if len(row) != len(header):
-                    raise ValueError(f"{path}: line {number} has {len(row)} fields; allowed: {len(header)} as in the "
-                                     "header")
-                for name, text in zip(header, row):
-                    try:
-                        if "_" in text:  # (Python's float reads "0_0.0" as 0.0: a digit separator no CSV means)
-                            raise ValueError(text)
-                        columns[name].append(float(text) if text.strip() else math.nan)
-                    except ValueError:
-                        raise ValueError(f"{path}: line {number}, column {name!r}: {text!r} is not a number") from None
+            for count, row in enumerate(reader, start=1):
+                if progress is not None and count % PROGRESS_ROWS == 0:
+                    progress(f"reading {path}: {count} of {rows} rows")
+                _read_row(path, line[0], header, row, columns)
     except UnicodeDecodeError as error:
         raise ValueError(f"{path}: not UTF-8 text (byte {error.start}: {error.reason}); allowed: a CSV file with a "
                          "header row (UTF-8 text)") from None
     except csv.Error as error:
-        raise ValueError(f"{path}: not a readable CSV file ({error}); allowed: a CSV file with a header row") from None
+        raise ValueError(f"{path}: not a readable CSV file (line {line[0]}: {error}); allowed: a CSV file with a "
+                         "header row") from None
     return {name: np.frombuffer(values, dtype=float).copy() for name, values in columns.items()}
+
+
+def _read_row(path: Path, number: int, header: list[str], row: list[str], columns: dict[str, array]) -> None:
+    """Append a CSV row's numbers (an empty field: ``nan``) to ``columns``; ``ValueError`` naming the file's line
+    ``number`` where the row is not as long as the header or a field is no number."""
+    if len(row) != len(header):
+        raise ValueError(f"{path}: line {number} has {len(row)} fields; allowed: {len(header)} as in the header")
+    for name, text in zip(header, row):
+        try:
+            if "_" in text:  # (Python's float reads "0_0.0" as 0.0: a digit separator no CSV means)
+                raise ValueError(text)
+            columns[name].append(float(text) if text.strip() else math.nan)
+        except ValueError:
+            raise ValueError(f"{path}: line {number}, column {name!r}: {text!r} is not a number") from None
 
 
 def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
@@ -148,8 +164,10 @@ def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
 
 def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
                        select: Mapping[str, object] | None = None,
-                       progress: Callable[[str], None] | None = None) -> tuple[dict[str, np.ndarray], dict[str, str]]:
-    """The candidate's columns and the units they declare (a Dataset's or netCDF file's ``units``)."""
+                       progress: Callable[[str], None] | None = None,
+                       wanted: Collection[str] = ()) -> tuple[dict[str, np.ndarray], dict[str, str]]:
+    """The candidate's columns and the units they declare (a Dataset's or netCDF file's ``units``); a Dataset's column
+    read as a quantity (its name ``wanted``, or a quantity's) must hold real numbers."""
     if isinstance(candidate, (str, os.PathLike)):
         path = Path(candidate)
         problem = input_file_problem(path)
@@ -180,13 +198,17 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
                                  "allowed: one run, a column along one dimension (select the run: "
                                  "dataset.isel(...) or select=)")
         names = list(candidate.variables)
-        text = [name for name in names if name in CANDIDATE_QUANTITIES and not
-                np.issubdtype(candidate[name].dtype, np.number)]
-        if text:  # a quantity's column of text was dropped silently (a pass on the others)
-            raise TypeError(f"{source}: column {text[0]!r} holds {candidate[text[0]].dtype} values; allowed: real "
-                            "numbers")
+        # (a quantity's column of text was dropped silently, a pass on the others; one of complex numbers lost its
+        # imaginary part, one of timedeltas was read in nanoseconds as seconds)
+        other = [name for name in names if (name in CANDIDATE_QUANTITIES or name in wanted) and
+                 candidate[name].dtype.kind not in REAL_KINDS]
+        if other:
+            hint = " (timedeltas: give seconds, e.g. time / numpy.timedelta64(1, 's'))" \
+                if candidate[other[0]].dtype.kind in "mM" else ""
+            raise TypeError(f"{source}: column {str(other[0])!r} holds {candidate[other[0]].dtype} values; allowed: "
+                            f"real numbers{hint}")
         return ({name: np.asarray(candidate[name].values, dtype=float).ravel() for name in names
-                 if candidate[name].ndim <= 1 and np.issubdtype(candidate[name].dtype, np.number)},
+                 if candidate[name].ndim <= 1 and candidate[name].dtype.kind in REAL_KINDS},
                 {name: str(candidate[name].attrs["units"]) for name in names if "units" in candidate[name].attrs})
     if isinstance(candidate, Mapping):
         columns = {str(name): real_array(f"{source}: column {str(name)!r}", values,
@@ -252,8 +274,12 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         if given is not None and not isinstance(given, Mapping):
             raise TypeError(f"{argument}={shown(given)} ({type(given).__name__}) is not allowed; allowed: a mapping, "
                             f"e.g. {MAPPING_EXAMPLES[argument]}")
-    columns, declared = _columns_and_units(candidate, source, limits, select, progress)
     names = dict(names or {})
+    for quantity, column in names.items():  # (a list was unhashable: a raw TypeError)
+        if not isinstance(column, str):
+            raise TypeError(f"{source}: names[{quantity!r}]={shown(column)} ({type(column).__name__}) is not allowed; "
+                            "allowed: a column's name (str)")
+    columns, declared = _columns_and_units(candidate, source, limits, select, progress, set(names.values()))
     units = dict(units or {})
     for quantity in list(names) + list(units):
         if quantity not in CANDIDATE_QUANTITIES:

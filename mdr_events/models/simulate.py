@@ -16,7 +16,7 @@ import xarray as xr
 
 from mdr_events.contact import Contact
 from mdr_events.contact.friction import as_friction_law
-from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.limits import Limits, check_limits
 from mdr_events.models import indenters
 from mdr_events.models.job import ModelJob
 from mdr_events.models.methods import METHODS, Continuum, Discrete, Method, as_method
@@ -136,10 +136,7 @@ def simulate(
         custom paths.
     """
     model, method = simulation_job(contact, motion, alpha, method, options)
-    if limits is None:
-        limits = DEFAULT_LIMITS
-    elif not isinstance(limits, Limits):
-        raise TypeError(f"limits={shown(limits)} is not allowed; allowed: a mdr_events.Limits")
+    limits = check_limits(limits)
     check_representable(model.params, model.profile, model.friction)
     cases = model.motion.cases(model.params, model.profile, model.friction)
     return method.simulate(model, cases, limits)

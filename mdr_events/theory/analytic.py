@@ -27,7 +27,7 @@ import numpy as np
 from mdr_events.theory import symbolic
 from mdr_events.theory.roots import positive_polynomial_root
 from mdr_events.theory.job import ContactLike, paper_parameters
-from mdr_events.validation import check_choice, check_flag, real_array, shown, validate_alpha
+from mdr_events.validation import SCALE_MAX, check_choice, check_flag, real_array, shown, validate_alpha
 
 __all__ = [
     "DimensionlessGroups",
@@ -62,15 +62,45 @@ def _tan_degrees(alpha_deg: np.ndarray) -> np.ndarray:
         return np.where(alpha_deg == 90.0, np.inf, np.tan(np.deg2rad(alpha_deg)))
 
 
+#: Arguments of the closed forms that are lengths or works of their physics, never negative (the parameters refuse a
+#: negative work of adhesion; a negative radius gave a negative critical shift and a positive pull-off force).
+NONNEGATIVE = ("contact_radius", "work_of_adhesion", "amplitude")
+
+
 def _finite(**arguments) -> None:
-    """Refuse an argument with an entry that is no finite real number (``10**400`` read as inf), naming it. A float
-    array is the caller's to keep finite (its inf gives inf): checking it would cost the continuum's hot loop."""
+    """Refuse an argument with an entry that is no finite real number (``10**400`` read as inf), beyond
+    ``±SCALE_MAX`` (its square would overflow) or, of :data:`NONNEGATIVE`, below 0, naming it."""
     for name, value in arguments.items():
-        if type(value) is float and math.isfinite(value) or isinstance(value, np.ndarray) and value.dtype.kind == "f":
-            continue
-        values = real_array(name, value, "real numbers")
-        if not np.all(np.isfinite(values)):
-            raise ValueError(f"{name}={shown(value)} is not allowed; allowed: finite real numbers (SI units)")
+        low = 0.0 if name in NONNEGATIVE else -SCALE_MAX
+        if type(value) is float:
+            if low <= value <= SCALE_MAX:
+                continue
+            values = np.asarray(value)
+        elif isinstance(value, np.ndarray) and value.dtype.kind == "f":
+            values = value
+        else:
+            values = real_array(name, value, "real numbers")
+        if not (values.size == 0 or (low <= values.min() and values.max() <= SCALE_MAX)):
+            raise ValueError(f"{name}={shown(value)} is not allowed; allowed: finite real numbers "
+                             f"{'from 0' if low == 0.0 else f'from {low:.2g}'} to {SCALE_MAX:.2g} (SI units)")
+
+
+class ResultOverflowError(ValueError, OverflowError):
+    """A closed form's result overflows double precision for the arguments and parameters given: a ``ValueError``
+    (the input asks too much), and an ``OverflowError``, so that :mod:`mdr_events.theory.scales` names the parameter
+    scale behind it as it does for math's overflows."""
+
+
+def _representable(compute, function: str, **arguments):
+    """``compute()`` if every entry is finite (computed without a RuntimeWarning); else ``ValueError``: the arguments'
+    result overflows double precision."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        result = compute()
+    if np.all(np.isfinite(list(result.values()) if isinstance(result, dict) else result)):
+        return result
+    given = ", ".join(f"{name}={shown(value)}" for name, value in arguments.items())
+    raise ResultOverflowError(f"{function}({given}) is not allowed: its result overflows double precision; allowed: "
+                              "arguments and parameters whose result is a finite number")
 
 
 def _as_output(values: np.ndarray, like: np.ndarray):
@@ -101,7 +131,9 @@ def jkr_depth(contact_radius, contact: ContactLike, work_of_adhesion: float):
     """
     _finite(contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jkr_depth")
-    return _rel("jkr_depth").numeric(contact_radius, params.R, params.E_star, work_of_adhesion)
+    relation = _rel("jkr_depth").numeric
+    return _representable(lambda: relation(contact_radius, params.R, params.E_star, work_of_adhesion), "jkr_depth",
+                          contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
 
 
 def jkr_normal_force(contact_radius, contact: ContactLike, work_of_adhesion: float):
@@ -128,7 +160,9 @@ def jkr_normal_force(contact_radius, contact: ContactLike, work_of_adhesion: flo
     """
     _finite(contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jkr_normal_force")
-    return _rel("jkr_normal_force").numeric(contact_radius, params.R, params.E_star, work_of_adhesion)
+    relation = _rel("jkr_normal_force").numeric
+    return _representable(lambda: relation(contact_radius, params.R, params.E_star, work_of_adhesion),
+                          "jkr_normal_force", contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
 
 
 def normal_force(depth, contact_radius, contact: ContactLike):
@@ -206,11 +240,12 @@ def jump_off(contact: ContactLike, work_of_adhesion: float) -> dict[str, float]:
     _finite(work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jump_off")
     args = (params.R, params.E_star, work_of_adhesion)
-    return {
+    point = _representable(lambda: {
         "contact_radius": float(_rel("jump_off_radius").numeric(*args)),
         "depth": float(_rel("jump_off_depth").numeric(*args)),
         "normal_force": float(_rel("jump_off_force").numeric(params.R, work_of_adhesion)),
-    }
+    }, "jump_off", work_of_adhesion=work_of_adhesion)
+    return point
 
 
 def jump_in_radius(contact: ContactLike, work_of_adhesion: float) -> float:
@@ -233,7 +268,8 @@ def jump_in_radius(contact: ContactLike, work_of_adhesion: float) -> float:
     """
     _finite(work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jump_in_radius")
-    return float(_rel("jump_in_radius").numeric(params.R, params.E_star, work_of_adhesion))
+    return _representable(lambda: float(_rel("jump_in_radius").numeric(params.R, params.E_star, work_of_adhesion)),
+                          "jump_in_radius", work_of_adhesion=work_of_adhesion)
 
 
 def pull_off_force(contact: ContactLike, work_of_adhesion: float) -> float:
@@ -256,7 +292,8 @@ def pull_off_force(contact: ContactLike, work_of_adhesion: float) -> float:
     """
     _finite(work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "pull_off_force")
-    return float(_rel("pull_off_force").numeric(params.R, work_of_adhesion))
+    return _representable(lambda: float(_rel("pull_off_force").numeric(params.R, work_of_adhesion)), "pull_off_force",
+                          work_of_adhesion=work_of_adhesion)
 
 
 def jkr_contact_radius(depth, contact: ContactLike, work_of_adhesion: float):
@@ -317,7 +354,9 @@ def critical_shift(contact_radius, contact: ContactLike):
     """
     _finite(contact_radius=contact_radius)
     params = paper_parameters(contact, "critical_shift")
-    return _rel("critical_shift").numeric(contact_radius, params.tau0, params.G_star)
+    relation = _rel("critical_shift").numeric
+    return _representable(lambda: relation(contact_radius, params.tau0, params.G_star), "critical_shift",
+                          contact_radius=contact_radius)
 
 
 def fretting_dissipated_energy(contact_radius, amplitude, contact: ContactLike):
@@ -344,7 +383,9 @@ def fretting_dissipated_energy(contact_radius, amplitude, contact: ContactLike):
     """
     _finite(contact_radius=contact_radius, amplitude=amplitude)
     params = paper_parameters(contact, "fretting_dissipated_energy")
-    return _rel("fretting_dissipated_energy").numeric(contact_radius, amplitude, params.tau0, params.G_star)
+    relation = _rel("fretting_dissipated_energy").numeric
+    return _representable(lambda: relation(contact_radius, amplitude, params.tau0, params.G_star),
+                          "fretting_dissipated_energy", contact_radius=contact_radius, amplitude=amplitude)
 
 
 # ----------------------------------------------------------------------------

@@ -15,7 +15,7 @@ import xarray as xr
 
 from mdr_events.io.agreement import RoundOff, register_accuracy
 from mdr_events.io.datasets import register_schema, stamp
-from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.parameters import Parameters
 from mdr_events.contact.friction import FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.contact.indenters import Profile, TabulatedProfile, profile_attrs
@@ -106,8 +106,7 @@ def phase_diagram(
     angles = validate_alpha(default_angles() if alpha is None else alpha)
     if angles.ndim != 1 or angles.size == 0:
         raise ValueError(f"alpha must be a non-empty 1-D array of angles, got shape {angles.shape}")
-    if not isinstance(limits, Limits):
-        raise TypeError(f"limits={limits!r} is not allowed; allowed: a mdr_events.Limits")
+    limits = check_limits(limits)
     limits.check(f"the phase diagram of {angles.size} angles", samples=angles.size,
                  memory=BYTES_PER_ANGLE * angles.size)
     coords = {"alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})}

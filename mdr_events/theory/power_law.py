@@ -19,7 +19,7 @@ import numpy as np
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
 from mdr_events.theory import symbolic
-from mdr_events.validation import check_flag, check_real, validate_alpha
+from mdr_events.validation import SCALE_MAX, check_flag, check_real, validate_alpha
 
 __all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_force", "contact_radius",
            "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
@@ -51,8 +51,14 @@ def check_profile(profile) -> Profile:
     return profile
 
 
-def _check_work(work_of_adhesion) -> float:
-    return check_real("work_of_adhesion", work_of_adhesion, "a finite number >= 0 (J/m²)", lambda value: value >= 0.0)
+def check_work(work_of_adhesion) -> float:
+    """``work_of_adhesion`` as a float if it is a number from 0 to ``SCALE_MAX`` (J/m²: its square stays finite);
+    else ``ValueError`` naming it (a negative one gave ``nan`` and a positive pull-off force)."""
+    return check_real("work_of_adhesion", work_of_adhesion, f"a finite number >= 0 (J/m²), at most {SCALE_MAX:.2g}",
+                      lambda value: 0.0 <= value <= SCALE_MAX)
+
+
+_check_work = check_work
 
 
 def _check_adhesive(profile: PowerLaw, work_of_adhesion: float) -> None:

@@ -201,7 +201,7 @@ class TabulatedBranch:
 @functools.lru_cache(maxsize=64)
 def branch(profile: TabulatedProfile, params: Parameters, work_of_adhesion: float) -> TabulatedBranch:
     """The :class:`TabulatedBranch` of ``profile`` for ``params`` and a work of adhesion, built once per process."""
-    return TabulatedBranch(_check(profile), params, float(work_of_adhesion))
+    return TabulatedBranch(_check(profile), params, power_law.check_work(work_of_adhesion))
 
 
 def normal_force(depth, contact_radius, profile: TabulatedProfile, params: Parameters):

@@ -28,18 +28,31 @@ class UsageError(Exception):
     """A user error: reported in one line, exit status 2."""
 
 
-class StoreOnce(argparse.Action):
-    """Store an option's value, refusing the option given twice (the last one silently won)."""
+#: The namespace's record of the options given so far (option's destination -> its value), for :class:`StoreOnce`.
+GIVEN = "_options_given"
+
+
+class StoreOnce(argparse._StoreAction):
+    """Store an option's value, refusing the option given twice (the last one silently won): every verb's options
+    that take a value (:class:`Parser` makes it their action)."""
 
     def __call__(self, parser, namespace, values, option_string=None) -> None:
-        if getattr(namespace, self.dest, None) is not None:
-            raise argparse.ArgumentError(self, f"given twice ({getattr(namespace, self.dest)!r} and {values!r}); "
-                                               "allowed: once (the one path the runs took)")
+        given = getattr(namespace, GIVEN, None)
+        if given is None:
+            given = {}
+            setattr(namespace, GIVEN, given)
+        if self.dest in given:
+            several = f", with every value after it ({option_string} {' '.join(map(str, given[self.dest] + values))})" \
+                if isinstance(values, list) else ""
+            raise argparse.ArgumentError(self, f"given twice ({given[self.dest]!r} and {values!r}); allowed: "
+                                               f"once{several}")
+        given[self.dest] = values
         setattr(namespace, self.dest, values)
 
 
 class Parser(argparse.ArgumentParser):
-    """An argument parser whose errors are one line (:class:`UsageError`) naming where the allowed options are.
+    """An argument parser whose errors are one line (:class:`UsageError`) naming where the allowed options are, and
+    whose options of a value are given once (:class:`StoreOnce`).
 
     ``fill``, a function of the parser, adds its arguments when they are first needed (to parse, to show the help, to
     list them: :meth:`filled`), so that a verb's imports are made only when the verb is used.
@@ -47,6 +60,8 @@ class Parser(argparse.ArgumentParser):
 
     def __init__(self, *args, fill: Callable[[Parser], None] | None = None, **kwargs) -> None:
         super().__init__(*args, **kwargs)
+        self.register("action", None, StoreOnce)
+        self.register("action", "store", StoreOnce)
         self._fill = fill
 
     def filled(self) -> Parser:
@@ -232,7 +247,7 @@ def measured_path_options(parser: argparse.ArgumentParser, what: str, start: boo
     motion.add_argument("--path", default=None, metavar="FILE",
                         help="a TOML file with a [path] table as in a study file: waypoints = [[x, d], ...] (m), "
                              "speed (m/s, default the parameters' v)")
-    parser.add_argument("--alpha", type=float, default=None, metavar="DEG", action=StoreOnce,
+    parser.add_argument("--alpha", type=float, default=None, metavar="DEG",
                         help="the scenario's angle in degrees")
 
 

@@ -11,6 +11,7 @@ import numpy as np
 from scipy import optimize
 
 from mdr_events.parameters import Parameters
+from mdr_events.validation import check_real, real_array, shown
 from .model import ContinuumModel
 from .span import Span, Variable
 from .state import CONTACT_ENDING, Cap, Event, Regime
@@ -149,17 +150,39 @@ def _compressed_zone(zone: PathSolution, times: np.ndarray, radius: np.ndarray,
         return force, np.where(radius > 0, np.clip(sliding_springs / radius, 0.0, 1.0), np.nan)
 
 
+def check_times(name: str, times, earliest: float = 0.0) -> np.ndarray:
+    """``times`` (s from first contact) as a float array of one dimension at most, every entry finite and from
+    ``earliest`` on; else ``TypeError`` or ``ValueError`` naming the argument (a time before the path's start was
+    extrapolated to, a string or a 2-D grid was a raw error of NumPy's)."""
+    values = real_array(name, times, "times in s from first contact (real numbers)")
+    if values.ndim > 1 or not np.all(np.isfinite(values)) or np.any(values < earliest):
+        raise ValueError(f"{name}={shown(times)} is not allowed; allowed: one time or a 1-D array of finite times "
+                         f">= {earliest:.9g} (s from first contact: the path's start; the solution says nothing "
+                         "before it)")
+    return values
+
+
 def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]:
     """Fill a time grid (s from first contact) span by span (:func:`evaluate_span`).
 
-    Samples after the end of the run are ``nan``, except the first sample after a pull-off if it lies on
-    the pull-off's path segment, which shows the contact gone (forces and radius 0).
+    Samples before the first contact are out of contact (the path's depth and position, forces and radius 0, the
+    sliding fraction ``nan``); samples after the end of the run are ``nan``, except the first sample after a pull-off
+    if it lies on the pull-off's path segment, which shows the contact gone (forces and radius 0). Times before the
+    path's start (that of ``solution.path``, else the first contact), or that are no finite numbers, are refused
+    (:func:`check_times`).
     """
-    times = np.asarray(times, dtype=float)
+    start = -solution.t_contact if solution.path is not None else 0.0
+    times = np.atleast_1d(check_times("times", times, start))
     out = {name: np.full(len(times), np.nan) for name in EVALUATED_QUANTITIES}
-    inside = times <= solution.end_time
+    before = times < 0.0
+    if np.any(before):  # (the spans begin at the first contact: the first one was extrapolated back)
+        out["tangential_displacement"][before], out["indentation_depth"][before] = \
+            solution.path.position(solution.t_contact + times[before])
+        for name in ("normal_force", "tangential_force", "contact_radius"):
+            out[name][before] = 0.0
+    inside = (times <= solution.end_time) & ~before
     owner = solution.span_index(times)
-    after_end = np.flatnonzero(~inside)
+    after_end = np.flatnonzero(~inside & ~before)
     last = solution.spans[-1].segment
     if solution.ended_by_contact and after_end.size and solution.t_contact + times[after_end[0]] <= last.t1:
         first = after_end[0]
@@ -415,8 +438,14 @@ def tangential_work(solution: PathSolution, start: float | None = None, end: flo
     :data:`WORK_NODES`-point Gauss–Legendre quadrature: in time on pinned spans (``dx = v_x dt``), in the
     radius on moving ones (``dx = v_x (∂d/∂a)/v_d da``).
     """
-    lower = 0.0 if start is None else float(start)
-    upper = solution.end_time if end is None else min(float(end), solution.end_time)
+    earliest = -solution.t_contact if solution.path is not None else 0.0
+    allowed = f"a finite time >= {earliest:.9g} (s from first contact: the path's start) or None"
+    lower = 0.0 if start is None else check_real("start", start, allowed, lambda value: value >= earliest)
+    upper = solution.end_time if end is None else min(check_real("end", end, allowed, lambda value: value >= earliest),
+                                                      solution.end_time)
+    if start is not None and end is not None and not lower <= upper:  # (reversed: 0 J, silently)
+        raise ValueError(f"start={shown(start)} and end={shown(end)} are not allowed; allowed: start <= end (s from "
+                         "first contact)")
     if solution.compressed is not None:  # the compressed zone's force (none after its run: no contact)
         return tangential_work(solution.compressed, lower, upper) if upper > lower else 0.0
     nodes, weights = np.polynomial.legendre.leggauss(WORK_NODES)

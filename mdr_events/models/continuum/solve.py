@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from mdr_events.models.indenters import SimulatedProfile, check_reach, check_simulated_profile
@@ -37,6 +37,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     adhesion law ``adhesion``
     (``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``); a path with more waypoints than
     ``limits.waypoints`` is refused before the work starts."""
+    limits = check_limits(limits)
     limits.check(f"the continuum run of a path with {len(path.waypoints)} waypoints",
                  waypoints=len(path.waypoints))
     profile = check_simulated_profile(profile)
