@@ -7,13 +7,10 @@ the continuum solves with and without adhesion (its tensile springs hold no Coul
 
 from __future__ import annotations
 
-import dataclasses
-
 import xarray as xr
 
 from mdr_events.analysis.validate import DEFAULT_TOLERANCE, one_path, one_path_job, validate
 from mdr_events.contact import Contact
-from mdr_events.contact.friction import FrictionLaw
 from mdr_events.dem.mapping import LammpsModel
 from mdr_events.dem.runner import run_lammps
 from mdr_events.limits import DEFAULT_LIMITS, Limits
