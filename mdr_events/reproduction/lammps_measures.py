@@ -111,8 +111,8 @@ class CaseRow(NamedTuple):
     """One case's row of the section's table, measured from its report."""
 
     case: LammpsCase
-    normal_error: float  #: max |ΔF_N| / range
-    tangential_error: float  #: max |ΔF_x| / range (nan without a tangential model)
+    normal_error: float  #: max ``|ΔF_N|`` / range
+    tangential_error: float  #: max ``|ΔF_x|`` / range (nan without a tangential model)
     contact_differs: float  #: share of the exact contact's time in contact in one run only
     pull_off_lammps: float  #: least F_N of LAMMPS's samples (N)
     pull_off_exact: float  #: F_N at the exact pull-off (N)

@@ -8,8 +8,8 @@ no radius root per evaluation).
   polynomial), differentiated, and the real roots of the derivative in the bracket are the stationary points. A
   force linear in time (:class:`~.span.LinearForce`) or constant has none inside a span.
 - ``F_N`` on a moving radius: along the branch ``F_N(a) = 2E* (a d(a) − ∫_0^a g)`` (10), so
-  ``dF_N/da = 2E* (d(a) + a d'(a) − g(a))`` (the branch's depth, slope and profile term :meth:`~.branch.Branch.
-  depth_term`); its root in the bracket is found by ``brentq`` in the radius, and the time is that of the depth
+  ``dF_N/da = 2E* (d(a) + a d'(a) − g(a))`` (the branch's depth, slope and profile term,
+  :meth:`~.branch.Branch.depth_term`); its root in the bracket is found by ``brentq`` in the radius, and the time is that of the depth
   (linear in time on a segment). On a pinned radius ``F_N`` is linear in the depth, hence in time: no stationary
   point inside a span (its extremes are the span's ends, which the scan holds).
 - The contact radius and area are monotone on a span.
