@@ -278,3 +278,11 @@ def test_before_the_first_contact_a_solution_is_out_of_contact():
     assert out["contact_radius"][2] > 0.0
     with pytest.raises(ValueError, match=r"times=\[-101.0\] is not allowed; allowed: .* finite times >= -100"):
         me.continuum.evaluate(solution, [-101.0])
+
+
+def test_a_file_path_with_a_trailing_separator_is_refused_and_nothing_is_written(tmp_path):
+    """``write_netcdf('x.nc/')`` wrote ``x.nc`` (pathlib drops the separator): a path naming a directory is refused."""
+    dataset = me.simulate(me.Contact.paper(), me.Scenario("A", 20.0), "continuum", samples=11)
+    with pytest.raises(ValueError, match=r"path='.*x\.nc/' is not allowed \(a trailing separator names a directory\)"):
+        me.write_netcdf(dataset, f"{tmp_path}/x.nc/")
+    assert list(tmp_path.iterdir()) == []

@@ -148,6 +148,9 @@ def check_output_file(name: str, path: Any) -> Path:
     """
     target = check_file_path(name, path, ALLOWED_FILE)
     text = os.fspath(path)
+    if text.endswith(tuple({"/", os.sep})):  # (pathlib drops the trailing separator: 'x.nc/' would write x.nc)
+        raise ValueError(f"{name}={text!r} is not allowed (a trailing separator names a directory); allowed: "
+                         f"{ALLOWED_FILE}")
     if os.path.isdir(target):
         raise ValueError(f"{name}={text!r} is not allowed (it is a directory); allowed: {ALLOWED_FILE}")
     if os.path.lexists(target) and (os.path.islink(target) or not os.path.isfile(target)):
