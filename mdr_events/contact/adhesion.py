@@ -14,11 +14,11 @@ checks that it is the one of its parameters (:func:`law_of`).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Mapping
+from typing import Any, Callable, Mapping
 
 from mdr_events.validation import check_real, shown
 
-__all__ = ["Adhesion", "NO_ADHESION", "AdhesionLaw", "law_of"]
+__all__ = ["Adhesion", "NO_ADHESION", "AdhesionLaw", "law_of", "kernel_of"]
 
 
 @dataclass(frozen=True)
@@ -90,3 +90,13 @@ def law_of(params: Any, adhesion: AdhesionLaw | None = None) -> AdhesionLaw:
                          f"dgamma1={params.dgamma1!r} J/m²; allowed: a law whose works at rest are the parameters' "
                          "(Contact.parameters gives them)")
     return adhesion
+
+
+def kernel_of(adhesion: Any, kernels: Mapping[type, Callable[..., Any]], method: str) -> Callable[..., Any]:
+    """The kernel of ``adhesion`` among a method's ``kernels`` (by the law's type); else the ``TypeError`` naming the
+    method and the laws it has kernels for."""
+    kernel = kernels.get(type(adhesion))
+    if kernel is None:
+        raise TypeError(f"adhesion={shown(adhesion)} ({type(adhesion).__name__}) is not allowed in the {method} "
+                        f"method; allowed: {', '.join(kind.__name__ for kind in kernels)}")
+    return kernel

@@ -61,7 +61,7 @@ import numpy as np
 from mdr_events.io.agreement import ROUND_OFF
 from mdr_events.theory import analytic
 from mdr_events.limits import DEFAULT_LIMITS, Limits
-from mdr_events.validation import check_real, shown
+from mdr_events.validation import check_real
 
 from mdr_events.theory import symbolic
 from mdr_events.parameters import Parameters
@@ -70,7 +70,7 @@ from mdr_events.models.spring_groups import SpringGroups, scale_bits, scaled, un
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.contact.indenters import PowerLaw
-from mdr_events.contact.adhesion import Adhesion, AdhesionLaw, law_of
+from mdr_events.contact.adhesion import Adhesion, AdhesionLaw, kernel_of, law_of
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.theory import mindlin
 
@@ -143,15 +143,12 @@ THRESHOLD_RULES: dict[type, Callable[..., Thresholds]] = {Adhesion: hysteresis_t
 
 def check_thresholds_known(adhesion: AdhesionLaw) -> None:
     """Refuse an adhesion law without thresholds in :data:`THRESHOLD_RULES`, naming those with them."""
-    if type(adhesion) not in THRESHOLD_RULES:
-        raise TypeError(f"adhesion={shown(adhesion)} ({type(adhesion).__name__}) is not allowed in the discrete "
-                        f"method; allowed: {', '.join(kind.__name__ for kind in THRESHOLD_RULES)}")
+    kernel_of(adhesion, THRESHOLD_RULES, "discrete")
 
 
 def spring_thresholds(adhesion: AdhesionLaw, g: np.ndarray, positions: np.ndarray, params: Parameters) -> Thresholds:
     """The thresholds of ``adhesion`` for springs at ``positions`` on the profile ``g`` of ``params``' material."""
-    check_thresholds_known(adhesion)
-    return THRESHOLD_RULES[type(adhesion)](adhesion, g, positions, params)
+    return kernel_of(adhesion, THRESHOLD_RULES, "discrete")(adhesion, g, positions, params)
 
 
 def _spring_count(params: Parameters, dx: float, max_depth: float, profile, adhesion: AdhesionLaw) -> int:

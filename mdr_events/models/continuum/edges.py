@@ -10,10 +10,9 @@ from __future__ import annotations
 
 from typing import Callable, NamedTuple
 
-from mdr_events.contact.adhesion import Adhesion, AdhesionLaw
+from mdr_events.contact.adhesion import Adhesion, AdhesionLaw, kernel_of
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.parameters import Parameters
-from mdr_events.validation import shown
 
 from .branch import Branch, make_branch
 
@@ -40,12 +39,9 @@ EDGE_RULES: dict[type, Callable[..., Edge]] = {Adhesion: hysteresis_edge}
 
 def check_edge_known(adhesion: AdhesionLaw) -> None:
     """Refuse an adhesion law without an edge rule in :data:`EDGE_RULES`, naming those with one."""
-    if type(adhesion) not in EDGE_RULES:
-        raise TypeError(f"adhesion={shown(adhesion)} ({type(adhesion).__name__}) is not allowed in the continuum "
-                        f"method; allowed: {', '.join(kind.__name__ for kind in EDGE_RULES)}")
+    kernel_of(adhesion, EDGE_RULES, "continuum")
 
 
 def edge_of(adhesion: AdhesionLaw, params: Parameters, profile: SimulatedProfile = None) -> Edge:
     """The edge of ``adhesion`` for the material of ``params`` and ``profile`` (``None``: the paraboloid)."""
-    check_edge_known(adhesion)
-    return EDGE_RULES[type(adhesion)](adhesion, params, profile)
+    return kernel_of(adhesion, EDGE_RULES, "continuum")(adhesion, params, profile)
