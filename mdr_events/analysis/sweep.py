@@ -49,7 +49,7 @@ from mdr_events.validation import check_choice, check_count, check_flag, check_r
 
 __all__ = ["sweep", "sweep_job", "SweepJob", "SweepOutput", "Engine", "run_chunk", "SweepSpec", "QUANTITIES",
            "CLOSED_FORM_QUANTITIES", "HISTORY_QUANTITIES", "SWEEP_CONTENT", "TABLE_DIMENSION", "ChunkResult",
-           "DEFAULT_CHUNK", "DISCRETE_STEP_PER_SPACING"]
+           "DEFAULT_CHUNK", "DISCRETE_STEP_PER_SPACING", "DEFAULT_METHOD", "simulate_steps_unless_given"]
 
 #: The ``content`` attribute of a sweep's dataset.
 SWEEP_CONTENT = "parameter sweep"
@@ -117,7 +117,7 @@ class SweepJob(NamedTuple):
 
 # ------------------------------------------------------------------------------------------------------------
 # the one conversion of what sweep is given
-def _before(contact, motion, alpha, method, options: dict[str, Any], grid_names: Sequence[str]) -> tuple:
+def _before(contact, motion, alpha, method, options: dict[str, Any], grid) -> tuple:
     """The keywords of before, ``sweep(grid, scenario, alpha, *, base=params, ...)``, as (contact, motion, alpha):
     the discrete model's time step without ``dx`` or ``n_steps`` is :func:`~mdr_events.simulate`'s default, as it
     was."""
@@ -129,10 +129,17 @@ def _before(contact, motion, alpha, method, options: dict[str, Any], grid_names:
     scenario = options.pop("scenario", "A" if contact is None else contact)
     if motion is not None and alpha is not None:
         raise ValueError(f"alpha is given twice ({motion!r} third and alpha={alpha!r}); allowed: one")
-    if method == "discrete" and "dx" not in grid_names and all(options.get(name) is None for name in
+    simulate_steps_unless_given(method, options, grid)
+    return base, scenario, alpha if motion is None else motion
+
+
+def simulate_steps_unless_given(method, options: dict[str, Any], grid) -> None:
+    """The keywords of before and study files: the discrete model without ``dx``, ``dt`` or ``n_steps`` (in
+    ``options`` or, ``dx``, in the ``grid``) takes :func:`~mdr_events.simulate`'s :data:`DEFAULT_STEPS`, put into
+    ``options`` (the sweep's own default is :data:`DISCRETE_STEP_PER_SPACING`)."""
+    if method == "discrete" and "dx" not in _grid_names(grid) and all(options.get(name) is None for name in
                                                                 ("dx", "dt", "n_steps")):
         options["n_steps"] = DEFAULT_STEPS
-    return base, scenario, alpha if motion is None else motion
 
 
 def _parts(options: dict[str, Any], names: Sequence[str], given, kind: type, label: str):
@@ -180,7 +187,7 @@ def sweep_job(grid, contact, motion, alpha, method, options: Mapping[str, Any]) 
     output, engine = options.pop("output", None), options.pop("engine", None)
     limits = options.pop("limits", DEFAULT_LIMITS)
     if "base" in options:
-        contact, motion, alpha = _before(contact, motion, alpha, method, options, grid_names)
+        contact, motion, alpha = _before(contact, motion, alpha, method, options, grid)
     limits = check_limits(limits)
     engine = _parts(options, ENGINE_OPTIONS, engine, Engine, "engine")
     output = _parts(options, OUTPUT_OPTIONS, output, SweepOutput, "output")

@@ -377,8 +377,8 @@ def _sweep(tables: _Tables, output_directory: FilePath) -> SweepJob | None:
     without ``dx`` or ``n_steps`` takes :func:`~mdr_events.simulate`'s 10 000 steps), the output and the engine. A
     value they refuse is named now; the grid's values are checked by the sweep when it runs."""
     from mdr_events.analysis.executors import DEFAULT_CHUNK, Engine
-    from mdr_events.analysis.sweep import SweepOutput
-    from mdr_events.models.methods import DEFAULT_STEPS, as_method
+    from mdr_events.analysis.sweep import DEFAULT_METHOD, SweepOutput, simulate_steps_unless_given
+    from mdr_events.models.methods import as_method
     from mdr_events.models.motion import as_motion
 
     table = tables.document.get("sweep")
@@ -388,10 +388,8 @@ def _sweep(tables: _Tables, output_directory: FilePath) -> SweepJob | None:
     if isinstance(grid, dict):
         grid = {name: value if isinstance(value, list) else [value] for name, value in grid.items()}
     options = {key: table[key] for key in ("dx", "n_steps") if key in table}
-    method = table.get("method", "continuum")
-    names = grid if isinstance(grid, dict) else grid[0] if grid else {}
-    if method == "discrete" and not options and "dx" not in names:
-        options["n_steps"] = DEFAULT_STEPS
+    method = table.get("method", DEFAULT_METHOD)
+    simulate_steps_unless_given(method, options, grid)
     try:
         motion = as_motion(tables.path if tables.path is not None else table.get("scenario", "A"), table.get("alpha"),
                            tables.params.d_max, tables.params.v)
