@@ -16,8 +16,8 @@ quantity there: ``max_error`` (max ``|Δ|``), ``rms_error`` (root mean square) a
 
 Events found in the candidate by these rules (``nan`` where the candidate lacks what a rule needs):
 
-- **slip onset**: the first sample with ``sliding_fraction > 0``;
-- **full slip**: the first sample with ``sliding_fraction >= 1``, or without a sliding fraction, with
+- **slip onset**: the first sample with ``sliding_fraction > SLIDING_SHARE`` (:func:`sliding`);
+- **full slip**: the first sample with ``sliding_fraction >= 1 − SLIDING_SHARE`` (:func:`sliding`), or without a sliding fraction, with
   ``|F_x| >= (1 − FULL_SLIP_SHARE) τ0 A``;
 - **start of detachment**: the first sample after the largest contact area (or radius) at which it is
   smaller than that largest value;
@@ -30,7 +30,7 @@ Events found in the candidate by these rules (``nan`` where the candidate lacks 
 from __future__ import annotations
 
 import math
-from typing import Mapping
+from typing import Mapping, NamedTuple
 
 import numpy as np
 
@@ -40,7 +40,8 @@ from mdr_events.models.continuum import PathSolution, evaluate
 __all__ = ["in_contact", "exact_at", "compared_samples", "check_run_covers_the_contact", "contact_differs_share",
            "uncovered_share", "left_out_error", "corner_excess", "CONTINUOUS_EVENTS", "exact_range", "relative_norms",
            "candidate_events", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "CONTACT_MAKING_EVENTS", "events_not_shown",
-           "event_time_errors", "FULL_SLIP_SHARE", "COMPARED", "UNITS", "CONTACT_INDICATORS", "MIN_SAMPLES_IN_CONTACT",
+           "event_time_errors", "FULL_SLIP_SHARE", "SLIDING_SHARE", "Sliding", "sliding", "COMPARED", "UNITS",
+           "CONTACT_INDICATORS", "MIN_SAMPLES_IN_CONTACT",
            "GAP_FACTOR", "TIME_AXIS_SHARE"]
 
 
@@ -52,6 +53,12 @@ VALIDATED_EVENTS = ("first_contact", "slip_onset", "full_slip", "detachment_star
 CONTACT_MAKING_EVENTS = ("first_contact", "re_contact")
 #: A candidate without a sliding fraction is in full slip where ``|F_x|`` reaches this share below τ0 A.
 FULL_SLIP_SHARE = 1e-3
+#: A sample slides where its sliding fraction exceeds this share, and slides fully within it of 1. One spring of a
+#: discrete model is 1/N of the contact (N <= 1e7 springs by the default limits), so a slip zone it resolves shows;
+#: a zone the exact solution holds at round-off does not (under Coulomb's law the spring at the edge of a growing
+#: contact has a zero compression and cap, and a vertical indentation's zone is that one spring: 4e-16 of the
+#: contact, not a slip onset).
+SLIDING_SHARE = 1e-9
 #: Continuum events after which the first sample is left out (a corner cut, a contact made or lost).
 STRADDLED_EVENTS = ("corner", "tangential_reversal", "first_contact", "re_contact", "pull_off", "contact_ends")
 #: Of those, the events that end a contact.
@@ -236,6 +243,32 @@ def relative_norms(times, difference, exact, compared) -> tuple[float, float, fl
     return float(np.max(np.abs(d))) / spread, float(np.sqrt(np.mean(d**2))) / spread, l1 / spread
 
 
+class Sliding(NamedTuple):
+    """Where a run's samples slide (:func:`sliding`)."""
+
+    #: the sliding fraction beyond :data:`SLIDING_SHARE` (``nan``, out of contact: no)
+    partly: np.ndarray
+    #: the sliding fraction within :data:`SLIDING_SHARE` of 1
+    fully: np.ndarray
+
+
+def sliding(sliding_fraction: np.ndarray) -> Sliding:
+    """Where a run slides, and where it slides fully, by :data:`SLIDING_SHARE`.
+
+    Parameters
+    ----------
+    sliding_fraction : numpy.ndarray
+        The share of the springs in contact that slide, per sample (``nan`` out of contact).
+
+    Returns
+    -------
+    Sliding
+        Boolean arrays: the samples that slide, and those in full slip.
+    """
+    share = np.nan_to_num(sliding_fraction)
+    return Sliding(share > SLIDING_SHARE, share >= 1.0 - SLIDING_SHARE)
+
+
 def candidate_events(times, quantities, contact, params, full_slip_by_force: bool = True) -> dict[str, float]:
     """Times of the events by the module's rules (times as given; also ``pull_off_force`` and
     ``last_in_contact``, the index of the last sample in contact, -1 if none) (``nan`` where not found or not
@@ -247,10 +280,9 @@ def candidate_events(times, quantities, contact, params, full_slip_by_force: boo
     touching = np.flatnonzero(contact)
     if touching.size:
         out["first_contact"] = float(times[touching[0]])
-    sliding = quantities.get("sliding_fraction")
-    if sliding is not None:
-        onset = np.flatnonzero(np.nan_to_num(sliding) > 0)
-        full = np.flatnonzero(np.nan_to_num(sliding) >= 1)
+    fraction = quantities.get("sliding_fraction")
+    if fraction is not None:
+        onset, full = (np.flatnonzero(samples) for samples in sliding(fraction))
         out["slip_onset"] = float(times[onset[0]]) if onset.size else math.nan
         out["full_slip"] = float(times[full[0]]) if full.size else math.nan
     elif full_slip_by_force and "tangential_force" in quantities and ("contact_area" in quantities

@@ -18,7 +18,7 @@ from typing import Callable, NamedTuple, Sequence
 import numpy as np
 
 from mdr_events.analysis.fit import curves_of
-from mdr_events.analysis.validate import candidate_events
+from mdr_events.analysis.samples import candidate_events, sliding as sliding_samples
 from mdr_events.contact import Contact
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models import indenters
@@ -198,8 +198,8 @@ def discrete_quantities(model: ModelJob, path: Path, method: Discrete, limits: L
     start = path.first_contact_time()
     depth = run["indentation_depth"].values
     deepest = _deepest_time(path)
-    slides = np.nan_to_num(quantities["sliding_fraction"]) > 0
-    sliding = np.flatnonzero(slides & ~np.concatenate([[False], slides[:-1]]))  # onsets: sliding, not before
+    sliding_now = sliding_samples(quantities["sliding_fraction"]).partly
+    sliding = np.flatnonzero(sliding_now & ~np.concatenate([[False], sliding_now[:-1]]))  # onsets: sliding, not before
     path_times = times + start
     onset_in = sliding[path_times[sliding] <= deepest]
     onset_out = sliding[path_times[sliding] > deepest]

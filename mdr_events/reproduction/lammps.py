@@ -130,6 +130,7 @@ def _tangential_lines(study: LammpsStudy) -> list[str]:
     stiffness_spread = float(np.max(np.abs(ratios - 1.0)))
     same, differs = rescale_difference(study.report("hertz/material", "mindlin", "B 30°"),
                                        study.report("hertz/material", "mindlin_rescale", "B 30°"))
+    force_lines = _force_model_lines(study)
     return [
         f"- **No partial slip.** LAMMPS's tangential force is one spring for the whole contact, capped at μ F_crit: "
         f"in scenario B at 30° (Hertz + `mindlin`) it sticks until {b.first_at_cap:.0f} s and then lies on the cap "
@@ -151,6 +152,36 @@ def _tangential_lines(study: LammpsStudy) -> list[str]:
         f"- **`mindlin_rescale`** scales the history with a while the contact shrinks: along B at 30° (Hertz) its F_x "
         f"equals `mindlin`'s ({same * 1e3:.2f} mN apart at most) until the depth first falls and differs by up to {differs * 1e3:.2f} mN "
         "after; neither has the MDR's partial slip.",
+    ] + force_lines
+
+
+#: The paths whose contact grows before the sphere moves tangentially (in vertically first): there the force models'
+#: increments and mindlin's history see the same springs.
+GROWN_FIRST = ("B 30°", "fretting")
+
+
+def _force_model_lines(study: LammpsStudy) -> list[str]:
+    """``mindlin/force`` and ``mindlin_rescale/force`` (the force itself the history) against ``mindlin``."""
+    worst, count = 0.0, 0
+    for case, report in study.reports.items():
+        if case.tangential == "mindlin_rescale/force" and case.path in GROWN_FIRST:
+            mindlin = study.report(case.normal, "mindlin", case.path)
+            largest = float(np.max(np.abs(mindlin["candidate_tangential_force"].values)))
+            worst, count = max(worst, max(rescale_difference(mindlin, report)) / largest), count + 1
+    same, kept = rescale_difference(study.report("hertz/material", "mindlin", "B 30°"),
+                                    study.report("hertz/material", "mindlin/force", "B 30°"))
+    growing, _ = rescale_difference(study.report("jkr", "mindlin", "A 20°"), study.report("jkr", "mindlin/force", "A 20°"))
+    return [
+        "- **`mindlin/force` and `mindlin_rescale/force`** integrate the force itself, ΔF_x = 2aG*Δx. Scaled with a "
+        "while the contact shrinks, `mindlin_rescale/force` is `mindlin`'s history model F_x = 2aG*ξ written "
+        "incrementally (d(2aG*ξ) = 2aG* dξ + 2G*ξ da) wherever the contact has grown before the sphere moves "
+        f"sideways: it equals `mindlin` to {relative_difference_text(worst)} of its largest |F_x| in the {count} cases "
+        f"of B at 30° and the fretting loop. `mindlin/force` keeps its force as the contact shrinks: along B at 30° "
+        f"(Hertz) it equals `mindlin` ({same * 1e3:.2f} mN apart at most) until the depth first falls, and differs by "
+        f"up to {kept * 1e3:.2f} mN after. Where the contact grows while the sphere slides (JKR along A at 20°, below "
+        "the cap) both add the new springs without a shift, as the MDR's attach, where `mindlin` credits them with "
+        f"the whole history ξ: {growing * 1e3:.2f} mN apart before the depth first falls. None has the MDR's partial "
+        "slip.",
     ]
 
 

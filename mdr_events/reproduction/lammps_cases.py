@@ -29,7 +29,8 @@ from mdr_events.parameters import Parameters
 from mdr_events.reproduction.common import RADII
 
 __all__ = ["LAMMPS_STUDY", "LAMMPS_STEPS", "LAMMPS_MU", "LAMMPS_DGAMMA", "LAMMPS_RADIUS", "PATH_LABELS",
-           "LammpsCase", "CASES", "case_contact", "case_path", "run_case", "run_cases", "lammps_unavailable",
+           "LammpsCase", "CASES", "TANGENTIAL_MODELS_RUN", "case_contact", "case_path", "run_case", "run_cases",
+           "lammps_unavailable",
            "RUN_VARIABLES", "StepSum", "SumOf", "OneSample", "NormAccuracy"]
 
 #: The ``study`` attribute of the section's reports (it selects their accuracies).
@@ -71,12 +72,16 @@ class LammpsCase(NamedTuple):
         return "lammps_" + "_".join(part.replace("/", "-") for part in (self.normal, self.tangential, path))
 
 
+#: The tangential models run with Hertz and JKR: every one LAMMPS offers with a Coulomb cap (dmt: mindlin alone).
+TANGENTIAL_MODELS_RUN = ("mindlin", "linear_history", "mindlin_rescale", "mindlin/force", "mindlin_rescale/force")
+
+
 def _cases() -> tuple[LammpsCase, ...]:
     """The vertical path without friction for each normal model; along A, B and the fretting loop each tangential
-    model with Hertz (no adhesion) and JKR (adhesion), and DMT with mindlin."""
+    model of :data:`TANGENTIAL_MODELS_RUN` with Hertz (no adhesion) and JKR (adhesion), and DMT with mindlin."""
     cases = [LammpsCase(normal, "none", "vertical") for normal in ("hertz/material", "jkr", "dmt")]
-    for normal, tangentials in (("hertz/material", ("mindlin", "linear_history", "mindlin_rescale")),
-                                ("jkr", ("mindlin", "linear_history", "mindlin_rescale")), ("dmt", ("mindlin",))):
+    for normal, tangentials in (("hertz/material", TANGENTIAL_MODELS_RUN), ("jkr", TANGENTIAL_MODELS_RUN),
+                                ("dmt", ("mindlin",))):
         cases += [LammpsCase(normal, tangential, path) for tangential in tangentials for path in PATH_LABELS[1:]]
     return tuple(cases)
 

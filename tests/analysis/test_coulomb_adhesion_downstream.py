@@ -34,24 +34,21 @@ def fretting(paper):
                              (0.0, DEPTH)]), speed=1e-6)
 
 
-def _without_sliding(run):
-    """The run without its sliding fraction: with Coulomb's law and adhesion both methods count the tensile springs
-    (zero cap) as sliding, while the continuum logs the compressed zone's slip events, so validate's candidate rule
-    (onset at the first sliding sample) would meet the annulus at first contact; without it the events are not
-    compared and the histories are."""
-    return run.drop_vars("sliding_fraction")
-
-
 def test_an_adhesive_coulomb_simulator_converges_and_validates(paper, fretting):
     """The springs with Coulomb's law and the paper's adhesion at three spacings: convergence_study finds first order
-    in F_x and names the law; the finest run passes validate, and fails against the law without Coulomb's part."""
-    runs = {dx: _without_sliding(me.simulate(paper, fretting, dx=dx, dt=0.25 * dx / fretting.speed,
-                                             friction=COULOMB).isel(case=0)) for dx in (4e-6, 2e-6, 1e-6)}
+    in F_x and names the law; the finest run passes validate with every event compared (its sliding fraction counts
+    the tensile annulus, zero cap, as sliding, and so does the exact log: slip onset at first contact, full slip where
+    the path leaves the compressed zone at -2 µm), and fails against the law without Coulomb's part."""
+    runs = {dx: me.simulate(paper, fretting, dx=dx, dt=0.25 * dx / fretting.speed, friction=COULOMB).isel(case=0)
+            for dx in (4e-6, 2e-6, 1e-6)}
     study = me.convergence_study(runs, paper, fretting, friction=COULOMB)
     assert study.attrs["verdict"] == "converges" and study.attrs["friction_law"] == "coulomb"
     assert float(study["max_error_order"].sel(quantity="tangential_force")) > 0.8
     report = me.validate(runs[1e-6], paper, fretting, friction=COULOMB)
     assert report.attrs["verdict"] == "pass" and report.attrs["friction_mu"] == 0.3
+    assert report.attrs["events_not_compared"] == "none"
+    exact = dict(zip(report["event"].values, report["event_time_exact"].values))
+    assert exact["slip_onset"] == 0.0 and exact["full_slip"] > 0.0
     assert me.validate(runs[1e-6], paper, fretting).attrs["verdict"] == "fail"
 
 
@@ -63,7 +60,6 @@ def test_a_flat_punch_simulator_with_both_laws_validates(paper):
                                  (0.0, -2e-6), (0.0, DEPTH)]), speed=1e-6)
     for friction, other in ((COULOMB, COMBINED), (COMBINED, COULOMB)):
         run = me.simulate(paper, fretting, dx=2e-6, dt=0.5, profile=PUNCH, friction=friction).isel(case=0)
-        run = _without_sliding(run) if friction is COULOMB else run
         assert me.validate(run, paper, fretting, profile=PUNCH, friction=friction).attrs["verdict"] == "pass"
         assert me.validate(run, paper, fretting, profile=PUNCH, friction=other).attrs["verdict"] == "fail"
 

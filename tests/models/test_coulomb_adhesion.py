@@ -119,6 +119,50 @@ def test_the_discrete_model_converges_to_the_continuum_on_a_fretting_path_with_r
     _assert_first_order(spacings, differences, 1)
 
 
+#: Slip events as the sliding fraction shows them: the adhesion cases and Δγ0 = 0 (the contact grows without an annulus,
+#: which opens where the depth first falls below g(a)).
+EVENT_ADHESIONS = ADHESIONS + [(0.0, 0.15)]
+
+
+@pytest.mark.parametrize("adhesion", EVENT_ADHESIONS, ids=IDS + ["grows-without"])
+@pytest.mark.parametrize("path", ["A", "B", "vertical", "fretting"])
+def test_the_slip_events_are_those_the_sliding_fraction_shows(adhesion, path):
+    """The first slip onset and full slip of the log (the compressed zone's and the tensile annulus's, which slides at a
+    zero cap) are the first samples where the exact sliding fraction slides (partly, wholly: validate's rules) on a
+    grid of 50 001 samples, to one spacing; the instant of first contact (every spring in tension for that instant
+    only) is no full slip."""
+    from mdr_events.analysis.samples import sliding as sliding_samples
+    params = _params(*adhesion)
+    paths = {"A": me.Path.scenario_A(20.0, params), "B": me.Path.scenario_B(30.0, params),
+             "vertical": me.Path.scenario_A(90.0, params), "fretting": _fretting_path(params)}
+    solution = solve_path(params, paths[path], friction=COULOMB)
+    times = np.linspace(0.0, solution.end_time, 50001)
+    sliding = evaluate(solution, times)["sliding_fraction"]
+    spacing = times[1]
+    for kind, shown in zip((EventKind.SLIP_ONSET, EventKind.FULL_SLIP), sliding_samples(sliding)):
+        logged = [event.time for event in solution.events if event.kind is kind]
+        shown[0] = shown[0] and kind is EventKind.SLIP_ONSET  # (the instant of first contact)
+        assert bool(logged) == bool(np.any(shown)), (kind, logged)
+        if logged:
+            first = times[np.flatnonzero(shown)[0]]
+            assert logged[0] <= first <= logged[0] + spacing * (1 + 1e-9), (kind, logged[0], first)
+    if adhesion[0] > 0:  # the jump-in radius is all annulus: the contact slides from its first instant
+        assert solution.events[0].kind is EventKind.FIRST_CONTACT
+        assert any(e.kind is EventKind.SLIP_ONSET and e.time == 0.0 and e.direction == 0 for e in solution.events)
+
+
+def test_a_vertical_coulomb_indentation_without_adhesion_does_not_slide():
+    """Without adhesion and tangential motion nothing slides: the one spring at the growing edge (zero compression,
+    zero cap) is a zone of round-off in the exact sliding fraction (4e-16 of the contact), below SLIDING_SHARE."""
+    from mdr_events.analysis.samples import SLIDING_SHARE, sliding as sliding_samples
+    params = _params(0.0, 0.0)
+    path = me.Path.scenario_A(90.0, params)
+    solution = solve_path(params, path, friction=COULOMB)
+    sliding = evaluate(solution, np.linspace(0.0, solution.end_time, 20001))["sliding_fraction"]
+    assert np.nanmax(sliding) < SLIDING_SHARE and not np.any(sliding_samples(sliding).partly)
+    assert not [event for event in solution.events if event.kind is EventKind.SLIP_ONSET]
+
+
 @pytest.mark.parametrize("call, words", [
     (lambda: me.simulate(me.Parameters.paper(), "A", alpha=[20.0], method="continuum",
                          friction=FrictionLaw("tau0+coulomb", mu=0.3)),

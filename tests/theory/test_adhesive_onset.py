@@ -25,11 +25,14 @@ ADHESIONS = [(0.01, 0.15), (0.15, 0.01)]
 
 
 def _onset(params, alpha, friction, profile):
-    """The depth of the continuum's first SLIP_ONSET along scenario A while indenting (+inf: none before d_max)."""
+    """The depth of the continuum's first SLIP_ONSET at a cap (direction ±1) along scenario A while indenting (+inf:
+    none before d_max); under Coulomb's law alone the tensile annulus slides from first contact at a zero cap
+    (direction 0: models.continuum.compressed), which is no onset of friction."""
     path = me.Path.scenario_A(alpha, params, profile=profile)
     solution = solve_path(params, path, profile=profile, friction=friction)
     deepest = path.corner_times[1] - path.first_contact_time()  # the end of the indentation
-    onsets = [event.depth for event in solution.events if event.kind is EventKind.SLIP_ONSET and event.time <= deepest]
+    onsets = [event.depth for event in solution.events if event.kind is EventKind.SLIP_ONSET and event.direction
+              and event.time <= deepest]
     return onsets[0] if onsets else math.inf
 
 

@@ -18,8 +18,13 @@ module                     one idea
 :mod:`.plan`               :func:`plan_span`: the span's regime and end in closed form
 :mod:`.span`               :class:`SpanIntegrator` (right-hand side, event functions), ``integrate_span``
 :mod:`.solve`              :func:`solve_path`: plan → integrate → transition → log
+:mod:`.compressed`         Coulomb's law alone with adhesion: the compressed zone's run beside the contact, and the
+                           contact's slip events (the zone's and the tensile annulus's)
 :mod:`.solution`           :class:`PathSolution` (spans and interpolants), ``evaluate``, ``extremum``,
                            ``tangential_work``
+:mod:`.extrema`            the exact extrema of ``F_N``, ``F_x`` and ``A`` over the run, not from output samples
+:mod:`.stationary`         where one span's quantity is stationary: the roots of its derivative (dense output,
+                           the branch's closed forms)
 =========================  ===================================================================
 
 On each straight path segment ``d(t)`` and ``x(t)`` are linear. The contact radius ``a(t)`` is

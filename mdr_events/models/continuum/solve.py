@@ -19,9 +19,10 @@ from mdr_events.models.indenters import SimulatedProfile, check_reach, check_sim
 from mdr_events.contact.adhesion import AdhesionLaw
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from .anchors import AnchorMap, Piece
+from .compressed import attach_compressed_zone
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
 from .plan import Action, SpanPlan, plan_span
-from .solution import PathSolution, contact_radii, evaluate
+from .solution import PathSolution, evaluate
 from .span import Span, SpanOutcome, Trigger, integrate_span
 from .state import CONTACT_ENDING, NO_ZONE, Cap, ContactState, Event, EventKind, Regime, Slip, zone_events
 from .tolerances import MAX_RESTARTS, Tolerances
@@ -75,26 +76,6 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
         attach_compressed_zone(solution, solve_path(model.zone_params, path, tolerances, limits, profile,
                                                     model.friction))
     return solution
-
-
-#: What the compressed zone's run logs of its slip (the adhesive contact's own run logs its radius and contact).
-SLIP_KINDS = frozenset({EventKind.SLIP_ONSET, EventKind.FULL_SLIP, EventKind.FRONT_AT_CENTRE, EventKind.FRONT_AT_EDGE,
-                        EventKind.RE_STICK})
-
-
-def attach_compressed_zone(solution: PathSolution, zone: PathSolution) -> None:
-    """Give the adhesive contact's ``solution`` (its springs without shift) the tangential force of ``zone``, the run of
-    its compressed zone (:func:`~.caps.compressed_zone_alone`, the same path without adhesion), and the zone's slip
-    events in its log, with the contact's radius; the contact's own slip events (its springs all slide at a zero cap)
-    are dropped. At equal times the contact's events come first, an ending last."""
-    solution.compressed = zone
-    slips = [event for event in zone.events if event.kind in SLIP_KINDS]
-    if slips:
-        radii = contact_radii(solution, np.array([event.time for event in slips]))
-        slips = [event._replace(radius=float(radius)) for event, radius in zip(slips, radii)]
-    kept = [event for event in solution.events if event.kind not in SLIP_KINDS]
-    ending = CONTACT_ENDING | {EventKind.PATH_END}
-    solution.events = sorted(kept + slips, key=lambda event: (event.time, event.kind in ending))
 
 
 class RestartGuard:

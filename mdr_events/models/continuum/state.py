@@ -118,7 +118,8 @@ class Event(NamedTuple):
     radius: float  #: contact radius a (m)
     x: float       #: tangential position of the indenter (m)
     #: +1 / -1: the cap of a slip event (+1: shift u = +ū, the springs dragged towards +x; -1: u = -ū), or
-    #: the new direction of motion of a tangential reversal; 0 for events without a direction
+    #: the new direction of motion of a tangential reversal; 0 for events without a direction and for the slip events
+    #: of the tensile annulus under Coulomb's law alone (a zero cap has no side: :mod:`.compressed`)
     direction: int = 0
 
 
