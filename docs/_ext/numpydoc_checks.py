@@ -9,6 +9,7 @@ numpydoc, which validates each of these objects during ``make docs`` (warnings, 
 
 from __future__ import annotations
 
+import enum
 import importlib
 import inspect
 import re
@@ -60,9 +61,28 @@ INTERNAL_PATTERNS = {r"^mdr_events\.(?!(" + "|".join(name.removeprefix("mdr_even
                      r"\.[A-Z][A-Z0-9_]+$"}   # constants (FRICTION_LAWS, ...): data, no signature to check
 
 
+#: The checks of an Enum's parameters that are left out: an Enum's signature is the Enum machinery's
+#: (``value, names, module, qualname, type, start, boundary``), not its own; a member is looked up as
+#: ``Verdict("pass")`` and each member is documented by its ``#:`` comment or the class's docstring.
+ENUM_SKIPPED = {"PR01", "PR02", "PR03", "PR04", "PR05", "PR06", "PR10"}
+
+
+def _is_enum(where: str) -> bool:
+    """Whether the object numpydoc imports as ``where`` is an Enum class."""
+    module_name, _, name = where.rpartition(".")
+    try:
+        obj = getattr(importlib.import_module(module_name), name)
+    except (ImportError, AttributeError):
+        return False
+    return isinstance(obj, type) and issubclass(obj, enum.Enum)
+
+
 def public_exclude() -> set[str]:
-    """numpydoc's ``numpydoc_validation_exclude``: the internals and each known failure, by its exact name."""
-    return INTERNAL_PATTERNS | {"^" + re.escape(name) + "$" for name in known_failures()}
+    """numpydoc's ``numpydoc_validation_exclude``: the internals, each known failure and each Enum class (whose
+    signature is the Enum machinery's: :data:`ENUM_SKIPPED`; :func:`failures` checks the rest of theirs), by exact
+    name."""
+    enums = {public for public, where in public_objects().items() if _is_enum(where)}
+    return INTERNAL_PATTERNS | {"^" + re.escape(name) + "$" for name in known_failures() | enums}
 
 
 def _members(cls: type) -> list[str]:
@@ -110,7 +130,9 @@ def failures(checks=NUMPYDOC_CHECKS) -> dict[str, list[str]]:
 
     found = {}
     for public, where in public_objects().items():
-        errors = [f"{code}: {message}" for code, message in validate(where)["errors"] if code in checks]
+        skipped = ENUM_SKIPPED if _is_enum(where) else set()
+        errors = [f"{code}: {message}" for code, message in validate(where)["errors"]
+                  if code in checks and code not in skipped]
         if errors:
             found[public] = errors
     return found
