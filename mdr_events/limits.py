@@ -36,6 +36,8 @@ class ResourceLimitError(ValueError):
 class Limits:
     """What one run may use; the defaults keep it under about a minute and 2 GiB here.
 
+    ``float("inf")`` switches a limit off.
+
     Parameters
     ----------
     memory : float, default 2 GiB
@@ -50,8 +52,6 @@ class Limits:
         Waypoints of one path for the continuum method: default 2000. Each growth segment adds a piece
         to the anchor map that every later span's zone layout reads (at a remembered cost per piece):
         2000 waypoints of a monotone path take about 8 s here, 1000 about 3 s.
-
-    ``float("inf")`` switches a limit off.
 
     Raises
     ------

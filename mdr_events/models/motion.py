@@ -289,15 +289,15 @@ class Scenario:
 class Paths:
     """Custom paths, one case each, labelled along ``case``.
 
+    The depth and speed the run's checks measure against and its result names (``param_d_max``, ``param_v``) are
+    the paths' own: :attr:`d_max` their deepest point, :attr:`v` the slowest speed.
+
     Parameters
     ----------
     paths : Path, sequence of Path or mapping of str to Path
         A path, a non-empty list of them (labelled ``"path 1"``, ``"path 2"``, ...) or a mapping
         ``{label: Path}`` (its keys, non-empty strings, the labels); the paths may have different speeds. Kept as
         the mapping.
-
-    The depth and speed the run's checks measure against and its result names (``param_d_max``, ``param_v``) are
-    the paths' own: :attr:`d_max` their deepest point, :attr:`v` the slowest speed.
 
     Raises
     ------
