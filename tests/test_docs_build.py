@@ -59,7 +59,9 @@ def test_the_site_has_its_front_page_and_an_api_page(site):
     assert (site / "index.html").is_file()
     assert (site / API_PAGE).is_file()
     generated = {path.stem for path in (site / "api" / "generated").glob("mdr_events.*.html")}
-    assert {"mdr_events.simulate", "mdr_events.Contact", "mdr_events.theory.power_law.d_crit_A"} <= generated
+    assert {"mdr_events.simulate", "mdr_events.Contact", "mdr_events.theory.power_law"} <= generated
+    module = (site / "api" / "generated" / "mdr_events.theory.power_law.html").read_text(encoding="utf-8")
+    assert 'id="mdr_events.theory.power_law.d_crit_A"' in module
 
 
 def test_the_front_page_shows_its_figure(site):
