@@ -127,7 +127,8 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     times : numpy.ndarray
         Times within the span (s from first contact).
     sliding : bool, default True
-        Whether to evaluate the sliding fraction (the slip front of the anchor map; ``nan`` without).
+        Whether to evaluate the sliding fraction (the slip fronts of the span's anchor map); without it a span in
+        contact leaves ``sliding_fraction`` out.
     zone : dict of str to numpy.ndarray, optional
         The compressed zone's run evaluated at ``times`` (Coulomb's law alone with adhesion).
     radii : numpy.ndarray, optional
@@ -136,7 +137,7 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     Returns
     -------
     dict of str to numpy.ndarray
-        Each of :data:`EVALUATED_QUANTITIES` at ``times`` (SI units).
+        The quantities of :data:`EVALUATED_QUANTITIES` at ``times`` (SI units; ``sliding_fraction`` as above).
     """
     model = solution.model
     span = solution.spans[index]
