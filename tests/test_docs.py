@@ -54,25 +54,30 @@ def test_the_functions_of_the_paper_s_equations_typeset_them():
     """Each of the paper's equations (3)-(21) that a function evaluates is typeset (``:math:`` or ``.. math::``)
     with its number in that function's docstring."""
     from mdr_events.contact import friction
+    from mdr_events.models import discrete
     from mdr_events.models.continuum import anchors, branch, model
     from mdr_events.models.paths import Path
-    from mdr_events.theory import analytic, mindlin, power_law, symbolic, tabulated
+    from mdr_events.theory import analytic, mindlin, phase, power_law, symbolic, tabulated
 
     typeset = {
         "(3)": [symbolic.abel_transform, power_law.equivalent_profile, tabulated.equivalent_profile],
-        "(8)": [power_law.hess_prefactor],
+        "(4)": [discrete.paraboloid_profile],
+        "(5)": [discrete.run_discrete],
+        "(6)": [discrete.run_discrete],
+        "(7)": [discrete.run_discrete],
+        "(8)": [power_law.hess_prefactor, discrete.hysteresis_thresholds],
         "(9)": [analytic.jkr_depth, power_law.branch_depth, tabulated.contact_radius, branch.Branch],
         "(10)": [analytic.jkr_normal_force, analytic.normal_force, power_law.normal_force, tabulated.normal_force,
                  model.ContinuumModel.normal_force],
-        "(13)": [analytic.critical_shift, friction.FrictionLaw],
+        "(13)": [analytic.critical_shift, friction.FrictionLaw, discrete.run_discrete],
         "(14)": [Path.scenario_A],
-        "(15)": [anchors.AnchorMap.tangential_force],
+        "(15)": [anchors.AnchorMap.tangential_force, discrete.run_discrete],
         "(16)": [analytic.hertz_contact_radius],
-        "(17)": [power_law.d_crit_A, mindlin.d_crit_A, tabulated.d_crit_A],
-        "(18)": [power_law.critical_angle_A, tabulated.critical_angle_A],
+        "(17)": [power_law.d_crit_A, mindlin.d_crit_A, tabulated.d_crit_A, phase.phase_diagram],
+        "(18)": [power_law.critical_angle_A, tabulated.critical_angle_A, phase.phase_diagram],
         "(19)": [Path.scenario_B],
-        "(20)": [power_law.d_crit_B, mindlin.d_crit_B, mindlin.d_crit_B_indentation],
-        "(21)": [power_law.critical_angle_B, power_law.d_crit_B_indentation],
+        "(20)": [power_law.d_crit_B, mindlin.d_crit_B, mindlin.d_crit_B_indentation, phase.phase_diagram],
+        "(21)": [power_law.critical_angle_B, power_law.d_crit_B_indentation, phase.phase_diagram],
     }
     missing = []
     for number, functions in typeset.items():
