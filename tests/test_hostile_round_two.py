@@ -280,10 +280,12 @@ def test_a_given_noise_below_the_data_s_scatter_is_not_taken_for_late_contact():
 
 
 def test_every_file_the_readme_names_exists():
-    """The README named mdr_events/study.py (it is app/study.py)."""
+    """The README named mdr_events/study.py (it is app/study.py); the README and the documentation pages its
+    sections moved to (docs/*.md) name files that exist."""
     root = Path(__file__).resolve().parents[1]
     import re
-    named = set(re.findall(r"`(mdr_events/[\w/]+\.py)`", (root / "README.md").read_text()))
+    pages = [root / "README.md", *sorted((root / "docs").glob("*.md"))]
+    named = {path for page in pages for path in re.findall(r"`(mdr_events/[\w/]+\.py)`", page.read_text())}
     assert named and all((root / path).is_file() for path in named), sorted(p for p in named if not (root / p).is_file())
 
 

@@ -19,7 +19,7 @@ def _unit(table: str, key: str) -> str:
 
 def schema_lines() -> list[str]:
     """The reStructuredText of one list-table per study table."""
-    from mdr_events.app.study_format import _KINDS, REQUIRED_TABLES, SCHEMA
+    from mdr_events.app.study_format import _KINDS, KEY_NOTES, REQUIRED_TABLES, SCHEMA
 
     lines = []
     for table, keys in SCHEMA.items():
@@ -28,7 +28,10 @@ def schema_lines() -> list[str]:
                   "   :widths: 18 12 50 20", "", "   * - key", "     - required", "     - allowed value",
                   "     - unit"]
         for key, (kind, required) in keys.items():
-            allowed = _KINDS[kind][1].replace("*", r"\*").replace("`", "'")
+            allowed = _KINDS[kind][1]
+            if (table, key) in KEY_NOTES:
+                allowed += f": {KEY_NOTES[table, key]}"
+            allowed = allowed.replace("*", r"\*").replace("`", "'")
             unit = _unit(table, key)
             lines += [f"   * - ``{key}``", f"     - {'yes' if required else 'no'}", f"     - {allowed}",
                       f"     - {unit or ''}"]

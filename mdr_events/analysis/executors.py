@@ -186,17 +186,24 @@ def open_executor(scheduler=None, workers: int | None = None) -> Iterator[concur
 class Engine:
     """Where a sweep's runs are carried out, in chunks, and who hears of their progress.
 
-    Attributes
+    Parameters
     ----------
     scheduler : "serial", "local", str, distributed.Client or concurrent.futures.Executor, optional
         Where the chunks run (the module's table; default: the active dask client if there is one, else
         ``"local"`` where ``distributed`` is installed, else ``"serial"``).
     workers : int, optional
         With ``"local"``: the cluster's processes (default the machine's cores; at most that many).
-    chunk_size : int
+    chunk_size : int, default 50
         Runs per task (and per Zarr chunk of a store).
     progress : callable, optional
         Called with (runs done, runs in all) after each chunk.
+
+    Raises
+    ------
+    TypeError
+        A ``progress`` that is not callable.
+    ValueError
+        An unknown scheduler, ``workers`` not with ``"local"`` or not a count >= 1, ``chunk_size`` < 1.
     """
 
     scheduler: Any = None
@@ -214,5 +221,11 @@ class Engine:
                             "allowed: None or a function called with (runs done, runs in all)")
 
     def open(self):
-        """The executor of :attr:`scheduler` (:func:`open_executor`), a context manager."""
+        """The executor of :attr:`scheduler` (:func:`open_executor`), a context manager.
+
+        Returns
+        -------
+        contextlib.AbstractContextManager of concurrent.futures.Executor
+            Entered, it yields the executor; what it opened (a local cluster, a client) is closed on leaving.
+        """
         return open_executor(self.scheduler, self.workers)

@@ -92,7 +92,7 @@ class OptimizerRun(NamedTuple):
 class FitResult:
     """What :func:`fit` found: the labelled dataset (:attr:`dataset`, everything) and its main readings.
 
-    Attributes
+    Parameters
     ----------
     dataset : xarray.Dataset
         Along ``parameter``: ``estimate``, ``start``, ``standard_error``, ``lower_95``, ``upper_95``,
@@ -105,8 +105,10 @@ class FitResult:
         (``optimizer_tolerance``, ``jacobian_step``, ``continuum_rtol``: :mod:`mdr_events.analysis.fit_accuracy`).
     parameters : Parameters
         The start with the fitted values in place.
-    time_offset, depth_offset : float
-        The fitted offsets (0 where not free).
+    time_offset : float
+        The fitted offset of the measurement's clock (s; 0 where not free).
+    depth_offset : float
+        The fitted offset of the measured depth (m; 0 where not free).
     optimizer : OptimizerRun or None
         The optimizer's log: solves, evaluations, status and message (``None`` for a result read from a file).
     """
@@ -130,10 +132,13 @@ class FitResult:
 
     @property
     def correlation(self) -> np.ndarray:
+        """The correlation matrix of the free parameters' estimates (scaled parameters), ``parameter`` ×
+        ``parameter_2``."""
         return self.dataset["correlation"].values
 
     @property
     def condition_number(self) -> float:
+        """The condition number of the weighted Jacobian at the optimum (scaled parameters)."""
         return float(self.dataset["condition_number"])
 
     @property
@@ -143,6 +148,8 @@ class FitResult:
 
     @property
     def verdict(self) -> str:
+        """The verdict in words: whether every free parameter is determined (naming the others) and whether the fit
+        describes the data (the dataset's attribute ``verdict``)."""
         return str(self.dataset.attrs["verdict"])
 
     @property
@@ -160,7 +167,23 @@ class FitResult:
     def from_dataset(cls, dataset: xr.Dataset) -> "FitResult":
         """The result of a fit's dataset (e.g. a file read by :func:`~mdr_events.open_result`; those written before
         the lists of notes and warnings too): its parameters from the attributes, the fitted offsets from the
-        estimates (0 where not free); :attr:`optimizer` is ``None`` (its log is in no dataset)."""
+        estimates (0 where not free); :attr:`optimizer` is ``None`` (its log is in no dataset).
+
+        Parameters
+        ----------
+        dataset : xarray.Dataset
+            A fit's dataset (attribute ``content`` a fit's).
+
+        Returns
+        -------
+        FitResult
+            The result, its :attr:`optimizer` ``None``.
+
+        Raises
+        ------
+        ValueError
+            A dataset of another kind of result.
+        """
         check_content(dataset, FIT_CONTENT, "fit")
         names = [str(name) for name in dataset["parameter"].values]
         offset = {name: float(dataset["estimate"].sel(parameter=name)) if name in names else 0.0
@@ -168,6 +191,13 @@ class FitResult:
         return cls(dataset, Parameters.from_attrs(dataset.attrs), offset["time_offset"], offset["depth_offset"], None)
 
     def to_dataset(self) -> xr.Dataset:
+        """The labelled dataset (:attr:`dataset`), what :func:`~mdr_events.write_netcdf` writes.
+
+        Returns
+        -------
+        xarray.Dataset
+            The dataset itself, not a copy.
+        """
         return self.dataset
 
     def __repr__(self) -> str:
@@ -190,7 +220,18 @@ class FitResult:
                              if name.startswith(("measured_", "fitted_"))]]
 
     def plot(self, title: str | None = None):
-        """Data, fit and residuals (:func:`mdr_events.plotting.fit.plot_fit`); returns the figure."""
+        """Data, fit and residuals (:func:`mdr_events.plotting.fit.plot_fit`).
+
+        Parameters
+        ----------
+        title : str, optional
+            The figure's title; default: the verdict. The estimates with their 95 % intervals are listed below it.
+
+        Returns
+        -------
+        matplotlib.figure.Figure
+            Measured and fitted curves against time (top), the residuals with the ±2σ noise band (below).
+        """
         return figure_of(self.dataset)(self.dataset, title=title)
 
 

@@ -131,10 +131,16 @@ class _Report:
 class ValidationReport(_Report):
     """A validation (:func:`~mdr_events.validate`): its dataset and what it concludes.
 
-    Attributes
+    Parameters
     ----------
     dataset : xarray.Dataset
-        Everything: the samples side by side, the norms, the events, the attributes.
+        Everything: the samples side by side, the norms, the events, the attributes (``content`` must be a
+        validation's).
+
+    Raises
+    ------
+    ValueError
+        A dataset of another kind of result.
     """
 
     CONTENT: ClassVar[str] = VALIDATION_CONTENT
@@ -142,14 +148,17 @@ class ValidationReport(_Report):
 
     @property
     def verdict(self) -> Verdict:
+        """The verdict, :attr:`Verdict.PASS` or :attr:`Verdict.FAIL` (the dataset's attribute ``verdict``)."""
         return Verdict(str(self.dataset.attrs["verdict"]))
 
     @property
     def passed(self) -> bool:
+        """Whether the verdict is :attr:`Verdict.PASS`."""
         return self.verdict is Verdict.PASS
 
     @property
     def tolerance(self) -> float:
+        """The tolerance the errors were held to (a share of each quantity's range; attribute ``tolerance``)."""
         return float(self.dataset.attrs["tolerance"])
 
     @property
@@ -171,10 +180,16 @@ class ValidationReport(_Report):
 class ConvergenceReport(_Report):
     """A convergence study (:func:`~mdr_events.convergence_study`): its dataset and its verdict.
 
-    Attributes
+    Parameters
     ----------
     dataset : xarray.Dataset
-        Everything: per spacing the norms, the observed orders, the event errors.
+        Everything: per spacing the norms, the observed orders, the event errors (``content`` must be a
+        convergence study's).
+
+    Raises
+    ------
+    ValueError
+        A dataset of another kind of result.
     """
 
     CONTENT: ClassVar[str] = CONVERGENCE_STUDY_CONTENT
@@ -182,8 +197,10 @@ class ConvergenceReport(_Report):
 
     @property
     def verdict(self) -> ConvergenceVerdict:
+        """The verdict: converges, does not converge, or undetermined (the dataset's attribute ``verdict``)."""
         return ConvergenceVerdict(str(self.dataset.attrs["verdict"]))
 
     @property
     def expected_order(self) -> float:
+        """The order of convergence the simulator's method should show (attribute ``expected_order``)."""
         return float(self.dataset.attrs["expected_order"])

@@ -66,7 +66,7 @@ ANGLE_ALLOWED = "an angle in (0, 90] degrees whose tangent is a number"
 class SweepOutput:
     """What a sweep keeps of each run, and where it writes as it goes.
 
-    Attributes
+    Parameters
     ----------
     quantities : sequence of str, optional
         Which of :data:`QUANTITIES` (default all); only closed-form ones (:data:`CLOSED_FORM_QUANTITIES`) run no
@@ -78,8 +78,15 @@ class SweepOutput:
     store : path, optional
         A Zarr directory written chunk by chunk as runs complete; with ``resume`` (default) a store of this same
         sweep is continued: its done chunks are read, not run again.
-    resume : bool
+    resume : bool, default True
         Continue a store of this sweep (``False``: start it afresh).
+
+    Raises
+    ------
+    TypeError
+        ``quantities`` given as one string.
+    ValueError
+        An unknown or repeated quantity, none, or ``history_samples`` < 2.
     """
 
     quantities: tuple[str, ...] | None = None

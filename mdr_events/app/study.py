@@ -54,9 +54,17 @@ A study names its parameters, what to compute and where to write it::
     [limits]                     # optional: the resource limits (mdr_events.Limits), as --limit
     steps = 1e8                  # memory = "8GiB", springs, samples, waypoints; inf: no limit
 
-    [profile]                    # optional: a power-law indenter f = c r^n (n >= 1) for every table, as
-    c = 2000.0                   # --power-law C N; without it the paraboloid of R
-    n = 3.0
+    [profile]                    # optional: the indenter of every table, one of three kinds (without
+    c = 2000.0                   # it: the paraboloid of [parameters] R):
+    n = 3.0                      #   c and n: the power law f = c r^n, n >= 1 (1: the cone), as --power-law C N
+                                 #   radius = 1e-4: the flat punch of that radius (m), as --flat-punch
+                                 #   table = "tip.csv": a tabulated f(r), a CSV file with the columns r and f
+                                 #   (m), relative to the study file, as --table FILE
+
+    [friction]                   # optional: the friction law of every table (without it: "tau0")
+    law = "tau0+coulomb"         # "tau0" (the paper's cap (13), tau0 of [parameters]), "coulomb"
+    mu = 0.3                     # (mu required, tau0 unused) or "tau0+coulomb" (both); mu only with
+                                 # a law with Coulomb's part, as --friction LAW --mu MU
 
     [output]                     # required
     directory = "out"            # relative to the study file; checked before anything is computed

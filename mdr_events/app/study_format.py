@@ -86,6 +86,20 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
     "output": {"directory": ("string", True), "name": ("string", False)},
 }
 REQUIRED_TABLES = ("output",)
+#: What the keys of the tables that choose among kinds mean (the reference page shows them beside the kinds):
+#: ``[profile]`` takes one of three indenters (``c`` and ``n``, ``radius`` or ``table``; without it the paraboloid
+#: of ``[parameters] R``), ``[friction]`` one of the laws of :data:`~mdr_events.contact.friction.FRICTION_LAWS`.
+KEY_NOTES: dict[tuple[str, str], str] = {
+    ("profile", "c"): "with n: the power law f = c r^n (c in m^(1-n))",
+    ("profile", "n"): "with c: the power law's exponent, >= 1 (1: the cone, 2: a paraboloid)",
+    ("profile", "radius"): "alone: the flat punch of this radius (m)",
+    ("profile", "table"): "alone: a tabulated profile f(r), a CSV file with the columns r and f (m), relative to "
+                          "the study file",
+    ("friction", "law"): "'tau0' (the paper's cap (13), tau0 of [parameters]), 'coulomb' (needs mu; tau0 unused) "
+                         "or 'tau0+coulomb' (both)",
+    ("friction", "mu"): "the coefficient of friction, >= 0: required by 'coulomb' and 'tau0+coulomb', not allowed "
+                        "with 'tau0'",
+}
 
 
 def check_table(table: str, content: Any, where: str) -> None:

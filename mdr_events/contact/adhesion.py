@@ -25,12 +25,17 @@ __all__ = ["Adhesion", "NO_ADHESION", "AdhesionLaw", "law_of", "kernel_of"]
 class Adhesion:
     """The paper's rate-independent adhesion: Heß's rule (8) with ``Δγ0`` in and ``Δγ1`` out (J/m², finite, >= 0).
 
-    Attributes
+    Parameters
     ----------
-    dgamma0 : float
-        Work of adhesion of springs attaching while the indenter goes in.
-    dgamma1 : float
-        Work of adhesion of the detachment criterion while it comes out.
+    dgamma0 : float, default 0.0
+        Work of adhesion ``Δγ0`` (J/m²) of springs attaching while the indenter goes in.
+    dgamma1 : float, default 0.0
+        Work of adhesion ``Δγ1`` (J/m²) of the detachment criterion while it comes out.
+
+    Raises
+    ------
+    ValueError
+        A work of adhesion that is negative, infinite or NaN.
     """
 
     dgamma0: float = 0.0
@@ -52,13 +57,30 @@ class Adhesion:
         return self.dgamma0 > 0.0 or self.dgamma1 > 0.0
 
     def to_attrs(self) -> dict[str, Any]:
-        """A result's attributes: ``param_dgamma0``, ``param_dgamma1`` and their units."""
+        """A result's attributes: ``param_dgamma0``, ``param_dgamma1`` and their units.
+
+        Returns
+        -------
+        dict of str to object
+            ``param_dgamma0``, ``param_dgamma1`` (J/m²) and ``param_dgamma0_units``, ``param_dgamma1_units``.
+        """
         return {"param_dgamma0": self.dgamma0, "param_dgamma0_units": "J m-2",
                 "param_dgamma1": self.dgamma1, "param_dgamma1_units": "J m-2"}
 
     @classmethod
     def from_attrs(cls, attrs: Mapping[str, Any]) -> "Adhesion":
-        """The adhesion a result was computed with (:meth:`to_attrs`)."""
+        """The adhesion a result was computed with (:meth:`to_attrs`).
+
+        Parameters
+        ----------
+        attrs : mapping of str to object
+            A result's attributes holding ``param_dgamma0`` and ``param_dgamma1``.
+
+        Returns
+        -------
+        Adhesion
+            The law of those two works of adhesion.
+        """
         return cls(float(attrs["param_dgamma0"]), float(attrs["param_dgamma1"]))
 
 

@@ -15,12 +15,17 @@ __all__ = ["Elastomer"]
 class Elastomer:
     """A linear-elastic half-space (SI units).
 
-    Attributes
+    Parameters
     ----------
     E : float
         Young's modulus in Pa, finite and > 0.
     nu : float
         Poisson's ratio, in (-1, 0.5] (0.5: incompressible, as the paper's elastomer).
+
+    Raises
+    ------
+    ValueError
+        ``E`` or ``nu`` outside its range, infinite or NaN.
 
     Notes
     -----
@@ -54,11 +59,28 @@ class Elastomer:
         return effective_tangential_modulus(self.E, self.nu)
 
     def to_attrs(self) -> dict[str, Any]:
-        """A result's attributes: ``param_E``, ``param_nu`` with their units, and ``param_E_star``, ``param_G_star``."""
+        """A result's attributes: ``param_E``, ``param_nu`` with their units, and ``param_E_star``, ``param_G_star``.
+
+        Returns
+        -------
+        dict of str to object
+            The moduli in Pa and Poisson's ratio, with ``param_E_units`` and ``param_nu_units``.
+        """
         return {"param_E": self.E, "param_E_units": "Pa", "param_nu": self.nu, "param_nu_units": "1",
                 "param_E_star": self.E_star, "param_G_star": self.G_star}
 
     @classmethod
     def from_attrs(cls, attrs: Mapping[str, Any]) -> "Elastomer":
-        """The elastomer a result was computed for (:meth:`to_attrs`)."""
+        """The elastomer a result was computed for (:meth:`to_attrs`).
+
+        Parameters
+        ----------
+        attrs : mapping of str to object
+            A result's attributes holding ``param_E`` and ``param_nu`` (the effective moduli are recomputed).
+
+        Returns
+        -------
+        Elastomer
+            The half-space of that modulus and Poisson's ratio.
+        """
         return cls(float(attrs["param_E"]), float(attrs["param_nu"]))

@@ -35,19 +35,35 @@ FRICTION_LAWS: dict[str, tuple[bool, bool]] = {
 
 @dataclass(frozen=True, repr=False)
 class FrictionLaw:
-    """A friction law by name (:data:`FRICTION_LAWS`) and its coefficient of friction.
+    r"""A friction law by name (:data:`FRICTION_LAWS`) and its coefficient of friction.
 
-    Attributes
+    Parameters
     ----------
-    law : str
+    law : {"tau0", "coulomb", "tau0+coulomb"}, default "tau0"
         ``"tau0"`` (the paper's cap (13)), ``"coulomb"`` or ``"tau0+coulomb"`` (module docstring).
-    mu : float or None
+    mu : float or None, optional
         The coefficient of friction ``μ`` (finite, >= 0): required by the laws with Coulomb's part, not
         allowed with ``"tau0"`` (it would be silently unused).
-    tau0 : float or None
+    tau0 : float or None, optional
         The critical mean shear stress ``τ0`` in Pa (finite, >= 0) of the laws with its part, not allowed with
         ``"coulomb"``. A :class:`~mdr_events.Contact` needs it; ``None``: ``Parameters.tau0`` (the keyword
         form ``friction=`` beside :class:`~mdr_events.Parameters`).
+
+    Raises
+    ------
+    ValueError
+        An unknown ``law``; ``mu`` missing for a law with Coulomb's part or given to ``"tau0"``; ``tau0`` given to
+        ``"coulomb"``; a negative, infinite or NaN coefficient.
+
+    Notes
+    -----
+    The caps on a spring's shift, with :math:`w = d - g(\xi)` its compression:
+
+    .. math::
+
+        \bar u_{\tau_0} = \frac{\pi a \tau_0}{2 G^*} \quad (13), \qquad
+        \bar u_{\mathrm{coulomb}} = \mu \frac{E^*}{G^*} \max(w, 0), \qquad
+        \bar u_{\tau_0 + \mathrm{coulomb}} = \bar u_{\tau_0} + \bar u_{\mathrm{coulomb}}.
     """
 
     law: str = "tau0"
@@ -103,7 +119,13 @@ class FrictionLaw:
 
     def to_attrs(self) -> dict[str, object]:
         """A result's attributes: ``param_tau0`` and its unit where the law uses ``τ0``; for another law than the
-        paper's also ``friction_law``, ``friction_mu`` and ``friction_cap`` (the cap in words)."""
+        paper's also ``friction_law``, ``friction_mu`` and ``friction_cap`` (the cap in words).
+
+        Returns
+        -------
+        dict of str to object
+            Empty for the paper's law without its ``τ0`` given.
+        """
         attrs: dict[str, object] = {} if self.tau0 is None else {"param_tau0": self.tau0, "param_tau0_units": "Pa"}
         if not self.is_default:
             attrs.update(friction_law=self.law, friction_mu=float(self.mu), friction_cap=self.describe())
@@ -111,7 +133,23 @@ class FrictionLaw:
 
     @classmethod
     def from_attrs(cls, attrs) -> "FrictionLaw":
-        """The law a result was computed with (:meth:`to_attrs`; ``friction_law`` absent: the paper's)."""
+        """The law a result was computed with (:meth:`to_attrs`; ``friction_law`` absent: the paper's).
+
+        Parameters
+        ----------
+        attrs : mapping of str to object
+            A result's attributes: ``friction_law``, ``friction_mu``, ``param_tau0`` where the law uses them.
+
+        Returns
+        -------
+        FrictionLaw
+            The law, with its ``μ`` and ``τ0``.
+
+        Raises
+        ------
+        ValueError
+            A ``friction_mu`` beside a law without Coulomb's part, or an unknown law.
+        """
         law = str(attrs.get("friction_law", "tau0"))
         if "friction_mu" in attrs and not FRICTION_LAWS.get(law, (0, 0))[1]:  # (its μ was dropped silently)
             raise ValueError(f"the attribute friction_mu={shown(attrs['friction_mu'])} beside the law {law!r} is not "
@@ -121,7 +159,13 @@ class FrictionLaw:
         return cls(law, mu=mu, tau0=tau0)
 
     def describe(self) -> str:
-        """The law in words, for a dataset's ``friction_law`` attribute."""
+        """The law in words, for a dataset's ``friction_law`` attribute.
+
+        Returns
+        -------
+        str
+            The cap as a formula in ASCII, e.g. ``"u_cap = pi a tau0 / (2 G*) (13)"``, with ``μ``'s value.
+        """
         caps = {"tau0": "u_cap = pi a tau0 / (2 G*) (13)",
                 "coulomb": f"u_cap = mu (E*/G*) max(d - g, 0), mu = {self.mu!r}",
                 "tau0+coulomb": f"u_cap = pi a tau0 / (2 G*) + mu (E*/G*) max(d - g, 0), mu = {self.mu!r}"}

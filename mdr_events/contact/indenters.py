@@ -37,10 +37,15 @@ DESCRIBED_DIGITS = 9
 class Paraboloid:
     """The paper's indenter (4): ``f(r) = r²/(2R)``, a sphere of radius ``R`` near its tip.
 
-    Attributes
+    Parameters
     ----------
     R : float
         Radius of curvature in m, finite and > 0.
+
+    Raises
+    ------
+    ValueError
+        ``R`` not a finite number > 0.
     """
 
     R: float
@@ -50,11 +55,23 @@ class Paraboloid:
                                                  lambda value: value > 0.0))
 
     def describe(self) -> str:
-        """The profile in words."""
+        """The profile in words.
+
+        Returns
+        -------
+        str
+            ``"paraboloid f = r^2/(2R), R = ... m"``, ``R`` to :data:`DESCRIBED_DIGITS` digits.
+        """
         return f"paraboloid f = r^2/(2R), R = {self.R:.{DESCRIBED_DIGITS}g} m"
 
     def to_attrs(self) -> dict[str, object]:
-        """A result's attributes: ``param_R`` and its unit (the paper's results name no other indenter)."""
+        """A result's attributes: ``param_R`` and its unit (the paper's results name no other indenter).
+
+        Returns
+        -------
+        dict of str to object
+            ``param_R`` (m) and ``param_R_units``.
+        """
         return {"param_R": self.R, "param_R_units": "m"}
 
 
@@ -62,7 +79,7 @@ class Paraboloid:
 class PowerLaw:
     """The axisymmetric power-law indenter ``f(r) = c rⁿ``.
 
-    Attributes
+    Parameters
     ----------
     c : float
         Prefactor (m^(1−n)), finite and > 0.
@@ -70,6 +87,11 @@ class PowerLaw:
         Exponent, finite and > 0: 1 the cone, 2 the paraboloid, larger ever flatter punches. With
         adhesion the relations need ``n > 1/2`` (below it the adhesive term ``√a`` outgrows ``aⁿ``
         and no contact is stable).
+
+    Raises
+    ------
+    ValueError
+        ``c`` or ``n`` not a finite number > 0.
     """
 
     c: float
@@ -83,23 +105,57 @@ class PowerLaw:
 
     @classmethod
     def paraboloid(cls, R: float) -> "PowerLaw":
-        """The paper's indenter (4): ``f = r²/(2R)``, ``R`` the radius of curvature (m, > 0)."""
+        """The paper's indenter (4): ``f = r²/(2R)``, ``R`` the radius of curvature (m, > 0).
+
+        Parameters
+        ----------
+        R : float
+            Radius of curvature (m), finite and > 0.
+
+        Returns
+        -------
+        PowerLaw
+            The power law with ``c = 1/(2R)`` and ``n = 2``.
+        """
         radius = check_real("R", R, "a finite number > 0 (m)", lambda value: value > 0.0)
         return cls(1.0 / (2.0 * radius), 2.0)
 
     @classmethod
     def cone(cls, slope: float) -> "PowerLaw":
-        """The cone ``f = r tan θ``, ``slope = tan θ`` (θ the angle between its flank and the surface, > 0)."""
+        """The cone ``f = r tan θ``, ``slope = tan θ`` (θ the angle between its flank and the surface, > 0).
+
+        Parameters
+        ----------
+        slope : float
+            ``tan θ``, finite and > 0.
+
+        Returns
+        -------
+        PowerLaw
+            The power law with ``c = slope`` and ``n = 1``.
+        """
         return cls(check_real("slope", slope, "a finite number > 0 (tan of the flank's angle to the surface)",
                               lambda value: value > 0.0), 1.0)
 
     def describe(self) -> str:
         """The profile in words, for a dataset's ``profile`` attribute (to :data:`DESCRIBED_DIGITS`; the exact values
-        are the attributes ``profile_c`` and ``profile_n``)."""
+        are the attributes ``profile_c`` and ``profile_n``).
+
+        Returns
+        -------
+        str
+            ``"power law f = c r^n, c = ... m^(1-n), n = ..."``.
+        """
         return f"power law f = c r^n, c = {self.c:.{DESCRIBED_DIGITS}g} m^(1-n), n = {self.n:.{DESCRIBED_DIGITS}g}"
 
     def to_attrs(self) -> dict[str, object]:
-        """A result's attributes: ``profile`` (in words), ``profile_c`` and ``profile_n``."""
+        """A result's attributes: ``profile`` (in words), ``profile_c`` and ``profile_n``.
+
+        Returns
+        -------
+        dict of str to object
+            The three attributes, read back by :func:`indenter_from_attrs`.
+        """
         return {"profile": self.describe(), "profile_c": self.c, "profile_n": self.n}
 
 
@@ -109,6 +165,16 @@ class FlatPunch:
 
     In contact the radius is the punch's; adhesion holds it until the edge spring reaches Heß's
     limit (8), and then every spring (all of one length) lets go at once: Kendall's pull-off.
+
+    Parameters
+    ----------
+    radius : float
+        The punch's radius (m), finite and > 0.
+
+    Raises
+    ------
+    ValueError
+        ``radius`` not a finite number > 0.
     """
 
     radius: float
@@ -119,11 +185,23 @@ class FlatPunch:
 
     def describe(self) -> str:
         """The profile in words, for a dataset's ``profile`` attribute (to :data:`DESCRIBED_DIGITS`; the exact value
-        is the attribute ``profile_radius``)."""
+        is the attribute ``profile_radius``).
+
+        Returns
+        -------
+        str
+            ``"flat punch of radius ... m"``.
+        """
         return f"flat punch of radius {self.radius:.{DESCRIBED_DIGITS}g} m"
 
     def to_attrs(self) -> dict[str, object]:
-        """A result's attributes: ``profile`` (in words) and ``profile_radius``."""
+        """A result's attributes: ``profile`` (in words) and ``profile_radius``.
+
+        Returns
+        -------
+        dict of str to object
+            The two attributes, read back by :func:`indenter_from_attrs`.
+        """
         return {"profile": self.describe(), "profile_radius": self.radius}
 
 
@@ -141,13 +219,19 @@ class TabulatedProfile:
     ``g(x)``, computed numerically (:mod:`mdr_events.theory.tabulated`); beyond the last radius the indenter
     is too high for any contact (the depths that need it are refused).
 
-    Attributes
+    Parameters
     ----------
-    r : tuple of float
+    r : sequence of float
         Radii (m): finite, strictly increasing, from 0, at least 3.
-    f : tuple of float
+    f : sequence of float
         Heights above the tip (m) at ``r``: finite, 0 at ``r = 0``, strictly increasing (an indenter whose
-        profile falls would touch first off its axis).
+        profile falls would touch first off its axis). Both columns are kept as tuples of float.
+
+    Raises
+    ------
+    ValueError
+        Columns of unequal lengths, fewer than 3 or more than :data:`MAX_TABLE_POINTS` points, not increasing
+        from 0, or whose scales do not fit in double precision.
     """
 
     r: tuple
@@ -179,12 +263,24 @@ class TabulatedProfile:
         return self.r[-1]
 
     def describe(self) -> str:
-        """The profile in words, for a dataset's ``profile`` attribute."""
+        """The profile in words, for a dataset's ``profile`` attribute.
+
+        Returns
+        -------
+        str
+            The number of points and the table's last radius and height.
+        """
         return f"tabulated profile f(r), {len(self.r)} points to r = {self.r[-1]!r} m, f = {self.f[-1]!r} m there"
 
     def to_attrs(self) -> dict[str, object]:
         """A result's attributes: ``profile`` (in words) and the table itself, ``profile_table_r`` and
-        ``profile_table_f`` (every value as Python writes it back, exact, separated by commas)."""
+        ``profile_table_f`` (every value as Python writes it back, exact, separated by commas).
+
+        Returns
+        -------
+        dict of str to object
+            The three attributes, read back by :func:`indenter_from_attrs`.
+        """
         return {"profile": self.describe(), "profile_table_r": ", ".join(map(repr, self.r)),
                 "profile_table_f": ", ".join(map(repr, self.f))}
 

@@ -55,15 +55,15 @@ NUMERIC_ATTRIBUTES = ("param_E", "param_nu", "param_R", "param_dgamma0", "param_
 class Contact:
     """A rigid indenter on an elastomer, with adhesion and friction: the physical model of section 4.
 
-    Attributes
+    Parameters
     ----------
     elastomer : Elastomer
         ``E`` and ``ν``: the springs' stiffness per width ``E*`` (5) and ``G*`` (6).
     indenter : Paraboloid, PowerLaw, FlatPunch or TabulatedProfile
         The indenter's profile ``f(r)``; the springs see its Abel transform ``g(x)`` (3).
-    adhesion : Adhesion
+    adhesion : Adhesion, default NO_ADHESION
         Heß's rule (8) with ``Δγ0`` in and ``Δγ1`` out; default none (Hertz).
-    friction : FrictionLaw
+    friction : FrictionLaw, default FrictionLaw("tau0", tau0=0.0)
         The cap on the springs' shifts (:mod:`mdr_events.contact.friction`) with every value it uses: ``τ0`` for the
         paper's law (13), ``μ`` for Coulomb's, both for their sum.
 
@@ -97,14 +97,46 @@ class Contact:
     @classmethod
     def paper(cls, R: float = 0.03) -> "Contact":
         """The contact of section 4 (:meth:`Parameters.paper <mdr_events.Parameters.paper>`: ``E``, ``ν``
-        inferred; ``R`` 30 mm or 100 mm, ``τ0``, ``Δγ0``, ``Δγ1`` quoted)."""
+        inferred; ``R`` 30 mm or 100 mm, ``τ0``, ``Δγ0``, ``Δγ1`` quoted).
+
+        Parameters
+        ----------
+        R : float, default 0.03
+            The paraboloid's radius (m): 0.03 in the paper's section 4, 0.1 in its supplementary material.
+
+        Returns
+        -------
+        Contact
+            The paraboloid on the paper's elastomer, with its adhesion and the friction law ``"tau0"``.
+        """
         return cls.from_parameters(Parameters.paper(R))
 
     @classmethod
     def from_parameters(cls, params: Parameters, profile: Indenter | None = None,
                         friction: FrictionLaw | str | None = None) -> "Contact":
         """The contact of ``params`` (its ``d_max`` and ``v`` are the motion's), with ``profile`` instead of its
-        paraboloid and ``friction`` instead of the paper's law (``τ0`` from ``params`` where the law uses it)."""
+        paraboloid and ``friction`` instead of the paper's law (``τ0`` from ``params`` where the law uses it).
+
+        Parameters
+        ----------
+        params : Parameters
+            The flat record: ``E``, ``ν``, ``R``, ``τ0``, ``Δγ0``, ``Δγ1`` (its ``d_max`` and ``v`` are not used).
+        profile : PowerLaw, FlatPunch, TabulatedProfile or Paraboloid, optional
+            The indenter; ``None``: the paraboloid of ``params.R``.
+        friction : FrictionLaw or str, optional
+            The friction law or its name; ``None``: the paper's ``"tau0"``. A law that uses ``τ0`` without its
+            value takes ``params.tau0``.
+
+        Returns
+        -------
+        Contact
+            The contact of those parts.
+
+        Raises
+        ------
+        TypeError
+            A ``profile`` or ``friction`` of another type.
+        """
         check_parameters(params)
         if profile is not None and not isinstance(profile, PARTS["indenter"]):
             raise TypeError(f"profile={shown(profile)} ({type(profile).__name__}) is not allowed; allowed: None (the "
@@ -118,7 +150,25 @@ class Contact:
     @classmethod
     def from_attrs(cls, attrs: Mapping[str, Any]) -> "Contact":
         """The contact a result was computed for (:meth:`to_attrs`, or the attributes of
-        :meth:`Parameters.to_attrs <mdr_events.Parameters.to_attrs>` with ``profile_*`` and ``friction_*``)."""
+        :meth:`Parameters.to_attrs <mdr_events.Parameters.to_attrs>` with ``profile_*`` and ``friction_*``).
+
+        Parameters
+        ----------
+        attrs : mapping of str to object
+            A result's attributes (``dataset.attrs``, not the dataset itself).
+
+        Returns
+        -------
+        Contact
+            The contact they describe.
+
+        Raises
+        ------
+        TypeError
+            ``attrs`` that is not a mapping, or a dataset.
+        ValueError
+            A missing attribute, a number that is not one, or attributes that describe no valid contact.
+        """
         if not isinstance(attrs, Mapping) or hasattr(attrs, "data_vars"):  # (a Dataset is a mapping of variables)
             raise TypeError(f"attrs of type {type(attrs).__name__} are not allowed; allowed: a mapping of a result's "
                             "attributes (dataset.attrs)")
@@ -150,14 +200,43 @@ class Contact:
     def parameters(self, d_max: float, v: float) -> Parameters:
         """The flat record the layers below take, with the motion's ``d_max`` and ``v``: ``R`` of the paraboloid
         (``None`` for another indenter, which :attr:`profile` gives), ``τ0`` of the friction law (0 for
-        Coulomb's, which has none)."""
+        Coulomb's, which has none).
+
+        Parameters
+        ----------
+        d_max : float
+            The motion's largest depth (m).
+        v : float
+            The motion's speed (m/s).
+
+        Returns
+        -------
+        Parameters
+            The record of this contact's values with ``d_max`` and ``v``.
+        """
         R = self.indenter.R if isinstance(self.indenter, Paraboloid) else None
         return Parameters(E=self.elastomer.E, nu=self.elastomer.nu, R=R, tau0=self.friction.tau0 or 0.0,
                           dgamma0=self.adhesion.dgamma0, dgamma1=self.adhesion.dgamma1, d_max=d_max, v=v)
 
     # --- reading and changing values ------------------------------------------------------------------------------
     def value(self, name: str) -> float:
-        """The value of a dotted (``"friction.mu"``) or short (``"mu"``) name of this contact (:meth:`names`)."""
+        """The value of a dotted (``"friction.mu"``) or short (``"mu"``) name of this contact (:meth:`names`).
+
+        Parameters
+        ----------
+        name : str
+            A dotted name of :meth:`names` or its short name (:data:`SHORT_NAMES`).
+
+        Returns
+        -------
+        float
+            The value, in the unit :meth:`unit` gives.
+
+        Raises
+        ------
+        ValueError
+            A name this contact does not hold (listing those it does).
+        """
         part, field = self._path(name)
         if not self.holds(name):  # (a law's mu or tau0 that it does not use: None was returned)
             raise ValueError(f"{name!r} is not a value of this contact; allowed: {', '.join(self.names())}")
@@ -165,7 +244,23 @@ class Contact:
 
     def replace(self, **changes: float) -> "Contact":
         """A copy with values changed by dotted or short name (validated again), e.g.
-        ``contact.replace(**{"elastomer.E": 1e6}, mu=0.4)``."""
+        ``contact.replace(**{"elastomer.E": 1e6}, mu=0.4)``.
+
+        Parameters
+        ----------
+        **changes : float
+            New values by dotted or short name, each value once.
+
+        Returns
+        -------
+        Contact
+            The copy, validated as a new contact is.
+
+        Raises
+        ------
+        ValueError
+            A name this contact does not hold, a value changed under two names, or a value out of its range.
+        """
         parts: dict[str, dict[str, float]] = {}
         for name, value in changes.items():
             part, field = self._path(name)
@@ -177,11 +272,38 @@ class Contact:
                                             for part, fields in parts.items()})
 
     def holds(self, name: str) -> bool:
-        """Whether ``name`` (dotted or short) is a value of this contact."""
+        """Whether ``name`` (dotted or short) is a value of this contact.
+
+        Parameters
+        ----------
+        name : str
+            A dotted or short name (any other object: ``False``).
+
+        Returns
+        -------
+        bool
+            ``True`` if :meth:`names` lists it.
+        """
         return isinstance(name, str) and SHORT_NAMES.get(name, name) in self.names()
 
     def unit(self, name: str) -> str:
-        """The unit of a dotted or short name of this contact (:data:`UNITS`)."""
+        """The unit of a dotted or short name of this contact (:data:`UNITS`).
+
+        Parameters
+        ----------
+        name : str
+            A dotted name of :meth:`names` or its short name.
+
+        Returns
+        -------
+        str
+            The unit, e.g. ``"Pa"``, ``"J m-2"``, ``"1"``.
+
+        Raises
+        ------
+        ValueError
+            A name this contact does not hold.
+        """
         part, field = self._path(name)
         if not self.holds(name):  # (a law's mu or tau0 that it does not use)
             raise ValueError(f"{name!r} is not a value of this contact; allowed: {', '.join(self.names())}")
@@ -202,7 +324,13 @@ class Contact:
         return part, field
 
     def names(self) -> list[str]:
-        """The dotted names of the values this contact holds (``friction.mu`` only for a law with Coulomb's part)."""
+        """The dotted names of the values this contact holds (``friction.mu`` only for a law with Coulomb's part).
+
+        Returns
+        -------
+        list of str
+            E.g. ``["elastomer.E", "elastomer.nu", "indenter.R", ..., "friction.tau0"]``.
+        """
         return [f"{part}.{field.name}" for part in PARTS for field in dataclasses.fields(getattr(self, part))
                 if field.name != "law" and getattr(getattr(self, part), field.name) is not None]
 
@@ -210,6 +338,12 @@ class Contact:
     def to_attrs(self) -> dict[str, Any]:
         """The attributes a result of this contact carries: each part's (``param_E``, ``param_nu``, ``param_E_star``,
         ``param_G_star``; ``param_R`` or ``profile_*``; ``param_dgamma0``, ``param_dgamma1``; ``param_tau0`` where
-        the law uses it, ``friction_*`` for another law than the paper's)."""
+        the law uses it, ``friction_*`` for another law than the paper's).
+
+        Returns
+        -------
+        dict of str to object
+            The attributes, read back by :meth:`from_attrs`.
+        """
         return {**self.elastomer.to_attrs(), **self.indenter.to_attrs(), **self.adhesion.to_attrs(),
                 **self.friction.to_attrs()}

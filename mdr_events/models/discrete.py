@@ -82,7 +82,10 @@ MIN_SPRINGS_IN_CONTACT = 10
 
 
 def paraboloid_profile(params: Parameters) -> Callable[[np.ndarray], np.ndarray]:
-    """``g(x) = x²/R``, eq. (4), as derived by :mod:`mdr_events.theory.symbolic`."""
+    r"""``g(x) = x²/R``, eq. (4), as derived by :mod:`mdr_events.theory.symbolic`.
+
+    .. math:: f(r) = \frac{r^2}{2R} \;\Rightarrow\; g(x) = \frac{x^2}{R} \qquad (4)
+    """
     return indenters.spring_profile(params, None)
 
 
@@ -132,7 +135,10 @@ class Thresholds(NamedTuple):
 
 
 def hysteresis_thresholds(adhesion: Adhesion, g: np.ndarray, positions: np.ndarray, params: Parameters) -> Thresholds:
-    """The paper's rate-independent law: Heß's limit (8) with ``Δγ0`` to attach and ``Δγ1`` to let go."""
+    r"""The paper's rate-independent law: Heß's limit (8) with ``Δγ0`` to attach and ``Δγ1`` to let go.
+
+    .. math:: \Delta l_\mathrm{max}(x) = \sqrt{\frac{2 \pi |x| \Delta\gamma}{E^*}} \qquad (8)
+    """
     return Thresholds(_Threshold(g, positions, params, adhesion.dgamma0),
                       _Threshold(g, positions, params, adhesion.dgamma1))
 
@@ -407,7 +413,17 @@ def run_discrete(
     friction: FrictionLaw | str | None = None,
     adhesion: AdhesionLaw | None = None,
 ) -> dict[str, np.ndarray]:
-    """Run the spring model for several paths on a common time grid.
+    r"""Run the spring model for several paths on a common time grid.
+
+    The springs of width ``Δx`` have the stiffnesses (5), (6); a spring at ``x`` in contact is compressed by
+    (7), its tangential shift follows the indenter from its attachment and is capped by (13), and the forces
+    are the sums (15):
+
+    .. math:: \Delta k_z = E^* \Delta x \quad (5), \qquad \Delta k_x = G^* \Delta x \quad (6), \qquad
+              u_z(x) = d - g(x) \quad (7)
+
+    .. math:: |u_x| \le \bar u(a) = \frac{\pi a \tau_0}{2 G^*} \quad (13), \qquad
+              F_N = \sum \Delta k_z u_z(x_i), \quad F_x = \sum \Delta k_x u_x(x_i) \quad (15)
 
     Parameters
     ----------

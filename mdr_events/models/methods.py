@@ -51,14 +51,19 @@ MIN_STEPS_PER_SEGMENT = 10
 class Discrete:
     """The paper's spring array (:mod:`mdr_events.models.discrete`).
 
-    Attributes
+    Parameters
     ----------
-    dx : float
+    dx : float, default 1e-6
         Spring spacing Δx in m (default 1 µm); at least 10 springs per side must be in contact at ``d_max``.
     dt : float, optional
         Time step in s; or
     n_steps : int, optional
         the number of steps of the longest case (default 10 000); not both. One time grid serves every case.
+
+    Raises
+    ------
+    ValueError
+        ``dt`` and ``n_steps`` both given, a spacing or step that is not > 0, fewer than 10 steps.
     """
 
     name: ClassVar[str] = "discrete"
@@ -79,12 +84,44 @@ class Discrete:
 
     def check_model(self, model: ModelJob) -> None:
         """Refuse an adhesion law the springs have no thresholds for
-        (:func:`~mdr_events.models.discrete.spring_thresholds`); they take every indenter and friction law."""
+        (:func:`~mdr_events.models.discrete.spring_thresholds`); they take every indenter and friction law.
+
+        Parameters
+        ----------
+        model : ModelJob
+            The contact along its motion, with the flat values the kernels take.
+
+        Raises
+        ------
+        TypeError
+            An adhesion law without the springs' thresholds.
+        """
         check_thresholds_known(model.adhesion)
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Run the cases with the springs; the dataset of :mod:`~mdr_events.models.simulation_schema` with the
-        attributes ``dx``, ``dt`` and ``spring_count_per_side``."""
+        attributes ``dx``, ``dt`` and ``spring_count_per_side``.
+
+        Parameters
+        ----------
+        model : ModelJob
+            The contact along its motion, with the flat values the kernels take.
+        cases : Cases
+            The paths to run, one per case, and their labels.
+        limits : Limits
+            The most springs, steps and memory a run may take.
+
+        Returns
+        -------
+        xarray.Dataset
+            The time series of every case on one time grid from first contact.
+
+        Raises
+        ------
+        ValueError
+            A path that never touches the surface, a spacing too coarse for 10 springs per side in contact, or a
+            time step that gives a path segment in contact fewer than :data:`MIN_STEPS_PER_SEGMENT` steps.
+        """
         self.check_model(model)
         params, profile, friction = model.params, model.profile, model.friction
         paths = cases.paths
@@ -141,14 +178,21 @@ class Continuum:
     """The springs' Δx → 0 limit integrated between events (:mod:`mdr_events.models.continuum`): exact to its
     tolerances, with the event log and each case's exact extrema.
 
-    Attributes
+    Parameters
     ----------
-    tolerances : Tolerances
+    tolerances : Tolerances, default Tolerances()
         Solver and root-finding tolerances (default ``rtol = 1e-10``, ``atol = 1e-14`` N, ``radius_rtol = 1e-14``).
     samples : int, optional
         Without ``t``: the number of output times to the end of the longest run (default 2001, at least 2).
     t : sequence of float, optional
         The output times in s from first contact (increasing, >= 0).
+
+    Raises
+    ------
+    TypeError
+        ``tolerances`` that are not a :class:`~mdr_events.Tolerances`.
+    ValueError
+        ``t`` and ``samples`` both given, fewer than 2 samples, or times not finite, >= 0 and strictly increasing.
     """
 
     name: ClassVar[str] = "continuum"
@@ -184,13 +228,41 @@ class Continuum:
     def check_model(self, model: ModelJob) -> None:
         """Refuse what the continuum does not take (:func:`~mdr_events.models.continuum.caps.check_supported`:
         Coulomb's part with adhesion; :func:`~mdr_events.models.continuum.edges.check_edge_known`: an adhesion law
-        without an edge rule)."""
+        without an edge rule).
+
+        Parameters
+        ----------
+        model : ModelJob
+            The contact along its motion, with the flat values the kernels take.
+
+        Raises
+        ------
+        TypeError
+            An adhesion law without an edge rule.
+        ValueError
+            A friction law, indenter and adhesion the continuum does not solve.
+        """
         check_edge_known(model.adhesion)
         check_supported(model.friction, model.params, model.profile)
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Solve the cases exactly; the dataset of :mod:`~mdr_events.models.simulation_schema` with the event log,
-        the extrema and the attributes ``rtol``, ``atol`` and ``radius_rtol``."""
+        the extrema and the attributes ``rtol``, ``atol`` and ``radius_rtol``.
+
+        Parameters
+        ----------
+        model : ModelJob
+            The contact along its motion, with the flat values the kernels take.
+        cases : Cases
+            The paths to solve, one per case, and their labels.
+        limits : Limits
+            The most waypoints and samples a run may take.
+
+        Returns
+        -------
+        xarray.Dataset
+            The time series of every case at the output times from first contact, the events and the extrema.
+        """
         self.check_model(model)
         params, profile, friction = model.params, model.profile, model.friction
         tolerances = self.tolerances

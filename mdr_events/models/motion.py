@@ -198,21 +198,27 @@ def _angles(alpha) -> tuple[float, ...]:
 class Scenario:
     """One of the paper's scenarios at one or several path angles.
 
-    Attributes
+    Parameters
     ----------
-    name : {"A", "B", "B+"}
+    name : {"A", "B", "B+"}, default "A"
         ``"A"``: in at angle α to ``d_max``, out vertically (14); ``"B"``: in vertically, out at angle α (19);
         ``"B+"``: in vertically to ``d_max``, further in at α to ``final_depth``, out vertically (Fig. 9b, "+").
     alpha : float or sequence of float
         Path angles to the surface in degrees, distinct, in [0, 90] (default 10°, 20°, …, 80°: Fig. 8 and 10);
         one case each.
-    d_max : float
+    d_max : float, optional
         The turning depth in m (default the paper's 0.3 mm).
-    v : float
+    v : float, optional
         The speed along the path in m/s (default the paper's 1 µm/s; the model is rate independent, so ``v``
         only sets the time axis).
     final_depth : float, optional
         ``"B+"`` only: the deepest point, > ``d_max`` (default ``2 d_max``).
+
+    Raises
+    ------
+    ValueError
+        An unknown name, an angle out of range or repeated, a depth or speed not > 0, a ``final_depth`` not
+        beyond ``d_max`` or with another scenario than ``"B+"``.
     """
 
     name: str = "A"
@@ -238,15 +244,43 @@ class Scenario:
 
     @property
     def dimension(self) -> str:
+        """The dimension the cases are labelled along: ``"alpha"`` (the path angles in degrees)."""
         return ANGLE_DIMENSION
 
     def cases(self, params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> Cases:
         """One path per angle for the contact of ``params`` and ``profile`` (its ``d_max`` and ``v`` this
-        scenario's)."""
+        scenario's).
+
+        Parameters
+        ----------
+        params : Parameters
+            The contact's values with this scenario's ``d_max`` and ``v``.
+        profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
+            The indenter; ``None``: the paraboloid of ``params.R``. The paths end below the jump-off of its
+            ``Δγ1`` branch.
+        friction : FrictionLaw, optional
+            Not used by the scenarios' paths (the parameter of :meth:`Paths.cases`, whose checks need it).
+
+        Returns
+        -------
+        Cases
+            The paths labelled along ``"alpha"`` by their angles.
+
+        Raises
+        ------
+        ValueError
+            A path that cannot be computed or compared in double precision, naming its angle.
+        """
         return _scenario_cases(params, self.name, np.array(self.alpha), profile, self.final_depth)
 
     def to_attrs(self) -> dict[str, object]:
-        """A result's attributes: ``scenario`` and ``param_d_max``, ``param_v`` with their units."""
+        """A result's attributes: ``scenario`` and ``param_d_max``, ``param_v`` with their units.
+
+        Returns
+        -------
+        dict of str to object
+            ``scenario`` (``"A"``, ``"B"`` or ``"B+"``), ``param_d_max`` (m), ``param_v`` (m/s) and their units.
+        """
         return {"scenario": self.name, "param_d_max": self.d_max, "param_d_max_units": "m", "param_v": self.v,
                 "param_v_units": "m s-1"}
 
@@ -255,15 +289,20 @@ class Scenario:
 class Paths:
     """Custom paths, one case each, labelled along ``case``.
 
-    Attributes
+    The depth and speed the run's checks measure against and its result names (``param_d_max``, ``param_v``) are
+    the paths' own: :attr:`d_max` their deepest point, :attr:`v` the slowest speed.
+
+    Parameters
     ----------
     paths : Path, sequence of Path or mapping of str to Path
         A path, a non-empty list of them (labelled ``"path 1"``, ``"path 2"``, ...) or a mapping
         ``{label: Path}`` (its keys, non-empty strings, the labels); the paths may have different speeds. Kept as
         the mapping.
 
-    The depth and speed the run's checks measure against and its result names (``param_d_max``, ``param_v``) are
-    the paths' own: :attr:`d_max` their deepest point, :attr:`v` the slowest speed.
+    Raises
+    ------
+    ValueError
+        No path, a label that is not a non-empty string, or a path that never enters the elastomer.
     """
 
     paths: Mapping[str, Path]
@@ -283,7 +322,22 @@ class Paths:
     @classmethod
     def named_by(cls, paths, d_max: float, v: float) -> "Paths":
         """The keywords of before: paths whose run a :class:`~mdr_events.Parameters`' ``d_max`` and ``v`` name (its
-        checks and its ``param_d_max``, ``param_v``), as they did (:func:`as_motion` beside a Parameters)."""
+        checks and its ``param_d_max``, ``param_v``), as they did (:func:`as_motion` beside a Parameters).
+
+        Parameters
+        ----------
+        paths : Path, sequence of Path or mapping of str to Path
+            The paths, labelled as :class:`Paths` labels them.
+        d_max : float
+            The depth the run's checks measure against and its ``param_d_max`` (m), > 0.
+        v : float
+            The speed its result names (``param_v``, m/s), > 0.
+
+        Returns
+        -------
+        Paths
+            The paths with that ``d_max`` and ``v`` instead of their own.
+        """
         motion = object.__new__(cls)
         object.__setattr__(motion, "paths", _custom_paths(paths))
         object.__setattr__(motion, "d_max", check_real("d_max", d_max, "a finite number > 0 (m)",
@@ -296,10 +350,31 @@ class Paths:
 
     @property
     def dimension(self) -> str:
+        """The dimension the cases are labelled along: ``"case"`` (the paths' labels)."""
         return CUSTOM_DIMENSION
 
     def cases(self, params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> Cases:
-        """The paths, each checked by :func:`check_path_representable` and :func:`check_path_extent`."""
+        """The paths, each checked by :func:`check_path_representable` and :func:`check_path_extent`.
+
+        Parameters
+        ----------
+        params : Parameters
+            The contact's values (its ``d_max`` and ``v`` replaced by each path's own in the checks).
+        profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
+            The indenter; ``None``: the paraboloid of ``params.R``.
+        friction : FrictionLaw, optional
+            The friction law, whose scales the check of double precision includes (default the paper's).
+
+        Returns
+        -------
+        Cases
+            The paths labelled along ``"case"`` by their labels.
+
+        Raises
+        ------
+        ValueError
+            A path that never touches the surface, or too long or large for double precision, naming its label.
+        """
         for label, path in self.paths.items():
             try:
                 path.first_contact_time()
@@ -310,7 +385,13 @@ class Paths:
         return Cases(list(self.paths.values()), CUSTOM_DIMENSION, np.array(list(self.paths), dtype=str))
 
     def to_attrs(self) -> dict[str, object]:
-        """A result's attributes: ``scenario`` (``"custom"``) and ``param_d_max``, ``param_v`` with their units."""
+        """A result's attributes: ``scenario`` (``"custom"``) and ``param_d_max``, ``param_v`` with their units.
+
+        Returns
+        -------
+        dict of str to object
+            ``scenario``, ``param_d_max`` (m), ``param_v`` (m/s) and their units.
+        """
         return {"scenario": CUSTOM_SCENARIO, "param_d_max": self.d_max, "param_d_max_units": "m",
                 "param_v": self.v, "param_v_units": "m s-1"}
 

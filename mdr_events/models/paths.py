@@ -118,6 +118,25 @@ class Path:
 
         Each segment must start where the previous one ended (to ``tolerance``
         m); otherwise ``ValueError`` names the segments and the gap.
+
+        Parameters
+        ----------
+        segments : array_like, shape (n, 2, 2)
+            The segments' end points ``((x0, d0), (x1, d1))`` in m, ``n >= 1``.
+        speed : float
+            Speed along the path (m/s), > 0.
+        tolerance : float, default 1e-12
+            The largest gap (m) between a segment's end and the next one's start.
+
+        Returns
+        -------
+        Path
+            The path through the segments' starts and the last segment's end.
+
+        Raises
+        ------
+        ValueError
+            Segments of another shape, or two consecutive segments that do not connect.
         """
         pieces = np.array(segments, dtype=float)
         if pieces.ndim != 3 or pieces.shape[1:] != (2, 2) or pieces.shape[0] < 1:
@@ -134,7 +153,31 @@ class Path:
 
     @classmethod
     def scenario_A(cls, alpha: float, params: Parameters, profile: SimulatedProfile = None) -> "Path":
-        """Eq. (14): in at angle α from the surface to ``d_max``, then vertically out."""
+        r"""Eq. (14): in at angle α from the surface to ``d_max``, then vertically out.
+
+        .. math:: d = v t \sin\alpha, \quad x = v t \cos\alpha \quad (d \le d_\mathrm{max}); \qquad
+                  \text{then } v_z = -v,\ v_x = 0 \qquad (14)
+
+        Parameters
+        ----------
+        alpha : float
+            The path angle to the surface in degrees, in (0, 90].
+        params : Parameters
+            The contact's values: ``d_max`` the turning depth, ``v`` the speed, the rest sizes the way out.
+        profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
+            The indenter; ``None``: the paraboloid of ``params.R``.
+
+        Returns
+        -------
+        Path
+            Waypoints ``(0, 0)``, ``(d_max / tan α, d_max)`` and, straight up, a depth below the jump-off of the
+            ``Δγ1`` branch (:func:`exit_depth`).
+
+        Raises
+        ------
+        ValueError
+            ``alpha`` not in (0, 90], or a jump-off too far below the surface.
+        """
         check_parameters(params)
         angle = _check_angle(alpha)
         if angle == 0.0:
@@ -146,11 +189,35 @@ class Path:
     @classmethod
     def scenario_B(cls, alpha: float, params: Parameters, slide_length: float | None = None,
                    profile: SimulatedProfile = None) -> "Path":
-        """Eq. (19): vertically to ``d_max``, then out at angle α below the jump-off depth.
+        r"""Eq. (19): vertically to ``d_max``, then out at angle α below the jump-off depth.
 
-        At α = 0 the motion is purely tangential at ``d_max`` and never comes
-        out: it then ends after ``slide_length`` (default: four times the
-        critical shift ``ū`` of the contact at ``d_max``).
+        .. math:: d = d_\mathrm{max} - v \tilde t \sin\alpha, \quad x = v \tilde t \cos\alpha \qquad (19)
+
+        (``t̃`` from the end of the vertical stroke). At α = 0 the motion is purely tangential at ``d_max`` and
+        never comes out: it then ends after ``slide_length`` (default: four times the critical shift ``ū`` of the
+        contact at ``d_max``).
+
+        Parameters
+        ----------
+        alpha : float
+            The path angle to the surface in degrees, in [0, 90].
+        params : Parameters
+            The contact's values: ``d_max`` the turning depth, ``v`` the speed, the rest sizes the way out.
+        slide_length : float, optional
+            At α = 0 only: the tangential travel at ``d_max`` (m).
+        profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
+            The indenter; ``None``: the paraboloid of ``params.R``.
+
+        Returns
+        -------
+        Path
+            Waypoints ``(0, 0)``, ``(0, d_max)`` and the end at angle α, a depth below the jump-off of the ``Δγ1``
+            branch (:func:`exit_depth`).
+
+        Raises
+        ------
+        ValueError
+            ``alpha`` out of [0, 90], or a jump-off too far below the surface.
         """
         check_parameters(params)
         angle = _check_angle(alpha)
@@ -169,7 +236,30 @@ class Path:
     def scenario_B_indentation(cls, alpha: float, params: Parameters, final_depth: float | None = None,
                                profile: SimulatedProfile = None) -> "Path":
         """The "+" branch of Fig. 9b: vertically to ``d_max``, further in at angle α to
-        ``final_depth`` (default ``2 d_max``), then vertically out."""
+        ``final_depth`` (default ``2 d_max``), then vertically out.
+
+        Parameters
+        ----------
+        alpha : float
+            The path angle to the surface in degrees, in (0, 90].
+        params : Parameters
+            The contact's values: ``d_max`` the turning depth, ``v`` the speed, the rest sizes the way out.
+        final_depth : float, optional
+            The deepest point (m), > ``d_max``; default ``2 d_max``.
+        profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
+            The indenter; ``None``: the paraboloid of ``params.R``.
+
+        Returns
+        -------
+        Path
+            Waypoints ``(0, 0)``, ``(0, d_max)``, ``((final_depth − d_max) / tan α, final_depth)`` and, straight
+            up, a depth below the jump-off of the ``Δγ1`` branch.
+
+        Raises
+        ------
+        ValueError
+            ``alpha`` not in (0, 90], or ``final_depth`` not beyond ``d_max``.
+        """
         check_parameters(params)
         angle = _check_angle(alpha)
         final = 2.0 * params.d_max if final_depth is None else float(final_depth)
@@ -185,6 +275,7 @@ class Path:
     # ------------------------------------------------------------------
     @property
     def segment_lengths(self) -> np.ndarray:
+        """The length of each segment (m), one fewer than the waypoints."""
         return np.hypot(*np.diff(self.waypoints, axis=0).T)
 
     @property
@@ -194,14 +285,29 @@ class Path:
 
     @property
     def duration(self) -> float:
+        """The time from the first waypoint to the last at :attr:`speed` (s)."""
         return float(self.corner_times[-1])
 
     @property
     def max_depth(self) -> float:
+        """The deepest waypoint's depth ``d`` (m)."""
         return float(self.waypoints[:, 1].max())
 
     def position(self, time) -> tuple[np.ndarray, np.ndarray]:
-        """``(x, d)`` at the given times (s, clipped to the path), vectorised."""
+        """``(x, d)`` at the given times (s, clipped to the path), vectorised.
+
+        Parameters
+        ----------
+        time : float or array_like
+            Times in s from the path's start; those before 0 or after :attr:`duration` are clipped.
+
+        Returns
+        -------
+        x : numpy.ndarray
+            The tangential position (m), the shape of ``time``.
+        d : numpy.ndarray
+            The depth (m), the shape of ``time``.
+        """
         t = np.clip(np.asarray(time, dtype=float), 0.0, self.duration)
         corners = self.corner_times
         x = np.interp(t, corners, self.waypoints[:, 0])
@@ -253,6 +359,11 @@ class Path:
         The first of :meth:`entry_times`: a path that only touches the surface (``d = 0`` at a
         corner, then back out) does not make contact there.
 
+        Returns
+        -------
+        float
+            The time in s from the path's start.
+
         Raises
         ------
         ValueError
@@ -264,5 +375,11 @@ class Path:
         return float(entries[0])
 
     def describe(self) -> str:
-        """The waypoints as a netCDF-safe string."""
+        """The waypoints as a netCDF-safe string.
+
+        Returns
+        -------
+        str
+            ``"(x0, d0); (x1, d1); ..."`` in m, to 9 significant digits.
+        """
         return "; ".join(f"({x:.9g}, {d:.9g})" for x, d in self.waypoints)

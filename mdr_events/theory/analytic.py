@@ -589,7 +589,19 @@ def critical_angle(contact: ContactLike, scenario: Literal["A", "B", "B+"] = "A"
 
 
 class DimensionlessGroups(NamedTuple):
-    """The three numbers the model's dimensionless results depend on (:func:`dimensionless_groups`)."""
+    r"""The three numbers the model's dimensionless results depend on (:func:`dimensionless_groups`).
+
+    Parameters
+    ----------
+    slip : float
+        The slip parameter :math:`S = \pi \tau_0 \sqrt{R} / (2 G^* \sqrt{d_\mathrm{max}})`.
+    adhesion_in : float
+        The adhesion parameter of the way in,
+        :math:`\Gamma_0 = 2 \pi \Delta\gamma_0 \sqrt{R} / (E^* d_\mathrm{max}^{3/2})`.
+    adhesion_out : float
+        The adhesion parameter of the way out,
+        :math:`\Gamma_1 = 2 \pi \Delta\gamma_1 \sqrt{R} / (E^* d_\mathrm{max}^{3/2})`.
+    """
 
     slip: float  #: S = π τ0 √R / (2 G* √d_max)
     adhesion_in: float  #: Γ0 = 2π Δγ0 √R / (E* d_max^(3/2))

@@ -62,7 +62,22 @@ __all__ = ["coulomb_cap_ratio", "full_slip_shift", "full_slip_force", "virgin_fo
 
 
 def coulomb_cap_ratio(friction: FrictionLaw, params: Parameters) -> float:
-    """``κ = μ E*/G*``: Coulomb's cap is ``κ`` times the spring's compression (0 without Coulomb's part)."""
+    r"""``κ = μ E*/G*``: Coulomb's cap is ``κ`` times the spring's compression (0 without Coulomb's part).
+
+    .. math:: \bar u(\xi) = \kappa \max(d - g(\xi), 0), \qquad \kappa = \mu \frac{E^*}{G^*}
+
+    Parameters
+    ----------
+    friction : FrictionLaw or str
+        The friction law; its ``μ`` (0 for ``"tau0"``).
+    params : Parameters
+        The material (``E*``, ``G*``).
+
+    Returns
+    -------
+    float
+        ``κ`` (1).
+    """
     friction = as_friction_law(friction)
     return float(symbolic.relation("coulomb_critical_shift").numeric(1.0, friction.coulomb_mu, params.E_star,
                                                                      params.G_star))
@@ -113,7 +128,27 @@ _NO_ADHESION = Parameters(E=1.0, nu=0.0, R=1.0, tau0=0.0, dgamma0=0.0, dgamma1=0
 def full_slip_shift(depth: float, friction: FrictionLaw | str | None, params: Parameters,
                     profile: Profile | None = None, radius: float | None = None) -> float:
     """The shift ``u_x`` from rest at which every spring slides: the centre's cap ``K a + κ d`` (m)
-    (``adhesive_full_slip_shift``; ``radius`` as for :func:`virgin_force`)."""
+    (``adhesive_full_slip_shift``; ``radius`` as for :func:`virgin_force`).
+
+    Parameters
+    ----------
+    depth : float
+        The indentation depth ``d`` (m, > 0).
+    friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
+    params : Parameters
+        The material, ``τ0`` and ``Δγ0`` (the default radius).
+    profile : PowerLaw or FlatPunch, optional
+        The indenter; default the paraboloid of ``params.R``.
+    radius : float, optional
+        The contact radius ``a`` (m, at least the compressed zone's ``x_c``); default the ``Δγ0`` branch's at
+        ``d``, ``x_c`` without adhesion.
+
+    Returns
+    -------
+    float
+        The shift ``K a + κ d`` (m).
+    """
     depth, friction, profile = _checked(depth, friction, params, profile)
     contact = _contact_radius(depth, params, profile, radius)
     return _tau0_per_radius(friction, params) * contact + coulomb_cap_ratio(friction, params) * depth
@@ -121,9 +156,31 @@ def full_slip_shift(depth: float, friction: FrictionLaw | str | None, params: Pa
 
 def full_slip_force(depth: float, friction: FrictionLaw | str | None, params: Parameters,
                     profile: Profile | None = None, radius: float | None = None) -> float:
-    """The force of full slip, ``τ0 π a² + μ F_N^H(d)`` (N; either part as the law has it; ``F_N^H`` the compressed
+    r"""The force of full slip, ``τ0 π a² + μ F_N^H(d)`` (N; either part as the law has it; ``F_N^H`` the compressed
     springs' push, ``F_N`` itself without adhesion: ``adhesive_full_slip_force``; ``radius`` as for
-    :func:`virgin_force`)."""
+    :func:`virgin_force`).
+
+    .. math:: F_x = \tau_0 \pi a^2 + \mu F_N^H(d)
+
+    Parameters
+    ----------
+    depth : float
+        The indentation depth ``d`` (m, > 0).
+    friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
+    params : Parameters
+        The material, ``τ0`` and ``Δγ0`` (the default radius).
+    profile : PowerLaw or FlatPunch, optional
+        The indenter; default the paraboloid of ``params.R``.
+    radius : float, optional
+        The contact radius ``a`` (m, at least the compressed zone's ``x_c``); default the ``Δγ0`` branch's at
+        ``d``, ``x_c`` without adhesion.
+
+    Returns
+    -------
+    float
+        The force of full slip (N, >= 0).
+    """
     return float(virgin_force(np.inf, depth, friction, params, profile, radius))
 
 
@@ -176,6 +233,16 @@ def virgin_force(shift, depth: float, friction: FrictionLaw | str | None, params
         The contact radius ``a`` (m, at least the compressed zone's ``x_c``): an adhesive contact's radius is pinned
         by its history between the branches (9). Default: the ``Δγ0`` branch's at ``d`` (indented to ``d``), ``x_c``
         without adhesion.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ``F₀`` (N), odd in the shift, the shape of ``shift``.
+
+    Raises
+    ------
+    ValueError
+        A shift that is ``nan``, a depth not > 0, or a radius below ``x_c``.
     """
     depth, friction, profile = _checked(depth, friction, params, profile)
     values = real_array("shift", shift, "real numbers (m)")
@@ -196,8 +263,27 @@ def tangential_force(x, depth: float, friction: FrictionLaw | str | None, params
     ----------
     x : array_like
         The indenter's tangential position at successive instants (1-D, m).
-    depth, friction, params, profile, radius
-        As for :func:`virgin_force`.
+    depth : float
+        The indentation depth ``d`` (m, > 0).
+    friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
+    params : Parameters
+        The material, ``τ0`` and ``Δγ0`` (the default radius).
+    profile : PowerLaw or FlatPunch, optional
+        The indenter; default the paraboloid of ``params.R``.
+    radius : float, optional
+        The contact radius ``a`` (m, at least the compressed zone's ``x_c``); default the ``Δγ0`` branch's at
+        ``d``, ``x_c`` without adhesion.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``F_x`` (N) at each sample, the shape of ``x`` (0 at the first).
+
+    Raises
+    ------
+    ValueError
+        ``x`` empty, not 1-D or not finite; a depth not > 0, or a radius below ``x_c``.
     """
     positions = real_array("x", x, "a 1-D array of finite tangential positions (m)")
     if positions.ndim != 1 or positions.size == 0 or not np.all(np.isfinite(positions)):
@@ -250,8 +336,27 @@ def loop_energy(amplitude, depth: float, friction: FrictionLaw | str | None, par
     ----------
     amplitude : float or array_like
         The loop's half-width ``X`` (m, >= 0).
-    depth, friction, params, profile, radius
-        As for :func:`virgin_force`.
+    depth : float
+        The indentation depth ``d`` (m, > 0).
+    friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
+    params : Parameters
+        The material, ``τ0`` and ``Δγ0`` (the default radius).
+    profile : PowerLaw or FlatPunch, optional
+        The indenter; default the paraboloid of ``params.R``.
+    radius : float, optional
+        The contact radius ``a`` (m, at least the compressed zone's ``x_c``); default the ``Δγ0`` branch's at
+        ``d``, ``x_c`` without adhesion.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ``W`` (J, >= 0), the shape of ``amplitude``.
+
+    Raises
+    ------
+    ValueError
+        An amplitude that is negative or not finite.
     """
     depth, friction, profile = _checked(depth, friction, params, profile)
     values = real_array("amplitude", amplitude, "finite numbers >= 0 (m)")
@@ -348,7 +453,7 @@ def adhesive_onset_A_is_non_adhesive(friction: FrictionLaw | str | None, profile
 
 def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None,
              adhesion: bool = False):
-    """Depth of slip onset in scenario A (m) for any friction law (module docstring).
+    r"""Depth of slip onset in scenario A (m) for any friction law (module docstring).
 
     ``"tau0"``: (17) (:func:`mdr_events.theory.power_law.d_crit_A`; (18) with ``adhesion``). With Coulomb's part:
     ``nan`` (never) where ``cot α <= κ``; else (17) at the angle ``α'`` with ``cot α' = cot α − κ``, which for
@@ -361,12 +466,25 @@ def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
     alpha : float or array_like
         Path angles in degrees, in (0, 90].
     friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
     params : Parameters
-        ``Δγ0`` is used with ``adhesion`` alone.
+        The material and ``τ0``; ``Δγ0`` is used with ``adhesion`` alone.
     profile : PowerLaw or FlatPunch, optional
         Default the paraboloid of ``params.R``.
     adhesion : bool, optional
         The onset with Heß's rule (``params.dgamma0``, ``dgamma1``) rather than without.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The onset depth ``d_crit`` (m), the shape of ``alpha``: 0 from first contact, ``nan`` never, ``+inf`` at 90°.
+
+    Notes
+    -----
+    With Coulomb's part the onset is the paper's (17) at the angle ``α'``:
+
+    .. math:: \cot\alpha' = \cot\alpha - \kappa, \qquad
+              d_\mathrm{crit} = \frac{\pi^2 \tau_0^2 R \tan^2\alpha'}{4 G^{*2}} \quad \text{(paraboloid)} \qquad (17)
     """
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
@@ -397,11 +515,30 @@ def _onset_output(values: np.ndarray, alpha: np.ndarray):
 
 def critical_angle_A(friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None,
                      adhesion: bool = False) -> float:
-    """Scenario A's critical angle (degrees): below it the springs slide before ``d_max``.
+    r"""Scenario A's critical angle (degrees): below it the springs slide before ``d_max``.
 
     ``"tau0"``: ``tan α_c = d_max / ū(a(d_max))``; ``"coulomb"``: the angle of friction, ``tan α_c = 1/κ = G*/(μ E*)``,
     at any depth; ``"tau0+coulomb"``: ``cot α_c = cot α_c(τ0) + κ``. With ``adhesion`` as for :func:`d_crit_A`: the
     angle without where :func:`adhesive_onset_A_is_non_adhesive`, ``nan`` for ``"tau0+coulomb"`` on a curved indenter.
+
+    .. math:: \cot\alpha_c = \cot\alpha_c(\tau_0) + \kappa, \qquad
+              \tan\alpha_c(\tau_0) = \frac{d_\mathrm{max}}{\bar u(a(d_\mathrm{max}))} \qquad (17), (18)
+
+    Parameters
+    ----------
+    friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
+    params : Parameters
+        The material, ``τ0``, ``d_max`` and ``Δγ0``.
+    profile : PowerLaw or FlatPunch, optional
+        The indenter; default the paraboloid of ``params.R``.
+    adhesion : bool, default False
+        The angle with Heß's rule (the ``Δγ0`` branch (9)) rather than without.
+
+    Returns
+    -------
+    float
+        ``α_c`` in degrees (``nan`` where no closed form exists).
     """
     friction = as_friction_law(friction)
     indenter = _indenter(profile, params)
@@ -428,13 +565,31 @@ def _effective_angle(alpha_arr: np.ndarray, kappa: float) -> tuple[np.ndarray, n
 
 
 def d_crit_B(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None):
-    """Depth of slip onset in scenario B's pull-off without adhesion (m; module docstring): (20)
+    r"""Depth of slip onset in scenario B's pull-off without adhesion (m; module docstring): (20)
     (:func:`mdr_events.theory.power_law.d_crit_B`) where the law has ``τ0``'s part, ``d_max`` (at once) for Coulomb's
     alone; ``α = 90°`` never slides (``-inf``).
 
     The flat punch has no spring at zero compression: every cap is ``K a + κ d`` against the shift
     ``(d_max − d) cot α``, so ``d = (d_max cot α − K a)/(cot α + κ)``, ``-inf`` below the surface (it comes off
     first).
+
+    .. math:: \frac{d_\mathrm{max} - d}{\tan\alpha} = \frac{\pi a \tau_0}{2 G^*} \qquad (20)
+
+    Parameters
+    ----------
+    alpha : float or array_like
+        Path angles in degrees, in [0, 90].
+    friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
+    params : Parameters
+        The material, ``τ0`` and ``d_max``.
+    profile : PowerLaw or FlatPunch, optional
+        The indenter; default the paraboloid of ``params.R``.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The onset depth ``d_crit`` (m), the shape of ``alpha``; ``-inf`` where it comes off first or at 90°.
     """
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
@@ -461,7 +616,22 @@ def _cotangent(alpha_arr: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 def critical_angle_B(friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None) -> float:
     """Scenario B's critical angle without adhesion (degrees): a contact that shrinks to nothing always slides first
     (90°); the flat punch comes off whole at the surface, where its edge holds only ``K a``: ``d_max cot α_c = K a``,
-    as for ``τ0`` alone (Coulomb's part is zero at ``d = 0``)."""
+    as for ``τ0`` alone (Coulomb's part is zero at ``d = 0``).
+
+    Parameters
+    ----------
+    friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
+    params : Parameters
+        The material, ``τ0`` and ``d_max``.
+    profile : PowerLaw or FlatPunch, optional
+        The indenter; default the paraboloid of ``params.R``.
+
+    Returns
+    -------
+    float
+        ``α_c`` in degrees.
+    """
     friction = as_friction_law(friction)
     indenter = _indenter(profile, params)
     if isinstance(indenter, FlatPunch) and friction.uses_tau0:
@@ -471,10 +641,30 @@ def critical_angle_B(friction: FrictionLaw | str | None, params: Parameters, pro
 
 def d_crit_B_indentation(alpha, friction: FrictionLaw | str | None, params: Parameters,
                          profile: Profile | None = None):
-    """Depth of slip onset on scenario B's indentation branch without adhesion (m; module docstring): ``+inf``
+    r"""Depth of slip onset on scenario B's indentation branch without adhesion (m; module docstring): ``+inf``
     (never) where ``cot α <= κ``, else (20)'s "+" branch at ``α'`` (``cot α' = cot α − κ``), ``d_max`` (at once) for
     Coulomb's law alone. The flat punch: every cap ``K a + κ d`` against ``(d − d_max) cot α``,
-    ``d = (K a + d_max cot α)/(cot α − κ)``."""
+    ``d = (K a + d_max cot α)/(cot α − κ)``.
+
+    .. math:: \frac{d - d_\mathrm{max}}{\tan\alpha'} = \frac{\pi a \tau_0}{2 G^*}, \qquad
+              \cot\alpha' = \cot\alpha - \kappa \qquad (20)
+
+    Parameters
+    ----------
+    alpha : float or array_like
+        Path angles in degrees, in [0, 90].
+    friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
+    params : Parameters
+        The material, ``τ0`` and ``d_max``.
+    profile : PowerLaw or FlatPunch, optional
+        The indenter; default the paraboloid of ``params.R``.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The onset depth ``d_crit`` (m), the shape of ``alpha``; ``+inf`` where it never slides.
+    """
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
     indenter = _indenter(profile, params)
@@ -500,7 +690,24 @@ def critical_angle_B_indentation(friction: FrictionLaw | str | None, params: Par
                                  profile: Profile | None = None, final_depth: float | None = None) -> float:
     """The "+" branch's critical angle without adhesion (degrees): slip exactly at ``final_depth`` (default
     ``2 d_max``); ``cot α_c = cot α_c(τ0) + κ`` (the angle of friction for Coulomb's law alone); the flat punch's
-    ``cot α_c = (K a + κ F)/(F − d_max)`` at the final depth ``F``."""
+    ``cot α_c = (K a + κ F)/(F − d_max)`` at the final depth ``F``.
+
+    Parameters
+    ----------
+    friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
+    params : Parameters
+        The material, ``τ0`` and ``d_max``.
+    profile : PowerLaw or FlatPunch, optional
+        The indenter; default the paraboloid of ``params.R``.
+    final_depth : float, optional
+        The deepest point (m), > ``d_max``; default ``2 d_max``.
+
+    Returns
+    -------
+    float
+        ``α_c`` in degrees.
+    """
     friction = as_friction_law(friction)
     indenter = _indenter(profile, params)
     kappa = coulomb_cap_ratio(friction, params)

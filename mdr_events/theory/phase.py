@@ -58,7 +58,18 @@ def phase_diagram(
     *,
     d_max: float | None = None,
 ) -> xr.Dataset:
-    """Slip-onset depth against path angle: the phase diagram of Fig. 9a or 9b.
+    r"""Slip-onset depth against path angle: the phase diagram of Fig. 9a or 9b.
+
+    For the paper's paraboloid and law (13), scenario A (Hertz (17), with adhesion (18)) and scenario B's two
+    branches (Hertz (20), with adhesion (21); "−" pull-off with ``Δγ1``, "+" indentation with ``Δγ0``):
+
+    .. math:: d_\mathrm{crit} = \frac{\pi^2 \tau_0^2 R \tan^2\alpha}{4 G^{*2}} \quad (17), \qquad
+              \frac{d}{\tan\alpha} = \frac{\pi a \tau_0}{2 G^*},\
+              d = \frac{a^2}{R} - \sqrt{\frac{2 \pi a \Delta\gamma_0}{E^*}} \quad (18)
+
+    .. math:: d_\pm = \left(\sqrt{d_\mathrm{max} + k^2/4} \pm k/2\right)^2,\
+              k = \frac{\pi \tau_0 \sqrt{R} \tan\alpha}{2 G^*} \quad (20), \qquad
+              \pm\frac{d - d_\mathrm{max}}{\tan\alpha} = \frac{\pi a \tau_0}{2 G^*} \quad (21)
 
     Parameters
     ----------

@@ -44,7 +44,23 @@ def _rel(key: str):
 
 
 def check_profile(profile) -> Profile:
-    """``profile`` if it is a :class:`PowerLaw` or a :class:`FlatPunch`; else ``TypeError`` naming it."""
+    """``profile`` if it is a :class:`PowerLaw` or a :class:`FlatPunch`; else ``TypeError`` naming it.
+
+    Parameters
+    ----------
+    profile : object
+        The indenter to check.
+
+    Returns
+    -------
+    PowerLaw or FlatPunch
+        ``profile`` itself.
+
+    Raises
+    ------
+    TypeError
+        Any other type (the paraboloid and a table have their own modules).
+    """
     if not isinstance(profile, (PowerLaw, FlatPunch)):
         raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: a PowerLaw or "
                         "a FlatPunch (mdr_events.contact.indenters)")
@@ -88,6 +104,24 @@ def convex_root(function, derivative, upper, lower, rtol: float = ROOT_RTOL):
     search starts from 1, and a guess where the function is still negative is doubled until it is not. Newton's
     steps from the right then stay right of the root and fall monotonically onto it; an iterate is clipped to
     ``lower`` (safeguard against rounding). Stops when every step is below ``rtol`` of its iterate.
+
+    Parameters
+    ----------
+    function : callable
+        ``function(s)``, vectorised over an array ``s``.
+    derivative : callable
+        Its derivative ``derivative(s)``, vectorised.
+    upper : float or array_like
+        A guess right of each root (non-finite: 1).
+    lower : float or array_like
+        The left end of each bracket (broadcast to ``upper``), where ``function <= 0``.
+    rtol : float, default ROOT_RTOL
+        The relative size of the last Newton step at which the iteration stops.
+
+    Returns
+    -------
+    numpy.ndarray
+        The roots, the shape of ``upper``.
     """
     s = np.array(upper, dtype=float, copy=True)
     lower = np.broadcast_to(np.asarray(lower, dtype=float), s.shape)
@@ -113,7 +147,28 @@ def branch_root(depth: float, kc: float, hess: float, exponent: float, lower: fl
     """``s = √a`` on the stable branch at ``depth``, for Python floats (the continuum's hot loop):
     the root of ``kc s^exponent − hess s − depth`` at or above ``lower`` (the jump-off's ``s``),
     ``exponent = 2n``, ``kc = κ c``, ``hess = sqrt(2πΔγ/E*)``. Newton from an upper bound (as
-    :func:`convex_root`, one point)."""
+    :func:`convex_root`, one point).
+
+    Parameters
+    ----------
+    depth : float
+        The depth ``d`` (m).
+    kc : float
+        ``κₙ c`` (:func:`prefactor`).
+    hess : float
+        ``sqrt(2πΔγ/E*)`` (:func:`hess_prefactor`).
+    exponent : float
+        ``2n``.
+    lower : float
+        ``s`` of the jump-off (the smallest root allowed).
+    rtol : float, default ROOT_RTOL
+        The relative size of the last Newton step at which the iteration stops.
+
+    Returns
+    -------
+    float
+        ``s = √a`` (m^(1/2)).
+    """
     s = max(lower, (2.0 * abs(depth) / kc) ** (1.0 / exponent),
             (2.0 * hess / kc) ** (1.0 / (exponent - 1.0)) if hess > 0.0 else 0.0)
     for _ in range(ROOT_MAX_ITERATIONS):
@@ -128,7 +183,20 @@ def branch_root(depth: float, kc: float, hess: float, exponent: float, lower: fl
 
 
 def prefactor(profile: PowerLaw) -> float:
-    """``κₙ c = g(1)``: the MDR profile is ``g(x) = κₙ c xⁿ`` (3)."""
+    r"""``κₙ c = g(1)``: the MDR profile is ``g(x) = κₙ c xⁿ`` (3).
+
+    .. math:: \kappa_n = \frac{\sqrt{\pi}\, \Gamma(n/2 + 1)}{\Gamma(n/2 + 1/2)}
+
+    Parameters
+    ----------
+    profile : PowerLaw
+        The power law ``f = c rⁿ``.
+
+    Returns
+    -------
+    float
+        ``κₙ c`` (m^(1−n)).
+    """
     return float(_rel("profile_power_law").numeric(1.0, profile.c, profile.n))
 
 
@@ -138,32 +206,121 @@ def cap_per_radius(params: Parameters) -> float:
 
 
 def hess_prefactor(params: Parameters, work_of_adhesion: float) -> float:
-    """``sqrt(2π Δγ / E*)``: Heß's limit (8) is this times ``√a``."""
+    r"""``sqrt(2π Δγ / E*)``: Heß's limit (8) is this times ``√a``.
+
+    .. math:: \Delta l_\mathrm{max}(a) = \sqrt{\frac{2 \pi a \Delta\gamma}{E^*}} \qquad (8)
+
+    Parameters
+    ----------
+    params : Parameters
+        The material (``E*``).
+    work_of_adhesion : float
+        ``Δγ`` (J/m²).
+
+    Returns
+    -------
+    float
+        ``sqrt(2π Δγ / E*)`` (m^(1/2)).
+    """
     return float(_rel("hess_max_elongation").numeric(1.0, work_of_adhesion, params.E_star))
 
 
 def with_radius_at(n: float, radius: float, depth: float) -> PowerLaw:
     """The power law ``f = c rⁿ`` whose non-adhesive contact radius at ``depth`` is ``radius``: ``c`` from
-    ``κₙ c radiusⁿ = depth`` (to compare indenters of equal size, e.g. with the paraboloid's ``√(R d_max)``)."""
+    ``κₙ c radiusⁿ = depth`` (to compare indenters of equal size, e.g. with the paraboloid's ``√(R d_max)``).
+
+    Parameters
+    ----------
+    n : float
+        The exponent, > 0.
+    radius : float
+        The contact radius (m) it should have at ``depth`` without adhesion.
+    depth : float
+        The depth (m).
+
+    Returns
+    -------
+    PowerLaw
+        The power law of exponent ``n`` and that ``c``.
+    """
     return PowerLaw(depth / float(equivalent_profile(radius, PowerLaw(1.0, n))), n)
 
 
 def equivalent_profile(x, profile: PowerLaw):
-    """``g(x) = κₙ c |x|ⁿ``: the MDR profile of the power law, the Abel transform (3)."""
+    r"""``g(x) = κₙ c |x|ⁿ``: the MDR profile of the power law, the Abel transform (3).
+
+    .. math:: g(x) = |x| \int_0^{|x|} \frac{f'(r)}{\sqrt{x^2 - r^2}}\, \mathrm{d}r = \kappa_n c |x|^n \qquad (3)
+
+    Parameters
+    ----------
+    x : float or array_like
+        The spring's coordinate (m).
+    profile : PowerLaw
+        The power law ``f = c rⁿ`` (a flat punch is refused: it keeps its radius while in contact).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ``g(x)`` (m), the shape of ``x``.
+    """
     profile = _power_law_only(profile, "equivalent_profile")
     return _rel("profile_power_law").numeric(np.abs(np.asarray(x, dtype=float)), profile.c, profile.n)
 
 
 def branch_depth(contact_radius, profile: PowerLaw, params: Parameters, work_of_adhesion: float):
-    """Depth of the adhesive contact of radius ``a``, ``κ c aⁿ − sqrt(2π a Δγ / E*)`` (generalised (9))."""
+    r"""Depth of the adhesive contact of radius ``a``, ``κ c aⁿ − sqrt(2π a Δγ / E*)`` (generalised (9)).
+
+    .. math:: d = \kappa_n c\, a^n - \sqrt{\frac{2 \pi a \Delta\gamma}{E^*}} \qquad (9)
+
+    Parameters
+    ----------
+    contact_radius : float or array_like
+        The contact radius ``a`` (m).
+    profile : PowerLaw
+        The power law ``f = c rⁿ`` (a flat punch is refused: it keeps its radius while in contact).
+    params : Parameters
+        The material (``E*``); its ``R`` is the paraboloid's and not used.
+    work_of_adhesion : float
+        ``Δγ`` (J/m², >= 0): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The depth ``d`` (m), the shape of ``contact_radius``.
+    """
     work_of_adhesion = _check_work(work_of_adhesion)
     profile = _power_law_only(profile, "branch_depth")
     return _rel("power_law_depth").numeric(contact_radius, profile.c, profile.n, params.E_star, work_of_adhesion)
 
 
 def normal_force(depth, contact_radius, profile: Profile, params: Parameters):
-    """Normal force (N) of the springs in ``|x| < a`` at depth ``d`` (10); the flat punch: ``2 E* a d`` with its
-    own radius (``contact_radius`` must be it, or ``None``)."""
+    r"""Normal force (N) of the springs in ``|x| < a`` at depth ``d`` (10); the flat punch: ``2 E* a d`` with its
+    own radius (``contact_radius`` must be it, or ``None``).
+
+    .. math:: F_N = 2 E^* \int_0^a \left(d - g(x)\right) \mathrm{d}x
+              = 2 E^* \left(a d - \frac{\kappa_n c\, a^{n+1}}{n + 1}\right) \qquad (10)
+
+    Parameters
+    ----------
+    depth : float or array_like
+        The depth ``d`` (m).
+    contact_radius : float, array_like or None
+        The contact radius ``a`` (m), any (e.g. pinned); for the flat punch ``None`` or its radius.
+    profile : PowerLaw or FlatPunch
+        The indenter.
+    params : Parameters
+        The material (``E*``); its ``R`` is the paraboloid's and not used.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ``F_N`` (N; negative: tensile).
+
+    Raises
+    ------
+    ValueError
+        A ``contact_radius`` other than the flat punch's own.
+    """
     profile = check_profile(profile)
     if isinstance(profile, FlatPunch):
         if contact_radius is not None and not np.all(np.asarray(contact_radius) == profile.radius):
@@ -174,7 +331,27 @@ def normal_force(depth, contact_radius, profile: Profile, params: Parameters):
 
 
 def branch_normal_force(contact_radius, profile: PowerLaw, params: Parameters, work_of_adhesion: float):
-    """Normal force of the adhesive power-law contact of radius ``a`` on its branch (10)."""
+    r"""Normal force of the adhesive power-law contact of radius ``a`` on its branch (10).
+
+    .. math:: F_N = 2 E^* \left(a d(a) - \frac{\kappa_n c\, a^{n+1}}{n + 1}\right), \qquad
+              d(a) = \kappa_n c\, a^n - \sqrt{\frac{2 \pi a \Delta\gamma}{E^*}} \qquad (9), (10)
+
+    Parameters
+    ----------
+    contact_radius : float or array_like
+        The contact radius ``a`` (m).
+    profile : PowerLaw
+        The power law ``f = c rⁿ`` (a flat punch is refused: it keeps its radius while in contact).
+    params : Parameters
+        The material (``E*``); its ``R`` is the paraboloid's and not used.
+    work_of_adhesion : float
+        ``Δγ`` (J/m², >= 0): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ``F_N`` (N; negative: tensile), the shape of ``contact_radius``.
+    """
     work_of_adhesion = _check_work(work_of_adhesion)
     profile = _power_law_only(profile, "branch_normal_force")
     return _rel("power_law_branch_normal_force").numeric(contact_radius, profile.c, profile.n, params.E_star,
@@ -183,7 +360,27 @@ def branch_normal_force(contact_radius, profile: PowerLaw, params: Parameters, w
 
 def jump_in_radius(profile: PowerLaw, params: Parameters, work_of_adhesion: float) -> float:
     """Contact radius on first touch, ``d = 0`` on the branch: ``a^(2n−1) = 2π Δγ / (E* (κ c)²)`` (0 without
-    adhesion)."""
+    adhesion).
+
+    Parameters
+    ----------
+    profile : PowerLaw
+        The power law ``f = c rⁿ`` (a flat punch is refused: it keeps its radius while in contact).
+    params : Parameters
+        The material (``E*``); its ``R`` is the paraboloid's and not used.
+    work_of_adhesion : float
+        ``Δγ0`` (J/m², >= 0), the work of adhesion of the way in.
+
+    Returns
+    -------
+    float
+        The radius ``a`` (m).
+
+    Raises
+    ------
+    ValueError
+        ``n <= 1/2`` with adhesion (no stable contact).
+    """
     work_of_adhesion = _check_work(work_of_adhesion)
     profile = _power_law_only(profile, "jump_in_radius")
     if work_of_adhesion == 0.0:
@@ -198,6 +395,26 @@ def jump_off(profile: Profile, params: Parameters, work_of_adhesion: float) -> d
     Power law: where ``∂d/∂a = 0`` on the branch. Flat punch: the punch's radius at the depth where every
     spring reaches Heß's limit (8) at once, with Kendall's force ``−sqrt(8π a³ E* Δγ)`` (Kendall, J. Phys. D 4
     (1971) 1186), the same under force control.
+
+    Parameters
+    ----------
+    profile : PowerLaw or FlatPunch
+        The indenter.
+    params : Parameters
+        The material (``E*``); its ``R`` is the paraboloid's and not used.
+    work_of_adhesion : float
+        ``Δγ1`` (J/m², >= 0), the work of adhesion of the way out.
+
+    Returns
+    -------
+    dict of str to float
+        ``contact_radius`` (m), ``depth`` (m) and ``normal_force`` (N) there; all 0 for a power law without
+        adhesion.
+
+    Raises
+    ------
+    ValueError
+        ``n <= 1/2`` with adhesion.
     """
     work_of_adhesion = _check_work(work_of_adhesion)
     profile = check_profile(profile)
@@ -217,7 +434,26 @@ def jump_off(profile: Profile, params: Parameters, work_of_adhesion: float) -> d
 
 def flat_punch_radius(depth, profile: FlatPunch, params: Parameters, work_of_adhesion: float, fold_share: float = 0.0):
     """The flat punch's contact radius at ``depth``: its own radius down to the jump-off depth (``fold_share`` of it
-    below still holds), ``nan`` below."""
+    below still holds), ``nan`` below.
+
+    Parameters
+    ----------
+    depth : float or array_like
+        The depth ``d`` (m).
+    profile : FlatPunch
+        The punch.
+    params : Parameters
+        The material (``E*``); its ``R`` is the paraboloid's and not used.
+    work_of_adhesion : float
+        ``Δγ1`` (J/m², >= 0), the work of adhesion of the way out.
+    fold_share : float, default 0.0
+        The share of the jump-off depth below it at which the contact still holds (a tolerance of rounding).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The punch's radius (m), or ``nan`` where the contact has come apart; the shape of ``depth``.
+    """
     bottom = jump_off(profile, params, work_of_adhesion)["depth"] * (1.0 + fold_share)
     depth = np.asarray(depth, dtype=float)
     return _as_output(np.where(depth >= bottom, profile.radius, np.nan), depth)
@@ -225,7 +461,27 @@ def flat_punch_radius(depth, profile: FlatPunch, params: Parameters, work_of_adh
 
 def pull_off_force(profile: Profile, params: Parameters, work_of_adhesion: float) -> float:
     """The pull-off force under force control (N, <= 0): the minimum of (10) along the branch (the paraboloid:
-    JKR's ``−(3/2) π Δγ R``); the flat punch: Kendall's ``−sqrt(8π a³ E* Δγ)``."""
+    JKR's ``−(3/2) π Δγ R``); the flat punch: Kendall's ``−sqrt(8π a³ E* Δγ)``.
+
+    Parameters
+    ----------
+    profile : PowerLaw or FlatPunch
+        The indenter.
+    params : Parameters
+        The material (``E*``); its ``R`` is the paraboloid's and not used.
+    work_of_adhesion : float
+        ``Δγ1`` (J/m², >= 0), the work of adhesion of the way out.
+
+    Returns
+    -------
+    float
+        The pull-off force (N, <= 0; 0 without adhesion).
+
+    Raises
+    ------
+    ValueError
+        ``n <= 1/2`` with adhesion.
+    """
     work_of_adhesion = _check_work(work_of_adhesion)
     profile = check_profile(profile)
     if isinstance(profile, FlatPunch):
@@ -243,6 +499,27 @@ def contact_radius(depth, profile: PowerLaw, params: Parameters, work_of_adhesio
     Without adhesion ``a = (d / (κ c))^(1/n)`` (``nan`` above the surface, ``d < 0``). With adhesion the branch in
     ``s = √a``, ``κ c s^(2n) − sqrt(2πΔγ/E*) s − d``, increases and is convex above the jump-off (``2n >= 1``):
     :func:`convex_root` from an upper bound.
+
+    Parameters
+    ----------
+    depth : float or array_like
+        The depth ``d`` (m).
+    profile : PowerLaw
+        The power law ``f = c rⁿ`` (a flat punch is refused: it keeps its radius while in contact).
+    params : Parameters
+        The material (``E*``); its ``R`` is the paraboloid's and not used.
+    work_of_adhesion : float
+        ``Δγ`` (J/m², >= 0): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The radius ``a`` (m) or ``nan``, the shape of ``depth``.
+
+    Raises
+    ------
+    ValueError
+        ``n <= 1/2`` with adhesion.
     """
     work_of_adhesion = _check_work(work_of_adhesion)
     profile = _power_law_only(profile, "contact_radius")
@@ -267,7 +544,7 @@ def contact_radius(depth, profile: PowerLaw, params: Parameters, work_of_adhesio
 
 
 def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False):
-    """Depth of slip onset in scenario A (the path (14) from first contact at angle ``α`` in degrees).
+    r"""Depth of slip onset in scenario A (the path (14) from first contact at angle ``α`` in degrees).
 
     - Power law without adhesion, ``n != 1``: the closed form of (17), ``d^((n−1)/n) ∝ tan α``.
     - The cone (``n = 1``) without adhesion: the shift ``d / tan α`` and the cap ``K a = K d / (κ c)`` grow in
@@ -280,7 +557,31 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
       ``d = tan α K a`` (onset is full slip), with or without adhesion.
 
     Depths beyond ``d_max`` are returned as they are (the path turns back before them); ``α = 90°`` never
-    slides (``+inf``).
+    slides (``+inf``). Without adhesion the onset (17), with it (18):
+
+    .. math:: \frac{d}{\tan\alpha} = \bar u(a) = \frac{\pi a \tau_0}{2 G^*}, \qquad
+              d = \kappa_n c\, a^n - \sqrt{\frac{2 \pi a \Delta\gamma_0}{E^*}} \qquad (17), (18)
+
+    Parameters
+    ----------
+    alpha : float or array_like
+        The path angle in degrees, in [0, 90].
+    profile : PowerLaw or FlatPunch
+        The indenter.
+    params : Parameters
+        The material (``E*``, ``G*``, ``τ0``, ``Δγ0``); its ``R`` is the paraboloid's and not used.
+    adhesion : bool, default False
+        With adhesion: the radius of the ``Δγ0`` branch (9); without: the non-adhesive radius.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The onset depth ``d_crit`` (m), the shape of ``alpha``; ``nan`` where none exists, ``+inf`` at 90°.
+
+    Raises
+    ------
+    ValueError
+        An angle out of range, or a power law with ``n < 1`` with adhesion.
     """
     profile = check_profile(profile)
     check_flag("adhesion", adhesion)
@@ -320,10 +621,28 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
 
 
 def critical_angle_A(profile: Profile, params: Parameters, adhesion: bool = True) -> float:
-    """Scenario A's critical angle (degrees): slip begins exactly at ``d_max``, ``tan α_c = d_max / ū(a(d_max))``;
+    r"""Scenario A's critical angle (degrees): slip begins exactly at ``d_max``, ``tan α_c = d_max / ū(a(d_max))``;
     below it the springs slide while indenting. The radius at ``d_max`` is the branch's (``Δγ0``) with adhesion,
     the non-adhesive one without, the punch's radius for the flat punch. The cone without adhesion gives
-    ``tan α_c = κ c / K`` at any depth."""
+    ``tan α_c = κ c / K`` at any depth.
+
+    .. math:: \tan\alpha_c = \frac{d_\mathrm{max}}{\bar u(a(d_\mathrm{max}))}
+              = \frac{2 G^* d_\mathrm{max}}{\pi a \tau_0} \qquad (17), (18)
+
+    Parameters
+    ----------
+    profile : PowerLaw or FlatPunch
+        The indenter.
+    params : Parameters
+        The material (``E*``, ``G*``, ``τ0``, ``Δγ0``, ``d_max``); its ``R`` is the paraboloid's and not used.
+    adhesion : bool, default True
+        With adhesion: the radius of the ``Δγ0`` branch (9); without: the non-adhesive radius.
+
+    Returns
+    -------
+    float
+        ``α_c`` in degrees.
+    """
     profile = check_profile(profile)
     check_flag("adhesion", adhesion)
     if isinstance(profile, FlatPunch):
@@ -336,7 +655,7 @@ def critical_angle_A(profile: Profile, params: Parameters, adhesion: bool = True
 
 
 def d_crit_B(alpha, profile: Profile, params: Parameters, adhesion: bool = False):
-    """Depth of slip onset in scenario B's pull-off (the path (19): vertically in to ``d_max``, out at angle
+    r"""Depth of slip onset in scenario B's pull-off (the path (19): vertically in to ``d_max``, out at angle
     ``α`` in degrees), as (20), (21) take it: the radius on the pull-off branch (``Δγ1``; without adhesion the
     non-adhesive radius) from the start of the pull-off.
 
@@ -348,6 +667,30 @@ def d_crit_B(alpha, profile: Profile, params: Parameters, adhesion: bool = False
       unless that lies below Kendall's pull-off depth (``-inf``).
 
     ``d < d_crit`` is the sliding region; ``α = 90°`` never slides (``-inf``).
+
+    .. math:: \frac{d_\mathrm{max} - d}{\tan\alpha} = \frac{\pi a \tau_0}{2 G^*}, \qquad
+              d = \kappa_n c\, a^n - \sqrt{\frac{2 \pi a \Delta\gamma_1}{E^*}} \qquad (20), (21)
+
+    Parameters
+    ----------
+    alpha : float or array_like
+        The path angle in degrees, in [0, 90].
+    profile : PowerLaw or FlatPunch
+        The indenter.
+    params : Parameters
+        The material (``E*``, ``G*``, ``τ0``, ``Δγ1``, ``d_max``); its ``R`` is the paraboloid's and not used.
+    adhesion : bool, default False
+        With adhesion: the radius of the ``Δγ1`` branch (9); without: the non-adhesive radius.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The onset depth ``d_crit`` (m), the shape of ``alpha``; ``-inf`` where the contact comes apart first.
+
+    Raises
+    ------
+    ValueError
+        An angle out of range, or ``n <= 1/2`` with adhesion.
     """
     profile = check_profile(profile)
     check_flag("adhesion", adhesion)
@@ -381,10 +724,28 @@ def d_crit_B(alpha, profile: Profile, params: Parameters, adhesion: bool = False
 
 
 def critical_angle_B(profile: Profile, params: Parameters, adhesion: bool = True) -> float:
-    """Scenario B's critical angle (degrees): above it the contact comes apart (the jump-off of the ``Δγ1``
+    r"""Scenario B's critical angle (degrees): above it the contact comes apart (the jump-off of the ``Δγ1``
     branch, or Kendall's depth for the flat punch) before any spring slides, ``tan α_c = (d_max − d_j) / ū(a_j)``
     at the jump-off ``(a_j, d_j)`` ((21) there). Without adhesion the contact shrinks to nothing and slip always
-    comes first: 90°."""
+    comes first: 90°.
+
+    .. math:: \tan\alpha_c = \frac{d_\mathrm{max} - d_j}{\bar u(a_j)} = \frac{2 G^* (d_\mathrm{max} - d_j)}{\pi a_j \tau_0}
+              \qquad (21)
+
+    Parameters
+    ----------
+    profile : PowerLaw or FlatPunch
+        The indenter.
+    params : Parameters
+        The material (``E*``, ``G*``, ``τ0``, ``Δγ1``, ``d_max``); its ``R`` is the paraboloid's and not used.
+    adhesion : bool, default True
+        With adhesion: the radius of the ``Δγ1`` branch (9); without: the non-adhesive radius.
+
+    Returns
+    -------
+    float
+        ``α_c`` in degrees.
+    """
     profile = check_profile(profile)
     check_flag("adhesion", adhesion)
     if isinstance(profile, FlatPunch):  # comes off whole, at Kendall's depth (at the surface without adhesion)
@@ -400,7 +761,7 @@ def critical_angle_B(profile: Profile, params: Parameters, adhesion: bool = True
 
 
 def d_crit_B_indentation(alpha, profile: Profile, params: Parameters, adhesion: bool = False):
-    """Depth of slip onset on scenario B's indentation branch (the "+" sign of (20), (21); the path
+    r"""Depth of slip onset on scenario B's indentation branch (the "+" sign of (20), (21); the path
     :meth:`~mdr_events.Path.scenario_B_indentation`: vertically in to ``d_max``, further in at angle ``α``):
     ``(d − d_max) / tan α = K a(d)`` on the ``Δγ0`` branch (without adhesion the non-adhesive radius).
 
@@ -410,6 +771,30 @@ def d_crit_B_indentation(alpha, profile: Profile, params: Parameters, adhesion: 
     - Flat punch: every spring anchored at ``x = 0``, all slide at ``d = d_max + tan α K a``.
 
     ``d > d_crit`` is the sliding region; ``α = 90°`` never slides (``+inf``).
+
+    .. math:: \frac{d - d_\mathrm{max}}{\tan\alpha} = \frac{\pi a \tau_0}{2 G^*}, \qquad
+              d = \kappa_n c\, a^n - \sqrt{\frac{2 \pi a \Delta\gamma_0}{E^*}} \qquad (20), (21)
+
+    Parameters
+    ----------
+    alpha : float or array_like
+        The path angle in degrees, in [0, 90].
+    profile : PowerLaw or FlatPunch
+        The indenter.
+    params : Parameters
+        The material (``E*``, ``G*``, ``τ0``, ``Δγ0``, ``d_max``); its ``R`` is the paraboloid's and not used.
+    adhesion : bool, default False
+        With adhesion: the radius of the ``Δγ0`` branch (9); without: the non-adhesive radius.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The onset depth ``d_crit`` (m), the shape of ``alpha``; ``+inf`` where it never slides.
+
+    Raises
+    ------
+    ValueError
+        An angle out of range, or a power law with ``n < 1``.
     """
     profile = check_profile(profile)
     check_flag("adhesion", adhesion)
@@ -441,10 +826,34 @@ def d_crit_B_indentation(alpha, profile: Profile, params: Parameters, adhesion: 
 
 def critical_angle_B_indentation(profile: Profile, params: Parameters, adhesion: bool = True,
                                  final_depth: float | None = None) -> float:
-    """The "+" branch's critical angle (degrees): slip begins exactly at ``final_depth`` (default ``2 d_max``, as
+    r"""The "+" branch's critical angle (degrees): slip begins exactly at ``final_depth`` (default ``2 d_max``, as
     :meth:`~mdr_events.Path.scenario_B_indentation`), ``tan α_c = (final − d_max) / ū(a(final))`` with the ``Δγ0``
     branch's radius there (the punch's radius for the flat punch); below it the springs slide before the path
-    turns back."""
+    turns back.
+
+    .. math:: \tan\alpha_c = \frac{d_\mathrm{final} - d_\mathrm{max}}{\bar u(a(d_\mathrm{final}))} \qquad (21)
+
+    Parameters
+    ----------
+    profile : PowerLaw or FlatPunch
+        The indenter.
+    params : Parameters
+        The material (``E*``, ``G*``, ``τ0``, ``Δγ0``, ``d_max``); its ``R`` is the paraboloid's and not used.
+    adhesion : bool, default True
+        With adhesion: the radius of the ``Δγ0`` branch (9); without: the non-adhesive radius.
+    final_depth : float, optional
+        The deepest point (m), > ``d_max``; default ``2 d_max``.
+
+    Returns
+    -------
+    float
+        ``α_c`` in degrees.
+
+    Raises
+    ------
+    ValueError
+        A ``final_depth`` not beyond ``d_max``.
+    """
     profile = check_profile(profile)
     check_flag("adhesion", adhesion)
     final = 2.0 * params.d_max if final_depth is None else final_depth

@@ -120,7 +120,7 @@ LATEX_NAMES: dict[sp.Symbol, str] = {
 class Relation:
     """One derived relation ``lhs = rhs`` of the model.
 
-    Attributes
+    Parameters
     ----------
     key : str
         Stable identifier, e.g. ``"jkr_depth"``.
@@ -129,13 +129,14 @@ class Relation:
         the paper uses without numbering them).
     title : str
         What the relation says, in words.
-    lhs, rhs : sympy.Expr
-        The two sides. For a polynomial reduction ``lhs`` is the polynomial
-        and ``rhs`` is ``0``.
-    args : tuple of sympy.Symbol
+    lhs : sympy.Expr
+        The left-hand side; for a polynomial reduction the polynomial.
+    rhs : sympy.Expr
+        The right-hand side; ``0`` for a polynomial reduction.
+    args : tuple of sympy.Symbol, default ()
         The arguments, in order, of :attr:`numeric` (keyword names are the
         symbol names).
-    variable : sympy.Symbol or None
+    variable : sympy.Symbol or None, default None
         For a polynomial relation, its unknown (:attr:`coefficients` are the
         coefficients in that variable, highest power first).
     """
@@ -154,11 +155,23 @@ class Relation:
         return sp.Eq(self.lhs, self.rhs, evaluate=False)
 
     def latex(self) -> str:
-        """LaTeX of the relation with the paper's symbols."""
+        """LaTeX of the relation with the paper's symbols.
+
+        Returns
+        -------
+        str
+            ``lhs = rhs`` in LaTeX, the symbols named by :data:`LATEX_NAMES`.
+        """
         return sp.latex(self.eq, symbol_names=LATEX_NAMES)
 
     def pretty(self) -> str:
-        """Unicode pretty print of the relation."""
+        """Unicode pretty print of the relation.
+
+        Returns
+        -------
+        str
+            SymPy's two-dimensional rendering, in Unicode.
+        """
         return sp.pretty(self.eq, use_unicode=True)
 
     @functools.cached_property
@@ -172,6 +185,23 @@ class Relation:
         Arguments are given positionally in the order of :attr:`args` or by
         the symbol names. For a polynomial relation the polynomial itself is
         evaluated (its :attr:`variable` must be among the arguments).
+
+        Parameters
+        ----------
+        *values : float or array_like
+            The arguments in the order of :attr:`args` (Python numbers become NumPy floats: 1/0 gives ``inf``).
+        **named : float or array_like
+            Or all of them by their symbols' names; not both.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            The right-hand side (the polynomial for a polynomial relation), broadcast over the arguments.
+
+        Raises
+        ------
+        TypeError
+            Arguments both positional and named, unknown, missing or too many.
         """
         return self._numeric(*self._ordered(values, named))
 
@@ -205,7 +235,22 @@ class Relation:
     def coefficients(self, *values, **named) -> list:
         """Coefficients of the polynomial in :attr:`variable`, highest first.
 
-        Arguments as for :meth:`numeric`, without the polynomial's variable.
+        Parameters
+        ----------
+        *values : float or array_like
+            The arguments of :attr:`args` but :attr:`variable`, in order.
+        **named : float or array_like
+            Or all of them by their symbols' names; not both.
+
+        Returns
+        -------
+        list
+            The coefficients (floats or arrays), highest power first.
+
+        Raises
+        ------
+        TypeError
+            A relation that is not a polynomial, or arguments as :meth:`numeric` refuses them.
         """
         args, fn = self._coefficients
         return fn(*self._ordered(values, named, args))
@@ -242,11 +287,26 @@ def _as_numpy_scalar(value):
 # ----------------------------------------------------------------------------
 # the Abel transform (3)
 def abel_transform(profile: sp.Expr, radial: sp.Symbol = r, coordinate: sp.Symbol = x) -> sp.Expr:
-    """MDR equivalent profile of an axisymmetric profile ``f(r)``, eq. (3).
+    r"""MDR equivalent profile of an axisymmetric profile ``f(r)``, eq. (3).
 
-    ``g(x) = |x| ∫_0^{|x|} f'(r) / sqrt(x² − r²) dr`` (for ``x > 0``),
-    evaluated with the substitution ``r = x t`` so that SymPy meets a
+    .. math:: g(x) = |x| \int_0^{|x|} \frac{f'(r)}{\sqrt{x^2 - r^2}}\, \mathrm{d}r \qquad (3)
+
+    (for ``x > 0``), evaluated with the substitution ``r = x t`` so that SymPy meets a
     Beta-type integral for power laws.
+
+    Parameters
+    ----------
+    profile : sympy.Expr
+        ``f(r)``, an expression in ``radial``.
+    radial : sympy.Symbol, optional
+        The radius ``r`` of ``profile`` (default the module's ``r``).
+    coordinate : sympy.Symbol, optional
+        The springs' coordinate ``x`` of the result (default the module's ``x``).
+
+    Returns
+    -------
+    sympy.Expr
+        ``g(x)``, simplified.
     """
     integrand = sp.diff(profile, radial).subs(radial, coordinate * t) / sp.sqrt(1 - t**2)
     value = coordinate * sp.integrate(integrand, (t, 0, 1))
@@ -276,6 +336,11 @@ def cache_path() -> Path | None:
     ``~/.cache/mdr_events``; ``MDR_EVENTS_NO_CACHE=1`` turns it off. The file
     name carries a hash of this module's source and the SymPy version, so a
     changed derivation is never read from an old cache.
+
+    Returns
+    -------
+    pathlib.Path or None
+        The cache file ``relations-<hash>.pickle`` in that directory, or ``None``.
     """
     if os.environ.get("MDR_EVENTS_NO_CACHE"):
         return None
@@ -334,7 +399,12 @@ def derive_afresh() -> dict[str, Relation]:
     """Run every derivation with SymPy (about 4 s), bypassing any cache.
 
     The sections run in the paper's order, each adding its relations and handing on the expressions the
-    next ones build on; the relations come back by key in that order.
+    next ones build on.
+
+    Returns
+    -------
+    dict of str to Relation
+        The relations of the model by key, in derivation order.
     """
     out: dict[str, Relation] = {}
 
@@ -895,7 +965,13 @@ def _positive_cubic_root(cubic: sp.Expr) -> sp.Expr:
 
 
 def relations() -> dict[str, Relation]:
-    """All derived relations by key, in derivation order (derived once, then cached)."""
+    """All derived relations by key, in derivation order (derived once, then cached).
+
+    Returns
+    -------
+    dict of str to Relation
+        The paraboloid's model, the power law's, the friction laws' and the adhesive friction's.
+    """
     model = derive()
     power_law = derive_power_law()
     ordered = {"abel_transform": model["abel_transform"], power_law.key: power_law}
@@ -907,7 +983,23 @@ def relations() -> dict[str, Relation]:
 
 
 def relation(key: str) -> Relation:
-    """One derived relation by key; ``KeyError`` lists the known keys."""
+    """One derived relation by key; ``KeyError`` lists the known keys.
+
+    Parameters
+    ----------
+    key : str
+        The relation's key, e.g. ``"jkr_depth"`` (:func:`relations` lists them).
+
+    Returns
+    -------
+    Relation
+        The relation, derived once per process.
+
+    Raises
+    ------
+    KeyError
+        An unknown key, listing the known ones.
+    """
     if key == "profile_power_law":
         return derive_power_law()
     if key in POWER_LAW_KEYS:

@@ -54,7 +54,18 @@ def _check(profile) -> TabulatedProfile:
 
 
 class EquivalentProfile:
-    """``g(x)`` of a table on ``[0, r_max]`` (PCHIP through the quadrature's values), its slope and its integral."""
+    """``g(x)`` of a table on ``[0, r_max]`` (PCHIP through the quadrature's values), its slope and its integral.
+
+    Parameters
+    ----------
+    profile : TabulatedProfile
+        The table ``f(r)``; ``g`` is its Abel transform (3), computed when made (:func:`equivalent` caches it).
+
+    Raises
+    ------
+    ValueError
+        A table whose ``g`` does not increase, naming where.
+    """
 
     def __init__(self, profile: TabulatedProfile):
         self.profile = profile
@@ -119,12 +130,39 @@ class ScalarPiecewise:
 
 @functools.lru_cache(maxsize=32)
 def equivalent(profile: TabulatedProfile) -> EquivalentProfile:
-    """The :class:`EquivalentProfile` of ``profile``, computed once per process."""
+    """The :class:`EquivalentProfile` of ``profile``, computed once per process.
+
+    Parameters
+    ----------
+    profile : TabulatedProfile
+        The table ``f(r)``.
+
+    Returns
+    -------
+    EquivalentProfile
+        Its ``g``, cached (the last 32 tables).
+    """
     return EquivalentProfile(_check(profile))
 
 
 def equivalent_profile(x, profile: TabulatedProfile):
-    """``g(x)``, the Abel transform (3) of the table (``+inf`` beyond its last radius)."""
+    r"""``g(x)``, the Abel transform (3) of the table (``+inf`` beyond its last radius).
+
+    .. math:: g(x) = |x| \int_0^{|x|} \frac{f'(r)}{\sqrt{x^2 - r^2}}\, \mathrm{d}r
+              = |x| \int_0^{\pi/2} f'(|x| \sin\theta)\, \mathrm{d}\theta \qquad (3)
+
+    Parameters
+    ----------
+    x : float or array_like
+        The spring's coordinate (m).
+    profile : TabulatedProfile
+        The table ``f(r)``.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ``g(x)`` (m), the shape of ``x``.
+    """
     values = equivalent(profile)(x)
     return float(values) if np.ndim(x) == 0 else values
 
@@ -133,8 +171,20 @@ class TabulatedBranch:
     """The branch ``d(a) = g(a) − k √a`` of a work of adhesion (``k = sqrt(2π Δγ/E*)``, (8)) on ``[0, r_max]``: its
     minimum (the jump-off, or ``a = 0`` without adhesion), and the radius of a depth above it.
 
-    Raises ``ValueError`` if the branch does not increase from its minimum to the table's end (a contact radius
-    would not be one function of the depth).
+    Parameters
+    ----------
+    profile : TabulatedProfile
+        The table ``f(r)``.
+    params : Parameters
+        The material (``E*``).
+    work_of_adhesion : float
+        ``Δγ`` (J/m², >= 0) of the branch.
+
+    Raises
+    ------
+    ValueError
+        If the branch does not increase from its minimum to the table's end (a contact radius would not be one
+        function of the depth).
     """
 
     def __init__(self, profile: TabulatedProfile, params: Parameters, work_of_adhesion: float):
@@ -165,24 +215,84 @@ class TabulatedBranch:
         self._depths = [self.depth(a) for a in self._radii]
 
     def depth(self, a: float) -> float:
+        """The branch's depth ``d(a) = g(a) − k √a`` at the radius ``a``, one Python float.
+
+        Parameters
+        ----------
+        a : float
+            The radius (m), within the table.
+
+        Returns
+        -------
+        float
+            The depth (m); 0 at ``a <= 0``.
+        """
         return self.shape.scalar_g(a) - self.k * math.sqrt(a) if a > 0 else 0.0
 
     def depths(self, a: np.ndarray) -> np.ndarray:
+        """The branch's depths at the radii ``a``, vectorised.
+
+        Parameters
+        ----------
+        a : array_like
+            The radii (m); those past the table are clipped to its end.
+
+        Returns
+        -------
+        numpy.ndarray
+            The depths (m), the shape of ``a``; 0 at ``a <= 0``.
+        """
         a = np.asarray(a, dtype=float)
         inside = np.clip(a, 0.0, self.shape.x_max)
         return np.where(a > 0, self.shape.g(inside) - self.k * np.sqrt(inside), 0.0)
 
     def slope(self, a: float) -> float:
+        """``∂d/∂a`` of the branch at the radius ``a``, one Python float.
+
+        Parameters
+        ----------
+        a : float
+            The radius (m).
+
+        Returns
+        -------
+        float
+            The slope (1); at ``a <= 0``: ``-inf`` with adhesion, ``g'(0)`` without.
+        """
         if a > 0:
             return self.shape.scalar_slope(a) - 0.5 * self.k / math.sqrt(a)
         return -math.inf if self.k > 0 else self.shape.scalar_slope(0.0)
 
     def integral(self, a: float) -> float:
-        """``∫_0^a d(ξ) dξ`` along the branch."""
+        """``∫_0^a d(ξ) dξ`` along the branch.
+
+        Parameters
+        ----------
+        a : float
+            The radius (m).
+
+        Returns
+        -------
+        float
+            The integral (m²; 0 at ``a <= 0``).
+        """
         return self.shape.scalar_integral(a) - 2.0 / 3.0 * self.k * a**1.5 if a > 0 else 0.0
 
     def radius(self, depth: float, rtol: float = RADIUS_RTOL) -> float:
-        """The radius above the jump-off at ``depth``; ``nan`` below the jump-off or beyond the table's end."""
+        """The radius above the jump-off at ``depth``; ``nan`` below the jump-off or beyond the table's end.
+
+        Parameters
+        ----------
+        depth : float
+            The depth ``d`` (m).
+        rtol : float, default RADIUS_RTOL
+            The relative accuracy of the root (at least :data:`RADIUS_RTOL`).
+
+        Returns
+        -------
+        float
+            The radius ``a`` (m) or ``nan``.
+        """
         if not self.jump_off_depth <= depth <= self.deepest:
             return math.nan
         if depth == self.jump_off_depth:
@@ -194,18 +304,64 @@ class TabulatedBranch:
                                xtol=1e-300, rtol=max(rtol, RADIUS_RTOL))
 
     def radii(self, depth: np.ndarray) -> np.ndarray:
+        """:meth:`radius` of each depth of an array, elementwise.
+
+        Parameters
+        ----------
+        depth : array_like
+            The depths (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The radii (m) or ``nan``, the shape of ``depth``.
+        """
         depth = np.asarray(depth, dtype=float)
         return np.vectorize(self.radius, otypes=[float])(depth)
 
 
 @functools.lru_cache(maxsize=64)
 def branch(profile: TabulatedProfile, params: Parameters, work_of_adhesion: float) -> TabulatedBranch:
-    """The :class:`TabulatedBranch` of ``profile`` for ``params`` and a work of adhesion, built once per process."""
+    """The :class:`TabulatedBranch` of ``profile`` for ``params`` and a work of adhesion, built once per process.
+
+    Parameters
+    ----------
+    profile : TabulatedProfile
+        The table ``f(r)``.
+    params : Parameters
+        The material (``E*``); its ``R`` is the paraboloid's and not used.
+    work_of_adhesion : float
+        ``Δγ`` (J/m², >= 0): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
+
+    Returns
+    -------
+    TabulatedBranch
+        The branch, cached (the last 64).
+    """
     return TabulatedBranch(_check(profile), params, power_law.check_work(work_of_adhesion))
 
 
 def normal_force(depth, contact_radius, profile: TabulatedProfile, params: Parameters):
-    """``F_N = 2 E* (d a − ∫_0^a g)`` (10) of the springs in ``|x| < a`` at depth ``d``."""
+    r"""``F_N = 2 E* (d a − ∫_0^a g)`` (10) of the springs in ``|x| < a`` at depth ``d``.
+
+    .. math:: F_N = 2 E^* \int_0^a \left(d - g(x)\right) \mathrm{d}x \qquad (10)
+
+    Parameters
+    ----------
+    depth : float or array_like
+        The depth ``d`` (m).
+    contact_radius : float or array_like
+        The contact radius ``a`` (m), any (clipped to the table).
+    profile : TabulatedProfile
+        The table ``f(r)``.
+    params : Parameters
+        The material (``E*``); its ``R`` is the paraboloid's and not used.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ``F_N`` (N; negative: tensile).
+    """
     shape = equivalent(profile)
     a = np.asarray(contact_radius, dtype=float)
     force = 2.0 * params.E_star * (np.asarray(depth, dtype=float) * a - shape.g_integral(np.clip(a, 0.0, shape.x_max)))
@@ -213,21 +369,70 @@ def normal_force(depth, contact_radius, profile: TabulatedProfile, params: Param
 
 
 def contact_radius(depth, profile: TabulatedProfile, params: Parameters, work_of_adhesion: float):
-    """The radius on the branch of ``work_of_adhesion`` at ``depth`` (``nan`` below its jump-off or past the table)."""
+    r"""The radius on the branch of ``work_of_adhesion`` at ``depth`` (``nan`` below its jump-off or past the table).
+
+    .. math:: d = g(a) - \sqrt{\frac{2 \pi a \Delta\gamma}{E^*}} \qquad (9)
+
+    Parameters
+    ----------
+    depth : float or array_like
+        The depth ``d`` (m).
+    profile : TabulatedProfile
+        The table ``f(r)``.
+    params : Parameters
+        The material (``E*``); its ``R`` is the paraboloid's and not used.
+    work_of_adhesion : float
+        ``Δγ`` (J/m², >= 0): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The radius ``a`` (m) or ``nan``, the shape of ``depth``.
+    """
     radii = branch(profile, params, work_of_adhesion).radii(depth)
     return float(radii) if np.ndim(depth) == 0 else radii
 
 
 def jump_off(profile: TabulatedProfile, params: Parameters, work_of_adhesion: float) -> dict[str, float]:
     """The end of contact under displacement control: the branch's minimum (``contact_radius``, ``depth``,
-    ``normal_force``)."""
+    ``normal_force``).
+
+    Parameters
+    ----------
+    profile : TabulatedProfile
+        The table ``f(r)``.
+    params : Parameters
+        The material (``E*``); its ``R`` is the paraboloid's and not used.
+    work_of_adhesion : float
+        ``Δγ1`` (J/m², >= 0), the work of adhesion of the way out.
+
+    Returns
+    -------
+    dict of str to float
+        ``contact_radius`` (m), ``depth`` (m) and ``normal_force`` (N) there.
+    """
     line = branch(profile, params, work_of_adhesion)
     return {"contact_radius": line.jump_off_radius, "depth": line.jump_off_depth,
             "normal_force": normal_force(line.jump_off_depth, line.jump_off_radius, profile, params)}
 
 
 def pull_off_force(profile: TabulatedProfile, params: Parameters, work_of_adhesion: float) -> float:
-    """The pull-off force under force control (N): the least normal force along the branch above its jump-off."""
+    """The pull-off force under force control (N): the least normal force along the branch above its jump-off.
+
+    Parameters
+    ----------
+    profile : TabulatedProfile
+        The table ``f(r)``.
+    params : Parameters
+        The material (``E*``); its ``R`` is the paraboloid's and not used.
+    work_of_adhesion : float
+        ``Δγ1`` (J/m², >= 0), the work of adhesion of the way out.
+
+    Returns
+    -------
+    float
+        The pull-off force (N, <= 0; 0 without adhesion).
+    """
     line = branch(profile, params, work_of_adhesion)
     if line.k == 0.0:
         return 0.0
@@ -245,12 +450,33 @@ def pull_off_force(profile: TabulatedProfile, params: Parameters, work_of_adhesi
 
 
 def d_crit_A(alpha, profile: TabulatedProfile, params: Parameters, adhesion: bool = False):
-    """Depth of slip onset in scenario A (the path (14) from first contact at ``α`` in degrees): the first depth on
+    r"""Depth of slip onset in scenario A (the path (14) from first contact at ``α`` in degrees): the first depth on
     the branch (``Δγ0`` with adhesion) where ``d = tan α K a``; no closed form exists, so the root of
     ``d(a) − tan α K a`` rising through zero above the jump-off is bracketed on the table's grid and refined.
     ``nan`` where there is none within the table; ``α = 90°`` never slides (``+inf``). Without adhesion an onset inside
     the table's first interval is the interpolant's: its tip has the slope ``g'(0)`` of the PCHIP, and at angles whose
-    ``tan α K`` lies below it the springs slide from first contact (0), as they do in the simulators of the table."""
+    ``tan α K`` lies below it the springs slide from first contact (0), as they do in the simulators of the table.
+
+    .. math:: \frac{d}{\tan\alpha} = \frac{\pi a \tau_0}{2 G^*}, \qquad
+              d = g(a) - \sqrt{\frac{2 \pi a \Delta\gamma_0}{E^*}} \qquad (17), (18)
+
+    Parameters
+    ----------
+    alpha : float or array_like
+        The path angle in degrees, in [0, 90].
+    profile : TabulatedProfile
+        The table ``f(r)``.
+    params : Parameters
+        The material (``E*``, ``G*``, ``τ0``, ``Δγ0``); its ``R`` is the paraboloid's and not used.
+    adhesion : bool, default False
+        With adhesion: the ``Δγ0`` branch (9); without: the non-adhesive one.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The onset depth ``d_crit`` (m), the shape of ``alpha``; ``nan`` where none lies within the table, ``+inf``
+        at 90°.
+    """
     alpha_arr = validate_alpha(alpha)
     line = branch(profile, params, params.dgamma0 if adhesion else 0.0)
     K = power_law.cap_per_radius(params)
@@ -283,8 +509,26 @@ def d_crit_A(alpha, profile: TabulatedProfile, params: Parameters, adhesion: boo
 
 
 def critical_angle_A(profile: TabulatedProfile, params: Parameters, adhesion: bool = True) -> float:
-    """Scenario A's critical angle (degrees): ``tan α_c = d_max / (K a(d_max))`` on the ``Δγ0`` branch (with
-    adhesion) or the non-adhesive one."""
+    r"""Scenario A's critical angle (degrees): ``tan α_c = d_max / (K a(d_max))`` on the ``Δγ0`` branch (with
+    adhesion) or the non-adhesive one.
+
+    .. math:: \tan\alpha_c = \frac{d_\mathrm{max}}{\bar u(a(d_\mathrm{max}))}
+              = \frac{2 G^* d_\mathrm{max}}{\pi a \tau_0} \qquad (17), (18)
+
+    Parameters
+    ----------
+    profile : TabulatedProfile
+        The table ``f(r)``.
+    params : Parameters
+        The material (``E*``, ``G*``, ``τ0``, ``Δγ0``, ``d_max``); its ``R`` is the paraboloid's and not used.
+    adhesion : bool, default True
+        With adhesion: the ``Δγ0`` branch (9); without: the non-adhesive one.
+
+    Returns
+    -------
+    float
+        ``α_c`` in degrees.
+    """
     radius = contact_radius(params.d_max, profile, params, params.dgamma0 if adhesion else 0.0)
     angle = symbolic.relation("critical_angle_A").numeric(radius, params.d_max, params.tau0, params.G_star)
     return float(np.rad2deg(angle))

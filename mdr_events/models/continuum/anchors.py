@@ -32,7 +32,21 @@ if TYPE_CHECKING:
 
 @dataclass(frozen=True)
 class Piece:
-    """``Y(ξ) = x0 + ratio (d0(ξ) − d_ref)`` on ``[start, end]`` (``ratio = 0``: constant ``x0``)."""
+    """``Y(ξ) = x0 + ratio (d0(ξ) − d_ref)`` on ``[start, end]`` (``ratio = 0``: constant ``x0``).
+
+    Parameters
+    ----------
+    start : float
+        The first spring's coordinate ``ξ`` (m).
+    end : float
+        The last spring's coordinate (m).
+    x0 : float
+        The anchor (m) at the depth ``d_ref``; a constant piece's value.
+    ratio : float, default 0.0
+        ``v_x / v_d`` of the path segment the springs attached on (0: a constant piece).
+    d_ref : float, default 0.0
+        The depth (m) at which the indenter was at ``x0``.
+    """
 
     start: float
     end: float
@@ -42,14 +56,37 @@ class Piece:
 
     @property
     def constant(self) -> bool:
+        """Whether the piece is constant (``ratio == 0``)."""
         return self.ratio == 0.0
 
     def same_growth(self, other: "Piece") -> bool:
-        """Whether ``other`` continues the growth of this piece (the same ``Y``)."""
+        """Whether ``other`` continues the growth of this piece (the same ``Y``).
+
+        Parameters
+        ----------
+        other : Piece
+            The piece that follows.
+
+        Returns
+        -------
+        bool
+            ``True`` if ``x0``, ``ratio`` and ``d_ref`` are equal.
+        """
         return (self.x0, self.ratio, self.d_ref) == (other.x0, other.ratio, other.d_ref)
 
     def rises_towards(self, cap: Cap) -> bool:
-        """Whether ``cap · Y`` increases with ``ξ`` on this (growth) piece."""
+        """Whether ``cap · Y`` increases with ``ξ`` on this (growth) piece.
+
+        Parameters
+        ----------
+        cap : Cap
+            The side, +1 or −1.
+
+        Returns
+        -------
+        bool
+            ``True`` if ``cap · ratio > 0``.
+        """
         return self.ratio > 0 if cap > 0 else self.ratio < 0
 
 
@@ -103,6 +140,11 @@ class AnchorMap:
         It shares this map's list, seeing its first ``len`` entries; this map appends in place but
         replaces the list before it changes a shared entry. A path of N growth segments then keeps N
         snapshots in O(N) memory, not O(N²).
+
+        Returns
+        -------
+        AnchorMap
+            The snapshot.
         """
         snapshot = AnchorMap(self.attach, self.rtol)
         snapshot.pieces = _Prefix(self.pieces, len(self.pieces))
@@ -122,10 +164,19 @@ class AnchorMap:
 
     # --- building -------------------------------------------------------------------------------
     def reset(self) -> None:
+        """Forget every piece (the contact has come apart)."""
         self.pieces, self._shared = [], 0
 
     def extend(self, start: float, piece: Piece) -> None:
-        """Forget everything beyond ``start`` and append ``piece`` (springs attaching from ``start``)."""
+        """Forget everything beyond ``start`` and append ``piece`` (springs attaching from ``start``).
+
+        Parameters
+        ----------
+        start : float
+            The coordinate (m) from which springs attach.
+        piece : Piece
+            Their anchors (merged with the last piece where it continues its growth).
+        """
         pieces = self.pieces
         if not pieces or pieces[-1].start < start and pieces[-1].end <= start:  # nothing to forget: the tail only
             if pieces and pieces[-1].same_growth(piece):
@@ -141,12 +192,24 @@ class AnchorMap:
         self.pieces, self._shared = kept, 0
 
     def close(self, end: float) -> None:
-        """Fix the end of the last piece (the radius the growth stopped at)."""
+        """Fix the end of the last piece (the radius the growth stopped at).
+
+        Parameters
+        ----------
+        end : float
+            The radius (m).
+        """
         if self.pieces and self.pieces[-1].end != end:
             self._set_last(dataclasses.replace(self.pieces[-1], end=end))
 
     def truncate(self, radius: float) -> None:
-        """Forget the springs beyond ``radius`` (they have detached)."""
+        """Forget the springs beyond ``radius`` (they have detached).
+
+        Parameters
+        ----------
+        radius : float
+            The contact radius (m).
+        """
         if self.pieces and self.pieces[-1].end > radius:
             self.pieces = [p if p.end <= radius else dataclasses.replace(p, end=radius)
                            for p in self.pieces if p.start < radius]
@@ -154,7 +217,13 @@ class AnchorMap:
 
     def drop_edge_piece(self, radius: float) -> None:
         """The shrinking edge has passed the start of the last piece (to the root's rounding): forget that
-        piece and end the one before at ``radius``."""
+        piece and end the one before at ``radius``.
+
+        Parameters
+        ----------
+        radius : float
+            The contact radius (m).
+        """
         if len(self.pieces) > 1:
             self.pieces, self._shared = list(self.pieces[:-2]) + [dataclasses.replace(self.pieces[-2], end=radius)], 0
 
@@ -163,6 +232,15 @@ class AnchorMap:
 
         A growth piece is split where it crosses a bound; neighbouring constant pieces of equal value
         are merged (after a few reciprocating cycles the whole map is one or two constants).
+
+        Parameters
+        ----------
+        lower : float
+            The window's lower bound ``x − ū`` (m; ``-inf``: none).
+        upper : float
+            The window's upper bound ``x + ū`` (m; ``+inf``: none).
+        radius : float
+            The contact radius (m): the springs beyond it are dropped.
         """
         clipped: list[Piece] = []
         for p in self.in_contact(radius):
@@ -192,7 +270,19 @@ class AnchorMap:
     def clip_caps(self, x: float, caps: "Caps", depth: float, radius: float) -> None:
         """Materialise the play operator of every spring: ``Y ← clip(Y, x − ū(ξ), x + ū(ξ))`` on ``[0, radius]``
         with the friction law's caps ``ū(ξ) = K a + κ (d − g(ξ))`` (:class:`~.caps.Caps`): :meth:`clip` for
-        ``κ = 0``, else a one-sided clip per cap in the coordinates the cap sees (:meth:`seen_by`)."""
+        ``κ = 0``, else a one-sided clip per cap in the coordinates the cap sees (:meth:`seen_by`).
+
+        Parameters
+        ----------
+        x : float
+            The indenter's tangential position (m).
+        caps : Caps
+            The friction law's caps.
+        depth : float
+            The depth ``d`` (m).
+        radius : float
+            The contact radius (m).
+        """
         shift = caps.centre_shift(radius, depth)
         if caps.kappa == 0.0:
             self.clip(x - shift, x + shift, radius)
@@ -210,6 +300,18 @@ class AnchorMap:
         a level the same for every spring, as with ``τ0`` alone. Without adhesion springs attach along
         ``d0 = g``, so a piece ``x0 + r (g − d_ref)`` is seen as ``x0 − cap κ d_ref + (r − cap κ)(g − d_ref)``: a
         piece of the same kind, monotone in ``ξ``. Under the flat punch's face ``g = 0``: the map itself.
+
+        Parameters
+        ----------
+        cap : Cap
+            The side, +1 or −1.
+        kappa : float
+            ``κ = μ E*/G*``.
+
+        Returns
+        -------
+        AnchorMap
+            The map of ``Z`` (a new one; this map for ``κ = 0`` or the flat punch).
         """
         if kappa == 0.0 or getattr(self.attach, "flat", False):
             return self
@@ -219,16 +321,53 @@ class AnchorMap:
 
     # --- values ---------------------------------------------------------------------------------
     def in_contact(self, radius: float) -> list[Piece]:
-        """The pieces that hold springs of a contact of radius ``radius``."""
+        """The pieces that hold springs of a contact of radius ``radius``.
+
+        Parameters
+        ----------
+        radius : float
+            The contact radius (m).
+
+        Returns
+        -------
+        list of Piece
+            Those that start below it (at least the first).
+        """
         return [p for p in self.pieces if p.start < radius] or list(self.pieces[:1])
 
     def piece_value(self, p: Piece, xi: float) -> float:
-        """``Y(ξ)`` on piece ``p``."""
+        """``Y(ξ)`` on piece ``p``.
+
+        Parameters
+        ----------
+        p : Piece
+            A piece of this map.
+        xi : float
+            The spring's coordinate (m).
+
+        Returns
+        -------
+        float
+            The anchor (m).
+        """
         return p.x0 if p.constant else p.x0 + p.ratio * (self.attach.depth(xi) - p.d_ref)
 
     def end_values(self, p: Piece, end: float) -> tuple[float, float]:
         """``Y`` at the start of piece ``p`` and at ``end``; remembered where ``end`` is the piece's own (a
-        span's zone layout reads every piece: a path of N growth segments would evaluate them N² times)."""
+        span's zone layout reads every piece: a path of N growth segments would evaluate them N² times).
+
+        Parameters
+        ----------
+        p : Piece
+            A piece of this map.
+        end : float
+            The coordinate (m) of the second value.
+
+        Returns
+        -------
+        tuple of float
+            ``(Y(p.start), Y(end))`` (m).
+        """
         if end != p.end:
             return self.piece_value(p, p.start), self.piece_value(p, end)
         values = self._end_values.get(p)
@@ -237,11 +376,35 @@ class AnchorMap:
         return values
 
     def piece_values(self, p: Piece, xi: np.ndarray) -> np.ndarray:
-        """:meth:`piece_value` for an array of ``ξ``."""
+        """:meth:`piece_value` for an array of ``ξ``.
+
+        Parameters
+        ----------
+        p : Piece
+            A piece of this map.
+        xi : numpy.ndarray
+            The springs' coordinates (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The anchors (m), the shape of ``xi``.
+        """
         return np.full(np.shape(xi), p.x0) if p.constant else p.x0 + p.ratio * (self.attach.depths(xi) - p.d_ref)
 
     def value(self, xi: float) -> float:
-        """``Y(ξ)``; where ``Y`` jumps at a piece boundary, the value of the piece that starts there."""
+        """``Y(ξ)``; where ``Y`` jumps at a piece boundary, the value of the piece that starts there.
+
+        Parameters
+        ----------
+        xi : float
+            The spring's coordinate (m).
+
+        Returns
+        -------
+        float
+            The anchor (m).
+        """
         chosen = self.pieces[0]
         for p in self.pieces:
             if p.start <= xi:
@@ -251,17 +414,58 @@ class AnchorMap:
     def inverse(self, p: Piece, level: float) -> float:
         """The ``ξ`` at which growth piece ``p`` takes the value ``level``, continued beyond the piece;
         where the depth it needs lies below the branch's fold (far on the piece's start side), the
-        piece's start."""
+        piece's start.
+
+        Parameters
+        ----------
+        p : Piece
+            A growth piece of this map.
+        level : float
+            The anchor value (m).
+
+        Returns
+        -------
+        float
+            The coordinate ``ξ`` (m).
+        """
         xi = self.attach.radius(p.d_ref + (level - p.x0) / p.ratio, self.rtol)
         return xi if xi == xi else p.start
 
     def inverses(self, p: Piece, levels: np.ndarray) -> np.ndarray:
-        """:meth:`inverse` for an array of levels."""
+        """:meth:`inverse` for an array of levels.
+
+        Parameters
+        ----------
+        p : Piece
+            A growth piece of this map.
+        levels : numpy.ndarray
+            The anchor values (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The coordinates ``ξ`` (m), the shape of ``levels``.
+        """
         xi = self.attach.radii(p.d_ref + (np.asarray(levels, dtype=float) - p.x0) / p.ratio)
         return np.where(np.isnan(xi), p.start, xi)
 
     def integral(self, p: Piece, lower: float, upper: float) -> float:
-        """``∫ Y(ξ) dξ`` over ``[lower, upper]`` on piece ``p``."""
+        """``∫ Y(ξ) dξ`` over ``[lower, upper]`` on piece ``p``.
+
+        Parameters
+        ----------
+        p : Piece
+            A piece of this map.
+        lower : float
+            The lower bound of ``ξ`` (m).
+        upper : float
+            The upper bound of ``ξ`` (m).
+
+        Returns
+        -------
+        float
+            The integral (m²).
+        """
         total = p.x0 * (upper - lower)
         if not p.constant:
             total += p.ratio * (self.attach.integral(upper) - self.attach.integral(lower) - p.d_ref * (upper - lower))
@@ -270,11 +474,41 @@ class AnchorMap:
     # --- slip zones and force, exactly ----------------------------------------------------------
     def zone_size(self, cap: Cap, level: float, radius: float) -> float:
         """The size of ``cap``'s slip zone ``{ξ <= a: cap · Y(ξ) <= cap · level}`` (the springs whose
-        effective anchor is the level); one point of :meth:`zone_sizes`."""
+        effective anchor is the level); one point of :meth:`zone_sizes`.
+
+        Parameters
+        ----------
+        cap : Cap
+            The side, +1 or −1.
+        level : float
+            The level (m): the anchor of a spring at the cap.
+        radius : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The zone's size (m), a union of intervals.
+        """
         return float(self.zone_sizes(cap, np.array([level]), np.array([radius]))[0])
 
     def zone_sizes(self, cap: Cap, levels: np.ndarray, radii: np.ndarray) -> np.ndarray:
-        """:meth:`zone_size` for arrays of levels and radii (vectorised over points, looped over pieces)."""
+        """:meth:`zone_size` for arrays of levels and radii (vectorised over points, looped over pieces).
+
+        Parameters
+        ----------
+        cap : Cap
+            The side, +1 or −1.
+        levels : numpy.ndarray
+            The levels (m).
+        radii : numpy.ndarray
+            The contact radii (m), broadcast with ``levels``.
+
+        Returns
+        -------
+        numpy.ndarray
+            The zones' sizes (m), the broadcast shape.
+        """
         levels = np.asarray(levels, dtype=float)
         radii = np.asarray(radii, dtype=float)
         total = np.zeros(np.broadcast(levels, radii).shape)
@@ -302,6 +536,20 @@ class AnchorMap:
         differences ``x − Y``. (The same integral as ``x a − ∫ clip(Y, x − ū, x + ū)``, which loses the
         digits of ``|x| / ū``: a path at 1e-3° has ``x`` 1e9 times ``ū``, and a full slip lost 1e-7 of its
         force.)
+
+        Parameters
+        ----------
+        x : float
+            The indenter's tangential position (m).
+        cap_shift : float
+            The cap ``ū = K a`` (m).
+        radius : float
+            The contact radius ``a`` (m).
+
+        Returns
+        -------
+        float
+            The integral (m²).
         """
         lower, upper = x - cap_shift, x + cap_shift
         total = 0.0
@@ -327,6 +575,22 @@ class AnchorMap:
         On each (monotone) piece the springs at the positive cap (``Z₊ <= L₊`` as :meth:`seen_by` it) lie at one
         end, those at the negative cap at the other, and they give their caps exactly, ``∫ (K a + κ (d − g))``;
         the springs between give ``x − Y``.
+
+        Parameters
+        ----------
+        x : float
+            The indenter's tangential position (m).
+        caps : Caps
+            The friction law's caps (``κ > 0``).
+        depth : float
+            The depth ``d`` (m).
+        radius : float
+            The contact radius ``a`` (m).
+
+        Returns
+        -------
+        float
+            The integral (m²).
         """
         shift = caps.centre_shift(radius, depth)
         sides = [(float(cap), self.seen_by(cap, caps.kappa), x - float(cap) * shift) for cap in Cap]
@@ -363,9 +627,31 @@ class AnchorMap:
         return total
 
     def tangential_force(self, caps: "Caps", G_star: float, x: float, a: float, depth: float = 0.0) -> float:
-        """``F_x = 2G* ∫_0^a clip(x − Y, −ū, ū) dξ`` with the caps of ``caps`` (``ū = K a`` for ``τ0`` alone, then
+        r"""``F_x = 2G* ∫_0^a clip(x − Y, −ū, ū) dξ`` with the caps of ``caps`` (``ū = K a`` for ``τ0`` alone, then
         ``depth`` is not used): the force of this map with the window at ``x``, without integration (0 out of
-        contact)."""
+        contact).
+
+        .. math:: F_x = \sum \Delta k_x u_x(x_i) \to 2 G^* \int_0^a \operatorname{clip}(x - Y(\xi), -\bar u, \bar u)\,
+                  \mathrm{d}\xi \qquad (6), (15)
+
+        Parameters
+        ----------
+        caps : Caps
+            The friction law's caps.
+        G_star : float
+            ``G*`` (Pa).
+        x : float
+            The indenter's tangential position (m).
+        a : float
+            The contact radius (m).
+        depth : float, default 0.0
+            The depth ``d`` (m), read by Coulomb's caps only.
+
+        Returns
+        -------
+        float
+            ``F_x`` (N).
+        """
         if not a > 0 or not self.pieces:
             return 0.0
         if caps.kappa == 0.0:

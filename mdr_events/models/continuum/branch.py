@@ -18,7 +18,7 @@ FOLD_SHARE = 1e-9
 
 
 class Branch:
-    """The branch (9) of the contact radius with work of adhesion ``work``: depth, slope and integral
+    r"""The branch (9) of the contact radius with work of adhesion ``work``: depth, slope and integral
     of a radius, radius of a depth.
 
     The scalar methods use the derived relations compiled for Python floats
@@ -26,6 +26,15 @@ class Branch:
     the continuum method call them thousands of times per run. The radius of a depth is the largest
     positive root of the quartic in ``s = sqrt(a)`` (:func:`mdr_events.theory.roots.positive_polynomial_root`),
     above the jump-off radius (the stable branch).
+
+    .. math:: d = \frac{a^2}{R} - \sqrt{\frac{2 \pi a \Delta\gamma}{E^*}} \qquad (9)
+
+    Parameters
+    ----------
+    params : Parameters
+        The material and ``R`` of the paraboloid.
+    work : float
+        The work of adhesion ``Δγ`` (J/m²) of the branch (0: Hertz).
     """
 
     #: whether every spring in contact rests on ``g = 0`` (the flat punch's face): Coulomb's caps ``K a + κ max(d, 0)``
@@ -49,42 +58,131 @@ class Branch:
         self._floor = math.sqrt(self.jump_off_radius)
 
     def depth(self, a: float) -> float:
-        """Depth of the contact of radius ``a`` on this branch, eq. (9) (0 at ``a = 0``)."""
+        """Depth of the contact of radius ``a`` on this branch, eq. (9) (0 at ``a = 0``).
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The depth ``d`` (m).
+        """
         return self._depth(a, *self._arguments) if a > 0 else 0.0
 
     def growth_depth(self, a: float) -> float:
-        """The depth beyond which a contact of radius ``a`` grows along this (``Δγ0``) branch: :meth:`depth`."""
+        """The depth beyond which a contact of radius ``a`` grows along this (``Δγ0``) branch: :meth:`depth`.
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The depth (m).
+        """
         return self.depth(a)
 
     def slope(self, a: float) -> float:
-        """``dd/da`` on this branch; its limits at ``a → 0``: 0 for Hertz, ``-inf`` with adhesion."""
+        """``dd/da`` on this branch; its limits at ``a → 0``: 0 for Hertz, ``-inf`` with adhesion.
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The slope (1).
+        """
         if a > 0:
             return self._slope(a, *self._arguments)
         return 0.0 if self.work == 0.0 else -math.inf
 
     def integral(self, a: float) -> float:
-        """``∫_0^a d(ξ) dξ`` along this branch."""
+        """``∫_0^a d(ξ) dξ`` along this branch.
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The integral (m²; 0 at ``a <= 0``).
+        """
         return self._integral(a, *self._arguments) if a > 0 else 0.0
 
     def depth_term(self, a: float) -> float:
         """The size of the terms of (9) at radius ``a``: the profile's ``g(a) = a²/R`` (the depth they cancel to
-        near first contact of an adhesive indenter is far smaller: tolerances are shares of this)."""
+        near first contact of an adhesive indenter is far smaller: tolerances are shares of this).
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            ``g(a)`` (m).
+        """
         return a**2 / self.params.R
 
     def depths(self, a: np.ndarray) -> np.ndarray:
-        """:meth:`depth` for an array of radii (vectorised)."""
+        """:meth:`depth` for an array of radii (vectorised).
+
+        Parameters
+        ----------
+        a : array_like
+            The contact radii (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The depths (m), the shape of ``a`` (0 at ``a <= 0``).
+        """
         a = np.asarray(a, dtype=float)
         value = symbolic.relation("jkr_depth").numeric(np.where(a > 0, a, 1.0), *self._arguments)
         return np.where(a > 0, value, 0.0)
 
     def radii(self, depth: np.ndarray) -> np.ndarray:
-        """:meth:`radius` for an array of depths (vectorised; ``nan`` below the jump-off depth)."""
+        """:meth:`radius` for an array of depths (vectorised; ``nan`` below the jump-off depth).
+
+        Parameters
+        ----------
+        depth : array_like
+            The depths (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The radii (m), the shape of ``depth``.
+        """
         return np.asarray(analytic.jkr_contact_radius(np.asarray(depth, dtype=float), self.params, self.work))
 
     def radius(self, depth: float, rtol: float) -> float:
         """Stable-branch radius at ``depth``, converged to ``rtol``.
 
         ``nan`` below the jump-off depth; within :data:`FOLD_SHARE` of it, the jump-off radius.
+
+        Parameters
+        ----------
+        depth : float
+            The depth ``d`` (m).
+        rtol : float
+            The relative accuracy of the root.
+
+        Returns
+        -------
+        float
+            The radius ``a`` (m) or ``nan``.
         """
         if self.work == 0.0:  # Hertz: no contact above the surface (d <= 0, to rounding at first contact)
             return math.sqrt(self.params.R * depth) if depth > 0 else 0.0

@@ -24,6 +24,19 @@ from .tolerances import NEGLIGIBLE_SHARE, PIECE_SHARE, SEGMENT_RESOLUTION, Toler
 class ContinuumModel:
     """Parameters, tolerances and the derived pieces every span needs.
 
+    Parameters
+    ----------
+    params : Parameters
+        The material, ``R`` (the paraboloid's), ``τ0`` and the works of adhesion at rest.
+    tolerances : Tolerances
+        The solver's and the roots' tolerances.
+    profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
+        The indenter (``None``: the paper's paraboloid of ``params.R``).
+    friction : FrictionLaw, default TAU0
+        The friction law.
+    adhesion : Adhesion, optional
+        The adhesion law; ``None``: the paper's law of ``params.dgamma0`` and ``params.dgamma1``.
+
     Attributes
     ----------
     adhesion : Adhesion
@@ -43,6 +56,12 @@ class ContinuumModel:
         Coulomb's law alone with adhesion (:func:`~.caps.compressed_zone_alone`): the parameters of the compressed
         zone, the contact without adhesion whose run gives the tangential force (``solve_path``); this model's own
         springs then hold no shift (``caps`` frictionless). ``None`` otherwise.
+
+    Raises
+    ------
+    ValueError
+        A friction law, indenter and adhesion the continuum does not solve, or an adhesion law whose works at rest
+        are not those of ``params``.
     """
 
     def __init__(self, params: Parameters, tolerances: Tolerances, profile: PowerLaw | FlatPunch | None = None,
@@ -63,8 +82,23 @@ class ContinuumModel:
         self.K = self.caps.K
 
     def normal_force(self, depth, radius):
-        """``F_N`` (10) of the springs in ``|x| < a`` at depth ``d``, vectorised, for the model's profile (the flat
-        punch's ``2 E* a d``, ``a`` its radius in contact and 0 out of it)."""
+        r"""``F_N`` (10) of the springs in ``|x| < a`` at depth ``d``, vectorised, for the model's profile (the flat
+        punch's ``2 E* a d``, ``a`` its radius in contact and 0 out of it).
+
+        .. math:: F_N = 2 E^* \int_0^a \left(d - g(x)\right) \mathrm{d}x \qquad (10)
+
+        Parameters
+        ----------
+        depth : float or array_like
+            The depth ``d`` (m).
+        radius : float or array_like
+            The contact radius ``a`` (m).
+
+        Returns
+        -------
+        float or numpy.ndarray
+            ``F_N`` (N; negative: tensile).
+        """
         if self.profile is None:
             return analytic.normal_force(depth, radius, self.params)
         if isinstance(self.profile, FlatPunch):
@@ -74,13 +108,40 @@ class ContinuumModel:
         return power_law.normal_force(depth, radius, self.profile, self.params)
 
     def branch(self, regime: Regime) -> Branch:
-        """The branch a moving radius follows in ``regime`` (GROWING or SHRINKING)."""
+        """The branch a moving radius follows in ``regime`` (GROWING or SHRINKING).
+
+        Parameters
+        ----------
+        regime : Regime
+            ``Regime.GROWING`` (the ``Δγ0`` branch of the paper's law) or ``Regime.SHRINKING`` (``Δγ1``).
+
+        Returns
+        -------
+        Branch
+            :attr:`grow` or :attr:`shrink`.
+        """
         return self.grow if regime is Regime.GROWING else self.shrink
 
 
 @dataclass(frozen=True)
 class Segment:
-    """A straight piece of the path: ``x`` and ``d`` linear in time on ``[t0, t1]``."""
+    """A straight piece of the path: ``x`` and ``d`` linear in time on ``[t0, t1]``.
+
+    Parameters
+    ----------
+    t0 : float
+        Its start (s on the path's clock).
+    t1 : float
+        Its end (s).
+    xs : float
+        ``x`` at ``t0`` (m).
+    ds : float
+        ``d`` at ``t0`` (m).
+    vx : float
+        The tangential velocity (m/s).
+    vd : float
+        The depth's velocity (m/s; positive: into the elastomer).
+    """
 
     t0: float
     t1: float
@@ -90,12 +151,48 @@ class Segment:
     vd: float
 
     def x(self, t):
+        """The tangential position ``x(t) = xs + vx (t − t0)``.
+
+        Parameters
+        ----------
+        t : float or numpy.ndarray
+            The time(s) (s on the path's clock).
+
+        Returns
+        -------
+        float or numpy.ndarray
+            The tangential position (m), the shape of ``t``.
+        """
         return self.xs + self.vx * (t - self.t0)
 
     def d(self, t):
+        """The depth ``d(t) = ds + vd (t − t0)``.
+
+        Parameters
+        ----------
+        t : float or numpy.ndarray
+            The time(s) (s on the path's clock).
+
+        Returns
+        -------
+        float or numpy.ndarray
+            The depth (m), the shape of ``t``.
+        """
         return self.ds + self.vd * (t - self.t0)
 
     def time_at_depth(self, depth: float) -> float:
+        """The time at which the segment's depth is ``depth`` (it needs ``vd != 0``).
+
+        Parameters
+        ----------
+        depth : float
+            The depth (m).
+
+        Returns
+        -------
+        float
+            The time (s on the path's clock), continued beyond the segment.
+        """
         return self.t0 + (depth - self.ds) / self.vd
 
 
@@ -103,9 +200,21 @@ def kinematics(path: Path) -> list[Segment]:
     """The path's straight segments, with their velocities (a component below NEGLIGIBLE_SHARE of the
     speed is zero).
 
-    Raises ``ValueError`` naming the waypoints of a segment too short for the solver to separate its
-    corners: one lasting less than :data:`SEGMENT_RESOLUTION` of its end time (the event times'
-    rounding).
+    Parameters
+    ----------
+    path : Path
+        The indenter's path.
+
+    Returns
+    -------
+    list of Segment
+        One per pair of consecutive waypoints.
+
+    Raises
+    ------
+    ValueError
+        Naming the waypoints of a segment too short for the solver to separate its corners: one lasting less
+        than :data:`SEGMENT_RESOLUTION` of its end time (the event times' rounding).
     """
     points = path.waypoints
     times = path.corner_times
@@ -135,7 +244,15 @@ MAX_TRAVEL_PER_CAP = 1e-3 / PIECE_SHARE
 
 
 class Resolution(NamedTuple):
-    """How far a path travels against the critical shift (:func:`resolution`)."""
+    """How far a path travels against the critical shift (:func:`resolution`).
+
+    Parameters
+    ----------
+    travel : float
+        The tangential travel (m).
+    cap : float
+        The critical shift of the centre (m) of the largest contact.
+    """
 
     #: the tangential travel (m): the path's tangential length, or on a segment in the elastomer that
     #: changes the depth ``|v_x / v_d| a²/R``, whichever is larger
@@ -155,6 +272,20 @@ def resolution(model: ContinuumModel, path: Path, segments: list[Segment]) -> Re
     The travel over which the depth of the largest contact changes by its size, ``|v_x / v_d| a²/R``, is
     the spread of the anchors a growth lays down; the path's tangential length is how far the indenter
     moves. Both are positions the levels ``x − cap ū`` are computed from.
+
+    Parameters
+    ----------
+    model : ContinuumModel
+        The contact's branches and caps.
+    path : Path
+        The indenter's path.
+    segments : list of Segment
+        Its segments (:func:`kinematics`).
+
+    Returns
+    -------
+    Resolution
+        The travel and the centre's critical shift at the path's deepest point.
     """
     radius = model.grow.radius(max(path.max_depth, 0.0), model.tolerances.radius_rtol)
     travel = float(np.sum(np.abs(np.diff(path.waypoints[:, 0]))))

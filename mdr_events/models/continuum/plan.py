@@ -28,7 +28,31 @@ class Action(enum.Enum):
 
 
 class SpanPlan(NamedTuple):
-    """What happens from ``t_start`` on a segment, as far as closed forms can tell."""
+    """What happens from ``t_start`` on a segment, as far as closed forms can tell.
+
+    Parameters
+    ----------
+    action : Action
+        What the plan does.
+    regime : Regime
+        How the radius moves.
+    t_start : float
+        The start (s on the path's clock).
+    t_end : float
+        The planned end (s).
+    end_kind : EventKind or None
+        The regime's end event at ``t_end`` (``None``: the segment ends first).
+    radius : float
+        The radius (m) at the start.
+    force : float
+        ``F_x`` (N) at the start.
+    entry_events : tuple of EventKind, default ()
+        Events at ``t_start`` before the span.
+    growth : tuple of Piece, default ()
+        The springs attaching during a growing span.
+    jumped_from : float or None, default None
+        The radius before springs jumped in at the start (``None``: no jump).
+    """
 
     action: Action
     regime: Regime
@@ -48,7 +72,22 @@ class SpanPlan(NamedTuple):
 
 
 def plan_span(model: ContinuumModel, state: ContactState, segment: Segment) -> SpanPlan:
-    """The next span from ``state.t`` on ``segment``: regime, end time and end event."""
+    """The next span from ``state.t`` on ``segment``: regime, end time and end event.
+
+    Parameters
+    ----------
+    model : ContinuumModel
+        The contact's branches, caps and tolerances.
+    state : ContactState
+        The automaton's state.
+    segment : Segment
+        The path segment the state's time lies on.
+
+    Returns
+    -------
+    SpanPlan
+        The plan.
+    """
     if not state.in_contact:
         return _plan_out_of_contact(model, state, segment)
     if segment.vd > 0:

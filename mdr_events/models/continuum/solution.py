@@ -22,17 +22,17 @@ from .stationary import stationary_points
 class PathSolution:
     """The continuum solution of one path.
 
-    Attributes
+    Parameters
     ----------
     model : ContinuumModel
         The branches and the cap the spans are evaluated with.
-    spans : list of Span
-        Consecutive spans, each with one radius regime and the interpolant of ``F_x``.
-    events : list of Event
-        The event log (times from first contact).
-    t_contact : float
+    spans : list of Span, optional
+        Consecutive spans, each with one radius regime and the interpolant of ``F_x`` (default none yet).
+    events : list of Event, optional
+        The event log (times from first contact; default none yet).
+    t_contact : float, default 0.0
         Time of first contact on the path (s); the solution's times count from it.
-    end_time : float
+    end_time : float, default 0.0
         End of the run (s from first contact): the pull-off, or the end of the path.
     path : Path, optional
         The path solved (a referee checks that a solution at hand is of the path it judges).
@@ -52,6 +52,7 @@ class PathSolution:
 
     @property
     def params(self) -> Parameters:
+        """The parameters of the model solved (``model.params``)."""
         return self.model.params
 
     @property
@@ -62,7 +63,18 @@ class PathSolution:
     def span_index(self, times: np.ndarray) -> np.ndarray:
         """Index of the span that holds each time (s from first contact): the first span ending at or
         after it (the last span for times beyond the run), except that the instant a contact is made
-        belongs to the span after the approach."""
+        belongs to the span after the approach.
+
+        Parameters
+        ----------
+        times : array_like
+            Times (s from first contact).
+
+        Returns
+        -------
+        numpy.ndarray of int
+            The index into :attr:`spans` of each time.
+        """
         times = np.asarray(times, dtype=float)
         ends = np.array([span.t_end for span in self.spans]) - self.t_contact
         index = np.minimum(np.searchsorted(ends, times, side="left"), len(self.spans) - 1)
@@ -104,7 +116,29 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     ``index``, as a vectorised function of time: the kinematics are linear, the radius follows its
     branch of (9) (or is pinned; ``radii``, where given, are the radii at ``times``), ``F_N`` is (10), ``F_x`` is
     the span's interpolant and the sliding fraction is the slip front of the span's anchor map. ``zone``: the
-    compressed zone's run already evaluated at ``times`` (:func:`evaluate` fills it once for every span)."""
+    compressed zone's run already evaluated at ``times`` (:func:`evaluate` fills it once for every span).
+
+    Parameters
+    ----------
+    solution : PathSolution
+        The solution.
+    index : int
+        The span's index in ``solution.spans``.
+    times : numpy.ndarray
+        Times within the span (s from first contact).
+    sliding : bool, default True
+        Whether to evaluate the sliding fraction (the slip fronts of the span's anchor map); without it a span in
+        contact leaves ``sliding_fraction`` out.
+    zone : dict of str to numpy.ndarray, optional
+        The compressed zone's run evaluated at ``times`` (Coulomb's law alone with adhesion).
+    radii : numpy.ndarray, optional
+        The contact radii at ``times`` (m), where already known.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        The quantities of :data:`EVALUATED_QUANTITIES` at ``times`` (SI units; ``sliding_fraction`` as above).
+    """
     model = solution.model
     span = solution.spans[index]
     t = solution.t_contact + np.asarray(times, dtype=float)
@@ -170,6 +204,23 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
     if it lies on the pull-off's path segment, which shows the contact gone (forces and radius 0). Times before the
     path's start (that of ``solution.path``, else the first contact), or that are no finite numbers, are refused
     (:func:`check_times`).
+
+    Parameters
+    ----------
+    solution : PathSolution
+        The solution.
+    times : array_like
+        The time grid (s from first contact).
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        Each of :data:`EVALUATED_QUANTITIES` at ``times`` (SI units).
+
+    Raises
+    ------
+    ValueError
+        Times before the path's start, or not finite.
     """
     start = -solution.t_contact if solution.path is not None else 0.0
     times = np.atleast_1d(check_times("times", times, start))
@@ -289,6 +340,18 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
         ``True`` for the maximum, ``False`` for the minimum.
     scan : ExtremumScan, optional
         :func:`scan_spans` of ``solution``, to share between several calls.
+
+    Returns
+    -------
+    value : float
+        The extremum (in the quantity's SI unit).
+    time : float
+        The earliest time it is reached (s from first contact).
+
+    Raises
+    ------
+    ValueError
+        A quantity not in :data:`EXTREMUM_QUANTITIES`.
     """
     if quantity not in EXTREMUM_QUANTITIES:
         raise ValueError(f"quantity={quantity!r} is not allowed; allowed: {', '.join(EXTREMUM_QUANTITIES)}")
@@ -400,6 +463,18 @@ def algebraic_tangential_force(solution: PathSolution, times: np.ndarray) -> np.
 
     The independent check of :func:`evaluate`'s integrated ``F_x`` (same time convention, s from
     first contact; ``nan`` after the end of the run).
+
+    Parameters
+    ----------
+    solution : PathSolution
+        The solution.
+    times : array_like
+        Times (s from first contact).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``F_x`` (N) at each time.
     """
     model = solution.model
     times = np.asarray(times, dtype=float)
@@ -437,6 +512,25 @@ def tangential_work(solution: PathSolution, start: float | None = None, end: flo
     the parallelogram). Evaluated from each span's interpolant, step by step, with
     :data:`WORK_NODES`-point Gauss–Legendre quadrature: in time on pinned spans (``dx = v_x dt``), in the
     radius on moving ones (``dx = v_x (∂d/∂a)/v_d da``).
+
+    Parameters
+    ----------
+    solution : PathSolution
+        The solution.
+    start : float, optional
+        The lower end (s from first contact); default 0.
+    end : float, optional
+        The upper end (s from first contact), at most the run's end; default the run's end.
+
+    Returns
+    -------
+    float
+        ``W`` (J).
+
+    Raises
+    ------
+    ValueError
+        A bound before the path's start, or not finite.
     """
     earliest = -solution.t_contact if solution.path is not None else 0.0
     allowed = f"a finite time >= {earliest:.9g} (s from first contact: the path's start) or None"

@@ -37,7 +37,37 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     the paper's ``"tau0"``; both parts with adhesion need the flat punch: :func:`~.caps.check_supported`) and the
     adhesion law ``adhesion``
     (``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``); a path with more waypoints than
-    ``limits.waypoints`` is refused before the work starts."""
+    ``limits.waypoints`` is refused before the work starts.
+
+    Parameters
+    ----------
+    params : Parameters
+        The material, ``R``, ``τ0``, the works of adhesion and ``d_max``.
+    path : Path
+        The indenter's path.
+    tolerances : Tolerances, optional
+        The solver's and the roots' tolerances (default ``Tolerances()``).
+    limits : Limits, optional
+        The resource limits (default :data:`~mdr_events.limits.DEFAULT_LIMITS`).
+    profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
+        The indenter; ``None``: the paper's paraboloid of ``params.R``.
+    friction : FrictionLaw or str, optional
+        The friction law; ``None``: the paper's ``"tau0"``.
+    adhesion : Adhesion, optional
+        The adhesion law; ``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``.
+
+    Returns
+    -------
+    PathSolution
+        The spans with their interpolants of ``F_x``, the event log, the first contact and the end of the run.
+
+    Raises
+    ------
+    ValueError
+        A path the continuum cannot resolve or reach, an indenter or law it does not take.
+    ResourceLimitError
+        More waypoints than ``limits.waypoints``.
+    """
     limits = check_limits(limits)
     limits.check(f"the continuum run of a path with {len(path.waypoints)} waypoints",
                  waypoints=len(path.waypoints))
@@ -254,9 +284,37 @@ def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | int
     """Solve every path (:func:`solve_path`) and fill a common time grid: the output ``times``, or as many samples
     as ``times`` says spread to the longest run.
 
-    Returns the arrays of :func:`evaluate` stacked to (n_cases, n_time), ``time``, the event
-    log ``events`` (one list of :class:`Event` per case) and the ``solutions`` (one
-    :class:`PathSolution` per case). The output's size is checked against ``limits`` first.
+    The output's size is checked against ``limits`` first.
+
+    Parameters
+    ----------
+    params : Parameters
+        The material, ``R``, ``τ0``, the works of adhesion and ``d_max``.
+    paths : list of Path
+        One path per case.
+    times : numpy.ndarray or int, default 2001
+        The output times (s from first contact), or the number of samples from 0 to the end of the longest run.
+    tolerances : Tolerances, optional
+        The solver's and the roots' tolerances (default ``Tolerances()``).
+    limits : Limits, optional
+        The resource limits (default :data:`~mdr_events.limits.DEFAULT_LIMITS`).
+    profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
+        The indenter; ``None``: the paper's paraboloid of ``params.R``.
+    friction : FrictionLaw or str, optional
+        The friction law; ``None``: the paper's ``"tau0"``.
+    adhesion : Adhesion, optional
+        The adhesion law; ``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``.
+
+    Returns
+    -------
+    dict
+        The arrays of :func:`evaluate` stacked to (n_cases, n_time), ``time``, the event log ``events`` (one
+        list of :class:`Event` per case) and the ``solutions`` (one :class:`PathSolution` per case).
+
+    Raises
+    ------
+    ResourceLimitError
+        More samples or memory than ``limits`` allows.
     """
     samples = times if isinstance(times, int) else None
     n_time = samples if samples is not None else len(times)

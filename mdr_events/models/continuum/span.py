@@ -54,9 +54,29 @@ class Variable(enum.Enum):
 class Span:
     """An interval with one radius regime, as the solution keeps it.
 
-    ``interpolant`` is ``solve_ivp``'s dense output of ``F_x`` in :attr:`variable` (the time, or the
-    radius over :attr:`scale`; ``None`` where the force is the constant :attr:`force`); ``anchors`` is the
-    anchor map during the span.
+    Parameters
+    ----------
+    t_start : float
+        The span's start (s on the path's clock).
+    t_end : float
+        Its end (s).
+    segment : Segment
+        The path segment it lies on.
+    regime : Regime
+        How the radius moves: growing, shrinking or pinned.
+    pinned_radius : float, default 0.0
+        The radius (m) of a pinned span.
+    interpolant : callable, optional
+        ``solve_ivp``'s dense output of ``F_x`` in :attr:`variable` (the time, or the radius over :attr:`scale`);
+        ``None`` where the force is the constant :attr:`force`.
+    force : float, default 0.0
+        ``F_x`` (N) at the start (the span's force where it is constant).
+    anchors : AnchorMap, optional
+        The anchor map during the span.
+    variable : Variable, default Variable.TIME
+        The integration variable.
+    scale : float, default 1.0
+        The length (m) the radius is measured in as the integration variable (the time: 1).
     """
 
     t_start: float
@@ -184,19 +204,69 @@ class SpanIntegrator:
 
     # --- the state along the span ------------------------------------------------------------
     def time_of(self, var: float) -> float:
+        """The path time at the integration variable ``var`` (a moving radius: the time its depth is reached).
+
+        Parameters
+        ----------
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+
+        Returns
+        -------
+        float
+            The time (s).
+        """
         return self.segment.time_at_depth(self.branch.depth(var * self.scale)) if self.moving else var
 
     def radius_of(self, var: float) -> float:
+        """The contact radius at the integration variable ``var`` (a pinned span: its radius).
+
+        Parameters
+        ----------
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+
+        Returns
+        -------
+        float
+            The radius (m).
+        """
         return var * self.scale if self.moving else self.span.pinned_radius
 
     def level(self, cap: Cap | float, var: float) -> float:
-        """``x − cap · (K a + κ d)``: where the anchors of the springs at ``cap`` sit (as the cap sees them)."""
+        """``x − cap · (K a + κ d)``: where the anchors of the springs at ``cap`` sit (as the cap sees them).
+
+        Parameters
+        ----------
+        cap : Cap or float
+            The side, +1 or −1.
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+
+        Returns
+        -------
+        float
+            The level (m).
+        """
         t = self.time_of(var)
         return self.segment.x(t) - cap * self.caps.centre_shift(self.radius_of(var), self.segment.d(t))
 
     def rate(self, cap: Cap | float, var: float) -> float:
         """A quantity with the sign of ``cap · d(level)/dt``: positive while the level pushes the springs
-        at the cap (moving radius: ``cap · v_x · ∂d/∂a − K v_d − κ v_d ∂d/∂a``, the rate times ``∂d/∂a > 0``)."""
+        at the cap (moving radius: ``cap · v_x · ∂d/∂a − K v_d − κ v_d ∂d/∂a``, the rate times ``∂d/∂a > 0``).
+
+        Parameters
+        ----------
+        cap : Cap or float
+            The side, +1 or −1.
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+
+        Returns
+        -------
+        float
+            The signed rate (its sign is what counts).
+        """
         if not self.moving:
             return cap * self.segment.vx - self.kappa * self.depth_rate
         if self.kappa and self.K == 0.0:
@@ -210,12 +280,36 @@ class SpanIntegrator:
 
     def may_push(self, cap: Cap) -> bool:
         """Whether the cap's level can move towards its springs during the span: its rate is positive at
-        either end (the rate is monotone in the radius: ``∂d/∂a`` increases along a branch)."""
+        either end (the rate is monotone in the radius: ``∂d/∂a`` increases along a branch).
+
+        Parameters
+        ----------
+        cap : Cap
+            The side, +1 or −1.
+
+        Returns
+        -------
+        bool
+            ``True`` if its :meth:`rate` is positive at the span's start or stop.
+        """
         return self.rate(cap, self.start) > 0.0 or self.rate(cap, self.stop) > 0.0
 
     # --- the right-hand side ---------------------------------------------------------------
     def rhs(self, var: float, y) -> list[float]:
-        """``dF_x/da`` (moving radius) or ``dF_x/dt`` (pinned)."""
+        """``dF_x/da`` (moving radius) or ``dF_x/dt`` (pinned).
+
+        Parameters
+        ----------
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+        y : array_like
+            ``[F_x]``, unused (the rate does not depend on the force).
+
+        Returns
+        -------
+        list of float
+            ``[dF_x/dvar]`` (N per unit of the variable).
+        """
         segment, K = self.segment, self.K
         a = self.radius_of(var)
         t = self.time_of(var)
@@ -241,7 +335,20 @@ class SpanIntegrator:
 
     def edge_shift(self, x: float, a: float) -> float:
         """The shift of the spring at the edge: ``±ū`` at a cap (``±K a``: the edge of a contact without
-        adhesion holds no Coulomb shift), else ``x − Y(a)``."""
+        adhesion holds no Coulomb shift), else ``x − Y(a)``.
+
+        Parameters
+        ----------
+        x : float
+            The indenter's tangential position (m).
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The shift (m).
+        """
         for cap in Cap:
             if self.zones[cap].edge_in_zone:
                 return cap * self.K * a
@@ -249,22 +356,76 @@ class SpanIntegrator:
 
     # --- the event functions -----------------------------------------------------------------
     def reaches(self, cap: Cap) -> Callable[[float], float]:
+        """The event function of ``cap``'s level reaching its zone layout's target (rising through 0).
+
+        Parameters
+        ----------
+        cap : Cap
+            The side, +1 or −1.
+
+        Returns
+        -------
+        callable
+            ``function(var)``, the event's value at the integration variable.
+        """
         zone, sign = self.zones[cap], float(cap)
         return lambda var: sign * self.level(sign, var) - zone.target(self.radius_of(var)) - self.offset
 
     def leaves_edge(self, cap: Cap) -> Callable[[float], float]:
+        """The event function of the shrinking edge passing the front of ``cap``'s zone at the edge (rising).
+
+        Parameters
+        ----------
+        cap : Cap
+            The side, +1 or −1.
+
+        Returns
+        -------
+        callable
+            ``function(var)``, the event's value at the integration variable.
+        """
         zone, sign = self.zones[cap], float(cap)
         return lambda var: zone.edge_value(self.radius_of(var)) - sign * self.level(sign, var) - self.edge_margin
 
     def turns(self, cap: Cap) -> Callable[[float], float]:
+        """The event function of ``cap``'s sliding level turning back (its :meth:`rate`, falling through 0).
+
+        Parameters
+        ----------
+        cap : Cap
+            The side, +1 or −1.
+
+        Returns
+        -------
+        callable
+            ``function(var)``, the event's value at the integration variable.
+        """
         sign = float(cap)
         return lambda var: self.rate(sign, var)
 
     def passes_piece(self, var: float) -> float:
+        """The event function of the shrinking edge passing the start of its piece (falling through 0).
+
+        Parameters
+        ----------
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+
+        Returns
+        -------
+        float
+            The radius minus the piece's start (m), offset by the event tolerance.
+        """
         return self.radius_of(var) - self.edge_start + self.offset
 
     def event_functions(self) -> list[EventFunction]:
-        """The events that can end the span."""
+        """The events that can end the span.
+
+        Returns
+        -------
+        list of EventFunction
+            Terminal event functions for ``solve_ivp``, each with its trigger and cap.
+        """
         events = []
         for cap in Cap:
             zone = self.zones[cap]
@@ -280,7 +441,13 @@ class SpanIntegrator:
 
     def met_at_start(self) -> frozenset[Fired]:
         """Events that have already happened at the span's start (they fire at once): a level already
-        beyond its target, a sliding level that does not push (e.g. after a corner)."""
+        beyond its target, a sliding level that does not push (e.g. after a corner).
+
+        Returns
+        -------
+        frozenset of tuple
+            The ``(Trigger, Cap)`` pairs met (empty: none).
+        """
         met = set()
         if not self.model.caps.frictionless and self.a0 > 0:
             for cap in Cap:
@@ -300,12 +467,29 @@ class SpanIntegrator:
     def force_is_linear(self) -> bool:
         """A pinned span without fronts: the slip zones hold whole pieces and keep their sizes until an
         event, so ``dF_x/dt = 2G* ((a − n₊ − n₋) v_x + (n₊ − n₋) κ ḋ)`` is constant and the events' times are
-        closed forms (``ḋ``: :attr:`depth_rate`)."""
+        closed forms (``ḋ``: :attr:`depth_rate`).
+
+        Returns
+        -------
+        bool
+            ``True`` for a pinned span whose zones have no front.
+        """
         return not self.moving and not self.positive.fronts and not self.negative.fronts
 
     def linear_span(self, force: float) -> SpanOutcome:
         """:meth:`force_is_linear`: the force and the first event in closed form (the levels are linear in
-        time; each cap's target is fixed), the span's interpolant a :class:`LinearForce`."""
+        time; each cap's target is fixed), the span's interpolant a :class:`LinearForce`.
+
+        Parameters
+        ----------
+        force : float
+            ``F_x`` (N) at the span's start.
+
+        Returns
+        -------
+        SpanOutcome
+            The events that stop it (none: its planned end), the time, force and radius there.
+        """
         a = self.span.pinned_radius
         positive, negative = self.positive.size(0.0, a), self.negative.size(0.0, a)
         rate = self.G2 * (a - positive - negative) * self.segment.vx
@@ -325,7 +509,13 @@ class SpanIntegrator:
 
     def force_is_constant(self) -> bool:
         """Nothing moves the force: a span of zero extent, or a pinned one without tangential motion or
-        with every spring at one cap, whose caps keep still (no Coulomb part following the depth)."""
+        with every spring at one cap, whose caps keep still (no Coulomb part following the depth).
+
+        Returns
+        -------
+        bool
+            ``True`` if ``F_x`` stays what it is over the span.
+        """
         full = any(self.zones[cap].summary(self.a0).slip is Slip.FULL for cap in Cap)
         still = not (self.kappa and self.depth_rate)
         return self.start == self.stop or (not self.moving and still and (self.segment.vx == 0.0 or full))
@@ -365,6 +555,29 @@ def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, slidin
 
     Sets the span's interpolant (or constant force) and integration variable; the caller sets its
     end to the returned ``t_stop``.
+
+    Parameters
+    ----------
+    model : ContinuumModel
+        The contact's branches, caps and tolerances.
+    anchors : AnchorMap
+        The stored anchors of the springs in contact (read, not changed).
+    span : Span
+        The span, its regime and (pinned) radius; its interpolant, force and variable are set.
+    sliding : dict of Cap to bool
+        Whether springs slide at each cap at the start.
+    force : float
+        ``F_x`` (N) at the start.
+
+    Returns
+    -------
+    SpanOutcome
+        The events that stopped it (none: its planned end), the time, force and radius there.
+
+    Raises
+    ------
+    RuntimeError
+        A state that is not finite, or ``solve_ivp`` failing (a bug to report).
     """
     t0, t1 = span.t_start, span.t_end
     span.force = force

@@ -70,7 +70,17 @@ class Slip(enum.Enum):
 
 
 class ZoneSummary(NamedTuple):
-    """What is logged of one cap's slip zone: its extent and whether it holds the centre and the edge."""
+    """What is logged of one cap's slip zone: its extent and whether it holds the centre and the edge.
+
+    Parameters
+    ----------
+    slip : Slip
+        Stick, a partial slip zone, or full slip at the cap.
+    centre : bool
+        Whether the spring at ``ξ = 0`` is in the zone.
+    edge : bool
+        Whether the spring at the contact's edge ``ξ = a`` is in the zone.
+    """
 
     slip: Slip
     centre: bool  #: the spring at ξ = 0 is in the zone
@@ -110,7 +120,23 @@ CONTACT_ENDING = frozenset({EventKind.PULL_OFF, EventKind.CONTACT_ENDS})
 
 
 class Event(NamedTuple):
-    """One logged event."""
+    """One logged event.
+
+    Parameters
+    ----------
+    time : float
+        s from first contact.
+    kind : EventKind
+        What happened.
+    depth : float
+        The indentation depth ``d`` (m).
+    radius : float
+        The contact radius ``a`` (m).
+    x : float
+        The tangential position of the indenter (m).
+    direction : int, default 0
+        +1 / −1: the cap of a slip event or the new direction of a tangential reversal; 0 otherwise.
+    """
 
     time: float    #: s from first contact
     kind: EventKind
@@ -137,8 +163,20 @@ ZONE_EVENTS: dict[tuple[Slip, Slip], tuple[EventKind, ...]] = {
 def zone_events(before: ZoneSummary, after: ZoneSummary, restuck: bool = False) -> tuple[EventKind, ...]:
     """The events one cap's slip zone logs when it changes from ``before`` to ``after``.
 
-    ``restuck``: the zone ended because its level turned back (RE_STICK). Otherwise the table
-    :data:`ZONE_EVENTS`; a zone that stays partial logs its front reaching the centre or the edge.
+    Parameters
+    ----------
+    before : ZoneSummary
+        The zone as last logged.
+    after : ZoneSummary
+        The zone now.
+    restuck : bool, default False
+        The zone ended because its level turned back (RE_STICK). Otherwise the table :data:`ZONE_EVENTS`; a zone
+        that stays partial logs its front reaching the centre or the edge.
+
+    Returns
+    -------
+    tuple of EventKind
+        The events to log, in order (possibly none).
     """
     if restuck:
         return (EventKind.RE_STICK,) if before.slip is not Slip.STICK else ()
@@ -159,27 +197,31 @@ def _both_caps(value) -> dict:
 class ContactState:
     """The automaton's state between spans (it changes only in the transitions of ``solve``).
 
-    Attributes
+    Parameters
     ----------
     t : float
         Time (s, from the path's start).
     anchors : AnchorMap
         The stored anchors of the springs in contact.
-    in_contact, running : bool
-        Whether the indenter touches the elastomer; whether the run goes on (it ends at the end of the
-        path, or at a pull-off after which the path never enters the elastomer again).
-    radius, force : float
-        Contact radius ``a`` (m) and tangential force ``F_x`` (N).
-    sliding : dict of Cap to bool
-        Whether springs slide at each cap.
-    zones : dict of Cap to ZoneSummary
-        What was last logged of each cap's slip zone.
-    detaching : bool
+    in_contact : bool, default False
+        Whether the indenter touches the elastomer.
+    running : bool, default True
+        Whether the run goes on (it ends at the end of the path, or at a pull-off after which the path never
+        enters the elastomer again).
+    radius : float, default 0.0
+        Contact radius ``a`` (m).
+    force : float, default 0.0
+        Tangential force ``F_x`` (N).
+    sliding : dict of Cap to bool, optional
+        Whether springs slide at each cap (default: at neither).
+    zones : dict of Cap to ZoneSummary, optional
+        What was last logged of each cap's slip zone (default: none).
+    detaching : bool, default False
         Detachment has been announced (DETACHMENT_STARTS logged or a shrinking span run) and not
         undone by a pinned or growing span since.
-    contacts : int
+    contacts : int, default 0
         Contacts made so far (first contact and re-contacts).
-    last_fired : frozenset
+    last_fired : frozenset, default frozenset()
         The span events (trigger, cap) that stopped the last span (reported if the solver gets stuck).
     """
 

@@ -56,15 +56,20 @@ MAX_RADIUS_RTOL = 1e-13
 class Tolerances:
     """Solver tolerances of the continuum method.
 
-    Attributes
+    Parameters
     ----------
-    rtol : float
+    rtol : float, default 1e-10
         Relative tolerance of ``solve_ivp`` for ``F_x``, in [100 eps, 1) (default 1e-10).
-    atol : float
+    atol : float, default 1e-14
         Absolute tolerance (N) of ``solve_ivp`` for ``F_x``, finite and > 0 (default 1e-14 N).
-    radius_rtol : float
+    radius_rtol : float, default 1e-14
         Relative accuracy of the contact radius and slip front root-finding, in [eps, 1e-13]
         (default 1e-14; see :data:`MAX_RADIUS_RTOL`).
+
+    Raises
+    ------
+    ValueError
+        A tolerance out of its range.
     """
 
     rtol: float = 1e-10

@@ -105,7 +105,20 @@ class ZoneLayout:
 
     # --- through the span -----------------------------------------------------------------------
     def size(self, level: float, radius: float) -> float:
-        """The zone's size, continued smoothly from the layout (fronts past their pieces' ends)."""
+        """The zone's size, continued smoothly from the layout (fronts past their pieces' ends).
+
+        Parameters
+        ----------
+        level : float
+            The cap's level (m), in the coordinates the cap sees the anchors in.
+        radius : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The size (m).
+        """
         total = self.inner_length
         if self.edge_in:
             total += radius - self.pieces[self.edge].start
@@ -115,11 +128,33 @@ class ZoneLayout:
         return total
 
     def edge_value(self, radius: float) -> float:
-        """``cap · Y`` at the edge of a contact of radius ``radius``."""
+        """``cap · Y`` at the edge of a contact of radius ``radius``.
+
+        Parameters
+        ----------
+        radius : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            ``cap · Y(radius)`` (m).
+        """
         return self.sign * self.anchors.piece_value(self.pieces[self.edge], radius)
 
     def target(self, radius: float) -> float:
-        """The value of ``cap · level`` at which the layout stops being right as the level pushes on."""
+        """The value of ``cap · level`` at which the layout stops being right as the level pushes on.
+
+        Parameters
+        ----------
+        radius : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The target (m; ``inf``: none).
+        """
         return min(self.fixed_target, self.edge_value(radius)) if self.edge_is_target else self.fixed_target
 
     @property
@@ -129,7 +164,18 @@ class ZoneLayout:
 
     # --- what is logged --------------------------------------------------------------------------
     def summary(self, radius: float) -> ZoneSummary:
-        """The zone's extent and whether it holds the centre and the edge (pieces of zero length ignored)."""
+        """The zone's extent and whether it holds the centre and the edge (pieces of zero length ignored).
+
+        Parameters
+        ----------
+        radius : float
+            The contact radius (m).
+
+        Returns
+        -------
+        ZoneSummary
+            Stick, partial or full slip, and whether the centre and the edge are in the zone.
+        """
         present = [(p, role) for p, role in zip(self.pieces, self.roles) if min(p.end, radius) > p.start]
         if not present or all(role is Role.OUT for _, role in present):
             return ZoneSummary(Slip.STICK, False, False)
@@ -170,7 +216,30 @@ def lay_out_zones(anchors: AnchorMap, caps: Caps, segment: Segment, t: float, ra
                   depth_term: Callable[[float], float]) -> dict[Cap, ZoneLayout]:
     """Both caps' slip zones with the indenter at ``segment.x(t)`` and the radius ``radius`` (levels
     ``x ∓ (K a + κ d)``, each cap seeing the anchors as :meth:`~.anchors.AnchorMap.seen_by` it), a piece value
-    within :data:`PIECE_SHARE` of the :func:`length_scale` beyond a level counting as reached."""
+    within :data:`PIECE_SHARE` of the :func:`length_scale` beyond a level counting as reached.
+
+    Parameters
+    ----------
+    anchors : AnchorMap
+        The stored anchors of the springs in contact.
+    caps : Caps
+        The friction law's caps.
+    segment : Segment
+        The path segment.
+    t : float
+        The time (s on the path's clock).
+    radius : float
+        The contact radius (m).
+    sliding : dict of Cap to bool
+        Whether springs slide at each cap.
+    depth_term : callable
+        ``g(a)`` of the branch (:meth:`~.branch.Branch.depth_term`), the size of the depth's terms.
+
+    Returns
+    -------
+    dict of Cap to ZoneLayout
+        Each cap's layout.
+    """
     x = segment.x(t)
     shift = caps.centre_shift(radius, segment.d(t))
     tolerance = PIECE_SHARE * length_scale(anchors, shift, x, indenter_travel(segment, t, radius, depth_term))
