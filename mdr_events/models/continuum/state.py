@@ -135,7 +135,8 @@ class Event(NamedTuple):
     x : float
         The tangential position of the indenter (m).
     direction : int, default 0
-        +1 / −1: the cap of a slip event or the new direction of a tangential reversal; 0 otherwise.
+        +1 / −1: the cap of a slip event or the new direction of a tangential reversal; 0 otherwise, and for the
+        slip events of the tensile annulus under Coulomb's law alone (a zero cap has no side).
     """
 
     time: float    #: s from first contact
