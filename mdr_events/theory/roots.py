@@ -30,6 +30,9 @@ def _horner(coefficients, x):
 
 
 _ROOTS = {1: lambda v: v, 2: np.sqrt, 3: np.cbrt}
+#: Elements per block of :func:`_upper_root_bound`: each block's temporaries stay small and in cache (over 10⁵
+#: elements at once, the page faults of the fresh temporaries cost more than their arithmetic).
+_BLOCK = 16_000
 
 
 def _upper_root_bound(coeffs: list) -> np.ndarray:
@@ -43,26 +46,61 @@ def _upper_root_bound(coeffs: list) -> np.ndarray:
     α = 90°, where a bound on all root moduli (Fujiwara) would be orders of
     magnitude too large. Coefficients that are the scalar 0 are skipped.
     """
+    shape = np.broadcast_shapes(*[np.shape(cf) for cf in coeffs])
+    size = math.prod(shape)
+    if size <= _BLOCK:
+        return _block_bound(coeffs)
+    flat = [cf if np.ndim(cf) == 0 else np.broadcast_to(cf, shape).reshape(-1) for cf in coeffs]
+    bound = np.empty(size)
+    for first in range(0, size, _BLOCK):
+        block = slice(first, first + _BLOCK)
+        bound[block] = _block_bound([cf if cf.ndim == 0 else cf[block] for cf in flat])
+    return bound.reshape(shape)
+
+
+def _block_bound(coeffs: list) -> np.ndarray:
+    """:func:`_upper_root_bound` of one block: a term's bound only where it is usable (its own coefficient
+    positive, none negative above it), so none is computed where no element can use it."""
     present = [i for i, cf in enumerate(coeffs) if not (np.ndim(cf) == 0 and cf == 0)]
     bound = np.inf
     nothing_negative_above = True
     for j in present[:-1]:
         cj = coeffs[j]
         lower = [i for i in present if i > j]
-        m = float(len(lower))
-        candidate = 0.0
-        with np.errstate(divide="ignore", invalid="ignore"):
-            for i in lower:
-                ratio = m * np.abs(coeffs[i]) / cj
-                root = _ROOTS.get(i - j, lambda v, e=1.0 / (i - j): v**e)
-                candidate = np.maximum(candidate, root(ratio))
-        if j == 0:
-            bound = candidate
-        else:
-            usable = nothing_negative_above & (cj > 0.0)
-            bound = np.where(usable, np.minimum(bound, candidate), bound)
-        nothing_negative_above = nothing_negative_above & (cj >= 0.0)
+        usable = True if j == 0 else nothing_negative_above & (cj > 0.0)
+        if j == 0 or np.any(usable):
+            candidate = _term_bound(coeffs, j, lower, positive=j > 0 or bool(np.all(cj > 0.0)))
+            if j == 0:
+                bound = candidate
+            elif np.all(usable):
+                bound = np.minimum(bound, candidate)
+            else:  # (np.where's own loop is ten times slower)
+                bound = np.array(np.broadcast_to(bound, np.broadcast_shapes(np.shape(bound), usable.shape)))
+                np.minimum(bound, candidate, out=bound, where=usable)
+        if j != present[-2]:
+            nothing_negative_above = nothing_negative_above & (cj >= 0.0)
     return bound
+
+
+def _term_bound(coeffs: list, j: int, lower: list[int], positive: bool):
+    """``max(0, max_i (m |c_i| / c_j)^(1/(j-i)))`` over the ``m`` lower terms ``i`` of the term ``j``.
+
+    Where ``c_j > 0`` (``positive``: everywhere it is used) every ratio is ``+0`` or more, so the first
+    maximum with 0 is skipped, as is a division by a ``c_j`` that is the scalar 1: both are exact.
+    """
+    cj = coeffs[j]
+    m = float(len(lower))
+    unit = np.ndim(cj) == 0 and cj == 1.0
+    candidate = None
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for i in lower:
+            ratio = m * np.abs(coeffs[i])
+            if not unit:
+                ratio = ratio / cj
+            root = _ROOTS.get(i - j, lambda v, e=1.0 / (i - j): v**e)(ratio)
+            candidate = root if candidate is None and positive else np.maximum(
+                0.0 if candidate is None else candidate, root)
+    return candidate
 
 
 def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100, rtol: float = 4 * _EPS):
@@ -109,33 +147,80 @@ def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100,
     coeffs = [np.asarray(cf, dtype=float) for cf in coefficients]
     shape = np.broadcast_shapes(*[cf.shape for cf in coeffs], np.shape(lower))
     lower = np.broadcast_to(np.asarray(lower, dtype=float), shape)
-    start = np.maximum(_upper_root_bound(coeffs), lower) * (1.0 + 8 * _EPS)
-    x = np.broadcast_to(start, shape).copy()
-    # in-place buffers: for large arrays allocation, not arithmetic, is the cost
-    value, slope, step, tolerance = (np.empty(shape) for _ in range(4))
-    overshoot = np.zeros(shape, dtype=bool)
-    for _ in range(max_iterations):
+    x = _start(coeffs, lower)
+    overshoot = _descend(coeffs, x, max_iterations, rtol)
+    redo = overshoot | ~np.isfinite(x)
+    if np.any(redo):  # from the same start, computed again for these elements alone (scalars kept scalars)
+        start = _start([cf if cf.ndim == 0 else np.broadcast_to(cf, shape)[redo] for cf in coeffs], lower[redo])
+        x[redo] = _bracketed_root([np.broadcast_to(cf, shape)[redo] for cf in coeffs], lower[redo], start,
+                                  max_iterations)
+    return x
+
+
+def _start(coeffs: list, lower: np.ndarray) -> np.ndarray:
+    """Newton's start: the bound of :func:`_upper_root_bound`, not below ``lower``, raised by 8 ulp (a new array of
+    the shape of ``lower``, which the iteration takes over)."""
+    start = np.maximum(_upper_root_bound(coeffs), lower)
+    start *= 1.0 + 8 * _EPS
+    return start
+
+
+#: Every how many elements the stopping rule of :func:`_descend` is tried first: one unconverged element among
+#: them settles that the iteration goes on, without reading the whole array.
+_PROBE_STRIDE = 64
+
+
+def _horner_into(coeffs: list, x: np.ndarray, value: np.ndarray, slope: np.ndarray) -> None:
+    """:func:`_horner` into the buffers ``value`` and ``slope``, in place.
+
+    A leading coefficient that is the scalar 1 (a monic polynomial) skips the products by it, which are exact:
+    the values are those of :func:`_horner`, bit for bit, in fewer passes over the arrays.
+    """
+    rest = coeffs[2:]
+    if np.ndim(coeffs[0]) == 0 and coeffs[0] == 1.0:
+        np.add(x, coeffs[1], out=value)  # x·1 + c1
+        if not rest:
+            slope[...] = 1.0
+            return
+        np.add(x, value, out=slope)  # 1·x + value
+        value *= x
+        value += rest[0]
+        rest = rest[1:]
+    else:
         np.multiply(x, coeffs[0], out=value)
         value += coeffs[1]
         slope[...] = coeffs[0]
-        for coefficient in coeffs[2:]:
-            slope *= x
-            slope += value
-            value *= x
-            value += coefficient
+    for coefficient in rest:
+        slope *= x
+        slope += value
+        value *= x
+        value += coefficient
+
+
+def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> np.ndarray:
+    """Newton's iteration on ``x`` in place, every element stepping until all have converged to ``rtol``;
+    returns where an element ever stepped upwards by more than ``rtol`` of itself (``p < 0`` beyond rounding,
+    an overshoot). Its work arrays are allocated once (for large arrays allocation, not arithmetic, is the cost)."""
+    value, slope, step = (np.empty(x.shape) for _ in range(3))
+    overshoot, upward = np.zeros(x.shape, dtype=bool), np.empty(x.shape, dtype=bool)
+    probe = slice(None, None, _PROBE_STRIDE)
+    for _ in range(max_iterations):
+        _horner_into(coeffs, x, value, slope)
         np.divide(value, slope, out=step)
         x -= step
-        np.abs(x, out=tolerance)
-        tolerance *= rtol
-        overshoot |= step < -tolerance  # an upward step: p < 0 beyond rounding
-        np.abs(step, out=step)
-        if np.all(step <= tolerance):
+        below = value  # -rtol |x|, in the buffer of the value (negation is exact)
+        np.abs(x, out=below)
+        below *= -rtol
+        overshoot |= np.less(step, below, out=upward)
+        # |step| <= rtol |x|, tried first on every _PROBE_STRIDE-th element
+        if _within(step.reshape(-1)[probe], below.reshape(-1)[probe]) and _within(step, below):
             break
-    redo = overshoot | ~np.isfinite(x)
-    if np.any(redo):
-        x[redo] = _bracketed_root([np.broadcast_to(cf, shape)[redo] for cf in coeffs],
-                                  lower[redo], start[redo], max_iterations)
-    return x
+    return overshoot
+
+
+def _within(step: np.ndarray, below: np.ndarray) -> bool:
+    """Whether every ``|step| <= -below``."""
+    return bool(np.all(np.abs(step) <= np.negative(below)))
 
 
 def _scalar_root(coeffs: list[float], lower: float, max_iterations: int, rtol: float) -> float:
