@@ -10,6 +10,8 @@ import math
 
 import numpy as np
 
+from mdr_events.theory.blocks import BLOCK
+
 __all__ = ["positive_polynomial_root"]
 
 _EPS = np.finfo(float).eps
@@ -30,9 +32,9 @@ def _horner(coefficients, x):
 
 
 _ROOTS = {1: lambda v: v, 2: np.sqrt, 3: np.cbrt}
-#: Elements per block of :func:`_upper_root_bound`: each block's temporaries stay small and in cache (over 10⁵
-#: elements at once, the page faults of the fresh temporaries cost more than their arithmetic).
-_BLOCK = 16_000
+#: Elements per block of :func:`_upper_root_bound` and of Newton's steps: each block's temporaries stay small and
+#: in cache (over 10⁵ elements at once, the page faults of fresh temporaries cost more than their arithmetic).
+_BLOCK = BLOCK
 
 
 def _upper_root_bound(coeffs: list) -> np.ndarray:
@@ -51,11 +53,11 @@ def _upper_root_bound(coeffs: list) -> np.ndarray:
     if size <= _BLOCK:
         return _block_bound(coeffs)
     flat = [cf if np.ndim(cf) == 0 else np.broadcast_to(cf, shape).reshape(-1) for cf in coeffs]
-    bound = np.empty(size)
+    bound = np.empty(shape)
     for first in range(0, size, _BLOCK):
         block = slice(first, first + _BLOCK)
-        bound[block] = _block_bound([cf if cf.ndim == 0 else cf[block] for cf in flat])
-    return bound.reshape(shape)
+        bound.reshape(-1)[block] = _block_bound([cf if cf.ndim == 0 else cf[block] for cf in flat])
+    return bound
 
 
 def _block_bound(coeffs: list) -> np.ndarray:
@@ -160,14 +162,11 @@ def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100,
 def _start(coeffs: list, lower: np.ndarray) -> np.ndarray:
     """Newton's start: the bound of :func:`_upper_root_bound`, not below ``lower``, raised by 8 ulp (a new array of
     the shape of ``lower``, which the iteration takes over)."""
-    start = np.maximum(_upper_root_bound(coeffs), lower)
+    bound = _upper_root_bound(coeffs)
+    owned = isinstance(bound, np.ndarray) and bound.shape == lower.shape and bound.flags.owndata
+    start = np.maximum(bound, lower, out=bound if owned else None)  # (in the bound's own array where it has one)
     start *= 1.0 + 8 * _EPS
     return start
-
-
-#: Every how many elements the stopping rule of :func:`_descend` is tried first: one unconverged element among
-#: them settles that the iteration goes on, without reading the whole array.
-_PROBE_STRIDE = 64
 
 
 def _horner_into(coeffs: list, x: np.ndarray, value: np.ndarray, slope: np.ndarray) -> None:
@@ -200,27 +199,44 @@ def _horner_into(coeffs: list, x: np.ndarray, value: np.ndarray, slope: np.ndarr
 def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> np.ndarray:
     """Newton's iteration on ``x`` in place, every element stepping until all have converged to ``rtol``;
     returns where an element ever stepped upwards by more than ``rtol`` of itself (``p < 0`` beyond rounding,
-    an overshoot). Its work arrays are allocated once (for large arrays allocation, not arithmetic, is the cost)."""
-    value, slope, step = (np.empty(x.shape) for _ in range(3))
-    overshoot, upward = np.zeros(x.shape, dtype=bool), np.empty(x.shape, dtype=bool)
-    probe = slice(None, None, _PROBE_STRIDE)
+    an overshoot).
+
+    Each step goes over blocks of :data:`_BLOCK` elements, whose work arrays are allocated once and stay in
+    cache (for large arrays allocation, not arithmetic, is the cost); the stopping rule is read block by block
+    until one fails it.
+    """
+    flat = x.reshape(-1)
+    blocks = [slice(first, first + _BLOCK) for first in range(0, flat.size, _BLOCK)]
+    broadcast = [cf if cf.ndim == 0 else np.broadcast_to(cf, x.shape).reshape(-1) for cf in coeffs]
+    block_coeffs = [[cf if cf.ndim == 0 else cf[block] for cf in broadcast] for block in blocks]
+    size = min(flat.size, _BLOCK)
+    value, slope, step = (np.empty(size) for _ in range(3))
+    flags = np.empty(size, dtype=bool)
+    overshoot = np.zeros(flat.size, dtype=bool)
     for _ in range(max_iterations):
-        _horner_into(coeffs, x, value, slope)
-        np.divide(value, slope, out=step)
-        x -= step
-        below = value  # -rtol |x|, in the buffer of the value (negation is exact)
-        np.abs(x, out=below)
-        below *= -rtol
-        overshoot |= np.less(step, below, out=upward)
-        # |step| <= rtol |x|, tried first on every _PROBE_STRIDE-th element
-        if _within(step.reshape(-1)[probe], below.reshape(-1)[probe]) and _within(step, below):
+        converged = True
+        for block, coefficients in zip(blocks, block_coeffs):
+            x_block = flat[block]
+            n = x_block.size
+            v, s, d, f = value[:n], slope[:n], step[:n], flags[:n]
+            _horner_into(coefficients, x_block, v, s)
+            np.divide(v, s, out=d)
+            x_block -= d
+            below = v  # -rtol |x|, in the buffer of the value (negation is exact)
+            np.abs(x_block, out=below)
+            below *= -rtol
+            overshoot[block] |= np.less(d, below, out=f)
+            converged = converged and _within(d, below, s, f)
+        if converged:
             break
-    return overshoot
+    return overshoot.reshape(x.shape)
 
 
-def _within(step: np.ndarray, below: np.ndarray) -> bool:
-    """Whether every ``|step| <= -below``."""
-    return bool(np.all(np.abs(step) <= np.negative(below)))
+def _within(step: np.ndarray, below: np.ndarray, spare: np.ndarray, flags: np.ndarray) -> bool:
+    """Whether every ``|step| <= -below``, computed in the buffers ``spare`` and ``flags``."""
+    np.abs(step, out=spare)
+    np.negative(spare, out=spare)
+    return bool(np.all(np.less_equal(below, spare, out=flags)))
 
 
 def _scalar_root(coeffs: list[float], lower: float, max_iterations: int, rtol: float) -> float:
