@@ -206,26 +206,27 @@ def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> n
     until one fails it.
     """
     flat = x.reshape(-1)
-    blocks = [slice(first, first + _BLOCK) for first in range(0, flat.size, _BLOCK)]
     broadcast = [cf if cf.ndim == 0 else np.broadcast_to(cf, x.shape).reshape(-1) for cf in coeffs]
-    block_coeffs = [[cf if cf.ndim == 0 else cf[block] for cf in broadcast] for block in blocks]
     size = min(flat.size, _BLOCK)
     value, slope, step = (np.empty(size) for _ in range(3))
     flags = np.empty(size, dtype=bool)
     overshoot = np.zeros(flat.size, dtype=bool)
+    blocks = []  # each block's iterate, coefficients, work arrays and overshoot flags (views)
+    for first in range(0, flat.size, _BLOCK):
+        block = slice(first, first + _BLOCK)
+        n = flat[block].size
+        blocks.append((flat[block], [cf if cf.ndim == 0 else cf[block] for cf in broadcast], value[:n], slope[:n],
+                       step[:n], flags[:n], overshoot[block]))
     for _ in range(max_iterations):
         converged = True
-        for block, coefficients in zip(blocks, block_coeffs):
-            x_block = flat[block]
-            n = x_block.size
-            v, s, d, f = value[:n], slope[:n], step[:n], flags[:n]
+        for x_block, coefficients, v, s, d, f, upward in blocks:
             _horner_into(coefficients, x_block, v, s)
             np.divide(v, s, out=d)
             x_block -= d
             below = v  # -rtol |x|, in the buffer of the value (negation is exact)
             np.abs(x_block, out=below)
             below *= -rtol
-            overshoot[block] |= np.less(d, below, out=f)
+            upward |= np.less(d, below, out=f)
             converged = converged and _within(d, below, s, f)
         if converged:
             break
