@@ -51,11 +51,15 @@ docs: $(STAMP)
 	env -u MPLBACKEND $(BIN)/python -m sphinx -b html -W --keep-going -n -q docs docs/_build/html
 	@echo "docs: open docs/_build/html/index.html"
 
+# AGAINST=DIR (a checkout of another commit, e.g. `git worktree add /tmp/before <commit>`) measures it side by side
+# in the benchmarks that compare checkouts, the repetitions interleaved, and prints the ratios
+AGAINST_OPTION = $(if $(AGAINST),--against $(AGAINST))
+
 benchmark: $(STAMP)
-	$(BIN)/python benchmarks/bench_import.py
-	$(BIN)/python benchmarks/bench_phase_diagram.py
+	$(BIN)/python benchmarks/bench_import.py $(AGAINST_OPTION)
+	$(BIN)/python benchmarks/bench_phase_diagram.py $(AGAINST_OPTION)
 	$(BIN)/python benchmarks/bench_discrete.py
-	$(BIN)/python benchmarks/bench_simulate.py
+	$(BIN)/python benchmarks/bench_simulate.py $(AGAINST_OPTION)
 	$(BIN)/python benchmarks/bench_continuum.py
 	$(BIN)/python benchmarks/bench_validate.py
 	$(BIN)/python benchmarks/bench_fit.py

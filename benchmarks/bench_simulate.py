@@ -16,7 +16,7 @@ zigzag, out); the 10-cycle reciprocating path of ``bench_continuum.py``; scenari
 
 ``--against DIR`` measures a checkout of another commit side by side: each checkout runs in a worker process of its
 own (its package first on ``PYTHONPATH``) and the repetitions alternate between them, so that both see the same
-load; it prints each figure's ratio before / now. E.g. ``git worktree add /tmp/before <commit>`` then
+load (``_side_by_side.py``); it prints each figure's ratio before / now. E.g. ``git worktree add /tmp/before <commit>`` then
 ``--against /tmp/before``.
 
 Run: ``python benchmarks/bench_simulate.py [--repeat N] [--against DIR]``.
@@ -25,12 +25,9 @@ Run: ``python benchmarks/bench_simulate.py [--repeat N] [--against DIR]``.
 from __future__ import annotations
 
 import argparse
-import os
-import statistics
-import subprocess
-import sys
-import time
 from pathlib import Path
+
+from _side_by_side import measure, serve
 
 #: Targets of issue 28: simulate / solve_path, extrema / solve_path, table / paraboloid, simulate of A or B (s).
 SIMULATE_RATIO, EXTREMA_RATIO, TABLE_RATIO, SIMULATE_TARGET = 1.5, 0.5, 3.0, 2e-3
@@ -85,46 +82,6 @@ def _tasks() -> dict[str, callable]:
     return tasks
 
 
-def worker() -> None:
-    """Time the tasks named on standard input, one per line, printing each time (s)."""
-    tasks = _tasks()
-    print("ready", flush=True)
-    for line in sys.stdin:
-        start = time.perf_counter()
-        tasks[line.strip()]()
-        print(time.perf_counter() - start, flush=True)
-
-
-class Checkout:
-    """A worker process timing the package of one checkout."""
-
-    def __init__(self, root: str):
-        env = dict(os.environ)
-        env["PYTHONPATH"] = os.pathsep.join([root, *filter(None, [env.get("PYTHONPATH")])])
-        self.process = subprocess.Popen([sys.executable, __file__, "--worker"], env=env, cwd=root, text=True,
-                                        stdin=subprocess.PIPE, stdout=subprocess.PIPE)
-        assert self.process.stdout.readline().strip() == "ready"
-
-    def time(self, task: str) -> float:
-        self.process.stdin.write(task + "\n")
-        self.process.stdin.flush()
-        return float(self.process.stdout.readline())
-
-    def close(self) -> None:
-        self.process.stdin.close()
-        self.process.wait()
-
-
-def measure(checkouts: list[Checkout], repeat: int) -> list[dict[str, float]]:
-    """The median time of every task in each checkout, the repetitions alternating between checkouts."""
-    times = [{f"{label}|{task}": [] for label in PATHS for task in TASKS} for _ in checkouts]
-    for _ in range(repeat):
-        for task in times[0]:
-            for checkout, found in zip(checkouts, times):
-                found[task].append(checkout.time(task))
-    return [{task: statistics.median(values) for task, values in found.items()} for found in times]
-
-
 def report(name: str, medians: dict[str, float]) -> None:
     """Print one checkout's figures with their targets."""
     print(f"  {name}:")
@@ -145,17 +102,13 @@ def main() -> None:
     parser.add_argument("--worker", action="store_true", help=argparse.SUPPRESS)
     options = parser.parse_args()
     if options.worker:
-        worker()
+        serve(_tasks())
         return
     roots = {"this checkout": str(Path(__file__).resolve().parent.parent)}
     if options.against:
         roots[f"--against {options.against}"] = str(Path(options.against).resolve())
-    checkouts = [Checkout(root) for root in roots.values()]
-    try:
-        medians = measure(checkouts, options.repeat)
-    finally:
-        for checkout in checkouts:
-            checkout.close()
+    medians = measure(list(roots.values()), __file__, [f"{label}|{task}" for label in PATHS for task in TASKS],
+                      options.repeat)
     print(f"continuum: solve_path, solution_extrema and simulate (2001 samples), medians of {options.repeat}, "
           "interleaved")
     for name, found in zip(roots, medians):

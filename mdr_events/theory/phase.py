@@ -134,18 +134,18 @@ def _paper_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, 
     """:func:`phase_diagram` of the paper's paraboloid and friction law: eqs. (17), (18) or (20), (21)
     (:mod:`~mdr_events.theory.analytic`), Fig. 9a or 9b for a paper preset."""
     variables = {}
+    curves = analytic.d_crit_curves(angles, params, scenario)
     if scenario == "A":
         for key, adhesive, eq in (("hertz", False, "(17)"), ("jkr", True, "(18)")):
             variables[f"d_crit_{key}"] = (
                 "alpha",
-                analytic.d_crit(angles, params, "A", adhesion=adhesive),
+                curves[adhesive, None],
                 {"units": "m", "long_name": f"slip-onset depth, {'adhesive' if adhesive else 'non-adhesive'}, eq. {eq}"},
             )
     else:
         coords["branch"] = ("branch", np.array(analytic.BRANCHES), {"units": "1", "long_name": "motion at angle from d_max"})
         for key, adhesive, eq in (("hertz", False, "(20)"), ("jkr", True, "(21)")):
-            values = np.stack([analytic.d_crit(angles, params, "B", adhesion=adhesive, branch=b)
-                               for b in analytic.BRANCHES])
+            values = np.stack([curves[adhesive, b] for b in analytic.BRANCHES])
             variables[f"d_crit_{key}"] = (
                 ("branch", "alpha"),
                 values,

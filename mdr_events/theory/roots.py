@@ -10,6 +10,8 @@ import math
 
 import numpy as np
 
+from mdr_events.theory.blocks import BLOCK
+
 __all__ = ["positive_polynomial_root"]
 
 _EPS = np.finfo(float).eps
@@ -30,6 +32,9 @@ def _horner(coefficients, x):
 
 
 _ROOTS = {1: lambda v: v, 2: np.sqrt, 3: np.cbrt}
+#: Elements per block of :func:`_upper_root_bound` and of Newton's steps: each block's temporaries stay small and
+#: in cache (over 10⁵ elements at once, the page faults of fresh temporaries cost more than their arithmetic).
+_BLOCK = BLOCK
 
 
 def _upper_root_bound(coeffs: list) -> np.ndarray:
@@ -43,26 +48,61 @@ def _upper_root_bound(coeffs: list) -> np.ndarray:
     α = 90°, where a bound on all root moduli (Fujiwara) would be orders of
     magnitude too large. Coefficients that are the scalar 0 are skipped.
     """
+    shape = np.broadcast_shapes(*[np.shape(cf) for cf in coeffs])
+    size = math.prod(shape)
+    if size <= _BLOCK:
+        return _block_bound(coeffs)
+    flat = [cf if np.ndim(cf) == 0 else np.broadcast_to(cf, shape).reshape(-1) for cf in coeffs]
+    bound = np.empty(shape)
+    for first in range(0, size, _BLOCK):
+        block = slice(first, first + _BLOCK)
+        bound.reshape(-1)[block] = _block_bound([cf if cf.ndim == 0 else cf[block] for cf in flat])
+    return bound
+
+
+def _block_bound(coeffs: list) -> np.ndarray:
+    """:func:`_upper_root_bound` of one block: a term's bound only where it is usable (its own coefficient
+    positive, none negative above it), so none is computed where no element can use it."""
     present = [i for i, cf in enumerate(coeffs) if not (np.ndim(cf) == 0 and cf == 0)]
     bound = np.inf
     nothing_negative_above = True
     for j in present[:-1]:
         cj = coeffs[j]
         lower = [i for i in present if i > j]
-        m = float(len(lower))
-        candidate = 0.0
-        with np.errstate(divide="ignore", invalid="ignore"):
-            for i in lower:
-                ratio = m * np.abs(coeffs[i]) / cj
-                root = _ROOTS.get(i - j, lambda v, e=1.0 / (i - j): v**e)
-                candidate = np.maximum(candidate, root(ratio))
-        if j == 0:
-            bound = candidate
-        else:
-            usable = nothing_negative_above & (cj > 0.0)
-            bound = np.where(usable, np.minimum(bound, candidate), bound)
-        nothing_negative_above = nothing_negative_above & (cj >= 0.0)
+        usable = True if j == 0 else nothing_negative_above & (cj > 0.0)
+        if j == 0 or np.any(usable):
+            candidate = _term_bound(coeffs, j, lower, positive=j > 0 or bool(np.all(cj > 0.0)))
+            if j == 0:
+                bound = candidate
+            elif np.all(usable):
+                bound = np.minimum(bound, candidate)
+            else:  # (np.where's own loop is ten times slower)
+                bound = np.array(np.broadcast_to(bound, np.broadcast_shapes(np.shape(bound), usable.shape)))
+                np.minimum(bound, candidate, out=bound, where=usable)
+        if j != present[-2]:
+            nothing_negative_above = nothing_negative_above & (cj >= 0.0)
     return bound
+
+
+def _term_bound(coeffs: list, j: int, lower: list[int], positive: bool):
+    """``max(0, max_i (m |c_i| / c_j)^(1/(j-i)))`` over the ``m`` lower terms ``i`` of the term ``j``.
+
+    Where ``c_j > 0`` (``positive``: everywhere it is used) every ratio is ``+0`` or more, so the first
+    maximum with 0 is skipped, as is a division by a ``c_j`` that is the scalar 1: both are exact.
+    """
+    cj = coeffs[j]
+    m = float(len(lower))
+    unit = np.ndim(cj) == 0 and cj == 1.0
+    candidate = None
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for i in lower:
+            ratio = m * np.abs(coeffs[i])
+            if not unit:
+                ratio = ratio / cj
+            root = _ROOTS.get(i - j, lambda v, e=1.0 / (i - j): v**e)(ratio)
+            candidate = root if candidate is None and positive else np.maximum(
+                0.0 if candidate is None else candidate, root)
+    return candidate
 
 
 def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100, rtol: float = 4 * _EPS):
@@ -109,33 +149,95 @@ def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100,
     coeffs = [np.asarray(cf, dtype=float) for cf in coefficients]
     shape = np.broadcast_shapes(*[cf.shape for cf in coeffs], np.shape(lower))
     lower = np.broadcast_to(np.asarray(lower, dtype=float), shape)
-    start = np.maximum(_upper_root_bound(coeffs), lower) * (1.0 + 8 * _EPS)
-    x = np.broadcast_to(start, shape).copy()
-    # in-place buffers: for large arrays allocation, not arithmetic, is the cost
-    value, slope, step, tolerance = (np.empty(shape) for _ in range(4))
-    overshoot = np.zeros(shape, dtype=bool)
-    for _ in range(max_iterations):
+    x = _start(coeffs, lower)
+    overshoot = _descend(coeffs, x, max_iterations, rtol)
+    redo = overshoot | ~np.isfinite(x)
+    if np.any(redo):  # from the same start, computed again for these elements alone (scalars kept scalars)
+        start = _start([cf if cf.ndim == 0 else np.broadcast_to(cf, shape)[redo] for cf in coeffs], lower[redo])
+        x[redo] = _bracketed_root([np.broadcast_to(cf, shape)[redo] for cf in coeffs], lower[redo], start,
+                                  max_iterations)
+    return x
+
+
+def _start(coeffs: list, lower: np.ndarray) -> np.ndarray:
+    """Newton's start: the bound of :func:`_upper_root_bound`, not below ``lower``, raised by 8 ulp (a new array of
+    the shape of ``lower``, which the iteration takes over)."""
+    bound = _upper_root_bound(coeffs)
+    owned = isinstance(bound, np.ndarray) and bound.shape == lower.shape and bound.flags.owndata
+    start = np.maximum(bound, lower, out=bound if owned else None)  # (in the bound's own array where it has one)
+    start *= 1.0 + 8 * _EPS
+    return start
+
+
+def _horner_into(coeffs: list, x: np.ndarray, value: np.ndarray, slope: np.ndarray) -> None:
+    """:func:`_horner` into the buffers ``value`` and ``slope``, in place.
+
+    A leading coefficient that is the scalar 1 (a monic polynomial) skips the products by it, which are exact:
+    the values are those of :func:`_horner`, bit for bit, in fewer passes over the arrays.
+    """
+    rest = coeffs[2:]
+    if np.ndim(coeffs[0]) == 0 and coeffs[0] == 1.0:
+        np.add(x, coeffs[1], out=value)  # x·1 + c1
+        if not rest:
+            slope[...] = 1.0
+            return
+        np.add(x, value, out=slope)  # 1·x + value
+        value *= x
+        value += rest[0]
+        rest = rest[1:]
+    else:
         np.multiply(x, coeffs[0], out=value)
         value += coeffs[1]
         slope[...] = coeffs[0]
-        for coefficient in coeffs[2:]:
-            slope *= x
-            slope += value
-            value *= x
-            value += coefficient
-        np.divide(value, slope, out=step)
-        x -= step
-        np.abs(x, out=tolerance)
-        tolerance *= rtol
-        overshoot |= step < -tolerance  # an upward step: p < 0 beyond rounding
-        np.abs(step, out=step)
-        if np.all(step <= tolerance):
+    for coefficient in rest:
+        slope *= x
+        slope += value
+        value *= x
+        value += coefficient
+
+
+def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> np.ndarray:
+    """Newton's iteration on ``x`` in place, every element stepping until all have converged to ``rtol``;
+    returns where an element ever stepped upwards by more than ``rtol`` of itself (``p < 0`` beyond rounding,
+    an overshoot).
+
+    Each step goes over blocks of :data:`_BLOCK` elements, whose work arrays are allocated once and stay in
+    cache (for large arrays allocation, not arithmetic, is the cost); the stopping rule is read block by block
+    until one fails it.
+    """
+    flat = x.reshape(-1)
+    broadcast = [cf if cf.ndim == 0 else np.broadcast_to(cf, x.shape).reshape(-1) for cf in coeffs]
+    size = min(flat.size, _BLOCK)
+    value, slope, step = (np.empty(size) for _ in range(3))
+    flags = np.empty(size, dtype=bool)
+    overshoot = np.zeros(flat.size, dtype=bool)
+    blocks = []  # each block's iterate, coefficients, work arrays and overshoot flags (views)
+    for first in range(0, flat.size, _BLOCK):
+        block = slice(first, first + _BLOCK)
+        n = flat[block].size
+        blocks.append((flat[block], [cf if cf.ndim == 0 else cf[block] for cf in broadcast], value[:n], slope[:n],
+                       step[:n], flags[:n], overshoot[block]))
+    for _ in range(max_iterations):
+        converged = True
+        for x_block, coefficients, v, s, d, f, upward in blocks:
+            _horner_into(coefficients, x_block, v, s)
+            np.divide(v, s, out=d)
+            x_block -= d
+            below = v  # -rtol |x|, in the buffer of the value (negation is exact)
+            np.abs(x_block, out=below)
+            below *= -rtol
+            upward |= np.less(d, below, out=f)
+            converged = converged and _within(d, below, s, f)
+        if converged:
             break
-    redo = overshoot | ~np.isfinite(x)
-    if np.any(redo):
-        x[redo] = _bracketed_root([np.broadcast_to(cf, shape)[redo] for cf in coeffs],
-                                  lower[redo], start[redo], max_iterations)
-    return x
+    return overshoot.reshape(x.shape)
+
+
+def _within(step: np.ndarray, below: np.ndarray, spare: np.ndarray, flags: np.ndarray) -> bool:
+    """Whether every ``|step| <= -below``, computed in the buffers ``spare`` and ``flags``."""
+    np.abs(step, out=spare)
+    np.negative(spare, out=spare)
+    return bool(np.all(np.less_equal(below, spare, out=flags)))
 
 
 def _scalar_root(coeffs: list[float], lower: float, max_iterations: int, rtol: float) -> float:
