@@ -1,0 +1,107 @@
+"""The eighth hostile round (issue 32): each class of what failed, with the cases that showed it."""
+
+from __future__ import annotations
+
+import pytest
+
+import mdr_events as me
+from mdr_events.app.cli import main
+from mdr_events.app.study import StudyError, load_study
+
+CONTACT = me.Contact.paper()
+PLAIN = "a plain decimal number (ASCII digits 0-9"
+
+
+def one_line(capsys, status: int, expected: int = 2) -> str:
+    err = capsys.readouterr().err
+    assert status == expected and err.count("\n") == 1 and err.startswith("mdr-events: error:"), err
+    return err
+
+
+# --- N1: a number written as text was read by Python's float()/int(): digit separators and every script's digits ---
+NOT_PLAIN = ["1_0", "２０", "٢٠", "2\u0660"]  # (underscore, full-width, Arabic-Indic, a mixed ASCII and Arabic zero)
+
+
+@pytest.mark.parametrize("text", NOT_PLAIN)
+@pytest.mark.parametrize("argv, option", [
+    (["simulate", "--scenario", "A", "--alpha", "{}"], "argument --alpha: "),
+    (["simulate", "--scenario", "A", "--alpha", "20", "{}"], "argument --alpha: "),
+    (["simulate", "--scenario", "A", "--alpha", "20", "--E", "{}"], "argument --E: "),
+    (["simulate", "--scenario", "A", "--alpha", "20", "--n-steps", "{}"], "argument --n-steps: "),
+    (["simulate", "--scenario", "A", "--alpha", "20", "--dx", "{}"], "argument --dx: "),
+    (["simulate", "--scenario", "A", "--alpha", "20", "--power-law", "2000", "{}"], "argument --power-law: "),
+    (["simulate", "--scenario", "A", "--alpha", "20", "--flat-punch", "{}"], "argument --flat-punch: "),
+    (["simulate", "--scenario", "A", "--alpha", "20", "--friction", "coulomb", "--mu", "{}"], "argument --mu: "),
+    (["simulate", "--scenario", "A", "--alpha", "20", "--limit", "steps={}"], "--limit 'steps="),
+    (["validate", "run.csv", "--scenario", "A", "--alpha", "20", "--tolerance", "{}"], "argument --tolerance: "),
+    (["validate", "run.csv", "--scenario", "A", "--alpha", "20", "--time-origin", "{}"], "--time-origin '"),
+    (["fit", "run.csv", "--free", "tau0", "--scenario", "A", "--alpha", "20", "--noise", "normal_force={}"],
+     "--noise normal_force='"),
+    (["fit", "run.csv", "--scenario", "A", "--alpha", "20", "--free", "tau0", "--bounds", "tau0={}:1e6"],
+     "--bounds 'tau0="),
+    (["phase-diagram", "--scenario", "A", "--tau0", "{}"], "argument --tau0: "),
+    (["lammps-check", "--normal", "jkr", "--scenario", "A", "--alpha", "20", "--steps", "{}"], "argument --steps: "),
+    (["lammps-check", "--normal", "jkr", "--scenario", "A", "--alpha", "20", "--dt", "{}"], "argument --dt: "),
+    (["sweep", "study.toml", "--workers", "{}"], "argument --workers: "),
+])
+def test_every_number_option_reads_plain_decimal_notation_only(tmp_path, capsys, argv, option, text):
+    """``--alpha 1_0`` simulated 10°, ``--alpha ２０`` 20°: Python's float() and int() read digit separators and the
+    digits of every script. Every option of a number reads one notation (validation.plain_number)."""
+    argv = [word.format(text) for word in argv] + ["--out", str(tmp_path / "out")]
+    err = one_line(capsys, main(argv))
+    assert option in err and text in err and "plain decimal" in err, err
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("text, value", [("20", 20.0), ("+20", 20.0), ("2e1", 20.0), ("20.", 20.0), (".5e2", 50.0),
+                                         (" 20 ", 20.0), ("-0", -0.0), ("inf", float("inf")), ("1E-3", 1e-3)])
+def test_plain_decimal_notation_is_read_as_before(text, value):
+    from mdr_events.app.cli import build_parser
+    from mdr_events.validation import plain_number
+
+    args = build_parser().parse_args(["simulate", "--scenario", "A", "--alpha", text, "--out", "o"])
+    assert args.alpha == [value]
+    assert plain_number(text) == value
+
+
+@pytest.mark.parametrize("text", ["1e3", "1.0", "0x10", "1_000", "٣", ""])
+def test_an_integer_option_reads_plain_decimal_integers_only(capsys, tmp_path, text):
+    err = one_line(capsys, main(["simulate", "--scenario", "A", "--alpha", "20", "--n-steps", text,
+                                 "--out", str(tmp_path / "out")]))
+    assert f"argument --n-steps: {text!r} is not allowed; allowed: a plain decimal integer" in err
+
+
+@pytest.mark.parametrize("text", NOT_PLAIN)
+def test_a_csv_cell_reads_plain_decimal_notation_only(tmp_path, text):
+    """A CSV cell "２０" was read as 20 (the round-two fix refused "_" alone)."""
+    path = tmp_path / "run.csv"
+    path.write_text(f"time,normal_force\n0,1\n1,{text}\n2,3\n", encoding="utf-8")
+    with pytest.raises(ValueError) as raised:
+        me.validate(path, CONTACT, "A", 20.0)
+    assert f"line 3, column 'normal_force': {text!r} is not a number; allowed: {PLAIN}" in str(raised.value)
+
+
+@pytest.mark.parametrize("text", NOT_PLAIN)
+def test_a_study_s_limit_reads_plain_decimal_notation_only(tmp_path, text):
+    study = tmp_path / "study.toml"
+    study.write_text(f'[parameters]\npreset = "paper-R30"\n[phase_diagram]\nscenarios = ["A"]\n'
+                     f'[limits]\nsteps = "{text}"\n[output]\ndirectory = "out"\n', encoding="utf-8")
+    with pytest.raises(StudyError) as raised:
+        load_study(study)
+    assert f"[limits] 'steps={text}' is not allowed" in str(raised.value) and PLAIN in str(raised.value)
+
+
+@pytest.mark.parametrize("text", [*NOT_PLAIN, True])
+@pytest.mark.parametrize("read", [me.Contact.from_attrs, me.Parameters.from_attrs])
+def test_a_file_s_number_attribute_reads_plain_decimal_notation_only(read, text):
+    attrs = {**me.Parameters.paper().to_attrs(), **CONTACT.to_attrs(), "param_E": text}
+    with pytest.raises(ValueError, match="the attribute param_E=.* is not allowed; allowed: a number"):
+        read(attrs)
+
+
+def test_a_tabulated_profile_s_attribute_reads_plain_decimal_notation_only():
+    profile = me.TabulatedProfile([0.0, 1e-3, 2e-3], [0.0, 1e-6, 4e-6])
+    attrs = dict(me.Contact(CONTACT.elastomer, profile, CONTACT.adhesion, CONTACT.friction).to_attrs())
+    attrs["profile_table_r"] = "0,1e-3,２e-3"
+    with pytest.raises(ValueError, match="profile_table_r=.* is not allowed; allowed: numbers separated by commas"):
+        me.Contact.from_attrs(attrs)
