@@ -105,3 +105,23 @@ def test_a_tabulated_profile_s_attribute_reads_plain_decimal_notation_only():
     attrs["profile_table_r"] = "0,1e-3,２e-3"
     with pytest.raises(ValueError, match="profile_table_r=.* is not allowed; allowed: numbers separated by commas"):
         me.Contact.from_attrs(attrs)
+
+
+# --- N2: symbolic.relation('nope'): a bare KeyError, its message quoted as a key, unlike every other unknown name --
+def test_an_unknown_relation_is_named_with_the_allowed_keys():
+    from mdr_events.theory import symbolic
+
+    with pytest.raises(ValueError) as raised:
+        symbolic.relation("nope")
+    assert isinstance(raised.value, KeyError)  # (a look-up by key, as before)
+    message = str(raised.value)
+    assert message.startswith("key='nope' is not allowed (unknown relation 'nope'); allowed: ")
+    assert "jkr_depth" in message and "profile_power_law" in message and "\n" not in message
+
+
+@pytest.mark.parametrize("key", [None, 3, ["jkr_depth"]])
+def test_a_relation_s_key_of_another_type_is_named(key):
+    from mdr_events.theory import symbolic
+
+    with pytest.raises(TypeError, match=r"key=.* is not allowed; allowed: a relation's key \(str\)"):
+        symbolic.relation(key)
