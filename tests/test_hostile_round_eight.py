@@ -125,3 +125,28 @@ def test_a_relation_s_key_of_another_type_is_named(key):
 
     with pytest.raises(TypeError, match=r"key=.* is not allowed; allowed: a relation's key \(str\)"):
         symbolic.relation(key)
+
+
+# --- N3: a study with a bad value and nothing to compute said "nothing to compute" -----------------------------------
+@pytest.mark.parametrize("tables, words", [
+    ('[parameters]\npreset = "paper-R30"\nE = inf\n', "[parameters] Parameters.E=inf is not allowed"),
+    ('[parameters]\npreset = "paper-R30"\nnu = 0.7\n', "[parameters] Parameters.nu=0.7 is not allowed"),
+    ('[parameters]\npreset = "paper-R30"\n[profile]\nc = -1.0\nn = 2.0\n', "[profile] PowerLaw.c=-1.0 is not allowed"),
+    ('[parameters]\npreset = "paper-R30"\n[friction]\nlaw = "coulomb"\nmu = -1.0\n', "[friction] mu=-1.0 is not allowed"),
+    ('[parameters]\npreset = "paper-R30"\n[limits]\nsteps = "many"\n', "[limits] 'steps=many' is not allowed"),
+    ('[parameters]\npreset = "paper-R30"\n[path]\nwaypoints = [[0, 0]]\n', "[path] waypoints = [[0, 0]] is not allowed"),
+])
+def test_a_bad_value_is_named_before_what_the_study_lacks(tmp_path, tables, words):
+    study = tmp_path / "study.toml"
+    study.write_text(tables + '[output]\ndirectory = "out"\n')
+    with pytest.raises(ValueError) as raised:
+        load_study(study)
+    assert words in str(raised.value) and "nothing to compute" not in str(raised.value)
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_study_of_good_values_and_nothing_to_compute_still_says_so(tmp_path):
+    study = tmp_path / "study.toml"
+    study.write_text('[parameters]\npreset = "paper-R30"\n[output]\ndirectory = "out"\n')
+    with pytest.raises(ValueError, match="nothing to compute"):
+        load_study(study)
