@@ -150,3 +150,51 @@ def test_a_study_of_good_values_and_nothing_to_compute_still_says_so(tmp_path):
     study.write_text('[parameters]\npreset = "paper-R30"\n[output]\ndirectory = "out"\n')
     with pytest.raises(ValueError, match="nothing to compute"):
         load_study(study)
+
+
+# --- N4: the LAMMPS run's size was not checked: --limit steps=10 ran 10⁴ steps, --dt 5e-324 an internal error --------
+@pytest.fixture()
+def no_lammps_run(monkeypatch):
+    """LAMMPS must not start: the size is refused before."""
+    from mdr_events.dem import runner
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("LAMMPS was started")
+
+    monkeypatch.setattr(runner, "run_deck", refuse)
+
+
+FRICTIONLESS = me.Contact(CONTACT.elastomer, CONTACT.indenter, me.Adhesion(0.0, 0.0), me.FrictionLaw("tau0", tau0=0.0))
+
+
+@pytest.mark.parametrize("kwargs, words", [
+    (dict(limits=me.Limits(steps=10)), "the LAMMPS run (10000 steps of dt = 0.119 s) needs 1e+04 discrete time steps"),
+    (dict(steps=10**8), "the LAMMPS run (100000000 steps"),
+    (dict(dt=1e-9), "needs 1.19e+12 discrete time steps"),
+    (dict(steps=2000, limits=me.Limits(memory=1e5)), "the LAMMPS run (2000 steps of dt = 0.596 s) needs"),
+])
+def test_the_lammps_run_is_checked_against_the_limits_before_it_starts(no_lammps_run, kwargs, words):
+    with pytest.raises(me.ResourceLimitError) as raised:
+        me.lammps_check(FRICTIONLESS, "A", 20.0, **kwargs)
+    assert words in str(raised.value)
+
+
+@pytest.mark.parametrize("kwargs, words", [
+    (dict(dt=5e-324), "dt=5e-324 is not allowed: the path's 1192.14 s would take inf steps; allowed: a time step"),
+    (dict(dt=1e-300), "dt=1e-300 is not allowed: the path's 1192.14 s would take 1.19e+303 steps"),
+    (dict(steps=10**400), "... is not allowed; allowed: a number of time steps, an integer >= 1 (at most 9e+15)"),
+    (dict(limits="big"), "limits='big' (str) is not allowed; allowed: a mdr_events.Limits"),
+])
+def test_a_lammps_step_beyond_any_count_is_named(no_lammps_run, kwargs, words):
+    """dt=5e-324: OverflowError (cannot convert float infinity to integer), exit 3 in the CLI."""
+    with pytest.raises((ValueError, TypeError)) as raised:
+        me.lammps_check(FRICTIONLESS, "A", 20.0, **kwargs)
+    assert words in str(raised.value)
+
+
+@pytest.mark.parametrize("extra", [["--limit", "steps=10"], ["--dt", "5e-324"], ["--steps", "99999999999"]])
+def test_the_cli_refuses_a_lammps_run_too_large_in_one_line(no_lammps_run, tmp_path, capsys, extra):
+    status = main(["lammps-check", "--normal", "hertz/material", "--dgamma0", "0", "--dgamma1", "0", "--scenario", "A",
+                   "--alpha", "20", *extra, "--out", str(tmp_path / "out")])
+    one_line(capsys, status)
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
