@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 import mdr_events as me
@@ -198,3 +199,16 @@ def test_the_cli_refuses_a_lammps_run_too_large_in_one_line(no_lammps_run, tmp_p
                    "--alpha", "20", *extra, "--out", str(tmp_path / "out")])
     one_line(capsys, status)
     assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+
+
+# --- N5: a sweep's grid of range(10**9) was read into an array (8 GB, the process killed) before its size was checked -
+@pytest.mark.parametrize("grid", [{"tau0": range(10**9)}, {"tau0": range(1, 10**5), "dgamma1": range(1, 10**5)},
+                                  {"tau0": np.zeros(10**9, dtype=np.int8)}])
+def test_a_grid_s_size_is_checked_before_its_values_are_read(grid):
+    import resource
+
+    before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    with pytest.raises(me.ResourceLimitError, match=r"the grid of \d+ runs needs .* GiB of memory"):
+        me.sweep(grid, CONTACT, "A", 20.0, output=me.SweepOutput(quantities=("critical_angle_A",)),
+                 engine=me.Engine(scheduler="serial"))
+    assert resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - before < 2**20  # kB: less than 1 GiB more
