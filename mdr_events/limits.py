@@ -11,7 +11,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
-from mdr_events.validation import check_real, shown
+from mdr_events.validation import PLAIN_NUMBER, check_real, plain_number, shown
 
 __all__ = ["Limits", "ResourceLimitError", "DEFAULT_LIMITS", "LIMIT_UNITS", "parse_limit", "check_limits"]
 
@@ -122,9 +122,9 @@ def parse_limit(text: str, limits: Limits = DEFAULT_LIMITS) -> Limits:
                 value, factor = value[: -len(suffix)].strip(), size
                 break
     try:
-        number = float(value) * factor
+        number = plain_number(value) * factor
     except ValueError:
-        raise ValueError(f"--limit {text!r} is not allowed; allowed: a number > 0 or inf"
+        raise ValueError(f"--limit {text!r} is not allowed; allowed: a number > 0 or inf, {PLAIN_NUMBER}"
                          + (" (memory: with KiB, MiB, GiB, kB, MB, GB)" if name == "memory" else "")) from None
     return dataclasses.replace(limits, **{name: number})
 

@@ -13,7 +13,7 @@ import numbers
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from mdr_events.validation import as_float, check_choice, shown
+from mdr_events.validation import PLAIN_NUMBER, as_float, check_choice, number_of, shown
 
 __all__ = ["Parameters", "PARAMETER_UNITS", "PARAMETER_LONG_NAMES", "PRESETS", "PAPER_D_MAX", "PAPER_V", "from_preset",
            "check_parameters"]
@@ -313,10 +313,10 @@ class Parameters:
                 values[n] = None
                 continue
             try:
-                values[n] = float(attrs[f"param_{n}"])
-            except (TypeError, ValueError):
+                values[n] = number_of(attrs[f"param_{n}"])
+            except (TypeError, ValueError, OverflowError):
                 raise ValueError(f"the attribute param_{n}={shown(attrs[f'param_{n}'])} is not allowed; allowed: a "
-                                 f"number ({PARAMETER_UNITS[n]})") from None
+                                 f"number ({PARAMETER_UNITS[n]}; in text: {PLAIN_NUMBER})") from None
         return cls(**values)
 
 

@@ -13,7 +13,7 @@ from typing import Any, Collection
 
 import numpy as np
 
-__all__ = ["as_float", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "validate_alpha", "check_callback"]
+__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "validate_alpha", "check_callback"]
 
 #: Characters of a value's ``repr`` shown in a message (a long list or a file's content is cut).
 SHOWN_CHARACTERS = 80
@@ -24,6 +24,74 @@ def shown(value: Any) -> str:
     characters, for a message."""
     text = " ".join(repr(value).split())
     return text if len(text) <= SHOWN_CHARACTERS else text[: SHOWN_CHARACTERS - 3] + "..."
+
+
+#: What a number written as text may be (an option's value, a string of a study file, a CSV cell): :func:`plain_number`.
+PLAIN_NUMBER = "a plain decimal number (ASCII digits 0-9, an optional sign, point and exponent, e.g. 20, -1.5, 2e-6)"
+#: What an integer written as text may be: :func:`plain_number` of ``int``.
+PLAIN_INTEGER = "a plain decimal integer (ASCII digits 0-9, an optional sign, e.g. 2000)"
+
+
+def plain_number(text: str, kind: type = float) -> float | int:
+    """The number a text writes in plain decimal notation: the one rule of every number the user writes as text.
+
+    Python's ``float()`` and ``int()`` also read digit separators (``"1_0"``: 10) and the digits of every script
+    (``"２０"``, ``"٢٠"``: 20), which no option, study string or CSV file means; those are refused. ``inf``,
+    ``infinity`` and ``nan`` (any case, signed) are read as ``float()`` reads them, for the checks of the value to
+    name; surrounding whitespace is ignored.
+
+    Parameters
+    ----------
+    text : str
+        The number as written.
+    kind : type, default float
+        ``float`` (:data:`PLAIN_NUMBER`) or ``int`` (:data:`PLAIN_INTEGER`: no point, no exponent).
+
+    Returns
+    -------
+    float or int
+        Its value, of ``kind``.
+
+    Raises
+    ------
+    ValueError
+        If ``text`` is not a plain decimal number of ``kind`` (the message names it and what is allowed).
+    """
+    try:
+        if not isinstance(text, str) or not text.isascii() or "_" in text:
+            raise ValueError(text)
+        return kind(text)
+    except ValueError:
+        raise ValueError(f"{shown(text)} is not allowed; allowed: "
+                         f"{PLAIN_INTEGER if kind is int else PLAIN_NUMBER}") from None
+
+
+def number_of(value: Any) -> float:
+    """A number stored as a value or as text (a file's attribute): :func:`plain_number` of a ``str``, ``float()`` of
+    anything else but a bool.
+
+    Parameters
+    ----------
+    value : Any
+        The stored number.
+
+    Returns
+    -------
+    float
+        Its value.
+
+    Raises
+    ------
+    TypeError
+        If ``value`` is a bool or not convertible (``None``, a list, ...).
+    ValueError
+        If ``value`` is text other than :data:`PLAIN_NUMBER`.
+    OverflowError
+        If ``value`` is an integer beyond a double.
+    """
+    if isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{shown(value)} ({type(value).__name__}) is not allowed; allowed: a number")
+    return plain_number(value) if isinstance(value, str) else float(value)
 
 
 def as_float(value: numbers.Real) -> float:

@@ -4,7 +4,7 @@ run's values checked before anything runs (:func:`check_runs`)."""
 from __future__ import annotations
 
 import math
-from typing import Mapping, NamedTuple, Sequence
+from typing import Mapping, NamedTuple, Sequence, Sized
 
 import numpy as np
 
@@ -70,6 +70,14 @@ def _values(name: str, values, allowed: Sequence[str], contact: Contact | None) 
     return array
 
 
+def _count(values) -> int:
+    """How many values a grid's entry gives, read without converting them: its size (an array), its length (a list,
+    a range), or 1 (a number; anything else is refused when read)."""
+    if isinstance(values, np.ndarray):
+        return values.size
+    return len(values) if isinstance(values, Sized) and not isinstance(values, (str, bytes)) else 1
+
+
 def _check_size(limits: Limits, runs: int, names: int) -> None:
     """The grid's own array (runs × names) within ``limits``, before it is built."""
     limits.check(f"the grid of {runs} runs", memory=BYTES_PER_STORED_VALUE * runs * names)
@@ -82,12 +90,12 @@ def make_grid(grid, allowed: Sequence[str], limits: Limits | None = None, contac
     if isinstance(grid, Mapping):
         if not grid:
             raise ValueError("grid={} is not allowed; allowed: a mapping of names to values, e.g. {'tau0': [...]}")
+        if limits is not None:  # before the values are read (range(10**9) is 8 GB as an array) and multiplied out
+            _check_size(limits, math.prod(_count(values) for values in grid.values()), len(grid))
         coords = {str(name): _values(str(name), values, allowed, contact) for name, values in grid.items()}
         for name, values in coords.items():
             if len(np.unique(values)) != values.size:
                 raise ValueError(f"grid[{name!r}] repeats a value; allowed: distinct values")
-        if limits is not None:  # before the outer product is built
-            _check_size(limits, math.prod(values.size for values in coords.values()), len(coords))
         mesh = np.meshgrid(*coords.values(), indexing="ij")
         return Grid(tuple(coords), coords, np.column_stack([m.ravel() for m in mesh]), table=False)
     if isinstance(grid, Sequence) and not isinstance(grid, str) and grid and all(isinstance(r, Mapping) for r in grid):

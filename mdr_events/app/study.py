@@ -115,8 +115,8 @@ from mdr_events.analysis.fit import FitResult
 from mdr_events.analysis.reports import ValidationReport, Verdict
 from mdr_events.app import inputs
 from mdr_events.app.jobs import FitJob, Job, LammpsCheckJob, PhaseJob, SimulateJob, SweepJob, ValidateJob
-from mdr_events.app.study_format import (MAX_TOML_BYTES, REQUIRED_TABLES, SCHEMA, StudyError, check_tables,
-                                         measured_case, one_table, read_toml)
+from mdr_events.app.study_format import (MAX_TOML_BYTES, REQUIRED_TABLES, SCHEMA, StudyError, check_computation,
+                                         check_tables, measured_case, one_table, read_toml)
 from mdr_events.contact import Contact
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.io.files import check_output_stem, prepare_output_directory
@@ -435,6 +435,7 @@ def load_study(path: str | os.PathLike) -> Study:
     document, source = read_toml(path, "study file")
     check_tables(document, os.fspath(source))
     tables = _tables(document, source)
+    check_computation(document, os.fspath(source))
     directory = FilePath(document["output"]["directory"])
     directory = directory if directory.is_absolute() else source.parent / directory
     return Study(source, tables.params, tables.provenance, directory, tables.name, "name" in document["output"],

@@ -17,7 +17,7 @@ from mdr_events.io.files import check_file_path, check_output_stem
 from mdr_events.limits import LIMIT_UNITS
 from mdr_events.parameters import PARAMETER_UNITS
 
-__all__ = ["StudyError", "SCHEMA", "REQUIRED_TABLES", "MAX_TOML_BYTES", "check_table", "check_tables",
+__all__ = ["StudyError", "SCHEMA", "REQUIRED_TABLES", "MAX_TOML_BYTES", "check_table", "check_tables", "check_computation",
            "measured_case", "read_toml", "one_table"]
 
 
@@ -119,6 +119,8 @@ def check_table(table: str, content: Any, where: str) -> None:
 
 
 def check_tables(document: dict[str, Any], where: str) -> None:
+    """Raise :class:`StudyError` unless every table is known and of known keys of the right kinds, the required
+    tables are there and ``[output] name`` is a plain stem (what the tables together give: :func:`check_computation`)."""
     for table, content in document.items():
         if table not in SCHEMA:
             raise StudyError(f"{where}: unknown table [{table}]; allowed: "
@@ -127,6 +129,17 @@ def check_tables(document: dict[str, Any], where: str) -> None:
     for table in REQUIRED_TABLES:
         if table not in document:
             raise StudyError(f"{where}: the required table [{table}] is missing")
+    if "name" in document["output"]:
+        try:
+            check_output_stem("[output] name", document["output"]["name"])
+        except ValueError as error:
+            raise StudyError(f"{where}: {error}") from None
+
+
+def check_computation(document: dict[str, Any], where: str) -> None:
+    """Raise :class:`StudyError` unless the tables together give something to compute, each what it needs: checked
+    after the values every table shares (the parameters, profile, friction, limits and path), so that a bad value is
+    named first."""
     if not {"simulation", "phase_diagram", "validate", "fit", "sweep", "lammps_check"} & set(document):
         raise StudyError(f"{where}: nothing to compute; give a [simulation] table, a [phase_diagram] table, "
                          "a [validate] table, a [fit] table, a [sweep] table, a [lammps_check] table or several")
@@ -145,11 +158,6 @@ def check_tables(document: dict[str, Any], where: str) -> None:
     for table in ("validate", "fit", "lammps_check"):
         if table in document:
             measured_case(document, where, table)
-    if "name" in document["output"]:
-        try:
-            check_output_stem("[output] name", document["output"]["name"])
-        except ValueError as error:
-            raise StudyError(f"{where}: {error}") from None
 
 
 def measured_case(document: dict[str, Any], where: str, name: str) -> tuple[str, float] | None:

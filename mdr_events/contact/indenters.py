@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_real, real_array, shown
+from mdr_events.validation import PLAIN_NUMBER, SCALE_MAX, SCALE_MIN, check_real, plain_number, real_array, shown
 
 __all__ = ["Paraboloid", "PowerLaw", "FlatPunch", "TabulatedProfile", "Profile", "Indenter", "profile_attrs",
            "indenter_from_attrs"]
@@ -358,10 +358,10 @@ def indenter_from_attrs(attrs) -> Indenter:
         columns = []
         for name in ("profile_table_r", "profile_table_f"):
             try:
-                columns.append(tuple(float(value) for value in str(attrs[name]).split(",")))
+                columns.append(tuple(plain_number(value) for value in str(attrs[name]).split(",")))
             except ValueError:
                 raise ValueError(f"the attribute {name}={shown(attrs[name])} is not allowed; allowed: numbers "
-                                 "separated by commas") from None
+                                 f"separated by commas, each {PLAIN_NUMBER}") from None
         return TabulatedProfile(*columns)
     if "profile" in attrs:  # (a profile in words without its shape: not the paraboloid silently)
         raise ValueError(f"profile={shown(attrs['profile'])} without its shape (profile_c and profile_n, "

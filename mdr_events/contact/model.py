@@ -21,7 +21,7 @@ from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.contact.indenters import FlatPunch, Indenter, Paraboloid, PowerLaw, TabulatedProfile, \
     indenter_from_attrs
 from mdr_events.parameters import Parameters, check_parameters
-from mdr_events.validation import shown
+from mdr_events.validation import PLAIN_NUMBER, number_of, shown
 
 __all__ = ["Contact", "SHORT_NAMES", "PARTS", "UNITS"]
 
@@ -175,12 +175,10 @@ class Contact:
         for key in NUMERIC_ATTRIBUTES:
             if key in attrs:
                 try:
-                    if isinstance(attrs[key], bool):
-                        raise TypeError(key)
-                    float(attrs[key])
+                    number_of(attrs[key])
                 except (TypeError, ValueError, OverflowError):
-                    raise ValueError(f"the attribute {key}={shown(attrs[key])} is not allowed; allowed: a number") \
-                        from None
+                    raise ValueError(f"the attribute {key}={shown(attrs[key])} is not allowed; allowed: a number "
+                                     f"(in text: {PLAIN_NUMBER})") from None
         try:
             return cls(Elastomer.from_attrs(attrs), indenter_from_attrs(attrs), Adhesion.from_attrs(attrs),
                        FrictionLaw.from_attrs(attrs))

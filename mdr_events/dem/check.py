@@ -43,7 +43,8 @@ def lammps_check(contact: Contact, motion, alpha: float | None = None, *, model:
     tolerance : float
         The verdict's bound (:func:`~mdr_events.validate`).
     limits : Limits
-        What the continuum run may use (:func:`~mdr_events.validate`).
+        What the LAMMPS run (:func:`~mdr_events.dem.runner.run_lammps`: its steps, checked before it starts) and the
+        continuum run (:func:`~mdr_events.validate`) may use.
 
     Returns
     -------
@@ -59,7 +60,7 @@ def lammps_check(contact: Contact, motion, alpha: float | None = None, *, model:
     if isinstance(motion, Path):
         motion, alpha = Paths({"path": motion}), None
     path, _ = one_path(one_path_job(contact, motion, alpha, {}))
-    run = run_lammps(contact, path, model.normal, model.tangential, steps=steps, dt=dt)
+    run = run_lammps(contact, path, model.normal, model.tangential, steps=steps, dt=dt, limits=limits)
     report = validate(run, contact, motion, alpha, tolerance=tolerance, limits=limits, time_origin="path_start")
     report.attrs.update({key: value for key, value in run.attrs.items() if key.startswith("lammps_")})
     return run, report

@@ -25,6 +25,7 @@ import numpy as np
 from mdr_events.contact import Contact
 from mdr_events.dem.mapping import LammpsModel, WallCoefficients, wall_model_arguments
 from mdr_events.models.paths import Path
+from mdr_events.validation import MAX_COUNT, shown
 
 __all__ = ["MIN_STEPS_PER_SEGMENT", "OUTPUT_COLUMNS", "DEFAULT_OUTPUT", "steps_for", "input_deck"]
 
@@ -53,11 +54,16 @@ def steps_for(path: Path, steps: int | None, dt: float | None) -> tuple[int, flo
     if dt is not None:
         if isinstance(dt, bool) or not isinstance(dt, (int, float)) or not (math.isfinite(dt) and dt > 0):
             raise ValueError(f"dt={dt!r} is not allowed; allowed: a time step in s, finite and > 0")
-        steps = max(1, math.ceil(duration / dt * (1.0 - 1e-12)))
+        count = duration / dt * (1.0 - 1e-12)
+        if not count <= MAX_COUNT:  # (a step below 1e-300 s: more steps than any count, inf beyond the doubles)
+            raise ValueError(f"dt={dt!r} is not allowed: the path's {duration:.6g} s would take {count:.3g} steps; "
+                             f"allowed: a time step in s >= {duration / MAX_COUNT:.3g} (at most {MAX_COUNT:.0e} steps)")
+        steps = max(1, math.ceil(count))
     elif steps is None:
         steps = 10_000
-    if isinstance(steps, bool) or not isinstance(steps, (int, np.integer)) or steps < 1:
-        raise ValueError(f"steps={steps!r} is not allowed; allowed: a number of time steps, an integer >= 1")
+    if isinstance(steps, bool) or not isinstance(steps, (int, np.integer)) or not 1 <= steps <= MAX_COUNT:
+        raise ValueError(f"steps={shown(steps)} is not allowed; allowed: a number of time steps, an integer >= 1 (at "
+                         f"most {MAX_COUNT:.0e})")
     step = duration / int(steps) if dt is None else float(dt)
     shortest = float(np.min(path.segment_lengths)) / path.speed
     needed = shortest / MIN_STEPS_PER_SEGMENT

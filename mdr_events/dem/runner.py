@@ -23,7 +23,9 @@ import xarray as xr
 from mdr_events.contact import Contact
 from mdr_events.dem.deck import OUTPUT_COLUMNS, input_deck, steps_for
 from mdr_events.dem.mapping import LammpsModel, NORMAL_MODELS, TANGENTIAL_MODELS, wall_coefficients
+from mdr_events.io.candidates import BYTES_PER_CSV_VALUE
 from mdr_events.io.datasets import register_schema, stamp
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models import indenters
 from mdr_events.models.paths import Path
 from mdr_events.validation import shown
@@ -145,7 +147,7 @@ def _dataset(table: np.ndarray, contact: Contact, path: Path, attrs: dict[str, A
 
 
 def run_lammps(contact: Contact, path: Path, normal: str = "hertz/material", tangential: str = "none", *,
-               steps: int | None = None, dt: float | None = None) -> xr.Dataset:
+               steps: int | None = None, dt: float | None = None, limits: Limits = DEFAULT_LIMITS) -> xr.Dataset:
     """Run LAMMPS's granular wall model ``normal`` + ``tangential`` for ``contact`` along ``path``.
 
     Parameters
@@ -160,6 +162,10 @@ def run_lammps(contact: Contact, path: Path, normal: str = "hertz/material", tan
         :data:`~mdr_events.dem.mapping.TANGENTIAL_MODELS`).
     steps, dt : optional
         The number of steps, or the time step in s (default 10⁴ steps over the path).
+    limits : Limits
+        What the run may use: its steps count as ``steps`` and ``samples`` (LAMMPS prints one row per step), the rows
+        read back :data:`~mdr_events.io.candidates.BYTES_PER_CSV_VALUE` per value as ``memory``; checked before LAMMPS
+        starts.
 
     Returns
     -------
@@ -172,13 +178,18 @@ def run_lammps(contact: Contact, path: Path, normal: str = "hertz/material", tan
     ------
     LammpsUnavailable, LammpsError, ValueError, TypeError
         LAMMPS not installed (naming the extra); LAMMPS's own error; a bad model name, contact, path or step.
+    ResourceLimitError
+        A run of more steps than ``limits`` allow (a ``ValueError``).
     """
     model = LammpsModel(normal, tangential)
+    limits = check_limits(limits)
     if not isinstance(path, Path):
         raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: a Path")
     numbers = wall_coefficients(contact, model, _deepest_radius(contact, path)
                                 if model.tangential == "linear_history" else None)
     count, step = steps_for(path, steps, dt)
+    limits.check(f"the LAMMPS run ({count} steps of dt = {step:.3g} s)", steps=count, samples=count + 1,
+                 memory=BYTES_PER_CSV_VALUE * (count + 1) * len(OUTPUT_COLUMNS))
     deck = input_deck(contact, model, numbers, path, count, step)
     with tempfile.TemporaryDirectory(prefix="mdr-events-lammps-") as folder:
         table, version = run_deck(deck, FilePath(folder) / "forces.txt")

@@ -20,7 +20,7 @@ import xarray as xr
 from mdr_events.io.files import input_file_problem, load_netcdf
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.contact.indenters import TabulatedProfile
-from mdr_events.validation import SCALE_MAX, check_real, real_array, shown
+from mdr_events.validation import PLAIN_NUMBER, SCALE_MAX, check_real, plain_number, real_array, shown
 
 __all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor", "check_run_is_finite",
            "UNDEFINED_OUT_OF_CONTACT"]
@@ -137,11 +137,10 @@ def _read_row(path: Path, number: int, header: list[str], row: list[str], column
         raise ValueError(f"{path}: line {number} has {len(row)} fields; allowed: {len(header)} as in the header")
     for name, text in zip(header, row):
         try:
-            if "_" in text:  # (Python's float reads "0_0.0" as 0.0: a digit separator no CSV means)
-                raise ValueError(text)
-            columns[name].append(float(text) if text.strip() else math.nan)
+            columns[name].append(plain_number(text) if text.strip() else math.nan)
         except ValueError:
-            raise ValueError(f"{path}: line {number}, column {name!r}: {text!r} is not a number") from None
+            raise ValueError(f"{path}: line {number}, column {name!r}: {text!r} is not a number; allowed: "
+                             f"{PLAIN_NUMBER}, or an empty field") from None
 
 
 def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:

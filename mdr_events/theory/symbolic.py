@@ -42,12 +42,15 @@ from typing import Callable
 import numpy as np
 import sympy as sp
 
+from mdr_events.validation import shown
+
 __all__ = [
     "Relation",
     "derive",
     "derive_afresh",
     "cache_path",
     "relation",
+    "UnknownRelationError",
     "relations",
     "abel_transform",
     "derive_power_law_model",
@@ -982,24 +985,37 @@ def relations() -> dict[str, Relation]:
     return ordered
 
 
+class UnknownRelationError(KeyError, ValueError):
+    """A key no derived relation has (:func:`relation`): a ``KeyError`` as a look-up by key, and a ``ValueError`` as
+    every other unknown name the package is given; its message is shown as written (not quoted as a key)."""
+
+    def __str__(self) -> str:
+        return str(self.args[0]) if self.args else ""
+
+
 def relation(key: str) -> Relation:
-    """One derived relation by key; ``KeyError`` lists the known keys.
+    """One derived relation by key.
 
     Parameters
     ----------
     key : str
-        The relation's key, e.g. ``"jkr_depth"`` (:func:`relations` lists them).
+        The relation's key (``mdr-events derive`` lists them), e.g. ``"jkr_depth"``.
 
     Returns
     -------
     Relation
-        The relation, derived once per process.
+        The relation, derived (or read from the cache) once per process.
 
     Raises
     ------
-    KeyError
-        An unknown key, listing the known ones.
+    TypeError
+        If ``key`` is not a ``str``.
+    UnknownRelationError
+        A ``KeyError`` and ``ValueError`` naming ``key`` and the known keys, if no relation has it.
     """
+    if not isinstance(key, str):
+        raise TypeError(f"key={shown(key)} ({type(key).__name__}) is not allowed; allowed: a relation's key (str), "
+                        "as mdr-events derive lists them")
     if key == "profile_power_law":
         return derive_power_law()
     if key in POWER_LAW_KEYS:
@@ -1013,4 +1029,5 @@ def relation(key: str) -> Relation:
         return rels[key]
     except KeyError:
         known = sorted([*rels, "profile_power_law", *POWER_LAW_KEYS, *FRICTION_KEYS, *ADHESIVE_FRICTION_KEYS])
-        raise KeyError(f"unknown relation {key!r}; known: {known}") from None
+        raise UnknownRelationError(f"key={key!r} is not allowed (unknown relation {key!r}); allowed: "
+                                   f"{', '.join(known)}") from None

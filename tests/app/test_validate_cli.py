@@ -212,7 +212,7 @@ A20 = ["--scenario", "A", "--alpha", "20"]
     # the path and its angle
     (["run.csv", "--scenario", "A", "--alpha", "100"],
      "--alpha 100: alpha=100.0 (degrees) is not allowed; allowed: finite angles in [0, 90]"),
-    (["run.csv", "--scenario", "A", "--alpha", "steep"], "argument --alpha: invalid float value: 'steep'"),
+    (["run.csv", "--scenario", "A", "--alpha", "steep"], "argument --alpha: 'steep' is not allowed; allowed: a plain decimal number"),
     (["run.csv", "--scenario", "A", "--alpha", "0"], "--alpha 0: alpha=0.0 in scenario A"),
     (["run.csv", "--scenario", "A"], "--scenario A needs --alpha"),
     (["run.csv", "--alpha", "20"], "one of the arguments --scenario --path is required"),

@@ -50,9 +50,27 @@ class StoreOnce(argparse._StoreAction):
         setattr(namespace, self.dest, values)
 
 
+def _typed(kind: type) -> Callable[[str], float | int]:
+    """The argparse type of ``float`` or ``int`` (:func:`~mdr_events.validation.plain_number`, imported when a value
+    is read): its error the option's one line (``argument --alpha: '1_0' is not allowed; allowed: ...``)."""
+
+    def typed(text: str) -> float | int:
+        from mdr_events.validation import plain_number
+
+        try:
+            return plain_number(text, kind)
+        except ValueError as error:
+            raise argparse.ArgumentTypeError(str(error)) from None
+
+    typed.__name__ = kind.__name__
+    return typed
+
+
 class Parser(argparse.ArgumentParser):
     """An argument parser whose errors are one line (:class:`UsageError`) naming where the allowed options are, and
-    whose options of a value are given once (:class:`StoreOnce`).
+    whose options of a value are given once (:class:`StoreOnce`). A number's option (``type=float`` or ``int``)
+    reads plain decimal notation only (:func:`~mdr_events.validation.plain_number`): not ``1_0`` nor ``２０``,
+    which Python's ``float()`` reads.
 
     ``fill``, a function of the parser, adds its arguments when they are first needed (to parse, to show the help, to
     list them: :meth:`filled`), so that a verb's imports are made only when the verb is used.
@@ -62,6 +80,8 @@ class Parser(argparse.ArgumentParser):
         super().__init__(*args, **kwargs)
         self.register("action", None, StoreOnce)
         self.register("action", "store", StoreOnce)
+        self.register("type", float, _typed(float))
+        self.register("type", int, _typed(int))
         self._fill = fill
 
     def filled(self) -> Parser:
@@ -311,13 +331,16 @@ def time_origin(text: str) -> str | float:
 
     if text in TIME_ORIGINS:
         return text
+    from mdr_events.validation import plain_number
+
     try:
-        value = float(text)
+        value = plain_number(text)
     except ValueError:
         value = math.nan
     if not math.isfinite(value):
         raise UsageError(f"--time-origin {text!r} is not allowed; allowed: {', '.join(TIME_ORIGINS)} or the runs' "
-                         "time of first contact in s (a finite number)")
+                         "time of first contact in s (a finite number, plain decimal: ASCII digits 0-9, an optional "
+                         "sign, point and exponent)")
     return value
 
 

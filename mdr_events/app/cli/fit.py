@@ -46,17 +46,21 @@ def fill(fitting: argparse.ArgumentParser) -> None:
 
 def numbers(option: str, text: str | None, allowed: Sequence[str]) -> dict[str, float]:
     """``normal_force=1e-3,...`` -> ``{"normal_force": 0.001}``; a value that is not a number names the option."""
+    from mdr_events.validation import PLAIN_NUMBER, plain_number
+
     found = {}
     for key, value in _options.pairs(option, text, allowed).items():
         try:
-            found[key] = float(value)
+            found[key] = plain_number(value)
         except ValueError:
-            raise UsageError(f"{option} {key}={value!r} is not allowed; allowed: a number") from None
+            raise UsageError(f"{option} {key}={value!r} is not allowed; allowed: {PLAIN_NUMBER}") from None
     return found
 
 
 def bounds(items: Sequence[str] | None) -> dict[str, tuple[float, float]]:
     """``["tau0=1e3:1e6"]`` -> ``{"tau0": (1e3, 1e6)}``; a bad item names the option."""
+    from mdr_events.validation import PLAIN_NUMBER, plain_number
+
     found = {}
     for item in items or ():
         name, equals, interval = item.partition("=")
@@ -64,10 +68,10 @@ def bounds(items: Sequence[str] | None) -> dict[str, tuple[float, float]]:
         try:
             if not (equals and colon):
                 raise ValueError
-            found[name.strip()] = (float(low), float(high))
+            found[name.strip()] = (plain_number(low), plain_number(high))
         except ValueError:
-            raise UsageError(f"--bounds {item!r} is not allowed; allowed: NAME=LOW:HIGH with numbers in SI units, "
-                             "e.g. tau0=1e3:1e6") from None
+            raise UsageError(f"--bounds {item!r} is not allowed; allowed: NAME=LOW:HIGH with numbers in SI units "
+                             f"({PLAIN_NUMBER}), e.g. tau0=1e3:1e6") from None
     return found
 
 

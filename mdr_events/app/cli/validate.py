@@ -16,7 +16,7 @@ if TYPE_CHECKING:
     from mdr_events.app.jobs import ValidateJob, Validated
 
 #: A spacing in a run's file name: ``dx`` then a number and an optional unit (``run_dx2um.csv``, ``dx=2e-6.csv``).
-SPACING_IN_NAME = re.compile(r"(?:^|[^A-Za-z])dx[_=-]?(\d+(?:\.\d+)?(?:[eE][-+]?\d+)?)(nm|um|µm|mm|m)?(?![A-Za-z])")
+SPACING_IN_NAME = re.compile(r"(?:^|[^A-Za-z])dx[_=-]?([0-9]+(?:\.[0-9]+)?(?:[eE][-+]?[0-9]+)?)(nm|um|µm|mm|m)?(?![A-Za-z])")
 SPACING_UNITS = {None: 1.0, "m": 1.0, "mm": 1e-3, "um": 1e-6, "µm": 1e-6, "nm": 1e-9}
 #: The least number of spacings for a convergence study (an order from a least-squares slope with its spread).
 CONVERGENCE_MIN_RUNS = 3
