@@ -33,8 +33,7 @@ from mdr_events.models.discrete import check_spacing, check_thresholds_known, ru
 from mdr_events.models.job import ModelJob
 from mdr_events.models.motion import Cases
 from mdr_events.models.paths import Path
-from mdr_events.models.simulation_schema import (SIMULATION_CONTENT, event_log, extrema_dataset,
-                                                 simulation_dataset)
+from mdr_events.models.simulation_schema import SIMULATION_CONTENT, continuum_dataset, simulation_dataset
 from mdr_events.validation import check_count, check_real, real_array, shown
 
 __all__ = ["Discrete", "Continuum", "Method", "METHODS", "as_method", "check_time_step", "DEFAULT_DX",
@@ -271,18 +270,8 @@ class Continuum:
         attrs = dict(method=self.name, scenario=model.scenario,
                      rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
                      content=SIMULATION_CONTENT, **indenters.profile_attrs(profile), **friction_attrs(friction))
-        dataset = simulation_dataset(params, cases, raw["time"], raw, **attrs)
         extrema = [solution_extrema(solution) for solution in raw["solutions"]]
-        return _joined(dataset, event_log(raw["events"], cases.dimension), extrema_dataset(extrema, cases.dimension))
-
-
-def _joined(dataset: xr.Dataset, *others: xr.Dataset) -> xr.Dataset:
-    """``coordinates_last(dataset.merge(other)...)`` of datasets that share no variable, built at once (no alignment):
-    the data variables in order, then the coordinates, with ``dataset``'s attributes."""
-    parts = (dataset, *others)
-    variables = {name: part[name].variable for part in parts for name in part.data_vars}
-    coords = {name: part[name].variable for part in parts for name in part.coords}
-    return xr.Dataset(variables, coords=coords, attrs=dataset.attrs)
+        return continuum_dataset(params, cases, raw["time"], raw, raw["events"], extrema, **attrs)
 
 
 #: A method.

@@ -19,7 +19,8 @@ from mdr_events.models.motion import ANGLE_DIMENSION, CASE_DIMENSIONS, CUSTOM_DI
 from mdr_events.parameters import Parameters
 
 __all__ = ["SIMULATION_CONTENT", "SIMULATION_VARIABLES", "EVENT_VARIABLES", "PATH_VARIABLES", "EXTREMA_VARIABLES",
-           "CONTINUUM_ACCURACY", "simulation_dataset", "event_log", "extrema_dataset", "coordinates_last"]
+           "CONTINUUM_ACCURACY", "simulation_dataset", "continuum_dataset", "event_log", "extrema_dataset",
+           "coordinates_last"]
 
 #: The ``content`` attribute of a simulation.
 SIMULATION_CONTENT = "simulation of indentation and detachment along straight paths"
@@ -125,6 +126,12 @@ def coordinates_last(dataset: xr.Dataset) -> xr.Dataset:
 def event_log(events: list[list[tuple]], dimension: str = ANGLE_DIMENSION) -> xr.Dataset:
     """The continuum event log: one row per event per case along ``(dimension, "event")`` (padded with
     nan / "" / direction 0); the variables of :data:`EVENT_VARIABLES`."""
+    variables, coords = _event_parts(events, dimension)
+    return xr.Dataset(variables, coords=coords)
+
+
+def _event_parts(events: list[list[tuple]], dimension: str) -> tuple[dict, dict]:
+    """The variables and the coordinate of :func:`event_log`, as ``xarray.Dataset`` takes them."""
     rows = max(len(case) for case in events)
     table = {name: np.full((len(events), rows), np.nan) for name in ("time", "depth", "radius", "x")}
     kinds = np.full((len(events), rows), "", dtype=object)
@@ -136,18 +143,22 @@ def event_log(events: list[list[tuple]], dimension: str = ANGLE_DIMENSION) -> xr
             kinds[i, j], directions[i, j] = kind, direction
     values = {"event_time": table["time"], "event_kind": kinds.astype(str), "event_depth": table["depth"],
               "event_radius": table["radius"], "event_x": table["x"], "event_direction": directions}
-    return xr.Dataset(
-        {name: ((dimension, "event"), values[name], {"units": units, "long_name": long_name})
-         for name, (units, long_name) in EVENT_VARIABLES.items()},
-        coords={"event": ("event", np.arange(rows), {"units": "1", "long_name": "event number"})})
+    return ({name: ((dimension, "event"), values[name], {"units": units, "long_name": long_name})
+             for name, (units, long_name) in EVENT_VARIABLES.items()},
+            {"event": ("event", np.arange(rows), {"units": "1", "long_name": "event number"})})
 
 
 def extrema_dataset(extrema: list[dict[str, float]], dimension: str = ANGLE_DIMENSION) -> xr.Dataset:
     """The variables of :data:`EXTREMA_VARIABLES` along ``dimension``, one
     :func:`~mdr_events.models.continuum.extrema.solution_extrema` per case."""
-    return xr.Dataset({name: ((dimension,), np.array([case[name] for case in extrema], dtype=float),
-                              {"units": units, "long_name": long_name})
-                       for name, (units, long_name) in EXTREMA_VARIABLES.items()})
+    return xr.Dataset(_extrema_parts(extrema, dimension))
+
+
+def _extrema_parts(extrema: list[dict[str, float]], dimension: str) -> dict:
+    """The variables of :func:`extrema_dataset`, as ``xarray.Dataset`` takes them."""
+    return {name: ((dimension,), np.array([case[name] for case in extrema], dtype=float),
+                   {"units": units, "long_name": long_name})
+            for name, (units, long_name) in EXTREMA_VARIABLES.items()}
 
 
 def simulation_dataset(
@@ -166,6 +177,47 @@ def simulation_dataset(
     :data:`PATH_VARIABLES` along ``case``. ``attrs`` go to
     :func:`mdr_events.io.datasets.stamp`.
     """
+    data, coords = _simulation_parts(cases, time, values, attrs)
+    return stamp(xr.Dataset(data, coords=coords), params, **attrs)
+
+
+def continuum_dataset(params: Parameters, cases: Cases, time: np.ndarray, values: dict[str, np.ndarray],
+                      events: list[list[tuple]], extrema: list[dict[str, float]], **attrs: Any) -> xr.Dataset:
+    """A continuum result: :func:`simulation_dataset`, then the variables of :func:`event_log` and of
+    :func:`extrema_dataset`, built as one dataset (variables, coordinates and attributes in the order that merging
+    the three gives; one ``xarray.Dataset`` instead of four).
+
+    Parameters
+    ----------
+    params : Parameters
+        The parameters stamped on the result.
+    cases : Cases
+        The cases (their dimension, labels and paths).
+    time : numpy.ndarray
+        The output times (s from first contact).
+    values : dict of str to numpy.ndarray
+        The filled quantities, as for :func:`simulation_dataset`.
+    events : list of list of tuple
+        Each case's event log, as for :func:`event_log`.
+    extrema : list of dict of str to float
+        Each case's extrema, as for :func:`extrema_dataset`.
+    **attrs
+        Attributes, as for :func:`simulation_dataset`.
+
+    Returns
+    -------
+    xarray.Dataset
+        The dataset.
+    """
+    data, coords = _simulation_parts(cases, time, values, attrs)
+    event_data, event_coords = _event_parts(events, cases.dimension)
+    return stamp(xr.Dataset({**data, **event_data, **_extrema_parts(extrema, cases.dimension)},
+                            coords={**coords, **event_coords}), params, **attrs)
+
+
+def _simulation_parts(cases: Cases, time: np.ndarray, values: dict[str, np.ndarray],
+                      attrs: dict[str, Any]) -> tuple[dict, dict]:
+    """The variables and coordinates of :func:`simulation_dataset` (a custom path's note added to ``attrs``)."""
     dimension = cases.dimension
     radius = values["contact_radius"]
     area = np.pi * radius**2
@@ -194,4 +246,4 @@ def simulation_dataset(
         dimension: (dimension, case_coordinate, label),
         "time": ("time", np.asarray(time, dtype=float), {"units": "s", "long_name": "time from first contact"}),
     }
-    return stamp(xr.Dataset(data, coords=coords), params, **attrs)
+    return data, coords

@@ -41,6 +41,9 @@ class Branch:
     #: are then the same for all of them, and the anchors are compared with the levels as they are
     #: (:meth:`~.anchors.AnchorMap.seen_by`)
     flat = False
+    #: the radii, increasing, where the branch's depth is not smooth (a derivative of some order jumps): a solver
+    #: integrating along the radius restarts there instead of shrinking its steps against a kink (none: smooth)
+    knots: tuple[float, ...] = ()
 
     def __init__(self, params: Parameters, work: float):
         self.params = params
@@ -300,6 +303,8 @@ class TabulatedBranch(Branch):
         self.jump_off_radius, self.jump_off_depth = self.line.jump_off_radius, self.line.jump_off_depth
         self._floor = math.sqrt(self.jump_off_radius)
         self._g = self.line.shape.g
+        #: the breaks of the interpolated ``g`` (a PCHIP: its second derivative jumps at each)
+        self.knots = tuple(float(x) for x in self.line.shape.grid)
 
     def depth(self, a: float) -> float:
         return self.line.depth(a)
