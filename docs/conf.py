@@ -128,5 +128,6 @@ html_show_sourcelink = False
 # the modules documented with the public API (docs/api/index.rst): the internals' pages point there
 autosummary_context = {"public_modules": ["mdr_events", "mdr_events.theory.analytic", "mdr_events.theory.power_law",
                                           "mdr_events.theory.mindlin", "mdr_events.theory.tabulated",
-                                          "mdr_events.theory.symbolic", "mdr_events.models.continuum",
+                                          "mdr_events.theory.symbolic", "mdr_events.theory.rate_adhesion",
+                                          "mdr_events.models.continuum",
                                           "mdr_events.dem"]}

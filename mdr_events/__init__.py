@@ -29,7 +29,7 @@ from mdr_events.io.registrars import declare_registrars as _declare_registrars
 _LAZY = {
     "Parameters": "mdr_events.parameters",
     **dict.fromkeys(("Adhesion", "Contact", "Elastomer", "FRICTION_LAWS", "FlatPunch", "FrictionLaw", "Paraboloid",
-                     "PowerLaw", "TabulatedProfile"), "mdr_events.contact"),
+                     "PowerLaw", "RateDependentAdhesion", "TabulatedProfile"), "mdr_events.contact"),
     **dict.fromkeys(("Limits", "ResourceLimitError"), "mdr_events.limits"),
     "DOI": "mdr_events.io.datasets",
     **dict.fromkeys(("open_result", "write_netcdf"), "mdr_events.io.files"),
@@ -99,7 +99,7 @@ if TYPE_CHECKING:  # what static tools (type checkers, IDEs) read: the same name
     from mdr_events import dem
     from mdr_events.dem import lammps_check
     from mdr_events.contact import (FRICTION_LAWS, Adhesion, Contact, Elastomer, FlatPunch, FrictionLaw, Paraboloid,
-                                    PowerLaw, TabulatedProfile)
+                                    PowerLaw, RateDependentAdhesion, TabulatedProfile)
     from mdr_events.io.datasets import DOI
     from mdr_events.io.files import open_result, write_netcdf
     from mdr_events.limits import Limits, ResourceLimitError
@@ -117,6 +117,7 @@ if TYPE_CHECKING:  # what static tools (type checkers, IDEs) read: the same name
 
 __all__ = [
     "Adhesion",
+    "RateDependentAdhesion",
     "Contact",
     "Elastomer",
     "Paraboloid",

@@ -16,13 +16,13 @@ A new kind of a part goes into its module, as a frozen, validated type with ``to
 layers above ask of its part).
 """
 
-from mdr_events.contact.adhesion import NO_ADHESION, Adhesion
+from mdr_events.contact.adhesion import NO_ADHESION, Adhesion, RateDependentAdhesion
 from mdr_events.contact.elastomer import Elastomer
 from mdr_events.contact.friction import FRICTION_LAWS, TAU0, FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.contact.indenters import (FlatPunch, Indenter, Paraboloid, PowerLaw, Profile, TabulatedProfile,
                                           indenter_from_attrs, profile_attrs)
 from mdr_events.contact.model import PARTS, SHORT_NAMES, Contact
 
-__all__ = ["Adhesion", "NO_ADHESION", "Elastomer", "FrictionLaw", "FRICTION_LAWS", "TAU0", "as_friction_law",
+__all__ = ["Adhesion", "RateDependentAdhesion", "NO_ADHESION", "Elastomer", "FrictionLaw", "FRICTION_LAWS", "TAU0", "as_friction_law",
            "friction_attrs", "Paraboloid", "PowerLaw", "FlatPunch", "TabulatedProfile", "Profile", "Indenter",
            "indenter_from_attrs", "profile_attrs", "Contact", "PARTS", "SHORT_NAMES"]

@@ -15,7 +15,7 @@ import dataclasses
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from mdr_events.contact.adhesion import NO_ADHESION, Adhesion
+from mdr_events.contact.adhesion import NO_ADHESION, Adhesion, RateDependentAdhesion, adhesion_from_attrs
 from mdr_events.contact.elastomer import Elastomer
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.contact.indenters import FlatPunch, Indenter, Paraboloid, PowerLaw, TabulatedProfile, \
@@ -29,7 +29,7 @@ __all__ = ["Contact", "SHORT_NAMES", "PARTS", "UNITS"]
 PARTS: dict[str, tuple[type, ...]] = {
     "elastomer": (Elastomer,),
     "indenter": (Paraboloid, PowerLaw, FlatPunch, TabulatedProfile),
-    "adhesion": (Adhesion,),
+    "adhesion": (Adhesion, RateDependentAdhesion),
     "friction": (FrictionLaw,),
 }
 #: Short names of the values inside a contact (those of :class:`~mdr_events.Parameters` and ``mu``) → dotted names.
@@ -41,7 +41,8 @@ SHORT_NAMES: dict[str, str] = {
 #: The unit of each value inside a contact, by dotted name (``c`` of ``f = c rⁿ`` is in m^(1-n)).
 UNITS: dict[str, str] = {
     "elastomer.E": "Pa", "elastomer.nu": "1", "indenter.R": "m", "indenter.c": "m^(1-n)", "indenter.n": "1",
-    "indenter.radius": "m", "adhesion.dgamma0": "J m-2", "adhesion.dgamma1": "J m-2", "friction.tau0": "Pa",
+    "indenter.radius": "m", "adhesion.dgamma0": "J m-2", "adhesion.dgamma1": "J m-2",
+    "adhesion.v_ref": "m s-1", "adhesion.n": "1", "friction.tau0": "Pa",
     "friction.mu": "1",
 }
 
@@ -180,7 +181,7 @@ class Contact:
                     raise ValueError(f"the attribute {key}={shown(attrs[key])} is not allowed; allowed: a number "
                                      f"(in text: {PLAIN_NUMBER})") from None
         try:
-            return cls(Elastomer.from_attrs(attrs), indenter_from_attrs(attrs), Adhesion.from_attrs(attrs),
+            return cls(Elastomer.from_attrs(attrs), indenter_from_attrs(attrs), adhesion_from_attrs(attrs),
                        FrictionLaw.from_attrs(attrs))
         except KeyError as error:
             raise ValueError(f"attrs lack the attribute {error.args[0]!r}; allowed: a result's attributes "

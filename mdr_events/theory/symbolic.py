@@ -59,6 +59,8 @@ __all__ = [
     "FRICTION_KEYS",
     "derive_adhesive_friction_model",
     "ADHESIVE_FRICTION_KEYS",
+    "derive_rate_dependent_adhesion",
+    "RATE_ADHESION_KEYS",
     "SYMBOLS",
 ]
 
@@ -931,6 +933,97 @@ def _derive_adhesive_virgin_curve(add: AddRelation, profile: sp.Expr, boundary: 
         raise RuntimeError("the virgin curve at the centre's cap is not the force of full slip")
 
 
+#: Keys of the relations of the rate-dependent adhesion law (:func:`derive_rate_dependent_adhesion`).
+RATE_ADHESION_KEYS = ("energy_release_rate", "receding_work_of_adhesion", "advancing_work_of_adhesion",
+                      "receding_edge_speed", "advancing_edge_speed", "paraboloid_release_rate",
+                      "flat_punch_detachment_time")
+
+#: The edge's reference speed and its speed ``|ȧ|`` (m/s), the energy release rate ``Γ`` (J/m²), the works at rest.
+v_ref = sp.Symbol("v_ref", positive=True)
+edge_speed = sp.Symbol("v_a", positive=True)
+release = sp.Symbol("Gamma", positive=True)
+dgamma0 = sp.Symbol("dgamma0", positive=True)
+dgamma1 = sp.Symbol("dgamma1", positive=True)
+LATEX_NAMES.update({v_ref: r"v_{\mathrm{ref}}", edge_speed: r"|\dot a|", release: r"\Gamma",
+                    dgamma0: r"\Delta\gamma_{0}", dgamma1: r"\Delta\gamma_{1}"})
+
+
+@functools.cache
+def derive_rate_dependent_adhesion() -> dict[str, Relation]:
+    """Heß's rule (8) with a work of adhesion that depends on the edge's speed: the edge's equation of motion.
+
+    The boundary spring of a contact of radius ``a`` at depth ``d`` is stretched by ``Δl = g(a) − d``; Heß's rule (8)
+    ``Δl = sqrt(2π a Δγ / E*)`` read the other way gives the energy the edge releases, ``Γ = E* Δl² / (2π a)``. The
+    edge moves where ``Γ`` leaves the band of rest ``Δγ0 <= Γ <= Δγ1``: receding (``ȧ < 0``) where ``Γ > Δγ1`` at the
+    speed that makes ``Δγ1 [1 + (|ȧ|/v_ref)^n] = Γ``, advancing where ``Γ < Δγ0`` at the speed that makes
+    ``Δγ0 / [1 + (ȧ/v_ref)^n] = Γ``. Derived and checked: both speeds vanish at the band's edges; for ``v_ref → ∞``
+    the works are ``Δγ1`` and ``Δγ0`` (the paper's law: the radius on the branches (9)); for ``v_ref → 0`` the works
+    grow without bound receding and vanish advancing, and the speeds go to 0 (the edge held). For the flat punch held at
+    a constant depth ``d < 0`` beyond Kendall's pull-off, ``n = 1``, the receding edge's time to reach ``a`` from
+    ``a0`` is a closed form, and its time to detach (``a → 0``) is finite.
+    """
+    return {rel.key: rel for rel in _cached("rate_dependent_adhesion",
+                                            lambda: list(rate_dependent_adhesion_afresh().values()))}
+
+
+def rate_dependent_adhesion_afresh() -> dict[str, Relation]:
+    """The derivation of :func:`derive_rate_dependent_adhesion` with SymPy, bypassing any cache."""
+    out: dict[str, Relation] = {}
+
+    def add(rel: Relation) -> None:
+        out[rel.key] = rel
+
+    elongation = sp.Symbol("Delta_l", positive=True)
+    hess = derive()["hess_max_elongation"].rhs  # Δl = sqrt(2π a Δγ / E*) (8)
+    released = _single_positive(sp.solve(sp.Eq(elongation, hess), dgamma), "energy release rate")
+    add(Relation("energy_release_rate", "(8)", "energy released per area by the edge whose spring is stretched by "
+                 "Delta_l: Hess's rule (8) solved for the work of adhesion", release, released, (elongation, a, E_star)))
+    ratio = (edge_speed / v_ref) ** n
+    works = {"receding": dgamma1 * (1 + ratio), "advancing": dgamma0 / (1 + ratio)}
+    at_rest = {"receding": dgamma1, "advancing": dgamma0}
+    for way, work in works.items():
+        if sp.limit(work, v_ref, sp.oo) != at_rest[way]:
+            raise RuntimeError(f"the {way} work does not tend to the work at rest as v_ref -> oo")
+        add(Relation(f"{way}_work_of_adhesion", "(8)", f"work of adhesion of a {way} edge moving at |da/dt| = v_a",
+                     dgamma, work, (edge_speed, at_rest[way], v_ref, n)))
+        speed = _single_positive(sp.solve(sp.Eq(work, release), edge_speed), f"{way} edge speed")
+        if sp.simplify(speed.subs(release, at_rest[way])) != 0:
+            raise RuntimeError(f"the {way} edge's speed does not vanish at the work at rest")
+        held = sp.limit(speed.subs(release, 2 * dgamma1 if way == "receding" else dgamma0 / 2), v_ref, 0, "+")
+        if held != 0:
+            raise RuntimeError(f"the {way} edge's speed does not vanish as v_ref -> 0")
+        add(Relation(f"{way}_edge_speed", "(8)", f"speed |da/dt| of a {way} edge that releases Gamma "
+                     f"({'Gamma > dgamma1' if way == 'receding' else 'Gamma < dgamma0'})", edge_speed, speed,
+                     (release, at_rest[way], v_ref, n)))
+    if sp.limit(works["receding"], v_ref, 0, "+") != sp.oo or sp.limit(works["advancing"], v_ref, 0, "+") != 0:
+        raise RuntimeError("the works do not diverge receding and vanish advancing as v_ref -> 0")
+    parabolic = released.subs(elongation, a**2 / R - d)  # g(a) = a²/R (4)
+    add(Relation("paraboloid_release_rate", "(8)", "energy release rate of a paraboloid's edge of radius a at depth d "
+                 "(edge spring stretched, a^2/R > d)", release, parabolic, (a, d, R, E_star)))
+    _derive_flat_punch_detachment(add, released, elongation)
+    return out
+
+
+def _derive_flat_punch_detachment(add: AddRelation, released: sp.Expr, elongation: sp.Symbol) -> None:
+    """The flat punch of radius ``a0`` held at ``d < 0`` with ``Γ(a0) > Δγ1`` and ``n = 1``: ``g = 0`` under the face,
+    ``Γ = E* d² / (2π a)`` grows as the edge recedes, ``da/dt = −v_ref (Γ/Δγ1 − 1)``; separated and integrated."""
+    depth = sp.Symbol("d_held", positive=True)  # |d|
+    start, radius = sp.Symbol("a0", positive=True), sp.Symbol("a_t", positive=True)
+    rate = released.subs(elongation, depth)  # Δl = g − d = |d| under the face
+    speed = v_ref * (rate / dgamma1 - 1)  # n = 1
+    reach = sp.solve(sp.Eq(rate, dgamma1), a)[0]  # c: the radius whose Γ is Δγ1 (a0 < c: the edge recedes)
+    integral = sp.integrate(1 / speed, (a, radius, start))  # SymPy's antiderivative carries log(a − c), a < c
+    # the same in logarithms of positive numbers (c − a > 0 on the way), so that it evaluates in real arithmetic
+    time = ((start - radius) + reach * sp.log((reach - start) / (reach - radius))) / v_ref * -1
+    checks = (sp.diff(time, radius) + 1 / speed.subs(a, radius), time.subs(radius, start),
+              sp.diff(integral - time, radius))
+    if any(sp.simplify(check) != 0 for check in checks):
+        raise RuntimeError("the flat punch's detachment time is not the integral of the receding edge's law")
+    add(Relation("flat_punch_detachment_time", "", "time for the edge of a flat punch of radius a0, held at depth "
+                 "-d_held beyond Kendall's pull-off, to recede to a_t (n = 1; a_t -> 0: the detachment)", t, time,
+                 (radius, start, depth, dgamma1, v_ref, E_star)))
+
+
 def _reduce_to_polynomial(depth_a: sp.Expr, depth_b: sp.Expr, divide_by: sp.Expr | None = None) -> sp.Expr:
     """Eliminate ``d`` from ``d = depth_a(a)`` and ``d = depth_b(a)``.
 
@@ -982,6 +1075,7 @@ def relations() -> dict[str, Relation]:
     ordered.update(derive_power_law_model())
     ordered.update(derive_friction_model())
     ordered.update(derive_adhesive_friction_model())
+    ordered.update(derive_rate_dependent_adhesion())
     return ordered
 
 
@@ -1024,10 +1118,13 @@ def relation(key: str) -> Relation:
         return derive_friction_model()[key]
     if key in ADHESIVE_FRICTION_KEYS:
         return derive_adhesive_friction_model()[key]
+    if key in RATE_ADHESION_KEYS:
+        return derive_rate_dependent_adhesion()[key]
     rels = derive()
     try:
         return rels[key]
     except KeyError:
-        known = sorted([*rels, "profile_power_law", *POWER_LAW_KEYS, *FRICTION_KEYS, *ADHESIVE_FRICTION_KEYS])
+        known = sorted([*rels, "profile_power_law", *POWER_LAW_KEYS, *FRICTION_KEYS, *ADHESIVE_FRICTION_KEYS,
+                        *RATE_ADHESION_KEYS])
         raise UnknownRelationError(f"key={key!r} is not allowed (unknown relation {key!r}); allowed: "
                                    f"{', '.join(known)}") from None

@@ -207,6 +207,8 @@ def test_quartics_21_have_one_positive_root_solving_the_system(branch, sign, dga
 PAPER_LATEX = {
     "E_star": r"E^{*}", "G_star": r"G^{*}", "tau0": r"\tau_{0}", "dgamma": r"\Delta\gamma",
     "d_max": r"d_{\max}", "u_bar": r"\bar{u}", "tan_alpha": r"\tan\alpha", "Delta_l_max": r"\Delta l_{\max}",
+    "v_ref": r"v_{\mathrm{ref}}", "v_a": r"|\dot a|", "Gamma": r"\Gamma", "dgamma0": r"\Delta\gamma_{0}",
+    "dgamma1": r"\Delta\gamma_{1}",
 }
 
 

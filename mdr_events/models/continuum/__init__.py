@@ -22,6 +22,7 @@ module                     one idea
                            contact's slip events (the zone's and the tensile annulus's)
 :mod:`.solution`           :class:`PathSolution` (spans and interpolants), ``evaluate``, ``extremum``,
                            ``tangential_work``
+:mod:`.rate_edge`          a rate-dependent adhesion law's edge: the radius as the state of an ODE (the normal problem)
 :mod:`.extrema`            the exact extrema of ``F_N``, ``F_x`` and ``A`` over the run, not from output samples
 :mod:`.stationary`         where one span's quantity is stationary: the roots of its derivative (dense output,
                            the branch's closed forms)
@@ -46,6 +47,7 @@ from .anchors import AnchorMap, Piece
 from .branch import Branch
 from .model import MAX_TRAVEL_PER_CAP, ContinuumModel, Resolution, Segment, kinematics, resolution
 from .plan import Action, SpanPlan, plan_span
+from .rate_edge import EdgeEvent, EdgeEventKind, EdgeMode, EdgeRun, solve_edge
 from .solution import (EVALUATED_QUANTITIES, EXTREMUM_QUANTITIES, PathSolution, algebraic_tangential_force, evaluate,
                        evaluate_span, extremum, tangential_work)
 from .solve import run_continuum, solve_path
@@ -56,7 +58,7 @@ from .tolerances import NEGLIGIBLE_SHARE, Tolerances
 from .zones import Role, ZoneLayout, lay_out_zones
 
 __all__ = [
-    "Action", "AnchorMap", "Branch", "Cap", "ContactState", "ContinuumModel", "EVALUATED_QUANTITIES", "EVENT_KINDS",
+    "Action", "AnchorMap", "EdgeEvent", "EdgeEventKind", "EdgeMode", "EdgeRun", "solve_edge", "Branch", "Cap", "ContactState", "ContinuumModel", "EVALUATED_QUANTITIES", "EVENT_KINDS",
     "EXTREMUM_QUANTITIES", "Event", "EventKind", "MAX_TRAVEL_PER_CAP", "NEGLIGIBLE_SHARE", "NO_ZONE",
     "PathSolution", "Piece", "Regime", "Resolution", "Role", "Segment", "Slip", "Span", "SpanIntegrator",
     "SpanPlan", "Tolerances", "Trigger", "ZONE_EVENTS", "ZoneLayout", "ZoneSummary", "algebraic_tangential_force",

@@ -1,0 +1,346 @@
+"""The normal problem of a rate-dependent adhesion law along a path: the contact radius ``a(t)`` as the state of an ODE.
+
+Under :class:`~mdr_events.contact.adhesion.RateDependentAdhesion` the edge is not on a branch (9): it moves at the
+speed its energy release rate gives it, ``ȧ = edge_speed(Γ(a, d(t)))`` with ``Γ = E* (g(a) − d)² / (2π a)``
+(:mod:`mdr_events.theory.rate_adhesion`), and rests while ``Δγ0 <= Γ <= Δγ1``. :func:`solve_edge` integrates it with
+``solve_ivp`` (Radau: the ODE is stiff where ``v_ref`` is far above the path's speed, the rate-independent limit) over
+each straight segment of the path, and logs where the edge starts and stops moving (events on ``Γ``) and where the
+contact ends (``a`` down to :data:`END_SHARE` of the jump-in radius: the receding edge runs away in a finite time). The
+springs' tangential shifts are not part of it (yet): this is the radius and the normal force (10) of such a contact.
+
+At first contact (``d = 0``) the radius starts from 0 at an unbounded speed: near ``a = 0`` the stretched edge
+releases ``Γ ≈ Δγ0 (a/a_J)³`` (``a_J``: the jump-in radius of the law at rest) on the paraboloid, so
+``ȧ ≈ v_ref (a_J/a)^(3/n)``, whose solution from ``a = 0`` reaches ``a0`` after
+``a0^(1+3/n) / ((1 + 3/n) v_ref a_J^(3/n))``: the integration starts there, at the radius :data:`START_SPEED` gives. The
+flat punch's face touches at once: its radius starts at the punch's and cannot grow beyond it.
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from dataclasses import dataclass, field
+from typing import NamedTuple
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from mdr_events.contact.adhesion import RateDependentAdhesion
+from mdr_events.contact.indenters import FlatPunch
+from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
+from mdr_events.models.paths import Path
+from mdr_events.parameters import Parameters
+from mdr_events.theory.rate_adhesion import edge_speed_scalar
+
+from .branch import make_branch
+from .model import ContinuumModel, Segment, kinematics
+from .tolerances import Tolerances
+
+__all__ = ["EdgeEventKind", "EdgeEvent", "EdgeMode", "EdgeRun", "solve_edge", "START_SPEED", "END_SHARE", "EDGE_RTOL",
+           "BAND_SHARE", "MAX_PIECES_PER_SEGMENT", "CLOCK_ULPS"]
+
+#: The integration starts at first contact from the radius whose advancing speed is this many times ``v_ref``,
+#: ``a0 = a_J START_SPEED^(−n/3)`` (module docstring): the time it takes to get there from 0 is below
+#: ``a0 / (START_SPEED v_ref)``, and the solver's first steps resolve a speed of ``START_SPEED v_ref``.
+START_SPEED = 1e6
+#: The contact has come apart once the receding radius is this share of the jump-in radius (it gets there in a finite
+#: time, the speed growing as ``a^(−1/n)``: the last 1e-4 of the radius take a vanishing time).
+END_SHARE = 1e-3
+#: A release rate within this share of a work at rest is at it (an event's root, or the closed form of a branch
+#: (9), rounds it): where the depth moves it out of the band, the edge moves.
+BAND_SHARE = 1e-9
+#: A receding edge whose radius over its speed (the time the rest of its collapse takes, the speed growing as the radius
+#: shrinks) is below this many ulp of the clock has come apart: the clock cannot resolve the rest (at v_ref = 100 m/s
+#: the last micrometre takes 1e-13 s at t = 600 s).
+CLOCK_ULPS = 1e3
+#: The machine epsilon of the clock's doubles.
+EPS = float(np.finfo(float).eps)
+#: A segment holds at most this many pieces (rest, motion, ...): more means no progress.
+MAX_PIECES_PER_SEGMENT = 1000
+#: The relative tolerance of the radius ODE (Radau).
+EDGE_RTOL = 1e-10
+
+
+class EdgeEventKind(str, enum.Enum):
+    """What the edge does (values as written to files)."""
+
+    FIRST_CONTACT = "first_contact"
+    RE_CONTACT = "re_contact"
+    EDGE_STOPS = "edge_stops"          #: the release rate enters the band of rest
+    GROWTH_STARTS = "growth_starts"    #: it falls below Δγ0
+    RECEDING_STARTS = "receding_starts"  #: it rises above Δγ1
+    CONTACT_ENDS = "contact_ends"
+
+
+class EdgeEvent(NamedTuple):
+    """One logged event of the edge.
+
+    Parameters
+    ----------
+    time : float
+        s on the path's clock.
+    kind : EdgeEventKind
+        What the edge did.
+    depth : float
+        The indentation depth (m).
+    radius : float
+        The contact radius (m); at the contact's end, where the integration stopped.
+    """
+
+    time: float  #: s on the path's clock
+    kind: EdgeEventKind
+    depth: float  #: m
+    radius: float  #: m (at the contact's end: where the integration stopped, the rest of the collapse unresolved)
+
+
+@dataclass
+class EdgeRun:
+    """The radius along a path: one dense output per integrated piece, and the events.
+
+    Parameters
+    ----------
+    model : ContinuumModel
+        The indenter's normal force (10) and branches.
+    pieces : list of tuple
+        ``(t_start, t_end, segment, solution)``: the radius on ``[t_start, t_end]`` (path clock) is
+        ``solution(t)[0]`` (``solve_ivp``'s dense output).
+    events : list of EdgeEvent
+        What the edge did, in time order.
+    """
+
+    model: ContinuumModel
+    pieces: list = field(default_factory=list)
+    events: list = field(default_factory=list)
+
+    def radius(self, times) -> np.ndarray:
+        """The contact radius (m) at ``times`` (s, path clock); 0 out of contact.
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s on the path's clock).
+
+        Returns
+        -------
+        numpy.ndarray
+            The radius, the shape of ``times``.
+        """
+        times = np.asarray(times, dtype=float)
+        out = np.zeros(times.shape)
+        for t_start, t_end, _, solution in self.pieces:
+            inside = (times >= t_start) & (times <= t_end)
+            if np.any(inside):
+                out[inside] = solution(times[inside])[0]
+        return out
+
+    def normal_force(self, times, path: Path) -> np.ndarray:
+        """``F_N`` (N, (10)) at ``times`` (s, path clock) of the contact along ``path``.
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s on the path's clock).
+        path : Path
+            The path the run followed (its depth at ``times``).
+
+        Returns
+        -------
+        numpy.ndarray
+            The normal force, 0 out of contact.
+        """
+        a = self.radius(times)
+        depth = path.position(np.asarray(times, dtype=float))[1]
+        return np.where(a > 0, np.asarray(self.model.normal_force(depth, np.where(a > 0, a, 1.0)), dtype=float), 0.0)
+
+
+class EdgeMode(enum.Enum):
+    """What the edge does on a piece: rest (the release rate in the band ``[Δγ0, Δγ1]``), advance or recede."""
+
+    RESTING = "resting"
+    ADVANCING = "advancing"
+    RECEDING = "receding"
+
+
+class _EdgeODE:
+    """The right-hand side ``ȧ``, the release rate and the event functions on one segment."""
+
+    def __init__(self, law: RateDependentAdhesion, params: Parameters, profile: SimulatedProfile, segment: Segment):
+        self.law, self.segment = law, segment
+        self.profile_depth = make_branch(params, 0.0, profile).depth  # g(a): the branch without adhesion
+        self.limit = profile.radius if isinstance(profile, FlatPunch) else math.inf
+        self.E_star = params.E_star
+
+    def release(self, t: float, a: float) -> float:
+        stretch = self.profile_depth(a) - self.segment.d(t)
+        return self.E_star * stretch * stretch / (2.0 * math.pi * a) if stretch > 0.0 and a > 0.0 else 0.0
+
+    def rhs(self, mode: "EdgeMode"):
+        """``ȧ(t, a)`` of a moving edge, continued smoothly past the work at rest where it stops (the speed's law
+        with the sign of ``Γ − Δγ``, so that the solver finds the stop by its event, not against a kink)."""
+        law = self.law
+        receding = mode is EdgeMode.RECEDING
+        rest, sign = (law.dgamma1, -1.0) if receding else (law.dgamma0, 1.0)
+        exponent = 1.0 / law.n
+
+        def speed(t: float, y) -> list[float]:
+            release = self.release(t, float(y[0]))
+            if not receding and release <= 0.0:
+                return [edge_speed_scalar(law, release)]
+            excess = release / rest - 1.0 if receding else rest / release - 1.0
+            return [sign * law.v_ref * math.copysign(abs(excess) ** exponent, excess)]
+        return speed
+
+    def mode(self, t: float, a: float) -> EdgeMode:
+        """The edge's mode at ``t`` with radius ``a``: by the release rate, and at a work at rest (to
+        :data:`BAND_SHARE`) by where the depth goes (out of the band when it moves the rate out)."""
+        release, law, vd = self.release(t, a), self.law, self.segment.vd
+        if release > law.dgamma1 * (1.0 + BAND_SHARE) or (release >= law.dgamma1 * (1.0 - BAND_SHARE) and vd < 0.0):
+            return EdgeMode.RECEDING
+        if a >= self.limit:  # the punch's face is all there is: it cannot grow
+            return EdgeMode.RESTING
+        if release < law.dgamma0 * (1.0 - BAND_SHARE) or (release <= law.dgamma0 * (1.0 + BAND_SHARE) and vd > 0.0):
+            return EdgeMode.ADVANCING
+        return EdgeMode.RESTING
+
+    def leaves_rest(self, t: float, a: float) -> tuple[float, EdgeMode] | None:
+        """When a resting edge of radius ``a`` starts to move on the segment after ``t``, in closed form: where the
+        depth reaches that of the branch (9) of ``Δγ1`` (receding, the depth falling) or of ``Δγ0`` (advancing)."""
+        vd, g = self.segment.vd, self.profile_depth(a)
+        if vd < 0.0:
+            work, mode = self.law.dgamma1, EdgeMode.RECEDING
+        elif vd > 0.0 and a < self.limit:
+            work, mode = self.law.dgamma0, EdgeMode.ADVANCING
+        else:
+            return None
+        when = self.segment.time_at_depth(g - math.sqrt(2.0 * math.pi * a * work / self.E_star))
+        return (when, mode) if when < self.segment.t1 else None
+
+    def moving_events(self, mode: EdgeMode, end_radius: float) -> list:
+        """Terminal events of a moving edge: it stops (the rate back at the work at rest) or the contact ends."""
+        rest = self.law.dgamma1 if mode is EdgeMode.RECEDING else self.law.dgamma0
+
+        def stops(t, y):
+            return self.release(t, float(y[0])) - rest
+        stops.terminal, stops.direction = True, -1.0 if mode is EdgeMode.RECEDING else 1.0
+
+        speed = self.rhs(mode)
+
+        def ends(t, y):  # (the radius small, or the rest of the collapse shorter than the clock resolves)
+            return y[0] - max(end_radius, CLOCK_ULPS * EPS * abs(t) * abs(speed(t, y)[0]))
+        ends.terminal, ends.direction = True, -1.0
+        events = [stops, ends]
+        if mode is EdgeMode.ADVANCING and math.isfinite(self.limit):
+            def fills(t, y):
+                return y[0] - self.limit
+            fills.terminal, fills.direction = True, 1.0
+            events.append(fills)
+        return events
+
+
+class _Constant:
+    """A resting radius, called like ``solve_ivp``'s dense output."""
+
+    def __init__(self, radius: float):
+        self.value = radius
+
+    def __call__(self, t) -> np.ndarray:
+        return np.full((1,) + np.shape(t), self.value)
+
+
+def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profile: SimulatedProfile = None,
+               rtol: float = EDGE_RTOL) -> EdgeRun:
+    """Integrate the radius of a contact under ``law`` along ``path`` (module docstring).
+
+    Parameters
+    ----------
+    params : Parameters
+        The material and ``R`` (the paraboloid's); its works of adhesion must be the law's at rest.
+    path : Path
+        The indenter's path.
+    law : RateDependentAdhesion
+        The adhesion law.
+    profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
+        The indenter (``None``: the paraboloid of ``params.R``).
+    rtol : float, optional
+        The ODE's relative tolerance.
+
+    Returns
+    -------
+    EdgeRun
+        The radius's pieces and the edge's events.
+
+    Raises
+    ------
+    ValueError
+        A law whose works at rest are not the parameters'.
+    """
+    profile = check_simulated_profile(profile)
+    model = ContinuumModel(params, Tolerances(), profile)
+    if law.works_at_rest != (params.dgamma0, params.dgamma1):
+        raise ValueError(f"law={law!r} is not allowed with dgamma0={params.dgamma0!r}, dgamma1={params.dgamma1!r} "
+                         "J/m²; allowed: a law whose works at rest are the parameters'")
+    jump_in = model.grow.radius(0.0, 1e-14) if not isinstance(profile, FlatPunch) else profile.radius
+    run = EdgeRun(model)
+    entries = list(path.entry_times())
+    state = None  # (t, a) in contact, or None
+    for segment in kinematics(path):
+        ode = _EdgeODE(law, params, profile, segment)
+        t = segment.t0
+        for _ in range(MAX_PIECES_PER_SEGMENT):
+            if state is None:
+                starts = [entry for entry in entries if t <= entry < segment.t1]
+                if not starts:
+                    break
+                state = _touch(run, law, profile, segment, starts[0], jump_in)
+            if state[0] >= segment.t1:
+                break
+            state = _piece(run, ode, state, jump_in, rtol)
+            if state is not None:
+                t = state[0]
+            else:
+                t = run.events[-1].time
+        else:
+            raise RuntimeError(f"the rate-dependent edge made no progress on [{segment.t0!r}, {segment.t1!r}] s after "
+                               f"{MAX_PIECES_PER_SEGMENT} pieces; please report the parameters and path")
+    return run
+
+
+def _touch(run: EdgeRun, law: RateDependentAdhesion, profile, segment: Segment, when: float, jump_in: float):
+    """A contact made at ``when`` (``d = 0``): the radius just after the jump-in's start (module docstring)."""
+    kind = EdgeEventKind.RE_CONTACT if run.events else EdgeEventKind.FIRST_CONTACT
+    run.events.append(EdgeEvent(when, kind, float(segment.d(when)), 0.0))
+    if isinstance(profile, FlatPunch):
+        return (when, jump_in)
+    start = START_SPEED ** (-law.n / 3.0) * jump_in
+    power = 1.0 + 3.0 / law.n
+    lag = start**power / (power * law.v_ref * jump_in ** (3.0 / law.n))
+    return (when + lag, start)
+
+
+def _piece(run: EdgeRun, ode: _EdgeODE, state, jump_in: float, rtol: float):
+    """One piece from ``state`` (``(t, a)``): resting to the segment's end or where the edge starts to move (closed
+    form), or moving (the ODE) to the segment's end, where it stops, or where the contact ends (``None``)."""
+    t0, a0 = state
+    segment = ode.segment
+    mode = ode.mode(t0, a0)
+    if mode is EdgeMode.RESTING:
+        leaving = ode.leaves_rest(t0, a0)
+        t_end = segment.t1 if leaving is None else max(leaving[0], t0)
+        run.pieces.append((t0, t_end, segment, _Constant(a0)))
+        if leaving is not None:
+            kind = EdgeEventKind.RECEDING_STARTS if leaving[1] is EdgeMode.RECEDING else EdgeEventKind.GROWTH_STARTS
+            run.events.append(EdgeEvent(t_end, kind, float(segment.d(t_end)), a0))
+        return (t_end, a0)
+    solution = solve_ivp(ode.rhs(mode), (t0, segment.t1), [a0], method="Radau", rtol=rtol, atol=rtol * jump_in,
+                         dense_output=True, events=ode.moving_events(mode, END_SHARE * jump_in))
+    if solution.status < 0:
+        raise RuntimeError(f"the rate-dependent edge's ODE failed on [{t0!r}, {segment.t1!r}] s ({mode.value}): "
+                           f"{solution.message}")
+    t_end, a_end = float(solution.t[-1]), float(solution.y[0, -1])
+    run.pieces.append((t0, t_end, segment, solution.sol))
+    if solution.status == 1 and len(solution.t_events[1]):  # the contact has come apart
+        run.events.append(EdgeEvent(t_end, EdgeEventKind.CONTACT_ENDS, float(segment.d(t_end)), a_end))
+        return None
+    if solution.status == 1:  # it stops (or fills the punch's face)
+        run.events.append(EdgeEvent(t_end, EdgeEventKind.EDGE_STOPS, float(segment.d(t_end)), a_end))
+    return (t_end, a_end)

@@ -1,0 +1,130 @@
+"""The radius of a contact under the rate-dependent adhesion law (models.continuum.rate_edge.solve_edge): the flat
+punch's detachment against its closed form, the paper's law as v_ref → ∞ (the pull-off force converging at the
+order n = 1 gives), a resting edge leaving the band where the branch (9) of Δγ1 says, and a faster unloading pulling
+harder."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.optimize import minimize_scalar
+
+import mdr_events as me
+from mdr_events.contact.adhesion import RateDependentAdhesion
+from mdr_events.models.continuum import evaluate, solve_path
+from mdr_events.models.continuum.rate_edge import EdgeEventKind, solve_edge
+from mdr_events.theory import rate_adhesion
+from mdr_events.theory.analytic import jkr_contact_radius
+
+PAPER = me.Parameters.paper()
+#: The ODE's rtol (EDGE_RTOL 1e-10) over a detachment of ~600 s of slow receding: its time to a few 1e-9.
+DETACHMENT_RTOL = 1e-8
+#: The depth where a resting edge starts to recede, against the branch (9): the crossing of a linear depth with a
+#: closed form, to rounding.
+BRANCH_DEPTH_RTOL = 1e-12
+
+
+def _law(v_ref, n=1.0, params=PAPER):
+    return RateDependentAdhesion(params.dgamma0, params.dgamma1, v_ref, n)
+
+
+def _events(run, kind):
+    return [event for event in run.events if event.kind is kind]
+
+
+def test_a_flat_punch_held_beyond_kendall_detaches_when_the_closed_form_says():
+    """In to 2 µm, out to −80 µm (beyond Kendall's −57 µm: the edge recedes on the way), held there while sliding."""
+    punch = me.FlatPunch(1.5e-3)
+    params = PAPER.replace(dgamma0=0.05)
+    law = _law(1e-6, params=params)
+    path = me.Path(np.array([(0.0, 0.0), (0.0, 2e-6), (0.0, -80e-6), (0.05, -80e-6)]), speed=1e-6)
+    run = solve_edge(params, path, law, profile=punch)
+    held = path.corner_times[2]
+    radius_held = float(run.radius(np.array([held]))[0])
+    assert 0.0 < radius_held < punch.radius  # it has receded some on the way out
+    ended = _events(run, EdgeEventKind.CONTACT_ENDS)[0]
+    closed = rate_adhesion.flat_punch_detachment_time(law, radius_held, -80e-6, params.E_star, radius=ended.radius)
+    assert ended.radius < 1e-3 * punch.radius
+    assert ended.time - held == pytest.approx(closed, rel=DETACHMENT_RTOL)
+
+
+def _least_force(run, path):
+    """The least F_N of a run: sampled, then refined by a bounded minimisation between the samples beside it."""
+    times = np.linspace(path.first_contact_time(), path.duration, 20001)
+    at = int(np.argmin(run.normal_force(times, path)))
+    found = minimize_scalar(lambda t: float(run.normal_force(np.array([t]), path)[0]), method="bounded",
+                            bounds=(times[max(at - 1, 0)], times[min(at + 1, len(times) - 1)]),
+                            options={"xatol": 1e-9})
+    return found.fun
+
+
+def test_a_fast_reference_speed_gives_the_paper_s_pull_off():
+    """Vertical in and out: the least F_N approaches JKR's pull-off force −(3/2)πΔγ1 R (the path passes its force
+    minimum before the jump-off) as v_ref grows, at first order in 1/v_ref (n = 1), and the forces in contact approach
+    the continuum's."""
+    path = me.Path.scenario_A(90.0, PAPER)
+    exact = solve_path(PAPER, path, friction=me.FrictionLaw("tau0", tau0=0.0))
+    # (from 1/1000 of the way in: the rate-dependent jump-in takes a time of a_J/v_ref, the paper's none)
+    times = path.first_contact_time() + np.linspace(1e-3, 0.95, 2001) * exact.end_time
+    reference = evaluate(exact, times - exact.t_contact)["normal_force"]
+    pull_off = -1.5 * math.pi * PAPER.dgamma1 * PAPER.R
+    errors, history = [], []
+    for v_ref in (1e-2, 1e-1, 1.0):
+        run = solve_edge(PAPER, path, _law(v_ref))
+        errors.append(abs(_least_force(run, path) - pull_off) / abs(pull_off))
+        history.append(np.max(np.abs(run.normal_force(times, path) - reference)) / np.ptp(reference))
+    orders = -np.diff(np.log10(errors))
+    assert np.all(orders > 0.8), errors
+    assert np.all(np.diff(history) < 0) and history[-1] < 1e-3, history
+
+
+def test_a_resting_edge_recedes_where_the_branch_of_dgamma1_says():
+    """In to d_max, slide at d_max, out: the edge lags the indentation (v_ref only 10 times the path's speed) and
+    creeps on while the indenter slides at d_max, its release rate approaching Δγ0 from below without reaching it (the
+    radius below the branch's at d_max); it stops once the depth falls, rests, and starts to recede at the depth of
+    the branch (9) of Δγ1 at the held radius."""
+    law = _law(1e-5, n=0.6)
+    d = PAPER.d_max
+    path = me.Path(np.array([(0.0, -1e-6), (0.0, d), (200e-6, d), (200e-6, -30e-6)]), speed=1e-6)
+    run = solve_edge(PAPER, path, law)
+    turn, slid = path.corner_times[1], path.corner_times[2]
+    creeping = run.radius(np.linspace(turn, slid, 50))
+    assert np.all(np.diff(creeping) > 0) and creeping[-1] < jkr_contact_radius(d, PAPER, PAPER.dgamma0)
+    stops = _events(run, EdgeEventKind.EDGE_STOPS)[0]
+    assert slid < stops.time < _events(run, EdgeEventKind.RECEDING_STARTS)[0].time
+    resting = np.linspace(stops.time, _events(run, EdgeEventKind.RECEDING_STARTS)[0].time, 50)
+    assert np.all(run.radius(resting) == stops.radius)
+    receding = _events(run, EdgeEventKind.RECEDING_STARTS)[0]
+    a = receding.radius
+    branch = a**2 / PAPER.R - math.sqrt(2 * math.pi * a * PAPER.dgamma1 / PAPER.E_star)
+    assert receding.depth == pytest.approx(branch, rel=BRANCH_DEPTH_RTOL)
+
+
+def test_a_faster_unloading_pulls_harder():
+    """The same in/out path at four speeds under v_ref = 1e-5 m/s, n = 0.6: the receding edge needs more energy
+    the faster it moves (Maugis–Barquins), so the least F_N grows in magnitude with the speed, from the paper's."""
+    law = _law(1e-5, n=0.6)
+    least = []
+    for speed in (1e-8, 1e-7, 1e-6, 1e-5):
+        params = PAPER.replace(v=speed)
+        path = me.Path.scenario_A(90.0, params)
+        run = solve_edge(params, path, law)
+        least.append(np.min(run.normal_force(np.linspace(0.0, path.duration, 20001), path)))
+    exact = solve_path(PAPER, me.Path.scenario_A(90.0, PAPER), friction=me.FrictionLaw("tau0", tau0=0.0))
+    paper = np.min(evaluate(exact, np.linspace(0.0, exact.end_time, 20001))["normal_force"])
+    assert paper > least[0] and np.all(np.diff(least) < 0), (paper, least)
+
+
+def test_a_law_of_other_works_is_refused():
+    with pytest.raises(ValueError, match="law=.*dgamma0=0.01"):
+        solve_edge(PAPER, me.Path.scenario_A(90.0, PAPER), RateDependentAdhesion(0.02, 0.15, 1e-6, 1.0))
+
+
+@pytest.mark.parametrize("method", ["discrete", "continuum"])
+def test_the_simulators_refuse_the_law_and_say_what_runs_it(method):
+    contact = me.Contact(me.Contact.paper().elastomer, me.Contact.paper().indenter, _law(1e-6),
+                         me.Contact.paper().friction)
+    with pytest.raises(TypeError, match=f"not allowed in the {method} method.*continuum.solve_edge"):
+        me.simulate(contact, "A", 20.0, method)
