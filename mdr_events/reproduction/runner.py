@@ -26,6 +26,7 @@ from mdr_events.reproduction.mindlin_adhesive import MINDLIN_ADHESIVE
 from mdr_events.reproduction.parameter_table import PARAMETERS
 from mdr_events.reproduction.phase_diagrams import PHASE_DIAGRAMS
 from mdr_events.reproduction.profiles import PROFILES
+from mdr_events.reproduction.rate_adhesion import RATE_ADHESION
 from mdr_events.reproduction.readme import (file_list_lines, recorded_versions, software_lines, software_versions,
                                             title_lines)
 from mdr_events.reproduction.section import Progress, Reproduction, Section
@@ -35,7 +36,7 @@ __all__ = ["SECTIONS", "COMPUTE_STEPS", "step_count", "compute", "report_text", 
 
 #: The sections in the report's order, which is also the order they are computed and written in.
 SECTIONS: tuple[Section, ...] = (PHASE_DIAGRAMS, CRITICAL_ANGLES, CROSS_CHECK, FIGURES, CONVERGENCE, FRETTING, FIT,
-                                 UNIVERSAL, PROFILES, MINDLIN, MINDLIN_ADHESIVE, LAMMPS, PARAMETERS)
+                                 UNIVERSAL, PROFILES, MINDLIN, MINDLIN_ADHESIVE, LAMMPS, RATE_ADHESION, PARAMETERS)
 #: Progress messages :func:`compute` sends: one per step of every section.
 COMPUTE_STEPS = sum(len(section.steps) for section in SECTIONS)
 #: The progress message of the last step, writing the report.

@@ -9,7 +9,6 @@ import math
 
 import numpy as np
 import pytest
-from scipy.optimize import minimize_scalar
 
 import mdr_events as me
 from mdr_events.contact.adhesion import RateDependentAdhesion
@@ -50,16 +49,6 @@ def test_a_flat_punch_held_beyond_kendall_detaches_when_the_closed_form_says():
     assert ended.time - held == pytest.approx(closed, rel=DETACHMENT_RTOL)
 
 
-def _least_force(run, path):
-    """The least F_N of a run: sampled, then refined by a bounded minimisation between the samples beside it."""
-    times = np.linspace(path.first_contact_time(), path.duration, 20001)
-    at = int(np.argmin(run.normal_force(times, path)))
-    found = minimize_scalar(lambda t: float(run.normal_force(np.array([t]), path)[0]), method="bounded",
-                            bounds=(times[max(at - 1, 0)], times[min(at + 1, len(times) - 1)]),
-                            options={"xatol": 1e-9})
-    return found.fun
-
-
 def test_a_fast_reference_speed_gives_the_paper_s_pull_off():
     """Vertical in and out: the least F_N approaches JKR's pull-off force −(3/2)πΔγ1 R (the path passes its force
     minimum before the jump-off) as v_ref grows, at first order in 1/v_ref (n = 1), and the forces in contact approach
@@ -73,7 +62,7 @@ def test_a_fast_reference_speed_gives_the_paper_s_pull_off():
     errors, history = [], []
     for v_ref in (1e-2, 1e-1, 1.0):
         run = solve_edge(PAPER, path, _law(v_ref))
-        errors.append(abs(_least_force(run, path) - pull_off) / abs(pull_off))
+        errors.append(abs(run.pull_off_force(path) - pull_off) / abs(pull_off))
         history.append(np.max(np.abs(run.normal_force(times, path) - reference)) / np.ptp(reference))
     orders = -np.diff(np.log10(errors))
     assert np.all(orders > 0.8), errors
@@ -111,7 +100,7 @@ def test_a_faster_unloading_pulls_harder():
         params = PAPER.replace(v=speed)
         path = me.Path.scenario_A(90.0, params)
         run = solve_edge(params, path, law)
-        least.append(np.min(run.normal_force(np.linspace(0.0, path.duration, 20001), path)))
+        least.append(run.pull_off_force(path))
     exact = solve_path(PAPER, me.Path.scenario_A(90.0, PAPER), friction=me.FrictionLaw("tau0", tau0=0.0))
     paper = np.min(evaluate(exact, np.linspace(0.0, exact.end_time, 20001))["normal_force"])
     assert paper > least[0] and np.all(np.diff(least) < 0), (paper, least)

@@ -250,14 +250,15 @@ def test_compute_sends_one_progress_message_per_step(computed):
     """reproduce numbers its steps out of a total that counts compute's as COMPUTE_STEPS."""
     _, messages = computed
     assert len(messages) == runner.COMPUTE_STEPS
-    assert messages[-9].startswith("fretting at d_max, R = 30 mm")
-    assert messages[-8].startswith("fit of 4 parameters to synthetic measurements")
-    assert messages[-7].startswith("universal map: critical angles")
-    assert messages[-6].startswith("other indenters: cone, paraboloid, quartic and flat punch")
-    assert messages[-5].startswith("Cattaneo–Mindlin: Coulomb's law")
-    assert messages[-4].startswith("Cattaneo–Mindlin with adhesion: Coulomb's law")
-    assert [message.split(":")[0] for message in messages[-3:]] == ["LAMMPS hertz/material", "LAMMPS jkr",
-                                                                    "LAMMPS dmt"]
+    assert messages[-10].startswith("fretting at d_max, R = 30 mm")
+    assert messages[-9].startswith("fit of 4 parameters to synthetic measurements")
+    assert messages[-8].startswith("universal map: critical angles")
+    assert messages[-7].startswith("other indenters: cone, paraboloid, quartic and flat punch")
+    assert messages[-6].startswith("Cattaneo–Mindlin: Coulomb's law")
+    assert messages[-5].startswith("Cattaneo–Mindlin with adhesion: Coulomb's law")
+    assert [message.split(":")[0] for message in messages[-4:-1]] == ["LAMMPS hertz/material", "LAMMPS jkr",
+                                                                      "LAMMPS dmt"]
+    assert messages[-1].startswith("rate-dependent adhesion: pull-off at 7 speeds")
 
 
 def test_report_states_the_papers_numbers_beside_ours(fresh):

@@ -24,6 +24,7 @@ from typing import NamedTuple
 
 import numpy as np
 from scipy.integrate import solve_ivp
+from scipy.optimize import minimize_scalar
 
 from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.contact.indenters import FlatPunch
@@ -55,6 +56,10 @@ BAND_SHARE = 1e-9
 CLOCK_ULPS = 1e3
 #: The machine epsilon of the clock's doubles.
 EPS = float(np.finfo(float).eps)
+#: The samples :meth:`EdgeRun.pull_off_force` brackets the least ``F_N`` with, and the share of their spacing its
+#: minimisation resolves the time to (the force's error, flat at its minimum, is of the square of that).
+PULL_OFF_SAMPLES = 20001
+PULL_OFF_XTOL = 1e-6
 #: A segment holds at most this many pieces (rest, motion, ...): more means no progress.
 MAX_PIECES_PER_SEGMENT = 1000
 #: The relative tolerance of the radius ODE (Radau).
@@ -151,6 +156,30 @@ class EdgeRun:
         a = self.radius(times)
         depth = path.position(np.asarray(times, dtype=float))[1]
         return np.where(a > 0, np.asarray(self.model.normal_force(depth, np.where(a > 0, a, 1.0)), dtype=float), 0.0)
+
+
+    def pull_off_force(self, path: Path, samples: int = PULL_OFF_SAMPLES) -> float:
+        """The least ``F_N`` (N) of the run along ``path``: the least of ``samples`` samples over the path, refined by
+        a bounded minimisation between the samples beside it (the minimum is flat: a sample is off by ``F'' δt²``).
+
+        Parameters
+        ----------
+        path : Path
+            The path the run followed.
+        samples : int, optional
+            The samples the minimum is bracketed with.
+
+        Returns
+        -------
+        float
+            The pull-off force (negative: tensile).
+        """
+        times = np.linspace(path.first_contact_time(), path.duration, samples)
+        at = int(np.argmin(self.normal_force(times, path)))
+        bracket = (times[max(at - 1, 0)], times[min(at + 1, samples - 1)])
+        found = minimize_scalar(lambda t: float(self.normal_force(np.array([t]), path)[0]), method="bounded",
+                                bounds=bracket, options={"xatol": PULL_OFF_XTOL * (bracket[1] - bracket[0])})
+        return float(min(found.fun, np.min(self.normal_force(np.array(bracket), path))))
 
 
 class EdgeMode(enum.Enum):
