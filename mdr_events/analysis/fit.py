@@ -263,7 +263,7 @@ def _fit_job(contact, motion, alpha, reference, options: Mapping[str, Any]) -> F
     values = {name: options.pop(name, None) for name in ("bounds", "noise", "names", "units")}
     time_origin = options.pop("time_origin", "first_contact")
     _, tolerances = reference_of(reference, options.pop("tolerances", None), None)
-    model = one_path_job(contact, motion, alpha, options)
+    model = one_path_job(contact, motion, alpha, options, caller="fit")
     if options:
         raise TypeError(f"fit() got an unexpected keyword argument {next(iter(options))!r}; allowed: bounds, noise, "
                         "names, units, time_origin (and start, profile, friction, tolerances as before)")

@@ -213,7 +213,7 @@ def synthetic_measurement(contact: Contact | Parameters, motion, alpha: float | 
     seed, time_shift = options.pop("seed", 0), options.pop("time_shift", 0.0)
     quantities = options.pop("quantities", ("normal_force", "tangential_force", "contact_area"))
     _, tolerances = reference_of(reference, options.pop("tolerances", None), None)
-    job = one_path_job(contact, motion, alpha, options)
+    job = one_path_job(contact, motion, alpha, options, caller="fit")
     if options:
         raise TypeError(f"synthetic_measurement() got an unexpected keyword argument {next(iter(options))!r}; "
                         "allowed: seed, quantities, time_shift (and profile, friction, tolerances beside a Parameters)")

@@ -35,6 +35,7 @@ from mdr_events.models.methods import Continuum
 from mdr_events.models.motion import Paths
 from mdr_events.models.job import ModelJob
 from mdr_events.models.simulate import model_job
+from mdr_events.theory.job import rate_independent
 from mdr_events.models.paths import Path
 from mdr_events.models.motion import check_path_representable
 from mdr_events.parameters import Parameters
@@ -121,12 +122,15 @@ class ValidationJob(NamedTuple):
     tolerances: Tolerances
 
 
-def one_path_job(contact, motion, alpha, options: dict[str, Any]) -> ModelJob:
+def one_path_job(contact, motion, alpha, options: dict[str, Any], caller: str = "validate") -> ModelJob:
     """:func:`~mdr_events.models.simulate.model_job` of a motion of one path (a scenario's name needs one angle;
-    :func:`one_path` checks a Scenario's or Paths')."""
+    :func:`one_path` checks a Scenario's or Paths'), of a rate-independent adhesion law (``caller``'s reference
+    is)."""
     if isinstance(motion, str) and (alpha is None or np.ndim(alpha) != 0):  # (a scenario of several angles)
         raise ValueError(f"alpha={alpha!r} is not allowed with scenario {motion!r}; allowed: one angle in degrees")
-    return model_job(contact, motion, alpha, options)
+    job = model_job(contact, motion, alpha, options)
+    rate_independent(job.contact, f"{caller} (its reference is rate-independent)")
+    return job
 
 
 def _validation_job(contact, motion, alpha, tolerance, reference, options: Mapping[str, Any],
@@ -137,7 +141,7 @@ def _validation_job(contact, motion, alpha, tolerance, reference, options: Mappi
     names, units, select = (options.pop(name, None) for name in ("names", "units", "select"))
     time_origin = options.pop("time_origin", "first_contact")
     solution, tolerances = reference_of(reference, options.pop("tolerances", None), options.pop("solution", None))
-    model = one_path_job(contact, motion, alpha, options)
+    model = one_path_job(contact, motion, alpha, options, caller)
     if options:
         raise TypeError(f"{caller}() got an unexpected keyword argument {next(iter(options))!r}; allowed: names, "
                         "units, time_origin, select (and profile, friction beside a Parameters)")

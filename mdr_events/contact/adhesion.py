@@ -82,7 +82,17 @@ class Adhesion:
         Adhesion
             The law of those two works of adhesion.
         """
-        return cls(float(attrs["param_dgamma0"]), float(attrs["param_dgamma1"]))
+        return cls(_number_attr(attrs, "param_dgamma0"), _number_attr(attrs, "param_dgamma1"))
+
+
+def _number_attr(attrs: Mapping[str, Any], key: str) -> float:
+    """``attrs[key]`` as a float; else the error naming the key, its value and what is allowed."""
+    if key not in attrs:
+        raise KeyError(f"attrs[{key!r}] is missing; allowed: a result's attributes holding {key!r} (a number)")
+    try:
+        return float(attrs[key])
+    except (TypeError, ValueError):
+        raise ValueError(f"attrs[{key!r}]={shown(attrs[key])} is not allowed; allowed: a number") from None
 
 
 @dataclass(frozen=True)
@@ -172,8 +182,35 @@ class RateDependentAdhesion:
         RateDependentAdhesion
             The law.
         """
-        return cls(float(attrs["param_dgamma0"]), float(attrs["param_dgamma1"]), float(attrs["adhesion_v_ref"]),
-                   float(attrs["adhesion_n"]))
+        return cls(*(_number_attr(attrs, key) for key in ("param_dgamma0", "param_dgamma1", "adhesion_v_ref",
+                                                           "adhesion_n")))
+
+
+def check_rate_law(law: Any, name: str = "law") -> "RateDependentAdhesion":
+    """``law`` if it is a :class:`RateDependentAdhesion`; else the ``TypeError`` naming ``name``, its value and what is
+    allowed.
+
+    Parameters
+    ----------
+    law : object
+        The value given.
+    name : str, optional
+        The argument's name in the message.
+
+    Returns
+    -------
+    RateDependentAdhesion
+        ``law``.
+
+    Raises
+    ------
+    TypeError
+        Anything else (the paper's :class:`Adhesion` too: it has no speed).
+    """
+    if not isinstance(law, RateDependentAdhesion):
+        raise TypeError(f"{name}={shown(law)} ({type(law).__name__}) is not allowed; allowed: a "
+                        "RateDependentAdhesion(dgamma0, dgamma1, v_ref, n)")
+    return law
 
 
 #: No adhesion: Hertz's contact.

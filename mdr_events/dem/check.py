@@ -59,7 +59,7 @@ def lammps_check(contact: Contact, motion, alpha: float | None = None, *, model:
                         "LammpsModel('jkr', 'mindlin')")
     if isinstance(motion, Path):
         motion, alpha = Paths({"path": motion}), None
-    path, _ = one_path(one_path_job(contact, motion, alpha, {}))
+    path, _ = one_path(one_path_job(contact, motion, alpha, {}, caller="the LAMMPS check"))
     run = run_lammps(contact, path, model.normal, model.tangential, steps=steps, dt=dt, limits=limits)
     report = validate(run, contact, motion, alpha, tolerance=tolerance, limits=limits, time_origin="path_start")
     report.attrs.update({key: value for key, value in run.attrs.items() if key.startswith("lammps_")})

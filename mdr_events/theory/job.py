@@ -14,13 +14,14 @@ from __future__ import annotations
 import dataclasses
 from typing import Any, NamedTuple
 
+from mdr_events.contact.adhesion import Adhesion
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.contact.indenters import Profile
 from mdr_events.contact.model import Contact
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V, Parameters
 from mdr_events.validation import check_real, shown
 
-__all__ = ["TheoryJob", "theory_job", "contact_alone", "paper_parameters", "ContactLike"]
+__all__ = ["TheoryJob", "theory_job", "contact_alone", "rate_independent", "paper_parameters", "ContactLike"]
 
 #: What the theory's public functions take as the physical model.
 ContactLike = Contact | Parameters
@@ -49,6 +50,19 @@ def contact_alone(contact: Any, profile: Any = None, friction: Any = None) -> Co
             raise ValueError(f"{name}={shown(value)} is not allowed beside a Contact; allowed: the contact's own "
                              f"({own})")
     return contact
+
+
+def rate_independent(contact: Contact, what: str) -> Contact:
+    """``contact`` if its adhesion law is rate-independent (the paper's :class:`~mdr_events.Adhesion`, which ``what``
+    models); else the ``TypeError`` naming the law and what runs it (a Contact's ``RateDependentAdhesion`` would be
+    read as the paper's law of its works at rest)."""
+    law = contact.adhesion
+    if isinstance(law, Adhesion):
+        return contact
+    elsewhere = getattr(type(law), "runs_in", None)
+    raise TypeError(f"contact.adhesion={law!r} ({type(law).__name__}) is not allowed in {what}; allowed: Adhesion("
+                    "dgamma0, dgamma1), the rate-independent law " + (f"({type(law).__name__}: {elsewhere})"
+                                                                      if elsewhere else ""))
 
 
 def theory_job(contact: Any, d_max: float | None = None, profile: Any = None, friction: Any = None) -> TheoryJob:
@@ -85,7 +99,7 @@ def theory_job(contact: Any, d_max: float | None = None, profile: Any = None, fr
             raise ValueError(f"d_max={shown(d_max)} is not allowed beside Parameters; allowed: None (its own "
                              f"d_max = {contact.d_max!r} m; Parameters.replace(d_max=...) changes it)")
         return TheoryJob(contact, profile, as_friction_law(friction))
-    contact = contact_alone(contact, profile, friction)
+    contact = rate_independent(contact_alone(contact, profile, friction), "the closed forms (rate-independent)")
     depth = PAPER_D_MAX if d_max is None else check_real("d_max", d_max, "a finite number > 0 (m)",
                                                          lambda value: value > 0.0)
     return TheoryJob(contact.parameters(depth, PAPER_V), contact.profile,

@@ -15,14 +15,32 @@ import math
 
 import numpy as np
 
-from mdr_events.contact.adhesion import RateDependentAdhesion
+from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.theory import symbolic
+from mdr_events.validation import check_real, real_array, shown
 
 __all__ = ["release_rate", "work_of_adhesion", "edge_speed", "edge_speed_scalar", "flat_punch_detachment_time"]
 
 
 def _relation(key: str) -> symbolic.Relation:
     return symbolic.derive_rate_dependent_adhesion()[key]
+
+
+def _values(name: str, value, allowed: str, valid=None) -> np.ndarray:
+    """``value`` as a float array of real numbers, none nan, each ``valid`` (a predicate on the array); else the error
+    naming ``name``."""
+    array = real_array(name, value, allowed)
+    if np.any(np.isnan(array)) or (valid is not None and not np.all(valid(array))):
+        raise ValueError(f"{name}={shown(value)} is not allowed; allowed: {allowed}")
+    return array
+
+
+def _finite_result(result, what: str, inputs: str):
+    """``result`` if every value is finite; else the ``ValueError`` saying that ``what`` overflows a double."""
+    if not np.all(np.isfinite(result)):
+        raise ValueError(f"{inputs} is not allowed: {what} overflows a double; allowed: values whose {what} is a finite "
+                         "double")
+    return result
 
 
 def release_rate(elongation, radius, E_star: float) -> np.ndarray:
@@ -43,8 +61,14 @@ def release_rate(elongation, radius, E_star: float) -> np.ndarray:
     numpy.ndarray
         The release rate ``Γ`` (J/m²).
     """
-    stretched = np.maximum(np.asarray(elongation, dtype=float), 0.0)
-    return np.asarray(_relation("energy_release_rate").numeric(stretched, radius, E_star), dtype=float)
+    elongation = _values("elongation", elongation, "real numbers (m), finite", np.isfinite)
+    radius = _values("radius", radius, "real numbers > 0 (m), finite", lambda a: np.isfinite(a) & (a > 0.0))
+    E_star = check_real("E_star", E_star, "a finite number > 0 (Pa)", lambda value: value > 0.0)
+    stretched = np.maximum(elongation, 0.0)
+    with np.errstate(over="ignore", invalid="ignore"):
+        rate = np.asarray(_relation("energy_release_rate").numeric(stretched, radius, E_star), dtype=float)
+    return _finite_result(rate, "the release rate E* dl^2 / (2 pi a)",
+                          f"elongation={shown(elongation)}, radius={shown(radius)}, E_star={E_star!r}")
 
 
 def work_of_adhesion(law: RateDependentAdhesion, speed) -> np.ndarray:
@@ -63,7 +87,8 @@ def work_of_adhesion(law: RateDependentAdhesion, speed) -> np.ndarray:
     numpy.ndarray
         The work of adhesion (J/m²).
     """
-    speed = np.asarray(speed, dtype=float)
+    law = check_rate_law(law)
+    speed = _values("speed", speed, "real numbers (m/s; +-inf allowed), not nan")
     magnitude = np.abs(speed)
     receding = _relation("receding_work_of_adhesion").numeric(magnitude, law.dgamma1, law.v_ref, law.n)
     advancing = _relation("advancing_work_of_adhesion").numeric(magnitude, law.dgamma0, law.v_ref, law.n)
@@ -86,8 +111,9 @@ def edge_speed(law: RateDependentAdhesion, release) -> np.ndarray:
     numpy.ndarray
         The speed ``ȧ`` (m/s; negative receding).
     """
-    release = np.asarray(release, dtype=float)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    law = check_rate_law(law)
+    release = _values("release", release, "real numbers >= 0 (J/m^2; inf allowed), not nan", lambda g: g >= 0.0)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         receding = _relation("receding_edge_speed").numeric(np.maximum(release, law.dgamma1), law.dgamma1, law.v_ref,
                                                             law.n)
         advancing = _relation("advancing_edge_speed").numeric(np.minimum(release, law.dgamma0), law.dgamma0,
@@ -108,15 +134,21 @@ def edge_speed_scalar(law: RateDependentAdhesion, release: float) -> float:
     Returns
     -------
     float
-        The speed ``ȧ`` (m/s; negative receding, ``inf`` at ``Γ = 0``).
+        The speed ``ȧ`` (m/s; negative receding, ``inf`` at ``Γ = 0``, and ``±inf`` where it overflows a double).
     """
-    if release > law.dgamma1:
-        return -_relation("receding_edge_speed").scalar(release, law.dgamma1, law.v_ref, law.n)
-    if release >= law.dgamma0:
-        return 0.0
-    if release <= 0.0:
-        return math.inf
-    return _relation("advancing_edge_speed").scalar(release, law.dgamma0, law.v_ref, law.n)
+    law = check_rate_law(law)
+    release = check_real("release", release, "a number >= 0 (J/m^2; inf allowed), not nan", lambda g: g >= 0.0,
+                         finite=False)
+    try:
+        if release > law.dgamma1:
+            return -_relation("receding_edge_speed").scalar(release, law.dgamma1, law.v_ref, law.n)
+        if release >= law.dgamma0:
+            return 0.0
+        if release <= 0.0:
+            return math.inf
+        return _relation("advancing_edge_speed").scalar(release, law.dgamma0, law.v_ref, law.n)
+    except OverflowError:  # (math's pow raises where NumPy's gives inf)
+        return -math.inf if release > law.dgamma1 else math.inf
 
 
 def flat_punch_detachment_time(law: RateDependentAdhesion, punch_radius: float, depth: float, E_star: float,
@@ -147,11 +179,20 @@ def flat_punch_detachment_time(law: RateDependentAdhesion, punch_radius: float, 
     ValueError
         ``n`` other than 1, or a depth at which the edge does not recede.
     """
+    law = check_rate_law(law)
+    punch_radius = check_real("punch_radius", punch_radius, "a finite number > 0 (m)", lambda value: value > 0.0)
+    depth = check_real("depth", depth, "a finite number (m)")
+    E_star = check_real("E_star", E_star, "a finite number > 0 (Pa)", lambda value: value > 0.0)
+    radius = check_real("radius", radius, f"a finite number with 0 <= radius <= punch_radius = {punch_radius!r} m",
+                        lambda value: 0.0 <= value <= punch_radius)
     if law.n != 1.0:
         raise ValueError(f"n={law.n!r} is not allowed here; allowed: n = 1 (the closed form's)")
     kendall = -math.sqrt(2.0 * math.pi * punch_radius * law.dgamma1 / E_star)
     if not depth < kendall:
         raise ValueError(f"depth={depth!r} m is not allowed; allowed: below Kendall's pull-off {kendall!r} m of the "
                          "punch (the edge recedes from the start)")
-    return float(_relation("flat_punch_detachment_time").numeric(radius, punch_radius, -depth, law.dgamma1, law.v_ref,
-                                                                 E_star))
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        time = float(_relation("flat_punch_detachment_time").numeric(radius, punch_radius, -depth, law.dgamma1,
+                                                                     law.v_ref, E_star))
+    return _finite_result(time, "the detachment time", f"law={law!r}, punch_radius={punch_radius!r}, "
+                          f"depth={depth!r}, E_star={E_star!r}, radius={radius!r}")

@@ -29,11 +29,13 @@ Ctrl-C (even during the imports) prints one line and exits with 130.
 
 from __future__ import annotations
 
+import _thread
 import argparse
 import os
 import signal
 import sys
 import threading
+import time
 from typing import Sequence
 
 from mdr_events._version import __version__
@@ -72,6 +74,71 @@ COMPUTATION_ERRORS = (RuntimeError, MemoryError)
 
 class _Terminated(BaseException):
     """SIGTERM arrived: raised in the main thread, so that every ``finally`` (temporary files) runs."""
+
+
+class _SwallowedInterrupts:
+    """Ctrl-C (or SIGTERM) that the interpreter swallowed, raised again where :func:`main` handles it.
+
+    An interrupt that lands while the garbage collector runs Python code (a weak reference's callback, a ``__del__``)
+    is "Exception ignored in ...": printed with its traceback, and the command goes on to exit 0. While :func:`main`
+    runs, ``sys.unraisablehook`` notes such an interrupt (printing nothing) and has a helper thread interrupt the main
+    thread again (``_thread.interrupt_main``), where its own code runs: raised inside the hook, it would be swallowed
+    again. :meth:`settle` waits until every such interrupt has arrived (catching it), so that none arrives after
+    :func:`main` has returned; one noted when the command has done its work ends it as if it had arrived then.
+    """
+
+    def __init__(self) -> None:
+        self.interrupts: list[BaseException] = []
+        self.pending: list[list[bool]] = []  # one per interrupt raised again: [True] once it has been
+        self.previous = sys.unraisablehook
+
+    def __enter__(self) -> _SwallowedInterrupts:
+        self.previous = sys.unraisablehook
+        sys.unraisablehook = self.hook
+        return self
+
+    def __exit__(self, *exc_info) -> None:
+        sys.unraisablehook = self.previous
+
+    def hook(self, unraisable) -> None:
+        """``sys.unraisablehook``: an interrupt is noted and raised again; anything else goes to the previous hook."""
+        kind = unraisable.exc_type
+        if not (isinstance(kind, type) and issubclass(kind, (KeyboardInterrupt, _Terminated))
+                and threading.current_thread() is threading.main_thread()):
+            self.previous(unraisable)
+            return
+        self.interrupts.append(unraisable.exc_value if unraisable.exc_value is not None else kind())
+        while True:
+            try:
+                done: list[bool] = []
+                self.pending.append(done)
+                _thread.start_new_thread(_interrupt_main, (done,))  # (threading.Thread.start waits: not here)
+                return
+            except KeyboardInterrupt:  # it arrived here, inside the hook, where it would be swallowed: once more
+                continue
+
+    def settle(self) -> None:
+        """Wait until the interrupts raised again have arrived; catch them (:attr:`interrupts` has them)."""
+        while self.pending:
+            try:
+                while not self.pending[0]:
+                    time.sleep(0.001)
+                _checkpoint()
+            except KeyboardInterrupt:
+                continue
+            self.pending.pop(0)
+
+
+def _interrupt_main(done: list[bool]) -> None:
+    """In a helper thread: Ctrl-C (simulated) for the main thread; ``done`` gets True."""
+    try:
+        _thread.interrupt_main(signal.SIGINT)
+    finally:
+        done.append(True)
+
+
+def _checkpoint() -> None:
+    """A Python call: a pending signal's handler runs on entering it."""
 
 
 def progress(message: str) -> None:
@@ -185,6 +252,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     """
     handles_sigterm = threading.current_thread() is threading.main_thread()  # signals reach the main thread only
     previous = signal.signal(signal.SIGTERM, _on_sigterm) if handles_sigterm else None
+    swallowed = _SwallowedInterrupts()
+    if handles_sigterm:
+        swallowed.__enter__()
     debug = False
     try:
         args = build_parser().parse_args(argv)
@@ -198,10 +268,16 @@ def main(argv: Sequence[str] | None = None) -> int:
 
             matplotlib.use("Agg")  # the CLI writes figures to files only: no window, whatever the user's default
         status = args.run(args)
+        swallowed.settle()
+        if swallowed.interrupts:  # the interpreter swallowed it (garbage collection): the command was interrupted
+            raise swallowed.interrupts[0]
     except BrokenPipeError:  # the reader has gone (`| head`): nothing more to say, and no one to say it to
         _silence_stdout()
         return EXIT_BROKEN_PIPE
     except (Exception, KeyboardInterrupt, _Terminated) as error:
+        swallowed.settle()
+        if swallowed.interrupts:
+            error = swallowed.interrupts[0]
         if debug and not isinstance(error, UsageError):
             raise
         text, code = _outcome(error)
@@ -211,6 +287,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return code
     finally:
         if handles_sigterm:
+            swallowed.__exit__()
             signal.signal(signal.SIGTERM, signal.SIG_DFL if previous is None else previous)
     return 0 if status is None else int(status)
 

@@ -26,12 +26,13 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import minimize_scalar
 
-from mdr_events.contact.adhesion import RateDependentAdhesion
+from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.contact.indenters import FlatPunch
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 from mdr_events.theory.rate_adhesion import edge_speed_scalar
+from mdr_events.validation import check_real, shown
 
 from .branch import make_branch
 from .model import ContinuumModel, Segment, kinematics
@@ -64,6 +65,20 @@ PULL_OFF_XTOL = 1e-6
 MAX_PIECES_PER_SEGMENT = 1000
 #: The relative tolerance of the radius ODE (Radau).
 EDGE_RTOL = 1e-10
+#: The range of ``solve_edge``'s ``rtol``: finer than the clock's doubles resolve, Radau never ends; coarser, the
+#: events (where the edge stops) are not found.
+RTOL_RANGE = (1e-13, 1e-3)
+#: A receding edge whose solver gave up (its step below the clock's spacing) has come apart if the rest of its collapse
+#: (its radius over its speed, an upper bound: the speed grows as the radius shrinks) is below this many ulp of the
+#: clock: it runs away faster than the clock resolves.
+COLLAPSE_ULPS = 1e7
+#: The right-hand side evaluations one straight segment of the path may take: a law the path's clock cannot resolve (``v_ref`` many orders
+#: above the path's speed, or ``n`` near 0: the speed a step of the release rate) is refused, not integrated for hours.
+MAX_EVALUATIONS = 200_000
+
+
+class _TooStiff(Exception):
+    """The right-hand side's budget (:data:`MAX_EVALUATIONS`) is spent."""
 
 
 class EdgeEventKind(str, enum.Enum):
@@ -198,6 +213,8 @@ class _EdgeODE:
         self.profile_depth = make_branch(params, 0.0, profile).depth  # g(a): the branch without adhesion
         self.limit = profile.radius if isinstance(profile, FlatPunch) else math.inf
         self.E_star = params.E_star
+        self.evaluations = 0
+        self.compressed_at: float | None = None
 
     def release(self, t: float, a: float) -> float:
         stretch = self.profile_depth(a) - self.segment.d(t)
@@ -212,11 +229,18 @@ class _EdgeODE:
         exponent = 1.0 / law.n
 
         def speed(t: float, y) -> list[float]:
+            self.evaluations += 1
+            if self.evaluations > MAX_EVALUATIONS:
+                raise _TooStiff
             release = self.release(t, float(y[0]))
             if not receding and release <= 0.0:
+                self.compressed_at = t  # (the indenter outran the edge: an unbounded speed, which the solver may fail on)
                 return [edge_speed_scalar(law, release)]
             excess = release / rest - 1.0 if receding else rest / release - 1.0
-            return [sign * law.v_ref * math.copysign(abs(excess) ** exponent, excess)]
+            try:
+                return [sign * law.v_ref * math.copysign(abs(excess) ** exponent, excess)]
+            except OverflowError:  # (n near 0: the speed beyond a double; the solver gives up, which _piece reports)
+                return [sign * math.copysign(math.inf, excess)]
         return speed
 
     def mode(self, t: float, a: float) -> EdgeMode:
@@ -300,9 +324,20 @@ def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profi
 
     Raises
     ------
+    TypeError
+        ``params``, ``path`` or ``law`` of another type.
     ValueError
-        A law whose works at rest are not the parameters'.
+        A law whose works at rest are not the parameters', an ``rtol`` out of :data:`RTOL_RANGE`, or a law whose edge
+        the path's clock cannot follow (the solver gave up, or would take more than :data:`MAX_EVALUATIONS` steps of
+        the ODE on a segment: ``v_ref`` many orders above the path's speed, ``n`` near 0), with the reason.
     """
+    if not isinstance(params, Parameters):
+        raise TypeError(f"params={shown(params)} ({type(params).__name__}) is not allowed; allowed: a Parameters")
+    if not isinstance(path, Path):
+        raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: a Path")
+    law = check_rate_law(law)
+    rtol = check_real("rtol", rtol, f"a number with {RTOL_RANGE[0]:g} <= rtol <= {RTOL_RANGE[1]:g}",
+                      lambda value: RTOL_RANGE[0] <= value <= RTOL_RANGE[1])
     profile = check_simulated_profile(profile)
     model = ContinuumModel(params, Tolerances(), profile)
     if law.works_at_rest != (params.dgamma0, params.dgamma1):
@@ -329,9 +364,16 @@ def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profi
             else:
                 t = run.events[-1].time
         else:
-            raise RuntimeError(f"the rate-dependent edge made no progress on [{segment.t0!r}, {segment.t1!r}] s after "
-                               f"{MAX_PIECES_PER_SEGMENT} pieces; please report the parameters and path")
+            raise _unresolved(law, f"no progress on [{float(segment.t0)!r}, {float(segment.t1)!r}] s of the path after "
+                                   f"{MAX_PIECES_PER_SEGMENT} pieces (rest, motion, ...)")
     return run
+
+
+def _unresolved(law: RateDependentAdhesion, reason: str) -> ValueError:
+    """The refusal of a law whose edge the path's clock cannot follow, with the reason."""
+    return ValueError(f"law={law!r} is not allowed on this path: its edge cannot be followed ({reason}); allowed: a "
+                      "law whose edge speed the path's clock resolves (v_ref fewer orders of magnitude above the path's "
+                      "speed, n nearer 1), or Adhesion(dgamma0, dgamma1), the limit v_ref -> inf")
 
 
 def _touch(run: EdgeRun, law: RateDependentAdhesion, profile, segment: Segment, when: float, jump_in: float):
@@ -342,8 +384,28 @@ def _touch(run: EdgeRun, law: RateDependentAdhesion, profile, segment: Segment, 
         return (when, jump_in)
     start = START_SPEED ** (-law.n / 3.0) * jump_in
     power = 1.0 + 3.0 / law.n
-    lag = start**power / (power * law.v_ref * jump_in ** (3.0 / law.n))
+    # start^power / (power v_ref a_J^(3/n)) with start = a_J START_SPEED^(-n/3), simplified (a_J^(3/n) underflows
+    # to 0 for n near 0)
+    lag = jump_in / (power * law.v_ref * START_SPEED ** (1.0 + law.n / 3.0))
     return (when + lag, start)
+
+
+def _compressed(ode: _EdgeODE) -> str:
+    """The start of the reason where the indenter outran the advancing edge (its spring compressed), else ""."""
+    if ode.compressed_at is None:
+        return ""
+    return (f"at t={float(ode.compressed_at)!r} s the indenter outran the advancing edge, its spring compressed, where "
+            "the edge's speed is unbounded (the jump of a contact without adhesion), which solve_edge does not follow; ")
+
+
+def _collapsed(ode: _EdgeODE, speed, t: float, a: float) -> bool:
+    """Whether a receding edge of radius ``a`` at ``t`` comes apart faster than the clock resolves
+    (:data:`COLLAPSE_ULPS`)."""
+    try:
+        rate = abs(speed(t, [a])[0])
+    except _TooStiff:
+        return False
+    return math.isinf(rate) or a <= COLLAPSE_ULPS * EPS * abs(t) * rate
 
 
 def _piece(run: EdgeRun, ode: _EdgeODE, state, jump_in: float, rtol: float):
@@ -360,12 +422,26 @@ def _piece(run: EdgeRun, ode: _EdgeODE, state, jump_in: float, rtol: float):
             kind = EdgeEventKind.RECEDING_STARTS if leaving[1] is EdgeMode.RECEDING else EdgeEventKind.GROWTH_STARTS
             run.events.append(EdgeEvent(t_end, kind, float(segment.d(t_end)), a0))
         return (t_end, a0)
-    solution = solve_ivp(ode.rhs(mode), (t0, segment.t1), [a0], method="Radau", rtol=rtol, atol=rtol * jump_in,
-                         dense_output=True, events=ode.moving_events(mode, END_SHARE * jump_in))
-    if solution.status < 0:
-        raise RuntimeError(f"the rate-dependent edge's ODE failed on [{t0!r}, {segment.t1!r}] s ({mode.value}): "
-                           f"{solution.message}")
+    speed = ode.rhs(mode)
+    try:
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # (a failure is reported below, whole)
+            solution = solve_ivp(speed, (t0, segment.t1), [a0], method="Radau", rtol=rtol, atol=rtol * jump_in,
+                                 dense_output=True, events=ode.moving_events(mode, END_SHARE * jump_in))
+    except _TooStiff:
+        raise _unresolved(ode.law, f"{MAX_EVALUATIONS} evaluations of the ODE from t={float(t0)!r} s "
+                                   f"({mode.value}) did not reach the segment's end {float(segment.t1)!r} s") from None
+    except (ValueError, ArithmeticError) as error:  # an infinite speed (n near 0) reached the solver, or a radius
+        # beyond the profile's doubles
+        raise _unresolved(ode.law, _compressed(ode) + f"the solver failed from t={float(t0)!r} s ({mode.value}): "
+                                   f"{type(error).__name__}: {error}") from None
     t_end, a_end = float(solution.t[-1]), float(solution.y[0, -1])
+    if solution.status < 0:
+        if mode is EdgeMode.RECEDING and _collapsed(ode, speed, t_end, a_end):  # it ran away faster than the clock
+            run.pieces.append((t0, t_end, segment, solution.sol))
+            run.events.append(EdgeEvent(t_end, EdgeEventKind.CONTACT_ENDS, float(segment.d(t_end)), a_end))
+            return None
+        raise _unresolved(ode.law, _compressed(ode) + f"the solver failed on [{float(t0)!r}, {float(segment.t1)!r}] s "
+                                   f"({mode.value}): {solution.message}")
     run.pieces.append((t0, t_end, segment, solution.sol))
     if solution.status == 1 and len(solution.t_events[1]):  # the contact has come apart
         run.events.append(EdgeEvent(t_end, EdgeEventKind.CONTACT_ENDS, float(segment.d(t_end)), a_end))
