@@ -35,6 +35,10 @@ _ROOTS = {1: lambda v: v, 2: np.sqrt, 3: np.cbrt}
 #: Elements per block of :func:`_upper_root_bound` and of Newton's steps: each block's temporaries stay small and
 #: in cache (over 10⁵ elements at once, the page faults of fresh temporaries cost more than their arithmetic).
 _BLOCK = BLOCK
+#: Newton's steps after which :func:`_descend` looks for elements that still move (4-8 steps converge).
+_LONG = 12
+#: At most this many elements are iterated in Python floats (:func:`_finish_few`, :func:`_bracketed_floats`).
+_FEW = 8
 
 
 def _upper_root_bound(coeffs: list) -> np.ndarray:
@@ -203,7 +207,8 @@ def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> n
 
     Each step goes over blocks of :data:`_BLOCK` elements, whose work arrays are allocated once and stay in
     cache (for large arrays allocation, not arithmetic, is the cost); the stopping rule is read block by block
-    until one fails it.
+    until one fails it. An iteration that has not stopped after :data:`_LONG` steps (an element at a fold, where
+    Newton wanders for ever) is handed to :func:`_finish_few` once the elements still moving are few.
     """
     flat = x.reshape(-1)
     broadcast = [cf if cf.ndim == 0 else np.broadcast_to(cf, x.shape).reshape(-1) for cf in coeffs]
@@ -217,7 +222,8 @@ def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> n
         n = flat[block].size
         blocks.append((flat[block], [cf if cf.ndim == 0 else cf[block] for cf in broadcast], value[:n], slope[:n],
                        step[:n], flags[:n], overshoot[block]))
-    for _ in range(max_iterations):
+    history = []  # (one block only, after _LONG steps) the last iterates and which elements' steps were within rtol
+    for iteration in range(max_iterations):
         converged = True
         for x_block, coefficients, v, s, d, f, upward in blocks:
             _horner_into(coefficients, x_block, v, s)
@@ -230,7 +236,67 @@ def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> n
             converged = converged and _within(d, below, s, f)
         if converged:
             break
+        if iteration >= _LONG and len(blocks) == 1:
+            history = [*history[-2:], (flat.copy(), f.copy())]
+            if len(history) == 3 and _finish_few(broadcast, flat, overshoot, history, iteration, max_iterations,
+                                                 rtol):
+                break
     return overshoot.reshape(x.shape)
+
+
+def _finish_few(coeffs: list, x: np.ndarray, overshoot: np.ndarray, history: list, iteration: int,
+                max_iterations: int, rtol: float) -> bool:
+    """The rest of :func:`_descend`'s steps after step ``iteration``, in Python floats, where few elements still move.
+
+    An element whose iterate after this step equals that of one or two steps before is periodic (Newton's step is
+    a function of the iterate alone): its later iterates, steps and stopping tests repeat those of the last two
+    steps, with period 1 or 2. If at most :data:`_FEW` elements are not, they alone take the remaining steps, as
+    floats (the same operations, hence the same values, as the arrays'), and the stopping rule is read as before
+    over all elements; ``x`` and ``overshoot`` are then set to what the whole iteration would have left (bit for
+    bit) and ``True`` is returned. Otherwise nothing is changed and ``False`` is returned.
+    """
+    (older, _), (old, within_old), (new, within_new) = history
+    same_as_old = new == old
+    periodic = same_as_old | (new == older)
+    moving = np.flatnonzero(~periodic)
+    if moving.size > _FEW:
+        return False
+    # the periodic elements' stopping tests at later steps: those of this step (even distance), of the last one
+    # (odd; for period 1, this step's again)
+    fixed = periodic.copy()
+    fixed[moving] = False
+    ready = (bool(np.all(within_new[fixed])), bool(np.all(np.where(same_as_old, within_new, within_old)[fixed])))
+    values = x[moving].tolist()
+    upward = overshoot[moving].tolist()
+    polynomials = [[float(cf) if np.ndim(cf) == 0 else float(cf[j]) for cf in coeffs] for j in moving.tolist()]
+    last = iteration
+    for step_index in range(iteration + 1, max_iterations):
+        last = step_index
+        converged = ready[(step_index - iteration) % 2]
+        for k, polynomial in enumerate(polynomials):
+            value, slope = _horner(polynomial, values[k])
+            step = _divide(value, slope)
+            values[k] -= step
+            below = abs(values[k]) * -rtol
+            upward[k] = upward[k] or step < below
+            converged = converged and abs(step) <= -below
+        if converged:
+            break
+    # each periodic element's iterate after the last step: this step's at an even distance, the last one's at an odd
+    if (last - iteration) % 2:
+        x[fixed & ~same_as_old] = old[fixed & ~same_as_old]
+    x[moving] = values
+    overshoot[moving] = upward
+    return True
+
+
+def _divide(numerator: float, denominator: float) -> float:
+    """``numerator / denominator`` of two floats as NumPy divides (``±inf`` or ``nan`` by zero, no exception)."""
+    if denominator != 0.0 or math.isnan(denominator):
+        return numerator / denominator
+    if numerator == 0.0 or math.isnan(numerator):
+        return math.nan
+    return math.copysign(math.inf, numerator) * math.copysign(1.0, denominator)
 
 
 def _within(step: np.ndarray, below: np.ndarray, spare: np.ndarray, flags: np.ndarray) -> bool:
@@ -281,7 +347,11 @@ def _scalar_upper_root_bound(coeffs: list[float]) -> float:
 
 
 def _bracketed_root(coeffs, lo, hi, max_iterations):
-    """Newton steps kept inside ``[lo, hi]`` (``p(lo) <= 0 < p(hi)``), bisection otherwise."""
+    """Newton steps kept inside ``[lo, hi]`` (``p(lo) <= 0 < p(hi)``), bisection otherwise; in Python floats for
+    at most :data:`_FEW` elements (:func:`_bracketed_floats`: the same values, without NumPy's cost per call)."""
+    if lo.size <= _FEW:
+        return np.array(_bracketed_floats([np.broadcast_to(cf, lo.shape).tolist() for cf in coeffs], lo.tolist(),
+                                          hi.tolist(), max_iterations))
     lo, hi = lo.copy(), hi.copy()
     x = hi.copy()
     for _ in range(4 * max_iterations):
@@ -299,6 +369,36 @@ def _bracketed_root(coeffs, lo, hi, max_iterations):
         done = np.all((np.abs(candidate - x) <= 4 * _EPS * np.abs(candidate)) | (hi - lo <= 4 * _EPS * np.abs(hi))
                       | (np.abs(value) <= 8 * _EPS * noise))
         x = candidate
+        if done:
+            break
+    return x
+
+
+def _bracketed_floats(coeffs: list[list[float]], lo: list[float], hi: list[float], max_iterations: int) -> list[float]:
+    """:func:`_bracketed_root` of a few polynomials (``coeffs[i][j]``: coefficient ``i`` of polynomial ``j``) in
+    Python floats: the same operations element by element, so the same values, and the same stopping rule over
+    all of them."""
+    eps = _FLOAT_EPS
+    polynomials = [list(column) for column in zip(*coeffs)]
+    magnitudes = [[abs(cf) for cf in polynomial] for polynomial in polynomials]
+    x = list(hi)
+    for _ in range(4 * max_iterations):
+        done = True
+        for j, polynomial in enumerate(polynomials):
+            xj = x[j]
+            value, slope = _horner(polynomial, xj)
+            if value <= 0.0:
+                lo[j] = xj
+            else:
+                hi[j] = xj
+            candidate = xj - _divide(value, slope)
+            if not lo[j] <= candidate <= hi[j]:
+                candidate = 0.5 * (lo[j] + hi[j])
+            if done:
+                noise, _ = _horner(magnitudes[j], abs(xj))
+                done = (abs(candidate - xj) <= 4 * eps * abs(candidate) or hi[j] - lo[j] <= 4 * eps * abs(hi[j])
+                        or abs(value) <= 8 * eps * noise)
+            x[j] = candidate
         if done:
             break
     return x

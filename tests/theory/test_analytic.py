@@ -190,6 +190,33 @@ def test_polynomial_root_solver_against_numpy_roots():
         assert ours == pytest.approx(real.max(), rel=1e-9)
 
 
+def _radii_near_the_folds(paper) -> dict:
+    """Radii of (9) at depths at and just above each branch's fold, arrays of several sizes and scalars."""
+    found = {}
+    for work in (paper.dgamma0, paper.dgamma1):
+        fold = analytic.jump_off(paper, work)["depth"]
+        near = fold * (1.0 - np.logspace(-16, -2, 40))
+        for size in (1, 2, 3, 9, 40, 300):
+            depth = np.concatenate([[fold], near[:size - 1], np.linspace(fold, 1e-4, max(size - 40, 0))])
+            found[work, size] = np.asarray(analytic.jkr_contact_radius(depth, paper, work))
+        found[work, "scalar"] = np.array([analytic.jkr_contact_radius(float(d), paper, work) for d in near[::5]])
+    return found
+
+
+def test_polynomial_root_of_few_moving_elements_is_that_of_the_arrays(paper, monkeypatch):
+    """At the pull-off fold Newton wanders for all its steps: the elements still moving after a few steps, and the
+    bracketed iteration of a few, go on in Python floats (roots._finish_few, roots._bracketed_floats); the roots
+    are bit for bit those of the whole arrays' iteration."""
+    from mdr_events.theory import roots
+
+    found = _radii_near_the_folds(paper)
+    monkeypatch.setattr(roots, "_LONG", 10**9)  # the arrays alone, every step
+    monkeypatch.setattr(roots, "_FEW", -1)
+    expected = _radii_near_the_folds(paper)
+    for key, radii in found.items():
+        np.testing.assert_array_equal(radii, expected[key], err_msg=str(key))
+
+
 def test_branch_only_for_scenario_B_and_flags_checked(paper):
     with pytest.raises(ValueError, match="branch='indentation' is not allowed with scenario 'A'"):
         me.d_crit(10.0, paper, "A", branch="indentation")

@@ -53,6 +53,7 @@ class Branch:
         self._slope = symbolic.relation("jkr_depth_slope").scalar
         self._integral = symbolic.relation("jkr_depth_integral").scalar
         self._coefficients = symbolic.relation("jkr_radius_quartic").scalar_coefficients
+        self._array_coefficients = symbolic.relation("jkr_radius_quartic").coefficients
         if work > 0:
             point = analytic.jump_off(params, work)
             self.jump_off_radius, self.jump_off_depth = point["contact_radius"], point["depth"]
@@ -168,7 +169,12 @@ class Branch:
         numpy.ndarray
             The radii (m), the shape of ``depth``.
         """
-        return np.asarray(analytic.jkr_contact_radius(np.asarray(depth, dtype=float), self.params, self.work))
+        depth = np.asarray(depth, dtype=float)
+        if self.work == 0.0:
+            return np.asarray(analytic.jkr_contact_radius(depth, self.params, self.work))
+        # (jkr_contact_radius's own steps, its checks and the jump-off point taken once, in __init__)
+        root = analytic.positive_polynomial_root(self._array_coefficients(depth, *self._arguments), lower=self._floor)
+        return np.where(depth >= self.jump_off_depth, root**2, np.nan)
 
     def radius(self, depth: float, rtol: float) -> float:
         """Stable-branch radius at ``depth``, converged to ``rtol``.
