@@ -19,7 +19,7 @@ from typing import Any, Callable, ClassVar, Mapping
 from mdr_events.validation import check_real, shown
 
 __all__ = ["Adhesion", "RateDependentAdhesion", "NO_ADHESION", "AdhesionLaw", "law_of", "kernel_of",
-           "adhesion_from_attrs"]
+           "adhesion_from_attrs", "adhesion_attrs"]
 
 
 @dataclass(frozen=True)
@@ -132,7 +132,8 @@ class RateDependentAdhesion:
     n: float
 
     #: where a method without a kernel for this law points its user (the springs' shifts are still to come)
-    runs_in: ClassVar[str] = "its normal problem runs in mdr_events.continuum.solve_edge"
+    runs_in: ClassVar[str] = ("the discrete method runs it, springs and shifts; its normal problem also runs in "
+                                "mdr_events.continuum.solve_edge")
 
     def __post_init__(self) -> None:
         checks = {"dgamma0": ("a finite number > 0 (J m-2)", lambda value: value > 0.0),
@@ -218,6 +219,24 @@ NO_ADHESION = Adhesion()
 
 #: An adhesion law: the paper's, or one whose works depend on the edge's speed.
 AdhesionLaw = Adhesion | RateDependentAdhesion
+
+
+def adhesion_attrs(adhesion: AdhesionLaw) -> dict[str, Any]:
+    """The attributes a result of ``adhesion`` carries beyond the works at rest of its
+    :class:`~mdr_events.Parameters` (none for the paper's law; ``adhesion_law``, ``adhesion_v_ref``, ``adhesion_n``
+    for the rate-dependent one).
+
+    Parameters
+    ----------
+    adhesion : Adhesion or RateDependentAdhesion
+        The law.
+
+    Returns
+    -------
+    dict of str to object
+        The attributes.
+    """
+    return {key: value for key, value in adhesion.to_attrs().items() if not key.startswith("param_")}
 
 
 def adhesion_from_attrs(attrs: Mapping[str, Any]) -> AdhesionLaw:

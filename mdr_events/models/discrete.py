@@ -70,8 +70,9 @@ from mdr_events.models.spring_groups import SpringGroups, scale_bits, scaled, un
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.contact.indenters import PowerLaw
-from mdr_events.contact.adhesion import Adhesion, AdhesionLaw, kernel_of, law_of
+from mdr_events.contact.adhesion import Adhesion, AdhesionLaw, RateDependentAdhesion, kernel_of, law_of
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
+from mdr_events.models.rate_springs import rate_edge_counts
 from mdr_events.theory import mindlin
 
 __all__ = ["run_discrete", "paraboloid_profile", "MIN_SPRINGS_IN_CONTACT", "Thresholds", "THRESHOLD_RULES",
@@ -143,8 +144,34 @@ def hysteresis_thresholds(adhesion: Adhesion, g: np.ndarray, positions: np.ndarr
                       _Threshold(g, positions, params, adhesion.dgamma1))
 
 
+def rate_thresholds(adhesion: RateDependentAdhesion, g: np.ndarray, positions: np.ndarray,
+                    params: Parameters) -> Thresholds:
+    """A rate-dependent law: the thresholds of its works at rest, which size the springs (an advancing edge stays
+    inside the ``Δγ0`` branch's radius) and give the first touch; its edge moves by
+    :func:`~mdr_events.models.rate_springs.rate_edge_counts`.
+
+    Parameters
+    ----------
+    adhesion : RateDependentAdhesion
+        The law.
+    g : numpy.ndarray
+        The profile at the springs (m).
+    positions : numpy.ndarray
+        The springs' centres (m).
+    params : Parameters
+        The material.
+
+    Returns
+    -------
+    Thresholds
+        Those of :func:`hysteresis_thresholds` with the works at rest.
+    """
+    return hysteresis_thresholds(Adhesion(*adhesion.works_at_rest), g, positions, params)
+
+
 #: The springs' thresholds of each adhesion law, by its type.
-THRESHOLD_RULES: dict[type, Callable[..., Thresholds]] = {Adhesion: hysteresis_thresholds}
+THRESHOLD_RULES: dict[type, Callable[..., Thresholds]] = {Adhesion: hysteresis_thresholds,
+                                                          RateDependentAdhesion: rate_thresholds}
 
 
 def check_thresholds_known(adhesion: AdhesionLaw) -> None:
@@ -212,12 +239,15 @@ _BLOCK = 8192
 
 
 def _run_case(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last: int, last_entry: float,
-              counts: np.ndarray, sums: np.ndarray, sliding: np.ndarray, springs: SpringGroups | None = None) -> int:
+              counts: np.ndarray, sums: np.ndarray, sliding: np.ndarray, springs: SpringGroups | None = None,
+              edge: np.ndarray | None = None) -> int:
     """Step one case from sample 0 to ``last``, or to its pull-off if its path does not enter again.
 
     Writes, per sample, the springs in contact per side to ``counts``, ``Σ u`` over them (m) to
     ``sums`` and the springs at a cap (every spring in contact where ``ū = 0``) to ``sliding``;
-    returns the last sample. ``springs`` ends holding the final state (for inspection).
+    returns the last sample. ``springs`` ends holding the final state (for inspection). ``edge``: the springs in
+    contact per sample of a rate-dependent law (:func:`~mdr_events.models.rate_springs.rate_edge_counts`), which then
+    replace the thresholds' rule.
     """
     springs = SpringGroups() if springs is None else springs
     attach_threshold, detach_threshold = grid.attach_threshold, grid.detach_threshold
@@ -225,17 +255,20 @@ def _run_case(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last:
     caps, caps_scaled, bits = grid.caps, grid.caps_scaled, grid.bits
     to_float = grid.to_float
 
-    m, total, at_caps = _first_sample(grid, x, d, springs, counts, sums, sliding)
+    m, total, at_caps = _first_sample(grid, x, d, springs, counts, sums, sliding, edge)
     depth_before, x_before = float(d[0]), float(x[0])
     k = 1
     while k <= last:
         block = slice(k, min(last, k + _BLOCK - 1) + 1)
         xs, ds, positions = x[block].tolist(), d[block].tolist(), scaled(x[block], bits)
         grows, shrinks = grid.attach.count(d[block]).tolist(), grid.detach.count(d[block]).tolist()
+        moved = edge[block].tolist() if edge is not None else None
         block_counts, block_sums, block_sliding = array("q"), array("d"), array("q")
         for i, depth in enumerate(ds):
             step = depth - depth_before
-            if step > 0.0:  # going in: Heß's rule with Δγ0 (_Threshold.grow)
+            if moved is not None:  # a rate-dependent edge: counted before
+                m_new = moved[i]
+            elif step > 0.0:  # going in: Heß's rule with Δγ0 (_Threshold.grow)
                 if m:
                     m_new = max(m, grows[i]) if depth >= attach_threshold[m] else m
                 else:
@@ -282,10 +315,10 @@ def _run_case(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last:
 
 
 def _first_sample(grid: _Grid, x: np.ndarray, d: np.ndarray, springs: SpringGroups, counts: np.ndarray,
-                  sums: np.ndarray, sliding: np.ndarray) -> tuple[int, float, int]:
-    """Attach the springs the first sample touches and record it; returns the springs in contact per side,
-    ``Σ u`` (0) and the springs at a cap."""
-    m = int(grid.attach.count(d[:1])[0]) if float(d[0]) >= grid.first_touch else 0
+                  sums: np.ndarray, sliding: np.ndarray, edge: np.ndarray | None = None) -> tuple[int, float, int]:
+    """Attach the springs the first sample touches and record it (``edge``: counted before, for a rate-dependent
+    law); returns the springs in contact per side, ``Σ u`` (0) and the springs at a cap."""
+    m = _first_count(grid, d, edge)
     if m:
         springs.attach(0, m, scaled(x[:1], grid.bits)[0])
     # every spring has just attached (u = 0): at a cap only where ū = 0, though sample 0 records none
@@ -294,8 +327,16 @@ def _first_sample(grid: _Grid, x: np.ndarray, d: np.ndarray, springs: SpringGrou
     return m, total, at_caps
 
 
+def _first_count(grid: _Grid, d: np.ndarray, edge: np.ndarray | None) -> int:
+    """The springs the first sample touches: counted before (``edge``), or by the attach threshold."""
+    if edge is not None:
+        return int(edge[0])
+    return int(grid.attach.count(d[:1])[0]) if float(d[0]) >= grid.first_touch else 0
+
+
 def _run_case_per_spring(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last: int,
-                         last_entry: float, counts: np.ndarray, sums: np.ndarray, sliding: np.ndarray) -> int:
+                         last_entry: float, counts: np.ndarray, sums: np.ndarray, sliding: np.ndarray,
+                         edge: np.ndarray | None = None) -> int:
     """The rules stepped spring by spring, as stated (module docstring): the reference of :func:`_run_case`.
 
     Same arguments and outputs; every spring's shift is a float moved by each step and clipped,
@@ -304,12 +345,14 @@ def _run_case_per_spring(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.nda
     spring: ``ū_j = ū(m Δx) + κ max(d − g(x_j), 0)``; a spring whose cap is 0 slides.
     """
     shift = np.zeros(grid.n_springs)
-    m = int(grid.attach.count(d[:1])[0]) if d[0] >= grid.first_touch else 0
+    m = _first_count(grid, d, edge)
     counts[0], sums[0], sliding[0] = m, 0.0, 0
     k = 1
     while k <= last:
         depth = d[k:k + 1]
-        if d[k] > d[k - 1]:
+        if edge is not None:  # a rate-dependent edge: counted before
+            m_new = int(edge[k])
+        elif d[k] > d[k - 1]:
             if m:
                 m_new = int(grid.attach.grow(np.array([m]), depth)[0])
             else:
@@ -349,6 +392,7 @@ class _Setup(NamedTuple):
     last_entries: np.ndarray  # (n_cases,) each path's last entry into the elastomer, from first contact
     grid: _Grid
     g_prefix: np.ndarray  # (n_springs + 1,) Σ g(x_j) over the first m springs
+    positions: np.ndarray  # (n_springs,) the springs' centres
 
 
 def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
@@ -373,7 +417,7 @@ def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
     shift_per_radius = float(analytic.critical_shift(1.0, params)) if friction.uses_tau0 else 0.0
     caps = (shift_per_radius * dx) * np.arange(n_springs + 1)  # ū(m Δx) for m springs per side
     grid = _Grid(attach, detach, g[0], caps, scale_bits(x_path, caps), g, mindlin.coulomb_cap_ratio(friction, params))
-    return _Setup(time, x_path, d_path, last_sample, last_entries, grid, g_prefix)
+    return _Setup(time, x_path, d_path, last_sample, last_entries, grid, g_prefix, xi)
 
 
 #: Bytes a discrete run allocates per case and time sample (the path, the kernel's output, the dataset),
@@ -472,8 +516,13 @@ def run_discrete(
     out_sum = np.zeros((n_cases, n_time))
     out_sliding = np.zeros((n_cases, n_time), dtype=np.int64)
     for case in range(n_cases):
+        edge = None
+        if isinstance(adhesion, RateDependentAdhesion):  # its edge moves at a speed: counted before the stepping
+            edge = rate_edge_counts(adhesion, run.positions, run.grid.g, params.E_star, d_path[:, case], time,
+                                    int(last_sample[case]), run.grid.first_touch)
         last_sample[case] = step_case(run.grid, x_path[:, case], d_path[:, case], time, int(last_sample[case]),
-                                      float(run.last_entries[case]), out_m[case], out_sum[case], out_sliding[case])
+                                      float(run.last_entries[case]), out_m[case], out_sum[case], out_sliding[case],
+                                      edge=edge)
 
     valid = np.arange(n_time)[None, :] <= last_sample[:, None]
     radius = out_m * dx

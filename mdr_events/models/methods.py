@@ -22,6 +22,7 @@ from typing import Any, ClassVar, Mapping
 import numpy as np
 import xarray as xr
 
+from mdr_events.contact.adhesion import adhesion_attrs
 from mdr_events.contact.friction import friction_attrs
 from mdr_events.limits import Limits
 from mdr_events.models import indenters
@@ -134,7 +135,7 @@ class Discrete:
                            adhesion=model.adhesion)
         attrs = dict(method=self.name, scenario=model.scenario, dx=float(dx), dt=step,
                      spring_count_per_side=int(raw["spring_count"]), content=SIMULATION_CONTENT,
-                     **indenters.profile_attrs(profile), **friction_attrs(friction))
+                     **indenters.profile_attrs(profile), **friction_attrs(friction), **adhesion_attrs(model.adhesion))
         return simulation_dataset(params, cases, raw["time"], raw, **attrs)
 
     def _time_step(self, paths: list[Path]) -> float:

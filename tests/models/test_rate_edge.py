@@ -111,7 +111,7 @@ def test_a_law_of_other_works_is_refused():
         solve_edge(PAPER, me.Path.scenario_A(90.0, PAPER), RateDependentAdhesion(0.02, 0.15, 1e-6, 1.0))
 
 
-@pytest.mark.parametrize("method", ["discrete", "continuum"])
+@pytest.mark.parametrize("method", ["continuum"])
 def test_the_simulators_refuse_the_law_and_say_what_runs_it(method):
     contact = me.Contact(me.Contact.paper().elastomer, me.Contact.paper().indenter, _law(1e-6),
                          me.Contact.paper().friction)
