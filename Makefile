@@ -65,6 +65,7 @@ benchmark: $(STAMP)
 	$(BIN)/python benchmarks/bench_fit.py
 	$(BIN)/python benchmarks/bench_sweep.py
 	$(BIN)/python benchmarks/bench_small_angles.py
+	$(BIN)/python benchmarks/bench_rate_adhesion.py
 
 derive: $(STAMP)
 	$(BIN)/mdr-events derive
