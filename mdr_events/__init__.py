@@ -49,6 +49,7 @@ _LAZY = {
                     "mdr_events.analysis.reports"),
     "convergence_study": "mdr_events.analysis.convergence_study",
     **dict.fromkeys(("FitResult", "fit"), "mdr_events.analysis.fit"),
+    **dict.fromkeys(("RateMeasurement", "fit_rate_adhesion"), "mdr_events.analysis.rate_fit"),
     **dict.fromkeys(("Engine", "SweepOutput", "sweep"), "mdr_events.analysis.sweep"),
     **dict.fromkeys(("load_study", "run_study"), "mdr_events.app.study"),
     "dem": "mdr_events.dem",
@@ -92,6 +93,7 @@ if TYPE_CHECKING:  # what static tools (type checkers, IDEs) read: the same name
     from mdr_events.analysis.convergence_study import convergence_study
     from mdr_events.analysis.crosscheck import cross_check
     from mdr_events.analysis.fit import FitResult, fit
+    from mdr_events.analysis.rate_fit import RateMeasurement, fit_rate_adhesion
     from mdr_events.analysis.reports import ConvergenceReport, ConvergenceVerdict, ValidationReport, Verdict
     from mdr_events.analysis.sweep import Engine, SweepOutput, sweep
     from mdr_events.analysis.validate import validate
@@ -155,6 +157,8 @@ __all__ = [
     "cross_check",
     "validate",
     "fit",
+    "fit_rate_adhesion",
+    "RateMeasurement",
     "convergence_study",
     "d_crit",
     "jkr_contact_radius",

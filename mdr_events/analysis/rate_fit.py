@@ -1,0 +1,211 @@
+"""Fitting the rate-dependent adhesion law to normal-force curves measured at several speeds, jointly.
+
+Researchers measure the same indentation at several speeds; the law's ``v_ref`` and ``n`` (and, if asked, its works
+at rest) are shared by all the curves, while each curve may carry its own force offset (a load cell's zero). The
+forward model is the normal problem of :func:`~mdr_events.models.continuum.solve_edge`; ``least_squares`` minimises
+the weighted residuals of every curve together, with ``v_ref`` and the works on a log scale and ``n`` in ``(0, 1]``.
+The intervals are those of the linearised model at the optimum, ``cov = s² (JᵀJ)⁻¹`` in the scaled parameters, with
+``s²`` the residuals' variance where no noise is given, mapped back to each parameter's unit (log-scaled ones
+asymmetric).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import NamedTuple
+
+import numpy as np
+import xarray as xr
+from scipy import optimize, stats
+
+from mdr_events.contact.adhesion import RateDependentAdhesion
+from mdr_events.models.continuum.rate_edge import solve_edge
+from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.paths import Path
+from mdr_events.parameters import Parameters
+from mdr_events.validation import shown
+
+__all__ = ["RateMeasurement", "fit_rate_adhesion", "RATE_FREE_NAMES", "RATE_FIT_RTOL"]
+
+#: The law's values that may be free, with their units; those on a log scale.
+RATE_FREE_NAMES = {"v_ref": "m s-1", "n": "1", "dgamma0": "J m-2", "dgamma1": "J m-2"}
+_LOG_SCALED = ("v_ref", "dgamma0", "dgamma1")
+#: The edge's ODE tolerance in a fit: far below a measurement's noise, and three times fewer steps than EDGE_RTOL.
+RATE_FIT_RTOL = 1e-8
+#: least_squares' tolerances (xtol, ftol, gtol) on the scaled parameters.
+FIT_TOLERANCE = 1e-10
+#: The bounds of ``n`` and the relative step of the finite differences of the Jacobian.
+N_BOUNDS = (1e-3, 1.0)
+FD_STEP = 1e-6
+#: The confidence of the intervals.
+CONFIDENCE = 0.95
+
+
+class RateMeasurement(NamedTuple):
+    """One measured normal-force curve.
+
+    Parameters
+    ----------
+    path : Path
+        The path the indenter followed (its speed is the curve's).
+    times : numpy.ndarray
+        The sample times (s, on the path's clock).
+    normal_force : numpy.ndarray
+        ``F_N`` (N) at them.
+    noise : float, optional
+        The standard deviation of its noise (N); ``None``: estimated from the fit's residuals.
+    """
+
+    path: Path
+    times: np.ndarray
+    normal_force: np.ndarray
+    noise: float | None = None
+
+
+def _check(measurements: Sequence[RateMeasurement], free: Sequence[str]) -> None:
+    if not measurements or not all(isinstance(m, RateMeasurement) for m in measurements):
+        raise TypeError(f"measurements={shown(measurements)} is not allowed; allowed: a non-empty sequence of "
+                        "RateMeasurement(path, times, normal_force[, noise])")
+    unknown = [name for name in free if name not in RATE_FREE_NAMES]
+    if unknown or not free or len(set(free)) != len(free):
+        raise ValueError(f"free={shown(free)} is not allowed; allowed: distinct names among "
+                         f"{', '.join(RATE_FREE_NAMES)}")
+    for index, m in enumerate(measurements):
+        times, force = np.asarray(m.times, dtype=float), np.asarray(m.normal_force, dtype=float)
+        if times.ndim != 1 or times.shape != force.shape or times.size < 2 or not (
+                np.all(np.isfinite(times)) and np.all(np.isfinite(force))):
+            raise ValueError(f"measurements[{index}] is not allowed: times and normal_force must be finite 1-D arrays "
+                             f"of one length >= 2 (got {times.shape} and {force.shape})")
+        if m.noise is not None and not (math.isfinite(m.noise) and m.noise > 0):
+            raise ValueError(f"measurements[{index}].noise={m.noise!r} is not allowed; allowed: None or a finite "
+                             "number > 0 (N)")
+
+
+def _law(values: dict[str, float]) -> RateDependentAdhesion:
+    return RateDependentAdhesion(values["dgamma0"], values["dgamma1"], values["v_ref"], values["n"])
+
+
+def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameters, start: RateDependentAdhesion,
+                      free: Sequence[str] = ("v_ref", "n"), offsets: bool = False,
+                      profile: SimulatedProfile = None) -> xr.Dataset:
+    """Fit the rate-dependent law jointly to normal-force curves measured at several speeds (module docstring).
+
+    Parameters
+    ----------
+    measurements : sequence of RateMeasurement
+        The curves, each with its own path (and speed).
+    params : Parameters
+        The material and ``R`` (the paraboloid's); its works of adhesion are the start's.
+    start : RateDependentAdhesion
+        The law to start from; the values not free keep theirs.
+    free : sequence of str, optional
+        The law's values to fit, among :data:`RATE_FREE_NAMES` (default ``v_ref`` and ``n``).
+    offsets : bool, optional
+        Give each curve a free force offset (N), added to the model's.
+    profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
+        The indenter (``None``: the paraboloid of ``params.R``).
+
+    Returns
+    -------
+    xarray.Dataset
+        ``estimate``, ``standard_error``, ``interval_lower`` and ``interval_upper`` per parameter (the law's free
+        values, then the offsets), ``correlation`` between them, and per curve the RMS of its weighted residuals;
+        attributes: the residuals' variance ``s2``, the solves, ``least_squares``' status and message.
+
+    Raises
+    ------
+    TypeError
+        Measurements of another kind.
+    ValueError
+        A free name not allowed, a curve that is not finite 1-D, a noise that is not positive.
+    """
+    _check(measurements, free)
+    base = {"v_ref": start.v_ref, "n": start.n, "dgamma0": start.dgamma0, "dgamma1": start.dgamma1}
+    count = len(measurements)
+    names = list(free) + ([f"offset_{index}" for index in range(count)] if offsets else [])
+    forces = [np.asarray(m.normal_force, dtype=float) for m in measurements]
+    weights = [1.0 / m.noise if m.noise is not None else 1.0 for m in measurements]
+    solves = [0]
+
+    def values_of(theta: np.ndarray) -> dict[str, float]:
+        values = dict(base)
+        for name, value in zip(free, theta):
+            values[name] = math.exp(value) if name in _LOG_SCALED else float(value)
+        return values
+
+    def residuals(theta: np.ndarray) -> np.ndarray:
+        values = values_of(theta)
+        law = _law(values)
+        trial = params.replace(dgamma0=values["dgamma0"], dgamma1=values["dgamma1"])
+        parts = []
+        for index, (m, force, weight) in enumerate(zip(measurements, forces, weights)):
+            run = solve_edge(trial, m.path, law, profile=profile, rtol=RATE_FIT_RTOL)
+            solves[0] += 1
+            model = run.normal_force(np.asarray(m.times, dtype=float), m.path)
+            if offsets:
+                model = model + theta[len(free) + index]
+            parts.append(weight * (model - force))
+        return np.concatenate(parts)
+
+    theta0 = np.array([math.log(base[name]) if name in _LOG_SCALED else base[name] for name in free]
+                      + [0.0] * (count if offsets else 0))
+    lower = np.array([N_BOUNDS[0] if name == "n" else -np.inf for name in free] + [-np.inf] * (len(names) - len(free)))
+    upper = np.array([N_BOUNDS[1] if name == "n" else np.inf for name in free] + [np.inf] * (len(names) - len(free)))
+    solution = optimize.least_squares(residuals, theta0, bounds=(lower, upper), x_scale="jac", diff_step=FD_STEP,
+                                      xtol=FIT_TOLERANCE, ftol=FIT_TOLERANCE, gtol=FIT_TOLERANCE)
+    return _result(solution, names, free, values_of, measurements, forces, weights, solves[0])
+
+
+def _result(solution, names, free, values_of, measurements, forces, weights, solves) -> xr.Dataset:
+    """The dataset of the fit at ``solution.x``: estimates, intervals, correlations, each curve's RMS."""
+    residual, jacobian = solution.fun, solution.jac
+    dof = max(residual.size - len(names), 1)
+    known = all(m.noise is not None for m in measurements)
+    s2 = 1.0 if known else float(residual @ residual) / dof
+    covariance = s2 * np.linalg.pinv(jacobian.T @ jacobian)
+    error = np.sqrt(np.maximum(np.diag(covariance), 0.0))
+    quantile = float(stats.norm.ppf(0.5 + CONFIDENCE / 2.0))
+    theta = solution.x
+    natural = values_of(theta)
+    estimate, low, high, units = [], [], [], []
+    for index, name in enumerate(names):
+        if index < len(free):
+            if name in _LOG_SCALED:
+                estimate.append(natural[name])
+                low.append(math.exp(theta[index] - quantile * error[index]))
+                high.append(math.exp(theta[index] + quantile * error[index]))
+                error[index] = natural[name] * error[index]  # to first order, in the unit
+            else:
+                estimate.append(theta[index])
+                low.append(theta[index] - quantile * error[index])
+                high.append(theta[index] + quantile * error[index])
+            units.append(RATE_FREE_NAMES[name])
+        else:
+            estimate.append(theta[index])
+            low.append(theta[index] - quantile * error[index])
+            high.append(theta[index] + quantile * error[index])
+            units.append("N")
+    scale = np.sqrt(np.maximum(np.diag(covariance), 1e-300))
+    correlation = covariance / np.outer(scale, scale)
+    rms, start = [], 0
+    for force in forces:
+        rms.append(float(np.sqrt(np.mean(residual[start:start + force.size] ** 2))))
+        start += force.size
+    dataset = xr.Dataset(
+        {"estimate": ("parameter", np.array(estimate)), "standard_error": ("parameter", error),
+         "interval_lower": ("parameter", np.array(low)), "interval_upper": ("parameter", np.array(high)),
+         "correlation": (("parameter", "parameter_2"), correlation),
+         "residual_rms": ("measurement", np.array(rms))},
+        coords={"parameter": names, "parameter_2": names, "measurement": np.arange(len(forces))})
+    long_names = {"estimate": "the fitted value", "standard_error": "its standard error (linearised)",
+                  "interval_lower": f"lower end of its {CONFIDENCE:.0%} interval",
+                  "interval_upper": f"upper end of its {CONFIDENCE:.0%} interval",
+                  "correlation": "correlation of the estimates (linearised)",
+                  "residual_rms": "RMS of the curve's weighted residuals (1: as noisy as its noise)"}
+    for name, text in long_names.items():
+        dataset[name].attrs.update(long_name=text, units="1" if name in ("correlation", "residual_rms") else "varies")
+    dataset["parameter"].attrs["units_of_each"] = ", ".join(f"{n}: {u}" for n, u in zip(names, units))
+    dataset.attrs.update(s2=s2, noise_known=int(known), solves=solves, status=int(solution.status),
+                         message=str(solution.message), confidence=CONFIDENCE)
+    return dataset

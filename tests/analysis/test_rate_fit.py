@@ -1,0 +1,56 @@
+"""Fitting the rate-dependent law jointly to curves at several speeds (analysis.rate_fit): from synthetic curves of a
+known law with noise, three speeds in one call recover v_ref and n within their intervals, with per-curve offsets;
+bad input is named."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.analysis.rate_fit import RateMeasurement, fit_rate_adhesion
+from mdr_events.models.continuum import solve_edge
+
+PAPER = me.Parameters.paper()
+TRUE = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-6, 0.6)
+START = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 3e-6, 0.8)
+#: The noise of the synthetic curves: 1 % of JKR's pull-off force.
+NOISE = 0.01 * 1.5 * np.pi * PAPER.dgamma1 * PAPER.R
+#: The load cells' zeros of the three curves (N).
+ZEROS = (2e-4, -1e-4, 0.0)
+
+
+def _measurements(seed=7):
+    rng = np.random.default_rng(seed)
+    out = []
+    for speed, zero in zip((1e-7, 1e-6, 1e-5), ZEROS):
+        path = me.Path(np.array([(0.0, 0.0), (0.0, PAPER.d_max), (0.0, -200e-6)]), speed=speed)
+        times = np.linspace(path.first_contact_time(), path.duration, 400)
+        force = solve_edge(PAPER, path, TRUE).normal_force(times, path) + zero
+        out.append(RateMeasurement(path, times, force + rng.normal(0.0, NOISE, times.size), NOISE))
+    return out
+
+
+def test_three_speeds_give_v_ref_and_n_within_their_intervals():
+    result = fit_rate_adhesion(_measurements(), PAPER, START, free=("v_ref", "n"), offsets=True)
+    estimate = result["estimate"]
+    for name, truth in (("v_ref", TRUE.v_ref), ("n", TRUE.n)):
+        assert float(result["interval_lower"].sel(parameter=name)) <= truth <= float(
+            result["interval_upper"].sel(parameter=name)), (name, float(estimate.sel(parameter=name)))
+    assert float(estimate.sel(parameter="v_ref")) == pytest.approx(TRUE.v_ref, rel=0.1)
+    assert float(estimate.sel(parameter="n")) == pytest.approx(TRUE.n, rel=0.05)
+    for index, zero in enumerate(ZEROS):
+        assert abs(float(estimate.sel(parameter=f"offset_{index}")) - zero) < 4 * NOISE / np.sqrt(400)
+    assert np.all(np.abs(result["residual_rms"].values - 1.0) < 0.2)  # the curves fitted to their noise
+    assert result.attrs["status"] > 0
+
+
+@pytest.mark.parametrize("call, words", [
+    (lambda: fit_rate_adhesion([], PAPER, START), "measurements=.*RateMeasurement"),
+    (lambda: fit_rate_adhesion(_measurements()[:1], PAPER, START, free=("E",)), "free=.*v_ref, n"),
+    (lambda: fit_rate_adhesion([RateMeasurement(me.Path.scenario_A(90.0, PAPER), np.zeros(3), np.zeros(2))], PAPER,
+                               START), r"measurements\[0\]"),
+])
+def test_bad_input_is_named(call, words):
+    with pytest.raises((TypeError, ValueError), match=words):
+        call()
