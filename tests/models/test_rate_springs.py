@@ -59,3 +59,15 @@ def test_the_tangential_force_runs_on_the_moving_edge():
 def test_the_continuum_still_refuses_the_law_and_names_what_runs_it():
     with pytest.raises(TypeError, match="continuum method.*solve_edge"):
         me.simulate(_contact(LAW), "A", 20.0, "continuum")
+
+
+def test_a_sweep_over_the_speed_and_v_ref_sees_their_ratio_alone():
+    """The springs' edge moves by the ratio v/v_ref alone (the law's speeds scale with v_ref, the path's with v): a
+    sweep over both gives the same least F_N and largest F_x wherever the ratio is the same (the time grid scales with
+    v, so the depths of the samples are the same; rounding of the times, 1e-12), and a faster path pulls harder."""
+    result = me.sweep({"v": [1e-7, 1e-6], "adhesion.v_ref": [1e-6, 1e-5]}, _contact(LAW),
+                      me.Scenario("A", alpha=[20.0]), method="discrete")
+    for name in ("normal_force_min", "tangential_force_max"):
+        values = result[name].values
+        assert values[0, 0] == pytest.approx(values[1, 1], rel=1e-12), name
+    assert result["normal_force_min"].values[1, 0] < result["normal_force_min"].values[0, 0]
