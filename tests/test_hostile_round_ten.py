@@ -58,3 +58,22 @@ def test_the_guides_sweep_selection_works_on_its_grid():
     swept = xr.Dataset({"tangential_force_max": (("tau0", "alpha"), np.zeros((tau0.size, alpha.size)))},
                        coords={"tau0": tau0, "alpha": alpha})
     assert eval(line.split("#")[0], {"swept": swept}).size == 1  # noqa: S307
+
+
+# --- R3: a study (or --params / --path) file whose arrays nest thousands deep crashed the TOML reader --------------
+@pytest.mark.parametrize("nested", ["x = " + "[" * 5000 + "]" * 5000, "x = " + "{a = " * 3000 + "}" * 3000])
+def test_a_deeply_nested_toml_file_is_refused_in_one_line(tmp_path, nested):
+    import subprocess
+    import sys
+
+    study = tmp_path / "deep.toml"
+    study.write_text('[parameters]\npreset = "paper-R30"\n' + nested + "\n", encoding="utf-8")
+    run = tmp_path / "run.csv"
+    run.write_text("time,normal_force\n0,0\n1,1\n", encoding="utf-8")
+    for args in (["run", str(study)], ["validate", str(run), "--scenario", "A", "--alpha", "20", "--params",
+                                       str(study), "--out", str(tmp_path / "o")]):
+        done = subprocess.run([sys.executable, "-m", "mdr_events.app.cli", *args], capture_output=True, text=True)
+        assert done.returncode == 2, done.stderr
+        assert done.stderr.count("\n") == 1 and "nest too deeply" in done.stderr and "deep.toml" in done.stderr
+    with pytest.raises(ValueError, match="nest too deeply"):
+        me.load_study(study)
