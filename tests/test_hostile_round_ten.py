@@ -77,3 +77,22 @@ def test_a_deeply_nested_toml_file_is_refused_in_one_line(tmp_path, nested):
         assert done.stderr.count("\n") == 1 and "nest too deeply" in done.stderr and "deep.toml" in done.stderr
     with pytest.raises(ValueError, match="nest too deeply"):
         me.load_study(study)
+
+
+# --- R4: a negative number with an exponent (or -inf, -nan) was taken for an option: "expected one argument" --------
+@pytest.mark.parametrize("args, named", [
+    (["simulate", "--scenario", "A", "--E", "-1e5"], "E=-100000.0"),
+    (["simulate", "--scenario", "A", "--alpha", "-1e1"], "alpha=-10.0"),
+    (["simulate", "--scenario", "A", "--alpha", "10", "-1E1"], "alpha=-10.0"),
+    (["simulate", "--scenario", "A", "--tau0", "-inf"], "tau0=-inf"),
+    (["simulate", "--scenario", "A", "--nu", "-NaN"], "nu=nan"),
+    (["phase-diagram", "--scenario", "A", "--dgamma1", "-1.5e-1"], "dgamma1=-0.15"),
+])
+def test_a_negative_number_in_any_notation_is_a_value(tmp_path, args, named):
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-m", "mdr_events.app.cli", *args, "--out", str(tmp_path / "o")],
+                          capture_output=True, text=True)
+    assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
+    assert named in done.stderr and "allowed:" in done.stderr and "expected" not in done.stderr

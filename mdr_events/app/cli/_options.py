@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import math
 import os
+import re
 from typing import TYPE_CHECKING, Callable, Sequence
 
 if TYPE_CHECKING:
@@ -66,6 +67,10 @@ def _typed(kind: type) -> Callable[[str], float | int]:
     return typed
 
 
+#: An argument that is a negative number (with an exponent, ``inf`` or ``nan`` too), read as a value.
+NEGATIVE_NUMBER = re.compile(r"^-(?:(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|inf|infinity|nan)$", re.IGNORECASE)
+
+
 class Parser(argparse.ArgumentParser):
     """An argument parser whose errors are one line (:class:`UsageError`) naming where the allowed options are, and
     whose options of a value are given once (:class:`StoreOnce`). A number's option (``type=float`` or ``int``)
@@ -78,6 +83,9 @@ class Parser(argparse.ArgumentParser):
 
     def __init__(self, *args, fill: Callable[[Parser], None] | None = None, **kwargs) -> None:
         super().__init__(*args, **kwargs)
+        # a negative number is a value, not an option, in every notation a value is read in: argparse's own rule
+        # (``-2``, ``-.5``) took ``--E -1e5`` or ``--tau0 -inf`` for a missing value ("expected one argument")
+        self._negative_number_matcher = NEGATIVE_NUMBER
         self.register("action", None, StoreOnce)
         self.register("action", "store", StoreOnce)
         self.register("type", float, _typed(float))
