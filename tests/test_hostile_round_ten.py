@@ -96,3 +96,19 @@ def test_a_negative_number_in_any_notation_is_a_value(tmp_path, args, named):
                           capture_output=True, text=True)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert named in done.stderr and "allowed:" in done.stderr and "expected" not in done.stderr
+
+
+# --- R5: a rate law refused where the indenter outran its advancing edge advised fewer orders of magnitude of v_ref
+# above the path's speed: the opposite of what helps (v_ref far below the speed, or a sharp power law) -------------
+@pytest.mark.parametrize("profile, v_ref", [(me.PowerLaw(1e6, 6.0), 1e-6), (None, 1e-12)])
+def test_an_edge_the_indenter_outruns_is_refused_with_the_advice_that_helps(profile, v_ref):
+    from mdr_events import continuum
+
+    p = me.Parameters.paper()
+    path = me.Path([(0.0, 0.0), (0.0, p.d_max), (0.0, -1e-4)], p.v)
+    with pytest.raises(ValueError) as refused:
+        continuum.solve_edge(p, path, me.RateDependentAdhesion(0.01, 0.15, v_ref, 0.5), profile=profile)
+    message = str(refused.value)
+    assert "\n" not in message and f"v_ref={v_ref!r}" in message and "outran the advancing edge" in message
+    allowed = message.split("; allowed: ")[-1]
+    assert "keeps ahead of the indenter" in allowed and "larger v_ref" in allowed and "fewer orders" not in allowed
