@@ -112,3 +112,30 @@ def test_an_edge_the_indenter_outruns_is_refused_with_the_advice_that_helps(prof
     assert "\n" not in message and f"v_ref={v_ref!r}" in message and "outran the advancing edge" in message
     allowed = message.split("; allowed: ")[-1]
     assert "keeps ahead of the indenter" in allowed and "larger v_ref" in allowed and "fewer orders" not in allowed
+
+
+# --- R6: an option without its value said only "expected one argument" (e.g. a directory named -dash: argparse reads
+# it as an option); one --limit name given twice, the last one won silently ------------------------------------------
+@pytest.mark.parametrize("args, expected", [
+    (["simulate", "--scenario", "A", "--out", "-dash"], "--out: expected one argument; allowed: --out VALUE (a value "
+                                                        "that begins with '-' written as --out=VALUE)"),
+    (["simulate", "--scenario", "A", "--alpha", "--out", "o"], "--alpha: expected at least one argument; allowed: "),
+    (["simulate", "--scenario", "A", "--limit", "memory=1GiB", "--limit", "memory=2GiB", "--out", "o"],
+     "--limit 'memory=2GiB': memory is given twice; allowed: each limit once"),
+])
+def test_a_missing_value_or_a_repeated_limit_is_named_with_how_to_write_it(tmp_path, args, expected):
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-m", "mdr_events.app.cli", *args], capture_output=True, text=True,
+                          cwd=tmp_path)
+    assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
+    assert expected in done.stderr
+    assert not any(tmp_path.iterdir())
+
+
+def test_a_limit_named_twice_is_refused_in_the_api_too():
+    from mdr_events.app import inputs
+
+    with pytest.raises(ValueError, match="steps is given twice"):
+        inputs.limits(["steps=10", "memory=1GiB", "steps=20"])

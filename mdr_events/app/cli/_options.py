@@ -70,6 +70,9 @@ def _typed(kind: type) -> Callable[[str], float | int]:
 #: An argument that is a negative number (with an exponent, ``inf`` or ``nan`` too), read as a value.
 NEGATIVE_NUMBER = re.compile(r"^-(?:(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|inf|infinity|nan)$", re.IGNORECASE)
 
+#: argparse's error for an option whose value is missing (or was a word that begins with "-").
+MISSING_VALUE = re.compile(r"^argument (\S+): expected (?:one argument|at least one argument|\d+ arguments?)$")
+
 
 class Parser(argparse.ArgumentParser):
     """An argument parser whose errors are one line (:class:`UsageError`) naming where the allowed options are, and
@@ -109,6 +112,10 @@ class Parser(argparse.ArgumentParser):
         return super(Parser, self.filled()).format_usage()
 
     def error(self, message: str) -> None:  # one line, no usage block
+        missing = MISSING_VALUE.match(message)
+        if missing:  # (argparse reads a word that begins with "-" as an option, never as the value)
+            option = missing.group(1).split("/")[0]
+            message += f"; allowed: {option} VALUE (a value that begins with '-' written as {option}=VALUE)"
         raise UsageError(message)
 
     def parse_args(self, args=None, namespace=None):  # unknown options named with where to find the allowed
