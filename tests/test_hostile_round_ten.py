@@ -2,6 +2,11 @@
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
+import textwrap
+
 import numpy as np
 import pytest
 
@@ -63,9 +68,6 @@ def test_the_guides_sweep_selection_works_on_its_grid():
 # --- R3: a study (or --params / --path) file whose arrays nest thousands deep crashed the TOML reader --------------
 @pytest.mark.parametrize("nested", ["x = " + "[" * 5000 + "]" * 5000, "x = " + "{a = " * 3000 + "}" * 3000])
 def test_a_deeply_nested_toml_file_is_refused_in_one_line(tmp_path, nested):
-    import subprocess
-    import sys
-
     study = tmp_path / "deep.toml"
     study.write_text('[parameters]\npreset = "paper-R30"\n' + nested + "\n", encoding="utf-8")
     run = tmp_path / "run.csv"
@@ -89,9 +91,6 @@ def test_a_deeply_nested_toml_file_is_refused_in_one_line(tmp_path, nested):
     (["phase-diagram", "--scenario", "A", "--dgamma1", "-1.5e-1"], "dgamma1=-0.15"),
 ])
 def test_a_negative_number_in_any_notation_is_a_value(tmp_path, args, named):
-    import subprocess
-    import sys
-
     done = subprocess.run([sys.executable, "-m", "mdr_events.app.cli", *args, "--out", str(tmp_path / "o")],
                           capture_output=True, text=True)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
@@ -124,9 +123,6 @@ def test_an_edge_the_indenter_outruns_is_refused_with_the_advice_that_helps(prof
      "--limit 'memory=2GiB': memory is given twice; allowed: each limit once"),
 ])
 def test_a_missing_value_or_a_repeated_limit_is_named_with_how_to_write_it(tmp_path, args, expected):
-    import subprocess
-    import sys
-
     done = subprocess.run([sys.executable, "-m", "mdr_events.app.cli", *args], capture_output=True, text=True,
                           cwd=tmp_path)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
@@ -139,3 +135,40 @@ def test_a_limit_named_twice_is_refused_in_the_api_too():
 
     with pytest.raises(ValueError, match="steps is given twice"):
         inputs.limits(["steps=10", "memory=1GiB", "steps=20"])
+
+
+# --- R7: Ctrl-C that code under the command caught: numpy's import turned it into an ImportError (exit 3, "internal
+# error ... numpy._core.multiarray failed to import"), and a library that catches it and goes on made the command exit
+# 0 ------------------------------------------------------------------------------------------------------------------
+CAUGHT = textwrap.dedent("""
+    import os, signal, sys
+    signal.signal(signal.SIGINT, signal.default_int_handler)  # as in a foreground process (a background job ignores it)
+    import mdr_events.app.cli.simulate as verb
+    real, how, signum = verb.run, sys.argv.pop(1), getattr(signal, sys.argv.pop(1))
+
+    def run(args):
+        try:
+            os.kill(os.getpid(), signum)
+            for _ in range(10**6):
+                pass
+        except BaseException as error:
+            if how == "converted":  # as numpy's import does
+                raise ImportError("numpy._core.multiarray failed to import") from error
+            # how == "swallowed": as a library's `except BaseException: pass` does
+        real(args)
+
+    verb.run = run
+    from mdr_events.app.cli import console_main
+    sys.exit(console_main())
+""")
+
+
+@pytest.mark.parametrize("name, status, line", [
+    ("SIGINT", 130, "mdr-events: interrupted (Ctrl-C); no file was left half-written\n"),
+    ("SIGTERM", 143, "mdr-events: terminated (SIGTERM); no file was left half-written\n")])
+@pytest.mark.parametrize("how", ["converted", "swallowed"])
+def test_an_interrupt_that_code_caught_ends_the_command_as_an_interrupt(tmp_path, how, name, status, line):
+    done = subprocess.run([sys.executable, "-c", CAUGHT, how, name, "simulate", "--scenario", "A", "--alpha", "20",
+                           "--method", "continuum", "--out", "out"], capture_output=True, text=True, timeout=300,
+                          cwd=tmp_path, env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))
+    assert (done.returncode, done.stderr) == (status, line)
