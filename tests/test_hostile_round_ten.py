@@ -172,3 +172,14 @@ def test_an_interrupt_that_code_caught_ends_the_command_as_an_interrupt(tmp_path
                            "--method", "continuum", "--out", "out"], capture_output=True, text=True, timeout=300,
                           cwd=tmp_path, env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))
     assert (done.returncode, done.stderr) == (status, line)
+
+
+# --- R8: fit's refusal of a noise read "the data's largest magnitude over and times 1.3e+154" ----------------------
+def test_a_refused_noise_says_its_range_in_words():
+    times = np.linspace(0.0, 1300.0, 301)
+    data = {"time": times, "normal_force": np.where(times < 1200.0, -1e-3 * np.sin(times / 400.0), 0.0)}
+    with pytest.raises(ValueError) as refused:
+        me.fit(data, me.Contact.paper(), "A", 20.0, free=("tau0",), noise={"normal_force": 0.0})
+    message = str(refused.value)
+    assert "noise['normal_force']=0.0 is not allowed" in message and "over and times" not in message
+    assert "largest magnitude divided and multiplied by 1.3e+154" in message
