@@ -183,3 +183,24 @@ def test_a_refused_noise_says_its_range_in_words():
     message = str(refused.value)
     assert "noise['normal_force']=0.0 is not allowed" in message and "over and times" not in message
     assert "largest magnitude divided and multiplied by 1.3e+154" in message
+
+
+# --- R9: a masked array was read with the values under its mask, as if they were given (phase_diagram computed the
+# masked angle, validate compared a masked sample's value) -----------------------------------------------------------
+@pytest.mark.parametrize("call", [
+    lambda: me.phase_diagram(me.Contact.paper(), scenario="A", alpha=np.ma.array([10.0, 20.0, 30.0], mask=[0, 1, 0])),
+    lambda: me.simulate(me.Contact.paper(), me.Scenario("A", np.ma.array([10.0, 20.0], mask=[1, 0])), "continuum"),
+    lambda: me.validate({"time": np.linspace(0.0, 1300.0, 100),
+                         "normal_force": np.ma.array(np.zeros(100), mask=np.arange(100) == 5)},
+                        me.Contact.paper(), "A", 20.0),
+], ids=["phase_diagram", "simulate", "validate"])
+def test_a_masked_array_with_masked_entries_is_refused(call):
+    with pytest.raises((TypeError, ValueError)) as refused:
+        call()
+    message = str(refused.value)
+    assert "\n" not in message and "is a masked array with 1 of" in message and "allowed: " in message
+
+
+def test_a_masked_array_without_masked_entries_is_read():
+    diagram = me.phase_diagram(me.Contact.paper(), scenario="A", alpha=np.ma.array([10.0, 20.0, 30.0]))
+    np.testing.assert_array_equal(diagram["alpha"].values, [10.0, 20.0, 30.0])
