@@ -159,7 +159,12 @@ def _holds_a_bool(value) -> bool:
 
 def real_array(name: str, value: Any, allowed: str) -> np.ndarray:
     """``value`` as a float array if every entry is a real number (integers and floats of any width;
-    not bools, complex numbers, strings or objects); else ``TypeError`` naming it and ``allowed``."""
+    not bools, complex numbers, strings or objects); else ``TypeError`` naming it and ``allowed``. A masked array with
+    masked entries is refused too: NumPy would read the values under the mask as if they were given."""
+    if isinstance(value, np.ma.MaskedArray) and np.ma.count_masked(value):
+        raise TypeError(f"{name} is a masked array with {np.ma.count_masked(value)} of {value.size} entries masked "
+                        f"(their values would be read as given); allowed: {allowed}, unmasked (a missing sample as "
+                        "nan, where one is allowed: value.filled(np.nan))")
     try:
         array = np.asarray(value)
     except (TypeError, ValueError):  # ragged nesting

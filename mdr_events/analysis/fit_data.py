@@ -121,8 +121,8 @@ def measurement_of(read: Candidate, path: Path, time_origin: Any,
         # a residual over the noise, and its square, must stay finite, and so must the weight 1/noise² (1e200
         # underflowed it to 0: divisions by zero in the covariance)
         sigma[name] = check_real(f"noise[{name!r}]", noise[name], f"a number > 0 ({QUANTITY_UNITS[name]}) from "
-                                 f"{largest / SCALE_MAX:.3g} to {max(largest, 1.0) * SCALE_MAX:.3g}, the data's largest "
-                                 f"magnitude over and times {SCALE_MAX:.2g}",
+                                 f"{largest / SCALE_MAX:.3g} to {max(largest, 1.0) * SCALE_MAX:.3g}: the data's largest "
+                                 f"magnitude divided and multiplied by {SCALE_MAX:.2g}",
                                  lambda value: value > 0 and largest <= value * SCALE_MAX
                                  and value <= max(largest, 1.0) * SCALE_MAX) if given[name] else estimate_noise(series)
     return Measurement(times_from_contact(read, path, time_origin) + path.first_contact_time(), values, sigma, given, read)

@@ -17,7 +17,9 @@ quantity there: ``max_error`` (max ``|Δ|``), ``rms_error`` (root mean square) a
 Events found in the candidate by these rules (``nan`` where the candidate lacks what a rule needs):
 
 - **slip onset**: the first sample with ``sliding_fraction > SLIDING_SHARE`` (:func:`sliding`);
-- **full slip**: the first sample with ``sliding_fraction >= 1 − SLIDING_SHARE`` (:func:`sliding`), or without a sliding fraction, with
+- **full slip**: the first sample with ``sliding_fraction >= 1 − SLIDING_SHARE`` (:func:`sliding`) but one that makes
+  a contact and is followed in contact by partial slip (an adhesive contact made under Coulomb's law slides fully
+  for that instant only: every spring is in tension), or without a sliding fraction, with
   ``|F_x| >= (1 − FULL_SLIP_SHARE) τ0 A``;
 - **start of detachment**: the first sample after the largest contact area (or radius) at which it is
   smaller than that largest value;
@@ -269,6 +271,15 @@ def sliding(sliding_fraction: np.ndarray) -> Sliding:
     return Sliding(share > SLIDING_SHARE, share >= 1.0 - SLIDING_SHARE)
 
 
+def _jump_in_instant(fully: np.ndarray, contact: np.ndarray) -> np.ndarray:
+    """The samples that make a contact in full slip and are followed in contact by partial slip: an adhesive
+    contact made under Coulomb's law has every spring in tension (no cap, all sliding) for that instant only, and
+    the exact event log has no full slip there (it slides fully from the next instant on, or not)."""
+    made = contact & ~np.concatenate(([False], contact[:-1]))
+    partial_next = np.concatenate((contact[1:] & ~fully[1:], [False]))
+    return fully & made & partial_next
+
+
 def candidate_events(times, quantities, contact, params, full_slip_by_force: bool = True) -> dict[str, float]:
     """Times of the events by the module's rules (times as given; also ``pull_off_force`` and
     ``last_in_contact``, the index of the last sample in contact, -1 if none) (``nan`` where not found or not
@@ -282,7 +293,8 @@ def candidate_events(times, quantities, contact, params, full_slip_by_force: boo
         out["first_contact"] = float(times[touching[0]])
     fraction = quantities.get("sliding_fraction")
     if fraction is not None:
-        onset, full = (np.flatnonzero(samples) for samples in sliding(fraction))
+        partly, fully = sliding(fraction)
+        onset, full = np.flatnonzero(partly), np.flatnonzero(fully & ~_jump_in_instant(fully, np.asarray(contact)))
         out["slip_onset"] = float(times[onset[0]]) if onset.size else math.nan
         out["full_slip"] = float(times[full[0]]) if full.size else math.nan
     elif full_slip_by_force and "tangential_force" in quantities and ("contact_area" in quantities

@@ -117,11 +117,17 @@ def limits(items: Iterable[str]) -> Limits:
     Raises
     ------
     ValueError
-        An unknown name or a value that is not a number (:func:`~mdr_events.limits.parse_limit`).
+        An unknown name or a value that is not a number (:func:`~mdr_events.limits.parse_limit`), or a name given
+        twice.
     """
-    found = DEFAULT_LIMITS
+    found, given = DEFAULT_LIMITS, set()
     for text in items:
         found = parse_limit(text, found)
+        name = text.partition("=")[0].strip()
+        if name in given:
+            raise ValueError(f"--limit {text!r}: {name} is given twice; allowed: each limit once (e.g. --limit "
+                             "memory=8GiB --limit steps=1e8)")
+        given.add(name)
     return found
 
 

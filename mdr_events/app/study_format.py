@@ -185,6 +185,8 @@ def measured_case(document: dict[str, Any], where: str, name: str) -> tuple[str,
 
 #: The largest study or parameter file read (bytes): far above any study, far below what would take long to parse.
 MAX_TOML_BYTES = 2**22
+#: The nesting of arrays and inline tables that is always read (Python's reader recurses once or twice per level).
+MAX_TOML_NESTING = 100
 
 
 def read_toml(path: Any, what: str) -> tuple[dict[str, Any], FilePath]:
@@ -211,6 +213,9 @@ def read_toml(path: Any, what: str) -> tuple[dict[str, Any], FilePath]:
         raise StudyError(f"{where}: not UTF-8 text (byte {error.start}: {error.reason}); {allowed}") from None
     except tomllib.TOMLDecodeError as error:
         raise StudyError(f"{where}: not valid TOML ({error}); {allowed}") from None
+    except RecursionError:  # (the reader descends one call per level of arrays or inline tables)
+        raise StudyError(f"{where}: its arrays or inline tables nest too deeply to be read; {allowed}, nested at most "
+                         f"{MAX_TOML_NESTING} levels deep") from None
     except OSError as error:
         raise StudyError(f"{where} cannot be read ({error.strerror or error}); {allowed}") from None
 

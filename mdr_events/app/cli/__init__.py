@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import _thread
 import argparse
+import functools
 import os
 import signal
 import sys
@@ -181,9 +182,23 @@ def _message(error: BaseException) -> str:
     return str(error)
 
 
-def _on_sigterm(signum: int, frame) -> None:
+def _on_sigterm(arrived: list[int], signum: int, frame) -> None:
+    arrived.append(signum)
     signal.signal(signum, signal.SIG_IGN)  # a second SIGTERM must not interrupt the clean-up
     raise _Terminated(signum)
+
+
+def _on_sigint(arrived: list[int], signum: int, frame) -> None:
+    """Python's own handler of Ctrl-C (``KeyboardInterrupt``), which notes first that it arrived: code that catches
+    what it raises (numpy's import turns it into an ``ImportError``; a library's ``except BaseException``) does
+    not make :func:`main` report a failure, or carry on, after the user pressed Ctrl-C."""
+    arrived.append(signum)
+    raise KeyboardInterrupt
+
+
+def _interrupt(signum: int) -> BaseException:
+    """The exception :func:`main` reports for a signal that arrived (Ctrl-C or SIGTERM)."""
+    return KeyboardInterrupt() if signum == signal.SIGINT else _Terminated(signum)
 
 
 def _outcome(error: BaseException) -> tuple[str, int]:
@@ -251,7 +266,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     being written is removed (its temporary file), and the status is 143.
     """
     handles_sigterm = threading.current_thread() is threading.main_thread()  # signals reach the main thread only
-    previous = signal.signal(signal.SIGTERM, _on_sigterm) if handles_sigterm else None
+    arrived: list[int] = []  # the signals that reached the handlers while the command ran (some code may catch them)
+    previous = signal.signal(signal.SIGTERM, functools.partial(_on_sigterm, arrived)) if handles_sigterm else None
+    # (Ctrl-C's handler is replaced only where it is Python's own: one ignored, as in a background job, stays so)
+    previous_int = signal.getsignal(signal.SIGINT) if handles_sigterm else None
+    if previous_int is signal.default_int_handler:
+        signal.signal(signal.SIGINT, functools.partial(_on_sigint, arrived))
     swallowed = _SwallowedInterrupts()
     if handles_sigterm:
         swallowed.__enter__()
@@ -271,6 +291,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         swallowed.settle()
         if swallowed.interrupts:  # the interpreter swallowed it (garbage collection): the command was interrupted
             raise swallowed.interrupts[0]
+        if arrived:  # code the command ran caught it and went on: the command was interrupted all the same
+            raise _interrupt(arrived[0])
     except BrokenPipeError:  # the reader has gone (`| head`): nothing more to say, and no one to say it to
         _silence_stdout()
         return EXIT_BROKEN_PIPE
@@ -278,6 +300,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         swallowed.settle()
         if swallowed.interrupts:
             error = swallowed.interrupts[0]
+        elif arrived and not isinstance(error, (KeyboardInterrupt, _Terminated)):  # an error it caused (or met)
+            error = _interrupt(arrived[0])
         if debug and not isinstance(error, UsageError):
             raise
         text, code = _outcome(error)
@@ -289,6 +313,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         if handles_sigterm:
             swallowed.__exit__()
             signal.signal(signal.SIGTERM, signal.SIG_DFL if previous is None else previous)
+            if previous_int is signal.default_int_handler:
+                signal.signal(signal.SIGINT, previous_int)
     return 0 if status is None else int(status)
 
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import math
 import os
+import re
 from typing import TYPE_CHECKING, Callable, Sequence
 
 if TYPE_CHECKING:
@@ -66,6 +67,13 @@ def _typed(kind: type) -> Callable[[str], float | int]:
     return typed
 
 
+#: An argument that is a negative number (with an exponent, ``inf`` or ``nan`` too), read as a value.
+NEGATIVE_NUMBER = re.compile(r"^-(?:(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|inf|infinity|nan)$", re.IGNORECASE)
+
+#: argparse's error for an option whose value is missing (or was a word that begins with "-").
+MISSING_VALUE = re.compile(r"^argument (\S+): expected (?:one argument|at least one argument|\d+ arguments?)$")
+
+
 class Parser(argparse.ArgumentParser):
     """An argument parser whose errors are one line (:class:`UsageError`) naming where the allowed options are, and
     whose options of a value are given once (:class:`StoreOnce`). A number's option (``type=float`` or ``int``)
@@ -78,6 +86,9 @@ class Parser(argparse.ArgumentParser):
 
     def __init__(self, *args, fill: Callable[[Parser], None] | None = None, **kwargs) -> None:
         super().__init__(*args, **kwargs)
+        # a negative number is a value, not an option, in every notation a value is read in: argparse's own rule
+        # (``-2``, ``-.5``) took ``--E -1e5`` or ``--tau0 -inf`` for a missing value ("expected one argument")
+        self._negative_number_matcher = NEGATIVE_NUMBER
         self.register("action", None, StoreOnce)
         self.register("action", "store", StoreOnce)
         self.register("type", float, _typed(float))
@@ -101,6 +112,10 @@ class Parser(argparse.ArgumentParser):
         return super(Parser, self.filled()).format_usage()
 
     def error(self, message: str) -> None:  # one line, no usage block
+        missing = MISSING_VALUE.match(message)
+        if missing:  # (argparse reads a word that begins with "-" as an option, never as the value)
+            option = missing.group(1).split("/")[0]
+            message += f"; allowed: {option} VALUE (a value that begins with '-' written as {option}=VALUE)"
         raise UsageError(message)
 
     def parse_args(self, args=None, namespace=None):  # unknown options named with where to find the allowed

@@ -369,8 +369,15 @@ def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profi
     return run
 
 
-def _unresolved(law: RateDependentAdhesion, reason: str) -> ValueError:
-    """The refusal of a law whose edge the path's clock cannot follow, with the reason."""
+def _unresolved(law: RateDependentAdhesion, reason: str, ode: _EdgeODE | None = None) -> ValueError:
+    """The refusal of a law whose edge the path's clock cannot follow, with the reason and what would be followed: where
+    the indenter outran the advancing edge (``ode.compressed_at``), an edge fast enough to keep ahead of it (the
+    advancing speed ``v_ref (Δγ0/G − 1)^(1/n)`` grows with ``v_ref``); otherwise one the clock resolves."""
+    if ode is not None and ode.compressed_at is not None:
+        return ValueError(f"law={law!r} is not allowed on this path: its edge cannot be followed ({_compressed(ode)}"
+                          f"{reason}); allowed: a law whose advancing edge keeps ahead of the indenter (a larger v_ref "
+                          "than this one: the edge's advancing speed grows with it; or a blunter indenter), or "
+                          "Adhesion(dgamma0, dgamma1), the limit v_ref -> inf")
     return ValueError(f"law={law!r} is not allowed on this path: its edge cannot be followed ({reason}); allowed: a "
                       "law whose edge speed the path's clock resolves (v_ref fewer orders of magnitude above the path's "
                       "speed, n nearer 1), or Adhesion(dgamma0, dgamma1), the limit v_ref -> inf")
@@ -429,19 +436,19 @@ def _piece(run: EdgeRun, ode: _EdgeODE, state, jump_in: float, rtol: float):
                                  dense_output=True, events=ode.moving_events(mode, END_SHARE * jump_in))
     except _TooStiff:
         raise _unresolved(ode.law, f"{MAX_EVALUATIONS} evaluations of the ODE from t={float(t0)!r} s "
-                                   f"({mode.value}) did not reach the segment's end {float(segment.t1)!r} s") from None
+                                   f"({mode.value}) did not reach the segment's end {float(segment.t1)!r} s", ode) from None
     except (ValueError, ArithmeticError) as error:  # an infinite speed (n near 0) reached the solver, or a radius
         # beyond the profile's doubles
-        raise _unresolved(ode.law, _compressed(ode) + f"the solver failed from t={float(t0)!r} s ({mode.value}): "
-                                   f"{type(error).__name__}: {error}") from None
+        raise _unresolved(ode.law, f"the solver failed from t={float(t0)!r} s ({mode.value}): "
+                                   f"{type(error).__name__}: {error}", ode) from None
     t_end, a_end = float(solution.t[-1]), float(solution.y[0, -1])
     if solution.status < 0:
         if mode is EdgeMode.RECEDING and _collapsed(ode, speed, t_end, a_end):  # it ran away faster than the clock
             run.pieces.append((t0, t_end, segment, solution.sol))
             run.events.append(EdgeEvent(t_end, EdgeEventKind.CONTACT_ENDS, float(segment.d(t_end)), a_end))
             return None
-        raise _unresolved(ode.law, _compressed(ode) + f"the solver failed on [{float(t0)!r}, {float(segment.t1)!r}] s "
-                                   f"({mode.value}): {solution.message}")
+        raise _unresolved(ode.law, f"the solver failed on [{float(t0)!r}, {float(segment.t1)!r}] s "
+                                   f"({mode.value}): {solution.message}", ode)
     run.pieces.append((t0, t_end, segment, solution.sol))
     if solution.status == 1 and len(solution.t_events[1]):  # the contact has come apart
         run.events.append(EdgeEvent(t_end, EdgeEventKind.CONTACT_ENDS, float(segment.d(t_end)), a_end))
