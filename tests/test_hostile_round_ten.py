@@ -204,3 +204,14 @@ def test_a_masked_array_with_masked_entries_is_refused(call):
 def test_a_masked_array_without_masked_entries_is_read():
     diagram = me.phase_diagram(me.Contact.paper(), scenario="A", alpha=np.ma.array([10.0, 20.0, 30.0]))
     np.testing.assert_array_equal(diagram["alpha"].values, [10.0, 20.0, 30.0])
+
+
+def test_an_output_directory_to_be_made_with_a_control_character_is_refused(tmp_path):
+    """--out accepted a directory name with a newline (an output file's name may not hold one): a part the package
+    would create is refused in one line, naming it; an existing directory so named is the user's and is taken."""
+    from mdr_events.io.paths import prepare_output_directory
+    with pytest.raises(ValueError, match=r"out=.*to be created, holds a control character"):
+        prepare_output_directory(tmp_path / "a\nb" / "c", "out")
+    existing = tmp_path / "made\tby user"
+    existing.mkdir()
+    assert prepare_output_directory(existing, "out") == existing

@@ -95,6 +95,10 @@ def _directory_problem(directory: Path) -> str | None:
     long = [part for part in directory.parts if len(part.encode()) > MAX_NAME_BYTES]
     if long:
         return f"its part {shown(long[0])} has {len(long[0].encode())} bytes, more than a file system's {MAX_NAME_BYTES}"
+    created = [part.name for part in (directory, *directory.parents) if not os.path.lexists(part)]
+    controlled = [part for part in created if any(ord(character) < 32 or ord(character) == 127 for character in part)]
+    if controlled:  # (a directory this package would create, with a newline in its name, as a file's name may not)
+        return f"its part {shown(controlled[-1])}, to be created, holds a control character"
     absolute = directory.absolute()
     real = Path(os.path.realpath(absolute))
     if real == Path(real.anchor):

@@ -114,6 +114,9 @@ def phase_diagram(
     """
     params, profile, friction = theory_job(contact, d_max, profile, friction)
     check_choice("scenario", scenario, analytic.SCENARIOS)
+    if isinstance(alpha, str) and alpha in ("A", "B"):  # phase_diagram(contact, "B"): the scenario given as alpha
+        raise TypeError(f"alpha={alpha!r} is not allowed: a scenario's name where the angles go; allowed: angles in "
+                        f"degrees, and the scenario by name: phase_diagram(contact, scenario={alpha!r})")
     angles = validate_alpha(default_angles() if alpha is None else alpha)
     if angles.ndim != 1 or angles.size == 0:
         raise ValueError(f"alpha must be a non-empty 1-D array of angles, got shape {angles.shape}")

@@ -251,3 +251,10 @@ def test_a_law_with_mu_zero_draws_the_papers_diagram_for_a_punch():
     np.testing.assert_allclose(law["d_crit_hertz"].values, paper["d_crit_hertz"].values, rtol=1e-14)
     assert float(law["critical_angle_hertz"]) == pytest.approx(float(paper["critical_angle_hertz"]), rel=1e-14)
     assert float(law["critical_angle_hertz"]) < 90.0
+
+
+@pytest.mark.parametrize("name", ["A", "B"])
+def test_a_scenario_given_where_the_angles_go_points_to_scenario(name):
+    """phase_diagram(contact, "B") read "B" as the angles: the one line now says to write scenario="B"."""
+    with pytest.raises(TypeError, match=f"alpha='{name}' is not allowed.*scenario='{name}'"):
+        me.phase_diagram(me.Contact.paper(), name)
