@@ -5,8 +5,9 @@ speed its energy release rate gives it, ``ȧ = edge_speed(Γ(a, d(t)))`` with ``
 (:mod:`mdr_events.theory.rate_adhesion`), and rests while ``Δγ0 <= Γ <= Δγ1``. :func:`solve_edge` integrates it with
 ``solve_ivp`` (Radau: the ODE is stiff where ``v_ref`` is far above the path's speed, the rate-independent limit) over
 each straight segment of the path, and logs where the edge starts and stops moving (events on ``Γ``) and where the
-contact ends (``a`` down to :data:`END_SHARE` of the jump-in radius: the receding edge runs away in a finite time). The
-springs' tangential shifts are not part of it (yet): this is the radius and the normal force (10) of such a contact.
+contact ends (``a`` down to :data:`END_SHARE` of the jump-in radius: the receding edge runs away in a finite time; one
+that runs away faster than the clock resolves ends where the solver gives up, :data:`COLLAPSE_ULPS`). The springs'
+tangential shifts are not part of it (yet): this is the radius and the normal force (10) of such a contact.
 
 At first contact (``d = 0``) the radius starts from 0 at an unbounded speed: near ``a = 0`` the stretched edge
 releases ``Γ ≈ Δγ0 (a/a_J)³`` (``a_J``: the jump-in radius of the law at rest) on the paraboloid, so
@@ -39,7 +40,7 @@ from .model import ContinuumModel, Segment, kinematics
 from .tolerances import Tolerances
 
 __all__ = ["EdgeEventKind", "EdgeEvent", "EdgeMode", "EdgeRun", "solve_edge", "START_SPEED", "END_SHARE", "EDGE_RTOL",
-           "BAND_SHARE", "MAX_PIECES_PER_SEGMENT", "CLOCK_ULPS"]
+           "BAND_SHARE", "MAX_PIECES_PER_SEGMENT"]
 
 #: The integration starts at first contact from the radius whose advancing speed is this many times ``v_ref``,
 #: ``a0 = a_J START_SPEED^(−n/3)`` (module docstring): the time it takes to get there from 0 is below
@@ -51,10 +52,6 @@ END_SHARE = 1e-3
 #: A release rate within this share of a work at rest is at it (an event's root, or the closed form of a branch
 #: (9), rounds it): where the depth moves it out of the band, the edge moves.
 BAND_SHARE = 1e-9
-#: A receding edge whose radius over its speed (the time the rest of its collapse takes, the speed growing as the radius
-#: shrinks) is below this many ulp of the clock has come apart: the clock cannot resolve the rest (at v_ref = 100 m/s
-#: the last micrometre takes 1e-13 s at t = 600 s).
-CLOCK_ULPS = 1e3
 #: The machine epsilon of the clock's doubles.
 EPS = float(np.finfo(float).eps)
 #: The samples :meth:`EdgeRun.pull_off_force` brackets the least ``F_N`` with, and the share of their spacing its
@@ -72,8 +69,9 @@ RTOL_RANGE = (1e-13, 1e-3)
 #: (its radius over its speed, an upper bound: the speed grows as the radius shrinks) is below this many ulp of the
 #: clock: it runs away faster than the clock resolves.
 COLLAPSE_ULPS = 1e7
-#: The right-hand side evaluations one straight segment of the path may take: a law the path's clock cannot resolve (``v_ref`` many orders
-#: above the path's speed, or ``n`` near 0: the speed a step of the release rate) is refused, not integrated for hours.
+#: The right-hand side evaluations one straight segment of the path may take: a law the path's clock cannot resolve
+#: (``v_ref`` many orders above the path's speed, or ``n`` near 0: the speed a step of the release rate) is refused,
+#: not integrated for hours.
 MAX_EVALUATIONS = 200_000
 
 
@@ -276,10 +274,8 @@ class _EdgeODE:
             return self.release(t, float(y[0])) - rest
         stops.terminal, stops.direction = True, -1.0 if mode is EdgeMode.RECEDING else 1.0
 
-        speed = self.rhs(mode)
-
-        def ends(t, y):  # (the radius small, or the rest of the collapse shorter than the clock resolves)
-            return y[0] - max(end_radius, CLOCK_ULPS * EPS * abs(t) * abs(speed(t, y)[0]))
+        def ends(t, y):  # (a collapse faster than the clock resolves ends where the solver gives up: _collapsed)
+            return y[0] - end_radius
         ends.terminal, ends.direction = True, -1.0
         events = [stops, ends]
         if mode is EdgeMode.ADVANCING and math.isfinite(self.limit):
