@@ -63,12 +63,11 @@ def annulus_slip_events(solution: PathSolution, zone: PathSolution, zone_slips: 
     events = []
     for start, end in _contacts(solution):
         opens = _annulus_opens(solution, zone, start, end)
-        if opens is not None and not _zone_slides(zone_slips, start, opens):
+        if opens is not None and _last_slip(zone_slips, start, opens) not in _SLIDING_AFTER:
             events.append(_event_at(solution, opens, EventKind.SLIP_ONSET))
         for ended in (event.time + zone.t_contact - solution.t_contact for event in zone.events
                       if event.kind in CONTACT_ENDING):
-            last = [event.kind for event in zone_slips if start <= event.time <= ended]
-            if start < ended < end and not (last and last[-1] is EventKind.FULL_SLIP):
+            if start < ended < end and _last_slip(zone_slips, start, ended) is not EventKind.FULL_SLIP:
                 events.append(_event_at(solution, ended, EventKind.FULL_SLIP))
     return events
 
@@ -96,11 +95,11 @@ def _annulus_opens(solution: PathSolution, zone: PathSolution, start: float, end
     return float(spans[open_[0]].t_start - solution.t_contact) if open_.size else None
 
 
-def _zone_slides(zone_slips: list[Event], start: float, time: float) -> bool:
-    """Whether the zone slides at ``time`` of the contact that began at ``start``: its last slip event since is one
-    after which it slides."""
+def _last_slip(zone_slips: list[Event], start: float, time: float) -> EventKind | None:
+    """The zone's last slip event up to ``time`` of the contact that began at ``start`` (``None``: none yet); it
+    slides after one of :data:`_SLIDING_AFTER`."""
     last = [event.kind for event in zone_slips if start <= event.time <= time]
-    return bool(last) and last[-1] in _SLIDING_AFTER
+    return last[-1] if last else None
 
 
 def _event_at(solution: PathSolution, time: float, kind: EventKind) -> Event:
