@@ -170,22 +170,17 @@ def _result(solution, names, free, values_of, measurements, forces, weights, sol
     natural = values_of(theta)
     estimate, low, high, units = [], [], [], []
     for index, name in enumerate(names):
-        if index < len(free):
-            if name in _LOG_SCALED:
-                estimate.append(natural[name])
-                low.append(math.exp(theta[index] - quantile * error[index]))
-                high.append(math.exp(theta[index] + quantile * error[index]))
-                error[index] = natural[name] * error[index]  # to first order, in the unit
-            else:
-                estimate.append(theta[index])
-                low.append(theta[index] - quantile * error[index])
-                high.append(theta[index] + quantile * error[index])
-            units.append(RATE_FREE_NAMES[name])
+        centre, spread = theta[index], quantile * error[index]
+        if name in _LOG_SCALED:  # (an offset or n: linear)
+            estimate.append(natural[name])
+            low.append(math.exp(centre - spread))
+            high.append(math.exp(centre + spread))
+            error[index] = natural[name] * error[index]  # to first order, in the unit
         else:
-            estimate.append(theta[index])
-            low.append(theta[index] - quantile * error[index])
-            high.append(theta[index] + quantile * error[index])
-            units.append("N")
+            estimate.append(centre)
+            low.append(centre - spread)
+            high.append(centre + spread)
+        units.append(RATE_FREE_NAMES.get(name, "N"))
     scale = np.sqrt(np.maximum(np.diag(covariance), 1e-300))
     correlation = covariance / np.outer(scale, scale)
     rms, start = [], 0
