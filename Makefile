@@ -1,6 +1,8 @@
 # Two commands, both self-contained in a fresh clone (Python >= 3.11, pip, make):
 #   make reproduce   writes results/ (files that agree with what is there are left alone)
-#   make test        runs the test suite, the documentation build among it (tests/test_docs_build.py)
+#   make test        runs the test suite but the tests marked slow (about 2 min on 2 cores)
+#   make test-all    runs every test, the slow ones among them (the documentation build, tests/test_docs_build.py;
+#                    the fresh computation of results/): what CI (.ci/run) runs
 #   make docs        builds the documentation site into docs/_build/html
 # Both install into .venv the exact versions of the lock file constraints.txt, which results/ was
 # written with. `make test-newest` runs the tests against the newest releases instead (.venv-newest),
@@ -11,12 +13,12 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 LOCK := constraints.txt
 # the extra docs too, so that `make test` runs numpydoc's validation of every public docstring (tests/test_docs.py)
-# and builds the site as `make docs` does, with its smoke tests (tests/test_docs_build.py)
+# and `make test-all` builds the site as `make docs` does, with its smoke tests (tests/test_docs_build.py)
 EXTRAS := test,notebooks,scale,lammps,docs
 # PIP_CONSTRAINT, unlike -c, also reaches the build backend's own environment (setuptools)
 LOCKED_PIP = PIP_CONSTRAINT=$(CURDIR)/$(LOCK) $(1)/python -m pip install --quiet
 
-.PHONY: test test-newest reproduce notebooks docs benchmark derive lock clean
+.PHONY: test test-all test-newest reproduce notebooks docs benchmark derive lock clean
 
 $(STAMP): pyproject.toml $(LOCK)
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -28,7 +30,12 @@ $(STAMP): pyproject.toml $(LOCK)
 # computation of results/, shared solutions) are computed once
 PYTEST_PARALLEL := -n auto --dist loadscope
 
+# `make test`: the quick round, every test but those marked slow (pyproject.toml's markers say which and why);
+# `make test-all`: all of them, as CI runs them
 test: $(STAMP)
+	$(BIN)/python -m pytest -q $(PYTEST_PARALLEL) -m "not slow"
+
+test-all: $(STAMP)
 	$(BIN)/python -m pytest -q $(PYTEST_PARALLEL)
 
 test-newest:

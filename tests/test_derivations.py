@@ -35,6 +35,7 @@ def test_notebook_runs(path, capsys):
         plt.close("all")
 
 
+@pytest.mark.slow  # a kernel per notebook (~4 s each); test_notebook_runs checks the same asserts as a script
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
 def test_notebook_executes_as_a_notebook(path):
     """Executed as a notebook, each derivation shows a PNG figure and no error.

@@ -1,5 +1,5 @@
-"""The documentation site builds as ``make docs`` builds it, and what it shows renders: part of ``make test``, so
-that a broken docstring, reference or tutorial fails CI (``.ci/run``).
+"""The documentation site builds as ``make docs`` builds it, and what it shows renders: part of ``make test-all``,
+which CI runs (``.ci/run``), so that a broken docstring, reference or tutorial fails CI.
 
 The build (every tutorial and derivation notebook executed, warnings as errors, nitpicky) runs once for the module,
 into a temporary directory, in about a minute (three on a loaded 2-core machine); pytest-xdist (``--dist
@@ -20,6 +20,9 @@ import sys
 from pathlib import Path
 
 import pytest
+
+#: The whole build (about a minute quiet): `make test-all` and CI run it, `make test` leaves it out.
+pytestmark = pytest.mark.slow
 
 ROOT = Path(__file__).resolve().parent.parent
 DOCS = ROOT / "docs"

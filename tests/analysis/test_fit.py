@@ -61,6 +61,7 @@ def test_with_one_percent_noise_every_parameter_lies_in_its_interval(paper, nois
     assert noisy.warnings == [] and "but the fit" not in noisy.verdict and "tau0 = " in repr(noisy)
 
 
+@pytest.mark.slow
 def test_the_intervals_cover_the_truth_at_their_nominal_rate(paper):
     """Over 40 seeds of 1 % noise each parameter's 95 % interval holds the truth at least 34 times."""
     times = times_of(paper, samples=801)

@@ -463,6 +463,7 @@ def test_ctrl_c_while_writing_removes_the_temporary_file(tmp_path, monkeypatch, 
     assert files(tmp_path) == []
 
 
+@pytest.mark.slow
 def test_a_temporary_file_left_by_sigkill_is_removed_by_the_next_run(tmp_path):
     out = tmp_path / "out"
     process = start(tmp_path, "slow", ("phase-diagram", "--scenario", "A", "--out", str(out)), SLOW_DISK)

@@ -111,6 +111,7 @@ def test_a_limits_table_reaches_every_run_of_a_study(capsys, tmp_path):
     assert not (tmp_path / "out2").exists() or not any((tmp_path / "out2").iterdir())
 
 
+@pytest.mark.slow
 def test_ctrl_c_on_a_local_cluster_sweep_prints_one_line(tmp_path):
     """A Ctrl-C at the terminal reaches every process of the group: the workers (which ignore it) printed a
     traceback each; now the one line of the command alone, and the cluster closed."""

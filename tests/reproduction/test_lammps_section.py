@@ -157,6 +157,7 @@ def test_the_rendered_section_states_the_measured_numbers(study):
 
 
 @needs_lammps
+@pytest.mark.slow
 def test_a_stored_report_agrees_with_itself_and_catches_a_changed_force(study, tmp_path):
     """What a second `reproduce` compares: the report as written and read back agrees; LAMMPS's F_x moved by 1e-9 of
     itself (far beyond its arithmetic) does not."""

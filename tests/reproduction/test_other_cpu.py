@@ -20,6 +20,9 @@ from mdr_events.io.agreement import result_differences, rounded_text_differences
 from mdr_events.models.motion import FIGURE_ANGLES
 from mdr_events.parameters import PRESETS
 
+#: A whole `reproduce` from nudged inputs (about 40–80 s): `make test-all` and CI run it.
+pytestmark = pytest.mark.slow
+
 RESULTS = Path(__file__).resolve().parents[2] / "results"
 #: Units in the last place each input is moved by (another CPU's rounding of a closed form is a few ulp).
 NUDGES = {"E": 3, "nu": -1, "R": 2, "tau0": -2, "dgamma0": 2, "dgamma1": -3, "d_max": 1, "v": -2}

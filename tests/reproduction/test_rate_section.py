@@ -8,6 +8,9 @@ import pytest
 
 from mdr_events.reproduction import rate_adhesion as section
 
+#: The section's computation (about 9 s): `make test-all` and CI run it.
+pytestmark = pytest.mark.slow
+
 #: The slowest speed, 1e-4 v_ref: the work of adhesion of its receding edge is Δγ1 (1 + (ȧ/v_ref)^0.6), its pull-off
 #: 2.5 % above JKR's (measured); within 5 % of the rate-independent limit.
 SLOW_LIMIT_SHARE = 0.05

@@ -50,6 +50,7 @@ def locked_versions() -> dict[str, str]:
     return {name.lower(): version for name, version in pins}
 
 
+@pytest.mark.slow
 def test_committed_report_matches_a_fresh_computation(fresh):
     """Every rounded number of results/README.md is what this machine computes; only the software section
     may differ (it records the versions results/ was written with, which need not be this machine's)."""
@@ -67,6 +68,7 @@ def test_results_were_written_with_the_locked_versions():
         assert recorded[name] == locked[name], name
 
 
+@pytest.mark.slow
 def test_committed_datasets_agree_with_a_fresh_computation(fresh):
     figures = fresh["figures"]
     for (label, scenario), dataset in figures.continuum.items():
@@ -99,6 +101,7 @@ def test_every_committed_quantity_declares_how_it_is_computed():
             assert np.all(tolerance[finite] >= 0) and np.all(np.isfinite(tolerance[finite])), (path.name, name)
 
 
+@pytest.mark.slow
 def test_the_other_indenters_meet_their_closed_forms(fresh):
     """results/profiles_A20_*: the committed files agree with a fresh run; for each indenter (the flat punch too) the
     continuum's least normal force is the pull-off force under force control and its slip onset while indenting is
@@ -121,6 +124,7 @@ def test_the_other_indenters_meet_their_closed_forms(fresh):
                                                                               me.Parameters.paper().dgamma1), rel=1e-14)
 
 
+@pytest.mark.slow
 def test_the_cattaneo_mindlin_check_meets_its_closed_form(fresh):
     """results/mindlin_coulomb*: the committed files agree with a fresh run and carry the closed form; the continuum
     equals it to 1e-9 of μ F_N, the discrete model (Δx = 1 µm, first order) to 1e-5; the loop goes to full slip."""
@@ -136,6 +140,7 @@ def test_the_cattaneo_mindlin_check_meets_its_closed_form(fresh):
     assert continuum.attrs["friction_law"] == "coulomb" and continuum.attrs["param_dgamma0"] == 0.0
 
 
+@pytest.mark.slow
 def test_the_cattaneo_mindlin_check_with_adhesion_is_free_of_it(fresh):
     """results/mindlin_coulomb_adhesive*: the committed files agree with a fresh run; with the paper's adhesion the
     continuum equals the closed form without adhesion to 1e-9 of μ F_N^H and its own run without adhesion to rounding
@@ -182,6 +187,7 @@ def test_the_comparison_catches_what_the_tolerance_does_not_allow():
     assert changed(lambda ds: ds["contact_area"].attrs.__setitem__("units", "mm2"))
 
 
+@pytest.mark.slow
 def test_adhesive_strength_is_the_jkr_value_for_every_angle(fresh):
     """Section 4.2 (1): |F_N,min| = (3/2) π Δγ1 R for all angles, from the solution's exact minimum (the
     Brent refinement leaves a second-order value error; the radius root is exact to a few ulp)."""
@@ -191,6 +197,7 @@ def test_adhesive_strength_is_the_jkr_value_for_every_angle(fresh):
                                    rtol=1e-12)
 
 
+@pytest.mark.slow
 def test_maximum_normal_force_is_exact_and_the_same_for_every_angle(fresh):
     """Section 4.2 (2): F_N,max is the JKR force (10) at d_max on the Δγ0 branch whatever α (it was read off
     2001 samples and varied with α before)."""
@@ -202,6 +209,7 @@ def test_maximum_normal_force_is_exact_and_the_same_for_every_angle(fresh):
     assert "| 10° | 517.447 mN |" in runner.report_text(fresh)
 
 
+@pytest.mark.slow
 def test_reproduce_keeps_files_that_agree_and_rewrites_those_that_do_not(fresh, tmp_path, monkeypatch):
     """`mdr-events reproduce` leaves a file alone when its content agrees with the fresh computation (so that
     git status stays clean on another machine) and says so; a real change is written."""
@@ -246,6 +254,7 @@ def test_reproduce_keeps_files_that_agree_and_rewrites_those_that_do_not(fresh, 
     assert {path.name: path.read_bytes() for path in tmp_path.iterdir()} == before
 
 
+@pytest.mark.slow
 def test_compute_sends_one_progress_message_per_step(computed):
     """reproduce numbers its steps out of a total that counts compute's as COMPUTE_STEPS."""
     _, messages = computed
@@ -261,6 +270,7 @@ def test_compute_sends_one_progress_message_per_step(computed):
     assert messages[-1].startswith("rate-dependent adhesion: pull-off at 7 speeds")
 
 
+@pytest.mark.slow
 def test_report_states_the_papers_numbers_beside_ours(fresh):
     text = runner.report_text(fresh)
     assert "| 23.59° |" in text and "| 22.87° |" in text
