@@ -5,7 +5,10 @@ Prints the median wall time of
 - the discrete method, scenario A at 20°, Δx = 1 µm (10 000 steps): the paper's law and ``RateDependentAdhesion``
   (v_ref = 1 µm/s, n = 0.6), and their ratio (target: the rate-dependent run at most 3× the rate-independent one);
 - the normal problem of the same path: ``continuum.solve_path`` without friction (the paper's law, the radius on its
-  branches) and ``continuum.solve_edge`` (the radius an ODE), and their ratio.
+  branches) and ``continuum.solve_edge`` (the radius an ODE), and their ratio; ``solve_edge`` with the fit's method
+  (LSODA at ``RATE_FIT_RTOL``) beside the reference's (Radau at ``EDGE_RTOL``);
+- ``fit_rate_adhesion`` jointly over three speeds (vertical in and out at 0.1, 1 and 10 µm/s, 400 samples each, 1 %
+  noise) with the law's four values free (target: under 5 s), and with ``v_ref``, ``n`` and three offsets free.
 
 Run: ``python benchmarks/bench_rate_adhesion.py [--repeat N]``.
 """
@@ -14,13 +17,31 @@ from __future__ import annotations
 
 import argparse
 
+import numpy as np
+
 import mdr_events as me
+from mdr_events.analysis.rate_fit import RATE_FIT_METHOD, RATE_FIT_RTOL, RateMeasurement, fit_rate_adhesion
 from mdr_events.models.continuum import solve_edge, solve_path
 
 from _timing import median_time
 
 #: The target of issue 29: a rate-dependent scenario A run at most this many times the rate-independent one.
 RATIO_TARGET = 3.0
+#: The target of issue 29: a 3-speed joint fit of 4 parameters under this many seconds.
+FIT_TARGET = 5.0
+
+
+def _measurements(params: me.Parameters, law: me.RateDependentAdhesion) -> list[RateMeasurement]:
+    """Vertical in and out at three speeds, 400 samples each, with 1 % of JKR's pull-off as noise (seeded)."""
+    rng = np.random.default_rng(7)
+    noise = 0.01 * 1.5 * np.pi * params.dgamma1 * params.R
+    out = []
+    for speed in (1e-7, 1e-6, 1e-5):
+        path = me.Path(np.array([(0.0, 0.0), (0.0, params.d_max), (0.0, -200e-6)]), speed=speed)
+        times = np.linspace(path.first_contact_time(), path.duration, 400)
+        force = solve_edge(params, path, law).normal_force(times, path)
+        out.append(RateMeasurement(path, times, force + rng.normal(0.0, noise, times.size), noise))
+    return out
 
 
 def main() -> None:
@@ -40,8 +61,20 @@ def main() -> None:
     print(f"discrete, A 20°, dx = 1 µm: paper's law {discrete['paper'] * 1e3:.1f} ms, rate-dependent "
           f"{discrete['rate'] * 1e3:.1f} ms, ratio {discrete['rate'] / discrete['paper']:.2f} (target <= "
           f"{RATIO_TARGET:g})")
+    normal["lsoda"] = median_time(lambda: solve_edge(params, path, law, rtol=RATE_FIT_RTOL, method=RATE_FIT_METHOD),
+                                  repeat)
     print(f"normal problem, A 20°: solve_path {normal['paper'] * 1e3:.1f} ms, solve_edge {normal['rate'] * 1e3:.1f} ms, "
-          f"ratio {normal['rate'] / normal['paper']:.2f}")
+          f"ratio {normal['rate'] / normal['paper']:.2f}; the fit's {RATE_FIT_METHOD} at rtol {RATE_FIT_RTOL:g} "
+          f"{normal['lsoda'] * 1e3:.1f} ms ({normal['lsoda'] / normal['rate']:.2f}× the reference's)")
+    measured = _measurements(params, law)
+    start = me.RateDependentAdhesion(1.2 * params.dgamma0, 0.8 * params.dgamma1, 3e-6, 0.8)
+    fits = {"v_ref, n, dgamma0, dgamma1": dict(free=("v_ref", "n", "dgamma0", "dgamma1")),
+            "v_ref, n and 3 offsets": dict(free=("v_ref", "n"), offsets=True)}
+    for label, options in fits.items():
+        seconds = median_time(lambda options=options: fit_rate_adhesion(measured, params, start, **options),
+                              max(1, repeat // 3))
+        print(f"fit_rate_adhesion over 3 speeds, free {label}: {seconds:.2f} s"
+              + (f" (target < {FIT_TARGET:g} s)" if "dgamma0" in label else ""))
 
 
 if __name__ == "__main__":

@@ -31,7 +31,6 @@ def _measurements(seed=7):
     return out
 
 
-@pytest.mark.slow
 def test_three_speeds_give_v_ref_and_n_within_their_intervals():
     result = fit_rate_adhesion(_measurements(), PAPER, START, free=("v_ref", "n"), offsets=True)
     estimate = result["estimate"]

@@ -117,3 +117,27 @@ def test_the_simulators_refuse_the_law_and_say_what_runs_it(method):
                          me.Contact.paper().friction)
     with pytest.raises(TypeError, match=f"not allowed in the {method} method.*continuum.solve_edge"):
         me.simulate(contact, "A", 20.0, method)
+
+
+#: LSODA's curve against the reference (Radau at 1e-12) on the fit's three speeds: LSODA's error control reaches
+#: about 20 times its rtol (1e-10) on these paths, measured 1.7e-9 to 2.3e-9 of the largest force.
+LSODA_CURVE_RTOL = 1e-8
+
+
+@pytest.mark.parametrize("speed", [1e-7, 1e-6, 1e-5])
+def test_lsoda_gives_the_reference_curve_within_its_tolerance(speed):
+    """The fit's method (analysis.rate_fit.RATE_FIT_METHOD at RATE_FIT_RTOL) against Radau at 1e-12, in and out."""
+    law = _law(1e-6, n=0.6)
+    path = me.Path(np.array([(0.0, 0.0), (0.0, PAPER.d_max), (0.0, -200e-6)]), speed=speed)
+    times = np.linspace(path.first_contact_time(), path.duration, 400)
+    reference = solve_edge(PAPER, path, law, rtol=1e-12).normal_force(times, path)
+    fast = solve_edge(PAPER, path, law, rtol=1e-10, method="LSODA").normal_force(times, path)
+    scale = np.max(np.abs(reference))
+    assert np.max(np.abs(fast - reference)) <= LSODA_CURVE_RTOL * scale
+    assert np.max(np.abs(fast - reference)) > 0.0  # (another integrator: not the reference by accident)
+
+
+@pytest.mark.parametrize("method", ["RK45", "radau", None, 3])
+def test_a_method_that_does_not_take_stiff_pieces_is_named(method):
+    with pytest.raises(ValueError, match=r"method=.* is not allowed; allowed: one of Radau, BDF, LSODA"):
+        solve_edge(PAPER, me.Path.scenario_A(90.0, PAPER), _law(1e-6), method=method)

@@ -40,7 +40,7 @@ from .model import ContinuumModel, Segment, kinematics
 from .tolerances import Tolerances
 
 __all__ = ["EdgeEventKind", "EdgeEvent", "EdgeMode", "EdgeRun", "solve_edge", "START_SPEED", "END_SHARE", "EDGE_RTOL",
-           "BAND_SHARE", "MAX_PIECES_PER_SEGMENT"]
+           "EDGE_METHODS", "BAND_SHARE", "MAX_PIECES_PER_SEGMENT"]
 
 #: The integration starts at first contact from the radius whose advancing speed is this many times ``v_ref``,
 #: ``a0 = a_J START_SPEED^(−n/3)`` (module docstring): the time it takes to get there from 0 is below
@@ -60,8 +60,13 @@ PULL_OFF_SAMPLES = 20001
 PULL_OFF_XTOL = 1e-6
 #: A segment holds at most this many pieces (rest, motion, ...): more means no progress.
 MAX_PIECES_PER_SEGMENT = 1000
-#: The relative tolerance of the radius ODE (Radau).
+#: The relative tolerance of the radius ODE.
 EDGE_RTOL = 1e-10
+#: The ``solve_ivp`` methods the radius ODE may be integrated with: those that take stiff pieces (the edge near rest,
+#: a small ``v_ref``). Radau (the default, implicit, order 5) is the reference; LSODA switches between Adams and BDF
+#: by itself and costs about a seventh of Radau's time at the same accuracy on the paper's paths (a fit's choice,
+#: :mod:`mdr_events.analysis.rate_fit`).
+EDGE_METHODS = ("Radau", "BDF", "LSODA")
 #: The range of ``solve_edge``'s ``rtol``: finer than the clock's doubles resolve, Radau never ends; coarser, the
 #: events (where the edge stops) are not found.
 RTOL_RANGE = (1e-13, 1e-3)
@@ -297,7 +302,7 @@ class _Constant:
 
 
 def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profile: SimulatedProfile = None,
-               rtol: float = EDGE_RTOL) -> EdgeRun:
+               rtol: float = EDGE_RTOL, method: str = "Radau") -> EdgeRun:
     """Integrate the radius of a contact under ``law`` along ``path`` (module docstring).
 
     Parameters
@@ -312,6 +317,8 @@ def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profi
         The indenter (``None``: the paraboloid of ``params.R``).
     rtol : float, optional
         The ODE's relative tolerance.
+    method : str, optional
+        The ``solve_ivp`` method, one of :data:`EDGE_METHODS` (default Radau, the reference).
 
     Returns
     -------
@@ -323,7 +330,8 @@ def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profi
     TypeError
         ``params``, ``path`` or ``law`` of another type.
     ValueError
-        A law whose works at rest are not the parameters', an ``rtol`` out of :data:`RTOL_RANGE`, or a law whose edge
+        A law whose works at rest are not the parameters', an ``rtol`` out of :data:`RTOL_RANGE`, a ``method`` not in
+        :data:`EDGE_METHODS`, or a law whose edge
         the path's clock cannot follow (the solver gave up, or would take more than :data:`MAX_EVALUATIONS` steps of
         the ODE on a segment: ``v_ref`` many orders above the path's speed, ``n`` near 0), with the reason.
     """
@@ -334,6 +342,8 @@ def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profi
     law = check_rate_law(law)
     rtol = check_real("rtol", rtol, f"a number with {RTOL_RANGE[0]:g} <= rtol <= {RTOL_RANGE[1]:g}",
                       lambda value: RTOL_RANGE[0] <= value <= RTOL_RANGE[1])
+    if not isinstance(method, str) or method not in EDGE_METHODS:
+        raise ValueError(f"method={shown(method)} is not allowed; allowed: one of {', '.join(EDGE_METHODS)}")
     profile = check_simulated_profile(profile)
     model = ContinuumModel(params, Tolerances(), profile)
     if law.works_at_rest != (params.dgamma0, params.dgamma1):
@@ -354,7 +364,7 @@ def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profi
                 state = _touch(run, law, profile, segment, starts[0], jump_in)
             if state[0] >= segment.t1:
                 break
-            state = _piece(run, ode, state, jump_in, rtol)
+            state = _piece(run, ode, state, jump_in, rtol, method)
             if state is not None:
                 t = state[0]
             else:
@@ -411,7 +421,7 @@ def _collapsed(ode: _EdgeODE, speed, t: float, a: float) -> bool:
     return math.isinf(rate) or a <= COLLAPSE_ULPS * EPS * abs(t) * rate
 
 
-def _piece(run: EdgeRun, ode: _EdgeODE, state, jump_in: float, rtol: float):
+def _piece(run: EdgeRun, ode: _EdgeODE, state, jump_in: float, rtol: float, method: str):
     """One piece from ``state`` (``(t, a)``): resting to the segment's end or where the edge starts to move (closed
     form), or moving (the ODE) to the segment's end, where it stops, or where the contact ends (``None``)."""
     t0, a0 = state
@@ -428,7 +438,7 @@ def _piece(run: EdgeRun, ode: _EdgeODE, state, jump_in: float, rtol: float):
     speed = ode.rhs(mode)
     try:
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # (a failure is reported below, whole)
-            solution = solve_ivp(speed, (t0, segment.t1), [a0], method="Radau", rtol=rtol, atol=rtol * jump_in,
+            solution = solve_ivp(speed, (t0, segment.t1), [a0], method=method, rtol=rtol, atol=rtol * jump_in,
                                  dense_output=True, events=ode.moving_events(mode, END_SHARE * jump_in))
     except _TooStiff:
         raise _unresolved(ode.law, f"{MAX_EVALUATIONS} evaluations of the ODE from t={float(t0)!r} s "
