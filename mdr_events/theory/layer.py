@@ -562,7 +562,7 @@ class LayerTable:
     def _lam(self, lam) -> np.ndarray:
         lam = np.asarray(lam, dtype=float)
         if not np.all((lam >= 0.0) & (lam <= LAMBDA_MAX)):
-            bad = lam[~((lam >= 0.0) & (lam <= LAMBDA_MAX))].ravel()[0]
+            bad = float(lam[~((lam >= 0.0) & (lam <= LAMBDA_MAX))].ravel()[0])
             raise ValueError(f"a/h={bad!r} is not allowed; allowed: 0 <= a/h <= {LAMBDA_MAX:g} (the table's range; "
                              "solve_punch solves beyond it)")
         return lam
