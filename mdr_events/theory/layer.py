@@ -27,10 +27,10 @@ the contact condition ``w = w₀`` (``r < a``) gives the Fredholm equation of th
 
 (:func:`kernel`). The force is ``F = 2π p̂(0)``: the stiffness ``K(a) = 2E* a Φ(λ)``, ``Φ = ∫₀¹ Θ`` (L2). The
 edge value gives the slope: the punch's stress intensity ``K_I = θ(a) sqrt(π/a)`` and Griffith's balance (below)
-make ``K'(a) = 2E* Θ(1)²`` (L3), so that ``d(λΦ)/dλ = Θ(1)²`` (checked by the tests). A profile with the
-half-space MDR profile ``g∞(x)`` (the Abel transform (3)) has the right-hand side ``(d − g∞(aτ))·π/(E* … )``: its
-non-adhesive depth is the generalized MDR profile ``g(a) = Θ_g(1)/Θ(1)`` (L4), ``Θ_g`` the solution with the
-right-hand side ``g∞(aτ)`` (no singular pressure at the edge). The surface outside the punch is
+make ``K'(a) = 2E* Θ(1)²`` (L3), so that ``d(λΦ)/dλ = Θ(1)²`` (checked by the tests). A profile ``f`` enters through
+the right-hand side: at depth ``d``, ``θ = (E*/π)[d Θ − Θ_g]``, ``Θ_g`` the solution of (L1) with the right-hand side
+``g∞(aτ)`` (``g∞`` the half-space's MDR profile, the Abel transform (3)); its non-adhesive depth, the generalized MDR
+profile, is ``g(a) = Θ_g(1)/Θ(1)`` (L4) (no singular pressure at the edge). The surface outside the punch is
 ``φ(r; a) = (2/π)[arcsin(a/r) − ∫_a^r G(t/a)/sqrt(r² − t²) dt]`` with ``G = Θ − 1`` continued by (L1) (L5).
 
 Numerics: Gauss–Legendre (Nyström) on ``[0, 1]`` with ``N = 40 + 6λ`` nodes (rounded up to 16; spectral: the kernel
@@ -38,8 +38,8 @@ is analytic in ``|Im v| < 2``); ``k`` from a Gauss–Legendre quadrature of ``1 
 cancellation), kept as piecewise Chebyshev interpolants on ``v`` (20 points per unit). The solve converges to
 round-off (1e-12 relative at ``λ = 20``) and the tables are interpolated to better than 1e-8.
 
-The generalized MDR (Popov, Heß & Willert, Machines 11(4):474, 2023, and Argatov, Li, Popov's works it cites)
----------------------------------------------------------------------------------------------------------------
+The generalized MDR (Machines 11(4):474, 2023, doi:10.3390/machines11040474, and the works it cites)
+----------------------------------------------------------------------------------------------------
 The springs' stiffness density ``k(x) = K'(x)/2`` (:func:`spring_stiffness_density`), the equivalent profile from
 ``f(r) = ∫₀ʳ [1 − φ(r; ã)] g'(ã) dã`` (:func:`equivalent_profile`), the normal force
 ``F_N = ∫₋ₐᵃ k(x)(d − g(x)) dx = F₀(a) + K(a)(d − g(a))`` (:func:`normal_force`) and Heß's rule
