@@ -129,5 +129,6 @@ html_show_sourcelink = False
 autosummary_context = {"public_modules": ["mdr_events", "mdr_events.theory.analytic", "mdr_events.theory.power_law",
                                           "mdr_events.theory.mindlin", "mdr_events.theory.tabulated",
                                           "mdr_events.theory.symbolic", "mdr_events.theory.rate_adhesion",
+                                          "mdr_events.theory.layer", "mdr_events.theory.layer_symbolic",
                                           "mdr_events.models.continuum",
                                           "mdr_events.dem"]}

@@ -28,8 +28,9 @@ from mdr_events.io.registrars import declare_registrars as _declare_registrars
 #: Where each public name is defined: name -> module (the module itself for the modules in ``__all__``).
 _LAZY = {
     "Parameters": "mdr_events.parameters",
-    **dict.fromkeys(("Adhesion", "Contact", "Elastomer", "FRICTION_LAWS", "FlatPunch", "FrictionLaw", "Paraboloid",
-                     "PowerLaw", "RateDependentAdhesion", "TabulatedProfile"), "mdr_events.contact"),
+    **dict.fromkeys(("Adhesion", "Contact", "Elastomer", "FRICTION_LAWS", "FlatPunch", "FrictionLaw", "Layer",
+                     "LayerBase", "Paraboloid", "PowerLaw", "RateDependentAdhesion", "TabulatedProfile"),
+                    "mdr_events.contact"),
     **dict.fromkeys(("Limits", "ResourceLimitError"), "mdr_events.limits"),
     "DOI": "mdr_events.io.datasets",
     **dict.fromkeys(("open_result", "write_netcdf"), "mdr_events.io.files"),
@@ -100,8 +101,8 @@ if TYPE_CHECKING:  # what static tools (type checkers, IDEs) read: the same name
     from mdr_events.app.study import load_study, run_study
     from mdr_events import dem
     from mdr_events.dem import lammps_check
-    from mdr_events.contact import (FRICTION_LAWS, Adhesion, Contact, Elastomer, FlatPunch, FrictionLaw, Paraboloid,
-                                    PowerLaw, RateDependentAdhesion, TabulatedProfile)
+    from mdr_events.contact import (FRICTION_LAWS, Adhesion, Contact, Elastomer, FlatPunch, FrictionLaw, Layer,
+                                    LayerBase, Paraboloid, PowerLaw, RateDependentAdhesion, TabulatedProfile)
     from mdr_events.io.datasets import DOI
     from mdr_events.io.files import open_result, write_netcdf
     from mdr_events.limits import Limits, ResourceLimitError
@@ -122,6 +123,8 @@ __all__ = [
     "RateDependentAdhesion",
     "Contact",
     "Elastomer",
+    "Layer",
+    "LayerBase",
     "Paraboloid",
     "Limits",
     "ResourceLimitError",

@@ -29,7 +29,8 @@ NUMPYDOC_CHECKS = {
 
 #: The modules of ``mdr_events.__all__`` whose own ``__all__`` is public too.
 PUBLIC_MODULES = ("mdr_events.theory.analytic", "mdr_events.theory.power_law", "mdr_events.theory.mindlin",
-                  "mdr_events.theory.tabulated", "mdr_events.theory.symbolic", "mdr_events.models.continuum")
+                  "mdr_events.theory.tabulated", "mdr_events.theory.symbolic", "mdr_events.theory.layer",
+                  "mdr_events.theory.layer_symbolic", "mdr_events.models.continuum")
 
 #: Objects documented in the build that numpydoc skips: the internals' pages (``docs/api/internals``), whose
 #: names are ``mdr_events.<module>.<...>`` outside the public modules (and the continuum's own submodules). Every
@@ -40,6 +41,8 @@ INTERNAL_PATTERNS = {r"^mdr_events\.(?!(" + "|".join(name.removeprefix("mdr_even
                                                                    "mdr_events.theory.mindlin",
                                                                    "mdr_events.theory.tabulated",
                                                                    "mdr_events.theory.symbolic",
+                                                                   "mdr_events.theory.layer",
+                                                                   "mdr_events.theory.layer_symbolic",
                                                                    "mdr_events.models.continuum"))
                      + r")\.)[a-z_]+(\.[a-z_]+)*\.",
                      r"^mdr_events\.models\.continuum\.[a-z_]+\.",

@@ -358,12 +358,14 @@ def _fields(rel: Relation) -> tuple:
     return (rel.key, rel.equation, rel.title, rel.lhs, rel.rhs, rel.args, rel.variable)
 
 
-def _cached(name: str, build: Callable[[], list[Relation]]) -> list[Relation]:
+def _cached(name: str, build: Callable[[], list[Relation]],
+            where: Callable[[], Path | None] | None = None) -> list[Relation]:
     """``build()``'s relations, read from the cache file if it holds ``name``, else built and stored.
 
-    Any trouble with the cache (unwritable, damaged, foreign) falls back to deriving afresh.
+    ``where`` gives the cache file (default :func:`cache_path`; a sibling module of derivations passes its own, keyed by
+    its own source). Any trouble with the cache (unwritable, damaged, foreign) falls back to deriving afresh.
     """
-    path = cache_path()
+    path = (where or cache_path)()
     store: dict = {}
     if path is not None and path.exists():
         try:

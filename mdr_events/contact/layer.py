@@ -1,0 +1,148 @@
+"""The elastomer as a layer of finite thickness ``h`` on a rigid base (issue 34); ``h = inf`` is the half-space.
+
+The layer's top is in frictionless contact with the indenter in the normal problem; its base is either bonded to the
+rigid support (no displacement there) or resting on it without friction (no normal displacement, no shear
+stress). The theory of a punch on such a layer, the generalized MDR built on it, is
+:mod:`mdr_events.theory.layer`.
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from dataclasses import dataclass
+from typing import Any, Mapping
+
+from mdr_events.validation import check_real, shown
+
+__all__ = ["Layer", "LayerBase", "HALF_SPACE"]
+
+
+class LayerBase(enum.Enum):
+    """How the layer rests on its rigid base.
+
+    ``BONDED``: the base is glued (``u_r = u_z = 0`` at ``z = h``); ``FRICTIONLESS``: it slides freely on the base
+    (``u_z = 0``, ``σ_rz = 0`` at ``z = h``). Looked up by value too: ``LayerBase("bonded")``.
+    """
+
+    #: Glued to the rigid base: no displacement at ``z = h``.
+    BONDED = "bonded"
+    #: Resting on the rigid base without friction: ``u_z = 0`` and no shear stress at ``z = h``.
+    FRICTIONLESS = "frictionless"
+
+
+#: What ``Layer.base`` may be, in a message.
+_BASES_ALLOWED = "one of " + ", ".join(f"LayerBase.{member.name} ({member.value!r})" for member in LayerBase)
+
+
+def _as_base(value: Any) -> LayerBase:
+    """``value`` as a :class:`LayerBase` (a member or its value's string), else a one-line ``ValueError``."""
+    if isinstance(value, LayerBase):
+        return value
+    if isinstance(value, str):
+        for member in LayerBase:
+            if value == member.value:
+                return member
+    raise ValueError(f"Layer.base={shown(value)} is not allowed; allowed: {_BASES_ALLOWED}")
+
+
+@dataclass(frozen=True)
+class Layer:
+    """An elastic layer of thickness ``h`` on a rigid base (SI units); ``h = inf`` is the half-space.
+
+    Parameters
+    ----------
+    thickness : float, default inf
+        The layer's thickness ``h`` in m: a number > 0, finite or ``+inf`` (the half-space of the paper).
+    base : LayerBase or str, default LayerBase.BONDED
+        How the layer rests on its rigid base: ``LayerBase.BONDED`` (``"bonded"``) or ``LayerBase.FRICTIONLESS``
+        (``"frictionless"``). Irrelevant for the half-space (kept as given).
+
+    Raises
+    ------
+    TypeError
+        ``thickness`` not a real number (a bool, a string, a complex number).
+    ValueError
+        ``thickness`` ≤ 0, NaN or ``-inf``; ``base`` not one of the two (the message names the field, the value and
+        what is allowed).
+
+    Notes
+    -----
+    The contact at the layer's top is frictionless in the normal problem (the indenter presses without shear);
+    the layer's moduli are the elastomer's (:class:`~mdr_events.contact.elastomer.Elastomer`).
+    """
+
+    thickness: float = math.inf
+    base: LayerBase = LayerBase.BONDED
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "thickness", check_real(
+            "Layer.thickness", self.thickness, "a number > 0 (m), finite or inf (the half-space)",
+            lambda value: value > 0.0, finite=False))
+        object.__setattr__(self, "base", _as_base(self.base))
+
+    @property
+    def is_half_space(self) -> bool:
+        """Whether the layer is infinitely thick (``thickness = inf``): the paper's half-space."""
+        return math.isinf(self.thickness)
+
+    def relative_radius(self, radius: float) -> float:
+        """The contact radius in the layer's thickness, ``a / h`` (0 for the half-space).
+
+        Parameters
+        ----------
+        radius : float
+            A contact radius ``a`` in m.
+
+        Returns
+        -------
+        float
+            ``a / h``.
+        """
+        return radius / self.thickness
+
+    def describe(self) -> str:
+        """The layer in words.
+
+        Returns
+        -------
+        str
+            ``"half-space"`` or e.g. ``"layer h = 0.005 m, bonded base"``.
+        """
+        if self.is_half_space:
+            return "half-space"
+        return f"layer h = {self.thickness:.9g} m, {self.base.value} base"
+
+    def to_attrs(self) -> dict[str, Any]:
+        """A result's attributes: ``param_layer_thickness`` (m, ``inf`` for the half-space) and ``param_layer_base``.
+
+        Returns
+        -------
+        dict of str to object
+            The thickness with its units and the base's name.
+        """
+        return {"param_layer_thickness": self.thickness, "param_layer_thickness_units": "m",
+                "param_layer_base": self.base.value}
+
+    @classmethod
+    def from_attrs(cls, attrs: Mapping[str, Any]) -> "Layer":
+        """The layer a result was computed for (:meth:`to_attrs`); the half-space if the attributes name none.
+
+        Parameters
+        ----------
+        attrs : mapping of str to object
+            A result's attributes, with ``param_layer_thickness`` and ``param_layer_base`` or without (a result
+            written before layers existed: the half-space).
+
+        Returns
+        -------
+        Layer
+            The layer of that thickness and base.
+        """
+        if "param_layer_thickness" not in attrs:
+            return HALF_SPACE
+        return cls(float(attrs["param_layer_thickness"]), str(attrs.get("param_layer_base", "bonded")))
+
+
+#: The paper's elastomer: a half-space (``Layer()``).
+HALF_SPACE = Layer()
