@@ -51,6 +51,7 @@ _LAZY = {
     "convergence_study": "mdr_events.analysis.convergence_study",
     **dict.fromkeys(("FitResult", "fit"), "mdr_events.analysis.fit"),
     **dict.fromkeys(("RateMeasurement", "fit_rate_adhesion"), "mdr_events.analysis.rate_fit"),
+    **dict.fromkeys(("critical_angle_at_speed", "critical_angles_at_speeds"), "mdr_events.analysis.rate_angles"),
     **dict.fromkeys(("Engine", "SweepOutput", "sweep"), "mdr_events.analysis.sweep"),
     **dict.fromkeys(("load_study", "run_study"), "mdr_events.app.study"),
     "dem": "mdr_events.dem",
@@ -94,6 +95,7 @@ if TYPE_CHECKING:  # what static tools (type checkers, IDEs) read: the same name
     from mdr_events.analysis.convergence_study import convergence_study
     from mdr_events.analysis.crosscheck import cross_check
     from mdr_events.analysis.fit import FitResult, fit
+    from mdr_events.analysis.rate_angles import critical_angle_at_speed, critical_angles_at_speeds
     from mdr_events.analysis.rate_fit import RateMeasurement, fit_rate_adhesion
     from mdr_events.analysis.reports import ConvergenceReport, ConvergenceVerdict, ValidationReport, Verdict
     from mdr_events.analysis.sweep import Engine, SweepOutput, sweep
@@ -162,6 +164,8 @@ __all__ = [
     "fit",
     "fit_rate_adhesion",
     "RateMeasurement",
+    "critical_angle_at_speed",
+    "critical_angles_at_speeds",
     "convergence_study",
     "d_crit",
     "jkr_contact_radius",

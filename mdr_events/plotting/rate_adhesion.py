@@ -9,7 +9,7 @@ from matplotlib.figure import Figure
 
 from mdr_events.plotting.figures import LEGEND_FONTSIZE
 
-__all__ = ["plot_pull_off_against_speed"]
+__all__ = ["plot_pull_off_against_speed", "plot_critical_angle_against_speed"]
 
 
 def plot_pull_off_against_speed(speed_ratios: np.ndarray, pull_off_ratios: np.ndarray, exponent: float) -> Figure:
@@ -39,6 +39,39 @@ def plot_pull_off_against_speed(speed_ratios: np.ndarray, pull_off_ratios: np.nd
                 label=f"the law's Δγ/Δγ1 = 1 + (v/v_ref)^{exponent:g} at the path's speed")
     axes.set_xlabel("unloading speed v / v_ref")
     axes.set_ylabel("pull-off force |F_pull| / ((3/2) π Δγ1 R)")
+    axes.legend(fontsize=LEGEND_FONTSIZE)
+    axes.grid(True, which="both", lw=0.3, alpha=0.5)
+    return figure
+
+
+def plot_critical_angle_against_speed(speed_ratios: np.ndarray, angles: np.ndarray, adhesive: float,
+                                      hertz: float) -> Figure:
+    """The critical angle of scenario A against ``v / v_ref`` (markers and line, log abscissa), between the
+    rate-independent adhesive angle (18) (dashed) and the non-adhesive one (17) (dotted).
+
+    Parameters
+    ----------
+    speed_ratios : numpy.ndarray
+        The path's speed over the law's ``v_ref``.
+    angles : numpy.ndarray
+        The critical angles (degrees).
+    adhesive : float
+        The paper's critical angle with adhesion, eq. (18) at ``d_max`` (degrees).
+    hertz : float
+        The critical angle without adhesion, eq. (17) at ``d_max`` (degrees).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
+    figure, axes = plt.subplots(figsize=(6.4, 4.6), constrained_layout=True)
+    axes.semilogx(speed_ratios, angles, marker="o", color="C0", lw=1.4,
+                  label="rate-dependent MDR (analysis.rate_angles)")
+    axes.axhline(adhesive, color="k", lw=0.9, ls="--", label="rate-independent, with adhesion (18)")
+    axes.axhline(hertz, color="0.4", lw=0.9, ls=":", label="without adhesion (17)")
+    axes.set_xlabel("path speed v / v_ref")
+    axes.set_ylabel("critical angle of scenario A (°)")
     axes.legend(fontsize=LEGEND_FONTSIZE)
     axes.grid(True, which="both", lw=0.3, alpha=0.5)
     return figure

@@ -17,8 +17,13 @@ SLOW_LIMIT_SHARE = 0.05
 
 
 @pytest.fixture(scope="module")
-def rows():
-    return section.rate_rows()
+def data():
+    return section.RateSection(section.rate_rows(), section.rate_angles())
+
+
+@pytest.fixture(scope="module")
+def rows(data):
+    return data.rows
 
 
 def test_the_pull_off_grows_with_the_speed_from_the_paper_s(rows):
@@ -29,10 +34,19 @@ def test_the_pull_off_grows_with_the_speed_from_the_paper_s(rows):
     assert all(row.end_depth_ratio >= 1.0 for row in rows)  # each came apart beyond the paper's jump-off
 
 
-def test_the_section_renders_its_table_and_writes_its_figure(rows, tmp_path):
-    text = "\n".join(section.rate_lines(rows))
-    assert text.count("\n| 1e-") == 7 and "Rate-dependent adhesion" in text
-    first = section.RATE_ADHESION.write(rows, tmp_path, True)
-    assert (tmp_path / f"{section.RATE_STEM}.png").stat().st_size > 0
-    again = section.RATE_ADHESION.write(rows, tmp_path, True)
-    assert first[0][0].status.value == "written" and again[0][0].status.value == "kept"
+def test_the_critical_angle_of_a_rises_with_the_speed_from_the_paper_s(data):
+    angles = data.angles["critical_angle"].values
+    adhesive, hertz = data.angles.attrs["critical_angle_adhesive"], data.angles.attrs["critical_angle_hertz"]
+    assert np.all(np.diff(angles) > 0) and adhesive < angles[0] and angles[-1] < hertz
+    assert (angles[0] - adhesive) / (hertz - adhesive) < SLOW_LIMIT_SHARE  # 1e-4 v_ref: near the paper's angle
+
+
+def test_the_section_renders_its_tables_and_writes_its_figures(data, tmp_path):
+    text = "\n".join(section.rate_lines(data))
+    assert text.count("\n| 1e-") == 14 and "Rate-dependent adhesion" in text and "critical angle of A" in text
+    first = section.RATE_ADHESION.write(data, tmp_path, True)
+    for stem in (section.RATE_STEM, section.RATE_ANGLE_STEM):
+        assert (tmp_path / f"{stem}.png").stat().st_size > 0
+    again = section.RATE_ADHESION.write(data, tmp_path, True)
+    assert {outcome.status.value for outcome in first[0]} == {"written"}
+    assert {outcome.status.value for outcome in again[0]} == {"kept"}
