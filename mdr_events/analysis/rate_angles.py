@@ -13,9 +13,11 @@ radius, and the angle rises from the adhesive value (18) (``v → 0``, or ``v_re
 non-adhesive one (17) (the edge's work → 0). The angle solves one equation in α (Brent's method), each evaluation a
 solve of the way in at the vertical speed ``v sin α``.
 
-Scenario B has no such angle at a finite ``v_ref``: the paper's contact jumps off at a finite radius before its
-springs slide (eq. (21) at the jump-off), while a rate-dependent edge comes apart in a finite time, its radius, and
-with it the cap ``K a``, falling to 0 while the indenter's shift does not; the last springs always slide.
+Scenario B's angle is not defined this way at a finite ``v_ref``: the paper's contact jumps off at a finite radius
+before its springs slide (eq. (21) at the jump-off), while a rate-dependent edge comes apart over a finite time in
+which its radius, and with it the cap ``K a``, falls to 0 while the indenter's shift does not: the exact springs slide
+in the last instants at every angle, the discrete ones (which let go within one time step) at none. An angle needs a
+criterion for when the contact has let go (left open).
 """
 
 from __future__ import annotations

@@ -123,9 +123,11 @@ def _angle_lines(angles: xr.Dataset) -> list[str]:
             "d_max where tan α K a(d_max) = d_max, with the radius the advancing edge reaches on the way in at the "
             f"vertical speed v sin α. It rises from the paper's adhesive angle (18), {adhesive:.4f}°, as v → 0 "
             f"towards the non-adhesive (17), {hertz:.4f}°: a faster edge works against less adhesion and reaches a "
-            f"smaller radius. Figure: `{RATE_ANGLE_STEM}.png`. Scenario B has no such angle with a rate law: the "
-            "paper's contact jumps off at a finite radius before its springs slide (21), a rate-dependent edge comes "
-            "apart in a finite time with its radius, and the cap K a, falling to 0: its last springs always slide.",
+            f"smaller radius. Figure: `{RATE_ANGLE_STEM}.png`. Scenario B's angle is left open: the paper's contact "
+            "jumps off at a finite radius before its springs slide (21), while a rate-dependent edge comes apart over "
+            "a finite time in which its radius, and with it the cap K a, falls to 0, so the exact springs slide in the "
+            "last instants of every angle and the discrete ones (which let go within one step) at none: an angle "
+            "needs a criterion for when the contact has let go.",
             ""] + table + [""]
 
 
