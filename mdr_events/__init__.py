@@ -51,7 +51,8 @@ _LAZY = {
     "convergence_study": "mdr_events.analysis.convergence_study",
     **dict.fromkeys(("FitResult", "fit"), "mdr_events.analysis.fit"),
     **dict.fromkeys(("RateMeasurement", "fit_rate_adhesion"), "mdr_events.analysis.rate_fit"),
-    **dict.fromkeys(("critical_angle_at_speed", "critical_angles_at_speeds"), "mdr_events.analysis.rate_angles"),
+    **dict.fromkeys(("critical_angle_at_speed", "critical_angles_at_speeds", "phase_diagram_at_speeds",
+                     "slip_onset_depth_at_speed"), "mdr_events.analysis.rate_angles"),
     **dict.fromkeys(("Engine", "SweepOutput", "sweep"), "mdr_events.analysis.sweep"),
     **dict.fromkeys(("load_study", "run_study"), "mdr_events.app.study"),
     "dem": "mdr_events.dem",
@@ -95,7 +96,8 @@ if TYPE_CHECKING:  # what static tools (type checkers, IDEs) read: the same name
     from mdr_events.analysis.convergence_study import convergence_study
     from mdr_events.analysis.crosscheck import cross_check
     from mdr_events.analysis.fit import FitResult, fit
-    from mdr_events.analysis.rate_angles import critical_angle_at_speed, critical_angles_at_speeds
+    from mdr_events.analysis.rate_angles import (critical_angle_at_speed, critical_angles_at_speeds,
+                                                 phase_diagram_at_speeds, slip_onset_depth_at_speed)
     from mdr_events.analysis.rate_fit import RateMeasurement, fit_rate_adhesion
     from mdr_events.analysis.reports import ConvergenceReport, ConvergenceVerdict, ValidationReport, Verdict
     from mdr_events.analysis.sweep import Engine, SweepOutput, sweep
@@ -166,6 +168,8 @@ __all__ = [
     "RateMeasurement",
     "critical_angle_at_speed",
     "critical_angles_at_speeds",
+    "phase_diagram_at_speeds",
+    "slip_onset_depth_at_speed",
     "convergence_study",
     "d_crit",
     "jkr_contact_radius",

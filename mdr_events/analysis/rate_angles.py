@@ -13,6 +13,11 @@ radius, and the angle rises from the adhesive value (18) (``v → 0``, or ``v_re
 non-adhesive one (17) (the edge's work → 0). The angle solves one equation in α (Brent's method), each evaluation a
 solve of the way in at the vertical speed ``v sin α``.
 
+The phase diagram of scenario A at a speed (Fig. 9a's curves) is the slip-onset depth at each angle: the first depth
+on the way in at which ``d = tan α K a(d; v sin α)``, found on the edge's dense output (sampled, then Brent's method
+between the samples that change sign); the path goes on at the angle beyond ``d_max``, to the depth where slip
+begins, as (17) and (18) do.
+
 Scenario B's angle is not defined this way at a finite ``v_ref``: the paper's contact jumps off at a finite radius
 before its springs slide (eq. (21) at the jump-off), while a rate-dependent edge comes apart over a finite time in
 which its radius, and with it the cap ``K a``, falls to 0 while the indenter's shift does not: the exact springs slide
@@ -37,7 +42,8 @@ from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law
 from mdr_events.validation import check_real, shown
 
-__all__ = ["critical_angle_at_speed", "critical_angles_at_speeds", "ANGLE_XTOL"]
+__all__ = ["critical_angle_at_speed", "critical_angles_at_speeds", "slip_onset_depth_at_speed",
+           "phase_diagram_at_speeds", "ANGLE_XTOL", "ONSET_SAMPLES"]
 
 #: Brent's tolerance on the angle (rad): the radius at ``d_max`` is known to about 1e-9 of itself (the edge's ODE at
 #: its ``rtol``), which moves the angle by about as much; 1e-12 rad lies below it.
@@ -45,6 +51,12 @@ ANGLE_XTOL = 1e-12
 #: The bracket of the angle (rad): a path at 1e-6 rad from the surface or the vertical (its ``v sin α`` or
 #: ``cot α`` at the ends of the double range of a path's clock).
 _BRACKET = (1e-6, 0.5 * math.pi - 1e-6)
+#: The samples of the way in on which the slip onset's sign change is looked for (then Brent's method between two):
+#: the margin ``tan α K a − d`` is concave on the way in (the radius grows ever slower with the depth), so it changes
+#: sign once.
+ONSET_SAMPLES = 513
+#: The way in reaches ``d_max`` first, and twice as deep each time no spring slid on it, at most this many times.
+_MAX_DOUBLINGS = 40
 
 
 def _radius_at_depth(params: Parameters, law: RateDependentAdhesion, speed: float, alpha: float,
@@ -141,4 +153,118 @@ def critical_angles_at_speeds(params: Parameters, law: RateDependentAdhesion, sp
         from mdr_events.theory.analytic import critical_angle  # (the paraboloid's closed forms)
         dataset.attrs.update(critical_angle_adhesive=critical_angle(params, "A", adhesion=True),
                              critical_angle_hertz=critical_angle(params, "A", adhesion=False))
+    return dataset
+
+
+def slip_onset_depth_at_speed(params: Parameters, law: RateDependentAdhesion, speed: float, alpha: float,
+                              profile: SimulatedProfile = None, rtol: float = EDGE_RTOL,
+                              method: str = "Radau") -> float:
+    r"""The depth (m) at which the springs begin to slide on the way in of scenario A at the angle ``alpha`` and the
+    path's ``speed``, under the rate-dependent ``law``: the first root of ``tan α K a(d; v sin α) = d``, the
+    rate-dependent (18).
+
+    Parameters
+    ----------
+    params : Parameters
+        The material, ``τ0`` and ``R`` (the paraboloid's); its works of adhesion are the law's at rest.
+    law : RateDependentAdhesion
+        The adhesion law.
+    speed : float
+        The path's speed ``v`` (m/s), finite and > 0.
+    alpha : float
+        The angle (degrees), in (0, 90).
+    profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
+        The indenter (``None``: the paraboloid of ``params.R``).
+    rtol : float, optional
+        The edge's ODE tolerance.
+    method : str, optional
+        The edge's ``solve_ivp`` method (:data:`~mdr_events.models.continuum.rate_edge.EDGE_METHODS`).
+
+    Returns
+    -------
+    float
+        The slip-onset depth (m); ``inf`` where ``τ0 = 0`` would make it 0 instead (then 0).
+
+    Raises
+    ------
+    ValueError
+        A ``speed`` or ``alpha`` out of range, or what :func:`~mdr_events.models.continuum.solve_edge` refuses.
+    """
+    law = check_rate_law(law)
+    speed = check_real("speed", speed, "a finite number > 0 (m/s)", lambda value: value > 0.0)
+    alpha = check_real("alpha", alpha, "a number of degrees in (0, 90)", lambda value: 0.0 < value < 90.0)
+    cap, tangent = power_law.cap_per_radius(params), math.tan(math.radians(alpha))
+    if cap == 0.0:
+        return 0.0
+    reach = params.d_max
+    for _ in range(_MAX_DOUBLINGS):
+        path = Path(np.array([(0.0, 0.0), (reach / tangent, reach)]), speed=speed)
+        run = solve_edge(params, path, law, profile=profile, rtol=rtol, method=method)
+
+        def margin(t):  # tan α K a − d (m): < 0 beyond the onset
+            return tangent * cap * run.radius(t) - path.position(t)[1]
+        times = np.linspace(run.pieces[0][0], path.duration, ONSET_SAMPLES)  # (from the jump-in's start)
+        below = np.flatnonzero(margin(times) <= 0.0)
+        if below.size:
+            first = int(below[0])
+            if first == 0:
+                return 0.0
+            when = optimize.brentq(lambda t: float(margin(np.array([t]))[0]), times[first - 1], times[first],
+                                   xtol=ANGLE_XTOL * path.duration)
+            return float(path.position(when)[1])
+        reach *= 2.0
+    raise ValueError(f"alpha={alpha!r}: no spring slid on the way in to {reach!r} m; allowed: an angle whose springs "
+                     "slide within 2^40 d_max")
+
+
+def phase_diagram_at_speeds(params: Parameters, law: RateDependentAdhesion, speeds: Sequence[float], alpha,
+                            profile: SimulatedProfile = None, method: str = "Radau") -> xr.Dataset:
+    """Scenario A's phase diagram (Fig. 9a) at each of ``speeds``: the slip-onset depth against the angle.
+
+    Parameters
+    ----------
+    params : Parameters
+        The material, ``τ0``, ``d_max`` and ``R``; its works of adhesion are the law's at rest.
+    law : RateDependentAdhesion
+        The adhesion law.
+    speeds : sequence of float
+        The paths' speeds (m/s).
+    alpha : array_like
+        The angles (degrees), each in (0, 90).
+    profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
+        The indenter (``None``: the paraboloid of ``params.R``).
+    method : str, optional
+        The edge's ``solve_ivp`` method (Radau, the reference; LSODA about seven times faster within 2e-9).
+
+    Returns
+    -------
+    xarray.Dataset
+        ``d_crit`` (m) against ``speed`` and ``alpha``; for the paraboloid also the rate-independent ``d_crit_jkr``
+        (18) and ``d_crit_hertz`` (17) against ``alpha`` (the limits ``v → 0`` and the edge's work → 0), and
+        ``d_max``.
+
+    Raises
+    ------
+    ValueError
+        A speed or angle out of range, or what :func:`slip_onset_depth_at_speed` refuses.
+    """
+    speeds = [check_real(f"speeds[{index}]", value, "a finite number > 0 (m/s)", lambda v: v > 0.0)
+              for index, value in enumerate(np.atleast_1d(np.asarray(speeds, dtype=object)).tolist())]
+    angles = [check_real(f"alpha[{index}]", value, "a number of degrees in (0, 90)", lambda a: 0.0 < a < 90.0)
+              for index, value in enumerate(np.atleast_1d(np.asarray(alpha, dtype=object)).tolist())]
+    depths = np.array([[slip_onset_depth_at_speed(params, law, speed, angle, profile, EDGE_RTOL, method)
+                        for angle in angles] for speed in speeds])
+    dataset = xr.Dataset(
+        {"d_crit": (("speed", "alpha"), depths, {"units": "m", "long_name": "slip-onset depth of scenario A"}),
+         "d_max": ((), params.d_max, {"units": "m", "long_name": "the deepest point of scenario A"})},
+        coords={"speed": ("speed", np.array(speeds), {"units": "m s-1", "long_name": "the path's speed"}),
+                "alpha": ("alpha", np.array(angles), {"units": "degree", "long_name": "path angle"})})
+    dataset.attrs.update(scenario="A", adhesion_law="rate_dependent", v_ref=law.v_ref, n=law.n,
+                         dgamma0=law.dgamma0, dgamma1=law.dgamma1, edge_method=method)
+    if profile is None:
+        from mdr_events.theory.phase import phase_diagram  # (the paraboloid's closed forms)
+        closed = phase_diagram(params, np.array(angles), scenario="A")
+        for name, text in (("d_crit_jkr", "slip-onset depth, rate-independent with adhesion (18)"),
+                           ("d_crit_hertz", "slip-onset depth without adhesion (17)")):
+            dataset[name] = ("alpha", closed[name].values, {"units": "m", "long_name": text})
     return dataset

@@ -6,7 +6,9 @@ paper's works at rest, ``v_ref = 1 µm/s`` (the paper's speed) and ``n = 0.6`` (
 in vertically to ``d_max`` and out at the same speed, over seven decades of speed
 (:func:`~mdr_events.models.continuum.solve_edge`: the normal problem, the radius an ODE). The way out goes to a
 multiple of the rate-independent jump-off depth, doubled until the contact comes apart on it. The critical angle of
-scenario A at the same speeds (:func:`~mdr_events.analysis.rate_angles.critical_angles_at_speeds`). No dataset is
+scenario A at the same speeds (:func:`~mdr_events.analysis.rate_angles.critical_angles_at_speeds`), its phase diagram
+(Fig. 9a) at three speeds (:func:`~mdr_events.analysis.rate_angles.phase_diagram_at_speeds`), and scenario A at 20° at
+the same three speeds with springs and shifts (the discrete method, Δx = 1 µm) beside the paper's law. No dataset is
 written: the tables and the figures hold what is measured.
 """
 
@@ -19,19 +21,24 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.analysis.rate_angles import critical_angles_at_speeds
+from mdr_events.analysis.rate_angles import critical_angles_at_speeds, phase_diagram_at_speeds
 from mdr_events.app.result_files import FileOutcome, write_figure
 from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.models.continuum.rate_edge import EdgeEventKind, solve_edge
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
-from mdr_events.plotting.rate_adhesion import plot_critical_angle_against_speed, plot_pull_off_against_speed
+from mdr_events.contact.model import Contact
+from mdr_events.models.motion import Scenario
+from mdr_events.models.simulate import simulate
+from mdr_events.plotting.rate_adhesion import (plot_critical_angle_against_speed, plot_phase_diagram_at_speeds,
+                                               plot_pull_off_against_speed, plot_scenario_at_speeds)
 from mdr_events.reproduction.markdown import markdown_table
 from mdr_events.reproduction.section import Section, Step
 from mdr_events.theory import analytic
 
-__all__ = ["RATE_ADHESION", "RATE_V_REF", "RATE_EXPONENT", "RATE_SPEEDS", "RATE_STEM", "RATE_ANGLE_STEM", "RateRow",
-           "RateSection", "rate_law", "rate_rows", "rate_angles", "rate_lines"]
+__all__ = ["RATE_ADHESION", "RATE_V_REF", "RATE_EXPONENT", "RATE_SPEEDS", "RATE_STEM", "RATE_ANGLE_STEM",
+           "RATE_PHASE_STEM", "RATE_SCENARIO_STEM", "THREE_SPEEDS", "PHASE_ANGLES", "RateRow", "RateSection", "rate_law",
+           "rate_rows", "rate_angles", "rate_phase_diagram", "rate_scenario_runs", "rate_lines"]
 
 #: The law's reference speed (m/s) and exponent.
 RATE_V_REF = 1e-6
@@ -41,6 +48,14 @@ RATE_SPEEDS = tuple(10.0**k for k in range(-10, -3))
 #: The figure's stem in ``results/``.
 RATE_STEM = "rate_adhesion_pull_off"
 RATE_ANGLE_STEM = "rate_adhesion_critical_angle"
+RATE_PHASE_STEM = "rate_adhesion_phase_diagram_A"
+RATE_SCENARIO_STEM = "rate_adhesion_A20"
+#: The three speeds (m/s) of the phase diagram and of scenario A at 20°: a decade either side of v_ref.
+THREE_SPEEDS = (1e-7, 1e-6, 1e-5)
+#: The phase diagram's angles (degrees), Fig. 9a's range.
+PHASE_ANGLES = tuple(float(angle) for angle in np.arange(2.0, 45.0, 2.0))
+#: The springs' spacing (m) of scenario A at 20° at three speeds.
+SCENARIO_DX = 1e-6
 #: The way out ends at this multiple of the rate-independent jump-off depth at first, doubled until the contact
 #: comes apart on it, at most :data:`MAX_DOUBLINGS` times.
 FIRST_EXIT_MULTIPLE = 2.0
@@ -60,6 +75,8 @@ class RateSection(NamedTuple):
 
     rows: list[RateRow]  #: each speed's pull-off
     angles: xr.Dataset  #: the critical angle of scenario A against the speed
+    phase: xr.Dataset  #: scenario A's phase diagram at three speeds
+    runs: dict[str, xr.Dataset]  #: scenario A at 20°: the paper's law, then the rate-dependent one at three speeds
 
 
 def rate_law(params: Parameters) -> RateDependentAdhesion:
@@ -93,9 +110,28 @@ def rate_angles() -> xr.Dataset:
     return critical_angles_at_speeds(params, rate_law(params), RATE_SPEEDS)
 
 
+def rate_phase_diagram() -> xr.Dataset:
+    """Scenario A's phase diagram at :data:`THREE_SPEEDS` (LSODA: within 1e-10 of Radau's depths, a seventh of the
+    time)."""
+    params = Parameters.paper()
+    return phase_diagram_at_speeds(params, rate_law(params), THREE_SPEEDS, PHASE_ANGLES, method="LSODA")
+
+
+def rate_scenario_runs() -> dict[str, xr.Dataset]:
+    """Scenario A at 20° with springs and shifts: the paper's law, then the rate-dependent one at each speed."""
+    paper = Contact.paper()
+    rate = Contact(paper.elastomer, paper.indenter, rate_law(Parameters.paper()), paper.friction)
+    runs = {"the paper's law (rate-independent)": simulate(paper, Scenario("A", alpha=[20.0]), "discrete",
+                                                           dx=SCENARIO_DX).isel(alpha=0)}
+    for speed in THREE_SPEEDS:
+        runs[f"v = {speed:g} m/s (v / v_ref = {speed / RATE_V_REF:g})"] = simulate(
+            rate, Scenario("A", alpha=[20.0], v=speed), "discrete", dx=SCENARIO_DX).isel(alpha=0)
+    return runs
+
+
 def rate_lines(data: RateSection) -> list[str]:
     """The section of ``results/README.md``."""
-    rows, angles = data
+    rows, angles = data.rows, data.angles
     table = markdown_table(["v (m/s)", "v / v_ref", "pull-off / (3/2)πΔγ1R", "separation at the end / jump-off depth"],
                            [[f"{row.speed:.0e}", f"{row.speed / RATE_V_REF:g}", f"{row.pull_off_ratio:.4g}",
                              f"{row.end_depth_ratio:.4g}"] for row in rows], ["right"] * 4)
@@ -108,7 +144,8 @@ def rate_lines(data: RateSection) -> list[str]:
             "problem). The least normal force over JKR's pull-off at Δγ1 tends to 1 as v → 0 (the paper's law) and "
             f"grows with the speed, by a factor {rows[-1].pull_off_ratio / rows[-2].pull_off_ratio:.3g} over the last "
             f"decade (slope {slope:.2f} on log–log, where the law itself has n = {RATE_EXPONENT:g}); the "
-            f"contact holds to deeper separations. Figure: `{RATE_STEM}.png`.", ""] + table + [""] + _angle_lines(angles)
+            f"contact holds to deeper separations. Figure: `{RATE_STEM}.png`.", ""] + table + [""] + _angle_lines(angles) \
+        + _phase_lines(data.phase) + _scenario_lines(data.runs)
 
 
 def _angle_lines(angles: xr.Dataset) -> list[str]:
@@ -131,8 +168,35 @@ def _angle_lines(angles: xr.Dataset) -> list[str]:
             ""] + table + [""]
 
 
+def _phase_lines(phase: xr.Dataset) -> list[str]:
+    """Scenario A's phase diagram at three speeds: what the figure shows, in numbers at 20°."""
+    at = phase.sel(alpha=20.0)
+    ratios = ", ".join(f"{float(at['d_crit'].sel(speed=speed)) / float(phase['d_max']):.4f} at {speed:g} m/s"
+                       for speed in phase["speed"].values)
+    return [f"Scenario A's phase diagram (Fig. 9a) at {', '.join(f'{s:g}' for s in THREE_SPEEDS)} m/s "
+            "(`me.phase_diagram_at_speeds`): the slip-onset depth lies between the paper's (18) and the "
+            "non-adhesive (17) at every angle and falls with the speed; at 20° d_crit/d_max is "
+            f"{float(at['d_crit_jkr']) / float(phase['d_max']):.4f} by (18), {ratios}, "
+            f"{float(at['d_crit_hertz']) / float(phase['d_max']):.4f} by (17). Figure: `{RATE_PHASE_STEM}.png`.", ""]
+
+
+def _scenario_lines(runs: dict[str, xr.Dataset]) -> list[str]:
+    """Scenario A at 20° at three speeds: the extremes of its forces."""
+    rows = [[label, f"{float(run['normal_force'].max()) * 1e3:.2f}",
+             f"{float(-run['normal_force'].min()) * 1e3:.2f}", f"{float(run['tangential_force'].max()) * 1e3:.2f}"]
+            for label, run in runs.items()]
+    table = markdown_table(["run", "F_N,max (mN)", "−F_N,min (mN)", "F_x,max (mN)"], rows,
+                           ["default", "right", "right", "right"])
+    return [f"Scenario A at 20° with springs and shifts (the discrete method, Δx = {SCENARIO_DX * 1e6:g} µm, τ0's "
+            "law) at the same three speeds beside the paper's law: the advancing edge's smaller work leaves a smaller "
+            "contact at d_max (F_N,max a little higher, as a contact with less adhesion, and τ0's cap K a, with it "
+            "F_x,max, lower), and the receding edge's larger one pulls harder on the way out: at v_ref and above the "
+            "contact has not come apart where the path ends (the paper's exit depth). Figure: "
+            f"`{RATE_SCENARIO_STEM}.png` (against the distance travelled, v t).", ""] + table + [""]
+
+
 def _write(data: RateSection, out: FilePath, keep_agreeing: bool) -> list[list[FileOutcome]]:
-    rows, angles = data
+    rows, angles = data.rows, data.angles
     speeds = np.array([row.speed for row in rows]) / RATE_V_REF
     figure = plot_pull_off_against_speed(speeds, np.array([row.pull_off_ratio for row in rows]), RATE_EXPONENT)
     angle_figure = plot_critical_angle_against_speed(angles["speed"].values / RATE_V_REF,
@@ -140,17 +204,23 @@ def _write(data: RateSection, out: FilePath, keep_agreeing: bool) -> list[list[F
                                                      angles.attrs["critical_angle_adhesive"],
                                                      angles.attrs["critical_angle_hertz"])
     return [[write_figure(figure, out / f"{RATE_STEM}.png", keep_agreeing),
-             write_figure(angle_figure, out / f"{RATE_ANGLE_STEM}.png", keep_agreeing)]]
+             write_figure(angle_figure, out / f"{RATE_ANGLE_STEM}.png", keep_agreeing),
+             write_figure(plot_phase_diagram_at_speeds(data.phase), out / f"{RATE_PHASE_STEM}.png", keep_agreeing),
+             write_figure(plot_scenario_at_speeds(data.runs), out / f"{RATE_SCENARIO_STEM}.png", keep_agreeing)]]
 
 
 RATE_ADHESION = Section(
     name="rate_adhesion",
     steps=(Step(f"rate-dependent adhesion: pull-off at {len(RATE_SPEEDS)} speeds", rate_rows),
-           Step(f"rate-dependent adhesion: the critical angle of A at {len(RATE_SPEEDS)} speeds", rate_angles)),
+           Step(f"rate-dependent adhesion: the critical angle of A at {len(RATE_SPEEDS)} speeds", rate_angles),
+           Step(f"rate-dependent adhesion: A's phase diagram at {len(THREE_SPEEDS)} speeds", rate_phase_diagram),
+           Step(f"rate-dependent adhesion: A at 20° at {len(THREE_SPEEDS)} speeds (discrete)", rate_scenario_runs)),
     collect=lambda results: RateSection(*results),
     render=rate_lines,
     write=_write,
-    writing="writing the rate-dependent pull-off and critical-angle figures",
+    writing="writing the rate-dependent figures (pull-off, critical angle, phase diagram, scenario A)",
     files=(f"- `{RATE_STEM}.png`: the pull-off force against the unloading speed under the rate-dependent law.",
-           f"- `{RATE_ANGLE_STEM}.png`: the critical angle of scenario A against the speed under the same law."),
+           f"- `{RATE_ANGLE_STEM}.png`: the critical angle of scenario A against the speed under the same law.",
+           f"- `{RATE_PHASE_STEM}.png`: scenario A's phase diagram (Fig. 9a) at three speeds under the same law.",
+           f"- `{RATE_SCENARIO_STEM}.png`: F_N and F_x of scenario A at 20° at three speeds and the paper's law."),
 )

@@ -11,7 +11,8 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events.analysis.rate_angles import critical_angle_at_speed, critical_angles_at_speeds
+from mdr_events.analysis.rate_angles import (critical_angle_at_speed, critical_angles_at_speeds,
+                                             phase_diagram_at_speeds, slip_onset_depth_at_speed)
 from mdr_events.theory.analytic import critical_angle
 
 PAPER = me.Parameters.paper()
@@ -23,6 +24,12 @@ ORDER_SPREAD = 0.05
 #: Either side of the angle the discrete springs at Δx = 1 µm are checked at (°): their first-order error moves the
 #: slip onset by less (a sliding share of 7 % at 0.01° below the angle at this Δx).
 DISCRETE_MARGIN = 0.01
+#: The discrete springs' slip onset depth against the continuum's: the output samples' spacing in depth (3.2e-4 of the
+#: onset depth at 15°) on either side, and the springs' first-order delay at Δx ≤ 1 µm (measured 1.5e-5 at 1 µm).
+DISCRETE_ONSET_RTOL = 1e-3
+#: Two routes to one number: the slip-onset depth at the critical angle is d_max, to the angle's and the onset's
+#: Brent tolerances and the edge's ODE (rtol 1e-10).
+ROUTES_RTOL = 1e-8
 
 
 def _law(v_ref, n=0.6):
@@ -62,6 +69,40 @@ def test_the_discrete_springs_slide_before_d_max_just_below_the_angle_and_not_ju
     assert slid[0] > 0.01 and slid[1] == 0.0
 
 
+def test_the_slip_onset_at_the_critical_angle_is_d_max():
+    law = _law(1e-6)
+    for speed in (1e-7, 1e-5):
+        angle = critical_angle_at_speed(PAPER, law, speed)
+        assert slip_onset_depth_at_speed(PAPER, law, speed, angle) == pytest.approx(PAPER.d_max, rel=ROUTES_RTOL)
+
+
+def test_the_phase_diagram_lies_between_the_paper_s_curves_and_falls_with_the_speed():
+    diagram = phase_diagram_at_speeds(PAPER, _law(1e-6), [1e-8, 1e-6, 1e-4], [10.0, 20.0, 30.0], method="LSODA")
+    depths = diagram["d_crit"].values
+    assert np.all(diagram["d_crit_hertz"].values < depths) and np.all(depths < diagram["d_crit_jkr"].values)
+    assert np.all(np.diff(depths, axis=0) < 0)  # faster: a smaller radius, an earlier slip
+    assert diagram["d_crit"].dims == ("speed", "alpha") and diagram["d_crit"].attrs["units"] == "m"
+
+
+def test_a_fast_reference_speed_gives_the_paper_s_slip_depth_at_first_order():
+    closed = phase_diagram_at_speeds(PAPER, _law(1.0, n=1.0), [PAPER.v], [20.0])["d_crit_jkr"].item()
+    # (at v_ref = 1 m/s the error, 3e-11 m, nears the closed form's and the ODE's floor, ~1e-11 m: two decades above)
+    errors = [closed - slip_onset_depth_at_speed(PAPER, _law(v_ref, n=1.0), PAPER.v, 20.0) for v_ref in (1e-3, 1e-1)]
+    assert all(error > 0 for error in errors)
+    assert math.log10(errors[0] / errors[1]) / 2.0 == pytest.approx(1.0, abs=ORDER_SPREAD)
+
+
+@pytest.mark.parametrize("dx", [1e-6, 0.5e-6])
+def test_the_discrete_springs_begin_to_slide_at_the_slip_onset_depth(dx):
+    law = _law(1e-6)
+    paper = me.Contact.paper()
+    run = me.simulate(me.Contact(paper.elastomer, paper.indenter, law, paper.friction),
+                      me.Scenario("A", alpha=[15.0]), "discrete", dx=dx).sel(alpha=15.0)
+    first = int(np.flatnonzero(run["sliding_fraction"].values > 0.0)[0])
+    exact = slip_onset_depth_at_speed(PAPER, law, PAPER.v, 15.0)
+    assert run["indentation_depth"].values[first] == pytest.approx(exact, rel=DISCRETE_ONSET_RTOL)
+
+
 def test_without_tau0_the_springs_slide_from_the_start():
     assert critical_angle_at_speed(PAPER.replace(tau0=0.0), _law(1e-6), PAPER.v) == 90.0
 
@@ -72,6 +113,9 @@ def test_without_tau0_the_springs_slide_from_the_start():
     (lambda: critical_angles_at_speeds(PAPER, _law(1e-6), [1e-6, -1.0]), r"speeds\[1\]=-1.0 is not allowed"),
     (lambda: critical_angle_at_speed(PAPER, me.Adhesion(0.01, 0.15), 1e-6), r"law="),
     (lambda: critical_angle_at_speed("paper", _law(1e-6), 1e-6), r"params='paper' .* allowed: a Parameters"),
+    (lambda: slip_onset_depth_at_speed(PAPER, _law(1e-6), 1e-6, 90.0), r"alpha=90.0 is not allowed; allowed: .*\(0, 90\)"),
+    (lambda: phase_diagram_at_speeds(PAPER, _law(1e-6), [1e-6], [20.0, -5.0]), r"alpha\[1\]=-5.0 is not allowed"),
+    (lambda: phase_diagram_at_speeds(PAPER, _law(1e-6), [1e-6], [20.0], method="RK45"), r"method='RK45'"),
 ])
 def test_bad_input_is_named(call, words):
     with pytest.raises((TypeError, ValueError), match=words):

@@ -18,7 +18,8 @@ SLOW_LIMIT_SHARE = 0.05
 
 @pytest.fixture(scope="module")
 def data():
-    return section.RateSection(section.rate_rows(), section.rate_angles())
+    return section.RateSection(section.rate_rows(), section.rate_angles(), section.rate_phase_diagram(),
+                               section.rate_scenario_runs())
 
 
 @pytest.fixture(scope="module")
@@ -41,11 +42,25 @@ def test_the_critical_angle_of_a_rises_with_the_speed_from_the_paper_s(data):
     assert (angles[0] - adhesive) / (hertz - adhesive) < SLOW_LIMIT_SHARE  # 1e-4 v_ref: near the paper's angle
 
 
+def test_the_phase_diagram_lies_between_the_paper_s_curves_and_falls_with_the_speed(data):
+    depths = data.phase["d_crit"].values
+    assert np.all(data.phase["d_crit_hertz"].values < depths) and np.all(depths < data.phase["d_crit_jkr"].values)
+    assert np.all(np.diff(depths, axis=0) < 0)
+
+
+def test_scenario_a_at_three_speeds_pulls_harder_and_holds_less_tangential_force_the_faster(data):
+    runs = list(data.runs.values())
+    pulls = [-float(run["normal_force"].min()) for run in runs]
+    holds = [float(run["tangential_force"].max()) for run in runs]
+    assert np.all(np.diff(pulls) > 0) and np.all(np.diff(holds) < 0)  # the paper's law first, then ever faster
+
+
 def test_the_section_renders_its_tables_and_writes_its_figures(data, tmp_path):
     text = "\n".join(section.rate_lines(data))
     assert text.count("\n| 1e-") == 14 and "Rate-dependent adhesion" in text and "critical angle of A" in text
+    assert text.count("\n| v = 1e-") == 3 and "(18)" in text
     first = section.RATE_ADHESION.write(data, tmp_path, True)
-    for stem in (section.RATE_STEM, section.RATE_ANGLE_STEM):
+    for stem in (section.RATE_STEM, section.RATE_ANGLE_STEM, section.RATE_PHASE_STEM, section.RATE_SCENARIO_STEM):
         assert (tmp_path / f"{stem}.png").stat().st_size > 0
     again = section.RATE_ADHESION.write(data, tmp_path, True)
     assert {outcome.status.value for outcome in first[0]} == {"written"}
