@@ -90,3 +90,82 @@ def test_a_value_not_among_the_choices_lists_them_in_the_packages_words(tmp_path
     done = _cli("simulate", "--scenario", "C", "--out", str(tmp_path / "o"))
     assert (done.returncode, done.stderr) == (
         2, "mdr-events: error: argument --scenario: invalid choice: 'C'; allowed: A, B, B+\n")
+
+
+# --- R1: fit_rate_adhesion took its arguments unchecked: params=None, start=None or an Adhesion (AttributeError), a
+# start's n below the fit's bound (scipy's "Initial guess is outside of provided bounds"), free='n' (read letter by
+# letter), offsets='yes', a masked, complex or bool curve, times outside the path's clock, forces of 1e300 (nan
+# intervals), a noise of True, 2e7 samples (ran without a resource check) --------------------------------------------
+from mdr_events.analysis.rate_fit import RateMeasurement, fit_rate_adhesion  # noqa: E402
+from mdr_events.models.continuum import solve_edge  # noqa: E402
+
+PAPER = me.Parameters.paper()
+LAW = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-6, 0.6)
+VERTICAL = me.Path(np.array([(0.0, 0.0), (0.0, PAPER.d_max), (0.0, -200e-6)]), speed=1e-6)
+TIMES = np.linspace(VERTICAL.first_contact_time(), VERTICAL.duration, 60)
+FORCE = solve_edge(PAPER, VERTICAL, LAW).normal_force(TIMES, VERTICAL)
+CURVE = RateMeasurement(VERTICAL, TIMES, FORCE)
+START = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 3e-6, 0.8)
+
+
+@pytest.mark.parametrize("arguments, keywords, named", [
+    (([CURVE], None, START), {}, "params=None"),
+    (([CURVE], PAPER, None), {}, "start=None"),
+    (([CURVE], PAPER, me.Adhesion(0.01, 0.15)), {}, "start=Adhesion"),
+    (([CURVE], PAPER, me.RateDependentAdhesion(0.01, 0.15, 1e-6, 1e-4)), {"free": ("n",)}, "start.n=0.0001"),
+    (([CURVE], PAPER, START), {"free": "n"}, "free='n'"),
+    (([CURVE], PAPER, START), {"free": None}, "free=None"),
+    (([CURVE], PAPER, START), {"offsets": "yes"}, "offsets='yes'"),
+    ((CURVE, PAPER, START), {}, "measurements="),
+    (((m for m in [CURVE]), PAPER, START), {}, "measurements="),
+    (([RateMeasurement(VERTICAL, ["a", "b"], [1.0, 2.0])], PAPER, START), {}, "measurements[0].times"),
+    (([RateMeasurement(VERTICAL, TIMES + 0j, FORCE)], PAPER, START), {}, "measurements[0].times"),
+    (([RateMeasurement(VERTICAL, TIMES, FORCE > 0)], PAPER, START), {}, "measurements[0].normal_force"),
+    (([RateMeasurement(VERTICAL, np.ma.array(TIMES, mask=TIMES > TIMES[30]), FORCE)], PAPER, START), {},
+     "measurements[0].times is a masked array"),
+    (([RateMeasurement(VERTICAL, TIMES - 1e6, FORCE)], PAPER, START), {}, "measurements[0].times=-"),
+    (([RateMeasurement(VERTICAL, TIMES + 1e9, FORCE)], PAPER, START), {}, "measurements[0].times="),
+    (([RateMeasurement(VERTICAL, TIMES, FORCE * 1e300)], PAPER, START), {}, "measurements[0].normal_force="),
+    (([RateMeasurement(VERTICAL, TIMES, FORCE, True)], PAPER, START), {}, "measurements[0].noise=True"),
+    (([RateMeasurement(VERTICAL, TIMES, FORCE, "0.1")], PAPER, START), {}, "measurements[0].noise='0.1'"),
+    (([RateMeasurement(VERTICAL, TIMES, FORCE, np.ones(3))], PAPER, START), {}, "measurements[0].noise="),
+    (([RateMeasurement("path", TIMES, FORCE)], PAPER, START), {}, "measurements[0].path='path'"),
+    (([CURVE], PAPER, START), {"limits": me.Limits(samples=59)}, "samples"),
+], ids=lambda value: str(value)[:30] if isinstance(value, str) else None)
+def test_fit_rate_adhesion_names_what_it_cannot_take(arguments, keywords, named):
+    with pytest.raises((TypeError, ValueError)) as refused:
+        fit_rate_adhesion(*arguments, **keywords)
+    message = str(refused.value)
+    assert "\n" not in message and named in message and "allowed" in message, message
+
+
+def test_fit_rate_adhesion_checks_the_samples_before_it_runs(monkeypatch):
+    import mdr_events.analysis.rate_fit as rate_fit
+
+    monkeypatch.setattr(rate_fit, "solve_edge", lambda *a, **k: pytest.fail("solved before the samples were checked"))
+    many = np.linspace(TIMES[0], TIMES[-1], 20_000_001)
+    with pytest.raises(me.ResourceLimitError, match="20000001 samples"):
+        fit_rate_adhesion([RateMeasurement(VERTICAL, many, np.zeros(many.size))], PAPER, START, free=("n",))
+
+
+# --- R2: EdgeRun's methods took anything: radius(nan) was 0, normal_force('abc') numpy's words, pull_off_force with
+# samples=1 returned 0.0 and with samples=10**12 ran out of memory (MemoryError, 7.3 TiB) ----------------------------
+@pytest.fixture(scope="module")
+def edge_run():
+    return solve_edge(PAPER, VERTICAL, LAW)
+
+
+@pytest.mark.parametrize("call, named", [
+    (lambda run: run.radius(np.array([np.nan])), "times=nan"),
+    (lambda run: run.radius([1.0, np.inf]), "times=inf"),
+    (lambda run: run.normal_force("abc", VERTICAL), "times='abc'"),
+    (lambda run: run.normal_force(TIMES, "path"), "path='path'"),
+    (lambda run: run.pull_off_force(VERTICAL, samples=1), "samples=1"),
+    (lambda run: run.pull_off_force(VERTICAL, samples=2.5), "samples=2.5"),
+    (lambda run: run.pull_off_force(VERTICAL, samples=10**12), "10^12 samples"),
+], ids=["radius-nan", "radius-inf", "force-str", "force-path", "pull-off-1", "pull-off-float", "pull-off-huge"])
+def test_an_edge_runs_methods_name_what_they_cannot_take(edge_run, call, named):
+    with pytest.raises((TypeError, ValueError)) as refused:
+        call(edge_run)
+    message = str(refused.value).replace("1000000000000", "10^12")
+    assert "\n" not in message and named in message and "allowed" in message, message
