@@ -169,3 +169,31 @@ def test_an_edge_runs_methods_name_what_they_cannot_take(edge_run, call, named):
         call(edge_run)
     message = str(refused.value).replace("1000000000000", "10^12")
     assert "\n" not in message and named in message and "allowed" in message, message
+
+
+# --- R3: the parts' readers of a result's attributes (Adhesion, RateDependentAdhesion, Elastomer, FrictionLaw,
+# Parameters .from_attrs, indenter_from_attrs) raised KeyError, AttributeError ('NoneType' object has no attribute
+# 'get'), OverflowError (10**400) or Python's words ("argument of type 'NoneType' is not iterable"); Contact.from_attrs
+# alone named them ----------------------------------------------------------------------------------------------------
+from mdr_events.contact.indenters import indenter_from_attrs  # noqa: E402
+
+READERS = {"Adhesion": me.Adhesion.from_attrs, "RateDependentAdhesion": me.RateDependentAdhesion.from_attrs,
+           "Elastomer": me.contact.Elastomer.from_attrs, "FrictionLaw": me.FrictionLaw.from_attrs,
+           "indenter": indenter_from_attrs, "Parameters": me.Parameters.from_attrs}
+GOOD_ATTRS = {**me.Contact.paper().to_attrs(), "adhesion_law": "rate_dependent", "adhesion_v_ref": 1e-6,
+              "adhesion_n": 0.6, "param_d_max": 3e-4, "param_v": 1e-6}
+
+
+@pytest.mark.parametrize("reader", READERS, ids=str)
+@pytest.mark.parametrize("attrs, kind", [
+    (None, TypeError), ([1], TypeError), ("param_E", TypeError), ({}, ValueError),
+    ({key: 10**400 if isinstance(value, float) else value for key, value in GOOD_ATTRS.items()}, ValueError),
+    ({key: None if isinstance(value, float) else value for key, value in GOOD_ATTRS.items()}, ValueError),
+], ids=["None", "list", "str", "empty", "overflow", "None-values"])
+def test_every_reader_of_attributes_names_what_it_cannot_read(reader, attrs, kind):
+    assert READERS[reader](GOOD_ATTRS) is not None
+    with pytest.raises(kind) as refused:
+        READERS[reader](attrs)
+    assert type(refused.value) is kind  # (not KeyError, a subclass of neither, nor a bare OverflowError)
+    message = str(refused.value)
+    assert "\n" not in message and "attr" in message and "allowed: " in message, message
