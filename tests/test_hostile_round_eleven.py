@@ -197,3 +197,13 @@ def test_every_reader_of_attributes_names_what_it_cannot_read(reader, attrs, kin
     assert type(refused.value) is kind  # (not KeyError, a subclass of neither, nor a bare OverflowError)
     message = str(refused.value)
     assert "\n" not in message and "attr" in message and "allowed: " in message, message
+
+
+# --- R4: phase_diagram's refusal of an empty or 2-D alpha said "alpha must be ..., got shape (0,)": not what is allowed
+@pytest.mark.parametrize("alpha", [[], np.full((2, 2), 20.0)], ids=["empty", "2-D"])
+def test_phase_diagram_names_the_angles_it_takes(alpha):
+    with pytest.raises(ValueError) as refused:
+        me.phase_diagram(me.Contact.paper(), alpha=alpha)
+    message = str(refused.value)
+    assert "\n" not in message and "alpha of shape" in message
+    assert "allowed: a non-empty 1-D array of angles in degrees" in message
