@@ -207,3 +207,22 @@ def test_phase_diagram_names_the_angles_it_takes(alpha):
     message = str(refused.value)
     assert "\n" not in message and "alpha of shape" in message
     assert "allowed: a non-empty 1-D array of angles in degrees" in message
+
+
+# --- R5: fit with six free values stepped far out: exp() of the log-scaled trial overflowed before the model was asked
+# (exit 3, "internal error (OverflowError: math range error)"); a trial out of range is refused, named with its values
+def test_a_fit_that_steps_out_of_the_double_range_is_refused_in_one_line(tmp_path):
+    contact = me.Contact.paper().replace(tau0=30e3)
+    run = me.simulate(contact, me.Scenario("A", 20), "continuum").isel(alpha=0)
+    table = run[["normal_force", "tangential_force"]].to_dataframe().reset_index()
+    table[["time", "normal_force", "tangential_force"]].to_csv(tmp_path / "measured.csv", index=False)
+    done = _cli("fit", str(tmp_path / "measured.csv"), "--scenario", "A", "--alpha", "20", "--out", str(tmp_path / "o"),
+                "--free", "E", "nu", "R", "tau0", "dgamma0", "dgamma1")
+    assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
+    assert "the fit tried E=inf" in done.stderr and "allowed: " in done.stderr and "np.float64" not in done.stderr
+
+
+def test_an_overflowing_trial_is_inf_not_an_overflow_error():
+    from mdr_events.analysis.fit_parameters import _exp
+
+    assert _exp(1e6) == float("inf") and _exp(0.0) == 1.0
