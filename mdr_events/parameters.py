@@ -13,7 +13,7 @@ import numbers
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from mdr_events.validation import PLAIN_NUMBER, as_float, check_choice, number_of, shown
+from mdr_events.validation import PLAIN_NUMBER, as_float, check_choice, number_of, reads_attrs, shown
 
 __all__ = ["Parameters", "PARAMETER_UNITS", "PARAMETER_LONG_NAMES", "PRESETS", "PAPER_D_MAX", "PAPER_V", "from_preset",
            "check_parameters"]
@@ -284,6 +284,7 @@ class Parameters:
         return attrs
 
     @classmethod
+    @reads_attrs("parameters")
     def from_attrs(cls, attrs: Mapping[str, Any]) -> "Parameters":
         """Rebuild the parameters from :meth:`to_attrs` output (e.g. a file).
 

@@ -6,14 +6,16 @@ user sees the same kind of sentence whichever function rejects the value.
 
 from __future__ import annotations
 
+import functools
 import math
 import sys
 import numbers
-from typing import Any, Collection
+from collections.abc import Mapping
+from typing import Any, Callable, Collection
 
 import numpy as np
 
-__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "validate_alpha", "check_callback"]
+__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "validate_alpha", "check_callback", "reads_attrs"]
 
 #: Characters of a value's ``repr`` shown in a message (a long list or a file's content is cut).
 SHOWN_CHARACTERS = 80
@@ -242,3 +244,41 @@ def check_callback(name: str, value: Any, called_with: str) -> Any:
         raise TypeError(f"{name}={shown(value)} ({type(value).__name__}) is not allowed; allowed: None or a function "
                         f"called with {called_with}")
     return value
+
+
+def reads_attrs(what: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """Decorate a reader of a result's attributes (a ``from_attrs``, its last argument ``attrs``), so that what it
+    cannot read is named the package's way: ``attrs`` that are not a mapping (or a Dataset) a ``TypeError``; a missing
+    attribute, a value that is no number (or overflows a float) or values that describe no valid ``what`` a
+    ``ValueError`` naming them, not ``KeyError``, ``AttributeError`` or ``OverflowError``.
+
+    Parameters
+    ----------
+    what : str
+        What the attributes describe, for the messages (e.g. ``"an elastomer"``).
+
+    Returns
+    -------
+    callable
+        The decorator.
+    """
+
+    def decorate(reader: Callable[..., Any]) -> Callable[..., Any]:
+        @functools.wraps(reader)
+        def read(*args: Any) -> Any:
+            attrs = args[-1]
+            if not isinstance(attrs, Mapping) or hasattr(attrs, "data_vars"):  # (a Dataset maps its variables)
+                raise TypeError(f"attrs of type {type(attrs).__name__} are not allowed; allowed: a mapping of a "
+                                "result's attributes (dataset.attrs)")
+            try:
+                return reader(*args)
+            except KeyError as error:
+                raise ValueError(f"attrs lack the attribute {error.args[0]!r}; allowed: a result's attributes "
+                                 f"describing {what}") from None
+            except (TypeError, ValueError, OverflowError, AttributeError) as error:
+                if isinstance(error, ValueError) and "allowed" in str(error):
+                    raise  # (the package's own message, naming the value: Parameters.E=inf is not allowed; ...)
+                raise ValueError(f"attrs do not describe {what}: {error}; allowed: a result's attributes describing "
+                                 f"{what}") from None
+        return read
+    return decorate

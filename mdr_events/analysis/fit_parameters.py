@@ -88,7 +88,7 @@ class FreeParameters:
 
     def to_natural(self, theta: np.ndarray) -> np.ndarray:
         """The natural values of ``θ`` (the inverse of :meth:`to_scaled`)."""
-        return np.array([math.exp(t) if n in LOG_SCALED else t * self.scale(n) for n, t in zip(self.names, theta)])
+        return np.array([_exp(t) if n in LOG_SCALED else t * self.scale(n) for n, t in zip(self.names, theta)])
 
     def scaled_bounds(self) -> tuple[np.ndarray, np.ndarray]:
         """The lower and upper bounds of ``θ``."""
@@ -100,7 +100,7 @@ class FreeParameters:
 
     def model(self, theta: np.ndarray) -> tuple[Parameters, float, float]:
         """The parameters, time offset and depth offset at ``θ``."""
-        values = dict(zip(self.names, self.to_natural(theta)))
+        values = dict(zip(self.names, map(float, self.to_natural(theta))))
         offsets = [values.pop(name, 0.0) for name in OFFSETS]
         values.pop(FRICTION_NAME, None)
         return self.start.replace(**values) if values else self.start, offsets[0], offsets[1]
@@ -214,3 +214,11 @@ def free_parameters(free: str | Sequence[str], start: Parameters, bounds: Mappin
         lower.append(low)
         upper.append(high)
     return FreeParameters(names, start, np.array(lower), np.array(upper), duration, depth_scale, friction)
+
+
+def _exp(value: float) -> float:
+    """``exp(value)``, ``inf`` where it overflows (an optimizer's step far out: the trial is then refused, named)."""
+    try:
+        return math.exp(value)
+    except OverflowError:
+        return math.inf

@@ -65,10 +65,10 @@ class Problem:
 
     def curves(self, theta: np.ndarray) -> ModelCurves:
         """The model's curves at ``θ`` (one continuum solve); a trial the model refuses is named in the error."""
-        params, time_offset, depth_offset = self.free.model(theta)
-        friction = self.free.friction_at(theta)
         self.solves += 1
-        try:
+        try:  # (a trial far out is refused in Parameters, or by the model: named below with its values)
+            params, time_offset, depth_offset = self.free.model(theta)
+            friction = self.free.friction_at(theta)
             path = shifted_path(self.path_of(params), depth_offset)
             return model_curves(params, path, self.measurement.path_time - time_offset, self.tolerances,
                                 self.limits, self.quantities, self.profile, friction)

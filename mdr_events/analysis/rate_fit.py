@@ -19,12 +19,13 @@ import numpy as np
 import xarray as xr
 from scipy import optimize, stats
 
-from mdr_events.contact.adhesion import RateDependentAdhesion
+from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models.continuum.rate_edge import solve_edge
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
-from mdr_events.parameters import Parameters
-from mdr_events.validation import shown
+from mdr_events.parameters import Parameters, check_parameters
+from mdr_events.validation import SCALE_MAX, check_flag, check_real, real_array, shown
 
 __all__ = ["RateMeasurement", "fit_rate_adhesion", "RATE_FREE_NAMES", "RATE_FIT_RTOL", "RATE_FIT_METHOD"]
 
@@ -46,6 +47,9 @@ N_BOUNDS = (1e-3, 1.0)
 FD_STEP = 1e-6
 #: The confidence of the intervals.
 CONFIDENCE = 0.95
+#: The bytes one measured sample takes in a fit (its time and force, the model's radius, depth and force, the
+#: residual and a row of the Jacobian per free value; counted against ``Limits.memory``).
+BYTES_PER_SAMPLE = 128
 
 
 class RateMeasurement(NamedTuple):
@@ -69,23 +73,55 @@ class RateMeasurement(NamedTuple):
     noise: float | None = None
 
 
-def _check(measurements: Sequence[RateMeasurement], free: Sequence[str]) -> None:
-    if not measurements or not all(isinstance(m, RateMeasurement) for m in measurements):
-        raise TypeError(f"measurements={shown(measurements)} is not allowed; allowed: a non-empty sequence of "
-                        "RateMeasurement(path, times, normal_force[, noise])")
+def _check(measurements, params, start, free, offsets, limits) -> None:
+    """Refuse what the fit cannot take, before anything is solved: each argument's type and range, each curve's
+    samples (real, finite, 1-D, within the path's clock and the double range), their count against ``limits``."""
+    check_parameters(params)
+    check_rate_law(start, "start")
+    check_flag("offsets", offsets)
+    limits = check_limits(limits)
+    if isinstance(free, str) or not isinstance(free, Sequence) or not all(isinstance(name, str) for name in free):
+        raise TypeError(f"free={shown(free)} ({type(free).__name__}) is not allowed; allowed: a list or tuple of names "
+                        f"among {', '.join(RATE_FREE_NAMES)}")
     unknown = [name for name in free if name not in RATE_FREE_NAMES]
     if unknown or not free or len(set(free)) != len(free):
         raise ValueError(f"free={shown(free)} is not allowed; allowed: distinct names among "
                          f"{', '.join(RATE_FREE_NAMES)}")
+    if "n" in free and start.n < N_BOUNDS[0]:
+        raise ValueError(f"start.n={start.n!r} is not allowed with n free; allowed: {N_BOUNDS[0]:g} <= n <= "
+                         f"{N_BOUNDS[1]:g} (the fit's bounds on n)")
+    if isinstance(measurements, (str, bytes)) or not isinstance(measurements, Sequence) or not measurements or not all(
+            isinstance(m, RateMeasurement) for m in measurements):
+        raise TypeError(f"measurements={shown(measurements)} is not allowed; allowed: a non-empty list or tuple of "
+                        "RateMeasurement(path, times, normal_force[, noise])")
     for index, m in enumerate(measurements):
-        times, force = np.asarray(m.times, dtype=float), np.asarray(m.normal_force, dtype=float)
-        if times.ndim != 1 or times.shape != force.shape or times.size < 2 or not (
-                np.all(np.isfinite(times)) and np.all(np.isfinite(force))):
-            raise ValueError(f"measurements[{index}] is not allowed: times and normal_force must be finite 1-D arrays "
-                             f"of one length >= 2 (got {times.shape} and {force.shape})")
-        if m.noise is not None and not (math.isfinite(m.noise) and m.noise > 0):
-            raise ValueError(f"measurements[{index}].noise={m.noise!r} is not allowed; allowed: None or a finite "
-                             "number > 0 (N)")
+        _check_curve(f"measurements[{index}]", m)
+    total = sum(np.size(m.times) for m in measurements)
+    limits.check(f"the fit's {len(measurements)} curve(s) of {total} samples", samples=total,
+                 memory=BYTES_PER_SAMPLE * total)
+
+
+def _check_curve(name: str, m: RateMeasurement) -> None:
+    """One curve's path, samples and noise (:func:`_check`)."""
+    if not isinstance(m.path, Path):
+        raise TypeError(f"{name}.path={shown(m.path)} ({type(m.path).__name__}) is not allowed; allowed: a Path")
+    allowed = "a 1-D array of finite real numbers"
+    times = real_array(f"{name}.times", m.times, allowed + " (s on the path's clock)")
+    force = real_array(f"{name}.normal_force", m.normal_force, allowed + " (N)")
+    if times.ndim != 1 or times.shape != force.shape or times.size < 2 or not (
+            np.all(np.isfinite(times)) and np.all(np.isfinite(force))):
+        raise ValueError(f"{name} is not allowed: times and normal_force must be finite 1-D arrays of one length >= 2 "
+                         f"(got {times.shape} and {force.shape})")
+    outside = (times < 0.0) | (times > m.path.duration)
+    if np.any(outside):
+        raise ValueError(f"{name}.times={float(times[outside][0])!r} s is not allowed; allowed: times on the path's "
+                         f"clock, in [0, {m.path.duration!r}] s")
+    if np.max(np.abs(force)) > SCALE_MAX:
+        raise ValueError(f"{name}.normal_force={float(force[np.argmax(np.abs(force))])!r} N is not allowed; allowed: "
+                         f"magnitudes at most {SCALE_MAX:.2g} N (the double range's square root)")
+    if m.noise is not None:
+        check_real(f"{name}.noise", m.noise, f"None or a finite number > 0 and at most {SCALE_MAX:.2g} (N)",
+                   lambda value: 0.0 < value <= SCALE_MAX)
 
 
 def _law(values: dict[str, float]) -> RateDependentAdhesion:
@@ -94,7 +130,7 @@ def _law(values: dict[str, float]) -> RateDependentAdhesion:
 
 def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameters, start: RateDependentAdhesion,
                       free: Sequence[str] = ("v_ref", "n"), offsets: bool = False,
-                      profile: SimulatedProfile = None) -> xr.Dataset:
+                      profile: SimulatedProfile = None, *, limits: Limits = DEFAULT_LIMITS) -> xr.Dataset:
     """Fit the rate-dependent law jointly to normal-force curves measured at several speeds (module docstring).
 
     Parameters
@@ -111,6 +147,8 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
         Give each curve a free force offset (N), added to the model's.
     profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
         The indenter (``None``: the paraboloid of ``params.R``).
+    limits : Limits, optional
+        The resource limits the curves' samples (summed) are checked against before the fit runs.
 
     Returns
     -------
@@ -122,11 +160,12 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
     Raises
     ------
     TypeError
-        Measurements of another kind.
+        Measurements, parameters, a start, free names or offsets of another kind.
     ValueError
-        A free name not allowed, a curve that is not finite 1-D, a noise that is not positive.
+        A free name not allowed, a curve that is not finite 1-D, outside its path's clock or beyond the double
+        range, a noise that is not positive, a start's ``n`` below the fit's bound, samples beyond ``limits``.
     """
-    _check(measurements, free)
+    _check(measurements, params, start, free, offsets, limits)
     base = {"v_ref": start.v_ref, "n": start.n, "dgamma0": start.dgamma0, "dgamma1": start.dgamma1}
     count = len(measurements)
     names = list(free) + ([f"offset_{index}" for index in range(count)] if offsets else [])

@@ -16,7 +16,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Callable, ClassVar, Mapping
 
-from mdr_events.validation import check_real, shown
+from mdr_events.validation import check_real, reads_attrs, shown
 
 __all__ = ["Adhesion", "RateDependentAdhesion", "NO_ADHESION", "AdhesionLaw", "law_of", "kernel_of",
            "adhesion_from_attrs", "adhesion_attrs"]
@@ -69,6 +69,7 @@ class Adhesion:
                 "param_dgamma1": self.dgamma1, "param_dgamma1_units": "J m-2"}
 
     @classmethod
+    @reads_attrs("an adhesion law")
     def from_attrs(cls, attrs: Mapping[str, Any]) -> "Adhesion":
         """The adhesion a result was computed with (:meth:`to_attrs`).
 
@@ -88,10 +89,10 @@ class Adhesion:
 def _number_attr(attrs: Mapping[str, Any], key: str) -> float:
     """``attrs[key]`` as a float; else the error naming the key, its value and what is allowed."""
     if key not in attrs:
-        raise KeyError(f"attrs[{key!r}] is missing; allowed: a result's attributes holding {key!r} (a number)")
+        raise KeyError(key)
     try:
         return float(attrs[key])
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         raise ValueError(f"attrs[{key!r}]={shown(attrs[key])} is not allowed; allowed: a number") from None
 
 
@@ -171,6 +172,7 @@ class RateDependentAdhesion:
                 "adhesion_v_ref": self.v_ref, "adhesion_v_ref_units": "m s-1", "adhesion_n": self.n}
 
     @classmethod
+    @reads_attrs("a rate-dependent adhesion law")
     def from_attrs(cls, attrs: Mapping[str, Any]) -> "RateDependentAdhesion":
         """The law a result was computed with (:meth:`to_attrs`).
 

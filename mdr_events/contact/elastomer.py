@@ -6,7 +6,7 @@ from dataclasses import dataclass
 from typing import Any, Mapping
 
 from mdr_events.parameters import effective_normal_modulus, effective_tangential_modulus, shear_modulus
-from mdr_events.validation import check_real
+from mdr_events.validation import check_real, reads_attrs
 
 __all__ = ["Elastomer"]
 
@@ -70,6 +70,7 @@ class Elastomer:
                 "param_E_star": self.E_star, "param_G_star": self.G_star}
 
     @classmethod
+    @reads_attrs("an elastomer")
     def from_attrs(cls, attrs: Mapping[str, Any]) -> "Elastomer":
         """The elastomer a result was computed for (:meth:`to_attrs`).
 

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from mdr_events.validation import check_choice, check_real, shown
+from mdr_events.validation import check_choice, check_real, reads_attrs, shown
 
 __all__ = ["FrictionLaw", "FRICTION_LAWS", "TAU0", "friction_attrs", "as_friction_law"]
 
@@ -132,6 +132,7 @@ class FrictionLaw:
         return attrs
 
     @classmethod
+    @reads_attrs("a friction law")
     def from_attrs(cls, attrs) -> "FrictionLaw":
         """The law a result was computed with (:meth:`to_attrs`; ``friction_law`` absent: the paper's).
 

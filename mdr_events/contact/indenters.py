@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mdr_events.validation import PLAIN_NUMBER, SCALE_MAX, SCALE_MIN, check_real, plain_number, real_array, shown
+from mdr_events.validation import PLAIN_NUMBER, SCALE_MAX, SCALE_MIN, check_real, plain_number, reads_attrs, real_array, shown
 
 __all__ = ["Paraboloid", "PowerLaw", "FlatPunch", "TabulatedProfile", "Profile", "Indenter", "profile_attrs",
            "indenter_from_attrs"]
@@ -339,6 +339,7 @@ def profile_attrs(profile: Profile | None) -> dict[str, object]:
                                                    "paraboloid's radius) is not used"}
 
 
+@reads_attrs("an indenter")
 def indenter_from_attrs(attrs) -> Indenter:
     """The indenter a result names (its ``to_attrs``): a power law, flat punch or table where ``profile_*`` says so,
     else the paraboloid of ``param_R``; the attributes of an indenter in part, or of two, are refused (a stray

@@ -119,7 +119,8 @@ def phase_diagram(
                         f"degrees, and the scenario by name: phase_diagram(contact, scenario={alpha!r})")
     angles = validate_alpha(default_angles() if alpha is None else alpha)
     if angles.ndim != 1 or angles.size == 0:
-        raise ValueError(f"alpha must be a non-empty 1-D array of angles, got shape {angles.shape}")
+        raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: a non-empty 1-D array of angles in "
+                         "degrees (None: the default grid)")
     limits = check_limits(limits)
     limits.check(f"the phase diagram of {angles.size} angles", samples=angles.size,
                  memory=BYTES_PER_ANGLE * angles.size)

@@ -72,6 +72,17 @@ NEGATIVE_NUMBER = re.compile(r"^-(?:(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|inf|inf
 
 #: argparse's error for an option whose value is missing (or was a word that begins with "-").
 MISSING_VALUE = re.compile(r"^argument (\S+): expected (?:one argument|at least one argument|\d+ arguments?)$")
+#: argparse's error for a value (or a verb: the argument ``command``) that is not among the choices.
+INVALID_CHOICE = re.compile(r"^argument (\S+): invalid choice: (.*) \(choose from (.*)\)$")
+
+
+def _choice_message(argument: str, value: str, choices: str) -> str:
+    """The one line of a value that is not among an argument's choices, in the package's words: the verb, or the
+    option, with the value and the allowed ones (argparse's own: "argument command: invalid choice: ...")."""
+    allowed = ", ".join(choice.strip().strip("'") for choice in choices.split(","))
+    if argument == "command":
+        return f"the verb {value} is not allowed; allowed: {allowed} (mdr-events --help says what each does)"
+    return f"argument {argument}: invalid choice: {value}; allowed: {allowed}"
 
 
 class Parser(argparse.ArgumentParser):
@@ -112,6 +123,9 @@ class Parser(argparse.ArgumentParser):
         return super(Parser, self.filled()).format_usage()
 
     def error(self, message: str) -> None:  # one line, no usage block
+        invalid = INVALID_CHOICE.match(message)
+        if invalid:
+            raise UsageError(_choice_message(*invalid.groups()))
         missing = MISSING_VALUE.match(message)
         if missing:  # (argparse reads a word that begins with "-" as an option, never as the value)
             option = missing.group(1).split("/")[0]

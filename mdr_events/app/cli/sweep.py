@@ -36,11 +36,16 @@ def fill(sweeping: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the study's sweep job with the options' scheduler and workers; print the files written."""
+    from mdr_events.analysis.executors import check_scheduler, check_workers
     from mdr_events.app.cli import progress
     from mdr_events.app.study import load_study, run_sweep, sweep_store
 
+    # the options are checked before the files are read: an argument's error before the study's or the store's
     if args.workers is not None and args.workers < 1:
         raise UsageError(f"--workers {args.workers} is not allowed; allowed: an integer >= 1")
+    if args.workers is not None:
+        check_workers(args.workers)
+    check_scheduler(args.scheduler, args.workers)
     study = load_study(args.study)
     store = sweep_store(study)
     if store.exists() and not (args.resume or args.restart):

@@ -33,7 +33,8 @@ from mdr_events.models.indenters import SimulatedProfile, check_simulated_profil
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 from mdr_events.theory.rate_adhesion import edge_speed_scalar
-from mdr_events.validation import check_real, shown
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
+from mdr_events.validation import check_count, check_real, real_array, shown
 
 from .branch import make_branch
 from .model import ContinuumModel, Segment, kinematics
@@ -58,6 +59,10 @@ EPS = float(np.finfo(float).eps)
 #: minimisation resolves the time to (the force's error, flat at its minimum, is of the square of that).
 PULL_OFF_SAMPLES = 20001
 PULL_OFF_XTOL = 1e-6
+#: The fewest samples that bracket the pull-off force (one each side of the least), and the bytes one takes (its time,
+#: radius, depth and force, with NumPy's temporaries: counted against ``Limits.memory``).
+PULL_OFF_MIN_SAMPLES = 3
+PULL_OFF_BYTES_PER_SAMPLE = 128
 #: A segment holds at most this many pieces (rest, motion, ...): more means no progress.
 MAX_PIECES_PER_SEGMENT = 1000
 #: The relative tolerance of the radius ODE.
@@ -148,7 +153,7 @@ class EdgeRun:
         numpy.ndarray
             The radius, the shape of ``times``.
         """
-        times = np.asarray(times, dtype=float)
+        times = _checked_times(times)
         out = np.zeros(times.shape)
         for t_start, t_end, _, solution in self.pieces:
             inside = (times >= t_start) & (times <= t_end)
@@ -171,12 +176,16 @@ class EdgeRun:
         numpy.ndarray
             The normal force, 0 out of contact.
         """
+        if not isinstance(path, Path):
+            raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: the Path the run "
+                            "followed")
+        times = _checked_times(times)
         a = self.radius(times)
-        depth = path.position(np.asarray(times, dtype=float))[1]
+        depth = path.position(times)[1]
         return np.where(a > 0, np.asarray(self.model.normal_force(depth, np.where(a > 0, a, 1.0)), dtype=float), 0.0)
 
 
-    def pull_off_force(self, path: Path, samples: int = PULL_OFF_SAMPLES) -> float:
+    def pull_off_force(self, path: Path, samples: int = PULL_OFF_SAMPLES, limits: Limits = DEFAULT_LIMITS) -> float:
         """The least ``F_N`` (N) of the run along ``path``: the least of ``samples`` samples over the path, refined by
         a bounded minimisation between the samples beside it (the minimum is flat: a sample is off by ``F'' δt²``).
 
@@ -185,19 +194,38 @@ class EdgeRun:
         path : Path
             The path the run followed.
         samples : int, optional
-            The samples the minimum is bracketed with.
+            The samples the minimum is bracketed with (at least :data:`PULL_OFF_MIN_SAMPLES`).
+        limits : Limits, optional
+            The resource limits ``samples`` is checked against before the times are allocated.
 
         Returns
         -------
         float
             The pull-off force (negative: tensile).
+
+        Raises
+        ------
+        TypeError, ValueError
+            A ``samples`` that is not an integer of at least :data:`PULL_OFF_MIN_SAMPLES`, or beyond ``limits``.
         """
+        samples = check_count("samples", samples, PULL_OFF_MIN_SAMPLES)
+        check_limits(limits).check(f"the pull-off force's {samples} samples", samples=samples,
+                                   memory=PULL_OFF_BYTES_PER_SAMPLE * samples)
         times = np.linspace(path.first_contact_time(), path.duration, samples)
         at = int(np.argmin(self.normal_force(times, path)))
         bracket = (times[max(at - 1, 0)], times[min(at + 1, samples - 1)])
         found = minimize_scalar(lambda t: float(self.normal_force(np.array([t]), path)[0]), method="bounded",
                                 bounds=bracket, options={"xatol": PULL_OFF_XTOL * (bracket[1] - bracket[0])})
         return float(min(found.fun, np.min(self.normal_force(np.array(bracket), path))))
+
+
+def _checked_times(times) -> np.ndarray:
+    """``times`` as a float array of finite times (s on the path's clock); else the error naming them."""
+    times = real_array("times", times, "finite times in s on the path's clock (real numbers)")
+    if not np.all(np.isfinite(times)):
+        raise ValueError(f"times={float(times[~np.isfinite(times)].flat[0])!r} is not allowed; allowed: finite times in "
+                         "s on the path's clock")
+    return times
 
 
 class EdgeMode(enum.Enum):
