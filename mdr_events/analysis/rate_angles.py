@@ -59,6 +59,18 @@ ONSET_SAMPLES = 513
 _MAX_DOUBLINGS = 40
 
 
+def _checked(name: str, values, allowed: str, accept) -> list[float]:
+    """Each of ``values`` (a number or a sequence) checked as ``name[index]``: the numbers, or the one-line error."""
+    return [check_real(f"{name}[{index}]", value, allowed, accept)
+            for index, value in enumerate(np.atleast_1d(np.asarray(values, dtype=object)).tolist())]
+
+
+def _law_attrs(law: RateDependentAdhesion) -> dict[str, object]:
+    """A result's attributes: the scenario and the law's values."""
+    return dict(scenario="A", adhesion_law="rate_dependent", v_ref=law.v_ref, n=law.n, dgamma0=law.dgamma0,
+                dgamma1=law.dgamma1)
+
+
 def _radius_at_depth(params: Parameters, law: RateDependentAdhesion, speed: float, alpha: float,
                      profile: SimulatedProfile, rtol: float) -> float:
     """The radius the edge reaches at ``d_max`` on the way in at the angle ``alpha`` (rad) and ``speed``."""
@@ -138,8 +150,7 @@ def critical_angles_at_speeds(params: Parameters, law: RateDependentAdhesion, sp
     ValueError
         A speed that is not a finite number > 0, or what :func:`critical_angle_at_speed` refuses.
     """
-    speeds = [check_real(f"speeds[{index}]", value, "a finite number > 0 (m/s)", lambda v: v > 0.0)
-              for index, value in enumerate(np.atleast_1d(np.asarray(speeds, dtype=object)).tolist())]
+    speeds = _checked("speeds", speeds, "a finite number > 0 (m/s)", lambda value: value > 0.0)
     angles = np.array([critical_angle_at_speed(params, law, speed, profile) for speed in speeds])
     radii = np.array([_radius_at_depth(params, law, speed, math.radians(angle), profile, EDGE_RTOL)
                       if angle < 90.0 else math.nan for speed, angle in zip(speeds, angles)])
@@ -147,8 +158,7 @@ def critical_angles_at_speeds(params: Parameters, law: RateDependentAdhesion, sp
         {"critical_angle": ("speed", angles, {"units": "degree", "long_name": "critical angle of scenario A"}),
          "contact_radius": ("speed", radii, {"units": "m", "long_name": "contact radius at d_max at that angle"})},
         coords={"speed": ("speed", np.array(speeds), {"units": "m s-1", "long_name": "the path's speed"})})
-    dataset.attrs.update(scenario="A", adhesion_law="rate_dependent", v_ref=law.v_ref, n=law.n,
-                         dgamma0=law.dgamma0, dgamma1=law.dgamma1)
+    dataset.attrs.update(_law_attrs(law))
     if profile is None:
         from mdr_events.theory.analytic import critical_angle  # (the paraboloid's closed forms)
         dataset.attrs.update(critical_angle_adhesive=critical_angle(params, "A", adhesion=True),
@@ -248,10 +258,8 @@ def phase_diagram_at_speeds(params: Parameters, law: RateDependentAdhesion, spee
     ValueError
         A speed or angle out of range, or what :func:`slip_onset_depth_at_speed` refuses.
     """
-    speeds = [check_real(f"speeds[{index}]", value, "a finite number > 0 (m/s)", lambda v: v > 0.0)
-              for index, value in enumerate(np.atleast_1d(np.asarray(speeds, dtype=object)).tolist())]
-    angles = [check_real(f"alpha[{index}]", value, "a number of degrees in (0, 90)", lambda a: 0.0 < a < 90.0)
-              for index, value in enumerate(np.atleast_1d(np.asarray(alpha, dtype=object)).tolist())]
+    speeds = _checked("speeds", speeds, "a finite number > 0 (m/s)", lambda value: value > 0.0)
+    angles = _checked("alpha", alpha, "a number of degrees in (0, 90)", lambda value: 0.0 < value < 90.0)
     depths = np.array([[slip_onset_depth_at_speed(params, law, speed, angle, profile, EDGE_RTOL, method)
                         for angle in angles] for speed in speeds])
     dataset = xr.Dataset(
@@ -259,8 +267,7 @@ def phase_diagram_at_speeds(params: Parameters, law: RateDependentAdhesion, spee
          "d_max": ((), params.d_max, {"units": "m", "long_name": "the deepest point of scenario A"})},
         coords={"speed": ("speed", np.array(speeds), {"units": "m s-1", "long_name": "the path's speed"}),
                 "alpha": ("alpha", np.array(angles), {"units": "degree", "long_name": "path angle"})})
-    dataset.attrs.update(scenario="A", adhesion_law="rate_dependent", v_ref=law.v_ref, n=law.n,
-                         dgamma0=law.dgamma0, dgamma1=law.dgamma1, edge_method=method)
+    dataset.attrs.update(_law_attrs(law), edge_method=method)
     if profile is None:
         from mdr_events.theory.phase import phase_diagram  # (the paraboloid's closed forms)
         closed = phase_diagram(params, np.array(angles), scenario="A")
