@@ -32,6 +32,8 @@ import numpy as np
 import mdr_events as me
 from mdr_events.models import discrete
 from mdr_events.models.methods import Discrete
+from mdr_events.contact.adhesion import law_of
+from mdr_events.contact.friction import as_friction_law
 from mdr_events.models.motion import simulation_cases
 from mdr_events.models.simulate import simulate
 
@@ -39,11 +41,11 @@ ZIGZAG = me.Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4,
 
 #: label, simulate arguments, target median (s) or None, whether to time the spring-by-spring stepping, repeats
 ROWS = [
-    ("A 20°, 1 µm", dict(scenario="A", alpha=[20.0], dx=1e-6, n_steps=10_000), 0.1, True, 7),
-    ("B 20°, 1 µm", dict(scenario="B", alpha=[20.0], dx=1e-6, n_steps=10_000), None, True, 7),
-    ("zigzag, 1 µm", dict(scenario=ZIGZAG, dx=1e-6, n_steps=20_000), None, True, 7),
-    ("Fig. 8 (8 angles), 1 µm", dict(scenario="A", dx=1e-6, n_steps=10_000), 0.3, True, 7),
-    ("A 20°, 0.25 µm", dict(scenario="A", alpha=[20.0], dx=0.25e-6, n_steps=100_000), 5.0, False, 3),
+    ("A 20°, 1 µm", dict(motion="A", alpha=[20.0], dx=1e-6, n_steps=10_000), 0.1, True, 7),
+    ("B 20°, 1 µm", dict(motion="B", alpha=[20.0], dx=1e-6, n_steps=10_000), None, True, 7),
+    ("zigzag, 1 µm", dict(motion=ZIGZAG, dx=1e-6, n_steps=20_000), None, True, 7),
+    ("Fig. 8 (8 angles), 1 µm", dict(motion="A", dx=1e-6, n_steps=10_000), 0.3, True, 7),
+    ("A 20°, 0.25 µm", dict(motion="A", alpha=[20.0], dx=0.25e-6, n_steps=100_000), 5.0, False, 3),
 ]
 
 
@@ -76,9 +78,9 @@ def peak_memory(function) -> float:
 
 def stepping_peak(p, kwargs) -> float:
     """Peak traced memory of the stepping of each case beyond its preallocated outputs (largest case), kB."""
-    paths = simulation_cases(p, kwargs["scenario"], kwargs.get("alpha")).paths
+    paths = simulation_cases(p, kwargs["motion"], kwargs.get("alpha")).paths
     run = discrete._prepare(p, paths, kwargs["dx"], Discrete(n_steps=kwargs["n_steps"])._time_step(paths),
-                            discrete.paraboloid_profile(p))
+                            discrete.paraboloid_profile(p), as_friction_law(None), law_of(p))
     n = run.time.size
     peaks = []
     for case in range(len(paths)):
