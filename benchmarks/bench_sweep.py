@@ -22,7 +22,7 @@ import numpy as np
 from distributed import LocalCluster
 
 import mdr_events as me
-from mdr_events.analysis.sweep import LOOPBACK_DASHBOARD
+from mdr_events.analysis.executors import LOOPBACK_DASHBOARD
 from _timing import median_time
 
 WORKERS = 2

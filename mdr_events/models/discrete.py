@@ -76,7 +76,7 @@ from mdr_events.models.rate_springs import rate_edge_counts
 from mdr_events.theory import mindlin
 
 __all__ = ["run_discrete", "paraboloid_profile", "MIN_SPRINGS_IN_CONTACT", "Thresholds", "THRESHOLD_RULES",
-           "spring_thresholds", "check_thresholds_known"]
+           "EDGE_RULES", "spring_thresholds", "check_thresholds_known", "threshold_counts"]
 
 #: Fewer springs than this per side at ``d_max`` is too coarse (an error).
 MIN_SPRINGS_IN_CONTACT = 10
@@ -174,6 +174,27 @@ THRESHOLD_RULES: dict[type, Callable[..., Thresholds]] = {Adhesion: hysteresis_t
                                                           RateDependentAdhesion: rate_thresholds}
 
 
+def _edge_by_thresholds(adhesion: Adhesion, run: "_Setup", params: Parameters, depth: np.ndarray, time: np.ndarray,
+                        last: int) -> None:
+    """The paper's law: the stepping counts the springs by the thresholds itself (:func:`threshold_counts`, or the
+    spring-by-spring rule of :func:`_run_case_per_spring`)."""
+    return None
+
+
+def _edge_at_its_speed(adhesion: RateDependentAdhesion, run: "_Setup", params: Parameters, depth: np.ndarray,
+                       time: np.ndarray, last: int) -> np.ndarray:
+    """A rate-dependent law: its edge moves at a speed, counted before the stepping
+    (:func:`~mdr_events.models.rate_springs.rate_edge_counts`)."""
+    return rate_edge_counts(adhesion, run.positions, run.grid.g, params.E_star, depth, time, last,
+                            run.grid.first_touch)
+
+
+#: How each adhesion law's springs in contact are counted, by its type: ``None`` (the stepping counts them by the
+#: thresholds) or the counts per sample.
+EDGE_RULES: dict[type, Callable[..., np.ndarray | None]] = {Adhesion: _edge_by_thresholds,
+                                                             RateDependentAdhesion: _edge_at_its_speed}
+
+
 def check_thresholds_known(adhesion: AdhesionLaw) -> None:
     """Refuse an adhesion law without thresholds in :data:`THRESHOLD_RULES`, naming those with them."""
     kernel_of(adhesion, THRESHOLD_RULES, "discrete")
@@ -238,6 +259,51 @@ class _Grid:
 _BLOCK = 8192
 
 
+def threshold_counts(grid: _Grid, d: np.ndarray, last: int) -> np.ndarray:
+    """The springs in contact per side at each sample up to ``last`` under Heß's rule with hysteresis: going in, a
+    contact grows where the depth passes the ``Δγ0`` thresholds (:class:`_Threshold`'s ``grow``), coming out it shrinks
+    below the ``Δγ1`` ones (``shrink``), and it comes apart whole below the lowest; a contact that has come apart
+    starts afresh at the first touch. It depends on the depths alone, so it is counted before the tangential stepping
+    (as a rate-dependent edge is, :func:`~mdr_events.models.rate_springs.rate_edge_counts`).
+
+    Parameters
+    ----------
+    grid : _Grid
+        The springs' thresholds.
+    d : numpy.ndarray
+        The case's depths (m) at every sample.
+    last : int
+        The last sample counted.
+
+    Returns
+    -------
+    numpy.ndarray
+        The counts (int64), ``last + 1`` of them.
+    """
+    attach_threshold, detach_threshold = grid.attach_threshold, grid.detach_threshold
+    detach_lowest, first_touch = grid.detach_lowest, grid.first_touch
+    counts = np.zeros(last + 1, dtype=np.int64)
+    m = counts[0] = _first_count(grid, d, None)
+    depth_before = float(d[0])
+    for first in range(1, last + 1, _BLOCK):
+        block = slice(first, min(last, first + _BLOCK - 1) + 1)
+        grows, shrinks = grid.attach.count(d[block]).tolist(), grid.detach.count(d[block]).tolist()
+        block_counts = array("q")
+        for i, depth in enumerate(d[block].tolist()):
+            step = depth - depth_before
+            if step > 0.0:  # going in: Heß's rule with Δγ0 (_Threshold.grow)
+                if m:
+                    m = max(m, grows[i]) if depth >= attach_threshold[m] else m
+                else:
+                    m = grows[i] if depth >= first_touch else 0
+            elif step < 0.0 and m and depth < detach_threshold[m - 1]:  # coming out: Δγ1 (_Threshold.shrink)
+                m = min(m, shrinks[i]) if m - 1 > detach_lowest else 0
+            block_counts.append(m)
+            depth_before = depth
+        counts[block] = block_counts
+    return counts
+
+
 def _run_case(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last: int, last_entry: float,
               counts: np.ndarray, sums: np.ndarray, sliding: np.ndarray, springs: SpringGroups | None = None,
               edge: np.ndarray | None = None) -> int:
@@ -246,40 +312,20 @@ def _run_case(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last:
     Writes, per sample, the springs in contact per side to ``counts``, ``Σ u`` over them (m) to
     ``sums`` and the springs at a cap (every spring in contact where ``ū = 0``) to ``sliding``;
     returns the last sample. ``springs`` ends holding the final state (for inspection). ``edge``: the springs in
-    contact per sample of a rate-dependent law (:func:`~mdr_events.models.rate_springs.rate_edge_counts`), which then
-    replace the thresholds' rule.
+    contact per sample, counted before (:func:`threshold_counts` where not given; a rate-dependent law's
+    :func:`~mdr_events.models.rate_springs.rate_edge_counts`).
     """
     springs = SpringGroups() if springs is None else springs
-    attach_threshold, detach_threshold = grid.attach_threshold, grid.detach_threshold
-    detach_lowest, first_touch = grid.detach_lowest, grid.first_touch
-    caps, caps_scaled, bits = grid.caps, grid.caps_scaled, grid.bits
-    to_float = grid.to_float
-
+    edge = threshold_counts(grid, d, last) if edge is None else edge
+    caps, caps_scaled, bits, to_float = grid.caps, grid.caps_scaled, grid.bits, grid.to_float
     m, total, at_caps = _first_sample(grid, x, d, springs, counts, sums, sliding, edge)
-    depth_before, x_before = float(d[0]), float(x[0])
+    x_before = float(x[0])
     k = 1
     while k <= last:
         block = slice(k, min(last, k + _BLOCK - 1) + 1)
-        xs, ds, positions = x[block].tolist(), d[block].tolist(), scaled(x[block], bits)
-        grows, shrinks = grid.attach.count(d[block]).tolist(), grid.detach.count(d[block]).tolist()
-        moved = edge[block].tolist() if edge is not None else None
+        xs, positions, moved = x[block].tolist(), scaled(x[block], bits), edge[block].tolist()
         block_counts, block_sums, block_sliding = array("q"), array("d"), array("q")
-        for i, depth in enumerate(ds):
-            step = depth - depth_before
-            if moved is not None:  # a rate-dependent edge: counted before
-                m_new = moved[i]
-            elif step > 0.0:  # going in: Heß's rule with Δγ0 (_Threshold.grow)
-                if m:
-                    m_new = max(m, grows[i]) if depth >= attach_threshold[m] else m
-                else:
-                    m_new = grows[i] if depth >= first_touch else 0
-            elif step < 0.0 and m:  # coming out: Δγ1 (_Threshold.shrink)
-                if depth >= detach_threshold[m - 1]:
-                    m_new = m
-                else:
-                    m_new = min(m, shrinks[i]) if m - 1 > detach_lowest else 0
-            else:
-                m_new = m
+        for i, m_new in enumerate(moved):
             position = xs[i]
             if m_new != m or position != x_before:  # else nothing moves: the sums stay
                 if m_new < m:
@@ -300,7 +346,7 @@ def _run_case(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last:
             block_counts.append(m_new)
             block_sums.append(total)
             block_sliding.append(at_caps)
-            depth_before, x_before = depth, position
+            x_before = position
             # the pull-off jump ends the case (keeping this first sample without contact) unless its path
             # enters again after the last sample in contact; then the next contact starts afresh
             apart = m and not m_new and last_entry <= time[k - 1]
@@ -516,10 +562,8 @@ def run_discrete(
     out_sum = np.zeros((n_cases, n_time))
     out_sliding = np.zeros((n_cases, n_time), dtype=np.int64)
     for case in range(n_cases):
-        edge = None
-        if isinstance(adhesion, RateDependentAdhesion):  # its edge moves at a speed: counted before the stepping
-            edge = rate_edge_counts(adhesion, run.positions, run.grid.g, params.E_star, d_path[:, case], time,
-                                    int(last_sample[case]), run.grid.first_touch)
+        edge = kernel_of(adhesion, EDGE_RULES, "discrete")(adhesion, run, params, d_path[:, case], time,
+                                                            int(last_sample[case]))
         last_sample[case] = step_case(run.grid, x_path[:, case], d_path[:, case], time, int(last_sample[case]),
                                       float(run.last_entries[case]), out_m[case], out_sum[case], out_sliding[case],
                                       edge=edge)
