@@ -174,10 +174,10 @@ THRESHOLD_RULES: dict[type, Callable[..., Thresholds]] = {Adhesion: hysteresis_t
                                                           RateDependentAdhesion: rate_thresholds}
 
 
-def _edge_by_thresholds(adhesion: Adhesion, run: "_Setup", params: Parameters, depth: np.ndarray, time: np.ndarray,
+def _edge_by_thresholds(adhesion: AdhesionLaw, run: "_Setup", params: Parameters, depth: np.ndarray, time: np.ndarray,
                         last: int) -> None:
-    """The paper's law: the stepping counts the springs by the thresholds itself (:func:`threshold_counts`, or the
-    spring-by-spring rule of :func:`_run_case_per_spring`)."""
+    """A law of thresholds (the paper's, any law of :data:`THRESHOLD_RULES` not in :data:`EDGE_RULES`): the stepping
+    counts the springs by them itself (:func:`threshold_counts`, or the rule of :func:`_run_case_per_spring`)."""
     return None
 
 
@@ -189,10 +189,9 @@ def _edge_at_its_speed(adhesion: RateDependentAdhesion, run: "_Setup", params: P
                             run.grid.first_touch)
 
 
-#: How each adhesion law's springs in contact are counted, by its type: ``None`` (the stepping counts them by the
-#: thresholds) or the counts per sample.
-EDGE_RULES: dict[type, Callable[..., np.ndarray | None]] = {Adhesion: _edge_by_thresholds,
-                                                             RateDependentAdhesion: _edge_at_its_speed}
+#: The laws whose springs in contact are counted otherwise than by their thresholds (:data:`THRESHOLD_RULES`, which
+#: the stepping reads itself), by type: the counts per sample.
+EDGE_RULES: dict[type, Callable[..., np.ndarray | None]] = {RateDependentAdhesion: _edge_at_its_speed}
 
 
 def check_thresholds_known(adhesion: AdhesionLaw) -> None:
@@ -562,8 +561,8 @@ def run_discrete(
     out_sum = np.zeros((n_cases, n_time))
     out_sliding = np.zeros((n_cases, n_time), dtype=np.int64)
     for case in range(n_cases):
-        edge = kernel_of(adhesion, EDGE_RULES, "discrete")(adhesion, run, params, d_path[:, case], time,
-                                                            int(last_sample[case]))
+        edge = EDGE_RULES.get(type(adhesion), _edge_by_thresholds)(adhesion, run, params, d_path[:, case], time,
+                                                                    int(last_sample[case]))
         last_sample[case] = step_case(run.grid, x_path[:, case], d_path[:, case], time, int(last_sample[case]),
                                       float(run.last_entries[case]), out_m[case], out_sum[case], out_sliding[case],
                                       edge=edge)
