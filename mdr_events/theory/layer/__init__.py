@@ -65,10 +65,13 @@ module                       one idea
 :mod:`.tables`               the factors against ``a/h``, cached on disk: :class:`LayerTable`
 :mod:`.relations`            the generalized MDR: ``K``, ``k(x)``, ``Δl``, ``g``, ``F_N``, the adhesive branch
 :mod:`.pull_off`             the pull-off under force control: :class:`PullOff`
+:mod:`.curves`               a :class:`~mdr_events.Contact` on its layer as labelled results: the branches against
+                             the depth, an indentation cycle, the pull-off against the thickness
 ===========================  ==============================================================================
 """
 
 from mdr_events.theory.layer.compliance import LAMBDA_MAX, compliance_function, kernel
+from mdr_events.theory.layer.curves import layer_indentation_cycle, layer_normal_curve, layer_pull_off_curve
 from mdr_events.theory.layer.pull_off import PullOff, pull_off
 from mdr_events.theory.layer.punch import PunchSolution, nystrom_nodes, solve_punch
 from mdr_events.theory.layer.relations import (branch_depth, branch_normal_force, equivalent_profile, hess_elongation,
@@ -81,4 +84,4 @@ __all__ = ["LAMBDA_MAX", "LAMBDA_MIN", "compliance_function", "kernel", "nystrom
            "solve_punch", "LayerTable", "layer_table", "table_cache_path", "punch_stiffness", "punch_stiffness_slope",
            "spring_stiffness_density", "hess_elongation", "surface_displacement", "equivalent_profile",
            "power_law_profile", "power_law_profile_slope", "normal_force", "branch_depth", "branch_normal_force",
-           "pull_off", "PullOff"]
+           "pull_off", "PullOff", "layer_normal_curve", "layer_indentation_cycle", "layer_pull_off_curve"]
