@@ -101,6 +101,10 @@ def _stable_radius(contact: Contact, dgamma: float, depths: np.ndarray) -> np.nd
     scanned = depth_of(logs)
     turn = int(np.argmin(scanned))
     stable, stable_depths = logs[turn:], scanned[turn:]
+    if 0 < turn < logs.size - 1:  # (the least depth itself, not the scan's: every depth above it has a bracket)
+        least, at_least = _least(depth_of, logs, turn)
+        stable = np.concatenate([[at_least], logs[turn + 1:]])
+        stable_depths = np.concatenate([[least], scanned[turn + 1:]])
     index = np.clip(np.searchsorted(stable_depths, depths), 1, max(stable.size - 1, 1))
     lower, upper = stable[index - 1], stable[index]
     for _ in range(_BISECTIONS):
@@ -219,13 +223,12 @@ def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201) 
     loading = np.linspace(0.0, d_max, samples)
     a_max = float(_stable_radius(contact, low, np.array([d_max]))[0])
     unpinned = float(branch_depth(a_max, contact.indenter, E_star, nu, high, layer))
-    least, at_least = _jump_off(contact, high)
+    least, _ = _jump_off(contact, high)
     pinned = np.linspace(d_max, unpinned, samples)
     shrinking = np.linspace(unpinned, least, samples)
     depth = np.concatenate([loading, pinned, shrinking])
     radius = np.concatenate([_stable_radius(contact, low, loading), np.full(samples, a_max),
                              _stable_radius(contact, high, shrinking)])
-    radius[-1] = at_least  # (the jump-off itself: the scan's least depth lies a little above Brent's)
     stage = np.repeat(["loading", "pinned", "shrinking"], samples)
     variables = _variables(contact, depth, radius, ("sample",))
     variables["depth"] = xr.Variable(("sample",), depth, {"units": "m", "long_name": _VARIABLES["depth"][1]})
@@ -235,8 +238,6 @@ def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201) 
 
 def _jump_off(contact: Contact, dgamma: float) -> tuple[float, float]:
     """The least depth of the branch of ``dgamma`` and its radius: the jump-off under depth control (m, m)."""
-    from scipy.optimize import minimize_scalar
-
     E_star, nu, layer = _material(contact)
     low, high = _radius_scale(contact, dgamma, 0.0)
     logs = np.linspace(math.log(low), math.log(high), _SCAN_POINTS)
@@ -244,11 +245,18 @@ def _jump_off(contact: Contact, dgamma: float) -> tuple[float, float]:
     def depth_of(log_radius):
         return branch_depth(np.exp(log_radius), contact.indenter, E_star, nu, dgamma, layer)
 
-    best = int(np.argmin(depth_of(logs)))
+    least, at_least = _least(depth_of, logs, int(np.argmin(depth_of(logs))))
+    return least, float(np.exp(at_least))
+
+
+def _least(depth_of, logs: np.ndarray, best: int) -> tuple[float, float]:
+    """The least depth near the scan's node ``best`` and its ``ln a`` (Brent's method on the nodes around it)."""
+    from scipy.optimize import minimize_scalar
+
     best = min(max(best, 1), logs.size - 2)
     found = minimize_scalar(lambda value: float(depth_of(value)), bracket=(logs[best - 1], logs[best], logs[best + 1]),
                             method="brent", options={"xtol": 1e-12})
-    return float(found.fun), float(np.exp(found.x))
+    return float(found.fun), float(found.x)
 
 
 def layer_pull_off_curve(contact: Contact, thicknesses) -> xr.Dataset:
