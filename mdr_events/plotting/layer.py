@@ -62,7 +62,13 @@ def plot_layer_cycles(cycles: dict[str, xr.Dataset]) -> Figure:
     """
     figure, axes = plt.subplots(figsize=(6.4, 4.6), constrained_layout=True)
     for index, (label, cycle) in enumerate(cycles.items()):
-        axes.plot(cycle.depth.values * 1e3, cycle.normal_force.values, color=f"C{index}", lw=1.4, label=label)
+        stages = cycle.stage.values
+        for number, stage in enumerate(dict.fromkeys(stages)):
+            chosen = np.flatnonzero(stages == stage)
+            if stage == "pinned":  # (exactly linear in d: its ends alone, no joins of collinear segments, whose
+                chosen = chosen[[0, -1]]  # direction is the rounding's and moves pixels between machines)
+            axes.plot(cycle.depth.values[chosen] * 1e3, cycle.normal_force.values[chosen], color=f"C{index}",
+                      lw=1.4, label=label if number == 0 else None)
     axes.axhline(0.0, color="k", lw=0.6)
     axes.set_xlabel("depth d (mm)")
     axes.set_ylabel("normal force F_N (N)")
