@@ -43,6 +43,8 @@ _LAZY = {
     **dict.fromkeys(("Paths", "Scenario"), "mdr_events.models.motion"),
     **dict.fromkeys(("Continuum", "Discrete"), "mdr_events.models.methods"),
     "phase_diagram": "mdr_events.theory.phase",
+    **dict.fromkeys(("layer_indentation_cycle", "layer_normal_curve", "layer_pull_off_curve"),
+                    "mdr_events.theory.layer.curves"),
     "simulate": "mdr_events.models.simulate",
     "cross_check": "mdr_events.analysis.crosscheck",
     "validate": "mdr_events.analysis.validate",
@@ -67,7 +69,7 @@ _SUBMODULES = ("analysis", "app", "contact", "io", "limits", "models", "paramete
 # The modules that make results register their schemas (and accuracies, and figures) when imported: the first
 # look-up in a registry imports them, so that open_result knows every kind of result whatever a user imports.
 _declare_registrars(
-    schemas=("mdr_events.theory.phase", "mdr_events.models.simulation_schema", "mdr_events.analysis.crosscheck",
+    schemas=("mdr_events.theory.phase", "mdr_events.theory.layer.curves", "mdr_events.models.simulation_schema", "mdr_events.analysis.crosscheck",
              "mdr_events.analysis.validate", "mdr_events.analysis.convergence_study",
              "mdr_events.analysis.universal_map", "mdr_events.analysis.fit", "mdr_events.analysis.fit_data",
              "mdr_events.analysis.sweep", "mdr_events.dem.runner"),
@@ -120,6 +122,7 @@ if TYPE_CHECKING:  # what static tools (type checkers, IDEs) read: the same name
     from mdr_events.theory import analytic, mindlin, power_law, symbolic, tabulated
     from mdr_events.theory.analytic import (critical_angle, critical_shift, d_crit, fretting_dissipated_energy,
                                             jkr_contact_radius, jkr_depth, jkr_normal_force, jump_off, pull_off_force)
+    from mdr_events.theory.layer.curves import layer_indentation_cycle, layer_normal_curve, layer_pull_off_curve
     from mdr_events.theory.phase import phase_diagram
 
 __all__ = [
@@ -176,6 +179,9 @@ __all__ = [
     "jkr_depth",
     "jkr_normal_force",
     "jump_off",
+    "layer_normal_curve",
+    "layer_indentation_cycle",
+    "layer_pull_off_curve",
     "dem",
     "lammps_check",
     "load_study",

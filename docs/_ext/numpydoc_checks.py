@@ -46,6 +46,7 @@ INTERNAL_PATTERNS = {r"^mdr_events\.(?!(" + "|".join(name.removeprefix("mdr_even
                                                                    "mdr_events.models.continuum"))
                      + r")\.)[a-z_]+(\.[a-z_]+)*\.",
                      r"^mdr_events\.models\.continuum\.[a-z_]+\.",
+                     r"^mdr_events\.theory\.layer\.[a-z_]+\.",
                      r"\.__init__$",
                      r"\.[A-Z][A-Z0-9_]+$"}   # constants (FRICTION_LAWS, ...): data, no signature to check
 

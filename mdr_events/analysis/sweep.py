@@ -40,6 +40,7 @@ from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models import indenters
 from mdr_events.contact.friction import friction_attrs
+from mdr_events.contact.model import check_half_space
 from mdr_events.models.methods import DEFAULT_STEPS, Continuum, Discrete, Method, as_method
 from mdr_events.models.motion import FIGURE_ANGLES, Motion, Paths, Scenario
 from mdr_events.models.job import ModelJob
@@ -202,6 +203,7 @@ def sweep_job(grid, contact, motion, alpha, method, options: Mapping[str, Any]) 
         alpha = check_real("alpha", alpha, ANGLE_ALLOWED,
                            lambda value: 0 < value <= 90 and math.tan(math.radians(value)) > 0)
     model = model_job(contact, "A" if motion is None else motion, alpha, options)
+    check_half_space(model.contact, "sweep")
     the_method = as_method(DEFAULT_METHOD if method is None else method, options)
     if isinstance(the_method, Continuum) and the_method.t is not None:
         raise ValueError("t is not allowed in a sweep; allowed: history_samples (times spread over each run's path)")

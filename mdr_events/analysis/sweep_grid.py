@@ -25,6 +25,8 @@ TABLE_DIMENSION = "set"
 #: Bytes per value a sweep holds at once: its array, the dataset built from it and the store's chunk (three float64
 #: copies), rounded up.
 BYTES_PER_STORED_VALUE = 32
+#: The prefix of the layer's dotted names (``layer.thickness``, short ``h``; ``layer.base``): not swept yet.
+LAYER_PART = "layer."
 
 
 class Grid(NamedTuple):
@@ -43,7 +45,7 @@ class Grid(NamedTuple):
 def swept_names(contact: Contact, motion: Motion, method: Method) -> tuple[str, ...]:
     """The names a grid may sweep: the contact's values (dotted and short names), the motion's angle (a scenario's),
     depth and speed, and the discrete method's spacing."""
-    held = contact.names()
+    held = [name for name in contact.names() if not name.startswith(LAYER_PART)]  # (no layer in a sweep yet)
     short = [name for name, dotted in SHORT_NAMES.items() if dotted in held]
     motion_names = [name for name in MOTION_NAMES if name != "alpha" or isinstance(motion, Scenario)]
     return (*short, *held, *motion_names, *(METHOD_NAMES if isinstance(method, Discrete) else ()))
@@ -57,6 +59,10 @@ def name_unit(contact: Contact, name: str) -> str:
 def _values(name: str, values, allowed: Sequence[str], contact: Contact | None) -> np.ndarray:
     if name not in allowed:
         dotted = SHORT_NAMES.get(name, name)
+        if isinstance(dotted, str) and dotted.startswith(LAYER_PART):
+            raise ValueError(f"grid: {name!r} ({dotted}) is not allowed in sweep yet; allowed: the half-space (h = "
+                             "inf); the normal problem on a layer: mdr_events.layer_normal_curve and "
+                             "mdr_events.layer_pull_off_curve")
         part = dotted.partition(".")[0]
         whose = f" is not a value of this contact ({part}={getattr(contact, part)!r})" \
             if contact is not None and dotted in UNITS else " is not allowed"

@@ -30,6 +30,7 @@ from mdr_events.theory.scales import check_representable
 from mdr_events.io.datasets import register_schema, stamp, text_list_attrs
 from mdr_events.models.continuum import PathSolution, Tolerances, solve_path
 from mdr_events.contact import Contact
+from mdr_events.contact.model import check_half_space
 from mdr_events.models.indenters import SimulatedProfile, profile_attrs
 from mdr_events.models.methods import Continuum
 from mdr_events.models.motion import Paths
@@ -130,6 +131,7 @@ def one_path_job(contact, motion, alpha, options: dict[str, Any], caller: str = 
         raise ValueError(f"alpha={alpha!r} is not allowed with scenario {motion!r}; allowed: one angle in degrees")
     job = model_job(contact, motion, alpha, options)
     rate_independent(job.contact, f"{caller} (its reference is rate-independent)")
+    check_half_space(job.contact, caller)
     return job
 
 

@@ -81,6 +81,9 @@ class Layer:
             lambda value: value > 0.0, finite=False))
         object.__setattr__(self, "base", _as_base(self.base))
 
+    def __repr__(self) -> str:
+        return f"Layer(thickness={self.thickness!r}, base={self.base.value!r})"
+
     @property
     def is_half_space(self) -> bool:
         """Whether the layer is infinitely thick (``thickness = inf``): the paper's half-space."""

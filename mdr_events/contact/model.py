@@ -20,10 +20,11 @@ from mdr_events.contact.elastomer import Elastomer
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.contact.indenters import FlatPunch, Indenter, Paraboloid, PowerLaw, TabulatedProfile, \
     indenter_from_attrs
+from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.validation import PLAIN_NUMBER, number_of, shown
 
-__all__ = ["Contact", "SHORT_NAMES", "PARTS", "UNITS"]
+__all__ = ["Contact", "SHORT_NAMES", "PARTS", "UNITS", "check_half_space"]
 
 #: The parts of a contact and the types each may be.
 PARTS: dict[str, tuple[type, ...]] = {
@@ -31,25 +32,29 @@ PARTS: dict[str, tuple[type, ...]] = {
     "indenter": (Paraboloid, PowerLaw, FlatPunch, TabulatedProfile),
     "adhesion": (Adhesion, RateDependentAdhesion),
     "friction": (FrictionLaw,),
+    "layer": (Layer,),
 }
 #: Short names of the values inside a contact (those of :class:`~mdr_events.Parameters` and ``mu``) → dotted names.
 SHORT_NAMES: dict[str, str] = {
     "E": "elastomer.E", "nu": "elastomer.nu", "R": "indenter.R", "c": "indenter.c", "n": "indenter.n",
     "radius": "indenter.radius", "dgamma0": "adhesion.dgamma0", "dgamma1": "adhesion.dgamma1",
-    "tau0": "friction.tau0", "mu": "friction.mu",
+    "tau0": "friction.tau0", "mu": "friction.mu", "h": "layer.thickness",
 }
 #: The unit of each value inside a contact, by dotted name (``c`` of ``f = c rⁿ`` is in m^(1-n)).
 UNITS: dict[str, str] = {
     "elastomer.E": "Pa", "elastomer.nu": "1", "indenter.R": "m", "indenter.c": "m^(1-n)", "indenter.n": "1",
     "indenter.radius": "m", "adhesion.dgamma0": "J m-2", "adhesion.dgamma1": "J m-2",
     "adhesion.v_ref": "m s-1", "adhesion.n": "1", "friction.tau0": "Pa",
-    "friction.mu": "1",
+    "friction.mu": "1", "layer.thickness": "m",
 }
+#: Values inside a contact that are a choice, not a number (no unit; :meth:`Contact.value` and
+#: :meth:`Contact.replace` take them, :meth:`Contact.names` lists the numbers).
+CHOICES = ("layer.base",)
 
 
 #: The attributes of a contact that hold numbers.
 NUMERIC_ATTRIBUTES = ("param_E", "param_nu", "param_R", "param_dgamma0", "param_dgamma1", "param_tau0", "friction_mu",
-                      "profile_c", "profile_n", "profile_radius")
+                      "profile_c", "profile_n", "profile_radius", "param_layer_thickness")
 
 
 @dataclass(frozen=True, repr=False)
@@ -67,6 +72,11 @@ class Contact:
     friction : FrictionLaw, default FrictionLaw("tau0", tau0=0.0)
         The cap on the springs' shifts (:mod:`mdr_events.contact.friction`) with every value it uses: ``τ0`` for the
         paper's law (13), ``μ`` for Coulomb's, both for their sum.
+    layer : Layer, default HALF_SPACE
+        The elastomer's thickness ``h`` and base (:class:`~mdr_events.contact.layer.Layer`): the paper's half-space
+        (``h = inf``) by default. A finite layer is taken by the normal problem of :mod:`mdr_events.theory.layer`
+        (:func:`~mdr_events.layer_normal_curve`); the simulators and the closed forms of the half-space refuse it
+        (:func:`check_half_space`).
 
     Raises
     ------
@@ -80,6 +90,7 @@ class Contact:
     indenter: Indenter
     adhesion: Adhesion = NO_ADHESION
     friction: FrictionLaw = FrictionLaw("tau0", tau0=0.0)
+    layer: Layer = HALF_SPACE
 
     def __post_init__(self) -> None:
         for name, kinds in PARTS.items():
@@ -92,7 +103,8 @@ class Contact:
                              "tau0; allowed: a law with its values, e.g. FrictionLaw('tau0', tau0=42e3)")
 
     def __repr__(self) -> str:
-        return f"Contact({self.elastomer!r}, {self.indenter!r}, {self.adhesion!r}, {self.friction!r})"
+        layer = "" if self.layer.is_half_space else f", {self.layer!r}"  # (the half-space: the paper's, unnamed)
+        return f"Contact({self.elastomer!r}, {self.indenter!r}, {self.adhesion!r}, {self.friction!r}{layer})"
 
     # --- construction ---------------------------------------------------------------------------------------------
     @classmethod
@@ -182,7 +194,7 @@ class Contact:
                                      f"(in text: {PLAIN_NUMBER})") from None
         try:
             return cls(Elastomer.from_attrs(attrs), indenter_from_attrs(attrs), adhesion_from_attrs(attrs),
-                       FrictionLaw.from_attrs(attrs))
+                       FrictionLaw.from_attrs(attrs), Layer.from_attrs(attrs))
         except KeyError as error:
             raise ValueError(f"attrs lack the attribute {error.args[0]!r}; allowed: a result's attributes "
                              "(Contact.to_attrs)") from None
@@ -228,8 +240,8 @@ class Contact:
 
         Returns
         -------
-        float
-            The value, in the unit :meth:`unit` gives.
+        float or LayerBase
+            The value, in the unit :meth:`unit` gives (``layer.base``: the :class:`~mdr_events.contact.layer.LayerBase`).
 
         Raises
         ------
@@ -237,7 +249,7 @@ class Contact:
             A name this contact does not hold (listing those it does).
         """
         part, field = self._path(name)
-        if not self.holds(name):  # (a law's mu or tau0 that it does not use: None was returned)
+        if not self.holds(name) and SHORT_NAMES.get(name, name) not in CHOICES:  # (a law's unused mu or tau0)
             raise ValueError(f"{name!r} is not a value of this contact; allowed: {', '.join(self.names())}")
         return getattr(getattr(self, part), field)
 
@@ -323,7 +335,8 @@ class Contact:
         return part, field
 
     def names(self) -> list[str]:
-        """The dotted names of the values this contact holds (``friction.mu`` only for a law with Coulomb's part).
+        """The dotted names of the numbers this contact holds (``friction.mu`` only for a law with Coulomb's part;
+        ``layer.base``, a choice, is read and changed by name but not listed: :data:`CHOICES`).
 
         Returns
         -------
@@ -331,18 +344,50 @@ class Contact:
             E.g. ``["elastomer.E", "elastomer.nu", "indenter.R", ..., "friction.tau0"]``.
         """
         return [f"{part}.{field.name}" for part in PARTS for field in dataclasses.fields(getattr(self, part))
-                if field.name != "law" and getattr(getattr(self, part), field.name) is not None]
+                if field.name != "law" and getattr(getattr(self, part), field.name) is not None
+                and f"{part}.{field.name}" not in CHOICES]
 
     # --- results --------------------------------------------------------------------------------------------------
     def to_attrs(self) -> dict[str, Any]:
         """The attributes a result of this contact carries: each part's (``param_E``, ``param_nu``, ``param_E_star``,
         ``param_G_star``; ``param_R`` or ``profile_*``; ``param_dgamma0``, ``param_dgamma1``; ``param_tau0`` where
-        the law uses it, ``friction_*`` for another law than the paper's).
+        the law uses it, ``friction_*`` for another law than the paper's; ``param_layer_thickness`` and
+        ``param_layer_base`` for a layer of finite thickness: the half-space stamps none, so that its results are
+        those written before layers existed, and :meth:`from_attrs` reads a result without them as the half-space).
 
         Returns
         -------
         dict of str to object
             The attributes, read back by :meth:`from_attrs`.
         """
+        layer = {} if self.layer.is_half_space else self.layer.to_attrs()
         return {**self.elastomer.to_attrs(), **self.indenter.to_attrs(), **self.adhesion.to_attrs(),
-                **self.friction.to_attrs()}
+                **self.friction.to_attrs(), **layer}
+
+
+def check_half_space(contact: Contact, where: str) -> Contact:
+    """``contact`` if its elastomer is the half-space (``Contact.layer``, ``h = inf``); else the one-line
+    ``ValueError`` naming the layer, ``where`` (the entry point that does not take a layer yet) and what runs it.
+
+    Parameters
+    ----------
+    contact : Contact
+        The physical model.
+    where : str
+        The entry point asked, e.g. ``"simulate(method='continuum')"``.
+
+    Returns
+    -------
+    Contact
+        ``contact`` itself.
+
+    Raises
+    ------
+    ValueError
+        A layer of finite thickness.
+    """
+    if contact.layer.is_half_space:
+        return contact
+    raise ValueError(f"Contact.layer={contact.layer!r} is not allowed in {where} yet; allowed: the half-space (h = "
+                     "inf, Layer()) — the normal problem on a layer: mdr_events.layer_normal_curve and "
+                     "mdr_events.layer_pull_off_curve (mdr_events.theory.layer)")

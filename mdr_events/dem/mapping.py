@@ -54,6 +54,7 @@ from typing import Any
 
 from mdr_events.contact import Contact
 from mdr_events.contact.indenters import Paraboloid
+from mdr_events.contact.model import check_half_space
 from mdr_events.validation import check_choice, shown
 
 __all__ = ["NORMAL_MODELS", "TANGENTIAL_MODELS", "LammpsModel", "WallCoefficients", "wall_coefficients",
@@ -130,6 +131,7 @@ def _check_contact(contact: Contact, model: LammpsModel) -> None:
     """Refuse a contact LAMMPS's sphere cannot stand for: another indenter, or friction without ``μ``."""
     if not isinstance(contact, Contact):
         raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a Contact")
+    check_half_space(contact, "the LAMMPS check (LAMMPS has no layers)")
     if not isinstance(contact.indenter, Paraboloid):
         raise ValueError(f"contact.indenter={contact.indenter!r} is not allowed; allowed: a Paraboloid (LAMMPS "
                          "models a sphere, whose tip is the paraboloid of its radius R)")

@@ -15,6 +15,7 @@ from typing import Any, Mapping, NamedTuple, Sequence
 import xarray as xr
 
 from mdr_events.contact import Contact
+from mdr_events.contact.model import check_half_space
 from mdr_events.contact.friction import as_friction_law
 from mdr_events.limits import Limits, check_limits
 from mdr_events.models import indenters
@@ -72,7 +73,9 @@ def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any]) -
                              "allowed: one method")
         alpha, method = None, alpha
     model = model_job(contact, motion, alpha, options)
-    return SimulationJob(model, as_method(DEFAULT_METHOD if method is None else method, options))
+    the_method = as_method(DEFAULT_METHOD if method is None else method, options)
+    check_half_space(model.contact, f"simulate(method={the_method.name!r})")
+    return SimulationJob(model, the_method)
 
 
 def simulate(

@@ -17,7 +17,7 @@ from typing import Any, NamedTuple
 from mdr_events.contact.adhesion import Adhesion
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.contact.indenters import Profile
-from mdr_events.contact.model import Contact
+from mdr_events.contact.model import Contact, check_half_space
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V, Parameters
 from mdr_events.validation import check_real, shown
 
@@ -65,7 +65,8 @@ def rate_independent(contact: Contact, what: str) -> Contact:
                                                                       if elsewhere else ""))
 
 
-def theory_job(contact: Any, d_max: float | None = None, profile: Any = None, friction: Any = None) -> TheoryJob:
+def theory_job(contact: Any, d_max: float | None = None, profile: Any = None, friction: Any = None,
+               what: str = "the half-space's closed forms") -> TheoryJob:
     """The values of ``contact`` and the depth ``d_max``; the one conversion of the theory's public functions.
 
     Parameters
@@ -79,6 +80,9 @@ def theory_job(contact: Any, d_max: float | None = None, profile: Any = None, fr
         The depth of the motion, eqs. (14) and (19) (m, finite, > 0); only with a Contact.
     profile, friction : optional
         Only beside a :class:`~mdr_events.Parameters` (a contact holds its own).
+    what : str, default "the half-space's closed forms"
+        The function asked, named where a contact's layer of finite thickness is refused (the closed forms are the
+        half-space's).
 
     Returns
     -------
@@ -91,8 +95,8 @@ def theory_job(contact: Any, d_max: float | None = None, profile: Any = None, fr
     TypeError
         ``contact`` of another type, naming it.
     ValueError
-        ``d_max`` beside a :class:`~mdr_events.Parameters`, ``profile`` or ``friction`` beside a Contact, or a depth
-        that is not a finite number > 0.
+        ``d_max`` beside a :class:`~mdr_events.Parameters`, ``profile`` or ``friction`` beside a Contact, a depth
+        that is not a finite number > 0, or a contact on a layer of finite thickness (``Contact.layer``).
     """
     if isinstance(contact, Parameters):
         if d_max is not None:
@@ -100,6 +104,7 @@ def theory_job(contact: Any, d_max: float | None = None, profile: Any = None, fr
                              f"d_max = {contact.d_max!r} m; Parameters.replace(d_max=...) changes it)")
         return TheoryJob(contact, profile, as_friction_law(friction))
     contact = rate_independent(contact_alone(contact, profile, friction), "the closed forms (rate-independent)")
+    check_half_space(contact, what)
     depth = PAPER_D_MAX if d_max is None else check_real("d_max", d_max, "a finite number > 0 (m)",
                                                          lambda value: value > 0.0)
     return TheoryJob(contact.parameters(depth, PAPER_V), contact.profile,
@@ -110,7 +115,7 @@ def paper_parameters(contact: Any, what: str, d_max: float | None = None) -> Par
     """The :class:`~mdr_events.Parameters` of :func:`theory_job` for the closed forms of the paper's paraboloid (4)
     under its friction law (13) (:mod:`mdr_events.theory.analytic`); a contact of another indenter or law is refused,
     naming the closed forms that serve it (``what`` names the function asked)."""
-    job = theory_job(contact, d_max)
+    job = theory_job(contact, d_max, what=what)
     if job.profile is not None:
         raise ValueError(f"{what} of contact.indenter={job.profile!r} is not allowed here; allowed: a Contact of a "
                          "Paraboloid (the closed forms of eqs. (9)-(21)). Another indenter's are in "

@@ -112,7 +112,7 @@ def phase_diagram(
         scenario B, ``jump_off_depth`` (the displacement-controlled pull-off
         depth on the ``Δγ1`` branch).
     """
-    params, profile, friction = theory_job(contact, d_max, profile, friction)
+    params, profile, friction = theory_job(contact, d_max, profile, friction, what="phase_diagram")
     check_choice("scenario", scenario, analytic.SCENARIOS)
     if isinstance(alpha, str) and alpha in ("A", "B"):  # phase_diagram(contact, "B"): the scenario given as alpha
         raise TypeError(f"alpha={alpha!r} is not allowed: a scenario's name where the angles go; allowed: angles in "

@@ -94,7 +94,8 @@ def test_values_are_read_and_changed_by_dotted_or_short_name():
             assert changed.value(short) == changed.value(dotted)
     assert contact.replace() == contact and contact.names() == ["elastomer.E", "elastomer.nu", "indenter.R",
                                                                "adhesion.dgamma0", "adhesion.dgamma1",
-                                                               "friction.mu", "friction.tau0"]
+                                                               "friction.mu", "friction.tau0",
+                                                               "layer.thickness"]
 
 
 @pytest.mark.parametrize("name, words", [

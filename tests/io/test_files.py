@@ -42,6 +42,9 @@ def results(paper_module):
                       time_origin="path_start").dataset,
         "sweep": me.sweep({"tau0": [30e3, 42e3]}, "A", 20.0, base=p, scheduler="serial"),
         "universal_map": universal_map([1.0, 2.0], [0.0, 0.1], p, scheduler="serial"),
+        "layer_curve": me.layer_normal_curve(me.Contact.paper().replace(h=5e-3), [1e-4, 2e-4]),
+        "layer_cycle": me.layer_indentation_cycle(me.Contact.paper().replace(h=5e-3), 2e-4, 5),
+        "layer_pull_off": me.layer_pull_off_curve(me.Contact.paper(), [5e-3]),
         **_lammps_run(),
     }
 

@@ -259,15 +259,16 @@ def test_compute_sends_one_progress_message_per_step(computed):
     """reproduce numbers its steps out of a total that counts compute's as COMPUTE_STEPS."""
     _, messages = computed
     assert len(messages) == runner.COMPUTE_STEPS
-    assert messages[-10].startswith("fretting at d_max, R = 30 mm")
-    assert messages[-9].startswith("fit of 4 parameters to synthetic measurements")
-    assert messages[-8].startswith("universal map: critical angles")
-    assert messages[-7].startswith("other indenters: cone, paraboloid, quartic and flat punch")
-    assert messages[-6].startswith("Cattaneo–Mindlin: Coulomb's law")
-    assert messages[-5].startswith("Cattaneo–Mindlin with adhesion: Coulomb's law")
-    assert [message.split(":")[0] for message in messages[-4:-1]] == ["LAMMPS hertz/material", "LAMMPS jkr",
+    assert messages[-11].startswith("fretting at d_max, R = 30 mm")
+    assert messages[-10].startswith("fit of 4 parameters to synthetic measurements")
+    assert messages[-9].startswith("universal map: critical angles")
+    assert messages[-8].startswith("other indenters: cone, paraboloid, quartic and flat punch")
+    assert messages[-7].startswith("Cattaneo–Mindlin: Coulomb's law")
+    assert messages[-6].startswith("Cattaneo–Mindlin with adhesion: Coulomb's law")
+    assert [message.split(":")[0] for message in messages[-5:-2]] == ["LAMMPS hertz/material", "LAMMPS jkr",
                                                                       "LAMMPS dmt"]
-    assert messages[-1].startswith("rate-dependent adhesion: pull-off at 7 speeds")
+    assert messages[-2].startswith("rate-dependent adhesion: pull-off at 7 speeds")
+    assert messages[-1].startswith("layers of finite thickness: pull-off against h")
 
 
 @pytest.mark.slow

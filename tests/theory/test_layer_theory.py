@@ -15,6 +15,8 @@ import pytest
 from mdr_events.contact.indenters import Paraboloid, PowerLaw
 from mdr_events.contact.layer import HALF_SPACE, Layer, LayerBase
 from mdr_events.theory import layer as L
+from mdr_events.theory.layer import compliance as LC
+from mdr_events.theory.layer import tables as LT
 from mdr_events.theory import layer_symbolic, symbolic
 
 #: Interpolation against direct solves: the issue's 1e-8 (quintic splines in ln λ reach about 2e-9).
@@ -64,7 +66,7 @@ def test_the_compliance_solved_from_love_s_function_is_the_one_solved_numericall
 def test_the_kernel_s_interpolant_is_its_quadrature():
     v = np.linspace(0.0, 130.0, 2001)
     for base in LayerBase:
-        assert np.max(np.abs(L.kernel(v, 0.5, base) - L._direct_kernel(v, 0.5, base))) < 1e-13
+        assert np.max(np.abs(L.kernel(v, 0.5, base) - LC._direct_kernel(v, 0.5, base))) < 1e-13
 
 
 @pytest.mark.parametrize("lam", [0.5, 5.0, 20.0])
@@ -83,9 +85,9 @@ def test_the_nystrom_solve_converges_spectrally_with_the_nodes(lam):
 @pytest.mark.parametrize("nu, base", [(0.5, "bonded"), (0.3, "frictionless")])
 def test_the_tables_interpolate_direct_solves_at_the_mid_points(nu, base):
     table = L.layer_table(nu, base)
-    grid = L._table_grid()
+    grid = LT._table_grid()
     middles = np.exp((grid[:-1] + grid[1:]) / 2)[::3]
-    rows = np.array([L._table_row(float(lam), nu, LayerBase(base), 2.0) for lam in middles])
+    rows = np.array([LT._table_row(float(lam), nu, LayerBase(base), 2.0) for lam in middles])
     interpolated = np.column_stack([table.stiffness_factor(middles), table.edge_factor(middles),
                                     table.profile_factor(middles), table.force_factor(middles)])
     worst = np.max(np.abs(interpolated / rows - 1))
@@ -96,7 +98,7 @@ def test_the_tables_interpolate_direct_solves_at_the_mid_points(nu, base):
 def test_below_the_table_the_half_space_series_holds():
     table = L.layer_table(NU, "bonded")
     lam = np.array([1e-6, 3e-5, 0.99 * L.LAMBDA_MIN])
-    rows = np.array([L._table_row(float(value), NU, LayerBase.BONDED, 2.0) for value in lam])
+    rows = np.array([LT._table_row(float(value), NU, LayerBase.BONDED, 2.0) for value in lam])
     series = np.column_stack([table.stiffness_factor(lam), table.edge_factor(lam), table.profile_factor(lam),
                               table.force_factor(lam)])
     assert np.max(np.abs(series / rows - 1)) < SERIES_TOL
@@ -202,17 +204,17 @@ def test_a_cached_table_is_read_back_and_keyed_by_the_code(tmp_path, monkeypatch
 
     def stub(nu, base, exponent):
         built.append(nu)
-        grid = L._table_grid()
-        return {"s": grid, "k0": np.array(1.0), **{name: np.zeros(grid.size) for name in L._COLUMNS}}
+        grid = LT._table_grid()
+        return {"s": grid, "k0": np.array(1.0), **{name: np.zeros(grid.size) for name in LT._COLUMNS}}
 
-    monkeypatch.setattr(L, "_build_table", stub)
-    first = L._stored_table(0.123, LayerBase.BONDED, 2.0)
-    second = L._stored_table(0.123, LayerBase.BONDED, 2.0)
+    monkeypatch.setattr(LT, "_build_table", stub)
+    first = LT._stored_table(0.123, LayerBase.BONDED, 2.0)
+    second = LT._stored_table(0.123, LayerBase.BONDED, 2.0)
     assert built == [0.123] and np.array_equal(first["s"], second["s"])
     path = L.table_cache_path(0.123, "bonded", 2.0)
-    assert path.exists() and L._SOURCE_DIGEST in path.name
+    assert path.exists() and LT._SOURCE_DIGEST in path.name
     path.write_bytes(b"damaged")
-    L._stored_table(0.123, LayerBase.BONDED, 2.0)
+    LT._stored_table(0.123, LayerBase.BONDED, 2.0)
     assert built == [0.123, 0.123]
     monkeypatch.setenv("MDR_EVENTS_NO_CACHE", "1")
     assert L.table_cache_path(0.123, "bonded", 2.0) is None

@@ -1,0 +1,77 @@
+"""Layers of finite thickness (:mod:`mdr_events.reproduction.finite_layer`): the pull-off force against ``a/h`` with
+the half-space's and the thin limits drawn, and ``F_N(d)`` of an indentation cycle on a layer beside the
+half-space's."""
+
+from __future__ import annotations
+
+import matplotlib.pyplot as plt
+import numpy as np
+import xarray as xr
+from matplotlib.figure import Figure
+
+from mdr_events.plotting.figures import LEGEND_FONTSIZE
+
+__all__ = ["plot_pull_off_against_thickness", "plot_layer_cycles"]
+
+
+def plot_pull_off_against_thickness(curves: dict[str, xr.Dataset], limits: dict[str, float]) -> Figure:
+    """``|F_po| / ((3/2)πΔγ1 R)`` against ``a/h`` at pull-off, log–log, one line per curve, with the half-space (1)
+    and each thin limit (dashed) drawn.
+
+    Parameters
+    ----------
+    curves : dict of str to xarray.Dataset
+        Label -> :func:`~mdr_events.layer_pull_off_curve` (finite thicknesses).
+    limits : dict of str to float
+        Label -> a thin limit over ``(3/2)πΔγ1 R``.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
+    figure, axes = plt.subplots(figsize=(6.4, 4.6), constrained_layout=True)
+    for index, (label, curve) in enumerate(curves.items()):
+        scale = 1.5 * np.pi * curve.attrs["param_dgamma1"] * curve.attrs["param_R"]
+        axes.loglog(curve.relative_radius.values, -curve.pull_off_force.values / scale, color=f"C{index // 2}",
+                    ls="-" if index % 2 == 0 else "--", marker="o" if index % 2 == 0 else "x", ms=3, lw=1.3,
+                    label=label)
+    axes.axhline(1.0, color="k", lw=0.9, ls=":", label="half-space (JKR, Δγ1)")
+    for index, (label, value) in enumerate(limits.items()):
+        axes.axhline(value, color="0.4", lw=0.9, ls=(0, (5, 2 + 2 * index)), label=label)
+    axes.set_xlabel("contact radius at pull-off over the thickness, a/h")
+    axes.set_ylabel("pull-off force |F_po| / ((3/2) π Δγ1 R)")
+    axes.legend(fontsize=LEGEND_FONTSIZE)
+    axes.grid(True, which="both", lw=0.3, alpha=0.5)
+    return figure
+
+
+def plot_layer_cycles(cycles: dict[str, xr.Dataset]) -> Figure:
+    """``F_N(d)`` of :func:`~mdr_events.layer_indentation_cycle` for each label (loading on Δγ0, pinned, shrinking on
+    Δγ1 to the jump-off).
+
+    Parameters
+    ----------
+    cycles : dict of str to xarray.Dataset
+        Label -> an indentation cycle.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
+    figure, axes = plt.subplots(figsize=(6.4, 4.6), constrained_layout=True)
+    for index, (label, cycle) in enumerate(cycles.items()):
+        stages = cycle.stage.values
+        for number, stage in enumerate(dict.fromkeys(stages)):
+            chosen = np.flatnonzero(stages == stage)
+            if stage == "pinned":  # (exactly linear in d: its ends alone, no joins of collinear segments, whose
+                chosen = chosen[[0, -1]]  # direction is the rounding's and moves pixels between machines)
+            axes.plot(cycle.depth.values[chosen] * 1e3, cycle.normal_force.values[chosen], color=f"C{index}",
+                      lw=1.4, label=label if number == 0 else None)
+    axes.axhline(0.0, color="k", lw=0.6)
+    axes.set_xlabel("depth d (mm)")
+    axes.set_ylabel("normal force F_N (N)")
+    axes.legend(fontsize=LEGEND_FONTSIZE)
+    axes.grid(True, lw=0.3, alpha=0.5)
+    return figure

@@ -1,0 +1,161 @@
+"""The layer's compliance ``C(ξh)`` and the kernel ``k(v)`` of the punch equation (L1), interpolated.
+
+Part of :mod:`mdr_events.theory.layer` (the equations (L1)–(L5) are stated there).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from mdr_events.contact.layer import Layer, LayerBase
+from mdr_events.validation import check_real
+
+__all__ = ["LAMBDA_MAX", "compliance_function", "kernel"]
+
+#: The largest ``a/h`` of a table (the thin side); direct solves (:func:`solve_punch`) take any ``λ``.
+LAMBDA_MAX = 64.0
+#: The kernel's quadrature in ``u``: panels of this width with 20 nodes each up to :data:`_U_MAX`, where ``1 − C``
+#: is below 1e-17 (it decays as ``u² e^{-2u}``); exact to 1e-15 for ``|v| ≤ 200``.
+_U_PANEL, _U_NODES, _U_MAX = 0.1, 20, 24.0
+#: The kernel's Chebyshev interpolants: unit panels in ``v`` with 20 points (error below 1e-14: ``k`` is analytic in
+#: ``|Im v| < 2``).
+_V_PANEL, _V_NODES = 1.0, 20
+
+
+def _base(base: LayerBase | str) -> LayerBase:
+    return base if isinstance(base, LayerBase) else Layer(1.0, base).base
+
+
+def _nu(nu: float) -> float:
+    return check_real("nu", nu, "a finite number in [0, 0.5]", lambda value: 0.0 <= value <= 0.5)
+
+
+def _one_minus_compliance(u: np.ndarray, nu: float, base: LayerBase) -> np.ndarray:
+    """``1 − C(u)`` without cancellation (numerator and denominator scaled by ``e^{-2u}``); 1 at ``u = 0``."""
+    e2 = np.exp(-2.0 * u)
+    e4 = e2 * e2
+    if base is LayerBase.BONDED:
+        kappa = 3.0 - 4.0 * nu
+        return ((2.0 * kappa * e4 + (1.0 + kappa**2 + 4.0 * u + 4.0 * u**2) * e2)
+                / (kappa * (1.0 + e4) + (1.0 + kappa**2 + 4.0 * u**2) * e2))
+    numerator = 2.0 * (2.0 * u - np.expm1(-2.0 * u)) * e2
+    denominator = -np.expm1(-4.0 * u) + 4.0 * u * e2
+    safe = np.where(u == 0.0, 1.0, denominator)
+    return np.where(u == 0.0, 1.0, numerator / safe)
+
+
+def compliance_function(t, nu: float, base: LayerBase | str = LayerBase.BONDED) -> np.ndarray:
+    r"""The layer's Hankel-space compliance ``C(ξh)`` relative to the half-space's.
+
+    .. math:: \hat w(\xi) = \frac{2\, C(\xi h)}{E^* \xi}\, \hat p(\xi), \qquad C \to 1 \ (\xi h \to \infty)
+
+    Bonded base: ``(2κ sinh 2t − 4t)/(2κ cosh 2t + 1 + κ² + 4t²)``, ``κ = 3 − 4ν``; frictionless base:
+    ``(cosh 2t − 1)/(sinh 2t + 2t)`` (derived in :func:`mdr_events.theory.layer_symbolic.derive_layer_model`).
+
+    Parameters
+    ----------
+    t : float or array_like
+        ``ξ h ≥ 0``.
+    nu : float
+        Poisson's ratio, in ``[0, 0.5]`` (0.5 included).
+    base : LayerBase or str, default LayerBase.BONDED
+        The layer's base.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``C(t)``, evaluated as ``1 − (1 − C)`` from the cancellation-free ``1 − C``.
+
+    Raises
+    ------
+    ValueError
+        ``nu`` outside ``[0, 0.5]`` or ``base`` unknown.
+    """
+    return 1.0 - _one_minus_compliance(np.asarray(t, dtype=float), _nu(nu), _base(base))
+
+
+def _direct_kernel(v: np.ndarray, nu: float, base: LayerBase) -> np.ndarray:
+    """``k(v) = ∫₀^∞ (1 − C(u)) cos(uv) du`` by composite Gauss–Legendre quadrature (the reference)."""
+    x, w = np.polynomial.legendre.leggauss(_U_NODES)
+    starts = np.arange(0.0, _U_MAX, _U_PANEL)
+    u = (starts[:, None] + (x[None, :] + 1.0) * _U_PANEL / 2.0).ravel()
+    weighted = _one_minus_compliance(u, nu, base) * np.tile(w * _U_PANEL / 2.0, starts.size)
+    flat = np.abs(np.asarray(v, dtype=float)).ravel()
+    out = np.empty(flat.size)
+    for start in range(0, flat.size, 512):
+        out[start:start + 512] = np.cos(np.outer(flat[start:start + 512], u)) @ weighted
+    return out.reshape(np.shape(v))
+
+
+@dataclass(frozen=True)
+class _ChebyshevKernel:
+    """``k(v)`` as piecewise Chebyshev series on unit panels of ``|v|`` up to ``v_max``."""
+
+    coefficients: np.ndarray
+    v_max: float
+
+    @classmethod
+    def build(cls, nu: float, base: LayerBase, v_max: float) -> "_ChebyshevKernel":
+        panels = int(math.ceil(v_max / _V_PANEL)) + 1
+        x = np.cos(np.pi * (np.arange(_V_NODES) + 0.5) / _V_NODES)
+        v = (np.arange(panels)[:, None] + (x[None, :] + 1.0) / 2.0) * _V_PANEL
+        values = _direct_kernel(v, nu, base)
+        vandermonde = np.polynomial.chebyshev.chebvander(x, _V_NODES - 1)
+        coefficients = np.linalg.solve(vandermonde, values.T).T
+        return cls(coefficients, panels * _V_PANEL)
+
+    def __call__(self, v: np.ndarray) -> np.ndarray:
+        v = np.abs(v)
+        panel = np.minimum((v / _V_PANEL).astype(int), len(self.coefficients) - 1)
+        local = 2.0 * (v / _V_PANEL - panel) - 1.0
+        c = self.coefficients[panel]
+        b1 = np.zeros(v.shape)
+        b2 = np.zeros(v.shape)
+        for j in range(_V_NODES - 1, 0, -1):
+            b1, b2 = c[..., j] + 2.0 * local * b1 - b2, b1
+        return c[..., 0] + local * b1 - b2
+
+
+_KERNELS: dict[tuple[float, LayerBase], _ChebyshevKernel] = {}
+
+
+def _kernel_for(nu: float, base: LayerBase, v_max: float) -> _ChebyshevKernel:
+    """The interpolated kernel of ``(ν, base)`` reaching at least ``v_max`` (built once, widened when needed)."""
+    known = _KERNELS.get((nu, base))
+    if known is None or known.v_max < v_max:
+        known = _ChebyshevKernel.build(nu, base, max(v_max, 2.0 * LAMBDA_MAX + 2.0))
+        _KERNELS[nu, base] = known
+    return known
+
+
+def kernel(v, nu: float, base: LayerBase | str = LayerBase.BONDED) -> np.ndarray:
+    r"""The kernel of the Fredholm equation (L1): ``k(v) = ∫₀^∞ [1 − C(u)] cos(uv) du``, in units of ``1/h``.
+
+    .. math:: k(v) = \int_0^\infty [1 - C(u)]\cos(uv)\,\mathrm{d}u
+
+    Parameters
+    ----------
+    v : float or array_like
+        The argument (``(t ∓ s)/h``); even in ``v``.
+    nu : float
+        Poisson's ratio, in ``[0, 0.5]``.
+    base : LayerBase or str, default LayerBase.BONDED
+        The layer's base.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``k(v)`` (from the Chebyshev interpolants, within 1e-14 of the quadrature).
+
+    Raises
+    ------
+    ValueError
+        ``nu`` outside ``[0, 0.5]`` or ``base`` unknown.
+    """
+    v = np.asarray(v, dtype=float)
+    nu, base = _nu(nu), _base(base)
+    return _kernel_for(nu, base, float(np.max(np.abs(v), initial=0.0)) + 1.0)(v)
+

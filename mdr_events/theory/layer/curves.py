@@ -1,0 +1,303 @@
+r"""The normal contact of a :class:`~mdr_events.Contact` on its layer as labelled results: the adhesive branches
+against the depth (:func:`layer_normal_curve`), an indentation to ``d_max`` and back to the jump-off
+(:func:`layer_indentation_cycle`) and the pull-off force against the thickness (:func:`layer_pull_off_curve`).
+
+Part of :mod:`mdr_events.theory.layer` (the relations (L1)–(L5) are stated there). The depth of the branch of radius
+``a`` is ``d(a) = g(a) − Δl(a)`` (generalised (9)); its stable part is ``a ≥ a_jo`` (``∂d/∂a ≥ 0``, ``a_jo`` the
+radius of the jump-off under depth control, the least depth). A depth is inverted on it by bisection in ``ln a``
+inside the bracket of a logarithmic scan, for all depths at once.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+import xarray as xr
+
+from mdr_events.contact.indenters import Paraboloid, PowerLaw
+from mdr_events.contact.layer import Layer
+from mdr_events.contact.model import Contact
+from mdr_events.io.datasets import register_schema, stamp
+from mdr_events.parameters import PAPER_D_MAX, PAPER_V
+from mdr_events.theory.layer.compliance import LAMBDA_MAX
+from mdr_events.theory.layer.pull_off import pull_off
+from mdr_events.theory.layer.relations import _abel_factor, _power_law, branch_depth, normal_force
+from mdr_events.validation import check_count, check_real, real_array, shown
+
+__all__ = ["layer_normal_curve", "layer_indentation_cycle", "layer_pull_off_curve", "LAYER_CURVE_CONTENT",
+           "LAYER_CYCLE_CONTENT", "LAYER_PULL_OFF_CONTENT"]
+
+#: The ``content`` attribute of :func:`layer_normal_curve`.
+LAYER_CURVE_CONTENT = "layer normal curve"
+#: The ``content`` attribute of :func:`layer_indentation_cycle`.
+LAYER_CYCLE_CONTENT = "layer indentation cycle"
+#: The ``content`` attribute of :func:`layer_pull_off_curve`.
+LAYER_PULL_OFF_CONTENT = "layer pull-off curve"
+register_schema(LAYER_CURVE_CONTENT, {"contact_radius": ("branch", "depth"), "normal_force": ("branch", "depth"),
+                                      "contact_area": ("branch", "depth"), "relative_radius": ("branch", "depth")})
+register_schema(LAYER_CYCLE_CONTENT, {"depth": ("sample",), "contact_radius": ("sample",),
+                                      "normal_force": ("sample",), "contact_area": ("sample",)})
+register_schema(LAYER_PULL_OFF_CONTENT, {"pull_off_force": ("thickness",), "pull_off_radius": ("thickness",),
+                                         "pull_off_depth": ("thickness",), "relative_radius": ("thickness",)})
+
+#: Points of the logarithmic scan of ``d(a)`` that brackets each depth (the bisection refines it).
+_SCAN_POINTS = 400
+#: Bisection steps in ``ln a`` inside one scan interval (its width ``< 0.05``): ``0.05 · 2⁻⁶⁰`` is far below ulps.
+_BISECTIONS = 60
+#: The scan starts this far below the half-space's pull-off radius (``d`` falls from 0 there, the least depth lies
+#: above it).
+_SCAN_BELOW = 1e-4
+
+#: The scan's scale without adhesion at depth 0 (m): no contact to scan, any positive radius serves.
+_SMALLEST_SCALE = 1e-9
+
+#: The variables' units and long names.
+_VARIABLES = {"contact_radius": ("m", "contact radius a"), "normal_force": ("N", "normal force F_N"),
+              "contact_area": ("m2", "contact area pi a^2"), "relative_radius": ("1", "contact radius over thickness a/h"),
+              "depth": ("m", "indentation depth d")}
+
+
+def _material(contact: Any) -> tuple[float, float, Layer]:
+    """``(E*, ν, layer)`` of a contact of a paraboloid or power law; else the one-line error."""
+    if not isinstance(contact, Contact):
+        raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a "
+                        "mdr_events.Contact, e.g. Contact.paper().replace(h=5e-3)")
+    if not isinstance(contact.indenter, (Paraboloid, PowerLaw)):
+        raise ValueError(f"contact.indenter={contact.indenter!r} is not allowed on a layer yet; allowed: a Paraboloid "
+                         "or a PowerLaw (the tabulated factors; a general profile: theory.layer.equivalent_profile)")
+    return contact.elastomer.E_star, contact.elastomer.nu, contact.layer
+
+
+def _radius_scale(contact: Contact, dgamma: float, depth: float) -> tuple[float, float]:
+    """The scan's range in ``a``: from far below the half-space's pull-off radius to where ``d(a) ≥ depth`` (the
+    largest ``a/h`` of the tables at most)."""
+    E_star, nu, layer = _material(contact)
+    c, n = _power_law(contact.indenter)
+    kappa = _abel_factor(n)
+    pulled = (9.0 * dgamma / (2.0 * E_star * n**2 * kappa**2 * c**2)) ** (1.0 / (2.0 * n - 1.0))
+    hertz = (max(depth, 0.0) / (kappa * c)) ** (1.0 / n)
+    scale = max(pulled, hertz) or _SMALLEST_SCALE
+    low, high = _SCAN_BELOW * scale, 2.0 * scale
+    ceiling = LAMBDA_MAX * layer.thickness
+    while float(branch_depth(min(high, ceiling), contact.indenter, E_star, nu, dgamma, layer)) < depth:
+        if high >= ceiling:
+            raise ValueError(f"depth={depth!r} m is not allowed on {layer.describe()}: its contact radius exceeds "
+                             f"a/h = {LAMBDA_MAX:g}; allowed: depths whose radius is below {ceiling:.6g} m")
+        high *= 2.0
+    return low, min(high, ceiling)
+
+
+def _stable_radius(contact: Contact, dgamma: float, depths: np.ndarray) -> np.ndarray:
+    """The radius on the stable part of the branch of ``dgamma`` at each depth (``nan`` below the least depth)."""
+    E_star, nu, layer = _material(contact)
+    low, high = _radius_scale(contact, dgamma, float(np.max(depths, initial=0.0)))
+    logs = np.linspace(math.log(low), math.log(high), _SCAN_POINTS)
+
+    def depth_of(log_radius: np.ndarray) -> np.ndarray:
+        return branch_depth(np.exp(log_radius), contact.indenter, E_star, nu, dgamma, layer)
+
+    scanned = depth_of(logs)
+    turn = int(np.argmin(scanned))
+    stable, stable_depths = logs[turn:], scanned[turn:]
+    if 0 < turn < logs.size - 1:  # (the least depth itself, not the scan's: every depth above it has a bracket)
+        least, at_least = _least(depth_of, logs, turn)
+        stable = np.concatenate([[at_least], logs[turn + 1:]])
+        stable_depths = np.concatenate([[least], scanned[turn + 1:]])
+    index = np.clip(np.searchsorted(stable_depths, depths), 1, max(stable.size - 1, 1))
+    lower, upper = stable[index - 1], stable[index]
+    for _ in range(_BISECTIONS):
+        middle = 0.5 * (lower + upper)
+        above = depth_of(middle) >= depths
+        lower, upper = np.where(above, lower, middle), np.where(above, middle, upper)
+    radius = np.exp(0.5 * (lower + upper))
+    return np.where(depths >= stable_depths[0], radius, np.nan)
+
+
+def _variables(contact: Contact, depth, radius, dims: tuple[str, ...]) -> dict[str, xr.Variable]:
+    """Radius, force, area and ``a/h`` as labelled variables (the force 0 and the radius 0 where ``nan``: no
+    contact)."""
+    E_star, nu, layer = _material(contact)
+    inside = np.isfinite(radius)
+    safe = np.where(inside, radius, 0.0)
+    force = np.where(inside, normal_force(depth, safe, contact.indenter, E_star, nu, layer), np.nan)
+    values = {"contact_radius": radius, "normal_force": force, "contact_area": np.pi * radius**2,
+              "relative_radius": radius / layer.thickness}
+    return {name: xr.Variable(dims, value, {"units": _VARIABLES[name][0], "long_name": _VARIABLES[name][1]})
+            for name, value in values.items()}
+
+
+def _stamped(dataset: xr.Dataset, contact: Contact, d_max: float, content: str) -> xr.Dataset:
+    """The provenance, the contact's attributes (its layer's among them) and ``content``."""
+    stamp(dataset, contact.parameters(d_max, PAPER_V), content=content)
+    dataset.attrs.update(contact.to_attrs())
+    dataset.attrs.update(contact.layer.to_attrs())  # (the half-space too: the curve is about the layer)
+    if content == LAYER_PULL_OFF_CONTENT:  # (no motion: no depth of one)
+        for key in ("param_d_max", "param_d_max_units", "param_v", "param_v_units"):
+            dataset.attrs.pop(key, None)
+    return dataset
+
+
+def layer_normal_curve(contact: Contact, depths) -> xr.Dataset:
+    r"""The adhesive branches of a paraboloid or power law on the contact's layer against the depth.
+
+    .. math:: d = g(a) - \sqrt{\frac{4\pi a\,\Delta\gamma}{K'(a)}} \quad (9), \qquad
+              F_N = F_0(a) + K(a)\,(d - g(a)) \quad (10)
+
+    for ``Δγ0`` (the branch of indentation) and ``Δγ1`` (that of detachment), on the stable part of each (``a`` at or
+    beyond the jump-off, ``∂d/∂a ≥ 0``); at ``h = inf`` the JKR branches of
+    :func:`~mdr_events.jkr_contact_radius`.
+
+    Parameters
+    ----------
+    contact : Contact
+        A paraboloid or power law with its elastomer, adhesion and layer (``Contact.layer``; the half-space too).
+    depths : float or array_like
+        The depths ``d`` in m (finite; negative ones are tensile).
+
+    Returns
+    -------
+    xarray.Dataset
+        Coordinates ``branch`` (``"dgamma0"``, ``"dgamma1"``) and ``depth``; variables ``contact_radius`` (m),
+        ``normal_force`` (N), ``contact_area`` (m²) and ``relative_radius`` (``a/h``), ``nan`` below a branch's
+        jump-off depth (no contact there); attributes of :meth:`Contact.to_attrs` with the layer's.
+
+    Raises
+    ------
+    TypeError
+        ``contact`` not a Contact, depths not real numbers.
+    ValueError
+        Another indenter, a non-finite depth, or a radius beyond the tables (``a/h > 64``).
+    """
+    depth = np.atleast_1d(real_array("depths", depths, "finite numbers (m)")).astype(float)
+    if depth.ndim != 1 or not np.all(np.isfinite(depth)):
+        raise ValueError(f"depths={shown(depths)} is not allowed; allowed: finite numbers (m), one axis")
+    _material(contact)
+    radius = np.array([_stable_radius(contact, dgamma, depth)
+                       for dgamma in (contact.adhesion.dgamma0, contact.adhesion.dgamma1)])
+    coords = {"branch": ("branch", ["dgamma0", "dgamma1"], {"units": "1", "long_name": "adhesive branch"}),
+              "depth": ("depth", depth, {"units": "m", "long_name": _VARIABLES["depth"][1]})}
+    dataset = xr.Dataset(_variables(contact, depth[None, :], radius, ("branch", "depth")), coords=coords)
+    deepest = float(np.max(depth))
+    return _stamped(dataset, contact, deepest if deepest > 0.0 else PAPER_D_MAX, LAYER_CURVE_CONTENT)
+
+
+def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201) -> xr.Dataset:
+    r"""Indentation to ``d_max`` on the ``Δγ0`` branch and back under depth control to the jump-off on ``Δγ1``.
+
+    From the first touch (``d = 0``, the radius jumps in on ``Δγ0``) the radius grows on the ``Δγ0`` branch of (9);
+    back from ``d_max`` it stays pinned at ``a_max`` (``F_N = F_0(a_max) + K(a_max)(d − g(a_max))``, (10)) until
+    the depth reaches the ``Δγ1`` branch, along which it shrinks to the jump-off (its least depth), where the contact
+    comes off.
+
+    Parameters
+    ----------
+    contact : Contact
+        A paraboloid or power law with its elastomer, adhesion (``Δγ0 ≤ Δγ1``) and layer.
+    d_max : float
+        The deepest depth in m, > 0.
+    samples : int, default 201
+        Samples of each of the three stages (loading, pinned, shrinking).
+
+    Returns
+    -------
+    xarray.Dataset
+        Dimension ``sample``; variables ``depth`` (m), ``contact_radius`` (m), ``normal_force`` (N),
+        ``contact_area`` (m²), ``relative_radius`` (``a/h``) and the coordinate ``stage`` (``"loading"``,
+        ``"pinned"``, ``"shrinking"``); attributes of :meth:`Contact.to_attrs` with the layer's.
+
+    Raises
+    ------
+    TypeError
+        ``contact`` not a Contact.
+    ValueError
+        Another indenter, ``d_max`` not a finite number > 0, ``Δγ1 < Δγ0``, or ``samples`` < 2.
+    """
+    d_max = check_real("d_max", d_max, "a finite number > 0 (m)", lambda value: value > 0.0)
+    samples = check_count("samples", samples, 2)
+    E_star, nu, layer = _material(contact)
+    low, high = contact.adhesion.dgamma0, contact.adhesion.dgamma1
+    if high < low:
+        raise ValueError(f"contact.adhesion={contact.adhesion!r} is not allowed here; allowed: dgamma1 >= dgamma0")
+    loading = np.linspace(0.0, d_max, samples)
+    a_max = float(_stable_radius(contact, low, np.array([d_max]))[0])
+    unpinned = float(branch_depth(a_max, contact.indenter, E_star, nu, high, layer))
+    least, _ = _jump_off(contact, high)
+    pinned = np.linspace(d_max, unpinned, samples)
+    shrinking = np.linspace(unpinned, least, samples)
+    depth = np.concatenate([loading, pinned, shrinking])
+    radius = np.concatenate([_stable_radius(contact, low, loading), np.full(samples, a_max),
+                             _stable_radius(contact, high, shrinking)])
+    stage = np.repeat(["loading", "pinned", "shrinking"], samples)
+    variables = _variables(contact, depth, radius, ("sample",))
+    variables["depth"] = xr.Variable(("sample",), depth, {"units": "m", "long_name": _VARIABLES["depth"][1]})
+    dataset = xr.Dataset(variables, coords={"stage": ("sample", stage, {"units": "1", "long_name": "stage"})})
+    return _stamped(dataset, contact, d_max, LAYER_CYCLE_CONTENT)
+
+
+def _jump_off(contact: Contact, dgamma: float) -> tuple[float, float]:
+    """The least depth of the branch of ``dgamma`` and its radius: the jump-off under depth control (m, m)."""
+    E_star, nu, layer = _material(contact)
+    low, high = _radius_scale(contact, dgamma, 0.0)
+    logs = np.linspace(math.log(low), math.log(high), _SCAN_POINTS)
+
+    def depth_of(log_radius):
+        return branch_depth(np.exp(log_radius), contact.indenter, E_star, nu, dgamma, layer)
+
+    least, at_least = _least(depth_of, logs, int(np.argmin(depth_of(logs))))
+    return least, float(np.exp(at_least))
+
+
+def _least(depth_of, logs: np.ndarray, best: int) -> tuple[float, float]:
+    """The least depth near the scan's node ``best`` and its ``ln a`` (Brent's method on the nodes around it)."""
+    from scipy.optimize import minimize_scalar
+
+    best = min(max(best, 1), logs.size - 2)
+    found = minimize_scalar(lambda value: float(depth_of(value)), bracket=(logs[best - 1], logs[best], logs[best + 1]),
+                            method="brent", options={"xtol": 1e-12})
+    return float(found.fun), float(found.x)
+
+
+def layer_pull_off_curve(contact: Contact, thicknesses) -> xr.Dataset:
+    r"""The pull-off force under force control against the layer's thickness, on the contact's base, with ``Δγ1``.
+
+    .. math:: F_\mathrm{po}(h) = \min_a\,[F_0(a) - K(a)\,\Delta l(a)] \qquad (10)
+
+    (``−(3/2) π Δγ1 R`` for the paraboloid on the half-space, ``h = inf``); :func:`pull_off` at each thickness.
+
+    Parameters
+    ----------
+    contact : Contact
+        A paraboloid or power law with its elastomer, adhesion and the layer's base (its thickness is replaced).
+    thicknesses : float or array_like
+        The thicknesses ``h`` in m (> 0; ``inf`` the half-space), one axis.
+
+    Returns
+    -------
+    xarray.Dataset
+        Coordinate ``thickness`` (m); variables ``pull_off_force`` (N), ``pull_off_radius`` (m), ``pull_off_depth``
+        (m) and ``relative_radius`` (``a/h`` at pull-off); the contact's attributes.
+
+    Raises
+    ------
+    TypeError
+        ``contact`` not a Contact.
+    ValueError
+        Another indenter, a thickness not > 0, or a pull-off beyond the tables (``a/h > 64``).
+    """
+    E_star, nu, _ = _material(contact)
+    h = np.atleast_1d(real_array("thicknesses", thicknesses, "numbers > 0 (m), inf the half-space")).astype(float)
+    if h.ndim != 1 or not np.all(h > 0.0):
+        raise ValueError(f"thicknesses={shown(thicknesses)} is not allowed; allowed: numbers > 0 (m), inf the "
+                         "half-space, one axis")
+    found = [pull_off(contact.indenter, E_star, nu, contact.adhesion.dgamma1, Layer(float(value), contact.layer.base))
+             for value in h]
+    values = {"pull_off_force": ([p.force for p in found], "N", "pull-off force (force control, dgamma1)"),
+              "pull_off_radius": ([p.radius for p in found], "m", "contact radius at pull-off"),
+              "pull_off_depth": ([p.depth for p in found], "m", "depth at pull-off"),
+              "relative_radius": ([p.relative_radius for p in found], "1", "a/h at pull-off")}
+    dataset = xr.Dataset({name: ("thickness", np.array(v), {"units": u, "long_name": ln})
+                          for name, (v, u, ln) in values.items()},
+                         coords={"thickness": ("thickness", h, {"units": "m", "long_name": "layer thickness h"})})
+    return _stamped(dataset, contact, PAPER_D_MAX, LAYER_PULL_OFF_CONTENT)
