@@ -130,5 +130,7 @@ autosummary_context = {"public_modules": ["mdr_events", "mdr_events.theory.analy
                                           "mdr_events.theory.mindlin", "mdr_events.theory.tabulated",
                                           "mdr_events.theory.symbolic", "mdr_events.theory.rate_adhesion",
                                           "mdr_events.theory.layer", "mdr_events.theory.layer_symbolic",
+                                          "mdr_events.theory.layer_tangential",
+                                          "mdr_events.theory.layer_tangential_symbolic",
                                           "mdr_events.models.continuum",
                                           "mdr_events.dem"]}
