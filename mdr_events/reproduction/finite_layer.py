@@ -7,11 +7,17 @@ pull-off over the half-space's ``(3/2)πΔγ1 R`` follow from the thin layers' s
 hand: the incompressible bonded layer (thin film, ``K = 3πGa⁴/(8h³)``) ``3πΔγ1 R``, a ratio 2; the frictionless
 base (Winkler, ``κ = E*/h``) ``2πΔγ1 R``, a ratio 4/3; both independent of ``h`` (``tests/theory/test_layer_curves``
 checks the approach).
+
+The outside check (issue 34, item 6): ContactMechanics' boundary-element forces of a non-adhesive paraboloid on a
+bonded 5 mm layer (ν = 0.49, a/h from 0.4 to 1.5), recorded by ``tools/contactmechanics_layer_check.py`` in
+``data/layer_contactmechanics_check.csv`` with its own grid and box errors, against the MDR's forces computed afresh.
 """
 
 from __future__ import annotations
 
+import csv
 import math
+from importlib import resources
 from pathlib import Path as FilePath
 from typing import NamedTuple
 
@@ -19,15 +25,18 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.app.result_files import FileOutcome, write_figure
+from mdr_events.contact.indenters import Paraboloid
+from mdr_events.contact.layer import Layer, LayerBase
 from mdr_events.contact.model import Contact
 from mdr_events.parameters import PAPER_D_MAX, Parameters
 from mdr_events.plotting.layer import plot_layer_cycles, plot_pull_off_against_thickness
 from mdr_events.reproduction.markdown import markdown_table
 from mdr_events.reproduction.section import Section, Step
+from mdr_events.theory.layer import branch_depth, normal_force
 from mdr_events.theory.layer.curves import layer_indentation_cycle, layer_pull_off_curve
 
-__all__ = ["FINITE_LAYER", "LAYER_STEM", "LAYER_THICKNESS", "LayerResults", "LayerRow", "layer_results",
-           "layer_rows", "layer_lines", "THIN_LIMITS"]
+__all__ = ["FINITE_LAYER", "LAYER_STEM", "LAYER_THICKNESS", "LayerResults", "LayerRow", "OutsideRow", "layer_results",
+           "layer_rows", "layer_lines", "outside_check", "THIN_LIMITS", "OUTSIDE_CHECK"]
 
 #: The stem of the section's figures in ``results/``.
 LAYER_STEM = "finite_layer"
@@ -42,6 +51,10 @@ THICKNESS_FACTORS = np.geomspace(1e3, 1.5e-2, 25)
 THIN_LIMITS = {"bonded": 2.0, "frictionless": 4.0 / 3.0}
 #: Samples of each stage of an indentation cycle.
 CYCLE_SAMPLES = 201
+#: ContactMechanics' recorded forces (``tools/contactmechanics_layer_check.py``).
+OUTSIDE_CHECK = "data/layer_contactmechanics_check.csv"
+#: The radii the MDR's depth is inverted on, relative to the half-space's ``sqrt(R d)``: a/h up to 3 at 5 mm.
+_RADIUS_GRID = np.geomspace(1e-5, 2.0, 40001)
 
 
 class LayerRow(NamedTuple):
@@ -54,11 +67,45 @@ class LayerRow(NamedTuple):
 
 
 class LayerResults(NamedTuple):
-    """The pull-off curves (label -> dataset) and the cycles (label -> dataset) with the table's rows."""
+    """The pull-off curves (label -> dataset) and the cycles (label -> dataset) with the table's rows, and the
+    outside check's rows."""
 
     pull_off: dict[str, xr.Dataset]
     cycles: dict[str, xr.Dataset]
     rows: list[LayerRow]
+    outside: list["OutsideRow"] = []
+
+
+class OutsideRow(NamedTuple):
+    """One case of the outside check: ContactMechanics' recorded force and the MDR's computed now."""
+
+    R: float  #: m
+    depth: float  #: m
+    nu: float
+    thickness: float  #: m
+    relative_radius: float  #: the MDR's a/h
+    force_mdr: float  #: N
+    force_cm: float  #: N, ContactMechanics' finest grid in its larger box
+    cm_change: float  #: ContactMechanics' own uncertainty: its grid and box changes, relative, summed
+
+
+def outside_check() -> list[OutsideRow]:
+    """ContactMechanics' recorded forces (:data:`OUTSIDE_CHECK`) beside the MDR's, computed afresh: the non-adhesive
+    paraboloid's radius at the depth on the bonded layer (its branch (9) at ``Δγ = 0`` inverted on a fine grid of
+    radii) and its force (10)."""
+    rows = []
+    with resources.files("mdr_events.reproduction").joinpath(OUTSIDE_CHECK).open(encoding="utf-8") as handle:
+        for record in csv.DictReader(handle):
+            R, depth, nu, h = (float(record[key]) for key in ("R_m", "depth_m", "nu", "thickness_m"))
+            E_star = Parameters.paper(R).E / (1.0 - nu**2)
+            layer, indenter = Layer(h, LayerBase.BONDED), Paraboloid(R)
+            radii = _RADIUS_GRID * math.sqrt(R * depth)
+            radius = float(np.interp(depth, branch_depth(radii, indenter, E_star, nu, 0.0, layer), radii))
+            rows.append(OutsideRow(R, depth, nu, h, radius / h,
+                                   float(normal_force(depth, radius, indenter, E_star, nu, layer)),
+                                   float(record["normal_force_cm_N"]),
+                                   float(record["cm_grid_change"]) + float(record["cm_box_change"])))
+    return rows
 
 
 def _pull_off_radius(contact: Contact) -> float:
@@ -109,6 +156,24 @@ def _asymptote_lines(results: LayerResults) -> list[str]:
     return lines
 
 
+def _outside_lines(rows: list[OutsideRow]) -> list[str]:
+    """The outside check's paragraph and table."""
+    table = markdown_table(["R", "d", "a/h", "F_N, MDR", "F_N, ContactMechanics", "MDR / CM − 1", "CM's own change"],
+                           [[f"{row.R * 1e3:g} mm", f"{row.depth * 1e3:g} mm", f"{row.relative_radius:.3f}",
+                             f"{row.force_mdr:.6g} N", f"{row.force_cm:.6g} N",
+                             f"{row.force_mdr / row.force_cm - 1.0:.1e}", f"{row.cm_change:.1e}"] for row in rows],
+                           ["default"] * 2 + ["right"] * 5)
+    worst = max(abs(row.force_mdr / row.force_cm - 1.0) for row in rows)
+    return ["An outside check: ContactMechanics (`PeriodicFFTElasticHalfSpace(..., thickness=h, poisson=ν)`, a "
+            "boundary-element method on a periodic FFT grid, the Green's function of a layer bonded to a rigid base "
+            "with a frictionless top) against the MDR on the same layer (5 mm, ν = 0.49 < 0.5, where its Green's "
+            "function is regular), a non-adhesive paraboloid. ContactMechanics' forces were recorded by "
+            "`tools/contactmechanics_layer_check.py` (its grid a/Δx ≈ 16 and 32, its box 16 and 32 contact radii: "
+            "the last column sums the two changes); the MDR's are computed afresh. They agree to "
+            f"{worst:.1e} of the force, within ContactMechanics' own change, for a/h from "
+            f"{rows[0].relative_radius:.2f} to {max(row.relative_radius for row in rows):.2f}.", ""] + table + [""]
+
+
 def layer_lines(results: LayerResults) -> list[str]:
     """The section of ``results/README.md``."""
     table = markdown_table(["R", "quantity", "half-space", "h = 5 mm, bonded", "layer / half-space"],
@@ -126,7 +191,7 @@ def layer_lines(results: LayerResults) -> list[str]:
             "along it to the jump-off (`me.layer_indentation_cycle`; F_N,min is the pull-off under force control, "
             "which the cycle passes). The layer raises every maximum, as the paper's measurements exceed its "
             "half-space simulation (the tangential part is a later phase of issue 34). Figure: "
-            f"`{LAYER_STEM}_cycles.png`.", ""] + table + [""]
+            f"`{LAYER_STEM}_cycles.png`.", ""] + table + [""] + _outside_lines(results.outside)
 
 
 def _write(results: LayerResults, out: FilePath, keep_agreeing: bool) -> list[list[FileOutcome]]:
@@ -141,8 +206,10 @@ FINITE_LAYER = Section(
     name="finite_layer",
     steps=(Step("layers of finite thickness: pull-off against h (R = 30, 100 mm; bonded, frictionless) and the 5 mm "
                 "layer's indentation cycle (the layer's tables: built once in a few seconds each, then cached)",
-                layer_results),),
-    collect=lambda results: results[0],
+                layer_results),
+           Step("layers of finite thickness: ContactMechanics' recorded forces against the MDR's (the outside check)",
+                outside_check)),
+    collect=lambda results: results[0]._replace(outside=results[1]),
     render=layer_lines,
     write=_write,
     writing="writing the finite-layer figures",
