@@ -16,6 +16,7 @@ from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.theory import layer as L
 from mdr_events.theory import layer_tangential as T
 from mdr_events.theory import layer_tangential_symbolic as S
+from mdr_events.theory.layer import tangential_tables as TT
 
 #: The half-space through the layer's functions: the same formulas with factors exactly 1 (or 1 + O(a/h) at
 #: a/h = 1e-14), so a few ulps.
@@ -131,7 +132,7 @@ def test_the_slope_is_the_edge_identity(lam):
 
 def test_the_table_interpolates_direct_solves():
     table = T.tangential_table(NU)
-    grid = T._table_grid()
+    grid = TT._table_grid()
     for s in grid[[3, 40, 90, 111]] + T.TABLE_STEP / 2:
         lam = math.exp(s)
         direct = T.solve_tangential_punch(lam, NU)
