@@ -85,6 +85,60 @@ class TangentialPunchSolution:
         edge_l, edge_t = self.edges
         return float(self.transverse_factor * edge_l / (self.longitudinal_factor * edge_t))
 
+    def modes_at(self, tau) -> np.ndarray:
+        r"""``Ψ_L`` and ``Ψ_T`` at any ``τ`` in ``[0, 1]`` by Nyström's interpolation of (T2).
+
+        .. math:: \Psi_m(\tau) = 1 + \frac{\lambda}{\pi}\sum_j w_j \Psi_m(\sigma_j)
+                  [k_m(\lambda(\tau-\sigma_j)) + k_m(\lambda(\tau+\sigma_j))]
+
+        Parameters
+        ----------
+        tau : float or array_like
+            ``r/a`` or ``t/a`` in ``[0, 1]``.
+
+        Returns
+        -------
+        numpy.ndarray
+            Shape ``(*tau.shape, 2)``: ``Ψ_L``, ``Ψ_T``.
+        """
+        tau = np.asarray(tau, dtype=float)
+        if self.lam == 0.0:
+            return np.ones((*tau.shape, 2))
+        return np.stack([1.0 + _continuation(tau, self.lam, _kernel_for(self.nu, mode, 2.0 * self.lam + 2.0),
+                                             self.sigma, self.weights, self.psi[:, j])
+                         for j, mode in enumerate(MODES)], axis=-1)
+
+    def traction_functions(self, tau) -> tuple[np.ndarray, np.ndarray]:
+        r"""The punch's traction as its order-0 and order-2 functions ``Θ₀(τ)`` and ``X(τ)`` (per ``4Gu₀/(π(2 − ν))``).
+
+        The traction ``q_x + i q_y = Q₀(r) + Q₂(r) e^{2iθ}`` has the Hankel transforms (orders 0 and 2)
+        ``Q̂₀(ξ) = ∫₀ᵃ φ₀(t) cos ξt dt``, ``Q̂₂(ξ) = ∫₀ᵃ χ(t) cos ξt dt`` with ``φ₀, χ = (4Gu₀/(π(2 − ν))) Θ₀, X`` at
+        ``τ = t/a``; the decoupling of (T2) gives
+
+        .. math:: \Theta_0 \pm X = \frac{(2-\nu)\,\Phi_{L,T}\,\Psi_{T,L}}{(1-\nu)\Phi_T + \Phi_L}
+
+        (``+``: ``Φ_L Ψ_T``; ``−``: ``Φ_T Ψ_L``), so that ``∫₀¹ X = 0`` (``Q₂ = 0`` outside the punch) and
+        ``∫₀¹ Θ₀ = Φ_t`` (T3). :func:`~mdr_events.theory.layer_tangential.contact_displacement` checks them.
+
+        Parameters
+        ----------
+        tau : float or array_like
+            ``t/a`` in ``[0, 1]``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``Θ₀(τ)`` and ``X(τ)`` (1 and 0 on the half-space).
+        """
+        return _order_functions(self.nu, self.longitudinal_factor, self.transverse_factor, self.modes_at(tau))
+
+
+def _order_functions(nu, phi_l, phi_t, modes) -> tuple[np.ndarray, np.ndarray]:
+    """``Θ₀`` and ``X`` from ``Ψ_L``, ``Ψ_T`` (last axis of ``modes``): the order-2 step of the decoupling."""
+    scale = (2.0 - nu) / ((1.0 - nu) * phi_t + phi_l)
+    plus, minus = scale * phi_l * modes[..., 1], scale * phi_t * modes[..., 0]
+    return (plus + minus) / 2.0, (plus - minus) / 2.0
+
 
 def _combine(nu, phi_l, phi_t):
     """``Φ_t`` of (T3)."""
