@@ -17,6 +17,10 @@ Sections (:func:`layer_model_afresh`):
    ``F = πG a⁶/(32 R h³)`` (checked against the thin-film solution of the paraboloid itself);
 5. Griffith's balance on any ``K(a)``: ``∂U/∂a|_d = ½ K'(a)(d − g(a))²`` so ``Δl = sqrt(4π a Δγ / K'(a))``, and
    ``F_N = ∂U/∂d = F₀(a) + K(a)(d − g(a))``.
+6. the pull-off of the paraboloid under force control on the thin layers, from sections 3–5 (``F = ∫₀ᵃ K'(x)(d − g(x))
+   dx`` on Heß's branch ``d = g(a) − Δl``, minimised over ``a``): ``−2πRΔγ`` on Winkler's foundation (any ``κ``:
+   the compressible bonded layer, any layer on a frictionless base) and ``−3πRΔγ`` on the thin incompressible bonded
+   film, against ``−(3/2)πRΔγ`` on the half-space (``Δγ`` the work of adhesion of Heß's rule (8)).
 
 The relations are cached beside the paper's (:func:`layer_cache_path`), keyed by this module's source.
 """
@@ -53,7 +57,9 @@ LAYER_KEYS = ("layer_compliance_bonded", "layer_compliance_frictionless", "layer
               "layer_winkler_modulus", "layer_winkler_modulus_frictionless", "layer_winkler_stiffness",
               "layer_winkler_hess", "layer_thin_film_mobility", "layer_thin_film_stiffness",
               "layer_thin_film_edge_displacement", "layer_thin_film_profile", "layer_thin_film_depth",
-              "layer_thin_film_force", "layer_energy_slope", "layer_hess_elongation", "layer_normal_force")
+              "layer_thin_film_force", "layer_energy_slope", "layer_hess_elongation", "layer_normal_force",
+              "layer_winkler_pull_off_radius", "layer_winkler_pull_off", "layer_thin_film_pull_off_radius",
+              "layer_thin_film_pull_off")
 
 #: Hash of this module's source and SymPy's version: the key of :func:`layer_cache_path`.
 _SOURCE_DIGEST = hashlib.sha256(Path(__file__).read_bytes() + sp.__version__.encode()).hexdigest()[:16]
@@ -112,6 +118,7 @@ def layer_model_afresh() -> dict[str, Relation]:
     _derive_winkler(add, bonded, frictionless)
     _derive_thin_film(add, bonded)
     _derive_griffith(add)
+    _derive_thin_pull_off(add, out)
     return out
 
 
@@ -271,3 +278,32 @@ def _derive_griffith(add) -> None:
     _check(sp.simplify(by_parts - force.subs({F0_fn(a): sp.integrate(power_K * sp.diff(power_g, x), (x, 0, a)),
                                                K_fn(a): power_K.subs(x, a), g_fn(a): power_g.subs(x, a)})) == 0,
            "F₀ + K (d − g) is not ∫ K'(d − g)")
+
+
+def _pull_off_of(stiffness: sp.Expr, profile: sp.Expr, hess: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """The radius and force of the minimum of ``F(a) = ∫₀ᵃ K'(x)(g(a) − Δl(a) − g(x)) dx`` (Heß's branch)."""
+    K_prime = sp.Symbol("K_prime", positive=True)
+    elongation = sp.simplify(hess.subs(K_prime, sp.diff(stiffness, a)))
+    depth = profile.subs(x, a) - elongation
+    force = sp.simplify(sp.integrate(sp.diff(stiffness.subs(a, x), x) * (depth - profile), (x, 0, a)))
+    radii = [root for root in sp.solve(sp.diff(force, a), a) if root.is_positive]
+    _check(len(radii) == 1, f"the branch force has the stationary radii {radii}")
+    _check(sp.simplify(sp.diff(force, a, 2).subs(a, radii[0])).is_positive, "the stationary point is no minimum")
+    return radii[0], sp.simplify(force.subs(a, radii[0]))
+
+
+def _derive_thin_pull_off(add, out: dict) -> None:
+    """Section 6: the paraboloid's pull-off on Winkler's foundation (``g = f = x²/(2R)``, ``K = πκa²``) and on the
+    thin incompressible film (``g = x²/(4R)``, ``K = 3πGa⁴/(8h³)``), with Heß's rule of section 5."""
+    hess = out["layer_hess_elongation"].rhs
+    radius, force = _pull_off_of(out["layer_winkler_stiffness"].rhs, x**2 / (2 * R), hess)
+    _check(sp.simplify(force + 2 * sp.pi * R * dgamma) == 0, f"Winkler's pull-off is {force}, not −2πRΔγ")
+    add(Relation("layer_winkler_pull_off_radius", "(10)", "Winkler: pull-off radius a⁴ = 8R²Δγ/κ", a, radius,
+                 (R, dgamma, K_W)))
+    add(Relation("layer_winkler_pull_off", "(10)", "Winkler: pull-off force −2πRΔγ (any κ)", F_N, force, (R, dgamma)))
+    radius, force = _pull_off_of(out["layer_thin_film_stiffness"].rhs, out["layer_thin_film_profile"].rhs, hess)
+    _check(sp.simplify(force + 3 * sp.pi * R * dgamma) == 0, f"the thin film's pull-off is {force}, not −3πRΔγ")
+    add(Relation("layer_thin_film_pull_off_radius", "(10)", "thin incompressible film: pull-off radius "
+                 "a⁶ = 96R²Δγh³/G", a, radius, (R, dgamma, G, h)))
+    add(Relation("layer_thin_film_pull_off", "(10)", "thin incompressible film: pull-off force −3πRΔγ", F_N, force,
+                 (R, dgamma)))

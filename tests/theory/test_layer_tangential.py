@@ -16,6 +16,8 @@ from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.theory import layer as L
 from mdr_events.theory import layer_tangential as T
 from mdr_events.theory import layer_tangential_symbolic as S
+from mdr_events.theory.layer import tangential_punch as TP
+from mdr_events.theory.layer import tangential_tables as TT
 
 #: The half-space through the layer's functions: the same formulas with factors exactly 1 (or 1 + O(a/h) at
 #: a/h = 1e-14), so a few ulps.
@@ -34,6 +36,16 @@ TABLE_TOL = 1e-8
 THIN_TOL = 1e-6
 #: The observed order of the thin limit's error in h/a: 1 (an edge boundary layer of width ~h), within this.
 ORDER_TOL = 0.06
+
+#: The top's displacement under the solved traction, by direct Hankel quadrature, against the contact condition
+#: (U₀ = u₀, U₂ = 0 inside the punch): the quadratures converge to round-off (at most 2e-15 seen; sums of some 4000
+#: terms of order 1), and the Nyström solution is exact to ~1e-13 (NODES_TOL's margin).
+DISPLACEMENT_TOL = 1e-12
+#: What a wrong order-2 step leaves in the displacement: at least 1e-3 in the cases below (1.3e-3 the smallest seen,
+#: roles of L and T swapped at ν = 0, a/h = 0.3); far above DISPLACEMENT_TOL.
+WRONG_STEP = 1e-4
+#: Where the contact condition is checked (r/a), the edge included closely.
+RHO = np.array([0.0, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999])
 
 G, NU = 1.0e5, 0.5
 G_STAR = 4.0 * G / (2.0 - NU)
@@ -131,7 +143,7 @@ def test_the_slope_is_the_edge_identity(lam):
 
 def test_the_table_interpolates_direct_solves():
     table = T.tangential_table(NU)
-    grid = T._table_grid()
+    grid = TT._table_grid()
     for s in grid[[3, 40, 90, 111]] + T.TABLE_STEP / 2:
         lam = math.exp(s)
         direct = T.solve_tangential_punch(lam, NU)
@@ -191,3 +203,44 @@ def test_bad_input_is_refused_in_one_line():
         T.tangential_punch_stiffness(1e-3, G_STAR, NU, 5e-3)
     assert not T.solve_tangential_punch(0.0, NU).lam  # the half-space needs no base
     assert np.all(T.tangential_compliance(np.array([0.01, 0.1]), 0.3, "transverse", "frictionless") > 9.0)
+
+
+def _condition_error(solution):
+    u0, u2 = T.contact_displacement(solution, RHO)
+    return max(np.max(np.abs(u0 - 1.0)), np.max(np.abs(u2)))
+
+
+@pytest.mark.parametrize("nu", [0.0, 0.3, 0.5])
+@pytest.mark.parametrize("lam", [0.3, 1.0, 3.0])
+def test_the_solved_traction_moves_the_contact_uniformly(nu, lam):
+    """The check of the reduction (T2) without it: Hankel quadrature of (T1) under the traction of Θ₀ and X."""
+    solution = T.solve_tangential_punch(lam, nu)
+    assert _condition_error(solution) < DISPLACEMENT_TOL
+    tau, weights = np.polynomial.legendre.leggauss(200)
+    theta0, chi = solution.traction_functions((tau + 1) / 2)
+    assert abs(weights @ chi / 2) < DISPLACEMENT_TOL  # ∫X = 0: Q₂ vanishes outside the punch
+    assert weights @ theta0 / 2 == pytest.approx(solution.stiffness_factor, rel=DISPLACEMENT_TOL)  # F_x, (T3)
+
+
+@pytest.mark.parametrize("wrong", ["roles of L and T swapped", "sign of the order-2 part"])
+@pytest.mark.parametrize("nu", [0.0, 0.3, 0.5])
+@pytest.mark.parametrize("lam", [0.3, 3.0])
+def test_the_displacement_check_sees_a_wrong_order_2_step(monkeypatch, wrong, nu, lam):
+    right = TP._order_functions
+
+    def perturbed(nu_, phi_l, phi_t, modes):
+        if wrong == "roles of L and T swapped":
+            return right(nu_, phi_t, phi_l, modes[..., ::-1])
+        theta0, chi = right(nu_, phi_l, phi_t, modes)
+        return theta0, -chi
+
+    monkeypatch.setattr(TP, "_order_functions", perturbed)
+    assert _condition_error(T.solve_tangential_punch(lam, nu)) > WRONG_STEP
+
+
+def test_the_displacement_check_on_the_half_space_and_bad_input():
+    u0, u2 = T.contact_displacement(T.solve_tangential_punch(0.0, NU), RHO)
+    np.testing.assert_allclose(u0, 1.0, rtol=ROUND_OFF)
+    np.testing.assert_allclose(u2, 0.0, atol=ROUND_OFF)
+    with pytest.raises(ValueError, match="rho="):
+        T.contact_displacement(T.solve_tangential_punch(1.0, NU), [0.5, 1.0])

@@ -1,0 +1,203 @@
+r"""The tangential compliances of a layer's top, ``C_L`` and ``C_T`` (T1), and the kernels ``k_m`` of the
+tangential punch's equations (T2), interpolated; what a layer must be to have a tangential stiffness.
+
+Part of :mod:`mdr_events.theory.layer_tangential`, which documents the problem and re-exports the public names.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from mdr_events.contact.layer import Layer, LayerBase
+from mdr_events.validation import check_real
+
+__all__ = ["MODES", "LAMBDA_MAX", "check_bonded", "tangential_compliance", "tangential_kernel"]
+
+#: The two parts of the top's tangential response: ``"longitudinal"`` (P–SV, ``C_L``) and ``"transverse"`` (anti-plane,
+#: ``C_T``).
+MODES = ("longitudinal", "transverse")
+#: The largest ``a/h`` of a table (direct solves take any ``λ``).
+LAMBDA_MAX = 64.0
+#: The kernel's quadrature in ``u``: panels of this width, Gauss–Legendre nodes per panel, and the end, where
+#: ``1 − C_m`` is below 1e-17 (``2e^{−2u}`` and ``≈ (4u² − 4u + 1 + κ²)e^{−2u}/κ``).
+_U_PANEL, _U_NODES, _U_MAX = 0.1, 20, 24.0
+#: The kernel's Chebyshev interpolants: unit panels in ``v``, 20 points each (``k_m`` is analytic in ``|Im v| < 2``).
+_V_PANEL, _V_NODES = 1.0, 20
+
+
+def _nu(nu: float) -> float:
+    return check_real("nu", nu, "a finite number in [0, 0.5]", lambda value: 0.0 <= value <= 0.5)
+
+
+def _mode(mode: str) -> str:
+    if mode not in MODES:
+        raise ValueError(f"mode={mode!r} is not allowed; allowed: one of {', '.join(map(repr, MODES))}")
+    return mode
+
+
+def _base(base: LayerBase | str) -> LayerBase:
+    return base if isinstance(base, LayerBase) else Layer(1.0, base).base
+
+
+def check_bonded(layer: Layer) -> Layer:
+    """``layer`` if it has a tangential punch stiffness: the half-space or a layer bonded to its base.
+
+    Parameters
+    ----------
+    layer : Layer
+        The layer.
+
+    Returns
+    -------
+    Layer
+        The same layer.
+
+    Raises
+    ------
+    TypeError
+        ``layer`` not a :class:`~mdr_events.contact.layer.Layer`.
+    ValueError
+        A finite layer on a frictionless base: it slides on its base as a plate in plane stress, a punch's tangential
+        displacement under a net force grows as ``ln(L/a)`` with the layer's lateral extent ``L``, ``K_t = 0``.
+    """
+    if not isinstance(layer, Layer):
+        raise TypeError(f"layer={layer!r} ({type(layer).__name__}) is not allowed; allowed: a Layer")
+    if not layer.is_half_space and layer.base is LayerBase.FRICTIONLESS:
+        raise ValueError(f"Layer.base={layer.base.value!r} is not allowed for tangential contact (a layer free to "
+                         "slide on its base has no tangential punch stiffness: K_t = 0, the displacement grows as "
+                         "ln(L/a) with its lateral extent L); allowed: LayerBase.BONDED or the half-space")
+    return layer
+
+
+def _one_minus(u: np.ndarray, nu: float, mode: str) -> np.ndarray:
+    """``1 − C_m(u)`` of the bonded layer without cancellation (scaled by ``e^{−2u}``); 1 at ``u = 0``."""
+    e2 = np.exp(-2.0 * u)
+    if mode == "transverse":
+        return 2.0 * e2 / (1.0 + e2)
+    kappa = 3.0 - 4.0 * nu
+    e4 = e2 * e2
+    return ((2.0 * kappa * e4 + (1.0 + kappa**2 - 4.0 * u + 4.0 * u**2) * e2)
+            / (kappa * (1.0 + e4) + (1.0 + kappa**2 + 4.0 * u**2) * e2))
+
+
+def tangential_compliance(t, nu: float, mode: str, base: LayerBase | str = LayerBase.BONDED) -> np.ndarray:
+    r"""The layer's tangential compliance in Fourier space relative to the half-space's, ``C_L`` or ``C_T`` (T1).
+
+    .. math:: \hat u_L = \frac{(1-\nu) C_L(\xi h)}{G\xi}\hat q_L, \quad \hat u_T = \frac{C_T(\xi h)}{G\xi}\hat q_T
+
+    Bonded base: ``C_L = (2κ sinh 2t + 4t)/(2κ cosh 2t + 1 + κ² + 4t²)``, ``κ = 3 − 4ν``, ``C_T = tanh t``;
+    frictionless base: ``C_L = (cosh 2t + 1)/(sinh 2t + 2t)``, ``C_T = coth t`` (both ``∝ 1/t`` as ``t → 0``: no
+    stiffness at the layer's scale). Derived in :mod:`mdr_events.theory.layer_tangential_symbolic`.
+
+    Parameters
+    ----------
+    t : float or array_like
+        ``ξ h ≥ 0`` (``> 0`` for a frictionless base).
+    nu : float
+        Poisson's ratio, in ``[0, 0.5]``.
+    mode : str
+        ``"longitudinal"`` or ``"transverse"``.
+    base : LayerBase or str, default LayerBase.BONDED
+        The layer's base.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``C_m(t)`` (1 as ``t → ∞``).
+
+    Raises
+    ------
+    ValueError
+        ``nu`` outside ``[0, 0.5]``, ``mode`` or ``base`` unknown.
+    """
+    t = np.asarray(t, dtype=float)
+    nu, mode, base = _nu(nu), _mode(mode), _base(base)
+    if base is LayerBase.BONDED:
+        return 1.0 - _one_minus(t, nu, mode)
+    with np.errstate(divide="ignore"):
+        if mode == "transverse":
+            return 1.0 / np.tanh(t)
+        e2 = np.exp(-2.0 * t)
+        return (1.0 + e2) ** 2 / (-np.expm1(-4.0 * t) + 4.0 * t * e2)
+
+def _direct_kernel(v: np.ndarray, nu: float, mode: str) -> np.ndarray:
+    """``k_m(v)`` by composite Gauss–Legendre quadrature of ``∫₀^∞ (1 − C_m(u)) cos(uv) du`` (the reference)."""
+    x, w = np.polynomial.legendre.leggauss(_U_NODES)
+    starts = np.arange(0.0, _U_MAX, _U_PANEL)
+    u = (starts[:, None] + (x[None, :] + 1.0) * _U_PANEL / 2.0).ravel()
+    weighted = _one_minus(u, nu, mode) * np.tile(w * _U_PANEL / 2.0, starts.size)
+    flat = np.abs(np.asarray(v, dtype=float)).ravel()
+    out = np.empty(flat.size)
+    for start in range(0, flat.size, 512):
+        out[start:start + 512] = np.cos(np.outer(flat[start:start + 512], u)) @ weighted
+    return out.reshape(np.shape(v))
+
+
+@dataclass(frozen=True)
+class _Chebyshev:
+    """``k_m(v)`` as piecewise Chebyshev series on unit panels of ``|v|`` up to ``v_max``."""
+
+    coefficients: np.ndarray
+    v_max: float
+
+    @classmethod
+    def build(cls, nu: float, mode: str, v_max: float) -> "_Chebyshev":
+        panels = int(math.ceil(v_max / _V_PANEL)) + 1
+        x = np.cos(np.pi * (np.arange(_V_NODES) + 0.5) / _V_NODES)
+        v = (np.arange(panels)[:, None] + (x[None, :] + 1.0) / 2.0) * _V_PANEL
+        values = _direct_kernel(v, nu, mode)
+        coefficients = np.linalg.solve(np.polynomial.chebyshev.chebvander(x, _V_NODES - 1), values.T).T
+        return cls(coefficients, panels * _V_PANEL)
+
+    def __call__(self, v: np.ndarray) -> np.ndarray:
+        v = np.abs(v)
+        panel = np.minimum((v / _V_PANEL).astype(int), len(self.coefficients) - 1)
+        local = 2.0 * (v / _V_PANEL - panel) - 1.0
+        c = self.coefficients[panel]
+        b1, b2 = np.zeros(v.shape), np.zeros(v.shape)
+        for j in range(_V_NODES - 1, 0, -1):
+            b1, b2 = c[..., j] + 2.0 * local * b1 - b2, b1
+        return c[..., 0] + local * b1 - b2
+
+
+_KERNELS: dict[tuple[float, str], _Chebyshev] = {}
+
+
+def _kernel_for(nu: float, mode: str, v_max: float) -> _Chebyshev:
+    known = _KERNELS.get((nu, mode))
+    if known is None or known.v_max < v_max:
+        known = _Chebyshev.build(nu, mode, max(v_max, 2.0 * LAMBDA_MAX + 2.0))
+        _KERNELS[nu, mode] = known
+    return known
+
+
+def tangential_kernel(v, nu: float, mode: str) -> np.ndarray:
+    r"""The kernel of the tangential punch's equations (T2) on a bonded layer, in units of ``1/h``.
+
+    .. math:: k_m(v) = \int_0^\infty [1 - C_m(u)]\cos(uv)\,\mathrm{d}u
+
+    Parameters
+    ----------
+    v : float or array_like
+        The argument (even in ``v``).
+    nu : float
+        Poisson's ratio, in ``[0, 0.5]``.
+    mode : str
+        ``"longitudinal"`` or ``"transverse"``.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``k_m(v)`` (Chebyshev interpolants, within 1e-14 of the quadrature).
+
+    Raises
+    ------
+    ValueError
+        ``nu`` outside ``[0, 0.5]`` or ``mode`` unknown.
+    """
+    v = np.asarray(v, dtype=float)
+    nu, mode = _nu(nu), _mode(mode)
+    return _kernel_for(nu, mode, float(np.max(np.abs(v), initial=0.0)) + 1.0)(v)

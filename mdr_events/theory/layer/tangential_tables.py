@@ -1,0 +1,210 @@
+r"""The tangential punch's factors of a bonded layer against ``a/h``, cached on disk: :class:`TangentialTable`.
+
+Part of :mod:`mdr_events.theory.layer_tangential`, which documents the problem and re-exports the public names.
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import math
+import os
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from mdr_events.theory.layer.punch import nystrom_nodes
+from mdr_events.theory.layer.tangential_compliance import LAMBDA_MAX, MODES, _nu, tangential_kernel
+from mdr_events.theory.layer.tangential_punch import _combine, _slope, _solve
+
+__all__ = ["LAMBDA_MIN", "TABLE_STEP", "TangentialTable", "tangential_table", "tangential_table_cache_path"]
+
+#: The smallest ``a/h`` of a table: below it the half-space side's series ``Φ_m = Ψ_m(1) = 1/(1 − 2k_m(0)λ/π)``
+#: (error ``O(λ³) < 1e-11``).
+LAMBDA_MIN = 1e-4
+#: Spacing of the table's nodes in ``ln(a/h)`` (quintic splines: interpolation error about 2e-9; tests check 1e-8).
+TABLE_STEP = 0.1
+
+#: Hash of the tangential solver's source (the compliances and kernels, the punch's solve and the tables) and NumPy's
+#: version: the key of the tables on disk (a change of the code never reads an old table).
+_SOURCE_DIGEST = hashlib.sha256(b"".join((Path(__file__).parent / name).read_bytes()
+                                         for name in ("tangential_compliance.py", "tangential_punch.py",
+                                                      "tangential_tables.py"))
+                                + np.__version__.encode()).hexdigest()[:16]
+
+
+def tangential_table_cache_path(nu: float) -> Path | None:
+    """Where the tangential table of ``ν`` is kept between processes (``None``: caching is off).
+
+    The directory of the normal tables (``$MDR_EVENTS_CACHE_DIR`` or ``$XDG_CACHE_HOME/mdr_events`` or
+    ``~/.cache/mdr_events``; ``MDR_EVENTS_NO_CACHE=1`` turns it off), the name keyed by this module's source.
+
+    Parameters
+    ----------
+    nu : float
+        Poisson's ratio.
+
+    Returns
+    -------
+    pathlib.Path or None
+        ``layer-tangential-nu<ν>-<hash>.npz`` in that directory, or ``None``.
+    """
+    if os.environ.get("MDR_EVENTS_NO_CACHE"):
+        return None
+    root = os.environ.get("MDR_EVENTS_CACHE_DIR") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"), "mdr_events")
+    return Path(root) / f"layer-tangential-nu{float(nu)!r}-{_SOURCE_DIGEST}.npz"
+
+
+#: The tabulated columns (logarithms): ``Φ_L``, ``Φ_T``, ``Ψ_L(1)``, ``Ψ_T(1)``.
+_COLUMNS = ("phi_l", "phi_t", "edge_l", "edge_t")
+
+
+def _table_grid() -> np.ndarray:
+    low, high = math.log(LAMBDA_MIN), math.log(LAMBDA_MAX)
+    return np.linspace(low, high, int(math.ceil((high - low) / TABLE_STEP)) + 1)
+
+
+def _build_table(nu: float) -> dict[str, np.ndarray]:
+    grid = _table_grid()
+    rows = []
+    for lam in np.exp(grid):
+        solution = _solve(float(lam), nu, nystrom_nodes(float(lam)))
+        rows.append((solution.longitudinal_factor, solution.transverse_factor, *solution.edges))
+    rows = np.array(rows)
+    out = {"s": grid, "k0": np.array([float(tangential_kernel(0.0, nu, mode)) for mode in MODES])}
+    out.update({name: np.log(rows[:, j]) for j, name in enumerate(_COLUMNS)})
+    return out
+
+
+def _stored_table(nu: float) -> dict[str, np.ndarray]:
+    """The table's columns from the disk cache if there, else built and stored (trouble: only a missed shortcut)."""
+    path = tangential_table_cache_path(nu)
+    if path is not None and path.exists():
+        try:
+            with np.load(path, allow_pickle=False) as stored:
+                columns = {name: stored[name] for name in ("s", "k0", *_COLUMNS)}
+            if np.array_equal(columns["s"], _table_grid()):
+                return columns
+        except Exception:  # a damaged or foreign file is rebuilt
+            pass
+    columns = _build_table(nu)
+    if path is not None:
+        try:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".npz", dir=path.parent)
+            with os.fdopen(handle, "wb") as stream:
+                np.savez(stream, **columns)
+            os.replace(temporary, path)
+        except OSError:
+            pass
+    return columns
+
+
+@dataclass(frozen=True)
+class TangentialTable:
+    r"""The tangential punch's factors of a bonded layer against ``λ = a/h`` (quintic splines of their logarithms in
+    ``ln λ``), for one ``ν``; below :data:`LAMBDA_MIN` the series ``Φ_m = Ψ_m(1) = 1/(1 − 2k_m(0)λ/π)``.
+
+    Parameters
+    ----------
+    nu : float
+        Poisson's ratio.
+    columns : dict of str to numpy.ndarray
+        ``s = ln λ``, ``k0 = (k_L(0), k_T(0))`` and the logarithms of ``Φ_L``, ``Φ_T``, ``Ψ_L(1)``, ``Ψ_T(1)``.
+    """
+
+    nu: float
+    columns: dict
+
+    @functools.cached_property
+    def _splines(self) -> dict:
+        from scipy.interpolate import make_interp_spline
+
+        return {name: make_interp_spline(self.columns["s"], self.columns[name], k=5) for name in _COLUMNS}
+
+    def _values(self, lam) -> tuple[np.ndarray, ...]:
+        lam = np.asarray(lam, dtype=float)
+        inside = (lam >= 0.0) & (lam <= LAMBDA_MAX)
+        if not np.all(inside):
+            bad = float(lam[~inside].ravel()[0])
+            raise ValueError(f"a/h={bad!r} is not allowed; allowed: 0 <= a/h <= {LAMBDA_MAX:g} (the table's range; "
+                             "solve_tangential_punch solves beyond it)")
+        small = lam < LAMBDA_MIN
+        s = np.log(np.where(small, LAMBDA_MIN, lam))
+        k_l, k_t = (float(value) for value in self.columns["k0"])
+        series = {"phi_l": 1.0 / (1.0 - 2.0 * k_l * lam / np.pi), "phi_t": 1.0 / (1.0 - 2.0 * k_t * lam / np.pi)}
+        series.update(edge_l=series["phi_l"], edge_t=series["phi_t"])
+        return tuple(np.where(small, series[name], np.exp(self._splines[name](s))) for name in _COLUMNS)
+
+    def stiffness_factor(self, lam) -> np.ndarray:
+        """``Φ_t(λ) = K_t(a)/(2G* a)`` (T3).
+
+        Parameters
+        ----------
+        lam : float or array_like
+            ``a/h`` in ``[0, LAMBDA_MAX]``.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``Φ_t`` (1 at ``λ = 0``).
+
+        Raises
+        ------
+        ValueError
+            ``λ`` outside the table.
+        """
+        phi_l, phi_t, _, _ = self._values(lam)
+        return _combine(self.nu, phi_l, phi_t)
+
+    def slope_factor(self, lam) -> np.ndarray:
+        """``Σ_t(λ) = K_t'(a)/(2G*)`` (T4), from the tabulated edge values (no derivative of a spline).
+
+        Parameters
+        ----------
+        lam : float or array_like
+            ``a/h`` in ``[0, LAMBDA_MAX]``.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``Σ_t`` (1 at ``λ = 0``).
+
+        Raises
+        ------
+        ValueError
+            ``λ`` outside the table.
+        """
+        return _slope(self.nu, *self._values(lam))
+
+
+@functools.lru_cache(maxsize=None)
+def _tangential_table(nu: float) -> TangentialTable:
+    return TangentialTable(nu, _stored_table(nu))
+
+
+def tangential_table(nu: float) -> TangentialTable:
+    """The table of a bonded layer's tangential punch factors for ``ν``: built once per process, cached on disk.
+
+    Building one takes about 2 s (two solves per node, :data:`TABLE_STEP`-spaced from ``a/h = 1e-4`` to
+    :data:`LAMBDA_MAX`); reading it from the cache a few milliseconds.
+
+    Parameters
+    ----------
+    nu : float
+        Poisson's ratio, in ``[0, 0.5]``.
+
+    Returns
+    -------
+    TangentialTable
+        The interpolated factors.
+
+    Raises
+    ------
+    ValueError
+        ``nu`` outside ``[0, 0.5]``.
+    """
+    return _tangential_table(_nu(nu))
