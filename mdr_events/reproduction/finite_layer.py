@@ -133,7 +133,8 @@ def layer_results() -> LayerResults:
 
 
 def layer_rows(results: LayerResults) -> list[list[str]]:
-    """The table: each paraboloid's F_N,max, A_max and |F_N,min| on the half-space and the layer, and the rise."""
+    """The table: each paraboloid's ``F_N,max``, ``A_max`` and ``|F_N,min|`` on the half-space and the layer, and the
+    rise."""
     table = []
     for row in results.rows:
         for name, (half, layer), unit, scale in (("F_N,max", row.force_max, "N", 1.0),

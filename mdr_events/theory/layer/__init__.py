@@ -57,29 +57,30 @@ below ``1e-4`` the series ``Φ = Θ(1) = 1/(1 − 2k(0)λ/π)``, ``Θₙ(1) = 1 
 
 Modules
 -------
-==============================  ======================================================================================
-module                          one idea
-==============================  ======================================================================================
-:mod:`.compliance`              the compliance ``C(ξh)`` and the kernel ``k(v)`` of (L1), interpolated
-:mod:`.punch`                   the Nyström solve of (L1) at one ``a/h``: :class:`PunchSolution`, ``φ`` (L5)
-:mod:`.tables`                  the factors against ``a/h``, cached on disk: :class:`LayerTable`
-:mod:`.relations`               the generalized MDR: ``K``, ``k(x)``, ``Δl``, ``g``, ``F_N``, the adhesive branch
-:mod:`.pull_off`                the pull-off under force control: :class:`PullOff`
-:mod:`.curves`                  a :class:`~mdr_events.Contact` on its layer as labelled results: the branches against
-                                the depth, an indentation cycle, the pull-off against the thickness
-:mod:`.tangential_compliance`   the tangential compliances ``C_L``, ``C_T`` and the kernels of the tangential punch
-:mod:`.tangential_coupling`     the normal–tangential coupling the decoupled tangential punch neglects, its bound
-:mod:`.tangential_punch`        the Nyström solve of the tangential punch at one ``a/h``
-:mod:`.tangential_tables`       the tangential punch's factors against ``a/h``, cached on disk
-:mod:`.tangential_relations`    the tangential springs ``k_t = K_t'/2`` and the caps
-==============================  ======================================================================================
+================================  ======================================================================================
+module                            one idea
+================================  ======================================================================================
+:mod:`.compliance`                the compliance ``C(ξh)`` and the kernel ``k(v)`` of (L1), interpolated
+:mod:`.punch`                     the Nyström solve of (L1) at one ``a/h``: :class:`PunchSolution`, ``φ`` (L5)
+:mod:`.tables`                    the factors against ``a/h``, cached on disk: :class:`LayerTable`
+:mod:`.relations`                 the generalized MDR: ``K``, ``k(x)``, ``Δl``, ``g``, ``F_N``, the adhesive branch
+:mod:`.force_control`             the pull-off under force control: :class:`PullOff`
+:mod:`.curves`                    a :class:`~mdr_events.Contact` on its layer as labelled results: the branches against
+                                  the depth, an indentation cycle, the pull-off against the thickness
+:mod:`.tangential_compliance`     the tangential compliances ``C_L``, ``C_T`` and the kernels of the tangential punch
+:mod:`.tangential_coupling`       the normal–tangential coupling the decoupled tangential punch neglects, its bound
+:mod:`.tangential_punch`          the Nyström solve of the tangential punch at one ``a/h``
+:mod:`.tangential_tables`         the tangential punch's factors against ``a/h``, cached on disk
+:mod:`.tangential_displacement`   the surface displacement under the tangential punch by direct Hankel quadrature
+:mod:`.tangential_relations`      the tangential springs ``k_t = K_t'/2`` and the caps
+================================  ======================================================================================
 
 The tangential modules' public names are those of :mod:`mdr_events.theory.layer_tangential` (not re-exported here).
 """
 
 from mdr_events.theory.layer.compliance import LAMBDA_MAX, compliance_function, kernel
 from mdr_events.theory.layer.curves import layer_indentation_cycle, layer_normal_curve, layer_pull_off_curve
-from mdr_events.theory.layer.pull_off import PullOff, pull_off
+from mdr_events.theory.layer.force_control import PullOff, pull_off
 from mdr_events.theory.layer.punch import PunchSolution, nystrom_nodes, solve_punch
 from mdr_events.theory.layer.relations import (branch_depth, branch_normal_force, equivalent_profile, hess_elongation,
                                                normal_force, power_law_profile, power_law_profile_slope,

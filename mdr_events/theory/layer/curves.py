@@ -22,7 +22,7 @@ from mdr_events.contact.model import Contact
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
-from mdr_events.theory.layer.pull_off import pull_off
+from mdr_events.theory.layer.force_control import pull_off
 from mdr_events.theory.layer.relations import _abel_factor, _power_law, branch_depth, normal_force
 from mdr_events.validation import check_count, check_real, real_array, shown
 
@@ -161,7 +161,7 @@ def layer_normal_curve(contact: Contact, depths) -> xr.Dataset:
     xarray.Dataset
         Coordinates ``branch`` (``"dgamma0"``, ``"dgamma1"``) and ``depth``; variables ``contact_radius`` (m),
         ``normal_force`` (N), ``contact_area`` (m²) and ``relative_radius`` (``a/h``), ``nan`` below a branch's
-        jump-off depth (no contact there); attributes of :meth:`Contact.to_attrs` with the layer's.
+        jump-off depth (no contact there); attributes of :meth:`~mdr_events.Contact.to_attrs` with the layer's.
 
     Raises
     ------
@@ -205,7 +205,7 @@ def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201) 
     xarray.Dataset
         Dimension ``sample``; variables ``depth`` (m), ``contact_radius`` (m), ``normal_force`` (N),
         ``contact_area`` (m²), ``relative_radius`` (``a/h``) and the coordinate ``stage`` (``"loading"``,
-        ``"pinned"``, ``"shrinking"``); attributes of :meth:`Contact.to_attrs` with the layer's.
+        ``"pinned"``, ``"shrinking"``); attributes of :meth:`~mdr_events.Contact.to_attrs` with the layer's.
 
     Raises
     ------
