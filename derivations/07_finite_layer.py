@@ -303,10 +303,10 @@ for base, style in (("bonded", "C0"), ("frictionless", "C1")):
     left.semilogx(curve["relative_radius"].values, scaled, style, marker=".", label=f"{base} base, ν = 0.5")
 for level, text in ((1.0, "half-space"), (4 / 3, "Winkler: 2πRΔγ"), (2.0, "thin film: 3πRΔγ")):
     left.axhline(level, color="k", ls="--", lw=0.8)
-    left.text(2e-3, level + 0.02, text, fontsize=8)
+    left.text(0.02, level + 0.015, text, fontsize=8, transform=left.get_yaxis_transform())
 left.set_xlabel("a/h at pull-off")
 left.set_ylabel("|F_po| / ((3/2)πΔγR)")
-left.legend(loc="center left")
+left.legend(loc="upper left", bbox_to_anchor=(0.0, 0.9))
 for contact, label in ((paper, "half-space"), (paper.replace(h=5e-3), "layer h = 5 mm, bonded")):
     cycle = me.layer_indentation_cycle(contact, 3e-4, 201)
     right.plot(cycle.depth.values * 1e6, cycle.normal_force.values * 1e3, label=label)
