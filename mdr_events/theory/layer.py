@@ -70,16 +70,25 @@ from typing import Callable
 import numpy as np
 
 from mdr_events.contact.layer import Layer, LayerBase
-from mdr_events.validation import check_real
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
+from mdr_events.validation import check_count, check_real, real_array, shown
 
-__all__ = ["LAMBDA_MAX", "LAMBDA_MIN", "compliance_function", "kernel", "nystrom_nodes", "PunchSolution",
+__all__ = ["LAMBDA_MAX", "LAMBDA_MIN", "LAMBDA_SOLVE_MAX", "KERNEL_V_MAX", "SOLVE_BYTES_PER_PAIR", "compliance_function", "kernel", "nystrom_nodes", "PunchSolution",
            "solve_punch", "LayerTable", "layer_table", "table_cache_path", "punch_stiffness", "punch_stiffness_slope",
            "spring_stiffness_density", "hess_elongation", "surface_displacement", "equivalent_profile",
            "power_law_profile", "power_law_profile_slope", "normal_force", "branch_depth", "branch_normal_force",
            "pull_off", "PullOff"]
 
-#: The largest ``a/h`` of a table (the thin side); direct solves (:func:`solve_punch`) take any ``λ``.
+#: The largest ``a/h`` of a table (the thin side); direct solves (:func:`solve_punch`) go to :data:`LAMBDA_SOLVE_MAX`.
 LAMBDA_MAX = 64.0
+#: The largest ``a/h`` of a direct solve: the range where the default nodes are converged to 1e-10 (see
+#: :data:`BASE_NODES`); beyond it the solve grows as ``λ²`` in memory and ``λ³`` in time (1000 took 5 GiB).
+LAMBDA_SOLVE_MAX = 200.0
+#: The largest ``|v|`` of :func:`kernel`: the kernel's quadrature is exact to 1e-15 up to it (:data:`_U_PANEL`).
+KERNEL_V_MAX = 200.0
+#: Memory of a Nyström solve per pair of nodes (the kernel's interpolants evaluated on the ``nodes²`` grid twice,
+#: 20 Chebyshev coefficients each, and the matrix), in bytes, checked against :class:`~mdr_events.Limits`.
+SOLVE_BYTES_PER_PAIR = 400.0
 #: The smallest ``a/h`` of a table: below it the series of the half-space side is exact to ``O(λ³) < 1e-11``.
 LAMBDA_MIN = 1e-4
 #: Spacing of the table's nodes in ``ln(a/h)``: quintic splines on it interpolate to about 2e-9 (the tests check
@@ -94,6 +103,8 @@ _U_PANEL, _U_NODES, _U_MAX = 0.1, 20, 24.0
 #: The kernel's Chebyshev interpolants: unit panels in ``v`` with 20 points (error below 1e-14: ``k`` is analytic in
 #: ``|Im v| < 2``).
 _V_PANEL, _V_NODES = 1.0, 20
+#: Beyond this ``u``, ``e^{-2u}`` is 0 in double precision and so is ``1 − C(u)`` (computed at it: exactly 0).
+_U_ZERO = 800.0
 #: Nodes of the quadrature of the outer surface integral (L5) in the angle ``β``.
 _OUTER_NODES = 64
 
@@ -109,8 +120,104 @@ def _nu(nu: float) -> float:
     return check_real("nu", nu, "a finite number in [0, 0.5]", lambda value: 0.0 <= value <= 0.5)
 
 
+def _reals(name: str, value, allowed: str, valid=None) -> np.ndarray:
+    """``value`` as a float array of finite numbers for which ``valid`` holds everywhere, else a one-line
+    ``TypeError``/``ValueError`` naming ``name``, the first bad entry and ``allowed`` (every array argument of
+    this module: radii, coordinates, depths, ``ξh``, ``v``, ``ρ``)."""
+    array = real_array(name, value, f"{allowed}: a number or an array of numbers")
+    bad = ~np.isfinite(array)
+    if valid is not None:
+        bad |= ~np.where(bad, True, valid(np.where(bad, 0.0, array)))
+    if np.any(bad):
+        index = tuple(int(i) for i in np.argwhere(bad)[0])
+        where = f"[{', '.join(map(str, index))}]" if array.ndim else ""
+        raise ValueError(f"{name}{where}={float(array[index])!r} is not allowed; allowed: {allowed}")
+    return array
+
+
+def _scalar(name: str, value, allowed: str, valid) -> float:
+    return check_real(name, value, allowed, valid)
+
+
+def _finite_result(name: str, result, **arguments):
+    """``result`` if every value of it is finite, else a ``ValueError`` naming the relation and its scalar arguments
+    (their product left the double range)."""
+    values = result if not isinstance(result, PullOff) else np.array([result.radius, result.depth, result.force])
+    if not np.all(np.isfinite(values)):
+        shown_arguments = ", ".join(f"{key}={shown(value)}" for key, value in arguments.items())
+        raise ValueError(f"{name}({shown_arguments}) is not finite (a product left the double range); allowed: "
+                         "arguments whose result is a finite double")
+    return result
+
+
+def _layer(layer) -> Layer:
+    if not isinstance(layer, Layer):
+        raise TypeError(f"layer={shown(layer)} ({type(layer).__name__}) is not allowed; allowed: a Layer")
+    return layer
+
+
+#: What each argument of the generalized MDR's relations must be (name -> what is allowed, the test on its values).
+_ARGUMENTS = {
+    "a": ("finite numbers >= 0 (m)", lambda value: value >= 0.0),
+    "x": ("finite numbers (m)", None),
+    "r": ("finite numbers >= 0 (m)", lambda value: value >= 0.0),
+    "d": ("finite numbers (m)", None),
+}
+#: The scalar arguments of the relations: name -> what is allowed, the test.
+_SCALARS = {
+    "E_star": ("a finite number > 0 (Pa)", lambda value: value > 0.0),
+    "dgamma": ("a finite number >= 0 (J/m²)", lambda value: value >= 0.0),
+}
+
+
+def _relation(function):
+    """Check a relation's arguments by their names (:data:`_ARGUMENTS`, :data:`_SCALARS`, ``nu``, ``layer``, a
+    callable ``profile_slope``) before it runs, and its result after: a value that is not finite (a product beyond the
+    double range, a slope of ``nan``) is a one-line ``ValueError`` naming the relation, never ``nan`` or ``inf``."""
+    import inspect
+
+    signature = inspect.signature(function)
+
+    @functools.wraps(function)
+    def checked(*args, **kwargs):
+        bound = signature.bind(*args, **kwargs)
+        bound.apply_defaults()
+        given = bound.arguments
+        for name, (allowed, valid) in _ARGUMENTS.items():
+            if name in given:
+                _reals(name, given[name], allowed, valid)
+        for name, (allowed, valid) in _SCALARS.items():
+            if name in given:
+                check_real(name, given[name], allowed, valid)
+        if "nu" in given:
+            _nu(given["nu"])
+        if "layer" in given:
+            _layer(given["layer"])
+        if "profile_slope" in given and not callable(given["profile_slope"]):
+            raise TypeError(f"profile_slope={shown(given['profile_slope'])} is not allowed; allowed: a function of "
+                            "an array of radii (m), f'(r)")
+        arrays = [np.shape(given[name]) for name in _ARGUMENTS if name in given]
+        try:
+            np.broadcast_shapes(*arrays)
+        except ValueError:
+            raise ValueError(f"the arrays of {function.__name__} have the shapes {arrays}, which do not broadcast; "
+                             "allowed: arrays of one shape (or numbers)") from None
+        scalars = {name: value for name, value in given.items() if np.ndim(value) == 0 and name != "layer"
+                   and not callable(value)}
+        try:
+            with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):
+                result = function(*args, **kwargs)
+        except (ZeroDivisionError, OverflowError):  # (a scale that underflows to 0 or overflows on the way)
+            result = math.nan
+        return _finite_result(function.__name__, result, **scalars, layer=given.get("layer"))
+
+    return checked
+
+
 def _one_minus_compliance(u: np.ndarray, nu: float, base: LayerBase) -> np.ndarray:
-    """``1 − C(u)`` without cancellation (numerator and denominator scaled by ``e^{-2u}``); 1 at ``u = 0``."""
+    """``1 − C(u)`` without cancellation (numerator and denominator scaled by ``e^{-2u}``); 1 at ``u = 0``, 0 beyond
+    :data:`_U_ZERO` (where ``e^{-2u}`` underflows: the polynomial factors would overflow to ``inf · 0``)."""
+    u = np.where(u > _U_ZERO, _U_ZERO, u)
     e2 = np.exp(-2.0 * u)
     e4 = e2 * e2
     if base is LayerBase.BONDED:
@@ -150,7 +257,8 @@ def compliance_function(t, nu: float, base: LayerBase | str = LayerBase.BONDED) 
     ValueError
         ``nu`` outside ``[0, 0.5]`` or ``base`` unknown.
     """
-    return 1.0 - _one_minus_compliance(np.asarray(t, dtype=float), _nu(nu), _base(base))
+    t = _reals("t", t, "finite numbers >= 0 (ξh)", lambda value: value >= 0.0)
+    return 1.0 - _one_minus_compliance(t, _nu(nu), _base(base))
 
 
 def _direct_kernel(v: np.ndarray, nu: float, base: LayerBase) -> np.ndarray:
@@ -231,7 +339,8 @@ def kernel(v, nu: float, base: LayerBase | str = LayerBase.BONDED) -> np.ndarray
     ValueError
         ``nu`` outside ``[0, 0.5]`` or ``base`` unknown.
     """
-    v = np.asarray(v, dtype=float)
+    v = _reals("v", v, f"finite numbers with |v| <= {KERNEL_V_MAX:g} (the quadrature's range)",
+               lambda value: np.abs(value) <= KERNEL_V_MAX)
     nu, base = _nu(nu), _base(base)
     return _kernel_for(nu, base, float(np.max(np.abs(v), initial=0.0)) + 1.0)(v)
 
@@ -316,6 +425,18 @@ class PunchSolution:
         """``Φ = ∫₀¹ Θ = K(a)/(2E* a)`` (L2)."""
         return float(self.weights @ self.theta[:, 0])
 
+    def _column(self, column) -> int:
+        """``column`` if it names a profile's right-hand side (1 to the number of profiles), else a one-line error."""
+        profiles = self.theta.shape[1] - 1
+        if profiles == 0:
+            raise ValueError(f"column={shown(column)} is not allowed: this solution has no profile's right-hand "
+                             "side; allowed: a solution with exponents (solve_punch(..., exponents=(2.0,)))")
+        column = check_count("column", column, 1)
+        if column > profiles:
+            raise ValueError(f"column={column} is not allowed; allowed: 1 to {profiles} (the profiles' right-hand "
+                             "sides)")
+        return column
+
     @property
     def edge_factor(self) -> float:
         """``Θ(1)``: ``K'(a) = 2E* Θ(1)²`` (L3)."""
@@ -335,7 +456,7 @@ class PunchSolution:
             The generalized MDR profile over the half-space's at ``x = a``.
         """
         edges = self.edge_values()
-        return float(edges[column] / edges[0])
+        return float(edges[self._column(column)] / edges[0])
 
     def force_factor(self, column: int = 1) -> float:
         """``χ = F₀(a)/(2E* a g∞(a)) = γΦ − ∫₀¹ Θ_g`` of a profile's column: the non-adhesive force.
@@ -368,7 +489,11 @@ class PunchSolution:
         numpy.ndarray
             ``φ``, shaped as ``rho``.
         """
-        rho = np.asarray(rho, dtype=float)
+        rho = _reals("rho", rho, "finite numbers >= 0 (r/a)", lambda value: value >= 0.0)
+        points = _OUTER_NODES * np.ceil(np.maximum(rho - 1.0, 0.0) * max(self.lam, 1.0) / 2.0)
+        DEFAULT_LIMITS.check(f"the surface displacement at r/a up to {float(np.max(rho, initial=0.0)):.6g} "
+                             f"(a/h = {self.lam:g})", samples=float(np.max(points, initial=0.0)),
+                             memory=SOLVE_BYTES_PER_PAIR * float(np.max(points, initial=0.0)) * self.sigma.size)
         out = np.ones(rho.shape)
         x, w = np.polynomial.legendre.leggauss(_OUTER_NODES)
         for index in np.ndindex(rho.shape):
@@ -396,9 +521,16 @@ def _gauss_legendre(count: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _solve(lam: float, nu: float, base: LayerBase, rhs: Callable[[np.ndarray], np.ndarray],
-           rhs_at_edge: tuple[float, ...], exponents: tuple[float, ...], nodes: int | None) -> PunchSolution:
-    """The Nyström solve of (L1) with the right-hand sides ``1`` and ``rhs(σ)`` (columns)."""
+           rhs_at_edge: tuple[float, ...], exponents: tuple[float, ...], nodes: int | None,
+           limits: Limits | None = None) -> PunchSolution:
+    """The Nyström solve of (L1) with the right-hand sides ``1`` and ``rhs(σ)`` (columns); ``λ`` up to
+    :data:`LAMBDA_SOLVE_MAX` and the nodes' memory within ``limits`` (checked before anything is built)."""
+    if not lam <= LAMBDA_SOLVE_MAX:
+        raise ValueError(f"a/h={lam!r} is not allowed for a direct solve; allowed: 0 <= a/h <= {LAMBDA_SOLVE_MAX:g} "
+                         "(where its nodes are converged; the thin-layer limits of theory.layer_symbolic beyond)")
     count = nystrom_nodes(lam) if nodes is None else nodes
+    check_limits(limits).check(f"the layer's Nyström solve with {count} nodes (a/h = {lam:g})",
+                               memory=SOLVE_BYTES_PER_PAIR * float(count) ** 2)
     sigma, weights = _gauss_legendre(count)
     right = np.column_stack([np.ones(count), rhs(sigma)])
     if lam == 0.0:
@@ -411,7 +543,7 @@ def _solve(lam: float, nu: float, base: LayerBase, rhs: Callable[[np.ndarray], n
 
 
 def solve_punch(lam: float, nu: float, base: LayerBase | str = LayerBase.BONDED, exponents=(2.0,),
-                nodes: int | None = None) -> PunchSolution:
+                nodes: int | None = None, limits: Limits | None = None) -> PunchSolution:
     r"""Solve the layer's punch equation (L1) at ``λ = a/h`` directly (no table), with power-law right-hand sides.
 
     .. math:: \Theta(\tau) - \frac{\lambda}{\pi}\int_0^1 \Theta(\sigma)
@@ -430,6 +562,8 @@ def solve_punch(lam: float, nu: float, base: LayerBase | str = LayerBase.BONDED,
         power law ``c rⁿ``; 2 the paraboloid).
     nodes : int or None, default None
         Gauss–Legendre nodes (default :func:`nystrom_nodes`).
+    limits : Limits or None, default None
+        The memory the solve may take (:data:`SOLVE_BYTES_PER_PAIR` per pair of nodes; ``None``: the defaults).
 
     Returns
     -------
@@ -439,14 +573,19 @@ def solve_punch(lam: float, nu: float, base: LayerBase | str = LayerBase.BONDED,
     Raises
     ------
     ValueError
-        ``lam`` negative or not finite, ``nu`` outside ``[0, 0.5]``, ``base`` unknown, an exponent ≤ 0.
+        ``lam`` negative, not finite or beyond :data:`LAMBDA_SOLVE_MAX`, ``nu`` outside ``[0, 0.5]``, ``base``
+        unknown, an exponent ≤ 0; the nodes' memory beyond ``limits``
+        (``ResourceLimitError``).
     """
-    lam = check_real("lam", lam, "a finite number >= 0 (a/h)", lambda value: value >= 0.0)
+    lam = check_real("lam", lam, f"a finite number >= 0 (a/h), at most {LAMBDA_SOLVE_MAX:g}", lambda value: value >= 0.0)
+    if isinstance(exponents, (str, bytes)) or not hasattr(exponents, "__iter__"):
+        raise TypeError(f"exponents={shown(exponents)} ({type(exponents).__name__}) is not allowed; allowed: a "
+                        "sequence of numbers > 0, e.g. (2.0,)")
     exps = tuple(check_real("exponents", n, "numbers > 0", lambda value: value > 0.0) for n in exponents)
-    if nodes is not None and (isinstance(nodes, bool) or not isinstance(nodes, int) or nodes < 2):
-        raise ValueError(f"nodes={nodes!r} is not allowed; allowed: an integer >= 2 or None")
+    if nodes is not None:
+        nodes = check_count("nodes", nodes, 2)
     return _solve(lam, _nu(nu), _base(base), lambda s: np.power.outer(s, np.array(exps, dtype=float)),
-                  (1.0,) * len(exps), exps, nodes)
+                  (1.0,) * len(exps), exps, nodes, limits)
 
 
 def table_cache_path(nu: float, base: LayerBase | str, exponent: float) -> Path | None:
@@ -496,6 +635,10 @@ def _table_row(lam: float, nu: float, base: LayerBase, exponent: float) -> tuple
 def _build_table(nu: float, base: LayerBase, exponent: float) -> dict[str, np.ndarray]:
     grid = _table_grid()
     rows = np.array([_table_row(float(lam), nu, base, exponent) for lam in np.exp(grid)])
+    if not np.all(rows > 0.0):  # (χₙ ≈ n/(n + 1) is lost to round-off when n is near 0: its logarithm is not finite)
+        raise ValueError(f"exponent={exponent!r} is not allowed: its table's factors are lost to round-off (χₙ = "
+                         f"{float(np.min(rows)):.3g}); allowed: an exponent whose factors are positive doubles "
+                         "(n of 1e-10 and above)")
     out = {"s": grid, "k0": np.array(float(kernel(0.0, nu, base)))}
     out.update({name: np.log(rows[:, j]) for j, name in enumerate(_COLUMNS)})
     return out
@@ -560,11 +703,11 @@ class LayerTable:
         return {name: make_interp_spline(self.columns["s"], self.columns[name], k=5) for name in _COLUMNS}
 
     def _lam(self, lam) -> np.ndarray:
-        lam = np.asarray(lam, dtype=float)
+        lam = real_array("lam", lam, f"numbers in [0, {LAMBDA_MAX:g}] (a/h)")
         if not np.all((lam >= 0.0) & (lam <= LAMBDA_MAX)):
             bad = float(lam[~((lam >= 0.0) & (lam <= LAMBDA_MAX))].ravel()[0])
             raise ValueError(f"a/h={bad!r} is not allowed; allowed: 0 <= a/h <= {LAMBDA_MAX:g} (the table's range; "
-                             "solve_punch solves beyond it)")
+                             "solve_punch solves up to LAMBDA_SOLVE_MAX)")
         return lam
 
     def _series(self, lam: np.ndarray) -> dict[str, np.ndarray]:
@@ -755,6 +898,7 @@ def _abel_factor(n: float) -> float:
     return math.exp(0.5 * math.log(math.pi) + math.lgamma(n / 2.0 + 1.0) - math.lgamma(n / 2.0 + 0.5))
 
 
+@_relation
 def punch_stiffness(a, E_star: float, nu: float, layer: Layer):
     r"""The normal stiffness ``K(a)`` of a rigid flat punch of radius ``a`` on the layer (L2).
 
@@ -785,6 +929,7 @@ def punch_stiffness(a, E_star: float, nu: float, layer: Layer):
     return 2.0 * E_star * a * _factors(nu, layer).stiffness_factor(_relative(a, layer))
 
 
+@_relation
 def punch_stiffness_slope(a, E_star: float, nu: float, layer: Layer):
     r"""``K'(a) = 2E* Θ(1; a/h)²`` (L3): exact, from the punch's edge value and Griffith's balance.
 
@@ -814,6 +959,7 @@ def punch_stiffness_slope(a, E_star: float, nu: float, layer: Layer):
     return 2.0 * spring_stiffness_density(a, E_star, nu, layer)
 
 
+@_relation
 def spring_stiffness_density(x, E_star: float, nu: float, layer: Layer):
     r"""The MDR springs' normal stiffness per width at ``x``: ``k(x) = K'(|x|)/2`` (``E*`` on the half-space, (5)).
 
@@ -844,6 +990,7 @@ def spring_stiffness_density(x, E_star: float, nu: float, layer: Layer):
     return E_star * edge * edge
 
 
+@_relation
 def hess_elongation(a, dgamma: float, E_star: float, nu: float, layer: Layer):
     r"""Heß's rule on the layer: the boundary spring's largest elongation (generalised (8)).
 
@@ -879,6 +1026,7 @@ def hess_elongation(a, dgamma: float, E_star: float, nu: float, layer: Layer):
     return np.sqrt(2.0 * np.pi * a * dgamma / E_star) / _factors(nu, layer).edge_factor(_relative(a, layer))
 
 
+@_relation
 def surface_displacement(r, a: float, nu: float, layer: Layer) -> np.ndarray:
     r"""``φ(r; a)``: the layer's surface displacement around a flat punch of radius ``a``, over the punch's (L5).
 
@@ -919,6 +1067,7 @@ def surface_displacement(r, a: float, nu: float, layer: Layer) -> np.ndarray:
 _ABEL_NODES = 64
 
 
+@_relation
 def equivalent_profile(x, profile_slope: Callable[[np.ndarray], np.ndarray], nu: float, layer: Layer) -> np.ndarray:
     r"""The generalized MDR profile ``g(x)`` of an axisymmetric profile ``f(r)`` on the layer (L4).
 
@@ -971,6 +1120,7 @@ def equivalent_profile(x, profile_slope: Callable[[np.ndarray], np.ndarray], nu:
     return out
 
 
+@_relation
 def power_law_profile(x, profile, nu: float, layer: Layer) -> np.ndarray:
     r"""The generalized MDR profile of a paraboloid or power law ``f = c rⁿ`` on the layer (tabulated).
 
@@ -1008,6 +1158,7 @@ def power_law_profile(x, profile, nu: float, layer: Layer) -> np.ndarray:
     return _abel_factor(n) * c * x**n * _factors(nu, layer, n).profile_factor(_relative(x, layer))
 
 
+@_relation
 def power_law_profile_slope(x, profile, nu: float, layer: Layer) -> np.ndarray:
     r"""``g'(x)`` of :func:`power_law_profile` for ``x ≥ 0`` (odd in ``x``).
 
@@ -1047,6 +1198,7 @@ def power_law_profile_slope(x, profile, nu: float, layer: Layer) -> np.ndarray:
     return np.sign(x) * _abel_factor(n) * c * slope
 
 
+@_relation
 def normal_force(d, a, profile, E_star: float, nu: float, layer: Layer) -> np.ndarray:
     r"""The normal force of the springs in contact at depth ``d`` and radius ``a`` on the layer (generalised (10)).
 
@@ -1091,6 +1243,7 @@ def normal_force(d, a, profile, E_star: float, nu: float, layer: Layer) -> np.nd
     return 2.0 * E_star * a * (g_half * factors.force_factor(lam) + factors.stiffness_factor(lam) * (d - at_edge))
 
 
+@_relation
 def branch_depth(a, profile, E_star: float, nu: float, dgamma: float, layer: Layer) -> np.ndarray:
     r"""The depth of the adhesive contact of radius ``a`` on the layer (generalised (9)): ``d = g(a) − Δl(a)``.
 
@@ -1126,6 +1279,7 @@ def branch_depth(a, profile, E_star: float, nu: float, dgamma: float, layer: Lay
     return power_law_profile(a, profile, nu, layer) - hess_elongation(a, dgamma, E_star, nu, layer)
 
 
+@_relation
 def branch_normal_force(a, profile, E_star: float, nu: float, dgamma: float, layer: Layer) -> np.ndarray:
     r"""The normal force on the adhesive (JKR-type) branch of radius ``a`` on the layer (generalised (10)).
 
@@ -1189,6 +1343,7 @@ class PullOff:
 _SCAN_POINTS = 241
 
 
+@_relation
 def pull_off(profile, E_star: float, nu: float, dgamma: float, layer: Layer) -> PullOff:
     r"""The pull-off under force control on the layer: the minimum of :func:`branch_normal_force` over ``a``.
 
