@@ -119,3 +119,19 @@ def test_the_layer_theory_is_unchanged_where_it_computes():
     assert L.punch_stiffness(0.0, E_STAR, NU, THIN) == 0.0
     assert L.pull_off(PARABOLOID, E_STAR, NU, 0.05, me.Layer()).force == pytest.approx(-1.5 * math.pi * 0.05 * 0.03,
                                                                                        rel=1e-12)
+
+
+# --- M3: `lammps-check --E 1e308` started LAMMPS, which stopped on 'inf' in its input ("LAMMPS: ERROR: Expected
+# floating point parameter instead of 'inf'"): the LAMMPS check did not refuse the scales simulate and validate refuse.
+# The one path of every referee is checked for its scales where it is taken --------------------------------------------
+
+def test_the_lammps_check_refuses_scales_beyond_the_double_range_before_it_runs(monkeypatch):
+    from mdr_events.dem import check
+
+    def never(*args, **kwargs):
+        raise AssertionError("LAMMPS was started")
+
+    monkeypatch.setattr(check, "run_lammps", never)
+    contact = me.Contact.paper().replace(E=1e308)
+    with pytest.raises(ValueError, match=re.escape("E* is 1.33e+308 Pa; allowed: parameters whose scales lie within")):
+        check.lammps_check(contact, "A", 20.0, model=check.LammpsModel("jkr"))
