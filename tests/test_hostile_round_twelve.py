@@ -135,3 +135,37 @@ def test_the_lammps_check_refuses_scales_beyond_the_double_range_before_it_runs(
     contact = me.Contact.paper().replace(E=1e308)
     with pytest.raises(ValueError, match=re.escape("E* is 1.33e+308 Pa; allowed: parameters whose scales lie within")):
         check.lammps_check(contact, "A", 20.0, model=check.LammpsModel("jkr"))
+
+
+# --- M4: the rate-dependent angles (analysis.rate_angles, new since round eleven): slip_onset_depth_at_speed(None, ...)
+# an AttributeError, speed=1e300 an IndexError (a path of 1e-304 s), a critical angle outside Brent's bracket scipy's
+# "f(a) and f(b) must have different signs", an empty grid xarray's words, 1e5 angles or 2000 speeds hours unchecked;
+# solve_edge on a path shorter than the jump-in's lag returned radius 0 at d_max (the critical angle then "found") ---
+RATE_LAW = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-6, 0.6)
+
+
+@pytest.mark.parametrize("call, named", [
+    (lambda: me.slip_onset_depth_at_speed(None, RATE_LAW, 1e-6, 20.0), "params=None (NoneType) is not allowed"),
+    (lambda: me.slip_onset_depth_at_speed(PAPER, RATE_LAW, 1e300, 20.0), "speed=1e+300 m/s: "),
+    (lambda: me.critical_angle_at_speed(PAPER.replace(E=1e12), RATE_LAW, 1e-6),
+     "the springs slide before d_max at every angle up to 90° - 1e-6 rad"),
+    (lambda: me.phase_diagram_at_speeds(PAPER, RATE_LAW, [], [20.0]), "speeds=[] is not allowed"),
+    (lambda: me.phase_diagram_at_speeds(PAPER, RATE_LAW, [1e-6], np.linspace(1.0, 89.0, 100_000)),
+     "the phase diagram at 1 speeds and 100000 angles (100000 solves of the edge)"),
+    (lambda: me.critical_angles_at_speeds(PAPER, RATE_LAW, np.linspace(1e-9, 1e-5, 2000)),
+     "the critical angles at 2000 speeds"),
+    (lambda: me.critical_angle_at_speed(PAPER, RATE_LAW, 1e3), "jumps in over 5.34e-06 s, beyond the path's end"),
+])
+def test_the_rate_angles_name_what_they_cannot_compute(call, named):
+    with pytest.raises((ValueError, TypeError)) as caught:
+        call()
+    message = str(caught.value)
+    assert named in message and "allowed" in message and "\n" not in message
+
+
+def test_an_edge_still_jumping_in_at_the_paths_end_is_refused():
+    path = me.Path(np.array([(0.0, 0.0), (0.0, PAPER.d_max)]), speed=1e3)
+    from mdr_events.models.continuum import solve_edge
+
+    with pytest.raises(ValueError, match="the indenter outran the advancing edge, which would leave no contact"):
+        solve_edge(PAPER, path, RATE_LAW)
