@@ -169,3 +169,25 @@ def test_an_edge_still_jumping_in_at_the_paths_end_is_refused():
 
     with pytest.raises(ValueError, match="the indenter outran the advancing edge, which would leave no contact"):
         solve_edge(PAPER, path, RATE_LAW)
+
+
+# --- M5: two sweeps started together on one store (two study files whose output is one directory) both exited 0 and
+# left a store no later sweep reads ("exists and is not a sweep's store": --resume and --restart refused it); a second
+# sweep laying out the store under the first could mark the first's runs done with its own values. A sweep holds an
+# exclusive lock on its store while it runs --------------------------------------------------------------------------
+
+def test_a_store_in_use_by_another_sweep_is_refused_and_released_after(tmp_path):
+    from mdr_events.analysis.sweep_store import _locked
+
+    store = tmp_path / "s.zarr"
+    holder = _locked(str(store))  # (what a sweep running in another process holds)
+    with pytest.raises(ValueError, match=re.escape("is in use by another sweep (its lock")) as caught:
+        me.sweep({"tau0": [3e4, 4e4]}, "A", 20.0, base=PAPER, scheduler="serial", store=store,
+                 quantities=("critical_angle_A",))
+    assert "allowed" in str(caught.value) and not store.exists()
+    holder.close()
+    first = me.sweep({"tau0": [3e4, 4e4]}, "A", 20.0, base=PAPER, scheduler="serial", store=store,
+                     quantities=("critical_angle_A",))
+    again = me.sweep({"tau0": [3e4, 4e4]}, "A", 20.0, base=PAPER, scheduler="serial", store=store,
+                     quantities=("critical_angle_A",))  # (the lock released when the first ended)
+    np.testing.assert_array_equal(first["critical_angle_A"].values, again["critical_angle_A"].values)

@@ -73,7 +73,8 @@ from mdr_events.contact.layer import Layer, LayerBase
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.validation import check_count, check_real, real_array, shown
 
-__all__ = ["LAMBDA_MAX", "LAMBDA_MIN", "LAMBDA_SOLVE_MAX", "KERNEL_V_MAX", "SOLVE_BYTES_PER_PAIR", "compliance_function", "kernel", "nystrom_nodes", "PunchSolution",
+__all__ = ["LAMBDA_MAX", "LAMBDA_MIN", "LAMBDA_SOLVE_MAX", "KERNEL_V_MAX", "SOLVE_BYTES_PER_PAIR",
+           "compliance_function", "kernel", "nystrom_nodes", "PunchSolution",
            "solve_punch", "LayerTable", "layer_table", "table_cache_path", "punch_stiffness", "punch_stiffness_slope",
            "spring_stiffness_density", "hess_elongation", "surface_displacement", "equivalent_profile",
            "power_law_profile", "power_law_profile_slope", "normal_force", "branch_depth", "branch_normal_force",
