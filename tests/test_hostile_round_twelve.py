@@ -100,7 +100,7 @@ THIN = me.Layer(1e-3)
     (lambda: L.solve_punch(1.0, NU).profile_factor(2), "column=2 is not allowed; allowed: 1 to 1"),
     (lambda: L.solve_punch(1.0, NU, exponents=()).force_factor(), "this solution has no profile's right-hand side"),
     (lambda: L.layer_table(NU).stiffness_factor("x"), "lam='x' (of str values) is not allowed"),
-    (lambda: me.Layer(10**400), "(beyond the double range)"),
+    (lambda: me.Layer(10**400), "(an integer beyond the double range is none)"),
     (lambda: me.Layer(1e-3).relative_radius(math.nan), "radius=nan is not allowed"),
     (lambda: me.LayerBase("x"), "LayerBase('x') is not allowed; allowed: 'bonded', 'frictionless'"),
     (lambda: me.Layer.from_attrs({"param_layer_thickness": "abc"}), "attrs do not describe a layer"),
