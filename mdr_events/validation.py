@@ -115,6 +115,9 @@ def check_real(name: str, value: Any, allowed: str, valid=None, finite: bool = T
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         raise TypeError(f"{name}={shown(value)} ({type(value).__name__}) is not allowed; allowed: {allowed}")
     number = as_float(value)
+    if math.isinf(number) and not isinstance(value, (float, np.floating)):  # (10**400: no double holds it; not inf)
+        raise ValueError(f"{name}={shown(value)} is not allowed; allowed: {allowed} (an integer beyond the double "
+                         "range is none)")
     if not ((math.isfinite(number) if finite else number == number) and (valid is None or valid(number))):
         raise ValueError(f"{name}={shown(value)} is not allowed; allowed: {allowed}")
     return number

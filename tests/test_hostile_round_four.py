@@ -85,7 +85,8 @@ def test_an_executor_that_is_shut_down_is_named():
 
 
 @pytest.mark.parametrize("change, words", [
-    (lambda ds: ds.assign(big=("alpha", np.array([2**62, 1]))), "dataset cannot be written as netCDF-3"),
+    (lambda ds: ds.assign(big=("alpha", np.array([2**62, 1]), {"units": "1", "long_name": "big"})),
+     "dataset cannot be written as netCDF-3"),
     (lambda ds: ds.assign_attrs(weird={"a": 1}), "dataset cannot be written as netCDF-3"),
     (lambda ds: ds.assign_attrs(param_E=float("inf")), "dataset: Parameters.E=inf is not allowed"),
 ])

@@ -38,12 +38,15 @@ from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.models.continuum.rate_edge import EDGE_RTOL, solve_edge
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
+from mdr_events.limits import Limits, check_limits
 from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law
+from mdr_events.models.indenters import check_simulated_profile
+from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_real, shown
 
 __all__ = ["critical_angle_at_speed", "critical_angles_at_speeds", "slip_onset_depth_at_speed",
-           "phase_diagram_at_speeds", "ANGLE_XTOL", "ONSET_SAMPLES"]
+           "phase_diagram_at_speeds", "ANGLE_XTOL", "ONSET_SAMPLES", "EDGE_SOLVE_STEPS", "CRITICAL_ANGLE_SOLVES"]
 
 #: Brent's tolerance on the angle (rad): the radius at ``d_max`` is known to about 1e-9 of itself (the edge's ODE at
 #: its ``rtol``), which moves the angle by about as much; 1e-12 rad lies below it.
@@ -55,14 +58,61 @@ _BRACKET = (1e-6, 0.5 * math.pi - 1e-6)
 #: the margin ``tan α K a − d`` is concave on the way in (the radius grows ever slower with the depth), so it changes
 #: sign once.
 ONSET_SAMPLES = 513
+#: What one solve of the edge counts against :attr:`~mdr_events.Limits.steps` (about 0.05 to 0.5 s here: the
+#: discrete model's 2e7 steps, about 30 s, are 2000 solves), so that a grid of speeds and angles is checked before it
+#: runs (1e5 angles ran for hours).
+EDGE_SOLVE_STEPS = 1e4
+#: The solves of the edge one critical angle takes (Brent's method on :data:`_BRACKET` to :data:`ANGLE_XTOL`:
+#: about 40, and the radius at the angle found).
+CRITICAL_ANGLE_SOLVES = 50
 #: The way in reaches ``d_max`` first, and twice as deep each time no spring slid on it, at most this many times.
 _MAX_DOUBLINGS = 40
 
 
-def _checked(name: str, values, allowed: str, accept) -> list[float]:
-    """Each of ``values`` (a number or a sequence) checked as ``name[index]``: the numbers, or the one-line error."""
-    return [check_real(f"{name}[{index}]", value, allowed, accept)
-            for index, value in enumerate(np.atleast_1d(np.asarray(values, dtype=object)).tolist())]
+def _checked(params: Parameters, law: RateDependentAdhesion, speed, profile: SimulatedProfile,
+             ) -> tuple[RateDependentAdhesion, float]:
+    """The law and the speed of a rate-dependent angle or onset, every argument checked before a solve: ``params`` a
+    Parameters, the law, the speed finite and > 0, the profile, and the run's scales at that speed within the double
+    range (:func:`~mdr_events.theory.scales.check_representable`: ``speed = 1e300`` leaves a path of 1e-304 s)."""
+    if not isinstance(params, Parameters):
+        raise TypeError(f"params={shown(params)} ({type(params).__name__}) is not allowed; allowed: a Parameters")
+    law = check_rate_law(law)
+    speed = check_real("speed", speed, "a finite number > 0 (m/s)", lambda value: value > 0.0)
+    profile = check_simulated_profile(profile)
+    try:
+        check_representable(params.replace(v=speed), profile)
+    except ValueError as error:
+        raise ValueError(f"speed={speed!r} m/s: {error}") from None
+    return law, speed
+
+
+def _grid(name: str, values, allowed: str, valid) -> list[float]:
+    """A non-empty 1-D grid of speeds or angles, each checked (``name[i]`` named), else a one-line error."""
+    array = np.asarray(values, dtype=object)
+    if array.ndim > 1 or array.size == 0 or isinstance(values, (str, bytes, set, dict)):
+        raise (TypeError if isinstance(values, (str, bytes, set, dict)) else ValueError)(
+            f"{name}={shown(values)} is not allowed; allowed: a non-empty 1-D sequence of {allowed}")
+    return [check_real(f"{name}[{index}]", value, allowed, valid) for index, value in enumerate(np.atleast_1d(array))]
+
+
+def _check_solves(limits, what: str, solves: int) -> None:
+    """Count ``solves`` of the edge against ``limits`` (:data:`EDGE_SOLVE_STEPS` each) before the first."""
+    check_limits(limits).check(f"{what} ({solves} solves of the edge)", steps=float(solves) * EDGE_SOLVE_STEPS)
+
+
+def _bracketed_root(margin, what: str) -> float:
+    """The angle (rad) in :data:`_BRACKET` where ``margin`` changes sign (Brent's method), or a one-line ``ValueError``
+    saying on which side the critical angle lies when it does not change sign there (not scipy's words)."""
+    known = {end: margin(end) for end in _BRACKET}  # (Brent's method starts from the ends: each solved once)
+    low, high = known.values()
+    if low < 0.0 <= high or high < 0.0 <= low:
+        return optimize.brentq(lambda alpha: known[alpha] if alpha in known else margin(alpha), *_BRACKET,
+                               xtol=ANGLE_XTOL)
+    side = ("the springs slide before d_max at every angle up to 90° - 1e-6 rad: the critical angle is 90° to "
+            "that precision" if high < 0.0 else "no spring slides before d_max at any angle down to 1e-6 rad: the "
+            "critical angle is 0° to that precision")
+    raise ValueError(f"{what}: {side}; allowed: parameters, law and speed whose critical angle lies within "
+                     f"[{math.degrees(_BRACKET[0]):.3g}°, {math.degrees(_BRACKET[1]):.8g}°]")
 
 
 def _law_attrs(law: RateDependentAdhesion) -> dict[str, object]:
@@ -112,10 +162,7 @@ def critical_angle_at_speed(params: Parameters, law: RateDependentAdhesion, spee
     ValueError
         A ``speed`` that is not a finite number > 0, or what :func:`~mdr_events.models.continuum.solve_edge` refuses.
     """
-    law = check_rate_law(law)
-    speed = check_real("speed", speed, "a finite number > 0 (m/s)", lambda value: value > 0.0)
-    if not isinstance(params, Parameters):
-        raise TypeError(f"params={shown(params)} ({type(params).__name__}) is not allowed; allowed: a Parameters")
+    law, speed = _checked(params, law, speed, profile)
     cap = power_law.cap_per_radius(params)
     if cap == 0.0:
         return 90.0
@@ -124,11 +171,12 @@ def critical_angle_at_speed(params: Parameters, law: RateDependentAdhesion, spee
         radius = _radius_at_depth(params, law, speed, alpha, profile, rtol, method)
         return cap * radius * math.tan(alpha) / params.d_max - 1.0
 
-    return math.degrees(optimize.brentq(margin, *_BRACKET, xtol=ANGLE_XTOL))
+    return math.degrees(_bracketed_root(margin, f"the critical angle at speed={speed!r} m/s"))
 
 
 def critical_angles_at_speeds(params: Parameters, law: RateDependentAdhesion, speeds: Sequence[float],
-                              profile: SimulatedProfile = None, method: str = "Radau") -> xr.Dataset:
+                              profile: SimulatedProfile = None, method: str = "Radau",
+                              limits: Limits | None = None) -> xr.Dataset:
     """:func:`critical_angle_at_speed` at each of ``speeds``, labelled, with the rate-independent limits.
 
     Parameters
@@ -143,6 +191,9 @@ def critical_angles_at_speeds(params: Parameters, law: RateDependentAdhesion, sp
         The indenter (``None``: the paraboloid of ``params.R``).
     method : str, optional
         The edge's ``solve_ivp`` method (as :func:`critical_angle_at_speed`).
+    limits : Limits or None, optional
+        The solves of the edge allowed (:data:`CRITICAL_ANGLE_SOLVES` per speed, :data:`EDGE_SOLVE_STEPS` steps each;
+        ``None``: the defaults), checked before the first.
 
     Returns
     -------
@@ -156,7 +207,8 @@ def critical_angles_at_speeds(params: Parameters, law: RateDependentAdhesion, sp
     ValueError
         A speed that is not a finite number > 0, or what :func:`critical_angle_at_speed` refuses.
     """
-    speeds = _checked("speeds", speeds, "a finite number > 0 (m/s)", lambda value: value > 0.0)
+    speeds = _grid("speeds", speeds, "finite numbers > 0 (m/s)", lambda v: v > 0.0)
+    _check_solves(limits, f"the critical angles at {len(speeds)} speeds", CRITICAL_ANGLE_SOLVES * len(speeds))
     angles = np.array([critical_angle_at_speed(params, law, speed, profile, EDGE_RTOL, method) for speed in speeds])
     radii = np.array([_radius_at_depth(params, law, speed, math.radians(angle), profile, EDGE_RTOL, method)
                       if angle < 90.0 else math.nan for speed, angle in zip(speeds, angles)])
@@ -206,8 +258,7 @@ def slip_onset_depth_at_speed(params: Parameters, law: RateDependentAdhesion, sp
     ValueError
         A ``speed`` or ``alpha`` out of range, or what :func:`~mdr_events.models.continuum.solve_edge` refuses.
     """
-    law = check_rate_law(law)
-    speed = check_real("speed", speed, "a finite number > 0 (m/s)", lambda value: value > 0.0)
+    law, speed = _checked(params, law, speed, profile)
     alpha = check_real("alpha", alpha, "a number of degrees in (0, 90)", lambda value: 0.0 < value < 90.0)
     cap, tangent = power_law.cap_per_radius(params), math.tan(math.radians(alpha))
     if cap == 0.0:
@@ -234,7 +285,8 @@ def slip_onset_depth_at_speed(params: Parameters, law: RateDependentAdhesion, sp
 
 
 def phase_diagram_at_speeds(params: Parameters, law: RateDependentAdhesion, speeds: Sequence[float], alpha,
-                            profile: SimulatedProfile = None, method: str = "Radau") -> xr.Dataset:
+                            profile: SimulatedProfile = None, method: str = "Radau",
+                            limits: Limits | None = None) -> xr.Dataset:
     """Scenario A's phase diagram (Fig. 9a) at each of ``speeds``: the slip-onset depth against the angle.
 
     Parameters
@@ -251,6 +303,9 @@ def phase_diagram_at_speeds(params: Parameters, law: RateDependentAdhesion, spee
         The indenter (``None``: the paraboloid of ``params.R``).
     method : str, optional
         The edge's ``solve_ivp`` method (Radau, the reference; LSODA about seven times faster within 2e-9).
+    limits : Limits or None, optional
+        The solves of the edge allowed (one per speed and angle, :data:`EDGE_SOLVE_STEPS` steps each; ``None``: the
+        defaults), checked before the first.
 
     Returns
     -------
@@ -264,8 +319,10 @@ def phase_diagram_at_speeds(params: Parameters, law: RateDependentAdhesion, spee
     ValueError
         A speed or angle out of range, or what :func:`slip_onset_depth_at_speed` refuses.
     """
-    speeds = _checked("speeds", speeds, "a finite number > 0 (m/s)", lambda value: value > 0.0)
-    angles = _checked("alpha", alpha, "a number of degrees in (0, 90)", lambda value: 0.0 < value < 90.0)
+    speeds = _grid("speeds", speeds, "finite numbers > 0 (m/s)", lambda v: v > 0.0)
+    angles = _grid("alpha", alpha, "numbers of degrees in (0, 90)", lambda a: 0.0 < a < 90.0)
+    _check_solves(limits, f"the phase diagram at {len(speeds)} speeds and {len(angles)} angles",
+                  len(speeds) * len(angles))
     depths = np.array([[slip_onset_depth_at_speed(params, law, speed, angle, profile, EDGE_RTOL, method)
                         for angle in angles] for speed in speeds])
     dataset = xr.Dataset(

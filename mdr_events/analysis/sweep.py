@@ -281,10 +281,14 @@ def sweep(grid, contact=None, motion=None, alpha: float | None = None, method: s
     store = None if job.output.store is None else Store(job.output.store, _signature(job), spec.quantities, runs,
                                                         job.engine.chunk_size, job.output.resume, samples)
     pending = [(start, min(start + job.engine.chunk_size, runs)) for start in range(0, runs, job.engine.chunk_size)]
-    if store is not None and store.done() is not None:
-        pending = runs_done.restore(store, pending)
-    if pending:  # (a store that holds every run starts no engine)
-        _run_chunks(job, pending, runs_done, store)
+    try:
+        if store is not None and store.done() is not None:
+            pending = runs_done.restore(store, pending)
+        if pending:  # (a store that holds every run starts no engine)
+            _run_chunks(job, pending, runs_done, store)
+    finally:
+        if store is not None:
+            store.close()
     return _result(job, runs_done)
 
 

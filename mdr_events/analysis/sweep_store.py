@@ -6,6 +6,11 @@ from __future__ import annotations
 import os
 from typing import Sequence
 
+try:  # POSIX: a sweep locks its store while it runs, so that a second sweep never lays one out under it
+    import fcntl
+except ImportError:  # pragma: no cover - Windows: no lock (one sweep at a time per store is the user's care)
+    fcntl = None  # type: ignore[assignment]
+
 import numpy as np
 import xarray as xr
 
@@ -51,6 +56,32 @@ def _is_sweep_store(path: str) -> bool:
         return False
 
 
+#: The lock file of a store ``<name>``: ``.<name>.lock`` beside it, held (``flock``, exclusive) while a sweep uses it.
+LOCK_SUFFIX = ".lock"
+
+
+def _locked(path: str):
+    """An open file holding the exclusive lock of the store at ``path`` for this process (``None`` without locks),
+    or a one-line ``ValueError`` if another sweep holds it (two sweeps laying out one store left it unreadable)."""
+    if fcntl is None:
+        return None
+    name = os.path.join(os.path.dirname(os.path.abspath(path)), f".{os.path.basename(os.path.normpath(path))}"
+                                                                  f"{LOCK_SUFFIX}")
+    try:  # (the store's directory checked before, by prepare_output_directory)
+        os.makedirs(os.path.dirname(name), exist_ok=True)
+        handle = open(name, "a")  # noqa: SIM115 - held open while the sweep runs; closed by Store.close
+    except OSError as error:
+        raise ValueError(f"store={path!r} cannot be locked ({error.strerror or error}: {name!r}); allowed: a store in "
+                         "a directory this user can write into") from None
+    try:
+        fcntl.flock(handle.fileno(), fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        handle.close()
+        raise ValueError(f"store={path!r} is in use by another sweep (its lock {name!r} is held); allowed: a store "
+                         "no other sweep is writing (wait for it to end, or give this sweep another store)") from None
+    return handle
+
+
 class Store:
     """A Zarr store holding the sweep's runs along a flat ``run`` dimension, one chunk per task.
 
@@ -60,24 +91,29 @@ class Store:
     def __init__(self, path: str | os.PathLike, signature: str, quantities: Sequence[str], runs: int, chunk: int,
                  resume: bool, history_samples: int | None = None):
         self.path, self.chunk, self.quantities = os.fspath(path), chunk, tuple(quantities)
-        is_store = _is_sweep_store(self.path)
-        if os.path.exists(self.path) and not is_store and (not os.path.isdir(self.path) or os.listdir(self.path)):
-            raise ValueError(f"store={self.path!r} exists and is not a sweep's store; allowed: a new path, an empty "
-                             "directory or a sweep's store (nothing else is overwritten)")
         if not os.path.exists(self.path):
             prepare_output_directory(self.path, "store")
             # (its parent takes it as an output directory takes a file: not the root, no temporary marker)
             parent = os.path.dirname(os.path.abspath(self.path))
             check_output_file("store", os.path.join(parent, os.path.basename(os.path.normpath(self.path))))
-        if resume and is_store:
-            existing = xr.open_zarr(self.path, zarr_format=2)
-            if existing.attrs.get("sweep_signature") != signature:
-                raise ValueError(f"store={self.path!r} holds another sweep (other parameters, grid or options); "
-                                 "allowed: this sweep's store to resume, or resume=False to start it afresh")
-            self.existing = existing.load()
-            return
-        self._lay_out(signature, runs, chunk, history_samples)
-        self.existing = None
+        self._lock = _locked(self.path)  # (before the store is read: a sweep laying it out is not "another's")
+        try:
+            is_store = _is_sweep_store(self.path)
+            if os.path.exists(self.path) and not is_store and (not os.path.isdir(self.path) or os.listdir(self.path)):
+                raise ValueError(f"store={self.path!r} exists and is not a sweep's store; allowed: a new path, an empty "
+                                 "directory or a sweep's store (nothing else is overwritten)")
+            if resume and is_store:
+                existing = xr.open_zarr(self.path, zarr_format=2)
+                if existing.attrs.get("sweep_signature") != signature:
+                    raise ValueError(f"store={self.path!r} holds another sweep (other parameters, grid or options); "
+                                     "allowed: this sweep's store to resume, or resume=False to start it afresh")
+                self.existing = existing.load()
+                return
+            self._lay_out(signature, runs, chunk, history_samples)
+            self.existing = None
+        except BaseException:  # (a refusal releases the lock: its traceback may keep this object alive)
+            self.close()
+            raise
 
     def _lay_out(self, signature: str, runs: int, chunk: int, history_samples: int | None) -> None:
         """Write the empty store (every run not done) before the first run."""
@@ -91,6 +127,12 @@ class Store:
         except OSError as error:  # what the checks before cannot see (/proc, a full disk, a read-only mount)
             raise ValueError(f"store={self.path!r} cannot be written ({error.strerror or error}); allowed: "
                              "a directory this user can create and write into") from None
+
+    def close(self) -> None:
+        """Release the store's lock (another sweep may then use it)."""
+        if self._lock is not None:
+            self._lock.close()
+            self._lock = None
 
     def done(self) -> np.ndarray | None:
         """Which runs the store holds already (``None``: a new store)."""

@@ -96,7 +96,9 @@ def reference_of(reference, tolerances, solution) -> tuple[PathSolution | None, 
 
 
 def one_path(job: ModelJob) -> tuple[Path, float | None]:
-    """The one path a candidate ran (its motion must have one case) and its angle (``None``: a custom path)."""
+    """The one path a candidate ran (its motion must have one case) and its angle (``None``: a custom path), its
+    scales within the double range (:func:`~mdr_events.theory.scales.check_representable`; every referee's, the
+    LAMMPS check's too, before it runs)."""
     if isinstance(job.motion, Paths):
         label, path = next(iter(job.motion.paths.items()))
         if len(job.motion.paths) != 1:
@@ -106,6 +108,7 @@ def one_path(job: ModelJob) -> tuple[Path, float | None]:
     if len(job.motion.alpha) != 1:
         raise ValueError(f"motion={job.motion!r} holds {len(job.motion.alpha)} angles; allowed: the one the candidate "
                          "ran")
+    check_representable(job.params, job.profile, job.friction)
     return job.motion.cases(job.params, job.profile, job.friction).paths[0], job.motion.alpha[0]
 
 

@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass
 from typing import Any, Mapping
 
-from mdr_events.validation import check_real, shown
+from mdr_events.validation import check_real, reads_attrs, shown
 
 __all__ = ["Layer", "LayerBase", "HALF_SPACE"]
 
@@ -29,6 +29,12 @@ class LayerBase(enum.Enum):
     BONDED = "bonded"
     #: Resting on the rigid base without friction: ``u_z = 0`` and no shear stress at ``z = h``.
     FRICTIONLESS = "frictionless"
+
+    @classmethod
+    def _missing_(cls, value: object) -> "LayerBase":
+        """A value that names no base: the package's one line (Enum's own names no allowed values)."""
+        raise ValueError(f"LayerBase({shown(value)}) is not allowed; allowed: "
+                         + ", ".join(repr(member.value) for member in cls))
 
 
 #: What ``Layer.base`` may be, in a message.
@@ -101,7 +107,13 @@ class Layer:
         -------
         float
             ``a / h``.
+
+        Raises
+        ------
+        TypeError, ValueError
+            ``radius`` not a finite number >= 0.
         """
+        radius = check_real("radius", radius, "a finite number >= 0 (m)", lambda value: value >= 0.0)
         return radius / self.thickness
 
     def describe(self) -> str:
@@ -128,6 +140,7 @@ class Layer:
                 "param_layer_base": self.base.value}
 
     @classmethod
+    @reads_attrs("a layer")
     def from_attrs(cls, attrs: Mapping[str, Any]) -> "Layer":
         """The layer a result was computed for (:meth:`to_attrs`); the half-space if the attributes name none.
 

@@ -15,7 +15,7 @@ elsewhere agrees with it. Reading and writing files is :mod:`mdr_events.io.files
 
 from __future__ import annotations
 
-from typing import Any, Mapping, Sequence
+from typing import Any, Collection, Mapping, Sequence
 
 import numpy as np
 import xarray as xr
@@ -153,17 +153,18 @@ def figure_of(dataset: xr.Dataset):
     return _FIGURES[content]
 
 
-def dims_match(actual: tuple[str, ...], required: Dims) -> bool:
+def dims_match(actual: tuple[str, ...], required: Dims, selected: Collection[str] = ()) -> bool:
     """Whether a variable's dimensions ``actual`` are the ``required`` ones of a schema (:data:`Dims`).
 
-    ``None`` allows any; otherwise the number must agree and each dimension must be the one named, or
-    one of the names of a tuple of alternatives, at its position.
+    ``None`` allows any; otherwise each dimension must be the one named, or one of the names of a tuple
+    of alternatives, at its position. A required dimension named in ``selected`` (the dataset's scalar
+    coordinates: what ``isel``/``sel`` of one label leaves, e.g. ``ds.isel(alpha=0)``) may be absent.
     """
     if required is None:
         return True
-    return len(actual) == len(required) and all(
-        name in allowed if isinstance(allowed, tuple) else name == allowed
-        for name, allowed in zip(actual, required))
+    names = [allowed if isinstance(allowed, tuple) else (allowed,) for allowed in required]
+    kept = [allowed for allowed in names if not set(allowed) & set(selected) or set(allowed) & set(actual)]
+    return len(actual) == len(kept) and all(name in allowed for name, allowed in zip(actual, kept))
 
 
 def describe_dims(required: Dims) -> str:

@@ -239,19 +239,73 @@ def atomic_write_all(files: Sequence[PendingFile]) -> list[Path]:
     return targets
 
 
+#: What :func:`netcdf_writer` writes: what reads back as it was written.
+ALLOWED_NETCDF = ("variables and attributes netCDF-3 holds as they are (integers of at most 32 bits, floats, text; "
+                  "attributes of numbers or text; no CF encoding attributes such as _FillValue, scale_factor, "
+                  "coordinates or a time's units)")
+
+
 def netcdf_writer(dataset: xr.Dataset) -> Callable[[str], Any]:
     """What writes ``dataset`` as netCDF to a path (the scipy backend, netCDF3 64-bit offset: no further
-    dependency), for :class:`PendingFile`."""
+    dependency), for :class:`PendingFile`. A result of this package is checked first as :func:`open_result`
+    checks the file (its stamp, parameters and schema; a case selected away with ``isel`` is read), and
+    the written file is read back: a dataset that does not read back identical is refused (the temporary
+    file removed), so that every dataset written reads back as it was."""
+    if dataset.attrs.get("program") == PROGRAM:
+        _check_stamp(dataset, "dataset")  # (open_result would refuse it: param_E = inf, a variable dropped, ...)
+        try:
+            _check_variables(dataset, "dataset")
+        except ValueError as error:
+            raise ValueError(f"{error}; allowed: a result as {PROGRAM} makes it (its variables with their "
+                             "dimensions, units and long_name; one case selected with isel)") from None
+
     def write(temporary: str) -> None:
         try:
             dataset.to_netcdf(temporary, engine="scipy", format="NETCDF3_64BIT")
         except (ValueError, TypeError, OverflowError) as error:  # (what netCDF-3 cannot hold, in xarray's words)
             reason = " ".join(str(error).split())
             raise ValueError(f"dataset cannot be written as netCDF-3 ({type(error).__name__}: {reason}); allowed: "
-                             "variables and attributes netCDF-3 holds (integers of at most 32 bits, floats, text; "
-                             "attributes of numbers or text)") from None
+                             f"{ALLOWED_NETCDF}") from None
+        difference = _read_back_difference(dataset, temporary)
+        if difference is not None:
+            raise ValueError(f"dataset does not read back as written: {difference}; allowed: {ALLOWED_NETCDF}")
 
     return write
+
+
+def _read_back_difference(dataset: xr.Dataset, path: str) -> str | None:
+    """How the netCDF file at ``path``, read as :func:`load_netcdf` reads it, differs from ``dataset``
+    (``None``: identical); one variable in memory at a time."""
+    try:
+        with xr.open_dataset(path, engine="scipy", cache=False) as back:
+            if back.identical(dataset):
+                return None
+            return _first_difference(dataset, back)
+    except Exception as error:  # noqa: BLE001 - the reader's failure on what was written, named
+        return f"it is not read ({type(error).__name__}: {' '.join(str(error).split())})"
+
+
+def _first_difference(dataset: xr.Dataset, back: xr.Dataset) -> str:
+    """The first difference between ``dataset`` and ``back`` (attributes, then variables), for a message."""
+    def attribute_differs(attrs, other, name):
+        return name not in other or not xr.Variable((), 0, {name: attrs[name]}).identical(
+            xr.Variable((), 0, {name: other[name]}))
+
+    for owner, attrs, other in [("", dataset.attrs, back.attrs)] + [
+            (f"variable {name!r}'s ", dataset[name].attrs, back[name].attrs if name in back.variables else {})
+            for name in dataset.variables]:
+        for name in list(attrs) + [name for name in other if name not in attrs]:
+            if name not in attrs or attribute_differs(attrs, other, name):
+                return (f"{owner}attribute {name!r}={shown(attrs.get(name))} reads back as "
+                        f"{shown(other[name]) if name in other else 'absent'}")
+    for name in list(dataset.variables) + [name for name in back.variables if name not in dataset.variables]:
+        if name not in dataset.variables or name not in back.variables:
+            return f"variable {name!r} is {'absent' if name not in back.variables else 'added'} on reading"
+        mine, theirs = dataset[name].variable, back[name].variable
+        if not mine.identical(theirs):
+            return (f"variable {name!r} {mine.dims} {mine.dtype} reads back as {theirs.dims} {theirs.dtype} "
+                    "with other values")
+    return "its dimensions differ"
 
 
 def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
@@ -281,8 +335,6 @@ def write_netcdf(dataset: xr.Dataset, path: str | os.PathLike) -> Path:
     if not isinstance(dataset, xr.Dataset):
         raise TypeError(f"dataset={shown(dataset)} ({type(dataset).__name__}) is not allowed; allowed: an "
                         "xarray.Dataset")
-    if isinstance(dataset, xr.Dataset) and dataset.attrs.get("program") == PROGRAM:
-        _check_stamp(dataset, "dataset")  # (a result open_result would refuse is not written: param_E = inf)
     return atomic_write(path, netcdf_writer(dataset), suffix=".nc")  # (it checks the path before writing)
 
 
@@ -344,7 +396,7 @@ def load_netcdf(path: str | os.PathLike, where: str, allowed: str = f"a netCDF f
                 return handle.load()
     except FileNotFoundError:
         raise ValueError(f"{where}: no such file; allowed: {allowed}") from None
-    except (OSError, ValueError, TypeError, IndexError, KeyError) as error:
+    except Exception as error:  # noqa: BLE001 - whatever the reader raises on a file's bytes (SyntaxError too)
         why = f"{type(error).__name__}: {' '.join(str(error).split())}"  # one line: the reader's may span several
     raise ValueError(f"{where} is not a readable netCDF file ({why}); allowed: {allowed}")
 
@@ -373,8 +425,9 @@ def _check_variables(dataset: xr.Dataset, where: str) -> None:
     missing = [name for name in schema if name not in dataset.variables]
     if missing:
         raise ValueError(f"{where} ({content}) lacks the variable(s) {missing}")
+    selected = [name for name, coordinate in dataset.coords.items() if coordinate.ndim == 0]  # (isel of one label)
     wrong = [f"{name} {dataset[name].dims} (expected {describe_dims(dims)})" for name, dims in schema.items()
-             if not dims_match(dataset[name].dims, dims)]
+             if not dims_match(dataset[name].dims, dims, selected)]
     if wrong:
         raise ValueError(f"{where} ({content}) has variable(s) with the wrong dimensions: {'; '.join(wrong)}")
     unlabelled = [name for name in dataset.variables

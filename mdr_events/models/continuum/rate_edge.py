@@ -381,6 +381,7 @@ def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profi
     run = EdgeRun(model)
     entries = list(path.entry_times())
     state = None  # (t, a) in contact, or None
+    touched = None  # the time of a contact whose jump-in has not yet ended, or None
     for segment in kinematics(path):
         ode = _EdgeODE(law, params, profile, segment)
         t = segment.t0
@@ -390,8 +391,10 @@ def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profi
                 if not starts:
                     break
                 state = _touch(run, law, profile, segment, starts[0], jump_in)
+                touched = starts[0]
             if state[0] >= segment.t1:
                 break
+            touched = None
             state = _piece(run, ode, state, jump_in, rtol, method)
             if state is not None:
                 t = state[0]
@@ -400,6 +403,12 @@ def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profi
         else:
             raise _unresolved(law, f"no progress on [{float(segment.t0)!r}, {float(segment.t1)!r}] s of the path after "
                                    f"{MAX_PIECES_PER_SEGMENT} pieces (rest, motion, ...)")
+    if touched is not None and path.max_depth > 0.0:  # (the path ended inside the jump-in's lag: radius 0 at any depth)
+        raise ValueError(f"law={law!r} is not allowed on this path: its edge cannot be followed (the contact made at "
+                         f"t={float(touched)!r} s jumps in over {float(state[0] - touched):.3g} s, beyond the path's end "
+                         f"at {float(path.duration):.6g} s: the indenter outran the advancing edge, which would leave "
+                         "no contact at its depth); allowed: a law whose edge keeps ahead of the indenter (a larger "
+                         "v_ref, or a slower path), or Adhesion(dgamma0, dgamma1), the limit v_ref -> inf")
     return run
 
 
