@@ -65,8 +65,7 @@ def test_a_file_scipy_cannot_read_is_named_not_a_syntax_error(tmp_path):
         open_result(path)
 
 
-# --- M2: the layer's value (Layer, LayerBase; the theory's own checks of round twelve are to be ported to the
-# theory/layer subpackage) took what it cannot represent. Round twelve found that mdr_events.theory.layer took what it cannot compute: nan and inf results from
+# --- M2: the layer's theory (mdr_events.theory.layer, Layer) took what it cannot compute: nan and inf results from
 # a negative radius, a negative or nan work of adhesion, E* of nan/inf or a product beyond the double range; raw
 # TypeError/IndexError/OverflowError/ZeroDivisionError from strings, None, a bad column, kernel(nan), a paraboloid of
 # R = 1e300; a direct solve at a/h = 1000 (MemoryError, 5 GiB) or 1e4 (no end), kernel(1e6) (minutes), nodes=10**12,
@@ -79,6 +78,28 @@ THIN = me.Layer(1e-3)
 
 
 @pytest.mark.parametrize("call, named", [
+    (lambda: L.hess_elongation(-1e-4, 0.05, E_STAR, NU, THIN), "a=-0.0001 is not allowed"),
+    (lambda: L.hess_elongation(1e-4, -0.05, E_STAR, NU, THIN), "dgamma=-0.05 is not allowed"),
+    (lambda: L.punch_stiffness(1e-4, math.nan, NU, THIN), "E_star=nan is not allowed"),
+    (lambda: L.punch_stiffness(1e-4, "x", NU, THIN), "E_star='x' (str) is not allowed"),
+    (lambda: L.punch_stiffness("x", E_STAR, NU, THIN), "a='x' (of str values) is not allowed"),
+    (lambda: L.punch_stiffness(1e300, 1e300, NU, me.Layer()), "punch_stiffness(a=1e+300, E_star=1e+300"),
+    (lambda: L.normal_force(math.nan, 1e-4, PARABOLOID, E_STAR, NU, THIN), "d=nan is not allowed"),
+    (lambda: L.normal_force(np.ones(3) * 1e-5, np.ones(2) * 1e-4, PARABOLOID, E_STAR, NU, THIN), "do not broadcast"),
+    (lambda: L.pull_off(me.Paraboloid(1e300), E_STAR, NU, 0.05, THIN), "pull_off(profile=Paraboloid(R=1e+300)"),
+    (lambda: L.equivalent_profile(np.array([1e-4]), lambda r: r * np.nan, NU, THIN), "equivalent_profile("),
+    (lambda: L.surface_displacement(math.nan, 1e-4, NU, THIN), "r=nan is not allowed"),
+    (lambda: L.surface_displacement(1e300, 1e-4, NU, THIN), "the surface displacement at r/a up to 1e+304"),
+    (lambda: L.punch_stiffness(1e-4, E_STAR, NU, None), "layer=None (NoneType) is not allowed"),
+    (lambda: L.compliance_function(1e300, NU) + L.compliance_function(-1.0, NU), "t=-1.0 is not allowed"),
+    (lambda: L.kernel(math.nan, NU), "v=nan is not allowed"),
+    (lambda: L.kernel(1e6, NU), "v=1000000.0 is not allowed; allowed: finite numbers with |v| <= 200"),
+    (lambda: L.solve_punch(1000.0, NU), "a/h=1000.0 is not allowed for a direct solve"),
+    (lambda: L.solve_punch(1.0, NU, nodes=10**12), "the layer's Nyström solve with 1000000000000 nodes"),
+    (lambda: L.solve_punch(1.0, NU, exponents=2.0), "exponents=2.0 (float) is not allowed"),
+    (lambda: L.solve_punch(1.0, NU).profile_factor(2), "column=2 is not allowed; allowed: 1 to 1"),
+    (lambda: L.solve_punch(1.0, NU, exponents=()).force_factor(), "this solution has no profile's right-hand side"),
+    (lambda: L.layer_table(NU).stiffness_factor("x"), "lam='x' (of str values) is not allowed"),
     (lambda: me.Layer(10**400), "(an integer beyond the double range is none)"),
     (lambda: me.Layer(1e-3).relative_radius(math.nan), "radius=nan is not allowed"),
     (lambda: me.LayerBase("x"), "LayerBase('x') is not allowed; allowed: 'bonded', 'frictionless'"),

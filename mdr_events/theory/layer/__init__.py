@@ -65,6 +65,7 @@ module                            one idea
 :mod:`.tables`                    the factors against ``a/h``, cached on disk: :class:`LayerTable`
 :mod:`.relations`                 the generalized MDR: ``K``, ``k(x)``, ``Δl``, ``g``, ``F_N``, the adhesive branch
 :mod:`.force_control`             the pull-off under force control: :class:`PullOff`
+:mod:`.checks`                    what the relations take and give, checked: arguments by name, finite results
 :mod:`.curves`                    a :class:`~mdr_events.Contact` on its layer as labelled results: the branches against
                                   the depth, an indentation cycle, the pull-off against the thickness
 :mod:`.tangential_compliance`     the tangential compliances ``C_L``, ``C_T`` and the kernels of the tangential punch
@@ -78,17 +79,18 @@ module                            one idea
 The tangential modules' public names are those of :mod:`mdr_events.theory.layer_tangential` (not re-exported here).
 """
 
-from mdr_events.theory.layer.compliance import LAMBDA_MAX, compliance_function, kernel
+from mdr_events.theory.layer.compliance import KERNEL_V_MAX, LAMBDA_MAX, compliance_function, kernel
 from mdr_events.theory.layer.curves import layer_indentation_cycle, layer_normal_curve, layer_pull_off_curve
 from mdr_events.theory.layer.force_control import PullOff, pull_off
-from mdr_events.theory.layer.punch import PunchSolution, nystrom_nodes, solve_punch
+from mdr_events.theory.layer.punch import (LAMBDA_SOLVE_MAX, SOLVE_BYTES_PER_PAIR, PunchSolution, nystrom_nodes,
+                                           solve_punch)
 from mdr_events.theory.layer.relations import (branch_depth, branch_normal_force, equivalent_profile, hess_elongation,
                                                normal_force, power_law_profile, power_law_profile_slope,
                                                punch_stiffness, punch_stiffness_slope, spring_stiffness_density,
                                                surface_displacement)
 from mdr_events.theory.layer.tables import LAMBDA_MIN, LayerTable, layer_table, table_cache_path
 
-__all__ = ["LAMBDA_MAX", "LAMBDA_MIN", "compliance_function", "kernel", "nystrom_nodes", "PunchSolution",
+__all__ = ["LAMBDA_MAX", "LAMBDA_MIN", "LAMBDA_SOLVE_MAX", "KERNEL_V_MAX", "SOLVE_BYTES_PER_PAIR", "compliance_function", "kernel", "nystrom_nodes", "PunchSolution",
            "solve_punch", "LayerTable", "layer_table", "table_cache_path", "punch_stiffness", "punch_stiffness_slope",
            "spring_stiffness_density", "hess_elongation", "surface_displacement", "equivalent_profile",
            "power_law_profile", "power_law_profile_slope", "normal_force", "branch_depth", "branch_normal_force",

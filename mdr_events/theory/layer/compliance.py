@@ -13,16 +13,27 @@ import numpy as np
 from mdr_events.contact.layer import Layer, LayerBase
 from mdr_events.validation import check_real
 
-__all__ = ["LAMBDA_MAX", "compliance_function", "kernel"]
+__all__ = ["LAMBDA_MAX", "KERNEL_V_MAX", "compliance_function", "kernel"]
 
 #: The largest ``a/h`` of a table (the thin side); direct solves (:func:`solve_punch`) take any ``λ``.
 LAMBDA_MAX = 64.0
+#: The largest ``|v|`` of :func:`kernel`: its quadrature's range (1e6 took minutes, ``nan`` an IndexError).
+KERNEL_V_MAX = 200.0
+#: Beyond this ``u``, ``e^{-2u}`` is 0 in double precision and so is ``1 − C(u)``.
+_U_ZERO = 800.0
 #: The kernel's quadrature in ``u``: panels of this width with 20 nodes each up to :data:`_U_MAX`, where ``1 − C``
 #: is below 1e-17 (it decays as ``u² e^{-2u}``); exact to 1e-15 for ``|v| ≤ 200``.
 _U_PANEL, _U_NODES, _U_MAX = 0.1, 20, 24.0
 #: The kernel's Chebyshev interpolants: unit panels in ``v`` with 20 points (error below 1e-14: ``k`` is analytic in
 #: ``|Im v| < 2``).
 _V_PANEL, _V_NODES = 1.0, 20
+
+
+def _finite_reals(name: str, value, allowed: str, valid) -> np.ndarray:
+    """:func:`mdr_events.theory.layer.checks.finite_reals` (imported when called: checks imports this module)."""
+    from mdr_events.theory.layer.checks import finite_reals
+
+    return finite_reals(name, value, allowed, valid)
 
 
 def _base(base: LayerBase | str) -> LayerBase:
@@ -34,7 +45,9 @@ def _nu(nu: float) -> float:
 
 
 def _one_minus_compliance(u: np.ndarray, nu: float, base: LayerBase) -> np.ndarray:
-    """``1 − C(u)`` without cancellation (numerator and denominator scaled by ``e^{-2u}``); 1 at ``u = 0``."""
+    """``1 − C(u)`` without cancellation (numerator and denominator scaled by ``e^{-2u}``); 1 at ``u = 0``, 0 beyond
+    :data:`_U_ZERO` (where ``e^{-2u}`` underflows: the polynomial factors would overflow to ``inf · 0``)."""
+    u = np.where(u > _U_ZERO, _U_ZERO, u)
     e2 = np.exp(-2.0 * u)
     e4 = e2 * e2
     if base is LayerBase.BONDED:
@@ -74,7 +87,8 @@ def compliance_function(t, nu: float, base: LayerBase | str = LayerBase.BONDED) 
     ValueError
         ``nu`` outside ``[0, 0.5]`` or ``base`` unknown.
     """
-    return 1.0 - _one_minus_compliance(np.asarray(t, dtype=float), _nu(nu), _base(base))
+    t = _finite_reals("t", t, "finite numbers >= 0 (ξh)", lambda value: value >= 0.0)
+    return 1.0 - _one_minus_compliance(t, _nu(nu), _base(base))
 
 
 def _direct_kernel(v: np.ndarray, nu: float, base: LayerBase) -> np.ndarray:
@@ -155,7 +169,8 @@ def kernel(v, nu: float, base: LayerBase | str = LayerBase.BONDED) -> np.ndarray
     ValueError
         ``nu`` outside ``[0, 0.5]`` or ``base`` unknown.
     """
-    v = np.asarray(v, dtype=float)
+    v = _finite_reals("v", v, f"finite numbers with |v| <= {KERNEL_V_MAX:g} (the quadrature's range)",
+                      lambda value: np.abs(value) <= KERNEL_V_MAX)
     nu, base = _nu(nu), _base(base)
     return _kernel_for(nu, base, float(np.max(np.abs(v), initial=0.0)) + 1.0)(v)
 

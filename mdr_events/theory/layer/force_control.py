@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from mdr_events.contact.layer import Layer
+from mdr_events.theory.layer.checks import checked_relation
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
 from mdr_events.theory.layer.relations import _abel_factor, _power_law, _relative, branch_depth, branch_normal_force
 from mdr_events.validation import check_real
@@ -45,6 +46,7 @@ class PullOff:
 _SCAN_POINTS = 241
 
 
+@checked_relation
 def pull_off(profile, E_star: float, nu: float, dgamma: float, layer: Layer) -> PullOff:
     r"""The pull-off under force control on the layer: the minimum of :func:`branch_normal_force` over ``a``.
 

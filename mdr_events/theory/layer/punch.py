@@ -14,15 +14,22 @@ import numpy as np
 
 from mdr_events.contact.layer import LayerBase
 from mdr_events.theory.layer.compliance import _base, _ChebyshevKernel, _kernel_for, _nu
-from mdr_events.validation import check_real
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
+from mdr_events.validation import check_count, check_real, shown
 
-__all__ = ["nystrom_nodes", "PunchSolution", "solve_punch"]
+__all__ = ["nystrom_nodes", "PunchSolution", "solve_punch", "LAMBDA_SOLVE_MAX", "SOLVE_BYTES_PER_PAIR"]
 
 #: Gauss–Legendre nodes of the Fredholm equation: ``BASE_NODES + NODES_PER_LAMBDA λ``, rounded up to 16 (converged
 #: to 1e-10 relative or better up to ``λ = 200``; the tests check it against more nodes).
 BASE_NODES, NODES_PER_LAMBDA = 40, 6
 #: Nodes of the quadrature of the outer surface integral (L5) in the angle ``β``.
 _OUTER_NODES = 64
+#: The largest ``a/h`` of a direct solve: where the default nodes are converged; beyond it the solve grows as ``λ²`` in
+#: memory and ``λ³`` in time (1000 took 5 GiB, 1e4 did not end).
+LAMBDA_SOLVE_MAX = 200.0
+#: Memory of a Nyström solve per pair of nodes (the kernel's interpolants on the ``nodes²`` grid twice and the
+#: matrix), in bytes, checked against :class:`~mdr_events.Limits`.
+SOLVE_BYTES_PER_PAIR = 400.0
 
 
 def nystrom_nodes(lam: float) -> int:
@@ -124,7 +131,19 @@ class PunchSolution:
             The generalized MDR profile over the half-space's at ``x = a``.
         """
         edges = self.edge_values()
-        return float(edges[column] / edges[0])
+        return float(edges[self._column(column)] / edges[0])
+
+    def _column(self, column) -> int:
+        """``column`` if it names a profile's right-hand side (1 to the number of profiles), else a one-line error."""
+        profiles = self.theta.shape[1] - 1
+        if profiles == 0:
+            raise ValueError(f"column={shown(column)} is not allowed: this solution has no profile's right-hand "
+                             "side; allowed: a solution with exponents (solve_punch(..., exponents=(2.0,)))")
+        column = check_count("column", column, 1)
+        if column > profiles:
+            raise ValueError(f"column={column} is not allowed; allowed: 1 to {profiles} (the profiles' right-hand "
+                             "sides)")
+        return column
 
     def force_factor(self, column: int = 1) -> float:
         """``χ = F₀(a)/(2E* a g∞(a)) = γΦ − ∫₀¹ Θ_g`` of a profile's column: the non-adhesive force.
@@ -139,6 +158,7 @@ class PunchSolution:
         float
             ``n/(n + 1)`` for the power law on the half-space.
         """
+        column = self._column(column)
         return self.profile_factor(column) * self.stiffness_factor - float(self.weights @ self.theta[:, column])
 
     def surface_displacement(self, rho) -> np.ndarray:
@@ -157,7 +177,13 @@ class PunchSolution:
         numpy.ndarray
             ``φ``, shaped as ``rho``.
         """
-        rho = np.asarray(rho, dtype=float)
+        from mdr_events.theory.layer.checks import finite_reals
+
+        rho = finite_reals("rho", rho, "finite numbers >= 0 (r/a)", lambda value: value >= 0.0)
+        points = _OUTER_NODES * np.ceil(np.maximum(rho - 1.0, 0.0) * max(self.lam, 1.0) / 2.0)
+        DEFAULT_LIMITS.check(f"the surface displacement at r/a up to {float(np.max(rho, initial=0.0)):.6g} "
+                             f"(a/h = {self.lam:g})", samples=float(np.max(points, initial=0.0)),
+                             memory=SOLVE_BYTES_PER_PAIR * float(np.max(points, initial=0.0)) * self.sigma.size)
         out = np.ones(rho.shape)
         x, w = np.polynomial.legendre.leggauss(_OUTER_NODES)
         for index in np.ndindex(rho.shape):
@@ -185,9 +211,16 @@ def _gauss_legendre(count: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _solve(lam: float, nu: float, base: LayerBase, rhs: Callable[[np.ndarray], np.ndarray],
-           rhs_at_edge: tuple[float, ...], exponents: tuple[float, ...], nodes: int | None) -> PunchSolution:
-    """The Nyström solve of (L1) with the right-hand sides ``1`` and ``rhs(σ)`` (columns)."""
+           rhs_at_edge: tuple[float, ...], exponents: tuple[float, ...], nodes: int | None,
+           limits: Limits | None = None) -> PunchSolution:
+    """The Nyström solve of (L1) with the right-hand sides ``1`` and ``rhs(σ)`` (columns); ``λ`` up to
+    :data:`LAMBDA_SOLVE_MAX` and the nodes' memory within ``limits`` (checked before anything is built)."""
+    if not lam <= LAMBDA_SOLVE_MAX:
+        raise ValueError(f"a/h={lam!r} is not allowed for a direct solve; allowed: 0 <= a/h <= {LAMBDA_SOLVE_MAX:g} "
+                         "(where its nodes are converged; the thin-layer limits of theory.layer_symbolic beyond)")
     count = nystrom_nodes(lam) if nodes is None else nodes
+    check_limits(limits).check(f"the layer's Nyström solve with {count} nodes (a/h = {lam:g})",
+                               memory=SOLVE_BYTES_PER_PAIR * float(count) ** 2)
     sigma, weights = _gauss_legendre(count)
     right = np.column_stack([np.ones(count), rhs(sigma)])
     if lam == 0.0:
@@ -200,7 +233,7 @@ def _solve(lam: float, nu: float, base: LayerBase, rhs: Callable[[np.ndarray], n
 
 
 def solve_punch(lam: float, nu: float, base: LayerBase | str = LayerBase.BONDED, exponents=(2.0,),
-                nodes: int | None = None) -> PunchSolution:
+                nodes: int | None = None, limits: Limits | None = None) -> PunchSolution:
     r"""Solve the layer's punch equation (L1) at ``λ = a/h`` directly (no table), with power-law right-hand sides.
 
     .. math:: \Theta(\tau) - \frac{\lambda}{\pi}\int_0^1 \Theta(\sigma)
@@ -219,6 +252,8 @@ def solve_punch(lam: float, nu: float, base: LayerBase | str = LayerBase.BONDED,
         power law ``c rⁿ``; 2 the paraboloid).
     nodes : int or None, default None
         Gauss–Legendre nodes (default :func:`nystrom_nodes`).
+    limits : Limits or None, default None
+        The memory the solve may take (:data:`SOLVE_BYTES_PER_PAIR` per pair of nodes; ``None``: the defaults).
 
     Returns
     -------
@@ -228,12 +263,19 @@ def solve_punch(lam: float, nu: float, base: LayerBase | str = LayerBase.BONDED,
     Raises
     ------
     ValueError
-        ``lam`` negative or not finite, ``nu`` outside ``[0, 0.5]``, ``base`` unknown, an exponent ≤ 0.
+        ``lam`` negative, not finite or beyond :data:`LAMBDA_SOLVE_MAX`, ``nu`` outside ``[0, 0.5]``, ``base``
+        unknown, an exponent ≤ 0; the nodes' memory beyond ``limits`` (``ResourceLimitError``).
+    TypeError
+        ``exponents`` not a sequence of numbers.
     """
-    lam = check_real("lam", lam, "a finite number >= 0 (a/h)", lambda value: value >= 0.0)
+    lam = check_real("lam", lam, f"a finite number >= 0 (a/h), at most {LAMBDA_SOLVE_MAX:g}",
+                     lambda value: value >= 0.0)
+    if isinstance(exponents, (str, bytes)) or not hasattr(exponents, "__iter__"):
+        raise TypeError(f"exponents={shown(exponents)} ({type(exponents).__name__}) is not allowed; allowed: a "
+                        "sequence of numbers > 0, e.g. (2.0,)")
     exps = tuple(check_real("exponents", n, "numbers > 0", lambda value: value > 0.0) for n in exponents)
-    if nodes is not None and (isinstance(nodes, bool) or not isinstance(nodes, int) or nodes < 2):
-        raise ValueError(f"nodes={nodes!r} is not allowed; allowed: an integer >= 2 or None")
+    if nodes is not None:
+        nodes = check_count("nodes", nodes, 2)
     return _solve(lam, _nu(nu), _base(base), lambda s: np.power.outer(s, np.array(exps, dtype=float)),
-                  (1.0,) * len(exps), exps, nodes)
+                  (1.0,) * len(exps), exps, nodes, limits)
 

@@ -13,6 +13,7 @@ from typing import Callable
 import numpy as np
 
 from mdr_events.contact.layer import Layer
+from mdr_events.theory.layer.checks import checked_relation
 from mdr_events.theory.layer.compliance import _nu
 from mdr_events.theory.layer.punch import _solve, solve_punch
 from mdr_events.theory.layer.tables import layer_table
@@ -70,6 +71,7 @@ def _abel_factor(n: float) -> float:
     return math.exp(0.5 * math.log(math.pi) + math.lgamma(n / 2.0 + 1.0) - math.lgamma(n / 2.0 + 0.5))
 
 
+@checked_relation
 def punch_stiffness(a, E_star: float, nu: float, layer: Layer):
     r"""The normal stiffness ``K(a)`` of a rigid flat punch of radius ``a`` on the layer (L2).
 
@@ -100,6 +102,7 @@ def punch_stiffness(a, E_star: float, nu: float, layer: Layer):
     return 2.0 * E_star * a * _factors(nu, layer).stiffness_factor(_relative(a, layer))
 
 
+@checked_relation
 def punch_stiffness_slope(a, E_star: float, nu: float, layer: Layer):
     r"""``K'(a) = 2E* Θ(1; a/h)²`` (L3): exact, from the punch's edge value and Griffith's balance.
 
@@ -129,6 +132,7 @@ def punch_stiffness_slope(a, E_star: float, nu: float, layer: Layer):
     return 2.0 * spring_stiffness_density(a, E_star, nu, layer)
 
 
+@checked_relation
 def spring_stiffness_density(x, E_star: float, nu: float, layer: Layer):
     r"""The MDR springs' normal stiffness per width at ``x``: ``k(x) = K'(|x|)/2`` (``E*`` on the half-space, (5)).
 
@@ -159,6 +163,7 @@ def spring_stiffness_density(x, E_star: float, nu: float, layer: Layer):
     return E_star * edge * edge
 
 
+@checked_relation
 def hess_elongation(a, dgamma: float, E_star: float, nu: float, layer: Layer):
     r"""Heß's rule on the layer: the boundary spring's largest elongation (generalised (8)).
 
@@ -194,6 +199,7 @@ def hess_elongation(a, dgamma: float, E_star: float, nu: float, layer: Layer):
     return np.sqrt(2.0 * np.pi * a * dgamma / E_star) / _factors(nu, layer).edge_factor(_relative(a, layer))
 
 
+@checked_relation
 def surface_displacement(r, a: float, nu: float, layer: Layer) -> np.ndarray:
     r"""``φ(r; a)``: the layer's surface displacement around a flat punch of radius ``a``, over the punch's (L5).
 
@@ -234,6 +240,7 @@ def surface_displacement(r, a: float, nu: float, layer: Layer) -> np.ndarray:
 _ABEL_NODES = 64
 
 
+@checked_relation
 def equivalent_profile(x, profile_slope: Callable[[np.ndarray], np.ndarray], nu: float, layer: Layer) -> np.ndarray:
     r"""The generalized MDR profile ``g(x)`` of an axisymmetric profile ``f(r)`` on the layer (L4).
 
@@ -286,6 +293,7 @@ def equivalent_profile(x, profile_slope: Callable[[np.ndarray], np.ndarray], nu:
     return out
 
 
+@checked_relation
 def power_law_profile(x, profile, nu: float, layer: Layer) -> np.ndarray:
     r"""The generalized MDR profile of a paraboloid or power law ``f = c rⁿ`` on the layer (tabulated).
 
@@ -323,6 +331,7 @@ def power_law_profile(x, profile, nu: float, layer: Layer) -> np.ndarray:
     return _abel_factor(n) * c * x**n * _factors(nu, layer, n).profile_factor(_relative(x, layer))
 
 
+@checked_relation
 def power_law_profile_slope(x, profile, nu: float, layer: Layer) -> np.ndarray:
     r"""``g'(x)`` of :func:`power_law_profile` for ``x ≥ 0`` (odd in ``x``).
 
@@ -362,6 +371,7 @@ def power_law_profile_slope(x, profile, nu: float, layer: Layer) -> np.ndarray:
     return np.sign(x) * _abel_factor(n) * c * slope
 
 
+@checked_relation
 def normal_force(d, a, profile, E_star: float, nu: float, layer: Layer) -> np.ndarray:
     r"""The normal force of the springs in contact at depth ``d`` and radius ``a`` on the layer (generalised (10)).
 
@@ -406,6 +416,7 @@ def normal_force(d, a, profile, E_star: float, nu: float, layer: Layer) -> np.nd
     return 2.0 * E_star * a * (g_half * factors.force_factor(lam) + factors.stiffness_factor(lam) * (d - at_edge))
 
 
+@checked_relation
 def branch_depth(a, profile, E_star: float, nu: float, dgamma: float, layer: Layer) -> np.ndarray:
     r"""The depth of the adhesive contact of radius ``a`` on the layer (generalised (9)): ``d = g(a) − Δl(a)``.
 
@@ -441,6 +452,7 @@ def branch_depth(a, profile, E_star: float, nu: float, dgamma: float, layer: Lay
     return power_law_profile(a, profile, nu, layer) - hess_elongation(a, dgamma, E_star, nu, layer)
 
 
+@checked_relation
 def branch_normal_force(a, profile, E_star: float, nu: float, dgamma: float, layer: Layer) -> np.ndarray:
     r"""The normal force on the adhesive (JKR-type) branch of radius ``a`` on the layer (generalised (10)).
 

@@ -18,7 +18,7 @@ import numpy as np
 from mdr_events.contact.layer import LayerBase
 from mdr_events.theory.layer.compliance import LAMBDA_MAX, _base, _nu, kernel
 from mdr_events.theory.layer.punch import solve_punch
-from mdr_events.validation import check_real
+from mdr_events.validation import check_real, real_array
 
 __all__ = ["LAMBDA_MIN", "TABLE_STEP", "LayerTable", "layer_table", "table_cache_path"]
 
@@ -82,6 +82,10 @@ def _table_row(lam: float, nu: float, base: LayerBase, exponent: float) -> tuple
 def _build_table(nu: float, base: LayerBase, exponent: float) -> dict[str, np.ndarray]:
     grid = _table_grid()
     rows = np.array([_table_row(float(lam), nu, base, exponent) for lam in np.exp(grid)])
+    if not np.all(rows > 0.0):  # (χₙ ≈ n/(n + 1) is lost to round-off when n is near 0: its logarithm is not finite)
+        raise ValueError(f"exponent={exponent!r} is not allowed: its table's factors are lost to round-off (χₙ = "
+                         f"{float(np.min(rows)):.3g}); allowed: an exponent whose factors are positive doubles "
+                         "(n of 1e-10 and above)")
     out = {"s": grid, "k0": np.array(float(kernel(0.0, nu, base)))}
     out.update({name: np.log(rows[:, j]) for j, name in enumerate(_COLUMNS)})
     return out
@@ -146,11 +150,11 @@ class LayerTable:
         return {name: make_interp_spline(self.columns["s"], self.columns[name], k=5) for name in _COLUMNS}
 
     def _lam(self, lam) -> np.ndarray:
-        lam = np.asarray(lam, dtype=float)
+        lam = real_array("lam", lam, f"numbers in [0, {LAMBDA_MAX:g}] (a/h)")
         if not np.all((lam >= 0.0) & (lam <= LAMBDA_MAX)):
             bad = float(lam[~((lam >= 0.0) & (lam <= LAMBDA_MAX))].ravel()[0])
             raise ValueError(f"a/h={bad!r} is not allowed; allowed: 0 <= a/h <= {LAMBDA_MAX:g} (the table's range; "
-                             "solve_punch solves beyond it)")
+                             "solve_punch solves up to LAMBDA_SOLVE_MAX)")
         return lam
 
     def _series(self, lam: np.ndarray) -> dict[str, np.ndarray]:
