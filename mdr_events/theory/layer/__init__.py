@@ -63,6 +63,7 @@ module                            one idea
 :mod:`.compliance`                the compliance ``C(ξh)`` and the kernel ``k(v)`` of (L1), interpolated
 :mod:`.punch`                     the Nyström solve of (L1) at one ``a/h``: :class:`PunchSolution`, ``φ`` (L5)
 :mod:`.tables`                    the factors against ``a/h``, cached on disk: :class:`LayerTable`
+:mod:`.table_store`               the tables on disk (normal and tangential): directory, key, grid, read or build
 :mod:`.relations`                 the generalized MDR: ``K``, ``k(x)``, ``Δl``, ``g``, ``F_N``, the adhesive branch
 :mod:`.force_control`             the pull-off under force control: :class:`PullOff`
 :mod:`.checks`                    what the relations take and give, checked: arguments by name, finite results

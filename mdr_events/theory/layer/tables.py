@@ -6,10 +6,6 @@ Part of :mod:`mdr_events.theory.layer` (the equations (L1)–(L5) are stated the
 from __future__ import annotations
 
 import functools
-import hashlib
-import math
-import os
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -18,6 +14,7 @@ import numpy as np
 from mdr_events.contact.layer import LayerBase
 from mdr_events.theory.layer.compliance import LAMBDA_MAX, _base, _nu, kernel
 from mdr_events.theory.layer.punch import solve_punch
+from mdr_events.theory.layer.table_store import cache_directory, source_digest, stored_columns, table_grid
 from mdr_events.validation import check_real, real_array
 
 __all__ = ["LAMBDA_MIN", "TABLE_STEP", "LayerTable", "layer_table", "table_cache_path"]
@@ -30,9 +27,7 @@ TABLE_STEP = 0.1
 
 #: Hash of the solver's source (the compliance, the punch's solve and the tables) and NumPy's version: the key of the
 #: tables on disk (a change of the code never reads an old table).
-_SOURCE_DIGEST = hashlib.sha256(b"".join((Path(__file__).parent / name).read_bytes()
-                                         for name in ("compliance.py", "punch.py", "tables.py"))
-                                + np.__version__.encode()).hexdigest()[:16]
+_SOURCE_DIGEST = source_digest("compliance.py", "punch.py", "tables.py")
 
 
 def table_cache_path(nu: float, base: LayerBase | str, exponent: float) -> Path | None:
@@ -56,11 +51,8 @@ def table_cache_path(nu: float, base: LayerBase | str, exponent: float) -> Path 
     pathlib.Path or None
         ``layer-<base>-nu<ν>-n<n>-<hash>.npz`` in that directory, or ``None``.
     """
-    if os.environ.get("MDR_EVENTS_NO_CACHE"):
-        return None
-    root = os.environ.get("MDR_EVENTS_CACHE_DIR") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"), "mdr_events")
-    return Path(root) / f"layer-{_base(base).value}-nu{float(nu)!r}-n{float(exponent)!r}-{_SOURCE_DIGEST}.npz"
+    root = cache_directory()
+    return None if root is None else root / f"layer-{_base(base).value}-nu{float(nu)!r}-n{float(exponent)!r}-{_SOURCE_DIGEST}.npz"
 
 
 #: The tabulated columns, as logarithms: ``Φ``, ``Θ(1)``, ``γₙ``, ``χₙ``.
@@ -69,8 +61,7 @@ _COLUMNS = ("stiffness", "edge", "profile", "force")
 
 def _table_grid() -> np.ndarray:
     """The table's nodes in ``s = ln(a/h)``: :data:`TABLE_STEP` apart (at most) from ``LAMBDA_MIN`` to ``LAMBDA_MAX``."""
-    low, high = math.log(LAMBDA_MIN), math.log(LAMBDA_MAX)
-    return np.linspace(low, high, int(math.ceil((high - low) / TABLE_STEP)) + 1)
+    return table_grid(LAMBDA_MIN, LAMBDA_MAX, TABLE_STEP)
 
 
 def _table_row(lam: float, nu: float, base: LayerBase, exponent: float) -> tuple[float, float, float, float]:
@@ -95,25 +86,7 @@ def _stored_table(nu: float, base: LayerBase, exponent: float) -> dict[str, np.n
     """The table's columns, read from the disk cache if there, else built (and stored: any trouble is only a missed
     shortcut)."""
     path = table_cache_path(nu, base, exponent)
-    if path is not None and path.exists():
-        try:
-            with np.load(path, allow_pickle=False) as stored:
-                columns = {name: stored[name] for name in ("s", "k0", *_COLUMNS)}
-            if np.array_equal(columns["s"], _table_grid()):
-                return columns
-        except Exception:  # a damaged or foreign file is rebuilt
-            pass
-    columns = _build_table(nu, base, exponent)
-    if path is not None:
-        try:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".npz", dir=path.parent)
-            with os.fdopen(handle, "wb") as stream:
-                np.savez(stream, **columns)
-            os.replace(temporary, path)
-        except OSError:
-            pass
-    return columns
+    return stored_columns(path, ("s", "k0", *_COLUMNS), _table_grid(), lambda: _build_table(nu, base, exponent))
 
 
 @dataclass(frozen=True)

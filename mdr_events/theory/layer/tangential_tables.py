@@ -6,16 +6,13 @@ Part of :mod:`mdr_events.theory.layer_tangential`, which documents the problem a
 from __future__ import annotations
 
 import functools
-import hashlib
-import math
-import os
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from mdr_events.theory.layer.punch import nystrom_nodes
+from mdr_events.theory.layer.table_store import cache_directory, source_digest, stored_columns, table_grid
 from mdr_events.theory.layer.tangential_compliance import LAMBDA_MAX, MODES, _nu, tangential_kernel
 from mdr_events.theory.layer.tangential_punch import _combine, _slope, _solve
 
@@ -29,10 +26,7 @@ TABLE_STEP = 0.1
 
 #: Hash of the tangential solver's source (the compliances and kernels, the punch's solve and the tables) and NumPy's
 #: version: the key of the tables on disk (a change of the code never reads an old table).
-_SOURCE_DIGEST = hashlib.sha256(b"".join((Path(__file__).parent / name).read_bytes()
-                                         for name in ("tangential_compliance.py", "tangential_punch.py",
-                                                      "tangential_tables.py"))
-                                + np.__version__.encode()).hexdigest()[:16]
+_SOURCE_DIGEST = source_digest("tangential_compliance.py", "tangential_punch.py", "tangential_tables.py")
 
 
 def tangential_table_cache_path(nu: float) -> Path | None:
@@ -51,11 +45,8 @@ def tangential_table_cache_path(nu: float) -> Path | None:
     pathlib.Path or None
         ``layer-tangential-nu<ν>-<hash>.npz`` in that directory, or ``None``.
     """
-    if os.environ.get("MDR_EVENTS_NO_CACHE"):
-        return None
-    root = os.environ.get("MDR_EVENTS_CACHE_DIR") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"), "mdr_events")
-    return Path(root) / f"layer-tangential-nu{float(nu)!r}-{_SOURCE_DIGEST}.npz"
+    root = cache_directory()
+    return None if root is None else root / f"layer-tangential-nu{float(nu)!r}-{_SOURCE_DIGEST}.npz"
 
 
 #: The tabulated columns (logarithms): ``Φ_L``, ``Φ_T``, ``Ψ_L(1)``, ``Ψ_T(1)``.
@@ -63,8 +54,7 @@ _COLUMNS = ("phi_l", "phi_t", "edge_l", "edge_t")
 
 
 def _table_grid() -> np.ndarray:
-    low, high = math.log(LAMBDA_MIN), math.log(LAMBDA_MAX)
-    return np.linspace(low, high, int(math.ceil((high - low) / TABLE_STEP)) + 1)
+    return table_grid(LAMBDA_MIN, LAMBDA_MAX, TABLE_STEP)
 
 
 def _build_table(nu: float) -> dict[str, np.ndarray]:
@@ -82,25 +72,7 @@ def _build_table(nu: float) -> dict[str, np.ndarray]:
 def _stored_table(nu: float) -> dict[str, np.ndarray]:
     """The table's columns from the disk cache if there, else built and stored (trouble: only a missed shortcut)."""
     path = tangential_table_cache_path(nu)
-    if path is not None and path.exists():
-        try:
-            with np.load(path, allow_pickle=False) as stored:
-                columns = {name: stored[name] for name in ("s", "k0", *_COLUMNS)}
-            if np.array_equal(columns["s"], _table_grid()):
-                return columns
-        except Exception:  # a damaged or foreign file is rebuilt
-            pass
-    columns = _build_table(nu)
-    if path is not None:
-        try:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".npz", dir=path.parent)
-            with os.fdopen(handle, "wb") as stream:
-                np.savez(stream, **columns)
-            os.replace(temporary, path)
-        except OSError:
-            pass
-    return columns
+    return stored_columns(path, ("s", "k0", *_COLUMNS), _table_grid(), lambda: _build_table(nu))
 
 
 @dataclass(frozen=True)

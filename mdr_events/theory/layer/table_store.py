@@ -1,0 +1,112 @@
+"""The layer's tables on disk, for the normal and the tangential punch alike: where they are kept, the key of the code
+that computed them, their grid in ``ln(a/h)``, and reading one or building and storing it."""
+
+from __future__ import annotations
+
+import hashlib
+import math
+import os
+import tempfile
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["cache_directory", "source_digest", "table_grid", "stored_columns"]
+
+
+def cache_directory() -> Path | None:
+    """The directory of the derivations' and the tables' caches (``None``: caching is off).
+
+    ``$MDR_EVENTS_CACHE_DIR`` or ``$XDG_CACHE_HOME/mdr_events`` or ``~/.cache/mdr_events`` (that of
+    :func:`mdr_events.theory.symbolic.cache_path`); ``MDR_EVENTS_NO_CACHE=1`` turns it off.
+
+    Returns
+    -------
+    pathlib.Path or None
+        The directory, or ``None``.
+    """
+    if os.environ.get("MDR_EVENTS_NO_CACHE"):
+        return None
+    return Path(os.environ.get("MDR_EVENTS_CACHE_DIR") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"), "mdr_events"))
+
+
+def source_digest(*modules: str) -> str:
+    """The key of tables computed by ``modules`` (file names in this package) and this module: a hash of their
+    source and NumPy's version, so that a change of the code never reads an old table.
+
+    Parameters
+    ----------
+    *modules : str
+        File names in :mod:`mdr_events.theory.layer`.
+
+    Returns
+    -------
+    str
+        16 hexadecimal digits.
+    """
+    here = Path(__file__).parent
+    source = b"".join((here / name).read_bytes() for name in (*modules, Path(__file__).name))
+    return hashlib.sha256(source + np.__version__.encode()).hexdigest()[:16]
+
+
+def table_grid(lowest: float, highest: float, step: float) -> np.ndarray:
+    """A table's nodes in ``s = ln(a/h)``: at most ``step`` apart from ``lowest`` to ``highest`` (``a/h``).
+
+    Parameters
+    ----------
+    lowest, highest : float
+        The range of ``a/h``.
+    step : float
+        The largest spacing in ``ln(a/h)``.
+
+    Returns
+    -------
+    numpy.ndarray
+        The nodes.
+    """
+    low, high = math.log(lowest), math.log(highest)
+    return np.linspace(low, high, int(math.ceil((high - low) / step)) + 1)
+
+
+def stored_columns(path: Path | None, names: tuple[str, ...], grid: np.ndarray,
+                   build: Callable[[], dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
+    """A table's columns ``names`` (``s``, the grid, among them), read from ``path`` if it holds them on ``grid``, else
+    ``build()`` and stored there atomically (any trouble on the disk is only a missed shortcut).
+
+    Parameters
+    ----------
+    path : pathlib.Path or None
+        The table's file (``None``: no caching).
+    names : tuple of str
+        The columns, ``"s"`` the grid's.
+    grid : numpy.ndarray
+        The grid the stored table must have.
+    build : callable
+        Computes the columns.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        The columns.
+    """
+    if path is not None and path.exists():
+        try:
+            with np.load(path, allow_pickle=False) as stored:
+                columns = {name: stored[name] for name in names}
+            if np.array_equal(columns["s"], grid):
+                return columns
+        except Exception:  # a damaged or foreign file is rebuilt
+            pass
+    columns = build()
+    if path is not None:
+        try:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".npz", dir=path.parent)
+            with os.fdopen(handle, "wb") as stream:
+                np.savez(stream, **columns)
+            os.replace(temporary, path)
+        except OSError:
+            pass
+    return columns
