@@ -6,6 +6,7 @@ Part of :mod:`mdr_events.theory.layer` (the equations (L1)–(L5) are stated the
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -91,12 +92,13 @@ def compliance_function(t, nu: float, base: LayerBase | str = LayerBase.BONDED) 
     return 1.0 - _one_minus_compliance(t, _nu(nu), _base(base))
 
 
-def _direct_kernel(v: np.ndarray, nu: float, base: LayerBase) -> np.ndarray:
-    """``k(v) = ∫₀^∞ (1 − C(u)) cos(uv) du`` by composite Gauss–Legendre quadrature (the reference)."""
+def _cosine_transform(one_minus: Callable[[np.ndarray], np.ndarray], v) -> np.ndarray:
+    """``∫₀^∞ one_minus(u) cos(uv) du`` by composite Gauss–Legendre quadrature on ``[0, _U_MAX]`` (``one_minus``: a
+    compliance's ``1 − C``, normal or tangential, 0 beyond ``_U_MAX`` to double precision)."""
     x, w = np.polynomial.legendre.leggauss(_U_NODES)
     starts = np.arange(0.0, _U_MAX, _U_PANEL)
     u = (starts[:, None] + (x[None, :] + 1.0) * _U_PANEL / 2.0).ravel()
-    weighted = _one_minus_compliance(u, nu, base) * np.tile(w * _U_PANEL / 2.0, starts.size)
+    weighted = one_minus(u) * np.tile(w * _U_PANEL / 2.0, starts.size)
     flat = np.abs(np.asarray(v, dtype=float)).ravel()
     out = np.empty(flat.size)
     for start in range(0, flat.size, 512):
@@ -104,19 +106,26 @@ def _direct_kernel(v: np.ndarray, nu: float, base: LayerBase) -> np.ndarray:
     return out.reshape(np.shape(v))
 
 
+def _direct_kernel(v: np.ndarray, nu: float, base: LayerBase) -> np.ndarray:
+    """``k(v) = ∫₀^∞ (1 − C(u)) cos(uv) du`` by composite Gauss–Legendre quadrature (the reference)."""
+    return _cosine_transform(lambda u: _one_minus_compliance(u, nu, base), v)
+
+
 @dataclass(frozen=True)
 class _ChebyshevKernel:
-    """``k(v)`` as piecewise Chebyshev series on unit panels of ``|v|`` up to ``v_max``."""
+    """A kernel ``k(v)`` as piecewise Chebyshev series on unit panels of ``|v|`` up to ``v_max`` (the normal one's
+    and the tangential ones')."""
 
     coefficients: np.ndarray
     v_max: float
 
     @classmethod
-    def build(cls, nu: float, base: LayerBase, v_max: float) -> "_ChebyshevKernel":
+    def build(cls, direct: Callable[[np.ndarray], np.ndarray], v_max: float) -> "_ChebyshevKernel":
+        """Interpolate ``direct`` (the kernel by quadrature) on panels up to ``v_max``."""
         panels = int(math.ceil(v_max / _V_PANEL)) + 1
         x = np.cos(np.pi * (np.arange(_V_NODES) + 0.5) / _V_NODES)
         v = (np.arange(panels)[:, None] + (x[None, :] + 1.0) / 2.0) * _V_PANEL
-        values = _direct_kernel(v, nu, base)
+        values = direct(v)
         vandermonde = np.polynomial.chebyshev.chebvander(x, _V_NODES - 1)
         coefficients = np.linalg.solve(vandermonde, values.T).T
         return cls(coefficients, panels * _V_PANEL)
@@ -140,7 +149,8 @@ def _kernel_for(nu: float, base: LayerBase, v_max: float) -> _ChebyshevKernel:
     """The interpolated kernel of ``(ν, base)`` reaching at least ``v_max`` (built once, widened when needed)."""
     known = _KERNELS.get((nu, base))
     if known is None or known.v_max < v_max:
-        known = _ChebyshevKernel.build(nu, base, max(v_max, 2.0 * LAMBDA_MAX + 2.0))
+        known = _ChebyshevKernel.build(lambda v: _direct_kernel(v, nu, base),
+                                       max(v_max, 2.0 * LAMBDA_MAX + 2.0))
         _KERNELS[nu, base] = known
     return known
 

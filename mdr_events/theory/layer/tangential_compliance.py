@@ -6,12 +6,11 @@ Part of :mod:`mdr_events.theory.layer_tangential`, which documents the problem a
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass
 
 import numpy as np
 
 from mdr_events.contact.layer import Layer, LayerBase
+from mdr_events.theory.layer.compliance import _ChebyshevKernel, _cosine_transform
 from mdr_events.validation import check_real
 
 __all__ = ["MODES", "LAMBDA_MAX", "check_bonded", "tangential_compliance", "tangential_kernel"]
@@ -21,11 +20,8 @@ __all__ = ["MODES", "LAMBDA_MAX", "check_bonded", "tangential_compliance", "tang
 MODES = ("longitudinal", "transverse")
 #: The largest ``a/h`` of a table (direct solves take any ``λ``).
 LAMBDA_MAX = 64.0
-#: The kernel's quadrature in ``u``: panels of this width, Gauss–Legendre nodes per panel, and the end, where
-#: ``1 − C_m`` is below 1e-17 (``2e^{−2u}`` and ``≈ (4u² − 4u + 1 + κ²)e^{−2u}/κ``).
-_U_PANEL, _U_NODES, _U_MAX = 0.1, 20, 24.0
-#: The kernel's Chebyshev interpolants: unit panels in ``v``, 20 points each (``k_m`` is analytic in ``|Im v| < 2``).
-_V_PANEL, _V_NODES = 1.0, 20
+#: (The kernels' quadrature and Chebyshev panels are the normal kernel's, :mod:`.compliance`: ``1 − C_m`` is below
+#: 1e-17 at its end, ``2e^{−2u}`` and ``≈ (4u² − 4u + 1 + κ²)e^{−2u}/κ``.)
 
 
 def _nu(nu: float) -> float:
@@ -125,51 +121,17 @@ def tangential_compliance(t, nu: float, mode: str, base: LayerBase | str = Layer
 
 def _direct_kernel(v: np.ndarray, nu: float, mode: str) -> np.ndarray:
     """``k_m(v)`` by composite Gauss–Legendre quadrature of ``∫₀^∞ (1 − C_m(u)) cos(uv) du`` (the reference)."""
-    x, w = np.polynomial.legendre.leggauss(_U_NODES)
-    starts = np.arange(0.0, _U_MAX, _U_PANEL)
-    u = (starts[:, None] + (x[None, :] + 1.0) * _U_PANEL / 2.0).ravel()
-    weighted = _one_minus(u, nu, mode) * np.tile(w * _U_PANEL / 2.0, starts.size)
-    flat = np.abs(np.asarray(v, dtype=float)).ravel()
-    out = np.empty(flat.size)
-    for start in range(0, flat.size, 512):
-        out[start:start + 512] = np.cos(np.outer(flat[start:start + 512], u)) @ weighted
-    return out.reshape(np.shape(v))
+    return _cosine_transform(lambda u: _one_minus(u, nu, mode), v)
 
 
-@dataclass(frozen=True)
-class _Chebyshev:
-    """``k_m(v)`` as piecewise Chebyshev series on unit panels of ``|v|`` up to ``v_max``."""
-
-    coefficients: np.ndarray
-    v_max: float
-
-    @classmethod
-    def build(cls, nu: float, mode: str, v_max: float) -> "_Chebyshev":
-        panels = int(math.ceil(v_max / _V_PANEL)) + 1
-        x = np.cos(np.pi * (np.arange(_V_NODES) + 0.5) / _V_NODES)
-        v = (np.arange(panels)[:, None] + (x[None, :] + 1.0) / 2.0) * _V_PANEL
-        values = _direct_kernel(v, nu, mode)
-        coefficients = np.linalg.solve(np.polynomial.chebyshev.chebvander(x, _V_NODES - 1), values.T).T
-        return cls(coefficients, panels * _V_PANEL)
-
-    def __call__(self, v: np.ndarray) -> np.ndarray:
-        v = np.abs(v)
-        panel = np.minimum((v / _V_PANEL).astype(int), len(self.coefficients) - 1)
-        local = 2.0 * (v / _V_PANEL - panel) - 1.0
-        c = self.coefficients[panel]
-        b1, b2 = np.zeros(v.shape), np.zeros(v.shape)
-        for j in range(_V_NODES - 1, 0, -1):
-            b1, b2 = c[..., j] + 2.0 * local * b1 - b2, b1
-        return c[..., 0] + local * b1 - b2
+_KERNELS: dict[tuple[float, str], _ChebyshevKernel] = {}
 
 
-_KERNELS: dict[tuple[float, str], _Chebyshev] = {}
-
-
-def _kernel_for(nu: float, mode: str, v_max: float) -> _Chebyshev:
+def _kernel_for(nu: float, mode: str, v_max: float) -> _ChebyshevKernel:
     known = _KERNELS.get((nu, mode))
     if known is None or known.v_max < v_max:
-        known = _Chebyshev.build(nu, mode, max(v_max, 2.0 * LAMBDA_MAX + 2.0))
+        known = _ChebyshevKernel.build(lambda v: _direct_kernel(v, nu, mode),
+                                       max(v_max, 2.0 * LAMBDA_MAX + 2.0))
         _KERNELS[nu, mode] = known
     return known
 

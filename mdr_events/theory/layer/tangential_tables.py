@@ -26,7 +26,7 @@ TABLE_STEP = 0.1
 
 #: Hash of the tangential solver's source (the compliances and kernels, the punch's solve and the tables) and NumPy's
 #: version: the key of the tables on disk (a change of the code never reads an old table).
-_SOURCE_DIGEST = source_digest("tangential_compliance.py", "tangential_punch.py", "tangential_tables.py")
+_SOURCE_DIGEST = source_digest("compliance.py", "tangential_compliance.py", "tangential_punch.py", "tangential_tables.py")
 
 
 def tangential_table_cache_path(nu: float) -> Path | None:
