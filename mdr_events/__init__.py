@@ -55,6 +55,7 @@ _LAZY = {
     **dict.fromkeys(("RateMeasurement", "fit_rate_adhesion"), "mdr_events.analysis.rate_fit"),
     **dict.fromkeys(("critical_angle_at_speed", "critical_angles_at_speeds", "phase_diagram_at_speeds",
                      "slip_onset_depth_at_speed"), "mdr_events.analysis.rate_angles"),
+    "critical_angles_against_thickness": "mdr_events.analysis.layer_angles",
     **dict.fromkeys(("Engine", "SweepOutput", "sweep"), "mdr_events.analysis.sweep"),
     **dict.fromkeys(("load_study", "run_study"), "mdr_events.app.study"),
     "dem": "mdr_events.dem",
@@ -72,7 +73,7 @@ _declare_registrars(
     schemas=("mdr_events.theory.phase", "mdr_events.theory.layer.curves", "mdr_events.models.simulation_schema", "mdr_events.analysis.crosscheck",
              "mdr_events.analysis.validate", "mdr_events.analysis.convergence_study",
              "mdr_events.analysis.universal_map", "mdr_events.analysis.fit", "mdr_events.analysis.fit_data",
-             "mdr_events.analysis.sweep", "mdr_events.dem.runner"),
+             "mdr_events.analysis.sweep", "mdr_events.analysis.layer_angles", "mdr_events.dem.runner"),
     figures=("mdr_events.plotting",))
 
 
@@ -98,6 +99,7 @@ if TYPE_CHECKING:  # what static tools (type checkers, IDEs) read: the same name
     from mdr_events.analysis.convergence_study import convergence_study
     from mdr_events.analysis.crosscheck import cross_check
     from mdr_events.analysis.fit import FitResult, fit
+    from mdr_events.analysis.layer_angles import critical_angles_against_thickness
     from mdr_events.analysis.rate_angles import (critical_angle_at_speed, critical_angles_at_speeds,
                                                  phase_diagram_at_speeds, slip_onset_depth_at_speed)
     from mdr_events.analysis.rate_fit import RateMeasurement, fit_rate_adhesion
@@ -182,6 +184,7 @@ __all__ = [
     "layer_normal_curve",
     "layer_indentation_cycle",
     "layer_pull_off_curve",
+    "critical_angles_against_thickness",
     "dem",
     "lammps_check",
     "load_study",

@@ -390,4 +390,5 @@ def check_half_space(contact: Contact, where: str) -> Contact:
         return contact
     raise ValueError(f"Contact.layer={contact.layer!r} is not allowed in {where} yet; allowed: the half-space (h = "
                      "inf, Layer()) — the normal problem on a layer: mdr_events.layer_normal_curve and "
-                     "mdr_events.layer_pull_off_curve (mdr_events.theory.layer)")
+                     "mdr_events.layer_pull_off_curve (mdr_events.theory.layer); its slip onset: d_crit, "
+                     "critical_angle, phase_diagram")

@@ -11,7 +11,7 @@ from matplotlib.figure import Figure
 
 from mdr_events.plotting.figures import LEGEND_FONTSIZE
 
-__all__ = ["plot_pull_off_against_thickness", "plot_layer_cycles"]
+__all__ = ["plot_pull_off_against_thickness", "plot_layer_cycles", "plot_critical_angles_against_thickness"]
 
 
 def plot_pull_off_against_thickness(curves: dict[str, xr.Dataset], limits: dict[str, float]) -> Figure:
@@ -74,4 +74,39 @@ def plot_layer_cycles(cycles: dict[str, xr.Dataset]) -> Figure:
     axes.set_ylabel("normal force F_N (N)")
     axes.legend(fontsize=LEGEND_FONTSIZE)
     axes.grid(True, lw=0.3, alpha=0.5)
+    return figure
+
+
+def plot_critical_angles_against_thickness(curves: dict[str, xr.Dataset]) -> Figure:
+    """The critical angles of scenarios A, B and B+ against the layer's thickness (log axis), adhesive (solid) and
+    not (dotted), each half-space's as a mark at the right edge, and scenario A's thin-layer limit (dashed).
+
+    Parameters
+    ----------
+    curves : dict of str to xarray.Dataset
+        Label -> :func:`~mdr_events.critical_angles_against_thickness` (its last thickness ``inf``).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
+    figure, axes = plt.subplots(figsize=(6.4, 4.6), constrained_layout=True)
+    for index, (label, curve) in enumerate(curves.items()):
+        finite = np.isfinite(curve.thickness.values)
+        h_mm = curve.thickness.values[finite] * 1e3
+        for row, scenario in enumerate(curve.scenario.values):
+            color = f"C{3 * index + row}"
+            adhesive = curve.critical_angle_jkr.values[row]
+            axes.semilogx(h_mm, adhesive[finite], color=color, lw=1.4, label=f"{label}, {scenario}")
+            if scenario != "B":  # (90° without adhesion: slip always comes first)
+                axes.semilogx(h_mm, curve.critical_angle_hertz.values[row][finite], color=color, lw=1.0, ls=":")
+            axes.plot([h_mm.max() * 1.6], adhesive[~finite], marker="<", color=color, ms=6, ls="none")
+        axes.semilogx(h_mm, curve.thin_limit_A.values[finite], color=f"C{3 * index}", lw=0.9, ls="--",
+                      label=f"{label}, A on a thin layer")
+    axes.set_xlabel("layer thickness h (mm); ◀ the half-space; dotted: without adhesion")
+    axes.set_ylabel("critical angle α_c (degree)")
+    axes.set_ylim(0.0, 90.0)
+    axes.legend(fontsize=LEGEND_FONTSIZE, ncol=2, loc="upper right")
+    axes.grid(True, which="both", lw=0.3, alpha=0.5)
     return figure

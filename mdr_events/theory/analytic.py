@@ -27,7 +27,7 @@ import numpy as np
 from mdr_events.theory import symbolic
 from mdr_events.theory.blocks import blockwise
 from mdr_events.theory.roots import positive_polynomial_root
-from mdr_events.theory.job import ContactLike, paper_parameters
+from mdr_events.theory.job import ContactLike, on_layer, paper_parameters
 from mdr_events.validation import SCALE_MAX, check_choice, check_flag, real_array, shown, validate_alpha
 
 __all__ = [
@@ -424,7 +424,10 @@ def d_crit(
         Path angle to the surface in degrees, in [0, 90].
     contact : Contact or Parameters
         Material, indenter (the paraboloid (4)), adhesion and ``τ0`` (13): a :class:`~mdr_events.Contact`, or a
-        :class:`~mdr_events.Parameters` (the keywords of before, with its own ``d_max``).
+        :class:`~mdr_events.Parameters` (the keywords of before, with its own ``d_max``). A contact on a layer of
+        finite thickness bonded to its base (``Contact.layer``; a paraboloid or power law): the same equations with
+        the layer's cap ``π a² τ0/K_t(a)`` and branches, solved in ``a``
+        (:mod:`mdr_events.theory.layer.slip_onset`; an onset beyond the tables, ``a/h > 64``, is refused).
     scenario : {"A", "B"}
         ``"A"``: indentation at angle α from first contact, eqs. (14), (17),
         (18). ``"B"``: vertical indentation to ``d_max`` then motion at angle α,
@@ -465,7 +468,7 @@ def d_crit(
     the start of pull-off; in the model it is pinned first (see
     :mod:`mdr_events` docs on the continuum method).
     """
-    params = paper_parameters(contact, "d_crit", d_max)
+    params = None if on_layer(contact) else paper_parameters(contact, "d_crit", d_max)
     check_choice("scenario", scenario, SCENARIOS)
     if scenario == "A" and branch is not None:
         raise ValueError(f"branch={branch!r} is not allowed with scenario 'A'; allowed: None (branch is for scenario B)")
@@ -473,6 +476,10 @@ def d_crit(
     check_choice("branch", branch, BRANCHES)
     check_flag("adhesion", adhesion)
     alpha_deg = validate_alpha(alpha)
+    if params is None:
+        from mdr_events.theory.layer.slip_onset import onset_depths
+
+        return _as_output(onset_depths(alpha_deg, contact, scenario, adhesion, branch, d_max), alpha_deg)
     return _as_output(_slip_onset(_Tangent.of(alpha_deg), params, scenario, adhesion, branch), alpha_deg)
 
 
@@ -597,11 +604,15 @@ def critical_angle(contact: ContactLike, scenario: Literal["A", "B", "B+"] = "A"
     .. math:: \tan \alpha_c = \frac{2 G^* (d_\mathrm{max} - d)}{\pi a \tau_0}, \qquad
               \tan \alpha_c = \frac{2 G^* (d - d_\mathrm{max})}{\pi a \tau_0}.
 
+    On a layer of finite thickness bonded to its base (``Contact.layer``) the cap is ``π a² τ0/K_t(a)`` and the
+    radius follows the layer's branches: ``tan α_c`` is the largest travel per cap the motion meets
+    (:mod:`mdr_events.theory.layer.slip_onset`).
+
     Parameters
     ----------
     contact : Contact or Parameters
-        The paper's paraboloid (4) under the law (13): a :class:`~mdr_events.Contact` (with ``d_max``), or a
-        :class:`~mdr_events.Parameters` (the keywords of before, with its own ``d_max``).
+        The paper's paraboloid (4) under the law (13): a :class:`~mdr_events.Contact` (with ``d_max``; on a layer
+        also a power law), or a :class:`~mdr_events.Parameters` (the keywords of before, with its own ``d_max``).
     scenario : {"A", "B", "B+"}
         The path: ``"A"`` (14), ``"B"`` (19) pulled off at the angle, ``"B+"`` pressed further in at the angle.
     adhesion : bool
@@ -617,12 +628,16 @@ def critical_angle(contact: ContactLike, scenario: Literal["A", "B", "B+"] = "A"
     float
         The critical angle in degrees (90 where slip always comes first).
     """
-    p = paper_parameters(contact, "critical_angle", d_max)
+    p = None if on_layer(contact) else paper_parameters(contact, "critical_angle", d_max)
     check_choice("scenario", scenario, CRITICAL_ANGLE_SCENARIOS)
     check_flag("adhesion", adhesion)
     if final_depth is not None and scenario != "B+":
         raise ValueError(f"final_depth={final_depth!r} is not allowed with scenario {scenario!r}; "
                          "allowed: None (final_depth is for scenario 'B+')")
+    if p is None:
+        from mdr_events.theory.layer.slip_onset import critical_angle_on_layer
+
+        return critical_angle_on_layer(contact, scenario, adhesion, final_depth, d_max)
     if scenario == "B+":
         final = 2.0 * p.d_max if final_depth is None else final_depth
         if not (isinstance(final, (int, float)) and math.isfinite(final) and final > p.d_max):

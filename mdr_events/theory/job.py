@@ -111,6 +111,12 @@ def theory_job(contact: Any, d_max: float | None = None, profile: Any = None, fr
                      dataclasses.replace(contact.friction, tau0=None))
 
 
+def on_layer(contact: Any) -> bool:
+    """Whether ``contact`` is a :class:`~mdr_events.Contact` on a layer of finite thickness (``Contact.layer``): the
+    closed forms that take a layer hand it to :mod:`mdr_events.theory.layer`."""
+    return isinstance(contact, Contact) and not contact.layer.is_half_space
+
+
 def paper_parameters(contact: Any, what: str, d_max: float | None = None) -> Parameters:
     """The :class:`~mdr_events.Parameters` of :func:`theory_job` for the closed forms of the paper's paraboloid (4)
     under its friction law (13) (:mod:`mdr_events.theory.analytic`); a contact of another indenter or law is refused,

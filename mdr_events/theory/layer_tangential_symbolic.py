@@ -43,7 +43,8 @@ a = symbolic.SYMBOLS["a"]
 TANGENTIAL_KEYS = ("layer_compliance_longitudinal_bonded", "layer_compliance_transverse_bonded",
                    "layer_coupling_bonded", "layer_compliance_longitudinal_frictionless",
                    "layer_compliance_transverse_frictionless", "layer_tangential_half_space_stiffness",
-                   "layer_shear_winkler_modulus", "layer_shear_winkler_stiffness", "layer_tangential_stiffness")
+                   "layer_shear_winkler_modulus", "layer_shear_winkler_stiffness", "layer_tangential_stiffness",
+                   "layer_thin_sliding_cap", "layer_thin_onset_depth_A")
 
 _SOURCE_DIGEST = hashlib.sha256(Path(__file__).read_bytes() + sp.__version__.encode()).hexdigest()[:16]
 
@@ -175,8 +176,16 @@ def _derive_limits(add, bonded: dict, free: dict) -> None:
     modulus = G / h  # û = (t/(Gξ)) q̂ = (h/G) q̂
     add(Relation("layer_shear_winkler_modulus", "", "thin bonded layer in shear: q = (G/h) u", sp.Symbol("kappa_t"),
                  modulus, (G, h)))
+    thin_stiffness = sp.integrate(2 * sp.pi * sp.Symbol("r") * modulus, (sp.Symbol("r"), 0, a))
     add(Relation("layer_shear_winkler_stiffness", "(T3)", "thin bonded layer: K_t = π a² G/h", sp.Symbol("K_t"),
-                 sp.integrate(2 * sp.pi * sp.Symbol("r") * modulus, (sp.Symbol("r"), 0, a)), (a, G, h)))
+                 thin_stiffness, (a, G, h)))
+    tau0, tan_alpha = symbolic.SYMBOLS["tau0"], symbolic.SYMBOLS["tan_alpha"]
+    cap = sp.simplify(sp.pi * a**2 * tau0 / thin_stiffness)  # (13) on the layer, ū = π a² τ0 / K_t
+    _check(cap.free_symbols == {tau0, h, G}, "thin layer: the cap depends on the radius")
+    add(Relation("layer_thin_sliding_cap", "(13)", "thin bonded layer: ū = π a² τ0/K_t, the same for every radius",
+                 sp.Symbol("ubar"), cap, (tau0, G, h)))
+    add(Relation("layer_thin_onset_depth_A", "(17)", "thin bonded layer, scenario A: d/tan α = ū at any radius",
+                 sp.Symbol("d_crit"), tan_alpha * cap, (tan_alpha, tau0, G, h)))
     half = {key: value.subs(nu, sp.Rational(1, 2)) for key, value in bonded.items()}
     ratio = half["coupling"] / ((1 - sp.Rational(1, 2)) * sp.sqrt(half["normal"] * half["longitudinal"]))
     _check(sp.simplify(sp.limit(sp.Abs(ratio), t, 0) - sp.sqrt(3) / 2) == 0, "ν = 0.5 coupling at t → 0")

@@ -16,11 +16,12 @@ import xarray as xr
 from mdr_events.io.agreement import RoundOff, register_accuracy
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
-from mdr_events.parameters import Parameters
+from mdr_events.parameters import PAPER_D_MAX, PAPER_V, Parameters
 from mdr_events.contact.friction import FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.contact.indenters import Profile, TabulatedProfile, profile_attrs
+from mdr_events.contact.model import Contact
 from mdr_events.theory import analytic, mindlin, power_law, tabulated
-from mdr_events.theory.job import ContactLike, theory_job
+from mdr_events.theory.job import ContactLike, contact_alone, on_layer, theory_job
 from mdr_events.theory.kinds import theory_of
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_choice, validate_alpha
@@ -76,7 +77,10 @@ def phase_diagram(
     contact : Contact or Parameters
         The physical model: a :class:`~mdr_events.Contact` (elastomer, indenter, adhesion, friction law), with the
         depth ``d_max``; or the keywords of before, a :class:`~mdr_events.Parameters` (material, the paraboloid of
-        its ``R``, adhesion, ``τ0`` and its own ``d_max``) with ``profile`` and ``friction``.
+        its ``R``, adhesion, ``τ0`` and its own ``d_max``) with ``profile`` and ``friction``. A contact on a layer
+        of finite thickness bonded to its base (``Contact.layer``; a paraboloid or power law under the law (13)):
+        the same curves with the layer's cap and branches (:func:`mdr_events.d_crit`), ``nan`` where an onset lies
+        beyond the layer's tables (``a/h > 64``).
     alpha : array_like, optional
         Angles in degrees, in [0, 90]; default 0°, 0.1°, …, 90°.
     scenario : {"A", "B"}
@@ -112,7 +116,11 @@ def phase_diagram(
         scenario B, ``jump_off_depth`` (the displacement-controlled pull-off
         depth on the ``Δγ1`` branch).
     """
-    params, profile, friction = theory_job(contact, d_max, profile, friction, what="phase_diagram")
+    layered = on_layer(contact)
+    if layered:
+        contact = contact_alone(contact, profile, friction)
+    else:
+        params, profile, friction = theory_job(contact, d_max, profile, friction, what="phase_diagram")
     check_choice("scenario", scenario, analytic.SCENARIOS)
     if isinstance(alpha, str) and alpha in ("A", "B"):  # phase_diagram(contact, "B"): the scenario given as alpha
         raise TypeError(f"alpha={alpha!r} is not allowed: a scenario's name where the angles go; allowed: angles in "
@@ -125,6 +133,8 @@ def phase_diagram(
     limits.check(f"the phase diagram of {angles.size} angles", samples=angles.size,
                  memory=BYTES_PER_ANGLE * angles.size)
     coords = {"alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})}
+    if layered:
+        return _layer_phase_diagram(contact, angles, scenario, d_max, coords)
     # (the closed forms overflow as the runs would: E = 1e-150 Pa gave d_crit = +inf at 438 angles with warnings)
     check_representable(params, profile, friction)
     if not friction.is_default:
@@ -137,8 +147,45 @@ def _paper_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, 
                          coords: dict) -> xr.Dataset:
     """:func:`phase_diagram` of the paper's paraboloid and friction law: eqs. (17), (18) or (20), (21)
     (:mod:`~mdr_events.theory.analytic`), Fig. 9a or 9b for a paper preset."""
-    variables = {}
     curves = analytic.d_crit_curves(angles, params, scenario)
+    jump_off = analytic.jump_off(params, params.dgamma1)["depth"] if scenario == "B" else None
+    variables = _onset_variables(curves, scenario, coords, jump_off, params.d_max,
+                                 lambda adhesive: analytic.critical_angle(params, scenario, adhesion=adhesive))
+    dataset = xr.Dataset(variables, coords=coords)
+    figure = {} if params.preset_name() is None else {"figure": "9a" if scenario == "A" else "9b"}
+    return stamp(dataset, params, scenario=scenario, content=PHASE_DIAGRAM_CONTENT, **figure)
+
+
+def _layer_phase_diagram(contact: Contact, angles: np.ndarray, scenario: str, d_max: float | None,
+                         coords: dict) -> xr.Dataset:
+    """:func:`phase_diagram` of a contact on a layer of finite thickness: eqs. (17)–(21) with the layer's cap
+    ``π a² τ0/K_t`` and branches (:mod:`~mdr_events.theory.layer.slip_onset`), ``nan`` where the onset lies beyond
+    the layer's tables (``a/h > 64``), the layer's attributes stamped."""
+    from mdr_events.theory.layer.curves import _jump_off
+    from mdr_events.theory.layer.slip_onset import critical_angle_on_layer, onset_depths
+
+    branches = (None,) if scenario == "A" else analytic.BRANCHES
+    curves = {(adhesive, branch): onset_depths(angles, contact, scenario, adhesive, branch or "pull-off", d_max,
+                                                       past_tables=True)
+              for branch in branches for adhesive in (False, True)}
+    depth = PAPER_D_MAX if d_max is None else d_max
+    jump_off = None
+    if scenario == "B":
+        jump_off = _jump_off(contact, contact.adhesion.dgamma1)[0] if contact.adhesion.dgamma1 > 0.0 else 0.0
+    variables = _onset_variables(curves, scenario, coords, jump_off, depth,
+                                 lambda adhesive: critical_angle_on_layer(contact, scenario, adhesive, None, d_max))
+    dataset = stamp(xr.Dataset(variables, coords=coords), contact.parameters(depth, PAPER_V), scenario=scenario,
+                    content=PHASE_DIAGRAM_CONTENT)
+    dataset.attrs.update(contact.to_attrs())
+    return dataset
+
+
+def _onset_variables(curves: dict, scenario: str, coords: dict, jump_off: float | None, d_max: float,
+                     critical_angle) -> dict:
+    """The variables of a phase diagram of the law (13) from :func:`~mdr_events.theory.analytic.d_crit_curves`'
+    curves, the jump-off depth (scenario B), ``d_max`` and ``critical_angle(adhesive)`` (``coords`` gains the
+    branch in B)."""
+    variables = {}
     if scenario == "A":
         for key, adhesive, eq in (("hertz", False, "(17)"), ("jkr", True, "(18)")):
             variables[f"d_crit_{key}"] = (
@@ -157,20 +204,18 @@ def _paper_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, 
             )
         variables["jump_off_depth"] = (
             (),
-            analytic.jump_off(params, params.dgamma1)["depth"],
+            jump_off,
             {"units": "m", "long_name": "jump-off depth on the pull-off branch (displacement control)"},
         )
-    variables["d_max"] = ((), params.d_max, {"units": "m", "long_name": "maximum indentation depth"})
+    variables["d_max"] = ((), d_max, {"units": "m", "long_name": "maximum indentation depth"})
     for key, adhesive in (("hertz", False), ("jkr", True)):
         meaning = "slip at d_max" if scenario == "A" else "no slip before jump-off above it"
         variables[f"critical_angle_{key}"] = (
             (),
-            analytic.critical_angle(params, scenario, adhesion=adhesive),
+            critical_angle(adhesive),
             {"units": "degree", "long_name": f"critical angle, {'adhesive' if adhesive else 'non-adhesive'} ({meaning})"},
         )
-    dataset = xr.Dataset(variables, coords=coords)
-    figure = {} if params.preset_name() is None else {"figure": "9a" if scenario == "A" else "9b"}
-    return stamp(dataset, params, scenario=scenario, content=PHASE_DIAGRAM_CONTENT, **figure)
+    return variables
 
 
 def _profile_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, profile: Profile,

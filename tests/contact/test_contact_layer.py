@@ -50,8 +50,8 @@ def _run(where):
         "validate": lambda: me.validate(None, LAYERED, "A", 20.0),
         "fit": lambda: me.fit(None, LAYERED, "A", 20.0, free=["E"]),
         "sweep": lambda: me.sweep({"alpha": [10.0, 20.0]}, LAYERED),
-        "phase_diagram": lambda: me.phase_diagram(LAYERED, scenario="A"),
-        "critical_angle": lambda: me.critical_angle(LAYERED, "A", adhesion=True),
+        "pull_off_force": lambda: me.pull_off_force(LAYERED, 0.15),
+        "jump_off": lambda: me.jump_off(LAYERED, 0.15),
         "the LAMMPS check": lambda: me.dem.lammps_check(LAYERED, "A", 20.0),
         "the LAMMPS check (LAMMPS has no layers)":
             lambda: me.dem.wall_coefficients(LAYERED, me.dem.LammpsModel()),
@@ -59,7 +59,7 @@ def _run(where):
 
 
 @pytest.mark.parametrize("where", ["simulate(method='continuum')", "simulate(method='discrete')", "validate", "fit",
-                                   "sweep", "phase_diagram", "critical_angle", "the LAMMPS check",
+                                   "sweep", "pull_off_force", "jump_off", "the LAMMPS check",
                                    "the LAMMPS check (LAMMPS has no layers)"])
 def test_an_entry_point_without_layers_refuses_a_finite_one_in_one_line(where):
     with pytest.raises(ValueError) as caught:

@@ -45,6 +45,7 @@ def results(paper_module):
         "layer_curve": me.layer_normal_curve(me.Contact.paper().replace(h=5e-3), [1e-4, 2e-4]),
         "layer_cycle": me.layer_indentation_cycle(me.Contact.paper().replace(h=5e-3), 2e-4, 5),
         "layer_pull_off": me.layer_pull_off_curve(me.Contact.paper(), [5e-3]),
+        "layer_angles": me.critical_angles_against_thickness(me.Contact.paper(), [5e-3]),
         **_lammps_run(),
     }
 

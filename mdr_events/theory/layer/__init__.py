@@ -75,6 +75,8 @@ module                            one idea
 :mod:`.tangential_tables`         the tangential punch's factors against ``a/h``, cached on disk
 :mod:`.tangential_displacement`   the surface displacement under the tangential punch by direct Hankel quadrature
 :mod:`.tangential_relations`      the tangential springs ``k_t = K_t'/2`` and the caps
+:mod:`.slip_onset`                the slip-onset depths (17)–(21) and the critical angles with the layer's cap and
+                                  branches (what :func:`mdr_events.d_crit` and ``critical_angle`` run on a layer)
 ================================  ======================================================================================
 
 The tangential modules' public names are those of :mod:`mdr_events.theory.layer_tangential` (not re-exported here).
@@ -89,10 +91,12 @@ from mdr_events.theory.layer.relations import (branch_depth, branch_normal_force
                                                normal_force, power_law_profile, power_law_profile_slope,
                                                punch_stiffness, punch_stiffness_slope, spring_stiffness_density,
                                                surface_displacement)
+from mdr_events.theory.layer.slip_onset import critical_angle_on_layer, onset_depths, thin_layer_onset_depth
 from mdr_events.theory.layer.tables import LAMBDA_MIN, LayerTable, layer_table, table_cache_path
 
 __all__ = ["LAMBDA_MAX", "LAMBDA_MIN", "LAMBDA_SOLVE_MAX", "KERNEL_V_MAX", "SOLVE_BYTES_PER_PAIR", "compliance_function", "kernel", "nystrom_nodes", "PunchSolution",
            "solve_punch", "LayerTable", "layer_table", "table_cache_path", "punch_stiffness", "punch_stiffness_slope",
            "spring_stiffness_density", "hess_elongation", "surface_displacement", "equivalent_profile",
            "power_law_profile", "power_law_profile_slope", "normal_force", "branch_depth", "branch_normal_force",
-           "pull_off", "PullOff", "layer_normal_curve", "layer_indentation_cycle", "layer_pull_off_curve"]
+           "pull_off", "PullOff", "layer_normal_curve", "layer_indentation_cycle", "layer_pull_off_curve",
+           "onset_depths", "critical_angle_on_layer", "thin_layer_onset_depth"]

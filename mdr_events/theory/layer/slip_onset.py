@@ -1,0 +1,273 @@
+r"""Slip onset on a layer: the depths (17)–(21) and the critical angles with the layer's ``K_t`` and branches.
+
+Part of :mod:`mdr_events.theory.layer`. On a layer bonded to its base the springs' cap under the law (13) is
+``ū(a) = π a² τ0 / K_t(a)`` (:func:`~mdr_events.theory.layer_tangential.sliding_cap`; ``π a τ0/(2G*)`` on the
+half-space) and the depth of the contact radius ``a`` is ``d(a) = g(a) − Δl(a)`` (the layer's branch,
+:func:`~mdr_events.theory.layer.branch_depth`). The oldest springs carry the path's whole tangential travel, so the
+springs begin to slide where that travel reaches the cap; each onset is an equation in ``a``:
+
+.. math:: \text{A (14):}\ \frac{d(a)}{\tan\alpha} = \bar u(a), \qquad
+          \text{B (19), "−":}\ \frac{d_\mathrm{max} - d_1(a)}{\tan\alpha} = \bar u(a), \qquad
+          \text{"+":}\ \frac{d_0(a) - d_\mathrm{max}}{\tan\alpha} = \bar u(a)
+
+(``d_0``, ``d_1`` the branches of ``Δγ0`` and ``Δγ1``; the half-space's (18) and (21); without adhesion (17) and
+(20)). Written as ``tan α = r(a)`` with ``r`` the travel per cap along the branch the motion follows, the onset is
+the first radius at which ``r`` reaches ``tan α``: the running maximum of ``r`` along the motion is inverted (a
+logarithmic scan of :data:`SCAN_POINTS` radii, then bisection in ``ln a`` to round-off). The critical angle is
+``atan`` of that running maximum where the motion ends (A: at ``d_max``; B: at the jump-off on ``Δγ1``, as
+(21) assumes, the radius following ``Δγ1`` from ``d_max``; B+: at ``final_depth``).
+
+Thin bonded layer: the layer shears like a Winkler foundation, ``K_t → π a² G/h`` (derived in
+:mod:`mdr_events.theory.layer_tangential_symbolic`), so ``ū → τ0 h/G`` is the same for every spring and every radius:
+scenario A's onset tends to ``d = τ0 h tan α / G``, whatever the indenter and adhesion
+(:func:`thin_layer_onset_depth`).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Callable, NamedTuple
+
+import numpy as np
+
+from mdr_events.contact.adhesion import Adhesion
+from mdr_events.contact.model import Contact
+from mdr_events.parameters import PAPER_D_MAX
+from mdr_events.theory.layer.compliance import LAMBDA_MAX
+from mdr_events.theory.layer.curves import _jump_off, _material, _stable_radius
+from mdr_events.theory.layer.relations import branch_depth
+from mdr_events.theory.layer.tangential_relations import sliding_cap
+from mdr_events.validation import check_real, shown, validate_alpha
+
+__all__ = ["onset_depths", "critical_angle_on_layer", "thin_layer_onset_depth", "SCAN_POINTS"]
+
+#: Radii of the logarithmic scan of ``r(a)`` along one motion (the running maximum is inverted on it).
+SCAN_POINTS = 400
+#: Bisection steps in ``ln a`` inside one scan interval: its width is at most ``ln(1e12)/SCAN_POINTS < 0.07``, and
+#: ``0.07 · 2⁻⁶⁰`` is far below an ulp of ``ln a``.
+_BISECTIONS = 60
+#: Without adhesion the pull-off branch shrinks to ``a → 0`` (``r → ∞``): the scan goes down to this fraction of the
+#: radius at ``d_max``; an angle whose onset lies below it (within about ``1e-10°`` of 90° at the paper's
+#: parameters) counts as sliding there.
+_SMALLEST_FRACTION = 1e-12
+
+
+#: The scan ends this close inside the tables' last radius: ``exp(ln a)`` may round above ``a``.
+_INSIDE_TABLES = 1.0 - 1e-12
+
+
+class _Motion(NamedTuple):
+    """A motion along one branch: radii in the order the motion visits them and ``r(a)`` (travel per cap) there."""
+
+    #: ``ln a`` of the scan, in the motion's order
+    logs: np.ndarray
+    #: ``r`` at ``logs``
+    ratio: np.ndarray
+    #: ``r`` at any ``ln a`` (for the bisection)
+    ratio_of: Callable[[np.ndarray], np.ndarray]
+    #: the depth of the branch at any ``a``
+    depth_of: Callable[[np.ndarray], np.ndarray]
+    #: where the motion does not reach the angle: ``+inf`` (A, B+: beyond the tables, refused), ``-inf`` (B: comes
+    #: apart first)
+    never: float
+    #: the depth where the motion starts (0 in A, ``d_max`` in B): the onset at α = 0
+    start_depth: float
+
+
+def _checked(contact: Contact, what: str, d_max) -> tuple[Contact, float]:
+    """The contact (a paraboloid or power law under the law (13) on a bonded layer) and ``d_max``; else the
+    one-line error."""
+    _material(contact)
+    if not isinstance(contact.adhesion, Adhesion):
+        raise TypeError(f"contact.adhesion={contact.adhesion!r} is not allowed in {what} on a layer; allowed: "
+                        "Adhesion(dgamma0, dgamma1), the rate-independent law")
+    if contact.friction.law != "tau0":
+        raise ValueError(f"{what} under contact.friction={contact.friction!r} is not allowed on a layer; allowed: "
+                         "the law 'tau0' of eq. (13)")
+    depth = check_real("d_max", PAPER_D_MAX if d_max is None else d_max, "a finite number > 0 (m)",
+                       lambda value: value > 0.0)
+    return contact, depth
+
+
+def _motion(contact: Contact, scenario: str, branch: str, adhesion: bool, d_max: float) -> _Motion:
+    """The branch the motion follows and ``r(a)`` along it (module docstring)."""
+    E_star, nu, layer = _material(contact)
+    tau0, G_star = contact.friction.tau0, contact.elastomer.G_star
+    pulling = scenario == "B" and branch == "pull-off"
+    dgamma = 0.0 if not adhesion else contact.adhesion.dgamma1 if pulling else contact.adhesion.dgamma0
+
+    def depth_of(a):
+        return branch_depth(a, contact.indenter, E_star, nu, dgamma, layer)
+
+    def ratio_of(logs):
+        a = np.exp(logs)
+        travel = depth_of(a) if scenario == "A" else (d_max - depth_of(a)) if pulling else (depth_of(a) - d_max)
+        return travel / sliding_cap(a, tau0, G_star, nu, layer)
+
+    ceiling = LAMBDA_MAX * layer.thickness * _INSIDE_TABLES
+    at_d_max = float(_stable_radius(contact, dgamma, np.array([d_max]))[0])
+    if scenario == "A":
+        start = float(_stable_radius(contact, dgamma, np.array([0.0]))[0]) if dgamma > 0.0 else 0.0
+        start = start if start > 0.0 else _SMALLEST_FRACTION * at_d_max
+        ends, never = (start, ceiling), math.inf
+    elif pulling:
+        end = _jump_off(contact, dgamma)[1] if dgamma > 0.0 else _SMALLEST_FRACTION * at_d_max
+        ends, never = (at_d_max, end), -math.inf
+    else:
+        ends, never = (at_d_max, ceiling), math.inf
+    logs = np.linspace(math.log(ends[0]), math.log(ends[1]), SCAN_POINTS)
+    return _Motion(logs, ratio_of(logs), ratio_of, depth_of, never, 0.0 if scenario == "A" else d_max)
+
+
+def _onset_depths(motion: _Motion, tangent: np.ndarray, what: str, past_tables: bool) -> np.ndarray:
+    """The depth at which ``r`` first reaches each ``tangent`` along the motion (``motion.never`` where it does not;
+    ``+inf`` at 90°); an onset beyond the tables is refused, or ``nan`` with ``past_tables``."""
+    reached = np.maximum.accumulate(motion.ratio)
+    first = np.searchsorted(reached, tangent, side="left")
+    missed = first >= reached.size
+    beyond = missed & np.isfinite(tangent) if motion.never == math.inf else np.zeros(missed.shape, bool)
+    if np.any(beyond) and not past_tables:
+        angle = float(np.degrees(np.arctan(tangent[missed & np.isfinite(tangent)].min())))
+        raise ValueError(f"alpha={angle!r} is not allowed in {what} on this layer: its onset lies beyond a/h = "
+                         f"{LAMBDA_MAX:g} (the tables' reach); allowed: angles below "
+                         f"{float(np.degrees(np.arctan(reached[-1]))):.6g} degrees")
+    index = np.clip(first, 1, reached.size - 1)
+    lower, upper = motion.logs[index - 1], motion.logs[index]
+    for _ in range(_BISECTIONS):  # r(lower) < tan α ≤ r(upper) (the first node reaching it)
+        middle = 0.5 * (lower + upper)
+        above = motion.ratio_of(middle) >= tangent
+        lower, upper = np.where(above, lower, middle), np.where(above, middle, upper)
+    depth = motion.depth_of(np.exp(upper))
+    depth = np.where((first == 0) | (tangent == 0.0), motion.start_depth, depth)  # (α = 0: where the motion starts)
+    return np.where(beyond, math.nan, np.where(missed, motion.never, depth))
+
+
+def onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesion: bool, branch: str,
+                 d_max: float | None, *, past_tables: bool = False) -> np.ndarray:
+    r"""The depths at which the springs start to slide on the contact's layer: eqs. (17)–(21) with ``K_t`` and the
+    layer's branches (module docstring); :func:`mdr_events.d_crit` of a contact on a layer, its arguments checked.
+
+    Parameters
+    ----------
+    alpha_deg : numpy.ndarray
+        Path angles in degrees, in ``[0, 90]``.
+    contact : Contact
+        A paraboloid or power law under the law (13) on a layer bonded to its base (``Contact.layer``).
+    scenario : {"A", "B"}
+        As :func:`mdr_events.d_crit`.
+    adhesion : bool
+        ``False``: without adhesion (17), (20); ``True``: Heß's rule with ``Δγ0`` in and ``Δγ1`` out, (18), (21).
+    branch : {"pull-off", "indentation"}
+        Scenario B's branch (ignored in A).
+    d_max : float or None
+        The depth scenario B starts from (m; ``None``: the paper's 0.3 mm).
+    past_tables : bool, default False
+        ``True``: ``nan`` where the onset lies beyond the tables (``a/h > 64``), as a phase diagram of a tabulated
+        profile marks its end; ``False``: refused.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``d_crit`` in m, the shape of ``alpha_deg``: ``+inf`` where no spring slides going in (α = 90°), ``-inf``
+        where the contact comes apart first (pull-off), as :func:`mdr_events.d_crit`.
+
+    Raises
+    ------
+    ValueError
+        A frictionless base (no tangential stiffness), another law or indenter, an angle whose onset lies beyond
+        the tables (``a/h > 64``) without ``past_tables``.
+    """
+    contact, depth = _checked(contact, "d_crit", d_max)
+    vertical = alpha_deg >= 90.0
+    tangent = np.where(vertical, np.inf, np.tan(np.radians(np.where(vertical, 0.0, alpha_deg))))
+    pulling = scenario == "B" and branch == "pull-off"
+    motion = _motion(contact, scenario, branch, adhesion, depth)
+    result = _onset_depths(motion, tangent.ravel(), "d_crit", past_tables).reshape(alpha_deg.shape)
+    return np.where(vertical, -math.inf if pulling else math.inf, result)
+
+
+def critical_angle_on_layer(contact: Contact, scenario: str, adhesion: bool, final_depth: float | None,
+                            d_max: float | None) -> float:
+    r"""The critical path angle in degrees on the contact's layer: :func:`mdr_events.critical_angle` of a contact on
+    a layer, its choices checked.
+
+    .. math:: \tan\alpha_c = \max_\text{motion} r(a): \quad
+              \text{A: } \frac{d_\mathrm{max}\,K_t(a)}{\pi a^2\tau_0} \text{ at } d_\mathrm{max}
+              \text{ (if } r \text{ rises)}, \qquad \text{B: at the jump-off on } \Delta\gamma_1
+
+    Parameters
+    ----------
+    contact : Contact
+        As :func:`onset_depths`.
+    scenario : {"A", "B", "B+"}
+        As :func:`mdr_events.critical_angle`.
+    adhesion : bool
+        ``True``: Heß's rule with ``Δγ0`` in and ``Δγ1`` out; ``False``: without adhesion.
+    final_depth : float or None
+        Scenario B+ only: the depth reached (``None``: ``2 d_max``).
+    d_max : float or None
+        The motion's depth (m; ``None``: the paper's 0.3 mm).
+
+    Returns
+    -------
+    float
+        The critical angle in degrees (90 where slip always comes first: scenario B without adhesion).
+
+    Raises
+    ------
+    ValueError
+        As :func:`onset_depths`; ``final_depth`` not above ``d_max``.
+    """
+    contact, depth = _checked(contact, "critical_angle", d_max)
+    if scenario == "B":
+        if not adhesion or contact.adhesion.dgamma1 == 0.0:
+            return 90.0
+        motion = _motion(contact, "B", "pull-off", True, depth)
+        return float(np.degrees(np.arctan(motion.ratio.max())))
+    end = depth
+    if scenario == "B+":
+        end = 2.0 * depth if final_depth is None else check_real(
+            "final_depth", final_depth, f"a finite depth > d_max = {depth!r} m", lambda value: value > depth)
+    motion = _motion(contact, "A" if scenario == "A" else "B", "indentation", adhesion, depth)
+    dgamma = contact.adhesion.dgamma0 if adhesion else 0.0
+    radius = float(_stable_radius(contact, dgamma, np.array([end]))[0])
+    last = float(motion.ratio_of(np.array([math.log(radius)]))[0])
+    before = motion.ratio[motion.logs < math.log(radius)]
+    return float(np.degrees(np.arctan(max(last, float(before.max(initial=last))))))
+
+
+def thin_layer_onset_depth(alpha, contact: Contact):
+    r"""Scenario A's onset on a thin bonded layer: ``d = τ0 h tan α / G`` (the limit ``h → 0`` of
+    :func:`onset_depths`, for any indenter and adhesion; module docstring).
+
+    Parameters
+    ----------
+    alpha : float or array_like
+        Path angles in degrees, in ``[0, 90]``.
+    contact : Contact
+        Its shear modulus ``G = E/(2(1 + ν))``, ``τ0`` and the layer's thickness ``h`` (finite).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The depth in m (``inf`` at 90°).
+
+    Raises
+    ------
+    ValueError
+        A half-space (no thin limit), another law.
+    """
+    from mdr_events.theory.layer_tangential_symbolic import derive_tangential_model
+
+    if not isinstance(contact, Contact) or contact.layer.is_half_space:
+        raise ValueError(f"contact={shown(contact)} is not allowed; allowed: a Contact on a layer of finite "
+                         "thickness (Contact.layer)")
+    _checked(contact, "thin_layer_onset_depth", None)
+    alpha_deg = validate_alpha(alpha)
+    elastomer = contact.elastomer
+    shear_modulus = elastomer.E / (2.0 * (1.0 + elastomer.nu))
+    relation = derive_tangential_model()["layer_thin_onset_depth_A"].numeric
+    with np.errstate(over="ignore"):
+        depth = relation(np.tan(np.radians(alpha_deg)), contact.friction.tau0, shear_modulus, contact.layer.thickness)
+    depth = np.where(alpha_deg >= 90.0, math.inf, depth)
+    return float(depth) if np.ndim(alpha) == 0 else depth
