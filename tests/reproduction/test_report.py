@@ -266,7 +266,8 @@ def test_compute_sends_one_progress_message_per_step(computed):
                 "LAMMPS hertz/material", "LAMMPS jkr", "LAMMPS dmt", "rate-dependent adhesion: pull-off at 7 speeds",
                 "rate-dependent adhesion: the critical angle of A", "rate-dependent adhesion: A's phase diagram",
                 "rate-dependent adhesion: A at 20°", "layers of finite thickness: pull-off against h",
-                "layers of finite thickness: ContactMechanics' recorded forces"]
+                "layers of finite thickness: ContactMechanics' recorded forces",
+                "layers of finite thickness: the critical angles against h"]
     tail = messages[-len(expected):]
     assert all(message.startswith(start) for message, start in zip(tail, expected)), tail
 
