@@ -31,7 +31,7 @@ from mdr_events.validation import shown
 #: The method of simulate unless given: the paper's springs.
 DEFAULT_METHOD = "discrete"
 
-__all__ = ["simulate", "simulation_job", "SimulationJob", "model_job", "METHODS"]
+__all__ = ["simulate", "simulation_job", "SimulationJob", "model_job", "METHODS", "check_layer_taken"]
 
 
 class SimulationJob(NamedTuple):
@@ -74,8 +74,34 @@ def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any]) -
         alpha, method = None, alpha
     model = model_job(contact, motion, alpha, options)
     the_method = as_method(DEFAULT_METHOD if method is None else method, options)
-    check_half_space(model.contact, f"simulate(method={the_method.name!r})")
+    check_layer_taken(model.contact, the_method)
     return SimulationJob(model, the_method)
+
+
+def check_layer_taken(contact: Contact, method: Method) -> Contact:
+    """``contact`` if ``method`` runs its body: any with the discrete method, the half-space alone with the continuum
+    (:func:`~mdr_events.contact.model.check_half_space`, whose one line names the discrete method).
+
+    Parameters
+    ----------
+    contact : Contact
+        The physical model.
+    method : Discrete or Continuum
+        The method.
+
+    Returns
+    -------
+    Contact
+        ``contact`` itself.
+
+    Raises
+    ------
+    ValueError
+        A layer of finite thickness with a method that does not take it.
+    """
+    if not method.takes_layers:
+        check_half_space(contact, f"simulate(method={method.name!r})")
+    return contact
 
 
 def simulate(

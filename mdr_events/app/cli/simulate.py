@@ -37,6 +37,7 @@ def fill(sim: argparse.ArgumentParser) -> None:
     sim.add_argument("--out", required=True, help="output directory")
     _options.profile_options(sim)
     _options.friction_options(sim)
+    _options.layer_options(sim)
     _options.limit_options(sim)
     _options.parameter_options(sim)
     sim.set_defaults(run=run)
@@ -46,11 +47,17 @@ def job(args: argparse.Namespace) -> SimulateJob:
     """The simulation the options ask for."""
     from mdr_events.app import inputs
     from mdr_events.app.jobs import SimulateJob
+    from mdr_events.models.simulate import check_layer_taken
 
     params, provenance = _options.parameters(args)
     contact = _options.contact(args, params)
     options = {name: getattr(args, name) for name in DISCRETE_OPTIONS if getattr(args, name) is not None}
-    return SimulateJob(contact, inputs.scenario(args.scenario, args.alpha, params), inputs.method(args.method, options),
+    method = inputs.method(args.method, options)
+    try:
+        check_layer_taken(contact, method)
+    except ValueError as error:
+        raise _options.UsageError(f"--h {args.h:g} with --method {args.method}: {error}") from None
+    return SimulateJob(contact, inputs.scenario(args.scenario, args.alpha, params), method,
                        _options.limits(args), provenance,
                        f"simulation_{args.scenario.replace('+', 'plus')}_{args.method}")
 
