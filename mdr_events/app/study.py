@@ -303,7 +303,7 @@ def _simulation(tables: _Tables) -> SimulateJob | None:
         motion = inputs.paths(tables.path, tables.params) if tables.path is not None else \
             inputs.scenario(name, alpha, tables.params)
         the_method = inputs.method(method, settings)
-        check_layer_taken(tables.contact, the_method)
+        check_layer_taken(tables.contact, motion, the_method)
         return SimulateJob(tables.contact, motion, the_method, tables.limits, tables.provenance,
                            f"{tables.name}_simulation")
     except (ValueError, TypeError) as error:

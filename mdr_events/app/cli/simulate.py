@@ -52,13 +52,12 @@ def job(args: argparse.Namespace) -> SimulateJob:
     params, provenance = _options.parameters(args)
     contact = _options.contact(args, params)
     options = {name: getattr(args, name) for name in DISCRETE_OPTIONS if getattr(args, name) is not None}
-    method = inputs.method(args.method, options)
+    method, motion = inputs.method(args.method, options), inputs.scenario(args.scenario, args.alpha, params)
     try:
-        check_layer_taken(contact, method)
-    except ValueError as error:
-        raise _options.UsageError(f"--h {args.h:g} with --method {args.method}: {error}") from None
-    return SimulateJob(contact, inputs.scenario(args.scenario, args.alpha, params), method,
-                       _options.limits(args), provenance,
+        check_layer_taken(contact, motion, method)
+    except (ValueError, TypeError) as error:
+        raise _options.UsageError(f"--h {args.h:g}: {error}") from None
+    return SimulateJob(contact, motion, method, _options.limits(args), provenance,
                        f"simulation_{args.scenario.replace('+', 'plus')}_{args.method}")
 
 
