@@ -40,6 +40,11 @@ clip, sum), ``F_x`` differs by round-off only (about 1e-14 of its largest
 magnitude); the springs in contact (``a``, ``F_N``) are the same, and so are
 the springs at a cap unless round-off decides a tie of ``|u|`` with ``ū``.
 
+On a layer of finite thickness (:mod:`~mdr_events.models.spring_media`) the springs differ: their normal
+stiffness ``k(x_j) Δx`` enters ``F_N`` through prefix sums of ``k`` and ``k g``, their tangential stiffness
+``k_t(x_j) Δx`` through integer weights the groups carry (``Σ w_j u_j = W_m x − Σ w_j Y_j``, exact as well), and
+the threshold and cap of each are the layer's; the stepping is the same.
+
 A run starts at the path's first entry into the elastomer
 (:meth:`~mdr_events.models.paths.Path.entry_times`) and may go through any
 number of contact cycles. When a contact comes apart (the pull-off jump), the
@@ -54,7 +59,8 @@ from __future__ import annotations
 
 import math
 from array import array
-from typing import Callable, NamedTuple
+import sys
+from typing import Callable, NamedTuple, Sequence
 
 import numpy as np
 
@@ -243,7 +249,8 @@ class _Grid:
 
     def __init__(self, attach: _Threshold, detach: _Threshold, first_touch: float, caps: np.ndarray, bits: int | None,
                  g: np.ndarray | None = None, coulomb: float | np.ndarray = 0.0,
-                 sum_shifts: Callable[[np.ndarray], float] = np.sum):
+                 sum_shifts: Callable[[np.ndarray], float] = np.sum, weight_prefix: Sequence[int] = range(sys.maxsize),
+                 weight_bits: int = 0):
         self.attach, self.detach = attach, detach
         #: Coulomb's part of the caps, ``κ_j max(d − g(x_j), 0)`` with ``κ_j = μ k(x_j)/k_t(x_j)`` (``μ E*/G*`` on the
         #: half-space; 0: the caps are ``caps``), one per spring
@@ -251,6 +258,9 @@ class _Grid:
         self.coulomb = np.broadcast_to(np.asarray(coulomb, dtype=float), np.shape(caps[1:]))
         self.has_coulomb = bool(np.any(self.coulomb > 0.0))
         self.sum_shifts = sum_shifts
+        #: the groups' integer weights (:class:`~mdr_events.models.spring_groups.SpringGroups`: every spring weighs 1
+        #: on the half-space; ``k_t(x_j)/G*`` in units of ``2**-weight_bits`` on a layer), summed below each index
+        self.weight_prefix, self.weight_bits = weight_prefix, weight_bits
         self.first_touch = float(first_touch)
         self.attach_threshold = attach.threshold.tolist()
         self.detach_threshold = detach.threshold.tolist()
@@ -263,6 +273,10 @@ class _Grid:
     def to_float(self, value: int) -> float:
         """An integer in units of ``2**-bits`` m as the nearest float (m)."""
         return unscaled(value, self.bits)
+
+    def sum_to_float(self, value: int) -> float:
+        """A weighted sum of shifts in units of ``2**-(bits + weight_bits)`` m as the nearest float (m)."""
+        return unscaled(value, self.bits + self.weight_bits)
 
 
 #: Samples per block of a case: the per-sample Python values live for one block only.
@@ -319,15 +333,16 @@ def _run_case(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last:
               edge: np.ndarray | None = None) -> int:
     """Step one case from sample 0 to ``last``, or to its pull-off if its path does not enter again.
 
-    Writes, per sample, the springs in contact per side to ``counts``, ``Σ u`` over them (m) to
-    ``sums`` and the springs at a cap (every spring in contact where ``ū = 0``) to ``sliding``;
+    Writes, per sample, the springs in contact per side to ``counts``, ``Σ w_j u_j`` over them (m; the weights
+    ``w_j = k_t(x_j)/G*`` of ``grid.weight_prefix``, 1 on the half-space) to ``sums`` and the springs at a cap (every spring in contact where ``ū = 0``) to ``sliding``;
     returns the last sample. ``springs`` ends holding the final state (for inspection). ``edge``: the springs in
     contact per sample, counted before (:func:`threshold_counts` where not given; a rate-dependent law's
     :func:`~mdr_events.models.rate_springs.rate_edge_counts`).
     """
-    springs = SpringGroups() if springs is None else springs
+    springs = SpringGroups(grid.weight_prefix) if springs is None else springs
     edge = threshold_counts(grid, d, last) if edge is None else edge
-    caps, caps_scaled, bits, to_float = grid.caps, grid.caps_scaled, grid.bits, grid.to_float
+    caps, caps_scaled, bits, to_float = grid.caps, grid.caps_scaled, grid.bits, grid.sum_to_float
+    totals = grid.weight_prefix
     m, total, at_caps = _first_sample(grid, x, d, springs, counts, sums, sliding, edge)
     x_before = float(x[0])
     k = 1
@@ -348,7 +363,7 @@ def _run_case(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last:
                 if m_new:
                     anchor, cap = positions[i], caps_scaled[m_new]
                     at_caps = springs.clip(anchor - cap, anchor + cap)
-                    total = to_float(m_new * anchor - springs.anchor_sum)
+                    total = to_float(totals[m_new] * anchor - springs.anchor_sum)
                     if not caps[m_new] > 0.0:
                         at_caps = m_new  # ū = 0: every spring in contact slides
                 else:
@@ -479,8 +494,9 @@ def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
     weight_prefix = np.concatenate([[0.0], np.cumsum(weights)])
     attach, detach = spring_thresholds(adhesion, g, xi, springs)
     caps = springs.caps(n_springs, dx, friction)  # ū(m Δx) for m springs per side
-    bits = None if springs.weighted else scale_bits(x_path, caps)  # (the groups' integer scale: equal springs)
-    grid = _Grid(attach, detach, g[0], caps, bits, g, springs.coulomb_ratios(xi, friction), springs.shift_sum(xi))
+    bits = scale_bits(x_path, caps) if springs.grouped else None  # (the groups' integer scale)
+    grid = _Grid(attach, detach, g[0], caps, bits, g, springs.coulomb_ratios(xi, friction), springs.shift_sum(xi),
+                 *(springs.weight_prefix(xi) if springs.grouped else ()))
     return _Setup(time, x_path, d_path, last_sample, last_entries, grid, g_prefix, xi, weight_prefix)
 
 
@@ -560,8 +576,8 @@ def run_discrete(
         The elastomer's body (default the half-space). On a layer of finite thickness the springs are those of the
         generalized MDR (:mod:`~mdr_events.models.spring_media`): ``k(x_j) Δx`` and ``k_t(x_j) Δx`` over the layer's
         ``g(x)``, Heß's rule with ``Δl = sqrt(4π a Δγ/K'(a))``, the caps ``π a² τ0/K_t(a)`` and ``μ (k/k_t)(d − g)``,
-        ``F_N = 2Σ k(x_j) Δx (d − g(x_j))``, ``F_x = 2Σ k_t(x_j) Δx u_j``; each spring is stepped on its own
-        (:func:`_run_case_per_spring`). It takes the paraboloid or a power law and the paper's adhesion law; on a
+        ``F_N = 2Σ k(x_j) Δx (d − g(x_j))``, ``F_x = 2Σ k_t(x_j) Δx u_j`` (the groups' sums weighted by
+        integer ``k_t(x_j)/G*``). It takes the paraboloid or a power law and the paper's adhesion law; on a
         frictionless base only paths without tangential motion.
 
     Returns
@@ -582,7 +598,7 @@ def run_discrete(
         indenters.check_reach(params, path.max_depth, indenter, f"path {index}")
     check_discrete_size(params, paths, dx, dt, limits, indenter, layer)
     run = _prepare(params, paths, dx, dt, None, friction, adhesion, springs)
-    step_case = _run_case_per_spring if run.grid.has_coulomb or springs.weighted else _run_case
+    step_case = _run_case if springs.grouped and not run.grid.has_coulomb else _run_case_per_spring
     time, x_path, d_path, last_sample = run.time, run.x, run.d, run.last_sample.copy()
     n_cases, n_time = len(paths), time.size
     out_m = np.zeros((n_cases, n_time), dtype=np.int64)

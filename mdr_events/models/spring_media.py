@@ -31,8 +31,9 @@ on any of them. The half-space's are the paper's own functions, unchanged: its r
 from __future__ import annotations
 
 import functools
-import math
-from collections.abc import Callable
+import itertools
+import sys
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -73,9 +74,9 @@ class HalfSpaceSprings:
     indenter: SimulatedProfile = None
     given_profile: Callable[[np.ndarray], np.ndarray] | None = None
 
-    #: Whether the springs differ from one another (then each is stepped on its own, :func:`~mdr_events.models.
-    #: discrete._run_case_per_spring`).
-    weighted = False
+    #: Whether the springs are stepped in groups that share a shift (:class:`~mdr_events.models.spring_groups.
+    #: SpringGroups`), else each on its own (:func:`~mdr_events.models.discrete._run_case_per_spring`).
+    grouped = True
 
     def check(self, adhesion: AdhesionLaw, paths: list[Path]) -> None:
         """Nothing to refuse: the half-space takes every law and path the discrete model takes.
@@ -214,6 +215,21 @@ class HalfSpaceSprings:
         """
         return np.sum
 
+    def weight_prefix(self, positions: np.ndarray) -> tuple[Sequence[int], int]:
+        """The springs' tangential weights as integers for the grouped sums: every spring weighs 1.
+
+        Parameters
+        ----------
+        positions : numpy.ndarray
+            The springs' centres (m).
+
+        Returns
+        -------
+        tuple of (sequence of int, int)
+            The sums of the weights below each index (``j``) and their scale's bits (0).
+        """
+        return range(sys.maxsize), 0
+
     def to_attrs(self) -> dict[str, Any]:
         """The half-space stamps no attribute (its results are those written before layers existed).
 
@@ -243,7 +259,7 @@ class LayerSprings:
     indenter: Paraboloid | PowerLaw
     layer: Layer
 
-    weighted = True
+    grouped = True
 
     def check(self, adhesion: AdhesionLaw, paths: list[Path]) -> None:
         """Refuse an adhesion law other than the paper's (Heß's rule on the layer is the rate-independent one).
@@ -436,6 +452,26 @@ class LayerSprings:
 
         return weighted
 
+    def weight_prefix(self, positions: np.ndarray) -> tuple[Sequence[int], int]:
+        """The springs' tangential weights ``k_t(x_j)/G*`` as integers in units of ``2**-bits`` for the grouped sums
+        (:class:`~mdr_events.models.spring_groups.SpringGroups`): each rounded to 53 bits of the largest, so that the
+        sums of the groups are exact and a weight is within ``2**-53`` of the largest of its value.
+
+        Parameters
+        ----------
+        positions : numpy.ndarray
+            The springs' centres (m).
+
+        Returns
+        -------
+        tuple of (list of int, int)
+            The sums of the integer weights below each index (``len(positions) + 1`` of them) and ``bits``.
+        """
+        weights = self.tangential_weights(positions)
+        bits = 53 - int(np.frexp(np.max(weights))[1]) if weights.size else 0
+        integers = np.rint(np.ldexp(weights, bits)).astype(np.int64).tolist()
+        return list(itertools.accumulate(integers, initial=0)), bits
+
     def to_attrs(self) -> dict[str, Any]:
         """The layer's attributes (``param_layer_thickness``, ``param_layer_base``; :meth:`Layer.to_attrs
         <mdr_events.contact.layer.Layer.to_attrs>`).
@@ -498,7 +534,7 @@ class FrictionlessLayerSprings(LayerSprings):
         return np.zeros(np.shape(positions))
 
     def caps(self, springs: int, dx: float, friction: FrictionLaw) -> np.ndarray:
-        """No cap is ever reached (no spring is shifted): ``+inf``.
+        """No cap is ever reached (no spring is shifted): the largest double, a finite cap for the groups' integers.
 
         Parameters
         ----------
@@ -512,9 +548,9 @@ class FrictionlessLayerSprings(LayerSprings):
         Returns
         -------
         numpy.ndarray
-            ``+inf``, ``springs + 1`` of them.
+            ``sys.float_info.max``, ``springs + 1`` of them.
         """
-        return np.full(springs + 1, math.inf)
+        return np.full(springs + 1, sys.float_info.max)
 
     def coulomb_ratios(self, positions: np.ndarray, friction: FrictionLaw) -> np.ndarray:
         """No Coulomb cap: 0 each.

@@ -342,3 +342,54 @@ def test_properties_of_a_run_on_any_layer(case):
     sawtooth = float(punch_stiffness_slope(a_F, E_star, nu, layer)
                      * hess_elongation(a_F, contact.adhesion.dgamma1, E_star, nu, layer))
     assert abs(float(run["normal_force"].min()) - pull_off) <= PULL_OFF_MARGIN * sawtooth * dx / 2
+
+
+#: The grouped kernel's F_x against the per-spring stepping's, as a share of the largest |F_x|: the weights rounded to
+#: 53 bits of the largest (2**-53) and the per-spring float sums' rounding (tests/models/test_discrete.py's SUM_RTOL).
+SUM_RTOL = 1e-12
+
+
+def reciprocating(amplitude, strokes, depth=D_MAX):
+    """In, then back and forth by ±amplitude at depths varied stroke by stroke, then out: caps reached, released,
+    springs detaching and attaching again."""
+    points = [(0.0, 0.0), (0.0, depth)]
+    for i in range(strokes):
+        points.append(((1.0 if i % 2 == 0 else -1.0) * amplitude * (0.7 if i % 3 == 0 else 1.0),
+                       depth * (0.35 if i % 4 == 1 else 1.0 - 0.1 * (i % 3))))
+    points.append((points[-1][0], -0.2 * depth))
+    return Path(points, PARAMS.v)
+
+
+@pytest.mark.parametrize("steps", [60, 2500], ids=["steps-beyond-2ū", "fine-steps"])
+@pytest.mark.parametrize("h", THICKNESSES.values(), ids=THICKNESSES.keys())
+def test_the_grouped_kernel_equals_the_springs_stepped_one_by_one_on_a_layer(h, steps):
+    """The groups with integer weights k_t(x_j)/G* against every spring's shift moved, clipped and weighed at every
+    step: the same springs in contact and at a cap, Σ w u to round-off; also with steps beyond a whole cap."""
+    from mdr_events.contact.adhesion import law_of
+    from mdr_events.models import discrete
+    from mdr_events.models.spring_media import springs_of
+
+    contact = layered(h)
+    a = loading_radius(contact, D_MAX)
+    cap = float(sliding_cap(a, PARAMS.tau0, PARAMS.G_star, PARAMS.nu, contact.layer))
+    paths = [Path.scenario_A(20.0, PARAMS), Path.scenario_B(30.0, PARAMS), reciprocating(1.5 * cap, 12)]
+    dt = max(path.duration - path.first_contact_time() for path in paths) / steps
+    springs = springs_of(PARAMS, None, None, contact.layer)
+    run = discrete._prepare(PARAMS, paths, a / 40, dt, None, contact.friction, law_of(PARAMS), springs)
+    n = run.time.size
+    wholly = False
+    for case in range(len(paths)):
+        outputs = {}
+        for kernel in (discrete._run_case, discrete._run_case_per_spring):
+            counts, sums, sliding = np.zeros(n, np.int64), np.zeros(n), np.zeros(n, np.int64)
+            last = kernel(run.grid, run.x[:, case], run.d[:, case], run.time, int(run.last_sample[case]),
+                          float(run.last_entries[case]), counts, sums, sliding)
+            outputs[kernel.__name__] = last, counts[:last + 1], sums[:last + 1], sliding[:last + 1]
+        grouped, reference = outputs["_run_case"], outputs["_run_case_per_spring"]
+        assert grouped[0] == reference[0]
+        np.testing.assert_array_equal(grouped[1], reference[1])
+        np.testing.assert_array_equal(grouped[3], reference[3])
+        scale = np.abs(reference[2]).max()
+        np.testing.assert_allclose(grouped[2], reference[2], rtol=0.0, atol=SUM_RTOL * scale)
+        wholly |= bool(np.any((reference[3] == reference[1]) & (reference[1] > 0)))
+    assert wholly  # (the caps were reached by every spring somewhere)
