@@ -11,6 +11,7 @@ input          parser                                      value
 parameters     :func:`parameters`                          :class:`~mdr_events.Parameters` and provenance
 indenter       :func:`indenter`                            ``None`` (the paraboloid of ``R``) or an indenter
 friction       :func:`friction`                            :class:`~mdr_events.FrictionLaw`
+layer          :func:`layer`                               :class:`~mdr_events.Layer`
 limits         :func:`limits`                              :class:`~mdr_events.Limits`
 a path         :func:`path`                                :class:`~mdr_events.Path`
 the contact    :func:`contact`                             :class:`~mdr_events.Contact`
@@ -21,10 +22,12 @@ the method     :func:`method`                              :class:`~mdr_events.D
 
 from __future__ import annotations
 
+import dataclasses
 from typing import Any, Iterable, Mapping, Sequence
 
 from mdr_events.validation import as_float
 from mdr_events.contact import Contact
+from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import FlatPunch, PowerLaw
 from mdr_events.io.candidates import read_profile_table
@@ -35,7 +38,7 @@ from mdr_events.models.motion import FIGURE_ANGLES, Paths, Scenario
 from mdr_events.models.paths import Path
 from mdr_events.parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
 
-__all__ = ["parameters", "indenter", "friction", "limits", "path", "contact", "scenario", "paths", "method",
+__all__ = ["parameters", "indenter", "friction", "layer", "limits", "path", "contact", "scenario", "paths", "method",
            "DEFAULT_PRESET"]
 
 #: The preset of the paper both front ends start from when none is named.
@@ -111,6 +114,18 @@ def friction(law: str | None = None, mu: float | None = None) -> FrictionLaw:
     return FrictionLaw(law or "tau0", mu=mu)
 
 
+def layer(h: float | None = None, base: str | None = None) -> Layer:
+    """The elastomer's layer of thickness ``h`` (m; default ``inf``: the half-space) on ``base`` (``"bonded"``, the
+    default, or ``"frictionless"``).
+
+    Raises
+    ------
+    ValueError, TypeError
+        The layer's own message (a thickness not > 0, a base not among the two).
+    """
+    return Layer(float("inf") if h is None else h, "bonded" if base is None else base)
+
+
 def limits(items: Iterable[str]) -> Limits:
     """The resource limits of ``NAME=VALUE`` items (``--limit``, a ``[limits]`` table) over the defaults.
 
@@ -142,10 +157,11 @@ def path(waypoints: Sequence[Sequence[float]], speed: float | None, params: Para
     return Path(waypoints, params.v if speed is None else speed)
 
 
-def contact(params: Parameters, profile: SimulatedProfile = None, law: FrictionLaw | None = None) -> Contact:
-    """The :class:`~mdr_events.Contact` of ``params`` with ``profile`` (``None``: its paraboloid) and the friction
-    law ``law`` (default the paper's, ``τ0`` from ``params``)."""
-    return Contact.from_parameters(params, profile, law)
+def contact(params: Parameters, profile: SimulatedProfile = None, law: FrictionLaw | None = None,
+            body: Layer = HALF_SPACE) -> Contact:
+    """The :class:`~mdr_events.Contact` of ``params`` with ``profile`` (``None``: its paraboloid), the friction
+    law ``law`` (default the paper's, ``τ0`` from ``params``) and the layer ``body`` (default the half-space)."""
+    return dataclasses.replace(Contact.from_parameters(params, profile, law), layer=body)
 
 
 def scenario(name: str, alpha: float | Sequence[float] | None, params: Parameters) -> Scenario:

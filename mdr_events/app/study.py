@@ -66,6 +66,10 @@ A study names its parameters, what to compute and where to write it::
     mu = 0.3                     # (mu required, tau0 unused) or "tau0+coulomb" (both); mu only with
                                  # a law with Coulomb's part, as --friction LAW --mu MU
 
+    [layer]                      # optional: the elastomer as a layer on a rigid base (without it: the
+    h = 5e-3                     # half-space); its thickness in m, as --h; the discrete method runs it
+    base = "bonded"              # or "frictionless" (paths without tangential motion), as --layer-base
+
     [output]                     # required
     directory = "out"            # relative to the study file; checked before anything is computed
     name = "my_study"            # file stem (default: the study file's stem); a plain name: no / or \\
@@ -119,12 +123,14 @@ from mdr_events.app.study_format import (MAX_TOML_BYTES, REQUIRED_TABLES, SCHEMA
                                          check_tables, measured_case, one_table, read_toml)
 from mdr_events.contact import Contact
 from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.io.files import check_output_stem, prepare_output_directory
 from mdr_events.limits import Limits
 from mdr_events.models.continuum import Tolerances
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.motion import Motion, Scenario
 from mdr_events.models.paths import Path
+from mdr_events.models.simulate import check_layer_taken
 from mdr_events.parameters import Parameters
 from mdr_events.dem.mapping import LammpsModel
 from mdr_events.validation import as_float, check_real, shown
@@ -157,7 +163,7 @@ class Study:
     limits : Limits
         The ``[limits]`` table over the defaults.
     contact : Contact
-        The ``[parameters]``, ``[profile]`` and ``[friction]`` tables' contact.
+        The ``[parameters]``, ``[profile]``, ``[friction]`` and ``[layer]`` tables' contact.
     table_names : tuple of str
         The tables of the file, in its order (for messages).
     simulation, phase_diagrams, validation, fit, sweep
@@ -254,11 +260,23 @@ def _friction(document: dict[str, Any], where: str) -> FrictionLaw:
         raise StudyError(f"{where}: [friction] {error}") from None
 
 
+def _layer(document: dict[str, Any], where: str) -> Layer:
+    """The ``[layer]`` table's layer (``h``, and ``base``); the half-space without it."""
+    if "layer" not in document:
+        return HALF_SPACE
+    table = document["layer"]
+    try:
+        return inputs.layer(table["h"], table.get("base"))
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{where}: [layer] {error}") from None
+
+
 def _tables(document: dict[str, Any], source: FilePath) -> _Tables:
     """The values every table shares, each named where it is wrong."""
     where = os.fspath(source)
     params, provenance = _parameters(document.get("parameters"), where)
     limits, profile, friction = _limits(document, where), _profile(document, source, where), _friction(document, where)
+    layer = _layer(document, where)
     path = None
     if "path" in document:
         try:
@@ -266,7 +284,7 @@ def _tables(document: dict[str, Any], source: FilePath) -> _Tables:
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where}: [path] {error}") from None
     return _Tables(source, where, document, document["output"].get("name", source.stem), params, provenance, limits,
-                   profile, friction, inputs.contact(params, profile, friction), path)
+                   profile, friction, inputs.contact(params, profile, friction, layer), path)
 
 
 def _simulation(tables: _Tables) -> SimulateJob | None:
@@ -284,7 +302,9 @@ def _simulation(tables: _Tables) -> SimulateJob | None:
             settings["tolerances"] = Tolerances(**{key: as_float(settings.pop(key)) for key in tolerance_names})
         motion = inputs.paths(tables.path, tables.params) if tables.path is not None else \
             inputs.scenario(name, alpha, tables.params)
-        return SimulateJob(tables.contact, motion, inputs.method(method, settings), tables.limits, tables.provenance,
+        the_method = inputs.method(method, settings)
+        check_layer_taken(tables.contact, motion, the_method)
+        return SimulateJob(tables.contact, motion, the_method, tables.limits, tables.provenance,
                            f"{tables.name}_simulation")
     except (ValueError, TypeError) as error:
         raise StudyError(f"{tables.where}: [simulation] {error}") from None

@@ -83,12 +83,14 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
     "profile": {"c": ("number", False), "n": ("number", False), "radius": ("number", False),
                 "table": ("string", False)},
     "friction": {"law": ("string", True), "mu": ("number", False)},
+    "layer": {"h": ("number", True), "base": ("string", False)},
     "output": {"directory": ("string", True), "name": ("string", False)},
 }
 REQUIRED_TABLES = ("output",)
 #: What the keys of the tables that choose among kinds mean (the reference page shows them beside the kinds):
 #: ``[profile]`` takes one of three indenters (``c`` and ``n``, ``radius`` or ``table``; without it the paraboloid
-#: of ``[parameters] R``), ``[friction]`` one of the laws of :data:`~mdr_events.contact.friction.FRICTION_LAWS`.
+#: of ``[parameters] R``), ``[friction]`` one of the laws of :data:`~mdr_events.contact.friction.FRICTION_LAWS`, ``[layer]``
+#: the elastomer as a layer on a rigid base.
 KEY_NOTES: dict[tuple[str, str], str] = {
     ("profile", "c"): "with n: the power law f = c r^n (c in m^(1-n))",
     ("profile", "n"): "with c: the power law's exponent, >= 1 (1: the cone, 2: a paraboloid)",
@@ -99,6 +101,10 @@ KEY_NOTES: dict[tuple[str, str], str] = {
                          "or 'tau0+coulomb' (both)",
     ("friction", "mu"): "the coefficient of friction, >= 0: required by 'coulomb' and 'tau0+coulomb', not allowed "
                         "with 'tau0'",
+    ("layer", "h"): "the elastomer's thickness in m: a layer on a rigid base (inf: the half-space, as without the "
+                    "table); run by the discrete method, as --h",
+    ("layer", "base"): "'bonded' (the default) or 'frictionless' (paths without tangential motion only), as "
+                       "--layer-base",
 }
 
 

@@ -75,7 +75,8 @@ class Contact:
     layer : Layer, default HALF_SPACE
         The elastomer's thickness ``h`` and base (:class:`~mdr_events.contact.layer.Layer`): the paper's half-space
         (``h = inf``) by default. A finite layer is taken by the normal problem of :mod:`mdr_events.theory.layer`
-        (:func:`~mdr_events.layer_normal_curve`); the simulators and the closed forms of the half-space refuse it
+        (:func:`~mdr_events.layer_normal_curve`) and by the discrete method of :func:`~mdr_events.simulate` (the
+        springs of the generalized MDR); the continuum and the closed forms of the half-space refuse it
         (:func:`check_half_space`).
 
     Raises
@@ -389,6 +390,6 @@ def check_half_space(contact: Contact, where: str) -> Contact:
     if contact.layer.is_half_space:
         return contact
     raise ValueError(f"Contact.layer={contact.layer!r} is not allowed in {where} yet; allowed: the half-space (h = "
-                     "inf, Layer()) — the normal problem on a layer: mdr_events.layer_normal_curve and "
-                     "mdr_events.layer_pull_off_curve (mdr_events.theory.layer); its slip onset: d_crit, "
-                     "critical_angle, phase_diagram")
+                     "inf, Layer()) — a layer runs in simulate(..., method='discrete'), its slip onset in d_crit, "
+                     "critical_angle and phase_diagram, and its normal problem in mdr_events.layer_normal_curve and "
+                     "mdr_events.layer_pull_off_curve (mdr_events.theory.layer)")

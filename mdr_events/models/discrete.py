@@ -40,6 +40,11 @@ clip, sum), ``F_x`` differs by round-off only (about 1e-14 of its largest
 magnitude); the springs in contact (``a``, ``F_N``) are the same, and so are
 the springs at a cap unless round-off decides a tie of ``|u|`` with ``ū``.
 
+On a layer of finite thickness (:mod:`~mdr_events.models.spring_media`) the springs differ: their normal
+stiffness ``k(x_j) Δx`` enters ``F_N`` through prefix sums of ``k`` and ``k g``, their tangential stiffness
+``k_t(x_j) Δx`` through integer weights the groups carry (``Σ w_j u_j = W_m x − Σ w_j Y_j``, exact as well), and
+the threshold and cap of each are the layer's; the stepping is the same.
+
 A run starts at the path's first entry into the elastomer
 (:meth:`~mdr_events.models.paths.Path.entry_times`) and may go through any
 number of contact cycles. When a contact comes apart (the pull-off jump), the
@@ -54,16 +59,15 @@ from __future__ import annotations
 
 import math
 from array import array
-from typing import Callable, NamedTuple
+import sys
+from typing import Callable, NamedTuple, Sequence
 
 import numpy as np
 
 from mdr_events.io.agreement import ROUND_OFF
-from mdr_events.theory import analytic
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.validation import check_real
 
-from mdr_events.theory import symbolic
 from mdr_events.parameters import Parameters
 from mdr_events.models.paths import Path
 from mdr_events.models.spring_groups import SpringGroups, scale_bits, scaled, unscaled
@@ -73,7 +77,8 @@ from mdr_events.contact.indenters import PowerLaw
 from mdr_events.contact.adhesion import Adhesion, AdhesionLaw, RateDependentAdhesion, kernel_of, law_of
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.models.rate_springs import rate_edge_counts
-from mdr_events.theory import mindlin
+from mdr_events.models.spring_media import HalfSpaceSprings, Springs, springs_of
+from mdr_events.contact.layer import HALF_SPACE, Layer
 
 __all__ = ["run_discrete", "paraboloid_profile", "MIN_SPRINGS_IN_CONTACT", "Thresholds", "THRESHOLD_RULES",
            "EDGE_RULES", "spring_thresholds", "check_thresholds_known", "threshold_counts"]
@@ -98,8 +103,7 @@ class _Threshold:
     falls to its minimum and then rises.
     """
 
-    def __init__(self, g: np.ndarray, positions: np.ndarray, params: Parameters, work_of_adhesion: float):
-        elongation = symbolic.relation("hess_max_elongation").numeric(positions, work_of_adhesion, params.E_star)
+    def __init__(self, g: np.ndarray, elongation: np.ndarray):
         threshold = g - elongation
         self.threshold = np.append(threshold, np.inf)  # a spring beyond the array never qualifies
         self.lowest = int(np.argmin(threshold))
@@ -135,17 +139,20 @@ class Thresholds(NamedTuple):
     detach: _Threshold
 
 
-def hysteresis_thresholds(adhesion: Adhesion, g: np.ndarray, positions: np.ndarray, params: Parameters) -> Thresholds:
+def hysteresis_thresholds(adhesion: Adhesion, g: np.ndarray, positions: np.ndarray, springs: Springs) -> Thresholds:
     r"""The paper's rate-independent law: Heß's limit (8) with ``Δγ0`` to attach and ``Δγ1`` to let go.
 
     .. math:: \Delta l_\mathrm{max}(x) = \sqrt{\frac{2 \pi |x| \Delta\gamma}{E^*}} \qquad (8)
+
+    on the half-space; on a layer ``sqrt(4π |x| Δγ / K'(|x|))`` (``springs.elongation``,
+    :mod:`mdr_events.models.spring_media`).
     """
-    return Thresholds(_Threshold(g, positions, params, adhesion.dgamma0),
-                      _Threshold(g, positions, params, adhesion.dgamma1))
+    return Thresholds(_Threshold(g, springs.elongation(positions, adhesion.dgamma0)),
+                      _Threshold(g, springs.elongation(positions, adhesion.dgamma1)))
 
 
 def rate_thresholds(adhesion: RateDependentAdhesion, g: np.ndarray, positions: np.ndarray,
-                    params: Parameters) -> Thresholds:
+                    springs: Springs) -> Thresholds:
     """A rate-dependent law: the thresholds of its works at rest, which size the springs (an advancing edge stays
     inside the ``Δγ0`` branch's radius) and give the first touch; its edge moves by
     :func:`~mdr_events.models.rate_springs.rate_edge_counts`.
@@ -158,15 +165,15 @@ def rate_thresholds(adhesion: RateDependentAdhesion, g: np.ndarray, positions: n
         The profile at the springs (m).
     positions : numpy.ndarray
         The springs' centres (m).
-    params : Parameters
-        The material.
+    springs : HalfSpaceSprings
+        The springs' kind (their Heß elongation).
 
     Returns
     -------
     Thresholds
         Those of :func:`hysteresis_thresholds` with the works at rest.
     """
-    return hysteresis_thresholds(Adhesion(*adhesion.works_at_rest), g, positions, params)
+    return hysteresis_thresholds(Adhesion(*adhesion.works_at_rest), g, positions, springs)
 
 
 #: The springs' thresholds of each adhesion law, by its type.
@@ -199,29 +206,32 @@ def check_thresholds_known(adhesion: AdhesionLaw) -> None:
     kernel_of(adhesion, THRESHOLD_RULES, "discrete")
 
 
-def spring_thresholds(adhesion: AdhesionLaw, g: np.ndarray, positions: np.ndarray, params: Parameters) -> Thresholds:
-    """The thresholds of ``adhesion`` for springs at ``positions`` on the profile ``g`` of ``params``' material."""
-    return kernel_of(adhesion, THRESHOLD_RULES, "discrete")(adhesion, g, positions, params)
+def spring_thresholds(adhesion: AdhesionLaw, g: np.ndarray, positions: np.ndarray, springs: Springs) -> Thresholds:
+    """The thresholds of ``adhesion`` for springs at ``positions`` on the profile ``g`` of the springs' kind
+    (:mod:`~mdr_events.models.spring_media`: its Heß elongation)."""
+    return kernel_of(adhesion, THRESHOLD_RULES, "discrete")(adhesion, g, positions, springs)
 
 
-def _spring_count(params: Parameters, dx: float, max_depth: float, profile, adhesion: AdhesionLaw) -> int:
+def _spring_count(springs: Springs, dx: float, max_depth: float, adhesion: AdhesionLaw) -> int:
     """Springs per side needed to hold the largest contact of the path, with margin."""
     count = 64
     while True:
         positions = (np.arange(count) + 0.5) * dx
-        attach = spring_thresholds(adhesion, profile(positions), positions, params).attach
+        attach = spring_thresholds(adhesion, springs.profile(positions), positions, springs).attach
         needed = int(attach.count(np.array([max_depth]))[0])
         if needed < count - 1:
             return needed + 2
         count *= 2
 
 
-def check_spacing(params: Parameters, dx: float, depth: float | None = None, profile: SimulatedProfile = None) -> float:
+def check_spacing(params: Parameters, dx: float, depth: float | None = None, profile: SimulatedProfile = None,
+                  layer: Layer = HALF_SPACE) -> float:
     """``dx`` as a float; reject a spring spacing that puts fewer than 10 springs per side in contact at
-    the deepest point (``d_max``, or the given ``depth`` of a custom path) of ``profile`` (``None``: the paraboloid)."""
+    the deepest point (``d_max``, or the given ``depth`` of a custom path) of ``profile`` (``None``: the paraboloid)
+    on ``layer`` (default the half-space)."""
     dx = check_real("dx", dx, "a finite spring spacing > 0 (m)", lambda value: value > 0)
     depth = params.d_max if depth is None else depth
-    radius = float(indenters.branch_radius(depth, params, params.dgamma0, profile))
+    radius = springs_of(params, profile, None, layer).branch_radius(depth)
     if not radius / dx >= MIN_SPRINGS_IN_CONTACT:
         raise ValueError(
             f"dx={dx!r} m puts {int(radius // dx) if radius == radius else 0} springs per side in contact "
@@ -233,13 +243,24 @@ def check_spacing(params: Parameters, dx: float, depth: float | None = None, pro
 
 class _Grid:
     """What every case of a run shares: the springs' thresholds, the caps ``ū(m Δx)`` and the integer
-    scale of the positions (:class:`~mdr_events.models.spring_groups.SpringGroups`: units of ``2**-bits`` m)."""
+    scale of the positions (:class:`~mdr_events.models.spring_groups.SpringGroups`: units of ``2**-bits`` m; ``None``
+    where the springs are stepped one by one, :func:`_run_case_per_spring`), Coulomb's ratio per spring and how the
+    shifts add up (:mod:`~mdr_events.models.spring_media`: a plain sum on the half-space, weighted on a layer)."""
 
-    def __init__(self, attach: _Threshold, detach: _Threshold, first_touch: float, caps: np.ndarray, bits: int,
-                 g: np.ndarray | None = None, coulomb: float = 0.0):
+    def __init__(self, attach: _Threshold, detach: _Threshold, first_touch: float, caps: np.ndarray, bits: int | None,
+                 g: np.ndarray | None = None, coulomb: float | np.ndarray = 0.0,
+                 sum_shifts: Callable[[np.ndarray], float] = np.sum, weight_prefix: Sequence[int] = range(sys.maxsize),
+                 weight_bits: int = 0):
         self.attach, self.detach = attach, detach
-        #: Coulomb's part of the caps, ``κ max(d − g(x_j), 0)`` with ``κ = μ E*/G*`` (0: the caps are ``caps``)
-        self.g, self.coulomb = g, float(coulomb)
+        #: Coulomb's part of the caps, ``κ_j max(d − g(x_j), 0)`` with ``κ_j = μ k(x_j)/k_t(x_j)`` (``μ E*/G*`` on the
+        #: half-space; 0: the caps are ``caps``), one per spring
+        self.g = g
+        self.coulomb = np.broadcast_to(np.asarray(coulomb, dtype=float), np.shape(caps[1:]))
+        self.has_coulomb = bool(np.any(self.coulomb > 0.0))
+        self.sum_shifts = sum_shifts
+        #: the groups' integer weights (:class:`~mdr_events.models.spring_groups.SpringGroups`: every spring weighs 1
+        #: on the half-space; ``k_t(x_j)/G*`` in units of ``2**-weight_bits`` on a layer), summed below each index
+        self.weight_prefix, self.weight_bits = weight_prefix, weight_bits
         self.first_touch = float(first_touch)
         self.attach_threshold = attach.threshold.tolist()
         self.detach_threshold = detach.threshold.tolist()
@@ -247,11 +268,15 @@ class _Grid:
         self.caps = caps.tolist()
         self.n_springs = len(self.caps) - 1
         self.bits = bits
-        self.caps_scaled = scaled(caps, bits)
+        self.caps_scaled = None if bits is None else scaled(caps, bits)
 
     def to_float(self, value: int) -> float:
         """An integer in units of ``2**-bits`` m as the nearest float (m)."""
         return unscaled(value, self.bits)
+
+    def sum_to_float(self, value: int) -> float:
+        """A weighted sum of shifts in units of ``2**-(bits + weight_bits)`` m as the nearest float (m)."""
+        return unscaled(value, self.bits + self.weight_bits)
 
 
 #: Samples per block of a case: the per-sample Python values live for one block only.
@@ -308,15 +333,16 @@ def _run_case(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last:
               edge: np.ndarray | None = None) -> int:
     """Step one case from sample 0 to ``last``, or to its pull-off if its path does not enter again.
 
-    Writes, per sample, the springs in contact per side to ``counts``, ``Σ u`` over them (m) to
-    ``sums`` and the springs at a cap (every spring in contact where ``ū = 0``) to ``sliding``;
+    Writes, per sample, the springs in contact per side to ``counts``, ``Σ w_j u_j`` over them (m; the weights
+    ``w_j = k_t(x_j)/G*`` of ``grid.weight_prefix``, 1 on the half-space) to ``sums`` and the springs at a cap (every spring in contact where ``ū = 0``) to ``sliding``;
     returns the last sample. ``springs`` ends holding the final state (for inspection). ``edge``: the springs in
     contact per sample, counted before (:func:`threshold_counts` where not given; a rate-dependent law's
     :func:`~mdr_events.models.rate_springs.rate_edge_counts`).
     """
-    springs = SpringGroups() if springs is None else springs
+    springs = SpringGroups(grid.weight_prefix) if springs is None else springs
     edge = threshold_counts(grid, d, last) if edge is None else edge
-    caps, caps_scaled, bits, to_float = grid.caps, grid.caps_scaled, grid.bits, grid.to_float
+    caps, caps_scaled, bits, to_float = grid.caps, grid.caps_scaled, grid.bits, grid.sum_to_float
+    totals = grid.weight_prefix
     m, total, at_caps = _first_sample(grid, x, d, springs, counts, sums, sliding, edge)
     x_before = float(x[0])
     k = 1
@@ -337,7 +363,7 @@ def _run_case(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last:
                 if m_new:
                     anchor, cap = positions[i], caps_scaled[m_new]
                     at_caps = springs.clip(anchor - cap, anchor + cap)
-                    total = to_float(m_new * anchor - springs.anchor_sum)
+                    total = to_float(totals[m_new] * anchor - springs.anchor_sum)
                     if not caps[m_new] > 0.0:
                         at_caps = m_new  # ū = 0: every spring in contact slides
                 else:
@@ -386,8 +412,10 @@ def _run_case_per_spring(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.nda
 
     Same arguments and outputs; every spring's shift is a float moved by each step and clipped,
     and ``Σ u`` a plain sum: O(springs) numpy work per step, where :func:`_run_case` is O(1). It also
-    runs the friction laws with Coulomb's part (``grid.coulomb > 0``), whose caps differ from spring to
-    spring: ``ū_j = ū(m Δx) + κ max(d − g(x_j), 0)``; a spring whose cap is 0 slides.
+    runs the friction laws with Coulomb's part (``grid.has_coulomb``), whose caps differ from spring to
+    spring: ``ū_j = ū(m Δx) + κ_j max(d − g(x_j), 0)``; a spring whose cap is 0 slides. On a layer of finite
+    thickness (:class:`~mdr_events.models.spring_media.LayerSprings`) the springs differ and ``sums`` is their
+    weighted sum ``Σ (k_t(x_j)/G*) u_j`` (``grid.sum_shifts``).
     """
     shift = np.zeros(grid.n_springs)
     m = _first_count(grid, d, edge)
@@ -410,13 +438,13 @@ def _run_case_per_spring(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.nda
         shift[:kept] += x[k] - x[k - 1]
         shift[kept:] = 0.0  # detached springs forget their shift, new ones attach with none
         cap = grid.caps[m_new]
-        if grid.coulomb > 0.0:
-            cap = cap + grid.coulomb * np.maximum(d[k] - grid.g[:m_new], 0.0)
+        if grid.has_coulomb:
+            cap = cap + grid.coulomb[:m_new] * np.maximum(d[k] - grid.g[:m_new], 0.0)
         in_contact = shift[:m_new]
         np.minimum(in_contact, cap, out=in_contact)
         np.maximum(in_contact, -cap, out=in_contact)
-        counts[k], sums[k] = m_new, in_contact.sum()
-        if grid.coulomb > 0.0:
+        counts[k], sums[k] = m_new, grid.sum_shifts(in_contact)
+        if grid.has_coulomb:
             sliding[k] = np.count_nonzero((np.abs(in_contact) >= cap) | ~(cap > 0.0))
         else:
             sliding[k] = np.count_nonzero(np.abs(in_contact) >= cap) if cap > 0.0 else m_new
@@ -436,13 +464,18 @@ class _Setup(NamedTuple):
     last_sample: np.ndarray  # (n_cases,) the sample at the end of each path
     last_entries: np.ndarray  # (n_cases,) each path's last entry into the elastomer, from first contact
     grid: _Grid
-    g_prefix: np.ndarray  # (n_springs + 1,) Σ g(x_j) over the first m springs
+    g_prefix: np.ndarray  # (n_springs + 1,) Σ w_j g(x_j) over the first m springs
     positions: np.ndarray  # (n_springs,) the springs' centres
+    weight_prefix: np.ndarray  # (n_springs + 1,) Σ w_j over the first m springs (m on the half-space)
 
 
 def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
-             profile: Callable[[np.ndarray], np.ndarray], friction: FrictionLaw, adhesion: AdhesionLaw) -> _Setup:
-    """The time grid, every case's samples and the springs of :func:`run_discrete`."""
+             profile: Callable[[np.ndarray], np.ndarray] | None, friction: FrictionLaw, adhesion: AdhesionLaw,
+             springs: Springs | None = None) -> _Setup:
+    """The time grid, every case's samples and the springs of :func:`run_discrete`: those of ``springs``
+    (:mod:`~mdr_events.models.spring_media`; default the half-space's on the profile ``profile``), with the normal
+    weights ``w_j = k(x_j)/E*`` of the sums (15) (1 on the half-space)."""
+    springs = HalfSpaceSprings(params, given_profile=profile) if springs is None else springs
     starts, durations, n_time = _time_grid_size(paths, dt)
     # the last entry into the elastomer, in time from first contact (0 for a path with one entry)
     last_entries = np.array([path.entry_times()[-1] for path in paths]) - starts
@@ -453,16 +486,18 @@ def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
     x_path, d_path = positions
     last_sample = np.minimum(np.floor(durations / dt + 0.5).astype(np.int64), n_time - 1)
 
-    n_springs = _spring_count(params, dx, max(path.max_depth for path in paths), profile, adhesion)
+    n_springs = _spring_count(springs, dx, max(path.max_depth for path in paths), adhesion)
     xi = (np.arange(n_springs) + 0.5) * dx
-    g = profile(xi)
-    g_prefix = np.concatenate([[0.0], np.cumsum(g)])
-    attach, detach = spring_thresholds(adhesion, g, xi, params)
-    # ū is linear in a (13); a law without τ0's part has none
-    shift_per_radius = float(analytic.critical_shift(1.0, params)) if friction.uses_tau0 else 0.0
-    caps = (shift_per_radius * dx) * np.arange(n_springs + 1)  # ū(m Δx) for m springs per side
-    grid = _Grid(attach, detach, g[0], caps, scale_bits(x_path, caps), g, mindlin.coulomb_cap_ratio(friction, params))
-    return _Setup(time, x_path, d_path, last_sample, last_entries, grid, g_prefix, xi)
+    g = springs.profile(xi)
+    weights = springs.normal_weights(xi)
+    g_prefix = np.concatenate([[0.0], np.cumsum(weights * g)])
+    weight_prefix = np.concatenate([[0.0], np.cumsum(weights)])
+    attach, detach = spring_thresholds(adhesion, g, xi, springs)
+    caps = springs.caps(n_springs, dx, friction)  # ū(m Δx) for m springs per side
+    bits = scale_bits(x_path, caps) if springs.grouped else None  # (the groups' integer scale)
+    grid = _Grid(attach, detach, g[0], caps, bits, g, springs.coulomb_ratios(xi, friction), springs.shift_sum(xi),
+                 *(springs.weight_prefix(xi) if springs.grouped else ()))
+    return _Setup(time, x_path, d_path, last_sample, last_entries, grid, g_prefix, xi, weight_prefix)
 
 
 #: Bytes a discrete run allocates per case and time sample (the path, the kernel's output, the dataset),
@@ -481,12 +516,12 @@ def _time_grid_size(paths: list[Path], dt: float) -> tuple[np.ndarray, np.ndarra
 
 
 def check_discrete_size(params: Parameters, paths: list[Path], dx: float, dt: float, limits: Limits,
-                        profile: SimulatedProfile = None) -> None:
+                        profile: SimulatedProfile = None, layer: Layer = HALF_SPACE) -> None:
     """Estimate a discrete run's time steps, springs and memory before anything is allocated, and refuse it
     past ``limits`` (:class:`~mdr_events.limits.ResourceLimitError` saying the estimate and how to raise it)."""
     _, _, n_time = _time_grid_size(paths, dt)
     deepest = max(path.max_depth for path in paths)
-    springs = float(indenters.branch_radius(deepest, params, params.dgamma0, profile)) / dx + 2
+    springs = springs_of(params, profile, None, layer).branch_radius(deepest) / dx + 2
     limits.check(f"the discrete run (dx={dx!r} m, dt={dt:.6g} s, {len(paths)} case(s))",
                  steps=n_time * len(paths), springs=springs,
                  memory=len(paths) * n_time * BYTES_PER_SAMPLE + springs * BYTES_PER_SPRING)
@@ -501,6 +536,7 @@ def run_discrete(
     limits: Limits = DEFAULT_LIMITS,
     friction: FrictionLaw | str | None = None,
     adhesion: AdhesionLaw | None = None,
+    layer: Layer = HALF_SPACE,
 ) -> dict[str, np.ndarray]:
     r"""Run the spring model for several paths on a common time grid.
 
@@ -536,6 +572,13 @@ def run_discrete(
     adhesion : Adhesion, optional
         The adhesion law, whose thresholds the springs follow (:data:`THRESHOLD_RULES`); default the paper's law of
         ``params.dgamma0`` and ``params.dgamma1`` (:func:`~mdr_events.contact.adhesion.law_of`).
+    layer : Layer, optional
+        The elastomer's body (default the half-space). On a layer of finite thickness the springs are those of the
+        generalized MDR (:mod:`~mdr_events.models.spring_media`): ``k(x_j) Δx`` and ``k_t(x_j) Δx`` over the layer's
+        ``g(x)``, Heß's rule with ``Δl = sqrt(4π a Δγ/K'(a))``, the caps ``π a² τ0/K_t(a)`` and ``μ (k/k_t)(d − g)``,
+        ``F_N = 2Σ k(x_j) Δx (d − g(x_j))``, ``F_x = 2Σ k_t(x_j) Δx u_j`` (the groups' sums weighted by
+        integer ``k_t(x_j)/G*``). It takes the paraboloid or a power law and the paper's adhesion law; on a
+        frictionless base only paths without tangential motion.
 
     Returns
     -------
@@ -549,12 +592,13 @@ def run_discrete(
     indenter = indenters.check_simulated_profile(profile) if not callable(profile) else None
     friction, adhesion = as_friction_law(friction), law_of(params, adhesion)
     check_thresholds_known(adhesion)
+    springs = springs_of(params, indenter, profile if callable(profile) else None, layer)
+    springs.check(adhesion, paths)
     for index, path in enumerate(paths):
         indenters.check_reach(params, path.max_depth, indenter, f"path {index}")
-    check_discrete_size(params, paths, dx, dt, limits, indenter)
-    run = _prepare(params, paths, dx, dt, profile if callable(profile) else indenters.spring_profile(params, indenter),
-                   friction, adhesion)
-    step_case = _run_case_per_spring if run.grid.coulomb > 0.0 else _run_case
+    check_discrete_size(params, paths, dx, dt, limits, indenter, layer)
+    run = _prepare(params, paths, dx, dt, None, friction, adhesion, springs)
+    step_case = _run_case if springs.grouped and not run.grid.has_coulomb else _run_case_per_spring
     time, x_path, d_path, last_sample = run.time, run.x, run.d, run.last_sample.copy()
     n_cases, n_time = len(paths), time.size
     out_m = np.zeros((n_cases, n_time), dtype=np.int64)
@@ -570,7 +614,7 @@ def run_discrete(
     valid = np.arange(n_time)[None, :] <= last_sample[:, None]
     radius = out_m * dx
     with np.errstate(invalid="ignore", divide="ignore"):
-        normal = 2.0 * params.E_star * dx * (out_m * d_path.T - run.g_prefix[out_m])
+        normal = 2.0 * params.E_star * dx * (run.weight_prefix[out_m] * d_path.T - run.g_prefix[out_m])
         tangential = 2.0 * params.G_star * dx * out_sum
         sliding = np.where(out_m > 0, out_sliding / out_m, np.nan)
     result = {

@@ -67,6 +67,8 @@ class Discrete:
     """
 
     name: ClassVar[str] = "discrete"
+    #: Whether the method runs a layer of finite thickness (``Contact.layer``): the springs of the generalized MDR.
+    takes_layers: ClassVar[bool] = True
     dx: float = DEFAULT_DX
     dt: float | None = None
     n_steps: int | None = None
@@ -100,7 +102,8 @@ class Discrete:
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Run the cases with the springs; the dataset of :mod:`~mdr_events.models.simulation_schema` with the
-        attributes ``dx``, ``dt`` and ``spring_count_per_side``.
+        attributes ``dx``, ``dt`` and ``spring_count_per_side`` (on a layer of finite thickness also
+        ``param_layer_thickness`` and ``param_layer_base``).
 
         Parameters
         ----------
@@ -123,19 +126,22 @@ class Discrete:
             time step that gives a path segment in contact fewer than :data:`MIN_STEPS_PER_SEGMENT` steps.
         """
         self.check_model(model)
-        params, profile, friction = model.params, model.profile, model.friction
+        params, profile, friction, layer = model.params, model.profile, model.friction, model.contact.layer
         paths = cases.paths
         for path in paths:
             path.first_contact_time()  # a path that never touches the surface is an error first
         dx = check_spacing(params, self.dx, depth=min(params.d_max, max(path.max_depth for path in paths)),
-                           profile=profile)
+                           profile=profile, layer=layer)
         step = self._time_step(paths)
         check_time_step(paths, step, self.dt, self.n_steps)
         raw = run_discrete(params, paths, dx, step, profile=profile, limits=limits, friction=friction,
-                           adhesion=model.adhesion)
+                           adhesion=model.adhesion, layer=layer)
+        # (the half-space stamps no layer, as Contact.to_attrs: its results are those of before)
+        layer_attrs = {} if layer.is_half_space else layer.to_attrs()
         attrs = dict(method=self.name, scenario=model.scenario, dx=float(dx), dt=step,
                      spring_count_per_side=int(raw["spring_count"]), content=SIMULATION_CONTENT,
-                     **indenters.profile_attrs(profile), **friction_attrs(friction), **adhesion_attrs(model.adhesion))
+                     **indenters.profile_attrs(profile), **friction_attrs(friction), **adhesion_attrs(model.adhesion),
+                     **layer_attrs)
         return simulation_dataset(params, cases, raw["time"], raw, **attrs)
 
     def _time_step(self, paths: list[Path]) -> float:
@@ -196,6 +202,8 @@ class Continuum:
     """
 
     name: ClassVar[str] = "continuum"
+    #: Whether the method runs a layer of finite thickness: not yet (its spans and events assume a constant ``E*``).
+    takes_layers: ClassVar[bool] = False
     tolerances: Tolerances = Tolerances()
     samples: int | None = None
     t: np.ndarray | None = None

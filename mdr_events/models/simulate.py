@@ -23,6 +23,7 @@ from mdr_events.models.job import ModelJob
 from mdr_events.models.methods import METHODS, Continuum, Discrete, Method, as_method
 from mdr_events.models.motion import Motion, Paths, Scenario, as_motion
 from mdr_events.models.paths import Path
+from mdr_events.models.spring_media import springs_of
 from mdr_events.parameters import Parameters
 from mdr_events.theory.job import contact_alone
 from mdr_events.theory.scales import check_representable
@@ -31,7 +32,7 @@ from mdr_events.validation import shown
 #: The method of simulate unless given: the paper's springs.
 DEFAULT_METHOD = "discrete"
 
-__all__ = ["simulate", "simulation_job", "SimulationJob", "model_job", "METHODS"]
+__all__ = ["simulate", "simulation_job", "SimulationJob", "model_job", "METHODS", "check_layer_taken"]
 
 
 class SimulationJob(NamedTuple):
@@ -74,8 +75,44 @@ def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any]) -
         alpha, method = None, alpha
     model = model_job(contact, motion, alpha, options)
     the_method = as_method(DEFAULT_METHOD if method is None else method, options)
-    check_half_space(model.contact, f"simulate(method={the_method.name!r})")
+    check_layer_taken(model.contact, model.motion, the_method)
     return SimulationJob(model, the_method)
+
+
+def check_layer_taken(contact: Contact, motion: Motion, method: Method) -> Contact:
+    """``contact`` if ``method`` runs its body along ``motion``: the half-space always; a layer of finite thickness
+    with the discrete method only (the continuum's one line names it: :func:`~mdr_events.contact.model.
+    check_half_space`), and there what its springs take (:meth:`~mdr_events.models.spring_media.LayerSprings.check`:
+    the paraboloid or a power law, the paper's adhesion law; on a frictionless base no tangential motion). The front
+    ends call it before they write anything.
+
+    Parameters
+    ----------
+    contact : Contact
+        The physical model.
+    motion : Scenario or Paths
+        Where the indenter goes.
+    method : Discrete or Continuum
+        The method.
+
+    Returns
+    -------
+    Contact
+        ``contact`` itself.
+
+    Raises
+    ------
+    ValueError, TypeError
+        A layer of finite thickness with a method, indenter, adhesion law or motion that does not take it.
+    """
+    if contact.layer.is_half_space:
+        return contact
+    if not method.takes_layers:
+        check_half_space(contact, f"simulate(method={method.name!r})")
+    params, profile = contact.parameters(motion.d_max, motion.v), indenters.check_simulated_profile(contact.profile)
+    springs = springs_of(params, profile, None, contact.layer)
+    springs.check(contact.adhesion, motion.cases(params, profile, contact.friction).paths)
+    return contact
 
 
 def simulate(

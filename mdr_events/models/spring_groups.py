@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import heapq
 import math
+import sys
+from collections.abc import Sequence
 
 import numpy as np
 
@@ -66,25 +68,36 @@ class SpringGroups:
     only where springs attach, detach or are clipped) are exact, with no
     drift over any number of steps; ``Σ u = m x − Σ Y`` is rounded once.
 
+    Springs of unequal stiffness (a layer of finite thickness,
+    :mod:`~mdr_events.models.spring_media`) carry integer weights ``w_j``
+    (``prefix[j]`` the sum of those below ``j``); each group keeps the sum of
+    its springs' weights beside their count, :attr:`anchor_sum` is then
+    ``Σ w_j Y_j`` and ``Σ w_j u_j = prefix[m] x − Σ w_j Y_j``, exact as well.
+    By default every spring weighs 1 (``prefix[j] = j``) and the sums are the
+    plain ones.
+
     Per step the work is the springs' groups that change: the two caps (their
     anchors follow the window), the free groups that the window reaches (from
     two heaps of the free groups' anchors: lowest and highest first) and the
     index ranges that detach. A step that clips nothing costs O(1).
     """
 
-    __slots__ = ("parent", "count", "anchor", "free", "lows", "highs", "starts", "groups", "low_cap", "high_cap",
-                 "anchor_sum")
+    __slots__ = ("parent", "count", "weight", "anchor", "free", "lows", "highs", "starts", "groups", "low_cap",
+                 "high_cap", "anchor_sum", "prefix")
 
     #: Groups and heap entries allowed beyond the live bound before they are compacted (:meth:`_bound`).
     SLACK = 256
 
-    def __init__(self) -> None:
+    def __init__(self, prefix: Sequence[int] = range(sys.maxsize)) -> None:
+        #: Σ of the springs' integer weights below each index (default: every spring weighs 1)
+        self.prefix = prefix
         self.reset()
 
     def reset(self) -> None:
         """No springs in contact (the contact came apart)."""
         self.parent: list[int] = []  # union-find: a group merged into a cap points towards it
         self.count: list[int] = []  # springs of a root group
+        self.weight: list[int] = []  # the sum of their weights
         self.anchor: list[int] = []  # anchor of a root group (2**-bits m)
         self.free: list[bool] = []  # a root group that sticks (in the heaps), not a cap
         self.lows: list[tuple[int, int]] = []  # (anchor, group): a min-heap of the free groups
@@ -106,15 +119,18 @@ class SpringGroups:
 
     def attach(self, start: int, stop: int, anchor: int) -> None:
         """Springs ``start ≤ j < stop`` attach with zero shift at the position ``anchor``."""
-        self.anchor_sum += (stop - start) * anchor
+        weight = self.prefix[stop] - self.prefix[start]
+        self.anchor_sum += weight * anchor
         if self.groups:
             group = self.groups[-1]  # the outermost springs stick at the same anchor (x did not move): join them
             if self.parent[group] == group and self.free[group] and self.anchor[group] == anchor:
                 self.count[group] += stop - start
+                self.weight[group] += weight
                 return
         group = len(self.parent)
         self.parent.append(group)
         self.count.append(stop - start)
+        self.weight.append(weight)
         self.anchor.append(anchor)
         self.free.append(True)
         heapq.heappush(self.lows, (anchor, group))
@@ -125,13 +141,14 @@ class SpringGroups:
 
     def detach(self, top: int, stop: int) -> None:
         """Springs ``stop ≤ j < top`` (the outermost ``top − stop``) detach and forget their shift."""
-        starts, groups, count = self.starts, self.groups, self.count
+        starts, groups, count, prefix = self.starts, self.groups, self.count, self.prefix
         while top > stop:
             start = starts[-1]
             root = self._root(groups[-1])
             low = start if start > stop else stop
-            leaving = top - low
-            count[root] -= leaving
+            leaving = prefix[top] - prefix[low]
+            count[root] -= top - low
+            self.weight[root] -= leaving
             self.anchor_sum -= leaving * self.anchor[root]
             if low == start:
                 starts.pop()
@@ -146,12 +163,13 @@ class SpringGroups:
     def _take(self, cap: int, group: int, level: int) -> int:
         """The free ``group`` reaches the cap at anchor ``level``: it joins ``cap`` (or becomes it)."""
         self.free[group] = False
-        self.anchor_sum += self.count[group] * (level - self.anchor[group])
+        self.anchor_sum += self.weight[group] * (level - self.anchor[group])
         if cap < 0:
             self.anchor[group] = level
             return group
         self.parent[group] = cap
         self.count[cap] += self.count[group]
+        self.weight[cap] += self.weight[group]
         return cap
 
     def _settle(self, cap: int, level: int, low: bool) -> int:
@@ -165,7 +183,7 @@ class SpringGroups:
             heapq.heappush(self.lows, (anchor, cap))
             heapq.heappush(self.highs, (-anchor, cap))
             return -1
-        self.anchor_sum += self.count[cap] * (level - anchor)
+        self.anchor_sum += self.weight[cap] * (level - anchor)
         self.anchor[cap] = level
         return cap
 
@@ -216,6 +234,7 @@ class SpringGroups:
         roots = list(renumbered)
         self.parent = list(range(len(roots)))
         self.count = [self.count[root] for root in roots]
+        self.weight = [self.weight[root] for root in roots]
         self.anchor = [self.anchor[root] for root in roots]
         self.free = [self.free[root] for root in roots]
         self.low_cap = renumbered.get(self.low_cap, -1)

@@ -1,6 +1,7 @@
-"""Layers of finite thickness (:mod:`mdr_events.reproduction.finite_layer`): the pull-off force against ``a/h`` with
-the half-space's and the thin limits drawn, and ``F_N(d)`` of an indentation cycle on a layer beside the
-half-space's."""
+"""Layers of finite thickness (:mod:`mdr_events.reproduction.finite_layer`, :mod:`mdr_events.reproduction.layer_figures`):
+the pull-off force against ``a/h`` with the half-space's and the thin limits drawn, ``F_N(d)`` of an indentation cycle
+on a layer beside the half-space's, and the discrete model's forces and area along Fig. 8's and 10's paths on a layer
+beside the half-space's."""
 
 from __future__ import annotations
 
@@ -11,7 +12,12 @@ from matplotlib.figure import Figure
 
 from mdr_events.plotting.figures import LEGEND_FONTSIZE
 
-__all__ = ["plot_pull_off_against_thickness", "plot_layer_cycles", "plot_critical_angles_against_thickness"]
+__all__ = ["plot_pull_off_against_thickness", "plot_layer_cycles", "plot_layer_simulations",
+           "plot_critical_angles_against_thickness"]
+
+#: What :func:`plot_layer_simulations` draws: variable, axis label, scale to the axis' unit.
+_SIMULATION_PANELS = (("normal_force", "normal force F_N (N)", 1.0), ("tangential_force", "tangential force F_x (N)", 1.0),
+                      ("contact_area", "contact area A (mm²)", 1e6))
 
 
 def plot_pull_off_against_thickness(curves: dict[str, xr.Dataset], limits: dict[str, float]) -> Figure:
@@ -74,6 +80,37 @@ def plot_layer_cycles(cycles: dict[str, xr.Dataset]) -> Figure:
     axes.set_ylabel("normal force F_N (N)")
     axes.legend(fontsize=LEGEND_FONTSIZE)
     axes.grid(True, lw=0.3, alpha=0.5)
+    return figure
+
+
+def plot_layer_simulations(runs: dict[str, xr.Dataset], angles: tuple[float, ...]) -> Figure:
+    """``F_N``, ``F_x`` and ``A`` against time of simulations over the same angles (a scenario's), one line style per
+    label (the half-space, a layer) and one colour per angle.
+
+    Parameters
+    ----------
+    runs : dict of str to xarray.Dataset
+        Label -> a simulation with the dimension ``alpha`` (:func:`~mdr_events.simulate`).
+    angles : tuple of float
+        The angles drawn (degrees), each in every run.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure: three panels side by side.
+    """
+    figure, axes = plt.subplots(1, len(_SIMULATION_PANELS), figsize=(13.0, 4.2), constrained_layout=True)
+    styles = ("-", "--", ":", "-.")
+    for panel, (name, label, scale) in zip(axes, _SIMULATION_PANELS):
+        for number, (run_label, run) in enumerate(runs.items()):
+            for index, angle in enumerate(angles):
+                case = run.sel(alpha=angle)
+                panel.plot(case.time.values, case[name].values * scale, color=f"C{index}", ls=styles[number % 4],
+                           lw=1.2, label=f"{run_label}, α = {angle:g}°")
+        panel.set_xlabel("time from first contact (s)")
+        panel.set_ylabel(label)
+        panel.grid(True, lw=0.3, alpha=0.5)
+    axes[0].legend(fontsize=LEGEND_FONTSIZE)
     return figure
 
 

@@ -191,7 +191,7 @@ def layer_lines(results: LayerResults) -> list[str]:
             f"{PAPER_D_MAX * 1e3:g} mm on the Δγ0 branch and back, the radius pinned until the Δγ1 branch, then "
             "along it to the jump-off (`me.layer_indentation_cycle`; F_N,min is the pull-off under force control, "
             "which the cycle passes). The layer raises every maximum, as the paper's measurements exceed its "
-            "half-space simulation (the tangential part is a later phase of issue 34). Figure: "
+            "half-space simulation (with sliding: the next section, the discrete model on the layer). Figure: "
             f"`{LAYER_STEM}_cycles.png`.", ""] + table + [""] + _outside_lines(results.outside)
 
 

@@ -20,6 +20,7 @@ from mdr_events.reproduction.cross_check import CROSS_CHECK
 from mdr_events.reproduction.figures import FIGURES
 from mdr_events.reproduction.finite_layer import FINITE_LAYER
 from mdr_events.reproduction.layer_angles import LAYER_ANGLES
+from mdr_events.reproduction.layer_figures import LAYER_FIGURES
 from mdr_events.reproduction.fit_demo import FIT
 from mdr_events.reproduction.fretting import FRETTING
 from mdr_events.reproduction.lammps import LAMMPS
@@ -39,7 +40,7 @@ __all__ = ["SECTIONS", "COMPUTE_STEPS", "step_count", "compute", "report_text", 
 #: The sections in the report's order, which is also the order they are computed and written in.
 SECTIONS: tuple[Section, ...] = (PHASE_DIAGRAMS, CRITICAL_ANGLES, CROSS_CHECK, FIGURES, CONVERGENCE, FRETTING, FIT,
                                  UNIVERSAL, PROFILES, MINDLIN, MINDLIN_ADHESIVE, LAMMPS, RATE_ADHESION, FINITE_LAYER,
-                                 LAYER_ANGLES, PARAMETERS)
+                                 LAYER_FIGURES, LAYER_ANGLES, PARAMETERS)
 #: Progress messages :func:`compute` sends: one per step of every section.
 COMPUTE_STEPS = sum(len(section.steps) for section in SECTIONS)
 #: The progress message of the last step, writing the report.

@@ -46,7 +46,6 @@ def _run(where):
     """The call of each entry point with the layered contact."""
     return {
         "simulate(method='continuum')": lambda: me.simulate(LAYERED, me.Scenario("A", alpha=20), "continuum"),
-        "simulate(method='discrete')": lambda: me.simulate(LAYERED, me.Scenario("A", alpha=20), "discrete"),
         "validate": lambda: me.validate(None, LAYERED, "A", 20.0),
         "fit": lambda: me.fit(None, LAYERED, "A", 20.0, free=["E"]),
         "sweep": lambda: me.sweep({"alpha": [10.0, 20.0]}, LAYERED),
@@ -58,7 +57,7 @@ def _run(where):
     }[where]
 
 
-@pytest.mark.parametrize("where", ["simulate(method='continuum')", "simulate(method='discrete')", "validate", "fit",
+@pytest.mark.parametrize("where", ["simulate(method='continuum')", "validate", "fit",
                                    "sweep", "pull_off_force", "jump_off", "the LAMMPS check",
                                    "the LAMMPS check (LAMMPS has no layers)"])
 def test_an_entry_point_without_layers_refuses_a_finite_one_in_one_line(where):
@@ -67,6 +66,7 @@ def test_an_entry_point_without_layers_refuses_a_finite_one_in_one_line(where):
     text = str(caught.value)
     assert text.startswith("Contact.layer=Layer(thickness=0.005, base='bonded') is not allowed in ")
     assert f" in {where}" in text and "allowed: the half-space" in text and "layer_normal_curve" in text
+    assert "a layer runs in simulate(..., method='discrete')" in text
     assert "\n" not in text
 
 

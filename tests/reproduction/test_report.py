@@ -267,6 +267,8 @@ def test_compute_sends_one_progress_message_per_step(computed):
                 "rate-dependent adhesion: the critical angle of A", "rate-dependent adhesion: A's phase diagram",
                 "rate-dependent adhesion: A at 20°", "layers of finite thickness: pull-off against h",
                 "layers of finite thickness: ContactMechanics' recorded forces",
+                "Fig. 8, R = 30 mm on the 5 mm layer", "Fig. 10, R = 30 mm on the 5 mm layer",
+                "Fig. 8, R = 100 mm on the 5 mm layer", "Fig. 10, R = 100 mm on the 5 mm layer",
                 "layers of finite thickness: the critical angles against h"]
     tail = messages[-len(expected):]
     assert all(message.startswith(start) for message, start in zip(tail, expected)), tail

@@ -53,10 +53,10 @@ def test_the_step_count_is_the_sections_steps_their_writes_and_the_report():
 
 def test_the_report_lists_the_files_of_every_section_in_order():
     files = [line for section in runner.SECTIONS for line in section.files]
-    assert files[0].startswith("- `phase_diagram_A_R30") and files[-4].startswith("- `finite_layer_pull_off.png`")
-    assert files[-2].startswith("- `finite_layer_critical_angles.png`")
-    assert files[-5].startswith("- `rate_adhesion_A20.png`") and files[-8].startswith("- `rate_adhesion_pull_off.png`")
-    assert files[-9] == "  exact MDR and its figure (where LAMMPS is installed)."
+    assert files[0].startswith("- `phase_diagram_A_R30") and files[-2].startswith("- `finite_layer_critical_angles")
+    assert files[-4].startswith("- `fig8_R30_layer.png`") and files[-6].startswith("- `finite_layer_pull_off.png`")
+    assert files[-7].startswith("- `rate_adhesion_A20.png`") and files[-10].startswith("- `rate_adhesion_pull_off.png`")
+    assert files[-11] == "  exact MDR and its figure (where LAMMPS is installed)."
 
 
 # ----------------------------------------------------------------------------------------------

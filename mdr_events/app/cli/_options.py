@@ -253,11 +253,36 @@ def friction(args: argparse.Namespace) -> FrictionLaw:
         raise UsageError(f"{given}: {error}") from None
 
 
-def contact(args: argparse.Namespace, params: Parameters, simulated: bool = True) -> Contact:
-    """The contact of ``params`` with the indenter and the friction law of the options."""
+def layer_options(parser: argparse.ArgumentParser) -> None:
+    """``--h H`` and ``--layer-base BASE``: the elastomer as a layer of thickness ``H`` on a rigid base."""
+    from mdr_events.contact.layer import LayerBase
+
+    parser.add_argument("--h", type=float, default=None, metavar="H",
+                        help="the elastomer's thickness in m, a layer on a rigid base (default inf: the half-space; "
+                             "the discrete method)")
+    parser.add_argument("--layer-base", choices=[base.value for base in LayerBase], default=None,
+                        help="how the layer rests on its base (default bonded; frictionless: no tangential motion)")
+
+
+def layer(args: argparse.Namespace):
+    """The layer of ``--h`` and ``--layer-base`` (the half-space without them; a verb without the options: the
+    half-space)."""
     from mdr_events.app import inputs
 
-    return inputs.contact(params, profile(args, simulated), friction(args))
+    h, base = getattr(args, "h", None), getattr(args, "layer_base", None)
+    try:
+        return inputs.layer(h, base)
+    except (TypeError, ValueError) as error:
+        given = " ".join(part for part in (f"--h {h:g}" if h is not None else "",
+                                           f"--layer-base {base}" if base is not None else "") if part)
+        raise UsageError(f"{given}: {error}") from None
+
+
+def contact(args: argparse.Namespace, params: Parameters, simulated: bool = True) -> Contact:
+    """The contact of ``params`` with the indenter, the friction law and the layer of the options."""
+    from mdr_events.app import inputs
+
+    return inputs.contact(params, profile(args, simulated), friction(args), layer(args))
 
 
 def limit_options(parser: argparse.ArgumentParser) -> None:

@@ -37,6 +37,7 @@ def fill(sim: argparse.ArgumentParser) -> None:
     sim.add_argument("--out", required=True, help="output directory")
     _options.profile_options(sim)
     _options.friction_options(sim)
+    _options.layer_options(sim)
     _options.limit_options(sim)
     _options.parameter_options(sim)
     sim.set_defaults(run=run)
@@ -46,12 +47,17 @@ def job(args: argparse.Namespace) -> SimulateJob:
     """The simulation the options ask for."""
     from mdr_events.app import inputs
     from mdr_events.app.jobs import SimulateJob
+    from mdr_events.models.simulate import check_layer_taken
 
     params, provenance = _options.parameters(args)
     contact = _options.contact(args, params)
     options = {name: getattr(args, name) for name in DISCRETE_OPTIONS if getattr(args, name) is not None}
-    return SimulateJob(contact, inputs.scenario(args.scenario, args.alpha, params), inputs.method(args.method, options),
-                       _options.limits(args), provenance,
+    method, motion = inputs.method(args.method, options), inputs.scenario(args.scenario, args.alpha, params)
+    try:
+        check_layer_taken(contact, motion, method)
+    except (ValueError, TypeError) as error:
+        raise _options.UsageError(f"--h {args.h:g}: {error}") from None
+    return SimulateJob(contact, motion, method, _options.limits(args), provenance,
                        f"simulation_{args.scenario.replace('+', 'plus')}_{args.method}")
 
 
