@@ -81,8 +81,8 @@ def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any]) -
 
 def check_layer_taken(contact: Contact, motion: Motion, method: Method) -> Contact:
     """``contact`` if ``method`` runs its body along ``motion``: the half-space always; a layer of finite thickness
-    with the discrete method only (the continuum's one line names it: :func:`~mdr_events.contact.model.
-    check_half_space`), and there what its springs take (:meth:`~mdr_events.models.spring_media.LayerSprings.check`:
+    with the discrete method only (the continuum's one line names it:
+    :func:`~mdr_events.contact.model.check_half_space`), and there what its springs take (:meth:`~mdr_events.models.spring_media.LayerSprings.check`:
     the paraboloid or a power law, the paper's adhesion law; on a frictionless base no tangential motion). The front
     ends call it before they write anything.
 

@@ -74,8 +74,9 @@ class HalfSpaceSprings:
     indenter: SimulatedProfile = None
     given_profile: Callable[[np.ndarray], np.ndarray] | None = None
 
-    #: Whether the springs are stepped in groups that share a shift (:class:`~mdr_events.models.spring_groups.
-    #: SpringGroups`), else each on its own (:func:`~mdr_events.models.discrete._run_case_per_spring`).
+    #: Whether the springs are stepped in groups that share a shift
+    #: (:class:`~mdr_events.models.spring_groups.SpringGroups`), else each on its own
+    #: (:func:`~mdr_events.models.discrete._run_case_per_spring`).
     grouped = True
 
     def check(self, adhesion: AdhesionLaw, paths: list[Path]) -> None:
@@ -339,8 +340,8 @@ class LayerSprings:
         return _layer_branch_radius(self.params, self.indenter, self.layer, float(depth))
 
     def normal_weights(self, positions: np.ndarray) -> np.ndarray:
-        r"""The springs' normal stiffness in units of ``E* Δx``: ``k(x_j)/E*`` (:func:`~mdr_events.theory.layer.
-        spring_stiffness_density`).
+        r"""The springs' normal stiffness in units of ``E* Δx``: ``k(x_j)/E*``
+        (:func:`~mdr_events.theory.layer.spring_stiffness_density`).
 
         .. math:: k(x) = \tfrac12 K'(|x|) = E^*\,\Theta(1; |x|/h)^2
 
