@@ -12,6 +12,11 @@ What a sweep keeps is a :class:`SweepOutput`: the quantities, each run's history
 resumes where it stopped: the chunks the store marks done are read back, not run again. A run that raises is recorded
 (``failed``, ``error``) and does not stop the sweep.
 
+A contact on a layer of finite thickness (``Contact.layer``), or a grid over its thickness ``h`` (``inf``: the
+half-space), runs where the method takes a layer (the discrete method, as :func:`~mdr_events.simulate`) or where only
+the closed-form quantities are asked (:data:`CLOSED_FORM_QUANTITIES`: :func:`~mdr_events.critical_angle` of each run's
+contact); the result stamps the layer as a discrete run does.
+
 The keywords of before, ``sweep(grid, "A", 20, base=params, method=..., dx=..., scheduler=..., store=...,
 profile=..., friction=...)``, are read by :func:`sweep_job`, the one place that converts them; either form gives the
 same numbers.
@@ -32,7 +37,7 @@ import xarray as xr
 
 from mdr_events.analysis.executors import DEFAULT_CHUNK, Engine
 from mdr_events.analysis.sweep_grid import (BYTES_PER_STORED_VALUE, TABLE_DIMENSION, Grid, check_runs, make_grid,
-                                            name_unit, swept_names)
+                                            name_unit, swept_names, sweeps_thickness)
 from mdr_events.analysis.sweep_runs import (CLOSED_FORM_QUANTITIES, DISCRETE_STEP_PER_SPACING, HISTORY_QUANTITIES,
                                             QUANTITIES, ChunkResult, SweepSpec, run_chunk)
 from mdr_events.analysis.sweep_store import Store, run_variables
@@ -40,7 +45,6 @@ from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models import indenters
 from mdr_events.contact.friction import friction_attrs
-from mdr_events.contact.model import check_half_space
 from mdr_events.models.methods import DEFAULT_STEPS, Continuum, Discrete, Method, as_method
 from mdr_events.models.motion import FIGURE_ANGLES, Motion, Paths, Scenario
 from mdr_events.models.job import ModelJob
@@ -203,7 +207,6 @@ def sweep_job(grid, contact, motion, alpha, method, options: Mapping[str, Any]) 
         alpha = check_real("alpha", alpha, ANGLE_ALLOWED,
                            lambda value: 0 < value <= 90 and math.tan(math.radians(value)) > 0)
     model = model_job(contact, "A" if motion is None else motion, alpha, options)
-    check_half_space(model.contact, "sweep")
     the_method = as_method(DEFAULT_METHOD if method is None else method, options)
     if isinstance(the_method, Continuum) and the_method.t is not None:
         raise ValueError("t is not allowed in a sweep; allowed: history_samples (times spread over each run's path)")
@@ -230,12 +233,15 @@ def sweep(grid, contact=None, motion=None, alpha: float | None = None, method: s
     grid : mapping or sequence of mappings
         Name → values: the outer product, one dimension per name (in the mapping's order). Or a list of mappings
         (each a set, the same names): along the dimension ``set``. Names: any value of the contact, dotted or short
-        (``"friction.mu"``, ``"tau0"``, ``"E"``, :meth:`Contact.names <mdr_events.Contact.names>`), ``alpha`` (a
-        scenario's angle, degrees), ``d_max`` and ``v`` (the motion's depth and speed) and ``dx`` (the discrete
-        spacing, m).
+        (``"friction.mu"``, ``"tau0"``, ``"E"``, ``"h"``, :meth:`Contact.names <mdr_events.Contact.names>`),
+        ``alpha`` (a scenario's angle, degrees), ``d_max`` and ``v`` (the motion's depth and speed) and ``dx`` (the
+        discrete spacing, m). The layer's thickness ``h`` (``layer.thickness``, m) may hold ``inf``, the
+        half-space; its base (``layer.base``), a choice, is the contact's.
     contact : Contact or Parameters
         The model of every run before the grid's values are put in (a :class:`~mdr_events.Parameters` with
-        ``profile=`` and ``friction=`` as in :func:`~mdr_events.simulate`).
+        ``profile=`` and ``friction=`` as in :func:`~mdr_events.simulate`). On a layer of finite thickness (or with
+        ``h`` in the grid) the runs take the layer with the discrete method, or with any method where only the
+        closed-form quantities are asked (:data:`CLOSED_FORM_QUANTITIES`); else the sweep is refused.
     motion : Scenario, {"A", "B", "B+"}, Path or Paths
         The motion of every run: a scenario of one angle (or any, with ``alpha`` in the grid), rebuilt per run at
         its values; or one path. Default ``"A"``.
@@ -262,13 +268,15 @@ def sweep(grid, contact=None, motion=None, alpha: float | None = None, method: s
     -------
     xarray.Dataset
         One dimension per swept name (or ``set``), with the swept values as coordinates; the quantities of
-        :data:`QUANTITIES`, ``failed`` and ``error`` (a run that raised, and why).
+        :data:`QUANTITIES`, ``failed`` and ``error`` (a run that raised, and why). On a layer (or over ``h``) the
+        attributes ``param_layer_thickness`` (the contact's, before the grid's values) and ``param_layer_base``.
 
     Raises
     ------
     ValueError, TypeError
         Before anything runs, naming the argument: an unknown name, an empty or non-finite grid, a value the contact
-        refuses, a scenario without an angle, a store of another sweep.
+        refuses, a scenario without an angle, a store of another sweep, a layer of finite thickness the method does
+        not take (beyond the closed-form quantities) or the layer's closed forms refuse.
     """
     limits = check_limits(limits)
     job = sweep_job(grid, contact, motion, alpha, method, dict(options, output=output, engine=engine, limits=limits))
@@ -367,8 +375,17 @@ def _signature(job: SweepJob) -> str:
                        "names": job.grid.names, "rows": job.grid.rows.tolist(), "quantities": spec.quantities,
                        "history_samples": spec.history_samples,
                        **({} if profile is None else {"profile": profile.to_attrs()}),  # (a table's points too)
-                       **({} if model.friction.is_default else {"friction": [model.friction.law, model.friction.mu]})},
+                       **({} if model.friction.is_default else {"friction": [model.friction.law, model.friction.mu]}),
+                       **_layer_attrs(job)},  # (the half-space's signature as before layers: its stores resume)
                       sort_keys=True)
+
+
+def _layer_attrs(job: SweepJob) -> dict[str, Any]:
+    """The layer's attributes (:meth:`Layer.to_attrs <mdr_events.contact.layer.Layer.to_attrs>`, as a discrete run
+    stamps them) where the sweep's contact is on a layer of finite thickness or its grid sweeps the thickness (then
+    the contact's before the grid's values are put in, as every swept value); none on the half-space."""
+    layer = job.model.contact.layer
+    return layer.to_attrs() if sweeps_thickness(job.grid.names) or not layer.is_half_space else {}
 
 
 def _result(job: SweepJob, runs: _Runs) -> xr.Dataset:
@@ -385,7 +402,7 @@ def _result(job: SweepJob, runs: _Runs) -> xr.Dataset:
     if isinstance(spec.motion, Paths):
         attrs["path_waypoints"] = next(iter(spec.motion.paths.values())).describe()
     return stamp(xr.Dataset(data, coords=coords), model.params, **attrs, **indenters.profile_attrs(model.profile),
-                 **friction_attrs(model.friction))
+                 **friction_attrs(model.friction), **_layer_attrs(job))
 
 
 register_schema(SWEEP_CONTENT, {"failed": None, "error": None})

@@ -1,32 +1,37 @@
 """The grid of a sweep: the names it may sweep, their values (an outer product or a table of sets), and every
-run's values checked before anything runs (:func:`check_runs`)."""
+run's values checked before anything runs (:func:`check_runs`).
+
+The layer's thickness is swept as any value of the contact (``h``, dotted ``layer.thickness``, in m; ``inf`` is the
+half-space, the one value a grid may hold that is not finite). Its base (``layer.base``) is a choice, not a number:
+a grid holds numbers (one row of floats per run), so the base is the contact's, the same for every run.
+"""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import Mapping, NamedTuple, Sequence, Sized
 
 import numpy as np
 
-from mdr_events.analysis.sweep_runs import METHOD_NAMES, MOTION_NAMES, SweepSpec
+from mdr_events.analysis.sweep_runs import METHOD_NAMES, MOTION_NAMES, SweepSpec, check_layer_run
 from mdr_events.contact import Contact
-from mdr_events.contact.model import SHORT_NAMES, UNITS
+from mdr_events.contact.model import CHOICES, SHORT_NAMES, UNITS
 from mdr_events.limits import Limits
 from mdr_events.models.methods import Discrete, Method
 from mdr_events.models.motion import Motion, Scenario
-from mdr_events.theory.scales import check_representable
 from mdr_events.validation import real_array, shown
 
-__all__ = ["Grid", "make_grid", "swept_names", "name_unit", "check_runs", "TABLE_DIMENSION",
-           "BYTES_PER_STORED_VALUE"]
+__all__ = ["Grid", "make_grid", "swept_names", "name_unit", "check_runs", "sweeps_thickness", "TABLE_DIMENSION",
+           "BYTES_PER_STORED_VALUE", "UNBOUNDED_NAMES"]
 
 #: The dimension of a sweep over a table of parameter sets.
 TABLE_DIMENSION = "set"
 #: Bytes per value a sweep holds at once: its array, the dataset built from it and the store's chunk (three float64
 #: copies), rounded up.
 BYTES_PER_STORED_VALUE = 32
-#: The prefix of the layer's dotted names (``layer.thickness``, short ``h``; ``layer.base``): not swept yet.
-LAYER_PART = "layer."
+#: The swept names that may hold ``inf``: the layer's thickness (``inf``: the half-space).
+UNBOUNDED_NAMES = ("h", "layer.thickness")
 
 
 class Grid(NamedTuple):
@@ -45,7 +50,7 @@ class Grid(NamedTuple):
 def swept_names(contact: Contact, motion: Motion, method: Method) -> tuple[str, ...]:
     """The names a grid may sweep: the contact's values (dotted and short names), the motion's angle (a scenario's),
     depth and speed, and the discrete method's spacing."""
-    held = [name for name in contact.names() if not name.startswith(LAYER_PART)]  # (no layer in a sweep yet)
+    held = contact.names()
     short = [name for name, dotted in SHORT_NAMES.items() if dotted in held]
     motion_names = [name for name in MOTION_NAMES if name != "alpha" or isinstance(motion, Scenario)]
     return (*short, *held, *motion_names, *(METHOD_NAMES if isinstance(method, Discrete) else ()))
@@ -59,10 +64,9 @@ def name_unit(contact: Contact, name: str) -> str:
 def _values(name: str, values, allowed: Sequence[str], contact: Contact | None) -> np.ndarray:
     if name not in allowed:
         dotted = SHORT_NAMES.get(name, name)
-        if isinstance(dotted, str) and dotted.startswith(LAYER_PART):
-            raise ValueError(f"grid: {name!r} ({dotted}) is not allowed in sweep yet; allowed: the half-space (h = "
-                             "inf); the normal problem on a layer: mdr_events.layer_normal_curve and "
-                             "mdr_events.layer_pull_off_curve")
+        if dotted in CHOICES:
+            raise ValueError(f"grid: {name!r} is not allowed: a choice, not a number (a grid's values are numbers); "
+                             f"allowed: the contact's own (Contact.replace(**{{{dotted!r}: ...}})), one per sweep")
         part = dotted.partition(".")[0]
         whose = f" is not a value of this contact ({part}={getattr(contact, part)!r})" \
             if contact is not None and dotted in UNITS else " is not allowed"
@@ -71,8 +75,11 @@ def _values(name: str, values, allowed: Sequence[str], contact: Contact | None) 
         array = np.atleast_1d(real_array(f"grid[{name!r}]", values, "real numbers (not bools or strings)"))
     except TypeError as error:
         raise ValueError(str(error)) from None
-    if array.ndim != 1 or array.size == 0 or not np.all(np.isfinite(array)):
-        raise ValueError(f"grid[{name!r}]={shown(values)} is not allowed; allowed: a non-empty list of finite numbers")
+    finite = np.isfinite(array) | (name in UNBOUNDED_NAMES and np.isposinf(array))  # (h = inf: the half-space)
+    if array.ndim != 1 or array.size == 0 or not np.all(finite):
+        also = " (or inf: the half-space)" if name in UNBOUNDED_NAMES else ""
+        raise ValueError(f"grid[{name!r}]={shown(values)} is not allowed; allowed: a non-empty list of finite "
+                         f"numbers{also}")
     return array
 
 
@@ -135,8 +142,9 @@ def _check_angles_and_spacings(grid: Grid) -> None:
 def _rows_to_check(grid: Grid) -> np.ndarray:
     """The runs whose model is checked: a table's distinct sets whole; for an outer product each value of a name
     beside the first value of every other (a value is valid alone, and the continuum refuses a set by a value of
-    one name alone: a nonzero Δγ with Coulomb's part), not every combination (2000 × 2000 values took minutes)."""
-    models = [i for i, name in enumerate(grid.names) if name not in ("alpha", "dx")]
+    one name alone: a nonzero Δγ with Coulomb's part), not every combination (2000 × 2000 values took minutes).
+    The angles too: the springs of a frictionless base refuse a path that moves tangentially."""
+    models = [i for i, name in enumerate(grid.names) if name != "dx"]
     if grid.table:
         return np.unique(grid.rows, axis=0)
     first = grid.rows[0]
@@ -149,13 +157,29 @@ def _rows_to_check(grid: Grid) -> np.ndarray:
     return np.array(rows)
 
 
+def sweeps_thickness(names: Sequence[str]) -> bool:
+    """Whether a grid of ``names`` sweeps the layer's thickness (``h`` or ``layer.thickness``)."""
+    return any(SHORT_NAMES.get(name, name) == "layer.thickness" for name in names)
+
+
+def _check_contact_layer(spec: SweepSpec, grid: Grid) -> None:
+    """The contact's own layer of finite thickness, where the grid does not sweep it, refused as the contact's (not
+    the grid's): along every angle the grid sweeps (a frictionless base refuses a path that moves tangentially)."""
+    if spec.contact.layer.is_half_space or sweeps_thickness(grid.names):
+        return
+    motion = spec.motion
+    if "alpha" in grid.names:
+        motion = dataclasses.replace(motion, alpha=tuple(float(angle) for angle in np.unique(grid.coords["alpha"])))
+    check_layer_run(spec.contact, motion, spec.method, spec.quantities, spec.history_samples)
+
+
 def check_runs(spec: SweepSpec, grid: Grid) -> None:
-    """Every run of the grid is valid (before anything runs): the first refused one is named."""
+    """Every run of the grid is valid (before anything runs): the contact's layer (:func:`check_layer_run`), then the
+    first refused run is named."""
     _check_angles_and_spacings(grid)
+    _check_contact_layer(spec, grid)
     for row in _rows_to_check(grid):
         try:
-            model, method = spec.job(row)
-            check_representable(model.params, model.profile, model.friction)  # (E = 1e300 was a failed run)
-            method.check_model(model)
+            spec.check(row)
         except (ValueError, TypeError) as error:
             raise ValueError(f"grid: {error}") from None

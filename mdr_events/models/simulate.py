@@ -79,7 +79,7 @@ def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any]) -
     return SimulationJob(model, the_method)
 
 
-def check_layer_taken(contact: Contact, motion: Motion, method: Method) -> Contact:
+def check_layer_taken(contact: Contact, motion: Motion, method: Method, where: str | None = None) -> Contact:
     """``contact`` if ``method`` runs its body along ``motion``: the half-space always; a layer of finite thickness
     with the discrete method only (the continuum's one line names it:
     :func:`~mdr_events.contact.model.check_half_space`), and there what its springs take (:meth:`~mdr_events.models.spring_media.LayerSprings.check`:
@@ -94,6 +94,9 @@ def check_layer_taken(contact: Contact, motion: Motion, method: Method) -> Conta
         Where the indenter goes.
     method : Discrete or Continuum
         The method.
+    where : str, optional
+        The entry point named where a method without layers refuses one (default ``"simulate(method=...)"``;
+        :func:`~mdr_events.sweep` names itself).
 
     Returns
     -------
@@ -108,7 +111,7 @@ def check_layer_taken(contact: Contact, motion: Motion, method: Method) -> Conta
     if contact.layer.is_half_space:
         return contact
     if not method.takes_layers:
-        check_half_space(contact, f"simulate(method={method.name!r})")
+        check_half_space(contact, f"simulate(method={method.name!r})" if where is None else where)
     params, profile = contact.parameters(motion.d_max, motion.v), indenters.check_simulated_profile(contact.profile)
     springs = springs_of(params, profile, None, contact.layer)
     springs.check(contact.adhesion, motion.cases(params, profile, contact.friction).paths)

@@ -70,11 +70,15 @@ def test_an_entry_point_without_layers_refuses_a_finite_one_in_one_line(where):
     assert "\n" not in text
 
 
-def test_a_sweep_over_the_thickness_is_refused_naming_it():
+def test_a_continuum_sweep_over_the_thickness_is_refused_naming_what_runs_it():
+    """The continuum's quantities on a layer: refused for the grid's first finite thickness, naming the discrete
+    method and the closed-form quantities (tests/analysis/test_sweep_layer.py: what runs)."""
     with pytest.raises(ValueError) as caught:
-        me.sweep({"h": [1e-3, 5e-3]}, PAPER, alpha=20.0)
+        me.sweep({"h": [np.inf, 1e-3, 5e-3]}, PAPER, alpha=20.0)
     text = str(caught.value)
-    assert "'h' (layer.thickness) is not allowed in sweep yet" in text and "\n" not in text
+    assert text.startswith("grid: Contact.layer=Layer(thickness=0.001, base='bonded') is not allowed in "
+                           "sweep(method='continuum')") and "\n" not in text
+    assert "sweep(..., method='discrete')" in text and "quantities=('critical_angle_A', 'critical_angle_B')" in text
 
 
 def test_the_check_passes_the_half_space_through():

@@ -1,10 +1,18 @@
-"""``mdr-events sweep``: the ``[sweep]`` table of a study file on dask (a local cluster, or ``--scheduler ADDRESS``)."""
+"""``mdr-events sweep``: the ``[sweep]`` table of a study file on dask (a local cluster, or ``--scheduler ADDRESS``);
+``--h`` and ``--layer-base`` put the elastomer on a layer, as for ``simulate``, over the study's ``[layer]``."""
 
 from __future__ import annotations
 
 import argparse
+import dataclasses
+from typing import TYPE_CHECKING
 
+from mdr_events.app.cli import _options
 from mdr_events.app.cli._options import UsageError
+
+if TYPE_CHECKING:
+    from mdr_events.app.study import Study
+    from mdr_events.contact.layer import Layer
 
 
 def add_arguments(commands: argparse._SubParsersAction) -> None:
@@ -31,7 +39,30 @@ def fill(sweeping: argparse.ArgumentParser) -> None:
     store.add_argument("--restart", action="store_true",
                        help="start afresh, replacing the store of an earlier sweep (without --resume or --restart an "
                             "existing store is an error)")
+    _options.layer_options(sweeping)
     sweeping.set_defaults(run=run)
+
+
+def _layer_over(args: argparse.Namespace, study: Study) -> Layer | None:
+    """The layer of ``--h`` and ``--layer-base`` over the study's ``[layer]`` (each option replaces its own field;
+    ``None`` without them), checked against the sweep's method and quantities (the discrete method, or the
+    closed-form quantities alone) in one line naming the option."""
+    from mdr_events.analysis.sweep_runs import check_layer_run
+    from mdr_events.app import inputs
+
+    if args.h is None and args.layer_base is None:
+        return None
+    job, held = study.sweep, study.contact.layer
+    layer = inputs.layer(held.thickness if args.h is None else args.h,
+                         held.base.value if args.layer_base is None else args.layer_base)
+    try:
+        check_layer_run(dataclasses.replace(job.contact, layer=layer), job.motion, job.method, job.output.quantities,
+                        job.output.history_samples)
+    except (ValueError, TypeError) as error:
+        given = " ".join(part for part in (f"--h {args.h:g}" if args.h is not None else "",
+                                           f"--layer-base {args.layer_base}" if args.layer_base else "") if part)
+        raise UsageError(f"{given}: {error}") from None
+    return layer
 
 
 def run(args: argparse.Namespace) -> int:
@@ -46,13 +77,15 @@ def run(args: argparse.Namespace) -> int:
     if args.workers is not None:
         check_workers(args.workers)
     check_scheduler(args.scheduler, args.workers)
+    _options.layer(args)  # (--h checked before the study is read)
     study = load_study(args.study)
+    layer = None if study.sweep is None else _layer_over(args, study)
     store = sweep_store(study)
     if store.exists() and not (args.resume or args.restart):
         raise UsageError(f"{store} holds an earlier sweep; allowed: --resume to continue it (its done chunks are "
                          "kept), --restart to start afresh")
     outcomes = run_sweep(study, progress=progress, scheduler=args.scheduler, workers=args.workers,
-                         resume=args.resume)
+                         resume=args.resume, layer=layer)
     for outcome in outcomes:
         print(outcome.path)
     return 0
