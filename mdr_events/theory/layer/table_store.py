@@ -5,31 +5,14 @@ from __future__ import annotations
 
 import hashlib
 import math
-import os
-import tempfile
 from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 
+from mdr_events.theory.cache_files import cache_directory, read_cached, store_cached
+
 __all__ = ["cache_directory", "source_digest", "table_grid", "stored_columns"]
-
-
-def cache_directory() -> Path | None:
-    """The directory of the derivations' and the tables' caches (``None``: caching is off).
-
-    ``$MDR_EVENTS_CACHE_DIR`` or ``$XDG_CACHE_HOME/mdr_events`` or ``~/.cache/mdr_events`` (that of
-    :func:`mdr_events.theory.symbolic.cache_path`); ``MDR_EVENTS_NO_CACHE=1`` turns it off.
-
-    Returns
-    -------
-    pathlib.Path or None
-        The directory, or ``None``.
-    """
-    if os.environ.get("MDR_EVENTS_NO_CACHE"):
-        return None
-    return Path(os.environ.get("MDR_EVENTS_CACHE_DIR") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"), "mdr_events"))
 
 
 def source_digest(*modules: str) -> str:
@@ -91,22 +74,14 @@ def stored_columns(path: Path | None, names: tuple[str, ...], grid: np.ndarray,
     dict of str to numpy.ndarray
         The columns.
     """
-    if path is not None and path.exists():
-        try:
-            with np.load(path, allow_pickle=False) as stored:
-                columns = {name: stored[name] for name in names}
-            if np.array_equal(columns["s"], grid):
-                return columns
-        except Exception:  # a damaged or foreign file is rebuilt
-            pass
-    columns = build()
-    if path is not None:
-        try:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".npz", dir=path.parent)
-            with os.fdopen(handle, "wb") as stream:
-                np.savez(stream, **columns)
-            os.replace(temporary, path)
-        except OSError:
-            pass
+    def read(stream) -> dict[str, np.ndarray] | None:
+        with np.load(stream, allow_pickle=False) as stored:
+            columns = {name: stored[name] for name in names}
+        return columns if np.array_equal(columns["s"], grid) else None
+
+    columns = read_cached(path, read)  # (a damaged or foreign file, or one the system refuses: rebuilt)
+    if columns is None:
+        columns = build()
+        store_cached(path, lambda stream: np.savez(stream, **columns))
     return columns
+
