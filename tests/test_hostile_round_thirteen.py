@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+import re
 
 import numpy as np
 import pytest
@@ -53,3 +55,63 @@ def test_a_store_that_fails_leaves_no_temporary(tmp_path):
     taken.mkdir()  # (the cache file's name is a directory: the store's rename fails)
     table_store.stored_columns(taken, ("s", "y"), grid, lambda: {"s": grid, "y": grid})
     assert sorted(path.name for path in tmp_path.iterdir()) == ["table.npz"]
+
+
+# --- N2: the tangential layer theory (mdr_events.theory.layer_tangential, new since round twelve) had not been given
+# round twelve's checks of the normal one: nan and inf results from G* = nan or 0, a product beyond the double range, a
+# depth of nan; negative radii and moduli accepted (negative stiffnesses); Python's words for strings, None, arrays
+# that do not broadcast, a missing solution; a direct solve at a/h = 1000 (two minutes) and nodes = 10**6 (MemoryError,
+# 7 TiB), the kernel at v = 1e4 (15 s), the coupling's scan of 0 or 1.5 points; a multi-line message naming an array of
+# radii (the cases below fail on the code before in seconds: smaller sizes than those that took minutes). Each
+# relation checks its arguments by name before it runs and its result after (checks.checked_relation), the
+# solve shares the normal one's bounds (punch.solve_size) ----------------------------------------------------------
+from mdr_events.theory import layer_tangential as T  # noqa: E402
+
+G_STAR, NU, THIN = 2.88e5, 0.3, me.Layer(1e-3)
+
+
+def _solution(lam: float) -> T.TangentialPunchSolution:
+    """A solution at ``lam`` as a solve would give it (shapes only: what is refused is refused before it is read)."""
+    return T.TangentialPunchSolution(lam, NU, np.array([0.5]), np.array([1.0]), np.ones((1, 2)), np.ones(2))
+
+
+@pytest.mark.parametrize("call, named", [
+    (lambda: T.tangential_punch_stiffness(1e-3, math.nan, NU, THIN), "G_star=nan is not allowed"),
+    (lambda: T.tangential_punch_stiffness(-1e-3, G_STAR, NU, THIN), "a=-0.001 is not allowed"),
+    (lambda: T.tangential_punch_stiffness("x", G_STAR, NU, THIN), "a='x' (of str values) is not allowed"),
+    (lambda: T.tangential_punch_stiffness(1e-3, "x", NU, THIN), "G_star='x' (str) is not allowed"),
+    (lambda: T.tangential_punch_stiffness(1e308, 1e308, NU, me.Layer()), "tangential_punch_stiffness(a=1e+308"),
+    (lambda: T.tangential_punch_stiffness_slope(1e-3, -1.0, NU, THIN), "G_star=-1.0 is not allowed"),
+    (lambda: T.tangential_spring_stiffness_density(math.inf, G_STAR, NU, me.Layer()), "x=inf is not allowed"),
+    (lambda: T.sliding_cap(1e-3, 4e4, 0.0, NU, THIN), "G_star=0.0 is not allowed"),
+    (lambda: T.sliding_cap(1e308, 1e308, 1e-308, NU, me.Layer()), "sliding_cap(a=1e+308, tau0=1e+308"),
+    (lambda: T.coulomb_cap(1e-4, math.nan, 0.0, 0.3, 4.3e5, G_STAR, NU, THIN), "depth=nan is not allowed"),
+    (lambda: T.coulomb_cap(np.ones(3) * 1e-4, np.ones(2) * 1e-4, 0.0, 0.3, 4.3e5, G_STAR, NU, THIN),
+     "which do not broadcast"),
+    (lambda: T.tangential_compliance(math.nan, NU, "longitudinal"), "t=nan is not allowed"),
+    (lambda: T.tangential_compliance(0.0, NU, "transverse", "frictionless"), "t=0.0 is not allowed"),
+    (lambda: T.tangential_compliance(1e-320, NU, "transverse", "frictionless"), "t=1e-320 is not allowed: C_T"),
+    (lambda: T.tangential_kernel(math.nan, NU, "longitudinal"), "v=nan is not allowed"),
+    (lambda: T.tangential_kernel(1e3, NU, "longitudinal"), "v=1000.0 is not allowed; allowed: finite numbers with"),
+    (lambda: T.coupling_ratio(-1.0, NU), "t=-1.0 is not allowed"),
+    (lambda: T.coupling_bound(NU, 0), "points=0 is not allowed; allowed: an integer >= 3"),
+    (lambda: T.coupling_bound(NU, 1.5), "points=1.5 (float) is not allowed"),
+    (lambda: T.coupling_bound(NU, 10**12), "the coupling's scan of 1000000000000 points"),
+    (lambda: T.solve_tangential_punch(1000.0, NU, nodes=16), "a/h=1000.0 is not allowed for a direct solve"),
+    (lambda: T.solve_tangential_punch(1.0, NU, nodes=10**6), "the layer's Nyström solve with 1000000 nodes"),
+    (lambda: T.solve_tangential_punch(0.0, NU).modes_at(math.nan), "tau=nan is not allowed"),
+    (lambda: T.contact_displacement(None, 0.5), "solution=None (NoneType) is not allowed"),
+    (lambda: T.contact_displacement(_solution(1.0), np.linspace(0.0, 2.0, 100)),
+     "rho[50]=1.0101010101010102 is not allowed"),
+    (lambda: T.contact_displacement(_solution(2000.0), 0.5), "the tangential displacement at 1 radii (a/h = 2000)"),
+    (lambda: T.TangentialTable(NU, {}).stiffness_factor("x"), "lam='x' (of str values) is not allowed"),
+])
+def test_the_tangential_layer_theory_names_what_it_cannot_compute(call, named):
+    _one_line_naming(call, named)
+
+
+def test_the_tangential_layer_theory_is_unchanged_where_it_computes():
+    """The checks are before and after: valid calls give the numbers they gave (the module's own tests cover them)."""
+    assert float(T.tangential_punch_stiffness(1e-3, G_STAR, NU, me.Layer())) == 2.0 * G_STAR * 1e-3
+    assert float(T.sliding_cap(0.0, 4e4, G_STAR, NU, me.Layer())) == 0.0
+    assert float(T.tangential_compliance(0.0, NU, "transverse")) == 0.0  # (C_T = tanh t)

@@ -201,6 +201,39 @@ class PunchSolution:
         return out
 
 
+def solve_size(lam: float, nodes: int | None, limits: Limits | None = None) -> int:
+    """The nodes of a direct solve at ``λ = a/h`` (the normal punch's or the tangential one's), checked before anything
+    is built: ``λ`` up to :data:`LAMBDA_SOLVE_MAX` and the nodes' memory within ``limits``.
+
+    Parameters
+    ----------
+    lam : float
+        ``a/h``, a number ``>= 0`` (checked by the caller).
+    nodes : int or None
+        The nodes asked (``None``: :func:`nystrom_nodes`).
+    limits : Limits or None, default None
+        The memory the solve may take (:data:`SOLVE_BYTES_PER_PAIR` per pair of nodes; ``None``: the defaults).
+
+    Returns
+    -------
+    int
+        The nodes.
+
+    Raises
+    ------
+    ValueError
+        ``lam`` beyond :data:`LAMBDA_SOLVE_MAX`, ``nodes`` not an integer >= 2 (``TypeError`` for another type), the
+        memory beyond ``limits`` (``ResourceLimitError``).
+    """
+    if not lam <= LAMBDA_SOLVE_MAX:
+        raise ValueError(f"a/h={lam!r} is not allowed for a direct solve; allowed: 0 <= a/h <= {LAMBDA_SOLVE_MAX:g} "
+                         "(where its nodes are converged; the thin-layer limits of theory.layer_symbolic beyond)")
+    count = nystrom_nodes(lam) if nodes is None else check_count("nodes", nodes, 2)
+    check_limits(limits).check(f"the layer's Nyström solve with {count} nodes (a/h = {lam:g})",
+                               memory=SOLVE_BYTES_PER_PAIR * float(count) ** 2)
+    return count
+
+
 @functools.lru_cache(maxsize=64)
 def _gauss_legendre(count: int) -> tuple[np.ndarray, np.ndarray]:
     """Gauss–Legendre nodes and weights on ``[0, 1]`` (kept: NumPy's eigenvalue solve is the table's main cost)."""
@@ -215,12 +248,7 @@ def _solve(lam: float, nu: float, base: LayerBase, rhs: Callable[[np.ndarray], n
            limits: Limits | None = None) -> PunchSolution:
     """The Nyström solve of (L1) with the right-hand sides ``1`` and ``rhs(σ)`` (columns); ``λ`` up to
     :data:`LAMBDA_SOLVE_MAX` and the nodes' memory within ``limits`` (checked before anything is built)."""
-    if not lam <= LAMBDA_SOLVE_MAX:
-        raise ValueError(f"a/h={lam!r} is not allowed for a direct solve; allowed: 0 <= a/h <= {LAMBDA_SOLVE_MAX:g} "
-                         "(where its nodes are converged; the thin-layer limits of theory.layer_symbolic beyond)")
-    count = nystrom_nodes(lam) if nodes is None else nodes
-    check_limits(limits).check(f"the layer's Nyström solve with {count} nodes (a/h = {lam:g})",
-                               memory=SOLVE_BYTES_PER_PAIR * float(count) ** 2)
+    count = solve_size(lam, nodes, limits)
     sigma, weights = _gauss_legendre(count)
     right = np.column_stack([np.ones(count), rhs(sigma)])
     if lam == 0.0:
@@ -274,8 +302,6 @@ def solve_punch(lam: float, nu: float, base: LayerBase | str = LayerBase.BONDED,
         raise TypeError(f"exponents={shown(exponents)} ({type(exponents).__name__}) is not allowed; allowed: a "
                         "sequence of numbers > 0, e.g. (2.0,)")
     exps = tuple(check_real("exponents", n, "numbers > 0", lambda value: value > 0.0) for n in exponents)
-    if nodes is not None:
-        nodes = check_count("nodes", nodes, 2)
     return _solve(lam, _nu(nu), _base(base), lambda s: np.power.outer(s, np.array(exps, dtype=float)),
                   (1.0,) * len(exps), exps, nodes, limits)
 

@@ -11,8 +11,9 @@ from pathlib import Path
 import numpy as np
 
 from mdr_events.theory.cache_files import cache_directory, read_cached, store_cached
+from mdr_events.validation import real_array
 
-__all__ = ["cache_directory", "source_digest", "table_grid", "stored_columns"]
+__all__ = ["cache_directory", "source_digest", "table_grid", "stored_columns", "table_argument"]
 
 
 def source_digest(*modules: str) -> str:
@@ -85,3 +86,35 @@ def stored_columns(path: Path | None, names: tuple[str, ...], grid: np.ndarray,
         store_cached(path, lambda stream: np.savez(stream, **columns))
     return columns
 
+
+def table_argument(lam, highest: float, solver: str) -> np.ndarray:
+    """A table's argument ``λ = a/h`` as a float array in ``[0, highest]``, else the one-line error (the normal and the
+    tangential tables alike).
+
+    Parameters
+    ----------
+    lam : float or array_like
+        ``a/h``.
+    highest : float
+        The table's largest ``a/h``.
+    solver : str
+        The direct solve beyond the table, named in the message.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``λ`` as floats.
+
+    Raises
+    ------
+    TypeError
+        ``lam`` not real numbers.
+    ValueError
+        A ``λ`` outside ``[0, highest]`` or not a number.
+    """
+    lam = real_array("lam", lam, f"numbers in [0, {highest:g}] (a/h)")
+    inside = (lam >= 0.0) & (lam <= highest)
+    if not np.all(inside):
+        bad = float(lam[~inside].ravel()[0])
+        raise ValueError(f"a/h={bad!r} is not allowed; allowed: 0 <= a/h <= {highest:g} (the table's range; {solver})")
+    return lam
