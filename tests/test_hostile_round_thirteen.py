@@ -115,3 +115,32 @@ def test_the_tangential_layer_theory_is_unchanged_where_it_computes():
     assert float(T.tangential_punch_stiffness(1e-3, G_STAR, NU, me.Layer())) == 2.0 * G_STAR * 1e-3
     assert float(T.sliding_cap(0.0, 4e4, G_STAR, NU, me.Layer())) == 0.0
     assert float(T.tangential_compliance(0.0, NU, "transverse")) == 0.0  # (C_T = tanh t)
+
+
+# --- N3: phase_diagram_at_speeds counted one solve of the edge per angle, but a steep angle's onset lies far below
+# d_max and the way in doubles up to 40 times to reach it, a solve each (89.9999°: 35 solves, 29 s): 1000 such angles
+# passed the default limits (1e7 of 2e7 steps) and ran for hours. The count is that of the doublings up to the
+# rate-independent onset (18), which bounds the rate-dependent one (an advancing edge's work is below Δγ0) -----------
+RATE_LAW = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-6, 0.6)
+
+
+def test_the_rate_phase_diagram_counts_the_doublings_of_its_steep_angles(monkeypatch):
+    from mdr_events.analysis import rate_angles
+
+    def never(*args, **kwargs):
+        raise AssertionError("the edge was solved: the limits passed")
+
+    monkeypatch.setattr(rate_angles, "solve_edge", never)
+    _one_line_naming(lambda: me.phase_diagram_at_speeds(PAPER, RATE_LAW, [1e-6], np.linspace(89.99, 89.9999, 1000)),
+                     "the phase diagram at 1 speeds and 1000 angles (31594 solves of the edge)")
+
+
+def test_the_doublings_counted_bound_those_a_steep_angle_takes(monkeypatch):
+    """At 80° the onset lies 170 d_max deep: the way in doubles 8 times, 9 solves, as many as counted."""
+    from mdr_events.analysis import rate_angles
+
+    solved = []
+    real = rate_angles.solve_edge
+    monkeypatch.setattr(rate_angles, "solve_edge", lambda *args, **kwargs: solved.append(1) or real(*args, **kwargs))
+    rate_angles.slip_onset_depth_at_speed(PAPER, RATE_LAW, 1e-6, 80.0, method="LSODA")
+    assert len(solved) <= rate_angles._onset_solves(PAPER, [80.0], None) == 9
