@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-import re
 
 import numpy as np
 import pytest
@@ -144,3 +143,95 @@ def test_the_doublings_counted_bound_those_a_steep_angle_takes(monkeypatch):
     monkeypatch.setattr(rate_angles, "solve_edge", lambda *args, **kwargs: solved.append(1) or real(*args, **kwargs))
     rate_angles.slip_onset_depth_at_speed(PAPER, RATE_LAW, 1e-6, 80.0, method="LSODA")
     assert len(solved) <= rate_angles._onset_solves(PAPER, [80.0], None) == 9
+
+
+# --- N4: the layer's curves (layer_normal_curve, layer_indentation_cycle, layer_pull_off_curve, new since round
+# twelve) computed the half-space's radii of their scan unchecked: R = 1e308 gave a raw ZeroDivisionError, R = 1e-300 or
+# a power law's c = 1e300 an OverflowError, E = 1e308 scipy's "Bracketing values ... do not fulfill this requirement";
+# no depth numpy's "zero-size array to reduction operation maximum", a layer so thin that no scan point fits on it
+# "attempt to get argmin of an empty sequence", and a cycle without adhesion (Hertz on a layer) scipy's bracketing
+# error. The curves check the scales they compute with as the simulators do, and take the contact without adhesion ---
+LAYERED = me.Contact.paper().replace(h=5e-3)
+HERTZ = me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0)
+
+
+@pytest.mark.parametrize("call, named", [
+    (lambda: me.layer_normal_curve(LAYERED.replace(R=1e308), [1e-5]), "the half-space's radii overflow"),
+    (lambda: me.layer_indentation_cycle(LAYERED.replace(R=1e-300), 1e-4, 5), "the half-space's radii overflow"),
+    (lambda: me.layer_indentation_cycle(LAYERED.replace(E=1e308), 1e-4, 5), "E* is 1.33e+308 Pa"),
+    (lambda: me.layer_pull_off_curve(me.Contact.from_parameters(PAPER, profile=me.PowerLaw(1e300, 1.0)), [1e-3]),
+     "layer_pull_off_curve: the half-space's radii overflow"),
+    (lambda: me.layer_normal_curve(LAYERED.replace(dgamma0=1e300, dgamma1=1e308), [1e-5]), "Δγ1 is 1e+308 J/m²"),
+    (lambda: me.layer_normal_curve(LAYERED, []), "depths=[] is not allowed"),
+    (lambda: me.layer_pull_off_curve(LAYERED, []), "thicknesses=[] is not allowed"),
+    (lambda: me.layer_pull_off_curve(LAYERED, [1e-9]), "the pull-off radius lies beyond a/h = 64"),
+])
+def test_the_layer_curves_name_what_they_cannot_compute(call, named):
+    _one_line_naming(call, named, ValueError)
+
+
+def test_a_cycle_without_adhesion_is_hertz_s_on_the_half_space():
+    """Without adhesion the cycle loads and unloads along d = g(a) from and back to the first touch (d = 0, a = 0):
+    on the half-space Hertz's a = sqrt(R d), F = (4/3) E* sqrt(R) d^(3/2), to round-off."""
+    cycle = me.layer_indentation_cycle(HERTZ, 1e-4, 5)
+    depth, radius, force = (cycle[name].values for name in ("depth", "contact_radius", "normal_force"))
+    R, E_star = HERTZ.indenter.R, HERTZ.elastomer.E_star
+    np.testing.assert_allclose(radius, np.sqrt(R * depth), rtol=1e-13, atol=0.0)
+    np.testing.assert_allclose(force, 4.0 / 3.0 * E_star * np.sqrt(R) * depth**1.5, rtol=1e-12, atol=0.0)
+    assert depth[-1] == radius[-1] == force[-1] == 0.0
+
+
+# --- N5: the layer's sizes were not counted against Limits: a cycle of 10**9 samples was taken (the process was
+# killed for its memory), 10**8 depths of a normal curve or 10**6 thicknesses of a pull-off curve (8 ms each: two
+# hours) likewise, and equivalent_profile's one direct solve per radius (10**7 radii: hours). Each is counted before
+# it runs, with limits= --------------------------------------------------------------------------------------------
+from mdr_events.theory import layer as L  # noqa: E402
+
+
+@pytest.fixture
+def no_work(monkeypatch):
+    """The curves' and the equivalent profile's work replaced by a failure: what is counted is refused before it."""
+    from mdr_events.theory.layer import curves, relations
+
+    def never(*args, **kwargs):
+        raise AssertionError("the work began: the sizes were not counted")
+
+    for module, name in ((curves, "_stable_radius"), (curves, "pull_off"), (relations, "_solve")):
+        monkeypatch.setattr(module, name, never)
+
+
+@pytest.mark.parametrize("call, named", [
+    (lambda: me.layer_indentation_cycle(LAYERED, 1e-4, 10**8), "layer_indentation_cycle to d_max=0.0001 m (300000000"),
+    (lambda: me.layer_normal_curve(LAYERED, np.linspace(0.0, 1e-4, 10**7)), "(20000000 points)"),
+    (lambda: me.layer_pull_off_curve(LAYERED, np.geomspace(1e-3, 1.0, 10**4)), "layer_pull_off_curve (10000 points)"),
+    (lambda: me.layer_pull_off_curve(LAYERED, [1e-3], limits=me.Limits(steps=1.0)), "layer_pull_off_curve (1 points)"),
+    (lambda: L.equivalent_profile(np.linspace(0.0, 1e-3, 10**6), lambda r: r / 0.03, 0.5, me.Layer(1e-3)),
+     "equivalent_profile at 1000000 radii (1000000 direct solves)"),
+    (lambda: L.equivalent_profile([1e-3], lambda r: r / 0.03, 0.5, me.Layer(1e-3), limits=me.Limits(steps=1.0)),
+     "equivalent_profile at 1 radii"),
+])
+def test_the_layer_s_sizes_are_counted_before_they_run(call, named, no_work):
+    _one_line_naming(call, named, me.ResourceLimitError)
+
+
+def test_an_equivalent_profile_beyond_a_direct_solve_is_refused_before_the_first():
+    calls = []
+    _one_line_naming(lambda: L.equivalent_profile([1e-4, 0.5], lambda r: calls.append(r) or r / 0.03, 0.5,
+                                                  me.Layer(1e-3)), "a/h=500.0 is not allowed for a direct solve")
+    assert calls == []
+
+
+# --- N6: layer_pull_off_curve's result could not be written: write_netcdf refused it ("attrs lack the parameter
+# attribute(s) ['param_d_max', 'param_v']"), which the curve had dropped. Every layer result reads back identical --
+@pytest.mark.parametrize("result", [
+    lambda: me.layer_normal_curve(LAYERED, [1e-4, 2e-4]),
+    lambda: me.layer_indentation_cycle(LAYERED, 2e-4, 5),
+    lambda: me.layer_pull_off_curve(LAYERED, [5e-3]),
+    lambda: me.layer_pull_off_curve(me.Contact.paper(), [5e-3, math.inf]),
+])
+def test_every_layer_result_is_written_and_reads_back_identical(result, tmp_path):
+    import xarray as xr
+
+    dataset = result()
+    again = me.open_result(me.write_netcdf(dataset, tmp_path / "layer.nc"))
+    xr.testing.assert_identical(again, dataset)

@@ -131,7 +131,7 @@ def checked_relation(function):
         given = bound.arguments
         _check_arguments(function.__name__, given)
         scalars = {name: value for name, value in given.items()
-                   if np.ndim(value) == 0 and name != "layer" and not callable(value)}
+                   if np.ndim(value) == 0 and name not in ("layer", "limits") and not callable(value)}
         try:
             with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):
                 result = function(*args, **kwargs)

@@ -17,7 +17,8 @@ from mdr_events.theory.layer.compliance import _base, _ChebyshevKernel, _kernel_
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.validation import check_count, check_real, shown
 
-__all__ = ["nystrom_nodes", "PunchSolution", "solve_punch", "LAMBDA_SOLVE_MAX", "SOLVE_BYTES_PER_PAIR"]
+__all__ = ["nystrom_nodes", "PunchSolution", "solve_punch", "LAMBDA_SOLVE_MAX", "SOLVE_BYTES_PER_PAIR",
+           "SOLVE_STEPS_PER_PAIR"]
 
 #: Gauss–Legendre nodes of the Fredholm equation: ``BASE_NODES + NODES_PER_LAMBDA λ``, rounded up to 16 (converged
 #: to 1e-10 relative or better up to ``λ = 200``; the tests check it against more nodes).
@@ -30,6 +31,10 @@ LAMBDA_SOLVE_MAX = 200.0
 #: Memory of a Nyström solve per pair of nodes (the kernel's interpolants on the ``nodes²`` grid twice and the
 #: matrix), in bytes, checked against :class:`~mdr_events.Limits`.
 SOLVE_BYTES_PER_PAIR = 400.0
+#: What a pair of nodes of a direct solve counts against :attr:`~mdr_events.Limits.steps` (its kernel's entries and
+#: its share of the LU: 0.2 to 0.7 µs here, where the discrete model's step takes about 1.5 µs), so that many solves
+#: are counted before the first (10**7 radii of an equivalent profile were taken: hours).
+SOLVE_STEPS_PER_PAIR = 1.0
 
 
 def nystrom_nodes(lam: float) -> int:
