@@ -235,3 +235,17 @@ def test_every_layer_result_is_written_and_reads_back_identical(result, tmp_path
     dataset = result()
     again = me.open_result(me.write_netcdf(dataset, tmp_path / "layer.nc"))
     xr.testing.assert_identical(again, dataset)
+
+
+# --- N7: two API errors in Python's words: check_half_space (public in mdr_events.contact, every entry point's
+# refusal of a layer) took None or a Parameters to an AttributeError ('NoneType' object has no attribute 'layer'); the
+# rate-dependent grids read a generator of speeds as one speed ("speeds[0]=<generator ...>; allowed: finite numbers")
+@pytest.mark.parametrize("call, named", [
+    (lambda: me.contact.check_half_space(None, "simulate"), "contact=None (NoneType) is not allowed in simulate"),
+    (lambda: me.contact.check_half_space(PAPER, "simulate"), "(Parameters) is not allowed in simulate"),
+    (lambda: me.critical_angles_at_speeds(PAPER, RATE_LAW, (speed for speed in [1e-6])),
+     "is not allowed; allowed: a non-empty 1-D sequence of finite numbers > 0 (m/s)"),
+])
+def test_the_api_names_the_wrong_kind_of_argument(call, named):
+    message = _one_line_naming(call, named, TypeError)
+    assert "speeds[0]" not in message

@@ -28,7 +28,7 @@ criterion for when the contact has let go (left open).
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 
 import numpy as np
 import xarray as xr
@@ -88,9 +88,10 @@ def _checked(params: Parameters, law: RateDependentAdhesion, speed, profile: Sim
 
 def _grid(name: str, values, allowed: str, valid) -> list[float]:
     """A non-empty 1-D grid of speeds or angles, each checked (``name[i]`` named), else a one-line error."""
+    unordered = (str, bytes, set, dict, Iterator)  # (a generator was read as one value: "speeds[0]=<generator ...>")
     array = np.asarray(values, dtype=object)
-    if array.ndim > 1 or array.size == 0 or isinstance(values, (str, bytes, set, dict)):
-        raise (TypeError if isinstance(values, (str, bytes, set, dict)) else ValueError)(
+    if array.ndim > 1 or array.size == 0 or isinstance(values, unordered):
+        raise (TypeError if isinstance(values, unordered) else ValueError)(
             f"{name}={shown(values)} is not allowed; allowed: a non-empty 1-D sequence of {allowed}")
     return [check_real(f"{name}[{index}]", value, allowed, valid) for index, value in enumerate(np.atleast_1d(array))]
 
