@@ -239,6 +239,31 @@ def solve_size(lam: float, nodes: int | None, limits: Limits | None = None) -> i
     return count
 
 
+def check_solves(lams: np.ndarray, limits: Limits | None, what: str) -> None:
+    """Direct solves at each of ``lams`` (``a/h``), one each, checked before the first: the largest within
+    :data:`LAMBDA_SOLVE_MAX` (and its nodes' memory within ``limits``), and their pairs of nodes
+    (:data:`SOLVE_STEPS_PER_PAIR` steps each) within ``limits``.
+
+    Parameters
+    ----------
+    lams : numpy.ndarray
+        The ``a/h`` of the solves, ``>= 0``.
+    limits : Limits or None
+        The limits (``None``: the defaults).
+    what : str
+        Names the computation in the message.
+
+    Raises
+    ------
+    ValueError
+        An ``a/h`` beyond :data:`LAMBDA_SOLVE_MAX`; the solves beyond ``limits`` (``ResourceLimitError``).
+    """
+    solve_size(float(np.max(lams, initial=0.0)), None, limits)
+    nodes = 16.0 * np.ceil((BASE_NODES + NODES_PER_LAMBDA * lams) / 16.0)  # (nystrom_nodes, for every solve)
+    check_limits(limits).check(f"{what} ({lams.size} direct solves)",
+                               steps=SOLVE_STEPS_PER_PAIR * float(np.sum(nodes**2)))
+
+
 @functools.lru_cache(maxsize=64)
 def _gauss_legendre(count: int) -> tuple[np.ndarray, np.ndarray]:
     """Gauss–Legendre nodes and weights on ``[0, 1]`` (kept: NumPy's eigenvalue solve is the table's main cost)."""

@@ -15,9 +15,8 @@ import numpy as np
 from mdr_events.contact.layer import Layer
 from mdr_events.theory.layer.checks import checked_relation
 from mdr_events.theory.layer.compliance import _nu
-from mdr_events.limits import Limits, check_limits
-from mdr_events.theory.layer.punch import (BASE_NODES, NODES_PER_LAMBDA, SOLVE_STEPS_PER_PAIR, _solve, solve_punch,
-                                           solve_size)
+from mdr_events.limits import Limits
+from mdr_events.theory.layer.punch import _solve, check_solves, solve_punch
 from mdr_events.theory.layer.tables import layer_table
 from mdr_events.validation import check_real
 
@@ -283,7 +282,8 @@ def equivalent_profile(x, profile_slope: Callable[[np.ndarray], np.ndarray], nu:
         solves beyond ``limits`` (``ResourceLimitError``).
     """
     x = np.abs(np.asarray(x, dtype=float))
-    _check_solves(x, layer, limits)
+    check_solves(np.zeros(x.shape) if layer.is_half_space else x / layer.thickness, limits,
+                 f"equivalent_profile at {x.size} radii")
     nodes, weights = np.polynomial.legendre.leggauss(_ABEL_NODES)
     angles, weights = np.pi / 4.0 * (nodes + 1.0), np.pi / 4.0 * weights
 
@@ -299,16 +299,6 @@ def equivalent_profile(x, profile_slope: Callable[[np.ndarray], np.ndarray], nu:
         solution = _solve(lam, _nu(nu), layer.base, lambda s: abel(radius * s)[:, None], (edge,), (), None)
         out[index] = solution.profile_factor() if radius > 0.0 else 0.0
     return out
-
-
-def _check_solves(x: np.ndarray, layer: Layer, limits: Limits | None) -> None:
-    """The direct solves of :func:`equivalent_profile` at the radii ``x``, one each, counted before the first: the
-    largest ``a/h`` within a solve's range and their nodes' pairs within ``limits``."""
-    lams = np.zeros(x.shape) if layer.is_half_space else x / layer.thickness
-    solve_size(float(np.max(lams, initial=0.0)), None, limits)
-    nodes = 16.0 * np.ceil((BASE_NODES + NODES_PER_LAMBDA * lams) / 16.0)  # (punch.nystrom_nodes, for every radius)
-    check_limits(limits).check(f"equivalent_profile at {x.size} radii ({x.size} direct solves)",
-                               steps=SOLVE_STEPS_PER_PAIR * float(np.sum(nodes**2)))
 
 
 @checked_relation
