@@ -150,7 +150,8 @@ def test_the_doublings_counted_bound_those_a_steep_angle_takes(monkeypatch):
 # a power law's c = 1e300 an OverflowError, E = 1e308 scipy's "Bracketing values ... do not fulfill this requirement";
 # no depth numpy's "zero-size array to reduction operation maximum", a layer so thin that no scan point fits on it
 # "attempt to get argmin of an empty sequence", and a cycle without adhesion (Hertz on a layer) scipy's bracketing
-# error. The curves check the scales they compute with as the simulators do, and take the contact without adhesion ---
+# error; Layer.relative_radius gave a/h = inf. The curves check the scales they compute with as the simulators do, and
+# take the contact without adhesion; a/h is finite or refused ---------------------------------------------------------
 LAYERED = me.Contact.paper().replace(h=5e-3)
 HERTZ = me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0)
 
@@ -165,6 +166,7 @@ HERTZ = me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0)
     (lambda: me.layer_normal_curve(LAYERED, []), "depths=[] is not allowed"),
     (lambda: me.layer_pull_off_curve(LAYERED, []), "thicknesses=[] is not allowed"),
     (lambda: me.layer_pull_off_curve(LAYERED, [1e-9]), "the pull-off radius lies beyond a/h = 64"),
+    (lambda: me.Layer(1e-300).relative_radius(1e308), "radius=1e+308 is not allowed on layer h = 1e-300 m"),
 ])
 def test_the_layer_curves_name_what_they_cannot_compute(call, named):
     _one_line_naming(call, named, ValueError)
