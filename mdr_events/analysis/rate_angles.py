@@ -28,7 +28,7 @@ criterion for when the contact has let go (left open).
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 
 import numpy as np
 import xarray as xr
@@ -88,9 +88,10 @@ def _checked(params: Parameters, law: RateDependentAdhesion, speed, profile: Sim
 
 def _grid(name: str, values, allowed: str, valid) -> list[float]:
     """A non-empty 1-D grid of speeds or angles, each checked (``name[i]`` named), else a one-line error."""
+    unordered = (str, bytes, set, dict, Iterator)  # (a generator was read as one value: "speeds[0]=<generator ...>")
     array = np.asarray(values, dtype=object)
-    if array.ndim > 1 or array.size == 0 or isinstance(values, (str, bytes, set, dict)):
-        raise (TypeError if isinstance(values, (str, bytes, set, dict)) else ValueError)(
+    if array.ndim > 1 or array.size == 0 or isinstance(values, unordered):
+        raise (TypeError if isinstance(values, unordered) else ValueError)(
             f"{name}={shown(values)} is not allowed; allowed: a non-empty 1-D sequence of {allowed}")
     return [check_real(f"{name}[{index}]", value, allowed, valid) for index, value in enumerate(np.atleast_1d(array))]
 
@@ -98,6 +99,21 @@ def _grid(name: str, values, allowed: str, valid) -> list[float]:
 def _check_solves(limits, what: str, solves: int) -> None:
     """Count ``solves`` of the edge against ``limits`` (:data:`EDGE_SOLVE_STEPS` each) before the first."""
     check_limits(limits).check(f"{what} ({solves} solves of the edge)", steps=float(solves) * EDGE_SOLVE_STEPS)
+
+
+def _onset_solves(params: Parameters, angles: list[float], profile: SimulatedProfile) -> int:
+    """The solves of the edge the slip-onset depths at ``angles`` take at most, at any speed: one to ``d_max`` and one
+    more each time the way in doubles, up to the rate-independent adhesive onset (18) (the phase diagram's
+    ``d_crit_jkr``), which bounds the rate-dependent one from above (an advancing edge's work is below ``Δγ0``, so its
+    radius lies below the ``Δγ0`` branch's and the springs slide sooner), at most :data:`_MAX_DOUBLINGS` per angle
+    (a steep angle took 35 solves where one was counted: 1000 of them were allowed, for hours)."""
+    from mdr_events.theory.phase import phase_diagram  # (the closed forms of every indenter the simulators take)
+
+    bound = phase_diagram(params, np.array(angles), scenario="A", profile=profile)["d_crit_jkr"].values
+    with np.errstate(divide="ignore", invalid="ignore"):
+        doublings = np.ceil(np.log2(np.maximum(np.abs(bound) / params.d_max, 1.0)))
+    solves = 1.0 + np.nan_to_num(doublings, nan=_MAX_DOUBLINGS, posinf=_MAX_DOUBLINGS)
+    return int(np.sum(np.minimum(solves, _MAX_DOUBLINGS)))
 
 
 def _bracketed_root(margin, what: str) -> float:
@@ -304,8 +320,9 @@ def phase_diagram_at_speeds(params: Parameters, law: RateDependentAdhesion, spee
     method : str, optional
         The edge's ``solve_ivp`` method (Radau, the reference; LSODA about seven times faster within 2e-9).
     limits : Limits or None, optional
-        The solves of the edge allowed (one per speed and angle, :data:`EDGE_SOLVE_STEPS` steps each; ``None``: the
-        defaults), checked before the first.
+        The solves of the edge allowed (:data:`EDGE_SOLVE_STEPS` steps each; ``None``: the defaults), checked before
+        the first: per speed and angle one to ``d_max`` and one per doubling of the way in up to the
+        rate-independent onset (18), which bounds the rate-dependent one.
 
     Returns
     -------
@@ -321,8 +338,10 @@ def phase_diagram_at_speeds(params: Parameters, law: RateDependentAdhesion, spee
     """
     speeds = _grid("speeds", speeds, "finite numbers > 0 (m/s)", lambda v: v > 0.0)
     angles = _grid("alpha", alpha, "numbers of degrees in (0, 90)", lambda a: 0.0 < a < 90.0)
+    for speed in speeds:  # (every argument in its own words before the solves are counted)
+        _checked(params, law, speed, profile)
     _check_solves(limits, f"the phase diagram at {len(speeds)} speeds and {len(angles)} angles",
-                  len(speeds) * len(angles))
+                  len(speeds) * _onset_solves(params, angles, profile))
     depths = np.array([[slip_onset_depth_at_speed(params, law, speed, angle, profile, EDGE_RTOL, method)
                         for angle in angles] for speed in speeds])
     dataset = xr.Dataset(

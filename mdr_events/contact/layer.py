@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import enum
 import math
+import sys
 from dataclasses import dataclass
 from typing import Any, Mapping
 
@@ -111,10 +112,14 @@ class Layer:
         Raises
         ------
         TypeError, ValueError
-            ``radius`` not a finite number >= 0.
+            ``radius`` not a finite number >= 0, or one whose ``a/h`` overflows (``inf`` before).
         """
         radius = check_real("radius", radius, "a finite number >= 0 (m)", lambda value: value >= 0.0)
-        return radius / self.thickness
+        relative = radius / self.thickness
+        if not math.isfinite(relative):
+            raise ValueError(f"radius={radius!r} is not allowed on {self.describe()}: a/h overflows; allowed: a radius "
+                             f"whose a/h is a finite double (at most {self.thickness * sys.float_info.max:.3g} m)")
+        return relative
 
     def describe(self) -> str:
         """The layer in words.

@@ -384,9 +384,14 @@ def check_half_space(contact: Contact, where: str) -> Contact:
 
     Raises
     ------
+    TypeError
+        ``contact`` not a Contact (an ``AttributeError`` before).
     ValueError
         A layer of finite thickness.
     """
+    if not isinstance(contact, Contact):
+        raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed in {where}; allowed: a "
+                        "mdr_events.Contact")
     if contact.layer.is_half_space:
         return contact
     raise ValueError(f"Contact.layer={contact.layer!r} is not allowed in {where} yet; allowed: the half-space (h = "

@@ -32,9 +32,7 @@ from __future__ import annotations
 
 import functools
 import hashlib
-import os
 import pickle
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
@@ -42,6 +40,7 @@ from typing import Callable
 import numpy as np
 import sympy as sp
 
+from mdr_events.theory.cache_files import cache_directory, read_cached, store_cached
 from mdr_events.validation import shown
 
 __all__ = [
@@ -347,11 +346,8 @@ def cache_path() -> Path | None:
     pathlib.Path or None
         The cache file ``relations-<hash>.pickle`` in that directory, or ``None``.
     """
-    if os.environ.get("MDR_EVENTS_NO_CACHE"):
-        return None
-    root = os.environ.get("MDR_EVENTS_CACHE_DIR") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"), "mdr_events")
-    return Path(root) / f"relations-{_SOURCE_DIGEST}.pickle"
+    root = cache_directory()
+    return None if root is None else root / f"relations-{_SOURCE_DIGEST}.pickle"
 
 
 def _fields(rel: Relation) -> tuple:
@@ -366,26 +362,17 @@ def _cached(name: str, build: Callable[[], list[Relation]],
     its own source). Any trouble with the cache (unwritable, damaged, foreign) falls back to deriving afresh.
     """
     path = (where or cache_path)()
-    store: dict = {}
-    if path is not None and path.exists():
-        try:
-            with open(path, "rb") as handle:
-                store = pickle.load(handle)
-            if name in store:
-                return [Relation(*fields) for fields in store[name]]
-        except Exception:  # a damaged or foreign cache file is only a missed shortcut
-            store = {}
+    store = read_cached(path, pickle.load)  # (missing, unreachable or damaged: None)
+    store = store if isinstance(store, dict) else {}
+    try:
+        if name in store:
+            return [Relation(*fields) for fields in store[name]]
+    except Exception:  # noqa: BLE001 - a foreign cache file is only a missed shortcut
+        store = {}
     relations_built = build()
     if path is not None:
         store[name] = [_fields(rel) for rel in relations_built]
-        try:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-            with os.fdopen(handle, "wb") as stream:
-                pickle.dump(store, stream)
-            os.replace(temporary, path)
-        except OSError:
-            pass
+        store_cached(path, lambda stream: pickle.dump(store, stream))
     return relations_built
 
 

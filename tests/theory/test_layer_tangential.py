@@ -8,6 +8,7 @@ The table of ν = 0.5 is read from the user's cache (built once, about 10 s); th
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -242,5 +243,5 @@ def test_the_displacement_check_on_the_half_space_and_bad_input():
     u0, u2 = T.contact_displacement(T.solve_tangential_punch(0.0, NU), RHO)
     np.testing.assert_allclose(u0, 1.0, rtol=ROUND_OFF)
     np.testing.assert_allclose(u2, 0.0, atol=ROUND_OFF)
-    with pytest.raises(ValueError, match="rho="):
+    with pytest.raises(ValueError, match=re.escape("rho[1]=1.0 is not allowed")):
         T.contact_displacement(T.solve_tangential_punch(1.0, NU), [0.5, 1.0])

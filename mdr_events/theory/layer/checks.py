@@ -1,10 +1,12 @@
 """What the layer's relations take and give, checked in one place (issue 32, round twelve).
 
-Every relation of :mod:`mdr_events.theory.layer` checks its arguments by their names before it runs (radii ``a`` and
-``r`` finite and ≥ 0, coordinates ``x`` and depths ``d`` finite, ``E_star`` > 0, ``dgamma`` ≥ 0, ``nu`` in
-``[0, 0.5]``, a :class:`~mdr_events.Layer`, a callable slope, arrays that broadcast) and its result after: a value
-that is not finite (a product beyond the double range, a slope of ``nan``) is a one-line ``ValueError`` naming the
-relation and its scalar arguments, never ``nan``, ``inf`` or a raw ``ZeroDivisionError``.
+Every relation of :mod:`mdr_events.theory.layer` and of :mod:`mdr_events.theory.layer_tangential` (round thirteen:
+the tangential ones had been left out) checks its arguments by their names before it runs (radii ``a`` and ``r``
+finite and ≥ 0, coordinates ``x`` and depths ``d``, ``depth``, ``profile_depth`` finite, ``E_star`` and ``G_star``
+> 0, ``dgamma``, ``tau0`` and ``mu`` ≥ 0, ``nu`` in ``[0, 0.5]``, a :class:`~mdr_events.Layer`, a callable slope,
+arrays that broadcast) and its result after: a value that is not finite (a product beyond the double range, a slope
+of ``nan``) is a one-line ``ValueError`` naming the relation and its scalar arguments, never ``nan``, ``inf`` or a
+raw ``ZeroDivisionError``.
 """
 
 from __future__ import annotations
@@ -27,11 +29,16 @@ _ARGUMENTS = {
     "x": ("finite numbers (m)", None),
     "r": ("finite numbers >= 0 (m)", lambda value: value >= 0.0),
     "d": ("finite numbers (m)", None),
+    "depth": ("finite numbers (m)", None),
+    "profile_depth": ("finite numbers (m)", None),
 }
 #: The scalar arguments of the relations: name -> (what is allowed, the test).
 _SCALARS = {
     "E_star": ("a finite number > 0 (Pa)", lambda value: value > 0.0),
+    "G_star": ("a finite number > 0 (Pa)", lambda value: value > 0.0),
     "dgamma": ("a finite number >= 0 (J/m²)", lambda value: value >= 0.0),
+    "tau0": ("a finite number >= 0 (Pa)", lambda value: value >= 0.0),
+    "mu": ("a finite number >= 0", lambda value: value >= 0.0),
 }
 
 
@@ -124,7 +131,7 @@ def checked_relation(function):
         given = bound.arguments
         _check_arguments(function.__name__, given)
         scalars = {name: value for name, value in given.items()
-                   if np.ndim(value) == 0 and name != "layer" and not callable(value)}
+                   if np.ndim(value) == 0 and name not in ("layer", "limits") and not callable(value)}
         try:
             with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):
                 result = function(*args, **kwargs)

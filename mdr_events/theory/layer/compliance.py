@@ -37,6 +37,12 @@ def _finite_reals(name: str, value, allowed: str, valid) -> np.ndarray:
     return finite_reals(name, value, allowed, valid)
 
 
+def _kernel_argument(v) -> np.ndarray:
+    """A kernel's argument ``v`` (the normal one's and the tangential ones'): finite, ``|v| <=`` :data:`KERNEL_V_MAX`."""
+    return _finite_reals("v", v, f"finite numbers with |v| <= {KERNEL_V_MAX:g} (the quadrature's range)",
+                         lambda value: np.abs(value) <= KERNEL_V_MAX)
+
+
 def _base(base: LayerBase | str) -> LayerBase:
     return base if isinstance(base, LayerBase) else Layer(1.0, base).base
 
@@ -179,8 +185,7 @@ def kernel(v, nu: float, base: LayerBase | str = LayerBase.BONDED) -> np.ndarray
     ValueError
         ``nu`` outside ``[0, 0.5]`` or ``base`` unknown.
     """
-    v = _finite_reals("v", v, f"finite numbers with |v| <= {KERNEL_V_MAX:g} (the quadrature's range)",
-                      lambda value: np.abs(value) <= KERNEL_V_MAX)
+    v = _kernel_argument(v)
     nu, base = _nu(nu), _base(base)
     return _kernel_for(nu, base, float(np.max(np.abs(v), initial=0.0)) + 1.0)(v)
 

@@ -20,14 +20,16 @@ from mdr_events.contact.indenters import Paraboloid, PowerLaw
 from mdr_events.contact.layer import Layer
 from mdr_events.contact.model import Contact
 from mdr_events.io.datasets import register_schema, stamp
+from mdr_events.limits import Limits, check_limits
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
 from mdr_events.theory.layer.force_control import pull_off
 from mdr_events.theory.layer.relations import _abel_factor, _power_law, branch_depth, normal_force
-from mdr_events.validation import check_count, check_real, real_array, shown
+from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_count, check_real, real_array, shown
 
 __all__ = ["layer_normal_curve", "layer_indentation_cycle", "layer_pull_off_curve", "LAYER_CURVE_CONTENT",
-           "LAYER_CYCLE_CONTENT", "LAYER_PULL_OFF_CONTENT"]
+           "LAYER_CYCLE_CONTENT", "LAYER_PULL_OFF_CONTENT", "CURVE_POINT_STEPS", "PULL_OFF_STEPS",
+           "CURVE_BYTES_PER_POINT"]
 
 #: The ``content`` attribute of :func:`layer_normal_curve`.
 LAYER_CURVE_CONTENT = "layer normal curve"
@@ -53,6 +55,22 @@ _SCAN_BELOW = 1e-4
 #: The scan's scale without adhesion at depth 0 (m): no contact to scan, any positive radius serves.
 _SMALLEST_SCALE = 1e-9
 
+#: What one point of a normal curve or a cycle counts against :attr:`~mdr_events.Limits.steps`: its share of the scan
+#: and :data:`_BISECTIONS` evaluations of the branch, about 20 µs here, where the discrete model's step takes about
+#: 1.5 µs (its default 2e7 steps about 30 s), so that a curve is checked before it runs (1e9 samples of a cycle were
+#: taken, and the process killed for its memory).
+CURVE_POINT_STEPS = 15.0
+#: What one thickness of the pull-off curve counts against :attr:`~mdr_events.Limits.steps`: a scan of the branch
+#: force and Brent's refinement, about 8 ms here.
+PULL_OFF_STEPS = 5000.0
+#: The memory of one point of a curve (its variables and the bisection's temporaries: 110 to 142 bytes measured),
+#: counted against :attr:`~mdr_events.Limits.memory`.
+CURVE_BYTES_PER_POINT = 256.0
+
+#: What the scales of a curve's contact must be (:func:`_check_scales`).
+_SCALES = (f"a contact whose scales lie within {SCALE_MIN:.2g} to {SCALE_MAX:.2g} in SI units, so that their products "
+           "stay finite in double precision")
+
 #: The variables' units and long names.
 _VARIABLES = {"contact_radius": ("m", "contact radius a"), "normal_force": ("N", "normal force F_N"),
               "contact_area": ("m2", "contact area pi a^2"), "relative_radius": ("1", "contact radius over thickness a/h"),
@@ -70,14 +88,60 @@ def _material(contact: Any) -> tuple[float, float, Layer]:
     return contact.elastomer.E_star, contact.elastomer.nu, contact.layer
 
 
-def _radius_scale(contact: Contact, dgamma: float, depth: float) -> tuple[float, float]:
-    """The scan's range in ``a``: from far below the half-space's pull-off radius to where ``d(a) ≥ depth`` (the
-    largest ``a/h`` of the tables at most)."""
-    E_star, nu, layer = _material(contact)
+def _half_space_radii(contact: Contact, dgamma: float, depth: float) -> tuple[float, float]:
+    """The half-space's pull-off radius of ``dgamma`` (``a^(2n−1) = 9Δγ/(2E* n² κₙ² c²)``) and its radius without
+    adhesion at ``depth`` (``κₙ c aⁿ = d``, 0 at ``d ≤ 0``): the scales of a scan (m)."""
+    E_star, _, _ = _material(contact)
     c, n = _power_law(contact.indenter)
     kappa = _abel_factor(n)
     pulled = (9.0 * dgamma / (2.0 * E_star * n**2 * kappa**2 * c**2)) ** (1.0 / (2.0 * n - 1.0))
     hertz = (max(depth, 0.0) / (kappa * c)) ** (1.0 / n)
+    return pulled, hertz
+
+
+def _check_scales(contact: Contact, depth: float, what: str) -> None:
+    """The scales a curve computes with at the depth ``depth`` (> 0), each within ``SCALE_MIN`` to ``SCALE_MAX`` (so
+    that their products stay finite), as the simulators' are (``R = 1e308`` gave a ``ZeroDivisionError``, ``1e-300``
+    an ``OverflowError``); else the one-line ``ValueError`` naming the first and ``what``."""
+    E_star, _, _ = _material(contact)
+    c, _ = _power_law(contact.indenter)
+    scales = [("E*", E_star, "Pa"), ("the profile's c", c, "SI units"), ("the depth", depth, "m")]
+    for dgamma, name in ((contact.adhesion.dgamma1, "Δγ1"), (contact.adhesion.dgamma0, "Δγ0")):
+        try:
+            pulled, hertz = _half_space_radii(contact, dgamma, depth)
+        except (ZeroDivisionError, OverflowError) as error:  # (a power of a scale beyond the double range)
+            raise ValueError(f"{what}: the half-space's radii overflow ({error}) ({contact!r}); allowed: {_SCALES}")
+        scales.append(("the half-space's radius at the depth", hertz, "m"))
+        if dgamma > 0.0:
+            scales += [(name, dgamma, "J/m²"), (f"the half-space's pull-off radius of {name}", pulled, "m")]
+    for name, value, unit in scales:
+        if not SCALE_MIN <= abs(value) <= SCALE_MAX:
+            raise ValueError(f"{what}: {name} is {value:.3g} {unit} ({contact!r}); allowed: {_SCALES}")
+
+
+def _checked(contact: Any, depth: float, what: str, points: int, steps_each: float, limits: Limits | None) -> None:
+    """A curve's contact checked before it runs: a paraboloid or power law (:func:`_material`), the scales it computes
+    with at ``depth`` (:func:`_check_scales`), and the curve's ``points`` (each ``steps_each`` steps) within
+    ``limits``."""
+    _material(contact)
+    _check_scales(contact, depth, what)
+    check_limits(limits).check(f"{what} ({points} points)", samples=float(points), steps=steps_each * points,
+                               memory=CURVE_BYTES_PER_POINT * points)
+
+
+def _grid(name: str, values, allowed: str, valid) -> np.ndarray:
+    """A curve's depths or thicknesses: real numbers on one non-empty axis for which ``valid`` holds (one line)."""
+    array = np.atleast_1d(real_array(name, values, allowed)).astype(float)
+    if array.ndim != 1 or array.size == 0 or not np.all(valid(array)):
+        raise ValueError(f"{name}={shown(values)} is not allowed; allowed: {allowed}, one non-empty axis")
+    return array
+
+
+def _radius_scale(contact: Contact, dgamma: float, depth: float) -> tuple[float, float]:
+    """The scan's range in ``a``: from far below the half-space's pull-off radius to where ``d(a) ≥ depth`` (the
+    largest ``a/h`` of the tables at most)."""
+    E_star, nu, layer = _material(contact)
+    pulled, hertz = _half_space_radii(contact, dgamma, depth)
     scale = max(pulled, hertz) or _SMALLEST_SCALE
     low, high = _SCAN_BELOW * scale, 2.0 * scale
     ceiling = LAMBDA_MAX * layer.thickness
@@ -112,7 +176,10 @@ def _stable_radius(contact: Contact, dgamma: float, depths: np.ndarray) -> np.nd
         above = depth_of(middle) >= depths
         lower, upper = np.where(above, lower, middle), np.where(above, middle, upper)
     radius = np.exp(0.5 * (lower + upper))
-    return np.where(depths >= stable_depths[0], radius, np.nan)
+    radius = np.where(depths >= stable_depths[0], radius, np.nan)
+    if dgamma == 0.0:  # (without adhesion the branch d = g(a) starts at d = 0 with a = 0: the first touch)
+        radius = np.where(depths == 0.0, 0.0, radius)
+    return radius
 
 
 def _variables(contact: Contact, depth, radius, dims: tuple[str, ...]) -> dict[str, xr.Variable]:
@@ -129,17 +196,16 @@ def _variables(contact: Contact, depth, radius, dims: tuple[str, ...]) -> dict[s
 
 
 def _stamped(dataset: xr.Dataset, contact: Contact, d_max: float, content: str) -> xr.Dataset:
-    """The provenance, the contact's attributes (its layer's among them) and ``content``."""
+    """The provenance, the contact's attributes (its layer's among them) and ``content``: the parameters with the depth
+    ``d_max`` and the paper's speed, which every result the package writes and reads holds (the pull-off curve had
+    none, and ``write_netcdf`` refused it)."""
     stamp(dataset, contact.parameters(d_max, PAPER_V), content=content)
     dataset.attrs.update(contact.to_attrs())
     dataset.attrs.update(contact.layer.to_attrs())  # (the half-space too: the curve is about the layer)
-    if content == LAYER_PULL_OFF_CONTENT:  # (no motion: no depth of one)
-        for key in ("param_d_max", "param_d_max_units", "param_v", "param_v_units"):
-            dataset.attrs.pop(key, None)
     return dataset
 
 
-def layer_normal_curve(contact: Contact, depths) -> xr.Dataset:
+def layer_normal_curve(contact: Contact, depths, limits: Limits | None = None) -> xr.Dataset:
     r"""The adhesive branches of a paraboloid or power law on the contact's layer against the depth.
 
     .. math:: d = g(a) - \sqrt{\frac{4\pi a\,\Delta\gamma}{K'(a)}} \quad (9), \qquad
@@ -154,7 +220,10 @@ def layer_normal_curve(contact: Contact, depths) -> xr.Dataset:
     contact : Contact
         A paraboloid or power law with its elastomer, adhesion and layer (``Contact.layer``; the half-space too).
     depths : float or array_like
-        The depths ``d`` in m (finite; negative ones are tensile).
+        The depths ``d`` in m (finite; negative ones are tensile), one non-empty axis.
+    limits : Limits or None, default None
+        The work and memory the curve may take (:data:`CURVE_POINT_STEPS` steps and :data:`CURVE_BYTES_PER_POINT`
+        bytes per point of each branch; ``None``: the defaults), checked before it runs.
 
     Returns
     -------
@@ -168,22 +237,23 @@ def layer_normal_curve(contact: Contact, depths) -> xr.Dataset:
     TypeError
         ``contact`` not a Contact, depths not real numbers.
     ValueError
-        Another indenter, a non-finite depth, or a radius beyond the tables (``a/h > 64``).
+        Another indenter, a non-finite depth, no depth, the contact's scales beyond the double range, a radius beyond
+        the tables (``a/h > 64``), or the points beyond ``limits`` (``ResourceLimitError``).
     """
-    depth = np.atleast_1d(real_array("depths", depths, "finite numbers (m)")).astype(float)
-    if depth.ndim != 1 or not np.all(np.isfinite(depth)):
-        raise ValueError(f"depths={shown(depths)} is not allowed; allowed: finite numbers (m), one axis")
-    _material(contact)
+    depth = _grid("depths", depths, "finite numbers (m)", np.isfinite)
+    deepest = float(np.max(depth))
+    _checked(contact, deepest if deepest > 0.0 else PAPER_D_MAX, f"layer_normal_curve to the depth {deepest!r} m",
+             2 * depth.size, CURVE_POINT_STEPS, limits)
     radius = np.array([_stable_radius(contact, dgamma, depth)
                        for dgamma in (contact.adhesion.dgamma0, contact.adhesion.dgamma1)])
     coords = {"branch": ("branch", ["dgamma0", "dgamma1"], {"units": "1", "long_name": "adhesive branch"}),
               "depth": ("depth", depth, {"units": "m", "long_name": _VARIABLES["depth"][1]})}
     dataset = xr.Dataset(_variables(contact, depth[None, :], radius, ("branch", "depth")), coords=coords)
-    deepest = float(np.max(depth))
     return _stamped(dataset, contact, deepest if deepest > 0.0 else PAPER_D_MAX, LAYER_CURVE_CONTENT)
 
 
-def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201) -> xr.Dataset:
+def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201,
+                            limits: Limits | None = None) -> xr.Dataset:
     r"""Indentation to ``d_max`` on the ``Δγ0`` branch and back under depth control to the jump-off on ``Δγ1``.
 
     From the first touch (``d = 0``, the radius jumps in on ``Δγ0``) the radius grows on the ``Δγ0`` branch of (9);
@@ -199,6 +269,9 @@ def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201) 
         The deepest depth in m, > 0.
     samples : int, default 201
         Samples of each of the three stages (loading, pinned, shrinking).
+    limits : Limits or None, default None
+        The work and memory the cycle may take (as :func:`layer_normal_curve`'s, per sample; ``None``: the defaults),
+        checked before it runs.
 
     Returns
     -------
@@ -212,10 +285,12 @@ def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201) 
     TypeError
         ``contact`` not a Contact.
     ValueError
-        Another indenter, ``d_max`` not a finite number > 0, ``Δγ1 < Δγ0``, or ``samples`` < 2.
+        Another indenter, ``d_max`` not a finite number > 0, ``Δγ1 < Δγ0``, ``samples`` < 2, the contact's scales
+        beyond the double range, or the samples beyond ``limits`` (``ResourceLimitError``).
     """
     d_max = check_real("d_max", d_max, "a finite number > 0 (m)", lambda value: value > 0.0)
     samples = check_count("samples", samples, 2)
+    _checked(contact, d_max, f"layer_indentation_cycle to d_max={d_max!r} m", 3 * samples, CURVE_POINT_STEPS, limits)
     E_star, nu, layer = _material(contact)
     low, high = contact.adhesion.dgamma0, contact.adhesion.dgamma1
     if high < low:
@@ -239,6 +314,8 @@ def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201) 
 def _jump_off(contact: Contact, dgamma: float) -> tuple[float, float]:
     """The least depth of the branch of ``dgamma`` and its radius: the jump-off under depth control (m, m)."""
     E_star, nu, layer = _material(contact)
+    if dgamma == 0.0:  # (the branch d = g(a) rises from the first touch: its least depth is 0, at a = 0)
+        return 0.0, 0.0
     low, high = _radius_scale(contact, dgamma, 0.0)
     logs = np.linspace(math.log(low), math.log(high), _SCAN_POINTS)
 
@@ -259,7 +336,7 @@ def _least(depth_of, logs: np.ndarray, best: int) -> tuple[float, float]:
     return float(found.fun), float(found.x)
 
 
-def layer_pull_off_curve(contact: Contact, thicknesses) -> xr.Dataset:
+def layer_pull_off_curve(contact: Contact, thicknesses, limits: Limits | None = None) -> xr.Dataset:
     r"""The pull-off force under force control against the layer's thickness, on the contact's base, with ``Δγ1``.
 
     .. math:: F_\mathrm{po}(h) = \min_a\,[F_0(a) - K(a)\,\Delta l(a)] \qquad (10)
@@ -271,7 +348,10 @@ def layer_pull_off_curve(contact: Contact, thicknesses) -> xr.Dataset:
     contact : Contact
         A paraboloid or power law with its elastomer, adhesion and the layer's base (its thickness is replaced).
     thicknesses : float or array_like
-        The thicknesses ``h`` in m (> 0; ``inf`` the half-space), one axis.
+        The thicknesses ``h`` in m (> 0; ``inf`` the half-space), one non-empty axis.
+    limits : Limits or None, default None
+        The work the curve may take (:data:`PULL_OFF_STEPS` steps per thickness; ``None``: the defaults), checked
+        before it runs.
 
     Returns
     -------
@@ -284,13 +364,12 @@ def layer_pull_off_curve(contact: Contact, thicknesses) -> xr.Dataset:
     TypeError
         ``contact`` not a Contact.
     ValueError
-        Another indenter, a thickness not > 0, or a pull-off beyond the tables (``a/h > 64``).
+        Another indenter, a thickness not > 0, no thickness, the contact's scales beyond the double range, a pull-off
+        beyond the tables (``a/h > 64``), or the thicknesses beyond ``limits`` (``ResourceLimitError``).
     """
     E_star, nu, _ = _material(contact)
-    h = np.atleast_1d(real_array("thicknesses", thicknesses, "numbers > 0 (m), inf the half-space")).astype(float)
-    if h.ndim != 1 or not np.all(h > 0.0):
-        raise ValueError(f"thicknesses={shown(thicknesses)} is not allowed; allowed: numbers > 0 (m), inf the "
-                         "half-space, one axis")
+    h = _grid("thicknesses", thicknesses, "numbers > 0 (m), inf the half-space", lambda values: values > 0.0)
+    _checked(contact, PAPER_D_MAX, "layer_pull_off_curve", h.size, PULL_OFF_STEPS, limits)
     found = [pull_off(contact.indenter, E_star, nu, contact.adhesion.dgamma1, Layer(float(value), contact.layer.base))
              for value in h]
     values = {"pull_off_force": ([p.force for p in found], "N", "pull-off force (force control, dgamma1)"),

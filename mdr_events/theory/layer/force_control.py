@@ -93,8 +93,7 @@ def pull_off(profile, E_star: float, nu: float, dgamma: float, layer: Layer) -> 
     def force(log_radius):
         return branch_normal_force(np.exp(log_radius), profile, E_star, nu, dgamma, layer)
 
-    forces = force(logs)
-    best = int(np.argmin(forces))
+    best = int(np.argmin(force(logs))) if logs.size >= 3 else 0  # (a layer so thin that no scan point fits on it)
     if best in (0, len(logs) - 1):
         raise ValueError(f"the pull-off radius lies beyond a/h = {LAMBDA_MAX:g} or outside a0·10^±3 (a0 = {a0:.6g} m "
                          f"on the half-space); allowed: a layer with h > {a0 / LAMBDA_MAX:.3g} m or so")

@@ -17,7 +17,8 @@ from mdr_events.theory.layer.compliance import _base, _ChebyshevKernel, _kernel_
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.validation import check_count, check_real, shown
 
-__all__ = ["nystrom_nodes", "PunchSolution", "solve_punch", "LAMBDA_SOLVE_MAX", "SOLVE_BYTES_PER_PAIR"]
+__all__ = ["nystrom_nodes", "PunchSolution", "solve_punch", "LAMBDA_SOLVE_MAX", "SOLVE_BYTES_PER_PAIR",
+           "SOLVE_STEPS_PER_PAIR"]
 
 #: Gauss–Legendre nodes of the Fredholm equation: ``BASE_NODES + NODES_PER_LAMBDA λ``, rounded up to 16 (converged
 #: to 1e-10 relative or better up to ``λ = 200``; the tests check it against more nodes).
@@ -30,6 +31,10 @@ LAMBDA_SOLVE_MAX = 200.0
 #: Memory of a Nyström solve per pair of nodes (the kernel's interpolants on the ``nodes²`` grid twice and the
 #: matrix), in bytes, checked against :class:`~mdr_events.Limits`.
 SOLVE_BYTES_PER_PAIR = 400.0
+#: What a pair of nodes of a direct solve counts against :attr:`~mdr_events.Limits.steps` (its kernel's entries and
+#: its share of the LU: 0.2 to 0.7 µs here, where the discrete model's step takes about 1.5 µs), so that many solves
+#: are counted before the first (10**7 radii of an equivalent profile were taken: hours).
+SOLVE_STEPS_PER_PAIR = 1.0
 
 
 def nystrom_nodes(lam: float) -> int:
@@ -201,6 +206,64 @@ class PunchSolution:
         return out
 
 
+def solve_size(lam: float, nodes: int | None, limits: Limits | None = None) -> int:
+    """The nodes of a direct solve at ``λ = a/h`` (the normal punch's or the tangential one's), checked before anything
+    is built: ``λ`` up to :data:`LAMBDA_SOLVE_MAX` and the nodes' memory within ``limits``.
+
+    Parameters
+    ----------
+    lam : float
+        ``a/h``, a number ``>= 0`` (checked by the caller).
+    nodes : int or None
+        The nodes asked (``None``: :func:`nystrom_nodes`).
+    limits : Limits or None, default None
+        The memory the solve may take (:data:`SOLVE_BYTES_PER_PAIR` per pair of nodes; ``None``: the defaults).
+
+    Returns
+    -------
+    int
+        The nodes.
+
+    Raises
+    ------
+    ValueError
+        ``lam`` beyond :data:`LAMBDA_SOLVE_MAX`, ``nodes`` not an integer >= 2 (``TypeError`` for another type), the
+        memory beyond ``limits`` (``ResourceLimitError``).
+    """
+    if not lam <= LAMBDA_SOLVE_MAX:
+        raise ValueError(f"a/h={lam!r} is not allowed for a direct solve; allowed: 0 <= a/h <= {LAMBDA_SOLVE_MAX:g} "
+                         "(where its nodes are converged; the thin-layer limits of theory.layer_symbolic beyond)")
+    count = nystrom_nodes(lam) if nodes is None else check_count("nodes", nodes, 2)
+    check_limits(limits).check(f"the layer's Nyström solve with {count} nodes (a/h = {lam:g})",
+                               memory=SOLVE_BYTES_PER_PAIR * float(count) ** 2)
+    return count
+
+
+def check_solves(lams: np.ndarray, limits: Limits | None, what: str) -> None:
+    """Direct solves at each of ``lams`` (``a/h``), one each, checked before the first: the largest within
+    :data:`LAMBDA_SOLVE_MAX` (and its nodes' memory within ``limits``), and their pairs of nodes
+    (:data:`SOLVE_STEPS_PER_PAIR` steps each) within ``limits``.
+
+    Parameters
+    ----------
+    lams : numpy.ndarray
+        The ``a/h`` of the solves, ``>= 0``.
+    limits : Limits or None
+        The limits (``None``: the defaults).
+    what : str
+        Names the computation in the message.
+
+    Raises
+    ------
+    ValueError
+        An ``a/h`` beyond :data:`LAMBDA_SOLVE_MAX`; the solves beyond ``limits`` (``ResourceLimitError``).
+    """
+    solve_size(float(np.max(lams, initial=0.0)), None, limits)
+    nodes = 16.0 * np.ceil((BASE_NODES + NODES_PER_LAMBDA * lams) / 16.0)  # (nystrom_nodes, for every solve)
+    check_limits(limits).check(f"{what} ({lams.size} direct solves)",
+                               steps=SOLVE_STEPS_PER_PAIR * float(np.sum(nodes**2)))
+
+
 @functools.lru_cache(maxsize=64)
 def _gauss_legendre(count: int) -> tuple[np.ndarray, np.ndarray]:
     """Gauss–Legendre nodes and weights on ``[0, 1]`` (kept: NumPy's eigenvalue solve is the table's main cost)."""
@@ -215,12 +278,7 @@ def _solve(lam: float, nu: float, base: LayerBase, rhs: Callable[[np.ndarray], n
            limits: Limits | None = None) -> PunchSolution:
     """The Nyström solve of (L1) with the right-hand sides ``1`` and ``rhs(σ)`` (columns); ``λ`` up to
     :data:`LAMBDA_SOLVE_MAX` and the nodes' memory within ``limits`` (checked before anything is built)."""
-    if not lam <= LAMBDA_SOLVE_MAX:
-        raise ValueError(f"a/h={lam!r} is not allowed for a direct solve; allowed: 0 <= a/h <= {LAMBDA_SOLVE_MAX:g} "
-                         "(where its nodes are converged; the thin-layer limits of theory.layer_symbolic beyond)")
-    count = nystrom_nodes(lam) if nodes is None else nodes
-    check_limits(limits).check(f"the layer's Nyström solve with {count} nodes (a/h = {lam:g})",
-                               memory=SOLVE_BYTES_PER_PAIR * float(count) ** 2)
+    count = solve_size(lam, nodes, limits)
     sigma, weights = _gauss_legendre(count)
     right = np.column_stack([np.ones(count), rhs(sigma)])
     if lam == 0.0:
@@ -274,8 +332,6 @@ def solve_punch(lam: float, nu: float, base: LayerBase | str = LayerBase.BONDED,
         raise TypeError(f"exponents={shown(exponents)} ({type(exponents).__name__}) is not allowed; allowed: a "
                         "sequence of numbers > 0, e.g. (2.0,)")
     exps = tuple(check_real("exponents", n, "numbers > 0", lambda value: value > 0.0) for n in exponents)
-    if nodes is not None:
-        nodes = check_count("nodes", nodes, 2)
     return _solve(lam, _nu(nu), _base(base), lambda s: np.power.outer(s, np.array(exps, dtype=float)),
                   (1.0,) * len(exps), exps, nodes, limits)
 

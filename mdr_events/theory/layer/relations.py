@@ -15,7 +15,8 @@ import numpy as np
 from mdr_events.contact.layer import Layer
 from mdr_events.theory.layer.checks import checked_relation
 from mdr_events.theory.layer.compliance import _nu
-from mdr_events.theory.layer.punch import _solve, solve_punch
+from mdr_events.limits import Limits
+from mdr_events.theory.layer.punch import _solve, check_solves, solve_punch
 from mdr_events.theory.layer.tables import layer_table
 from mdr_events.validation import check_real
 
@@ -241,7 +242,8 @@ _ABEL_NODES = 64
 
 
 @checked_relation
-def equivalent_profile(x, profile_slope: Callable[[np.ndarray], np.ndarray], nu: float, layer: Layer) -> np.ndarray:
+def equivalent_profile(x, profile_slope: Callable[[np.ndarray], np.ndarray], nu: float, layer: Layer,
+                       limits: Limits | None = None) -> np.ndarray:
     r"""The generalized MDR profile ``g(x)`` of an axisymmetric profile ``f(r)`` on the layer (L4).
 
     ``g`` is defined by ``f(r) = ∫₀ʳ [1 − φ(r; ã)] g'(ã) dã`` (the superposition of flat punches); it is the depth
@@ -264,6 +266,9 @@ def equivalent_profile(x, profile_slope: Callable[[np.ndarray], np.ndarray], nu:
         Poisson's ratio, in ``[0, 0.5]``.
     layer : Layer
         The layer.
+    limits : Limits or None, default None
+        The work the solves may take (:data:`~mdr_events.theory.layer.punch.SOLVE_STEPS_PER_PAIR` steps per pair of
+        each solve's nodes; ``None``: the defaults), checked before the first.
 
     Returns
     -------
@@ -273,9 +278,12 @@ def equivalent_profile(x, profile_slope: Callable[[np.ndarray], np.ndarray], nu:
     Raises
     ------
     ValueError
-        ``nu`` outside ``[0, 0.5]``.
+        ``nu`` outside ``[0, 0.5]``, an ``|x|/h`` beyond :data:`~mdr_events.theory.layer.LAMBDA_SOLVE_MAX`, the
+        solves beyond ``limits`` (``ResourceLimitError``).
     """
     x = np.abs(np.asarray(x, dtype=float))
+    check_solves(np.zeros(x.shape) if layer.is_half_space else x / layer.thickness, limits,
+                 f"equivalent_profile at {x.size} radii")
     nodes, weights = np.polynomial.legendre.leggauss(_ABEL_NODES)
     angles, weights = np.pi / 4.0 * (nodes + 1.0), np.pi / 4.0 * weights
 

@@ -5,31 +5,15 @@ from __future__ import annotations
 
 import hashlib
 import math
-import os
-import tempfile
 from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 
-__all__ = ["cache_directory", "source_digest", "table_grid", "stored_columns"]
+from mdr_events.theory.cache_files import cache_directory, read_cached, store_cached
+from mdr_events.validation import real_array
 
-
-def cache_directory() -> Path | None:
-    """The directory of the derivations' and the tables' caches (``None``: caching is off).
-
-    ``$MDR_EVENTS_CACHE_DIR`` or ``$XDG_CACHE_HOME/mdr_events`` or ``~/.cache/mdr_events`` (that of
-    :func:`mdr_events.theory.symbolic.cache_path`); ``MDR_EVENTS_NO_CACHE=1`` turns it off.
-
-    Returns
-    -------
-    pathlib.Path or None
-        The directory, or ``None``.
-    """
-    if os.environ.get("MDR_EVENTS_NO_CACHE"):
-        return None
-    return Path(os.environ.get("MDR_EVENTS_CACHE_DIR") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"), "mdr_events"))
+__all__ = ["cache_directory", "source_digest", "table_grid", "stored_columns", "table_argument"]
 
 
 def source_digest(*modules: str) -> str:
@@ -91,22 +75,46 @@ def stored_columns(path: Path | None, names: tuple[str, ...], grid: np.ndarray,
     dict of str to numpy.ndarray
         The columns.
     """
-    if path is not None and path.exists():
-        try:
-            with np.load(path, allow_pickle=False) as stored:
-                columns = {name: stored[name] for name in names}
-            if np.array_equal(columns["s"], grid):
-                return columns
-        except Exception:  # a damaged or foreign file is rebuilt
-            pass
-    columns = build()
-    if path is not None:
-        try:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".npz", dir=path.parent)
-            with os.fdopen(handle, "wb") as stream:
-                np.savez(stream, **columns)
-            os.replace(temporary, path)
-        except OSError:
-            pass
+    def read(stream) -> dict[str, np.ndarray] | None:
+        with np.load(stream, allow_pickle=False) as stored:
+            columns = {name: stored[name] for name in names}
+        return columns if np.array_equal(columns["s"], grid) else None
+
+    columns = read_cached(path, read)  # (a damaged or foreign file, or one the system refuses: rebuilt)
+    if columns is None:
+        columns = build()
+        store_cached(path, lambda stream: np.savez(stream, **columns))
     return columns
+
+
+def table_argument(lam, highest: float, solver: str) -> np.ndarray:
+    """A table's argument ``λ = a/h`` as a float array in ``[0, highest]``, else the one-line error (the normal and the
+    tangential tables alike).
+
+    Parameters
+    ----------
+    lam : float or array_like
+        ``a/h``.
+    highest : float
+        The table's largest ``a/h``.
+    solver : str
+        The direct solve beyond the table, named in the message.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``λ`` as floats.
+
+    Raises
+    ------
+    TypeError
+        ``lam`` not real numbers.
+    ValueError
+        A ``λ`` outside ``[0, highest]`` or not a number.
+    """
+    lam = real_array("lam", lam, f"numbers in [0, {highest:g}] (a/h)")
+    inside = (lam >= 0.0) & (lam <= highest)
+    if not np.all(inside):
+        bad = float(lam[~inside].ravel()[0])
+        raise ValueError(f"a/h={bad!r} is not allowed; allowed: 0 <= a/h <= {highest:g} (the table's range; {solver})")
+    return lam

@@ -14,8 +14,9 @@ import numpy as np
 from mdr_events.contact.layer import LayerBase
 from mdr_events.theory.layer.compliance import LAMBDA_MAX, _base, _nu, kernel
 from mdr_events.theory.layer.punch import solve_punch
-from mdr_events.theory.layer.table_store import cache_directory, source_digest, stored_columns, table_grid
-from mdr_events.validation import check_real, real_array
+from mdr_events.theory.layer.table_store import (cache_directory, source_digest, stored_columns, table_argument,
+                                                 table_grid)
+from mdr_events.validation import check_real
 
 __all__ = ["LAMBDA_MIN", "TABLE_STEP", "LayerTable", "layer_table", "table_cache_path"]
 
@@ -123,12 +124,7 @@ class LayerTable:
         return {name: make_interp_spline(self.columns["s"], self.columns[name], k=5) for name in _COLUMNS}
 
     def _lam(self, lam) -> np.ndarray:
-        lam = real_array("lam", lam, f"numbers in [0, {LAMBDA_MAX:g}] (a/h)")
-        if not np.all((lam >= 0.0) & (lam <= LAMBDA_MAX)):
-            bad = float(lam[~((lam >= 0.0) & (lam <= LAMBDA_MAX))].ravel()[0])
-            raise ValueError(f"a/h={bad!r} is not allowed; allowed: 0 <= a/h <= {LAMBDA_MAX:g} (the table's range; "
-                             "solve_punch solves up to LAMBDA_SOLVE_MAX)")
-        return lam
+        return table_argument(lam, LAMBDA_MAX, "solve_punch solves up to LAMBDA_SOLVE_MAX")
 
     def _series(self, lam: np.ndarray) -> dict[str, np.ndarray]:
         phi = 1.0 / (1.0 - 2.0 * float(self.columns["k0"]) * lam / np.pi)

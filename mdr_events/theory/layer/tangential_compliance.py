@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from mdr_events.contact.layer import Layer, LayerBase
-from mdr_events.theory.layer.compliance import _ChebyshevKernel, _cosine_transform
+from mdr_events.theory.layer.compliance import _ChebyshevKernel, _cosine_transform, _finite_reals, _kernel_argument
 from mdr_events.validation import check_real
 
 __all__ = ["MODES", "LAMBDA_MAX", "check_bonded", "tangential_compliance", "tangential_kernel"]
@@ -24,12 +24,16 @@ LAMBDA_MAX = 64.0
 #: 1e-17 at its end, ``2e^{−2u}`` and ``≈ (4u² − 4u + 1 + κ²)e^{−2u}/κ``.)
 
 
+#: What ``t`` may be on a frictionless base.
+_FRICTIONLESS_T = "finite numbers > 0 (ξh) on a frictionless base"
+
+
 def _nu(nu: float) -> float:
     return check_real("nu", nu, "a finite number in [0, 0.5]", lambda value: 0.0 <= value <= 0.5)
 
 
 def _mode(mode: str) -> str:
-    if mode not in MODES:
+    if not isinstance(mode, str) or mode not in MODES:
         raise ValueError(f"mode={mode!r} is not allowed; allowed: one of {', '.join(map(repr, MODES))}")
     return mode
 
@@ -107,17 +111,28 @@ def tangential_compliance(t, nu: float, mode: str, base: LayerBase | str = Layer
     Raises
     ------
     ValueError
-        ``nu`` outside ``[0, 0.5]``, ``mode`` or ``base`` unknown.
+        ``nu`` outside ``[0, 0.5]``, ``mode`` or ``base`` unknown, ``t`` not finite, negative (or 0, or so small that
+        the compliance overflows, on a frictionless base).
+    TypeError
+        ``t`` not real numbers.
     """
-    t = np.asarray(t, dtype=float)
     nu, mode, base = _nu(nu), _mode(mode), _base(base)
     if base is LayerBase.BONDED:
+        t = _finite_reals("t", t, "finite numbers >= 0 (ξh)", lambda value: value >= 0.0)
         return 1.0 - _one_minus(t, nu, mode)
-    with np.errstate(divide="ignore"):
+    t = _finite_reals("t", t, _FRICTIONLESS_T, lambda value: value > 0.0)  # (C_m grows as 1/t: infinite at 0)
+    with np.errstate(divide="ignore", over="ignore"):
         if mode == "transverse":
-            return 1.0 / np.tanh(t)
-        e2 = np.exp(-2.0 * t)
-        return (1.0 + e2) ** 2 / (-np.expm1(-4.0 * t) + 4.0 * t * e2)
+            value = 1.0 / np.tanh(t)
+        else:
+            e2 = np.exp(-2.0 * t)
+            value = (1.0 + e2) ** 2 / (-np.expm1(-4.0 * t) + 4.0 * t * e2)
+    if not np.all(np.isfinite(value)):  # (a t so small that 1/t overflows)
+        bad = float(np.ravel(t)[np.argmin(np.isfinite(np.ravel(value)))])
+        raise ValueError(f"t={bad!r} is not allowed: C_{mode[0].upper()} overflows there; allowed: {_FRICTIONLESS_T}, "
+                         "whose compliance is a finite double")
+    return value
+
 
 def _direct_kernel(v: np.ndarray, nu: float, mode: str) -> np.ndarray:
     """``k_m(v)`` by composite Gauss–Legendre quadrature of ``∫₀^∞ (1 − C_m(u)) cos(uv) du`` (the reference)."""
@@ -158,8 +173,11 @@ def tangential_kernel(v, nu: float, mode: str) -> np.ndarray:
     Raises
     ------
     ValueError
-        ``nu`` outside ``[0, 0.5]`` or ``mode`` unknown.
+        ``nu`` outside ``[0, 0.5]``, ``mode`` unknown, ``v`` not finite or beyond
+        :data:`~mdr_events.theory.layer.KERNEL_V_MAX` (the quadrature's range).
+    TypeError
+        ``v`` not real numbers.
     """
-    v = np.asarray(v, dtype=float)
+    v = _kernel_argument(v)
     nu, mode = _nu(nu), _mode(mode)
     return _kernel_for(nu, mode, float(np.max(np.abs(v), initial=0.0)) + 1.0)(v)

@@ -10,12 +10,19 @@ import math
 
 import numpy as np
 
+from mdr_events.limits import DEFAULT_LIMITS
+from mdr_events.theory.layer.compliance import _finite_reals
 from mdr_events.theory.layer.tangential_compliance import _nu
+from mdr_events.validation import check_count
 
 __all__ = ["coupling_ratio", "coupling_bound"]
 
 #: ``t`` beyond which :func:`coupling_ratio` takes its value at this ``t`` (equal to the limit to round-off).
 _T_FAR = 30.0
+#: The fewest points of :func:`coupling_bound`'s scan (its largest value with a neighbour each side), and the memory
+#: one takes (``t`` and :func:`coupling_ratio`'s temporaries, counted against :class:`~mdr_events.Limits`).
+_FEWEST_POINTS = 3
+_BYTES_PER_POINT = 128.0
 
 
 def _sinhc_minus_one(x: np.ndarray) -> np.ndarray:
@@ -51,10 +58,10 @@ def coupling_ratio(t, nu: float) -> np.ndarray:
     Raises
     ------
     ValueError
-        ``nu`` outside ``[0, 0.5]``.
+        ``nu`` outside ``[0, 0.5]``, ``t`` negative or not finite (``TypeError``: not real numbers).
     """
     nu = _nu(nu)
-    t = np.minimum(np.asarray(t, dtype=float), _T_FAR)
+    t = np.minimum(_finite_reals("t", t, "finite numbers >= 0 (ξh)", lambda value: value >= 0.0), _T_FAR)
     kappa = 3.0 - 4.0 * nu
     excess = _sinhc_minus_one(2.0 * t)  # S − 1, S = sinh 2t/(2t)
     root = np.sqrt((kappa * excess + (kappa - 1.0)) * (kappa * (1.0 + excess) + 1.0))  # sqrt(κ²S² − 1)
@@ -90,10 +97,14 @@ def coupling_bound(nu: float, points: int = 2001) -> float:
     Raises
     ------
     ValueError
-        ``nu`` outside ``[0, 0.5]``.
+        ``nu`` outside ``[0, 0.5]``, ``points`` below 3 (``TypeError``: not an integer), or beyond the default
+        :class:`~mdr_events.Limits` (``ResourceLimitError``).
     """
     nu = _nu(nu)
-    grid = np.linspace(0.0, _T_FAR, int(points))
+    points = check_count("points", points, _FEWEST_POINTS)
+    DEFAULT_LIMITS.check(f"the coupling's scan of {points} points", samples=float(points),
+                         memory=_BYTES_PER_POINT * points)
+    grid = np.linspace(0.0, _T_FAR, points)
     values = coupling_ratio(grid, nu)
     best = int(np.argmax(values))
     low, high = grid[max(best - 1, 0)], grid[min(best + 1, grid.size - 1)]

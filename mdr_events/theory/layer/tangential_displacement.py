@@ -28,8 +28,11 @@ import math
 
 import numpy as np
 
+from mdr_events.limits import DEFAULT_LIMITS
+from mdr_events.theory.layer.checks import finite_reals
 from mdr_events.theory.layer.tangential_compliance import tangential_compliance
 from mdr_events.theory.layer.tangential_punch import TangentialPunchSolution
+from mdr_events.validation import shown
 
 __all__ = ["contact_displacement"]
 
@@ -38,6 +41,30 @@ __all__ = ["contact_displacement"]
 _U_END, _U_PANEL, _U_NODES = 40.0, 0.25, 24
 #: Gauss–Legendre nodes of the half-space part in ``ϑ`` (the integrand is smooth: ``Θ₀(ρ sin ϑ)``).
 _THETA_NODES = 160
+#: The arrays of the quadrature, in doubles per pair of nodes: the cosines on ``u × τ`` (with their argument), the
+#: Bessel functions on ``ρ × u`` (with theirs and the product): counted against :class:`~mdr_events.Limits`.
+_DOUBLES_PER_COSINE, _DOUBLES_PER_BESSEL = 2.0, 3.0
+
+
+def _panels(lam: float) -> tuple[float, int]:
+    """The remainder's panel width in ``u`` and their number at ``λ``."""
+    panel = min(_U_PANEL, 1.0 / lam)
+    return panel, int(math.ceil(_U_END / panel))
+
+
+def _tau_nodes(lam: float) -> int:
+    """The Gauss–Legendre nodes in ``τ`` of the cosine transforms at ``λ``."""
+    return 64 + int(math.ceil(_U_END * lam))
+
+
+def _check_size(solution: TangentialPunchSolution, points: int) -> None:
+    """The quadrature's memory at ``solution``'s ``λ`` for ``points`` radii, against the default limits."""
+    if solution.lam == 0.0:
+        return
+    u_nodes = _panels(solution.lam)[1] * _U_NODES
+    doubles = u_nodes * (_DOUBLES_PER_COSINE * _tau_nodes(solution.lam) + _DOUBLES_PER_BESSEL * points)
+    DEFAULT_LIMITS.check(f"the tangential displacement at {points} radii (a/h = {solution.lam:g})",
+                         memory=8.0 * doubles)
 
 
 def _gauss(count: int, low: float, high: float) -> tuple[np.ndarray, np.ndarray]:
@@ -48,12 +75,12 @@ def _gauss(count: int, low: float, high: float) -> tuple[np.ndarray, np.ndarray]
 def _remainder_parts(solution: TangentialPunchSolution) -> tuple[np.ndarray, ...]:
     """The ``u`` nodes and weights, ``A − A∞``, ``B − B∞`` and the cosine transforms of ``Θ₀``, ``X`` there."""
     lam, nu = solution.lam, solution.nu
-    panel = min(_U_PANEL, 1.0 / lam)
-    starts = np.arange(0.0, _U_END, panel)
+    panel, count = _panels(lam)
+    starts = np.arange(count) * panel
     x, w = np.polynomial.legendre.leggauss(_U_NODES)
     u = (starts[:, None] + (x + 1.0) * panel / 2.0).ravel()
     wu = np.tile(w * panel / 2.0, starts.size)
-    tau, wt = _gauss(64 + int(math.ceil(_U_END * lam)), 0.0, 1.0)
+    tau, wt = _gauss(_tau_nodes(lam), 0.0, 1.0)
     theta0, chi = solution.traction_functions(tau)
     cosines = np.cos(np.outer(u * lam, tau)) * wt
     long_rest = (1.0 - nu) * (1.0 - tangential_compliance(u, nu, "longitudinal"))
@@ -85,14 +112,21 @@ def contact_displacement(solution: TangentialPunchSolution, rho) -> tuple[np.nda
 
     Raises
     ------
+    TypeError
+        ``solution`` not a :class:`~mdr_events.theory.layer_tangential.TangentialPunchSolution`, ``rho`` not real
+        numbers.
     ValueError
-        ``rho`` outside ``[0, 1)``.
+        ``rho`` outside ``[0, 1)`` or not finite; the quadrature's memory beyond the default
+        :class:`~mdr_events.Limits` (``ResourceLimitError``).
     """
     from scipy.special import jv
 
-    rho = np.asarray(rho, dtype=float)
-    if not np.all((rho >= 0.0) & (rho < 1.0)):
-        raise ValueError(f"rho={rho!r} is not allowed; allowed: 0 <= r/a < 1 (inside the contact)")
+    if not isinstance(solution, TangentialPunchSolution):
+        raise TypeError(f"solution={shown(solution)} ({type(solution).__name__}) is not allowed; allowed: a "
+                        "TangentialPunchSolution (solve_tangential_punch)")
+    rho = finite_reals("rho", rho, "finite numbers with 0 <= r/a < 1 (inside the contact)",
+                       lambda value: (value >= 0.0) & (value < 1.0))
+    _check_size(solution, rho.size)
     nu, lam = solution.nu, solution.lam
     a_far, b_far = (2.0 - nu) / 2.0, -nu / 2.0
     theta, w_theta = _gauss(_THETA_NODES, 0.0, np.pi / 2.0)

@@ -12,7 +12,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from mdr_events.contact.layer import Layer, LayerBase
-from mdr_events.theory.layer.punch import nystrom_nodes
+from mdr_events.limits import Limits
+from mdr_events.theory.layer.checks import finite_reals
+from mdr_events.theory.layer.punch import solve_size
 from mdr_events.theory.layer.tangential_compliance import MODES, _base, _kernel_for, _nu, check_bonded
 from mdr_events.validation import check_real
 
@@ -101,7 +103,7 @@ class TangentialPunchSolution:
         numpy.ndarray
             Shape ``(*tau.shape, 2)``: ``Ψ_L``, ``Ψ_T``.
         """
-        tau = np.asarray(tau, dtype=float)
+        tau = finite_reals("tau", tau, "finite numbers in [0, 1] (r/a)", lambda value: (value >= 0.0) & (value <= 1.0))
         if self.lam == 0.0:
             return np.ones((*tau.shape, 2))
         return np.stack([1.0 + _continuation(tau, self.lam, _kernel_for(self.nu, mode, 2.0 * self.lam + 2.0),
@@ -172,7 +174,7 @@ def _solve(lam: float, nu: float, nodes: int) -> TangentialPunchSolution:
 
 
 def solve_tangential_punch(lam: float, nu: float, base: LayerBase | str = LayerBase.BONDED,
-                           nodes: int | None = None) -> TangentialPunchSolution:
+                           nodes: int | None = None, limits: Limits | None = None) -> TangentialPunchSolution:
     r"""Solve the tangential punch's equations (T2) at ``λ = a/h`` directly (no table).
 
     .. math:: \Psi_m(\tau) - \frac{\lambda}{\pi}\int_0^1 \Psi_m(\sigma)
@@ -188,6 +190,8 @@ def solve_tangential_punch(lam: float, nu: float, base: LayerBase | str = LayerB
         The layer's base: only ``BONDED`` has a tangential stiffness (:func:`check_bonded`).
     nodes : int or None, default None
         Gauss–Legendre nodes (default :func:`mdr_events.theory.layer.nystrom_nodes`).
+    limits : Limits or None, default None
+        The memory the solve may take (as :func:`mdr_events.theory.layer.solve_punch`; ``None``: the defaults).
 
     Returns
     -------
@@ -197,10 +201,11 @@ def solve_tangential_punch(lam: float, nu: float, base: LayerBase | str = LayerB
     Raises
     ------
     ValueError
-        ``lam`` negative or not finite, ``nu`` outside ``[0, 0.5]``, a frictionless or unknown base, ``nodes`` < 2.
+        ``lam`` negative, not finite or beyond :data:`~mdr_events.theory.layer.LAMBDA_SOLVE_MAX`, ``nu`` outside
+        ``[0, 0.5]``, a frictionless or unknown base, ``nodes`` < 2; the nodes' memory beyond ``limits``
+        (``ResourceLimitError``).
     """
     lam = check_real("lam", lam, "a finite number >= 0 (a/h)", lambda value: value >= 0.0)
     check_bonded(Layer(1.0, _base(base)))
-    if nodes is not None and (isinstance(nodes, bool) or not isinstance(nodes, int) or nodes < 2):
-        raise ValueError(f"nodes={nodes!r} is not allowed; allowed: an integer >= 2 or None")
-    return _solve(lam, _nu(nu), nystrom_nodes(lam) if nodes is None else nodes)
+    nu = _nu(nu)
+    return _solve(lam, nu, solve_size(lam, nodes, limits))

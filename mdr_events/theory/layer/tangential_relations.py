@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 
 from mdr_events.contact.layer import Layer
+from mdr_events.theory.layer.checks import checked_relation
 from mdr_events.theory.layer.relations import spring_stiffness_density
 from mdr_events.theory.layer.tangential_compliance import _nu, check_bonded
 from mdr_events.theory.layer.tangential_tables import tangential_table
@@ -39,6 +40,7 @@ def _relative(x, layer: Layer) -> np.ndarray:
     return np.zeros(x.shape) if layer.is_half_space else x / layer.thickness
 
 
+@checked_relation
 def tangential_punch_stiffness(a, G_star: float, nu: float, layer: Layer) -> np.ndarray:
     r"""The tangential stiffness of a sticking flat punch of radius ``a`` on the layer (T3).
 
@@ -71,6 +73,7 @@ def tangential_punch_stiffness(a, G_star: float, nu: float, layer: Layer) -> np.
     return 2.0 * G_star * a * _factors(nu, layer).stiffness_factor(_relative(a, layer))
 
 
+@checked_relation
 def tangential_punch_stiffness_slope(a, G_star: float, nu: float, layer: Layer) -> np.ndarray:
     r"""``K_t'(a) = 2G* Σ_t(a/h)`` (T4): exact from the edge values of (T2).
 
@@ -100,6 +103,7 @@ def tangential_punch_stiffness_slope(a, G_star: float, nu: float, layer: Layer) 
     return 2.0 * tangential_spring_stiffness_density(a, G_star, nu, layer)
 
 
+@checked_relation
 def tangential_spring_stiffness_density(x, G_star: float, nu: float, layer: Layer) -> np.ndarray:
     r"""The MDR springs' tangential stiffness per width at ``x``: ``k_t(x) = K_t'(|x|)/2`` (``G*`` on the half-space).
 
@@ -129,6 +133,7 @@ def tangential_spring_stiffness_density(x, G_star: float, nu: float, layer: Laye
     return G_star * _factors(nu, layer).slope_factor(_relative(x, layer))
 
 
+@checked_relation
 def sliding_cap(a, tau0: float, G_star: float, nu: float, layer: Layer) -> np.ndarray:
     r"""The springs' critical shift under the law ``τ0`` on the layer: (12)–(13) with the layer's ``K_t``.
 
@@ -165,6 +170,7 @@ def sliding_cap(a, tau0: float, G_star: float, nu: float, layer: Layer) -> np.nd
     return np.pi * a * tau0 / (2.0 * G_star * _factors(nu, layer).stiffness_factor(_relative(a, layer)))
 
 
+@checked_relation
 def coulomb_cap(x, depth, profile_depth, mu: float, E_star: float, G_star: float, nu: float,
                 layer: Layer) -> np.ndarray:
     r"""Coulomb's cap of the spring at ``x`` on the layer: its tangential force at most ``μ`` times its normal force.

@@ -12,7 +12,8 @@ from pathlib import Path
 import numpy as np
 
 from mdr_events.theory.layer.punch import nystrom_nodes
-from mdr_events.theory.layer.table_store import cache_directory, source_digest, stored_columns, table_grid
+from mdr_events.theory.layer.table_store import (cache_directory, source_digest, stored_columns, table_argument,
+                                                 table_grid)
 from mdr_events.theory.layer.tangential_compliance import LAMBDA_MAX, MODES, _nu, tangential_kernel
 from mdr_events.theory.layer.tangential_punch import _combine, _slope, _solve
 
@@ -98,12 +99,7 @@ class TangentialTable:
         return {name: make_interp_spline(self.columns["s"], self.columns[name], k=5) for name in _COLUMNS}
 
     def _values(self, lam) -> tuple[np.ndarray, ...]:
-        lam = np.asarray(lam, dtype=float)
-        inside = (lam >= 0.0) & (lam <= LAMBDA_MAX)
-        if not np.all(inside):
-            bad = float(lam[~inside].ravel()[0])
-            raise ValueError(f"a/h={bad!r} is not allowed; allowed: 0 <= a/h <= {LAMBDA_MAX:g} (the table's range; "
-                             "solve_tangential_punch solves beyond it)")
+        lam = table_argument(lam, LAMBDA_MAX, "solve_tangential_punch solves up to LAMBDA_SOLVE_MAX")
         small = lam < LAMBDA_MIN
         s = np.log(np.where(small, LAMBDA_MIN, lam))
         k_l, k_t = (float(value) for value in self.columns["k0"])
