@@ -1,7 +1,9 @@
 """Side-by-side timing of checkouts: each checkout's package runs in a worker process of its own (its root first on
 ``PYTHONPATH``) and the repetitions alternate between the workers, so that all see the same load of a shared machine.
 
-A benchmark script that uses it answers ``--worker`` by calling :func:`serve` with its tasks (name -> function).
+A benchmark script that uses it answers ``--worker`` by calling :func:`serve` with its tasks (name -> function), and
+``--worker --cpu`` by timing them in the process's CPU time instead of the wall clock: on a machine other work shares,
+the CPU time a task takes is what compares (the wall clock counts the time the process waited for a core).
 """
 
 from __future__ import annotations
@@ -13,23 +15,36 @@ import sys
 import time
 
 
-def serve(tasks: dict[str, callable]) -> None:
-    """Time the tasks named on standard input, one per line, printing each time (s)."""
+def serve(tasks: dict[str, callable], cpu: bool = False) -> None:
+    """Time the tasks named on standard input, one per line, printing each time (s): wall clock, or the process's CPU
+    time with ``cpu``."""
+    clock = time.process_time if cpu else time.perf_counter
     print("ready", flush=True)
     for line in sys.stdin:
-        start = time.perf_counter()
+        start = clock()
         tasks[line.strip()]()
-        print(time.perf_counter() - start, flush=True)
+        print(clock() - start, flush=True)
+
+
+def clock_name(cpu: bool) -> str:
+    """What the figures are, for a benchmark's heading."""
+    return "CPU time" if cpu else "wall time"
+
+
+def verdict(figure: float, target: float) -> str:
+    """``"met"`` where ``figure <= target``, else ``"NOT met"``."""
+    return "met" if figure <= target else "NOT met"
 
 
 class Checkout:
-    """A worker process (``script --worker``) timing the package of the checkout ``root``."""
+    """A worker process (``script --worker``, with ``--cpu`` for CPU time) timing the package of the checkout
+    ``root``."""
 
-    def __init__(self, root: str, script: str):
+    def __init__(self, root: str, script: str, cpu: bool = False):
         env = dict(os.environ)
         env["PYTHONPATH"] = os.pathsep.join([root, *filter(None, [env.get("PYTHONPATH")])])
-        self.process = subprocess.Popen([sys.executable, script, "--worker"], env=env, cwd=root, text=True,
-                                        stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+        self.process = subprocess.Popen([sys.executable, script, "--worker", *(["--cpu"] if cpu else [])], env=env,
+                                        cwd=root, text=True, stdin=subprocess.PIPE, stdout=subprocess.PIPE)
         assert self.process.stdout.readline().strip() == "ready"
 
     def time(self, task: str) -> float:
@@ -42,9 +57,10 @@ class Checkout:
         self.process.wait()
 
 
-def measure(roots: list[str], script: str, tasks: list[str], repeat: int) -> list[dict[str, float]]:
-    """The median time of every task in each checkout of ``roots``, the repetitions alternating between them."""
-    checkouts = [Checkout(root, script) for root in roots]
+def measure(roots: list[str], script: str, tasks: list[str], repeat: int, cpu: bool = False) -> list[dict[str, float]]:
+    """The median time of every task in each checkout of ``roots``, the repetitions alternating between them (CPU
+    time with ``cpu``)."""
+    checkouts = [Checkout(root, script, cpu) for root in roots]
     try:
         times = [{task: [] for task in tasks} for _ in checkouts]
         for _ in range(repeat):

@@ -1,4 +1,5 @@
 import os
+import subprocess
 import sys
 
 import pytest
@@ -32,3 +33,29 @@ def close_figures():
     pyplot = sys.modules.get("matplotlib.pyplot")
     if pyplot is not None:
         pyplot.close("all")
+
+
+@pytest.fixture
+def command(capsys, monkeypatch):
+    """``command(*args, cwd=None, fresh=False)``: ``mdr-events *args`` run in ``cwd``, as
+    ``subprocess.CompletedProcess`` (``returncode``, ``stdout``, ``stderr``).
+
+    In-process by :func:`mdr_events.app.cli.main`, the code the console script runs, without paying the package's
+    imports again in a fresh interpreter (some 1.5 s of CPU a call, most of what a refused command costs);
+    ``fresh=True`` runs ``python -m mdr_events.app.cli`` in a subprocess instead, as a hostile round does for one case
+    of each class of what failed (the console script's own exit and stderr)."""
+    def run(*args: str, cwd=None, fresh: bool = False) -> subprocess.CompletedProcess:
+        if fresh:
+            return subprocess.run([sys.executable, "-m", "mdr_events.app.cli", *args], capture_output=True, text=True,
+                                  timeout=300, cwd=cwd)
+        from mdr_events.app.cli import main
+
+        capsys.readouterr()
+        with monkeypatch.context() as patch:
+            if cwd is not None:
+                patch.chdir(cwd)
+            status = main(list(args))
+        out, err = capsys.readouterr()
+        return subprocess.CompletedProcess(list(args), status, out, err)
+
+    return run

@@ -65,12 +65,13 @@ directory = "out"
     (["--scheduler", "serial", "--workers", "1"], "workers=1 is not allowed with scheduler='serial'"),
 ])
 @pytest.mark.parametrize("store", [True, False], ids=["store", "no-study-file"])
-def test_a_sweeps_bad_option_is_named_before_the_files(tmp_path, options, named, store):
+def test_a_sweeps_bad_option_is_named_before_the_files(tmp_path, options, named, store, command):
     study = tmp_path / "s.toml"
     if store:
         study.write_text(SWEEP_STUDY, encoding="utf-8")
         (tmp_path / "out" / "s_sweep.zarr").mkdir(parents=True)  # an earlier sweep's store
-    done = _cli("sweep", str(study), *options)
+    done = command("sweep", str(study), *options, fresh=store and options == ["--scheduler", "bogus"])  # (the console
+    # script once)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert named in done.stderr and "allowed: " in done.stderr
 

@@ -67,14 +67,15 @@ def test_the_guides_sweep_selection_works_on_its_grid():
 
 # --- R3: a study (or --params / --path) file whose arrays nest thousands deep crashed the TOML reader --------------
 @pytest.mark.parametrize("nested", ["x = " + "[" * 5000 + "]" * 5000, "x = " + "{a = " * 3000 + "}" * 3000])
-def test_a_deeply_nested_toml_file_is_refused_in_one_line(tmp_path, nested):
+def test_a_deeply_nested_toml_file_is_refused_in_one_line(tmp_path, nested, command):
     study = tmp_path / "deep.toml"
     study.write_text('[parameters]\npreset = "paper-R30"\n' + nested + "\n", encoding="utf-8")
     run = tmp_path / "run.csv"
     run.write_text("time,normal_force\n0,0\n1,1\n", encoding="utf-8")
     for args in (["run", str(study)], ["validate", str(run), "--scenario", "A", "--alpha", "20", "--params",
                                        str(study), "--out", str(tmp_path / "o")]):
-        done = subprocess.run([sys.executable, "-m", "mdr_events.app.cli", *args], capture_output=True, text=True)
+        # (the console script once, in a fresh interpreter's stack; the other cases in-process)
+        done = command(*args, fresh=args[0] == "run" and nested.startswith("x = [["))
         assert done.returncode == 2, done.stderr
         assert done.stderr.count("\n") == 1 and "nest too deeply" in done.stderr and "deep.toml" in done.stderr
     with pytest.raises(ValueError, match="nest too deeply"):
@@ -90,9 +91,8 @@ def test_a_deeply_nested_toml_file_is_refused_in_one_line(tmp_path, nested):
     (["simulate", "--scenario", "A", "--nu", "-NaN"], "nu=nan"),
     (["phase-diagram", "--scenario", "A", "--dgamma1", "-1.5e-1"], "dgamma1=-0.15"),
 ])
-def test_a_negative_number_in_any_notation_is_a_value(tmp_path, args, named):
-    done = subprocess.run([sys.executable, "-m", "mdr_events.app.cli", *args, "--out", str(tmp_path / "o")],
-                          capture_output=True, text=True)
+def test_a_negative_number_in_any_notation_is_a_value(tmp_path, args, named, command):
+    done = command(*args, "--out", str(tmp_path / "o"), fresh=named == "E=-100000.0")  # (the console script once)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert named in done.stderr and "allowed:" in done.stderr and "expected" not in done.stderr
 
@@ -122,9 +122,8 @@ def test_an_edge_the_indenter_outruns_is_refused_with_the_advice_that_helps(prof
     (["simulate", "--scenario", "A", "--limit", "memory=1GiB", "--limit", "memory=2GiB", "--out", "o"],
      "--limit 'memory=2GiB': memory is given twice; allowed: each limit once"),
 ])
-def test_a_missing_value_or_a_repeated_limit_is_named_with_how_to_write_it(tmp_path, args, expected):
-    done = subprocess.run([sys.executable, "-m", "mdr_events.app.cli", *args], capture_output=True, text=True,
-                          cwd=tmp_path)
+def test_a_missing_value_or_a_repeated_limit_is_named_with_how_to_write_it(tmp_path, args, expected, command):
+    done = command(*args, cwd=tmp_path, fresh=args[-1] == "-dash")  # (the console script once)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert expected in done.stderr
     assert not any(tmp_path.iterdir())

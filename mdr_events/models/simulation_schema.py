@@ -12,7 +12,7 @@ import xarray as xr
 
 from mdr_events.io.agreement import (ExtremumTime, Integrated, Quotient, RootFound, RoundOff, force_sensitivity,
                                      register_accuracy)
-from mdr_events.io.datasets import register_schema, stamp
+from mdr_events.io.datasets import assembled, register_schema, stamp
 from mdr_events.models.continuum.extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, extremum_names
 from mdr_events.models.continuum.solution import EXTREMUM_XTOL
 from mdr_events.models.motion import ANGLE_DIMENSION, CASE_DIMENSIONS, CUSTOM_DIMENSION, CUSTOM_SCENARIO, Cases
@@ -178,14 +178,14 @@ def simulation_dataset(
     :func:`mdr_events.io.datasets.stamp`.
     """
     data, coords = _simulation_parts(cases, time, values, attrs)
-    return stamp(xr.Dataset(data, coords=coords), params, **attrs)
+    return stamp(assembled(data, coords), params, **attrs)
 
 
 def continuum_dataset(params: Parameters, cases: Cases, time: np.ndarray, values: dict[str, np.ndarray],
                       events: list[list[tuple]], extrema: list[dict[str, float]], **attrs: Any) -> xr.Dataset:
     """A continuum result: :func:`simulation_dataset`, then the variables of :func:`event_log` and of
     :func:`extrema_dataset`, built as one dataset (variables, coordinates and attributes in the order that merging
-    the three gives; one ``xarray.Dataset`` instead of four).
+    the three gives; assembled at once, :func:`~mdr_events.io.datasets.assembled`, instead of four merges).
 
     Parameters
     ----------
@@ -211,8 +211,8 @@ def continuum_dataset(params: Parameters, cases: Cases, time: np.ndarray, values
     """
     data, coords = _simulation_parts(cases, time, values, attrs)
     event_data, event_coords = _event_parts(events, cases.dimension)
-    return stamp(xr.Dataset({**data, **event_data, **_extrema_parts(extrema, cases.dimension)},
-                            coords={**coords, **event_coords}), params, **attrs)
+    return stamp(assembled({**data, **event_data, **_extrema_parts(extrema, cases.dimension)},
+                           {**coords, **event_coords}), params, **attrs)
 
 
 def _simulation_parts(cases: Cases, time: np.ndarray, values: dict[str, np.ndarray],

@@ -35,6 +35,7 @@ __all__ = [
     "dimensionless_groups",
     "d_crit",
     "d_crit_curves",
+    "d_crit_rows",
     "critical_angle",
     "critical_shift",
     "jkr_depth",
@@ -503,19 +504,51 @@ def d_crit_curves(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A"
     dict
         ``(adhesion, branch)`` -> ``d_crit`` (m), an array of the shape of ``alpha``, each equal to
         :func:`d_crit` of those arguments: ``adhesion`` ``False`` and ``True``, ``branch`` ``None`` in scenario A,
-        each of :data:`BRANCHES` in B.
+        each of :data:`BRANCHES` in B (the rows of :func:`d_crit_rows`).
+    """
+    rows = d_crit_rows(alpha, contact, scenario, d_max=d_max)
+    branches = (None,) if scenario == "A" else BRANCHES
+    return {(adhesion, branch): rows[adhesion][row, ...] for row, branch in enumerate(branches)
+            for adhesion in (False, True)}
+
+
+def d_crit_rows(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A", *,
+                d_max: float | None = None) -> dict[bool, np.ndarray]:
+    """The curves of :func:`d_crit_curves` as one array per adhesion, a row per branch, each computed into its row.
+
+    Parameters
+    ----------
+    alpha : array_like
+        The angles (degrees, 0 to 90) of every row.
+    contact : Contact or Parameters
+        The paraboloid under the paper's law (:func:`~mdr_events.theory.job.paper_parameters` reads it).
+    scenario : {"A", "B"}
+        Fig. 9a (one row, (17) and (18)) or 9b (two rows, (20) and (21)).
+    d_max : float, optional
+        With a Contact: the motion's depth (m).
+
+    Returns
+    -------
+    dict of bool to numpy.ndarray
+        ``adhesion`` (``False``, ``True``) -> ``d_crit`` (m) of shape ``(branches, *alpha.shape)``: one row in
+        scenario A, the rows of :data:`BRANCHES` in B, each equal to :func:`d_crit` of that branch (a phase diagram's
+        variable as it is, without stacking 10⁵ angles' curves afresh).
     """
     params = paper_parameters(contact, "d_crit", d_max)
     check_choice("scenario", scenario, SCENARIOS)
     alpha_deg = validate_alpha(alpha)
     tangent = _Tangent.of(alpha_deg)
     branches = (None,) if scenario == "A" else BRANCHES
-    return {(adhesion, branch): np.asarray(_slip_onset(tangent, params, scenario, adhesion, branch or "pull-off"))
-            for branch in branches for adhesion in (False, True)}
+    rows = {adhesion: np.empty((len(branches), *alpha_deg.shape)) for adhesion in (False, True)}
+    for row, branch in enumerate(branches):
+        for adhesion in (False, True):
+            _slip_onset(tangent, params, scenario, adhesion, branch or "pull-off", out=rows[adhesion][row, ...])
+    return rows
 
 
-def _slip_onset(tangent: _Tangent, p, scenario: str, adhesion: bool, branch: str) -> np.ndarray:
-    """:func:`d_crit` of checked arguments, at the angles of ``tangent``."""
+def _slip_onset(tangent: _Tangent, p, scenario: str, adhesion: bool, branch: str,
+                out: np.ndarray | None = None) -> np.ndarray:
+    """:func:`d_crit` of checked arguments, at the angles of ``tangent`` (written into ``out`` where given)."""
     vertical, tan_finite = tangent.vertical, tangent.finite
     if scenario == "A":
         if not adhesion:
@@ -523,18 +556,18 @@ def _slip_onset(tangent: _Tangent, p, scenario: str, adhesion: bool, branch: str
                 depth = _rel("d_crit_A_hertz").numeric(tan_finite, p.R, p.tau0, p.G_star)
                 return np.where(vertical, np.inf, depth)
 
-            return blockwise(onset, tan_finite, vertical)
+            return blockwise(onset, tan_finite, vertical, out=out)
         coefficients = blockwise(lambda tan_finite: _rel("slip_A_jkr_cubic").coefficients(
             tan_finite, p.R, p.tau0, p.G_star, p.E_star, p.dgamma0), tan_finite)
         with np.errstate(invalid="ignore", divide="ignore"):  # 0/0 at the double root s = 0 (α = 0, Δγ = 0)
-            root = positive_polynomial_root(coefficients)
+            root = positive_polynomial_root(coefficients, out=out)  # (the onset then replaces it, block by block)
 
         def onset(root, tan_finite, vertical):
             radius = np.where(np.isfinite(root), root, 0.0) ** 2
             depth = _rel("slip_depth_A").numeric(radius, tan_finite, p.tau0, p.G_star)
             return np.where(vertical, np.inf, depth)
 
-        return blockwise(onset, root, tan_finite, vertical)
+        return blockwise(onset, root, tan_finite, vertical, out=out)
 
     pulling = branch == "pull-off"
     never = -np.inf if pulling else np.inf
@@ -545,11 +578,11 @@ def _slip_onset(tangent: _Tangent, p, scenario: str, adhesion: bool, branch: str
             depth = _rel(f"d_crit_B_hertz_{key}").numeric(p.d_max, k)
             return np.where(vertical, never, depth)
 
-        return blockwise(onset, tan_finite, vertical)
+        return blockwise(onset, tan_finite, vertical, out=out)
     work = p.dgamma1 if pulling else p.dgamma0
     coefficients = blockwise(lambda tan_finite: _rel(f"slip_B_jkr_quartic_{key}").coefficients(
         tan_finite, p.d_max, p.R, p.tau0, p.G_star, p.E_star, work), tan_finite)
-    root = positive_polynomial_root(coefficients)
+    root = positive_polynomial_root(coefficients, out=out)  # (the onset then replaces it, block by block)
     unstable_below = jump_off(p, work)["contact_radius"] if pulling and work > 0.0 else None
 
     def onset(root, tan_finite, vertical):
@@ -559,7 +592,7 @@ def _slip_onset(tangent: _Tangent, p, scenario: str, adhesion: bool, branch: str
             depth = np.where(radius < unstable_below, never, depth)
         return np.where(vertical, never, depth)
 
-    return blockwise(onset, root, tan_finite, vertical)
+    return blockwise(onset, root, tan_finite, vertical, out=out)
 
 
 #: Scenarios that have a critical angle (:func:`critical_angle`).

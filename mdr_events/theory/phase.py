@@ -147,7 +147,7 @@ def _paper_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, 
                          coords: dict) -> xr.Dataset:
     """:func:`phase_diagram` of the paper's paraboloid and friction law: eqs. (17), (18) or (20), (21)
     (:mod:`~mdr_events.theory.analytic`), Fig. 9a or 9b for a paper preset."""
-    curves = analytic.d_crit_curves(angles, params, scenario)
+    curves = analytic.d_crit_rows(angles, params, scenario)  # (the rows of B's two branches: no stacking)
     jump_off = analytic.jump_off(params, params.dgamma1)["depth"] if scenario == "B" else None
     variables = _onset_variables(curves, scenario, coords, jump_off, params.d_max,
                                  lambda adhesive: analytic.critical_angle(params, scenario, adhesion=adhesive))
@@ -165,9 +165,10 @@ def _layer_phase_diagram(contact: Contact, angles: np.ndarray, scenario: str, d_
     from mdr_events.theory.layer.slip_onset import critical_angle_on_layer, onset_depths
 
     branches = (None,) if scenario == "A" else analytic.BRANCHES
-    curves = {(adhesive, branch): onset_depths(angles, contact, scenario, adhesive, branch or "pull-off", d_max,
-                                                       past_tables=True)
-              for branch in branches for adhesive in (False, True)}
+    found = {(adhesive, branch): onset_depths(angles, contact, scenario, adhesive, branch or "pull-off", d_max,
+                                              past_tables=True)
+             for branch in branches for adhesive in (False, True)}
+    curves = {adhesive: np.stack([found[adhesive, branch] for branch in branches]) for adhesive in (False, True)}
     depth = PAPER_D_MAX if d_max is None else d_max
     jump_off = None
     if scenario == "B":
@@ -182,24 +183,23 @@ def _layer_phase_diagram(contact: Contact, angles: np.ndarray, scenario: str, d_
 
 def _onset_variables(curves: dict, scenario: str, coords: dict, jump_off: float | None, d_max: float,
                      critical_angle) -> dict:
-    """The variables of a phase diagram of the law (13) from :func:`~mdr_events.theory.analytic.d_crit_curves`'
-    curves, the jump-off depth (scenario B), ``d_max`` and ``critical_angle(adhesive)`` (``coords`` gains the
-    branch in B)."""
+    """The variables of a phase diagram of the law (13) from the curves by adhesion, a row per branch
+    (:func:`~mdr_events.theory.analytic.d_crit_rows`), the jump-off depth (scenario B), ``d_max`` and
+    ``critical_angle(adhesive)`` (``coords`` gains the branch in B)."""
     variables = {}
     if scenario == "A":
         for key, adhesive, eq in (("hertz", False, "(17)"), ("jkr", True, "(18)")):
             variables[f"d_crit_{key}"] = (
                 "alpha",
-                curves[adhesive, None],
+                curves[adhesive][0],
                 {"units": "m", "long_name": f"slip-onset depth, {'adhesive' if adhesive else 'non-adhesive'}, eq. {eq}"},
             )
     else:
         coords["branch"] = ("branch", np.array(analytic.BRANCHES), {"units": "1", "long_name": "motion at angle from d_max"})
         for key, adhesive, eq in (("hertz", False, "(20)"), ("jkr", True, "(21)")):
-            values = np.stack([curves[adhesive, b] for b in analytic.BRANCHES])
             variables[f"d_crit_{key}"] = (
                 ("branch", "alpha"),
-                values,
+                curves[adhesive],
                 {"units": "m", "long_name": f"slip-onset depth, {'adhesive' if adhesive else 'non-adhesive'}, eq. {eq}"},
             )
         variables["jump_off_depth"] = (

@@ -41,7 +41,7 @@ _LONG = 12
 _FEW = 8
 
 
-def _upper_root_bound(coeffs: list) -> np.ndarray:
+def _upper_root_bound(coeffs: list, out: np.ndarray | None = None) -> np.ndarray:
     """An upper bound of the positive roots of a monic polynomial, elementwise.
 
     For every positive term ``c_j s^j`` above which no coefficient is
@@ -50,14 +50,15 @@ def _upper_root_bound(coeffs: list) -> np.ndarray:
     ``s >= max_i (m |c_i| / c_j)^(1/(j-i))``; the smallest such bound is used.
     It is tight where one positive term dominates, e.g. ``P s²`` of (21) near
     α = 90°, where a bound on all root moduli (Fujiwara) would be orders of
-    magnitude too large. Coefficients that are the scalar 0 are skipped.
+    magnitude too large. Coefficients that are the scalar 0 are skipped. Over several blocks the bound is written into
+    ``out`` where given (a C-contiguous array of the broadcast shape), else into a new array.
     """
     shape = np.broadcast_shapes(*[np.shape(cf) for cf in coeffs])
     size = math.prod(shape)
     if size <= _BLOCK:
         return _block_bound(coeffs)
     flat = [cf if np.ndim(cf) == 0 else np.broadcast_to(cf, shape).reshape(-1) for cf in coeffs]
-    bound = np.empty(shape)
+    bound = np.empty(shape) if out is None else out
     for first in range(0, size, _BLOCK):
         block = slice(first, first + _BLOCK)
         bound.reshape(-1)[block] = _block_bound([cf if cf.ndim == 0 else cf[block] for cf in flat])
@@ -109,7 +110,8 @@ def _term_bound(coeffs: list, j: int, lower: list[int], positive: bool):
     return candidate
 
 
-def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100, rtol: float = 4 * _EPS):
+def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100, rtol: float = 4 * _EPS,
+                             out: np.ndarray | None = None):
     """Largest positive root of monic polynomials, vectorised over their coefficients.
 
     Parameters
@@ -125,6 +127,9 @@ def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100,
         Safety bound; convergence takes 4–8 iterations in practice.
     rtol : float
         Relative step at which the iteration stops (default 4 ulp).
+    out : numpy.ndarray, optional
+        A C-contiguous float array of the problem's shape that the iteration runs in and the root is returned in
+        (arrays only; for 10⁵ elements a fresh array costs its page faults); default a new array.
 
     Returns
     -------
@@ -153,7 +158,10 @@ def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100,
     coeffs = [np.asarray(cf, dtype=float) for cf in coefficients]
     shape = np.broadcast_shapes(*[cf.shape for cf in coeffs], np.shape(lower))
     lower = np.broadcast_to(np.asarray(lower, dtype=float), shape)
-    x = _start(coeffs, lower)
+    if out is not None and not (out.shape == shape and out.flags.c_contiguous and out.dtype == float):
+        raise ValueError(f"out of shape {out.shape} is not allowed; allowed: a C-contiguous float array of the "
+                         f"problem's shape {shape}")
+    x = _start(coeffs, lower, out)
     overshoot = _descend(coeffs, x, max_iterations, rtol)
     redo = overshoot | ~np.isfinite(x)
     if np.any(redo):  # from the same start, computed again for these elements alone (scalars kept scalars)
@@ -163,24 +171,37 @@ def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100,
     return x
 
 
-def _start(coeffs: list, lower: np.ndarray) -> np.ndarray:
+def _start(coeffs: list, lower: np.ndarray, out: np.ndarray | None = None) -> np.ndarray:
     """Newton's start: the bound of :func:`_upper_root_bound`, not below ``lower``, raised by 8 ulp (a new array of
-    the shape of ``lower``, which the iteration takes over)."""
-    bound = _upper_root_bound(coeffs)
-    owned = isinstance(bound, np.ndarray) and bound.shape == lower.shape and bound.flags.owndata
-    start = np.maximum(bound, lower, out=bound if owned else None)  # (in the bound's own array where it has one)
+    the shape of ``lower``, or ``out``, which the iteration takes over)."""
+    bound = _upper_root_bound(coeffs, out)
+    owned = isinstance(bound, np.ndarray) and bound.shape == lower.shape and (bound.flags.owndata or bound is out)
+    start = np.maximum(bound, lower, out=out if out is not None else bound if owned else None)  # (in the bound's
+    # own array where it has one)
     start *= 1.0 + 8 * _EPS
     return start
 
 
-def _horner_into(coeffs: list, x: np.ndarray, value: np.ndarray, slope: np.ndarray) -> None:
+def _horner_into(coeffs: list, x: np.ndarray, value: np.ndarray, slope: np.ndarray, zeros: int = 0) -> None:
     """:func:`_horner` into the buffers ``value`` and ``slope``, in place.
 
-    A leading coefficient that is the scalar 1 (a monic polynomial) skips the products by it, which are exact:
-    the values are those of :func:`_horner`, bit for bit, in fewer passes over the arrays.
+    A leading coefficient that is the scalar 1 (a monic polynomial) skips the products by it, which are exact, and so
+    do the additions of the ``zeros`` coefficients after it that are the scalar 0 (:func:`_leading_zeros`): ``x + 0``
+    is ``x``, and ``x^k + 0`` is ``x^k`` (an iterate is never -0: ``x − d`` gives +0). The values are those of
+    :func:`_horner`, bit for bit, in fewer passes over the arrays.
     """
     rest = coeffs[2:]
-    if np.ndim(coeffs[0]) == 0 and coeffs[0] == 1.0:
+    if zeros:
+        np.multiply(x, x, out=value)
+        np.add(x, x, out=slope)
+        for _ in range(zeros - 1):
+            slope *= x
+            slope += value
+            value *= x
+        rest = coeffs[zeros + 1:]
+        value += rest[0]
+        rest = rest[1:]
+    elif np.ndim(coeffs[0]) == 0 and coeffs[0] == 1.0:
         np.add(x, coeffs[1], out=value)  # x·1 + c1
         if not rest:
             slope[...] = 1.0
@@ -198,6 +219,17 @@ def _horner_into(coeffs: list, x: np.ndarray, value: np.ndarray, slope: np.ndarr
         slope += value
         value *= x
         value += coefficient
+
+
+def _leading_zeros(coeffs: list) -> int:
+    """How many coefficients after a leading scalar 1 are the scalar 0, the last one not counted (0: none, or not
+    monic): the additions :func:`_horner_into` skips."""
+    if not (np.ndim(coeffs[0]) == 0 and coeffs[0] == 1.0):
+        return 0
+    count = 0
+    while count + 2 < len(coeffs) and np.ndim(coeffs[count + 1]) == 0 and coeffs[count + 1] == 0.0:
+        count += 1
+    return count
 
 
 def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> np.ndarray:
@@ -223,17 +255,19 @@ def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> n
         blocks.append((flat[block], [cf if cf.ndim == 0 else cf[block] for cf in broadcast], value[:n], slope[:n],
                        step[:n], flags[:n], overshoot[block]))
     history = []  # (one block only, after _LONG steps) the last iterates and which elements' steps were within rtol
+    zeros = _leading_zeros(coeffs)
     for iteration in range(max_iterations):
         converged = True
         for x_block, coefficients, v, s, d, f, upward in blocks:
-            _horner_into(coefficients, x_block, v, s)
+            _horner_into(coefficients, x_block, v, s, zeros)
             np.divide(v, s, out=d)
             x_block -= d
-            below = v  # -rtol |x|, in the buffer of the value (negation is exact)
-            np.abs(x_block, out=below)
-            below *= -rtol
-            upward |= np.less(d, below, out=f)
-            converged = converged and _within(d, below, s, f)
+            threshold = v  # rtol |x|, in the buffer of the value
+            np.abs(x_block, out=threshold)
+            threshold *= rtol
+            if np.fmin.reduce(d, initial=np.inf) < 0.0:  # (an upward step, d < -rtol |x| <= 0, needs a negative one)
+                upward |= np.less(d, np.negative(threshold, out=s), out=f)  # (-(rtol |x|) = (-rtol) |x| exactly)
+            converged = converged and _within(d, threshold, s, f)
         if converged:
             break
         if iteration >= _LONG and len(blocks) == 1:
@@ -299,11 +333,10 @@ def _divide(numerator: float, denominator: float) -> float:
     return math.copysign(math.inf, numerator) * math.copysign(1.0, denominator)
 
 
-def _within(step: np.ndarray, below: np.ndarray, spare: np.ndarray, flags: np.ndarray) -> bool:
-    """Whether every ``|step| <= -below``, computed in the buffers ``spare`` and ``flags``."""
+def _within(step: np.ndarray, threshold: np.ndarray, spare: np.ndarray, flags: np.ndarray) -> bool:
+    """Whether every ``|step| <= threshold``, computed in the buffers ``spare`` and ``flags``."""
     np.abs(step, out=spare)
-    np.negative(spare, out=spare)
-    return bool(np.all(np.less_equal(below, spare, out=flags)))
+    return bool(np.all(np.less_equal(spare, threshold, out=flags)))
 
 
 def _scalar_root(coeffs: list[float], lower: float, max_iterations: int, rtol: float) -> float:

@@ -36,10 +36,10 @@ class Scale(NamedTuple):
 
 
 def _scale(name: str, unit: str, compute: Callable[[], float]) -> Scale:
+    """The scale ``compute()`` gives, or ``nan`` and why not (run inside :func:`run_scales`'s filter, where NumPy's
+    overflow is an error, as math's is)."""
     try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("error", RuntimeWarning)  # numpy's overflow is an error here, as math's is
-            return Scale(name, float(compute()), unit)
+        return Scale(name, float(compute()), unit)
     except (OverflowError, ZeroDivisionError, RuntimeWarning, FloatingPointError) as error:
         return Scale(name, math.nan, unit, str(error) or type(error).__name__)
 
@@ -60,6 +60,14 @@ def run_scales(params: Parameters, profile: Profile | None = None, friction: Fri
             known["jump"] = jump_off(params, params.dgamma1, profile)
         return known["jump"][key]
 
+    with warnings.catch_warnings():  # (one filter for every scale: numpy's overflow is an error, as math's is)
+        warnings.simplefilter("error", RuntimeWarning)
+        return _scales(params, profile, friction, radius, jump)
+
+
+def _scales(params: Parameters, profile: Profile | None, friction: FrictionLaw, radius: Callable[[], float],
+            jump: Callable[[str], float]) -> list[Scale]:
+    """:func:`run_scales`'s list, ``radius`` and ``jump`` computing the radius at ``d_max`` and the jump-off once."""
     scales = [Scale("E*", params.E_star, "Pa"), Scale("G*", params.G_star, "Pa"), Scale("d_max", params.d_max, "m"),
               Scale("the time to d_max, d_max / v", params.d_max / params.v, "s"),
               _scale("the contact radius a at d_max", "m", radius),

@@ -340,7 +340,9 @@ class TabulatedBranch:
         return a
 
     def radii(self, depth: np.ndarray) -> np.ndarray:
-        """:meth:`radius` of each depth of an array, elementwise.
+        """:meth:`radius` of each depth of an array, elementwise: the same cases and, for each depth, the same steps of
+        :meth:`_invert` in the same floating-point operations, taken by the array (:meth:`_invert_all`), so that
+        every radius is :meth:`radius`'s bit for bit.
 
         Parameters
         ----------
@@ -353,7 +355,69 @@ class TabulatedBranch:
             The radii (m) or ``nan``, the shape of ``depth``.
         """
         depth = np.asarray(depth, dtype=float)
-        return np.vectorize(self.radius, otypes=[float])(depth)
+        out = np.full(depth.shape, np.nan)
+        flat, values = out.reshape(-1), depth.reshape(-1)
+        inside = np.flatnonzero((self.jump_off_depth <= values) & (values <= self.deepest))
+        wanted = values[inside]
+        depths = np.asarray(self._depths)
+        above = np.minimum(np.searchsorted(depths, wanted, side="left"), len(depths) - 1)
+        on_grid = depths[above] == wanted
+        flat[inside[on_grid]] = np.asarray(self._radii)[above[on_grid]]
+        rest = ~on_grid
+        flat[inside[rest]] = self._invert_all(wanted[rest], np.maximum(above[rest], 1), RADIUS_RTOL)
+        flat[inside[wanted == self.jump_off_depth]] = self.jump_off_radius
+        return out
+
+    def _invert_all(self, depth: np.ndarray, above: np.ndarray, rtol: float) -> np.ndarray:
+        """:meth:`_invert` of every depth of an array (with its ``above``): each element takes the scalar iteration's
+        steps, the same operations in the same order (NumPy's IEEE arithmetic and square root are Python's), and
+        leaves the iteration where the scalar one returns."""
+        radii, depths = np.asarray(self._radii), np.asarray(self._depths)
+        low, high = radii[above - 1], radii[above]
+        d_low, d_high = depths[above - 1], depths[above]
+        share = (depth - d_low) / (d_high - d_low)
+        if self.k > 0.0:
+            share = np.where(above == 1, np.sqrt(share), share)
+        a = low + share * (high - low)
+        g, slope = self.shape.scalar_g, self.shape.scalar_slope
+        index = np.clip(np.searchsorted(g.breaks, low, side="right") - 1, 0, len(g.pieces) - 1)
+        start = np.asarray(g.breaks)[index]
+        values, rates = np.asarray(g.pieces)[index].T, np.asarray(slope.pieces)[index].T
+        out = np.empty(depth.shape)
+        left = np.arange(depth.size)  # the elements still iterating
+        with np.errstate(divide="ignore", invalid="ignore"):  # (a step by a zero rate is not taken: np.where)
+            return self._iterate(out, left, a, low, high, start, depth, values, rates, rtol)
+
+    def _iterate(self, out, left, a, low, high, start, depth, values, rates, rtol) -> np.ndarray:
+        """The steps of :meth:`_invert_all` (the elements ``left`` still iterating), into ``out``."""
+        for _ in range(MAX_INVERSION_STEPS):
+            offset, root = a - start, np.sqrt(a)
+            value, rate = np.zeros(a.shape), np.zeros(a.shape)
+            for coefficient in values:
+                value = value * offset + coefficient
+            for coefficient in rates:
+                rate = rate * offset + coefficient
+            excess = value - self.k * root - depth
+            exact = excess == 0.0
+            high = np.where(excess > 0.0, a, high)
+            low = np.where(excess > 0.0, low, a)
+            if self.k:
+                rate = rate - 0.5 * self.k / root
+            else:
+                rate = rate - 0.0
+            step = np.where(rate > 0.0, a - excess / rate, low)
+            converged = ~exact & (np.abs(step - a) <= rtol * a)
+            out[left[exact]] = a[exact]
+            out[left[converged]] = np.where((low <= step) & (step <= high), step, a)[converged]
+            a = np.where((low < step) & (step < high), step, 0.5 * (low + high))
+            going = ~(exact | converged)
+            if not going.all():
+                left, a, low, high, start, depth = (array[going] for array in (left, a, low, high, start, depth))
+                values, rates = values[:, going], rates[:, going]
+            if not left.size:
+                return out
+        out[left] = a
+        return out
 
 
 @functools.lru_cache(maxsize=64)

@@ -101,9 +101,6 @@ def files(directory: Path) -> list[str]:
 CASES = {
     # row 1: an output directory that cannot take the files, found before anything is computed
     "out_is_file": Case(("phase-diagram", "--scenario", "A", "--out", "a_file")),
-    "out_below_file": Case(("simulate", "--scenario", "A", "--alpha", "20", "--out", "a_file/sub")),
-    "study_directory_is_file": Case(("run", "study_into_file.toml")),
-    "study_is_directory": Case(("run", "a_directory")),
     # row 2: output names that would leave the output directory
     "study_name_escapes": Case(("run", "study_escape.toml")),
     # row 3: the solver gives up (exit 3); --debug shows the traceback
@@ -163,10 +160,12 @@ def assert_one_line(result: Result, status: int, *fragments: str) -> str:
 
 # --- row 1: output directories ---------------------------------------------------------------------------
 
-def test_an_output_that_is_a_file_or_below_one_is_one_line_exit_2(console):
+def test_an_output_that_is_a_file_or_below_one_is_one_line_exit_2(console, monkeypatch, capsys):
     tmp, results = console
     assert_one_line(results["out_is_file"], 2, "--out='a_file'", "it is a file", "allowed: a directory")
-    assert_one_line(results["out_below_file"], 2, "--out='a_file/sub'", "it lies below", "a_file, a file")
+    monkeypatch.chdir(tmp)  # (the row's further cases in-process)
+    assert_one_line(run(capsys, "simulate", "--scenario", "A", "--alpha", "20", "--out", "a_file/sub"), 2,
+                    "--out='a_file/sub'", "it lies below", "a_file, a file")
     assert (tmp / "a_file").read_text() == "precious"
 
 
@@ -200,16 +199,18 @@ def test_a_read_only_output_directory_is_one_line_exit_2(console, tmp_path, caps
         (tmp_path / "locked").chmod(0o755)
 
 
-def test_a_study_checks_its_output_directory_before_computing(console):
-    tmp, results = console
+def test_a_study_checks_its_output_directory_before_computing(console, monkeypatch, capsys):
+    tmp, _ = console
+    monkeypatch.chdir(tmp)
     # the one line is the error: no progress line ("simulation: ...") came before it
-    assert_one_line(results["study_directory_is_file"], 2, "study_into_file.toml", "[output] directory=",
+    assert_one_line(run(capsys, "run", "study_into_file.toml"), 2, "study_into_file.toml", "[output] directory=",
                     "a_file", "it is a file")
 
 
-def test_a_directory_given_as_the_study_file_is_named(console):
-    _, results = console
-    assert_one_line(results["study_is_directory"], 2, "a_directory is a directory", "allowed: a study file")
+def test_a_directory_given_as_the_study_file_is_named(console, monkeypatch, capsys):
+    tmp, _ = console
+    monkeypatch.chdir(tmp)
+    assert_one_line(run(capsys, "run", "a_directory"), 2, "a_directory is a directory", "allowed: a study file")
 
 
 def test_run_study_checks_the_output_directory_before_computing(tmp_path, monkeypatch):

@@ -390,3 +390,45 @@ def test_slip_events_of_scenario_A_have_the_positive_cap(params):
     slip = np.isin(kinds, ["slip_onset", "full_slip", "re_stick"])
     assert slip.any() and np.all(directions[slip] == 1)
     assert np.all(directions[np.isin(kinds, ["first_contact", "corner", "detachment_starts", "pull_off", ""])] == 0)
+
+
+# ----------------------------------------------------------------------------------------------
+# the dataset assembled without xarray's merge (issue 28)
+
+@pytest.mark.parametrize("method", METHODS)
+@pytest.mark.parametrize("motion", ["scenario", "custom"])
+def test_the_assembled_dataset_is_the_one_xarray_merges(params, paths, method, motion, monkeypatch, tmp_path):
+    """io.datasets.assembled lays a simulation's variables out without xarray's merge: the dataset (its variables,
+    their order and classes, the dimensions' order, the coordinates and their indexes, the attributes) and the
+    netCDF file written of it are those of xarray.Dataset(data, coords=coords)."""
+    from mdr_events.models import simulation_schema
+
+    def simulated():
+        if motion == "scenario":
+            return run(params, "B", method, alpha=[20.0, 60.0, 30.0])
+        return run(params, paths, method)
+
+    fast = simulated()
+    monkeypatch.setattr(simulation_schema, "assembled", lambda data, coords: xr.Dataset(data, coords=coords))
+    merged = simulated()
+    xr.testing.assert_identical(fast, merged)
+    assert list(fast.variables) == list(merged.variables) and list(fast.dims) == list(merged.dims)
+    assert set(fast.coords) == set(merged.coords) and list(fast.xindexes) == list(merged.xindexes)
+    assert all(fast.xindexes[name].equals(merged.xindexes[name]) for name in merged.xindexes)
+    assert [type(variable) for variable in fast.variables.values()] == \
+        [type(variable) for variable in merged.variables.values()]
+    assert fast.attrs == merged.attrs and list(fast.attrs) == list(merged.attrs)
+    write_netcdf(fast, tmp_path / "fast.nc")
+    write_netcdf(merged, tmp_path / "merged.nc")
+    assert (tmp_path / "fast.nc").read_bytes() == (tmp_path / "merged.nc").read_bytes()
+
+
+def test_an_assembled_dataset_refuses_what_a_merge_would():
+    """Sizes that disagree, and a data variable named after a dimension, are refused as xarray's merge refuses them."""
+    from mdr_events.io.datasets import assembled
+
+    coords = {"time": ("time", np.arange(3.0), {})}
+    with pytest.raises(ValueError, match="conflicting sizes"):
+        assembled({"x": (("time",), np.zeros(4), {})}, coords)
+    with pytest.raises(ValueError, match="named after a coordinate or a dimension"):
+        assembled({"time": (("time",), np.zeros(3), {})}, {})

@@ -107,3 +107,31 @@ def test_a_table_of_a_cone_is_the_cone_in_the_continuum(points):
     for name in ("normal_force", "tangential_force"):
         scale = float(np.abs(runs[1][name]).max())
         assert float(np.abs(runs[0][name] - runs[1][name]).max()) < 1e-9 * scale
+
+
+def test_the_dense_output_of_many_points_is_the_interpolants_bit_for_bit(paper):
+    """continuum.dense.force_values evaluates a span's DOP853 steps for all points at once (issue 28): at points
+    inside, at every step's ends (where OdeSolution picks one of two steps) and beyond, on spans integrated forwards
+    and backwards (a shrinking radius), of a table (a step per knot) and of the paraboloid, the values are the
+    OdeSolution's bit for bit."""
+    from mdr_events.models.continuum import solve_path
+    from mdr_events.models.continuum.dense import _gathered, force_values
+
+    r = np.linspace(0.0, 4e-3, 41)
+    table = me.TabulatedProfile(r, r**2 / (2 * paper.R))
+    zigzag = me.Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)], paper.v)
+    solutions = [solve_path(paper, me.Path.scenario_A(20.0, paper, profile=table), profile=table),
+                 solve_path(paper, me.Path.scenario_B(30.0, paper)), solve_path(paper, zigzag)]
+    rng = np.random.default_rng(28)
+    checked = {True: 0, False: 0}
+    for solution in solutions:
+        for span in solution.spans:
+            if _gathered(span.interpolant) is None:
+                continue
+            ts = np.asarray(span.interpolant.ts)
+            low, high = min(ts[0], ts[-1]), max(ts[0], ts[-1])
+            points = np.concatenate([ts, rng.uniform(low, high, 500), np.linspace(low, high, 777),
+                                     [low - 0.1 * (high - low), high + 0.1 * (high - low)]])
+            np.testing.assert_array_equal(force_values(span.interpolant, points), span.interpolant(points)[0])
+            checked[bool(ts[-1] > ts[0])] += 1
+    assert checked[True] and checked[False]  # steps taken forwards and backwards

@@ -274,3 +274,76 @@ def test_fretting_dissipated_energy_is_the_parallelogram(paper):
     for amplitude in (1.5 * cap, 3.0 * cap, 10.0 * cap):
         expected = 2 * plateau * 2 * (amplitude - cap)
         assert me.fretting_dissipated_energy(a, amplitude, paper) == pytest.approx(expected, rel=1e-14)
+
+
+# --- the phase diagram's curves computed into their rows, and the root finder's shorter passes (issue 28) ----------
+@pytest.mark.parametrize("count", [7, 40_001])  # one block, and several (blocks.BLOCK)
+@pytest.mark.parametrize("scenario", ["A", "B"])
+def test_the_rows_of_the_curves_are_d_crit_bit_for_bit(paper, scenario, count):
+    """d_crit_rows writes each curve into its row (root, then onset, in one array; no stacking): every row, and the
+    phase diagram's variables made of them, equals d_crit of that branch alone, bit for bit."""
+    alphas = np.linspace(0.0, 90.0, count)
+    rows = analytic.d_crit_rows(alphas, paper, scenario)
+    curves = analytic.d_crit_curves(alphas, paper, scenario)
+    diagram = me.phase_diagram(paper, alphas, scenario=scenario)
+    branches = [None] if scenario == "A" else list(analytic.BRANCHES)
+    for adhesion, key in ((False, "hertz"), (True, "jkr")):
+        assert rows[adhesion].shape == (len(branches), count)
+        for row, branch in enumerate(branches):
+            alone = np.asarray(me.d_crit(alphas, paper, scenario, adhesion=adhesion, branch=branch))
+            np.testing.assert_array_equal(rows[adhesion][row], alone)
+            np.testing.assert_array_equal(curves[adhesion, branch], alone)
+        np.testing.assert_array_equal(diagram[f"d_crit_{key}"].values, rows[adhesion][0] if scenario == "A"
+                                      else rows[adhesion])
+    assert analytic.d_crit_curves(20.0, paper, scenario)[True, branches[0]].shape == ()  # one angle: 0-d, as before
+
+
+def _polynomials_with_leading_zeros(rng, size: int) -> list:
+    """Monic polynomials ``s^n + 0 s^(n-1) + ... + c_1 s + c_0`` as the model's quartics have them (scalar zeros after
+    the leading 1; arrays and scalars below), with a positive root."""
+    found = []
+    for degree in (2, 3, 4, 5):
+        for zeros in range(1, degree):
+            coefficients = [1.0] + [0] * zeros
+            for _ in range(degree - zeros):
+                coefficients.append(rng.normal(size=size) * 1e-5 if rng.random() < 0.5 else float(rng.normal()) * 1e-5)
+            coefficients[-1] = -np.abs(np.broadcast_to(coefficients[-1], (size,))) - 1e-12
+            found.append(coefficients)
+    return found
+
+
+def test_the_horner_passes_that_skip_the_leading_zeros_give_the_same_roots(monkeypatch):
+    """roots._horner_into skips the additions of a monic polynomial's leading zero coefficients (x + 0 is x); the
+    roots, with and without out=, are those of the plain passes bit for bit (where an element overshoots too)."""
+    from mdr_events.theory import roots
+
+    rng = np.random.default_rng(28)
+    cases = _polynomials_with_leading_zeros(rng, 20_001) + [[1.0, 0, rng.normal(size=300), 1.0, -1e-3]]
+    found = []
+    for coefficients in cases:
+        out = np.empty(np.broadcast_shapes(*[np.shape(c) for c in coefficients]))
+        root = roots.positive_polynomial_root(coefficients)
+        assert roots.positive_polynomial_root(coefficients, out=out) is out
+        np.testing.assert_array_equal(out, root)
+        found.append(root)
+    monkeypatch.setattr(roots, "_leading_zeros", lambda coefficients: 0)
+    for coefficients, root in zip(cases, found):
+        np.testing.assert_array_equal(roots.positive_polynomial_root(coefficients), root)
+    assert roots._leading_zeros is not None
+    with pytest.raises(ValueError, match="out of shape"):
+        roots.positive_polynomial_root(cases[0], out=np.empty(3))
+
+
+def test_blockwise_into_a_row_is_blockwise(paper):
+    """blockwise(out=) writes the blocks into the given (C-contiguous) row: the values of blockwise without it."""
+    from mdr_events.theory.blocks import BLOCK, blockwise
+
+    values = np.linspace(-3.0, 3.0, 2 * BLOCK + 17)
+    rows = np.empty((2, values.size))
+    row = rows[1]
+    assert blockwise(np.sin, values, out=row) is row
+    np.testing.assert_array_equal(rows[1], blockwise(np.sin, values))
+    small = np.empty(5)
+    np.testing.assert_array_equal(blockwise(np.sin, values[:5], out=small), np.sin(values[:5]))
+    with pytest.raises(ValueError, match="C-contiguous"):
+        blockwise(np.sin, values, out=np.empty((values.size, 2))[:, 0])

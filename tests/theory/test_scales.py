@@ -93,11 +93,16 @@ def edge_runs(draw):
     return method, params, law, profile
 
 
+#: The discrete runs' steps: whether the outputs are finite does not hang on the time step (nor does what is accepted:
+#: the scales and the limits), and Coulomb's springs are stepped one by one.
+DISCRETE_STEPS = 1000
+
+
 def _run(method, params, law, profile):
     extra = {"samples": 201}
     if method == "discrete":
         radius = float(indenters.branch_radius(params.d_max, params, params.dgamma0, profile))
-        extra = {"n_steps": 2000, "dx": radius / 40.0}
+        extra = {"n_steps": DISCRETE_STEPS, "dx": radius / 40.0}
     return me.simulate(params, "A", alpha=[20.0], method=method, profile=profile, friction=law, limits=TEST_LIMITS,
                        **extra)
 

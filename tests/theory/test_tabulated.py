@@ -123,3 +123,23 @@ def test_a_table_whose_abel_transform_falls_is_refused():
         tb.equivalent(table)
     with pytest.raises(ValueError, match=r"does not increase"):
         me.simulate(me.Parameters.paper(), "A", alpha=20.0, profile=table)
+
+
+@pytest.mark.parametrize("work", [0.0, 0.01, 0.15])
+@pytest.mark.parametrize("make", [lambda r: r**2 / (2 * 0.03), lambda r: 0.2 * r, lambda r: r**3 / 1e-3],
+                         ids=["paraboloid", "cone", "cubic"])
+def test_the_radii_of_an_array_are_the_scalar_radius_bit_for_bit(paper, make, work):
+    """TabulatedBranch.radii takes the scalar iteration's steps for a whole array (issue 28: the continuum's fill of a
+    table called radius() per sample): each radius, in and out of the branch, on the grid, at the fold and next to
+    it, is radius()'s bit for bit."""
+    r = np.linspace(0.0, 3e-3, 31)
+    line = tb.branch(TabulatedProfile(r, make(r)), paper, work)
+    reach = line.deepest - line.jump_off_depth
+    depths = np.concatenate([np.linspace(line.jump_off_depth, line.deepest, 2001), line._depths,
+                             line.jump_off_depth + reach * np.logspace(-16, -1, 100),
+                             [line.jump_off_depth - reach, 2 * line.deepest + 1e-3, np.nan, line.deepest]])
+    radii = line.radii(depths)
+    expected = np.array([line.radius(float(depth)) for depth in depths])
+    np.testing.assert_array_equal(radii, expected)
+    assert np.isnan(radii[-4:-1]).all() and np.isfinite(radii[:-4]).all()
+    assert line.radii(np.float64(depths[7])).shape == () and line.radii(depths[:6].reshape(2, 3)).shape == (2, 3)

@@ -20,6 +20,7 @@ module                     one idea
 :mod:`.solve`              :func:`solve_path`: plan → integrate → transition → log
 :mod:`.compressed`         Coulomb's law alone with adhesion: the compressed zone's run beside the contact, and the
                            contact's slip events (the zone's and the tensile annulus's)
+:mod:`.dense`              a span's dense output at many points at once (DOP853's steps as arrays, bit for bit)
 :mod:`.solution`           :class:`PathSolution` (spans and interpolants), ``evaluate``, ``extremum``,
                            ``tangential_work``
 :mod:`.rate_edge`          a rate-dependent adhesion law's edge: the radius as the state of an ODE (the normal problem)

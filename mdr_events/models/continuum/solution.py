@@ -12,6 +12,7 @@ from scipy import optimize
 
 from mdr_events.parameters import Parameters
 from mdr_events.validation import check_real, real_array, shown
+from .dense import force_values
 from .model import ContinuumModel
 from .span import Span, Variable
 from .state import CONTACT_ENDING, Cap, Event, Regime
@@ -155,7 +156,7 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     if span.interpolant is None:
         force = np.full(t.shape, span.force)
     else:
-        force = span.interpolant(a / span.scale if span.variable is Variable.RADIUS else t)[0]
+        force = force_values(span.interpolant, a / span.scale if span.variable is Variable.RADIUS else t)
     out["tangential_force"] = force
     if solution.compressed is not None:
         out["tangential_force"], zone_sliding = _compressed_zone(solution.compressed, times, a, zone)

@@ -1,0 +1,95 @@
+"""A span's dense output evaluated at many points at once: the values ``solve_ivp``'s ``OdeSolution`` gives, bit for
+bit, without its Python loop over the solver's steps.
+
+``OdeSolution`` hands each step's points to that step's interpolant, one call per step: a span of a tabulated indenter
+restarts the solver at each of the table's knots (:func:`~.span.solve_between_knots`), some ninety steps, and filling
+2001 samples cost a hundred such calls. DOP853's interpolant of a step is a polynomial in ``x = (t − t_old)/h``
+evaluated by a fixed sequence of products and sums (``Dop853DenseOutput``); :func:`force_values` takes that sequence for
+every point at once, each point with the coefficients of the step ``OdeSolution`` would pick for it, so that every value
+is the interpolant's own. Any other dense output (another method, :class:`~.span.LinearForce`) is called as it is.
+"""
+
+from __future__ import annotations
+
+import weakref
+from typing import Callable, NamedTuple
+
+import numpy as np
+from scipy.integrate import OdeSolution
+
+try:  # (SciPy's class of DOP853's step interpolant; without it every dense output is called as it is)
+    from scipy.integrate._ivp.rk import Dop853DenseOutput
+except ImportError:  # pragma: no cover
+    Dop853DenseOutput = None
+
+__all__ = ["force_values"]
+
+
+class _Steps(NamedTuple):
+    """The steps of a DOP853 ``OdeSolution`` as arrays: how it picks a step (``ts_sorted``, ``side``, ``ascending``)
+    and each step's ``t_old``, ``h``, ``y_old`` and the rows of ``F``, last first (the order they are summed in)."""
+
+    ts_sorted: np.ndarray
+    side: str
+    ascending: bool
+    t_old: np.ndarray
+    h: np.ndarray
+    y_old: np.ndarray
+    reversed_F: np.ndarray
+
+
+#: Each solution's steps as arrays, gathered once (a fill and the extrema's scan read the same spans).
+_GATHERED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _gathered(interpolant) -> _Steps | None:
+    """:class:`_Steps` of a one-component ``OdeSolution`` whose every step is DOP853's, else ``None``."""
+    if type(interpolant) is not OdeSolution or Dop853DenseOutput is None:
+        return None
+    if interpolant in _GATHERED:
+        return _GATHERED[interpolant]
+    steps = interpolant.interpolants
+    if not steps or any(type(step) is not Dop853DenseOutput or step.y_old.shape != (1,) for step in steps):
+        return None
+    found = _Steps(np.asarray(interpolant.ts_sorted, dtype=float), interpolant.side, bool(interpolant.ascending),
+                   np.array([step.t_old for step in steps], dtype=float), np.array([step.h for step in steps],
+                                                                                  dtype=float),
+                   np.array([step.y_old[0] for step in steps]), np.array([step.F[::-1, 0] for step in steps]).T)
+    _GATHERED[interpolant] = found
+    return found
+
+
+def force_values(interpolant: Callable, points: np.ndarray) -> np.ndarray:
+    """``interpolant(points)[0]`` of a span's dense output (``OdeSolution``) at a 1-D array of points.
+
+    Parameters
+    ----------
+    interpolant : callable
+        The span's interpolant of ``F_x`` (``solve_ivp``'s ``OdeSolution``, or any callable of that shape).
+    points : numpy.ndarray
+        The points (the span's variable: time or scaled radius), 1-D.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``F_x`` at the points (N), the interpolant's values bit for bit.
+    """
+    steps = _gathered(interpolant)
+    if steps is None or np.ndim(points) != 1:
+        return interpolant(points)[0]
+    t = np.asarray(points, dtype=float)
+    count = len(steps.t_old)
+    segment = np.searchsorted(steps.ts_sorted, t, side=steps.side) - 1  # (as OdeSolution picks a step)
+    np.clip(segment, 0, count - 1, out=segment)
+    if not steps.ascending:
+        segment = count - 1 - segment
+    x = (t - steps.t_old[segment]) / steps.h[segment]
+    y = np.zeros(t.shape)
+    for i, row in enumerate(steps.reversed_F):  # (Dop853DenseOutput._call_impl's products and sums)
+        y += row[segment]
+        if i % 2 == 0:
+            y *= x
+        else:
+            y *= 1 - x
+    y += steps.y_old[segment]
+    return y
