@@ -1,7 +1,7 @@
 """Coulomb's law alone with adhesion in the continuum (models.continuum.caps.compressed_zone_alone): against the
 closed forms at a constant depth (Cattaneo–Mindlin of the compressed zone, Masing's loops, the loop energy, full slip)
 to CONTINUUM_RTOL, and the discrete model converging to it at first order on scenarios A and B at three angles and on
-a fretting path with re-contact, for Δγ0 = Δγ1, Δγ0 < Δγ1 and Δγ1 < Δγ0; what is still refused, named."""
+a fretting path with re-contact, for Δγ0 = Δγ1, Δγ0 < Δγ1 and Δγ1 < Δγ0."""
 
 from __future__ import annotations
 
@@ -161,16 +161,3 @@ def test_a_vertical_coulomb_indentation_without_adhesion_does_not_slide():
     sliding = evaluate(solution, np.linspace(0.0, solution.end_time, 20001))["sliding_fraction"]
     assert np.nanmax(sliding) < SLIDING_SHARE and not np.any(sliding_samples(sliding).partly)
     assert not [event for event in solution.events if event.kind is EventKind.SLIP_ONSET]
-
-
-@pytest.mark.parametrize("call, words", [
-    (lambda: me.simulate(me.Parameters.paper(), "A", alpha=[20.0], method="continuum",
-                         friction=FrictionLaw("tau0+coulomb", mu=0.3)),
-     ["Parameters.dgamma0=0.01 and Parameters.dgamma1=0.15 are not allowed", "'tau0+coulomb'", "not done yet",
-      "method='discrete'"]),
-])
-def test_what_the_continuum_still_refuses_is_named(call, words):
-    with pytest.raises(ValueError) as caught:
-        call()
-    for word in words:
-        assert word in str(caught.value)

@@ -100,6 +100,7 @@ class Trigger(enum.Enum):
     ZONE_LEAVES_EDGE = "zone_leaves_edge"    #: the shrinking edge passes a front whose zone lies at the edge
     LEVEL_TURNS = "level_turns"              #: a sliding cap's level turns back: its springs stick again
     EDGE_PASSES_PIECE = "edge_passes_piece"  #: the shrinking edge passes the start of its piece
+    BOUNDARY_PASSES_PART = "boundary_passes_part"  #: ``x_c`` passes a part's boundary (:mod:`.split_span`)
 
 
 #: A fired event: its trigger and the cap it concerns (``None`` for the edge passing a piece).
@@ -115,6 +116,10 @@ class SpanOutcome(NamedTuple):
     #: the contact radius at ``t_stop`` (a moving radius: the integration variable itself, not recomputed
     #: from the time, so that the next span starts exactly where the event's root was found)
     radius: float
+    #: the maps the span read its regions from (:class:`~.split_map.SpanMaps`; ``None``: the stored anchors)
+    maps: object = None
+    #: the slip in each region at the span's start as it was laid out (``None``: as given)
+    sliding: dict | None = None
 
 
 class EventFunction:
@@ -182,6 +187,19 @@ class SpanIntegrator:
         #: (the planner ends a span where the depth crosses 0, so the span's middle tells)
         self.depth_rate = self.segment.vd if self.segment.d(0.5 * (t0 + t1)) > 0.0 else 0.0
         self.x0 = self.segment.x(t0)
+        self.lay_out(anchors, sliding)
+
+    def lay_out(self, anchors: AnchorMap, sliding: dict[Cap, bool]) -> None:
+        """Each cap's slip zone at the span's start (:func:`~.zones.lay_out_zones`), and the tolerances of the levels.
+
+        Parameters
+        ----------
+        anchors : AnchorMap
+            The stored anchors of the springs in contact.
+        sliding : dict of Cap to bool
+            Whether springs slide at each cap at the start.
+        """
+        model, t0 = self.model, self.span.t_start
         depth_term = model.grow.depth_term
         # a moving radius is integrated in units of the span's largest radius, and an event's root is found to 4 eps
         # of that: the levels move by the travel up to it over that rounding, which the level offset must exceed
@@ -480,6 +498,32 @@ class SpanIntegrator:
                     met.add((Trigger.ZONE_LEAVES_EDGE, cap))
         return frozenset(met)
 
+    def finish(self, outcome: SpanOutcome) -> SpanOutcome:
+        """What :func:`integrate_span` returns of the span's ``outcome`` (the outcome itself: the span read the
+        stored anchors as they were given).
+
+        Parameters
+        ----------
+        outcome : SpanOutcome
+            How the span ended.
+
+        Returns
+        -------
+        SpanOutcome
+            ``outcome``.
+        """
+        return outcome
+
+    def has_fronts(self) -> bool:
+        """Whether a slip front lies inside a piece (the solver's steps are then limited: :func:`integrate_span`).
+
+        Returns
+        -------
+        bool
+            ``True`` if either cap's layout holds a front.
+        """
+        return bool(self.positive.fronts or self.negative.fronts)
+
     def force_is_linear(self) -> bool:
         """A pinned span without fronts: the slip zones hold whole pieces and keep their sizes until an
         event, so ``dF_x/dt = 2G* ((a − n₊ − n₋) v_x + (n₊ − n₋) κ ḋ)`` is constant and the events' times are
@@ -566,7 +610,7 @@ def fired_events(events: list[EventFunction], roots: list, start: float, offset:
 
 
 def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, sliding: dict[Cap, bool],
-                   force: float) -> SpanOutcome:
+                   force: float, integrator_class: type[SpanIntegrator] = SpanIntegrator) -> SpanOutcome:
     """Integrate ``F_x`` over ``span`` from ``force``, up to its end or the first event.
 
     Sets the span's interpolant (or constant force) and integration variable; the caller sets its
@@ -584,6 +628,9 @@ def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, slidin
         Whether springs slide at each cap at the start.
     force : float
         ``F_x`` (N) at the start.
+    integrator_class : type, default SpanIntegrator
+        The span's right-hand side and events (:class:`~.split_span.SplitSpanIntegrator` for both parts of the cap
+        with adhesion on a curved indenter).
 
     Returns
     -------
@@ -602,7 +649,14 @@ def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, slidin
     if model.caps.frictionless:  # τ0 = 0 (μ = 0): ū ≡ 0, every spring slides with zero shift, F_x ≡ 0
         span.force = 0.0
         return SpanOutcome(frozenset(), t1, 0.0, radius_at(model, span, t1))
-    integrator = SpanIntegrator(model, anchors, span, sliding)
+    integrator = integrator_class(model, anchors, span, sliding)
+    return integrator.finish(_integrate(model, span, integrator, force))
+
+
+def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, force: float) -> SpanOutcome:
+    """:func:`integrate_span` once the span's integrator is laid out: an event met at the start, a constant or
+    linear force, or ``solve_ivp`` with the events."""
+    t0, t1 = span.t_start, span.t_end
     span.variable = Variable.RADIUS if integrator.moving else Variable.TIME
     span.scale = integrator.scale
     met = integrator.met_at_start()
@@ -620,7 +674,7 @@ def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, slidin
     tolerances = model.tolerances
     # with a front in a piece, at most a share 1/MIN_STEPS_PER_SPAN of the span per step: the front's smooth
     # continuation ends where its piece meets the branch's fold, and one step across the whole span can reach it
-    fronts = integrator.positive.fronts or integrator.negative.fronts
+    fronts = integrator.has_fronts()
     options = dict(method="DOP853", rtol=tolerances.rtol, atol=tolerances.atol, dense_output=True,
                    events=events or None, max_step=abs(stop - start) / MIN_STEPS_PER_SPAN if fronts else math.inf)
     solution = solve_between_knots(integrator.rhs, start, stop, force, integrator.knots(), options)
