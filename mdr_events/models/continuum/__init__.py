@@ -20,6 +20,14 @@ module                     one idea
 :mod:`.solve`              :func:`solve_path`: plan → integrate → transition → log
 :mod:`.compressed`         Coulomb's law alone with adhesion: the compressed zone's run beside the contact, and the
                            contact's slip events (the zone's and the tensile annulus's)
+:mod:`.formulas`           both parts with adhesion: the anchors as formulas of ``g``, ``d0`` and ``A(g)`` (value,
+                           integral, turns, inverse on a monotone interval)
+:mod:`.regions`            the compressed zone and the tensile annulus; one cap's zone in one region, its ends moving
+:mod:`.split_map`          the stored anchors as pieces of formulas, their parts per cap and region, a span's maps
+:mod:`.split_sums`         what is read off them: the springs at a cap, the clip, the algebraic force, the zones
+:mod:`.split_span`         :class:`~.split_span.SplitSpanIntegrator`: the right-hand side and events of two regions,
+                           the anchors of springs crossing ``x_c`` at a cap
+:mod:`.split_solve`        the maps joined after a span, the slip transition of two regions
 :mod:`.solution`           :class:`PathSolution` (spans and interpolants), ``evaluate``, ``extremum``,
                            ``tangential_work``
 :mod:`.rate_edge`          a rate-dependent adhesion law's edge: the radius as the state of an ODE (the normal problem)
@@ -40,7 +48,8 @@ integrated force (:func:`algebraic_tangential_force`).
 
 Friction laws: the cap ``ū(ξ) = K a + κ max(d − g(ξ), 0)`` (:mod:`.caps`); with adhesion Coulomb's law alone runs as
 the compressed zone beside the contact (``PathSolution.compressed``); on the flat punch every law, with or without
-adhesion, is one play operator of the face; both parts together with adhesion on a curved indenter are refused.
+adhesion, is one play operator of the face; both parts together with adhesion on a curved indenter split the contact
+at the moving ``x_c`` into two regions with caps of their own (:mod:`.split_span`).
 """
 
 from .anchors import AnchorMap, Piece

@@ -35,6 +35,9 @@ TURN_GRID = 241
 #: Gauss–Legendre nodes of the integral of ``A(g(ξ))`` on one interval (between the knots of a table's ``g``): the
 #: radius of a depth is analytic there, and the rule exact to rounding.
 QUADRATURE_NODES = 24
+#: A root in ``ξ`` (a front, a turn) is found to this share of its interval's far end besides ``4 eps`` of itself:
+#: a front at ``ξ = 0`` (every spring of a part at one value to rounding) has no relative tolerance of its own
+ROOT_XTOL = 2 * EPS
 #: Steps of the vectorised bisection of :meth:`Formula.inverses` (2⁻⁶⁴ of a monotone interval: below its ulp).
 BISECTION_STEPS = 64
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(QUADRATURE_NODES)
@@ -77,6 +80,14 @@ class Shape:
     def knots(self) -> tuple[float, ...]:
         """Where ``g`` is not smooth (a table's grid; none for a power law)."""
         return self.hertz.knots
+
+    def limit(self, name: str | None) -> float:
+        """The largest ``ξ`` a formula with the radius of the branch ``name`` is read at: the reach, or where ``g``
+        passes the deepest depth that branch has a radius of (a table's, past which ``A`` is undefined)."""
+        deepest = getattr(getattr(self.branches.get(name), "line", None), "deepest", None)
+        if deepest is None:
+            return self.reach
+        return min(self.reach, self.hertz.radius(deepest, self.rtol))
 
 
 @dataclass(frozen=True)
@@ -195,7 +206,7 @@ class Formula:
         return cached
 
     def _find_turns(self) -> tuple[float, ...]:
-        reach = self.shape.reach
+        reach = self.shape.limit(self.radius_of)
         grid = reach * np.geomspace(1e-9, 1.0, TURN_GRID)
         grid = np.union1d(grid, [k for k in self.shape.knots() if 0.0 < k < reach])
         slopes = [self.slope(float(xi)) for xi in grid]
@@ -204,7 +215,8 @@ class Formula:
             if s_low == 0.0:
                 found.append(float(low))
             elif s_low * s_high < 0.0:
-                found.append(optimize.brentq(self.slope, float(low), float(high), xtol=1e-300, rtol=4 * EPS))
+                found.append(optimize.brentq(self.slope, float(low), float(high), xtol=ROOT_XTOL * float(high),
+                                             rtol=4 * EPS))
         return tuple(found)
 
     def monotone_interval(self, lower: float, upper: float) -> tuple[float, float]:
@@ -213,7 +225,7 @@ class Formula:
         turns = self.turns()
         middle = 0.5 * (lower + upper)
         low = max((t for t in turns if t <= middle), default=0.0)
-        high = min((t for t in turns if t > middle), default=max(self.shape.reach, upper))
+        high = min((t for t in turns if t > middle), default=max(self.shape.limit(self.radius_of), upper))
         return low, high
 
     def inverse(self, level: float, lower: float, upper: float) -> float:
@@ -226,7 +238,21 @@ class Formula:
             return lower
         if f_high == level:
             return upper
-        return optimize.brentq(lambda xi: self.value(xi) - level, lower, upper, xtol=1e-300, rtol=4 * EPS)
+        closed = self._branch_inverse(level)
+        if closed is not None and lower <= closed <= upper:
+            return closed
+        return optimize.brentq(lambda xi: self.value(xi) - level, lower, upper, xtol=ROOT_XTOL * upper,
+                               rtol=4 * EPS)
+
+    def _branch_inverse(self, level: float) -> float | None:
+        """The ``ξ`` of ``level`` where the formula is one branch's depth, ``x0 + α (g − d_ref)`` or
+        ``x0 + β (d0 − d_ref)``: that branch's radius of a depth (its closed form or safeguarded root); else
+        ``None``."""
+        if self.gamma or (self.alpha and self.beta):
+            return None
+        branch, ratio = (self.shape.hertz, self.alpha) if self.alpha else (self.shape.grow, self.beta)
+        xi = branch.radius(self.d_ref + (level - self.x0) / ratio, self.shape.rtol)
+        return xi if xi == xi else None
 
     def inverses(self, levels: np.ndarray, lower: float, upper: float) -> np.ndarray:
         """:meth:`inverse` of an array of levels, by a vectorised bisection of :data:`BISECTION_STEPS` steps."""

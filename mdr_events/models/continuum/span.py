@@ -498,6 +498,18 @@ class SpanIntegrator:
                     met.add((Trigger.ZONE_LEAVES_EDGE, cap))
         return frozenset(met)
 
+    def max_step(self) -> float:
+        """The longest step of the solver (in the integration variable): with a front in a piece, a share
+        1/:data:`MIN_STEPS_PER_SPAN` of the span (the front's smooth continuation ends where its piece meets the
+        branch's fold, and one step across the whole span can reach it); else none.
+
+        Returns
+        -------
+        float
+            The step (``inf``: none).
+        """
+        return abs(self.stop - self.start) / MIN_STEPS_PER_SPAN if self.has_fronts() else math.inf
+
     def finish(self, outcome: SpanOutcome) -> SpanOutcome:
         """What :func:`integrate_span` returns of the span's ``outcome`` (the outcome itself: the span read the
         stored anchors as they were given).
@@ -672,11 +684,8 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
                            f"{start!r} to {stop!r}, F_x = {force!r}); please report the parameters and path")
     events = integrator.event_functions()
     tolerances = model.tolerances
-    # with a front in a piece, at most a share 1/MIN_STEPS_PER_SPAN of the span per step: the front's smooth
-    # continuation ends where its piece meets the branch's fold, and one step across the whole span can reach it
-    fronts = integrator.has_fronts()
     options = dict(method="DOP853", rtol=tolerances.rtol, atol=tolerances.atol, dense_output=True,
-                   events=events or None, max_step=abs(stop - start) / MIN_STEPS_PER_SPAN if fronts else math.inf)
+                   events=events or None, max_step=integrator.max_step())
     solution = solve_between_knots(integrator.rhs, start, stop, force, integrator.knots(), options)
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")

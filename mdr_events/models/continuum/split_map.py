@@ -32,6 +32,11 @@ if TYPE_CHECKING:
     from .caps import Caps
 
 
+#: A piece starting this share of the radius inside the shrinking edge has been passed by it (an event's root and the
+#: radius carry the rounding of the radius roots, at most MAX_RADIUS_RTOL = 1e-13, and of the event's variable)
+EDGE_SHARE = 1e-12
+
+
 def _part(formula: Formula, start: float, end: float) -> Part:
     """The part of ``formula`` on ``[start, end]`` (no turn inside), with its monotone interval."""
     low, high = formula.monotone_interval(start, end) if not formula.constant else (start, end)
@@ -96,8 +101,10 @@ class SplitAnchorMap:
                        for p in self.pieces if p.start < radius] or self.pieces[:1]
 
     def drop_edge_piece(self, radius: float) -> None:
-        """The shrinking edge has passed the start of the last piece: end the map at ``radius``."""
-        if len(self.pieces) > 1:
+        """The shrinking edge has passed the start of the last piece, to the root's rounding (:data:`EDGE_SHARE` of
+        the radius): forget that piece and end the one before at ``radius`` (a part's boundary inside a piece, a
+        turn, is passed by :meth:`truncate` alone)."""
+        if len(self.pieces) > 1 and self.pieces[-1].start >= radius * (1.0 - EDGE_SHARE):
             self.pieces = self.pieces[:-2] + [dataclasses.replace(self.pieces[-2], end=radius)]
 
     def replaced(self, lower: float, upper: float, formula: Formula) -> "SplitAnchorMap":

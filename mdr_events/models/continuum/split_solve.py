@@ -77,6 +77,8 @@ def split_slip_transition(model: ContinuumModel, state: ContactState, outcome: S
     (the table of :mod:`.state`), and a level that turned back re-sticks its springs (the window materialised)."""
     state.force, state.radius, state.t = outcome.force, radius, outcome.t_stop
     state.last_fired = outcome.fired
+    if (Trigger.EDGE_PASSES_PIECE, None, None) in outcome.fired:
+        state.anchors.drop_edge_piece(radius)
     state.anchors.truncate(radius)
     for trigger, cap, region in outcome.fired:
         if trigger is Trigger.ZONE_REACHES:

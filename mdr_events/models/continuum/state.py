@@ -14,7 +14,9 @@ The continuum method is a hybrid automaton: between events the tangential force 
 
 :data:`ZONE_EVENTS` is the table ``(slip before, slip after) → events logged``;
 :func:`zone_events` reads it (and adds a front reaching the centre or the edge) and nothing else
-decides what a change of a slip zone logs.
+decides what a change of a slip zone logs. With both parts of the cap and adhesion on a curved indenter the table is
+read on each cap's zone over the compressed zone and the tensile annulus together
+(:func:`~.regions.combined_summary`), whose slip ``ContactState.regions`` keeps region by region.
 
 ==========  ==========  ==========================================================================
 before      after       logged (with the cap as the event's direction)
