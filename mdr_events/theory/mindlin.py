@@ -494,11 +494,7 @@ def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
     if adhesion and coulomb_cap_ratio(friction, params) == 0.0 and friction.uses_tau0:
         return power_law.d_crit_A(alpha, indenter, params, adhesion=True)
     if adhesion and not adhesive_onset_A_is_non_adhesive(friction, indenter):  # both parts on a curved indenter
-        inside = (alpha_arr > 0.0) & (alpha_arr < 90.0)
-        depth = np.where(alpha_arr >= 90.0, np.inf, 0.0)
-        if np.any(inside):
-            depth[inside] = combined_onset.d_crit_A(alpha_arr[inside], friction, params, indenter)
-        return _onset_output(depth, alpha_arr)
+        return _onset_output(_combined_onset(alpha_arr, friction, params, indenter), alpha_arr)
     tau0_law = params if friction.uses_tau0 else params.replace(tau0=0.0)
     kappa = coulomb_cap_ratio(friction, params)
     if kappa == 0.0:
@@ -513,6 +509,16 @@ def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
     else:
         depth = np.asarray(power_law.d_crit_A(effective, indenter, tau0_law, adhesion=False), dtype=float)
     return _onset_output(np.where(vertical, np.inf, np.where(slides, depth, np.nan)), alpha_arr)
+
+
+def _combined_onset(alpha_arr: np.ndarray, friction: FrictionLaw, params: Parameters, indenter: Profile) -> np.ndarray:
+    """Both parts with adhesion on a curved indenter (:func:`~mdr_events.theory.combined_onset.d_crit_A`): from first
+    contact along the surface (0°), never at 90° (``+inf``), ``nan`` where no onset comes by ``d_max``."""
+    inside = (alpha_arr > 0.0) & (alpha_arr < 90.0)
+    depth = np.where(alpha_arr >= 90.0, np.inf, 0.0)
+    if np.any(inside):
+        depth[inside] = combined_onset.d_crit_A(alpha_arr[inside], friction, params, indenter)
+    return depth
 
 
 def _onset_output(values: np.ndarray, alpha: np.ndarray):

@@ -77,12 +77,13 @@ def test_the_continuum_gives_cattaneo_mindlin_of_the_compressed_zone(adhesion, p
     assert all(event.radius == evaluate(solution, np.array([event.time]))["contact_radius"][0] for event in slips)
 
 
-def _convergence(params, cases, spacings, speed=1e-6, share=0.5, **options):
-    """max_t |discrete − continuum| of F_x, F_N and A per case at each spacing (dt = ``share`` Δx/v)."""
+def _convergence(params, cases, spacings, speed=1e-6, share=0.5, friction=COULOMB, **options):
+    """max_t |discrete − continuum| of F_x, F_N and A per case at each spacing (dt = ``share`` Δx/v) under
+    ``friction``."""
     differences = {}
     for dx in spacings:
-        discrete = me.simulate(params, cases, dx=dx, dt=share * dx / speed, friction=COULOMB, **options)
-        exact = me.simulate(params, cases, method="continuum", t=discrete["time"].values, friction=COULOMB, **options)
+        discrete = me.simulate(params, cases, dx=dx, dt=share * dx / speed, friction=friction, **options)
+        exact = me.simulate(params, cases, method="continuum", t=discrete["time"].values, friction=friction, **options)
         for name, values in history_differences(discrete, exact).items():
             differences.setdefault(name, []).append(np.atleast_1d(values))
     return {name: np.array(values) for name, values in differences.items()}

@@ -19,6 +19,8 @@ from mdr_events.models.continuum.solution import algebraic_tangential_force
 from mdr_events.models.continuum.split_map import SpanMaps
 from mdr_events.theory import mindlin, symbolic
 
+from test_coulomb_adhesion import _convergence as coulomb_adhesion_convergence
+
 DEPTH = 1e-4
 #: The continuum against the closed forms, as a share of full slip (its rtol is 1e-10; a loop's branches are exact
 #: between events), as in tests/models/test_friction_laws.py.
@@ -84,15 +86,9 @@ def test_the_continuum_gives_masings_loops_on_the_pinned_radius(adhesion, profil
     assert EventKind.FULL_SLIP in kinds and EventKind.RE_STICK in kinds
 
 
-def _convergence(params, cases, spacings, speed=1e-6, share=0.5, **options):
-    """max_t |discrete − continuum| of F_x, F_N and A per case at each spacing (dt = ``share`` Δx/v)."""
-    differences = {}
-    for dx in spacings:
-        discrete = me.simulate(params, cases, dx=dx, dt=share * dx / speed, friction=COMBINED, **options)
-        exact = me.simulate(params, cases, method="continuum", t=discrete["time"].values, friction=COMBINED, **options)
-        for name, values in history_differences(discrete, exact).items():
-            differences.setdefault(name, []).append(np.atleast_1d(values))
-    return {name: np.array(values) for name, values in differences.items()}
+def _convergence(params, cases, spacings, share=0.5, **options):
+    """max_t |discrete − continuum| of F_x, F_N and A per case at each spacing (dt = ``share`` Δx/v), both parts."""
+    return coulomb_adhesion_convergence(params, cases, spacings, share=share, friction=COMBINED, **options)
 
 
 def _assert_first_order(spacings, differences, least=0.7):

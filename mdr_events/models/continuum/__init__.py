@@ -16,7 +16,8 @@ module                     one idea
 :mod:`.zones`              one cap's slip zone laid out at a span's start, continued smoothly
 :mod:`.model`              the two branches and the cap ``ū = K a``; the path as linear segments
 :mod:`.plan`               :func:`plan_span`: the span's regime and end in closed form
-:mod:`.span`               :class:`SpanIntegrator` (right-hand side, event functions), ``integrate_span``
+:mod:`.span`               :class:`SpanIntegrator` (right-hand side, event functions)
+:mod:`.integrate`          ``integrate_span``: a span's force up to its end or first event (``solve_ivp``, knots)
 :mod:`.solve`              :func:`solve_path`: plan → integrate → transition → log
 :mod:`.compressed`         Coulomb's law alone with adhesion: the compressed zone's run beside the contact, and the
                            contact's slip events (the zone's and the tensile annulus's)
@@ -60,7 +61,8 @@ from .rate_edge import EdgeEvent, EdgeEventKind, EdgeMode, EdgeRun, solve_edge
 from .solution import (EVALUATED_QUANTITIES, EXTREMUM_QUANTITIES, PathSolution, algebraic_tangential_force, evaluate,
                        evaluate_span, extremum, tangential_work)
 from .solve import run_continuum, solve_path
-from .span import Span, SpanIntegrator, Trigger, integrate_span
+from .integrate import integrate_span
+from .span import Span, SpanIntegrator, Trigger
 from .state import (EVENT_KINDS, NO_ZONE, ZONE_EVENTS, Cap, ContactState, Event, EventKind, Regime, Slip, ZoneSummary,
                     zone_events)
 from .tolerances import NEGLIGIBLE_SHARE, Tolerances

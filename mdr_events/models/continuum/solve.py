@@ -1,7 +1,7 @@
 """``solve_path``: the hybrid automaton's loop, plan → integrate → transition → log.
 
 Each pass plans a span in closed form (:func:`~.plan.plan_span`), integrates the tangential force
-over it up to its end or the first slip event (:func:`~.span.integrate_span`), and applies the
+over it up to its end or the first slip event (:func:`~.integrate.integrate_span`), and applies the
 transition the plan or the events call for (the functions below; the slip transitions are the table
 of :mod:`~.state`), logging the events. Path corners start a new plan.
 """
@@ -23,7 +23,9 @@ from .compressed import attach_compressed_zone
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
 from .plan import Action, SpanPlan, plan_span
 from .solution import PathSolution, evaluate
-from .span import Span, SpanIntegrator, SpanOutcome, Trigger, integrate_span
+from .integrate import integrate_span
+from .span import Span, SpanIntegrator, SpanOutcome, Trigger
+from .split_map import SplitAnchorMap
 from .split_solve import commit, new_anchors, split_slip_transition
 from .split_span import SplitSpanIntegrator
 from .state import CONTACT_ENDING, NO_ZONE, Cap, ContactState, Event, EventKind, Regime, Slip, zone_events
@@ -78,8 +80,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     segments = kinematics(path)
     check_resolvable(model, path, segments)
     solution = PathSolution(model, t_contact=path.first_contact_time(), path=path)
-    anchors = new_anchors(model, path) if model.split else AnchorMap(model.grow, tolerances.radius_rtol)
-    state = ContactState(t=solution.t_contact, anchors=anchors)
+    state = ContactState(t=solution.t_contact, anchors=_stored_anchors(model, path))
     entries = path.entry_times()
     heading = 0.0  # the sign of the last tangential motion
     for index, segment in enumerate(segments):
@@ -108,6 +109,12 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
         attach_compressed_zone(solution, solve_path(model.zone_params, path, tolerances, limits, profile,
                                                     model.friction))
     return solution
+
+
+def _stored_anchors(model: ContinuumModel, path: Path) -> AnchorMap | SplitAnchorMap:
+    """An empty map of the anchors of ``model``'s springs along ``path``: of formulas split at ``x_c`` with both
+    parts of the cap and adhesion on a curved indenter (:func:`~.split_solve.new_anchors`), else of pieces."""
+    return new_anchors(model, path) if model.split else AnchorMap(model.grow, model.tolerances.radius_rtol)
 
 
 class RestartGuard:

@@ -246,7 +246,7 @@ class SpanMaps:
         if not a > 0 or not self.compressed.pieces:
             return 0.0
         boundary = self.boundary(depth, a)
-        total = sum(region_shift_integral(self.of(region), region, x, caps.K, caps.kappa, a, depth, lower, upper)
+        total = sum(region_shift_integral(self.of(region), region, caps, x, a, depth, lower, upper)
                     for region, lower, upper in ((Region.COMPRESSED, 0.0, boundary), (Region.TENSILE, boundary, a)))
         return 2.0 * G_star * total
 

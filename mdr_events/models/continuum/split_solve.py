@@ -16,7 +16,7 @@ from .model import ContinuumModel, Segment
 from .regions import Region, combined_summary
 from .span import Span, SpanOutcome, Trigger
 from .split_map import SpanMaps, SplitAnchorMap
-from .split_span import lay_out_regions, split_lengths
+from .split_span import Instant, lay_out_regions, split_lengths
 from .state import NO_ZONE, Cap, ContactState, EventKind, Slip, zone_events
 from .tolerances import PIECE_SHARE
 from .zones import indenter_travel
@@ -68,7 +68,7 @@ def _layouts(model: ContinuumModel, state: ContactState, segment: Segment, t: fl
     travel = indenter_travel(segment, t, radius, model.grow.depth_term)
     tolerance = PIECE_SHARE * split_lengths(anchors, model.caps.centre_shift(radius, depth), x, travel)
     boundary = min(anchors.shape.boundary(depth), radius)
-    return lay_out_regions(anchors.maps(), model.caps, x, depth, radius, boundary, state.regions, tolerance)
+    return lay_out_regions(anchors.maps(), model.caps, Instant(x, depth, radius, boundary), state.regions, tolerance)
 
 
 def split_slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOutcome, radius: float,

@@ -32,7 +32,7 @@ from .state import Cap, Regime, Slip
 from .tolerances import EPS, LEVEL_ULPS, PIECE_SHARE
 from .zones import EDGE_LEAVING_TOLERANCES, indenter_travel
 
-__all__ = ["SplitSpanIntegrator", "Ends", "STILL", "lay_out_regions", "crossing_formula", "split_lengths"]
+__all__ = ["SplitSpanIntegrator", "Ends", "STILL", "Instant", "lay_out_regions", "crossing_formula", "split_lengths"]
 
 #: A solver step covers at most this share of a span with a front: a front reaching the centre moves as ``g⁻¹`` of a
 #: level, ``∝ (t_end − t)^(1/n)``, whose end DOP853's error estimate misses in long steps (3e-7 of F_x on a power law
@@ -79,12 +79,21 @@ def region_parts(anchors: SplitAnchorMap, shift: float, lower: float, upper: flo
     return parts
 
 
-def lay_out_regions(maps: SpanMaps, caps, x: float, depth: float, radius: float, boundary: float,
-                    sliding: dict[Key, bool], tolerance: float,
+class Instant(NamedTuple):
+    """Where the indenter and the contact are at one instant: what the regions' layouts are laid out at."""
+
+    x: float         #: the tangential position (m)
+    depth: float     #: the depth (m)
+    radius: float    #: the contact radius (m)
+    boundary: float  #: the compression boundary ``x_c`` (m)
+
+
+def lay_out_regions(maps: SpanMaps, caps, at: Instant, sliding: dict[Key, bool], tolerance: float,
                     ends: dict[Region, Ends] | None = None) -> dict[Key, RegionLayout]:
     """Every cap's zone in every region that holds springs (the compressed zone ``[0, x_c]``, the annulus
-    ``[x_c, a]``), with the indenter at ``x``, the depth ``depth`` and the radius ``radius``; ``ends``: how each
-    region's ends move during the span (default :data:`STILL`)."""
+    ``[x_c, a]``) at the instant ``at``; ``ends``: how each region's ends move during the span (default
+    :data:`STILL`)."""
+    x, depth, radius, boundary = at
     extents = {Region.COMPRESSED: (0.0, boundary), Region.TENSILE: (boundary, radius)}
     out = {}
     for region, cap in KEYS:
@@ -167,7 +176,7 @@ class SplitSpanIntegrator(SpanIntegrator):
         self.ends = self._ends()
         boundary = self.boundary(self.start)
         self.maps = anchors.maps()
-        self.layouts = lay_out_regions(self.maps, model.caps, self.x0, depth, self.a0, boundary, self.sliding,
+        self.layouts = lay_out_regions(self.maps, model.caps, Instant(self.x0, depth, self.a0, boundary), self.sliding,
                                        self.tolerance, self.ends)
         if self.direction:
             self._cross(anchors, boundary, depth)
@@ -205,8 +214,8 @@ class SplitSpanIntegrator(SpanIntegrator):
                 self.maps = SpanMaps(swept, anchors) if destination is Region.COMPRESSED else SpanMaps(anchors, swept)
                 if self.rate(destination, cap, self.start) > 0.0:
                     self.sliding[(destination, cap)] = True
-                layouts = lay_out_regions(self.maps, self.model.caps, self.x0, depth, self.a0, boundary, self.sliding,
-                                          self.tolerance, self.ends)
+                layouts = lay_out_regions(self.maps, self.model.caps, Instant(self.x0, depth, self.a0, boundary),
+                                          self.sliding, self.tolerance, self.ends)
                 self.layouts.update({key: value for key, value in layouts.items() if key[0] is destination})
                 return
 

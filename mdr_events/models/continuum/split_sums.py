@@ -19,6 +19,7 @@ from .regions import Region
 from .state import Cap
 
 if TYPE_CHECKING:
+    from .caps import Caps
     from .split_map import SplitAnchorMap
 
 __all__ = ["at_cap_intervals", "clipped_pieces", "region_shift_integral", "zone_lengths"]
@@ -77,10 +78,11 @@ def _cap_integral(anchors: "SplitAnchorMap", region: Region, K: float, kappa: fl
     return total
 
 
-def region_shift_integral(anchors: "SplitAnchorMap", region: Region, x: float, K: float, kappa: float, radius: float,
+def region_shift_integral(anchors: "SplitAnchorMap", region: Region, caps: "Caps", x: float, radius: float,
                           depth: float, lower: float, upper: float) -> float:
     """``∫ clip(x − Y, −ū, ū) dξ`` over the springs of ``region`` on ``[lower, upper]``: the caps of those at one
     exactly, ``x − Y`` of the others (integrated between the caps' intervals, not as a difference of totals)."""
+    K, kappa = caps.K, caps.kappa
     total = 0.0
     for p in anchors.pieces:
         start, end = max(p.start, lower), min(p.end, upper)
