@@ -460,8 +460,8 @@ def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
     ``"coulomb"`` alone is 0 (from first contact). ``α = 90°`` never slides (``+inf``). With ``adhesion`` and Coulomb's
     part the onset is the one without where :func:`adhesive_onset_A_is_non_adhesive` (``"coulomb"`` alone, the flat
     punch); ``"tau0+coulomb"`` on a curved indenter has the first depth up to ``d_max`` where a spring's shift reaches
-    its cap, the jump-in ring's edge, ``x_c`` or the turn of the grown springs (:mod:`~mdr_events.theory.combined_onset`;
-    ``nan``: none by ``d_max``).
+    its cap, the jump-in ring's edge, ``x_c`` or the turn of the grown springs
+    (:mod:`~mdr_events.theory.combined_onset`; ``nan``: none by ``d_max``).
 
     Parameters
     ----------

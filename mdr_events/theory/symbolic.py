@@ -908,8 +908,8 @@ def _derive_crossing_anchor(add: AddRelation, cap: sp.Expr, profile: sp.Expr, bo
     seen = compressed_level.subs({position: x_s + v_x * (crossing - t_s), d: profile})
     if not _vanishes(anchor - sigma * kappa * profile - seen):
         raise RuntimeError("the crossing anchor is not at the compressed level of its instant")
-    add(Relation("adhesive_crossing_anchor", "(13)", "anchor a spring at xi keeps crossing x_c at the cap sigma on a path "
-                 "segment: x_s + (v_x/v_d)(g(xi) - d_s) - sigma K a", X, anchor,
+    add(Relation("adhesive_crossing_anchor", "(13)", "anchor a spring at xi keeps crossing x_c at the cap sigma on a "
+                 "path segment: x_s + (v_x/v_d)(g(xi) - d_s) - sigma K a", X, anchor,
                  (x, x_s, d_s, v_x, v_d, sigma, a, tau0, c, n, G_star)))
 
 

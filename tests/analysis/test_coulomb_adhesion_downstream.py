@@ -116,7 +116,7 @@ def test_both_parts_with_adhesion_converge_validate_and_fit(paper):
     fretting = me.Path(np.array([(0.0, 0.0), (0.0, DEPTH), (X, DEPTH), (-X, DEPTH), (0.0, DEPTH), (0.0, -2e-6),
                                  (0.0, DEPTH)]), speed=1e-6)
     runs = {dx: me.simulate(paper, fretting, dx=dx, dt=0.25 * dx / fretting.speed, friction=COMBINED).isel(case=0)
-            for dx in (4e-6, 2e-6, 1e-6, 0.5e-6)}  # (four: the pinned radius falls as far between springs at 2 and 1 µm)
+            for dx in (4e-6, 2e-6, 1e-6, 0.5e-6)}  # (four: the pinned radius lies as far between springs at 2, 1 µm)
     study = me.convergence_study(runs, paper, fretting, friction=COMBINED)
     assert study.attrs["verdict"] == "converges" and study.attrs["friction_law"] == "tau0+coulomb"
     assert float(study["max_error_order"].sel(quantity="tangential_force")) > 0.8

@@ -20,7 +20,7 @@ from mdr_events.models.continuum.formulas import Formula, Shape
 from mdr_events.models.continuum.model import Segment
 from mdr_events.models.continuum.regions import Region
 from mdr_events.models.continuum.split_map import SplitAnchorMap
-from mdr_events.models.continuum.split_span import crossing_formula
+from mdr_events.models.continuum.split_layouts import crossing_formula
 from mdr_events.models.continuum.state import Cap, Regime
 from mdr_events.theory import mindlin, symbolic
 

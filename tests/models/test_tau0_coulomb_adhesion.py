@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events.analysis.convergence import history_differences, observed_orders
+from mdr_events.analysis.convergence import observed_orders
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import EventKind, evaluate, solve_path, tangential_work
@@ -170,8 +170,8 @@ def test_springs_crossing_x_c_at_a_cap_keep_the_window_of_the_crossing(adhesion)
     times = np.linspace(0.0, solution.end_time, 2001)
     full = mindlin.full_slip_force(DEPTH, COMBINED, params, radius=float(evaluate(solution, times[:1] + 200.0)
                                                                             ["contact_radius"][0]))
-    np.testing.assert_allclose(algebraic_tangential_force(solution, times), evaluate(solution, times)["tangential_force"],
-                               rtol=0, atol=CONTINUUM_RTOL * full)
+    np.testing.assert_allclose(algebraic_tangential_force(solution, times),
+                               evaluate(solution, times)["tangential_force"], rtol=0, atol=CONTINUUM_RTOL * full)
     spacings = (2e-6, 1e-6, 0.5e-6)
     errors = np.zeros((len(spacings), len(paths)))
     for row, dx in enumerate(spacings):

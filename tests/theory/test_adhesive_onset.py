@@ -65,7 +65,8 @@ def test_the_adhesive_onset_is_the_non_adhesive_one_and_the_continuums(adhesion,
 #: continuum's layouts at a = 0 do not resolve, with τ0 alone as well)
 COMBINED_CASES = [pytest.param(adhesion, profile, id=f"{name}-{label}")
                   for adhesion, name in zip(ADHESIONS + [(0.0, 0.1)], ("paper", "reversed", "grows-without"))
-                  for profile, label in ((None, "paraboloid"), (PowerLaw.cone(0.05), "cone"), (PowerLaw(2e5, 3.0), "n3"))
+                  for profile, label in ((None, "paraboloid"), (PowerLaw.cone(0.05), "cone"),
+                                         (PowerLaw(2e5, 3.0), "n3"))
                   if not (label == "cone" and adhesion[0] == 0.0)]
 
 

@@ -26,8 +26,10 @@ module                     one idea
 :mod:`.regions`            the compressed zone and the tensile annulus; one cap's zone in one region, its ends moving
 :mod:`.split_map`          the stored anchors as pieces of formulas, their parts per cap and region, a span's maps
 :mod:`.split_sums`         what is read off them: the springs at a cap, the clip, the algebraic force, the zones
-:mod:`.split_span`         :class:`~.split_span.SplitSpanIntegrator`: the right-hand side and events of two regions,
-                           the anchors of springs crossing ``x_c`` at a cap
+:mod:`.split_layouts`      both regions' layouts at an instant, their ends moving; the anchors of springs crossing
+                           ``x_c`` at a cap
+:mod:`.split_span`         :class:`~.split_span.SplitSpanIntegrator`: the right-hand side of two regions
+:mod:`.split_events`       its events, keyed by cap and region
 :mod:`.split_solve`        the maps joined after a span, the slip transition of two regions
 :mod:`.solution`           :class:`PathSolution` (spans and interpolants), ``evaluate``, ``extremum``,
                            ``tangential_work``

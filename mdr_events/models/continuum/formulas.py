@@ -65,25 +65,77 @@ class Shape:
         self.turn_cache: dict[tuple, tuple[float, ...]] = {}
 
     def boundary(self, depth: float) -> float:
-        """The compression boundary ``x_c`` of a depth, ``g(x_c) = d`` (0 at ``d <= 0``: every spring in tension)."""
+        """The compression boundary ``x_c`` of a depth, ``g(x_c) = d`` (0 at ``d <= 0``: every spring in tension).
+
+        Parameters
+        ----------
+        depth : float
+            The depth ``d`` (m).
+
+        Returns
+        -------
+        float
+            ``x_c`` (m).
+        """
         return self.hertz.radius(depth, self.rtol) if depth > 0.0 else 0.0
 
     def boundaries(self, depth: np.ndarray) -> np.ndarray:
-        """:meth:`boundary` of an array of depths."""
+        """:meth:`boundary` of an array of depths.
+
+        Parameters
+        ----------
+        depth : numpy.ndarray
+            The depths (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``x_c`` of each (m).
+        """
         depth = np.asarray(depth, dtype=float)
         return np.where(depth > 0.0, self.hertz.radii(np.maximum(depth, 0.0)), 0.0)
 
     def radius(self, name: str, depth: float) -> float:
-        """``A(d)``: the radius of ``depth`` on the branch ``name`` (``"grow"`` or ``"shrink"``)."""
+        """``A(d)``: the radius of ``depth`` on the branch ``name`` (``"grow"`` or ``"shrink"``).
+
+        Parameters
+        ----------
+        name : str
+            ``"grow"`` or ``"shrink"``.
+        depth : float
+            The depth (m).
+
+        Returns
+        -------
+        float
+            The radius (m; ``nan`` below the branch's fold).
+        """
         return self.branches[name].radius(depth, self.rtol)
 
     def knots(self) -> tuple[float, ...]:
-        """Where ``g`` is not smooth (a table's grid; none for a power law)."""
+        """Where ``g`` is not smooth (a table's grid; none for a power law).
+
+        Returns
+        -------
+        tuple of float
+            The knots (m), increasing.
+        """
         return self.hertz.knots
 
     def limit(self, name: str | None) -> float:
         """The largest ``ξ`` a formula with the radius of the branch ``name`` is read at: the reach, or where ``g``
-        passes the deepest depth that branch has a radius of (a table's, past which ``A`` is undefined)."""
+        passes the deepest depth that branch has a radius of (a table's, past which ``A`` is undefined).
+
+        Parameters
+        ----------
+        name : str or None
+            The branch of the formula's ``A`` (``None``: none).
+
+        Returns
+        -------
+        float
+            The largest ``ξ`` (m).
+        """
         deepest = getattr(getattr(self.branches.get(name), "line", None), "deepest", None)
         if deepest is None:
             return self.reach
@@ -122,18 +174,46 @@ class Formula:
 
     @property
     def constant(self) -> bool:
-        """Whether ``Y`` is the same for every ``ξ``."""
+        """Whether ``Y`` is the same for every ``ξ``.
+
+        Returns
+        -------
+        bool
+            ``True`` if ``α = β = γ = 0``.
+        """
         return self.alpha == 0.0 and self.beta == 0.0 and self.gamma == 0.0
 
     def seen(self, shift: float) -> "Formula":
-        """``Y − shift g(ξ)``: as a cap ``σ`` of the compressed zone sees the anchors (``shift = σ κ``)."""
+        """``Y − shift g(ξ)``: as a cap ``σ`` of the compressed zone sees the anchors (``shift = σ κ``).
+
+        Parameters
+        ----------
+        shift : float
+            ``σ κ`` of the cap (0: the anchors as they are).
+
+        Returns
+        -------
+        Formula
+            The anchors as the cap sees them.
+        """
         if shift == 0.0:
             return self
         return replace(self, x0=self.x0 - shift * self.d_ref, alpha=self.alpha - shift)
 
     # --- values --------------------------------------------------------------------------------
     def value(self, xi: float) -> float:
-        """``Y(ξ)`` for one float (m)."""
+        """``Y(ξ)`` for one float (m).
+
+        Parameters
+        ----------
+        xi : float
+            The spring's coordinate ``ξ`` (m).
+
+        Returns
+        -------
+        float
+            ``Y(ξ)`` (m).
+        """
         shape = self.shape
         total = self.x0
         g = shape.hertz.depth(xi) if (self.alpha or self.gamma) else 0.0
@@ -146,7 +226,18 @@ class Formula:
         return total
 
     def values(self, xi: np.ndarray) -> np.ndarray:
-        """``Y(ξ)`` of an array (m)."""
+        """``Y(ξ)`` of an array (m).
+
+        Parameters
+        ----------
+        xi : numpy.ndarray
+            The springs' coordinates (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``Y`` at each (m).
+        """
         shape = self.shape
         xi = np.asarray(xi, dtype=float)
         total = np.full(xi.shape, self.x0)
@@ -160,7 +251,18 @@ class Formula:
         return total
 
     def slope(self, xi: float) -> float:
-        """``dY/dξ`` at one ``ξ > 0``: ``α g' + β d0' + γ g'/d_A'(A)`` (the branches' derived slopes)."""
+        """``dY/dξ`` at one ``ξ > 0``: ``α g' + β d0' + γ g'/d_A'(A)`` (the branches' derived slopes).
+
+        Parameters
+        ----------
+        xi : float
+            The spring's coordinate ``ξ`` (m).
+
+        Returns
+        -------
+        float
+            ``dY/dξ`` (1).
+        """
         shape = self.shape
         total = 0.0
         rate = shape.hertz.slope(xi) if (self.alpha or self.gamma) else 0.0
@@ -175,7 +277,20 @@ class Formula:
 
     def integral(self, lower: float, upper: float) -> float:
         """``∫ Y dξ`` over ``[lower, upper]`` (m²): the branches' derived integrals, and Gauss–Legendre for ``A(g)``
-        between the knots of ``g``."""
+        between the knots of ``g``.
+
+        Parameters
+        ----------
+        lower : float
+            The lower bound (m).
+        upper : float
+            The upper bound (m).
+
+        Returns
+        -------
+        float
+            The integral (m²; 0 where ``upper <= lower``).
+        """
         if upper <= lower:
             return 0.0
         shape, width = self.shape, upper - lower
@@ -196,7 +311,13 @@ class Formula:
     def turns(self) -> tuple[float, ...]:
         """Where ``dY/dξ`` changes sign on ``(0, reach)``, increasing (``adhesive_seen_piece_turn`` for a growth as the
         compressed zone sees it): sign changes on a grid of :data:`TURN_GRID` points, each refined by ``brentq``.
-        Computed once per kind (the coefficients but ``x0``)."""
+        Computed once per kind (the coefficients but ``x0``).
+
+        Returns
+        -------
+        tuple of float
+            The turns (m), increasing (none for a constant or ``α g`` alone).
+        """
         if self.constant or (not self.beta and not self.gamma):  # a constant, or α g: g increases
             return ()
         key = (self.alpha, self.beta, self.gamma, self.radius_of)
@@ -221,7 +342,20 @@ class Formula:
 
     def monotone_interval(self, lower: float, upper: float) -> tuple[float, float]:
         """The interval between turns (or ``0`` and the reach) that holds ``[lower, upper]``, on which ``Y`` is
-        monotone: where a front inside ``[lower, upper]`` is continued."""
+        monotone: where a front inside ``[lower, upper]`` is continued.
+
+        Parameters
+        ----------
+        lower : float
+            The start of the springs (m).
+        upper : float
+            Their end (m): no turn lies between.
+
+        Returns
+        -------
+        tuple of float
+            The interval's ends (m).
+        """
         turns = self.turns()
         middle = 0.5 * (lower + upper)
         low = max((t for t in turns if t <= middle), default=0.0)
@@ -230,7 +364,22 @@ class Formula:
 
     def inverse(self, level: float, lower: float, upper: float) -> float:
         """The ``ξ`` in ``[lower, upper]`` (a monotone interval) where ``Y = level``; the nearer end where ``level``
-        lies beyond the values there."""
+        lies beyond the values there.
+
+        Parameters
+        ----------
+        level : float
+            The anchor value (m).
+        lower : float
+            The monotone interval's start (m).
+        upper : float
+            Its end (m).
+
+        Returns
+        -------
+        float
+            ``ξ`` (m): the branch's radius where the formula is one branch's depth, else ``brentq``'s root.
+        """
         f_low, f_high = self.value(lower), self.value(upper)
         if (f_low - level) * (f_high - level) > 0.0:
             return lower if abs(f_low - level) < abs(f_high - level) else upper
@@ -255,7 +404,22 @@ class Formula:
         return xi if xi == xi else None
 
     def inverses(self, levels: np.ndarray, lower: float, upper: float) -> np.ndarray:
-        """:meth:`inverse` of an array of levels, by a vectorised bisection of :data:`BISECTION_STEPS` steps."""
+        """:meth:`inverse` of an array of levels, by a vectorised bisection of :data:`BISECTION_STEPS` steps.
+
+        Parameters
+        ----------
+        levels : numpy.ndarray
+            The anchor values (m).
+        lower : float
+            The monotone interval's start (m).
+        upper : float
+            Its end (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``ξ`` of each level (m).
+        """
         levels = np.asarray(levels, dtype=float)
         rising = self.value(upper) >= self.value(lower)
         low, high = np.full(levels.shape, lower), np.full(levels.shape, upper)
@@ -288,5 +452,22 @@ class FormulaPiece:
 
 def growth_formula(shape: Shape, x0: float, ratio: float, d_ref: float) -> Formula:
     """The anchors of springs attaching along the ``Δγ0`` branch on a segment, ``x0 + ratio (d0(ξ) − d_ref)`` (a
-    constant for ``ratio = 0``): the :class:`~.anchors.Piece` of the planner as a :class:`Formula`."""
+    constant for ``ratio = 0``): the :class:`~.anchors.Piece` of the planner as a :class:`Formula`.
+
+    Parameters
+    ----------
+    shape : Shape
+        The functions of the contact.
+    x0 : float
+        The anchor at ``d_ref`` (m).
+    ratio : float
+        ``v_x/v_d`` of the segment (0: a constant).
+    d_ref : float
+        The reference depth (m).
+
+    Returns
+    -------
+    Formula
+        The anchors.
+    """
     return Formula(shape, x0, beta=ratio, d_ref=d_ref if ratio else 0.0)

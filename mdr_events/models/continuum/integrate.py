@@ -26,7 +26,24 @@ def fired_events(events: list[EventFunction], roots: list, start: float, offset:
     """The first root among the events' ``roots`` (``solve_ivp``'s ``t_events``) and every event that fires
     with it: those whose roots coincide (to SIMULTANEOUS_SHARE), and the rising ones whose function is
     already zero to rounding there (the roots of identical functions, e.g. onset and full slip of a
-    uniform field, differ by an ulp)."""
+    uniform field, differ by an ulp).
+
+    Parameters
+    ----------
+    events : list of EventFunction
+        The span's event functions.
+    roots : list
+        ``solve_ivp``'s ``t_events``.
+    start : float
+        The span's start (its variable).
+    offset : float
+        The rising events' offset (m).
+
+    Returns
+    -------
+    tuple
+        The first root and the keys that fire there.
+    """
     hits = sorted((abs(found[0] - start), found[0], index) for index, found in enumerate(roots) if len(found))
     first = hits[0][1]
     fired = {events[index].key for _, var, index in hits
@@ -158,7 +175,22 @@ def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, 
 
 
 def radius_at(model: ContinuumModel, span: Span, t: float) -> float:
-    """The contact radius of ``span`` at path time ``t``."""
+    """The contact radius of ``span`` at path time ``t``.
+
+    Parameters
+    ----------
+    model : ContinuumModel
+        The contact.
+    span : Span
+        The span.
+    t : float
+        The path time (s).
+
+    Returns
+    -------
+    float
+        The radius (m).
+    """
     if span.regime in (Regime.GROWING, Regime.SHRINKING):
         return model.branch(span.regime).radius(span.segment.d(t), model.tolerances.radius_rtol)
     return span.pinned_radius

@@ -28,20 +28,77 @@ class Region(enum.Enum):
 
     @property
     def weight(self) -> float:
-        """1 where Coulomb's part acts, 0 where it does not."""
+        """1 where Coulomb's part acts, 0 where it does not.
+
+        Returns
+        -------
+        float
+            The weight (1 or 0).
+        """
         return float(self.value)
 
     def view_shift(self, cap: Cap, kappa: float) -> float:
-        """The share of ``g(ξ)`` a cap subtracts from the anchors it compares (``σ κ`` compressed, 0 in tension)."""
+        """The share of ``g(ξ)`` a cap subtracts from the anchors it compares (``σ κ`` compressed, 0 in tension).
+
+        Parameters
+        ----------
+        cap : Cap
+            The side, +1 or −1.
+        kappa : float
+            ``κ = μ E*/G*``.
+
+        Returns
+        -------
+        float
+            The shift (1).
+        """
         return float(cap) * kappa * self.weight
 
     def level(self, cap: Cap, x: float, K: float, kappa: float, radius: float, depth: float) -> float:
-        """``x − σ (K a + weight κ d)``: the level the springs at ``cap`` sit at, as the cap sees them."""
+        """``x − σ (K a + weight κ d)``: the level the springs at ``cap`` sit at, as the cap sees them.
+
+        Parameters
+        ----------
+        cap : Cap
+            The side, +1 or −1.
+        x : float
+            The indenter's tangential position (m).
+        K : float
+            ``τ0``'s cap per radius (1).
+        kappa : float
+            ``κ = μ E*/G*``.
+        radius : float
+            The contact radius (m).
+        depth : float
+            The depth (m).
+
+        Returns
+        -------
+        float
+            The level (m).
+        """
         return x - float(cap) * (K * radius + self.weight * kappa * depth)
 
     def bound(self, shape: Shape, cap: Cap, level: float, kappa: float) -> Formula:
         """The stored anchors of springs materialised at ``cap``: ``level + σ κ g(ξ)`` compressed, ``level`` in
-        tension."""
+        tension.
+
+        Parameters
+        ----------
+        shape : Shape
+            The functions of the contact.
+        cap : Cap
+            The side, +1 or −1.
+        level : float
+            The cap's level (m).
+        kappa : float
+            ``κ = μ E*/G*``.
+
+        Returns
+        -------
+        Formula
+            The anchors ``Y`` of those springs.
+        """
         return Formula(shape, level, alpha=self.view_shift(cap, kappa))
 
 
@@ -66,17 +123,50 @@ class Part:
     high: float
 
     def value(self, xi: float) -> float:
-        """The seen anchor at ``ξ`` (m)."""
+        """The seen anchor at ``ξ`` (m).
+
+        Parameters
+        ----------
+        xi : float
+            The spring's coordinate (m).
+
+        Returns
+        -------
+        float
+            The anchor as the cap sees it (m).
+        """
         return self.formula.value(xi)
 
     def rises_towards(self, cap: Cap) -> bool:
-        """Whether ``σ Y`` increases with ``ξ`` over the part (its slip zone is then at its start)."""
+        """Whether ``σ Y`` increases with ``ξ`` over the part (its slip zone is then at its start).
+
+        Parameters
+        ----------
+        cap : Cap
+            The side, +1 or −1.
+
+        Returns
+        -------
+        bool
+            ``True`` for a constant, or where ``σ Y`` rises over the monotone interval.
+        """
         if self.formula.constant:
             return True
         return float(cap) * (self.formula.value(self.high) - self.formula.value(self.low)) > 0.0
 
     def inverse(self, level: float) -> float:
-        """Where the seen anchors equal ``level``, continued over the monotone interval (clamped at its ends)."""
+        """Where the seen anchors equal ``level``, continued over the monotone interval (clamped at its ends).
+
+        Parameters
+        ----------
+        level : float
+            The level (m).
+
+        Returns
+        -------
+        float
+            ``ξ`` (m).
+        """
         return self.formula.inverse(level, self.low, self.high)
 
 
@@ -158,7 +248,22 @@ class RegionLayout:
 
     # --- through the span -----------------------------------------------------------------------
     def size(self, level: float, lower: float, upper: float) -> float:
-        """The zone's size (m) with the level ``level`` and the region ``[lower, upper]``, continued smoothly."""
+        """The zone's size (m) with the level ``level`` and the region ``[lower, upper]``, continued smoothly.
+
+        Parameters
+        ----------
+        level : float
+            The cap's level (m), as the cap sees the anchors.
+        lower : float
+            The region's start (m).
+        upper : float
+            Its end (m).
+
+        Returns
+        -------
+        float
+            The size (m).
+        """
         total = self.inner
         for index in self.moving_in:
             start, end = self._ends(index, lower, upper)
@@ -170,18 +275,57 @@ class RegionLayout:
         return total
 
     def end_value(self, end: int, lower: float, upper: float) -> float:
-        """``σ Y`` as the cap sees it at the region's start (``end = 0``) or end (1)."""
+        """``σ Y`` as the cap sees it at the region's start (``end = 0``) or end (1).
+
+        Parameters
+        ----------
+        end : int
+            0 for the start, 1 for the end.
+        lower : float
+            The region's start (m).
+        upper : float
+            Its end (m).
+
+        Returns
+        -------
+        float
+            ``σ Y`` there (m).
+        """
         p = self.parts[0 if end == 0 else -1]
         return self.sign * p.value(lower if end == 0 else upper)
 
     def target(self, lower: float, upper: float) -> float:
-        """The value of ``σ · level`` at which the layout stops being right as the level pushes on (``inf``: none)."""
+        """The value of ``σ · level`` at which the layout stops being right as the level pushes on (``inf``: none).
+
+        Parameters
+        ----------
+        lower : float
+            The region's start (m).
+        upper : float
+            Its end (m).
+
+        Returns
+        -------
+        float
+            The target (m; ``inf``: none).
+        """
         values = [self.end_value(end, lower, upper) for end in self.moving_targets]
         return min([self.fixed_target] + values)
 
     # --- what is read and logged ------------------------------------------------------------------
     def at_cap(self, end: int) -> bool:
-        """Whether the spring at the region's start (``end = 0``) or end (1) is at the cap."""
+        """Whether the spring at the region's start (``end = 0``) or end (1) is at the cap.
+
+        Parameters
+        ----------
+        end : int
+            0 for the start, 1 for the end.
+
+        Returns
+        -------
+        bool
+            ``True`` if that spring is at the cap.
+        """
         if not self.parts:
             return False
         index = 0 if end == 0 else len(self.parts) - 1
@@ -189,7 +333,13 @@ class RegionLayout:
         return role is Role.IN or (role is Role.FRONT and self.parts[index].rises_towards(self.cap) == (end == 0))
 
     def summary(self) -> ZoneSummary | None:
-        """The zone's extent, and whether it holds the region's first and last spring (``None``: an empty region)."""
+        """The zone's extent, and whether it holds the region's first and last spring (``None``: an empty region).
+
+        Returns
+        -------
+        ZoneSummary or None
+            The zone's summary, ``None`` for a region without springs.
+        """
         present = [(p, role) for p, role in zip(self.parts, self.roles) if p.end > p.start]
         if not present:
             return None
@@ -204,7 +354,20 @@ class RegionLayout:
 
 def combined_summary(compressed: ZoneSummary | None, tensile: ZoneSummary | None) -> ZoneSummary:
     """One cap's zone over the whole contact from its zones in the compressed zone and the tensile annulus (``None``:
-    a region without springs): the centre is the compressed zone's, the edge the annulus's."""
+    a region without springs): the centre is the compressed zone's, the edge the annulus's.
+
+    Parameters
+    ----------
+    compressed : ZoneSummary or None
+        The cap's zone in the compressed zone.
+    tensile : ZoneSummary or None
+        Its zone in the tensile annulus.
+
+    Returns
+    -------
+    ZoneSummary
+        The cap's zone over the contact.
+    """
     present = [summary for summary in (compressed, tensile) if summary is not None]
     if not present or all(summary.slip is Slip.STICK for summary in present):
         return NO_ZONE

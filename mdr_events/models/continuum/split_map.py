@@ -71,12 +71,19 @@ class SplitAnchorMap:
     def __init__(self, shape: Shape, pieces: list[FormulaPiece] | None = None):
         self.shape = shape
         self.pieces: list[FormulaPiece] = list(pieces or [])
-        #: ``(t, x_c)``: the path time and the compression boundary the map was last joined at (:meth:`SpanMaps.joined`):
-        #: a span starting then splits its regions exactly there, not at ``x_c`` recomputed to another rounding
+        #: ``(t, x_c)``: the path time and the compression boundary the map was last joined at
+        #: (:meth:`SpanMaps.joined`): a span starting then splits its regions exactly there, not at ``x_c`` recomputed
+        #: to another rounding
         self.joined_at: tuple[float, float] | None = None
 
     def copy(self) -> "SplitAnchorMap":
-        """A copy that does not change when this map does (pieces are immutable)."""
+        """A copy that does not change when this map does (pieces are immutable).
+
+        Returns
+        -------
+        SplitAnchorMap
+            The copy.
+        """
         return SplitAnchorMap(self.shape, self.pieces)
 
     # --- building (as AnchorMap) ----------------------------------------------------------------
@@ -85,43 +92,108 @@ class SplitAnchorMap:
         self.pieces = []
 
     def extend(self, start: float, piece: Piece) -> None:
-        """Forget everything beyond ``start`` and append the planner's ``piece`` (springs attaching)."""
+        """Forget everything beyond ``start`` and append the planner's ``piece`` (springs attaching).
+
+        Parameters
+        ----------
+        start : float
+            The coordinate (m) from which springs attach.
+        piece : Piece
+            Their anchors, as the planner gives them.
+        """
         formula = growth_formula(self.shape, piece.x0, piece.ratio, piece.d_ref)
         kept = [p if p.end <= start else dataclasses.replace(p, end=start) for p in self.pieces if p.start < start]
         self.pieces = _merged(kept + [FormulaPiece(piece.start, piece.end, formula)])
 
     def close(self, end: float) -> None:
-        """Fix the end of the last piece (the radius a growth stopped at)."""
+        """Fix the end of the last piece (the radius a growth stopped at).
+
+        Parameters
+        ----------
+        end : float
+            The radius (m).
+        """
         if self.pieces and self.pieces[-1].end != end:
             self.pieces[-1] = dataclasses.replace(self.pieces[-1], end=end)
 
     def truncate(self, radius: float) -> None:
-        """Forget the springs beyond ``radius`` (they have detached)."""
+        """Forget the springs beyond ``radius`` (they have detached).
+
+        Parameters
+        ----------
+        radius : float
+            The contact radius (m).
+        """
         self.pieces = [p if p.end <= radius else dataclasses.replace(p, end=radius)
                        for p in self.pieces if p.start < radius] or self.pieces[:1]
 
     def drop_edge_piece(self, radius: float) -> None:
         """The shrinking edge has passed the start of the last piece, to the root's rounding (:data:`EDGE_SHARE` of
         the radius): forget that piece and end the one before at ``radius`` (a part's boundary inside a piece, a
-        turn, is passed by :meth:`truncate` alone)."""
+        turn, is passed by :meth:`truncate` alone).
+
+        Parameters
+        ----------
+        radius : float
+            The contact radius (m).
+        """
         if len(self.pieces) > 1 and self.pieces[-1].start >= radius * (1.0 - EDGE_SHARE):
             self.pieces = self.pieces[:-2] + [dataclasses.replace(self.pieces[-2], end=radius)]
 
     def replaced(self, lower: float, upper: float, formula: Formula) -> "SplitAnchorMap":
-        """A new map with the springs on ``[lower, upper]`` given ``formula`` (a crossing's anchors)."""
+        """A new map with the springs on ``[lower, upper]`` given ``formula`` (a crossing's anchors).
+
+        Parameters
+        ----------
+        lower : float
+            The first spring (m).
+        upper : float
+            The last (m).
+        formula : Formula
+            Their anchors.
+
+        Returns
+        -------
+        SplitAnchorMap
+            The new map.
+        """
         below = [p if p.end <= lower else dataclasses.replace(p, end=lower) for p in self.pieces if p.start < lower]
         above = [p if p.start >= upper else dataclasses.replace(p, start=upper) for p in self.pieces if p.end > upper]
         return SplitAnchorMap(self.shape, _merged(below + [FormulaPiece(lower, upper, formula)] + above))
 
     def joined(self, other: "SplitAnchorMap", at: float) -> "SplitAnchorMap":
-        """This map below ``at`` and ``other`` above it."""
+        """This map below ``at`` and ``other`` above it.
+
+        Parameters
+        ----------
+        other : SplitAnchorMap
+            The map above ``at``.
+        at : float
+            Where they join (m).
+
+        Returns
+        -------
+        SplitAnchorMap
+            The joined map.
+        """
         below = [p if p.end <= at else dataclasses.replace(p, end=at) for p in self.pieces if p.start < at]
         above = [p if p.start >= at else dataclasses.replace(p, start=at) for p in other.pieces if p.end > at]
         return SplitAnchorMap(self.shape, _merged(below + above))
 
     # --- reading -------------------------------------------------------------------------------
     def value(self, xi: float) -> float:
-        """``Y(ξ)``; at a boundary, the piece that starts there."""
+        """``Y(ξ)``; at a boundary, the piece that starts there.
+
+        Parameters
+        ----------
+        xi : float
+            The spring's coordinate (m).
+
+        Returns
+        -------
+        float
+            The stored anchor (m).
+        """
         chosen = self.pieces[0]
         for p in self.pieces:
             if p.start <= xi:
@@ -130,7 +202,22 @@ class SplitAnchorMap:
 
     def parts(self, shift: float, lower: float, upper: float) -> list[Part]:
         """The monotone parts of the anchors seen with ``shift`` (``Y − shift g``) on ``[lower, upper]``, cut at
-        the formulas' turns (parts of positive length only)."""
+        the formulas' turns (parts of positive length only).
+
+        Parameters
+        ----------
+        shift : float
+            ``σ κ`` of a compressed cap, 0 in tension.
+        lower : float
+            The first spring (m).
+        upper : float
+            The last (m).
+
+        Returns
+        -------
+        list of Part
+            The parts, in order.
+        """
         out = []
         for p in self.pieces:
             start, end = max(p.start, lower), min(p.end, upper)
@@ -141,7 +228,22 @@ class SplitAnchorMap:
         return out
 
     def part_at(self, shift: float, xi: float, direction: float) -> Part:
-        """The part of zero length at ``ξ`` that an end moving in ``direction`` (+1: outwards) grows into."""
+        """The part of zero length at ``ξ`` that an end moving in ``direction`` (+1: outwards) grows into.
+
+        Parameters
+        ----------
+        shift : float
+            ``σ κ`` of a compressed cap, 0 in tension.
+        xi : float
+            The end's position (m).
+        direction : float
+            +1 where the end moves outwards, −1 inwards.
+
+        Returns
+        -------
+        Part
+            The part of zero length.
+        """
         if direction > 0:
             chosen = next((p for p in self.pieces if p.start <= xi < p.end), self.pieces[-1])
         else:
@@ -152,12 +254,30 @@ class SplitAnchorMap:
         return Part(formula, xi, xi, min(low, xi), max(high, xi))
 
     def maps(self) -> "SpanMaps":
-        """This map read in both regions (between spans every spring's anchors are this map's)."""
+        """This map read in both regions (between spans every spring's anchors are this map's).
+
+        Returns
+        -------
+        SpanMaps
+            Both regions read from this map.
+        """
         return SpanMaps(self, self)
 
     def clip_caps(self, x: float, caps: "Caps", depth: float, radius: float) -> None:
         """Materialise every spring's play operator, ``Y ← clip(Y, x − ū(ξ), x + ū(ξ))`` with the caps of its region
-        (:func:`~.split_sums.clipped_pieces` for each cap and region)."""
+        (:func:`~.split_sums.clipped_pieces` for each cap and region).
+
+        Parameters
+        ----------
+        caps : Caps
+            The friction law's caps.
+        x : float
+            The indenter's tangential position (m).
+        depth : float
+            The depth (m).
+        radius : float
+            The contact radius (m).
+        """
         boundary = min(self.shape.boundary(depth), radius)
         for cap in Cap:
             for region, lower, upper in ((Region.COMPRESSED, 0.0, boundary), (Region.TENSILE, boundary, radius)):
@@ -166,12 +286,46 @@ class SplitAnchorMap:
                     self.pieces = _merged(clipped_pieces(self, region, cap, level, caps.kappa, lower, upper))
 
     def tangential_force(self, caps: "Caps", G_star: float, x: float, a: float, depth: float = 0.0) -> float:
-        """``F_x`` (N) of these anchors with the window at ``x`` (:meth:`SpanMaps.tangential_force`)."""
+        """``F_x`` (N) of these anchors with the window at ``x`` (:meth:`SpanMaps.tangential_force`).
+
+        Parameters
+        ----------
+        caps : Caps
+            The friction law's caps.
+        G_star : float
+            ``G*`` (Pa).
+        x : float
+            The indenter's tangential position (m).
+        a : float
+            The contact radius (m).
+        depth : float, default 0.0
+            The depth (m).
+
+        Returns
+        -------
+        float
+            ``F_x`` (N).
+        """
         return self.maps().tangential_force(caps, G_star, x, a, depth)
 
     def breaks(self, shift: float, lower: float, upper: float) -> list[float]:
         """The pieces' boundaries and the turns of the anchors seen with ``shift`` between ``lower`` and ``upper``
-        (either order): where parts begin and end."""
+        (either order): where parts begin and end.
+
+        Parameters
+        ----------
+        shift : float
+            ``σ κ`` of a compressed cap, 0 in tension.
+        lower : float
+            One end (m).
+        upper : float
+            The other (m).
+
+        Returns
+        -------
+        list of float
+            The boundaries (m).
+        """
         low, high = min(lower, upper), max(lower, upper)
         out = []
         for p in self.pieces:
@@ -182,11 +336,34 @@ class SplitAnchorMap:
         return out
 
     def sliding_length(self, caps: "Caps", x: np.ndarray, depth: np.ndarray, radius: np.ndarray) -> np.ndarray:
-        """The length (m) of the springs at either cap at several instants (:meth:`SpanMaps.sliding_length`)."""
+        """The length (m) of the springs at either cap at several instants (:meth:`SpanMaps.sliding_length`).
+
+        Parameters
+        ----------
+        caps : Caps
+            The friction law's caps.
+        x : numpy.ndarray
+            The indenter's positions (m).
+        depth : numpy.ndarray
+            The depths (m).
+        radius : numpy.ndarray
+            The contact radii (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The lengths (m).
+        """
         return self.maps().sliding_length(caps, x, depth, radius)
 
     def largest_value(self) -> float:
-        """The largest ``|Y|`` at the pieces' starts (m): a length the tolerances are shares of."""
+        """The largest ``|Y|`` at the pieces' starts (m): a length the tolerances are shares of.
+
+        Returns
+        -------
+        float
+            The length (m).
+        """
         return max((abs(p.formula.value(p.start)) for p in self.pieces), default=0.0)
 
 
@@ -207,18 +384,55 @@ class SpanMaps:
     tensile: SplitAnchorMap
 
     def of(self, region: Region) -> SplitAnchorMap:
-        """The map ``region`` is read from."""
+        """The map ``region`` is read from.
+
+        Parameters
+        ----------
+        region : Region
+            The region.
+
+        Returns
+        -------
+        SplitAnchorMap
+            Its map.
+        """
         return self.compressed if region is Region.COMPRESSED else self.tensile
 
     def joined(self, boundary: float, t: float) -> SplitAnchorMap:
         """The stored map at the span's end (path time ``t``): the compressed map below ``boundary`` (``x_c``), the
-        tensile above."""
+        tensile above.
+
+        Parameters
+        ----------
+        boundary : float
+            ``x_c`` at the span's end (m).
+        t : float
+            The span's end (s on the path's clock).
+
+        Returns
+        -------
+        SplitAnchorMap
+            The stored map, :attr:`SplitAnchorMap.joined_at` set.
+        """
         stored = self.compressed.joined(self.tensile, boundary)
         stored.joined_at = (t, boundary)
         return stored
 
     def boundary(self, depth: float, radius: float) -> float:
-        """``x_c`` of ``depth`` in a contact of radius ``radius`` (at most the radius)."""
+        """``x_c`` of ``depth`` in a contact of radius ``radius`` (at most the radius).
+
+        Parameters
+        ----------
+        depth : float
+            The depth (m).
+        radius : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            ``x_c`` (m).
+        """
         return min(self.compressed.shape.boundary(depth), radius)
 
     def tangential_force(self, caps: "Caps", G_star: float, x: float, a: float, depth: float = 0.0) -> float:
@@ -251,8 +465,8 @@ class SpanMaps:
         return 2.0 * G_star * total
 
     def sliding_length(self, caps: "Caps", x: np.ndarray, depth: np.ndarray, radius: np.ndarray) -> np.ndarray:
-        """The length (m) of the springs at either cap at several instants (vectorised; :func:`~.split_sums.zone_lengths`
-        in each region and at each cap).
+        """The length (m) of the springs at either cap at several instants (vectorised:
+        :func:`~.split_sums.zone_lengths` in each region and at each cap).
 
         Parameters
         ----------

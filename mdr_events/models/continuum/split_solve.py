@@ -16,7 +16,7 @@ from .model import ContinuumModel, Segment
 from .regions import Region, combined_summary
 from .span import Span, SpanOutcome, Trigger
 from .split_map import SpanMaps, SplitAnchorMap
-from .split_span import Instant, lay_out_regions, split_lengths
+from .split_layouts import Instant, lay_out_regions, split_lengths
 from .state import NO_ZONE, Cap, ContactState, EventKind, Slip, zone_events
 from .tolerances import PIECE_SHARE
 from .zones import indenter_travel
@@ -30,7 +30,20 @@ REACH_SHARE = 2.0
 
 def new_anchors(model: ContinuumModel, path: Path) -> SplitAnchorMap:
     """An empty map of the anchors of ``model`` along ``path``: its :class:`~.formulas.Shape` reaches
-    :data:`REACH_SHARE` times the largest contact the path makes (the radius of its deepest point)."""
+    :data:`REACH_SHARE` times the largest contact the path makes (the radius of its deepest point).
+
+    Parameters
+    ----------
+    model : ContinuumModel
+        The contact.
+    path : Path
+        The path.
+
+    Returns
+    -------
+    SplitAnchorMap
+        The empty map.
+    """
     rtol = model.tolerances.radius_rtol
     largest = model.grow.radius(max(path.max_depth, 0.0), rtol)
     reach = REACH_SHARE * largest
@@ -42,7 +55,22 @@ def new_anchors(model: ContinuumModel, path: Path) -> SplitAnchorMap:
 
 def commit(state: ContactState, outcome: SpanOutcome, span: Span) -> SpanMaps:
     """The span's maps joined at ``x_c`` into the stored anchors, and the slip it laid out kept; returns the maps,
-    the span's record (its regions' anchors at every instant of it)."""
+    the span's record (its regions' anchors at every instant of it).
+
+    Parameters
+    ----------
+    state : ContactState
+        The automaton's state (its anchors and slip are set).
+    outcome : SpanOutcome
+        How the span ended.
+    span : Span
+        The span.
+
+    Returns
+    -------
+    SpanMaps
+        The span's maps.
+    """
     maps = outcome.maps if outcome.maps is not None else state.anchors.maps()
     if outcome.sliding is not None:
         state.regions.update(outcome.sliding)
@@ -53,7 +81,22 @@ def commit(state: ContactState, outcome: SpanOutcome, span: Span) -> SpanMaps:
 
 def split_full_slip_force(model: ContinuumModel, radius: float, depth: float) -> float:
     """``|F_x|`` with every spring at one cap: ``τ0 π a² + μ F_N^H(d)``, ``F_N^H`` the push of the compressed zone
-    ``[0, x_c]`` (the normal force (10) of the depth on the radius ``x_c``; 0 in tension)."""
+    ``[0, x_c]`` (the normal force (10) of the depth on the radius ``x_c``; 0 in tension).
+
+    Parameters
+    ----------
+    model : ContinuumModel
+        The contact.
+    radius : float
+        The contact radius (m).
+    depth : float
+        The depth (m).
+
+    Returns
+    -------
+    float
+        ``|F_x|`` (N).
+    """
     force = 2.0 * model.params.G_star * model.K * radius**2
     if depth > 0.0:
         boundary = model.hertz.radius(depth, model.tolerances.radius_rtol)
@@ -74,7 +117,26 @@ def _layouts(model: ContinuumModel, state: ContactState, segment: Segment, t: fl
 def split_slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOutcome, radius: float,
                           segment: Segment) -> list[tuple[EventKind, float, float, int]]:
     """Events stopped the span: every cap of every region laid out anew, what changed of each cap's zone logged
-    (the table of :mod:`.state`), and a level that turned back re-sticks its springs (the window materialised)."""
+    (the table of :mod:`.state`), and a level that turned back re-sticks its springs (the window materialised).
+
+    Parameters
+    ----------
+    model : ContinuumModel
+        The contact.
+    state : ContactState
+        The automaton's state (changed).
+    outcome : SpanOutcome
+        How the span ended.
+    radius : float
+        The contact radius there (m).
+    segment : Segment
+        The path segment.
+
+    Returns
+    -------
+    list of tuple
+        The events to log, ``(kind, path time, radius, direction)``.
+    """
     state.force, state.radius, state.t = outcome.force, radius, outcome.t_stop
     state.last_fired = outcome.fired
     if (Trigger.EDGE_PASSES_PIECE, None, None) in outcome.fired:

@@ -11,129 +11,34 @@ with ``n±`` the springs at the caps ``±`` and ``n±ᶜ`` those of them in the 
 ``compression_boundary_rate``), ``a`` with the radius. Springs cross ``x_c`` from the region ``x_c`` moves into
 (the *source*) to the other (the *destination*); a spring at a cap of the source when it crosses keeps the window of
 that instant, ``x(τ) − σ K a(τ)`` (both caps are ``K a`` at ``x_c``): the destination is read from the stored map with
-those anchors over the interval ``x_c`` sweeps (:func:`crossing_formula`), and slides there from the start if its
-level pushes. Whether the spring at ``x_c`` is at a cap is the source's to say: its value at ``x_c`` reaching or leaving
-the level is an event, and so is ``x_c`` passing the boundary of a part (:attr:`Trigger.BOUNDARY_PASSES_PART`),
-besides the events of one region (a level reaching its target, a zone leaving through the shrinking edge, a sliding
-level turning back, the edge passing a part).
+those anchors over the interval ``x_c`` sweeps (:func:`~.split_layouts.crossing_formula`), and slides there from the
+start if its level pushes. Whether the spring at ``x_c`` is at a cap is the source's to say: its value at ``x_c``
+reaching or leaving the level is an event, and so is ``x_c`` passing the boundary of a part
+(``Trigger.BOUNDARY_PASSES_PART``), besides the events of one region (a level reaching its target, a zone leaving
+through the shrinking edge, a sliding level turning back, the edge passing a part: :mod:`.split_events`).
 """
 
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
 
-from .formulas import Formula
-from .model import ContinuumModel, Segment
-from .regions import Region, RegionLayout, combined_summary
-from .span import EventFunction, LinearForce, Span, SpanIntegrator, SpanOutcome, Trigger
+from .model import ContinuumModel
+from .regions import Region, combined_summary
+from .span import LinearForce, Span, SpanIntegrator, SpanOutcome, Trigger
+from .split_events import SplitEvents
+from .split_layouts import KEYS, Ends, Instant, Key, STILL, crossing_formula, lay_out_regions, split_lengths
 from .split_map import SpanMaps, SplitAnchorMap
 from .state import Cap, Regime, Slip
 from .tolerances import EPS, LEVEL_ULPS, PIECE_SHARE
 from .zones import EDGE_LEAVING_TOLERANCES, indenter_travel
 
-__all__ = ["SplitSpanIntegrator", "Ends", "STILL", "Instant", "lay_out_regions", "crossing_formula", "split_lengths"]
+__all__ = ["SplitSpanIntegrator", "FRONT_STEPS_PER_SPAN"]
 
 #: A solver step covers at most this share of a span with a front: a front reaching the centre moves as ``g⁻¹`` of a
 #: level, ``∝ (t_end − t)^(1/n)``, whose end DOP853's error estimate misses in long steps (3e-7 of F_x on a power law
 #: n = 3 whose compressed zone slid from x_c to the centre in 0.36 s with 8 steps; 5e-13 with 32).
 FRONT_STEPS_PER_SPAN = 32
-#: A region and a cap: the key of a layout, of its slip and of its events.
-Key = tuple[Region, Cap]
-KEYS: tuple[Key, ...] = tuple((region, cap) for region in Region for cap in Cap)
-
-
-class Ends(NamedTuple):
-    """How a region's start and end behave during a span (each a pair: start, end)."""
-
-    #: whether each end moves
-    moving: tuple[bool, bool] = (False, False)
-    #: whether each end moves outwards, into springs the region did not hold (a part of zero length is laid there)
-    growing: tuple[bool, bool] = (False, False)
-    #: whether the anchors' value at a moving end is a target of the level
-    targets: tuple[bool, bool] = (True, True)
-
-
-#: Neither end moves (a layout at one instant).
-STILL = Ends()
-
-
-def split_lengths(anchors: SplitAnchorMap, cap_shift: float, x: float, travel: float) -> float:
-    """The lengths the slip criterion compares (:func:`~.zones.length_scale`): the centre's cap, the indenter's and
-    the anchors' positions and the travel."""
-    return max(cap_shift, abs(x), anchors.largest_value(), travel)
-
-
-def region_parts(anchors: SplitAnchorMap, shift: float, lower: float, upper: float, ends: Ends) -> list:
-    """The parts of ``anchors`` seen with ``shift`` on ``[lower, upper]``, with a part of zero length laid at a growing
-    end where the springs beyond belong to another part."""
-    parts = anchors.parts(shift, lower, upper) if upper > lower else []
-    if ends.growing[1]:
-        tail = anchors.part_at(shift, upper, 1.0)
-        if not (parts and parts[-1].formula == tail.formula and parts[-1].low == tail.low and parts[-1].end == upper):
-            parts.append(tail)
-    if ends.growing[0]:
-        head = anchors.part_at(shift, lower, -1.0)
-        if not (parts and parts[0].formula == head.formula and parts[0].high == head.high and parts[0].start == lower):
-            parts.insert(0, head)
-    return parts
-
-
-class Instant(NamedTuple):
-    """Where the indenter and the contact are at one instant: what the regions' layouts are laid out at."""
-
-    x: float         #: the tangential position (m)
-    depth: float     #: the depth (m)
-    radius: float    #: the contact radius (m)
-    boundary: float  #: the compression boundary ``x_c`` (m)
-
-
-def lay_out_regions(maps: SpanMaps, caps, at: Instant, sliding: dict[Key, bool], tolerance: float,
-                    ends: dict[Region, Ends] | None = None) -> dict[Key, RegionLayout]:
-    """Every cap's zone in every region that holds springs (the compressed zone ``[0, x_c]``, the annulus
-    ``[x_c, a]``) at the instant ``at``; ``ends``: how each region's ends move during the span (default
-    :data:`STILL`)."""
-    x, depth, radius, boundary = at
-    extents = {Region.COMPRESSED: (0.0, boundary), Region.TENSILE: (boundary, radius)}
-    out = {}
-    for region, cap in KEYS:
-        region_ends = (ends or {}).get(region, STILL)
-        lower, upper = extents[region]
-        if not (upper > lower or any(region_ends.growing)):
-            continue
-        parts = region_parts(maps.of(region), region.view_shift(cap, caps.kappa), lower, upper, region_ends)
-        if parts:
-            level = region.level(cap, x, caps.K, caps.kappa, radius, depth)
-            out[(region, cap)] = RegionLayout(parts, cap, level, sliding.get((region, cap), False), tolerance,
-                                              region_ends.moving, region_ends.targets)
-    return out
-
-
-def crossing_formula(anchors: SplitAnchorMap, segment: Segment, regime: Regime, radius: float, cap: Cap,
-                     K: float) -> Formula:
-    """The anchors springs get crossing ``x_c`` at ``cap`` on ``segment``: ``x(τ) − σ K a(τ)`` with ``d(τ) = g(ξ)``,
-    ``x0 + (v_x/v_d)(g(ξ) − d_s) − σ K A(g(ξ))`` (``adhesive_crossing_anchor``); ``A`` the radius of the depth on
-    the branch the radius follows, or the pinned ``radius``."""
-    ratio = segment.vx / segment.vd
-    if regime is Regime.PINNED:
-        return Formula(anchors.shape, segment.xs - float(cap) * K * radius, alpha=ratio, d_ref=segment.ds)
-    branch = "grow" if regime is Regime.GROWING else "shrink"
-    return Formula(anchors.shape, segment.xs, alpha=ratio, d_ref=segment.ds, gamma=-float(cap) * K, radius_of=branch)
-
-
-class RegionEvent(EventFunction):
-    """An event function of one cap in one region (its key names both)."""
-
-    def __init__(self, trigger: Trigger, key: Key | None, function, direction: float):
-        super().__init__(trigger, key[1] if key else None, function, direction)
-        self.region = key[0] if key else None
-
-    @property
-    def key(self) -> tuple:
-        return (self.trigger, self.cap, self.region)
-
-
-class SplitSpanIntegrator(SpanIntegrator):
+class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
     """The right-hand side and the events of one span with the compressed zone and the tensile annulus (module
     docstring); the interface of :class:`~.span.SpanIntegrator`, whose variable (time or radius) it keeps.
 
@@ -152,7 +57,15 @@ class SplitSpanIntegrator(SpanIntegrator):
         super().__init__(model, anchors, span, sliding)
 
     def lay_out(self, anchors: SplitAnchorMap, sliding: dict) -> None:
-        """The layouts of every cap in every region at the span's start, the crossing's anchors, the tolerances."""
+        """The layouts of every cap in every region at the span's start, the crossing's anchors, the tolerances.
+
+        Parameters
+        ----------
+        anchors : SplitAnchorMap
+            The stored anchors.
+        sliding : dict
+            Whether springs slide at each cap in each region.
+        """
         model, segment, t0 = self.model, self.segment, self.span.t_start
         self.shape = anchors.shape
         self.x_c_is_edge = self.moving and self.branch.work == 0.0  # (a branch without adhesion: d = g(a))
@@ -201,7 +114,8 @@ class SplitSpanIntegrator(SpanIntegrator):
 
     def _cross(self, anchors: SplitAnchorMap, boundary: float, depth: float) -> None:
         """Where the spring at ``x_c`` is at a cap of the source, the destination reads the crossing's anchors over the
-        swept interval (:func:`crossing_formula`) and slides there from the start if its level pushes."""
+        swept interval (:func:`~.split_layouts.crossing_formula`) and slides there from the start if its level
+        pushes."""
         source = Region.TENSILE if self.direction > 0 else Region.COMPRESSED
         destination = Region.COMPRESSED if source is Region.TENSILE else Region.TENSILE
         end = 0 if source is Region.TENSILE else 1
@@ -238,12 +152,34 @@ class SplitSpanIntegrator(SpanIntegrator):
 
     # --- the state along the span ---------------------------------------------------------------
     def depth_of(self, var: float) -> float:
-        """The depth (m) at the integration variable."""
+        """The depth (m) at the integration variable.
+
+        Parameters
+        ----------
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+
+        Returns
+        -------
+        float
+            The depth (m).
+        """
         return self.segment.d(self.time_of(var))
 
     def boundary(self, var: float) -> float:
         """``x_c`` at the integration variable: the radius on a branch without adhesion, 0 in tension (at the start
-        where the stored map was joined, exactly there)."""
+        where the stored map was joined, exactly there).
+
+        Parameters
+        ----------
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+
+        Returns
+        -------
+        float
+            ``x_c`` (m).
+        """
         a = self.radius_of(var)
         if self.x_c_is_edge:
             return a
@@ -252,30 +188,93 @@ class SplitSpanIntegrator(SpanIntegrator):
         return min(self.shape.boundary(self.depth_of(var)), a) if self.pressed else 0.0
 
     def extent(self, region: Region, var: float) -> tuple[float, float]:
-        """The region's springs ``[lower, upper]`` at the integration variable."""
+        """The region's springs ``[lower, upper]`` at the integration variable.
+
+        Parameters
+        ----------
+        region : Region
+            The region.
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+
+        Returns
+        -------
+        tuple of float
+            ``(lower, upper)`` (m).
+        """
         boundary = self.boundary(var)
         return (0.0, boundary) if region is Region.COMPRESSED else (boundary, self.radius_of(var))
 
     def region_level(self, key: Key, var: float) -> float:
-        """The level of the cap of the region (:meth:`~.regions.Region.level`) at the integration variable."""
+        """The level of the cap of the region (:meth:`~.regions.Region.level`) at the integration variable.
+
+        Parameters
+        ----------
+        key : tuple of (Region, Cap)
+            The region and the cap.
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+
+        Returns
+        -------
+        float
+            The level (m).
+        """
         region, cap = key
         t = self.time_of(var)
         return region.level(cap, self.segment.x(t), self.K, self.kappa, self.radius_of(var), self.segment.d(t))
 
     def rate(self, region: Region, cap: Cap | float, var: float) -> float:
-        """A quantity with the sign of ``σ d(level)/dt`` of the region's cap (:meth:`~.span.SpanIntegrator.rate`)."""
+        """A quantity with the sign of ``σ d(level)/dt`` of the region's cap (:meth:`~.span.SpanIntegrator.rate`).
+
+        Parameters
+        ----------
+        region : Region
+            The region.
+        cap : Cap or float
+            The side, +1 or −1.
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+
+        Returns
+        -------
+        float
+            The signed rate (its sign is what counts).
+        """
         coulomb = region.weight * self.kappa * (self.segment.vd if self.pressed else 0.0)
         if not self.moving:
             return cap * self.segment.vx - coulomb
         return (cap * self.segment.vx - coulomb) * self.branch.slope(var * self.scale) - self.K * self.segment.vd
 
     def pushes(self, key: Key) -> bool:
-        """Whether the level of the cap of the region can move towards its springs during the span."""
+        """Whether the level of the cap of the region can move towards its springs during the span.
+
+        Parameters
+        ----------
+        key : tuple of (Region, Cap)
+            The region and the cap.
+
+        Returns
+        -------
+        bool
+            ``True`` if its rate is positive at the span's start or stop.
+        """
         return self.rate(key[0], key[1], self.start) > 0.0 or self.rate(key[0], key[1], self.stop) > 0.0
 
     # --- the right-hand side ------------------------------------------------------------------
     def sizes(self, var: float) -> dict[Key, float]:
-        """The zone of each cap in each region at the integration variable (m)."""
+        """The zone of each cap in each region at the integration variable (m).
+
+        Parameters
+        ----------
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+
+        Returns
+        -------
+        dict
+            The sizes (m), keyed ``(Region, Cap)``.
+        """
         extents = {region: self.extent(region, var) for region in Region}
         return {key: layout.size(self.region_level(key, var), *extents[key[0]]) for key, layout in self.layouts.items()}
 
@@ -312,7 +311,20 @@ class SplitSpanIntegrator(SpanIntegrator):
 
     def edge_shift(self, x: float, a: float) -> float:
         """The shift of the spring at the edge: ``±K a`` at a cap (its compression is zero at most), else
-        ``x − Y(a)``."""
+        ``x − Y(a)``.
+
+        Parameters
+        ----------
+        x : float
+            The indenter's tangential position (m).
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The shift (m).
+        """
         edge = self._edge_region()
         for cap in Cap:
             layout = self.layouts.get((edge, cap))
@@ -320,84 +332,15 @@ class SplitSpanIntegrator(SpanIntegrator):
                 return cap * self.K * a
         return x - self.maps.of(edge).value(a)
 
-    # --- the events ----------------------------------------------------------------------------
-    def reaches_in(self, key: Key):
-        """The level of the cap of the region reaching its layout's target (rising through 0)."""
-        layout, sign = self.layouts[key], float(key[1])
-        return lambda var: (sign * self.region_level(key, var) - layout.target(*self.extent(key[0], var))
-                            - self.offset)
-
-    def leaves_in(self, key: Key, end: int):
-        """A moving end of the region leaving the cap's zone that lies at it (rising through 0)."""
-        layout, sign = self.layouts[key], float(key[1])
-        return lambda var: (layout.end_value(end, *self.extent(key[0], var)) - sign * self.region_level(key, var)
-                            - self.edge_margin)
-
-    def recedes(self, region: Region, end: int) -> bool:
-        """Whether the region's start (0) or end (1) moves into it during the span (springs leave the region there)."""
-        if region is Region.COMPRESSED:
-            return end == 1 and (self.direction < 0 or (self.x_c_is_edge and self.shrinking))
-        return (end == 0 and self.direction > 0) or (end == 1 and self.shrinking)
-
-    def passes_break(self, var: float) -> float:
-        """``x_c`` passing the next part boundary (rising through 0, in the depth: ``g(b)`` is where it passes)."""
-        return self.direction * (self.depth_of(var) - self.break_depth) - self.depth_offset
-
-    def event_functions(self) -> list[EventFunction]:
-        """The events that can end the span (module docstring).
-
-        Returns
-        -------
-        list of EventFunction
-            Terminal event functions for ``solve_ivp``, each keyed by its trigger, cap and region.
-        """
-        events = []
-        for key, layout in self.layouts.items():
-            sliding = self.sliding[key]
-            if layout.target(*self.extent(key[0], self.start)) < math.inf and (sliding or self.pushes(key)):
-                events.append(RegionEvent(Trigger.ZONE_REACHES, key, self.reaches_in(key), 1.0))
-            if sliding:
-                events += [RegionEvent(Trigger.ZONE_LEAVES_EDGE, key, self.leaves_in(key, end), 1.0)
-                           for end in layout.leaving if self.recedes(key[0], end)]
-            if sliding and self.moving:
-                events.append(RegionEvent(Trigger.LEVEL_TURNS, key, self._turns(key), -1.0))
-        if self.next_break is not None:
-            events.append(RegionEvent(Trigger.BOUNDARY_PASSES_PART, None, self.passes_break, 1.0))
-        if self.shrinking and self.edge_start > 0.0:
-            events.append(RegionEvent(Trigger.EDGE_PASSES_PIECE, None, self.passes_piece, -1.0))
-        return events
-
-    def _turns(self, key: Key):
-        region, cap = key
-        return lambda var: self.rate(region, cap, var)
-
-    def met_at_start(self) -> frozenset:
-        """Events that have already happened at the span's start: a pushing level beyond its target; else a sliding
-        level that does not push, or a zone already gone through a receding end.
-
-        Returns
-        -------
-        frozenset of tuple
-            The keys met (empty: none).
-        """
-        # (a level moving away at the start reaches nothing there: beyond it by rounding only, after a re-stick)
-        met = {(Trigger.ZONE_REACHES, key[1], key[0]) for key in self.layouts
-               if self.rate(key[0], key[1], self.start) > 0.0 and self.reaches_in(key)(self.start) > 0.0}
-        if met or self.a0 <= 0.0:
-            return frozenset(met)
-        for key, layout in self.layouts.items():
-            if not self.sliding[key]:
-                continue
-            rate = self.rate(key[0], key[1], self.start)
-            if rate < 0.0 or (self.moving and rate <= 0.0):
-                met.add((Trigger.LEVEL_TURNS, key[1], key[0]))
-            elif any(self.recedes(key[0], end) and self.leaves_in(key, end)(self.start) > 0.0 for end in layout.leaving):
-                met.add((Trigger.ZONE_LEAVES_EDGE, key[1], key[0]))
-        return frozenset(met)
-
     # --- spans without integration ----------------------------------------------------------------
     def has_fronts(self) -> bool:
-        """Whether a slip front lies inside a part of some region."""
+        """Whether a slip front lies inside a part of some region.
+
+        Returns
+        -------
+        bool
+            ``True`` if a layout holds a front.
+        """
         return any(layout.fronts for layout in self.layouts.values())
 
     def max_step(self) -> float:
@@ -416,7 +359,13 @@ class SplitSpanIntegrator(SpanIntegrator):
 
     def force_is_constant(self) -> bool:
         """A span of zero extent, or a still one (:meth:`_still`) without tangential motion or with every spring at one
-        cap."""
+        cap.
+
+        Returns
+        -------
+        bool
+            ``True`` if ``F_x`` stays what it is.
+        """
         if self.start == self.stop:
             return True
         full = any(combined_summary(*(self.layouts[(region, cap)].summary() if (region, cap) in self.layouts else None
@@ -424,11 +373,28 @@ class SplitSpanIntegrator(SpanIntegrator):
         return self._still() and (self.segment.vx == 0.0 or full)
 
     def force_is_linear(self) -> bool:
-        """A still span (:meth:`_still`) without fronts: ``dF_x/dt = 2G* (a − n₊ − n₋) v_x`` until an event."""
+        """A still span (:meth:`_still`) without fronts: ``dF_x/dt = 2G* (a − n₊ − n₋) v_x`` until an event.
+
+        Returns
+        -------
+        bool
+            ``True`` for a still span without fronts.
+        """
         return self._still() and not self.has_fronts()
 
     def linear_span(self, force: float) -> SpanOutcome:
-        """:meth:`force_is_linear`: the force and the first level reaching its target in closed form."""
+        """:meth:`force_is_linear`: the force and the first level reaching its target in closed form.
+
+        Parameters
+        ----------
+        force : float
+            ``F_x`` (N) at the span's start.
+
+        Returns
+        -------
+        SpanOutcome
+            The events that stop it, the time, force and radius there.
+        """
         a = self.span.pinned_radius
         rate = self.G2 * (a - sum(self.sizes(self.start).values())) * self.segment.vx
         t_stop, fired = self.stop, frozenset()
@@ -444,5 +410,16 @@ class SplitSpanIntegrator(SpanIntegrator):
         return SpanOutcome(fired, t_stop, force + rate * (t_stop - self.start), a)
 
     def finish(self, outcome: SpanOutcome) -> SpanOutcome:
-        """``outcome`` with the maps the span read and the slip it laid out (:class:`~.span.SpanOutcome`)."""
+        """``outcome`` with the maps the span read and the slip it laid out (:class:`~.span.SpanOutcome`).
+
+        Parameters
+        ----------
+        outcome : SpanOutcome
+            How the span ended.
+
+        Returns
+        -------
+        SpanOutcome
+            With :attr:`~.span.SpanOutcome.maps` and :attr:`~.span.SpanOutcome.sliding`.
+        """
         return outcome._replace(maps=self.maps, sliding=dict(self.sliding))

@@ -27,7 +27,26 @@ __all__ = ["at_cap_intervals", "clipped_pieces", "region_shift_integral", "zone_
 
 def at_cap_intervals(formula: Formula, cap: Cap, level: float, lower: float, upper: float) -> list[tuple[float, float]]:
     """Where ``σ formula <= σ level`` on ``[lower, upper]`` (the formula as the cap sees the anchors), cut at its
-    turns: one interval at an end of each monotone part, or the part, or none."""
+    turns: one interval at an end of each monotone part, or the part, or none.
+
+    Parameters
+    ----------
+    formula : Formula
+        The anchors as the cap sees them.
+    cap : Cap
+        The side, +1 or −1.
+    level : float
+        The cap's level (m).
+    lower : float
+        The interval's start (m).
+    upper : float
+        Its end (m).
+
+    Returns
+    -------
+    list of tuple of float
+        The intervals, in order.
+    """
     sign, out = float(cap), []
     if upper <= lower:
         return out
@@ -48,7 +67,30 @@ def at_cap_intervals(formula: Formula, cap: Cap, level: float, lower: float, upp
 def clipped_pieces(anchors: "SplitAnchorMap", region: Region, cap: Cap, level: float, kappa: float, lower: float,
                    upper: float) -> list[FormulaPiece]:
     """The pieces of ``anchors`` with the springs of ``region`` (on ``[lower, upper]``) at ``cap`` materialised at its
-    level (:meth:`Region.bound`): the play operator's one-sided clip ``Y ← clip(Y, …)`` of that cap."""
+    level (:meth:`Region.bound`): the play operator's one-sided clip ``Y ← clip(Y, …)`` of that cap.
+
+    Parameters
+    ----------
+    anchors : SplitAnchorMap
+        The stored anchors.
+    region : Region
+        The region.
+    cap : Cap
+        The side, +1 or −1.
+    level : float
+        The cap's level (m).
+    kappa : float
+        ``κ = μ E*/G*``.
+    lower : float
+        The interval's start (m).
+    upper : float
+        Its end (m).
+
+    Returns
+    -------
+    list of FormulaPiece
+        The pieces of the whole map.
+    """
     shift = region.view_shift(cap, kappa)
     bound = region.bound(anchors.shape, cap, level, kappa)
     out = []
@@ -81,7 +123,32 @@ def _cap_integral(anchors: "SplitAnchorMap", region: Region, K: float, kappa: fl
 def region_shift_integral(anchors: "SplitAnchorMap", region: Region, caps: "Caps", x: float, radius: float,
                           depth: float, lower: float, upper: float) -> float:
     """``∫ clip(x − Y, −ū, ū) dξ`` over the springs of ``region`` on ``[lower, upper]``: the caps of those at one
-    exactly, ``x − Y`` of the others (integrated between the caps' intervals, not as a difference of totals)."""
+    exactly, ``x − Y`` of the others (integrated between the caps' intervals, not as a difference of totals).
+
+    Parameters
+    ----------
+    anchors : SplitAnchorMap
+        The map the region is read from.
+    region : Region
+        The region.
+    caps : Caps
+        The friction law's caps.
+    x : float
+        The indenter's tangential position (m).
+    radius : float
+        The contact radius (m).
+    depth : float
+        The depth (m).
+    lower : float
+        The interval's start (m).
+    upper : float
+        Its end (m).
+
+    Returns
+    -------
+    float
+        The integral (m²).
+    """
     K, kappa = caps.K, caps.kappa
     total = 0.0
     for p in anchors.pieces:
@@ -105,7 +172,30 @@ def region_shift_integral(anchors: "SplitAnchorMap", region: Region, caps: "Caps
 def zone_lengths(anchors: "SplitAnchorMap", region: Region, cap: Cap, levels: np.ndarray, lower: np.ndarray,
                  upper: np.ndarray, kappa: float) -> np.ndarray:
     """The length of ``cap``'s zone in ``region`` at each of several instants (vectorised over them): the region
-    ``[lower, upper]`` and the level at each."""
+    ``[lower, upper]`` and the level at each.
+
+    Parameters
+    ----------
+    anchors : SplitAnchorMap
+        The map the region is read from.
+    region : Region
+        The region.
+    cap : Cap
+        The side, +1 or −1.
+    levels : numpy.ndarray
+        The cap's level at each instant (m).
+    lower : numpy.ndarray
+        The region's start at each (m).
+    upper : numpy.ndarray
+        Its end at each (m).
+    kappa : float
+        ``κ = μ E*/G*``.
+
+    Returns
+    -------
+    numpy.ndarray
+        The lengths (m).
+    """
     sign = float(cap)
     levels, lower, upper = (np.asarray(v, dtype=float) for v in (levels, lower, upper))
     total = np.zeros(np.broadcast(levels, lower, upper).shape)
