@@ -77,7 +77,8 @@ def onset_excess_A(depth, cot: np.ndarray, friction: FrictionLaw, params: Parame
 
 def d_crit_A(alpha: np.ndarray, friction: FrictionLaw, params: Parameters, profile: PowerLaw) -> np.ndarray:
     """The onset depth (m) of scenario A at the angles ``alpha`` (degrees, in (0, 90)): the least depth up to
-    ``d_max`` where :func:`onset_excess_A` reaches 0; ``nan`` where none does by ``d_max``.
+    ``d_max`` where :func:`onset_excess_A` reaches 0; 0 where it is reached at the least depth bisected (the springs
+    slide from first contact: a cone without adhesion), ``nan`` where none is by ``d_max``.
 
     Parameters
     ----------
@@ -108,7 +109,9 @@ def d_crit_A(alpha: np.ndarray, friction: FrictionLaw, params: Parameters, profi
         middle = 0.5 * (low + high)
         up = onset_excess_A(middle, flat, friction, params, profile) >= 0.0
         low, high = np.where(up, low, middle), np.where(up, middle, high)
-    return np.where(found, high, np.nan).reshape(np.shape(alpha))
+    # an excess already reached at the smallest depth bisected: the springs slide from first contact (0)
+    at_once = found & (low == 0.0) & (onset_excess_A(high, flat, friction, params, profile) >= 0.0)
+    return np.where(at_once, 0.0, np.where(found, high, np.nan)).reshape(np.shape(alpha))
 
 
 def critical_angle_A(friction: FrictionLaw, params: Parameters, profile: PowerLaw) -> float:

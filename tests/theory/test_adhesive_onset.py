@@ -60,14 +60,12 @@ def test_the_adhesive_onset_is_the_non_adhesive_one_and_the_continuums(adhesion,
             for d in diagram["d_crit_jkr"].values} >= ({0.0, math.inf} if not friction.uses_tau0 else {1.0})
 
 
-#: The combined law's cases: three adhesions (the paper's, Δγ1 < Δγ0, Δγ0 = 0) on the paraboloid, a cone and n = 3,
-#: but the cone growing without adhesion from a = 0 (it slides self-similarly from its first instant, which the
-#: continuum's layouts at a = 0 do not resolve, with τ0 alone as well)
+#: The combined law's cases: three adhesions (the paper's, Δγ1 < Δγ0, Δγ0 = 0) on the paraboloid, a cone (growing
+#: without adhesion from a = 0 it slides from first contact below an angle) and n = 3
 COMBINED_CASES = [pytest.param(adhesion, profile, id=f"{name}-{label}")
                   for adhesion, name in zip(ADHESIONS + [(0.0, 0.1)], ("paper", "reversed", "grows-without"))
                   for profile, label in ((None, "paraboloid"), (PowerLaw.cone(0.05), "cone"),
-                                         (PowerLaw(2e5, 3.0), "n3"))
-                  if not (label == "cone" and adhesion[0] == 0.0)]
+                                         (PowerLaw(2e5, 3.0), "n3"))]
 
 
 @pytest.mark.parametrize("adhesion, profile", COMBINED_CASES)

@@ -12,6 +12,7 @@ of the anchors at a moving end may be what the level reaches next. What each reg
 from __future__ import annotations
 
 import enum
+import math
 from dataclasses import dataclass
 
 from .formulas import Formula, Shape
@@ -197,15 +198,20 @@ class RegionLayout:
     targets : tuple of bool
         Whether the anchors' value at a moving start, a moving end, is a target of the level (not where springs
         arrive across ``x_c`` with the anchors the other region gave them).
+    fresh : bool, default False
+        The region's end is the growing edge, where springs attach with no shift, short of every cap by ``K a``: its
+        value is never reached (at ``a → 0`` of a contact without adhesion every value lies within the tolerance).
     """
 
     def __init__(self, parts: list[Part], cap: Cap, level: float, sliding: bool, tolerance: float,
-                 moving: tuple[bool, bool] = (False, False), targets: tuple[bool, bool] = (True, True)):
+                 moving: tuple[bool, bool] = (False, False), targets: tuple[bool, bool] = (True, True),
+                 fresh: bool = False):
         self.parts, self.cap, self.sign = parts, cap, float(cap)
         self.moving = moving
         reached = self.sign * level + tolerance
         last = len(parts) - 1
-        self.roles: list[Role] = [self._role(p, reached, sliding) for p in parts]
+        self.roles: list[Role] = [self._role(p, reached, sliding, fresh and index == last)
+                                  for index, p in enumerate(parts)]
         fixed, self.moving_targets = [], []
         for index, (p, role) in enumerate(zip(parts, self.roles)):
             if role is Role.IN:
@@ -227,10 +233,10 @@ class RegionLayout:
         self.leaving = [end for end, index in ((0, 0), (1, last)) if parts and moving[end]
                         and self.roles[index] is Role.FRONT and self.parts[index].rises_towards(cap) == (end == 0)]
 
-    def _role(self, p: Part, reached: float, sliding: bool) -> Role:
+    def _role(self, p: Part, reached: float, sliding: bool, fresh: bool) -> Role:
         if not sliding:
             return Role.OUT
-        start, end = self.sign * p.value(p.start), self.sign * p.value(p.end)
+        start, end = self.sign * p.value(p.start), (math.inf if fresh else self.sign * p.value(p.end))
         if start <= reached and end <= reached:
             return Role.IN
         if start <= reached or end <= reached:

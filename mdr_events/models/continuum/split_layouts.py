@@ -34,6 +34,8 @@ class Ends(NamedTuple):
     growing: tuple[bool, bool] = (False, False)
     #: whether the anchors' value at a moving end is a target of the level
     targets: tuple[bool, bool] = (True, True)
+    #: whether the end is the growing edge (springs attach with no shift: :class:`~.regions.RegionLayout`)
+    fresh: bool = False
 
 
 #: Neither end moves (a layout at one instant).
@@ -144,7 +146,7 @@ def lay_out_regions(maps: SpanMaps, caps, at: Instant, sliding: dict[Key, bool],
         if parts:
             level = region.level(cap, x, caps.K, caps.kappa, radius, depth)
             out[(region, cap)] = RegionLayout(parts, cap, level, sliding.get((region, cap), False), tolerance,
-                                              region_ends.moving, region_ends.targets)
+                                              region_ends.moving, region_ends.targets, region_ends.fresh)
     return out
 
 

@@ -38,6 +38,9 @@ __all__ = ["SplitSpanIntegrator", "FRONT_STEPS_PER_SPAN"]
 #: level, ``∝ (t_end − t)^(1/n)``, whose end DOP853's error estimate misses in long steps (3e-7 of F_x on a power law
 #: n = 3 whose compressed zone slid from x_c to the centre in 0.36 s with 8 steps; 5e-13 with 32).
 FRONT_STEPS_PER_SPAN = 32
+#: A span whose depth at one end is this share of the other's starts or ends at the surface (the planner ends spans
+#: where the depth crosses 0; the depth there carries the rounding of the time)
+SURFACE_SHARE = 1e-6
 class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
     """The right-hand side and the events of one span with the compressed zone and the tensile annulus (module
     docstring); the interface of :class:`~.span.SpanIntegrator`, whose variable (time or radius) it keeps.
@@ -106,10 +109,10 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         crossing, growing = self.direction != 0.0, self.span.regime is Regime.GROWING
         edge_moves = self.x_c_is_edge and self.moving
         compressed = Ends((False, crossing or edge_moves), (False, self.direction > 0 or (edge_moves and growing)),
-                          (True, not self.direction > 0))
+                          (True, not self.direction > 0), edge_moves and growing)
         if self.x_c_is_edge:
             return {Region.COMPRESSED: compressed, Region.TENSILE: STILL}
-        tensile = Ends((crossing, self.moving), (self.direction < 0, growing), (not self.direction < 0, True))
+        tensile = Ends((crossing, self.moving), (self.direction < 0, growing), (not self.direction < 0, True), growing)
         return {Region.COMPRESSED: compressed, Region.TENSILE: tensile}
 
     def _cross(self, anchors: SplitAnchorMap, boundary: float, depth: float) -> None:
@@ -344,14 +347,20 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         return any(layout.fronts for layout in self.layouts.values())
 
     def max_step(self) -> float:
-        """The longest step of the solver: with a front in a part, a share 1/:data:`FRONT_STEPS_PER_SPAN` of the span.
+        """The longest step of the solver: with a front in a part, or ``x_c`` moving on a span that starts or ends at
+        the surface (``x_c ∝ d^(1/n)``, steep there, where a long step reaches: 2e-6 of F_x with four steps over a
+        span ending at ``d = 0`` that an event stopped far before), a share 1/:data:`FRONT_STEPS_PER_SPAN` of the
+        span.
 
         Returns
         -------
         float
             The step (``inf``: none).
         """
-        return abs(self.stop - self.start) / FRONT_STEPS_PER_SPAN if self.has_fronts() else math.inf
+        depths = abs(self.depth_of(self.start)), abs(self.depth_of(self.stop))
+        at_surface = min(depths) <= SURFACE_SHARE * max(depths)
+        limited = self.has_fronts() or (self.direction != 0.0 and at_surface)
+        return abs(self.stop - self.start) / FRONT_STEPS_PER_SPAN if limited else math.inf
 
     def _still(self) -> bool:
         """A pinned span whose caps and regions keep still: ``x_c`` does not move (no Coulomb part follows a depth)."""
