@@ -27,7 +27,6 @@ from mdr_events.contact.friction import friction_attrs
 from mdr_events.limits import Limits
 from mdr_events.models import indenters
 from mdr_events.models.continuum import Tolerances, run_continuum
-from mdr_events.models.continuum.caps import check_supported
 from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.extrema import solution_extrema
 from mdr_events.models.discrete import check_spacing, check_thresholds_known, run_discrete
@@ -234,9 +233,8 @@ class Continuum:
     __hash__ = None
 
     def check_model(self, model: ModelJob) -> None:
-        """Refuse what the continuum does not take (:func:`~mdr_events.models.continuum.caps.check_supported`:
-        Coulomb's part with adhesion; :func:`~mdr_events.models.continuum.edges.check_edge_known`: an adhesion law
-        without an edge rule).
+        """Refuse what the continuum does not take (:func:`~mdr_events.models.continuum.edges.check_edge_known`: an
+        adhesion law without an edge rule).
 
         Parameters
         ----------
@@ -247,11 +245,8 @@ class Continuum:
         ------
         TypeError
             An adhesion law without an edge rule.
-        ValueError
-            A friction law, indenter and adhesion the continuum does not solve.
         """
         check_edge_known(model.adhesion)
-        check_supported(model.friction, model.params, model.profile)
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Solve the cases exactly; the dataset of :mod:`~mdr_events.models.simulation_schema` with the event log,

@@ -51,7 +51,7 @@ from scipy import integrate
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
-from mdr_events.theory import power_law, symbolic
+from mdr_events.theory import combined_onset, power_law, symbolic
 from mdr_events.theory.kinds import theory_of
 from mdr_events.validation import check_real, real_array, validate_alpha
 
@@ -459,7 +459,9 @@ def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
     ``nan`` (never) where ``cot α <= κ``; else (17) at the angle ``α'`` with ``cot α' = cot α − κ``, which for
     ``"coulomb"`` alone is 0 (from first contact). ``α = 90°`` never slides (``+inf``). With ``adhesion`` and Coulomb's
     part the onset is the one without where :func:`adhesive_onset_A_is_non_adhesive` (``"coulomb"`` alone, the flat
-    punch); ``"tau0+coulomb"`` on a curved indenter has no closed form (``nan``, as the continuum refuses it).
+    punch); ``"tau0+coulomb"`` on a curved indenter has the first depth up to ``d_max`` where a spring's shift reaches
+    its cap, the jump-in ring's edge, ``x_c`` or the turn of the grown springs
+    (:mod:`~mdr_events.theory.combined_onset`; ``nan``: none by ``d_max``).
 
     Parameters
     ----------
@@ -491,8 +493,8 @@ def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
     indenter = _indenter(profile, params)
     if adhesion and coulomb_cap_ratio(friction, params) == 0.0 and friction.uses_tau0:
         return power_law.d_crit_A(alpha, indenter, params, adhesion=True)
-    if adhesion and not adhesive_onset_A_is_non_adhesive(friction, indenter):
-        return _onset_output(np.full(alpha_arr.shape, np.nan), alpha_arr)
+    if adhesion and not adhesive_onset_A_is_non_adhesive(friction, indenter):  # both parts on a curved indenter
+        return _onset_output(_combined_onset(alpha_arr, friction, params, indenter), alpha_arr)
     tau0_law = params if friction.uses_tau0 else params.replace(tau0=0.0)
     kappa = coulomb_cap_ratio(friction, params)
     if kappa == 0.0:
@@ -509,6 +511,16 @@ def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
     return _onset_output(np.where(vertical, np.inf, np.where(slides, depth, np.nan)), alpha_arr)
 
 
+def _combined_onset(alpha_arr: np.ndarray, friction: FrictionLaw, params: Parameters, indenter: Profile) -> np.ndarray:
+    """Both parts with adhesion on a curved indenter (:func:`~mdr_events.theory.combined_onset.d_crit_A`): from first
+    contact along the surface (0°), never at 90° (``+inf``), ``nan`` where no onset comes by ``d_max``."""
+    inside = (alpha_arr > 0.0) & (alpha_arr < 90.0)
+    depth = np.where(alpha_arr >= 90.0, np.inf, 0.0)
+    if np.any(inside):
+        depth[inside] = combined_onset.d_crit_A(alpha_arr[inside], friction, params, indenter)
+    return depth
+
+
 def _onset_output(values: np.ndarray, alpha: np.ndarray):
     return float(values) if np.ndim(alpha) == 0 else values
 
@@ -519,7 +531,8 @@ def critical_angle_A(friction: FrictionLaw | str | None, params: Parameters, pro
 
     ``"tau0"``: ``tan α_c = d_max / ū(a(d_max))``; ``"coulomb"``: the angle of friction, ``tan α_c = 1/κ = G*/(μ E*)``,
     at any depth; ``"tau0+coulomb"``: ``cot α_c = cot α_c(τ0) + κ``. With ``adhesion`` as for :func:`d_crit_A`: the
-    angle without where :func:`adhesive_onset_A_is_non_adhesive`, ``nan`` for ``"tau0+coulomb"`` on a curved indenter.
+    angle without where :func:`adhesive_onset_A_is_non_adhesive`; for ``"tau0+coulomb"`` on a curved indenter the
+    angle below which :mod:`~mdr_events.theory.combined_onset` finds an onset by ``d_max``.
 
     .. math:: \cot\alpha_c = \cot\alpha_c(\tau_0) + \kappa, \qquad
               \tan\alpha_c(\tau_0) = \frac{d_\mathrm{max}}{\bar u(a(d_\mathrm{max}))} \qquad (17), (18)
@@ -538,14 +551,14 @@ def critical_angle_A(friction: FrictionLaw | str | None, params: Parameters, pro
     Returns
     -------
     float
-        ``α_c`` in degrees (``nan`` where no closed form exists).
+        ``α_c`` in degrees.
     """
     friction = as_friction_law(friction)
     indenter = _indenter(profile, params)
     if adhesion and coulomb_cap_ratio(friction, params) == 0.0 and friction.uses_tau0:
         return float(power_law.critical_angle_A(indenter, params, adhesion=True))
-    if adhesion and not adhesive_onset_A_is_non_adhesive(friction, indenter):
-        return math.nan
+    if adhesion and not adhesive_onset_A_is_non_adhesive(friction, indenter):  # both parts on a curved indenter
+        return combined_onset.critical_angle_A(friction, params, indenter)
     tau0_angle = power_law.critical_angle_A(indenter, params, adhesion=False) if friction.uses_tau0 else 90.0
     return _with_coulomb(tau0_angle, coulomb_cap_ratio(friction, params))
 

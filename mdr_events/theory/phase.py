@@ -97,8 +97,8 @@ def phase_diagram(
         than the paper's ``"tau0"`` (:mod:`mdr_events.contact.friction`): scenario A without adhesion
         (:func:`mdr_events.theory.mindlin.d_crit_A`, ``d_crit_B``, ``d_crit_B_indentation``); scenario A's adhesive
         ("jkr") onset is the same for Coulomb's law alone and the flat punch (the compressed zone's,
-        :func:`~mdr_events.theory.mindlin.adhesive_onset_A_is_non_adhesive`), ``nan`` otherwise (no closed form:
-        ``"tau0+coulomb"`` on a curved indenter, and scenario B's).
+        :func:`~mdr_events.theory.mindlin.adhesive_onset_A_is_non_adhesive`), that of
+        :mod:`~mdr_events.theory.combined_onset` for ``"tau0+coulomb"`` on a curved indenter; scenario B's ``nan``.
     limits : Limits, optional
         The angles count as ``samples``, and :data:`BYTES_PER_ANGLE` each as ``memory``: checked before anything
         is computed (``ResourceLimitError``).
@@ -276,26 +276,27 @@ def _friction_phase_diagram(params: Parameters, angles: np.ndarray, scenario: st
                             coords: dict) -> xr.Dataset:
     """:func:`phase_diagram` for another friction law (:mod:`~mdr_events.theory.mindlin`); same variables and
     encoding. Scenario A's adhesive onset is the non-adhesive one for Coulomb's law alone and the flat punch
-    (:func:`~mdr_events.theory.mindlin.adhesive_onset_A_is_non_adhesive`), else ``nan`` (no closed form); scenario
-    B's adhesive variables ``nan``."""
+    (:func:`~mdr_events.theory.mindlin.adhesive_onset_A_is_non_adhesive`), the first depth a spring reaches its cap
+    for both parts on a curved indenter (:mod:`~mdr_events.theory.combined_onset`); scenario B's adhesive variables
+    ``nan``."""
     if not theory_of(profile).friction_closed_forms:
         raise ValueError(f"friction={friction.law!r} is not allowed with a tabulated profile's phase diagram; allowed: "
                          "'tau0'")
     if scenario != "A":
         return _friction_phase_diagram_B(params, angles, profile, friction, coords)
-    # with adhesion Coulomb's law alone and the flat punch have the onset without (the compressed zone's, free of Δγ)
+    # with adhesion Coulomb's law alone and the flat punch have the onset without (the compressed zone's, free of Δγ);
+    # both parts on a curved indenter the first depth a spring reaches its cap (theory.combined_onset, up to d_max)
     known = mindlin.adhesive_onset_A_is_non_adhesive(friction, profile)
-    closed = known or mindlin.coulomb_cap_ratio(friction, params) == 0.0  # (μ = 0: the τ0 law's (18))
     kinds = {"hertz": (f"non-adhesive, friction law {friction.law!r}", mindlin.d_crit_A(angles, friction, params,
                                                                                         profile),
                        mindlin.critical_angle_A(friction, params, profile)),
              "jkr": (f"adhesive, friction law {friction.law!r}" + (": the non-adhesive onset (free of Δγ)" if known
-                                                                   else "" if closed else ": no closed form (nan)"),
+                                                                   else ""),
                      mindlin.d_crit_A(angles, friction, params, profile, adhesion=True),
                      mindlin.critical_angle_A(friction, params, profile, adhesion=True))}
     onsets = {key: np.asarray(kinds[key][1], dtype=float) for key in kinds}
     depths = {"hertz": np.where(np.isnan(onsets["hertz"]) | (angles >= 90.0), np.inf, onsets["hertz"]),
-              "jkr": np.where(closed & (np.isnan(onsets["jkr"]) | (angles >= 90.0)), np.inf, onsets["jkr"])}
+              "jkr": np.where(np.isnan(onsets["jkr"]) | (angles >= 90.0), np.inf, onsets["jkr"])}
     return _onset_dataset_A(params, kinds, depths, coords, profile, friction)
 
 

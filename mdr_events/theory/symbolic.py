@@ -772,7 +772,9 @@ def friction_model_afresh() -> dict[str, Relation]:
 ADHESIVE_FRICTION_KEYS = ("compression_boundary", "compression_boundary_rate", "adhesive_friction_cap",
                           "adhesive_virgin_force", "adhesive_full_slip_shift", "adhesive_full_slip_force",
                           "compressed_normal_force", "flat_punch_friction_cap", "flat_punch_full_slip_force",
-                          "flat_punch_loop_energy", "adhesive_seen_piece_turn")
+                          "flat_punch_loop_energy", "adhesive_seen_piece_turn", "adhesive_compressed_level",
+                          "adhesive_tensile_level", "adhesive_crossing_anchor", "adhesive_onset_excess_A",
+                          "adhesive_onset_turn_A")
 
 
 @functools.cache
@@ -826,7 +828,76 @@ def adhesive_friction_model_afresh() -> dict[str, Relation]:
     _derive_adhesive_virgin_curve(add, profile, boundary, kappa, tau0_cap, model)
     _derive_flat_punch_friction(add, cap, kappa, tau0_cap)
     _derive_seen_piece_turn(add, profile, model)
+    _derive_crossing_anchor(add, cap, profile, boundary, kappa, tau0_cap)
+    _derive_adhesive_onset_A(add, profile, model, kappa, tau0_cap)
     return out
+
+
+def _derive_adhesive_onset_A(add: AddRelation, profile: sp.Expr, model: dict[str, Relation], kappa: sp.Expr,
+                             tau0_cap: sp.Expr) -> None:
+    """Scenario A's springs with both parts of the cap and adhesion, before any slides.
+
+    Along ``x = d cot α`` from the first contact at ``d = 0`` (the springs under the jump-in radius ``a_J`` attach
+    there, ``d_ξ = 0``; the others at their depth on the ``Δγ0`` branch, ``d_ξ = d0(ξ)``) a spring holds the shift
+    ``(d − d_ξ) cot α`` against its cap ``K a + κ max(d − g(ξ), 0)``. The excess of shift over cap is largest at
+    ``a_J`` among the jump-in springs (their caps fall outwards), decreases outwards in the tensile annulus
+    (``d0`` rises), and in the compressed grown springs has ``∂/∂ξ = cot α Δl0'(ξ) − (cot α − κ) g'(ξ)``: increasing
+    where ``cot α <= κ``, else with one maximum, at ``ξ*`` (``adhesive_onset_turn_A``, free of ``d``). The onset is the
+    least depth where the largest excess, over ``a_J``, ``x_c`` and ``ξ*`` where they lie in the contact, reaches 0."""
+    cot = sp.Symbol("cot_alpha", positive=True)
+    grown = model["power_law_depth"].rhs.subs(a, x)  # d0(ξ)
+    excess = (d - grown) * cot - tau0_cap - kappa * (d - profile)
+    add(Relation("adhesive_onset_excess_A", "(13)", "shift over cap of a compressed spring grown along the dgamma0 "
+                 "branch in scenario A (cot alpha the path's): (d - d0(xi)) cot - K a - mu (E*/G*) (d - g(xi))", X,
+                 excess, (x, d, a, cot, tau0, mu, dgamma, c, n, E_star, G_star)))
+    slope = sp.diff(excess, x)
+    if sp.diff(slope, d) != 0 or sp.diff(slope, a) != 0:
+        raise RuntimeError("the excess's slope in xi depends on the depth or the radius")
+    turns = sp.solve(sp.Eq(sp.expand(slope * sp.sqrt(x)), 0), x)
+    if len(turns) != 1:
+        raise RuntimeError(f"the scenario A excess has {len(turns)} turns, not one")
+    add(Relation("adhesive_onset_turn_A", "(9)", "radius of the largest shift over cap of the compressed springs "
+                 "grown along the dgamma0 branch in scenario A (exists where cot alpha > mu E*/G*)", x, turns[0],
+                 (cot, mu, dgamma, c, n, E_star, G_star)))
+
+
+def _derive_crossing_anchor(add: AddRelation, cap: sp.Expr, profile: sp.Expr, boundary: sp.Expr, kappa: sp.Expr,
+                            tau0_cap: sp.Expr) -> None:
+    """The levels of the two regions and the anchor a spring keeps crossing ``x_c`` at a cap.
+
+    A spring at ``ξ`` is at the cap ``σ`` (``σ = ±1``) where ``σ (x − Y) >= ū(ξ)``, i.e. where its anchor is at or
+    beyond ``x − σ ū(ξ)``. In the compressed zone (``g < d``) that bound is ``x − σ (K a + κ d) + σ κ g(ξ)``: the cap
+    compares ``Y − σ κ g`` with the level ``x − σ (K a + κ d)``, one for all its springs; in the tensile annulus
+    (``g > d``) the bound is the level ``x − σ K a`` itself. At ``x_c`` both are ``x − σ K a`` (the cap is continuous),
+    so a spring crossing ``x_c`` at a cap keeps ``x(τ) − σ K a(τ)`` of the instant ``τ`` it crosses, ``d(τ) = g(ξ)``:
+    on a path segment (``x = x_s + v_x (t − t_s)``, ``d = d_s + v_d (t − t_s)``)
+    ``Y(ξ) = x_s + (v_x/v_d)(g(ξ) − d_s) − σ K a`` with ``a`` the radius at that depth (constant while pinned, on a
+    branch of (9) while it moves), the anchor seen by either region at the level it had then.
+    """
+    sigma = sp.Symbol("sigma", real=True)
+    position, x_s, d_s = sp.Symbol("x_i", real=True), sp.Symbol("x_s", real=True), sp.Symbol("d_s", real=True)
+    v_x, v_d, time, t_s = (sp.Symbol(name, real=True) for name in ("v_x", "v_d", "t_cross", "t_s"))
+    compressed_cap = tau0_cap + kappa * (d - profile)
+    compressed_level = sp.simplify(position - sigma * compressed_cap - sigma * kappa * profile)
+    if sp.diff(compressed_level, x) != 0:
+        raise RuntimeError("the compressed zone's level depends on the spring")
+    tensile_level = position - sigma * tau0_cap
+    if not (_vanishes(cap.subs(x, boundary) - tau0_cap)
+            and _vanishes(compressed_level + sigma * kappa * profile.subs(x, boundary) - tensile_level)):
+        raise RuntimeError("the regions' bounds differ at x_c")
+    arguments = (position, sigma, d, a, tau0, mu, E_star, G_star)
+    add(Relation("adhesive_compressed_level", "(13)", "level of the cap sigma in the compressed zone, against which it "
+                 "compares Y - sigma mu (E*/G*) g: x - sigma (K a + mu (E*/G*) d)", X, compressed_level, arguments))
+    add(Relation("adhesive_tensile_level", "(13)", "level of the cap sigma in the tensile annulus: x - sigma K a",
+                 X, tensile_level, (position, sigma, a, tau0, G_star)))
+    crossing = sp.solve(sp.Eq(d_s + v_d * (time - t_s), profile), time)[0]  # d(τ) = g(ξ)
+    anchor = sp.expand((x_s + v_x * (time - t_s)).subs(time, crossing) - sigma * tau0_cap)
+    seen = compressed_level.subs({position: x_s + v_x * (crossing - t_s), d: profile})
+    if not _vanishes(anchor - sigma * kappa * profile - seen):
+        raise RuntimeError("the crossing anchor is not at the compressed level of its instant")
+    add(Relation("adhesive_crossing_anchor", "(13)", "anchor a spring at xi keeps crossing x_c at the cap sigma on a "
+                 "path segment: x_s + (v_x/v_d)(g(xi) - d_s) - sigma K a", X, anchor,
+                 (x, x_s, d_s, v_x, v_d, sigma, a, tau0, c, n, G_star)))
 
 
 def _derive_seen_piece_turn(add: AddRelation, profile: sp.Expr, model: dict[str, Relation]) -> None:

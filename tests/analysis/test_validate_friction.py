@@ -53,8 +53,7 @@ def test_a_solution_of_another_law_is_refused(hertz, fretting):
 def test_a_sweep_takes_a_friction_law(hertz):
     """sweep(..., friction=): each run is the law's. Coulomb's law at 10° (below the angle of friction) slides from
     first contact, so the largest F_x is μ F_N at d_max (Hertz's F_N: the closed form, for each E); the combined law's
-    critical angle of scenario A is mindlin's; the law is named; with adhesion the continuum sweep is refused before
-    anything runs."""
+    critical angle of scenario A is mindlin's; the law is named; a set with adhesion runs as its own simulation."""
     result = me.sweep({"E": [2e5, 6e5]}, "A", alpha=10.0, base=hertz, friction=COULOMB, scheduler="serial",
                       quantities=["tangential_force_max"])
     assert result.attrs["friction_law"] == "coulomb"
@@ -68,10 +67,12 @@ def test_a_sweep_takes_a_friction_law(hertz):
     for tau0 in (1e3, 4e3):
         assert float(angles["critical_angle_A"].sel(tau0=tau0)) == mindlin.critical_angle_A(combined,
                                                                                            hertz.replace(tau0=tau0))
-    with pytest.raises(ValueError, match=r"grid: Parameters.dgamma0=0.01 is not allowed with the friction law"):
-        # (the base has no adhesion; one swept set has: it alone is named)
-        me.sweep({"dgamma0": [0.0, 0.01]}, "A", alpha=10.0, base=hertz, friction=combined, scheduler="serial",
-                 quantities=["tangential_force_max"])
+    # with adhesion too (the compressed zone and the tensile annulus of the continuum): each set its own run's
+    swept = me.sweep({"dgamma0": [0.0, 0.01]}, "A", alpha=10.0, base=hertz, friction=combined, scheduler="serial",
+                     quantities=["tangential_force_max"])
+    for dgamma0 in (0.0, 0.01):
+        run = me.simulate(hertz.replace(dgamma0=dgamma0), "A", alpha=[10.0], method="continuum", friction=combined)
+        assert float(swept["tangential_force_max"].sel(dgamma0=dgamma0)) == float(run["tangential_force_max"][0])
 
 
 def test_a_fit_with_coulombs_law_recovers_the_modulus(hertz, fretting):

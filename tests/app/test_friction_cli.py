@@ -41,9 +41,6 @@ def test_simulate_and_validate_take_a_friction_law(capsys, tmp_path):
     (["--friction", "coulomb", "--mu", "-0.2"], "--friction coulomb --mu -0.2: mu=-0.2 is not allowed"),
     (["--mu", "0.3"], "--mu 0.3 with the default --friction tau0: mu=0.3 is not allowed with the friction law 'tau0'"),
     (["--friction", "amontons"], "--friction: invalid choice: 'amontons'"),
-    (["--friction", "tau0+coulomb", "--mu", "0.3", "--method", "continuum"], "Parameters.dgamma0=0.01 and "
-                                                                             "Parameters.dgamma1=0.15 are not allowed "
-                                                                             "with the friction law 'tau0+coulomb'"),
 ])
 def test_a_bad_friction_law_is_one_line_exit_2(capsys, tmp_path, options, fragment):
     status, _, err = run(capsys, "simulate", "--scenario", "A", "--alpha", "20", *options, "--out", str(tmp_path / "new"))

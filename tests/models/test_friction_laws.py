@@ -184,8 +184,6 @@ def test_the_discrete_model_runs_coulombs_law_with_adhesion():
 
 
 @pytest.mark.parametrize("call, exception, words", [
-    (lambda: me.simulate(me.Parameters.paper(), "A", alpha=[20.0], method="continuum", friction=COMBINED), ValueError,
-     ["Parameters.dgamma0=0.01 and Parameters.dgamma1=0.15 are not allowed", "'tau0+coulomb'", "method='discrete'"]),
     (lambda: me.simulate(me.Parameters.paper(), "A", alpha=[20.0], friction="amontons"), ValueError,
      ["FrictionLaw.law='amontons'"]),
     (lambda: me.simulate(me.Parameters.paper(), "A", alpha=[20.0], friction="coulomb"), ValueError, ["mu=None"]),

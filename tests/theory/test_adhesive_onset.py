@@ -1,8 +1,8 @@
 """Scenario A's slip onset with adhesion for Coulomb's part (theory.mindlin.d_crit_A with ``adhesion``, the phase
 diagram's adhesive curve): the non-adhesive onset for Coulomb's law alone (the compressed zone's, free of Δγ) and for
 any law on the flat punch (all springs compressed while it is pressed in), against the continuum's first slip event
-with the paper's adhesion and Δγ1 < Δγ0; "tau0+coulomb" on a curved indenter has none (nan), as the continuum refuses
-it."""
+with the paper's adhesion and Δγ1 < Δγ0; "tau0+coulomb" on a curved indenter the first depth a spring reaches its
+cap (theory.combined_onset), the continuum's too."""
 
 from __future__ import annotations
 
@@ -60,11 +60,33 @@ def test_the_adhesive_onset_is_the_non_adhesive_one_and_the_continuums(adhesion,
             for d in diagram["d_crit_jkr"].values} >= ({0.0, math.inf} if not friction.uses_tau0 else {1.0})
 
 
-def test_the_combined_law_on_a_curved_indenter_has_no_adhesive_onset():
-    params = me.Parameters.paper()
+#: The combined law's cases: three adhesions (the paper's, Δγ1 < Δγ0, Δγ0 = 0) on the paraboloid, a cone (growing
+#: without adhesion from a = 0 it slides from first contact below an angle) and n = 3
+COMBINED_CASES = [pytest.param(adhesion, profile, id=f"{name}-{label}")
+                  for adhesion, name in zip(ADHESIONS + [(0.0, 0.1)], ("paper", "reversed", "grows-without"))
+                  for profile, label in ((None, "paraboloid"), (PowerLaw.cone(0.05), "cone"),
+                                         (PowerLaw(2e5, 3.0), "n3"))]
+
+
+@pytest.mark.parametrize("adhesion, profile", COMBINED_CASES)
+def test_the_combined_laws_adhesive_onset_is_the_continuums(adhesion, profile):
+    """Both parts of the cap on a curved indenter with adhesion: the onset of theory.combined_onset (the first depth
+    where the jump-in ring's edge, x_c or the grown springs' turn reaches its cap) is the continuum's first slip onset
+    at five angles, none where it finds none by d_max; the continuum slides by d_max just below the critical angle and
+    not just above it; the phase diagram's adhesive curve is it (+inf where none) (:data:`COMBINED_CASES`)."""
+    params = me.Parameters.paper().replace(dgamma0=adhesion[0], dgamma1=adhesion[1])
     friction = FrictionLaw("tau0+coulomb", mu=0.2)
-    assert np.all(np.isnan(mindlin.d_crit_A(ANGLES, friction, params, adhesion=True)))
-    assert math.isnan(mindlin.critical_angle_A(friction, params, adhesion=True))
-    diagram = me.phase_diagram(params, ANGLES, friction=friction)
-    assert np.all(np.isnan(diagram["d_crit_jkr"].values))
-    assert "no closed form" in diagram["d_crit_jkr"].attrs["long_name"]
+    angles = np.array([5.0, 10.0, 20.0, 40.0, 70.0])
+    depths = mindlin.d_crit_A(angles, friction, params, profile, adhesion=True)
+    for alpha, depth in zip(angles, depths):
+        found = _onset(params, alpha, friction, profile)
+        if np.isnan(depth):
+            assert found == math.inf, alpha
+        else:
+            assert found == pytest.approx(depth, rel=0, abs=ONSET_SHARE * params.d_max), alpha
+    critical = mindlin.critical_angle_A(friction, params, profile, adhesion=True)
+    assert _onset(params, critical - 0.01, friction, profile) <= params.d_max
+    assert _onset(params, critical + 0.01, friction, profile) == math.inf
+    diagram = me.phase_diagram(params, angles, friction=friction, profile=profile)
+    np.testing.assert_array_equal(diagram["d_crit_jkr"].values, np.where(np.isnan(depths), np.inf, depths))
+    assert float(diagram["critical_angle_jkr"]) == critical

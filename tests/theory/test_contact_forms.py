@@ -86,6 +86,8 @@ def test_a_contact_of_another_friction_law_gives_the_numbers_of_friction(scenari
     assert np.isfinite(ds["critical_angle_hertz"])
     if law.law == "coulomb" and scenario == "A":  # the compressed zone's onset: the non-adhesive one
         np.testing.assert_array_equal(ds["d_crit_jkr"].values, ds["d_crit_hertz"].values)
+    elif scenario == "A":  # both parts: the first depth a spring reaches its cap (theory.combined_onset)
+        assert not np.any(np.isnan(ds["d_crit_jkr"]))
     else:
         assert np.all(np.isnan(ds["d_crit_jkr"]))
 

@@ -16,11 +16,22 @@ module                     one idea
 :mod:`.zones`              one cap's slip zone laid out at a span's start, continued smoothly
 :mod:`.model`              the two branches and the cap ``ū = K a``; the path as linear segments
 :mod:`.plan`               :func:`plan_span`: the span's regime and end in closed form
-:mod:`.span`               :class:`SpanIntegrator` (right-hand side, event functions), ``integrate_span``
+:mod:`.span`               :class:`SpanIntegrator` (right-hand side, event functions)
+:mod:`.integrate`          ``integrate_span``: a span's force up to its end or first event (``solve_ivp``, knots)
 :mod:`.solve`              :func:`solve_path`: plan → integrate → transition → log
 :mod:`.compressed`         Coulomb's law alone with adhesion: the compressed zone's run beside the contact, and the
                            contact's slip events (the zone's and the tensile annulus's)
 :mod:`.dense`              a span's dense output at many points at once (DOP853's steps as arrays, bit for bit)
+:mod:`.formulas`           both parts with adhesion: the anchors as formulas of ``g``, ``d0`` and ``A(g)`` (value,
+                           integral, turns, inverse on a monotone interval)
+:mod:`.regions`            the compressed zone and the tensile annulus; one cap's zone in one region, its ends moving
+:mod:`.split_map`          the stored anchors as pieces of formulas, their parts per cap and region, a span's maps
+:mod:`.split_sums`         what is read off them: the springs at a cap, the clip, the algebraic force, the zones
+:mod:`.split_layouts`      both regions' layouts at an instant, their ends moving; the anchors of springs crossing
+                           ``x_c`` at a cap
+:mod:`.split_span`         :class:`~.split_span.SplitSpanIntegrator`: the right-hand side of two regions
+:mod:`.split_events`       its events, keyed by cap and region
+:mod:`.split_solve`        the maps joined after a span, the slip transition of two regions
 :mod:`.solution`           :class:`PathSolution` (spans and interpolants), ``evaluate``, ``extremum``,
                            ``tangential_work``
 :mod:`.rate_edge`          a rate-dependent adhesion law's edge: the radius as the state of an ODE (the normal problem)
@@ -41,7 +52,8 @@ integrated force (:func:`algebraic_tangential_force`).
 
 Friction laws: the cap ``ū(ξ) = K a + κ max(d − g(ξ), 0)`` (:mod:`.caps`); with adhesion Coulomb's law alone runs as
 the compressed zone beside the contact (``PathSolution.compressed``); on the flat punch every law, with or without
-adhesion, is one play operator of the face; both parts together with adhesion on a curved indenter are refused.
+adhesion, is one play operator of the face; both parts together with adhesion on a curved indenter split the contact
+at the moving ``x_c`` into two regions with caps of their own (:mod:`.split_span`).
 """
 
 from .anchors import AnchorMap, Piece
@@ -52,7 +64,8 @@ from .rate_edge import EdgeEvent, EdgeEventKind, EdgeMode, EdgeRun, solve_edge
 from .solution import (EVALUATED_QUANTITIES, EXTREMUM_QUANTITIES, PathSolution, algebraic_tangential_force, evaluate,
                        evaluate_span, extremum, tangential_work)
 from .solve import run_continuum, solve_path
-from .span import Span, SpanIntegrator, Trigger, integrate_span
+from .integrate import integrate_span
+from .span import Span, SpanIntegrator, Trigger
 from .state import (EVENT_KINDS, NO_ZONE, ZONE_EVENTS, Cap, ContactState, Event, EventKind, Regime, Slip, ZoneSummary,
                     zone_events)
 from .tolerances import NEGLIGIBLE_SHARE, Tolerances

@@ -319,6 +319,25 @@ class AnchorMap:
         seen = [Piece(p.start, p.end, p.x0 - shift * p.d_ref, p.ratio - shift, p.d_ref) for p in self.pieces]
         return AnchorMap(self.attach, self.rtol, seen)
 
+    def sliding_length(self, caps: "Caps", x: np.ndarray, depth: np.ndarray, radius: np.ndarray) -> np.ndarray:
+        """The length (m) of the springs at either cap at several instants: each cap's :meth:`zone_sizes` with its
+        level ``x ∓ (K a + κ d)``, as the cap sees the anchors (:meth:`seen_by`).
+
+        Parameters
+        ----------
+        caps : Caps
+            The friction law's caps.
+        x, depth, radius : numpy.ndarray
+            The indenter's position, the depth and the contact radius at each instant (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The lengths (m).
+        """
+        shift = caps.centre_shift(radius, depth)
+        return sum(self.seen_by(cap, caps.kappa).zone_sizes(cap, x - cap * shift, radius) for cap in Cap)
+
     # --- values ---------------------------------------------------------------------------------
     def in_contact(self, radius: float) -> list[Piece]:
         """The pieces that hold springs of a contact of radius ``radius``.

@@ -14,8 +14,8 @@ non-adhesive contact of the same path (``solve_path`` runs it beside the adhesiv
 every spring rests on ``g = 0``: all share the cap ``K a + κ max(d, 0)`` (``flat_punch_friction_cap``; ``K a`` alone
 in tension, an adhesive punch held above the surface) and one anchor history, one play operator; the anchors are seen
 as they are (the branch's ``flat``), every span is pinned, linear in time, and the planner ends a span where the depth
-crosses 0 (the caps' kink). Both parts with adhesion on a curved indenter are refused (:func:`check_supported`; the
-discrete method runs them).
+crosses 0 (the caps' kink). Both parts with adhesion on a curved indenter split the contact at ``x_c`` into two
+regions with caps of their own (:func:`split_regions`, :mod:`.split_span`).
 """
 
 from __future__ import annotations
@@ -64,18 +64,10 @@ def compressed_zone_alone(caps: Caps, dgamma0: float, dgamma1: float) -> bool:
     return caps.K == 0.0 and caps.kappa > 0.0 and (dgamma0 != 0.0 or dgamma1 != 0.0)
 
 
-def check_supported(friction: FrictionLaw, params: Parameters, profile=None) -> None:
-    """Refuse both parts of a law with adhesion on a curved indenter: the springs in tension keep ``τ0``'s cap ``K a``
-    while the compressed ones add Coulomb's, one play operator per spring on anchors laid along the adhesive branch,
-    which the caps no longer see as single pieces (not done yet: the discrete method runs it). Coulomb's law alone with
-    adhesion is exact (:func:`compressed_zone_alone`), and so is any law on the flat punch (module docstring)."""
-    if friction.coulomb_mu == 0.0 or isinstance(profile, FlatPunch):  # no Coulomb part, or one play operator
-        return
-    adhesive = [f"Parameters.{name}={getattr(params, name)!r}" for name in ("dgamma0", "dgamma1")
-                if getattr(params, name) != 0.0]
-    if adhesive and caps_of(friction, params).K > 0.0:
-        raise ValueError(f"{' and '.join(adhesive)} {'is' if len(adhesive) == 1 else 'are'} not allowed with the "
-                         f"friction law {friction.law!r} in the continuum method (τ0's cap in the adhesive annulus "
-                         "beside Coulomb's in the compressed zone is not done yet); allowed: dgamma0 = dgamma1 = 0, "
-                         "tau0=0 or the law 'coulomb' (exact with adhesion), or the discrete model "
-                         "(simulate(..., method='discrete'))")
+def split_regions(caps: Caps, dgamma0: float, dgamma1: float, profile=None) -> bool:
+    """Whether the contact has two regions with different caps: both parts of the law (``K > 0``, ``κ > 0``) with
+    adhesion (``Δγ0`` or ``Δγ1`` > 0) on a curved indenter. The springs in tension keep ``τ0``'s cap ``K a``, the
+    compressed ones add Coulomb's: the compressed zone and the tensile annulus are laid out apart, split at the moving
+    ``x_c`` (:mod:`.split_span`). On the flat punch every spring shares one cap (module docstring)."""
+    adhesive = dgamma0 != 0.0 or dgamma1 != 0.0
+    return caps.K > 0.0 and caps.kappa > 0.0 and adhesive and not isinstance(profile, FlatPunch)

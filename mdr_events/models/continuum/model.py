@@ -14,9 +14,9 @@ from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, TabulatedProfile
 from mdr_events.models.paths import Path
 from mdr_events.contact.adhesion import AdhesionLaw, law_of
-from .branch import Branch
+from .branch import Branch, make_branch
 from .edges import edge_of
-from .caps import Caps, caps_of, check_supported, compressed_zone_alone
+from .caps import Caps, caps_of, compressed_zone_alone, split_regions
 from .state import Regime
 from .tolerances import NEGLIGIBLE_SHARE, PIECE_SHARE, SEGMENT_RESOLUTION, Tolerances
 
@@ -52,6 +52,11 @@ class ContinuumModel:
         Its two parts, ``ū(ξ) = K a + κ (d − g(ξ))``.
     K : float
         Critical shift per contact radius of ``τ0``'s part, ``ū(a) = K a`` (13) (0 for ``"coulomb"``).
+    split : bool
+        Both parts of the cap with adhesion on a curved indenter (:func:`~.caps.split_regions`): the compressed zone and
+        the tensile annulus are laid out apart (:mod:`.split_span`).
+    hertz : Branch or None
+        With :attr:`split`, the branch without adhesion: the profile ``g`` and the compression boundary ``x_c``.
     zone_params : Parameters or None
         Coulomb's law alone with adhesion (:func:`~.caps.compressed_zone_alone`): the parameters of the compressed
         zone, the contact without adhesion whose run gives the tangential force (``solve_path``); this model's own
@@ -66,7 +71,6 @@ class ContinuumModel:
 
     def __init__(self, params: Parameters, tolerances: Tolerances, profile: PowerLaw | FlatPunch | None = None,
                  friction: FrictionLaw = TAU0, adhesion: AdhesionLaw | None = None):
-        check_supported(friction, params, profile)
         self.params = params
         self.tolerances = tolerances
         self.profile = profile
@@ -80,6 +84,8 @@ class ContinuumModel:
             self.zone_params = params.replace(dgamma0=0.0, dgamma1=0.0)
             self.caps = Caps(0.0, 0.0)
         self.K = self.caps.K
+        self.split = split_regions(self.caps, *dgammas, profile)
+        self.hertz = make_branch(params, 0.0, profile) if self.split else None
 
     def normal_force(self, depth, radius):
         r"""``F_N`` (10) of the springs in ``|x| < a`` at depth ``d``, vectorised, for the model's profile (the flat

@@ -162,7 +162,8 @@ def _plan_inward(model: ContinuumModel, state: ContactState, segment: Segment) -
         growth = (Piece(a, on_branch, segment.x(t)),)
         jumped_from, a = a, on_branch
     growth += (Piece(a, math.inf, segment.xs, segment.vx / segment.vd, segment.ds),)
-    return SpanPlan(Action.CONTACT, Regime.GROWING, t, segment.t1, None, a, state.force, (), growth, jumped_from)
+    t_end = _at_surface(model, segment, t, segment.t1, None)[0] if model.split else segment.t1
+    return SpanPlan(Action.CONTACT, Regime.GROWING, t, t_end, None, a, state.force, (), growth, jumped_from)
 
 
 def _plan_outward(model: ContinuumModel, state: ContactState, segment: Segment) -> SpanPlan:
@@ -181,6 +182,9 @@ def _plan_outward(model: ContinuumModel, state: ContactState, segment: Segment) 
         return SpanPlan(Action.CONTACT, Regime.PINNED, t, t_end, kind, a, force)
     t_end = min(segment.t1, segment.time_at_depth(model.shrink.jump_off_depth))
     ending = EventKind.PULL_OFF if model.shrink.work > 0 else EventKind.CONTACT_ENDS
+    kind = _end_kind(t_end, segment, ending)
+    if model.split:  # the compressed zone vanishes where the depth crosses 0: a span ends there
+        t_end, kind = _at_surface(model, segment, t, t_end, kind)
     # the radius leaves the pinned or growing state at once (Δγ1 <= Δγ0)
     entry = () if state.detaching else (EventKind.DETACHMENT_STARTS,)
     on_branch = model.shrink.radius(d, model.tolerances.radius_rtol)
@@ -190,4 +194,4 @@ def _plan_outward(model: ContinuumModel, state: ContactState, segment: Segment) 
         # clips the rest (anchor map form)
         a = on_branch
         force = state.anchors.tangential_force(model.caps, model.params.G_star, segment.x(t), a, d)
-    return SpanPlan(Action.CONTACT, Regime.SHRINKING, t, t_end, _end_kind(t_end, segment, ending), a, force, entry)
+    return SpanPlan(Action.CONTACT, Regime.SHRINKING, t, t_end, kind, a, force, entry)

@@ -15,7 +15,7 @@ from mdr_events.validation import check_real, real_array, shown
 from .dense import force_values
 from .model import ContinuumModel
 from .span import Span, Variable
-from .state import CONTACT_ENDING, Cap, Event, Regime
+from .state import CONTACT_ENDING, Event, Regime
 from .stationary import stationary_points
 
 
@@ -164,8 +164,7 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
             out["sliding_fraction"] = zone_sliding
         return out
     if sliding:
-        shift = model.caps.centre_shift(a, d)
-        zones = sum(span.anchors.seen_by(cap, model.caps.kappa).zone_sizes(cap, x - cap * shift, a) for cap in Cap)
+        zones = span.anchors.sliding_length(model.caps, x, d, a)
         with np.errstate(invalid="ignore", divide="ignore"):
             out["sliding_fraction"] = np.where(a > 0, np.minimum(zones / a, 1.0), np.nan)
     return out

@@ -1,7 +1,7 @@
 """``solve_path``: the hybrid automaton's loop, plan → integrate → transition → log.
 
 Each pass plans a span in closed form (:func:`~.plan.plan_span`), integrates the tangential force
-over it up to its end or the first slip event (:func:`~.span.integrate_span`), and applies the
+over it up to its end or the first slip event (:func:`~.integrate.integrate_span`), and applies the
 transition the plan or the events call for (the functions below; the slip transitions are the table
 of :mod:`~.state`), logging the events. Path corners start a new plan.
 """
@@ -23,7 +23,11 @@ from .compressed import attach_compressed_zone
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
 from .plan import Action, SpanPlan, plan_span
 from .solution import PathSolution, evaluate
-from .span import Span, SpanOutcome, Trigger, integrate_span
+from .integrate import integrate_span
+from .span import Span, SpanIntegrator, SpanOutcome, Trigger
+from .split_map import SplitAnchorMap
+from .split_solve import commit, new_anchors, split_slip_transition
+from .split_span import SplitSpanIntegrator
 from .state import CONTACT_ENDING, NO_ZONE, Cap, ContactState, Event, EventKind, Regime, Slip, zone_events
 from .tolerances import MAX_RESTARTS, Tolerances
 from .zones import lay_out_zones
@@ -34,9 +38,8 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                friction: FrictionLaw | str | None = None, adhesion: AdhesionLaw | None = None) -> PathSolution:
     """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`) for the indenter
     ``profile`` (``None``: the paper's paraboloid of ``params.R``), the friction law ``friction`` (``None``:
-    the paper's ``"tau0"``; both parts with adhesion need the flat punch: :func:`~.caps.check_supported`) and the
-    adhesion law ``adhesion``
-    (``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``); a path with more waypoints than
+    the paper's ``"tau0"``; both parts with adhesion on a curved indenter: two regions, :mod:`.split_span`) and the
+    adhesion law ``adhesion`` (``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``); a path with more waypoints than
     ``limits.waypoints`` is refused before the work starts.
 
     Parameters
@@ -77,7 +80,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     segments = kinematics(path)
     check_resolvable(model, path, segments)
     solution = PathSolution(model, t_contact=path.first_contact_time(), path=path)
-    state = ContactState(t=solution.t_contact, anchors=AnchorMap(model.grow, tolerances.radius_rtol))
+    state = ContactState(t=solution.t_contact, anchors=_stored_anchors(model, path))
     entries = path.entry_times()
     heading = 0.0  # the sign of the last tangential motion
     for index, segment in enumerate(segments):
@@ -108,6 +111,12 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     return solution
 
 
+def _stored_anchors(model: ContinuumModel, path: Path) -> AnchorMap | SplitAnchorMap:
+    """An empty map of the anchors of ``model``'s springs along ``path``: of formulas split at ``x_c`` with both
+    parts of the cap and adhesion on a curved indenter (:func:`~.split_solve.new_anchors`), else of pieces."""
+    return new_anchors(model, path) if model.split else AnchorMap(model.grow, model.tolerances.radius_rtol)
+
+
 class RestartGuard:
     """Counts passes that do not advance in time; too many mean the solver is stuck."""
 
@@ -118,8 +127,8 @@ class RestartGuard:
         self.stalled = self.stalled + 1 if state.t <= self.last else 0
         if self.stalled > MAX_RESTARTS:
             zones = ", ".join(f"{cap.name.lower()} cap {state.zones[cap].slip.value}" for cap in Cap)
-            fired = ", ".join(sorted(f"{trigger.value}" + (f" ({cap.name.lower()} cap)" if cap else "")
-                                     for trigger, cap in state.last_fired)) or "none"
+            fired = ", ".join(sorted(f"{key[0].value}" + (f" ({key[1].name.lower()} cap)" if key[1] else "")
+                                     for key in state.last_fired)) or "none"
             raise RuntimeError(f"the continuum method made no progress at t = {state.t!r} s after {MAX_RESTARTS} "
                                f"event restarts (radius {state.radius!r} m, {zones}; last event: {fired}); please "
                                "report the parameters and path")
@@ -153,15 +162,21 @@ def advance(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment:
         return [(EventKind.PULL_OFF, plan.t_start, plan.radius, 0)]
     logged = enter(model, state, plan, segment)
     span = Span(plan.t_start, plan.t_end, segment, plan.regime, pinned_radius=plan.radius)
-    outcome = integrate_span(model, state.anchors, span, state.sliding, plan.force)
+    if model.split:  # two regions: each cap of each, and the maps the span reads them from
+        outcome = integrate_span(model, state.anchors, span, state.regions, plan.force, SplitSpanIntegrator)
+        record = commit(state, outcome, span)
+    else:
+        outcome = integrate_span(model, state.anchors, span, state.sliding, plan.force, SpanIntegrator)
+        record = None
     span.t_end = outcome.t_stop
     solution.spans.append(span)
     radius = outcome.radius
     if span.regime is Regime.GROWING:
         state.anchors.close(radius)
-    span.anchors = state.anchors.copy()
+    span.anchors = record if record is not None else state.anchors.copy()
     if outcome.fired:
-        return logged + slip_transition(model, state, outcome, radius, segment)
+        transition = split_slip_transition if model.split else slip_transition
+        return logged + transition(model, state, outcome, radius, segment)
     return logged + regime_ends(model, state, plan, outcome, radius)
 
 
@@ -194,7 +209,10 @@ def enter(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment: S
         for piece in plan.growth:
             state.anchors.extend(piece.start, piece)
     else:
+        dropped = plan.radius < state.radius
         state.anchors.truncate(plan.radius)
+        if dropped and model.split:  # the caps jumped in with the radius: the play operators take them at once
+            state.anchors.clip_caps(segment.x(plan.t_start), model.caps, segment.d(plan.t_start), plan.radius)
     state.detaching = plan.regime is Regime.SHRINKING
     state.radius, state.force = plan.radius, plan.force
     return logged

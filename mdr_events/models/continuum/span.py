@@ -1,4 +1,4 @@
-"""Integrate the tangential force over one span, up to the first event.
+"""The right-hand side of the tangential force over one span and its events (:mod:`.integrate` integrates them).
 
 The force obeys
 
@@ -34,13 +34,11 @@ from dataclasses import dataclass
 from typing import Callable, NamedTuple
 
 import numpy as np
-from scipy.integrate import OdeSolution, solve_ivp
-from scipy.optimize import OptimizeResult
 
 from .anchors import AnchorMap
 from .model import ContinuumModel, Segment
 from .state import Cap, Regime, Slip
-from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE, SIMULTANEOUS_SHARE
+from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE
 from .zones import EDGE_LEAVING_TOLERANCES, indenter_travel, lay_out_zones, length_scale
 
 
@@ -100,6 +98,7 @@ class Trigger(enum.Enum):
     ZONE_LEAVES_EDGE = "zone_leaves_edge"    #: the shrinking edge passes a front whose zone lies at the edge
     LEVEL_TURNS = "level_turns"              #: a sliding cap's level turns back: its springs stick again
     EDGE_PASSES_PIECE = "edge_passes_piece"  #: the shrinking edge passes the start of its piece
+    BOUNDARY_PASSES_PART = "boundary_passes_part"  #: ``x_c`` passes a part's boundary (:mod:`.split_span`)
 
 
 #: A fired event: its trigger and the cap it concerns (``None`` for the edge passing a piece).
@@ -115,6 +114,10 @@ class SpanOutcome(NamedTuple):
     #: the contact radius at ``t_stop`` (a moving radius: the integration variable itself, not recomputed
     #: from the time, so that the next span starts exactly where the event's root was found)
     radius: float
+    #: the maps the span read its regions from (:class:`~.split_map.SpanMaps`; ``None``: the stored anchors)
+    maps: object = None
+    #: the slip in each region at the span's start as it was laid out (``None``: as given)
+    sliding: dict | None = None
 
 
 class EventFunction:
@@ -182,6 +185,19 @@ class SpanIntegrator:
         #: (the planner ends a span where the depth crosses 0, so the span's middle tells)
         self.depth_rate = self.segment.vd if self.segment.d(0.5 * (t0 + t1)) > 0.0 else 0.0
         self.x0 = self.segment.x(t0)
+        self.lay_out(anchors, sliding)
+
+    def lay_out(self, anchors: AnchorMap, sliding: dict[Cap, bool]) -> None:
+        """Each cap's slip zone at the span's start (:func:`~.zones.lay_out_zones`), and the tolerances of the levels.
+
+        Parameters
+        ----------
+        anchors : AnchorMap
+            The stored anchors of the springs in contact.
+        sliding : dict of Cap to bool
+            Whether springs slide at each cap at the start.
+        """
+        model, t0 = self.model, self.span.t_start
         depth_term = model.grow.depth_term
         # a moving radius is integrated in units of the span's largest radius, and an event's root is found to 4 eps
         # of that: the levels move by the travel up to it over that rounding, which the level offset must exceed
@@ -480,6 +496,45 @@ class SpanIntegrator:
                     met.add((Trigger.ZONE_LEAVES_EDGE, cap))
         return frozenset(met)
 
+    def max_step(self) -> float:
+        """The longest step of the solver (in the integration variable): with a front in a piece, a share
+        1/:data:`MIN_STEPS_PER_SPAN` of the span (the front's smooth continuation ends where its piece meets the
+        branch's fold, and one step across the whole span can reach it); else none.
+
+        Returns
+        -------
+        float
+            The step (``inf``: none).
+        """
+        return abs(self.stop - self.start) / MIN_STEPS_PER_SPAN if self.has_fronts() else math.inf
+
+    def finish(self, outcome: SpanOutcome) -> SpanOutcome:
+        """What :func:`~.integrate.integrate_span` returns of the span's ``outcome`` (the outcome itself: the span
+        read the stored anchors as they were given).
+
+        Parameters
+        ----------
+        outcome : SpanOutcome
+            How the span ended.
+
+        Returns
+        -------
+        SpanOutcome
+            ``outcome``.
+        """
+        return outcome
+
+    def has_fronts(self) -> bool:
+        """Whether a slip front lies inside a piece (the solver's steps are then limited:
+        :func:`~.integrate.integrate_span`).
+
+        Returns
+        -------
+        bool
+            ``True`` if either cap's layout holds a front.
+        """
+        return bool(self.positive.fronts or self.negative.fronts)
+
     def force_is_linear(self) -> bool:
         """A pinned span without fronts: the slip zones hold whole pieces and keep their sizes until an
         event, so ``dF_x/dt = 2G* ((a − n₊ − n₋) v_x + (n₊ − n₋) κ ḋ)`` is constant and the events' times are
@@ -548,138 +603,3 @@ class LinearForce:
     def __call__(self, t) -> np.ndarray:
         """Shape ``(1,)`` for a scalar ``t``, ``(1, n)`` for ``n`` times, as ``OdeSolution``."""
         return (self.force + self.rate * (np.asarray(t, dtype=float) - self.t0))[None, ...]
-
-
-def fired_events(events: list[EventFunction], roots: list, start: float, offset: float) -> tuple[float, frozenset]:
-    """The first root among the events' ``roots`` (``solve_ivp``'s ``t_events``) and every event that fires
-    with it: those whose roots coincide (to SIMULTANEOUS_SHARE), and the rising ones whose function is
-    already zero to rounding there (the roots of identical functions, e.g. onset and full slip of a
-    uniform field, differ by an ulp)."""
-    hits = sorted((abs(found[0] - start), found[0], index) for index, found in enumerate(roots) if len(found))
-    first = hits[0][1]
-    fired = {events[index].key for _, var, index in hits
-             if abs(var - first) <= SIMULTANEOUS_SHARE * max(abs(first), 1e-300)}
-    for event in events:
-        if event.key not in fired and event.direction > 0 and event(first) >= -2 * offset:
-            fired.add(event.key)
-    return first, frozenset(fired)
-
-
-def integrate_span(model: ContinuumModel, anchors: AnchorMap, span: Span, sliding: dict[Cap, bool],
-                   force: float) -> SpanOutcome:
-    """Integrate ``F_x`` over ``span`` from ``force``, up to its end or the first event.
-
-    Sets the span's interpolant (or constant force) and integration variable; the caller sets its
-    end to the returned ``t_stop``.
-
-    Parameters
-    ----------
-    model : ContinuumModel
-        The contact's branches, caps and tolerances.
-    anchors : AnchorMap
-        The stored anchors of the springs in contact (read, not changed).
-    span : Span
-        The span, its regime and (pinned) radius; its interpolant, force and variable are set.
-    sliding : dict of Cap to bool
-        Whether springs slide at each cap at the start.
-    force : float
-        ``F_x`` (N) at the start.
-
-    Returns
-    -------
-    SpanOutcome
-        The events that stopped it (none: its planned end), the time, force and radius there.
-
-    Raises
-    ------
-    RuntimeError
-        A state that is not finite, or ``solve_ivp`` failing (a bug to report).
-    """
-    t0, t1 = span.t_start, span.t_end
-    span.force = force
-    if t1 <= t0:
-        return SpanOutcome(frozenset(), t0, force, radius_at(model, span, t0))
-    if model.caps.frictionless:  # τ0 = 0 (μ = 0): ū ≡ 0, every spring slides with zero shift, F_x ≡ 0
-        span.force = 0.0
-        return SpanOutcome(frozenset(), t1, 0.0, radius_at(model, span, t1))
-    integrator = SpanIntegrator(model, anchors, span, sliding)
-    span.variable = Variable.RADIUS if integrator.moving else Variable.TIME
-    span.scale = integrator.scale
-    met = integrator.met_at_start()
-    if met:
-        return SpanOutcome(met, t0, force, integrator.a0)
-    if integrator.force_is_constant():
-        return SpanOutcome(frozenset(), t1, force, integrator.radius_of(integrator.stop))
-    if integrator.force_is_linear():
-        return integrator.linear_span(force)
-    start, stop = integrator.start, integrator.stop
-    if not (math.isfinite(start) and math.isfinite(stop) and math.isfinite(force)):
-        raise RuntimeError(f"the continuum method lost its state on [{t0!r}, {t1!r}] s ({span.regime.value}: from "
-                           f"{start!r} to {stop!r}, F_x = {force!r}); please report the parameters and path")
-    events = integrator.event_functions()
-    tolerances = model.tolerances
-    # with a front in a piece, at most a share 1/MIN_STEPS_PER_SPAN of the span per step: the front's smooth
-    # continuation ends where its piece meets the branch's fold, and one step across the whole span can reach it
-    fronts = integrator.positive.fronts or integrator.negative.fronts
-    options = dict(method="DOP853", rtol=tolerances.rtol, atol=tolerances.atol, dense_output=True,
-                   events=events or None, max_step=abs(stop - start) / MIN_STEPS_PER_SPAN if fronts else math.inf)
-    solution = solve_between_knots(integrator.rhs, start, stop, force, integrator.knots(), options)
-    if solution.status < 0:
-        raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
-    span.interpolant = solution.sol
-    if solution.status == 1:
-        first, fired = fired_events(events, solution.t_events, start, integrator.offset)
-        return SpanOutcome(fired, float(integrator.time_of(first)), float(solution.sol(first)[0]),
-                           float(integrator.radius_of(first)))
-    return SpanOutcome(frozenset(), t1, float(solution.y[0, -1]), float(integrator.radius_of(stop)))
-
-
-def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, knots: list[float],
-                        options: dict) -> OptimizeResult:
-    """``solve_ivp(rhs, (start, stop), [force], **options)``, restarted at each knot of the right-hand side.
-
-    At a knot a derivative of ``rhs`` jumps (the PCHIP of a tabulated ``g``): a solver stepping across it shrinks
-    its steps hundreds of times and still loses accuracy there (2.6e-6 of ``F_x`` on a 41-point table of the
-    paraboloid against the closed form of an all-stick span, 1e-15 piece by piece). Each piece, smooth, is first
-    tried in one step; the pieces' dense outputs are joined into one ``OdeSolution``. The state at a restart is the
-    end of the piece before, so a terminal event is seen in exactly one piece, where the integration stops.
-
-    Parameters
-    ----------
-    rhs : callable
-        The right-hand side ``rhs(var, y)``.
-    start, stop : float
-        The span of the integration variable.
-    force : float
-        The initial value.
-    knots : list of float
-        The knots strictly between ``start`` and ``stop``, ordered from ``start`` (none: ``solve_ivp`` itself).
-    options : dict
-        ``solve_ivp``'s keywords (``max_step`` among them).
-
-    Returns
-    -------
-    OptimizeResult
-        The result of the last piece integrated, its ``sol`` the joined dense output from ``start``.
-    """
-    if not knots:
-        return solve_ivp(rhs, (start, stop), [force], **options)
-    ts, interpolants = [start], []
-    for low, high in zip([start, *knots], [*knots, stop]):
-        piece = solve_ivp(rhs, (low, high), [force], first_step=min(abs(high - low), options["max_step"]), **options)
-        if piece.status < 0:
-            return piece
-        ts.extend(piece.sol.ts[1:])
-        interpolants.extend(piece.sol.interpolants)
-        force = piece.y[0, -1]
-        if piece.status == 1:
-            break
-    piece.sol = OdeSolution(ts, interpolants)
-    return piece
-
-
-def radius_at(model: ContinuumModel, span: Span, t: float) -> float:
-    """The contact radius of ``span`` at path time ``t``."""
-    if span.regime in (Regime.GROWING, Regime.SHRINKING):
-        return model.branch(span.regime).radius(span.segment.d(t), model.tolerances.radius_rtol)
-    return span.pinned_radius

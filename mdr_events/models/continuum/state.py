@@ -14,7 +14,9 @@ The continuum method is a hybrid automaton: between events the tangential force 
 
 :data:`ZONE_EVENTS` is the table ``(slip before, slip after) → events logged``;
 :func:`zone_events` reads it (and adds a front reaching the centre or the edge) and nothing else
-decides what a change of a slip zone logs.
+decides what a change of a slip zone logs. With both parts of the cap and adhesion on a curved indenter the table is
+read on each cap's zone over the compressed zone and the tensile annulus together
+(:func:`~.regions.combined_summary`), whose slip ``ContactState.regions`` keeps region by region.
 
 ==========  ==========  ==========================================================================
 before      after       logged (with the cap as the event's direction)
@@ -224,6 +226,10 @@ class ContactState:
         Contacts made so far (first contact and re-contacts).
     last_fired : frozenset, default frozenset()
         The span events (trigger, cap) that stopped the last span (reported if the solver gets stuck).
+    regions : dict, optional
+        With both parts of the cap and adhesion on a curved indenter (:mod:`.split_span`): whether springs slide at
+        each cap in each region, keyed ``(Region, Cap)`` (missing: not); ``sliding`` is then whether they slide in
+        either.
     """
 
     t: float
@@ -237,8 +243,10 @@ class ContactState:
     detaching: bool = False
     contacts: int = 0
     last_fired: frozenset = frozenset()
+    regions: dict = field(default_factory=dict)
 
     def forget_slip(self) -> None:
         """No spring slides (a fresh contact, or the contact gone)."""
         self.sliding = _both_caps(False)
         self.zones = _both_caps(NO_ZONE)
+        self.regions = {}
