@@ -167,3 +167,12 @@ def test_no_cross_reference_is_split_across_lines():
              for path in sorted(package.rglob("*.py")) for text in [path.read_text(encoding="utf-8")]
              for match in split.finditer(text)]
     assert not found, found
+
+
+def test_no_control_character_hides_in_a_module():
+    r"""A formula written through a string that is not raw (``"\frac"``, ``"\text"``) leaves a form feed or a tab in
+    the file: the page shows ``rac`` and the math fails; the documentation build (slow) only warns about the markup."""
+    package = Path(mdr_events.__file__).parent
+    found = [str(path.relative_to(package)) for path in sorted(package.rglob("*.py"))
+             if re.search(r"[\x00-\x08\x0b\x0c\x0e-\x1f\t]", path.read_text(encoding="utf-8"))]
+    assert not found, found

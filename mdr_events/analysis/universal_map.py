@@ -8,7 +8,7 @@ parameter set. It holds the critical angle of scenario A over ``(S, Γ0)`` and, 
 
 On a layer of thickness ``h`` bonded to a rigid base one more group enters, the layer's thinness
 
-.. math:: \lambda = rac{\sqrt{R\,d_\mathrm{max}}}{h} \qquad (0: 	ext{the half-space}),
+.. math:: \lambda = \frac{\sqrt{R\,d_\mathrm{max}}}{h} \qquad (0: \text{the half-space}),
 
 the radius unit of the groups, the Hertz radius at ``d_max``, over the thickness. The layer's relations depend on the
 radius only through ``a/h`` (its punch stiffness ``K(a) = 2E* a Φ(a/h)``, the equivalent profile ``g``, Heß's

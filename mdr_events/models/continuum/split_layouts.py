@@ -17,7 +17,7 @@ from .regions import Region, RegionLayout
 from .split_map import SpanMaps, SplitAnchorMap
 from .state import Cap, Regime
 
-__all__ = ["Key", "KEYS", "Ends", "STILL", "Instant", "split_lengths", "region_parts", "lay_out_regions",
+__all__ = ["KEYS", "Ends", "STILL", "Instant", "split_lengths", "region_parts", "lay_out_regions",
            "crossing_formula"]
 
 #: A region and a cap: the key of a layout, of its slip and of its events.

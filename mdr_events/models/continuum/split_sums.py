@@ -67,7 +67,7 @@ def at_cap_intervals(formula: Formula, cap: Cap, level: float, lower: float, upp
 def clipped_pieces(anchors: "SplitAnchorMap", region: Region, cap: Cap, level: float, kappa: float, lower: float,
                    upper: float) -> list[FormulaPiece]:
     """The pieces of ``anchors`` with the springs of ``region`` (on ``[lower, upper]``) at ``cap`` materialised at its
-    level (:meth:`Region.bound`): the play operator's one-sided clip ``Y ← clip(Y, …)`` of that cap.
+    level (:meth:`~.regions.Region.bound`): the play operator's one-sided clip ``Y ← clip(Y, …)`` of that cap.
 
     Parameters
     ----------
