@@ -21,8 +21,9 @@ from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.analytic import critical_angle
+from mdr_events.theory.layer.curves import thickness_axis
 from mdr_events.theory.layer.slip_onset import thin_layer_onset_depth
-from mdr_events.validation import check_real, real_array, shown
+from mdr_events.validation import check_real, shown
 
 __all__ = ["critical_angles_against_thickness", "LAYER_ANGLES_CONTENT", "LAYER_ANGLE_SCENARIOS",
            "STEPS_PER_THICKNESS", "ANGLE_RTOL"]
@@ -44,15 +45,6 @@ ANGLE_RTOL = 1e-7
 register_accuracy(LAYER_ANGLES_CONTENT, {"critical_angle_jkr": RootFound("angle_rtol"),
                                          "critical_angle_hertz": RootFound("angle_rtol"), "thin_limit_A": RoundOff(),
                                          "thickness": RoundOff()})
-
-
-def _thicknesses(thicknesses) -> np.ndarray:
-    """The thicknesses as one axis of numbers > 0 (``inf`` the half-space); else the one-line error."""
-    values = np.atleast_1d(real_array("thicknesses", thicknesses, "numbers > 0 (m), inf the half-space"))
-    if values.ndim != 1 or values.size == 0 or not np.all(values > 0.0):
-        raise ValueError(f"thicknesses={shown(thicknesses)} is not allowed; allowed: numbers > 0 (m), inf the "
-                         "half-space, one non-empty axis")
-    return values.astype(float)
 
 
 def critical_angles_against_thickness(contact: Contact, thicknesses, *, d_max: float | None = None,
@@ -93,7 +85,7 @@ def critical_angles_against_thickness(contact: Contact, thicknesses, *, d_max: f
     if not isinstance(contact, Contact):
         raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a "
                         "mdr_events.Contact, e.g. Contact.paper()")
-    h = _thicknesses(thicknesses)
+    h = thickness_axis(thicknesses)
     depth = PAPER_D_MAX if d_max is None else check_real("d_max", d_max, "a finite number > 0 (m)",
                                                          lambda value: value > 0.0)
     check_limits(limits).check(f"the critical angles at {h.size} thicknesses", steps=h.size * STEPS_PER_THICKNESS)

@@ -137,6 +137,28 @@ def _grid(name: str, values, allowed: str, valid) -> np.ndarray:
     return array
 
 
+def thickness_axis(thicknesses) -> np.ndarray:
+    """Thicknesses of a curve against ``h``: numbers > 0 (m, ``inf`` the half-space) on one non-empty axis, as
+    floats; else the one-line error naming ``thicknesses``.
+
+    Parameters
+    ----------
+    thicknesses : float or array_like
+        The thicknesses in m.
+
+    Returns
+    -------
+    numpy.ndarray
+        One axis of floats.
+
+    Raises
+    ------
+    ValueError
+        Not real numbers > 0, or not one non-empty axis.
+    """
+    return _grid("thicknesses", thicknesses, "numbers > 0 (m), inf the half-space", lambda values: values > 0.0)
+
+
 def _radius_scale(contact: Contact, dgamma: float, depth: float) -> tuple[float, float]:
     """The scan's range in ``a``: from far below the half-space's pull-off radius to where ``d(a) ≥ depth`` (the
     largest ``a/h`` of the tables at most)."""
@@ -368,7 +390,7 @@ def layer_pull_off_curve(contact: Contact, thicknesses, limits: Limits | None = 
         beyond the tables (``a/h > 64``), or the thicknesses beyond ``limits`` (``ResourceLimitError``).
     """
     E_star, nu, _ = _material(contact)
-    h = _grid("thicknesses", thicknesses, "numbers > 0 (m), inf the half-space", lambda values: values > 0.0)
+    h = thickness_axis(thicknesses)
     _checked(contact, PAPER_D_MAX, "layer_pull_off_curve", h.size, PULL_OFF_STEPS, limits)
     found = [pull_off(contact.indenter, E_star, nu, contact.adhesion.dgamma1, Layer(float(value), contact.layer.base))
              for value in h]

@@ -30,11 +30,11 @@ from typing import Callable, NamedTuple
 
 import numpy as np
 
-from mdr_events.contact.adhesion import Adhesion
 from mdr_events.contact.model import Contact
 from mdr_events.parameters import PAPER_D_MAX
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
 from mdr_events.theory.layer.curves import _jump_off, _material, _stable_radius
+from mdr_events.theory.job import rate_independent
 from mdr_events.theory.layer.relations import branch_depth
 from mdr_events.theory.layer.tangential_relations import sliding_cap
 from mdr_events.validation import check_real, shown, validate_alpha
@@ -78,9 +78,7 @@ def _checked(contact: Contact, what: str, d_max) -> tuple[Contact, float]:
     """The contact (a paraboloid or power law under the law (13) on a bonded layer) and ``d_max``; else the
     one-line error."""
     _material(contact)
-    if not isinstance(contact.adhesion, Adhesion):
-        raise TypeError(f"contact.adhesion={contact.adhesion!r} is not allowed in {what} on a layer; allowed: "
-                        "Adhesion(dgamma0, dgamma1), the rate-independent law")
+    rate_independent(contact, f"{what} on a layer")
     if contact.friction.law != "tau0":
         raise ValueError(f"{what} under contact.friction={contact.friction!r} is not allowed on a layer; allowed: "
                          "the law 'tau0' of eq. (13)")
