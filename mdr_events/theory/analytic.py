@@ -468,7 +468,7 @@ def d_crit(
     the start of pull-off; in the model it is pinned first (see
     :mod:`mdr_events` docs on the continuum method).
     """
-    params = None if on_layer(contact) else paper_parameters(contact, "d_crit", d_max)
+    params = None if on_layer(contact) else _onset_parameters(contact, "d_crit", d_max)
     check_choice("scenario", scenario, SCENARIOS)
     if scenario == "A" and branch is not None:
         raise ValueError(f"branch={branch!r} is not allowed with scenario 'A'; allowed: None (branch is for scenario B)")
@@ -481,6 +481,18 @@ def d_crit(
 
         return _as_output(onset_depths(alpha_deg, contact, scenario, adhesion, branch, d_max), alpha_deg)
     return _as_output(_slip_onset(_Tangent.of(alpha_deg), params, scenario, adhesion, branch), alpha_deg)
+
+
+def _onset_parameters(contact: ContactLike, what: str, d_max: float | None) -> "Parameters":
+    """:func:`~mdr_events.theory.job.paper_parameters` of a slip onset on the half-space, its scales checked as the
+    phase diagram's and the runs' are (:func:`~mdr_events.theory.scales.check_representable`): ``E = 1e300`` gave
+    ``d_crit = 0``, ``τ0 = 1e300`` or ``E = 1e-300`` ``inf``, each with NumPy's warning, and the layer's onsets hand
+    theirs to :func:`~mdr_events.theory.layer.slip_onset.check_onset_contact`."""
+    from mdr_events.theory.scales import check_representable  # (scales imports this module)
+
+    params = paper_parameters(contact, what, d_max)
+    check_representable(params)
+    return params
 
 
 def d_crit_curves(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A", *,
@@ -505,7 +517,7 @@ def d_crit_curves(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A"
         :func:`d_crit` of those arguments: ``adhesion`` ``False`` and ``True``, ``branch`` ``None`` in scenario A,
         each of :data:`BRANCHES` in B.
     """
-    params = paper_parameters(contact, "d_crit", d_max)
+    params = _onset_parameters(contact, "d_crit", d_max)
     check_choice("scenario", scenario, SCENARIOS)
     alpha_deg = validate_alpha(alpha)
     tangent = _Tangent.of(alpha_deg)
@@ -628,7 +640,7 @@ def critical_angle(contact: ContactLike, scenario: Literal["A", "B", "B+"] = "A"
     float
         The critical angle in degrees (90 where slip always comes first).
     """
-    p = None if on_layer(contact) else paper_parameters(contact, "critical_angle", d_max)
+    p = None if on_layer(contact) else _onset_parameters(contact, "critical_angle", d_max)
     check_choice("scenario", scenario, CRITICAL_ANGLE_SCENARIOS)
     check_flag("adhesion", adhesion)
     if final_depth is not None and scenario != "B+":

@@ -25,6 +25,7 @@ scenario A's onset tends to ``d = τ0 h tan α / G``, whatever the indenter and 
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import Callable, NamedTuple
 
@@ -32,14 +33,18 @@ import numpy as np
 
 from mdr_events.contact.adhesion import Adhesion
 from mdr_events.contact.model import Contact
-from mdr_events.parameters import PAPER_D_MAX
+from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
-from mdr_events.theory.layer.curves import _jump_off, _material, _stable_radius
+from mdr_events.theory.layer.curves import (_half_space_radii, _jump_off, _material, _stable_radius,
+                                           beyond_tables, scan_ceiling)
 from mdr_events.theory.layer.relations import branch_depth
+from mdr_events.theory.layer.tangential_compliance import check_bonded
 from mdr_events.theory.layer.tangential_relations import sliding_cap
+from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_real, shown, validate_alpha
 
-__all__ = ["onset_depths", "critical_angle_on_layer", "thin_layer_onset_depth", "SCAN_POINTS"]
+__all__ = ["onset_depths", "critical_angle_on_layer", "thin_layer_onset_depth", "check_onset_contact", "SCAN_POINTS",
+           "SCAN_SPAN"]
 
 #: Radii of the logarithmic scan of ``r(a)`` along one motion (the running maximum is inverted on it).
 SCAN_POINTS = 400
@@ -50,10 +55,12 @@ _BISECTIONS = 60
 #: radius at ``d_max``; an angle whose onset lies below it (within about ``1e-10°`` of 90° at the paper's
 #: parameters) counts as sliding there.
 _SMALLEST_FRACTION = 1e-12
-
-
-#: The scan ends this close inside the tables' last radius: ``exp(ln a)`` may round above ``a``.
-_INSIDE_TABLES = 1.0 - 1e-12
+#: The scan of a motion ends at the tables' last radius (:func:`~mdr_events.theory.layer.curves.scan_ceiling`) or at
+#: this many times the radius at ``d_max``, whichever comes first: on a layer so thick that its tables' last radius
+#: squared leaves the double range (``h = 1e200``: ``g(64 h)`` overflowed, and the onset was refused though the layer
+#: is the half-space there), the scan still ends where the relations are finite. An onset beyond it lies beyond any
+#: angle but those within about ``1e-10`` degrees of 90° (the travel per cap grows about as the radius).
+SCAN_SPAN = 1e12
 
 
 class _Motion(NamedTuple):
@@ -74,19 +81,55 @@ class _Motion(NamedTuple):
     start_depth: float
 
 
-def _checked(contact: Contact, what: str, d_max) -> tuple[Contact, float]:
-    """The contact (a paraboloid or power law under the law (13) on a bonded layer) and ``d_max``; else the
-    one-line error."""
-    _material(contact)
+def check_onset_contact(contact: Contact, what: str, d_max: float | None = None) -> tuple[Contact, float]:
+    """What the slip onset on a layer takes, checked before it runs (a few branch evaluations: what the closed forms
+    would refuse, without computing them): a paraboloid or power law, the paper's adhesion law, the law (13), a
+    base that holds the layer tangentially, scales within double precision
+    (:func:`~mdr_events.theory.scales.check_representable`: ``R = 1e300`` was a ``ZeroDivisionError``, ``1e-300`` an
+    ``OverflowError``) and a contact radius at ``d_max`` within the tables.
+
+    Parameters
+    ----------
+    contact : Contact
+        A contact on a layer of finite thickness.
+    what : str
+        The function asked, named in the errors.
+    d_max : float, optional
+        The motion's depth (m; ``None``: the paper's 0.3 mm).
+
+    Returns
+    -------
+    tuple of (Contact, float)
+        The contact and ``d_max``.
+
+    Raises
+    ------
+    TypeError, ValueError
+        In one line, naming what is not allowed.
+    """
+    E_star, nu, layer = _material(contact)
     if not isinstance(contact.adhesion, Adhesion):
         raise TypeError(f"contact.adhesion={contact.adhesion!r} is not allowed in {what} on a layer; allowed: "
                         "Adhesion(dgamma0, dgamma1), the rate-independent law")
     if contact.friction.law != "tau0":
         raise ValueError(f"{what} under contact.friction={contact.friction!r} is not allowed on a layer; allowed: "
                          "the law 'tau0' of eq. (13)")
+    check_bonded(layer)
     depth = check_real("d_max", PAPER_D_MAX if d_max is None else d_max, "a finite number > 0 (m)",
                        lambda value: value > 0.0)
+    check_representable(contact.parameters(depth, PAPER_V), contact.profile,
+                        dataclasses.replace(contact.friction, tau0=None))
+    top = _scan_top(contact, depth)
+    if float(branch_depth(top, contact.indenter, E_star, nu, contact.adhesion.dgamma0, layer)) < depth:
+        raise beyond_tables(depth, layer, top)
     return contact, depth
+
+
+def _scan_top(contact: Contact, d_max: float) -> float:
+    """The last radius of a motion's scan: the tables' last, or :data:`SCAN_SPAN` times the half-space's radius
+    scale at ``d_max`` (its radius there, or its pull-off radius of the larger work), whichever is smaller (m)."""
+    pulled, hertz = _half_space_radii(contact, max(contact.adhesion.dgamma0, contact.adhesion.dgamma1), d_max)
+    return min(scan_ceiling(contact.layer), SCAN_SPAN * max(pulled, hertz))
 
 
 def _motion(contact: Contact, scenario: str, branch: str, adhesion: bool, d_max: float) -> _Motion:
@@ -101,10 +144,15 @@ def _motion(contact: Contact, scenario: str, branch: str, adhesion: bool, d_max:
 
     def ratio_of(logs):
         a = np.exp(logs)
-        travel = depth_of(a) if scenario == "A" else (d_max - depth_of(a)) if pulling else (depth_of(a) - d_max)
-        return travel / sliding_cap(a, tau0, G_star, nu, layer)
+        # (scenario A's travel is the depth from the first touch, d >= 0: its round-off below 0 at the start made a
+        # d_max of 1e-100 m an angle of -4.5e-16 degrees)
+        travel = np.maximum(depth_of(a), 0.0) if scenario == "A" else (d_max - depth_of(a)) if pulling else \
+            (depth_of(a) - d_max)
+        cap = sliding_cap(a, tau0, G_star, nu, layer)
+        # (without τ0 the cap is 0 and any travel slides: r = inf, not NumPy's warnings at every node and bisection)
+        return np.divide(travel, cap, out=np.full(np.shape(travel), math.inf), where=cap > 0.0)
 
-    ceiling = LAMBDA_MAX * layer.thickness * _INSIDE_TABLES
+    ceiling = _scan_top(contact, d_max)
     at_d_max = float(_stable_radius(contact, dgamma, np.array([d_max]))[0])
     if scenario == "A":
         start = float(_stable_radius(contact, dgamma, np.array([0.0]))[0]) if dgamma > 0.0 else 0.0
@@ -129,7 +177,8 @@ def _onset_depths(motion: _Motion, tangent: np.ndarray, what: str, past_tables: 
     if np.any(beyond) and not past_tables:
         angle = float(np.degrees(np.arctan(tangent[missed & np.isfinite(tangent)].min())))
         raise ValueError(f"alpha={angle!r} is not allowed in {what} on this layer: its onset lies beyond a/h = "
-                         f"{LAMBDA_MAX:g} (the tables' reach); allowed: angles below "
+                         f"{LAMBDA_MAX:g} (the tables' reach) or {SCAN_SPAN:g} times the radius at d_max (the scan's); "
+                         "allowed: angles below "
                          f"{float(np.degrees(np.arctan(reached[-1]))):.6g} degrees")
     index = np.clip(first, 1, reached.size - 1)
     lower, upper = motion.logs[index - 1], motion.logs[index]
@@ -177,7 +226,7 @@ def onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesio
         A frictionless base (no tangential stiffness), another law or indenter, an angle whose onset lies beyond
         the tables (``a/h > 64``) without ``past_tables``.
     """
-    contact, depth = _checked(contact, "d_crit", d_max)
+    contact, depth = check_onset_contact(contact, "d_crit", d_max)
     vertical = alpha_deg >= 90.0
     tangent = np.where(vertical, np.inf, np.tan(np.radians(np.where(vertical, 0.0, alpha_deg))))
     pulling = scenario == "B" and branch == "pull-off"
@@ -218,7 +267,7 @@ def critical_angle_on_layer(contact: Contact, scenario: str, adhesion: bool, fin
     ValueError
         As :func:`onset_depths`; ``final_depth`` not above ``d_max``.
     """
-    contact, depth = _checked(contact, "critical_angle", d_max)
+    contact, depth = check_onset_contact(contact, "critical_angle", d_max)
     if scenario == "B":
         if not adhesion or contact.adhesion.dgamma1 == 0.0:
             return 90.0
@@ -262,7 +311,7 @@ def thin_layer_onset_depth(alpha, contact: Contact):
     if not isinstance(contact, Contact) or contact.layer.is_half_space:
         raise ValueError(f"contact={shown(contact)} is not allowed; allowed: a Contact on a layer of finite "
                          "thickness (Contact.layer)")
-    _checked(contact, "thin_layer_onset_depth", None)
+    check_onset_contact(contact, "thin_layer_onset_depth", None)
     alpha_deg = validate_alpha(alpha)
     elastomer = contact.elastomer
     shear_modulus = elastomer.E / (2.0 * (1.0 + elastomer.nu))
