@@ -86,6 +86,18 @@ def test_a_run_whose_contact_lies_within_the_tables_runs(contact, motion):
     assert np.all(np.isfinite(run["normal_force"].values[np.isfinite(radius)]))
 
 
+def test_the_thickest_layers_springs_are_the_half_spaces():
+    """The springs a layer knows are no bound where 64 h overflows (a guard of N3's bound, which read int(inf) there:
+    h = 1.8e308 is a layer, whose run is the half-space's to the rounding of the weighted sums, 3.5e-16 of the
+    forces measured, taken as 1e-15)."""
+    thick = me.simulate(PAPER.replace(h=1.7976931348623157e308), A20, "discrete", n_steps=200)
+    half = me.simulate(PAPER, A20, "discrete", n_steps=200)
+    np.testing.assert_array_equal(thick["contact_radius"].values, half["contact_radius"].values)
+    for name in ("normal_force", "tangential_force"):
+        scale = np.nanmax(np.abs(half[name].values))
+        np.testing.assert_allclose(thick[name].values, half[name].values, rtol=0.0, atol=1e-15 * scale)
+
+
 def test_a_contact_within_a_spring_of_the_tables_end_is_refused_naming_dx():
     contact = PAPER.replace(h=1e-4)
     target = 0.999 * LAMBDA_MAX * 1e-4  # (a radius 0.1 % inside the tables' last)

@@ -508,11 +508,12 @@ class LayerSprings:
         Returns
         -------
         int
-            ``floor(64 h / Δx)``.
+            ``floor(64 h / Δx)`` (``sys.maxsize`` if beyond: a layer so thick that ``64 h`` overflows is no bound).
         """
         from mdr_events.theory.layer.compliance import LAMBDA_MAX
 
-        return int(LAMBDA_MAX * self.layer.thickness // dx)
+        most = LAMBDA_MAX * self.layer.thickness // dx
+        return int(most) if most < sys.maxsize else sys.maxsize
 
     def to_attrs(self) -> dict[str, Any]:
         """The layer's attributes (``param_layer_thickness``, ``param_layer_base``; :meth:`Layer.to_attrs
