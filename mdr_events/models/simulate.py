@@ -108,8 +108,13 @@ def check_layer_taken(contact: Contact, motion: Motion, method: Method, where: s
     ValueError, TypeError
         A layer of finite thickness with a method, indenter, adhesion law or motion that does not take it; scales
         beyond double precision (:func:`~mdr_events.theory.scales.check_representable`, checked first: the springs'
-        check builds the motion's paths from them).
+        check builds the motion's paths from them); a contact, motion or method of another kind (an
+        ``AttributeError`` before).
     """
+    if not isinstance(contact, Contact):
+        raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed in check_layer_taken; "
+                        "allowed: a mdr_events.Contact")
+    motion, method = as_motion(motion), as_method(method)
     if contact.layer.is_half_space:
         return contact
     if not method.takes_layers:
