@@ -183,6 +183,13 @@ def test_the_layers_slip_onset_without_tau0_slides_at_once_without_warnings():
             np.testing.assert_array_equal(me.d_crit([0.0, 20.0, 45.0], free), [0.0, 0.0, 0.0])
 
 
+def test_the_critical_angles_against_thickness_without_tau0_are_90_degrees():
+    """The thin-layer limit atan(G d_max/(τ0 h)) without τ0 is 90° (a ZeroDivisionError before)."""
+    angles = me.critical_angles_against_thickness(PAPER.replace(tau0=0.0), [5e-3, math.inf])
+    assert np.all(angles["critical_angle_jkr"].values == 90.0)
+    np.testing.assert_array_equal(angles["thin_limit_A"].values, [90.0, 0.0])  # (0 on the half-space: none)
+
+
 def test_a_critical_angle_on_a_layer_is_never_negative():
     angle = me.critical_angle(LAYERED, d_max=1e-100)
     assert 0.0 <= angle < 1e-12, angle  # (the half-space's is 4.9e-95 degrees)
@@ -277,3 +284,25 @@ def test_the_continuum_passes_two_anchor_pieces_at_once(nu, works):
     algebraic = continuum.algebraic_tangential_force(solution, times)
     np.testing.assert_allclose(integrated, algebraic, rtol=0.0,
                                atol=FORCE_SHARE * max(float(np.max(np.abs(algebraic))), 1e-300))
+
+
+# --- N12: check_layer_taken, which the front ends call before they write anything, read its arguments' attributes
+# unchecked: a contact of None or a Parameters, a motion of None, a method of None or by name were an AttributeError.
+# It names them, and takes a motion and a method as simulate does --------------------------------------------------
+
+@pytest.mark.parametrize("arguments, named", [
+    ((None, A20, "discrete"), "contact=None (NoneType) is not allowed in check_layer_taken"),
+    ((me.Parameters.paper(), A20, "discrete"), "(Parameters) is not allowed in check_layer_taken"),
+    ((LAYERED, None, "discrete"), "scenario=None (NoneType) is not allowed"),
+    ((LAYERED, A20, None), "method=None is not allowed"),
+])
+def test_check_layer_taken_names_what_is_not_a_contact_motion_or_method(arguments, named):
+    from mdr_events.models.simulate import check_layer_taken
+
+    _one_line_naming(lambda: check_layer_taken(*arguments), named)
+
+
+def test_check_layer_taken_takes_a_method_by_name():
+    from mdr_events.models.simulate import check_layer_taken
+
+    assert check_layer_taken(LAYERED, A20, "discrete") is LAYERED

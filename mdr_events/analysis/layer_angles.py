@@ -104,8 +104,9 @@ def critical_angles_against_thickness(contact: Contact, thicknesses, *, d_max: f
         for row, scenario in enumerate(LAYER_ANGLE_SCENARIOS):
             for kind, adhesion in (("jkr", True), ("hertz", False)):
                 angles[kind][row, column] = critical_angle(layered, scenario, adhesion, d_max=depth)
-        if math.isfinite(thickness):
-            thin[column] = math.degrees(math.atan(depth / thin_layer_onset_depth(45.0, layered)))
+        onset = thin_layer_onset_depth(45.0, layered) if math.isfinite(thickness) else math.inf
+        if math.isfinite(onset):  # (without τ0 the onset is at once: 90°, not a ZeroDivisionError)
+            thin[column] = math.degrees(math.atan(depth / onset)) if onset > 0.0 else 90.0
     words = {"jkr": "adhesive (Heß's rule, dgamma0 in, dgamma1 out)", "hertz": "non-adhesive"}
     variables = {f"critical_angle_{kind}": (("scenario", "thickness"), values,
                                             {"units": "degree", "long_name": f"critical angle, {words[kind]}"})
