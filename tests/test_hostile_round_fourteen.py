@@ -306,3 +306,23 @@ def test_check_layer_taken_takes_a_method_by_name():
     from mdr_events.models.simulate import check_layer_taken
 
     assert check_layer_taken(LAYERED, A20, "discrete") is LAYERED
+
+
+# --- N13: a sweep of the model on a layer without the slip onset's closed forms (Coulomb's law, a frictionless base)
+# failed every run: its default quantities hold the closed-form angles, which the layer's theory refuses there, and
+# the run's own quantities were lost with them ("failed" everywhere, F_N nan) where the half-space gives the angles as
+# nan. The angles are nan where the layer has no closed forms (has_closed_forms); a sweep of the angles alone is refused
+
+@pytest.mark.parametrize("contact, alpha", [
+    (dataclasses.replace(LAYERED, friction=me.FrictionLaw("coulomb", mu=0.3)), 20.0),
+    (LAYERED.replace(**{"layer.base": "frictionless"}), 90.0),
+], ids=["coulomb", "frictionless-base"])
+def test_a_sweep_of_the_model_on_a_layer_without_closed_forms_runs(contact, alpha):
+    swept = me.sweep({"E": [3e5, 4e5]}, contact, "A", alpha, method=me.Discrete(dx=5e-5, n_steps=500),
+                     engine=me.Engine(scheduler="serial"))
+    assert not swept["failed"].values.any(), swept["error"].values
+    assert np.all(np.isfinite(swept["normal_force_min"].values))
+    assert np.all(np.isnan(swept["critical_angle_A"].values)) and np.all(np.isnan(swept["critical_angle_B"].values))
+    with pytest.raises(ValueError, match="is not allowed"):  # (the angles alone: nothing to compute, refused first)
+        me.sweep({"E": [3e5]}, contact, "A", alpha, engine=me.Engine(scheduler="serial"),
+                 quantities=("critical_angle_A",))

@@ -225,11 +225,17 @@ def closed_form_angle(model: ModelJob, scenario: str) -> float:
     Raises
     ------
     ValueError, TypeError
-        On a layer, what the layer's closed forms refuse (a frictionless base, another law or indenter, a radius
-        beyond the tables).
+        On a layer, what the layer's closed forms refuse (a radius beyond the tables). Where they have none (a
+        frictionless base, another law: :func:`~mdr_events.theory.layer.slip_onset.has_closed_forms`) the angle is
+        ``nan``, as the half-space's where a friction law has none (a sweep of the model's quantities on such a layer
+        had failed every run); a sweep of the angles alone is refused before it runs.
     """
     if model.contact.layer.is_half_space:
         return indenters.critical_angle(model.params, scenario, model.profile, model.friction)
+    from mdr_events.theory.layer.slip_onset import has_closed_forms  # (the layer's theory, when asked)
+
+    if not has_closed_forms(model.contact):
+        return math.nan
     return critical_angle(model.contact, scenario, d_max=model.motion.d_max)
 
 

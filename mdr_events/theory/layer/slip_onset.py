@@ -32,6 +32,8 @@ from typing import Callable, NamedTuple
 import numpy as np
 
 from mdr_events.contact.adhesion import Adhesion
+from mdr_events.contact.indenters import Paraboloid, PowerLaw
+from mdr_events.contact.layer import LayerBase
 from mdr_events.contact.model import Contact
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
@@ -43,8 +45,8 @@ from mdr_events.theory.layer.tangential_relations import sliding_cap
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_real, shown, validate_alpha
 
-__all__ = ["onset_depths", "critical_angle_on_layer", "thin_layer_onset_depth", "check_onset_contact", "SCAN_POINTS",
-           "SCAN_SPAN"]
+__all__ = ["onset_depths", "critical_angle_on_layer", "thin_layer_onset_depth", "check_onset_contact",
+           "has_closed_forms", "SCAN_POINTS", "SCAN_SPAN"]
 
 #: Radii of the logarithmic scan of ``r(a)`` along one motion (the running maximum is inverted on it).
 SCAN_POINTS = 400
@@ -123,6 +125,25 @@ def check_onset_contact(contact: Contact, what: str, d_max: float | None = None)
     if float(branch_depth(top, contact.indenter, E_star, nu, contact.adhesion.dgamma0, layer)) < depth:
         raise beyond_tables(depth, layer, top)
     return contact, depth
+
+
+def has_closed_forms(contact: Contact) -> bool:
+    """Whether the slip onset on the contact's layer has closed forms (:func:`check_onset_contact` would take its kind:
+    a paraboloid or power law, the paper's adhesion law, the law (13), a bonded base); where it has none a run's
+    closed-form angles are ``nan``, as the half-space's where a friction law has none.
+
+    Parameters
+    ----------
+    contact : Contact
+        A contact on a layer of finite thickness.
+
+    Returns
+    -------
+    bool
+        ``True`` where :func:`critical_angle_on_layer` computes them.
+    """
+    return (isinstance(contact.indenter, (Paraboloid, PowerLaw)) and type(contact.adhesion) is Adhesion
+            and contact.friction.law == "tau0" and contact.layer.base is LayerBase.BONDED)
 
 
 def _scan_top(contact: Contact, d_max: float) -> float:
