@@ -196,8 +196,9 @@ def test_a_critical_angle_on_a_layer_is_never_negative():
 
 
 # --- N8: a study's [layer] was dropped by its [phase_diagram]: the job handed the contact's flat record (no layer) to
-# the phase diagram, which wrote the half-space's (22.87° for 25.18° on the 5 mm layer) with exit 0, and a frictionless
-# base, which the layer's slip onset refuses, passed. The job keeps the contact's layer; the study checks it when read
+# the phase diagram, which wrote the half-space's (22.87° for 25.18° on the 5 mm layer) with exit 0, and a
+# frictionless base, which the layer's slip onset refuses, passed. The job keeps the contact's layer; the study
+# checks it when read
 
 def _study(folder, tables: str):
     path = folder / "study.toml"
@@ -326,3 +327,31 @@ def test_a_sweep_of_the_model_on_a_layer_without_closed_forms_runs(contact, alph
     with pytest.raises(ValueError, match="is not allowed"):  # (the angles alone: nothing to compute, refused first)
         me.sweep({"E": [3e5]}, contact, "A", alpha, engine=me.Engine(scheduler="serial"),
                  quantities=("critical_angle_A",))
+
+
+# --- N14: the layer's onsets were counted as the half-space's closed forms: a phase diagram on a layer counted its
+# angles as samples alone (160 bytes each), but each is a bisection on the layer's tables per curve (65 µs in A, 130
+# in B, 400 times the half-space's; 181 and 198 bytes measured), so 1e7 angles passed the default limits and ran for
+# 20 minutes; d_crit on a layer took no limits at all. Both count ONSET_STEPS_PER_ANGLE and ONSET_BYTES_PER_ANGLE ---
+
+@pytest.mark.parametrize("call", [
+    lambda limits: me.phase_diagram(LAYERED, alpha=np.linspace(0.0, 89.0, 1000), limits=limits),
+    lambda limits: me.d_crit(np.linspace(0.0, 89.0, 1000), LAYERED, limits=limits),
+], ids=["phase_diagram", "d_crit"])
+def test_the_onsets_on_a_layer_count_their_work(call):
+    with pytest.raises(me.ResourceLimitError, match="discrete time steps"):
+        call(me.Limits(steps=1e4))
+    call(me.Limits(steps=1e6))  # (within: it runs)
+
+
+def test_a_phase_diagram_on_a_layer_counts_the_memory_it_takes():
+    angles = np.linspace(0.0, 89.0, 10_000)
+    me.phase_diagram(LAYERED, alpha=angles[:10])  # (the tables read before: what is measured is the diagram's)
+    tracemalloc.start()
+    try:
+        me.phase_diagram(LAYERED, alpha=angles)
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    with pytest.raises(me.ResourceLimitError, match="memory"):
+        me.phase_diagram(LAYERED, alpha=angles, limits=me.Limits(memory=peak, steps=math.inf))

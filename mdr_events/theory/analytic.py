@@ -24,6 +24,7 @@ from typing import Literal, NamedTuple
 
 import numpy as np
 
+from mdr_events.limits import Limits
 from mdr_events.theory import symbolic
 from mdr_events.theory.blocks import blockwise
 from mdr_events.theory.roots import positive_polynomial_root
@@ -415,6 +416,7 @@ def d_crit(
     branch: Literal["pull-off", "indentation"] | None = None,
     *,
     d_max: float | None = None,
+    limits: Limits | None = None,
 ):
     """Indentation depth at which the springs start to slide, eqs. (17)–(21).
 
@@ -443,6 +445,10 @@ def d_crit(
     d_max : float, optional
         With a Contact: the depth of the motion (m; default the paper's 0.3 mm), which scenario B's (20), (21)
         start from.
+    limits : Limits, optional
+        On a layer: what the onsets may take, checked before they run (each angle a bisection on the layer's tables,
+        :data:`~mdr_events.theory.layer.slip_onset.ONSET_STEPS_PER_ANGLE` steps; ``None``: the defaults). The
+        half-space's closed forms take no steps.
 
     Returns
     -------
@@ -479,7 +485,8 @@ def d_crit(
     if params is None:
         from mdr_events.theory.layer.slip_onset import onset_depths
 
-        return _as_output(onset_depths(alpha_deg, contact, scenario, adhesion, branch, d_max), alpha_deg)
+        return _as_output(onset_depths(alpha_deg, contact, scenario, adhesion, branch, d_max, limits=limits),
+                          alpha_deg)
     return _as_output(_slip_onset(_Tangent.of(alpha_deg), params, scenario, adhesion, branch), alpha_deg)
 
 

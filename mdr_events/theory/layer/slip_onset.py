@@ -35,6 +35,7 @@ from mdr_events.contact.adhesion import Adhesion
 from mdr_events.contact.indenters import Paraboloid, PowerLaw
 from mdr_events.contact.layer import LayerBase
 from mdr_events.contact.model import Contact
+from mdr_events.limits import Limits, check_limits
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
 from mdr_events.theory.layer.curves import (_half_space_radii, _jump_off, _material, _stable_radius,
@@ -46,7 +47,7 @@ from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_real, shown, validate_alpha
 
 __all__ = ["onset_depths", "critical_angle_on_layer", "thin_layer_onset_depth", "check_onset_contact",
-           "has_closed_forms", "SCAN_POINTS", "SCAN_SPAN"]
+           "has_closed_forms", "SCAN_POINTS", "SCAN_SPAN", "ONSET_STEPS_PER_ANGLE", "ONSET_BYTES_PER_ANGLE"]
 
 #: Radii of the logarithmic scan of ``r(a)`` along one motion (the running maximum is inverted on it).
 SCAN_POINTS = 400
@@ -57,6 +58,15 @@ _BISECTIONS = 60
 #: radius at ``d_max``; an angle whose onset lies below it (within about ``1e-10°`` of 90° at the paper's
 #: parameters) counts as sliding there.
 _SMALLEST_FRACTION = 1e-12
+#: What one angle of an onset curve on a layer counts against :attr:`~mdr_events.Limits.steps`: a bisection of
+#: :data:`_BISECTIONS` steps on the layer's tables, about 32 µs (a phase diagram's two curves in A, four in B: 65 and
+#: 130 µs per angle measured), where the discrete model's step takes about 1.5 µs; counted as the half-space's closed
+#: forms (0.2 µs an angle, no steps), 1e7 angles of a phase diagram passed the default limits and ran for 20 minutes.
+ONSET_STEPS_PER_ANGLE = 25.0
+#: The memory of one angle of the onsets on a layer at its peak (the bisections' temporaries: 181 bytes measured with
+#: tracemalloc for a phase diagram in A, 198 in B, where the half-space's 160 were counted), rounded up.
+ONSET_BYTES_PER_ANGLE = 256.0
+
 #: The scan of a motion ends at the tables' last radius (:func:`~mdr_events.theory.layer.curves.scan_ceiling`) or at
 #: this many times the radius at ``d_max``, whichever comes first: on a layer so thick that its tables' last radius
 #: squared leaves the double range (``h = 1e200``: ``g(64 h)`` overflowed, and the onset was refused though the layer
@@ -213,7 +223,7 @@ def _onset_depths(motion: _Motion, tangent: np.ndarray, what: str, past_tables: 
 
 
 def onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesion: bool, branch: str,
-                 d_max: float | None, *, past_tables: bool = False) -> np.ndarray:
+                 d_max: float | None, *, past_tables: bool = False, limits: Limits | None = None) -> np.ndarray:
     r"""The depths at which the springs start to slide on the contact's layer: eqs. (17)–(21) with ``K_t`` and the
     layer's branches (module docstring); :func:`mdr_events.d_crit` of a contact on a layer, its arguments checked.
 
@@ -234,6 +244,9 @@ def onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesio
     past_tables : bool, default False
         ``True``: ``nan`` where the onset lies beyond the tables (``a/h > 64``), as a phase diagram of a tabulated
         profile marks its end; ``False``: refused.
+    limits : Limits or None, default None
+        What the curve may take (:data:`ONSET_STEPS_PER_ANGLE` steps and :data:`ONSET_BYTES_PER_ANGLE` bytes per angle;
+        ``None``: the defaults), checked before it runs.
 
     Returns
     -------
@@ -245,9 +258,12 @@ def onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesio
     ------
     ValueError
         A frictionless base (no tangential stiffness), another law or indenter, an angle whose onset lies beyond
-        the tables (``a/h > 64``) without ``past_tables``.
+        the tables (``a/h > 64``) without ``past_tables``, more angles than ``limits`` allows (``ResourceLimitError``).
     """
     contact, depth = check_onset_contact(contact, "d_crit", d_max)
+    check_limits(limits).check(f"the slip onset at {alpha_deg.size} angles on {contact.layer.describe()}",
+                               steps=ONSET_STEPS_PER_ANGLE * alpha_deg.size,
+                               memory=ONSET_BYTES_PER_ANGLE * alpha_deg.size)
     vertical = alpha_deg >= 90.0
     tangent = np.where(vertical, np.inf, np.tan(np.radians(np.where(vertical, 0.0, alpha_deg))))
     pulling = scenario == "B" and branch == "pull-off"
