@@ -21,7 +21,7 @@ from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.analytic import critical_angle
-from mdr_events.theory.layer.slip_onset import thin_layer_onset_depth
+from mdr_events.theory.layer.slip_onset import CRITICAL_ANGLE_STEPS, thin_layer_onset_depth
 from mdr_events.validation import check_real, real_array, shown
 
 __all__ = ["critical_angles_against_thickness", "LAYER_ANGLES_CONTENT", "LAYER_ANGLE_SCENARIOS",
@@ -31,9 +31,10 @@ __all__ = ["critical_angles_against_thickness", "LAYER_ANGLES_CONTENT", "LAYER_A
 LAYER_ANGLES_CONTENT = "critical angles against the layer thickness"
 #: The scenarios of the ``scenario`` dimension (:data:`mdr_events.theory.analytic.CRITICAL_ANGLE_SCENARIOS`).
 LAYER_ANGLE_SCENARIOS = ("A", "B", "B+")
-#: What one thickness counts against :attr:`~mdr_events.Limits.steps`: six critical angles, each a scan of 400
-#: radii of the layer's tables and a bisection (about 0.05 s), checked before the first.
-STEPS_PER_THICKNESS = 1e4
+#: What one thickness counts against :attr:`~mdr_events.Limits.steps`: six critical angles (each
+#: :data:`~mdr_events.theory.layer.slip_onset.CRITICAL_ANGLE_STEPS`), checked before the first. (1e4 for all six, a
+#: sixth of their 84 ms at the discrete step's 1.5 µs, let 2000 thicknesses pass the default limits: three minutes.)
+STEPS_PER_THICKNESS = 6 * CRITICAL_ANGLE_STEPS
 register_schema(LAYER_ANGLES_CONTENT, {"critical_angle_jkr": ("scenario", "thickness"),
                                        "critical_angle_hertz": ("scenario", "thickness"),
                                        "thin_limit_A": ("thickness",)})

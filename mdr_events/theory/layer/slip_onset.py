@@ -47,7 +47,8 @@ from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_real, shown, validate_alpha
 
 __all__ = ["onset_depths", "critical_angle_on_layer", "thin_layer_onset_depth", "check_onset_contact",
-           "has_closed_forms", "SCAN_POINTS", "SCAN_SPAN", "ONSET_STEPS_PER_ANGLE", "ONSET_BYTES_PER_ANGLE"]
+           "has_closed_forms", "SCAN_POINTS", "SCAN_SPAN", "ONSET_STEPS_PER_ANGLE", "ONSET_BYTES_PER_ANGLE",
+           "CRITICAL_ANGLE_STEPS"]
 
 #: Radii of the logarithmic scan of ``r(a)`` along one motion (the running maximum is inverted on it).
 SCAN_POINTS = 400
@@ -63,6 +64,10 @@ _SMALLEST_FRACTION = 1e-12
 #: 130 µs per angle measured), where the discrete model's step takes about 1.5 µs; counted as the half-space's closed
 #: forms (0.2 µs an angle, no steps), 1e7 angles of a phase diagram passed the default limits and ran for 20 minutes.
 ONSET_STEPS_PER_ANGLE = 25.0
+#: What one critical angle on a layer counts against :attr:`~mdr_events.Limits.steps`: a scan of :data:`SCAN_POINTS`
+#: radii on the layer's tables and the radius at the motion's end, about 14 ms (84 ms measured for the six of one
+#: thickness of :func:`~mdr_events.critical_angles_against_thickness`), at the discrete step's 1.5 µs.
+CRITICAL_ANGLE_STEPS = 1e4
 #: The memory of one angle of the onsets on a layer at its peak (the bisections' temporaries: 181 bytes measured with
 #: tracemalloc for a phase diagram in A, 198 in B, where the half-space's 160 were counted), rounded up.
 ONSET_BYTES_PER_ANGLE = 256.0
