@@ -342,6 +342,8 @@ def test_the_onsets_on_a_layer_count_their_work(call):
     with pytest.raises(me.ResourceLimitError, match="discrete time steps"):
         call(me.Limits(steps=1e4))
     call(me.Limits(steps=1e6))  # (within: it runs)
+    _one_line_naming(lambda: call("x"), "limits='x' (str) is not allowed")
+    _one_line_naming(lambda: me.d_crit([20.0], PAPER, limits=5), "limits=5 (int) is not allowed")  # (the half-space)
 
 
 def test_a_phase_diagram_on_a_layer_counts_the_memory_it_takes():

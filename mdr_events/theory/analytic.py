@@ -24,7 +24,7 @@ from typing import Literal, NamedTuple
 
 import numpy as np
 
-from mdr_events.limits import Limits
+from mdr_events.limits import Limits, check_limits
 from mdr_events.theory import symbolic
 from mdr_events.theory.blocks import blockwise
 from mdr_events.theory.roots import positive_polynomial_root
@@ -487,6 +487,7 @@ def d_crit(
 
         return _as_output(onset_depths(alpha_deg, contact, scenario, adhesion, branch, d_max, limits=limits),
                           alpha_deg)
+    check_limits(limits)  # (named if it is not one, though the closed forms take no steps)
     return _as_output(_slip_onset(_Tangent.of(alpha_deg), params, scenario, adhesion, branch), alpha_deg)
 
 
