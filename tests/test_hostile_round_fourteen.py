@@ -366,3 +366,17 @@ def test_the_critical_angles_against_thickness_count_their_work():
         me.critical_angles_against_thickness(PAPER, [5e-3], limits=me.Limits(steps=5e4))
     with pytest.raises(me.ResourceLimitError):
         me.critical_angles_against_thickness(PAPER, np.geomspace(3e-4, 5e-2, 400))
+
+
+# --- N15: the thin-layer limit of the onset, d = τ0 h tan α / G, is a bonded layer's (it shears like a Winkler
+# foundation), but it gave that number on a frictionless base too, which holds the layer by no tangential stiffness.
+# It takes the slip onset's kinds (a bonded base) and no depth: a layer thinner than any contact ------------------
+
+def test_the_thin_layer_limit_is_a_bonded_layers():
+    from mdr_events.theory.layer import thin_layer_onset_depth
+
+    thin = PAPER.replace(h=1e-7)  # (far thinner than the contact at d_max: a/h about 4e4, beyond the tables)
+    G = PAPER.elastomer.E / (2.0 * (1.0 + PAPER.elastomer.nu))
+    assert thin_layer_onset_depth(45.0, thin) == pytest.approx(PAPER.friction.tau0 * 1e-7 / G, rel=1e-15)
+    _one_line_naming(lambda: thin_layer_onset_depth(45.0, thin.replace(**{"layer.base": "frictionless"})),
+                     "Layer.base='frictionless' is not allowed for tangential contact")

@@ -33,7 +33,7 @@ import numpy as np
 
 from mdr_events.contact.adhesion import Adhesion
 from mdr_events.contact.indenters import Paraboloid, PowerLaw
-from mdr_events.contact.layer import LayerBase
+from mdr_events.contact.layer import Layer, LayerBase
 from mdr_events.contact.model import Contact
 from mdr_events.limits import Limits, check_limits
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
@@ -124,14 +124,7 @@ def check_onset_contact(contact: Contact, what: str, d_max: float | None = None)
     TypeError, ValueError
         In one line, naming what is not allowed.
     """
-    E_star, nu, layer = _material(contact)
-    if not isinstance(contact.adhesion, Adhesion):
-        raise TypeError(f"contact.adhesion={contact.adhesion!r} is not allowed in {what} on a layer; allowed: "
-                        "Adhesion(dgamma0, dgamma1), the rate-independent law")
-    if contact.friction.law != "tau0":
-        raise ValueError(f"{what} under contact.friction={contact.friction!r} is not allowed on a layer; allowed: "
-                         "the law 'tau0' of eq. (13)")
-    check_bonded(layer)
+    E_star, nu, layer = _kind_checked(contact, what)
     depth = check_real("d_max", PAPER_D_MAX if d_max is None else d_max, "a finite number > 0 (m)",
                        lambda value: value > 0.0)
     check_representable(contact.parameters(depth, PAPER_V), contact.profile,
@@ -140,6 +133,19 @@ def check_onset_contact(contact: Contact, what: str, d_max: float | None = None)
     if float(branch_depth(top, contact.indenter, E_star, nu, contact.adhesion.dgamma0, layer)) < depth:
         raise beyond_tables(depth, layer, top)
     return contact, depth
+
+
+def _kind_checked(contact: Contact, what: str) -> tuple[float, float, Layer]:
+    """``(E*, ν, layer)`` of a contact whose kind the slip onset on a layer takes (:func:`has_closed_forms`); else the
+    one-line error naming what it is not."""
+    E_star, nu, layer = _material(contact)
+    if not isinstance(contact.adhesion, Adhesion):
+        raise TypeError(f"contact.adhesion={contact.adhesion!r} is not allowed in {what} on a layer; allowed: "
+                        "Adhesion(dgamma0, dgamma1), the rate-independent law")
+    if contact.friction.law != "tau0":
+        raise ValueError(f"{what} under contact.friction={contact.friction!r} is not allowed on a layer; allowed: "
+                         "the law 'tau0' of eq. (13)")
+    return E_star, nu, check_bonded(layer)
 
 
 def has_closed_forms(contact: Contact) -> bool:
@@ -353,7 +359,7 @@ def thin_layer_onset_depth(alpha, contact: Contact):
     if not isinstance(contact, Contact) or contact.layer.is_half_space:
         raise ValueError(f"contact={shown(contact)} is not allowed; allowed: a Contact on a layer of finite "
                          "thickness (Contact.layer)")
-    check_onset_contact(contact, "thin_layer_onset_depth", None)
+    _kind_checked(contact, "thin_layer_onset_depth")  # (no depth: the limit is of a layer thinner than any contact)
     alpha_deg = validate_alpha(alpha)
     elastomer = contact.elastomer
     shear_modulus = elastomer.E / (2.0 * (1.0 + elastomer.nu))
