@@ -73,7 +73,7 @@ CRITICAL_ANGLE_STEPS = 1e4
 #: tracemalloc for a phase diagram in A, 198 in B, where the half-space's 160 were counted), rounded up.
 ONSET_BYTES_PER_ANGLE = 256.0
 
-#: The scan of a motion ends at the tables' last radius (:func:`~mdr_events.theory.layer.curves.scan_ceiling`) or at
+#: The scan of a motion ends at the tables' last radius (``curves.scan_ceiling``) or at
 #: this many times the radius at ``d_max``, whichever comes first: on a layer so thick that its tables' last radius
 #: squared leaves the double range (``h = 1e200``: ``g(64 h)`` overflowed, and the onset was refused though the layer
 #: is the half-space there), the scan still ends where the relations are finite. An onset beyond it lies beyond any
