@@ -1,0 +1,280 @@
+r"""One adhesive branch of a paraboloid or power law on a layer of finite thickness: :class:`LayerBranch`.
+
+The generalized MDR's branch (generalised (9)) is ``d(a) = g(a) − sqrt(4π a Δγ/K'(a))`` with the layer's profile
+``g = κₙ c aⁿ γₙ(a/h)`` and ``K' = 2E* Θ(1; a/h)²`` (:mod:`mdr_events.theory.layer`); its depth and slope are the
+relations of :mod:`mdr_events.theory.layer_continuum_symbolic` evaluated on the tables' factors for one float
+(:class:`~mdr_events.theory.layer.scalar_factors.NormalFactors`). The radius of a depth is the root on the stable part
+(``a`` at or beyond the jump-off, ``∂d/∂a ≥ 0``) by Newton's iteration kept inside a bracket (bisection where a step
+leaves it), started from the last root found: the continuum asks for nearby depths one after the other.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from mdr_events.contact.indenters import Paraboloid, PowerLaw
+from mdr_events.contact.layer import Layer
+from mdr_events.parameters import Parameters
+from mdr_events.theory.layer.compliance import LAMBDA_MAX
+from mdr_events.theory.layer.relations import _abel_factor, _power_law
+from mdr_events.theory.layer.scalar_factors import NormalFactors
+from mdr_events.theory.layer.tables import LAMBDA_MIN
+from mdr_events.theory.layer_continuum_symbolic import derive_continuum_model
+
+from .branch import FOLD_SHARE, Branch
+
+__all__ = ["LayerBranch", "ROOT_ITERATIONS"]
+
+#: The most steps of the radius's root (Newton's, or bisections where a step leaves the bracket): each bisection
+#: halves the bracket's logarithm, which starts below 60 (doublings from the jump-off to ``a/h = 64``).
+ROOT_ITERATIONS = 200
+#: Points per decade of the scan that brackets the jump-off (where ``∂d/∂a`` turns positive).
+_SCAN_PER_DECADE = 20
+
+
+class LayerBranch(Branch):
+    r"""The branch of work ``work`` of a paraboloid or power law on ``layer``: depth, slope, integral of a radius,
+    radius of a depth.
+
+    .. math:: d(a) = \kappa_n c\, a^n \gamma_n(a/h) - \sqrt{\frac{4\pi a\,\Delta\gamma}{K'(a)}}, \qquad
+              K'(a) = 2E^*\,\Theta(1; a/h)^2 \qquad (9)
+
+    Parameters
+    ----------
+    params : Parameters
+        The material (``E*``).
+    work : float
+        The work of adhesion ``Δγ`` (J/m²) of the branch (0: no adhesion, ``d = g(a)``).
+    indenter : Paraboloid or PowerLaw
+        The indenter.
+    layer : Layer
+        The layer (finite thickness).
+    factors : NormalFactors
+        The layer's tabulated normal factors for one float.
+
+    Raises
+    ------
+    ValueError
+        A jump-off beyond the tables (``a/h > 64``).
+    """
+
+    def __init__(self, params: Parameters, work: float, indenter: Paraboloid | PowerLaw, layer: Layer,
+                 factors: NormalFactors):
+        self.params, self.work, self.layer, self.factors = params, work, layer, factors
+        c, self.n = _power_law(indenter)
+        self.kc = _abel_factor(self.n) * c
+        relations = derive_continuum_model()
+        self._depth = relations["layer_continuum_branch_depth"].scalar
+        self._slope = relations["layer_continuum_branch_slope"].scalar
+        self._profile = relations["layer_continuum_profile"].scalar
+        self._force_slope = relations["layer_continuum_normal_force_slope"].scalar
+        self.ceiling = LAMBDA_MAX * layer.thickness
+        #: the tables' series meets their splines at ``a/h = LAMBDA_MIN``: the slope's derivative jumps there
+        self.knots = (LAMBDA_MIN * layer.thickness,)
+        self._last = 0.0
+        self.jump_off_radius = self._jump_off_radius() if work > 0.0 else 0.0
+        self.jump_off_depth = self.depth(self.jump_off_radius)
+        self._floor = self.jump_off_radius
+
+    # --- the branch at one radius ----------------------------------------------------------------------------
+    def _values(self, a: float) -> tuple[float, float]:
+        """``d(a)`` and ``∂d/∂a`` (``a > 0``)."""
+        theta, theta_slope = self.factors.edge_factor(a)
+        gamma, gamma_slope = self.factors.profile_factor(a)
+        E_star, h = self.params.E_star, self.layer.thickness
+        depth = self._depth(a, self.kc, self.n, gamma, E_star, self.work, theta)
+        slope = self._slope(a, h, self.kc, self.n, gamma, gamma_slope, E_star, self.work, theta, theta_slope)
+        return depth, slope
+
+    def depth(self, a: float) -> float:
+        """Depth of the contact of radius ``a`` on this branch (0 at ``a = 0``).
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            ``d`` (m).
+        """
+        return self._values(a)[0] if a > 0 else 0.0
+
+    def slope(self, a: float) -> float:
+        """``∂d/∂a`` on this branch (at ``a = 0``: ``-inf`` with adhesion, 0 without for ``n > 1``).
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The slope (1).
+        """
+        if a > 0:
+            return self._values(a)[1]
+        if self.work > 0.0:
+            return -math.inf
+        return 0.0 if self.n > 1.0 else (self.kc if self.n == 1.0 else math.inf)
+
+    def integral(self, a: float) -> float:
+        """``∫₀ᵃ d(ξ) dξ`` along this branch (adaptive quadrature).
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The integral (m²; 0 at ``a <= 0``).
+        """
+        from scipy.integrate import quad
+
+        return float(quad(self.depth, 0.0, a, epsabs=0.0, epsrel=1e-13, limit=200)[0]) if a > 0 else 0.0
+
+    def depth_term(self, a: float) -> float:
+        """The layer's profile at the radius, ``g(a)``: the size of the branch's terms.
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            ``g(a)`` (m).
+        """
+        return self._profile(a, self.kc, self.n, self.factors.profile_factor(a)[0]) if a > 0 else 0.0
+
+    def normal_force_slope(self, a: float) -> float:
+        r"""``dF_N/da`` along the branch over ``2E*``: ``(K'(a)(d − g(a)) + K(a) d'(a))/(2E*)``
+        (``layer_continuum_normal_force_slope``).
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The slope over ``2E*`` (m).
+        """
+        depth, slope = self._values(a)
+        theta = self.factors.edge_factor(a)[0]
+        return self._force_slope(a * self.factors.stiffness_factor(a), theta * theta, depth, self.depth_term(a),
+                                 slope)
+
+    # --- radius of a depth -----------------------------------------------------------------------------------
+    def _jump_off_radius(self) -> float:
+        """Where ``∂d/∂a`` turns positive: the least depth of the branch (a scan brackets it, Brent's method)."""
+        from scipy.optimize import brentq
+
+        scale = (2.0 * math.pi * self.work / (self.params.E_star * self.kc**2)) ** (1.0 / (2.0 * self.n - 1.0))
+        radius, step = 1e-6 * scale, 10.0 ** (1.0 / _SCAN_PER_DECADE)
+        while self.slope(radius * step) < 0.0:
+            radius *= step
+            if radius * step > self.ceiling:
+                raise ValueError(f"the branch of work {self.work!r} J/m² on {self.layer.describe()} has no jump-off "
+                                 f"below a/h = {LAMBDA_MAX:g}; allowed: contacts within the layer's tables")
+        return float(brentq(self.slope, radius, radius * step, xtol=1e-15 * radius, rtol=4.0 * np.finfo(float).eps))
+
+    def radius(self, depth: float, rtol: float) -> float:
+        """Stable-branch radius at ``depth``, converged to ``rtol`` (``nan`` below the jump-off depth; within
+        :data:`~.branch.FOLD_SHARE` of it, the jump-off radius).
+
+        Parameters
+        ----------
+        depth : float
+            The depth ``d`` (m).
+        rtol : float
+            The relative accuracy of the root.
+
+        Returns
+        -------
+        float
+            The radius ``a`` (m) or ``nan``.
+
+        Raises
+        ------
+        ValueError
+            A radius beyond the tables (``a/h > 64``).
+        """
+        if self.work == 0.0 and depth <= 0:  # no contact above the surface
+            return 0.0
+        if depth <= self.jump_off_depth:
+            if depth < self.jump_off_depth - FOLD_SHARE * abs(self.jump_off_depth):
+                return math.nan
+            return self.jump_off_radius
+        lower, upper = self._floor, math.inf
+        a = self._last if self._last > lower else max(lower, 1e-3 * self.layer.thickness) * 2.0
+        for _ in range(ROOT_ITERATIONS):
+            value, slope = self._values(a)
+            if value >= depth:
+                upper = min(upper, a)
+            else:
+                lower = max(lower, a)
+            step = (value - depth) / slope if slope > 0.0 else math.inf
+            guess = a - step
+            if abs(step) <= rtol * a:  # (Newton's step within the tolerance: converged, wherever the bracket is)
+                self._last = guess
+                return guess
+            if not lower < guess < min(upper, self.ceiling):  # (outside the bracket: bisect it, or double it)
+                if upper == math.inf and a >= self.ceiling:
+                    raise ValueError(f"depth={depth!r} m is not allowed on {self.layer.describe()} in the continuum "
+                                     f"method: its contact radius exceeds a/h = {LAMBDA_MAX:g}; allowed: depths whose "
+                                     f"radius is below {self.ceiling:.6g} m")
+                if upper < math.inf:
+                    guess = math.sqrt(lower * upper) if lower > 0.0 else 0.5 * upper
+                else:
+                    guess = min(2.0 * a, self.ceiling)
+            if abs(guess - a) <= rtol * a or (upper < math.inf and upper - lower <= rtol * upper):
+                self._last = guess
+                return guess
+            a = guess
+        raise RuntimeError(f"the radius of depth={depth!r} m on {self.layer.describe()} did not converge")
+
+    def depths(self, a: np.ndarray) -> np.ndarray:
+        """:meth:`depth` for an array of radii.
+
+        Parameters
+        ----------
+        a : array_like
+            The contact radii (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The depths (m), the shape of ``a`` (0 at ``a <= 0``).
+        """
+        a = np.asarray(a, dtype=float)
+        return np.fromiter((self.depth(float(value)) for value in a.ravel()), float, a.size).reshape(a.shape)
+
+    def radii(self, depth: np.ndarray) -> np.ndarray:
+        """:meth:`radius` for an array of depths (to 1e-14 relative; ``nan`` below the jump-off depth).
+
+        Parameters
+        ----------
+        depth : array_like
+            The depths (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The radii (m), the shape of ``depth``.
+        """
+        depth = np.asarray(depth, dtype=float)
+        values = (self.radius(float(value), _RADII_RTOL) for value in depth.ravel())
+        return np.fromiter(values, float, depth.size).reshape(depth.shape)
+
+
+#: The accuracy of :meth:`LayerBranch.radii` (the default ``radius_rtol`` of the continuum's tolerances).
+_RADII_RTOL = 1e-14

@@ -1,0 +1,194 @@
+r"""The layer's tabulated factors for one Python float, with their slopes: what the continuum's right-hand side reads.
+
+The tables (:class:`~mdr_events.theory.layer.tables.LayerTable`,
+:class:`~mdr_events.theory.layer.tangential_tables.TangentialTable`) interpolate the logarithm of each factor by a
+quintic spline in ``s = ln λ``; their vectorised evaluation costs tens of microseconds a call, and the continuum calls
+a factor thousands of times per span. Here the same splines are held as piecewise polynomials (SciPy's ``PPoly`` of
+the B-spline: the same function to round-off) evaluated in pure Python: the interval by bisection, the value and the
+slope by Horner's rule, ``y = exp(p(s))`` and ``dy/dλ = p'(s) y/λ``. Below :data:`~.tables.LAMBDA_MIN` the tables'
+own series, with their exact slopes.
+
+Part of :mod:`mdr_events.theory.layer`.
+"""
+
+from __future__ import annotations
+
+import bisect
+import math
+from collections.abc import Callable
+
+from mdr_events.contact.layer import Layer
+from mdr_events.theory.layer.tables import LAMBDA_MIN, layer_table
+from mdr_events.theory.layer.tangential_tables import LAMBDA_MIN as TANGENTIAL_LAMBDA_MIN, tangential_table
+
+__all__ = ["LogColumn", "NormalFactors", "TangentialFactors"]
+
+
+class LogColumn:
+    """One tabulated column ``ln y(s)`` (a spline of degree 5) as a piecewise polynomial evaluated in pure Python.
+
+    Parameters
+    ----------
+    spline : scipy.interpolate.BSpline
+        The table's spline of ``ln y`` in ``s = ln λ``.
+    """
+
+    def __init__(self, spline):
+        from scipy.interpolate import PPoly
+
+        pieces = PPoly.from_spline(spline)
+        self.breaks = [float(value) for value in pieces.x]
+        self.coefficients = [tuple(float(value) for value in pieces.c[:, i]) for i in range(pieces.c.shape[1])]
+        self.last = len(self.coefficients) - 1
+
+    def value_and_slope(self, lam: float) -> tuple[float, float]:
+        """``y(λ)`` and ``dy/dλ`` for ``λ`` within the table (``λ ≥ LAMBDA_MIN``).
+
+        Parameters
+        ----------
+        lam : float
+            ``a/h``.
+
+        Returns
+        -------
+        tuple of float
+            The factor and its derivative in ``λ``.
+        """
+        s = math.log(lam)
+        index = min(max(bisect.bisect_right(self.breaks, s) - 1, 0), self.last)
+        step = s - self.breaks[index]
+        value = slope = 0.0
+        for coefficient in self.coefficients[index]:  # (highest power first)
+            slope = slope * step + value
+            value = value * step + coefficient
+        y = math.exp(value)
+        return y, slope * y / lam
+
+
+class NormalFactors:
+    """The normal table's ``Θ(1)`` (``K' = 2E* Θ²``) and profile factor ``γₙ`` of a layer, for one float, with slopes.
+
+    Parameters
+    ----------
+    nu : float
+        Poisson's ratio.
+    layer : Layer
+        The layer (finite thickness).
+    exponent : float
+        The profile's power ``n`` (2: the paraboloid).
+    """
+
+    def __init__(self, nu: float, layer: Layer, exponent: float):
+        table = layer_table(nu, layer.base, exponent)
+        self.h, self.n = layer.thickness, exponent
+        self.k0 = float(table.columns["k0"])
+        self.edge = LogColumn(table._splines["edge"])
+        self.profile = LogColumn(table._splines["profile"])
+        self.stiffness = LogColumn(table._splines["stiffness"])
+
+    def stiffness_factor(self, a: float) -> float:
+        """``Φ(λ) = K(a)/(2E* a)`` at ``λ = a/h`` (the series ``1/(1 − 2k(0)λ/π)`` below ``LAMBDA_MIN``).
+
+        Parameters
+        ----------
+        a : float
+            The radius (m).
+
+        Returns
+        -------
+        float
+            ``Φ``.
+        """
+        lam = a / self.h
+        if lam < LAMBDA_MIN:
+            return 1.0 / (1.0 - 2.0 * self.k0 * lam / math.pi)
+        return self.stiffness.value_and_slope(lam)[0]
+
+    def edge_factor(self, a: float) -> tuple[float, float]:
+        """``Θ(1; λ)`` and ``dΘ/dλ`` at ``λ = a/h`` (the series ``1/(1 − 2k(0)λ/π)`` below ``LAMBDA_MIN``).
+
+        Parameters
+        ----------
+        a : float
+            The radius (m).
+
+        Returns
+        -------
+        tuple of float
+            ``Θ`` and its derivative in ``λ``.
+        """
+        lam = a / self.h
+        if lam < LAMBDA_MIN:
+            theta = 1.0 / (1.0 - 2.0 * self.k0 * lam / math.pi)
+            return theta, 2.0 * self.k0 / math.pi * theta * theta
+        return self.edge.value_and_slope(lam)
+
+    def profile_factor(self, a: float) -> tuple[float, float]:
+        """``γₙ(λ)`` and ``dγₙ/dλ`` at ``λ = a/h`` (the series ``(n/(n+1))/Φ + 1/(n+1)`` below ``LAMBDA_MIN``).
+
+        Parameters
+        ----------
+        a : float
+            The radius (m).
+
+        Returns
+        -------
+        tuple of float
+            ``γₙ`` and its derivative in ``λ``.
+        """
+        lam = a / self.h
+        if lam < LAMBDA_MIN:
+            phi, phi_slope = self.edge_factor(a)  # (Φ = Θ(1) on the series)
+            share = self.n / (self.n + 1.0)
+            return share / phi + 1.0 / (self.n + 1.0), -share * phi_slope / (phi * phi)
+        return self.profile.value_and_slope(lam)
+
+
+class TangentialFactors:
+    """The tangential table's ``Φ_L``, ``Φ_T`` of a bonded layer, combined into ``Φ_t`` (T3), with its slope.
+
+    Parameters
+    ----------
+    nu : float
+        Poisson's ratio.
+    layer : Layer
+        The layer (finite thickness, bonded base).
+    combine : callable
+        ``Φ_t(ν, Φ_L, Φ_T)`` (``layer_continuum_tangential_factor``).
+    combine_slope : callable
+        ``dΦ_t/dλ(ν, Φ_L, Φ_T, Φ_L', Φ_T')`` (``layer_continuum_tangential_factor_slope``).
+    """
+
+    def __init__(self, nu: float, layer: Layer, combine: Callable[..., float], combine_slope: Callable[..., float]):
+        table = tangential_table(nu)
+        self.nu, self.h = nu, layer.thickness
+        self.k0 = tuple(float(value) for value in table.columns["k0"])
+        self.columns = (LogColumn(table._splines["phi_l"]), LogColumn(table._splines["phi_t"]))
+        self.combine, self.combine_slope = combine, combine_slope
+
+    def _parts(self, lam: float) -> tuple[float, float, float, float]:
+        if lam < TANGENTIAL_LAMBDA_MIN:
+            parts = []
+            for k in self.k0:
+                phi = 1.0 / (1.0 - 2.0 * k * lam / math.pi)
+                parts.append((phi, 2.0 * k / math.pi * phi * phi))
+        else:
+            parts = [column.value_and_slope(lam) for column in self.columns]
+        (phi_l, slope_l), (phi_t, slope_t) = parts
+        return phi_l, phi_t, slope_l, slope_t
+
+    def stiffness_factor(self, a: float) -> tuple[float, float]:
+        """``Φ_t(λ) = K_t/(2G* a)`` and ``dΦ_t/dλ`` at ``λ = a/h``.
+
+        Parameters
+        ----------
+        a : float
+            The radius (m).
+
+        Returns
+        -------
+        tuple of float
+            ``Φ_t`` and its derivative in ``λ``.
+        """
+        phi_l, phi_t, slope_l, slope_t = self._parts(a / self.h)
+        return self.combine(self.nu, phi_l, phi_t), self.combine_slope(self.nu, phi_l, phi_t, slope_l, slope_t)
