@@ -57,7 +57,8 @@ CONTINUUM_KEYS = ("layer_continuum_tangential_factor", "layer_continuum_tangenti
                   "layer_continuum_cap_slope", "layer_continuum_weight",
                   "layer_continuum_measure", "layer_continuum_force_rate", "layer_continuum_level_rate",
                   "layer_continuum_profile", "layer_continuum_profile_slope", "layer_continuum_branch_depth",
-                  "layer_continuum_branch_slope", "layer_continuum_normal_force_slope")
+                  "layer_continuum_branch_slope", "layer_continuum_normal_force_slope",
+                  "layer_continuum_tangential_factor_pair", "layer_continuum_branch_pair")
 
 _SOURCE_DIGEST = hashlib.sha256(Path(__file__).read_bytes() + sp.__version__.encode()).hexdigest()[:16]
 
@@ -142,6 +143,10 @@ def _derive_tangential_factor(add) -> None:
                  sp.Symbol("Phi_t"), factor, (nu, Phi_L, Phi_T)))
     add(Relation("layer_continuum_tangential_factor_slope", "(T3)", "dΦ_t/dλ from Φ_L, Φ_T and their slopes",
                  sp.Symbol("dPhi_t"), sp.simplify(slope), (nu, Phi_L, Phi_T, dPhi_L, dPhi_T)))
+    # (both at once, for the continuum's right-hand side: one compiled call sharing their subexpressions)
+    add(Relation("layer_continuum_tangential_factor_pair", "(T3)", "(Φ_t, dΦ_t/dλ) from Φ_L, Φ_T and their slopes",
+                 sp.Tuple(sp.Symbol("Phi_t"), sp.Symbol("dPhi_t")), sp.Tuple(factor, sp.simplify(slope)),
+                 (nu, Phi_L, Phi_T, dPhi_L, dPhi_T)))
 
 
 def _derive_cap(add) -> None:
@@ -223,6 +228,14 @@ def _derive_branch(add) -> None:
                  sp.Symbol("d"), branch, (a, kc, n, gam, E_star, dgamma, Theta)))
     add(Relation("layer_continuum_branch_slope", "(9)", "dd/da of the layer's branch", sp.Symbol("dd"), branch_slope,
                  (a, h, kc, n, gam, dgam, E_star, dgamma, Theta, dTheta)))
+    # (both at once with Heß's half-space prefactor sqrt(2πΔγ/E*) of (8) taken out: one compiled call per radius)
+    hess = sp.Symbol("c_H", positive=True)
+    prefactor = symbolic.relation("hess_max_elongation").rhs.subs(a, 1)  # Δl_max = c_H √a (8)
+    pair = sp.Tuple(branch, branch_slope).subs(dgamma, sp.solve(sp.Eq(hess, prefactor), dgamma)[0])
+    _check(not pair.has(dgamma) and not pair.has(E_star), "the branch's pair keeps Δγ or E* beside Heß's prefactor")
+    add(Relation("layer_continuum_branch_pair", "(9)", "(d(a), dd/da) of the layer's branch, c_H = sqrt(2π Δγ/E*)",
+                 sp.Tuple(sp.Symbol("d"), sp.Symbol("dd")), sp.simplify(pair), (a, h, kc, n, gam, dgam, hess, Theta,
+                                                                             dTheta)))
     k_fn, g_fn, d_fn = sp.Function("k"), sp.Function("g"), sp.Function("d")
     force = sp.Integral(2 * k_fn(xi) * (d_fn(a) - g_fn(xi)), (xi, 0, a))    # F_N = ∫₋ₐᵃ k (d − g), k even
     K_a, dK_a, d_a, g_a, dd_a = sp.symbols("K_a dK_a d_a g_a dd_a", real=True)

@@ -10,6 +10,7 @@ leaves it), started from the last root found: the continuum asks for nearby dept
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -21,17 +22,22 @@ from mdr_events.theory.layer.compliance import LAMBDA_MAX
 from mdr_events.theory.layer.relations import _abel_factor, _power_law
 from mdr_events.theory.layer.scalar_factors import NormalFactors
 from mdr_events.theory.layer.tables import LAMBDA_MIN
+from mdr_events.theory import symbolic
 from mdr_events.theory.layer_continuum_symbolic import derive_continuum_model
 
 from .branch import FOLD_SHARE, Branch
 
-__all__ = ["LayerBranch", "ROOT_ITERATIONS"]
+__all__ = ["LayerBranch", "ROOT_ITERATIONS", "RADII_RTOL"]
 
 #: The most steps of the radius's root (Newton's, or bisections where a step leaves the bracket): each bisection
 #: halves the bracket's logarithm, which starts below 60 (doublings from the jump-off to ``a/h = 64``).
 ROOT_ITERATIONS = 200
-#: Points per decade of the scan that brackets the jump-off (where ``∂d/∂a`` turns positive).
-_SCAN_PER_DECADE = 20
+#: How many radii's depth and slope a branch remembers (:attr:`LayerBranch._values`).
+VALUE_CACHE = 64
+#: How many roots a branch remembers to start the next one from (:meth:`LayerBranch.radius`).
+RECENT_ROOTS = 8
+#: Points per decade of the scan that brackets the jump-off (where ``∂d/∂a`` turns positive; Brent's method refines).
+_SCAN_PER_DECADE = 5
 
 
 class LayerBranch(Branch):
@@ -66,27 +72,31 @@ class LayerBranch(Branch):
         c, self.n = _power_law(indenter)
         self.kc = _abel_factor(self.n) * c
         relations = derive_continuum_model()
-        self._depth = relations["layer_continuum_branch_depth"].scalar
-        self._slope = relations["layer_continuum_branch_slope"].scalar
+        self._pair = relations["layer_continuum_branch_pair"].scalar
+        #: Heß's half-space prefactor ``c_H = sqrt(2π Δγ/E*)`` (8), ``Δl = c_H √a/Θ`` on the layer
+        self.hess = float(symbolic.relation("hess_max_elongation").numeric(1.0, work, params.E_star))
+        self.h = layer.thickness
         self._profile = relations["layer_continuum_profile"].scalar
         self._force_slope = relations["layer_continuum_normal_force_slope"].scalar
+        self._pair_array = relations["layer_continuum_branch_pair"].numeric
         self.ceiling = LAMBDA_MAX * layer.thickness
         #: the tables' series meets their splines at ``a/h = LAMBDA_MIN``: the slope's derivative jumps there
         self.knots = (LAMBDA_MIN * layer.thickness,)
-        self._last = 0.0
-        self.jump_off_radius = self._jump_off_radius() if work > 0.0 else 0.0
+        #: the last roots found, ``(depth, radius)``: the start of the next one is the nearest's (the continuum asks
+        #: for the radius of the span's depth and for those of the fronts' anchors in turn)
+        self._recent: list[tuple[float, float]] = []
+        #: the depth and slope of a radius, remembered: a right-hand side asks for both at one radius
+        self._values = functools.lru_cache(maxsize=VALUE_CACHE)(self._evaluate)
+        self.jump_off_radius = _jump_off_radius(self) if work > 0.0 else 0.0
         self.jump_off_depth = self.depth(self.jump_off_radius)
         self._floor = self.jump_off_radius
 
     # --- the branch at one radius ----------------------------------------------------------------------------
-    def _values(self, a: float) -> tuple[float, float]:
-        """``d(a)`` and ``∂d/∂a`` (``a > 0``)."""
+    def _evaluate(self, a: float) -> tuple[float, float]:
+        """``d(a)`` and ``∂d/∂a`` (``a > 0``; ``layer_continuum_branch_pair``)."""
         theta, theta_slope = self.factors.edge_factor(a)
         gamma, gamma_slope = self.factors.profile_factor(a)
-        E_star, h = self.params.E_star, self.layer.thickness
-        depth = self._depth(a, self.kc, self.n, gamma, E_star, self.work, theta)
-        slope = self._slope(a, h, self.kc, self.n, gamma, gamma_slope, E_star, self.work, theta, theta_slope)
-        return depth, slope
+        return self._pair(a, self.h, self.kc, self.n, gamma, gamma_slope, self.hess, theta, theta_slope)
 
     def depth(self, a: float) -> float:
         """Depth of the contact of radius ``a`` on this branch (0 at ``a = 0``).
@@ -174,18 +184,21 @@ class LayerBranch(Branch):
                                  slope)
 
     # --- radius of a depth -----------------------------------------------------------------------------------
-    def _jump_off_radius(self) -> float:
-        """Where ``∂d/∂a`` turns positive: the least depth of the branch (a scan brackets it, Brent's method)."""
-        from scipy.optimize import brentq
+    def _start(self, depth: float) -> float:
+        """Newton's start for ``depth``: the radius of the nearest depth among the recent roots (none: twice the
+        largest of the floor and 1e-3 h)."""
+        best, start = math.inf, max(self._floor, 1e-3 * self.layer.thickness) * 2.0
+        for known, radius in self._recent:
+            if abs(known - depth) < best:
+                best, start = abs(known - depth), radius
+        return start
 
-        scale = (2.0 * math.pi * self.work / (self.params.E_star * self.kc**2)) ** (1.0 / (2.0 * self.n - 1.0))
-        radius, step = 1e-6 * scale, 10.0 ** (1.0 / _SCAN_PER_DECADE)
-        while self.slope(radius * step) < 0.0:
-            radius *= step
-            if radius * step > self.ceiling:
-                raise ValueError(f"the branch of work {self.work!r} J/m² on {self.layer.describe()} has no jump-off "
-                                 f"below a/h = {LAMBDA_MAX:g}; allowed: contacts within the layer's tables")
-        return float(brentq(self.slope, radius, radius * step, xtol=1e-15 * radius, rtol=4.0 * np.finfo(float).eps))
+    def _found(self, depth: float, radius: float) -> float:
+        """``radius``, remembered as the root of ``depth`` (the last :data:`RECENT_ROOTS` are kept)."""
+        self._recent.append((depth, radius))
+        if len(self._recent) > RECENT_ROOTS:
+            del self._recent[0]
+        return radius
 
     def radius(self, depth: float, rtol: float) -> float:
         """Stable-branch radius at ``depth``, converged to ``rtol`` (``nan`` below the jump-off depth; within
@@ -215,7 +228,7 @@ class LayerBranch(Branch):
                 return math.nan
             return self.jump_off_radius
         lower, upper = self._floor, math.inf
-        a = self._last if self._last > lower else max(lower, 1e-3 * self.layer.thickness) * 2.0
+        a = self._start(depth)
         for _ in range(ROOT_ITERATIONS):
             value, slope = self._values(a)
             if value >= depth:
@@ -225,8 +238,7 @@ class LayerBranch(Branch):
             step = (value - depth) / slope if slope > 0.0 else math.inf
             guess = a - step
             if abs(step) <= rtol * a:  # (Newton's step within the tolerance: converged, wherever the bracket is)
-                self._last = guess
-                return guess
+                return self._found(depth, guess)
             if not lower < guess < min(upper, self.ceiling):  # (outside the bracket: bisect it, or double it)
                 if upper == math.inf and a >= self.ceiling:
                     raise ValueError(f"depth={depth!r} m is not allowed on {self.layer.describe()} in the continuum "
@@ -237,8 +249,7 @@ class LayerBranch(Branch):
                 else:
                     guess = min(2.0 * a, self.ceiling)
             if abs(guess - a) <= rtol * a or (upper < math.inf and upper - lower <= rtol * upper):
-                self._last = guess
-                return guess
+                return self._found(depth, guess)
             a = guess
         raise RuntimeError(f"the radius of depth={depth!r} m on {self.layer.describe()} did not converge")
 
@@ -258,8 +269,14 @@ class LayerBranch(Branch):
         a = np.asarray(a, dtype=float)
         return np.fromiter((self.depth(float(value)) for value in a.ravel()), float, a.size).reshape(a.shape)
 
+    def _arrays(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``d(a)`` and ``∂d/∂a`` for an array of radii (> 0), from the tables' vectorised splines."""
+        theta, theta_slope, gamma, gamma_slope = self.factors.arrays(a)
+        return self._pair_array(a, self.h, self.kc, self.n, gamma, gamma_slope, self.hess, theta, theta_slope)
+
     def radii(self, depth: np.ndarray) -> np.ndarray:
-        """:meth:`radius` for an array of depths (to 1e-14 relative; ``nan`` below the jump-off depth).
+        """:meth:`radius` for an array of depths (to :data:`RADII_RTOL`; ``nan`` below the jump-off depth): Newton's
+        iteration on all of them at once, started from a scan of the branch and kept inside its brackets.
 
         Parameters
         ----------
@@ -272,9 +289,78 @@ class LayerBranch(Branch):
             The radii (m), the shape of ``depth``.
         """
         depth = np.asarray(depth, dtype=float)
-        values = (self.radius(float(value), _RADII_RTOL) for value in depth.ravel())
-        return np.fromiter(values, float, depth.size).reshape(depth.shape)
+        out = np.full(depth.shape, np.nan)
+        fold = self.jump_off_depth - FOLD_SHARE * abs(self.jump_off_depth)
+        out[(depth <= self.jump_off_depth) & (depth >= fold)] = self.jump_off_radius
+        if self.work == 0.0:
+            out[depth <= 0.0] = 0.0
+        inside = depth > (0.0 if self.work == 0.0 else self.jump_off_depth)
+        if np.any(inside):
+            out[inside] = self._roots(depth[inside])
+        return out
+
+    def _roots(self, depth: np.ndarray) -> np.ndarray:
+        """The radii of depths above the jump-off (:meth:`radii`)."""
+        highest = self.radius(float(np.max(depth)), RADII_RTOL)
+        lowest = self.jump_off_radius if self.jump_off_radius > 0.0 else highest * _SCAN_FLOOR
+        grid = np.geomspace(lowest, highest, _SCAN_POINTS)
+        scanned = self._arrays(grid)[0]
+        index = np.clip(np.searchsorted(scanned, depth), 1, grid.size - 1)
+        lower, upper = grid[index - 1], grid[index]
+        share = np.clip((depth - scanned[index - 1]) / (scanned[index] - scanned[index - 1]), 0.0, 1.0)
+        a = lower + share * (upper - lower)  # (the scan's chord: Newton starts close)
+        upper = np.where(depth >= scanned[-1], 2.0 * highest, upper)  # (the deepest's root, to rounding beyond it)
+        lower = np.where(depth <= scanned[0], 0.0, lower)
+        out = np.empty(depth.shape)
+        active = np.arange(depth.size)  # (the depths whose roots are still moving: the others are left alone)
+        for _ in range(ROOT_ITERATIONS):
+            value, slope = self._arrays(a)
+            target = depth[active]
+            above = value >= target
+            upper, lower = np.where(above, np.minimum(upper, a), upper), np.where(above, lower, np.maximum(lower, a))
+            with np.errstate(divide="ignore", invalid="ignore"):
+                step = np.where(slope > 0.0, (value - target) / slope, np.inf)
+            guess = a - step
+            inside = (guess > lower) & (guess < upper)
+            done = (np.abs(step) <= RADII_RTOL * a) | (upper - lower <= RADII_RTOL * upper)
+            guess = np.where(inside | (np.abs(step) <= RADII_RTOL * a), guess, 0.5 * (lower + upper))
+            out[active[done]] = guess[done]
+            moving = ~done
+            if not np.any(moving):
+                return out
+            active, a, lower, upper = active[moving], guess[moving], lower[moving], upper[moving]
+        raise RuntimeError(f"the radii of {depth.size} depths on {self.layer.describe()} did not converge")
+
+
+def _jump_off_radius(branch: LayerBranch) -> float:
+    """Where the branch's ``∂d/∂a`` turns positive, its least depth: a scan brackets it, Brent's method refines it;
+    kept per branch's values (:data:`_JUMP_OFFS`: the runs of one contact's angles share it)."""
+    from scipy.optimize import brentq
+
+    key = (branch.params.E_star, branch.params.nu, branch.work, branch.kc, branch.n, branch.layer)
+    if key in _JUMP_OFFS:
+        return _JUMP_OFFS[key]
+    scale = (2.0 * math.pi * branch.work / (branch.params.E_star * branch.kc**2)) ** (1.0 / (2.0 * branch.n - 1.0))
+    radius, step = 1e-6 * scale, 10.0 ** (1.0 / _SCAN_PER_DECADE)
+    while branch.slope(radius * step) < 0.0:
+        radius *= step
+        if radius * step > branch.ceiling:
+            raise ValueError(f"the branch of work {branch.work!r} J/m² on {branch.layer.describe()} has no jump-off "
+                             f"below a/h = {LAMBDA_MAX:g}; allowed: contacts within the layer's tables")
+    found = float(brentq(branch.slope, radius, radius * step, xtol=1e-15 * radius, rtol=4.0 * np.finfo(float).eps))
+    if len(_JUMP_OFFS) >= _JUMP_OFFS_KEPT:
+        _JUMP_OFFS.clear()
+    _JUMP_OFFS[key] = found
+    return found
+
+
+#: The jump-off radii found, by the branch's values ``(E*, ν, Δγ, κₙc, n, layer)`` (at most :data:`_JUMP_OFFS_KEPT`).
+_JUMP_OFFS: dict[tuple, float] = {}
+_JUMP_OFFS_KEPT = 64
 
 
 #: The accuracy of :meth:`LayerBranch.radii` (the default ``radius_rtol`` of the continuum's tolerances).
-_RADII_RTOL = 1e-14
+RADII_RTOL = 1e-14
+#: Points of the scan that starts :meth:`LayerBranch.radii`'s iteration, and the scan's lowest radius over the highest
+#: without adhesion (the branch starts at ``a = 0`` there).
+_SCAN_POINTS, _SCAN_FLOOR = 64, 1e-9

@@ -41,6 +41,10 @@ if TYPE_CHECKING:
 __all__ = ["HalfSpaceMedium", "LayerMedium", "FrictionlessLayerMedium", "HALF_SPACE_MEDIUM", "medium_of", "check_law"]
 
 
+#: How many radii's tangential factors a layer's medium remembers (:attr:`LayerMedium._factor`).
+FACTOR_CACHE = 256
+
+
 class HalfSpaceMedium:
     """The half-space: every spring alike (``G*`` per length), the cap ``K a`` (13), the paper's branches (9)."""
 
@@ -232,12 +236,15 @@ class LayerMedium(HalfSpaceMedium):
         self._weight = relations["layer_continuum_weight"].scalar
         self._measure = relations["layer_continuum_measure"].scalar
         self.tangential = self._tangential_factors(relations)
+        #: ``Φ_t`` and its slope of a radius, remembered: one right-hand side asks for the same radius several times
+        #: (the cap, its slope, the measure of the contact) and for the pieces' fixed ends again and again
+        self._factor = functools.lru_cache(maxsize=FACTOR_CACHE)(self.tangential.stiffness_factor) \
+            if self.tangential is not None else None
 
     def _tangential_factors(self, relations):
         from mdr_events.theory.layer.scalar_factors import TangentialFactors
 
-        return TangentialFactors(self.params.nu, self.layer, relations["layer_continuum_tangential_factor"].scalar,
-                                 relations["layer_continuum_tangential_factor_slope"].scalar)
+        return TangentialFactors(self.params.nu, self.layer, relations["layer_continuum_tangential_factor_pair"].scalar)
 
     def shift(self, K: float, a: float) -> float:
         """``ū(a) = K a/Φ_t(a/h)`` (``layer_continuum_cap``).
@@ -260,7 +267,7 @@ class LayerMedium(HalfSpaceMedium):
             radii = np.asarray(a, dtype=float)
             factor = tangential_table(self.params.nu).stiffness_factor(np.maximum(radii, 0.0) / self.layer.thickness)
             return np.where(radii > 0, self._cap_array(radii, K, factor), 0.0)
-        return self._cap(a, K, self.tangential.stiffness_factor(a)[0]) if a > 0 else 0.0
+        return self._cap(a, K, self._factor(a)[0]) if a > 0 else 0.0
 
     def shift_slope(self, K: float, a: float) -> float:
         """``dū/da`` (``layer_continuum_cap_slope``; ``K`` at ``a = 0``).
@@ -277,10 +284,10 @@ class LayerMedium(HalfSpaceMedium):
         float
             ``dū/da`` (1).
         """
-        return self._cap_slope(a, self.layer.thickness, K, *self.tangential.stiffness_factor(a)) if a > 0 else K
+        return self._cap_slope(a, self.layer.thickness, K, *self._factor(a)) if a > 0 else K
 
     def _cumulative(self, x: float) -> float:
-        return self._measure(x, self.tangential.stiffness_factor(x)[0]) if x > 0 else 0.0
+        return self._measure(x, self._factor(x)[0]) if x > 0 else 0.0
 
     def measure(self, lower: float, upper: float) -> float:
         """``M(upper) − M(lower)``, ``M(ξ) = K_t(ξ)/(2G*)`` (``layer_continuum_measure``).
@@ -310,7 +317,7 @@ class LayerMedium(HalfSpaceMedium):
         float
             ``w`` (1).
         """
-        return self._weight(x, self.layer.thickness, *self.tangential.stiffness_factor(x)) if x > 0 else 1.0
+        return self._weight(x, self.layer.thickness, *self._factor(x)) if x > 0 else 1.0
 
     def piece_integral(self, anchors: "AnchorMap", piece: "Piece", lower: float, upper: float) -> float:
         """``∫ w(ξ) Y(ξ) dξ`` over ``[lower, upper]`` of ``piece``: ``x0 (M(upper) − M(lower))`` and, on a growth

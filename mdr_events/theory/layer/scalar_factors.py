@@ -17,11 +17,16 @@ import bisect
 import math
 from collections.abc import Callable
 
+import numpy as np
+
 from mdr_events.contact.layer import Layer
 from mdr_events.theory.layer.tables import LAMBDA_MIN, layer_table
 from mdr_events.theory.layer.tangential_tables import LAMBDA_MIN as TANGENTIAL_LAMBDA_MIN, tangential_table
 
-__all__ = ["LogColumn", "NormalFactors", "TangentialFactors"]
+__all__ = ["LogColumn", "NormalFactors", "TangentialFactors", "DEGREE"]
+
+#: The tables' splines' degree (quintic), whose pieces :class:`LogColumn` evaluates by Horner's rule unrolled.
+DEGREE = 5
 
 
 class LogColumn:
@@ -36,8 +41,11 @@ class LogColumn:
     def __init__(self, spline):
         from scipy.interpolate import PPoly
 
+        self.spline = spline
         pieces = PPoly.from_spline(spline)
         self.breaks = [float(value) for value in pieces.x]
+        if pieces.c.shape[0] != DEGREE + 1:
+            raise ValueError(f"a spline of degree {pieces.c.shape[0] - 1} is not allowed; allowed: degree {DEGREE}")
         self.coefficients = [tuple(float(value) for value in pieces.c[:, i]) for i in range(pieces.c.shape[1])]
         self.last = len(self.coefficients) - 1
 
@@ -55,12 +63,12 @@ class LogColumn:
             The factor and its derivative in ``λ``.
         """
         s = math.log(lam)
-        index = min(max(bisect.bisect_right(self.breaks, s) - 1, 0), self.last)
-        step = s - self.breaks[index]
-        value = slope = 0.0
-        for coefficient in self.coefficients[index]:  # (highest power first)
-            slope = slope * step + value
-            value = value * step + coefficient
+        index = bisect.bisect_right(self.breaks, s) - 1
+        index = 0 if index < 0 else (self.last if index > self.last else index)
+        x = s - self.breaks[index]
+        c5, c4, c3, c2, c1, c0 = self.coefficients[index]  # (highest power first: Horner's rule, unrolled)
+        value = ((((c5 * x + c4) * x + c3) * x + c2) * x + c1) * x + c0
+        slope = (((5.0 * c5 * x + 4.0 * c4) * x + 3.0 * c3) * x + 2.0 * c2) * x + c1
         y = math.exp(value)
         return y, slope * y / lam
 
@@ -85,6 +93,36 @@ class NormalFactors:
         self.edge = LogColumn(table._splines["edge"])
         self.profile = LogColumn(table._splines["profile"])
         self.stiffness = LogColumn(table._splines["stiffness"])
+
+    def arrays(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """``Θ(1)``, ``dΘ/dλ``, ``γₙ`` and ``dγₙ/dλ`` at the radii ``a`` (the tables' own vectorised splines; the
+        series' slopes below ``LAMBDA_MIN`` exact, as :meth:`edge_factor` and :meth:`profile_factor` give them).
+
+        Parameters
+        ----------
+        a : numpy.ndarray
+            The radii (m), ``0 <= a/h <= LAMBDA_MAX``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``Θ``, ``dΘ/dλ``, ``γₙ``, ``dγₙ/dλ``.
+        """
+        lam = np.asarray(a, dtype=float) / self.h
+        small = lam < LAMBDA_MIN
+        s = np.log(np.where(small, LAMBDA_MIN, lam))
+        values = []
+        for column in (self.edge, self.profile):
+            log_value = column.spline(s)
+            value = np.exp(log_value)
+            values += [value, column.spline(s, 1) * value / np.where(small, LAMBDA_MIN, lam)]
+        if np.any(small):
+            theta = 1.0 / (1.0 - 2.0 * self.k0 * lam / math.pi)
+            share = self.n / (self.n + 1.0)
+            theta_slope = 2.0 * self.k0 / math.pi * theta * theta
+            series = (theta, theta_slope, share / theta + 1.0 / (self.n + 1.0), -share * theta_slope / (theta * theta))
+            values = [np.where(small, exact, value) for exact, value in zip(series, values)]
+        return tuple(values)
 
     def stiffness_factor(self, a: float) -> float:
         """``Φ(λ) = K(a)/(2E* a)`` at ``λ = a/h`` (the series ``1/(1 − 2k(0)λ/π)`` below ``LAMBDA_MIN``).
@@ -154,17 +192,15 @@ class TangentialFactors:
     layer : Layer
         The layer (finite thickness, bonded base).
     combine : callable
-        ``Φ_t(ν, Φ_L, Φ_T)`` (``layer_continuum_tangential_factor``).
-    combine_slope : callable
-        ``dΦ_t/dλ(ν, Φ_L, Φ_T, Φ_L', Φ_T')`` (``layer_continuum_tangential_factor_slope``).
+        ``(Φ_t, dΦ_t/dλ)(ν, Φ_L, Φ_T, Φ_L', Φ_T')`` (``layer_continuum_tangential_factor_pair``).
     """
 
-    def __init__(self, nu: float, layer: Layer, combine: Callable[..., float], combine_slope: Callable[..., float]):
+    def __init__(self, nu: float, layer: Layer, combine: Callable[..., tuple[float, float]]):
         table = tangential_table(nu)
         self.nu, self.h = nu, layer.thickness
         self.k0 = tuple(float(value) for value in table.columns["k0"])
         self.columns = (LogColumn(table._splines["phi_l"]), LogColumn(table._splines["phi_t"]))
-        self.combine, self.combine_slope = combine, combine_slope
+        self.combine = combine
 
     def _parts(self, lam: float) -> tuple[float, float, float, float]:
         if lam < TANGENTIAL_LAMBDA_MIN:
@@ -190,5 +226,4 @@ class TangentialFactors:
         tuple of float
             ``Φ_t`` and its derivative in ``λ``.
         """
-        phi_l, phi_t, slope_l, slope_t = self._parts(a / self.h)
-        return self.combine(self.nu, phi_l, phi_t), self.combine_slope(self.nu, phi_l, phi_t, slope_l, slope_t)
+        return self.combine(self.nu, *self._parts(a / self.h))
