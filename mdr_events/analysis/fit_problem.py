@@ -59,7 +59,7 @@ class Problem:
                  friction: FrictionLaw = TAU0, layer: Layer = HALF_SPACE):
         self.free, self.measurement, self.path_of = free, measurement, path_of
         self.tolerances, self.limits, self.profile, self.friction = tolerances, limits, profile, friction
-        #: the body (its thickness fixed: the fit's parameters are the elastomer's and the contact's)
+        #: the body (its thickness the free parameter's ``h`` where it is free: :meth:`FreeParameters.layer_at`)
         self.layer = layer
         self.solves = 0
         self.quantities = tuple(measurement.values)
@@ -74,7 +74,7 @@ class Problem:
             friction = self.free.friction_at(theta)
             path = shifted_path(self.path_of(params), depth_offset)
             return model_curves(params, path, self.measurement.path_time - time_offset, self.tolerances,
-                                self.limits, self.quantities, self.profile, friction, self.layer)
+                                self.limits, self.quantities, self.profile, friction, self.free.layer_at(theta))
         except (ValueError, RuntimeError) as error:
             trial = ", ".join(f"{name}={value:.6g}" for name, value in zip(self.free.names,
                                                                              self.free.to_natural(theta)))

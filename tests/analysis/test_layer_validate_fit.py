@@ -79,3 +79,21 @@ def test_the_command_line_validates_on_the_layer_of_h(capsys, tmp_path):
     err = capsys.readouterr().err
     assert status == 2 and err.count("\n") == 1 and "friction='coulomb' is not allowed on layer h = 0.005 m" in err
     assert not (tmp_path / "bad").exists()
+
+
+def test_fit_recovers_the_layers_thickness_where_h_is_free():
+    """``h`` free: each trial the same tables at another ``a/h`` (no table built), the fitted thickness stamped."""
+    measured = synthetic_measurement(LAYERED, "A", 15.0, times=path_times(300))
+    start = LAYERED.replace(h=8e-3, E=0.9 * PAPER.elastomer.E)
+    result = me.fit(measured, start, "A", 15.0, free=["E", "h"], time_origin="path_start")
+    estimates = dict(zip(result.dataset["parameter"].values, result.dataset["estimate"].values))
+    assert estimates["h"] == pytest.approx(5e-3, rel=RECOVERED)
+    assert result.parameters.E == pytest.approx(PAPER.elastomer.E, rel=RECOVERED)
+    assert result.dataset.attrs["param_layer_thickness"] == pytest.approx(5e-3, rel=RECOVERED)
+
+
+def test_h_free_on_the_half_space_is_refused_in_one_line():
+    measured = synthetic_measurement(PAPER, "A", 15.0, times=path_times(50))
+    with pytest.raises(ValueError) as caught:
+        me.fit(measured, PAPER, "A", 15.0, free=["E", "h"], time_origin="path_start")
+    assert "free: 'h' is not allowed on the half-space" in str(caught.value) and "\n" not in str(caught.value)

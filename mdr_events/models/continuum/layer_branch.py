@@ -94,8 +94,7 @@ class LayerBranch(Branch):
     # --- the branch at one radius ----------------------------------------------------------------------------
     def _evaluate(self, a: float) -> tuple[float, float]:
         """``d(a)`` and ``∂d/∂a`` (``a > 0``; ``layer_continuum_branch_pair``)."""
-        theta, theta_slope = self.factors.edge_factor(a)
-        gamma, gamma_slope = self.factors.profile_factor(a)
+        theta, theta_slope, gamma, gamma_slope = self.factors.edge_and_profile(a)
         return self._pair(a, self.h, self.kc, self.n, gamma, gamma_slope, self.hess, theta, theta_slope)
 
     def depth(self, a: float) -> float:

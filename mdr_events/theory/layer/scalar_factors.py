@@ -73,6 +73,53 @@ class LogColumn:
         return y, slope * y / lam
 
 
+class LogPair:
+    """Two tabulated columns on the same nodes (one table's splines share their knots), evaluated together: one
+    logarithm and one bisection for both (:meth:`LogColumn.value_and_slope` each otherwise).
+
+    Parameters
+    ----------
+    first, second : LogColumn
+        The columns.
+
+    Raises
+    ------
+    ValueError
+        Columns whose pieces do not share their breaks.
+    """
+
+    def __init__(self, first: LogColumn, second: LogColumn):
+        if first.breaks != second.breaks:
+            raise ValueError("columns of different nodes are not allowed; allowed: two columns of one table")
+        self.breaks, self.last = first.breaks, first.last
+        self.coefficients = list(zip(first.coefficients, second.coefficients))
+
+    def values_and_slopes(self, lam: float) -> tuple[float, float, float, float]:
+        """Both columns' ``y(λ)`` and ``dy/dλ`` for ``λ`` within the table (``λ ≥ LAMBDA_MIN``).
+
+        Parameters
+        ----------
+        lam : float
+            ``a/h``.
+
+        Returns
+        -------
+        tuple of float
+            The first factor and its derivative in ``λ``, then the second's.
+        """
+        s = math.log(lam)
+        index = bisect.bisect_right(self.breaks, s) - 1
+        index = 0 if index < 0 else (self.last if index > self.last else index)
+        x = s - self.breaks[index]
+        out = []
+        for c5, c4, c3, c2, c1, c0 in self.coefficients[index]:  # (Horner's rule, unrolled, as LogColumn's)
+            value = ((((c5 * x + c4) * x + c3) * x + c2) * x + c1) * x + c0
+            slope = (((5.0 * c5 * x + 4.0 * c4) * x + 3.0 * c3) * x + 2.0 * c2) * x + c1
+            y = math.exp(value)
+            out += (y, slope * y / lam)
+        return tuple(out)
+
+
 class NormalFactors:
     """The normal table's ``Θ(1)`` (``K' = 2E* Θ²``) and profile factor ``γₙ`` of a layer, for one float, with slopes.
 
@@ -93,6 +140,25 @@ class NormalFactors:
         self.edge = LogColumn(table._splines["edge"])
         self.profile = LogColumn(table._splines["profile"])
         self.stiffness = LogColumn(table._splines["stiffness"])
+        self.both = LogPair(self.edge, self.profile)
+
+    def edge_and_profile(self, a: float) -> tuple[float, float, float, float]:
+        """:meth:`edge_factor` and :meth:`profile_factor` at once: ``Θ``, ``dΘ/dλ``, ``γₙ``, ``dγₙ/dλ``.
+
+        Parameters
+        ----------
+        a : float
+            The radius (m).
+
+        Returns
+        -------
+        tuple of float
+            ``Θ`` and its derivative in ``λ``, ``γₙ`` and its derivative.
+        """
+        lam = a / self.h
+        if lam < LAMBDA_MIN:
+            return (*self.edge_factor(a), *self.profile_factor(a))
+        return self.both.values_and_slopes(lam)
 
     def arrays(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """``Θ(1)``, ``dΘ/dλ``, ``γₙ`` and ``dγₙ/dλ`` at the radii ``a`` (the tables' own vectorised splines; the
@@ -199,18 +265,17 @@ class TangentialFactors:
         table = tangential_table(nu)
         self.nu, self.h = nu, layer.thickness
         self.k0 = tuple(float(value) for value in table.columns["k0"])
-        self.columns = (LogColumn(table._splines["phi_l"]), LogColumn(table._splines["phi_t"]))
+        self.columns = LogPair(LogColumn(table._splines["phi_l"]), LogColumn(table._splines["phi_t"]))
         self.combine = combine
 
     def _parts(self, lam: float) -> tuple[float, float, float, float]:
-        if lam < TANGENTIAL_LAMBDA_MIN:
-            parts = []
-            for k in self.k0:
-                phi = 1.0 / (1.0 - 2.0 * k * lam / math.pi)
-                parts.append((phi, 2.0 * k / math.pi * phi * phi))
-        else:
-            parts = [column.value_and_slope(lam) for column in self.columns]
-        (phi_l, slope_l), (phi_t, slope_t) = parts
+        """``Φ_L``, ``Φ_T`` and their slopes in ``λ`` (the series ``1/(1 − 2k_m(0)λ/π)`` below ``LAMBDA_MIN``)."""
+        if lam >= TANGENTIAL_LAMBDA_MIN:
+            phi_l, slope_l, phi_t, slope_t = self.columns.values_and_slopes(lam)
+            return phi_l, phi_t, slope_l, slope_t
+        (phi_l, slope_l), (phi_t, slope_t) = ((1.0 / (1.0 - 2.0 * k * lam / math.pi),
+                                               2.0 * k / math.pi / (1.0 - 2.0 * k * lam / math.pi) ** 2)
+                                              for k in self.k0)
         return phi_l, phi_t, slope_l, slope_t
 
     def stiffness_factor(self, a: float) -> tuple[float, float]:
