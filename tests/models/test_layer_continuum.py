@@ -28,7 +28,8 @@ import pytest
 import mdr_events as me
 from mdr_events.analysis.convergence import history_differences, observed_orders
 from mdr_events.models.continuum import algebraic_tangential_force, evaluate, solve_path
-from mdr_events.models.continuum.media import FrictionlessLayerMedium, HalfSpaceMedium, LayerMedium, medium_of
+from mdr_events.models.continuum.layer_media import FrictionlessLayerMedium, LayerMedium
+from mdr_events.models.continuum.media import HalfSpaceMedium, medium_of
 from mdr_events.theory.layer import layer_normal_curve
 
 PAPER = me.Contact.paper()
