@@ -177,6 +177,8 @@ class LayerBranch(Branch):
         float
             The slope over ``2E*`` (m).
         """
+        if not a > 0:  # (K(0) = 0 and d = g = 0 at the first touch)
+            return 0.0
         depth, slope = self._values(a)
         theta = self.factors.edge_factor(a)[0]
         return self._force_slope(a * self.factors.stiffness_factor(a), theta * theta, depth, self.depth_term(a),
