@@ -35,7 +35,7 @@ ROOT_ITERATIONS = 200
 #: How many radii's depth and slope a branch remembers (:attr:`LayerBranch._values`).
 VALUE_CACHE = 64
 #: How many roots a branch remembers to start the next one from (:meth:`LayerBranch.radius`).
-RECENT_ROOTS = 8
+RECENT_ROOTS = 4
 #: Points per decade of the scan that brackets the jump-off (where ``∂d/∂a`` turns positive; Brent's method refines).
 _SCAN_PER_DECADE = 5
 
@@ -110,7 +110,7 @@ class LayerBranch(Branch):
         float
             ``d`` (m).
         """
-        return self._values(a)[0] if a > 0 else 0.0
+        return self._values(float(a))[0] if a > 0 else 0.0
 
     def slope(self, a: float) -> float:
         """``∂d/∂a`` on this branch (at ``a = 0``: ``-inf`` with adhesion, 0 without for ``n > 1``).
@@ -126,7 +126,7 @@ class LayerBranch(Branch):
             The slope (1).
         """
         if a > 0:
-            return self._values(a)[1]
+            return self._values(float(a))[1]
         if self.work > 0.0:
             return -math.inf
         return 0.0 if self.n > 1.0 else (self.kc if self.n == 1.0 else math.inf)
@@ -229,9 +229,9 @@ class LayerBranch(Branch):
                 return math.nan
             return self.jump_off_radius
         lower, upper = self._floor, math.inf
-        a = self._start(depth)
+        a, depth = self._start(depth), float(depth)
         for _ in range(ROOT_ITERATIONS):
-            value, slope = self._values(a)
+            value, slope = self._evaluate(a)  # (not remembered: the iterates would push out the span's radii)
             if value >= depth:
                 upper = min(upper, a)
             else:

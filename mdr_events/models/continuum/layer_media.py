@@ -81,13 +81,19 @@ class LayerMedium(HalfSpaceMedium):
         float or numpy.ndarray
             ``ū`` (m).
         """
-        if np.ndim(a):
-            from mdr_events.theory.layer.tangential_tables import tangential_table
-
-            radii = np.asarray(a, dtype=float)
-            factor = tangential_table(self.params.nu).stiffness_factor(np.maximum(radii, 0.0) / self.layer.thickness)
-            return np.where(radii > 0, self._cap_array(radii, K, factor), 0.0)
+        if type(a) is not float:  # (a NumPy scalar as a float: its hash and arithmetic cost microseconds)
+            if np.ndim(a):
+                return self._shifts(K, a)
+            a = float(a)
         return self._cap(a, K, self._factor(a)[0]) if a > 0 else 0.0
+
+    def _shifts(self, K: float, a: np.ndarray) -> np.ndarray:
+        """:meth:`shift` of an array of radii (the table's vectorised factor)."""
+        from mdr_events.theory.layer.tangential_tables import tangential_table
+
+        radii = np.asarray(a, dtype=float)
+        factor = tangential_table(self.params.nu).stiffness_factor(np.maximum(radii, 0.0) / self.layer.thickness)
+        return np.where(radii > 0, self._cap_array(radii, K, factor), 0.0)
 
     def shift_slope(self, K: float, a: float) -> float:
         """``dū/da`` (``layer_continuum_cap_slope``; ``K`` at ``a = 0``).
@@ -104,10 +110,10 @@ class LayerMedium(HalfSpaceMedium):
         float
             ``dū/da`` (1).
         """
-        return self._cap_slope(a, self.layer.thickness, K, *self._factor(a)) if a > 0 else K
+        return self._cap_slope(a, self.layer.thickness, K, *self._factor(float(a))) if a > 0 else K
 
     def _cumulative(self, x: float) -> float:
-        return self._measure(x, self._factor(x)[0]) if x > 0 else 0.0
+        return self._measure(x, self._factor(float(x))[0]) if x > 0 else 0.0
 
     def measure(self, lower: float, upper: float) -> float:
         """``M(upper) − M(lower)``, ``M(ξ) = K_t(ξ)/(2G*)`` (``layer_continuum_measure``).
@@ -137,7 +143,7 @@ class LayerMedium(HalfSpaceMedium):
         float
             ``w`` (1).
         """
-        return self._weight(x, self.layer.thickness, *self._factor(x)) if x > 0 else 1.0
+        return self._weight(x, self.layer.thickness, *self._factor(float(x))) if x > 0 else 1.0
 
     def piece_integral(self, anchors: "AnchorMap", piece: "Piece", lower: float, upper: float) -> float:
         """``∫ w(ξ) Y(ξ) dξ`` over ``[lower, upper]`` of ``piece``: ``x0 (M(upper) − M(lower))`` and, on a growth

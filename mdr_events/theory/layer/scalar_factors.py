@@ -93,6 +93,9 @@ class LogPair:
             raise ValueError("columns of different nodes are not allowed; allowed: two columns of one table")
         self.breaks, self.last = first.breaks, first.last
         self.coefficients = list(zip(first.coefficients, second.coefficients))
+        #: the same for arrays: the breaks, and the coefficients as ``(column, power, piece)``
+        self._breaks = np.array(self.breaks)
+        self._coefficients = np.array([np.array(first.coefficients).T, np.array(second.coefficients).T])
 
     def values_and_slopes(self, lam: float) -> tuple[float, float, float, float]:
         """Both columns' ``y(λ)`` and ``dy/dλ`` for ``λ`` within the table (``λ ≥ LAMBDA_MIN``).
@@ -116,6 +119,31 @@ class LogPair:
             value = ((((c5 * x + c4) * x + c3) * x + c2) * x + c1) * x + c0
             slope = (((5.0 * c5 * x + 4.0 * c4) * x + 3.0 * c3) * x + 2.0 * c2) * x + c1
             y = math.exp(value)
+            out += (y, slope * y / lam)
+        return tuple(out)
+
+
+    def values_and_slopes_array(self, lam: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`values_and_slopes` for an array of ``λ ≥ LAMBDA_MIN`` (Horner's rule on the arrays).
+
+        Parameters
+        ----------
+        lam : numpy.ndarray
+            ``a/h``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            The first factor and its derivative in ``λ``, then the second's.
+        """
+        s = np.log(lam)
+        index = np.clip(np.searchsorted(self._breaks, s, side="right") - 1, 0, self.last)
+        x = s - self._breaks[index]
+        out = []
+        for c5, c4, c3, c2, c1, c0 in self._coefficients[:, :, index]:
+            value = ((((c5 * x + c4) * x + c3) * x + c2) * x + c1) * x + c0
+            slope = (((5.0 * c5 * x + 4.0 * c4) * x + 3.0 * c3) * x + 2.0 * c2) * x + c1
+            y = np.exp(value)
             out += (y, slope * y / lam)
         return tuple(out)
 
@@ -161,8 +189,9 @@ class NormalFactors:
         return self.both.values_and_slopes(lam)
 
     def arrays(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """``Θ(1)``, ``dΘ/dλ``, ``γₙ`` and ``dγₙ/dλ`` at the radii ``a`` (the tables' own vectorised splines; the
-        series' slopes below ``LAMBDA_MIN`` exact, as :meth:`edge_factor` and :meth:`profile_factor` give them).
+        """``Θ(1)``, ``dΘ/dλ``, ``γₙ`` and ``dγₙ/dλ`` at the radii ``a`` (the pieces of :meth:`edge_and_profile`
+        evaluated on the arrays; the series' slopes below ``LAMBDA_MIN`` exact, as :meth:`edge_factor` and
+        :meth:`profile_factor` give them).
 
         Parameters
         ----------
@@ -176,12 +205,7 @@ class NormalFactors:
         """
         lam = np.asarray(a, dtype=float) / self.h
         small = lam < LAMBDA_MIN
-        s = np.log(np.where(small, LAMBDA_MIN, lam))
-        values = []
-        for column in (self.edge, self.profile):
-            log_value = column.spline(s)
-            value = np.exp(log_value)
-            values += [value, column.spline(s, 1) * value / np.where(small, LAMBDA_MIN, lam)]
+        values = list(self.both.values_and_slopes_array(np.where(small, LAMBDA_MIN, lam)))
         if np.any(small):
             theta = 1.0 / (1.0 - 2.0 * self.k0 * lam / math.pi)
             share = self.n / (self.n + 1.0)
