@@ -207,7 +207,8 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
     # one continuum solution serves every spacing: the study costs one solve and the comparisons
     job = _validation_job(contact, motion, alpha, tolerance, reference, options, "convergence_study")
     model = job.model
-    solution = job.solution or solve_path(model.params, job.path, job.tolerances, limits, model.profile, model.friction)
+    solution = job.solution or solve_path(model.params, job.path, job.tolerances, limits, model.profile, model.friction,
+                                          layer=model.contact.layer)
     reading = {name: value for name, value in options.items() if name not in ("tolerances", "solution")}
     reports = [validate(candidates_by_dx[keys[i]], contact, motion, alpha, tolerance=tolerance, reference=solution,
                         limits=limits, **reading) for i in order]

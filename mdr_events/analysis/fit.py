@@ -294,7 +294,8 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
         With a scenario's name: the path's angle (degrees).
     free : sequence of str
         The parameters to fit, from :data:`FREE_NAMES`: ``E``, ``nu``, ``R``, ``tau0``, ``dgamma0``,
-        ``dgamma1``, ``mu`` (with a friction law that has Coulomb's part) and the offsets ``time_offset`` (s),
+        ``dgamma1``, ``mu`` (with a friction law that has Coulomb's part), ``h`` (on a layer of finite thickness: its
+        thickness, the base kept) and the offsets ``time_offset`` (s),
         ``depth_offset`` (m).
     reference : Continuum, optional
         The continuum with its tolerances (default ``Continuum()``; ``tolerances=`` among the options says the same).
@@ -353,6 +354,11 @@ def _check_fit(job: FitJob, free: Sequence[str], progress: Callable[[str], None]
     if profile is not None and "R" in free:
         raise ValueError(f"free={list(free)!r} frees R with profile={profile!r}; allowed: the names of "
                          f"{list(FREE_NAMES)} but R (the power law's shape is c and n, R belongs to the paraboloid)")
+    layer = job.model.contact.layer
+    if not layer.is_half_space and "nu" in free:
+        raise ValueError(f"free={list(free)!r} frees nu on {layer.describe()}; allowed: the names of "
+                         f"{list(FREE_NAMES)} but nu (each ν needs the layer's tables of its own, about 4 s to build "
+                         "each: fit nu on the half-space, or give it)")
 
 
 def _problem(job: FitJob, read: Candidate, nominal: Path, free: Sequence[str], limits: Limits) -> Problem:
@@ -360,9 +366,11 @@ def _problem(job: FitJob, read: Candidate, nominal: Path, free: Sequence[str], l
     more samples than free parameters and not all of them 0."""
     start, profile, friction = job.model.params, job.model.profile, job.model.friction
     measurement = measurement_of(read, nominal, job.time_origin, job.noise)
-    free_set = free_parameters(free, start, job.bounds, nominal.duration, max(nominal.max_depth, start.d_max), friction)
+    free_set = free_parameters(free, start, job.bounds, nominal.duration, max(nominal.max_depth, start.d_max), friction,
+                               job.model.contact.layer)
     # a scenario is rebuilt per trial (its way out ends below the jump-off, which depends on the parameters)
-    problem = Problem(free_set, measurement, job.path_of, job.tolerances, limits, profile, friction)
+    problem = Problem(free_set, measurement, job.path_of, job.tolerances, limits, profile, friction,
+                      job.model.contact.layer)
     samples = sum(int(np.count_nonzero(np.isfinite(v))) for v in measurement.values.values())
     if samples <= len(free_set.names):
         raise ValueError(f"{read.source}: {samples} finite samples for {len(free_set.names)} free parameters; "
@@ -451,6 +459,8 @@ def _attrs(job: FitJob, nominal: Path, problem: Problem, solution: optimize.Opti
         attrs.update(scenario=job.model.motion.name, alpha=float(job.model.motion.alpha[0]))
     attrs.update(profile_attrs(job.model.profile))
     attrs.update(friction_attrs(free.friction_at(optimum.theta)))  # (with the fitted μ where it is free)
+    if not job.model.contact.layer.is_half_space:  # (the fitted thickness where h is free; none on the half-space)
+        attrs.update(free.layer_at(optimum.theta).to_attrs())
     return attrs
 
 

@@ -24,6 +24,7 @@ import xarray as xr
 from mdr_events.analysis.validate import one_path, one_path_job, reference_of, times_from_contact
 from mdr_events.contact import Contact
 from mdr_events.contact.friction import TAU0, FrictionLaw, friction_attrs
+from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.io.agreement import Integrated, RoundOff, register_accuracy
 from mdr_events.io.candidates import Candidate
 from mdr_events.io.datasets import register_schema, stamp
@@ -144,11 +145,12 @@ def shifted_path(path: Path, depth_offset: float) -> Path:
 
 def model_curves(params: Parameters, path: Path, times: np.ndarray, tolerances: Tolerances,
                  limits: Limits, quantities: Sequence[str], profile: SimulatedProfile = None,
-                 friction: FrictionLaw = TAU0) -> ModelCurves:
+                 friction: FrictionLaw = TAU0, layer: Layer = HALF_SPACE) -> ModelCurves:
     """The model's curves at ``times`` (s on the path's clock) by the module's rule out of contact: 0 where
     the indenter is out of the elastomer, ``nan`` (left out) before a path that starts inside it and after
-    one that ends in contact (the indenter ``profile``; ``None``: the paraboloid of ``params.R``)."""
-    return curves_of(solve_path(params, path, tolerances, limits, profile, friction), path, times, quantities)
+    one that ends in contact (the indenter ``profile``; ``None``: the paraboloid of ``params.R``; on ``layer``)."""
+    return curves_of(solve_path(params, path, tolerances, limits, profile, friction, layer=layer), path, times,
+                     quantities)
 
 
 def curves_of(solution: PathSolution, path: Path, times: np.ndarray, quantities: Sequence[str]) -> ModelCurves:
@@ -223,7 +225,8 @@ def synthetic_measurement(contact: Contact | Parameters, motion, alpha: float | 
     limits = check_limits(limits)
     times, quantities, relative_noise, time_shift = _synthetic_arguments(times, quantities, relative_noise, time_shift,
                                                                          seed, limits)
-    curves = model_curves(params, the_path, times, tolerances, limits, tuple(quantities), profile, friction).values
+    curves = model_curves(params, the_path, times, tolerances, limits, tuple(quantities), profile, friction,
+                          job.contact.layer).values
     rng = np.random.default_rng(seed)
     data = {}
     for name in quantities:

@@ -16,6 +16,7 @@ from typing import Mapping, Sequence
 import numpy as np
 
 from mdr_events.contact.friction import TAU0, FrictionLaw
+from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
 from mdr_events.validation import check_real, shown
 
@@ -23,18 +24,22 @@ __all__ = ["FreeParameters", "free_parameters", "FREE_NAMES", "LOG_SCALED", "OFF
 
 #: Free parameters fitted on a log scale (moduli, radius, critical shear stress, works of adhesion): their
 #: start must be > 0, and the fit moves them by factors.
-LOG_SCALED = ("E", "R", "tau0", "dgamma0", "dgamma1", "mu")
+LOG_SCALED = ("E", "R", "tau0", "dgamma0", "dgamma1", "mu", "h")
 #: The experiment's zero: ``time_offset`` (s; the measured clock reads it at the path's time 0, after
 #: ``time_origin``) and ``depth_offset`` (m; the path's depth zero lies this far above the real surface).
 OFFSETS = ("time_offset", "depth_offset")
 #: Every name ``free`` may hold. ``d_max`` and ``v`` are the path's, not the material's: give the path.
-FREE_NAMES = ("E", "nu", "R", "tau0", "dgamma0", "dgamma1", "mu") + OFFSETS
+FREE_NAMES = ("E", "nu", "R", "tau0", "dgamma0", "dgamma1", "mu", "h") + OFFSETS
 #: The coefficient of friction of a law with Coulomb's part (:mod:`mdr_events.contact.friction`), free beside the parameters.
 FRICTION_NAME = "mu"
-OFFSET_UNITS = {"time_offset": "s", "depth_offset": "m", "mu": "1"}
+#: The thickness of a contact's layer (``Contact.layer``), free beside the parameters on a layer of finite thickness:
+#: each trial the same tables at another ``a/h``, so a free ``h`` costs what a fixed one does.
+LAYER_NAME = "h"
+OFFSET_UNITS = {"time_offset": "s", "depth_offset": "m", "mu": "1", "h": "m"}
 OFFSET_LONG_NAMES = {"time_offset": "the measured clock's reading at the path's time 0 (after time_origin)",
                      "depth_offset": "height of the path's depth zero above the real surface",
-                     "mu": "coefficient of friction of the law's Coulomb part"}
+                     "mu": "coefficient of friction of the law's Coulomb part",
+                     "h": "thickness of the elastomer layer on its rigid base"}
 #: ``ν`` stays below 0.5 and above −1 by this much inside the fit (the bounds of :class:`Parameters`).
 NU_MARGIN = 1e-9
 #: A finite bound of an offset lies within this many of its scales (the path's duration, its deepest point):
@@ -76,6 +81,8 @@ class FreeParameters:
     depth_scale: float
     #: the friction law of the fit (``μ`` its start where free)
     friction: FrictionLaw = TAU0
+    #: the contact's layer (its thickness the start where ``h`` is free)
+    layer: Layer = HALF_SPACE
 
     def scale(self, name: str) -> float:
         """The scale of a parameter not on a log scale: the path's duration or deepest point for an offset, else 1."""
@@ -96,13 +103,14 @@ class FreeParameters:
 
     def start_values(self) -> np.ndarray:
         """The start of each free parameter in natural units (0 for an offset)."""
-        return np.array([_start_value(n, self.start, self.friction) for n in self.names])
+        return np.array([_start_value(n, self.start, self.friction, self.layer) for n in self.names])
 
     def model(self, theta: np.ndarray) -> tuple[Parameters, float, float]:
         """The parameters, time offset and depth offset at ``θ``."""
         values = dict(zip(self.names, map(float, self.to_natural(theta))))
         offsets = [values.pop(name, 0.0) for name in OFFSETS]
         values.pop(FRICTION_NAME, None)
+        values.pop(LAYER_NAME, None)
         return self.start.replace(**values) if values else self.start, offsets[0], offsets[1]
 
     def friction_at(self, theta: np.ndarray) -> FrictionLaw:
@@ -111,11 +119,20 @@ class FreeParameters:
             return self.friction
         return FrictionLaw(self.friction.law, mu=float(self.to_natural(theta)[self.names.index(FRICTION_NAME)]))
 
+    def layer_at(self, theta: np.ndarray) -> Layer:
+        """The layer at ``θ``: the start's, with the fitted thickness where ``h`` is free (its base kept)."""
+        if LAYER_NAME not in self.names:
+            return self.layer
+        return Layer(float(self.to_natural(theta)[self.names.index(LAYER_NAME)]), self.layer.base)
 
-def _start_value(name: str, start: Parameters, friction: FrictionLaw) -> float:
-    """A free parameter's start: 0 for an offset, the law's ``μ``, else the field of ``start``."""
+
+def _start_value(name: str, start: Parameters, friction: FrictionLaw, layer: Layer = HALF_SPACE) -> float:
+    """A free parameter's start: 0 for an offset, the law's ``μ``, the layer's thickness, else the field of
+    ``start``."""
     if name in OFFSETS:
         return 0.0
+    if name == LAYER_NAME:
+        return layer.thickness
     return friction.coulomb_mu if name == FRICTION_NAME else getattr(start, name)
 
 
@@ -140,7 +157,8 @@ def _check_offset_bounds(name: str, given: Sequence[float], duration: float, dep
 
 
 def free_parameters(free: str | Sequence[str], start: Parameters, bounds: Mapping[str, tuple[float, float]] | None,
-                    duration: float, depth_scale: float, friction: FrictionLaw = TAU0) -> FreeParameters:
+                    duration: float, depth_scale: float, friction: FrictionLaw = TAU0,
+                    layer: Layer = HALF_SPACE) -> FreeParameters:
     """Check ``free``, ``start`` and ``bounds`` (errors name the argument, its value and what is allowed).
 
     Parameters
@@ -155,6 +173,8 @@ def free_parameters(free: str | Sequence[str], start: Parameters, bounds: Mappin
         The path's duration (s) and deepest point (m): the scales of the offsets.
     friction : FrictionLaw
         The fit's friction law (``μ`` its start where free).
+    layer : Layer, default the half-space
+        The contact's layer (its thickness the start where ``h`` is free: only on a layer of finite thickness).
 
     Returns
     -------
@@ -182,6 +202,9 @@ def free_parameters(free: str | Sequence[str], start: Parameters, bounds: Mappin
     if FRICTION_NAME in names and not friction.uses_mu:
         raise ValueError(f"free: 'mu' is not allowed with the friction law {friction.law!r}; allowed: a law with Coulomb's "
                          "part, e.g. friction=FrictionLaw('coulomb', mu=0.3) (its mu the start)")
+    if LAYER_NAME in names and layer.is_half_space:
+        raise ValueError("free: 'h' is not allowed on the half-space; allowed: a contact on a layer of finite "
+                         "thickness, e.g. Contact.replace(h=5e-3) (its thickness the start)")
     bounds = dict(bounds or {})
     for name in bounds:
         if name not in names:
@@ -203,9 +226,9 @@ def free_parameters(free: str | Sequence[str], start: Parameters, bounds: Mappin
                                  "overlapping that range")
             low, high = max(low, given[0]), min(high, given[1])
         shown_bounds = f"({given[0]!r}, {given[1]!r})" if name in bounds else f"({low!r}, {high!r})"
-        value = _start_value(name, start, friction)
+        value = _start_value(name, start, friction, layer)
         if name in LOG_SCALED and not value > 0:
-            where = "friction.mu" if name == FRICTION_NAME else f"start.{name}"
+            where = {FRICTION_NAME: "friction.mu", LAYER_NAME: "layer.thickness"}.get(name, f"start.{name}")
             raise ValueError(f"{where}={value!r} is not allowed for a free {name}; allowed: > 0 (it is fitted "
                              "on a log scale)")
         if not low <= value <= high or not low < high:
@@ -213,7 +236,7 @@ def free_parameters(free: str | Sequence[str], start: Parameters, bounds: Mappin
                              f"{value!r}{_in_unit(name)}; allowed: lower < upper with the start between them")
         lower.append(low)
         upper.append(high)
-    return FreeParameters(names, start, np.array(lower), np.array(upper), duration, depth_scale, friction)
+    return FreeParameters(names, start, np.array(lower), np.array(upper), duration, depth_scale, friction, layer)
 
 
 def _exp(value: float) -> float:

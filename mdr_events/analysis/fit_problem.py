@@ -24,6 +24,7 @@ from scipy import optimize
 from mdr_events.analysis.fit_data import Measurement, ModelCurves, model_curves, shifted_path
 from mdr_events.analysis.fit_parameters import FreeParameters
 from mdr_events.contact.friction import TAU0, FrictionLaw
+from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.limits import Limits
 from mdr_events.models.continuum import Tolerances
 from mdr_events.models.indenters import SimulatedProfile
@@ -55,9 +56,11 @@ class Problem:
 
     def __init__(self, free: FreeParameters, measurement: Measurement, path_of: Callable[[Parameters], Path],
                  tolerances: Tolerances, limits: Limits, profile: SimulatedProfile = None,
-                 friction: FrictionLaw = TAU0):
+                 friction: FrictionLaw = TAU0, layer: Layer = HALF_SPACE):
         self.free, self.measurement, self.path_of = free, measurement, path_of
         self.tolerances, self.limits, self.profile, self.friction = tolerances, limits, profile, friction
+        #: the body (its thickness the free parameter's ``h`` where it is free: :meth:`FreeParameters.layer_at`)
+        self.layer = layer
         self.solves = 0
         self.quantities = tuple(measurement.values)
         #: least_squares asks for the Jacobian where it just evaluated the residuals: the last (θ, curves, r)
@@ -71,7 +74,7 @@ class Problem:
             friction = self.free.friction_at(theta)
             path = shifted_path(self.path_of(params), depth_offset)
             return model_curves(params, path, self.measurement.path_time - time_offset, self.tolerances,
-                                self.limits, self.quantities, self.profile, friction)
+                                self.limits, self.quantities, self.profile, friction, self.free.layer_at(theta))
         except (ValueError, RuntimeError) as error:
             trial = ", ".join(f"{name}={value:.6g}" for name, value in zip(self.free.names,
                                                                              self.free.to_natural(theta)))

@@ -272,7 +272,8 @@ def _first_events(solution, path: Path) -> dict[str, object]:
 def continuum_quantities(model: ModelJob, path: Path, method: Continuum, limits: Limits,
                          times: np.ndarray | None) -> tuple[dict[str, float], np.ndarray | None]:
     """A run's quantities from the exact solution (its extrema and event log), and its history at ``times``."""
-    solution = solve_path(model.params, path, method.tolerances, limits, model.profile, model.friction)
+    solution = solve_path(model.params, path, method.tolerances, limits, model.profile, model.friction,
+                          layer=model.contact.layer)
     scan = scan_spans(solution)  # one scan serves every extremum
     out = {"normal_force_min": extremum(solution, "normal_force", largest=False, scan=scan)[1],
            "tangential_force_max": max(abs(extremum(solution, "tangential_force", largest=True, scan=scan)[1]),

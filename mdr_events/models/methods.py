@@ -24,10 +24,12 @@ import xarray as xr
 
 from mdr_events.contact.adhesion import adhesion_attrs
 from mdr_events.contact.friction import friction_attrs
+from mdr_events.contact.model import Contact
 from mdr_events.limits import Limits
 from mdr_events.models import indenters
 from mdr_events.models.continuum import Tolerances, run_continuum
 from mdr_events.models.continuum.edges import check_edge_known
+from mdr_events.models.continuum.media import check_law
 from mdr_events.models.continuum.extrema import solution_extrema
 from mdr_events.models.discrete import check_spacing, check_thresholds_known, run_discrete
 from mdr_events.models.job import ModelJob
@@ -98,6 +100,16 @@ class Discrete:
             An adhesion law without the springs' thresholds.
         """
         check_thresholds_known(model.adhesion)
+
+    def check_layer(self, contact: Contact) -> None:
+        """Nothing beyond what the springs take (:meth:`~mdr_events.models.spring_media.LayerSprings.check`): every
+        friction law runs on a layer.
+
+        Parameters
+        ----------
+        contact : Contact
+            The physical model, on a layer of finite thickness.
+        """
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Run the cases with the springs; the dataset of :mod:`~mdr_events.models.simulation_schema` with the
@@ -201,8 +213,9 @@ class Continuum:
     """
 
     name: ClassVar[str] = "continuum"
-    #: Whether the method runs a layer of finite thickness: not yet (its spans and events assume a constant ``E*``).
-    takes_layers: ClassVar[bool] = False
+    #: Whether the method runs a layer of finite thickness (``Contact.layer``): the springs' stiffness varying with
+    #: ``ξ`` (:mod:`~mdr_events.models.continuum.media`), the friction law ``"tau0"`` alone there.
+    takes_layers: ClassVar[bool] = True
     tolerances: Tolerances = Tolerances()
     samples: int | None = None
     t: np.ndarray | None = None
@@ -247,6 +260,23 @@ class Continuum:
             An adhesion law without an edge rule.
         """
         check_edge_known(model.adhesion)
+        self.check_layer(model.contact)
+
+    def check_layer(self, contact: Contact) -> None:
+        """Refuse on a layer of finite thickness a friction law the continuum does not run there
+        (:func:`~mdr_events.models.continuum.media.check_law`: ``"tau0"`` alone).
+
+        Parameters
+        ----------
+        contact : Contact
+            The physical model.
+
+        Raises
+        ------
+        ValueError
+            A law with Coulomb's part on a layer of finite thickness.
+        """
+        check_law(contact.friction, contact.layer)
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Solve the cases exactly; the dataset of :mod:`~mdr_events.models.simulation_schema` with the event log,
@@ -269,11 +299,15 @@ class Continuum:
         self.check_model(model)
         params, profile, friction = model.params, model.profile, model.friction
         tolerances = self.tolerances
+        layer = model.contact.layer
         raw = run_continuum(params, cases.paths, self.samples if self.t is None else self.t, tolerances, limits,
-                            profile, friction, model.adhesion)
+                            profile, friction, model.adhesion, layer)
+        # (the half-space stamps no layer, as Contact.to_attrs: its results are those of before)
+        layer_attrs = {} if layer.is_half_space else layer.to_attrs()
         attrs = dict(method=self.name, scenario=model.scenario,
                      rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
-                     content=SIMULATION_CONTENT, **indenters.profile_attrs(profile), **friction_attrs(friction))
+                     content=SIMULATION_CONTENT, **indenters.profile_attrs(profile), **friction_attrs(friction),
+                     **layer_attrs)
         extrema = [solution_extrema(solution) for solution in raw["solutions"]]
         return continuum_dataset(params, cases, raw["time"], raw, raw["events"], extrema, **attrs)
 

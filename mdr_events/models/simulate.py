@@ -81,10 +81,11 @@ def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any]) -
 
 def check_layer_taken(contact: Contact, motion: Motion, method: Method, where: str | None = None) -> Contact:
     """``contact`` if ``method`` runs its body along ``motion``: the half-space always; a layer of finite thickness
-    with the discrete method only (the continuum's one line names it:
-    :func:`~mdr_events.contact.model.check_half_space`), and there what its springs take (:meth:`~mdr_events.models.spring_media.LayerSprings.check`:
-    the paraboloid or a power law, the paper's adhesion law; on a frictionless base no tangential motion). The front
-    ends call it before they write anything.
+    with a method that takes layers (both do; one that does not is refused by
+    :func:`~mdr_events.contact.model.check_half_space`), and there what its springs take
+    (:meth:`~mdr_events.models.spring_media.LayerSprings.check`: the paraboloid or a power law, the paper's adhesion
+    law; on a frictionless base no tangential motion) and what the method takes (``method.check_layer``: the continuum
+    the friction law ``"tau0"`` alone). The front ends call it before they write anything.
 
     Parameters
     ----------
@@ -124,6 +125,7 @@ def check_layer_taken(contact: Contact, motion: Motion, method: Method, where: s
     check_representable(params, profile, dataclasses.replace(contact.friction, tau0=None))
     springs = springs_of(params, profile, None, contact.layer)
     springs.check(contact.adhesion, motion.cases(params, profile, contact.friction).paths)
+    method.check_layer(contact)
     return contact
 
 

@@ -251,7 +251,7 @@ def test_a_start_of_zero_cannot_be_fitted_on_a_log_scale(paper):
 
 
 def test_every_free_name_is_documented():
-    assert set(FREE_NAMES) == {"E", "nu", "R", "tau0", "dgamma0", "dgamma1", "mu", "time_offset", "depth_offset"}
+    assert set(FREE_NAMES) == {"E", "nu", "R", "tau0", "dgamma0", "dgamma1", "mu", "h", "time_offset", "depth_offset"}
 
 
 def test_a_cone_experiment_is_fitted_with_its_indenter(paper):

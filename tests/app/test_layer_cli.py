@@ -59,9 +59,9 @@ def test_simulate_writes_a_run_on_the_layer_that_names_it(capsys, tmp_path):
     (["--h", "-1e-3"], "--h -0.001: Layer.thickness=-0.001 is not allowed"),
     (["--h", "nan"], "--h nan: Layer.thickness=nan is not allowed"),
     (["--layer-base", "glued"], "argument --layer-base: invalid choice: 'glued'; allowed: bonded, frictionless"),
-    (["--h", "5e-3", "--method", "continuum"], "is not allowed in simulate(method='continuum') yet; allowed: the "
-                                               "half-space (h = inf, Layer()) — a layer runs in simulate(..., "
-                                               "method='discrete')"),
+    (["--h", "5e-3", "--method", "continuum", "--friction", "tau0+coulomb", "--mu", "0.3"],
+     "friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded base in the continuum method; allowed: "
+     "'tau0' (the other laws run on a layer in method='discrete')"),
     (["--h", "5e-3", "--layer-base", "frictionless"], "path 0 moves the indenter tangentially"),
     (["--h", "5e-3", "--flat-punch", "1e-3"], "profile=FlatPunch(radius=0.001) is not allowed on layer h = 0.005 m"),
 ])
@@ -85,8 +85,16 @@ def test_a_bad_layer_table_is_named(tmp_path, table, fragment):
     assert fragment in str(caught.value) and "\n" not in str(caught.value)
 
 
-def test_a_study_with_a_layer_and_the_continuum_is_refused_naming_the_discrete_method(tmp_path):
-    with pytest.raises(StudyError) as caught:
-        study_of(tmp_path, '[simulation]\nscenario = "A"\nalpha = [30]\nmethod = "continuum"\n[layer]\nh = 5e-3\n')
-    assert "[simulation] Contact.layer=Layer(thickness=0.005, base='bonded') is not allowed in " \
-           "simulate(method='continuum') yet" in str(caught.value) and "method='discrete'" in str(caught.value)
+def test_a_study_with_a_layer_and_a_law_the_continuum_does_not_run_there_is_refused_naming_the_discrete_method(
+        tmp_path):
+    coulomb = '[friction]\nlaw = "tau0+coulomb"\nmu = 0.3\n'
+    for table in ('[simulation]\nscenario = "A"\nalpha = [30]\nmethod = "continuum"\n',
+                  '[validate]\nruns = ["run.csv"]\nscenario = "A"\nalpha = 30\n',
+                  '[fit]\ndata = "run.csv"\nfree = ["E"]\nscenario = "A"\nalpha = 30\n'):
+        with pytest.raises(StudyError) as caught:
+            study_of(tmp_path, f'{table}{coulomb}[layer]\nh = 5e-3\n')
+        text = str(caught.value)
+        assert f"[{table[1:table.index(']')]}] friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded " \
+               "base in the continuum method" in text and "method='discrete'" in text and "\n" not in text
+    study = study_of(tmp_path, '[simulation]\nscenario = "A"\nalpha = [30]\nmethod = "continuum"\n[layer]\nh = 5e-3\n')
+    assert study.simulation.contact.layer == Layer(5e-3)

@@ -4,6 +4,8 @@ value and what runs the normal problem on a layer."""
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -45,10 +47,6 @@ def test_a_bad_layer_value_is_refused_in_one_line(change, words):
 def _run(where):
     """The call of each entry point with the layered contact."""
     return {
-        "simulate(method='continuum')": lambda: me.simulate(LAYERED, me.Scenario("A", alpha=20), "continuum"),
-        "validate": lambda: me.validate(None, LAYERED, "A", 20.0),
-        "fit": lambda: me.fit(None, LAYERED, "A", 20.0, free=["E"]),
-        "sweep": lambda: me.sweep({"alpha": [10.0, 20.0]}, LAYERED),
         "pull_off_force": lambda: me.pull_off_force(LAYERED, 0.15),
         "jump_off": lambda: me.jump_off(LAYERED, 0.15),
         "the LAMMPS check": lambda: me.dem.lammps_check(LAYERED, "A", 20.0),
@@ -57,8 +55,7 @@ def _run(where):
     }[where]
 
 
-@pytest.mark.parametrize("where", ["simulate(method='continuum')", "validate", "fit",
-                                   "sweep", "pull_off_force", "jump_off", "the LAMMPS check",
+@pytest.mark.parametrize("where", ["pull_off_force", "jump_off", "the LAMMPS check",
                                    "the LAMMPS check (LAMMPS has no layers)"])
 def test_an_entry_point_without_layers_refuses_a_finite_one_in_one_line(where):
     with pytest.raises(ValueError) as caught:
@@ -66,19 +63,38 @@ def test_an_entry_point_without_layers_refuses_a_finite_one_in_one_line(where):
     text = str(caught.value)
     assert text.startswith("Contact.layer=Layer(thickness=0.005, base='bonded') is not allowed in ")
     assert f" in {where}" in text and "allowed: the half-space" in text and "layer_normal_curve" in text
-    assert "a layer runs in simulate(..., method='discrete')" in text
+    assert "a layer runs in simulate(...) and sweep(...) with either method" in text and "validate and fit" in text
     assert "\n" not in text
 
 
-def test_a_continuum_sweep_over_the_thickness_is_refused_naming_what_runs_it():
-    """The continuum's quantities on a layer: refused for the grid's first finite thickness, naming the discrete
-    method and the closed-form quantities (tests/analysis/test_sweep_layer.py: what runs)."""
+#: The continuum on a layer with a friction law it does not run there: each entry point that solves it.
+COULOMB = dataclasses.replace(LAYERED, friction=me.FrictionLaw("tau0+coulomb", tau0=PAPER.friction.tau0, mu=0.3))
+
+
+@pytest.mark.parametrize("call", [
+    lambda: me.simulate(COULOMB, me.Scenario("A", alpha=20), "continuum"),
+    lambda: me.validate(None, COULOMB, "A", 20.0),
+    lambda: me.fit(None, COULOMB, "A", 20.0, free=["E"]),
+    lambda: me.sweep({"alpha": [10.0, 20.0]}, COULOMB),
+], ids=["simulate", "validate", "fit", "sweep"])
+def test_the_continuum_refuses_on_a_layer_a_law_it_does_not_run_there_naming_what_runs_it(call):
+    """The continuum runs a layer with the friction law ``"tau0"`` (tests/models/test_layer_continuum.py); another
+    law there is one line naming the law, the layer and the discrete method, before anything runs."""
     with pytest.raises(ValueError) as caught:
-        me.sweep({"h": [np.inf, 1e-3, 5e-3]}, PAPER, alpha=20.0)
+        call()
     text = str(caught.value)
-    assert text.startswith("grid: Contact.layer=Layer(thickness=0.001, base='bonded') is not allowed in "
-                           "sweep(method='continuum')") and "\n" not in text
-    assert "sweep(..., method='discrete')" in text and "quantities=('critical_angle_A', 'critical_angle_B')" in text
+    assert "friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded base in the continuum method" in text
+    assert "allowed: 'tau0'" in text and "method='discrete'" in text and "\n" not in text
+
+
+def test_a_continuum_sweep_over_the_thickness_runs_each_thickness():
+    """The continuum's quantities over ``h``: each run on its own layer (``inf`` the half-space's own run)."""
+    swept = me.sweep({"h": [np.inf, 5e-3]}, PAPER, alpha=20.0, quantities=("contact_area_max",))
+    area = swept["contact_area_max"].values.ravel()
+    half = me.simulate(PAPER, me.Scenario("A", alpha=20), "continuum")
+    layer = me.simulate(LAYERED, me.Scenario("A", alpha=20), "continuum")
+    assert area[0] == float(half["contact_area_max"].values[0]) and area[1] == float(layer["contact_area_max"].values[0])
+    assert area[1] > area[0]  # (the layer's profile g = γ x²/R, γ < 1: a larger contact at the same depth, issue 34)
 
 
 def test_the_check_passes_the_half_space_through():

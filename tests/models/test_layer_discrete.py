@@ -287,12 +287,13 @@ def test_what_the_layer_does_not_take_is_refused_in_one_line(contact, words):
     assert words in str(caught.value) and "allowed:" in str(caught.value) and "\n" not in str(caught.value)
 
 
-def test_the_continuum_refuses_a_layer_naming_the_discrete_method():
+def test_the_continuum_refuses_on_a_layer_a_law_it_does_not_run_there_naming_the_discrete_method():
+    coulomb = dataclasses.replace(layered(3e-3), friction=me.FrictionLaw("coulomb", mu=0.3))
     with pytest.raises(ValueError) as caught:
-        me.simulate(layered(3e-3), me.Scenario("A", alpha=[30.0]), "continuum")
+        me.simulate(coulomb, me.Scenario("A", alpha=[30.0]), "continuum")
     text = str(caught.value)
-    assert "is not allowed in simulate(method='continuum') yet" in text and "method='discrete'" in text
-    assert "\n" not in text
+    assert "friction='coulomb' is not allowed on layer h = 0.003 m, bonded base in the continuum method" in text
+    assert "method='discrete'" in text and "\n" not in text
 
 
 @st.composite

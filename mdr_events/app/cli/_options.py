@@ -259,7 +259,7 @@ def layer_options(parser: argparse.ArgumentParser) -> None:
 
     parser.add_argument("--h", type=float, default=None, metavar="H",
                         help="the elastomer's thickness in m, a layer on a rigid base (default inf: the half-space; "
-                             "the discrete method)")
+                             "the continuum takes the friction law tau0 there)")
     parser.add_argument("--layer-base", choices=[base.value for base in LayerBase], default=None,
                         help="how the layer rests on its base (default bonded; frictionless: no tangential motion)")
 
@@ -276,6 +276,33 @@ def layer(args: argparse.Namespace):
         given = " ".join(part for part in (f"--h {h:g}" if h is not None else "",
                                            f"--layer-base {base}" if base is not None else "") if part)
         raise UsageError(f"{given}: {error}") from None
+
+
+def check_reference_layer(contact: Contact, motion, verb: str) -> None:
+    """Refuse, before anything is read, a layer the continuum reference of ``verb`` does not take (``--friction``
+    other than tau0 with ``--h``; a frictionless base on a path with tangential motion): one line.
+
+    Parameters
+    ----------
+    contact : Contact
+        The contact of the options.
+    motion : Scenario or Paths
+        The measured path.
+    verb : str
+        ``"validate"`` or ``"fit"``.
+
+    Raises
+    ------
+    UsageError
+        What the continuum does not take on the layer, naming the options.
+    """
+    from mdr_events.models.methods import Continuum
+    from mdr_events.models.simulate import check_layer_taken
+
+    try:
+        check_layer_taken(contact, motion, Continuum(), where=verb)
+    except (TypeError, ValueError) as error:
+        raise UsageError(f"--h {contact.layer.thickness:g}: {error}") from None
 
 
 def contact(args: argparse.Namespace, params: Parameters, simulated: bool = True) -> Contact:

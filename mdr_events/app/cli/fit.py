@@ -34,6 +34,7 @@ def fill(fitting: argparse.ArgumentParser) -> None:
     fitting.add_argument("--out", required=True, help="output directory")
     _options.friction_options(fitting)
     _options.profile_options(fitting)
+    _options.layer_options(fitting)
     _options.limit_options(fitting)
     _options.column_options(fitting, "measurement's")
     fitting.add_argument("--noise", default=None, metavar="Q=SIGMA,...",
@@ -84,6 +85,7 @@ def job(args: argparse.Namespace) -> FitJob:
     params, provenance = _options.measured_parameters(args)
     contact = _options.contact(args, params)  # a bad law is named before anything is written
     motion, description = _options.measured_motion(args, params, contact)
+    _options.check_reference_layer(contact, motion, "fit")
     stem = f"{Path(args.data).stem}_fit"
     try:
         check_output_stem("stem", stem)

@@ -38,6 +38,7 @@ def fill(check: argparse.ArgumentParser) -> None:
     check.add_argument("--out", required=True, help="output directory")
     _options.friction_options(check)
     _options.profile_options(check)
+    _options.layer_options(check)
     _options.limit_options(check)
     check.add_argument("--tolerance", type=float, default=1e-3,
                        help="bound on each quantity's max error relative to its range (default 1e-3)")
@@ -108,6 +109,7 @@ def job(args: argparse.Namespace) -> tuple[ValidateJob, str | None]:
     params, provenance = _options.measured_parameters(args)
     contact = _options.contact(args, params)
     motion, description = _options.measured_motion(args, params, contact)
+    _options.check_reference_layer(contact, motion, "validate")
     names = _options.pairs("--names", args.names, list(CANDIDATE_QUANTITIES))
     units = _options.pairs("--units", args.units, list(CANDIDATE_QUANTITIES))
     origin, limits = _options.time_origin(args.time_origin), _options.limits(args)

@@ -11,6 +11,10 @@ module                     one idea
 :mod:`.state`              regimes, caps, slip summaries, events, the zone table, the loop's state
 :mod:`.tolerances`         the user's :class:`Tolerances` and the named fixed ones
 :mod:`.branch`             one adhesive branch (9): depth ↔ radius, slope, integral
+:mod:`.layer_branch`       the branch of a paraboloid or power law on a layer of finite thickness
+:mod:`.media`              what the springs are made of, looked up by the body: the half-space's medium
+:mod:`.layer_media`        a layer's medium (the cap ``K a/Φ_t``, the zones' measures ``K_t/(2G*)``, the edge's
+                           weight, the branches and normal force)
 :mod:`.edges`              the edge of each adhesion law: the branches a radius grows and shrinks along
 :mod:`.anchors`            the stored anchors ``Y(ξ)``: zone sizes, the play operator's clip, the force
 :mod:`.zones`              one cap's slip zone laid out at a span's start, continued smoothly

@@ -28,6 +28,7 @@ from .state import Cap
 
 if TYPE_CHECKING:
     from .caps import Caps
+    from .media import HalfSpaceMedium
 
 
 @dataclass(frozen=True)
@@ -551,8 +552,10 @@ class AnchorMap:
                 total[inside] += np.clip(part, 0.0, np.broadcast_to(length, total.shape)[inside])
         return total
 
-    def clipped_shift_integral(self, x: float, cap_shift: float, radius: float) -> float:
-        """``∫_0^a clip(x − Y(ξ), −ū, ū) dξ`` with ``ū = cap_shift``: the springs' shifts, integrated.
+    def clipped_shift_integral(self, x: float, cap_shift: float, radius: float,
+                               medium: "HalfSpaceMedium | None" = None) -> float:
+        """``∫_0^a w(ξ) clip(x − Y(ξ), −ū, ū) dξ`` with ``ū = cap_shift``: the springs' shifts, integrated, each weighed
+        by its tangential stiffness ``w`` in units of ``G*`` (``medium``; 1 on the half-space).
 
         The springs at a bound give ``±ū`` times their length exactly; only those inside the window are
         differences ``x − Y``. (The same integral as ``x a − ∫ clip(Y, x − ū, x + ū)``, which loses the
@@ -567,12 +570,18 @@ class AnchorMap:
             The cap ``ū = K a`` (m).
         radius : float
             The contact radius ``a`` (m).
+        medium : HalfSpaceMedium, optional
+            What the springs are made of (:mod:`.media`; default the half-space, every ``w = 1``).
 
         Returns
         -------
         float
             The integral (m²).
         """
+        from .media import HALF_SPACE_MEDIUM
+
+        medium = HALF_SPACE_MEDIUM if medium is None else medium
+        measure = medium.measure
         lower, upper = x - cap_shift, x + cap_shift
         total = 0.0
         for p in self.in_contact(radius):
@@ -580,15 +589,17 @@ class AnchorMap:
             if end <= p.start:
                 continue
             if p.constant:
-                total += (end - p.start) * min(max(x - p.x0, -cap_shift), cap_shift)
+                total += measure(p.start, end) * min(max(x - p.x0, -cap_shift), cap_shift)
                 continue
             # the piece is monotone: its springs are at one bound up to the first cut, at the other beyond
             # the second; a rising piece has its low anchors (shift +ū) first
             start_bound, end_bound, start_shift = (lower, upper, cap_shift) if p.ratio > 0 else (upper, lower, -cap_shift)
             first = min(max(self.inverse(p, start_bound), p.start), end)
             second = min(max(self.inverse(p, end_bound), p.start), end)
-            inside = x * (second - first) - self.integral(p, first, second) if second > first else 0.0
-            total += start_shift * (first - p.start) + inside - start_shift * (end - second)
+            inside = 0.0
+            if second > first:
+                inside = x * measure(first, second) - medium.piece_integral(self, p, first, second)
+            total += start_shift * measure(p.start, first) + inside - start_shift * measure(second, end)
         return total
 
     def coulomb_shift_integral(self, x: float, caps: "Caps", depth: float, radius: float) -> float:
@@ -676,7 +687,7 @@ class AnchorMap:
         """
         if not a > 0 or not self.pieces:
             return 0.0
-        if caps.kappa == 0.0:
-            return 2.0 * G_star * self.clipped_shift_integral(x, caps.K * a, a)
+        if caps.kappa == 0.0:  # (on a layer ū = K a/Φ_t and each spring weighs w = k_t/G*: caps.medium)
+            return 2.0 * G_star * self.clipped_shift_integral(x, caps.centre_shift(a, depth), a, caps.medium)
         return 2.0 * G_star * self.coulomb_shift_integral(x, caps, depth, a)
 

@@ -139,6 +139,21 @@ class Branch:
         """
         return a**2 / self.params.R
 
+    def normal_force_slope(self, a: float) -> float:
+        """``dF_N/da`` along this branch over ``2E*``: ``d + a d' − g(a)`` (10), the springs all alike.
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The slope over ``2E*`` (m).
+        """
+        return self.depth(a) + a * self.slope(a) - self.depth_term(a)
+
     def depths(self, a: np.ndarray) -> np.ndarray:
         """:meth:`depth` for an array of radii (vectorised).
 

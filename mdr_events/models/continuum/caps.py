@@ -29,6 +29,8 @@ from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch
 from mdr_events.theory import mindlin, power_law
 
+from .media import HALF_SPACE_MEDIUM, HalfSpaceMedium
+
 
 class Caps(NamedTuple):
     """``ū(ξ) = K a + κ (d − g(ξ))``: the two parts of a friction law's cap."""
@@ -37,6 +39,8 @@ class Caps(NamedTuple):
     K: float
     #: Coulomb's cap per unit of compression, ``μ E*/G*`` (0 without it)
     kappa: float
+    #: what the springs are made of (:mod:`.media`): on a layer ``τ0``'s part is ``ū(a) = K a/Φ_t(a/h)``
+    medium: HalfSpaceMedium = HALF_SPACE_MEDIUM
 
     @property
     def frictionless(self) -> bool:
@@ -47,15 +51,15 @@ class Caps(NamedTuple):
         """The cap of the spring at the centre, ``K a + κ max(d, 0)``, by which each level stands off ``x`` (in
         tension, ``d < 0``: an adhesive flat punch held above the surface, ``K a`` alone)."""
         if not self.kappa:
-            return self.K * radius
+            return self.medium.shift(self.K, radius)
         pressed = (depth if depth > 0.0 else 0.0) if type(depth) is float else np.maximum(depth, 0.0)
         return self.K * radius + self.kappa * pressed
 
 
-def caps_of(friction: FrictionLaw, params: Parameters) -> Caps:
-    """The parts of ``friction``'s caps for the material of ``params``."""
+def caps_of(friction: FrictionLaw, params: Parameters, medium: HalfSpaceMedium = HALF_SPACE_MEDIUM) -> Caps:
+    """The parts of ``friction``'s caps for the material of ``params`` in ``medium`` (default the half-space)."""
     K = power_law.cap_per_radius(params) if friction.uses_tau0 else 0.0
-    return Caps(K, mindlin.coulomb_cap_ratio(friction, params))
+    return Caps(K, mindlin.coulomb_cap_ratio(friction, params), medium)
 
 
 def compressed_zone_alone(caps: Caps, dgamma0: float, dgamma1: float) -> bool:

@@ -8,15 +8,15 @@ from typing import NamedTuple
 
 import numpy as np
 
-from mdr_events.theory import analytic, power_law, symbolic, tabulated
 from mdr_events.contact.friction import TAU0, FrictionLaw
+from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, TabulatedProfile
 from mdr_events.models.paths import Path
 from mdr_events.contact.adhesion import AdhesionLaw, law_of
 from .branch import Branch, make_branch
-from .edges import edge_of
 from .caps import Caps, caps_of, compressed_zone_alone, split_regions
+from .media import medium_of
 from .state import Regime
 from .tolerances import NEGLIGIBLE_SHARE, PIECE_SHARE, SEGMENT_RESOLUTION, Tolerances
 
@@ -36,6 +36,8 @@ class ContinuumModel:
         The friction law.
     adhesion : Adhesion, optional
         The adhesion law; ``None``: the paper's law of ``params.dgamma0`` and ``params.dgamma1``.
+    layer : Layer, default the half-space
+        The body (:mod:`.media`: on a layer of finite thickness the springs' stiffness varies with ``ξ``).
 
     Attributes
     ----------
@@ -51,7 +53,11 @@ class ContinuumModel:
     caps : Caps
         Its two parts, ``ū(ξ) = K a + κ (d − g(ξ))``.
     K : float
-        Critical shift per contact radius of ``τ0``'s part, ``ū(a) = K a`` (13) (0 for ``"coulomb"``).
+        Critical shift per contact radius of ``τ0``'s part on the half-space, ``ū(a) = K a`` (13) (0 for
+        ``"coulomb"``; on a layer ``ū(a) = K a/Φ_t(a/h)``, :attr:`medium`).
+    medium : HalfSpaceMedium
+        What the springs are made of (:func:`~.media.medium_of`): their cap, tangential measure, edge and normal
+        force.
     split : bool
         Both parts of the cap with adhesion on a curved indenter (:func:`~.caps.split_regions`): the compressed zone and
         the tensile annulus are laid out apart (:mod:`.split_span`).
@@ -70,14 +76,15 @@ class ContinuumModel:
     """
 
     def __init__(self, params: Parameters, tolerances: Tolerances, profile: PowerLaw | FlatPunch | None = None,
-                 friction: FrictionLaw = TAU0, adhesion: AdhesionLaw | None = None):
+                 friction: FrictionLaw = TAU0, adhesion: AdhesionLaw | None = None, layer: Layer = HALF_SPACE):
         self.params = params
         self.tolerances = tolerances
         self.profile = profile
         self.friction = friction
         self.adhesion = law_of(params, adhesion)
-        self.grow, self.shrink = edge_of(self.adhesion, params, profile)
-        self.caps = caps_of(friction, params)
+        self.medium = medium_of(params, friction, profile, layer)
+        self.grow, self.shrink = self.medium.edge(self.adhesion, params, profile)
+        self.caps = caps_of(friction, params, self.medium)
         self.zone_params = None
         dgammas = (getattr(self.adhesion, "dgamma0", 0.0), getattr(self.adhesion, "dgamma1", 0.0))
         if compressed_zone_alone(self.caps, *dgammas):
@@ -89,7 +96,8 @@ class ContinuumModel:
 
     def normal_force(self, depth, radius):
         r"""``F_N`` (10) of the springs in ``|x| < a`` at depth ``d``, vectorised, for the model's profile (the flat
-        punch's ``2 E* a d``, ``a`` its radius in contact and 0 out of it).
+        punch's ``2 E* a d``, ``a`` its radius in contact and 0 out of it; on a layer ``F₀(a) + K(a)(d − g(a))``,
+        :meth:`~.media.HalfSpaceMedium.normal_force`).
 
         .. math:: F_N = 2 E^* \int_0^a \left(d - g(x)\right) \mathrm{d}x \qquad (10)
 
@@ -105,13 +113,7 @@ class ContinuumModel:
         float or numpy.ndarray
             ``F_N`` (N; negative: tensile).
         """
-        if self.profile is None:
-            return analytic.normal_force(depth, radius, self.params)
-        if isinstance(self.profile, FlatPunch):
-            return symbolic.relation("flat_punch_normal_force").numeric(depth, radius, self.params.E_star)
-        if isinstance(self.profile, TabulatedProfile):
-            return tabulated.normal_force(depth, radius, self.profile, self.params)
-        return power_law.normal_force(depth, radius, self.profile, self.params)
+        return self.medium.normal_force(self.params, self.profile, depth, radius)
 
     def branch(self, regime: Regime) -> Branch:
         """The branch a moving radius follows in ``regime`` (GROWING or SHRINKING).

@@ -18,6 +18,7 @@ from mdr_events.models.paths import Path
 from mdr_events.models.indenters import SimulatedProfile, check_reach, check_simulated_profile
 from mdr_events.contact.adhesion import AdhesionLaw
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
+from mdr_events.contact.layer import HALF_SPACE, Layer
 from .anchors import AnchorMap, Piece
 from .compressed import attach_compressed_zone
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
@@ -35,7 +36,8 @@ from .zones import lay_out_zones
 
 def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Tolerances(),
                limits: Limits = DEFAULT_LIMITS, profile: SimulatedProfile = None,
-               friction: FrictionLaw | str | None = None, adhesion: AdhesionLaw | None = None) -> PathSolution:
+               friction: FrictionLaw | str | None = None, adhesion: AdhesionLaw | None = None,
+               layer: Layer = HALF_SPACE) -> PathSolution:
     """Integrate the continuum model along ``path`` (see :mod:`mdr_events.models.continuum`) for the indenter
     ``profile`` (``None``: the paper's paraboloid of ``params.R``), the friction law ``friction`` (``None``:
     the paper's ``"tau0"``; both parts with adhesion on a curved indenter: two regions, :mod:`.split_span`) and the
@@ -58,6 +60,8 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
         The friction law; ``None``: the paper's ``"tau0"``.
     adhesion : Adhesion, optional
         The adhesion law; ``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``.
+    layer : Layer, default the half-space
+        The body (:mod:`.media`; on a layer of finite thickness the paraboloid or a power law with ``"tau0"``).
 
     Returns
     -------
@@ -76,7 +80,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                  waypoints=len(path.waypoints))
     profile = check_simulated_profile(profile)
     check_reach(params, path.max_depth, profile, "the path")
-    model = ContinuumModel(params, tolerances, profile, as_friction_law(friction), adhesion)
+    model = ContinuumModel(params, tolerances, profile, as_friction_law(friction), adhesion, layer)
     segments = kinematics(path)
     check_resolvable(model, path, segments)
     solution = PathSolution(model, t_contact=path.first_contact_time(), path=path)
@@ -107,7 +111,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     solution.end_time = (solution.spans[-1].t_end if solution.spans else solution.t_contact) - solution.t_contact
     if model.zone_params is not None:  # Coulomb's law alone with adhesion: the compressed zone's force
         attach_compressed_zone(solution, solve_path(model.zone_params, path, tolerances, limits, profile,
-                                                    model.friction))
+                                                    model.friction, layer=layer))
     return solution
 
 
@@ -256,9 +260,10 @@ def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOut
 
 
 def full_slip_force(model: ContinuumModel, radius: float, depth: float) -> float:
-    """``|F_x|`` with every spring at one cap: ``2G* K a² = τ0 π a²``, plus ``μ F_N`` (10) with Coulomb's part (0 in
+    """``|F_x|`` with every spring at one cap: ``2G* K a² = τ0 π a²`` (on a layer too, ``K_t(a) ū(a)``; 0 on a
+    frictionless base: :meth:`~.media.HalfSpaceMedium.full_slip_force`), plus ``μ F_N`` (10) with Coulomb's part (0 in
     tension: the adhesive flat punch above the surface, ``flat_punch_full_slip_force``)."""
-    force = 2.0 * model.params.G_star * model.K * radius**2
+    force = model.medium.full_slip_force(model.params.G_star, model.K, radius)
     if model.caps.kappa and depth > 0.0:
         force += model.friction.coulomb_mu * float(model.normal_force(depth, radius))
     return force
@@ -298,7 +303,7 @@ BYTES_PER_SAMPLE = 128
 def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | int = 2001,
                   tolerances: Tolerances = Tolerances(), limits: Limits = DEFAULT_LIMITS,
                   profile: SimulatedProfile = None, friction: FrictionLaw | str | None = None,
-                  adhesion: AdhesionLaw | None = None) -> dict:
+                  adhesion: AdhesionLaw | None = None, layer: Layer = HALF_SPACE) -> dict:
     """Solve every path (:func:`solve_path`) and fill a common time grid: the output ``times``, or as many samples
     as ``times`` says spread to the longest run.
 
@@ -322,6 +327,8 @@ def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | int
         The friction law; ``None``: the paper's ``"tau0"``.
     adhesion : Adhesion, optional
         The adhesion law; ``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``.
+    layer : Layer, default the half-space
+        The body.
 
     Returns
     -------
@@ -338,7 +345,7 @@ def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | int
     n_time = samples if samples is not None else len(times)
     limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
                  memory=n_time * len(paths) * BYTES_PER_SAMPLE)
-    solutions = [solve_path(params, path, tolerances, limits, profile, friction, adhesion) for path in paths]
+    solutions = [solve_path(params, path, tolerances, limits, profile, friction, adhesion, layer) for path in paths]
     if samples is not None:
         longest = max(solution.end_time for solution in solutions)
         times = np.linspace(0.0, longest * (1.0 + 1.0 / samples), samples)

@@ -4,6 +4,10 @@ The force obeys
 
     dF_x/dt = 2G* [ (n₊ − n₋) dū/dt + (a − n₊ − n₋) dx/dt + (da/dt) u(a) ],
 
+on a layer of finite thickness ``2G* [(n₊ − n₋) dū/dt + (M(a) − n₊ − n₋) dx/dt + w(a) (da/dt) u(a)]`` with the zones'
+sizes their springs' measures ``n = ∫ w dξ``, ``M(a) = K_t(a)/(2G*)``, ``w = k_t/G*`` and ``ū = K a/Φ_t(a/h)``
+(``layer_continuum_force_rate``; :mod:`.media`),
+
 (``dū/dt = K ȧ + κ ∂d/∂t``: a pinned span's caps follow the depth, ``κ v_d`` while pressed, 0 in tension)
 
 with ``n₊``, ``n₋`` the sizes of the slip zones at the caps ``u = +ū`` and ``u = −ū`` (their springs
@@ -158,6 +162,8 @@ class SpanIntegrator:
         self.K = model.K
         #: the friction law's caps; Coulomb's cap per compression (0: ``τ0`` alone, the levels ``x ∓ K a``)
         self.caps, self.kappa = model.caps, model.caps.kappa
+        #: what the springs are made of: their cap's slope ``dū/da``, measure and density (:mod:`.media`)
+        self.medium = model.caps.medium
         self.G2 = 2.0 * model.params.G_star
         self.moving = span.regime in (Regime.GROWING, Regime.SHRINKING)
         self.shrinking = span.regime is Regime.SHRINKING
@@ -290,10 +296,12 @@ class SpanIntegrator:
             # Coulomb's caps alone: the rate's sign is that of cap · v_x − κ v_d, constant on the segment (times
             # ∂d/∂a it would vanish at a = 0, where a contact without adhesion ends: no turn there)
             return cap * self.segment.vx - self.kappa * self.segment.vd
-        slope = self.branch.slope(var * self.scale)
+        a = var * self.scale
+        slope = self.branch.slope(a)
         if self.kappa:
             return (cap * self.segment.vx - self.kappa * self.segment.vd) * slope - self.K * self.segment.vd
-        return cap * self.segment.vx * slope - self.K * self.segment.vd
+        # (layer_continuum_level_rate: σ v_x ∂d/∂a − ū'(a) v_d; ū' = K on the half-space)
+        return cap * self.segment.vx * slope - self.medium.shift_slope(self.K, a) * self.segment.vd
 
     def may_push(self, cap: Cap) -> bool:
         """Whether the cap's level can move towards its springs during the span: its rate is positive at
@@ -349,20 +357,20 @@ class SpanIntegrator:
         shift = self.caps.centre_shift(a, segment.d(t))
         positive = self.positive.size(x - shift, a)
         negative = self.negative.size(x + shift, a)
-        sticking = a - positive - negative
+        sticking = self.medium.measure(0.0, a) - positive - negative
         if not self.moving:  # a pinned radius: the caps follow the depth alone, κ v_d per spring at a cap while pressed
             total = sticking * segment.vx
             if self.kappa and self.depth_rate:
                 total += (positive - negative) * self.kappa * self.depth_rate
             return [self.G2 * total]
         slope = self.branch.slope(a)
-        # the springs at a cap carry K a + κ (d − g): d/da of it is K + κ ∂d/∂a
-        cap_rate = K + self.kappa * slope if self.kappa else K
+        # the springs at a cap carry K a + κ (d − g): d/da of it is K + κ ∂d/∂a (on a layer τ0's part ū'(a))
+        cap_rate = K + self.kappa * slope if self.kappa else self.medium.shift_slope(K, a)
         # (a vertical segment drives no sticking spring, even where the slope is infinite: at a = 0 of a branch)
         drive = sticking * segment.vx * slope / segment.vd if segment.vx else 0.0
         total = (positive - negative) * cap_rate + drive
-        if self.shrinking:  # springs leave the edge with their shift
-            total += self.edge_shift(x, a)
+        if self.shrinking:  # springs leave the edge with their shift (weighed by their stiffness w(a))
+            total += self.edge_shift(x, a) * self.medium.density(a)
         return [self.G2 * total * self.scale]
 
     def edge_shift(self, x: float, a: float) -> float:
@@ -383,7 +391,7 @@ class SpanIntegrator:
         """
         for cap in Cap:
             if self.zones[cap].edge_in_zone:
-                return cap * self.K * a
+                return cap * self.medium.shift(self.K, a)
         return x - self.anchors.piece_value(self.anchors.pieces[-1], a)
 
     # --- the event functions -----------------------------------------------------------------
@@ -563,7 +571,7 @@ class SpanIntegrator:
         """
         a = self.span.pinned_radius
         positive, negative = self.positive.size(0.0, a), self.negative.size(0.0, a)
-        rate = self.G2 * (a - positive - negative) * self.segment.vx
+        rate = self.G2 * (self.medium.measure(0.0, a) - positive - negative) * self.segment.vx
         if self.kappa and self.depth_rate:  # the springs at a cap follow κ d (the flat punch pressed in or out)
             rate += self.G2 * (positive - negative) * self.kappa * self.depth_rate
         t_stop, fired = self.stop, frozenset()

@@ -115,8 +115,7 @@ def _normal_force_points(solution, span, times: tuple[float, float],
     model = solution.model
     branch = model.branch(span.regime)
 
-    def slope(a: float) -> float:  # dF_N/da over 2E*
-        return branch.depth(a) + a * branch.slope(a) - branch.depth_term(a)
+    slope = branch.normal_force_slope  # dF_N/da over 2E* (on a layer: K'(d − g) + K d', over 2E*)
 
     low, high = min(radii), max(radii)
     ends = (slope(low), slope(high))

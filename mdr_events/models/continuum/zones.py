@@ -17,6 +17,7 @@ from collections.abc import Callable
 
 from .anchors import AnchorMap, Piece
 from .caps import Caps
+from .media import HALF_SPACE_MEDIUM, HalfSpaceMedium
 from .model import Segment
 from .state import Cap, Slip, ZoneSummary
 from .tolerances import PIECE_SHARE
@@ -55,10 +56,15 @@ class ZoneLayout:
         A piece value this close beyond the level counts as reached (a front at a piece's end to the
         rounding of the root that put it there is in the next piece; a zone leaving through the edge
         is found :data:`EDGE_LEAVING_TOLERANCES` of it beyond the level, so that it has left).
+    medium : HalfSpaceMedium, default the half-space
+        What the springs are made of: the zone's size is its springs' measure (:meth:`~.media.HalfSpaceMedium.measure`,
+        the length on the half-space).
     """
 
-    def __init__(self, anchors: AnchorMap, cap: Cap, level: float, radius: float, sliding: bool, tolerance: float):
+    def __init__(self, anchors: AnchorMap, cap: Cap, level: float, radius: float, sliding: bool, tolerance: float,
+                 medium: HalfSpaceMedium = HALF_SPACE_MEDIUM):
         self.anchors, self.cap = anchors, cap
+        self.measure = measure = medium.measure
         self.sign = float(cap)
         self.pieces: list[Piece] = list(anchors.pieces)
         self.edge = len(self.pieces) - 1
@@ -96,8 +102,8 @@ class ZoneLayout:
         #: the fronts as (piece, zone towards the piece's start, the piece's end or None for the edge)
         self.fronts = [(p, p.rises_towards(cap), None if index == self.edge else p.end)
                        for index, (p, role) in enumerate(zip(self.pieces, roles)) if role is Role.FRONT]
-        self.inner_length = sum(min(p.end, radius) - p.start for index, (p, role) in enumerate(zip(self.pieces, roles))
-                                if role is Role.IN and index != self.edge)
+        self.inner_length = sum(measure(p.start, min(p.end, radius)) for index, (p, role)
+                                in enumerate(zip(self.pieces, roles)) if role is Role.IN and index != self.edge)
         edge_piece = self.pieces[self.edge]
         self.edge_in = roles[self.edge] is Role.IN
         #: the edge piece holds a front with its slip zone on the edge's side (``[ξ*, a]``)
@@ -105,7 +111,7 @@ class ZoneLayout:
 
     # --- through the span -----------------------------------------------------------------------
     def size(self, level: float, radius: float) -> float:
-        """The zone's size, continued smoothly from the layout (fronts past their pieces' ends).
+        """The zone's size (its springs' measure), continued smoothly from the layout (fronts past their pieces' ends).
 
         Parameters
         ----------
@@ -120,11 +126,12 @@ class ZoneLayout:
             The size (m).
         """
         total = self.inner_length
+        measure = self.measure
         if self.edge_in:
-            total += radius - self.pieces[self.edge].start
+            total += measure(self.pieces[self.edge].start, radius)
         for p, from_start, end in self.fronts:
             xi = self.anchors.inverse(p, level)
-            total += max(xi - p.start if from_start else (radius if end is None else end) - xi, 0.0)
+            total += max(measure(p.start, xi) if from_start else measure(xi, radius if end is None else end), 0.0)
         return total
 
     def edge_value(self, radius: float) -> float:
@@ -243,5 +250,5 @@ def lay_out_zones(anchors: AnchorMap, caps: Caps, segment: Segment, t: float, ra
     x = segment.x(t)
     shift = caps.centre_shift(radius, segment.d(t))
     tolerance = PIECE_SHARE * length_scale(anchors, shift, x, indenter_travel(segment, t, radius, depth_term))
-    return {cap: ZoneLayout(anchors.seen_by(cap, caps.kappa), cap, x - cap * shift, radius, sliding[cap], tolerance)
-            for cap in Cap}
+    return {cap: ZoneLayout(anchors.seen_by(cap, caps.kappa), cap, x - cap * shift, radius, sliding[cap], tolerance,
+                            caps.medium) for cap in Cap}

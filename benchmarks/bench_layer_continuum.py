@@ -1,0 +1,91 @@
+"""Benchmark: the continuum on a layer of finite thickness against the half-space, side by side (issue 34).
+
+Prints the median wall time of ``simulate(..., method="continuum")`` with the paper's parameters on the half-space and
+on the paper's 5 mm layer (bonded base), and their ratio (target of issue 34: a layer run at most 2× the half-space
+run, its tables precomputed and cached):
+
+- scenario A at 20° (2001 samples);
+- Fig. 8: scenario A at the eight angles 10°…80°;
+- Fig. 10: scenario B at the eight angles;
+- a fretting loop at the paper's ``d_max`` (three cycles of ±20 µm: full slip and re-stick on every reversal);
+- the frictionless base, vertically in and out (scenario A at 90°).
+
+The layer's first run of a process (the relations of ``theory/layer_continuum_symbolic.py`` lambdified, the tables
+read) is made before the timing, as the half-space's own derivations are. Beside the wall times the process's CPU
+times (``time.process_time``, medians too): on a machine shared with other work the wall time carries their load, so
+the verdict reads the CPU times' ratio.
+
+Run: ``python benchmarks/bench_layer_continuum.py [--repeat N]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import time
+
+import numpy as np
+
+import mdr_events as me
+
+from _timing import median_time
+
+#: The target of issue 34: a layer run at most this many times the half-space run.
+RATIO_TARGET = 2.0
+#: The paper's elastomer layer (m).
+PAPER_LAYER = 5e-3
+
+
+def fretting() -> me.Paths:
+    """In to the paper's ``d_max``, three tangential cycles of ±20 µm there, and out."""
+    d_max = me.Parameters.paper().d_max
+    x = np.concatenate([[0.0, 0.0], np.tile([20e-6, -20e-6], 3), [0.0, 0.0]])
+    d = np.concatenate([[-1e-6, d_max], np.full(6, d_max), [d_max, -1e-4]])
+    return me.Paths({"fretting": me.Path(np.column_stack([x, d]), me.Parameters.paper().v)})
+
+
+#: label, the motion, the base
+ROWS = [
+    ("A 20°", me.Scenario("A", alpha=[20.0]), "bonded"),
+    ("Fig. 8 (8 angles)", me.Scenario("A"), "bonded"),
+    ("Fig. 10 (8 angles)", me.Scenario("B"), "bonded"),
+    ("fretting ±20 µm, 3 cycles", fretting(), "bonded"),
+    ("A 90°, frictionless base", me.Scenario("A", alpha=[90.0]), "frictionless"),
+]
+
+
+def median_cpu_time(function, repeat: int) -> float:
+    """Median CPU time of this process in s over ``repeat`` calls of ``function``."""
+    times = []
+    for _ in range(repeat):
+        start = time.process_time()
+        function()
+        times.append(time.process_time() - start)
+    return statistics.median(times)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=7)
+    repeat = parser.parse_args().repeat
+    print(f"mdr_events {me.__version__}: continuum, paper parameters, half-space vs a {PAPER_LAYER * 1e3:g} mm layer; "
+          f"medians of {repeat} calls")
+    print(f"{'case':28s} {'half-space':>11s} {'layer':>9s} {'ratio':>6s} {'CPU: half':>10s} {'layer':>8s} {'ratio':>6s} "
+          f"target <= {RATIO_TARGET:g}")
+    for label, motion, base in ROWS:
+        half = me.Contact.paper()
+        layer = half.replace(h=PAPER_LAYER, **{"layer.base": base})
+        runs = {name: (lambda contact=contact: me.simulate(contact, motion, "continuum"))
+                for name, contact in (("half", half), ("layer", layer))}
+        for run in runs.values():
+            run()  # (derivations, tables and lambdified relations loaded)
+        times = {name: median_time(run, repeat) for name, run in runs.items()}
+        cpu = {name: median_cpu_time(run, repeat) for name, run in runs.items()}
+        ratio, cpu_ratio = times["layer"] / times["half"], cpu["layer"] / cpu["half"]
+        verdict = "ok" if cpu_ratio <= RATIO_TARGET else "over"
+        print(f"{label:28s} {times['half']:9.3f} s {times['layer']:7.3f} s {ratio:5.2f}x {cpu['half']:8.3f} s "
+              f"{cpu['layer']:6.3f} s {cpu_ratio:5.2f}x {verdict}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,367 @@
+r"""One adhesive branch of a paraboloid or power law on a layer of finite thickness: :class:`LayerBranch`.
+
+The generalized MDR's branch (generalised (9)) is ``d(a) = g(a) − sqrt(4π a Δγ/K'(a))`` with the layer's profile
+``g = κₙ c aⁿ γₙ(a/h)`` and ``K' = 2E* Θ(1; a/h)²`` (:mod:`mdr_events.theory.layer`); its depth and slope are the
+relations of :mod:`mdr_events.theory.layer_continuum_symbolic` evaluated on the tables' factors for one float
+(:class:`~mdr_events.theory.layer.scalar_factors.NormalFactors`). The radius of a depth is the root on the stable part
+(``a`` at or beyond the jump-off, ``∂d/∂a ≥ 0``) by Newton's iteration kept inside a bracket (bisection where a step
+leaves it), started from the last root found: the continuum asks for nearby depths one after the other.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+
+import numpy as np
+
+from mdr_events.contact.indenters import Paraboloid, PowerLaw
+from mdr_events.contact.layer import Layer
+from mdr_events.parameters import Parameters
+from mdr_events.theory.layer.compliance import LAMBDA_MAX
+from mdr_events.theory.layer.relations import _abel_factor, _power_law
+from mdr_events.theory.layer.scalar_factors import NormalFactors
+from mdr_events.theory.layer.tables import LAMBDA_MIN
+from mdr_events.theory import symbolic
+from mdr_events.theory.layer_continuum_symbolic import derive_continuum_model
+
+from .branch import FOLD_SHARE, Branch
+
+__all__ = ["LayerBranch", "ROOT_ITERATIONS", "RADII_RTOL"]
+
+#: The most steps of the radius's root (Newton's, or bisections where a step leaves the bracket): each bisection
+#: halves the bracket's logarithm, which starts below 60 (doublings from the jump-off to ``a/h = 64``).
+ROOT_ITERATIONS = 200
+#: How many radii's depth and slope a branch remembers (:attr:`LayerBranch._values`).
+VALUE_CACHE = 64
+#: How many roots a branch remembers to start the next one from (:meth:`LayerBranch.radius`).
+RECENT_ROOTS = 4
+#: Points per decade of the scan that brackets the jump-off (where ``∂d/∂a`` turns positive; Brent's method refines).
+_SCAN_PER_DECADE = 5
+
+
+class LayerBranch(Branch):
+    r"""The branch of work ``work`` of a paraboloid or power law on ``layer``: depth, slope, integral of a radius,
+    radius of a depth.
+
+    .. math:: d(a) = \kappa_n c\, a^n \gamma_n(a/h) - \sqrt{\frac{4\pi a\,\Delta\gamma}{K'(a)}}, \qquad
+              K'(a) = 2E^*\,\Theta(1; a/h)^2 \qquad (9)
+
+    Parameters
+    ----------
+    params : Parameters
+        The material (``E*``).
+    work : float
+        The work of adhesion ``Δγ`` (J/m²) of the branch (0: no adhesion, ``d = g(a)``).
+    indenter : Paraboloid or PowerLaw
+        The indenter.
+    layer : Layer
+        The layer (finite thickness).
+    factors : NormalFactors
+        The layer's tabulated normal factors for one float.
+
+    Raises
+    ------
+    ValueError
+        A jump-off beyond the tables (``a/h > 64``).
+    """
+
+    def __init__(self, params: Parameters, work: float, indenter: Paraboloid | PowerLaw, layer: Layer,
+                 factors: NormalFactors):
+        self.params, self.work, self.layer, self.factors = params, work, layer, factors
+        c, self.n = _power_law(indenter)
+        self.kc = _abel_factor(self.n) * c
+        relations = derive_continuum_model()
+        self._pair = relations["layer_continuum_branch_pair"].scalar
+        #: Heß's half-space prefactor ``c_H = sqrt(2π Δγ/E*)`` (8), ``Δl = c_H √a/Θ`` on the layer
+        self.hess = float(symbolic.relation("hess_max_elongation").numeric(1.0, work, params.E_star))
+        self.h = layer.thickness
+        self._profile = relations["layer_continuum_profile"].scalar
+        self._force_slope = relations["layer_continuum_normal_force_slope"].scalar
+        self._pair_array = relations["layer_continuum_branch_pair"].numeric
+        self.ceiling = LAMBDA_MAX * layer.thickness
+        #: the tables' series meets their splines at ``a/h = LAMBDA_MIN``: the slope's derivative jumps there
+        self.knots = (LAMBDA_MIN * layer.thickness,)
+        #: the last roots found, ``(depth, radius)``: the start of the next one is the nearest's (the continuum asks
+        #: for the radius of the span's depth and for those of the fronts' anchors in turn)
+        self._recent: list[tuple[float, float]] = []
+        #: the depth and slope of a radius, remembered: a right-hand side asks for both at one radius
+        self._values = functools.lru_cache(maxsize=VALUE_CACHE)(self._evaluate)
+        self.jump_off_radius = _jump_off_radius(self) if work > 0.0 else 0.0
+        self.jump_off_depth = self.depth(self.jump_off_radius)
+        self._floor = self.jump_off_radius
+
+    # --- the branch at one radius ----------------------------------------------------------------------------
+    def _evaluate(self, a: float) -> tuple[float, float]:
+        """``d(a)`` and ``∂d/∂a`` (``a > 0``; ``layer_continuum_branch_pair``)."""
+        theta, theta_slope, gamma, gamma_slope = self.factors.edge_and_profile(a)
+        return self._pair(a, self.h, self.kc, self.n, gamma, gamma_slope, self.hess, theta, theta_slope)
+
+    def depth(self, a: float) -> float:
+        """Depth of the contact of radius ``a`` on this branch (0 at ``a = 0``).
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            ``d`` (m).
+        """
+        return self._values(float(a))[0] if a > 0 else 0.0
+
+    def slope(self, a: float) -> float:
+        """``∂d/∂a`` on this branch (at ``a = 0``: ``-inf`` with adhesion, 0 without for ``n > 1``).
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The slope (1).
+        """
+        if a > 0:
+            return self._values(float(a))[1]
+        if self.work > 0.0:
+            return -math.inf
+        return 0.0 if self.n > 1.0 else (self.kc if self.n == 1.0 else math.inf)
+
+    def integral(self, a: float) -> float:
+        """``∫₀ᵃ d(ξ) dξ`` along this branch (adaptive quadrature).
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The integral (m²; 0 at ``a <= 0``).
+        """
+        from scipy.integrate import quad
+
+        return float(quad(self.depth, 0.0, a, epsabs=0.0, epsrel=1e-13, limit=200)[0]) if a > 0 else 0.0
+
+    def depth_term(self, a: float) -> float:
+        """The layer's profile at the radius, ``g(a)``: the size of the branch's terms.
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            ``g(a)`` (m).
+        """
+        return self._profile(a, self.kc, self.n, self.factors.profile_factor(a)[0]) if a > 0 else 0.0
+
+    def normal_force_slope(self, a: float) -> float:
+        r"""``dF_N/da`` along the branch over ``2E*``: ``(K'(a)(d − g(a)) + K(a) d'(a))/(2E*)``
+        (``layer_continuum_normal_force_slope``).
+
+        Parameters
+        ----------
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            The slope over ``2E*`` (m).
+        """
+        if not a > 0:  # (K(0) = 0 and d = g = 0 at the first touch)
+            return 0.0
+        depth, slope = self._values(a)
+        theta = self.factors.edge_factor(a)[0]
+        return self._force_slope(a * self.factors.stiffness_factor(a), theta * theta, depth, self.depth_term(a),
+                                 slope)
+
+    # --- radius of a depth -----------------------------------------------------------------------------------
+    def _start(self, depth: float) -> float:
+        """Newton's start for ``depth``: the radius of the nearest depth among the recent roots (none: twice the
+        largest of the floor and 1e-3 h)."""
+        best, start = math.inf, max(self._floor, 1e-3 * self.layer.thickness) * 2.0
+        for known, radius in self._recent:
+            if abs(known - depth) < best:
+                best, start = abs(known - depth), radius
+        return start
+
+    def _found(self, depth: float, radius: float) -> float:
+        """``radius``, remembered as the root of ``depth`` (the last :data:`RECENT_ROOTS` are kept)."""
+        self._recent.append((depth, radius))
+        if len(self._recent) > RECENT_ROOTS:
+            del self._recent[0]
+        return radius
+
+    def radius(self, depth: float, rtol: float) -> float:
+        """Stable-branch radius at ``depth``, converged to ``rtol`` (``nan`` below the jump-off depth; within
+        :data:`~.branch.FOLD_SHARE` of it, the jump-off radius).
+
+        Parameters
+        ----------
+        depth : float
+            The depth ``d`` (m).
+        rtol : float
+            The relative accuracy of the root.
+
+        Returns
+        -------
+        float
+            The radius ``a`` (m) or ``nan``.
+
+        Raises
+        ------
+        ValueError
+            A radius beyond the tables (``a/h > 64``).
+        """
+        if self.work == 0.0 and depth <= 0:  # no contact above the surface
+            return 0.0
+        if depth <= self.jump_off_depth:
+            if depth < self.jump_off_depth - FOLD_SHARE * abs(self.jump_off_depth):
+                return math.nan
+            return self.jump_off_radius
+        lower, upper = self._floor, math.inf
+        a, depth = self._start(depth), float(depth)
+        for _ in range(ROOT_ITERATIONS):
+            value, slope = self._evaluate(a)  # (not remembered: the iterates would push out the span's radii)
+            if value >= depth:
+                upper = min(upper, a)
+            else:
+                lower = max(lower, a)
+            step = (value - depth) / slope if slope > 0.0 else math.inf
+            guess = a - step
+            if abs(step) <= rtol * a:  # (Newton's step within the tolerance: converged, wherever the bracket is)
+                return self._found(depth, guess)
+            if not lower < guess < min(upper, self.ceiling):  # (outside the bracket: bisect it, or double it)
+                if upper == math.inf and a >= self.ceiling:
+                    raise ValueError(f"depth={depth!r} m is not allowed on {self.layer.describe()} in the continuum "
+                                     f"method: its contact radius exceeds a/h = {LAMBDA_MAX:g}; allowed: depths whose "
+                                     f"radius is below {self.ceiling:.6g} m")
+                if upper < math.inf:
+                    guess = math.sqrt(lower * upper) if lower > 0.0 else 0.5 * upper
+                else:
+                    guess = min(2.0 * a, self.ceiling)
+            if abs(guess - a) <= rtol * a or (upper < math.inf and upper - lower <= rtol * upper):
+                return self._found(depth, guess)
+            a = guess
+        raise RuntimeError(f"the radius of depth={depth!r} m on {self.layer.describe()} did not converge")
+
+    def depths(self, a: np.ndarray) -> np.ndarray:
+        """:meth:`depth` for an array of radii.
+
+        Parameters
+        ----------
+        a : array_like
+            The contact radii (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The depths (m), the shape of ``a`` (0 at ``a <= 0``).
+        """
+        a = np.asarray(a, dtype=float)
+        return np.fromiter((self.depth(float(value)) for value in a.ravel()), float, a.size).reshape(a.shape)
+
+    def _arrays(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``d(a)`` and ``∂d/∂a`` for an array of radii (> 0), from the tables' vectorised splines."""
+        theta, theta_slope, gamma, gamma_slope = self.factors.arrays(a)
+        return self._pair_array(a, self.h, self.kc, self.n, gamma, gamma_slope, self.hess, theta, theta_slope)
+
+    def radii(self, depth: np.ndarray) -> np.ndarray:
+        """:meth:`radius` for an array of depths (to :data:`RADII_RTOL`; ``nan`` below the jump-off depth): Newton's
+        iteration on all of them at once, started from a scan of the branch and kept inside its brackets.
+
+        Parameters
+        ----------
+        depth : array_like
+            The depths (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The radii (m), the shape of ``depth``.
+        """
+        depth = np.asarray(depth, dtype=float)
+        out = np.full(depth.shape, np.nan)
+        fold = self.jump_off_depth - FOLD_SHARE * abs(self.jump_off_depth)
+        out[(depth <= self.jump_off_depth) & (depth >= fold)] = self.jump_off_radius
+        if self.work == 0.0:
+            out[depth <= 0.0] = 0.0
+        inside = depth > (0.0 if self.work == 0.0 else self.jump_off_depth)
+        if np.any(inside):
+            out[inside] = self._roots(depth[inside])
+        return out
+
+    def _roots(self, depth: np.ndarray) -> np.ndarray:
+        """The radii of depths above the jump-off (:meth:`radii`)."""
+        highest = self.radius(float(np.max(depth)), RADII_RTOL)
+        lowest = self.jump_off_radius if self.jump_off_radius > 0.0 else highest * _SCAN_FLOOR
+        grid = np.geomspace(lowest, highest, _SCAN_POINTS)
+        scanned = self._arrays(grid)[0]
+        index = np.clip(np.searchsorted(scanned, depth), 1, grid.size - 1)
+        lower, upper = grid[index - 1], grid[index]
+        share = np.clip((depth - scanned[index - 1]) / (scanned[index] - scanned[index - 1]), 0.0, 1.0)
+        a = lower + share * (upper - lower)  # (the scan's chord: Newton starts close)
+        upper = np.where(depth >= scanned[-1], 2.0 * highest, upper)  # (the deepest's root, to rounding beyond it)
+        lower = np.where(depth <= scanned[0], 0.0, lower)
+        out = np.empty(depth.shape)
+        active = np.arange(depth.size)  # (the depths whose roots are still moving: the others are left alone)
+        for _ in range(ROOT_ITERATIONS):
+            value, slope = self._arrays(a)
+            target = depth[active]
+            above = value >= target
+            upper, lower = np.where(above, np.minimum(upper, a), upper), np.where(above, lower, np.maximum(lower, a))
+            with np.errstate(divide="ignore", invalid="ignore"):
+                step = np.where(slope > 0.0, (value - target) / slope, np.inf)
+            guess = a - step
+            inside = (guess > lower) & (guess < upper)
+            done = (np.abs(step) <= RADII_RTOL * a) | (upper - lower <= RADII_RTOL * upper)
+            guess = np.where(inside | (np.abs(step) <= RADII_RTOL * a), guess, 0.5 * (lower + upper))
+            out[active[done]] = guess[done]
+            moving = ~done
+            if not np.any(moving):
+                return out
+            active, a, lower, upper = active[moving], guess[moving], lower[moving], upper[moving]
+        raise RuntimeError(f"the radii of {depth.size} depths on {self.layer.describe()} did not converge")
+
+
+def _jump_off_radius(branch: LayerBranch) -> float:
+    """Where the branch's ``∂d/∂a`` turns positive, its least depth: a scan brackets it, Brent's method refines it;
+    kept per branch's values (:data:`_JUMP_OFFS`: the runs of one contact's angles share it)."""
+    from scipy.optimize import brentq
+
+    key = (branch.params.E_star, branch.params.nu, branch.work, branch.kc, branch.n, branch.layer)
+    if key in _JUMP_OFFS:
+        return _JUMP_OFFS[key]
+    scale = (2.0 * math.pi * branch.work / (branch.params.E_star * branch.kc**2)) ** (1.0 / (2.0 * branch.n - 1.0))
+    radius, step = 1e-6 * scale, 10.0 ** (1.0 / _SCAN_PER_DECADE)
+    while branch.slope(radius * step) < 0.0:
+        radius *= step
+        if radius * step > branch.ceiling:
+            raise ValueError(f"the branch of work {branch.work!r} J/m² on {branch.layer.describe()} has no jump-off "
+                             f"below a/h = {LAMBDA_MAX:g}; allowed: contacts within the layer's tables")
+    found = float(brentq(branch.slope, radius, radius * step, xtol=1e-15 * radius, rtol=4.0 * np.finfo(float).eps))
+    if len(_JUMP_OFFS) >= _JUMP_OFFS_KEPT:
+        _JUMP_OFFS.clear()
+    _JUMP_OFFS[key] = found
+    return found
+
+
+#: The jump-off radii found, by the branch's values ``(E*, ν, Δγ, κₙc, n, layer)`` (at most :data:`_JUMP_OFFS_KEPT`).
+_JUMP_OFFS: dict[tuple, float] = {}
+_JUMP_OFFS_KEPT = 64
+
+
+#: The accuracy of :meth:`LayerBranch.radii` (the default ``radius_rtol`` of the continuum's tolerances).
+RADII_RTOL = 1e-14
+#: Points of the scan that starts :meth:`LayerBranch.radii`'s iteration, and the scan's lowest radius over the highest
+#: without adhesion (the branch starts at ``a = 0`` there).
+_SCAN_POINTS, _SCAN_FLOOR = 64, 1e-9

@@ -1,0 +1,337 @@
+"""The continuum's springs on a layer of finite thickness (:mod:`.media`): bonded to its base, or resting on it without
+friction.
+
+On a layer the springs' stiffness varies with ``ξ`` (``k = K'/2``, ``k_t = K_t'/2``): a zone ``[ξ₁, ξ₂]`` weighs
+``M(ξ₂) − M(ξ₁)``, ``M(ξ) = K_t(ξ)/(2G*) = ξ Φ_t(ξ/h)``, the springs leaving the edge ``w(a) = M'(a)``, the cap of
+``τ0`` is ``ū = π a² τ0/K_t(a) = K a/Φ_t`` (the relations of :mod:`mdr_events.theory.layer_continuum_symbolic` on the
+tables' factors for one float, :mod:`mdr_events.theory.layer.scalar_factors`), the branches are the layer's
+(:class:`~.layer_branch.LayerBranch`) and the normal force is ``F₀(a) + K(a)(d − g(a))``.
+"""
+
+from __future__ import annotations
+
+import functools
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from mdr_events.contact.layer import Layer, LayerBase
+from mdr_events.parameters import Parameters
+
+from .media import FACTOR_CACHE, HalfSpaceMedium
+
+if TYPE_CHECKING:
+    from .anchors import AnchorMap, Piece
+
+__all__ = ["LayerMedium", "FrictionlessLayerMedium", "LAYER_MEDIA"]
+
+
+class LayerMedium(HalfSpaceMedium):
+    r"""A layer bonded to its rigid base: the springs' stiffness varies with ``ξ`` (generalized MDR).
+
+    .. math:: M(\xi) = \frac{K_t(\xi)}{2G^*} = \xi\,\Phi_t(\xi/h), \quad w = M', \quad
+              \bar u(a) = \frac{\pi a^2 \tau_0}{K_t(a)} = \frac{K a}{\Phi_t(a/h)} \qquad (13), (T3)
+
+    Parameters
+    ----------
+    params : Parameters
+        The material (``E*``, ``G*``, ``ν``).
+    indenter : Paraboloid or PowerLaw
+        The indenter.
+    layer : Layer
+        The layer (finite thickness).
+    """
+
+    def __init__(self, params: Parameters, indenter, layer: Layer):
+        from mdr_events.theory.layer.scalar_factors import NormalFactors
+        from mdr_events.theory.layer.relations import _power_law
+        from mdr_events.theory.layer_continuum_symbolic import derive_continuum_model
+
+        self.params, self.indenter, self.layer = params, indenter, layer
+        self.normal = NormalFactors(params.nu, layer, _power_law(indenter)[1])
+        relations = derive_continuum_model()
+        self._cap = relations["layer_continuum_cap"].scalar
+        self._cap_array = relations["layer_continuum_cap"].numeric
+        self._cap_slope = relations["layer_continuum_cap_slope"].scalar
+        self._weight = relations["layer_continuum_weight"].scalar
+        self._measure = relations["layer_continuum_measure"].scalar
+        self.tangential = self._tangential_factors(relations)
+        #: ``Φ_t`` and its slope of a radius, remembered: one right-hand side asks for the same radius several times
+        #: (the cap, its slope, the measure of the contact) and for the pieces' fixed ends again and again
+        self._factor = functools.lru_cache(maxsize=FACTOR_CACHE)(self.tangential.stiffness_factor) \
+            if self.tangential is not None else None
+
+    def _tangential_factors(self, relations):
+        from mdr_events.theory.layer.scalar_factors import TangentialFactors
+
+        return TangentialFactors(self.params.nu, self.layer, relations["layer_continuum_tangential_factor_pair"].scalar)
+
+    def shift(self, K: float, a: float) -> float:
+        """``ū(a) = K a/Φ_t(a/h)`` (``layer_continuum_cap``).
+
+        Parameters
+        ----------
+        K : float
+            The half-space's cap per radius.
+        a : float or numpy.ndarray
+            The contact radius (m), or radii (the table's vectorised factor).
+
+        Returns
+        -------
+        float or numpy.ndarray
+            ``ū`` (m).
+        """
+        if type(a) is not float:  # (a NumPy scalar as a float: its hash and arithmetic cost microseconds)
+            if np.ndim(a):
+                return self._shifts(K, a)
+            a = float(a)
+        return self._cap(a, K, self._factor(a)[0]) if a > 0 else 0.0
+
+    def _shifts(self, K: float, a: np.ndarray) -> np.ndarray:
+        """:meth:`shift` of an array of radii (the table's vectorised factor)."""
+        from mdr_events.theory.layer.tangential_tables import tangential_table
+
+        radii = np.asarray(a, dtype=float)
+        factor = tangential_table(self.params.nu).stiffness_factor(np.maximum(radii, 0.0) / self.layer.thickness)
+        return np.where(radii > 0, self._cap_array(radii, K, factor), 0.0)
+
+    def shift_slope(self, K: float, a: float) -> float:
+        """``dū/da`` (``layer_continuum_cap_slope``; ``K`` at ``a = 0``).
+
+        Parameters
+        ----------
+        K : float
+            The half-space's cap per radius.
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            ``dū/da`` (1).
+        """
+        return self._cap_slope(a, self.layer.thickness, K, *self._factor(float(a))) if a > 0 else K
+
+    def _cumulative(self, x: float) -> float:
+        return self._measure(x, self._factor(float(x))[0]) if x > 0 else 0.0
+
+    def measure(self, lower: float, upper: float) -> float:
+        """``M(upper) − M(lower)``, ``M(ξ) = K_t(ξ)/(2G*)`` (``layer_continuum_measure``).
+
+        Parameters
+        ----------
+        lower, upper : float
+            The interval's ends (m).
+
+        Returns
+        -------
+        float
+            The measure (m).
+        """
+        return self._cumulative(upper) - self._cumulative(lower)
+
+    def density(self, x: float) -> float:
+        """``w(ξ) = k_t(ξ)/G* = M'(ξ)`` (``layer_continuum_weight``).
+
+        Parameters
+        ----------
+        x : float
+            The coordinate (m).
+
+        Returns
+        -------
+        float
+            ``w`` (1).
+        """
+        return self._weight(x, self.layer.thickness, *self._factor(float(x))) if x > 0 else 1.0
+
+    def piece_integral(self, anchors: "AnchorMap", piece: "Piece", lower: float, upper: float) -> float:
+        """``∫ w(ξ) Y(ξ) dξ`` over ``[lower, upper]`` of ``piece``: ``x0 (M(upper) − M(lower))`` and, on a growth
+        piece, ``ratio ∫ w (d0 − d_ref) dξ`` by adaptive quadrature.
+
+        Parameters
+        ----------
+        anchors : AnchorMap
+            The map holding ``piece``.
+        piece : Piece
+            The piece.
+        lower, upper : float
+            The bounds (m).
+
+        Returns
+        -------
+        float
+            The integral (m²).
+        """
+        from scipy.integrate import quad
+
+        total = piece.x0 * self.measure(lower, upper)
+        if not piece.constant and upper > lower:
+            def grown(xi: float) -> float:
+                return self.density(xi) * (anchors.attach.depth(xi) - piece.d_ref)
+
+            total += piece.ratio * quad(grown, lower, upper, epsabs=0.0, epsrel=1e-12, limit=200)[0]
+        return total
+
+    def edge(self, adhesion, params: Parameters, profile):
+        """The layer's branches of ``Δγ0`` (growing) and ``Δγ1`` (shrinking) (:class:`~.layer_branch.LayerBranch`).
+
+        Parameters
+        ----------
+        adhesion : Adhesion
+            The paper's adhesion law.
+        params : Parameters
+            The material and the works.
+        profile : PowerLaw or None
+            The indenter (``None``: the paraboloid of ``params.R``).
+
+        Returns
+        -------
+        Edge
+            The growing and shrinking branches.
+        """
+        from .edges import Edge, check_edge_known
+        from .layer_branch import LayerBranch
+
+        check_edge_known(adhesion)
+        return Edge(*(LayerBranch(params, work, self.indenter, self.layer, self.normal)
+                      for work in (adhesion.dgamma0, adhesion.dgamma1)))
+
+    def normal_force(self, params: Parameters, profile, depth, radius):
+        r"""``F_N = F₀(a) + K(a)(d − g(a))`` on the layer (generalised (10),
+        :func:`~mdr_events.theory.layer.normal_force`).
+
+        Parameters
+        ----------
+        params : Parameters
+            The material.
+        profile : PowerLaw or None
+            The indenter.
+        depth, radius : float or array_like
+            ``d`` and ``a`` (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``F_N`` (N).
+        """
+        from mdr_events.theory.layer import normal_force
+
+        return normal_force(depth, radius, self.indenter, params.E_star, params.nu, self.layer)
+
+
+class FrictionlessLayerMedium(LayerMedium):
+    """A layer on a frictionless base: the normal springs of :class:`LayerMedium`, no tangential ones (``K_t = 0``).
+
+    No spring carries a shift (only paths without tangential motion run on it: ``F_x = 0``); the cap is the
+    half-space's ``K a``, never reached while the indenter does not move tangentially.
+    """
+
+    def _tangential_factors(self, relations):
+        return None
+
+    def shift(self, K: float, a: float) -> float:
+        """``K a`` (no cap is reached: no spring is shifted).
+
+        Parameters
+        ----------
+        K : float
+            The half-space's cap per radius.
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            ``K a`` (m).
+        """
+        return K * a
+
+    def shift_slope(self, K: float, a: float) -> float:
+        """``K``.
+
+        Parameters
+        ----------
+        K : float
+            The half-space's cap per radius.
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            ``K``.
+        """
+        return K
+
+    def measure(self, lower: float, upper: float) -> float:
+        """No tangential springs: 0.
+
+        Parameters
+        ----------
+        lower, upper : float
+            The interval's ends (m).
+
+        Returns
+        -------
+        float
+            0.
+        """
+        return 0.0
+
+    def density(self, x: float) -> float:
+        """No tangential springs: 0.
+
+        Parameters
+        ----------
+        x : float
+            The coordinate (m).
+
+        Returns
+        -------
+        float
+            0.
+        """
+        return 0.0
+
+    def piece_integral(self, anchors: "AnchorMap", piece: "Piece", lower: float, upper: float) -> float:
+        """No tangential springs: 0.
+
+        Parameters
+        ----------
+        anchors : AnchorMap
+            The map holding ``piece``.
+        piece : Piece
+            The piece.
+        lower, upper : float
+            The bounds (m).
+
+        Returns
+        -------
+        float
+            0.
+        """
+        return 0.0
+
+    def full_slip_force(self, G_star: float, K: float, a: float) -> float:
+        """No tangential springs: 0.
+
+        Parameters
+        ----------
+        G_star : float
+            ``G*`` (Pa).
+        K : float
+            The half-space's cap per radius.
+        a : float
+            The contact radius (m).
+
+        Returns
+        -------
+        float
+            0.
+        """
+        return 0.0
+
+
+#: The kind of a finite layer's medium, by its base.
+LAYER_MEDIA: dict[LayerBase, type] = {LayerBase.BONDED: LayerMedium, LayerBase.FRICTIONLESS: FrictionlessLayerMedium}
