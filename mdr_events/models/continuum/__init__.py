@@ -35,6 +35,7 @@ module                     one idea
 :mod:`.solution`           :class:`PathSolution` (spans and interpolants), ``evaluate``, ``extremum``,
                            ``tangential_work``
 :mod:`.rate_edge`          a rate-dependent adhesion law's edge: the radius as the state of an ODE (the normal problem)
+:mod:`.let_go`             where a receding rate-dependent edge lets go (its release rate rising as it shrinks)
 :mod:`.rate_shifts`        the springs' shifts on top of it (``τ0``'s cap, ``x`` not turning back): ``F_x`` as a closed
                            form of the edge's dense output
 :mod:`.extrema`            the exact extrema of ``F_N``, ``F_x`` and ``A`` over the run, not from output samples
@@ -64,6 +65,7 @@ from .model import MAX_TRAVEL_PER_CAP, ContinuumModel, Resolution, Segment, kine
 from .plan import Action, SpanPlan, plan_span
 from .rate_edge import EdgeEvent, EdgeEventKind, EdgeMode, EdgeRun, solve_edge
 from .rate_shifts import RateShifts, solve_rate_shifts
+from .let_go import LetGo, let_go
 from .solution import (EVALUATED_QUANTITIES, EXTREMUM_QUANTITIES, PathSolution, algebraic_tangential_force, evaluate,
                        evaluate_span, extremum, tangential_work)
 from .solve import run_continuum, solve_path
@@ -75,7 +77,7 @@ from .tolerances import NEGLIGIBLE_SHARE, Tolerances
 from .zones import Role, ZoneLayout, lay_out_zones
 
 __all__ = [
-    "Action", "AnchorMap", "EdgeEvent", "EdgeEventKind", "EdgeMode", "EdgeRun", "solve_edge", "RateShifts", "solve_rate_shifts", "Branch", "Cap", "ContactState", "ContinuumModel", "EVALUATED_QUANTITIES", "EVENT_KINDS",
+    "Action", "AnchorMap", "EdgeEvent", "EdgeEventKind", "EdgeMode", "EdgeRun", "solve_edge", "RateShifts", "solve_rate_shifts", "LetGo", "let_go", "Branch", "Cap", "ContactState", "ContinuumModel", "EVALUATED_QUANTITIES", "EVENT_KINDS",
     "EXTREMUM_QUANTITIES", "Event", "EventKind", "MAX_TRAVEL_PER_CAP", "NEGLIGIBLE_SHARE", "NO_ZONE",
     "PathSolution", "Piece", "Regime", "Resolution", "Role", "Segment", "Slip", "Span", "SpanIntegrator",
     "SpanPlan", "Tolerances", "Trigger", "ZONE_EVENTS", "ZoneLayout", "ZoneSummary", "algebraic_tangential_force",
