@@ -43,6 +43,7 @@ from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law, symbolic
 from mdr_events.validation import shown
 
+from .rate_dense import step_polynomials
 from .rate_edge import EDGE_RTOL, EdgeEventKind, EdgeRun, solve_edge
 
 __all__ = ["RateShifts", "solve_rate_shifts", "GAUSS_NODES", "BISECTIONS", "STEP_PROBES"]
@@ -114,16 +115,28 @@ class RateShifts:
     views: list = field(default_factory=list, init=False)
 
     def __post_init__(self) -> None:
+        self._corners = (self.path.corner_times, self.sign * self.path.waypoints[:, 0])
         self.views = _timeline(self.edge, self._x)
         self._candidates = _level_candidates(self)
 
     def _x(self, times) -> np.ndarray:
-        """``σx`` (m) at ``times``."""
-        return self.sign * self.path.position(times)[0]
+        """``σx`` (m) at ``times`` (the path's ``x``, its corners read once)."""
+        corners, along = self._corners
+        return np.interp(np.clip(np.asarray(times, dtype=float), corners[0], corners[-1]), corners, along)
+
+    def _radius(self, times) -> np.ndarray:
+        """The radius (m) at ``times`` (the edge's, from its steps' polynomials), 0 out of contact."""
+        times = np.asarray(times, dtype=float)
+        out = np.zeros(times.shape)
+        for view in self.views:
+            inside = (times >= view.t0) & (times <= view.t1)
+            if np.any(inside):
+                out[inside] = view.solution(times[inside])[0]
+        return out
 
     def _level(self, times) -> np.ndarray:
         """``L = σx − K a`` (m) at ``times``."""
-        return self._x(times) - self.cap * self.edge.radius(times)
+        return self._x(times) - self.cap * self._radius(times)
 
     def running_level(self, times) -> np.ndarray:
         """``M(t) = max_{τ<=t} L(τ)`` (m, in ``σ``'s coordinates) at ``times`` (s, path clock), over the contact.
@@ -225,7 +238,8 @@ def _timeline(edge: EdgeRun, position) -> list[_View]:
     the contact ended)."""
     ends = {event.time for event in edge.events if event.kind is EdgeEventKind.CONTACT_ENDS}
     views, records, block, ended = [], [], None, True
-    for t0, t1, _, solution in edge.pieces:
+    for t0, t1, _, dense in edge.pieces:
+        solution = step_polynomials(dense)
         a0, a1 = float(solution(t0)[0]), float(solution(t1)[0])
         if ended:
             records, block = [], _Block(a0, float(position(np.array([t0]))[0]))
@@ -275,7 +289,7 @@ def _knots(view: _View, corners: np.ndarray) -> np.ndarray:
 def _level_candidates(shifts: RateShifts) -> tuple[np.ndarray, np.ndarray]:
     """Times and values of ``L`` at which its running maximum can change: every knot of every piece and each step's
     interior maximum (probed at :data:`STEP_PROBES` points, refined by bounded minimisation)."""
-    corners = shifts.path.corner_times
+    corners = shifts._corners[0]
     stamps = []
     for view in shifts.views:
         knots = _knots(view, corners)
@@ -296,7 +310,7 @@ def _level_candidates(shifts: RateShifts) -> tuple[np.ndarray, np.ndarray]:
 
 def _swept(shifts: RateShifts, view: _View, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
     """``∫_lo^hi σẋ a dτ`` (m²) within one piece (elementwise; ``lo <= hi``), Gauss–Legendre on each knot interval."""
-    knots = _knots(view, shifts.path.corner_times)
+    knots = _knots(view, shifts._corners[0])
     slope = np.diff(shifts._x(knots)) / np.where(np.diff(knots) > 0.0, np.diff(knots), 1.0)
 
     def partial(ends: np.ndarray, index: np.ndarray) -> np.ndarray:  # ∫ from knots[index] to ends
