@@ -88,3 +88,18 @@ def test_the_angles_against_speed_are_labelled_and_fall_from_the_paper_s():
 def test_bad_angles_are_named():
     with pytest.raises(ValueError, match="alpha=0.0 is not allowed; allowed: a number of degrees in \\(0, 90\\]"):
         let_go_B_at_speed(PAPER, LAW, PAPER.v, 0.0)
+
+
+#: Brent's tolerance on the angle (ANGLE_XTOL, 1e-12 rad) in degrees, with room for the closed form's rounding.
+ANGLE_ATOL_DEGREES = 1e-9
+
+
+@pytest.mark.parametrize("speed", [1e-8, 1e-4])
+def test_the_flat_punch_s_angle_is_its_21_at_any_speed(speed):
+    """The punch's edge rests at its face until the release rate reaches Δγ1 (Kendall's depth, the rate-independent
+    jump-off) and lets go there at once: the angle is the closed form (21) of the punch, whatever the speed."""
+    from mdr_events.theory import power_law
+
+    punch = me.FlatPunch(5e-4)
+    angle = critical_angle_B_at_speed(PAPER, LAW, speed, profile=punch, method=METHOD)
+    assert angle == pytest.approx(power_law.critical_angle_B(punch, PAPER), abs=ANGLE_ATOL_DEGREES)

@@ -397,13 +397,15 @@ def solve_rate_shifts(params: Parameters, path: Path, law: RateDependentAdhesion
     Raises
     ------
     TypeError
-        ``path`` or ``friction`` of another type.
+        ``params``, ``path`` or ``friction`` of another type.
     ValueError
         A friction law other than ``"tau0"``, a path whose ``x`` turns back, or what ``solve_edge`` refuses.
     """
+    if not isinstance(params, Parameters):
+        raise TypeError(f"params={shown(params)} ({type(params).__name__}) is not allowed; allowed: a Parameters")
     if not isinstance(path, Path):
         raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: a Path")
-    tau0 = params.tau0 if isinstance(params, Parameters) else None
+    tau0 = params.tau0
     if friction is not None:
         if not isinstance(friction, FrictionLaw):
             raise TypeError(f"friction={shown(friction)} ({type(friction).__name__}) is not allowed; allowed: a "
