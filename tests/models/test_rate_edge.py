@@ -183,3 +183,48 @@ def test_the_edge_s_loop_takes_solve_ivp_s_steps_bit_for_bit(method):
     assert (ours.t, ours.y, ours.status) == (theirs.t[-1], theirs.y[0, -1], theirs.status)
     times = np.linspace(start, ours.t, 1000)
     np.testing.assert_array_equal(ours.sol(times), theirs.sol(times))
+
+
+#: The energy balance of an in/out cycle, both sides by Gauss–Legendre on the solver's steps (exact for their
+#: polynomials) of the same radius: they differ by the quadrature of the speed law and F_N between steps and the ODE's
+#: tolerance (1e-10), measured 1e-10 of the work.
+ENERGY_RTOL = 1e-8
+
+
+def _cycle_energies(speed: float) -> tuple[float, float]:
+    """∮ F_N dd over a vertical in/out cycle at ``speed`` (the indenter's work), and the energy the edge dissipated,
+    -∫ Γ dA (A = π a², Γ by Heß's rule), plus the springs' elastic energy E* ∫_0^a (d - g)² dx left where the run ends
+    (the last 1e-3 of the jump-in radius, whose collapse it does not follow)."""
+    law = _law(1e-6, n=0.6)
+    path = me.Path(np.array([(0.0, 0.0), (0.0, PAPER.d_max), (0.0, -300e-6)]), speed=speed)
+    run = solve_edge(PAPER, path, law)
+    nodes, weights = np.polynomial.legendre.leggauss(12)
+    work = dissipated = 0.0
+    for t0, t1, _, dense in run.pieces:
+        knots = np.unique(np.clip(np.concatenate([getattr(dense, "ts", [t0, t1]), [t0, t1], path.corner_times]), t0,
+                                  t1))
+        low, high = knots[:-1], knots[1:]
+        times = 0.5 * (low + high)[:, None] + 0.5 * (high - low)[:, None] * nodes[None, :]
+        radius = dense(times.ravel())[0].reshape(times.shape)
+        depth = path.position(times)[1]
+        rate = (path.position(high)[1] - path.position(low)[1]) / (high - low)
+        force = np.asarray(run.model.normal_force(depth, radius))
+        work += np.sum(0.5 * (high - low) * rate * (force @ weights))
+        release = rate_adhesion.release_rate(radius ** 2 / PAPER.R - depth, radius, PAPER.E_star)
+        speed_of_edge = np.nan_to_num(rate_adhesion.edge_speed(law, release), posinf=0.0)
+        dissipated -= np.sum(0.5 * (high - low) * ((release * 2.0 * math.pi * radius * speed_of_edge) @ weights))
+    end = _events(run, EdgeEventKind.CONTACT_ENDS)[0]
+    x = end.radius * 0.5 * (1.0 + nodes)
+    left = PAPER.E_star * 0.5 * end.radius * np.sum(weights * (end.depth - x ** 2 / PAPER.R) ** 2)
+    return work, dissipated + left
+
+
+def test_an_in_out_cycle_s_work_is_the_energy_the_edge_dissipated_and_grows_with_the_speed():
+    """The indenter's work over the cycle equals the edge's dissipation (Griffith's balance, closed: no elastic energy
+    before or after), and a faster cycle dissipates more."""
+    works = []
+    for speed in (1e-8, 1e-6, 1e-5):
+        work, balance = _cycle_energies(speed)
+        assert work == pytest.approx(balance, rel=ENERGY_RTOL), speed
+        works.append(work)
+    assert works[0] < works[1] < works[2]
