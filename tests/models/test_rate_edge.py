@@ -228,3 +228,34 @@ def test_an_in_out_cycle_s_work_is_the_energy_the_edge_dissipated_and_grows_with
         assert work == pytest.approx(balance, rel=ENERGY_RTOL), speed
         works.append(work)
     assert works[0] < works[1] < works[2]
+
+
+#: v_ref far below the path's speed: the advancing edge's work is about Δγ0 (v_ref/ȧ)^n, the edge's stretch its square
+#: root, so the radius at d_max lies above Hertz's by a share falling as (v_ref/v)^(n/2): by 10^0.3 = 2.0 per decade at
+#: n = 0.6 (measured 1.98).
+SLOW_LAW_DECADE = (1.6, 2.4)
+#: A refusal is "soon": the CPU time of one (measured below 1 ms; the budget of ODE evaluations, MAX_EVALUATIONS, about
+#: 4 s, where the refusal is by the budget).
+REFUSAL_CPU = 1.0
+
+
+def test_a_reference_speed_far_below_the_path_s_integrates_towards_hertz_or_is_refused_soon():
+    """Vertically in at 1 µm/s: v_ref = 1e-2 and 1e-3 of it integrate, the radius at d_max above Hertz's by a share
+    falling at the order n/2; 1e-4 to 1e-8 of it (the indenter outruns the edge's solver) are refused in one line with
+    the reason and the advice, at once."""
+    import time
+
+    path = me.Path.scenario_A(90.0, PAPER)
+    hertz = math.sqrt(PAPER.R * PAPER.d_max)
+    deepest = np.array([path.corner_times[1]])
+    shares = [solve_edge(PAPER, path, _law(ratio * PAPER.v, n=0.6)).radius(deepest)[0] / hertz - 1.0
+              for ratio in (1e-2, 1e-3)]
+    assert 0.0 < shares[1] < shares[0] and SLOW_LAW_DECADE[0] < shares[0] / shares[1] < SLOW_LAW_DECADE[1], shares
+    for ratio in (1e-4, 1e-6, 1e-8):
+        began = time.process_time()
+        with pytest.raises(ValueError) as raised:
+            solve_edge(PAPER, path, _law(ratio * PAPER.v, n=0.6))
+        assert time.process_time() - began < REFUSAL_CPU
+        text = str(raised.value)
+        assert "\n" not in text and "the indenter outran the advancing edge" in text and "allowed: " in text
+        assert "a larger v_ref" in text or "a law whose edge keeps ahead of the indenter" in text, text
