@@ -102,3 +102,21 @@ def test_what_it_does_not_follow_is_refused_by_name():
         solve_rate_shifts(PAPER, _path("A"), LAW, friction=me.FrictionLaw("coulomb", mu=0.3))
     with pytest.raises(TypeError, match="friction='tau0' \\(str\\) is not allowed"):
         solve_rate_shifts(PAPER, _path("A"), LAW, friction="tau0")
+
+
+def test_the_springs_stick_again_where_the_level_turns_back():
+    """Scenario A after its corner: x stops while the lagging edge still grows, so the level x - K a falls and the
+    springs that slid stick again (none at the cap, |F_x| below τ0 π a², the force unchanged while the edge rests);
+    once the edge recedes the level rises back to its maximum and they slide again."""
+    from mdr_events.models.continuum import EdgeEventKind
+
+    shifts = solve_rate_shifts(PAPER, _path("A"), LAW)
+    corner = shifts.path.corner_times[1]
+    receding = [event.time for event in shifts.edge.events if event.kind is EdgeEventKind.RECEDING_STARTS][0]
+    assert shifts.slip_onset_time() < corner < receding
+    between = np.linspace(corner, receding, 7)[1:-1]
+    radius = shifts.edge.radius(between)
+    assert np.all(shifts.slip_radius(between) == 0.0)
+    assert np.all(shifts.tangential_force(between) < PAPER.tau0 * np.pi * radius ** 2)
+    later = np.linspace(receding, shifts.path.duration, 50)
+    assert np.any(shifts.slip_radius(later) > 0.0)

@@ -177,7 +177,8 @@ class RateShifts:
         return self._evaluate(times)[0]
 
     def slip_radius(self, times) -> np.ndarray:
-        """The radius (m) out to which the springs slide at the cap (the central ones), 0 out of contact.
+        """The radius (m) out to which the springs are at the cap (the central ones), 0 out of contact: those pushed to
+        the running maximum ``M`` while the level ``L`` is at it (where it has turned back they stick again).
 
         Parameters
         ----------
@@ -223,7 +224,8 @@ class RateShifts:
             rows = np.flatnonzero((owner == index) & (times <= view.t1))
             if rows.size:
                 force[rows], sliding[rows] = _view_force(self, view, times[rows], levels[rows])
-        return self.sign * force, sliding
+        at_cap = self._level(times) >= levels  # (the level at its running maximum: M is L there, bit for bit)
+        return self.sign * force, np.where(at_cap, sliding, 0.0)
 
 
 def _in_contact(views: list, times: np.ndarray) -> np.ndarray:
