@@ -22,7 +22,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.analytic import critical_angle
 from mdr_events.theory.layer.curves import thickness_axis
-from mdr_events.theory.layer.slip_onset import thin_layer_onset_depth
+from mdr_events.theory.layer.slip_onset import CRITICAL_ANGLE_STEPS, thin_layer_onset_depth
 from mdr_events.validation import check_real, shown
 
 __all__ = ["critical_angles_against_thickness", "LAYER_ANGLES_CONTENT", "LAYER_ANGLE_SCENARIOS",
@@ -32,9 +32,10 @@ __all__ = ["critical_angles_against_thickness", "LAYER_ANGLES_CONTENT", "LAYER_A
 LAYER_ANGLES_CONTENT = "critical angles against the layer thickness"
 #: The scenarios of the ``scenario`` dimension (:data:`mdr_events.theory.analytic.CRITICAL_ANGLE_SCENARIOS`).
 LAYER_ANGLE_SCENARIOS = ("A", "B", "B+")
-#: What one thickness counts against :attr:`~mdr_events.Limits.steps`: six critical angles, each a scan of 400
-#: radii of the layer's tables and a bisection (about 0.05 s), checked before the first.
-STEPS_PER_THICKNESS = 1e4
+#: What one thickness counts against :attr:`~mdr_events.Limits.steps`: six critical angles (each
+#: :data:`~mdr_events.theory.layer.slip_onset.CRITICAL_ANGLE_STEPS`), checked before the first. (1e4 for all six, a
+#: sixth of their 84 ms at the discrete step's 1.5 µs, let 2000 thicknesses pass the default limits: three minutes.)
+STEPS_PER_THICKNESS = 6 * CRITICAL_ANGLE_STEPS
 register_schema(LAYER_ANGLES_CONTENT, {"critical_angle_jkr": ("scenario", "thickness"),
                                        "critical_angle_hertz": ("scenario", "thickness"),
                                        "thin_limit_A": ("thickness",)})
@@ -96,8 +97,9 @@ def critical_angles_against_thickness(contact: Contact, thicknesses, *, d_max: f
         for row, scenario in enumerate(LAYER_ANGLE_SCENARIOS):
             for kind, adhesion in (("jkr", True), ("hertz", False)):
                 angles[kind][row, column] = critical_angle(layered, scenario, adhesion, d_max=depth)
-        if math.isfinite(thickness):
-            thin[column] = math.degrees(math.atan(depth / thin_layer_onset_depth(45.0, layered)))
+        onset = thin_layer_onset_depth(45.0, layered) if math.isfinite(thickness) else math.inf
+        if math.isfinite(onset):  # (without τ0 the onset is at once: 90°, not a ZeroDivisionError)
+            thin[column] = math.degrees(math.atan(depth / onset)) if onset > 0.0 else 90.0
     words = {"jkr": "adhesive (Heß's rule, dgamma0 in, dgamma1 out)", "hertz": "non-adhesive"}
     variables = {f"critical_angle_{kind}": (("scenario", "thickness"), values,
                                             {"units": "degree", "long_name": f"critical angle, {words[kind]}"})

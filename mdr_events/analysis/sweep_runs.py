@@ -126,13 +126,17 @@ class SweepSpec:
     def check(self, values: Sequence[float]) -> None:
         """Refuse the run at ``values`` before anything runs: its scales, what its method takes, and a layer of
         finite thickness where the run cannot take it (:func:`check_layer_run`; the closed forms alone on a layer:
-        computing them is their check, a few hundredths of a second)."""
+        what they refuse, :func:`~mdr_events.theory.layer.slip_onset.check_onset_contact`, a few branch evaluations.
+        Computing them here, about 0.04 s a run, had checked a grid of 1e5 thicknesses for over an hour before its
+        first run, with no progress, and again on every resume)."""
         model, method = self.job(values)
         check_representable(model.params, model.profile, model.friction)  # (E = 1e300 was a failed run)
         method.check_model(model)
         check_layer_run(model.contact, model.motion, method, self.quantities, self.history_samples)
         if not self.runs_model and not model.contact.layer.is_half_space:
-            self._closed_forms(model)
+            from mdr_events.theory.layer.slip_onset import check_onset_contact  # (the layer's theory, when asked)
+
+            check_onset_contact(model.contact, "critical_angle", model.motion.d_max)
 
     def _closed_forms(self, model: ModelJob) -> dict[str, float]:
         return {f"critical_angle_{scenario}": closed_form_angle(model, scenario) for scenario in ("A", "B")
@@ -221,11 +225,17 @@ def closed_form_angle(model: ModelJob, scenario: str) -> float:
     Raises
     ------
     ValueError, TypeError
-        On a layer, what the layer's closed forms refuse (a frictionless base, another law or indenter, a radius
-        beyond the tables).
+        On a layer, what the layer's closed forms refuse (a radius beyond the tables). Where they have none (a
+        frictionless base, another law: :func:`~mdr_events.theory.layer.slip_onset.has_closed_forms`) the angle is
+        ``nan``, as the half-space's where a friction law has none (a sweep of the model's quantities on such a layer
+        had failed every run); a sweep of the angles alone is refused before it runs.
     """
     if model.contact.layer.is_half_space:
         return indenters.critical_angle(model.params, scenario, model.profile, model.friction)
+    from mdr_events.theory.layer.slip_onset import has_closed_forms  # (the layer's theory, when asked)
+
+    if not has_closed_forms(model.contact):
+        return math.nan
     return critical_angle(model.contact, scenario, d_max=model.motion.d_max)
 
 

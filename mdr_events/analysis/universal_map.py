@@ -24,6 +24,7 @@ has none). ``λ`` rather than ``a/h``: the contact radius is a result, different
 from __future__ import annotations
 
 import math
+import sys
 from typing import Sequence
 
 import numpy as np
@@ -64,10 +65,23 @@ def thickness_of_thinness(thinness, base: Parameters) -> np.ndarray:
     -------
     numpy.ndarray
         ``h = √(R d_max)/λ`` in m (``inf`` at ``λ = 0``: the half-space).
+
+    Raises
+    ------
+    ValueError
+        A ``λ > 0`` whose thickness overflows (``5e-324`` had given ``inf``, the half-space, with NumPy's warning:
+        beside ``λ = 0`` the grid then repeated ``h = inf``).
     """
     values = np.asarray(thinness, dtype=float)
-    with np.errstate(divide="ignore"):
-        return math.sqrt(base.R * base.d_max) / values
+    unit = math.sqrt(base.R * base.d_max)
+    with np.errstate(divide="ignore", over="ignore"):
+        thickness = unit / values
+    overflowing = np.isinf(thickness) & (values > 0.0)
+    if np.any(overflowing):
+        raise ValueError(f"thinness={float(values[overflowing][0])!r} is not allowed: its thickness √(R d_max)/λ "
+                         f"overflows; allowed: 0 (the half-space) or values of at least "
+                         f"{unit / sys.float_info.max:.3g} (R={base.R!r} m, d_max={base.d_max!r} m)")
+    return thickness
 
 
 def universal_map(slip, adhesion, base: Parameters, *, thinness: Sequence[float] | np.ndarray | None = None,

@@ -110,9 +110,16 @@ class PhaseJob:
     stem: str = "phase_diagram"
 
     def run(self, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
-        """Compute the diagram and write its files into ``out``."""
+        """Compute the diagram and write its files into ``out``: of the contact's layer where it has one (its slip
+        onset is the layer's, and the paper's speed is stamped, as :func:`~mdr_events.phase_diagram` of a contact
+        does); the half-space's of the flat record with the study's ``v`` (a study's ``[layer]`` had been dropped
+        here, and the half-space's diagram written)."""
         from mdr_events.app.result_files import write_phase_diagram
+        from mdr_events.theory.job import on_layer
 
+        if on_layer(self.contact):
+            return write_phase_diagram(self.contact, self.scenario, out, self.stem, attrs=dict(self.provenance),
+                                       d_max=self.d_max)
         return write_phase_diagram(self.contact.parameters(self.d_max, self.v), self.scenario, out, self.stem,
                                    attrs=dict(self.provenance), profile=self.contact.profile,
                                    friction=dataclasses.replace(self.contact.friction, tau0=None))

@@ -38,6 +38,7 @@ from mdr_events.io.files import (PendingFile, atomic_write_all, check_file_path,
 from mdr_events.models.motion import case_dimension
 from mdr_events.parameters import Parameters
 from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.model import Contact
 from mdr_events.contact.indenters import Profile
 from mdr_events.plotting.figures import figure_png, plot_phase_diagram, plot_simulation
 from mdr_events.theory.phase import phase_diagram
@@ -146,18 +147,20 @@ def _check_distinct_cases(dataset: xr.Dataset) -> None:
                          "distinct (each labels one case)")
 
 
-def write_phase_diagram(params: Parameters, scenario: str, out: str | os.PathLike, stem: str,
+def write_phase_diagram(params: Parameters | Contact, scenario: str, out: str | os.PathLike, stem: str,
                         keep_agreeing: bool = False, attrs: dict[str, str] | None = None,
-                        profile: Profile | None = None, friction: FrictionLaw | None = None) -> list[FileOutcome]:
-    """Compute the phase diagram (Fig. 9a/9b; of ``profile``, default the paraboloid, and of ``friction``, default the
-    paper's law) and write ``stem.nc`` (with the extra ``attrs``) and ``stem.png``.
+                        **diagram: Profile | FrictionLaw | float | None) -> list[FileOutcome]:
+    """Compute the phase diagram (Fig. 9a/9b, :func:`~mdr_events.phase_diagram` of ``params`` with the keywords
+    ``diagram``: ``profile`` and ``friction`` beside a :class:`~mdr_events.Parameters`, default the paraboloid and the
+    paper's law; ``d_max`` beside a :class:`~mdr_events.Contact`, on its layer if it has one) and write ``stem.nc``
+    (with the extra ``attrs``) and ``stem.png``.
 
     The output directory and the stem are checked first (:func:`~mdr_events.io.files.prepare_output_directory`,
     :func:`~mdr_events.io.files.check_output_stem`), and the figure is drawn before any file is written.
     """
     directory = prepare_output_directory(out, "out")
     check_output_stem("stem", stem)
-    dataset = phase_diagram(params, scenario=scenario, profile=profile, friction=friction)
+    dataset = phase_diagram(params, scenario=scenario, **diagram)
     dataset.attrs.update(attrs or {})
     return write_phase_diagram_dataset(dataset, directory, stem, keep_agreeing)
 

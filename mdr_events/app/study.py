@@ -322,6 +322,13 @@ def _phase_diagrams(tables: _Tables) -> tuple[PhaseJob, ...]:
     if len(set(scenarios)) != len(scenarios):  # (each would be computed and written again)
         raise StudyError(f"{tables.where}: [phase_diagram] scenarios={scenarios!r} repeats a scenario; allowed: each "
                          "once")
+    if scenarios and not tables.contact.layer.is_half_space:  # (what the layer's slip onset refuses, named now)
+        from mdr_events.theory.layer.slip_onset import check_onset_contact
+
+        try:
+            check_onset_contact(tables.contact, "phase_diagram", tables.params.d_max)
+        except (ValueError, TypeError) as error:
+            raise StudyError(f"{tables.where}: [phase_diagram] {error}") from None
     return tuple(PhaseJob(tables.contact, scenario, tables.params.d_max, tables.params.v, tables.provenance,
                           f"{tables.name}_phase_diagram_{scenario}") for scenario in scenarios)
 

@@ -213,14 +213,23 @@ def spring_thresholds(adhesion: AdhesionLaw, g: np.ndarray, positions: np.ndarra
 
 
 def _spring_count(springs: Springs, dx: float, max_depth: float, adhesion: AdhesionLaw) -> int:
-    """Springs per side needed to hold the largest contact of the path, with margin."""
-    count = 64
+    """Springs per side needed to hold the largest contact of the path, with margin: the springs probed and kept
+    are those the kind's relations know (:meth:`~mdr_events.models.spring_media.LayerSprings.most_springs`: on a
+    layer within the tables, whose last radius a contact near it passed by its margin, ``a/h = 64.001`` refused
+    by the tables); a contact that needs more is refused in one line."""
+    most, count = springs.most_springs(dx), 64
     while True:
-        positions = (np.arange(count) + 0.5) * dx
+        probed = min(count, most)
+        positions = (np.arange(probed) + 0.5) * dx
         attach = spring_thresholds(adhesion, springs.profile(positions), positions, springs).attach
         needed = int(attach.count(np.array([max_depth]))[0])
-        if needed < count - 1:
+        if needed < probed - 1:
             return needed + 2
+        if probed == most:
+            raise ValueError(f"dx={dx!r} m: the contact at the depth {max_depth!r} m takes {needed} springs per side "
+                             f"and the layer's tables reach {most} (a/h = 64), too few for one spring beyond its edge; "
+                             f"allowed: a smaller dx, or a depth whose contact radius stays below "
+                             f"{(most - 1) * dx:.6g} m")
         count *= 2
 
 
@@ -501,9 +510,10 @@ def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
 
 
 #: Bytes a discrete run allocates per case and time sample (the path, the kernel's output, the dataset),
-#: and per spring (thresholds, caps, the kernel's groups): measured with tracemalloc, rounded up.
+#: and per spring of the half-space (thresholds, caps, the kernel's groups): measured with tracemalloc, rounded up;
+#: each kind of springs counts its own (:attr:`~mdr_events.models.spring_media.HalfSpaceSprings.bytes_per_spring`).
 BYTES_PER_SAMPLE = 160
-BYTES_PER_SPRING = 256
+BYTES_PER_SPRING = HalfSpaceSprings.bytes_per_spring
 
 
 def _time_grid_size(paths: list[Path], dt: float) -> tuple[np.ndarray, np.ndarray, int]:
@@ -521,10 +531,11 @@ def check_discrete_size(params: Parameters, paths: list[Path], dx: float, dt: fl
     past ``limits`` (:class:`~mdr_events.limits.ResourceLimitError` saying the estimate and how to raise it)."""
     _, _, n_time = _time_grid_size(paths, dt)
     deepest = max(path.max_depth for path in paths)
-    springs = springs_of(params, profile, None, layer).branch_radius(deepest) / dx + 2
+    kind = springs_of(params, profile, None, layer)
+    springs = kind.branch_radius(deepest) / dx + 2
     limits.check(f"the discrete run (dx={dx!r} m, dt={dt:.6g} s, {len(paths)} case(s))",
                  steps=n_time * len(paths), springs=springs,
-                 memory=len(paths) * n_time * BYTES_PER_SAMPLE + springs * BYTES_PER_SPRING)
+                 memory=len(paths) * n_time * BYTES_PER_SAMPLE + springs * kind.bytes_per_spring)
 
 
 def run_discrete(

@@ -106,13 +106,22 @@ def check_layer_taken(contact: Contact, motion: Motion, method: Method, where: s
     Raises
     ------
     ValueError, TypeError
-        A layer of finite thickness with a method, indenter, adhesion law or motion that does not take it.
+        A layer of finite thickness with a method, indenter, adhesion law or motion that does not take it; scales
+        beyond double precision (:func:`~mdr_events.theory.scales.check_representable`, checked first: the springs'
+        check builds the motion's paths from them); a contact, motion or method of another kind (an
+        ``AttributeError`` before).
     """
+    if not isinstance(contact, Contact):
+        raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed in check_layer_taken; "
+                        "allowed: a mdr_events.Contact")
+    motion, method = as_motion(motion), as_method(method)
     if contact.layer.is_half_space:
         return contact
     if not method.takes_layers:
         check_half_space(contact, f"simulate(method={method.name!r})" if where is None else where)
     params, profile = contact.parameters(motion.d_max, motion.v), indenters.check_simulated_profile(contact.profile)
+    # (the scales before the paths: PowerLaw(1e3, 1e6) on a layer was an OverflowError, R = 1e308 a path's jump-off)
+    check_representable(params, profile, dataclasses.replace(contact.friction, tau0=None))
     springs = springs_of(params, profile, None, contact.layer)
     springs.check(contact.adhesion, motion.cases(params, profile, contact.friction).paths)
     return contact

@@ -24,6 +24,7 @@ from typing import Literal, NamedTuple
 
 import numpy as np
 
+from mdr_events.limits import Limits, check_limits
 from mdr_events.theory import symbolic
 from mdr_events.theory.blocks import blockwise
 from mdr_events.theory.roots import positive_polynomial_root
@@ -416,6 +417,7 @@ def d_crit(
     branch: Literal["pull-off", "indentation"] | None = None,
     *,
     d_max: float | None = None,
+    limits: Limits | None = None,
 ):
     """Indentation depth at which the springs start to slide, eqs. (17)–(21).
 
@@ -444,6 +446,10 @@ def d_crit(
     d_max : float, optional
         With a Contact: the depth of the motion (m; default the paper's 0.3 mm), which scenario B's (20), (21)
         start from.
+    limits : Limits, optional
+        On a layer: what the onsets may take, checked before they run (each angle a bisection on the layer's tables,
+        :data:`~mdr_events.theory.layer.slip_onset.ONSET_STEPS_PER_ANGLE` steps; ``None``: the defaults). The
+        half-space's closed forms take no steps.
 
     Returns
     -------
@@ -469,7 +475,7 @@ def d_crit(
     the start of pull-off; in the model it is pinned first (see
     :mod:`mdr_events` docs on the continuum method).
     """
-    params = None if on_layer(contact) else paper_parameters(contact, "d_crit", d_max)
+    params = None if on_layer(contact) else _onset_parameters(contact, "d_crit", d_max)
     check_choice("scenario", scenario, SCENARIOS)
     if scenario == "A" and branch is not None:
         raise ValueError(f"branch={branch!r} is not allowed with scenario 'A'; allowed: None (branch is for scenario B)")
@@ -480,8 +486,22 @@ def d_crit(
     if params is None:
         from mdr_events.theory.layer.slip_onset import onset_depths
 
-        return _as_output(onset_depths(alpha_deg, contact, scenario, adhesion, branch, d_max), alpha_deg)
+        return _as_output(onset_depths(alpha_deg, contact, scenario, adhesion, branch, d_max, limits=limits),
+                          alpha_deg)
+    check_limits(limits)  # (named if it is not one, though the closed forms take no steps)
     return _as_output(_slip_onset(_Tangent.of(alpha_deg), params, scenario, adhesion, branch), alpha_deg)
+
+
+def _onset_parameters(contact: ContactLike, what: str, d_max: float | None) -> "Parameters":
+    """:func:`~mdr_events.theory.job.paper_parameters` of a slip onset on the half-space, its scales checked as the
+    phase diagram's and the runs' are (:func:`~mdr_events.theory.scales.check_representable`): ``E = 1e300`` gave
+    ``d_crit = 0``, ``τ0 = 1e300`` or ``E = 1e-300`` ``inf``, each with NumPy's warning, and the layer's onsets hand
+    theirs to :func:`~mdr_events.theory.layer.slip_onset.check_onset_contact`."""
+    from mdr_events.theory.scales import check_representable  # (scales imports this module)
+
+    params = paper_parameters(contact, what, d_max)
+    check_representable(params)
+    return params
 
 
 def d_crit_curves(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A", *,
@@ -534,7 +554,7 @@ def d_crit_rows(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A", 
         scenario A, the rows of :data:`BRANCHES` in B, each equal to :func:`d_crit` of that branch (a phase diagram's
         variable as it is, without stacking 10⁵ angles' curves afresh).
     """
-    params = paper_parameters(contact, "d_crit", d_max)
+    params = _onset_parameters(contact, "d_crit", d_max)
     check_choice("scenario", scenario, SCENARIOS)
     alpha_deg = validate_alpha(alpha)
     tangent = _Tangent.of(alpha_deg)
@@ -661,7 +681,7 @@ def critical_angle(contact: ContactLike, scenario: Literal["A", "B", "B+"] = "A"
     float
         The critical angle in degrees (90 where slip always comes first).
     """
-    p = None if on_layer(contact) else paper_parameters(contact, "critical_angle", d_max)
+    p = None if on_layer(contact) else _onset_parameters(contact, "critical_angle", d_max)
     check_choice("scenario", scenario, CRITICAL_ANGLE_SCENARIOS)
     check_flag("adhesion", adhesion)
     if final_depth is not None and scenario != "B+":

@@ -130,11 +130,16 @@ def phase_diagram(
         raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: a non-empty 1-D array of angles in "
                          "degrees (None: the default grid)")
     limits = check_limits(limits)
+    coords = {"alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})}
+    if layered:  # (the layer's onsets are bisections on its tables: their work and memory per angle are their own)
+        from mdr_events.theory.layer.slip_onset import ONSET_BYTES_PER_ANGLE, ONSET_STEPS_PER_ANGLE
+
+        curves = 2 * (1 if scenario == "A" else len(analytic.BRANCHES))  # (with and without adhesion, each branch)
+        limits.check(f"the phase diagram of {angles.size} angles on {contact.layer.describe()}", samples=angles.size,
+                     steps=curves * ONSET_STEPS_PER_ANGLE * angles.size, memory=ONSET_BYTES_PER_ANGLE * angles.size)
+        return _layer_phase_diagram(contact, angles, scenario, d_max, coords, limits)
     limits.check(f"the phase diagram of {angles.size} angles", samples=angles.size,
                  memory=BYTES_PER_ANGLE * angles.size)
-    coords = {"alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})}
-    if layered:
-        return _layer_phase_diagram(contact, angles, scenario, d_max, coords)
     # (the closed forms overflow as the runs would: E = 1e-150 Pa gave d_crit = +inf at 438 angles with warnings)
     check_representable(params, profile, friction)
     if not friction.is_default:
@@ -157,7 +162,7 @@ def _paper_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, 
 
 
 def _layer_phase_diagram(contact: Contact, angles: np.ndarray, scenario: str, d_max: float | None,
-                         coords: dict) -> xr.Dataset:
+                         coords: dict, limits: Limits) -> xr.Dataset:
     """:func:`phase_diagram` of a contact on a layer of finite thickness: eqs. (17)–(21) with the layer's cap
     ``π a² τ0/K_t`` and branches (:mod:`~mdr_events.theory.layer.slip_onset`), ``nan`` where the onset lies beyond
     the layer's tables (``a/h > 64``), the layer's attributes stamped."""
@@ -166,7 +171,7 @@ def _layer_phase_diagram(contact: Contact, angles: np.ndarray, scenario: str, d_
 
     branches = (None,) if scenario == "A" else analytic.BRANCHES
     found = {(adhesive, branch): onset_depths(angles, contact, scenario, adhesive, branch or "pull-off", d_max,
-                                              past_tables=True)
+                                              past_tables=True, limits=limits)
              for branch in branches for adhesive in (False, True)}
     curves = {adhesive: np.stack([found[adhesive, branch] for branch in branches]) for adhesive in (False, True)}
     depth = PAPER_D_MAX if d_max is None else d_max

@@ -32,16 +32,20 @@ class Scale(NamedTuple):
     name: str
     value: float
     unit: str
-    failure: str = ""  #: the error computing it raised (an overflow), "" if none
+    failure: str = ""  #: why it could not be computed ("overflows (...)", "cannot be computed (...)"), "" if it was
 
 
 def _scale(name: str, unit: str, compute: Callable[[], float]) -> Scale:
-    """The scale ``compute()`` gives, or ``nan`` and why not (run inside :func:`run_scales`'s filter, where NumPy's
-    overflow is an error, as math's is)."""
+    """The scale ``name`` as ``compute`` gives it, or its failure: an overflow on the way, or a closed form refusing
+    what it was handed (a radius beyond ``SCALE_MAX`` from ``R = 1e300``: the relation's own message had named
+    ``contact_radius=4.7e+197`` before the scale that gave it, in every entry point). Run inside :func:`run_scales`'s
+    filter, where NumPy's overflow is an error, as math's is."""
     try:
         return Scale(name, float(compute()), unit)
     except (OverflowError, ZeroDivisionError, RuntimeWarning, FloatingPointError) as error:
-        return Scale(name, math.nan, unit, str(error) or type(error).__name__)
+        return Scale(name, math.nan, unit, f"overflows ({str(error) or type(error).__name__})")
+    except ValueError as error:
+        return Scale(name, math.nan, unit, f"cannot be computed ({error})")
 
 
 def run_scales(params: Parameters, profile: Profile | None = None, friction: FrictionLaw = TAU0) -> list[Scale]:
@@ -108,7 +112,7 @@ def check_representable(params: Parameters, profile: Profile | None = None, fric
         magnitude = abs(scale.value)
         if scale.failure or not math.isfinite(magnitude) or (magnitude != 0.0 and
                                                               not SCALE_MIN <= magnitude <= SCALE_MAX):
-            value = (f"overflows ({scale.failure})" if scale.failure else f"is not finite ({scale.value!r})"
+            value = (scale.failure if scale.failure else f"is not finite ({scale.value!r})"
                      if not math.isfinite(magnitude) else f"is {scale.value:.3g} {scale.unit}")
             indenter = f"R={params.R!r} m" if profile is None else f"profile={profile!r}"
             law = "" if friction.is_default else f", friction={friction!r}"

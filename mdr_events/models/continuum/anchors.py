@@ -217,7 +217,9 @@ class AnchorMap:
 
     def drop_edge_piece(self, radius: float) -> None:
         """The shrinking edge has passed the start of the last piece (to the root's rounding): forget that
-        piece and end the one before at ``radius``.
+        piece, and any before it that starts beyond ``radius`` (a sliver left by the rounding of an earlier
+        transition: ended at ``radius``, it had a negative length, and its zone's target was met again at every
+        restart, "made no progress"), and end the last one kept at ``radius``.
 
         Parameters
         ----------
@@ -225,7 +227,8 @@ class AnchorMap:
             The contact radius (m).
         """
         if len(self.pieces) > 1:
-            self.pieces, self._shared = list(self.pieces[:-2]) + [dataclasses.replace(self.pieces[-2], end=radius)], 0
+            kept = [piece for piece in self.pieces[:-1] if piece.start < radius] or [self.pieces[0]]
+            self.pieces, self._shared = kept[:-1] + [dataclasses.replace(kept[-1], end=radius)], 0
 
     def clip(self, lower: float, upper: float, radius: float) -> None:
         """Materialise the play operator: ``Y ← clip(Y, lower, upper)`` on ``[0, radius]``.

@@ -54,6 +54,9 @@ _SCAN_BELOW = 1e-4
 
 #: The scan's scale without adhesion at depth 0 (m): no contact to scan, any positive radius serves.
 _SMALLEST_SCALE = 1e-9
+#: A scan ends this close inside the tables' last radius ``64 h``: its nodes are ``exp(ln a)``, which may round above
+#: ``a`` (a contact whose scan reached the tables' end was refused with ``a/h = 64.00000000000001``).
+INSIDE_TABLES = 1.0 - 1e-12
 
 #: What one point of a normal curve or a cycle counts against :attr:`~mdr_events.Limits.steps`: its share of the scan
 #: and :data:`_BISECTIONS` evaluations of the branch, about 20 µs here, where the discrete model's step takes about
@@ -159,6 +162,44 @@ def thickness_axis(thicknesses) -> np.ndarray:
     return _grid("thicknesses", thicknesses, "numbers > 0 (m), inf the half-space", lambda values: values > 0.0)
 
 
+def scan_ceiling(layer: Layer) -> float:
+    """The largest radius a scan of the layer's branches takes: the tables' last, ``64 h``, just inside
+    (:data:`INSIDE_TABLES`).
+
+    Parameters
+    ----------
+    layer : Layer
+        A layer of finite thickness.
+
+    Returns
+    -------
+    float
+        The radius (m).
+    """
+    return LAMBDA_MAX * layer.thickness * INSIDE_TABLES
+
+
+def beyond_tables(depth: float, layer: Layer, ceiling: float) -> ValueError:
+    """The error of a depth whose contact radius lies beyond the scan's last radius ``ceiling`` (the tables').
+
+    Parameters
+    ----------
+    depth : float
+        The depth (m).
+    layer : Layer
+        The layer.
+    ceiling : float
+        The last radius a scan takes (m).
+
+    Returns
+    -------
+    ValueError
+        Its one line, to raise.
+    """
+    return ValueError(f"depth={depth!r} m is not allowed on {layer.describe()}: its contact radius exceeds a/h = "
+                      f"{LAMBDA_MAX:g}; allowed: depths whose radius is below {ceiling:.6g} m")
+
+
 def _radius_scale(contact: Contact, dgamma: float, depth: float) -> tuple[float, float]:
     """The scan's range in ``a``: from far below the half-space's pull-off radius to where ``d(a) ≥ depth`` (the
     largest ``a/h`` of the tables at most)."""
@@ -166,11 +207,10 @@ def _radius_scale(contact: Contact, dgamma: float, depth: float) -> tuple[float,
     pulled, hertz = _half_space_radii(contact, dgamma, depth)
     scale = max(pulled, hertz) or _SMALLEST_SCALE
     low, high = _SCAN_BELOW * scale, 2.0 * scale
-    ceiling = LAMBDA_MAX * layer.thickness
+    ceiling = scan_ceiling(layer)
     while float(branch_depth(min(high, ceiling), contact.indenter, E_star, nu, dgamma, layer)) < depth:
         if high >= ceiling:
-            raise ValueError(f"depth={depth!r} m is not allowed on {layer.describe()}: its contact radius exceeds "
-                             f"a/h = {LAMBDA_MAX:g}; allowed: depths whose radius is below {ceiling:.6g} m")
+            raise beyond_tables(depth, layer, ceiling)
         high *= 2.0
     return low, min(high, ceiling)
 

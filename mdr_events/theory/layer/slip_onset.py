@@ -25,21 +25,31 @@ scenario A's onset tends to ``d = τ0 h tan α / G``, whatever the indenter and 
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import Callable, NamedTuple
 
 import numpy as np
 
+from mdr_events.contact.adhesion import Adhesion
+from mdr_events.contact.indenters import Paraboloid, PowerLaw
+from mdr_events.contact.layer import Layer, LayerBase
 from mdr_events.contact.model import Contact
-from mdr_events.parameters import PAPER_D_MAX
+from mdr_events.limits import Limits, check_limits
+from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
-from mdr_events.theory.layer.curves import _jump_off, _material, _stable_radius
+from mdr_events.theory.layer.curves import (_half_space_radii, _jump_off, _material, _stable_radius,
+                                           beyond_tables, scan_ceiling)
 from mdr_events.theory.job import rate_independent
 from mdr_events.theory.layer.relations import branch_depth
+from mdr_events.theory.layer.tangential_compliance import check_bonded
 from mdr_events.theory.layer.tangential_relations import sliding_cap
+from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_real, shown, validate_alpha
 
-__all__ = ["onset_depths", "critical_angle_on_layer", "thin_layer_onset_depth", "SCAN_POINTS"]
+__all__ = ["onset_depths", "critical_angle_on_layer", "thin_layer_onset_depth", "check_onset_contact",
+           "has_closed_forms", "SCAN_POINTS", "SCAN_SPAN", "ONSET_STEPS_PER_ANGLE", "ONSET_BYTES_PER_ANGLE",
+           "CRITICAL_ANGLE_STEPS"]
 
 #: Radii of the logarithmic scan of ``r(a)`` along one motion (the running maximum is inverted on it).
 SCAN_POINTS = 400
@@ -50,10 +60,25 @@ _BISECTIONS = 60
 #: radius at ``d_max``; an angle whose onset lies below it (within about ``1e-10°`` of 90° at the paper's
 #: parameters) counts as sliding there.
 _SMALLEST_FRACTION = 1e-12
+#: What one angle of an onset curve on a layer counts against :attr:`~mdr_events.Limits.steps`: a bisection of
+#: :data:`_BISECTIONS` steps on the layer's tables, about 32 µs (a phase diagram's two curves in A, four in B: 65 and
+#: 130 µs per angle measured), where the discrete model's step takes about 1.5 µs; counted as the half-space's closed
+#: forms (0.2 µs an angle, no steps), 1e7 angles of a phase diagram passed the default limits and ran for 20 minutes.
+ONSET_STEPS_PER_ANGLE = 25.0
+#: What one critical angle on a layer counts against :attr:`~mdr_events.Limits.steps`: a scan of :data:`SCAN_POINTS`
+#: radii on the layer's tables and the radius at the motion's end, about 14 ms (84 ms measured for the six of one
+#: thickness of :func:`~mdr_events.critical_angles_against_thickness`), at the discrete step's 1.5 µs.
+CRITICAL_ANGLE_STEPS = 1e4
+#: The memory of one angle of the onsets on a layer at its peak (the bisections' temporaries: 181 bytes measured with
+#: tracemalloc for a phase diagram in A, 198 in B, where the half-space's 160 were counted), rounded up.
+ONSET_BYTES_PER_ANGLE = 256.0
 
-
-#: The scan ends this close inside the tables' last radius: ``exp(ln a)`` may round above ``a``.
-_INSIDE_TABLES = 1.0 - 1e-12
+#: The scan of a motion ends at the tables' last radius (``curves.scan_ceiling``) or at
+#: this many times the radius at ``d_max``, whichever comes first: on a layer so thick that its tables' last radius
+#: squared leaves the double range (``h = 1e200``: ``g(64 h)`` overflowed, and the onset was refused though the layer
+#: is the half-space there), the scan still ends where the relations are finite. An onset beyond it lies beyond any
+#: angle but those within about ``1e-10`` degrees of 90° (the travel per cap grows about as the radius).
+SCAN_SPAN = 1e12
 
 
 class _Motion(NamedTuple):
@@ -74,17 +99,78 @@ class _Motion(NamedTuple):
     start_depth: float
 
 
-def _checked(contact: Contact, what: str, d_max) -> tuple[Contact, float]:
-    """The contact (a paraboloid or power law under the law (13) on a bonded layer) and ``d_max``; else the
-    one-line error."""
-    _material(contact)
+def check_onset_contact(contact: Contact, what: str, d_max: float | None = None) -> tuple[Contact, float]:
+    """What the slip onset on a layer takes, checked before it runs (a few branch evaluations: what the closed forms
+    would refuse, without computing them): a paraboloid or power law, the paper's adhesion law, the law (13), a
+    base that holds the layer tangentially, scales within double precision
+    (:func:`~mdr_events.theory.scales.check_representable`: ``R = 1e300`` was a ``ZeroDivisionError``, ``1e-300`` an
+    ``OverflowError``) and a contact radius at ``d_max`` within the tables.
+
+    Parameters
+    ----------
+    contact : Contact
+        A contact on a layer of finite thickness.
+    what : str
+        The function asked, named in the errors.
+    d_max : float, optional
+        The motion's depth (m; ``None``: the paper's 0.3 mm).
+
+    Returns
+    -------
+    tuple of (Contact, float)
+        The contact and ``d_max``.
+
+    Raises
+    ------
+    TypeError, ValueError
+        In one line, naming what is not allowed.
+    """
+    E_star, nu, layer = _kind_checked(contact, what)
+    depth = check_real("d_max", PAPER_D_MAX if d_max is None else d_max, "a finite number > 0 (m)",
+                       lambda value: value > 0.0)
+    check_representable(contact.parameters(depth, PAPER_V), contact.profile,
+                        dataclasses.replace(contact.friction, tau0=None))
+    top = _scan_top(contact, depth)
+    if float(branch_depth(top, contact.indenter, E_star, nu, contact.adhesion.dgamma0, layer)) < depth:
+        raise beyond_tables(depth, layer, top)
+    return contact, depth
+
+
+def _kind_checked(contact: Contact, what: str) -> tuple[float, float, Layer]:
+    """``(E*, ν, layer)`` of a contact whose kind the slip onset on a layer takes (:func:`has_closed_forms`); else the
+    one-line error naming what it is not."""
+    E_star, nu, layer = _material(contact)
     rate_independent(contact, f"{what} on a layer")
     if contact.friction.law != "tau0":
         raise ValueError(f"{what} under contact.friction={contact.friction!r} is not allowed on a layer; allowed: "
                          "the law 'tau0' of eq. (13)")
-    depth = check_real("d_max", PAPER_D_MAX if d_max is None else d_max, "a finite number > 0 (m)",
-                       lambda value: value > 0.0)
-    return contact, depth
+    return E_star, nu, check_bonded(layer)
+
+
+def has_closed_forms(contact: Contact) -> bool:
+    """Whether the slip onset on the contact's layer has closed forms (:func:`check_onset_contact` would take its kind:
+    a paraboloid or power law, the paper's adhesion law, the law (13), a bonded base); where it has none a run's
+    closed-form angles are ``nan``, as the half-space's where a friction law has none.
+
+    Parameters
+    ----------
+    contact : Contact
+        A contact on a layer of finite thickness.
+
+    Returns
+    -------
+    bool
+        ``True`` where :func:`critical_angle_on_layer` computes them.
+    """
+    return (isinstance(contact.indenter, (Paraboloid, PowerLaw)) and type(contact.adhesion) is Adhesion
+            and contact.friction.law == "tau0" and contact.layer.base is LayerBase.BONDED)
+
+
+def _scan_top(contact: Contact, d_max: float) -> float:
+    """The last radius of a motion's scan: the tables' last, or :data:`SCAN_SPAN` times the half-space's radius
+    scale at ``d_max`` (its radius there, or its pull-off radius of the larger work), whichever is smaller (m)."""
+    pulled, hertz = _half_space_radii(contact, max(contact.adhesion.dgamma0, contact.adhesion.dgamma1), d_max)
+    return min(scan_ceiling(contact.layer), SCAN_SPAN * max(pulled, hertz))
 
 
 def _motion(contact: Contact, scenario: str, branch: str, adhesion: bool, d_max: float) -> _Motion:
@@ -99,10 +185,15 @@ def _motion(contact: Contact, scenario: str, branch: str, adhesion: bool, d_max:
 
     def ratio_of(logs):
         a = np.exp(logs)
-        travel = depth_of(a) if scenario == "A" else (d_max - depth_of(a)) if pulling else (depth_of(a) - d_max)
-        return travel / sliding_cap(a, tau0, G_star, nu, layer)
+        # (scenario A's travel is the depth from the first touch, d >= 0: its round-off below 0 at the start made a
+        # d_max of 1e-100 m an angle of -4.5e-16 degrees)
+        travel = np.maximum(depth_of(a), 0.0) if scenario == "A" else (d_max - depth_of(a)) if pulling else \
+            (depth_of(a) - d_max)
+        cap = sliding_cap(a, tau0, G_star, nu, layer)
+        # (without τ0 the cap is 0 and any travel slides: r = inf, not NumPy's warnings at every node and bisection)
+        return np.divide(travel, cap, out=np.full(np.shape(travel), math.inf), where=cap > 0.0)
 
-    ceiling = LAMBDA_MAX * layer.thickness * _INSIDE_TABLES
+    ceiling = _scan_top(contact, d_max)
     at_d_max = float(_stable_radius(contact, dgamma, np.array([d_max]))[0])
     if scenario == "A":
         start = float(_stable_radius(contact, dgamma, np.array([0.0]))[0]) if dgamma > 0.0 else 0.0
@@ -127,7 +218,8 @@ def _onset_depths(motion: _Motion, tangent: np.ndarray, what: str, past_tables: 
     if np.any(beyond) and not past_tables:
         angle = float(np.degrees(np.arctan(tangent[missed & np.isfinite(tangent)].min())))
         raise ValueError(f"alpha={angle!r} is not allowed in {what} on this layer: its onset lies beyond a/h = "
-                         f"{LAMBDA_MAX:g} (the tables' reach); allowed: angles below "
+                         f"{LAMBDA_MAX:g} (the tables' reach) or {SCAN_SPAN:g} times the radius at d_max (the scan's); "
+                         "allowed: angles below "
                          f"{float(np.degrees(np.arctan(reached[-1]))):.6g} degrees")
     index = np.clip(first, 1, reached.size - 1)
     lower, upper = motion.logs[index - 1], motion.logs[index]
@@ -141,7 +233,7 @@ def _onset_depths(motion: _Motion, tangent: np.ndarray, what: str, past_tables: 
 
 
 def onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesion: bool, branch: str,
-                 d_max: float | None, *, past_tables: bool = False) -> np.ndarray:
+                 d_max: float | None, *, past_tables: bool = False, limits: Limits | None = None) -> np.ndarray:
     r"""The depths at which the springs start to slide on the contact's layer: eqs. (17)–(21) with ``K_t`` and the
     layer's branches (module docstring); :func:`mdr_events.d_crit` of a contact on a layer, its arguments checked.
 
@@ -162,6 +254,9 @@ def onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesio
     past_tables : bool, default False
         ``True``: ``nan`` where the onset lies beyond the tables (``a/h > 64``), as a phase diagram of a tabulated
         profile marks its end; ``False``: refused.
+    limits : Limits or None, default None
+        What the curve may take (:data:`ONSET_STEPS_PER_ANGLE` steps and :data:`ONSET_BYTES_PER_ANGLE` bytes per angle;
+        ``None``: the defaults), checked before it runs.
 
     Returns
     -------
@@ -173,9 +268,12 @@ def onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesio
     ------
     ValueError
         A frictionless base (no tangential stiffness), another law or indenter, an angle whose onset lies beyond
-        the tables (``a/h > 64``) without ``past_tables``.
+        the tables (``a/h > 64``) without ``past_tables``, more angles than ``limits`` allows (``ResourceLimitError``).
     """
-    contact, depth = _checked(contact, "d_crit", d_max)
+    contact, depth = check_onset_contact(contact, "d_crit", d_max)
+    check_limits(limits).check(f"the slip onset at {alpha_deg.size} angles on {contact.layer.describe()}",
+                               steps=ONSET_STEPS_PER_ANGLE * alpha_deg.size,
+                               memory=ONSET_BYTES_PER_ANGLE * alpha_deg.size)
     vertical = alpha_deg >= 90.0
     tangent = np.where(vertical, np.inf, np.tan(np.radians(np.where(vertical, 0.0, alpha_deg))))
     pulling = scenario == "B" and branch == "pull-off"
@@ -216,7 +314,7 @@ def critical_angle_on_layer(contact: Contact, scenario: str, adhesion: bool, fin
     ValueError
         As :func:`onset_depths`; ``final_depth`` not above ``d_max``.
     """
-    contact, depth = _checked(contact, "critical_angle", d_max)
+    contact, depth = check_onset_contact(contact, "critical_angle", d_max)
     if scenario == "B":
         if not adhesion or contact.adhesion.dgamma1 == 0.0:
             return 90.0
@@ -260,7 +358,7 @@ def thin_layer_onset_depth(alpha, contact: Contact):
     if not isinstance(contact, Contact) or contact.layer.is_half_space:
         raise ValueError(f"contact={shown(contact)} is not allowed; allowed: a Contact on a layer of finite "
                          "thickness (Contact.layer)")
-    _checked(contact, "thin_layer_onset_depth", None)
+    _kind_checked(contact, "thin_layer_onset_depth")  # (no depth: the limit is of a layer thinner than any contact)
     alpha_deg = validate_alpha(alpha)
     elastomer = contact.elastomer
     shear_modulus = elastomer.E / (2.0 * (1.0 + elastomer.nu))
