@@ -46,7 +46,7 @@ from mdr_events.validation import shown
 from .rate_dense import step_polynomials
 from .rate_edge import EDGE_RTOL, EdgeEventKind, EdgeRun, solve_edge
 
-__all__ = ["RateShifts", "solve_rate_shifts", "GAUSS_NODES", "BISECTIONS", "STEP_PROBES"]
+__all__ = ["RateShifts", "solve_rate_shifts", "check_rate_friction", "GAUSS_NODES", "BISECTIONS", "STEP_PROBES"]
 
 #: Gauss–Legendre nodes per solver step for ``∫ Ẋ a dτ``: exact to degree 15, beyond the dense output's polynomials
 #: (Radau's 3, BDF's 5, LSODA's up to 12).
@@ -118,6 +118,8 @@ class RateShifts:
         self._corners = (self.path.corner_times, self.sign * self.path.waypoints[:, 0])
         self.views = _timeline(self.edge, self._x)
         self._candidates = _level_candidates(self)
+        self._running = np.maximum.accumulate(self._candidates[1])
+        self._sweeps: dict = {}  # (the records' cumulative integrals, by piece and start: _swept)
 
     def _x(self, times) -> np.ndarray:
         """``σx`` (m) at ``times`` (the path's ``x``, its corners read once)."""
@@ -152,14 +154,13 @@ class RateShifts:
             The running maximum; ``-inf`` before the first contact.
         """
         times = np.atleast_1d(np.asarray(times, dtype=float))
-        stamps, values = self._candidates
+        stamps, running = self._candidates[0], self._running
+        at = np.searchsorted(stamps, times, side="right") - 1
+        held = np.where(at >= 0, running[np.maximum(at, 0)], -np.inf)
+        # since the last candidate (a knot, or a step's interior maximum) L has no maximum inside: its largest is at
+        # one of the ends
         inside = _in_contact(self.views, times)
-        every = np.concatenate([stamps, times[inside]])
-        levels = np.concatenate([values, self._level(times[inside])])
-        order = np.argsort(every, kind="stable")
-        running = np.maximum.accumulate(levels[order])
-        at = np.searchsorted(every[order], times, side="right") - 1
-        return np.where(at >= 0, running[np.maximum(at, 0)], -np.inf)
+        return np.where(inside, np.maximum(held, np.where(inside, self._level(times), -np.inf)), held)
 
     def tangential_force(self, times) -> np.ndarray:
         """``F_x`` (N) at ``times`` (s, path clock); 0 out of contact.
@@ -310,25 +311,31 @@ def _level_candidates(shifts: RateShifts) -> tuple[np.ndarray, np.ndarray]:
     return every, shifts._level(every)
 
 
-def _swept(shifts: RateShifts, view: _View, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
-    """``∫_lo^hi σẋ a dτ`` (m²) within one piece (elementwise; ``lo <= hi``), Gauss–Legendre on each knot interval."""
-    knots = _knots(view, shifts._corners[0])
-    slope = np.diff(shifts._x(knots)) / np.where(np.diff(knots) > 0.0, np.diff(knots), 1.0)
-
-    def partial(ends: np.ndarray, index: np.ndarray) -> np.ndarray:  # ∫ from knots[index] to ends
-        start = knots[index]
-        half = 0.5 * (ends - start)
-        nodes = start[:, None] + half[:, None] * (1.0 + _NODES[None, :])
-        radius = view.solution(nodes.ravel())[0].reshape(nodes.shape)
-        return slope[index] * half * (radius @ _WEIGHTS)
-
-    whole = partial(knots[1:], np.arange(len(knots) - 1))
-    cumulative = np.concatenate([[0.0], np.cumsum(whole)])
+def _swept(shifts: RateShifts, solution, start: float, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """``∫_lo^hi σẋ a dτ`` (m²) within the advancing piece of ``solution`` from ``start`` (elementwise;
+    ``lo <= hi``), Gauss–Legendre on each knot interval; the knots' cumulative sums computed once per record."""
+    key = (id(solution), start)
+    if key not in shifts._sweeps:
+        end = float(np.asarray(solution.ts)[-1])
+        knots = _knots(_View(start, end, solution, 1, (), None), shifts._corners[0])
+        slope = np.diff(shifts._x(knots)) / np.where(np.diff(knots) > 0.0, np.diff(knots), 1.0)
+        whole = _partial(solution, knots, slope, knots[1:], np.arange(len(knots) - 1))
+        shifts._sweeps[key] = (knots, slope, np.concatenate([[0.0], np.cumsum(whole)]))
+    knots, slope, cumulative = shifts._sweeps[key]
 
     def primitive(ends: np.ndarray) -> np.ndarray:
         index = np.clip(np.searchsorted(knots, ends, side="right") - 1, 0, len(knots) - 2)
-        return cumulative[index] + partial(ends, index)
+        return cumulative[index] + _partial(solution, knots, slope, ends, index)
     return primitive(hi) - primitive(lo)
+
+
+def _partial(solution, knots: np.ndarray, slope: np.ndarray, ends: np.ndarray, index: np.ndarray) -> np.ndarray:
+    """``∫ σẋ a dτ`` from ``knots[index]`` to ``ends`` (each within its knot interval), Gauss–Legendre."""
+    start = knots[index]
+    half = 0.5 * (ends - start)
+    nodes = start[:, None] + half[:, None] * (1.0 + _NODES[None, :])
+    radius = solution(nodes.ravel())[0].reshape(nodes.shape)
+    return slope[index] * half * (radius @ _WEIGHTS)
 
 
 def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.ndarray):
@@ -363,10 +370,35 @@ def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.n
         a_star, a_hi = solution(star)[0], solution(top)[0]
         x_star, x_hi = shifts._x(star), shifts._x(top)
         force[rows] += relation.numeric(x_now[rows], level, a_lo, a_star, a_hi, x_star, x_hi,
-                                        _swept(shifts, _View(lo, float(np.max(top)), solution, 1, (), block), star, top),
+                                        _swept(shifts, solution, lo, star, top),
                                         shifts.G_star)
         sliding[rows] = np.maximum(sliding[rows], np.where(star > lo, a_star, 0.0))  # (none slide where star is lo)
     return force, sliding
+
+
+def check_rate_friction(friction: FrictionLaw) -> None:
+    """Refuse a friction law the springs on the rate-dependent edge do not follow: only ``"tau0"`` (one cap ``K a``
+    for every spring); the laws with Coulomb's part run in the discrete method.
+
+    Parameters
+    ----------
+    friction : FrictionLaw
+        The friction law.
+
+    Raises
+    ------
+    TypeError
+        Not a :class:`~mdr_events.contact.friction.FrictionLaw`.
+    ValueError
+        Another law than ``"tau0"``.
+    """
+    if not isinstance(friction, FrictionLaw):
+        raise TypeError(f"friction={shown(friction)} ({type(friction).__name__}) is not allowed; allowed: a "
+                        "FrictionLaw('tau0') or None")
+    if friction.law != "tau0":
+        raise ValueError(f"friction={friction!r} is not allowed with a rate-dependent law in the continuum; "
+                         "allowed: FrictionLaw('tau0') (one cap K a for every spring; the laws with Coulomb's part "
+                         "run in the discrete method)")
 
 
 def solve_rate_shifts(params: Parameters, path: Path, law: RateDependentAdhesion, profile: SimulatedProfile = None,
@@ -409,13 +441,7 @@ def solve_rate_shifts(params: Parameters, path: Path, law: RateDependentAdhesion
         raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: a Path")
     tau0 = params.tau0
     if friction is not None:
-        if not isinstance(friction, FrictionLaw):
-            raise TypeError(f"friction={shown(friction)} ({type(friction).__name__}) is not allowed; allowed: a "
-                            "FrictionLaw('tau0') or None")
-        if friction.law != "tau0":
-            raise ValueError(f"friction={friction!r} is not allowed with a rate-dependent law in the continuum; "
-                             "allowed: FrictionLaw('tau0') (one cap K a for every spring; the laws with Coulomb's part "
-                             "run in the discrete method)")
+        check_rate_friction(friction)
         tau0 = params.tau0 if friction.tau0 is None else friction.tau0
     ways = np.sign(np.diff(path.waypoints[:, 0]))
     sign = float(ways[ways != 0.0][0]) if np.any(ways != 0.0) else 1.0
