@@ -7,7 +7,8 @@ they cost) of
   (v_ref = 1 µm/s, n = 0.6), and their ratio (target: the rate-dependent run at most 3× the rate-independent one);
 - scenario A at 20° in the continuum: ``simulate(..., "continuum")`` with the paper's law (2001 samples) against
   ``continuum.solve_rate_shifts`` with the rate-dependent one and its ``F_x`` and ``F_N`` at 2001 samples, the edge by
-  LSODA and by Radau (the reference), and their ratios (same target);
+  LSODA and by Radau (the reference), and against ``simulate(..., "continuum")`` with the rate-dependent law (the
+  same with the event log and the extrema), and their ratios (same target);
 - the normal problem of the same path: ``continuum.solve_path`` without friction (the paper's law, the radius on its
   branches) and ``continuum.solve_edge`` (the radius an ODE), and their ratio; ``solve_edge`` with the fit's method
   (LSODA at ``RATE_FIT_RTOL``) beside the reference's (Radau at ``EDGE_RTOL``);
@@ -80,7 +81,8 @@ def main() -> None:
     _show("continuum, A 20°, 2001 samples", {
         "paper's law (simulate)": median_times(lambda: me.simulate(paper, scenario, "continuum"), repeat),
         "rate-dependent, LSODA": median_times(lambda: _rate_continuum(params, path, law, "LSODA"), repeat),
-        "rate-dependent, Radau": median_times(lambda: _rate_continuum(params, path, law, "Radau"), repeat)},
+        "rate-dependent, Radau": median_times(lambda: _rate_continuum(params, path, law, "Radau"), repeat),
+        "rate-dependent (simulate)": median_times(lambda: me.simulate(rate, scenario, "continuum"), repeat)},
         "paper's law (simulate)")
     frictionless = me.FrictionLaw("tau0", tau0=0.0)
     normal = {"solve_path": median_times(lambda: solve_path(params, path, friction=frictionless), repeat),
