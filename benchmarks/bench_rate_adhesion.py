@@ -1,9 +1,14 @@
 """Benchmark: the rate-dependent adhesion law against the paper's, side by side in one run (issue 29).
 
-Prints the median wall time of
+Prints the median wall and CPU times (the machine may be shared: the CPU time of these single-threaded calls is what
+they cost) of
 
-- the discrete method, scenario A at 20°, Δx = 1 µm (10 000 steps): the paper's law and ``RateDependentAdhesion``
+- scenario A at 20° by the discrete method, Δx = 1 µm (10 000 steps): the paper's law and ``RateDependentAdhesion``
   (v_ref = 1 µm/s, n = 0.6), and their ratio (target: the rate-dependent run at most 3× the rate-independent one);
+- scenario A at 20° in the continuum: ``simulate(..., "continuum")`` with the paper's law (2001 samples) against
+  ``continuum.solve_rate_shifts`` with the rate-dependent one and its ``F_x`` and ``F_N`` at 2001 samples, the edge by
+  LSODA and by Radau (the reference), and against ``simulate(..., "continuum")`` with the rate-dependent law (the
+  same with the event log and the extrema), and their ratios (same target);
 - the normal problem of the same path: ``continuum.solve_path`` without friction (the paper's law, the radius on its
   branches) and ``continuum.solve_edge`` (the radius an ODE), and their ratio; ``solve_edge`` with the fit's method
   (LSODA at ``RATE_FIT_RTOL``) beside the reference's (Radau at ``EDGE_RTOL``);
@@ -21,14 +26,16 @@ import numpy as np
 
 import mdr_events as me
 from mdr_events.analysis.rate_fit import RATE_FIT_METHOD, RATE_FIT_RTOL, RateMeasurement, fit_rate_adhesion
-from mdr_events.models.continuum import solve_edge, solve_path
+from mdr_events.models.continuum import solve_edge, solve_path, solve_rate_shifts
 
-from _timing import median_time
+from _timing import median_times
 
 #: The target of issue 29: a rate-dependent scenario A run at most this many times the rate-independent one.
 RATIO_TARGET = 3.0
 #: The target of issue 29: a 3-speed joint fit of 4 parameters under this many seconds.
 FIT_TARGET = 5.0
+#: The continuum's output samples (``Continuum``'s default).
+SAMPLES = 2001
 
 
 def _measurements(params: me.Parameters, law: me.RateDependentAdhesion) -> list[RateMeasurement]:
@@ -44,6 +51,21 @@ def _measurements(params: me.Parameters, law: me.RateDependentAdhesion) -> list[
     return out
 
 
+def _show(label: str, times: dict[str, tuple[float, float]], reference: str, target: bool = True) -> None:
+    """One line: each entry's wall and CPU medians (ms) and its ratio to ``reference`` (CPU)."""
+    parts = [f"{name} {wall * 1e3:.1f} ms (CPU {cpu * 1e3:.1f}, ratio {cpu / times[reference][1]:.2f})"
+             for name, (wall, cpu) in times.items()]
+    print(f"{label}: " + "; ".join(parts) + (f" (target <= {RATIO_TARGET:g})" if target else ""))
+
+
+def _rate_continuum(params, path, law, method: str) -> None:
+    """The continuum's scenario A under the rate law: the edge, the shifts, F_x and F_N at the samples."""
+    shifts = solve_rate_shifts(params, path, law, method=method)
+    times = np.linspace(path.first_contact_time(), path.duration, SAMPLES)
+    shifts.tangential_force(times)
+    shifts.edge.normal_force(times, path)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=7)
@@ -52,28 +74,30 @@ def main() -> None:
     law = me.RateDependentAdhesion(params.dgamma0, params.dgamma1, 1e-6, 0.6)
     rate = me.Contact(paper.elastomer, paper.indenter, law, paper.friction)
     scenario = me.Scenario("A", alpha=[20.0])
-    discrete = {label: median_time(lambda contact=contact: me.simulate(contact, scenario, "discrete", dx=1e-6),
-                                   repeat) for label, contact in (("paper", paper), ("rate", rate))}
+    _show("discrete, A 20°, dx = 1 µm", {
+        label: median_times(lambda contact=contact: me.simulate(contact, scenario, "discrete", dx=1e-6), repeat)
+        for label, contact in (("paper's law", paper), ("rate-dependent", rate))}, "paper's law")
     path = me.Path.scenario_A(20.0, params)
+    _show("continuum, A 20°, 2001 samples", {
+        "paper's law (simulate)": median_times(lambda: me.simulate(paper, scenario, "continuum"), repeat),
+        "rate-dependent, LSODA": median_times(lambda: _rate_continuum(params, path, law, "LSODA"), repeat),
+        "rate-dependent, Radau": median_times(lambda: _rate_continuum(params, path, law, "Radau"), repeat),
+        "rate-dependent (simulate)": median_times(lambda: me.simulate(rate, scenario, "continuum"), repeat)},
+        "paper's law (simulate)")
     frictionless = me.FrictionLaw("tau0", tau0=0.0)
-    normal = {"paper": median_time(lambda: solve_path(params, path, friction=frictionless), repeat),
-              "rate": median_time(lambda: solve_edge(params, path, law), repeat)}
-    print(f"discrete, A 20°, dx = 1 µm: paper's law {discrete['paper'] * 1e3:.1f} ms, rate-dependent "
-          f"{discrete['rate'] * 1e3:.1f} ms, ratio {discrete['rate'] / discrete['paper']:.2f} (target <= "
-          f"{RATIO_TARGET:g})")
-    normal["lsoda"] = median_time(lambda: solve_edge(params, path, law, rtol=RATE_FIT_RTOL, method=RATE_FIT_METHOD),
-                                  repeat)
-    print(f"normal problem, A 20°: solve_path {normal['paper'] * 1e3:.1f} ms, solve_edge {normal['rate'] * 1e3:.1f} ms, "
-          f"ratio {normal['rate'] / normal['paper']:.2f}; the fit's {RATE_FIT_METHOD} at rtol {RATE_FIT_RTOL:g} "
-          f"{normal['lsoda'] * 1e3:.1f} ms ({normal['lsoda'] / normal['rate']:.2f}× the reference's)")
+    normal = {"solve_path": median_times(lambda: solve_path(params, path, friction=frictionless), repeat),
+              "solve_edge (Radau)": median_times(lambda: solve_edge(params, path, law), repeat),
+              f"solve_edge ({RATE_FIT_METHOD} at {RATE_FIT_RTOL:g})": median_times(
+                  lambda: solve_edge(params, path, law, rtol=RATE_FIT_RTOL, method=RATE_FIT_METHOD), repeat)}
+    _show("normal problem, A 20°", normal, "solve_path", target=False)
     measured = _measurements(params, law)
     start = me.RateDependentAdhesion(1.2 * params.dgamma0, 0.8 * params.dgamma1, 3e-6, 0.8)
     fits = {"v_ref, n, dgamma0, dgamma1": dict(free=("v_ref", "n", "dgamma0", "dgamma1")),
             "v_ref, n and 3 offsets": dict(free=("v_ref", "n"), offsets=True)}
     for label, options in fits.items():
-        seconds = median_time(lambda options=options: fit_rate_adhesion(measured, params, start, **options),
-                              max(1, repeat // 3))
-        print(f"fit_rate_adhesion over 3 speeds, free {label}: {seconds:.2f} s"
+        wall, cpu = median_times(lambda options=options: fit_rate_adhesion(measured, params, start, **options),
+                                 max(1, repeat // 3))
+        print(f"fit_rate_adhesion over 3 speeds, free {label}: {wall:.2f} s (CPU {cpu:.2f} s)"
               + (f" (target < {FIT_TARGET:g} s)" if "dgamma0" in label else ""))
 
 

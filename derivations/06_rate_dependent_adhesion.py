@@ -91,6 +91,29 @@ print(f"detachment after {ended.time - start:.4f} s held; closed form {closed:.4
 assert abs((ended.time - start) - closed) <= 1e-8 * closed
 
 # %% [markdown]
+# ## Step 5 — where a receding edge lets go, and scenario B's angle at a speed
+# At a fixed depth the release rate `Γ(a, d) = E* (g(a) − d)² / (2π a)` rises as the edge shrinks once `∂Γ/∂a <= 0`
+# (Griffith's stability of the edge): from there it recedes ever faster and collapses whatever the path does. Solved
+# for the depth, `d = g − 2a g'`; on the paraboloid `−3a²/R`, the turning point of every branch (9), which is the
+# paper's jump-off (the limit `v_ref → ∞`). Scenario B's critical angle at a speed (`me.critical_angle_B_at_speed`)
+# is the one at which the springs slide exactly where the edge lets go; it tends to (21) as `v_ref → ∞`, at the
+# order 2/3 of a slow passage through the fold.
+
+# %%
+let_go = rate["let_go_depth"]
+print(let_go.pretty())
+g_a, g_slope, radius = let_go.args
+parabolic = sp.simplify(let_go.rhs.subs({g_a: radius**2 / S.R, g_slope: 2 * radius / S.R}))
+print("paraboloid:", parabolic)
+off = S.relation("jump_off_radius").rhs
+assert sp.simplify(parabolic.subs(radius, off) - S.relation("jump_off_depth").rhs) == 0
+paper_B = me.critical_angle(params, "B", adhesion=True)
+for v_ref in (1e-4, 1e-3, 1e-2):
+    fast = me.RateDependentAdhesion(params.dgamma0, params.dgamma1, v_ref, 1.0)
+    angle = me.critical_angle_B_at_speed(params, fast, params.v, method="LSODA")
+    print(f"v_ref = {v_ref:g} m/s: critical angle of B {angle:.4f}°, (21) {paper_B:.4f}°, gap {paper_B - angle:.4f}°")
+
+# %% [markdown]
 # ## The normal force at three speeds
 # In to `d_max` and out at the path's speed `v`: the faster, the harder the contact pulls and the further it holds.
 

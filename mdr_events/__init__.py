@@ -55,6 +55,8 @@ _LAZY = {
     **dict.fromkeys(("RateMeasurement", "fit_rate_adhesion"), "mdr_events.analysis.rate_fit"),
     **dict.fromkeys(("critical_angle_at_speed", "critical_angles_at_speeds", "phase_diagram_at_speeds",
                      "slip_onset_depth_at_speed"), "mdr_events.analysis.rate_angles"),
+    **dict.fromkeys(("critical_angle_B_at_speed", "critical_angles_B_at_speeds", "let_go_B_at_speed"),
+                    "mdr_events.analysis.rate_let_go"),
     "critical_angles_against_thickness": "mdr_events.analysis.layer_angles",
     **dict.fromkeys(("Engine", "SweepOutput", "sweep"), "mdr_events.analysis.sweep"),
     **dict.fromkeys(("load_study", "run_study"), "mdr_events.app.study"),
@@ -102,6 +104,7 @@ if TYPE_CHECKING:  # what static tools (type checkers, IDEs) read: the same name
     from mdr_events.analysis.layer_angles import critical_angles_against_thickness
     from mdr_events.analysis.rate_angles import (critical_angle_at_speed, critical_angles_at_speeds,
                                                  phase_diagram_at_speeds, slip_onset_depth_at_speed)
+    from mdr_events.analysis.rate_let_go import critical_angle_B_at_speed, critical_angles_B_at_speeds, let_go_B_at_speed
     from mdr_events.analysis.rate_fit import RateMeasurement, fit_rate_adhesion
     from mdr_events.analysis.reports import ConvergenceReport, ConvergenceVerdict, ValidationReport, Verdict
     from mdr_events.analysis.sweep import Engine, SweepOutput, sweep
@@ -175,6 +178,9 @@ __all__ = [
     "critical_angles_at_speeds",
     "phase_diagram_at_speeds",
     "slip_onset_depth_at_speed",
+    "critical_angle_B_at_speed",
+    "critical_angles_B_at_speeds",
+    "let_go_B_at_speed",
     "convergence_study",
     "d_crit",
     "jkr_contact_radius",

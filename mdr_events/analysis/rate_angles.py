@@ -20,9 +20,8 @@ begins, as (17) and (18) do.
 
 Scenario B's angle is not defined this way at a finite ``v_ref``: the paper's contact jumps off at a finite radius
 before its springs slide (eq. (21) at the jump-off), while a rate-dependent edge comes apart over a finite time in
-which its radius, and with it the cap ``K a``, falls to 0 while the indenter's shift does not: the exact springs slide
-in the last instants at every angle, the discrete ones (which let go within one time step) at none. An angle needs a
-criterion for when the contact has let go (left open).
+which its radius, and with it the cap ``K a``, falls to 0 while the indenter's shift does not. Its angle compares the
+slip with the point where the edge lets go (:mod:`~mdr_events.analysis.rate_let_go`).
 """
 
 from __future__ import annotations

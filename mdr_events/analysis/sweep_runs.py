@@ -31,6 +31,7 @@ from mdr_events.contact import Contact
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models import indenters
 from mdr_events.models.continuum import EventKind, extremum, solve_path, tangential_work
+from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.solution import scan_spans
 from mdr_events.models.methods import Continuum, Discrete, Method
 from mdr_events.models.motion import Motion, Paths
@@ -132,6 +133,8 @@ class SweepSpec:
         model, method = self.job(values)
         check_representable(model.params, model.profile, model.friction)  # (E = 1e300 was a failed run)
         method.check_model(model)
+        if self.runs_model and method.name in METHOD_CHECKS:
+            METHOD_CHECKS[method.name](model)
         check_layer_run(model.contact, model.motion, method, self.quantities, self.history_samples)
         if not self.runs_model and not model.contact.layer.is_half_space:
             from mdr_events.theory.layer.slip_onset import check_onset_contact  # (the layer's theory, when asked)
@@ -344,6 +347,11 @@ def discrete_quantities(model: ModelJob, path: Path, method: Discrete, limits: L
 
 
 #: A run's quantities and history by the method's name.
+#: What a method's quantities take beyond what the method does, by its name: the continuum's read the spans of
+#: ``solve_path`` (the branches of an edge rule), so a law without one is refused before the sweep runs (the
+#: rate-dependent law, which ``simulate``'s continuum runs by its own run: the discrete method sweeps it).
+METHOD_CHECKS: dict[str, Callable[[ModelJob], None]] = {"continuum": lambda model: check_edge_known(model.adhesion)}
+
 METHOD_QUANTITIES: dict[str, Callable[..., tuple[dict[str, float], np.ndarray | None]]] = {
     Continuum.name: continuum_quantities, Discrete.name: discrete_quantities}
 

@@ -132,10 +132,12 @@ class RateDependentAdhesion:
     v_ref: float
     n: float
 
-    #: where a method without a kernel for this law points its user (the springs' shifts are still to come)
-    runs_in: ClassVar[str] = ("the discrete method runs it, springs and shifts; its normal problem also runs in "
-                                "mdr_events.continuum.solve_edge, scenario A's phase diagram and critical angle at a "
-                                "speed in mdr_events.phase_diagram_at_speeds and critical_angles_at_speeds")
+    #: where a method without a kernel for this law points its user
+    runs_in: ClassVar[str] = ("the discrete method runs it, springs and shifts, and simulate's continuum method under "
+                                "tau0 along a path whose x does not turn back (mdr_events.continuum.solve_rate_shifts); "
+                                "its normal problem also runs in mdr_events.continuum.solve_edge, scenario A's phase "
+                                "diagram and critical angle at a speed in mdr_events.phase_diagram_at_speeds and "
+                                "critical_angles_at_speeds, scenario B's in critical_angles_B_at_speeds")
 
     def __post_init__(self) -> None:
         checks = {"dgamma0": ("a finite number > 0 (J m-2)", lambda value: value > 0.0),

@@ -17,19 +17,22 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, fields
-from typing import Any, ClassVar, Mapping
+from typing import Any, Callable, ClassVar, Mapping, NamedTuple
 
 import numpy as np
 import xarray as xr
 
-from mdr_events.contact.adhesion import adhesion_attrs
-from mdr_events.contact.friction import friction_attrs
+from mdr_events.contact.adhesion import RateDependentAdhesion, adhesion_attrs
+from mdr_events.contact.friction import FrictionLaw, friction_attrs
+from mdr_events.contact.layer import Layer
 from mdr_events.contact.model import Contact
 from mdr_events.limits import Limits
 from mdr_events.models import indenters
 from mdr_events.models.continuum import Tolerances, run_continuum
 from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.media import check_law
+from mdr_events.models.continuum.rate_run import run_rate_continuum
+from mdr_events.models.continuum.rate_shifts import check_rate_friction
 from mdr_events.models.continuum.extrema import solution_extrema
 from mdr_events.models.discrete import check_spacing, check_thresholds_known, run_discrete
 from mdr_events.models.job import ModelJob
@@ -246,8 +249,9 @@ class Continuum:
     __hash__ = None
 
     def check_model(self, model: ModelJob) -> None:
-        """Refuse what the continuum does not take (:func:`~mdr_events.models.continuum.edges.check_edge_known`: an
-        adhesion law without an edge rule).
+        """Refuse what the continuum does not take: an adhesion law without a run or an edge rule
+        (:func:`continuum_kernel`), and with the rate-dependent law a friction law other than ``"tau0"`` (its springs'
+        caps differ from spring to spring; :mod:`~mdr_events.models.continuum.rate_shifts`).
 
         Parameters
         ----------
@@ -257,9 +261,11 @@ class Continuum:
         Raises
         ------
         TypeError
-            An adhesion law without an edge rule.
+            An adhesion law without a run.
+        ValueError
+            The rate-dependent law with another friction law.
         """
-        check_edge_known(model.adhesion)
+        continuum_kernel(model.adhesion).check(model.friction)
         self.check_layer(model.contact)
 
     def check_layer(self, contact: Contact) -> None:
@@ -300,16 +306,74 @@ class Continuum:
         params, profile, friction = model.params, model.profile, model.friction
         tolerances = self.tolerances
         layer = model.contact.layer
-        raw = run_continuum(params, cases.paths, self.samples if self.t is None else self.t, tolerances, limits,
-                            profile, friction, model.adhesion, layer)
+        run = continuum_kernel(model.adhesion).run
+        raw = run(params, cases.paths, self.samples if self.t is None else self.t, tolerances, limits, profile,
+                  friction, model.adhesion, layer)
         # (the half-space stamps no layer, as Contact.to_attrs: its results are those of before)
         layer_attrs = {} if layer.is_half_space else layer.to_attrs()
         attrs = dict(method=self.name, scenario=model.scenario,
                      rtol=tolerances.rtol, atol=tolerances.atol, radius_rtol=tolerances.radius_rtol,
                      content=SIMULATION_CONTENT, **indenters.profile_attrs(profile), **friction_attrs(friction),
-                     **layer_attrs)
-        extrema = [solution_extrema(solution) for solution in raw["solutions"]]
-        return continuum_dataset(params, cases, raw["time"], raw, raw["events"], extrema, **attrs)
+                     **adhesion_attrs(model.adhesion), **layer_attrs)
+        return continuum_dataset(params, cases, raw["time"], raw, raw["events"], raw["extrema"], **attrs)
+
+
+def _paper_run(params, paths, times, tolerances, limits, profile, friction, adhesion, layer: Layer) -> dict:
+    """The paper's law (:func:`~mdr_events.models.continuum.solve.run_continuum`) with each run's exact extrema, on
+    the half-space or the layer."""
+    raw = run_continuum(params, paths, times, tolerances, limits, profile, friction, adhesion, layer)
+    raw["extrema"] = [solution_extrema(solution) for solution in raw["solutions"]]
+    return raw
+
+
+class ContinuumKernel(NamedTuple):
+    """How the continuum runs an adhesion law: the run, and the check of the friction law it takes."""
+
+    run: Callable[..., dict]
+    check: Callable[[FrictionLaw], None]
+
+
+def _every_friction_law(friction: FrictionLaw) -> None:
+    """The paper's edge takes every friction law."""
+
+
+def _rate_run(params, paths, times, tolerances, limits, profile, friction, adhesion, layer: Layer) -> dict:
+    """The rate-dependent edge with the springs on top
+    (:func:`~mdr_events.models.continuum.rate_run.run_rate_continuum`), on the half-space: ``layer`` is, as
+    ``simulate.check_layer_taken`` refuses the law on a layer before (the layer's springs take the paper's law)."""
+    return run_rate_continuum(params, paths, times, tolerances, limits, profile, friction, adhesion)
+
+
+#: The runs of the adhesion laws whose radius is not on the branches of an edge rule (the continuum's
+#: ``EDGE_RULES``), by their type: the rate-dependent edge an ODE state with the springs on top
+#: (:mod:`~mdr_events.models.continuum.rate_run`), which takes ``"tau0"`` alone.
+CONTINUUM_RUNS: dict[type, ContinuumKernel] = {RateDependentAdhesion: ContinuumKernel(_rate_run, check_rate_friction)}
+
+
+def continuum_kernel(adhesion) -> ContinuumKernel:
+    """How the continuum runs ``adhesion``: its own run (:data:`CONTINUUM_RUNS`), else the spans on the branches of
+    its edge rule (:func:`~mdr_events.models.continuum.edges.check_edge_known` refuses a law without one, by name).
+
+    Parameters
+    ----------
+    adhesion : Adhesion or RateDependentAdhesion
+        The law.
+
+    Returns
+    -------
+    ContinuumKernel
+        The run and the check of the friction law.
+
+    Raises
+    ------
+    TypeError
+        A law without a run or an edge rule.
+    """
+    kernel = CONTINUUM_RUNS.get(type(adhesion))
+    if kernel is None:
+        check_edge_known(adhesion)
+        kernel = ContinuumKernel(_paper_run, _every_friction_law)
+    return kernel
 
 
 #: A method.

@@ -302,7 +302,7 @@ class LayerSprings:
         """
         if type(adhesion) is not Adhesion:
             raise TypeError(f"adhesion={shown(adhesion)} ({type(adhesion).__name__}) is not allowed on "
-                            f"{self.layer.describe()} in the discrete method; allowed: Adhesion (the rate-dependent "
+                            f"{self.layer.describe()} (either method); allowed: Adhesion (the rate-dependent "
                             "law runs on the half-space)")
 
     @property
@@ -662,7 +662,7 @@ def springs_of(params: Parameters, indenter: SimulatedProfile, profile: Callable
         return HalfSpaceSprings(params, indenter, profile)
     if profile is not None or not isinstance(indenter, (type(None), PowerLaw)):
         given = "a profile g(x) given as a function" if profile is not None else f"profile={indenter!r}"
-        raise ValueError(f"{given} is not allowed on {layer.describe()} in the discrete method; allowed: the "
+        raise ValueError(f"{given} is not allowed on {layer.describe()} (either method); allowed: the "
                          "paraboloid (profile=None) or a PowerLaw (the layer's profile is tabulated for these)")
     body = Paraboloid(params.R) if indenter is None else indenter
     return _LAYER_KINDS[layer.base](params, body, layer)

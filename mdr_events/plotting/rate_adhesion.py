@@ -10,8 +10,8 @@ from matplotlib.figure import Figure
 
 from mdr_events.plotting.figures import LEGEND_FONTSIZE
 
-__all__ = ["plot_pull_off_against_speed", "plot_critical_angle_against_speed", "plot_scenario_at_speeds",
-           "plot_phase_diagram_at_speeds"]
+__all__ = ["plot_pull_off_against_speed", "plot_critical_angle_against_speed", "plot_critical_angle_B_against_speed",
+           "plot_scenario_at_speeds", "plot_phase_diagram_at_speeds"]
 
 
 def plot_pull_off_against_speed(speed_ratios: np.ndarray, pull_off_ratios: np.ndarray, exponent: float) -> Figure:
@@ -74,6 +74,35 @@ def plot_critical_angle_against_speed(speed_ratios: np.ndarray, angles: np.ndarr
     axes.axhline(hertz, color="0.4", lw=0.9, ls=":", label="without adhesion (17)")
     axes.set_xlabel("path speed v / v_ref")
     axes.set_ylabel("critical angle of scenario A (°)")
+    axes.legend(fontsize=LEGEND_FONTSIZE)
+    axes.grid(True, which="both", lw=0.3, alpha=0.5)
+    return figure
+
+
+def plot_critical_angle_B_against_speed(speed_ratios: np.ndarray, angles: np.ndarray, paper: float) -> Figure:
+    """The critical angle of scenario B against ``v / v_ref`` (markers and line, log abscissa): the springs slide before
+    the edge lets go below it; the paper's (21) at the jump-off (dashed), its limit ``v → 0``.
+
+    Parameters
+    ----------
+    speed_ratios : numpy.ndarray
+        The path's speed over the law's ``v_ref``.
+    angles : numpy.ndarray
+        The critical angles (degrees).
+    paper : float
+        The paper's critical angle of scenario B, eq. (21) at the jump-off (degrees).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
+    figure, axes = plt.subplots(figsize=(6.4, 4.6), constrained_layout=True)
+    axes.semilogx(speed_ratios, angles, marker="o", color="C1", lw=1.4,
+                  label="rate-dependent MDR: slip before the let-go (analysis.rate_let_go)")
+    axes.axhline(paper, color="k", lw=0.9, ls="--", label="rate-independent, slip before the jump-off (21)")
+    axes.set_xlabel("path speed v / v_ref")
+    axes.set_ylabel("critical angle of scenario B (°)")
     axes.legend(fontsize=LEGEND_FONTSIZE)
     axes.grid(True, which="both", lw=0.3, alpha=0.5)
     return figure

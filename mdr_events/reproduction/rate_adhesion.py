@@ -1,4 +1,4 @@
-"""Rate-dependent adhesion: the pull-off force and the critical angle of scenario A against the speed
+"""Rate-dependent adhesion: the pull-off force and the critical angles of scenarios A and B against the speed
 (``rate_adhesion``).
 
 The paper's elastomer and sphere (R = 30 mm) with :class:`~mdr_events.contact.adhesion.RateDependentAdhesion` of the
@@ -8,8 +8,9 @@ in vertically to ``d_max`` and out at the same speed, over seven decades of spee
 multiple of the rate-independent jump-off depth, doubled until the contact comes apart on it. The critical angle of
 scenario A at the same speeds (:func:`~mdr_events.analysis.rate_angles.critical_angles_at_speeds`), its phase diagram
 (Fig. 9a) at three speeds (:func:`~mdr_events.analysis.rate_angles.phase_diagram_at_speeds`), and scenario A at 20° at
-the same three speeds with springs and shifts (the discrete method, Δx = 1 µm) beside the paper's law. No dataset is
-written: the tables and the figures hold what is measured.
+the same three speeds with springs and shifts (the discrete method, Δx = 1 µm) beside the paper's law, and the critical
+angle of scenario B at the seven speeds (:func:`~mdr_events.analysis.rate_let_go.critical_angles_B_at_speeds`: the
+springs slide before the edge lets go). No dataset is written: the tables and the figures hold what is measured.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.analysis.rate_angles import critical_angles_at_speeds, phase_diagram_at_speeds
+from mdr_events.analysis.rate_let_go import critical_angles_B_at_speeds
 from mdr_events.app.result_files import FileOutcome, write_figure
 from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.models.continuum.rate_edge import EdgeEventKind, solve_edge
@@ -30,15 +32,17 @@ from mdr_events.parameters import Parameters
 from mdr_events.contact.model import Contact
 from mdr_events.models.motion import Scenario
 from mdr_events.models.simulate import simulate
-from mdr_events.plotting.rate_adhesion import (plot_critical_angle_against_speed, plot_phase_diagram_at_speeds,
-                                               plot_pull_off_against_speed, plot_scenario_at_speeds)
+from mdr_events.plotting.rate_adhesion import (plot_critical_angle_against_speed, plot_critical_angle_B_against_speed,
+                                               plot_phase_diagram_at_speeds, plot_pull_off_against_speed,
+                                               plot_scenario_at_speeds)
 from mdr_events.reproduction.markdown import markdown_table
 from mdr_events.reproduction.section import Section, Step
 from mdr_events.theory import analytic
 
 __all__ = ["RATE_ADHESION", "RATE_V_REF", "RATE_EXPONENT", "RATE_SPEEDS", "RATE_STEM", "RATE_ANGLE_STEM",
-           "RATE_PHASE_STEM", "RATE_SCENARIO_STEM", "THREE_SPEEDS", "PHASE_ANGLES", "RateRow", "RateSection", "rate_law",
-           "rate_rows", "rate_angles", "rate_phase_diagram", "rate_scenario_runs", "rate_lines"]
+           "RATE_PHASE_STEM", "RATE_SCENARIO_STEM", "RATE_ANGLE_B_STEM", "THREE_SPEEDS", "PHASE_ANGLES", "RateRow",
+           "RateSection", "rate_law", "rate_rows", "rate_angles", "rate_phase_diagram", "rate_scenario_runs",
+           "rate_angles_B", "rate_lines"]
 
 #: The law's reference speed (m/s) and exponent.
 RATE_V_REF = 1e-6
@@ -50,6 +54,7 @@ RATE_STEM = "rate_adhesion_pull_off"
 RATE_ANGLE_STEM = "rate_adhesion_critical_angle"
 RATE_PHASE_STEM = "rate_adhesion_phase_diagram_A"
 RATE_SCENARIO_STEM = "rate_adhesion_A20"
+RATE_ANGLE_B_STEM = "rate_adhesion_critical_angle_B"
 #: The three speeds (m/s) of the phase diagram and of scenario A at 20°: a decade either side of v_ref.
 THREE_SPEEDS = (1e-7, 1e-6, 1e-5)
 #: The phase diagram's angles (degrees), Fig. 9a's range.
@@ -77,6 +82,7 @@ class RateSection(NamedTuple):
     angles: xr.Dataset  #: the critical angle of scenario A against the speed
     phase: xr.Dataset  #: scenario A's phase diagram at three speeds
     runs: dict[str, xr.Dataset]  #: scenario A at 20°: the paper's law, then the rate-dependent one at three speeds
+    angles_B: xr.Dataset  #: the critical angle of scenario B against the speed
 
 
 def rate_law(params: Parameters) -> RateDependentAdhesion:
@@ -129,6 +135,13 @@ def rate_scenario_runs() -> dict[str, xr.Dataset]:
     return runs
 
 
+def rate_angles_B() -> xr.Dataset:
+    """The critical angle of scenario B at each speed for the paper's contact (R = 30 mm); LSODA, within 1e-8° of
+    Radau's angles (measured 7e-9°) at a seventh of the time."""
+    params = Parameters.paper()
+    return critical_angles_B_at_speeds(params, rate_law(params), RATE_SPEEDS, method="LSODA")
+
+
 def rate_lines(data: RateSection) -> list[str]:
     """The section of ``results/README.md``."""
     rows, angles = data.rows, data.angles
@@ -145,7 +158,7 @@ def rate_lines(data: RateSection) -> list[str]:
             f"grows with the speed, by a factor {rows[-1].pull_off_ratio / rows[-2].pull_off_ratio:.3g} over the last "
             f"decade (slope {slope:.2f} on log–log, where the law itself has n = {RATE_EXPONENT:g}); the "
             f"contact holds to deeper separations. Figure: `{RATE_STEM}.png`.", ""] + table + [""] + _angle_lines(angles) \
-        + _phase_lines(data.phase) + _scenario_lines(data.runs)
+        + _phase_lines(data.phase) + _scenario_lines(data.runs) + _angle_B_lines(data.angles_B)
 
 
 def _angle_lines(angles: xr.Dataset) -> list[str]:
@@ -160,11 +173,8 @@ def _angle_lines(angles: xr.Dataset) -> list[str]:
             "d_max where tan α K a(d_max) = d_max, with the radius the advancing edge reaches on the way in at the "
             f"vertical speed v sin α. It rises from the paper's adhesive angle (18), {adhesive:.4f}°, as v → 0 "
             f"towards the non-adhesive (17), {hertz:.4f}°: a faster edge works against less adhesion and reaches a "
-            f"smaller radius. Figure: `{RATE_ANGLE_STEM}.png`. Scenario B's angle is left open: the paper's contact "
-            "jumps off at a finite radius before its springs slide (21), while a rate-dependent edge comes apart over "
-            "a finite time in which its radius, and with it the cap K a, falls to 0, so the exact springs slide in the "
-            "last instants of every angle and the discrete ones (which let go within one step) at none: an angle "
-            "needs a criterion for when the contact has let go.",
+            f"smaller radius. Figure: `{RATE_ANGLE_STEM}.png`. Scenario B's angle, which needs a criterion for "
+            "when the contact has let go, is at the end of this section.",
             ""] + table + [""]
 
 
@@ -195,6 +205,27 @@ def _scenario_lines(runs: dict[str, xr.Dataset]) -> list[str]:
             f"`{RATE_SCENARIO_STEM}.png` (against the distance travelled, v t).", ""] + table + [""]
 
 
+def _angle_B_lines(angles: xr.Dataset) -> list[str]:
+    """The critical angle of scenario B against the speed: the report's table and what it shows."""
+    paper = angles.attrs["critical_angle_paper"]
+    jump_off = analytic.jump_off(Parameters.paper(), Parameters.paper().dgamma1)["contact_radius"]
+    table = markdown_table(["v (m/s)", "v / v_ref", "critical angle of B", "let-go radius / jump-off radius"],
+                           [[f"{speed:.0e}", f"{speed / RATE_V_REF:g}", f"{angle:.4f}°", f"{radius / jump_off:.4f}"]
+                            for speed, angle, radius in zip(angles["speed"].values, angles["critical_angle"].values,
+                                                            angles["let_go_radius"].values)], ["right"] * 4)
+    return ["The critical angle of scenario B at the same speeds (`me.critical_angles_B_at_speeds`). The paper's "
+            "contact jumps off at a finite radius, the turning point of the Δγ1 branch, and (21) is the angle at which "
+            "its springs slide exactly there; a rate-dependent edge has no jump: its radius, and with it the cap K a, "
+            "falls to 0 over a finite time while the shift does not, so the springs slide in its last instants at "
+            "every angle. It has let go once its release rate rises as it shrinks (dΓ/da <= 0 at the depth: "
+            "d <= −3a²/R on the paraboloid, the branch's turning point, after which it collapses whatever the path "
+            "does; `me.continuum.let_go`), and the critical angle is the one at which the springs slide exactly "
+            f"there. It falls from the paper's (21), {paper:.4f}°, as the speed grows: the lagging edge lets go later, "
+            "deeper and at a larger radius, after a longer way out. The continuum's springs "
+            "(`me.continuum.solve_rate_shifts`) and the discrete ones slide before the let-go below the angle and "
+            f"after it above. Figure: `{RATE_ANGLE_B_STEM}.png`.", ""] + table + [""]
+
+
 def _write(data: RateSection, out: FilePath, keep_agreeing: bool) -> list[list[FileOutcome]]:
     rows, angles = data.rows, data.angles
     speeds = np.array([row.speed for row in rows]) / RATE_V_REF
@@ -206,7 +237,11 @@ def _write(data: RateSection, out: FilePath, keep_agreeing: bool) -> list[list[F
     return [[write_figure(figure, out / f"{RATE_STEM}.png", keep_agreeing),
              write_figure(angle_figure, out / f"{RATE_ANGLE_STEM}.png", keep_agreeing),
              write_figure(plot_phase_diagram_at_speeds(data.phase), out / f"{RATE_PHASE_STEM}.png", keep_agreeing),
-             write_figure(plot_scenario_at_speeds(data.runs), out / f"{RATE_SCENARIO_STEM}.png", keep_agreeing)]]
+             write_figure(plot_scenario_at_speeds(data.runs), out / f"{RATE_SCENARIO_STEM}.png", keep_agreeing),
+             write_figure(plot_critical_angle_B_against_speed(data.angles_B["speed"].values / RATE_V_REF,
+                                                              data.angles_B["critical_angle"].values,
+                                                              data.angles_B.attrs["critical_angle_paper"]),
+                          out / f"{RATE_ANGLE_B_STEM}.png", keep_agreeing)]]
 
 
 RATE_ADHESION = Section(
@@ -214,13 +249,15 @@ RATE_ADHESION = Section(
     steps=(Step(f"rate-dependent adhesion: pull-off at {len(RATE_SPEEDS)} speeds", rate_rows),
            Step(f"rate-dependent adhesion: the critical angle of A at {len(RATE_SPEEDS)} speeds", rate_angles),
            Step(f"rate-dependent adhesion: A's phase diagram at {len(THREE_SPEEDS)} speeds", rate_phase_diagram),
-           Step(f"rate-dependent adhesion: A at 20° at {len(THREE_SPEEDS)} speeds (discrete)", rate_scenario_runs)),
+           Step(f"rate-dependent adhesion: A at 20° at {len(THREE_SPEEDS)} speeds (discrete)", rate_scenario_runs),
+           Step(f"rate-dependent adhesion: the critical angle of B at {len(RATE_SPEEDS)} speeds", rate_angles_B)),
     collect=lambda results: RateSection(*results),
     render=rate_lines,
     write=_write,
-    writing="writing the rate-dependent figures (pull-off, critical angle, phase diagram, scenario A)",
+    writing="writing the rate-dependent figures (pull-off, critical angles, phase diagram, scenario A)",
     files=(f"- `{RATE_STEM}.png`: the pull-off force against the unloading speed under the rate-dependent law.",
            f"- `{RATE_ANGLE_STEM}.png`: the critical angle of scenario A against the speed under the same law.",
            f"- `{RATE_PHASE_STEM}.png`: scenario A's phase diagram (Fig. 9a) at three speeds under the same law.",
-           f"- `{RATE_SCENARIO_STEM}.png`: F_N and F_x of scenario A at 20° at three speeds and the paper's law."),
+           f"- `{RATE_SCENARIO_STEM}.png`: F_N and F_x of scenario A at 20° at three speeds and the paper's law.",
+           f"- `{RATE_ANGLE_B_STEM}.png`: the critical angle of scenario B against the speed under the same law."),
 )

@@ -1061,7 +1061,55 @@ def rate_dependent_adhesion_afresh() -> dict[str, Relation]:
     add(Relation("paraboloid_release_rate", "(8)", "energy release rate of a paraboloid's edge of radius a at depth d "
                  "(edge spring stretched, a^2/R > d)", release, parabolic, (a, d, R, E_star)))
     _derive_flat_punch_detachment(add, released, elongation)
+    _derive_let_go(add, released, elongation)
+    _derive_rate_springs_force(add)
     return out
+
+
+def _derive_let_go(add: AddRelation, released: sp.Expr, elongation: sp.Symbol) -> None:
+    """Where a receding edge lets go: the release rate ``Γ(a, d) = E* (g(a) − d)² / (2π a)`` at a fixed depth stops
+    falling as the radius shrinks, ``∂Γ/∂a = 0`` (Griffith's stability of the edge: beyond it ``Γ`` rises as the edge
+    recedes, and with it the speed, so the edge runs to 0 whatever the path does next). Solved for the depth with
+    ``g`` and ``g'`` as symbols; on the paraboloid it is the jump-off of the branch (9) of any work, the paper's
+    displacement-controlled pull-off (the limit ``v_ref → ∞``)."""
+    profile, slope = sp.Symbol("g_a", real=True), sp.Symbol("g_slope", real=True)
+    shape = sp.Function("g")
+    rate = released.subs(elongation, shape(a) - d)
+    roots = [root for root in sp.solve(sp.diff(rate, a), d) if sp.simplify(root - shape(a)) != 0]
+    if len(roots) != 1:
+        raise RuntimeError(f"the let-go depth is not one root of dGamma/da = 0: {roots}")
+    depth = roots[0].subs(sp.Derivative(shape(a), a), slope).subs(shape(a), profile)
+    paraboloid = depth.subs({profile: a**2 / R, slope: 2 * a / R})
+    model = derive()
+    off = model["jump_off_radius"].rhs
+    if sp.simplify(paraboloid.subs(a, off) - model["jump_off_depth"].rhs) != 0:
+        raise RuntimeError("the let-go depth of the paraboloid is not the jump-off of the branch (9)")
+    add(Relation("let_go_depth", "(8)", "depth below which the edge of radius a lets go: dGamma/da = 0 at a fixed "
+                 "depth, with g_a = g(a) and g_slope = g'(a) (on the paraboloid the jump-off of the branch (9))",
+                 d, sp.expand(depth), (profile, slope, a)))
+
+
+def _derive_rate_springs_force(add: AddRelation) -> None:
+    """The tangential force of springs under one cap ``ū = K a`` whose anchors have only been pushed up (the play
+    operator's lower level, its running maximum ``M``), attached at the times ``τ`` of an advancing edge with the
+    anchors ``X(τ)`` (the path's ``x`` then, non-decreasing): ``2 G* ∫_0^a (x − max(X, M)) dξ`` over a record of
+    springs ``[a(τ_lo), a(τ_hi)]``, cut at ``τ*`` where ``X = M``, by parts in ``τ``: the sliding ones carry
+    ``M``, the sticking ones ``X a|_{τ*}^{τ_hi} − ∫ Ẋ a dτ``."""
+    level, x_now = sp.Symbol("M", real=True), sp.Symbol("x", real=True)
+    lo, star, hi = sp.symbols("a_lo a_star a_hi", positive=True)
+    anchor_star, anchor_hi, swept = sp.symbols("X_star X_hi I_Xa", real=True)
+    clock, start, end = sp.symbols("tau tau_star tau_hi", real=True)
+    anchor, radius = sp.Function("X")(clock), sp.Function("A")(clock)
+    by_parts = (anchor * radius).subs(clock, end) - (anchor * radius).subs(clock, start) \
+        - sp.Integral(sp.diff(anchor, clock) * radius, (clock, start, end))
+    if sp.simplify(sp.diff(by_parts, end) - (anchor * sp.diff(radius, clock)).subs(clock, end)) != 0:
+        raise RuntimeError("the anchors' integral by parts does not differentiate back to X(tau) a'(tau)")
+    held = level * (star - lo) + anchor_hi * hi - anchor_star * star - swept
+    force = 2 * G_star * (x_now * (hi - lo) - held)
+    add(Relation("rate_springs_record_force", "(11), (13)", "tangential force of the springs attached on [a_lo, a_hi] "
+                 "at x = X(tau), those with X < M sliding at M: 2 G* int (x - max(X, M)) dxi, with I_Xa the integral "
+                 "of X' a over the sticking ones' times", F_x, force,
+                 (x_now, level, lo, star, hi, anchor_star, anchor_hi, swept, G_star)))
 
 
 def _derive_flat_punch_detachment(add: AddRelation, released: sp.Expr, elongation: sp.Symbol) -> None:

@@ -19,7 +19,7 @@ SLOW_LIMIT_SHARE = 0.05
 @pytest.fixture(scope="module")
 def data():
     return section.RateSection(section.rate_rows(), section.rate_angles(), section.rate_phase_diagram(),
-                               section.rate_scenario_runs())
+                               section.rate_scenario_runs(), section.rate_angles_B())
 
 
 @pytest.fixture(scope="module")
@@ -55,12 +55,20 @@ def test_scenario_a_at_three_speeds_pulls_harder_and_holds_less_tangential_force
     assert np.all(np.diff(pulls) > 0) and np.all(np.diff(holds) < 0)  # the paper's law first, then ever faster
 
 
+def test_the_critical_angle_of_b_falls_with_the_speed_from_the_paper_s(data):
+    """Below (21) at every speed, falling as the edge lags more; the slowest (1e-4 v_ref) near (21)."""
+    angles, paper = data.angles_B["critical_angle"].values, data.angles_B.attrs["critical_angle_paper"]
+    assert np.all(np.diff(angles) < 0) and angles[0] < paper
+    assert paper - angles[0] < SLOW_LIMIT_SHARE * paper
+
+
 def test_the_section_renders_its_tables_and_writes_its_figures(data, tmp_path):
     text = "\n".join(section.rate_lines(data))
-    assert text.count("\n| 1e-") == 14 and "Rate-dependent adhesion" in text and "critical angle of A" in text
+    assert text.count("\n| 1e-") == 21 and "critical angle of B" in text and "Rate-dependent adhesion" in text and "critical angle of A" in text
     assert text.count("\n| v = 1e-") == 3 and "(18)" in text
     first = section.RATE_ADHESION.write(data, tmp_path, True)
-    for stem in (section.RATE_STEM, section.RATE_ANGLE_STEM, section.RATE_PHASE_STEM, section.RATE_SCENARIO_STEM):
+    for stem in (section.RATE_STEM, section.RATE_ANGLE_STEM, section.RATE_PHASE_STEM, section.RATE_SCENARIO_STEM,
+                 section.RATE_ANGLE_B_STEM):
         assert (tmp_path / f"{stem}.png").stat().st_size > 0
     again = section.RATE_ADHESION.write(data, tmp_path, True)
     assert {outcome.status.value for outcome in first[0]} == {"written"}

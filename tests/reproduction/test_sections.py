@@ -55,8 +55,9 @@ def test_the_report_lists_the_files_of_every_section_in_order():
     files = [line for section in runner.SECTIONS for line in section.files]
     assert files[0].startswith("- `phase_diagram_A_R30") and files[-2].startswith("- `finite_layer_critical_angles")
     assert files[-4].startswith("- `fig8_R30_layer.png`") and files[-6].startswith("- `finite_layer_pull_off.png`")
-    assert files[-7].startswith("- `rate_adhesion_A20.png`") and files[-10].startswith("- `rate_adhesion_pull_off.png`")
-    assert files[-11] == "  exact MDR and its figure (where LAMMPS is installed)."
+    assert files[-7].startswith("- `rate_adhesion_critical_angle_B.png`")
+    assert files[-8].startswith("- `rate_adhesion_A20.png`") and files[-11].startswith("- `rate_adhesion_pull_off.png`")
+    assert files[-12] == "  exact MDR and its figure (where LAMMPS is installed)."
 
 
 # ----------------------------------------------------------------------------------------------

@@ -39,6 +39,11 @@ module                     one idea
 :mod:`.solution`           :class:`PathSolution` (spans and interpolants), ``evaluate``, ``extremum``,
                            ``tangential_work``
 :mod:`.rate_edge`          a rate-dependent adhesion law's edge: the radius as the state of an ODE (the normal problem)
+:mod:`.rate_march`         ``solve_ivp``'s loop for the edge's scalar ODE without its per-step bookkeeping (same steps)
+:mod:`.rate_run`           ``simulate``'s continuum under the rate-dependent law: quantities, event log, extrema
+:mod:`.let_go`             where a receding rate-dependent edge lets go (its release rate rising as it shrinks)
+:mod:`.rate_shifts`        the springs' shifts on top of it (``τ0``'s cap, ``x`` not turning back): ``F_x`` as a closed
+                           form of the edge's dense output
 :mod:`.extrema`            the exact extrema of ``F_N``, ``F_x`` and ``A`` over the run, not from output samples
 :mod:`.stationary`         where one span's quantity is stationary: the roots of its derivative (dense output,
                            the branch's closed forms)
@@ -65,6 +70,8 @@ from .branch import Branch
 from .model import MAX_TRAVEL_PER_CAP, ContinuumModel, Resolution, Segment, kinematics, resolution
 from .plan import Action, SpanPlan, plan_span
 from .rate_edge import EdgeEvent, EdgeEventKind, EdgeMode, EdgeRun, solve_edge
+from .rate_shifts import RateShifts, solve_rate_shifts
+from .let_go import LetGo, let_go
 from .solution import (EVALUATED_QUANTITIES, EXTREMUM_QUANTITIES, PathSolution, algebraic_tangential_force, evaluate,
                        evaluate_span, extremum, tangential_work)
 from .solve import run_continuum, solve_path
@@ -76,7 +83,7 @@ from .tolerances import NEGLIGIBLE_SHARE, Tolerances
 from .zones import Role, ZoneLayout, lay_out_zones
 
 __all__ = [
-    "Action", "AnchorMap", "EdgeEvent", "EdgeEventKind", "EdgeMode", "EdgeRun", "solve_edge", "Branch", "Cap", "ContactState", "ContinuumModel", "EVALUATED_QUANTITIES", "EVENT_KINDS",
+    "Action", "AnchorMap", "EdgeEvent", "EdgeEventKind", "EdgeMode", "EdgeRun", "solve_edge", "RateShifts", "solve_rate_shifts", "LetGo", "let_go", "Branch", "Cap", "ContactState", "ContinuumModel", "EVALUATED_QUANTITIES", "EVENT_KINDS",
     "EXTREMUM_QUANTITIES", "Event", "EventKind", "MAX_TRAVEL_PER_CAP", "NEGLIGIBLE_SHARE", "NO_ZONE",
     "PathSolution", "Piece", "Regime", "Resolution", "Role", "Segment", "Slip", "Span", "SpanIntegrator",
     "SpanPlan", "Tolerances", "Trigger", "ZONE_EVENTS", "ZoneLayout", "ZoneSummary", "algebraic_tangential_force",

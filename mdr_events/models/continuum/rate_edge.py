@@ -24,7 +24,6 @@ from dataclasses import dataclass, field
 from typing import NamedTuple
 
 import numpy as np
-from scipy.integrate import solve_ivp
 from scipy.optimize import minimize_scalar
 
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
@@ -38,6 +37,7 @@ from mdr_events.validation import check_count, check_real, real_array, shown
 
 from .branch import make_branch
 from .model import ContinuumModel, Segment, kinematics
+from .rate_march import march
 from .tolerances import Tolerances
 
 __all__ = ["EdgeEventKind", "EdgeEvent", "EdgeMode", "EdgeRun", "solve_edge", "START_SPEED", "END_SHARE", "EDGE_RTOL",
@@ -475,8 +475,8 @@ def _piece(run: EdgeRun, ode: _EdgeODE, state, jump_in: float, rtol: float, meth
     speed = ode.rhs(mode)
     try:
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # (a failure is reported below, whole)
-            solution = solve_ivp(speed, (t0, segment.t1), [a0], method=method, rtol=rtol, atol=rtol * jump_in,
-                                 dense_output=True, events=ode.moving_events(mode, END_SHARE * jump_in))
+            solution = march(speed, t0, segment.t1, a0, method, rtol, rtol * jump_in,
+                             ode.moving_events(mode, END_SHARE * jump_in))
     except _TooStiff:
         raise _unresolved(ode.law, f"{MAX_EVALUATIONS} evaluations of the ODE from t={float(t0)!r} s "
                                    f"({mode.value}) did not reach the segment's end {float(segment.t1)!r} s", ode) from None
@@ -484,16 +484,16 @@ def _piece(run: EdgeRun, ode: _EdgeODE, state, jump_in: float, rtol: float, meth
         # beyond the profile's doubles
         raise _unresolved(ode.law, f"the solver failed from t={float(t0)!r} s ({mode.value}): "
                                    f"{type(error).__name__}: {error}", ode) from None
-    t_end, a_end = float(solution.t[-1]), float(solution.y[0, -1])
+    t_end, a_end = solution.t, solution.y
     if solution.status < 0:
         if mode is EdgeMode.RECEDING and _collapsed(ode, speed, t_end, a_end):  # it ran away faster than the clock
-            run.pieces.append((t0, t_end, segment, solution.sol))
+            run.pieces.append((t0, t_end, segment, solution.sol or _Constant(a0)))
             run.events.append(EdgeEvent(t_end, EdgeEventKind.CONTACT_ENDS, float(segment.d(t_end)), a_end))
             return None
         raise _unresolved(ode.law, f"the solver failed on [{float(t0)!r}, {float(segment.t1)!r}] s "
                                    f"({mode.value}): {solution.message}", ode)
     run.pieces.append((t0, t_end, segment, solution.sol))
-    if solution.status == 1 and len(solution.t_events[1]):  # the contact has come apart
+    if solution.status == 1 and solution.event == 1:  # the contact has come apart
         run.events.append(EdgeEvent(t_end, EdgeEventKind.CONTACT_ENDS, float(segment.d(t_end)), a_end))
         return None
     if solution.status == 1:  # it stops (or fills the punch's face)

@@ -1,0 +1,98 @@
+"""The edge's dense output at many times at once: each step's polynomial as one row of an array.
+
+``OdeSolution`` evaluates a step at a time (a Python call per step among the times asked). The springs' shifts on top
+of the rate-dependent edge (:mod:`~mdr_events.models.continuum.rate_shifts`) ask for the radius at thousands of times
+spread over hundreds of steps, many times over (bisections, quadrature). :func:`step_polynomials` lays the steps of
+Radau's and LSODA's dense outputs out as rows of coefficients in the power basis of their own variable (LSODA's
+``x = (t − t_new)/h``, Nordsieck's array; Radau's ``x = (t − t_old)/h``, ``y_old`` and its collocation polynomial's
+``Q``) and evaluates all the times in one pass (Horner's rule): the same polynomials, summed in another order (a few
+ulp apart). Other dense outputs are kept as they are.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.integrate._ivp.common import OdeSolution
+from scipy.integrate._ivp.lsoda import LsodaDenseOutput
+from scipy.integrate._ivp.radau import RadauDenseOutput
+
+__all__ = ["StepPolynomials", "step_polynomials"]
+
+
+class StepPolynomials:
+    """The steps of a scalar ODE's dense output as polynomials, called like ``OdeSolution``.
+
+    Parameters
+    ----------
+    ts : numpy.ndarray
+        The steps' ends (increasing).
+    origins, scales : numpy.ndarray
+        Each step's variable ``x = (t − origin) / scale``.
+    coefficients : numpy.ndarray
+        Each step's coefficients of ``x^0, x^1, …`` (rows padded with zeros).
+    side : str
+        Which step a time on a step's end belongs to (``OdeSolution``'s rule).
+    """
+
+    def __init__(self, ts: np.ndarray, origins: np.ndarray, scales: np.ndarray, coefficients: np.ndarray, side: str):
+        self.ts, self.origins, self.scales, self.coefficients, self.side = ts, origins, scales, coefficients, side
+
+    def __call__(self, t) -> np.ndarray:
+        """The state at ``t`` (shape ``(1,)`` for a scalar, ``(1, n)`` for ``n`` times).
+
+        Parameters
+        ----------
+        t : float or array_like
+            The times.
+
+        Returns
+        -------
+        numpy.ndarray
+            The state, as ``OdeSolution`` returns it.
+        """
+        times = np.asarray(t, dtype=float)
+        flat = np.atleast_1d(times).ravel()
+        step = np.clip(np.searchsorted(self.ts, flat, side=self.side) - 1, 0, len(self.origins) - 1)
+        x = (flat - self.origins[step]) / self.scales[step]
+        rows = self.coefficients[step]
+        value = rows[:, -1].copy()
+        for column in range(rows.shape[1] - 2, -1, -1):
+            value = value * x + rows[:, column]
+        return value.reshape((1,) + times.shape) if times.ndim else value[:1].reshape(1)
+
+
+def _row(interpolant) -> tuple[float, float, np.ndarray] | None:
+    """A step's origin, scale and coefficients in the power basis, or ``None`` for another kind of dense output."""
+    if type(interpolant) is LsodaDenseOutput:
+        return interpolant.t, interpolant.h, interpolant.yh[0]
+    if type(interpolant) is RadauDenseOutput:
+        return interpolant.t_old, interpolant.h, np.concatenate([interpolant.y_old[:1], interpolant.Q[0]])
+    return None
+
+
+def step_polynomials(solution):
+    """``solution`` as :class:`StepPolynomials` where it is an ``OdeSolution`` of Radau's or LSODA's steps of one
+    state; else ``solution`` itself.
+
+    Parameters
+    ----------
+    solution : callable
+        A piece's dense output.
+
+    Returns
+    -------
+    StepPolynomials or callable
+        The same values, evaluated in one pass.
+    """
+    if not isinstance(solution, OdeSolution) or not solution.ascending or not solution.interpolants:
+        return solution
+    rows = [_row(interpolant) for interpolant in solution.interpolants]
+    if any(row is None for row in rows) or rows[0][2].ndim != 1:
+        return solution
+    width = max(len(row[2]) for row in rows)
+    coefficients = np.zeros((len(rows), width))
+    for index, (_, _, row) in enumerate(rows):
+        coefficients[index, :len(row)] = row
+    origins = np.array([row[0] for row in rows], dtype=float)
+    scales = np.array([row[1] for row in rows], dtype=float)
+    return StepPolynomials(np.asarray(solution.ts, dtype=float), origins, scales, coefficients, solution.side)

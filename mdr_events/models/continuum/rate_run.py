@@ -1,0 +1,327 @@
+"""The continuum method under a rate-dependent adhesion law: each path's run as ``simulate`` fills it.
+
+:func:`run_rate_continuum` solves each path by :func:`~mdr_events.models.continuum.rate_shifts.solve_rate_shifts` (the
+radius an ODE state, the springs' shifts on top under ``τ0``'s cap, a path whose ``x`` does not turn back) and fills
+what :func:`~mdr_events.models.continuum.solve.run_continuum` fills for the paper's law: the quantities of
+:data:`~mdr_events.models.continuum.solution.EVALUATED_QUANTITIES` on a common grid of times from each path's first
+contact, the event log and the extrema of ``F_N``, ``F_x`` and the contact area.
+
+The log holds the edge's events (first contact and re-contact, growth resuming, detachment starting, the contact's
+end), the path's corners in contact, and the springs' (the first contact's slip onset, full slip, a re-stick where the
+level ``x − K a`` turns back and a slip onset again where it returns to its maximum; direction: the cap, the way
+``x`` goes). Where the edge stops between pieces no event is logged (the paper's law has no such event). A run ends
+where its contact ends for good (the samples after it ``nan``, the first one on the path's segment showing the contact
+gone) or at the path's end. The extrema are found on the edge's solver steps (every step's ends and
+:data:`EXTREMUM_PROBES` points inside) and refined by bounded minimisation between the neighbours of the largest or
+least: the quantities are smooth within a step.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from scipy.optimize import brentq, minimize_scalar
+
+from mdr_events.contact.adhesion import RateDependentAdhesion
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.limits import Limits
+from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.paths import Path
+from mdr_events.parameters import Parameters
+
+from .extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, VALUE_AFTER_CONTACT, extremum_names
+from .rate_edge import EdgeEventKind
+from .rate_shifts import RateShifts, solve_rate_shifts
+from .solve import BYTES_PER_SAMPLE
+from .state import Event, EventKind
+from .tolerances import Tolerances
+
+__all__ = ["run_rate_continuum", "rate_quantities", "rate_events", "rate_extrema", "Scan", "scan_run",
+           "EXTREMUM_PROBES", "SWITCH_XTOL", "SWITCH_POINTS", "RUN_METHOD"]
+
+#: Points inside each of the edge's solver steps at which the scan looks (besides the steps' ends and the level's
+#: candidates): none, since a quantity's extremum inside a step lies between the scan's neighbours of its best, which
+#: the refinement searches (the quantities are smooth within a step; their kinks, at the path's corners and the edge's
+#: events, are steps' ends).
+EXTREMUM_PROBES = 0
+#: The bisection of a switch (full slip, a re-stick inside a step) ends at this share of the clock (the edge's ODE
+#: resolves its times to about 1e-10 of themselves).
+SWITCH_XTOL = 1e-13
+#: The points a switch's bracket is cut into at once.
+SWITCH_POINTS = 64
+#: The edge's ``solve_ivp`` method in ``simulate``: LSODA, within 2e-9 of Radau's radius (the reference of
+#: :func:`~mdr_events.models.continuum.rate_shifts.solve_rate_shifts`) at a tenth to a twentieth of its time.
+RUN_METHOD = "LSODA"
+#: The edge's events and the kinds they are logged as.
+_EDGE_KINDS = {EdgeEventKind.FIRST_CONTACT: EventKind.FIRST_CONTACT, EdgeEventKind.RE_CONTACT: EventKind.RE_CONTACT,
+               EdgeEventKind.GROWTH_STARTS: EventKind.GROWTH_RESUMES,
+               EdgeEventKind.RECEDING_STARTS: EventKind.DETACHMENT_STARTS,
+               EdgeEventKind.CONTACT_ENDS: EventKind.CONTACT_ENDS}
+
+
+def _end(shifts: RateShifts) -> tuple[float, bool]:
+    """The run's end on the path's clock and whether the contact ended there (for good: no contact after it)."""
+    last = shifts.edge.events[-1]
+    if last.kind is EdgeEventKind.CONTACT_ENDS:
+        return float(last.time), True
+    return float(shifts.path.duration), False
+
+
+def rate_quantities(shifts: RateShifts, times: np.ndarray) -> dict[str, np.ndarray]:
+    """The quantities of :data:`~mdr_events.models.continuum.solution.EVALUATED_QUANTITIES` at ``times`` (s from the
+    path's first contact); ``nan`` after the run's end but the first sample on the path once the contact ended.
+
+    Parameters
+    ----------
+    shifts : RateShifts
+        The run.
+    times : numpy.ndarray
+        The times (s from the first contact).
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        Depth, ``x``, ``F_N``, ``F_x``, the radius and the sliding fraction (``nan`` out of contact).
+    """
+    path = shifts.path
+    clock = np.asarray(times, dtype=float) + path.first_contact_time()
+    end, ended = _end(shifts)
+    x, depth = path.position(clock)
+    radius = shifts._radius(clock)
+    force, sliding = shifts._evaluate(clock)
+    normal = shifts.edge.normal_force(np.minimum(clock, path.duration), path)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        share = np.where(radius > 0.0, np.minimum(sliding / np.where(radius > 0.0, radius, 1.0), 1.0), np.nan)
+    out = {"indentation_depth": depth, "tangential_displacement": x, "normal_force": normal,
+           "tangential_force": force, "contact_radius": radius, "sliding_fraction": share}
+    after = np.flatnonzero(clock > end)
+    for name in out:
+        out[name] = np.asarray(out[name], dtype=float).copy()
+        out[name][after] = np.nan
+    if ended and after.size and clock[after[0]] <= path.duration:  # (the contact shown gone, as the paper's run)
+        first = after[0]
+        out["indentation_depth"][first], out["tangential_displacement"][first] = depth[first], x[first]
+        for name in ("normal_force", "tangential_force", "contact_radius"):
+            out[name][first] = 0.0
+    return out
+
+
+class Scan(NamedTuple):
+    """A run's quantities on the times where its events and extrema are looked for: the level's candidates (every
+    knot of the edge's steps, each step's interior maximum of ``x − K a``) and :data:`EXTREMUM_PROBES` points inside
+    each step, from the first contact to the run's end (path clock).
+
+    Parameters
+    ----------
+    times : numpy.ndarray
+        The times (s, path clock), increasing.
+    force, extent, radius, level, normal : numpy.ndarray
+        ``F_x``, the springs at the cap's extent, the radius, ``x − K a`` (in ``σ``'s coordinates) and ``F_N`` there.
+    """
+
+    times: np.ndarray
+    force: np.ndarray
+    extent: np.ndarray
+    radius: np.ndarray
+    level: np.ndarray
+    normal: np.ndarray
+
+
+def scan_run(shifts: RateShifts) -> Scan:
+    """The run's :class:`Scan` (one evaluation for the events and the extrema).
+
+    Parameters
+    ----------
+    shifts : RateShifts
+        The run.
+
+    Returns
+    -------
+    Scan
+        The quantities on the scan's times.
+    """
+    start = shifts.path.first_contact_time()
+    end, _ = _end(shifts)
+    knots = np.unique(np.concatenate([[view.t0, view.t1] for view in shifts.views]
+                                     + [getattr(view.solution, "ts", []) for view in shifts.views]))
+    knots = np.unique(np.concatenate([[start], knots[(knots >= start) & (knots <= end)]]))  # (radius 0 at the start)
+    share = np.arange(EXTREMUM_PROBES + 1) / (EXTREMUM_PROBES + 1)
+    stamps = shifts._candidates[0]
+    times = np.unique(np.concatenate([(knots[:-1, None] + np.diff(knots)[:, None] * share[None, :]).ravel(),
+                                      knots[-1:], stamps[(stamps >= start) & (stamps <= end)]]))
+    force, extent = shifts._evaluate(times)
+    return Scan(times, force, extent, shifts._radius(times), shifts._level(times),
+                shifts.edge.normal_force(times, shifts.path))
+
+
+def _at_cap(shifts: RateShifts, clock: np.ndarray) -> np.ndarray:
+    return shifts.slip_radius(clock) > 0.0
+
+
+def _full(shifts: RateShifts, clock: np.ndarray) -> np.ndarray:
+    radius = shifts._radius(clock)
+    return (shifts.slip_radius(clock) >= radius) & (radius > 0.0)
+
+
+def _switch(predicate, low: float, high: float) -> float:
+    """The time in ``[low, high]`` where ``predicate`` (vectorised; false at ``low``, true at ``high``) turns true: the
+    bracket narrowed :data:`SWITCH_POINTS` times at once until it is :data:`SWITCH_XTOL` of the clock."""
+    while high - low > SWITCH_XTOL * abs(high):
+        grid = np.linspace(low, high, SWITCH_POINTS)
+        inner = predicate(grid[1:-1])
+        first = int(np.argmax(inner)) + 1 if np.any(inner) else SWITCH_POINTS - 1
+        low, high = grid[first - 1], grid[first]
+    return float(high)
+
+
+def _slip_events(shifts: RateShifts, scan: Scan) -> list[tuple[float, EventKind]]:
+    """The springs' events (path clock): onsets, full slip and re-sticks, on the scan (module docstring): the
+    springs are at the cap where the level equals its running maximum."""
+    stamps, values = scan.times, scan.level
+    running = np.maximum.accumulate(values)
+    sliding, full = scan.extent > 0.0, (scan.extent >= scan.radius) & (scan.radius > 0.0)
+    out = []
+    onset = shifts.slip_onset_time()
+    if math.isfinite(onset) and onset <= stamps[-1]:
+        out.append((onset, EventKind.SLIP_ONSET))
+    for index in np.flatnonzero((sliding[1:] != sliding[:-1]) | (full[1:] & ~full[:-1])) + 1:
+        before, after = stamps[index - 1], stamps[index]
+        if sliding[index - 1] and not sliding[index]:
+            out.append((before if values[index - 1] >= running[index - 1] else _switch(
+                lambda t: ~_at_cap(shifts, t), before, after), EventKind.RE_STICK))
+        elif sliding[index] and not sliding[index - 1] and before > onset:
+            held = running[index - 1]
+            level = lambda t: float(shifts._level(np.array([t]))[0]) - held  # noqa: E731
+            out.append((brentq(level, before, after) if level(before) < 0.0 < level(after) else after,
+                        EventKind.SLIP_ONSET))
+        if full[index] and not full[index - 1]:
+            out.append((_switch(lambda t: _full(shifts, t), before, after), EventKind.FULL_SLIP))
+    return out
+
+
+def rate_events(shifts: RateShifts, scan: Scan) -> list[Event]:
+    """The run's event log (module docstring), times in s from the path's first contact.
+
+    Parameters
+    ----------
+    shifts : RateShifts
+        The run.
+    scan : Scan
+        Its quantities on the scan's times (:func:`scan_run`).
+
+    Returns
+    -------
+    list of Event
+        In time order.
+    """
+    path, start = shifts.path, shifts.path.first_contact_time()
+    end, _ = _end(shifts)
+    timed = [(event.time, _EDGE_KINDS[event.kind]) for event in shifts.edge.events if event.kind in _EDGE_KINDS]
+    corners = path.corner_times[1:-1]
+    timed += [(float(t), EventKind.CORNER) for t in corners if start < t < end and shifts._radius(np.array([t]))[0] > 0]
+    timed += _slip_events(shifts, scan)
+    log = []
+    for clock, kind in sorted(timed, key=lambda item: item[0]):
+        x, depth = (float(value) for value in path.position(clock))
+        direction = int(shifts.sign) if kind in (EventKind.SLIP_ONSET, EventKind.FULL_SLIP, EventKind.RE_STICK) else 0
+        log.append(Event(float(clock - start), kind, depth, float(shifts._radius(np.array([clock]))[0]), x, direction))
+    return log
+
+
+def _quantity(shifts: RateShifts, name: str, clock: np.ndarray) -> np.ndarray:
+    if name == "normal_force":
+        return shifts.edge.normal_force(clock, shifts.path)
+    if name == "tangential_force":
+        return shifts._evaluate(clock)[0]
+    return math.pi * shifts._radius(clock) ** 2
+
+
+def rate_extrema(shifts: RateShifts, scan: Scan) -> dict[str, float]:
+    """The largest and least ``F_N``, ``F_x`` and contact area of the run and their times (s from the first contact),
+    as :func:`~mdr_events.models.continuum.extrema.solution_extrema` gives them for the paper's law: the scan's best,
+    refined by bounded minimisation between its neighbours where it lies inside a step (not at the scan's ends).
+
+    Parameters
+    ----------
+    shifts : RateShifts
+        The run.
+    scan : Scan
+        Its quantities on the scan's times (:func:`scan_run`).
+
+    Returns
+    -------
+    dict of str to float
+        ``q_max``, ``q_max_time``, ``q_min``, ``q_min_time`` of each quantity.
+    """
+    start = shifts.path.first_contact_time()
+    end, ended = _end(shifts)
+    grid = scan.times
+    scanned = {"normal_force": scan.normal, "tangential_force": scan.force, "contact_area": math.pi * scan.radius ** 2}
+    out = {}
+    for name in EXTREMA_QUANTITIES:
+        values = scanned[name]
+        for kind, largest in EXTREMA_KINDS.items():
+            sign = -1.0 if largest else 1.0
+            at = int(np.argmin(sign * values))
+            time, value = float(grid[at]), float(values[at])
+            if 0 < at < len(grid) - 1:
+                found = minimize_scalar(lambda t: sign * float(_quantity(shifts, name, np.array([t]))[0]),
+                                        method="bounded", bounds=(grid[at - 1], grid[at + 1]),
+                                        options={"xatol": SWITCH_XTOL * grid[at + 1]})
+                if sign * found.fun < sign * value:
+                    time, value = float(found.x), float(found.fun) * sign
+            if ended and sign * VALUE_AFTER_CONTACT < sign * value:
+                time, value = end, VALUE_AFTER_CONTACT
+            value_name, time_name = extremum_names(name, kind)
+            out[value_name], out[time_name] = value, time - start
+    return out
+
+
+def run_rate_continuum(params: Parameters, paths: list[Path], times: np.ndarray | int, tolerances: Tolerances,
+                       limits: Limits, profile: SimulatedProfile, friction: FrictionLaw,
+                       law: RateDependentAdhesion) -> dict:
+    """Solve every path under ``law`` and fill a common time grid (module docstring), as ``run_continuum`` does.
+
+    Parameters
+    ----------
+    params : Parameters
+        The material, ``τ0`` and the works of adhesion at rest (the law's).
+    paths : list of Path
+        One path per case.
+    times : numpy.ndarray or int
+        The output times (s from first contact), or the number of samples to the end of the longest run.
+    tolerances : Tolerances
+        Its ``rtol`` is the edge's ODE tolerance (by :data:`RUN_METHOD`).
+    limits : Limits
+        The resource limits the output is checked against first.
+    profile : PowerLaw, FlatPunch, TabulatedProfile or None
+        The indenter.
+    friction : FrictionLaw
+        ``"tau0"``.
+    law : RateDependentAdhesion
+        The adhesion law.
+
+    Returns
+    -------
+    dict
+        The quantities stacked to (n_cases, n_time), ``time``, ``events`` (one list per case) and ``extrema`` (one
+        dict per case).
+    """
+    samples = times if isinstance(times, int) else None
+    n_time = samples if samples is not None else len(times)
+    limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
+                 memory=n_time * len(paths) * BYTES_PER_SAMPLE)
+    runs = [solve_rate_shifts(params, path, law, profile=profile, friction=friction, rtol=tolerances.rtol,
+                              method=RUN_METHOD) for path in paths]
+    if samples is not None:
+        longest = max(_end(run)[0] - run.path.first_contact_time() for run in runs)
+        times = np.linspace(0.0, longest * (1.0 + 1.0 / samples), samples)
+    times = np.asarray(times, dtype=float)
+    per_case = [rate_quantities(run, times) for run in runs]
+    out = {name: np.stack([case[name] for case in per_case]) for name in per_case[0]}
+    scans = [scan_run(run) for run in runs]
+    out.update(time=times, events=[rate_events(run, scan) for run, scan in zip(runs, scans)],
+               extrema=[rate_extrema(run, scan) for run, scan in zip(runs, scans)])
+    return out

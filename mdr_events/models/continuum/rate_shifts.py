@@ -1,0 +1,455 @@
+r"""The springs' tangential shifts on top of a rate-dependent edge: the continuum's ``F_x`` under ``τ0``'s cap.
+
+Under :class:`~mdr_events.contact.adhesion.RateDependentAdhesion` the radius ``a(t)`` is the state of an ODE
+(:func:`~mdr_events.models.continuum.rate_edge.solve_edge`). On top of it the springs keep the paper's rules: a spring
+attaches at the advancing edge with its anchor at the indenter's ``x`` then, lets go at the receding edge (forgetting
+its anchor), and its shift is capped at ``ū = K a(t)`` (13), the same for every spring: each anchor is a play operator
+of the window ``[L, U] = [x − K a, x + K a]``.
+
+Along a path whose ``x`` does not turn back (scenarios A and B, any path with ``x`` monotone; ``σ = ±1`` its way) this
+play is a closed form. With ``σx`` non-decreasing every anchor lies at or below the indenter (``Y <= σx <= U``), so only
+the lower level ``L = σx − K a`` pushes, and it pushes every spring to its running maximum ``M(t) = max_{τ<=t} L(τ)``
+(for ``τ`` before a spring's attachment ``L(τ) <= σx(τ) <= X``, so the maximum over the whole run is that since it
+attached). A spring attached at ``τ`` carries the anchor ``max(X(τ), M(t))`` with ``X = σx(τ)``; the springs attached
+later lie further out, so ``X`` grows outwards and the springs sliding at the cap are the central ones. The force is
+
+.. math:: F_x = 2 G^* \sigma \int_0^{a} \left(\sigma x - \max(X(\xi), M)\right) d\xi \qquad (11), (13)
+
+over the records of springs still attached: the advancing pieces of the edge, each cut where a later receding edge
+took its springs (:func:`~mdr_events.theory.symbolic.derive_rate_dependent_adhesion`'s ``rate_springs_record_force``:
+in the attachment time, by parts, ``∫ X ȧ dτ = [X a] − ∫ Ẋ a dτ``, the last integral by Gauss–Legendre on the solver's
+steps, exact for its dense polynomials). ``M`` is the running maximum of ``L`` over the solver's steps, with a step's
+interior maximum found by bounded minimisation. The springs that attached in the jump-in's first instant (radius below
+the integration's start, :data:`~mdr_events.models.continuum.rate_edge.START_SPEED`) carry the anchor of its start (off
+by ``|ẋ|`` times the jump-in's lag, about ``a_J / (1e6 v_ref)``).
+
+A path whose ``x`` turns back needs the upper level too (the anchors' nested clips): refused, as are the laws with
+Coulomb's part (a cap that differs from spring to spring); the discrete method runs both.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import NamedTuple
+
+import numpy as np
+from scipy.optimize import brentq, minimize_scalar
+
+from mdr_events.contact.adhesion import RateDependentAdhesion
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.paths import Path
+from mdr_events.parameters import Parameters
+from mdr_events.theory import power_law, symbolic
+from mdr_events.validation import shown
+
+from .rate_dense import step_polynomials
+from .rate_edge import EDGE_RTOL, EdgeEventKind, EdgeRun, solve_edge
+
+__all__ = ["RateShifts", "solve_rate_shifts", "check_rate_friction", "GAUSS_NODES", "BISECTIONS", "STEP_PROBES"]
+
+#: Gauss–Legendre nodes per solver step for ``∫ Ẋ a dτ``: exact to degree 15, beyond the dense output's polynomials
+#: (Radau's 3, BDF's 5, LSODA's up to 12).
+GAUSS_NODES = 8
+#: Halvings of a bracket where the radius or ``x`` reaches a value (the cut of a record, the sliding springs' end):
+#: 2^-64 of a step, below a double's spacing.
+BISECTIONS = 64
+#: Points inside each solver step at which ``L = σx − K a`` is probed for an interior maximum (then refined).
+STEP_PROBES = 5
+_NODES, _WEIGHTS = np.polynomial.legendre.leggauss(GAUSS_NODES)
+
+
+class _Record(NamedTuple):
+    """Springs attached on an advancing piece between the times ``lo`` and ``hi``, the radius ``solution(τ)[0]``."""
+
+    lo: float
+    hi: float
+    solution: object
+
+
+class _Block(NamedTuple):
+    """The springs of the jump-in's first instant: ``[0, radius]`` with one anchor (``σx`` at the contact's start)."""
+
+    radius: float
+    anchor: float
+
+
+class _View(NamedTuple):
+    """One piece of the edge and the springs attached at its start."""
+
+    t0: float
+    t1: float
+    solution: object
+    way: int  #: +1 advancing, -1 receding, 0 resting
+    records: tuple
+    block: _Block
+
+
+def _relation() -> symbolic.Relation:
+    return symbolic.derive_rate_dependent_adhesion()["rate_springs_record_force"]
+
+
+@dataclass
+class RateShifts:
+    """``F_x`` along a path whose ``x`` does not turn back, on top of the rate-dependent edge (module docstring).
+
+    Parameters
+    ----------
+    edge : EdgeRun
+        The radius along the path (:func:`~mdr_events.models.continuum.rate_edge.solve_edge`).
+    path : Path
+        The path.
+    cap : float
+        ``K`` of ``ū = K a`` (13) (m per m).
+    G_star : float
+        The effective shear modulus ``G*`` (Pa).
+    sign : float
+        ``σ``: +1 where ``x`` never falls, -1 where it never rises.
+    """
+
+    edge: EdgeRun
+    path: Path
+    cap: float
+    G_star: float
+    sign: float
+    views: list = field(default_factory=list, init=False)
+
+    def __post_init__(self) -> None:
+        self._corners = (self.path.corner_times, self.sign * self.path.waypoints[:, 0])
+        self.views = _timeline(self.edge, self._x)
+        self._candidates = _level_candidates(self)
+        self._running = np.maximum.accumulate(self._candidates[1])
+        self._sweeps: dict = {}  # (the records' cumulative integrals, by piece and start: _swept)
+
+    def _x(self, times) -> np.ndarray:
+        """``σx`` (m) at ``times`` (the path's ``x``, its corners read once)."""
+        corners, along = self._corners
+        return np.interp(np.clip(np.asarray(times, dtype=float), corners[0], corners[-1]), corners, along)
+
+    def _radius(self, times) -> np.ndarray:
+        """The radius (m) at ``times`` (the edge's, from its steps' polynomials), 0 out of contact."""
+        times = np.asarray(times, dtype=float)
+        out = np.zeros(times.shape)
+        for view in self.views:
+            inside = (times >= view.t0) & (times <= view.t1)
+            if np.any(inside):
+                out[inside] = view.solution(times[inside])[0]
+        return out
+
+    def _level(self, times) -> np.ndarray:
+        """``L = σx − K a`` (m) at ``times``."""
+        return self._x(times) - self.cap * self._radius(times)
+
+    def running_level(self, times) -> np.ndarray:
+        """``M(t) = max_{τ<=t} L(τ)`` (m, in ``σ``'s coordinates) at ``times`` (s, path clock), over the contact.
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s on the path's clock).
+
+        Returns
+        -------
+        numpy.ndarray
+            The running maximum; ``-inf`` before the first contact.
+        """
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        stamps, running = self._candidates[0], self._running
+        at = np.searchsorted(stamps, times, side="right") - 1
+        held = np.where(at >= 0, running[np.maximum(at, 0)], -np.inf)
+        # since the last candidate (a knot, or a step's interior maximum) L has no maximum inside: its largest is at
+        # one of the ends
+        inside = _in_contact(self.views, times)
+        return np.where(inside, np.maximum(held, np.where(inside, self._level(times), -np.inf)), held)
+
+    def tangential_force(self, times) -> np.ndarray:
+        """``F_x`` (N) at ``times`` (s, path clock); 0 out of contact.
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s on the path's clock).
+
+        Returns
+        -------
+        numpy.ndarray
+            The tangential force, the shape of ``times``.
+        """
+        return self._evaluate(times)[0]
+
+    def slip_radius(self, times) -> np.ndarray:
+        """The radius (m) out to which the springs are at the cap (the central ones), 0 out of contact: those pushed to
+        the running maximum ``M`` while the level ``L`` is at it (where it has turned back they stick again).
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s on the path's clock).
+
+        Returns
+        -------
+        numpy.ndarray
+            The sliding springs' extent, at most the contact radius.
+        """
+        return self._evaluate(times)[1]
+
+    def slip_onset_time(self) -> float:
+        """The first time (s, path clock) at which springs slide: ``L`` reaches the first springs' anchor.
+
+        Returns
+        -------
+        float
+            The time, or ``nan`` where no spring slides during the first contact.
+        """
+        first = self.views[0]
+        anchor = first.block.anchor
+        ended = [event.time for event in self.edge.events if event.kind is EdgeEventKind.CONTACT_ENDS]
+        stamps, values = self._candidates
+        beyond = np.flatnonzero((stamps <= (ended[0] if ended else np.inf)) & (values > anchor))
+        if not beyond.size:
+            return float("nan")
+        after = float(stamps[beyond[0]])
+        before = float(stamps[beyond[0] - 1]) if beyond[0] > 0 else first.t0
+        if not self._level(np.array([before]))[0] <= anchor:
+            return before
+        return float(brentq(lambda t: float(self._level(np.array([t]))[0]) - anchor, before, after,
+                            xtol=4.0 * np.finfo(float).eps * abs(after)))
+
+    def _evaluate(self, times) -> tuple[np.ndarray, np.ndarray]:
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        force, sliding = np.zeros(times.shape), np.zeros(times.shape)
+        starts = np.array([view.t0 for view in self.views])
+        owner = np.searchsorted(starts, times, side="right") - 1
+        levels = self.running_level(times)
+        for index, view in enumerate(self.views):
+            rows = np.flatnonzero((owner == index) & (times <= view.t1))
+            if rows.size:
+                force[rows], sliding[rows] = _view_force(self, view, times[rows], levels[rows])
+        at_cap = self._level(times) >= levels  # (the level at its running maximum: M is L there, bit for bit)
+        return self.sign * force, np.where(at_cap, sliding, 0.0)
+
+
+def _in_contact(views: list, times: np.ndarray) -> np.ndarray:
+    inside = np.zeros(times.shape, dtype=bool)
+    for view in views:
+        inside |= (times >= view.t0) & (times <= view.t1)
+    return inside
+
+
+def _timeline(edge: EdgeRun, position) -> list[_View]:
+    """Each piece of the edge with the records of springs attached at its start (cut by receding pieces, cleared where
+    the contact ended)."""
+    ends = {event.time for event in edge.events if event.kind is EdgeEventKind.CONTACT_ENDS}
+    views, records, block, ended = [], [], None, True
+    for t0, t1, _, dense in edge.pieces:
+        solution = step_polynomials(dense)
+        a0, a1 = float(solution(t0)[0]), float(solution(t1)[0])
+        if ended:
+            records, block = [], _Block(a0, float(position(np.array([t0]))[0]))
+        way = 1 if a1 > a0 else -1 if a1 < a0 else 0
+        views.append(_View(t0, t1, solution, way, tuple(records), block))
+        if way > 0:
+            records.append(_Record(t0, t1, solution))
+        elif way < 0:
+            records = _cut(records, a1)
+            block = _Block(min(block.radius, a1), block.anchor)
+        ended = t1 in ends
+    return views
+
+
+def _cut(records: list, radius: float) -> list:
+    """The records of springs within ``radius`` (a receding edge took the rest)."""
+    kept = []
+    for record in records:
+        a_lo, a_hi = (float(record.solution(t)[0]) for t in (record.lo, record.hi))
+        if a_lo >= radius:
+            break
+        if a_hi > radius:
+            record = record._replace(hi=float(_bisect(lambda t: record.solution(t)[0], np.array([record.lo]),
+                                                      np.array([record.hi]), np.array([radius]))[0]))
+        kept.append(record)
+    return kept
+
+
+def _bisect(increasing, lo: np.ndarray, hi: np.ndarray, target: np.ndarray) -> np.ndarray:
+    """The least ``τ`` in ``[lo, hi]`` (elementwise) with ``increasing(τ) >= target``, to :data:`BISECTIONS` halvings
+    (``increasing`` non-decreasing in ``τ``, vectorised)."""
+    lo, hi = lo.astype(float).copy(), hi.astype(float).copy()
+    for _ in range(BISECTIONS):
+        mid = 0.5 * (lo + hi)
+        above = np.asarray(increasing(mid), dtype=float) >= target
+        hi, lo = np.where(above, mid, hi), np.where(above, lo, mid)
+    return hi
+
+
+def _knots(view: _View, corners: np.ndarray) -> np.ndarray:
+    """The solver's steps of a piece and the path's corners within it."""
+    steps = getattr(view.solution, "ts", np.array([view.t0, view.t1]))
+    inner = corners[(corners > view.t0) & (corners < view.t1)]
+    return np.unique(np.concatenate([[view.t0, view.t1], np.clip(steps, view.t0, view.t1), inner]))
+
+
+def _level_candidates(shifts: RateShifts) -> tuple[np.ndarray, np.ndarray]:
+    """Times and values of ``L`` at which its running maximum can change: every knot of every piece and each step's
+    interior maximum (probed at :data:`STEP_PROBES` points, refined by bounded minimisation)."""
+    corners = shifts._corners[0]
+    stamps = []
+    for view in shifts.views:
+        knots = _knots(view, corners)
+        stamps.append(knots)
+        width = np.diff(knots)
+        share = np.arange(1, STEP_PROBES + 1) / (STEP_PROBES + 1)
+        probes = knots[:-1, None] + width[:, None] * share[None, :]
+        inner, ends = shifts._level(probes.ravel()).reshape(probes.shape), shifts._level(knots)
+        peaks = np.flatnonzero(inner.max(axis=1) > np.maximum(ends[:-1], ends[1:]))
+        for step in peaks:
+            found = minimize_scalar(lambda t: -float(shifts._level(np.array([t]))[0]), method="bounded",
+                                    bounds=(knots[step], knots[step + 1]),
+                                    options={"xatol": 4.0 * np.finfo(float).eps * abs(knots[step + 1])})
+            stamps.append(np.array([found.x, probes[step, int(np.argmax(inner[step]))]]))
+    every = np.sort(np.concatenate(stamps))
+    return every, shifts._level(every)
+
+
+def _swept(shifts: RateShifts, solution, start: float, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """``∫_lo^hi σẋ a dτ`` (m²) within the advancing piece of ``solution`` from ``start`` (elementwise;
+    ``lo <= hi``), Gauss–Legendre on each knot interval; the knots' cumulative sums computed once per record."""
+    key = (id(solution), start)
+    if key not in shifts._sweeps:
+        end = float(np.asarray(solution.ts)[-1])
+        knots = _knots(_View(start, end, solution, 1, (), None), shifts._corners[0])
+        slope = np.diff(shifts._x(knots)) / np.where(np.diff(knots) > 0.0, np.diff(knots), 1.0)
+        whole = _partial(solution, knots, slope, knots[1:], np.arange(len(knots) - 1))
+        shifts._sweeps[key] = (knots, slope, np.concatenate([[0.0], np.cumsum(whole)]))
+    knots, slope, cumulative = shifts._sweeps[key]
+
+    def primitive(ends: np.ndarray) -> np.ndarray:
+        index = np.clip(np.searchsorted(knots, ends, side="right") - 1, 0, len(knots) - 2)
+        return cumulative[index] + _partial(solution, knots, slope, ends, index)
+    return primitive(hi) - primitive(lo)
+
+
+def _partial(solution, knots: np.ndarray, slope: np.ndarray, ends: np.ndarray, index: np.ndarray) -> np.ndarray:
+    """``∫ σẋ a dτ`` from ``knots[index]`` to ``ends`` (each within its knot interval), Gauss–Legendre."""
+    start = knots[index]
+    half = 0.5 * (ends - start)
+    nodes = start[:, None] + half[:, None] * (1.0 + _NODES[None, :])
+    radius = solution(nodes.ravel())[0].reshape(nodes.shape)
+    return slope[index] * half * (radius @ _WEIGHTS)
+
+
+def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.ndarray):
+    """``F_x / σ`` (N) and the sliding springs' extent (m) at ``times`` within one piece."""
+    radius = view.solution(times)[0]
+    x_now = shifts._x(times)
+    force, sliding = np.zeros(times.shape), np.zeros(times.shape)
+    relation = _relation()
+    block = view.block
+    kept = np.minimum(block.radius, radius)
+    slides = np.where(block.anchor < levels, kept, 0.0)
+    force += relation.numeric(x_now, levels, 0.0, slides, kept, block.anchor, block.anchor, 0.0, shifts.G_star)
+    sliding = np.maximum(sliding, slides)
+    records = [(record.lo, np.full(times.shape, record.hi), record.solution) for record in view.records]
+    if view.way > 0:
+        records.append((view.t0, times, view.solution))
+    for lo, hi, solution in records:
+        a_lo = float(solution(lo)[0])
+        present = a_lo < radius
+        if not np.any(present):
+            continue
+        rows = np.flatnonzero(present)
+        top = hi[rows]
+        if view.way < 0:  # (the receding edge has taken the springs beyond the radius now)
+            beyond = solution(top)[0] > radius[rows]
+            if np.any(beyond):
+                top[beyond] = _bisect(lambda t, s=solution: s(t)[0], np.full(int(beyond.sum()), lo), top[beyond],
+                                      radius[rows][beyond])
+        level = levels[rows]
+        star = np.where(shifts._x(np.full(rows.size, lo)) >= level, lo,
+                        _bisect(shifts._x, np.full(rows.size, lo), top, level))
+        a_star, a_hi = solution(star)[0], solution(top)[0]
+        x_star, x_hi = shifts._x(star), shifts._x(top)
+        force[rows] += relation.numeric(x_now[rows], level, a_lo, a_star, a_hi, x_star, x_hi,
+                                        _swept(shifts, solution, lo, star, top),
+                                        shifts.G_star)
+        sliding[rows] = np.maximum(sliding[rows], np.where(star > lo, a_star, 0.0))  # (none slide where star is lo)
+    return force, sliding
+
+
+def check_rate_friction(friction: FrictionLaw) -> None:
+    """Refuse a friction law the springs on the rate-dependent edge do not follow: only ``"tau0"`` (one cap ``K a``
+    for every spring); the laws with Coulomb's part run in the discrete method.
+
+    Parameters
+    ----------
+    friction : FrictionLaw
+        The friction law.
+
+    Raises
+    ------
+    TypeError
+        Not a :class:`~mdr_events.contact.friction.FrictionLaw`.
+    ValueError
+        Another law than ``"tau0"``.
+    """
+    if not isinstance(friction, FrictionLaw):
+        raise TypeError(f"friction={shown(friction)} ({type(friction).__name__}) is not allowed; allowed: a "
+                        "FrictionLaw('tau0') or None")
+    if friction.law != "tau0":
+        raise ValueError(f"friction={friction!r} is not allowed with a rate-dependent law in the continuum; "
+                         "allowed: FrictionLaw('tau0') (one cap K a for every spring; the laws with Coulomb's part "
+                         "run in the discrete method)")
+
+
+def solve_rate_shifts(params: Parameters, path: Path, law: RateDependentAdhesion, profile: SimulatedProfile = None,
+                      friction: FrictionLaw | None = None, rtol: float = EDGE_RTOL,
+                      method: str = "Radau") -> RateShifts:
+    """The continuum's tangential force on top of the rate-dependent edge along ``path`` (module docstring).
+
+    Parameters
+    ----------
+    params : Parameters
+        The material, ``τ0`` and ``R`` (the paraboloid's); its works of adhesion are the law's at rest.
+    path : Path
+        The indenter's path; its ``x`` must not turn back.
+    law : RateDependentAdhesion
+        The adhesion law.
+    profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
+        The indenter (``None``: the paraboloid of ``params.R``).
+    friction : FrictionLaw or None, optional
+        ``"tau0"`` (its ``τ0``, else ``params.tau0``); ``None``: the paper's ``"tau0"`` of ``params.tau0``.
+    rtol : float, optional
+        The edge's ODE tolerance (:func:`~mdr_events.models.continuum.rate_edge.solve_edge`).
+    method : str, optional
+        The edge's ``solve_ivp`` method.
+
+    Returns
+    -------
+    RateShifts
+        ``F_x``, the sliding springs and the slip onset along the path.
+
+    Raises
+    ------
+    TypeError
+        ``params``, ``path`` or ``friction`` of another type.
+    ValueError
+        A friction law other than ``"tau0"``, a path whose ``x`` turns back, or what ``solve_edge`` refuses.
+    """
+    if not isinstance(params, Parameters):
+        raise TypeError(f"params={shown(params)} ({type(params).__name__}) is not allowed; allowed: a Parameters")
+    if not isinstance(path, Path):
+        raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: a Path")
+    tau0 = params.tau0
+    if friction is not None:
+        check_rate_friction(friction)
+        tau0 = params.tau0 if friction.tau0 is None else friction.tau0
+    ways = np.sign(np.diff(path.waypoints[:, 0]))
+    sign = float(ways[ways != 0.0][0]) if np.any(ways != 0.0) else 1.0
+    if np.any(ways == -sign):
+        turn = int(np.flatnonzero(ways == -sign)[0])
+        raise ValueError(f"path={path.describe()} is not allowed: its x turns back at waypoint {turn}; allowed with a "
+                         "rate-dependent law in the continuum: a path whose x does not turn back (scenarios A and B, "
+                         "any monotone x), or the discrete method")
+    edge = solve_edge(params, path, law, profile=profile, rtol=rtol, method=method)
+    cap = power_law.cap_per_radius(params.replace(tau0=tau0))
+    return RateShifts(edge, path, cap, params.G_star, sign)

@@ -1,0 +1,78 @@
+"""The continuum method under the rate-dependent law (continuum.rate_run, through simulate): the event log of the edge
+and the springs at the right places, the extrema bounding the samples, a contact that ends shown gone."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+
+PAPER = me.Parameters.paper()
+BASE = me.Contact.paper()
+LAW = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-6, 0.6)
+RATE = me.Contact(BASE.elastomer, BASE.indenter, LAW, BASE.friction)
+#: Full slip is (13) on the records' closed forms where the slip radius reaches the contact's: to rounding, with the
+#: time found by bisection to the clock's spacing (the force moves by F' δt there, ~1e-16 of it).
+FULL_SLIP_RTOL = 1e-9
+#: An extremum refined between the samples beside the best of the edge's steps lies beyond every output sample, to
+#: rounding (a few ulp of the force).
+BEYOND_SAMPLES = 1e-12
+
+
+@pytest.fixture(scope="module")
+def scenario_a():
+    return me.simulate(RATE, me.Scenario("A", alpha=[20.0]), "continuum").isel(alpha=0)
+
+
+def test_the_log_holds_the_edge_s_and_the_springs_events_in_order(scenario_a):
+    kinds = [str(kind) for kind in scenario_a["event_kind"].values if str(kind)]
+    assert kinds == ["first_contact", "slip_onset", "corner", "re_stick", "detachment_starts", "slip_onset",
+                     "full_slip"]
+    times = scenario_a["event_time"].values[:len(kinds)]
+    assert np.all(np.diff(times) >= 0.0)
+    full = kinds.index("full_slip")
+    radius = float(scenario_a["event_radius"].values[full])
+    at = np.array([times[full]])
+    from mdr_events.models.continuum import solve_rate_shifts
+
+    from mdr_events.models.continuum.rate_run import RUN_METHOD
+
+    path = me.Path.scenario_A(20.0, PAPER)
+    force = solve_rate_shifts(PAPER, path, LAW, method=RUN_METHOD).tangential_force(at + path.first_contact_time())[0]
+    assert force == pytest.approx(PAPER.tau0 * np.pi * radius ** 2, rel=FULL_SLIP_RTOL)
+    directions = scenario_a["event_direction"].values[:len(kinds)]
+    assert [int(d) for k, d in zip(kinds, directions) if k in ("slip_onset", "re_stick", "full_slip")] == [1] * 4
+
+
+@pytest.mark.parametrize("name", ["normal_force", "tangential_force", "contact_area"])
+def test_the_extrema_bound_the_samples(scenario_a, name):
+    values = scenario_a[name].values
+    largest, least = float(scenario_a[f"{name}_max"]), float(scenario_a[f"{name}_min"])
+    scale = np.nanmax(np.abs(values))
+    assert largest >= np.nanmax(values) - BEYOND_SAMPLES * scale and least <= np.nanmin(values) + BEYOND_SAMPLES * scale
+    step = np.nanmax(np.abs(np.diff(values)))  # (a continuous quantity: its extremum within one sample's change of
+    # the best sample; the largest F_N is at the corner, a kink between two samples)
+    assert largest - np.nanmax(values) <= step and np.nanmin(values) - least <= step
+
+
+def test_a_contact_that_ends_is_shown_gone_and_logged():
+    """Vertically in and out far enough at 0.1 µm/s: the contact ends on the path (its radius collapses), the log ends
+    with contact_ends, the first sample after it shows the contact gone and the later ones are nan."""
+    path = me.Path(np.array([(0.0, 0.0), (0.0, PAPER.d_max), (0.0, -300e-6)]), speed=1e-7)
+    run = me.simulate(RATE, me.Paths([path]), "continuum", samples=401).isel(case=0)
+    kinds = [str(kind) for kind in run["event_kind"].values if str(kind)]
+    assert kinds[0] == "first_contact" and kinds[-1] == "contact_ends"
+    end = float(run["event_time"].values[len(kinds) - 1])
+    after = np.flatnonzero(run["time"].values > end)
+    assert after.size >= 1 and run["normal_force"].values[after[0]] == 0.0
+    assert np.all(np.isnan(run["normal_force"].values[after[1:]]))
+    assert float(run["normal_force_min"]) < 0.0 and float(run["contact_area_min"]) == 0.0
+
+
+def test_a_continuum_sweep_of_the_law_is_refused_before_it_runs():
+    """The sweep's continuum quantities read the paper's spans (solve_path): the law is refused by name, pointing to
+    what runs it, not swept as the paper's law of its works at rest."""
+    with pytest.raises(ValueError, match="adhesion=RateDependentAdhesion.*not allowed in the continuum method.*"
+                                         "the discrete method runs it"):
+        me.sweep({"v": [1e-6, 1e-5]}, RATE, me.Scenario("A", alpha=[20.0]), method="continuum", scheduler="serial")
