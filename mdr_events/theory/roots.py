@@ -71,21 +71,31 @@ def _block_bound(coeffs: list) -> np.ndarray:
     present = [i for i, cf in enumerate(coeffs) if not (np.ndim(cf) == 0 and cf == 0)]
     bound = np.inf
     nothing_negative_above = True
+    above = []  # the coefficients above the term whose signs nothing_negative_above has not read yet
     for j in present[:-1]:
         cj = coeffs[j]
         lower = [i for i in present if i > j]
-        usable = True if j == 0 else nothing_negative_above & (cj > 0.0)
-        if j == 0 or np.any(usable):
+        if j == 0:
+            usable = True
+        elif np.ndim(cj) == 0 and not cj > 0.0:  # (a scalar coefficient that is not positive: no element uses it)
+            usable = False
+        else:  # (the signs above read only where a term may be usable: no pass over a block for nothing)
+            for coefficient in above:
+                nothing_negative_above = nothing_negative_above & (coefficient >= 0.0)
+            above = []
+            usable = nothing_negative_above & (cj > 0.0)
+        every = j == 0 or bool(np.all(usable))
+        if every or np.any(usable):
             candidate = _term_bound(coeffs, j, lower, positive=j > 0 or bool(np.all(cj > 0.0)))
             if j == 0:
                 bound = candidate
-            elif np.all(usable):
+            elif every:
                 bound = np.minimum(bound, candidate)
             else:  # (np.where's own loop is ten times slower)
                 bound = np.array(np.broadcast_to(bound, np.broadcast_shapes(np.shape(bound), usable.shape)))
                 np.minimum(bound, candidate, out=bound, where=usable)
         if j != present[-2]:
-            nothing_negative_above = nothing_negative_above & (cj >= 0.0)
+            above.append(cj)
     return bound
 
 
@@ -264,10 +274,13 @@ def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> n
             _horner_into(coefficients, x_block, v, s, zeros)
             np.divide(v, s, out=d)
             x_block -= d
+            falls = np.fmin.reduce(d, initial=np.inf) < 0.0  # (an upward step, d < -rtol |x| <= 0, needs a negative one)
+            if not (converged or falls):  # (the threshold serves the stopping rule, which a block before has failed,
+                continue  # and the upward steps: two passes saved on most blocks of most steps)
             threshold = v  # rtol |x|, in the buffer of the value
             np.abs(x_block, out=threshold)
             threshold *= rtol
-            if np.fmin.reduce(d, initial=np.inf) < 0.0:  # (an upward step, d < -rtol |x| <= 0, needs a negative one)
+            if falls:
                 upward |= np.less(d, np.negative(threshold, out=s), out=f)  # (-(rtol |x|) = (-rtol) |x| exactly)
             converged = converged and _within(d, threshold, s, f)
         if converged:
