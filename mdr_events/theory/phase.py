@@ -151,7 +151,7 @@ def _paper_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, 
     jump_off = analytic.jump_off(params, params.dgamma1)["depth"] if scenario == "B" else None
     variables = _onset_variables(curves, scenario, coords, jump_off, params.d_max,
                                  lambda adhesive: analytic.critical_angle(params, scenario, adhesion=adhesive))
-    dataset = assembled(variables, coords)  # (xarray.Dataset(variables, coords=coords) without its merge: 0.4 ms)
+    dataset = assembled(variables, coords)  # (xarray.Dataset(variables, coords=coords) without its merge: 0.1-0.2 ms)
     figure = {} if params.preset_name() is None else {"figure": "9a" if scenario == "A" else "9b"}
     return stamp(dataset, params, scenario=scenario, content=PHASE_DIAGRAM_CONTENT, **figure)
 
