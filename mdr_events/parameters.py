@@ -8,6 +8,7 @@ material, indenter and adhesion it was computed for.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 import numbers
 from dataclasses import dataclass
@@ -220,8 +221,8 @@ class Parameters:
         str or None
             A key of :data:`PRESETS` (``Parameters.paper(R)`` equal to these field by field), or ``None``.
         """
-        for name, radius in PRESETS.items():
-            if self == Parameters.paper(R=radius):
+        for name, preset in _presets(tuple(PRESETS.items())):
+            if self == preset:
                 return name
         return None
 
@@ -341,3 +342,11 @@ def check_parameters(params: Any, name: str = "params") -> Parameters:
         raise TypeError(f"{name}={shown(params)} ({type(params).__name__}) is not allowed; allowed: a "
                         "mdr_events.Parameters (e.g. Parameters.paper())")
     return params
+
+
+@functools.lru_cache(maxsize=4)
+def _presets(presets: tuple[tuple[str, float], ...]) -> tuple[tuple[str, Parameters], ...]:
+    """Each preset's name and its ``Parameters.paper(R)``, made once (every result's stamp asks
+    :meth:`Parameters.preset_name`, twice)."""
+    return tuple((name, Parameters.paper(R=radius)) for name, radius in presets)
+

@@ -65,10 +65,11 @@ def stamp(dataset: xr.Dataset, params: Parameters, **attrs: Any) -> xr.Dataset:
         }
     )
     dataset.attrs.update(params.to_attrs())
-    if params.preset_name() is not None:
+    preset = params.preset_name()
+    if preset is not None:
         dataset.attrs["inferred_parameters"] = ", ".join(Parameters.INFERRED_FIELDS)
         dataset.attrs["inferred_parameters_note"] = (
-            f"{params.preset_name()}: these fields are inferred, not stated in section 4 of the paper "
+            f"{preset}: these fields are inferred, not stated in section 4 of the paper "
             "(see mdr_events.Parameters.paper)")
     dataset.attrs.update({key: _netcdf_safe(value) for key, value in attrs.items()})
     for name, variable in dataset.variables.items():
@@ -108,7 +109,9 @@ def assembled(data_vars: Mapping[str, tuple], coords: Mapping[str, tuple]) -> xr
     coordinates = xr.Coordinates(dict(coords))
     variables = {}
     for name, (dims, values, attrs) in data_vars.items():
-        variables[name] = xr.Variable(dims, values, attrs)
+        # (a NumPy array of numbers or text is taken as it is: what xarray's conversion would leave it)
+        variables[name] = xr.Variable(dims, values, attrs, fastpath=type(values) is np.ndarray
+                                      and values.dtype.kind not in "OMm")
     clash = sorted(set(variables) & (set(coordinates.variables) | {dim for var in variables.values() for dim in
                                                                       var.dims}))
     if clash:

@@ -566,6 +566,12 @@ def d_crit_rows(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A", 
     return rows
 
 
+def _unless_vertical(vertical: np.ndarray, value: float, depth: np.ndarray) -> np.ndarray:
+    """``np.where(vertical, value, depth)``: ``depth`` itself where no path is vertical (a block of 10⁵ angles holds
+    90° at most once: no pass of three arrays for nothing)."""
+    return np.where(vertical, value, depth) if vertical.any() else depth
+
+
 def _slip_onset(tangent: _Tangent, p, scenario: str, adhesion: bool, branch: str,
                 out: np.ndarray | None = None) -> np.ndarray:
     """:func:`d_crit` of checked arguments, at the angles of ``tangent`` (written into ``out`` where given)."""
@@ -574,7 +580,7 @@ def _slip_onset(tangent: _Tangent, p, scenario: str, adhesion: bool, branch: str
         if not adhesion:
             def onset(tan_finite, vertical):
                 depth = _rel("d_crit_A_hertz").numeric(tan_finite, p.R, p.tau0, p.G_star)
-                return np.where(vertical, np.inf, depth)
+                return _unless_vertical(vertical, np.inf, depth)
 
             return blockwise(onset, tan_finite, vertical, out=out)
         coefficients = blockwise(lambda tan_finite: _rel("slip_A_jkr_cubic").coefficients(
@@ -585,7 +591,7 @@ def _slip_onset(tangent: _Tangent, p, scenario: str, adhesion: bool, branch: str
         def onset(root, tan_finite, vertical):
             radius = np.where(np.isfinite(root), root, 0.0) ** 2
             depth = _rel("slip_depth_A").numeric(radius, tan_finite, p.tau0, p.G_star)
-            return np.where(vertical, np.inf, depth)
+            return _unless_vertical(vertical, np.inf, depth)
 
         return blockwise(onset, root, tan_finite, vertical, out=out)
 
@@ -596,7 +602,7 @@ def _slip_onset(tangent: _Tangent, p, scenario: str, adhesion: bool, branch: str
         def onset(tan_finite, vertical):
             k = _rel("slip_B_hertz_k").numeric(tan_finite, p.R, p.tau0, p.G_star)
             depth = _rel(f"d_crit_B_hertz_{key}").numeric(p.d_max, k)
-            return np.where(vertical, never, depth)
+            return _unless_vertical(vertical, never, depth)
 
         return blockwise(onset, tan_finite, vertical, out=out)
     work = p.dgamma1 if pulling else p.dgamma0
@@ -610,7 +616,7 @@ def _slip_onset(tangent: _Tangent, p, scenario: str, adhesion: bool, branch: str
         depth = _rel(f"slip_depth_B_{key}").numeric(radius, tan_finite, p.d_max, p.tau0, p.G_star)
         if unstable_below is not None:
             depth = np.where(radius < unstable_below, never, depth)
-        return np.where(vertical, never, depth)
+        return _unless_vertical(vertical, never, depth)
 
     return blockwise(onset, root, tan_finite, vertical, out=out)
 

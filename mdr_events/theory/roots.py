@@ -71,21 +71,31 @@ def _block_bound(coeffs: list) -> np.ndarray:
     present = [i for i, cf in enumerate(coeffs) if not (np.ndim(cf) == 0 and cf == 0)]
     bound = np.inf
     nothing_negative_above = True
+    above = []  # the coefficients above the term whose signs nothing_negative_above has not read yet
     for j in present[:-1]:
         cj = coeffs[j]
         lower = [i for i in present if i > j]
-        usable = True if j == 0 else nothing_negative_above & (cj > 0.0)
-        if j == 0 or np.any(usable):
+        if j == 0:
+            usable = True
+        elif np.ndim(cj) == 0 and not cj > 0.0:  # (a scalar coefficient that is not positive: no element uses it)
+            usable = False
+        else:  # (the signs above read only where a term may be usable: no pass over a block for nothing)
+            for coefficient in above:
+                nothing_negative_above = nothing_negative_above & (coefficient >= 0.0)
+            above = []
+            usable = nothing_negative_above & (cj > 0.0)
+        every = j == 0 or bool(np.all(usable))
+        if every or np.any(usable):
             candidate = _term_bound(coeffs, j, lower, positive=j > 0 or bool(np.all(cj > 0.0)))
             if j == 0:
                 bound = candidate
-            elif np.all(usable):
+            elif every:
                 bound = np.minimum(bound, candidate)
             else:  # (np.where's own loop is ten times slower)
                 bound = np.array(np.broadcast_to(bound, np.broadcast_shapes(np.shape(bound), usable.shape)))
                 np.minimum(bound, candidate, out=bound, where=usable)
         if j != present[-2]:
-            nothing_negative_above = nothing_negative_above & (cj >= 0.0)
+            above.append(cj)
     return bound
 
 
@@ -244,6 +254,8 @@ def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> n
     """
     flat = x.reshape(-1)
     broadcast = [cf if cf.ndim == 0 else np.broadcast_to(cf, x.shape).reshape(-1) for cf in coeffs]
+    if flat.size <= _FEW:  # (a few elements: the same steps in Python floats, without NumPy's cost per call)
+        return _descend_floats(broadcast, flat, max_iterations, float(rtol)).reshape(x.shape)
     size = min(flat.size, _BLOCK)
     value, slope, step = (np.empty(size) for _ in range(3))
     flags = np.empty(size, dtype=bool)
@@ -262,10 +274,13 @@ def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> n
             _horner_into(coefficients, x_block, v, s, zeros)
             np.divide(v, s, out=d)
             x_block -= d
+            falls = np.fmin.reduce(d, initial=np.inf) < 0.0  # (an upward step, d < -rtol |x| <= 0, needs a negative one)
+            if not (converged or falls):  # (the threshold serves the stopping rule, which a block before has failed,
+                continue  # and the upward steps: two passes saved on most blocks of most steps)
             threshold = v  # rtol |x|, in the buffer of the value
             np.abs(x_block, out=threshold)
             threshold *= rtol
-            if np.fmin.reduce(d, initial=np.inf) < 0.0:  # (an upward step, d < -rtol |x| <= 0, needs a negative one)
+            if falls:
                 upward |= np.less(d, np.negative(threshold, out=s), out=f)  # (-(rtol |x|) = (-rtol) |x| exactly)
             converged = converged and _within(d, threshold, s, f)
         if converged:
@@ -276,6 +291,29 @@ def _descend(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> n
                                                  rtol):
                 break
     return overshoot.reshape(x.shape)
+
+
+def _descend_floats(coeffs: list, x: np.ndarray, max_iterations: int, rtol: float) -> np.ndarray:
+    """:func:`_descend` of at most :data:`_FEW` elements (``x`` flat, ``coeffs`` scalars or flat arrays), in Python
+    floats: each step the same operations as the arrays' (:func:`_horner`, NumPy's division, the threshold
+    ``rtol |x|`` of the new iterate), and the same stopping rule over all elements, so the same values; a
+    one-element array near a fold (14 steps) took 0.18 ms in NumPy calls, 0.01 ms so. Returns the overshoot flags."""
+    values = x.tolist()
+    polynomials = [[float(cf) if np.ndim(cf) == 0 else float(cf[j]) for cf in coeffs] for j in range(len(values))]
+    upward = [False] * len(values)
+    for _ in range(max_iterations):
+        converged = True
+        for k, polynomial in enumerate(polynomials):
+            value, slope = _horner(polynomial, values[k])
+            step = _divide(value, slope)
+            values[k] -= step
+            below = abs(values[k]) * -rtol
+            upward[k] = upward[k] or step < below
+            converged = converged and abs(step) <= -below
+        if converged:
+            break
+    x[:] = values
+    return np.array(upward, dtype=bool)
 
 
 def _finish_few(coeffs: list, x: np.ndarray, overshoot: np.ndarray, history: list, iteration: int,

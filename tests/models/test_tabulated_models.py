@@ -135,3 +135,46 @@ def test_the_dense_output_of_many_points_is_the_interpolants_bit_for_bit(paper):
             np.testing.assert_array_equal(force_values(span.interpolant, points), span.interpolant(points)[0])
             checked[bool(ts[-1] > ts[0])] += 1
     assert checked[True] and checked[False]  # steps taken forwards and backwards
+
+
+def test_the_stationary_points_of_a_dense_output_are_those_of_each_step_s_own_polynomial(paper):
+    """stationary._dense_output_roots picks the steps that meet a bracket at once and reads several steps' polynomials
+    off in one evaluation (issue 28): the roots are bit for bit those of each step's own interpolant read off at its
+    Chebyshev nodes, step by step, on brackets over one step, several and a whole span, of a table's spans (a step per
+    knot), forwards and backwards."""
+    from numpy.polynomial import chebyshev
+
+    from mdr_events.models.continuum import solve_path
+    from mdr_events.models.continuum.stationary import _DERIVATIVE, _NODES, IMAGINARY_SHARE, _dense_output_roots
+
+    def step_by_step(interpolant, low, high):
+        ts, roots = np.asarray(interpolant.ts, dtype=float), []
+        for k, step in enumerate(interpolant.interpolants):
+            start, end = min(ts[k], ts[k + 1]), max(ts[k], ts[k + 1])
+            lower, upper = max(start, low), min(end, high)
+            if upper > lower:
+                centre, half = 0.5 * (start + end), 0.5 * (end - start)
+                for root in chebyshev.chebroots(_DERIVATIVE @ step(centre + half * _NODES)[0]):
+                    var = centre + half * float(root.real)
+                    if abs(root.imag) <= IMAGINARY_SHARE and lower <= var <= upper:
+                        roots.append(var)
+        return roots
+
+    r = np.linspace(0.0, 4e-3, 41)
+    table = me.TabulatedProfile(r, r**2 / (2 * paper.R))
+    solutions = [solve_path(paper, me.Path.scenario_A(20.0, paper, profile=table), profile=table),
+                 solve_path(paper, me.Path.scenario_B(30.0, paper))]
+    rng = np.random.default_rng(26)
+    found = 0
+    for solution in solutions:
+        for span in solution.spans:
+            if not hasattr(span.interpolant, "interpolants"):
+                continue
+            ts = np.asarray(span.interpolant.ts)
+            low, high = min(ts[0], ts[-1]), max(ts[0], ts[-1])
+            brackets = [(low, high), *np.sort(rng.uniform(low, high, (20, 2)), axis=1).tolist()]
+            for lower, upper in brackets:
+                roots = _dense_output_roots(span.interpolant, lower, upper)
+                assert roots == step_by_step(span.interpolant, lower, upper)
+                found += len(roots)
+    assert found  # (stationary points were met)

@@ -7,7 +7,7 @@ import pytest
 from scipy import optimize
 
 import mdr_events as me
-from mdr_events.theory import analytic
+from mdr_events.theory import analytic, roots
 
 ANGLES = np.linspace(0.5, 85.0, 60)
 
@@ -215,6 +215,94 @@ def test_polynomial_root_of_few_moving_elements_is_that_of_the_arrays(paper, mon
     expected = _radii_near_the_folds(paper)
     for key, radii in found.items():
         np.testing.assert_array_equal(radii, expected[key], err_msg=str(key))
+
+
+def _radii_along_the_branches(paper) -> dict:
+    """Radii of (9) of a few depths each (1 to 9: the Python floats' path of roots._descend_floats and the arrays'),
+    spread from each branch's fold to 10 d_max, through the branch's own route (Branch.radii, as the continuum's
+    fill takes it)."""
+    from mdr_events.models.continuum.branch import Branch
+
+    rng = np.random.default_rng(7)
+    found = {}
+    for work in (paper.dgamma0, paper.dgamma1):
+        branch = Branch(paper, work)
+        for size in range(1, 10):
+            for trial in range(20):
+                depth = branch.jump_off_depth + (10 * paper.d_max - branch.jump_off_depth) * rng.random(size) ** 3
+                found[work, size, trial] = branch.radii(depth)
+    return found
+
+
+def test_polynomial_root_of_few_elements_is_that_of_the_arrays(paper, monkeypatch):
+    """Newton's descent of at most roots._FEW elements runs in Python floats (roots._descend_floats): every root is
+    bit for bit the arrays' iteration's."""
+    from mdr_events.theory import roots
+
+    found = _radii_along_the_branches(paper)
+    monkeypatch.setattr(roots, "_LONG", 10**9)  # the arrays alone, every step
+    monkeypatch.setattr(roots, "_FEW", -1)
+    expected = _radii_along_the_branches(paper)
+    for key, radii in found.items():
+        np.testing.assert_array_equal(radii, expected[key], err_msg=str(key))
+
+
+def _roots_over_blocks(rng, size: int) -> list:
+    """Roots of ``size`` monic quartics and cubics: scalar and array coefficients of either sign (convex ones, and ones
+    whose Newton steps overshoot and go upwards)."""
+    found = []
+    for trial in range(12):
+        middle = [rng.normal(size=size), 0.0, -abs(rng.normal()), np.abs(rng.normal(size=size))][trial % 4]
+        coefficients = [1.0, 0.0 if trial % 3 else rng.normal(size=size), middle, rng.normal(),
+                        -np.abs(rng.normal(size=size)) - 1e-3][: 5 - trial % 2]
+        with np.errstate(all="ignore"):
+            found.append(roots.positive_polynomial_root(coefficients))
+    return found
+
+
+def test_polynomial_roots_over_blocks_are_those_of_one_block(monkeypatch):
+    """Newton's descent over several blocks reads the stopping rule block by block until one fails it, and skips the
+    threshold |x| rtol of the blocks after (it serves only that rule and an upward step; issue 28), and the bound of
+    the start reads the coefficients' signs only where a term may be used: every root, upward steps and overshoots
+    among them, is bit for bit that of the whole array as one block."""
+    size = 3 * roots._BLOCK + 17  # (three blocks and a part)
+    found = _roots_over_blocks(np.random.default_rng(28), size)
+    monkeypatch.setattr(roots, "_BLOCK", size)
+    expected = _roots_over_blocks(np.random.default_rng(28), size)
+    for index, (ours, whole) in enumerate(zip(found, expected)):
+        np.testing.assert_array_equal(ours, whole, err_msg=str(index))
+
+
+def test_the_start_s_bound_is_the_least_of_the_usable_terms():
+    """roots._upper_root_bound reads the coefficients' signs only where a term may be used (issue 28): the bound is bit
+    for bit the least, over the terms, of each term's bound where it is usable (its coefficient positive, none above
+    it negative), every term computed everywhere, on coefficients of every sign pattern, scalars and arrays."""
+    def reference(coeffs):
+        present = [i for i, cf in enumerate(coeffs) if not (np.ndim(cf) == 0 and cf == 0)]
+        bound = None
+        for j in present[:-1]:
+            lower = [i for i in present if i > j]
+            candidate = roots._term_bound(coeffs, j, lower, positive=j > 0 or bool(np.all(coeffs[j] > 0.0)))
+            if j == 0:
+                bound = candidate
+                continue
+            usable = coeffs[j] > 0.0
+            for k in present:
+                if k < j:
+                    usable = usable & (coeffs[k] >= 0.0)
+            bound = np.minimum(bound, np.where(usable, candidate, np.inf))
+        return bound
+
+    rng = np.random.default_rng(32)
+    for _ in range(400):
+        size = int(rng.choice([1, 5, 300]))
+        options = (lambda: 0.0, lambda: float(rng.normal()), lambda: abs(float(rng.normal())),
+                   lambda: rng.normal(size=size), lambda: np.abs(rng.normal(size=size)))
+        coeffs = [1.0 if rng.random() < 0.8 else 2.0] + [options[rng.integers(0, 5)]() for _ in range(rng.integers(1, 4))]
+        coeffs.append(-np.abs(rng.normal(size=size)) - 1e-3)
+        with np.errstate(all="ignore"):
+            expected = np.broadcast_to(reference(coeffs), (size,))
+            np.testing.assert_array_equal(np.broadcast_to(roots._upper_root_bound(coeffs), (size,)), expected)
 
 
 def test_branch_only_for_scenario_B_and_flags_checked(paper):

@@ -261,3 +261,29 @@ def test_a_scenario_given_where_the_angles_go_points_to_scenario(name):
     """phase_diagram(contact, "B") read "B" as the angles: the one line now says to write scenario="B"."""
     with pytest.raises(TypeError, match=f"alpha='{name}' is not allowed.*scenario='{name}'"):
         me.phase_diagram(me.Contact.paper(), name)
+
+
+@pytest.mark.parametrize("scenario", ["A", "B"])
+@pytest.mark.parametrize("preset", [True, False])
+def test_the_assembled_phase_diagram_is_the_one_xarray_merges(scenario, preset, monkeypatch, tmp_path):
+    """The paper's phase diagram is laid out by io.datasets.assembled, without xarray's merge (issue 28): the dataset
+    (its variables, their order, classes and types, the dimensions' order, the coordinates and their indexes, the
+    attributes) and the netCDF file written of it are those of xarray.Dataset(variables, coords=coords)."""
+    from mdr_events.io.files import write_netcdf
+    from mdr_events.theory import phase
+
+    params = me.Parameters.paper() if preset else me.Parameters.paper().replace(tau0=30e3)
+    angles = np.linspace(0.0, 90.0, 181)
+    fast = me.phase_diagram(params, angles, scenario=scenario)
+    monkeypatch.setattr(phase, "assembled", lambda data, coords: xr.Dataset(data, coords=coords))
+    merged = me.phase_diagram(params, angles, scenario=scenario)
+    xr.testing.assert_identical(fast, merged)
+    assert list(fast.variables) == list(merged.variables) and list(fast.dims) == list(merged.dims)
+    assert set(fast.coords) == set(merged.coords) and list(fast.xindexes) == list(merged.xindexes)
+    assert all(fast.xindexes[name].equals(merged.xindexes[name]) for name in merged.xindexes)
+    assert [(type(variable), variable.dtype) for variable in fast.variables.values()] == \
+        [(type(variable), variable.dtype) for variable in merged.variables.values()]
+    assert fast.attrs == merged.attrs and list(fast.attrs) == list(merged.attrs)
+    write_netcdf(fast, tmp_path / "fast.nc")
+    write_netcdf(merged, tmp_path / "merged.nc")
+    assert (tmp_path / "fast.nc").read_bytes() == (tmp_path / "merged.nc").read_bytes()

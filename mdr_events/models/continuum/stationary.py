@@ -23,6 +23,7 @@ import numpy as np
 from numpy.polynomial import chebyshev
 from scipy import optimize
 
+from .dense import force_values
 from .span import Variable
 from .state import Regime
 from .tolerances import EPS
@@ -93,16 +94,25 @@ def stationary_points(solution, index: int, quantity: str, times: tuple[float, f
 
 
 def _dense_output_roots(interpolant, low: float, high: float) -> list[float]:
-    """The real roots in ``[low, high]`` of the derivative of ``solve_ivp``'s dense output, step by step."""
+    """The real roots in ``[low, high]`` of the derivative of ``solve_ivp``'s dense output, step by step: the steps
+    that meet the bracket picked at once, and the polynomials of several read off at their nodes in one evaluation
+    (:func:`~.dense.force_values`: each node lies inside its own step, so the values are its step's, bit for bit)."""
     ts = np.asarray(interpolant.ts, dtype=float)
+    starts, ends = np.minimum(ts[:-1], ts[1:]), np.maximum(ts[:-1], ts[1:])
+    lowers, uppers = np.maximum(starts, low), np.minimum(ends, high)
+    steps = np.flatnonzero(uppers > lowers)
+    if not steps.size:
+        return []
+    centres, halves = 0.5 * (starts[steps] + ends[steps]), 0.5 * (ends[steps] - starts[steps])
+    nodes = centres[:, None] + halves[:, None] * _NODES
+    if steps.size == 1:  # (the step's own interpolant: one call)
+        values = interpolant.interpolants[int(steps[0])](nodes[0])
+    else:
+        values = force_values(interpolant, nodes.reshape(-1)).reshape(nodes.shape)
     roots = []
-    for k, step in enumerate(interpolant.interpolants):
-        start, end = min(ts[k], ts[k + 1]), max(ts[k], ts[k + 1])
-        lower, upper = max(start, low), min(end, high)
-        if not upper > lower:
-            continue
-        centre, half = 0.5 * (start + end), 0.5 * (end - start)
-        for root in chebyshev.chebroots(_DERIVATIVE @ step(centre + half * _NODES)[0]):
+    for centre, half, lower, upper, row in zip(centres.tolist(), halves.tolist(), lowers[steps].tolist(),
+                                               uppers[steps].tolist(), values):
+        for root in chebyshev.chebroots(_DERIVATIVE @ row):
             var = centre + half * float(root.real)
             if abs(root.imag) <= IMAGINARY_SHARE and lower <= var <= upper:
                 roots.append(var)
