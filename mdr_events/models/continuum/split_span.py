@@ -183,12 +183,33 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         float
             ``x_c`` (m).
         """
-        a = self.radius_of(var)
+        return self._boundary_at(var, self.radius_of(var), self.depth_of(var))
+
+    def _boundary_at(self, var: float, a: float, depth: float) -> float:
+        """:meth:`boundary` where the radius ``a`` and the depth at ``var`` are known."""
         if self.x_c_is_edge:
             return a
         if var == self.start and self.start_boundary is not None:
             return min(self.start_boundary, a)
-        return min(self.shape.boundary(self.depth_of(var)), a) if self.pressed else 0.0
+        return min(self.shape.boundary(depth), a) if self.pressed else 0.0
+
+    def instant(self, var: float) -> tuple[float, float, float, float, float]:
+        """``(t, a, x, d, x_c)`` at the integration variable, each computed once (as the methods above give them).
+
+        Parameters
+        ----------
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+
+        Returns
+        -------
+        tuple of float
+            The time (s), the radius, the indenter's position, the depth and ``x_c`` (m).
+        """
+        t = self.time_of(var)
+        a = self.radius_of(var)
+        depth = self.segment.d(t)
+        return t, a, self.segment.x(t), depth, self._boundary_at(var, a, depth)
 
     def extent(self, region: Region, var: float) -> tuple[float, float]:
         """The region's springs ``[lower, upper]`` at the integration variable.
@@ -278,8 +299,15 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         dict
             The sizes (m), keyed ``(Region, Cap)``.
         """
-        extents = {region: self.extent(region, var) for region in Region}
-        return {key: layout.size(self.region_level(key, var), *extents[key[0]]) for key, layout in self.layouts.items()}
+        return self._sizes_at(self.instant(var))
+
+    def _sizes_at(self, instant: tuple[float, float, float, float, float]) -> dict[Key, float]:
+        """:meth:`sizes` at an :meth:`instant`."""
+        _, a, x, depth, boundary = instant
+        extents = {Region.COMPRESSED: (0.0, boundary), Region.TENSILE: (boundary, a)}
+        K, kappa = self.K, self.kappa
+        return {key: layout.size(key[0].level(key[1], x, K, kappa, a, depth), *extents[key[0]])
+                for key, layout in self.layouts.items()}
 
     def rhs(self, var: float, y) -> list[float]:
         """``dF_x/da`` (moving radius) or ``dF_x/dt`` (pinned): module docstring.
@@ -297,19 +325,20 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
             ``[dF_x/dvar]``.
         """
         segment = self.segment
-        sizes = self.sizes(var)
+        instant = self.instant(var)
+        sizes = self._sizes_at(instant)
         at_caps = sum(float(cap) * size for (_, cap), size in sizes.items())
         compressed = sum(float(cap) * size for (region, cap), size in sizes.items() if region is Region.COMPRESSED)
-        sticking = self.radius_of(var) - sum(sizes.values())
+        a = instant[1]
+        sticking = a - sum(sizes.values())
         if not self.moving:  # K a is still; the compressed caps follow the depth
             total = sticking * segment.vx + (compressed * self.kappa * segment.vd if self.pressed else 0.0)
             return [self.G2 * total]
-        a = self.radius_of(var)
         slope = self.branch.slope(a)
         drive = sticking * segment.vx * slope / segment.vd if segment.vx else 0.0
         total = at_caps * self.K + compressed * self.kappa * slope + drive
         if self.shrinking:
-            total += self.edge_shift(segment.x(self.time_of(var)), a)
+            total += self.edge_shift(instant[2], a)
         return [self.G2 * total * self.scale]
 
     def edge_shift(self, x: float, a: float) -> float:
