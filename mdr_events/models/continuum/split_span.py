@@ -102,6 +102,9 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
                               default=0.0)
         self.next_break = self._next_break(boundary) if self.direction else None
         self.break_depth = self.shape.hertz.depth(self.next_break) if self.next_break is not None else math.nan
+        # each layout with what its level and extent need, read once: (key, layout, σ, the region's weight, compressed)
+        self.keyed = [(key, layout, float(key[1]), key[0].weight, key[0] is Region.COMPRESSED)
+                      for key, layout in self.layouts.items()]
 
     def _ends(self) -> dict[Region, Ends]:
         """How each region's ends move: ``x_c`` with the depth (the source's end recedes, the destination's grows and
@@ -304,10 +307,10 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
     def _sizes_at(self, instant: tuple[float, float, float, float, float]) -> dict[Key, float]:
         """:meth:`sizes` at an :meth:`instant`."""
         _, a, x, depth, boundary = instant
-        extents = {Region.COMPRESSED: (0.0, boundary), Region.TENSILE: (boundary, a)}
-        K, kappa = self.K, self.kappa
-        return {key: layout.size(key[0].level(key[1], x, K, kappa, a, depth), *extents[key[0]])
-                for key, layout in self.layouts.items()}
+        tau0_part, kappa = self.K * a, self.kappa  # (Region.level's terms, in its order)
+        return {key: layout.size(x - sign * (tau0_part + weight * kappa * depth), *((0.0, boundary) if compressed
+                                                                                   else (boundary, a)))
+                for key, layout, sign, weight, compressed in self.keyed}
 
     def rhs(self, var: float, y) -> list[float]:
         """``dF_x/da`` (moving radius) or ``dF_x/dt`` (pinned): module docstring.
@@ -388,7 +391,8 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         """
         depths = abs(self.depth_of(self.start)), abs(self.depth_of(self.stop))
         at_surface = min(depths) <= SURFACE_SHARE * max(depths)
-        limited = self.has_fronts() or (self.direction != 0.0 and at_surface)
+        centre = any(layout.parts[index].low == 0.0 for layout in self.layouts.values() for index, _ in layout.fronts)
+        limited = centre or (self.direction != 0.0 and at_surface)
         return abs(self.stop - self.start) / FRONT_STEPS_PER_SPAN if limited else math.inf
 
     def _still(self) -> bool:
