@@ -217,7 +217,9 @@ class AnchorMap:
 
     def drop_edge_piece(self, radius: float) -> None:
         """The shrinking edge has passed the start of the last piece (to the root's rounding): forget that
-        piece and end the one before at ``radius``.
+        piece, and those before it that start at ``radius`` or beyond (a corner's, an ulp long: the edge has passed
+        their starts too, and a piece of no springs at the edge would hold a target already reached), and end the one
+        before at ``radius``.
 
         Parameters
         ----------
@@ -225,7 +227,10 @@ class AnchorMap:
             The contact radius (m).
         """
         if len(self.pieces) > 1:
-            self.pieces, self._shared = list(self.pieces[:-2]) + [dataclasses.replace(self.pieces[-2], end=radius)], 0
+            kept = list(self.pieces[:-1])
+            while len(kept) > 1 and kept[-1].start >= radius:
+                kept.pop()
+            self.pieces, self._shared = kept[:-1] + [dataclasses.replace(kept[-1], end=radius)], 0
 
     def clip(self, lower: float, upper: float, radius: float) -> None:
         """Materialise the play operator: ``Y ← clip(Y, lower, upper)`` on ``[0, radius]``.
