@@ -73,7 +73,11 @@ def test_coulomb_with_adhesion_is_its_algebraic_form_within_full_slip(case):
     rounding = 2 * params.G_star * np.nanmax(filled["contact_radius"]) * (
         ALGEBRAIC_ROUNDING * np.nanmax(np.abs(filled["tangential_displacement"]))
         + continuum.NEGLIGIBLE_SHARE * path.speed * path.duration)
-    tolerance = FORCE_SHARE * scale + rounding
+    # plus the integration's absolute tolerance per step of the compressed zone's run (atol 1e-14 N: a contact of a
+    # few µm carries 1e-9 N, and one of 1.5e-9 N was 2.3e-15 N off, above 1e-7 of it)
+    zone = solution.compressed if solution.compressed is not None else solution
+    steps = sum(len(span.interpolant.ts) - 1 for span in zone.spans if span.interpolant is not None)
+    tolerance = FORCE_SHARE * scale + rounding + steps * continuum.Tolerances().atol
     np.testing.assert_allclose(filled["tangential_force"], algebraic, rtol=0, atol=tolerance)
     depth = np.maximum(filled["indentation_depth"], 0.0)
     push = 4.0 / 3.0 * params.E_star * math.sqrt(params.R) * depth**1.5  # F_N^H(d) of the paraboloid
