@@ -1,4 +1,4 @@
-"""Scenario A's slip onset with adhesion under both parts of the cap (``"tau0+coulomb"``) on a power law.
+"""Scenarios A's and B's slip onsets with adhesion under both parts of the cap (``"tau0+coulomb"``) on a power law.
 
 Along ``x = d cot α`` from the first contact at ``d = 0`` every spring sticks until the first reaches its cap: the
 springs under the jump-in radius ``a_J`` hold ``d cot α``, those grown since along the ``Δγ0`` branch
@@ -10,11 +10,18 @@ on a grid of :data:`GRID` depths to ``d_max`` and refined by bisection to :data:
 on the negative side: every shift is ``>= 0``. The critical angle (slip at ``d_max``) is where that first depth is
 ``d_max`` (:func:`critical_angle_A`): the excess grows with ``cot α`` at every spring and depth, so the angles that
 slide before ``d_max`` are those below it.
+
+Scenario B's indentation branch (further in at ``α`` from ``d_max``, ``x = (d − d_max) cot α``) is the same about the
+contact of ``d_max``: its springs, all anchored at ``x = 0``, are the ring (radius ``a(d_max)``, anchored at the depth
+``d_max`` in place of ``a_J`` at 0), the springs grown since the same (:func:`d_crit_B_indentation`, searched up to
+:data:`INDENTATION_REACH` ``d_max``). Its pull-off branch needs no search: the edge, in tension, slides first, at (21)
+(``adhesive_onset_excess_B``).
 """
 
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -23,12 +30,16 @@ from mdr_events.contact.indenters import PowerLaw
 from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law, symbolic
 
-__all__ = ["GRID", "BISECTIONS", "onset_excess_A", "d_crit_A", "critical_angle_A"]
+__all__ = ["GRID", "BISECTIONS", "INDENTATION_REACH", "onset_excess_A", "d_crit_A", "critical_angle_A",
+           "d_crit_B_indentation"]
 
 #: Depths to ``d_max`` at which the excess is sampled for its first change of sign (its parts are smooth in the depth)
 GRID = 2048
 #: Halvings of a bracketing grid interval: the onset to 2⁻⁶⁰ of ``d_max``, below its rounding
 BISECTIONS = 60
+#: How deep scenario B's indentation branch is searched for its onset, in ``d_max`` (on a geometric grid: each step
+#: 0.7 % deeper); where none is found it never comes if ``cot α <= κ`` (below), else it is not known (``nan``)
+INDENTATION_REACH = 2.0**20
 
 
 def onset_excess_A(depth, cot: np.ndarray, friction: FrictionLaw, params: Parameters, profile: PowerLaw) -> np.ndarray:
@@ -53,12 +64,26 @@ def onset_excess_A(depth, cot: np.ndarray, friction: FrictionLaw, params: Parame
     numpy.ndarray
         ``max_ξ [(d − d_ξ) cot α − ū(ξ)]`` (m), the broadcast shape.
     """
+    jump_in = power_law.jump_in_radius(profile, params, params.dgamma0) if params.dgamma0 > 0 else 0.0
+    return _onset_excess(depth, cot, friction, params, profile, _Ring(jump_in, 0.0))
+
+
+class _Ring(NamedTuple):
+    """The springs that attached together (all anchored at the same ``x``, at the depth ``depth``) out to ``radius``:
+    scenario A's jump-in ring at ``d = 0``, scenario B's contact of ``d_max`` before it goes on at the angle."""
+
+    radius: float
+    depth: float
+
+
+def _onset_excess(depth, cot, friction: FrictionLaw, params: Parameters, profile: PowerLaw, ring: _Ring) -> np.ndarray:
+    """:func:`onset_excess_A` about the ``ring`` (its edge, ``x_c`` and the turn beyond it, where in the contact)."""
     depth, cot = np.broadcast_arrays(np.asarray(depth, dtype=float), np.asarray(cot, dtype=float))
     K, kappa = power_law.cap_per_radius(params), friction.coulomb_mu * params.E_star / params.G_star
     radius = np.asarray(power_law.contact_radius(depth, profile, params, params.dgamma0), dtype=float)
-    jump_in = power_law.jump_in_radius(profile, params, params.dgamma0) if params.dgamma0 > 0 else 0.0
+    jump_in = ring.radius
     g_jump_in = float(power_law.equivalent_profile(jump_in, profile))
-    best = depth * cot - K * radius - kappa * np.maximum(depth - g_jump_in, 0.0)  # the jump-in ring's edge
+    best = (depth - ring.depth) * cot - K * radius - kappa * np.maximum(depth - g_jump_in, 0.0)  # the ring's edge
     boundary = np.asarray(power_law.contact_radius(depth, profile, params, 0.0), dtype=float)  # x_c
     hess = power_law.hess_prefactor(params, params.dgamma0)
     at_boundary = cot * hess * np.sqrt(boundary) - K * radius  # (d − d0(x_c) = Δl0(x_c))
@@ -98,20 +123,97 @@ def d_crit_A(alpha: np.ndarray, friction: FrictionLaw, params: Parameters, profi
     """
     cot = 1.0 / np.tan(np.radians(np.asarray(alpha, dtype=float)))
     depths = params.d_max * np.arange(1, GRID + 1) / GRID
-    excess = onset_excess_A(depths[None, :], cot.reshape(-1, 1), friction, params, profile)
-    reached = excess >= 0.0
+    return _first_depth(lambda depth, cot: onset_excess_A(depth, cot, friction, params, profile), cot, 0.0,
+                        depths).reshape(np.shape(alpha))
+
+
+def _first_depth(excess, cot: np.ndarray, start: float, depths: np.ndarray) -> np.ndarray:
+    """The least depth beyond ``start`` where ``excess(depth, cot)`` reaches 0 for each ``cot`` (flat array): the
+    first grid depth of ``depths`` where it is reached, refined by :data:`BISECTIONS` halvings; ``start`` where it is
+    reached at the least depth bisected (at once), ``nan`` where it is not by the last depth."""
+    flat = np.asarray(cot, dtype=float).reshape(-1)
+    reached = excess(depths[None, :], flat.reshape(-1, 1)) >= 0.0
     first = np.argmax(reached, axis=1)
     found = reached[np.arange(len(first)), first]
-    low = np.where(first > 0, depths[np.maximum(first - 1, 0)], 0.0)
+    low = np.where(first > 0, depths[np.maximum(first - 1, 0)], start)
     high = depths[first]
-    flat = cot.reshape(-1)
-    for _ in range(BISECTIONS):  # the excess is < 0 at low (or d = 0: −K a_J) and >= 0 at high
+    for _ in range(BISECTIONS):  # the excess is < 0 at low (or at the start: −K a of the ring) and >= 0 at high
         middle = 0.5 * (low + high)
-        up = onset_excess_A(middle, flat, friction, params, profile) >= 0.0
+        up = excess(middle, flat) >= 0.0
         low, high = np.where(up, low, middle), np.where(up, middle, high)
-    # an excess already reached at the smallest depth bisected: the springs slide from first contact (0)
-    at_once = found & (low == 0.0) & (onset_excess_A(high, flat, friction, params, profile) >= 0.0)
-    return np.where(at_once, 0.0, np.where(found, high, np.nan)).reshape(np.shape(alpha))
+    # an excess already reached at the smallest depth bisected: the springs slide at once
+    at_once = found & (low == start) & (excess(high, flat) >= 0.0)
+    return np.where(at_once, start, np.where(found, high, np.nan))
+
+
+def d_crit_B_indentation(alpha: np.ndarray, friction: FrictionLaw, params: Parameters, profile: PowerLaw) -> np.ndarray:
+    """The onset depth (m) of scenario B's indentation branch at the angles ``alpha`` (degrees, in (0, 90)): the
+    least depth beyond ``d_max`` where the excess about the contact of ``d_max`` (its springs the ring, anchored at
+    ``x = 0``) reaches 0 (module docstring), on a geometric grid of :data:`GRID` depths to :data:`INDENTATION_REACH`
+    ``d_max``; ``d_max`` where a spring slides at once; where none does within the reach ``+inf`` (never) if
+    ``cot α <= κ`` and the depth beyond which none can (:func:`_never_beyond`) lies within it, else ``nan``.
+
+    Parameters
+    ----------
+    alpha : numpy.ndarray
+        The angles of the stroke from ``d_max`` further in (degrees), in (0, 90).
+    friction : FrictionLaw
+        ``"tau0+coulomb"`` (its ``μ``).
+    params : Parameters
+        The material, ``τ0``, ``d_max`` and ``Δγ0``, the branch the radius grows on.
+    profile : PowerLaw
+        The curved indenter.
+
+    Returns
+    -------
+    numpy.ndarray
+        The onset depths (m; ``+inf`` never, ``nan`` not known), the shape of ``alpha``.
+    """
+    cot = 1.0 / np.tan(np.radians(np.asarray(alpha, dtype=float))).reshape(-1)
+    ring = _Ring(float(power_law.contact_radius(params.d_max, profile, params, params.dgamma0)), params.d_max)
+    depths = params.d_max * INDENTATION_REACH ** (np.arange(1, GRID + 1) / GRID)
+    onset = _first_depth(lambda depth, cot: _onset_excess(depth, cot, friction, params, profile, ring), cot,
+                         params.d_max, depths)
+    return np.where(np.isnan(onset) & (_never_beyond(cot, friction, params, profile, ring) <= depths[-1]), np.inf,
+                    onset).reshape(np.shape(alpha))
+
+
+def _never_beyond(cot: np.ndarray, friction: FrictionLaw, params: Parameters, profile: PowerLaw,
+                  ring: _Ring) -> np.ndarray:
+    """A depth beyond which no spring of scenario B's indentation branch reaches its cap, where ``cot α <= κ``
+    (``inf`` elsewhere). There the compressed grown springs' excess ``(d − d0)(cot α − κ) + κ Δl0 − K a`` is largest at
+    ``x_c``, where it is ``cot α Δl0(x_c) − K a <= cot α k √x_c − K x_c``, below 0 once ``x_c > (cot α k/K)²`` (``k``
+    Heß's prefactor); the ring's edge falls once compressed (``d > g(a(d_max))``: its slope ``cot α − κ − K ȧ < 0``)."""
+    kappa = friction.coulomb_mu * params.E_star / params.G_star
+    K, hess = power_law.cap_per_radius(params), power_law.hess_prefactor(params, params.dgamma0)
+    boundary = np.asarray(power_law.equivalent_profile((cot * hess / K) ** 2, profile), dtype=float)
+    compressed_ring = float(power_law.equivalent_profile(ring.radius, profile))
+    bound = np.where(cot <= kappa, np.maximum(boundary, compressed_ring), np.inf)
+    if profile.n == 1.0:
+        bound = np.minimum(bound, _cone_never_beyond(cot, kappa, K, friction, params, profile, ring, boundary))
+    return bound
+
+
+def _cone_never_beyond(cot: np.ndarray, kappa: float, K: float, friction: FrictionLaw, params: Parameters,
+                       profile: PowerLaw, ring: _Ring, boundary: np.ndarray) -> np.ndarray:
+    """:func:`_never_beyond` of the cone where ``s = cot α − κ − K/(κ₁ c) < 0``: on the ``Δγ0`` branch
+    ``κ₁ c a = d + k √a >= d``, so the ring's compressed edge's excess is at most ``s d + κ g(a_R) − d_max cot α`` and
+    the grown springs' turn's ``s d + κ Δl0(ξ*) − d0(ξ*)(cot α − κ)``: both below 0 beyond their constant over ``−s``;
+    ``x_c`` as for ``cot α <= κ``."""
+    prefactor = float(power_law.equivalent_profile(1.0, profile))  # κ₁ c
+    slope = cot - kappa - K / prefactor
+    g_ring = float(power_law.equivalent_profile(ring.radius, profile))
+    constants = [kappa * g_ring - params.d_max * cot]
+    arguments = (friction.coulomb_mu, params.dgamma0, profile.c, profile.n, params.E_star, params.G_star)
+    if params.dgamma0 > 0:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            turn = np.asarray(symbolic.relation("adhesive_onset_turn_A").numeric(cot, *arguments), dtype=float)
+            grown = np.asarray(power_law.branch_depth(turn, profile, params, params.dgamma0), dtype=float)
+        hess = power_law.hess_prefactor(params, params.dgamma0)
+        constants.append(np.where(cot > kappa, kappa * hess * np.sqrt(turn) - grown * (cot - kappa), -np.inf))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        linear = np.maximum.reduce([np.maximum(np.asarray(c, dtype=float), 0.0) for c in constants]) / -slope
+    return np.where(slope < 0.0, np.maximum.reduce([linear, boundary, np.full(cot.shape, g_ring)]), np.inf)
 
 
 def critical_angle_A(friction: FrictionLaw, params: Parameters, profile: PowerLaw) -> float:

@@ -521,6 +521,17 @@ def _combined_onset(alpha_arr: np.ndarray, friction: FrictionLaw, params: Parame
     return depth
 
 
+def _combined_onset_B(alpha_arr: np.ndarray, friction: FrictionLaw, params: Parameters, indenter: Profile) -> np.ndarray:
+    """Both parts with adhesion on a curved indenter, B's indentation branch
+    (:func:`~mdr_events.theory.combined_onset.d_crit_B_indentation`): at once along the surface (0°), never at 90°
+    (``+inf``)."""
+    inside = (alpha_arr > 0.0) & (alpha_arr < 90.0)
+    depth = np.where(alpha_arr >= 90.0, np.inf, params.d_max)
+    if np.any(inside):
+        depth[inside] = combined_onset.d_crit_B_indentation(alpha_arr[inside], friction, params, indenter)
+    return depth
+
+
 def _onset_output(values: np.ndarray, alpha: np.ndarray):
     return float(values) if np.ndim(alpha) == 0 else values
 
@@ -577,10 +588,13 @@ def _effective_angle(alpha_arr: np.ndarray, kappa: float) -> tuple[np.ndarray, n
     return np.rad2deg(np.arctan2(1.0, np.where(exists, cot - kappa, 1.0))), exists
 
 
-def d_crit_B(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None):
-    r"""Depth of slip onset in scenario B's pull-off without adhesion (m; module docstring): (20)
+def d_crit_B(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None,
+             adhesion: bool = False):
+    r"""Depth of slip onset in scenario B's pull-off (m; module docstring): (20)
     (:func:`mdr_events.theory.power_law.d_crit_B`) where the law has ``τ0``'s part, ``d_max`` (at once) for Coulomb's
-    alone; ``α = 90°`` never slides (``-inf``).
+    alone; ``α = 90°`` never slides (``-inf``). With ``adhesion`` (the ``Δγ0``, ``Δγ1`` branches) the edge, in tension,
+    holds ``K a`` alone and every spring the same shift: (21) of ``τ0`` alone, free of ``μ``
+    (``symbolic.adhesive_onset_excess_B``); Coulomb's law alone still slides at once.
 
     The flat punch has no spring at zero compression: every cap is ``K a + κ d`` against the shift
     ``(d_max − d) cot α``, so ``d = (d_max cot α − K a)/(cot α + κ)``, ``-inf`` below the surface (it comes off
@@ -598,6 +612,8 @@ def d_crit_B(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
         The material, ``τ0`` and ``d_max``.
     profile : PowerLaw or FlatPunch, optional
         The indenter; default the paraboloid of ``params.R``.
+    adhesion : bool, default False
+        The onset with Heß's rule (``params.dgamma0``, ``dgamma1``) rather than without.
 
     Returns
     -------
@@ -613,9 +629,12 @@ def d_crit_B(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
         with np.errstate(invalid="ignore"):  # α = 0: cot α = +inf, the onset at d_max
             depth = np.where(np.isinf(cot), params.d_max,
                              (params.d_max * cot - K * indenter.radius) / (cot + coulomb_cap_ratio(friction, params)))
+        if adhesion and friction.uses_tau0:  # held above the surface the caps are K a alone: (21) to the pull-off
+            held = np.asarray(power_law.d_crit_B(alpha_arr, indenter, params, adhesion=True), dtype=float)
+            return _onset_output(np.where(vertical, -np.inf, np.where(depth < 0.0, held, depth)), alpha_arr)
         return _onset_output(np.where(vertical | (depth < 0.0), -np.inf, depth), alpha_arr)
     if friction.uses_tau0:
-        return power_law.d_crit_B(alpha, indenter, params, adhesion=False)
+        return power_law.d_crit_B(alpha, indenter, params, adhesion=adhesion)
     return _onset_output(np.where(alpha_arr >= 90.0, -np.inf, params.d_max), alpha_arr)
 
 
@@ -626,10 +645,13 @@ def _cotangent(alpha_arr: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         return 1.0 / np.tan(np.deg2rad(np.where(vertical, 45.0, alpha_arr))), vertical
 
 
-def critical_angle_B(friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None) -> float:
-    """Scenario B's critical angle without adhesion (degrees): a contact that shrinks to nothing always slides first
+def critical_angle_B(friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None,
+                     adhesion: bool = False) -> float:
+    """Scenario B's critical angle (degrees): without adhesion a contact that shrinks to nothing always slides first
     (90°); the flat punch comes off whole at the surface, where its edge holds only ``K a``: ``d_max cot α_c = K a``,
-    as for ``τ0`` alone (Coulomb's part is zero at ``d = 0``).
+    as for ``τ0`` alone (Coulomb's part is zero at ``d = 0``). With ``adhesion`` the contact comes off at the jump-off,
+    its edge holding ``K a`` alone: ``τ0``'s (21) where the law has ``τ0``'s part (:func:`d_crit_B`), 90° for Coulomb's
+    alone (it slides at once).
 
     Parameters
     ----------
@@ -639,6 +661,8 @@ def critical_angle_B(friction: FrictionLaw | str | None, params: Parameters, pro
         The material, ``τ0`` and ``d_max``.
     profile : PowerLaw or FlatPunch, optional
         The indenter; default the paraboloid of ``params.R``.
+    adhesion : bool, default False
+        The angle with Heß's rule (``params.dgamma0``, ``dgamma1``) rather than without.
 
     Returns
     -------
@@ -647,17 +671,20 @@ def critical_angle_B(friction: FrictionLaw | str | None, params: Parameters, pro
     """
     friction = as_friction_law(friction)
     indenter = _indenter(profile, params)
-    if isinstance(indenter, FlatPunch) and friction.uses_tau0:
-        return power_law.critical_angle_B(indenter, params, adhesion=False)
+    if friction.uses_tau0 and (adhesion or isinstance(indenter, FlatPunch)):
+        return power_law.critical_angle_B(indenter, params, adhesion=adhesion)
     return 90.0
 
 
 def d_crit_B_indentation(alpha, friction: FrictionLaw | str | None, params: Parameters,
-                         profile: Profile | None = None):
-    r"""Depth of slip onset on scenario B's indentation branch without adhesion (m; module docstring): ``+inf``
+                         profile: Profile | None = None, adhesion: bool = False):
+    r"""Depth of slip onset on scenario B's indentation branch (m; module docstring): without adhesion ``+inf``
     (never) where ``cot α <= κ``, else (20)'s "+" branch at ``α'`` (``cot α' = cot α − κ``), ``d_max`` (at once) for
     Coulomb's law alone. The flat punch: every cap ``K a + κ d`` against ``(d − d_max) cot α``,
-    ``d = (K a + d_max cot α)/(cot α − κ)``.
+    ``d = (K a + d_max cot α)/(cot α − κ)``, with adhesion or without. With ``adhesion`` on a curved indenter: (21)'s
+    "+" branch for ``τ0`` alone, ``d_max`` for Coulomb's alone, and for both parts the first depth a spring reaches
+    its cap about the contact of ``d_max`` (:func:`~mdr_events.theory.combined_onset.d_crit_B_indentation`: ``nan``
+    where none does within its reach).
 
     .. math:: \frac{d - d_\mathrm{max}}{\tan\alpha'} = \frac{\pi a \tau_0}{2 G^*}, \qquad
               \cot\alpha' = \cot\alpha - \kappa \qquad (20)
@@ -672,16 +699,22 @@ def d_crit_B_indentation(alpha, friction: FrictionLaw | str | None, params: Para
         The material, ``τ0`` and ``d_max``.
     profile : PowerLaw or FlatPunch, optional
         The indenter; default the paraboloid of ``params.R``.
+    adhesion : bool, default False
+        The onset with Heß's rule (the ``Δγ0`` branch) rather than without.
 
     Returns
     -------
     float or numpy.ndarray
-        The onset depth ``d_crit`` (m), the shape of ``alpha``; ``+inf`` where it never slides.
+        The onset depth ``d_crit`` (m), the shape of ``alpha``; ``+inf`` where it never slides (``nan``: not known).
     """
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
     indenter = _indenter(profile, params)
     kappa = coulomb_cap_ratio(friction, params)
+    if adhesion and not isinstance(indenter, FlatPunch) and friction.uses_tau0:
+        if kappa == 0.0:
+            return power_law.d_crit_B_indentation(alpha, indenter, params, adhesion=True)
+        return _onset_output(_combined_onset_B(alpha_arr, friction, params, indenter), alpha_arr)
     if isinstance(indenter, FlatPunch):
         cot, vertical = _cotangent(alpha_arr)
         K = _tau0_per_radius(friction, params)

@@ -98,7 +98,9 @@ def phase_diagram(
         (:func:`mdr_events.theory.mindlin.d_crit_A`, ``d_crit_B``, ``d_crit_B_indentation``); scenario A's adhesive
         ("jkr") onset is the same for Coulomb's law alone and the flat punch (the compressed zone's,
         :func:`~mdr_events.theory.mindlin.adhesive_onset_A_is_non_adhesive`), that of
-        :mod:`~mdr_events.theory.combined_onset` for ``"tau0+coulomb"`` on a curved indenter; scenario B's ``nan``.
+        :mod:`~mdr_events.theory.combined_onset` for ``"tau0+coulomb"`` on a curved indenter; scenario B's adhesive
+        pull-off onset is (21) (the edge, in tension, holds ``K a`` alone), its indentation branch that of
+        :mod:`~mdr_events.theory.combined_onset` for ``"tau0+coulomb"`` (``nan`` beyond its reach).
     limits : Limits, optional
         The angles count as ``samples``, and :data:`BYTES_PER_ANGLE` each as ``memory``: checked before anything
         is computed (``ResourceLimitError``).
@@ -282,8 +284,8 @@ def _friction_phase_diagram(params: Parameters, angles: np.ndarray, scenario: st
     """:func:`phase_diagram` for another friction law (:mod:`~mdr_events.theory.mindlin`); same variables and
     encoding. Scenario A's adhesive onset is the non-adhesive one for Coulomb's law alone and the flat punch
     (:func:`~mdr_events.theory.mindlin.adhesive_onset_A_is_non_adhesive`), the first depth a spring reaches its cap
-    for both parts on a curved indenter (:mod:`~mdr_events.theory.combined_onset`); scenario B's adhesive variables
-    ``nan``."""
+    for both parts on a curved indenter (:mod:`~mdr_events.theory.combined_onset`); scenario B's
+    (:func:`_friction_phase_diagram_B`)."""
     if not theory_of(profile).friction_closed_forms:
         raise ValueError(f"friction={friction.law!r} is not allowed with a tabulated profile's phase diagram; allowed: "
                          "'tau0'")
@@ -322,25 +324,23 @@ def _onset_dataset_A(params: Parameters, kinds: dict, depths: dict[str, np.ndarr
 
 def _friction_phase_diagram_B(params: Parameters, angles: np.ndarray, profile, friction: FrictionLaw,
                               coords: dict) -> xr.Dataset:
-    """Scenario B's phase diagram of another friction law without adhesion (:mod:`~mdr_events.theory.mindlin`); the
-    adhesive variables ``nan``."""
+    """Scenario B's phase diagram of another friction law (:mod:`~mdr_events.theory.mindlin`): without adhesion, and
+    with it (the pull-off branch's edge, in tension, holds ``K a`` alone: (21); the indentation branch of both parts on
+    a curved indenter by :mod:`~mdr_events.theory.combined_onset`, ``nan`` where its onset lies beyond the reach)."""
     coords["branch"] = ("branch", np.array(analytic.BRANCHES), {"units": "1", "long_name": "motion at angle from d_max"})
-    hertz = np.stack([mindlin.d_crit_B(angles, friction, params, profile),
-                      mindlin.d_crit_B_indentation(angles, friction, params, profile)])
+    curves = {adhesive: np.stack([mindlin.d_crit_B(angles, friction, params, profile, adhesion=adhesive),
+                                  mindlin.d_crit_B_indentation(angles, friction, params, profile, adhesion=adhesive)])
+              for adhesive in (False, True)}
     words = f"friction law {friction.law!r}"
-    variables = {
-        "d_crit_hertz": (("branch", "alpha"), hertz, {"units": "m", "long_name": f"slip-onset depth, non-adhesive, "
-                                                                                   f"{words}"}),
-        "d_crit_jkr": (("branch", "alpha"), np.full(hertz.shape, np.nan),
-                       {"units": "m", "long_name": f"slip-onset depth, adhesive, {words}: no closed form (nan)"}),
-        "jump_off_depth": ((), 0.0, {"units": "m", "long_name": "jump-off depth on the pull-off branch (without "
-                                                                 "adhesion the contact ends at the surface)"}),
-        "d_max": ((), params.d_max, {"units": "m", "long_name": "maximum indentation depth"}),
-        "critical_angle_hertz": ((), mindlin.critical_angle_B(friction, params, profile),
-                                 {"units": "degree", "long_name": f"critical angle, non-adhesive, {words} (no slip before "
-                                                                  "jump-off above it)"}),
-        "critical_angle_jkr": ((), np.nan, {"units": "degree", "long_name": f"critical angle, adhesive, {words}: no "
-                                                                             "closed form (nan)"}),
-    }
+    jump_off = theory_of(profile).jump_off(profile, params, params.dgamma1)["depth"] if params.dgamma1 > 0.0 else 0.0
+    variables = {"jump_off_depth": ((), jump_off, {"units": "m", "long_name": "jump-off depth on the pull-off branch "
+                                                                            "(displacement control)"}),
+                 "d_max": ((), params.d_max, {"units": "m", "long_name": "maximum indentation depth"})}
+    for key, adhesive, kind in (("hertz", False, "non-adhesive"), ("jkr", True, "adhesive (Heß)")):
+        variables[f"d_crit_{key}"] = (("branch", "alpha"), curves[adhesive],
+                                      {"units": "m", "long_name": f"slip-onset depth, {kind}, {words}"})
+        variables[f"critical_angle_{key}"] = ((), mindlin.critical_angle_B(friction, params, profile, adhesion=adhesive),
+                                              {"units": "degree", "long_name": f"critical angle, {kind}, {words} (no "
+                                                                               "slip before jump-off above it)"})
     return stamp(xr.Dataset(variables, coords=coords), params, scenario="B", content=PHASE_DIAGRAM_CONTENT,
                  **profile_attrs(profile), **friction_attrs(friction))

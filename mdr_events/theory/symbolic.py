@@ -774,7 +774,7 @@ ADHESIVE_FRICTION_KEYS = ("compression_boundary", "compression_boundary_rate", "
                           "compressed_normal_force", "flat_punch_friction_cap", "flat_punch_full_slip_force",
                           "flat_punch_loop_energy", "adhesive_seen_piece_turn", "adhesive_compressed_level",
                           "adhesive_tensile_level", "adhesive_crossing_anchor", "adhesive_onset_excess_A",
-                          "adhesive_onset_turn_A")
+                          "adhesive_onset_turn_A", "adhesive_onset_excess_B")
 
 
 @functools.cache
@@ -830,7 +830,29 @@ def adhesive_friction_model_afresh() -> dict[str, Relation]:
     _derive_seen_piece_turn(add, profile, model)
     _derive_crossing_anchor(add, cap, profile, boundary, kappa, tau0_cap)
     _derive_adhesive_onset_A(add, profile, model, kappa, tau0_cap)
+    _derive_adhesive_onset_B(add, cap, profile, model, tau0_cap)
     return out
+
+
+def _derive_adhesive_onset_B(add: AddRelation, cap: sp.Expr, profile: sp.Expr, model: dict[str, Relation],
+                             tau0_cap: sp.Expr) -> None:
+    """Scenario B's pull-off at angle with both parts of the cap and adhesion, before any spring slides.
+
+    After the vertical stroke every spring in contact is anchored at ``x = 0``: going out along
+    ``x = (d_max − d) cot α`` all hold the same shift. On any adhesive branch (9) ``d = g(a) − Δl(a)`` with ``Δl >= 0``,
+    so the edge is in tension (``d <= g(a)``) and its cap is ``K a``, the least of all (the caps rise inwards): the
+    first spring to slide is the edge's, where ``(d_max − d) cot α = K a`` — (21) of ``τ0`` alone on the same branch,
+    free of ``μ``. (The indentation branch, further in, is scenario A's springs about the contact of ``d_max``, the
+    excess and turn of :func:`_derive_adhesive_onset_A`.)"""
+    cot = sp.Symbol("cot_alpha", positive=True)
+    branch = model["power_law_depth"].rhs  # d on the branch of the work dgamma at the radius a
+    edge_cap = cap.subs(x, a).subs(d, branch)
+    if not _vanishes(sp.simplify(edge_cap - tau0_cap)):
+        raise RuntimeError("the edge of an adhesive contact is not in tension: its cap is not K a")
+    excess = (d_max - d) * cot - edge_cap
+    add(Relation("adhesive_onset_excess_B", "(21)", "shift over cap of the edge spring on scenario B's pull-off at "
+                 "angle (every spring anchored at x = 0; the edge in tension, its cap K a): (d_max - d) cot - K a", X,
+                 sp.simplify(excess), (d, d_max, a, cot, tau0, G_star)))
 
 
 def _derive_adhesive_onset_A(add: AddRelation, profile: sp.Expr, model: dict[str, Relation], kappa: sp.Expr,

@@ -16,7 +16,7 @@ import math
 import os
 
 import numpy as np
-from hypothesis import HealthCheck, assume, event, given, settings
+from hypothesis import HealthCheck, assume, event, example, given, settings
 from hypothesis import strategies as st
 
 import mdr_events as me
@@ -46,8 +46,19 @@ def adhesive_coulomb_paths(draw):
     return params, FrictionLaw("coulomb", mu=draw(coefficients())), me.Path(path_points(draw, params), params.v)
 
 
+#: A path that re-sticks at a corner (the vertical stroke after sliding in), leaving pieces an ulp long at the radius
+#: there, then shrinks past them: the edge dropped the last piece but kept one starting at its new radius, of no
+#: springs, whose anchor the level had passed (a target met at once, for ever: "no progress after 50 event restarts",
+#: reported by two helpers); models.continuum.anchors.AnchorMap.drop_edge_piece
+STUCK_AT_A_CORNERS_PIECES = (me.Parameters(E=1e5, nu=0.0, R=0.1, tau0=0.0, dgamma0=0.5, dgamma1=0.5, d_max=1e-3, v=1e-6),
+                             FrictionLaw("coulomb", mu=1.0),
+                             me.Path(np.array([[0.0, 0.0], [-5e-5, 3.1e-5], [-5e-5, 3.2e-5], [-5.1e-5, -3.77515939e-4]]),
+                                     1e-6))
+
+
 @settings(max_examples=20 * SCALE, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(adhesive_coulomb_paths())
+@example(STUCK_AT_A_CORNERS_PIECES)
 def test_coulomb_with_adhesion_is_its_algebraic_form_within_full_slip(case):
     params, friction, path = case
     label_parameters(params)
@@ -62,7 +73,11 @@ def test_coulomb_with_adhesion_is_its_algebraic_form_within_full_slip(case):
     rounding = 2 * params.G_star * np.nanmax(filled["contact_radius"]) * (
         ALGEBRAIC_ROUNDING * np.nanmax(np.abs(filled["tangential_displacement"]))
         + continuum.NEGLIGIBLE_SHARE * path.speed * path.duration)
-    tolerance = FORCE_SHARE * scale + rounding
+    # plus the integration's absolute tolerance per step of the compressed zone's run (atol 1e-14 N: a contact of a
+    # few µm carries 1e-9 N, and one of 1.5e-9 N was 2.3e-15 N off, above 1e-7 of it)
+    zone = solution.compressed if solution.compressed is not None else solution
+    steps = sum(len(span.interpolant.ts) - 1 for span in zone.spans if span.interpolant is not None)
+    tolerance = FORCE_SHARE * scale + rounding + steps * continuum.Tolerances().atol
     np.testing.assert_allclose(filled["tangential_force"], algebraic, rtol=0, atol=tolerance)
     depth = np.maximum(filled["indentation_depth"], 0.0)
     push = 4.0 / 3.0 * params.E_star * math.sqrt(params.R) * depth**1.5  # F_N^H(d) of the paraboloid

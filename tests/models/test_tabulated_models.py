@@ -11,6 +11,7 @@ import mdr_events as me
 from mdr_events.analysis.convergence import history_differences, observed_orders
 from mdr_events.models.continuum import EventKind, extremum, solve_path
 from mdr_events.contact.indenters import TabulatedProfile
+from mdr_events.models.paths import exit_depth
 from mdr_events.theory import tabulated as tb
 
 REACH = 4e-3
@@ -40,6 +41,30 @@ def test_a_table_of_the_paraboloid_runs_as_the_paraboloid(paper):
     for name in ("normal_force", "tangential_force", "contact_area"):
         coarse, fine = gaps[0][name][0], gaps[1][name][0]
         assert fine < 1e-3 and coarse / fine > 3.0, (name, coarse, fine)
+
+
+def test_a_level_beyond_what_the_table_reaches_clips_its_springs_at_its_end(paper):
+    """Δγ1 < Δγ0, re-contact and growth to d_max: a cap's level x + K a then lies beyond the anchor of the table's last
+    radius (the depth it needs is deeper than the table reaches): every spring is inside the window, none at the cap.
+    The algebraic force on the stored anchors is the integrated one, and both the paraboloid's to the table's
+    interpolation error (before, the level's inverse was the piece's start: every spring clipped at the cap, the
+    algebraic force of the wrong sign, and the edge's shift wrong on the way out, F_x −0.61 N against 0.36 N)."""
+    params = paper.replace(dgamma0=0.15, dgamma1=0.01)
+    d_max = params.d_max
+    points = [(0.0, 0.0), (0.0, 0.8 * d_max), (0.0, 0.6 * d_max), (-0.3 * d_max, 0.6 * d_max),
+              (-0.3 * d_max, -0.02 * d_max), (0.7 * d_max, d_max), (0.7 * d_max, exit_depth(params))]
+    path = me.Path(np.array(points), params.v)
+    r = np.linspace(0.0, 5e-3, 41)
+    table = TabulatedProfile(r, r**2 / (2 * params.R))
+    solution = solve_path(params, path, profile=table)
+    reference = solve_path(params, path)
+    times = np.linspace(0.0, 0.99 * min(solution.end_time, reference.end_time), 801)  # (not the pull-off itself)
+    integrated = me.continuum.evaluate(solution, times)["tangential_force"]
+    scale = float(np.nanmax(np.abs(integrated)))
+    np.testing.assert_allclose(me.continuum.algebraic_tangential_force(solution, times), integrated, rtol=0,
+                               atol=1e-9 * scale)
+    np.testing.assert_allclose(integrated, me.continuum.evaluate(reference, times)["tangential_force"], rtol=0,
+                               atol=1e-3 * scale)
 
 
 def test_the_continuum_meets_the_tables_relations(paper):

@@ -15,7 +15,7 @@ import mdr_events as me
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import FlatPunch, PowerLaw
 from mdr_events.models.continuum import EventKind, solve_path
-from mdr_events.theory import mindlin
+from mdr_events.theory import mindlin, symbolic
 
 ANGLES = [10.0, 40.0, 70.0]
 #: The continuum's onset event against the closed form, as a share of d_max: the event is the root of a linear level
@@ -30,9 +30,11 @@ def _onset(params, alpha, friction, profile):
     (direction 0: models.continuum.compressed), which is no onset of friction."""
     path = me.Path.scenario_A(alpha, params, profile=profile)
     solution = solve_path(params, path, profile=profile, friction=friction)
-    deepest = path.corner_times[1] - path.first_contact_time()  # the end of the indentation
+    # the end of the indentation: at the corner itself a radius dropping onto the Δγ1 branch (Δγ1 < Δγ0) lets the
+    # springs beyond its smaller caps slide, which is no onset of the indentation
+    deepest = path.corner_times[1] - path.first_contact_time()
     onsets = [event.depth for event in solution.events if event.kind is EventKind.SLIP_ONSET and event.direction
-              and event.time <= deepest]
+              and event.time < deepest]
     return onsets[0] if onsets else math.inf
 
 
@@ -90,3 +92,58 @@ def test_the_combined_laws_adhesive_onset_is_the_continuums(adhesion, profile):
     diagram = me.phase_diagram(params, angles, friction=friction, profile=profile)
     np.testing.assert_array_equal(diagram["d_crit_jkr"].values, np.where(np.isnan(depths), np.inf, depths))
     assert float(diagram["critical_angle_jkr"]) == critical
+
+
+def _onset_b(params, alpha, friction, profile, final_depth=None):
+    """The depth of the continuum's first SLIP_ONSET at a cap after the vertical stroke of scenario B: going out at
+    ``alpha`` (``final_depth`` None, -inf: none before the pull-off), or further in to ``final_depth`` (+inf: none)."""
+    if final_depth is None:
+        path = me.Path.scenario_B(alpha, params, profile=profile)
+    else:
+        path = me.Path.scenario_B_indentation(alpha, params, final_depth=final_depth, profile=profile)
+    solution = solve_path(params, path, profile=profile, friction=friction)
+    turn, end = path.corner_times[1:3] - path.first_contact_time()  # the vertical stroke's end, the angled one's
+    onsets = [event.depth for event in solution.events if event.kind is EventKind.SLIP_ONSET and event.direction
+              and turn <= event.time <= end]
+    return onsets[0] if onsets else (-math.inf if final_depth is None else math.inf)
+
+
+@pytest.mark.parametrize("adhesion, profile", COMBINED_CASES[:6] + [
+    pytest.param((0.05, 0.05), PowerLaw(50.0, 1.5), id="equal-n1.5")])
+def test_the_combined_laws_adhesive_onset_of_scenario_b_is_the_continuums(adhesion, profile):
+    """Both parts of the cap on a curved indenter with adhesion, scenario B: going out, every spring holds the same
+    shift and the edge, in tension, only K a: the onset is τ0's (21), free of μ (its derived excess vanishes there),
+    the continuum's first slip at three angles, none before the pull-off above the critical angle and some just
+    below it; further in, the first depth a spring reaches its cap about the contact of d_max
+    (theory.combined_onset.d_crit_B_indentation) is the continuum's at two angles (+inf, never, for the cone: its
+    springs do not slide by 20 d_max); the phase diagram's adhesive curves and angle are these (nan before)."""
+    params = me.Parameters.paper().replace(dgamma0=adhesion[0], dgamma1=adhesion[1])
+    friction = FrictionLaw("tau0+coulomb", mu=0.2)
+    indenter = profile or PowerLaw.paraboloid(params.R)
+    angles = np.array([20.0, 45.0, 70.0])
+    out = mindlin.d_crit_B(angles, friction, params, profile, adhesion=True)
+    np.testing.assert_array_equal(out, me.power_law.d_crit_B(angles, indenter, params, adhesion=True))
+    excess = symbolic.relation("adhesive_onset_excess_B")
+    for alpha, depth in zip(angles, out):
+        assert _onset_b(params, alpha, friction, profile) == pytest.approx(depth, rel=0,
+                                                                            abs=ONSET_SHARE * params.d_max), alpha
+        if np.isfinite(depth):  # the radius pinned at d_max's until the Δγ1 branch is reached, then on it
+            radius = min(float(me.power_law.contact_radius(params.d_max, indenter, params, params.dgamma0)),
+                         float(me.power_law.contact_radius(depth, indenter, params, params.dgamma1)))
+            left = excess.numeric(depth, params.d_max, radius, 1 / math.tan(math.radians(alpha)), params.tau0,
+                                  params.G_star)
+            assert abs(float(left)) <= ONSET_SHARE * params.d_max, alpha
+    critical = mindlin.critical_angle_B(friction, params, profile, adhesion=True)
+    assert _onset_b(params, critical - 0.01, friction, profile) > -math.inf
+    assert _onset_b(params, critical + 0.01, friction, profile) == -math.inf
+    inward = mindlin.d_crit_B_indentation(angles[:2], friction, params, profile, adhesion=True)
+    for alpha, depth in zip(angles[:2], inward):
+        final = 1.2 * depth if np.isfinite(depth) else 20 * params.d_max
+        assert _onset_b(params, alpha, friction, profile, final) == pytest.approx(
+            depth, rel=0, abs=ONSET_SHARE * params.d_max), alpha
+    diagram = me.phase_diagram(params, angles, scenario="B", friction=friction, profile=profile)
+    np.testing.assert_array_equal(diagram["d_crit_jkr"].sel(branch="pull-off").values, out)
+    np.testing.assert_array_equal(diagram["d_crit_jkr"].sel(branch="indentation").values[:2], inward)
+    assert float(diagram["critical_angle_jkr"]) == critical
+    assert not np.any(np.isnan(diagram["d_crit_jkr"].values))
+

@@ -239,8 +239,12 @@ def test_phase_diagram_b_of_another_friction_law():
                                   me.mindlin.d_crit_B(angles, friction, hertz))
     np.testing.assert_array_equal(ds["d_crit_hertz"].sel(branch="indentation").values,
                                   me.mindlin.d_crit_B_indentation(angles, friction, hertz))
-    assert np.all(np.isnan(ds["d_crit_jkr"].values)) and ds.attrs["friction_law"] == "tau0+coulomb"
-    me.plotting.plot_phase_diagram(ds)  # draws without the adhesive curves
+    np.testing.assert_array_equal(ds["d_crit_jkr"].sel(branch="pull-off").values,
+                                  me.mindlin.d_crit_B(angles, friction, hertz, adhesion=True))
+    np.testing.assert_array_equal(ds["d_crit_jkr"].sel(branch="indentation").values,
+                                  me.mindlin.d_crit_B_indentation(angles, friction, hertz, adhesion=True))
+    assert not np.any(np.isnan(ds["d_crit_jkr"].values)) and ds.attrs["friction_law"] == "tau0+coulomb"
+    me.plotting.plot_phase_diagram(ds)
 
 
 def test_a_law_with_mu_zero_draws_the_papers_diagram_for_a_punch():

@@ -437,7 +437,8 @@ class AnchorMap:
     def inverse(self, p: Piece, level: float) -> float:
         """The ``ξ`` at which growth piece ``p`` takes the value ``level``, continued beyond the piece;
         where the depth it needs lies below the branch's fold (far on the piece's start side), the
-        piece's start.
+        piece's start; where it lies beyond the deepest a table's branch reaches (far on its end side), the
+        table's last radius.
 
         Parameters
         ----------
@@ -451,8 +452,16 @@ class AnchorMap:
         float
             The coordinate ``ξ`` (m).
         """
-        xi = self.attach.radius(p.d_ref + (level - p.x0) / p.ratio, self.rtol)
-        return xi if xi == xi else p.start
+        depth = p.d_ref + (level - p.x0) / p.ratio
+        xi = self.attach.radius(depth, self.rtol)
+        return xi if xi == xi else self._unreached(p, depth)
+
+    def _unreached(self, p: Piece, depth):
+        """:meth:`inverse` where the branch has no radius of ``depth`` (a float or an array): the piece's start below
+        the fold, the last knot (a table's last radius) above it."""
+        beyond = self.attach.knots[-1] if self.attach.knots else p.start
+        return np.where(depth <= self.attach.jump_off_depth, p.start, beyond) if np.ndim(depth) else \
+            (p.start if depth <= self.attach.jump_off_depth else beyond)
 
     def inverses(self, p: Piece, levels: np.ndarray) -> np.ndarray:
         """:meth:`inverse` for an array of levels.
@@ -469,8 +478,9 @@ class AnchorMap:
         numpy.ndarray
             The coordinates ``ξ`` (m), the shape of ``levels``.
         """
-        xi = self.attach.radii(p.d_ref + (np.asarray(levels, dtype=float) - p.x0) / p.ratio)
-        return np.where(np.isnan(xi), p.start, xi)
+        depth = p.d_ref + (np.asarray(levels, dtype=float) - p.x0) / p.ratio
+        xi = self.attach.radii(depth)
+        return np.where(np.isnan(xi), self._unreached(p, depth), xi)
 
     def integral(self, p: Piece, lower: float, upper: float) -> float:
         """``∫ Y(ξ) dξ`` over ``[lower, upper]`` on piece ``p``.

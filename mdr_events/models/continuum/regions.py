@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import enum
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from .formulas import Formula, Shape
 from .state import Cap, Slip, ZoneSummary, NO_ZONE
@@ -122,6 +122,8 @@ class Part:
     end: float
     low: float
     high: float
+    #: what :meth:`inverse` keeps between calls: the formula's values at ``low``, ``high`` and the last root
+    memo: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
 
     def value(self, xi: float) -> float:
         """The seen anchor at ``ξ`` (m).
@@ -168,7 +170,11 @@ class Part:
         float
             ``ξ`` (m).
         """
-        return self.formula.inverse(level, self.low, self.high)
+        memo = self.memo
+        if "ends" not in memo:
+            memo["ends"] = (self.formula.value(self.low), self.formula.value(self.high))
+        memo["root"] = root = self.formula.inverse(level, self.low, self.high, memo.get("root"), memo["ends"])
+        return root
 
 
 class Role(enum.Enum):

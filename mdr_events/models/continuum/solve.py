@@ -23,6 +23,7 @@ from .anchors import AnchorMap, Piece
 from .compressed import attach_compressed_zone
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
 from .plan import Action, SpanPlan, plan_span
+from .regions import Region
 from .solution import PathSolution, evaluate
 from .integrate import integrate_span
 from .span import Span, SpanIntegrator, SpanOutcome, Trigger
@@ -179,8 +180,9 @@ def advance(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment:
         state.anchors.close(radius)
     span.anchors = record if record is not None else state.anchors.copy()
     if outcome.fired:
-        transition = split_slip_transition if model.split else slip_transition
-        return logged + transition(model, state, outcome, radius, segment)
+        if model.split:
+            return logged + split_slip_transition(model, state, outcome, radius, segment)
+        return logged + slip_transition(model, state, outcome, radius, segment, span.regime is Regime.GROWING)
     return logged + regime_ends(model, state, plan, outcome, radius)
 
 
@@ -213,20 +215,52 @@ def enter(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment: S
         for piece in plan.growth:
             state.anchors.extend(piece.start, piece)
     else:
-        dropped = plan.radius < state.radius
         state.anchors.truncate(plan.radius)
-        if dropped and model.split:  # the caps jumped in with the radius: the play operators take them at once
-            state.anchors.clip_caps(segment.x(plan.t_start), model.caps, segment.d(plan.t_start), plan.radius)
     state.detaching = plan.regime is Regime.SHRINKING
+    if plan.regime is not Regime.GROWING and plan.radius < state.radius:
+        return logged + drop_onto_branch(model, state, plan, segment)
     state.radius, state.force = plan.radius, plan.force
     return logged
 
 
+def drop_onto_branch(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment: Segment) -> list[Logged]:
+    """The radius dropped onto the ``Δγ1`` branch at the start of ``plan`` (``Δγ1 < Δγ0``): the caps jumped in with it,
+    and the play operators take the springs beyond them at once (the window materialised in the anchors), which then
+    sit at the caps. Every cap's zone is laid out anew with each spring at a cap taken as sliding, and what changed is
+    logged (the table of :mod:`.state`: full slip where every spring left is at a cap); the span then finds whether
+    each level pushes on or turns back (a re-stick at once).
+
+    Parameters
+    ----------
+    model : ContinuumModel
+        The contact: its caps, and whether it is split at ``x_c``.
+    state : ContactState
+        The automaton's state, its anchors truncated to the new radius (changed).
+    plan : SpanPlan
+        The span's plan: its start, the radius on the ``Δγ1`` branch and the force of the clipped anchors.
+    segment : Segment
+        The path segment the span lies on.
+
+    Returns
+    -------
+    list of tuple
+        What the drop changed of each cap's zone, to log as ``(kind, path time, radius, direction)``.
+    """
+    t, radius = plan.t_start, plan.radius
+    state.anchors.clip_caps(segment.x(t), model.caps, segment.d(t), radius)
+    state.radius, state.force = radius, plan.force
+    if model.split:
+        reached = frozenset((Trigger.ZONE_REACHES, cap, region) for cap in Cap for region in Region)
+        return split_slip_transition(model, state, SpanOutcome(reached, t, plan.force, radius), radius, segment)
+    reached = frozenset((Trigger.ZONE_REACHES, cap) for cap in Cap)
+    return slip_transition(model, state, SpanOutcome(reached, t, plan.force, radius), radius, segment)
+
+
 def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOutcome, radius: float,
-                    segment: Segment) -> list[Logged]:
-    """Events stopped the span (at radius ``radius``, on ``segment``): each cap's slip zone laid out
-    anew, what changed logged (the table of :mod:`.state`), and a level that turned back re-sticks its
-    springs (the window materialised in the anchors)."""
+                    segment: Segment, growing: bool = False) -> list[Logged]:
+    """Events stopped the span (at radius ``radius``, on ``segment``; ``growing``: a span whose edge grew, its last
+    springs attached with no shift): each cap's slip zone laid out anew, what changed logged (the table of
+    :mod:`.state`), and a level that turned back re-sticks its springs (the window materialised in the anchors)."""
     state.force, state.radius, state.t = outcome.force, radius, outcome.t_stop
     state.last_fired = outcome.fired
     if (Trigger.EDGE_PASSES_PIECE, None) in outcome.fired:
@@ -238,7 +272,7 @@ def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOut
             state.sliding[cap] = True
     x = segment.x(outcome.t_stop)
     layouts = lay_out_zones(state.anchors, model.caps, segment, outcome.t_stop, radius, state.sliding,
-                            model.grow.depth_term)
+                            model.grow.depth_term, growing)
     logged: list[Logged] = []
     turned = [cap for cap in Cap if Trigger.LEVEL_TURNS in fired[cap]]
     if turned:

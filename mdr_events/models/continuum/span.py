@@ -220,7 +220,8 @@ class SpanIntegrator:
         # starts beyond it has crossed already and fires at once.
         self.offset = LEVEL_ULPS * EPS * lengths
         self.edge_margin = EDGE_LEAVING_TOLERANCES * PIECE_SHARE * lengths
-        self.zones = lay_out_zones(anchors, model.caps, self.segment, t0, self.a0, sliding, depth_term)
+        self.zones = lay_out_zones(anchors, model.caps, self.segment, t0, self.a0, sliding, depth_term,
+                                   self.span.regime is Regime.GROWING)
         self.positive, self.negative = self.zones[Cap.POSITIVE], self.zones[Cap.NEGATIVE]
         self.sliding = dict(sliding)
         self.edge_start = anchors.pieces[-1].start if anchors.pieces else 0.0

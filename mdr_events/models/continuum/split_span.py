@@ -102,6 +102,9 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
                               default=0.0)
         self.next_break = self._next_break(boundary) if self.direction else None
         self.break_depth = self.shape.hertz.depth(self.next_break) if self.next_break is not None else math.nan
+        # each layout with what its level and extent need, read once: (key, layout, σ, the region's weight, compressed)
+        self.keyed = [(key, layout, float(key[1]), key[0].weight, key[0] is Region.COMPRESSED)
+                      for key, layout in self.layouts.items()]
 
     def _ends(self) -> dict[Region, Ends]:
         """How each region's ends move: ``x_c`` with the depth (the source's end recedes, the destination's grows and
@@ -183,12 +186,33 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         float
             ``x_c`` (m).
         """
-        a = self.radius_of(var)
+        return self._boundary_at(var, self.radius_of(var), self.depth_of(var))
+
+    def _boundary_at(self, var: float, a: float, depth: float) -> float:
+        """:meth:`boundary` where the radius ``a`` and the depth at ``var`` are known."""
         if self.x_c_is_edge:
             return a
         if var == self.start and self.start_boundary is not None:
             return min(self.start_boundary, a)
-        return min(self.shape.boundary(self.depth_of(var)), a) if self.pressed else 0.0
+        return min(self.shape.boundary(depth), a) if self.pressed else 0.0
+
+    def instant(self, var: float) -> tuple[float, float, float, float, float]:
+        """``(t, a, x, d, x_c)`` at the integration variable, each computed once (as the methods above give them).
+
+        Parameters
+        ----------
+        var : float
+            The integration variable: the time (s) of a pinned span, the radius over :attr:`scale` of a moving one.
+
+        Returns
+        -------
+        tuple of float
+            The time (s), the radius, the indenter's position, the depth and ``x_c`` (m).
+        """
+        t = self.time_of(var)
+        a = self.radius_of(var)
+        depth = self.segment.d(t)
+        return t, a, self.segment.x(t), depth, self._boundary_at(var, a, depth)
 
     def extent(self, region: Region, var: float) -> tuple[float, float]:
         """The region's springs ``[lower, upper]`` at the integration variable.
@@ -278,8 +302,15 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         dict
             The sizes (m), keyed ``(Region, Cap)``.
         """
-        extents = {region: self.extent(region, var) for region in Region}
-        return {key: layout.size(self.region_level(key, var), *extents[key[0]]) for key, layout in self.layouts.items()}
+        return self._sizes_at(self.instant(var))
+
+    def _sizes_at(self, instant: tuple[float, float, float, float, float]) -> dict[Key, float]:
+        """:meth:`sizes` at an :meth:`instant`."""
+        _, a, x, depth, boundary = instant
+        tau0_part, kappa = self.K * a, self.kappa  # (Region.level's terms, in its order)
+        return {key: layout.size(x - sign * (tau0_part + weight * kappa * depth), *((0.0, boundary) if compressed
+                                                                                   else (boundary, a)))
+                for key, layout, sign, weight, compressed in self.keyed}
 
     def rhs(self, var: float, y) -> list[float]:
         """``dF_x/da`` (moving radius) or ``dF_x/dt`` (pinned): module docstring.
@@ -297,19 +328,20 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
             ``[dF_x/dvar]``.
         """
         segment = self.segment
-        sizes = self.sizes(var)
+        instant = self.instant(var)
+        sizes = self._sizes_at(instant)
         at_caps = sum(float(cap) * size for (_, cap), size in sizes.items())
         compressed = sum(float(cap) * size for (region, cap), size in sizes.items() if region is Region.COMPRESSED)
-        sticking = self.radius_of(var) - sum(sizes.values())
+        a = instant[1]
+        sticking = a - sum(sizes.values())
         if not self.moving:  # K a is still; the compressed caps follow the depth
             total = sticking * segment.vx + (compressed * self.kappa * segment.vd if self.pressed else 0.0)
             return [self.G2 * total]
-        a = self.radius_of(var)
         slope = self.branch.slope(a)
         drive = sticking * segment.vx * slope / segment.vd if segment.vx else 0.0
         total = at_caps * self.K + compressed * self.kappa * slope + drive
         if self.shrinking:
-            total += self.edge_shift(segment.x(self.time_of(var)), a)
+            total += self.edge_shift(instant[2], a)
         return [self.G2 * total * self.scale]
 
     def edge_shift(self, x: float, a: float) -> float:
@@ -359,7 +391,8 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         """
         depths = abs(self.depth_of(self.start)), abs(self.depth_of(self.stop))
         at_surface = min(depths) <= SURFACE_SHARE * max(depths)
-        limited = self.has_fronts() or (self.direction != 0.0 and at_surface)
+        centre = any(layout.parts[index].low == 0.0 for layout in self.layouts.values() for index, _ in layout.fronts)
+        limited = centre or (self.direction != 0.0 and at_surface)
         return abs(self.stop - self.start) / FRONT_STEPS_PER_SPAN if limited else math.inf
 
     def _still(self) -> bool:

@@ -59,10 +59,14 @@ class ZoneLayout:
     medium : HalfSpaceMedium, default the half-space
         What the springs are made of: the zone's size is its springs' measure (:meth:`~.media.HalfSpaceMedium.measure`,
         the length on the half-space).
+    fresh : bool, default False
+        The edge is growing with a cap ``K a > 0`` there: its springs attach with no shift, short of every cap, so
+        the edge piece's value at the radius is never reached (a constant edge piece, all at the edge's value, never
+        at all); at ``a → 0`` every value would lie within ``tolerance`` and the piece count wholly at the cap.
     """
 
     def __init__(self, anchors: AnchorMap, cap: Cap, level: float, radius: float, sliding: bool, tolerance: float,
-                 medium: HalfSpaceMedium = HALF_SPACE_MEDIUM):
+                 medium: HalfSpaceMedium = HALF_SPACE_MEDIUM, fresh: bool = False):
         self.anchors, self.cap = anchors, cap
         self.measure = measure = medium.measure
         self.sign = float(cap)
@@ -79,8 +83,9 @@ class ZoneLayout:
             start_value, end_value = sign * start_value, sign * end_value
             role = out
             if sliding and end > p.start:
-                start_reached = start_value <= reached
-                end_reached = end_value <= reached
+                at_edge = fresh and index == self.edge
+                start_reached = start_value <= reached and not (at_edge and p.constant)
+                end_reached = end_value <= reached and not at_edge
                 if start_reached and end_reached:
                     role = inside
                 elif start_reached or end_reached:
@@ -220,7 +225,7 @@ def indenter_travel(segment: Segment, t: float, radius: float, depth_term: Calla
 
 
 def lay_out_zones(anchors: AnchorMap, caps: Caps, segment: Segment, t: float, radius: float, sliding: dict[Cap, bool],
-                  depth_term: Callable[[float], float]) -> dict[Cap, ZoneLayout]:
+                  depth_term: Callable[[float], float], growing: bool = False) -> dict[Cap, ZoneLayout]:
     """Both caps' slip zones with the indenter at ``segment.x(t)`` and the radius ``radius`` (levels
     ``x ∓ (K a + κ d)``, each cap seeing the anchors as :meth:`~.anchors.AnchorMap.seen_by` it), a piece value
     within :data:`PIECE_SHARE` of the :func:`length_scale` beyond a level counting as reached.
@@ -241,6 +246,9 @@ def lay_out_zones(anchors: AnchorMap, caps: Caps, segment: Segment, t: float, ra
         Whether springs slide at each cap.
     depth_term : callable
         ``g(a)`` of the branch (:meth:`~.branch.Branch.depth_term`), the size of the depth's terms.
+    growing : bool, default False
+        Whether the edge grows (its springs attach with no shift: with ``K > 0`` never at a cap, ``fresh`` of
+        :class:`ZoneLayout`).
 
     Returns
     -------
@@ -250,5 +258,6 @@ def lay_out_zones(anchors: AnchorMap, caps: Caps, segment: Segment, t: float, ra
     x = segment.x(t)
     shift = caps.centre_shift(radius, segment.d(t))
     tolerance = PIECE_SHARE * length_scale(anchors, shift, x, indenter_travel(segment, t, radius, depth_term))
+    fresh = growing and caps.K > 0.0
     return {cap: ZoneLayout(anchors.seen_by(cap, caps.kappa), cap, x - cap * shift, radius, sliding[cap], tolerance,
-                            caps.medium) for cap in Cap}
+                            caps.medium, fresh) for cap in Cap}
