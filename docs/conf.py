@@ -132,5 +132,6 @@ autosummary_context = {"public_modules": ["mdr_events", "mdr_events.theory.analy
                                           "mdr_events.theory.layer", "mdr_events.theory.layer_symbolic",
                                           "mdr_events.theory.layer_tangential",
                                           "mdr_events.theory.layer_tangential_symbolic",
+                                          "mdr_events.theory.layer_continuum_symbolic",
                                           "mdr_events.models.continuum",
                                           "mdr_events.dem"]}

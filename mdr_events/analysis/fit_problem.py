@@ -59,7 +59,8 @@ class Problem:
                  friction: FrictionLaw = TAU0, layer: Layer = HALF_SPACE):
         self.free, self.measurement, self.path_of = free, measurement, path_of
         self.tolerances, self.limits, self.profile, self.friction = tolerances, limits, profile, friction
-        #: the body (its thickness the free parameter's ``h`` where it is free: :meth:`FreeParameters.layer_at`)
+        #: the body (its thickness the free parameter's ``h`` where it is free:
+        #: :meth:`~mdr_events.analysis.fit_parameters.FreeParameters.layer_at`)
         self.layer = layer
         self.solves = 0
         self.quantities = tuple(measurement.values)

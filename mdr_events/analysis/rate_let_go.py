@@ -6,7 +6,7 @@ shrink, so all the springs slide together the first time ``x = K a``. The paper'
 (the turning point of the ``Δγ1`` branch), and its critical angle (21) is the one at which they slide exactly there. A
 rate-dependent edge has no jump: its radius falls to 0 over a finite time in which ``K a`` vanishes while ``x`` does
 not, so the springs slide in the collapse's last instants at every angle. What separates the angles is whether they
-slide before the contact *lets go* (:func:`~mdr_events.models.continuum.let_go.let_go`: the edge's release rate rising
+slide before the contact *lets go* (:func:`~mdr_events.models.continuum.edge_let_go.let_go`: the edge's release rate rising
 as it shrinks, ``d <= g(a) − 2a g'(a)``, after which it collapses whatever the path does): the critical angle solves
 
 .. math:: \tan\alpha_c\, K\, a_u = d_\mathrm{max} - d_u \qquad (13), (21)
@@ -28,7 +28,7 @@ from scipy import optimize
 
 from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.limits import Limits
-from mdr_events.models.continuum.let_go import LetGo, let_go
+from mdr_events.models.continuum.edge_let_go import LetGo, let_go
 from mdr_events.models.continuum.rate_edge import EDGE_RTOL, solve_edge
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path, exit_depth

@@ -13,7 +13,7 @@ import mdr_events as me
 from mdr_events.analysis.rate_let_go import _let_go, critical_angle_B_at_speed, critical_angles_B_at_speeds, \
     let_go_B_at_speed
 from mdr_events.models.continuum import EdgeEventKind, solve_edge
-from mdr_events.models.continuum.let_go import let_go
+from mdr_events.models.continuum.edge_let_go import let_go
 from mdr_events.models.continuum.rate_shifts import solve_rate_shifts
 from mdr_events.theory.analytic import critical_angle
 

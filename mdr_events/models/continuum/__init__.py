@@ -41,7 +41,7 @@ module                     one idea
 :mod:`.rate_edge`          a rate-dependent adhesion law's edge: the radius as the state of an ODE (the normal problem)
 :mod:`.rate_march`         ``solve_ivp``'s loop for the edge's scalar ODE without its per-step bookkeeping (same steps)
 :mod:`.rate_run`           ``simulate``'s continuum under the rate-dependent law: quantities, event log, extrema
-:mod:`.let_go`             where a receding rate-dependent edge lets go (its release rate rising as it shrinks)
+:mod:`.edge_let_go`        where a receding rate-dependent edge lets go (its release rate rising as it shrinks)
 :mod:`.rate_shifts`        the springs' shifts on top of it (``τ0``'s cap, ``x`` not turning back): ``F_x`` as a closed
                            form of the edge's dense output
 :mod:`.extrema`            the exact extrema of ``F_N``, ``F_x`` and ``A`` over the run, not from output samples
@@ -71,7 +71,7 @@ from .model import MAX_TRAVEL_PER_CAP, ContinuumModel, Resolution, Segment, kine
 from .plan import Action, SpanPlan, plan_span
 from .rate_edge import EdgeEvent, EdgeEventKind, EdgeMode, EdgeRun, solve_edge
 from .rate_shifts import RateShifts, solve_rate_shifts
-from .let_go import LetGo, let_go
+from .edge_let_go import LetGo, let_go
 from .solution import (EVALUATED_QUANTITIES, EXTREMUM_QUANTITIES, PathSolution, algebraic_tangential_force, evaluate,
                        evaluate_span, extremum, tangential_work)
 from .solve import run_continuum, solve_path
