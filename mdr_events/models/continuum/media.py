@@ -8,15 +8,16 @@ springs leaving the edge by ``w(a) = k_t(a)/G*``, the cap is ``ū = π a² τ0/K
 layer's (:class:`~.layer_branch.LayerBranch`); the normal force is the layer's (10). Each kind is looked up once per
 run (:func:`medium_of`):
 
-=================================  =====================================================================================
-kind                               the springs
-=================================  =====================================================================================
-:class:`HalfSpaceMedium`           the paper's: lengths, ``K a``, the branches of the indenter's kind, as before
-:class:`~.layer_media.LayerMedium`  a layer bonded to its base: the tables' ``Φ_t``, ``Θ``, ``γₙ`` (paraboloid, power law)
-``FrictionlessLayerMedium``        a layer on a frictionless base: the normal springs of ``LayerMedium``, no
-                                   tangential ones (``K_t = 0``: such a layer slides on its base; only paths without
-                                   tangential motion run on it, ``F_x = 0``)
-=================================  =====================================================================================
+===================================  ===================================================================================
+kind                                 the springs
+===================================  ===================================================================================
+:class:`HalfSpaceMedium`             the paper's: lengths, ``K a``, the branches of the indenter's kind, as before
+:class:`~.layer_media.LayerMedium`   a layer bonded to its base: the tables' ``Φ_t``, ``Θ``, ``γₙ`` (paraboloid,
+                                     power law)
+``FrictionlessLayerMedium``          a layer on a frictionless base: the normal springs of ``LayerMedium``, no
+                                     tangential ones (``K_t = 0``: such a layer slides on its base; only paths without
+                                     tangential motion run on it, ``F_x = 0``)
+===================================  ===================================================================================
 
 On a layer the continuum takes the friction law ``"tau0"`` alone and the paper's adhesion law (:func:`check_law`);
 the other laws run there in the discrete method.
