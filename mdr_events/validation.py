@@ -249,6 +249,17 @@ def check_callback(name: str, value: Any, called_with: str) -> Any:
     return value
 
 
+def check_mapping(name: str, value: Any, example: str) -> dict:
+    """``value`` as a dict: ``None`` an empty one, a mapping its items; else ``TypeError`` naming ``name``, its value
+    and an ``example`` of what is allowed (``dict()`` of a list or a string raised in Python's words)."""
+    if value is None:
+        return {}
+    if not isinstance(value, Mapping):
+        raise TypeError(f"{name}={shown(value)} ({type(value).__name__}) is not allowed; allowed: a mapping, "
+                        f"e.g. {example}")
+    return dict(value)
+
+
 def reads_attrs(what: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
     """Decorate a reader of a result's attributes (a ``from_attrs``, its last argument ``attrs``), so that what it
     cannot read is named the package's way: ``attrs`` that are not a mapping (or a Dataset) a ``TypeError``; a missing

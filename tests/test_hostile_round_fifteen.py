@@ -9,6 +9,7 @@ from __future__ import annotations
 import dataclasses
 import warnings
 
+import numpy as np
 import pytest
 
 import mdr_events as me
@@ -53,3 +54,22 @@ def test_the_layer_curves_refuse_a_rate_dependent_adhesion_as_pull_off_force_doe
 def test_a_pull_off_curve_without_adhesion_names_the_contacts_work_of_adhesion(h):
     contact = dataclasses.replace(PAPER.replace(h=h), adhesion=me.Adhesion(0.0, 0.0))
     _one_line_naming(lambda: me.layer_pull_off_curve(contact, [h]), "contact.adhesion.dgamma1=0.0")
+
+
+# --- P3: fit's mapping options noise= and bounds= were read by dict(): a list, a string or a number raised Python's
+# words ("cannot convert dictionary update sequence element #0 to a sequence", "'int' object is not iterable"), where
+# names= and units= named the argument; one check (validation.check_mapping) reads all four -------------------------
+
+@pytest.fixture(scope="module")
+def measured():
+    from mdr_events.analysis.fit_data import synthetic_measurement
+    duration = me.Path.scenario_A(20.0, PAPER.parameters(3e-4, 1e-6)).duration
+    return synthetic_measurement(PAPER, "A", 20.0, times=np.linspace(0.0, duration, 101), relative_noise=0.01, seed=1)
+
+
+@pytest.mark.parametrize("option", ["noise", "bounds", "names", "units"])
+@pytest.mark.parametrize("value", [[1, 2], "normal_force=1", 5, [("normal_force", 1.0)]],
+                         ids=["list", "string", "number", "pairs"])
+def test_the_fits_mapping_options_refuse_what_is_not_a_mapping_naming_it(measured, option, value):
+    _one_line_naming(lambda: me.fit(measured, PAPER, "A", 20.0, free=("tau0",), time_origin="path_start",
+                                    **{option: value}), f"{option}={value!r}", errors=TypeError)

@@ -17,7 +17,7 @@ import numpy as np
 
 from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
-from mdr_events.validation import check_real, shown
+from mdr_events.validation import check_mapping, check_real, shown
 
 __all__ = ["FreeParameters", "free_parameters", "FREE_NAMES", "LOG_SCALED", "OFFSETS"]
 
@@ -182,7 +182,7 @@ def free_parameters(free: str | Sequence[str], start: Parameters, bounds: Mappin
     if FRICTION_NAME in names and not friction.uses_mu:
         raise ValueError(f"free: 'mu' is not allowed with the friction law {friction.law!r}; allowed: a law with Coulomb's "
                          "part, e.g. friction=FrictionLaw('coulomb', mu=0.3) (its mu the start)")
-    bounds = dict(bounds or {})
+    bounds = check_mapping("bounds", bounds, "{'tau0': (1e3, 1e6)}")
     for name in bounds:
         if name not in names:
             raise ValueError(f"bounds: {name!r} is not allowed; allowed: the free parameters ({', '.join(names)})")
