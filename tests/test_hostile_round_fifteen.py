@@ -7,7 +7,11 @@ and at the combinations of indenter, friction law, adhesion law, layer, method a
 from __future__ import annotations
 
 import dataclasses
+import os
+import subprocess
+import sys
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -73,3 +77,35 @@ def measured():
 def test_the_fits_mapping_options_refuse_what_is_not_a_mapping_naming_it(measured, option, value):
     _one_line_naming(lambda: me.fit(measured, PAPER, "A", 20.0, free=("tau0",), time_origin="path_start",
                                     **{option: value}), f"{option}={value!r}", errors=TypeError)
+
+
+# --- P4: a new user's script that sweeps on the default engine (a local dask cluster) without
+# `if __name__ == '__main__':` ended after half a minute on 290 lines of tracebacks, one per worker ("An attempt has
+# been made to start a new process before the current process has finished its bootstrapping phase") and the
+# script's own "RuntimeError: Nanny failed to start.": each worker imports the script (Python's "spawn") and started
+# the sweep again. Such a worker now ends quietly, and a local cluster that does not start is one line naming
+# scheduler='local', the guard and 'serial' ---------------------------------------------------------------------------
+
+def test_a_local_cluster_that_does_not_start_is_one_line_naming_the_scheduler(monkeypatch):
+    distributed = pytest.importorskip("distributed")
+    from mdr_events.analysis.executors import MAIN_GUARD, open_executor
+
+    def refused(*args, **kwargs):
+        raise RuntimeError("Nanny failed to start.")
+
+    monkeypatch.setattr(distributed, "LocalCluster", refused)
+    message = _one_line_naming(lambda: open_executor("local", 1).__enter__(), "scheduler='local'")
+    assert MAIN_GUARD in message and "'serial'" in message, message
+
+
+@pytest.mark.slow
+def test_a_script_that_sweeps_without_the_main_guard_ends_on_one_error(tmp_path):
+    pytest.importorskip("distributed")
+    script = tmp_path / "sweep_script.py"
+    script.write_text("import mdr_events as me\nme.sweep({'tau0': [2e4, 4e4]}, me.Contact.paper(), 'A', 20.0, "
+                      "engine=me.Engine(scheduler='local', workers=1))\n")
+    package_root = str(Path(me.__file__).resolve().parents[1])
+    run = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, timeout=600, cwd=tmp_path,
+                         env={**os.environ, "PYTHONPATH": package_root})
+    assert run.returncode == 1 and run.stderr.count("Traceback") == 1, run.stderr
+    assert "ValueError: scheduler='local' did not start its workers" in run.stderr.splitlines()[-1], run.stderr
