@@ -142,3 +142,41 @@ def test_a_result_refused_by_write_netcdf_and_open_result_says_what_is_allowed(r
     _one_line_naming(lambda: me.open_result(tmp_path / "foreign.nc"), named)
     xr.Dataset({"a": ("x", [1.0])}).to_netcdf(tmp_path / "other.nc", engine="scipy")
     _one_line_naming(lambda: me.open_result(tmp_path / "other.nc"), "was not written by mdr_events")
+
+
+# --- P6: fit_rate_adhesion counted its curves' samples against Limits but not its work: each trial law solves the
+# edge once per curve, and least_squares tries as many laws as it needs, so that a thousand curves ran for hours
+# (the rate angles count their solves, EDGE_SOLVE_STEPS each). The first step's solves are checked before the fit
+# runs, and each later one as it comes ---------------------------------------------------------------------------
+
+def _rate_curves(count: int) -> list:
+    from mdr_events.models.continuum import solve_edge
+
+    params, law = me.Parameters.paper(), me.RateDependentAdhesion(0.01, 0.15, 1e-6, 0.6)
+    curves = []
+    for speed in np.logspace(-7, -5, count):
+        path = me.Path(np.array([(0.0, 0.0), (0.0, params.d_max), (0.0, -200e-6)]), speed=float(speed))
+        times = np.linspace(path.first_contact_time(), path.duration, 40)
+        curves.append(me.RateMeasurement(path, times, solve_edge(params, path, law).normal_force(times, path)))
+    return curves
+
+
+def test_a_rate_fit_counts_its_first_steps_solves_of_the_edge_before_it_runs():
+    from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS
+
+    curves, start = _rate_curves(3), me.RateDependentAdhesion(0.01, 0.15, 3e-6, 0.8)
+    # 3 curves and 2 free values: 9 solves in the first step (the start, a Jacobian's column each); room for 8
+    message = _one_line_naming(lambda: me.fit_rate_adhesion(curves, me.Parameters.paper(), start,
+                                                            limits=me.Limits(steps=8 * EDGE_SOLVE_STEPS)),
+                               "9 solves of the edge", errors=me.ResourceLimitError)
+    assert "steps" in message
+
+
+def test_a_rate_fit_stops_at_the_limit_of_its_solves_of_the_edge():
+    from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS
+
+    curves, start = _rate_curves(1), me.RateDependentAdhesion(0.01, 0.15, 3e-6, 0.8)
+    # the first step's 3 solves are allowed, a fit from 3e-6 and 0.8 takes more than 4
+    _one_line_naming(lambda: me.fit_rate_adhesion(curves, me.Parameters.paper(), start,
+                                                  limits=me.Limits(steps=4 * EDGE_SOLVE_STEPS)),
+                     "5 solves of the edge so far", errors=me.ResourceLimitError)
