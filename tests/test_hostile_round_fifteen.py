@@ -180,3 +180,14 @@ def test_a_rate_fit_stops_at_the_limit_of_its_solves_of_the_edge():
     _one_line_naming(lambda: me.fit_rate_adhesion(curves, me.Parameters.paper(), start,
                                                   limits=me.Limits(steps=4 * EDGE_SOLVE_STEPS)),
                      "5 solves of the edge so far", errors=me.ResourceLimitError)
+
+
+# --- P7: a sweep's store was laid out in chunks of the engine's chunk_size whatever the runs: chunk_size = 1e11 for
+# two runs allocated 745 GiB in Zarr (MemoryError, exit 3 from `mdr-events run`); a chunk holds at most the runs ------
+
+def test_a_sweeps_store_takes_a_chunk_size_beyond_its_runs(tmp_path):
+    engine = me.Engine(scheduler="serial", chunk_size=10**11)
+    swept = me.sweep({"tau0": [3e4, 4e4]}, PAPER, "A", 20.0, engine=engine,
+                     output=me.SweepOutput(store=tmp_path / "sweep.zarr"))
+    alone = me.sweep({"tau0": [3e4, 4e4]}, PAPER, "A", 20.0, engine=me.Engine(scheduler="serial"))
+    assert swept["tangential_force_max"].values.tolist() == alone["tangential_force_max"].values.tolist()
