@@ -191,3 +191,20 @@ def test_a_sweeps_store_takes_a_chunk_size_beyond_its_runs(tmp_path):
                      output=me.SweepOutput(store=tmp_path / "sweep.zarr"))
     alone = me.sweep({"tau0": [3e4, 4e4]}, PAPER, "A", 20.0, engine=me.Engine(scheduler="serial"))
     assert swept["tangential_force_max"].values.tolist() == alone["tangential_force_max"].values.tolist()
+
+
+# --- P8: mdr_events.dem.wall_coefficients took its model and the deepest radius unchecked: a model's name ("jkr") or
+# None was an AttributeError, a radius "x" Python's TypeError, True was read as 1 m and 1e300 gave k_t = inf ---------
+
+def test_wall_coefficients_names_a_model_of_another_type():
+    frictionless = PAPER.replace(tau0=0.0)
+    for model in ("jkr", None):
+        _one_line_naming(lambda: me.dem.wall_coefficients(frictionless, model), f"model={model!r}", errors=TypeError)
+
+
+@pytest.mark.parametrize("radius", ["x", True, 1e300, float("inf"), float("nan"), -1e-3, None])
+def test_wall_coefficients_check_the_deepest_radius_of_a_linear_history(radius):
+    coulomb = dataclasses.replace(PAPER, friction=me.FrictionLaw("coulomb", mu=0.5))
+    model = me.dem.LammpsModel("hertz/material", "linear_history")
+    assert np.isfinite(me.dem.wall_coefficients(coulomb, model, deepest_radius=2e-3).kt)
+    _one_line_naming(lambda: me.dem.wall_coefficients(coulomb, model, deepest_radius=radius), "deepest_radius=")
