@@ -208,3 +208,20 @@ def test_wall_coefficients_check_the_deepest_radius_of_a_linear_history(radius):
     model = me.dem.LammpsModel("hertz/material", "linear_history")
     assert np.isfinite(me.dem.wall_coefficients(coulomb, model, deepest_radius=2e-3).kt)
     _one_line_naming(lambda: me.dem.wall_coefficients(coulomb, model, deepest_radius=radius), "deepest_radius=")
+
+
+# --- P9: the axes of labelled results took a repeated label (phase_diagram's alpha=[45, 45], the thicknesses of
+# layer_pull_off_curve and critical_angles_against_thickness, layer_normal_curve's depths, the rate angles' speeds and
+# angles), whose .sel then returned two points, where simulate's angles and a sweep's values are refused so ----------
+
+@pytest.mark.parametrize("call, named", [
+    (lambda: me.phase_diagram(PAPER, alpha=[45.0, 45.0]), "alpha=[45.0, 45.0] repeats 45.0"),
+    (lambda: me.layer_pull_off_curve(PAPER, [5e-3, 5e-3]), "thicknesses=[0.005, 0.005] repeats 0.005"),
+    (lambda: me.critical_angles_against_thickness(PAPER, [5e-3, 5e-3]), "thicknesses=[0.005, 0.005] repeats"),
+    (lambda: me.layer_normal_curve(PAPER.replace(h=5e-3), [1e-4, 1e-4]), "depths=[0.0001, 0.0001] repeats"),
+    (lambda: me.critical_angles_at_speeds(me.Parameters.paper(), RATE_LAW, [1e-6, 1e-6]), "speeds=[1e-06, 1e-06]"),
+    (lambda: me.phase_diagram_at_speeds(me.Parameters.paper(), RATE_LAW, [1e-6], [20.0, 20.0]), "alpha=[20.0, 20.0]"),
+], ids=["phase-diagram", "pull-off-curve", "angles-against-thickness", "normal-curve", "rate-angles",
+        "rate-phase-diagram"])
+def test_an_axis_of_labels_refuses_a_repeated_value(call, named):
+    _one_line_naming(call, named)

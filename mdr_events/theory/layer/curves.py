@@ -26,7 +26,7 @@ from mdr_events.theory.job import rate_independent
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
 from mdr_events.theory.layer.force_control import pull_off
 from mdr_events.theory.layer.relations import _abel_factor, _power_law, branch_depth, normal_force
-from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_count, check_real, real_array, shown
+from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_count, check_distinct, check_real, real_array, shown
 
 __all__ = ["layer_normal_curve", "layer_indentation_cycle", "layer_pull_off_curve", "LAYER_CURVE_CONTENT",
            "LAYER_CYCLE_CONTENT", "LAYER_PULL_OFF_CONTENT", "CURVE_POINT_STEPS", "PULL_OFF_STEPS",
@@ -140,6 +140,7 @@ def _grid(name: str, values, allowed: str, valid) -> np.ndarray:
     array = np.atleast_1d(real_array(name, values, allowed)).astype(float)
     if array.ndim != 1 or array.size == 0 or not np.all(valid(array)):
         raise ValueError(f"{name}={shown(values)} is not allowed; allowed: {allowed}, one non-empty axis")
+    check_distinct(name, array, values)
     return array
 
 
@@ -430,8 +431,9 @@ def layer_pull_off_curve(contact: Contact, thicknesses, limits: Limits | None = 
     TypeError
         ``contact`` not a Contact, or of a ``RateDependentAdhesion`` (the pull-off is rate-independent).
     ValueError
-        Another indenter, no adhesion (``Δγ1`` = 0), a thickness not > 0, no thickness, the contact's scales beyond the double range, a pull-off
-        beyond the tables (``a/h > 64``), or the thicknesses beyond ``limits`` (``ResourceLimitError``).
+        Another indenter, no adhesion (``Δγ1`` = 0), a thickness not > 0, no thickness or a repeated one, the
+        contact's scales beyond the double range, a pull-off beyond the tables (``a/h > 64``), or the thicknesses
+        beyond ``limits`` (``ResourceLimitError``).
     """
     E_star, nu, _ = _material(contact)
     h = thickness_axis(thicknesses)
