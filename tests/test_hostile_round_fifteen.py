@@ -20,6 +20,10 @@ import mdr_events as me
 
 PAPER = me.Contact.paper()
 RATE_LAW = me.RateDependentAdhesion(0.01, 0.15, 1e-6, 0.3)
+#: A fit of the exact continuum's own curves recovers the parameter to the optimizer's and the continuum's
+#: tolerances (fit_problem.FIT_TOLERANCE 1e-12 on the scaled parameters, the continuum's rtol 1e-10): 1e-6 leaves a
+#: margin of 1e4 over the curves' own error.
+FIT_RECOVERY_RTOL = 1e-6
 
 
 def _one_line_naming(call, named: str, errors=(ValueError, TypeError)) -> str:
@@ -225,3 +229,31 @@ def test_wall_coefficients_check_the_deepest_radius_of_a_linear_history(radius):
         "rate-phase-diagram"])
 def test_an_axis_of_labels_refuses_a_repeated_value(call, named):
     _one_line_naming(call, named)
+
+
+# --- P10: fit could not read the package's own simulation of several angles: `mdr-events fit two.nc --scenario A
+# --alpha 30` was refused "holds several runs along 'alpha' (2); allowed: ... on the command line --alpha" with --alpha
+# given, where validate selects the scenario's angle (issue 32's class 7); fit does so too, and takes select= --------
+
+@pytest.fixture(scope="module")
+def two_angles():
+    return me.simulate(PAPER, me.Scenario("A", alpha=[20.0, 30.0]), "continuum")
+
+
+def test_fit_selects_the_scenarios_angle_in_a_result_of_several(two_angles):
+    fitted = me.fit(two_angles, PAPER.replace(tau0=5e4), "A", 30.0, free=("tau0",))
+    # the exact continuum's own curves: the start's τ0 comes back to the solver's relative tolerance
+    assert fitted.estimates["tau0"].value == pytest.approx(PAPER.friction.tau0, rel=FIT_RECOVERY_RTOL)
+    selected = me.fit(two_angles, PAPER.replace(tau0=5e4), "A", 30.0, free=("tau0",), select={"alpha": 30.0})
+    assert selected.estimates["tau0"].value == fitted.estimates["tau0"].value
+    _one_line_naming(lambda: me.fit(two_angles, PAPER, "A", 25.0, free=("tau0",)), "not at alpha=25.0")
+
+
+def test_the_command_line_fits_one_angle_of_a_simulation_of_several(two_angles, tmp_path, capsys):
+    from mdr_events.app.cli import main
+
+    me.write_netcdf(two_angles, tmp_path / "two.nc")
+    status = main(["fit", str(tmp_path / "two.nc"), "--scenario", "A", "--alpha", "30", "--free", "tau0",
+                   "--out", str(tmp_path / "out")])
+    assert status == 0, capsys.readouterr().err
+    assert (tmp_path / "out" / "two_fit.nc").exists()
