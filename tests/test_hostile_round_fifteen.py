@@ -257,3 +257,39 @@ def test_the_command_line_fits_one_angle_of_a_simulation_of_several(two_angles, 
                    "--out", str(tmp_path / "out")])
     assert status == 0, capsys.readouterr().err
     assert (tmp_path / "out" / "two_fit.nc").exists()
+
+
+# --- P11: two writers of one output directory (two `mdr-events simulate --out same` at once) renamed their files in
+# turn with nothing between them: the .nc of one run could land beside the .png of the other. The renames of a run's
+# files hold a lock on their directory (io.files.atomic_write_all) ------------------------------------------------------
+
+#: How long the first writer pauses between its two renames, for the second to run: far above a rename's time.
+RENAME_PAUSE = 0.5
+
+
+def test_two_writers_of_one_directory_leave_the_files_of_one_run(tmp_path, monkeypatch):
+    import threading
+    import time
+
+    from mdr_events.io.files import PendingFile, atomic_write_all
+
+    pytest.importorskip("fcntl")  # (the lock is POSIX's flock)
+
+    def files(run: str) -> list:
+        return [PendingFile(tmp_path / name, lambda path, run=run: Path(path).write_text(run))
+                for name in ("result.nc", "result.png")]
+
+    real_replace, first_placed = os.replace, threading.Event()
+
+    def replace(source, target):
+        real_replace(source, target)
+        if threading.current_thread().name == "first" and not first_placed.is_set():
+            first_placed.set()
+            time.sleep(RENAME_PAUSE)
+
+    monkeypatch.setattr(os, "replace", replace)
+    first = threading.Thread(target=lambda: atomic_write_all(files("first")), name="first")
+    second = threading.Thread(target=lambda: (first_placed.wait(), atomic_write_all(files("second"))), name="second")
+    first.start(), second.start()
+    first.join(), second.join()
+    assert (tmp_path / "result.nc").read_text() == (tmp_path / "result.png").read_text()

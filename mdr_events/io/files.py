@@ -192,10 +192,34 @@ def _prepared_target(path: str | os.PathLike) -> Path:
     return target
 
 
+@contextmanager
+def _directories_locked(directories: Sequence[Path]):
+    """Hold an exclusive ``flock`` on each of ``directories`` (in a sorted order, so that two writers never wait on
+    each other crosswise) while the body runs: two processes writing the files of their runs into one directory
+    placed them one after the other, each set whole (their renames interleaved: the ``.nc`` of one run beside the
+    ``.png`` of the other). Where a directory cannot be opened or locked (no ``fcntl``), nothing is held."""
+    handles = []
+    try:
+        for directory in sorted(dict.fromkeys(os.path.abspath(d) for d in directories)):
+            if fcntl is None:
+                break
+            try:
+                handle = os.open(directory, os.O_RDONLY)
+            except OSError:
+                continue
+            handles.append(handle)
+            fcntl.flock(handle, fcntl.LOCK_EX)
+        yield
+    finally:
+        for handle in handles:
+            os.close(handle)  # (closing releases the lock)
+
+
 def atomic_write_all(files: Sequence[PendingFile]) -> list[Path]:
     """Write several files as one: each to its temporary (as :func:`atomic_write`), then all renamed into place with
-    Ctrl-C and SIGTERM held, so that the files of one run are replaced together or not at all (an interrupt or an
-    error while writing leaves every old file as it was; one during the renames waits until they are done).
+    Ctrl-C and SIGTERM held and their directories locked against another writer's renames, so that the files of one
+    run are replaced together or not at all (an interrupt or an error while writing leaves every old file as it was;
+    one during the renames waits until they are done).
 
     Returns the paths, in order; raises as :func:`atomic_write`.
     """
@@ -223,7 +247,7 @@ def atomic_write_all(files: Sequence[PendingFile]) -> list[Path]:
             mask = os.umask(0)  # mkstemp makes the file owner-only; give it the usual permissions
             os.umask(mask)
             os.chmod(temporary, 0o666 & ~mask)
-        with _signals_held():
+        with _directories_locked([target.parent for target in targets]), _signals_held():
             for temporary, target in zip(temporaries, targets):
                 os.replace(temporary, target)
                 placed += 1
