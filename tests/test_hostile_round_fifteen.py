@@ -293,3 +293,17 @@ def test_two_writers_of_one_directory_leave_the_files_of_one_run(tmp_path, monke
     first.start(), second.start()
     first.join(), second.join()
     assert (tmp_path / "result.nc").read_text() == (tmp_path / "result.png").read_text()
+
+
+# --- P12: simulate built every case of its motion (each path with its theory: 0.4 ms and 1.4 kB an angle) before the
+# run counted them against Limits: a scenario of a million angles took minutes and a GiB to be refused, ten million
+# would pass the memory limit before the check. The method counts what the cases' number alone implies first ----------
+
+@pytest.mark.parametrize("method", ["continuum", "discrete"])
+def test_simulate_counts_its_cases_before_building_them(method, monkeypatch):
+    def built(*args, **kwargs):
+        raise AssertionError("the cases were built before the count was checked")
+
+    monkeypatch.setattr(me.Scenario, "cases", built)
+    many = me.Scenario("A", alpha=np.linspace(1.0, 89.0, 10**5))
+    _one_line_naming(lambda: me.simulate(PAPER, many, method), "100000 case(s)", errors=me.ResourceLimitError)

@@ -29,6 +29,8 @@ from mdr_events.models import indenters
 from mdr_events.models.continuum import Tolerances, run_continuum
 from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.extrema import solution_extrema
+from mdr_events.models.continuum.solve import BYTES_PER_SAMPLE as CONTINUUM_BYTES_PER_SAMPLE
+from mdr_events.models.discrete import BYTES_PER_SAMPLE as DISCRETE_BYTES_PER_SAMPLE
 from mdr_events.models.discrete import check_spacing, check_thresholds_known, run_discrete
 from mdr_events.models.job import ModelJob
 from mdr_events.models.motion import Cases
@@ -98,6 +100,15 @@ class Discrete:
             An adhesion law without the springs' thresholds.
         """
         check_thresholds_known(model.adhesion)
+
+    def check_case_count(self, count: int, limits: Limits) -> None:
+        """The least a run of ``count`` cases takes, checked before they are built (a million angles were built, for
+        minutes and a GiB, before the run's own check): without ``dt``, the shared time grid's ``n_steps + 1``
+        samples per case, as :func:`~mdr_events.models.discrete.check_discrete_size` counts them."""
+        if self.dt is None:
+            n_time = (DEFAULT_STEPS if self.n_steps is None else self.n_steps) + 1
+            limits.check(f"the discrete run ({count} case(s) of {n_time} time steps)", steps=count * n_time,
+                         memory=count * n_time * DISCRETE_BYTES_PER_SAMPLE)
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Run the cases with the springs; the dataset of :mod:`~mdr_events.models.simulation_schema` with the
@@ -247,6 +258,13 @@ class Continuum:
             An adhesion law without an edge rule.
         """
         check_edge_known(model.adhesion)
+
+    def check_case_count(self, count: int, limits: Limits) -> None:
+        """The output a run of ``count`` cases takes, checked before they are built, as
+        :func:`~mdr_events.models.continuum.run_continuum` counts it (``samples`` or the times ``t`` per case)."""
+        n_time = self.samples if self.t is None else len(self.t)
+        limits.check(f"the continuum run ({count} case(s) of {n_time} output times)", samples=n_time * count,
+                     memory=n_time * count * CONTINUUM_BYTES_PER_SAMPLE)
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Solve the cases exactly; the dataset of :mod:`~mdr_events.models.simulation_schema` with the event log,
