@@ -104,7 +104,20 @@ class Discrete:
     def check_case_count(self, count: int, limits: Limits) -> None:
         """The least a run of ``count`` cases takes, checked before they are built (a million angles were built, for
         minutes and a GiB, before the run's own check): without ``dt``, the shared time grid's ``n_steps + 1``
-        samples per case, as :func:`~mdr_events.models.discrete.check_discrete_size` counts them."""
+        samples per case, as :func:`~mdr_events.models.discrete.check_discrete_size` counts them.
+
+        Parameters
+        ----------
+        count : int
+            The cases of the motion (``case_count`` of a Scenario or Paths).
+        limits : Limits
+            What the run may use.
+
+        Raises
+        ------
+        ResourceLimitError
+            The steps or the memory of ``count`` cases beyond ``limits``.
+        """
         if self.dt is None:
             n_time = (DEFAULT_STEPS if self.n_steps is None else self.n_steps) + 1
             limits.check(f"the discrete run ({count} case(s) of {n_time} time steps)", steps=count * n_time,
@@ -261,7 +274,20 @@ class Continuum:
 
     def check_case_count(self, count: int, limits: Limits) -> None:
         """The output a run of ``count`` cases takes, checked before they are built, as
-        :func:`~mdr_events.models.continuum.run_continuum` counts it (``samples`` or the times ``t`` per case)."""
+        :func:`~mdr_events.models.continuum.run_continuum` counts it (``samples`` or the times ``t`` per case).
+
+        Parameters
+        ----------
+        count : int
+            The cases of the motion (``case_count`` of a Scenario or Paths).
+        limits : Limits
+            What the run may use.
+
+        Raises
+        ------
+        ResourceLimitError
+            The output times or the memory of ``count`` cases beyond ``limits``.
+        """
         n_time = self.samples if self.t is None else len(self.t)
         limits.check(f"the continuum run ({count} case(s) of {n_time} output times)", samples=n_time * count,
                      memory=n_time * count * CONTINUUM_BYTES_PER_SAMPLE)
