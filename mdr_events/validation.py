@@ -249,6 +249,28 @@ def check_callback(name: str, value: Any, called_with: str) -> Any:
     return value
 
 
+def check_distinct(name: str, values, given: Any = None) -> None:
+    """Refuse an axis of labels that repeats a value (``ValueError`` naming ``name``, its values as ``given``, else
+    ``values``, and the first repeated): each labels one point of a result, whose ``sel`` of a repeated label returned
+    two, as ``simulate``'s angles and a sweep's values are refused."""
+    labels, counts = np.unique(np.asarray(values, dtype=float), return_counts=True)
+    if np.any(counts > 1):
+        repeated = float(labels[counts > 1][0])
+        raise ValueError(f"{name}={shown(values if given is None else given)} repeats {repeated!r}; allowed: distinct "
+                         "values (each labels one point of the result)")
+
+
+def check_mapping(name: str, value: Any, example: str) -> dict:
+    """``value`` as a dict: ``None`` an empty one, a mapping its items; else ``TypeError`` naming ``name``, its value
+    and an ``example`` of what is allowed (``dict()`` of a list or a string raised in Python's words)."""
+    if value is None:
+        return {}
+    if not isinstance(value, Mapping):
+        raise TypeError(f"{name}={shown(value)} ({type(value).__name__}) is not allowed; allowed: a mapping, "
+                        f"e.g. {example}")
+    return dict(value)
+
+
 def reads_attrs(what: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
     """Decorate a reader of a result's attributes (a ``from_attrs``, its last argument ``attrs``), so that what it
     cannot read is named the package's way: ``attrs`` that are not a mapping (or a Dataset) a ``TypeError``; a missing

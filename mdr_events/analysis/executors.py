@@ -26,6 +26,7 @@ import importlib.util
 import logging
 import os
 import signal
+import sys
 import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -121,6 +122,38 @@ def _restore_dask_scheduler(before) -> None:
         dask.config.set(scheduler=before)
 
 
+#: What a script that starts a local cluster needs: each worker process imports the script (Python's "spawn").
+MAIN_GUARD = "if __name__ == '__main__':"
+
+
+def _importing_the_script() -> bool:
+    """Whether this process is a worker that "spawn" started and that is still importing the user's script (run
+    again as ``__mp_main__`` while the process bootstraps, multiprocessing's ``_inheriting``, in which it refuses
+    to start processes): a sweep there is the script's own, run again by its workers."""
+    import multiprocessing
+
+    return "__mp_main__" in sys.modules and bool(getattr(multiprocessing.current_process(), "_inheriting", False))
+
+
+def _local_cluster(distributed, workers: int | None):
+    """A new ``LocalCluster`` of ``workers`` processes on loopback. A script without :data:`MAIN_GUARD` started one
+    again in each worker, which multiprocessing refused with a traceback per worker, and the script ended on
+    "RuntimeError: Nanny failed to start."; such a worker now ends quietly and the script's process says why, in
+    one line (``ValueError``), as for any cluster that does not start."""
+    if _importing_the_script():
+        raise SystemExit(1)
+    try:
+        with _workers_deaf_to_ctrl_c():
+            return distributed.LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
+                                            processes=True, host="127.0.0.1", dashboard_address=LOOPBACK_DASHBOARD,
+                                            silence_logs=logging.CRITICAL)  # (a run's error is its own result)
+    except Exception as error:  # (the workers' failure, in distributed's words)
+        reason = " ".join(f"{type(error).__name__}: {error}".split())
+        raise ValueError(f"scheduler='local' did not start its workers ({reason}); allowed: a script that starts a "
+                         f"local cluster with its code under `{MAIN_GUARD}` (each worker imports the script), or "
+                         "scheduler='serial'") from None
+
+
 @contextmanager
 def _workers_deaf_to_ctrl_c() -> Iterator[None]:
     """While a local cluster starts, Ctrl-C (SIGINT) is ignored, so that the worker processes it starts inherit the
@@ -161,11 +194,7 @@ def open_executor(scheduler=None, workers: int | None = None) -> Iterator[concur
         yield scheduler.get_executor(pure=False)
     elif scheduler == "local":
         distributed = _distributed(scheduler)
-        with _workers_deaf_to_ctrl_c():
-            cluster = distributed.LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
-                                               processes=True, host="127.0.0.1", dashboard_address=LOOPBACK_DASHBOARD,
-                                               silence_logs=logging.CRITICAL)  # (a run's error is its own result)
-        with cluster, distributed.Client(cluster) as client:
+        with _local_cluster(distributed, workers) as cluster, distributed.Client(cluster) as client:
             yield client.get_executor(pure=False)
     else:
         distributed = _distributed(scheduler)

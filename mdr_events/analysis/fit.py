@@ -247,6 +247,7 @@ class FitJob(NamedTuple):
     units: Mapping[str, str] | None
     time_origin: Any
     tolerances: Tolerances
+    select: Mapping[str, object] | None = None
 
 
 def _fit_job(contact, motion, alpha, reference, options: Mapping[str, Any]) -> FitJob:
@@ -260,16 +261,19 @@ def _fit_job(contact, motion, alpha, reference, options: Mapping[str, Any]) -> F
         if not isinstance(contact, (Parameters, Contact)):
             raise TypeError(f"start={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a "
                             "mdr_events.Parameters (the fit's start, with the fixed parameters' values)")
-    values = {name: options.pop(name, None) for name in ("bounds", "noise", "names", "units")}
+    values = {name: options.pop(name, None) for name in ("bounds", "noise", "names", "units", "select")}
     time_origin = options.pop("time_origin", "first_contact")
     _, tolerances = reference_of(reference, options.pop("tolerances", None), None)
     model = one_path_job(contact, motion, alpha, options, caller="fit")
     if options:
         raise TypeError(f"fit() got an unexpected keyword argument {next(iter(options))!r}; allowed: bounds, noise, "
-                        "names, units, time_origin (and start, profile, friction, tolerances as before)")
-    one_path(model)  # (one path: checked once, before any trial)
+                        "names, units, time_origin, select (and start, profile, friction, tolerances as before)")
+    _, angle = one_path(model)  # (one path: checked once, before any trial)
+    # the scenario's angle selects its run in a result of several, as validate's does (a simulation of 20° and 30°
+    # was refused "holds several runs along 'alpha'; allowed: ... --alpha" with --alpha given)
+    select = values["select"] if values["select"] is not None or angle is None else {"alpha": angle}
     return FitJob(model, lambda params: one_path(model._replace(params=params))[0], values["bounds"],
-                  values["noise"], values["names"], values["units"], time_origin, tolerances)
+                  values["noise"], values["names"], values["units"], time_origin, tolerances, select)
 
 
 def fit(measured, contact: Contact | Parameters | None = None, motion=None, alpha: float | None = None, *,
@@ -316,6 +320,9 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
         ``names``, ``units``, ``time_origin``
             As in :func:`mdr_events.validate`: your column names and units; what the measured time counts from
             (``"first_contact"`` of the path as given, ``"path_start"``, or the measured time at first contact).
+        ``select`` : mapping, optional
+            As in :func:`mdr_events.validate`: the run of a result of several (default: a scenario's angle selects
+            its run along ``alpha``).
 
     Returns
     -------
@@ -332,7 +339,7 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
     job = _fit_job(contact, motion, alpha, reference, options)
     _check_fit(job, free, progress)
     limits = check_limits(limits)
-    read = read_candidate(measured, job.names, job.units, limits, progress=progress)
+    read = read_candidate(measured, job.names, job.units, limits, select=job.select, progress=progress)
     nominal = job.path_of(job.model.params)
     problem = _problem(job, read, nominal, free, limits)
     solution = solve(problem)

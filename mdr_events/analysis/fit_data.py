@@ -35,7 +35,7 @@ from mdr_events.models.methods import Continuum
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 from mdr_events.theory.scales import check_representable
-from mdr_events.validation import SCALE_MAX, check_count, check_real, real_array, shown
+from mdr_events.validation import SCALE_MAX, check_count, check_mapping, check_real, real_array, shown
 
 __all__ = ["estimate_noise", "Measurement", "measurement_of", "ModelCurves", "model_curves", "curves_of",
            "shifted_path", "synthetic_measurement", "SYNTHETIC_CONTENT", "FITTED_QUANTITIES"]
@@ -110,7 +110,7 @@ def measurement_of(read: Candidate, path: Path, time_origin: Any,
         if not np.any(np.isfinite(series)):
             raise ValueError(f"{read.source}: {name} has no finite sample; allowed: measured values (nan marks a "
                              "missing sample)")
-    noise = dict(noise or {})
+    noise = check_mapping("noise", noise, "{'normal_force': 2e-3}")
     sigma, given = {}, {}
     for name in noise:
         if name not in values:

@@ -18,7 +18,7 @@ import numpy as np
 from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.parameters import PARAMETER_LONG_NAMES, PARAMETER_UNITS, Parameters
-from mdr_events.validation import check_real, shown
+from mdr_events.validation import check_mapping, check_real, shown
 
 __all__ = ["FreeParameters", "free_parameters", "FREE_NAMES", "LOG_SCALED", "OFFSETS"]
 
@@ -205,7 +205,7 @@ def free_parameters(free: str | Sequence[str], start: Parameters, bounds: Mappin
     if LAYER_NAME in names and layer.is_half_space:
         raise ValueError("free: 'h' is not allowed on the half-space; allowed: a contact on a layer of finite "
                          "thickness, e.g. Contact.replace(h=5e-3) (its thickness the start)")
-    bounds = dict(bounds or {})
+    bounds = check_mapping("bounds", bounds, "{'tau0': (1e3, 1e6)}")
     for name in bounds:
         if name not in names:
             raise ValueError(f"bounds: {name!r} is not allowed; allowed: the free parameters ({', '.join(names)})")

@@ -42,7 +42,7 @@ from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law
 from mdr_events.models.indenters import check_simulated_profile
 from mdr_events.theory.scales import check_representable
-from mdr_events.validation import check_real, shown
+from mdr_events.validation import check_distinct, check_real, shown
 
 __all__ = ["critical_angle_at_speed", "critical_angles_at_speeds", "slip_onset_depth_at_speed",
            "phase_diagram_at_speeds", "ANGLE_XTOL", "ONSET_SAMPLES", "EDGE_SOLVE_STEPS", "CRITICAL_ANGLE_SOLVES"]
@@ -92,7 +92,10 @@ def _grid(name: str, values, allowed: str, valid) -> list[float]:
     if array.ndim > 1 or array.size == 0 or isinstance(values, unordered):
         raise (TypeError if isinstance(values, unordered) else ValueError)(
             f"{name}={shown(values)} is not allowed; allowed: a non-empty 1-D sequence of {allowed}")
-    return [check_real(f"{name}[{index}]", value, allowed, valid) for index, value in enumerate(np.atleast_1d(array))]
+    checked = [check_real(f"{name}[{index}]", value, allowed, valid)
+               for index, value in enumerate(np.atleast_1d(array))]
+    check_distinct(name, checked, values)
+    return checked
 
 
 def _check_solves(limits, what: str, solves: int) -> None:

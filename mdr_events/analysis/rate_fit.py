@@ -19,6 +19,7 @@ import numpy as np
 import xarray as xr
 from scipy import optimize, stats
 
+from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models.continuum.rate_edge import solve_edge
@@ -73,9 +74,11 @@ class RateMeasurement(NamedTuple):
     noise: float | None = None
 
 
-def _check(measurements, params, start, free, offsets, limits) -> None:
+def _check(measurements, params, start, free, offsets, limits) -> Limits:
     """Refuse what the fit cannot take, before anything is solved: each argument's type and range, each curve's
-    samples (real, finite, 1-D, within the path's clock and the double range), their count against ``limits``."""
+    samples (real, finite, 1-D, within the path's clock and the double range), their count and the solves of the
+    edge the first step takes (the start and a Jacobian's column per free value of the law, each curve once:
+    :data:`~mdr_events.analysis.rate_angles.EDGE_SOLVE_STEPS` steps a solve) against ``limits``, which it returns."""
     check_parameters(params)
     check_rate_law(start, "start")
     check_flag("offsets", offsets)
@@ -97,8 +100,10 @@ def _check(measurements, params, start, free, offsets, limits) -> None:
     for index, m in enumerate(measurements):
         _check_curve(f"measurements[{index}]", m)
     total = sum(np.size(m.times) for m in measurements)
-    limits.check(f"the fit's {len(measurements)} curve(s) of {total} samples", samples=total,
-                 memory=BYTES_PER_SAMPLE * total)
+    first_step = len(measurements) * (1 + len(free))
+    limits.check(f"the fit's {len(measurements)} curve(s) of {total} samples ({first_step} solves of the edge in its "
+                 "first step)", samples=total, memory=BYTES_PER_SAMPLE * total, steps=first_step * EDGE_SOLVE_STEPS)
+    return limits
 
 
 def _check_curve(name: str, m: RateMeasurement) -> None:
@@ -148,7 +153,9 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
     profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
         The indenter (``None``: the paraboloid of ``params.R``).
     limits : Limits, optional
-        The resource limits the curves' samples (summed) are checked against before the fit runs.
+        The resource limits the curves' samples (summed) and the first step's solves of the edge are checked against
+        before the fit runs; each later solve is counted as it comes
+        (:data:`~mdr_events.analysis.rate_angles.EDGE_SOLVE_STEPS` steps each).
 
     Returns
     -------
@@ -163,9 +170,10 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
         Measurements, parameters, a start, free names or offsets of another kind.
     ValueError
         A free name not allowed, a curve that is not finite 1-D, outside its path's clock or beyond the double
-        range, a noise that is not positive, a start's ``n`` below the fit's bound, samples beyond ``limits``.
+        range, a noise that is not positive, a start's ``n`` below the fit's bound, samples or solves beyond
+        ``limits`` (``ResourceLimitError``).
     """
-    _check(measurements, params, start, free, offsets, limits)
+    limits = _check(measurements, params, start, free, offsets, limits)
     base = {"v_ref": start.v_ref, "n": start.n, "dgamma0": start.dgamma0, "dgamma1": start.dgamma1}
     count = len(measurements)
     names = list(free) + ([f"offset_{index}" for index in range(count)] if offsets else [])
@@ -187,7 +195,9 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
         if key not in curves:
             if len(curves) >= KEPT_LAWS:
                 del curves[next(iter(curves))]
-            solves[0] += len(measurements)
+            solves[0] += len(measurements)  # (each trial's solves counted as they come: 1000 curves ran for hours)
+            limits.check(f"the fit's {count} curve(s) ({solves[0]} solves of the edge so far)",
+                         steps=solves[0] * EDGE_SOLVE_STEPS)
             law = _law(values)
             trial = params.replace(dgamma0=values["dgamma0"], dgamma1=values["dgamma1"])
             curves[key] = [solve_edge(trial, m.path, law, profile=profile, rtol=RATE_FIT_RTOL, method=RATE_FIT_METHOD)

@@ -286,9 +286,10 @@ def sweep(grid, contact=None, motion=None, alpha: float | None = None, method: s
     limits.check(f"the sweep of {runs} runs" + ("" if samples is None else f" with history_samples={samples}"),
                  memory=BYTES_PER_STORED_VALUE * stored, **({} if samples is None else {"samples": runs * samples}))
     runs_done = _Runs.empty(spec, runs)
+    chunk = min(job.engine.chunk_size, runs)  # (a store's chunk of chunk_size=1e11 allocated 745 GiB for 2 runs)
     store = None if job.output.store is None else Store(job.output.store, _signature(job), spec.quantities, runs,
-                                                        job.engine.chunk_size, job.output.resume, samples)
-    pending = [(start, min(start + job.engine.chunk_size, runs)) for start in range(0, runs, job.engine.chunk_size)]
+                                                        chunk, job.output.resume, samples)
+    pending = [(start, min(start + chunk, runs)) for start in range(0, runs, chunk)]
     try:
         if store is not None and store.done() is not None:
             pending = runs_done.restore(store, pending)

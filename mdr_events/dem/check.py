@@ -11,7 +11,7 @@ import xarray as xr
 
 from mdr_events.analysis.validate import DEFAULT_TOLERANCE, one_path, one_path_job, validate
 from mdr_events.contact import Contact
-from mdr_events.dem.mapping import LammpsModel
+from mdr_events.dem.mapping import LammpsModel, check_model
 from mdr_events.dem.runner import run_lammps
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.motion import Paths
@@ -54,9 +54,7 @@ def lammps_check(contact: Contact, motion, alpha: float | None = None, *, model:
     """
     if not isinstance(contact, Contact):
         raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a Contact")
-    if not isinstance(model, LammpsModel):
-        raise TypeError(f"model={shown(model)} ({type(model).__name__}) is not allowed; allowed: a LammpsModel, e.g. "
-                        "LammpsModel('jkr', 'mindlin')")
+    check_model(model)
     if isinstance(motion, Path):
         motion, alpha = Paths({"path": motion}), None
     path, _ = one_path(one_path_job(contact, motion, alpha, {}, caller="the LAMMPS check"))

@@ -55,7 +55,7 @@ from typing import Any
 from mdr_events.contact import Contact
 from mdr_events.contact.indenters import Paraboloid
 from mdr_events.contact.model import check_half_space
-from mdr_events.validation import check_choice, shown
+from mdr_events.validation import SCALE_MAX, check_choice, check_real, shown
 
 __all__ = ["NORMAL_MODELS", "TANGENTIAL_MODELS", "LammpsModel", "WallCoefficients", "wall_coefficients",
            "wall_model_arguments"]
@@ -127,10 +127,21 @@ class WallCoefficients:
                 "lammps_kt": math.nan if self.kt is None else self.kt, "lammps_mu": self.mu}
 
 
+def check_model(model: Any) -> LammpsModel:
+    """``model`` if it is a :class:`LammpsModel`; else the one-line ``TypeError`` naming it (a name such as ``"jkr"``
+    was an ``AttributeError`` in :func:`wall_coefficients`)."""
+    if not isinstance(model, LammpsModel):
+        raise TypeError(f"model={shown(model)} ({type(model).__name__}) is not allowed; allowed: a LammpsModel, e.g. "
+                        "LammpsModel('jkr', 'mindlin')")
+    return model
+
+
 def _check_contact(contact: Contact, model: LammpsModel) -> None:
-    """Refuse a contact LAMMPS's sphere cannot stand for: another indenter, or friction without ``μ``."""
+    """Refuse a contact LAMMPS's sphere cannot stand for: another indenter, or friction without ``μ``; and a model of
+    another type."""
     if not isinstance(contact, Contact):
         raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a Contact")
+    check_model(model)
     check_half_space(contact, "the LAMMPS check (LAMMPS has no layers)")
     if not isinstance(contact.indenter, Paraboloid):
         raise ValueError(f"contact.indenter={contact.indenter!r} is not allowed; allowed: a Paraboloid (LAMMPS "
@@ -156,10 +167,10 @@ def wall_coefficients(contact: Contact, model: LammpsModel, deepest_radius: floa
     elastomer = contact.elastomer
     gamma = contact.adhesion.dgamma1 / 2.0 if model.adhesive else 0.0
     kt = None
-    if model.tangential == "linear_history":
-        if deepest_radius is None or not deepest_radius > 0.0:
-            raise ValueError(f"deepest_radius={deepest_radius!r} is not allowed with linear_history; allowed: the "
-                             "contact radius at the path's deepest point (m, > 0)")
+    if model.tangential == "linear_history":  # (a string was Python's TypeError, True read as 1 m, 1e300 k_t = inf)
+        deepest_radius = check_real("deepest_radius", deepest_radius, "with linear_history, the contact radius at "
+                                    f"the path's deepest point (m, > 0 and at most {SCALE_MAX:.2g})",
+                                    lambda value: 0.0 < value <= SCALE_MAX)
         kt = 2.0 * deepest_radius * elastomer.G_star
     mu = contact.friction.coulomb_mu if model.has_friction else 0.0
     return WallCoefficients(2.0 * elastomer.E, elastomer.nu, gamma, kt, mu)

@@ -20,7 +20,8 @@ import xarray as xr
 from mdr_events.io.files import input_file_problem, load_netcdf
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.contact.indenters import TabulatedProfile
-from mdr_events.validation import PLAIN_NUMBER, SCALE_MAX, check_real, plain_number, real_array, shown
+from mdr_events.validation import (PLAIN_NUMBER, SCALE_MAX, check_mapping, check_real, plain_number, real_array,
+                                   shown)
 
 __all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor", "check_run_is_finite",
            "UNDEFINED_OUT_OF_CONTACT"]
@@ -270,9 +271,7 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
     """
     source = str(candidate) if isinstance(candidate, (str, os.PathLike)) else f"candidate ({type(candidate).__name__})"
     for argument, given in (("names", names), ("units", units), ("select", select)):
-        if given is not None and not isinstance(given, Mapping):
-            raise TypeError(f"{argument}={shown(given)} ({type(given).__name__}) is not allowed; allowed: a mapping, "
-                            f"e.g. {MAPPING_EXAMPLES[argument]}")
+        check_mapping(argument, given, MAPPING_EXAMPLES[argument])
     names = dict(names or {})
     for quantity, column in names.items():  # (a list was unhashable: a raw TypeError)
         if not isinstance(column, str):

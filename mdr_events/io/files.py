@@ -192,10 +192,34 @@ def _prepared_target(path: str | os.PathLike) -> Path:
     return target
 
 
+@contextmanager
+def _directories_locked(directories: Sequence[Path]):
+    """Hold an exclusive ``flock`` on each of ``directories`` (in a sorted order, so that two writers never wait on
+    each other crosswise) while the body runs: two processes writing the files of their runs into one directory
+    placed them one after the other, each set whole (their renames interleaved: the ``.nc`` of one run beside the
+    ``.png`` of the other). Where a directory cannot be opened or locked (no ``fcntl``), nothing is held."""
+    handles = []
+    try:
+        for directory in sorted(dict.fromkeys(os.path.abspath(d) for d in directories)):
+            if fcntl is None:
+                break
+            try:
+                handle = os.open(directory, os.O_RDONLY)
+            except OSError:
+                continue
+            handles.append(handle)
+            fcntl.flock(handle, fcntl.LOCK_EX)
+        yield
+    finally:
+        for handle in handles:
+            os.close(handle)  # (closing releases the lock)
+
+
 def atomic_write_all(files: Sequence[PendingFile]) -> list[Path]:
     """Write several files as one: each to its temporary (as :func:`atomic_write`), then all renamed into place with
-    Ctrl-C and SIGTERM held, so that the files of one run are replaced together or not at all (an interrupt or an
-    error while writing leaves every old file as it was; one during the renames waits until they are done).
+    Ctrl-C and SIGTERM held and their directories locked against another writer's renames, so that the files of one
+    run are replaced together or not at all (an interrupt or an error while writing leaves every old file as it was;
+    one during the renames waits until they are done).
 
     Returns the paths, in order; raises as :func:`atomic_write`.
     """
@@ -223,7 +247,7 @@ def atomic_write_all(files: Sequence[PendingFile]) -> list[Path]:
             mask = os.umask(0)  # mkstemp makes the file owner-only; give it the usual permissions
             os.umask(mask)
             os.chmod(temporary, 0o666 & ~mask)
-        with _signals_held():
+        with _directories_locked([target.parent for target in targets]), _signals_held():
             for temporary, target in zip(temporaries, targets):
                 os.replace(temporary, target)
                 placed += 1
@@ -253,11 +277,7 @@ def netcdf_writer(dataset: xr.Dataset) -> Callable[[str], Any]:
     file removed), so that every dataset written reads back as it was."""
     if dataset.attrs.get("program") == PROGRAM:
         _check_stamp(dataset, "dataset")  # (open_result would refuse it: param_E = inf, a variable dropped, ...)
-        try:
-            _check_variables(dataset, "dataset")
-        except ValueError as error:
-            raise ValueError(f"{error}; allowed: a result as {PROGRAM} makes it (its variables with their "
-                             "dimensions, units and long_name; one case selected with isel)") from None
+        _check_variables(dataset, "dataset")
 
     def write(temporary: str) -> None:
         try:
@@ -401,13 +421,20 @@ def load_netcdf(path: str | os.PathLike, where: str, allowed: str = f"a netCDF f
     raise ValueError(f"{where} is not a readable netCDF file ({why}); allowed: {allowed}")
 
 
+#: What a result file (or a result to be written) may be, for the messages of :func:`_check_stamp` and
+#: :func:`_check_variables` (which said what was wrong, not what is allowed).
+ALLOWED_RESULT = (f"a result as {PROGRAM} makes it (its stamp and parameters as attributes; its variables with their "
+                  "dimensions, units and long_name; one case selected with isel)")
+
+
 def _check_stamp(dataset: xr.Dataset, where: str) -> None:
     """Raise ``ValueError`` unless this package wrote ``dataset`` with its full stamp and parameters."""
     if dataset.attrs.get("program") != PROGRAM:
-        raise ValueError(f"{where} was not written by {PROGRAM} (attribute 'program' missing or different)")
+        raise ValueError(f"{where} was not written by {PROGRAM} (attribute 'program' missing or different); "
+                         f"allowed: {ALLOWED_RESULT}")
     missing = [name for name in STAMP_ATTRIBUTES if name not in dataset.attrs]
     if missing:
-        raise ValueError(f"{where} lacks the attribute(s) {missing}")
+        raise ValueError(f"{where} lacks the attribute(s) {missing}; allowed: {ALLOWED_RESULT}")
     try:
         parameters_of(dataset)
         Contact.from_attrs(dataset.attrs)  # (the indenter and the friction law it names, consistently)
@@ -424,13 +451,15 @@ def _check_variables(dataset: xr.Dataset, where: str) -> None:
         raise ValueError(f"{where}: {error}") from None
     missing = [name for name in schema if name not in dataset.variables]
     if missing:
-        raise ValueError(f"{where} ({content}) lacks the variable(s) {missing}")
+        raise ValueError(f"{where} ({content}) lacks the variable(s) {missing}; allowed: {ALLOWED_RESULT}")
     selected = [name for name, coordinate in dataset.coords.items() if coordinate.ndim == 0]  # (isel of one label)
     wrong = [f"{name} {dataset[name].dims} (expected {describe_dims(dims)})" for name, dims in schema.items()
              if not dims_match(dataset[name].dims, dims, selected)]
     if wrong:
-        raise ValueError(f"{where} ({content}) has variable(s) with the wrong dimensions: {'; '.join(wrong)}")
+        raise ValueError(f"{where} ({content}) has variable(s) with the wrong dimensions: {'; '.join(wrong)}; "
+                         f"allowed: {ALLOWED_RESULT}")
     unlabelled = [name for name in dataset.variables
                   if not {"units", "long_name"} <= set(dataset[name].attrs)]
     if unlabelled:
-        raise ValueError(f"{where} ({content}) has variable(s) without units or long_name: {unlabelled}")
+        raise ValueError(f"{where} ({content}) has variable(s) without units or long_name: {unlabelled}; "
+                         f"allowed: {ALLOWED_RESULT}")

@@ -34,6 +34,8 @@ from mdr_events.models.continuum.media import check_law
 from mdr_events.models.continuum.rate_run import run_rate_continuum
 from mdr_events.models.continuum.rate_shifts import check_rate_friction
 from mdr_events.models.continuum.extrema import solution_extrema
+from mdr_events.models.continuum.solve import BYTES_PER_SAMPLE as CONTINUUM_BYTES_PER_SAMPLE
+from mdr_events.models.discrete import BYTES_PER_SAMPLE as DISCRETE_BYTES_PER_SAMPLE
 from mdr_events.models.discrete import check_spacing, check_thresholds_known, run_discrete
 from mdr_events.models.job import ModelJob
 from mdr_events.models.motion import Cases
@@ -113,6 +115,28 @@ class Discrete:
         contact : Contact
             The physical model, on a layer of finite thickness.
         """
+
+    def check_case_count(self, count: int, limits: Limits) -> None:
+        """The least a run of ``count`` cases takes, checked before they are built (a million angles were built, for
+        minutes and a GiB, before the run's own check): without ``dt``, the shared time grid's ``n_steps + 1``
+        samples per case, as :func:`~mdr_events.models.discrete.check_discrete_size` counts them.
+
+        Parameters
+        ----------
+        count : int
+            The cases of the motion (``case_count`` of a Scenario or Paths).
+        limits : Limits
+            What the run may use.
+
+        Raises
+        ------
+        ResourceLimitError
+            The steps or the memory of ``count`` cases beyond ``limits``.
+        """
+        if self.dt is None:
+            n_time = (DEFAULT_STEPS if self.n_steps is None else self.n_steps) + 1
+            limits.check(f"the discrete run ({count} case(s) of {n_time} time steps)", steps=count * n_time,
+                         memory=count * n_time * DISCRETE_BYTES_PER_SAMPLE)
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Run the cases with the springs; the dataset of :mod:`~mdr_events.models.simulation_schema` with the
@@ -283,6 +307,26 @@ class Continuum:
             A law with Coulomb's part on a layer of finite thickness.
         """
         check_law(contact.friction, contact.layer)
+
+    def check_case_count(self, count: int, limits: Limits) -> None:
+        """The output a run of ``count`` cases takes, checked before they are built, as
+        :func:`~mdr_events.models.continuum.run_continuum` counts it (``samples`` or the times ``t`` per case).
+
+        Parameters
+        ----------
+        count : int
+            The cases of the motion (``case_count`` of a Scenario or Paths).
+        limits : Limits
+            What the run may use.
+
+        Raises
+        ------
+        ResourceLimitError
+            The output times or the memory of ``count`` cases beyond ``limits``.
+        """
+        n_time = self.samples if self.t is None else len(self.t)
+        limits.check(f"the continuum run ({count} case(s) of {n_time} output times)", samples=n_time * count,
+                     memory=n_time * count * CONTINUUM_BYTES_PER_SAMPLE)
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Solve the cases exactly; the dataset of :mod:`~mdr_events.models.simulation_schema` with the event log,

@@ -247,6 +247,11 @@ class Scenario:
         """The dimension the cases are labelled along: ``"alpha"`` (the path angles in degrees)."""
         return ANGLE_DIMENSION
 
+    @property
+    def case_count(self) -> int:
+        """How many cases :meth:`cases` builds: one per angle (counted before they are built)."""
+        return len(self.alpha)
+
     def cases(self, params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> Cases:
         """One path per angle for the contact of ``params`` and ``profile`` (its ``d_max`` and ``v`` this
         scenario's).
@@ -352,6 +357,11 @@ class Paths:
     def dimension(self) -> str:
         """The dimension the cases are labelled along: ``"case"`` (the paths' labels)."""
         return CUSTOM_DIMENSION
+
+    @property
+    def case_count(self) -> int:
+        """How many cases :meth:`cases` builds: one per path (counted before they are built)."""
+        return len(self.paths)
 
     def cases(self, params: Parameters, profile: SimulatedProfile = None, friction: FrictionLaw = TAU0) -> Cases:
         """The paths, each checked by :func:`check_path_representable` and :func:`check_path_extent`.

@@ -192,5 +192,6 @@ def simulate(
     model, method = simulation_job(contact, motion, alpha, method, options)
     limits = check_limits(limits)
     check_representable(model.params, model.profile, model.friction)
+    method.check_case_count(model.motion.case_count, limits)  # (before the cases are built: each takes its theory)
     cases = model.motion.cases(model.params, model.profile, model.friction)
     return method.simulate(model, cases, limits)

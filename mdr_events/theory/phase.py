@@ -24,7 +24,7 @@ from mdr_events.theory import analytic, mindlin, power_law, tabulated
 from mdr_events.theory.job import ContactLike, contact_alone, on_layer, theory_job
 from mdr_events.theory.kinds import theory_of
 from mdr_events.theory.scales import check_representable
-from mdr_events.validation import check_choice, validate_alpha
+from mdr_events.validation import check_choice, check_distinct, validate_alpha
 
 __all__ = ["phase_diagram", "default_angles", "PHASE_DIAGRAM_CONTENT", "PHASE_DIAGRAM_VARIABLES"]
 
@@ -131,6 +131,7 @@ def phase_diagram(
     if angles.ndim != 1 or angles.size == 0:
         raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: a non-empty 1-D array of angles in "
                          "degrees (None: the default grid)")
+    check_distinct("alpha", angles, alpha)
     limits = check_limits(limits)
     coords = {"alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})}
     if layered:  # (the layer's onsets are bisections on its tables: their work and memory per angle are their own)

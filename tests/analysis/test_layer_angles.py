@@ -50,7 +50,8 @@ def test_the_angles_are_labelled_and_read_back(angles, tmp_path):
     (lambda: me.critical_angles_against_thickness(PAPER, []), "one non-empty axis"),
     (lambda: me.critical_angles_against_thickness(PAPER.parameters(3e-4, 1e-3), [1e-3]), "contact=.*Contact"),
     (lambda: me.critical_angles_against_thickness(PAPER, [1e-3], d_max=math.nan), "d_max=nan"),
-    (lambda: me.critical_angles_against_thickness(PAPER, np.ones(10), limits=Limits(steps=1e4)), "10 thicknesses"),
+    (lambda: me.critical_angles_against_thickness(PAPER, np.linspace(1.0, 2.0, 10), limits=Limits(steps=1e4)),
+     "10 thicknesses"),
 ])
 def test_bad_input_is_named(call, words):
     with pytest.raises((ValueError, TypeError, ResourceLimitError), match=words):

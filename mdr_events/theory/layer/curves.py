@@ -22,10 +22,11 @@ from mdr_events.contact.model import Contact
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import Limits, check_limits
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
+from mdr_events.theory.job import rate_independent
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
 from mdr_events.theory.layer.force_control import pull_off
 from mdr_events.theory.layer.relations import _abel_factor, _power_law, branch_depth, normal_force
-from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_count, check_real, real_array, shown
+from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_count, check_distinct, check_real, real_array, shown
 
 __all__ = ["layer_normal_curve", "layer_indentation_cycle", "layer_pull_off_curve", "LAYER_CURVE_CONTENT",
            "LAYER_CYCLE_CONTENT", "LAYER_PULL_OFF_CONTENT", "CURVE_POINT_STEPS", "PULL_OFF_STEPS",
@@ -125,8 +126,10 @@ def _check_scales(contact: Contact, depth: float, what: str) -> None:
 def _checked(contact: Any, depth: float, what: str, points: int, steps_each: float, limits: Limits | None) -> None:
     """A curve's contact checked before it runs: a paraboloid or power law (:func:`_material`), the scales it computes
     with at ``depth`` (:func:`_check_scales`), and the curve's ``points`` (each ``steps_each`` steps) within
-    ``limits``."""
+    ``limits``. The curves are rate-independent: a ``RateDependentAdhesion`` is refused (its works at rest were read
+    as the paper's law, which ``pull_off_force`` refuses on the half-space)."""
     _material(contact)
+    rate_independent(contact, what)
     _check_scales(contact, depth, what)
     check_limits(limits).check(f"{what} ({points} points)", samples=float(points), steps=steps_each * points,
                                memory=CURVE_BYTES_PER_POINT * points)
@@ -137,6 +140,7 @@ def _grid(name: str, values, allowed: str, valid) -> np.ndarray:
     array = np.atleast_1d(real_array(name, values, allowed)).astype(float)
     if array.ndim != 1 or array.size == 0 or not np.all(valid(array)):
         raise ValueError(f"{name}={shown(values)} is not allowed; allowed: {allowed}, one non-empty axis")
+    check_distinct(name, array, values)
     return array
 
 
@@ -297,7 +301,8 @@ def layer_normal_curve(contact: Contact, depths, limits: Limits | None = None) -
     Raises
     ------
     TypeError
-        ``contact`` not a Contact, depths not real numbers.
+        ``contact`` not a Contact, depths not real numbers, a ``RateDependentAdhesion`` (the curves are
+        rate-independent).
     ValueError
         Another indenter, a non-finite depth, no depth, the contact's scales beyond the double range, a radius beyond
         the tables (``a/h > 64``), or the points beyond ``limits`` (``ResourceLimitError``).
@@ -345,7 +350,7 @@ def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201,
     Raises
     ------
     TypeError
-        ``contact`` not a Contact.
+        ``contact`` not a Contact, or of a ``RateDependentAdhesion`` (the cycle is rate-independent).
     ValueError
         Another indenter, ``d_max`` not a finite number > 0, ``Δγ1 < Δγ0``, ``samples`` < 2, the contact's scales
         beyond the double range, or the samples beyond ``limits`` (``ResourceLimitError``).
@@ -424,14 +429,18 @@ def layer_pull_off_curve(contact: Contact, thicknesses, limits: Limits | None = 
     Raises
     ------
     TypeError
-        ``contact`` not a Contact.
+        ``contact`` not a Contact, or of a ``RateDependentAdhesion`` (the pull-off is rate-independent).
     ValueError
-        Another indenter, a thickness not > 0, no thickness, the contact's scales beyond the double range, a pull-off
-        beyond the tables (``a/h > 64``), or the thicknesses beyond ``limits`` (``ResourceLimitError``).
+        Another indenter, no adhesion (``Δγ1`` = 0), a thickness not > 0, no thickness or a repeated one, the
+        contact's scales beyond the double range, a pull-off beyond the tables (``a/h > 64``), or the thicknesses
+        beyond ``limits`` (``ResourceLimitError``).
     """
     E_star, nu, _ = _material(contact)
     h = thickness_axis(thicknesses)
     _checked(contact, PAPER_D_MAX, "layer_pull_off_curve", h.size, PULL_OFF_STEPS, limits)
+    if not contact.adhesion.dgamma1 > 0.0:  # (pull_off named its own argument, dgamma=0.0, which the user never gave)
+        raise ValueError(f"contact.adhesion.dgamma1={contact.adhesion.dgamma1!r} is not allowed in "
+                         "layer_pull_off_curve; allowed: a work of adhesion > 0 (J/m²): without adhesion nothing pulls")
     found = [pull_off(contact.indenter, E_star, nu, contact.adhesion.dgamma1, Layer(float(value), contact.layer.base))
              for value in h]
     values = {"pull_off_force": ([p.force for p in found], "N", "pull-off force (force control, dgamma1)"),
