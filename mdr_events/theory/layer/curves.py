@@ -29,7 +29,8 @@ from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_count, check_real,
 
 __all__ = ["layer_normal_curve", "layer_indentation_cycle", "layer_pull_off_curve", "LAYER_CURVE_CONTENT",
            "LAYER_CYCLE_CONTENT", "LAYER_PULL_OFF_CONTENT", "CURVE_POINT_STEPS", "PULL_OFF_STEPS",
-           "CURVE_BYTES_PER_POINT"]
+           "CURVE_BYTES_PER_POINT", "layer_material", "half_space_radii", "check_scales", "stable_radius",
+           "branch_jump_off", "scan_ceiling", "beyond_tables", "thickness_axis", "INSIDE_TABLES"]
 
 #: The ``content`` attribute of :func:`layer_normal_curve`.
 LAYER_CURVE_CONTENT = "layer normal curve"
@@ -70,7 +71,7 @@ PULL_OFF_STEPS = 5000.0
 #: counted against :attr:`~mdr_events.Limits.memory`.
 CURVE_BYTES_PER_POINT = 256.0
 
-#: What the scales of a curve's contact must be (:func:`_check_scales`).
+#: What the scales of a curve's contact must be (:func:`check_scales`).
 _SCALES = (f"a contact whose scales lie within {SCALE_MIN:.2g} to {SCALE_MAX:.2g} in SI units, so that their products "
            "stay finite in double precision")
 
@@ -80,8 +81,26 @@ _VARIABLES = {"contact_radius": ("m", "contact radius a"), "normal_force": ("N",
               "depth": ("m", "indentation depth d")}
 
 
-def _material(contact: Any) -> tuple[float, float, Layer]:
-    """``(E*, ν, layer)`` of a contact of a paraboloid or power law; else the one-line error."""
+def layer_material(contact: Any) -> tuple[float, float, Layer]:
+    """``(E*, ν, layer)`` of a contact of a paraboloid or power law; else the one-line error.
+
+    Parameters
+    ----------
+    contact : Contact
+        A contact of a paraboloid or power law (on any layer, the half-space too).
+
+    Returns
+    -------
+    tuple of (float, float, Layer)
+        ``E*`` (Pa), Poisson's ratio and the contact's layer.
+
+    Raises
+    ------
+    TypeError
+        ``contact`` not a :class:`~mdr_events.Contact`.
+    ValueError
+        Another indenter (the layer's factors are tabulated for the power laws).
+    """
     if not isinstance(contact, Contact):
         raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a "
                         "mdr_events.Contact, e.g. Contact.paper().replace(h=5e-3)")
@@ -91,10 +110,30 @@ def _material(contact: Any) -> tuple[float, float, Layer]:
     return contact.elastomer.E_star, contact.elastomer.nu, contact.layer
 
 
-def _half_space_radii(contact: Contact, dgamma: float, depth: float) -> tuple[float, float]:
+def half_space_radii(contact: Contact, dgamma: float, depth: float) -> tuple[float, float]:
     """The half-space's pull-off radius of ``dgamma`` (``a^(2n−1) = 9Δγ/(2E* n² κₙ² c²)``) and its radius without
-    adhesion at ``depth`` (``κₙ c aⁿ = d``, 0 at ``d ≤ 0``): the scales of a scan (m)."""
-    E_star, _, _ = _material(contact)
+    adhesion at ``depth`` (``κₙ c aⁿ = d``, 0 at ``d ≤ 0``): the scales of a scan (m).
+
+    Parameters
+    ----------
+    contact : Contact
+        A contact of a paraboloid or power law.
+    dgamma : float
+        The work of adhesion (J/m²).
+    depth : float
+        The depth (m).
+
+    Returns
+    -------
+    tuple of (float, float)
+        The pull-off radius and the radius without adhesion (m).
+
+    Raises
+    ------
+    ZeroDivisionError, OverflowError
+        A power of a scale beyond the double range (:func:`check_scales` turns it into its one line).
+    """
+    E_star, _, _ = layer_material(contact)
     c, n = _power_law(contact.indenter)
     kappa = _abel_factor(n)
     pulled = (9.0 * dgamma / (2.0 * E_star * n**2 * kappa**2 * c**2)) ** (1.0 / (2.0 * n - 1.0))
@@ -102,16 +141,32 @@ def _half_space_radii(contact: Contact, dgamma: float, depth: float) -> tuple[fl
     return pulled, hertz
 
 
-def _check_scales(contact: Contact, depth: float, what: str) -> None:
+def check_scales(contact: Contact, depth: float, what: str) -> None:
     """The scales a curve computes with at the depth ``depth`` (> 0), each within ``SCALE_MIN`` to ``SCALE_MAX`` (so
     that their products stay finite), as the simulators' are (``R = 1e308`` gave a ``ZeroDivisionError``, ``1e-300``
-    an ``OverflowError``); else the one-line ``ValueError`` naming the first and ``what``."""
-    E_star, _, _ = _material(contact)
+    an ``OverflowError``); else the one-line ``ValueError`` naming the first and ``what``.
+
+    Parameters
+    ----------
+    contact : Contact
+        A contact of a paraboloid or power law.
+    depth : float
+        The deepest depth computed (m, > 0).
+    what : str
+        The function asked, named in the error.
+
+    Raises
+    ------
+    ValueError
+        A scale (``E*``, the profile's ``c``, the depth, the works of adhesion, the half-space's radii) outside
+        ``SCALE_MIN`` to ``SCALE_MAX``.
+    """
+    E_star, _, _ = layer_material(contact)
     c, _ = _power_law(contact.indenter)
     scales = [("E*", E_star, "Pa"), ("the profile's c", c, "SI units"), ("the depth", depth, "m")]
     for dgamma, name in ((contact.adhesion.dgamma1, "Δγ1"), (contact.adhesion.dgamma0, "Δγ0")):
         try:
-            pulled, hertz = _half_space_radii(contact, dgamma, depth)
+            pulled, hertz = half_space_radii(contact, dgamma, depth)
         except (ZeroDivisionError, OverflowError) as error:  # (a power of a scale beyond the double range)
             raise ValueError(f"{what}: the half-space's radii overflow ({error}) ({contact!r}); allowed: {_SCALES}")
         scales.append(("the half-space's radius at the depth", hertz, "m"))
@@ -123,11 +178,11 @@ def _check_scales(contact: Contact, depth: float, what: str) -> None:
 
 
 def _checked(contact: Any, depth: float, what: str, points: int, steps_each: float, limits: Limits | None) -> None:
-    """A curve's contact checked before it runs: a paraboloid or power law (:func:`_material`), the scales it computes
-    with at ``depth`` (:func:`_check_scales`), and the curve's ``points`` (each ``steps_each`` steps) within
+    """A curve's contact checked before it runs: a paraboloid or power law (:func:`layer_material`), the scales it computes
+    with at ``depth`` (:func:`check_scales`), and the curve's ``points`` (each ``steps_each`` steps) within
     ``limits``."""
-    _material(contact)
-    _check_scales(contact, depth, what)
+    layer_material(contact)
+    check_scales(contact, depth, what)
     check_limits(limits).check(f"{what} ({points} points)", samples=float(points), steps=steps_each * points,
                                memory=CURVE_BYTES_PER_POINT * points)
 
@@ -203,8 +258,8 @@ def beyond_tables(depth: float, layer: Layer, ceiling: float) -> ValueError:
 def _radius_scale(contact: Contact, dgamma: float, depth: float) -> tuple[float, float]:
     """The scan's range in ``a``: from far below the half-space's pull-off radius to where ``d(a) ≥ depth`` (the
     largest ``a/h`` of the tables at most)."""
-    E_star, nu, layer = _material(contact)
-    pulled, hertz = _half_space_radii(contact, dgamma, depth)
+    E_star, nu, layer = layer_material(contact)
+    pulled, hertz = half_space_radii(contact, dgamma, depth)
     scale = max(pulled, hertz) or _SMALLEST_SCALE
     low, high = _SCAN_BELOW * scale, 2.0 * scale
     ceiling = scan_ceiling(layer)
@@ -215,9 +270,32 @@ def _radius_scale(contact: Contact, dgamma: float, depth: float) -> tuple[float,
     return low, min(high, ceiling)
 
 
-def _stable_radius(contact: Contact, dgamma: float, depths: np.ndarray) -> np.ndarray:
-    """The radius on the stable part of the branch of ``dgamma`` at each depth (``nan`` below the least depth)."""
-    E_star, nu, layer = _material(contact)
+def stable_radius(contact: Contact, dgamma: float, depths: np.ndarray) -> np.ndarray:
+    """The radius on the stable part of the branch of ``dgamma`` at each depth (``nan`` below the least depth).
+
+    The branch ``d(a) = g(a) − Δl(a)`` (generalised (9)) is scanned in ``ln a`` and each depth bisected on its part
+    beyond the least depth (``∂d/∂a ≥ 0``).
+
+    Parameters
+    ----------
+    contact : Contact
+        A contact of a paraboloid or power law on its layer.
+    dgamma : float
+        The work of adhesion of the branch (J/m², ≥ 0).
+    depths : numpy.ndarray
+        The depths (m).
+
+    Returns
+    -------
+    numpy.ndarray
+        The contact radii (m), ``nan`` below the branch's least depth; 0 at ``d = 0`` without adhesion.
+
+    Raises
+    ------
+    ValueError
+        A radius beyond the tables (``a/h > 64``).
+    """
+    E_star, nu, layer = layer_material(contact)
     low, high = _radius_scale(contact, dgamma, float(np.max(depths, initial=0.0)))
     logs = np.linspace(math.log(low), math.log(high), _SCAN_POINTS)
 
@@ -247,7 +325,7 @@ def _stable_radius(contact: Contact, dgamma: float, depths: np.ndarray) -> np.nd
 def _variables(contact: Contact, depth, radius, dims: tuple[str, ...]) -> dict[str, xr.Variable]:
     """Radius, force, area and ``a/h`` as labelled variables (the force 0 and the radius 0 where ``nan``: no
     contact)."""
-    E_star, nu, layer = _material(contact)
+    E_star, nu, layer = layer_material(contact)
     inside = np.isfinite(radius)
     safe = np.where(inside, radius, 0.0)
     force = np.where(inside, normal_force(depth, safe, contact.indenter, E_star, nu, layer), np.nan)
@@ -306,7 +384,7 @@ def layer_normal_curve(contact: Contact, depths, limits: Limits | None = None) -
     deepest = float(np.max(depth))
     _checked(contact, deepest if deepest > 0.0 else PAPER_D_MAX, f"layer_normal_curve to the depth {deepest!r} m",
              2 * depth.size, CURVE_POINT_STEPS, limits)
-    radius = np.array([_stable_radius(contact, dgamma, depth)
+    radius = np.array([stable_radius(contact, dgamma, depth)
                        for dgamma in (contact.adhesion.dgamma0, contact.adhesion.dgamma1)])
     coords = {"branch": ("branch", ["dgamma0", "dgamma1"], {"units": "1", "long_name": "adhesive branch"}),
               "depth": ("depth", depth, {"units": "m", "long_name": _VARIABLES["depth"][1]})}
@@ -353,19 +431,19 @@ def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201,
     d_max = check_real("d_max", d_max, "a finite number > 0 (m)", lambda value: value > 0.0)
     samples = check_count("samples", samples, 2)
     _checked(contact, d_max, f"layer_indentation_cycle to d_max={d_max!r} m", 3 * samples, CURVE_POINT_STEPS, limits)
-    E_star, nu, layer = _material(contact)
+    E_star, nu, layer = layer_material(contact)
     low, high = contact.adhesion.dgamma0, contact.adhesion.dgamma1
     if high < low:
         raise ValueError(f"contact.adhesion={contact.adhesion!r} is not allowed here; allowed: dgamma1 >= dgamma0")
     loading = np.linspace(0.0, d_max, samples)
-    a_max = float(_stable_radius(contact, low, np.array([d_max]))[0])
+    a_max = float(stable_radius(contact, low, np.array([d_max]))[0])
     unpinned = float(branch_depth(a_max, contact.indenter, E_star, nu, high, layer))
-    least, _ = _jump_off(contact, high)
+    least, _ = branch_jump_off(contact, high)
     pinned = np.linspace(d_max, unpinned, samples)
     shrinking = np.linspace(unpinned, least, samples)
     depth = np.concatenate([loading, pinned, shrinking])
-    radius = np.concatenate([_stable_radius(contact, low, loading), np.full(samples, a_max),
-                             _stable_radius(contact, high, shrinking)])
+    radius = np.concatenate([stable_radius(contact, low, loading), np.full(samples, a_max),
+                             stable_radius(contact, high, shrinking)])
     stage = np.repeat(["loading", "pinned", "shrinking"], samples)
     variables = _variables(contact, depth, radius, ("sample",))
     variables["depth"] = xr.Variable(("sample",), depth, {"units": "m", "long_name": _VARIABLES["depth"][1]})
@@ -373,9 +451,30 @@ def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201,
     return _stamped(dataset, contact, d_max, LAYER_CYCLE_CONTENT)
 
 
-def _jump_off(contact: Contact, dgamma: float) -> tuple[float, float]:
-    """The least depth of the branch of ``dgamma`` and its radius: the jump-off under depth control (m, m)."""
-    E_star, nu, layer = _material(contact)
+def branch_jump_off(contact: Contact, dgamma: float) -> tuple[float, float]:
+    """The least depth of the branch of ``dgamma`` and its radius: the jump-off under depth control (m, m).
+
+    ``∂d/∂a = 0`` on ``d(a) = g(a) − Δl(a)`` (generalised (9)): a scan in ``ln a`` and Brent's method around its
+    least node.
+
+    Parameters
+    ----------
+    contact : Contact
+        A contact of a paraboloid or power law on its layer.
+    dgamma : float
+        The work of adhesion of the branch (J/m², ≥ 0).
+
+    Returns
+    -------
+    tuple of (float, float)
+        The least depth (m, ≤ 0) and the radius there (m); ``(0, 0)`` without adhesion.
+
+    Raises
+    ------
+    ValueError
+        A branch that does not rise back to the depth 0 within the tables (``a/h > 64``).
+    """
+    E_star, nu, layer = layer_material(contact)
     if dgamma == 0.0:  # (the branch d = g(a) rises from the first touch: its least depth is 0, at a = 0)
         return 0.0, 0.0
     low, high = _radius_scale(contact, dgamma, 0.0)
@@ -429,7 +528,7 @@ def layer_pull_off_curve(contact: Contact, thicknesses, limits: Limits | None = 
         Another indenter, a thickness not > 0, no thickness, the contact's scales beyond the double range, a pull-off
         beyond the tables (``a/h > 64``), or the thicknesses beyond ``limits`` (``ResourceLimitError``).
     """
-    E_star, nu, _ = _material(contact)
+    E_star, nu, _ = layer_material(contact)
     h = thickness_axis(thicknesses)
     _checked(contact, PAPER_D_MAX, "layer_pull_off_curve", h.size, PULL_OFF_STEPS, limits)
     found = [pull_off(contact.indenter, E_star, nu, contact.adhesion.dgamma1, Layer(float(value), contact.layer.base))
