@@ -178,8 +178,8 @@ def check_scales(contact: Contact, depth: float, what: str) -> None:
 
 
 def _checked(contact: Any, depth: float, what: str, points: int, steps_each: float, limits: Limits | None) -> None:
-    """A curve's contact checked before it runs: a paraboloid or power law (:func:`layer_material`), the scales it computes
-    with at ``depth`` (:func:`check_scales`), and the curve's ``points`` (each ``steps_each`` steps) within
+    """A curve's contact checked before it runs: a paraboloid or power law (:func:`layer_material`), the scales it
+    computes with at ``depth`` (:func:`check_scales`), and the curve's ``points`` (each ``steps_each`` steps) within
     ``limits``."""
     layer_material(contact)
     check_scales(contact, depth, what)
