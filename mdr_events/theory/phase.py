@@ -166,7 +166,7 @@ def _layer_phase_diagram(contact: Contact, angles: np.ndarray, scenario: str, d_
     """:func:`phase_diagram` of a contact on a layer of finite thickness: eqs. (17)–(21) with the layer's cap
     ``π a² τ0/K_t`` and branches (:mod:`~mdr_events.theory.layer.slip_onset`), ``nan`` where the onset lies beyond
     the layer's tables (``a/h > 64``), the layer's attributes stamped."""
-    from mdr_events.theory.layer.curves import branch_jump_off
+    from mdr_events.theory.layer.branch_scan import branch_jump_off
     from mdr_events.theory.layer.slip_onset import critical_angle_on_layer, onset_depths
 
     branches = (None,) if scenario == "A" else analytic.BRANCHES

@@ -69,6 +69,7 @@ module                            one idea
 :mod:`.branch_points`             the jump-off, the first touch and the pull-off force of a contact on its layer (what
                                   :func:`mdr_events.jump_off` and ``pull_off_force`` run on a layer)
 :mod:`.checks`                    what the relations take and give, checked: arguments by name, finite results
+:mod:`.branch_scan`               a branch scanned in ``ln a``: a depth inverted on its stable part, its least depth
 :mod:`.curves`                    a :class:`~mdr_events.Contact` on its layer as labelled results: the branches against
                                   the depth, an indentation cycle, the pull-off against the thickness
 :mod:`.tangential_compliance`     the tangential compliances ``C_L``, ``C_T`` and the kernels of the tangential punch

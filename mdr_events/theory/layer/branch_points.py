@@ -21,7 +21,7 @@ from mdr_events.contact.model import Contact
 from mdr_events.parameters import PAPER_D_MAX
 from mdr_events.theory.job import rate_independent
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
-from mdr_events.theory.layer.curves import branch_jump_off, check_scales, layer_material, stable_radius
+from mdr_events.theory.layer.branch_scan import branch_jump_off, check_scales, layer_material, stable_radius
 from mdr_events.theory.layer.force_control import pull_off
 from mdr_events.theory.layer.relations import branch_normal_force
 from mdr_events.validation import check_real
@@ -44,9 +44,9 @@ def _within_tables(compute: Callable[[], _Point], contact: Contact, work: float,
 
 def check_branch_contact(contact: Any, work_of_adhesion: float, what: str) -> tuple[Contact, float]:
     """What the points of a branch on a layer take, checked before they are computed: a
-    :class:`~mdr_events.Contact` of a paraboloid or power law (:func:`~mdr_events.theory.layer.curves.layer_material`),
+    :class:`~mdr_events.Contact` of a paraboloid or power law (:func:`~mdr_events.theory.layer.branch_scan.layer_material`),
     the paper's rate-independent adhesion law, a work of adhesion ``≥ 0`` and scales within double precision
-    (:func:`~mdr_events.theory.layer.curves.check_scales`, with the work asked and the paper's depth, as
+    (:func:`~mdr_events.theory.layer.branch_scan.check_scales`, with the work asked and the paper's depth, as
     :func:`~mdr_events.layer_pull_off_curve` checks its contact).
 
     Parameters

@@ -38,8 +38,8 @@ from mdr_events.contact.model import Contact
 from mdr_events.limits import Limits, check_limits
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
-from mdr_events.theory.layer.curves import (beyond_tables, branch_jump_off, half_space_radii, layer_material,
-                                           scan_ceiling, stable_radius)
+from mdr_events.theory.layer.branch_scan import (beyond_tables, branch_jump_off, half_space_radii, layer_material,
+                                                scan_ceiling, stable_radius)
 from mdr_events.theory.job import rate_independent
 from mdr_events.theory.layer.relations import branch_depth
 from mdr_events.theory.layer.tangential_compliance import check_bonded
@@ -73,7 +73,7 @@ CRITICAL_ANGLE_STEPS = 1e4
 #: tracemalloc for a phase diagram in A, 198 in B, where the half-space's 160 were counted), rounded up.
 ONSET_BYTES_PER_ANGLE = 256.0
 
-#: The scan of a motion ends at the tables' last radius (``curves.scan_ceiling``) or at
+#: The scan of a motion ends at the tables' last radius (``branch_scan.scan_ceiling``) or at
 #: this many times the radius at ``d_max``, whichever comes first: on a layer so thick that its tables' last radius
 #: squared leaves the double range (``h = 1e200``: ``g(64 h)`` overflowed, and the onset was refused though the layer
 #: is the half-space there), the scan still ends where the relations are finite. An onset beyond it lies beyond any
