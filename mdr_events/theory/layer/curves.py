@@ -5,7 +5,7 @@ against the depth (:func:`layer_normal_curve`), an indentation to ``d_max`` and 
 Part of :mod:`mdr_events.theory.layer` (the relations (L1)–(L5) are stated there). The depth of the branch of radius
 ``a`` is ``d(a) = g(a) − Δl(a)`` (generalised (9)); its stable part is ``a ≥ a_jo`` (``∂d/∂a ≥ 0``, ``a_jo`` the
 radius of the jump-off under depth control, the least depth). A depth is inverted on it by bisection in ``ln a``
-inside the bracket of a logarithmic scan, for all depths at once (:mod:`.branch_scan`).
+inside the bracket of a logarithmic scan, for all depths at once (:mod:`~mdr_events.theory.layer.branch_scan`).
 """
 
 from __future__ import annotations
@@ -44,9 +44,9 @@ register_schema(LAYER_PULL_OFF_CONTENT, {"pull_off_force": ("thickness",), "pull
 
 
 #: What one point of a normal curve or a cycle counts against :attr:`~mdr_events.Limits.steps`: its share of the scan
-#: and the bisection's 60 evaluations of the branch (:mod:`.branch_scan`), about 20 µs here, where the discrete model's step takes about
-#: 1.5 µs (its default 2e7 steps about 30 s), so that a curve is checked before it runs (1e9 samples of a cycle were
-#: taken, and the process killed for its memory).
+#: and the bisection's 60 evaluations of the branch (:mod:`~mdr_events.theory.layer.branch_scan`), about 20 µs
+#: here, where the discrete model's step takes about 1.5 µs (its default 2e7 steps about 30 s), so that a curve is
+#: checked before it runs (1e9 samples of a cycle were taken, and the process killed for its memory).
 CURVE_POINT_STEPS = 15.0
 #: What one thickness of the pull-off curve counts against :attr:`~mdr_events.Limits.steps`: a scan of the branch
 #: force and Brent's refinement, about 8 ms here.
