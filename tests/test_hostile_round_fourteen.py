@@ -60,7 +60,7 @@ def test_the_command_line_refuses_an_overflowing_power_law_on_a_layer_in_one_lin
 
 # --- N2: the scan of a layer's branch ended at the tables' last radius 64 h, and its node exp(ln 64h) rounds above it:
 # a contact whose scan reached there was refused by the tables, "a/h=64.00000000000001 is not allowed" (a layer
-# curve, and a run with large works of adhesion). The scans end just inside (curves.scan_ceiling, the one place) ----
+# curve, and a run with large works of adhesion). The scans end just inside (branch_scan.scan_ceiling, the one place) ----
 
 def test_a_scan_that_reaches_the_tables_last_radius_stays_inside_them():
     contact = dataclasses.replace(PAPER.replace(h=5e-4), adhesion=me.Adhesion(1000.0, 10000.0))

@@ -247,7 +247,10 @@ def jump_off(contact: ContactLike, work_of_adhesion: float) -> dict[str, float]:
     ----------
     contact : Contact or Parameters
         The paper's paraboloid (4), its elastomer and adhesion: a :class:`~mdr_events.Contact`, or a
-        :class:`~mdr_events.Parameters` (the keywords of before).
+        :class:`~mdr_events.Parameters` (the keywords of before). A contact on a layer of finite thickness
+        (``Contact.layer``; a paraboloid or power law, either base): the least depth on the layer's branch, found in
+        ``a`` (:func:`~mdr_events.theory.layer.branch_points.layer_jump_off`; one beyond the tables, ``a/h > 64``, is
+        refused).
     work_of_adhesion : float
         ``Δγ`` (J/m²): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
 
@@ -257,6 +260,10 @@ def jump_off(contact: ContactLike, work_of_adhesion: float) -> dict[str, float]:
         ``contact_radius`` (m), ``depth`` (m) and ``normal_force`` (N) at the jump-off.
     """
     _finite(work_of_adhesion=work_of_adhesion)
+    if on_layer(contact):
+        from mdr_events.theory.layer.branch_points import layer_jump_off
+
+        return layer_jump_off(contact, work_of_adhesion)
     params = paper_parameters(contact, "jump_off")
     args = (params.R, params.E_star, work_of_adhesion)
     point = _representable(lambda: {
@@ -276,7 +283,10 @@ def jump_in_radius(contact: ContactLike, work_of_adhesion: float) -> float:
     ----------
     contact : Contact or Parameters
         The paper's paraboloid (4), its elastomer and adhesion: a :class:`~mdr_events.Contact`, or a
-        :class:`~mdr_events.Parameters` (the keywords of before).
+        :class:`~mdr_events.Parameters` (the keywords of before). A contact on a layer of finite thickness
+        (``Contact.layer``; a paraboloid or power law, either base): the stable radius at ``d = 0`` on the layer's
+        branch, found in ``a`` (:func:`~mdr_events.theory.layer.branch_points.layer_jump_in_radius`; one beyond the
+        tables, ``a/h > 64``, is refused).
     work_of_adhesion : float
         ``Δγ`` (J/m²): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
 
@@ -286,6 +296,10 @@ def jump_in_radius(contact: ContactLike, work_of_adhesion: float) -> float:
         The contact radius (m) at first touch.
     """
     _finite(work_of_adhesion=work_of_adhesion)
+    if on_layer(contact):
+        from mdr_events.theory.layer.branch_points import layer_jump_in_radius
+
+        return layer_jump_in_radius(contact, work_of_adhesion)
     params = paper_parameters(contact, "jump_in_radius")
     return _representable(lambda: float(_rel("jump_in_radius").numeric(params.R, params.E_star, work_of_adhesion)),
                           "jump_in_radius", work_of_adhesion=work_of_adhesion)
@@ -300,7 +314,10 @@ def pull_off_force(contact: ContactLike, work_of_adhesion: float) -> float:
     ----------
     contact : Contact or Parameters
         The paper's paraboloid (4), its elastomer and adhesion: a :class:`~mdr_events.Contact`, or a
-        :class:`~mdr_events.Parameters` (the keywords of before).
+        :class:`~mdr_events.Parameters` (the keywords of before). A contact on a layer of finite thickness
+        (``Contact.layer``; a paraboloid or power law, either base): the least force on the layer's branch, found in
+        ``a`` (:func:`~mdr_events.theory.layer.branch_points.layer_pull_off_force`; one beyond the tables, ``a/h > 64``,
+        is refused).
     work_of_adhesion : float
         ``Δγ`` (J/m²): ``Δγ0`` for the branch of indentation, ``Δγ1`` for that of pull-off.
 
@@ -310,6 +327,10 @@ def pull_off_force(contact: ContactLike, work_of_adhesion: float) -> float:
         The pull-off force (N, negative) under force control.
     """
     _finite(work_of_adhesion=work_of_adhesion)
+    if on_layer(contact):
+        from mdr_events.theory.layer.branch_points import layer_pull_off_force
+
+        return layer_pull_off_force(contact, work_of_adhesion)
     params = paper_parameters(contact, "pull_off_force")
     return _representable(lambda: float(_rel("pull_off_force").numeric(params.R, work_of_adhesion)), "pull_off_force",
                           work_of_adhesion=work_of_adhesion)

@@ -47,15 +47,15 @@ def test_a_bad_layer_value_is_refused_in_one_line(change, words):
 def _run(where):
     """The call of each entry point with the layered contact."""
     return {
-        "pull_off_force": lambda: me.pull_off_force(LAYERED, 0.15),
-        "jump_off": lambda: me.jump_off(LAYERED, 0.15),
+        "jkr_normal_force": lambda: me.jkr_normal_force(1e-4, LAYERED, 0.15),
+        "critical_shift": lambda: me.critical_shift(1e-3, LAYERED),
         "the LAMMPS check": lambda: me.dem.lammps_check(LAYERED, "A", 20.0),
         "the LAMMPS check (LAMMPS has no layers)":
             lambda: me.dem.wall_coefficients(LAYERED, me.dem.LammpsModel()),
     }[where]
 
 
-@pytest.mark.parametrize("where", ["pull_off_force", "jump_off", "the LAMMPS check",
+@pytest.mark.parametrize("where", ["jkr_normal_force", "critical_shift", "the LAMMPS check",
                                    "the LAMMPS check (LAMMPS has no layers)"])
 def test_an_entry_point_without_layers_refuses_a_finite_one_in_one_line(where):
     with pytest.raises(ValueError) as caught:

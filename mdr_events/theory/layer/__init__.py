@@ -66,7 +66,10 @@ module                            one idea
 :mod:`.table_store`               the tables on disk (normal and tangential): directory, key, grid, read or build
 :mod:`.relations`                 the generalized MDR: ``K``, ``k(x)``, ``Δl``, ``g``, ``F_N``, the adhesive branch
 :mod:`.force_control`             the pull-off under force control: :class:`PullOff`
+:mod:`.branch_points`             the jump-off, the first touch and the pull-off force of a contact on its layer (what
+                                  :func:`mdr_events.jump_off` and ``pull_off_force`` run on a layer)
 :mod:`.checks`                    what the relations take and give, checked: arguments by name, finite results
+:mod:`.branch_scan`               a branch scanned in ``ln a``: a depth inverted on its stable part, its least depth
 :mod:`.curves`                    a :class:`~mdr_events.Contact` on its layer as labelled results: the branches against
                                   the depth, an indentation cycle, the pull-off against the thickness
 :mod:`.tangential_compliance`     the tangential compliances ``C_L``, ``C_T`` and the kernels of the tangential punch
@@ -82,6 +85,7 @@ module                            one idea
 The tangential modules' public names are those of :mod:`mdr_events.theory.layer_tangential` (not re-exported here).
 """
 
+from mdr_events.theory.layer.branch_points import layer_jump_in_radius, layer_jump_off, layer_pull_off_force
 from mdr_events.theory.layer.compliance import KERNEL_V_MAX, LAMBDA_MAX, compliance_function, kernel
 from mdr_events.theory.layer.curves import layer_indentation_cycle, layer_normal_curve, layer_pull_off_curve
 from mdr_events.theory.layer.force_control import PullOff, pull_off
@@ -99,4 +103,5 @@ __all__ = ["LAMBDA_MAX", "LAMBDA_MIN", "LAMBDA_SOLVE_MAX", "KERNEL_V_MAX", "SOLV
            "spring_stiffness_density", "hess_elongation", "surface_displacement", "equivalent_profile",
            "power_law_profile", "power_law_profile_slope", "normal_force", "branch_depth", "branch_normal_force",
            "pull_off", "PullOff", "layer_normal_curve", "layer_indentation_cycle", "layer_pull_off_curve",
-           "onset_depths", "critical_angle_on_layer", "thin_layer_onset_depth"]
+           "onset_depths", "critical_angle_on_layer", "thin_layer_onset_depth", "layer_jump_off",
+           "layer_jump_in_radius", "layer_pull_off_force"]

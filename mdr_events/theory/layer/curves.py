@@ -5,32 +5,30 @@ against the depth (:func:`layer_normal_curve`), an indentation to ``d_max`` and 
 Part of :mod:`mdr_events.theory.layer` (the relations (L1)–(L5) are stated there). The depth of the branch of radius
 ``a`` is ``d(a) = g(a) − Δl(a)`` (generalised (9)); its stable part is ``a ≥ a_jo`` (``∂d/∂a ≥ 0``, ``a_jo`` the
 radius of the jump-off under depth control, the least depth). A depth is inverted on it by bisection in ``ln a``
-inside the bracket of a logarithmic scan, for all depths at once.
+inside the bracket of a logarithmic scan, for all depths at once (:mod:`~mdr_events.theory.layer.branch_scan`).
 """
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numpy as np
 import xarray as xr
 
-from mdr_events.contact.indenters import Paraboloid, PowerLaw
 from mdr_events.contact.layer import Layer
 from mdr_events.contact.model import Contact
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import Limits, check_limits
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.job import rate_independent
-from mdr_events.theory.layer.compliance import LAMBDA_MAX
+from mdr_events.theory.layer.branch_scan import branch_jump_off, check_scales, layer_material, stable_radius
 from mdr_events.theory.layer.force_control import pull_off
-from mdr_events.theory.layer.relations import _abel_factor, _power_law, branch_depth, normal_force
-from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_count, check_distinct, check_real, real_array, shown
+from mdr_events.theory.layer.relations import branch_depth, normal_force
+from mdr_events.validation import check_count, check_distinct, check_real, real_array, shown
 
 __all__ = ["layer_normal_curve", "layer_indentation_cycle", "layer_pull_off_curve", "LAYER_CURVE_CONTENT",
            "LAYER_CYCLE_CONTENT", "LAYER_PULL_OFF_CONTENT", "CURVE_POINT_STEPS", "PULL_OFF_STEPS",
-           "CURVE_BYTES_PER_POINT"]
+           "CURVE_BYTES_PER_POINT", "thickness_axis"]
 
 #: The ``content`` attribute of :func:`layer_normal_curve`.
 LAYER_CURVE_CONTENT = "layer normal curve"
@@ -45,24 +43,11 @@ register_schema(LAYER_CYCLE_CONTENT, {"depth": ("sample",), "contact_radius": ("
 register_schema(LAYER_PULL_OFF_CONTENT, {"pull_off_force": ("thickness",), "pull_off_radius": ("thickness",),
                                          "pull_off_depth": ("thickness",), "relative_radius": ("thickness",)})
 
-#: Points of the logarithmic scan of ``d(a)`` that brackets each depth (the bisection refines it).
-_SCAN_POINTS = 400
-#: Bisection steps in ``ln a`` inside one scan interval (its width ``< 0.05``): ``0.05 · 2⁻⁶⁰`` is far below ulps.
-_BISECTIONS = 60
-#: The scan starts this far below the half-space's pull-off radius (``d`` falls from 0 there, the least depth lies
-#: above it).
-_SCAN_BELOW = 1e-4
-
-#: The scan's scale without adhesion at depth 0 (m): no contact to scan, any positive radius serves.
-_SMALLEST_SCALE = 1e-9
-#: A scan ends this close inside the tables' last radius ``64 h``: its nodes are ``exp(ln a)``, which may round above
-#: ``a`` (a contact whose scan reached the tables' end was refused with ``a/h = 64.00000000000001``).
-INSIDE_TABLES = 1.0 - 1e-12
 
 #: What one point of a normal curve or a cycle counts against :attr:`~mdr_events.Limits.steps`: its share of the scan
-#: and :data:`_BISECTIONS` evaluations of the branch, about 20 µs here, where the discrete model's step takes about
-#: 1.5 µs (its default 2e7 steps about 30 s), so that a curve is checked before it runs (1e9 samples of a cycle were
-#: taken, and the process killed for its memory).
+#: and the bisection's 60 evaluations of the branch (:mod:`~mdr_events.theory.layer.branch_scan`), about 20 µs
+#: here, where the discrete model's step takes about 1.5 µs (its default 2e7 steps about 30 s), so that a curve is
+#: checked before it runs (1e9 samples of a cycle were taken, and the process killed for its memory).
 CURVE_POINT_STEPS = 15.0
 #: What one thickness of the pull-off curve counts against :attr:`~mdr_events.Limits.steps`: a scan of the branch
 #: force and Brent's refinement, about 8 ms here.
@@ -71,9 +56,6 @@ PULL_OFF_STEPS = 5000.0
 #: counted against :attr:`~mdr_events.Limits.memory`.
 CURVE_BYTES_PER_POINT = 256.0
 
-#: What the scales of a curve's contact must be (:func:`_check_scales`).
-_SCALES = (f"a contact whose scales lie within {SCALE_MIN:.2g} to {SCALE_MAX:.2g} in SI units, so that their products "
-           "stay finite in double precision")
 
 #: The variables' units and long names.
 _VARIABLES = {"contact_radius": ("m", "contact radius a"), "normal_force": ("N", "normal force F_N"),
@@ -81,56 +63,14 @@ _VARIABLES = {"contact_radius": ("m", "contact radius a"), "normal_force": ("N",
               "depth": ("m", "indentation depth d")}
 
 
-def _material(contact: Any) -> tuple[float, float, Layer]:
-    """``(E*, ν, layer)`` of a contact of a paraboloid or power law; else the one-line error."""
-    if not isinstance(contact, Contact):
-        raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a "
-                        "mdr_events.Contact, e.g. Contact.paper().replace(h=5e-3)")
-    if not isinstance(contact.indenter, (Paraboloid, PowerLaw)):
-        raise ValueError(f"contact.indenter={contact.indenter!r} is not allowed on a layer yet; allowed: a Paraboloid "
-                         "or a PowerLaw (the tabulated factors; a general profile: theory.layer.equivalent_profile)")
-    return contact.elastomer.E_star, contact.elastomer.nu, contact.layer
-
-
-def _half_space_radii(contact: Contact, dgamma: float, depth: float) -> tuple[float, float]:
-    """The half-space's pull-off radius of ``dgamma`` (``a^(2n−1) = 9Δγ/(2E* n² κₙ² c²)``) and its radius without
-    adhesion at ``depth`` (``κₙ c aⁿ = d``, 0 at ``d ≤ 0``): the scales of a scan (m)."""
-    E_star, _, _ = _material(contact)
-    c, n = _power_law(contact.indenter)
-    kappa = _abel_factor(n)
-    pulled = (9.0 * dgamma / (2.0 * E_star * n**2 * kappa**2 * c**2)) ** (1.0 / (2.0 * n - 1.0))
-    hertz = (max(depth, 0.0) / (kappa * c)) ** (1.0 / n)
-    return pulled, hertz
-
-
-def _check_scales(contact: Contact, depth: float, what: str) -> None:
-    """The scales a curve computes with at the depth ``depth`` (> 0), each within ``SCALE_MIN`` to ``SCALE_MAX`` (so
-    that their products stay finite), as the simulators' are (``R = 1e308`` gave a ``ZeroDivisionError``, ``1e-300``
-    an ``OverflowError``); else the one-line ``ValueError`` naming the first and ``what``."""
-    E_star, _, _ = _material(contact)
-    c, _ = _power_law(contact.indenter)
-    scales = [("E*", E_star, "Pa"), ("the profile's c", c, "SI units"), ("the depth", depth, "m")]
-    for dgamma, name in ((contact.adhesion.dgamma1, "Δγ1"), (contact.adhesion.dgamma0, "Δγ0")):
-        try:
-            pulled, hertz = _half_space_radii(contact, dgamma, depth)
-        except (ZeroDivisionError, OverflowError) as error:  # (a power of a scale beyond the double range)
-            raise ValueError(f"{what}: the half-space's radii overflow ({error}) ({contact!r}); allowed: {_SCALES}")
-        scales.append(("the half-space's radius at the depth", hertz, "m"))
-        if dgamma > 0.0:
-            scales += [(name, dgamma, "J/m²"), (f"the half-space's pull-off radius of {name}", pulled, "m")]
-    for name, value, unit in scales:
-        if not SCALE_MIN <= abs(value) <= SCALE_MAX:
-            raise ValueError(f"{what}: {name} is {value:.3g} {unit} ({contact!r}); allowed: {_SCALES}")
-
-
 def _checked(contact: Any, depth: float, what: str, points: int, steps_each: float, limits: Limits | None) -> None:
-    """A curve's contact checked before it runs: a paraboloid or power law (:func:`_material`), the scales it computes
-    with at ``depth`` (:func:`_check_scales`), and the curve's ``points`` (each ``steps_each`` steps) within
+    """A curve's contact checked before it runs: a paraboloid or power law (:func:`layer_material`), the scales it
+    computes with at ``depth`` (:func:`check_scales`), and the curve's ``points`` (each ``steps_each`` steps) within
     ``limits``. The curves are rate-independent: a ``RateDependentAdhesion`` is refused (its works at rest were read
     as the paper's law, which ``pull_off_force`` refuses on the half-space)."""
-    _material(contact)
+    layer_material(contact)
     rate_independent(contact, what)
-    _check_scales(contact, depth, what)
+    check_scales(contact, depth, what)
     check_limits(limits).check(f"{what} ({points} points)", samples=float(points), steps=steps_each * points,
                                memory=CURVE_BYTES_PER_POINT * points)
 
@@ -166,92 +106,10 @@ def thickness_axis(thicknesses) -> np.ndarray:
     return _grid("thicknesses", thicknesses, "numbers > 0 (m), inf the half-space", lambda values: values > 0.0)
 
 
-def scan_ceiling(layer: Layer) -> float:
-    """The largest radius a scan of the layer's branches takes: the tables' last, ``64 h``, just inside
-    (:data:`INSIDE_TABLES`).
-
-    Parameters
-    ----------
-    layer : Layer
-        A layer of finite thickness.
-
-    Returns
-    -------
-    float
-        The radius (m).
-    """
-    return LAMBDA_MAX * layer.thickness * INSIDE_TABLES
-
-
-def beyond_tables(depth: float, layer: Layer, ceiling: float) -> ValueError:
-    """The error of a depth whose contact radius lies beyond the scan's last radius ``ceiling`` (the tables').
-
-    Parameters
-    ----------
-    depth : float
-        The depth (m).
-    layer : Layer
-        The layer.
-    ceiling : float
-        The last radius a scan takes (m).
-
-    Returns
-    -------
-    ValueError
-        Its one line, to raise.
-    """
-    return ValueError(f"depth={depth!r} m is not allowed on {layer.describe()}: its contact radius exceeds a/h = "
-                      f"{LAMBDA_MAX:g}; allowed: depths whose radius is below {ceiling:.6g} m")
-
-
-def _radius_scale(contact: Contact, dgamma: float, depth: float) -> tuple[float, float]:
-    """The scan's range in ``a``: from far below the half-space's pull-off radius to where ``d(a) ≥ depth`` (the
-    largest ``a/h`` of the tables at most)."""
-    E_star, nu, layer = _material(contact)
-    pulled, hertz = _half_space_radii(contact, dgamma, depth)
-    scale = max(pulled, hertz) or _SMALLEST_SCALE
-    low, high = _SCAN_BELOW * scale, 2.0 * scale
-    ceiling = scan_ceiling(layer)
-    while float(branch_depth(min(high, ceiling), contact.indenter, E_star, nu, dgamma, layer)) < depth:
-        if high >= ceiling:
-            raise beyond_tables(depth, layer, ceiling)
-        high *= 2.0
-    return low, min(high, ceiling)
-
-
-def _stable_radius(contact: Contact, dgamma: float, depths: np.ndarray) -> np.ndarray:
-    """The radius on the stable part of the branch of ``dgamma`` at each depth (``nan`` below the least depth)."""
-    E_star, nu, layer = _material(contact)
-    low, high = _radius_scale(contact, dgamma, float(np.max(depths, initial=0.0)))
-    logs = np.linspace(math.log(low), math.log(high), _SCAN_POINTS)
-
-    def depth_of(log_radius: np.ndarray) -> np.ndarray:
-        return branch_depth(np.exp(log_radius), contact.indenter, E_star, nu, dgamma, layer)
-
-    scanned = depth_of(logs)
-    turn = int(np.argmin(scanned))
-    stable, stable_depths = logs[turn:], scanned[turn:]
-    if 0 < turn < logs.size - 1:  # (the least depth itself, not the scan's: every depth above it has a bracket)
-        least, at_least = _least(depth_of, logs, turn)
-        stable = np.concatenate([[at_least], logs[turn + 1:]])
-        stable_depths = np.concatenate([[least], scanned[turn + 1:]])
-    index = np.clip(np.searchsorted(stable_depths, depths), 1, max(stable.size - 1, 1))
-    lower, upper = stable[index - 1], stable[index]
-    for _ in range(_BISECTIONS):
-        middle = 0.5 * (lower + upper)
-        above = depth_of(middle) >= depths
-        lower, upper = np.where(above, lower, middle), np.where(above, middle, upper)
-    radius = np.exp(0.5 * (lower + upper))
-    radius = np.where(depths >= stable_depths[0], radius, np.nan)
-    if dgamma == 0.0:  # (without adhesion the branch d = g(a) starts at d = 0 with a = 0: the first touch)
-        radius = np.where(depths == 0.0, 0.0, radius)
-    return radius
-
-
 def _variables(contact: Contact, depth, radius, dims: tuple[str, ...]) -> dict[str, xr.Variable]:
     """Radius, force, area and ``a/h`` as labelled variables (the force 0 and the radius 0 where ``nan``: no
     contact)."""
-    E_star, nu, layer = _material(contact)
+    E_star, nu, layer = layer_material(contact)
     inside = np.isfinite(radius)
     safe = np.where(inside, radius, 0.0)
     force = np.where(inside, normal_force(depth, safe, contact.indenter, E_star, nu, layer), np.nan)
@@ -311,7 +169,7 @@ def layer_normal_curve(contact: Contact, depths, limits: Limits | None = None) -
     deepest = float(np.max(depth))
     _checked(contact, deepest if deepest > 0.0 else PAPER_D_MAX, f"layer_normal_curve to the depth {deepest!r} m",
              2 * depth.size, CURVE_POINT_STEPS, limits)
-    radius = np.array([_stable_radius(contact, dgamma, depth)
+    radius = np.array([stable_radius(contact, dgamma, depth)
                        for dgamma in (contact.adhesion.dgamma0, contact.adhesion.dgamma1)])
     coords = {"branch": ("branch", ["dgamma0", "dgamma1"], {"units": "1", "long_name": "adhesive branch"}),
               "depth": ("depth", depth, {"units": "m", "long_name": _VARIABLES["depth"][1]})}
@@ -358,49 +216,24 @@ def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201,
     d_max = check_real("d_max", d_max, "a finite number > 0 (m)", lambda value: value > 0.0)
     samples = check_count("samples", samples, 2)
     _checked(contact, d_max, f"layer_indentation_cycle to d_max={d_max!r} m", 3 * samples, CURVE_POINT_STEPS, limits)
-    E_star, nu, layer = _material(contact)
+    E_star, nu, layer = layer_material(contact)
     low, high = contact.adhesion.dgamma0, contact.adhesion.dgamma1
     if high < low:
         raise ValueError(f"contact.adhesion={contact.adhesion!r} is not allowed here; allowed: dgamma1 >= dgamma0")
     loading = np.linspace(0.0, d_max, samples)
-    a_max = float(_stable_radius(contact, low, np.array([d_max]))[0])
+    a_max = float(stable_radius(contact, low, np.array([d_max]))[0])
     unpinned = float(branch_depth(a_max, contact.indenter, E_star, nu, high, layer))
-    least, _ = _jump_off(contact, high)
+    least, _ = branch_jump_off(contact, high)
     pinned = np.linspace(d_max, unpinned, samples)
     shrinking = np.linspace(unpinned, least, samples)
     depth = np.concatenate([loading, pinned, shrinking])
-    radius = np.concatenate([_stable_radius(contact, low, loading), np.full(samples, a_max),
-                             _stable_radius(contact, high, shrinking)])
+    radius = np.concatenate([stable_radius(contact, low, loading), np.full(samples, a_max),
+                             stable_radius(contact, high, shrinking)])
     stage = np.repeat(["loading", "pinned", "shrinking"], samples)
     variables = _variables(contact, depth, radius, ("sample",))
     variables["depth"] = xr.Variable(("sample",), depth, {"units": "m", "long_name": _VARIABLES["depth"][1]})
     dataset = xr.Dataset(variables, coords={"stage": ("sample", stage, {"units": "1", "long_name": "stage"})})
     return _stamped(dataset, contact, d_max, LAYER_CYCLE_CONTENT)
-
-
-def _jump_off(contact: Contact, dgamma: float) -> tuple[float, float]:
-    """The least depth of the branch of ``dgamma`` and its radius: the jump-off under depth control (m, m)."""
-    E_star, nu, layer = _material(contact)
-    if dgamma == 0.0:  # (the branch d = g(a) rises from the first touch: its least depth is 0, at a = 0)
-        return 0.0, 0.0
-    low, high = _radius_scale(contact, dgamma, 0.0)
-    logs = np.linspace(math.log(low), math.log(high), _SCAN_POINTS)
-
-    def depth_of(log_radius):
-        return branch_depth(np.exp(log_radius), contact.indenter, E_star, nu, dgamma, layer)
-
-    least, at_least = _least(depth_of, logs, int(np.argmin(depth_of(logs))))
-    return least, float(np.exp(at_least))
-
-
-def _least(depth_of, logs: np.ndarray, best: int) -> tuple[float, float]:
-    """The least depth near the scan's node ``best`` and its ``ln a`` (Brent's method on the nodes around it)."""
-    from scipy.optimize import minimize_scalar
-
-    best = min(max(best, 1), logs.size - 2)
-    found = minimize_scalar(lambda value: float(depth_of(value)), bracket=(logs[best - 1], logs[best], logs[best + 1]),
-                            method="brent", options={"xtol": 1e-12})
-    return float(found.fun), float(found.x)
 
 
 def layer_pull_off_curve(contact: Contact, thicknesses, limits: Limits | None = None) -> xr.Dataset:
@@ -435,7 +268,7 @@ def layer_pull_off_curve(contact: Contact, thicknesses, limits: Limits | None = 
         contact's scales beyond the double range, a pull-off beyond the tables (``a/h > 64``), or the thicknesses
         beyond ``limits`` (``ResourceLimitError``).
     """
-    E_star, nu, _ = _material(contact)
+    E_star, nu, _ = layer_material(contact)
     h = thickness_axis(thicknesses)
     _checked(contact, PAPER_D_MAX, "layer_pull_off_curve", h.size, PULL_OFF_STEPS, limits)
     if not contact.adhesion.dgamma1 > 0.0:  # (pull_off named its own argument, dgamma=0.0, which the user never gave)

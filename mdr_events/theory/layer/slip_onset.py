@@ -38,8 +38,8 @@ from mdr_events.contact.model import Contact
 from mdr_events.limits import Limits, check_limits
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
-from mdr_events.theory.layer.curves import (_half_space_radii, _jump_off, _material, _stable_radius,
-                                           beyond_tables, scan_ceiling)
+from mdr_events.theory.layer.branch_scan import (beyond_tables, branch_jump_off, half_space_radii, layer_material,
+                                                scan_ceiling, stable_radius)
 from mdr_events.theory.job import rate_independent
 from mdr_events.theory.layer.relations import branch_depth
 from mdr_events.theory.layer.tangential_compliance import check_bonded
@@ -73,7 +73,7 @@ CRITICAL_ANGLE_STEPS = 1e4
 #: tracemalloc for a phase diagram in A, 198 in B, where the half-space's 160 were counted), rounded up.
 ONSET_BYTES_PER_ANGLE = 256.0
 
-#: The scan of a motion ends at the tables' last radius (``curves.scan_ceiling``) or at
+#: The scan of a motion ends at the tables' last radius (``branch_scan.scan_ceiling``) or at
 #: this many times the radius at ``d_max``, whichever comes first: on a layer so thick that its tables' last radius
 #: squared leaves the double range (``h = 1e200``: ``g(64 h)`` overflowed, and the onset was refused though the layer
 #: is the half-space there), the scan still ends where the relations are finite. An onset beyond it lies beyond any
@@ -139,7 +139,7 @@ def check_onset_contact(contact: Contact, what: str, d_max: float | None = None)
 def _kind_checked(contact: Contact, what: str) -> tuple[float, float, Layer]:
     """``(E*, ν, layer)`` of a contact whose kind the slip onset on a layer takes (:func:`has_closed_forms`); else the
     one-line error naming what it is not."""
-    E_star, nu, layer = _material(contact)
+    E_star, nu, layer = layer_material(contact)
     rate_independent(contact, f"{what} on a layer")
     if contact.friction.law != "tau0":
         raise ValueError(f"{what} under contact.friction={contact.friction!r} is not allowed on a layer; allowed: "
@@ -169,13 +169,13 @@ def has_closed_forms(contact: Contact) -> bool:
 def _scan_top(contact: Contact, d_max: float) -> float:
     """The last radius of a motion's scan: the tables' last, or :data:`SCAN_SPAN` times the half-space's radius
     scale at ``d_max`` (its radius there, or its pull-off radius of the larger work), whichever is smaller (m)."""
-    pulled, hertz = _half_space_radii(contact, max(contact.adhesion.dgamma0, contact.adhesion.dgamma1), d_max)
+    pulled, hertz = half_space_radii(contact, max(contact.adhesion.dgamma0, contact.adhesion.dgamma1), d_max)
     return min(scan_ceiling(contact.layer), SCAN_SPAN * max(pulled, hertz))
 
 
 def _motion(contact: Contact, scenario: str, branch: str, adhesion: bool, d_max: float) -> _Motion:
     """The branch the motion follows and ``r(a)`` along it (module docstring)."""
-    E_star, nu, layer = _material(contact)
+    E_star, nu, layer = layer_material(contact)
     tau0, G_star = contact.friction.tau0, contact.elastomer.G_star
     pulling = scenario == "B" and branch == "pull-off"
     dgamma = 0.0 if not adhesion else contact.adhesion.dgamma1 if pulling else contact.adhesion.dgamma0
@@ -194,13 +194,13 @@ def _motion(contact: Contact, scenario: str, branch: str, adhesion: bool, d_max:
         return np.divide(travel, cap, out=np.full(np.shape(travel), math.inf), where=cap > 0.0)
 
     ceiling = _scan_top(contact, d_max)
-    at_d_max = float(_stable_radius(contact, dgamma, np.array([d_max]))[0])
+    at_d_max = float(stable_radius(contact, dgamma, np.array([d_max]))[0])
     if scenario == "A":
-        start = float(_stable_radius(contact, dgamma, np.array([0.0]))[0]) if dgamma > 0.0 else 0.0
+        start = float(stable_radius(contact, dgamma, np.array([0.0]))[0]) if dgamma > 0.0 else 0.0
         start = start if start > 0.0 else _SMALLEST_FRACTION * at_d_max
         ends, never = (start, ceiling), math.inf
     elif pulling:
-        end = _jump_off(contact, dgamma)[1] if dgamma > 0.0 else _SMALLEST_FRACTION * at_d_max
+        end = branch_jump_off(contact, dgamma)[1] if dgamma > 0.0 else _SMALLEST_FRACTION * at_d_max
         ends, never = (at_d_max, end), -math.inf
     else:
         ends, never = (at_d_max, ceiling), math.inf
@@ -326,7 +326,7 @@ def critical_angle_on_layer(contact: Contact, scenario: str, adhesion: bool, fin
             "final_depth", final_depth, f"a finite depth > d_max = {depth!r} m", lambda value: value > depth)
     motion = _motion(contact, "A" if scenario == "A" else "B", "indentation", adhesion, depth)
     dgamma = contact.adhesion.dgamma0 if adhesion else 0.0
-    radius = float(_stable_radius(contact, dgamma, np.array([end]))[0])
+    radius = float(stable_radius(contact, dgamma, np.array([end]))[0])
     last = float(motion.ratio_of(np.array([math.log(radius)]))[0])
     before = motion.ratio[motion.logs < math.log(radius)]
     return float(np.degrees(np.arctan(max(last, float(before.max(initial=last))))))
