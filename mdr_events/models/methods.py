@@ -119,7 +119,7 @@ class Discrete:
     def check_case_count(self, count: int, limits: Limits) -> None:
         """The least a run of ``count`` cases takes, checked before they are built (a million angles were built, for
         minutes and a GiB, before the run's own check): without ``dt``, the shared time grid's ``n_steps + 1``
-        samples per case, as :func:`~mdr_events.models.discrete.check_discrete_size` counts them.
+        samples per case, as ``models.discrete.check_discrete_size`` counts them.
 
         Parameters
         ----------
