@@ -76,7 +76,7 @@ _declare_registrars(
              "mdr_events.analysis.validate", "mdr_events.analysis.convergence_study",
              "mdr_events.analysis.universal_map", "mdr_events.analysis.fit", "mdr_events.analysis.fit_data",
              "mdr_events.analysis.sweep", "mdr_events.analysis.layer_angles", "mdr_events.dem.runner"),
-    figures=("mdr_events.plotting",))
+    figures=("mdr_events.plotting.fit", "mdr_events.plotting.universal"))
 
 
 def __getattr__(name: str):

@@ -23,20 +23,21 @@ the method     :func:`method`                              :class:`~mdr_events.D
 from __future__ import annotations
 
 import dataclasses
-from typing import Any, Iterable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any, Iterable, Mapping, Sequence
 
 from mdr_events.validation import as_float
 from mdr_events.contact import Contact
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import FlatPunch, PowerLaw
-from mdr_events.io.candidates import read_profile_table
 from mdr_events.limits import DEFAULT_LIMITS, Limits, parse_limit
-from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
-from mdr_events.models.methods import Method, as_method
-from mdr_events.models.motion import FIGURE_ANGLES, Paths, Scenario
-from mdr_events.models.paths import Path
 from mdr_events.parameters import PARAMETER_UNITS, PRESETS, Parameters, from_preset
+
+if TYPE_CHECKING:  # (the models and the table reader are imported where used: a verb's --help loads none of them)
+    from mdr_events.models.indenters import SimulatedProfile
+    from mdr_events.models.methods import Method
+    from mdr_events.models.motion import Paths, Scenario
+    from mdr_events.models.paths import Path
 
 __all__ = ["parameters", "indenter", "friction", "layer", "limits", "path", "contact", "scenario", "paths", "method",
            "DEFAULT_PRESET"]
@@ -92,7 +93,11 @@ def indenter(power_law: Sequence[float] | None = None, radius: float | None = No
     ValueError, TypeError
         The indenter's own message (a value it refuses, a table that cannot be read).
     """
+    from mdr_events.models.indenters import check_simulated_profile
+
     if table is not None:
+        from mdr_events.io.candidates import read_profile_table
+
         profile = read_profile_table(table)
     elif radius is not None:
         profile = FlatPunch(radius)
@@ -154,6 +159,8 @@ def path(waypoints: Sequence[Sequence[float]], speed: float | None, params: Para
     ValueError, TypeError
         The path's own message.
     """
+    from mdr_events.models.paths import Path
+
     return Path(waypoints, params.v if speed is None else speed)
 
 
@@ -173,12 +180,16 @@ def scenario(name: str, alpha: float | Sequence[float] | None, params: Parameter
     ValueError, TypeError
         An unknown scenario, or angles :class:`~mdr_events.Scenario` refuses.
     """
+    from mdr_events.models.motion import FIGURE_ANGLES, Scenario
+
     return Scenario(name, FIGURE_ANGLES if alpha is None else alpha, params.d_max, params.v)
 
 
 def paths(custom: Path, params: Parameters) -> Paths:
     """One custom path, labelled ``"path 1"``, whose run the parameters' ``d_max`` and ``v`` name (its checks and
     ``param_d_max``, ``param_v``), as they always did (:meth:`~mdr_events.Paths.named_by`)."""
+    from mdr_events.models.motion import Paths
+
     return Paths.named_by(custom, params.d_max, params.v)
 
 
@@ -191,4 +202,6 @@ def method(name: str, options: Mapping[str, Any]) -> Method:
     ValueError, TypeError
         An unknown method, an option of another method or a value the method refuses.
     """
+    from mdr_events.models.methods import as_method
+
     return as_method(name, options)
