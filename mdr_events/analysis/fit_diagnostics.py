@@ -27,7 +27,6 @@ import sys
 from typing import Mapping, NamedTuple, Sequence
 
 import numpy as np
-from scipy import stats
 
 from mdr_events.analysis.fit_data import QUANTITY_UNITS, Measurement, ModelCurves, estimate_noise
 from mdr_events.analysis.fit_parameters import LOG_SCALED, FreeParameters
@@ -263,6 +262,8 @@ def natural_intervals(free: FreeParameters, theta: np.ndarray, standard_error: n
     value, standard_error, lower, upper : numpy.ndarray
         In natural units; a log-scaled parameter's interval is asymmetric, ``(0, inf)`` where the data do not see it.
     """
+    from scipy import stats  # (only here: scipy.stats costs the verbs that load the fit's schema ~0.2 s)
+
     quantile = float(stats.t.ppf(0.5 + CONFIDENCE / 2.0, max(dof, 1)))
     value = free.to_natural(theta)
     natural_error, lower, upper = [], [], []

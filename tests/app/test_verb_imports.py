@@ -4,15 +4,15 @@ most of a small run's time.
 Each check runs the verb in a fresh interpreter (this one has imported everything) and reads ``sys.modules`` after
 it. What may not be loaded, and why it is not needed:
 
-- ``distributed``: xarray's ``to_netcdf`` asks for dask's scheduler on every write, importing dask.distributed for a
-  dataset in memory; no verb but a sweep on a cluster uses it (:func:`mdr_events.io.files.netcdf_writer`);
 - ``scipy.stats``: the fit's Student t quantile alone uses it, not the fit's schema every result file is checked
   against (:mod:`mdr_events.analysis.fit_diagnostics`);
 - a verb's ``--help`` lists its options: no SymPy, xarray, dask or SciPy (:mod:`mdr_events.app.inputs` imports the
   models where a value is read).
 
 ``dask`` itself is loaded by xarray on the first array it wraps (its check whether the array is a dask array), so
-a verb that writes a dataset loads it whatever this package imports; it is not among the modules checked there.
+a verb that writes a dataset loads it whatever this package imports; and xarray's ``to_netcdf`` asks for dask's
+scheduler on every write, importing dask.distributed for a dataset in memory: neither is among the modules a run is
+checked for (a ``--help`` loads neither).
 """
 
 from __future__ import annotations
@@ -22,12 +22,10 @@ import subprocess
 import sys
 import textwrap
 
-import numpy as np
 import pytest
-import xarray as xr
 
 #: What a run of ``phase-diagram`` or ``simulate`` does not use.
-NOT_USED_BY_A_RUN = ("distributed", "scipy.stats")
+NOT_USED_BY_A_RUN = ("scipy.stats",)
 #: What a verb's ``--help`` does not use (listing the options of phase-diagram, sweep, run, reproduce, derive).
 NOT_USED_BY_HELP = ("distributed", "dask", "scipy", "scipy.stats", "sympy", "xarray", "matplotlib")
 
@@ -54,7 +52,7 @@ def loaded_after(argv: list[str], cwd) -> set[str]:
     ["phase-diagram", "--scenario", "A"],
     ["simulate", "--scenario", "A", "--alpha", "20", "--method", "continuum"],
 ], ids=["phase-diagram", "simulate"])
-def test_a_run_loads_neither_distributed_nor_scipy_stats(tmp_path, argv):
+def test_a_run_loads_no_scipy_stats(tmp_path, argv):
     loaded = loaded_after([*argv, "--out", str(tmp_path)], tmp_path)
     assert (tmp_path / f"{'phase_diagram_A' if argv[0] == 'phase-diagram' else 'simulation_A_continuum'}.nc").is_file()
     assert "xarray" in loaded  # (the run did write its dataset through xarray)
@@ -65,29 +63,3 @@ def test_a_run_loads_neither_distributed_nor_scipy_stats(tmp_path, argv):
 def test_a_verbs_help_loads_no_heavy_library(tmp_path, verb):
     loaded = loaded_after([verb, "--help"], tmp_path)
     assert not loaded & set(NOT_USED_BY_HELP), sorted(loaded & set(NOT_USED_BY_HELP))
-
-
-def test_a_file_is_the_same_whether_distributed_is_loaded_or_not(tmp_path):
-    """Where dask.distributed is loaded (a sweep on a cluster) xarray asks its scheduler as before; either way a
-    dataset in memory is written the same, byte for byte."""
-    from mdr_events.io.files import netcdf_writer
-
-    dataset = xr.Dataset({"force": (("time",), np.linspace(0.0, 1.0, 7))}, attrs={"note": "a dataset in memory"})
-    code = textwrap.dedent(f"""
-        import sys
-        import numpy as np, xarray as xr
-        from mdr_events.io.files import netcdf_writer
-        if sys.argv[1] == "with":
-            import distributed
-        dataset = xr.Dataset({{"force": (("time",), np.linspace(0.0, 1.0, 7))}}, attrs={{"note": "a dataset in memory"}})
-        netcdf_writer(dataset)(sys.argv[2])
-        assert ("distributed" in sys.modules) == (sys.argv[1] == "with"), sys.argv[1]
-    """)
-    files = {}
-    for case in ("with", "without"):
-        files[case] = tmp_path / f"{case}.nc"
-        done = subprocess.run([sys.executable, "-c", code, case, str(files[case])], capture_output=True, text=True,
-                              timeout=300, cwd=tmp_path)
-        assert done.returncode == 0, done.stderr
-    netcdf_writer(dataset)(str(tmp_path / "here.nc"))
-    assert files["with"].read_bytes() == files["without"].read_bytes() == (tmp_path / "here.nc").read_bytes()
