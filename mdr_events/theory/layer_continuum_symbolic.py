@@ -27,7 +27,6 @@ The relations are cached beside the paper's (:func:`continuum_cache_path`), keye
 from __future__ import annotations
 
 import functools
-import hashlib
 from pathlib import Path
 
 import sympy as sp
@@ -60,7 +59,8 @@ CONTINUUM_KEYS = ("layer_continuum_tangential_factor", "layer_continuum_tangenti
                   "layer_continuum_branch_slope", "layer_continuum_normal_force_slope",
                   "layer_continuum_tangential_factor_pair", "layer_continuum_branch_pair")
 
-_SOURCE_DIGEST = hashlib.sha256(Path(__file__).read_bytes() + sp.__version__.encode()).hexdigest()[:16]
+#: Hash of this module's source and SymPy's version: the key of :func:`continuum_cache_path`.
+_SOURCE_DIGEST = symbolic.source_digest(__file__)
 
 
 def continuum_cache_path() -> Path | None:
@@ -71,8 +71,7 @@ def continuum_cache_path() -> Path | None:
     pathlib.Path or None
         ``layer-continuum-relations-<hash>.pickle`` in the cache directory, or ``None``.
     """
-    path = symbolic.cache_path()
-    return None if path is None else path.parent / f"layer-continuum-relations-{_SOURCE_DIGEST}.pickle"
+    return symbolic.sibling_cache_path("layer-continuum-relations", _SOURCE_DIGEST)
 
 
 @functools.cache
@@ -84,14 +83,11 @@ def derive_continuum_model() -> dict[str, Relation]:
     dict of str to Relation
         The relations by key.
     """
-    built = symbolic._cached("layer_continuum_model", lambda: list(continuum_model_afresh().values()),
-                             continuum_cache_path)
-    return {rel.key: rel for rel in built}
+    return symbolic.cached_relations("layer_continuum_model", continuum_model_afresh, continuum_cache_path)
 
 
-def _check(condition: bool, what: str) -> None:
-    if not condition:
-        raise RuntimeError(f"layer continuum derivation: {what}")
+#: Raises ``RuntimeError`` where a step of the derivation does not hold.
+_check = symbolic.derivation_check("layer continuum derivation")
 
 
 def _factor_symbols(expr: sp.Expr, function, value: sp.Symbol, slope: sp.Symbol, at: sp.Expr) -> sp.Expr:

@@ -28,7 +28,6 @@ The relations are cached beside the paper's (:func:`layer_cache_path`), keyed by
 from __future__ import annotations
 
 import functools
-import hashlib
 from pathlib import Path
 
 import sympy as sp
@@ -62,7 +61,7 @@ LAYER_KEYS = ("layer_compliance_bonded", "layer_compliance_frictionless", "layer
               "layer_thin_film_pull_off")
 
 #: Hash of this module's source and SymPy's version: the key of :func:`layer_cache_path`.
-_SOURCE_DIGEST = hashlib.sha256(Path(__file__).read_bytes() + sp.__version__.encode()).hexdigest()[:16]
+_SOURCE_DIGEST = symbolic.source_digest(__file__)
 
 
 def layer_cache_path() -> Path | None:
@@ -73,8 +72,7 @@ def layer_cache_path() -> Path | None:
     pathlib.Path or None
         ``layer-relations-<hash>.pickle`` in the cache directory, or ``None`` (``MDR_EVENTS_NO_CACHE=1``).
     """
-    path = symbolic.cache_path()
-    return None if path is None else path.parent / f"layer-relations-{_SOURCE_DIGEST}.pickle"
+    return symbolic.sibling_cache_path("layer-relations", _SOURCE_DIGEST)
 
 
 @functools.cache
@@ -86,8 +84,7 @@ def derive_layer_model() -> dict[str, Relation]:
     dict of str to Relation
         The relations by key, in derivation order.
     """
-    built = symbolic._cached("layer_model", lambda: list(layer_model_afresh().values()), layer_cache_path)
-    return {rel.key: rel for rel in built}
+    return symbolic.cached_relations("layer_model", layer_model_afresh, layer_cache_path)
 
 
 def layer_model_afresh() -> dict[str, Relation]:
@@ -159,9 +156,8 @@ def love_compliance(base: str) -> sp.Expr:
     return sp.simplify((u_z.subs(z, 0).subs(solution) / (2 * (1 - nu) * P)).rewrite(sp.exp))
 
 
-def _check(condition: bool, what: str) -> None:
-    if not condition:
-        raise RuntimeError(f"layer derivation: {what}")
+#: Raises ``RuntimeError`` where a step of the derivation does not hold.
+_check = symbolic.derivation_check("layer derivation")
 
 
 def _derive_half_space(add, bonded: sp.Expr, frictionless: sp.Expr) -> None:

@@ -20,7 +20,6 @@ pressure and a shear traction ``∝ e^{iξx}`` is solved from the Papkovich–Ne
 from __future__ import annotations
 
 import functools
-import hashlib
 from pathlib import Path
 
 import sympy as sp
@@ -46,7 +45,8 @@ TANGENTIAL_KEYS = ("layer_compliance_longitudinal_bonded", "layer_compliance_tra
                    "layer_shear_winkler_modulus", "layer_shear_winkler_stiffness", "layer_tangential_stiffness",
                    "layer_thin_sliding_cap", "layer_thin_onset_depth_A")
 
-_SOURCE_DIGEST = hashlib.sha256(Path(__file__).read_bytes() + sp.__version__.encode()).hexdigest()[:16]
+#: Hash of this module's source and SymPy's version: the key of :func:`tangential_cache_path`.
+_SOURCE_DIGEST = symbolic.source_digest(__file__)
 
 
 def tangential_cache_path() -> Path | None:
@@ -57,8 +57,7 @@ def tangential_cache_path() -> Path | None:
     pathlib.Path or None
         ``layer-tangential-relations-<hash>.pickle`` in the cache directory, or ``None``.
     """
-    path = symbolic.cache_path()
-    return None if path is None else path.parent / f"layer-tangential-relations-{_SOURCE_DIGEST}.pickle"
+    return symbolic.sibling_cache_path("layer-tangential-relations", _SOURCE_DIGEST)
 
 
 @functools.cache
@@ -70,14 +69,11 @@ def derive_tangential_model() -> dict[str, Relation]:
     dict of str to Relation
         The relations by key.
     """
-    built = symbolic._cached("layer_tangential_model", lambda: list(tangential_model_afresh().values()),
-                             tangential_cache_path)
-    return {rel.key: rel for rel in built}
+    return symbolic.cached_relations("layer_tangential_model", tangential_model_afresh, tangential_cache_path)
 
 
-def _check(condition: bool, what: str) -> None:
-    if not condition:
-        raise RuntimeError(f"tangential layer derivation: {what}")
+#: Raises ``RuntimeError`` where a step of the derivation does not hold.
+_check = symbolic.derivation_check("tangential layer derivation")
 
 
 def top_compliance(base: str) -> dict[str, sp.Expr]:

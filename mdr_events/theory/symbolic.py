@@ -48,6 +48,10 @@ __all__ = [
     "derive",
     "derive_afresh",
     "cache_path",
+    "cached_relations",
+    "derivation_check",
+    "sibling_cache_path",
+    "source_digest",
     "relation",
     "UnknownRelationError",
     "relations",
@@ -330,7 +334,45 @@ def _single_positive(solutions: list[sp.Expr], what: str) -> sp.Expr:
 #: Hash of this module's source as it was imported, and of the SymPy version: the cache key. Taken at
 #: import, not when the cache is used, so that a process never files the derivations of the code it
 #: runs under the name of a source edited since.
-_SOURCE_DIGEST = hashlib.sha256(Path(__file__).read_bytes() + sp.__version__.encode()).hexdigest()[:16]
+def source_digest(source_file: str | Path) -> str:
+    """The key of the relations a module of derivations files: a hash of its source and of SymPy's version.
+
+    A module takes it when it is imported, not when its cache is used, so that a process never files the derivations
+    of the code it runs under the name of a source edited since.
+
+    Parameters
+    ----------
+    source_file : str or pathlib.Path
+        The module's file (its ``__file__``).
+
+    Returns
+    -------
+    str
+        16 hexadecimal digits.
+    """
+    return hashlib.sha256(Path(source_file).read_bytes() + sp.__version__.encode()).hexdigest()[:16]
+
+
+_SOURCE_DIGEST = source_digest(__file__)
+
+
+def sibling_cache_path(stem: str, digest: str) -> Path | None:
+    """The cache file of a sibling module of derivations, beside :func:`cache_path` (``None``: caching is off).
+
+    Parameters
+    ----------
+    stem : str
+        The file's name before its key (``"layer-relations"``, ...).
+    digest : str
+        The sibling's :func:`source_digest`.
+
+    Returns
+    -------
+    pathlib.Path or None
+        ``<stem>-<digest>.pickle`` in the cache directory, or ``None``.
+    """
+    root = cache_directory()
+    return None if root is None else root / f"{stem}-{digest}.pickle"
 
 
 def cache_path() -> Path | None:
@@ -346,8 +388,7 @@ def cache_path() -> Path | None:
     pathlib.Path or None
         The cache file ``relations-<hash>.pickle`` in that directory, or ``None``.
     """
-    root = cache_directory()
-    return None if root is None else root / f"relations-{_SOURCE_DIGEST}.pickle"
+    return sibling_cache_path("relations", _SOURCE_DIGEST)
 
 
 def _fields(rel: Relation) -> tuple:
@@ -376,13 +417,54 @@ def _cached(name: str, build: Callable[[], list[Relation]],
     return relations_built
 
 
+def cached_relations(name: str, afresh: Callable[[], dict[str, Relation]],
+                     where: Callable[[], Path | None] | None = None) -> dict[str, Relation]:
+    """The relations ``afresh()`` derives, by key in derivation order, read from the cache file if it holds ``name``
+    (:func:`_cached`; ``where`` gives a sibling module's own file, default :func:`cache_path`).
+
+    Parameters
+    ----------
+    name : str
+        The derivation's name in the cache file.
+    afresh : callable
+        Derives the relations with SymPy, by key.
+    where : callable, optional
+        The cache file (``None``: caching is off); default :func:`cache_path`.
+
+    Returns
+    -------
+    dict of str to Relation
+        The relations by key.
+    """
+    return {rel.key: rel for rel in _cached(name, lambda: list(afresh().values()), where)}
+
+
+def derivation_check(what: str) -> Callable[[bool, str], None]:
+    """A derivation's check of its own steps: raises ``RuntimeError("<what>: <step>")`` where a step's condition fails.
+
+    Parameters
+    ----------
+    what : str
+        The derivation's name in the message.
+
+    Returns
+    -------
+    callable
+        ``check(condition, step)``.
+    """
+    def check(condition: bool, step: str) -> None:
+        if not condition:
+            raise RuntimeError(f"{what}: {step}")
+    return check
+
+
 @functools.cache
 def derive() -> dict[str, Relation]:
     """Derive every relation once per process (and once per cache, see :func:`cache_path`).
 
     Returns the relations by key in derivation order.
     """
-    return {rel.key: rel for rel in _cached("model", lambda: list(derive_afresh().values()))}
+    return cached_relations("model", derive_afresh)
 
 
 #: What a derivation section is handed: it files one relation (in derivation order) and returns it.
@@ -616,7 +698,7 @@ def derive_power_law_model() -> dict[str, Relation]:
     for the JKR-type problem of power-law punches). The radius at a given depth has no closed form for
     general ``n`` (nor has the slip onset with adhesion, (18)): the analytic layer solves for it.
     """
-    return {rel.key: rel for rel in _cached("power_law_model", lambda: list(power_law_model_afresh().values()))}
+    return cached_relations("power_law_model", power_law_model_afresh)
 
 
 def power_law_model_afresh() -> dict[str, Relation]:
@@ -733,7 +815,7 @@ def derive_friction_model() -> dict[str, Relation]:
     ``μ (F_N(d) − F_N(d − u_x G*/(μ E*)))`` (Cattaneo 1938, Mindlin 1949; for any profile, Jäger 1998 and
     Ciavarella 1998): the tangential curve is the normal one, shifted and scaled.
     """
-    return {rel.key: rel for rel in _cached("friction_model", lambda: list(friction_model_afresh().values()))}
+    return cached_relations("friction_model", friction_model_afresh)
 
 
 def friction_model_afresh() -> dict[str, Relation]:
@@ -794,8 +876,7 @@ def derive_adhesive_friction_model() -> dict[str, Relation]:
     Cattaneo–Mindlin's of the compressed zone, free of ``Δγ`` and of ``a``; full slip is ``τ0 π a² + μ F_N^H(d)``,
     ``F_N^H(d) = F_N(d, a) + 2E* ∫_{x_c}^a (g − d) dξ`` the compressed springs' push alone.
     """
-    return {rel.key: rel for rel in _cached("adhesive_friction_model",
-                                            lambda: list(adhesive_friction_model_afresh().values()))}
+    return cached_relations("adhesive_friction_model", adhesive_friction_model_afresh)
 
 
 def adhesive_friction_model_afresh() -> dict[str, Relation]:
@@ -1044,8 +1125,7 @@ def derive_rate_dependent_adhesion() -> dict[str, Relation]:
     a constant depth ``d < 0`` beyond Kendall's pull-off, ``n = 1``, the receding edge's time to reach ``a`` from
     ``a0`` is a closed form, and its time to detach (``a → 0``) is finite.
     """
-    return {rel.key: rel for rel in _cached("rate_dependent_adhesion",
-                                            lambda: list(rate_dependent_adhesion_afresh().values()))}
+    return cached_relations("rate_dependent_adhesion", rate_dependent_adhesion_afresh)
 
 
 def rate_dependent_adhesion_afresh() -> dict[str, Relation]:

@@ -291,3 +291,39 @@ def test_the_cache_holds_exactly_what_sympy_derives(tmp_path, monkeypatch):
     assert [rel.key for rel in rebuilt] == list(fresh)
     monkeypatch.setenv("MDR_EVENTS_NO_CACHE", "1")
     assert symbolic.cache_path() is None
+
+
+def test_each_module_of_derivations_has_its_own_cache_file_keyed_by_its_source(tmp_path, monkeypatch):
+    """The paper's relations and each sibling module's (the layer's three) sit in one directory, each file named by
+    its stem and a hash of its own source and SymPy's version: an edited source is never read from an old file."""
+    from mdr_events.theory import layer_continuum_symbolic, layer_symbolic, layer_tangential_symbolic
+    monkeypatch.setenv("MDR_EVENTS_CACHE_DIR", str(tmp_path))
+    paths = {symbolic.cache_path(), layer_symbolic.layer_cache_path(), layer_tangential_symbolic.tangential_cache_path(),
+             layer_continuum_symbolic.continuum_cache_path()}
+    assert len(paths) == 4 and {path.parent for path in paths} == {tmp_path}
+    assert {path.name.rsplit("-", 1)[0] for path in paths} == {
+        "relations", "layer-relations", "layer-tangential-relations", "layer-continuum-relations"}
+    assert layer_symbolic.layer_cache_path().name == f"layer-relations-{layer_symbolic._SOURCE_DIGEST}.pickle"
+    source = tmp_path / "module.py"
+    source.write_text("x = 1\n")
+    before = symbolic.source_digest(source)
+    source.write_text("x = 2\n")
+    assert symbolic.source_digest(source) != before and len(before) == 16
+    monkeypatch.setenv("MDR_EVENTS_NO_CACHE", "1")
+    assert symbolic.sibling_cache_path("layer-relations", before) is None
+
+
+def test_a_sibling_s_relations_are_read_back_from_its_own_file(tmp_path, monkeypatch):
+    """:func:`cached_relations` files what a derivation gives under its name in the file ``where`` names and reads it
+    back without deriving again; a failed step of a derivation names the derivation and the step."""
+    monkeypatch.setenv("MDR_EVENTS_CACHE_DIR", str(tmp_path))
+    fresh = symbolic.derive_afresh()
+    where = lambda: symbolic.sibling_cache_path("probe-relations", "0" * 16)  # noqa: E731
+    stored = symbolic.cached_relations("probe", lambda: fresh, where)
+    assert list(stored) == list(fresh) and where().exists() and not symbolic.cache_path().exists()
+    loaded = symbolic.cached_relations("probe", lambda: pytest.fail("the cache was not used"), where)
+    assert [rel.rhs for rel in loaded.values()] == [rel.rhs for rel in fresh.values()]
+    check = symbolic.derivation_check("probe derivation")
+    check(True, "holds")
+    with pytest.raises(RuntimeError, match="^probe derivation: the half-space limit$"):
+        check(False, "the half-space limit")
