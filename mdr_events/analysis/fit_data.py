@@ -23,14 +23,14 @@ import xarray as xr
 
 from mdr_events.analysis.validate import one_path, one_path_job, reference_of, times_from_contact
 from mdr_events.contact import Contact
-from mdr_events.contact.friction import TAU0, FrictionLaw, friction_attrs
-from mdr_events.contact.layer import HALF_SPACE, Layer
+from mdr_events.contact.friction import friction_attrs
 from mdr_events.io.agreement import Integrated, RoundOff, register_accuracy
 from mdr_events.io.candidates import Candidate
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models.continuum import PathSolution, Tolerances, evaluate, solve_path
-from mdr_events.models.indenters import SimulatedProfile, profile_attrs
+from mdr_events.models.indenters import profile_attrs
+from mdr_events.models.kernel_model import KernelModel, as_kernel_model
 from mdr_events.models.methods import Continuum
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
@@ -143,13 +143,14 @@ def shifted_path(path: Path, depth_offset: float) -> Path:
     return Path(path.waypoints - np.array([0.0, depth_offset]), path.speed, path.alpha)
 
 
-def model_curves(params: Parameters, path: Path, times: np.ndarray, tolerances: Tolerances,
-                 limits: Limits, quantities: Sequence[str], profile: SimulatedProfile = None,
-                 friction: FrictionLaw = TAU0, layer: Layer = HALF_SPACE) -> ModelCurves:
-    """The model's curves at ``times`` (s on the path's clock) by the module's rule out of contact: 0 where
-    the indenter is out of the elastomer, ``nan`` (left out) before a path that starts inside it and after
-    one that ends in contact (the indenter ``profile``; ``None``: the paraboloid of ``params.R``; on ``layer``)."""
-    return curves_of(solve_path(params, path, tolerances, limits, profile, friction, layer=layer), path, times,
+def model_curves(model: KernelModel | Parameters, path: Path, times: np.ndarray, tolerances: Tolerances,
+                 limits: Limits, quantities: Sequence[str]) -> ModelCurves:
+    """The curves of ``model`` (:class:`~mdr_events.models.kernel_model.KernelModel`; a ``Parameters`` alone the
+    paper's model) at ``times`` (s on the path's clock) by the module's rule out of contact: 0 where the indenter is
+    out of the elastomer, ``nan`` (left out) before a path that starts inside it and after one that ends in
+    contact."""
+    params, profile, friction, adhesion, layer = as_kernel_model(model)
+    return curves_of(solve_path(params, path, tolerances, limits, profile, friction, adhesion, layer), path, times,
                      quantities)
 
 
@@ -225,8 +226,8 @@ def synthetic_measurement(contact: Contact | Parameters, motion, alpha: float | 
     limits = check_limits(limits)
     times, quantities, relative_noise, time_shift = _synthetic_arguments(times, quantities, relative_noise, time_shift,
                                                                          seed, limits)
-    curves = model_curves(params, the_path, times, tolerances, limits, tuple(quantities), profile, friction,
-                          job.contact.layer).values
+    curves = model_curves(KernelModel(params, profile, friction, layer=job.contact.layer), the_path, times, tolerances,
+                          limits, tuple(quantities)).values
     rng = np.random.default_rng(seed)
     data = {}
     for name in quantities:

@@ -27,6 +27,7 @@ from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.limits import Limits
 from mdr_events.models.continuum import Tolerances
+from mdr_events.models.kernel_model import KernelModel
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
@@ -74,8 +75,9 @@ class Problem:
             params, time_offset, depth_offset = self.free.model(theta)
             friction = self.free.friction_at(theta)
             path = shifted_path(self.path_of(params), depth_offset)
-            return model_curves(params, path, self.measurement.path_time - time_offset, self.tolerances,
-                                self.limits, self.quantities, self.profile, friction, self.free.layer_at(theta))
+            model = KernelModel(params, self.profile, friction, layer=self.free.layer_at(theta))
+            return model_curves(model, path, self.measurement.path_time - time_offset, self.tolerances, self.limits,
+                                self.quantities)
         except (ValueError, RuntimeError) as error:
             trial = ", ".join(f"{name}={value:.6g}" for name, value in zip(self.free.names,
                                                                              self.free.to_natural(theta)))

@@ -73,12 +73,12 @@ from mdr_events.models.paths import Path
 from mdr_events.models.spring_groups import SpringGroups, scale_bits, scaled, unscaled
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
-from mdr_events.contact.indenters import PowerLaw
 from mdr_events.contact.adhesion import Adhesion, AdhesionLaw, RateDependentAdhesion, kernel_of, law_of
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.models.rate_springs import rate_edge_counts
 from mdr_events.models.spring_media import HalfSpaceSprings, Springs, springs_of
 from mdr_events.contact.layer import HALF_SPACE, Layer
+from mdr_events.models.kernel_model import KernelModel, as_kernel_model
 
 __all__ = ["run_discrete", "paraboloid_profile", "MIN_SPRINGS_IN_CONTACT", "Thresholds", "THRESHOLD_RULES",
            "EDGE_RULES", "spring_thresholds", "check_thresholds_known", "threshold_counts"]
@@ -539,15 +539,11 @@ def check_discrete_size(params: Parameters, paths: list[Path], dx: float, dt: fl
 
 
 def run_discrete(
-    params: Parameters,
+    model: KernelModel | Parameters,
     paths: list[Path],
     dx: float,
     dt: float,
-    profile: PowerLaw | Callable[[np.ndarray], np.ndarray] | None = None,
     limits: Limits = DEFAULT_LIMITS,
-    friction: FrictionLaw | str | None = None,
-    adhesion: AdhesionLaw | None = None,
-    layer: Layer = HALF_SPACE,
 ) -> dict[str, np.ndarray]:
     r"""Run the spring model for several paths on a common time grid.
 
@@ -563,7 +559,24 @@ def run_discrete(
 
     Parameters
     ----------
-    params : Parameters
+    model : KernelModel or Parameters
+        The physical model (:class:`~mdr_events.models.kernel_model.KernelModel`; a :class:`~mdr_events.Parameters`
+        alone is the paper's model of its values), its parts read as follows.
+
+        - ``params``: the material, ``R``, ``τ0``, the works of adhesion.
+        - ``profile``: a :class:`~mdr_events.contact.indenters.PowerLaw` (``n >= 1``), a flat punch, a table, or the
+          springs' profile ``g(x)`` (vectorised); default the paraboloid (4).
+        - ``friction``: the cap on the springs' shifts (:mod:`mdr_events.contact.friction`); default the paper's
+          ``"tau0"``. A law with Coulomb's part gives every spring its own cap and is stepped spring by spring
+          (:func:`_run_case_per_spring`).
+        - ``adhesion``: the law whose thresholds the springs follow (:data:`THRESHOLD_RULES`); default the paper's
+          law of ``params.dgamma0`` and ``params.dgamma1`` (:func:`~mdr_events.contact.adhesion.law_of`).
+        - ``layer``: the elastomer's body (default the half-space). On a layer of finite thickness the springs are
+          those of the generalized MDR (:mod:`~mdr_events.models.spring_media`): ``k(x_j) Δx`` and ``k_t(x_j) Δx``
+          over the layer's ``g(x)``, Heß's rule with ``Δl = sqrt(4π a Δγ/K'(a))``, the caps ``π a² τ0/K_t(a)`` and
+          ``μ (k/k_t)(d − g)``, ``F_N = 2Σ k(x_j) Δx (d − g(x_j))``, ``F_x = 2Σ k_t(x_j) Δx u_j`` (the groups' sums
+          weighted by integer ``k_t(x_j)/G*``). It takes the paraboloid or a power law and the paper's adhesion law;
+          on a frictionless base only paths without tangential motion.
     paths : list of Path
         One case per path; time runs from each path's first contact. A path
         may enter the elastomer several times (see the module docstring).
@@ -571,25 +584,8 @@ def run_discrete(
         Spring spacing Δx in m.
     dt : float
         Time step in s (the grid is ``k dt``, shared by all cases).
-    profile : PowerLaw or callable, optional
-        The indenter: a :class:`~mdr_events.contact.indenters.PowerLaw` (``n >= 1``), or its springs' profile ``g(x)``
-        (vectorised); default the paraboloid (4).
     limits : Limits, optional
         Refuse, before allocating, a run whose steps, springs or memory exceed them (:func:`check_discrete_size`).
-    friction : FrictionLaw or str, optional
-        The cap on the springs' shifts (:mod:`mdr_events.contact.friction`); default the paper's ``"tau0"``. A law with
-        Coulomb's part gives every spring its own cap and is stepped spring by spring
-        (:func:`_run_case_per_spring`).
-    adhesion : Adhesion, optional
-        The adhesion law, whose thresholds the springs follow (:data:`THRESHOLD_RULES`); default the paper's law of
-        ``params.dgamma0`` and ``params.dgamma1`` (:func:`~mdr_events.contact.adhesion.law_of`).
-    layer : Layer, optional
-        The elastomer's body (default the half-space). On a layer of finite thickness the springs are those of the
-        generalized MDR (:mod:`~mdr_events.models.spring_media`): ``k(x_j) Δx`` and ``k_t(x_j) Δx`` over the layer's
-        ``g(x)``, Heß's rule with ``Δl = sqrt(4π a Δγ/K'(a))``, the caps ``π a² τ0/K_t(a)`` and ``μ (k/k_t)(d − g)``,
-        ``F_N = 2Σ k(x_j) Δx (d − g(x_j))``, ``F_x = 2Σ k_t(x_j) Δx u_j`` (the groups' sums weighted by
-        integer ``k_t(x_j)/G*``). It takes the paraboloid or a power law and the paper's adhesion law; on a
-        frictionless base only paths without tangential motion.
 
     Returns
     -------
@@ -600,6 +596,7 @@ def run_discrete(
         ``tangential_displacement``, ``normal_force``, ``tangential_force``,
         ``contact_radius``, ``sliding_fraction``, ``springs_in_contact``.
     """
+    params, profile, friction, adhesion, layer = as_kernel_model(model)
     indenter = indenters.check_simulated_profile(profile) if not callable(profile) else None
     friction, adhesion = as_friction_law(friction), law_of(params, adhesion)
     check_thresholds_known(adhesion)

@@ -12,6 +12,7 @@ from mdr_events.contact import Contact
 from mdr_events.contact.adhesion import AdhesionLaw
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.kernel_model import KernelModel
 from mdr_events.models.motion import Motion
 from mdr_events.parameters import Parameters
 
@@ -41,6 +42,11 @@ class ModelJob(NamedTuple):
     params: Parameters
     profile: SimulatedProfile
     friction: FrictionLaw
+
+    @property
+    def kernel(self) -> KernelModel:
+        """The flat values the kernels read (:class:`~mdr_events.models.kernel_model.KernelModel`)."""
+        return KernelModel(self.params, self.profile, self.friction, self.contact.adhesion, self.contact.layer)
 
     @property
     def adhesion(self) -> AdhesionLaw:

@@ -24,7 +24,6 @@ import xarray as xr
 
 from mdr_events.contact.adhesion import RateDependentAdhesion, adhesion_attrs
 from mdr_events.contact.friction import FrictionLaw, friction_attrs
-from mdr_events.contact.layer import Layer
 from mdr_events.contact.model import Contact
 from mdr_events.limits import Limits
 from mdr_events.models import indenters
@@ -36,6 +35,7 @@ from mdr_events.models.continuum.rate_shifts import check_rate_friction
 from mdr_events.models.continuum.extrema import solution_extrema
 from mdr_events.models.continuum.solve import BYTES_PER_SAMPLE as CONTINUUM_BYTES_PER_SAMPLE
 from mdr_events.models.discrete import BYTES_PER_SAMPLE as DISCRETE_BYTES_PER_SAMPLE
+from mdr_events.models.kernel_model import KernelModel
 from mdr_events.models.discrete import check_spacing, check_thresholds_known, run_discrete
 from mdr_events.models.job import ModelJob
 from mdr_events.models.motion import Cases
@@ -172,8 +172,7 @@ class Discrete:
                            profile=profile, layer=layer)
         step = self._time_step(paths)
         check_time_step(paths, step, self.dt, self.n_steps)
-        raw = run_discrete(params, paths, dx, step, profile=profile, limits=limits, friction=friction,
-                           adhesion=model.adhesion, layer=layer)
+        raw = run_discrete(model.kernel, paths, dx, step, limits)
         # (the half-space stamps no layer, as Contact.to_attrs: its results are those of before)
         layer_attrs = {} if layer.is_half_space else layer.to_attrs()
         attrs = dict(method=self.name, scenario=model.scenario, dx=float(dx), dt=step,
@@ -351,8 +350,7 @@ class Continuum:
         tolerances = self.tolerances
         layer = model.contact.layer
         run = continuum_kernel(model.adhesion).run
-        raw = run(params, cases.paths, self.samples if self.t is None else self.t, tolerances, limits, profile,
-                  friction, model.adhesion, layer)
+        raw = run(model.kernel, cases.paths, self.samples if self.t is None else self.t, tolerances, limits)
         # (the half-space stamps no layer, as Contact.to_attrs: its results are those of before)
         layer_attrs = {} if layer.is_half_space else layer.to_attrs()
         attrs = dict(method=self.name, scenario=model.scenario,
@@ -362,10 +360,10 @@ class Continuum:
         return continuum_dataset(params, cases, raw["time"], raw, raw["events"], raw["extrema"], **attrs)
 
 
-def _paper_run(params, paths, times, tolerances, limits, profile, friction, adhesion, layer: Layer) -> dict:
+def _paper_run(model: KernelModel, paths, times, tolerances, limits) -> dict:
     """The paper's law (:func:`~mdr_events.models.continuum.solve.run_continuum`) with each run's exact extrema, on
     the half-space or the layer."""
-    raw = run_continuum(params, paths, times, tolerances, limits, profile, friction, adhesion, layer)
+    raw = run_continuum(model, paths, times, tolerances, limits)
     raw["extrema"] = [solution_extrema(solution) for solution in raw["solutions"]]
     return raw
 
@@ -381,11 +379,12 @@ def _every_friction_law(friction: FrictionLaw) -> None:
     """The paper's edge takes every friction law."""
 
 
-def _rate_run(params, paths, times, tolerances, limits, profile, friction, adhesion, layer: Layer) -> dict:
+def _rate_run(model: KernelModel, paths, times, tolerances, limits) -> dict:
     """The rate-dependent edge with the springs on top
-    (:func:`~mdr_events.models.continuum.rate_run.run_rate_continuum`), on the half-space: ``layer`` is, as
+    (:func:`~mdr_events.models.continuum.rate_run.run_rate_continuum`), on the half-space: ``model.layer`` is, as
     ``simulate.check_layer_taken`` refuses the law on a layer before (the layer's springs take the paper's law)."""
-    return run_rate_continuum(params, paths, times, tolerances, limits, profile, friction, adhesion)
+    return run_rate_continuum(model.params, paths, times, tolerances, limits, model.profile, model.friction,
+                              model.adhesion)
 
 
 #: The runs of the adhesion laws whose radius is not on the branches of an edge rule (the continuum's

@@ -14,6 +14,7 @@ from mdr_events.contact.adhesion import Adhesion, law_of
 from mdr_events.models import discrete
 from mdr_events.models.continuum import edges, solve_path
 from mdr_events.models.discrete import run_discrete
+from mdr_events.models.kernel_model import KernelModel
 from mdr_events.models.paths import Path
 
 
@@ -65,7 +66,7 @@ def test_a_law_with_a_kernel_runs_it_in_the_continuum(registered):
 def test_a_law_with_a_kernel_runs_it_in_the_springs(registered):
     law = NoHysteresis(HYSTERETIC.dgamma0, HYSTERETIC.dgamma1)
     dt = (PATH.duration - PATH.first_contact_time()) / 2000
-    ran = run_discrete(HYSTERETIC, [PATH], 4e-6, dt, adhesion=law)
+    ran = run_discrete(KernelModel(HYSTERETIC, adhesion=law), [PATH], 4e-6, dt)
     same = run_discrete(WITHOUT, [PATH], 4e-6, dt)
     other = run_discrete(HYSTERETIC, [PATH], 4e-6, dt)
     np.testing.assert_array_equal(ran["normal_force"], same["normal_force"])
@@ -79,4 +80,17 @@ def test_the_law_of_a_kernel_is_the_one_of_its_parameters():
                                          r".*allowed: a law whose works at rest are the parameters'"):
         solve_path(HYSTERETIC, PATH, adhesion=Adhesion(0.1, 0.1))
     with pytest.raises(TypeError, match="adhesion=0.1 \\(float\\) is not allowed; allowed: None"):
-        run_discrete(HYSTERETIC, [PATH], 4e-6, 1.0, adhesion=0.1)
+        run_discrete(KernelModel(HYSTERETIC, adhesion=0.1), [PATH], 4e-6, 1.0)
+
+
+def test_a_kernel_model_is_its_parameters_with_the_paper_s_parts():
+    """A ``Parameters`` alone runs as the kernel model of its values with every part at its default, bit for bit; any
+    other value is refused naming what is allowed."""
+    dt = (PATH.duration - PATH.first_contact_time()) / 500
+    alone = run_discrete(HYSTERETIC, [PATH], 4e-6, dt)
+    spelled = run_discrete(KernelModel(HYSTERETIC, None, "tau0", Adhesion(HYSTERETIC.dgamma0, HYSTERETIC.dgamma1)),
+                           [PATH], 4e-6, dt)
+    for name in ("normal_force", "tangential_force", "contact_radius"):
+        np.testing.assert_array_equal(alone[name], spelled[name])
+    with pytest.raises(TypeError, match=r"model=.* is not allowed; allowed: a KernelModel, or Parameters"):
+        run_discrete({"E": 1.0}, [PATH], 4e-6, dt)

@@ -19,6 +19,7 @@ from mdr_events.models.indenters import SimulatedProfile, check_reach, check_sim
 from mdr_events.contact.adhesion import AdhesionLaw
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.contact.layer import HALF_SPACE, Layer
+from mdr_events.models.kernel_model import KernelModel, as_kernel_model
 from .anchors import AnchorMap, Piece
 from .compressed import attach_compressed_zone
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
@@ -334,10 +335,8 @@ def end_contact(state: ContactState) -> None:
 BYTES_PER_SAMPLE = 128
 
 
-def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | int = 2001,
-                  tolerances: Tolerances = Tolerances(), limits: Limits = DEFAULT_LIMITS,
-                  profile: SimulatedProfile = None, friction: FrictionLaw | str | None = None,
-                  adhesion: AdhesionLaw | None = None, layer: Layer = HALF_SPACE) -> dict:
+def run_continuum(model: KernelModel | Parameters, paths: list[Path], times: np.ndarray | int = 2001,
+                  tolerances: Tolerances = Tolerances(), limits: Limits = DEFAULT_LIMITS) -> dict:
     """Solve every path (:func:`solve_path`) and fill a common time grid: the output ``times``, or as many samples
     as ``times`` says spread to the longest run.
 
@@ -345,8 +344,11 @@ def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | int
 
     Parameters
     ----------
-    params : Parameters
-        The material, ``R``, ``τ0``, the works of adhesion and ``d_max``.
+    model : KernelModel or Parameters
+        The physical model (:class:`~mdr_events.models.kernel_model.KernelModel`: the material, ``R``, ``τ0``, the
+        works of adhesion and ``d_max``; the indenter, ``None`` the paper's paraboloid of ``params.R``; the friction
+        law, ``None`` the paper's ``"tau0"``; the adhesion law, ``None`` the paper's of ``params.dgamma0`` and
+        ``params.dgamma1``; the body); a :class:`~mdr_events.Parameters` alone is the paper's model of its values.
     paths : list of Path
         One path per case.
     times : numpy.ndarray or int, default 2001
@@ -355,14 +357,6 @@ def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | int
         The solver's and the roots' tolerances (default ``Tolerances()``).
     limits : Limits, optional
         The resource limits (default :data:`~mdr_events.limits.DEFAULT_LIMITS`).
-    profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
-        The indenter; ``None``: the paper's paraboloid of ``params.R``.
-    friction : FrictionLaw or str, optional
-        The friction law; ``None``: the paper's ``"tau0"``.
-    adhesion : Adhesion, optional
-        The adhesion law; ``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``.
-    layer : Layer, default the half-space
-        The body.
 
     Returns
     -------
@@ -379,6 +373,7 @@ def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | int
     n_time = samples if samples is not None else len(times)
     limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
                  memory=n_time * len(paths) * BYTES_PER_SAMPLE)
+    params, profile, friction, adhesion, layer = as_kernel_model(model)
     solutions = [solve_path(params, path, tolerances, limits, profile, friction, adhesion, layer) for path in paths]
     if samples is not None:
         longest = max(solution.end_time for solution in solutions)
