@@ -29,15 +29,19 @@ from .split_events import SplitEvents
 from .split_layouts import KEYS, Ends, Instant, Key, STILL, crossing_formula, lay_out_regions, split_lengths
 from .split_map import SpanMaps, SplitAnchorMap
 from .state import Cap, Regime, Slip
-from .tolerances import EPS, LEVEL_ULPS, PIECE_SHARE
+from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE
 from .zones import EDGE_LEAVING_TOLERANCES, indenter_travel
 
 __all__ = ["SplitSpanIntegrator", "FRONT_STEPS_PER_SPAN"]
 
-#: A solver step covers at most this share of a span with a front: a front reaching the centre moves as ``g⁻¹`` of a
-#: level, ``∝ (t_end − t)^(1/n)``, whose end DOP853's error estimate misses in long steps (3e-7 of F_x on a power law
-#: n = 3 whose compressed zone slid from x_c to the centre in 0.36 s with 8 steps; 5e-13 with 32).
-FRONT_STEPS_PER_SPAN = 32
+#: A solver step covers at most 1/this of a span with a front reaching the centre (it moves as ``g⁻¹`` of a level,
+#: ``∝ (t_end − t)^(1/n)``, whose end DOP853's error estimate can miss in one long step) or with ``x_c`` moving at the
+#: surface: the τ0 integrator's share (:data:`~.tolerances.MIN_STEPS_PER_SPAN`). It was 32 (twice the solver's steps
+#: of scenario A at 20°); at 8 the integrated F_x stays within 5e-10 of its run at rtol 1e-13 on scenarios A and B
+#: at 20–70°, fretting, the cone, n = 1.5 and n = 3 with and without Δγ0, and within 9e-9 of the algebraic form on
+#: 60 random paths of the property test, as at 32 (the 3e-7 once seen at 8 steps on n = 3 predates the roots taken
+#: to an absolute share of their interval).
+FRONT_STEPS_PER_SPAN = MIN_STEPS_PER_SPAN
 #: A span whose depth at one end is this share of the other's starts or ends at the surface (the planner ends spans
 #: where the depth crosses 0; the depth there carries the rounding of the time)
 SURFACE_SHARE = 1e-6
@@ -328,12 +332,17 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
             ``[dF_x/dvar]``.
         """
         segment = self.segment
-        instant = self.instant(var)
-        sizes = self._sizes_at(instant)
-        at_caps = sum(float(cap) * size for (_, cap), size in sizes.items())
-        compressed = sum(float(cap) * size for (region, cap), size in sizes.items() if region is Region.COMPRESSED)
-        a = instant[1]
-        sticking = a - sum(sizes.values())
+        _, a, x, depth, boundary = self.instant(var)
+        tau0_part, kappa = self.K * a, self.kappa  # (as _sizes_at, the sums in its order)
+        at_caps = compressed = held = 0.0
+        for _, layout, sign, weight, in_compressed in self.keyed:
+            size = layout.size(x - sign * (tau0_part + weight * kappa * depth),
+                               *((0.0, boundary) if in_compressed else (boundary, a)))
+            at_caps += sign * size
+            held += size
+            if in_compressed:
+                compressed += sign * size
+        sticking = a - held
         if not self.moving:  # K a is still; the compressed caps follow the depth
             total = sticking * segment.vx + (compressed * self.kappa * segment.vd if self.pressed else 0.0)
             return [self.G2 * total]
@@ -341,7 +350,7 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         drive = sticking * segment.vx * slope / segment.vd if segment.vx else 0.0
         total = at_caps * self.K + compressed * self.kappa * slope + drive
         if self.shrinking:
-            total += self.edge_shift(instant[2], a)
+            total += self.edge_shift(x, a)
         return [self.G2 * total * self.scale]
 
     def edge_shift(self, x: float, a: float) -> float:
@@ -382,7 +391,7 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         """The longest step of the solver: with a front in a part, or ``x_c`` moving on a span that starts or ends at
         the surface (``x_c ∝ d^(1/n)``, steep there, where a long step reaches: 2e-6 of F_x with four steps over a
         span ending at ``d = 0`` that an event stopped far before), a share 1/:data:`FRONT_STEPS_PER_SPAN` of the
-        span.
+        span (the τ0 integrator's).
 
         Returns
         -------
