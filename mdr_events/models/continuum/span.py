@@ -556,9 +556,25 @@ class SpanIntegrator:
         """
         return not self.moving and not self.positive.fronts and not self.negative.fronts
 
+    def linear_rate(self) -> float:
+        """``dF_x/dt`` of a span whose force is linear in time (:meth:`force_is_linear`):
+        ``2G* ((M(a) − n₊ − n₋) v_x + (n₊ − n₋) κ ḋ)``.
+
+        Returns
+        -------
+        float
+            The rate (N/s).
+        """
+        a = self.span.pinned_radius
+        positive, negative = self.positive.size(0.0, a), self.negative.size(0.0, a)
+        rate = self.G2 * (self.medium.measure(0.0, a) - positive - negative) * self.segment.vx
+        if self.kappa and self.depth_rate:  # the springs at a cap follow κ d (the flat punch pressed in or out)
+            rate += self.G2 * (positive - negative) * self.kappa * self.depth_rate
+        return rate
+
     def linear_span(self, force: float) -> SpanOutcome:
-        """:meth:`force_is_linear`: the force and the first event in closed form (the levels are linear in
-        time; each cap's target is fixed), the span's interpolant a :class:`LinearForce`.
+        """:meth:`force_is_linear`: the force (:meth:`linear_rate`) and the first event in closed form (the levels
+        are linear in time; each cap's target is fixed), the span's interpolant a :class:`LinearForce`.
 
         Parameters
         ----------
@@ -571,10 +587,7 @@ class SpanIntegrator:
             The events that stop it (none: its planned end), the time, force and radius there.
         """
         a = self.span.pinned_radius
-        positive, negative = self.positive.size(0.0, a), self.negative.size(0.0, a)
-        rate = self.G2 * (self.medium.measure(0.0, a) - positive - negative) * self.segment.vx
-        if self.kappa and self.depth_rate:  # the springs at a cap follow κ d (the flat punch pressed in or out)
-            rate += self.G2 * (positive - negative) * self.kappa * self.depth_rate
+        rate = self.linear_rate()
         t_stop, fired = self.stop, frozenset()
         for event in self.event_functions():  # only ZONE_REACHES in a pinned span: linear in time
             speed = event.trigger is Trigger.ZONE_REACHES and event.cap * self.segment.vx - self.kappa * self.depth_rate

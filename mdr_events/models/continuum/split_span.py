@@ -24,7 +24,7 @@ import math
 
 from .model import ContinuumModel
 from .regions import Region, combined_summary
-from .span import LinearForce, Span, SpanIntegrator, SpanOutcome, Trigger
+from .span import Span, SpanIntegrator, SpanOutcome
 from .split_events import SplitEvents
 from .split_layouts import KEYS, Ends, Instant, Key, STILL, crossing_formula, lay_out_regions, split_lengths
 from .split_map import SpanMaps, SplitAnchorMap
@@ -433,32 +433,17 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         """
         return self._still() and not self.has_fronts()
 
-    def linear_span(self, force: float) -> SpanOutcome:
-        """:meth:`force_is_linear`: the force and the first level reaching its target in closed form.
-
-        Parameters
-        ----------
-        force : float
-            ``F_x`` (N) at the span's start.
+    def linear_rate(self) -> float:
+        """:meth:`force_is_linear`: ``dF_x/dt = 2G* (a − n₊ − n₋) v_x``, the zones' sizes at the span's start (the
+        first level reaching its target in closed form: :meth:`~.span.SpanIntegrator.linear_span`; the caps keep
+        still, ``κ ḋ = 0``).
 
         Returns
         -------
-        SpanOutcome
-            The events that stop it, the time, force and radius there.
+        float
+            The rate (N/s).
         """
-        a = self.span.pinned_radius
-        rate = self.G2 * (a - sum(self.sizes(self.start).values())) * self.segment.vx
-        t_stop, fired = self.stop, frozenset()
-        for event in self.event_functions():
-            speed = event.trigger is Trigger.ZONE_REACHES and event.cap * self.segment.vx
-            if speed and speed > 0.0:
-                when = self.start - event(self.start) / speed
-                if when < t_stop:
-                    t_stop, fired = when, frozenset({event.key})
-                elif when == t_stop and fired:
-                    fired = fired | {event.key}
-        self.span.interpolant = LinearForce(self.start, t_stop, force, rate)
-        return SpanOutcome(fired, t_stop, force + rate * (t_stop - self.start), a)
+        return self.G2 * (self.span.pinned_radius - sum(self.sizes(self.start).values())) * self.segment.vx
 
     def finish(self, outcome: SpanOutcome) -> SpanOutcome:
         """``outcome`` with the maps the span read and the slip it laid out (:class:`~.span.SpanOutcome`).
