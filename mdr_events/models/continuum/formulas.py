@@ -41,6 +41,8 @@ QUADRATURE_NODES = 24
 ROOT_XTOL = 2 * EPS
 #: Points of the grid :meth:`Formula.inverses` brackets its roots on before its regula falsi (a monotone interval)
 INVERSE_GRID = 33
+#: A value of :meth:`Formula.inverses`'s regula falsi this many ulp of the values' size from its target is a root
+VALUE_ULPS = 8
 #: Steps of :meth:`Formula.inverses` at most (as many halvings would take a monotone interval below its ulp).
 BISECTION_STEPS = 64
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(QUADRATURE_NODES)
@@ -498,6 +500,9 @@ class Formula:
         low, high = grid[cell - 1], grid[cell]
         f_low, f_high = seen[cell - 1] - targets, seen[cell] - targets
         kept = np.zeros(targets.shape, dtype=int)  # the end kept by the last step: -1 low, +1 high
+        # a value within the rounding of Y's size of the target is the root (where Y's terms cancel, its rounding is
+        # wider than a few ulp of ξ: the regula falsi's signs there are noise, and it went on as a bisection)
+        settled = VALUE_ULPS * EPS * np.maximum(np.maximum(abs(at_lower), abs(at_upper)), np.abs(targets))
         for _ in range(BISECTION_STEPS):
             if not np.any(high - low > ROOT_XTOL * upper + 4 * EPS * high):
                 break
@@ -505,8 +510,8 @@ class Formula:
                 xi = low - f_low * (high - low) / (f_high - f_low)
             xi = np.where((xi > low) & (xi < high), xi, 0.5 * (low + high))
             f_xi = sign * self.values(xi) - targets
-            right = f_xi < 0.0
-            exact = f_xi == 0.0
+            exact = np.abs(f_xi) <= settled
+            right = (f_xi < 0.0) & ~exact
             # Illinois: an end kept twice in a row has its value halved, so that it moves too
             f_high = np.where(right & (kept == 1), 0.5 * f_high, f_high)
             f_low = np.where(~right & (kept == -1), 0.5 * f_low, f_low)
