@@ -11,7 +11,9 @@ from scipy.integrate import OdeSolution
 import mdr_events as me
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import PowerLaw
-from mdr_events.models.continuum import Tolerances, evaluate, solve_path
+from mdr_events.models.continuum import Tolerances, evaluate, solve_path, tangential_work
+from mdr_events.models.continuum.graded import Grading, grading_power
+from mdr_events.models.continuum.solution import extremum
 from mdr_events.models.continuum.formulas import ROOT_XTOL, Formula
 from mdr_events.models.continuum.model import ContinuumModel
 from mdr_events.models.continuum.split_solve import new_anchors
@@ -82,3 +84,54 @@ def test_the_vectorised_readings_are_the_scalar_ones(profile):
         expected = np.array([formula.inverse(float(level), lower, upper) for level in levels])
         np.testing.assert_allclose(formula.inverses(levels, lower, upper), expected, rtol=0,
                                    atol=4 * ROOT_XTOL * upper + 8 * np.finfo(float).eps * upper)
+
+
+#: The work ∫ F_x dx from the spans' interpolants against the trapezoidal rule on 200,001 samples of the filled run:
+#: the rule's error, (Δt²/12) max|d²(F_x v_x)/dt²| over the run, about 1e-9 of the work here.
+WORK_SHARE = 1e-7
+#: The largest F_x from the dense output's stationary points against the largest of 200,001 samples and the spans'
+#: starts (at a corner, the maximum here): a smooth maximum between samples is missed by (Δt²/8) |F''|, below 1e-10.
+EXTREMUM_SHARE = 1e-9
+
+
+@pytest.mark.parametrize("profile", [None, PowerLaw(2e5, 3.0), PowerLaw(2e3, 1.5)], ids=["paraboloid", "n3", "n1.5"])
+def test_a_span_ending_at_the_surface_is_graded_and_read_as_any_other(profile):
+    """Scenario A at 20°: the spans that end where x_c reaches the surface are integrated in u (v = stop +
+    (start − stop) u^p, models.continuum.graded), and what reads the interpolant at a time or a radius reads them as
+    any other span: F_x within its tolerance of the run at rtol 1e-13, the work equal to the trapezoidal rule of the
+    filled run, the largest F_x equal to the largest of dense samples (the spans' starts among them)."""
+    params = me.Parameters.paper()
+    path = me.Path.scenario_A(20.0, params)
+    solution = solve_path(params, path, profile=profile, friction=COMBINED)
+    graded = [span for span in solution.spans if span.grading is not None]
+    assert graded and all(span.grading.power == (3 if profile is not None else 2) for span in graded)
+    tight = solve_path(params, path, Tolerances(rtol=1e-13), profile=profile, friction=COMBINED)
+    starts = [span.t_start - solution.t_contact for span in solution.spans]  # (the largest F_x is at a corner)
+    times = np.union1d(np.linspace(0.0, solution.end_time, 200_001), starts)
+    filled = evaluate(solution, times)
+    force = filled["tangential_force"]
+    scale = float(np.max(np.abs(force)))
+    np.testing.assert_allclose(force, evaluate(tight, times)["tangential_force"], rtol=0, atol=TOLERANCE_SHARE * scale)
+    trapezoid = float(np.sum(0.5 * (force[1:] + force[:-1]) * np.diff(filled["tangential_displacement"])))
+    assert tangential_work(solution) == pytest.approx(trapezoid, rel=WORK_SHARE)
+    _, largest = extremum(solution, "tangential_force")  # (time, value)
+    assert largest == pytest.approx(float(np.max(force)), rel=EXTREMUM_SHARE)
+    assert largest >= float(np.max(force)) - 1e-15 * scale
+
+
+@pytest.mark.parametrize("tip, power", [(2.0, 2), (3.0, 3), (1.5, 3), (2.5, 5), (1.0, None), (0.5, None),
+                                        (2.2, None), (7.0, None), (None, None)])
+def test_the_grading_power_smooths_the_tip(tip, power):
+    assert grading_power(tip) == power
+
+
+@pytest.mark.parametrize("reach", [0.25, -0.09])
+def test_a_grading_maps_back_and_forth(reach):
+    grading = Grading(0.9, reach, 3)
+    u = np.linspace(0.0, 1.0, 11)
+    np.testing.assert_allclose(grading.graded(grading.natural(u)), u, rtol=1e-12, atol=1e-15)
+    assert grading.natural(1.0) == pytest.approx(0.9 + reach, rel=1e-15)
+    assert grading.natural(0.0) == 0.9
+    step = 1e-6
+    numeric = (grading.natural(u[1:-1] + step) - grading.natural(u[1:-1] - step)) / (2 * step)
+    np.testing.assert_allclose(grading.rate(u[1:-1]), numeric, rtol=1e-8)

@@ -14,10 +14,11 @@ from scipy.integrate import OdeSolution, solve_ivp
 from scipy.optimize import OptimizeResult
 
 from .anchors import AnchorMap
+from .graded import GradedProblem, graded_problem
 from .model import ContinuumModel
 from .span import EventFunction, Span, SpanIntegrator, SpanOutcome, Variable
 from .state import Cap, Regime
-from .tolerances import SIMULTANEOUS_SHARE
+from .tolerances import MIN_STEPS_PER_SPAN, SIMULTANEOUS_SHARE
 
 __all__ = ["integrate_span", "solve_between_knots", "fired_events", "radius_at"]
 
@@ -115,18 +116,24 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
     if not (math.isfinite(start) and math.isfinite(stop) and math.isfinite(force)):
         raise RuntimeError(f"the continuum method lost its state on [{t0!r}, {t1!r}] s ({span.regime.value}: from "
                            f"{start!r} to {stop!r}, F_x = {force!r}); please report the parameters and path")
+    span.grading = grading = integrator.grading()
     events = integrator.event_functions()
+    if grading is None:
+        problem = GradedProblem(integrator.rhs, events, start, stop, integrator.knots(), integrator.max_step())
+    else:  # (the variable u of :mod:`.graded`, from 1 to 0)
+        problem = graded_problem(integrator, grading, events, MIN_STEPS_PER_SPAN)
     tolerances = model.tolerances
     options = dict(method="DOP853", rtol=tolerances.rtol, atol=tolerances.atol, dense_output=True,
-                   events=events or None, max_step=integrator.max_step())
-    solution = solve_between_knots(integrator.rhs, start, stop, force, integrator.knots(), options)
+                   events=problem.events or None, max_step=problem.max_step)
+    solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, options)
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol
     if solution.status == 1:
-        first, fired = fired_events(events, solution.t_events, start, integrator.offset)
-        return SpanOutcome(fired, float(integrator.time_of(first)), float(solution.sol(first)[0]),
-                           float(integrator.radius_of(first)))
+        first, fired = fired_events(problem.events, solution.t_events, problem.start, integrator.offset)
+        natural = first if grading is None else float(grading.natural(first))
+        return SpanOutcome(fired, float(integrator.time_of(natural)), float(solution.sol(first)[0]),
+                           float(integrator.radius_of(natural)))
     return SpanOutcome(frozenset(), t1, float(solution.y[0, -1]), float(integrator.radius_of(stop)))
 
 

@@ -40,6 +40,7 @@ from typing import Callable, NamedTuple
 import numpy as np
 
 from .anchors import AnchorMap
+from .graded import Grading
 from .model import ContinuumModel, Segment
 from .state import Cap, Regime, Slip
 from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE
@@ -80,6 +81,8 @@ class Span:
         The integration variable.
     scale : float, default 1.0
         The length (m) the radius is measured in as the integration variable (the time: 1).
+    grading : Grading, optional
+        The integration variable graded towards the span's stop (:mod:`.graded`): the interpolant is in ``u``.
     """
 
     t_start: float
@@ -93,6 +96,8 @@ class Span:
     variable: Variable = Variable.TIME
     #: the integration variable is the radius over this length (the time: 1)
     scale: float = 1.0
+    #: the variable graded towards the span's stop, where it ends at the surface (:mod:`.graded`; ``None``: not)
+    grading: Grading | None = None
 
 
 class Trigger(enum.Enum):
@@ -516,6 +521,16 @@ class SpanIntegrator:
             The step (``inf``: none).
         """
         return abs(self.stop - self.start) / MIN_STEPS_PER_SPAN if self.has_fronts() else math.inf
+
+    def grading(self) -> Grading | None:
+        """The span's variable graded towards a singular end (:mod:`.graded`; ``None``: not graded).
+
+        Returns
+        -------
+        Grading or None
+            ``None``: the force's rate is smooth up to the span's ends.
+        """
+        return None
 
     def finish(self, outcome: SpanOutcome) -> SpanOutcome:
         """What :func:`~.integrate.integrate_span` returns of the span's ``outcome`` (the outcome itself: the span

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import math
 
+from .graded import Grading, grading_power
 from .model import ContinuumModel
 from .regions import Region, combined_summary
 from .span import Span, SpanIntegrator, SpanOutcome
@@ -401,8 +402,24 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         depths = abs(self.depth_of(self.start)), abs(self.depth_of(self.stop))
         at_surface = min(depths) <= SURFACE_SHARE * max(depths)
         centre = any(layout.parts[index].low == 0.0 for layout in self.layouts.values() for index, _ in layout.fronts)
-        limited = centre or (self.direction != 0.0 and at_surface)
+        limited = centre or (self.direction != 0.0 and at_surface and self.grading() is None)
         return abs(self.stop - self.start) / FRONT_STEPS_PER_SPAN if limited else math.inf
+
+    def grading(self) -> Grading | None:
+        """The variable graded towards the span's stop where ``x_c`` moves and the stop is at the surface
+        (:mod:`.graded`: ``x_c ∝ d^(1/n)`` steep there).
+
+        Returns
+        -------
+        Grading or None
+            ``v = stop + (start − stop) u^p``; ``None`` for any other span, or a profile whose tip is not a
+            power that a whole ``p`` smooths (:func:`~.graded.grading_power`).
+        """
+        first, last = abs(self.depth_of(self.start)), abs(self.depth_of(self.stop))
+        power = grading_power(self.shape.hertz.tip_power)
+        if power is None or self.direction == 0.0 or not first > 0.0 or last > SURFACE_SHARE * first:
+            return None
+        return Grading(self.stop, self.start - self.stop, power)
 
     def _still(self) -> bool:
         """A pinned span whose caps and regions keep still: ``x_c`` does not move (no Coulomb part follows a depth)."""
