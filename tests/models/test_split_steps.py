@@ -11,7 +11,7 @@ from scipy.integrate import OdeSolution
 import mdr_events as me
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import PowerLaw
-from mdr_events.models.continuum import Tolerances, evaluate, solve_path, tangential_work
+from mdr_events.models.continuum import EventKind, Tolerances, evaluate, solve_path, tangential_work
 from mdr_events.models.continuum.graded import Grading, grading_power
 from mdr_events.models.continuum.solution import extremum
 from mdr_events.models.continuum.formulas import ROOT_XTOL, Formula
@@ -97,7 +97,8 @@ EXTREMUM_SHARE = 1e-9
 @pytest.mark.parametrize("profile", [None, PowerLaw(2e5, 3.0), PowerLaw(2e3, 1.5)], ids=["paraboloid", "n3", "n1.5"])
 def test_a_span_ending_at_the_surface_is_graded_and_read_as_any_other(profile):
     """Scenario A at 20°: the spans that end where x_c reaches the surface are integrated in u (v = stop +
-    (start − stop) u^p, models.continuum.graded), and what reads the interpolant at a time or a radius reads them as
+    (start − stop) u^p, models.continuum.graded), on the paraboloid also the pinned span whose front reaches the
+    centre (graded towards that time, where it ends with its event), and what reads the interpolant at a time or a radius reads them as
     any other span: F_x within its tolerance of the run at rtol 1e-13, the work equal to the trapezoidal rule of the
     filled run, the largest F_x equal to the largest of dense samples (the spans' starts among them)."""
     params = me.Parameters.paper()
@@ -105,6 +106,10 @@ def test_a_span_ending_at_the_surface_is_graded_and_read_as_any_other(profile):
     solution = solve_path(params, path, profile=profile, friction=COMBINED)
     graded = [span for span in solution.spans if span.grading is not None]
     assert graded and all(span.grading.power == (3 if profile is not None else 2) for span in graded)
+    if profile is None:  # the pinned span after the corner: its front reaches the centre at a closed-form time
+        centre = [span for span in graded if span.grading.event is not None]
+        logged = [event.time for event in solution.events if event.kind is EventKind.FRONT_AT_CENTRE]
+        assert centre and all(any(span.t_end == pytest.approx(time, rel=1e-12) for time in logged) for span in centre)
     tight = solve_path(params, path, Tolerances(rtol=1e-13), profile=profile, friction=COMBINED)
     starts = [span.t_start - solution.t_contact for span in solution.spans]  # (the largest F_x is at a corner)
     times = np.union1d(np.linspace(0.0, solution.end_time, 200_001), starts)

@@ -3,7 +3,9 @@ the surface (``d → 0``), so the force's rate has a term ``∝ (v_stop − v)^(
 its steps tenfold, rejecting many (300 evaluations of the right-hand side on scenario A at 20°, of the run's 1400).
 With ``v = origin + reach u^p`` (``u`` from 1 at the start to 0 at the stop: :class:`Grading`; ``p`` a whole
 multiple of ``n``, :func:`grading_power`) ``x_c ∝ u^(p/n)`` is smooth at ``u = 0``: the span takes a few steps
-(:func:`graded_problem`; 300 → 47 evaluations on that span). The span keeps its grading (:attr:`~.span.Span.grading`): its dense output is in ``u``, and
+(:func:`graded_problem`; 300 → 47 evaluations on that span). A front reaching the centre of a part in
+``ξⁿ`` moves as ``(t_e − t)^(1/n)``: on a pinned span whose level is linear in time, ``t_e`` is a closed form and the
+span is graded towards it, ending there with its event (:attr:`Grading.event`). The span keeps its grading (:attr:`~.span.Span.grading`): its dense output is in ``u``, and
 whatever reads it at a time or a radius goes through :meth:`Grading.graded` (:func:`span_variable`).
 """
 
@@ -24,6 +26,9 @@ class Grading(NamedTuple):
     origin: float  #: ``v`` at the span's stop (``u = 0``), its singular end
     reach: float   #: ``v`` at the start less ``origin`` (``u = 1``)
     power: int = 2  #: ``p``
+    #: the key of the event at ``origin`` (a front reaching the centre at a time known in closed form; ``None``: the
+    #: origin is the span's planned stop)
+    event: tuple | None = None
 
     def natural(self, u):
         """``v`` at ``u``.

@@ -129,8 +129,14 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol
-    if solution.status == 1:
-        first, fired = fired_events(problem.events, solution.t_events, problem.start, integrator.offset)
+    roots = solution.t_events
+    if solution.status == 0 and grading is not None and grading.event is not None:  # (its origin's event, at u = 0)
+        roots = [[problem.stop] if event.key == grading.event else [] for event in problem.events]
+        if not any(roots):  # (an event no function watches: it fires alone)
+            return SpanOutcome(frozenset({grading.event}), float(integrator.time_of(grading.origin)),
+                               float(solution.y[0, -1]), float(integrator.radius_of(grading.origin)))
+    if any(len(found) for found in roots or []):
+        first, fired = fired_events(problem.events, roots, problem.start, integrator.offset)
         natural = first if grading is None else float(grading.natural(first))
         return SpanOutcome(fired, float(integrator.time_of(natural)), float(solution.sol(first)[0]),
                            float(integrator.radius_of(natural)))

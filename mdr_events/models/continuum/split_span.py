@@ -25,7 +25,7 @@ import math
 from .graded import Grading, grading_power
 from .model import ContinuumModel
 from .regions import Region, combined_summary
-from .span import Span, SpanIntegrator, SpanOutcome
+from .span import Span, SpanIntegrator, SpanOutcome, Trigger
 from .split_events import SplitEvents
 from .split_layouts import KEYS, Ends, Instant, Key, STILL, crossing_formula, lay_out_regions, split_lengths
 from .split_map import SpanMaps, SplitAnchorMap
@@ -110,6 +110,7 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         # each layout with what its level and extent need, read once: (key, layout, σ, the region's weight, compressed)
         self.keyed = [(key, layout, float(key[1]), key[0].weight, key[0] is Region.COMPRESSED)
                       for key, layout in self.layouts.items()]
+        self.graded = self._grading()
 
     def _ends(self) -> dict[Region, Ends]:
         """How each region's ends move: ``x_c`` with the depth (the source's end recedes, the destination's grows and
@@ -402,24 +403,54 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         depths = abs(self.depth_of(self.start)), abs(self.depth_of(self.stop))
         at_surface = min(depths) <= SURFACE_SHARE * max(depths)
         centre = any(layout.parts[index].low == 0.0 for layout in self.layouts.values() for index, _ in layout.fronts)
-        limited = centre or (self.direction != 0.0 and at_surface and self.grading() is None)
+        graded = self.graded
+        limited = (centre and not (graded and graded.event)) or (self.direction != 0.0 and at_surface and not graded)
         return abs(self.stop - self.start) / FRONT_STEPS_PER_SPAN if limited else math.inf
 
     def grading(self) -> Grading | None:
         """The variable graded towards the span's stop where ``x_c`` moves and the stop is at the surface
-        (:mod:`.graded`: ``x_c ∝ d^(1/n)`` steep there).
+        (:mod:`.graded`: ``x_c ∝ d^(1/n)`` steep there), or towards the time a front reaches the centre of its part on
+        a pinned span (``∝ (t_e − t)^(1/n)``; the span ends there with that event).
 
         Returns
         -------
         Grading or None
-            ``v = stop + (start − stop) u^p``; ``None`` for any other span, or a profile whose tip is not a
+            ``v = origin + (start − origin) u^p``; ``None`` for any other span, or a profile whose tip is not a
             power that a whole ``p`` smooths (:func:`~.graded.grading_power`).
         """
-        first, last = abs(self.depth_of(self.start)), abs(self.depth_of(self.stop))
+        return self.graded
+
+    def _grading(self) -> Grading | None:
+        """:meth:`grading`, found once at the span's start: towards the surface, else towards a front reaching the
+        centre (:meth:`_centre_grading`)."""
         power = grading_power(self.shape.hertz.tip_power)
-        if power is None or self.direction == 0.0 or not first > 0.0 or last > SURFACE_SHARE * first:
+        if power is None:
             return None
-        return Grading(self.stop, self.start - self.stop, power)
+        first, last = abs(self.depth_of(self.start)), abs(self.depth_of(self.stop))
+        if self.direction != 0.0 and first > 0.0 and last <= SURFACE_SHARE * first:
+            return Grading(self.stop, self.start - self.stop, power)
+        return self._centre_grading(power)
+
+    def _centre_grading(self, power: int) -> Grading | None:
+        """On a pinned span, the earliest time a pushing level reaches the fixed target of a front moving to the centre
+        of its part (the level linear in time: a closed form, inside the span), the variable graded towards it."""
+        if self.moving:
+            return None
+        found = []
+        for key, layout in self.layouts.items():
+            rate = self.rate(key[0], key[1], self.start)  # (σ d(level)/dt, constant on a pinned span)
+            if not rate > 0.0:
+                continue
+            centre = [index for index, at_start in layout.fronts if not at_start and layout.parts[index].start == 0.0]
+            if any(layout.fixed_target == layout.sign * layout.parts[index].value(0.0) for index in centre):
+                # (a moving end's target reached first stops the span before: solve_ivp finds it)
+                excess = layout.sign * self.region_level(key, self.start) - layout.fixed_target - self.offset
+                found.append((self.start - excess / rate, key))
+        inside = [(time, key) for time, key in found if self.start < time < self.stop]
+        if not inside:
+            return None
+        time, key = min(inside)
+        return Grading(time, self.start - time, power, (Trigger.ZONE_REACHES, key[1], key[0]))
 
     def _still(self) -> bool:
         """A pinned span whose caps and regions keep still: ``x_c`` does not move (no Coulomb part follows a depth)."""
