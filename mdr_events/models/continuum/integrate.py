@@ -1,5 +1,6 @@
 """Integrate one span: an event met at its start, a force constant or linear in time, or ``solve_ivp`` (DOP853, dense
-output) with the span's events, restarted at the knots of its right-hand side; which events fired, and where.
+output) with the span's events, restarted at the knots of its right-hand side, in the variable graded towards a
+singular end where the integrator gives one (:mod:`.graded`); which events fired, and where.
 
 The span's right-hand side and events are its integrator's (:class:`~.span.SpanIntegrator`, or
 :class:`~.split_span.SplitSpanIntegrator` for both parts of the cap with adhesion on a curved indenter).
