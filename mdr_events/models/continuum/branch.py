@@ -44,6 +44,9 @@ class Branch:
     #: the radii, increasing, where the branch's depth is not smooth (a derivative of some order jumps): a solver
     #: integrating along the radius restarts there instead of shrinking its steps against a kink (none: smooth)
     knots: tuple[float, ...] = ()
+    #: the power ``n`` of the profile at its tip, ``g ∝ ξⁿ`` (the paraboloid's 2; ``None``: not a power there):
+    #: ``g⁻¹(d) ∝ d^(1/n)`` near the surface (:mod:`.graded`)
+    tip_power: float | None = 2.0
 
     def __init__(self, params: Parameters, work: float):
         self.params = params
@@ -236,6 +239,7 @@ class PowerLawBranch(Branch):
         self._kc = power_law.prefactor(profile)
         self._hess = power_law.hess_prefactor(params, work)
         self._exponent = 2.0 * profile.n
+        self.tip_power = float(profile.n)
 
     def slope(self, a: float) -> float:
         if a > 0:
@@ -280,6 +284,8 @@ class FlatPunchBranch(Branch):
 
     flat = True
 
+    tip_power = None
+
     def __init__(self, params: Parameters, work: float, profile: FlatPunch):
         self.params, self.work, self.profile = params, work, profile
         point = power_law.jump_off(profile, params, work)
@@ -317,6 +323,8 @@ class TabulatedBranch(Branch):
     """The branch of a tabulated profile (:class:`~mdr_events.contact.indenters.TabulatedProfile`): ``d = g(a) − sqrt(2π a
     Δγ / E*)`` with ``g`` the table's numerical Abel transform (:mod:`mdr_events.theory.tabulated`); the radius of a
     depth a bracketed root above the jump-off."""
+
+    tip_power = None  # (a table's g need not be a power at its first point)
 
     def __init__(self, params: Parameters, work: float, profile: TabulatedProfile):
         self.params, self.work, self.profile = params, work, profile

@@ -39,6 +39,10 @@ QUADRATURE_NODES = 24
 #: A root in ``ξ`` (a front, a turn) is found to this share of its interval's far end besides ``4 eps`` of itself:
 #: a front at ``ξ = 0`` (every spring of a part at one value to rounding) has no relative tolerance of its own
 ROOT_XTOL = 2 * EPS
+#: Points of the grid :meth:`Formula.inverses` brackets its roots on before its regula falsi (a monotone interval)
+INVERSE_GRID = 33
+#: A value of :meth:`Formula.inverses`'s regula falsi this many ulp of the values' size from its target is a root
+VALUE_ULPS = 8
 #: Steps of :meth:`Formula.inverses` at most (as many halvings would take a monotone interval below its ulp).
 BISECTION_STEPS = 64
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(QUADRATURE_NODES)
@@ -276,6 +280,33 @@ class Formula:
             total += self.gamma * rate / branch.slope(branch.radius(shape.hertz.depth(xi), shape.rtol))
         return total
 
+    def slopes(self, xi: np.ndarray) -> np.ndarray:
+        """:meth:`slope` at an array of ``ξ > 0``, the radii ``A(g(ξ))`` found at once (the branches' vectorised
+        roots, to double precision as the scalar ones), the branches' slopes point by point.
+
+        Parameters
+        ----------
+        xi : numpy.ndarray
+            The springs' coordinates (m), 1-D.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``dY/dξ`` at each (1).
+        """
+        shape = self.shape
+        total = np.zeros(len(xi))
+        if self.alpha or self.gamma:
+            rate = np.array([shape.hertz.slope(float(v)) for v in xi])
+            total += self.alpha * rate if self.alpha else 0.0
+        if self.beta:
+            total += self.beta * np.array([shape.grow.slope(float(v)) for v in xi])
+        if self.gamma:
+            branch = shape.branches[self.radius_of]
+            radii = branch.radii(shape.hertz.depths(xi))
+            total += self.gamma * rate / np.array([branch.slope(float(r)) for r in radii])
+        return total
+
     def integral(self, lower: float, upper: float) -> float:
         """``∫ Y dξ`` over ``[lower, upper]`` (m²): the branches' derived integrals, and Gauss–Legendre for ``A(g)``
         between the knots of ``g``.
@@ -331,7 +362,7 @@ class Formula:
         reach = self.shape.limit(self.radius_of)
         grid = reach * np.geomspace(1e-9, 1.0, TURN_GRID)
         grid = np.union1d(grid, [k for k in self.shape.knots() if 0.0 < k < reach])
-        slopes = [self.slope(float(xi)) for xi in grid]
+        slopes = self.slopes(grid).tolist()  # (the sign changes bracket the turns; each is refined by the scalar slope)
         found = []
         for low, high, s_low, s_high in zip(grid[:-1], grid[1:], slopes[:-1], slopes[1:]):
             if s_low == 0.0:
@@ -441,15 +472,37 @@ class Formula:
         out = np.where(targets <= at_lower, lower, upper)
         inside = (targets > at_lower) & (targets < at_upper)
         if np.any(inside):
-            out[inside] = self._illinois(sign, targets[inside], lower, upper, at_lower, at_upper)
+            found = self._branch_inverses(levels[inside])
+            if found is not None:  # (the branch's vectorised radius, where it lies in the interval)
+                out[inside] = found
+                inside[inside] = ~((found >= lower) & (found <= upper))
+            if np.any(inside):
+                out[inside] = self._illinois(sign, targets[inside], lower, upper, at_lower, at_upper)
         return out
+
+    def _branch_inverses(self, levels: np.ndarray) -> np.ndarray | None:
+        """:meth:`_branch_inverse` of an array of levels: the branch's radii of the depths at once (``nan`` where
+        none); ``None`` for a formula that is not one branch's depth."""
+        if self.gamma or (self.alpha and self.beta) or not (self.alpha or self.beta):
+            return None
+        branch, ratio = (self.shape.hertz, self.alpha) if self.alpha else (self.shape.grow, self.beta)
+        return np.asarray(branch.radii(self.d_ref + (levels - self.x0) / ratio), dtype=float)
 
     def _illinois(self, sign: float, targets: np.ndarray, lower: float, upper: float, at_lower: float,
                   at_upper: float) -> np.ndarray:
-        """:meth:`inverses` of ``targets`` strictly between the rising values ``sign Y`` at the ends."""
-        low, high = np.full(targets.shape, lower), np.full(targets.shape, upper)
-        f_low, f_high = at_lower - targets, at_upper - targets
+        """:meth:`inverses` of ``targets`` strictly between the rising values ``sign Y`` at the ends, each bracketed
+        first between two of :data:`INVERSE_GRID` points of the interval (one vectorised evaluation: the regula falsi
+        then starts where ``Y`` is nearly linear, in a few steps where it took twenty from the whole interval)."""
+        grid = np.linspace(lower, upper, INVERSE_GRID)
+        seen = sign * self.values(grid)
+        seen[0], seen[-1] = at_lower, at_upper
+        cell = np.clip(np.searchsorted(seen, targets, side="right"), 1, INVERSE_GRID - 1)
+        low, high = grid[cell - 1], grid[cell]
+        f_low, f_high = seen[cell - 1] - targets, seen[cell] - targets
         kept = np.zeros(targets.shape, dtype=int)  # the end kept by the last step: -1 low, +1 high
+        # a value within the rounding of Y's size of the target is the root (where Y's terms cancel, its rounding is
+        # wider than a few ulp of ξ: the regula falsi's signs there are noise, and it went on as a bisection)
+        settled = VALUE_ULPS * EPS * np.maximum(np.maximum(abs(at_lower), abs(at_upper)), np.abs(targets))
         for _ in range(BISECTION_STEPS):
             if not np.any(high - low > ROOT_XTOL * upper + 4 * EPS * high):
                 break
@@ -457,8 +510,8 @@ class Formula:
                 xi = low - f_low * (high - low) / (f_high - f_low)
             xi = np.where((xi > low) & (xi < high), xi, 0.5 * (low + high))
             f_xi = sign * self.values(xi) - targets
-            right = f_xi < 0.0
-            exact = f_xi == 0.0
+            exact = np.abs(f_xi) <= settled
+            right = (f_xi < 0.0) & ~exact
             # Illinois: an end kept twice in a row has its value halved, so that it moves too
             f_high = np.where(right & (kept == 1), 0.5 * f_high, f_high)
             f_low = np.where(~right & (kept == -1), 0.5 * f_low, f_low)

@@ -1,5 +1,6 @@
 """Integrate one span: an event met at its start, a force constant or linear in time, or ``solve_ivp`` (DOP853, dense
-output) with the span's events, restarted at the knots of its right-hand side; which events fired, and where.
+output) with the span's events, restarted at the knots of its right-hand side, in the variable graded towards a
+singular end where the integrator gives one (:mod:`.graded`); which events fired, and where.
 
 The span's right-hand side and events are its integrator's (:class:`~.span.SpanIntegrator`, or
 :class:`~.split_span.SplitSpanIntegrator` for both parts of the cap with adhesion on a curved indenter).
@@ -14,10 +15,11 @@ from scipy.integrate import OdeSolution, solve_ivp
 from scipy.optimize import OptimizeResult
 
 from .anchors import AnchorMap
+from .graded import GradedProblem, graded_problem
 from .model import ContinuumModel
 from .span import EventFunction, Span, SpanIntegrator, SpanOutcome, Variable
 from .state import Cap, Regime
-from .tolerances import SIMULTANEOUS_SHARE
+from .tolerances import MIN_STEPS_PER_SPAN, SIMULTANEOUS_SHARE
 
 __all__ = ["integrate_span", "solve_between_knots", "fired_events", "radius_at"]
 
@@ -115,18 +117,30 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
     if not (math.isfinite(start) and math.isfinite(stop) and math.isfinite(force)):
         raise RuntimeError(f"the continuum method lost its state on [{t0!r}, {t1!r}] s ({span.regime.value}: from "
                            f"{start!r} to {stop!r}, F_x = {force!r}); please report the parameters and path")
+    span.grading = grading = integrator.grading()
     events = integrator.event_functions()
+    if grading is None:
+        problem = GradedProblem(integrator.rhs, events, start, stop, integrator.knots(), integrator.max_step())
+    else:  # (the variable u of :mod:`.graded`, from 1 to 0)
+        problem = graded_problem(integrator, grading, events, MIN_STEPS_PER_SPAN)
     tolerances = model.tolerances
     options = dict(method="DOP853", rtol=tolerances.rtol, atol=tolerances.atol, dense_output=True,
-                   events=events or None, max_step=integrator.max_step())
-    solution = solve_between_knots(integrator.rhs, start, stop, force, integrator.knots(), options)
+                   events=problem.events or None, max_step=problem.max_step)
+    solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, options)
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol
-    if solution.status == 1:
-        first, fired = fired_events(events, solution.t_events, start, integrator.offset)
-        return SpanOutcome(fired, float(integrator.time_of(first)), float(solution.sol(first)[0]),
-                           float(integrator.radius_of(first)))
+    roots = solution.t_events
+    if solution.status == 0 and grading is not None and grading.event is not None:  # (its origin's event, at u = 0)
+        roots = [[problem.stop] if event.key == grading.event else [] for event in problem.events]
+        if not any(roots):  # (an event no function watches: it fires alone)
+            return SpanOutcome(frozenset({grading.event}), float(integrator.time_of(grading.origin)),
+                               float(solution.y[0, -1]), float(integrator.radius_of(grading.origin)))
+    if any(len(found) for found in roots or []):
+        first, fired = fired_events(problem.events, roots, problem.start, integrator.offset)
+        natural = first if grading is None else float(grading.natural(first))
+        return SpanOutcome(fired, float(integrator.time_of(natural)), float(solution.sol(first)[0]),
+                           float(integrator.radius_of(natural)))
     return SpanOutcome(frozenset(), t1, float(solution.y[0, -1]), float(integrator.radius_of(stop)))
 
 

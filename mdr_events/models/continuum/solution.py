@@ -13,6 +13,7 @@ from scipy import optimize
 from mdr_events.parameters import Parameters
 from mdr_events.validation import check_real, real_array, shown
 from .dense import force_values
+from .graded import natural_variable, span_variable
 from .model import ContinuumModel
 from .span import Span, Variable
 from .state import CONTACT_ENDING, Event, Regime
@@ -156,7 +157,8 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     if span.interpolant is None:
         force = np.full(t.shape, span.force)
     else:
-        force = force_values(span.interpolant, a / span.scale if span.variable is Variable.RADIUS else t)
+        force = force_values(span.interpolant, span_variable(span, a / span.scale if span.variable is Variable.RADIUS
+                                                            else t))
     out["tangential_force"] = force
     if solution.compressed is not None:
         out["tangential_force"], zone_sliding = _compressed_zone(solution.compressed, times, a, zone)
@@ -448,8 +450,8 @@ def _scalar_quantity(solution: PathSolution, index: int, time: float, quantity: 
     elif span.interpolant is None:
         force = span.force
     else:
-        force = float(span.interpolant(a / span.scale if span.variable is Variable.RADIUS
-                                       else solution.t_contact + time)[0])
+        force = float(span.interpolant(span_variable(span, a / span.scale if span.variable is Variable.RADIUS
+                                                     else solution.t_contact + time))[0])
     normal = float(model.normal_force(d, a))
     area = math.pi * a * a
     values = {"normal_force": normal, "tangential_force": force, "contact_radius": a, "contact_area": area,
@@ -559,6 +561,7 @@ def tangential_work(solution: PathSolution, start: float | None = None, end: flo
         else:
             rtol = solution.model.tolerances.radius_rtol
             bounds = tuple(solution.model.branch(span.regime).radius(segment.d(t), rtol) / span.scale for t in t_path)
+        bounds = tuple(span_variable(span, bound) for bound in bounds)
         low, high = min(bounds), max(bounds)
         sign = 1.0 if bounds[1] >= bounds[0] else -1.0
         breaks = np.asarray(span.interpolant.ts)
@@ -572,9 +575,12 @@ def tangential_work(solution: PathSolution, start: float | None = None, end: flo
 
 def _tangential_rate(model: ContinuumModel, span: Span, var: np.ndarray) -> np.ndarray:
     """``dx/d(var)`` of a span: ``v_x`` in time, ``v_x (∂d/∂a)/v_d`` times the scale in the radius over
-    :attr:`Span.scale`."""
+    :attr:`Span.scale`; on a graded span (:mod:`.graded`) times ``dv/du``."""
     segment = span.segment
+    graded = 1.0 if span.grading is None else span.grading.rate(np.asarray(var, dtype=float))  # (dv/du, graded)
+    natural = natural_variable(span, var)
     if span.variable is Variable.TIME:
-        return np.full(np.shape(var), segment.vx)
+        return np.full(np.shape(var), segment.vx) * graded
     branch = model.branch(span.regime)
-    return segment.vx * span.scale * np.array([branch.slope(float(v) * span.scale) for v in var]) / segment.vd
+    return segment.vx * span.scale * np.array([branch.slope(float(v) * span.scale) for v in natural]) / segment.vd \
+        * graded

@@ -40,6 +40,7 @@ from typing import Callable, NamedTuple
 import numpy as np
 
 from .anchors import AnchorMap
+from .graded import Grading
 from .model import ContinuumModel, Segment
 from .state import Cap, Regime, Slip
 from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE
@@ -80,6 +81,8 @@ class Span:
         The integration variable.
     scale : float, default 1.0
         The length (m) the radius is measured in as the integration variable (the time: 1).
+    grading : Grading, optional
+        The integration variable graded towards the span's stop (:mod:`.graded`): the interpolant is in ``u``.
     """
 
     t_start: float
@@ -93,6 +96,8 @@ class Span:
     variable: Variable = Variable.TIME
     #: the integration variable is the radius over this length (the time: 1)
     scale: float = 1.0
+    #: the variable graded towards the span's stop, where it ends at the surface (:mod:`.graded`; ``None``: not)
+    grading: Grading | None = None
 
 
 class Trigger(enum.Enum):
@@ -517,6 +522,16 @@ class SpanIntegrator:
         """
         return abs(self.stop - self.start) / MIN_STEPS_PER_SPAN if self.has_fronts() else math.inf
 
+    def grading(self) -> Grading | None:
+        """The span's variable graded towards a singular end (:mod:`.graded`; ``None``: not graded).
+
+        Returns
+        -------
+        Grading or None
+            ``None``: the force's rate is smooth up to the span's ends.
+        """
+        return None
+
     def finish(self, outcome: SpanOutcome) -> SpanOutcome:
         """What :func:`~.integrate.integrate_span` returns of the span's ``outcome`` (the outcome itself: the span
         read the stored anchors as they were given).
@@ -556,9 +571,25 @@ class SpanIntegrator:
         """
         return not self.moving and not self.positive.fronts and not self.negative.fronts
 
+    def linear_rate(self) -> float:
+        """``dF_x/dt`` of a span whose force is linear in time (:meth:`force_is_linear`):
+        ``2G* ((M(a) − n₊ − n₋) v_x + (n₊ − n₋) κ ḋ)``.
+
+        Returns
+        -------
+        float
+            The rate (N/s).
+        """
+        a = self.span.pinned_radius
+        positive, negative = self.positive.size(0.0, a), self.negative.size(0.0, a)
+        rate = self.G2 * (self.medium.measure(0.0, a) - positive - negative) * self.segment.vx
+        if self.kappa and self.depth_rate:  # the springs at a cap follow κ d (the flat punch pressed in or out)
+            rate += self.G2 * (positive - negative) * self.kappa * self.depth_rate
+        return rate
+
     def linear_span(self, force: float) -> SpanOutcome:
-        """:meth:`force_is_linear`: the force and the first event in closed form (the levels are linear in
-        time; each cap's target is fixed), the span's interpolant a :class:`LinearForce`.
+        """:meth:`force_is_linear`: the force (:meth:`linear_rate`) and the first event in closed form (the levels
+        are linear in time; each cap's target is fixed), the span's interpolant a :class:`LinearForce`.
 
         Parameters
         ----------
@@ -571,10 +602,7 @@ class SpanIntegrator:
             The events that stop it (none: its planned end), the time, force and radius there.
         """
         a = self.span.pinned_radius
-        positive, negative = self.positive.size(0.0, a), self.negative.size(0.0, a)
-        rate = self.G2 * (self.medium.measure(0.0, a) - positive - negative) * self.segment.vx
-        if self.kappa and self.depth_rate:  # the springs at a cap follow κ d (the flat punch pressed in or out)
-            rate += self.G2 * (positive - negative) * self.kappa * self.depth_rate
+        rate = self.linear_rate()
         t_stop, fired = self.stop, frozenset()
         for event in self.event_functions():  # only ZONE_REACHES in a pinned span: linear in time
             speed = event.trigger is Trigger.ZONE_REACHES and event.cap * self.segment.vx - self.kappa * self.depth_rate

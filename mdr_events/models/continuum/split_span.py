@@ -22,22 +22,27 @@ from __future__ import annotations
 
 import math
 
+from .graded import Grading, grading_power
 from .model import ContinuumModel
 from .regions import Region, combined_summary
-from .span import LinearForce, Span, SpanIntegrator, SpanOutcome, Trigger
+from .span import Span, SpanIntegrator, SpanOutcome, Trigger
 from .split_events import SplitEvents
 from .split_layouts import KEYS, Ends, Instant, Key, STILL, crossing_formula, lay_out_regions, split_lengths
 from .split_map import SpanMaps, SplitAnchorMap
 from .state import Cap, Regime, Slip
-from .tolerances import EPS, LEVEL_ULPS, PIECE_SHARE
+from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE
 from .zones import EDGE_LEAVING_TOLERANCES, indenter_travel
 
 __all__ = ["SplitSpanIntegrator", "FRONT_STEPS_PER_SPAN"]
 
-#: A solver step covers at most this share of a span with a front: a front reaching the centre moves as ``g⁻¹`` of a
-#: level, ``∝ (t_end − t)^(1/n)``, whose end DOP853's error estimate misses in long steps (3e-7 of F_x on a power law
-#: n = 3 whose compressed zone slid from x_c to the centre in 0.36 s with 8 steps; 5e-13 with 32).
-FRONT_STEPS_PER_SPAN = 32
+#: A solver step covers at most 1/this of a span with a front reaching the centre (it moves as ``g⁻¹`` of a level,
+#: ``∝ (t_end − t)^(1/n)``, whose end DOP853's error estimate can miss in one long step) or with ``x_c`` moving at the
+#: surface: the τ0 integrator's share (:data:`~.tolerances.MIN_STEPS_PER_SPAN`). It was 32 (twice the solver's steps
+#: of scenario A at 20°); at 8 the integrated F_x stays within 5e-10 of its run at rtol 1e-13 on scenarios A and B
+#: at 20–70°, fretting, the cone, n = 1.5 and n = 3 with and without Δγ0, and within 9e-9 of the algebraic form on
+#: 60 random paths of the property test, as at 32 (the 3e-7 once seen at 8 steps on n = 3 predates the roots taken
+#: to an absolute share of their interval).
+FRONT_STEPS_PER_SPAN = MIN_STEPS_PER_SPAN
 #: A span whose depth at one end is this share of the other's starts or ends at the surface (the planner ends spans
 #: where the depth crosses 0; the depth there carries the rounding of the time)
 SURFACE_SHARE = 1e-6
@@ -105,6 +110,7 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         # each layout with what its level and extent need, read once: (key, layout, σ, the region's weight, compressed)
         self.keyed = [(key, layout, float(key[1]), key[0].weight, key[0] is Region.COMPRESSED)
                       for key, layout in self.layouts.items()]
+        self.graded = self._grading()
 
     def _ends(self) -> dict[Region, Ends]:
         """How each region's ends move: ``x_c`` with the depth (the source's end recedes, the destination's grows and
@@ -328,12 +334,17 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
             ``[dF_x/dvar]``.
         """
         segment = self.segment
-        instant = self.instant(var)
-        sizes = self._sizes_at(instant)
-        at_caps = sum(float(cap) * size for (_, cap), size in sizes.items())
-        compressed = sum(float(cap) * size for (region, cap), size in sizes.items() if region is Region.COMPRESSED)
-        a = instant[1]
-        sticking = a - sum(sizes.values())
+        _, a, x, depth, boundary = self.instant(var)
+        tau0_part, kappa = self.K * a, self.kappa  # (as _sizes_at, the sums in its order)
+        at_caps = compressed = held = 0.0
+        for _, layout, sign, weight, in_compressed in self.keyed:
+            size = layout.size(x - sign * (tau0_part + weight * kappa * depth),
+                               *((0.0, boundary) if in_compressed else (boundary, a)))
+            at_caps += sign * size
+            held += size
+            if in_compressed:
+                compressed += sign * size
+        sticking = a - held
         if not self.moving:  # K a is still; the compressed caps follow the depth
             total = sticking * segment.vx + (compressed * self.kappa * segment.vd if self.pressed else 0.0)
             return [self.G2 * total]
@@ -341,7 +352,7 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         drive = sticking * segment.vx * slope / segment.vd if segment.vx else 0.0
         total = at_caps * self.K + compressed * self.kappa * slope + drive
         if self.shrinking:
-            total += self.edge_shift(instant[2], a)
+            total += self.edge_shift(x, a)
         return [self.G2 * total * self.scale]
 
     def edge_shift(self, x: float, a: float) -> float:
@@ -382,7 +393,7 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         """The longest step of the solver: with a front in a part, or ``x_c`` moving on a span that starts or ends at
         the surface (``x_c ∝ d^(1/n)``, steep there, where a long step reaches: 2e-6 of F_x with four steps over a
         span ending at ``d = 0`` that an event stopped far before), a share 1/:data:`FRONT_STEPS_PER_SPAN` of the
-        span.
+        span (the τ0 integrator's).
 
         Returns
         -------
@@ -392,8 +403,54 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         depths = abs(self.depth_of(self.start)), abs(self.depth_of(self.stop))
         at_surface = min(depths) <= SURFACE_SHARE * max(depths)
         centre = any(layout.parts[index].low == 0.0 for layout in self.layouts.values() for index, _ in layout.fronts)
-        limited = centre or (self.direction != 0.0 and at_surface)
+        graded = self.graded
+        limited = (centre and not (graded and graded.event)) or (self.direction != 0.0 and at_surface and not graded)
         return abs(self.stop - self.start) / FRONT_STEPS_PER_SPAN if limited else math.inf
+
+    def grading(self) -> Grading | None:
+        """The variable graded towards the span's stop where ``x_c`` moves and the stop is at the surface
+        (:mod:`.graded`: ``x_c ∝ d^(1/n)`` steep there), or towards the time a front reaches the centre of its part on
+        a pinned span (``∝ (t_e − t)^(1/n)``; the span ends there with that event).
+
+        Returns
+        -------
+        Grading or None
+            ``v = origin + (start − origin) u^p``; ``None`` for any other span, or a profile whose tip is not a
+            power that a whole ``p`` smooths (:func:`~.graded.grading_power`).
+        """
+        return self.graded
+
+    def _grading(self) -> Grading | None:
+        """:meth:`grading`, found once at the span's start: towards the surface, else towards a front reaching the
+        centre (:meth:`_centre_grading`)."""
+        power = grading_power(self.shape.hertz.tip_power)
+        if power is None:
+            return None
+        first, last = abs(self.depth_of(self.start)), abs(self.depth_of(self.stop))
+        if self.direction != 0.0 and first > 0.0 and last <= SURFACE_SHARE * first:
+            return Grading(self.stop, self.start - self.stop, power)
+        return self._centre_grading(power)
+
+    def _centre_grading(self, power: int) -> Grading | None:
+        """On a pinned span, the earliest time a pushing level reaches the fixed target of a front moving to the centre
+        of its part (the level linear in time: a closed form, inside the span), the variable graded towards it."""
+        if self.moving:
+            return None
+        found = []
+        for key, layout in self.layouts.items():
+            rate = self.rate(key[0], key[1], self.start)  # (σ d(level)/dt, constant on a pinned span)
+            if not rate > 0.0:
+                continue
+            centre = [index for index, at_start in layout.fronts if not at_start and layout.parts[index].start == 0.0]
+            if any(layout.fixed_target == layout.sign * layout.parts[index].value(0.0) for index in centre):
+                # (a moving end's target reached first stops the span before: solve_ivp finds it)
+                excess = layout.sign * self.region_level(key, self.start) - layout.fixed_target - self.offset
+                found.append((self.start - excess / rate, key))
+        inside = [(time, key) for time, key in found if self.start < time < self.stop]
+        if not inside:
+            return None
+        time, key = min(inside)
+        return Grading(time, self.start - time, power, (Trigger.ZONE_REACHES, key[1], key[0]))
 
     def _still(self) -> bool:
         """A pinned span whose caps and regions keep still: ``x_c`` does not move (no Coulomb part follows a depth)."""
@@ -424,32 +481,17 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         """
         return self._still() and not self.has_fronts()
 
-    def linear_span(self, force: float) -> SpanOutcome:
-        """:meth:`force_is_linear`: the force and the first level reaching its target in closed form.
-
-        Parameters
-        ----------
-        force : float
-            ``F_x`` (N) at the span's start.
+    def linear_rate(self) -> float:
+        """:meth:`force_is_linear`: ``dF_x/dt = 2G* (a − n₊ − n₋) v_x``, the zones' sizes at the span's start (the
+        first level reaching its target in closed form: :meth:`~.span.SpanIntegrator.linear_span`; the caps keep
+        still, ``κ ḋ = 0``).
 
         Returns
         -------
-        SpanOutcome
-            The events that stop it, the time, force and radius there.
+        float
+            The rate (N/s).
         """
-        a = self.span.pinned_radius
-        rate = self.G2 * (a - sum(self.sizes(self.start).values())) * self.segment.vx
-        t_stop, fired = self.stop, frozenset()
-        for event in self.event_functions():
-            speed = event.trigger is Trigger.ZONE_REACHES and event.cap * self.segment.vx
-            if speed and speed > 0.0:
-                when = self.start - event(self.start) / speed
-                if when < t_stop:
-                    t_stop, fired = when, frozenset({event.key})
-                elif when == t_stop and fired:
-                    fired = fired | {event.key}
-        self.span.interpolant = LinearForce(self.start, t_stop, force, rate)
-        return SpanOutcome(fired, t_stop, force + rate * (t_stop - self.start), a)
+        return self.G2 * (self.span.pinned_radius - sum(self.sizes(self.start).values())) * self.segment.vx
 
     def finish(self, outcome: SpanOutcome) -> SpanOutcome:
         """``outcome`` with the maps the span read and the slip it laid out (:class:`~.span.SpanOutcome`).

@@ -24,6 +24,7 @@ from numpy.polynomial import chebyshev
 from scipy import optimize
 
 from .dense import force_values
+from .graded import natural_variable, span_variable
 from .span import Variable
 from .state import Regime
 from .tolerances import EPS
@@ -82,13 +83,15 @@ def stationary_points(solution, index: int, quantity: str, times: tuple[float, f
         bracket = (solution.t_contact + times[0], solution.t_contact + times[1])
     else:
         bracket = (radii[0] / span.scale, radii[1] / span.scale)
+    bracket = tuple(span_variable(span, end) for end in bracket)  # (u on a graded span: dv/du > 0 inside)
     points = []
     for var in _dense_output_roots(span.interpolant, min(bracket), max(bracket)):
         value = float(span.interpolant(var)[0])
+        natural = natural_variable(span, var)
         if span.variable is Variable.TIME:
-            time = var - solution.t_contact
+            time = natural - solution.t_contact
         else:
-            time = _time_of_radius(solution, span, var * span.scale)
+            time = _time_of_radius(solution, span, natural * span.scale)
         points.append((min(max(time, times[0]), times[1]), value))
     return points
 
