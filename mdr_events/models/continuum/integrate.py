@@ -1,5 +1,6 @@
-"""Integrate one span: an event met at its start, a force constant or linear in time, or ``solve_ivp`` (DOP853, dense
-output) with the span's events, restarted at the knots of its right-hand side; which events fired, and where.
+"""Integrate one span: an event met at its start, a force constant or linear in time, or ``solve_ivp``'s loop (DOP853,
+dense output; :mod:`.span_march`) with the span's events, restarted at the knots of its right-hand side; which events
+fired, and where.
 
 The span's right-hand side and events are its integrator's (:class:`~.span.SpanIntegrator`, or
 :class:`~.split_span.SplitSpanIntegrator` for both parts of the cap with adhesion on a curved indenter).
@@ -10,12 +11,11 @@ from __future__ import annotations
 import math
 from typing import Callable
 
-from scipy.integrate import OdeSolution, solve_ivp
-from scipy.optimize import OptimizeResult
 
 from .anchors import AnchorMap
 from .model import ContinuumModel
 from .span import EventFunction, Span, SpanIntegrator, SpanOutcome, Variable
+from .span_march import Marched, march
 from .state import Cap, Regime
 from .tolerances import SIMULTANEOUS_SHARE
 
@@ -117,9 +117,8 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
                            f"{start!r} to {stop!r}, F_x = {force!r}); please report the parameters and path")
     events = integrator.event_functions()
     tolerances = model.tolerances
-    options = dict(method="DOP853", rtol=tolerances.rtol, atol=tolerances.atol, dense_output=True,
-                   events=events or None, max_step=integrator.max_step())
-    solution = solve_between_knots(integrator.rhs, start, stop, force, integrator.knots(), options)
+    solution = solve_between_knots(integrator.rhs, start, stop, force, integrator.knots(), events, tolerances.rtol,
+                                   tolerances.atol, integrator.max_step())
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol
@@ -127,12 +126,14 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
         first, fired = fired_events(events, solution.t_events, start, integrator.offset)
         return SpanOutcome(fired, float(integrator.time_of(first)), float(solution.sol(first)[0]),
                            float(integrator.radius_of(first)))
-    return SpanOutcome(frozenset(), t1, float(solution.y[0, -1]), float(integrator.radius_of(stop)))
+    return SpanOutcome(frozenset(), t1, solution.y, float(integrator.radius_of(stop)))
 
 
-def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, knots: list[float],
-                        options: dict) -> OptimizeResult:
-    """``solve_ivp(rhs, (start, stop), [force], **options)``, restarted at each knot of the right-hand side.
+def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, knots: list[float], events: list,
+                        rtol: float, atol: float, max_step: float) -> Marched:
+    """``solve_ivp(rhs, (start, stop), [force], method="DOP853", dense_output=True, events=events, ...)``, restarted
+    at each knot of the right-hand side, by :func:`~.span_march.march` (``solve_ivp``'s loop without its bookkeeping:
+    the same steps, roots and dense output).
 
     At a knot a derivative of ``rhs`` jumps (the PCHIP of a tabulated ``g``): a solver stepping across it shrinks
     its steps hundreds of times and still loses accuracy there (2.6e-6 of ``F_x`` on a 41-point table of the
@@ -149,29 +150,22 @@ def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, 
     force : float
         The initial value.
     knots : list of float
-        The knots strictly between ``start`` and ``stop``, ordered from ``start`` (none: ``solve_ivp`` itself).
-    options : dict
-        ``solve_ivp``'s keywords (``max_step`` among them).
+        The knots strictly between ``start`` and ``stop``, ordered from ``start`` (none: one piece, whose first step
+        the solver picks).
+    events : list
+        The terminal event functions.
+    rtol, atol : float
+        The solver's tolerances.
+    max_step : float
+        The solver's largest step.
 
     Returns
     -------
-    OptimizeResult
-        The result of the last piece integrated, its ``sol`` the joined dense output from ``start``.
+    Marched
+        The status, the joined dense output from ``start``, the first event's root and the state at the end.
     """
-    if not knots:
-        return solve_ivp(rhs, (start, stop), [force], **options)
-    ts, interpolants = [start], []
-    for low, high in zip([start, *knots], [*knots, stop]):
-        piece = solve_ivp(rhs, (low, high), [force], first_step=min(abs(high - low), options["max_step"]), **options)
-        if piece.status < 0:
-            return piece
-        ts.extend(piece.sol.ts[1:])
-        interpolants.extend(piece.sol.interpolants)
-        force = piece.y[0, -1]
-        if piece.status == 1:
-            break
-    piece.sol = OdeSolution(ts, interpolants)
-    return piece
+    pieces = list(zip([start, *knots], [*knots, stop]))
+    return march(rhs, pieces, force, events, rtol, atol, max_step, first_steps=bool(knots))
 
 
 def radius_at(model: ContinuumModel, span: Span, t: float) -> float:
