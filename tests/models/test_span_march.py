@@ -20,10 +20,11 @@ from mdr_events.models.paths import Path
 PAPER = me.Parameters.paper()
 
 
-def solve_ivp_between_knots(rhs, start, stop, force, knots, events, rtol, atol, max_step):
+def solve_ivp_between_knots(rhs, start, stop, force, knots, events, tolerances, max_step):
     """The route before :mod:`~mdr_events.models.continuum.span_march`: ``solve_ivp`` per piece between the knots,
     the pieces' dense outputs joined."""
-    options = dict(method="DOP853", rtol=rtol, atol=atol, dense_output=True, events=events or None, max_step=max_step)
+    options = dict(method="DOP853", rtol=tolerances.rtol, atol=tolerances.atol, dense_output=True,
+                   events=events or None, max_step=max_step)
     if not knots:
         solution = solve_ivp(rhs, (start, stop), [force], **options)
     else:

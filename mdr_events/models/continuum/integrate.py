@@ -17,7 +17,7 @@ from .model import ContinuumModel
 from .span import EventFunction, Span, SpanIntegrator, SpanOutcome, Variable
 from .span_march import Marched, march
 from .state import Cap, Regime
-from .tolerances import SIMULTANEOUS_SHARE
+from .tolerances import SIMULTANEOUS_SHARE, Tolerances
 
 __all__ = ["integrate_span", "solve_between_knots", "fired_events", "radius_at"]
 
@@ -117,8 +117,8 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
                            f"{start!r} to {stop!r}, F_x = {force!r}); please report the parameters and path")
     events = integrator.event_functions()
     tolerances = model.tolerances
-    solution = solve_between_knots(integrator.rhs, start, stop, force, integrator.knots(), events, tolerances.rtol,
-                                   tolerances.atol, integrator.max_step())
+    solution = solve_between_knots(integrator.rhs, start, stop, force, integrator.knots(), events, tolerances,
+                                   integrator.max_step())
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol
@@ -130,7 +130,7 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
 
 
 def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, knots: list[float], events: list,
-                        rtol: float, atol: float, max_step: float) -> Marched:
+                        tolerances: Tolerances, max_step: float) -> Marched:
     """``solve_ivp(rhs, (start, stop), [force], method="DOP853", dense_output=True, events=events, ...)``, restarted
     at each knot of the right-hand side, by :func:`~.span_march.march` (``solve_ivp``'s loop without its bookkeeping:
     the same steps, roots and dense output).
@@ -154,8 +154,8 @@ def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, 
         the solver picks).
     events : list
         The terminal event functions.
-    rtol, atol : float
-        The solver's tolerances.
+    tolerances : Tolerances
+        The solver's (its ``rtol`` and ``atol``).
     max_step : float
         The solver's largest step.
 
@@ -165,7 +165,7 @@ def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, 
         The status, the joined dense output from ``start``, the first event's root and the state at the end.
     """
     pieces = list(zip([start, *knots], [*knots, stop]))
-    return march(rhs, pieces, force, events, rtol, atol, max_step, first_steps=bool(knots))
+    return march(rhs, pieces, force, events, tolerances.rtol, tolerances.atol, max_step, first_steps=bool(knots))
 
 
 def radius_at(model: ContinuumModel, span: Span, t: float) -> float:
