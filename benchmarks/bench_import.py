@@ -7,7 +7,10 @@ cache; one unmeasured run first warms it):
   for comparison;
 - ``python -X importtime -c "import mdr_events"``: the cumulative import time of ``mdr_events`` it reports;
 - ``mdr-events --help``, wall time (target: under 0.5 s);
-- the heavy libraries ``import mdr_events`` loads (none expected; ``tests/test_imports.py`` checks it).
+- the heavy libraries ``import mdr_events`` loads (none expected; ``tests/test_imports.py`` checks it);
+- a verb's run, ``mdr-events phase-diagram --scenario A`` (its netCDF file and figure written), wall time, and whether
+  it loads ``dask.distributed`` (target: not; xarray's ``to_netcdf`` would, some 0.4 s:
+  ``tests/app/test_verb_imports.py``).
 
 ``--against DIR`` measures a checkout of another commit side by side (its package first on ``PYTHONPATH``), e.g.
 ``git worktree add /tmp/before <commit>`` then ``--against /tmp/before``.
@@ -23,6 +26,7 @@ import re
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -32,6 +36,12 @@ IMPORT_TARGET, HELP_TARGET = 0.3, 0.5
 HEAVY = ("matplotlib", "sympy", "dask", "distributed", "scipy", "scipy.stats", "scipy.interpolate", "xarray",
          "pandas", "numpy")
 HELP_CODE = "import sys; sys.argv = ['mdr-events', '--help']; from mdr_events.app.cli import console_main; console_main()"
+#: A verb's run (its files written into the directory given after the code), then whether dask.distributed was loaded.
+VERB_CODE = ("import contextlib, io, sys\n"
+             "from mdr_events.app.cli import main\n"
+             "with contextlib.redirect_stdout(io.StringIO()):\n"
+             "    status = main(['phase-diagram', '--scenario', 'A', '--out', sys.argv[1]])\n"
+             "print(status, 'distributed' in sys.modules)")
 
 
 def _environment(root: str) -> dict[str, str]:
@@ -72,14 +82,27 @@ def heavy_loaded(env: dict[str, str]) -> list[str]:
                           check=True, capture_output=True, text=True).stdout.split()
 
 
+def verb_loads_distributed(env: dict[str, str], out: str) -> bool:
+    """Whether a verb's run (:data:`VERB_CODE`, its files written into ``out``) loads dask.distributed."""
+    done = subprocess.run([sys.executable, "-c", VERB_CODE, out], env=env, cwd=env["PYTHONPATH"].split(os.pathsep)[0],
+                          check=True, capture_output=True, text=True)
+    status, loaded = done.stdout.split()[-2:]
+    if status != "0":
+        raise RuntimeError(f"phase-diagram ended with status {status}: {done.stderr}")
+    return loaded == "True"
+
+
 def measure(root: str, repeat: int) -> dict[str, object]:
     """Every figure of this benchmark for the package in the checkout ``root``."""
     env = _environment(root)
-    return {"python": wall([sys.executable, "-c", "pass"], env, repeat),
-            "import": wall([sys.executable, "-c", "import mdr_events"], env, repeat),
-            "importtime": importtime(env, repeat),
-            "help": wall([sys.executable, "-c", HELP_CODE], env, repeat),
-            "heavy": heavy_loaded(env)}
+    with tempfile.TemporaryDirectory() as out:
+        return {"python": wall([sys.executable, "-c", "pass"], env, repeat),
+                "import": wall([sys.executable, "-c", "import mdr_events"], env, repeat),
+                "importtime": importtime(env, repeat),
+                "help": wall([sys.executable, "-c", HELP_CODE], env, repeat),
+                "heavy": heavy_loaded(env),
+                "verb": wall([sys.executable, "-c", VERB_CODE, out], env, repeat),
+                "distributed": verb_loads_distributed(env, out)}
 
 
 def main() -> None:
@@ -102,10 +125,12 @@ def main() -> None:
         print(f"    mdr-events --help                    {row['help']:.3f}  (target < {HELP_TARGET})"
               f"{'' if row['help'] < HELP_TARGET else '  OVER'}")
         print(f"    heavy libraries at import: {', '.join(row['heavy']) or 'none'}")
+        print(f"    mdr-events phase-diagram --scenario A {row['verb']:.3f}; dask.distributed loaded: "
+              f"{'yes' if row['distributed'] else 'no'} (target: no){'  OVER' if row['distributed'] else ''}")
     if len(rows) == 2:
         now, before = rows.values()
         print(f"  ratio (before / now): import {before['import'] / now['import']:.1f}x, "
-              f"--help {before['help'] / now['help']:.1f}x")
+              f"--help {before['help'] / now['help']:.1f}x, phase-diagram {before['verb'] / now['verb']:.2f}x")
 
 
 if __name__ == "__main__":

@@ -18,7 +18,13 @@ def test_the_readme_lists_every_notebook():
     assert listed == {path.name for path in NOTEBOOKS} and len(listed) == 7
 
 
-@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.name)
+#: The notebooks whose script runs long (the rate-dependent edge's fits, ~8 s of CPU; the finite layer's tables and
+#: curves, ~13 s): run by `make test-all` and CI (marked slow), their relations tested in tests/theory and tests/models.
+LONG_NOTEBOOKS = ("06_rate_dependent_adhesion.py", "07_finite_layer.py")
+
+
+@pytest.mark.parametrize("path", [pytest.param(path, marks=pytest.mark.slow) if path.name in LONG_NOTEBOOKS else path
+                                  for path in NOTEBOOKS], ids=lambda p: p.name)
 def test_notebook_runs(path, capsys):
     """The script is a Jupytext percent notebook whose cells run top to bottom and draw a figure.
 

@@ -37,6 +37,7 @@ import xarray as xr
 from mdr_events.io.datasets import (PROGRAM, STAMP_ATTRIBUTES, describe_dims, dims_match, parameters_of,
                                    required_variables)
 from mdr_events.contact import Contact
+from mdr_events.io import netcdf3
 from mdr_events.io.paths import (ALLOWED_FILE, ALLOWED_PATH, TEMPORARY_MARKER, check_file_path,  # noqa: F401 - as before
                                  check_output_file, check_output_stem, input_file_problem, is_temporary_name,
                                  prepare_output_directory)
@@ -281,7 +282,7 @@ def netcdf_writer(dataset: xr.Dataset) -> Callable[[str], Any]:
 
     def write(temporary: str) -> None:
         try:
-            dataset.to_netcdf(temporary, engine="scipy", format="NETCDF3_64BIT")
+            netcdf3.write_netcdf3(dataset, temporary)  # (to_netcdf's file, without its question to dask.distributed)
         except (ValueError, TypeError, OverflowError) as error:  # (what netCDF-3 cannot hold, in xarray's words)
             reason = " ".join(str(error).split())
             raise ValueError(f"dataset cannot be written as netCDF-3 ({type(error).__name__}: {reason}); allowed: "

@@ -42,12 +42,13 @@ methods.run_continuum = run_continuum
 """
 #: A slow disk: the first netCDF file is written half, then the writer waits (to be killed).
 SLOW_DISK = """
-import time, xarray
-def to_netcdf(self, path, *args, **kwargs):
+import time
+import mdr_events.io.netcdf3
+def write_netcdf3(dataset, path):
     with open(path, "wb") as handle:
         handle.write(b"CDF\\x02 half a file")
     time.sleep(60)
-xarray.Dataset.to_netcdf = to_netcdf
+mdr_events.io.netcdf3.write_netcdf3 = write_netcdf3
 """
 
 STUDY = """
@@ -298,12 +299,12 @@ def test_every_failure_is_one_line_with_its_status(tmp_path, monkeypatch, capsys
 
 
 def test_a_file_that_cannot_be_written_leaves_nothing(tmp_path, monkeypatch, capsys):
-    def disk_full(self, path, *args, **kwargs):
+    def disk_full(dataset, path):
         with open(path, "wb") as handle:
             handle.write(b"CDF\x02 half")
         raise OSError(28, "No space left on device", path)
 
-    monkeypatch.setattr("xarray.Dataset.to_netcdf", disk_full)
+    monkeypatch.setattr("mdr_events.io.netcdf3.write_netcdf3", disk_full)  # (the netCDF writer of a result)
     line = assert_one_line(run(capsys, "phase-diagram", "--scenario", "A", "--out", str(tmp_path)), 2,
                            f"error: {tmp_path / 'phase_diagram_A.nc'}: No space left on device")
     assert TEMPORARY_MARKER not in line
@@ -452,12 +453,12 @@ def test_sigterm_while_writing_removes_the_temporary_file(tmp_path):
 
 
 def test_ctrl_c_while_writing_removes_the_temporary_file(tmp_path, monkeypatch, capsys):
-    def interrupted(self, path, *args, **kwargs):
+    def interrupted(dataset, path):
         with open(path, "wb") as handle:
             handle.write(b"CDF\x02 half")
         raise KeyboardInterrupt
 
-    monkeypatch.setattr("xarray.Dataset.to_netcdf", interrupted)
+    monkeypatch.setattr("mdr_events.io.netcdf3.write_netcdf3", interrupted)  # (the netCDF writer of a result)
     result = run(capsys, "phase-diagram", "--scenario", "A", "--out", str(tmp_path))
     assert result.returncode == 128 + signal.SIGINT
     assert result.stderr == "mdr-events: interrupted (Ctrl-C); no file was left half-written\n"

@@ -34,6 +34,8 @@ def write_study(folder, extra=""):
     return path
 
 
+@pytest.mark.slow  # a local dask cluster started by the console script (~15 s); a cluster's numbers are the serial
+# ones in tests/analysis/test_sweep.py, the CLI's sweep serially below
 def test_console_script_sweeps_on_a_local_cluster_and_writes_store_and_netcdf(paper, tmp_path):
     study = write_study(tmp_path)
     result = subprocess.run([*console_script(), "sweep", str(study), "--workers", str(min(2, os.cpu_count() or 1))], capture_output=True, text=True,

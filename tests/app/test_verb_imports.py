@@ -9,10 +9,13 @@ it. What may not be loaded, and why it is not needed:
 - a verb's ``--help`` lists its options: no SymPy, xarray, dask or SciPy (:mod:`mdr_events.app.inputs` imports the
   models where a value is read).
 
+- ``distributed``: xarray's ``to_netcdf`` asks dask for its scheduler on every write, importing dask.distributed
+  (some 0.4 s) for a dataset in memory; the files are written without that question
+  (:func:`mdr_events.io.netcdf3.write_netcdf3`).
+
 ``dask`` itself is loaded by xarray on the first array it wraps (its check whether the array is a dask array), so
-a verb that writes a dataset loads it whatever this package imports; and xarray's ``to_netcdf`` asks for dask's
-scheduler on every write, importing dask.distributed for a dataset in memory: neither is among the modules a run is
-checked for (a ``--help`` loads neither).
+a verb that writes a dataset loads it whatever this package imports: it is not among the modules a run is checked
+for (a ``--help`` loads it not).
 """
 
 from __future__ import annotations
@@ -25,7 +28,7 @@ import textwrap
 import pytest
 
 #: What a run of ``phase-diagram`` or ``simulate`` does not use.
-NOT_USED_BY_A_RUN = ("scipy.stats",)
+NOT_USED_BY_A_RUN = ("scipy.stats", "distributed")
 #: What a verb's ``--help`` does not use (listing the options of phase-diagram, sweep, run, reproduce, derive).
 NOT_USED_BY_HELP = ("distributed", "dask", "scipy", "scipy.stats", "sympy", "xarray", "matplotlib")
 
@@ -52,7 +55,7 @@ def loaded_after(argv: list[str], cwd) -> set[str]:
     ["phase-diagram", "--scenario", "A"],
     ["simulate", "--scenario", "A", "--alpha", "20", "--method", "continuum"],
 ], ids=["phase-diagram", "simulate"])
-def test_a_run_loads_no_scipy_stats(tmp_path, argv):
+def test_a_run_loads_neither_scipy_stats_nor_dask_distributed(tmp_path, argv):
     loaded = loaded_after([*argv, "--out", str(tmp_path)], tmp_path)
     assert (tmp_path / f"{'phase_diagram_A' if argv[0] == 'phase-diagram' else 'simulation_A_continuum'}.nc").is_file()
     assert "xarray" in loaded  # (the run did write its dataset through xarray)

@@ -11,7 +11,7 @@ import pytest
 import xarray as xr
 
 import mdr_events as me
-from mdr_events.io import datasets
+from mdr_events.io import datasets, netcdf3
 from mdr_events.analysis.fit import synthetic_measurement
 from mdr_events.analysis.universal_map import universal_map
 from mdr_events.io.files import (TEMPORARY_MARKER, atomic_write, check_output_stem, is_temporary_name,
@@ -124,12 +124,12 @@ def test_a_failing_writer_leaves_the_old_file_and_no_temporary(tmp_path):
 def test_an_interrupted_netcdf_write_never_leaves_a_half_file(results, tmp_path, monkeypatch):
     target = tmp_path / "fig.nc"
 
-    def interrupted(self, path, *args, **kwargs):
+    def interrupted(dataset, path):
         with open(path, "wb") as handle:
             handle.write(b"CDF\x02 truncated")
         raise OSError("disk full")
 
-    monkeypatch.setattr(xr.Dataset, "to_netcdf", interrupted)
+    monkeypatch.setattr(netcdf3, "write_netcdf3", interrupted)  # (the netCDF writer netcdf_writer calls)
     with pytest.raises(OSError, match="disk full"):
         write_netcdf(results["discrete"], target)
     assert not target.exists() and os.listdir(tmp_path) == []

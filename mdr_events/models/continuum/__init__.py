@@ -22,6 +22,7 @@ module                     one idea
 :mod:`.plan`               :func:`plan_span`: the span's regime and end in closed form
 :mod:`.span`               :class:`SpanIntegrator` (right-hand side, event functions)
 :mod:`.integrate`          ``integrate_span``: a span's force up to its end or first event (``solve_ivp``, knots)
+:mod:`.span_march`         ``solve_ivp``'s loop for a span's DOP853 between knots without its bookkeeping (same steps)
 :mod:`.solve`              :func:`solve_path`: plan → integrate → transition → log
 :mod:`.compressed`         Coulomb's law alone with adhesion: the compressed zone's run beside the contact, and the
                            contact's slip events (the zone's and the tensile annulus's)

@@ -1,6 +1,6 @@
-"""Integrate one span: an event met at its start, a force constant or linear in time, or ``solve_ivp`` (DOP853, dense
-output) with the span's events, restarted at the knots of its right-hand side, in the variable graded towards a
-singular end where the integrator gives one (:mod:`.graded`); which events fired, and where.
+"""Integrate one span: an event met at its start, a force constant or linear in time, or ``solve_ivp``'s loop (DOP853,
+dense output; :mod:`.span_march`) with the span's events, restarted at the knots of its right-hand side, in the
+variable graded towards a singular end where the integrator gives one (:mod:`.graded`); which events fired, and where.
 
 The span's right-hand side and events are its integrator's (:class:`~.span.SpanIntegrator`, or
 :class:`~.split_span.SplitSpanIntegrator` for both parts of the cap with adhesion on a curved indenter).
@@ -11,15 +11,14 @@ from __future__ import annotations
 import math
 from typing import Callable
 
-from scipy.integrate import OdeSolution, solve_ivp
-from scipy.optimize import OptimizeResult
 
 from .anchors import AnchorMap
 from .graded import GradedProblem, graded_problem
 from .model import ContinuumModel
 from .span import EventFunction, Span, SpanIntegrator, SpanOutcome, Variable
+from .span_march import Marched, march
 from .state import Cap, Regime
-from .tolerances import MIN_STEPS_PER_SPAN, SIMULTANEOUS_SHARE
+from .tolerances import MIN_STEPS_PER_SPAN, SIMULTANEOUS_SHARE, Tolerances
 
 __all__ = ["integrate_span", "solve_between_knots", "fired_events", "radius_at"]
 
@@ -124,9 +123,8 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
     else:  # (the variable u of :mod:`.graded`, from 1 to 0)
         problem = graded_problem(integrator, grading, events, MIN_STEPS_PER_SPAN)
     tolerances = model.tolerances
-    options = dict(method="DOP853", rtol=tolerances.rtol, atol=tolerances.atol, dense_output=True,
-                   events=problem.events or None, max_step=problem.max_step)
-    solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, options)
+    solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, problem.events,
+                                   tolerances, problem.max_step)
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol
@@ -135,18 +133,20 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
         roots = [[problem.stop] if event.key == grading.event else [] for event in problem.events]
         if not any(roots):  # (an event no function watches: it fires alone)
             return SpanOutcome(frozenset({grading.event}), float(integrator.time_of(grading.origin)),
-                               float(solution.y[0, -1]), float(integrator.radius_of(grading.origin)))
-    if any(len(found) for found in roots or []):
+                               solution.y, float(integrator.radius_of(grading.origin)))
+    if any(len(found) for found in roots):
         first, fired = fired_events(problem.events, roots, problem.start, integrator.offset)
         natural = first if grading is None else float(grading.natural(first))
         return SpanOutcome(fired, float(integrator.time_of(natural)), float(solution.sol(first)[0]),
                            float(integrator.radius_of(natural)))
-    return SpanOutcome(frozenset(), t1, float(solution.y[0, -1]), float(integrator.radius_of(stop)))
+    return SpanOutcome(frozenset(), t1, solution.y, float(integrator.radius_of(stop)))
 
 
-def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, knots: list[float],
-                        options: dict) -> OptimizeResult:
-    """``solve_ivp(rhs, (start, stop), [force], **options)``, restarted at each knot of the right-hand side.
+def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, knots: list[float], events: list,
+                        tolerances: Tolerances, max_step: float) -> Marched:
+    """``solve_ivp(rhs, (start, stop), [force], method="DOP853", dense_output=True, events=events, ...)``, restarted
+    at each knot of the right-hand side, by :func:`~.span_march.march` (``solve_ivp``'s loop without its bookkeeping:
+    the same steps, roots and dense output).
 
     At a knot a derivative of ``rhs`` jumps (the PCHIP of a tabulated ``g``): a solver stepping across it shrinks
     its steps hundreds of times and still loses accuracy there (2.6e-6 of ``F_x`` on a 41-point table of the
@@ -163,29 +163,22 @@ def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, 
     force : float
         The initial value.
     knots : list of float
-        The knots strictly between ``start`` and ``stop``, ordered from ``start`` (none: ``solve_ivp`` itself).
-    options : dict
-        ``solve_ivp``'s keywords (``max_step`` among them).
+        The knots strictly between ``start`` and ``stop``, ordered from ``start`` (none: one piece, whose first step
+        the solver picks).
+    events : list
+        The terminal event functions.
+    tolerances : Tolerances
+        The solver's (its ``rtol`` and ``atol``).
+    max_step : float
+        The solver's largest step.
 
     Returns
     -------
-    OptimizeResult
-        The result of the last piece integrated, its ``sol`` the joined dense output from ``start``.
+    Marched
+        The status, the joined dense output from ``start``, the first event's root and the state at the end.
     """
-    if not knots:
-        return solve_ivp(rhs, (start, stop), [force], **options)
-    ts, interpolants = [start], []
-    for low, high in zip([start, *knots], [*knots, stop]):
-        piece = solve_ivp(rhs, (low, high), [force], first_step=min(abs(high - low), options["max_step"]), **options)
-        if piece.status < 0:
-            return piece
-        ts.extend(piece.sol.ts[1:])
-        interpolants.extend(piece.sol.interpolants)
-        force = piece.y[0, -1]
-        if piece.status == 1:
-            break
-    piece.sol = OdeSolution(ts, interpolants)
-    return piece
+    pieces = list(zip([start, *knots], [*knots, stop]))
+    return march(rhs, pieces, force, events, tolerances.rtol, tolerances.atol, max_step, first_steps=bool(knots))
 
 
 def radius_at(model: ContinuumModel, span: Span, t: float) -> float:
