@@ -26,6 +26,7 @@ from scipy.optimize import brentq, minimize_scalar
 
 from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.layer import Layer
 from mdr_events.limits import Limits
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
@@ -38,7 +39,7 @@ from .solve import BYTES_PER_SAMPLE
 from .state import Event, EventKind
 from .tolerances import Tolerances
 
-__all__ = ["run_rate_continuum", "rate_quantities", "rate_events", "rate_extrema", "Scan", "scan_run",
+__all__ = ["run_rate_continuum", "check_rate_layer", "rate_quantities", "rate_events", "rate_extrema", "Scan", "scan_run",
            "EXTREMUM_PROBES", "SWITCH_XTOL", "SWITCH_POINTS", "RUN_METHOD"]
 
 #: Points inside each of the edge's solver steps at which the scan looks (besides the steps' ends and the level's
@@ -277,6 +278,26 @@ def rate_extrema(shifts: RateShifts, scan: Scan) -> dict[str, float]:
             value_name, time_name = extremum_names(name, kind)
             out[value_name], out[time_name] = value, time - start
     return out
+
+
+def check_rate_layer(layer: Layer) -> None:
+    """Refuse a layer of finite thickness under the rate-dependent law in the continuum: the edge's ODE is Heß's rule
+    on the half-space (``Γ = E* (g − d)² / (2π a)``), which a layer's compliance ``K(a)`` changes.
+
+    Parameters
+    ----------
+    layer : Layer
+        The contact's layer.
+
+    Raises
+    ------
+    ValueError
+        A layer of finite thickness.
+    """
+    if not layer.is_half_space:
+        raise ValueError(f"layer={layer!r} is not allowed with a rate-dependent law in the continuum; allowed: the "
+                         "half-space (the edge's ODE is Heß's rule on the half-space; a layer's springs take the "
+                         "rate-independent Adhesion)")
 
 
 def run_rate_continuum(params: Parameters, paths: list[Path], times: np.ndarray | int, tolerances: Tolerances,
