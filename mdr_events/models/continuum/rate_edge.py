@@ -40,7 +40,7 @@ from .model import ContinuumModel, Segment, kinematics
 from .rate_march import march
 from .tolerances import Tolerances
 
-__all__ = ["EdgeEventKind", "EdgeEvent", "EdgeMode", "EdgeRun", "EdgeUnresolved", "solve_edge", "START_SPEED",
+__all__ = ["EdgeEventKind", "EdgeEvent", "EdgeMode", "EdgeRun", "EdgeUnresolved", "solve_edge", "normal_force_at", "START_SPEED",
            "END_SHARE", "EDGE_RTOL",
            "EDGE_METHODS", "BAND_SHARE", "MAX_PIECES_PER_SEGMENT"]
 
@@ -188,9 +188,7 @@ class EdgeRun:
             raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: the Path the run "
                             "followed")
         times = _checked_times(times)
-        a = self.radius(times)
-        depth = path.position(times)[1]
-        return np.where(a > 0, np.asarray(self.model.normal_force(depth, np.where(a > 0, a, 1.0)), dtype=float), 0.0)
+        return normal_force_at(self.model, path.position(times)[1], self.radius(times))
 
 
     def pull_off_force(self, path: Path, samples: int = PULL_OFF_SAMPLES, limits: Limits = DEFAULT_LIMITS) -> float:
@@ -225,6 +223,26 @@ class EdgeRun:
         found = minimize_scalar(lambda t: float(self.normal_force(np.array([t]), path)[0]), method="bounded",
                                 bounds=bracket, options={"xatol": PULL_OFF_XTOL * (bracket[1] - bracket[0])})
         return float(min(found.fun, np.min(self.normal_force(np.array(bracket), path))))
+
+
+def normal_force_at(model: ContinuumModel, depth: np.ndarray, radius: np.ndarray) -> np.ndarray:
+    """``F_N`` (N, (10)) of the contact of ``radius`` at ``depth`` (elementwise): 0 where the radius is 0 (out of
+    contact).
+
+    Parameters
+    ----------
+    model : ContinuumModel
+        The indenter's normal force.
+    depth, radius : numpy.ndarray
+        The depths and radii (m).
+
+    Returns
+    -------
+    numpy.ndarray
+        The normal force.
+    """
+    inside = radius > 0
+    return np.where(inside, np.asarray(model.normal_force(depth, np.where(inside, radius, 1.0)), dtype=float), 0.0)
 
 
 def _checked_times(times) -> np.ndarray:

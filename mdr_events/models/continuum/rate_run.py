@@ -92,7 +92,7 @@ def rate_quantities(shifts: RateShifts, times: np.ndarray) -> dict[str, np.ndarr
     x, depth = path.position(clock)
     radius = shifts._radius(clock)
     force, sliding = shifts._evaluate(clock)
-    normal = shifts.edge.normal_force(np.minimum(clock, path.duration), path)
+    normal = shifts.normal_force(np.minimum(clock, path.duration))
     with np.errstate(invalid="ignore", divide="ignore"):
         share = np.where(radius > 0.0, np.minimum(sliding / np.where(radius > 0.0, radius, 1.0), 1.0), np.nan)
     out = {"indentation_depth": depth, "tangential_displacement": x, "normal_force": normal,
@@ -154,7 +154,7 @@ def scan_run(shifts: RateShifts) -> Scan:
                                       knots[-1:], stamps[(stamps >= start) & (stamps <= end)]]))
     force, extent = shifts._evaluate(times)
     return Scan(times, force, extent, shifts._radius(times), shifts._level(times),
-                shifts.edge.normal_force(times, shifts.path))
+                shifts.normal_force(times))
 
 
 def _at_cap(shifts: RateShifts, clock: np.ndarray) -> np.ndarray:
@@ -233,7 +233,7 @@ def rate_events(shifts: RateShifts, scan: Scan) -> list[Event]:
 
 def _quantity(shifts: RateShifts, name: str, clock: np.ndarray) -> np.ndarray:
     if name == "normal_force":
-        return shifts.edge.normal_force(clock, shifts.path)
+        return shifts.normal_force(clock)
     if name == "tangential_force":
         return shifts._evaluate(clock)[0]
     return math.pi * shifts._radius(clock) ** 2

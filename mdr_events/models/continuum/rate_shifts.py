@@ -43,16 +43,17 @@ from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law, symbolic
 from mdr_events.validation import shown
 
-from .rate_dense import step_polynomials
-from .rate_edge import EDGE_RTOL, EdgeEventKind, EdgeRun, solve_edge
+from .rate_dense import StepPolynomials, step_polynomials
+from .rate_edge import EDGE_RTOL, EdgeEventKind, EdgeRun, normal_force_at, solve_edge
 
 __all__ = ["RateShifts", "solve_rate_shifts", "check_rate_friction", "GAUSS_NODES", "BISECTIONS", "STEP_PROBES"]
 
 #: Gauss–Legendre nodes per solver step for ``∫ Ẋ a dτ``: exact to degree 15, beyond the dense output's polynomials
 #: (Radau's 3, BDF's 5, LSODA's up to 12).
 GAUSS_NODES = 8
-#: Halvings of a bracket where the radius or ``x`` reaches a value (the cut of a record, the sliding springs' end):
-#: 2^-64 of a step, below a double's spacing.
+#: Halvings of a bracket where the radius reaches a value on a dense output that is not the steps' polynomials (on them
+#: :meth:`~mdr_events.models.continuum.rate_dense.StepPolynomials.reach`; where ``x`` reaches a level, the sliding
+#: springs' end, the closed form :func:`_reach`): 2^-64 of a step, below a double's spacing.
 BISECTIONS = 64
 #: Points inside each solver step at which ``L = σx − K a`` is probed for an interior maximum (then refined).
 STEP_PROBES = 5
@@ -124,7 +125,7 @@ class RateShifts:
     def _x(self, times) -> np.ndarray:
         """``σx`` (m) at ``times`` (the path's ``x``, its corners read once)."""
         corners, along = self._corners
-        return np.interp(np.clip(np.asarray(times, dtype=float), corners[0], corners[-1]), corners, along)
+        return np.interp(times, corners, along)  # (held at the ends beyond them)
 
     def _radius(self, times) -> np.ndarray:
         """The radius (m) at ``times`` (the edge's, from its steps' polynomials), 0 out of contact."""
@@ -135,6 +136,22 @@ class RateShifts:
             if np.any(inside):
                 out[inside] = view.solution(times[inside])[0]
         return out
+
+    def normal_force(self, times) -> np.ndarray:
+        """``F_N`` (N, (10)) at ``times`` (s, path clock), from the edge's steps' polynomials; 0 out of contact.
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s on the path's clock).
+
+        Returns
+        -------
+        numpy.ndarray
+            The normal force, the shape of ``times``.
+        """
+        times = np.asarray(times, dtype=float)
+        return normal_force_at(self.edge.model, self.path.position(times)[1], self._radius(times))
 
     def _level(self, times) -> np.ndarray:
         """``L = σx − K a`` (m) at ``times``."""
@@ -265,10 +282,19 @@ def _cut(records: list, radius: float) -> list:
         if a_lo >= radius:
             break
         if a_hi > radius:
-            record = record._replace(hi=float(_bisect(lambda t: record.solution(t)[0], np.array([record.lo]),
-                                                      np.array([record.hi]), np.array([radius]))[0]))
+            record = record._replace(hi=float(_first_radius(record.solution, record.lo, np.array([record.hi]),
+                                                            np.array([radius]))[0]))
         kept.append(record)
     return kept
+
+
+def _first_radius(solution, lo: float, hi: np.ndarray, radius: np.ndarray) -> np.ndarray:
+    """The first time in ``[lo, hi]`` at which an advancing piece's radius reaches ``radius`` (elementwise): on its
+    steps' polynomials (:meth:`~mdr_events.models.continuum.rate_dense.StepPolynomials.reach`), else by
+    :func:`_bisect`."""
+    if isinstance(solution, StepPolynomials):
+        return solution.reach(radius, lo, hi)
+    return _bisect(lambda t: solution(t)[0], np.full(hi.shape, lo), hi, radius)
 
 
 def _bisect(increasing, lo: np.ndarray, hi: np.ndarray, target: np.ndarray) -> np.ndarray:
@@ -280,6 +306,19 @@ def _bisect(increasing, lo: np.ndarray, hi: np.ndarray, target: np.ndarray) -> n
         above = np.asarray(increasing(mid), dtype=float) >= target
         hi, lo = np.where(above, mid, hi), np.where(above, lo, mid)
     return hi
+
+
+def _reach(shifts: RateShifts, top: np.ndarray, level: np.ndarray) -> np.ndarray:
+    """The first time ``σx`` reaches ``level`` (elementwise), at most ``top``: ``σx`` is linear between the path's
+    corners and never falls, so the time is read off the corner where it first reaches the level, on the segment
+    before it (the inverse of :meth:`RateShifts._x` in closed form)."""
+    corners, along = shifts._corners
+    after = np.minimum(np.searchsorted(along, level, side="left"), len(along) - 1)
+    before = np.maximum(after - 1, 0)
+    rise = along[after] - along[before]
+    share = np.where(rise > 0.0, (level - along[before]) / np.where(rise > 0.0, rise, 1.0), 1.0)
+    when = corners[before] + np.clip(share, 0.0, 1.0) * (corners[after] - corners[before])
+    return np.minimum(when, top)
 
 
 def _knots(view: _View, corners: np.ndarray) -> np.ndarray:
@@ -362,11 +401,9 @@ def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.n
         if view.way < 0:  # (the receding edge has taken the springs beyond the radius now)
             beyond = solution(top)[0] > radius[rows]
             if np.any(beyond):
-                top[beyond] = _bisect(lambda t, s=solution: s(t)[0], np.full(int(beyond.sum()), lo), top[beyond],
-                                      radius[rows][beyond])
+                top[beyond] = _first_radius(solution, lo, top[beyond], radius[rows][beyond])
         level = levels[rows]
-        star = np.where(shifts._x(np.full(rows.size, lo)) >= level, lo,
-                        _bisect(shifts._x, np.full(rows.size, lo), top, level))
+        star = np.where(shifts._x(np.full(rows.size, lo)) >= level, lo, _reach(shifts, top, level))
         a_star, a_hi = solution(star)[0], solution(top)[0]
         x_star, x_hi = shifts._x(star), shifts._x(top)
         force[rows] += relation.numeric(x_now[rows], level, a_lo, a_star, a_hi, x_star, x_hi,
