@@ -34,7 +34,7 @@ from mdr_events.parameters import Parameters
 
 from .extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, VALUE_AFTER_CONTACT, extremum_names
 from .rate_edge import EdgeEventKind
-from .rate_shifts import RateShifts, solve_rate_shifts
+from .rate_shifts import RateShifts, check_rate_path, solve_rate_shifts
 from .solve import BYTES_PER_SAMPLE
 from .state import Event, EventKind
 from .tolerances import Tolerances
@@ -329,11 +329,20 @@ def run_rate_continuum(params: Parameters, paths: list[Path], times: np.ndarray 
     dict
         The quantities stacked to (n_cases, n_time), ``time``, ``events`` (one list per case) and ``extrema`` (one
         dict per case).
+
+    Raises
+    ------
+    ValueError
+        Output beyond ``limits``, a path whose ``x`` turns back
+        (:func:`~mdr_events.models.continuum.rate_shifts.check_rate_path`, every path checked before the first is
+        solved), or what :func:`~mdr_events.models.continuum.rate_shifts.solve_rate_shifts` refuses.
     """
     samples = times if isinstance(times, int) else None
     n_time = samples if samples is not None else len(times)
     limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
                  memory=n_time * len(paths) * BYTES_PER_SAMPLE)
+    for path in paths:  # (every path before the first is solved)
+        check_rate_path(path)
     runs = [solve_rate_shifts(params, path, law, profile=profile, friction=friction, rtol=tolerances.rtol,
                               method=RUN_METHOD) for path in paths]
     if samples is not None:

@@ -46,7 +46,8 @@ from mdr_events.validation import shown
 from .rate_dense import StepPolynomials, step_polynomials
 from .rate_edge import EDGE_RTOL, EdgeEventKind, EdgeRun, normal_force_at, solve_edge
 
-__all__ = ["RateShifts", "solve_rate_shifts", "check_rate_friction", "GAUSS_NODES", "BISECTIONS", "STEP_PROBES"]
+__all__ = ["RateShifts", "solve_rate_shifts", "check_rate_friction", "check_rate_path", "GAUSS_NODES", "BISECTIONS",
+           "STEP_PROBES"]
 
 #: Gauss–Legendre nodes per solver step for ``∫ Ẋ a dτ``: exact to degree 15, beyond the dense output's polynomials
 #: (Radau's 3, BDF's 5, LSODA's up to 12).
@@ -433,9 +434,45 @@ def check_rate_friction(friction: FrictionLaw) -> None:
         raise TypeError(f"friction={shown(friction)} ({type(friction).__name__}) is not allowed; allowed: a "
                         "FrictionLaw('tau0') or None")
     if friction.law != "tau0":
-        raise ValueError(f"friction={friction!r} is not allowed with a rate-dependent law in the continuum; "
-                         "allowed: FrictionLaw('tau0') (one cap K a for every spring; the laws with Coulomb's part "
-                         "run in the discrete method)")
+        raise ValueError(f"friction={friction!r} is not allowed with a rate-dependent law in the continuum (Coulomb's "
+                         "part gives each spring its own cap, growing with its compression, where the continuum's "
+                         "closed-form play holds one cap K a for every spring); allowed: FrictionLaw('tau0'), or "
+                         "method='discrete', which runs every friction law under it")
+
+
+def check_rate_path(path: Path) -> float:
+    """The way ``σ`` of a path whose ``x`` does not turn back; else the refusal naming where it turns and what runs it.
+
+    Parameters
+    ----------
+    path : Path
+        The indenter's path.
+
+    Returns
+    -------
+    float
+        ``σ``: +1 where ``x`` never falls, -1 where it never rises (+1 where it does not move).
+
+    Raises
+    ------
+    TypeError
+        Not a :class:`~mdr_events.models.paths.Path`.
+    ValueError
+        A path whose ``x`` turns back (fretting, a zigzag, a reversal): its springs' anchors would need the upper level
+        ``x + K a`` too, nested play operators over the ODE's radius, which the closed form does not hold.
+    """
+    if not isinstance(path, Path):
+        raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: a Path")
+    ways = np.sign(np.diff(path.waypoints[:, 0]))
+    sign = float(ways[ways != 0.0][0]) if np.any(ways != 0.0) else 1.0
+    if np.any(ways == -sign):
+        turn = int(np.flatnonzero(ways == -sign)[0])
+        raise ValueError(f"path={path.describe()} is not allowed with a rate-dependent law in the continuum: its x "
+                         f"turns back at waypoint {turn} (the anchors would need the upper level x + K a too, nested "
+                         "play operators over the edge's ODE, which the continuum's closed form of a monotone x does "
+                         "not hold); allowed: a path whose x does not turn back (scenarios A and B, any monotone x), "
+                         "or method='discrete', which runs it")
+    return sign
 
 
 def solve_rate_shifts(params: Parameters, path: Path, law: RateDependentAdhesion, profile: SimulatedProfile = None,
@@ -474,19 +511,11 @@ def solve_rate_shifts(params: Parameters, path: Path, law: RateDependentAdhesion
     """
     if not isinstance(params, Parameters):
         raise TypeError(f"params={shown(params)} ({type(params).__name__}) is not allowed; allowed: a Parameters")
-    if not isinstance(path, Path):
-        raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: a Path")
+    sign = check_rate_path(path)
     tau0 = params.tau0
     if friction is not None:
         check_rate_friction(friction)
         tau0 = params.tau0 if friction.tau0 is None else friction.tau0
-    ways = np.sign(np.diff(path.waypoints[:, 0]))
-    sign = float(ways[ways != 0.0][0]) if np.any(ways != 0.0) else 1.0
-    if np.any(ways == -sign):
-        turn = int(np.flatnonzero(ways == -sign)[0])
-        raise ValueError(f"path={path.describe()} is not allowed: its x turns back at waypoint {turn}; allowed with a "
-                         "rate-dependent law in the continuum: a path whose x does not turn back (scenarios A and B, "
-                         "any monotone x), or the discrete method")
     edge = solve_edge(params, path, law, profile=profile, rtol=rtol, method=method)
     cap = power_law.cap_per_radius(params.replace(tau0=tau0))
     return RateShifts(edge, path, cap, params.G_star, sign)
