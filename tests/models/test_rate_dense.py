@@ -81,11 +81,15 @@ def test_reach_finds_the_first_time_the_radius_reaches_a_value_as_the_bisection_
     lo, end = float(dense.ts[0]), float(dense.ts[-1])
     rng = np.random.default_rng(5)
     hi = rng.uniform(lo, end, 300)
-    target = fast(rng.uniform(lo, end, 300))[0]  # (half of them reached before hi, half not)
+    # (half of them reached before hi, half not; values between those of two doubles of the clock)
+    target = fast(rng.uniform(lo, end, 300))[0] * (1.0 + rng.uniform(-1e-12, 1e-12, 300))
     found = fast.reach(target, lo, hi)
     expected = _bisect(lambda t: fast(t)[0], np.full(hi.shape, lo), hi, target)
     np.testing.assert_allclose(found, expected, rtol=0.0, atol=REACH_ULPS * np.spacing(end))
     assert np.all(found <= hi) and np.all(found[fast(hi)[0] < target] == hi[fast(hi)[0] < target])
+    # one by one too (a Newton iterate that converged from below once returned its bracket's stale end)
+    alone = np.array([fast.reach(target[index:index + 1], lo, hi[index:index + 1])[0] for index in range(100)])
+    np.testing.assert_allclose(alone, expected[:100], rtol=0.0, atol=REACH_ULPS * np.spacing(end))
 
 
 def test_the_first_time_x_reaches_a_level_is_the_bisection_s():

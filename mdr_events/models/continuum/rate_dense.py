@@ -16,11 +16,14 @@ from scipy.integrate._ivp.common import OdeSolution
 from scipy.integrate._ivp.lsoda import LsodaDenseOutput
 from scipy.integrate._ivp.radau import RadauDenseOutput
 
-__all__ = ["StepPolynomials", "step_polynomials", "REACH_STEPS"]
+__all__ = ["StepPolynomials", "step_polynomials", "REACH_STEPS", "REACH_NUDGES"]
 
 #: The most safeguarded Newton steps :meth:`StepPolynomials.reach` takes in a step (each one a bisection where Newton's
 #: would leave the bracket: 64 halvings reach a double's spacing from any step's width).
 REACH_STEPS = 64
+#: The doubles :meth:`StepPolynomials.reach` steps up from a Newton iterate that converged just below the value (its
+#: last step below the clock's spacing leaves it within a few ulp of the first time the value is reached).
+REACH_NUDGES = 8
 
 
 class StepPolynomials:
@@ -122,7 +125,12 @@ class StepPolynomials:
             if np.all(np.abs(moved - t) <= np.spacing(np.abs(t))):
                 break
             t = moved
-        out[reached] = np.where(self._value_and_slope(t, step)[0] >= goal, t, high)
+        for _ in range(REACH_NUDGES):  # (converged from below: the next doubles up reach the value)
+            short = self._value_and_slope(t, step)[0] < goal
+            if not np.any(short):
+                break
+            t = np.where(short, np.minimum(np.nextafter(t, np.inf), high), t)
+        out[reached] = t
         return out
 
 
