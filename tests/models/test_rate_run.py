@@ -80,22 +80,9 @@ def test_a_continuum_sweep_of_the_law_is_refused_before_it_runs():
         me.sweep({"v": [1e-6, 1e-5]}, RATE, me.Scenario("A", alpha=[20.0]), method="continuum", scheduler="serial")
 
 
-def test_a_turning_path_among_the_cases_is_refused_before_any_is_solved_naming_what_runs_it(monkeypatch):
-    """Item 2 of issue 29 left as a refusal: a path whose x turns back (here the second case, a fretting cycle at
-    d_max) is named, with why and the discrete method that runs it, before the first case's edge is solved; and
-    Coulomb's part, with why."""
-    from mdr_events.models.continuum import rate_run
-
-    fretting = me.Path(np.array([(0.0, 0.0), (0.0, PAPER.d_max), (2e-5, PAPER.d_max), (-2e-5, PAPER.d_max),
-                                 (0.0, -2e-4)]), speed=PAPER.v)
-    solved = []
-    original = rate_run.solve_rate_shifts
-    monkeypatch.setattr(rate_run, "solve_rate_shifts", lambda *args, **kwargs: solved.append(args) or original(
-        *args, **kwargs))
-    with pytest.raises(ValueError, match=r"turns back at waypoint 2 \(the anchors would need the upper level.*"
-                                         r"method='discrete', which runs it"):
-        me.simulate(RATE, [me.Path.scenario_A(20.0, PAPER), fretting], "continuum")
-    assert not solved
+def test_coulomb_s_part_is_refused_saying_why_and_naming_what_runs_it():
+    """Item 2 of issue 29 left as a refusal for Coulomb's part (each spring its own cap); before, the message said
+    neither why nor which method."""
     coulomb = dataclasses.replace(RATE, friction=me.FrictionLaw("tau0+coulomb", tau0=PAPER.tau0, mu=0.3))
     with pytest.raises(ValueError, match=r"Coulomb's part gives each spring its own cap.*method='discrete'"):
         me.simulate(coulomb, me.Scenario("A", alpha=[20.0]), "continuum")

@@ -23,8 +23,9 @@ interior maximum found by bounded minimisation. The springs that attached in the
 the integration's start, :data:`~mdr_events.models.continuum.rate_edge.START_SPEED`) carry the anchor of its start (off
 by ``|ẋ|`` times the jump-in's lag, about ``a_J / (1e6 v_ref)``).
 
-A path whose ``x`` turns back needs the upper level too (the anchors' nested clips): refused, as are the laws with
-Coulomb's part (a cap that differs from spring to spring); the discrete method runs both.
+A path whose ``x`` turns back needs the upper level too (the anchors' nested clips): :func:`solve_rate_shifts` hands it
+to :class:`~mdr_events.models.continuum.rate_play.RatePlay`, every anchor a play operator of the window. The laws with
+Coulomb's part (a cap that differs from spring to spring) are refused; the discrete method runs them.
 """
 
 from __future__ import annotations
@@ -46,7 +47,7 @@ from mdr_events.validation import shown
 from .rate_dense import StepPolynomials, step_polynomials
 from .rate_edge import EDGE_RTOL, EdgeEventKind, EdgeRun, normal_force_at, solve_edge
 
-__all__ = ["RateShifts", "solve_rate_shifts", "check_rate_friction", "check_rate_path", "GAUSS_NODES", "BISECTIONS",
+__all__ = ["RateShifts", "solve_rate_shifts", "check_rate_friction", "path_way", "gauss_radius", "GAUSS_NODES", "BISECTIONS",
            "STEP_PROBES"]
 
 #: Gauss–Legendre nodes per solver step for ``∫ Ẋ a dτ``: exact to degree 15, beyond the dense output's polynomials
@@ -331,24 +332,30 @@ def _knots(view: _View, corners: np.ndarray) -> np.ndarray:
 
 def _level_candidates(shifts: RateShifts) -> tuple[np.ndarray, np.ndarray]:
     """Times and values of ``L`` at which its running maximum can change: every knot of every piece and each step's
-    interior maximum (probed at :data:`STEP_PROBES` points, refined by bounded minimisation)."""
+    interior maximum (:func:`_peaks`)."""
     corners = shifts._corners[0]
     stamps = []
     for view in shifts.views:
         knots = _knots(view, corners)
-        stamps.append(knots)
-        width = np.diff(knots)
-        share = np.arange(1, STEP_PROBES + 1) / (STEP_PROBES + 1)
-        probes = knots[:-1, None] + width[:, None] * share[None, :]
-        inner, ends = shifts._level(probes.ravel()).reshape(probes.shape), shifts._level(knots)
-        peaks = np.flatnonzero(inner.max(axis=1) > np.maximum(ends[:-1], ends[1:]))
-        for step in peaks:
-            found = minimize_scalar(lambda t: -float(shifts._level(np.array([t]))[0]), method="bounded",
-                                    bounds=(knots[step], knots[step + 1]),
-                                    options={"xatol": 4.0 * np.finfo(float).eps * abs(knots[step + 1])})
-            stamps.append(np.array([found.x, probes[step, int(np.argmax(inner[step]))]]))
+        stamps += [knots, _peaks(shifts._level, knots)]
     every = np.sort(np.concatenate(stamps))
     return every, shifts._level(every)
+
+
+def _peaks(function, knots: np.ndarray) -> np.ndarray:
+    """The interior maxima of ``function`` (vectorised) in each interval of ``knots``: probed at :data:`STEP_PROBES`
+    points, refined by bounded minimisation; each found by its refined time and its best probe."""
+    width = np.diff(knots)
+    share = np.arange(1, STEP_PROBES + 1) / (STEP_PROBES + 1)
+    probes = knots[:-1, None] + width[:, None] * share[None, :]
+    inner, ends = function(probes.ravel()).reshape(probes.shape), function(knots)
+    found = []
+    for step in np.flatnonzero(inner.max(axis=1) > np.maximum(ends[:-1], ends[1:])):
+        best = minimize_scalar(lambda t: -float(function(np.array([t]))[0]), method="bounded",
+                               bounds=(knots[step], knots[step + 1]),
+                               options={"xatol": 4.0 * np.finfo(float).eps * abs(knots[step + 1])})
+        found += [best.x, probes[step, int(np.argmax(inner[step]))]]
+    return np.array(found)
 
 
 def _swept(shifts: RateShifts, solution, start: float, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
@@ -371,11 +378,29 @@ def _swept(shifts: RateShifts, solution, start: float, lo: np.ndarray, hi: np.nd
 
 def _partial(solution, knots: np.ndarray, slope: np.ndarray, ends: np.ndarray, index: np.ndarray) -> np.ndarray:
     """``∫ σẋ a dτ`` from ``knots[index]`` to ``ends`` (each within its knot interval), Gauss–Legendre."""
-    start = knots[index]
-    half = 0.5 * (ends - start)
+    half, weighted = gauss_radius(lambda t: solution(t)[0], knots[index], ends)
+    return slope[index] * half * weighted
+
+
+def gauss_radius(radius, start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The half-widths and the weighted sums of :data:`GAUSS_NODES` Gauss–Legendre nodes of ``radius`` on each
+    ``[start, end]`` (their product is ``∫ a dτ``, exact for a step's polynomial).
+
+    Parameters
+    ----------
+    radius : callable
+        The radius (m) at an array of times.
+    start, end : numpy.ndarray
+        The intervals (s).
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        The half-widths (s) and the weighted sums (m).
+    """
+    half = 0.5 * (end - start)
     nodes = start[:, None] + half[:, None] * (1.0 + _NODES[None, :])
-    radius = solution(nodes.ravel())[0].reshape(nodes.shape)
-    return slope[index] * half * (radius @ _WEIGHTS)
+    return half, radius(nodes.ravel()).reshape(nodes.shape) @ _WEIGHTS
 
 
 def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.ndarray):
@@ -440,8 +465,8 @@ def check_rate_friction(friction: FrictionLaw) -> None:
                          "method='discrete', which runs every friction law under it")
 
 
-def check_rate_path(path: Path) -> float:
-    """The way ``σ`` of a path whose ``x`` does not turn back; else the refusal naming where it turns and what runs it.
+def path_way(path: Path) -> tuple[float, int | None]:
+    """``σ`` of a path and the waypoint where its ``x`` turns back (``None`` where it does not).
 
     Parameters
     ----------
@@ -450,29 +475,20 @@ def check_rate_path(path: Path) -> float:
 
     Returns
     -------
-    float
-        ``σ``: +1 where ``x`` never falls, -1 where it never rises (+1 where it does not move).
+    tuple of (float, int or None)
+        ``σ`` (+1 where ``x`` first rises or never moves, -1 where it first falls) and the turning waypoint.
 
     Raises
     ------
     TypeError
         Not a :class:`~mdr_events.models.paths.Path`.
-    ValueError
-        A path whose ``x`` turns back (fretting, a zigzag, a reversal): its springs' anchors would need the upper level
-        ``x + K a`` too, nested play operators over the ODE's radius, which the closed form does not hold.
     """
     if not isinstance(path, Path):
         raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: a Path")
     ways = np.sign(np.diff(path.waypoints[:, 0]))
     sign = float(ways[ways != 0.0][0]) if np.any(ways != 0.0) else 1.0
-    if np.any(ways == -sign):
-        turn = int(np.flatnonzero(ways == -sign)[0])
-        raise ValueError(f"path={path.describe()} is not allowed with a rate-dependent law in the continuum: its x "
-                         f"turns back at waypoint {turn} (the anchors would need the upper level x + K a too, nested "
-                         "play operators over the edge's ODE, which the continuum's closed form of a monotone x does "
-                         "not hold); allowed: a path whose x does not turn back (scenarios A and B, any monotone x), "
-                         "or method='discrete', which runs it")
-    return sign
+    turns = np.flatnonzero(ways == -sign)
+    return sign, (int(turns[0]) if turns.size else None)
 
 
 def solve_rate_shifts(params: Parameters, path: Path, law: RateDependentAdhesion, profile: SimulatedProfile = None,
@@ -485,7 +501,7 @@ def solve_rate_shifts(params: Parameters, path: Path, law: RateDependentAdhesion
     params : Parameters
         The material, ``τ0`` and ``R`` (the paraboloid's); its works of adhesion are the law's at rest.
     path : Path
-        The indenter's path; its ``x`` must not turn back.
+        The indenter's path.
     law : RateDependentAdhesion
         The adhesion law.
     profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
@@ -500,22 +516,27 @@ def solve_rate_shifts(params: Parameters, path: Path, law: RateDependentAdhesion
     Returns
     -------
     RateShifts
-        ``F_x``, the sliding springs and the slip onset along the path.
+        ``F_x``, the sliding springs and the slip onset along the path (a
+        :class:`~mdr_events.models.continuum.rate_play.RatePlay` where its ``x`` turns back).
 
     Raises
     ------
     TypeError
         ``params``, ``path`` or ``friction`` of another type.
     ValueError
-        A friction law other than ``"tau0"``, a path whose ``x`` turns back, or what ``solve_edge`` refuses.
+        A friction law other than ``"tau0"``, or what ``solve_edge`` refuses.
     """
     if not isinstance(params, Parameters):
         raise TypeError(f"params={shown(params)} ({type(params).__name__}) is not allowed; allowed: a Parameters")
-    sign = check_rate_path(path)
+    sign, turn = path_way(path)
     tau0 = params.tau0
     if friction is not None:
         check_rate_friction(friction)
         tau0 = params.tau0 if friction.tau0 is None else friction.tau0
     edge = solve_edge(params, path, law, profile=profile, rtol=rtol, method=method)
     cap = power_law.cap_per_radius(params.replace(tau0=tau0))
+    if turn is not None:  # (both levels push: every anchor a play operator, continuum.rate_play)
+        from .rate_play import RatePlay
+
+        return RatePlay(edge, path, cap, params.G_star, 1.0)
     return RateShifts(edge, path, cap, params.G_star, sign)
