@@ -232,7 +232,8 @@ def friction_laws(p: me.Parameters) -> None:
         print(f"  {label}: " + ", ".join(f"{name} {value * 1e3:.1f} ms" for name, value in times.items())
               + f"; slowest / tau0 {slowest / times['tau0']:.2f}x")
     dt = 0.5e-6 / hertz.v
-    discrete_time = median_time(lambda: run_discrete(KernelModel(hertz, friction=laws["coulomb"]), [fretting], 1e-6, dt), repeat=3)
+    coulomb = KernelModel(hertz, friction=laws["coulomb"])
+    discrete_time = median_time(lambda: run_discrete(coulomb, [fretting], 1e-6, dt), repeat=3)
     continuum_time = median_time(lambda: solve_path(hertz, fretting, friction=laws["coulomb"]))
     print(f"  fretting, coulomb: discrete at 1 µm (springs one by one) {discrete_time:.2f} s, continuum solve_path "
           f"{continuum_time * 1e3:.1f} ms: {discrete_time / continuum_time:.0f}x")

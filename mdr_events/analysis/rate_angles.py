@@ -28,12 +28,15 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator, Sequence
+from typing import Any
 
 import numpy as np
 import xarray as xr
 from scipy import optimize
 
+from mdr_events.analysis.rate_job import rate_job
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
+from mdr_events.contact.model import Contact
 from mdr_events.models.continuum.rate_edge import EDGE_RTOL, solve_edge
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
@@ -83,6 +86,18 @@ def _checked(params: Parameters, law: RateDependentAdhesion, speed, profile: Sim
     except ValueError as error:
         raise ValueError(f"speed={speed!r} m/s: {error}") from None
     return law, speed
+
+
+def _job(contact, speeds, old: tuple, law, profile, d_max, method: str, limits, what: str) -> tuple:
+    """The arguments of a function of angles against speeds, checked once before a solve
+    (:func:`~mdr_events.analysis.rate_job.rate_job`, the speeds' grid and each speed's scales): ``params``, the law,
+    the profile, the speeds, the method and the limits."""
+    job = rate_job(contact, speeds, old, law, profile, d_max, what)
+    speeds = _grid("speeds", job.speeds, "finite numbers > 0 (m/s)", lambda v: v > 0.0)
+    for speed in speeds:
+        _checked(job.params, job.law, speed, job.profile)
+    return (job.params, job.law, job.profile, speeds, job.options.get("method", method),
+            job.options.get("limits", limits))
 
 
 def _grid(name: str, values, allowed: str, valid) -> list[float]:
@@ -192,26 +207,33 @@ def critical_angle_at_speed(params: Parameters, law: RateDependentAdhesion, spee
     return math.degrees(_bracketed_root(margin, f"the critical angle at speed={speed!r} m/s"))
 
 
-def critical_angles_at_speeds(params: Parameters, law: RateDependentAdhesion, speeds: Sequence[float],
-                              profile: SimulatedProfile = None, method: str = "Radau",
-                              limits: Limits | None = None) -> xr.Dataset:
+def critical_angles_at_speeds(contact: Contact | Parameters, speeds: Sequence[float] | None = None, *old: Any,
+                              law: RateDependentAdhesion | None = None, profile: SimulatedProfile = None,
+                              method: str = "Radau", limits: Limits | None = None, d_max: float | None = None) -> xr.Dataset:
     """:func:`critical_angle_at_speed` at each of ``speeds``, labelled, with the rate-independent limits.
 
     Parameters
     ----------
-    params : Parameters
-        The material, ``τ0``, ``d_max`` and ``R``; its works of adhesion are the law's at rest.
-    law : RateDependentAdhesion
-        The adhesion law.
+    contact : Contact or Parameters
+        A :class:`~mdr_events.Contact` whose adhesion is a :class:`~mdr_events.RateDependentAdhesion`, its friction law
+        ``"tau0"``, on the half-space (:func:`~mdr_events.analysis.rate_job.rate_job`). Or the form of before:
+        :class:`~mdr_events.Parameters` (the material, ``τ0``, ``d_max``, ``R``; its works of adhesion the law's at
+        rest), called ``critical_angles_at_speeds(params, law, speeds[, profile, method, limits])``.
     speeds : sequence of float
-        The paths' speeds (m/s).
+        The paths' speeds (m/s); in the form of before, by position, the law (the speeds after it).
+    *old
+        Only in the form of before: the speeds, then ``profile``, ``method``, ``limits`` by position.
+    law : RateDependentAdhesion, optional
+        Only beside Parameters (a contact holds its own).
     profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
-        The indenter (``None``: the paraboloid of ``params.R``).
+        Only beside Parameters: the indenter (``None``: the paraboloid of ``params.R``).
     method : str, optional
         The edge's ``solve_ivp`` method (as :func:`critical_angle_at_speed`).
     limits : Limits or None, optional
         The solves of the edge allowed (:data:`CRITICAL_ANGLE_SOLVES` per speed, :data:`EDGE_SOLVE_STEPS` steps each;
         ``None``: the defaults), checked before the first.
+    d_max : float, optional
+        Only beside a Contact: the depth of the scenario (m, finite, > 0; default the paper's 0.3 mm).
 
     Returns
     -------
@@ -225,7 +247,8 @@ def critical_angles_at_speeds(params: Parameters, law: RateDependentAdhesion, sp
     ValueError
         A speed that is not a finite number > 0, or what :func:`critical_angle_at_speed` refuses.
     """
-    speeds = _grid("speeds", speeds, "finite numbers > 0 (m/s)", lambda v: v > 0.0)
+    params, law, profile, speeds, method, limits = _job(contact, speeds, old, law, profile, d_max, method, limits,
+                                                        "critical_angles_at_speeds")
     _check_solves(limits, f"the critical angles at {len(speeds)} speeds", CRITICAL_ANGLE_SOLVES * len(speeds))
     angles = np.array([critical_angle_at_speed(params, law, speed, profile, EDGE_RTOL, method) for speed in speeds])
     radii = np.array([_radius_at_depth(params, law, speed, math.radians(angle), profile, EDGE_RTOL, method)

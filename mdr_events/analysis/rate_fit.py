@@ -7,6 +7,13 @@ the weighted residuals of every curve together, with ``v_ref`` and the works on 
 The intervals are those of the linearised model at the optimum, ``cov = s² (JᵀJ)⁻¹`` in the scaled parameters, with
 ``s²`` the residuals' variance where no noise is given, mapped back to each parameter's unit (log-scaled ones
 asymmetric).
+
+A trial law whose edge the paths' clocks cannot follow (:class:`~mdr_events.models.continuum.rate_edge.EdgeUnresolved`:
+a ``v_ref`` many orders above a path's speed makes the ODE too stiff, one far below it lets the indenter outrun the
+advancing edge) is a rejected step: its residuals are ``nan``, on which ``least_squares``' trust region (``trf``)
+shrinks to a quarter of the step and tries again. The Jacobian (:func:`_jacobian`) is the forward difference of
+``scipy``'s ``2-point`` scheme, taken backwards in a law's column whose forward step is refused or beyond a bound;
+the offsets' columns are exact (the residuals are linear in them). Only the start must be followed.
 """
 
 from __future__ import annotations
@@ -22,7 +29,7 @@ from scipy import optimize, stats
 from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
-from mdr_events.models.continuum.rate_edge import solve_edge
+from mdr_events.models.continuum.rate_edge import EdgeUnresolved, solve_edge
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters, check_parameters
@@ -162,7 +169,8 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
     xarray.Dataset
         ``estimate``, ``standard_error``, ``interval_lower`` and ``interval_upper`` per parameter (the law's free
         values, then the offsets), ``correlation`` between them, and per curve the RMS of its weighted residuals;
-        attributes: the residuals' variance ``s2``, the solves, ``least_squares``' status and message.
+        attributes: the residuals' variance ``s2``, the solves, the rejected trials (``rejected_trials``: laws
+        whose edge a path did not follow, module docstring), ``least_squares``' status and message.
 
     Raises
     ------
@@ -170,7 +178,8 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
         Measurements, parameters, a start, free names or offsets of another kind.
     ValueError
         A free name not allowed, a curve that is not finite 1-D, outside its path's clock or beyond the double
-        range, a noise that is not positive, a start's ``n`` below the fit's bound, samples or solves beyond
+        range, a noise that is not positive, a start's ``n`` below the fit's bound, a start whose edge a path does
+        not follow, a Jacobian at a law neither of whose neighbours' edges are followed, samples or solves beyond
         ``limits`` (``ResourceLimitError``).
     """
     limits = _check(measurements, params, start, free, offsets, limits)
@@ -179,8 +188,9 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
     names = list(free) + ([f"offset_{index}" for index in range(count)] if offsets else [])
     forces = [np.asarray(m.normal_force, dtype=float) for m in measurements]
     weights = [1.0 / m.noise if m.noise is not None else 1.0 for m in measurements]
-    curves: dict[tuple[float, ...], list[np.ndarray]] = {}  # the model's curves by the law's values, the latest few
-    solves = [0]
+    curves: dict[tuple[float, ...], list[np.ndarray] | None] = {}  # the model's curves by the law's values, the
+    # latest few (None: the law's edge is not followed on a path, a rejected trial)
+    solves, rejected = [0], [0]
 
     def values_of(theta: np.ndarray) -> dict[str, float]:
         values = dict(base)
@@ -188,9 +198,10 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
             values[name] = math.exp(value) if name in _LOG_SCALED else float(value)
         return values
 
-    def model_curves(values: dict[str, float]) -> list[np.ndarray]:
+    def model_curves(values: dict[str, float]) -> list[np.ndarray] | None:
         """Each curve of the law of ``values``, solved once: a Jacobian's columns of the offsets, which move no law,
-        and a step that moves an offset alone cost no solve."""
+        and a step that moves an offset alone cost no solve. ``None`` where a path's edge is not followed (the
+        curves after it are not solved)."""
         key = tuple(values[name] for name in RATE_FREE_NAMES)
         if key not in curves:
             if len(curves) >= KEPT_LAWS:
@@ -200,13 +211,21 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
                          steps=solves[0] * EDGE_SOLVE_STEPS)
             law = _law(values)
             trial = params.replace(dgamma0=values["dgamma0"], dgamma1=values["dgamma1"])
-            curves[key] = [solve_edge(trial, m.path, law, profile=profile, rtol=RATE_FIT_RTOL, method=RATE_FIT_METHOD)
-                           .normal_force(np.asarray(m.times, dtype=float), m.path) for m in measurements]
+            try:
+                curves[key] = [solve_edge(trial, m.path, law, profile=profile, rtol=RATE_FIT_RTOL,
+                                          method=RATE_FIT_METHOD).normal_force(np.asarray(m.times, dtype=float), m.path)
+                               for m in measurements]
+            except EdgeUnresolved:
+                rejected[0] += 1
+                curves[key] = None
         return curves[key]
 
     def residuals(theta: np.ndarray) -> np.ndarray:
+        models = model_curves(values_of(theta))
+        if models is None:  # (a rejected trial: least_squares shrinks its step)
+            return np.full(sum(force.size for force in forces), np.nan)
         parts = []
-        for index, (model, force, weight) in enumerate(zip(model_curves(values_of(theta)), forces, weights)):
+        for index, (model, force, weight) in enumerate(zip(models, forces, weights)):
             if offsets:
                 model = model + theta[len(free) + index]
             parts.append(weight * (model - force))
@@ -216,9 +235,75 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
                       + [0.0] * (count if offsets else 0))
     lower = np.array([N_BOUNDS[0] if name == "n" else -np.inf for name in free] + [-np.inf] * (len(names) - len(free)))
     upper = np.array([N_BOUNDS[1] if name == "n" else np.inf for name in free] + [np.inf] * (len(names) - len(free)))
-    solution = optimize.least_squares(residuals, theta0, bounds=(lower, upper), x_scale="jac", diff_step=FD_STEP,
-                                      xtol=FIT_TOLERANCE, ftol=FIT_TOLERANCE, gtol=FIT_TOLERANCE)
-    return _result(solution, names, free, values_of, measurements, forces, weights, solves[0])
+    _check_start(residuals(theta0), start)
+    blocks = _offset_blocks(forces, weights) if offsets else None
+    solution = optimize.least_squares(residuals, theta0, jac=lambda theta: _jacobian(residuals, theta, len(free),
+                                                                                     (lower, upper), blocks),
+                                      bounds=(lower, upper), x_scale="jac", xtol=FIT_TOLERANCE, ftol=FIT_TOLERANCE,
+                                      gtol=FIT_TOLERANCE)
+    return _result(solution, names, free, values_of, measurements, forces, weights, (solves[0], rejected[0]))
+
+
+def _check_start(residual: np.ndarray, start: RateDependentAdhesion) -> None:
+    """Refuse a start whose edge a path's clock cannot follow (its residuals ``nan``): the fit has no step to shrink
+    back to."""
+    if not np.all(np.isfinite(residual)):
+        raise ValueError(f"start={start!r} is not allowed: its edge cannot be followed on a measurement's path (see "
+                         "solve_edge); allowed: a start whose edge every path follows (v_ref nearer the paths' speeds)")
+
+
+def _offset_blocks(forces: list[np.ndarray], weights: list[float]) -> np.ndarray:
+    """The offsets' columns of the Jacobian, exact: curve ``i``'s rows are ``weight_i`` in column ``i``."""
+    blocks = np.zeros((sum(force.size for force in forces), len(forces)))
+    row = 0
+    for index, (force, weight) in enumerate(zip(forces, weights)):
+        blocks[row:row + force.size, index] = weight
+        row += force.size
+    return blocks
+
+
+def _jacobian(residuals, theta: np.ndarray, laws: int, bounds: tuple[np.ndarray, np.ndarray],
+              blocks: np.ndarray | None) -> np.ndarray:
+    """The Jacobian of ``residuals`` at ``theta`` (module docstring): in each of the first ``laws`` columns the forward
+    difference of step ``FD_STEP max(1, |θ|)`` (``scipy``'s ``2-point`` step), backwards where the forward point lies
+    beyond ``bounds`` or its law's edge is not followed (``nan`` residuals); the offsets' columns ``blocks``.
+
+    Parameters
+    ----------
+    residuals : callable
+        The weighted residuals of the scaled parameters.
+    theta : numpy.ndarray
+        Where the Jacobian is taken.
+    laws : int
+        The columns of the law's values (the first ones).
+    bounds : tuple of numpy.ndarray
+        The lower and upper bounds of ``theta``.
+    blocks : numpy.ndarray or None
+        The offsets' exact columns, or ``None`` without offsets.
+
+    Returns
+    -------
+    numpy.ndarray
+        The Jacobian, one row per residual and one column per parameter.
+    """
+    centre = residuals(theta)
+    columns = []
+    for index in range(laws):
+        for way in (1.0, -1.0):
+            step = np.zeros_like(theta)
+            step[index] = way * FD_STEP * max(1.0, abs(theta[index]))
+            moved = theta + step
+            if not bounds[0][index] <= moved[index] <= bounds[1][index]:
+                continue
+            shifted = residuals(moved)
+            if np.all(np.isfinite(shifted)):
+                columns.append((shifted - centre) / (moved[index] - theta[index]))
+                break
+        else:
+            raise ValueError(f"the fit's Jacobian at the law's value {index} (scaled {float(theta[index])!r}) is not "
+                             "allowed: neither neighbour's edge is followed; allowed: a law away from the edge of what "
+                             "solve_edge follows")
+    return np.column_stack(columns + ([blocks] if blocks is not None else []))
 
 
 def _result(solution, names, free, values_of, measurements, forces, weights, solves) -> xr.Dataset:
@@ -265,6 +350,7 @@ def _result(solution, names, free, values_of, measurements, forces, weights, sol
     for name, text in long_names.items():
         dataset[name].attrs.update(long_name=text, units="1" if name in ("correlation", "residual_rms") else "varies")
     dataset["parameter"].attrs["units_of_each"] = ", ".join(f"{n}: {u}" for n, u in zip(names, units))
-    dataset.attrs.update(s2=s2, noise_known=int(known), solves=solves, status=int(solution.status),
+    dataset.attrs.update(s2=s2, noise_known=int(known), solves=solves[0], rejected_trials=solves[1],
+                         status=int(solution.status),
                          message=str(solution.message), confidence=CONFIDENCE)
     return dataset

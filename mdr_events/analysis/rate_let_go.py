@@ -21,12 +21,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 import xarray as xr
 from scipy import optimize
 
 from mdr_events.contact.adhesion import RateDependentAdhesion
+from mdr_events.contact.model import Contact
 from mdr_events.limits import Limits
 from mdr_events.models.continuum.edge_let_go import LetGo, let_go
 from mdr_events.models.continuum.rate_edge import EDGE_RTOL, solve_edge
@@ -35,8 +37,7 @@ from mdr_events.models.paths import Path, exit_depth
 from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law
 
-from .rate_angles import (_BRACKET, ANGLE_XTOL, CRITICAL_ANGLE_SOLVES, _check_solves, _checked, _grid,
-                          _law_attrs)
+from .rate_angles import _BRACKET, ANGLE_XTOL, CRITICAL_ANGLE_SOLVES, _check_solves, _checked, _job, _law_attrs
 
 __all__ = ["let_go_B_at_speed", "critical_angle_B_at_speed", "critical_angles_B_at_speeds"]
 
@@ -179,26 +180,33 @@ def _root(margin, low: float, speed: float) -> float:
                      "parameters, law and speed whose critical angle lies above it")
 
 
-def critical_angles_B_at_speeds(params: Parameters, law: RateDependentAdhesion, speeds: Sequence[float],
-                                profile: SimulatedProfile = None, method: str = "Radau",
-                                limits: Limits | None = None) -> xr.Dataset:
+def critical_angles_B_at_speeds(contact: Contact | Parameters, speeds: Sequence[float] | None = None, *old: Any,
+                                law: RateDependentAdhesion | None = None, profile: SimulatedProfile = None,
+                                method: str = "Radau", limits: Limits | None = None, d_max: float | None = None) -> xr.Dataset:
     """:func:`critical_angle_B_at_speed` at each of ``speeds``, labelled, with the paper's (21) where it has it.
 
     Parameters
     ----------
-    params : Parameters
-        The material, ``τ0``, ``d_max`` and ``R``; its works of adhesion are the law's at rest.
-    law : RateDependentAdhesion
-        The adhesion law.
+    contact : Contact or Parameters
+        A :class:`~mdr_events.Contact` whose adhesion is a :class:`~mdr_events.RateDependentAdhesion`, its friction law
+        ``"tau0"``, on the half-space (:func:`~mdr_events.analysis.rate_job.rate_job`). Or the form of before:
+        :class:`~mdr_events.Parameters` (the material, ``τ0``, ``d_max``, ``R``; its works of adhesion the law's at
+        rest), called ``critical_angles_B_at_speeds(params, law, speeds[, profile, method, limits])``.
     speeds : sequence of float
-        The paths' speeds (m/s).
+        The paths' speeds (m/s); in the form of before, by position, the law (the speeds after it).
+    *old
+        Only in the form of before: the speeds, then ``profile``, ``method``, ``limits`` by position.
+    law : RateDependentAdhesion, optional
+        Only beside Parameters (a contact holds its own).
     profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
-        The indenter (``None``: the paraboloid of ``params.R``).
+        Only beside Parameters: the indenter (``None``: the paraboloid of ``params.R``).
     method : str, optional
         The edge's ``solve_ivp`` method.
     limits : Limits or None, optional
         The solves of the edge allowed (as :func:`~mdr_events.analysis.rate_angles.critical_angles_at_speeds`),
         checked before the first.
+    d_max : float, optional
+        Only beside a Contact: the depth of the scenario (m, finite, > 0; default the paper's 0.3 mm).
 
     Returns
     -------
@@ -211,7 +219,8 @@ def critical_angles_B_at_speeds(params: Parameters, law: RateDependentAdhesion, 
     ValueError
         A speed that is not a finite number > 0, or what :func:`critical_angle_B_at_speed` refuses.
     """
-    speeds = _grid("speeds", speeds, "finite numbers > 0 (m/s)", lambda v: v > 0.0)
+    params, law, profile, speeds, method, limits = _job(contact, speeds, old, law, profile, d_max, method, limits,
+                                                        "critical_angles_B_at_speeds")
     _check_solves(limits, f"scenario B's critical angles at {len(speeds)} speeds", CRITICAL_ANGLE_SOLVES * len(speeds))
     angles = np.array([critical_angle_B_at_speed(params, law, speed, profile, EDGE_RTOL, method) for speed in speeds])
     radii = np.array([_let_go(params, law, speed, math.radians(angle), profile, EDGE_RTOL, method)[0].radius

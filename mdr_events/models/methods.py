@@ -30,7 +30,7 @@ from mdr_events.models import indenters
 from mdr_events.models.continuum import Tolerances, run_continuum
 from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.media import check_law
-from mdr_events.models.continuum.rate_run import run_rate_continuum
+from mdr_events.models.continuum.rate_run import check_rate_layer, run_rate_continuum
 from mdr_events.models.continuum.rate_shifts import check_rate_friction
 from mdr_events.models.continuum.extrema import solution_extrema
 from mdr_events.models.continuum.solve import BYTES_PER_SAMPLE as CONTINUUM_BYTES_PER_SAMPLE
@@ -381,8 +381,10 @@ def _every_friction_law(friction: FrictionLaw) -> None:
 
 def _rate_run(model: KernelModel, paths, times, tolerances, limits) -> dict:
     """The rate-dependent edge with the springs on top
-    (:func:`~mdr_events.models.continuum.rate_run.run_rate_continuum`), on the half-space: ``model.layer`` is, as
-    ``simulate.check_layer_taken`` refuses the law on a layer before (the layer's springs take the paper's law)."""
+    (:func:`~mdr_events.models.continuum.rate_run.run_rate_continuum`), on the half-space alone: a layer of finite
+    thickness is refused here by name (:func:`~mdr_events.models.continuum.rate_run.check_rate_layer`), as
+    ``simulate.check_layer_taken`` refuses it before (the layer's springs take the paper's law)."""
+    check_rate_layer(model.layer)
     return run_rate_continuum(model.params, paths, times, tolerances, limits, model.profile, model.friction,
                               model.adhesion)
 

@@ -82,3 +82,40 @@ def test_three_speeds_give_all_four_values_of_the_law_within_their_intervals_in_
 def test_bad_input_is_named(call, words):
     with pytest.raises((TypeError, ValueError), match=words):
         call()
+
+
+#: A start two decades above the true v_ref at the start's n: the first steps of the trust region reach v_ref where the
+#: edge's ODE is too stiff for solve_edge's budget (MAX_EVALUATIONS; measured: one trial refused), which the fit takes
+#: as a rejected step.
+NEAR_STIFF_START = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-2, 0.6)
+
+
+def test_a_fit_from_near_the_stiff_edge_rejects_the_refused_trials_and_recovers_the_law():
+    """Before, the first trial the edge solver refused ended the whole fit with its ValueError."""
+    result = fit_rate_adhesion(_measurements(), PAPER, NEAR_STIFF_START, free=("v_ref", "n"))
+    assert result.attrs["rejected_trials"] >= 1 and result.attrs["status"] > 0
+    for name, truth in (("v_ref", TRUE.v_ref), ("n", TRUE.n)):
+        assert float(result["interval_lower"].sel(parameter=name)) <= truth <= float(
+            result["interval_upper"].sel(parameter=name)), (name, float(result["estimate"].sel(parameter=name)))
+
+
+def test_the_jacobian_steps_back_where_the_forward_trial_is_refused_or_beyond_a_bound():
+    """The residuals r = (θ0², θ0 θ1) with nan beyond θ0 = 1 (a refused law): the columns at θ = (1, 2) are the
+    backward differences (2θ0, θ1) and (0, θ0) to the step's first order, and n's bound makes its column backward."""
+    from mdr_events.analysis.rate_fit import FD_STEP, _jacobian
+
+    def residuals(theta):
+        return np.full(2, np.nan) if theta[0] > 1.0 else np.array([theta[0] ** 2, theta[0] * theta[1]])
+
+    theta = np.array([1.0, 2.0])
+    bounds = (np.array([-np.inf, -np.inf]), np.array([np.inf, 2.0]))
+    jacobian = _jacobian(residuals, theta, 2, bounds, None)
+    assert np.allclose(jacobian, [[2.0, 0.0], [2.0, 1.0]], atol=4 * FD_STEP * 2.0)  # (the step's first-order error)
+    with pytest.raises(ValueError, match="neither neighbour's edge is followed"):
+        _jacobian(lambda t: np.full(2, np.nan) if abs(t[0] - 1.0) > 0 else residuals(t), theta, 2, bounds, None)
+
+
+def test_a_start_whose_edge_is_not_followed_is_named():
+    start = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-12, 0.6)
+    with pytest.raises(ValueError, match=r"start=RateDependentAdhesion\(.*v_ref=1e-12.*its edge cannot be followed"):
+        fit_rate_adhesion(_measurements()[2:], PAPER, start)

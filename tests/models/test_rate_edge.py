@@ -112,16 +112,13 @@ def test_a_law_of_other_works_is_refused():
 
 
 def test_the_continuum_method_refuses_what_its_springs_do_not_follow_by_name():
-    """Coulomb's part (a cap that differs from spring to spring) before any solve, a path whose x turns back."""
+    """Coulomb's part (a cap that differs from spring to spring) before any solve (a path whose x turns back runs:
+    test_rate_play)."""
     paper = me.Contact.paper()
     coulomb = me.Contact(paper.elastomer, paper.indenter, _law(1e-6), me.FrictionLaw("tau0+coulomb", tau0=4.2e4,
                                                                                       mu=0.3))
     with pytest.raises(ValueError, match=r"friction=FrictionLaw\('tau0\+coulomb'.*allowed: FrictionLaw\('tau0'\)"):
         me.simulate(coulomb, "A", 20.0, "continuum")
-    rate = me.Contact(paper.elastomer, paper.indenter, _law(1e-6), paper.friction)
-    turning = me.Paths([me.Path(np.array([(0.0, 0.0), (1e-4, 2e-4), (0.0, 3e-4), (0.0, -2e-4)]), speed=1e-6)])
-    with pytest.raises(ValueError, match="path=.*turns back at waypoint 1; allowed"):
-        me.simulate(rate, turning, "continuum")
 
 
 #: LSODA's curve against the reference (Radau at 1e-12) on the fit's three speeds: LSODA's error control reaches

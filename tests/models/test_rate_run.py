@@ -3,6 +3,8 @@ and the springs at the right places, the extrema bounding the samples, a contact
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -76,3 +78,11 @@ def test_a_continuum_sweep_of_the_law_is_refused_before_it_runs():
     with pytest.raises(ValueError, match="adhesion=RateDependentAdhesion.*not allowed in the continuum method.*"
                                          "the discrete method runs it"):
         me.sweep({"v": [1e-6, 1e-5]}, RATE, me.Scenario("A", alpha=[20.0]), method="continuum", scheduler="serial")
+
+
+def test_coulomb_s_part_is_refused_saying_why_and_naming_what_runs_it():
+    """Item 2 of issue 29 left as a refusal for Coulomb's part (each spring its own cap); before, the message said
+    neither why nor which method."""
+    coulomb = dataclasses.replace(RATE, friction=me.FrictionLaw("tau0+coulomb", tau0=PAPER.tau0, mu=0.3))
+    with pytest.raises(ValueError, match=r"Coulomb's part gives each spring its own cap.*method='discrete'"):
+        me.simulate(coulomb, me.Scenario("A", alpha=[20.0]), "continuum")

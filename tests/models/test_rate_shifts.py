@@ -95,9 +95,6 @@ def test_a_path_going_the_other_way_mirrors_the_force():
 
 
 def test_what_it_does_not_follow_is_refused_by_name():
-    turning = me.Path(np.array([(0.0, 0.0), (1e-4, 2e-4), (0.0, 3e-4), (0.0, -2e-4)]), speed=1e-6)
-    with pytest.raises(ValueError, match="path=.*turns back at waypoint 1; allowed"):
-        solve_rate_shifts(PAPER, turning, LAW)
     with pytest.raises(ValueError, match="friction=.*coulomb.*allowed: FrictionLaw\\('tau0'\\)"):
         solve_rate_shifts(PAPER, _path("A"), LAW, friction=me.FrictionLaw("coulomb", mu=0.3))
     with pytest.raises(TypeError, match="friction='tau0' \\(str\\) is not allowed"):

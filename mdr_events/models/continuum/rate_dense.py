@@ -16,7 +16,14 @@ from scipy.integrate._ivp.common import OdeSolution
 from scipy.integrate._ivp.lsoda import LsodaDenseOutput
 from scipy.integrate._ivp.radau import RadauDenseOutput
 
-__all__ = ["StepPolynomials", "step_polynomials"]
+__all__ = ["StepPolynomials", "step_polynomials", "REACH_STEPS", "REACH_NUDGES"]
+
+#: The most safeguarded Newton steps :meth:`StepPolynomials.reach` takes in a step (each one a bisection where Newton's
+#: would leave the bracket: 64 halvings reach a double's spacing from any step's width).
+REACH_STEPS = 64
+#: The doubles :meth:`StepPolynomials.reach` steps up from a Newton iterate that converged just below the value (its
+#: last step below the clock's spacing leaves it within a few ulp of the first time the value is reached).
+REACH_NUDGES = 8
 
 
 class StepPolynomials:
@@ -36,6 +43,7 @@ class StepPolynomials:
 
     def __init__(self, ts: np.ndarray, origins: np.ndarray, scales: np.ndarray, coefficients: np.ndarray, side: str):
         self.ts, self.origins, self.scales, self.coefficients, self.side = ts, origins, scales, coefficients, side
+        self._at_ends = None  # (the state at the steps' ends, the first time reach asks)
 
     def __call__(self, t) -> np.ndarray:
         """The state at ``t`` (shape ``(1,)`` for a scalar, ``(1, n)`` for ``n`` times).
@@ -52,13 +60,78 @@ class StepPolynomials:
         """
         times = np.asarray(t, dtype=float)
         flat = np.atleast_1d(times).ravel()
-        step = np.clip(np.searchsorted(self.ts, flat, side=self.side) - 1, 0, len(self.origins) - 1)
+        step = np.minimum(np.maximum(np.searchsorted(self.ts, flat, side=self.side) - 1, 0), len(self.origins) - 1)
         x = (flat - self.origins[step]) / self.scales[step]
         rows = self.coefficients[step]
         value = rows[:, -1].copy()
         for column in range(rows.shape[1] - 2, -1, -1):
             value = value * x + rows[:, column]
         return value.reshape((1,) + times.shape) if times.ndim else value[:1].reshape(1)
+
+
+    def _value_and_slope(self, t: np.ndarray, step: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The polynomial of ``step`` and its slope in ``t`` at ``t`` (Horner's rule)."""
+        x = (t - self.origins[step]) / self.scales[step]
+        rows = self.coefficients[step]
+        value, slope = rows[:, -1].copy(), np.zeros(t.shape)
+        for column in range(rows.shape[1] - 2, -1, -1):
+            slope = slope * x + value
+            value = value * x + rows[:, column]
+        return value, slope / self.scales[step]
+
+    def reach(self, target: np.ndarray, lo: float, hi: np.ndarray) -> np.ndarray:
+        """The first time in ``[lo, hi]`` (elementwise) at which the state, non-decreasing there, reaches ``target``:
+        the step found among the steps' ends, then safeguarded Newton steps on its polynomial (bisection where
+        Newton's would leave the bracket) until a step is below the clock's spacing; ``hi`` where it is not reached.
+
+        Parameters
+        ----------
+        target : numpy.ndarray
+            The values to reach.
+        lo : float
+            The earliest time (s).
+        hi : numpy.ndarray
+            The latest times (s), one per target.
+
+        Returns
+        -------
+        numpy.ndarray
+            The times (s).
+        """
+        target, hi = np.asarray(target, dtype=float), np.asarray(hi, dtype=float)
+        if self._at_ends is None:
+            self._at_ends = self(self.ts)[0]
+        later = self.ts > lo
+        ends = np.concatenate([[lo], self.ts[later]])
+        climbed = np.maximum.accumulate(np.concatenate([self(lo), self._at_ends[later]]))
+        after = np.minimum(np.searchsorted(climbed, target, side="left"), len(ends) - 1)
+        low, high = ends[np.maximum(after - 1, 0)], np.minimum(ends[after], hi)
+        reached = (self(high)[0] >= target) & (high > low)
+        out = high.copy()
+        if not np.any(reached):
+            return out
+        low, high, goal = low[reached], high[reached], target[reached]
+        step = np.minimum(np.maximum(np.searchsorted(self.ts, 0.5 * (low + high), side=self.side) - 1, 0),
+                          len(self.origins) - 1)
+        t = 0.5 * (low + high)
+        for _ in range(REACH_STEPS):
+            value, slope = self._value_and_slope(t, step)
+            above = value >= goal
+            high, low = np.where(above, t, high), np.where(above, low, t)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                newton = t - (value - goal) / slope
+            inside = (newton > low) & (newton < high)
+            moved = np.where(inside, newton, 0.5 * (low + high))
+            if np.all(np.abs(moved - t) <= np.spacing(np.abs(t))):
+                break
+            t = moved
+        for _ in range(REACH_NUDGES):  # (converged from below: the next doubles up reach the value)
+            short = self._value_and_slope(t, step)[0] < goal
+            if not np.any(short):
+                break
+            t = np.where(short, np.minimum(np.nextafter(t, np.inf), high), t)
+        out[reached] = t
+        return out
 
 
 def _row(interpolant) -> tuple[float, float, np.ndarray] | None:

@@ -40,7 +40,8 @@ from .model import ContinuumModel, Segment, kinematics
 from .rate_march import march
 from .tolerances import Tolerances
 
-__all__ = ["EdgeEventKind", "EdgeEvent", "EdgeMode", "EdgeRun", "solve_edge", "START_SPEED", "END_SHARE", "EDGE_RTOL",
+__all__ = ["EdgeEventKind", "EdgeEvent", "EdgeMode", "EdgeRun", "EdgeUnresolved", "solve_edge", "normal_force_at", "START_SPEED",
+           "END_SHARE", "EDGE_RTOL",
            "EDGE_METHODS", "BAND_SHARE", "MAX_PIECES_PER_SEGMENT"]
 
 #: The integration starts at first contact from the radius whose advancing speed is this many times ``v_ref``,
@@ -87,6 +88,13 @@ MAX_EVALUATIONS = 200_000
 
 class _TooStiff(Exception):
     """The right-hand side's budget (:data:`MAX_EVALUATIONS`) is spent."""
+
+
+class EdgeUnresolved(ValueError):
+    """A law whose edge the path's clock cannot follow (:func:`solve_edge`'s refusal, with the reason): a ``v_ref``
+    many orders above the path's speed (the ODE too stiff for :data:`MAX_EVALUATIONS` steps), ``n`` near 0, or an
+    indenter that outruns the advancing edge. The arguments were valid; this law on this path is not followed, which a
+    fit takes as a rejected trial (:mod:`mdr_events.analysis.rate_fit`)."""
 
 
 class EdgeEventKind(str, enum.Enum):
@@ -180,9 +188,7 @@ class EdgeRun:
             raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: the Path the run "
                             "followed")
         times = _checked_times(times)
-        a = self.radius(times)
-        depth = path.position(times)[1]
-        return np.where(a > 0, np.asarray(self.model.normal_force(depth, np.where(a > 0, a, 1.0)), dtype=float), 0.0)
+        return normal_force_at(self.model, path.position(times)[1], self.radius(times))
 
 
     def pull_off_force(self, path: Path, samples: int = PULL_OFF_SAMPLES, limits: Limits = DEFAULT_LIMITS) -> float:
@@ -217,6 +223,26 @@ class EdgeRun:
         found = minimize_scalar(lambda t: float(self.normal_force(np.array([t]), path)[0]), method="bounded",
                                 bounds=bracket, options={"xatol": PULL_OFF_XTOL * (bracket[1] - bracket[0])})
         return float(min(found.fun, np.min(self.normal_force(np.array(bracket), path))))
+
+
+def normal_force_at(model: ContinuumModel, depth: np.ndarray, radius: np.ndarray) -> np.ndarray:
+    """``F_N`` (N, (10)) of the contact of ``radius`` at ``depth`` (elementwise): 0 where the radius is 0 (out of
+    contact).
+
+    Parameters
+    ----------
+    model : ContinuumModel
+        The indenter's normal force.
+    depth, radius : numpy.ndarray
+        The depths and radii (m).
+
+    Returns
+    -------
+    numpy.ndarray
+        The normal force.
+    """
+    inside = radius > 0
+    return np.where(inside, np.asarray(model.normal_force(depth, np.where(inside, radius, 1.0)), dtype=float), 0.0)
 
 
 def _checked_times(times) -> np.ndarray:
@@ -359,9 +385,10 @@ def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profi
         ``params``, ``path`` or ``law`` of another type.
     ValueError
         A law whose works at rest are not the parameters', an ``rtol`` out of :data:`RTOL_RANGE`, a ``method`` not in
-        :data:`EDGE_METHODS`, or a law whose edge
-        the path's clock cannot follow (the solver gave up, or would take more than :data:`MAX_EVALUATIONS` steps of
-        the ODE on a segment: ``v_ref`` many orders above the path's speed, ``n`` near 0), with the reason.
+        :data:`EDGE_METHODS`; or, as :class:`EdgeUnresolved` (a ``ValueError``), a law whose edge the path's clock
+        cannot follow (the solver gave up, or would take more than :data:`MAX_EVALUATIONS` steps of the ODE on a
+        segment: ``v_ref`` many orders above the path's speed, ``n`` near 0; or the indenter outran the advancing
+        edge), with the reason.
     """
     if not isinstance(params, Parameters):
         raise TypeError(f"params={shown(params)} ({type(params).__name__}) is not allowed; allowed: a Parameters")
@@ -404,24 +431,25 @@ def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profi
             raise _unresolved(law, f"no progress on [{float(segment.t0)!r}, {float(segment.t1)!r}] s of the path after "
                                    f"{MAX_PIECES_PER_SEGMENT} pieces (rest, motion, ...)")
     if touched is not None and path.max_depth > 0.0:  # (the path ended inside the jump-in's lag: radius 0 at any depth)
-        raise ValueError(f"law={law!r} is not allowed on this path: its edge cannot be followed (the contact made at "
-                         f"t={float(touched)!r} s jumps in over {float(state[0] - touched):.3g} s, beyond the path's end "
-                         f"at {float(path.duration):.6g} s: the indenter outran the advancing edge, which would leave "
-                         "no contact at its depth); allowed: a law whose edge keeps ahead of the indenter (a larger "
-                         "v_ref, or a slower path), or Adhesion(dgamma0, dgamma1), the limit v_ref -> inf")
+        raise EdgeUnresolved(
+            f"law={law!r} is not allowed on this path: its edge cannot be followed (the contact made at "
+            f"t={float(touched)!r} s jumps in over {float(state[0] - touched):.3g} s, beyond the path's end at "
+            f"{float(path.duration):.6g} s: the indenter outran the advancing edge, which would leave no contact at its "
+            "depth); allowed: a law whose edge keeps ahead of the indenter (a larger v_ref, or a slower path), or "
+            "Adhesion(dgamma0, dgamma1), the limit v_ref -> inf")
     return run
 
 
-def _unresolved(law: RateDependentAdhesion, reason: str, ode: _EdgeODE | None = None) -> ValueError:
+def _unresolved(law: RateDependentAdhesion, reason: str, ode: _EdgeODE | None = None) -> EdgeUnresolved:
     """The refusal of a law whose edge the path's clock cannot follow, with the reason and what would be followed: where
     the indenter outran the advancing edge (``ode.compressed_at``), an edge fast enough to keep ahead of it (the
     advancing speed ``v_ref (Δγ0/G − 1)^(1/n)`` grows with ``v_ref``); otherwise one the clock resolves."""
     if ode is not None and ode.compressed_at is not None:
-        return ValueError(f"law={law!r} is not allowed on this path: its edge cannot be followed ({_compressed(ode)}"
+        return EdgeUnresolved(f"law={law!r} is not allowed on this path: its edge cannot be followed ({_compressed(ode)}"
                           f"{reason}); allowed: a law whose advancing edge keeps ahead of the indenter (a larger v_ref "
                           "than this one: the edge's advancing speed grows with it; or a blunter indenter), or "
                           "Adhesion(dgamma0, dgamma1), the limit v_ref -> inf")
-    return ValueError(f"law={law!r} is not allowed on this path: its edge cannot be followed ({reason}); allowed: a "
+    return EdgeUnresolved(f"law={law!r} is not allowed on this path: its edge cannot be followed ({reason}); allowed: a "
                       "law whose edge speed the path's clock resolves (v_ref fewer orders of magnitude above the path's "
                       "speed, n nearer 1), or Adhesion(dgamma0, dgamma1), the limit v_ref -> inf")
 

@@ -1,7 +1,8 @@
 """The continuum method under a rate-dependent adhesion law: each path's run as ``simulate`` fills it.
 
 :func:`run_rate_continuum` solves each path by :func:`~mdr_events.models.continuum.rate_shifts.solve_rate_shifts` (the
-radius an ODE state, the springs' shifts on top under ``τ0``'s cap, a path whose ``x`` does not turn back) and fills
+radius an ODE state, the springs' shifts on top under ``τ0``'s cap; where the path's ``x`` turns back every anchor a
+play operator of both levels, :class:`~mdr_events.models.continuum.rate_play.RatePlay`) and fills
 what :func:`~mdr_events.models.continuum.solve.run_continuum` fills for the paper's law: the quantities of
 :data:`~mdr_events.models.continuum.solution.EVALUATED_QUANTITIES` on a common grid of times from each path's first
 contact, the event log and the extrema of ``F_N``, ``F_x`` and the contact area.
@@ -26,6 +27,7 @@ from scipy.optimize import brentq, minimize_scalar
 
 from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.layer import Layer
 from mdr_events.limits import Limits
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
@@ -33,12 +35,13 @@ from mdr_events.parameters import Parameters
 
 from .extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, VALUE_AFTER_CONTACT, extremum_names
 from .rate_edge import EdgeEventKind
+from .rate_play import RatePlay
 from .rate_shifts import RateShifts, solve_rate_shifts
 from .solve import BYTES_PER_SAMPLE
 from .state import Event, EventKind
 from .tolerances import Tolerances
 
-__all__ = ["run_rate_continuum", "rate_quantities", "rate_events", "rate_extrema", "Scan", "scan_run",
+__all__ = ["run_rate_continuum", "check_rate_layer", "rate_quantities", "rate_events", "rate_extrema", "Scan", "scan_run",
            "EXTREMUM_PROBES", "SWITCH_XTOL", "SWITCH_POINTS", "RUN_METHOD"]
 
 #: Points inside each of the edge's solver steps at which the scan looks (besides the steps' ends and the level's
@@ -91,7 +94,7 @@ def rate_quantities(shifts: RateShifts, times: np.ndarray) -> dict[str, np.ndarr
     x, depth = path.position(clock)
     radius = shifts._radius(clock)
     force, sliding = shifts._evaluate(clock)
-    normal = shifts.edge.normal_force(np.minimum(clock, path.duration), path)
+    normal = shifts.normal_force(np.minimum(clock, path.duration))
     with np.errstate(invalid="ignore", divide="ignore"):
         share = np.where(radius > 0.0, np.minimum(sliding / np.where(radius > 0.0, radius, 1.0), 1.0), np.nan)
     out = {"indentation_depth": depth, "tangential_displacement": x, "normal_force": normal,
@@ -153,7 +156,7 @@ def scan_run(shifts: RateShifts) -> Scan:
                                       knots[-1:], stamps[(stamps >= start) & (stamps <= end)]]))
     force, extent = shifts._evaluate(times)
     return Scan(times, force, extent, shifts._radius(times), shifts._level(times),
-                shifts.edge.normal_force(times, shifts.path))
+                shifts.normal_force(times))
 
 
 def _at_cap(shifts: RateShifts, clock: np.ndarray) -> np.ndarray:
@@ -176,9 +179,48 @@ def _switch(predicate, low: float, high: float) -> float:
     return float(high)
 
 
-def _slip_events(shifts: RateShifts, scan: Scan) -> list[tuple[float, EventKind]]:
-    """The springs' events (path clock): onsets, full slip and re-sticks, on the scan (module docstring): the
-    springs are at the cap where the level equals its running maximum."""
+def _play_events(play: RatePlay, scan: Scan) -> list[tuple[float, EventKind, int]]:
+    """The springs' events along a path whose ``x`` turns back (path clock, direction): where springs come to a cap
+    (slip onset), all of them are at one (full slip, once until they stick again) and none is any more (re-stick),
+    each found between the scan's samples by :func:`_switch`; the direction is the cap's, +1 the lower one
+    ``x − K a`` (pushing towards ``+x``). Samples at opposite caps have a stick between them (the window is ``2 K a``
+    wide): its re-stick and the next onset are both found there."""
+    lower, upper = play.sliding_sides(scan.times)
+    side = np.where(lower >= upper, 1, -1)
+    sliding, full = scan.extent > 0.0, (scan.extent >= scan.radius) & (scan.radius > 0.0)
+    stamps, out, is_full = scan.times, [], False
+    changed = (sliding[1:] != sliding[:-1]) | (full[1:] & ~full[:-1]) | (sliding[1:] & sliding[:-1]
+                                                                         & (side[1:] != side[:-1]))
+    for index in np.flatnonzero(changed) + 1:
+        before, after = stamps[index - 1], stamps[index]
+        turned = side[index] != side[index - 1]
+        if sliding[index - 1] and (not sliding[index] or turned):
+            before = _switch(lambda t: ~_at_cap(play, t), before, after)
+            out.append((before, EventKind.RE_STICK, int(side[index - 1])))
+            is_full = False
+        if sliding[index] and (not sliding[index - 1] or turned):
+            before = _switch(lambda t: _at_cap(play, t), before, after)
+            out.append((before, EventKind.SLIP_ONSET, int(side[index])))
+        if full[index] and (not full[index - 1] or turned) and not is_full:
+            out.append((_switch(lambda t: _full(play, t), before, after), EventKind.FULL_SLIP, int(side[index])))
+            is_full = True
+    return out
+
+
+def _reversals(path: Path, start: float, end: float, inside) -> list[tuple[float, EventKind, int]]:
+    """Where the path's ``x`` turns back in contact (path clock, the new way), as the paper's run logs them."""
+    out, heading = [], 0.0
+    for corner, step in zip(path.corner_times[:-1], np.diff(path.waypoints[:, 0])):
+        if step != 0.0:
+            if heading and math.copysign(1.0, step) != heading and start < corner < end and inside(corner):
+                out.append((float(corner), EventKind.TANGENTIAL_REVERSAL, int(math.copysign(1.0, step))))
+            heading = math.copysign(1.0, step)
+    return out
+
+
+def _slip_events(shifts: RateShifts, scan: Scan) -> list[tuple[float, EventKind, int]]:
+    """The springs' events (path clock, direction ``σ``): onsets, full slip and re-sticks, on the scan (module
+    docstring): the springs are at the cap where the level equals its running maximum."""
     stamps, values = scan.times, scan.level
     running = np.maximum.accumulate(values)
     sliding, full = scan.extent > 0.0, (scan.extent >= scan.radius) & (scan.radius > 0.0)
@@ -198,7 +240,12 @@ def _slip_events(shifts: RateShifts, scan: Scan) -> list[tuple[float, EventKind]
                         EventKind.SLIP_ONSET))
         if full[index] and not full[index - 1]:
             out.append((_switch(lambda t: _full(shifts, t), before, after), EventKind.FULL_SLIP))
-    return out
+    return [(time, kind, int(shifts.sign)) for time, kind in out]
+
+
+#: The springs' events of a run by the type of its shifts: the closed form of a monotone ``x`` and the play of both
+#: levels.
+SLIP_EVENTS = {RateShifts: _slip_events, RatePlay: _play_events}
 
 
 def rate_events(shifts: RateShifts, scan: Scan) -> list[Event]:
@@ -218,21 +265,22 @@ def rate_events(shifts: RateShifts, scan: Scan) -> list[Event]:
     """
     path, start = shifts.path, shifts.path.first_contact_time()
     end, _ = _end(shifts)
-    timed = [(event.time, _EDGE_KINDS[event.kind]) for event in shifts.edge.events if event.kind in _EDGE_KINDS]
+    timed = [(event.time, _EDGE_KINDS[event.kind], 0) for event in shifts.edge.events if event.kind in _EDGE_KINDS]
     corners = path.corner_times[1:-1]
-    timed += [(float(t), EventKind.CORNER) for t in corners if start < t < end and shifts._radius(np.array([t]))[0] > 0]
-    timed += _slip_events(shifts, scan)
+    timed += [(float(t), EventKind.CORNER, 0) for t in corners
+              if start < t < end and shifts._radius(np.array([t]))[0] > 0]
+    timed += _reversals(path, start, end, lambda t: shifts._radius(np.array([t]))[0] > 0)
+    timed += SLIP_EVENTS[type(shifts)](shifts, scan)
     log = []
-    for clock, kind in sorted(timed, key=lambda item: item[0]):
+    for clock, kind, direction in sorted(timed, key=lambda item: item[0]):
         x, depth = (float(value) for value in path.position(clock))
-        direction = int(shifts.sign) if kind in (EventKind.SLIP_ONSET, EventKind.FULL_SLIP, EventKind.RE_STICK) else 0
         log.append(Event(float(clock - start), kind, depth, float(shifts._radius(np.array([clock]))[0]), x, direction))
     return log
 
 
 def _quantity(shifts: RateShifts, name: str, clock: np.ndarray) -> np.ndarray:
     if name == "normal_force":
-        return shifts.edge.normal_force(clock, shifts.path)
+        return shifts.normal_force(clock)
     if name == "tangential_force":
         return shifts._evaluate(clock)[0]
     return math.pi * shifts._radius(clock) ** 2
@@ -279,6 +327,26 @@ def rate_extrema(shifts: RateShifts, scan: Scan) -> dict[str, float]:
     return out
 
 
+def check_rate_layer(layer: Layer) -> None:
+    """Refuse a layer of finite thickness under the rate-dependent law in the continuum: the edge's ODE is Heß's rule
+    on the half-space (``Γ = E* (g − d)² / (2π a)``), which a layer's compliance ``K(a)`` changes.
+
+    Parameters
+    ----------
+    layer : Layer
+        The contact's layer.
+
+    Raises
+    ------
+    ValueError
+        A layer of finite thickness.
+    """
+    if not layer.is_half_space:
+        raise ValueError(f"layer={layer!r} is not allowed with a rate-dependent law in the continuum; allowed: the "
+                         "half-space (the edge's ODE is Heß's rule on the half-space; a layer's springs take the "
+                         "rate-independent Adhesion)")
+
+
 def run_rate_continuum(params: Parameters, paths: list[Path], times: np.ndarray | int, tolerances: Tolerances,
                        limits: Limits, profile: SimulatedProfile, friction: FrictionLaw,
                        law: RateDependentAdhesion) -> dict:
@@ -308,6 +376,12 @@ def run_rate_continuum(params: Parameters, paths: list[Path], times: np.ndarray 
     dict
         The quantities stacked to (n_cases, n_time), ``time``, ``events`` (one list per case) and ``extrema`` (one
         dict per case).
+
+    Raises
+    ------
+    ValueError
+        Output beyond ``limits``, or what :func:`~mdr_events.models.continuum.rate_shifts.solve_rate_shifts`
+        refuses.
     """
     samples = times if isinstance(times, int) else None
     n_time = samples if samples is not None else len(times)

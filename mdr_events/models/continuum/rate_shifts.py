@@ -23,8 +23,9 @@ interior maximum found by bounded minimisation. The springs that attached in the
 the integration's start, :data:`~mdr_events.models.continuum.rate_edge.START_SPEED`) carry the anchor of its start (off
 by ``|ẋ|`` times the jump-in's lag, about ``a_J / (1e6 v_ref)``).
 
-A path whose ``x`` turns back needs the upper level too (the anchors' nested clips): refused, as are the laws with
-Coulomb's part (a cap that differs from spring to spring); the discrete method runs both.
+A path whose ``x`` turns back needs the upper level too (the anchors' nested clips): :func:`solve_rate_shifts` hands it
+to :class:`~mdr_events.models.continuum.rate_play.RatePlay`, every anchor a play operator of the window. The laws with
+Coulomb's part (a cap that differs from spring to spring) are refused; the discrete method runs them.
 """
 
 from __future__ import annotations
@@ -43,16 +44,18 @@ from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law, symbolic
 from mdr_events.validation import shown
 
-from .rate_dense import step_polynomials
-from .rate_edge import EDGE_RTOL, EdgeEventKind, EdgeRun, solve_edge
+from .rate_dense import StepPolynomials, step_polynomials
+from .rate_edge import EDGE_RTOL, EdgeEventKind, EdgeRun, normal_force_at, solve_edge
 
-__all__ = ["RateShifts", "solve_rate_shifts", "check_rate_friction", "GAUSS_NODES", "BISECTIONS", "STEP_PROBES"]
+__all__ = ["RateShifts", "solve_rate_shifts", "check_rate_friction", "path_way", "gauss_radius", "GAUSS_NODES", "BISECTIONS",
+           "STEP_PROBES"]
 
 #: Gauss–Legendre nodes per solver step for ``∫ Ẋ a dτ``: exact to degree 15, beyond the dense output's polynomials
 #: (Radau's 3, BDF's 5, LSODA's up to 12).
 GAUSS_NODES = 8
-#: Halvings of a bracket where the radius or ``x`` reaches a value (the cut of a record, the sliding springs' end):
-#: 2^-64 of a step, below a double's spacing.
+#: Halvings of a bracket where the radius reaches a value on a dense output that is not the steps' polynomials (on them
+#: :meth:`~mdr_events.models.continuum.rate_dense.StepPolynomials.reach`; where ``x`` reaches a level, the sliding
+#: springs' end, the closed form :func:`_reach`): 2^-64 of a step, below a double's spacing.
 BISECTIONS = 64
 #: Points inside each solver step at which ``L = σx − K a`` is probed for an interior maximum (then refined).
 STEP_PROBES = 5
@@ -124,7 +127,7 @@ class RateShifts:
     def _x(self, times) -> np.ndarray:
         """``σx`` (m) at ``times`` (the path's ``x``, its corners read once)."""
         corners, along = self._corners
-        return np.interp(np.clip(np.asarray(times, dtype=float), corners[0], corners[-1]), corners, along)
+        return np.interp(times, corners, along)  # (held at the ends beyond them)
 
     def _radius(self, times) -> np.ndarray:
         """The radius (m) at ``times`` (the edge's, from its steps' polynomials), 0 out of contact."""
@@ -135,6 +138,22 @@ class RateShifts:
             if np.any(inside):
                 out[inside] = view.solution(times[inside])[0]
         return out
+
+    def normal_force(self, times) -> np.ndarray:
+        """``F_N`` (N, (10)) at ``times`` (s, path clock), from the edge's steps' polynomials; 0 out of contact.
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s on the path's clock).
+
+        Returns
+        -------
+        numpy.ndarray
+            The normal force, the shape of ``times``.
+        """
+        times = np.asarray(times, dtype=float)
+        return normal_force_at(self.edge.model, self.path.position(times)[1], self._radius(times))
 
     def _level(self, times) -> np.ndarray:
         """``L = σx − K a`` (m) at ``times``."""
@@ -265,10 +284,19 @@ def _cut(records: list, radius: float) -> list:
         if a_lo >= radius:
             break
         if a_hi > radius:
-            record = record._replace(hi=float(_bisect(lambda t: record.solution(t)[0], np.array([record.lo]),
-                                                      np.array([record.hi]), np.array([radius]))[0]))
+            record = record._replace(hi=float(_first_radius(record.solution, record.lo, np.array([record.hi]),
+                                                            np.array([radius]))[0]))
         kept.append(record)
     return kept
+
+
+def _first_radius(solution, lo: float, hi: np.ndarray, radius: np.ndarray) -> np.ndarray:
+    """The first time in ``[lo, hi]`` at which an advancing piece's radius reaches ``radius`` (elementwise): on its
+    steps' polynomials (:meth:`~mdr_events.models.continuum.rate_dense.StepPolynomials.reach`), else by
+    :func:`_bisect`."""
+    if isinstance(solution, StepPolynomials):
+        return solution.reach(radius, lo, hi)
+    return _bisect(lambda t: solution(t)[0], np.full(hi.shape, lo), hi, radius)
 
 
 def _bisect(increasing, lo: np.ndarray, hi: np.ndarray, target: np.ndarray) -> np.ndarray:
@@ -282,6 +310,19 @@ def _bisect(increasing, lo: np.ndarray, hi: np.ndarray, target: np.ndarray) -> n
     return hi
 
 
+def _reach(shifts: RateShifts, top: np.ndarray, level: np.ndarray) -> np.ndarray:
+    """The first time ``σx`` reaches ``level`` (elementwise), at most ``top``: ``σx`` is linear between the path's
+    corners and never falls, so the time is read off the corner where it first reaches the level, on the segment
+    before it (the inverse of :meth:`RateShifts._x` in closed form)."""
+    corners, along = shifts._corners
+    after = np.minimum(np.searchsorted(along, level, side="left"), len(along) - 1)
+    before = np.maximum(after - 1, 0)
+    rise = along[after] - along[before]
+    share = np.where(rise > 0.0, (level - along[before]) / np.where(rise > 0.0, rise, 1.0), 1.0)
+    when = corners[before] + np.clip(share, 0.0, 1.0) * (corners[after] - corners[before])
+    return np.minimum(when, top)
+
+
 def _knots(view: _View, corners: np.ndarray) -> np.ndarray:
     """The solver's steps of a piece and the path's corners within it."""
     steps = getattr(view.solution, "ts", np.array([view.t0, view.t1]))
@@ -291,24 +332,30 @@ def _knots(view: _View, corners: np.ndarray) -> np.ndarray:
 
 def _level_candidates(shifts: RateShifts) -> tuple[np.ndarray, np.ndarray]:
     """Times and values of ``L`` at which its running maximum can change: every knot of every piece and each step's
-    interior maximum (probed at :data:`STEP_PROBES` points, refined by bounded minimisation)."""
+    interior maximum (:func:`_peaks`)."""
     corners = shifts._corners[0]
     stamps = []
     for view in shifts.views:
         knots = _knots(view, corners)
-        stamps.append(knots)
-        width = np.diff(knots)
-        share = np.arange(1, STEP_PROBES + 1) / (STEP_PROBES + 1)
-        probes = knots[:-1, None] + width[:, None] * share[None, :]
-        inner, ends = shifts._level(probes.ravel()).reshape(probes.shape), shifts._level(knots)
-        peaks = np.flatnonzero(inner.max(axis=1) > np.maximum(ends[:-1], ends[1:]))
-        for step in peaks:
-            found = minimize_scalar(lambda t: -float(shifts._level(np.array([t]))[0]), method="bounded",
-                                    bounds=(knots[step], knots[step + 1]),
-                                    options={"xatol": 4.0 * np.finfo(float).eps * abs(knots[step + 1])})
-            stamps.append(np.array([found.x, probes[step, int(np.argmax(inner[step]))]]))
+        stamps += [knots, _peaks(shifts._level, knots)]
     every = np.sort(np.concatenate(stamps))
     return every, shifts._level(every)
+
+
+def _peaks(function, knots: np.ndarray) -> np.ndarray:
+    """The interior maxima of ``function`` (vectorised) in each interval of ``knots``: probed at :data:`STEP_PROBES`
+    points, refined by bounded minimisation; each found by its refined time and its best probe."""
+    width = np.diff(knots)
+    share = np.arange(1, STEP_PROBES + 1) / (STEP_PROBES + 1)
+    probes = knots[:-1, None] + width[:, None] * share[None, :]
+    inner, ends = function(probes.ravel()).reshape(probes.shape), function(knots)
+    found = []
+    for step in np.flatnonzero(inner.max(axis=1) > np.maximum(ends[:-1], ends[1:])):
+        best = minimize_scalar(lambda t: -float(function(np.array([t]))[0]), method="bounded",
+                               bounds=(knots[step], knots[step + 1]),
+                               options={"xatol": 4.0 * np.finfo(float).eps * abs(knots[step + 1])})
+        found += [best.x, probes[step, int(np.argmax(inner[step]))]]
+    return np.array(found)
 
 
 def _swept(shifts: RateShifts, solution, start: float, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
@@ -331,11 +378,29 @@ def _swept(shifts: RateShifts, solution, start: float, lo: np.ndarray, hi: np.nd
 
 def _partial(solution, knots: np.ndarray, slope: np.ndarray, ends: np.ndarray, index: np.ndarray) -> np.ndarray:
     """``∫ σẋ a dτ`` from ``knots[index]`` to ``ends`` (each within its knot interval), Gauss–Legendre."""
-    start = knots[index]
-    half = 0.5 * (ends - start)
+    half, weighted = gauss_radius(lambda t: solution(t)[0], knots[index], ends)
+    return slope[index] * half * weighted
+
+
+def gauss_radius(radius, start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The half-widths and the weighted sums of :data:`GAUSS_NODES` Gauss–Legendre nodes of ``radius`` on each
+    ``[start, end]`` (their product is ``∫ a dτ``, exact for a step's polynomial).
+
+    Parameters
+    ----------
+    radius : callable
+        The radius (m) at an array of times.
+    start, end : numpy.ndarray
+        The intervals (s).
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        The half-widths (s) and the weighted sums (m).
+    """
+    half = 0.5 * (end - start)
     nodes = start[:, None] + half[:, None] * (1.0 + _NODES[None, :])
-    radius = solution(nodes.ravel())[0].reshape(nodes.shape)
-    return slope[index] * half * (radius @ _WEIGHTS)
+    return half, radius(nodes.ravel()).reshape(nodes.shape) @ _WEIGHTS
 
 
 def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.ndarray):
@@ -362,11 +427,9 @@ def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.n
         if view.way < 0:  # (the receding edge has taken the springs beyond the radius now)
             beyond = solution(top)[0] > radius[rows]
             if np.any(beyond):
-                top[beyond] = _bisect(lambda t, s=solution: s(t)[0], np.full(int(beyond.sum()), lo), top[beyond],
-                                      radius[rows][beyond])
+                top[beyond] = _first_radius(solution, lo, top[beyond], radius[rows][beyond])
         level = levels[rows]
-        star = np.where(shifts._x(np.full(rows.size, lo)) >= level, lo,
-                        _bisect(shifts._x, np.full(rows.size, lo), top, level))
+        star = np.where(shifts._x(np.full(rows.size, lo)) >= level, lo, _reach(shifts, top, level))
         a_star, a_hi = solution(star)[0], solution(top)[0]
         x_star, x_hi = shifts._x(star), shifts._x(top)
         force[rows] += relation.numeric(x_now[rows], level, a_lo, a_star, a_hi, x_star, x_hi,
@@ -396,9 +459,36 @@ def check_rate_friction(friction: FrictionLaw) -> None:
         raise TypeError(f"friction={shown(friction)} ({type(friction).__name__}) is not allowed; allowed: a "
                         "FrictionLaw('tau0') or None")
     if friction.law != "tau0":
-        raise ValueError(f"friction={friction!r} is not allowed with a rate-dependent law in the continuum; "
-                         "allowed: FrictionLaw('tau0') (one cap K a for every spring; the laws with Coulomb's part "
-                         "run in the discrete method)")
+        raise ValueError(f"friction={friction!r} is not allowed with a rate-dependent law in the continuum (Coulomb's "
+                         "part gives each spring its own cap, growing with its compression, where the continuum's "
+                         "closed-form play holds one cap K a for every spring); allowed: FrictionLaw('tau0'), or "
+                         "method='discrete', which runs every friction law under it")
+
+
+def path_way(path: Path) -> tuple[float, int | None]:
+    """``σ`` of a path and the waypoint where its ``x`` turns back (``None`` where it does not).
+
+    Parameters
+    ----------
+    path : Path
+        The indenter's path.
+
+    Returns
+    -------
+    tuple of (float, int or None)
+        ``σ`` (+1 where ``x`` first rises or never moves, -1 where it first falls) and the turning waypoint.
+
+    Raises
+    ------
+    TypeError
+        Not a :class:`~mdr_events.models.paths.Path`.
+    """
+    if not isinstance(path, Path):
+        raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: a Path")
+    ways = np.sign(np.diff(path.waypoints[:, 0]))
+    sign = float(ways[ways != 0.0][0]) if np.any(ways != 0.0) else 1.0
+    turns = np.flatnonzero(ways == -sign)
+    return sign, (int(turns[0]) if turns.size else None)
 
 
 def solve_rate_shifts(params: Parameters, path: Path, law: RateDependentAdhesion, profile: SimulatedProfile = None,
@@ -411,7 +501,7 @@ def solve_rate_shifts(params: Parameters, path: Path, law: RateDependentAdhesion
     params : Parameters
         The material, ``τ0`` and ``R`` (the paraboloid's); its works of adhesion are the law's at rest.
     path : Path
-        The indenter's path; its ``x`` must not turn back.
+        The indenter's path.
     law : RateDependentAdhesion
         The adhesion law.
     profile : PowerLaw, FlatPunch, TabulatedProfile or None, optional
@@ -426,30 +516,27 @@ def solve_rate_shifts(params: Parameters, path: Path, law: RateDependentAdhesion
     Returns
     -------
     RateShifts
-        ``F_x``, the sliding springs and the slip onset along the path.
+        ``F_x``, the sliding springs and the slip onset along the path (a
+        :class:`~mdr_events.models.continuum.rate_play.RatePlay` where its ``x`` turns back).
 
     Raises
     ------
     TypeError
         ``params``, ``path`` or ``friction`` of another type.
     ValueError
-        A friction law other than ``"tau0"``, a path whose ``x`` turns back, or what ``solve_edge`` refuses.
+        A friction law other than ``"tau0"``, or what ``solve_edge`` refuses.
     """
     if not isinstance(params, Parameters):
         raise TypeError(f"params={shown(params)} ({type(params).__name__}) is not allowed; allowed: a Parameters")
-    if not isinstance(path, Path):
-        raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: a Path")
+    sign, turn = path_way(path)
     tau0 = params.tau0
     if friction is not None:
         check_rate_friction(friction)
         tau0 = params.tau0 if friction.tau0 is None else friction.tau0
-    ways = np.sign(np.diff(path.waypoints[:, 0]))
-    sign = float(ways[ways != 0.0][0]) if np.any(ways != 0.0) else 1.0
-    if np.any(ways == -sign):
-        turn = int(np.flatnonzero(ways == -sign)[0])
-        raise ValueError(f"path={path.describe()} is not allowed: its x turns back at waypoint {turn}; allowed with a "
-                         "rate-dependent law in the continuum: a path whose x does not turn back (scenarios A and B, "
-                         "any monotone x), or the discrete method")
     edge = solve_edge(params, path, law, profile=profile, rtol=rtol, method=method)
     cap = power_law.cap_per_radius(params.replace(tau0=tau0))
+    if turn is not None:  # (both levels push: every anchor a play operator, continuum.rate_play)
+        from .rate_play import RatePlay
+
+        return RatePlay(edge, path, cap, params.G_star, 1.0)
     return RateShifts(edge, path, cap, params.G_star, sign)
