@@ -331,9 +331,6 @@ def _single_positive(solutions: list[sp.Expr], what: str) -> sp.Expr:
 # ----------------------------------------------------------------------------
 # ----------------------------------------------------------------------------
 # on-disk cache of the derivations
-#: Hash of this module's source as it was imported, and of the SymPy version: the cache key. Taken at
-#: import, not when the cache is used, so that a process never files the derivations of the code it
-#: runs under the name of a source edited since.
 def source_digest(source_file: str | Path) -> str:
     """The key of the relations a module of derivations files: a hash of its source and of SymPy's version.
 
@@ -353,6 +350,7 @@ def source_digest(source_file: str | Path) -> str:
     return hashlib.sha256(Path(source_file).read_bytes() + sp.__version__.encode()).hexdigest()[:16]
 
 
+#: Hash of this module's source as it was imported, and of the SymPy version: the cache key (:func:`source_digest`).
 _SOURCE_DIGEST = source_digest(__file__)
 
 
