@@ -45,7 +45,8 @@ from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_distinct, check_real, shown
 
 __all__ = ["critical_angle_at_speed", "critical_angles_at_speeds", "slip_onset_depth_at_speed",
-           "phase_diagram_at_speeds", "ANGLE_XTOL", "ONSET_SAMPLES", "EDGE_SOLVE_STEPS", "CRITICAL_ANGLE_SOLVES"]
+           "phase_diagram_at_speeds", "ANGLE_XTOL", "LEAST_RATE_FACTOR", "ONSET_SAMPLES", "EDGE_SOLVE_STEPS",
+           "CRITICAL_ANGLE_SOLVES"]
 
 #: Brent's tolerance on the angle (rad): the radius at ``d_max`` is known to about 1e-9 of itself (the edge's ODE at
 #: its ``rtol``), which moves the angle by about as much; 1e-12 rad lies below it.
@@ -64,6 +65,12 @@ EDGE_SOLVE_STEPS = 1e4
 #: The solves of the edge one critical angle takes (Brent's method on :data:`_BRACKET` to :data:`ANGLE_XTOL`:
 #: about 40, and the radius at the angle found).
 CRITICAL_ANGLE_SOLVES = 50
+#: The least rate factor ``(v/v_ref)^n`` at the path's speed a law may have here: the edge's ODE reads a release rate
+#: within ``BAND_SHARE`` (1e-9) of a work at rest as rest, so it does not follow a law whose works at the path's speeds
+#: come that near their values at rest (n = 1 on the paper's contact: solved at 1e-8, refused at 1e-9 after 1000
+#: pieces; ``v_ref = 1e300``: the solver's own failure); 100 ``BAND_SHARE`` leaves a decade's margin, and a law below
+#: it is its rate-independent limit ``v_ref → ∞`` to about that share (scenario A's angle within 1e-9 of (18) at it).
+LEAST_RATE_FACTOR = 1e-7
 #: The way in reaches ``d_max`` first, and twice as deep each time no spring slid on it, at most this many times.
 _MAX_DOUBLINGS = 40
 
@@ -72,12 +79,20 @@ def _checked(params: Parameters, law: RateDependentAdhesion, speed, profile: Sim
              ) -> tuple[RateDependentAdhesion, float]:
     """The law and the speed of a rate-dependent angle or onset, every argument checked before a solve: ``params`` a
     Parameters, the law, the speed finite and > 0, the profile, and the run's scales at that speed within the double
-    range (:func:`~mdr_events.theory.scales.check_representable`: ``speed = 1e300`` leaves a path of 1e-304 s)."""
+    range (:func:`~mdr_events.theory.scales.check_representable`: ``speed = 1e300`` leaves a path of 1e-304 s), and
+    the law's rate factor at the speed at least :data:`LEAST_RATE_FACTOR`."""
     if not isinstance(params, Parameters):
         raise TypeError(f"params={shown(params)} ({type(params).__name__}) is not allowed; allowed: a Parameters")
     law = check_rate_law(law)
     speed = check_real("speed", speed, "a finite number > 0 (m/s)", lambda value: value > 0.0)
     profile = check_simulated_profile(profile)
+    log_factor = law.n * (math.log(speed) - math.log(law.v_ref))  # (in logarithms: speed/v_ref may underflow)
+    if log_factor < math.log(LEAST_RATE_FACTOR):  # (v_ref = 1e300 ended in the edge solver's own words)
+        raise ValueError(f"law.v_ref={law.v_ref!r} m/s is not allowed at speed={speed!r} m/s with n={law.n!r}: the "
+                         f"rate factor (speed/v_ref)^n = {math.exp(log_factor):.3g} is below {LEAST_RATE_FACTOR:g}, "
+                         "where the law is its rate-independent limit (v_ref -> inf); allowed: v_ref <= "
+                         f"{math.exp(math.log(speed) - math.log(LEAST_RATE_FACTOR) / law.n):.6g} m/s, or that limit: "
+                         "mdr_events.critical_angle, d_crit, phase_diagram with Adhesion(dgamma0, dgamma1)")
     try:
         check_representable(params.replace(v=speed), profile)
     except ValueError as error:

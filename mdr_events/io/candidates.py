@@ -289,8 +289,11 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         column = names.get(quantity, quantity)
         if column not in columns:
             if quantity in names:
-                raise ValueError(f"{source}: names[{quantity!r}]={column!r} is not a column; columns found: "
-                                 f"{', '.join(columns) or 'none'}")
+                raise ValueError(f"{source}: names[{quantity!r}]={column!r} is not a column; allowed: one of the "
+                                 f"columns found: {', '.join(columns) or 'none'}")
+            if quantity in units:  # (a unit for a column the run does not have was dropped silently)
+                raise ValueError(f"{source}: units[{quantity!r}]={units[quantity]!r} is not allowed: no column "
+                                 f"{column!r}; allowed: units of the columns found: {', '.join(columns) or 'none'}")
             continue
         if column in used:  # (one column read as two quantities, e.g. names={'normal_force': 'time'})
             other = next(name for name in found if names.get(name, name) == column)

@@ -26,6 +26,7 @@ from .plan import Action, SpanPlan, plan_span
 from .regions import Region
 from .solution import PathSolution, evaluate
 from .integrate import integrate_span
+from .layer_reach import check_layer_reach
 from .span import Span, SpanIntegrator, SpanOutcome, Trigger
 from .split_map import SplitAnchorMap
 from .split_solve import commit, new_anchors, split_slip_transition
@@ -81,6 +82,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                  waypoints=len(path.waypoints))
     profile = check_simulated_profile(profile)
     check_reach(params, path.max_depth, profile, "the path")
+    check_layer_reach(params, path.max_depth, profile, layer)
     model = ContinuumModel(params, tolerances, profile, as_friction_law(friction), adhesion, layer)
     segments = kinematics(path)
     check_resolvable(model, path, segments)
