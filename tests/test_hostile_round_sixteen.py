@@ -171,3 +171,42 @@ def test_validate_on_a_layer_beyond_the_scales_is_one_line(capsys, tmp_path, h):
     run.write_text("time,normal_force\n0,0\n1,1\n2,0\n")
     _cli_one_line(capsys, ["validate", str(run), "--scenario", "A", "--alpha", "20", "--out", str(tmp_path / "o"),
                            "--h", h])
+
+
+# --- Q7: the continuum's own output times ran one spacing past the longest run's end even where that is the path's
+# end (a run that ends in contact: a custom path, or the rate law's edge holding past scenario A's exit depth), so its
+# last sample wrote every quantity, the depth too, as nan -----------------------------------------------------------
+
+RATE_CONTACT = dataclasses.replace(CONTACT, adhesion=me.RateDependentAdhesion(0.01, 0.15, 1e-6, 0.3))
+
+
+@pytest.mark.parametrize("contact", [CONTACT, RATE_CONTACT], ids=["paper", "rate"])
+@pytest.mark.parametrize("motion", [
+    me.Paths([me.Path(np.array([(0.0, 0.0), (0.0, 3e-4)]), speed=1e-6)]),
+    me.Scenario("A", [45.0]),
+], ids=["ends-in-contact", "A-45"])
+def test_a_continuum_run_writes_no_sample_past_its_path(contact, motion):
+    run = me.simulate(contact, motion, "continuum", samples=101)
+    for name in ("indentation_depth", "normal_force", "tangential_force", "contact_radius"):
+        assert np.all(np.isfinite(run[name].values)), name
+    path = motion.cases(contact.parameters(3e-4, 1e-6)).paths[0] if isinstance(motion, me.Paths) else None
+    if path is not None:  # (the grid ends on the path's end exactly)
+        assert run.time.values[-1] == path.duration - path.first_contact_time()
+
+
+# --- Q8: a study table that lacks a required key, or a study without [output], said so without what is allowed ----
+
+@pytest.mark.parametrize("text, named", [
+    ("[simulation]\nscenario = 'A'\nalpha = [20]\n[layer]\nbase = 'bonded'\n[output]\ndirectory = 'o'\n",
+     "[layer] lacks the required key(s) h; allowed: [layer] with h: the elastomer's thickness in m"),
+    ("[output]\ndirectory = 'o'\n[fit]\nfree = ['tau0']\n", "[fit] lacks the required key(s) data; allowed: "),
+    ("[phase_diagram]\nscenarios = ['A']\n", "the required table [output] is missing; allowed: a study with an [output]"),
+])
+def test_a_study_missing_a_required_key_says_what_is_allowed(tmp_path, text, named):
+    from mdr_events.app.study import StudyError, load_study
+
+    path = tmp_path / "study.toml"
+    path.write_text(text)
+    with pytest.raises(StudyError) as caught:
+        load_study(path)
+    assert named in str(caught.value) and "\n" not in str(caught.value), str(caught.value)

@@ -24,7 +24,7 @@ from .compressed import attach_compressed_zone
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
 from .plan import Action, SpanPlan, plan_span
 from .regions import Region
-from .solution import PathSolution, evaluate
+from .solution import PathSolution, evaluate, sample_times
 from .integrate import integrate_span
 from .layer_reach import check_layer_reach
 from .span import Span, SpanIntegrator, SpanOutcome, Trigger
@@ -383,8 +383,8 @@ def run_continuum(params: Parameters, paths: list[Path], times: np.ndarray | int
                  memory=n_time * len(paths) * BYTES_PER_SAMPLE)
     solutions = [solve_path(params, path, tolerances, limits, profile, friction, adhesion, layer) for path in paths]
     if samples is not None:
-        longest = max(solution.end_time for solution in solutions)
-        times = np.linspace(0.0, longest * (1.0 + 1.0 / samples), samples)
+        times = sample_times([solution.end_time for solution in solutions],
+                             [path.duration - path.first_contact_time() for path in paths], samples)
     times = np.asarray(times, dtype=float)
     per_case = [evaluate(solution, times) for solution in solutions]
     out = {name: np.stack([case[name] for case in per_case]) for name in per_case[0]}
