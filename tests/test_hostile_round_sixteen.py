@@ -210,3 +210,24 @@ def test_a_study_missing_a_required_key_says_what_is_allowed(tmp_path, text, nam
     with pytest.raises(StudyError) as caught:
         load_study(path)
     assert named in str(caught.value) and "\n" not in str(caught.value), str(caught.value)
+
+
+# --- Q9: fit's report listed every parameter of the paraboloid: a fit with another indenter (--power-law,
+# --flat-punch, a study's [profile]) ended on "mdr-events: error: param_R" (a KeyError's key) after the whole fit ------
+
+@pytest.mark.parametrize("indenter, options", [(me.PowerLaw(20.0, 2.0), ["--power-law", "20", "2"]),
+                                               (me.FlatPunch(1e-3), ["--flat-punch", "1e-3"])],
+                         ids=["power-law", "flat-punch"])
+def test_a_fit_with_another_indenter_writes_its_report(capsys, tmp_path, indenter, options):
+    contact = dataclasses.replace(CONTACT, indenter=indenter)
+    run = me.simulate(contact, me.Scenario("A", [20.0]), "continuum", samples=201).isel(alpha=0)
+    data = tmp_path / "measured.csv"
+    data.write_text("time,normal_force,tangential_force\n" + "".join(
+        f"{float(t)!r},{float(fn)!r},{float(fx)!r}\n" for t, fn, fx in zip(run.time.values, run.normal_force.values,
+                                                     run.tangential_force.values)))
+    status = main(["fit", str(data), "--scenario", "A", "--alpha", "20", "--free", "tau0", "--out",
+                   str(tmp_path / "out"), *options])
+    err = capsys.readouterr().err
+    assert status in (0, 1) and "error" not in err, err
+    report = (tmp_path / "out" / "measured_fit.md").read_text()
+    assert "the other parameters as given: E = 324000 Pa" in report and "R = " not in report
