@@ -200,7 +200,8 @@ def test_a_continuum_run_writes_no_sample_past_its_path(contact, motion):
     ("[simulation]\nscenario = 'A'\nalpha = [20]\n[layer]\nbase = 'bonded'\n[output]\ndirectory = 'o'\n",
      "[layer] lacks the required key(s) h; allowed: [layer] with h: the elastomer's thickness in m"),
     ("[output]\ndirectory = 'o'\n[fit]\nfree = ['tau0']\n", "[fit] lacks the required key(s) data; allowed: "),
-    ("[phase_diagram]\nscenarios = ['A']\n", "the required table [output] is missing; allowed: a study with an [output]"),
+    ("[phase_diagram]\nscenarios = ['A']\n",
+     "the required table [output] is missing; allowed: a study with an [output]"),
 ])
 def test_a_study_missing_a_required_key_says_what_is_allowed(tmp_path, text, named):
     from mdr_events.app.study import StudyError, load_study

@@ -69,7 +69,8 @@ CRITICAL_ANGLE_SOLVES = 50
 #: within ``BAND_SHARE`` (1e-9) of a work at rest as rest, so it does not follow a law whose works at the path's speeds
 #: come that near their values at rest (n = 1 on the paper's contact: solved at 1e-8, refused at 1e-9 after 1000
 #: pieces; ``v_ref = 1e300``: the solver's own failure); 100 ``BAND_SHARE`` leaves a decade's margin, and a law below
-#: it is its rate-independent limit ``v_ref → ∞`` to about that share (scenario A's angle within 1e-9 of (18) at it).
+#: it is its rate-independent limit ``v_ref → ∞`` to about that share (scenario A's angle within 1e-9 of (18)
+#: there).
 LEAST_RATE_FACTOR = 1e-7
 #: The way in reaches ``d_max`` first, and twice as deep each time no spring slid on it, at most this many times.
 _MAX_DOUBLINGS = 40
