@@ -232,3 +232,10 @@ def test_a_fit_with_another_indenter_writes_its_report(capsys, tmp_path, indente
     assert status in (0, 1) and "error" not in err, err
     report = (tmp_path / "out" / "measured_fit.md").read_text()
     assert "the other parameters as given: E = 324000 Pa" in report and "R = " not in report
+
+
+def test_a_rate_fit_started_at_the_rate_independent_limit_is_refused_with_the_bound():
+    path = me.Path(np.array([(0.0, 0.0), (0.0, PAPER.d_max), (0.0, -1e-4)]), speed=1e-6)
+    times = np.linspace(0.0, path.duration, 20)
+    measurement = me.RateMeasurement(path, times, np.zeros_like(times))
+    _one_line_naming(lambda: me.fit_rate_adhesion([measurement], PAPER, FAR), "start.v_ref=1e+300")

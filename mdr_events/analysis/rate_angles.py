@@ -45,8 +45,8 @@ from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_distinct, check_real, shown
 
 __all__ = ["critical_angle_at_speed", "critical_angles_at_speeds", "slip_onset_depth_at_speed",
-           "phase_diagram_at_speeds", "ANGLE_XTOL", "LEAST_RATE_FACTOR", "ONSET_SAMPLES", "EDGE_SOLVE_STEPS",
-           "CRITICAL_ANGLE_SOLVES"]
+           "phase_diagram_at_speeds", "check_rate_factor", "ANGLE_XTOL", "LEAST_RATE_FACTOR", "ONSET_SAMPLES",
+           "EDGE_SOLVE_STEPS", "CRITICAL_ANGLE_SOLVES"]
 
 #: Brent's tolerance on the angle (rad): the radius at ``d_max`` is known to about 1e-9 of itself (the edge's ODE at
 #: its ``rtol``), which moves the angle by about as much; 1e-12 rad lies below it.
@@ -87,18 +87,40 @@ def _checked(params: Parameters, law: RateDependentAdhesion, speed, profile: Sim
     law = check_rate_law(law)
     speed = check_real("speed", speed, "a finite number > 0 (m/s)", lambda value: value > 0.0)
     profile = check_simulated_profile(profile)
-    log_factor = law.n * (math.log(speed) - math.log(law.v_ref))  # (in logarithms: speed/v_ref may underflow)
-    if log_factor < math.log(LEAST_RATE_FACTOR):  # (v_ref = 1e300 ended in the edge solver's own words)
-        raise ValueError(f"law.v_ref={law.v_ref!r} m/s is not allowed at speed={speed!r} m/s with n={law.n!r}: the "
-                         f"rate factor (speed/v_ref)^n = {math.exp(log_factor):.3g} is below {LEAST_RATE_FACTOR:g}, "
-                         "where the law is its rate-independent limit (v_ref -> inf); allowed: v_ref <= "
-                         f"{math.exp(math.log(speed) - math.log(LEAST_RATE_FACTOR) / law.n):.6g} m/s, or that limit: "
-                         "mdr_events.critical_angle, d_crit, phase_diagram with Adhesion(dgamma0, dgamma1)")
+    check_rate_factor(law, speed)
     try:
         check_representable(params.replace(v=speed), profile)
     except ValueError as error:
         raise ValueError(f"speed={speed!r} m/s: {error}") from None
     return law, speed
+
+
+def check_rate_factor(law: RateDependentAdhesion, speed: float, name: str = "law") -> None:
+    """Refuse a law whose rate factor ``(speed/v_ref)^n`` at the path's ``speed`` is below
+    :data:`LEAST_RATE_FACTOR` (computed in logarithms: ``speed/v_ref`` may underflow), naming the bound on ``v_ref``.
+
+    Parameters
+    ----------
+    law : RateDependentAdhesion
+        The adhesion law.
+    speed : float
+        The path's speed (m/s, finite and > 0).
+    name : str, optional
+        The law's name in the message.
+
+    Raises
+    ------
+    ValueError
+        A law at its rate-independent limit to :data:`LEAST_RATE_FACTOR`, with the largest ``v_ref`` allowed.
+    """
+    log_factor = law.n * (math.log(speed) - math.log(law.v_ref))
+    if log_factor < math.log(LEAST_RATE_FACTOR):  # (v_ref = 1e300 ended in the edge solver's own words)
+        raise ValueError(f"{name}.v_ref={law.v_ref!r} m/s is not allowed at speed={speed!r} m/s with n={law.n!r}: the "
+                         f"rate factor (speed/v_ref)^n = {math.exp(log_factor):.3g} is below {LEAST_RATE_FACTOR:g}, "
+                         "where the law is its rate-independent limit (v_ref -> inf); allowed: v_ref <= "
+                         f"{math.exp(math.log(speed) - math.log(LEAST_RATE_FACTOR) / law.n):.6g} m/s, or that limit: "
+                         "the rate-independent law Adhesion(dgamma0, dgamma1) (critical_angle, d_crit, phase_diagram, "
+                         "fit)")
 
 
 def _grid(name: str, values, allowed: str, valid) -> list[float]:

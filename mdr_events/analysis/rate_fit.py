@@ -19,7 +19,7 @@ import numpy as np
 import xarray as xr
 from scipy import optimize, stats
 
-from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS
+from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS, check_rate_factor
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models.continuum.rate_edge import solve_edge
@@ -99,6 +99,7 @@ def _check(measurements, params, start, free, offsets, limits) -> Limits:
                         "RateMeasurement(path, times, normal_force[, noise])")
     for index, m in enumerate(measurements):
         _check_curve(f"measurements[{index}]", m)
+        check_rate_factor(start, m.path.speed, "start")  # (the start at its limit ended in the edge solver's words)
     total = sum(np.size(m.times) for m in measurements)
     first_step = len(measurements) * (1 + len(free))
     limits.check(f"the fit's {len(measurements)} curve(s) of {total} samples ({first_step} solves of the edge in its "
