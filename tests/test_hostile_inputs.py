@@ -210,8 +210,8 @@ def test_a_large_indenter_with_the_default_spacing_runs(paper):
 
 # --- the resource guard ------------------------------------------------------------------------------
 @pytest.mark.parametrize("options, names", [
-    ({"n_steps": 10**9}, "steps=..., memory=..."),
-    ({"dt": 1e-6}, "steps=..., memory=..."),
+    ({"n_steps": 10**9}, "steps=..., samples=..., memory=..."),
+    ({"dt": 1e-6}, "steps=..., samples=..., memory=..."),
     ({"dx": 1e-10}, "springs=..., memory=..."),
     ({"method": "continuum", "samples": 10**9}, "samples=..., memory=..."),
 ])

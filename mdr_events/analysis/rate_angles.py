@@ -48,7 +48,8 @@ from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_distinct, check_real, shown
 
 __all__ = ["critical_angle_at_speed", "critical_angles_at_speeds", "slip_onset_depth_at_speed",
-           "phase_diagram_at_speeds", "ANGLE_XTOL", "ONSET_SAMPLES", "EDGE_SOLVE_STEPS", "CRITICAL_ANGLE_SOLVES"]
+           "phase_diagram_at_speeds", "check_rate_factor", "ANGLE_XTOL", "LEAST_RATE_FACTOR", "ONSET_SAMPLES",
+           "EDGE_SOLVE_STEPS", "CRITICAL_ANGLE_SOLVES"]
 
 #: Brent's tolerance on the angle (rad): the radius at ``d_max`` is known to about 1e-9 of itself (the edge's ODE at
 #: its ``rtol``), which moves the angle by about as much; 1e-12 rad lies below it.
@@ -67,6 +68,13 @@ EDGE_SOLVE_STEPS = 1e4
 #: The solves of the edge one critical angle takes (Brent's method on :data:`_BRACKET` to :data:`ANGLE_XTOL`:
 #: about 40, and the radius at the angle found).
 CRITICAL_ANGLE_SOLVES = 50
+#: The least rate factor ``(v/v_ref)^n`` at the path's speed a law may have here: the edge's ODE reads a release rate
+#: within ``BAND_SHARE`` (1e-9) of a work at rest as rest, so it does not follow a law whose works at the path's speeds
+#: come that near their values at rest (n = 1 on the paper's contact: solved at 1e-8, refused at 1e-9 after 1000
+#: pieces; ``v_ref = 1e300``: the solver's own failure); 100 ``BAND_SHARE`` leaves a decade's margin, and a law below
+#: it is its rate-independent limit ``v_ref → ∞`` to about that share (scenario A's angle within 1e-9 of (18)
+#: there).
+LEAST_RATE_FACTOR = 1e-7
 #: The way in reaches ``d_max`` first, and twice as deep each time no spring slid on it, at most this many times.
 _MAX_DOUBLINGS = 40
 
@@ -75,12 +83,14 @@ def _checked(params: Parameters, law: RateDependentAdhesion, speed, profile: Sim
              ) -> tuple[RateDependentAdhesion, float]:
     """The law and the speed of a rate-dependent angle or onset, every argument checked before a solve: ``params`` a
     Parameters, the law, the speed finite and > 0, the profile, and the run's scales at that speed within the double
-    range (:func:`~mdr_events.theory.scales.check_representable`: ``speed = 1e300`` leaves a path of 1e-304 s)."""
+    range (:func:`~mdr_events.theory.scales.check_representable`: ``speed = 1e300`` leaves a path of 1e-304 s), and
+    the law's rate factor at the speed at least :data:`LEAST_RATE_FACTOR`."""
     if not isinstance(params, Parameters):
         raise TypeError(f"params={shown(params)} ({type(params).__name__}) is not allowed; allowed: a Parameters")
     law = check_rate_law(law)
     speed = check_real("speed", speed, "a finite number > 0 (m/s)", lambda value: value > 0.0)
     profile = check_simulated_profile(profile)
+    check_rate_factor(law, speed)
     try:
         check_representable(params.replace(v=speed), profile)
     except ValueError as error:
@@ -98,6 +108,34 @@ def _job(contact, speeds, old: tuple, law, profile, d_max, method: str, limits, 
         _checked(job.params, job.law, speed, job.profile)
     return (job.params, job.law, job.profile, speeds, job.options.get("method", method),
             job.options.get("limits", limits))
+
+
+def check_rate_factor(law: RateDependentAdhesion, speed: float, name: str = "law") -> None:
+    """Refuse a law whose rate factor ``(speed/v_ref)^n`` at the path's ``speed`` is below
+    :data:`LEAST_RATE_FACTOR` (computed in logarithms: ``speed/v_ref`` may underflow), naming the bound on ``v_ref``.
+
+    Parameters
+    ----------
+    law : RateDependentAdhesion
+        The adhesion law.
+    speed : float
+        The path's speed (m/s, finite and > 0).
+    name : str, optional
+        The law's name in the message.
+
+    Raises
+    ------
+    ValueError
+        A law at its rate-independent limit to :data:`LEAST_RATE_FACTOR`, with the largest ``v_ref`` allowed.
+    """
+    log_factor = law.n * (math.log(speed) - math.log(law.v_ref))
+    if log_factor < math.log(LEAST_RATE_FACTOR):  # (v_ref = 1e300 ended in the edge solver's own words)
+        raise ValueError(f"{name}.v_ref={law.v_ref!r} m/s is not allowed at speed={speed!r} m/s with n={law.n!r}: the "
+                         f"rate factor (speed/v_ref)^n = {math.exp(log_factor):.3g} is below {LEAST_RATE_FACTOR:g}, "
+                         "where the law is its rate-independent limit (v_ref -> inf); allowed: v_ref <= "
+                         f"{math.exp(math.log(speed) - math.log(LEAST_RATE_FACTOR) / law.n):.6g} m/s, or that limit: "
+                         "the rate-independent law Adhesion(dgamma0, dgamma1) (critical_angle, d_crit, phase_diagram, "
+                         "fit)")
 
 
 def _grid(name: str, values, allowed: str, valid) -> list[float]:

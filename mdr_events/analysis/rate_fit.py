@@ -26,7 +26,7 @@ import numpy as np
 import xarray as xr
 from scipy import optimize, stats
 
-from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS
+from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS, check_rate_factor
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models.continuum.rate_edge import EdgeUnresolved, solve_edge
@@ -106,6 +106,7 @@ def _check(measurements, params, start, free, offsets, limits) -> Limits:
                         "RateMeasurement(path, times, normal_force[, noise])")
     for index, m in enumerate(measurements):
         _check_curve(f"measurements[{index}]", m)
+        check_rate_factor(start, m.path.speed, "start")  # (the start at its limit ended in the edge solver's words)
     total = sum(np.size(m.times) for m in measurements)
     first_step = len(measurements) * (1 + len(free))
     limits.check(f"the fit's {len(measurements)} curve(s) of {total} samples ({first_step} solves of the edge in its "
@@ -120,10 +121,15 @@ def _check_curve(name: str, m: RateMeasurement) -> None:
     allowed = "a 1-D array of finite real numbers"
     times = real_array(f"{name}.times", m.times, allowed + " (s on the path's clock)")
     force = real_array(f"{name}.normal_force", m.normal_force, allowed + " (N)")
-    if times.ndim != 1 or times.shape != force.shape or times.size < 2 or not (
-            np.all(np.isfinite(times)) and np.all(np.isfinite(force))):
-        raise ValueError(f"{name} is not allowed: times and normal_force must be finite 1-D arrays of one length >= 2 "
-                         f"(got {times.shape} and {force.shape})")
+    if times.ndim != 1 or times.size < 2:
+        raise ValueError(f"{name}.times of shape {times.shape} is not allowed; allowed: {allowed} of length >= 2")
+    if force.shape != times.shape:
+        raise ValueError(f"{name}.normal_force of shape {force.shape} is not allowed; allowed: {allowed} of the "
+                         f"times' length, shape {times.shape}")
+    for part, values in (("times", times), ("normal_force", force)):
+        if not np.all(np.isfinite(values)):
+            index = int(np.flatnonzero(~np.isfinite(values))[0])
+            raise ValueError(f"{name}.{part}[{index}]={float(values[index])!r} is not allowed; allowed: {allowed}")
     outside = (times < 0.0) | (times > m.path.duration)
     if np.any(outside):
         raise ValueError(f"{name}.times={float(times[outside][0])!r} s is not allowed; allowed: times on the path's "

@@ -59,7 +59,8 @@ def fit_markdown(fit: xr.Dataset, stem: str | None = None) -> str:
              f"- Path: {fit.attrs.get('path_description', fit.attrs.get('path_waypoints', '?'))}",
              f"- Free: {fit.attrs['free']}; the other parameters as given: " + ", ".join(
                  f"{name} = {fit.attrs[f'param_{name}']:g}" + (f" {unit}" if unit != "1" else "")
-                 for name, unit in PARAMETER_UNITS.items() if name not in str(fit.attrs["free"]).split(", ")),
+                 for name, unit in PARAMETER_UNITS.items()
+                 if name not in str(fit.attrs["free"]).split(", ") and f"param_{name}" in fit.attrs),
              f"- Condition number of the weighted Jacobian: {float(fit['condition_number']):.4g}; reduced χ²: "
              f"{float(fit['reduced_chi_square']):.4g}",
              f"- Optimizer: {'converged' if int(fit.attrs.get('optimizer_converged', 0)) else '**did not converge**'}",

@@ -122,7 +122,9 @@ def check_table(table: str, content: Any, where: str) -> None:
             raise StudyError(f"{where}: [{table}] {key} = {value!r} is not allowed; allowed: {allowed}")
     missing = [key for key, (_, required) in keys.items() if required and key not in content]
     if missing:
-        raise StudyError(f"{where}: [{table}] lacks the required key(s) {', '.join(missing)}")
+        needed = "; ".join(f"{key}: {KEY_NOTES.get((table, key), _KINDS[keys[key][0]][1])}" for key in missing)
+        raise StudyError(f"{where}: [{table}] lacks the required key(s) {', '.join(missing)}; allowed: [{table}] "
+                         f"with {needed}")
 
 
 def check_tables(document: dict[str, Any], where: str) -> None:
@@ -135,7 +137,9 @@ def check_tables(document: dict[str, Any], where: str) -> None:
         check_table(table, content, where)
     for table in REQUIRED_TABLES:
         if table not in document:
-            raise StudyError(f"{where}: the required table [{table}] is missing")
+            raise StudyError(f"{where}: the required table [{table}] is missing; allowed: a study with an [{table}] "
+                             f"table ({', '.join(key for key, (_, required) in SCHEMA[table].items() if required)} "
+                             "required)")
     if "name" in document["output"]:
         try:
             check_output_stem("[output] name", document["output"]["name"])

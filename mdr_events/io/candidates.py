@@ -238,6 +238,16 @@ def _selected(dataset: xr.Dataset, source: str, select: Mapping[str, object]) ->
     return dataset
 
 
+def _check_units_have_columns(source: str, units: dict, names: dict, columns) -> None:
+    """Refuse a unit for a quantity the run has no column of (it was dropped silently; a column named by ``names``
+    that is missing is refused as such)."""
+    for quantity, unit in units.items():
+        column = names.get(quantity, quantity)
+        if quantity not in names and column not in columns:
+            raise ValueError(f"{source}: units[{quantity!r}]={unit!r} is not allowed: no column {column!r}; allowed: "
+                             f"units of the columns found: {', '.join(columns) or 'none'}")
+
+
 def read_candidate(candidate, names: Mapping[str, str] | None = None,
                    units: Mapping[str, str] | None = None, limits: Limits = DEFAULT_LIMITS,
                    select: Mapping[str, object] | None = None,
@@ -283,14 +293,15 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         if quantity not in CANDIDATE_QUANTITIES:
             raise ValueError(f"{source}: {quantity!r} in names/units is not allowed; allowed: "
                              f"{', '.join(CANDIDATE_QUANTITIES)}")
+    _check_units_have_columns(source, units, names, columns)
     found: dict[str, np.ndarray] = {}
     used: set[str] = set()
     for quantity in CANDIDATE_QUANTITIES:
         column = names.get(quantity, quantity)
         if column not in columns:
             if quantity in names:
-                raise ValueError(f"{source}: names[{quantity!r}]={column!r} is not a column; columns found: "
-                                 f"{', '.join(columns) or 'none'}")
+                raise ValueError(f"{source}: names[{quantity!r}]={column!r} is not a column; allowed: one of the "
+                                 f"columns found: {', '.join(columns) or 'none'}")
             continue
         if column in used:  # (one column read as two quantities, e.g. names={'normal_force': 'time'})
             other = next(name for name in found if names.get(name, name) == column)

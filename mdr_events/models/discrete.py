@@ -534,7 +534,7 @@ def check_discrete_size(params: Parameters, paths: list[Path], dx: float, dt: fl
     kind = springs_of(params, profile, None, layer)
     springs = kind.branch_radius(deepest) / dx + 2
     limits.check(f"the discrete run (dx={dx!r} m, dt={dt:.6g} s, {len(paths)} case(s))",
-                 steps=n_time * len(paths), springs=springs,
+                 steps=n_time * len(paths), samples=n_time * len(paths), springs=springs,
                  memory=len(paths) * n_time * BYTES_PER_SAMPLE + springs * kind.bytes_per_spring)
 
 

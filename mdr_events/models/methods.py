@@ -131,11 +131,12 @@ class Discrete:
         Raises
         ------
         ResourceLimitError
-            The steps or the memory of ``count`` cases beyond ``limits``.
+            The steps, the output times or the memory of ``count`` cases beyond ``limits``.
         """
         if self.dt is None:
             n_time = (DEFAULT_STEPS if self.n_steps is None else self.n_steps) + 1
             limits.check(f"the discrete run ({count} case(s) of {n_time} time steps)", steps=count * n_time,
+                         samples=count * n_time,  # (each step is an output time)
                          memory=count * n_time * DISCRETE_BYTES_PER_SAMPLE)
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:

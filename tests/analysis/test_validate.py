@@ -145,7 +145,7 @@ def test_bad_names_units_and_arguments(paper, discrete):
     run = discrete.isel(alpha=0)
     with pytest.raises(ValueError, match=r"units\['normal_force'\]='lbf' is not allowed; allowed: 'N'"):
         read_candidate(run, units={"normal_force": "lbf"})
-    with pytest.raises(ValueError, match=r"names\['normal_force'\]='Fn' is not a column; columns found"):
+    with pytest.raises(ValueError, match=r"names\['normal_force'\]='Fn' is not a column; allowed: one of the columns found"):
         read_candidate(run, names={"normal_force": "Fn"})
     with pytest.raises(ValueError, match="alpha=None is not allowed with scenario 'A'"):
         me.validate(run, paper, "A")

@@ -197,7 +197,7 @@ A20 = ["--scenario", "A", "--alpha", "20"]
     # a column missing, named by the user or required
     (["no_time.csv", *A20], "no_time.csv: no time column; columns found: t, normal_force"),
     (["run.csv", *A20, "--names", "normal_force=Fn"],
-     "wrong.csv: names['normal_force']='Fn' is not a column; columns found: time, normal_force"),
+     "wrong.csv: names['normal_force']='Fn' is not a column; allowed: one of the columns found: time, normal_force"),
     # units
     (["run.csv", *A20, "--units", "time=fortnight"],
      "wrong.csv: units['time']='fortnight' is not allowed; allowed: 's', 'ms'"),

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import enum
 import math
+import warnings
 from dataclasses import dataclass, field
 from typing import NamedTuple
 
@@ -502,7 +503,8 @@ def _piece(run: EdgeRun, ode: _EdgeODE, state, jump_in: float, rtol: float, meth
         return (t_end, a0)
     speed = ode.rhs(mode)
     try:
-        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # (a failure is reported below, whole)
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"), warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # (a failure is reported below, whole: LSODA warned of it beforehand)
             solution = march(speed, t0, segment.t1, a0, method, rtol, rtol * jump_in,
                              ode.moving_events(mode, END_SHARE * jump_in))
     except _TooStiff:

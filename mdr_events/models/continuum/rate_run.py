@@ -37,6 +37,7 @@ from .extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, VALUE_AFTER_CONTACT, ext
 from .rate_edge import EdgeEventKind
 from .rate_play import RatePlay
 from .rate_shifts import RateShifts, solve_rate_shifts
+from .solution import sample_times
 from .solve import BYTES_PER_SAMPLE
 from .state import Event, EventKind
 from .tolerances import Tolerances
@@ -390,8 +391,8 @@ def run_rate_continuum(params: Parameters, paths: list[Path], times: np.ndarray 
     runs = [solve_rate_shifts(params, path, law, profile=profile, friction=friction, rtol=tolerances.rtol,
                               method=RUN_METHOD) for path in paths]
     if samples is not None:
-        longest = max(_end(run)[0] - run.path.first_contact_time() for run in runs)
-        times = np.linspace(0.0, longest * (1.0 + 1.0 / samples), samples)
+        times = sample_times([_end(run)[0] - run.path.first_contact_time() for run in runs],
+                             [run.path.duration - run.path.first_contact_time() for run in runs], samples)
     times = np.asarray(times, dtype=float)
     per_case = [rate_quantities(run, times) for run in runs]
     out = {name: np.stack([case[name] for case in per_case]) for name in per_case[0]}

@@ -186,6 +186,29 @@ def _compressed_zone(zone: PathSolution, times: np.ndarray, radius: np.ndarray,
         return force, np.where(radius > 0, np.clip(sliding_springs / radius, 0.0, 1.0), np.nan)
 
 
+def sample_times(ends: list[float], path_ends: list[float], samples: int) -> np.ndarray:
+    """The output times of a run of ``samples`` (s from first contact): to the longest run's end and one spacing
+    beyond (a sample after the contact has ended), but not beyond its path's end (a run that ended in contact wrote
+    every quantity, the depth too, as ``nan`` there).
+
+    Parameters
+    ----------
+    ends : list of float
+        Each case's end (s from its first contact).
+    path_ends : list of float
+        Each case's path's end (s from its first contact).
+    samples : int
+        The number of times.
+
+    Returns
+    -------
+    numpy.ndarray
+        The times.
+    """
+    last = max(min(end * (1.0 + 1.0 / samples), path_end) for end, path_end in zip(ends, path_ends))
+    return np.linspace(0.0, last, samples)
+
+
 def check_times(name: str, times, earliest: float = 0.0) -> np.ndarray:
     """``times`` (s from first contact) as a float array of one dimension at most, every entry finite and from
     ``earliest`` on; else ``TypeError`` or ``ValueError`` naming the argument (a time before the path's start was

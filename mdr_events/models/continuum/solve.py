@@ -25,8 +25,9 @@ from .compressed import attach_compressed_zone
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
 from .plan import Action, SpanPlan, plan_span
 from .regions import Region
-from .solution import PathSolution, evaluate
+from .solution import PathSolution, evaluate, sample_times
 from .integrate import integrate_span
+from .layer_reach import check_layer_reach
 from .span import Span, SpanIntegrator, SpanOutcome, Trigger
 from .split_map import SplitAnchorMap
 from .split_solve import commit, new_anchors, split_slip_transition
@@ -82,6 +83,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
                  waypoints=len(path.waypoints))
     profile = check_simulated_profile(profile)
     check_reach(params, path.max_depth, profile, "the path")
+    check_layer_reach(params, path.max_depth, profile, layer)
     model = ContinuumModel(params, tolerances, profile, as_friction_law(friction), adhesion, layer)
     segments = kinematics(path)
     check_resolvable(model, path, segments)
@@ -376,8 +378,8 @@ def run_continuum(model: KernelModel | Parameters, paths: list[Path], times: np.
     params, profile, friction, adhesion, layer = as_kernel_model(model)
     solutions = [solve_path(params, path, tolerances, limits, profile, friction, adhesion, layer) for path in paths]
     if samples is not None:
-        longest = max(solution.end_time for solution in solutions)
-        times = np.linspace(0.0, longest * (1.0 + 1.0 / samples), samples)
+        times = sample_times([solution.end_time for solution in solutions],
+                             [path.duration - path.first_contact_time() for path in paths], samples)
     times = np.asarray(times, dtype=float)
     per_case = [evaluate(solution, times) for solution in solutions]
     out = {name: np.stack([case[name] for case in per_case]) for name in per_case[0]}
