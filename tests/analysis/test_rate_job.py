@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import mdr_events as me
+from mdr_events.models.kernel_model import KernelModel
 from mdr_events.analysis.rate_angles import critical_angles_at_speeds
 from mdr_events.analysis.rate_job import rate_job
 from mdr_events.analysis.rate_let_go import critical_angles_B_at_speeds
@@ -74,5 +75,5 @@ def test_what_either_form_does_not_allow_is_named(call, kind, words):
 def test_the_continuum_s_rate_run_refuses_a_layer_by_name_before_it_runs():
     path = me.Path.scenario_A(20.0, PAPER)
     with pytest.raises(ValueError, match=r"layer=Layer\(.*not allowed with a rate-dependent law in the continuum"):
-        _rate_run(PAPER, [path], 11, me.Tolerances(), me.Limits(), None, me.FrictionLaw("tau0", tau0=PAPER.tau0),
-                  LAW, me.Layer(5e-3))
+        _rate_run(KernelModel(PAPER, None, me.FrictionLaw("tau0", tau0=PAPER.tau0), LAW, me.Layer(5e-3)), [path], 11,
+                  me.Tolerances(), me.Limits())
