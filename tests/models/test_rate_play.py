@@ -27,10 +27,11 @@ PATHS = {  # (small strokes: the springs stick until the edge lets go; the rever
     "reversal": me.Path(np.array([(0, 0), (D / TAN20, D), (0.3 * D / TAN20, 0.4 * D), (0.3 * D / TAN20, -2e-4)]),
                         speed=PAPER.v),
 }
-#: Strokes beyond the cap's window (2 mm against 2 K a = 1.4 mm: full slip at every turn; 1.5 mm zigzags). The
-#: discrete springs do not converge to the paper's own continuum there either (a floor of 1.8e-4 N in the mean,
-#: 7e-5 of the range, with Δx and the time steps refined together, measured under the paper's law), so these check
-#: the limit v_ref -> inf alone.
+#: Strokes beyond the cap's window (2 mm against 2 K a = 1.4 mm: full slip at every turn; 1.5 mm zigzags). On them
+#: the springs' gap to the continuum in full slip is the pinned radius rounded to the springs' grid
+#: (``m Δx − a``, the same offset at Δx = 4, 2 and 1 µm: an apparent floor of 1.8e-4 N under the paper's law, first
+#: order at a fixed fractional part of a/Δx; tests/models/test_fretting_lattice.py), so these check the limit
+#: v_ref -> inf alone.
 SLIDING_PATHS = {
     "fretting": me.Path(np.array([(0, 0), (0, D), (1e-3, D), (-1e-3, D), (1e-3, D), (0, -2e-4)]), speed=PAPER.v),
     "zigzag": me.Path(np.array([(0, 0), (1e-3, 0.5 * D), (0, D), (1.5e-3, 0.6 * D), (5e-4, -2e-4)]), speed=PAPER.v),
