@@ -16,7 +16,7 @@ from typing import Callable, NamedTuple
 
 import numpy as np
 
-__all__ = ["Grading", "GradedEvent", "graded_problem", "grading_power", "span_variable", "natural_variable", "MAX_POWER"]
+__all__ = ["Grading", "GradedEvent", "SpanProblem", "graded_problem", "grading_power", "span_variable", "natural_variable", "MAX_POWER"]
 
 
 class Grading(NamedTuple):
@@ -131,9 +131,23 @@ class GradedEvent:
         return self.event(self.grading.natural(u))
 
 
-class GradedProblem(NamedTuple):
-    """What ``solve_ivp`` integrates on a graded span: its right-hand side, events, ends, knots and longest step, all
-    in ``u``."""
+class SpanProblem(NamedTuple):
+    """What the solver integrates on a span: its right-hand side, events, ends, knots and longest step, in the
+    span's variable (``u`` on a graded span, :func:`graded_problem`; else the natural one).
+
+    Attributes
+    ----------
+    rhs : callable
+        ``dF/dvar`` of the variable and the force.
+    events : list
+        The event functions of the variable.
+    start, stop : float
+        The variable's ends.
+    knots : list
+        The knots of the right-hand side strictly between them.
+    max_step : float
+        The solver's longest step (``inf``: none).
+    """
 
     rhs: Callable
     events: list
@@ -143,7 +157,7 @@ class GradedProblem(NamedTuple):
     max_step: float
 
 
-def graded_problem(integrator, grading: Grading, events: list, steps: int) -> GradedProblem:
+def graded_problem(integrator, grading: Grading, events: list, steps: int) -> SpanProblem:
     """The span of ``integrator`` in the graded variable: ``dF/du = (dF/dv)(v(u)) dv/du``, the events of ``v(u)``,
     ``u`` from 1 to 0, the knots mapped, at most ``1/steps`` of the span a step where the integrator limits its steps.
 
@@ -160,7 +174,7 @@ def graded_problem(integrator, grading: Grading, events: list, steps: int) -> Gr
 
     Returns
     -------
-    GradedProblem
+    SpanProblem
         The problem in ``u``.
     """
     natural, rate, rhs = grading.natural, grading.rate, integrator.rhs
@@ -169,7 +183,7 @@ def graded_problem(integrator, grading: Grading, events: list, steps: int) -> Gr
         return [rhs(natural(u), y)[0] * rate(u)]
 
     limited = math.isfinite(integrator.max_step())
-    return GradedProblem(graded_rhs, [GradedEvent(event, grading) for event in events], 1.0, 0.0,
+    return SpanProblem(graded_rhs, [GradedEvent(event, grading) for event in events], 1.0, 0.0,
                          [grading.graded(knot) for knot in integrator.knots()], 1.0 / steps if limited else math.inf)
 
 

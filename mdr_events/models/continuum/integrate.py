@@ -13,7 +13,7 @@ from typing import Callable
 
 
 from .anchors import AnchorMap
-from .graded import GradedProblem, graded_problem
+from .graded import SpanProblem, graded_problem
 from .model import ContinuumModel
 from .span import EventFunction, Span, SpanIntegrator, SpanOutcome, Variable
 from .span_march import Marched, march
@@ -119,7 +119,7 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
     span.grading = grading = integrator.grading()
     events = integrator.event_functions()
     if grading is None:
-        problem = GradedProblem(integrator.rhs, events, start, stop, integrator.knots(), integrator.max_step())
+        problem = SpanProblem(integrator.rhs, events, start, stop, integrator.knots(), integrator.max_step())
     else:  # (the variable u of :mod:`.graded`, from 1 to 0)
         problem = graded_problem(integrator, grading, events, MIN_STEPS_PER_SPAN)
     tolerances = model.tolerances

@@ -96,7 +96,8 @@ class Span:
     variable: Variable = Variable.TIME
     #: the integration variable is the radius over this length (the time: 1)
     scale: float = 1.0
-    #: the variable graded towards the span's stop, where it ends at the surface (:mod:`.graded`; ``None``: not)
+    # (the variable graded towards the span's stop, :mod:`.graded`; ``None``: not. Documented in the class's
+    # docstring alone: numpydoc reads a documented attribute's value, and ``None`` has no docstring)
     grading: Grading | None = None
 
 

@@ -3,7 +3,7 @@ its cap and region, as small functions of the integrator and the integration var
 these functions bound to the span, :class:`RegionEvent`): a level reaching its layout's target (the source's value at
 ``x_c`` among them, :func:`level_reaches`), a zone leaving through a receding end (:func:`zone_leaves`), a sliding
 level turning back (:func:`level_turns`), ``x_c`` passing a part's boundary (:func:`boundary_passes`), the edge
-passing a part; and those met at the span's start (:meth:`SplitEvents.met_at_start`).
+passing a part; and those met at the span's start (``SplitEvents.met_at_start``).
 """
 
 from __future__ import annotations
