@@ -249,6 +249,14 @@ def kinematics(path: Path) -> list[Segment]:
 #: positions' own rounding, ``eps`` times the travel: a few dozen ``eps travel/ū`` of ``τ0 A`` (7e-6 at the
 #: limit).
 MAX_TRAVEL_PER_CAP = 1e-3 / PIECE_SHARE
+#: The other side, Coulomb's part: the centre's cap ``ū = K a + κ d`` is one of the lengths the slip criterion
+#: resolves to PIECE_SHARE, while the shifts the springs hold are at most the travel; for those shifts to be
+#: classified to 1e-3 of themselves (the standard of :data:`MAX_TRAVEL_PER_CAP`) ``ū`` may be at most this many
+#: travels. Beyond it the springs that slide are a band at the compressed zone's edge of width ``~ travel/(κ g')``,
+#: and the solver chased it: scenario A at 89° with μ = 1e8 (8.6e9 travels) 30 s, at 45° with μ = 1e9 (1.5e9) 11 s,
+#: with μ = 1e10 to 1e13 (1.5e10 to 1.5e13) over a minute each; from about 1e14 travels the band lies within the
+#: criterion's tolerance and runs are quick again, an end no bound is derived for, so one bound is stated.
+MAX_CAP_PER_TRAVEL = 1e-3 / PIECE_SHARE
 
 
 class Resolution(NamedTuple):
@@ -321,6 +329,8 @@ def check_resolvable(model: ContinuumModel, path: Path, segments: list[Segment])
             f"ū = {cap:.3g} m at the deepest point, and the path travels {travel:.3g} m tangentially; allowed for the "
             f"continuum method: a travel of at most {MAX_TRAVEL_PER_CAP:.0e} ū = {MAX_TRAVEL_PER_CAP * cap:.3g} m "
             "(beyond it the slip events are lost to rounding): a larger mu, a shorter path, or method='discrete'")
+    if model.caps.kappa > 0.0 and travel > 0.0 and not cap <= MAX_CAP_PER_TRAVEL * travel:
+        raise ValueError(_coulomb_beyond_resolution(model, path, travel, cap))
     if not travel <= MAX_TRAVEL_PER_CAP * cap:
         raise ValueError(
             f"tau0={params.tau0!r} Pa with G*={params.G_star:.4g} Pa (τ0/G* = {params.tau0 / params.G_star:.3g}) gives "
@@ -328,3 +338,16 @@ def check_resolvable(model: ContinuumModel, path: Path, segments: list[Segment])
             f"{travel:.3g} m tangentially; allowed for the continuum method: a travel of at most "
             f"{MAX_TRAVEL_PER_CAP:.0e} ū = {MAX_TRAVEL_PER_CAP * cap:.3g} m (beyond it the slip events are lost "
             "to rounding): a larger τ0/G*, a shorter path, tau0=0 for a frictionless contact, or method='discrete'")
+
+
+def _coulomb_beyond_resolution(model: ContinuumModel, path: Path, travel: float, cap: float) -> str:
+    """The refusal of a Coulomb's cap beyond :data:`MAX_CAP_PER_TRAVEL` travels, with the largest ``μ`` allowed:
+    ``ū = K a + κ d`` with ``κ ∝ μ`` (:func:`~mdr_events.theory.mindlin.coulomb_cap_ratio`)."""
+    mu, depth = model.friction.mu, max(path.max_depth, 0.0)
+    tau0_part = model.caps.centre_shift(model.grow.radius(depth, model.tolerances.radius_rtol), 0.0)
+    largest = max(MAX_CAP_PER_TRAVEL * travel - tau0_part, 0.0) / (model.caps.kappa * depth) * mu
+    return (f"mu={mu!r} is not allowed for the continuum method on this path: the friction law "
+            f"{model.friction.law!r} gives the centre's critical shift ū = {cap:.3g} m at the deepest point, "
+            f"{cap / travel:.3g} times the path's tangential travel {travel:.3g} m, and the slip criterion resolves "
+            f"the shifts to {PIECE_SHARE:g} ū; allowed: ū at most {MAX_CAP_PER_TRAVEL:.0e} travels, mu <= "
+            f"{largest:.3g} on this path, or method='discrete'")

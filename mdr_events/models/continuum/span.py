@@ -44,7 +44,7 @@ from .graded import Grading
 from .model import ContinuumModel, Segment
 from .state import Cap, Regime, Slip
 from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE
-from .zones import EDGE_LEAVING_TOLERANCES, indenter_travel, lay_out_zones, length_scale
+from .zones import EDGE_LEAVING_TOLERANCES, cap_travel, indenter_travel, lay_out_zones, length_scale
 
 
 class Variable(enum.Enum):
@@ -218,7 +218,9 @@ class SpanIntegrator:
         # local length is 0 and that travel keeps the level offset above zero
         reach = self.scale * max(self.start, self.stop) if self.moving else self.a0
         lengths = length_scale(anchors, model.caps.centre_shift(self.a0, self.segment.d(t0)), self.x0,
-                               indenter_travel(self.segment, t0, reach, depth_term))
+                               max(indenter_travel(self.segment, t0, reach, depth_term),
+                                   cap_travel(model.caps.kappa, self.segment, max(abs(t0), abs(self.span.t_end)))),
+                               model.caps.kappa)
         # Rising events cross a level a hair beyond zero: LEVEL_ULPS ulp of the lengths involved, just
         # above the rounding of x − Y ∓ ū (an event moves by about 1e-12 s at the paper's speed). A
         # function that starts at zero to rounding and first falls (the centre of a Hertz contact at

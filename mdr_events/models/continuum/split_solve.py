@@ -19,7 +19,7 @@ from .split_map import SpanMaps, SplitAnchorMap
 from .split_layouts import Instant, lay_out_regions, split_lengths
 from .state import NO_ZONE, Cap, ContactState, EventKind, Slip, zone_events
 from .tolerances import PIECE_SHARE
-from .zones import indenter_travel
+from .zones import cap_travel, indenter_travel
 
 __all__ = ["new_anchors", "commit", "split_slip_transition", "split_full_slip_force"]
 
@@ -108,7 +108,7 @@ def _layouts(model: ContinuumModel, state: ContactState, segment: Segment, t: fl
     """Every cap's zone in every region at ``t``, the ends still (an instant between spans)."""
     x, depth = segment.x(t), segment.d(t)
     anchors = state.anchors
-    travel = indenter_travel(segment, t, radius, model.grow.depth_term)
+    travel = max(indenter_travel(segment, t, radius, model.grow.depth_term), cap_travel(model.caps.kappa, segment, t))
     tolerance = PIECE_SHARE * split_lengths(anchors, model.caps.centre_shift(radius, depth), x, travel)
     boundary = min(anchors.shape.boundary(depth), radius)
     return lay_out_regions(anchors.maps(), model.caps, Instant(x, depth, radius, boundary), state.regions, tolerance)

@@ -31,7 +31,7 @@ from .split_layouts import KEYS, Ends, Instant, Key, STILL, crossing_formula, la
 from .split_map import SpanMaps, SplitAnchorMap
 from .state import Cap, Regime, Slip
 from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE
-from .zones import EDGE_LEAVING_TOLERANCES, indenter_travel
+from .zones import EDGE_LEAVING_TOLERANCES, cap_travel, indenter_travel
 
 __all__ = ["SplitSpanIntegrator", "FRONT_STEPS_PER_SPAN"]
 
@@ -88,7 +88,8 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         depth = self.depth_of(self.start)
         reach = self.scale * max(self.start, self.stop) if self.moving else self.a0
         lengths = split_lengths(anchors, model.caps.centre_shift(self.a0, depth), self.x0,
-                                indenter_travel(segment, t0, reach, model.grow.depth_term))
+                                max(indenter_travel(segment, t0, reach, model.grow.depth_term),
+                                    cap_travel(model.caps.kappa, segment, max(abs(t0), abs(self.span.t_end)))))
         self.offset = LEVEL_ULPS * EPS * lengths
         self.edge_margin = EDGE_LEAVING_TOLERANCES * PIECE_SHARE * lengths
         self.tolerance = PIECE_SHARE * lengths

@@ -199,16 +199,18 @@ class ZoneLayout:
         return ZoneSummary(slip, centre, edge)
 
 
-def length_scale(anchors: AnchorMap, cap_shift: float, x: float, travel: float) -> float:
+def length_scale(anchors: AnchorMap, cap_shift: float, x: float, travel: float, kappa: float = 0.0) -> float:
     """The lengths a span's slip criterion compares and resolves; the tolerances of the levels are shares of it.
 
-    The largest of the centre's cap ``cap_shift`` (``K a + κ d``), the indenter's and the anchors' positions, and
-    ``travel``: how far the
+    The largest of the centre's cap ``cap_shift`` (``K a + κ d``), the indenter's and the anchors' positions as
+    Coulomb's caps see them (``x0 − cap κ d_ref`` and its slope's term, :meth:`~.anchors.AnchorMap.seen_by`: each
+    seen value is a difference of terms up to ``|x0| + κ d_ref``, rounded as much, whatever the depth has become),
+    and ``travel``: how far the
     indenter moves tangentially over the rounding of the variables a level is computed from
     (:func:`indenter_travel`). Not the depth scale ``d_max``: on a stiff elastomer the cap is 1e-13 m
     while ``d_max`` is 0.3 mm, and a tolerance of ``d_max`` would put every spring at the cap.
     """
-    largest_anchor = max((abs(p.x0) for p in anchors.pieces), default=0.0)
+    largest_anchor = max((abs(p.x0) + kappa * abs(p.d_ref) for p in anchors.pieces), default=0.0)
     return max(cap_shift, abs(x), largest_anchor, travel)
 
 
@@ -222,6 +224,30 @@ def indenter_travel(segment: Segment, t: float, radius: float, depth_term: Calla
     if segment.vd != 0.0:
         travel = max(travel, abs(segment.vx / segment.vd) * depth_term(radius))
     return travel
+
+
+def cap_travel(kappa: float, segment: Segment, t: float) -> float:
+    """How far Coulomb's cap at the centre, ``κ d``, moves over the rounding of the depth ``d(t) = ds + v_d (t − t0)``
+    a level ``x − cap (K a + κ d)`` is computed from: ``κ (|ds| + |v_d t|)`` (a level's analogue of
+    :func:`indenter_travel`). The depth is known to a few ulp of those terms (on a pull-out at 1e-6 m/s at
+    ``t = 5.8e4`` s, 7e-18 m), and ``κ`` magnifies it in the level (1e-11 m at ``μ = 1e6``): a slip criterion with
+    a tolerance below that met the same event again at each restart. 0 without Coulomb's part.
+
+    Parameters
+    ----------
+    kappa : float
+        ``κ = μ E*/G*`` (1).
+    segment : Segment
+        The path segment.
+    t : float
+        The time (s on the path's clock).
+
+    Returns
+    -------
+    float
+        The length (m).
+    """
+    return kappa * (abs(segment.ds) + abs(segment.vd * t)) if kappa else 0.0
 
 
 def lay_out_zones(anchors: AnchorMap, caps: Caps, segment: Segment, t: float, radius: float, sliding: dict[Cap, bool],
@@ -257,7 +283,8 @@ def lay_out_zones(anchors: AnchorMap, caps: Caps, segment: Segment, t: float, ra
     """
     x = segment.x(t)
     shift = caps.centre_shift(radius, segment.d(t))
-    tolerance = PIECE_SHARE * length_scale(anchors, shift, x, indenter_travel(segment, t, radius, depth_term))
+    travel = max(indenter_travel(segment, t, radius, depth_term), cap_travel(caps.kappa, segment, t))
+    tolerance = PIECE_SHARE * length_scale(anchors, shift, x, travel, caps.kappa)
     fresh = growing and caps.K > 0.0
     return {cap: ZoneLayout(anchors.seen_by(cap, caps.kappa), cap, x - cap * shift, radius, sliding[cap], tolerance,
                             caps.medium, fresh) for cap in Cap}
