@@ -1,7 +1,6 @@
 """The continuum's tangential springs on top of the rate-dependent edge (continuum.rate_shifts): the discrete springs
 converge to it at first order in Δx, it tends to the paper's continuum at first order in 1/v_ref (F_N and F_x to 1e-9
-at v_ref = 1e2 m/s), full slip is (13)'s
-``τ0 π a²`` exactly, and what it does not follow is refused by name."""
+at v_ref = 1e2 m/s), full slip is (13)'s ``τ0 π a²`` exactly, and what it does not follow is refused by name."""
 
 from __future__ import annotations
 
