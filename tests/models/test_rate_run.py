@@ -82,7 +82,13 @@ def test_a_continuum_sweep_of_the_law_is_refused_before_it_runs():
 
 def test_coulomb_s_part_is_refused_saying_why_and_naming_what_runs_it():
     """Item 2 of issue 29 left as a refusal for Coulomb's part (each spring its own cap); before, the message said
-    neither why nor which method."""
-    coulomb = dataclasses.replace(RATE, friction=me.FrictionLaw("tau0+coulomb", tau0=PAPER.tau0, mu=0.3))
-    with pytest.raises(ValueError, match=r"Coulomb's part gives each spring its own cap.*method='discrete'"):
-        me.simulate(coulomb, me.Scenario("A", alpha=[20.0]), "continuum")
+    neither why nor which method, then it did not name the adhesion law it was refused with."""
+    for friction in (me.FrictionLaw("tau0+coulomb", tau0=PAPER.tau0, mu=0.3), me.FrictionLaw("coulomb", mu=0.3)):
+        coulomb = dataclasses.replace(RATE, friction=friction)
+        with pytest.raises(ValueError, match=r"Coulomb's part gives each spring its own cap.*method='discrete'") as raised:
+            me.simulate(coulomb, me.Scenario("A", alpha=[20.0]), "continuum")
+        # one line naming both laws (the field and its value), the method, what is allowed there and what runs them
+        text = str(raised.value)
+        assert "\n" not in text and text.startswith(f"friction=FrictionLaw({friction.law!r}"), text
+        assert f"adhesion={RATE.adhesion!r} in the continuum method" in text, text
+        assert "allowed: FrictionLaw('tau0') in the continuum, or method='discrete'" in text, text
