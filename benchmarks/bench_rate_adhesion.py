@@ -9,6 +9,10 @@ they cost) of
   ``continuum.solve_rate_shifts`` with the rate-dependent one and its ``F_x`` and ``F_N`` at 2001 samples, the edge by
   LSODA and by Radau (the reference), and against ``simulate(..., "continuum")`` with the rate-dependent law (the
   same with the event log and the extrema), and their ratios (same target);
+- a fretting cycle (``x`` turns back: 30 µm strokes at ``d_max``, then out) in the continuum, 2001 samples:
+  ``simulate(..., "continuum")`` with the paper's law against the rate-dependent one (the play of both levels,
+  ``continuum.rate_play``, at the 2001 samples and the scan's times), and the rate play's ``F_x`` alone at the 2001
+  samples (target: well under 1 s);
 - the normal problem of the same path: ``continuum.solve_path`` without friction (the paper's law, the radius on its
   branches) and ``continuum.solve_edge`` (the radius an ODE), and their ratio; ``solve_edge`` with the fit's method
   (LSODA at ``RATE_FIT_RTOL``) beside the reference's (Radau at ``EDGE_RTOL``);
@@ -84,6 +88,15 @@ def main() -> None:
         "rate-dependent, Radau": median_times(lambda: _rate_continuum(params, path, law, "Radau"), repeat),
         "rate-dependent (simulate)": median_times(lambda: me.simulate(rate, scenario, "continuum"), repeat)},
         "paper's law (simulate)")
+    cycle = me.Path(np.array([(0.0, 0.0), (0.0, params.d_max), (3e-5, params.d_max), (-3e-5, params.d_max),
+                              (3e-5, params.d_max), (0.0, -2e-4)]), speed=params.v)
+    fretting, play = me.Paths([cycle]), solve_rate_shifts(params, cycle, law)
+    samples = np.linspace(cycle.first_contact_time(), cycle.duration, SAMPLES)
+    _show("continuum, fretting at d_max, 2001 samples", {
+        "paper's law (simulate)": median_times(lambda: me.simulate(paper, fretting, "continuum"), repeat),
+        "rate-dependent (simulate)": median_times(lambda: me.simulate(rate, fretting, "continuum"), repeat),
+        "rate play's F_x alone": median_times(lambda: play._sides_at(samples), repeat)},
+        "paper's law (simulate)", target=False)
     frictionless = me.FrictionLaw("tau0", tau0=0.0)
     normal = {"solve_path": median_times(lambda: solve_path(params, path, friction=frictionless), repeat),
               "solve_edge (Radau)": median_times(lambda: solve_edge(params, path, law), repeat),

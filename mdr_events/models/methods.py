@@ -289,7 +289,7 @@ class Continuum:
         ValueError
             The rate-dependent law with another friction law.
         """
-        continuum_kernel(model.adhesion).check(model.friction)
+        continuum_kernel(model.adhesion).check(model.friction, model.adhesion)
         self.check_layer(model.contact)
 
     def check_layer(self, contact: Contact) -> None:
@@ -370,13 +370,14 @@ def _paper_run(model: KernelModel, paths, times, tolerances, limits) -> dict:
 
 
 class ContinuumKernel(NamedTuple):
-    """How the continuum runs an adhesion law: the run, and the check of the friction law it takes."""
+    """How the continuum runs an adhesion law: the run, and the check of the friction law it takes (given the friction
+    law and the adhesion law, which a refusal names)."""
 
     run: Callable[..., dict]
-    check: Callable[[FrictionLaw], None]
+    check: Callable[[FrictionLaw, object], None]
 
 
-def _every_friction_law(friction: FrictionLaw) -> None:
+def _every_friction_law(friction: FrictionLaw, adhesion: object) -> None:
     """The paper's edge takes every friction law."""
 
 

@@ -90,6 +90,9 @@ def test_reach_finds_the_first_time_the_radius_reaches_a_value_as_the_bisection_
     # one by one too (a Newton iterate that converged from below once returned its bracket's stale end)
     alone = np.array([fast.reach(target[index:index + 1], lo, hi[index:index + 1])[0] for index in range(100)])
     np.testing.assert_allclose(alone, expected[:100], rtol=0.0, atol=REACH_ULPS * np.spacing(end))
+    # and bit for bit the time found among the others (each target's iteration stops at its own convergence: the
+    # play's force at many times at once is the force at each alone)
+    np.testing.assert_array_equal(alone, found[:100])
 
 
 def test_the_first_time_x_reaches_a_level_is_the_bisection_s():

@@ -69,9 +69,8 @@ def test_the_play_of_both_levels_is_the_closed_form_where_x_does_not_turn_back(s
     assert play.slip_onset_time() == pytest.approx(closed.slip_onset_time(), rel=1e-12)
 
 
-@pytest.mark.parametrize("name", ["reversal", pytest.param("zigzag", marks=pytest.mark.slow),
-                                  pytest.param("fretting", marks=pytest.mark.slow)])
-def test_the_discrete_springs_converge_to_it_at_first_order(name):
+@pytest.mark.parametrize("name", ["reversal", "zigzag", "fretting"])  # (about 2 s of CPU each since the play is
+def test_the_discrete_springs_converge_to_it_at_first_order(name):    # evaluated at every time at once; 20-30 s before)
     """Before, solve_rate_shifts refused a path whose x turns back."""
     path = PATHS[name]
     play = solve_rate_shifts(PAPER, path, LAW)
@@ -146,3 +145,35 @@ def test_simulate_s_continuum_logs_the_paper_s_slip_events_on_a_sliding_fretting
     assert rate_kinds == paper_kinds and len(rate_kinds) == 12, (rate_kinds, paper_kinds)  # (3 strokes, 3 turns)
     np.testing.assert_array_equal(rate_ways, paper_ways)
     np.testing.assert_allclose(rate_times, paper_times, rtol=EVENT_RTOL)
+
+
+#: The force at many times at once against each time alone: the same parts, the whole intervals summed by products of
+#: masks (BLAS) whatever the rows around them, so to rounding of the sums (measured below 1e-16 of the largest force).
+ALONE_RTOL = 1e-14
+#: A chunk of rows by candidate columns small enough that every run is laid out in several chunks (of several rows:
+#: 2^15 pairs against a few thousand candidates).
+SMALL_CHUNK = 1 << 15
+RE_CONTACT = me.Path(np.array([(0, 0), (0, D), (2e-4, -3e-4), (0, D), (-5e-4, 0.5 * D), (0, -3e-4)]), speed=PAPER.v)
+
+
+@pytest.mark.parametrize("name", ["fretting", "sliding fretting", "reversal", "re-contact"])
+def test_the_force_at_many_times_at_once_is_the_force_at_each_alone(name, monkeypatch):
+    """The play is evaluated at every time asked at once (each time's windows laid out as a row over the candidates,
+    in chunks of rows): a row reads nothing of another. Times at the candidates, at the edge's pieces' ends and
+    between them, in a shuffled order, at a stiff law (v_ref = 1 mm/s, n = 0.6: many steps) and the tests' own."""
+    from mdr_events.models.continuum import rate_play
+
+    path = {"sliding fretting": SLIDING_PATHS["fretting"], "re-contact": RE_CONTACT}.get(name, PATHS.get(name))
+    for law in (LAW, me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-3, 0.6)):
+        play = solve_rate_shifts(PAPER, path, law, method="LSODA")
+        rng = np.random.default_rng(11)
+        ends = np.array([view.t1 for view in play.views])
+        times = rng.permutation(np.concatenate([rng.choice(play._grid.times, 40), ends, rng.uniform(0.0, path.duration,
+                                                                                                 80)]))
+        monkeypatch.setattr(rate_play, "CHUNK_PAIRS", SMALL_CHUNK)
+        together = play._sides(times)
+        monkeypatch.undo()
+        alone = np.array([[part[0] for part in play._sides(np.array([time]))] for time in times]).T
+        scale = np.max(np.abs(alone[0]))
+        np.testing.assert_allclose(together[0], alone[0], rtol=0.0, atol=ALONE_RTOL * scale)
+        np.testing.assert_allclose(together[1:], alone[1:], rtol=0.0, atol=ALONE_RTOL * np.max(play._radius(times)))

@@ -82,7 +82,44 @@ def test_a_continuum_sweep_of_the_law_is_refused_before_it_runs():
 
 def test_coulomb_s_part_is_refused_saying_why_and_naming_what_runs_it():
     """Item 2 of issue 29 left as a refusal for Coulomb's part (each spring its own cap); before, the message said
-    neither why nor which method."""
-    coulomb = dataclasses.replace(RATE, friction=me.FrictionLaw("tau0+coulomb", tau0=PAPER.tau0, mu=0.3))
-    with pytest.raises(ValueError, match=r"Coulomb's part gives each spring its own cap.*method='discrete'"):
-        me.simulate(coulomb, me.Scenario("A", alpha=[20.0]), "continuum")
+    neither why nor which method, then it did not name the adhesion law it was refused with."""
+    for friction in (me.FrictionLaw("tau0+coulomb", tau0=PAPER.tau0, mu=0.3), me.FrictionLaw("coulomb", mu=0.3)):
+        coulomb = dataclasses.replace(RATE, friction=friction)
+        with pytest.raises(ValueError, match=r"Coulomb's part gives each spring its own cap.*method='discrete'") as raised:
+            me.simulate(coulomb, me.Scenario("A", alpha=[20.0]), "continuum")
+        # one line naming both laws (the field and its value), the method, what is allowed there and what runs them
+        text = str(raised.value)
+        assert "\n" not in text and text.startswith(f"friction=FrictionLaw({friction.law!r}"), text
+        assert f"adhesion={RATE.adhesion!r} in the continuum method" in text, text
+        assert "allowed: FrictionLaw('tau0') in the continuum, or method='discrete'" in text, text
+
+
+#: The least F_N against the edge's own pull-off (solve_edge's extremum of the same normal problem by the run's method,
+#: by its own scan): both refine the minimum between the edge's steps, to the bounded minimisation's tolerance
+#: (measured 2.5e-15).
+PULL_OFF_RTOL = 1e-12
+
+
+def test_simulate_at_several_speeds_gives_each_path_as_alone_and_a_faster_one_pulls_harder():
+    """Issue 29's "simulate at several speeds": scenario A at 20° at 0.1, 1 and 10 µm/s, one case per path in one call
+    (the time axis is the slowest path's, so each path alone is asked at the same times): every case is its path alone,
+    bit for bit; the least F_N is each path's pull-off by solve_edge and grows in magnitude with the speed, and the
+    smaller contact the faster edge reaches on the way in holds less tangential force."""
+    from mdr_events.models.continuum import solve_edge
+    from mdr_events.models.continuum.rate_run import RUN_METHOD
+
+    paths = {f"v = {speed:g} m/s": me.Path.scenario_A(20.0, PAPER.replace(v=speed)) for speed in (1e-7, 1e-6, 1e-5)}
+    together = me.simulate(RATE, me.Paths(paths), "continuum", samples=401)
+    times = together["time"].values
+    least = []
+    for index, (label, path) in enumerate(paths.items()):
+        alone = me.simulate(RATE, me.Paths({label: path}), "continuum", t=times).isel(case=0)
+        case = together.isel(case=index)
+        for name in ("normal_force", "tangential_force", "contact_radius", "normal_force_min", "tangential_force_max"):
+            np.testing.assert_array_equal(case[name].values, alone[name].values, err_msg=f"{label}: {name}")
+        least.append(float(case["normal_force_min"]))
+        pull_off = solve_edge(PAPER, path, LAW, method=RUN_METHOD).pull_off_force(path)
+        assert least[-1] == pytest.approx(pull_off, rel=PULL_OFF_RTOL)
+    assert least[0] > least[1] > least[2], least
+    largest = together["tangential_force_max"].values
+    assert largest[0] > largest[1] > largest[2], largest

@@ -114,7 +114,8 @@ class StepPolynomials:
         step = np.minimum(np.maximum(np.searchsorted(self.ts, 0.5 * (low + high), side=self.side) - 1, 0),
                           len(self.origins) - 1)
         t = 0.5 * (low + high)
-        for _ in range(REACH_STEPS):
+        settled = np.zeros(t.shape, dtype=bool)  # (each target stops where its own step is below the clock's spacing:
+        for _ in range(REACH_STEPS):            # the same time asked alone or among others)
             value, slope = self._value_and_slope(t, step)
             above = value >= goal
             high, low = np.where(above, t, high), np.where(above, low, t)
@@ -122,9 +123,10 @@ class StepPolynomials:
                 newton = t - (value - goal) / slope
             inside = (newton > low) & (newton < high)
             moved = np.where(inside, newton, 0.5 * (low + high))
-            if np.all(np.abs(moved - t) <= np.spacing(np.abs(t))):
+            settled |= np.abs(moved - t) <= np.spacing(np.abs(t))
+            if np.all(settled):
                 break
-            t = moved
+            t = np.where(settled, t, moved)
         for _ in range(REACH_NUDGES):  # (converged from below: the next doubles up reach the value)
             short = self._value_and_slope(t, step)[0] < goal
             if not np.any(short):

@@ -439,7 +439,7 @@ def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.n
     return force, sliding
 
 
-def check_rate_friction(friction: FrictionLaw) -> None:
+def check_rate_friction(friction: FrictionLaw, law: RateDependentAdhesion | None = None) -> None:
     """Refuse a friction law the springs on the rate-dependent edge do not follow: only ``"tau0"`` (one cap ``K a``
     for every spring); the laws with Coulomb's part run in the discrete method.
 
@@ -447,22 +447,25 @@ def check_rate_friction(friction: FrictionLaw) -> None:
     ----------
     friction : FrictionLaw
         The friction law.
+    law : RateDependentAdhesion or None, optional
+        The adhesion law, named in the refusal.
 
     Raises
     ------
     TypeError
         Not a :class:`~mdr_events.contact.friction.FrictionLaw`.
     ValueError
-        Another law than ``"tau0"``.
+        Another law than ``"tau0"``, in one line naming both laws, the method and the one that runs them.
     """
     if not isinstance(friction, FrictionLaw):
         raise TypeError(f"friction={shown(friction)} ({type(friction).__name__}) is not allowed; allowed: a "
                         "FrictionLaw('tau0') or None")
     if friction.law != "tau0":
-        raise ValueError(f"friction={friction!r} is not allowed with a rate-dependent law in the continuum (Coulomb's "
-                         "part gives each spring its own cap, growing with its compression, where the continuum's "
-                         "closed-form play holds one cap K a for every spring); allowed: FrictionLaw('tau0'), or "
-                         "method='discrete', which runs every friction law under it")
+        named = "a rate-dependent adhesion law" if law is None else f"adhesion={law!r}"
+        raise ValueError(f"friction={friction!r} is not allowed with {named} in the continuum method (Coulomb's part "
+                         "gives each spring its own cap, growing with its compression, where the continuum's "
+                         "closed-form play holds one cap K a for every spring); allowed: FrictionLaw('tau0') in the "
+                         "continuum, or method='discrete', which runs every friction law under this adhesion law")
 
 
 def path_way(path: Path) -> tuple[float, int | None]:
@@ -531,7 +534,7 @@ def solve_rate_shifts(params: Parameters, path: Path, law: RateDependentAdhesion
     sign, turn = path_way(path)
     tau0 = params.tau0
     if friction is not None:
-        check_rate_friction(friction)
+        check_rate_friction(friction, law)
         tau0 = params.tau0 if friction.tau0 is None else friction.tau0
     edge = solve_edge(params, path, law, profile=profile, rtol=rtol, method=method)
     cap = power_law.cap_per_radius(params.replace(tau0=tau0))
