@@ -45,16 +45,9 @@ def test_three_speeds_give_v_ref_and_n_within_their_intervals():
     assert result.attrs["status"] > 0
 
 
-#: Issue 29's target for a 3-speed joint fit of 4 parameters (s); CPU time, the machine may be shared (measured 2.9-3.4 s
-#: under a load of 8 on 2 cores, 5.4 s before the edge's own loop).
-FIT_CPU_TARGET = 5.0
-
-
-def test_three_speeds_give_all_four_values_of_the_law_within_their_intervals_in_under_five_seconds():
+def test_three_speeds_give_all_four_values_of_the_law_within_their_intervals():
     """v_ref, n, dgamma0 and dgamma1 free from a start 20-200 % off, the curves without offsets: each within its 95 %
-    interval, and the fit within issue 29's time."""
-    import time
-
+    interval (issue 29's time for this fit, 5 s, is measured by benchmarks/bench_rate_adhesion.py)."""
     rng_free = np.random.default_rng(11)
     measured = []
     for speed in (1e-7, 1e-6, 1e-5):
@@ -63,14 +56,11 @@ def test_three_speeds_give_all_four_values_of_the_law_within_their_intervals_in_
         force = solve_edge(PAPER, path, TRUE).normal_force(times, path)
         measured.append(RateMeasurement(path, times, force + rng_free.normal(0.0, NOISE, times.size), NOISE))
     start = me.RateDependentAdhesion(1.2 * PAPER.dgamma0, 0.8 * PAPER.dgamma1, 3e-6, 0.8)
-    began = time.process_time()
     result = fit_rate_adhesion(measured, PAPER, start, free=("v_ref", "n", "dgamma0", "dgamma1"))
-    spent = time.process_time() - began
     for name in ("v_ref", "n", "dgamma0", "dgamma1"):
         truth = getattr(TRUE, name)
         assert float(result["interval_lower"].sel(parameter=name)) <= truth <= float(
             result["interval_upper"].sel(parameter=name)), (name, float(result["estimate"].sel(parameter=name)))
-    assert spent < FIT_CPU_TARGET, spent
 
 
 @pytest.mark.parametrize("call, words", [
