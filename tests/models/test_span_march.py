@@ -95,3 +95,17 @@ def test_the_march_takes_solve_ivps_steps_and_roots_bit_for_bit(case, monkeypatc
     for name, values in evaluate(marched, times).items():
         np.testing.assert_array_equal(values, evaluate(reference, times)[name], err_msg=name)
     assert math.isfinite(marched.end_time) and marched.end_time == reference.end_time
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_the_same_run_solved_or_evaluated_again_is_bit_identical(case, monkeypatch):
+    """Same input, same output, whatever was computed before: a solution evaluated a second time, and the same path
+    solved a second time, give the first values bit for bit (a layer's radius once started Newton from the last roots
+    found, and evaluating a solution twice moved F_N by an ulp on an Intel CPU)."""
+    first = _solved(case, monkeypatch, None)
+    times = np.linspace(0.0, first.end_time, 1001)
+    values = evaluate(first, times)
+    again, resolved = evaluate(first, times), evaluate(_solved(case, monkeypatch, None), times)
+    for name in values:
+        np.testing.assert_array_equal(again[name], values[name], err_msg=name)
+        np.testing.assert_array_equal(resolved[name], values[name], err_msg=name)

@@ -34,8 +34,13 @@ __all__ = ["LayerBranch", "ROOT_ITERATIONS", "RADII_RTOL"]
 ROOT_ITERATIONS = 200
 #: How many radii's depth and slope a branch remembers (:attr:`LayerBranch._values`).
 VALUE_CACHE = 64
-#: How many roots a branch remembers to start the next one from (:meth:`LayerBranch.radius`).
-RECENT_ROOTS = 4
+#: Points per decade of the scan whose chord starts Newton's iteration for a radius (:meth:`LayerBranch.radius`):
+#: neighbours 10^(1/16) apart put the start within ~1e-4 of the root, three of Newton's steps from 1e-14. The start is a
+#: function of the depth alone, so that a radius never depends on the roots asked before it (a start from the last
+#: roots found made the same solution evaluated twice differ by an ulp, on some CPUs).
+START_SCAN_PER_DECADE = 16
+#: The start scan's lowest radius without adhesion, in layer thicknesses (the branch starts at ``a = 0`` there).
+START_SCAN_FLOOR = 1e-6
 #: Points per decade of the scan that brackets the jump-off (where ``∂d/∂a`` turns positive; Brent's method refines).
 _SCAN_PER_DECADE = 5
 
@@ -82,14 +87,12 @@ class LayerBranch(Branch):
         self.ceiling = LAMBDA_MAX * layer.thickness
         #: the tables' series meets their splines at ``a/h = LAMBDA_MIN``: the slope's derivative jumps there
         self.knots = (LAMBDA_MIN * layer.thickness,)
-        #: the last roots found, ``(depth, radius)``: the start of the next one is the nearest's (the continuum asks
-        #: for the radius of the span's depth and for those of the fronts' anchors in turn)
-        self._recent: list[tuple[float, float]] = []
         #: the depth and slope of a radius, remembered: a right-hand side asks for both at one radius
         self._values = functools.lru_cache(maxsize=VALUE_CACHE)(self._evaluate)
         self.jump_off_radius = _jump_off_radius(self) if work > 0.0 else 0.0
         self.jump_off_depth = self.depth(self.jump_off_radius)
         self._floor = self.jump_off_radius
+        self._start_scan: tuple[np.ndarray, np.ndarray] | None = None  # (radii, depths: made when first asked)
 
     # --- the branch at one radius ----------------------------------------------------------------------------
     def _evaluate(self, a: float) -> tuple[float, float]:
@@ -186,20 +189,20 @@ class LayerBranch(Branch):
 
     # --- radius of a depth -----------------------------------------------------------------------------------
     def _start(self, depth: float) -> float:
-        """Newton's start for ``depth``: the radius of the nearest depth among the recent roots (none: twice the
-        largest of the floor and 1e-3 h)."""
-        best, start = math.inf, max(self._floor, 1e-3 * self.layer.thickness) * 2.0
-        for known, radius in self._recent:
-            if abs(known - depth) < best:
-                best, start = abs(known - depth), radius
-        return start
-
-    def _found(self, depth: float, radius: float) -> float:
-        """``radius``, remembered as the root of ``depth`` (the last :data:`RECENT_ROOTS` are kept)."""
-        self._recent.append((depth, radius))
-        if len(self._recent) > RECENT_ROOTS:
-            del self._recent[0]
-        return radius
+        """Newton's start for ``depth``: the chord of the two scanned radii about it (:data:`START_SCAN_PER_DECADE`,
+        from the jump-off, or :data:`START_SCAN_FLOOR` ``h`` without adhesion, to the tables' ceiling), the scan's
+        first or last radius outside it. A function of ``depth`` alone."""
+        if self._start_scan is None:
+            lowest = self.jump_off_radius if self.jump_off_radius > 0.0 else START_SCAN_FLOOR * self.h
+            points = max(int(math.ceil(START_SCAN_PER_DECADE * math.log10(self.ceiling / lowest))), 1) + 1
+            radii = np.geomspace(lowest, self.ceiling, points)
+            self._start_scan = (radii, self._arrays(radii)[0])
+        radii, depths = self._start_scan
+        index = int(np.searchsorted(depths, depth))
+        if index == 0 or index == radii.size:
+            return float(radii[min(index, radii.size - 1)])
+        share = (depth - depths[index - 1]) / (depths[index] - depths[index - 1])
+        return float(radii[index - 1] + share * (radii[index] - radii[index - 1]))
 
     def radius(self, depth: float, rtol: float) -> float:
         """Stable-branch radius at ``depth``, converged to ``rtol`` (``nan`` below the jump-off depth; within
@@ -239,7 +242,7 @@ class LayerBranch(Branch):
             step = (value - depth) / slope if slope > 0.0 else math.inf
             guess = a - step
             if abs(step) <= rtol * a:  # (Newton's step within the tolerance: converged, wherever the bracket is)
-                return self._found(depth, guess)
+                return guess
             if not lower < guess < min(upper, self.ceiling):  # (outside the bracket: bisect it, or double it)
                 if upper == math.inf and a >= self.ceiling:
                     raise ValueError(f"depth={depth!r} m is not allowed on {self.layer.describe()} in the continuum "
@@ -250,7 +253,7 @@ class LayerBranch(Branch):
                 else:
                     guess = min(2.0 * a, self.ceiling)
             if abs(guess - a) <= rtol * a or (upper < math.inf and upper - lower <= rtol * upper):
-                return self._found(depth, guess)
+                return guess
             a = guess
         raise RuntimeError(f"the radius of depth={depth!r} m on {self.layer.describe()} did not converge")
 
