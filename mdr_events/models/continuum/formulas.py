@@ -438,8 +438,11 @@ class Formula:
 
     def _branch_inverse(self, level: float) -> float | None:
         """The ``ξ`` of ``level`` where the formula is one branch's depth, ``x0 + α (g − d_ref)`` or
-        ``x0 + β (d0 − d_ref)``: that branch's radius of a depth (its closed form or safeguarded root); else
-        ``None``."""
+        ``x0 + β (d0 − d_ref)``: that branch's radius of a depth (its closed form or safeguarded root); or where it is a
+        radius alone, ``x0 + γ A(g)`` (:meth:`_radius_inverse`); else ``None``."""
+        if self.gamma and not (self.alpha or self.beta):
+            xi = self._radius_inverse(level)
+            return xi if xi == xi else None
         if self.gamma or (self.alpha and self.beta):
             return None
         branch, ratio = (self.shape.hertz, self.alpha) if self.alpha else (self.shape.grow, self.beta)
@@ -482,11 +485,24 @@ class Formula:
 
     def _branch_inverses(self, levels: np.ndarray) -> np.ndarray | None:
         """:meth:`_branch_inverse` of an array of levels: the branch's radii of the depths at once (``nan`` where
-        none); ``None`` for a formula that is not one branch's depth."""
+        none); ``None`` for a formula that is neither one branch's depth nor a radius alone."""
+        if self.gamma and not (self.alpha or self.beta):
+            return self._radius_inverse(levels)
         if self.gamma or (self.alpha and self.beta) or not (self.alpha or self.beta):
             return None
         branch, ratio = (self.shape.hertz, self.alpha) if self.alpha else (self.shape.grow, self.beta)
         return np.asarray(branch.radii(self.d_ref + (levels - self.x0) / ratio), dtype=float)
+
+    def _radius_inverse(self, level):
+        """The ``ξ`` of ``level`` (a float or an array) where the formula is a radius alone, ``x0 + γ A(g(ξ))``: the
+        radius ``A = (level − x0)/γ``, its depth on its branch, eq. (9), and the ``ξ`` of that depth on ``g``, each a
+        closed form (or the profile's own inverse) where the regula falsi took a root of (9) at each of its steps
+        (``nan``: a radius below the branch's fold, which no ``ξ`` holds)."""
+        branch, radius = self.shape.branches[self.radius_of], (level - self.x0) / self.gamma
+        if np.ndim(level) == 0:
+            return self.shape.boundary(branch.depth(radius)) if radius >= branch.jump_off_radius else math.nan
+        radius = np.asarray(radius, dtype=float)
+        return np.where(radius >= branch.jump_off_radius, self.shape.boundaries(branch.depths(radius)), np.nan)
 
     def _illinois(self, sign: float, targets: np.ndarray, lower: float, upper: float, at_lower: float,
                   at_upper: float) -> np.ndarray:

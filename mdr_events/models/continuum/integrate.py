@@ -1,5 +1,6 @@
 """Integrate one span: an event met at its start, a force constant or linear in time, or ``solve_ivp``'s loop (DOP853,
-dense output; :mod:`.span_march`) with the span's events, restarted at the knots of its right-hand side, in the
+dense output; :mod:`.span_march`) or a quadrature by panels where the right-hand side and the events read the variable
+alone (:mod:`.span_panels`), with the span's events, restarted at the knots of its right-hand side, in the
 variable graded towards a singular end where the integrator gives one (:mod:`.graded`); which events fired, and where.
 
 The span's right-hand side and events are its integrator's (:class:`~.span.SpanIntegrator`, or
@@ -17,6 +18,7 @@ from .graded import SpanProblem, graded_problem
 from .model import ContinuumModel
 from .span import EventFunction, Span, SpanIntegrator, SpanOutcome, Variable
 from .span_march import Marched, march
+from .span_panels import panels
 from .state import Cap, Regime
 from .tolerances import MIN_STEPS_PER_SPAN, SIMULTANEOUS_SHARE, Tolerances
 
@@ -123,8 +125,13 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
     else:  # (the variable u of :mod:`.graded`, from 1 to 0)
         problem = graded_problem(integrator, grading, events, MIN_STEPS_PER_SPAN)
     tolerances = model.tolerances
-    solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, problem.events,
-                                   tolerances, problem.max_step)
+    if integrator.quadrature:  # (a right-hand side and events of the variable alone: a quadrature by panels)
+        pieces = list(zip([problem.start, *problem.knots], [*problem.knots, problem.stop]))
+        solution = panels(problem.rhs, pieces, force, problem.events, tolerances.rtol, tolerances.atol,
+                          problem.max_step)
+    else:
+        solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, problem.events,
+                                       tolerances, problem.max_step)
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol

@@ -65,6 +65,10 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         Whether springs slide at each cap in each region (keys ``(Region, Cap)``; missing: not).
     """
 
+    #: the force is a quadrature (:func:`~.span_panels.panels`): the right-hand side and the events read the span's
+    #: variable alone
+    quadrature = True
+
     def __init__(self, model: ContinuumModel, anchors: SplitAnchorMap, span: Span, sliding: dict):
         super().__init__(model, anchors, span, sliding)
 
