@@ -23,6 +23,7 @@ from __future__ import annotations
 import math
 from typing import Callable, NamedTuple
 
+import mpmath
 import numpy as np
 from scipy.integrate import OdeSolution
 from scipy.integrate._ivp.rk import Dop853DenseOutput
@@ -45,22 +46,31 @@ LEAST_PANEL_ULPS = 10.0
 
 def _rows() -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """The nodes and weights on ``[0, 1]``, the matrix from the readings at the nodes to the rows ``F`` of
-    ``Dop853DenseOutput`` (per unit ``h``), and the interpolant's weights at ``x = 1``."""
+    ``Dop853DenseOutput`` (per unit ``h``), and the interpolant's weights at ``x = 1``: the matrices worked out in 40
+    digits (``mpmath``) from the nodes as they are in double precision, then rounded."""
     points, weights = np.polynomial.legendre.leggauss(NODES)
     nodes, weights = 0.5 * (points + 1.0), 0.5 * weights
-    # the Lagrange basis of the nodes, integrated from 0, and the nested basis of Dop853DenseOutput, both read at
-    # NODES points of (0, 1]: F = basis⁻¹ · integrals (the force less its start, per unit h)
-    probe = 0.5 * (1.0 - np.cos(np.pi * np.arange(1, NODES + 1) / NODES))
-    lagrange = [np.polynomial.Polynomial.fit(nodes, np.eye(NODES)[i], NODES - 1, domain=[0, 1], window=[0, 1])
-                for i in range(NODES)]
-    integrals = np.array([[basis.integ()(x) for basis in lagrange] for x in probe])
-    nested = np.empty((NODES, NODES))
-    for j in range(NODES):
-        unit = np.zeros((NODES, 1))
-        unit[j, 0] = 1.0
-        nested[:, j] = Dop853DenseOutput(0.0, 1.0, np.zeros(1), unit)(probe)[0]
-    at_end = np.array([basis(1.0) for basis in lagrange])
-    return nodes, weights, np.linalg.solve(nested, integrals), at_end
+    with mpmath.workdps(40):
+        x = [mpmath.mpf(float(v)) for v in nodes]
+        # the Lagrange basis of the nodes in powers of x (a column each), integrated from 0 and read at NODES points
+        # of (0, 1]; the nested basis of Dop853DenseOutput, x (1 − x) x (1 − x) …, read there too
+        lagrange = mpmath.inverse(mpmath.matrix([[v**k for k in range(NODES)] for v in x]))
+        probe = [mpmath.mpf(k) / NODES for k in range(1, NODES + 1)]
+        integrals = mpmath.matrix([[sum(lagrange[k, i] * p ** (k + 1) / (k + 1) for k in range(NODES))
+                                    for i in range(NODES)] for p in probe])
+        nested = mpmath.matrix([[_nested(p, j) for j in range(NODES)] for p in probe])
+        rows = mpmath.inverse(nested) * integrals
+        at_end = [sum(lagrange[k, i] for k in range(NODES)) for i in range(NODES)]
+        return (nodes, weights, np.array(rows.tolist(), dtype=float), np.array([float(v) for v in at_end]))
+
+
+def _nested(x, j: int):
+    """The ``j``-th function of ``Dop853DenseOutput``'s nested products at ``x``: ``x``, ``x (1 − x)``,
+    ``x² (1 − x)``, … (the row ``F[j]`` is its coefficient)."""
+    value = 1
+    for i in range(j + 1):
+        value *= x if i % 2 == 0 else 1 - x
+    return value
 
 
 _NODES, _WEIGHTS, _ROWS, _AT_END = _rows()
