@@ -282,7 +282,7 @@ class Formula:
 
     def slopes(self, xi: np.ndarray) -> np.ndarray:
         """:meth:`slope` at an array of ``ξ > 0``, the radii ``A(g(ξ))`` found at once (the branches' vectorised
-        roots, to double precision as the scalar ones), the branches' slopes point by point.
+        roots, to double precision as the scalar ones), the branches' slopes too (:meth:`~.branch.Branch.slopes`).
 
         Parameters
         ----------
@@ -297,14 +297,14 @@ class Formula:
         shape = self.shape
         total = np.zeros(len(xi))
         if self.alpha or self.gamma:
-            rate = np.array([shape.hertz.slope(float(v)) for v in xi])
+            rate = shape.hertz.slopes(xi)
             total += self.alpha * rate if self.alpha else 0.0
         if self.beta:
-            total += self.beta * np.array([shape.grow.slope(float(v)) for v in xi])
+            total += self.beta * shape.grow.slopes(xi)
         if self.gamma:
             branch = shape.branches[self.radius_of]
             radii = branch.radii(shape.hertz.depths(xi))
-            total += self.gamma * rate / np.array([branch.slope(float(r)) for r in radii])
+            total += self.gamma * rate / branch.slopes(radii)
         return total
 
     def integral(self, lower: float, upper: float) -> float:
