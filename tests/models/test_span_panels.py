@@ -85,7 +85,7 @@ def test_an_event_ends_the_panels_at_its_root_read_before_it_alone():
     """A level crossing at v = 2.5 ends the integration there (the first of two events; the other falls and is not
     watched rising), the force at the root as the closed form. The rate jumps to 1e3 beyond the root (the zones
     change there, the rate need not continue smoothly): the panel in which the event fired is integrated again up to
-    the root, so no reading beyond it enters the force (with the panel kept, the force was 2e-4 off)."""
+    the root, so no reading beyond it enters the force (with the panel kept, the force at the root was 0.12 off)."""
     root = 2.5
     rhs = _rate(lambda v: math.cos(v) if v <= root else 1e3)
     events = [_event(lambda v: 1.0 - v, 1.0), _event(lambda v: v - root, 1.0)]

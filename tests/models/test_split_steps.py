@@ -13,6 +13,9 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import EventKind, Tolerances, evaluate, solve_path, tangential_work
 from mdr_events.models.continuum.graded import Grading, grading_power
+from mdr_events.models.continuum.integrate import fired_events
+from mdr_events.models.continuum.span import EventFunction, Trigger
+from mdr_events.models.continuum.state import Cap
 from mdr_events.models.continuum.solution import extremum
 from mdr_events.models.continuum.formulas import ROOT_XTOL, Formula
 from mdr_events.models.continuum.model import ContinuumModel
@@ -142,3 +145,19 @@ def test_a_grading_maps_back_and_forth(reach):
     step = 1e-6
     numeric = (grading.natural(u[1:-1] + step) - grading.natural(u[1:-1] - step)) / (2 * step)
     np.testing.assert_allclose(grading.rate(u[1:-1]), numeric, rtol=1e-8)
+
+
+def test_events_of_a_graded_span_fire_together_where_their_times_coincide():
+    """Two falling events whose roots in ``u`` (a span graded towards its stop, ``v = 1 + 1e-3 u²``) are 1e-9 of ``u``
+    apart, and so 2e-18 of the time apart: one instant, both fire (compared in ``u`` only the first did: review R4).
+    Roots 1e-9 of the time apart stay apart."""
+    grading = Grading(1.0, 1e-3, 2)
+    events = [EventFunction(Trigger.ZONE_REACHES, Cap.POSITIVE, lambda u: -1.0, -1.0),
+              EventFunction(Trigger.ZONE_REACHES, Cap.NEGATIVE, lambda u: -1.0, -1.0)]
+    u = 1e-3
+    roots = [[u], [u * (1.0 + 1e-9)]]
+    first, fired = fired_events(events, roots, 1.0, 0.0, grading.natural)
+    assert first == roots[1][0] and fired == {events[0].key, events[1].key}  # (u runs from 1 down: the larger first)
+    apart = grading.graded(grading.natural(u) * (1.0 + 1e-9))  # (1e-9 of the time apart)
+    first, fired = fired_events(events, [[u], [apart]], 1.0, 0.0, grading.natural)
+    assert first == apart and fired == {events[1].key}
