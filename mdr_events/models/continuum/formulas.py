@@ -583,7 +583,7 @@ def warm_root(formula: Formula, level: float, bracket: tuple[float, float], abov
         slope = formula.slope(xi)
         step = excess / slope if slope else math.inf
         following = xi - step
-        if not low < following < high:
+        if not low <= following <= high:  # (a step of zero from an iterate the bracket just closed on is inside)
             following = 0.5 * (low + high)
         if abs(following - xi) <= max(tolerance + 4 * EPS * abs(following), NEWTON_SETTLED * abs(xi)):
             return following
