@@ -68,6 +68,8 @@ class Shape:
         self.branches = {"grow": grow, "shrink": shrink}
         #: the turns of each kind of formula, by its coefficients (:meth:`Formula.turns`)
         self.turn_cache: dict[tuple, tuple[float, ...]] = {}
+        #: the grid the turns are bracketed on and the slopes there, by the radius's branch (:meth:`turn_grid`)
+        self.turn_grids: dict[str | None, tuple] = {}
 
     def boundary(self, depth: float) -> float:
         """The compression boundary ``x_c`` of a depth, ``g(x_c) = d`` (0 at ``d <= 0``: every spring in tension).
@@ -116,6 +118,31 @@ class Shape:
             The radius (m; ``nan`` below the branch's fold).
         """
         return self.branches[name].radius(depth, self.rtol)
+
+    def turn_grid(self, name: str | None) -> tuple[np.ndarray, tuple]:
+        """The grid of :data:`TURN_GRID` points (and the knots of ``g``) up to :meth:`limit` on which a formula's turns
+        are bracketed, with the slopes its own are a sum of there: of ``g``, of ``d0``, and of the branch ``name`` at
+        ``A(g)`` (``None``: no radius); worked out once per branch, shared by every formula (the radii's roots were
+        the cost of each).
+
+        Parameters
+        ----------
+        name : str or None
+            The branch of the formula's ``A`` (``"grow"``, ``"shrink"``; ``None``: none).
+
+        Returns
+        -------
+        tuple
+            The grid (m) and the slopes ``(g', d0', d_A'(A(g)))`` there (the last ``None`` without a branch).
+        """
+        if name not in self.turn_grids:
+            reach = self.limit(name)
+            grid = reach * np.geomspace(1e-9, 1.0, TURN_GRID)
+            grid = np.union1d(grid, [k for k in self.knots() if 0.0 < k < reach])
+            branch = self.branches.get(name)
+            radius = branch.slopes(branch.radii(self.hertz.depths(grid))) if branch is not None else None
+            self.turn_grids[name] = (grid, (self.hertz.slopes(grid), self.grow.slopes(grid), radius))
+        return self.turn_grids[name]
 
     def knots(self) -> tuple[float, ...]:
         """Where ``g`` is not smooth (a table's grid; none for a power law).
@@ -295,16 +322,26 @@ class Formula:
             ``dY/dξ`` at each (1).
         """
         shape = self.shape
-        total = np.zeros(len(xi))
-        if self.alpha or self.gamma:
-            rate = shape.hertz.slopes(xi)
-            total += self.alpha * rate if self.alpha else 0.0
-        if self.beta:
-            total += self.beta * shape.grow.slopes(xi)
+        if self.constant:
+            return np.zeros(len(xi))
+        rate = shape.hertz.slopes(xi) if (self.alpha or self.gamma) else None
+        grow = shape.grow.slopes(xi) if self.beta else None
         if self.gamma:
             branch = shape.branches[self.radius_of]
-            radii = branch.radii(shape.hertz.depths(xi))
-            total += self.gamma * rate / branch.slopes(radii)
+            return self._slopes_of(rate, grow, branch.slopes(branch.radii(shape.hertz.depths(xi))))
+        return self._slopes_of(rate, grow, None)
+
+    def _slopes_of(self, rate: np.ndarray | None, grow: np.ndarray | None,
+                   radius: np.ndarray | None) -> np.ndarray:
+        """:meth:`slopes` from the slopes of ``g``, ``d0`` and the radius's branch at ``A(g)`` at the points (each
+        ``None`` where the formula has no such term; :meth:`Shape.turn_grid` keeps them for every formula)."""
+        total = np.zeros(len(rate if rate is not None else grow))
+        if self.alpha or self.gamma:
+            total += self.alpha * rate if self.alpha else 0.0
+        if self.beta:
+            total += self.beta * grow
+        if self.gamma:
+            total += self.gamma * rate / radius
         return total
 
     def integral(self, lower: float, upper: float) -> float:
@@ -359,10 +396,8 @@ class Formula:
         return cached
 
     def _find_turns(self) -> tuple[float, ...]:
-        reach = self.shape.limit(self.radius_of)
-        grid = reach * np.geomspace(1e-9, 1.0, TURN_GRID)
-        grid = np.union1d(grid, [k for k in self.shape.knots() if 0.0 < k < reach])
-        slopes = self.slopes(grid).tolist()  # (the sign changes bracket the turns; each is refined by the scalar slope)
+        grid, slopes = self.shape.turn_grid(self.radius_of)
+        slopes = self._slopes_of(*slopes).tolist()  # (the sign changes bracket the turns; each refined by the slope)
         found = []
         for low, high, s_low, s_high in zip(grid[:-1], grid[1:], slopes[:-1], slopes[1:]):
             if s_low == 0.0:

@@ -136,9 +136,13 @@ class Part:
         Returns
         -------
         float
-            The anchor as the cap sees it (m).
+            The anchor as the cap sees it (m; remembered: a layout reads its ends' values more than once, and a value
+            of ``A(g)`` is a root).
         """
-        return self.formula.value(xi)
+        values = self.memo.setdefault("values", {})
+        if xi not in values:
+            values[xi] = self.formula.value(xi)
+        return values[xi]
 
     def rises_towards(self, cap: Cap) -> bool:
         """Whether ``σ Y`` increases with ``ξ`` over the part (its slip zone is then at its start).
@@ -155,7 +159,15 @@ class Part:
         """
         if self.formula.constant:
             return True
-        return float(cap) * (self.formula.value(self.high) - self.formula.value(self.low)) > 0.0
+        low, high = self._ends()
+        return float(cap) * (high - low) > 0.0
+
+    def _ends(self) -> tuple[float, float]:
+        """The formula's values at ``low`` and ``high``, remembered."""
+        memo = self.memo
+        if "ends" not in memo:
+            memo["ends"] = (self.formula.value(self.low), self.formula.value(self.high))
+        return memo["ends"]
 
     def inverse(self, level: float) -> float:
         """Where the seen anchors equal ``level``, continued over the monotone interval (clamped at its ends).
@@ -171,9 +183,7 @@ class Part:
             ``ξ`` (m).
         """
         memo = self.memo
-        if "ends" not in memo:
-            memo["ends"] = (self.formula.value(self.low), self.formula.value(self.high))
-        memo["root"] = root = self.formula.inverse(level, self.low, self.high, memo.get("root"), memo["ends"])
+        memo["root"] = root = self.formula.inverse(level, self.low, self.high, memo.get("root"), self._ends())
         return root
 
 
