@@ -105,6 +105,14 @@ def test_an_event_at_the_start_ends_the_integration_at_once():
     assert solved.y == 0.7
 
 
+def test_a_rate_that_is_not_finite_fails_instead_of_looping():
+    """A reading of ``nan`` past v = 0.5 (a state lost) shrinks the panels there until they are too short: status
+    -1, as DOP853 fails, not a panel grown for ever (the error of ``nan`` is no number to scale a length by)."""
+    solved = panels(_rate(lambda v: math.cos(v) if v < 0.5 else math.nan), [(0.0, 1.0)], 0.0, [], RTOL, ATOL,
+                    math.inf)
+    assert solved.status == -1 and solved.sol is None and "too short" in solved.message
+
+
 def test_a_panel_never_exceeds_the_longest_step():
     solved = panels(_rate(math.cos), [(0.0, 1.0)], 0.0, [], RTOL, ATOL, 1.0 / 8)
     assert np.max(np.abs(np.diff(solved.sol.ts))) <= 1.0 / 8 and len(solved.sol.ts) == 9

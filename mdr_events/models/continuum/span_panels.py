@@ -128,6 +128,8 @@ def _accepted(rhs: Callable, low: float, high: float, length: float, force: floa
         end_force = force + float(rows[0, 0])
         ratio = error / (atol + rtol * max(abs(force), abs(end_force)))
         factor = min(MOST_FACTOR, SAFETY * ratio ** (-1.0 / (NODES + 1))) if ratio > 0.0 else MOST_FACTOR
+        if not math.isfinite(ratio):  # (a reading that is not finite: shrink until the panel is too short)
+            factor = LEAST_FACTOR
         if ratio <= 1.0:
             end = high if last else low + h
             return _Panel(end, Dop853DenseOutput(low, end, np.array([force]), rows), end_force, abs(h) * factor)
