@@ -122,7 +122,7 @@ class Part:
     end: float
     low: float
     high: float
-    #: what :meth:`inverse` keeps between calls: the formula's values at ``low``, ``high`` and the last root
+    #: what :meth:`inverse` keeps between calls: the formula's values at ``low``, ``high``, the last two roots and levels
     memo: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
 
     def value(self, xi: float) -> float:
@@ -183,7 +183,15 @@ class Part:
             ``ξ`` (m).
         """
         memo = self.memo
-        memo["root"] = root = self.formula.inverse(level, self.low, self.high, memo.get("root"), self._ends())
+        guess, last = memo.get("root"), memo.get("last")
+        if last is not None and last[0] != memo["level"]:  # (the secant through the last two roots, extended)
+            extended = guess + (guess - last[1]) * (level - memo["level"]) / (memo["level"] - last[0])
+            if self.low < extended < self.high:
+                guess = extended
+        root = self.formula.inverse(level, self.low, self.high, guess, self._ends())
+        if "root" in memo:
+            memo["last"] = (memo["level"], memo["root"])
+        memo["root"], memo["level"] = root, level
         return root
 
 
