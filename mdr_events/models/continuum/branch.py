@@ -47,6 +47,8 @@ class Branch:
     #: the power ``n`` of the profile at its tip, ``g ∝ ξⁿ`` (the paraboloid's 2; ``None``: not a power there):
     #: ``g⁻¹(d) ∝ d^(1/n)`` near the surface (:mod:`.graded`)
     tip_power: float | None = 2.0
+    #: the NumPy form of ``dd/da`` (:meth:`slopes`; ``None``: a branch without one, read point by point)
+    _slopes = None
 
     def __init__(self, params: Parameters, work: float):
         self.params = params
@@ -54,6 +56,7 @@ class Branch:
         self._arguments = (params.R, params.E_star, work)
         self._depth = symbolic.relation("jkr_depth").scalar
         self._slope = symbolic.relation("jkr_depth_slope").scalar
+        self._slopes = symbolic.relation("jkr_depth_slope").numeric
         self._integral = symbolic.relation("jkr_depth_integral").scalar
         self._coefficients = symbolic.relation("jkr_radius_quartic").scalar_coefficients
         self._array_coefficients = symbolic.relation("jkr_radius_quartic").coefficients
@@ -110,6 +113,29 @@ class Branch:
         if a > 0:
             return self._slope(a, *self._arguments)
         return 0.0 if self.work == 0.0 else -math.inf
+
+    def slopes(self, a: np.ndarray) -> np.ndarray:
+        """:meth:`slope` of an array of radii: the relation's NumPy form at once where the branch has one (eq. (9)'s, a
+        power law's), each radius ``<= 0`` (or ``nan``) and any other branch point by point.
+
+        Parameters
+        ----------
+        a : numpy.ndarray
+            The contact radii (m), 1-D.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``dd/da`` at each (1).
+        """
+        a = np.asarray(a, dtype=float)
+        if self._slopes is None:
+            return np.array([self.slope(float(v)) for v in a])
+        inside = a > 0
+        out = np.asarray(self._slopes(np.where(inside, a, 1.0), *self._arguments), dtype=float) * np.ones(a.shape)
+        for index in np.flatnonzero(~inside):
+            out[index] = self.slope(float(a[index]))
+        return out
 
     def integral(self, a: float) -> float:
         """``∫_0^a d(ξ) dξ`` along this branch.
@@ -232,6 +258,7 @@ class PowerLawBranch(Branch):
         self._arguments = (profile.c, profile.n, params.E_star, work)
         self._depth = symbolic.relation("power_law_depth").scalar
         self._slope = symbolic.relation("power_law_depth_slope").scalar
+        self._slopes = symbolic.relation("power_law_depth_slope").numeric
         self._integral = symbolic.relation("power_law_depth_integral").scalar
         point = power_law.jump_off(profile, params, work)
         self.jump_off_radius, self.jump_off_depth = point["contact_radius"], point["depth"]

@@ -68,6 +68,8 @@ class Shape:
         self.branches = {"grow": grow, "shrink": shrink}
         #: the turns of each kind of formula, by its coefficients (:meth:`Formula.turns`)
         self.turn_cache: dict[tuple, tuple[float, ...]] = {}
+        #: the grid the turns are bracketed on and the slopes there, by the radius's branch (:meth:`turn_grid`)
+        self.turn_grids: dict[str | None, tuple] = {}
 
     def boundary(self, depth: float) -> float:
         """The compression boundary ``x_c`` of a depth, ``g(x_c) = d`` (0 at ``d <= 0``: every spring in tension).
@@ -116,6 +118,31 @@ class Shape:
             The radius (m; ``nan`` below the branch's fold).
         """
         return self.branches[name].radius(depth, self.rtol)
+
+    def turn_grid(self, name: str | None) -> tuple[np.ndarray, tuple]:
+        """The grid of :data:`TURN_GRID` points (and the knots of ``g``) up to :meth:`limit` on which a formula's turns
+        are bracketed, with the slopes its own are a sum of there: of ``g``, of ``d0``, and of the branch ``name`` at
+        ``A(g)`` (``None``: no radius); worked out once per branch, shared by every formula (the radii's roots were
+        the cost of each).
+
+        Parameters
+        ----------
+        name : str or None
+            The branch of the formula's ``A`` (``"grow"``, ``"shrink"``; ``None``: none).
+
+        Returns
+        -------
+        tuple
+            The grid (m) and the slopes ``(g', d0', d_A'(A(g)))`` there (the last ``None`` without a branch).
+        """
+        if name not in self.turn_grids:
+            reach = self.limit(name)
+            grid = reach * np.geomspace(1e-9, 1.0, TURN_GRID)
+            grid = np.union1d(grid, [k for k in self.knots() if 0.0 < k < reach])
+            branch = self.branches.get(name)
+            radius = branch.slopes(branch.radii(self.hertz.depths(grid))) if branch is not None else None
+            self.turn_grids[name] = (grid, (self.hertz.slopes(grid), self.grow.slopes(grid), radius))
+        return self.turn_grids[name]
 
     def knots(self) -> tuple[float, ...]:
         """Where ``g`` is not smooth (a table's grid; none for a power law).
@@ -282,7 +309,7 @@ class Formula:
 
     def slopes(self, xi: np.ndarray) -> np.ndarray:
         """:meth:`slope` at an array of ``ξ > 0``, the radii ``A(g(ξ))`` found at once (the branches' vectorised
-        roots, to double precision as the scalar ones), the branches' slopes point by point.
+        roots, to double precision as the scalar ones), the branches' slopes too (:meth:`~.branch.Branch.slopes`).
 
         Parameters
         ----------
@@ -295,16 +322,26 @@ class Formula:
             ``dY/dξ`` at each (1).
         """
         shape = self.shape
-        total = np.zeros(len(xi))
-        if self.alpha or self.gamma:
-            rate = np.array([shape.hertz.slope(float(v)) for v in xi])
-            total += self.alpha * rate if self.alpha else 0.0
-        if self.beta:
-            total += self.beta * np.array([shape.grow.slope(float(v)) for v in xi])
+        if self.constant:
+            return np.zeros(len(xi))
+        rate = shape.hertz.slopes(xi) if (self.alpha or self.gamma) else None
+        grow = shape.grow.slopes(xi) if self.beta else None
         if self.gamma:
             branch = shape.branches[self.radius_of]
-            radii = branch.radii(shape.hertz.depths(xi))
-            total += self.gamma * rate / np.array([branch.slope(float(r)) for r in radii])
+            return self._slopes_of(rate, grow, branch.slopes(branch.radii(shape.hertz.depths(xi))))
+        return self._slopes_of(rate, grow, None)
+
+    def _slopes_of(self, rate: np.ndarray | None, grow: np.ndarray | None,
+                   radius: np.ndarray | None) -> np.ndarray:
+        """:meth:`slopes` from the slopes of ``g``, ``d0`` and the radius's branch at ``A(g)`` at the points (each
+        ``None`` where the formula has no such term; :meth:`Shape.turn_grid` keeps them for every formula)."""
+        total = np.zeros(len(rate if rate is not None else grow))
+        if self.alpha or self.gamma:
+            total += self.alpha * rate if self.alpha else 0.0
+        if self.beta:
+            total += self.beta * grow
+        if self.gamma:
+            total += self.gamma * rate / radius
         return total
 
     def integral(self, lower: float, upper: float) -> float:
@@ -359,10 +396,8 @@ class Formula:
         return cached
 
     def _find_turns(self) -> tuple[float, ...]:
-        reach = self.shape.limit(self.radius_of)
-        grid = reach * np.geomspace(1e-9, 1.0, TURN_GRID)
-        grid = np.union1d(grid, [k for k in self.shape.knots() if 0.0 < k < reach])
-        slopes = self.slopes(grid).tolist()  # (the sign changes bracket the turns; each is refined by the scalar slope)
+        grid, slopes = self.shape.turn_grid(self.radius_of)
+        slopes = self._slopes_of(*slopes).tolist()  # (the sign changes bracket the turns; each refined by the slope)
         found = []
         for low, high, s_low, s_high in zip(grid[:-1], grid[1:], slopes[:-1], slopes[1:]):
             if s_low == 0.0:
@@ -438,8 +473,11 @@ class Formula:
 
     def _branch_inverse(self, level: float) -> float | None:
         """The ``ξ`` of ``level`` where the formula is one branch's depth, ``x0 + α (g − d_ref)`` or
-        ``x0 + β (d0 − d_ref)``: that branch's radius of a depth (its closed form or safeguarded root); else
-        ``None``."""
+        ``x0 + β (d0 − d_ref)``: that branch's radius of a depth (its closed form or safeguarded root); or where it is a
+        radius alone, ``x0 + γ A(g)`` (:meth:`_radius_inverse`); else ``None``."""
+        if self.gamma and not (self.alpha or self.beta):
+            xi = self._radius_inverse(level)
+            return xi if xi == xi else None
         if self.gamma or (self.alpha and self.beta):
             return None
         branch, ratio = (self.shape.hertz, self.alpha) if self.alpha else (self.shape.grow, self.beta)
@@ -482,11 +520,24 @@ class Formula:
 
     def _branch_inverses(self, levels: np.ndarray) -> np.ndarray | None:
         """:meth:`_branch_inverse` of an array of levels: the branch's radii of the depths at once (``nan`` where
-        none); ``None`` for a formula that is not one branch's depth."""
+        none); ``None`` for a formula that is neither one branch's depth nor a radius alone."""
+        if self.gamma and not (self.alpha or self.beta):
+            return self._radius_inverse(levels)
         if self.gamma or (self.alpha and self.beta) or not (self.alpha or self.beta):
             return None
         branch, ratio = (self.shape.hertz, self.alpha) if self.alpha else (self.shape.grow, self.beta)
         return np.asarray(branch.radii(self.d_ref + (levels - self.x0) / ratio), dtype=float)
+
+    def _radius_inverse(self, level):
+        """The ``ξ`` of ``level`` (a float or an array) where the formula is a radius alone, ``x0 + γ A(g(ξ))``: the
+        radius ``A = (level − x0)/γ``, its depth on its branch, eq. (9), and the ``ξ`` of that depth on ``g``, each a
+        closed form (or the profile's own inverse) where the regula falsi took a root of (9) at each of its steps
+        (``nan``: a radius below the branch's fold, which no ``ξ`` holds)."""
+        branch, radius = self.shape.branches[self.radius_of], (level - self.x0) / self.gamma
+        if np.ndim(level) == 0:
+            return self.shape.boundary(branch.depth(radius)) if radius >= branch.jump_off_radius else math.nan
+        radius = np.asarray(radius, dtype=float)
+        return np.where(radius >= branch.jump_off_radius, self.shape.boundaries(branch.depths(radius)), np.nan)
 
     def _illinois(self, sign: float, targets: np.ndarray, lower: float, upper: float, at_lower: float,
                   at_upper: float) -> np.ndarray:
@@ -567,7 +618,7 @@ def warm_root(formula: Formula, level: float, bracket: tuple[float, float], abov
         slope = formula.slope(xi)
         step = excess / slope if slope else math.inf
         following = xi - step
-        if not low < following < high:
+        if not low <= following <= high:  # (a step of zero from an iterate the bracket just closed on is inside)
             following = 0.5 * (low + high)
         if abs(following - xi) <= max(tolerance + 4 * EPS * abs(following), NEWTON_SETTLED * abs(xi)):
             return following

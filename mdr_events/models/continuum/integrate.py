@@ -1,5 +1,6 @@
 """Integrate one span: an event met at its start, a force constant or linear in time, or ``solve_ivp``'s loop (DOP853,
-dense output; :mod:`.span_march`) with the span's events, restarted at the knots of its right-hand side, in the
+dense output; :mod:`.span_march`) or a quadrature by panels where the right-hand side and the events read the variable
+alone (:mod:`.span_panels`), with the span's events, restarted at the knots of its right-hand side, in the
 variable graded towards a singular end where the integrator gives one (:mod:`.graded`); which events fired, and where.
 
 The span's right-hand side and events are its integrator's (:class:`~.span.SpanIntegrator`, or
@@ -17,17 +18,19 @@ from .graded import SpanProblem, graded_problem
 from .model import ContinuumModel
 from .span import EventFunction, Span, SpanIntegrator, SpanOutcome, Variable
 from .span_march import Marched, march
+from .span_panels import panels
 from .state import Cap, Regime
 from .tolerances import MIN_STEPS_PER_SPAN, SIMULTANEOUS_SHARE, Tolerances
 
 __all__ = ["integrate_span", "solve_between_knots", "fired_events", "radius_at"]
 
 
-def fired_events(events: list[EventFunction], roots: list, start: float, offset: float) -> tuple[float, frozenset]:
+def fired_events(events: list[EventFunction], roots: list, start: float, offset: float,
+                 natural: Callable[[float], float] | None = None) -> tuple[float, frozenset]:
     """The first root among the events' ``roots`` (``solve_ivp``'s ``t_events``) and every event that fires
-    with it: those whose roots coincide (to SIMULTANEOUS_SHARE), and the rising ones whose function is
-    already zero to rounding there (the roots of identical functions, e.g. onset and full slip of a
-    uniform field, differ by an ulp).
+    with it: those whose roots coincide (to SIMULTANEOUS_SHARE of the natural variable, the time or the radius),
+    and the rising ones whose function is already zero to rounding there (the roots of identical functions, e.g.
+    onset and full slip of a uniform field, differ by an ulp).
 
     Parameters
     ----------
@@ -39,16 +42,22 @@ def fired_events(events: list[EventFunction], roots: list, start: float, offset:
         The span's start (its variable).
     offset : float
         The rising events' offset (m).
+    natural : callable, optional
+        The natural variable of the span's variable (a graded span's :meth:`~.graded.Grading.natural`: roots are
+        compared there, not in ``u``, whose share of a root near ``u = 0`` is far wider than the time's); default
+        the variable itself.
 
     Returns
     -------
     tuple
-        The first root and the keys that fire there.
+        The first root (in the span's variable) and the keys that fire there.
     """
+    natural = natural or (lambda var: var)
     hits = sorted((abs(found[0] - start), found[0], index) for index, found in enumerate(roots) if len(found))
     first = hits[0][1]
+    at = float(natural(first))
     fired = {events[index].key for _, var, index in hits
-             if abs(var - first) <= SIMULTANEOUS_SHARE * max(abs(first), 1e-300)}
+             if abs(float(natural(var)) - at) <= SIMULTANEOUS_SHARE * max(abs(at), 1e-300)}
     for event in events:
         if event.key not in fired and event.direction > 0 and event(first) >= -2 * offset:
             fired.add(event.key)
@@ -123,8 +132,13 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
     else:  # (the variable u of :mod:`.graded`, from 1 to 0)
         problem = graded_problem(integrator, grading, events, MIN_STEPS_PER_SPAN)
     tolerances = model.tolerances
-    solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, problem.events,
-                                   tolerances, problem.max_step)
+    if integrator.quadrature:  # (a right-hand side and events of the variable alone: a quadrature by panels)
+        pieces = list(zip([problem.start, *problem.knots], [*problem.knots, problem.stop]))
+        solution = panels(problem.rhs, pieces, force, problem.events, tolerances.rtol, tolerances.atol,
+                          problem.max_step)
+    else:
+        solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, problem.events,
+                                       tolerances, problem.max_step)
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol
@@ -135,7 +149,8 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
             return SpanOutcome(frozenset({grading.event}), float(integrator.time_of(grading.origin)),
                                solution.y, float(integrator.radius_of(grading.origin)))
     if any(len(found) for found in roots):
-        first, fired = fired_events(problem.events, roots, problem.start, integrator.offset)
+        first, fired = fired_events(problem.events, roots, problem.start, integrator.offset,
+                                    None if grading is None else grading.natural)
         natural = first if grading is None else float(grading.natural(first))
         return SpanOutcome(fired, float(integrator.time_of(natural)), float(solution.sol(first)[0]),
                            float(integrator.radius_of(natural)))

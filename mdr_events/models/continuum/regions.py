@@ -122,7 +122,7 @@ class Part:
     end: float
     low: float
     high: float
-    #: what :meth:`inverse` keeps between calls: the formula's values at ``low``, ``high`` and the last root
+    #: what :meth:`inverse` keeps between calls: the formula's values at ``low``, ``high``, the last two roots and levels
     memo: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
 
     def value(self, xi: float) -> float:
@@ -136,9 +136,13 @@ class Part:
         Returns
         -------
         float
-            The anchor as the cap sees it (m).
+            The anchor as the cap sees it (m; remembered: a layout reads its ends' values more than once, and a value
+            of ``A(g)`` is a root).
         """
-        return self.formula.value(xi)
+        values = self.memo.setdefault("values", {})
+        if xi not in values:
+            values[xi] = self.formula.value(xi)
+        return values[xi]
 
     def rises_towards(self, cap: Cap) -> bool:
         """Whether ``σ Y`` increases with ``ξ`` over the part (its slip zone is then at its start).
@@ -155,7 +159,15 @@ class Part:
         """
         if self.formula.constant:
             return True
-        return float(cap) * (self.formula.value(self.high) - self.formula.value(self.low)) > 0.0
+        low, high = self._ends()
+        return float(cap) * (high - low) > 0.0
+
+    def _ends(self) -> tuple[float, float]:
+        """The formula's values at ``low`` and ``high``, remembered."""
+        memo = self.memo
+        if "ends" not in memo:
+            memo["ends"] = (self.formula.value(self.low), self.formula.value(self.high))
+        return memo["ends"]
 
     def inverse(self, level: float) -> float:
         """Where the seen anchors equal ``level``, continued over the monotone interval (clamped at its ends).
@@ -171,9 +183,15 @@ class Part:
             ``ξ`` (m).
         """
         memo = self.memo
-        if "ends" not in memo:
-            memo["ends"] = (self.formula.value(self.low), self.formula.value(self.high))
-        memo["root"] = root = self.formula.inverse(level, self.low, self.high, memo.get("root"), memo["ends"])
+        guess, last = memo.get("root"), memo.get("last")
+        if last is not None and last[0] != memo["level"]:  # (the secant through the last two roots, extended)
+            extended = guess + (guess - last[1]) * (level - memo["level"]) / (memo["level"] - last[0])
+            if self.low < extended < self.high:
+                guess = extended
+        root = self.formula.inverse(level, self.low, self.high, guess, self._ends())
+        if "root" in memo:
+            memo["last"] = (memo["level"], memo["root"])
+        memo["root"], memo["level"] = root, level
         return root
 
 

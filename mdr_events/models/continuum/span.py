@@ -162,6 +162,10 @@ class SpanIntegrator:
         Whether springs slide at each cap at the start.
     """
 
+    #: whether the span's force is integrated as a quadrature (:func:`~.span_panels.panels`): only where the
+    #: right-hand side and the events read the variable alone, never the force; else DOP853's steps
+    quadrature = False
+
     def __init__(self, model: ContinuumModel, anchors: AnchorMap, span: Span, sliding: dict[Cap, bool]):
         self.model, self.anchors, self.span = model, anchors, span
         self.segment = span.segment

@@ -109,10 +109,10 @@ class Instant(NamedTuple):
 
 
 def lay_out_regions(maps: SpanMaps, caps, at: Instant, sliding: dict[Key, bool], tolerance: float,
-                    ends: dict[Region, Ends] | None = None) -> dict[Key, RegionLayout]:
+                    ends: dict[Region, Ends] | None = None, only: Region | None = None) -> dict[Key, RegionLayout]:
     """Every cap's zone in every region that holds springs (the compressed zone ``[0, x_c]``, the annulus
     ``[x_c, a]``) at the instant ``at``; ``ends``: how each region's ends move during the span (default
-    :data:`STILL`).
+    :data:`STILL`); ``only``: that region's alone.
 
     Parameters
     ----------
@@ -128,6 +128,8 @@ def lay_out_regions(maps: SpanMaps, caps, at: Instant, sliding: dict[Key, bool],
         A value this close beyond a level counts as reached (m).
     ends : dict of Region to Ends, optional
         How each region's ends move.
+    only : Region, optional
+        The one region to lay out (default both).
 
     Returns
     -------
@@ -138,6 +140,8 @@ def lay_out_regions(maps: SpanMaps, caps, at: Instant, sliding: dict[Key, bool],
     extents = {Region.COMPRESSED: (0.0, boundary), Region.TENSILE: (boundary, radius)}
     out = {}
     for region, cap in KEYS:
+        if only is not None and region is not only:
+            continue
         region_ends = (ends or {}).get(region, STILL)
         lower, upper = extents[region]
         if not (upper > lower or any(region_ends.growing)):

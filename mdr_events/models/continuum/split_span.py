@@ -65,6 +65,10 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         Whether springs slide at each cap in each region (keys ``(Region, Cap)``; missing: not).
     """
 
+    #: the force is a quadrature (:func:`~.span_panels.panels`): the right-hand side and the events read the span's
+    #: variable alone
+    quadrature = True
+
     def __init__(self, model: ContinuumModel, anchors: SplitAnchorMap, span: Span, sliding: dict):
         super().__init__(model, anchors, span, sliding)
 
@@ -145,9 +149,9 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
                 self.maps = SpanMaps(swept, anchors) if destination is Region.COMPRESSED else SpanMaps(anchors, swept)
                 if self.rate(destination, cap, self.start) > 0.0:
                     self.sliding[(destination, cap)] = True
-                layouts = lay_out_regions(self.maps, self.model.caps, Instant(self.x0, depth, self.a0, boundary),
-                                          self.sliding, self.tolerance, self.ends)
-                self.layouts.update({key: value for key, value in layouts.items() if key[0] is destination})
+                self.layouts.update(lay_out_regions(self.maps, self.model.caps,
+                                                    Instant(self.x0, depth, self.a0, boundary), self.sliding,
+                                                    self.tolerance, self.ends, destination))
                 return
 
     def _edge_region(self) -> Region:

@@ -208,6 +208,11 @@ def zone_lengths(anchors: "SplitAnchorMap", region: Region, cap: Cap, levels: np
             continue
         first, last = sign * part.value(part.start), sign * part.value(part.end)
         reached = sign * levels
+        if float(np.max(reached)) < min(first, last):  # (no level reaches the part: no spring of it at the cap)
+            continue
+        if float(np.min(reached)) >= max(first, last):  # (every level beyond it: all its springs at the cap)
+            total += np.maximum(end - start, 0.0)
+            continue
         cut = np.where(reached >= max(first, last), np.inf, -np.inf) * (1.0 if first <= last else -1.0)
         inside = (reached > min(first, last)) & (reached < max(first, last))
         if np.any(inside):
