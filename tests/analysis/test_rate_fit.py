@@ -90,8 +90,9 @@ def test_bad_input_is_named(call, words):
 NEAR_STIFF_START = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-2, 0.6)
 
 
-@pytest.mark.slow  # ~5 s of CPU quiet: a whole fit from a stiff start; the quick round keeps the rejection's own
-# steps (test_the_jacobian_steps_back_where_the_forward_trial_is_refused...) and a refused start named
+@pytest.mark.slow  # 9.1 s of CPU (measured on the shared 2-core machine, loaded): a whole fit from a stiff start; the
+# quick round keeps the rejection's own steps (test_the_jacobian_steps_back_where_the_forward_trial_is_refused...) and a
+# refused start named
 def test_a_fit_from_near_the_stiff_edge_rejects_the_refused_trials_and_recovers_the_law():
     """Before, the first trial the edge solver refused ended the whole fit with its ValueError."""
     result = fit_rate_adhesion(_measurements(), PAPER, NEAR_STIFF_START, free=("v_ref", "n"))

@@ -141,8 +141,9 @@ def test_no_spring_is_shifted_beyond_the_cap_and_the_sliding_ones_carry_it():
 EVENT_RTOL = 1e-8
 
 
-@pytest.mark.slow  # ~6 s of CPU quiet: the rate-dependent run of a sliding fretting cycle (the play composed back
-# at each event and extremum); the quick round keeps the play's closed form on A and B and its convergence
+@pytest.mark.slow  # 10.3 s of CPU (measured on the shared 2-core machine, loaded): the rate-dependent run of a sliding
+# fretting cycle (the play composed back at each event and extremum); the quick round keeps the play's closed form on A
+# and B and its convergence
 def test_simulate_s_continuum_logs_the_paper_s_slip_events_on_a_sliding_fretting_cycle():
     """Before, simulate refused a path whose x turns back under the rate-dependent law. The event log's slip onsets,
     full slips, re-sticks and reversals, with their directions, are the paper's continuum's (v_ref -> inf), to
