@@ -76,6 +76,7 @@ benchmark: $(STAMP)
 	$(BIN)/python benchmarks/bench_validate.py
 	$(BIN)/python benchmarks/bench_fit.py
 	$(BIN)/python benchmarks/bench_sweep.py
+	$(BIN)/python benchmarks/bench_tests.py   # (the quick round of the tests, in CPU time: some minutes)
 	$(BIN)/python benchmarks/bench_small_angles.py
 	$(BIN)/python benchmarks/bench_rate_adhesion.py
 
