@@ -29,20 +29,25 @@ $(STAMP): pyproject.toml $(LOCK)
 # every core (pytest-xdist); a module's tests on one worker, so that its module-scoped fixtures (a fresh
 # computation of results/, shared solutions) are computed once
 PYTEST_PARALLEL := -n auto --dist loadscope
+# one OpenBLAS thread per worker: the workers already take every core, and OpenBLAS's own threads (one per core in
+# each worker) wait for each other busily (measured on 2 cores, tests/theory and tests/contact: 64 s of CPU against
+# 74 s; the layer's Nyström solves with a cold cache 11 s against 15-19 s). Set before Python starts: NumPy is
+# loaded by pytest's plugins before any conftest could set it.
+PYTEST_ENV := OPENBLAS_NUM_THREADS=1
 
 # `make test`: the quick round, every test but those marked slow (pyproject.toml's markers say which and why);
 # `make test-all`: all of them, as CI runs them
 test: $(STAMP)
-	$(BIN)/python -m pytest -q $(PYTEST_PARALLEL) -m "not slow"
+	$(PYTEST_ENV) $(BIN)/python -m pytest -q $(PYTEST_PARALLEL) -m "not slow"
 
 test-all: $(STAMP)
-	$(BIN)/python -m pytest -q $(PYTEST_PARALLEL)
+	$(PYTEST_ENV) $(BIN)/python -m pytest -q $(PYTEST_PARALLEL)
 
 test-newest:
 	test -x .venv-newest/bin/python || $(PYTHON) -m venv .venv-newest
 	.venv-newest/bin/python -m pip install --quiet --upgrade pip
 	.venv-newest/bin/python -m pip install --quiet --upgrade --upgrade-strategy eager -e '.[$(EXTRAS)]'
-	.venv-newest/bin/python -m pytest -q $(PYTEST_PARALLEL)
+	$(PYTEST_ENV) .venv-newest/bin/python -m pytest -q $(PYTEST_PARALLEL)
 
 reproduce: $(STAMP)
 	$(BIN)/mdr-events reproduce --out results
@@ -71,6 +76,7 @@ benchmark: $(STAMP)
 	$(BIN)/python benchmarks/bench_validate.py
 	$(BIN)/python benchmarks/bench_fit.py
 	$(BIN)/python benchmarks/bench_sweep.py
+	$(BIN)/python benchmarks/bench_tests.py   # (the quick round of the tests, in CPU time: some minutes)
 	$(BIN)/python benchmarks/bench_small_angles.py
 	$(BIN)/python benchmarks/bench_rate_adhesion.py
 

@@ -12,6 +12,7 @@ an API page offline and checks that MathJax rendered the equations without an er
 
 from __future__ import annotations
 
+import importlib.util
 import os
 import re
 import shutil
@@ -33,8 +34,11 @@ FIGURE = "phase_diagram_A_R30.png"
 #: A tutorial executed during the build, which draws figures.
 TUTORIAL = Path("tutorials") / "reproduce_the_paper.html"
 
-for _module in ("sphinx", "numpydoc", "myst_nb", "sphinxarg", "pydata_sphinx_theme"):
-    pytest.importorskip(_module, reason="the extra 'docs' is not installed (make installs it)")
+# looked up, not imported: importing Sphinx and its theme costs every pytest-xdist worker about a second at collection,
+# for a module that `make test` deselects (slow); the build imports them in its own process
+if any(importlib.util.find_spec(_module) is None
+       for _module in ("sphinx", "numpydoc", "myst_nb", "sphinxarg", "pydata_sphinx_theme")):
+    pytest.skip("the extra 'docs' is not installed (make installs it)", allow_module_level=True)
 
 
 @pytest.fixture(scope="module")

@@ -117,7 +117,10 @@ def test_the_speed_of_an_extreme_law_is_infinite_not_an_overflow_error():
 A20 = me.Path.scenario_A(20, PAPER)
 
 
-@pytest.mark.parametrize("v_ref, n", [(1.0, 1e-9), (1e-6, 1e-9), (1e30, 0.3), (1e30, 1.0), (1e-12, 1.0)])
+# (v_ref = 1e30 spends solve_edge's whole budget before it refuses, 5.9 s of CPU measured loaded: n = 0.3, the law
+# that hung, stays quick, n = 1 is the same refusal by the same budget)
+@pytest.mark.parametrize("v_ref, n", [(1.0, 1e-9), (1e-6, 1e-9), (1e30, 0.3),
+                                      pytest.param(1e30, 1.0, marks=pytest.mark.slow), (1e-12, 1.0)])
 def test_a_law_the_clock_cannot_follow_is_refused_with_the_reason_and_soon(v_ref, n):
     law = RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, v_ref, n)
     with pytest.raises(ValueError) as raised:

@@ -275,7 +275,10 @@ WALL_CLOCK_GUARD = 60.0
 
 
 @pytest.mark.parametrize("law, mu, scenario, alpha", [
-    ("coulomb", 1e6, "A", 0.3), ("coulomb", 1e8, "A", 1.0), ("tau0+coulomb", 1e5, "A", 0.3),
+    ("coulomb", 1e6, "A", 0.3),
+    # (7.9 s of CPU measured loaded, the others 1-2 s: the same limit is checked quick on Coulomb at 1e6 and both
+    # parts at 1e8)
+    pytest.param("coulomb", 1e8, "A", 1.0, marks=pytest.mark.slow), ("tau0+coulomb", 1e5, "A", 0.3),
     ("tau0+coulomb", 1e8, "A", 1.0), ("tau0+coulomb", 1e8, "B+", 1.0),
 ])
 def test_a_huge_mu_runs_to_its_sticking_limit(law, mu, scenario, alpha):

@@ -1,6 +1,7 @@
 """``sweep``: the same numbers serially and on a dask cluster, resumable stores, recorded failures, bad grids;
 the quantities against the closed forms; the dimensionless groups."""
 
+import importlib.util
 import math
 import os
 import re
@@ -14,7 +15,17 @@ from mdr_events.analysis.executors import LOOPBACK_DASHBOARD
 from mdr_events.analysis.sweep import CLOSED_FORM_QUANTITIES, QUANTITIES, sweep
 from mdr_events.theory.analytic import d_crit, dimensionless_groups
 
-distributed = pytest.importorskip("distributed")
+# looked up, not imported: dask.distributed costs a pytest-xdist worker about a second at collection; the tests that
+# start a cluster import it (``_distributed``)
+if importlib.util.find_spec("distributed") is None:
+    pytest.skip("the extra 'scale' is not installed (make installs it)", allow_module_level=True)
+
+
+def _distributed():
+    """dask.distributed, imported where a test starts or joins a cluster."""
+    import distributed
+
+    return distributed
 
 GRID = {"tau0": [30e3, 42e3, 55e3], "alpha": [10.0, 20.0, 40.0, 70.0]}
 
@@ -27,7 +38,7 @@ def serial(paper):
 @pytest.fixture(scope="module")
 def cluster():
     """A 2-worker LocalCluster on loopback (processes, one thread each), shared by the tests that need one."""
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+    with _distributed().LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
                                   dashboard_address=LOOPBACK_DASHBOARD) as local:
         yield local
 
@@ -68,7 +79,7 @@ def test_a_client_object_the_active_client_and_an_executor_give_the_serial_numbe
     a ProcessPoolExecutor; the caller's client and executor stay open."""
     import concurrent.futures
 
-    with distributed.Client(cluster.scheduler_address) as client:
+    with _distributed().Client(cluster.scheduler_address) as client:
         xr.testing.assert_identical(sweep(GRID, "A", base=paper, scheduler=client, chunk_size=5), serial)
         xr.testing.assert_identical(sweep(GRID, "A", base=paper, chunk_size=5), serial)  # the active client
         assert client.status == "running"
@@ -82,7 +93,7 @@ def test_a_worker_killed_mid_sweep_does_not_change_the_result(paper, serial, clu
 
     def kill_one_worker(done, total):
         if not killed:
-            with distributed.Client(cluster.scheduler_address) as client:
+            with _distributed().Client(cluster.scheduler_address) as client:
                 victim = sorted(client.scheduler_info()["workers"])[0]
                 killed.append(victim)
                 try:
@@ -94,7 +105,7 @@ def test_a_worker_killed_mid_sweep_does_not_change_the_result(paper, serial, clu
                    progress=kill_one_worker)
     assert killed
     xr.testing.assert_identical(result, serial)
-    with distributed.Client(cluster.scheduler_address) as client:
+    with _distributed().Client(cluster.scheduler_address) as client:
         client.wait_for_workers(2, timeout=60)  # the nanny has restarted it
 
 
@@ -386,7 +397,7 @@ def test_a_scheduler_that_cannot_be_reached_is_named(paper):
 
 
 def test_a_closed_client_is_named(paper, cluster):
-    client = distributed.Client(cluster.scheduler_address)
+    client = _distributed().Client(cluster.scheduler_address)
     client.close()
     with pytest.raises(ValueError, match="takes no tasks"):
         sweep({"tau0": [3e4]}, "A", 20.0, base=paper, scheduler=client, quantities=CLOSED_FORM_QUANTITIES)

@@ -4,6 +4,7 @@ one line with exit 2 and nothing run."""
 
 from __future__ import annotations
 
+import importlib.util
 import math
 
 import numpy as np
@@ -16,7 +17,10 @@ from mdr_events.app.study import StudyError, load_study
 
 from test_validate_cli import assert_one_error_line
 
-pytest.importorskip("distributed")
+# looked up, not imported (dask.distributed costs a worker about a second at collection; a run imports it where it
+# starts a cluster)
+if importlib.util.find_spec("distributed") is None:
+    pytest.skip("the extra 'scale' is not installed (make installs it)", allow_module_level=True)
 
 #: The discrete springs of a quick run (the sweep's own step unless given: n_steps fixes it).
 SPRINGS = me.Discrete(dx=5e-5, n_steps=1000)

@@ -1,0 +1,101 @@
+"""Benchmark: the quick round of the tests, ``make test`` (issue 28, item 4), in CPU time.
+
+On a shared machine the wall clock of a test run says more about the others' load than about the tests; the CPU each
+test takes does not. This runs the quick round as ``make test`` does (``-n 2 --dist loadscope -m "not slow"``, one
+OpenBLAS thread per worker) with a plugin that records each test's CPU time, its process's and its waited-for
+subprocesses' (``_test_cpu_clock.py``), and prints:
+
+- the CPU of the whole round (target: at most 200 s, so that two workers finish in under 2 min of a quiet machine's
+  wall clock) and each worker's share, its start-up and collection included (target: none over 120 s; pytest-xdist's
+  ``loadscope`` keeps a module on one worker, so one long module caps the wall time);
+- the CPU of ``pytest --collect-only -q`` alone, which every worker pays before its first test;
+- the slowest modules and tests (the candidates for a cheaper test or the ``slow`` mark).
+
+Run: ``python benchmarks/bench_tests.py [--workers N] [--top N] [-- PYTEST_ARGS...]`` from the clone's root (the
+arguments after ``--`` replace the test selection, e.g. ``-- tests/theory``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import collections
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+#: Targets of issue 28, item 4 (s of CPU): the quick round's total, one worker's share.
+TOTAL_TARGET, WORKER_TARGET = 200.0, 120.0
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _environment(prefix: str) -> dict[str, str]:
+    """``make test``'s environment with this folder on ``PYTHONPATH`` (the plugin) and the records' prefix."""
+    path = os.pathsep.join(filter(None, [str(ROOT), str(Path(__file__).parent), os.environ.get("PYTHONPATH")]))
+    return {**os.environ, "PYTHONPATH": path, "OPENBLAS_NUM_THREADS": "1", "MDR_TEST_CLOCK_OUT": prefix}
+
+
+def _collection_cpu(selection: list[str]) -> float:
+    """CPU time (s) of ``pytest --collect-only -q`` over ``selection``, children included."""
+    before = os.times()
+    subprocess.run([sys.executable, "-m", "pytest", "--collect-only", "-q", "-p", "no:cacheprovider", *selection],
+                   cwd=ROOT, env=_environment(os.devnull), capture_output=True, check=False)
+    after = os.times()
+    return (after.children_user + after.children_system) - (before.children_user + before.children_system)
+
+
+def _records(prefix: str) -> list[dict]:
+    """Every record the workers wrote, each with its worker's name."""
+    out = []
+    for path in sorted(Path(prefix).parent.glob(Path(prefix).name + "_*.jsonl")):
+        worker = path.stem.rsplit("_", 1)[1]
+        out += [{**json.loads(line), "worker": worker} for line in path.read_text(encoding="utf-8").splitlines()]
+    return out
+
+
+def report(records: list[dict], wall: float, collection: float, top: int) -> None:
+    """Print the totals against their targets, and the slowest modules and tests."""
+    tests = [record for record in records if record["id"] != "<start>"]
+    shares = collections.Counter()
+    for record in records:
+        shares[record["worker"]] += record["cpu"]
+    modules = collections.Counter()
+    for record in tests:
+        modules[record["id"].split("::")[0]] += record["cpu"]
+    total = sum(shares.values())
+    print(f"quick round: {len(tests)} tests, {wall:.0f} s wall (this machine's load included)")
+    print(f"  CPU {total:.1f} s, target <= {TOTAL_TARGET:.0f} s: {'met' if total <= TOTAL_TARGET else 'NOT met'}")
+    for worker, share in sorted(shares.items()):
+        print(f"  worker {worker}: CPU {share:.1f} s (start-up and collection included), target <= "
+              f"{WORKER_TARGET:.0f} s: {'met' if share <= WORKER_TARGET else 'NOT met'}")
+    print(f"  pytest --collect-only -q alone: CPU {collection:.1f} s (paid by every worker)")
+    print("  slowest modules (CPU s):")
+    for module, cpu in modules.most_common(top):
+        print(f"    {cpu:7.1f}  {module}")
+    print("  slowest tests (CPU s):")
+    for record in sorted(tests, key=lambda record: -record["cpu"])[:top]:
+        print(f"    {record['cpu']:7.2f}  {record['id']}")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--workers", type=int, default=2, help="pytest-xdist workers (default 2, the machine's cores)")
+    parser.add_argument("--top", type=int, default=20, help="modules and tests listed (default 20)")
+    parser.add_argument("selection", nargs="*", help="pytest's arguments instead of the quick round's (after --)")
+    options = parser.parse_args()
+    selection = options.selection or ["-m", "not slow"]
+    collection = _collection_cpu(selection)
+    with tempfile.TemporaryDirectory() as scratch:
+        prefix = str(Path(scratch) / "clock")
+        start = time.perf_counter()
+        subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-p", "_test_cpu_clock",
+                        "-n", str(options.workers), "--dist", "loadscope", *selection], cwd=ROOT,
+                       env=_environment(prefix), check=False)
+        report(_records(prefix), time.perf_counter() - start, collection, options.top)
+
+
+if __name__ == "__main__":
+    main()
