@@ -1,0 +1,127 @@
+"""The seventeenth hostile round (issue 32): each class of what failed, with the cases that showed it.
+
+R1, a known bug first: a ``distributed.Client`` of a malformed address (``sweep(..., scheduler="tcp://")``) made
+itself the process's default client before it failed, and stayed so, "connecting" to nothing, while anything held its
+error; every later ``to_netcdf`` of the process (the user's own, or a test's on the same pytest-xdist worker) then
+asked it for a distributed lock and failed ("missing port number in address ''").
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import textwrap
+import time
+
+import pytest
+
+import mdr_events as me
+
+# --- R1: a failed dask client stayed the process's default --------------------------------------------------------
+
+#: What a process tries, then reports as JSON: the refusal's message, the clients left (default and not closed),
+#: dask's scheduler setting after, and whether a ``to_netcdf`` of its own still writes. ``error`` is held while the
+#: process looks (as pytest's ``raises`` holds it): the client that failed was referenced from its traceback.
+LEFT_BEHIND = textwrap.dedent("""
+    import gc, json, sys, time
+    import dask
+    dask.config.set({"distributed.comm.timeouts.connect": sys.argv[2]})
+    import numpy as np, xarray as xr
+    import distributed
+    import distributed.client
+    import mdr_events as me
+    from mdr_events.analysis import executors
+    if sys.argv[3] == "unchecked":  # (the second guard alone: a client that failed is closed)
+        executors.check_address = lambda scheduler: None
+    start = time.monotonic()
+    try:
+        with executors.open_executor(sys.argv[1]):
+            pass
+    except ValueError as caught:
+        error = caught
+    refused_after = time.monotonic() - start
+    gc.collect()
+    open_clients = [repr(c) for c in gc.get_objects() if isinstance(c, distributed.Client) and c.status != "closed"]
+    written = True
+    try:
+        xr.Dataset({"v": ("x", np.arange(3.0))}).to_netcdf(sys.argv[4])
+    except Exception as failure:
+        written = f"{type(failure).__name__}: {failure}"
+    print(json.dumps({"message": str(error), "refused_after": refused_after,
+                      "default": repr(distributed.client._get_global_client()), "open": open_clients,
+                      "dask_scheduler": dask.config.get("scheduler", None), "written": written}))
+    sys.stdout.flush()
+""")
+
+#: dask's connect timeout in the malformed cases: long, so that a client left open, which closes at the
+#: interpreter's exit with twice this timeout (``Client.__del__``; 60 s with dask's default 30 s), would show as a
+#: process that does not end within :data:`PROCESS_BOUND`.
+CONNECT_TIMEOUT_LONG = "60s"
+#: dask's connect timeout for the unreachable address: how long the refusal takes (nothing listens on port 1).
+CONNECT_TIMEOUT_SHORT = "2s"
+#: The time the whole process is given: an interpreter that imports mdr_events, xarray and distributed (a few seconds;
+#: three times that on this shared 2-core machine under load), the refusal (at once, or after
+#: CONNECT_TIMEOUT_SHORT) and the exit; well below the 120 s a client left open took to close at exit with
+#: CONNECT_TIMEOUT_LONG.
+PROCESS_BOUND = 50.0
+#: A malformed address is refused before any connection is tried: in well under a second (the client that used to
+#: be made failed at once too; the bound tells a refusal from a connect timeout, CONNECT_TIMEOUT_LONG).
+REFUSAL_AT_ONCE = 5.0
+
+
+def _left_behind(tmp_path, address: str, connect_timeout: str, checked: bool = True) -> tuple[dict, float]:
+    """What a process that tried ``address`` left behind (:data:`LEFT_BEHIND`), and how long it ran in all."""
+    start = time.monotonic()
+    done = subprocess.run([sys.executable, "-c", LEFT_BEHIND, address, connect_timeout,
+                           "checked" if checked else "unchecked", str(tmp_path / "own.nc")],
+                          capture_output=True, text=True, timeout=PROCESS_BOUND)
+    elapsed = time.monotonic() - start
+    assert done.returncode == 0, done.stderr[-2000:]
+    return json.loads(done.stdout.strip().splitlines()[-1]), elapsed
+
+
+def _nothing_left(report: dict) -> None:
+    assert report["default"] == "None" and report["open"] == [], report
+    assert report["dask_scheduler"] is None and report["written"] is True, report
+    assert "\n" not in report["message"], report["message"]
+
+
+@pytest.mark.parametrize("address, words", [
+    ("tcp://", "missing port number"),
+    ("tcp://127.0.0.1", "missing port number"),
+    ("tcp://[::1]", "missing port number"),
+    ("tcp://:8786", "names no host"),
+    ("tcp://h o st:8786", "names no host (or has blanks)"),
+    ("tcp://127.0.0.1:0", "port 0 is out of range"),
+    ("tcp://127.0.0.1:99999", "port 99999 is out of range"),
+    ("tcp://127.0.0.1:8786/x", "8786/x"),
+    ("tcp://a://b:1", "it names the protocol 'tcp://a'"),
+])
+def test_a_malformed_address_is_refused_before_any_client_is_made(address, words):
+    """The address's form is checked in dask's reading of it before a client is made, at Engine(...) already."""
+    with pytest.raises(ValueError) as raised:
+        me.Engine(scheduler=address)
+    message = str(raised.value)
+    assert f"scheduler={address!r} is not allowed" in message and words in message, message
+    assert "allowed: an address tcp://host:port" in message and "\n" not in message, message
+
+
+@pytest.mark.parametrize("checked", [True, False], ids=["form-checked", "client-closed"])
+def test_a_malformed_address_leaves_no_client_behind(tmp_path, checked):
+    """``sweep(..., scheduler="tcp://")``: refused in one line, and after it no default client, none open, dask's
+    scheduler as it was, the process's own ``to_netcdf`` writes, and the process ends at once. ``client-closed``
+    skips the form's check, so that a client is made and fails: the one it left as default is closed."""
+    report, elapsed = _left_behind(tmp_path, "tcp://", CONNECT_TIMEOUT_LONG, checked)
+    _nothing_left(report)
+    assert report["refused_after"] < REFUSAL_AT_ONCE, report
+    assert ("is not allowed: missing port number" if checked else "cannot be reached") in report["message"], report
+    assert elapsed < PROCESS_BOUND
+
+
+def test_an_unreachable_address_leaves_no_client_behind(tmp_path):
+    """A well-formed address where nothing listens: refused in one line after the connect timeout, nothing left."""
+    report, elapsed = _left_behind(tmp_path, "tcp://127.0.0.1:1", CONNECT_TIMEOUT_SHORT)
+    _nothing_left(report)
+    assert "scheduler='tcp://127.0.0.1:1' cannot be reached" in report["message"], report
+    assert elapsed < PROCESS_BOUND
