@@ -14,6 +14,7 @@ import sys
 import textwrap
 import time
 
+import numpy as np
 import pytest
 
 import mdr_events as me
@@ -125,3 +126,55 @@ def test_an_unreachable_address_leaves_no_client_behind(tmp_path):
     _nothing_left(report)
     assert "scheduler='tcp://127.0.0.1:1' cannot be reached" in report["message"], report
     assert elapsed < PROCESS_BOUND
+
+
+# --- R2: the kernels (run_discrete, run_continuum) read their arguments as they came: a path that was not one,
+# limits or tolerances that were not, a spacing of 0 or a string failed deep inside (AttributeError,
+# ZeroDivisionError, NumPy's "zero-size array" or "negative dimensions") ----------------------------------------------
+
+def _kernel_calls():
+    from mdr_events.models.continuum import run_continuum
+    from mdr_events.models.discrete import run_discrete
+    from mdr_events.models.kernel_model import KernelModel
+
+    paper = me.Parameters.paper()
+    path = me.Path(np.array([(0.0, 0.0), (0.0, 3e-4), (1e-4, -1e-4)]), 1e-6)
+    return [
+        (lambda: run_discrete(paper, None, 1e-6, 0.1), "paths=None"),
+        (lambda: run_discrete(paper, path, 1e-6, 0.1), "paths=Path("),
+        (lambda: run_discrete(paper, [], 1e-6, 0.1), "paths=[]"),
+        (lambda: run_discrete(paper, [1], 1e-6, 0.1), "paths[0]=1 (int)"),
+        (lambda: run_discrete(paper, [path], "1e-6", 0.1), "dx='1e-6' (str)"),
+        (lambda: run_discrete(paper, [path], 0, 0.1), "dx=0"),
+        (lambda: run_discrete(paper, [path], 1e-6, -1), "dt=-1"),
+        (lambda: run_discrete(paper, [path], 1e-6, float("nan")), "dt=nan"),
+        (lambda: run_discrete(paper, [path], 1e-6, 0.1, limits="big"), "limits='big' (str)"),
+        (lambda: run_discrete(KernelModel(None), [path], 1e-6, 0.1), "model.params=None"),
+        (lambda: run_continuum(paper, [path, "x"]), "paths[1]='x' (str)"),
+        (lambda: run_continuum(paper, [path], times="x"), "times='x'"),
+        (lambda: run_continuum(paper, [path], times=0), "times=0"),
+        (lambda: run_continuum(paper, [path], times=-5), "times=-5"),
+        (lambda: run_continuum(paper, [path], times=True), "times=True"),
+        (lambda: run_continuum(paper, [path], times=[1.0, 0.5]), "times=[1.0, 0.5]"),
+        (lambda: run_continuum(paper, [path], tolerances=None), "tolerances=None"),
+        (lambda: run_continuum(paper, [path], tolerances=1e-6), "tolerances=1e-06"),
+        (lambda: run_continuum(KernelModel("paper"), [path]), "model.params='paper' (str)"),
+    ]
+
+
+@pytest.mark.parametrize("index", range(len(_kernel_calls())))
+def test_the_kernels_name_an_argument_of_the_wrong_type_or_value(index):
+    call, named = _kernel_calls()[index]
+    with pytest.raises((TypeError, ValueError)) as raised:
+        call()
+    message = str(raised.value)
+    assert named in message and "allowed" in message and "\n" not in message, message
+
+
+def test_the_kernels_still_take_what_they_took():
+    """A tuple of paths, a NumPy integer of samples and a grid of times run as before."""
+    from mdr_events.models.continuum import run_continuum
+
+    path = me.Path(np.array([(0.0, 0.0), (0.0, 3e-4), (1e-4, -1e-4)]), 1e-6)
+    assert run_continuum(me.Parameters.paper(), (path,), times=np.int64(3))["time"].size == 3
+    assert list(run_continuum(me.Parameters.paper(), [path], times=[0.0, 1.0])["time"]) == [0.0, 1.0]

@@ -9,17 +9,19 @@ of :mod:`~.state`), logging the events. Path corners start a new plan.
 from __future__ import annotations
 
 import math
+import numbers
 
 import numpy as np
 
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.parameters import Parameters
+from mdr_events.validation import check_count, check_output_times
 from mdr_events.models.paths import Path
 from mdr_events.models.indenters import SimulatedProfile, check_reach, check_simulated_profile
 from mdr_events.contact.adhesion import AdhesionLaw
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.contact.layer import HALF_SPACE, Layer
-from mdr_events.models.kernel_model import KernelModel, as_kernel_model
+from mdr_events.models.kernel_model import KernelModel, as_kernel_model, check_kernel_run
 from .anchors import AnchorMap, Piece
 from .compressed import attach_compressed_zone
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
@@ -33,7 +35,7 @@ from .split_map import SplitAnchorMap
 from .split_solve import commit, new_anchors, split_slip_transition
 from .split_span import SplitSpanIntegrator
 from .state import CONTACT_ENDING, NO_ZONE, Cap, ContactState, Event, EventKind, Regime, Slip, zone_events
-from .tolerances import MAX_RESTARTS, Tolerances
+from .tolerances import MAX_RESTARTS, Tolerances, check_tolerances
 from .zones import lay_out_zones
 
 
@@ -371,7 +373,12 @@ def run_continuum(model: KernelModel | Parameters, paths: list[Path], times: np.
     ResourceLimitError
         More samples or memory than ``limits`` allows.
     """
-    samples = times if isinstance(times, int) else None
+    paths, limits = check_kernel_run(paths, limits)
+    check_tolerances(tolerances)
+    if isinstance(times, numbers.Integral) and not isinstance(times, (bool, np.bool_)):
+        samples, times = check_count("times", times, 2), None
+    else:
+        samples, times = None, check_output_times("times", times)
     n_time = samples if samples is not None else len(times)
     limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
                  memory=n_time * len(paths) * BYTES_PER_SAMPLE)
@@ -380,7 +387,6 @@ def run_continuum(model: KernelModel | Parameters, paths: list[Path], times: np.
     if samples is not None:
         times = sample_times([solution.end_time for solution in solutions],
                              [path.duration - path.first_contact_time() for path in paths], samples)
-    times = np.asarray(times, dtype=float)
     per_case = [evaluate(solution, times) for solution in solutions]
     out = {name: np.stack([case[name] for case in per_case]) for name in per_case[0]}
     out["time"] = times

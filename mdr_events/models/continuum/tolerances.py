@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mdr_events.validation import check_real
+from mdr_events.validation import check_real, shown
 
 #: A velocity component below this share of the speed is taken as zero (a segment that changes its
 #: depth by 1e-90 m over 0.3 mm is a pinned slide: its growth ratio vx/vd would overflow the anchor map).
@@ -83,3 +83,11 @@ class Tolerances:
                                    lambda value: EPS <= value <= MAX_RADIUS_RTOL)}
         for name, (words, valid) in allowed.items():
             object.__setattr__(self, name, check_real(f"Tolerances.{name}", getattr(self, name), words, valid))
+
+
+def check_tolerances(tolerances) -> Tolerances:
+    """``tolerances`` if it is a :class:`Tolerances`; else ``TypeError`` naming it (``Continuum(tolerances=...)``
+    and :func:`~mdr_events.models.continuum.solve.run_continuum` take them)."""
+    if not isinstance(tolerances, Tolerances):
+        raise TypeError(f"tolerances={shown(tolerances)} is not allowed; allowed: a mdr_events.Tolerances")
+    return tolerances
