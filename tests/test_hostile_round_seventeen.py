@@ -178,3 +178,29 @@ def test_the_kernels_still_take_what_they_took():
     path = me.Path(np.array([(0.0, 0.0), (0.0, 3e-4), (1e-4, -1e-4)]), 1e-6)
     assert run_continuum(me.Parameters.paper(), (path,), times=np.int64(3))["time"].size == 3
     assert list(run_continuum(me.Parameters.paper(), [path], times=[0.0, 1.0])["time"]) == [0.0, 1.0]
+
+
+# --- R3: `mdr-events derive` (every relation, as the README shows it) exited 2: two relations of the rate-dependent
+# adhesion law were derived and listed but not found by key ("key='let_go_depth' is not allowed") ---------------------
+
+def test_every_relation_derive_lists_is_found_by_its_key():
+    from mdr_events.theory import symbolic
+
+    families = {symbolic.POWER_LAW_KEYS: symbolic.derive_power_law_model,
+                symbolic.FRICTION_KEYS: symbolic.derive_friction_model,
+                symbolic.ADHESIVE_FRICTION_KEYS: symbolic.derive_adhesive_friction_model,
+                symbolic.RATE_ADHESION_KEYS: symbolic.derive_rate_dependent_adhesion}
+    for keys, derive in families.items():  # (each family's keys route relation(key) to it)
+        assert set(keys) == set(derive()), derive.__name__
+    for key, relation in symbolic.relations().items():
+        assert symbolic.relation(key).key == key == relation.key
+
+
+def test_derive_prints_every_relation(capsys):
+    from mdr_events.app.cli import main
+    from mdr_events.theory import symbolic
+
+    assert main(["derive"]) == 0
+    out = capsys.readouterr().out
+    assert [line.split(":")[0][2:].split(" ")[0] for line in out.splitlines() if line.startswith("# ")] == \
+        list(symbolic.relations())
