@@ -17,7 +17,32 @@ import time
 import numpy as np
 import pytest
 
+import warnings
+
 import mdr_events as me
+from mdr_events.app.cli import main
+
+CONTACT = me.Contact.paper()
+
+
+def _one_line_naming(call, named: str, errors=(ValueError, TypeError)) -> str:
+    """The message of what ``call`` raises with every warning an error: one line, naming ``named`` and what is
+    allowed."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(errors) as caught:
+            call()
+    message = str(caught.value)
+    assert named in message and "allowed" in message and "\n" not in message, message
+    return message
+
+
+def _cli_one_line(capsys, argv: list[str]) -> str:
+    """The one line ``mdr-events argv`` prints on stderr, exiting 2."""
+    status = main(argv)
+    err = capsys.readouterr().err
+    assert status == 2 and err.count("\n") == 1 and err.startswith("mdr-events: error:"), (status, err)
+    return err
 
 # --- R1: a failed dask client stayed the process's default --------------------------------------------------------
 
@@ -197,10 +222,40 @@ def test_every_relation_derive_lists_is_found_by_its_key():
 
 
 def test_derive_prints_every_relation(capsys):
-    from mdr_events.app.cli import main
     from mdr_events.theory import symbolic
 
     assert main(["derive"]) == 0
     out = capsys.readouterr().out
     assert [line.split(":")[0][2:].split(" ")[0] for line in out.splitlines() if line.startswith("# ")] == \
         list(symbolic.relations())
+
+
+# --- R4: the continuum under Coulomb's law alone on a cone at mu ~ 1e6 (scenario B, 20°) ran for tens of minutes: the
+# compressed zone's slip zone at the shrinking edge opened and left again every 4e-9 s (1e-12 of the time, the event
+# times' resolution) from t = 1177 s on, 4e5 spans to the pull-off ------------------------------------------------
+
+#: CPU seconds a refused chatter takes at most: the run to t = 1177 s (about 2 s on this machine alone) and the
+#: MAX_RESTARTS spans of the chatter that identify it (a few ms each); the run that chattered took tens of minutes.
+CHATTER_CPU_BOUND = 30.0
+
+
+@pytest.mark.parametrize("mu", [1e6, 1.5e6, 3e6])
+def test_a_chattering_slip_zone_is_refused_not_followed(mu):
+    contact = me.Contact(CONTACT.elastomer, me.PowerLaw(0.5, 1.0), CONTACT.adhesion, me.FrictionLaw("coulomb", mu=mu))
+    start = time.process_time()
+    message = _one_line_naming(lambda: me.simulate(contact, "B", 20.0, "continuum"), f"mu={mu!r}")
+    assert "method='discrete'" in message and time.process_time() - start < CHATTER_CPU_BOUND
+
+
+def test_a_chattering_run_is_one_line_of_the_cli(capsys, tmp_path):
+    err = _cli_one_line(capsys, ["simulate", "--scenario", "B", "--alpha", "20", "--method", "continuum", "--friction",
+                                 "coulomb", "--mu", "1e6", "--power-law", "0.5", "1", "--out", str(tmp_path / "o")])
+    assert "mu=1000000.0" in err and not (tmp_path / "o").exists()
+
+
+def test_the_same_law_next_to_it_still_runs():
+    """mu = 2e6 (and 1.1e6) do not chatter: the run ends, every force finite where the path is."""
+    contact = me.Contact(CONTACT.elastomer, me.PowerLaw(0.5, 1.0), CONTACT.adhesion, me.FrictionLaw("coulomb", mu=2e6))
+    run = me.simulate(contact, "B", 20.0, "continuum")
+    inside = np.isfinite(run["indentation_depth"].values)
+    assert np.all(np.isfinite(run["tangential_force"].values[inside]))
