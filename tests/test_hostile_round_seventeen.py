@@ -259,3 +259,18 @@ def test_the_same_law_next_to_it_still_runs():
     run = me.simulate(contact, "B", 20.0, "continuum")
     inside = np.isfinite(run["indentation_depth"].values)
     assert np.all(np.isfinite(run["tangential_force"].values[inside]))
+
+
+# --- R5: a [sweep] table with both grid and sets (or neither) was told it "needs one of grid and sets", which reads as
+# "give one more", without saying which were given or what is allowed ---------------------------------------------------
+
+@pytest.mark.parametrize("tables, given", [
+    ('grid = { tau0 = [3e4] }\nsets = [{}]\n', "both given"),
+    ('', "neither given"),
+])
+def test_a_sweep_with_grid_and_sets_says_which_were_given(capsys, tmp_path, tables, given):
+    study = tmp_path / "study.toml"
+    study.write_text('[sweep]\nscenario = "A"\nalpha = 20\nscheduler = "serial"\n' + tables
+                     + '[output]\ndirectory = "out"\n')
+    err = _cli_one_line(capsys, ["sweep", str(study)])
+    assert given in err and "allowed: exactly one of them" in err
