@@ -274,3 +274,19 @@ def test_a_sweep_with_grid_and_sets_says_which_were_given(capsys, tmp_path, tabl
                      + '[output]\ndirectory = "out"\n')
     err = _cli_one_line(capsys, ["sweep", str(study)])
     assert given in err and "allowed: exactly one of them" in err
+
+
+# --- R6: fit_rate_adhesion on a curve that does not see v_ref (a constant force) ended in a raw OverflowError ("math
+# range error"): its log-scaled interval's upper end, exp of the half-width, beyond the double range ------------------
+
+def test_a_rate_fit_that_does_not_see_a_parameter_gives_an_open_interval():
+    paper = me.Parameters.paper()
+    vertical = me.Path(np.array([(0.0, 0.0), (0.0, paper.d_max), (0.0, -200e-6)]), speed=1e-6)
+    times = np.linspace(vertical.first_contact_time(), vertical.duration, 60)
+    law = me.RateDependentAdhesion(paper.dgamma0, paper.dgamma1, 1e-6, 0.6)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        fitted = me.fit_rate_adhesion([me.RateMeasurement(vertical, times, np.ones_like(times))], paper, law)
+    upper = fitted["interval_upper"].sel(parameter="v_ref")
+    assert float(upper) == np.inf and float(fitted["interval_lower"].sel(parameter="v_ref")) >= 0.0
+    assert not np.any(np.isnan(fitted["standard_error"].values))
