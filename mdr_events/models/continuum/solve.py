@@ -35,7 +35,7 @@ from .split_map import SplitAnchorMap
 from .split_solve import commit, new_anchors, split_slip_transition
 from .split_span import SplitSpanIntegrator
 from .state import CONTACT_ENDING, NO_ZONE, Cap, ContactState, Event, EventKind, Regime, Slip, zone_events
-from .tolerances import MAX_RESTARTS, SEGMENT_RESOLUTION, Tolerances, check_tolerances
+from .tolerances import MAX_CHATTER_SPANS, MAX_RESTARTS, SEGMENT_RESOLUTION, Tolerances, check_tolerances
 from .zones import lay_out_zones
 
 
@@ -143,10 +143,10 @@ class RestartGuard:
             self.chattering += 1
         elif step > 0.0:
             self.chattering = 0
-        if self.chattering > MAX_RESTARTS:
+        if self.chattering > MAX_CHATTER_SPANS:
             raise ValueError(f"the friction law {self.friction!r} is not allowed for the continuum method on this "
                              f"path: from t = {state.t:.12g} s on its slip zones change every {step:.3g} s, below "
-                             f"the {SEGMENT_RESOLUTION:g} of the time the events are resolved to ({MAX_RESTARTS} "
+                             f"the {SEGMENT_RESOLUTION:g} of the time the events are resolved to ({MAX_CHATTER_SPANS} "
                              f"times in a row, contact radius {state.radius:.3g} m); allowed: method='discrete', or "
                              "a friction law whose zones the continuum resolves (another mu)")
         self.stalled = self.stalled + 1 if state.t <= self.last else 0
