@@ -192,7 +192,7 @@ OUTPUT_TIMES_ALLOWED = "a non-empty, strictly increasing 1-D grid of finite time
 
 
 def check_output_times(name: str, value: Any) -> np.ndarray:
-    """``value`` as a read-only grid of output times (:data:`OUTPUT_TIMES_ALLOWED`); else ``TypeError`` /
+    """``value`` as a read-only grid of output times (``OUTPUT_TIMES_ALLOWED``); else ``TypeError`` /
     ``ValueError`` naming ``name``."""
     times = real_array(name, value, "a strictly increasing 1-D grid of finite times >= 0 (s)")
     if times.ndim != 1 or times.size == 0 or not np.all(np.isfinite(times)) or times[0] < 0 \

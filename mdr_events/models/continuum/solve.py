@@ -129,7 +129,7 @@ def _stored_anchors(model: ContinuumModel, path: Path) -> AnchorMap | SplitAncho
 
 class RestartGuard:
     """Counts passes that do not advance in time, and passes in a row that advance by less than the event times are
-    resolved to (:data:`~.tolerances.SEGMENT_RESOLUTION` of the time): too many of the first mean the solver is
+    resolved to (``SEGMENT_RESOLUTION`` of the time): too many of the first mean the solver is
     stuck; of the second, that the slip zones chatter (a zone opening at an edge and leaving through it again and
     again, each a span of ~1e-12 of the time: the cone under Coulomb's law alone at mu = 1.5e6 in scenario B, 4e-9 s
     apart from t = 1177 s, 4e5 spans to the pull-off; tens of minutes), which is refused with what to do instead."""

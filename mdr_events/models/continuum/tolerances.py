@@ -41,7 +41,7 @@ MIN_STEPS_PER_SPAN = 8
 #: Restarts allowed at one instant before the solver reports it is stuck (each restart handles one event).
 MAX_RESTARTS = 50
 #: Spans in a row, each shorter than SEGMENT_RESOLUTION of the time, after which the slip zones are taken to chatter
-#: and the run is refused (:class:`~mdr_events.models.continuum.solve.RestartGuard`). Runs that end were seen with
+#: and the run is refused (``RestartGuard`` of ``continuum.solve``). Runs that end were seen with
 #: up to 3215 in a row (a power law c r^3 under Coulomb's law, mu = 1e5, scenario B at 80°: 4.6 s in all), the
 #: chatter that did not end (a cone at mu = 1e6, scenario B at 20°) needed 4e5 to reach the pull-off: six times the
 #: most seen in a run that ends, a few seconds of spans.
