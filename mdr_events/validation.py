@@ -187,6 +187,21 @@ def real_array(name: str, value: Any, allowed: str) -> np.ndarray:
     return array.astype(float)
 
 
+#: What a grid of output times may be (``Continuum(t=...)``, ``run_continuum(times=...)``).
+OUTPUT_TIMES_ALLOWED = "a non-empty, strictly increasing 1-D grid of finite times >= 0 (s)"
+
+
+def check_output_times(name: str, value: Any) -> np.ndarray:
+    """``value`` as a read-only grid of output times (``OUTPUT_TIMES_ALLOWED``); else ``TypeError`` /
+    ``ValueError`` naming ``name``."""
+    times = real_array(name, value, "a strictly increasing 1-D grid of finite times >= 0 (s)")
+    if times.ndim != 1 or times.size == 0 or not np.all(np.isfinite(times)) or times[0] < 0 \
+            or np.any(np.diff(times) <= 0):
+        raise ValueError(f"{name}={shown(value)} is not allowed; allowed: {OUTPUT_TIMES_ALLOWED}")
+    times.setflags(write=False)
+    return times
+
+
 def check_choice(name: str, value: Any, allowed: Collection) -> None:
     """Raise ``ValueError`` unless ``value`` is one of ``allowed``.
 

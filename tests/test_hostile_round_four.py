@@ -245,7 +245,7 @@ def test_a_store_goes_where_a_file_would(tmp_path):
     (lambda: me.Paths(None), TypeError, "paths=None (NoneType) is not allowed"),
     (lambda: me.Scenario(np.array(["A", "B"])), ValueError, "is not allowed"),
     (lambda: me.sweep({"tau0": [3e4]}, "A", 20.0, base=PAPER, scheduler="tcp://"), ValueError,
-     "scheduler='tcp://' cannot be reached"),
+     "scheduler='tcp://' is not allowed: missing port number"),
     (lambda: me.simulate(CONTACT, "A", "20"), TypeError, "alpha='20' (of str values) is not allowed"),
     (lambda: me.simulate(CONTACT, "A", me.Continuum(), method="discrete"), ValueError, "allowed: one method"),
     (lambda: me.Paths.named_by([me.Path([(0.0, 0.0), (0.0, 1e-4)], 1e-6)], -1.0, 1e-6), ValueError, "d_max=-1.0"),

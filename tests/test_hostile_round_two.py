@@ -143,7 +143,7 @@ def test_a_fit_to_curves_that_are_all_zero_is_refused_in_one_line(capsys, tmp_pa
 
 def test_an_unseen_log_scaled_parameter_s_interval_is_0_to_inf():
     """A half-width beyond what exp takes: the interval (0, inf), not an OverflowError."""
-    from mdr_events.analysis.fit import _scaled_or_inf, LOG_LARGEST
+    from mdr_events.analysis.fit import scaled_or_inf as _scaled_or_inf, LOG_LARGEST
     assert _scaled_or_inf(1e300, 1e300) == float("inf") and _scaled_or_inf(2.0, 3.0) == 6.0
     assert LOG_LARGEST == pytest.approx(709.78, abs=0.01)
 

@@ -47,6 +47,10 @@ LOOPBACK_DASHBOARD = "127.0.0.1:0"
 ADDRESS_PROTOCOLS = ("tcp",)
 #: Protocols of dask's schedulers that need a setup of their own (certificates, UCX), refused with that reason.
 SETUP_PROTOCOLS = ("tls", "ucx", "ws", "wss")
+#: The ports a scheduler's address may name (0 is no port to connect to; 65535 is TCP's largest).
+ADDRESS_PORTS = (1, 65535)
+#: How long a client that failed to reach its scheduler is given to close (it holds no connection: it closes at once).
+FAILED_CLIENT_CLOSE_TIMEOUT = 5.0
 #: What ``scheduler`` may be, for messages.
 SCHEDULER_ALLOWED = ("'serial', 'local', a dask scheduler's address such as 'tcp://host:8786', a "
                      "distributed.Client, a concurrent.futures.Executor, or None")
@@ -98,9 +102,52 @@ def check_scheduler(scheduler, workers: int | None) -> None:
                if protocol in SETUP_PROTOCOLS else f"{protocol}:// is no protocol of a dask scheduler")
         raise ValueError(f"scheduler={scheduler!r} is not allowed: {why}; allowed: an address of " + " or ".join(
             f"{name}://" for name in ADDRESS_PROTOCOLS))
+    if protocol is not None:
+        check_address(scheduler)
     if workers is not None and scheduler not in ("local", None):
         raise ValueError(f"workers={workers} is not allowed with scheduler={shown(scheduler)}; allowed: with "
                          "scheduler='local' (any other engine has its own workers)")
+
+
+def check_address(scheduler: str) -> None:
+    """Refuse a ``tcp://`` address that names no host and port (``"tcp://"``, ``"tcp://host"``, a port out of
+    range), in dask's own reading of it (``distributed.comm.addressing``), before any client is made: a
+    ``distributed.Client`` of such an address made itself the process's default client before it failed, and stayed
+    so, "connecting" to nothing, while anything held its error (every later ``to_netcdf`` of the process then asked
+    it for a lock, and failed). Without ``distributed`` the address is left to :func:`open_executor` to refuse."""
+    if importlib.util.find_spec("distributed") is None:
+        return
+    from distributed.comm.addressing import parse_address, parse_host_port
+
+    allowed = (f"allowed: an address tcp://host:port of a running dask scheduler, a port from {ADDRESS_PORTS[0]} "
+               f"to {ADDRESS_PORTS[1]} (such as 'tcp://127.0.0.1:8786')")
+    try:
+        protocol, location = parse_address(scheduler, strict=True)
+        host, port = parse_host_port(location)
+    except ValueError as error:
+        raise ValueError(f"scheduler={scheduler!r} is not allowed: {error}; {allowed}") from None
+    if protocol not in ADDRESS_PROTOCOLS:
+        raise ValueError(f"scheduler={scheduler!r} is not allowed: it names the protocol {protocol!r}; {allowed}")
+    if not host or any(character.isspace() for character in scheduler):
+        raise ValueError(f"scheduler={scheduler!r} is not allowed: it names no host (or has blanks); {allowed}")
+    if not ADDRESS_PORTS[0] <= port <= ADDRESS_PORTS[1]:
+        raise ValueError(f"scheduler={scheduler!r} is not allowed: port {port} is out of range; {allowed}")
+
+
+def _close_failed_client(distributed, before) -> None:
+    """Close the client that a failed ``distributed.Client(address)`` left as the process's default (it registers
+    itself before it connects, and only some failures close it), so that nothing is left "connecting": later
+    computations and ``to_netcdf`` of the process would use it; ``before`` is the default client before (the
+    caller's, left alone)."""
+    try:
+        leftover = distributed.default_client()
+    except ValueError:  # (none)
+        return
+    if leftover is not before:
+        try:
+            leftover.close(timeout=FAILED_CLIENT_CLOSE_TIMEOUT)
+        except Exception:  # (closing what never connected: a failure here is no news to the user)  # noqa: BLE001
+            logging.getLogger(__name__).debug("a failed client did not close", exc_info=True)
 
 
 def _distributed(scheduler):
@@ -200,11 +247,12 @@ def open_executor(scheduler=None, workers: int | None = None) -> Iterator[concur
         distributed = _distributed(scheduler)
         import dask
 
-        before = dask.config.get("scheduler", None)
+        before, client_before = dask.config.get("scheduler", None), _active_client()
         try:
             client = distributed.Client(scheduler)
-        except (OSError, ValueError, TypeError) as error:  # (no scheduler there, or no address: 'tcp://' has no port)
-            _restore_dask_scheduler(before)  # (a client that failed to start left itself dask's scheduler)
+        except (OSError, ValueError, TypeError) as error:  # (no scheduler there)
+            _close_failed_client(distributed, client_before)  # (a client that failed left itself the default,
+            _restore_dask_scheduler(before)  # and dask's scheduler)
             raise ValueError(f"scheduler={scheduler!r} cannot be reached ({type(error).__name__}: {error}); allowed: the "
                              "address of a running dask scheduler, or 'local' / 'serial'") from None
         with client:

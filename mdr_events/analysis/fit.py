@@ -45,7 +45,7 @@ from mdr_events.analysis.fit_data import (FITTED_QUANTITIES, NOISE_FLOOR_SHARE, 
 from mdr_events.analysis.fit_diagnostics import (BOUND_SHARE, CONFIDENCE, CONTACT_NOISE_MULTIPLE, CONTACT_TIME_SHARE,
                                                  FADE_MULTIPLE, LOG_LARGEST, MAGNITUDE_FACTOR, MISFIT_RMS,
                                                  POOR_STANDARD_ERROR, RCOND, STRONG_CORRELATION, TANGENTIAL_ONLY,
-                                                 Identifiability, ParameterEstimate, _scaled_or_inf, effective_moduli,
+                                                 Identifiability, ParameterEstimate, scaled_or_inf, effective_moduli,
                                                  fit_warnings, identifiability_notes, identifiability_of,
                                                  natural_intervals)
 from mdr_events.analysis.fit_parameters import (FREE_NAMES, FRICTION_NAME, LOG_SCALED, NU_MARGIN, OFFSET_BOUND_REACH,

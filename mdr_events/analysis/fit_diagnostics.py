@@ -33,7 +33,7 @@ from mdr_events.analysis.fit_parameters import LOG_SCALED, FreeParameters
 from mdr_events.analysis.fit_problem import FD_STEP
 from mdr_events.parameters import Parameters
 
-__all__ = ["Identifiability", "ParameterEstimate", "identifiability_of", "identifiability_notes", "fit_warnings",
+__all__ = ["exp_or_inf", "scaled_or_inf", "Identifiability", "ParameterEstimate", "identifiability_of", "identifiability_notes", "fit_warnings",
            "natural_intervals", "effective_moduli"]
 
 #: Singular values below this share of the largest are directions the data do not see: the Jacobian's
@@ -237,7 +237,13 @@ def fit_warnings(measurement: Measurement, model: ModelCurves, rms: Mapping[str,
 LOG_LARGEST = math.log(sys.float_info.max)
 
 
-def _scaled_or_inf(value: float, factor: float) -> float:
+def exp_or_inf(exponent: float) -> float:
+    """``exp(exponent)``, ``inf`` where it overflows (the upper end of a log-scaled parameter's interval that the
+    data do not see: ``math.exp`` raised ``OverflowError``)."""
+    return math.exp(exponent) if exponent < LOG_LARGEST else math.inf
+
+
+def scaled_or_inf(value: float, factor: float) -> float:
     """``value * factor`` of two non-negative numbers, ``inf`` where it overflows."""
     with np.errstate(over="ignore"):
         product = float(np.float64(value) * np.float64(factor))
@@ -271,9 +277,9 @@ def natural_intervals(free: FreeParameters, theta: np.ndarray, standard_error: n
         half = quantile * standard_error[j]
         if name in LOG_SCALED:
             # (a parameter the data do not see has a half-width beyond what exp takes: its interval is (0, inf))
-            natural_error.append(_scaled_or_inf(value[j], standard_error[j]))
+            natural_error.append(scaled_or_inf(value[j], standard_error[j]))
             lower.append(value[j] * math.exp(-half) if half < LOG_LARGEST else 0.0)
-            upper.append(_scaled_or_inf(value[j], math.exp(half)) if half < LOG_LARGEST else math.inf)
+            upper.append(scaled_or_inf(value[j], math.exp(half)) if half < LOG_LARGEST else math.inf)
         else:
             scale = free.scale(name)
             natural_error.append(scale * standard_error[j])

@@ -26,6 +26,7 @@ import numpy as np
 import xarray as xr
 from scipy import optimize, stats
 
+from mdr_events.analysis.fit_diagnostics import exp_or_inf, scaled_or_inf
 from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS, check_rate_factor
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
@@ -329,8 +330,8 @@ def _result(solution, names, free, values_of, measurements, forces, weights, sol
         if name in _LOG_SCALED:  # (an offset or n: linear)
             estimate.append(natural[name])
             low.append(math.exp(centre - spread))
-            high.append(math.exp(centre + spread))
-            error[index] = natural[name] * error[index]  # to first order, in the unit
+            high.append(exp_or_inf(centre + spread))  # (inf where the data do not see it: a raw OverflowError)
+            error[index] = scaled_or_inf(natural[name], error[index])  # to first order, in the unit
         else:
             estimate.append(centre)
             low.append(centre - spread)

@@ -158,8 +158,9 @@ def check_computation(document: dict[str, Any], where: str) -> None:
         raise StudyError(f"{where}: a [path] needs a [simulation] table (method, dx, ...), a [validate] table, a "
                          "[fit] table or a [sweep] table")
     if "sweep" in document and ("grid" in document["sweep"]) == ("sets" in document["sweep"]):
+        given = "both" if "grid" in document["sweep"] else "neither"
         raise StudyError(f"{where}: [sweep] needs one of grid (names to values: the outer product) and sets "
-                         "(a list of parameter sets)")
+                         f"(a list of parameter sets), {given} given; allowed: exactly one of them")
     simulation = document.get("simulation", {})
     if "path" in document and ("scenario" in simulation or "alpha" in simulation):
         raise StudyError(f"{where}: [simulation] scenario and alpha are not allowed with a [path] "

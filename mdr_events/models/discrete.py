@@ -78,7 +78,7 @@ from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.models.rate_springs import rate_edge_counts
 from mdr_events.models.spring_media import HalfSpaceSprings, Springs, springs_of
 from mdr_events.contact.layer import HALF_SPACE, Layer
-from mdr_events.models.kernel_model import KernelModel, as_kernel_model
+from mdr_events.models.kernel_model import KernelModel, as_kernel_model, check_kernel_run
 
 __all__ = ["run_discrete", "paraboloid_profile", "MIN_SPRINGS_IN_CONTACT", "Thresholds", "THRESHOLD_RULES",
            "EDGE_RULES", "spring_thresholds", "check_thresholds_known", "threshold_counts"]
@@ -597,6 +597,9 @@ def run_discrete(
         ``contact_radius``, ``sliding_fraction``, ``springs_in_contact``.
     """
     params, profile, friction, adhesion, layer = as_kernel_model(model)
+    paths, limits = check_kernel_run(paths, limits)
+    dx = check_real("dx", dx, "a spacing > 0 (m)", lambda value: value > 0)
+    dt = check_real("dt", dt, "a finite time step > 0 (s)", lambda value: value > 0)
     indenter = indenters.check_simulated_profile(profile) if not callable(profile) else None
     friction, adhesion = as_friction_law(friction), law_of(params, adhesion)
     check_thresholds_known(adhesion)

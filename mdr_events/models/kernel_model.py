@@ -15,11 +15,13 @@ from typing import NamedTuple
 from mdr_events.contact.adhesion import AdhesionLaw
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.layer import HALF_SPACE, Layer
+from mdr_events.limits import Limits, check_limits
 from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 from mdr_events.validation import shown
 
-__all__ = ["KernelModel", "as_kernel_model"]
+__all__ = ["KernelModel", "as_kernel_model", "check_kernel_run"]
 
 
 class KernelModel(NamedTuple):
@@ -66,7 +68,46 @@ def as_kernel_model(model: KernelModel | Parameters) -> KernelModel:
         Anything else, named with what is allowed.
     """
     if isinstance(model, KernelModel):
+        if not isinstance(model.params, Parameters):
+            raise TypeError(f"model.params={shown(model.params)} ({type(model.params).__name__}) is not allowed; "
+                            "allowed: a mdr_events.Parameters")
         return model
     if isinstance(model, Parameters):
         return KernelModel(model)
     raise TypeError(f"model={shown(model)} is not allowed; allowed: a KernelModel, or Parameters for the paper's model")
+
+
+def check_kernel_run(paths, limits) -> tuple[list[Path], Limits]:
+    """What a kernel (:func:`~mdr_events.models.discrete.run_discrete`,
+    :func:`~mdr_events.models.continuum.solve.run_continuum`) runs along and within, checked before anything is
+    computed: they were read as they came, and a path that was not one, or limits that were not, failed deep inside
+    (``AttributeError``, ``ZeroDivisionError``, NumPy's "zero-size array").
+
+    Parameters
+    ----------
+    paths : list of Path
+        One case per path: a non-empty list or tuple of :class:`~mdr_events.models.paths.Path`.
+    limits : Limits
+        The resource limits.
+
+    Returns
+    -------
+    tuple of (list of Path, Limits)
+        The paths as a list, and the limits.
+
+    Raises
+    ------
+    TypeError
+        ``paths`` not a list or tuple of paths (a single path among them), ``limits`` not a ``Limits``.
+    ValueError
+        No path.
+    """
+    allowed = "a non-empty list of mdr_events.Path (one case each)"
+    if not isinstance(paths, (list, tuple)):
+        raise TypeError(f"paths={shown(paths)} ({type(paths).__name__}) is not allowed; allowed: {allowed}")
+    if not paths:
+        raise ValueError(f"paths={shown(paths)} is not allowed; allowed: {allowed}")
+    for index, path in enumerate(paths):
+        if not isinstance(path, Path):
+            raise TypeError(f"paths[{index}]={shown(path)} ({type(path).__name__}) is not allowed; allowed: {allowed}")
+    return list(paths), check_limits(limits)

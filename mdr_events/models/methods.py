@@ -28,6 +28,7 @@ from mdr_events.contact.model import Contact
 from mdr_events.limits import Limits
 from mdr_events.models import indenters
 from mdr_events.models.continuum import Tolerances, run_continuum
+from mdr_events.models.continuum.tolerances import check_tolerances
 from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.media import check_law
 from mdr_events.models.continuum.rate_run import check_rate_layer, run_rate_continuum
@@ -41,7 +42,7 @@ from mdr_events.models.job import ModelJob
 from mdr_events.models.motion import Cases
 from mdr_events.models.paths import Path
 from mdr_events.models.simulation_schema import SIMULATION_CONTENT, continuum_dataset, simulation_dataset
-from mdr_events.validation import check_count, check_real, real_array, shown
+from mdr_events.validation import check_count, check_output_times, check_real, shown
 
 __all__ = ["Discrete", "Continuum", "Method", "METHODS", "as_method", "check_time_step", "DEFAULT_DX",
            "DEFAULT_STEPS", "DEFAULT_SAMPLES", "MIN_STEPS_PER_SEGMENT"]
@@ -248,21 +249,14 @@ class Continuum:
     t: np.ndarray | None = None
 
     def __post_init__(self) -> None:
-        if not isinstance(self.tolerances, Tolerances):
-            raise TypeError(f"tolerances={self.tolerances!r} is not allowed; allowed: a mdr_events.Tolerances")
+        check_tolerances(self.tolerances)
         if self.samples is not None and self.t is not None:  # (t was used and samples ignored)
             raise ValueError(f"t={shown(self.t)} and samples={shown(self.samples)} are not allowed together; allowed: "
                              "one of them (give t or samples, not both)")
         object.__setattr__(self, "samples", DEFAULT_SAMPLES if self.samples is None else
                            check_count("samples", self.samples, 2))
         if self.t is not None:
-            allowed = "a non-empty, strictly increasing 1-D grid of finite times >= 0 (s)"
-            times = real_array("t", self.t, "a strictly increasing 1-D grid of finite times >= 0 (s)")
-            if times.ndim != 1 or times.size == 0 or not np.all(np.isfinite(times)) or times[0] < 0 \
-                    or np.any(np.diff(times) <= 0):
-                raise ValueError(f"t={shown(self.t)} is not allowed; allowed: {allowed}")
-            times.setflags(write=False)
-            object.__setattr__(self, "t", times)
+            object.__setattr__(self, "t", check_output_times("t", self.t))
 
     def __eq__(self, other) -> bool:  # (its output times are an array: compared by value)
         if not isinstance(other, Continuum):

@@ -1097,7 +1097,7 @@ def _derive_adhesive_virgin_curve(add: AddRelation, profile: sp.Expr, boundary: 
 #: Keys of the relations of the rate-dependent adhesion law (:func:`derive_rate_dependent_adhesion`).
 RATE_ADHESION_KEYS = ("energy_release_rate", "receding_work_of_adhesion", "advancing_work_of_adhesion",
                       "receding_edge_speed", "advancing_edge_speed", "paraboloid_release_rate",
-                      "flat_punch_detachment_time")
+                      "flat_punch_detachment_time", "let_go_depth", "rate_springs_record_force")
 
 #: The edge's reference speed and its speed ``|ȧ|`` (m/s), the energy release rate ``Γ`` (J/m²), the works at rest.
 v_ref = sp.Symbol("v_ref", positive=True)

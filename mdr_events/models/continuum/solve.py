@@ -9,17 +9,19 @@ of :mod:`~.state`), logging the events. Path corners start a new plan.
 from __future__ import annotations
 
 import math
+import numbers
 
 import numpy as np
 
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.parameters import Parameters
+from mdr_events.validation import check_count, check_output_times
 from mdr_events.models.paths import Path
 from mdr_events.models.indenters import SimulatedProfile, check_reach, check_simulated_profile
 from mdr_events.contact.adhesion import AdhesionLaw
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.contact.layer import HALF_SPACE, Layer
-from mdr_events.models.kernel_model import KernelModel, as_kernel_model
+from mdr_events.models.kernel_model import KernelModel, as_kernel_model, check_kernel_run
 from .anchors import AnchorMap, Piece
 from .compressed import attach_compressed_zone
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
@@ -33,7 +35,7 @@ from .split_map import SplitAnchorMap
 from .split_solve import commit, new_anchors, split_slip_transition
 from .split_span import SplitSpanIntegrator
 from .state import CONTACT_ENDING, NO_ZONE, Cap, ContactState, Event, EventKind, Regime, Slip, zone_events
-from .tolerances import MAX_RESTARTS, Tolerances
+from .tolerances import MAX_CHATTER_SPANS, MAX_RESTARTS, SEGMENT_RESOLUTION, Tolerances, check_tolerances
 from .zones import lay_out_zones
 
 
@@ -100,7 +102,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
         state.t = max(segment.t0, solution.t_contact)
         if not state.running or state.t >= segment.t1:
             continue
-        guard = RestartGuard()
+        guard = RestartGuard(model.friction)
         while state.running and state.t < segment.t1:
             guard.check(state)
             plan = plan_span(model, state, segment)
@@ -126,12 +128,27 @@ def _stored_anchors(model: ContinuumModel, path: Path) -> AnchorMap | SplitAncho
 
 
 class RestartGuard:
-    """Counts passes that do not advance in time; too many mean the solver is stuck."""
+    """Counts passes that do not advance in time, and passes in a row that advance by less than the event times are
+    resolved to (``SEGMENT_RESOLUTION`` of the time): too many of the first mean the solver is
+    stuck; of the second, that the slip zones chatter (a zone opening at an edge and leaving through it again and
+    again, each a span of ~1e-12 of the time: the cone under Coulomb's law alone at mu = 1.5e6 in scenario B, 4e-9 s
+    apart from t = 1177 s, 4e5 spans to the pull-off; tens of minutes), which is refused with what to do instead."""
 
-    def __init__(self) -> None:
-        self.stalled, self.last = 0, -math.inf
+    def __init__(self, friction: FrictionLaw | None = None) -> None:
+        self.stalled, self.last, self.chattering, self.friction = 0, -math.inf, 0, friction
 
     def check(self, state: ContactState) -> None:
+        step = state.t - self.last
+        if 0.0 < step < SEGMENT_RESOLUTION * abs(state.t):
+            self.chattering += 1
+        elif step > 0.0:
+            self.chattering = 0
+        if self.chattering > MAX_CHATTER_SPANS:
+            raise ValueError(f"the friction law {self.friction!r} is not allowed for the continuum method on this "
+                             f"path: from t = {state.t:.12g} s on its slip zones change every {step:.3g} s, below "
+                             f"the {SEGMENT_RESOLUTION:g} of the time the events are resolved to ({MAX_CHATTER_SPANS} "
+                             f"times in a row, contact radius {state.radius:.3g} m); allowed: method='discrete', or "
+                             "a friction law whose zones the continuum resolves (another mu)")
         self.stalled = self.stalled + 1 if state.t <= self.last else 0
         if self.stalled > MAX_RESTARTS:
             zones = ", ".join(f"{cap.name.lower()} cap {state.zones[cap].slip.value}" for cap in Cap)
@@ -371,7 +388,12 @@ def run_continuum(model: KernelModel | Parameters, paths: list[Path], times: np.
     ResourceLimitError
         More samples or memory than ``limits`` allows.
     """
-    samples = times if isinstance(times, int) else None
+    paths, limits = check_kernel_run(paths, limits)
+    check_tolerances(tolerances)
+    if isinstance(times, numbers.Integral) and not isinstance(times, (bool, np.bool_)):
+        samples, times = check_count("times", times, 2), None
+    else:
+        samples, times = None, check_output_times("times", times)
     n_time = samples if samples is not None else len(times)
     limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
                  memory=n_time * len(paths) * BYTES_PER_SAMPLE)
@@ -380,7 +402,6 @@ def run_continuum(model: KernelModel | Parameters, paths: list[Path], times: np.
     if samples is not None:
         times = sample_times([solution.end_time for solution in solutions],
                              [path.duration - path.first_contact_time() for path in paths], samples)
-    times = np.asarray(times, dtype=float)
     per_case = [evaluate(solution, times) for solution in solutions]
     out = {name: np.stack([case[name] for case in per_case]) for name in per_case[0]}
     out["time"] = times

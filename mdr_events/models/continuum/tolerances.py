@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mdr_events.validation import check_real
+from mdr_events.validation import check_real, shown
 
 #: A velocity component below this share of the speed is taken as zero (a segment that changes its
 #: depth by 1e-90 m over 0.3 mm is a pinned slide: its growth ratio vx/vd would overflow the anchor map).
@@ -40,6 +40,12 @@ SEGMENT_RESOLUTION = 1e-10
 MIN_STEPS_PER_SPAN = 8
 #: Restarts allowed at one instant before the solver reports it is stuck (each restart handles one event).
 MAX_RESTARTS = 50
+#: Spans in a row, each shorter than SEGMENT_RESOLUTION of the time, after which the slip zones are taken to chatter
+#: and the run is refused (``RestartGuard`` of ``continuum.solve``). Runs that end were seen with
+#: up to 3215 in a row (a power law c r^3 under Coulomb's law, mu = 1e5, scenario B at 80°: 4.6 s in all), the
+#: chatter that did not end (a cone at mu = 1e6, scenario B at 20°) needed 4e5 to reach the pull-off: six times the
+#: most seen in a run that ends, a few seconds of spans.
+MAX_CHATTER_SPANS = 20_000
 #: Machine epsilon of the floats used.
 EPS = float(np.finfo(float).eps)
 
@@ -83,3 +89,11 @@ class Tolerances:
                                    lambda value: EPS <= value <= MAX_RADIUS_RTOL)}
         for name, (words, valid) in allowed.items():
             object.__setattr__(self, name, check_real(f"Tolerances.{name}", getattr(self, name), words, valid))
+
+
+def check_tolerances(tolerances) -> Tolerances:
+    """``tolerances`` if it is a :class:`Tolerances`; else ``TypeError`` naming it (``Continuum(tolerances=...)``
+    and :func:`~mdr_events.models.continuum.solve.run_continuum` take them)."""
+    if not isinstance(tolerances, Tolerances):
+        raise TypeError(f"tolerances={shown(tolerances)} is not allowed; allowed: a mdr_events.Tolerances")
+    return tolerances
