@@ -19,6 +19,7 @@ import numpy as np
 from mdr_events.contact.indenters import Paraboloid, PowerLaw
 from mdr_events.contact.layer import Layer
 from mdr_events.contact.model import Contact
+from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.layer.compliance import LAMBDA_MAX
 from mdr_events.theory.layer.relations import _abel_factor, _power_law, branch_depth
 from mdr_events.validation import SCALE_MAX, SCALE_MIN, shown
@@ -272,6 +273,11 @@ def branch_jump_off(contact: Contact, dgamma: float) -> tuple[float, float]:
     E_star, nu, layer = layer_material(contact)
     if dgamma == 0.0:  # (the branch d = g(a) rises from the first touch: its least depth is 0, at a = 0)
         return 0.0, 0.0
+    if layer.is_half_space:  # (the closed form: Brent's minimum of a flat least depth has its radius to ~sqrt(eps))
+        from mdr_events.theory.branches import jump_off
+
+        found = jump_off(contact.parameters(PAPER_D_MAX, PAPER_V), dgamma, contact.profile)
+        return float(found["depth"]), float(found["contact_radius"])
     low, high = _radius_scale(contact, dgamma, 0.0)
     logs = np.linspace(math.log(low), math.log(high), _SCAN_POINTS)
 

@@ -223,12 +223,14 @@ def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201,
     loading = np.linspace(0.0, d_max, samples)
     a_max = float(stable_radius(contact, low, np.array([d_max]))[0])
     unpinned = float(branch_depth(a_max, contact.indenter, E_star, nu, high, layer))
-    least, _ = branch_jump_off(contact, high)
+    least, fold = branch_jump_off(contact, high)
     pinned = np.linspace(d_max, unpinned, samples)
     shrinking = np.linspace(unpinned, least, samples)
     depth = np.concatenate([loading, pinned, shrinking])
     radius = np.concatenate([stable_radius(contact, low, loading), np.full(samples, a_max),
                              stable_radius(contact, high, shrinking)])
+    if layer.is_half_space:  # (the last depth is the fold's: its radius the closed form's, not a bisection there,
+        radius[-1] = fold  # which finds it to ~sqrt(eps) and moved a figure's pixel when the inputs moved by an ulp)
     stage = np.repeat(["loading", "pinned", "shrinking"], samples)
     variables = _variables(contact, depth, radius, ("sample",))
     variables["depth"] = xr.Variable(("sample",), depth, {"units": "m", "long_name": _VARIABLES["depth"][1]})
