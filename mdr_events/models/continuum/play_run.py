@@ -1,0 +1,179 @@
+"""The continuum method with every spring's play operator on its own (:mod:`.play_springs`): Coulomb's part of the
+friction law on a layer of finite thickness, without adhesion.
+
+:func:`run_play_springs` fills what :func:`~mdr_events.models.continuum.solve.run_continuum` fills: the normal problem
+(radius, ``F_N``, area, the edge's events and extrema) is the spans' run of the same contact with frictionless springs
+(it does not depend on the friction law), and ``F_x``, the sliding fraction, the springs' events and the extrema of
+``F_x`` are the per-spring route's. The log holds the edge's events and the path's corners of the spans' run and, per
+contact, the slip onset (the first time a spring of positive measure is at a cap: ``sliding`` first positive on the
+output grid, then bisected to :data:`EVENT_HALVINGS`) and full slip (every spring at a cap, found the same way). The
+extrema of ``F_x`` are the largest and least sample refined by bounded minimisation between its neighbours.
+"""
+
+from __future__ import annotations
+
+
+import numpy as np
+from scipy.optimize import minimize_scalar
+
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.models.kernel_model import KernelModel
+
+from .extrema import extremum_names, solution_extrema
+from .play_springs import PlaySprings, spring_line
+from .solve import run_continuum
+from .state import Event, EventKind
+from .tolerances import Tolerances
+
+__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL"]
+
+#: Halvings of an event's bracket between two samples (2^-60 of it: below the clock's resolution).
+EVENT_HALVINGS = 60
+#: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
+FULL_SHARE = 1e-12
+#: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
+EXTREMUM_XTOL = 1e-12
+#: The springs' events the spans' frictionless run logs and this route replaces.
+_SPRING_EVENTS = frozenset({EventKind.SLIP_ONSET, EventKind.FULL_SLIP, EventKind.RE_STICK, EventKind.FRONT_AT_CENTRE,
+                            EventKind.FRONT_AT_EDGE})
+#: The frictionless law of the normal run.
+_FRICTIONLESS = FrictionLaw("coulomb", mu=0.0)
+
+
+def takes_play_springs(model: KernelModel) -> bool:
+    """Whether the continuum runs ``model`` spring by spring: Coulomb's part on a finite layer, without adhesion.
+
+    Parameters
+    ----------
+    model : KernelModel
+        The flat model.
+
+    Returns
+    -------
+    bool
+        Whether :func:`run_play_springs` runs it.
+    """
+    adhesive = model.params.dgamma0 != 0.0 or model.params.dgamma1 != 0.0
+    return not model.layer.is_half_space and model.friction.coulomb_mu > 0.0 and not adhesive
+
+
+def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = Tolerances(),
+                     limits: Limits = DEFAULT_LIMITS) -> dict:
+    """Every path solved: the normal problem by the spans, the springs by their own play operators (module docstring).
+
+    Parameters
+    ----------
+    model : KernelModel
+        The flat model (no adhesion).
+    paths : list of Path
+        One path per case.
+    times : numpy.ndarray or int
+        The output times (s from first contact), or their number.
+    tolerances : Tolerances, optional
+        The spans' tolerances.
+    limits : Limits, optional
+        The resource limits.
+
+    Returns
+    -------
+    dict
+        As :func:`~mdr_events.models.continuum.solve.run_continuum`, with ``extrema``.
+    """
+    normal = model._replace(friction=_FRICTIONLESS)
+    raw = run_continuum(normal, paths, times, tolerances, limits)
+    line = spring_line(model.params, model.profile, model.friction, model.layer)
+    raw["extrema"] = []
+    for case, (path, solution) in enumerate(zip(paths, raw["solutions"])):
+        play = PlaySprings(line, path)
+        start = path.first_contact_time()
+        radius = raw["contact_radius"][case]
+        force, sliding = _samples(play, raw["time"] + start, radius)
+        raw["tangential_force"][case] = np.where(np.isnan(raw["tangential_force"][case]), np.nan, force)
+        raw["sliding_fraction"][case] = np.where(radius > 0, sliding, np.nan)
+        kept = [event for event in solution.events if event.kind not in _SPRING_EVENTS]
+        raw["events"][case] = sorted(kept + _spring_events(play, raw, case, start, solution.events),
+                                     key=lambda event: event.time)
+        extrema = solution_extrema(solution)
+        extrema.update(_force_extrema(play, raw["time"], force, start, path))
+        raw["extrema"].append(extrema)
+    return raw
+
+
+def _samples(play: PlaySprings, times: np.ndarray, radius: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``F_x`` and the sliding fraction (length at a cap over ``a``) at each time in contact (0 and nan elsewhere)."""
+    force, sliding = np.zeros(times.shape), np.full(times.shape, np.nan)
+    for k, time in enumerate(times):
+        if radius[k] > 0:
+            value, _, length = play.state(float(time))
+            a = play.radius(float(time))
+            force[k], sliding[k] = value, min(length / a, 1.0) if a > 0 else np.nan
+    return force, sliding
+
+
+def _spring_events(play: PlaySprings, raw: dict, case: int, start: float, events) -> list[Event]:
+    """The slip onset and full slip of each contact (module docstring), as events on the clock from first contact."""
+    contacts = [event.time for event in events if event.kind in (EventKind.FIRST_CONTACT, EventKind.RE_CONTACT)]
+    ends = [event.time for event in events if event.kind in (EventKind.PULL_OFF, EventKind.CONTACT_ENDS)]
+    times, sliding = raw["time"], np.nan_to_num(raw["sliding_fraction"][case])
+    out = []
+    for begin in contacts:
+        end = min([time for time in ends if time > begin], default=np.inf)
+        inside = np.flatnonzero((times > begin) & (times <= end))
+        for kind, reached in ((EventKind.SLIP_ONSET, lambda share: share > 0.0),
+                              (EventKind.FULL_SLIP, lambda share: share >= 1.0 - FULL_SHARE)):
+            hit = inside[reached(sliding[inside])]
+            if not hit.size:
+                continue
+            k = int(hit[0])
+            low = times[k - 1] if k - 1 >= 0 and times[k - 1] >= begin else begin
+            when = _bisect(play, low + start, times[k] + start, reached)
+            out.append(_event(play, when, start, kind))
+    return out
+
+
+def _share(play: PlaySprings, time: float) -> float:
+    a = play.radius(time)
+    return play.state(time)[2] / a if a > 0 else 0.0
+
+
+def _bisect(play: PlaySprings, low: float, high: float, reached) -> float:
+    for _ in range(EVENT_HALVINGS):
+        middle = 0.5 * (low + high)
+        if middle in (low, high):
+            break
+        if reached(_share(play, middle)):
+            high = middle
+        else:
+            low = middle
+    return high
+
+
+def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Event:
+    force = play.state(time)[0]
+    return Event(time - start, kind, float(play._d(time)), play.radius(time), float(play._x(time)),
+                 int(np.sign(force)))
+
+
+def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path) -> dict:
+    """The largest and least ``F_x`` (N) and their times (s from first contact): among the samples and the path's
+    corners (where ``F_x`` has kinks), the best refined between its neighbours."""
+    out, duration = {}, path.duration
+    corners = path.corner_times - start
+    corners = corners[(corners > times[0]) & (corners < times[-1])]
+    at_corners = np.array([play.state(float(time) + start)[0] for time in corners])
+    order = np.argsort(np.concatenate([times, corners]), kind="stable")
+    times, force = np.concatenate([times, corners])[order], np.concatenate([force, at_corners])[order]
+    for kind, sign in (("max", 1.0), ("min", -1.0)):
+        k = int(np.argmax(sign * force))
+        value, time = float(force[k]), float(times[k])
+        low, high = times[max(k - 1, 0)], times[min(k + 1, times.size - 1)]
+        if high > low and value != 0.0:
+            found = minimize_scalar(lambda t: -sign * play.state(float(t) + start)[0], bounds=(low, high),
+                                    method="bounded", options={"xatol": EXTREMUM_XTOL * duration})
+            refined = -sign * float(found.fun)
+            if sign * refined > sign * value:
+                value, time = refined, float(found.x)
+        value_name, time_name = extremum_names("tangential_force", kind)
+        out[value_name], out[time_name] = value, time
+    return out

@@ -1,0 +1,372 @@
+r"""Coulomb's part of the friction law spring by spring: every anchor the play operator of its own window.
+
+Each spring at ``ξ`` holds its tangential shift within ``±c(ξ, t)``, ``c = ū(a) + μ ρ(ξ) (d − g(ξ))`` (:mod:`.caps`;
+``ρ = k/k_t``, ``E*/G*`` on the half-space, ``K'/K_t'`` on a layer, as the discrete model's
+:meth:`~mdr_events.models.spring_media.LayerSprings.coulomb_ratios`, derived in
+:func:`~mdr_events.theory.layer_continuum_symbolic.derive_continuum_model`). On the half-space ``ρ`` is one number and
+the springs share a level (:meth:`~.anchors.AnchorMap.seen_by`); on a layer ``μ ρ(ξ) d`` is not separable and no level
+is shared. This module composes each spring's play operator on its own, exactly in time, and integrates the force in
+``ξ`` with the kinks located (route (b) of issue 34's Coulomb part; it takes any per-spring cap, so on the half-space
+it is a third route beside the spans, checked against them).
+
+The anchor of a spring in contact at ``t`` that attached at ``τ`` (the last time ``d`` rose through ``g(ξ)``, without
+adhesion) is the output of the play operator of the window ``[L, U] = [x − c, x + c]`` over ``[τ, t]`` started at
+``x(τ)`` (it attaches with no shift). Where ``L`` and ``U`` are monotone between two times the operator over that
+interval is the clamp at its start followed by the clamp at its end; where ``L`` is convex and ``U`` concave, too (their
+running extremes lie at the interval's ends). Along a path segment ``x`` and ``d`` are linear in time, ``a = g⁻¹(d)``,
+and ``L = x − ū(a(d)) − μρ(d − g)`` is convex wherever ``ū(a(d))`` is concave in ``d`` (the paraboloid's, the power
+laws', the layer's tables in practice; section 6 of the symbolic module), so the anchor is a finite chain of clamps at
+the path's corners. Where the sampled ``ū(a(d))`` of a segment is not concave the chain gains, for every spring, the
+times of its own ``L``'s maximum and ``U``'s minimum there (golden sections, :data:`GOLDEN_STEPS`).
+
+The force ``F_x = 2G* ∫₀ᵃ w(ξ)(x − Y_ξ) dξ`` (``w = k_t/G*``) is summed by Gauss–Legendre on panels of ``[0, a]``
+split where the anchor's provenance (which clamp of its chain last moved it, and to which edge) changes: there the
+anchor has a kink (a slip front, an old front kept in memory); in between it is smooth. A kink is located by
+bisection on the provenance (:data:`KINK_HALVINGS`). The springs at a cap at ``t`` are those whose last clamp is ``t``'s
+own.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, NamedTuple
+
+import numpy as np
+
+from mdr_events.contact.adhesion import Adhesion
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.layer import HALF_SPACE, Layer
+from mdr_events.parameters import Parameters
+
+__all__ = ["SpringLine", "spring_line", "PlaySprings", "PANELS", "NODES", "KINK_HALVINGS", "GOLDEN_STEPS",
+           "CONCAVITY_SAMPLES"]
+
+#: Panels of ``[0, a]`` before the kinks are added.
+PANELS = 8
+#: Gauss–Legendre nodes per panel (between kinks the anchor is smooth: the rule's error falls as ``(width)^(2n)``).
+NODES = 12
+#: Halvings of the bracket of a kink in ``ξ``: below the doubles' resolution of the radius.
+KINK_HALVINGS = 60
+#: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
+KINK_ROUNDS = 6
+#: Steps of a golden section (0.618^80 ≈ 2e-17 of the interval).
+GOLDEN_STEPS = 80
+#: Depths at which a segment's ``ū(a(d))`` is sampled for its concavity.
+CONCAVITY_SAMPLES = 65
+#: A second difference of ``ū(a(d))`` counts as convex above this share of its largest value (round-off).
+CONCAVITY_ROUND_OFF = 1e-12
+_GAUSS = np.polynomial.legendre.leggauss(NODES)
+#: Provenance codes: attached and never moved (plus the segment), a clamp's lower edge, its upper edge
+_ATTACHED, _LOWER, _UPPER = 0, 1, 2
+
+
+class SpringLine(NamedTuple):
+    """What the per-spring route reads of the springs, vectorised in ``ξ`` or the depth."""
+
+    #: ``g(ξ)`` (m)
+    profile: Callable[[np.ndarray], np.ndarray]
+    #: ``w(ξ) = k_t(ξ)/G*``
+    weight: Callable[[np.ndarray], np.ndarray]
+    #: Coulomb's cap per compression ``μ k(ξ)/k_t(ξ)`` (0 without Coulomb's part)
+    ratio: Callable[[np.ndarray], np.ndarray]
+    #: the cap of ``τ0``'s part ``ū(a)`` (m; 0 without it)
+    shift: Callable[[np.ndarray], np.ndarray]
+    #: the contact radius of a depth without adhesion, ``g⁻¹(d)`` (0 at ``d <= 0``)
+    radius: Callable[[np.ndarray], np.ndarray]
+    #: ``G*`` (Pa)
+    G_star: float
+
+
+def spring_line(params: Parameters, profile, friction: FrictionLaw, layer: Layer = HALF_SPACE) -> SpringLine:
+    """The springs of a run without adhesion as the per-spring route reads them: the discrete model's own ``g``,
+    ``k_t/G*`` and Coulomb's ratios (:mod:`~mdr_events.models.spring_media`), the continuum's cap of ``τ0``
+    (:mod:`.media`) and its branch of ``Δγ = 0``.
+
+    Parameters
+    ----------
+    params : Parameters
+        The material and ``τ0``.
+    profile : PowerLaw or None
+        The indenter (``None``: the paraboloid of ``params.R``).
+    friction : FrictionLaw
+        The friction law.
+    layer : Layer, default the half-space
+        The body.
+
+    Returns
+    -------
+    SpringLine
+        The springs.
+    """
+    from mdr_events.models.spring_media import springs_of
+
+    from .caps import caps_of
+    from .media import HALF_SPACE_MEDIUM, layer_medium
+
+    springs = springs_of(params, profile, None, layer)
+    medium = HALF_SPACE_MEDIUM if layer.is_half_space else layer_medium(params, profile, layer)
+    K = caps_of(friction, params, medium).K
+    branch = medium.edge(Adhesion(), params, profile).grow
+
+    def shift(a):
+        return medium.shift(K, np.asarray(a, dtype=float)) if K > 0.0 else np.zeros(np.shape(a))
+
+    def radius(d):
+        d = np.asarray(d, dtype=float)
+        out = np.zeros(d.shape)
+        inside = d > 0.0
+        if np.any(inside):
+            out[inside] = branch.radii(d[inside])
+        return out
+
+    weight = getattr(springs, "tangential_weights", _unit_weights)  # (the half-space's springs weigh 1 each)
+    return SpringLine(springs.profile, weight, lambda xi: springs.coulomb_ratios(xi, friction), shift, radius,
+                      params.G_star)
+
+
+def _unit_weights(xi: np.ndarray) -> np.ndarray:
+    return np.ones(np.shape(xi))
+
+
+class _Chain(NamedTuple):
+    """The clamp times shared by every spring (increasing) and the intervals where each spring gains its own."""
+
+    times: np.ndarray
+    #: ``(start, end)`` of the intervals where ``ū(a(d))`` is not concave (each between two of ``times``)
+    convex: np.ndarray
+
+
+@dataclass
+class PlaySprings:
+    """``F_x`` and the springs at a cap along ``path`` (path clock), every anchor its own play operator (module
+    docstring); without adhesion.
+
+    Parameters
+    ----------
+    line : SpringLine
+        The springs.
+    path : Path
+        The path.
+    """
+
+    line: SpringLine
+    path: object
+
+    def __post_init__(self) -> None:
+        self._corner_t = np.asarray(self.path.corner_times, dtype=float)
+        self._corner_x, self._corner_d = (np.asarray(self.path.waypoints[:, i], dtype=float) for i in (0, 1))
+        self.chain = self._chain()
+
+    # -- kinematics ---------------------------------------------------------------------------------------------
+    def _x(self, t):
+        return np.interp(t, self._corner_t, self._corner_x)
+
+    def _d(self, t):
+        return np.interp(t, self._corner_t, self._corner_d)
+
+    def _chain(self) -> _Chain:
+        """The corners and, on each segment that moves the depth, the subintervals where ``ū(a(d))`` is not concave
+        (their ends join the shared times)."""
+        times, convex = [self._corner_t], []
+        for k in range(len(self._corner_t) - 1):
+            d0, d1 = self._corner_d[k], self._corner_d[k + 1]
+            if d0 == d1 or max(d0, d1) <= 0.0:
+                continue
+            t0, t1 = self._corner_t[k], self._corner_t[k + 1]
+            low = t0 + (t1 - t0) * (max(min(d0, d1), 0.0) - d0) / (d1 - d0) if min(d0, d1) < 0.0 else None
+            start, end = (low, t1) if (low is not None and d1 > d0) else ((t0, low) if low is not None else (t0, t1))
+            grid = np.linspace(start, end, CONCAVITY_SAMPLES)
+            shift = self.line.shift(self.line.radius(self._d(grid)))
+            second = shift[:-2] - 2.0 * shift[1:-1] + shift[2:]
+            flagged = np.flatnonzero(second > CONCAVITY_ROUND_OFF * max(np.max(np.abs(shift)), 1e-300))
+            for j in flagged:
+                convex.append((grid[j], grid[j + 2]))
+                times.append(grid[[j, j + 2]])
+        shared = np.unique(np.concatenate(times))
+        return _Chain(shared, np.array(convex, dtype=float).reshape(-1, 2))
+
+    def _attach_time(self, xi: np.ndarray, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """The last time up to ``t`` at which each spring attached (``d`` rising through ``g(ξ)``) and the segment it
+        attached on (−1: the path started with it in contact)."""
+        g = self.line.profile(xi)
+        when = np.full(xi.shape, -np.inf)
+        segment = np.full(xi.shape, -2)
+        if self._corner_d[0] > 0.0:
+            inside = g < self._corner_d[0]
+            when[inside], segment[inside] = self._corner_t[0], -1
+        for k in range(len(self._corner_t) - 1):
+            d0, d1 = self._corner_d[k], self._corner_d[k + 1]
+            t0, t1 = self._corner_t[k], self._corner_t[k + 1]
+            if not d1 > d0 or t0 > t:
+                continue
+            crossed = (g >= d0) & (g < d1)
+            at = t0 + (t1 - t0) * (g - d0) / (d1 - d0)
+            take = crossed & (at <= t)
+            when[take], segment[take] = at[take], k
+        return when, segment
+
+    def _window(self, xi: np.ndarray, g: np.ndarray, ratio: np.ndarray, times: np.ndarray):
+        """``(L, U)`` of each spring at ``times`` (one per spring, or a column per spring's row)."""
+        x, d = self._x(times), self._d(times)
+        cap = self.line.shift(self.line.radius(d)) + ratio * np.maximum(d - g, 0.0)
+        return x - cap, x + cap
+
+    def _own_times(self, xi, g, ratio, start, t):
+        """Each spring's times of its ``L``'s maximum and ``U``'s minimum on every interval of ``chain.convex``
+        within ``[start, t]`` (``nan`` where none), by golden sections."""
+        columns = []
+        for lo, hi in self.chain.convex:
+            a, b = np.maximum(lo, start), np.full(xi.shape, min(hi, t))
+            for sign in (1.0, -1.0):
+                columns.append(_golden(lambda s: sign * self._window(xi, g, ratio, s)[0 if sign > 0 else 1],
+                                       a, b))
+        return columns
+
+    def anchors(self, xi, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """The anchors ``Y_ξ(t)`` of the springs at ``xi`` in contact at ``t`` and their provenance (an integer per
+        spring: which clamp of the chain, or the attachment, last set it, and to which edge; ``−1``/``−2`` the lower/
+        upper edge at ``t`` itself: at a cap).
+
+        Parameters
+        ----------
+        xi : numpy.ndarray
+            The springs' coordinates (m), within the contact at ``t``.
+        t : float
+            The time (s, path clock).
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            The anchors (m) and the provenance codes.
+        """
+        xi = np.asarray(xi, dtype=float)
+        g, ratio = self.line.profile(xi), self.line.ratio(xi)
+        start, segment = self._attach_time(xi, t)
+        anchor = self._x(start)
+        label = _ATTACHED + 3 * (segment + 2)
+        shared = self.chain.times[self.chain.times < t]
+        columns = [np.full(xi.shape, s) for s in shared] + self._own_times(xi, g, ratio, start, t)
+        order = np.argsort([np.nanmin(c) if np.any(np.isfinite(c)) else np.inf for c in columns], kind="stable")
+        base = 3 * (len(self._corner_t) + 2)
+        for index in order:
+            when = columns[index]
+            live = np.isfinite(when) & (when > start)
+            if not np.any(live):
+                continue
+            lower, upper = self._window(xi, g, ratio, np.where(live, when, t))
+            anchor, label = _clamp(anchor, label, lower, upper, live, base + 3 * int(index))
+        lower, upper = self._window(xi, g, ratio, np.full(xi.shape, float(t)))
+        anchor, label = _clamp(anchor, label, lower, upper, np.ones(xi.shape, bool), -3)
+        return anchor, label
+
+    def radius(self, t: float) -> float:
+        """The contact radius at ``t`` (m).
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock).
+
+        Returns
+        -------
+        float
+            ``g⁻¹(d(t))`` (0 out of contact).
+        """
+        return float(self.line.radius(np.array([self._d(t)]))[0])
+
+    def state(self, t: float) -> tuple[float, float, float]:
+        """``F_x`` (N), the measure of the springs at a cap (in units of ``k_t/G*`` times m) and the length they
+        cover (m) at ``t``.
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock).
+
+        Returns
+        -------
+        tuple of float
+            The force, the sliding springs' measure and their length.
+        """
+        a = self.radius(t)
+        if not a > 0.0:
+            return 0.0, 0.0, 0.0
+        breaks = self._kinks(t, np.linspace(0.0, a, PANELS + 1))
+        lows, highs = breaks[:-1], breaks[1:]
+        nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None])
+        weights = 0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]
+        anchor, label = self.anchors(nodes.ravel(), t)
+        w = self.line.weight(nodes.ravel()) * weights.ravel()
+        at_cap = label < 0
+        force = 2.0 * self.line.G_star * float(np.sum(w * (self._x(t) - anchor)))
+        return force, float(np.sum(w[at_cap])), float(np.sum(weights.ravel()[at_cap]))
+
+    def _kinks(self, t: float, breaks: np.ndarray) -> np.ndarray:
+        """``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances differ (within a
+        panel or across a panel's end) and no kink found before lies between them, the change located by bisection;
+        repeated until every such pair holds a kink."""
+        kinks = np.empty(0)
+        for _ in range(KINK_ROUNDS):
+            lows, highs = breaks[:-1], breaks[1:]
+            inner = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+            label = self.anchors(inner, t)[1]
+            change = np.flatnonzero(label[1:] != label[:-1])
+            fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]
+            if not fresh.size:
+                break
+            found = self._bisect(t, inner[fresh], inner[fresh + 1], label[fresh])
+            kinks = np.unique(np.concatenate([kinks, found]))
+            breaks = np.unique(np.concatenate([breaks, found]))
+        return breaks
+
+    def _bisect(self, t: float, low: np.ndarray, high: np.ndarray, low_label: np.ndarray) -> np.ndarray:
+        for _ in range(KINK_HALVINGS):
+            middle = 0.5 * (low + high)
+            same = self.anchors(middle, t)[1] == low_label
+            low, high = np.where(same, middle, low), np.where(same, high, middle)
+        return 0.5 * (low + high)
+
+    def tangential_force(self, times) -> np.ndarray:
+        """``F_x`` (N) at ``times`` (s, path clock).
+
+        Parameters
+        ----------
+        times : array_like
+            The times.
+
+        Returns
+        -------
+        numpy.ndarray
+            The forces.
+        """
+        return np.array([self.state(float(t))[0] for t in np.atleast_1d(times)])
+
+
+def _clamp(anchor, label, lower, upper, live, code):
+    """Clamp ``anchor`` to ``[lower, upper]`` where ``live``; where it moved, ``label`` takes ``code`` (+1 lower,
+    +2 upper; a negative code −3: −1 lower, −2 upper)."""
+    raised = live & (anchor < lower)
+    lowered = live & (anchor > upper)
+    anchor = np.where(raised, lower, np.where(lowered, upper, anchor))
+    if code < 0:
+        label = np.where(raised, -1, np.where(lowered, -2, label))
+    else:
+        label = np.where(raised, code + _LOWER, np.where(lowered, code + _UPPER, label))
+    return anchor, label
+
+
+def _golden(function, low: np.ndarray, high: np.ndarray) -> np.ndarray:
+    """The argmax of ``function`` (vectorised, one variable per row) on each ``[low, high]`` by golden sections
+    (``nan`` where the interval is empty)."""
+    ratio = 0.5 * (np.sqrt(5.0) - 1.0)
+    empty = ~(high > low)
+    a, b = np.where(empty, 0.0, low), np.where(empty, 1.0, high)
+    c, e = b - ratio * (b - a), a + ratio * (b - a)
+    fc, fe = function(c), function(e)
+    for _ in range(GOLDEN_STEPS):
+        left = fc > fe
+        b = np.where(left, e, b)
+        a = np.where(left, a, c)
+        c, e = b - ratio * (b - a), a + ratio * (b - a)
+        fc, fe = function(c), function(e)
+    return np.where(empty, np.nan, 0.5 * (a + b))
