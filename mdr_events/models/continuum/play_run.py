@@ -28,8 +28,8 @@ from .tolerances import Tolerances
 
 __all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL"]
 
-#: Halvings of an event's bracket between two samples (2^-60 of it: below the clock's resolution).
-EVENT_HALVINGS = 60
+#: Halvings of an event's bracket between two samples (2^-48 of it: 1e-14 of the spacing).
+EVENT_HALVINGS = 48
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
@@ -168,7 +168,7 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
         k = int(np.argmax(sign * force))
         value, time = float(force[k]), float(times[k])
         low, high = times[max(k - 1, 0)], times[min(k + 1, times.size - 1)]
-        if high > low and value != 0.0:
+        if high > low and value != 0.0 and time not in corners:  # (at a corner: a kink, the extremum itself)
             found = minimize_scalar(lambda t: -sign * play.state(float(t) + start)[0], bounds=(low, high),
                                     method="bounded", options={"xatol": EXTREMUM_XTOL * duration})
             refined = -sign * float(found.fun)

@@ -38,7 +38,7 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.parameters import Parameters
 
-__all__ = ["SpringLine", "spring_line", "PlaySprings", "PANELS", "NODES", "KINK_HALVINGS", "GOLDEN_STEPS",
+__all__ = ["SpringLine", "spring_line", "PlaySprings", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
            "CONCAVITY_SAMPLES"]
 
 #: Panels of ``[0, a]`` before the kinks are added.
@@ -47,6 +47,8 @@ PANELS = 8
 NODES = 12
 #: Halvings of the bracket of a kink in ``ξ``: below the doubles' resolution of the radius.
 KINK_HALVINGS = 60
+#: Points a kink's bracket is cut into at once (a power of two).
+KINK_CUTS = 16
 #: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
 KINK_ROUNDS = 6
 #: Steps of a golden section (0.618^80 ≈ 2e-17 of the interval).
@@ -155,6 +157,7 @@ class PlaySprings:
     def __post_init__(self) -> None:
         self._corner_t = np.asarray(self.path.corner_times, dtype=float)
         self._corner_x, self._corner_d = (np.asarray(self.path.waypoints[:, i], dtype=float) for i in (0, 1))
+        self._shifts: dict[float, float] = {}
         self.chain = self._chain()
 
     # -- kinematics ---------------------------------------------------------------------------------------------
@@ -205,11 +208,22 @@ class PlaySprings:
             when[take], segment[take] = at[take], k
         return when, segment
 
-    def _window(self, xi: np.ndarray, g: np.ndarray, ratio: np.ndarray, times: np.ndarray):
-        """``(L, U)`` of each spring at ``times`` (one per spring, or a column per spring's row)."""
+    def _window(self, xi: np.ndarray, g: np.ndarray, ratio: np.ndarray, times):
+        """``(L, U)`` of each spring at ``times`` (one time for all, or one per spring)."""
         x, d = self._x(times), self._d(times)
-        cap = self.line.shift(self.line.radius(d)) + ratio * np.maximum(d - g, 0.0)
+        if np.ndim(times):
+            shift = self.line.shift(self.line.radius(d))
+        else:
+            shift = self._shift_at(float(times))
+        cap = shift + ratio * np.maximum(d - g, 0.0)
         return x - cap, x + cap
+
+    def _shift_at(self, time: float) -> float:
+        """``ū(a(t))`` at one time, remembered (the chain's times recur in every evaluation)."""
+        cached = self._shifts.get(time)
+        if cached is None:
+            cached = self._shifts[time] = float(self.line.shift(self.line.radius(np.array([self._d(time)])))[0])
+        return cached
 
     def _own_times(self, xi, g, ratio, start, t):
         """Each spring's times of its ``L``'s maximum and ``U``'s minimum on every interval of ``chain.convex``
@@ -245,7 +259,7 @@ class PlaySprings:
         anchor = self._x(start)
         label = _ATTACHED + 3 * (segment + 2)
         shared = self.chain.times[self.chain.times < t]
-        columns = [np.full(xi.shape, s) for s in shared] + self._own_times(xi, g, ratio, start, t)
+        columns = [float(s) for s in shared] + self._own_times(xi, g, ratio, start, t)
         order = np.argsort([np.nanmin(c) if np.any(np.isfinite(c)) else np.inf for c in columns], kind="stable")
         base = 3 * (len(self._corner_t) + 2)
         for index in order:
@@ -253,9 +267,9 @@ class PlaySprings:
             live = np.isfinite(when) & (when > start)
             if not np.any(live):
                 continue
-            lower, upper = self._window(xi, g, ratio, np.where(live, when, t))
+            lower, upper = self._window(xi, g, ratio, np.where(live, when, t) if np.ndim(when) else when)
             anchor, label = _clamp(anchor, label, lower, upper, live, base + 3 * int(index))
-        lower, upper = self._window(xi, g, ratio, np.full(xi.shape, float(t)))
+        lower, upper = self._window(xi, g, ratio, float(t))
         anchor, label = _clamp(anchor, label, lower, upper, np.ones(xi.shape, bool), -3)
         return anchor, label
 
@@ -320,10 +334,16 @@ class PlaySprings:
         return breaks
 
     def _bisect(self, t: float, low: np.ndarray, high: np.ndarray, low_label: np.ndarray) -> np.ndarray:
-        for _ in range(KINK_HALVINGS):
-            middle = 0.5 * (low + high)
-            same = self.anchors(middle, t)[1] == low_label
-            low, high = np.where(same, middle, low), np.where(same, high, middle)
+        """Each bracket cut into :data:`KINK_CUTS` at once, kept where the provenance first differs from ``low``'s,
+        until :data:`KINK_HALVINGS` halvings' worth."""
+        share = np.arange(1, KINK_CUTS) / KINK_CUTS
+        for _ in range(-(-KINK_HALVINGS // int(np.log2(KINK_CUTS)))):
+            points = low[:, None] + (high - low)[:, None] * share[None, :]
+            same = (self.anchors(points.ravel(), t)[1].reshape(points.shape) == low_label[:, None])
+            first = np.argmin(np.concatenate([same, np.zeros((len(low), 1), bool)], axis=1), axis=1)
+            edges = np.concatenate([low[:, None], points, high[:, None]], axis=1)
+            rows = np.arange(len(low))
+            low, high = edges[rows, first], edges[rows, first + 1]
         return 0.5 * (low + high)
 
     def tangential_force(self, times) -> np.ndarray:
