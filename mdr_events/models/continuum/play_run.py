@@ -32,6 +32,10 @@ __all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHA
 EVENT_HALVINGS = 48
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
+#: Where the edge is probed: this share of the radius inside it.
+PROBE_SHARE = 1e-12
+#: The share of a contact whose centre alone is at a cap (:func:`_share`).
+SMALLEST = 5e-324
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
 EXTREMUM_XTOL = 1e-12
 #: The springs' events the spans' frictionless run logs and this route replaces.
@@ -122,7 +126,10 @@ def _spring_events(play: PlaySprings, raw: dict, case: int, start: float, events
         inside = np.flatnonzero((times > begin) & (times <= end))
         for kind, reached in ((EventKind.SLIP_ONSET, lambda share: share > 0.0),
                               (EventKind.FULL_SLIP, lambda share: share >= 1.0 - FULL_SHARE)):
-            hit = inside[reached(sliding[inside])]
+            shares = sliding[inside].copy()
+            probed = (shares == 0.0) if kind is EventKind.SLIP_ONSET else (shares >= 1.0 - FULL_SHARE)
+            shares[probed] = [_share(play, time + start) for time in times[inside][probed]]
+            hit = inside[reached(shares)]
             if not hit.size:
                 continue
             k = int(hit[0])
@@ -133,8 +140,16 @@ def _spring_events(play: PlaySprings, raw: dict, case: int, start: float, events
 
 
 def _share(play: PlaySprings, time: float) -> float:
+    """The share of the contact's length at a cap, or the least positive float where only the centre spring is (a
+    zone opening at ``ξ = 0``, between the quadrature's nodes: the slip onset of scenario A)."""
     a = play.radius(time)
-    return play.state(time)[2] / a if a > 0 else 0.0
+    if not a > 0:
+        return 0.0
+    share = play.state(time)[2] / a
+    ends = play.anchors(np.array([0.0, a * (1.0 - PROBE_SHARE)]), time)[1] < 0
+    if share == 0.0 and np.any(ends):
+        return SMALLEST
+    return share if np.all(ends) else min(share, 1.0 - 2.0 * FULL_SHARE)
 
 
 def _bisect(play: PlaySprings, low: float, high: float, reached) -> float:

@@ -1,0 +1,151 @@
+"""Coulomb's part of the friction law on a layer of finite thickness in the continuum (issues 34 and 26): every
+spring's play operator composed on its own (``mdr_events.models.continuum.play_springs``) is the spans' continuum on
+the half-space, a thick layer is the half-space, full slip is ``τ0 π a² + μ F_N``, the discrete model on the layer
+converges to it at first order in ``Δx``, and with adhesion the law is still refused, naming the discrete method.
+
+Tolerances, each from how the compared values are computed:
+
+- the spans integrate ``F_x`` to ``rtol = 1e-10`` per step (DOP853) over some tens of steps, the per-spring route sums
+  Gauss–Legendre panels between located kinks (to round-off): :data:`ROUTE_SHARE` of the largest force, twenty
+  ``rtol`` (observed at most 5e-10);
+- the thick layer (``h = 1e9 m``) differs from the half-space by the tables' ``O(a/h)`` (``< 1e-11``) and by the
+  quadrature of the tables' splines: :data:`LIMIT_SHARE`;
+- full slip: the springs' caps ``ū(a) + μρ(d − g)`` summed by the quadrature against ``π a² τ0 + μ F_N`` with ``F_N``
+  the layer's closed ``F₀(a) + K(a)(d − g(a))``: the two differ by the quadrature of the tables' cubic splines across
+  their knots (``O(width⁴)`` per panel): :data:`FULL_SLIP_SHARE`;
+- the events are bisected to ``2^-48`` of the output spacing and located against the spans' events to their
+  ``rtol`` of the run's duration: :data:`EVENT_SHARE`.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.analysis.convergence import observed_orders
+from mdr_events.models.continuum.play_springs import PlaySprings, spring_line
+
+RTOL = me.Tolerances().rtol
+#: The per-spring route against the spans' continuum on the half-space, relative to the largest force.
+ROUTE_SHARE = 20.0 * RTOL
+#: A thick layer (h = 1e9 m) against the half-space, relative to the largest force.
+LIMIT_SHARE = 1e-8
+#: Full slip against ``π a² τ0 + μ F_N``, relative.
+FULL_SLIP_SHARE = 1e-8
+#: The events of the thick layer against the half-space's spans, relative to the run's duration.
+EVENT_SHARE = 100.0 * RTOL
+#: The observed order of a first-order error from three halving spacings (as tests/models/test_layer_continuum.py).
+ORDER_RANGE = (0.8, 1.3)
+#: The spacings of the convergence study (m): 20, 40 and 80 springs per radius at a/h ~ 0.5.
+SPACINGS = (4e-5, 2e-5, 1e-5)
+MU = 0.3
+LAWS = {"coulomb": me.FrictionLaw("coulomb", mu=MU), "tau0+coulomb": me.FrictionLaw("tau0+coulomb", mu=MU,
+                                                                                      tau0=42000.0)}
+HERTZ = me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0)
+
+
+def fretting(amplitude: float = 20e-6, cycles: int = 2) -> me.Paths:
+    """In to the paper's ``d_max`` obliquely, ``cycles`` tangential cycles of ``±amplitude`` there, and out."""
+    d_max, speed = me.Parameters.paper().d_max, me.Parameters.paper().v
+    x = np.concatenate([[0.0, 10e-6], np.tile([amplitude, -amplitude], cycles), [0.0]])
+    d = np.concatenate([[-1e-6, d_max], np.full(2 * cycles, d_max), [-1e-5]])
+    return me.Paths({"fretting": me.Path(np.column_stack([x, d]), speed)})
+
+
+MOTIONS = {"A 20°": me.Scenario("A", alpha=[20.0]), "A 70°": me.Scenario("A", alpha=[70.0]),
+           "B 20°": me.Scenario("B", alpha=[20.0]), "B 70°": me.Scenario("B", alpha=[70.0]), "fretting": fretting()}
+
+
+def with_law(contact: me.Contact, law: str) -> me.Contact:
+    return dataclasses.replace(contact, friction=LAWS[law])
+
+
+def paths_of(contact: me.Contact, motion):
+    params = contact.parameters(me.Parameters.paper().d_max, me.Parameters.paper().v)
+    return params, motion.cases(params, None, contact.friction).paths
+
+
+@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("motion", MOTIONS.values(), ids=MOTIONS.keys())
+def test_every_spring_on_its_own_is_the_spans_on_the_half_space(law, motion):
+    """On the half-space the springs share one level and the spans run Coulomb's part: the per-spring route, which
+    does not use that, gives their ``F_x`` at every sample (a third route, before it is trusted on a layer)."""
+    contact = with_law(HERTZ, law)
+    spans = me.simulate(contact, motion, "continuum", samples=41)
+    params, paths = paths_of(contact, motion)
+    for case, path in enumerate(paths):
+        play = PlaySprings(spring_line(params, None, contact.friction), path)
+        expected = spans["tangential_force"].values[case]
+        inside = np.isfinite(expected)
+        got = play.tangential_force(spans["time"].values[inside] + path.first_contact_time())
+        scale = np.max(np.abs(expected[inside]))
+        assert np.max(np.abs(got - expected[inside])) <= ROUTE_SHARE * scale
+
+
+@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("motion, kinds", [(MOTIONS["A 20°"], ("slip_onset", "full_slip")),
+                                           (MOTIONS["fretting"], ())], ids=["A 20°", "fretting"])
+def test_a_thick_layer_is_the_half_space(law, motion, kinds):
+    """``simulate`` on a layer of ``h = 1e9 m`` (the per-spring route with the tables' springs) is the half-space's
+    spans: ``F_x`` and, along scenario A, the first slip onset and full slip (the route finds them on the output
+    grid, then bisects: along the fretting path its log is left open, not compared)."""
+    thick = me.simulate(with_law(HERTZ.replace(h=1e9), law), motion, "continuum", samples=41)
+    half = me.simulate(with_law(HERTZ, law), motion, "continuum", t=thick["time"].values)
+    force, expected = thick["tangential_force"].values, half["tangential_force"].values
+    assert np.array_equal(np.isnan(force), np.isnan(expected))
+    scale = np.nanmax(np.abs(expected))
+    assert np.nanmax(np.abs(force - expected)) <= LIMIT_SHARE * scale
+    duration = float(thick["time"].values[-1])
+    for kind in kinds:
+        mine = thick["event_time"].values[0][thick["event_kind"].values[0] == kind]
+        theirs = half["event_time"].values[0][half["event_kind"].values[0] == kind]
+        assert (mine.size > 0) == (theirs.size > 0), (kind, mine, theirs)
+        if theirs.size:  # (the first of each contact: the spans log the later ones after a re-stick too)
+            assert abs(mine[0] - theirs[0]) <= EVENT_SHARE * duration, (kind, mine, theirs)
+
+
+@pytest.mark.parametrize("law", LAWS)
+def test_full_slip_is_tau0_area_and_mu_normal_force(law):
+    """Scenario B at 20° slides the whole contact of the paper's 5 mm layer: there ``F_x = τ0 π a² + μ F_N``."""
+    contact = with_law(HERTZ.replace(h=5e-3), law)
+    run = me.simulate(contact, me.Scenario("B", alpha=[20.0]), "continuum", samples=41).isel(alpha=0)
+    full = run["sliding_fraction"].values == 1.0
+    assert np.count_nonzero(full) >= 3
+    tau0 = contact.friction.tau0 if contact.friction.uses_tau0 else 0.0
+    radius, normal = run["contact_radius"].values[full], run["normal_force"].values[full]
+    expected = tau0 * np.pi * radius**2 + MU * normal
+    assert np.allclose(np.abs(run["tangential_force"].values[full]), expected, rtol=FULL_SLIP_SHARE, atol=0.0)
+    assert "full_slip" in run["event_kind"].values
+
+
+@pytest.mark.slow  # (three discrete runs per law on the layer, stepped spring by spring: about 20 s)
+@pytest.mark.parametrize("law", LAWS)
+def test_the_discrete_model_on_a_layer_converges_to_it(law):
+    """The discrete model on the 5 mm layer (its ``k(x_j)``, ``k_t(x_j)``, Coulomb's ratios ``μ k/k_t``) converges
+    to the per-spring continuum at first order in ``Δx`` along scenario A and a fretting path."""
+    contact = with_law(HERTZ.replace(h=5e-3), law)
+    for motion in (MOTIONS["A 20°"], MOTIONS["fretting"]):
+        errors = []
+        for dx in SPACINGS:
+            springs = me.simulate(contact, motion, "discrete", dx=dx).isel({motion_dim(motion): 0})
+            times = springs["time"].values[::max(1, springs["time"].size // 40)]
+            exact = me.simulate(contact, motion, "continuum", t=times).isel({motion_dim(motion): 0})
+            approx = springs["tangential_force"].sel(time=times).values
+            expected = exact["tangential_force"].values
+            inside = np.isfinite(approx) & np.isfinite(expected)
+            errors.append(np.max(np.abs(approx[inside] - expected[inside])) / np.max(np.abs(expected[inside])))
+        orders = observed_orders(SPACINGS, np.array(errors))
+        assert np.all((ORDER_RANGE[0] < orders) & (orders < ORDER_RANGE[1])), (errors, orders)
+
+
+def motion_dim(motion) -> str:
+    return "alpha" if isinstance(motion, me.Scenario) else "case"
+
+
+def test_with_adhesion_the_layer_still_refuses_coulomb_naming_the_discrete_method():
+    contact = with_law(me.Contact.paper().replace(h=5e-3), "coulomb")
+    with pytest.raises(ValueError, match="with adhesion .* method='discrete'"):
+        me.simulate(contact, me.Scenario("A", alpha=[20.0]), "continuum", samples=5)
