@@ -39,6 +39,10 @@ FULL_SLIP_SHARE = 1e-8
 EVENT_SHARE = 100.0 * RTOL
 #: The observed order of a first-order error from three halving spacings (as tests/models/test_layer_continuum.py).
 ORDER_RANGE = (0.8, 1.3)
+#: The same under Coulomb's law alone: its caps ``μρ(d − g)`` vanish at the edge, so the radius's ``O(Δx)`` error
+#: moves ``F_x`` at second order (as ``F_N`` without adhesion, tests/models/test_layer_continuum.py), and the
+#: springs' sampling of the slip fronts at first: the observed order lies between (1.5–1.9 measured).
+COULOMB_ORDER_RANGE = (0.8, 2.3)
 #: The spacings of the convergence study (m): 20, 40 and 80 springs per radius at a/h ~ 0.5.
 SPACINGS = (4e-5, 2e-5, 1e-5)
 MU = 0.3
@@ -47,10 +51,10 @@ LAWS = {"coulomb": me.FrictionLaw("coulomb", mu=MU), "tau0+coulomb": me.Friction
 HERTZ = me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0)
 
 
-def fretting(amplitude: float = 20e-6, cycles: int = 2) -> me.Paths:
+def fretting(amplitude: float = 1e-3, cycles: int = 2) -> me.Paths:
     """In to the paper's ``d_max`` obliquely, ``cycles`` tangential cycles of ``±amplitude`` there, and out."""
     d_max, speed = me.Parameters.paper().d_max, me.Parameters.paper().v
-    x = np.concatenate([[0.0, 10e-6], np.tile([amplitude, -amplitude], cycles), [0.0]])
+    x = np.concatenate([[0.0, 50e-6], np.tile([amplitude, -amplitude], cycles), [0.0]])
     d = np.concatenate([[-1e-6, d_max], np.full(2 * cycles, d_max), [-1e-5]])
     return me.Paths({"fretting": me.Path(np.column_stack([x, d]), speed)})
 
@@ -85,26 +89,35 @@ def test_every_spring_on_its_own_is_the_spans_on_the_half_space(law, motion):
         assert np.max(np.abs(got - expected[inside])) <= ROUTE_SHARE * scale
 
 
+#: The springs' events the per-spring route logs (the others are the spans' normal run's).
+SPRING_EVENTS = ("slip_onset", "full_slip", "re_stick")
+
+
+def spring_log(run, case: int = 0) -> list[tuple[str, float, int]]:
+    kinds, times, directions = (run[name].values[case] for name in ("event_kind", "event_time", "event_direction"))
+    return [(str(kind), float(time), int(direction)) for kind, time, direction in zip(kinds, times, directions)
+            if kind in SPRING_EVENTS]
+
+
 @pytest.mark.parametrize("law", LAWS)
-@pytest.mark.parametrize("motion, kinds", [(MOTIONS["A 20°"], ("slip_onset", "full_slip")),
-                                           (MOTIONS["fretting"], ())], ids=["A 20°", "fretting"])
-def test_a_thick_layer_is_the_half_space(law, motion, kinds):
+@pytest.mark.parametrize("motion", [MOTIONS["A 20°"], MOTIONS["B 20°"], MOTIONS["fretting"]],
+                         ids=["A 20°", "B 20°", "fretting"])
+def test_a_thick_layer_is_the_half_space(law, motion):
     """``simulate`` on a layer of ``h = 1e9 m`` (the per-spring route with the tables' springs) is the half-space's
-    spans: ``F_x`` and, along scenario A, the first slip onset and full slip (the route finds them on the output
-    grid, then bisects: along the fretting path its log is left open, not compared)."""
+    spans: ``F_x`` at every sample, and the springs' event log (slip onset, full slip, re-stick at each reversal:
+    kind, time and cap)."""
     thick = me.simulate(with_law(HERTZ.replace(h=1e9), law), motion, "continuum", samples=41)
     half = me.simulate(with_law(HERTZ, law), motion, "continuum", t=thick["time"].values)
     force, expected = thick["tangential_force"].values, half["tangential_force"].values
     assert np.array_equal(np.isnan(force), np.isnan(expected))
     scale = np.nanmax(np.abs(expected))
     assert np.nanmax(np.abs(force - expected)) <= LIMIT_SHARE * scale
+    mine, theirs = spring_log(thick), spring_log(half)
+    assert [(kind, direction) for kind, _, direction in mine] == [(kind, direction) for kind, _, direction in theirs]
+    assert mine, "no spring slid: the path does not test the log"
     duration = float(thick["time"].values[-1])
-    for kind in kinds:
-        mine = thick["event_time"].values[0][thick["event_kind"].values[0] == kind]
-        theirs = half["event_time"].values[0][half["event_kind"].values[0] == kind]
-        assert (mine.size > 0) == (theirs.size > 0), (kind, mine, theirs)
-        if theirs.size:  # (the first of each contact: the spans log the later ones after a re-stick too)
-            assert abs(mine[0] - theirs[0]) <= EVENT_SHARE * duration, (kind, mine, theirs)
+    assert np.allclose([time for _, time, _ in mine], [time for _, time, _ in theirs], rtol=0.0,
+                       atol=EVENT_SHARE * duration)
 
 
 @pytest.mark.parametrize("law", LAWS)
@@ -121,24 +134,26 @@ def test_full_slip_is_tau0_area_and_mu_normal_force(law):
     assert "full_slip" in run["event_kind"].values
 
 
-@pytest.mark.slow  # (three discrete runs per law on the layer, stepped spring by spring: about 20 s)
+@pytest.mark.slow  # (three discrete runs on the layer, stepped spring by spring: about 10 s each case)
 @pytest.mark.parametrize("law", LAWS)
-def test_the_discrete_model_on_a_layer_converges_to_it(law):
+@pytest.mark.parametrize("motion", [MOTIONS["A 20°"], MOTIONS["fretting"]], ids=["A 20°", "fretting"])
+def test_the_discrete_model_on_a_layer_converges_to_it(law, motion):
     """The discrete model on the 5 mm layer (its ``k(x_j)``, ``k_t(x_j)``, Coulomb's ratios ``μ k/k_t``) converges
-    to the per-spring continuum at first order in ``Δx`` along scenario A and a fretting path."""
+    to the per-spring continuum at first order in ``Δx`` (Coulomb's law alone: between first and second order, its
+    edge springs holding no force) along scenario A and a fretting path."""
     contact = with_law(HERTZ.replace(h=5e-3), law)
-    for motion in (MOTIONS["A 20°"], MOTIONS["fretting"]):
-        errors = []
-        for dx in SPACINGS:
-            springs = me.simulate(contact, motion, "discrete", dx=dx).isel({motion_dim(motion): 0})
-            times = springs["time"].values[::max(1, springs["time"].size // 40)]
-            exact = me.simulate(contact, motion, "continuum", t=times).isel({motion_dim(motion): 0})
-            approx = springs["tangential_force"].sel(time=times).values
-            expected = exact["tangential_force"].values
-            inside = np.isfinite(approx) & np.isfinite(expected)
-            errors.append(np.max(np.abs(approx[inside] - expected[inside])) / np.max(np.abs(expected[inside])))
-        orders = observed_orders(SPACINGS, np.array(errors))
-        assert np.all((ORDER_RANGE[0] < orders) & (orders < ORDER_RANGE[1])), (errors, orders)
+    errors = []
+    for dx in SPACINGS:
+        springs = me.simulate(contact, motion, "discrete", dx=dx).isel({motion_dim(motion): 0})
+        times = springs["time"].values[::max(1, springs["time"].size // 40)]
+        exact = me.simulate(contact, motion, "continuum", t=times).isel({motion_dim(motion): 0})
+        approx = springs["tangential_force"].sel(time=times).values
+        expected = exact["tangential_force"].values
+        inside = np.isfinite(approx) & np.isfinite(expected)
+        errors.append(np.max(np.abs(approx[inside] - expected[inside])) / np.max(np.abs(expected[inside])))
+    orders = observed_orders(SPACINGS, np.array(errors))
+    low, high = COULOMB_ORDER_RANGE if law == "coulomb" else ORDER_RANGE
+    assert np.all((low < orders) & (orders < high)), (errors, orders)
 
 
 def motion_dim(motion) -> str:

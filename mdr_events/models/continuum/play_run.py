@@ -5,8 +5,11 @@ friction law on a layer of finite thickness, without adhesion.
 (radius, ``F_N``, area, the edge's events and extrema) is the spans' run of the same contact with frictionless springs
 (it does not depend on the friction law), and ``F_x``, the sliding fraction, the springs' events and the extrema of
 ``F_x`` are the per-spring route's. The log holds the edge's events and the path's corners of the spans' run and, per
-contact, the slip onset (the first time a spring of positive measure is at a cap: ``sliding`` first positive on the
-output grid, then bisected to :data:`EVENT_HALVINGS`) and full slip (every spring at a cap, found the same way). The
+piece of a contact between tangential reversals, a re-stick at the reversal where springs were at a cap before it,
+the slip onset (the first time a spring is at a cap: the share at a cap first positive at the output times in the
+piece and its end, the centre and the edge probed beside the quadrature's nodes, then bisected to
+:data:`EVENT_HALVINGS`) and full slip (every spring at a cap, found the same way). A re-stick where a level turns
+back without a reversal of ``x``, and a zone that opens and closes between two output times, are not logged. The
 extrema of ``F_x`` are the largest and least sample refined by bounded minimisation between its neighbours.
 """
 
@@ -34,6 +37,10 @@ EVENT_HALVINGS = 48
 FULL_SHARE = 1e-12
 #: Where the edge is probed: this share of the radius inside it.
 PROBE_SHARE = 1e-12
+#: The springs whose caps give an event's direction (:func:`_event`).
+DIRECTION_POINTS = 257
+#: A contact's end is probed this share of its last piece before it (the radius 0 at the end itself).
+END_PROBE = 1e-9
 #: The share of a contact whose centre alone is at a cap (:func:`_share`).
 SMALLEST = 5e-324
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
@@ -116,26 +123,43 @@ def _samples(play: PlaySprings, times: np.ndarray, radius: np.ndarray) -> tuple[
 
 
 def _spring_events(play: PlaySprings, raw: dict, case: int, start: float, events) -> list[Event]:
-    """The slip onset and full slip of each contact (module docstring), as events on the clock from first contact."""
-    contacts = [event.time for event in events if event.kind in (EventKind.FIRST_CONTACT, EventKind.RE_CONTACT)]
-    ends = [event.time for event in events if event.kind in (EventKind.PULL_OFF, EventKind.CONTACT_ENDS)]
-    times, sliding = raw["time"], np.nan_to_num(raw["sliding_fraction"][case])
+    """The springs' events (module docstring) on the clock from first contact: in each piece of a contact between
+    tangential reversals, a re-stick at its start where springs were at a cap before the reversal, then the first
+    slip onset and full slip."""
     out = []
-    for begin in contacts:
-        end = min([time for time in ends if time > begin], default=np.inf)
-        inside = np.flatnonzero((times > begin) & (times <= end))
+    for begin, end, reversal in _pieces(events):
+        if reversal and _share(play, begin + start) > 0.0:
+            out.append(_event(play, begin + start, start, EventKind.RE_STICK))
+        probes = raw["time"][(raw["time"] > begin) & (raw["time"] < end)]
+        probes = np.append(probes, end if reversal_end(events, end) else end - END_PROBE * (end - begin))
+        shares = np.array([_share(play, time + start) for time in probes])
         for kind, reached in ((EventKind.SLIP_ONSET, lambda share: share > 0.0),
                               (EventKind.FULL_SLIP, lambda share: share >= 1.0 - FULL_SHARE)):
-            shares = sliding[inside].copy()
-            probed = (shares == 0.0) if kind is EventKind.SLIP_ONSET else (shares >= 1.0 - FULL_SHARE)
-            shares[probed] = [_share(play, time + start) for time in times[inside][probed]]
-            hit = inside[reached(shares)]
+            hit = np.flatnonzero(reached(shares))
             if not hit.size:
                 continue
             k = int(hit[0])
-            low = times[k - 1] if k - 1 >= 0 and times[k - 1] >= begin else begin
-            when = _bisect(play, low + start, times[k] + start, reached)
-            out.append(_event(play, when, start, kind))
+            low = probes[k - 1] if k > 0 else begin
+            out.append(_event(play, _bisect(play, low + start, probes[k] + start, reached), start, kind))
+    return out
+
+
+def reversal_end(events, time: float) -> bool:
+    """Whether ``time`` is a tangential reversal of the log (else a contact's end)."""
+    return any(event.kind is EventKind.TANGENTIAL_REVERSAL and event.time == time for event in events)
+
+
+def _pieces(events) -> list[tuple[float, float, bool]]:
+    """Each contact of the log cut at its tangential reversals: ``(begin, end, whether it begins at a reversal)``."""
+    contacts = [event.time for event in events if event.kind in (EventKind.FIRST_CONTACT, EventKind.RE_CONTACT)]
+    ends = [event.time for event in events if event.kind in (EventKind.PULL_OFF, EventKind.CONTACT_ENDS)]
+    reversals = [event.time for event in events if event.kind is EventKind.TANGENTIAL_REVERSAL]
+    last = max([event.time for event in events], default=0.0)
+    out = []
+    for begin in contacts:
+        end = min([time for time in ends if time > begin], default=last)
+        cuts = [begin] + [time for time in reversals if begin < time < end] + [end]
+        out += [(low, high, low != begin) for low, high in zip(cuts[:-1], cuts[1:]) if high > low]
     return out
 
 
@@ -165,9 +189,13 @@ def _bisect(play: PlaySprings, low: float, high: float, reached) -> float:
 
 
 def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Event:
-    force = play.state(time)[0]
-    return Event(time - start, kind, float(play._d(time)), play.radius(time), float(play._x(time)),
-                 int(np.sign(force)))
+    """The event at ``time`` (path clock); direction: the cap its springs are at (+1 the lower, ``x − c``: pushed
+    towards ``+x``; −1 the upper), the more covered of the two at :data:`DIRECTION_POINTS` springs and the ends."""
+    a = play.radius(time)
+    labels = play.anchors(a * np.linspace(0.0, 1.0 - PROBE_SHARE, DIRECTION_POINTS), time)[1]
+    lower, upper = np.count_nonzero(labels == -1), np.count_nonzero(labels == -2)
+    direction = 0 if lower == upper == 0 else (1 if lower >= upper else -1)
+    return Event(time - start, kind, float(play._d(time)), a, float(play._x(time)), direction)
 
 
 def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path) -> dict:
