@@ -99,11 +99,11 @@ def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = 
         play = PlaySprings(line, path)
         start = path.first_contact_time()
         radius = raw["contact_radius"][case]
-        force, sliding = _samples(play, raw["time"] + start, radius)
+        force, sliding, shares = _samples(play, raw["time"] + start, radius)
         raw["tangential_force"][case] = np.where(np.isnan(raw["tangential_force"][case]), np.nan, force)
         raw["sliding_fraction"][case] = np.where(radius > 0, sliding, np.nan)
         kept = [event for event in solution.events if event.kind not in _SPRING_EVENTS]
-        raw["events"][case] = sorted(kept + _spring_events(play, raw, case, start, solution.events),
+        raw["events"][case] = sorted(kept + _spring_events(play, raw["time"], shares, start, solution.events),
                                      key=lambda event: event.time)
         extrema = solution_extrema(solution)
         extrema.update(_force_extrema(play, raw["time"], force, start, path))
@@ -111,18 +111,21 @@ def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = 
     return raw
 
 
-def _samples(play: PlaySprings, times: np.ndarray, radius: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """``F_x`` and the sliding fraction (length at a cap over ``a``) at each time in contact (0 and nan elsewhere)."""
-    force, sliding = np.zeros(times.shape), np.full(times.shape, np.nan)
+def _samples(play: PlaySprings, times: np.ndarray, radius: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``F_x``, the sliding fraction (length at a cap over ``a``) and the share of :func:`_share` at each time in
+    contact (0, nan and 0 elsewhere)."""
+    force, sliding, shares = np.zeros(times.shape), np.full(times.shape, np.nan), np.zeros(times.shape)
     for k, time in enumerate(times):
         if radius[k] > 0:
-            value, _, length = play.state(float(time))
             a = play.radius(float(time))
-            force[k], sliding[k] = value, min(length / a, 1.0) if a > 0 else np.nan
-    return force, sliding
+            if a > 0:
+                value, _, length = play.state(float(time))
+                force[k], sliding[k] = value, min(length / a, 1.0)
+                shares[k] = _probed(play, float(time), a, length / a)
+    return force, sliding, shares
 
 
-def _spring_events(play: PlaySprings, raw: dict, case: int, start: float, events) -> list[Event]:
+def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, start: float, events) -> list[Event]:
     """The springs' events (module docstring) on the clock from first contact: in each piece of a contact between
     tangential reversals, a re-stick at its start where springs were at a cap before the reversal, then the first
     slip onset and full slip."""
@@ -130,9 +133,9 @@ def _spring_events(play: PlaySprings, raw: dict, case: int, start: float, events
     for begin, end, reversal in _pieces(events):
         if reversal and _share(play, begin + start) > 0.0:
             out.append(_event(play, begin + start, start, EventKind.RE_STICK))
-        probes = raw["time"][(raw["time"] > begin) & (raw["time"] < end)]
-        probes = np.append(probes, end if reversal_end(events, end) else end - END_PROBE * (end - begin))
-        shares = np.array([_share(play, time + start) for time in probes])
+        inside = (times > begin) & (times < end)
+        last = end if reversal_end(events, end) else end - END_PROBE * (end - begin)
+        probes, shares = np.append(times[inside], last), np.append(sampled[inside], _share(play, last + start))
         for kind, reached in ((EventKind.SLIP_ONSET, lambda share: share > 0.0),
                               (EventKind.FULL_SLIP, lambda share: share >= 1.0 - FULL_SHARE)):
             hit = np.flatnonzero(reached(shares))
@@ -169,7 +172,11 @@ def _share(play: PlaySprings, time: float) -> float:
     a = play.radius(time)
     if not a > 0:
         return 0.0
-    share = play.state(time)[2] / a
+    return _probed(play, time, a, play.state(time)[2] / a)
+
+
+def _probed(play: PlaySprings, time: float, a: float, share: float) -> float:
+    """The share at a cap ``share`` with the centre and the edge probed (:func:`_share`)."""
     ends = play.anchors(np.array([0.0, a * (1.0 - PROBE_SHARE)]), time)[1] < 0
     if share == 0.0 and np.any(ends):
         return SMALLEST

@@ -121,9 +121,33 @@ def spring_line(params: Parameters, profile, friction: FrictionLaw, layer: Layer
             out[inside] = branch.radii(d[inside])
         return out
 
-    weight = getattr(springs, "tangential_weights", _unit_weights)  # (the half-space's springs weigh 1 each)
-    return SpringLine(springs.profile, weight, lambda xi: springs.coulomb_ratios(xi, friction), shift, radius,
-                      params.G_star)
+    if layer.is_half_space:  # (the half-space's springs weigh 1 each)
+        return SpringLine(springs.profile, _unit_weights, lambda xi: springs.coulomb_ratios(xi, friction), shift,
+                          radius, params.G_star)
+    return SpringLine(*_layer_springs(params, springs.indenter, friction, layer), shift, radius, params.G_star)
+
+
+def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: Layer):
+    """``g``, ``k_t/G*`` and ``μ k/k_t`` of the discrete model's :class:`~mdr_events.models.spring_media.LayerSprings`
+    with the same arithmetic, the relations called past their argument checks (a run evaluates them some thousand
+    times on arrays of radii within its contact, which the layer's reach check has bounded before,
+    :mod:`.layer_reach`)."""
+    from mdr_events.theory.layer import power_law_profile, spring_stiffness_density
+    from mdr_events.theory.layer_tangential import tangential_spring_stiffness_density
+
+    E_star, G_star, nu, mu = params.E_star, params.G_star, params.nu, friction.coulomb_mu
+    profile, normal = power_law_profile.__wrapped__, spring_stiffness_density.__wrapped__
+    tangential = tangential_spring_stiffness_density.__wrapped__
+
+    def weight(xi):
+        return tangential(xi, G_star, nu, layer) / G_star
+
+    def ratio(xi):  # (coulomb_cap(x, 1, 0, μ, ...): μ (k/k_t)(1 − 0))
+        if not mu > 0.0:
+            return np.zeros(np.shape(xi))
+        return mu * (normal(xi, E_star, nu, layer) / tangential(xi, G_star, nu, layer)) * (1.0 - 0.0)
+
+    return (lambda xi: profile(xi, indenter, nu, layer)), weight, ratio
 
 
 def _unit_weights(xi: np.ndarray) -> np.ndarray:
