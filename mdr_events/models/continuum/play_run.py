@@ -24,7 +24,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.kernel_model import KernelModel
 
 from .extrema import extremum_names, solution_extrema
-from .play_springs import PlaySprings, spring_line
+from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, spring_line
 from .solve import run_continuum
 from .state import Event, EventKind
 from .tolerances import Tolerances
@@ -200,7 +200,7 @@ def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Eve
     towards ``+x``; −1 the upper), the more covered of the two at :data:`DIRECTION_POINTS` springs and the ends."""
     a = play.radius(time)
     labels = play.anchors(a * np.linspace(0.0, 1.0 - PROBE_SHARE, DIRECTION_POINTS), time)[1]
-    lower, upper = np.count_nonzero(labels == -1), np.count_nonzero(labels == -2)
+    lower, upper = np.count_nonzero(np.isin(labels, LOWER_CAP)), np.count_nonzero(np.isin(labels, UPPER_CAP))
     direction = 0 if lower == upper == 0 else (1 if lower >= upper else -1)
     return Event(time - start, kind, float(play._d(time)), a, float(play._x(time)), direction)
 

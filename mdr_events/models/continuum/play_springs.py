@@ -38,7 +38,7 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.parameters import Parameters
 
-__all__ = ["SpringLine", "spring_line", "PlaySprings", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
+__all__ = ["SpringLine", "spring_line", "PlaySprings", "DepthHistory", "SpanHistory", "LOWER_CAP", "UPPER_CAP", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
            "CONCAVITY_SAMPLES"]
 
 #: Panels of ``[0, a]`` before the kinks are added.
@@ -58,8 +58,16 @@ CONCAVITY_SAMPLES = 65
 #: A second difference of ``ū(a(d))`` counts as convex above this share of its largest value (round-off).
 CONCAVITY_ROUND_OFF = 1e-12
 _GAUSS = np.polynomial.legendre.leggauss(NODES)
+#: Radii of two spans' common end within this share of each other are one radius, not a jump.
+JUMP_ROUND_OFF = 1e-12
+#: ``d − g`` within this share of the path's largest depth counts as not compressed (:meth:`PlaySprings.anchors`).
+PRESSED_ROUND_OFF = 1e-12
 #: Provenance codes: attached and never moved (plus the segment), a clamp's lower edge, its upper edge
 _ATTACHED, _LOWER, _UPPER = 0, 1, 2
+#: The provenance of a spring at the lower cap at the time asked (in tension, compressed), and at the upper one
+LOWER_CAP, UPPER_CAP = (-1, -4), (-2, -5)
+#: The provenance codes of the clamps start here, above every attachment's
+_COLUMN_CODES = 1 << 40
 
 
 class SpringLine(NamedTuple):
@@ -162,6 +170,135 @@ class _Chain(NamedTuple):
     convex: np.ndarray
 
 
+
+class DepthHistory:
+    """The radius of a contact without adhesion: ``a = g⁻¹(d)``, springs attaching where ``d`` rises through
+    ``g(ξ)``; no jumps.
+
+    Parameters
+    ----------
+    line : SpringLine
+        The springs.
+    path : Path
+        The path.
+    """
+
+    def __init__(self, line: SpringLine, path) -> None:
+        self.line, self.path = line, path
+        self.corner_t = np.asarray(path.corner_times, dtype=float)
+        self.corner_d = np.asarray(path.waypoints[:, 1], dtype=float)
+        #: ``(time, radius before, radius after)`` where the radius jumps (none)
+        self.jumps: list[tuple[float, float, float]] = []
+        #: whether springs in contact can be in tension (no: every spring in contact is compressed)
+        self.adhesive = False
+
+    def radii(self, times) -> np.ndarray:
+        """``a(t)`` (m) at ``times`` (s, path clock)."""
+        return self.line.radius(np.interp(times, self.corner_t, self.corner_d))
+
+    def pieces(self) -> list[tuple[float, float]]:
+        """The intervals in contact on which the radius is smooth: each segment's part at ``d > 0``."""
+        out = []
+        for k in range(len(self.corner_t) - 1):
+            (t0, t1), (d0, d1) = self.corner_t[k:k + 2], self.corner_d[k:k + 2]
+            if max(d0, d1) <= 0.0 or d0 == d1:
+                continue
+            surface = t0 + (t1 - t0) * (0.0 - d0) / (d1 - d0)
+            out.append((max(t0, surface), t1) if d1 > d0 else (t0, min(t1, surface)))
+        return out
+
+    def attach(self, xi: np.ndarray, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """The last time up to ``t`` at which each spring attached (``d`` rising through ``g(ξ)``) and the segment it
+        attached on (−1: the path started with it in contact)."""
+        g = self.line.profile(xi)
+        when, segment = np.full(xi.shape, -np.inf), np.full(xi.shape, -2)
+        if self.corner_d[0] > 0.0:
+            inside = g < self.corner_d[0]
+            when[inside], segment[inside] = self.corner_t[0], -1
+        for k in range(len(self.corner_t) - 1):
+            (t0, t1), (d0, d1) = self.corner_t[k:k + 2], self.corner_d[k:k + 2]
+            if not d1 > d0 or t0 > t:
+                continue
+            at = t0 + (t1 - t0) * (g - d0) / (d1 - d0)
+            take = (g >= d0) & (g < d1) & (at <= t)
+            when[take], segment[take] = at[take], k
+        return when, segment
+
+
+class SpanHistory:
+    """The radius of an adhesive contact as the spans' run gives it (:class:`~.solution.PathSolution` with
+    frictionless springs): springs attach where the radius grows through them along a ``Δγ0`` branch (at
+    ``d = d₀(ξ)``, the branch's depth of the radius ``ξ``) or jumps past them (the jump-in), and the radius jumps at
+    the spans' boundaries where it does (a drop onto the ``Δγ1`` branch).
+
+    Parameters
+    ----------
+    solution : PathSolution
+        The run of the contact with frictionless springs.
+    """
+
+    def __init__(self, solution) -> None:
+        from .solution import _span_radius
+        from .state import Regime
+
+        self.solution, self._regime = solution, Regime
+        self._span_radius = _span_radius
+        self.adhesive = True
+        start = solution.t_contact
+        self._spans = [(span.t_start + start, span.t_end + start, span) for span in solution.spans]
+        self.jumps = []
+        previous = 0.0
+        for low, high, span in self._spans:
+            first, last = self._ends(span, low, high)
+            if abs(first - previous) > JUMP_ROUND_OFF * max(abs(first), abs(previous)):
+                self.jumps.append((low, previous, first))
+            previous = last
+
+    def _ends(self, span, low: float, high: float) -> tuple[float, float]:
+        if span.regime is self._regime.NONE:
+            return 0.0, 0.0
+        radius = self._span_radius(self.solution.model, span, span.segment.d(np.array([low, high])))
+        return float(radius[0]), float(radius[1])
+
+    def radii(self, times) -> np.ndarray:
+        """``a(t)`` (m) at ``times`` (s, path clock; the later span's at a boundary), 0 out of contact."""
+        from .solution import contact_radii
+
+        times = np.asarray(times, dtype=float)
+        inside = (times >= self._spans[0][0]) & (times <= self._spans[-1][1])
+        out = np.zeros(times.shape)
+        if np.any(inside):
+            out[inside] = contact_radii(self.solution, times[inside] - self.solution.t_contact)
+        return out
+
+    def pieces(self) -> list[tuple[float, float]]:
+        """The spans in contact whose radius moves (growing or shrinking)."""
+        moving = (self._regime.GROWING, self._regime.SHRINKING)
+        return [(low, high) for low, high, span in self._spans if span.regime in moving and high > low]
+
+    def attach(self, xi: np.ndarray, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """The last time up to ``t`` at which each spring attached, and the span it attached in (as a code)."""
+        when, code = np.full(xi.shape, -np.inf), np.full(xi.shape, -2)
+        for index, (time, before, after) in enumerate(self.jumps):
+            take = (xi > before) & (xi <= after) & (time <= t)
+            when[take], code[take] = time, 2 * index
+        grow = self.solution.model.grow
+        for index, (low, high, span) in enumerate(self._spans):
+            if span.regime is not self._regime.GROWING or low > t:
+                continue
+            first, last = self._ends(span, low, high)
+            take = (xi > first) & (xi <= last)
+            if not np.any(take):
+                continue
+            depth = np.asarray(grow.depths(xi[take]), dtype=float)
+            d0, d1 = span.segment.d(np.array([low, high]))
+            at = low + (high - low) * (depth - d0) / (d1 - d0)
+            late = at <= t
+            rows = np.flatnonzero(take)[late]
+            later = at[late] >= when[rows]
+            when[rows[later]], code[rows[later]] = at[late][later], 2 * index + 1
+        return when, code
+
 @dataclass
 class PlaySprings:
     """``F_x`` and the springs at a cap along ``path`` (path clock), every anchor its own play operator (module
@@ -173,15 +310,23 @@ class PlaySprings:
         The springs.
     path : Path
         The path.
+    history : DepthHistory or SpanHistory, optional
+        The radius along the path (default: without adhesion, ``g⁻¹(d)``).
     """
 
     line: SpringLine
     path: object
+    history: object = None
 
     def __post_init__(self) -> None:
+        if self.history is None:
+            self.history = DepthHistory(self.line, self.path)
         self._corner_t = np.asarray(self.path.corner_times, dtype=float)
         self._corner_x, self._corner_d = (np.asarray(self.path.waypoints[:, i], dtype=float) for i in (0, 1))
-        self._shifts: dict[float, float] = {}
+        self._shifts: dict[tuple, float] = {}
+        #: a spring counts as compressed (its cap's Coulomb part on) beyond this ``d − g`` (m): at a crossing of
+        #: ``d = g(ξ)`` the rounding of ``d − g`` would flip it from spring to spring
+        self._pressed_round_off = PRESSED_ROUND_OFF * float(np.max(np.abs(self._corner_d)))
         self.chain = self._chain()
 
     # -- kinematics ---------------------------------------------------------------------------------------------
@@ -192,18 +337,14 @@ class PlaySprings:
         return np.interp(t, self._corner_t, self._corner_d)
 
     def _chain(self) -> _Chain:
-        """The corners and, on each segment that moves the depth, the subintervals where ``ū(a(d))`` is not concave
-        (their ends join the shared times)."""
-        times, convex = [self._corner_t], []
-        for k in range(len(self._corner_t) - 1):
-            d0, d1 = self._corner_d[k], self._corner_d[k + 1]
-            if d0 == d1 or max(d0, d1) <= 0.0:
-                continue
-            t0, t1 = self._corner_t[k], self._corner_t[k + 1]
-            low = t0 + (t1 - t0) * (max(min(d0, d1), 0.0) - d0) / (d1 - d0) if min(d0, d1) < 0.0 else None
-            start, end = (low, t1) if (low is not None and d1 > d0) else ((t0, low) if low is not None else (t0, t1))
+        """The corners, the radius's jumps and, on each piece where the radius moves smoothly, the subintervals where
+        ``ū(a(t))`` is not concave (their ends join the shared times)."""
+        times, convex = [self._corner_t, np.array([jump[0] for jump in self.history.jumps])], []
+        for start, end in self.history.pieces():
             grid = np.linspace(start, end, CONCAVITY_SAMPLES)
-            shift = self.line.shift(self.line.radius(self._d(grid)))
+            inner = grid.copy()
+            inner[[0, -1]] = grid[[0, -1]] + np.array([1.0, -1.0]) * 1e-12 * (end - start)  # (inside the piece)
+            shift = self.line.shift(self.history.radii(inner))
             second = shift[:-2] - 2.0 * shift[1:-1] + shift[2:]
             flagged = np.flatnonzero(second > CONCAVITY_ROUND_OFF * max(np.max(np.abs(shift)), 1e-300))
             for j in flagged:
@@ -212,41 +353,20 @@ class PlaySprings:
         shared = np.unique(np.concatenate(times))
         return _Chain(shared, np.array(convex, dtype=float).reshape(-1, 2))
 
-    def _attach_time(self, xi: np.ndarray, t: float) -> tuple[np.ndarray, np.ndarray]:
-        """The last time up to ``t`` at which each spring attached (``d`` rising through ``g(ξ)``) and the segment it
-        attached on (−1: the path started with it in contact)."""
-        g = self.line.profile(xi)
-        when = np.full(xi.shape, -np.inf)
-        segment = np.full(xi.shape, -2)
-        if self._corner_d[0] > 0.0:
-            inside = g < self._corner_d[0]
-            when[inside], segment[inside] = self._corner_t[0], -1
-        for k in range(len(self._corner_t) - 1):
-            d0, d1 = self._corner_d[k], self._corner_d[k + 1]
-            t0, t1 = self._corner_t[k], self._corner_t[k + 1]
-            if not d1 > d0 or t0 > t:
-                continue
-            crossed = (g >= d0) & (g < d1)
-            at = t0 + (t1 - t0) * (g - d0) / (d1 - d0)
-            take = crossed & (at <= t)
-            when[take], segment[take] = at[take], k
-        return when, segment
-
     def _window(self, xi: np.ndarray, g: np.ndarray, ratio: np.ndarray, times):
-        """``(L, U)`` of each spring at ``times`` (one time for all, or one per spring)."""
+        """``(L, U)`` of each spring at ``times`` (one per spring)."""
         x, d = self._x(times), self._d(times)
-        if np.ndim(times):
-            shift = self.line.shift(self.line.radius(d))
-        else:
-            shift = self._shift_at(float(times))
-        cap = shift + ratio * np.maximum(d - g, 0.0)
+        cap = self.line.shift(self.history.radii(times)) + ratio * np.maximum(d - g, 0.0)
         return x - cap, x + cap
 
-    def _shift_at(self, time: float) -> float:
-        """``ū(a(t))`` at one time, remembered (the chain's times recur in every evaluation)."""
-        cached = self._shifts.get(time)
+    def _shift_at(self, time: float, radius: float | None = None) -> float:
+        """``ū(a)`` at one time (``a(t)``, or the ``radius`` given: a jump's side), remembered (the chain's times recur
+        in every evaluation)."""
+        key = (time, radius)
+        cached = self._shifts.get(key)
         if cached is None:
-            cached = self._shifts[time] = float(self.line.shift(self.line.radius(np.array([self._d(time)])))[0])
+            a = self.history.radii(np.array([time])) if radius is None else np.array([radius])
+            cached = self._shifts[key] = float(self.line.shift(a)[0])
         return cached
 
     def _own_times(self, xi, g, ratio, start, t):
@@ -260,10 +380,47 @@ class PlaySprings:
                                        a, b))
         return columns
 
+    def _columns(self, xi, g, ratio, start, t) -> tuple[np.ndarray, np.ndarray]:
+        """The clamp times of each spring before ``t`` (a column each, ``nan`` where none) and ``ū`` there: the shared
+        times (at a jump both sides, the earlier first), each spring's own extremes, and with adhesion the times its
+        compression changes sign (``d = g(ξ)``: its cap's kink)."""
+        n = xi.size
+        times, shifts = [], []
+        jumps = {time: (before, after) for time, before, after in self.history.jumps}
+        for time in self.chain.times[self.chain.times < t]:
+            sides = jumps.get(time, (None,))
+            for radius in sides:
+                times.append(np.full(n, time))
+                shifts.append(np.full(n, self._shift_at(float(time), radius)))
+        own = self._own_times(xi, g, ratio, start, t)
+        if self.history.adhesive:
+            own += self._crossings(g, t)
+        for column in own:
+            times.append(np.where(column < t, column, np.nan))
+            live = np.isfinite(times[-1])
+            shift = np.zeros(n)
+            if np.any(live):
+                shift[live] = self.line.shift(self.history.radii(times[-1][live]))
+            shifts.append(shift)
+        if not times:
+            return np.empty((n, 0)), np.empty((n, 0))
+        return np.stack(times, axis=1), np.stack(shifts, axis=1)
+
+    def _crossings(self, g: np.ndarray, t: float) -> list[np.ndarray]:
+        """The times each spring's depth ``d − g(ξ)`` changes sign on each segment before ``t`` (``nan``: none)."""
+        out = []
+        for k in range(len(self._corner_t) - 1):
+            (t0, t1), (d0, d1) = self._corner_t[k:k + 2], self._corner_d[k:k + 2]
+            if d0 == d1 or t0 >= t:
+                continue
+            share = (g - d0) / (d1 - d0)
+            out.append(np.where((share > 0.0) & (share < 1.0), t0 + (t1 - t0) * share, np.nan))
+        return out
+
     def anchors(self, xi, t: float) -> tuple[np.ndarray, np.ndarray]:
         """The anchors ``Y_ξ(t)`` of the springs at ``xi`` in contact at ``t`` and their provenance (an integer per
-        spring: which clamp of the chain, or the attachment, last set it, and to which edge; ``−1``/``−2`` the lower/
-        upper edge at ``t`` itself: at a cap).
+        spring: which clamp of the chain, or the attachment, last set it, to which edge and whether the spring was
+        compressed then; negative at ``t`` itself, at a cap: :data:`LOWER_CAP`, :data:`UPPER_CAP`).
 
         Parameters
         ----------
@@ -279,22 +436,25 @@ class PlaySprings:
         """
         xi = np.asarray(xi, dtype=float)
         g, ratio = self.line.profile(xi), self.line.ratio(xi)
-        start, segment = self._attach_time(xi, t)
-        anchor = self._x(start)
-        label = _ATTACHED + 3 * (segment + 2)
-        shared = self.chain.times[self.chain.times < t]
-        columns = [float(s) for s in shared] + self._own_times(xi, g, ratio, start, t)
-        order = np.argsort([np.nanmin(c) if np.any(np.isfinite(c)) else np.inf for c in columns], kind="stable")
-        base = 3 * (len(self._corner_t) + 2)
-        for index in order:
-            when = columns[index]
-            live = np.isfinite(when) & (when > start)
-            if not np.any(live):
-                continue
-            lower, upper = self._window(xi, g, ratio, np.where(live, when, t) if np.ndim(when) else when)
-            anchor, label = _clamp(anchor, label, lower, upper, live, base + 3 * int(index))
-        lower, upper = self._window(xi, g, ratio, float(t))
-        anchor, label = _clamp(anchor, label, lower, upper, np.ones(xi.shape, bool), -3)
+        start, code = self.history.attach(xi, t)
+        anchor, label = self._x(start), _ATTACHED + 3 * (code + 2)
+        times, shifts = self._columns(xi, g, ratio, start, t)
+        if times.shape[1]:
+            order = np.argsort(times, axis=1, kind="stable")
+            rows = np.arange(xi.size)[:, None]
+            when, shift = times[rows, order], shifts[rows, order]
+            pressed = self._d(when) - g[:, None]
+            cap = shift + ratio[:, None] * np.maximum(pressed, 0.0)
+            x = self._x(when)
+            live = np.isfinite(when) & (when > start[:, None])
+            # (a clamp's code tells whether the spring was compressed then: its cap's formula has a kink in ξ there)
+            codes = _COLUMN_CODES + 6 * order + 3 * (pressed > self._pressed_round_off)
+            for k in range(when.shape[1]):
+                anchor, label = _clamp(anchor, label, x[:, k] - cap[:, k], x[:, k] + cap[:, k], live[:, k],
+                                       codes[:, k])
+        lower, upper = self._window(xi, g, ratio, np.full(xi.shape, float(t)))
+        anchor, label = _clamp(anchor, label, lower, upper, np.ones(xi.shape, bool),
+                               np.where(self._d(t) - g > self._pressed_round_off, -6, -3))
         return anchor, label
 
     def radius(self, t: float) -> float:
@@ -308,9 +468,9 @@ class PlaySprings:
         Returns
         -------
         float
-            ``g⁻¹(d(t))`` (0 out of contact).
+            ``a(t)`` (0 out of contact).
         """
-        return float(self.line.radius(np.array([self._d(t)]))[0])
+        return float(self.history.radii(np.array([t]))[0])
 
     def state(self, t: float) -> tuple[float, float, float]:
         """``F_x`` (N), the measure of the springs at a cap (in units of ``k_t/G*`` times m) and the length they
@@ -388,12 +548,12 @@ class PlaySprings:
 
 def _clamp(anchor, label, lower, upper, live, code):
     """Clamp ``anchor`` to ``[lower, upper]`` where ``live``; where it moved, ``label`` takes ``code`` (+1 lower,
-    +2 upper; a negative code −3: −1 lower, −2 upper)."""
-    raised = live & (anchor < lower)
-    lowered = live & (anchor > upper)
+    +2 upper; a negative code −3 or −6: −1 or −4 lower, −2 or −5 upper)."""
+    raised = live & ((anchor < lower) | (lower == upper))  # (a window of no width: at its cap, called the lower)
+    lowered = live & (anchor > upper) & ~raised
     anchor = np.where(raised, lower, np.where(lowered, upper, anchor))
-    if code < 0:
-        label = np.where(raised, -1, np.where(lowered, -2, label))
+    if np.all(code < 0):  # (−3: the lower −1, the upper −2; −6: −4 and −5, the spring compressed)
+        label = np.where(raised, code + 2, np.where(lowered, code + 1, label))
     else:
         label = np.where(raised, code + _LOWER, np.where(lowered, code + _UPPER, label))
     return anchor, label
