@@ -1,9 +1,10 @@
 """The continuum method with every spring's play operator on its own (:mod:`.play_springs`): Coulomb's part of the
-friction law on a layer of finite thickness, without adhesion.
+friction law on a layer of finite thickness, with or without adhesion.
 
 :func:`run_play_springs` fills what :func:`~mdr_events.models.continuum.solve.run_continuum` fills: the normal problem
 (radius, ``F_N``, area, the edge's events and extrema) is the spans' run of the same contact with frictionless springs
-(it does not depend on the friction law), and ``F_x``, the sliding fraction, the springs' events and the extrema of
+(it does not depend on the friction law; with adhesion its radius is the springs' history,
+:class:`~.play_springs.SpanHistory`), and ``F_x``, the sliding fraction, the springs' events and the extrema of
 ``F_x`` are the per-spring route's. The log holds the edge's events and the path's corners of the spans' run and, per
 piece of a contact between tangential reversals, a re-stick at the reversal where springs were at a cap before it,
 the slip onset (the first time a spring is at a cap: the share at a cap first positive at the output times in the
@@ -20,16 +21,17 @@ import numpy as np
 from scipy.optimize import minimize_scalar
 
 from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.layer import LayerBase
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.kernel_model import KernelModel
 
 from .extrema import extremum_names, solution_extrema
-from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, spring_line
+from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, spring_line
 from .solve import run_continuum
 from .state import Event, EventKind
 from .tolerances import Tolerances
 
-__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL"]
+__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "PROBE_POINTS"]
 
 #: Halvings of an event's bracket between two samples (2^-48 of it: 1e-14 of the spacing).
 EVENT_HALVINGS = 48
@@ -37,10 +39,11 @@ EVENT_HALVINGS = 48
 FULL_SHARE = 1e-12
 #: Where the edge is probed: this share of the radius inside it.
 PROBE_SHARE = 1e-12
-#: The springs whose caps give an event's direction (:func:`_event`).
-DIRECTION_POINTS = 257
 #: A contact's end is probed this share of its last piece before it (the radius 0 at the end itself).
 END_PROBE = 1e-9
+#: Springs probed where the quadrature's nodes hold none at a cap (a zone opening between them is found once it
+#: reaches one of these: its onset within its growth to ``a/(PROBE_POINTS − 1)``).
+PROBE_POINTS = 1025
 #: The share of a contact whose centre alone is at a cap (:func:`_share`).
 SMALLEST = 5e-324
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
@@ -53,7 +56,7 @@ _FRICTIONLESS = FrictionLaw("coulomb", mu=0.0)
 
 
 def takes_play_springs(model: KernelModel) -> bool:
-    """Whether the continuum runs ``model`` spring by spring: Coulomb's part on a finite layer, without adhesion.
+    """Whether the continuum runs ``model`` spring by spring: Coulomb's part on a finite layer.
 
     Parameters
     ----------
@@ -65,8 +68,11 @@ def takes_play_springs(model: KernelModel) -> bool:
     bool
         Whether :func:`run_play_springs` runs it.
     """
-    adhesive = model.params.dgamma0 != 0.0 or model.params.dgamma1 != 0.0
-    return not model.layer.is_half_space and model.friction.coulomb_mu > 0.0 and not adhesive
+    return not model.layer.is_half_space and model.friction.coulomb_mu > 0.0
+
+
+def _adhesive(model: KernelModel) -> bool:
+    return model.params.dgamma0 != 0.0 or model.params.dgamma1 != 0.0
 
 
 def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = Tolerances(),
@@ -76,7 +82,7 @@ def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = 
     Parameters
     ----------
     model : KernelModel
-        The flat model (no adhesion).
+        The flat model.
     paths : list of Path
         One path per case.
     times : numpy.ndarray or int
@@ -93,10 +99,13 @@ def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = 
     """
     normal = model._replace(friction=_FRICTIONLESS)
     raw = run_continuum(normal, paths, times, tolerances, limits)
+    if model.layer.base is not LayerBase.BONDED:  # (no tangential springs: F_x = 0 whatever the law)
+        raw["extrema"] = [solution_extrema(solution) for solution in raw["solutions"]]
+        return raw
     line = spring_line(model.params, model.profile, model.friction, model.layer)
     raw["extrema"] = []
     for case, (path, solution) in enumerate(zip(paths, raw["solutions"])):
-        play = PlaySprings(line, path)
+        play = PlaySprings(line, path, SpanHistory(solution) if _adhesive(model) else None)
         start = path.first_contact_time()
         radius = raw["contact_radius"][case]
         force, sliding, shares = _samples(play, raw["time"] + start, radius)
@@ -119,9 +128,9 @@ def _samples(play: PlaySprings, times: np.ndarray, radius: np.ndarray) -> tuple[
         if radius[k] > 0:
             a = play.radius(float(time))
             if a > 0:
-                value, _, length = play.state(float(time))
-                force[k], sliding[k] = value, min(length / a, 1.0)
-                shares[k] = _probed(play, float(time), a, length / a)
+                state = play.state(float(time))
+                force[k], sliding[k] = state.force, min(state.length / a, 1.0)
+                shares[k] = _probed(play, float(time), a, state)
     return force, sliding, shares
 
 
@@ -167,20 +176,31 @@ def _pieces(events) -> list[tuple[float, float, bool]]:
 
 
 def _share(play: PlaySprings, time: float) -> float:
-    """The share of the contact's length at a cap, or the least positive float where only the centre spring is (a
-    zone opening at ``ξ = 0``, between the quadrature's nodes: the slip onset of scenario A)."""
+    """The share of the contact's length at a cap, or the least positive float where only the centre spring or the
+    edge is (a zone opening at ``ξ = 0`` between the quadrature's nodes: the slip onset of scenario A). Under
+    Coulomb's law alone the compressed zone's (its springs in tension hold no shift: they slide from the start, and
+    the slip events are the compressed zone's, as the spans log them)."""
     a = play.radius(time)
     if not a > 0:
         return 0.0
-    return _probed(play, time, a, play.state(time)[2] / a)
+    return _probed(play, time, a, play.state(time))
 
 
-def _probed(play: PlaySprings, time: float, a: float, share: float) -> float:
-    """The share at a cap ``share`` with the centre and the edge probed (:func:`_share`)."""
-    ends = play.anchors(np.array([0.0, a * (1.0 - PROBE_SHARE)]), time)[1] < 0
-    if share == 0.0 and np.any(ends):
+def _probed(play: PlaySprings, time: float, a: float, state) -> float:
+    """The share at a cap of ``state`` with the centre and the edge probed (:func:`_share`)."""
+    coulomb_alone = not play.line.shift(np.array([a]))[0] > 0.0
+    if coulomb_alone:
+        edge = min(a, float(play.compressed_radius(time)))
+        if not edge > 0.0:
+            return 0.0
+        share = state.compressed_at_cap / state.compressed if state.compressed > 0.0 else 0.0
+    else:
+        edge, share = a, state.length / a
+    points = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS) if share == 0.0 else np.array([0.0, 1.0 - PROBE_SHARE])
+    at_cap = play.anchors(edge * points, time)[1] < 0
+    if share == 0.0 and np.any(at_cap):
         return SMALLEST
-    return share if np.all(ends) else min(share, 1.0 - 2.0 * FULL_SHARE)
+    return share if np.all(at_cap[[0, -1]]) else min(share, 1.0 - 2.0 * FULL_SHARE)
 
 
 def _bisect(play: PlaySprings, low: float, high: float, reached) -> float:
@@ -197,9 +217,13 @@ def _bisect(play: PlaySprings, low: float, high: float, reached) -> float:
 
 def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Event:
     """The event at ``time`` (path clock); direction: the cap its springs are at (+1 the lower, ``x − c``: pushed
-    towards ``+x``; −1 the upper), the more covered of the two at :data:`DIRECTION_POINTS` springs and the ends."""
+    towards ``+x``; −1 the upper), the more covered of the two at the probes of :func:`_share` (the compressed
+    springs under Coulomb's law alone)."""
     a = play.radius(time)
-    labels = play.anchors(a * np.linspace(0.0, 1.0 - PROBE_SHARE, DIRECTION_POINTS), time)[1]
+    coulomb_alone = not play.line.shift(np.array([a]))[0] > 0.0
+    edge = min(a, float(play.compressed_radius(time))) if coulomb_alone else a
+    points = edge * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)
+    labels = play.anchors(points, time)[1]
     lower, upper = np.count_nonzero(np.isin(labels, LOWER_CAP)), np.count_nonzero(np.isin(labels, UPPER_CAP))
     direction = 0 if lower == upper == 0 else (1 if lower >= upper else -1)
     return Event(time - start, kind, float(play._d(time)), a, float(play._x(time)), direction)

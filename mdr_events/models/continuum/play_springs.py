@@ -38,7 +38,7 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.parameters import Parameters
 
-__all__ = ["SpringLine", "spring_line", "PlaySprings", "DepthHistory", "SpanHistory", "LOWER_CAP", "UPPER_CAP", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
+__all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP", "UPPER_CAP", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
            "CONCAVITY_SAMPLES"]
 
 #: Panels of ``[0, a]`` before the kinks are added.
@@ -162,6 +162,21 @@ def _unit_weights(xi: np.ndarray) -> np.ndarray:
     return np.ones(np.shape(xi))
 
 
+class SpringState(NamedTuple):
+    """The springs at one time (:meth:`PlaySprings.state`)."""
+
+    #: ``F_x`` (N)
+    force: float
+    #: the measure of the springs at a cap (``k_t/G*`` times m)
+    measure: float
+    #: the length they cover (m)
+    length: float
+    #: the length of the compressed springs at a cap (m)
+    compressed_at_cap: float
+    #: the length of the compressed springs (m; ``x_c`` where some are in tension)
+    compressed: float
+
+
 class _Chain(NamedTuple):
     """The clamp times shared by every spring (increasing) and the intervals where each spring gains its own."""
 
@@ -244,8 +259,7 @@ class SpanHistory:
         self.solution, self._regime = solution, Regime
         self._span_radius = _span_radius
         self.adhesive = True
-        start = solution.t_contact
-        self._spans = [(span.t_start + start, span.t_end + start, span) for span in solution.spans]
+        self._spans = [(span.t_start, span.t_end, span) for span in solution.spans]  # (on the path's clock)
         self.jumps = []
         previous = 0.0
         for low, high, span in self._spans:
@@ -380,10 +394,11 @@ class PlaySprings:
                                        a, b))
         return columns
 
-    def _columns(self, xi, g, ratio, start, t) -> tuple[np.ndarray, np.ndarray]:
-        """The clamp times of each spring before ``t`` (a column each, ``nan`` where none) and ``ū`` there: the shared
-        times (at a jump both sides, the earlier first), each spring's own extremes, and with adhesion the times its
-        compression changes sign (``d = g(ξ)``: its cap's kink)."""
+    def _columns(self, xi, g, ratio, start, t) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The clamp times of each spring before ``t`` (a column each, ``nan`` where none), ``ū`` there and which
+        columns are crossings: the shared times (at a jump both sides, the earlier first), each spring's own extremes,
+        and with adhesion the times its compression changes sign (``d = g(ξ)``: its cap's kink, where its Coulomb part
+        is 0 exactly)."""
         n = xi.size
         times, shifts = [], []
         jumps = {time: (before, after) for time, before, after in self.history.jumps}
@@ -393,8 +408,11 @@ class PlaySprings:
                 times.append(np.full(n, time))
                 shifts.append(np.full(n, self._shift_at(float(time), radius)))
         own = self._own_times(xi, g, ratio, start, t)
+        crossing = [False] * len(times) + [False] * len(own)
         if self.history.adhesive:
-            own += self._crossings(g, t)
+            crossings = self._crossings(g, t)
+            own += crossings
+            crossing += [True] * len(crossings)
         for column in own:
             times.append(np.where(column < t, column, np.nan))
             live = np.isfinite(times[-1])
@@ -403,8 +421,8 @@ class PlaySprings:
                 shift[live] = self.line.shift(self.history.radii(times[-1][live]))
             shifts.append(shift)
         if not times:
-            return np.empty((n, 0)), np.empty((n, 0))
-        return np.stack(times, axis=1), np.stack(shifts, axis=1)
+            return np.empty((n, 0)), np.empty((n, 0)), np.empty(0, bool)
+        return np.stack(times, axis=1), np.stack(shifts, axis=1), np.array(crossing)
 
     def _crossings(self, g: np.ndarray, t: float) -> list[np.ndarray]:
         """The times each spring's depth ``d − g(ξ)`` changes sign on each segment before ``t`` (``nan``: none)."""
@@ -438,12 +456,12 @@ class PlaySprings:
         g, ratio = self.line.profile(xi), self.line.ratio(xi)
         start, code = self.history.attach(xi, t)
         anchor, label = self._x(start), _ATTACHED + 3 * (code + 2)
-        times, shifts = self._columns(xi, g, ratio, start, t)
+        times, shifts, crossing = self._columns(xi, g, ratio, start, t)
         if times.shape[1]:
             order = np.argsort(times, axis=1, kind="stable")
             rows = np.arange(xi.size)[:, None]
             when, shift = times[rows, order], shifts[rows, order]
-            pressed = self._d(when) - g[:, None]
+            pressed = np.where(crossing[order], 0.0, self._d(when) - g[:, None])
             cap = shift + ratio[:, None] * np.maximum(pressed, 0.0)
             x = self._x(when)
             live = np.isfinite(when) & (when > start[:, None])
@@ -472,9 +490,8 @@ class PlaySprings:
         """
         return float(self.history.radii(np.array([t]))[0])
 
-    def state(self, t: float) -> tuple[float, float, float]:
-        """``F_x`` (N), the measure of the springs at a cap (in units of ``k_t/G*`` times m) and the length they
-        cover (m) at ``t``.
+    def compressed_radius(self, t: float) -> float:
+        """``x_c`` at ``t``: the radius of the compressed springs, ``g(x_c) = d`` (m; 0 at ``d <= 0``).
 
         Parameters
         ----------
@@ -483,21 +500,38 @@ class PlaySprings:
 
         Returns
         -------
-        tuple of float
-            The force, the sliding springs' measure and their length.
+        float
+            ``x_c``.
+        """
+        return float(self.line.radius(np.array([self._d(t)]))[0])
+
+    def state(self, t: float) -> "SpringState":
+        """``F_x`` and the springs at a cap at ``t`` (:class:`SpringState`).
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock).
+
+        Returns
+        -------
+        SpringState
+            The force, the sliding springs' measure and length, the compressed springs' length at a cap and in all.
         """
         a = self.radius(t)
         if not a > 0.0:
-            return 0.0, 0.0, 0.0
+            return SpringState(0.0, 0.0, 0.0, 0.0, 0.0)
         breaks = self._kinks(t, np.linspace(0.0, a, PANELS + 1))
         lows, highs = breaks[:-1], breaks[1:]
-        nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None])
-        weights = 0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]
-        anchor, label = self.anchors(nodes.ravel(), t)
-        w = self.line.weight(nodes.ravel()) * weights.ravel()
+        nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+        weights = (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
+        anchor, label = self.anchors(nodes, t)
+        w = self.line.weight(nodes) * weights
         at_cap = label < 0
+        pressed = self._d(t) - self.line.profile(nodes) > self._pressed_round_off
         force = 2.0 * self.line.G_star * float(np.sum(w * (self._x(t) - anchor)))
-        return force, float(np.sum(w[at_cap])), float(np.sum(weights.ravel()[at_cap]))
+        return SpringState(force, float(np.sum(w[at_cap])), float(np.sum(weights[at_cap])),
+                           float(np.sum(weights[at_cap & pressed])), float(np.sum(weights[pressed])))
 
     def _kinks(self, t: float, breaks: np.ndarray) -> np.ndarray:
         """``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances differ (within a
