@@ -9,20 +9,25 @@ is shared. This module composes each spring's play operator on its own, exactly 
 ``ξ`` with the kinks located (route (b) of issue 34's Coulomb part; it takes any per-spring cap, so on the half-space
 it is a third route beside the spans, checked against them).
 
-The anchor of a spring in contact at ``t`` that attached at ``τ`` (the last time ``d`` rose through ``g(ξ)``, without
-adhesion) is the output of the play operator of the window ``[L, U] = [x − c, x + c]`` over ``[τ, t]`` started at
-``x(τ)`` (it attaches with no shift). Where ``L`` and ``U`` are monotone between two times the operator over that
-interval is the clamp at its start followed by the clamp at its end; where ``L`` is convex and ``U`` concave, too (their
-running extremes lie at the interval's ends). Along a path segment ``x`` and ``d`` are linear in time, ``a = g⁻¹(d)``,
-and ``L = x − ū(a(d)) − μρ(d − g)`` is convex wherever ``ū(a(d))`` is concave in ``d`` (the paraboloid's, the power
-laws', the layer's tables in practice; section 6 of the symbolic module), so the anchor is a finite chain of clamps at
-the path's corners. Where the sampled ``ū(a(d))`` of a segment is not concave the chain gains, for every spring, the
-times of its own ``L``'s maximum and ``U``'s minimum there (golden sections, :data:`GOLDEN_STEPS`).
+The anchor of a spring in contact at ``t`` that attached at ``τ`` (the last time the radius grew through ``ξ``,
+:mod:`.play_history`: without adhesion where ``d`` rose through ``g(ξ)``, with adhesion on the ``Δγ0`` branch or at a
+jump-in) is the output of the play operator of the window ``[L, U] = [x − c, x + c]`` over ``[τ, t]`` started at
+``x(τ)`` (it attaches with no shift); with adhesion ``c = ū(a) + μρ max(d − g, 0)``, Coulomb's part off in tension,
+and each spring's chain holds the times its compression changes sign (the kink of its ``c`` in time), and the
+radius's jumps with both of their sides. Where ``L`` and ``U`` are monotone between two times the operator over
+that interval is the clamp at its start followed by the clamp at its end; where ``L`` is convex and ``U`` concave,
+too (their running extremes lie at the interval's ends). Along a path segment ``x`` and ``d`` are linear in time, and
+``L = x − ū(a(t)) − μρ(d − g)`` is convex wherever ``ū(a(t))`` is concave in ``t`` (the paraboloid's and the power
+laws' along a segment without adhesion, section 6 of the symbolic module; checked on every run), so the anchor is a
+finite chain of clamps at the path's corners. Where the sampled ``ū(a(t))`` of a piece of the radius's history is not
+concave the chain gains, for every spring, the times of its own ``L``'s maximum and ``U``'s minimum there (golden
+sections, :data:`GOLDEN_STEPS`).
 
 The force ``F_x = 2G* ∫₀ᵃ w(ξ)(x − Y_ξ) dξ`` (``w = k_t/G*``) is summed by Gauss–Legendre on panels of ``[0, a]``
 split where the anchor's provenance (which clamp of its chain last moved it, and to which edge) changes: there the
-anchor has a kink (a slip front, an old front kept in memory); in between it is smooth. A kink is located by
-bisection on the provenance (:data:`KINK_HALVINGS`). The springs at a cap at ``t`` are those whose last clamp is ``t``'s
+anchor has a kink (a slip front, an old front kept in memory; the provenance also tells whether the spring was
+compressed at that clamp: with adhesion its cap has a kink at ``x_c`` of that time); in between it is smooth. A kink
+is located by bisection on the provenance (:data:`KINK_HALVINGS`). The springs at a cap at ``t`` are those whose last clamp is ``t``'s
 own.
 """
 
@@ -38,7 +43,10 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.parameters import Parameters
 
-__all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP", "UPPER_CAP", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
+from .play_history import DepthHistory, SpanHistory
+
+__all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
+           "UPPER_CAP", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
            "CONCAVITY_SAMPLES"]
 
 #: Panels of ``[0, a]`` before the kinks are added.
@@ -58,8 +66,6 @@ CONCAVITY_SAMPLES = 65
 #: A second difference of ``ū(a(d))`` counts as convex above this share of its largest value (round-off).
 CONCAVITY_ROUND_OFF = 1e-12
 _GAUSS = np.polynomial.legendre.leggauss(NODES)
-#: Radii of two spans' common end within this share of each other are one radius, not a jump.
-JUMP_ROUND_OFF = 1e-12
 #: ``d − g`` within this share of the path's largest depth counts as not compressed (:meth:`PlaySprings.anchors`).
 PRESSED_ROUND_OFF = 1e-12
 #: Provenance codes: attached and never moved (plus the segment), a clamp's lower edge, its upper edge
@@ -186,137 +192,10 @@ class _Chain(NamedTuple):
 
 
 
-class DepthHistory:
-    """The radius of a contact without adhesion: ``a = g⁻¹(d)``, springs attaching where ``d`` rises through
-    ``g(ξ)``; no jumps.
-
-    Parameters
-    ----------
-    line : SpringLine
-        The springs.
-    path : Path
-        The path.
-    """
-
-    def __init__(self, line: SpringLine, path) -> None:
-        self.line, self.path = line, path
-        self.corner_t = np.asarray(path.corner_times, dtype=float)
-        self.corner_d = np.asarray(path.waypoints[:, 1], dtype=float)
-        #: ``(time, radius before, radius after)`` where the radius jumps (none)
-        self.jumps: list[tuple[float, float, float]] = []
-        #: whether springs in contact can be in tension (no: every spring in contact is compressed)
-        self.adhesive = False
-
-    def radii(self, times) -> np.ndarray:
-        """``a(t)`` (m) at ``times`` (s, path clock)."""
-        return self.line.radius(np.interp(times, self.corner_t, self.corner_d))
-
-    def pieces(self) -> list[tuple[float, float]]:
-        """The intervals in contact on which the radius is smooth: each segment's part at ``d > 0``."""
-        out = []
-        for k in range(len(self.corner_t) - 1):
-            (t0, t1), (d0, d1) = self.corner_t[k:k + 2], self.corner_d[k:k + 2]
-            if max(d0, d1) <= 0.0 or d0 == d1:
-                continue
-            surface = t0 + (t1 - t0) * (0.0 - d0) / (d1 - d0)
-            out.append((max(t0, surface), t1) if d1 > d0 else (t0, min(t1, surface)))
-        return out
-
-    def attach(self, xi: np.ndarray, t: float) -> tuple[np.ndarray, np.ndarray]:
-        """The last time up to ``t`` at which each spring attached (``d`` rising through ``g(ξ)``) and the segment it
-        attached on (−1: the path started with it in contact)."""
-        g = self.line.profile(xi)
-        when, segment = np.full(xi.shape, -np.inf), np.full(xi.shape, -2)
-        if self.corner_d[0] > 0.0:
-            inside = g < self.corner_d[0]
-            when[inside], segment[inside] = self.corner_t[0], -1
-        for k in range(len(self.corner_t) - 1):
-            (t0, t1), (d0, d1) = self.corner_t[k:k + 2], self.corner_d[k:k + 2]
-            if not d1 > d0 or t0 > t:
-                continue
-            at = t0 + (t1 - t0) * (g - d0) / (d1 - d0)
-            take = (g >= d0) & (g < d1) & (at <= t)
-            when[take], segment[take] = at[take], k
-        return when, segment
-
-
-class SpanHistory:
-    """The radius of an adhesive contact as the spans' run gives it (:class:`~.solution.PathSolution` with
-    frictionless springs): springs attach where the radius grows through them along a ``Δγ0`` branch (at
-    ``d = d₀(ξ)``, the branch's depth of the radius ``ξ``) or jumps past them (the jump-in), and the radius jumps at
-    the spans' boundaries where it does (a drop onto the ``Δγ1`` branch).
-
-    Parameters
-    ----------
-    solution : PathSolution
-        The run of the contact with frictionless springs.
-    """
-
-    def __init__(self, solution) -> None:
-        from .solution import _span_radius
-        from .state import Regime
-
-        self.solution, self._regime = solution, Regime
-        self._span_radius = _span_radius
-        self.adhesive = True
-        self._spans = [(span.t_start, span.t_end, span) for span in solution.spans]  # (on the path's clock)
-        self.jumps = []
-        previous = 0.0
-        for low, high, span in self._spans:
-            first, last = self._ends(span, low, high)
-            if abs(first - previous) > JUMP_ROUND_OFF * max(abs(first), abs(previous)):
-                self.jumps.append((low, previous, first))
-            previous = last
-
-    def _ends(self, span, low: float, high: float) -> tuple[float, float]:
-        if span.regime is self._regime.NONE:
-            return 0.0, 0.0
-        radius = self._span_radius(self.solution.model, span, span.segment.d(np.array([low, high])))
-        return float(radius[0]), float(radius[1])
-
-    def radii(self, times) -> np.ndarray:
-        """``a(t)`` (m) at ``times`` (s, path clock; the later span's at a boundary), 0 out of contact."""
-        from .solution import contact_radii
-
-        times = np.asarray(times, dtype=float)
-        inside = (times >= self._spans[0][0]) & (times <= self._spans[-1][1])
-        out = np.zeros(times.shape)
-        if np.any(inside):
-            out[inside] = contact_radii(self.solution, times[inside] - self.solution.t_contact)
-        return out
-
-    def pieces(self) -> list[tuple[float, float]]:
-        """The spans in contact whose radius moves (growing or shrinking)."""
-        moving = (self._regime.GROWING, self._regime.SHRINKING)
-        return [(low, high) for low, high, span in self._spans if span.regime in moving and high > low]
-
-    def attach(self, xi: np.ndarray, t: float) -> tuple[np.ndarray, np.ndarray]:
-        """The last time up to ``t`` at which each spring attached, and the span it attached in (as a code)."""
-        when, code = np.full(xi.shape, -np.inf), np.full(xi.shape, -2)
-        for index, (time, before, after) in enumerate(self.jumps):
-            take = (xi > before) & (xi <= after) & (time <= t)
-            when[take], code[take] = time, 2 * index
-        grow = self.solution.model.grow
-        for index, (low, high, span) in enumerate(self._spans):
-            if span.regime is not self._regime.GROWING or low > t:
-                continue
-            first, last = self._ends(span, low, high)
-            take = (xi > first) & (xi <= last)
-            if not np.any(take):
-                continue
-            depth = np.asarray(grow.depths(xi[take]), dtype=float)
-            d0, d1 = span.segment.d(np.array([low, high]))
-            at = low + (high - low) * (depth - d0) / (d1 - d0)
-            late = at <= t
-            rows = np.flatnonzero(take)[late]
-            later = at[late] >= when[rows]
-            when[rows[later]], code[rows[later]] = at[late][later], 2 * index + 1
-        return when, code
-
 @dataclass
 class PlaySprings:
     """``F_x`` and the springs at a cap along ``path`` (path clock), every anchor its own play operator (module
-    docstring); without adhesion.
+    docstring).
 
     Parameters
     ----------
