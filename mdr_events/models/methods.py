@@ -29,6 +29,7 @@ from mdr_events.limits import Limits
 from mdr_events.models import indenters
 from mdr_events.models.continuum import Tolerances, run_continuum
 from mdr_events.models.continuum.edges import check_edge_known
+from mdr_events.models.continuum.media import check_law
 from mdr_events.models.continuum.play_run import run_play_springs, takes_play_springs
 from mdr_events.models.continuum.rate_run import check_rate_layer, run_rate_continuum
 from mdr_events.models.continuum.rate_shifts import check_rate_friction
@@ -241,7 +242,7 @@ class Continuum:
 
     name: ClassVar[str] = "continuum"
     #: Whether the method runs a layer of finite thickness (``Contact.layer``): the springs' stiffness varying with
-    #: ``ξ`` (:mod:`~mdr_events.models.continuum.media`), every friction law there (Coulomb's part spring by spring).
+    #: ``ξ`` (:mod:`~mdr_events.models.continuum.media`), Coulomb's part there without adhesion (spring by spring).
     takes_layers: ClassVar[bool] = True
     tolerances: Tolerances = Tolerances()
     samples: int | None = None
@@ -293,14 +294,20 @@ class Continuum:
         self.check_layer(model.contact)
 
     def check_layer(self, contact: Contact) -> None:
-        """Every friction law runs on a layer: ``"tau0"`` on the spans, Coulomb's part spring by spring
-        (:mod:`~mdr_events.models.continuum.play_run`); what the layer's springs take is checked where they are made.
+        """Refuse on a layer of finite thickness a friction law the continuum does not run there
+        (:func:`~mdr_events.models.continuum.media.check_law`: Coulomb's part with adhesion).
 
         Parameters
         ----------
         contact : Contact
             The physical model.
+
+        Raises
+        ------
+        ValueError
+            A law with Coulomb's part on a layer of finite thickness with adhesion.
         """
+        check_law(contact.friction, contact.layer, any(work != 0.0 for work in contact.adhesion.works_at_rest))
 
     def check_case_count(self, count: int, limits: Limits) -> None:
         """The output a run of ``count`` cases takes, checked before they are built, as

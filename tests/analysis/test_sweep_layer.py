@@ -111,6 +111,12 @@ def test_the_closed_form_quantities_over_the_thickness_are_critical_angle_of_eac
 
 
 @pytest.mark.parametrize("call, fragment", [
+    (lambda: me.sweep({"h": [5e-3, 1e-3]}, COULOMB, "A", 20.0, engine=SERIAL),
+     "grid: friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded base in the continuum method; allowed: "
+     "'tau0' (the other laws run on a layer in method='discrete')"),
+    (lambda: me.sweep({"alpha": [20.0]}, COULOMB.replace(h=5e-3), "A", engine=SERIAL,
+                      quantities=CLOSED_FORM_QUANTITIES, history_samples=3),
+     "friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded base in the continuum method"),
     (lambda: me.sweep({"alpha": [90.0, 30.0]}, LAYERED.replace(**{"layer.base": "frictionless"}), "A", None,
                       SPRINGS, engine=SERIAL),
      "path 0 moves the indenter tangentially (x from 0 m to 0.000519615 m), which is not allowed on layer h = "

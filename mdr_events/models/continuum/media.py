@@ -20,7 +20,7 @@ kind                                 the springs
 ===================================  ===================================================================================
 
 On a layer the spans take the friction law ``"tau0"`` alone and the paper's adhesion law (:func:`check_law`); Coulomb's
-part runs there spring by spring (:mod:`.play_run`).
+part without adhesion runs there spring by spring (:mod:`.play_run`), with adhesion in the discrete method.
 """
 
 from __future__ import annotations
@@ -221,9 +221,9 @@ HALF_SPACE_MEDIUM = HalfSpaceMedium()
 
 
 
-def check_law(friction: FrictionLaw, layer: Layer) -> None:
-    """Refuse on a finite layer a friction law the spans do not run there: Coulomb's part (each spring's cap
-    ``μ k/k_t (d − g)`` has a ratio of its own, no level is shared: the continuum method runs it spring by spring,
+def check_law(friction: FrictionLaw, layer: Layer, adhesive: bool = True) -> None:
+    """Refuse on a finite layer a friction law the continuum does not run there: Coulomb's part with adhesion (and
+    any of it in the spans, which ask with ``adhesive`` true; without adhesion the springs' own play operators run it,
     :mod:`.play_run`).
 
     Parameters
@@ -232,16 +232,18 @@ def check_law(friction: FrictionLaw, layer: Layer) -> None:
         The friction law.
     layer : Layer
         The layer.
+    adhesive : bool, default True
+        Whether the contact is adhesive (the spans: always refused).
 
     Raises
     ------
     ValueError
-        A law with Coulomb's part on a layer of finite thickness.
+        A law with Coulomb's part on a layer of finite thickness with adhesion.
     """
-    if not layer.is_half_space and friction.coulomb_mu > 0.0:
-        raise ValueError(f"friction={friction.law!r} is not allowed on {layer.describe()} in the continuum's spans; "
-                         "allowed: 'tau0' (Coulomb's part runs on a layer spring by spring: simulate(..., "
-                         "method='continuum') or mdr_events.models.continuum.play_run.run_play_springs)")
+    if not layer.is_half_space and friction.coulomb_mu > 0.0 and adhesive:
+        raise ValueError(f"friction={friction.law!r} is not allowed on {layer.describe()} in the continuum method; "
+                         "allowed: 'tau0' (the other laws run on a layer in method='discrete'), or Coulomb's part "
+                         "without adhesion (dgamma0 = dgamma1 = 0)")
 
 
 def medium_of(params: Parameters, friction: FrictionLaw, profile, layer: Layer = HALF_SPACE) -> HalfSpaceMedium:
