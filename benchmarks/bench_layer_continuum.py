@@ -8,7 +8,11 @@ run, its tables precomputed and cached):
 - Fig. 8: scenario A at the eight angles 10°…80°;
 - Fig. 10: scenario B at the eight angles;
 - a fretting loop at the paper's ``d_max`` (three cycles of ±20 µm: full slip and re-stick on every reversal);
-- the frictionless base, vertically in and out (scenario A at 90°).
+- the frictionless base, vertically in and out (scenario A at 90°);
+- Coulomb's part without adhesion (``"coulomb"``, ``"tau0+coulomb"``, μ = 0.3, ``Δγ0 = Δγ1 = 0``) along scenario A at
+  20° and a fretting path of ±1 mm: on the layer every spring's play operator on its own
+  (:mod:`mdr_events.models.continuum.play_run`), on the half-space the spans; :data:`COULOMB_SAMPLES` samples (the
+  route's cost grows with them, some milliseconds a sample).
 
 The layer's first run of a process (the relations of ``theory/layer_continuum_symbolic.py`` lambdified, the tables
 read) is made before the timing, as the half-space's own derivations are. Beside the wall times the process's CPU
@@ -21,6 +25,7 @@ Run: ``python benchmarks/bench_layer_continuum.py [--repeat N]``.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import statistics
 import time
 
@@ -44,6 +49,21 @@ def fretting() -> me.Paths:
     return me.Paths({"fretting": me.Path(np.column_stack([x, d]), me.Parameters.paper().v)})
 
 
+#: The output samples of the Coulomb rows.
+COULOMB_SAMPLES = 201
+
+
+def coulomb_fretting() -> me.Paths:
+    """In to the paper's ``d_max``, two tangential cycles of ±1 mm there (full slip under Coulomb's law), and out."""
+    d_max = me.Parameters.paper().d_max
+    x = [0.0, 0.0, 1e-3, -1e-3, 1e-3, 0.0, 0.0]
+    d = [0.0, d_max, d_max, d_max, d_max, d_max, -1e-5]
+    return me.Paths({"fretting": me.Path(np.column_stack([x, d]), me.Parameters.paper().v)})
+
+
+#: label, the motion, the friction law (the Coulomb rows, without adhesion)
+COULOMB_ROWS = [(f"{law} {label}", motion, law) for law in ("coulomb", "tau0+coulomb")
+                for label, motion in (("A 20°", me.Scenario("A", alpha=[20.0])), ("fretting ±1 mm", coulomb_fretting()))]
 #: label, the motion, the base
 ROWS = [
     ("A 20°", me.Scenario("A", alpha=[20.0]), "bonded"),
@@ -72,10 +92,14 @@ def main() -> None:
           f"medians of {repeat} calls")
     print(f"{'case':28s} {'half-space':>11s} {'layer':>9s} {'ratio':>6s} {'CPU: half':>10s} {'layer':>8s} {'ratio':>6s} "
           f"target <= {RATIO_TARGET:g}")
-    for label, motion, base in ROWS:
-        half = me.Contact.paper()
+    cases = [(label, motion, me.Contact.paper(), base, {}) for label, motion, base in ROWS]
+    for label, motion, law in COULOMB_ROWS:
+        friction = me.FrictionLaw(law, mu=0.3, tau0=None if law == "coulomb" else me.Parameters.paper().tau0)
+        hertz = dataclasses.replace(me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0), friction=friction)
+        cases.append((label, motion, hertz, "bonded", {"samples": COULOMB_SAMPLES}))
+    for label, motion, half, base, options in cases:
         layer = half.replace(h=PAPER_LAYER, **{"layer.base": base})
-        runs = {name: (lambda contact=contact: me.simulate(contact, motion, "continuum"))
+        runs = {name: (lambda contact=contact: me.simulate(contact, motion, "continuum", **options))
                 for name, contact in (("half", half), ("layer", layer))}
         for run in runs.values():
             run()  # (derivations, tables and lambdified relations loaded)

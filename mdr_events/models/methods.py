@@ -31,6 +31,7 @@ from mdr_events.models.continuum import Tolerances, run_continuum
 from mdr_events.models.continuum.tolerances import check_tolerances
 from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.media import check_law
+from mdr_events.models.continuum.play_run import run_play_springs, takes_play_springs
 from mdr_events.models.continuum.rate_run import check_rate_layer, run_rate_continuum
 from mdr_events.models.continuum.rate_shifts import check_rate_friction
 from mdr_events.models.continuum.extrema import solution_extrema
@@ -242,7 +243,7 @@ class Continuum:
 
     name: ClassVar[str] = "continuum"
     #: Whether the method runs a layer of finite thickness (``Contact.layer``): the springs' stiffness varying with
-    #: ``ξ`` (:mod:`~mdr_events.models.continuum.media`), the friction law ``"tau0"`` alone there.
+    #: ``ξ`` (:mod:`~mdr_events.models.continuum.media`), Coulomb's part there without adhesion (spring by spring).
     takes_layers: ClassVar[bool] = True
     tolerances: Tolerances = Tolerances()
     samples: int | None = None
@@ -288,7 +289,7 @@ class Continuum:
 
     def check_layer(self, contact: Contact) -> None:
         """Refuse on a layer of finite thickness a friction law the continuum does not run there
-        (:func:`~mdr_events.models.continuum.media.check_law`: ``"tau0"`` alone).
+        (:func:`~mdr_events.models.continuum.media.check_law`: Coulomb's part with adhesion).
 
         Parameters
         ----------
@@ -298,9 +299,9 @@ class Continuum:
         Raises
         ------
         ValueError
-            A law with Coulomb's part on a layer of finite thickness.
+            A law with Coulomb's part on a layer of finite thickness with adhesion.
         """
-        check_law(contact.friction, contact.layer)
+        check_law(contact.friction, contact.layer, any(work != 0.0 for work in contact.adhesion.works_at_rest))
 
     def check_case_count(self, count: int, limits: Limits) -> None:
         """The output a run of ``count`` cases takes, checked before they are built, as
@@ -358,6 +359,8 @@ class Continuum:
 def _paper_run(model: KernelModel, paths, times, tolerances, limits) -> dict:
     """The paper's law (:func:`~mdr_events.models.continuum.solve.run_continuum`) with each run's exact extrema, on
     the half-space or the layer."""
+    if takes_play_springs(model):  # (Coulomb's part on a layer: each spring its own play operator)
+        return run_play_springs(model, paths, times, tolerances, limits)
     raw = run_continuum(model, paths, times, tolerances, limits)
     raw["extrema"] = [solution_extrema(solution) for solution in raw["solutions"]]
     return raw

@@ -19,7 +19,16 @@ at ``Φ_t = Θ = γ = 1``. Nothing is typed in as a result. Sections (:func:`con
    branch's slope, positive on its stable part);
 4. the branch (generalised (9)) ``d = g − sqrt(4π a Δγ/K')`` and its slope with ``γ``, ``Θ`` and their derivatives;
 5. the normal force's slope along a branch, ``dF_N/da = K'(a)(d − g(a)) + K(a) d'(a)``, from
-   ``F_N = ∫₋ₐᵃ k (d − g) dx`` (the half-space's ``2E*(d + a d' − g)``).
+   ``F_N = ∫₋ₐᵃ k (d − g) dx`` (the half-space's ``2E*(d + a d' − g)``);
+6. Coulomb's cap on the layer (issue 26 and 34): a spring's tangential force ``k_t u`` at most ``μ`` times its normal
+   one ``k (d − g)``, so its cap in shift units is ``μ ρ(ξ)(d − g(ξ))``, ``ρ = k/k_t = E*Θ²/(G* w)`` (``μE*/G*`` on
+   the half-space); every spring at its cap gives ``2∫₀ᵃ k_t μρ(d − g) dξ = μ F_N``, full slip ``π a² τ0 + μ F_N``.
+   ``ρ`` varies with ``ξ``: no level is shared by the springs (the half-space's ``x − σ(K a + κ d)``), and the
+   continuum composes each spring's play operator on its own (:mod:`mdr_events.models.continuum.play_springs`).
+   Along a path segment without adhesion ``d`` is linear in time, ``a = g⁻¹(d)``, and a spring's lower window edge
+   ``L = x − ū(a(d)) − μρ(d − g)`` has ``d²L/dd² = −d²ū(a(d))/dd²``: where ``ū(a(d))`` is concave in ``d`` (the
+   paraboloid's and the power laws' ``K a ∝ d^(1/n)``, ``n ≥ 1``) ``L`` is convex and ``U = x + ū + μρ(d − g)``
+   concave, so their running extremes over a time interval lie at its ends (checked here on the half-space).
 
 The relations are cached beside the paper's (:func:`continuum_cache_path`), keyed by this module's source.
 """
@@ -57,7 +66,8 @@ CONTINUUM_KEYS = ("layer_continuum_tangential_factor", "layer_continuum_tangenti
                   "layer_continuum_measure", "layer_continuum_force_rate", "layer_continuum_level_rate",
                   "layer_continuum_profile", "layer_continuum_profile_slope", "layer_continuum_branch_depth",
                   "layer_continuum_branch_slope", "layer_continuum_normal_force_slope",
-                  "layer_continuum_tangential_factor_pair", "layer_continuum_branch_pair")
+                  "layer_continuum_tangential_factor_pair", "layer_continuum_branch_pair",
+                  "layer_continuum_coulomb_ratio")
 
 #: Hash of this module's source and SymPy's version: the key of :func:`continuum_cache_path`.
 _SOURCE_DIGEST = symbolic.source_digest(__file__)
@@ -120,6 +130,7 @@ def continuum_model_afresh() -> dict[str, Relation]:
     _derive_cap(add)
     _derive_rates(add)
     _derive_branch(add)
+    _derive_coulomb(add)
     return out
 
 
@@ -245,3 +256,27 @@ def _derive_branch(add) -> None:
     _check(sp.simplify(half_force - 2 * E_star * (d_a + a * dd_a - g_a)) == 0, "dF_N/da at h = inf")
     add(Relation("layer_continuum_normal_force_slope", "(10)", "dF_N/da along a branch = K'(a)(d − g(a)) + K(a) d'(a)",
                  sp.Symbol("dF_N"), closed, (K_a, dK_a, d_a, g_a, dd_a)))
+
+
+def _derive_coulomb(add) -> None:
+    """Section 6: Coulomb's cap per compression ``ρ = k/k_t``, full slip ``μ F_N``, the window edges' convexity."""
+    w_fn, k_fn, g_fn = sp.Function("w"), sp.Function("k"), sp.Function("g")
+    mu = sp.Symbol("mu", nonnegative=True)
+    ratio = (E_star * Theta**2) / (G_star * sp.Symbol("w", positive=True))   # k/k_t with k = K'/2 = E*Θ², k_t = G* w
+    _check(sp.simplify(ratio.subs({Theta: 1, sp.Symbol("w", positive=True): 1}) - E_star / G_star) == 0,
+           "Coulomb's ratio at h = inf")
+    # every spring at its cap: 2∫ k_t μ (k/k_t)(d − g) dξ = μ ∫₋ₐᵃ k (d − g) dx = μ F_N (10), whatever w is
+    at_caps = 2 * sp.Integral(G_star * w_fn(xi) * mu * (k_fn(xi) / (G_star * w_fn(xi))) * (d - g_fn(xi)), (xi, 0, a))
+    normal = sp.Integral(2 * k_fn(xi) * (d - g_fn(xi)), (xi, 0, a))
+    _check(sp.simplify(at_caps.doit() - mu * normal.doit()) == 0, "full slip is not μ F_N")
+    # the window edges along a segment without adhesion, in the depth e: L convex where ū(a(e)) is concave
+    e, rho, slope_x = sp.symbols("e rho s_x", positive=True)
+    n_sym, c_sym = sp.symbols("n c", positive=True)
+    for shift, name in ((K * sp.sqrt(R * e), "the paraboloid"), (K * (e / c_sym)**(1 / n_sym), "a power law")):
+        lower = slope_x * e - shift - mu * rho * (e - g_fn(xi))
+        curvature = sp.simplify(sp.diff(lower, e, 2))
+        _check(sp.simplify(curvature + sp.diff(shift, e, 2)) == 0, f"L's curvature on {name}")
+        if name == "the paraboloid":
+            _check(bool(sp.simplify(curvature).is_positive), "L is not convex on the paraboloid")
+    add(Relation("layer_continuum_coulomb_ratio", "(13)", "Coulomb's cap per compression ρ = k/k_t = E*Θ²/(G* w)",
+                 sp.Symbol("rho"), ratio, (E_star, G_star, Theta, sp.Symbol("w", positive=True))))

@@ -19,8 +19,8 @@ kind                                 the springs
                                      tangential motion run on it, ``F_x = 0``)
 ===================================  ===================================================================================
 
-On a layer the continuum takes the friction law ``"tau0"`` alone and the paper's adhesion law (:func:`check_law`);
-the other laws run there in the discrete method.
+On a layer the spans take the friction law ``"tau0"`` alone and the paper's adhesion law (:func:`check_law`); Coulomb's
+part without adhesion runs there spring by spring (:mod:`.play_run`), with adhesion in the discrete method.
 """
 
 from __future__ import annotations
@@ -37,7 +37,7 @@ from mdr_events.theory import power_law, symbolic, tabulated
 if TYPE_CHECKING:
     from .anchors import AnchorMap, Piece
 
-__all__ = ["HalfSpaceMedium", "HALF_SPACE_MEDIUM", "medium_of", "check_law", "FACTOR_CACHE"]
+__all__ = ["HalfSpaceMedium", "HALF_SPACE_MEDIUM", "medium_of", "check_law", "layer_medium", "FACTOR_CACHE"]
 
 
 #: How many radii's tangential factors a layer's medium remembers (``LayerMedium._factor``, :mod:`.layer_media`).
@@ -221,8 +221,10 @@ HALF_SPACE_MEDIUM = HalfSpaceMedium()
 
 
 
-def check_law(friction: FrictionLaw, layer: Layer) -> None:
-    """Refuse on a finite layer a friction law the continuum does not run there: all but ``"tau0"``.
+def check_law(friction: FrictionLaw, layer: Layer, adhesive: bool = True) -> None:
+    """Refuse on a finite layer a friction law the continuum does not run there: Coulomb's part with adhesion (and
+    any of it in the spans, which ask with ``adhesive`` true; without adhesion the springs' own play operators run it,
+    :mod:`.play_run`).
 
     Parameters
     ----------
@@ -230,15 +232,18 @@ def check_law(friction: FrictionLaw, layer: Layer) -> None:
         The friction law.
     layer : Layer
         The layer.
+    adhesive : bool, default True
+        Whether the contact is adhesive (the spans: always refused).
 
     Raises
     ------
     ValueError
-        A law with Coulomb's part on a layer of finite thickness.
+        A law with Coulomb's part on a layer of finite thickness with adhesion.
     """
-    if not layer.is_half_space and friction.coulomb_mu > 0.0:
+    if not layer.is_half_space and friction.coulomb_mu > 0.0 and adhesive:
         raise ValueError(f"friction={friction.law!r} is not allowed on {layer.describe()} in the continuum method; "
-                         "allowed: 'tau0' (the other laws run on a layer in method='discrete')")
+                         "allowed: 'tau0' (the other laws run on a layer in method='discrete'), or Coulomb's part "
+                         "without adhesion (dgamma0 = dgamma1 = 0)")
 
 
 def medium_of(params: Parameters, friction: FrictionLaw, profile, layer: Layer = HALF_SPACE) -> HalfSpaceMedium:
@@ -268,6 +273,31 @@ def medium_of(params: Parameters, friction: FrictionLaw, profile, layer: Layer =
     if layer.is_half_space:
         return HALF_SPACE_MEDIUM
     check_law(friction, layer)
+    return layer_medium(params, profile, layer)
+
+
+def layer_medium(params: Parameters, profile, layer: Layer) -> HalfSpaceMedium:
+    """The medium of a finite ``layer`` whatever the friction law (:func:`medium_of` checks the law first).
+
+    Parameters
+    ----------
+    params : Parameters
+        The material.
+    profile : PowerLaw or None
+        The indenter (``None``: the paraboloid of ``params.R``).
+    layer : Layer
+        The layer (finite thickness).
+
+    Returns
+    -------
+    LayerMedium or FrictionlessLayerMedium
+        The medium.
+
+    Raises
+    ------
+    ValueError
+        Another indenter.
+    """
     return _layer_medium(params, Paraboloid(params.R) if profile is None else profile, layer)
 
 

@@ -1,0 +1,253 @@
+"""The continuum method with every spring's play operator on its own (:mod:`.play_springs`): Coulomb's part of the
+friction law on a layer of finite thickness, with or without adhesion.
+
+:func:`run_play_springs` fills what :func:`~mdr_events.models.continuum.solve.run_continuum` fills: the normal problem
+(radius, ``F_N``, area, the edge's events and extrema) is the spans' run of the same contact with frictionless springs
+(it does not depend on the friction law; with adhesion its radius is the springs' history,
+:class:`~.play_springs.SpanHistory`), and ``F_x``, the sliding fraction, the springs' events and the extrema of
+``F_x`` are the per-spring route's. The log holds the edge's events and the path's corners of the spans' run and, per
+piece of a contact between tangential reversals, a re-stick at the reversal where springs were at a cap before it,
+the slip onset (the first time a spring is at a cap: the share at a cap first positive at the output times in the
+piece and its end, the centre and the edge probed beside the quadrature's nodes, then bisected to
+:data:`EVENT_HALVINGS`) and full slip (every spring at a cap, found the same way). A re-stick where a level turns
+back without a reversal of ``x``, and a zone that opens and closes between two output times, are not logged. The
+extrema of ``F_x`` are the largest and least sample refined by bounded minimisation between its neighbours.
+"""
+
+from __future__ import annotations
+
+
+import numpy as np
+from scipy.optimize import minimize_scalar
+
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.layer import LayerBase
+from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.models.kernel_model import KernelModel
+
+from .extrema import extremum_names, solution_extrema
+from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, spring_line
+from .solve import run_continuum
+from .state import Event, EventKind
+from .tolerances import Tolerances
+
+__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "PROBE_POINTS"]
+
+#: Halvings of an event's bracket between two samples (2^-48 of it: 1e-14 of the spacing).
+EVENT_HALVINGS = 48
+#: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
+FULL_SHARE = 1e-12
+#: Where the edge is probed: this share of the radius inside it.
+PROBE_SHARE = 1e-12
+#: A contact's end is probed this share of its last piece before it (the radius 0 at the end itself).
+END_PROBE = 1e-9
+#: Springs probed where the quadrature's nodes hold none at a cap (a zone opening between them is found once it
+#: reaches one of these: its onset within its growth to ``a/(PROBE_POINTS − 1)``).
+PROBE_POINTS = 1025
+#: The share of a contact whose centre alone is at a cap (:func:`_share`).
+SMALLEST = 5e-324
+#: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
+EXTREMUM_XTOL = 1e-12
+#: The springs' events the spans' frictionless run logs and this route replaces.
+_SPRING_EVENTS = frozenset({EventKind.SLIP_ONSET, EventKind.FULL_SLIP, EventKind.RE_STICK, EventKind.FRONT_AT_CENTRE,
+                            EventKind.FRONT_AT_EDGE})
+#: The frictionless law of the normal run.
+_FRICTIONLESS = FrictionLaw("coulomb", mu=0.0)
+
+
+def takes_play_springs(model: KernelModel) -> bool:
+    """Whether the continuum runs ``model`` spring by spring: Coulomb's part on a finite layer.
+
+    Parameters
+    ----------
+    model : KernelModel
+        The flat model.
+
+    Returns
+    -------
+    bool
+        Whether :func:`run_play_springs` runs it.
+    """
+    return not model.layer.is_half_space and model.friction.coulomb_mu > 0.0
+
+
+def _adhesive(model: KernelModel) -> bool:
+    return model.params.dgamma0 != 0.0 or model.params.dgamma1 != 0.0
+
+
+def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = Tolerances(),
+                     limits: Limits = DEFAULT_LIMITS) -> dict:
+    """Every path solved: the normal problem by the spans, the springs by their own play operators (module docstring).
+
+    Parameters
+    ----------
+    model : KernelModel
+        The flat model.
+    paths : list of Path
+        One path per case.
+    times : numpy.ndarray or int
+        The output times (s from first contact), or their number.
+    tolerances : Tolerances, optional
+        The spans' tolerances.
+    limits : Limits, optional
+        The resource limits.
+
+    Returns
+    -------
+    dict
+        As :func:`~mdr_events.models.continuum.solve.run_continuum`, with ``extrema``.
+    """
+    normal = model._replace(friction=_FRICTIONLESS)
+    raw = run_continuum(normal, paths, times, tolerances, limits)
+    if model.layer.base is not LayerBase.BONDED:  # (no tangential springs: F_x = 0 whatever the law)
+        raw["extrema"] = [solution_extrema(solution) for solution in raw["solutions"]]
+        return raw
+    line = spring_line(model.params, model.profile, model.friction, model.layer)
+    raw["extrema"] = []
+    for case, (path, solution) in enumerate(zip(paths, raw["solutions"])):
+        play = PlaySprings(line, path, SpanHistory(solution) if _adhesive(model) else None)
+        start = path.first_contact_time()
+        radius = raw["contact_radius"][case]
+        force, sliding, shares = _samples(play, raw["time"] + start, radius)
+        raw["tangential_force"][case] = np.where(np.isnan(raw["tangential_force"][case]), np.nan, force)
+        raw["sliding_fraction"][case] = np.where(radius > 0, sliding, np.nan)
+        kept = [event for event in solution.events if event.kind not in _SPRING_EVENTS]
+        raw["events"][case] = sorted(kept + _spring_events(play, raw["time"], shares, start, solution.events),
+                                     key=lambda event: event.time)
+        extrema = solution_extrema(solution)
+        extrema.update(_force_extrema(play, raw["time"], force, start, path))
+        raw["extrema"].append(extrema)
+    return raw
+
+
+def _samples(play: PlaySprings, times: np.ndarray, radius: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``F_x``, the sliding fraction (length at a cap over ``a``) and the share of :func:`_share` at each time in
+    contact (0, nan and 0 elsewhere)."""
+    force, sliding, shares = np.zeros(times.shape), np.full(times.shape, np.nan), np.zeros(times.shape)
+    for k, time in enumerate(times):
+        if radius[k] > 0:
+            a = play.radius(float(time))
+            if a > 0:
+                state = play.state(float(time))
+                force[k], sliding[k] = state.force, min(state.length / a, 1.0)
+                shares[k] = _probed(play, float(time), a, state)
+    return force, sliding, shares
+
+
+def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, start: float, events) -> list[Event]:
+    """The springs' events (module docstring) on the clock from first contact: in each piece of a contact between
+    tangential reversals, a re-stick at its start where springs were at a cap before the reversal, then the first
+    slip onset and full slip."""
+    out = []
+    for begin, end, reversal in _pieces(events):
+        if reversal and _share(play, begin + start) > 0.0:
+            out.append(_event(play, begin + start, start, EventKind.RE_STICK))
+        inside = (times > begin) & (times < end)
+        last = end if reversal_end(events, end) else end - END_PROBE * (end - begin)
+        probes, shares = np.append(times[inside], last), np.append(sampled[inside], _share(play, last + start))
+        for kind, reached in ((EventKind.SLIP_ONSET, lambda share: share > 0.0),
+                              (EventKind.FULL_SLIP, lambda share: share >= 1.0 - FULL_SHARE)):
+            hit = np.flatnonzero(reached(shares))
+            if not hit.size:
+                continue
+            k = int(hit[0])
+            low = probes[k - 1] if k > 0 else begin
+            out.append(_event(play, _bisect(play, low + start, probes[k] + start, reached), start, kind))
+    return out
+
+
+def reversal_end(events, time: float) -> bool:
+    """Whether ``time`` is a tangential reversal of the log (else a contact's end)."""
+    return any(event.kind is EventKind.TANGENTIAL_REVERSAL and event.time == time for event in events)
+
+
+def _pieces(events) -> list[tuple[float, float, bool]]:
+    """Each contact of the log cut at its tangential reversals: ``(begin, end, whether it begins at a reversal)``."""
+    contacts = [event.time for event in events if event.kind in (EventKind.FIRST_CONTACT, EventKind.RE_CONTACT)]
+    ends = [event.time for event in events if event.kind in (EventKind.PULL_OFF, EventKind.CONTACT_ENDS)]
+    reversals = [event.time for event in events if event.kind is EventKind.TANGENTIAL_REVERSAL]
+    last = max([event.time for event in events], default=0.0)
+    out = []
+    for begin in contacts:
+        end = min([time for time in ends if time > begin], default=last)
+        cuts = [begin] + [time for time in reversals if begin < time < end] + [end]
+        out += [(low, high, low != begin) for low, high in zip(cuts[:-1], cuts[1:]) if high > low]
+    return out
+
+
+def _share(play: PlaySprings, time: float) -> float:
+    """The share of the contact's length at a cap, or the least positive float where only the centre spring or the
+    edge is (a zone opening at ``ξ = 0`` between the quadrature's nodes: the slip onset of scenario A). Under
+    Coulomb's law alone the compressed zone's (its springs in tension hold no shift: they slide from the start, and
+    the slip events are the compressed zone's, as the spans log them)."""
+    a = play.radius(time)
+    if not a > 0:
+        return 0.0
+    return _probed(play, time, a, play.state(time))
+
+
+def _probed(play: PlaySprings, time: float, a: float, state) -> float:
+    """The share at a cap of ``state`` with the centre and the edge probed (:func:`_share`)."""
+    coulomb_alone = not play.line.shift(np.array([a]))[0] > 0.0
+    if coulomb_alone:
+        edge = min(a, float(play.compressed_radius(time)))
+        if not edge > 0.0:
+            return 0.0
+        share = state.compressed_at_cap / state.compressed if state.compressed > 0.0 else 0.0
+    else:
+        edge, share = a, state.length / a
+    points = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS) if share == 0.0 else np.array([0.0, 1.0 - PROBE_SHARE])
+    at_cap = play.anchors(edge * points, time)[1] < 0
+    if share == 0.0 and np.any(at_cap):
+        return SMALLEST
+    return share if np.all(at_cap[[0, -1]]) else min(share, 1.0 - 2.0 * FULL_SHARE)
+
+
+def _bisect(play: PlaySprings, low: float, high: float, reached) -> float:
+    for _ in range(EVENT_HALVINGS):
+        middle = 0.5 * (low + high)
+        if middle in (low, high):
+            break
+        if reached(_share(play, middle)):
+            high = middle
+        else:
+            low = middle
+    return high
+
+
+def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Event:
+    """The event at ``time`` (path clock); direction: the cap its springs are at (+1 the lower, ``x − c``: pushed
+    towards ``+x``; −1 the upper), the more covered of the two at the probes of :func:`_share` (the compressed
+    springs under Coulomb's law alone)."""
+    a = play.radius(time)
+    coulomb_alone = not play.line.shift(np.array([a]))[0] > 0.0
+    edge = min(a, float(play.compressed_radius(time))) if coulomb_alone else a
+    points = edge * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)
+    labels = play.anchors(points, time)[1]
+    lower, upper = np.count_nonzero(np.isin(labels, LOWER_CAP)), np.count_nonzero(np.isin(labels, UPPER_CAP))
+    direction = 0 if lower == upper == 0 else (1 if lower >= upper else -1)
+    return Event(time - start, kind, float(play._d(time)), a, float(play._x(time)), direction)
+
+
+def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path) -> dict:
+    """The largest and least ``F_x`` (N) and their times (s from first contact): among the samples and the path's
+    corners (where ``F_x`` has kinks), the best refined between its neighbours."""
+    out, duration = {}, path.duration
+    corners = path.corner_times - start
+    corners = corners[(corners > times[0]) & (corners < times[-1])]
+    at_corners = np.array([play.state(float(time) + start)[0] for time in corners])
+    order = np.argsort(np.concatenate([times, corners]), kind="stable")
+    times, force = np.concatenate([times, corners])[order], np.concatenate([force, at_corners])[order]
+    for kind, sign in (("max", 1.0), ("min", -1.0)):
+        k = int(np.argmax(sign * force))
+        value, time = float(force[k]), float(times[k])
+        low, high = times[max(k - 1, 0)], times[min(k + 1, times.size - 1)]
+        if high > low and value != 0.0 and time not in corners:  # (at a corner: a kink, the extremum itself)
+            found = minimize_scalar(lambda t: -sign * play.state(float(t) + start)[0], bounds=(low, high),
+                                    method="bounded", options={"xatol": EXTREMUM_XTOL * duration})
+            refined = -sign * float(found.fun)
+            if sign * refined > sign * value:
+                value, time = refined, float(found.x)
+        value_name, time_name = extremum_names("tangential_force", kind)
+        out[value_name], out[time_name] = value, time
+    return out

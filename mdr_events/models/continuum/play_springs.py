@@ -1,0 +1,489 @@
+r"""Coulomb's part of the friction law spring by spring: every anchor the play operator of its own window.
+
+Each spring at ``ξ`` holds its tangential shift within ``±c(ξ, t)``, ``c = ū(a) + μ ρ(ξ) (d − g(ξ))`` (:mod:`.caps`;
+``ρ = k/k_t``, ``E*/G*`` on the half-space, ``K'/K_t'`` on a layer, as the discrete model's
+:meth:`~mdr_events.models.spring_media.LayerSprings.coulomb_ratios`, derived in
+:func:`~mdr_events.theory.layer_continuum_symbolic.derive_continuum_model`). On the half-space ``ρ`` is one number and
+the springs share a level (:meth:`~.anchors.AnchorMap.seen_by`); on a layer ``μ ρ(ξ) d`` is not separable and no level
+is shared. This module composes each spring's play operator on its own, exactly in time, and integrates the force in
+``ξ`` with the kinks located (route (b) of issue 34's Coulomb part; it takes any per-spring cap, so on the half-space
+it is a third route beside the spans, checked against them).
+
+The anchor of a spring in contact at ``t`` that attached at ``τ`` (the last time the radius grew through ``ξ``,
+:mod:`.play_history`: without adhesion where ``d`` rose through ``g(ξ)``, with adhesion on the ``Δγ0`` branch or at a
+jump-in) is the output of the play operator of the window ``[L, U] = [x − c, x + c]`` over ``[τ, t]`` started at
+``x(τ)`` (it attaches with no shift); with adhesion ``c = ū(a) + μρ max(d − g, 0)``, Coulomb's part off in tension,
+and each spring's chain holds the times its compression changes sign (the kink of its ``c`` in time), and the
+radius's jumps with both of their sides. Where ``L`` and ``U`` are monotone between two times the operator over
+that interval is the clamp at its start followed by the clamp at its end; where ``L`` is convex and ``U`` concave,
+too (their running extremes lie at the interval's ends). Along a path segment ``x`` and ``d`` are linear in time, and
+``L = x − ū(a(t)) − μρ(d − g)`` is convex wherever ``ū(a(t))`` is concave in ``t`` (the paraboloid's and the power
+laws' along a segment without adhesion, section 6 of the symbolic module; checked on every run), so the anchor is a
+finite chain of clamps at the path's corners. Where the sampled ``ū(a(t))`` of a piece of the radius's history is not
+concave the chain gains, for every spring, the times of its own ``L``'s maximum and ``U``'s minimum there (golden
+sections, :data:`GOLDEN_STEPS`).
+
+The force ``F_x = 2G* ∫₀ᵃ w(ξ)(x − Y_ξ) dξ`` (``w = k_t/G*``) is summed by Gauss–Legendre on panels of ``[0, a]``
+split where the anchor's provenance (which clamp of its chain last moved it, and to which edge) changes: there the
+anchor has a kink (a slip front, an old front kept in memory; the provenance also tells whether the spring was
+compressed at that clamp: with adhesion its cap has a kink at ``x_c`` of that time); in between it is smooth. A kink
+is located by bisection on the provenance (:data:`KINK_HALVINGS`). The springs at a cap at ``t`` are those whose last clamp is ``t``'s
+own.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, NamedTuple
+
+import numpy as np
+
+from mdr_events.contact.adhesion import Adhesion
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.layer import HALF_SPACE, Layer
+from mdr_events.parameters import Parameters
+
+from .play_history import DepthHistory, SpanHistory
+
+__all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
+           "UPPER_CAP", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
+           "CONCAVITY_SAMPLES"]
+
+#: Panels of ``[0, a]`` before the kinks are added.
+PANELS = 8
+#: Gauss–Legendre nodes per panel (between kinks the anchor is smooth: the rule's error falls as ``(width)^(2n)``).
+NODES = 12
+#: Halvings of the bracket of a kink in ``ξ``: below the doubles' resolution of the radius.
+KINK_HALVINGS = 60
+#: Points a kink's bracket is cut into at once (a power of two).
+KINK_CUTS = 16
+#: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
+KINK_ROUNDS = 6
+#: Steps of a golden section (0.618^80 ≈ 2e-17 of the interval).
+GOLDEN_STEPS = 80
+#: Depths at which a segment's ``ū(a(d))`` is sampled for its concavity.
+CONCAVITY_SAMPLES = 65
+#: A second difference of ``ū(a(d))`` counts as convex above this share of its largest value (round-off).
+CONCAVITY_ROUND_OFF = 1e-12
+_GAUSS = np.polynomial.legendre.leggauss(NODES)
+#: ``d − g`` within this share of the path's largest depth counts as not compressed (:meth:`PlaySprings.anchors`).
+PRESSED_ROUND_OFF = 1e-12
+#: Provenance codes: attached and never moved (plus the segment), a clamp's lower edge, its upper edge
+_ATTACHED, _LOWER, _UPPER = 0, 1, 2
+#: The provenance of a spring at the lower cap at the time asked (in tension, compressed), and at the upper one
+LOWER_CAP, UPPER_CAP = (-1, -4), (-2, -5)
+#: The provenance codes of the clamps start here, above every attachment's
+_COLUMN_CODES = 1 << 40
+
+
+class SpringLine(NamedTuple):
+    """What the per-spring route reads of the springs, vectorised in ``ξ`` or the depth."""
+
+    #: ``g(ξ)`` (m)
+    profile: Callable[[np.ndarray], np.ndarray]
+    #: ``w(ξ) = k_t(ξ)/G*``
+    weight: Callable[[np.ndarray], np.ndarray]
+    #: Coulomb's cap per compression ``μ k(ξ)/k_t(ξ)`` (0 without Coulomb's part)
+    ratio: Callable[[np.ndarray], np.ndarray]
+    #: the cap of ``τ0``'s part ``ū(a)`` (m; 0 without it)
+    shift: Callable[[np.ndarray], np.ndarray]
+    #: the contact radius of a depth without adhesion, ``g⁻¹(d)`` (0 at ``d <= 0``)
+    radius: Callable[[np.ndarray], np.ndarray]
+    #: ``G*`` (Pa)
+    G_star: float
+
+
+def spring_line(params: Parameters, profile, friction: FrictionLaw, layer: Layer = HALF_SPACE) -> SpringLine:
+    """The springs of a run without adhesion as the per-spring route reads them: the discrete model's own ``g``,
+    ``k_t/G*`` and Coulomb's ratios (:mod:`~mdr_events.models.spring_media`), the continuum's cap of ``τ0``
+    (:mod:`.media`) and its branch of ``Δγ = 0``.
+
+    Parameters
+    ----------
+    params : Parameters
+        The material and ``τ0``.
+    profile : PowerLaw or None
+        The indenter (``None``: the paraboloid of ``params.R``).
+    friction : FrictionLaw
+        The friction law.
+    layer : Layer, default the half-space
+        The body.
+
+    Returns
+    -------
+    SpringLine
+        The springs.
+    """
+    from mdr_events.models.spring_media import springs_of
+
+    from .caps import caps_of
+    from .media import HALF_SPACE_MEDIUM, layer_medium
+
+    springs = springs_of(params, profile, None, layer)
+    medium = HALF_SPACE_MEDIUM if layer.is_half_space else layer_medium(params, profile, layer)
+    K = caps_of(friction, params, medium).K
+    branch = medium.edge(Adhesion(), params, profile).grow
+
+    def shift(a):
+        return medium.shift(K, np.asarray(a, dtype=float)) if K > 0.0 else np.zeros(np.shape(a))
+
+    def radius(d):
+        d = np.asarray(d, dtype=float)
+        out = np.zeros(d.shape)
+        inside = d > 0.0
+        if np.any(inside):
+            out[inside] = branch.radii(d[inside])
+        return out
+
+    if layer.is_half_space:  # (the half-space's springs weigh 1 each)
+        return SpringLine(springs.profile, _unit_weights, lambda xi: springs.coulomb_ratios(xi, friction), shift,
+                          radius, params.G_star)
+    return SpringLine(*_layer_springs(params, springs.indenter, friction, layer), shift, radius, params.G_star)
+
+
+def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: Layer):
+    """``g``, ``k_t/G*`` and ``μ k/k_t`` of the discrete model's :class:`~mdr_events.models.spring_media.LayerSprings`
+    with the same arithmetic, the relations called past their argument checks (a run evaluates them some thousand
+    times on arrays of radii within its contact, which the layer's reach check has bounded before,
+    :mod:`.layer_reach`)."""
+    from mdr_events.theory.layer import power_law_profile, spring_stiffness_density
+    from mdr_events.theory.layer_tangential import tangential_spring_stiffness_density
+
+    E_star, G_star, nu, mu = params.E_star, params.G_star, params.nu, friction.coulomb_mu
+    profile, normal = power_law_profile.__wrapped__, spring_stiffness_density.__wrapped__
+    tangential = tangential_spring_stiffness_density.__wrapped__
+
+    def weight(xi):
+        return tangential(xi, G_star, nu, layer) / G_star
+
+    def ratio(xi):  # (coulomb_cap(x, 1, 0, μ, ...): μ (k/k_t)(1 − 0))
+        if not mu > 0.0:
+            return np.zeros(np.shape(xi))
+        return mu * (normal(xi, E_star, nu, layer) / tangential(xi, G_star, nu, layer)) * (1.0 - 0.0)
+
+    return (lambda xi: profile(xi, indenter, nu, layer)), weight, ratio
+
+
+def _unit_weights(xi: np.ndarray) -> np.ndarray:
+    return np.ones(np.shape(xi))
+
+
+class SpringState(NamedTuple):
+    """The springs at one time (:meth:`PlaySprings.state`)."""
+
+    #: ``F_x`` (N)
+    force: float
+    #: the measure of the springs at a cap (``k_t/G*`` times m)
+    measure: float
+    #: the length they cover (m)
+    length: float
+    #: the length of the compressed springs at a cap (m)
+    compressed_at_cap: float
+    #: the length of the compressed springs (m; ``x_c`` where some are in tension)
+    compressed: float
+
+
+class _Chain(NamedTuple):
+    """The clamp times shared by every spring (increasing) and the intervals where each spring gains its own."""
+
+    times: np.ndarray
+    #: ``(start, end)`` of the intervals where ``ū(a(d))`` is not concave (each between two of ``times``)
+    convex: np.ndarray
+
+
+
+@dataclass
+class PlaySprings:
+    """``F_x`` and the springs at a cap along ``path`` (path clock), every anchor its own play operator (module
+    docstring).
+
+    Parameters
+    ----------
+    line : SpringLine
+        The springs.
+    path : Path
+        The path.
+    history : DepthHistory or SpanHistory, optional
+        The radius along the path (default: without adhesion, ``g⁻¹(d)``).
+    """
+
+    line: SpringLine
+    path: object
+    history: object = None
+
+    def __post_init__(self) -> None:
+        if self.history is None:
+            self.history = DepthHistory(self.line, self.path)
+        self._corner_t = np.asarray(self.path.corner_times, dtype=float)
+        self._corner_x, self._corner_d = (np.asarray(self.path.waypoints[:, i], dtype=float) for i in (0, 1))
+        self._shifts: dict[tuple, float] = {}
+        #: a spring counts as compressed (its cap's Coulomb part on) beyond this ``d − g`` (m): at a crossing of
+        #: ``d = g(ξ)`` the rounding of ``d − g`` would flip it from spring to spring
+        self._pressed_round_off = PRESSED_ROUND_OFF * float(np.max(np.abs(self._corner_d)))
+        self.chain = self._chain()
+
+    # -- kinematics ---------------------------------------------------------------------------------------------
+    def _x(self, t):
+        return np.interp(t, self._corner_t, self._corner_x)
+
+    def _d(self, t):
+        return np.interp(t, self._corner_t, self._corner_d)
+
+    def _chain(self) -> _Chain:
+        """The corners, the radius's jumps and, on each piece where the radius moves smoothly, the subintervals where
+        ``ū(a(t))`` is not concave (their ends join the shared times)."""
+        times, convex = [self._corner_t, np.array([jump[0] for jump in self.history.jumps])], []
+        for start, end in self.history.pieces():
+            grid = np.linspace(start, end, CONCAVITY_SAMPLES)
+            inner = grid.copy()
+            inner[[0, -1]] = grid[[0, -1]] + np.array([1.0, -1.0]) * 1e-12 * (end - start)  # (inside the piece)
+            shift = self.line.shift(self.history.radii(inner))
+            second = shift[:-2] - 2.0 * shift[1:-1] + shift[2:]
+            flagged = np.flatnonzero(second > CONCAVITY_ROUND_OFF * max(np.max(np.abs(shift)), 1e-300))
+            for j in flagged:
+                convex.append((grid[j], grid[j + 2]))
+                times.append(grid[[j, j + 2]])
+        shared = np.unique(np.concatenate(times))
+        return _Chain(shared, np.array(convex, dtype=float).reshape(-1, 2))
+
+    def _window(self, xi: np.ndarray, g: np.ndarray, ratio: np.ndarray, times):
+        """``(L, U)`` of each spring at ``times`` (one per spring)."""
+        x, d = self._x(times), self._d(times)
+        cap = self.line.shift(self.history.radii(times)) + ratio * np.maximum(d - g, 0.0)
+        return x - cap, x + cap
+
+    def _shift_at(self, time: float, radius: float | None = None) -> float:
+        """``ū(a)`` at one time (``a(t)``, or the ``radius`` given: a jump's side), remembered (the chain's times recur
+        in every evaluation)."""
+        key = (time, radius)
+        cached = self._shifts.get(key)
+        if cached is None:
+            a = self.history.radii(np.array([time])) if radius is None else np.array([radius])
+            cached = self._shifts[key] = float(self.line.shift(a)[0])
+        return cached
+
+    def _own_times(self, xi, g, ratio, start, t):
+        """Each spring's times of its ``L``'s maximum and ``U``'s minimum on every interval of ``chain.convex``
+        within ``[start, t]`` (``nan`` where none), by golden sections."""
+        columns = []
+        for lo, hi in self.chain.convex:
+            a, b = np.maximum(lo, start), np.full(xi.shape, min(hi, t))
+            for sign in (1.0, -1.0):
+                columns.append(_golden(lambda s: sign * self._window(xi, g, ratio, s)[0 if sign > 0 else 1],
+                                       a, b))
+        return columns
+
+    def _columns(self, xi, g, ratio, start, t) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The clamp times of each spring before ``t`` (a column each, ``nan`` where none), ``ū`` there and which
+        columns are crossings: the shared times (at a jump both sides, the earlier first), each spring's own extremes,
+        and with adhesion the times its compression changes sign (``d = g(ξ)``: its cap's kink, where its Coulomb part
+        is 0 exactly)."""
+        n = xi.size
+        times, shifts = [], []
+        jumps = {time: (before, after) for time, before, after in self.history.jumps}
+        for time in self.chain.times[self.chain.times < t]:
+            sides = jumps.get(time, (None,))
+            for radius in sides:
+                times.append(np.full(n, time))
+                shifts.append(np.full(n, self._shift_at(float(time), radius)))
+        own = self._own_times(xi, g, ratio, start, t)
+        crossing = [False] * len(times) + [False] * len(own)
+        if self.history.adhesive:
+            crossings = self._crossings(g, t)
+            own += crossings
+            crossing += [True] * len(crossings)
+        for column in own:
+            times.append(np.where(column < t, column, np.nan))
+            live = np.isfinite(times[-1])
+            shift = np.zeros(n)
+            if np.any(live):
+                shift[live] = self.line.shift(self.history.radii(times[-1][live]))
+            shifts.append(shift)
+        if not times:
+            return np.empty((n, 0)), np.empty((n, 0)), np.empty(0, bool)
+        return np.stack(times, axis=1), np.stack(shifts, axis=1), np.array(crossing)
+
+    def _crossings(self, g: np.ndarray, t: float) -> list[np.ndarray]:
+        """The times each spring's depth ``d − g(ξ)`` changes sign on each segment before ``t`` (``nan``: none)."""
+        out = []
+        for k in range(len(self._corner_t) - 1):
+            (t0, t1), (d0, d1) = self._corner_t[k:k + 2], self._corner_d[k:k + 2]
+            if d0 == d1 or t0 >= t:
+                continue
+            share = (g - d0) / (d1 - d0)
+            out.append(np.where((share > 0.0) & (share < 1.0), t0 + (t1 - t0) * share, np.nan))
+        return out
+
+    def anchors(self, xi, t: float) -> tuple[np.ndarray, np.ndarray]:
+        """The anchors ``Y_ξ(t)`` of the springs at ``xi`` in contact at ``t`` and their provenance (an integer per
+        spring: which clamp of the chain, or the attachment, last set it, to which edge and whether the spring was
+        compressed then; negative at ``t`` itself, at a cap: :data:`LOWER_CAP`, :data:`UPPER_CAP`).
+
+        Parameters
+        ----------
+        xi : numpy.ndarray
+            The springs' coordinates (m), within the contact at ``t``.
+        t : float
+            The time (s, path clock).
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            The anchors (m) and the provenance codes.
+        """
+        xi = np.asarray(xi, dtype=float)
+        g, ratio = self.line.profile(xi), self.line.ratio(xi)
+        start, code = self.history.attach(xi, t)
+        anchor, label = self._x(start), _ATTACHED + 3 * (code + 2)
+        times, shifts, crossing = self._columns(xi, g, ratio, start, t)
+        if times.shape[1]:
+            order = np.argsort(times, axis=1, kind="stable")
+            rows = np.arange(xi.size)[:, None]
+            when, shift = times[rows, order], shifts[rows, order]
+            pressed = np.where(crossing[order], 0.0, self._d(when) - g[:, None])
+            cap = shift + ratio[:, None] * np.maximum(pressed, 0.0)
+            x = self._x(when)
+            live = np.isfinite(when) & (when > start[:, None])
+            # (a clamp's code tells whether the spring was compressed then: its cap's formula has a kink in ξ there)
+            codes = _COLUMN_CODES + 6 * order + 3 * (pressed > self._pressed_round_off)
+            for k in range(when.shape[1]):
+                anchor, label = _clamp(anchor, label, x[:, k] - cap[:, k], x[:, k] + cap[:, k], live[:, k],
+                                       codes[:, k])
+        lower, upper = self._window(xi, g, ratio, np.full(xi.shape, float(t)))
+        anchor, label = _clamp(anchor, label, lower, upper, np.ones(xi.shape, bool),
+                               np.where(self._d(t) - g > self._pressed_round_off, -6, -3))
+        return anchor, label
+
+    def radius(self, t: float) -> float:
+        """The contact radius at ``t`` (m).
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock).
+
+        Returns
+        -------
+        float
+            ``a(t)`` (0 out of contact).
+        """
+        return float(self.history.radii(np.array([t]))[0])
+
+    def compressed_radius(self, t: float) -> float:
+        """``x_c`` at ``t``: the radius of the compressed springs, ``g(x_c) = d`` (m; 0 at ``d <= 0``).
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock).
+
+        Returns
+        -------
+        float
+            ``x_c``.
+        """
+        return float(self.line.radius(np.array([self._d(t)]))[0])
+
+    def state(self, t: float) -> "SpringState":
+        """``F_x`` and the springs at a cap at ``t`` (:class:`SpringState`).
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock).
+
+        Returns
+        -------
+        SpringState
+            The force, the sliding springs' measure and length, the compressed springs' length at a cap and in all.
+        """
+        a = self.radius(t)
+        if not a > 0.0:
+            return SpringState(0.0, 0.0, 0.0, 0.0, 0.0)
+        breaks = self._kinks(t, np.linspace(0.0, a, PANELS + 1))
+        lows, highs = breaks[:-1], breaks[1:]
+        nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+        weights = (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
+        anchor, label = self.anchors(nodes, t)
+        w = self.line.weight(nodes) * weights
+        at_cap = label < 0
+        pressed = self._d(t) - self.line.profile(nodes) > self._pressed_round_off
+        force = 2.0 * self.line.G_star * float(np.sum(w * (self._x(t) - anchor)))
+        return SpringState(force, float(np.sum(w[at_cap])), float(np.sum(weights[at_cap])),
+                           float(np.sum(weights[at_cap & pressed])), float(np.sum(weights[pressed])))
+
+    def _kinks(self, t: float, breaks: np.ndarray) -> np.ndarray:
+        """``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances differ (within a
+        panel or across a panel's end) and no kink found before lies between them, the change located by bisection;
+        repeated until every such pair holds a kink."""
+        kinks = np.empty(0)
+        for _ in range(KINK_ROUNDS):
+            lows, highs = breaks[:-1], breaks[1:]
+            inner = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+            label = self.anchors(inner, t)[1]
+            change = np.flatnonzero(label[1:] != label[:-1])
+            fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]
+            if not fresh.size:
+                break
+            found = self._bisect(t, inner[fresh], inner[fresh + 1], label[fresh])
+            kinks = np.unique(np.concatenate([kinks, found]))
+            breaks = np.unique(np.concatenate([breaks, found]))
+        return breaks
+
+    def _bisect(self, t: float, low: np.ndarray, high: np.ndarray, low_label: np.ndarray) -> np.ndarray:
+        """Each bracket cut into :data:`KINK_CUTS` at once, kept where the provenance first differs from ``low``'s,
+        until :data:`KINK_HALVINGS` halvings' worth."""
+        share = np.arange(1, KINK_CUTS) / KINK_CUTS
+        for _ in range(-(-KINK_HALVINGS // int(np.log2(KINK_CUTS)))):
+            points = low[:, None] + (high - low)[:, None] * share[None, :]
+            same = (self.anchors(points.ravel(), t)[1].reshape(points.shape) == low_label[:, None])
+            first = np.argmin(np.concatenate([same, np.zeros((len(low), 1), bool)], axis=1), axis=1)
+            edges = np.concatenate([low[:, None], points, high[:, None]], axis=1)
+            rows = np.arange(len(low))
+            low, high = edges[rows, first], edges[rows, first + 1]
+        return 0.5 * (low + high)
+
+    def tangential_force(self, times) -> np.ndarray:
+        """``F_x`` (N) at ``times`` (s, path clock).
+
+        Parameters
+        ----------
+        times : array_like
+            The times.
+
+        Returns
+        -------
+        numpy.ndarray
+            The forces.
+        """
+        return np.array([self.state(float(t))[0] for t in np.atleast_1d(times)])
+
+
+def _clamp(anchor, label, lower, upper, live, code):
+    """Clamp ``anchor`` to ``[lower, upper]`` where ``live``; where it moved, ``label`` takes ``code`` (+1 lower,
+    +2 upper; a negative code −3 or −6: −1 or −4 lower, −2 or −5 upper)."""
+    raised = live & ((anchor < lower) | (lower == upper))  # (a window of no width: at its cap, called the lower)
+    lowered = live & (anchor > upper) & ~raised
+    anchor = np.where(raised, lower, np.where(lowered, upper, anchor))
+    if np.all(code < 0):  # (−3: the lower −1, the upper −2; −6: −4 and −5, the spring compressed)
+        label = np.where(raised, code + 2, np.where(lowered, code + 1, label))
+    else:
+        label = np.where(raised, code + _LOWER, np.where(lowered, code + _UPPER, label))
+    return anchor, label
+
+
+def _golden(function, low: np.ndarray, high: np.ndarray) -> np.ndarray:
+    """The argmax of ``function`` (vectorised, one variable per row) on each ``[low, high]`` by golden sections
+    (``nan`` where the interval is empty)."""
+    ratio = 0.5 * (np.sqrt(5.0) - 1.0)
+    empty = ~(high > low)
+    a, b = np.where(empty, 0.0, low), np.where(empty, 1.0, high)
+    c, e = b - ratio * (b - a), a + ratio * (b - a)
+    fc, fe = function(c), function(e)
+    for _ in range(GOLDEN_STEPS):
+        left = fc > fe
+        b = np.where(left, e, b)
+        a = np.where(left, a, c)
+        c, e = b - ratio * (b - a), a + ratio * (b - a)
+        fc, fe = function(c), function(e)
+    return np.where(empty, np.nan, 0.5 * (a + b))

@@ -1,0 +1,227 @@
+"""Coulomb's part of the friction law on a layer of finite thickness in the continuum (issues 34 and 26): every
+spring's play operator composed on its own (``mdr_events.models.continuum.play_springs``) is the spans' continuum on
+the half-space (with and without adhesion: the route takes both, the method runs it on a layer without adhesion), a
+thick layer is the half-space, full slip is ``τ0 π a² + μ F_N``, and
+the discrete model on the layer converges to it at first order in ``Δx``.
+
+Tolerances, each from how the compared values are computed:
+
+- the spans integrate ``F_x`` to ``rtol = 1e-10`` per step (DOP853) over some tens of steps, the per-spring route sums
+  Gauss–Legendre panels between located kinks (to round-off): :data:`ROUTE_SHARE` of the largest force, twenty
+  ``rtol`` (observed at most 5e-10);
+- the thick layer (``h = 1e9 m``) differs from the half-space by the tables' ``O(a/h)`` (``< 1e-11``) and by the
+  quadrature of the tables' splines: :data:`LIMIT_SHARE`;
+- full slip: the springs' caps ``ū(a) + μρ(d − g)`` summed by the quadrature against ``π a² τ0 + μ F_N`` with ``F_N``
+  the layer's closed ``F₀(a) + K(a)(d − g(a))``: the two differ by the quadrature of the tables' cubic splines across
+  their knots (``O(width⁴)`` per panel): :data:`FULL_SLIP_SHARE`;
+- the events are bisected to ``2^-48`` of the output spacing and located against the spans' events to their
+  ``rtol`` of the run's duration: :data:`EVENT_SHARE`.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.analysis.convergence import observed_orders
+from mdr_events.models.continuum import solve_path
+from mdr_events.models.continuum.play_springs import PlaySprings, SpanHistory, spring_line
+
+RTOL = me.Tolerances().rtol
+#: The per-spring route against the spans' continuum on the half-space, relative to the largest force.
+ROUTE_SHARE = 20.0 * RTOL
+#: The same with adhesion: measured at most 1.5e-10 along scenarios A and B, 5.2e-8 on the exit of the fretting
+#: path under both parts of the law (neither the route's quadrature, unchanged with four times the panels, nor a
+#: convex ``ū(a(t))``: which of the two continua holds the difference is left open).
+ADHESIVE_ROUTE_SHARE = 1e-7
+#: A thick layer (h = 1e9 m) against the half-space, relative to the largest force.
+LIMIT_SHARE = 1e-8
+#: Full slip against ``π a² τ0 + μ F_N``, relative.
+FULL_SLIP_SHARE = 1e-8
+#: The events of the thick layer against the half-space's spans, relative to the run's duration.
+EVENT_SHARE = 100.0 * RTOL
+#: The observed order of a first-order error from three halving spacings (as tests/models/test_layer_continuum.py).
+ORDER_RANGE = (0.8, 1.3)
+#: The same under Coulomb's law alone: its caps ``μρ(d − g)`` vanish at the edge, so the radius's ``O(Δx)`` error
+#: moves ``F_x`` at second order (as ``F_N`` without adhesion, tests/models/test_layer_continuum.py), and the
+#: springs' sampling of the slip fronts at first: the observed order lies between (1.5–1.9 measured).
+COULOMB_ORDER_RANGE = (0.8, 2.3)
+#: The spacings of the convergence study (m): 20, 40 and 80 springs per radius at a/h ~ 0.5.
+SPACINGS = (4e-5, 2e-5, 1e-5)
+MU = 0.3
+LAWS = {"coulomb": me.FrictionLaw("coulomb", mu=MU), "tau0+coulomb": me.FrictionLaw("tau0+coulomb", mu=MU,
+                                                                                      tau0=42000.0)}
+HERTZ = me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0)
+#: The normal run's springs (:mod:`mdr_events.models.continuum.play_run`)
+FRICTIONLESS = me.FrictionLaw("coulomb", mu=0.0)
+
+
+def fretting(amplitude: float = 1e-3, cycles: int = 2) -> me.Paths:
+    """In to the paper's ``d_max`` obliquely, ``cycles`` tangential cycles of ``±amplitude`` there, and out."""
+    d_max, speed = me.Parameters.paper().d_max, me.Parameters.paper().v
+    x = np.concatenate([[0.0, 50e-6], np.tile([amplitude, -amplitude], cycles), [0.0]])
+    d = np.concatenate([[-1e-6, d_max], np.full(2 * cycles, d_max), [-1e-5]])
+    return me.Paths({"fretting": me.Path(np.column_stack([x, d]), speed)})
+
+
+def fretting_on_grid(amplitude: float = 1e-3) -> me.Paths:
+    """In vertically from the surface, two tangential cycles of ``±amplitude`` and out: every corner at a whole number
+    of :data:`STEP_TRAVEL` from the first contact, so that the discrete model's samples hit them (a play operator's
+    corner missed by a step's travel ``δ`` moves ``F_x`` by ``O(δ/c)``, far above the springs' ``O(Δx)`` where
+    Coulomb's caps ``c`` are small)."""
+    d_max, speed = me.Parameters.paper().d_max, me.Parameters.paper().v
+    x = [0.0, 0.0, amplitude, -amplitude, amplitude, 0.0, 0.0]
+    d = [0.0, d_max, d_max, d_max, d_max, d_max, -1e-5]
+    return me.Paths({"fretting": me.Path(np.column_stack([x, d]), speed)})
+
+
+#: The discrete model's travel per step along :func:`fretting_on_grid` (m).
+STEP_TRAVEL = 1e-6
+MOTIONS = {"A 20°": me.Scenario("A", alpha=[20.0]), "A 70°": me.Scenario("A", alpha=[70.0]),
+           "B 20°": me.Scenario("B", alpha=[20.0]), "B 70°": me.Scenario("B", alpha=[70.0]), "fretting": fretting()}
+
+
+def with_law(contact: me.Contact, law: str) -> me.Contact:
+    return dataclasses.replace(contact, friction=LAWS[law])
+
+
+def paths_of(contact: me.Contact, motion):
+    params = contact.parameters(me.Parameters.paper().d_max, me.Parameters.paper().v)
+    return params, motion.cases(params, None, contact.friction).paths
+
+
+@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("motion", MOTIONS.values(), ids=MOTIONS.keys())
+def test_every_spring_on_its_own_is_the_spans_on_the_half_space(law, motion):
+    """On the half-space the springs share one level and the spans run Coulomb's part: the per-spring route, which
+    does not use that, gives their ``F_x`` at every sample (a third route, before it is trusted on a layer)."""
+    contact = with_law(HERTZ, law)
+    spans = me.simulate(contact, motion, "continuum", samples=41)
+    params, paths = paths_of(contact, motion)
+    for case, path in enumerate(paths):
+        play = PlaySprings(spring_line(params, None, contact.friction), path)
+        expected = spans["tangential_force"].values[case]
+        inside = np.isfinite(expected)
+        got = play.tangential_force(spans["time"].values[inside] + path.first_contact_time())
+        scale = np.max(np.abs(expected[inside]))
+        assert np.max(np.abs(got - expected[inside])) <= ROUTE_SHARE * scale
+
+
+#: The springs' events the per-spring route logs (the others are the spans' normal run's).
+SPRING_EVENTS = ("slip_onset", "full_slip", "re_stick")
+
+
+def spring_log(run, case: int = 0) -> list[tuple[str, float, int]]:
+    kinds, times, directions = (run[name].values[case] for name in ("event_kind", "event_time", "event_direction"))
+    return [(str(kind), float(time), int(direction)) for kind, time, direction in zip(kinds, times, directions)
+            if kind in SPRING_EVENTS]
+
+
+@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("motion", [MOTIONS["A 20°"], MOTIONS["B 20°"],
+                                    pytest.param(MOTIONS["fretting"], marks=pytest.mark.slow)],  # (about 6 s)
+                         ids=["A 20°", "B 20°", "fretting"])
+def test_a_thick_layer_is_the_half_space(law, motion):
+    """``simulate`` on a layer of ``h = 1e9 m`` (the per-spring route with the tables' springs) is the half-space's
+    spans: ``F_x`` at every sample, and the springs' event log (slip onset, full slip, re-stick at each reversal:
+    kind, time and cap)."""
+    thick = me.simulate(with_law(HERTZ.replace(h=1e9), law), motion, "continuum", samples=41)
+    half = me.simulate(with_law(HERTZ, law), motion, "continuum", t=thick["time"].values)
+    force, expected = thick["tangential_force"].values, half["tangential_force"].values
+    assert np.array_equal(np.isnan(force), np.isnan(expected))
+    scale = np.nanmax(np.abs(expected))
+    assert np.nanmax(np.abs(force - expected)) <= LIMIT_SHARE * scale
+    mine, theirs = spring_log(thick), spring_log(half)
+    assert [(kind, direction) for kind, _, direction in mine] == [(kind, direction) for kind, _, direction in theirs]
+    assert mine, "no spring slid: the path does not test the log"
+    duration = float(thick["time"].values[-1])
+    assert np.allclose([time for _, time, _ in mine], [time for _, time, _ in theirs], rtol=0.0,
+                       atol=EVENT_SHARE * duration)
+
+
+@pytest.mark.parametrize("law", LAWS)
+def test_full_slip_is_tau0_area_and_mu_normal_force(law):
+    """Scenario B at 20° slides the whole contact of the paper's 5 mm layer: there ``F_x = τ0 π a² + μ F_N``."""
+    contact = with_law(HERTZ.replace(h=5e-3), law)
+    run = me.simulate(contact, me.Scenario("B", alpha=[20.0]), "continuum", samples=41).isel(alpha=0)
+    full = run["sliding_fraction"].values == 1.0
+    assert np.count_nonzero(full) >= 3
+    tau0 = contact.friction.tau0 if contact.friction.uses_tau0 else 0.0
+    radius, normal = run["contact_radius"].values[full], run["normal_force"].values[full]
+    expected = tau0 * np.pi * radius**2 + MU * normal
+    assert np.allclose(np.abs(run["tangential_force"].values[full]), expected, rtol=FULL_SLIP_SHARE, atol=0.0)
+    assert "full_slip" in run["event_kind"].values
+
+
+@pytest.mark.slow  # (three discrete runs on the layer, stepped spring by spring: about 10 s each case)
+@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("motion, works", [(MOTIONS["A 20°"], (0.0, 0.0)), (fretting_on_grid(), (0.0, 0.0))],
+                         ids=["A 20°", "fretting"])
+def test_the_discrete_model_on_a_layer_converges_to_it(law, motion, works, request):
+    """The discrete model on the 5 mm layer (its ``k(x_j)``, ``k_t(x_j)``, Coulomb's ratios ``μ k/k_t``) converges
+    to the per-spring continuum at first order in ``Δx`` (Coulomb's law alone: between first and second order, its
+    edge springs holding no force) along scenario A and a fretting path."""
+    if law == "tau0+coulomb" and not isinstance(motion, me.Scenario):
+        request.applymarker(pytest.mark.xfail(strict=True, reason=(
+            "on the vertical exit of the 1 mm fretting path the discrete model's F_x differs from the continuum's by "
+            "about 5e-4 of the largest force whatever dx and dt (also on the half-space, where the spans and the "
+            "per-spring route agree to 1e-9, and under tau0 alone, 1.4e-3 and 1.1e-3 at dx = 20 and 10 um, in the "
+            "spans' continuum of before): left open")))
+    contact = with_law(HERTZ.replace(h=5e-3, dgamma0=works[0], dgamma1=works[1]), law)
+    errors = []
+    for dx in SPACINGS:
+        steps = {} if isinstance(motion, me.Scenario) else {"dt": STEP_TRAVEL / me.Parameters.paper().v}
+        springs = me.simulate(contact, motion, "discrete", dx=dx, **steps).isel({motion_dim(motion): 0})
+        times = springs["time"].values[::max(1, springs["time"].size // 40)]
+        exact = me.simulate(contact, motion, "continuum", t=times).isel({motion_dim(motion): 0})
+        approx = springs["tangential_force"].sel(time=times).values
+        expected = exact["tangential_force"].values
+        inside = np.isfinite(approx) & np.isfinite(expected)
+        errors.append(np.max(np.abs(approx[inside] - expected[inside])) / np.max(np.abs(expected[inside])))
+    orders = observed_orders(SPACINGS, np.array(errors))
+    low, high = COULOMB_ORDER_RANGE if law == "coulomb" else ORDER_RANGE
+    assert np.all((low < orders) & (orders < high)), (errors, orders)
+
+
+def motion_dim(motion) -> str:
+    return "alpha" if isinstance(motion, me.Scenario) else "case"
+
+
+ADHESIVE = {"A 20°": me.Scenario("A", alpha=[20.0]), "A 70°": me.Scenario("A", alpha=[70.0]),
+            "B 20°": me.Scenario("B", alpha=[20.0]), "fretting": fretting()}
+
+
+@pytest.mark.parametrize("works", [(0.01, 0.15), (0.05, 0.05)], ids=["Dg0 < Dg1", "Dg0 = Dg1"])
+@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("motion", ADHESIVE.values(), ids=ADHESIVE.keys())
+def test_with_adhesion_every_spring_on_its_own_is_the_spans_on_the_half_space(law, motion, works):
+    """With adhesion the springs beyond ``x_c`` are in tension (Coulomb's part off) and the radius follows the
+    hysteresis: the per-spring route on the spans' frictionless radius (``SpanHistory``) gives the spans' ``F_x``
+    (Coulomb's law alone: the compressed zone's run; both parts: the split regions)."""
+    contact = with_law(me.Contact.paper().replace(dgamma0=works[0], dgamma1=works[1]), law)
+    spans = me.simulate(contact, motion, "continuum", samples=41)
+    params, paths = paths_of(contact, motion)
+    for case, path in enumerate(paths):
+        solution = solve_path(params, path, me.Tolerances(), me.Limits(), None, FRICTIONLESS, contact.adhesion)
+        play = PlaySprings(spring_line(params, None, contact.friction), path, SpanHistory(solution))
+        expected = spans["tangential_force"].values[case]
+        inside = np.isfinite(expected)
+        got = play.tangential_force(spans["time"].values[inside] + path.first_contact_time())
+        scale = np.max(np.abs(expected[inside]))
+        assert np.max(np.abs(got - expected[inside])) <= ADHESIVE_ROUTE_SHARE * scale
+
+
+@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("indenter", [me.PowerLaw(0.5, 1.5), me.PowerLaw(2e4, 3.0)], ids=["n = 1.5", "n = 3"])
+def test_a_power_law_on_a_thick_layer_is_the_half_space(law, indenter):
+    """A power law's springs on a thick layer against the half-space's spans (both without adhesion), scenario A."""
+    contact = dataclasses.replace(with_law(HERTZ, law), indenter=indenter)
+    motion = me.Scenario("A", alpha=[30.0])
+    thick = me.simulate(contact.replace(h=1e9), motion, "continuum", samples=41)
+    half = me.simulate(contact, motion, "continuum", t=thick["time"].values)
+    scale = np.nanmax(np.abs(half["tangential_force"].values))
+    assert np.nanmax(np.abs(thick["tangential_force"].values - half["tangential_force"].values)) <= LIMIT_SHARE * scale
+    assert spring_log(thick) and [kind for kind, _, _ in spring_log(thick)] == [kind for kind, _, _ in spring_log(half)]
