@@ -230,10 +230,13 @@ class PlaySprings:
         return np.interp(t, self._corner_t, self._corner_d)
 
     def _chain(self) -> _Chain:
-        """The corners, the radius's jumps and, on each piece where the radius moves smoothly, the subintervals where
-        ``ū(a(t))`` is not concave (their ends join the shared times)."""
-        times, convex = [self._corner_t, np.array([jump[0] for jump in self.history.jumps])], []
-        for start, end in self.history.pieces():
+        """The corners, the radius's jumps, the ends of each piece where the radius moves smoothly (where it starts or
+        stops moving ``ū(a(t))`` has a kink, at which a window's extremum can lie) and, on each piece, the subintervals
+        where ``ū(a(t))`` is not concave (their ends join the shared times)."""
+        pieces = self.history.pieces()
+        times, convex = [self._corner_t, np.array([jump[0] for jump in self.history.jumps]),
+                         np.array(pieces, dtype=float).ravel()], []
+        for start, end in pieces:
             grid = np.linspace(start, end, CONCAVITY_SAMPLES)
             inner = grid.copy()
             inner[[0, -1]] = grid[[0, -1]] + np.array([1.0, -1.0]) * 1e-12 * (end - start)  # (inside the piece)
@@ -417,18 +420,19 @@ class PlaySprings:
         panel or across a panel's end) and no kink found before lies between them, the change located by bisection;
         repeated until every such pair holds a kink."""
         kinks = np.empty(0)
-        for _ in range(KINK_ROUNDS):
+        for _ in range(KINK_ROUNDS + 1):
             lows, highs = breaks[:-1], breaks[1:]
             inner = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
             label = self.anchors(inner, t)[1]
             change = np.flatnonzero(label[1:] != label[:-1])
             fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]
             if not fresh.size:
-                break
+                return breaks
             found = self._bisect(t, inner[fresh], inner[fresh + 1], label[fresh])
             kinks = np.unique(np.concatenate([kinks, found]))
             breaks = np.unique(np.concatenate([breaks, found]))
-        return breaks
+        raise RuntimeError(f"the springs' kinks at t={t!r} s were still being found after {KINK_ROUNDS} rounds "
+                           f"({fresh.size} more): a bug to report (the force would be summed across a kink)")
 
     def _bisect(self, t: float, low: np.ndarray, high: np.ndarray, low_label: np.ndarray) -> np.ndarray:
         """Each bracket cut into :data:`KINK_CUTS` at once, kept where the provenance first differs from ``low``'s,
