@@ -106,3 +106,29 @@ def test_bad_input_is_refused_in_one_line(call, words):
     with pytest.raises(ValueError) as caught:
         call()
     assert words in str(caught.value) and "allowed" in str(caught.value) and "\n" not in str(caught.value)
+
+
+#: The relative accuracy of the argument of a flat minimum found by Brent's method (its value to eps, its argument to
+#: about sqrt(eps)), times 4.
+FLAT_MINIMUM_SHARE = 4.0 * math.sqrt(np.finfo(float).eps)
+
+
+@pytest.mark.parametrize("h", [math.inf, 5e-3], ids=["half-space", "5 mm"])
+def test_a_cycle_ends_at_the_jump_off_radius_whatever_the_last_ulp_of_its_inputs(h):
+    """The cycle's last depth is the fold of the Δγ1 branch: its radius is the jump-off's (on the half-space the closed
+    form, (π Δγ1 R²/(8 E*))^(1/3) for the paraboloid's MDR branch, to a few ulp), finite and the same when the inputs
+    move by an ulp. A bisection at the fold gave it to ~sqrt(eps) on the half-space (2.3e-9 off the closed form) and
+    nan on the layer when the rounding put the depth below the fold's: a figure's pixels moved between machines."""
+    from mdr_events.theory.branches import jump_off
+
+    contact = PAPER.replace(h=h)
+    nudged = contact.replace(E=contact.elastomer.E + 3 * np.spacing(contact.elastomer.E))
+    last = [float(L.layer_indentation_cycle(c, 3e-4, 41).contact_radius.values[-1]) for c in (contact, nudged)]
+    assert all(math.isfinite(radius) for radius in last)
+    # (on the half-space an ulp's move of the closed form; on a layer the jump-off radius is Brent's minimum of a flat
+    # least depth, determined to sqrt(eps) of itself: FLAT_MINIMUM_SHARE. The fold's bisection gave nan there)
+    assert last[1] == pytest.approx(last[0], rel=1e-14 if math.isinf(h) else FLAT_MINIMUM_SHARE)
+    if math.isinf(h):
+        params = contact.parameters(3e-4, 1e-4)
+        closed = jump_off(params, contact.adhesion.dgamma1, None)["contact_radius"]
+        assert last[0] == pytest.approx(closed, rel=8 * np.finfo(float).eps)

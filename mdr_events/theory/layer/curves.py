@@ -229,8 +229,10 @@ def layer_indentation_cycle(contact: Contact, d_max: float, samples: int = 201,
     depth = np.concatenate([loading, pinned, shrinking])
     radius = np.concatenate([stable_radius(contact, low, loading), np.full(samples, a_max),
                              stable_radius(contact, high, shrinking)])
-    if layer.is_half_space:  # (the last depth is the fold's: its radius the closed form's, not a bisection there,
-        radius[-1] = fold  # which finds it to ~sqrt(eps) and moved a figure's pixel when the inputs moved by an ulp)
+    # the last depth is the fold's: its radius the jump-off's (the closed form's on the half-space), not a bisection at
+    # the fold, which gave it to ~sqrt(eps) on the half-space and nan on a layer where the rounding put the depth below
+    # the fold's (inputs an ulp apart moved a figure's pixels)
+    radius[-1] = fold
     stage = np.repeat(["loading", "pinned", "shrinking"], samples)
     variables = _variables(contact, depth, radius, ("sample",))
     variables["depth"] = xr.Variable(("sample",), depth, {"units": "m", "long_name": _VARIABLES["depth"][1]})
