@@ -20,13 +20,13 @@ import dataclasses
 import os
 import subprocess
 import sys
-import warnings
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 import mdr_events as me
+from hostile_checks import one_line_naming
 
 PAPER = me.Contact.paper()
 RATE_LAW = me.RateDependentAdhesion(0.01, 0.15, 1e-6, 0.3)
@@ -34,18 +34,6 @@ RATE_LAW = me.RateDependentAdhesion(0.01, 0.15, 1e-6, 0.3)
 #: tolerances (fit_problem.FIT_TOLERANCE 1e-12 on the scaled parameters, the continuum's rtol 1e-10): 1e-6 leaves a
 #: margin of 1e4 over the curves' own error.
 FIT_RECOVERY_RTOL = 1e-6
-
-
-def _one_line_naming(call, named: str, errors=(ValueError, TypeError)) -> str:
-    """The message of what ``call`` raises with every warning an error: one line, naming ``named`` and what is
-    allowed."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        with pytest.raises(errors) as caught:
-            call()
-    message = str(caught.value)
-    assert named in message and "allowed" in message and "\n" not in message, message
-    return message
 
 
 # --- P1: the layer's curves (layer_normal_curve, layer_indentation_cycle, layer_pull_off_curve) read a
@@ -62,7 +50,7 @@ def test_the_layer_curves_refuse_a_rate_dependent_adhesion_as_pull_off_force_doe
     contact = dataclasses.replace(PAPER.replace(h=h), adhesion=RATE_LAW)
     with pytest.raises(TypeError, match="RateDependentAdhesion"):
         me.pull_off_force(dataclasses.replace(PAPER, adhesion=RATE_LAW), 0.15)
-    _one_line_naming(lambda: curve(contact), "contact.adhesion=RateDependentAdhesion", errors=TypeError)
+    one_line_naming(lambda: curve(contact), "contact.adhesion=RateDependentAdhesion", errors=TypeError)
 
 
 # --- P2: layer_pull_off_curve of a contact without adhesion named an argument the user never gave ("dgamma=0.0 is not
@@ -71,7 +59,7 @@ def test_the_layer_curves_refuse_a_rate_dependent_adhesion_as_pull_off_force_doe
 @pytest.mark.parametrize("h", [5e-3, float("inf")], ids=["layer", "half-space"])
 def test_a_pull_off_curve_without_adhesion_names_the_contacts_work_of_adhesion(h):
     contact = dataclasses.replace(PAPER.replace(h=h), adhesion=me.Adhesion(0.0, 0.0))
-    _one_line_naming(lambda: me.layer_pull_off_curve(contact, [h]), "contact.adhesion.dgamma1=0.0")
+    one_line_naming(lambda: me.layer_pull_off_curve(contact, [h]), "contact.adhesion.dgamma1=0.0")
 
 
 # --- P3: fit's mapping options noise= and bounds= were read by dict(): a list, a string or a number raised Python's
@@ -89,8 +77,8 @@ def measured():
 @pytest.mark.parametrize("value", [[1, 2], "normal_force=1", 5, [("normal_force", 1.0)]],
                          ids=["list", "string", "number", "pairs"])
 def test_the_fits_mapping_options_refuse_what_is_not_a_mapping_naming_it(measured, option, value):
-    _one_line_naming(lambda: me.fit(measured, PAPER, "A", 20.0, free=("tau0",), time_origin="path_start",
-                                    **{option: value}), f"{option}={value!r}", errors=TypeError)
+    one_line_naming(lambda: me.fit(measured, PAPER, "A", 20.0, free=("tau0",), time_origin="path_start",
+                                   **{option: value}), f"{option}={value!r}", errors=TypeError)
 
 
 # --- P4: a new user's script that sweeps on the default engine (a local dask cluster) without
@@ -108,7 +96,7 @@ def test_a_local_cluster_that_does_not_start_is_one_line_naming_the_scheduler(mo
         raise RuntimeError("Nanny failed to start.")
 
     monkeypatch.setattr(distributed, "LocalCluster", refused)
-    message = _one_line_naming(lambda: open_executor("local", 1).__enter__(), "scheduler='local'")
+    message = one_line_naming(lambda: open_executor("local", 1).__enter__(), "scheduler='local'")
     assert MAIN_GUARD in message and "'serial'" in message, message
 
 
@@ -150,12 +138,12 @@ def test_a_result_refused_by_write_netcdf_and_open_result_says_what_is_allowed(r
     import xarray as xr
 
     broken = damage(result)
-    _one_line_naming(lambda: me.write_netcdf(broken, tmp_path / "refused.nc"), named)
+    one_line_naming(lambda: me.write_netcdf(broken, tmp_path / "refused.nc"), named)
     assert not (tmp_path / "refused.nc").exists()
     broken.to_netcdf(tmp_path / "foreign.nc", engine="scipy")
-    _one_line_naming(lambda: me.open_result(tmp_path / "foreign.nc"), named)
+    one_line_naming(lambda: me.open_result(tmp_path / "foreign.nc"), named)
     xr.Dataset({"a": ("x", [1.0])}).to_netcdf(tmp_path / "other.nc", engine="scipy")
-    _one_line_naming(lambda: me.open_result(tmp_path / "other.nc"), "was not written by mdr_events")
+    one_line_naming(lambda: me.open_result(tmp_path / "other.nc"), "was not written by mdr_events")
 
 
 # --- P6: fit_rate_adhesion counted its curves' samples against Limits but not its work: each trial law solves the
@@ -180,9 +168,9 @@ def test_a_rate_fit_counts_its_first_steps_solves_of_the_edge_before_it_runs():
 
     curves, start = _rate_curves(3), me.RateDependentAdhesion(0.01, 0.15, 3e-6, 0.8)
     # 3 curves and 2 free values: 9 solves in the first step (the start, a Jacobian's column each); room for 8
-    message = _one_line_naming(lambda: me.fit_rate_adhesion(curves, me.Parameters.paper(), start,
-                                                            limits=me.Limits(steps=8 * EDGE_SOLVE_STEPS)),
-                               "9 solves of the edge", errors=me.ResourceLimitError)
+    message = one_line_naming(lambda: me.fit_rate_adhesion(curves, me.Parameters.paper(), start,
+                                                           limits=me.Limits(steps=8 * EDGE_SOLVE_STEPS)),
+                              "9 solves of the edge", errors=me.ResourceLimitError)
     assert "steps" in message
 
 
@@ -191,9 +179,9 @@ def test_a_rate_fit_stops_at_the_limit_of_its_solves_of_the_edge():
 
     curves, start = _rate_curves(1), me.RateDependentAdhesion(0.01, 0.15, 3e-6, 0.8)
     # the first step's 3 solves are allowed, a fit from 3e-6 and 0.8 takes more than 4
-    _one_line_naming(lambda: me.fit_rate_adhesion(curves, me.Parameters.paper(), start,
-                                                  limits=me.Limits(steps=4 * EDGE_SOLVE_STEPS)),
-                     "5 solves of the edge so far", errors=me.ResourceLimitError)
+    one_line_naming(lambda: me.fit_rate_adhesion(curves, me.Parameters.paper(), start,
+                                                 limits=me.Limits(steps=4 * EDGE_SOLVE_STEPS)),
+                    "5 solves of the edge so far", errors=me.ResourceLimitError)
 
 
 # --- P7: a sweep's store was laid out in chunks of the engine's chunk_size whatever the runs: chunk_size = 1e11 for
@@ -213,7 +201,7 @@ def test_a_sweeps_store_takes_a_chunk_size_beyond_its_runs(tmp_path):
 def test_wall_coefficients_names_a_model_of_another_type():
     frictionless = PAPER.replace(tau0=0.0)
     for model in ("jkr", None):
-        _one_line_naming(lambda: me.dem.wall_coefficients(frictionless, model), f"model={model!r}", errors=TypeError)
+        one_line_naming(lambda: me.dem.wall_coefficients(frictionless, model), f"model={model!r}", errors=TypeError)
 
 
 @pytest.mark.parametrize("radius", ["x", True, 1e300, float("inf"), float("nan"), -1e-3, None])
@@ -221,7 +209,7 @@ def test_wall_coefficients_check_the_deepest_radius_of_a_linear_history(radius):
     coulomb = dataclasses.replace(PAPER, friction=me.FrictionLaw("coulomb", mu=0.5))
     model = me.dem.LammpsModel("hertz/material", "linear_history")
     assert np.isfinite(me.dem.wall_coefficients(coulomb, model, deepest_radius=2e-3).kt)
-    _one_line_naming(lambda: me.dem.wall_coefficients(coulomb, model, deepest_radius=radius), "deepest_radius=")
+    one_line_naming(lambda: me.dem.wall_coefficients(coulomb, model, deepest_radius=radius), "deepest_radius=")
 
 
 # --- P9: the axes of labelled results took a repeated label (phase_diagram's alpha=[45, 45], the thicknesses of
@@ -238,7 +226,7 @@ def test_wall_coefficients_check_the_deepest_radius_of_a_linear_history(radius):
 ], ids=["phase-diagram", "pull-off-curve", "angles-against-thickness", "normal-curve", "rate-angles",
         "rate-phase-diagram"])
 def test_an_axis_of_labels_refuses_a_repeated_value(call, named):
-    _one_line_naming(call, named)
+    one_line_naming(call, named)
 
 
 # --- P10: fit could not read the package's own simulation of several angles: `mdr-events fit two.nc --scenario A
@@ -256,7 +244,7 @@ def test_fit_selects_the_scenarios_angle_in_a_result_of_several(two_angles):
     assert fitted.estimates["tau0"].value == pytest.approx(PAPER.friction.tau0, rel=FIT_RECOVERY_RTOL)
     selected = me.fit(two_angles, PAPER.replace(tau0=5e4), "A", 30.0, free=("tau0",), select={"alpha": 30.0})
     assert selected.estimates["tau0"].value == fitted.estimates["tau0"].value
-    _one_line_naming(lambda: me.fit(two_angles, PAPER, "A", 25.0, free=("tau0",)), "not at alpha=25.0")
+    one_line_naming(lambda: me.fit(two_angles, PAPER, "A", 25.0, free=("tau0",)), "not at alpha=25.0")
 
 
 def test_the_command_line_fits_one_angle_of_a_simulation_of_several(two_angles, tmp_path, capsys):
@@ -316,4 +304,4 @@ def test_simulate_counts_its_cases_before_building_them(method, monkeypatch):
 
     monkeypatch.setattr(me.Scenario, "cases", built)
     many = me.Scenario("A", alpha=np.linspace(1.0, 89.0, 10**5))
-    _one_line_naming(lambda: me.simulate(PAPER, many, method), "100000 case(s)", errors=me.ResourceLimitError)
+    one_line_naming(lambda: me.simulate(PAPER, many, method), "100000 case(s)", errors=me.ResourceLimitError)

@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 import mdr_events as me
+from hostile_checks import one_line_naming
 from mdr_events.analysis.layer_angles import ANGLE_RTOL
 from mdr_events.app.cli import main
 from mdr_events.theory.layer import LAMBDA_MAX
@@ -22,18 +23,6 @@ from mdr_events.theory.layer import LAMBDA_MAX
 PAPER = me.Contact.paper()
 LAYERED = PAPER.replace(h=5e-3)
 A20 = me.Scenario("A", alpha=[20.0])
-
-
-def _one_line_naming(call, named: str, errors=(ValueError, TypeError)) -> str:
-    """The message of what ``call`` raises with every warning an error: one line, naming ``named`` and what is
-    allowed, and no warning before it."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        with pytest.raises(errors) as caught:
-            call()
-    message = str(caught.value)
-    assert named in message and "allowed" in message and "\n" not in message, message
-    return message
 
 
 # --- N1: a run on a layer checked what the layer's springs take before the run's scales: the springs' check builds
@@ -47,7 +36,7 @@ def _one_line_naming(call, named: str, errors=(ValueError, TypeError)) -> str:
     LAYERED.replace(R=1e308),
 ], ids=["power-law-1e3-1e6", "power-law-1e-300", "R-1e308"])
 def test_a_run_on_a_layer_checks_its_scales_before_its_springs(contact):
-    _one_line_naming(lambda: me.simulate(contact, A20, "discrete"), "the contact radius a at d_max")
+    one_line_naming(lambda: me.simulate(contact, A20, "discrete"), "the contact radius a at d_max")
 
 
 def test_the_command_line_refuses_an_overflowing_power_law_on_a_layer_in_one_line(capsys, tmp_path):
@@ -110,8 +99,8 @@ def test_a_contact_within_a_spring_of_the_tables_end_is_refused_naming_dx():
             radius = math.inf
         low, high = (middle, high) if radius < target else (low, middle)
     dx = LAMBDA_MAX * 1e-4 / 100  # (100 springs reach the tables' end: the edge's 100th has none beyond)
-    _one_line_naming(lambda: me.simulate(contact, me.Scenario("A", alpha=[20.0], d_max=low), "discrete", dx=dx,
-                                         n_steps=100), "allowed: a smaller dx")
+    one_line_naming(lambda: me.simulate(contact, me.Scenario("A", alpha=[20.0], d_max=low), "discrete", dx=dx,
+                                        n_steps=100), "allowed: a smaller dx")
 
 
 # --- N4: the slip onset's closed forms did not check the scales they compute with, as the phase diagram of the
@@ -130,7 +119,7 @@ def test_a_contact_within_a_spring_of_the_tables_end_is_refused_naming_dx():
     (lambda: me.critical_angle(PAPER, d_max=1e-300), "d_max=1e-300 m"),
 ])
 def test_the_slip_onset_checks_the_scales_it_computes_with(call, named):
-    _one_line_naming(call, named)
+    one_line_naming(call, named)
 
 
 # --- N5: the check of a run's scales computed each scale with the closed forms, whose own argument checks refused an
@@ -138,8 +127,8 @@ def test_the_slip_onset_checks_the_scales_it_computes_with(call, named):
 # (simulate, phase-diagram), not the scale it came from. A scale that cannot be computed is that scale's failure --
 
 def test_a_scale_a_closed_form_refuses_is_named_as_the_runs_scale():
-    message = _one_line_naming(lambda: me.simulate(me.Parameters.paper().replace(R=1e300), "A", [20.0]),
-                               "the contact radius a at d_max is 4.7e+197 m")
+    message = one_line_naming(lambda: me.simulate(me.Parameters.paper().replace(R=1e300), "A", [20.0]),
+                              "the contact radius a at d_max is 4.7e+197 m")
     assert "R=1e+300 m" in message
 
 
@@ -166,8 +155,8 @@ def test_a_thinness_next_to_zero_is_the_half_space_and_one_whose_thickness_overf
     for name in ("critical_angle_A", "critical_angle_B"):
         half, thin = mapped[name].isel(thinness=0).values, mapped[name].isel(thinness=1).values
         np.testing.assert_allclose(thin, half, rtol=ANGLE_RTOL)
-    _one_line_naming(lambda: universal_map([1.0], [1.0], base, thinness=[0.0, 5e-324], scheduler="serial"),
-                     "thinness=5e-324 is not allowed: its thickness")
+    one_line_naming(lambda: universal_map([1.0], [1.0], base, thinness=[0.0, 5e-324], scheduler="serial"),
+                    "thinness=5e-324 is not allowed: its thickness")
 
 
 # --- N7: the layer's travel per cap at its edges: without τ0 (a documented choice: a frictionless contact) the cap is
@@ -300,7 +289,7 @@ def test_the_continuum_passes_two_anchor_pieces_at_once(nu, works):
 def test_check_layer_taken_names_what_is_not_a_contact_motion_or_method(arguments, named):
     from mdr_events.models.simulate import check_layer_taken
 
-    _one_line_naming(lambda: check_layer_taken(*arguments), named)
+    one_line_naming(lambda: check_layer_taken(*arguments), named)
 
 
 def test_check_layer_taken_takes_a_method_by_name():
@@ -342,8 +331,8 @@ def test_the_onsets_on_a_layer_count_their_work(call):
     with pytest.raises(me.ResourceLimitError, match="discrete time steps"):
         call(me.Limits(steps=1e4))
     call(me.Limits(steps=1e6))  # (within: it runs)
-    _one_line_naming(lambda: call("x"), "limits='x' (str) is not allowed")
-    _one_line_naming(lambda: me.d_crit([20.0], PAPER, limits=5), "limits=5 (int) is not allowed")  # (the half-space)
+    one_line_naming(lambda: call("x"), "limits='x' (str) is not allowed")
+    one_line_naming(lambda: me.d_crit([20.0], PAPER, limits=5), "limits=5 (int) is not allowed")  # (the half-space)
 
 
 def test_a_phase_diagram_on_a_layer_counts_the_memory_it_takes():
@@ -378,5 +367,5 @@ def test_the_thin_layer_limit_is_a_bonded_layers():
     thin = PAPER.replace(h=1e-7)  # (far thinner than the contact at d_max: a/h about 4e4, beyond the tables)
     G = PAPER.elastomer.E / (2.0 * (1.0 + PAPER.elastomer.nu))
     assert thin_layer_onset_depth(45.0, thin) == pytest.approx(PAPER.friction.tau0 * 1e-7 / G, rel=1e-15)
-    _one_line_naming(lambda: thin_layer_onset_depth(45.0, thin.replace(**{"layer.base": "frictionless"})),
-                     "Layer.base='frictionless' is not allowed for tangential contact")
+    one_line_naming(lambda: thin_layer_onset_depth(45.0, thin.replace(**{"layer.base": "frictionless"})),
+                    "Layer.base='frictionless' is not allowed for tangential contact")

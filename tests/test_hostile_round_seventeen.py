@@ -20,29 +20,11 @@ import pytest
 import warnings
 
 import mdr_events as me
+from hostile_checks import one_line_naming, cli_one_line
 from mdr_events.app.cli import main
 
 CONTACT = me.Contact.paper()
 
-
-def _one_line_naming(call, named: str, errors=(ValueError, TypeError)) -> str:
-    """The message of what ``call`` raises with every warning an error: one line, naming ``named`` and what is
-    allowed."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        with pytest.raises(errors) as caught:
-            call()
-    message = str(caught.value)
-    assert named in message and "allowed" in message and "\n" not in message, message
-    return message
-
-
-def _cli_one_line(capsys, argv: list[str]) -> str:
-    """The one line ``mdr-events argv`` prints on stderr, exiting 2."""
-    status = main(argv)
-    err = capsys.readouterr().err
-    assert status == 2 and err.count("\n") == 1 and err.startswith("mdr-events: error:"), (status, err)
-    return err
 
 # --- R1: a failed dask client stayed the process's default --------------------------------------------------------
 
@@ -244,14 +226,14 @@ CHATTER_CPU_BOUND = 60.0
 def test_a_chattering_slip_zone_is_refused_not_followed(mu):
     contact = me.Contact(CONTACT.elastomer, me.PowerLaw(0.5, 1.0), CONTACT.adhesion, me.FrictionLaw("coulomb", mu=mu))
     start = time.process_time()
-    message = _one_line_naming(lambda: me.simulate(contact, "B", 20.0, "continuum"), f"mu={mu!r}")
+    message = one_line_naming(lambda: me.simulate(contact, "B", 20.0, "continuum"), f"mu={mu!r}")
     assert "method='discrete'" in message and time.process_time() - start < CHATTER_CPU_BOUND
 
 
 @pytest.mark.slow  # (as above)
 def test_a_chattering_run_is_one_line_of_the_cli(capsys, tmp_path):
-    err = _cli_one_line(capsys, ["simulate", "--scenario", "B", "--alpha", "20", "--method", "continuum", "--friction",
-                                 "coulomb", "--mu", "1.5e6", "--power-law", "0.5", "1", "--out", str(tmp_path / "o")])
+    err = cli_one_line(capsys, ["simulate", "--scenario", "B", "--alpha", "20", "--method", "continuum", "--friction",
+                                "coulomb", "--mu", "1.5e6", "--power-law", "0.5", "1", "--out", str(tmp_path / "o")])
     assert "mu=1500000.0" in err and not (tmp_path / "o").exists()
 
 
@@ -278,7 +260,7 @@ def test_a_sweep_with_grid_and_sets_says_which_were_given(capsys, tmp_path, tabl
     study = tmp_path / "study.toml"
     study.write_text('[sweep]\nscenario = "A"\nalpha = 20\nscheduler = "serial"\n' + tables
                      + '[output]\ndirectory = "out"\n')
-    err = _cli_one_line(capsys, ["sweep", str(study)])
+    err = cli_one_line(capsys, ["sweep", str(study)])
     assert given in err and "allowed: exactly one of them" in err
 
 

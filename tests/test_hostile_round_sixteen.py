@@ -20,37 +20,17 @@ from __future__ import annotations
 import dataclasses
 import math
 import time
-import warnings
 
 import numpy as np
 import pytest
 
 import mdr_events as me
+from hostile_checks import one_line_naming, cli_one_line
 from mdr_events.app.cli import main
 from mdr_events.theory.mindlin import coulomb_cap_ratio
 
 PAPER = me.Parameters.paper()
 CONTACT = me.Contact.paper()
-
-
-def _one_line_naming(call, named: str, errors=(ValueError, TypeError)) -> str:
-    """The message of what ``call`` raises with every warning an error: one line, naming ``named`` and what is
-    allowed."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        with pytest.raises(errors) as caught:
-            call()
-    message = str(caught.value)
-    assert named in message and "allowed" in message and "\n" not in message, message
-    return message
-
-
-def _cli_one_line(capsys, argv: list[str]) -> str:
-    """The one line ``mdr-events argv`` prints on stderr, exiting 2."""
-    status = main(argv)
-    err = capsys.readouterr().err
-    assert status == 2 and err.count("\n") == 1 and err.startswith("mdr-events: error:"), (status, err)
-    return err
 
 
 # --- Q1 (left by round fifteen): the reader's refusals of names= and units= that did not say what is allowed, and a
@@ -62,7 +42,7 @@ RUN = {"time": [0.0, 1.0, 2.0], "normal_force": [0.0, 1.0, 0.0]}
 def test_a_column_named_that_the_run_does_not_have_says_what_is_allowed():
     from mdr_events.io.candidates import read_candidate
 
-    message = _one_line_naming(lambda: read_candidate(RUN, names={"time": "t"}), "names['time']='t'")
+    message = one_line_naming(lambda: read_candidate(RUN, names={"time": "t"}), "names['time']='t'")
     assert "time, normal_force" in message
 
 
@@ -71,15 +51,15 @@ def test_a_unit_for_a_quantity_the_run_does_not_have_is_refused(units):
     from mdr_events.io.candidates import read_candidate
 
     quantity, unit = next(iter(units.items()))
-    _one_line_naming(lambda: read_candidate(RUN, units=units), f"units[{quantity!r}]={unit!r}")
+    one_line_naming(lambda: read_candidate(RUN, units=units), f"units[{quantity!r}]={unit!r}")
     read_candidate(RUN, units={"normal_force": "mN"})  # (a column it has: read)
 
 
 def test_the_command_line_refuses_a_unit_for_an_absent_column(capsys, tmp_path):
     run = tmp_path / "run.csv"
     run.write_text("time,normal_force\n0,0\n1,1\n2,0\n")
-    err = _cli_one_line(capsys, ["validate", str(run), "--scenario", "A", "--alpha", "20", "--out",
-                                 str(tmp_path / "out"), "--units", "contact_area=mm2"])
+    err = cli_one_line(capsys, ["validate", str(run), "--scenario", "A", "--alpha", "20", "--out",
+                                str(tmp_path / "out"), "--units", "contact_area=mm2"])
     assert "units['contact_area']='mm2' is not allowed" in err and not (tmp_path / "out").exists()
 
 
@@ -97,7 +77,7 @@ def test_a_rate_measurement_of_the_wrong_shape_names_the_part(times, force, name
     path = me.Path(np.array([(0.0, 0.0), (0.0, PAPER.d_max)]), speed=PAPER.v)
     law = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-6, 0.3)
     measurement = me.RateMeasurement(path, times, force)
-    _one_line_naming(lambda: me.fit_rate_adhesion([measurement], PAPER, law), named)
+    one_line_naming(lambda: me.fit_rate_adhesion([measurement], PAPER, law), named)
 
 
 # --- Q3 (left by round fifteen): --limit samples= (Limits.samples, "output times (all cases)") did not bind the
@@ -109,8 +89,8 @@ def test_the_samples_limit_binds_the_discrete_method(capsys, tmp_path):
     me.simulate(CONTACT, me.Scenario("A", [20.0]), "discrete", n_steps=99, limits=me.Limits(samples=100))
     with pytest.raises(me.ResourceLimitError, match="output times"):  # (a given dt: counted on the run's own grid)
         me.simulate(CONTACT, me.Scenario("A", [20.0]), "discrete", dt=1e-2, limits=me.Limits(samples=100))
-    err = _cli_one_line(capsys, ["simulate", "--scenario", "A", "--alpha", "20", "--out", str(tmp_path / "o"),
-                                 "--limit", "samples=10"])
+    err = cli_one_line(capsys, ["simulate", "--scenario", "A", "--alpha", "20", "--out", str(tmp_path / "o"),
+                                "--limit", "samples=10"])
     assert "output times" in err and not (tmp_path / "o").exists()
 
 
@@ -129,7 +109,7 @@ FAR = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e300, 0.3)
     lambda law: me.phase_diagram_at_speeds(PAPER, law, [1e-3], [20.0]),
 ], ids=["A", "B", "onset", "let-go", "A-grid", "phase-diagram"])
 def test_a_rate_law_at_its_rate_independent_limit_is_refused_with_the_bound(call):
-    message = _one_line_naming(lambda: call(FAR), "law.v_ref=1e+300")
+    message = one_line_naming(lambda: call(FAR), "law.v_ref=1e+300")
     bound = float(message.split("allowed: v_ref <= ")[1].split(" m/s")[0])
     assert bound == pytest.approx(1e-3 * me.analysis.rate_angles.LEAST_RATE_FACTOR ** (-1.0 / FAR.n), rel=1e-5)
 
@@ -151,7 +131,7 @@ def test_the_bound_on_v_ref_is_the_rate_factor_s_and_survives_an_underflow():
 
 def test_the_rate_continuum_refuses_without_a_solver_warning():
     contact = dataclasses.replace(CONTACT, adhesion=me.RateDependentAdhesion(0.01, 0.15, 1e12, 1.0))
-    _one_line_naming(lambda: me.simulate(contact, me.Scenario("A", [20.0]), "continuum"), "law=RateDependentAdhesion")
+    one_line_naming(lambda: me.simulate(contact, me.Scenario("A", [20.0]), "continuum"), "law=RateDependentAdhesion")
 
 
 # --- Q6: the continuum on a layer far thinner or thicker than its contact: raw OverflowError, ZeroDivisionError,
@@ -166,12 +146,12 @@ def test_the_rate_continuum_refuses_without_a_solver_warning():
     (1e300, "contact.layer=Layer(thickness=1e+300"),
 ])
 def test_the_continuum_refuses_a_layer_beyond_its_scales(h, named):
-    _one_line_naming(lambda: me.simulate(CONTACT.replace(h=h), me.Scenario("A", [20.0]), "continuum"), named)
+    one_line_naming(lambda: me.simulate(CONTACT.replace(h=h), me.Scenario("A", [20.0]), "continuum"), named)
 
 
 def test_the_continuum_runs_a_layer_just_inside_the_stated_thickness():
-    message = _one_line_naming(lambda: me.simulate(CONTACT.replace(h=1e300), me.Scenario("A", [20.0]), "continuum"),
-                               "allowed: h <= ")
+    message = one_line_naming(lambda: me.simulate(CONTACT.replace(h=1e300), me.Scenario("A", [20.0]), "continuum"),
+                              "allowed: h <= ")
     largest = float(message.split("allowed: h <= ")[1].split(" m")[0])
     thick = me.simulate(CONTACT.replace(h=0.99 * largest), me.Scenario("A", [20.0]), "continuum", samples=51)
     half_space = me.simulate(CONTACT, me.Scenario("A", [20.0]), "continuum", samples=51)
@@ -183,8 +163,8 @@ def test_the_continuum_runs_a_layer_just_inside_the_stated_thickness():
 def test_validate_on_a_layer_beyond_the_scales_is_one_line(capsys, tmp_path, h):
     run = tmp_path / "run.csv"
     run.write_text("time,normal_force\n0,0\n1,1\n2,0\n")
-    _cli_one_line(capsys, ["validate", str(run), "--scenario", "A", "--alpha", "20", "--out", str(tmp_path / "o"),
-                           "--h", h])
+    cli_one_line(capsys, ["validate", str(run), "--scenario", "A", "--alpha", "20", "--out", str(tmp_path / "o"),
+                          "--h", h])
 
 
 # --- Q7: the continuum's own output times ran one spacing past the longest run's end even where that is the path's
@@ -252,7 +232,7 @@ def test_a_rate_fit_started_at_the_rate_independent_limit_is_refused_with_the_bo
     path = me.Path(np.array([(0.0, 0.0), (0.0, PAPER.d_max), (0.0, -1e-4)]), speed=1e-6)
     times = np.linspace(0.0, path.duration, 20)
     measurement = me.RateMeasurement(path, times, np.zeros_like(times))
-    _one_line_naming(lambda: me.fit_rate_adhesion([measurement], PAPER, FAR), "start.v_ref=1e+300")
+    one_line_naming(lambda: me.fit_rate_adhesion([measurement], PAPER, FAR), "start.v_ref=1e+300")
 
 
 # --- Q10 (left open by round sixteen): the continuum under Coulomb's law at very large μ with adhesion. The levels
@@ -297,21 +277,21 @@ def test_a_huge_mu_runs_to_its_sticking_limit(law, mu, scenario, alpha):
 @pytest.mark.parametrize("law, mu, alpha", [("coulomb", 1e8, 89.0), ("coulomb", 1e10, 45.0),
                                             ("tau0+coulomb", 1e8, 85.0), ("coulomb", 1e12, 45.0)])
 def test_a_cap_beyond_the_travel_the_criterion_resolves_is_refused_with_the_bound(law, mu, alpha):
-    message = _one_line_naming(lambda: me.simulate(_coulomb_contact(law, mu), me.Scenario("A", [alpha]),
-                                                   "continuum"), f"mu={mu!r}")
+    message = one_line_naming(lambda: me.simulate(_coulomb_contact(law, mu), me.Scenario("A", [alpha]),
+                                                  "continuum"), f"mu={mu!r}")
     assert "allowed: ū at most 1e+09 travels, mu <= " in message and "method='discrete'" in message
 
 
 def test_the_largest_mu_stated_runs():
     """Just inside the stated bound the run ends with finite forces (before: 20-27 s at μ = 1e7, 89°)."""
     contact = _coulomb_contact("coulomb", 1e8)
-    message = _one_line_naming(lambda: me.simulate(contact, me.Scenario("A", [89.0]), "continuum"), "mu=")
+    message = one_line_naming(lambda: me.simulate(contact, me.Scenario("A", [89.0]), "continuum"), "mu=")
     largest = float(message.split("mu <= ")[1].split(" ")[0])
     force = _coulomb_run("coulomb", 0.99 * largest, "A", 89.0)
     assert np.all(np.isfinite(force[~np.isnan(force)])) and np.any(force[~np.isnan(force)] != 0.0)
 
 
 def test_the_command_line_refuses_a_huge_mu_in_one_line(capsys, tmp_path):
-    _cli_one_line(capsys, ["simulate", "--scenario", "A", "--alpha", "85", "--method", "continuum", "--friction",
-                           "tau0+coulomb", "--mu", "1e8", "--tau0", "42e3", "--out", str(tmp_path / "o")])
+    cli_one_line(capsys, ["simulate", "--scenario", "A", "--alpha", "85", "--method", "continuum", "--friction",
+                          "tau0+coulomb", "--mu", "1e8", "--tau0", "42e3", "--out", str(tmp_path / "o")])
     assert not (tmp_path / "o").exists()
