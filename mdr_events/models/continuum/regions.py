@@ -136,9 +136,11 @@ class Part:
         Returns
         -------
         float
-            The anchor as the cap sees it (m; remembered: a layout reads its ends' values more than once, and a value
-            of ``A(g)`` is a root).
+            The anchor as the cap sees it (m; at the part's own ends remembered: the layouts and sums read them more
+            than once, and a value of ``A(g)`` is a root; elsewhere, as the events' moving extents ask, computed).
         """
+        if xi != self.start and xi != self.end:
+            return self.formula.value(xi)
         values = self.memo.setdefault("values", {})
         if xi not in values:
             values[xi] = self.formula.value(xi)
