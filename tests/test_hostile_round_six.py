@@ -12,6 +12,8 @@ import mdr_events as me
 from mdr_events.analysis.fit import synthetic_measurement
 from mdr_events.analysis.reports import ValidationReport
 
+from dask_settings import connect_timeout
+
 PAPER = me.Parameters.paper()
 
 
@@ -189,7 +191,7 @@ def test_a_sweep_names_an_empty_set_and_a_protocol_without_its_setup(grid, sched
     # (nothing listens on port 1: the client gives up after its connect timeout, 30 s by default; the message is the
     # same after UNREACHABLE_TIMEOUT)
     with pytest.raises(ValueError, match=re.escape(message)), \
-            dask.config.set({"distributed.comm.timeouts.connect": UNREACHABLE_TIMEOUT}):
+            connect_timeout(UNREACHABLE_TIMEOUT):
         me.sweep(grid, me.Contact.paper(), "A", 20.0, scheduler=scheduler)
     assert dask.config.get("scheduler", None) == before
 

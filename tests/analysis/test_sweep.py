@@ -13,6 +13,8 @@ import xarray as xr
 import mdr_events as me
 from mdr_events.analysis.executors import LOOPBACK_DASHBOARD
 from mdr_events.analysis.sweep import CLOSED_FORM_QUANTITIES, QUANTITIES, sweep
+
+from dask_settings import connect_timeout
 from mdr_events.theory.analytic import d_crit, dimensionless_groups
 
 # looked up, not imported: dask.distributed costs a pytest-xdist worker about a second at collection; the tests that
@@ -389,8 +391,7 @@ def test_grid_values_that_are_not_real_numbers_are_named(paper, values, kind):
 
 def test_a_scheduler_that_cannot_be_reached_is_named(paper):
     """A raw OSError after dask's connect timeout (shortened here)."""
-    import dask
-    with dask.config.set({"distributed.comm.timeouts.connect": "1s"}):
+    with connect_timeout("1s"):
         with pytest.raises(ValueError, match=re.escape("scheduler='tcp://127.0.0.1:1' cannot be reached")):
             sweep({"tau0": [1e3, 2e3]}, "A", 20.0, base=paper, scheduler="tcp://127.0.0.1:1",
                   quantities=CLOSED_FORM_QUANTITIES)
