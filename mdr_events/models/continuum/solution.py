@@ -303,12 +303,11 @@ def _quantity(filled: dict[str, np.ndarray], quantity: str) -> np.ndarray:
 
 class ExtremumScan(NamedTuple):
     """Every span sampled at :data:`EXTREMUM_GRID` times (s from first contact), with the quantities
-    :func:`extremum` reads (the sliding fraction left out)."""
+    :func:`extremum` reads (the sliding fraction left out); ``matrices``: each quantity's scan as one matrix with what
+    both extremes read of it (:class:`ScanMatrix`), filled as :func:`extremum` asks (``None``: none kept)."""
 
     times: list[np.ndarray]
     values: list[dict[str, np.ndarray]]
-    #: each quantity's scan as one matrix, with what both extremes read of it (:func:`_scan_matrix`), filled as
-    #: :func:`extremum` asks (``None``: not kept)
     matrices: dict[str, "ScanMatrix"] | None = None
 
 
