@@ -2,8 +2,8 @@
 bit, without its Python loop over the solver's steps.
 
 ``OdeSolution`` hands each step's points to that step's interpolant, one call per step: a span of a tabulated indenter
-restarts the solver at each of the table's knots (:func:`~.integrate.solve_between_knots`), some ninety steps, and filling
-2001 samples cost a hundred such calls. DOP853's interpolant of a step is a polynomial in ``x = (t − t_old)/h``
+starts a piece at each of the table's knots (a panel of :mod:`.span_panels` each, stored as a DOP853 step), some ninety
+steps, and filling 2001 samples cost a hundred such calls. DOP853's interpolant of a step is a polynomial in ``x = (t − t_old)/h``
 evaluated by a fixed sequence of products and sums (``Dop853DenseOutput``); :func:`force_values` takes that sequence for
 every point at once, each point with the coefficients of the step ``OdeSolution`` would pick for it, so that every value
 is the interpolant's own. Any other dense output (another method, :class:`~.span.LinearForce`) is called as it is.

@@ -303,10 +303,22 @@ def _quantity(filled: dict[str, np.ndarray], quantity: str) -> np.ndarray:
 
 class ExtremumScan(NamedTuple):
     """Every span sampled at :data:`EXTREMUM_GRID` times (s from first contact), with the quantities
-    :func:`extremum` reads (the sliding fraction left out)."""
+    :func:`extremum` reads (the sliding fraction left out); ``matrices``: each quantity's scan as one matrix with what
+    both extremes read of it (:class:`ScanMatrix`), filled as :func:`extremum` asks (``None``: none kept)."""
 
     times: list[np.ndarray]
     values: list[dict[str, np.ndarray]]
+    matrices: dict[str, "ScanMatrix"] | None = None
+
+
+class ScanMatrix(NamedTuple):
+    """One quantity of an :class:`ExtremumScan`, every span a row padded with ``nan``: what the maximum and the minimum
+    both read (the sign applied to ``matrix`` alone, each change and magnitude the same for either)."""
+
+    matrix: np.ndarray
+    largest: np.ndarray
+    reach: np.ndarray
+    size: float
 
 
 def scan_spans(solution: PathSolution) -> ExtremumScan:
@@ -323,7 +335,7 @@ def scan_spans(solution: PathSolution) -> ExtremumScan:
             grid, radii = np.linspace(lower, upper, count), None
         times.append(grid)
         values.append(evaluate_span(solution, index, grid, sliding=False, radii=radii))
-    return ExtremumScan(times, values)
+    return ExtremumScan(times, values, {})
 
 
 def _radius_grid(solution: PathSolution, span: Span, lower: float, upper: float,
@@ -418,23 +430,35 @@ def _scanned_extremes(scan: ExtremumScan, quantity: str,
                       sign: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
     """Per span of ``scan``, of ``sign`` times ``quantity``: the best scanned value (``nan`` where none is finite), its
     largest change between neighbouring scan points (0 for one point), the index of the earliest scan point within
-    :data:`EXTREMUM_TIE` of it; and the quantity's largest magnitude over the run. All spans at once: their scans
-    padded with ``nan`` to one matrix."""
+    :data:`EXTREMUM_TIE` of it; and the quantity's largest magnitude over the run. All spans at once, from the
+    quantity's :func:`_scan_matrix` (kept in ``scan`` for the other extreme)."""
+    kept = scan.matrices.get(quantity) if scan.matrices is not None else None
+    if kept is None:
+        kept = _scan_matrix(scan, quantity)
+        if scan.matrices is not None:
+            scan.matrices[quantity] = kept
+    matrix = kept.matrix * sign  # (exact: a change of sign)
+    with np.errstate(invalid="ignore"):
+        best = np.fmax.reduce(matrix, axis=1)
+        first = np.argmax(matrix >= (best - EXTREMUM_TIE * kept.largest)[:, None], axis=1)  # earliest tie
+    return best, kept.reach, first, kept.size
+
+
+def _scan_matrix(scan: ExtremumScan, quantity: str) -> ScanMatrix:
+    """``quantity``'s scan as a matrix (a row per span, padded with ``nan``), each row's largest magnitude and largest
+    change between neighbouring points (0 for one point; ``|Δ(−q)| = |Δq|`` exactly, so both extremes share it) and
+    the largest magnitude over the run."""
     width = max(len(times) for times in scan.times)
     matrix = np.full((len(scan.times), width), np.nan)
     for row, filled in enumerate(scan.values):
         values = _quantity(filled, quantity)
         matrix[row, :len(values)] = values
-    magnitude = np.abs(matrix)
-    matrix *= sign
     with np.errstate(invalid="ignore"):
-        best = np.fmax.reduce(matrix, axis=1)
-        largest = np.fmax.reduce(magnitude, axis=1)
-        first = np.argmax(matrix >= (best - EXTREMUM_TIE * largest)[:, None], axis=1)  # earliest tie
+        largest = np.fmax.reduce(np.abs(matrix), axis=1)
         reach = np.fmax(np.fmax.reduce(np.abs(np.diff(matrix, axis=1)), axis=1), 0.0) if width > 1 \
-            else np.zeros(len(best))
+            else np.zeros(len(largest))
     size = float(np.fmax.reduce(largest[np.isfinite(largest)], initial=0.0))
-    return best, reach, first, size
+    return ScanMatrix(matrix, largest, reach, size)
 
 
 def _bounded_search(solution: PathSolution, index: int, quantity: str, sign: float, times: np.ndarray,
