@@ -73,6 +73,11 @@ A study names its parameters, what to compute and where to write it::
                                  # continuum, and so [validate] and [fit], with the friction law "tau0" alone)
     base = "bonded"              # or "frictionless" (paths without tangential motion), as --layer-base
 
+    [adhesion]                   # optional: the adhesion law of every table (without it: "paper",
+    law = "rate"                 # Hess's rule with dgamma0/dgamma1 of [parameters]); "rate": the works
+    v_ref = 1e-6                 # at rest of [parameters] made rate dependent, v_ref (m/s, > 0) and n
+    n = 0.5                      # (0 < n <= 1), as --adhesion-law rate --v-ref V --rate-exponent N
+
     [output]                     # required
     directory = "out"            # relative to the study file; checked before anything is computed
     name = "my_study"            # file stem (default: the study file's stem); a plain name: no / or \\
@@ -275,12 +280,22 @@ def _layer(document: dict[str, Any], where: str) -> Layer:
         raise StudyError(f"{where}: [layer] {error}") from None
 
 
+def _adhesion(document: dict[str, Any], params: Parameters, where: str):
+    """The ``[adhesion]`` table's law (``law``, and ``v_ref``, ``n`` for ``"rate"``) with the works at rest of
+    ``[parameters]``; the paper's law without it."""
+    table = document.get("adhesion", {})
+    try:
+        return inputs.adhesion(table.get("law"), params, table.get("v_ref"), table.get("n"))
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{where}: [adhesion] {error}") from None
+
+
 def _tables(document: dict[str, Any], source: FilePath) -> _Tables:
     """The values every table shares, each named where it is wrong."""
     where = os.fspath(source)
     params, provenance = _parameters(document.get("parameters"), where)
     limits, profile, friction = _limits(document, where), _profile(document, source, where), _friction(document, where)
-    layer = _layer(document, where)
+    layer, adhesion = _layer(document, where), _adhesion(document, params, where)
     path = None
     if "path" in document:
         try:
@@ -288,7 +303,7 @@ def _tables(document: dict[str, Any], source: FilePath) -> _Tables:
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where}: [path] {error}") from None
     return _Tables(source, where, document, document["output"].get("name", source.stem), params, provenance, limits,
-                   profile, friction, inputs.contact(params, profile, friction, layer), path)
+                   profile, friction, inputs.contact(params, profile, friction, layer, adhesion), path)
 
 
 def _simulation(tables: _Tables) -> SimulateJob | None:
@@ -308,6 +323,7 @@ def _simulation(tables: _Tables) -> SimulateJob | None:
             inputs.scenario(name, alpha, tables.params)
         the_method = inputs.method(method, settings)
         check_layer_taken(tables.contact, motion, the_method)
+        inputs.check_rate_run(tables.contact, motion, the_method, "simulate")
         return SimulateJob(tables.contact, motion, the_method, tables.limits, tables.provenance,
                            f"{tables.name}_simulation")
     except (ValueError, TypeError) as error:

@@ -84,6 +84,7 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
                 "table": ("string", False)},
     "friction": {"law": ("string", True), "mu": ("number", False)},
     "layer": {"h": ("number", True), "base": ("string", False)},
+    "adhesion": {"law": ("string", True), "v_ref": ("number", False), "n": ("number", False)},
     "output": {"directory": ("string", True), "name": ("string", False)},
 }
 REQUIRED_TABLES = ("output",)
@@ -104,6 +105,11 @@ KEY_NOTES: dict[tuple[str, str], str] = {
     ("layer", "h"): "the elastomer's thickness in m: a layer on a rigid base (inf: the half-space, as without the "
                     "table); run by both methods, [validate] and [fit] (the continuum with the friction law 'tau0'), "
                     "as --h",
+    ("adhesion", "law"): "'paper' (Hess's rule with dgamma0 in and dgamma1 out of [parameters], rate independent: "
+                         "the default) or 'rate' (needs v_ref and n; the works at rest dgamma0 > 0, dgamma1 >= "
+                         "dgamma0 of [parameters]), as --adhesion-law",
+    ("adhesion", "v_ref"): "the rate law's reference speed of the contact's edge in m/s, > 0, as --v-ref",
+    ("adhesion", "n"): "the rate law's exponent of the edge's speed, 0 < n <= 1, as --rate-exponent",
     ("layer", "base"): "'bonded' (the default) or 'frictionless' (paths without tangential motion only), as "
                        "--layer-base",
 }
