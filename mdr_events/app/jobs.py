@@ -14,6 +14,7 @@ verb               job                              library
 ``simulate``       :class:`SimulateJob`             :func:`~mdr_events.simulate`
 ``validate``       :class:`ValidateJob`             :func:`~mdr_events.validate`, ``convergence_study``
 ``fit``            :class:`FitJob`                  :func:`~mdr_events.fit`
+``fit`` (rate)     :class:`RateFitJob`              :func:`~mdr_events.fit_rate_adhesion`
 ``sweep``          :class:`SweepJob`                :func:`~mdr_events.sweep`
 ``reproduce``      :class:`ReproduceJob`            :func:`mdr_events.reproduction.reproduce`
 ``lammps-check``   :class:`LammpsCheckJob`          :func:`mdr_events.dem.lammps_check`
@@ -49,7 +50,7 @@ if TYPE_CHECKING:
     from mdr_events.models.motion import Motion
     from mdr_events.app.validation_files import RenderedReport
 
-__all__ = ["DeriveJob", "PhaseJob", "SimulateJob", "ValidateJob", "Convergence", "FitJob", "SweepJob", "ReproduceJob",
+__all__ = ["DeriveJob", "PhaseJob", "SimulateJob", "ValidateJob", "Convergence", "FitJob", "RateFitJob", "SweepJob", "ReproduceJob",
            "LammpsCheckJob", "Job", "CONVERGENCE_MODULE", "CONVERGENCE_STEM", "DECK_SUFFIX"]
 
 Progress = Callable[[str], None]
@@ -330,6 +331,109 @@ class FitJob:
 
 
 @dataclass(frozen=True)
+class RateFitJob:
+    """The joint fit of the rate-dependent adhesion law to normal-force curves measured at several speeds
+    (:func:`~mdr_events.fit_rate_adhesion`): one result, written as ``<stem>.nc``.
+
+    Attributes
+    ----------
+    data : tuple of str
+        The measurements as given (their names in messages and in the result).
+    files : tuple of pathlib.Path
+        Their files.
+    stem : str
+        The stem of the fit's file.
+    contact : Contact
+        The fit's start: its adhesion a :class:`~mdr_events.RateDependentAdhesion`, on the half-space.
+    paths : tuple of Path
+        The path of each measurement (its speed the measurement's).
+    description : str
+        The path, for the result.
+    free : tuple of str
+        The law's values to fit (:data:`~mdr_events.analysis.rate_fit.RATE_FREE_NAMES`).
+    offsets : bool
+        A free force offset per measurement.
+    noise : float or None
+        The normal force's noise (N, every measurement's), ``None``: estimated from the residuals.
+    names, units, time_origin
+        How to read the measurements (:func:`~mdr_events.validate`'s).
+    d_max : float
+        The depth the contact's flat record takes (m).
+    """
+
+    data: tuple[str, ...]
+    files: tuple[FilePath, ...]
+    stem: str
+    contact: Contact
+    paths: tuple[Any, ...]
+    description: str
+    free: tuple[str, ...] = ("v_ref", "n")
+    offsets: bool = False
+    noise: float | None = None
+    names: Mapping[str, str] = field(default_factory=dict)
+    units: Mapping[str, str] = field(default_factory=dict)
+    time_origin: str | float = "first_contact"
+    d_max: float = 3e-4
+    limits: Limits = DEFAULT_LIMITS
+    provenance: Mapping[str, str] = field(default_factory=dict)
+
+    def measurements(self) -> list:
+        """Each measurement's normal force read (names, units) on its path's clock (the time origin), the samples
+        without a force left out (``nan``: a missing sample)."""
+        import numpy as np
+
+        from mdr_events.analysis.rate_fit import RateMeasurement
+        from mdr_events.analysis.validate import times_from_contact
+        from mdr_events.io.candidates import read_candidate
+
+        found = []
+        for data, file, path in zip(self.data, self.files, self.paths):
+            read = read_candidate(file, dict(self.names), dict(self.units), self.limits)
+            if "normal_force" not in read.quantities:
+                raise ValueError(f"{data}: no normal_force column; allowed: a measurement of the normal force (the "
+                                 "rate law's joint fit reads F_N alone; --names normal_force=COLUMN names yours)")
+            force = read.quantities["normal_force"]
+            kept = np.isfinite(force)
+            clock = times_from_contact(read, path, self.time_origin) + path.first_contact_time()
+            found.append(RateMeasurement(path, clock[kept], force[kept], self.noise))
+        return found
+
+    def compute(self, progress: Progress | None = None) -> xr.Dataset:
+        """Read the measurements and fit; nothing is written."""
+        from mdr_events.analysis.rate_fit import fit_rate_adhesion
+
+        measurements = self.measurements()
+        params = self.contact.parameters(self.d_max, self.paths[0].speed)
+        result = fit_rate_adhesion(measurements, params, self.contact.adhesion, list(self.free), self.offsets,
+                                   self.contact.profile, limits=self.limits)
+        from mdr_events.io.datasets import stamp
+
+        # the start's contact stamped (Contact.from_attrs reads it back), the fitted values in the variables
+        return stamp(result, params, **self.contact.to_attrs(), **self.provenance, path_description=self.description,
+                     measurements=", ".join(self.data), speeds=", ".join(f"{path.speed!r}" for path in self.paths),
+                     speeds_units="m s-1")
+
+    @staticmethod
+    def determined(result: xr.Dataset) -> bool:
+        """Whether every value of the fit ``result`` is determined: a finite standard error and interval."""
+        import numpy as np
+
+        return bool(all(np.all(np.isfinite(result[name].values))
+                        for name in ("standard_error", "interval_lower", "interval_upper")))
+
+    def write(self, result: xr.Dataset, out: FilePath) -> list[FileOutcome]:
+        """Write ``<stem>.nc`` into ``out``."""
+        from mdr_events.app.result_files import FileOutcome, FileStatus
+        from mdr_events.io.files import write_netcdf
+
+        return [FileOutcome(write_netcdf(result, FilePath(out) / f"{self.stem}.nc"), FileStatus.WRITTEN)]
+
+    def run(self, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
+        """Fit and write."""
+        return self.write(self.compute(), out)
+
+
+@dataclass(frozen=True)
 class SweepJob:
     """A parameter sweep (:func:`~mdr_events.sweep`), written chunk by chunk to its store and as ``<stem>.nc``.
 
@@ -479,4 +583,4 @@ class LammpsCheckJob:
 
 
 #: A job.
-Job = DeriveJob | PhaseJob | SimulateJob | ValidateJob | FitJob | SweepJob | ReproduceJob | LammpsCheckJob
+Job = DeriveJob | PhaseJob | SimulateJob | ValidateJob | FitJob | RateFitJob | SweepJob | ReproduceJob | LammpsCheckJob

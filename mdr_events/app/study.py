@@ -126,10 +126,11 @@ from typing import TYPE_CHECKING, Any, Callable, Iterable, NamedTuple
 from mdr_events.analysis.fit import FitResult
 from mdr_events.analysis.reports import ValidationReport, Verdict
 from mdr_events.app import inputs
-from mdr_events.app.jobs import FitJob, Job, LammpsCheckJob, PhaseJob, SimulateJob, SweepJob, ValidateJob
+from mdr_events.app.jobs import FitJob, Job, LammpsCheckJob, PhaseJob, RateFitJob, SimulateJob, SweepJob, ValidateJob
 from mdr_events.app.study_format import (MAX_TOML_BYTES, REQUIRED_TABLES, SCHEMA, StudyError, check_computation,
                                          check_tables, measured_case, one_table, read_toml)
 from mdr_events.contact import Contact
+from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.io.files import check_output_stem, prepare_output_directory
@@ -192,7 +193,7 @@ class Study:
     simulation: SimulateJob | None = None
     phase_diagrams: tuple[PhaseJob, ...] = ()
     validation: ValidateJob | None = None
-    fit: FitJob | None = None
+    fit: FitJob | RateFitJob | None = None
     sweep: SweepJob | None = None
     lammps: LammpsCheckJob | None = None
 
@@ -418,23 +419,73 @@ def _lammps_check(tables: _Tables) -> LammpsCheckJob | None:
                           table.get("dt"), tolerance, tables.limits, tables.provenance, f"{tables.name}_lammps_check")
 
 
-def _fit(tables: _Tables) -> FitJob | None:
-    """The ``[fit]`` table's job."""
+def _fit(tables: _Tables) -> FitJob | RateFitJob | None:
+    """The ``[fit]`` table's job: :func:`~mdr_events.fit` of one measurement, or under the rate law (``[adhesion]
+    law = "rate"``) :func:`~mdr_events.fit_rate_adhesion` of every measurement of ``data``, each at its speed of
+    ``speeds``."""
     table = tables.document.get("fit")
     if table is None:
         return None
     motion, description = _measured_motion(tables, "fit")
+    data = table["data"] if isinstance(table["data"], list) else [table["data"]]
+    if isinstance(tables.contact.adhesion, RateDependentAdhesion):
+        return _rate_fit(tables, table, motion, description, data)
+    for key in ("speeds", "offsets"):
+        if key in table:
+            raise StudyError(f"{tables.where}: [fit] {key} is not allowed with the adhesion law 'paper'; allowed: with "
+                             "[adhesion] law = 'rate' (the joint fit over speeds)")
+    if len(data) != 1:
+        raise StudyError(f"{tables.where}: [fit] {len(data)} measurements are not allowed with the adhesion law "
+                         "'paper'; allowed: one data file (several at their speeds with [adhesion] law = 'rate')")
     _reference_layer(tables, motion, "fit")
-    data = tables.file(table["data"])
-    stem = f"{tables.name}_fit_{data.stem}"
+    file = tables.file(data[0])
+    stem = f"{tables.name}_fit_{file.stem}"
     try:
         check_output_stem("stem", stem)
     except ValueError as error:
         raise StudyError(f"{tables.where}: [fit] {error}") from None
-    return FitJob(table["data"], data, stem, tables.contact, motion, description, tuple(table["free"]),
+    return FitJob(data[0], file, stem, tables.contact, motion, description, tuple(table["free"]),
                   {name: tuple(pair) for name, pair in table.get("bounds", {}).items()}, table.get("noise", {}),
                   table.get("names", {}), table.get("units", {}), table.get("time_origin", "first_contact"),
                   tables.limits, tables.provenance)
+
+
+def _rate_fit(tables: _Tables, table: dict[str, Any], motion: Motion, description: str,
+              data: list[str]) -> RateFitJob:
+    """The ``[fit]`` table's joint fit of the rate law (:func:`_fit`), written as ``<name>_rate_fit_<first data's
+    stem>.nc``."""
+    from mdr_events.analysis.rate_fit import RATE_FREE_NAMES
+    from mdr_events.models.motion import Paths
+
+    path = next(iter(motion.paths.values())) if isinstance(motion, Paths) else \
+        motion.cases(tables.params, tables.profile).paths[0]
+    speeds = table.get("speeds", [path.speed] * len(data))
+    speeds = speeds if isinstance(speeds, list) else [speeds]
+    stem = f"{tables.name}_rate_fit_{tables.file(data[0]).stem}"
+    try:
+        if len(speeds) != len(data):
+            raise ValueError(f"speeds = {speeds!r} is not allowed with {len(data)} measurement(s); allowed: one speed "
+                             "per data file, in their order")
+        for key in ("bounds",):
+            if key in table:
+                raise ValueError(f"{key} is not allowed with the rate law; allowed: free among "
+                                 f"{', '.join(RATE_FREE_NAMES)} (their bounds the fit's own)")
+        if set(table.get("noise", {})) - {"normal_force"}:
+            raise ValueError(f"noise = {table['noise']!r} is not allowed with the rate law; allowed: {{ normal_force = "
+                             "SIGMA }} alone (the joint fit reads F_N)")
+        free = tuple(table["free"])
+        if any(name not in RATE_FREE_NAMES for name in free) or len(set(free)) != len(free):
+            raise ValueError(f"free = {list(free)!r} is not allowed with the rate law; allowed: distinct names among "
+                             f"{', '.join(RATE_FREE_NAMES)}")
+        check_output_stem("stem", stem)
+        paths = tuple(Path(path.waypoints, as_float(speed)) for speed in speeds)
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{tables.where}: [fit] {error}") from None
+    return RateFitJob(tuple(data), tuple(tables.file(name) for name in data), stem, tables.contact, paths,
+                      f"{description} at {', '.join(f'{speed:g}' for speed in speeds)} m/s", free,
+                      bool(table.get("offsets", False)), table.get("noise", {}).get("normal_force"),
+                      table.get("names", {}), table.get("units", {}), table.get("time_origin", "first_contact"),
+                      tables.params.d_max, tables.limits, tables.provenance)
 
 
 def _sweep(tables: _Tables, output_directory: FilePath) -> SweepJob | None:
@@ -619,7 +670,8 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
     fitted = None if study.fit is None else _computed(study, "fit", study.fit.compute)
     checked = None if study.lammps is None else _computed(study, "lammps_check", study.lammps.compute)
     if fitted is not None:
-        progress(f"fit: {study.fit.data} (free: {', '.join(study.fit.free)})")  # once it ran
+        progress(f"fit: {', '.join(study.fit.data) if isinstance(study.fit, RateFitJob) else study.fit.data} (free: "
+                 f"{', '.join(study.fit.free)})")  # once it ran
     if study.simulation is not None:
         dataset = _computed(study, "simulation", study.simulation.compute)
         motion = study.simulation.motion
@@ -641,7 +693,12 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
         written.verdicts["lammps_check"] = ValidationReport.from_dataset(rendered.report).verdict
         progress(f"lammps_check: LAMMPS {study.lammps.normal} + {study.lammps.tangential}: "
                  f"{written.verdicts['lammps_check']}")
-    if fitted is not None:
+    if fitted is not None and isinstance(study.fit, RateFitJob):
+        label = f"fit {study.fit.data[0]}"
+        written += study.fit.write(fitted, out)
+        written.verdicts[label] = Verdict.PASS if RateFitJob.determined(fitted) else Verdict.FAIL
+        progress(f"{label}: {written.verdicts[label]}")
+    elif fitted is not None:
         label, rendered = f"fit {study.fit.data}", fitted[1]
         written += write_rendered(rendered, out)
         written.verdicts[label] = Verdict.PASS if FitResult.from_dataset(rendered.report).identifiable else Verdict.FAIL

@@ -44,6 +44,10 @@ _KINDS: dict[str, tuple[Callable[[Any], bool], str]] = {
     "string table": (lambda v: isinstance(v, dict) and all(isinstance(s, str) for s in v.values()),
                      'a table of strings, e.g. { time = "t", normal_force = "Fn" }'),
     "string or number": (lambda v: isinstance(v, str) or _is_number(v), "a string or a number"),
+    "string or strings": (lambda v: isinstance(v, str) or (isinstance(v, list) and len(v) > 0
+                                                           and all(isinstance(s, str) for s in v)),
+                          "a string or a non-empty list of strings"),
+    "boolean": (lambda v: isinstance(v, bool), "true or false"),
     "number table": (lambda v: isinstance(v, dict) and all(map(_is_number, v.values())),
                      "a table of numbers, e.g. { normal_force = 1e-3 }"),
     "bounds table": (lambda v: isinstance(v, dict) and all(isinstance(p, list) and len(p) == 2
@@ -68,7 +72,8 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
     "validate": {"runs": ("strings", True), "tolerance": ("number", False), "names": ("string table", False),
                  "units": ("string table", False), "time_origin": ("string or number", False),
                  "scenario": ("string", False), "alpha": ("numbers", False)},
-    "fit": {"data": ("string", True), "free": ("strings", True), "names": ("string table", False),
+    "fit": {"data": ("string or strings", True), "free": ("strings", True), "speeds": ("numbers", False),
+            "offsets": ("boolean", False), "names": ("string table", False),
             "units": ("string table", False), "time_origin": ("string or number", False),
             "noise": ("number table", False), "bounds": ("bounds table", False), "scenario": ("string", False),
             "alpha": ("numbers", False)},

@@ -291,6 +291,13 @@ def adhesion(args: argparse.Namespace, params: Parameters):
         raise UsageError(f"--adhesion-law rate {shown_}: {error}") from None
 
 
+def is_rate_law(contact: Contact) -> bool:
+    """Whether ``contact``'s adhesion law is the rate-dependent one (``--adhesion-law rate``)."""
+    from mdr_events.contact.adhesion import RateDependentAdhesion
+
+    return isinstance(contact.adhesion, RateDependentAdhesion)
+
+
 def check_rate_run(contact: Contact, motion, method, verb: str) -> None:
     """Refuse, before anything is written, the rate law (``--adhesion-law rate``) where ``verb``'s method does not run
     it with the other options (:func:`~mdr_events.app.inputs.check_rate_run`): one line naming the option."""
