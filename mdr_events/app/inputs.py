@@ -41,7 +41,7 @@ if TYPE_CHECKING:  # (the models and the table reader are imported where used: a
     from mdr_events.models.motion import Paths, Scenario
     from mdr_events.models.paths import Path
 
-__all__ = ["parameters", "indenter", "friction", "adhesion", "ADHESION_LAWS", "check_rate_run", "layer", "limits", "path", "contact", "scenario", "paths", "method",
+__all__ = ["parameters", "indenter", "friction", "adhesion", "ADHESION_LAWS", "check_rate_run", "check_reference_law", "angle_speeds", "layer", "limits", "path", "contact", "scenario", "paths", "method",
            "DEFAULT_PRESET"]
 
 #: The preset of the paper both front ends start from when none is named.
@@ -171,6 +171,46 @@ def check_rate_run(contact: Contact, motion: Scenario | Paths, method: Method, w
 
     method.check_model(model_job(contact, motion, None, {}))
     check_layer_taken(contact, motion, method, where=where)
+
+
+def check_reference_law(contact: Contact, where: str) -> None:
+    """Refuse the rate-dependent law where the reference is the rate-independent continuum of ``solve_path``
+    (``validate``, ``lammps-check``): the one-line ``TypeError`` naming the law and what runs it.
+
+    Raises
+    ------
+    TypeError
+        A contact whose adhesion law is rate dependent.
+    """
+    if isinstance(contact.adhesion, RateDependentAdhesion):
+        raise TypeError(f"adhesion={contact.adhesion!r} is not allowed in {where}: its reference, the exact continuum "
+                        "of solve_path, is rate independent; allowed: the paper's law (the rate law's own continuum "
+                        "run: simulate --method continuum with it; its joint fit to measured F_N: fit)")
+
+
+def angle_speeds(contact: Contact, speeds: Sequence[float] | None, params: Parameters) -> tuple[float, ...] | None:
+    """The speeds (m/s) of a phase diagram's critical angles under the rate-dependent law (default the parameters'
+    ``v`` alone), checked with what the angles take of the contact
+    (:func:`~mdr_events.analysis.rate_job.rate_job`: the friction law ``"tau0"``, the half-space); ``None`` for the
+    paper's law (its closed forms, Fig. 9).
+
+    Raises
+    ------
+    ValueError, TypeError
+        Speeds with the paper's law, a speed that is not a finite number > 0, or a contact the angles refuse.
+    """
+    if not isinstance(contact.adhesion, RateDependentAdhesion):
+        if speeds is not None:
+            raise ValueError(f"speeds={list(speeds)!r} are not allowed with the adhesion law 'paper'; allowed: speeds "
+                             "with the law 'rate' (its critical angles against the speed)")
+        return None
+    from mdr_events.analysis.rate_job import rate_job
+    from mdr_events.validation import check_real
+
+    found = tuple(check_real("speed", speed, "a finite number > 0 (m/s)", lambda value: value > 0.0)
+                  for speed in ([params.v] if speeds is None else speeds))
+    rate_job(contact, found, (), d_max=params.d_max, what="the critical angles against the speed")
+    return found
 
 
 def layer(h: float | None = None, base: str | None = None) -> Layer:

@@ -87,7 +87,8 @@ class DeriveJob:
 
 @dataclass(frozen=True)
 class PhaseJob:
-    """The phase diagram of a scenario (Fig. 9a/9b) for a contact; written as ``<stem>.nc`` and ``<stem>.png``.
+    """The phase diagram of a scenario (Fig. 9a/9b) for a contact; written as ``<stem>.nc`` and ``<stem>.png``. Under
+    the rate-dependent adhesion law (``speeds`` given) the scenario's critical angle against the speed, ``<stem>.nc``.
 
     Attributes
     ----------
@@ -101,6 +102,8 @@ class PhaseJob:
         Attributes every written result carries (which parameters came from a preset).
     stem : str
         The files' stem.
+    speeds : tuple of float, optional
+        Under the rate-dependent law, the speeds (m/s) of its critical angles; ``None`` for the paper's law.
     """
 
     contact: Contact
@@ -109,15 +112,32 @@ class PhaseJob:
     v: float
     provenance: Mapping[str, str] = field(default_factory=dict)
     stem: str = "phase_diagram"
+    speeds: tuple[float, ...] | None = None
+
+    def compute_at_speeds(self) -> xr.Dataset:
+        """Under a rate-dependent law: the scenario's critical angle at each of :attr:`speeds`
+        (:func:`~mdr_events.critical_angles_at_speeds`, :func:`~mdr_events.critical_angles_B_at_speeds`), stamped
+        with the contact (``Contact.from_attrs`` reads the law back)."""
+        from mdr_events.analysis.rate_angles import critical_angles_at_speeds
+        from mdr_events.analysis.rate_let_go import critical_angles_B_at_speeds
+        from mdr_events.io.datasets import stamp
+
+        angles = {"A": critical_angles_at_speeds, "B": critical_angles_B_at_speeds}[self.scenario]
+        result = angles(self.contact, list(self.speeds), d_max=self.d_max)
+        return stamp(result, self.contact.parameters(self.d_max, self.v), **self.contact.to_attrs(), **self.provenance)
 
     def run(self, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
         """Compute the diagram and write its files into ``out``: of the contact's layer where it has one (its slip
         onset is the layer's, and the paper's speed is stamped, as :func:`~mdr_events.phase_diagram` of a contact
         does); the half-space's of the flat record with the study's ``v`` (a study's ``[layer]`` had been dropped
         here, and the half-space's diagram written)."""
-        from mdr_events.app.result_files import write_phase_diagram
+        from mdr_events.app.result_files import FileOutcome, FileStatus, write_phase_diagram
+        from mdr_events.io.files import write_netcdf
         from mdr_events.theory.job import on_layer
 
+        if self.speeds is not None:  # (the rate law: its angles against the speed, as a labelled result)
+            return [FileOutcome(write_netcdf(self.compute_at_speeds(), FilePath(out) / f"{self.stem}.nc"),
+                                FileStatus.WRITTEN)]
         if on_layer(self.contact):
             return write_phase_diagram(self.contact, self.scenario, out, self.stem, attrs=dict(self.provenance),
                                        d_max=self.d_max)

@@ -19,7 +19,8 @@ A study names its parameters, what to compute and where to write it::
     speed = 1e-6
 
     [phase_diagram]              # optional: Fig. 9a / 9b
-    scenarios = ["A", "B"]
+    scenarios = ["A", "B"]       # under [adhesion] law = "rate": each scenario's critical angle
+    speeds = [1e-7, 1e-6]        # against these speeds (m/s; default [parameters] v), as --speeds
 
     [validate]                   # optional: your simulator's runs against the exact continuum
     runs = ["run_dx2um.csv"]     # CSV or netCDF files, relative to the study file
@@ -347,8 +348,16 @@ def _phase_diagrams(tables: _Tables) -> tuple[PhaseJob, ...]:
             check_onset_contact(tables.contact, "phase_diagram", tables.params.d_max)
         except (ValueError, TypeError) as error:
             raise StudyError(f"{tables.where}: [phase_diagram] {error}") from None
+    speeds = tables.document.get("phase_diagram", {}).get("speeds")
+    try:
+        speeds = inputs.angle_speeds(tables.contact, None if speeds is None else speeds if isinstance(speeds, list)
+                                     else [speeds], tables.params) if scenarios else None
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{tables.where}: [phase_diagram] {error}") from None
+    kind = "phase_diagram" if speeds is None else "critical_angle"
     return tuple(PhaseJob(tables.contact, scenario, tables.params.d_max, tables.params.v, tables.provenance,
-                          f"{tables.name}_phase_diagram_{scenario}") for scenario in scenarios)
+                          f"{tables.name}_{kind}_{scenario}" + ("" if speeds is None else "_at_speeds"), speeds)
+                 for scenario in scenarios)
 
 
 def _measured_motion(tables: _Tables, table: str) -> tuple[Motion, str]:
@@ -369,6 +378,7 @@ def _validation(tables: _Tables) -> ValidateJob | None:
     table = tables.document.get("validate")
     if table is None:
         return None
+    _reference_law(tables, "validate")
     motion, description = _measured_motion(tables, "validate")
     _reference_layer(tables, motion, "validate")
     stems: dict[str, str] = {}
@@ -388,6 +398,15 @@ def _validation(tables: _Tables) -> ValidateJob | None:
                        tables.provenance)
 
 
+def _reference_law(tables: _Tables, table: str) -> None:
+    """The study's rate-dependent ``[adhesion]`` where ``[table]``'s reference is the rate-independent continuum,
+    named when the study is read (:func:`~mdr_events.app.inputs.check_reference_law`)."""
+    try:
+        inputs.check_reference_law(tables.contact, table)
+    except TypeError as error:
+        raise StudyError(f"{tables.where}: [{table}] {error}") from None
+
+
 def _reference_layer(tables: _Tables, motion: Motion, table: str) -> None:
     """The study's ``[layer]`` where the continuum reference of ``[validate]`` or ``[fit]`` does not take it, named
     when the study is read (:func:`~mdr_events.models.simulate.check_layer_taken`)."""
@@ -403,6 +422,7 @@ def _lammps_check(tables: _Tables) -> LammpsCheckJob | None:
     table = tables.document.get("lammps_check")
     if table is None:
         return None
+    _reference_law(tables, "lammps_check")
     motion, description = _measured_motion(tables, "lammps_check")
     tangential = table.get("tangential", "none")
     try:

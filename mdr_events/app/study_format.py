@@ -68,7 +68,7 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
                    "dx": ("number", False), "dt": ("number", False), "n_steps": ("integer", False),
                    "samples": ("integer", False), "rtol": ("number", False), "atol": ("number", False)},
     "path": {"waypoints": ("points", True), "speed": ("number", False)},
-    "phase_diagram": {"scenarios": ("strings", True)},
+    "phase_diagram": {"scenarios": ("strings", True), "speeds": ("numbers", False)},
     "validate": {"runs": ("strings", True), "tolerance": ("number", False), "names": ("string table", False),
                  "units": ("string table", False), "time_origin": ("string or number", False),
                  "scenario": ("string", False), "alpha": ("numbers", False)},

@@ -120,3 +120,84 @@ def test_a_bad_adhesion_table_is_named_when_the_study_is_read(tmp_path, table, f
     message = one_line_naming(lambda: load_study(path), "[adhesion]" if "[simulation]" not in fragment
                               else "[simulation]", StudyError)
     assert fragment in message, message
+
+
+def test_both_front_ends_ask_for_the_critical_angles_against_the_speed():
+    from mdr_events.app.cli import phase_diagram as phase_verb
+
+    cli = phase_verb.job(build_parser().parse_args(["phase-diagram", "--scenario", "B", *RATE, "--speeds", "1e-7",
+                                                    "1e-5", "--out", "o"]))
+    assert cli.speeds == (1e-7, 1e-5) and cli.contact == rate_contact() and cli.stem == "critical_angle_B_at_speeds"
+    default = phase_verb.job(build_parser().parse_args(["phase-diagram", "--scenario", "A", *RATE, "--out", "o"]))
+    assert default.speeds == (me.Parameters.paper().v,)
+    paper = phase_verb.job(build_parser().parse_args(["phase-diagram", "--scenario", "A", "--out", "o"]))
+    assert paper.speeds is None and paper.stem == "phase_diagram_A"
+
+
+def test_a_study_asks_for_the_clis_critical_angles_against_the_speed(tmp_path):
+    from mdr_events.app.cli import phase_diagram as phase_verb
+
+    study = load_study(study_file(tmp_path, '[phase_diagram]\nscenarios = ["A", "B"]\nspeeds = [1e-7, 1e-5]\n'
+                                  + RATE_TABLE))
+    for job in study.phase_diagrams:
+        cli = phase_verb.job(build_parser().parse_args(["phase-diagram", "--scenario", job.scenario, *RATE,
+                                                        "--speeds", "1e-7", "1e-5", "--out", "o"]))
+        assert dataclasses.replace(cli, stem=job.stem) == job and job.stem.endswith(f"critical_angle_{job.scenario}"
+                                                                                    "_at_speeds")
+
+
+@pytest.mark.slow  # (two edge solves of the critical angle, ~4 s of CPU each: the CLI's and the API's)
+def test_the_critical_angle_against_the_speed_is_the_apis_bit_for_bit(capsys, tmp_path):
+    from mdr_events.app.cli import main
+
+    assert main(["phase-diagram", "--scenario", "A", *RATE, "--speeds", "1e-6", "--out", str(tmp_path)]) == 0
+    capsys.readouterr()
+    written = me.open_result(tmp_path / "critical_angle_A_at_speeds.nc")
+    direct = me.critical_angles_at_speeds(rate_contact(), [1e-6])
+    np.testing.assert_array_equal(written["critical_angle"].values, direct["critical_angle"].values)
+    assert me.Contact.from_attrs(written.attrs) == rate_contact()
+
+
+@pytest.mark.parametrize("argv, fragment", [
+    (["phase-diagram", "--scenario", "A", "--speeds", "1e-6"], "--speeds 1e-06: speeds=[1e-06] are not allowed with "
+                                                               "the adhesion law 'paper'; allowed:"),
+    (["phase-diagram", "--scenario", "A", *RATE, "--speeds", "1e-6", "-1"], "--speeds 1e-06 -1: speed=-1.0 is not "
+                                                                           "allowed; allowed: a finite number > 0"),
+    (["phase-diagram", "--scenario", "B", *RATE, "--friction", "coulomb", "--mu", "0.3"],
+     "--adhesion-law rate: contact.friction=FrictionLaw('coulomb', mu=0.3) is not allowed in the critical angles "
+     "against the speed; allowed: FrictionLaw('tau0'"),
+    (["validate", "run.csv", "--scenario", "A", "--alpha", "20", *RATE],
+     "--adhesion-law rate: adhesion=RateDependentAdhesion(dgamma0=0.01, dgamma1=0.15, v_ref=1e-06, n=0.5) is not "
+     "allowed in validate: its reference, the exact continuum of solve_path, is rate independent; allowed:"),
+])
+def test_a_verb_that_does_not_take_the_rate_law_so_is_one_line(capsys, tmp_path, argv, fragment):
+    err = cli_one_line(capsys, [*argv, "--out", str(tmp_path / "new")])
+    assert fragment in err, err
+    assert not (tmp_path / "new").exists()
+
+
+@pytest.mark.parametrize("tables, fragment", [
+    ('[validate]\nruns = ["run.csv"]\nscenario = "A"\nalpha = 20\n', "[validate] adhesion=RateDependentAdhesion("),
+    ('[phase_diagram]\nscenarios = ["A"]\nspeeds = [0]\n', "[phase_diagram] speed=0 is not allowed"),
+])
+def test_a_table_that_does_not_take_the_rate_law_so_is_named_when_read(tmp_path, tables, fragment):
+    path = study_file(tmp_path, tables + RATE_TABLE)
+    table = fragment.split("]")[0] + "]"
+    assert fragment in one_line_naming(lambda: load_study(path), table, StudyError)
+
+
+def test_a_study_sweep_of_the_rate_law_over_its_values_is_the_apis(tmp_path):
+    """``[sweep]`` over ``v_ref`` and the law's exponent ``adhesion.n`` in the continuum: the sweep the API runs."""
+    from mdr_events.app.study import run_sweep
+
+    study = load_study(study_file(tmp_path, '[sweep]\ngrid = { v_ref = [1e-7, 1e-5], "adhesion.n" = [0.5] }\n'
+                                            'scenario = "A"\nalpha = 20\nmethod = "continuum"\nscheduler = "serial"\n'
+                                            'quantities = ["normal_force_min", "tangential_force_max"]\n'
+                                  + RATE_TABLE))
+    run_sweep(study, progress=lambda line: None)
+    written = me.open_result(tmp_path / "out" / "study_sweep.nc")
+    direct = me.sweep({"v_ref": [1e-7, 1e-5], "adhesion.n": [0.5]}, rate_contact(), me.Scenario("A", [20.0]),
+                      method="continuum", scheduler="serial", quantities=("normal_force_min", "tangential_force_max"))
+    assert written.attrs["failed_runs"] == 0
+    for name in ("normal_force_min", "tangential_force_max"):
+        np.testing.assert_array_equal(written[name].values, direct[name].values)
