@@ -138,7 +138,7 @@ class SweepSpec:
         if self.runs_model and method.name in METHOD_CHECKS:
             METHOD_CHECKS[method.name](model)
         check_layer_run(model.contact, model.motion, method, self.quantities, self.history_samples)
-        if not self.runs_model and isinstance(model.adhesion, RateDependentAdhesion):
+        if not self.runs_model and model.adhesion.is_rate_dependent:
             raise ValueError(f"quantities={self.quantities!r} are not allowed with adhesion={model.adhesion!r}: the "
                              "closed forms are rate independent; allowed: the model's quantities (its angles at a speed: "
                              "mdr_events.critical_angles_at_speeds, critical_angles_B_at_speeds)")
@@ -241,7 +241,7 @@ def closed_form_angle(model: ModelJob, scenario: str) -> float:
         (closed forms of the rate-independent law alone) ``nan`` too: its angles at a speed are
         :func:`~mdr_events.critical_angles_at_speeds` and :func:`~mdr_events.critical_angles_B_at_speeds`.
     """
-    if isinstance(model.adhesion, RateDependentAdhesion):  # (the closed forms are rate independent)
+    if model.adhesion.is_rate_dependent:  # (the closed forms are rate independent)
         return math.nan
     if model.contact.layer.is_half_space:
         return indenters.critical_angle(model.params, scenario, model.profile, model.friction)

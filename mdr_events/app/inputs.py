@@ -165,7 +165,7 @@ def check_rate_run(contact: Contact, motion: Scenario | Paths, method: Method, w
     ValueError, TypeError
         What the method refuses, in its own words.
     """
-    if not isinstance(contact.adhesion, RateDependentAdhesion):
+    if not contact.adhesion.is_rate_dependent:
         return
     from mdr_events.models.simulate import check_layer_taken, model_job
 
@@ -182,7 +182,7 @@ def check_reference_law(contact: Contact, where: str) -> None:
     TypeError
         A contact whose adhesion law is rate dependent.
     """
-    if isinstance(contact.adhesion, RateDependentAdhesion):
+    if contact.adhesion.is_rate_dependent:
         raise TypeError(f"adhesion={contact.adhesion!r} is not allowed in {where}: its reference, the exact continuum "
                         "of solve_path, is rate independent; allowed: the paper's law (the rate law's own continuum "
                         "run: simulate --method continuum with it; its joint fit to measured F_N: fit)")
@@ -199,7 +199,7 @@ def angle_speeds(contact: Contact, speeds: Sequence[float] | None, params: Param
     ValueError, TypeError
         Speeds with the paper's law, a speed that is not a finite number > 0, or a contact the angles refuse.
     """
-    if not isinstance(contact.adhesion, RateDependentAdhesion):
+    if not contact.adhesion.is_rate_dependent:
         if speeds is not None:
             raise ValueError(f"speeds={list(speeds)!r} are not allowed with the adhesion law 'paper'; allowed: speeds "
                              "with the law 'rate' (its critical angles against the speed)")

@@ -131,7 +131,6 @@ from mdr_events.app.jobs import FitJob, Job, LammpsCheckJob, PhaseJob, RateFitJo
 from mdr_events.app.study_format import (MAX_TOML_BYTES, REQUIRED_TABLES, SCHEMA, StudyError, check_computation,
                                          check_tables, measured_case, one_table, read_toml)
 from mdr_events.contact import Contact
-from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.io.files import check_output_stem, prepare_output_directory
@@ -448,7 +447,7 @@ def _fit(tables: _Tables) -> FitJob | RateFitJob | None:
         return None
     motion, description = _measured_motion(tables, "fit")
     data = table["data"] if isinstance(table["data"], list) else [table["data"]]
-    if isinstance(tables.contact.adhesion, RateDependentAdhesion):
+    if tables.contact.adhesion.is_rate_dependent:
         return _rate_fit(tables, table, motion, description, data)
     for key in ("speeds", "offsets"):
         if key in table:

@@ -293,9 +293,7 @@ def adhesion(args: argparse.Namespace, params: Parameters):
 
 def is_rate_law(contact: Contact) -> bool:
     """Whether ``contact``'s adhesion law is the rate-dependent one (``--adhesion-law rate``)."""
-    from mdr_events.contact.adhesion import RateDependentAdhesion
-
-    return isinstance(contact.adhesion, RateDependentAdhesion)
+    return contact.adhesion.is_rate_dependent
 
 
 def check_rate_run(contact: Contact, motion, method, verb: str) -> None:
