@@ -474,6 +474,7 @@ def _rate_fit(tables: _Tables, table: dict[str, Any], motion: Motion, descriptio
     """The ``[fit]`` table's joint fit of the rate law (:func:`_fit`), written as ``<name>_rate_fit_<first data's
     stem>.nc``."""
     from mdr_events.analysis.rate_fit import RATE_FREE_NAMES
+    from mdr_events.contact.model import check_half_space
     from mdr_events.models.motion import Paths
 
     path = next(iter(motion.paths.values())) if isinstance(motion, Paths) else \
@@ -485,10 +486,10 @@ def _rate_fit(tables: _Tables, table: dict[str, Any], motion: Motion, descriptio
         if len(speeds) != len(data):
             raise ValueError(f"speeds = {speeds!r} is not allowed with {len(data)} measurement(s); allowed: one speed "
                              "per data file, in their order")
-        for key in ("bounds",):
-            if key in table:
-                raise ValueError(f"{key} is not allowed with the rate law; allowed: free among "
-                                 f"{', '.join(RATE_FREE_NAMES)} (their bounds the fit's own)")
+        if "bounds" in table:
+            raise ValueError(f"bounds = {table['bounds']!r} is not allowed with the rate law; allowed: free among "
+                             f"{', '.join(RATE_FREE_NAMES)} (their bounds the fit's own)")
+        check_half_space(tables.contact, "the joint fit of the rate law (its forward model solve_edge)")
         if set(table.get("noise", {})) - {"normal_force"}:
             raise ValueError(f"noise = {table['noise']!r} is not allowed with the rate law; allowed: {{ normal_force = "
                              "SIGMA }} alone (the joint fit reads F_N)")

@@ -90,7 +90,8 @@ def test_a_study_of_the_joint_fit_builds_the_clis_job_and_writes_its_result(tmp_
     (["--free", "n", "--speeds", "1e-7"], "--speeds 1e-07 is not allowed with 2 measurement(s); allowed: one speed per "
                                           "DATA"),
     (["--free", "n", "--speeds", "1e-7", "-1"], "--speeds: speed=-1.0 is not allowed; allowed: a finite number > 0"),
-    (["--free", "n", "--bounds", "n=0.1:1"], "--bounds is not allowed with --adhesion-law rate"),
+    (["--free", "n", "--bounds", "n=0.1:1"], "--bounds n=0.1:1 is not allowed with --adhesion-law rate"),
+    (["--free", "n", "--h", "5e-3"], "--h 0.005 with --adhesion-law rate: Contact.layer=Layer(thickness=0.005"),
     (["--free", "n", "--noise", "tangential_force=1"], "--noise tangential_force=1 is not allowed with --adhesion-law "
                                                        "rate; allowed: normal_force=SIGMA alone"),
 ])
@@ -120,6 +121,8 @@ def test_the_rate_fits_options_without_the_rate_law_are_refused(capsys, tmp_path
     ('data = "a.csv"\nfree = ["tau0"]\noffsets = true\n', "[fit] offsets is not allowed with the adhesion law 'paper'"),
     ('data = ["a.csv", "b.csv"]\nfree = ["tau0"]\n', "[fit] 2 measurements are not allowed with the adhesion law "
                                                      "'paper'"),
+    ('data = ["a.csv"]\nfree = ["n"]\nbounds = { n = [0.1, 1] }\n', "[fit] bounds = {'n': [0.1, 1]} is not allowed "
+                                                                    "with the rate law"),
 ])
 def test_a_bad_fit_table_of_the_rate_law_is_named_when_the_study_is_read(tmp_path, fit, fragment):
     rate = '[adhesion]\nlaw = "rate"\nv_ref = 3e-6\nn = 0.8\n' if "tau0" not in fit else ""

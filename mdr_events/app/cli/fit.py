@@ -104,14 +104,19 @@ def rate_job(args: argparse.Namespace, contact, params, motion, description: str
     ``--speeds``, written as ``<first data's stem>_rate_fit.nc``."""
     from mdr_events.analysis.rate_fit import RATE_FREE_NAMES
     from mdr_events.app.jobs import RateFitJob
+    from mdr_events.contact.model import check_half_space
     from mdr_events.io.candidates import CANDIDATE_QUANTITIES
+    from mdr_events.io.files import check_output_stem
     from mdr_events.models.motion import Paths
     from mdr_events.models.paths import Path as MotionPath
 
-    for name in ("bounds",):
-        if getattr(args, name) is not None:
-            raise UsageError(f"--{name} is not allowed with --adhesion-law rate; allowed: --free among "
-                             f"{', '.join(RATE_FREE_NAMES)} (v_ref and the works on a log scale, 0.001 <= n <= 1)")
+    if args.bounds is not None:
+        raise UsageError(f"--bounds {' '.join(args.bounds)} is not allowed with --adhesion-law rate; allowed: --free "
+                         f"among {', '.join(RATE_FREE_NAMES)} (v_ref and the works on a log scale, 0.001 <= n <= 1)")
+    try:
+        check_half_space(contact, "the joint fit of the rate law (its forward model solve_edge)")
+    except ValueError as error:
+        raise UsageError(f"--h {contact.layer.thickness:g} with --adhesion-law rate: {error}") from None
     unknown = [name for name in args.free if name not in RATE_FREE_NAMES]
     if unknown or len(set(args.free)) != len(args.free):
         raise UsageError(f"--free {' '.join(args.free)} is not allowed with --adhesion-law rate; allowed: distinct "
@@ -133,8 +138,6 @@ def rate_job(args: argparse.Namespace, contact, params, motion, description: str
         raise UsageError(f"--noise {args.noise} is not allowed with --adhesion-law rate; allowed: normal_force=SIGMA "
                          "alone (the joint fit reads F_N)")
     stem = f"{Path(args.data[0]).stem}_rate_fit"
-    from mdr_events.io.files import check_output_stem
-
     try:
         check_output_stem("stem", stem)
         return RateFitJob(tuple(args.data), tuple(Path(data) for data in args.data), stem, contact, paths,
