@@ -5,7 +5,7 @@ The run is :func:`~mdr_events.models.continuum.rate_shifts.solve_rate_shifts` by
 (:data:`~mdr_events.models.continuum.rate_run.RUN_METHOD` at the method's ``rtol``), its event log and extrema those of
 :func:`~mdr_events.models.continuum.rate_run.rate_events` and :func:`~mdr_events.models.continuum.rate_run.rate_extrema`:
 a sweep's run is the single run's, bit for bit. The quantities read off them as the paper's law's are read off its
-solution (:func:`~mdr_events.analysis.sweep_runs.continuum_quantities`): the extrema, the first slip onset on the way in
+solution (``sweep_runs.continuum_quantities``): the extrema, the first slip onset on the way in
 and out, the first full slip, the contact's end (the law's pull-off: its depth and ``F_N`` there) and the events
 logged, times from the path's start. The tangential work ``∫ F_x dx`` is Gauss–Legendre's rule of
 :data:`~mdr_events.models.continuum.solution.WORK_NODES` nodes on every step of the edge's solver, cut at the path's

@@ -259,8 +259,8 @@ def adhesion_options(parser: argparse.ArgumentParser) -> None:
 
     parser.add_argument("--adhesion-law", choices=list(inputs.ADHESION_LAWS), default=None,
                         help="the works of adhesion of Hess's rule: paper (dgamma0 in, dgamma1 out, rate independent; "
-                             "default) or rate (Maugis-Barquins: dgamma1 [1 + (|da/dt|/v_ref)^n] receding, dgamma0 / "
-                             "[1 + (da/dt/v_ref)^n] advancing; needs --v-ref and --rate-exponent)")
+                             "default) or rate (Maugis-Barquins: dgamma1 [1 + (s/v_ref)^n] receding, dgamma0 / "
+                             "[1 + (s/v_ref)^n] advancing, s the edge's speed; needs --v-ref and --rate-exponent)")
     parser.add_argument("--v-ref", type=float, default=None, metavar="V_REF",
                         help="the rate law's reference speed of the contact's edge in m/s (> 0)")
     parser.add_argument("--rate-exponent", type=float, default=None, metavar="N",
