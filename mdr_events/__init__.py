@@ -74,7 +74,7 @@ _SUBMODULES = ("analysis", "app", "contact", "io", "limits", "models", "paramete
 _declare_registrars(
     schemas=("mdr_events.theory.phase", "mdr_events.theory.layer.curves", "mdr_events.models.simulation_schema", "mdr_events.analysis.crosscheck",
              "mdr_events.analysis.validate", "mdr_events.analysis.convergence_study",
-             "mdr_events.analysis.universal_map", "mdr_events.analysis.fit", "mdr_events.analysis.fit_data",
+             "mdr_events.analysis.universal_map", "mdr_events.analysis.fit", "mdr_events.analysis.fit_data", "mdr_events.analysis.rate_fit", "mdr_events.analysis.rate_angles",
              "mdr_events.analysis.sweep", "mdr_events.analysis.layer_angles", "mdr_events.dem.runner"),
     figures=("mdr_events.plotting.fit", "mdr_events.plotting.universal"))
 

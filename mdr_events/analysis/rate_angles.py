@@ -37,6 +37,7 @@ from scipy import optimize
 from mdr_events.analysis.rate_job import rate_job
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.contact.model import Contact
+from mdr_events.io.datasets import register_schema
 from mdr_events.models.continuum.rate_edge import EDGE_RTOL, solve_edge
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
@@ -49,7 +50,11 @@ from mdr_events.validation import check_distinct, check_real, shown
 
 __all__ = ["critical_angle_at_speed", "critical_angles_at_speeds", "slip_onset_depth_at_speed",
            "phase_diagram_at_speeds", "check_rate_factor", "ANGLE_XTOL", "LEAST_RATE_FACTOR", "ONSET_SAMPLES",
-           "EDGE_SOLVE_STEPS", "CRITICAL_ANGLE_SOLVES"]
+           "EDGE_SOLVE_STEPS", "CRITICAL_ANGLE_SOLVES", "RATE_ANGLES_CONTENT"]
+
+#: The ``content`` attribute of the critical angles against the speed (scenario A's here, B's in
+#: :mod:`~mdr_events.analysis.rate_let_go`; the schema registered below, read by ``open_result``).
+RATE_ANGLES_CONTENT = "critical angle against the path's speed under a rate-dependent adhesion law"
 
 #: Brent's tolerance on the angle (rad): the radius at ``d_max`` is known to about 1e-9 of itself (the edge's ODE at
 #: its ``rtol``), which moves the angle by about as much; 1e-12 rad lies below it.
@@ -295,7 +300,7 @@ def critical_angles_at_speeds(contact: Contact | Parameters, speeds: Sequence[fl
         {"critical_angle": ("speed", angles, {"units": "degree", "long_name": "critical angle of scenario A"}),
          "contact_radius": ("speed", radii, {"units": "m", "long_name": "contact radius at d_max at that angle"})},
         coords={"speed": ("speed", np.array(speeds), {"units": "m s-1", "long_name": "the path's speed"})})
-    dataset.attrs.update(_law_attrs(law), edge_method=method)
+    dataset.attrs.update(_law_attrs(law), edge_method=method, content=RATE_ANGLES_CONTENT)
     if profile is None:
         from mdr_events.theory.analytic import critical_angle  # (the paraboloid's closed forms)
         dataset.attrs.update(critical_angle_adhesive=critical_angle(params, "A", adhesion=True),
@@ -412,7 +417,7 @@ def phase_diagram_at_speeds(params: Parameters, law: RateDependentAdhesion, spee
          "d_max": ((), params.d_max, {"units": "m", "long_name": "the deepest point of scenario A"})},
         coords={"speed": ("speed", np.array(speeds), {"units": "m s-1", "long_name": "the path's speed"}),
                 "alpha": ("alpha", np.array(angles), {"units": "degree", "long_name": "path angle"})})
-    dataset.attrs.update(_law_attrs(law), edge_method=method)
+    dataset.attrs.update(_law_attrs(law), edge_method=method, content=RATE_ANGLES_CONTENT)
     if profile is None:
         from mdr_events.theory.phase import phase_diagram  # (the paraboloid's closed forms)
         closed = phase_diagram(params, np.array(angles), scenario="A")
@@ -420,3 +425,6 @@ def phase_diagram_at_speeds(params: Parameters, law: RateDependentAdhesion, spee
                            ("d_crit_hertz", "slip-onset depth without adhesion (17)")):
             dataset[name] = ("alpha", closed[name].values, {"units": "m", "long_name": text})
     return dataset
+
+
+register_schema(RATE_ANGLES_CONTENT, {"critical_angle": ("speed",)})

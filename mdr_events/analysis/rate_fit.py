@@ -29,6 +29,7 @@ from scipy import optimize, stats
 from mdr_events.analysis.fit_diagnostics import exp_or_inf, scaled_or_inf
 from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS, check_rate_factor
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
+from mdr_events.io.datasets import register_schema
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models.continuum.rate_edge import EdgeUnresolved, solve_edge
 from mdr_events.models.indenters import SimulatedProfile
@@ -36,7 +37,11 @@ from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters, check_parameters
 from mdr_events.validation import SCALE_MAX, check_flag, check_real, real_array, shown
 
-__all__ = ["RateMeasurement", "fit_rate_adhesion", "RATE_FREE_NAMES", "RATE_FIT_RTOL", "RATE_FIT_METHOD"]
+__all__ = ["RateMeasurement", "fit_rate_adhesion", "RATE_FREE_NAMES", "RATE_FIT_RTOL", "RATE_FIT_METHOD",
+           "RATE_FIT_CONTENT"]
+
+#: The ``content`` attribute of a joint fit of the rate law (its schema registered below, read by ``open_result``).
+RATE_FIT_CONTENT = "joint fit of the rate-dependent adhesion law to normal-force curves at several speeds"
 
 #: The law's values that may be free, with their units; those on a log scale.
 RATE_FREE_NAMES = {"v_ref": "m s-1", "n": "1", "dgamma0": "J m-2", "dgamma1": "J m-2"}
@@ -356,8 +361,16 @@ def _result(solution, names, free, values_of, measurements, forces, weights, sol
                   "residual_rms": "RMS of the curve's weighted residuals (1: as noisy as its noise)"}
     for name, text in long_names.items():
         dataset[name].attrs.update(long_name=text, units="1" if name in ("correlation", "residual_rms") else "varies")
-    dataset["parameter"].attrs["units_of_each"] = ", ".join(f"{n}: {u}" for n, u in zip(names, units))
+    dataset["parameter"].attrs.update(units="1", long_name="the fitted value's name",
+                                      units_of_each=", ".join(f"{n}: {u}" for n, u in zip(names, units)))
+    dataset["parameter_2"].attrs.update(units="1", long_name="the fitted value's name (the correlation's columns)")
+    dataset["measurement"].attrs.update(units="1", long_name="the measurement's index, in the order given")
     dataset.attrs.update(s2=s2, noise_known=int(known), solves=solves[0], rejected_trials=solves[1],
                          status=int(solution.status),
-                         message=str(solution.message), confidence=CONFIDENCE)
+                         message=str(solution.message), confidence=CONFIDENCE, content=RATE_FIT_CONTENT)
     return dataset
+
+
+register_schema(RATE_FIT_CONTENT, {"estimate": ("parameter",), "standard_error": ("parameter",),
+                                   "interval_lower": ("parameter",), "interval_upper": ("parameter",),
+                                   "correlation": ("parameter", "parameter_2"), "residual_rms": ("measurement",)})

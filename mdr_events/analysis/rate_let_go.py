@@ -37,7 +37,8 @@ from mdr_events.models.paths import Path, exit_depth
 from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law
 
-from .rate_angles import _BRACKET, ANGLE_XTOL, CRITICAL_ANGLE_SOLVES, _check_solves, _checked, _job, _law_attrs
+from .rate_angles import (_BRACKET, ANGLE_XTOL, CRITICAL_ANGLE_SOLVES, RATE_ANGLES_CONTENT, _check_solves, _checked, _job,
+                          _law_attrs)
 
 __all__ = ["let_go_B_at_speed", "critical_angle_B_at_speed", "critical_angles_B_at_speeds"]
 
@@ -229,7 +230,7 @@ def critical_angles_B_at_speeds(contact: Contact | Parameters, speeds: Sequence[
         {"critical_angle": ("speed", angles, {"units": "degree", "long_name": "critical angle of scenario B"}),
          "let_go_radius": ("speed", radii, {"units": "m", "long_name": "contact radius where the edge lets go"})},
         coords={"speed": ("speed", np.array(speeds), {"units": "m s-1", "long_name": "the path's speed"})})
-    dataset.attrs.update(_law_attrs(law), scenario="B", edge_method=method)
+    dataset.attrs.update(_law_attrs(law), scenario="B", edge_method=method, content=RATE_ANGLES_CONTENT)
     if profile is None:
         from mdr_events.theory.analytic import critical_angle  # (the paraboloid's closed forms)
         dataset.attrs.update(critical_angle_paper=critical_angle(params, "B", adhesion=True))

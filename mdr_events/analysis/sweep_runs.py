@@ -26,8 +26,10 @@ from typing import Callable, NamedTuple, Sequence
 import numpy as np
 
 from mdr_events.analysis.fit import curves_of
+from mdr_events.analysis.rate_sweep import rate_continuum_quantities
 from mdr_events.analysis.samples import candidate_events, sliding as sliding_samples
 from mdr_events.contact import Contact
+from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models import indenters
 from mdr_events.models.continuum import EventKind, extremum, solve_path, tangential_work
@@ -43,7 +45,7 @@ from mdr_events.theory.scales import check_representable
 
 __all__ = ["SweepSpec", "run_chunk", "ChunkResult", "QUANTITIES", "HISTORY_QUANTITIES", "CLOSED_FORM_QUANTITIES",
            "MOTION_NAMES", "METHOD_NAMES", "METHOD_QUANTITIES", "DISCRETE_STEP_PER_SPACING", "ERROR_CHARACTERS",
-           "runs_model", "check_layer_run", "closed_form_angle"]
+           "runs_model", "check_layer_run", "closed_form_angle", "CONTINUUM_QUANTITIES"]
 
 #: Scalar quantities of each run: name -> (unit, long name).
 QUANTITIES: dict[str, tuple[str, str]] = {
@@ -136,6 +138,10 @@ class SweepSpec:
         if self.runs_model and method.name in METHOD_CHECKS:
             METHOD_CHECKS[method.name](model)
         check_layer_run(model.contact, model.motion, method, self.quantities, self.history_samples)
+        if not self.runs_model and model.adhesion.is_rate_dependent:
+            raise ValueError(f"quantities={self.quantities!r} are not allowed with adhesion={model.adhesion!r}: the "
+                             "closed forms are rate independent; allowed: the model's quantities (its angles at a speed: "
+                             "mdr_events.critical_angles_at_speeds, critical_angles_B_at_speeds)")
         if not self.runs_model and not model.contact.layer.is_half_space:
             from mdr_events.theory.layer.slip_onset import check_onset_contact  # (the layer's theory, when asked)
 
@@ -231,8 +237,12 @@ def closed_form_angle(model: ModelJob, scenario: str) -> float:
         On a layer, what the layer's closed forms refuse (a radius beyond the tables). Where they have none (a
         frictionless base, another law: :func:`~mdr_events.theory.layer.slip_onset.has_closed_forms`) the angle is
         ``nan``, as the half-space's where a friction law has none (a sweep of the model's quantities on such a layer
-        had failed every run); a sweep of the angles alone is refused before it runs.
+        had failed every run); a sweep of the angles alone is refused before it runs. Under the rate-dependent law
+        (closed forms of the rate-independent law alone) ``nan`` too: its angles at a speed are
+        :func:`~mdr_events.critical_angles_at_speeds` and :func:`~mdr_events.critical_angles_B_at_speeds`.
     """
+    if model.adhesion.is_rate_dependent:  # (the closed forms are rate independent)
+        return math.nan
     if model.contact.layer.is_half_space:
         return indenters.critical_angle(model.params, scenario, model.profile, model.friction)
     from mdr_events.theory.layer.slip_onset import has_closed_forms  # (the layer's theory, when asked)
@@ -272,9 +282,19 @@ def _first_events(solution, path: Path) -> dict[str, object]:
     return first
 
 
+#: The continuum's quantities of the adhesion laws that ``simulate``'s continuum runs by a run of their own (not on the
+#: spans of ``solve_path``), by the law's type: the rate-dependent law's (:mod:`~mdr_events.analysis.rate_sweep`).
+CONTINUUM_QUANTITIES: dict[type, Callable[..., tuple[dict[str, float], np.ndarray | None]]] = {
+    RateDependentAdhesion: rate_continuum_quantities}
+
+
 def continuum_quantities(model: ModelJob, path: Path, method: Continuum, limits: Limits,
                          times: np.ndarray | None) -> tuple[dict[str, float], np.ndarray | None]:
-    """A run's quantities from the exact solution (its extrema and event log), and its history at ``times``."""
+    """A run's quantities from the exact solution (its extrema and event log), and its history at ``times``; a law
+    of :data:`CONTINUUM_QUANTITIES` by its own run."""
+    own = CONTINUUM_QUANTITIES.get(type(model.adhesion))
+    if own is not None:
+        return own(model, path, method, limits, times)
     solution = solve_path(model.params, path, method.tolerances, limits, model.profile, model.friction,
                           layer=model.contact.layer)
     scan = scan_spans(solution)  # one scan serves every extremum
@@ -348,9 +368,10 @@ def discrete_quantities(model: ModelJob, path: Path, method: Discrete, limits: L
 
 #: A run's quantities and history by the method's name.
 #: What a method's quantities take beyond what the method does, by its name: the continuum's read the spans of
-#: ``solve_path`` (the branches of an edge rule), so a law without one is refused before the sweep runs (the
-#: rate-dependent law, which ``simulate``'s continuum runs by its own run: the discrete method sweeps it).
-METHOD_CHECKS: dict[str, Callable[[ModelJob], None]] = {"continuum": lambda model: check_edge_known(model.adhesion)}
+#: ``solve_path`` (the branches of an edge rule) or a law's own run (:data:`CONTINUUM_QUANTITIES`, the rate-dependent
+#: law's), so a law with neither is refused before the sweep runs.
+METHOD_CHECKS: dict[str, Callable[[ModelJob], None]] = {
+    "continuum": lambda model: None if type(model.adhesion) in CONTINUUM_QUANTITIES else check_edge_known(model.adhesion)}
 
 METHOD_QUANTITIES: dict[str, Callable[..., tuple[dict[str, float], np.ndarray | None]]] = {
     Continuum.name: continuum_quantities, Discrete.name: discrete_quantities}

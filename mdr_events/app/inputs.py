@@ -11,6 +11,7 @@ input          parser                                      value
 parameters     :func:`parameters`                          :class:`~mdr_events.Parameters` and provenance
 indenter       :func:`indenter`                            ``None`` (the paraboloid of ``R``) or an indenter
 friction       :func:`friction`                            :class:`~mdr_events.FrictionLaw`
+adhesion       :func:`adhesion`                            :class:`~mdr_events.Adhesion` or :class:`~mdr_events.RateDependentAdhesion`
 layer          :func:`layer`                               :class:`~mdr_events.Layer`
 limits         :func:`limits`                              :class:`~mdr_events.Limits`
 a path         :func:`path`                                :class:`~mdr_events.Path`
@@ -25,8 +26,9 @@ from __future__ import annotations
 import dataclasses
 from typing import TYPE_CHECKING, Any, Iterable, Mapping, Sequence
 
-from mdr_events.validation import as_float
+from mdr_events.validation import as_float, shown
 from mdr_events.contact import Contact
+from mdr_events.contact.adhesion import Adhesion, AdhesionLaw, RateDependentAdhesion
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import FlatPunch, PowerLaw
@@ -39,7 +41,7 @@ if TYPE_CHECKING:  # (the models and the table reader are imported where used: a
     from mdr_events.models.motion import Paths, Scenario
     from mdr_events.models.paths import Path
 
-__all__ = ["parameters", "indenter", "friction", "layer", "limits", "path", "contact", "scenario", "paths", "method",
+__all__ = ["parameters", "indenter", "friction", "adhesion", "ADHESION_LAWS", "check_rate_run", "check_reference_law", "angle_speeds", "layer", "limits", "path", "contact", "scenario", "paths", "method",
            "DEFAULT_PRESET"]
 
 #: The preset of the paper both front ends start from when none is named.
@@ -119,6 +121,98 @@ def friction(law: str | None = None, mu: float | None = None) -> FrictionLaw:
     return FrictionLaw(law or "tau0", mu=mu)
 
 
+#: The adhesion laws both front ends name (``--adhesion-law``, ``[adhesion] law``): the paper's rate-independent
+#: :class:`~mdr_events.Adhesion` (the default) and the rate-dependent :class:`~mdr_events.RateDependentAdhesion`, each
+#: with the values it takes beyond the works at rest of the parameters.
+ADHESION_LAWS: dict[str, tuple[str, ...]] = {"paper": (), "rate": ("v_ref", "n")}
+
+
+def adhesion(law: str | None, params: Parameters, v_ref: float | None = None, n: float | None = None) -> AdhesionLaw:
+    """The adhesion law ``law`` (default ``"paper"``: Heß's rule (8) with the parameters' ``Δγ0``, ``Δγ1``; ``"rate"``:
+    :class:`~mdr_events.RateDependentAdhesion` of those works at rest with ``v_ref`` (m/s) and the exponent ``n``).
+
+    Raises
+    ------
+    ValueError, TypeError
+        An unknown law, ``v_ref`` or ``n`` missing from the rate law or given to the paper's, or the law's own message
+        (``v_ref <= 0``, ``n`` outside ``(0, 1]``, a value that is not finite, works at rest it refuses).
+    """
+    name = "paper" if law is None else law
+    if name not in ADHESION_LAWS:
+        raise ValueError(f"law={shown(law)} is not allowed; allowed: " + " or ".join(map(repr, ADHESION_LAWS))
+                         + " (the paper's rate-independent law, or the rate-dependent one with v_ref and n)")
+    given = {"v_ref": v_ref, "n": n}
+    extra = [key for key, value in given.items() if value is not None and key not in ADHESION_LAWS[name]]
+    if extra:
+        raise ValueError(f"{extra[0]}={shown(given[extra[0]])} is not allowed with the adhesion law {name!r}; allowed: "
+                         "v_ref and n with the law 'rate' alone")
+    missing = [key for key in ADHESION_LAWS[name] if given[key] is None]
+    if missing:
+        raise ValueError(f"the adhesion law {name!r} lacks {' and '.join(missing)}; allowed: the law 'rate' with both "
+                         "v_ref (m/s, > 0) and n (0 < n <= 1)")
+    if name == "paper":
+        return Adhesion(params.dgamma0, params.dgamma1)
+    return RateDependentAdhesion(params.dgamma0, params.dgamma1, as_float(v_ref), as_float(n))
+
+
+def check_rate_run(contact: Contact, motion: Scenario | Paths, method: Method, where: str) -> None:
+    """Refuse the rate-dependent law where ``method`` does not run it with the contact's other parts (a friction law,
+    an indenter, a layer) along ``motion``: ``simulate``'s own checks (``Method.check_model``,
+    :func:`~mdr_events.models.simulate.check_layer_taken`), made before anything runs; the paper's law passes.
+
+    Raises
+    ------
+    ValueError, TypeError
+        What the method refuses, in its own words.
+    """
+    if not contact.adhesion.is_rate_dependent:
+        return
+    from mdr_events.models.simulate import check_layer_taken, model_job
+
+    method.check_model(model_job(contact, motion, None, {}))
+    check_layer_taken(contact, motion, method, where=where)
+
+
+def check_reference_law(contact: Contact, where: str) -> None:
+    """Refuse the rate-dependent law where the reference is the rate-independent continuum of ``solve_path``
+    (``validate``, ``lammps-check``): the one-line ``TypeError`` naming the law and what runs it.
+
+    Raises
+    ------
+    TypeError
+        A contact whose adhesion law is rate dependent.
+    """
+    if contact.adhesion.is_rate_dependent:
+        raise TypeError(f"adhesion={contact.adhesion!r} is not allowed in {where}: its reference, the exact continuum "
+                        "of solve_path, is rate independent; allowed: the paper's law (the rate law's own continuum "
+                        "run: simulate --method continuum with it; its joint fit to measured F_N: fit)")
+
+
+def angle_speeds(contact: Contact, speeds: Sequence[float] | None, params: Parameters) -> tuple[float, ...] | None:
+    """The speeds (m/s) of a phase diagram's critical angles under the rate-dependent law (default the parameters'
+    ``v`` alone), checked with what the angles take of the contact
+    (:func:`~mdr_events.analysis.rate_job.rate_job`: the friction law ``"tau0"``, the half-space); ``None`` for the
+    paper's law (its closed forms, Fig. 9).
+
+    Raises
+    ------
+    ValueError, TypeError
+        Speeds with the paper's law, a speed that is not a finite number > 0, or a contact the angles refuse.
+    """
+    if not contact.adhesion.is_rate_dependent:
+        if speeds is not None:
+            raise ValueError(f"speeds={list(speeds)!r} are not allowed with the adhesion law 'paper'; allowed: speeds "
+                             "with the law 'rate' (its critical angles against the speed)")
+        return None
+    from mdr_events.analysis.rate_job import rate_job
+    from mdr_events.validation import check_real
+
+    found = tuple(check_real("speed", speed, "a finite number > 0 (m/s)", lambda value: value > 0.0)
+                  for speed in ([params.v] if speeds is None else speeds))
+    rate_job(contact, found, (), d_max=params.d_max, what="the critical angles against the speed")
+    return found
+
+
 def layer(h: float | None = None, base: str | None = None) -> Layer:
     """The elastomer's layer of thickness ``h`` (m; default ``inf``: the half-space) on ``base`` (``"bonded"``, the
     default, or ``"frictionless"``).
@@ -165,10 +259,12 @@ def path(waypoints: Sequence[Sequence[float]], speed: float | None, params: Para
 
 
 def contact(params: Parameters, profile: SimulatedProfile = None, law: FrictionLaw | None = None,
-            body: Layer = HALF_SPACE) -> Contact:
+            body: Layer = HALF_SPACE, adhesion_law: AdhesionLaw | None = None) -> Contact:
     """The :class:`~mdr_events.Contact` of ``params`` with ``profile`` (``None``: its paraboloid), the friction
-    law ``law`` (default the paper's, ``τ0`` from ``params``) and the layer ``body`` (default the half-space)."""
-    return dataclasses.replace(Contact.from_parameters(params, profile, law), layer=body)
+    law ``law`` (default the paper's, ``τ0`` from ``params``), the layer ``body`` (default the half-space) and the
+    adhesion law ``adhesion_law`` (default the paper's of ``params``' works: :func:`adhesion`)."""
+    made = dataclasses.replace(Contact.from_parameters(params, profile, law), layer=body)
+    return made if adhesion_law is None else dataclasses.replace(made, adhesion=adhesion_law)
 
 
 def scenario(name: str, alpha: float | Sequence[float] | None, params: Parameters) -> Scenario:

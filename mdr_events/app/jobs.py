@@ -14,6 +14,7 @@ verb               job                              library
 ``simulate``       :class:`SimulateJob`             :func:`~mdr_events.simulate`
 ``validate``       :class:`ValidateJob`             :func:`~mdr_events.validate`, ``convergence_study``
 ``fit``            :class:`FitJob`                  :func:`~mdr_events.fit`
+``fit`` (rate)     :class:`RateFitJob`              :func:`~mdr_events.fit_rate_adhesion`
 ``sweep``          :class:`SweepJob`                :func:`~mdr_events.sweep`
 ``reproduce``      :class:`ReproduceJob`            :func:`mdr_events.reproduction.reproduce`
 ``lammps-check``   :class:`LammpsCheckJob`          :func:`mdr_events.dem.lammps_check`
@@ -49,7 +50,7 @@ if TYPE_CHECKING:
     from mdr_events.models.motion import Motion
     from mdr_events.app.validation_files import RenderedReport
 
-__all__ = ["DeriveJob", "PhaseJob", "SimulateJob", "ValidateJob", "Convergence", "FitJob", "SweepJob", "ReproduceJob",
+__all__ = ["DeriveJob", "PhaseJob", "SimulateJob", "ValidateJob", "Convergence", "FitJob", "RateFitJob", "SweepJob", "ReproduceJob",
            "LammpsCheckJob", "Job", "CONVERGENCE_MODULE", "CONVERGENCE_STEM", "DECK_SUFFIX"]
 
 Progress = Callable[[str], None]
@@ -86,7 +87,8 @@ class DeriveJob:
 
 @dataclass(frozen=True)
 class PhaseJob:
-    """The phase diagram of a scenario (Fig. 9a/9b) for a contact; written as ``<stem>.nc`` and ``<stem>.png``.
+    """The phase diagram of a scenario (Fig. 9a/9b) for a contact; written as ``<stem>.nc`` and ``<stem>.png``. Under
+    the rate-dependent adhesion law (``speeds`` given) the scenario's critical angle against the speed, ``<stem>.nc``.
 
     Attributes
     ----------
@@ -100,6 +102,8 @@ class PhaseJob:
         Attributes every written result carries (which parameters came from a preset).
     stem : str
         The files' stem.
+    speeds : tuple of float, optional
+        Under the rate-dependent law, the speeds (m/s) of its critical angles; ``None`` for the paper's law.
     """
 
     contact: Contact
@@ -108,15 +112,32 @@ class PhaseJob:
     v: float
     provenance: Mapping[str, str] = field(default_factory=dict)
     stem: str = "phase_diagram"
+    speeds: tuple[float, ...] | None = None
+
+    def compute_at_speeds(self) -> xr.Dataset:
+        """Under a rate-dependent law: the scenario's critical angle at each of :attr:`speeds`
+        (:func:`~mdr_events.critical_angles_at_speeds`, :func:`~mdr_events.critical_angles_B_at_speeds`), stamped
+        with the contact (``Contact.from_attrs`` reads the law back)."""
+        from mdr_events.analysis.rate_angles import critical_angles_at_speeds
+        from mdr_events.analysis.rate_let_go import critical_angles_B_at_speeds
+        from mdr_events.io.datasets import stamp
+
+        angles = {"A": critical_angles_at_speeds, "B": critical_angles_B_at_speeds}[self.scenario]
+        result = angles(self.contact, list(self.speeds), d_max=self.d_max)
+        return stamp(result, self.contact.parameters(self.d_max, self.v), **self.contact.to_attrs(), **self.provenance)
 
     def run(self, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
         """Compute the diagram and write its files into ``out``: of the contact's layer where it has one (its slip
         onset is the layer's, and the paper's speed is stamped, as :func:`~mdr_events.phase_diagram` of a contact
         does); the half-space's of the flat record with the study's ``v`` (a study's ``[layer]`` had been dropped
         here, and the half-space's diagram written)."""
-        from mdr_events.app.result_files import write_phase_diagram
+        from mdr_events.app.result_files import FileOutcome, FileStatus, write_phase_diagram
+        from mdr_events.io.files import write_netcdf
         from mdr_events.theory.job import on_layer
 
+        if self.speeds is not None:  # (the rate law: its angles against the speed, as a labelled result)
+            return [FileOutcome(write_netcdf(self.compute_at_speeds(), FilePath(out) / f"{self.stem}.nc"),
+                                FileStatus.WRITTEN)]
         if on_layer(self.contact):
             return write_phase_diagram(self.contact, self.scenario, out, self.stem, attrs=dict(self.provenance),
                                        d_max=self.d_max)
@@ -330,6 +351,109 @@ class FitJob:
 
 
 @dataclass(frozen=True)
+class RateFitJob:
+    """The joint fit of the rate-dependent adhesion law to normal-force curves measured at several speeds
+    (:func:`~mdr_events.fit_rate_adhesion`): one result, written as ``<stem>.nc``.
+
+    Attributes
+    ----------
+    data : tuple of str
+        The measurements as given (their names in messages and in the result).
+    files : tuple of pathlib.Path
+        Their files.
+    stem : str
+        The stem of the fit's file.
+    contact : Contact
+        The fit's start: its adhesion a :class:`~mdr_events.RateDependentAdhesion`, on the half-space.
+    paths : tuple of Path
+        The path of each measurement (its speed the measurement's).
+    description : str
+        The path, for the result.
+    free : tuple of str
+        The law's values to fit (:data:`~mdr_events.analysis.rate_fit.RATE_FREE_NAMES`).
+    offsets : bool
+        A free force offset per measurement.
+    noise : float or None
+        The normal force's noise (N, every measurement's), ``None``: estimated from the residuals.
+    names, units, time_origin
+        How to read the measurements (:func:`~mdr_events.validate`'s).
+    d_max : float
+        The depth the contact's flat record takes (m).
+    """
+
+    data: tuple[str, ...]
+    files: tuple[FilePath, ...]
+    stem: str
+    contact: Contact
+    paths: tuple[Any, ...]
+    description: str
+    free: tuple[str, ...] = ("v_ref", "n")
+    offsets: bool = False
+    noise: float | None = None
+    names: Mapping[str, str] = field(default_factory=dict)
+    units: Mapping[str, str] = field(default_factory=dict)
+    time_origin: str | float = "first_contact"
+    d_max: float = 3e-4
+    limits: Limits = DEFAULT_LIMITS
+    provenance: Mapping[str, str] = field(default_factory=dict)
+
+    def measurements(self) -> list:
+        """Each measurement's normal force read (names, units) on its path's clock (the time origin), the samples
+        without a force left out (``nan``: a missing sample)."""
+        import numpy as np
+
+        from mdr_events.analysis.rate_fit import RateMeasurement
+        from mdr_events.analysis.validate import times_from_contact
+        from mdr_events.io.candidates import read_candidate
+
+        found = []
+        for data, file, path in zip(self.data, self.files, self.paths):
+            read = read_candidate(file, dict(self.names), dict(self.units), self.limits)
+            if "normal_force" not in read.quantities:
+                raise ValueError(f"{data}: no normal_force column; allowed: a measurement of the normal force (the "
+                                 "rate law's joint fit reads F_N alone; --names normal_force=COLUMN names yours)")
+            force = read.quantities["normal_force"]
+            kept = np.isfinite(force)
+            clock = times_from_contact(read, path, self.time_origin) + path.first_contact_time()
+            found.append(RateMeasurement(path, clock[kept], force[kept], self.noise))
+        return found
+
+    def compute(self, progress: Progress | None = None) -> xr.Dataset:
+        """Read the measurements and fit; nothing is written."""
+        from mdr_events.analysis.rate_fit import fit_rate_adhesion
+
+        measurements = self.measurements()
+        params = self.contact.parameters(self.d_max, self.paths[0].speed)
+        result = fit_rate_adhesion(measurements, params, self.contact.adhesion, list(self.free), self.offsets,
+                                   self.contact.profile, limits=self.limits)
+        from mdr_events.io.datasets import stamp
+
+        # the start's contact stamped (Contact.from_attrs reads it back), the fitted values in the variables
+        return stamp(result, params, **self.contact.to_attrs(), **self.provenance, path_description=self.description,
+                     measurements=", ".join(self.data), speeds=", ".join(f"{path.speed!r}" for path in self.paths),
+                     speeds_units="m s-1")
+
+    @staticmethod
+    def determined(result: xr.Dataset) -> bool:
+        """Whether every value of the fit ``result`` is determined: a finite standard error and interval."""
+        import numpy as np
+
+        return bool(all(np.all(np.isfinite(result[name].values))
+                        for name in ("standard_error", "interval_lower", "interval_upper")))
+
+    def write(self, result: xr.Dataset, out: FilePath) -> list[FileOutcome]:
+        """Write ``<stem>.nc`` into ``out``."""
+        from mdr_events.app.result_files import FileOutcome, FileStatus
+        from mdr_events.io.files import write_netcdf
+
+        return [FileOutcome(write_netcdf(result, FilePath(out) / f"{self.stem}.nc"), FileStatus.WRITTEN)]
+
+    def run(self, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
+        """Fit and write."""
+        return self.write(self.compute(), out)
+
+
+@dataclass(frozen=True)
 class SweepJob:
     """A parameter sweep (:func:`~mdr_events.sweep`), written chunk by chunk to its store and as ``<stem>.nc``.
 
@@ -479,4 +603,4 @@ class LammpsCheckJob:
 
 
 #: A job.
-Job = DeriveJob | PhaseJob | SimulateJob | ValidateJob | FitJob | SweepJob | ReproduceJob | LammpsCheckJob
+Job = DeriveJob | PhaseJob | SimulateJob | ValidateJob | FitJob | RateFitJob | SweepJob | ReproduceJob | LammpsCheckJob

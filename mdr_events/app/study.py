@@ -19,7 +19,8 @@ A study names its parameters, what to compute and where to write it::
     speed = 1e-6
 
     [phase_diagram]              # optional: Fig. 9a / 9b
-    scenarios = ["A", "B"]
+    scenarios = ["A", "B"]       # under [adhesion] law = "rate": each scenario's critical angle
+    speeds = [1e-7, 1e-6]        # against these speeds (m/s; default [parameters] v), as --speeds
 
     [validate]                   # optional: your simulator's runs against the exact continuum
     runs = ["run_dx2um.csv"]     # CSV or netCDF files, relative to the study file
@@ -73,6 +74,11 @@ A study names its parameters, what to compute and where to write it::
                                  # continuum, and so [validate] and [fit], with the friction law "tau0" alone)
     base = "bonded"              # or "frictionless" (paths without tangential motion), as --layer-base
 
+    [adhesion]                   # optional: the adhesion law of every table (without it: "paper",
+    law = "rate"                 # Hess's rule with dgamma0/dgamma1 of [parameters]); "rate": the works
+    v_ref = 1e-6                 # at rest of [parameters] made rate dependent, v_ref (m/s, > 0) and n
+    n = 0.5                      # (0 < n <= 1), as --adhesion-law rate --v-ref V --rate-exponent N
+
     [output]                     # required
     directory = "out"            # relative to the study file; checked before anything is computed
     name = "my_study"            # file stem (default: the study file's stem); a plain name: no / or \\
@@ -121,7 +127,7 @@ from typing import TYPE_CHECKING, Any, Callable, Iterable, NamedTuple
 from mdr_events.analysis.fit import FitResult
 from mdr_events.analysis.reports import ValidationReport, Verdict
 from mdr_events.app import inputs
-from mdr_events.app.jobs import FitJob, Job, LammpsCheckJob, PhaseJob, SimulateJob, SweepJob, ValidateJob
+from mdr_events.app.jobs import FitJob, Job, LammpsCheckJob, PhaseJob, RateFitJob, SimulateJob, SweepJob, ValidateJob
 from mdr_events.app.study_format import (MAX_TOML_BYTES, REQUIRED_TABLES, SCHEMA, StudyError, check_computation,
                                          check_tables, measured_case, one_table, read_toml)
 from mdr_events.contact import Contact
@@ -187,7 +193,7 @@ class Study:
     simulation: SimulateJob | None = None
     phase_diagrams: tuple[PhaseJob, ...] = ()
     validation: ValidateJob | None = None
-    fit: FitJob | None = None
+    fit: FitJob | RateFitJob | None = None
     sweep: SweepJob | None = None
     lammps: LammpsCheckJob | None = None
 
@@ -275,12 +281,22 @@ def _layer(document: dict[str, Any], where: str) -> Layer:
         raise StudyError(f"{where}: [layer] {error}") from None
 
 
+def _adhesion(document: dict[str, Any], params: Parameters, where: str):
+    """The ``[adhesion]`` table's law (``law``, and ``v_ref``, ``n`` for ``"rate"``) with the works at rest of
+    ``[parameters]``; the paper's law without it."""
+    table = document.get("adhesion", {})
+    try:
+        return inputs.adhesion(table.get("law"), params, table.get("v_ref"), table.get("n"))
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{where}: [adhesion] {error}") from None
+
+
 def _tables(document: dict[str, Any], source: FilePath) -> _Tables:
     """The values every table shares, each named where it is wrong."""
     where = os.fspath(source)
     params, provenance = _parameters(document.get("parameters"), where)
     limits, profile, friction = _limits(document, where), _profile(document, source, where), _friction(document, where)
-    layer = _layer(document, where)
+    layer, adhesion = _layer(document, where), _adhesion(document, params, where)
     path = None
     if "path" in document:
         try:
@@ -288,7 +304,7 @@ def _tables(document: dict[str, Any], source: FilePath) -> _Tables:
         except (ValueError, TypeError) as error:
             raise StudyError(f"{where}: [path] {error}") from None
     return _Tables(source, where, document, document["output"].get("name", source.stem), params, provenance, limits,
-                   profile, friction, inputs.contact(params, profile, friction, layer), path)
+                   profile, friction, inputs.contact(params, profile, friction, layer, adhesion), path)
 
 
 def _simulation(tables: _Tables) -> SimulateJob | None:
@@ -308,6 +324,7 @@ def _simulation(tables: _Tables) -> SimulateJob | None:
             inputs.scenario(name, alpha, tables.params)
         the_method = inputs.method(method, settings)
         check_layer_taken(tables.contact, motion, the_method)
+        inputs.check_rate_run(tables.contact, motion, the_method, "simulate")
         return SimulateJob(tables.contact, motion, the_method, tables.limits, tables.provenance,
                            f"{tables.name}_simulation")
     except (ValueError, TypeError) as error:
@@ -330,8 +347,16 @@ def _phase_diagrams(tables: _Tables) -> tuple[PhaseJob, ...]:
             check_onset_contact(tables.contact, "phase_diagram", tables.params.d_max)
         except (ValueError, TypeError) as error:
             raise StudyError(f"{tables.where}: [phase_diagram] {error}") from None
+    speeds = tables.document.get("phase_diagram", {}).get("speeds")
+    try:
+        speeds = inputs.angle_speeds(tables.contact, None if speeds is None else speeds if isinstance(speeds, list)
+                                     else [speeds], tables.params) if scenarios else None
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{tables.where}: [phase_diagram] {error}") from None
+    kind = "phase_diagram" if speeds is None else "critical_angle"
     return tuple(PhaseJob(tables.contact, scenario, tables.params.d_max, tables.params.v, tables.provenance,
-                          f"{tables.name}_phase_diagram_{scenario}") for scenario in scenarios)
+                          f"{tables.name}_{kind}_{scenario}" + ("" if speeds is None else "_at_speeds"), speeds)
+                 for scenario in scenarios)
 
 
 def _measured_motion(tables: _Tables, table: str) -> tuple[Motion, str]:
@@ -352,6 +377,7 @@ def _validation(tables: _Tables) -> ValidateJob | None:
     table = tables.document.get("validate")
     if table is None:
         return None
+    _reference_law(tables, "validate")
     motion, description = _measured_motion(tables, "validate")
     _reference_layer(tables, motion, "validate")
     stems: dict[str, str] = {}
@@ -371,6 +397,15 @@ def _validation(tables: _Tables) -> ValidateJob | None:
                        tables.provenance)
 
 
+def _reference_law(tables: _Tables, table: str) -> None:
+    """The study's rate-dependent ``[adhesion]`` where ``[table]``'s reference is the rate-independent continuum,
+    named when the study is read (:func:`~mdr_events.app.inputs.check_reference_law`)."""
+    try:
+        inputs.check_reference_law(tables.contact, table)
+    except TypeError as error:
+        raise StudyError(f"{tables.where}: [{table}] {error}") from None
+
+
 def _reference_layer(tables: _Tables, motion: Motion, table: str) -> None:
     """The study's ``[layer]`` where the continuum reference of ``[validate]`` or ``[fit]`` does not take it, named
     when the study is read (:func:`~mdr_events.models.simulate.check_layer_taken`)."""
@@ -386,6 +421,7 @@ def _lammps_check(tables: _Tables) -> LammpsCheckJob | None:
     table = tables.document.get("lammps_check")
     if table is None:
         return None
+    _reference_law(tables, "lammps_check")
     motion, description = _measured_motion(tables, "lammps_check")
     tangential = table.get("tangential", "none")
     try:
@@ -402,23 +438,74 @@ def _lammps_check(tables: _Tables) -> LammpsCheckJob | None:
                           table.get("dt"), tolerance, tables.limits, tables.provenance, f"{tables.name}_lammps_check")
 
 
-def _fit(tables: _Tables) -> FitJob | None:
-    """The ``[fit]`` table's job."""
+def _fit(tables: _Tables) -> FitJob | RateFitJob | None:
+    """The ``[fit]`` table's job: :func:`~mdr_events.fit` of one measurement, or under the rate law (``[adhesion]
+    law = "rate"``) :func:`~mdr_events.fit_rate_adhesion` of every measurement of ``data``, each at its speed of
+    ``speeds``."""
     table = tables.document.get("fit")
     if table is None:
         return None
     motion, description = _measured_motion(tables, "fit")
+    data = table["data"] if isinstance(table["data"], list) else [table["data"]]
+    if tables.contact.adhesion.is_rate_dependent:
+        return _rate_fit(tables, table, motion, description, data)
+    for key in ("speeds", "offsets"):
+        if key in table:
+            raise StudyError(f"{tables.where}: [fit] {key} is not allowed with the adhesion law 'paper'; allowed: with "
+                             "[adhesion] law = 'rate' (the joint fit over speeds)")
+    if len(data) != 1:
+        raise StudyError(f"{tables.where}: [fit] {len(data)} measurements are not allowed with the adhesion law "
+                         "'paper'; allowed: one data file (several at their speeds with [adhesion] law = 'rate')")
     _reference_layer(tables, motion, "fit")
-    data = tables.file(table["data"])
-    stem = f"{tables.name}_fit_{data.stem}"
+    file = tables.file(data[0])
+    stem = f"{tables.name}_fit_{file.stem}"
     try:
         check_output_stem("stem", stem)
     except ValueError as error:
         raise StudyError(f"{tables.where}: [fit] {error}") from None
-    return FitJob(table["data"], data, stem, tables.contact, motion, description, tuple(table["free"]),
+    return FitJob(data[0], file, stem, tables.contact, motion, description, tuple(table["free"]),
                   {name: tuple(pair) for name, pair in table.get("bounds", {}).items()}, table.get("noise", {}),
                   table.get("names", {}), table.get("units", {}), table.get("time_origin", "first_contact"),
                   tables.limits, tables.provenance)
+
+
+def _rate_fit(tables: _Tables, table: dict[str, Any], motion: Motion, description: str,
+              data: list[str]) -> RateFitJob:
+    """The ``[fit]`` table's joint fit of the rate law (:func:`_fit`), written as ``<name>_rate_fit_<first data's
+    stem>.nc``."""
+    from mdr_events.analysis.rate_fit import RATE_FREE_NAMES
+    from mdr_events.contact.model import check_half_space
+    from mdr_events.models.motion import Paths
+
+    path = next(iter(motion.paths.values())) if isinstance(motion, Paths) else \
+        motion.cases(tables.params, tables.profile).paths[0]
+    speeds = table.get("speeds", [path.speed] * len(data))
+    speeds = speeds if isinstance(speeds, list) else [speeds]
+    stem = f"{tables.name}_rate_fit_{tables.file(data[0]).stem}"
+    try:
+        if len(speeds) != len(data):
+            raise ValueError(f"speeds = {speeds!r} is not allowed with {len(data)} measurement(s); allowed: one speed "
+                             "per data file, in their order")
+        if "bounds" in table:
+            raise ValueError(f"bounds = {table['bounds']!r} is not allowed with the rate law; allowed: free among "
+                             f"{', '.join(RATE_FREE_NAMES)} (their bounds the fit's own)")
+        check_half_space(tables.contact, "the joint fit of the rate law (its forward model solve_edge)")
+        if set(table.get("noise", {})) - {"normal_force"}:
+            raise ValueError(f"noise = {table['noise']!r} is not allowed with the rate law; allowed: {{ normal_force = "
+                             "SIGMA }} alone (the joint fit reads F_N)")
+        free = tuple(table["free"])
+        if any(name not in RATE_FREE_NAMES for name in free) or len(set(free)) != len(free):
+            raise ValueError(f"free = {list(free)!r} is not allowed with the rate law; allowed: distinct names among "
+                             f"{', '.join(RATE_FREE_NAMES)}")
+        check_output_stem("stem", stem)
+        paths = tuple(Path(path.waypoints, as_float(speed)) for speed in speeds)
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{tables.where}: [fit] {error}") from None
+    return RateFitJob(tuple(data), tuple(tables.file(name) for name in data), stem, tables.contact, paths,
+                      f"{description} at {', '.join(f'{speed:g}' for speed in speeds)} m/s", free,
+                      bool(table.get("offsets", False)), table.get("noise", {}).get("normal_force"),
+                      table.get("names", {}), table.get("units", {}), table.get("time_origin", "first_contact"),
+                      tables.params.d_max, tables.limits, tables.provenance)
 
 
 def _sweep(tables: _Tables, output_directory: FilePath) -> SweepJob | None:
@@ -603,7 +690,8 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
     fitted = None if study.fit is None else _computed(study, "fit", study.fit.compute)
     checked = None if study.lammps is None else _computed(study, "lammps_check", study.lammps.compute)
     if fitted is not None:
-        progress(f"fit: {study.fit.data} (free: {', '.join(study.fit.free)})")  # once it ran
+        progress(f"fit: {', '.join(study.fit.data) if isinstance(study.fit, RateFitJob) else study.fit.data} (free: "
+                 f"{', '.join(study.fit.free)})")  # once it ran
     if study.simulation is not None:
         dataset = _computed(study, "simulation", study.simulation.compute)
         motion = study.simulation.motion
@@ -625,7 +713,12 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
         written.verdicts["lammps_check"] = ValidationReport.from_dataset(rendered.report).verdict
         progress(f"lammps_check: LAMMPS {study.lammps.normal} + {study.lammps.tangential}: "
                  f"{written.verdicts['lammps_check']}")
-    if fitted is not None:
+    if fitted is not None and isinstance(study.fit, RateFitJob):
+        label = f"fit {study.fit.data[0]}"
+        written += study.fit.write(fitted, out)
+        written.verdicts[label] = Verdict.PASS if RateFitJob.determined(fitted) else Verdict.FAIL
+        progress(f"{label}: {written.verdicts[label]}")
+    elif fitted is not None:
         label, rendered = f"fit {study.fit.data}", fitted[1]
         written += write_rendered(rendered, out)
         written.verdicts[label] = Verdict.PASS if FitResult.from_dataset(rendered.report).identifiable else Verdict.FAIL

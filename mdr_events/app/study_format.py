@@ -44,6 +44,10 @@ _KINDS: dict[str, tuple[Callable[[Any], bool], str]] = {
     "string table": (lambda v: isinstance(v, dict) and all(isinstance(s, str) for s in v.values()),
                      'a table of strings, e.g. { time = "t", normal_force = "Fn" }'),
     "string or number": (lambda v: isinstance(v, str) or _is_number(v), "a string or a number"),
+    "string or strings": (lambda v: isinstance(v, str) or (isinstance(v, list) and len(v) > 0
+                                                           and all(isinstance(s, str) for s in v)),
+                          "a string or a non-empty list of strings"),
+    "boolean": (lambda v: isinstance(v, bool), "true or false"),
     "number table": (lambda v: isinstance(v, dict) and all(map(_is_number, v.values())),
                      "a table of numbers, e.g. { normal_force = 1e-3 }"),
     "bounds table": (lambda v: isinstance(v, dict) and all(isinstance(p, list) and len(p) == 2
@@ -64,11 +68,12 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
                    "dx": ("number", False), "dt": ("number", False), "n_steps": ("integer", False),
                    "samples": ("integer", False), "rtol": ("number", False), "atol": ("number", False)},
     "path": {"waypoints": ("points", True), "speed": ("number", False)},
-    "phase_diagram": {"scenarios": ("strings", True)},
+    "phase_diagram": {"scenarios": ("strings", True), "speeds": ("numbers", False)},
     "validate": {"runs": ("strings", True), "tolerance": ("number", False), "names": ("string table", False),
                  "units": ("string table", False), "time_origin": ("string or number", False),
                  "scenario": ("string", False), "alpha": ("numbers", False)},
-    "fit": {"data": ("string", True), "free": ("strings", True), "names": ("string table", False),
+    "fit": {"data": ("string or strings", True), "free": ("strings", True), "speeds": ("numbers", False),
+            "offsets": ("boolean", False), "names": ("string table", False),
             "units": ("string table", False), "time_origin": ("string or number", False),
             "noise": ("number table", False), "bounds": ("bounds table", False), "scenario": ("string", False),
             "alpha": ("numbers", False)},
@@ -84,6 +89,7 @@ SCHEMA: dict[str, dict[str, tuple[str, bool]]] = {
                 "table": ("string", False)},
     "friction": {"law": ("string", True), "mu": ("number", False)},
     "layer": {"h": ("number", True), "base": ("string", False)},
+    "adhesion": {"law": ("string", True), "v_ref": ("number", False), "n": ("number", False)},
     "output": {"directory": ("string", True), "name": ("string", False)},
 }
 REQUIRED_TABLES = ("output",)
@@ -104,6 +110,11 @@ KEY_NOTES: dict[tuple[str, str], str] = {
     ("layer", "h"): "the elastomer's thickness in m: a layer on a rigid base (inf: the half-space, as without the "
                     "table); run by both methods, [validate] and [fit] (the continuum with the friction law 'tau0'), "
                     "as --h",
+    ("adhesion", "law"): "'paper' (Hess's rule with dgamma0 in and dgamma1 out of [parameters], rate independent: "
+                         "the default) or 'rate' (needs v_ref and n; the works at rest dgamma0 > 0, dgamma1 >= "
+                         "dgamma0 of [parameters]), as --adhesion-law",
+    ("adhesion", "v_ref"): "the rate law's reference speed of the contact's edge in m/s, > 0, as --v-ref",
+    ("adhesion", "n"): "the rate law's exponent of the edge's speed, 0 < n <= 1, as --rate-exponent",
     ("layer", "base"): "'bonded' (the default) or 'frictionless' (paths without tangential motion only), as "
                        "--layer-base",
 }

@@ -57,6 +57,11 @@ class Adhesion:
         """Whether either work of adhesion is positive (else the contact is Hertz's)."""
         return self.dgamma0 > 0.0 or self.dgamma1 > 0.0
 
+    @property
+    def is_rate_dependent(self) -> bool:
+        """Never: the works do not depend on the edge's speed (the closed forms and ``solve_path`` model it)."""
+        return False
+
     def to_attrs(self) -> dict[str, Any]:
         """A result's attributes: ``param_dgamma0``, ``param_dgamma1`` and their units.
 
@@ -159,6 +164,11 @@ class RateDependentAdhesion:
     @property
     def is_adhesive(self) -> bool:
         """Always: both works at rest are positive."""
+        return True
+
+    @property
+    def is_rate_dependent(self) -> bool:
+        """Always: the works depend on the edge's speed (what models the paper's law alone refuses it by this)."""
         return True
 
     def to_attrs(self) -> dict[str, Any]:

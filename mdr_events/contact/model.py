@@ -38,7 +38,7 @@ PARTS: dict[str, tuple[type, ...]] = {
 SHORT_NAMES: dict[str, str] = {
     "E": "elastomer.E", "nu": "elastomer.nu", "R": "indenter.R", "c": "indenter.c", "n": "indenter.n",
     "radius": "indenter.radius", "dgamma0": "adhesion.dgamma0", "dgamma1": "adhesion.dgamma1",
-    "tau0": "friction.tau0", "mu": "friction.mu", "h": "layer.thickness",
+    "tau0": "friction.tau0", "mu": "friction.mu", "h": "layer.thickness", "v_ref": "adhesion.v_ref",
 }
 #: The unit of each value inside a contact, by dotted name (``c`` of ``f = c rⁿ`` is in m^(1-n)).
 UNITS: dict[str, str] = {

@@ -1,5 +1,6 @@
 """Files: every result reads back identical, writes are atomic, foreign or damaged files are named."""
 
+import dataclasses
 import fcntl
 import os
 import subprocess
@@ -46,8 +47,21 @@ def results(paper_module):
         "layer_cycle": me.layer_indentation_cycle(me.Contact.paper().replace(h=5e-3), 2e-4, 5),
         "layer_pull_off": me.layer_pull_off_curve(me.Contact.paper(), [5e-3]),
         "layer_angles": me.critical_angles_against_thickness(me.Contact.paper(), [5e-3]),
+        **_rate_results(p),
         **_lammps_run(),
     }
+
+
+def _rate_results(p) -> dict:
+    """The rate law's kinds of result, as cheap as they come: its joint fit of one short curve from the law itself
+    (``n`` free) and scenario A's critical angle at one speed (LSODA)."""
+    law = me.RateDependentAdhesion(p.dgamma0, p.dgamma1, 1e-6, 0.6)
+    path = me.Path([(0.0, 0.0), (0.0, p.d_max), (0.0, -2e-4)], speed=1e-6)
+    times = np.linspace(0.0, path.duration, 20)
+    curve = me.continuum.solve_edge(p, path, law).normal_force(times, path)
+    return {"rate_fit": me.fit_rate_adhesion([me.RateMeasurement(path, times, curve)], p, law, free=("n",)),
+            "rate_angles": me.critical_angles_at_speeds(dataclasses.replace(me.Contact.paper(), adhesion=law), [1e-6],
+                                                        method="LSODA")}
 
 
 def _lammps_run() -> dict:

@@ -72,12 +72,14 @@ def test_a_contact_that_ends_is_shown_gone_and_logged():
     assert float(run["normal_force_min"]) < 0.0 and float(run["contact_area_min"]) == 0.0
 
 
-def test_a_continuum_sweep_of_the_law_is_refused_before_it_runs():
-    """The sweep's continuum quantities read the paper's spans (solve_path): the law is refused by name, pointing to
-    what runs it, not swept as the paper's law of its works at rest."""
-    with pytest.raises(ValueError, match="adhesion=RateDependentAdhesion.*not allowed in the continuum method.*"
-                                         "the discrete method runs it"):
-        me.sweep({"v": [1e-6, 1e-5]}, RATE, me.Scenario("A", alpha=[20.0]), method="continuum", scheduler="serial")
+def test_a_continuum_sweep_of_the_law_runs_simulate_s_run():
+    """The sweep's continuum quantities under the law are those of simulate's continuum run (refused before: they read
+    the paper's spans); every run against its single run bit for bit in tests/analysis/test_rate_sweep.py."""
+    swept = me.sweep({"v": [1e-6, 1e-5]}, RATE, me.Scenario("A", alpha=[20.0]), method="continuum",
+                     scheduler="serial", quantities=("normal_force_min",))
+    for speed in (1e-6, 1e-5):
+        alone = me.simulate(RATE, me.Scenario("A", alpha=[20.0], v=speed), "continuum")
+        assert float(swept["normal_force_min"].sel(v=speed)) == float(alone["normal_force_min"].isel(alpha=0))
 
 
 def test_coulomb_s_part_is_refused_saying_why_and_naming_what_runs_it():

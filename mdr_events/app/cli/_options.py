@@ -253,6 +253,60 @@ def friction(args: argparse.Namespace) -> FrictionLaw:
         raise UsageError(f"{given}: {error}") from None
 
 
+def adhesion_options(parser: argparse.ArgumentParser) -> None:
+    """``--adhesion-law LAW``, ``--v-ref V_REF`` and ``--rate-exponent N``: the rate-dependent adhesion law."""
+    from mdr_events.app import inputs
+
+    parser.add_argument("--adhesion-law", choices=list(inputs.ADHESION_LAWS), default=None,
+                        help="the works of adhesion of Hess's rule: paper (dgamma0 in, dgamma1 out, rate independent; "
+                             "default) or rate (Maugis-Barquins: dgamma1 [1 + (s/v_ref)^n] receding, dgamma0 / "
+                             "[1 + (s/v_ref)^n] advancing, s the edge's speed; needs --v-ref and --rate-exponent)")
+    parser.add_argument("--v-ref", type=float, default=None, metavar="V_REF",
+                        help="the rate law's reference speed of the contact's edge in m/s (> 0)")
+    parser.add_argument("--rate-exponent", type=float, default=None, metavar="N",
+                        help="the rate law's exponent n of the edge's speed (0 < n <= 1)")
+
+
+def adhesion(args: argparse.Namespace, params: Parameters):
+    """The adhesion law of :func:`adhesion_options` with the works at rest of ``params`` (a verb without the options:
+    the paper's law of ``params``)."""
+    from mdr_events.app import inputs
+
+    law, v_ref, n = (getattr(args, name, None) for name in ("adhesion_law", "v_ref", "rate_exponent"))
+    given = {"--v-ref": v_ref, "--rate-exponent": n}
+    if law != "rate":  # (the options' names in the one line; the values' own checks are the law's)
+        for option, value in given.items():
+            if value is not None:
+                raise UsageError(f"{option} {value:g} is not allowed with the adhesion law {law or 'paper'!r}; allowed: "
+                                 "--v-ref and --rate-exponent with --adhesion-law rate")
+    else:
+        missing = [option for option, value in given.items() if value is None]
+        if missing:
+            raise UsageError(f"--adhesion-law rate lacks {' and '.join(missing)}; allowed: --adhesion-law rate with "
+                             "both --v-ref V_REF (m/s, > 0) and --rate-exponent N (0 < N <= 1)")
+    try:
+        return inputs.adhesion(law, params, v_ref, n)
+    except (TypeError, ValueError) as error:
+        shown_ = " ".join(f"{option} {value:g}" for option, value in given.items() if value is not None)
+        raise UsageError(f"--adhesion-law rate {shown_}: {error}") from None
+
+
+def is_rate_law(contact: Contact) -> bool:
+    """Whether ``contact``'s adhesion law is the rate-dependent one (``--adhesion-law rate``)."""
+    return contact.adhesion.is_rate_dependent
+
+
+def check_rate_run(contact: Contact, motion, method, verb: str) -> None:
+    """Refuse, before anything is written, the rate law (``--adhesion-law rate``) where ``verb``'s method does not run
+    it with the other options (:func:`~mdr_events.app.inputs.check_rate_run`): one line naming the option."""
+    from mdr_events.app import inputs
+
+    try:
+        inputs.check_rate_run(contact, motion, method, verb)
+    except (TypeError, ValueError) as error:
+        raise UsageError(f"--adhesion-law rate with --method {method.name}: {error}") from None
+
+
 def layer_options(parser: argparse.ArgumentParser) -> None:
     """``--h H`` and ``--layer-base BASE``: the elastomer as a layer of thickness ``H`` on a rigid base."""
     from mdr_events.contact.layer import LayerBase
@@ -306,10 +360,10 @@ def check_reference_layer(contact: Contact, motion, verb: str) -> None:
 
 
 def contact(args: argparse.Namespace, params: Parameters, simulated: bool = True) -> Contact:
-    """The contact of ``params`` with the indenter, the friction law and the layer of the options."""
+    """The contact of ``params`` with the indenter, the friction law, the layer and the adhesion law of the options."""
     from mdr_events.app import inputs
 
-    return inputs.contact(params, profile(args, simulated), friction(args), layer(args))
+    return inputs.contact(params, profile(args, simulated), friction(args), layer(args), adhesion(args, params))
 
 
 def limit_options(parser: argparse.ArgumentParser) -> None:

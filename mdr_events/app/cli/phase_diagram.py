@@ -1,4 +1,6 @@
-"""``mdr-events phase-diagram``: the phase diagram of Fig. 9a (A) or 9b (B), written as .nc and .png."""
+"""``mdr-events phase-diagram``: the phase diagram of Fig. 9a (A) or 9b (B), written as .nc and .png; under the
+rate-dependent adhesion law (``--adhesion-law rate``) the scenario's critical angle against the speed (``--speeds``),
+written as .nc."""
 
 from __future__ import annotations
 
@@ -22,6 +24,10 @@ def fill(phase: argparse.ArgumentParser) -> None:
     phase.add_argument("--out", required=True, help="output directory")
     _options.friction_options(phase)
     _options.profile_options(phase)
+    _options.adhesion_options(phase)
+    phase.add_argument("--speeds", type=float, nargs="+", default=None, metavar="V",
+                       help="--adhesion-law rate: the paths' speeds (m/s) of the scenario's critical angle, written as "
+                            "critical_angle_<scenario>_at_speeds.nc (default the parameters' v)")
     _options.parameter_options(phase)
     phase.set_defaults(run=run)
 
@@ -30,9 +36,17 @@ def job(args: argparse.Namespace) -> PhaseJob:
     """The phase diagram the options ask for."""
     from mdr_events.app.jobs import PhaseJob
 
+    from mdr_events.app import inputs
+
     params, provenance = _options.parameters(args)
-    return PhaseJob(_options.contact(args, params, simulated=False), args.scenario, params.d_max, params.v,
-                    provenance, f"phase_diagram_{args.scenario}")
+    contact = _options.contact(args, params, simulated=False)
+    try:
+        speeds = inputs.angle_speeds(contact, args.speeds, params)
+    except (TypeError, ValueError) as error:
+        given = "--adhesion-law rate" if args.speeds is None else f"--speeds {' '.join(f'{v:g}' for v in args.speeds)}"
+        raise _options.UsageError(f"{given}: {error}") from None
+    stem = f"phase_diagram_{args.scenario}" if speeds is None else f"critical_angle_{args.scenario}_at_speeds"
+    return PhaseJob(contact, args.scenario, params.d_max, params.v, provenance, stem, speeds)
 
 
 def run(args: argparse.Namespace) -> None:

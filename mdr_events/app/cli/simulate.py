@@ -38,6 +38,7 @@ def fill(sim: argparse.ArgumentParser) -> None:
     _options.profile_options(sim)
     _options.friction_options(sim)
     _options.layer_options(sim)
+    _options.adhesion_options(sim)
     _options.limit_options(sim)
     _options.parameter_options(sim)
     sim.set_defaults(run=run)
@@ -57,6 +58,7 @@ def job(args: argparse.Namespace) -> SimulateJob:
         check_layer_taken(contact, motion, method)
     except (ValueError, TypeError) as error:
         raise _options.UsageError(f"--h {args.h:g}: {error}") from None
+    _options.check_rate_run(contact, motion, method, "simulate")
     return SimulateJob(contact, motion, method, _options.limits(args), provenance,
                        f"simulation_{args.scenario.replace('+', 'plus')}_{args.method}")
 

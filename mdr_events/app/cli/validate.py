@@ -39,6 +39,7 @@ def fill(check: argparse.ArgumentParser) -> None:
     _options.friction_options(check)
     _options.profile_options(check)
     _options.layer_options(check)
+    _options.adhesion_options(check)
     _options.limit_options(check)
     check.add_argument("--tolerance", type=float, default=1e-3,
                        help="bound on each quantity's max error relative to its range (default 1e-3)")
@@ -106,8 +107,14 @@ def job(args: argparse.Namespace) -> tuple[ValidateJob, str | None]:
     from mdr_events.app.jobs import ValidateJob
     from mdr_events.io.candidates import CANDIDATE_QUANTITIES
 
+    from mdr_events.app import inputs
+
     params, provenance = _options.measured_parameters(args)
     contact = _options.contact(args, params)
+    try:
+        inputs.check_reference_law(contact, "validate")
+    except TypeError as error:
+        raise UsageError(f"--adhesion-law rate: {error}") from None
     motion, description = _options.measured_motion(args, params, contact)
     _options.check_reference_layer(contact, motion, "validate")
     names = _options.pairs("--names", args.names, list(CANDIDATE_QUANTITIES))
