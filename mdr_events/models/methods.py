@@ -33,7 +33,7 @@ from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.media import check_law
 from mdr_events.models.continuum.play_run import run_play_springs, takes_play_springs
 from mdr_events.models.continuum.rate_run import check_rate_layer, run_rate_continuum
-from mdr_events.models.continuum.rate_shifts import check_rate_friction
+from mdr_events.models.continuum.rate_coulomb import check_rate_friction_law, run_rate_coulomb, takes_rate_coulomb
 from mdr_events.models.continuum.extrema import solution_extrema
 from mdr_events.models.continuum.solve import BYTES_PER_SAMPLE as CONTINUUM_BYTES_PER_SAMPLE
 from mdr_events.models.discrete import BYTES_PER_SAMPLE as DISCRETE_BYTES_PER_SAMPLE
@@ -384,14 +384,15 @@ def _rate_run(model: KernelModel, paths, times, tolerances, limits) -> dict:
     thickness is refused here by name (:func:`~mdr_events.models.continuum.rate_run.check_rate_layer`), as
     ``simulate.check_layer_taken`` refuses it before (the layer's springs take the paper's law)."""
     check_rate_layer(model.layer)
-    return run_rate_continuum(model.params, paths, times, tolerances, limits, model.profile, model.friction,
-                              model.adhesion)
+    run = run_rate_coulomb if takes_rate_coulomb(model.friction) else run_rate_continuum
+    return run(model.params, paths, times, tolerances, limits, model.profile, model.friction, model.adhesion)
 
 
 #: The runs of the adhesion laws whose radius is not on the branches of an edge rule (the continuum's
 #: ``EDGE_RULES``), by their type: the rate-dependent edge an ODE state with the springs on top
 #: (:mod:`~mdr_events.models.continuum.rate_run`), which takes ``"tau0"`` alone.
-CONTINUUM_RUNS: dict[type, ContinuumKernel] = {RateDependentAdhesion: ContinuumKernel(_rate_run, check_rate_friction)}
+CONTINUUM_RUNS: dict[type, ContinuumKernel] = {RateDependentAdhesion: ContinuumKernel(_rate_run,
+                                                                                      check_rate_friction_law)}
 
 
 def continuum_kernel(adhesion) -> ContinuumKernel:

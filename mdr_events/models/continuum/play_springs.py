@@ -46,9 +46,12 @@ from mdr_events.parameters import Parameters
 from .play_history import DepthHistory, SpanHistory
 
 __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
-           "UPPER_CAP", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
+           "UPPER_CAP", "END_PROBE", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
            "CONCAVITY_SAMPLES"]
 
+#: The springs probed beside the centre and the edge for a kink between them and the nearest node: this share of the
+#: radius inside (a kink nearer an end than that changes the force by less than the share squared).
+END_PROBE = 1e-12
 #: Panels of ``[0, a]`` before the kinks are added.
 PANELS = 8
 #: Gauss–Legendre nodes per panel (between kinks the anchor is smooth: the rule's error falls as ``(width)^(2n)``).
@@ -203,7 +206,7 @@ class PlaySprings:
         The springs.
     path : Path
         The path.
-    history : DepthHistory or SpanHistory, optional
+    history : DepthHistory, SpanHistory or RateHistory, optional
         The radius along the path (default: without adhesion, ``g⁻¹(d)``).
     """
 
@@ -403,7 +406,7 @@ class PlaySprings:
         a = self.radius(t)
         if not a > 0.0:
             return SpringState(0.0, 0.0, 0.0, 0.0, 0.0)
-        breaks = self._kinks(t, np.linspace(0.0, a, PANELS + 1))
+        breaks = self._kinks(t, np.union1d(np.linspace(0.0, a, PANELS + 1), self.history.breaks(t)))
         lows, highs = breaks[:-1], breaks[1:]
         nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
         weights = (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
@@ -423,6 +426,10 @@ class PlaySprings:
         for _ in range(KINK_ROUNDS + 1):
             lows, highs = breaks[:-1], breaks[1:]
             inner = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+            # (and the springs just inside the centre and the edge: a kink between the first or last node and an end,
+            # e.g. the rim of springs an edge still growing after a corner attached, is found too)
+            rim = END_PROBE * (breaks[-1] - breaks[0])
+            inner = np.concatenate([[breaks[0] + rim], inner, [breaks[-1] - rim]])
             label = self.anchors(inner, t)[1]
             change = np.flatnonzero(label[1:] != label[:-1])
             fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]
