@@ -269,8 +269,9 @@ class Continuum:
 
     def check_model(self, model: ModelJob) -> None:
         """Refuse what the continuum does not take: an adhesion law without a run or an edge rule
-        (:func:`continuum_kernel`), and with the rate-dependent law a friction law other than ``"tau0"`` (its springs'
-        caps differ from spring to spring; :mod:`~mdr_events.models.continuum.rate_shifts`).
+        (:func:`continuum_kernel`), and the friction laws its run does not take (the rate-dependent law's takes every
+        one: ``"tau0"`` by the closed-form play, Coulomb's part spring by spring,
+        :mod:`~mdr_events.models.continuum.rate_coulomb`).
 
         Parameters
         ----------
@@ -282,7 +283,7 @@ class Continuum:
         TypeError
             An adhesion law without a run.
         ValueError
-            The rate-dependent law with another friction law.
+            What the layer's check refuses.
         """
         continuum_kernel(model.adhesion).check(model.friction, model.adhesion)
         self.check_layer(model.contact)
@@ -380,7 +381,8 @@ def _every_friction_law(friction: FrictionLaw, adhesion: object) -> None:
 
 def _rate_run(model: KernelModel, paths, times, tolerances, limits) -> dict:
     """The rate-dependent edge with the springs on top
-    (:func:`~mdr_events.models.continuum.rate_run.run_rate_continuum`), on the half-space alone: a layer of finite
+    (:func:`~mdr_events.models.continuum.rate_run.run_rate_continuum`; Coulomb's part spring by spring,
+    :func:`~mdr_events.models.continuum.rate_coulomb.run_rate_coulomb`), on the half-space alone: a layer of finite
     thickness is refused here by name (:func:`~mdr_events.models.continuum.rate_run.check_rate_layer`), as
     ``simulate.check_layer_taken`` refuses it before (the layer's springs take the paper's law)."""
     check_rate_layer(model.layer)
@@ -390,7 +392,8 @@ def _rate_run(model: KernelModel, paths, times, tolerances, limits) -> dict:
 
 #: The runs of the adhesion laws whose radius is not on the branches of an edge rule (the continuum's
 #: ``EDGE_RULES``), by their type: the rate-dependent edge an ODE state with the springs on top
-#: (:mod:`~mdr_events.models.continuum.rate_run`), which takes ``"tau0"`` alone.
+#: (:mod:`~mdr_events.models.continuum.rate_run`; Coulomb's part spring by spring,
+#: :mod:`~mdr_events.models.continuum.rate_coulomb`), which takes every friction law.
 CONTINUUM_RUNS: dict[type, ContinuumKernel] = {RateDependentAdhesion: ContinuumKernel(_rate_run,
                                                                                       check_rate_friction_law)}
 
