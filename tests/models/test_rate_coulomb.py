@@ -123,6 +123,8 @@ def test_coulomb_s_law_alone_does_not_see_the_edge_s_speed():
                                atol=LIMIT_RTOL * np.max(np.abs(reference[held])))
 
 
+@pytest.mark.slow  # 17 s of CPU (measured on the shared machine, loaded): the events bisected on the route's force
+# (48 halvings, some 50 ms each) at every stroke; the quick round runs simulate in tests/models/test_rate_run.py
 def test_simulate_runs_it_full_slip_is_tau0_pi_a_squared_and_mu_hertz_and_the_log_holds_the_springs_events():
     """Before, simulate's continuum refused Coulomb's part under the rate law. On the sliding fretting path: where
     every spring slides F_x = ±(τ0 π a² + μ F_N^H(d)) (the springs in tension hold τ0's part alone, so F_N^H, the
@@ -180,3 +182,29 @@ def test_the_discrete_springs_converge_to_it_at_first_order(name, friction):
     errors = _discrete_errors(name, friction, spacings, 200)
     orders = observed_orders(spacings, errors)
     assert FIRST_ORDER[0] < np.mean(orders) < FIRST_ORDER[1], (errors, orders)
+
+
+#: The springs' event times at v_ref = 100 m/s against the spans' of the works at rest: first order in 1/v_ref,
+#: measured 4.6e-8 of the clock (the slip onset after the corner of scenario A), so 1e-6.
+EVENT_RTOL = 1e-6
+
+
+@pytest.mark.slow  # 13 s of CPU (measured on the shared machine, loaded): both runs' event logs, the route's bisected
+def test_the_log_is_the_spans_as_v_ref_grows_with_the_directions():
+    """Scenario A at 20°, v_ref = 100 m/s (n = 1), "tau0+coulomb": the springs' slip onset (after the corner, inside
+    the contact) and full slip (on the way out) are the spans' in kind, time and direction. Before, the onset's zone,
+    narrower at its time than the 1025 probes' spacing, was found on the quadrature's nodes but given the direction 0
+    (no probe at a cap)."""
+    law = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 100.0, 1.0)
+    scenario = me.Scenario("A", alpha=[20.0])
+    logs = []
+    for adhesion in (law, me.Adhesion(PAPER.dgamma0, PAPER.dgamma1)):
+        run = me.simulate(_contact(adhesion, TAU0_COULOMB), scenario, "continuum", samples=11).isel(alpha=0)
+        kinds = [str(kind) for kind in run["event_kind"].values if str(kind)]
+        chosen = [k for k, kind in enumerate(kinds) if kind in ("slip_onset", "full_slip")]
+        logs.append(([kinds[k] for k in chosen], run["event_direction"].values[chosen],
+                     run["event_time"].values[chosen]))
+    (kinds, ways, times), (exact_kinds, exact_ways, exact_times) = logs
+    assert kinds == exact_kinds == ["slip_onset", "full_slip"], (kinds, exact_kinds)
+    np.testing.assert_array_equal(ways, exact_ways)
+    np.testing.assert_allclose(times, exact_times, rtol=EVENT_RTOL)

@@ -80,7 +80,10 @@ def test_a_continuum_sweep_of_the_law_is_refused_before_it_runs():
         me.sweep({"v": [1e-6, 1e-5]}, RATE, me.Scenario("A", alpha=[20.0]), method="continuum", scheduler="serial")
 
 
-def test_coulomb_s_part_runs_spring_by_spring_on_the_edge():
+@pytest.mark.parametrize("friction", [me.FrictionLaw("tau0+coulomb", tau0=PAPER.tau0, mu=0.3),
+                                      pytest.param(me.FrictionLaw("coulomb", mu=0.3), marks=pytest.mark.slow)],
+                         ids=["tau0+coulomb", "coulomb"])  # (some 4 s of CPU each: the events bisected on the route)
+def test_coulomb_s_part_runs_spring_by_spring_on_the_edge(friction):
     """Item 2 of issue 29 was left as a refusal for Coulomb's part (each spring its own cap); issue 26 asked that nothing
     the discrete model runs be refused by the continuum: both laws with Coulomb's part run, F_x at the samples is the
     per-spring route's on the edge's history (continuum.rate_coulomb; its accuracy: tests/models/test_rate_coulomb.py),
@@ -92,19 +95,18 @@ def test_coulomb_s_part_runs_spring_by_spring_on_the_edge():
 
     path = me.Path.scenario_A(20.0, PAPER)
     paper_law = me.simulate(RATE, me.Scenario("A", alpha=[20.0]), "continuum", samples=11).isel(alpha=0)
-    for friction in (me.FrictionLaw("tau0+coulomb", tau0=PAPER.tau0, mu=0.3), me.FrictionLaw("coulomb", mu=0.3)):
-        coulomb = dataclasses.replace(RATE, friction=friction)
-        run = me.simulate(coulomb, me.Scenario("A", alpha=[20.0]), "continuum", samples=11).isel(alpha=0)
-        for name in ("normal_force", "contact_radius", "indentation_depth"):
-            np.testing.assert_array_equal(run[name].values, paper_law[name].values, err_msg=name)
-        route = PlaySprings(spring_line(PAPER, None, friction), path,
-                            RateHistory(solve_edge(PAPER, path, LAW, method=RUN_METHOD)))
-        times = run["time"].values + path.first_contact_time()
-        held = np.isfinite(run["tangential_force"].values)
-        np.testing.assert_array_equal(run["tangential_force"].values[held], route.tangential_force(times[held]))
-        kinds = [str(kind) for kind in run["event_kind"].values if str(kind)]
-        assert kinds[0] == "first_contact" and "slip_onset" in kinds and "detachment_starts" in kinds, kinds
-        assert float(run["tangential_force_max"]) >= np.max(run["tangential_force"].values[held])
+    coulomb = dataclasses.replace(RATE, friction=friction)
+    run = me.simulate(coulomb, me.Scenario("A", alpha=[20.0]), "continuum", samples=11).isel(alpha=0)
+    for name in ("normal_force", "contact_radius", "indentation_depth"):
+        np.testing.assert_array_equal(run[name].values, paper_law[name].values, err_msg=name)
+    route = PlaySprings(spring_line(PAPER, None, friction), path,
+                        RateHistory(solve_edge(PAPER, path, LAW, method=RUN_METHOD)))
+    times = run["time"].values + path.first_contact_time()
+    held = np.isfinite(run["tangential_force"].values)
+    np.testing.assert_array_equal(run["tangential_force"].values[held], route.tangential_force(times[held]))
+    kinds = [str(kind) for kind in run["event_kind"].values if str(kind)]
+    assert kinds[0] == "first_contact" and "slip_onset" in kinds and "detachment_starts" in kinds, kinds
+    assert float(run["tangential_force_max"]) >= np.max(run["tangential_force"].values[held])
 
 
 #: The least F_N against the edge's own pull-off (solve_edge's extremum of the same normal problem by the run's method,

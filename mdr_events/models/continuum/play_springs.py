@@ -406,10 +406,7 @@ class PlaySprings:
         a = self.radius(t)
         if not a > 0.0:
             return SpringState(0.0, 0.0, 0.0, 0.0, 0.0)
-        breaks = self._kinks(t, np.union1d(np.linspace(0.0, a, PANELS + 1), self.history.breaks(t)))
-        lows, highs = breaks[:-1], breaks[1:]
-        nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
-        weights = (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
+        nodes, weights = self._nodes(t, a)
         anchor, label = self.anchors(nodes, t)
         w = self.line.weight(nodes) * weights
         at_cap = label < 0
@@ -417,6 +414,39 @@ class PlaySprings:
         force = 2.0 * self.line.G_star * float(np.sum(w * (self._x(t) - anchor)))
         return SpringState(force, float(np.sum(w[at_cap])), float(np.sum(weights[at_cap])),
                            float(np.sum(weights[at_cap & pressed])), float(np.sum(weights[pressed])))
+
+    def _nodes(self, t: float, a: float) -> tuple[np.ndarray, np.ndarray]:
+        """The quadrature's nodes and weights on ``[0, a]`` at ``t``: Gauss–Legendre on the panels split at the
+        history's breaks and the kinks."""
+        breaks = self._kinks(t, np.union1d(np.linspace(0.0, a, PANELS + 1), self.history.breaks(t)))
+        lows, highs = breaks[:-1], breaks[1:]
+        nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+        return nodes, (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
+
+    def cap_sides(self, t: float, edge: float) -> tuple[float, float]:
+        """The lengths (m) of the springs within ``edge`` at the lower and the upper cap at ``t``, on the quadrature's
+        nodes (a zone narrower than any probe's spacing, which the nodes graded at the kinks and breaks hold).
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock).
+        edge : float
+            The springs counted: those at ``ξ < edge`` (m).
+
+        Returns
+        -------
+        tuple of float
+            The lengths at the lower cap (``x − c``) and the upper one.
+        """
+        a = self.radius(t)
+        if not a > 0.0:
+            return 0.0, 0.0
+        nodes, weights = self._nodes(t, a)
+        labels = self.anchors(nodes, t)[1]
+        inside = nodes < edge
+        return (float(np.sum(weights[inside & np.isin(labels, LOWER_CAP)])),
+                float(np.sum(weights[inside & np.isin(labels, UPPER_CAP)])))
 
     def _kinks(self, t: float, breaks: np.ndarray) -> np.ndarray:
         """``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances differ (within a
