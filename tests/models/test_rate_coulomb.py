@@ -208,3 +208,20 @@ def test_the_log_is_the_spans_as_v_ref_grows_with_the_directions():
     assert kinds == exact_kinds == ["slip_onset", "full_slip"], (kinds, exact_kinds)
     np.testing.assert_array_equal(ways, exact_ways)
     np.testing.assert_allclose(times, exact_times, rtol=EVENT_RTOL)
+
+
+def test_the_flat_punch_runs_too():
+    """A flat punch of 1 mm pressed in, rubbed to and fro and pulled off under "tau0+coulomb" at v_ref = 1 m/s: its
+    face is in contact at once and rests until it lets go, so F_x is the spans' of the works at rest to LIMIT_RTOL
+    (measured 3e-16 of the largest force at 1 and 10 m/s)."""
+    punch = me.FlatPunch(1e-3)
+    path = me.Path(np.array([(0, -1e-6), (0, 2e-6), (2e-5, 2e-6), (-2e-5, 1e-6), (0, -3e-5)]), speed=1e-7)
+    exact = me.simulate(_contact(me.Adhesion(PAPER.dgamma0, PAPER.dgamma1), TAU0_COULOMB, punch), me.Paths([path]),
+                        "continuum", samples=SAMPLES).isel(case=0)
+    times = exact["time"].values + path.first_contact_time()
+    reference = exact["tangential_force"].values
+    held = np.isfinite(reference)
+    law = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1.0, 1.0)
+    force = _play(path, law, TAU0_COULOMB, punch).tangential_force(times)
+    np.testing.assert_allclose(force[held], reference[held], rtol=0.0,
+                               atol=LIMIT_RTOL * np.max(np.abs(reference[held])))

@@ -50,8 +50,10 @@ __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHist
            "CONCAVITY_SAMPLES"]
 
 #: The springs probed beside the centre and the edge for a kink between them and the nearest node: this share of the
-#: radius inside (a kink nearer an end than that changes the force by less than the share squared).
-END_PROBE = 1e-12
+#: radius inside (a kink nearer an end than that changes the force by less than that share of it; at 1e-12 the probe
+#: at the edge of a contact without adhesion lay where ``d − g`` is within :data:`PRESSED_ROUND_OFF` of 0, whose
+#: flicker between compressed and not the kinks' search followed without end).
+END_PROBE = 1e-9
 #: Panels of ``[0, a]`` before the kinks are added.
 PANELS = 8
 #: Gauss–Legendre nodes per panel (between kinks the anchor is smooth: the rule's error falls as ``(width)^(2n)``).
