@@ -106,6 +106,10 @@ def test_coulomb_s_part_runs_spring_by_spring_on_the_edge(friction):
     np.testing.assert_array_equal(run["tangential_force"].values[held], route.tangential_force(times[held]))
     kinds = [str(kind) for kind in run["event_kind"].values if str(kind)]
     assert kinds[0] == "first_contact" and "slip_onset" in kinds and "detachment_starts" in kinds, kinds
+    # (the run ends in contact, the edge lagging: its full slip on the way out is searched to the path's end, not to
+    # the log's last event; before, under "tau0+coulomb" it was missed)
+    assert "full_slip" in kinds and [int(way) for kind, way in zip(kinds, run["event_direction"].values)
+                                     if kind in ("slip_onset", "full_slip")] == [1, 1], kinds
     assert float(run["tangential_force_max"]) >= np.max(run["tangential_force"].values[held])
 
 

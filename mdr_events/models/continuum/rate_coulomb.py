@@ -39,8 +39,10 @@ from mdr_events.validation import shown
 
 from .play_run import _force_extrema, _samples, _spring_events, _SPRING_EVENTS
 from .play_springs import PlaySprings, spring_line
+from .rate_edge import EdgeEventKind
 from .rate_history import RateHistory
 from .rate_run import run_rate_continuum
+from .state import Event, EventKind
 from .tolerances import Tolerances
 
 __all__ = ["run_rate_coulomb", "check_rate_friction_law", "takes_rate_coulomb"]
@@ -89,6 +91,14 @@ def _normal_law(friction: FrictionLaw) -> FrictionLaw:
     return FrictionLaw("tau0", tau0=friction.tau0 if friction.uses_tau0 and friction.tau0 is not None else 0.0)
 
 
+def _run_end(run, path: Path, start: float) -> Event:
+    """A mark at the run's end (s from first contact): where its contact ended, else the path's end. The springs'
+    events are searched in each contact up to its end or, where it lasts, the log's last event
+    (:func:`~.play_run.run_play_springs`'s rule): the mark makes that the path's end, not its last corner."""
+    end = run.edge.events[-1].time if run.edge.events[-1].kind is EdgeEventKind.CONTACT_ENDS else path.duration
+    return Event(float(end - start), EventKind.CORNER, 0.0, 0.0, 0.0, 0)
+
+
 def run_rate_coulomb(params: Parameters, paths: list[Path], times: np.ndarray | int, tolerances: Tolerances,
                      limits: Limits, profile: SimulatedProfile, friction: FrictionLaw,
                      law: RateDependentAdhesion) -> dict:
@@ -131,7 +141,8 @@ def run_rate_coulomb(params: Parameters, paths: list[Path], times: np.ndarray | 
         raw["sliding_fraction"][case] = np.where(radius > 0, sliding, np.nan)
         log = raw["events"][case]
         kept = [event for event in log if event.kind not in _SPRING_EVENTS]
-        raw["events"][case] = sorted(kept + _spring_events(play, raw["time"], shares, start, log),
+        searched = kept + [_run_end(run, path, start)]  # (a contact that lasts to the path's end is searched to it)
+        raw["events"][case] = sorted(kept + _spring_events(play, raw["time"], shares, start, searched),
                                      key=lambda event: event.time)
         raw["extrema"][case].update(_force_extrema(play, raw["time"], force, start, path))
     return raw
