@@ -13,6 +13,10 @@ they cost) of
   ``simulate(..., "continuum")`` with the paper's law against the rate-dependent one (the play of both levels,
   ``continuum.rate_play``, at the 2001 samples and the scan's times), and the rate play's ``F_x`` alone at the 2001
   samples (target: well under 1 s);
+- Coulomb's part (``"tau0+coulomb"``, μ = 0.3) on scenario A at 20° in the continuum, 201 samples:
+  ``simulate(..., "continuum")`` under the rate-independent law of the works at rest (the spans) against the
+  rate-dependent one (every spring's play operator on the edge's history, ``continuum.rate_coulomb``), and the latter's
+  ``F_x`` alone at the samples (the per-spring route, no events or extrema), and their ratios;
 - the normal problem of the same path: ``continuum.solve_path`` without friction (the paper's law, the radius on its
   branches) and ``continuum.solve_edge`` (the radius an ODE), and their ratio; ``solve_edge`` with the fit's method
   (LSODA at ``RATE_FIT_RTOL``) beside the reference's (Radau at ``EDGE_RTOL``);
@@ -40,6 +44,8 @@ RATIO_TARGET = 3.0
 FIT_TARGET = 5.0
 #: The continuum's output samples (``Continuum``'s default).
 SAMPLES = 2001
+#: The output samples of the Coulomb case (the per-spring route costs some 50 ms a sample).
+COULOMB_SAMPLES = 201
 
 
 def _measurements(params: me.Parameters, law: me.RateDependentAdhesion) -> list[RateMeasurement]:
@@ -70,6 +76,32 @@ def _rate_continuum(params, path, law, method: str) -> None:
     shifts.edge.normal_force(times, path)
 
 
+def _coulomb(params: me.Parameters, paper: me.Contact, law: me.RateDependentAdhesion, repeat: int) -> None:
+    """Coulomb's part on scenario A at 20°, 201 samples: the spans of the works at rest against the rate-dependent run
+    by simulate and the per-spring route's ``F_x`` alone."""
+    from mdr_events.models.continuum.play_springs import PlaySprings, spring_line
+    from mdr_events.models.continuum.rate_history import RateHistory
+    from mdr_events.models.continuum.rate_run import RUN_METHOD
+
+    friction = me.FrictionLaw("tau0+coulomb", tau0=params.tau0, mu=0.3)
+    at_rest = me.Contact(paper.elastomer, paper.indenter, me.Adhesion(params.dgamma0, params.dgamma1), friction)
+    rate = me.Contact(paper.elastomer, paper.indenter, law, friction)
+    scenario, path = me.Scenario("A", alpha=[20.0]), me.Path.scenario_A(20.0, params)
+    samples = np.linspace(path.first_contact_time(), path.duration, COULOMB_SAMPLES)
+
+    def route() -> None:
+        edge = solve_edge(params, path, law, method=RUN_METHOD)
+        PlaySprings(spring_line(params, None, friction), path, RateHistory(edge)).tangential_force(samples)
+
+    _show(f"continuum, tau0+coulomb, A 20°, {COULOMB_SAMPLES} samples", {
+        "works at rest (simulate)": median_times(
+            lambda: me.simulate(at_rest, scenario, "continuum", samples=COULOMB_SAMPLES), repeat),
+        "rate-dependent (simulate)": median_times(
+            lambda: me.simulate(rate, scenario, "continuum", samples=COULOMB_SAMPLES), repeat),
+        "rate-dependent F_x alone (per-spring route)": median_times(route, repeat)},
+        "works at rest (simulate)", target=False)
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=7)
@@ -97,6 +129,7 @@ def main() -> None:
         "rate-dependent (simulate)": median_times(lambda: me.simulate(rate, fretting, "continuum"), repeat),
         "rate play's F_x alone": median_times(lambda: play._sides_at(samples), repeat)},
         "paper's law (simulate)", target=False)
+    _coulomb(params, paper, law, max(1, repeat // 3))
     frictionless = me.FrictionLaw("tau0", tau0=0.0)
     normal = {"solve_path": median_times(lambda: solve_path(params, path, friction=frictionless), repeat),
               "solve_edge (Radau)": median_times(lambda: solve_edge(params, path, law), repeat),

@@ -139,7 +139,8 @@ class RateDependentAdhesion:
 
     #: where a method without a kernel for this law points its user
     runs_in: ClassVar[str] = ("the discrete method runs it, springs and shifts, and simulate's continuum method under "
-                                "tau0 along any path (mdr_events.continuum.solve_rate_shifts); "
+                                "every friction law along any path (mdr_events.continuum.solve_rate_shifts under "
+                                "tau0, Coulomb's part spring by spring); "
                                 "its normal problem also runs in mdr_events.continuum.solve_edge, scenario A's phase "
                                 "diagram and critical angle at a speed in mdr_events.phase_diagram_at_speeds and "
                                 "critical_angles_at_speeds, scenario B's in critical_angles_B_at_speeds")

@@ -33,7 +33,7 @@ from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.media import check_law
 from mdr_events.models.continuum.play_run import run_play_springs, takes_play_springs
 from mdr_events.models.continuum.rate_run import check_rate_layer, run_rate_continuum
-from mdr_events.models.continuum.rate_shifts import check_rate_friction
+from mdr_events.models.continuum.rate_coulomb import check_rate_friction_law, run_rate_coulomb, takes_rate_coulomb
 from mdr_events.models.continuum.extrema import solution_extrema
 from mdr_events.models.continuum.solve import BYTES_PER_SAMPLE as CONTINUUM_BYTES_PER_SAMPLE
 from mdr_events.models.discrete import BYTES_PER_SAMPLE as DISCRETE_BYTES_PER_SAMPLE
@@ -269,8 +269,9 @@ class Continuum:
 
     def check_model(self, model: ModelJob) -> None:
         """Refuse what the continuum does not take: an adhesion law without a run or an edge rule
-        (:func:`continuum_kernel`), and with the rate-dependent law a friction law other than ``"tau0"`` (its springs'
-        caps differ from spring to spring; :mod:`~mdr_events.models.continuum.rate_shifts`).
+        (:func:`continuum_kernel`), and the friction laws its run does not take (the rate-dependent law's takes every
+        one: ``"tau0"`` by the closed-form play, Coulomb's part spring by spring,
+        :mod:`~mdr_events.models.continuum.rate_coulomb`).
 
         Parameters
         ----------
@@ -282,7 +283,7 @@ class Continuum:
         TypeError
             An adhesion law without a run.
         ValueError
-            The rate-dependent law with another friction law.
+            What the layer's check refuses.
         """
         continuum_kernel(model.adhesion).check(model.friction, model.adhesion)
         self.check_layer(model.contact)
@@ -380,18 +381,21 @@ def _every_friction_law(friction: FrictionLaw, adhesion: object) -> None:
 
 def _rate_run(model: KernelModel, paths, times, tolerances, limits) -> dict:
     """The rate-dependent edge with the springs on top
-    (:func:`~mdr_events.models.continuum.rate_run.run_rate_continuum`), on the half-space alone: a layer of finite
+    (:func:`~mdr_events.models.continuum.rate_run.run_rate_continuum`; Coulomb's part spring by spring,
+    :func:`~mdr_events.models.continuum.rate_coulomb.run_rate_coulomb`), on the half-space alone: a layer of finite
     thickness is refused here by name (:func:`~mdr_events.models.continuum.rate_run.check_rate_layer`), as
     ``simulate.check_layer_taken`` refuses it before (the layer's springs take the paper's law)."""
     check_rate_layer(model.layer)
-    return run_rate_continuum(model.params, paths, times, tolerances, limits, model.profile, model.friction,
-                              model.adhesion)
+    run = run_rate_coulomb if takes_rate_coulomb(model.friction) else run_rate_continuum
+    return run(model.params, paths, times, tolerances, limits, model.profile, model.friction, model.adhesion)
 
 
 #: The runs of the adhesion laws whose radius is not on the branches of an edge rule (the continuum's
 #: ``EDGE_RULES``), by their type: the rate-dependent edge an ODE state with the springs on top
-#: (:mod:`~mdr_events.models.continuum.rate_run`), which takes ``"tau0"`` alone.
-CONTINUUM_RUNS: dict[type, ContinuumKernel] = {RateDependentAdhesion: ContinuumKernel(_rate_run, check_rate_friction)}
+#: (:mod:`~mdr_events.models.continuum.rate_run`; Coulomb's part spring by spring,
+#: :mod:`~mdr_events.models.continuum.rate_coulomb`), which takes every friction law.
+CONTINUUM_RUNS: dict[type, ContinuumKernel] = {RateDependentAdhesion: ContinuumKernel(_rate_run,
+                                                                                      check_rate_friction_law)}
 
 
 def continuum_kernel(adhesion) -> ContinuumKernel:

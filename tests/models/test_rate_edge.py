@@ -5,6 +5,7 @@ harder."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -111,14 +112,17 @@ def test_a_law_of_other_works_is_refused():
         solve_edge(PAPER, me.Path.scenario_A(90.0, PAPER), RateDependentAdhesion(0.02, 0.15, 1e-6, 1.0))
 
 
-def test_the_continuum_method_refuses_what_its_springs_do_not_follow_by_name():
-    """Coulomb's part (a cap that differs from spring to spring) before any solve (a path whose x turns back runs:
-    test_rate_play)."""
+def test_the_continuum_method_refuses_what_its_edge_does_not_follow_by_name():
+    """Before, Coulomb's part (a cap that differs from spring to spring) was refused here; it runs spring by spring
+    (tests/models/test_rate_coulomb.py). What stays refused: a layer of finite thickness (the edge's ODE is Heß's rule
+    on the half-space, which a layer's compliance changes), in one line naming the law and the layer."""
     paper = me.Contact.paper()
     coulomb = me.Contact(paper.elastomer, paper.indenter, _law(1e-6), me.FrictionLaw("tau0+coulomb", tau0=4.2e4,
                                                                                       mu=0.3))
-    with pytest.raises(ValueError, match=r"friction=FrictionLaw\('tau0\+coulomb'.*allowed: FrictionLaw\('tau0'\)"):
-        me.simulate(coulomb, "A", 20.0, "continuum")
+    with pytest.raises(TypeError, match=r"adhesion=RateDependentAdhesion.*not allowed on layer h = 0.005 m.*the "
+                                        r"rate-dependent law runs on the half-space") as raised:
+        me.simulate(dataclasses.replace(coulomb, layer=me.Layer(5e-3)), "A", 20.0, "continuum")
+    assert "\n" not in str(raised.value)
 
 
 #: LSODA's curve against the reference (Radau at 1e-12) on the fit's three speeds: LSODA's error control reaches

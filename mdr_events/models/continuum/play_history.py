@@ -67,6 +67,11 @@ class DepthHistory:
             when[take], segment[take] = at[take], k
         return when, segment
 
+    def breaks(self, t: float) -> np.ndarray:
+        """The radii (m) inside the contact at ``t`` where the force's quadrature splits its panels besides the kinks
+        it finds: none (the attachment is smooth in ``ξ`` between the jumps and pieces, which the kinks mark)."""
+        return np.empty(0)
+
 
 class SpanHistory:
     """The radius of an adhesive contact as the spans' run gives it (:class:`~.solution.PathSolution` with
@@ -140,3 +145,8 @@ class SpanHistory:
             later = at[late] >= when[rows]
             when[rows[later]], code[rows[later]] = at[late][later], 2 * index + 1
         return when, code
+
+    def breaks(self, t: float) -> np.ndarray:
+        """The radii (m) inside the contact at ``t`` where the force's quadrature splits its panels besides the kinks
+        it finds: none (the attachment is smooth in ``ξ`` between the jumps and pieces, which the kinks mark)."""
+        return np.empty(0)

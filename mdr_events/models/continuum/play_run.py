@@ -218,13 +218,16 @@ def _bisect(play: PlaySprings, low: float, high: float, reached) -> float:
 def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Event:
     """The event at ``time`` (path clock); direction: the cap its springs are at (+1 the lower, ``x − c``: pushed
     towards ``+x``; −1 the upper), the more covered of the two at the probes of :func:`_share` (the compressed
-    springs under Coulomb's law alone)."""
+    springs under Coulomb's law alone), or where no probe is at a cap on the quadrature's nodes
+    (:meth:`~.play_springs.PlaySprings.cap_sides`: a zone narrower than the probes' spacing)."""
     a = play.radius(time)
     coulomb_alone = not play.line.shift(np.array([a]))[0] > 0.0
     edge = min(a, float(play.compressed_radius(time))) if coulomb_alone else a
     points = edge * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)
     labels = play.anchors(points, time)[1]
     lower, upper = np.count_nonzero(np.isin(labels, LOWER_CAP)), np.count_nonzero(np.isin(labels, UPPER_CAP))
+    if lower == upper == 0:  # (a zone narrower than the probes' spacing, found on the quadrature's nodes)
+        lower, upper = play.cap_sides(time, edge)
     direction = 0 if lower == upper == 0 else (1 if lower >= upper else -1)
     return Event(time - start, kind, float(play._d(time)), a, float(play._x(time)), direction)
 

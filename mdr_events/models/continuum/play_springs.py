@@ -46,9 +46,14 @@ from mdr_events.parameters import Parameters
 from .play_history import DepthHistory, SpanHistory
 
 __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
-           "UPPER_CAP", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
+           "UPPER_CAP", "END_PROBE", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
            "CONCAVITY_SAMPLES"]
 
+#: The springs probed beside the centre and the edge for a kink between them and the nearest node: this share of the
+#: radius inside (a kink nearer an end than that changes the force by less than that share of it; at 1e-12 the probe
+#: at the edge of a contact without adhesion lay where ``d − g`` is within :data:`PRESSED_ROUND_OFF` of 0, whose
+#: flicker between compressed and not the kinks' search followed without end).
+END_PROBE = 1e-9
 #: Panels of ``[0, a]`` before the kinks are added.
 PANELS = 8
 #: Gauss–Legendre nodes per panel (between kinks the anchor is smooth: the rule's error falls as ``(width)^(2n)``).
@@ -203,7 +208,7 @@ class PlaySprings:
         The springs.
     path : Path
         The path.
-    history : DepthHistory or SpanHistory, optional
+    history : DepthHistory, SpanHistory or RateHistory, optional
         The radius along the path (default: without adhesion, ``g⁻¹(d)``).
     """
 
@@ -403,10 +408,7 @@ class PlaySprings:
         a = self.radius(t)
         if not a > 0.0:
             return SpringState(0.0, 0.0, 0.0, 0.0, 0.0)
-        breaks = self._kinks(t, np.linspace(0.0, a, PANELS + 1))
-        lows, highs = breaks[:-1], breaks[1:]
-        nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
-        weights = (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
+        nodes, weights = self._nodes(t, a)
         anchor, label = self.anchors(nodes, t)
         w = self.line.weight(nodes) * weights
         at_cap = label < 0
@@ -414,6 +416,39 @@ class PlaySprings:
         force = 2.0 * self.line.G_star * float(np.sum(w * (self._x(t) - anchor)))
         return SpringState(force, float(np.sum(w[at_cap])), float(np.sum(weights[at_cap])),
                            float(np.sum(weights[at_cap & pressed])), float(np.sum(weights[pressed])))
+
+    def _nodes(self, t: float, a: float) -> tuple[np.ndarray, np.ndarray]:
+        """The quadrature's nodes and weights on ``[0, a]`` at ``t``: Gauss–Legendre on the panels split at the
+        history's breaks and the kinks."""
+        breaks = self._kinks(t, np.union1d(np.linspace(0.0, a, PANELS + 1), self.history.breaks(t)))
+        lows, highs = breaks[:-1], breaks[1:]
+        nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+        return nodes, (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
+
+    def cap_sides(self, t: float, edge: float) -> tuple[float, float]:
+        """The lengths (m) of the springs within ``edge`` at the lower and the upper cap at ``t``, on the quadrature's
+        nodes (a zone narrower than any probe's spacing, which the nodes graded at the kinks and breaks hold).
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock).
+        edge : float
+            The springs counted: those at ``ξ < edge`` (m).
+
+        Returns
+        -------
+        tuple of float
+            The lengths at the lower cap (``x − c``) and the upper one.
+        """
+        a = self.radius(t)
+        if not a > 0.0:
+            return 0.0, 0.0
+        nodes, weights = self._nodes(t, a)
+        labels = self.anchors(nodes, t)[1]
+        inside = nodes < edge
+        return (float(np.sum(weights[inside & np.isin(labels, LOWER_CAP)])),
+                float(np.sum(weights[inside & np.isin(labels, UPPER_CAP)])))
 
     def _kinks(self, t: float, breaks: np.ndarray) -> np.ndarray:
         """``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances differ (within a
@@ -423,6 +458,10 @@ class PlaySprings:
         for _ in range(KINK_ROUNDS + 1):
             lows, highs = breaks[:-1], breaks[1:]
             inner = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+            # (and the springs just inside the centre and the edge: a kink between the first or last node and an end,
+            # e.g. the rim of springs an edge still growing after a corner attached, is found too)
+            rim = END_PROBE * (breaks[-1] - breaks[0])
+            inner = np.concatenate([[breaks[0] + rim], inner, [breaks[-1] - rim]])
             label = self.anchors(inner, t)[1]
             change = np.flatnonzero(label[1:] != label[:-1])
             fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]

@@ -375,8 +375,8 @@ def run_rate_continuum(params: Parameters, paths: list[Path], times: np.ndarray 
     Returns
     -------
     dict
-        The quantities stacked to (n_cases, n_time), ``time``, ``events`` (one list per case) and ``extrema`` (one
-        dict per case).
+        The quantities stacked to (n_cases, n_time), ``time``, ``events`` (one list per case), ``extrema`` (one
+        dict per case) and ``runs`` (each path's :class:`~mdr_events.models.continuum.rate_shifts.RateShifts`).
 
     Raises
     ------
@@ -398,5 +398,5 @@ def run_rate_continuum(params: Parameters, paths: list[Path], times: np.ndarray 
     out = {name: np.stack([case[name] for case in per_case]) for name in per_case[0]}
     scans = [scan_run(run) for run in runs]
     out.update(time=times, events=[rate_events(run, scan) for run, scan in zip(runs, scans)],
-               extrema=[rate_extrema(run, scan) for run, scan in zip(runs, scans)])
+               extrema=[rate_extrema(run, scan) for run, scan in zip(runs, scans)], runs=runs)
     return out

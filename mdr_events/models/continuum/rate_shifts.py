@@ -25,7 +25,8 @@ by ``|ẋ|`` times the jump-in's lag, about ``a_J / (1e6 v_ref)``).
 
 A path whose ``x`` turns back needs the upper level too (the anchors' nested clips): :func:`solve_rate_shifts` hands it
 to :class:`~mdr_events.models.continuum.rate_play.RatePlay`, every anchor a play operator of the window. The laws with
-Coulomb's part (a cap that differs from spring to spring) are refused; the discrete method runs them.
+Coulomb's part (a cap that differs from spring to spring) are refused here; the continuum method runs them spring by
+spring on the same edge (:mod:`~mdr_events.models.continuum.rate_coulomb`).
 """
 
 from __future__ import annotations
@@ -440,8 +441,9 @@ def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.n
 
 
 def check_rate_friction(friction: FrictionLaw, law: RateDependentAdhesion | None = None) -> None:
-    """Refuse a friction law the springs on the rate-dependent edge do not follow: only ``"tau0"`` (one cap ``K a``
-    for every spring); the laws with Coulomb's part run in the discrete method.
+    """Refuse a friction law the closed-form play on the rate-dependent edge does not follow: only ``"tau0"`` (one cap
+    ``K a`` for every spring); the continuum method runs the laws with Coulomb's part spring by spring
+    (:mod:`~mdr_events.models.continuum.rate_coulomb`).
 
     Parameters
     ----------
@@ -455,17 +457,18 @@ def check_rate_friction(friction: FrictionLaw, law: RateDependentAdhesion | None
     TypeError
         Not a :class:`~mdr_events.contact.friction.FrictionLaw`.
     ValueError
-        Another law than ``"tau0"``, in one line naming both laws, the method and the one that runs them.
+        Another law than ``"tau0"``, in one line naming both laws and what runs them.
     """
     if not isinstance(friction, FrictionLaw):
         raise TypeError(f"friction={shown(friction)} ({type(friction).__name__}) is not allowed; allowed: a "
                         "FrictionLaw('tau0') or None")
     if friction.law != "tau0":
         named = "a rate-dependent adhesion law" if law is None else f"adhesion={law!r}"
-        raise ValueError(f"friction={friction!r} is not allowed with {named} in the continuum method (Coulomb's part "
-                         "gives each spring its own cap, growing with its compression, where the continuum's "
-                         "closed-form play holds one cap K a for every spring); allowed: FrictionLaw('tau0') in the "
-                         "continuum, or method='discrete', which runs every friction law under this adhesion law")
+        raise ValueError(f"friction={friction!r} is not allowed with {named} in solve_rate_shifts (Coulomb's part "
+                         "gives each spring its own cap, growing with its compression, where this closed-form play "
+                         "holds one cap K a for every spring); allowed: FrictionLaw('tau0') here; simulate's "
+                         "continuum method runs every friction law under this adhesion law (Coulomb's part spring by "
+                         "spring, continuum.rate_coulomb)")
 
 
 def path_way(path: Path) -> tuple[float, int | None]:
