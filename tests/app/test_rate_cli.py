@@ -89,9 +89,6 @@ def test_a_study_of_the_rate_law_writes_the_apis_run(tmp_path):
     ([*RATE, "--dgamma0", "0"], "RateDependentAdhesion.dgamma0=0.0 is not allowed; allowed: a finite number > 0"),
     ([*RATE, "--dgamma1", "0.001"], "RateDependentAdhesion.dgamma1=0.001 is not allowed; allowed: a finite number >= "
                                     "dgamma0"),
-    ([*RATE, "--method", "continuum", "--friction", "coulomb", "--mu", "0.3"],
-     "--adhesion-law rate with --method continuum: friction=FrictionLaw('coulomb', mu=0.3) is not allowed with "
-     "adhesion=RateDependentAdhesion"),
     ([*RATE, "--h", "5e-3"], "--h 0.005: adhesion=RateDependentAdhesion(dgamma0=0.01, dgamma1=0.15, v_ref=1e-06, "
                              "n=0.5) (RateDependentAdhesion) is not allowed on layer h = 0.005 m"),
 ])
@@ -112,8 +109,8 @@ def test_a_bad_rate_law_is_one_line_exit_2_and_nothing_written(capsys, tmp_path,
     ('[adhesion]\nv_ref = 1e-6\n', "[adhesion] lacks the required key(s) law"),
     ('[adhesion]\nlaw = "rate"\nv_ref = "fast"\nn = 0.5\n', "[adhesion] v_ref = 'fast' is not allowed; allowed: a "
                                                              "number"),
-    (RATE_TABLE + '[friction]\nlaw = "coulomb"\nmu = 0.3\n',
-     "[simulation] friction=FrictionLaw('coulomb', mu=0.3) is not allowed with adhesion=RateDependentAdhesion"),
+    (RATE_TABLE + '[layer]\nh = 5e-3\n', "[simulation] adhesion=RateDependentAdhesion(dgamma0=0.01, dgamma1=0.15, v_ref=1e-06, n=0.5) "
+     "(RateDependentAdhesion) is not allowed on layer h = 0.005 m"),
 ])
 def test_a_bad_adhesion_table_is_named_when_the_study_is_read(tmp_path, table, fragment):
     path = study_file(tmp_path, '[simulation]\nscenario = "A"\nalpha = [20]\nmethod = "continuum"\n' + table)
