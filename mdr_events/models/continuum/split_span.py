@@ -70,6 +70,10 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
     quadrature = True
 
     def __init__(self, model: ContinuumModel, anchors: SplitAnchorMap, span: Span, sliding: dict):
+        #: ``(var, instant)`` of the last :meth:`instant` asked (``None``: none yet)
+        self._last_instant = None
+        #: the edge's region and the cap the spring there is at (:meth:`edge_shift`; ``None``: not yet asked)
+        self._edge = None
         super().__init__(model, anchors, span, sliding)
 
     def lay_out(self, anchors: SplitAnchorMap, sliding: dict) -> None:
@@ -185,7 +189,8 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         float
             The depth (m).
         """
-        return self.segment.d(self.time_of(var))
+        last = self._last_instant  # (the instant remembered, else the depth alone: lay_out asks before x_c is known)
+        return last[1][3] if last is not None and last[0] == var else self.segment.d(self.time_of(var))
 
     def boundary(self, var: float) -> float:
         """``x_c`` at the integration variable: the radius on a branch without adhesion, 0 in tension (at the start
@@ -201,7 +206,7 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         float
             ``x_c`` (m).
         """
-        return self._boundary_at(var, self.radius_of(var), self.depth_of(var))
+        return self.instant(var)[4]
 
     def _boundary_at(self, var: float, a: float, depth: float) -> float:
         """:meth:`boundary` where the radius ``a`` and the depth at ``var`` are known."""
@@ -222,12 +227,18 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         Returns
         -------
         tuple of float
-            The time (s), the radius, the indenter's position, the depth and ``x_c`` (m).
+            The time (s), the radius, the indenter's position, the depth and ``x_c`` (m; the last variable's
+            remembered: the event functions read the instant of the panel's end the right-hand side read last).
         """
+        last = self._last_instant
+        if last is not None and last[0] == var:
+            return last[1]
         t = self.time_of(var)
         a = self.radius_of(var)
         depth = self.segment.d(t)
-        return t, a, self.segment.x(t), depth, self._boundary_at(var, a, depth)
+        found = (t, a, self.segment.x(t), depth, self._boundary_at(var, a, depth))
+        self._last_instant = (var, found)
+        return found
 
     def extent(self, region: Region, var: float) -> tuple[float, float]:
         """The region's springs ``[lower, upper]`` at the integration variable.
@@ -244,8 +255,8 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         tuple of float
             ``(lower, upper)`` (m).
         """
-        boundary = self.boundary(var)
-        return (0.0, boundary) if region is Region.COMPRESSED else (boundary, self.radius_of(var))
+        _, a, _, _, boundary = self.instant(var)
+        return (0.0, boundary) if region is Region.COMPRESSED else (boundary, a)
 
     def region_level(self, key: Key, var: float) -> float:
         """The level of the cap of the region (:meth:`~.regions.Region.level`) at the integration variable.
@@ -263,8 +274,8 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
             The level (m).
         """
         region, cap = key
-        t = self.time_of(var)
-        return region.level(cap, self.segment.x(t), self.K, self.kappa, self.radius_of(var), self.segment.d(t))
+        _, a, x, depth, _ = self.instant(var)
+        return region.level(cap, x, self.K, self.kappa, a, depth)
 
     def rate(self, region: Region, cap: Cap | float, var: float) -> float:
         """A quantity with the sign of ``σ d(level)/dt`` of the region's cap (:meth:`~.span.SpanIntegrator.rate`).
@@ -380,11 +391,13 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         float
             The shift (m).
         """
-        edge = self._edge_region()
-        for cap in Cap:
-            layout = self.layouts.get((edge, cap))
-            if layout is not None and layout.at_cap(1):
-                return cap * self.K * a
+        if self._edge is None:  # (the edge's region and the cap it is at, if any: the layouts keep still)
+            edge = self._edge_region()
+            self._edge = (edge, next((cap for cap in Cap if (edge, cap) in self.layouts
+                                      and self.layouts[(edge, cap)].at_cap(1)), None))
+        edge, cap = self._edge
+        if cap is not None:
+            return cap * self.K * a
         return x - self.maps.of(edge).value(a)
 
     # --- spans without integration ----------------------------------------------------------------
