@@ -27,7 +27,7 @@ from scipy import optimize
 from .branch import Branch
 from .tolerances import EPS
 
-__all__ = ["Shape", "Formula", "FormulaPiece", "TURN_GRID", "QUADRATURE_NODES"]
+__all__ = ["Shape", "Formula", "FormulaPiece", "TURN_GRID", "QUADRATURE_NODES", "RADIUS_CACHE_SIZE"]
 
 #: Points (log-spaced over the shape's reach) at which a formula's slope is sampled for a change of sign: its turns
 #: lie between them (a sum of three smooth terms of ``ξ`` changes sign once or twice at most; 1e-9 of the reach is
@@ -45,6 +45,9 @@ INVERSE_GRID = 33
 VALUE_ULPS = 8
 #: Steps of :meth:`Formula.inverses` at most (as many halvings would take a monotone interval below its ulp).
 BISECTION_STEPS = 64
+#: Radii :meth:`Shape.radius` remembers at most (then it forgets them all): a run asks a few dozen depths more than
+#: once, and the events a new one at each evaluation
+RADIUS_CACHE_SIZE = 1024
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(QUADRATURE_NODES)
 
 
@@ -66,6 +69,8 @@ class Shape:
     def __init__(self, hertz: Branch, grow: Branch, shrink: Branch, rtol: float, reach: float):
         self.hertz, self.grow, self.rtol, self.reach = hertz, grow, rtol, reach
         self.branches = {"grow": grow, "shrink": shrink}
+        #: the radii of depths asked, by branch and depth (:meth:`radius`; at most :data:`RADIUS_CACHE_SIZE`)
+        self.radius_cache: dict[tuple[str, float], float] = {}
         #: the turns of each kind of formula, by its coefficients (:meth:`Formula.turns`)
         self.turn_cache: dict[tuple, tuple[float, ...]] = {}
         #: the grid the turns are bracketed on and the slopes there, by the radius's branch (:meth:`turn_grid`)
@@ -115,9 +120,16 @@ class Shape:
         Returns
         -------
         float
-            The radius (m; ``nan`` below the branch's fold).
+            The radius (m; ``nan`` below the branch's fold; remembered: a part's ends, read by the layouts of a span
+            and of the transition before it and by the sliding fraction, ask for the same depths again, each a root).
         """
-        return self.branches[name].radius(depth, self.rtol)
+        key = (name, depth)
+        found = self.radius_cache.get(key)
+        if found is None:
+            if len(self.radius_cache) >= RADIUS_CACHE_SIZE:  # (the events' moving extents ask new depths each time)
+                self.radius_cache.clear()
+            found = self.radius_cache[key] = self.branches[name].radius(depth, self.rtol)
+        return found
 
     def turn_grid(self, name: str | None) -> tuple[np.ndarray, tuple]:
         """The grid of :data:`TURN_GRID` points (and the knots of ``g``) up to :meth:`limit` on which a formula's turns
