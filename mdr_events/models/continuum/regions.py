@@ -15,6 +15,8 @@ import enum
 import math
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from .formulas import Formula, Shape
 from .state import Cap, Slip, ZoneSummary, NO_ZONE
 
@@ -304,6 +306,35 @@ class RegionLayout:
             xi = self.parts[index].inverse(level)
             start, end = self._ends(index, lower, upper)
             total += max(xi - start if at_start else end - xi, 0.0)
+        return total
+
+    def sizes(self, levels: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
+        """:meth:`size` at several instants at once (vectorised: each front's roots by
+        :meth:`~.formulas.Formula.inverses` on its monotone interval).
+
+        Parameters
+        ----------
+        levels : numpy.ndarray
+            The cap's level at each instant (m), as the cap sees the anchors.
+        lower : numpy.ndarray
+            The region's start at each (m).
+        upper : numpy.ndarray
+            Its end at each (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The sizes (m).
+        """
+        total = np.full(np.shape(levels), self.inner)
+        for index in self.moving_in:
+            start, end = self._ends(index, lower, upper)
+            total = total + (end - start)
+        for index, at_start in self.fronts:
+            p = self.parts[index]
+            xi = p.formula.inverses(levels, p.low, p.high)
+            start, end = self._ends(index, lower, upper)
+            total = total + np.maximum(xi - start if at_start else end - xi, 0.0)
         return total
 
     def end_value(self, end: int, lower: float, upper: float) -> float:

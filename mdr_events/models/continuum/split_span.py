@@ -29,6 +29,7 @@ from .span import Span, SpanIntegrator, SpanOutcome, Trigger
 from .split_events import SplitEvents
 from .split_layouts import KEYS, Ends, Instant, Key, STILL, crossing_formula, lay_out_regions, split_lengths
 from .split_map import SpanMaps, SplitAnchorMap
+from .split_zones import SpanZones
 from .state import Cap, Regime, Slip
 from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE
 from .zones import EDGE_LEAVING_TOLERANCES, cap_travel, indenter_travel
@@ -530,6 +531,8 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         Returns
         -------
         SpanOutcome
-            With :attr:`~.span.SpanOutcome.maps` and :attr:`~.span.SpanOutcome.sliding`.
+            With :attr:`~.span.SpanOutcome.maps` and :attr:`~.span.SpanOutcome.sliding` (the span keeps its layouts:
+            ``Span.zones``, what its sliding fraction is read off).
         """
+        self.span.zones = SpanZones(self.layouts, self.shape, self.pressed, self.x_c_is_edge)
         return outcome._replace(maps=self.maps, sliding=dict(self.sliding))
