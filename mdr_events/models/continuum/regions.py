@@ -11,6 +11,7 @@ of the anchors at a moving end may be what the level reaches next. What each reg
 
 from __future__ import annotations
 
+import bisect
 import enum
 import math
 from dataclasses import dataclass, field
@@ -20,7 +21,12 @@ import numpy as np
 from .formulas import Formula, Shape
 from .state import Cap, Slip, ZoneSummary, NO_ZONE
 
-__all__ = ["Region", "Part", "RegionLayout", "combined_summary"]
+__all__ = ["Region", "Part", "RegionLayout", "combined_summary", "START_SCAN"]
+
+#: Points of a part's scan (evenly over its monotone interval) whose chord about a level starts Newton's iteration for
+#: its root (:meth:`Part.start_of`): read once per part, one value each (no root), and a start that depends on the
+#: level alone (two or three steps, as the last roots' secant took)
+START_SCAN = 33
 
 
 class Region(enum.Enum):
@@ -124,7 +130,8 @@ class Part:
     end: float
     low: float
     high: float
-    #: what :meth:`inverse` keeps between calls: the formula's values at ``low``, ``high``, the last two roots and levels
+    #: what is read once and kept: the formula's values at ``low``, ``high`` and the part's ends, the scan of
+    #: :meth:`start_of`
     memo: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
 
     def value(self, xi: float) -> float:
@@ -184,19 +191,43 @@ class Part:
         Returns
         -------
         float
-            ``ξ`` (m).
+            ``ξ`` (m): Newton's iteration started from the chord of the part's scan about ``level``
+            (:meth:`start_of`), so that a root depends on the level alone, not on the roots asked before.
         """
+        return self.formula.inverse(level, self.low, self.high, self.start_of(level), self._ends())
+
+    def start_of(self, level: float) -> float | None:
+        """Newton's start for ``level``: the chord of the two points of the part's scan about it (:data:`START_SCAN`
+        points evenly over the monotone interval, read once, the first time asked; ``None`` where the formula's
+        inverse does not start from one: a closed form, or a radius ``A(g)`` that ``brentq`` brackets).
+
+        Parameters
+        ----------
+        level : float
+            The level (m).
+
+        Returns
+        -------
+        float or None
+            The start (m), strictly inside the monotone interval, or ``None``.
+        """
+        formula = self.formula
+        if formula.gamma or not (formula.alpha and formula.beta):
+            return None
         memo = self.memo
-        guess, last = memo.get("root"), memo.get("last")
-        if last is not None and last[0] != memo["level"]:  # (the secant through the last two roots, extended)
-            extended = guess + (guess - last[1]) * (level - memo["level"]) / (memo["level"] - last[0])
-            if self.low < extended < self.high:
-                guess = extended
-        root = self.formula.inverse(level, self.low, self.high, guess, self._ends())
-        if "root" in memo:
-            memo["last"] = (memo["level"], memo["root"])
-        memo["root"], memo["level"] = root, level
-        return root
+        if "scan" not in memo:
+            width = self.high - self.low
+            points = [self.low + width * k / (START_SCAN - 1) for k in range(START_SCAN)]
+            values = [formula.value(xi) for xi in points]
+            rising = values[-1] >= values[0]
+            memo["scan"] = (points, values if rising else [-v for v in values], 1.0 if rising else -1.0)
+        points, values, sign = memo["scan"]
+        target = sign * level
+        cell = min(max(bisect.bisect_right(values, target), 1), START_SCAN - 1)
+        low, high = values[cell - 1], values[cell]
+        share = (target - low) / (high - low) if high > low else 0.5
+        start = points[cell - 1] + min(max(share, 0.0), 1.0) * (points[cell] - points[cell - 1])
+        return start if self.low < start < self.high else 0.5 * (points[cell - 1] + points[cell])
 
 
 class Role(enum.Enum):
