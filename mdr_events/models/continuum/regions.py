@@ -227,6 +227,16 @@ class Part:
         low, high = values[cell - 1], values[cell]
         share = (target - low) / (high - low) if high > low else 0.5
         start = points[cell - 1] + min(max(share, 0.0), 1.0) * (points[cell] - points[cell - 1])
+        # the inverse parabola through the cell's points and the nearer neighbour (a start a power of the cell's width
+        # closer: Newton's second step then settles), where it stays in the cell
+        third = cell + 1 if cell + 1 < START_SCAN and (cell < 2 or share > 0.5) else cell - 2
+        if 0 <= third < START_SCAN and low < high:
+            ys, xs = (values[cell - 1], values[cell], values[third]), (points[cell - 1], points[cell], points[third])
+            if len(set(ys)) == 3:
+                curved = sum(xs[i] * math.prod((target - ys[j]) / (ys[i] - ys[j]) for j in range(3) if j != i)
+                             for i in range(3))
+                if points[cell - 1] < curved < points[cell]:
+                    start = curved
         return start if self.low < start < self.high else 0.5 * (points[cell - 1] + points[cell])
 
 
