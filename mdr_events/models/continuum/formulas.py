@@ -319,6 +319,33 @@ class Formula:
             total += self.gamma * rate / branch.slope(branch.radius(shape.hertz.depth(xi), shape.rtol))
         return total
 
+    def value_and_slope(self, xi: float) -> tuple[float, float]:
+        """:meth:`value` and :meth:`slope` at one ``ξ > 0`` at once, each as those give it (Newton's iteration reads
+        both at every step).
+
+        Parameters
+        ----------
+        xi : float
+            The spring's coordinate ``ξ`` (m).
+
+        Returns
+        -------
+        tuple of float
+            ``Y(ξ)`` (m) and ``dY/dξ`` (1).
+        """
+        if self.gamma:
+            return self.value(xi), self.slope(xi)
+        shape, alpha, beta, d_ref = self.shape, self.alpha, self.beta, self.d_ref
+        total, rising = self.x0, 0.0
+        if alpha:
+            total += alpha * (shape.hertz.depth(xi) - d_ref)
+            rising += alpha * shape.hertz.slope(xi)
+        if beta:
+            grow = shape.grow
+            total += beta * (grow.depth(xi) - d_ref)
+            rising += beta * grow.slope(xi)
+        return total, rising
+
     def slopes(self, xi: np.ndarray) -> np.ndarray:
         """:meth:`slope` at an array of ``ξ > 0``, the radii ``A(g(ξ))`` found at once (the branches' vectorised
         roots, to double precision as the scalar ones), the branches' slopes too (:meth:`~.branch.Branch.slopes`).
@@ -620,14 +647,14 @@ def warm_root(formula: Formula, level: float, bracket: tuple[float, float], abov
     tolerance = ROOT_XTOL * high
     xi = guess
     for _ in range(NEWTON_STEPS):
-        excess = formula.value(xi) - level
+        value, slope = formula.value_and_slope(xi)
+        excess = value - level
         if excess == 0.0:
             return xi
         if (excess > 0.0) == above_at_lower:
             low = xi
         else:
             high = xi
-        slope = formula.slope(xi)
         step = excess / slope if slope else math.inf
         following = xi - step
         if not low <= following <= high:  # (a step of zero from an iterate the bracket just closed on is inside)

@@ -23,9 +23,9 @@ from .state import Cap, Slip, ZoneSummary, NO_ZONE
 
 __all__ = ["Region", "Part", "RegionLayout", "combined_summary", "START_SCAN"]
 
-#: Points of a part's scan (evenly over its monotone interval) whose chord about a level starts Newton's iteration for
-#: its root (:meth:`Part.start_of`): read once per part, one value each (no root), and a start that depends on the
-#: level alone (two or three steps, as the last roots' secant took)
+#: Points of a part's scan (evenly over its springs) whose inverse parabola about a level starts Newton's iteration
+#: for its root (:meth:`Part.start_of`): read once per part, one value each (no root), and a start that depends on the
+#: level alone (two steps mostly, three at most but a few: as the last roots' secant took)
 START_SCAN = 33
 
 
@@ -197,9 +197,11 @@ class Part:
         return self.formula.inverse(level, self.low, self.high, self.start_of(level), self._ends())
 
     def start_of(self, level: float) -> float | None:
-        """Newton's start for ``level``: the chord of the two points of the part's scan about it (:data:`START_SCAN`
-        points evenly over the monotone interval, read once, the first time asked; ``None`` where the formula's
-        inverse does not start from one: a closed form, or a radius ``A(g)`` that ``brentq`` brackets).
+        """Newton's start for ``level``: the inverse parabola through the two points of the part's scan about it and
+        the nearer neighbour, where it stays between those two, else their chord (:data:`START_SCAN` points evenly
+        over the part's springs, or its monotone interval where it has none, read once, the first time asked; ``None``
+        where the formula's inverse does not start from one: a closed form, or a radius ``A(g)`` that ``brentq``
+        brackets).
 
         Parameters
         ----------
@@ -215,9 +217,10 @@ class Part:
         if formula.gamma or not (formula.alpha and formula.beta):
             return None
         memo = self.memo
-        if "scan" not in memo:
-            width = self.high - self.low
-            points = [self.low + width * k / (START_SCAN - 1) for k in range(START_SCAN)]
+        if "scan" not in memo:  # (over the part's springs, where its fronts are; a part of zero length: its interval)
+            first, last = (self.start, self.end) if self.end > self.start else (self.low, self.high)
+            width = last - first
+            points = [first + width * k / (START_SCAN - 1) for k in range(START_SCAN)]
             values = [formula.value(xi) for xi in points]
             rising = values[-1] >= values[0]
             memo["scan"] = (points, values if rising else [-v for v in values], 1.0 if rising else -1.0)
@@ -228,15 +231,16 @@ class Part:
         share = (target - low) / (high - low) if high > low else 0.5
         start = points[cell - 1] + min(max(share, 0.0), 1.0) * (points[cell] - points[cell - 1])
         # the inverse parabola through the cell's points and the nearer neighbour (a start a power of the cell's width
-        # closer: Newton's second step then settles), where it stays in the cell
+        # closer: Newton's second step then mostly settles), where it stays in the cell
         third = cell + 1 if cell + 1 < START_SCAN and (cell < 2 or share > 0.5) else cell - 2
-        if 0 <= third < START_SCAN and low < high:
-            ys, xs = (values[cell - 1], values[cell], values[third]), (points[cell - 1], points[cell], points[third])
-            if len(set(ys)) == 3:
-                curved = sum(xs[i] * math.prod((target - ys[j]) / (ys[i] - ys[j]) for j in range(3) if j != i)
-                             for i in range(3))
-                if points[cell - 1] < curved < points[cell]:
-                    start = curved
+        if 0 <= third < START_SCAN and low < high and values[third] not in (low, high):
+            other = values[third]
+            below, above, beyond = target - low, target - high, target - other
+            curved = (points[cell - 1] * above * beyond / ((low - high) * (low - other))
+                      + points[cell] * below * beyond / ((high - low) * (high - other))
+                      + points[third] * below * above / ((other - low) * (other - high)))
+            if points[cell - 1] < curved < points[cell]:
+                start = curved
         return start if self.low < start < self.high else 0.5 * (points[cell - 1] + points[cell])
 
 

@@ -121,9 +121,10 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
                               default=0.0)
         self.next_break = self._next_break(boundary) if self.direction else None
         self.break_depth = self.shape.hertz.depth(self.next_break) if self.next_break is not None else math.nan
-        # each layout with what its level and extent need, read once: (key, layout, σ, the region's weight, compressed)
-        self.keyed = [(key, layout, float(key[1]), key[0].weight, key[0] is Region.COMPRESSED)
-                      for key, layout in self.layouts.items()]
+        # each layout with what its level and extent need, read once: (key, layout, σ, the region's weight, compressed,
+        # whether its size is its fixed inner parts' alone: no front, no part with a moving end)
+        self.keyed = [(key, layout, float(key[1]), key[0].weight, key[0] is Region.COMPRESSED,
+                       not (layout.fronts or layout.moving_in)) for key, layout in self.layouts.items()]
         self.graded = self._grading()
 
     def _ends(self) -> dict[Region, Ends]:
@@ -337,7 +338,7 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         tau0_part, kappa = self.K * a, self.kappa  # (Region.level's terms, in its order)
         return {key: layout.size(x - sign * (tau0_part + weight * kappa * depth), *((0.0, boundary) if compressed
                                                                                    else (boundary, a)))
-                for key, layout, sign, weight, compressed in self.keyed}
+                for key, layout, sign, weight, compressed, _ in self.keyed}
 
     def rhs(self, var: float, y) -> list[float]:
         """``dF_x/da`` (moving radius) or ``dF_x/dt`` (pinned): module docstring.
@@ -358,9 +359,9 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         _, a, x, depth, boundary = self.instant(var)
         tau0_part, kappa = self.K * a, self.kappa  # (as _sizes_at, the sums in its order)
         at_caps = compressed = held = 0.0
-        for _, layout, sign, weight, in_compressed in self.keyed:
-            size = layout.size(x - sign * (tau0_part + weight * kappa * depth),
-                               *((0.0, boundary) if in_compressed else (boundary, a)))
+        for _, layout, sign, weight, in_compressed, still in self.keyed:
+            size = layout.inner if still else layout.size(x - sign * (tau0_part + weight * kappa * depth),
+                                                          *((0.0, boundary) if in_compressed else (boundary, a)))
             at_caps += sign * size
             held += size
             if in_compressed:
