@@ -19,7 +19,7 @@ neighbouring turns so that a slip front moves smoothly past a piece's end.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 from scipy import optimize
@@ -242,7 +242,8 @@ class Formula:
         """
         if shift == 0.0:
             return self
-        return replace(self, x0=self.x0 - shift * self.d_ref, alpha=self.alpha - shift)
+        return Formula(self.shape, self.x0 - shift * self.d_ref, self.alpha - shift, self.beta, self.d_ref, self.gamma,
+                       self.radius_of)
 
     # --- values --------------------------------------------------------------------------------
     def value(self, xi: float) -> float:
