@@ -139,3 +139,26 @@ def test_materialising_the_play_operators_keeps_the_force():
     pieces = list(anchors.pieces)
     anchors.clip_caps(x, caps, depth, radius)
     assert anchors.pieces == pieces
+
+
+@pytest.mark.parametrize("profile", [None, PowerLaw(2e5, 3.0)], ids=["paraboloid", "n3"])
+def test_a_parts_roots_depend_on_the_level_alone(profile):
+    """``Part.inverse`` of a growth as a compressed cap sees it (``x0 + α (g − d_ref) + β (d0 − d_ref)``, Newton's
+    iteration): the same levels asked in three orders of one part give the same roots bit for bit (its start is the
+    chord of the part's scan about the level, not the roots asked before), each a root to ROOT_RTOL."""
+    from mdr_events.models.continuum.regions import Part
+    shape = _shape(profile)
+    formula = Formula(shape, 1e-5, alpha=-0.45, beta=2.75, d_ref=0.0)
+    low, high = formula.monotone_interval(2e-4, 2e-3)
+    part = Part(formula, 2e-4, 2e-3, low, high)
+    levels = formula.values(np.linspace(2.5e-4, 1.9e-3, 40))
+    orders = [np.arange(40), np.arange(40)[::-1], np.random.default_rng(3).permutation(40)]
+    roots = []
+    for order in orders:
+        found = np.empty(40)
+        for index in order:
+            found[index] = part.inverse(float(levels[index]))
+        roots.append(found)
+    np.testing.assert_array_equal(roots[0], roots[1])
+    np.testing.assert_array_equal(roots[0], roots[2])
+    np.testing.assert_allclose(formula.values(roots[0]), levels, rtol=ROOT_RTOL, atol=0)

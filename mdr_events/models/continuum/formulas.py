@@ -19,7 +19,7 @@ neighbouring turns so that a slip front moves smoothly past a piece's end.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 from scipy import optimize
@@ -27,7 +27,7 @@ from scipy import optimize
 from .branch import Branch
 from .tolerances import EPS
 
-__all__ = ["Shape", "Formula", "FormulaPiece", "TURN_GRID", "QUADRATURE_NODES"]
+__all__ = ["Shape", "Formula", "FormulaPiece", "TURN_GRID", "QUADRATURE_NODES", "RADIUS_CACHE_SIZE"]
 
 #: Points (log-spaced over the shape's reach) at which a formula's slope is sampled for a change of sign: its turns
 #: lie between them (a sum of three smooth terms of ``ξ`` changes sign once or twice at most; 1e-9 of the reach is
@@ -45,6 +45,9 @@ INVERSE_GRID = 33
 VALUE_ULPS = 8
 #: Steps of :meth:`Formula.inverses` at most (as many halvings would take a monotone interval below its ulp).
 BISECTION_STEPS = 64
+#: Radii :meth:`Shape.radius` remembers at most (then it forgets them all): a run asks a few dozen depths more than
+#: once, and the events a new one at each evaluation
+RADIUS_CACHE_SIZE = 1024
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(QUADRATURE_NODES)
 
 
@@ -66,6 +69,8 @@ class Shape:
     def __init__(self, hertz: Branch, grow: Branch, shrink: Branch, rtol: float, reach: float):
         self.hertz, self.grow, self.rtol, self.reach = hertz, grow, rtol, reach
         self.branches = {"grow": grow, "shrink": shrink}
+        #: the radii of depths asked, by branch and depth (:meth:`radius`; at most :data:`RADIUS_CACHE_SIZE`)
+        self.radius_cache: dict[tuple[str, float], float] = {}
         #: the turns of each kind of formula, by its coefficients (:meth:`Formula.turns`)
         self.turn_cache: dict[tuple, tuple[float, ...]] = {}
         #: the grid the turns are bracketed on and the slopes there, by the radius's branch (:meth:`turn_grid`)
@@ -115,9 +120,16 @@ class Shape:
         Returns
         -------
         float
-            The radius (m; ``nan`` below the branch's fold).
+            The radius (m; ``nan`` below the branch's fold; remembered: a part's ends, read by the layouts of a span
+            and of the transition before it and by the sliding fraction, ask for the same depths again, each a root).
         """
-        return self.branches[name].radius(depth, self.rtol)
+        key = (name, depth)
+        found = self.radius_cache.get(key)
+        if found is None:
+            if len(self.radius_cache) >= RADIUS_CACHE_SIZE:  # (the events' moving extents ask new depths each time)
+                self.radius_cache.clear()
+            found = self.radius_cache[key] = self.branches[name].radius(depth, self.rtol)
+        return found
 
     def turn_grid(self, name: str | None) -> tuple[np.ndarray, tuple]:
         """The grid of :data:`TURN_GRID` points (and the knots of ``g``) up to :meth:`limit` on which a formula's turns
@@ -230,7 +242,8 @@ class Formula:
         """
         if shift == 0.0:
             return self
-        return replace(self, x0=self.x0 - shift * self.d_ref, alpha=self.alpha - shift)
+        return Formula(self.shape, self.x0 - shift * self.d_ref, self.alpha - shift, self.beta, self.d_ref, self.gamma,
+                       self.radius_of)
 
     # --- values --------------------------------------------------------------------------------
     def value(self, xi: float) -> float:
@@ -306,6 +319,33 @@ class Formula:
             branch = shape.branches[self.radius_of]
             total += self.gamma * rate / branch.slope(branch.radius(shape.hertz.depth(xi), shape.rtol))
         return total
+
+    def value_and_slope(self, xi: float) -> tuple[float, float]:
+        """:meth:`value` and :meth:`slope` at one ``ξ > 0`` at once, each as those give it (Newton's iteration reads
+        both at every step).
+
+        Parameters
+        ----------
+        xi : float
+            The spring's coordinate ``ξ`` (m).
+
+        Returns
+        -------
+        tuple of float
+            ``Y(ξ)`` (m) and ``dY/dξ`` (1).
+        """
+        if self.gamma:
+            return self.value(xi), self.slope(xi)
+        shape, alpha, beta, d_ref = self.shape, self.alpha, self.beta, self.d_ref
+        total, rising = self.x0, 0.0
+        if alpha:
+            total += alpha * (shape.hertz.depth(xi) - d_ref)
+            rising += alpha * shape.hertz.slope(xi)
+        if beta:
+            grow = shape.grow
+            total += beta * (grow.depth(xi) - d_ref)
+            rising += beta * grow.slope(xi)
+        return total, rising
 
     def slopes(self, xi: np.ndarray) -> np.ndarray:
         """:meth:`slope` at an array of ``ξ > 0``, the radii ``A(g(ξ))`` found at once (the branches' vectorised
@@ -608,14 +648,14 @@ def warm_root(formula: Formula, level: float, bracket: tuple[float, float], abov
     tolerance = ROOT_XTOL * high
     xi = guess
     for _ in range(NEWTON_STEPS):
-        excess = formula.value(xi) - level
+        value, slope = formula.value_and_slope(xi)
+        excess = value - level
         if excess == 0.0:
             return xi
         if (excess > 0.0) == above_at_lower:
             low = xi
         else:
             high = xi
-        slope = formula.slope(xi)
         step = excess / slope if slope else math.inf
         following = xi - step
         if not low <= following <= high:  # (a step of zero from an iterate the bracket just closed on is inside)

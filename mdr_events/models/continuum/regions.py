@@ -11,14 +11,22 @@ of the anchors at a moving end may be what the level reaches next. What each reg
 
 from __future__ import annotations
 
+import bisect
 import enum
 import math
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from .formulas import Formula, Shape
 from .state import Cap, Slip, ZoneSummary, NO_ZONE
 
-__all__ = ["Region", "Part", "RegionLayout", "combined_summary"]
+__all__ = ["Region", "Part", "RegionLayout", "combined_summary", "START_SCAN"]
+
+#: Points of a part's scan (evenly over its springs) whose inverse parabola about a level starts Newton's iteration
+#: for its root (:meth:`Part.start_of`): read once per part, one value each (no root), and a start that depends on the
+#: level alone (two steps mostly, three at most but a few: as the last roots' secant took)
+START_SCAN = 33
 
 
 class Region(enum.Enum):
@@ -122,7 +130,8 @@ class Part:
     end: float
     low: float
     high: float
-    #: what :meth:`inverse` keeps between calls: the formula's values at ``low``, ``high``, the last two roots and levels
+    #: what is read once and kept: the formula's values at ``low``, ``high`` and the part's ends, the scan of
+    #: :meth:`start_of`
     memo: dict = field(default_factory=dict, compare=False, hash=False, repr=False)
 
     def value(self, xi: float) -> float:
@@ -182,19 +191,57 @@ class Part:
         Returns
         -------
         float
-            ``ξ`` (m).
+            ``ξ`` (m): Newton's iteration started from the chord of the part's scan about ``level``
+            (:meth:`start_of`), so that a root depends on the level alone, not on the roots asked before.
         """
+        return self.formula.inverse(level, self.low, self.high, self.start_of(level), self._ends())
+
+    def start_of(self, level: float) -> float | None:
+        """Newton's start for ``level``: the inverse parabola through the two points of the part's scan about it and
+        the nearer neighbour, where it stays between those two, else their chord (:data:`START_SCAN` points evenly
+        over the part's springs, or its monotone interval where it has none, read once, the first time asked; ``None``
+        where the formula's inverse does not start from one: a closed form, or a radius ``A(g)`` that ``brentq``
+        brackets).
+
+        Parameters
+        ----------
+        level : float
+            The level (m).
+
+        Returns
+        -------
+        float or None
+            The start (m), strictly inside the monotone interval, or ``None``.
+        """
+        formula = self.formula
+        if formula.gamma or not (formula.alpha and formula.beta):
+            return None
         memo = self.memo
-        guess, last = memo.get("root"), memo.get("last")
-        if last is not None and last[0] != memo["level"]:  # (the secant through the last two roots, extended)
-            extended = guess + (guess - last[1]) * (level - memo["level"]) / (memo["level"] - last[0])
-            if self.low < extended < self.high:
-                guess = extended
-        root = self.formula.inverse(level, self.low, self.high, guess, self._ends())
-        if "root" in memo:
-            memo["last"] = (memo["level"], memo["root"])
-        memo["root"], memo["level"] = root, level
-        return root
+        if "scan" not in memo:  # (over the part's springs, where its fronts are; a part of zero length: its interval)
+            first, last = (self.start, self.end) if self.end > self.start else (self.low, self.high)
+            width = last - first
+            points = [first + width * k / (START_SCAN - 1) for k in range(START_SCAN)]
+            values = [formula.value(xi) for xi in points]
+            rising = values[-1] >= values[0]
+            memo["scan"] = (points, values if rising else [-v for v in values], 1.0 if rising else -1.0)
+        points, values, sign = memo["scan"]
+        target = sign * level
+        cell = min(max(bisect.bisect_right(values, target), 1), START_SCAN - 1)
+        low, high = values[cell - 1], values[cell]
+        share = (target - low) / (high - low) if high > low else 0.5
+        start = points[cell - 1] + min(max(share, 0.0), 1.0) * (points[cell] - points[cell - 1])
+        # the inverse parabola through the cell's points and the nearer neighbour (a start a power of the cell's width
+        # closer: Newton's second step then mostly settles), where it stays in the cell
+        third = cell + 1 if cell + 1 < START_SCAN and (cell < 2 or share > 0.5) else cell - 2
+        if 0 <= third < START_SCAN and low < high and values[third] not in (low, high):
+            other = values[third]
+            below, above, beyond = target - low, target - high, target - other
+            curved = (points[cell - 1] * above * beyond / ((low - high) * (low - other))
+                      + points[cell] * below * beyond / ((high - low) * (high - other))
+                      + points[third] * below * above / ((other - low) * (other - high)))
+            if points[cell - 1] < curved < points[cell]:
+                start = curved
+        return start if self.low < start < self.high else 0.5 * (points[cell - 1] + points[cell])
 
 
 class Role(enum.Enum):
@@ -304,6 +351,35 @@ class RegionLayout:
             xi = self.parts[index].inverse(level)
             start, end = self._ends(index, lower, upper)
             total += max(xi - start if at_start else end - xi, 0.0)
+        return total
+
+    def sizes(self, levels: np.ndarray, lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
+        """:meth:`size` at several instants at once (vectorised: each front's roots by
+        :meth:`~.formulas.Formula.inverses` on its monotone interval).
+
+        Parameters
+        ----------
+        levels : numpy.ndarray
+            The cap's level at each instant (m), as the cap sees the anchors.
+        lower : numpy.ndarray
+            The region's start at each (m).
+        upper : numpy.ndarray
+            Its end at each (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The sizes (m).
+        """
+        total = np.full(np.shape(levels), self.inner)
+        for index in self.moving_in:
+            start, end = self._ends(index, lower, upper)
+            total = total + (end - start)
+        for index, at_start in self.fronts:
+            p = self.parts[index]
+            xi = p.formula.inverses(levels, p.low, p.high)
+            start, end = self._ends(index, lower, upper)
+            total = total + np.maximum(xi - start if at_start else end - xi, 0.0)
         return total
 
     def end_value(self, end: int, lower: float, upper: float) -> float:

@@ -166,7 +166,7 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
             out["sliding_fraction"] = zone_sliding
         return out
     if sliding:
-        zones = span.anchors.sliding_length(model.caps, x, d, a)
+        zones = (span.zones if span.zones is not None else span.anchors).sliding_length(model.caps, x, d, a)
         with np.errstate(invalid="ignore", divide="ignore"):
             out["sliding_fraction"] = np.where(a > 0, np.minimum(zones / a, 1.0), np.nan)
     return out

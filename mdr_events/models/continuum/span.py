@@ -83,6 +83,9 @@ class Span:
         The length (m) the radius is measured in as the integration variable (the time: 1).
     grading : Grading, optional
         The integration variable graded towards the span's stop (:mod:`.graded`): the interpolant is in ``u``.
+    zones : SpanZones, optional
+        The layouts of a span of ``"tau0+coulomb"`` with adhesion (:mod:`.split_zones`): its sliding length is read
+        off them (``None``: off :attr:`anchors`).
     """
 
     t_start: float
@@ -99,6 +102,8 @@ class Span:
     # (the variable graded towards the span's stop, :mod:`.graded`; ``None``: not. Documented in the class's
     # docstring alone: numpydoc reads a documented attribute's value, and ``None`` has no docstring)
     grading: Grading | None = None
+    # (the layouts of a split span, :mod:`.split_zones`; ``None``: none. Documented in the class's docstring alone)
+    zones: object = None
 
 
 class Trigger(enum.Enum):

@@ -71,6 +71,9 @@ class SplitAnchorMap:
     def __init__(self, shape: Shape, pieces: list[FormulaPiece] | None = None):
         self.shape = shape
         self.pieces: list[FormulaPiece] = list(pieces or [])
+        #: the parts already cut (:meth:`parts`), by shift and extent, with the list of pieces they were cut from:
+        #: every operation that changes the map gives it a new list, which makes them stale
+        self._parts_cut: tuple[list[FormulaPiece], dict] = (self.pieces, {})
         #: ``(t, x_c)``: the path time and the compression boundary the map was last joined at
         #: (:meth:`SpanMaps.joined`): a span starting then splits its regions exactly there, not at ``x_c`` recomputed
         #: to another rounding
@@ -114,7 +117,7 @@ class SplitAnchorMap:
             The radius (m).
         """
         if self.pieces and self.pieces[-1].end != end:
-            self.pieces[-1] = dataclasses.replace(self.pieces[-1], end=end)
+            self.pieces = self.pieces[:-1] + [dataclasses.replace(self.pieces[-1], end=end)]
 
     def truncate(self, radius: float) -> None:
         """Forget the springs beyond ``radius`` (they have detached).
@@ -216,8 +219,21 @@ class SplitAnchorMap:
         Returns
         -------
         list of Part
-            The parts, in order.
+            The parts, in order (a new list; the parts themselves are those cut the first time the same shift and
+            extent were asked of these pieces: the layouts of a transition and of the span after it share them, and
+            what each part reads once, its values at its ends and its scan, is read once for both).
         """
+        pieces, cut = self._parts_cut
+        if pieces is not self.pieces:
+            cut = {}
+            self._parts_cut = (self.pieces, cut)
+        key = (shift, lower, upper)
+        if key not in cut:
+            cut[key] = self._cut(shift, lower, upper)
+        return list(cut[key])
+
+    def _cut(self, shift: float, lower: float, upper: float) -> list[Part]:
+        """:meth:`parts`, cut anew."""
         out = []
         for p in self.pieces:
             start, end = max(p.start, lower), min(p.end, upper)

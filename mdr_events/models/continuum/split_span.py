@@ -29,6 +29,7 @@ from .span import Span, SpanIntegrator, SpanOutcome, Trigger
 from .split_events import SplitEvents
 from .split_layouts import KEYS, Ends, Instant, Key, STILL, crossing_formula, lay_out_regions, split_lengths
 from .split_map import SpanMaps, SplitAnchorMap
+from .split_zones import SpanZones
 from .state import Cap, Regime, Slip
 from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE
 from .zones import EDGE_LEAVING_TOLERANCES, cap_travel, indenter_travel
@@ -70,6 +71,10 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
     quadrature = True
 
     def __init__(self, model: ContinuumModel, anchors: SplitAnchorMap, span: Span, sliding: dict):
+        #: ``(var, instant)`` of the last :meth:`instant` asked (``None``: none yet)
+        self._last_instant = None
+        #: the edge's region and the cap the spring there is at (:meth:`edge_shift`; ``None``: not yet asked)
+        self._edge = None
         super().__init__(model, anchors, span, sliding)
 
     def lay_out(self, anchors: SplitAnchorMap, sliding: dict) -> None:
@@ -116,9 +121,10 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
                               default=0.0)
         self.next_break = self._next_break(boundary) if self.direction else None
         self.break_depth = self.shape.hertz.depth(self.next_break) if self.next_break is not None else math.nan
-        # each layout with what its level and extent need, read once: (key, layout, σ, the region's weight, compressed)
-        self.keyed = [(key, layout, float(key[1]), key[0].weight, key[0] is Region.COMPRESSED)
-                      for key, layout in self.layouts.items()]
+        # each layout with what its level and extent need, read once: (key, layout, σ, the region's weight, compressed,
+        # whether its size is its fixed inner parts' alone: no front, no part with a moving end)
+        self.keyed = [(key, layout, float(key[1]), key[0].weight, key[0] is Region.COMPRESSED,
+                       not (layout.fronts or layout.moving_in)) for key, layout in self.layouts.items()]
         self.graded = self._grading()
 
     def _ends(self) -> dict[Region, Ends]:
@@ -185,7 +191,8 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         float
             The depth (m).
         """
-        return self.segment.d(self.time_of(var))
+        last = self._last_instant  # (the instant remembered, else the depth alone: lay_out asks before x_c is known)
+        return last[1][3] if last is not None and last[0] == var else self.segment.d(self.time_of(var))
 
     def boundary(self, var: float) -> float:
         """``x_c`` at the integration variable: the radius on a branch without adhesion, 0 in tension (at the start
@@ -201,7 +208,7 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         float
             ``x_c`` (m).
         """
-        return self._boundary_at(var, self.radius_of(var), self.depth_of(var))
+        return self.instant(var)[4]
 
     def _boundary_at(self, var: float, a: float, depth: float) -> float:
         """:meth:`boundary` where the radius ``a`` and the depth at ``var`` are known."""
@@ -222,12 +229,18 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         Returns
         -------
         tuple of float
-            The time (s), the radius, the indenter's position, the depth and ``x_c`` (m).
+            The time (s), the radius, the indenter's position, the depth and ``x_c`` (m; the last variable's
+            remembered: the event functions read the instant of the panel's end the right-hand side read last).
         """
+        last = self._last_instant
+        if last is not None and last[0] == var:
+            return last[1]
         t = self.time_of(var)
         a = self.radius_of(var)
         depth = self.segment.d(t)
-        return t, a, self.segment.x(t), depth, self._boundary_at(var, a, depth)
+        found = (t, a, self.segment.x(t), depth, self._boundary_at(var, a, depth))
+        self._last_instant = (var, found)
+        return found
 
     def extent(self, region: Region, var: float) -> tuple[float, float]:
         """The region's springs ``[lower, upper]`` at the integration variable.
@@ -244,8 +257,8 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         tuple of float
             ``(lower, upper)`` (m).
         """
-        boundary = self.boundary(var)
-        return (0.0, boundary) if region is Region.COMPRESSED else (boundary, self.radius_of(var))
+        _, a, _, _, boundary = self.instant(var)
+        return (0.0, boundary) if region is Region.COMPRESSED else (boundary, a)
 
     def region_level(self, key: Key, var: float) -> float:
         """The level of the cap of the region (:meth:`~.regions.Region.level`) at the integration variable.
@@ -263,8 +276,8 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
             The level (m).
         """
         region, cap = key
-        t = self.time_of(var)
-        return region.level(cap, self.segment.x(t), self.K, self.kappa, self.radius_of(var), self.segment.d(t))
+        _, a, x, depth, _ = self.instant(var)
+        return region.level(cap, x, self.K, self.kappa, a, depth)
 
     def rate(self, region: Region, cap: Cap | float, var: float) -> float:
         """A quantity with the sign of ``σ d(level)/dt`` of the region's cap (:meth:`~.span.SpanIntegrator.rate`).
@@ -325,7 +338,7 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         tau0_part, kappa = self.K * a, self.kappa  # (Region.level's terms, in its order)
         return {key: layout.size(x - sign * (tau0_part + weight * kappa * depth), *((0.0, boundary) if compressed
                                                                                    else (boundary, a)))
-                for key, layout, sign, weight, compressed in self.keyed}
+                for key, layout, sign, weight, compressed, _ in self.keyed}
 
     def rhs(self, var: float, y) -> list[float]:
         """``dF_x/da`` (moving radius) or ``dF_x/dt`` (pinned): module docstring.
@@ -346,9 +359,9 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         _, a, x, depth, boundary = self.instant(var)
         tau0_part, kappa = self.K * a, self.kappa  # (as _sizes_at, the sums in its order)
         at_caps = compressed = held = 0.0
-        for _, layout, sign, weight, in_compressed in self.keyed:
-            size = layout.size(x - sign * (tau0_part + weight * kappa * depth),
-                               *((0.0, boundary) if in_compressed else (boundary, a)))
+        for _, layout, sign, weight, in_compressed, still in self.keyed:
+            size = layout.inner if still else layout.size(x - sign * (tau0_part + weight * kappa * depth),
+                                                          *((0.0, boundary) if in_compressed else (boundary, a)))
             at_caps += sign * size
             held += size
             if in_compressed:
@@ -380,11 +393,13 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         float
             The shift (m).
         """
-        edge = self._edge_region()
-        for cap in Cap:
-            layout = self.layouts.get((edge, cap))
-            if layout is not None and layout.at_cap(1):
-                return cap * self.K * a
+        if self._edge is None:  # (the edge's region and the cap it is at, if any: the layouts keep still)
+            edge = self._edge_region()
+            self._edge = (edge, next((cap for cap in Cap if (edge, cap) in self.layouts
+                                      and self.layouts[(edge, cap)].at_cap(1)), None))
+        edge, cap = self._edge
+        if cap is not None:
+            return cap * self.K * a
         return x - self.maps.of(edge).value(a)
 
     # --- spans without integration ----------------------------------------------------------------
@@ -517,6 +532,8 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         Returns
         -------
         SpanOutcome
-            With :attr:`~.span.SpanOutcome.maps` and :attr:`~.span.SpanOutcome.sliding`.
+            With :attr:`~.span.SpanOutcome.maps` and :attr:`~.span.SpanOutcome.sliding` (the span keeps its layouts:
+            ``Span.zones``, what its sliding fraction is read off).
         """
+        self.span.zones = SpanZones(self.layouts, self.shape, self.pressed, self.x_c_is_edge)
         return outcome._replace(maps=self.maps, sliding=dict(self.sliding))
