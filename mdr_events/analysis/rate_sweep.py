@@ -30,12 +30,37 @@ from mdr_events.models.paths import Path
 if TYPE_CHECKING:
     from mdr_events.models.methods import Continuum
 
-__all__ = ["rate_continuum_quantities", "rate_tangential_work", "HISTORY_NAMES"]
+__all__ = ["rate_continuum_quantities", "rate_tangential_work", "check_rate_sweep_run", "HISTORY_NAMES"]
 
 #: The history's quantities (rows), as :data:`~mdr_events.analysis.sweep_runs.HISTORY_QUANTITIES` names them.
 HISTORY_NAMES = ("normal_force", "tangential_force", "contact_area")
 #: The events that end a run's contact (the paper's law logs a pull-off, the rate law the contact's end).
 _ENDS = (EventKind.PULL_OFF, EventKind.CONTACT_ENDS)
+
+
+def check_rate_sweep_run(model: ModelJob) -> None:
+    """Refuse, before a sweep runs, what its continuum runs of the rate law do not take: Coulomb's part.
+
+    :func:`~mdr_events.models.continuum.rate_shifts.solve_rate_shifts` holds one cap for every spring (``τ0``'s);
+    ``simulate``'s continuum method runs Coulomb's part spring by spring (``continuum.rate_coulomb``), whose cost
+    (about 10 ms of CPU an output time) a sweep's quantities (its work read at Gauss nodes on every step) would
+    multiply. Each cell refused so at run time before.
+
+    Parameters
+    ----------
+    model : ModelJob
+        A run's contact along its motion (its adhesion the rate-dependent law).
+
+    Raises
+    ------
+    ValueError
+        A friction law with Coulomb's part: one line naming it, the law and what runs it.
+    """
+    if model.friction.law != "tau0":
+        raise ValueError(f"friction={model.friction!r} is not allowed in a continuum sweep with "
+                         f"adhesion={model.adhesion!r} (Coulomb's part: each spring its own cap); allowed: "
+                         "FrictionLaw('tau0') (Coulomb's part under this law: method='discrete' sweeps it, "
+                         "simulate(..., method='continuum') runs it one run at a time)")
 
 
 def rate_tangential_work(shifts: RateShifts, breaks: np.ndarray) -> float:

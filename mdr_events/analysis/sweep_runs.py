@@ -26,7 +26,7 @@ from typing import Callable, NamedTuple, Sequence
 import numpy as np
 
 from mdr_events.analysis.fit import curves_of
-from mdr_events.analysis.rate_sweep import rate_continuum_quantities
+from mdr_events.analysis.rate_sweep import check_rate_sweep_run, rate_continuum_quantities
 from mdr_events.analysis.samples import candidate_events, sliding as sliding_samples
 from mdr_events.contact import Contact
 from mdr_events.contact.adhesion import RateDependentAdhesion
@@ -369,9 +369,11 @@ def discrete_quantities(model: ModelJob, path: Path, method: Discrete, limits: L
 #: A run's quantities and history by the method's name.
 #: What a method's quantities take beyond what the method does, by its name: the continuum's read the spans of
 #: ``solve_path`` (the branches of an edge rule) or a law's own run (:data:`CONTINUUM_QUANTITIES`, the rate-dependent
-#: law's), so a law with neither is refused before the sweep runs.
+#: law's, which takes ``τ0``'s cap alone: ``rate_sweep.check_rate_sweep_run``), so a law with neither is refused
+#: before the sweep runs.
 METHOD_CHECKS: dict[str, Callable[[ModelJob], None]] = {
-    "continuum": lambda model: None if type(model.adhesion) in CONTINUUM_QUANTITIES else check_edge_known(model.adhesion)}
+    "continuum": lambda model: (check_rate_sweep_run(model) if type(model.adhesion) in CONTINUUM_QUANTITIES
+                                else check_edge_known(model.adhesion))}
 
 METHOD_QUANTITIES: dict[str, Callable[..., tuple[dict[str, float], np.ndarray | None]]] = {
     Continuum.name: continuum_quantities, Discrete.name: discrete_quantities}

@@ -89,3 +89,14 @@ def test_the_closed_form_angles_alone_are_refused_under_the_rate_law():
                      quantities=("critical_angle_A",))
     with pytest.raises(ValueError, match="the closed forms are rate independent; allowed"):
         spec.check([1e-6])
+
+
+@pytest.mark.parametrize("friction", [me.FrictionLaw("coulomb", mu=0.3), me.FrictionLaw("tau0+coulomb", mu=0.3, tau0=3e4)])
+def test_coulombs_part_under_the_rate_law_is_refused_before_a_continuum_sweep_runs(friction):
+    """Each cell failed at run time (``solve_rate_shifts`` holds τ0's cap alone) once ``simulate``'s continuum took
+    Coulomb's part under the law; the sweep now refuses it before it runs, naming what runs it."""
+    contact = dataclasses.replace(rate_contact(), friction=friction)
+    spec = SweepSpec(contact, me.Scenario("A", [20.0]), Continuum(), ("adhesion.v_ref",))
+    with pytest.raises(ValueError, match=r"not allowed in a continuum sweep with adhesion=RateDependentAdhesion.*"
+                                         r"allowed: FrictionLaw\('tau0'\)"):
+        spec.check([1e-6])
