@@ -5,6 +5,8 @@ first order in Δx, and simulate runs it (before, it was refused)."""
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -234,3 +236,18 @@ def test_the_flat_punch_runs_too():
     force = _play(path, law, TAU0_COULOMB, punch).tangential_force(times)
     np.testing.assert_allclose(force[held], reference[held], rtol=0.0,
                                atol=LIMIT_RTOL * np.max(np.abs(reference[held])))
+
+
+@pytest.mark.parametrize("law", ["coulomb", "tau0+coulomb"])
+def test_a_law_with_coulombs_part_at_mu_zero_runs_as_its_tau0_part(law):
+    """``μ = 0`` passed the law's check and was then refused inside the run by ``solve_rate_shifts`` (a message
+    that pointed to the very method that raised it): the route takes it, and gives the τ0 part alone (nothing for
+    ``"coulomb"``), within the route's agreement with the closed-form play (:data:`SAME_RTOL`)."""
+    friction = me.FrictionLaw(law, mu=0.0) if law == "coulomb" else me.FrictionLaw(law, mu=0.0, tau0=BASE.friction.tau0)
+    method = me.Continuum(samples=SAMPLES)
+    motion = me.Scenario("A", [20.0])
+    rate = dataclasses.replace(BASE, adhesion=LAW)
+    got = me.simulate(dataclasses.replace(rate, friction=friction), motion, method)["tangential_force"].values
+    tau0 = me.simulate(rate, motion, method)["tangential_force"].values
+    want = np.zeros_like(tau0) if law == "coulomb" else tau0
+    np.testing.assert_allclose(got, want, rtol=0.0, atol=SAME_RTOL * np.nanmax(np.abs(tau0)))

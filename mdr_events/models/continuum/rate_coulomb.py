@@ -49,7 +49,8 @@ __all__ = ["run_rate_coulomb", "check_rate_friction_law", "takes_rate_coulomb"]
 
 
 def takes_rate_coulomb(friction: FrictionLaw) -> bool:
-    """Whether the rate-dependent continuum runs ``friction`` spring by spring (a law with Coulomb's part, ``μ > 0``).
+    """Whether the rate-dependent continuum runs ``friction`` spring by spring (a law with Coulomb's part, ``μ = 0``
+    included: it was refused inside the run before).
 
     Parameters
     ----------
@@ -61,7 +62,7 @@ def takes_rate_coulomb(friction: FrictionLaw) -> bool:
     bool
         Whether :func:`run_rate_coulomb` runs it.
     """
-    return friction.coulomb_mu > 0.0
+    return friction.law != "tau0"  # (μ = 0 too: the route is exact there; solve_rate_shifts takes τ0's cap alone)
 
 
 def check_rate_friction_law(friction: FrictionLaw, law: RateDependentAdhesion | None = None) -> None:
