@@ -435,11 +435,18 @@ class RateFitJob:
 
     @staticmethod
     def determined(result: xr.Dataset) -> bool:
-        """Whether every value of the fit ``result`` is determined: a finite standard error and interval."""
+        """Whether every value of the fit ``result`` is determined: the solver converged (``status > 0``: not stopped at
+        its evaluation limit), every standard error and interval finite, and ``n`` (if free) inside its bounds
+        (:data:`~mdr_events.analysis.rate_fit.N_BOUNDS`: at a bound the linearised interval ignores it)."""
         import numpy as np
 
-        return bool(all(np.all(np.isfinite(result[name].values))
-                        for name in ("standard_error", "interval_lower", "interval_upper")))
+        from mdr_events.analysis.rate_fit import N_BOUNDS
+
+        finite = all(np.all(np.isfinite(result[name].values))
+                     for name in ("standard_error", "interval_lower", "interval_upper"))
+        names = [str(name) for name in result["parameter"].values]
+        inside = "n" not in names or N_BOUNDS[0] < float(result["estimate"].values[names.index("n")]) < N_BOUNDS[1]
+        return bool(finite and int(result.attrs["status"]) > 0 and inside)
 
     def write(self, result: xr.Dataset, out: FilePath) -> list[FileOutcome]:
         """Write ``<stem>.nc`` into ``out``."""

@@ -130,3 +130,26 @@ def test_a_bad_fit_table_of_the_rate_law_is_named_when_the_study_is_read(tmp_pat
     study.write_text('[path]\nwaypoints = [[0.0, 0.0], [0.0, 3e-4]]\n' + rate + "[fit]\n" + fit
                      + '[output]\ndirectory = "out"\n')
     assert fragment in one_line_naming(lambda: load_study(study), "[fit]", StudyError)
+
+
+def _fit_result(n: float, status: int):
+    """A joint fit's result as :func:`fit_rate_adhesion` lays it out (v_ref and n free), finite errors and intervals."""
+    import xarray as xr
+
+    names = ["v_ref", "n"]
+    return xr.Dataset({"estimate": ("parameter", [1e-6, n]), "standard_error": ("parameter", [1e-8, 0.01]),
+                       "interval_lower": ("parameter", [0.9e-6, n - 0.02]),
+                       "interval_upper": ("parameter", [1.1e-6, n + 0.02])},
+                      coords={"parameter": names}, attrs={"status": status})
+
+
+@pytest.mark.parametrize("n, status, determined", [
+    (0.6, 1, True),   # converged, inside the bounds
+    (0.6, 0, False),  # least_squares stopped at its evaluation limit: exit 0 before
+    (1.0, 1, False),  # n on its upper bound: the linearised interval ignores the bound (exit 0 before)
+    (1e-3, 2, False),  # n on its lower bound
+])
+def test_the_joint_fit_is_determined_only_when_it_converged_inside_the_bounds(n, status, determined):
+    from mdr_events.app.jobs import RateFitJob
+
+    assert RateFitJob.determined(_fit_result(n, status)) is determined
