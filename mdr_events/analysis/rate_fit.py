@@ -24,7 +24,7 @@ from typing import NamedTuple
 
 import numpy as np
 import xarray as xr
-from scipy import optimize, stats
+from scipy import optimize
 
 from mdr_events.analysis.fit_diagnostics import exp_or_inf, scaled_or_inf
 from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS, check_rate_factor
@@ -326,6 +326,8 @@ def _result(solution, names, free, values_of, measurements, forces, weights, sol
     s2 = 1.0 if known else float(residual @ residual) / dof
     covariance = s2 * np.linalg.pinv(jacobian.T @ jacobian)
     error = np.sqrt(np.maximum(np.diag(covariance), 0.0))
+    from scipy import stats  # (here: the module registers its schema on every result's write, stats costs ~0.1 s)
+
     quantile = float(stats.norm.ppf(0.5 + CONFIDENCE / 2.0))
     theta = solution.x
     natural = values_of(theta)
