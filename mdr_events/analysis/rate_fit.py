@@ -147,6 +147,20 @@ def _law(values: dict[str, float]) -> RateDependentAdhesion:
     return RateDependentAdhesion(values["dgamma0"], values["dgamma1"], values["v_ref"], values["n"])
 
 
+class TrialBeyondLaw(Exception):
+    """A trial step of the fit to values no law has (rejected as a law whose edge is not followed)."""
+
+
+def _trial(params: Parameters, values: dict[str, float]) -> tuple[RateDependentAdhesion, Parameters]:
+    """The law of a trial's ``values`` and the parameters with its works, or :class:`TrialBeyondLaw` where no law has
+    them (``dgamma1 < dgamma0`` with both free, or a log-scaled value beyond the double range): they raised
+    ``OverflowError`` or named, as the user's, a value the user never gave (round eighteen)."""
+    try:
+        return _law(values), params.replace(dgamma0=values["dgamma0"], dgamma1=values["dgamma1"])
+    except ValueError:
+        raise TrialBeyondLaw from None
+
+
 def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameters, start: RateDependentAdhesion,
                       free: Sequence[str] = ("v_ref", "n"), offsets: bool = False,
                       profile: SimulatedProfile = None, *, limits: Limits = DEFAULT_LIMITS) -> xr.Dataset:
@@ -216,20 +230,12 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
             solves[0] += len(measurements)  # (each trial's solves counted as they come: 1000 curves ran for hours)
             limits.check(f"the fit's {count} curve(s) ({solves[0]} solves of the edge so far)",
                          steps=solves[0] * EDGE_SOLVE_STEPS)
-            try:  # (a trial beyond what a law can be, e.g. dgamma1 < dgamma0 with both free, or exp beyond the
-                # double range, is rejected as one whose edge is not followed: it raised OverflowError or named a
-                # value the user never gave)
-                law = _law(values)
-                trial = params.replace(dgamma0=values["dgamma0"], dgamma1=values["dgamma1"])
-            except ValueError:
-                rejected[0] += 1
-                curves[key] = None
-                return None
             try:
+                law, trial = _trial(params, values)
                 curves[key] = [solve_edge(trial, m.path, law, profile=profile, rtol=RATE_FIT_RTOL,
                                           method=RATE_FIT_METHOD).normal_force(np.asarray(m.times, dtype=float), m.path)
                                for m in measurements]
-            except EdgeUnresolved:
+            except (EdgeUnresolved, TrialBeyondLaw):
                 rejected[0] += 1
                 curves[key] = None
         return curves[key]

@@ -132,7 +132,8 @@ class RestartGuard:
     resolved to (``SEGMENT_RESOLUTION`` of the time): too many of the first mean the solver is
     stuck; of the second, that the slip zones chatter (a zone opening at an edge and leaving through it again and
     again, each a span of ~1e-12 of the time: the cone under Coulomb's law alone at mu = 1.5e6 in scenario B, 4e-9 s
-    apart from t = 1177 s, 4e5 spans to the pull-off; tens of minutes), which is refused with what to do instead."""
+    apart from t = 1177 s, 4e5 spans to the pull-off; tens of minutes, a zone of no width since laid out as none by
+    :func:`edge_zone_beside_full`), which is refused with what to do instead."""
 
     def __init__(self, friction: FrictionLaw | None = None) -> None:
         self.stalled, self.last, self.chattering, self.friction = 0, -math.inf, 0, friction

@@ -44,7 +44,8 @@ MAX_RESTARTS = 50
 #: and the run is refused (``RestartGuard`` of ``continuum.solve``). Runs that end were seen with
 #: up to 3215 in a row (a power law c r^3 under Coulomb's law, mu = 1e5, scenario B at 80°: 4.6 s in all), the
 #: chatter that did not end (a cone at mu = 1e6, scenario B at 20°) needed 4e5 to reach the pull-off: six times the
-#: most seen in a run that ends, a few seconds of spans.
+#: most seen in a run that ends, a few seconds of spans. That chatter was a zone of no width laid out at the shrinking
+#: edge (``solve.edge_zone_beside_full``, round eighteen) and runs now; the guard stays, a net for any other.
 MAX_CHATTER_SPANS = 20_000
 #: Machine epsilon of the floats used.
 EPS = float(np.finfo(float).eps)
