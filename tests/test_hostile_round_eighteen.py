@@ -193,3 +193,28 @@ def test_an_abbreviated_option_is_not_taken_for_another(capsys, tmp_path, argv, 
     err = cli_one_line(capsys, argv[:1] + argv[1:] + (["--out", str(tmp_path / "o")] if len(argv) > 2 else []))
     assert f"unrecognized argument(s) {named}" in err and "allowed: the options listed by" in err
     assert not (tmp_path / "o").exists()
+
+
+# --- S5: the continuum's cases escaped the limits where each had few output times: Limits.samples counted output
+# times alone, while a case's cost is its solve (13 ms here with 11 output times as with 2001); a study of 1e5 angles
+# at samples = 11 (1.1e6 output times, accepted) ran past 5 minutes (23 min of CPU) ---------------------------------
+
+def test_many_cases_of_few_samples_are_counted_by_their_solves():
+    from mdr_events.models.continuum.tolerances import SOLVE_SAMPLES
+
+    cases = int(me.Limits().samples // SOLVE_SAMPLES) + 1  # (5000 allowed: about a minute)
+    angles = list(np.linspace(0.5, 89.5, cases))
+    with pytest.raises(me.ResourceLimitError) as raised:
+        me.simulate(CONTACT, "A", angles, "continuum", samples=11)
+    message = str(raised.value)
+    assert f"({cases} case(s) of 11 output times, each case's solve counted as {SOLVE_SAMPLES})" in message, message
+    assert me.simulate(CONTACT, "A", angles[:2], "continuum", samples=11)["time"].size == 11  # (a few: as before)
+
+
+def test_a_study_of_many_angles_at_few_samples_is_refused_at_once(capsys, tmp_path):
+    study = tmp_path / "study.toml"
+    angles = ", ".join(f"{value:.6f}" for value in np.linspace(0.5, 89.5, 100_000))
+    study.write_text(f'[simulation]\nscenario = "A"\nalpha = [{angles}]\nmethod = "continuum"\nsamples = 11\n'
+                     '[output]\ndirectory = "out"\n')
+    err = cli_one_line(capsys, ["run", str(study)])
+    assert "100000 case(s) of 11 output times" in err and not (tmp_path / "out").exists()

@@ -35,7 +35,7 @@ from .split_map import SplitAnchorMap
 from .split_solve import commit, new_anchors, split_slip_transition
 from .split_span import SplitSpanIntegrator
 from .state import CONTACT_ENDING, NO_ZONE, Cap, ContactState, Event, EventKind, Regime, Slip, ZoneSummary, zone_events
-from .tolerances import MAX_CHATTER_SPANS, MAX_RESTARTS, SEGMENT_RESOLUTION, Tolerances, check_tolerances
+from .tolerances import MAX_CHATTER_SPANS, MAX_RESTARTS, SEGMENT_RESOLUTION, Tolerances, check_output, check_tolerances
 from .zones import lay_out_zones
 
 
@@ -413,8 +413,7 @@ def run_continuum(model: KernelModel | Parameters, paths: list[Path], times: np.
     else:
         samples, times = None, check_output_times("times", times)
     n_time = samples if samples is not None else len(times)
-    limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
-                 memory=n_time * len(paths) * BYTES_PER_SAMPLE)
+    check_output(limits, len(paths), n_time, BYTES_PER_SAMPLE)
     params, profile, friction, adhesion, layer = as_kernel_model(model)
     solutions = [solve_path(params, path, tolerances, limits, profile, friction, adhesion, layer) for path in paths]
     if samples is not None:
