@@ -218,3 +218,34 @@ def test_a_study_of_many_angles_at_few_samples_is_refused_at_once(capsys, tmp_pa
                      '[output]\ndirectory = "out"\n')
     err = cli_one_line(capsys, ["run", str(study)])
     assert "100000 case(s) of 11 output times" in err and not (tmp_path / "out").exists()
+
+
+# --- S6: a path whose name is not UTF-8 (a byte such as 0xff, which Linux allows and Python hands over as a surrogate)
+# was refused in the codec's words ("'utf-8' codec can't encode character '\udcff' ... surrogates not allowed", no
+# argument named): the check of a name's length encoded it as UTF-8, not as the file system does ------------------
+
+def test_an_output_directory_whose_name_is_not_utf8_takes_the_run(tmp_path):
+    """In its own process, its output a terminal's bytes (surrogateescape, as Python's C.UTF-8 locale sets it):
+    pytest's capture is strict UTF-8 and would refuse to print the path the CLI names."""
+    import os
+    import subprocess
+    import sys
+
+    out = tmp_path / "bad\udcff"
+    done = subprocess.run([sys.executable, "-m", "mdr_events.app.cli", "simulate", "--scenario", "A", "--alpha", "20",
+                           "--method", "continuum", "--out", str(out)], capture_output=True,
+                          env=dict(os.environ, PYTHONIOENCODING="utf-8:surrogateescape"), timeout=SUBPROCESS_BOUND)
+    assert done.returncode == 0, done.stderr
+    assert sorted(name.suffix for name in out.iterdir()) == [".csv", ".nc", ".png"]
+
+
+#: Seconds the CLI's process is given: an interpreter that imports the package and runs one continuum case (about 3
+#: s alone; ten times that on this shared 2-core machine under load).
+SUBPROCESS_BOUND = 120
+
+
+def test_a_name_not_utf8_too_long_is_named_by_its_bytes():
+    from mdr_events.io.files import prepare_output_directory
+
+    with pytest.raises(ValueError, match="has 256 bytes, more than a file system's 255"):
+        prepare_output_directory("/tmp/" + "\udcff" * 256, "--out")
