@@ -133,7 +133,7 @@ class RestartGuard:
     stuck; of the second, that the slip zones chatter (a zone opening at an edge and leaving through it again and
     again, each a span of ~1e-12 of the time: the cone under Coulomb's law alone at mu = 1.5e6 in scenario B, 4e-9 s
     apart from t = 1177 s, 4e5 spans to the pull-off; tens of minutes, a zone of no width since laid out as none by
-    :func:`edge_zone_beside_full`), which is refused with what to do instead."""
+    ``edge_zone_beside_full``), which is refused with what to do instead."""
 
     def __init__(self, friction: FrictionLaw | None = None) -> None:
         self.stalled, self.last, self.chattering, self.friction = 0, -math.inf, 0, friction
@@ -316,7 +316,7 @@ def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOut
 
 
 def edge_zone_beside_full(model: ContinuumModel, summary: ZoneSummary, other: ZoneSummary) -> ZoneSummary:
-    """``summary`` of one cap's zone, :data:`~.state.NO_ZONE` where it is a zone at the edge alone while every spring
+    """``summary`` of one cap's zone, ``NO_ZONE`` where it is a zone at the edge alone while every spring
     sits at the other cap under Coulomb's law alone (``K = 0``; the chatter of issue 32, round seventeen R4).
 
     A spring at the other cap carries ``u = ∓ū(ξ)`` with ``ū = κ (d − g(ξ)) ≥ 0`` (13); it reaches this cap,

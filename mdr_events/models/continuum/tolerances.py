@@ -108,7 +108,7 @@ def check_tolerances(tolerances) -> Tolerances:
 
 def check_output(limits, cases: int, n_time: int, bytes_per_sample: float) -> None:
     """Check a continuum run of ``cases`` cases of ``n_time`` output times each against ``limits`` (a
-    :class:`~mdr_events.limits.Limits`): the samples, each case's solve counted as :data:`SOLVE_SAMPLES` at least, and
+    :class:`~mdr_events.limits.Limits`): the samples, each case's solve counted as ``SOLVE_SAMPLES`` at least, and
     the memory of the output (``bytes_per_sample`` each).
 
     Parameters
