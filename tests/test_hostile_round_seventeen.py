@@ -20,7 +20,7 @@ import pytest
 import warnings
 
 import mdr_events as me
-from hostile_checks import one_line_naming, cli_one_line
+from hostile_checks import cli_one_line
 from mdr_events.app.cli import main
 
 CONTACT = me.Contact.paper()
@@ -216,25 +216,9 @@ def test_derive_prints_every_relation(capsys):
 # compressed zone's slip zone at the shrinking edge opened and left again every 4e-9 s (1e-12 of the time, the event
 # times' resolution) from t = 1177 s on, 4e5 spans to the pull-off ------------------------------------------------
 
-#: CPU seconds a refused chatter takes at most: the run to t = 1177 s (about 2 s on this machine alone) and the
-#: MAX_CHATTER_SPANS spans of the chatter that identify it (about 17 s); the run that chattered took tens of minutes.
-CHATTER_CPU_BOUND = 60.0
-
-
-@pytest.mark.slow  # (the MAX_CHATTER_SPANS spans before the refusal: about 20 s of CPU each)
-@pytest.mark.parametrize("mu", [1e6, 3e6])
-def test_a_chattering_slip_zone_is_refused_not_followed(mu):
-    contact = me.Contact(CONTACT.elastomer, me.PowerLaw(0.5, 1.0), CONTACT.adhesion, me.FrictionLaw("coulomb", mu=mu))
-    start = time.process_time()
-    message = one_line_naming(lambda: me.simulate(contact, "B", 20.0, "continuum"), f"mu={mu!r}")
-    assert "method='discrete'" in message and time.process_time() - start < CHATTER_CPU_BOUND
-
-
-@pytest.mark.slow  # (as above)
-def test_a_chattering_run_is_one_line_of_the_cli(capsys, tmp_path):
-    err = cli_one_line(capsys, ["simulate", "--scenario", "B", "--alpha", "20", "--method", "continuum", "--friction",
-                                "coulomb", "--mu", "1.5e6", "--power-law", "0.5", "1", "--out", str(tmp_path / "o")])
-    assert "mu=1500000.0" in err and not (tmp_path / "o").exists()
+# (The refusal these cases were given was lifted in round eighteen, S1: the chatter was a zone of no width laid out at
+# the shrinking edge, a fault of the layout, not physics; tests/test_hostile_round_eighteen.py runs them and checks them
+# against the discrete model's convergence.)
 
 
 @pytest.mark.parametrize("profile, mu, alpha", [

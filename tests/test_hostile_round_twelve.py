@@ -151,9 +151,10 @@ RATE_LAW = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-6, 0.6)
      "the springs slide before d_max at every angle up to 90° - 1e-6 rad"),
     (lambda: me.phase_diagram_at_speeds(PAPER, RATE_LAW, [], [20.0]), "speeds=[] is not allowed"),
     (lambda: me.phase_diagram_at_speeds(PAPER, RATE_LAW, [1e-6], np.linspace(1.0, 89.0, 100_000)),
-     "the phase diagram at 1 speeds and 100000 angles (445808 solves of the edge)"),
+     "the phase diagram at 1 speeds and 100000 angles, a solve each at least (100000 solves of the edge)"),
+    # (counted before the angles are read, at one solve each: round eighteen)
     (lambda: me.critical_angles_at_speeds(PAPER, RATE_LAW, np.linspace(1e-9, 1e-5, 2000)),
-     "the critical angles at 2000 speeds"),
+     "critical_angles_at_speeds of 2000 speeds"),
     (lambda: me.critical_angle_at_speed(PAPER, RATE_LAW, 1e3), "jumps in over 5.34e-06 s, beyond the path's end"),
 ])
 def test_the_rate_angles_name_what_they_cannot_compute(call, named):

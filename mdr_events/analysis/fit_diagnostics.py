@@ -116,6 +116,10 @@ def identifiability_of(jacobian: np.ndarray, theta: np.ndarray, lower: np.ndarra
     inverse = np.where(seen, 1.0 / np.where(seen, singular, 1.0) ** 2, 0.0)
     covariance = (vt.T * inverse) @ vt * variance_scale
     unseen = np.any(np.abs(vt[~seen]) > math.sqrt(RCOND), axis=0) if np.any(~seen) else np.zeros(theta.size, bool)
+    # fewer residuals than parameters: the directions beyond vt's rows are not seen either (each parameter's share of
+    # them, 1 - its squared norm over vt's rows; rounding, ~1e-16, where vt is square); round eighteen: two samples
+    # and four free values gave the fourth a standard error of 0
+    unseen |= 1.0 - np.sum(vt**2, axis=0) > RCOND
     standard_error = np.sqrt(np.maximum(np.diag(covariance), 0.0))
     standard_error[unseen] = math.inf
     verdicts = []

@@ -27,7 +27,7 @@ slip with the point where the edge lets go (:mod:`~mdr_events.analysis.rate_let_
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
 import numpy as np
@@ -108,11 +108,12 @@ def _job(contact, speeds, old: tuple, law, profile, d_max, method: str, limits, 
     (:func:`~mdr_events.analysis.rate_job.rate_job`, the speeds' grid and each speed's scales): ``params``, the law,
     the profile, the speeds, the method and the limits."""
     job = rate_job(contact, speeds, old, law, profile, d_max, what)
-    speeds = _grid("speeds", job.speeds, "finite numbers > 0 (m/s)", lambda v: v > 0.0)
+    limits = job.options.get("limits", limits)
+    speeds = _grid("speeds", job.speeds, "finite numbers > 0 (m/s)", lambda v: v > 0.0,
+                   lambda count: _check_solves(limits, f"{what} of {count} speeds", CRITICAL_ANGLE_SOLVES * count))
     for speed in speeds:
         _checked(job.params, job.law, speed, job.profile)
-    return (job.params, job.law, job.profile, speeds, job.options.get("method", method),
-            job.options.get("limits", limits))
+    return job.params, job.law, job.profile, speeds, job.options.get("method", method), limits
 
 
 def check_rate_factor(law: RateDependentAdhesion, speed: float, name: str = "law") -> None:
@@ -143,15 +144,19 @@ def check_rate_factor(law: RateDependentAdhesion, speed: float, name: str = "law
                          "fit)")
 
 
-def _grid(name: str, values, allowed: str, valid) -> list[float]:
-    """A non-empty 1-D grid of speeds or angles, each checked (``name[i]`` named), else a one-line error."""
+def _grid(name: str, values, allowed: str, valid, counted: Callable[[int], None] | None = None) -> list[float]:
+    """A non-empty 1-D grid of speeds or angles, each checked (``name[i]`` named), else a one-line error; ``counted``
+    is given the grid's size before any value is read (the solves it asks for counted against the limits: 1e8 speeds
+    were read one by one, minutes and gigabytes, before they were refused)."""
     unordered = (str, bytes, set, dict, Iterator)  # (a generator was read as one value: "speeds[0]=<generator ...>")
-    array = np.asarray(values, dtype=object)
+    array = values if isinstance(values, np.ndarray) else np.asarray(values, dtype=object)
     if array.ndim > 1 or array.size == 0 or isinstance(values, unordered):
         raise (TypeError if isinstance(values, unordered) else ValueError)(
             f"{name}={shown(values)} is not allowed; allowed: a non-empty 1-D sequence of {allowed}")
+    if counted is not None:
+        counted(int(array.size))
     checked = [check_real(f"{name}[{index}]", value, allowed, valid)
-               for index, value in enumerate(np.atleast_1d(array))]
+               for index, value in enumerate(np.atleast_1d(array).astype(object))]
     check_distinct(name, checked, values)
     return checked
 
@@ -292,7 +297,6 @@ def critical_angles_at_speeds(contact: Contact | Parameters, speeds: Sequence[fl
     """
     params, law, profile, speeds, method, limits = _job(contact, speeds, old, law, profile, d_max, method, limits,
                                                         "critical_angles_at_speeds")
-    _check_solves(limits, f"the critical angles at {len(speeds)} speeds", CRITICAL_ANGLE_SOLVES * len(speeds))
     angles = np.array([critical_angle_at_speed(params, law, speed, profile, EDGE_RTOL, method) for speed in speeds])
     radii = np.array([_radius_at_depth(params, law, speed, math.radians(angle), profile, EDGE_RTOL, method)
                       if angle < 90.0 else math.nan for speed, angle in zip(speeds, angles)])
@@ -404,8 +408,11 @@ def phase_diagram_at_speeds(params: Parameters, law: RateDependentAdhesion, spee
     ValueError
         A speed or angle out of range, or what :func:`slip_onset_depth_at_speed` refuses.
     """
-    speeds = _grid("speeds", speeds, "finite numbers > 0 (m/s)", lambda v: v > 0.0)
-    angles = _grid("alpha", alpha, "numbers of degrees in (0, 90)", lambda a: 0.0 < a < 90.0)
+    speeds = _grid("speeds", speeds, "finite numbers > 0 (m/s)", lambda v: v > 0.0,
+                   lambda count: _check_solves(limits, f"the phase diagram at {count} speeds and an angle or more", count))
+    angles = _grid("alpha", alpha, "numbers of degrees in (0, 90)", lambda a: 0.0 < a < 90.0,
+                   lambda count: _check_solves(limits, f"the phase diagram at {len(speeds)} speeds and {count} "
+                                               "angles, a solve each at least", len(speeds) * count))  # (at least one solve each)
     for speed in speeds:  # (every argument in its own words before the solves are counted)
         _checked(params, law, speed, profile)
     _check_solves(limits, f"the phase diagram at {len(speeds)} speeds and {len(angles)} angles",

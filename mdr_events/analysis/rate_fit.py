@@ -26,7 +26,7 @@ import numpy as np
 import xarray as xr
 from scipy import optimize
 
-from mdr_events.analysis.fit_diagnostics import exp_or_inf, scaled_or_inf
+from mdr_events.analysis.fit_diagnostics import exp_or_inf, identifiability_of, scaled_or_inf
 from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS, check_rate_factor
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.io.datasets import register_schema
@@ -152,6 +152,20 @@ def _law(values: dict[str, float]) -> RateDependentAdhesion:
     return RateDependentAdhesion(values["dgamma0"], values["dgamma1"], values["v_ref"], values["n"])
 
 
+class TrialBeyondLaw(Exception):
+    """A trial step of the fit to values no law has (rejected as a law whose edge is not followed)."""
+
+
+def _trial(params: Parameters, values: dict[str, float]) -> tuple[RateDependentAdhesion, Parameters]:
+    """The law of a trial's ``values`` and the parameters with its works, or :class:`TrialBeyondLaw` where no law has
+    them (``dgamma1 < dgamma0`` with both free, or a log-scaled value beyond the double range): they raised
+    ``OverflowError`` or named, as the user's, a value the user never gave (round eighteen)."""
+    try:
+        return _law(values), params.replace(dgamma0=values["dgamma0"], dgamma1=values["dgamma1"])
+    except ValueError:
+        raise TrialBeyondLaw from None
+
+
 def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameters, start: RateDependentAdhesion,
                       free: Sequence[str] = ("v_ref", "n"), offsets: bool = False,
                       profile: SimulatedProfile = None, *, limits: Limits = DEFAULT_LIMITS) -> xr.Dataset:
@@ -207,7 +221,7 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
     def values_of(theta: np.ndarray) -> dict[str, float]:
         values = dict(base)
         for name, value in zip(free, theta):
-            values[name] = math.exp(value) if name in _LOG_SCALED else float(value)
+            values[name] = exp_or_inf(value) if name in _LOG_SCALED else float(value)
         return values
 
     def model_curves(values: dict[str, float]) -> list[np.ndarray] | None:
@@ -221,13 +235,12 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
             solves[0] += len(measurements)  # (each trial's solves counted as they come: 1000 curves ran for hours)
             limits.check(f"the fit's {count} curve(s) ({solves[0]} solves of the edge so far)",
                          steps=solves[0] * EDGE_SOLVE_STEPS)
-            law = _law(values)
-            trial = params.replace(dgamma0=values["dgamma0"], dgamma1=values["dgamma1"])
             try:
+                law, trial = _trial(params, values)
                 curves[key] = [solve_edge(trial, m.path, law, profile=profile, rtol=RATE_FIT_RTOL,
                                           method=RATE_FIT_METHOD).normal_force(np.asarray(m.times, dtype=float), m.path)
                                for m in measurements]
-            except EdgeUnresolved:
+            except (EdgeUnresolved, TrialBeyondLaw):
                 rejected[0] += 1
                 curves[key] = None
         return curves[key]
@@ -324,8 +337,8 @@ def _result(solution, names, free, values_of, measurements, forces, weights, sol
     dof = max(residual.size - len(names), 1)
     known = all(m.noise is not None for m in measurements)
     s2 = 1.0 if known else float(residual @ residual) / dof
-    covariance = s2 * np.linalg.pinv(jacobian.T @ jacobian)
-    error = np.sqrt(np.maximum(np.diag(covariance), 0.0))
+    bounds = np.full(jacobian.shape[1], -np.inf), np.full(jacobian.shape[1], np.inf)  # (verdicts not read)
+    covariance, error, _, _, correlation = identifiability_of(jacobian, solution.x, *bounds, s2)
     from scipy import stats  # (here: the module registers its schema on every result's write, stats costs ~0.1 s)
 
     quantile = float(stats.norm.ppf(0.5 + CONFIDENCE / 2.0))
@@ -344,8 +357,6 @@ def _result(solution, names, free, values_of, measurements, forces, weights, sol
             low.append(centre - spread)
             high.append(centre + spread)
         units.append(RATE_FREE_NAMES.get(name, "N"))
-    scale = np.sqrt(np.maximum(np.diag(covariance), 1e-300))
-    correlation = covariance / np.outer(scale, scale)
     rms, start = [], 0
     for force in forces:
         rms.append(float(np.sqrt(np.mean(residual[start:start + force.size] ** 2))))

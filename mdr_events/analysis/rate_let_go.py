@@ -222,7 +222,6 @@ def critical_angles_B_at_speeds(contact: Contact | Parameters, speeds: Sequence[
     """
     params, law, profile, speeds, method, limits = _job(contact, speeds, old, law, profile, d_max, method, limits,
                                                         "critical_angles_B_at_speeds")
-    _check_solves(limits, f"scenario B's critical angles at {len(speeds)} speeds", CRITICAL_ANGLE_SOLVES * len(speeds))
     angles = np.array([critical_angle_B_at_speed(params, law, speed, profile, EDGE_RTOL, method) for speed in speeds])
     radii = np.array([_let_go(params, law, speed, math.radians(angle), profile, EDGE_RTOL, method)[0].radius
                       if angle < 90.0 else math.nan for speed, angle in zip(speeds, angles)])

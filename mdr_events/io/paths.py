@@ -92,9 +92,10 @@ SYSTEM_DIRECTORIES = ("/dev", "/proc", "/sys")
 def _directory_problem(directory: Path) -> str | None:
     """Why ``directory`` cannot take output (:func:`prepare_output_directory`), or ``None``: checked before anything
     is created, a name of it too long for a file system (which would fail after its parents were made) among them."""
-    long = [part for part in directory.parts if len(part.encode()) > MAX_NAME_BYTES]
+    long = [part for part in directory.parts if len(os.fsencode(part)) > MAX_NAME_BYTES]  # (a name's bytes on disk:
+    # one not UTF-8 arrives with surrogates, which str.encode refused in a raw UnicodeEncodeError)
     if long:
-        return f"its part {shown(long[0])} has {len(long[0].encode())} bytes, more than a file system's {MAX_NAME_BYTES}"
+        return f"its part {shown(long[0])} has {len(os.fsencode(long[0]))} bytes, more than a file system's {MAX_NAME_BYTES}"
     created = [part.name for part in (directory, *directory.parents) if not os.path.lexists(part)]
     controlled = [part for part in created if any(ord(character) < 32 or ord(character) == 127 for character in part)]
     if controlled:  # (a directory this package would create, with a newline in its name, as a file's name may not)
@@ -168,8 +169,8 @@ def check_output_file(name: str, path: Any) -> Path:
     if TEMPORARY_MARKER in target.name:  # (the next write into its directory would take it for stale and remove it)
         raise ValueError(f"{name}={shown(text)} is not allowed (its name holds {TEMPORARY_MARKER!r}, which marks the "
                          f"temporary files this package removes); allowed: {ALLOWED_FILE}, without that marker")
-    if len(target.name.encode()) + _TEMPORARY_EXTRA_BYTES > MAX_NAME_BYTES:
-        raise ValueError(f"{name}={shown(text)} is not allowed (its name has {len(target.name.encode())} bytes); "
+    if len(os.fsencode(target.name)) + _TEMPORARY_EXTRA_BYTES > MAX_NAME_BYTES:
+        raise ValueError(f"{name}={shown(text)} is not allowed (its name has {len(os.fsencode(target.name))} bytes); "
                          f"allowed: {ALLOWED_FILE}")
     why = _directory_problem(target.parent)
     if why is not None:
@@ -201,7 +202,7 @@ def check_output_stem(name: str, stem: Any) -> str:
         raise TypeError(f"{name}={shown(stem)} ({type(stem).__name__}) is not allowed; allowed: {_ALLOWED_STEM}")
     separators = {"/", "\\", os.sep, os.altsep or "/"}
     if (stem in ("", ".", "..") or any(character in separators for character in stem)
-            or not stem.isprintable() or TEMPORARY_MARKER in stem or len(stem.encode()) > MAX_STEM_BYTES):
+            or not stem.isprintable() or TEMPORARY_MARKER in stem or len(os.fsencode(stem)) > MAX_STEM_BYTES):
         raise ValueError(f"{name}={shown(stem)} is not allowed; allowed: {_ALLOWED_STEM}")
     return stem
 

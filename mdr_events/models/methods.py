@@ -28,7 +28,7 @@ from mdr_events.contact.model import Contact
 from mdr_events.limits import Limits
 from mdr_events.models import indenters
 from mdr_events.models.continuum import Tolerances, run_continuum
-from mdr_events.models.continuum.tolerances import check_tolerances
+from mdr_events.models.continuum.tolerances import check_output, check_tolerances
 from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.media import check_law
 from mdr_events.models.continuum.play_run import run_play_springs, takes_play_springs
@@ -321,8 +321,7 @@ class Continuum:
             The output times or the memory of ``count`` cases beyond ``limits``.
         """
         n_time = self.samples if self.t is None else len(self.t)
-        limits.check(f"the continuum run ({count} case(s) of {n_time} output times)", samples=n_time * count,
-                     memory=n_time * count * CONTINUUM_BYTES_PER_SAMPLE)
+        check_output(limits, count, n_time, CONTINUUM_BYTES_PER_SAMPLE)
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Solve the cases exactly; the dataset of :mod:`~mdr_events.models.simulation_schema` with the event log,

@@ -96,7 +96,9 @@ class Parser(argparse.ArgumentParser):
     """
 
     def __init__(self, *args, fill: Callable[[Parser], None] | None = None, **kwargs) -> None:
-        super().__init__(*args, **kwargs)
+        # no abbreviations: ``lammps-check ... --h 1e-3`` (the layer's option of other verbs) was read as --help,
+        # printed it and exited 0 with nothing checked (round eighteen)
+        super().__init__(*args, **dict(kwargs, allow_abbrev=False))
         # a negative number is a value, not an option, in every notation a value is read in: argparse's own rule
         # (``-2``, ``-.5``) took ``--E -1e5`` or ``--tau0 -inf`` for a missing value ("expected one argument")
         self._negative_number_matcher = NEGATIVE_NUMBER

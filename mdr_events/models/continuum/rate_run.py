@@ -40,7 +40,7 @@ from .rate_shifts import RateShifts, solve_rate_shifts
 from .solution import sample_times
 from .solve import BYTES_PER_SAMPLE
 from .state import Event, EventKind
-from .tolerances import Tolerances
+from .tolerances import Tolerances, check_output
 
 __all__ = ["run_rate_continuum", "check_rate_layer", "rate_quantities", "rate_events", "rate_extrema", "Scan", "scan_run",
            "EXTREMUM_PROBES", "SWITCH_XTOL", "SWITCH_POINTS", "RUN_METHOD"]
@@ -386,8 +386,7 @@ def run_rate_continuum(params: Parameters, paths: list[Path], times: np.ndarray 
     """
     samples = times if isinstance(times, int) else None
     n_time = samples if samples is not None else len(times)
-    limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
-                 memory=n_time * len(paths) * BYTES_PER_SAMPLE)
+    check_output(limits, len(paths), n_time, BYTES_PER_SAMPLE)
     runs = [solve_rate_shifts(params, path, law, profile=profile, friction=friction, rtol=tolerances.rtol,
                               method=RUN_METHOD) for path in paths]
     if samples is not None:

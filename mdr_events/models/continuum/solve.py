@@ -34,8 +34,8 @@ from .span import Span, SpanIntegrator, SpanOutcome, Trigger
 from .split_map import SplitAnchorMap
 from .split_solve import commit, new_anchors, split_slip_transition
 from .split_span import SplitSpanIntegrator
-from .state import CONTACT_ENDING, NO_ZONE, Cap, ContactState, Event, EventKind, Regime, Slip, zone_events
-from .tolerances import MAX_CHATTER_SPANS, MAX_RESTARTS, SEGMENT_RESOLUTION, Tolerances, check_tolerances
+from .state import CONTACT_ENDING, NO_ZONE, Cap, ContactState, Event, EventKind, Regime, Slip, ZoneSummary, zone_events
+from .tolerances import MAX_CHATTER_SPANS, MAX_RESTARTS, SEGMENT_RESOLUTION, Tolerances, check_output, check_tolerances
 from .zones import lay_out_zones
 
 
@@ -132,7 +132,8 @@ class RestartGuard:
     resolved to (``SEGMENT_RESOLUTION`` of the time): too many of the first mean the solver is
     stuck; of the second, that the slip zones chatter (a zone opening at an edge and leaving through it again and
     again, each a span of ~1e-12 of the time: the cone under Coulomb's law alone at mu = 1.5e6 in scenario B, 4e-9 s
-    apart from t = 1177 s, 4e5 spans to the pull-off; tens of minutes), which is refused with what to do instead."""
+    apart from t = 1177 s, 4e5 spans to the pull-off; tens of minutes, a zone of no width since laid out as none by
+    ``edge_zone_beside_full``), which is refused with what to do instead."""
 
     def __init__(self, friction: FrictionLaw | None = None) -> None:
         self.stalled, self.last, self.chattering, self.friction = 0, -math.inf, 0, friction
@@ -297,8 +298,9 @@ def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOut
     turned = [cap for cap in Cap if Trigger.LEVEL_TURNS in fired[cap]]
     if turned:
         state.anchors.clip_caps(x, model.caps, segment.d(outcome.t_stop), radius)
+    summaries = {cap: layouts[cap].summary(radius) for cap in Cap}
     for cap in Cap:
-        before, after = state.zones[cap], layouts[cap].summary(radius)
+        before, after = state.zones[cap], edge_zone_beside_full(model, summaries[cap], summaries[Cap(-cap)])
         events = zone_events(before, after)
         if after.slip is Slip.FULL and before.slip is not Slip.FULL:
             # every spring at the cap: F_x = ±2G* ū a = ±τ0 π a² exactly (and ± μ F_N with Coulomb's part);
@@ -311,6 +313,22 @@ def slip_transition(model: ContinuumModel, state: ContactState, outcome: SpanOut
         state.zones[cap] = after
         logged += [(kind, outcome.t_stop, radius, int(cap)) for kind in events]
     return logged
+
+
+def edge_zone_beside_full(model: ContinuumModel, summary: ZoneSummary, other: ZoneSummary) -> ZoneSummary:
+    """``summary`` of one cap's zone, ``NO_ZONE`` where it is a zone at the edge alone while every spring
+    sits at the other cap under Coulomb's law alone (``K = 0``; the chatter of issue 32, round seventeen R4).
+
+    A spring at the other cap carries ``u = ∓ū(ξ)`` with ``ū = κ (d − g(ξ)) ≥ 0`` (13); it reaches this cap,
+    ``u = ±ū``, only where ``ū = 0``: at the edge of the compressed zone, ``g(a) = d``, a single spring that carries no
+    force. In the anchors as this cap sees them, ``Z = x − κ d + 2κ g`` against the level ``x + κ d``, the gap
+    ``2κ (d − g(ξ))`` vanishes at the edge identically in time (``d = g(a(t))``), so the layout's tolerance laid a
+    zone of no width there, which the shrinking edge left at once and which opened again: 4e5 spans of 4e-9 s (a cone
+    at μ = 1.5e6, scenario B at 20°). With ``K > 0`` every cap is at least ``K a > 0`` and this cannot happen."""
+    if model.caps.K == 0.0 and other.slip is Slip.FULL and summary.slip is Slip.PARTIAL and summary.edge \
+            and not summary.centre:
+        return NO_ZONE
+    return summary
 
 
 def full_slip_force(model: ContinuumModel, radius: float, depth: float) -> float:
@@ -395,8 +413,7 @@ def run_continuum(model: KernelModel | Parameters, paths: list[Path], times: np.
     else:
         samples, times = None, check_output_times("times", times)
     n_time = samples if samples is not None else len(times)
-    limits.check(f"the continuum run ({len(paths)} case(s) of {n_time} output times)", samples=n_time * len(paths),
-                 memory=n_time * len(paths) * BYTES_PER_SAMPLE)
+    check_output(limits, len(paths), n_time, BYTES_PER_SAMPLE)
     params, profile, friction, adhesion, layer = as_kernel_model(model)
     solutions = [solve_path(params, path, tolerances, limits, profile, friction, adhesion, layer) for path in paths]
     if samples is not None:

@@ -44,8 +44,15 @@ MAX_RESTARTS = 50
 #: and the run is refused (``RestartGuard`` of ``continuum.solve``). Runs that end were seen with
 #: up to 3215 in a row (a power law c r^3 under Coulomb's law, mu = 1e5, scenario B at 80°: 4.6 s in all), the
 #: chatter that did not end (a cone at mu = 1e6, scenario B at 20°) needed 4e5 to reach the pull-off: six times the
-#: most seen in a run that ends, a few seconds of spans.
+#: most seen in a run that ends, a few seconds of spans. That chatter was a zone of no width laid out at the shrinking
+#: edge (``solve.edge_zone_beside_full``, round eighteen) and runs now; the guard stays, a net for any other.
 MAX_CHATTER_SPANS = 20_000
+#: The output times a case's solve is counted as, at least, against ``Limits.samples``: a continuum case's cost is its
+#: solve, not its output (13 ms of CPU a case of the paper's scenario A here, with 11 output times as with 2001), so
+#: that cases of a few output times each are counted too (1e5 angles at 11 samples each: 23 min of CPU, accepted,
+#: round eighteen); the default output, 2001 times, so that runs of at least that many count as before (the default
+#: 1e7 samples: 5000 cases, about a minute).
+SOLVE_SAMPLES = 2001
 #: Machine epsilon of the floats used.
 EPS = float(np.finfo(float).eps)
 
@@ -97,3 +104,29 @@ def check_tolerances(tolerances) -> Tolerances:
     if not isinstance(tolerances, Tolerances):
         raise TypeError(f"tolerances={shown(tolerances)} is not allowed; allowed: a mdr_events.Tolerances")
     return tolerances
+
+
+def check_output(limits, cases: int, n_time: int, bytes_per_sample: float) -> None:
+    """Check a continuum run of ``cases`` cases of ``n_time`` output times each against ``limits`` (a
+    :class:`~mdr_events.limits.Limits`): the samples, each case's solve counted as ``SOLVE_SAMPLES`` at least, and
+    the memory of the output (``bytes_per_sample`` each).
+
+    Parameters
+    ----------
+    limits : Limits
+        What the run may use.
+    cases : int
+        The paths solved.
+    n_time : int
+        The output times of each.
+    bytes_per_sample : float
+        The output's bytes per case and time.
+
+    Raises
+    ------
+    ResourceLimitError
+        Samples or memory beyond ``limits``.
+    """
+    note = "" if n_time >= SOLVE_SAMPLES else f", each case's solve counted as {SOLVE_SAMPLES}"
+    limits.check(f"the continuum run ({cases} case(s) of {n_time} output times{note})",
+                 samples=max(n_time, SOLVE_SAMPLES) * cases, memory=n_time * cases * bytes_per_sample)
