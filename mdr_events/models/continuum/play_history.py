@@ -122,14 +122,14 @@ class SpanHistory:
         """The last time up to ``t`` at which each spring attached, and the span it attached in (as a code)."""
         when, code = np.full(xi.shape, -np.inf), np.full(xi.shape, -2)
         for index, (time, before, after) in enumerate(self.jumps):
-            take = (xi > before) & (xi <= after) & (time <= t)
+            take = _beyond(xi, before) & (xi <= after) & (time <= t)
             when[take], code[take] = time, 2 * index
         grow = self.solution.model.grow
         for index, (low, high, span) in enumerate(self._spans):
             if span.regime is not self._regime.GROWING or low > t:
                 continue
             first, last = self._ends(span, low, high)
-            take = (xi > first) & (xi <= last)
+            take = _beyond(xi, first) & (xi <= last)
             if not np.any(take):
                 continue
             depth = np.asarray(grow.depths(xi[take]), dtype=float)
@@ -140,3 +140,9 @@ class SpanHistory:
             later = at[late] >= when[rows]
             when[rows[later]], code[rows[later]] = at[late][later], 2 * index + 1
         return when, code
+
+
+def _beyond(xi: np.ndarray, radius: float) -> np.ndarray:
+    """The springs a radius growing from ``radius`` reaches: beyond it, and from 0 the centre spring too (a first
+    contact or a re-contact takes ``ξ = 0``)."""
+    return (xi > radius) | ((radius == 0.0) & (xi == 0.0))

@@ -27,7 +27,8 @@ The force ``F_x = 2G* ∫₀ᵃ w(ξ)(x − Y_ξ) dξ`` (``w = k_t/G*``) is summ
 split where the anchor's provenance (which clamp of its chain last moved it, and to which edge) changes: there the
 anchor has a kink (a slip front, an old front kept in memory; the provenance also tells whether the spring was
 compressed at that clamp: with adhesion its cap has a kink at ``x_c`` of that time); in between it is smooth. A kink
-is located by bisection on the provenance (:data:`KINK_HALVINGS`). The springs at a cap at ``t`` are those whose last clamp is ``t``'s
+is located by bisection on the provenance (:data:`KINK_HALVINGS`), looked for between neighbouring nodes and between
+the centre or the edge (:data:`EDGE_SHARE` inside) and the nearest node. The springs at a cap at ``t`` are those whose last clamp is ``t``'s
 own.
 """
 
@@ -46,7 +47,7 @@ from mdr_events.parameters import Parameters
 from .play_history import DepthHistory, SpanHistory
 
 __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
-           "UPPER_CAP", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
+           "UPPER_CAP", "PANELS", "NODES", "EDGE_SHARE", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
            "CONCAVITY_SAMPLES"]
 
 #: Panels of ``[0, a]`` before the kinks are added.
@@ -55,6 +56,10 @@ PANELS = 8
 NODES = 12
 #: Halvings of the bracket of a kink in ``ξ``: below the doubles' resolution of the radius.
 KINK_HALVINGS = 60
+#: The centre's and the edge's provenance are read this share of the radius inside them (the spring at ``a`` itself
+#: attaches at ``t``; the one at ``ξ = 0`` attaches at the jump-in, where its crossing of ``d = g`` is, and is the only
+#: one no clamp of its crossing moves: a provenance of its own at a single point, no kink).
+EDGE_SHARE = 1e-12
 #: Points a kink's bracket is cut into at once (a power of two).
 KINK_CUTS = 16
 #: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
@@ -325,7 +330,7 @@ class PlaySprings:
         Parameters
         ----------
         xi : numpy.ndarray
-            The springs' coordinates (m), within the contact at ``t``.
+            The springs' coordinates (m), within the contact at ``t`` (``0 <= ξ < a(t)``).
         t : float
             The time (s, path clock).
 
@@ -333,10 +338,20 @@ class PlaySprings:
         -------
         tuple of numpy.ndarray
             The anchors (m) and the provenance codes.
+
+        Raises
+        ------
+        RuntimeError
+            A spring that matches no attachment of the radius's history up to ``t`` (a spring out of contact, or a
+            bug: its anchor would be clamped from the path's start).
         """
         xi = np.asarray(xi, dtype=float)
         g, ratio = self.line.profile(xi), self.line.ratio(xi)
         start, code = self.history.attach(xi, t)
+        if np.any(start == -np.inf):  # (review S6: its anchor would be clamped from the path's start on)
+            raise RuntimeError(f"springs at xi = {xi[start == -np.inf][:3].tolist()} m match no attachment of the "
+                               f"radius's history up to t={t!r} s (in contact at t: within [0, {self.radius(t)!r}) "
+                               "m?): a bug to report")
         anchor, label = self._x(start), _ATTACHED + 3 * (code + 2)
         times, shifts, crossing = self._columns(xi, g, ratio, start, t)
         if times.shape[1]:
@@ -417,13 +432,16 @@ class PlaySprings:
 
     def _kinks(self, t: float, breaks: np.ndarray) -> np.ndarray:
         """``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances differ (within a
-        panel or across a panel's end) and no kink found before lies between them, the change located by bisection;
+        panel, across a panel's end, or between the centre or the edge, :data:`EDGE_SHARE` inside it, and the nearest
+        node) and no kink found before lies between them, the change located by bisection;
         repeated until every such pair holds a kink."""
         kinks = np.empty(0)
+        ends = breaks[-1] * np.array([EDGE_SHARE, 1.0 - EDGE_SHARE])
         for _ in range(KINK_ROUNDS + 1):
             lows, highs = breaks[:-1], breaks[1:]
-            inner = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
-            label = self.anchors(inner, t)[1]
+            nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+            inner = np.sort(np.concatenate([nodes, ends]))  # (a zone between the centre or the edge and the nearest
+            label = self.anchors(inner, t)[1]               # node: the stick zone left at the edge before full slip)
             change = np.flatnonzero(label[1:] != label[:-1])
             fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]
             if not fresh.size:
