@@ -432,16 +432,17 @@ class PlaySprings:
 
     def _kinks(self, t: float, breaks: np.ndarray) -> np.ndarray:
         """``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances differ (within a
-        panel, across a panel's end, or between the centre or the edge, :data:`EDGE_SHARE` inside it, and the nearest
-        node) and no kink found before lies between them, the change located by bisection;
+        panel, across a panel's end, or in the first round between the centre or the edge, :data:`EDGE_SHARE` inside it,
+        and the nearest node) and no kink found before lies between them, the change located by bisection;
         repeated until every such pair holds a kink."""
         kinks = np.empty(0)
         ends = breaks[-1] * np.array([EDGE_SHARE, 1.0 - EDGE_SHARE])
-        for _ in range(KINK_ROUNDS + 1):
+        for round_ in range(KINK_ROUNDS + 1):
             lows, highs = breaks[:-1], breaks[1:]
-            nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
-            inner = np.sort(np.concatenate([nodes, ends]))  # (a zone between the centre or the edge and the nearest
-            label = self.anchors(inner, t)[1]               # node: the stick zone left at the edge before full slip)
+            inner = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+            if round_ == 0:  # (a zone between the centre or the edge and the nearest node: the stick zone left at the
+                inner = np.concatenate([ends[:1], inner, ends[1:]])  # edge before full slip; once: its kink is a break)
+            label = self.anchors(inner, t)[1]
             change = np.flatnonzero(label[1:] != label[:-1])
             fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]
             if not fresh.size:
