@@ -56,10 +56,12 @@ PANELS = 8
 NODES = 12
 #: Halvings of the bracket of a kink in ``ξ``: below the doubles' resolution of the radius.
 KINK_HALVINGS = 60
-#: The centre's and the edge's provenance are read this share of the radius inside them (the spring at ``a`` itself
-#: attaches at ``t``; the one at ``ξ = 0`` attaches at the jump-in, where its crossing of ``d = g`` is, and is the only
-#: one no clamp of its crossing moves: a provenance of its own at a single point, no kink).
-EDGE_SHARE = 1e-12
+#: The centre's and the edge's provenance are read this share of the radius inside them, once per evaluation (a stick
+#: zone left between the edge and the last node, 3e-4 of the radius before full slip along A 20°, was 5e-8 of the
+#: force off): a zone narrower than this share is missed, by about the square of its width (5e-8 at 3.3e-4, below
+#: 1e-12 at this share); nearer the edge the springs' provenance flips by round-off where a shrinking contact's edge
+#: springs lie on their window's edge (one no kink search resolves), and the spring at ``a`` itself attaches at ``t``.
+EDGE_SHARE = 1e-6
 #: Points a kink's bracket is cut into at once (a power of two).
 KINK_CUTS = 16
 #: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
