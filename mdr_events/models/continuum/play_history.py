@@ -89,9 +89,10 @@ class SpanHistory:
         self.adhesive = True
         self._spans = [(span.t_start, span.t_end, span) for span in solution.spans]  # (on the path's clock)
         self.jumps = []
+        #: each span's radius at its ends (read once: ``attach`` asks at every evaluation)
+        self._span_ends = [self._ends(span, low, high) for low, high, span in self._spans]
         previous = 0.0
-        for low, high, span in self._spans:
-            first, last = self._ends(span, low, high)
+        for (low, _, _), (first, last) in zip(self._spans, self._span_ends):
             if abs(first - previous) > JUMP_ROUND_OFF * max(abs(first), abs(previous)):
                 self.jumps.append((low, previous, first))
             previous = last
@@ -128,7 +129,7 @@ class SpanHistory:
         for index, (low, high, span) in enumerate(self._spans):
             if span.regime is not self._regime.GROWING or low > t:
                 continue
-            first, last = self._ends(span, low, high)
+            first, last = self._span_ends[index]
             take = _beyond(xi, first) & (xi <= last)
             if not np.any(take):
                 continue

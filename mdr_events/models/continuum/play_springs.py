@@ -369,8 +369,8 @@ class PlaySprings:
             for k in range(when.shape[1]):
                 anchor, label = _clamp(anchor, label, x[:, k] - cap[:, k], x[:, k] + cap[:, k], live[:, k],
                                        codes[:, k])
-        lower, upper = self._window(xi, g, ratio, np.full(xi.shape, float(t)))
-        anchor, label = _clamp(anchor, label, lower, upper, np.ones(xi.shape, bool),
+        x_t, cap = self._x(float(t)), self._shift_at(float(t)) + ratio * np.maximum(self._d(float(t)) - g, 0.0)
+        anchor, label = _clamp(anchor, label, x_t - cap, x_t + cap, np.ones(xi.shape, bool),
                                np.where(self._d(t) - g > self._pressed_round_off, -6, -3))
         return anchor, label
 
