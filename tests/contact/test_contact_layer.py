@@ -74,15 +74,13 @@ COULOMB = dataclasses.replace(LAYERED, friction=me.FrictionLaw("tau0+coulomb", t
 def test_every_entry_point_takes_coulombs_part_with_adhesion_on_a_layer_in_the_continuum():
     """Issues 34 and 26: nothing the discrete model runs on a layer is refused by the continuum any more (Coulomb's part
     with the paper's adhesion, spring by spring: tests/models/test_layer_coulomb.py checks its values): ``validate``,
-    ``fit`` and the CLI pass the contact's check before they run (``check_layer_taken``, the sweep's
-    ``check_layer_run``), and ``simulate`` gives a finite ``F_x``."""
-    from mdr_events.analysis.sweep_runs import check_layer_run
+    ``fit`` and the CLI pass the contact's check before they run (``check_layer_taken``), and ``simulate`` gives a
+    finite ``F_x`` (a continuum sweep, which reads the spans, refuses it: tests/analysis/test_sweep_layer.py)."""
     from mdr_events.models.methods import Continuum
     from mdr_events.models.simulate import check_layer_taken
 
     motion = me.Scenario("A", alpha=[20.0])
     assert check_layer_taken(COULOMB, motion, Continuum()) is COULOMB
-    check_layer_run(COULOMB, motion, Continuum(), ("tangential_force_max",), None)
     run = me.simulate(COULOMB, motion, "continuum", samples=5).isel(alpha=0)
     force = run["tangential_force"].values[run["contact_radius"].values > 0.0]
     assert np.all(np.isfinite(force)) and np.max(np.abs(force)) > 0.0
