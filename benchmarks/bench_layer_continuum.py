@@ -12,14 +12,16 @@ run, its tables precomputed and cached):
 - Coulomb's part without adhesion (``"coulomb"``, ``"tau0+coulomb"``, μ = 0.3, ``Δγ0 = Δγ1 = 0``) along scenario A at
   20° and a fretting path of ±1 mm: on the layer every spring's play operator on its own
   (:mod:`mdr_events.models.continuum.play_run`), on the half-space the spans; :data:`COULOMB_SAMPLES` samples (the
-  route's cost grows with them, some milliseconds a sample).
+  route's cost grows with them, some milliseconds a sample);
+- the same with the paper's adhesion along scenario A at 20°, :data:`ADHESIVE_SAMPLES` samples (the route's radius
+  the spans' frictionless run, read at every clamp time: about 0.1 s of CPU a sample).
 
 The layer's first run of a process (the relations of ``theory/layer_continuum_symbolic.py`` lambdified, the tables
 read) is made before the timing, as the half-space's own derivations are. Beside the wall times the process's CPU
 times (``time.process_time``, medians too): on a machine shared with other work the wall time carries their load, so
 the verdict reads the CPU times' ratio.
 
-Run: ``python benchmarks/bench_layer_continuum.py [--repeat N]``.
+Run: ``python benchmarks/bench_layer_continuum.py [--repeat N] [--only TEXT]``.
 """
 
 from __future__ import annotations
@@ -61,9 +63,13 @@ def coulomb_fretting() -> me.Paths:
     return me.Paths({"fretting": me.Path(np.column_stack([x, d]), me.Parameters.paper().v)})
 
 
-#: label, the motion, the friction law (the Coulomb rows, without adhesion)
-COULOMB_ROWS = [(f"{law} {label}", motion, law) for law in ("coulomb", "tau0+coulomb")
+#: The output samples of the Coulomb rows with adhesion.
+ADHESIVE_SAMPLES = 21
+#: label, the motion, the friction law, whether adhesive (the Coulomb rows)
+COULOMB_ROWS = [(f"{law} {label}", motion, law, False) for law in ("coulomb", "tau0+coulomb")
                 for label, motion in (("A 20°", me.Scenario("A", alpha=[20.0])), ("fretting ±1 mm", coulomb_fretting()))]
+COULOMB_ROWS += [(f"{law} A 20°, adhesive", me.Scenario("A", alpha=[20.0]), law, True)
+                 for law in ("coulomb", "tau0+coulomb")]
 #: label, the motion, the base
 ROWS = [
     ("A 20°", me.Scenario("A", alpha=[20.0]), "bonded"),
@@ -87,17 +93,20 @@ def median_cpu_time(function, repeat: int) -> float:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=7)
-    repeat = parser.parse_args().repeat
+    parser.add_argument("--only", default="", help="the rows whose label holds this text (default: every row)")
+    arguments = parser.parse_args()
+    repeat = arguments.repeat
     print(f"mdr_events {me.__version__}: continuum, paper parameters, half-space vs a {PAPER_LAYER * 1e3:g} mm layer; "
           f"medians of {repeat} calls")
     print(f"{'case':28s} {'half-space':>11s} {'layer':>9s} {'ratio':>6s} {'CPU: half':>10s} {'layer':>8s} {'ratio':>6s} "
           f"target <= {RATIO_TARGET:g}")
     cases = [(label, motion, me.Contact.paper(), base, {}) for label, motion, base in ROWS]
-    for label, motion, law in COULOMB_ROWS:
+    for label, motion, law, adhesive in COULOMB_ROWS:
         friction = me.FrictionLaw(law, mu=0.3, tau0=None if law == "coulomb" else me.Parameters.paper().tau0)
-        hertz = dataclasses.replace(me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0), friction=friction)
-        cases.append((label, motion, hertz, "bonded", {"samples": COULOMB_SAMPLES}))
-    for label, motion, half, base, options in cases:
+        paper = me.Contact.paper() if adhesive else me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0)
+        samples = ADHESIVE_SAMPLES if adhesive else COULOMB_SAMPLES
+        cases.append((label, motion, dataclasses.replace(paper, friction=friction), "bonded", {"samples": samples}))
+    for label, motion, half, base, options in [case for case in cases if arguments.only in case[0]]:
         layer = half.replace(h=PAPER_LAYER, **{"layer.base": base})
         runs = {name: (lambda contact=contact: me.simulate(contact, motion, "continuum", **options))
                 for name, contact in (("half", half), ("layer", layer))}

@@ -34,6 +34,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models import indenters
 from mdr_events.models.continuum import EventKind, extremum, solve_path, tangential_work
 from mdr_events.models.continuum.edges import check_edge_known
+from mdr_events.models.continuum.media import check_law
 from mdr_events.models.continuum.solution import scan_spans
 from mdr_events.models.methods import Continuum, Discrete, Method
 from mdr_events.models.motion import Motion, Paths
@@ -188,8 +189,10 @@ def check_layer_run(contact: Contact, motion: Motion, method: Method, quantities
                     history_samples: int | None) -> None:
     """Refuse a sweep's run of a contact on a layer of finite thickness that runs the model (:func:`runs_model`)
     with a method that does not take the layer, or where the layer's springs do not take the contact or the motion
-    (:func:`~mdr_events.models.simulate.check_layer_taken`, naming ``sweep(method=...)``). The half-space and the
-    closed-form quantities alone pass (those check themselves: :func:`closed_form_angle`).
+    (:func:`~mdr_events.models.simulate.check_layer_taken`, naming ``sweep(method=...)``), or, in the continuum,
+    Coulomb's part, which the spans its quantities read do not run on a layer
+    (:func:`~mdr_events.models.continuum.media.check_law`). The half-space and the closed-form quantities alone pass
+    (those check themselves: :func:`closed_form_angle`).
 
     Parameters
     ----------
@@ -211,6 +214,8 @@ def check_layer_run(contact: Contact, motion: Motion, method: Method, quantities
     """
     if runs_model(quantities, history_samples):
         check_layer_taken(contact, motion, method, where=f"sweep(method={method.name!r}) of the model's quantities")
+        if method.name == Continuum.name:  # (its quantities read the spans' solution: Coulomb's part refused there)
+            check_law(contact.friction, contact.layer)
 
 
 def closed_form_angle(model: ModelJob, scenario: str) -> float:

@@ -108,7 +108,8 @@ KEY_NOTES: dict[tuple[str, str], str] = {
     ("friction", "mu"): "the coefficient of friction, >= 0: required by 'coulomb' and 'tau0+coulomb', not allowed "
                         "with 'tau0'",
     ("layer", "h"): "the elastomer's thickness in m: a layer on a rigid base (inf: the half-space, as without the "
-                    "table); run by both methods, [validate] and [fit] (the continuum with the friction law 'tau0'), "
+                    "table); run by both methods, [validate] and [fit] (a continuum [sweep] with the friction law "
+                    "'tau0'), "
                     "as --h",
     ("adhesion", "law"): "'paper' (Hess's rule with dgamma0 in and dgamma1 out of [parameters], rate independent: "
                          "the default) or 'rate' (needs v_ref and n; the works at rest dgamma0 > 0, dgamma1 >= "

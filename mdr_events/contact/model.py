@@ -395,8 +395,8 @@ def check_half_space(contact: Contact, where: str) -> Contact:
     if contact.layer.is_half_space:
         return contact
     raise ValueError(f"Contact.layer={contact.layer!r} is not allowed in {where} yet; allowed: the half-space (h = "
-                     "inf, Layer()) — a layer runs in simulate(...) and sweep(...) with either method (the continuum "
-                     "with the friction law 'tau0'), validate and fit, its slip onset in d_crit, critical_angle, "
+                     "inf, Layer()) — a layer runs in simulate(...) and sweep(...) with either method (a continuum "
+                     "sweep with the friction law 'tau0'), validate and fit, its slip onset in d_crit, critical_angle, "
                      "phase_diagram and a sweep of the closed-form quantities alone (quantities=('critical_angle_A', "
                      "'critical_angle_B')), and its normal problem in mdr_events.layer_normal_curve, "
                      "mdr_events.layer_pull_off_curve, jump_off, jump_in_radius and pull_off_force "

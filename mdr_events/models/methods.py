@@ -30,7 +30,6 @@ from mdr_events.models import indenters
 from mdr_events.models.continuum import Tolerances, run_continuum
 from mdr_events.models.continuum.tolerances import check_output, check_tolerances
 from mdr_events.models.continuum.edges import check_edge_known
-from mdr_events.models.continuum.media import check_law
 from mdr_events.models.continuum.play_run import run_play_springs, takes_play_springs
 from mdr_events.models.continuum.rate_run import check_rate_layer, run_rate_continuum
 from mdr_events.models.continuum.rate_coulomb import check_rate_friction_law, run_rate_coulomb, takes_rate_coulomb
@@ -289,20 +288,15 @@ class Continuum:
         self.check_layer(model.contact)
 
     def check_layer(self, contact: Contact) -> None:
-        """Refuse on a layer of finite thickness a friction law the continuum does not run there
-        (:func:`~mdr_events.models.continuum.media.check_law`: Coulomb's part with adhesion).
+        """Every friction law runs on a layer, with or without adhesion: ``"tau0"`` on the spans, Coulomb's part
+        spring by spring (:mod:`~mdr_events.models.continuum.play_run`); what the layer's springs take (the paraboloid
+        or a power law) is checked where they are made.
 
         Parameters
         ----------
         contact : Contact
             The physical model.
-
-        Raises
-        ------
-        ValueError
-            A law with Coulomb's part on a layer of finite thickness with adhesion.
         """
-        check_law(contact.friction, contact.layer, any(work != 0.0 for work in contact.adhesion.works_at_rest))
 
     def check_case_count(self, count: int, limits: Limits) -> None:
         """The output a run of ``count`` cases takes, checked before they are built, as

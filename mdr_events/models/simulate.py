@@ -84,8 +84,8 @@ def check_layer_taken(contact: Contact, motion: Motion, method: Method, where: s
     with a method that takes layers (both do; one that does not is refused by
     :func:`~mdr_events.contact.model.check_half_space`), and there what its springs take
     (:meth:`~mdr_events.models.spring_media.LayerSprings.check`: the paraboloid or a power law, the paper's adhesion
-    law; on a frictionless base no tangential motion) and what the method takes (``method.check_layer``: the continuum
-    the friction law ``"tau0"`` alone). The front ends call it before they write anything.
+    law; on a frictionless base no tangential motion) and what the method takes (``method.check_layer``: both run every
+    friction law there, the continuum Coulomb's part spring by spring). The front ends call it before they write anything.
 
     Parameters
     ----------

@@ -74,11 +74,6 @@ def test_the_command_line_validates_on_the_layer_of_h(capsys, tmp_path):
     assert "1 pass, 0 fail" in capsys.readouterr().out
     assert me.open_result(tmp_path / "layer" / "candidate.nc").attrs["param_layer_thickness"] == 5e-3
     assert main([*common, "--out", str(tmp_path / "half")]) == 1  # (the half-space's reference)
-    capsys.readouterr()
-    status = main([*common, "--h", "5e-3", "--friction", "coulomb", "--mu", "0.3", "--out", str(tmp_path / "bad")])
-    err = capsys.readouterr().err
-    assert status == 2 and err.count("\n") == 1 and "friction='coulomb' is not allowed on layer h = 0.005 m" in err
-    assert not (tmp_path / "bad").exists()
 
 
 def test_fit_recovers_the_layers_thickness_where_h_is_free():

@@ -21,7 +21,8 @@ from mdr_events.theory.analytic import dimensionless_groups
 
 PAPER = me.Contact.paper()
 LAYERED = PAPER.replace(h=5e-3)
-#: A friction law the continuum does not run on a layer (its sweeps there are refused naming the discrete method).
+#: Coulomb's part with the paper's adhesion (simulate's continuum runs it on a layer spring by spring; a continuum
+#: sweep, which reads the spans' solution, refuses it there naming what runs it).
 COULOMB = dataclasses.replace(PAPER, friction=me.FrictionLaw("tau0+coulomb", tau0=PAPER.friction.tau0, mu=0.3))
 SERIAL = me.Engine(scheduler="serial")
 #: The discrete springs, coarse enough for seconds per run (the sweep and simulate take the same method).
@@ -110,13 +111,16 @@ def test_the_closed_form_quantities_over_the_thickness_are_critical_angle_of_eac
                                                             for tau0 in grid["tau0"]]
 
 
+#: A continuum sweep of Coulomb's part on a layer.
+SPANS_REFUSE = ("friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded base in the continuum's spans (what "
+                "a continuum sweep and solve_path read); allowed: 'tau0' (Coulomb's part runs on a layer spring by "
+                "spring in simulate(..., method='continuum'), and sweeps in method='discrete')")
+
+
 @pytest.mark.parametrize("call, fragment", [
-    (lambda: me.sweep({"h": [5e-3, 1e-3]}, COULOMB, "A", 20.0, engine=SERIAL),
-     "grid: friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded base in the continuum method; allowed: "
-     "'tau0' (the other laws run on a layer in method='discrete')"),
+    (lambda: me.sweep({"h": [5e-3, 1e-3]}, COULOMB, "A", 20.0, engine=SERIAL), f"grid: {SPANS_REFUSE}"),
     (lambda: me.sweep({"alpha": [20.0]}, COULOMB.replace(h=5e-3), "A", engine=SERIAL,
-                      quantities=CLOSED_FORM_QUANTITIES, history_samples=3),
-     "friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded base in the continuum method"),
+                      quantities=CLOSED_FORM_QUANTITIES, history_samples=3), SPANS_REFUSE),
     (lambda: me.sweep({"alpha": [90.0, 30.0]}, LAYERED.replace(**{"layer.base": "frictionless"}), "A", None,
                       SPRINGS, engine=SERIAL),
      "path 0 moves the indenter tangentially (x from 0 m to 0.000519615 m), which is not allowed on layer h = "

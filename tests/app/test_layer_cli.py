@@ -59,9 +59,6 @@ def test_simulate_writes_a_run_on_the_layer_that_names_it(capsys, tmp_path):
     (["--h", "-1e-3"], "--h -0.001: Layer.thickness=-0.001 is not allowed"),
     (["--h", "nan"], "--h nan: Layer.thickness=nan is not allowed"),
     (["--layer-base", "glued"], "argument --layer-base: invalid choice: 'glued'; allowed: bonded, frictionless"),
-    (["--h", "5e-3", "--method", "continuum", "--friction", "tau0+coulomb", "--mu", "0.3"],
-     "friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded base in the continuum method; allowed: "
-     "'tau0' (the other laws run on a layer in method='discrete')"),
     (["--h", "5e-3", "--layer-base", "frictionless"], "path 0 moves the indenter tangentially"),
     (["--h", "5e-3", "--flat-punch", "1e-3"], "profile=FlatPunch(radius=0.001) is not allowed on layer h = 0.005 m"),
 ])
@@ -85,16 +82,14 @@ def test_a_bad_layer_table_is_named(tmp_path, table, fragment):
     assert fragment in str(caught.value) and "\n" not in str(caught.value)
 
 
-def test_a_study_with_a_layer_and_a_law_the_continuum_does_not_run_there_is_refused_naming_the_discrete_method(
-        tmp_path):
+def test_a_study_with_coulombs_law_on_an_adhesive_layer_is_read_for_the_continuum(tmp_path):
+    """Coulomb's part with adhesion on a layer runs in the continuum (issues 34 and 26): each table that runs it reads."""
     coulomb = '[friction]\nlaw = "tau0+coulomb"\nmu = 0.3\n'
-    for table in ('[simulation]\nscenario = "A"\nalpha = [30]\nmethod = "continuum"\n',
-                  '[validate]\nruns = ["run.csv"]\nscenario = "A"\nalpha = 30\n',
-                  '[fit]\ndata = "run.csv"\nfree = ["E"]\nscenario = "A"\nalpha = 30\n'):
-        with pytest.raises(StudyError) as caught:
-            study_of(tmp_path, f'{table}{coulomb}[layer]\nh = 5e-3\n')
-        text = str(caught.value)
-        assert f"[{table[1:table.index(']')]}] friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded " \
-               "base in the continuum method" in text and "method='discrete'" in text and "\n" not in text
+    for table, name in (('[simulation]\nscenario = "A"\nalpha = [30]\nmethod = "continuum"\n', "simulation"),
+                        ('[validate]\nruns = ["run.csv"]\nscenario = "A"\nalpha = 30\n', "validation"),
+                        ('[fit]\ndata = "run.csv"\nfree = ["E"]\nscenario = "A"\nalpha = 30\n', "fit")):
+        study = study_of(tmp_path, f'{table}{coulomb}[layer]\nh = 5e-3\n')
+        assert getattr(study, name) is not None
+        assert study.contact.layer == Layer(5e-3) and study.contact.friction.law == "tau0+coulomb"
     study = study_of(tmp_path, '[simulation]\nscenario = "A"\nalpha = [30]\nmethod = "continuum"\n[layer]\nh = 5e-3\n')
     assert study.simulation.contact.layer == Layer(5e-3)

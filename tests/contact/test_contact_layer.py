@@ -67,24 +67,23 @@ def test_an_entry_point_without_layers_refuses_a_finite_one_in_one_line(where):
     assert "\n" not in text
 
 
-#: The continuum on a layer with a friction law it does not run there: each entry point that solves it.
+#: Coulomb's part with adhesion on a layer: the continuum runs it spring by spring (issues 34 and 26).
 COULOMB = dataclasses.replace(LAYERED, friction=me.FrictionLaw("tau0+coulomb", tau0=PAPER.friction.tau0, mu=0.3))
 
 
-@pytest.mark.parametrize("call", [
-    lambda: me.simulate(COULOMB, me.Scenario("A", alpha=20), "continuum"),
-    lambda: me.validate(None, COULOMB, "A", 20.0),
-    lambda: me.fit(None, COULOMB, "A", 20.0, free=["E"]),
-    lambda: me.sweep({"alpha": [10.0, 20.0]}, COULOMB),
-], ids=["simulate", "validate", "fit", "sweep"])
-def test_the_continuum_refuses_on_a_layer_a_law_it_does_not_run_there_naming_what_runs_it(call):
-    """The continuum runs a layer with the friction law ``"tau0"`` (tests/models/test_layer_continuum.py); another
-    law there is one line naming the law, the layer and the discrete method, before anything runs."""
-    with pytest.raises(ValueError) as caught:
-        call()
-    text = str(caught.value)
-    assert "friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded base in the continuum method" in text
-    assert "allowed: 'tau0'" in text and "method='discrete'" in text and "\n" not in text
+def test_every_entry_point_takes_coulombs_part_with_adhesion_on_a_layer_in_the_continuum():
+    """Issues 34 and 26: nothing the discrete model runs on a layer is refused by the continuum any more (Coulomb's part
+    with the paper's adhesion, spring by spring: tests/models/test_layer_coulomb.py checks its values): ``validate``,
+    ``fit`` and the CLI pass the contact's check before they run (``check_layer_taken``), and ``simulate`` gives a
+    finite ``F_x`` (a continuum sweep, which reads the spans, refuses it: tests/analysis/test_sweep_layer.py)."""
+    from mdr_events.models.methods import Continuum
+    from mdr_events.models.simulate import check_layer_taken
+
+    motion = me.Scenario("A", alpha=[20.0])
+    assert check_layer_taken(COULOMB, motion, Continuum()) is COULOMB
+    run = me.simulate(COULOMB, motion, "continuum", samples=5).isel(alpha=0)
+    force = run["tangential_force"].values[run["contact_radius"].values > 0.0]
+    assert np.all(np.isfinite(force)) and np.max(np.abs(force)) > 0.0
 
 
 def test_a_continuum_sweep_over_the_thickness_runs_each_thickness():

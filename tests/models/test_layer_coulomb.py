@@ -33,10 +33,12 @@ from mdr_events.models.continuum.play_springs import PlaySprings, SpanHistory, s
 RTOL = me.Tolerances().rtol
 #: The per-spring route against the spans' continuum on the half-space, relative to the largest force.
 ROUTE_SHARE = 20.0 * RTOL
-#: The same with adhesion: with the spans' split regions integrated by panels, 1e-13 on most samples, but one sample of
-#: scenario A at 20° (Δγ0 = Δγ1, both parts of the law) 5.5e-8 off (the 5.2e-8 once seen on the fretting exit was the
-#: spans' DOP853 at the default ``rtol``): which of the two continua holds that one is left open.
-ADHESIVE_ROUTE_SHARE = 1e-7
+#: The same with adhesion: the spans' split regions are integrated by panels (1e-13 of the force) and under Coulomb's
+#: law alone the compressed zone by DOP853 at ``rtol`` (2.1e-11 measured over the cases below): one ``rtol``. (A sample
+#: of A 20°, Δγ0 = Δγ1, both parts of the law, was 5e-8 off: the stick zone left at the edge just before full slip,
+#: 3e-4 of the radius, lay between the last quadrature node and the edge, where no kink was looked for; the spans at
+#: ``rtol = 1e-12`` moved by 2e-14 there and the route with 64 panels of 20 nodes came within 2e-14 of them.)
+ADHESIVE_ROUTE_SHARE = RTOL
 #: A thick layer (h = 1e9 m) against the half-space, relative to the largest force.
 LIMIT_SHARE = 1e-8
 #: Full slip against ``π a² τ0 + μ F_N``, relative.
@@ -184,6 +186,147 @@ def test_the_discrete_model_on_a_layer_converges_to_it(law, motion, works, reque
     orders = observed_orders(SPACINGS, np.array(errors))
     low, high = COULOMB_ORDER_RANGE if law == "coulomb" else ORDER_RANGE
     assert np.all((low < orders) & (orders < high)), (errors, orders)
+
+
+def fretting_with_re_contact(amplitude: float = 5e-4) -> me.Paths:
+    """In vertically from the surface, a tangential stroke to ``+amplitude`` and back to ``−amplitude``, out beyond the
+    jump-off (pull-off), in again, a stroke to ``+amplitude``, back to the centre and out: every corner at a whole
+    number of the coarsest run's step travel (:data:`STEP_SHARE` × 4e-5 m) from the first contact
+    (:func:`fretting_on_grid`)."""
+    d_max, speed = me.Parameters.paper().d_max, me.Parameters.paper().v
+    x = [0.0, 0.0, amplitude, -amplitude, -amplitude, -amplitude, amplitude, 0.0, 0.0]
+    d = [0.0, d_max, d_max, d_max, -PULLED_OUT, d_max, d_max, d_max, -PULLED_OUT]
+    return me.Paths({"re-contact": me.Path(np.column_stack([x, d]), speed)})
+
+
+#: The depth the indenter is pulled out to: beyond the 5 mm layer's jump-off at the largest work of adhesion used,
+#: ``Δγ = 0.15 J/m²`` (−2.2e-5 m, ``me.jump_off``), on the steps' grid.
+PULLED_OUT = 4e-5
+#: The discrete model's time step per spacing (s per m of ``Δx/v``): half a spacing's travel, so that the steps' error
+#: falls with the springs' (as tests/models/test_coulomb_adhesion.py: at a fixed step the steps' error, 1e-4 of the
+#: largest force along A and 8e-4 along the fretting path with adhesion, hides the springs').
+STEP_SHARE = 0.5
+#: The sample times of two spacings agree to the rounding of their steps' sums (relative to the run's duration).
+TIME_ROUND_OFF = 1e-9
+#: Adhesive cases of the discrete convergence: ``Δγ0 = Δγ1`` along A, ``Δγ1 < Δγ0`` along B, ``Δγ0 < Δγ1`` along a
+#: fretting path with a pull-off and a re-contact.
+ADHESIVE_CONVERGENCE = {"A 20°, Dg0 = Dg1": (MOTIONS["A 20°"], (0.05, 0.05)),
+                        "B 20°, Dg1 < Dg0": (MOTIONS["B 20°"], (0.15, 0.01)),
+                        "re-contact, Dg0 < Dg1": (fretting_with_re_contact(), (0.01, 0.15))}
+
+
+@pytest.mark.slow  # (three discrete runs on the layer and the route at 41 times: about 15-30 s of CPU each case)
+@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("case", ADHESIVE_CONVERGENCE, ids=ADHESIVE_CONVERGENCE.keys())
+def test_with_adhesion_the_discrete_model_on_a_layer_converges_to_it(law, case):
+    """Issue 34 with adhesion: the discrete model on the 5 mm layer converges to the per-spring continuum (its radius
+    the spans' frictionless run, springs in tension holding ``τ0``'s part alone) at first order in ``Δx`` (Coulomb's
+    law alone between first and second order, :data:`COULOMB_ORDER_RANGE`). Compared at the coarsest run's sample
+    times (each finer run steps through them) and at each run's own first step in contact (where it attaches the
+    springs of the jump-in in one step: an ``O(Δt)`` error the coarse samples would see at the coarsest spacing
+    alone). The largest error falls from each spacing to the next; its order is taken over the whole range (with
+    adhesion the radius's quantisation at the jumps makes one step's ratio scatter, 0.7–1.4 measured, as ``F_N``'s in
+    tests/models/test_coulomb_adhesion.py)."""
+    motion, works = ADHESIVE_CONVERGENCE[case]
+    contact = with_law(HERTZ.replace(h=5e-3, dgamma0=works[0], dgamma1=works[1]), law)
+    dim, speed = motion_dim(motion), me.Parameters.paper().v
+    errors, times, expected = [], None, None
+    for dx in SPACINGS:
+        springs = me.simulate(contact, motion, "discrete", dx=dx, dt=STEP_SHARE * dx / speed).isel({dim: 0})
+        if times is None:
+            times = springs["time"].values[::max(1, springs["time"].size // 40)]
+            expected = me.simulate(contact, motion, "continuum", t=times).isel({dim: 0})["tangential_force"].values
+        first = springs["time"].values[np.flatnonzero(springs["contact_radius"].values > 0.0)[:1]]
+        at_first = me.simulate(contact, motion, "continuum", t=first).isel({dim: 0})["tangential_force"].values
+        within = times <= springs["time"].values[-1]  # (a run's last step lies within its last step's length)
+        when = np.concatenate([times[within], first])
+        approx = springs["tangential_force"].sel(time=when, method="nearest", tolerance=TIME_ROUND_OFF * times[-1])
+        exact = np.concatenate([expected[within], at_first])
+        inside = np.isfinite(approx.values) & np.isfinite(exact)
+        assert np.count_nonzero(inside) >= 20
+        errors.append(np.max(np.abs(approx.values[inside] - exact[inside])) / np.max(np.abs(exact[inside])))
+    order = observed_orders(SPACINGS[::2], np.array(errors[::2]))[0]
+    low, high = COULOMB_ORDER_RANGE if law == "coulomb" else ORDER_RANGE
+    assert errors[0] > errors[1] > errors[2] and low < order < high, (errors, order)
+
+
+#: A slip zone opening inside the contact (with adhesion: in the tensile annulus) is found once it reaches one of the
+#: route's probes (``play_run.PROBE_POINTS``, ``a/1024`` apart): its onset late by its growth to that width, measured
+#: 4e-5 of the run along scenario A at 20°; 1e-4 bounds it.
+ONSET_SHARE = 1e-4
+#: The sliding fractions of the thick layer and the half-space: the quadrature's (the route) against the zones'
+#: lengths (the spans), each to round-off of the radius.
+SLIDING_SHARE = 1e-9
+#: The adhesive cases of the thick layer against the half-space (the first runs in the quick round).
+THICK_ADHESIVE = {"A 20°, Dg0 < Dg1": (MOTIONS["A 20°"], (0.01, 0.15)),
+                  "A 20°, Dg0 = Dg1": (MOTIONS["A 20°"], (0.05, 0.05)),
+                  "B 20°, Dg1 < Dg0": (MOTIONS["B 20°"], (0.15, 0.01)),
+                  "re-contact, Dg0 < Dg1": (fretting_with_re_contact(), (0.01, 0.15))}
+
+
+@pytest.mark.parametrize("law", LAWS)
+@pytest.mark.parametrize("case", [case if k == 0 else pytest.param(case, marks=pytest.mark.slow)  # (3-8 s each)
+                                  for k, case in enumerate(THICK_ADHESIVE)], ids=THICK_ADHESIVE.keys())
+def test_with_adhesion_a_thick_layer_is_the_half_space(law, case, request):
+    """``simulate`` on a thick adhesive layer (``h = 1e9 m``: the per-spring route on the layer's tables) against the
+    half-space's spans: ``F_x`` and the sliding fraction, and under both parts of the law the springs' event log
+    (Coulomb's law alone slides its tensile annulus from the first contact on, where the spans log their first
+    instant's events)."""
+    if case == "re-contact, Dg0 < Dg1" and law == "tau0+coulomb":
+        request.applymarker(pytest.mark.xfail(strict=True, raises=RuntimeError, reason=(
+            "on h = 1e9 m, pulled out after the re-contact (t = 4263.86 s), thousands of neighbouring nodes' "
+            "provenances differ (springs on their window's edge to round-off?) and the kink search raises after "
+            "KINK_ROUNDS: left open (the 5 mm layer runs this path)")))
+    motion, works = THICK_ADHESIVE[case]
+    contact = with_law(me.Contact.paper().replace(dgamma0=works[0], dgamma1=works[1]), law)
+    thick = me.simulate(contact.replace(h=1e9), motion, "continuum", samples=21)
+    half = me.simulate(contact, motion, "continuum", t=thick["time"].values)
+    force, expected = thick["tangential_force"].values, half["tangential_force"].values
+    assert np.array_equal(np.isnan(force), np.isnan(expected))
+    assert np.nanmax(np.abs(force - expected)) <= LIMIT_SHARE * np.nanmax(np.abs(expected))
+    assert np.allclose(thick["sliding_fraction"].values, half["sliding_fraction"].values, rtol=0.0,
+                       atol=SLIDING_SHARE, equal_nan=True)
+    if law == "coulomb":
+        return
+    mine, theirs = spring_log(thick), spring_log(half)
+    assert mine and [(kind, direction) for kind, _, direction in mine] == [(kind, d) for kind, _, d in theirs]
+    duration = float(thick["time"].values[-1])
+    for (kind, time, _), (_, expected_time, _) in zip(mine, theirs):
+        share = ONSET_SHARE if kind == "slip_onset" else EVENT_SHARE
+        assert abs(time - expected_time) <= share * duration, (kind, time, expected_time)
+
+
+#: The two runs' depths at the same times: one path, each clock's first contact found to the rounding of the path.
+DEPTH_ROUND_OFF = 1e-12
+
+
+@pytest.mark.parametrize("law, works", [("tau0+coulomb", (0.05, 0.05)),
+                                        pytest.param("coulomb", (0.05, 0.05), marks=pytest.mark.slow),  # (4-8 s each)
+                                        pytest.param("tau0+coulomb", (0.15, 0.01), marks=pytest.mark.slow),
+                                        pytest.param("coulomb", (0.15, 0.01), marks=pytest.mark.slow)],
+                         ids=["tau0+coulomb, Dg0 = Dg1", "coulomb, Dg0 = Dg1", "tau0+coulomb, Dg1 < Dg0",
+                              "coulomb, Dg1 < Dg0"])
+def test_with_adhesion_full_slip_is_tau0_area_and_mu_the_compressed_springs_force(law, works):
+    """Scenario B at 20° slides the whole adhesive contact of the paper's 5 mm layer: the springs in tension
+    (``d < g(ξ)``) hold ``τ0``'s cap alone, the compressed ones ``ū + μρ(d − g)``, so ``F_x = τ0 π a² + μ F_c`` with
+    ``F_c = 2∫₀^{x_c} k (d − g) dξ`` the compressed springs' force: the normal force of the same layer without
+    adhesion at the same depth (its radius ``x_c``; 0 where it is out of contact), not ``F_N``."""
+    contact = with_law(HERTZ.replace(h=5e-3, dgamma0=works[0], dgamma1=works[1]), law)
+    motion = me.Scenario("B", alpha=[20.0])
+    run = me.simulate(contact, motion, "continuum", samples=21).isel(alpha=0)
+    dry = me.simulate(contact.replace(dgamma0=0.0, dgamma1=0.0), motion, "continuum",
+                      t=run["time"].values).isel(alpha=0)
+    touching = np.isfinite(dry["indentation_depth"].values)  # (the dry contact ends before the adhesive one)
+    assert np.allclose(run["indentation_depth"].values[touching], dry["indentation_depth"].values[touching], rtol=0.0,
+                       atol=DEPTH_ROUND_OFF * me.Parameters.paper().d_max)
+    full = run["sliding_fraction"].values == 1.0
+    assert np.count_nonzero(full) >= 3
+    tau0 = contact.friction.tau0 if contact.friction.uses_tau0 else 0.0
+    compressed = np.nan_to_num(dry["normal_force"].values[full], nan=0.0)
+    expected = tau0 * np.pi * run["contact_radius"].values[full] ** 2 + MU * compressed
+    assert np.allclose(np.abs(run["tangential_force"].values[full]), expected, rtol=FULL_SLIP_SHARE, atol=0.0)
+    assert np.any(run["normal_force"].values[full] < compressed)  # (the adhesive annulus pulls: F_c is not F_N)
+    assert "full_slip" in run["event_kind"].values
 
 
 def motion_dim(motion) -> str:

@@ -20,7 +20,7 @@ kind                                 the springs
 ===================================  ===================================================================================
 
 On a layer the spans take the friction law ``"tau0"`` alone and the paper's adhesion law (:func:`check_law`); Coulomb's
-part without adhesion runs there spring by spring (:mod:`.play_run`), with adhesion in the discrete method.
+part runs there spring by spring (:mod:`.play_run`), with or without adhesion.
 """
 
 from __future__ import annotations
@@ -221,10 +221,11 @@ HALF_SPACE_MEDIUM = HalfSpaceMedium()
 
 
 
-def check_law(friction: FrictionLaw, layer: Layer, adhesive: bool = True) -> None:
-    """Refuse on a finite layer a friction law the continuum does not run there: Coulomb's part with adhesion (and
-    any of it in the spans, which ask with ``adhesive`` true; without adhesion the springs' own play operators run it,
-    :mod:`.play_run`).
+def check_law(friction: FrictionLaw, layer: Layer) -> None:
+    """Refuse on a finite layer a friction law the continuum's spans do not run there: Coulomb's part (each spring's
+    cap ``μ k/k_t (d − g)`` has a ratio of its own, no level is shared). ``simulate(..., method="continuum")`` runs it
+    spring by spring, with or without adhesion (:mod:`.play_run`); what reads the spans' solution itself (a continuum
+    sweep's quantities, ``solve_path``) refuses it.
 
     Parameters
     ----------
@@ -232,18 +233,16 @@ def check_law(friction: FrictionLaw, layer: Layer, adhesive: bool = True) -> Non
         The friction law.
     layer : Layer
         The layer.
-    adhesive : bool, default True
-        Whether the contact is adhesive (the spans: always refused).
 
     Raises
     ------
     ValueError
-        A law with Coulomb's part on a layer of finite thickness with adhesion.
+        A law with Coulomb's part on a layer of finite thickness.
     """
-    if not layer.is_half_space and friction.coulomb_mu > 0.0 and adhesive:
-        raise ValueError(f"friction={friction.law!r} is not allowed on {layer.describe()} in the continuum method; "
-                         "allowed: 'tau0' (the other laws run on a layer in method='discrete'), or Coulomb's part "
-                         "without adhesion (dgamma0 = dgamma1 = 0)")
+    if not layer.is_half_space and friction.coulomb_mu > 0.0:
+        raise ValueError(f"friction={friction.law!r} is not allowed on {layer.describe()} in the continuum's spans (what "
+                         "a continuum sweep and solve_path read); allowed: 'tau0' (Coulomb's part runs on a layer "
+                         "spring by spring in simulate(..., method='continuum'), and sweeps in method='discrete')")
 
 
 def medium_of(params: Parameters, friction: FrictionLaw, profile, layer: Layer = HALF_SPACE) -> HalfSpaceMedium:

@@ -94,9 +94,10 @@ class SpanHistory:
         self.adhesive = True
         self._spans = [(span.t_start, span.t_end, span) for span in solution.spans]  # (on the path's clock)
         self.jumps = []
+        #: each span's radius at its ends (read once: ``attach`` asks at every evaluation)
+        self._span_ends = [self._ends(span, low, high) for low, high, span in self._spans]
         previous = 0.0
-        for low, high, span in self._spans:
-            first, last = self._ends(span, low, high)
+        for (low, _, _), (first, last) in zip(self._spans, self._span_ends):
             if abs(first - previous) > JUMP_ROUND_OFF * max(abs(first), abs(previous)):
                 self.jumps.append((low, previous, first))
             previous = last
@@ -127,14 +128,16 @@ class SpanHistory:
         """The last time up to ``t`` at which each spring attached, and the span it attached in (as a code)."""
         when, code = np.full(xi.shape, -np.inf), np.full(xi.shape, -2)
         for index, (time, before, after) in enumerate(self.jumps):
-            take = (xi > before) & (xi <= after) & (time <= t)
+            take = _beyond(xi, before) & (xi <= after) & (time <= t)
             when[take], code[take] = time, 2 * index
         grow = self.solution.model.grow
         for index, (low, high, span) in enumerate(self._spans):
             if span.regime is not self._regime.GROWING or low > t:
                 continue
-            first, last = self._ends(span, low, high)
-            take = (xi > first) & (xi <= last)
+            first, last = self._span_ends[index]
+            if index and self._spans[index - 1][2].regime is self._regime.GROWING:  # (no ulp between two growing spans:
+                first = min(first, self._span_ends[index - 1][1])  # each end is its own span's root)
+            take = _beyond(xi, first) & (xi <= last)
             if not np.any(take):
                 continue
             depth = np.asarray(grow.depths(xi[take]), dtype=float)
@@ -150,3 +153,9 @@ class SpanHistory:
         """The radii (m) inside the contact at ``t`` where the force's quadrature splits its panels besides the kinks
         it finds: none (the attachment is smooth in ``ξ`` between the jumps and pieces, which the kinks mark)."""
         return np.empty(0)
+
+
+def _beyond(xi: np.ndarray, radius: float) -> np.ndarray:
+    """The springs a radius growing from ``radius`` reaches: beyond it, and from 0 the centre spring too (a first
+    contact or a re-contact takes ``ξ = 0``)."""
+    return (xi > radius) | ((radius == 0.0) & (xi == 0.0))

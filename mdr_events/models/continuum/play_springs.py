@@ -27,7 +27,8 @@ The force ``F_x = 2G* ∫₀ᵃ w(ξ)(x − Y_ξ) dξ`` (``w = k_t/G*``) is summ
 split where the anchor's provenance (which clamp of its chain last moved it, and to which edge) changes: there the
 anchor has a kink (a slip front, an old front kept in memory; the provenance also tells whether the spring was
 compressed at that clamp: with adhesion its cap has a kink at ``x_c`` of that time); in between it is smooth. A kink
-is located by bisection on the provenance (:data:`KINK_HALVINGS`). The springs at a cap at ``t`` are those whose last clamp is ``t``'s
+is located by bisection on the provenance (:data:`KINK_HALVINGS`), looked for between neighbouring nodes and between
+the centre or the edge (:data:`EDGE_SHARE` inside) and the nearest node. The springs at a cap at ``t`` are those whose last clamp is ``t``'s
 own.
 """
 
@@ -46,20 +47,21 @@ from mdr_events.parameters import Parameters
 from .play_history import DepthHistory, SpanHistory
 
 __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
-           "UPPER_CAP", "END_PROBE", "PANELS", "NODES", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
+           "UPPER_CAP", "PANELS", "NODES", "EDGE_SHARE", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
            "CONCAVITY_SAMPLES"]
 
-#: The springs probed beside the centre and the edge for a kink between them and the nearest node: this share of the
-#: radius inside (a kink nearer an end than that changes the force by less than that share of it; at 1e-12 the probe
-#: at the edge of a contact without adhesion lay where ``d − g`` is within :data:`PRESSED_ROUND_OFF` of 0, whose
-#: flicker between compressed and not the kinks' search followed without end).
-END_PROBE = 1e-9
 #: Panels of ``[0, a]`` before the kinks are added.
 PANELS = 8
 #: Gauss–Legendre nodes per panel (between kinks the anchor is smooth: the rule's error falls as ``(width)^(2n)``).
 NODES = 12
 #: Halvings of the bracket of a kink in ``ξ``: below the doubles' resolution of the radius.
 KINK_HALVINGS = 60
+#: The centre's and the edge's provenance are read this share of the radius inside them, once per evaluation (a stick
+#: zone left between the edge and the last node, 3e-4 of the radius before full slip along A 20°, was 5e-8 of the
+#: force off): a zone narrower than this share is missed, by about the square of its width (5e-8 at 3.3e-4, below
+#: 1e-12 at this share); nearer the edge the springs' provenance flips by round-off where a shrinking contact's edge
+#: springs lie on their window's edge (one no kink search resolves), and the spring at ``a`` itself attaches at ``t``.
+EDGE_SHARE = 1e-6
 #: Points a kink's bracket is cut into at once (a power of two).
 KINK_CUTS = 16
 #: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
@@ -330,7 +332,7 @@ class PlaySprings:
         Parameters
         ----------
         xi : numpy.ndarray
-            The springs' coordinates (m), within the contact at ``t``.
+            The springs' coordinates (m), within the contact at ``t`` (``0 <= ξ < a(t)``).
         t : float
             The time (s, path clock).
 
@@ -338,10 +340,20 @@ class PlaySprings:
         -------
         tuple of numpy.ndarray
             The anchors (m) and the provenance codes.
+
+        Raises
+        ------
+        RuntimeError
+            A spring that matches no attachment of the radius's history up to ``t`` (a spring out of contact, or a
+            bug: its anchor would be clamped from the path's start).
         """
         xi = np.asarray(xi, dtype=float)
         g, ratio = self.line.profile(xi), self.line.ratio(xi)
         start, code = self.history.attach(xi, t)
+        if np.any(start == -np.inf):  # (review S6: its anchor would be clamped from the path's start on)
+            raise RuntimeError(f"springs at xi = {xi[start == -np.inf][:3].tolist()} m match no attachment of the "
+                               f"radius's history up to t={t!r} s (in contact at t: within [0, {self.radius(t)!r}) "
+                               "m?): a bug to report")
         anchor, label = self._x(start), _ATTACHED + 3 * (code + 2)
         times, shifts, crossing = self._columns(xi, g, ratio, start, t)
         if times.shape[1]:
@@ -357,8 +369,8 @@ class PlaySprings:
             for k in range(when.shape[1]):
                 anchor, label = _clamp(anchor, label, x[:, k] - cap[:, k], x[:, k] + cap[:, k], live[:, k],
                                        codes[:, k])
-        lower, upper = self._window(xi, g, ratio, np.full(xi.shape, float(t)))
-        anchor, label = _clamp(anchor, label, lower, upper, np.ones(xi.shape, bool),
+        x_t, cap = self._x(float(t)), self._shift_at(float(t)) + ratio * np.maximum(self._d(float(t)) - g, 0.0)
+        anchor, label = _clamp(anchor, label, x_t - cap, x_t + cap, np.ones(xi.shape, bool),
                                np.where(self._d(t) - g > self._pressed_round_off, -6, -3))
         return anchor, label
 
@@ -452,16 +464,16 @@ class PlaySprings:
 
     def _kinks(self, t: float, breaks: np.ndarray) -> np.ndarray:
         """``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances differ (within a
-        panel or across a panel's end) and no kink found before lies between them, the change located by bisection;
+        panel, across a panel's end, or in the first round between the centre or the edge, :data:`EDGE_SHARE` inside it,
+        and the nearest node) and no kink found before lies between them, the change located by bisection;
         repeated until every such pair holds a kink."""
         kinks = np.empty(0)
-        for _ in range(KINK_ROUNDS + 1):
+        ends = breaks[-1] * np.array([EDGE_SHARE, 1.0 - EDGE_SHARE])
+        for round_ in range(KINK_ROUNDS + 1):
             lows, highs = breaks[:-1], breaks[1:]
             inner = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
-            # (and the springs just inside the centre and the edge: a kink between the first or last node and an end,
-            # e.g. the rim of springs an edge still growing after a corner attached, is found too)
-            rim = END_PROBE * (breaks[-1] - breaks[0])
-            inner = np.concatenate([[breaks[0] + rim], inner, [breaks[-1] - rim]])
+            if round_ == 0:  # (a zone between the centre or the edge and the nearest node: the stick zone left at the
+                inner = np.concatenate([ends[:1], inner, ends[1:]])  # edge before full slip; once: its kink is a break)
             label = self.anchors(inner, t)[1]
             change = np.flatnonzero(label[1:] != label[:-1])
             fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]

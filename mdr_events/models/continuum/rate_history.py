@@ -191,12 +191,14 @@ class RateHistory:
         xi = np.asarray(xi, dtype=float)
         when, code = np.full(xi.shape, -np.inf), np.full(xi.shape, -2)
         for index, (time, before, after) in enumerate(self.jumps):
-            take = (xi > before) & (xi <= after) & (time <= t)
+            take = ((xi > before) | ((before == 0.0) & (xi == 0.0))) & (xi <= after) & (time <= t)  # (0: the centre too)
             when[take], code[take] = time, 2 * index
         for index, piece in enumerate(self._pieces):
             if not piece.advancing or piece.t0 > t:
                 continue
-            rows = np.flatnonzero((xi > piece.a0) & (xi <= piece.a1))
+            # (from the previous piece's end where the next starts an ulp above it: its own polynomial's start)
+            below = min(piece.a0, self._pieces[index - 1].a1) if index else piece.a0
+            rows = np.flatnonzero((xi > below) & (xi <= piece.a1))
             if not rows.size:
                 continue
             at = piece.attach_times(xi[rows])
