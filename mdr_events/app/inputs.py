@@ -174,8 +174,9 @@ def check_rate_run(contact: Contact, motion: Scenario | Paths, method: Method, w
 
 
 def check_reference_law(contact: Contact, where: str) -> None:
-    """Refuse the rate-dependent law where the reference is the rate-independent continuum of ``solve_path``
-    (``validate``, ``lammps-check``): the one-line ``TypeError`` naming the law and what runs it.
+    """Refuse the rate-dependent law where the model compared is rate independent (``lammps-check``: LAMMPS's
+    granular models): the one-line ``TypeError`` naming the law and what runs it (``validate`` referees the law
+    against its own continuum: :func:`check_rate_run` with the continuum).
 
     Raises
     ------
@@ -183,9 +184,9 @@ def check_reference_law(contact: Contact, where: str) -> None:
         A contact whose adhesion law is rate dependent.
     """
     if contact.adhesion.is_rate_dependent:
-        raise TypeError(f"adhesion={contact.adhesion!r} is not allowed in {where}: its reference, the exact continuum "
-                        "of solve_path, is rate independent; allowed: the paper's law (the rate law's own continuum "
-                        "run: simulate --method continuum with it; its joint fit to measured F_N: fit)")
+        raise TypeError(f"adhesion={contact.adhesion!r} is not allowed in {where}: LAMMPS's granular models hold a work "
+                        "of adhesion independent of the edge's speed; allowed: the paper's law (a run of the rate law "
+                        "is refereed by validate against its own continuum)")
 
 
 def angle_speeds(contact: Contact, speeds: Sequence[float] | None, params: Parameters) -> tuple[float, ...] | None:
