@@ -114,3 +114,12 @@ def test_coulomb_under_the_rate_law_is_refused_naming_both_laws(fine):
     contact = dataclasses.replace(rate_contact(), friction=me.FrictionLaw("coulomb", mu=0.3))
     text = one_line_naming(lambda: me.validate(fine, contact, "A", 20.0), "coulomb", ValueError)
     assert "adhesion=RateDependentAdhesion(" in text and "allowed: FrictionLaw('tau0')" in text
+
+
+def test_the_convergence_study_of_the_rate_law_finds_first_order(fine):
+    """One solve of the rate law's continuum serves every spacing (``convergence_study``): the max error's observed
+    order of the tangential force within 0.3 of 1, and the report names the law."""
+    runs = {4 * FINE: discrete(rate_contact(), 4 * FINE), 2 * FINE: discrete(rate_contact(), 2 * FINE), FINE: fine}
+    study = me.convergence_study(runs, rate_contact(), "A", 20.0)
+    assert abs(float(study["max_error_order"].sel(quantity="tangential_force")) - 1.0) < 0.3
+    assert study.attrs["adhesion_law"] == "rate_dependent"
