@@ -45,7 +45,8 @@ from mdr_events.analysis.reports import CONVERGENCE_STUDY_CONTENT, ConvergenceVe
 from mdr_events.analysis.validate import COMPARED, DEFAULT_TOLERANCE, VALIDATED_EVENTS, _validation_job, validate
 from mdr_events.contact import Contact
 from mdr_events.io.datasets import register_schema, stamp
-from mdr_events.models.continuum import PathSolution, solve_path
+from mdr_events.models.continuum import PathSolution
+from mdr_events.models.continuum.rate_reference import RateSolution
 from mdr_events.models.methods import Continuum
 from mdr_events.parameters import Parameters
 from mdr_events.validation import SCALE_MAX, SCALE_MIN, as_float
@@ -147,7 +148,7 @@ def _spacings(candidates_by_dx) -> list[float]:
 def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact | Parameters, motion,
                       alpha: float | None = None, *, expected_order: float = 1.0,
                       tolerance: float = DEFAULT_TOLERANCE,
-                      reference: Continuum | PathSolution | None = None, limits: Limits = DEFAULT_LIMITS,
+                      reference: Continuum | PathSolution | RateSolution | None = None, limits: Limits = DEFAULT_LIMITS,
                       **options) -> xr.Dataset:
     """The observed order of convergence of a simulator to the exact continuum, from three or more spacings.
 
@@ -173,7 +174,7 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
     tolerance : float
         The bound of each spacing's validation verdict (:func:`mdr_events.validate`'s, in (0, 1]); not used by the
         study's own verdict (the observed order).
-    reference : Continuum or PathSolution, optional
+    reference : Continuum, PathSolution or RateSolution, optional
         The exact reference, as for :func:`mdr_events.validate`.
     limits : Limits
         What the continuum run may use (:func:`mdr_events.validate`).
@@ -206,9 +207,7 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
     keys = list(candidates_by_dx)
     # one continuum solution serves every spacing: the study costs one solve and the comparisons
     job = _validation_job(contact, motion, alpha, tolerance, reference, options, "convergence_study")
-    model = job.model
-    solution = job.solution or solve_path(model.params, job.path, job.tolerances, limits, model.profile, model.friction,
-                                          layer=model.contact.layer)
+    solution = job.exact(limits)
     reading = {name: value for name, value in options.items() if name not in ("tolerances", "solution")}
     reports = [validate(candidates_by_dx[keys[i]], contact, motion, alpha, tolerance=tolerance, reference=solution,
                         limits=limits, **reading) for i in order]
@@ -229,9 +228,9 @@ def convergence_study(candidates_by_dx: Mapping[float, object], contact: Contact
                  converges_rule=CONVERGES_RULE, time_origin=str(job.time_origin),
                  candidate_sources="; ".join(str(report.attrs["candidate_source"]) for report in reports),
                  path_waypoints=first["path_waypoints"], path_speed=first["path_speed"])
-    # the indenter and the friction law, as the reports name them
-    attrs.update({key: value for key, value in first.items() if key.startswith(("profile", "friction_"))})
-    return stamp(xr.Dataset(data, coords=coords), model.params, **attrs)
+    # the indenter, the friction law and the adhesion law, as the reports name them
+    attrs.update({key: value for key, value in first.items() if key.startswith(("profile", "friction_", "adhesion_"))})
+    return stamp(xr.Dataset(data, coords=coords), job.model.params, **attrs)
 
 
 def _validation_variables(data: dict, reports: list[xr.Dataset]) -> None:

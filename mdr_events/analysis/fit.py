@@ -52,6 +52,7 @@ from mdr_events.analysis.fit_parameters import (FREE_NAMES, FRICTION_NAME, LOG_S
                                                 OFFSET_LONG_NAMES, OFFSET_UNITS, OFFSETS, FreeParameters,
                                                 free_parameters, unit_of)
 from mdr_events.analysis.fit_problem import FD_STEP, FIT_TOLERANCE, MAX_EVALUATIONS_PER_PARAMETER, Problem, solve
+from mdr_events.theory.job import rate_independent
 from mdr_events.analysis.validate import one_path, one_path_job, reference_of
 from mdr_events.contact import Contact
 from mdr_events.contact.friction import friction_attrs
@@ -265,6 +266,7 @@ def _fit_job(contact, motion, alpha, reference, options: Mapping[str, Any]) -> F
     time_origin = options.pop("time_origin", "first_contact")
     _, tolerances = reference_of(reference, options.pop("tolerances", None), None)
     model = one_path_job(contact, motion, alpha, options, caller="fit")
+    rate_independent(model.contact, "fit (its forward model, solve_path, is rate-independent)")
     if options:
         raise TypeError(f"fit() got an unexpected keyword argument {next(iter(options))!r}; allowed: bounds, noise, "
                         "names, units, time_origin, select (and start, profile, friction, tolerances as before)")

@@ -21,6 +21,7 @@ from typing import Any, Mapping, NamedTuple, Sequence
 import numpy as np
 import xarray as xr
 
+from mdr_events.theory.job import rate_independent
 from mdr_events.analysis.validate import one_path, one_path_job, reference_of, times_from_contact
 from mdr_events.contact import Contact
 from mdr_events.contact.friction import friction_attrs
@@ -217,6 +218,7 @@ def synthetic_measurement(contact: Contact | Parameters, motion, alpha: float | 
     quantities = options.pop("quantities", ("normal_force", "tangential_force", "contact_area"))
     _, tolerances = reference_of(reference, options.pop("tolerances", None), None)
     job = one_path_job(contact, motion, alpha, options, caller="fit")
+    rate_independent(job.contact, "fit (its forward model, solve_path, is rate-independent)")
     if options:
         raise TypeError(f"synthetic_measurement() got an unexpected keyword argument {next(iter(options))!r}; "
                         "allowed: seed, quantities, time_shift (and profile, friction, tolerances beside a Parameters)")

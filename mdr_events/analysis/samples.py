@@ -37,14 +37,18 @@ from typing import Mapping, NamedTuple
 import numpy as np
 
 from mdr_events.io.candidates import Candidate
-from mdr_events.models.continuum import PathSolution, evaluate
+from mdr_events.models.continuum import PathSolution
+from mdr_events.models.continuum.rate_reference import RateSolution
+
+#: An exact solution as a referee reads it (``evaluate_at``, ``events``, ``end_time``, ``ended_by_contact``).
+ExactSolution = PathSolution | RateSolution
 
 __all__ = ["in_contact", "exact_at", "compared_samples", "check_run_covers_the_contact", "contact_differs_share",
            "uncovered_share", "left_out_error", "corner_excess", "CONTINUOUS_EVENTS", "exact_range", "relative_norms",
            "candidate_events", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "CONTACT_MAKING_EVENTS", "events_not_shown",
            "event_time_errors", "FULL_SLIP_SHARE", "SLIDING_SHARE", "Sliding", "sliding", "COMPARED", "UNITS",
            "CONTACT_INDICATORS", "MIN_SAMPLES_IN_CONTACT",
-           "GAP_FACTOR", "TIME_AXIS_SHARE"]
+           "GAP_FACTOR", "TIME_AXIS_SHARE", "ExactSolution"]
 
 
 #: ``left_out`` codes -> meaning.
@@ -105,10 +109,10 @@ def _left_out(times: np.ndarray, exact: dict, candidate: dict, contact: np.ndarr
     return codes
 
 
-def exact_at(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]:
+def exact_at(solution: ExactSolution, times: np.ndarray) -> dict[str, np.ndarray]:
     """The exact quantities at the candidate's times (s from first contact): 0 before the contact, and after a run
     that ended by coming apart (the indenter stays out, as a candidate that keeps writing shows)."""
-    exact = evaluate(solution, np.maximum(times, 0.0))
+    exact = solution.evaluate_at(np.maximum(times, 0.0))
     after = (times > solution.end_time) if solution.ended_by_contact else np.zeros(times.shape, bool)
     for name in ("normal_force", "tangential_force", "contact_radius"):
         exact[name][(times < 0) | after] = 0.0
@@ -117,7 +121,7 @@ def exact_at(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
 
 
 def compared_samples(source: str, times: np.ndarray, exact: dict, quantities: dict, contact: np.ndarray,
-                      solution: PathSolution) -> tuple[np.ndarray, np.ndarray]:
+                      solution: ExactSolution) -> tuple[np.ndarray, np.ndarray]:
     """Each sample's ``left_out`` code and whether it is compared: both runs in contact, or both out of it (every
     force, the radius and the area 0 there); at least :data:`MIN_SAMPLES_IN_CONTACT` inside the exact contact."""
     codes = _left_out(times, exact, quantities, contact, solution.events)
@@ -131,7 +135,7 @@ def compared_samples(source: str, times: np.ndarray, exact: dict, quantities: di
     return codes, (codes == 0) & ((exact_contact & contact) | (~exact_contact & ~contact))
 
 
-def check_run_covers_the_contact(read: Candidate, times: np.ndarray, contact: np.ndarray, solution: PathSolution,
+def check_run_covers_the_contact(read: Candidate, times: np.ndarray, contact: np.ndarray, solution: ExactSolution,
                                   names: Mapping[str, str] | None) -> None:
     """Refuse a run that stops while it is in contact and the exact contact goes on past its next sample: its time
     axis ends there, or a column's values do (``nan`` from there on: a run cut short, not one to pass)."""
@@ -164,7 +168,7 @@ def contact_differs_share(times: np.ndarray, codes: np.ndarray, exact_contact: n
     return float(np.sum(weights[codes == 2]) / inside) if inside > 0 else 0.0
 
 
-def uncovered_share(times: np.ndarray, solution: PathSolution) -> float:
+def uncovered_share(times: np.ndarray, solution: ExactSolution) -> float:
     """The exact contact's time the candidate does not sample, as a share of it: before its first sample (a run whose
     start is cut off), inside gaps longer than :data:`GAP_FACTOR` times its median spacing within the exact contact
     (a run with its middle cut out; rows spaced widely out of contact do not widen what counts as a gap), and after
@@ -218,13 +222,13 @@ def left_out_error(candidate: np.ndarray, exact: np.ndarray, codes: np.ndarray, 
     return float(np.max(np.abs(candidate[left] - exact[left]))) / exact_range(exact, compared)
 
 
-def _contact_ends_within_a_step(solution: PathSolution, times: np.ndarray) -> bool:
+def _contact_ends_within_a_step(solution: ExactSolution, times: np.ndarray) -> bool:
     """Whether the exact contact has ended by the candidate's next sample (its last time plus its last spacing): a
     simulator that stops writing at its last sample in contact (the pull-off) covers the contact."""
     following = float(times[-1] + (times[-1] - times[-2])) if len(times) > 1 else float(times[-1])
     if following >= solution.end_time:
         return True
-    return not float(evaluate(solution, np.array([max(following, 0.0)]))["contact_radius"][0]) > 0.0
+    return not float(solution.evaluate_at(np.array([max(following, 0.0)]))["contact_radius"][0]) > 0.0
 
 
 def exact_range(exact: np.ndarray, compared: np.ndarray) -> float:

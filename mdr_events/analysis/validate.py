@@ -1,7 +1,9 @@
 """Validate a discrete simulator — yours or ours — against the exact continuum: :func:`validate`.
 
 The candidate (any program's output: :func:`mdr_events.io.candidates.read_candidate`) is compared
-sample by sample with the continuum solution (:func:`mdr_events.models.continuum.solve_path`) evaluated
+sample by sample with the continuum solution of the contact's adhesion law
+(:func:`mdr_events.models.methods.exact_solution`: :func:`mdr_events.models.continuum.solve_path` under the paper's
+law, the run of ``simulate(method="continuum")`` under the rate-dependent law, its radius an ODE state) evaluated
 at the candidate's own times, and event by event with the continuum's event log. The report is an
 ``xarray.Dataset`` (:class:`~mdr_events.analysis.reports.ValidationReport` reads it typed). Which samples are
 compared, the norms and the rules that find a candidate's events are :mod:`mdr_events.analysis.samples`'s; each
@@ -28,23 +30,27 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.io.candidates import Candidate, check_run_is_finite, read_candidate
 from mdr_events.theory.scales import check_representable
 from mdr_events.io.datasets import register_schema, stamp, text_list_attrs
-from mdr_events.models.continuum import PathSolution, Tolerances, solve_path
+from mdr_events.models.continuum import PathSolution, Tolerances
+from mdr_events.models.continuum.rate_reference import RateSolution
 from mdr_events.contact import Contact
 from mdr_events.models.indenters import SimulatedProfile, profile_attrs
-from mdr_events.models.methods import Continuum
+from mdr_events.models.methods import Continuum, check_exact_solution, exact_solution
 from mdr_events.models.motion import Paths
 from mdr_events.models.job import ModelJob
 from mdr_events.models.simulate import check_layer_taken, model_job
-from mdr_events.theory.job import rate_independent
 from mdr_events.models.paths import Path
 from mdr_events.models.motion import check_path_representable
 from mdr_events.parameters import Parameters
 from mdr_events.validation import as_float, check_callback, check_real, shown
+from mdr_events.contact.adhesion import adhesion_attrs
 from mdr_events.contact.friction import friction_attrs
 
 __all__ = ["validate", "DEFAULT_TOLERANCE", "contact_differs_share", "resolve_path", "times_from_contact", "candidate_events", "VALIDATION_CONTENT", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "FULL_SLIP_SHARE"]
 #: The verdict's bound on each quantity's max error, relative to its range, unless given.
 DEFAULT_TOLERANCE = 1e-3
+#: The exact solutions a referee reads (:func:`~mdr_events.models.methods.exact_solution`), one per kind of adhesion
+#: law's continuum.
+EXACT_SOLUTIONS = (PathSolution, RateSolution)
 #: The time origins :func:`validate` accepts besides a number.
 TIME_ORIGINS = ("first_contact", "path_start")
 
@@ -73,21 +79,22 @@ def times_from_contact(candidate: Candidate, path: Path, time_origin) -> np.ndar
     return times
 
 
-def reference_of(reference, tolerances, solution) -> tuple[PathSolution | None, Tolerances]:
+def reference_of(reference, tolerances, solution) -> tuple[PathSolution | RateSolution | None, Tolerances]:
     """The solution at hand (or ``None``) and the tolerances of the exact reference: ``reference`` (a
     :class:`~mdr_events.Continuum` or a solution), or the keywords of before (``tolerances=``, ``solution=``)."""
     given = [name for name, value in (("reference", reference), ("tolerances", tolerances), ("solution", solution))
              if value is not None]
     if len(given) > 1:
         raise ValueError(f"{' and '.join(given)} are not allowed together; allowed: one of them")
-    if isinstance(reference, PathSolution) or solution is not None:
+    if isinstance(reference, EXACT_SOLUTIONS) or solution is not None:
         found = reference if solution is None else solution
-        if not isinstance(found, PathSolution):
-            raise TypeError(f"solution={shown(found)} ({type(found).__name__}) is not allowed; allowed: a PathSolution")
+        if not isinstance(found, EXACT_SOLUTIONS):
+            raise TypeError(f"solution={shown(found)} ({type(found).__name__}) is not allowed; allowed: a PathSolution "
+                            "(or a RateSolution under the rate-dependent law)")
         return found, Tolerances()  # (the tolerances serve a solve, and there is none)
     if reference is not None and not isinstance(reference, Continuum):
         raise TypeError(f"reference={shown(reference)} ({type(reference).__name__}) is not allowed; allowed: a "
-                        "Continuum (its tolerances) or a PathSolution")
+                        "Continuum (its tolerances), a PathSolution or a RateSolution")
     if tolerances is not None and not isinstance(tolerances, Tolerances):
         raise TypeError(f"tolerances={shown(tolerances)} ({type(tolerances).__name__}) is not allowed; allowed: a "
                         "Tolerances")
@@ -121,19 +128,39 @@ class ValidationJob(NamedTuple):
     units: Mapping[str, str] | None
     time_origin: Any
     select: Mapping[str, object] | None
-    solution: PathSolution | None
+    solution: PathSolution | RateSolution | None
     tolerances: Tolerances
+
+    def exact(self, limits: Limits) -> PathSolution | RateSolution:
+        """The exact solution of :attr:`path`: the one at hand, else the continuum's of the contact's adhesion law
+        (:func:`~mdr_events.models.methods.exact_solution`).
+
+        Parameters
+        ----------
+        limits : Limits
+            What the continuum run may use.
+
+        Returns
+        -------
+        PathSolution or RateSolution
+            The solution.
+        """
+        if self.solution is not None:
+            return self.solution
+        return exact_solution(self.model, self.path, self.tolerances, limits)
 
 
 def one_path_job(contact, motion, alpha, options: dict[str, Any], caller: str = "validate") -> ModelJob:
     """:func:`~mdr_events.models.simulate.model_job` of a motion of one path (a scenario's name needs one angle;
-    :func:`one_path` checks a Scenario's or Paths'), of a rate-independent adhesion law (``caller``'s reference
-    is), on a body the continuum runs (a layer of finite thickness with what the continuum takes there:
+    :func:`one_path` checks a Scenario's or Paths'), of a contact the continuum runs (``Continuum.check_model``: under
+    the rate-dependent law the friction law ``"tau0"``, its springs' caps one play operator), on a body it runs (a
+    layer of finite thickness with what the continuum takes there, the paper's law:
     :func:`~mdr_events.models.simulate.check_layer_taken`)."""
     if isinstance(motion, str) and (alpha is None or np.ndim(alpha) != 0):  # (a scenario of several angles)
         raise ValueError(f"alpha={alpha!r} is not allowed with scenario {motion!r}; allowed: one angle in degrees")
     job = model_job(contact, motion, alpha, options)
-    rate_independent(job.contact, f"{caller} (its reference is rate-independent)")
+    Continuum().check_model(job)
+    check_exact_solution(job, caller)
     check_layer_taken(job.contact, job.motion, Continuum(), where=caller)
     return job
 
@@ -153,11 +180,10 @@ def _validation_job(contact, motion, alpha, tolerance, reference, options: Mappi
     check_real("tolerance", tolerance, "a number in (0, 1] (the largest error relative to the quantity's range: "
                "above 1 every run would pass)", lambda value: 0 < value <= 1)
     check_representable(model.params, model.profile, model.friction)
-    for name in ("profile", "friction"):
-        if solution is not None and getattr(solution.model, name) != getattr(model, name):
-            raise ValueError(f"solution= was solved for {name}={getattr(solution.model, name)!r}, not for "
-                             f"{name}={getattr(model, name)!r}; allowed: a solution of this "
-                             f"{'indenter' if name == 'profile' else 'friction law'}")
+    for name, what in (("profile", "indenter"), ("friction", "friction law"), ("adhesion", "adhesion law")):
+        if solution is not None and getattr(solution, name) != getattr(model, name):
+            raise ValueError(f"solution= was solved for {name}={getattr(solution, name)!r}, not for "
+                             f"{name}={getattr(model, name)!r}; allowed: a solution of this {what}")
     path, angle = one_path(model)
     if solution is not None:
         _check_solution_is_of(solution, model, path)
@@ -166,7 +192,7 @@ def _validation_job(contact, motion, alpha, tolerance, reference, options: Mappi
     return ValidationJob(model, path, names, units, time_origin, select, solution, tolerances)
 
 
-def _check_solution_is_of(solution: PathSolution, model: ModelJob, path: Path) -> None:
+def _check_solution_is_of(solution: PathSolution | RateSolution, model: ModelJob, path: Path) -> None:
     """Refuse a solution at hand of other parameters or another path than the run judged (a run of τ0 = 20 kPa
     passed as the paper's contact beside a solution of 20 kPa)."""
     if solution.params != model.params:
@@ -181,7 +207,7 @@ def _check_solution_is_of(solution: PathSolution, model: ModelJob, path: Path) -
 
 
 def validate(candidate, contact: Contact | Parameters, motion, alpha: float | None = None, *,
-             tolerance: float = DEFAULT_TOLERANCE, reference: Continuum | PathSolution | None = None,
+             tolerance: float = DEFAULT_TOLERANCE, reference: Continuum | PathSolution | RateSolution | None = None,
              limits: Limits = DEFAULT_LIMITS, progress: Callable[[str], None] | None = None,
              **options) -> xr.Dataset:
     """Compare a simulator's output with the exact continuum on the same path, sample and event by event.
@@ -202,9 +228,11 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
         With a scenario's name: the path's angle (one angle, degrees).
     tolerance : float
         The verdict's bound on each quantity's ``max_error`` (relative to its range), in (0, 1].
-    reference : Continuum or PathSolution, optional
-        The exact reference: the continuum with its tolerances (default ``Continuum()``), or its solution of this
-        path, contact and tolerances if already at hand (:func:`~mdr_events.analysis.convergence_study.convergence_study`
+    reference : Continuum, PathSolution or RateSolution, optional
+        The exact reference: the continuum of the contact's adhesion law with its tolerances (default
+        ``Continuum()``; under the rate-dependent law the run of ``simulate(method="continuum")``, its log's events
+        those of the moving edge and of the springs on top), or its solution of this path, contact and tolerances if
+        already at hand (:func:`~mdr_events.analysis.convergence_study.convergence_study`
         solves once for all spacings). ``tolerances=`` and ``solution=`` among the options say the same.
     limits : Limits
         What the continuum run may use (a measured path of more than ``limits.waypoints`` waypoints is
@@ -261,7 +289,8 @@ def validate(candidate, contact: Contact | Parameters, motion, alpha: float | No
                  events_not_compared="; ".join(f"{name} ({why})" for name, why in not_shown.items()) or "none",
                  **text_list_attrs("failures", failures),
                  time_origin=str(job.time_origin), verdict=verdict.value, path_waypoints=job.path.describe(),
-                 path_speed=job.path.speed, **profile_attrs(model.profile), **friction_attrs(model.friction))
+                 path_speed=job.path.speed, **profile_attrs(model.profile), **friction_attrs(model.friction),
+                 **adhesion_attrs(model.adhesion))
     if not model.contact.layer.is_half_space:  # (the half-space stamps no layer: its reports are those of before)
         attrs.update(model.contact.layer.to_attrs())
     return stamp(xr.Dataset(data, coords=coords), model.params, **attrs)
@@ -273,7 +302,7 @@ class _Samples(NamedTuple):
 
     read: Candidate
     times: np.ndarray
-    solution: PathSolution
+    solution: PathSolution | RateSolution
     exact: dict[str, np.ndarray]
     quantities: dict[str, np.ndarray]
     contact: np.ndarray
@@ -291,10 +320,7 @@ def _samples(job: ValidationJob, candidate, limits: Limits, progress) -> _Sample
                          "serves only the events)")
     check_run_is_finite(read, in_contact(read.quantities), job.names)
     times = times_from_contact(read, job.path, job.time_origin)
-    model = job.model
-    solution = job.solution if job.solution is not None else \
-        solve_path(model.params, job.path, job.tolerances, limits, model.profile, model.friction,
-                   layer=model.contact.layer)
+    solution = job.exact(limits)
     exact = exact_at(solution, times)
     quantities = dict(read.quantities)
     contact = in_contact(quantities)
@@ -361,7 +387,7 @@ def _event_variables(data: dict, samples: _Samples, job: ValidationJob) -> tuple
     events compared and those the candidate cannot show, with why."""
     paper_law = job.model.friction.is_default
     found = candidate_events(samples.times, samples.quantities, samples.contact, job.model.params, paper_law)
-    not_shown = events_not_shown(samples.quantities)
+    not_shown = {**events_not_shown(samples.quantities), **samples.solution.events_not_timed}
     first = {}
     for event in samples.solution.events:
         first.setdefault("pull_off" if event.kind.value == "contact_ends" else event.kind.value, event)
@@ -389,7 +415,7 @@ def _event_variables(data: dict, samples: _Samples, job: ValidationJob) -> tuple
              "stops showing it (the verdict's bound: tolerance; nan: not compared)")):
         data[key] = (("event",), values, {"units": unit, "long_name": text})
     pull = first.get("pull_off")
-    exact_force = float(samples.solution.model.normal_force(pull.depth, pull.radius)) if pull else math.nan
+    exact_force = samples.solution.normal_force_at(pull) if pull else math.nan
     data["pull_off_force_exact"] = ((), exact_force, {"units": "N", "long_name": "F_N at the pull-off, continuum"})
     data["pull_off_force_candidate"] = ((), found["pull_off_force"],
                                         {"units": "N", "long_name": "F_N at the candidate's last sample in contact"})

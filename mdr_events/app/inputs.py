@@ -41,7 +41,7 @@ if TYPE_CHECKING:  # (the models and the table reader are imported where used: a
     from mdr_events.models.motion import Paths, Scenario
     from mdr_events.models.paths import Path
 
-__all__ = ["parameters", "indenter", "friction", "adhesion", "ADHESION_LAWS", "check_rate_run", "check_reference_law", "angle_speeds", "layer", "limits", "path", "contact", "scenario", "paths", "method",
+__all__ = ["parameters", "indenter", "friction", "adhesion", "ADHESION_LAWS", "check_rate_run", "check_reference_run", "check_reference_law", "angle_speeds", "layer", "limits", "path", "contact", "scenario", "paths", "method",
            "DEFAULT_PRESET"]
 
 #: The preset of the paper both front ends start from when none is named.
@@ -173,9 +173,29 @@ def check_rate_run(contact: Contact, motion: Scenario | Paths, method: Method, w
     check_layer_taken(contact, motion, method, where=where)
 
 
+def check_reference_run(contact: Contact, motion: Scenario | Paths, where: str) -> None:
+    """Refuse the rate-dependent law where the referee ``where`` (``validate``) cannot take its reference, the law's
+    own continuum: what the continuum does not run (:func:`check_rate_run`) and what its exact solution of one path
+    does not take (:func:`~mdr_events.models.methods.check_exact_solution`: Coulomb's part); the paper's law passes.
+
+    Raises
+    ------
+    ValueError, TypeError
+        What the reference refuses, in its own words.
+    """
+    if not contact.adhesion.is_rate_dependent:
+        return
+    from mdr_events.models.methods import Continuum, check_exact_solution
+    from mdr_events.models.simulate import model_job
+
+    check_rate_run(contact, motion, Continuum(), where)
+    check_exact_solution(model_job(contact, motion, None, {}), where)
+
+
 def check_reference_law(contact: Contact, where: str) -> None:
-    """Refuse the rate-dependent law where the reference is the rate-independent continuum of ``solve_path``
-    (``validate``, ``lammps-check``): the one-line ``TypeError`` naming the law and what runs it.
+    """Refuse the rate-dependent law where the model compared is rate independent (``lammps-check``: LAMMPS's
+    granular models): the one-line ``TypeError`` naming the law and what runs it (``validate`` referees the law
+    against its own continuum: :func:`check_rate_run` with the continuum).
 
     Raises
     ------
@@ -183,9 +203,9 @@ def check_reference_law(contact: Contact, where: str) -> None:
         A contact whose adhesion law is rate dependent.
     """
     if contact.adhesion.is_rate_dependent:
-        raise TypeError(f"adhesion={contact.adhesion!r} is not allowed in {where}: its reference, the exact continuum "
-                        "of solve_path, is rate independent; allowed: the paper's law (the rate law's own continuum "
-                        "run: simulate --method continuum with it; its joint fit to measured F_N: fit)")
+        raise TypeError(f"adhesion={contact.adhesion!r} is not allowed in {where}: LAMMPS's granular models hold a work "
+                        "of adhesion independent of the edge's speed; allowed: the paper's law (a run of the rate law "
+                        "is refereed by validate against its own continuum)")
 
 
 def angle_speeds(contact: Contact, speeds: Sequence[float] | None, params: Parameters) -> tuple[float, ...] | None:

@@ -377,8 +377,8 @@ def _validation(tables: _Tables) -> ValidateJob | None:
     table = tables.document.get("validate")
     if table is None:
         return None
-    _reference_law(tables, "validate")
     motion, description = _measured_motion(tables, "validate")
+    _reference_run(tables, motion, "validate")
     _reference_layer(tables, motion, "validate")
     stems: dict[str, str] = {}
     for run in table["runs"]:
@@ -397,9 +397,19 @@ def _validation(tables: _Tables) -> ValidateJob | None:
                        tables.provenance)
 
 
+def _reference_run(tables: _Tables, motion: Motion, table: str) -> None:
+    """The study's rate-dependent ``[adhesion]`` with what its continuum, ``[table]``'s reference, does not run (a
+    friction law other than ``"tau0"``, a layer), named when the study is read
+    (:func:`~mdr_events.app.inputs.check_reference_run`)."""
+    try:
+        inputs.check_reference_run(tables.contact, motion, table)
+    except (ValueError, TypeError) as error:
+        raise StudyError(f"{tables.where}: [{table}] {error}") from None
+
+
 def _reference_law(tables: _Tables, table: str) -> None:
-    """The study's rate-dependent ``[adhesion]`` where ``[table]``'s reference is the rate-independent continuum,
-    named when the study is read (:func:`~mdr_events.app.inputs.check_reference_law`)."""
+    """The study's rate-dependent ``[adhesion]`` where ``[table]`` compares a rate-independent model
+    (``[lammps_check]``), named when the study is read (:func:`~mdr_events.app.inputs.check_reference_law`)."""
     try:
         inputs.check_reference_law(tables.contact, table)
     except TypeError as error:

@@ -143,7 +143,8 @@ class RateDependentAdhesion:
                                 "tau0, Coulomb's part spring by spring); "
                                 "its normal problem also runs in mdr_events.continuum.solve_edge, scenario A's phase "
                                 "diagram and critical angle at a speed in mdr_events.phase_diagram_at_speeds and "
-                                "critical_angles_at_speeds, scenario B's in critical_angles_B_at_speeds")
+                                "critical_angles_at_speeds, scenario B's in critical_angles_B_at_speeds; validate "
+                                "referees a run of it against simulate's continuum run")
 
     def __post_init__(self) -> None:
         checks = {"dgamma0": ("a finite number > 0 (J m-2)", lambda value: value > 0.0),

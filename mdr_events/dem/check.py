@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import xarray as xr
 
+from mdr_events.theory.job import rate_independent
 from mdr_events.analysis.validate import DEFAULT_TOLERANCE, one_path, one_path_job, validate
 from mdr_events.contact import Contact
 from mdr_events.dem.mapping import LammpsModel, check_model
@@ -57,6 +58,8 @@ def lammps_check(contact: Contact, motion, alpha: float | None = None, *, model:
     check_model(model)
     if isinstance(motion, Path):
         motion, alpha = Paths({"path": motion}), None
+    # (LAMMPS's granular models hold a work of adhesion that does not depend on the edge's speed)
+    rate_independent(contact, "the LAMMPS check (its granular models are rate independent)")
     path, _ = one_path(one_path_job(contact, motion, alpha, {}, caller="the LAMMPS check"))
     run = run_lammps(contact, path, model.normal, model.tangential, steps=steps, dt=dt, limits=limits)
     report = validate(run, contact, motion, alpha, tolerance=tolerance, limits=limits, time_origin="path_start")

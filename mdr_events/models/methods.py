@@ -27,7 +27,8 @@ from mdr_events.contact.friction import FrictionLaw, friction_attrs
 from mdr_events.contact.model import Contact
 from mdr_events.limits import Limits
 from mdr_events.models import indenters
-from mdr_events.models.continuum import Tolerances, run_continuum
+from mdr_events.models.continuum import PathSolution, Tolerances, run_continuum, solve_path
+from mdr_events.models.continuum.rate_reference import RateSolution, solve_rate_reference
 from mdr_events.models.continuum.tolerances import check_output, check_tolerances
 from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.play_run import run_play_springs, takes_play_springs
@@ -45,7 +46,8 @@ from mdr_events.models.simulation_schema import SIMULATION_CONTENT, continuum_da
 from mdr_events.validation import check_count, check_output_times, check_real, shown
 
 __all__ = ["Discrete", "Continuum", "Method", "METHODS", "as_method", "check_time_step", "DEFAULT_DX",
-           "DEFAULT_STEPS", "DEFAULT_SAMPLES", "MIN_STEPS_PER_SEGMENT"]
+           "DEFAULT_STEPS", "DEFAULT_SAMPLES", "MIN_STEPS_PER_SEGMENT", "exact_solution",
+           "check_exact_solution"]
 
 DEFAULT_DX = 1e-6
 DEFAULT_STEPS = 10_000
@@ -361,15 +363,29 @@ def _paper_run(model: KernelModel, paths, times, tolerances, limits) -> dict:
 
 
 class ContinuumKernel(NamedTuple):
-    """How the continuum runs an adhesion law: the run, and the check of the friction law it takes (given the friction
-    law and the adhesion law, which a refusal names)."""
+    """How the continuum runs an adhesion law: the run, the check of the friction law it takes (given the friction
+    law and the adhesion law, which a refusal names), the exact solution of one path a referee reads
+    (:func:`exact_solution`) and the check of the friction law that solution takes (given the two laws and the
+    referee's name: :func:`check_exact_solution`)."""
 
     run: Callable[..., dict]
     check: Callable[[FrictionLaw, object], None]
+    solve: Callable[..., object]
+    check_solve: Callable[[FrictionLaw, object, str], None]
 
 
-def _every_friction_law(friction: FrictionLaw, adhesion: object) -> None:
-    """The paper's edge takes every friction law."""
+def _every_friction_law(friction: FrictionLaw, adhesion: object, caller: str = "") -> None:
+    """The paper's edge takes every friction law (in its runs and its exact solution)."""
+
+
+def _rate_reference_friction(friction: FrictionLaw, adhesion: object, caller: str) -> None:
+    """The rate law's exact solution of one path (:func:`_rate_solution`) holds τ0's cap alone: Coulomb's part refused
+    in one line naming ``caller``, both laws and what runs them."""
+    if takes_rate_coulomb(friction):
+        raise ValueError(f"friction={friction!r} is not allowed in {caller} with adhesion={adhesion!r}: its reference, "
+                         "the rate law's continuum at the candidate's times, holds tau0's cap alone (Coulomb's part "
+                         "gives each spring its own cap); allowed: FrictionLaw('tau0') (Coulomb's part under this law: "
+                         "simulate(..., method='continuum') runs it)")
 
 
 def _rate_run(model: KernelModel, paths, times, tolerances, limits) -> dict:
@@ -383,12 +399,26 @@ def _rate_run(model: KernelModel, paths, times, tolerances, limits) -> dict:
     return run(model.params, paths, times, tolerances, limits, model.profile, model.friction, model.adhesion)
 
 
+def _paper_solution(model: KernelModel, path: Path, tolerances: Tolerances, limits: Limits) -> PathSolution:
+    """The paper's law: :func:`~mdr_events.models.continuum.solve.solve_path` on the contact's body."""
+    return solve_path(model.params, path, tolerances, limits, model.profile, model.friction, layer=model.layer)
+
+
+def _rate_solution(model: KernelModel, path: Path, tolerances: Tolerances, limits: Limits) -> RateSolution:
+    """The rate-dependent law: the run of ``simulate``'s continuum method
+    (:func:`~mdr_events.models.continuum.rate_reference.solve_rate_reference`), on the half-space alone."""
+    check_rate_layer(model.layer)
+    return solve_rate_reference(model.params, path, model.adhesion, tolerances, model.profile, model.friction)
+
+
 #: The runs of the adhesion laws whose radius is not on the branches of an edge rule (the continuum's
 #: ``EDGE_RULES``), by their type: the rate-dependent edge an ODE state with the springs on top
 #: (:mod:`~mdr_events.models.continuum.rate_run`; Coulomb's part spring by spring,
-#: :mod:`~mdr_events.models.continuum.rate_coulomb`), which takes every friction law.
-CONTINUUM_RUNS: dict[type, ContinuumKernel] = {RateDependentAdhesion: ContinuumKernel(_rate_run,
-                                                                                      check_rate_friction_law)}
+#: :mod:`~mdr_events.models.continuum.rate_coulomb`), which takes every friction law; its reference for ``validate``
+#: (:mod:`~mdr_events.models.continuum.rate_reference`) takes ``"tau0"`` alone.
+CONTINUUM_RUNS: dict[type, ContinuumKernel] = {RateDependentAdhesion: ContinuumKernel(_rate_run, check_rate_friction_law,
+                                                                                      _rate_solution,
+                                                                                      _rate_reference_friction)}
 
 
 def continuum_kernel(adhesion) -> ContinuumKernel:
@@ -413,8 +443,57 @@ def continuum_kernel(adhesion) -> ContinuumKernel:
     kernel = CONTINUUM_RUNS.get(type(adhesion))
     if kernel is None:
         check_edge_known(adhesion)
-        kernel = ContinuumKernel(_paper_run, _every_friction_law)
+        kernel = ContinuumKernel(_paper_run, _every_friction_law, _paper_solution, _every_friction_law)
     return kernel
+
+
+def exact_solution(model: ModelJob, path: Path, tolerances: Tolerances, limits: Limits) -> PathSolution | RateSolution:
+    """The continuum's exact solution of ``path`` for ``model``'s contact, by its adhesion law
+    (:func:`continuum_kernel`): the paper's :class:`~mdr_events.models.continuum.solution.PathSolution`, the
+    rate-dependent law's :class:`~mdr_events.models.continuum.rate_reference.RateSolution`; both answer a referee by
+    the same names (``evaluate_at``, ``normal_force_at``, ``events``, ``end_time``).
+
+    Parameters
+    ----------
+    model : ModelJob
+        The contact along its motion.
+    path : Path
+        The one path solved.
+    tolerances : Tolerances
+        The continuum's tolerances.
+    limits : Limits
+        What the run may use.
+
+    Returns
+    -------
+    PathSolution or RateSolution
+        The solution.
+
+    Raises
+    ------
+    ValueError, TypeError
+        What the law's continuum refuses.
+    """
+    return continuum_kernel(model.adhesion).solve(model.kernel, path, tolerances, limits)
+
+
+def check_exact_solution(model: ModelJob, caller: str) -> None:
+    """Refuse, before anything is read or solved, a friction law that :func:`exact_solution` does not take for
+    ``model``'s adhesion law (under the rate-dependent law, Coulomb's part), in one line naming ``caller``.
+
+    Parameters
+    ----------
+    model : ModelJob
+        The contact along its motion.
+    caller : str
+        The referee (e.g. ``"validate"``), named in the refusal.
+
+    Raises
+    ------
+    ValueError
+        A friction law the law's exact solution does not take.
+    """
+    continuum_kernel(model.adhesion).check_solve(model.friction, model.adhesion, caller)
 
 
 #: A method.

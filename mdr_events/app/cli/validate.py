@@ -108,14 +108,15 @@ def job(args: argparse.Namespace) -> tuple[ValidateJob, str | None]:
     from mdr_events.io.candidates import CANDIDATE_QUANTITIES
 
     from mdr_events.app import inputs
+    from mdr_events.models.methods import Continuum
 
     params, provenance = _options.measured_parameters(args)
     contact = _options.contact(args, params)
-    try:
-        inputs.check_reference_law(contact, "validate")
-    except TypeError as error:
-        raise UsageError(f"--adhesion-law rate: {error}") from None
     motion, description = _options.measured_motion(args, params, contact)
+    try:  # (the rate law's reference is its own continuum: what that does not run, named before a run is read)
+        inputs.check_reference_run(contact, motion, "validate")
+    except (TypeError, ValueError) as error:
+        raise UsageError(f"--adhesion-law rate: {error}") from None
     _options.check_reference_layer(contact, motion, "validate")
     names = _options.pairs("--names", args.names, list(CANDIDATE_QUANTITIES))
     units = _options.pairs("--units", args.units, list(CANDIDATE_QUANTITIES))

@@ -42,7 +42,7 @@ from .solve import BYTES_PER_SAMPLE
 from .state import Event, EventKind
 from .tolerances import Tolerances, check_output
 
-__all__ = ["run_rate_continuum", "check_rate_layer", "rate_quantities", "rate_events", "rate_extrema", "Scan", "scan_run",
+__all__ = ["run_rate_continuum", "run_end", "check_rate_layer", "rate_quantities", "rate_events", "rate_extrema", "Scan", "scan_run",
            "EXTREMUM_PROBES", "SWITCH_XTOL", "SWITCH_POINTS", "RUN_METHOD"]
 
 #: Points inside each of the edge's solver steps at which the scan looks (besides the steps' ends and the level's
@@ -65,8 +65,19 @@ _EDGE_KINDS = {EdgeEventKind.FIRST_CONTACT: EventKind.FIRST_CONTACT, EdgeEventKi
                EdgeEventKind.CONTACT_ENDS: EventKind.CONTACT_ENDS}
 
 
-def _end(shifts: RateShifts) -> tuple[float, bool]:
-    """The run's end on the path's clock and whether the contact ended there (for good: no contact after it)."""
+def run_end(shifts: RateShifts) -> tuple[float, bool]:
+    """The run's end on the path's clock and whether the contact ended there (for good: no contact after it).
+
+    Parameters
+    ----------
+    shifts : RateShifts
+        The run.
+
+    Returns
+    -------
+    tuple of float and bool
+        The end (s, path clock) and whether the contact ended there.
+    """
     last = shifts.edge.events[-1]
     if last.kind is EdgeEventKind.CONTACT_ENDS:
         return float(last.time), True
@@ -91,7 +102,7 @@ def rate_quantities(shifts: RateShifts, times: np.ndarray) -> dict[str, np.ndarr
     """
     path = shifts.path
     clock = np.asarray(times, dtype=float) + path.first_contact_time()
-    end, ended = _end(shifts)
+    end, ended = run_end(shifts)
     x, depth = path.position(clock)
     radius = shifts._radius(clock)
     force, sliding = shifts._evaluate(clock)
@@ -147,7 +158,7 @@ def scan_run(shifts: RateShifts) -> Scan:
         The quantities on the scan's times.
     """
     start = shifts.path.first_contact_time()
-    end, _ = _end(shifts)
+    end, _ = run_end(shifts)
     knots = np.unique(np.concatenate([[view.t0, view.t1] for view in shifts.views]
                                      + [getattr(view.solution, "ts", []) for view in shifts.views]))
     knots = np.unique(np.concatenate([[start], knots[(knots >= start) & (knots <= end)]]))  # (radius 0 at the start)
@@ -265,7 +276,7 @@ def rate_events(shifts: RateShifts, scan: Scan) -> list[Event]:
         In time order.
     """
     path, start = shifts.path, shifts.path.first_contact_time()
-    end, _ = _end(shifts)
+    end, _ = run_end(shifts)
     timed = [(event.time, _EDGE_KINDS[event.kind], 0) for event in shifts.edge.events if event.kind in _EDGE_KINDS]
     corners = path.corner_times[1:-1]
     timed += [(float(t), EventKind.CORNER, 0) for t in corners
@@ -305,7 +316,7 @@ def rate_extrema(shifts: RateShifts, scan: Scan) -> dict[str, float]:
         ``q_max``, ``q_max_time``, ``q_min``, ``q_min_time`` of each quantity.
     """
     start = shifts.path.first_contact_time()
-    end, ended = _end(shifts)
+    end, ended = run_end(shifts)
     grid = scan.times
     scanned = {"normal_force": scan.normal, "tangential_force": scan.force, "contact_area": math.pi * scan.radius ** 2}
     out = {}
@@ -390,7 +401,7 @@ def run_rate_continuum(params: Parameters, paths: list[Path], times: np.ndarray 
     runs = [solve_rate_shifts(params, path, law, profile=profile, friction=friction, rtol=tolerances.rtol,
                               method=RUN_METHOD) for path in paths]
     if samples is not None:
-        times = sample_times([_end(run)[0] - run.path.first_contact_time() for run in runs],
+        times = sample_times([run_end(run)[0] - run.path.first_contact_time() for run in runs],
                              [run.path.duration - run.path.first_contact_time() for run in runs], samples)
     times = np.asarray(times, dtype=float)
     per_case = [rate_quantities(run, times) for run in runs]

@@ -10,6 +10,7 @@ from typing import NamedTuple
 import numpy as np
 from scipy import optimize
 
+from mdr_events.contact.adhesion import Adhesion
 from mdr_events.parameters import Parameters
 from mdr_events.validation import check_real, real_array, shown
 from .dense import force_values
@@ -61,6 +62,57 @@ class PathSolution:
     def ended_by_contact(self) -> bool:
         """The run ended because the contact came apart (not at the end of the path)."""
         return bool(self.events) and self.events[-1].kind in CONTACT_ENDING
+
+    @property
+    def events_not_timed(self) -> dict[str, str]:
+        """The events whose time a sampled run cannot show at the order of its resolution, with why: none (the
+        paper's radius leaves its events at a finite rate)."""
+        return {}
+
+    @property
+    def profile(self):
+        """The indenter solved (``model.profile``; ``None``: the paraboloid of ``params.R``)."""
+        return self.model.profile
+
+    @property
+    def friction(self):
+        """The friction law solved (``model.friction``)."""
+        return self.model.friction
+
+    @property
+    def adhesion(self) -> Adhesion:
+        """The adhesion law solved: the paper's, of the parameters' works of adhesion."""
+        return Adhesion(self.params.dgamma0, self.params.dgamma1)
+
+    def evaluate_at(self, times: np.ndarray) -> dict[str, np.ndarray]:
+        """The quantities at ``times`` (s from first contact): :func:`evaluate` of this solution.
+
+        Parameters
+        ----------
+        times : numpy.ndarray
+            The times (s from first contact).
+
+        Returns
+        -------
+        dict of str to numpy.ndarray
+            Each of :data:`EVALUATED_QUANTITIES` at ``times``.
+        """
+        return evaluate(self, times)
+
+    def normal_force_at(self, event: Event) -> float:
+        """``F_N`` at ``event``, of its depth and radius.
+
+        Parameters
+        ----------
+        event : Event
+            An event of :attr:`events`.
+
+        Returns
+        -------
+        float
+            The normal force (N).
+        """
+        return float(self.model.normal_force(event.depth, event.radius))
 
     def span_index(self, times: np.ndarray) -> np.ndarray:
         """Index of the span that holds each time (s from first contact): the first span ending at or
