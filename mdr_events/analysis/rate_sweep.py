@@ -19,8 +19,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from mdr_events.analysis.sweep_events import event_quantities, first_events
 from mdr_events.limits import Limits
-from mdr_events.models.continuum import EventKind
 from mdr_events.models.continuum.rate_run import RUN_METHOD, rate_events, rate_extrema, rate_quantities, scan_run
 from mdr_events.models.continuum.rate_shifts import RateShifts, solve_rate_shifts
 from mdr_events.models.continuum.solution import WORK_NODES
@@ -34,8 +34,6 @@ __all__ = ["rate_continuum_quantities", "rate_tangential_work", "check_rate_swee
 
 #: The history's quantities (rows), as :data:`~mdr_events.analysis.sweep_runs.HISTORY_QUANTITIES` names them.
 HISTORY_NAMES = ("normal_force", "tangential_force", "contact_area")
-#: The events that end a run's contact (the paper's law logs a pull-off, the rate law the contact's end).
-_ENDS = (EventKind.PULL_OFF, EventKind.CONTACT_ENDS)
 
 
 def check_rate_sweep_run(model: ModelJob) -> None:
@@ -129,21 +127,8 @@ def rate_continuum_quantities(model: ModelJob, path: Path, method: Continuum, li
            "contact_area_max": extrema["contact_area_max"],
            "tangential_work": rate_tangential_work(shifts, np.concatenate([scan.times, [e.time + start for e in events]])),
            "event_count": float(len(events))}
-    deepest = float(path.corner_times[int(np.argmax(path.waypoints[:, 1]))])
-    first: dict[str, object] = {}
-    for event in events:
-        clock = event.time + start
-        if event.kind is EventKind.SLIP_ONSET:
-            first.setdefault("slip_onset_in" if clock <= deepest else "slip_onset_out", event)
-        elif event.kind is EventKind.FULL_SLIP:
-            first.setdefault("full_slip", event)
-        elif event.kind in _ENDS:
-            first.setdefault("pull_off", event)
-    for key in ("slip_onset_in", "slip_onset_out", "full_slip", "pull_off"):
-        event = first.get(key)
-        out[f"{key}_time"] = float(event.time + start) if event else math.nan
-        if key != "full_slip":
-            out[f"{key}_depth"] = float(event.depth) if event else math.nan
+    first = first_events(events, path, start)
+    out.update(event_quantities(first, start))
     pull = first.get("pull_off")
     out["pull_off_force"] = float(shifts.normal_force(np.array([pull.time + start]))[0]) if pull else math.nan
     if times is None:

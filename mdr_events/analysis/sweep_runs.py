@@ -28,11 +28,12 @@ import numpy as np
 from mdr_events.analysis.fit import curves_of
 from mdr_events.analysis.rate_sweep import check_rate_sweep_run, rate_continuum_quantities
 from mdr_events.analysis.samples import candidate_events, sliding as sliding_samples
+from mdr_events.analysis.sweep_events import deepest_time, event_quantities, first_events
 from mdr_events.contact import Contact
 from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models import indenters
-from mdr_events.models.continuum import EventKind, extremum, solve_path, tangential_work
+from mdr_events.models.continuum import extremum, solve_path, tangential_work
 from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.media import check_law
 from mdr_events.models.continuum.solution import scan_spans
@@ -268,25 +269,6 @@ def _motion_at(motion: Motion, settings: dict[str, float]) -> Motion:
     return dataclasses.replace(motion, **changes) if changes else motion
 
 
-def _deepest_time(path: Path) -> float:
-    return float(path.corner_times[int(np.argmax(path.waypoints[:, 1]))])
-
-
-def _first_events(solution, path: Path) -> dict[str, object]:
-    """The first slip onset on the way in and on the way out, the first full slip and the pull-off."""
-    deepest = _deepest_time(path)
-    first: dict[str, object] = {}
-    for event in solution.events:
-        kind = event.kind
-        if kind is EventKind.SLIP_ONSET:
-            first.setdefault("slip_onset_in" if event.time <= deepest else "slip_onset_out", event)
-        elif kind is EventKind.FULL_SLIP:
-            first.setdefault("full_slip", event)
-        elif kind in (EventKind.PULL_OFF, EventKind.CONTACT_ENDS):
-            first.setdefault("pull_off", event)
-    return first
-
-
 #: The continuum's quantities of the adhesion laws that ``simulate``'s continuum runs by a run of their own (not on the
 #: spans of ``solve_path``), by the law's type: the rate-dependent law's (:mod:`~mdr_events.analysis.rate_sweep`).
 CONTINUUM_QUANTITIES: dict[type, Callable[..., tuple[dict[str, float], np.ndarray | None]]] = {
@@ -308,12 +290,8 @@ def continuum_quantities(model: ModelJob, path: Path, method: Continuum, limits:
                                        abs(extremum(solution, "tangential_force", largest=False, scan=scan)[1])),
            "contact_area_max": extremum(solution, "contact_area", largest=True, scan=scan)[1],
            "tangential_work": tangential_work(solution), "event_count": float(len(solution.events))}
-    first = _first_events(solution, path)
-    for key in ("slip_onset_in", "slip_onset_out", "full_slip", "pull_off"):
-        event = first.get(key)
-        out[f"{key}_time"] = float(event.time) if event else math.nan
-        if key != "full_slip":
-            out[f"{key}_depth"] = float(event.depth) if event else math.nan
+    first = first_events(solution.events, path)
+    out.update(event_quantities(first))
     pull = first.get("pull_off")
     out["pull_off_force"] = float(solution.model.normal_force(pull.depth, pull.radius)) if pull else math.nan
     if times is None:
@@ -341,7 +319,7 @@ def discrete_quantities(model: ModelJob, path: Path, method: Discrete, limits: L
     found = candidate_events(times, quantities, contact, model.params)
     start = path.first_contact_time()
     depth = run["indentation_depth"].values
-    deepest = _deepest_time(path)
+    deepest = deepest_time(path)
     sliding_now = sliding_samples(quantities["sliding_fraction"]).partly
     sliding = np.flatnonzero(sliding_now & ~np.concatenate([[False], sliding_now[:-1]]))  # onsets: sliding, not before
     path_times = times + start
