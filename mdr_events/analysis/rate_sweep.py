@@ -21,6 +21,7 @@ import numpy as np
 
 from mdr_events.analysis.sweep_events import event_quantities, first_events
 from mdr_events.limits import Limits
+from mdr_events.models.continuum.rate_coulomb import takes_rate_coulomb
 from mdr_events.models.continuum.rate_run import RUN_METHOD, rate_events, rate_extrema, rate_quantities, scan_run
 from mdr_events.models.continuum.rate_shifts import RateShifts, solve_rate_shifts
 from mdr_events.models.continuum.solution import WORK_NODES
@@ -54,7 +55,7 @@ def check_rate_sweep_run(model: ModelJob) -> None:
     ValueError
         A friction law with Coulomb's part: one line naming it, the law and what runs it.
     """
-    if model.friction.law != "tau0":
+    if takes_rate_coulomb(model.friction):
         raise ValueError(f"friction={model.friction!r} is not allowed in a continuum sweep with "
                          f"adhesion={model.adhesion!r} (Coulomb's part: each spring its own cap); allowed: "
                          "FrictionLaw('tau0') (Coulomb's part under this law: method='discrete' sweeps it, "
