@@ -340,7 +340,9 @@ class AnchorMap:
             The lengths (m).
         """
         shift = caps.centre_shift(radius, depth)
-        return sum(self.seen_by(cap, caps.kappa).zone_sizes(cap, x - cap * shift, radius) for cap in Cap)
+        radius = np.asarray(radius, dtype=float)
+        extents = self._extents(radius)  # (the pieces' starts and ends, hence each cap's, are the same)
+        return sum(self.seen_by(cap, caps.kappa)._zone_sizes(cap, x - cap * shift, radius, extents) for cap in Cap)
 
     # --- values ---------------------------------------------------------------------------------
     def in_contact(self, radius: float) -> list[Piece]:
@@ -542,24 +544,43 @@ class AnchorMap:
         numpy.ndarray
             The zones' sizes (m), the broadcast shape.
         """
-        levels = np.asarray(levels, dtype=float)
         radii = np.asarray(radii, dtype=float)
-        total = np.zeros(np.broadcast(levels, radii).shape)
+        return self._zone_sizes(cap, levels, radii, self._extents(radii))
+
+    def _extents(self, radii: np.ndarray) -> list[tuple[np.ndarray, np.ndarray, float]]:
+        """Per piece, what :meth:`_zone_sizes` reads of the radii alone (both caps alike): the end of its springs in
+        contact ``min(end, a)``, their length ``max(min(end, a) − start, 0)`` and the largest of those ends."""
+        extents = []
         for p in self.pieces:
             ends = np.minimum(p.end, radii)
-            length = np.maximum(ends - p.start, 0.0)
+            extents.append((ends, np.maximum(ends - p.start, 0.0), float(np.max(ends))))
+        return extents
+
+    def _zone_sizes(self, cap: Cap, levels: np.ndarray, radii: np.ndarray,
+                    extents: list[tuple[np.ndarray, np.ndarray, float]]) -> np.ndarray:
+        """:meth:`zone_sizes` with the pieces' :meth:`_extents` of ``radii`` given (shared by both caps): each piece's
+        springs at the cap added in place (``np.add(..., where=)``: the sum of ``np.where(..., length, 0)``, whose
+        zeros add nothing to a total of lengths >= 0), the front's radius root only where the level lies within the
+        piece's values (the same root, of the same levels, as before)."""
+        levels = np.asarray(levels, dtype=float)
+        shape = np.broadcast_shapes(levels.shape, radii.shape)
+        total = np.zeros(shape)
+        reached = cap * levels
+        for p, (ends, length, largest) in zip(self.pieces, extents):
             if p.constant:
-                total += np.where(cap * p.x0 <= cap * levels, length, 0.0)
+                np.add(total, length, out=total, where=cap * p.x0 <= reached)
                 continue
-            # the radius root of the front only where the level lies within the piece's values
-            bounds = cap * np.array([self.piece_value(p, p.start), self.piece_value(p, float(np.max(ends)))])
-            reached = cap * levels
-            inside = (reached >= bounds.min()) & (reached < bounds.max())
-            total += np.where(reached >= bounds.max(), length, 0.0)
-            if np.any(inside):
-                xi = self.inverses(p, np.broadcast_to(levels, total.shape)[inside])
-                part = xi - p.start if p.rises_towards(cap) else np.broadcast_to(ends, total.shape)[inside] - xi
-                total[inside] += np.clip(part, 0.0, np.broadcast_to(length, total.shape)[inside])
+            first, last = cap * self.piece_value(p, p.start), cap * self.piece_value(p, largest)
+            # (as NumPy's min and max of the two: nan if either is; Python's would drop a nan second)
+            low, high = (min(first, last), max(first, last)) if first == first and last == last else \
+                (math.nan, math.nan)
+            np.add(total, length, out=total, where=reached >= high)
+            inside = (reached >= low) & (reached < high)
+            if inside.any():
+                xi = self.inverses(p, levels[inside] if levels.shape == shape else
+                                   np.broadcast_to(levels, shape)[inside])
+                part = xi - p.start if p.rises_towards(cap) else np.broadcast_to(ends, shape)[inside] - xi
+                total[inside] += np.clip(part, 0.0, np.broadcast_to(length, shape)[inside])
         return total
 
     def clipped_shift_integral(self, x: float, cap_shift: float, radius: float,
