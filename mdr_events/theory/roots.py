@@ -21,6 +21,18 @@ _FLOAT_EPS = float(_EPS)
 _SCALARS = (float, int)
 
 
+def _ndim(value) -> int:
+    """``np.ndim(value)``, read off an array's attribute without NumPy's function call (its cost, on every
+    coefficient of every call, was a tenth of a small root's)."""
+    return value.ndim if type(value) is np.ndarray else np.ndim(value)
+
+
+def _every(flags) -> bool:
+    """``bool(np.all(flags))``: a Python bool as it is, an array by its own method (no dispatch through NumPy's
+    function)."""
+    return flags if type(flags) is bool else bool(flags.all() if type(flags) is np.ndarray else np.all(flags))
+
+
 def _horner(coefficients, x):
     """Value and derivative of the polynomial at ``x`` (Horner's scheme)."""
     value = coefficients[0] * x + coefficients[1]
@@ -57,7 +69,7 @@ def _upper_root_bound(coeffs: list, out: np.ndarray | None = None) -> np.ndarray
     size = math.prod(shape)
     if size <= _BLOCK:
         return _block_bound(coeffs)
-    flat = [cf if np.ndim(cf) == 0 else np.broadcast_to(cf, shape).reshape(-1) for cf in coeffs]
+    flat = [cf if _ndim(cf) == 0 else np.broadcast_to(cf, shape).reshape(-1) for cf in coeffs]
     bound = np.empty(shape) if out is None else out
     for first in range(0, size, _BLOCK):
         block = slice(first, first + _BLOCK)
@@ -68,7 +80,7 @@ def _upper_root_bound(coeffs: list, out: np.ndarray | None = None) -> np.ndarray
 def _block_bound(coeffs: list) -> np.ndarray:
     """:func:`_upper_root_bound` of one block: a term's bound only where it is usable (its own coefficient
     positive, none negative above it), so none is computed where no element can use it."""
-    present = [i for i, cf in enumerate(coeffs) if not (np.ndim(cf) == 0 and cf == 0)]
+    present = [i for i, cf in enumerate(coeffs) if not (_ndim(cf) == 0 and cf == 0)]
     bound = np.inf
     nothing_negative_above = True
     above = []  # the coefficients above the term whose signs nothing_negative_above has not read yet
@@ -77,16 +89,16 @@ def _block_bound(coeffs: list) -> np.ndarray:
         lower = [i for i in present if i > j]
         if j == 0:
             usable = True
-        elif np.ndim(cj) == 0 and not cj > 0.0:  # (a scalar coefficient that is not positive: no element uses it)
+        elif _ndim(cj) == 0 and not cj > 0.0:  # (a scalar coefficient that is not positive: no element uses it)
             usable = False
         else:  # (the signs above read only where a term may be usable: no pass over a block for nothing)
             for coefficient in above:
                 nothing_negative_above = nothing_negative_above & (coefficient >= 0.0)
             above = []
             usable = nothing_negative_above & (cj > 0.0)
-        every = j == 0 or bool(np.all(usable))
-        if every or np.any(usable):
-            candidate = _term_bound(coeffs, j, lower, positive=j > 0 or bool(np.all(cj > 0.0)))
+        every = j == 0 or _every(usable)
+        if every or bool(np.any(usable)):
+            candidate = _term_bound(coeffs, j, lower, positive=j > 0 or _every(cj > 0.0))
             if j == 0:
                 bound = candidate
             elif every:
@@ -107,7 +119,7 @@ def _term_bound(coeffs: list, j: int, lower: list[int], positive: bool):
     """
     cj = coeffs[j]
     m = float(len(lower))
-    unit = np.ndim(cj) == 0 and cj == 1.0
+    unit = _ndim(cj) == 0 and cj == 1.0
     candidate = None
     with np.errstate(divide="ignore", invalid="ignore"):
         for i in lower:
@@ -174,7 +186,7 @@ def positive_polynomial_root(coefficients, lower=0.0, max_iterations: int = 100,
     x = _start(coeffs, lower, out)
     overshoot = _descend(coeffs, x, max_iterations, rtol)
     redo = overshoot | ~np.isfinite(x)
-    if np.any(redo):  # from the same start, computed again for these elements alone (scalars kept scalars)
+    if redo.any():  # from the same start, computed again for these elements alone (scalars kept scalars)
         start = _start([cf if cf.ndim == 0 else np.broadcast_to(cf, shape)[redo] for cf in coeffs], lower[redo])
         x[redo] = _bracketed_root([np.broadcast_to(cf, shape)[redo] for cf in coeffs], lower[redo], start,
                                   max_iterations)
@@ -211,7 +223,7 @@ def _horner_into(coeffs: list, x: np.ndarray, value: np.ndarray, slope: np.ndarr
         rest = coeffs[zeros + 1:]
         value += rest[0]
         rest = rest[1:]
-    elif np.ndim(coeffs[0]) == 0 and coeffs[0] == 1.0:
+    elif _ndim(coeffs[0]) == 0 and coeffs[0] == 1.0:
         np.add(x, coeffs[1], out=value)  # x·1 + c1
         if not rest:
             slope[...] = 1.0
@@ -234,10 +246,10 @@ def _horner_into(coeffs: list, x: np.ndarray, value: np.ndarray, slope: np.ndarr
 def _leading_zeros(coeffs: list) -> int:
     """How many coefficients after a leading scalar 1 are the scalar 0, the last one not counted (0: none, or not
     monic): the additions :func:`_horner_into` skips."""
-    if not (np.ndim(coeffs[0]) == 0 and coeffs[0] == 1.0):
+    if not (_ndim(coeffs[0]) == 0 and coeffs[0] == 1.0):
         return 0
     count = 0
-    while count + 2 < len(coeffs) and np.ndim(coeffs[count + 1]) == 0 and coeffs[count + 1] == 0.0:
+    while count + 2 < len(coeffs) and _ndim(coeffs[count + 1]) == 0 and coeffs[count + 1] == 0.0:
         count += 1
     return count
 
@@ -374,7 +386,7 @@ def _divide(numerator: float, denominator: float) -> float:
 def _within(step: np.ndarray, threshold: np.ndarray, spare: np.ndarray, flags: np.ndarray) -> bool:
     """Whether every ``|step| <= threshold``, computed in the buffers ``spare`` and ``flags``."""
     np.abs(step, out=spare)
-    return bool(np.all(np.less_equal(spare, threshold, out=flags)))
+    return bool(np.less_equal(spare, threshold, out=flags).all())
 
 
 def _scalar_root(coeffs: list[float], lower: float, max_iterations: int, rtol: float) -> float:

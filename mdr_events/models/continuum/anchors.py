@@ -342,7 +342,9 @@ class AnchorMap:
         shift = caps.centre_shift(radius, depth)
         radius = np.asarray(radius, dtype=float)
         extents = self._extents(radius)  # (the pieces' starts and ends, hence each cap's, are the same)
-        return sum(self.seen_by(cap, caps.kappa)._zone_sizes(cap, x - cap * shift, radius, extents) for cap in Cap)
+        # (each cap's sign as an int: NumPy asks an IntEnum operand for its array attributes, the enum's slow lookup)
+        return sum(self.seen_by(cap, caps.kappa)._zone_sizes(cap, x - int(cap) * shift, radius, extents)
+                   for cap in Cap)
 
     # --- values ---------------------------------------------------------------------------------
     def in_contact(self, radius: float) -> list[Piece]:
@@ -565,12 +567,13 @@ class AnchorMap:
         levels = np.asarray(levels, dtype=float)
         shape = np.broadcast_shapes(levels.shape, radii.shape)
         total = np.zeros(shape)
-        reached = cap * levels
+        sign = int(cap)  # (an int: see sliding_length)
+        reached = sign * levels
         for p, (ends, length, largest) in zip(self.pieces, extents):
             if p.constant:
-                np.add(total, length, out=total, where=cap * p.x0 <= reached)
+                np.add(total, length, out=total, where=sign * p.x0 <= reached)
                 continue
-            first, last = cap * self.piece_value(p, p.start), cap * self.piece_value(p, largest)
+            first, last = sign * self.piece_value(p, p.start), sign * self.piece_value(p, largest)
             # (as NumPy's min and max of the two: nan if either is; Python's would drop a nan second)
             low, high = (min(first, last), max(first, last)) if first == first and last == last else \
                 (math.nan, math.nan)
