@@ -1,0 +1,124 @@
+"""The continuum's sampled evaluation (issue 28: ``simulate`` at most 1.5x its ``solve_path``): the sliding length at
+many instants at once (``AnchorMap.sliding_length``, which shares the pieces' extents between both caps) is the plain
+per-cap, per-piece sum bit for bit, and equals the per-sample zone sizes (``AnchorMap.zone_size``, one instant at a
+time) to the accuracy of the slip front's root."""
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.models.continuum import AnchorMap, Cap, ContinuumModel, Piece, Tolerances, solve_path
+from mdr_events.models.continuum.caps import Caps
+from mdr_events.models.continuum.solution import sample_times
+from mdr_events.models.continuum.state import Regime
+
+RTOL = 1e-14
+EPS = float(np.finfo(float).eps)
+#: Agreement of a slip front found among many instants with the same front found alone (m, over the radius): the
+#: front is ``ξ = s²`` with ``s`` the root of Newton's iteration, stopped once a step is within 4 eps of ``s``
+#: (``positive_polynomial_root``'s default); alone or among others it stops after a different number of steps, each
+#: within 4 eps of the root, so the two ``s`` differ by at most 8 eps, ``ξ`` by 16 eps of itself (<= a), and the
+#: sum of both caps' zones by 32 eps of ``a``; a factor 2 for the rounding of the sums.
+FRONT_SHARE = 64 * EPS
+
+
+def reference_sliding_length(anchors: AnchorMap, caps: Caps, x, depth, radius) -> np.ndarray:
+    """The sliding length as the plain sum over both caps and every piece (``np.where`` of each piece's springs at the
+    cap), each cap's anchors as it sees them, the front's root taken of the same levels: the computation that
+    ``sliding_length`` streamlines."""
+    shift = caps.centre_shift(radius, depth)
+    out = 0
+    for cap in Cap:
+        seen, levels = anchors.seen_by(cap, caps.kappa), x - int(cap) * shift
+        total = np.zeros(levels.shape)
+        for p in seen.pieces:
+            ends = np.minimum(p.end, radius)
+            length = np.maximum(ends - p.start, 0.0)
+            if p.constant:
+                total += np.where(cap * p.x0 <= cap * levels, length, 0.0)
+                continue
+            bounds = cap * np.array([seen.piece_value(p, p.start), seen.piece_value(p, float(np.max(ends)))])
+            reached = cap * levels
+            inside = (reached >= bounds.min()) & (reached < bounds.max())
+            total += np.where(reached >= bounds.max(), length, 0.0)
+            if np.any(inside):
+                xi = seen.inverses(p, levels[inside])
+                part = xi - p.start if p.rises_towards(cap) else ends[inside] - xi
+                total[inside] += np.clip(part, 0.0, length[inside])
+        out = out + total
+    return out
+
+
+@pytest.fixture(scope="module")
+def model(paper):
+    return ContinuumModel(paper, Tolerances())
+
+
+@pytest.fixture(scope="module")
+def anchors(model):
+    """A jump-in plateau, growth at dx/dd = 2, then growth back at dx/dd = −3: constant, rising and falling pieces."""
+    branch = model.grow
+    jump_in = me.analytic.jump_in_radius(model.params, model.params.dgamma0)
+    rising = Piece(jump_in, 3e-3, 0.0, 2.0, branch.depth(jump_in))
+    top = 2.0 * (branch.depth(3e-3) - branch.depth(jump_in))
+    falling = Piece(3e-3, 4e-3, top, -3.0, branch.depth(3e-3))
+    return AnchorMap(branch, RTOL, [Piece(0.0, jump_in, 0.0), rising, falling])
+
+
+def instants(anchors: AnchorMap, radii: int = 7, positions: int = 61):
+    """Positions, depths and radii (a grid of both, flattened): at each radius the position sweeps the anchors' values
+    with both caps' levels, from below the lowest to above the highest (stick, partial and full slip at either cap)."""
+    radius = np.linspace(0.6e-3, 4.2e-3, radii)
+    top = anchors.value(3e-3)
+    x = np.linspace(-0.3 * top, 1.3 * top, positions)
+    radius, x = (grid.ravel() for grid in np.meshgrid(radius, x))
+    return x, anchors.attach.depths(radius), radius
+
+
+@pytest.mark.parametrize("kappa", [0.0, 0.4])
+def test_sliding_length_is_the_plain_sum_over_caps_and_pieces_bit_for_bit(paper, model, anchors, kappa):
+    """Both caps' zones over a map with constant, rising and falling pieces, with Coulomb's part (κ > 0: each cap sees
+    its own pieces, of the same extents) and without: the shared extents and the in-place sums give the plain
+    computation's values exactly (the same operations on the same numbers, the same roots of the same levels)."""
+    caps = Caps(model.caps.K, kappa, model.caps.medium)
+    x, depth, radius = instants(anchors)
+    found = anchors.sliding_length(caps, x, depth, radius)
+    expected = reference_sliding_length(anchors, caps, x, depth, radius)
+    assert np.count_nonzero((found > 0) & (found < radius)) > 20  # (partial slip sampled, not only the extremes)
+    np.testing.assert_array_equal(found, expected)
+
+
+def test_sliding_length_equals_each_instant_alone(model, anchors):
+    """The vectorised sliding length against each instant's zone sizes found alone (``zone_size`` of both caps, one
+    root at a time): equal to :data:`FRONT_SHARE` of the radius."""
+    x, depth, radius = instants(anchors, 5, 31)
+    found = anchors.sliding_length(model.caps, x, depth, radius)
+    shift = model.caps.centre_shift(radius, depth)
+    alone = np.array([sum(anchors.zone_size(cap, float(x[i] - int(cap) * shift[i]), float(radius[i])) for cap in Cap)
+                      for i in range(len(x))])
+    np.testing.assert_allclose(found, alone, rtol=0.0, atol=FRONT_SHARE * float(np.max(radius)))
+
+
+@pytest.mark.parametrize("scenario, angle", [("A", 20.0), ("B", 30.0)])
+def test_evaluated_sliding_fraction_equals_each_sample_alone(paper, scenario, angle):
+    """A solved run's sliding fraction at 2001 samples (``evaluate``: each span's instants at once) against each
+    sample's zones found alone from the same span's anchors, radius, depth and position: equal to
+    :data:`FRONT_SHARE` (a share of the radius: the fraction's own unit)."""
+    path = getattr(me.Path, f"scenario_{scenario}")(angle, paper)
+    solution = solve_path(paper, path)
+    times = sample_times([solution.end_time], [path.duration - path.first_contact_time()], 2001)
+    filled = solution.evaluate_at(times)
+    owner, caps = solution.span_index(times), solution.model.caps
+    checked = 0
+    for i in np.flatnonzero((times <= solution.end_time) & (filled["contact_radius"] > 0))[::7]:
+        span = solution.spans[owner[i]]
+        if span.regime is Regime.NONE:
+            continue
+        a, d, x = (float(filled[name][i]) for name in ("contact_radius", "indentation_depth",
+                                                         "tangential_displacement"))
+        anchors = span.zones if span.zones is not None else span.anchors
+        shift = caps.centre_shift(a, d)
+        zones = sum(anchors.seen_by(cap, caps.kappa).zone_size(cap, x - int(cap) * shift, a) for cap in Cap)
+        assert filled["sliding_fraction"][i] == pytest.approx(min(zones / a, 1.0), rel=0.0, abs=FRONT_SHARE)
+        checked += 1
+    assert checked > 200
