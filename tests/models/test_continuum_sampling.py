@@ -122,3 +122,18 @@ def test_evaluated_sliding_fraction_equals_each_sample_alone(paper, scenario, an
         assert filled["sliding_fraction"][i] == pytest.approx(min(zones / a, 1.0), rel=0.0, abs=FRONT_SHARE)
         checked += 1
     assert checked > 200
+
+
+@pytest.mark.parametrize("scenario, angle", [("A", 20.0), ("B", 30.0)])
+def test_evaluate_in_any_order_is_evaluate_in_order(paper, scenario, angle):
+    """``evaluate`` reads each span's rows of increasing times as slices, of any other order as gathered indices: the
+    same values bit for bit (the times shuffled, with some before the first contact and after the run's end)."""
+    path = getattr(me.Path, f"scenario_{scenario}")(angle, paper)
+    solution = solve_path(paper, path)
+    end = solution.end_time
+    times = np.concatenate([np.linspace(0.0, end, 401), [-0.25 * solution.t_contact, end * (1 + 1e-4)]])
+    times.sort()
+    shuffled = np.random.default_rng(7).permutation(len(times))
+    in_order, any_order = solution.evaluate_at(times), solution.evaluate_at(times[shuffled])
+    for name, values in in_order.items():
+        np.testing.assert_array_equal(any_order[name], values[shuffled], err_msg=name)

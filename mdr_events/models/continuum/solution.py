@@ -219,8 +219,10 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
         return out
     if sliding:
         zones = (span.zones if span.zones is not None else span.anchors).sliding_length(model.caps, x, d, a)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            out["sliding_fraction"] = np.where(a > 0, np.minimum(zones / a, 1.0), np.nan)
+        # min(zones / a, 1) where a > 0, nan elsewhere (computed only where a > 0: no warning to silence)
+        fraction, positive = np.full(t.shape, np.nan), a > 0
+        np.divide(zones, a, out=fraction, where=positive)
+        out["sliding_fraction"] = np.minimum(fraction, 1.0, out=fraction, where=positive)
     return out
 
 
@@ -321,13 +323,27 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
             out[name][first] = 0.0
     # the compressed zone's run (Coulomb's law alone with adhesion) evaluated once, not span by span
     zone = evaluate(solution.compressed, times) if solution.compressed is not None else None
-    for index in range(len(solution.spans)):
-        rows = np.flatnonzero(inside & (owner == index))
-        if rows.size:
-            part = {name: values[rows] for name, values in zone.items()} if zone is not None else None
-            for name, values in evaluate_span(solution, index, times[rows], zone=part).items():
-                out[name][rows] = values
+    for index, rows in _span_rows(owner, inside, len(solution.spans)):
+        part = {name: values[rows] for name, values in zone.items()} if zone is not None else None
+        for name, values in evaluate_span(solution, index, times[rows], zone=part).items():
+            out[name][rows] = values
     return out
+
+
+def _span_rows(owner: np.ndarray, inside: np.ndarray, count: int) -> list[tuple[int, slice | np.ndarray]]:
+    """The rows of each of ``count`` spans that holds a time ``inside`` the run (``owner``: the span of each time), in
+    the spans' order: slices where the times inside are one block with their spans in order (increasing times, as
+    a run's samples are: views, not copies gathered and scattered back), else the indices of each span's rows."""
+    rows = np.flatnonzero(inside)
+    if not rows.size:
+        return []
+    owners = owner[rows]
+    if rows[-1] - rows[0] == rows.size - 1 and np.all(owners[1:] >= owners[:-1]):
+        edges = rows[0] + np.searchsorted(owners, np.arange(count + 1))
+        return [(index, slice(int(lower), int(upper))) for index, (lower, upper) in enumerate(zip(edges[:-1],
+                                                                                                  edges[1:]))
+                if upper > lower]
+    return [(index, rows[owners == index]) for index in range(count) if np.any(owners == index)]
 
 
 #: Quantities :func:`extremum` finds the extremes of; the means are per contact area ``π a²``.
