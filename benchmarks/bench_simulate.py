@@ -22,7 +22,11 @@ load (``_side_by_side.py``); it prints each figure's ratio before / now. E.g. ``
 ``--cpu`` times each task in its process's CPU time instead of the wall clock (on a shared machine the figure that
 compares). Each figure is printed with its target and whether it is met.
 
-Run: ``python benchmarks/bench_simulate.py [--repeat N] [--against DIR] [--cpu]``.
+``--parts`` also times, per path, what ``simulate`` adds to its solve: ``evaluate`` of the solution at the run's 2001
+samples, the dataset's assembly (``continuum_dataset``) and the front end (the job, its checks and the cases' paths),
+and prints each as a share of the solve with the rest (``simulate`` less all of them and the extrema).
+
+Run: ``python benchmarks/bench_simulate.py [--repeat N] [--against DIR] [--cpu] [--parts]``.
 """
 
 from __future__ import annotations
@@ -38,6 +42,8 @@ SIMULATE_RATIO, EXTREMA_RATIO, TABLE_RATIO, SIMULATE_TARGET = 1.5, 0.5, 3.0, 2e-
 PATHS = ("A 20°", "A 30°", "B 20°", "B 30°", "zigzag", "reciprocating", "A 20° table")
 #: What is timed of each path.
 TASKS = ("solve", "extrema", "simulate")
+#: What ``--parts`` times besides (the parts of ``simulate`` beyond its solve and extrema).
+PARTS = ("evaluate", "dataset", "front end")
 
 
 def _build(label: str):
@@ -81,8 +87,39 @@ def _tasks() -> dict[str, callable]:
         tasks[f"{label}|solve"] = lambda p=p, path=path, options=options: solve_path(p, path, **options)
         tasks[f"{label}|extrema"] = lambda solution=solution: solution_extrema(solution)
         tasks[f"{label}|simulate"] = run
+        tasks.update(_part_tasks(label, p, path, options))
         run()  # once unmeasured: caches, lambdified relations
     return tasks
+
+
+def _part_tasks(label: str, p, path, options: dict) -> dict[str, callable]:
+    """``--parts``' tasks of a path: ``evaluate`` at ``simulate``'s samples, the dataset of a run, ``simulate``'s front
+    end up to the cases (as :func:`mdr_events.models.simulate.simulate` runs it)."""
+    from mdr_events.limits import check_limits
+    from mdr_events.models.continuum import run_continuum
+    from mdr_events.models.continuum.extrema import solution_extrema
+    from mdr_events.models.continuum.solution import evaluate
+    from mdr_events.models.simulate import simulation_job
+    from mdr_events.models.simulation_schema import continuum_dataset
+    from mdr_events.theory.scales import check_representable
+
+    motion, alpha = (label[0], [float(label.split()[1].rstrip("°"))]) if label[0] in "AB" else (path, None)
+
+    def front_end():
+        model, method = simulation_job(p, motion, alpha, "continuum", dict(options))
+        limits = check_limits(None)
+        check_representable(model.params, model.profile, model.friction)
+        method.check_case_count(model.motion.case_count, limits)
+        method.check_model(model)
+        return model, model.motion.cases(model.params, model.profile, model.friction)
+
+    model, cases = front_end()
+    raw = run_continuum(model.kernel, cases.paths, 2001)
+    solution, extrema = raw["solutions"][0], [solution_extrema(raw["solutions"][0])]
+    return {f"{label}|evaluate": lambda: evaluate(solution, raw["time"]),
+            f"{label}|dataset": lambda: continuum_dataset(p, cases, raw["time"], raw, raw["events"], extrema,
+                                                          method="continuum"),
+            f"{label}|front end": front_end}
 
 
 def report(name: str, medians: dict[str, float]) -> None:
@@ -96,9 +133,22 @@ def report(name: str, medians: dict[str, float]) -> None:
               f"{extrema / solve:4.2f}x solve (target <= {EXTREMA_RATIO}: {verdict(extrema / solve, EXTREMA_RATIO)}) "
               f"| simulate {run * 1e3:6.1f} ms = {run / solve:4.2f}x solve (target <= {SIMULATE_RATIO}: "
               f"{verdict(run / solve, SIMULATE_RATIO)}{absolute})")
+    if f"{PATHS[0]}|{PARTS[0]}" in medians:
+        _report_parts(medians)
     table = medians["A 20° table|simulate"] / medians["A 20°|simulate"]
     print(f"    table profile / paraboloid, simulate A 20°: {table:.2f}x (target <= {TABLE_RATIO}: "
           f"{verdict(table, TABLE_RATIO)})")
+
+
+def _report_parts(medians: dict[str, float]) -> None:
+    """``--parts``: each path's ``simulate`` split into its solve, extrema and :data:`PARTS`, as shares of the solve."""
+    for label in PATHS:
+        solve = medians[f"{label}|solve"]
+        parts = {name: medians[f"{label}|{name}"] for name in ("extrema", *PARTS)}
+        rest = medians[f"{label}|simulate"] - solve - sum(parts.values())
+        print(f"    {label:14s} simulate = solve {solve * 1e3:5.1f} ms + " + " + ".join(
+            f"{name} {value * 1e3:4.2f} ms ({value / solve:4.2f}x)" for name, value in
+            [*parts.items(), ("rest", rest)]))
 
 
 def main() -> None:
@@ -106,6 +156,7 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=9, help="runs per figure (median; default 9)")
     parser.add_argument("--against", default=None, metavar="DIR", help="a checkout to measure side by side")
     parser.add_argument("--cpu", action="store_true", help="CPU time instead of the wall clock")
+    parser.add_argument("--parts", action="store_true", help="also time evaluate, the dataset and the front end")
     parser.add_argument("--worker", action="store_true", help=argparse.SUPPRESS)
     options = parser.parse_args()
     if options.worker:
@@ -114,7 +165,8 @@ def main() -> None:
     roots = {"this checkout": str(Path(__file__).resolve().parent.parent)}
     if options.against:
         roots[f"--against {options.against}"] = str(Path(options.against).resolve())
-    medians = measure(list(roots.values()), __file__, [f"{label}|{task}" for label in PATHS for task in TASKS],
+    timed = TASKS + (PARTS if options.parts else ())
+    medians = measure(list(roots.values()), __file__, [f"{label}|{task}" for label in PATHS for task in timed],
                       options.repeat, options.cpu)
     print(f"continuum: solve_path, solution_extrema and simulate (2001 samples), medians of {options.repeat} "
           f"({clock_name(options.cpu)}), interleaved")
