@@ -84,12 +84,11 @@ def force_values(interpolant: Callable, points: np.ndarray) -> np.ndarray:
     if not steps.ascending:
         segment = count - 1 - segment
     x = (t - steps.t_old[segment]) / steps.h[segment]
+    rest = 1 - x
     y = np.zeros(t.shape)
-    for i, row in enumerate(steps.reversed_F):  # (Dop853DenseOutput._call_impl's products and sums)
-        y += row[segment]
-        if i % 2 == 0:
-            y *= x
-        else:
-            y *= 1 - x
+    # (Dop853DenseOutput._call_impl's products and sums; every row's coefficients gathered at once)
+    for i, row in enumerate(np.take(steps.reversed_F, segment, axis=1)):
+        y += row
+        y *= x if i % 2 == 0 else rest
     y += steps.y_old[segment]
     return y
