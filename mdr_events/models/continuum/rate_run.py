@@ -23,7 +23,7 @@ import math
 from typing import NamedTuple
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
+from scipy.optimize import brentq
 
 from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.contact.friction import FrictionLaw
@@ -37,19 +37,25 @@ from .extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, VALUE_AFTER_CONTACT, ext
 from .rate_edge import EdgeEventKind
 from .rate_play import RatePlay
 from .rate_shifts import RateShifts, solve_rate_shifts
-from .solution import sample_times
+from .solution import EXTREMUM_TIE, sample_times
 from .solve import BYTES_PER_SAMPLE
 from .state import Event, EventKind
+from .stationary import chebyshev_nodes, derivative_roots
 from .tolerances import Tolerances, check_output
 
 __all__ = ["run_rate_continuum", "run_end", "check_rate_layer", "rate_quantities", "rate_events", "rate_extrema", "Scan", "scan_run",
-           "EXTREMUM_PROBES", "SWITCH_XTOL", "SWITCH_POINTS", "RUN_METHOD"]
+           "EXTREMUM_PROBES", "EXTREMUM_DEGREE", "SWITCH_XTOL", "SWITCH_POINTS", "RUN_METHOD"]
 
 #: Points inside each of the edge's solver steps at which the scan looks (besides the steps' ends and the level's
 #: candidates): none, since a quantity's extremum inside a step lies between the scan's neighbours of its best, which
 #: the refinement searches (the quantities are smooth within a step; their kinks, at the path's corners and the edge's
 #: events, are steps' ends).
 EXTREMUM_PROBES = 0
+#: The degree of the interpolant whose stationary points :func:`rate_extrema` takes beside the scan's best
+#: (:func:`_stationary`): on each interval between the scan's times the radius is one step of the edge's dense output,
+#: a polynomial of degree at most 12 (LSODA's Adams order; Radau's 3), which these 16 points read exactly; ``F_N``
+#: and ``F_x`` are smooth functions of it and of the path's depth and ``x``, linear there.
+EXTREMUM_DEGREE = 15
 #: The bisection of a switch (full slip, a re-stick inside a step) ends at this share of the clock (the edge's ODE
 #: resolves its times to about 1e-10 of themselves).
 SWITCH_XTOL = 1e-13
@@ -298,6 +304,25 @@ def _quantity(shifts: RateShifts, name: str, clock: np.ndarray) -> np.ndarray:
     return math.pi * shifts._radius(clock) ** 2
 
 
+def _stationary(shifts: RateShifts, name: str, sign: float, ends: np.ndarray) -> tuple[float, float]:
+    """The least of ``sign`` times quantity ``name`` at its stationary points between the scan's three times ``ends``
+    (path clock; each of the two intervals within one solver step and one segment of the path, where the quantity is
+    smooth): the roots of the derivative of its interpolant at :data:`EXTREMUM_DEGREE` + 1 Chebyshev points of each
+    interval (:func:`~.stationary.derivative_roots`, as the paper's spans refine theirs), the quantity evaluated there;
+    ``(nan, nan)`` where neither interval has one (the extremum is the scan's point)."""
+    nodes = chebyshev_nodes(EXTREMUM_DEGREE)
+    centres, halves = 0.5 * (ends[:-1] + ends[1:]), 0.5 * np.diff(ends)
+    values = _quantity(shifts, name, (centres[:, None] + halves[:, None] * nodes).ravel()).reshape(len(halves), -1)
+    roots = [centre + half * root for centre, half, row in zip(centres.tolist(), halves.tolist(), values)
+             for root in derivative_roots(row, EXTREMUM_DEGREE) if -1.0 <= root <= 1.0]
+    if not roots:
+        return math.nan, math.nan
+    times = np.clip(np.array(roots), ends[0], ends[-1])
+    found = _quantity(shifts, name, times)
+    best = int(np.argmin(sign * found))
+    return float(times[best]), float(found[best])
+
+
 def rate_extrema(shifts: RateShifts, scan: Scan) -> dict[str, float]:
     """The largest and least ``F_N``, ``F_x`` and contact area of the run and their times (s from the first contact),
     as :func:`~mdr_events.models.continuum.extrema.solution_extrema` gives them for the paper's law: the scan's best,
@@ -327,11 +352,11 @@ def rate_extrema(shifts: RateShifts, scan: Scan) -> dict[str, float]:
             at = int(np.argmin(sign * values))
             time, value = float(grid[at]), float(values[at])
             if 0 < at < len(grid) - 1:
-                found = minimize_scalar(lambda t: sign * float(_quantity(shifts, name, np.array([t]))[0]),
-                                        method="bounded", bounds=(grid[at - 1], grid[at + 1]),
-                                        options={"xatol": SWITCH_XTOL * grid[at + 1]})
-                if sign * found.fun < sign * value:
-                    time, value = float(found.x), float(found.fun) * sign
+                found_time, found = _stationary(shifts, name, sign, grid[at - 1:at + 2])
+                # (better beyond rounding alone: on a plateau the scan's point stays, as the paper's extremum keeps
+                # the earliest of its ties)
+                if sign * found < sign * value - EXTREMUM_TIE * abs(value):
+                    time, value = found_time, found
             if ended and sign * VALUE_AFTER_CONTACT < sign * value:
                 time, value = end, VALUE_AFTER_CONTACT
             value_name, time_name = extremum_names(name, kind)
