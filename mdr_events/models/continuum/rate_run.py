@@ -10,11 +10,17 @@ contact, the event log and the extrema of ``F_N``, ``F_x`` and the contact area.
 The log holds the edge's events (first contact and re-contact, growth resuming, detachment starting, the contact's
 end), the path's corners in contact, and the springs' (the first contact's slip onset, full slip, a re-stick where the
 level ``x − K a`` turns back and a slip onset again where it returns to its maximum; direction: the cap, the way
-``x`` goes). Where the edge stops between pieces no event is logged (the paper's law has no such event). A run ends
-where its contact ends for good (the samples after it ``nan``, the first one on the path's segment showing the contact
-gone) or at the path's end. The extrema are found on the edge's solver steps (every step's ends and
-:data:`EXTREMUM_PROBES` points inside) and refined by bounded minimisation between the neighbours of the largest or
-least: the quantities are smooth within a step.
+``x`` goes). Where the edge stops between pieces no event is logged (the paper's law has no such event); the switches
+inside a step (full slip, a re-stick) are found on the springs' extent alone (:meth:`RateShifts.slip_radius
+<mdr_events.models.continuum.rate_shifts.RateShifts.slip_radius>`, no quadrature). A run ends where its contact ends
+for good (the samples after it ``nan``, the first one on the path's segment showing the contact gone) or at the path's
+end. The extrema are found on the edge's solver steps (every step's ends and :data:`EXTREMUM_PROBES` points inside)
+and refined between the neighbours of the largest or least by the stationary points of each interval's Chebyshev
+interpolant of degree :data:`EXTREMUM_DEGREE` (:func:`~mdr_events.models.continuum.stationary.derivative_roots`, as
+the paper's spans refine theirs): the quantities are smooth within a step. A stationary point better than the scan's
+point by no more than rounding (:data:`~mdr_events.models.continuum.solution.EXTREMUM_TIE` of the value) leaves the
+scan's point, as the paper's extremum keeps the earliest of its ties (a plateau such as ``F_x`` while the springs
+stick).
 """
 
 from __future__ import annotations
@@ -52,7 +58,7 @@ __all__ = ["run_rate_continuum", "run_end", "check_rate_layer", "rate_quantities
 #: events, are steps' ends).
 EXTREMUM_PROBES = 0
 #: The degree of the interpolant whose stationary points :func:`rate_extrema` takes beside the scan's best
-#: (:func:`_stationary`): on each interval between the scan's times the radius is one step of the edge's dense output,
+#: (``_stationary``): on each interval between the scan's times the radius is one step of the edge's dense output,
 #: a polynomial of degree at most 12 (LSODA's Adams order; Radau's 3), which these 16 points read exactly; ``F_N``
 #: and ``F_x`` are smooth functions of it and of the path's depth and ``x``, linear there.
 EXTREMUM_DEGREE = 15
@@ -326,7 +332,8 @@ def _stationary(shifts: RateShifts, name: str, sign: float, ends: np.ndarray) ->
 def rate_extrema(shifts: RateShifts, scan: Scan) -> dict[str, float]:
     """The largest and least ``F_N``, ``F_x`` and contact area of the run and their times (s from the first contact),
     as :func:`~mdr_events.models.continuum.extrema.solution_extrema` gives them for the paper's law: the scan's best,
-    refined by bounded minimisation between its neighbours where it lies inside a step (not at the scan's ends).
+    refined between its neighbours where it lies inside a step (not at the scan's ends) by the stationary points of
+    ``_stationary`` where one is better beyond rounding (module docstring).
 
     Parameters
     ----------

@@ -13,6 +13,10 @@ no radius root per evaluation).
   (linear in time on a segment). On a pinned radius ``F_N`` is linear in the depth, hence in time: no stationary
   point inside a span (its extremes are the span's ends, which the scan holds).
 - The contact radius and area are monotone on a span.
+
+The reading of a polynomial at Chebyshev points and the roots of its derivative (:func:`derivative_roots`) also refine
+the extrema of the rate-dependent law's run (:func:`~mdr_events.models.continuum.rate_run.rate_extrema`), where the
+radius of each interval between the scan's times is one step of the edge's dense output.
 """
 
 from __future__ import annotations
