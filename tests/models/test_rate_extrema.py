@@ -1,6 +1,7 @@
 """The continuum's extrema under the rate-dependent law (continuum.rate_run.rate_extrema): the stationary points of
 each scan interval's Chebyshev interpolant (continuum.stationary.derivative_roots) against a brute-force dense scan of
-the run; the springs' extent alone (RateShifts.slip_radius) against the full evaluation's."""
+the run; the springs' extent alone (RateShifts.slip_radius) against the full evaluation's; the samples and the scan
+evaluated together (rate_run.evaluate_run) as each alone."""
 
 from __future__ import annotations
 
@@ -12,7 +13,8 @@ import mdr_events as me
 from mdr_events.models.continuum import solve_rate_shifts
 from mdr_events.models.continuum import rate_run
 from mdr_events.models.continuum.extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, extremum_names
-from mdr_events.models.continuum.rate_run import RUN_METHOD, _quantity, rate_extrema, scan_run
+from mdr_events.models.continuum.rate_run import (RUN_METHOD, _quantity, evaluate_run, rate_extrema, rate_quantities,
+                                                  run_end, scan_run)
 from mdr_events.models.continuum.solution import EXTREMUM_TIE
 from mdr_events.models.continuum.stationary import chebyshev_nodes, derivative_roots
 
@@ -151,3 +153,24 @@ def test_the_slip_radius_is_the_full_evaluation_s_extent(runs, name, partial):
     assert np.array_equal((alone >= radius) & inside, (full >= radius) & inside)
     assert np.any((alone >= radius) & inside)
     assert np.any((alone > 0.0) & (alone < radius)) == partial
+
+
+@pytest.mark.parametrize("name", ["A 20°", "fretting"])
+def test_the_samples_and_the_scan_evaluated_together_are_each_alone(runs, name):
+    """evaluate_run (one pass over the pieces for the closed form; each in turn for the play of both levels, whose
+    events read the scan's sides kept last) gives rate_quantities' and scan_run's values bit for bit."""
+    if name == "fretting":
+        path = me.Path(np.array([(0.0, 0.0), (0.0, PAPER.d_max), (3e-5, PAPER.d_max), (-3e-5, PAPER.d_max),
+                                 (0.0, -2e-4)]), speed=PAPER.v)
+        shifts = solve_rate_shifts(PAPER, path, LAW, method=RUN_METHOD)
+    else:
+        shifts = runs[name][0]
+    start = shifts.path.first_contact_time()
+    times = np.linspace(0.0, run_end(shifts)[0] - start, 401)
+    together, scan = evaluate_run(shifts, times)
+    alone = rate_quantities(shifts, times)
+    assert together.keys() == alone.keys()
+    for quantity in alone:
+        np.testing.assert_array_equal(together[quantity], alone[quantity])
+    for part, value in zip(scan, scan_run(shifts)):
+        np.testing.assert_array_equal(part, value)

@@ -50,6 +50,7 @@ from .stationary import chebyshev_nodes, derivative_roots
 from .tolerances import Tolerances, check_output
 
 __all__ = ["run_rate_continuum", "run_end", "check_rate_layer", "rate_quantities", "rate_events", "rate_extrema", "Scan", "scan_run",
+           "scan_times", "evaluate_run",
            "EXTREMUM_PROBES", "EXTREMUM_DEGREE", "SWITCH_XTOL", "SWITCH_POINTS", "RUN_METHOD"]
 
 #: Points inside each of the edge's solver steps at which the scan looks (besides the steps' ends and the level's
@@ -96,7 +97,8 @@ def run_end(shifts: RateShifts) -> tuple[float, bool]:
     return float(shifts.path.duration), False
 
 
-def rate_quantities(shifts: RateShifts, times: np.ndarray) -> dict[str, np.ndarray]:
+def rate_quantities(shifts: RateShifts, times: np.ndarray,
+                    evaluated: tuple[np.ndarray, np.ndarray] | None = None) -> dict[str, np.ndarray]:
     """The quantities of :data:`~mdr_events.models.continuum.solution.EVALUATED_QUANTITIES` at ``times`` (s from the
     path's first contact); ``nan`` after the run's end but the first sample on the path once the contact ended.
 
@@ -105,7 +107,9 @@ def rate_quantities(shifts: RateShifts, times: np.ndarray) -> dict[str, np.ndarr
     shifts : RateShifts
         The run.
     times : numpy.ndarray
-        The times (s from the first contact).
+        The times (s from the first contact), one-dimensional.
+    evaluated : tuple of numpy.ndarray, optional
+        ``F_x`` and the sliding springs' extent at ``times`` where they are evaluated already (:func:`evaluate_run`).
 
     Returns
     -------
@@ -117,7 +121,7 @@ def rate_quantities(shifts: RateShifts, times: np.ndarray) -> dict[str, np.ndarr
     end, ended = run_end(shifts)
     x, depth = path.position(clock)
     radius = shifts._radius(clock)
-    force, sliding = shifts._evaluate(clock)
+    force, sliding = shifts._evaluate(clock) if evaluated is None else evaluated
     normal = shifts.normal_force(np.minimum(clock, path.duration))
     with np.errstate(invalid="ignore", divide="ignore"):
         share = np.where(radius > 0.0, np.minimum(sliding / np.where(radius > 0.0, radius, 1.0), 1.0), np.nan)
@@ -156,8 +160,9 @@ class Scan(NamedTuple):
     normal: np.ndarray
 
 
-def scan_run(shifts: RateShifts) -> Scan:
-    """The run's :class:`Scan` (one evaluation for the events and the extrema).
+def scan_times(shifts: RateShifts) -> np.ndarray:
+    """The times of the run's :class:`Scan` (path clock, increasing): the level's candidates and the edge's steps, with
+    :data:`EXTREMUM_PROBES` points inside each, from the first contact to the run's end.
 
     Parameters
     ----------
@@ -166,8 +171,8 @@ def scan_run(shifts: RateShifts) -> Scan:
 
     Returns
     -------
-    Scan
-        The quantities on the scan's times.
+    numpy.ndarray
+        The times (s, path clock).
     """
     start = shifts.path.first_contact_time()
     end, _ = run_end(shifts)
@@ -176,11 +181,55 @@ def scan_run(shifts: RateShifts) -> Scan:
     knots = np.unique(np.concatenate([[start], knots[(knots >= start) & (knots <= end)]]))  # (radius 0 at the start)
     share = np.arange(EXTREMUM_PROBES + 1) / (EXTREMUM_PROBES + 1)
     stamps = shifts._candidates[0]
-    times = np.unique(np.concatenate([(knots[:-1, None] + np.diff(knots)[:, None] * share[None, :]).ravel(),
-                                      knots[-1:], stamps[(stamps >= start) & (stamps <= end)]]))
-    force, extent = shifts._evaluate(times)
+    return np.unique(np.concatenate([(knots[:-1, None] + np.diff(knots)[:, None] * share[None, :]).ravel(),
+                                     knots[-1:], stamps[(stamps >= start) & (stamps <= end)]]))
+
+
+def scan_run(shifts: RateShifts, times: np.ndarray | None = None,
+             evaluated: tuple[np.ndarray, np.ndarray] | None = None) -> Scan:
+    """The run's :class:`Scan` (one evaluation for the events and the extrema).
+
+    Parameters
+    ----------
+    shifts : RateShifts
+        The run.
+    times : numpy.ndarray, optional
+        Its :func:`scan_times`, where they are found already.
+    evaluated : tuple of numpy.ndarray, optional
+        ``F_x`` and the sliding springs' extent at ``times`` where they are evaluated already (:func:`evaluate_run`).
+
+    Returns
+    -------
+    Scan
+        The quantities on the scan's times.
+    """
+    times = scan_times(shifts) if times is None else times
+    force, extent = shifts._evaluate(times) if evaluated is None else evaluated
     return Scan(times, force, extent, shifts._radius(times), shifts._level(times),
                 shifts.normal_force(times))
+
+
+def evaluate_run(shifts: RateShifts, times: np.ndarray) -> tuple[dict[str, np.ndarray], Scan]:
+    """:func:`rate_quantities` at ``times`` and :func:`scan_run`, their ``F_x`` and sliding springs evaluated in one
+    pass over the run's pieces where the run takes them together (``_evaluate_each``: each time's values its own, the
+    same as asked alone).
+
+    Parameters
+    ----------
+    shifts : RateShifts
+        The run.
+    times : numpy.ndarray
+        The output times (s from the first contact), one-dimensional.
+
+    Returns
+    -------
+    tuple of dict and Scan
+        The quantities at ``times`` and the scan.
+    """
+    stamps = scan_times(shifts)
+    at_samples, at_scan = shifts._evaluate_each(np.asarray(times, dtype=float) + shifts.path.first_contact_time(),
+                                                stamps)
+    return rate_quantities(shifts, times, at_samples), scan_run(shifts, stamps, at_scan)
 
 
 def _at_cap(shifts: RateShifts, clock: np.ndarray) -> np.ndarray:
@@ -436,9 +485,8 @@ def run_rate_continuum(params: Parameters, paths: list[Path], times: np.ndarray 
         times = sample_times([run_end(run)[0] - run.path.first_contact_time() for run in runs],
                              [run.path.duration - run.path.first_contact_time() for run in runs], samples)
     times = np.asarray(times, dtype=float)
-    per_case = [rate_quantities(run, times) for run in runs]
+    per_case, scans = zip(*(evaluate_run(run, times) for run in runs))
     out = {name: np.stack([case[name] for case in per_case]) for name in per_case[0]}
-    scans = [scan_run(run) for run in runs]
     out.update(time=times, events=[rate_events(run, scan) for run, scan in zip(runs, scans)],
                extrema=[rate_extrema(run, scan) for run, scan in zip(runs, scans)], runs=runs)
     return out

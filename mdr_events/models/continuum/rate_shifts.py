@@ -235,6 +235,13 @@ class RateShifts:
         return float(brentq(lambda t: float(self._level(np.array([t]))[0]) - anchor, before, after,
                             xtol=4.0 * np.finfo(float).eps * abs(after)))
 
+    def _evaluate_each(self, *times: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
+        """:meth:`_evaluate` of each one-dimensional array of ``times``, all in one pass (each time's values are its
+        own: the same as asked alone)."""
+        cuts = np.cumsum([np.size(part) for part in times])[:-1]
+        force, sliding = self._evaluate(np.concatenate([np.atleast_1d(part) for part in times]))
+        return list(zip(np.split(force, cuts), np.split(sliding, cuts)))
+
     def _evaluate(self, times, forces: bool = True) -> tuple[np.ndarray, np.ndarray]:
         """``F_x`` (N; zeros where ``forces`` is false: the sliding springs' extent alone is asked, which needs no
         quadrature and no time where a receding edge's radius was reached) and the sliding springs' extent (m)."""
