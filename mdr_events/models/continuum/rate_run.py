@@ -362,14 +362,16 @@ def _quantity(shifts: RateShifts, name: str, clock: np.ndarray) -> np.ndarray:
 def _stationary(shifts: RateShifts, name: str, sign: float, ends: np.ndarray) -> tuple[float, float]:
     """The least of ``sign`` times quantity ``name`` at its stationary points between the scan's three times ``ends``
     (path clock; each of the two intervals within one solver step and one segment of the path, where the quantity is
-    smooth): the roots of the derivative of its interpolant at :data:`EXTREMUM_DEGREE` + 1 Chebyshev points of each
+    smooth but for a slip onset inside, where the interpolant is rougher and the point found only counts where the
+    quantity there beats the scan's best): the roots of the derivative of its interpolant at :data:`EXTREMUM_DEGREE` + 1 Chebyshev points of each
     interval (:func:`~.stationary.derivative_roots`, as the paper's spans refine theirs), the quantity evaluated there;
-    ``(nan, nan)`` where neither interval has one (the extremum is the scan's point)."""
+    ``(nan, nan)`` where neither interval has one (the extremum is the scan's point; an interval with a value that is
+    not finite has none)."""
     nodes = chebyshev_nodes(EXTREMUM_DEGREE)
     centres, halves = 0.5 * (ends[:-1] + ends[1:]), 0.5 * np.diff(ends)
     values = _quantity(shifts, name, (centres[:, None] + halves[:, None] * nodes).ravel()).reshape(len(halves), -1)
     roots = [centre + half * root for centre, half, row in zip(centres.tolist(), halves.tolist(), values)
-             for root in derivative_roots(row, EXTREMUM_DEGREE) if -1.0 <= root <= 1.0]
+             if np.all(np.isfinite(row)) for root in derivative_roots(row, EXTREMUM_DEGREE) if -1.0 <= root <= 1.0]
     if not roots:
         return math.nan, math.nan
     times = np.clip(np.array(roots), ends[0], ends[-1])
