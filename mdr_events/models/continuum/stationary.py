@@ -52,6 +52,11 @@ def _chebyshev_reading(degree: int) -> tuple[np.ndarray, np.ndarray]:
     return nodes, chebyshev.chebder(np.linalg.inv(chebyshev.chebvander(nodes, degree)))
 
 
+#: The Chebyshev points of a step of DOP853's dense output (degree :data:`DENSE_DEGREE`) and the matrix taking its values
+#: there to its derivative's Chebyshev coefficients (:func:`_chebyshev_reading`).
+_NODES, _DERIVATIVE = _chebyshev_reading(DENSE_DEGREE)
+
+
 def chebyshev_nodes(degree: int = DENSE_DEGREE) -> np.ndarray:
     """The points on [-1, 1] at which :func:`derivative_roots` reads a polynomial of ``degree``.
 
