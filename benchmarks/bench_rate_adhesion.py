@@ -23,7 +23,15 @@ they cost) of
 - ``fit_rate_adhesion`` jointly over three speeds (vertical in and out at 0.1, 1 and 10 µm/s, 400 samples each, 1 %
   noise) with the law's four values free (target: under 5 s), and with ``v_ref``, ``n`` and three offsets free.
 
-Run: ``python benchmarks/bench_rate_adhesion.py [--repeat N]``.
+``--against DIR`` times the two continuum runs of scenario A at 20° (``simulate`` with the paper's law and with the
+rate-dependent one) side by side with a checkout of another commit (each in a worker process of its own, the
+repetitions interleaved, CPU time: :mod:`_side_by_side`) and prints only that comparison.
+
+The continuum's rate-dependent run (:mod:`mdr_events.models.continuum.rate_run`) refines its extrema by the stationary
+points of a Chebyshev interpolant between the scan's times (``continuum.stationary.derivative_roots``) and finds full
+slip on the springs' extent alone (``RateShifts.slip_radius``: no quadrature).
+
+Run: ``python benchmarks/bench_rate_adhesion.py [--repeat N] [--against DIR]``.
 """
 
 from __future__ import annotations
@@ -36,6 +44,7 @@ import mdr_events as me
 from mdr_events.analysis.rate_fit import RATE_FIT_METHOD, RATE_FIT_RTOL, RateMeasurement, fit_rate_adhesion
 from mdr_events.models.continuum import solve_edge, solve_path, solve_rate_shifts
 
+from _side_by_side import measure, serve
 from _timing import median_times
 
 #: The target of issue 29: a rate-dependent scenario A run at most this many times the rate-independent one.
@@ -102,10 +111,49 @@ def _coulomb(params: me.Parameters, paper: me.Contact, law: me.RateDependentAdhe
         "works at rest (simulate)", target=False)
 
 
+def _side_by_side_tasks() -> dict[str, callable]:
+    """Scenario A at 20° in the continuum under the paper's law and the rate-dependent one, each run once unmeasured."""
+    params, paper = me.Parameters.paper(), me.Contact.paper()
+    law = me.RateDependentAdhesion(params.dgamma0, params.dgamma1, 1e-6, 0.6)
+    rate = me.Contact(paper.elastomer, paper.indenter, law, paper.friction)
+    scenario = me.Scenario("A", alpha=[20.0])
+    tasks = {label: (lambda contact=contact: me.simulate(contact, scenario, "continuum"))
+             for label, contact in (("paper's law", paper), ("rate-dependent", rate))}
+    for task in tasks.values():
+        task()
+    return tasks
+
+
+def _against(other: str, repeat: int) -> None:
+    """The side-by-side comparison of ``--against`` (module docstring)."""
+    from pathlib import Path as FilePath
+
+    roots = {"this checkout": str(FilePath(__file__).resolve().parent.parent),
+             f"--against {other}": str(FilePath(other).resolve())}
+    tasks = ["paper's law", "rate-dependent"]
+    medians = measure(list(roots.values()), __file__, tasks, repeat, cpu=True)
+    print(f"continuum, A 20°, 2001 samples, side by side (CPU time, medians of {repeat}, interleaved):")
+    for name, found in zip(roots, medians):
+        print(f"  {name}: paper's law (simulate) {found[tasks[0]] * 1e3:.1f} ms, rate-dependent (simulate) "
+              f"{found[tasks[1]] * 1e3:.1f} ms, ratio {found[tasks[1]] / found[tasks[0]]:.2f} "
+              f"(target <= {RATIO_TARGET:g})")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=7)
-    repeat = parser.parse_args().repeat
+    parser.add_argument("--against", default=None, metavar="DIR", help="a checkout to time scenario A's continuum "
+                        "runs beside (only that)")
+    parser.add_argument("--worker", action="store_true", help=argparse.SUPPRESS)
+    parser.add_argument("--cpu", action="store_true", help=argparse.SUPPRESS)
+    options = parser.parse_args()
+    if options.worker:
+        serve(_side_by_side_tasks(), options.cpu)
+        return
+    repeat = options.repeat
+    if options.against:
+        _against(options.against, repeat)
+        return
     params, paper = me.Parameters.paper(), me.Contact.paper()
     law = me.RateDependentAdhesion(params.dgamma0, params.dgamma1, 1e-6, 0.6)
     rate = me.Contact(paper.elastomer, paper.indenter, law, paper.friction)

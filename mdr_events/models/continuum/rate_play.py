@@ -183,7 +183,14 @@ class RatePlay(RateShifts):
                 out[:, rows[chunk]] = _view_sides(self, view, flat[rows[chunk]])
         return tuple(part.reshape(times.shape) for part in out)
 
-    def _evaluate(self, times) -> tuple[np.ndarray, np.ndarray]:
+    def _evaluate_each(self, *times: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
+        """:meth:`_evaluate` of each array of ``times`` alone, in turn (the sides of the last kept: a run asks its
+        scan's last, whose sides its events read)."""
+        return [self._evaluate(part) for part in times]
+
+    def _evaluate(self, times, forces: bool = True) -> tuple[np.ndarray, np.ndarray]:
+        """``F_x`` (N) and the springs at either cap (m); ``forces`` as :class:`RateShifts` takes it (the sides and the
+        force come together here, kept for the times last asked)."""
         force, lower, upper = self._sides(times)
         return force, lower + upper
 

@@ -10,11 +10,17 @@ contact, the event log and the extrema of ``F_N``, ``F_x`` and the contact area.
 The log holds the edge's events (first contact and re-contact, growth resuming, detachment starting, the contact's
 end), the path's corners in contact, and the springs' (the first contact's slip onset, full slip, a re-stick where the
 level ``x − K a`` turns back and a slip onset again where it returns to its maximum; direction: the cap, the way
-``x`` goes). Where the edge stops between pieces no event is logged (the paper's law has no such event). A run ends
-where its contact ends for good (the samples after it ``nan``, the first one on the path's segment showing the contact
-gone) or at the path's end. The extrema are found on the edge's solver steps (every step's ends and
-:data:`EXTREMUM_PROBES` points inside) and refined by bounded minimisation between the neighbours of the largest or
-least: the quantities are smooth within a step.
+``x`` goes). Where the edge stops between pieces no event is logged (the paper's law has no such event); the switches
+inside a step (full slip, a re-stick) are found on the springs' extent alone (:meth:`RateShifts.slip_radius
+<mdr_events.models.continuum.rate_shifts.RateShifts.slip_radius>`, no quadrature). A run ends where its contact ends
+for good (the samples after it ``nan``, the first one on the path's segment showing the contact gone) or at the path's
+end. The extrema are found on the edge's solver steps (every step's ends and :data:`EXTREMUM_PROBES` points inside)
+and refined between the neighbours of the largest or least by the stationary points of each interval's Chebyshev
+interpolant of degree :data:`EXTREMUM_DEGREE` (:func:`~mdr_events.models.continuum.stationary.derivative_roots`, as
+the paper's spans refine theirs): the quantities are smooth within a step. A stationary point better than the scan's
+point by no more than rounding (:data:`~mdr_events.models.continuum.solution.EXTREMUM_TIE` of the value) leaves the
+scan's point, as the paper's extremum keeps the earliest of its ties (a plateau such as ``F_x`` while the springs
+stick).
 """
 
 from __future__ import annotations
@@ -23,7 +29,7 @@ import math
 from typing import NamedTuple
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
+from scipy.optimize import brentq
 
 from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.contact.friction import FrictionLaw
@@ -37,19 +43,26 @@ from .extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, VALUE_AFTER_CONTACT, ext
 from .rate_edge import EdgeEventKind
 from .rate_play import RatePlay
 from .rate_shifts import RateShifts, solve_rate_shifts
-from .solution import sample_times
+from .solution import EXTREMUM_TIE, sample_times
 from .solve import BYTES_PER_SAMPLE
 from .state import Event, EventKind
+from .stationary import chebyshev_nodes, derivative_roots
 from .tolerances import Tolerances, check_output
 
 __all__ = ["run_rate_continuum", "run_end", "check_rate_layer", "rate_quantities", "rate_events", "rate_extrema", "Scan", "scan_run",
-           "EXTREMUM_PROBES", "SWITCH_XTOL", "SWITCH_POINTS", "RUN_METHOD"]
+           "scan_times", "evaluate_run",
+           "EXTREMUM_PROBES", "EXTREMUM_DEGREE", "SWITCH_XTOL", "SWITCH_POINTS", "RUN_METHOD"]
 
 #: Points inside each of the edge's solver steps at which the scan looks (besides the steps' ends and the level's
 #: candidates): none, since a quantity's extremum inside a step lies between the scan's neighbours of its best, which
 #: the refinement searches (the quantities are smooth within a step; their kinks, at the path's corners and the edge's
 #: events, are steps' ends).
 EXTREMUM_PROBES = 0
+#: The degree of the interpolant whose stationary points :func:`rate_extrema` takes beside the scan's best
+#: (``_stationary``): on each interval between the scan's times the radius is one step of the edge's dense output,
+#: a polynomial of degree at most 12 (LSODA's Adams order; Radau's 3), which these 16 points read exactly; ``F_N``
+#: and ``F_x`` are smooth functions of it and of the path's depth and ``x``, linear there.
+EXTREMUM_DEGREE = 15
 #: The bisection of a switch (full slip, a re-stick inside a step) ends at this share of the clock (the edge's ODE
 #: resolves its times to about 1e-10 of themselves).
 SWITCH_XTOL = 1e-13
@@ -84,7 +97,8 @@ def run_end(shifts: RateShifts) -> tuple[float, bool]:
     return float(shifts.path.duration), False
 
 
-def rate_quantities(shifts: RateShifts, times: np.ndarray) -> dict[str, np.ndarray]:
+def rate_quantities(shifts: RateShifts, times: np.ndarray,
+                    evaluated: tuple[np.ndarray, np.ndarray] | None = None) -> dict[str, np.ndarray]:
     """The quantities of :data:`~mdr_events.models.continuum.solution.EVALUATED_QUANTITIES` at ``times`` (s from the
     path's first contact); ``nan`` after the run's end but the first sample on the path once the contact ended.
 
@@ -93,7 +107,9 @@ def rate_quantities(shifts: RateShifts, times: np.ndarray) -> dict[str, np.ndarr
     shifts : RateShifts
         The run.
     times : numpy.ndarray
-        The times (s from the first contact).
+        The times (s from the first contact), one-dimensional.
+    evaluated : tuple of numpy.ndarray, optional
+        ``F_x`` and the sliding springs' extent at ``times`` where they are evaluated already (:func:`evaluate_run`).
 
     Returns
     -------
@@ -105,7 +121,7 @@ def rate_quantities(shifts: RateShifts, times: np.ndarray) -> dict[str, np.ndarr
     end, ended = run_end(shifts)
     x, depth = path.position(clock)
     radius = shifts._radius(clock)
-    force, sliding = shifts._evaluate(clock)
+    force, sliding = shifts._evaluate(clock) if evaluated is None else evaluated
     normal = shifts.normal_force(np.minimum(clock, path.duration))
     with np.errstate(invalid="ignore", divide="ignore"):
         share = np.where(radius > 0.0, np.minimum(sliding / np.where(radius > 0.0, radius, 1.0), 1.0), np.nan)
@@ -144,8 +160,9 @@ class Scan(NamedTuple):
     normal: np.ndarray
 
 
-def scan_run(shifts: RateShifts) -> Scan:
-    """The run's :class:`Scan` (one evaluation for the events and the extrema).
+def scan_times(shifts: RateShifts) -> np.ndarray:
+    """The times of the run's :class:`Scan` (path clock, increasing): the level's candidates and the edge's steps, with
+    :data:`EXTREMUM_PROBES` points inside each, from the first contact to the run's end.
 
     Parameters
     ----------
@@ -154,8 +171,8 @@ def scan_run(shifts: RateShifts) -> Scan:
 
     Returns
     -------
-    Scan
-        The quantities on the scan's times.
+    numpy.ndarray
+        The times (s, path clock).
     """
     start = shifts.path.first_contact_time()
     end, _ = run_end(shifts)
@@ -164,11 +181,55 @@ def scan_run(shifts: RateShifts) -> Scan:
     knots = np.unique(np.concatenate([[start], knots[(knots >= start) & (knots <= end)]]))  # (radius 0 at the start)
     share = np.arange(EXTREMUM_PROBES + 1) / (EXTREMUM_PROBES + 1)
     stamps = shifts._candidates[0]
-    times = np.unique(np.concatenate([(knots[:-1, None] + np.diff(knots)[:, None] * share[None, :]).ravel(),
-                                      knots[-1:], stamps[(stamps >= start) & (stamps <= end)]]))
-    force, extent = shifts._evaluate(times)
+    return np.unique(np.concatenate([(knots[:-1, None] + np.diff(knots)[:, None] * share[None, :]).ravel(),
+                                     knots[-1:], stamps[(stamps >= start) & (stamps <= end)]]))
+
+
+def scan_run(shifts: RateShifts, times: np.ndarray | None = None,
+             evaluated: tuple[np.ndarray, np.ndarray] | None = None) -> Scan:
+    """The run's :class:`Scan` (one evaluation for the events and the extrema).
+
+    Parameters
+    ----------
+    shifts : RateShifts
+        The run.
+    times : numpy.ndarray, optional
+        Its :func:`scan_times`, where they are found already.
+    evaluated : tuple of numpy.ndarray, optional
+        ``F_x`` and the sliding springs' extent at ``times`` where they are evaluated already (:func:`evaluate_run`).
+
+    Returns
+    -------
+    Scan
+        The quantities on the scan's times.
+    """
+    times = scan_times(shifts) if times is None else times
+    force, extent = shifts._evaluate(times) if evaluated is None else evaluated
     return Scan(times, force, extent, shifts._radius(times), shifts._level(times),
                 shifts.normal_force(times))
+
+
+def evaluate_run(shifts: RateShifts, times: np.ndarray) -> tuple[dict[str, np.ndarray], Scan]:
+    """:func:`rate_quantities` at ``times`` and :func:`scan_run`, their ``F_x`` and sliding springs evaluated in one
+    pass over the run's pieces where the run takes them together (``_evaluate_each``: each time's values its own, the
+    same as asked alone).
+
+    Parameters
+    ----------
+    shifts : RateShifts
+        The run.
+    times : numpy.ndarray
+        The output times (s from the first contact), one-dimensional.
+
+    Returns
+    -------
+    tuple of dict and Scan
+        The quantities at ``times`` and the scan.
+    """
+    stamps = scan_times(shifts)
+    at_samples, at_scan = shifts._evaluate_each(np.asarray(times, dtype=float) + shifts.path.first_contact_time(),
+                                                stamps)
+    return rate_quantities(shifts, times, at_samples), scan_run(shifts, stamps, at_scan)
 
 
 def _at_cap(shifts: RateShifts, clock: np.ndarray) -> np.ndarray:
@@ -298,10 +359,32 @@ def _quantity(shifts: RateShifts, name: str, clock: np.ndarray) -> np.ndarray:
     return math.pi * shifts._radius(clock) ** 2
 
 
+def _stationary(shifts: RateShifts, name: str, sign: float, ends: np.ndarray) -> tuple[float, float]:
+    """The least of ``sign`` times quantity ``name`` at its stationary points between the scan's three times ``ends``
+    (path clock; each of the two intervals within one solver step and one segment of the path, where the quantity is
+    smooth but for a slip onset inside, where the interpolant is rougher and the point found only counts where the
+    quantity there beats the scan's best): the roots of the derivative of its interpolant at :data:`EXTREMUM_DEGREE` + 1 Chebyshev points of each
+    interval (:func:`~.stationary.derivative_roots`, as the paper's spans refine theirs), the quantity evaluated there;
+    ``(nan, nan)`` where neither interval has one (the extremum is the scan's point; an interval with a value that is
+    not finite has none)."""
+    nodes = chebyshev_nodes(EXTREMUM_DEGREE)
+    centres, halves = 0.5 * (ends[:-1] + ends[1:]), 0.5 * np.diff(ends)
+    values = _quantity(shifts, name, (centres[:, None] + halves[:, None] * nodes).ravel()).reshape(len(halves), -1)
+    roots = [centre + half * root for centre, half, row in zip(centres.tolist(), halves.tolist(), values)
+             if np.all(np.isfinite(row)) for root in derivative_roots(row, EXTREMUM_DEGREE) if -1.0 <= root <= 1.0]
+    if not roots:
+        return math.nan, math.nan
+    times = np.clip(np.array(roots), ends[0], ends[-1])
+    found = _quantity(shifts, name, times)
+    best = int(np.argmin(sign * found))
+    return float(times[best]), float(found[best])
+
+
 def rate_extrema(shifts: RateShifts, scan: Scan) -> dict[str, float]:
     """The largest and least ``F_N``, ``F_x`` and contact area of the run and their times (s from the first contact),
     as :func:`~mdr_events.models.continuum.extrema.solution_extrema` gives them for the paper's law: the scan's best,
-    refined by bounded minimisation between its neighbours where it lies inside a step (not at the scan's ends).
+    refined between its neighbours where it lies inside a step (not at the scan's ends) by the stationary points of
+    ``_stationary`` where one is better beyond rounding (module docstring).
 
     Parameters
     ----------
@@ -327,11 +410,11 @@ def rate_extrema(shifts: RateShifts, scan: Scan) -> dict[str, float]:
             at = int(np.argmin(sign * values))
             time, value = float(grid[at]), float(values[at])
             if 0 < at < len(grid) - 1:
-                found = minimize_scalar(lambda t: sign * float(_quantity(shifts, name, np.array([t]))[0]),
-                                        method="bounded", bounds=(grid[at - 1], grid[at + 1]),
-                                        options={"xatol": SWITCH_XTOL * grid[at + 1]})
-                if sign * found.fun < sign * value:
-                    time, value = float(found.x), float(found.fun) * sign
+                found_time, found = _stationary(shifts, name, sign, grid[at - 1:at + 2])
+                # (better beyond rounding alone: on a plateau the scan's point stays, as the paper's extremum keeps
+                # the earliest of its ties)
+                if sign * found < sign * value - EXTREMUM_TIE * abs(value):
+                    time, value = found_time, found
             if ended and sign * VALUE_AFTER_CONTACT < sign * value:
                 time, value = end, VALUE_AFTER_CONTACT
             value_name, time_name = extremum_names(name, kind)
@@ -404,9 +487,8 @@ def run_rate_continuum(params: Parameters, paths: list[Path], times: np.ndarray 
         times = sample_times([run_end(run)[0] - run.path.first_contact_time() for run in runs],
                              [run.path.duration - run.path.first_contact_time() for run in runs], samples)
     times = np.asarray(times, dtype=float)
-    per_case = [rate_quantities(run, times) for run in runs]
+    per_case, scans = zip(*(evaluate_run(run, times) for run in runs))
     out = {name: np.stack([case[name] for case in per_case]) for name in per_case[0]}
-    scans = [scan_run(run) for run in runs]
     out.update(time=times, events=[rate_events(run, scan) for run, scan in zip(runs, scans)],
                extrema=[rate_extrema(run, scan) for run, scan in zip(runs, scans)], runs=runs)
     return out

@@ -211,7 +211,7 @@ class RateShifts:
         numpy.ndarray
             The sliding springs' extent, at most the contact radius.
         """
-        return self._evaluate(times)[1]
+        return self._evaluate(times, forces=False)[1]
 
     def slip_onset_time(self) -> float:
         """The first time (s, path clock) at which springs slide: ``L`` reaches the first springs' anchor.
@@ -235,7 +235,16 @@ class RateShifts:
         return float(brentq(lambda t: float(self._level(np.array([t]))[0]) - anchor, before, after,
                             xtol=4.0 * np.finfo(float).eps * abs(after)))
 
-    def _evaluate(self, times) -> tuple[np.ndarray, np.ndarray]:
+    def _evaluate_each(self, *times: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
+        """:meth:`_evaluate` of each one-dimensional array of ``times``, all in one pass (each time's values are its
+        own: the same as asked alone)."""
+        cuts = np.cumsum([np.size(part) for part in times])[:-1]
+        force, sliding = self._evaluate(np.concatenate([np.atleast_1d(part) for part in times]))
+        return list(zip(np.split(force, cuts), np.split(sliding, cuts)))
+
+    def _evaluate(self, times, forces: bool = True) -> tuple[np.ndarray, np.ndarray]:
+        """``F_x`` (N; zeros where ``forces`` is false: the sliding springs' extent alone is asked, which needs no
+        quadrature and no time where a receding edge's radius was reached) and the sliding springs' extent (m)."""
         times = np.atleast_1d(np.asarray(times, dtype=float))
         force, sliding = np.zeros(times.shape), np.zeros(times.shape)
         starts = np.array([view.t0 for view in self.views])
@@ -244,7 +253,7 @@ class RateShifts:
         for index, view in enumerate(self.views):
             rows = np.flatnonzero((owner == index) & (times <= view.t1))
             if rows.size:
-                force[rows], sliding[rows] = _view_force(self, view, times[rows], levels[rows])
+                force[rows], sliding[rows] = _view_force(self, view, times[rows], levels[rows], forces)
         at_cap = self._level(times) >= levels  # (the level at its running maximum: M is L there, bit for bit)
         return self.sign * force, np.where(at_cap, sliding, 0.0)
 
@@ -404,8 +413,10 @@ def gauss_radius(radius, start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray
     return half, radius(nodes.ravel()).reshape(nodes.shape) @ _WEIGHTS
 
 
-def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.ndarray):
-    """``F_x / σ`` (N) and the sliding springs' extent (m) at ``times`` within one piece."""
+def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.ndarray, forces: bool = True):
+    """``F_x / σ`` (N) and the sliding springs' extent (m) at ``times`` within one piece; where ``forces`` is false the
+    extent alone (the force zeros): a record's sliding springs reach to its radius when ``σx`` reached the level, at
+    most the radius now, without the time the radius was reached (the springs beyond it gone) or the quadrature."""
     radius = view.solution(times)[0]
     x_now = shifts._x(times)
     force, sliding = np.zeros(times.shape), np.zeros(times.shape)
@@ -424,15 +435,17 @@ def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.n
         if not np.any(present):
             continue
         rows = np.flatnonzero(present)
-        top = hi[rows]
-        if view.way < 0:  # (the receding edge has taken the springs beyond the radius now)
+        top, level = hi[rows], levels[rows]
+        if view.way < 0 and forces:  # (the receding edge has taken the springs beyond the radius now)
             beyond = solution(top)[0] > radius[rows]
             if np.any(beyond):
                 top[beyond] = _first_radius(solution, lo, top[beyond], radius[rows][beyond])
-        level = levels[rows]
         star = np.where(shifts._x(np.full(rows.size, lo)) >= level, lo, _reach(shifts, top, level))
-        a_star, a_hi = solution(star)[0], solution(top)[0]
-        x_star, x_hi = shifts._x(star), shifts._x(top)
+        a_star = solution(star)[0]
+        if not forces:  # (beyond the radius now where the receding edge took them: all of its springs slide)
+            sliding[rows] = np.maximum(sliding[rows], np.where(star > lo, np.minimum(a_star, radius[rows]), 0.0))
+            continue
+        a_hi, x_star, x_hi = solution(top)[0], shifts._x(star), shifts._x(top)
         force[rows] += relation.numeric(x_now[rows], level, a_lo, a_star, a_hi, x_star, x_hi,
                                         _swept(shifts, solution, lo, star, top),
                                         shifts.G_star)

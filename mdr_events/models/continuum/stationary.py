@@ -13,10 +13,15 @@ no radius root per evaluation).
   (linear in time on a segment). On a pinned radius ``F_N`` is linear in the depth, hence in time: no stationary
   point inside a span (its extremes are the span's ends, which the scan holds).
 - The contact radius and area are monotone on a span.
+
+The reading of a polynomial at Chebyshev points and the roots of its derivative (:func:`derivative_roots`) also refine
+the extrema of the rate-dependent law's run (:func:`~mdr_events.models.continuum.rate_run.rate_extrema`), where the
+radius of each interval between the scan's times is one step of the edge's dense output.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -29,18 +34,65 @@ from .span import Variable
 from .state import Regime
 from .tolerances import EPS
 
-__all__ = ["DENSE_DEGREE", "stationary_points"]
+__all__ = ["DENSE_DEGREE", "stationary_points", "chebyshev_nodes", "derivative_roots"]
 
 #: Degree of the polynomial of one step of DOP853's dense output (``solve_ivp``'s interpolant of ``F_x``).
 DENSE_DEGREE = 7
-#: The Chebyshev points on [-1, 1] at which a step's polynomial is read off (first kind, ``DENSE_DEGREE + 1``).
-_NODES = np.cos(np.pi * (np.arange(DENSE_DEGREE + 1) + 0.5) / (DENSE_DEGREE + 1))
-#: Node values -> Chebyshev coefficients of the derivative (in the step's variable over [-1, 1]): the interpolation
-#: at :data:`_NODES` followed by the derivative, as one matrix.
-_DERIVATIVE = chebyshev.chebder(np.linalg.inv(chebyshev.chebvander(_NODES, DENSE_DEGREE)))
 #: A root of the derivative counts as real where its imaginary part is below this share of the step (the companion
 #: matrix's rounding: a double root at a flat extremum splits into a complex pair of about sqrt(eps)).
 IMAGINARY_SHARE = 1e-6
+
+
+@functools.lru_cache(maxsize=None)
+def _chebyshev_reading(degree: int) -> tuple[np.ndarray, np.ndarray]:
+    """The Chebyshev points of the first kind on [-1, 1] (``degree + 1``) and the matrix taking a polynomial's values
+    there to the Chebyshev coefficients of its derivative (the interpolation followed by the derivative)."""
+    nodes = np.cos(np.pi * (np.arange(degree + 1) + 0.5) / (degree + 1))
+    nodes.setflags(write=False)
+    return nodes, chebyshev.chebder(np.linalg.inv(chebyshev.chebvander(nodes, degree)))
+
+
+#: The Chebyshev points of a step of DOP853's dense output (degree :data:`DENSE_DEGREE`) and the matrix taking its values
+#: there to its derivative's Chebyshev coefficients (:func:`_chebyshev_reading`).
+_NODES, _DERIVATIVE = _chebyshev_reading(DENSE_DEGREE)
+
+
+def chebyshev_nodes(degree: int = DENSE_DEGREE) -> np.ndarray:
+    """The points on [-1, 1] at which :func:`derivative_roots` reads a polynomial of ``degree``.
+
+    Parameters
+    ----------
+    degree : int, optional
+        The polynomial's degree.
+
+    Returns
+    -------
+    numpy.ndarray
+        The ``degree + 1`` Chebyshev points of the first kind (read-only: shared).
+    """
+    return _chebyshev_reading(degree)[0]
+
+
+def derivative_roots(values: np.ndarray, degree: int = DENSE_DEGREE) -> list[float]:
+    """The real roots of the derivative of the polynomial of ``degree`` through ``values`` at
+    :func:`chebyshev_nodes`, in the nodes' variable on [-1, 1] (not clipped to it; roots with an imaginary part above
+    :data:`IMAGINARY_SHARE` left out): a step's stationary points, exact where the step is that polynomial (a dense
+    output's step), else those of its Chebyshev interpolant.
+
+    Parameters
+    ----------
+    values : numpy.ndarray
+        The ``degree + 1`` values at :func:`chebyshev_nodes`.
+    degree : int, optional
+        The polynomial's degree.
+
+    Returns
+    -------
+    list of float
+        The real roots (any order).
+    """
+    return [float(root.real) for root in chebyshev.chebroots(_chebyshev_reading(degree)[1] @ values)
+            if abs(root.imag) <= IMAGINARY_SHARE]
 #: ``brentq``'s relative tolerance on the stationary radius of ``F_N`` (a few ulp).
 RADIUS_RTOL = 4 * EPS
 
@@ -107,7 +159,7 @@ def _dense_output_roots(interpolant, low: float, high: float) -> list[float]:
     if not steps.size:
         return []
     centres, halves = 0.5 * (starts[steps] + ends[steps]), 0.5 * (ends[steps] - starts[steps])
-    nodes = centres[:, None] + halves[:, None] * _NODES
+    nodes = centres[:, None] + halves[:, None] * chebyshev_nodes()
     if steps.size == 1:  # (the step's own interpolant: one call)
         values = interpolant.interpolants[int(steps[0])](nodes[0])
     else:
@@ -115,9 +167,9 @@ def _dense_output_roots(interpolant, low: float, high: float) -> list[float]:
     roots = []
     for centre, half, lower, upper, row in zip(centres.tolist(), halves.tolist(), lowers[steps].tolist(),
                                                uppers[steps].tolist(), values):
-        for root in chebyshev.chebroots(_DERIVATIVE @ row):
-            var = centre + half * float(root.real)
-            if abs(root.imag) <= IMAGINARY_SHARE and lower <= var <= upper:
+        for root in derivative_roots(row):
+            var = centre + half * root
+            if lower <= var <= upper:
                 roots.append(var)
     return roots
 
