@@ -14,7 +14,7 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import Tolerances, evaluate, integrate, solve_path
 from mdr_events.models.continuum.dense import force_values
-from mdr_events.models.continuum.span import EventFunction, Trigger
+from mdr_events.models.continuum.span import EventFunction, SpanIntegrator, Trigger
 from mdr_events.models.continuum.span_panels import NODES, panels
 from mdr_events.models.continuum.split_span import SplitSpanIntegrator
 
@@ -139,26 +139,43 @@ def _drop():
     return params, me.Path(np.array(points), params.v), None
 
 
-CASES = {"A 20°": lambda: (me.Parameters.paper(), me.Path.scenario_A(20.0, me.Parameters.paper()), None),
+TAU0 = FrictionLaw("tau0")
+
+
+def _zigzag(params):
+    """In with tangential reversals, a pinned zigzag, out (benchmarks/bench_simulate.py's)."""
+    return me.Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)], params.v)
+
+
+#: label -> (params, path, profile, friction): both parts with adhesion (the split spans), and ``τ0`` alone (the
+#: spans of :class:`~mdr_events.models.continuum.span.SpanIntegrator`: growing with a front, all stick, shrinking, a
+#: pinned span with a front)
+CASES = {"A 20°": lambda: (me.Parameters.paper(), me.Path.scenario_A(20.0, me.Parameters.paper()), None, COMBINED),
          "cone, A 20°": lambda: (me.Parameters.paper(), me.Path.scenario_A(20.0, me.Parameters.paper()),
-                                 PowerLaw.cone(0.05)),
+                                 PowerLaw.cone(0.05), COMBINED),
          "n = 3, B 30°": lambda: (me.Parameters.paper(), me.Path.scenario_B(30.0, me.Parameters.paper()),
-                                  PowerLaw(2e5, 3.0)),
-         "drop onto the Δγ1 branch": _drop}
+                                  PowerLaw(2e5, 3.0), COMBINED),
+         "drop onto the Δγ1 branch": lambda: (*_drop(), COMBINED),
+         "τ0, A 20°": lambda: (me.Parameters.paper(), me.Path.scenario_A(20.0, me.Parameters.paper()), None, TAU0),
+         "τ0, B 60°": lambda: (me.Parameters.paper(), me.Path.scenario_B(60.0, me.Parameters.paper()), None, TAU0),
+         "τ0, zigzag": lambda: (me.Parameters.paper(), _zigzag(me.Parameters.paper()), None, TAU0),
+         "τ0, cone, A 30°": lambda: (me.Parameters.paper(), me.Path.scenario_A(30.0, me.Parameters.paper()),
+                                     PowerLaw.cone(0.05), TAU0)}
 
 
 def _run(case, monkeypatch, quadrature, tolerances=Tolerances(), calls=None):
     """The case's run by the route asked; ``calls`` (a list) gets one entry per quadrature by panels."""
-    params, path, profile = CASES[case]()
+    params, path, profile, friction = CASES[case]()
     with monkeypatch.context() as patch:
         patch.setattr(SplitSpanIntegrator, "quadrature", quadrature)
+        patch.setattr(SpanIntegrator, "quadrature", quadrature)
         if calls is not None:
             def counted(*args, **kwargs):
                 calls.append(args[1])
                 return panels(*args, **kwargs)
 
             patch.setattr(integrate, "panels", counted)
-        solution = solve_path(params, path, tolerances, profile=profile, friction=COMBINED)
+        solution = solve_path(params, path, tolerances, profile=profile, friction=friction)
     return solution, evaluate(solution, np.linspace(0.0, solution.end_time, 2001))["tangential_force"]
 
 
