@@ -15,7 +15,7 @@ from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import Tolerances, evaluate, integrate, solve_path
 from mdr_events.models.continuum.dense import force_values
 from mdr_events.models.continuum.span import EventFunction, SpanIntegrator, Trigger
-from mdr_events.models.continuum.span_panels import NODES, panels
+from mdr_events.models.continuum.span_panels import NODES, PIECE_NODES, panels, rule
 from mdr_events.models.continuum.split_span import SplitSpanIntegrator
 
 RTOL, ATOL = 1e-10, 1e-14
@@ -41,18 +41,34 @@ def _event(function, direction=1.0):
     return EventFunction(Trigger.ZONE_REACHES, None, function, direction)
 
 
-def test_a_polynomial_rate_of_the_panels_degree_is_integrated_exactly_in_one_panel():
-    """A rate of degree NODES − 1 is its own interpolant: one panel (the error check is rounding), the dense output
-    the integral at every point, read the same by ``force_values`` (DOP853's nested products)."""
-    coefficients = np.array([0.3, -1.2, 0.7, 2.0, -0.5, 0.25, 1.5])[:NODES]
+@pytest.mark.parametrize("count", [NODES, PIECE_NODES, 1], ids=lambda count: f"{count} points")
+def test_a_polynomial_rate_of_the_panels_degree_is_integrated_exactly_in_one_panel(count):
+    """A rate of degree count − 1 is its own interpolant: one panel of the count-point rule (the error check is
+    rounding), the dense output the integral at every point, read the same by ``force_values`` (DOP853's nested
+    products, which hold a force of lower degree in the same rows)."""
+    coefficients = np.array([0.3, -1.2, 0.7, 2.0, -0.5, 0.25, 1.5])[:count]
     rate = np.polynomial.Polynomial(coefficients)
     force = rate.integ()
-    solved = panels(_rate(rate), [(0.0, 1.0)], 0.0, [], RTOL, ATOL, math.inf)
+    solved = panels(_rate(rate), [(0.0, 1.0)], 0.0, [], RTOL, ATOL, math.inf, rule(count))
     assert solved.status == 0 and list(solved.sol.ts) == [0.0, 1.0]
     points = np.linspace(0.0, 1.0, 101)
     np.testing.assert_allclose(solved.sol(points)[0], force(points), rtol=0, atol=16 * EPS)
     np.testing.assert_array_equal(force_values(solved.sol, points), solved.sol(points)[0])
     assert solved.y == pytest.approx(force(1.0), rel=4 * EPS)
+
+
+def test_a_rule_of_more_points_than_the_dense_rows_is_refused_by_name():
+    with pytest.raises(ValueError, match=rf"count={NODES + 1}.*\[1, {NODES}\]"):
+        rule(NODES + 1)
+
+
+@pytest.mark.parametrize("count", [NODES, PIECE_NODES])
+def test_a_smooth_rate_is_integrated_to_the_tolerance_by_either_rule(count):
+    """``F = sin`` from ``cos`` over a few periods by the count-point rule: the dense output within DENSE_SHARE of
+    the closed form (the error check holds the rule's own interpolant, whatever its degree)."""
+    solved = panels(_rate(math.cos), [(0.0, 10.0)], 0.0, [], RTOL, ATOL, math.inf, rule(count))
+    points = np.linspace(0.0, 10.0, 1001)
+    np.testing.assert_allclose(force_values(solved.sol, points), np.sin(points), rtol=0, atol=DENSE_SHARE)
 
 
 @pytest.mark.parametrize("start, stop", [(0.0, 10.0), (10.0, 0.0)], ids=["rising", "falling"])
