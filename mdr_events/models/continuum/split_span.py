@@ -77,6 +77,17 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         self._edge = None
         super().__init__(model, anchors, span, sliding)
 
+    def front_knots(self) -> list[float]:
+        """None: a split span's fronts are the parts of its regions' formulas (:mod:`.split_layouts`), read by its own
+        events; only the branch's knots start its pieces.
+
+        Returns
+        -------
+        list of float
+            ``[]``.
+        """
+        return []
+
     def lay_out(self, anchors: SplitAnchorMap, sliding: dict) -> None:
         """The layouts of every cap in every region at the span's start, the crossing's anchors, the tolerances.
 
