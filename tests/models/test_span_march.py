@@ -82,6 +82,7 @@ def _solved(case, monkeypatch, route):
         # (every span marches DOP853's steps where it is not a quadrature: test_span_panels compares both routes)
         patch.setattr(SplitSpanIntegrator, "quadrature", False)
         patch.setattr(SpanIntegrator, "quadrature", False)
+        patch.setattr(SpanIntegrator, "closed_form", False)  # (test_closed_form compares the closed forms)
         if route is not None:
             patch.setattr(integrate, "solve_between_knots", route)
         return solve_path(params, path, **options)

@@ -162,7 +162,7 @@ def test_the_dense_output_of_many_points_is_the_interpolants_bit_for_bit(paper):
     assert checked[True] and checked[False]  # steps taken forwards and backwards
 
 
-def test_the_stationary_points_of_a_dense_output_are_those_of_each_step_s_own_polynomial(paper):
+def test_the_stationary_points_of_a_dense_output_are_those_of_each_step_s_own_polynomial(paper, monkeypatch):
     """stationary._dense_output_roots picks the steps that meet a bracket at once and reads several steps' polynomials
     off in one evaluation (issue 28): the roots are bit for bit those of each step's own interpolant read off at its
     Chebyshev nodes, step by step, on brackets over one step, several and a whole span, of a table's spans (a step per
@@ -185,6 +185,9 @@ def test_the_stationary_points_of_a_dense_output_are_those_of_each_step_s_own_po
                         roots.append(var)
         return roots
 
+    from mdr_events.models.continuum.span import SpanIntegrator
+
+    monkeypatch.setattr(SpanIntegrator, "closed_form", False)  # (every moving span a dense output of panels)
     r = np.linspace(0.0, 4e-3, 41)
     table = me.TabulatedProfile(r, r**2 / (2 * paper.R))
     solutions = [solve_path(paper, me.Path.scenario_A(20.0, paper, profile=table), profile=table),

@@ -14,6 +14,7 @@ from typing import Callable
 
 
 from .anchors import AnchorMap
+from .closed_form import closed_span
 from .graded import SpanProblem, graded_problem
 from .model import ContinuumModel
 from .span import EventFunction, Span, SpanIntegrator, SpanOutcome, Variable
@@ -132,7 +133,11 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
     else:  # (the variable u of :mod:`.graded`, from 1 to 0)
         problem = graded_problem(integrator, grading, events, MIN_STEPS_PER_SPAN)
     tolerances = model.tolerances
-    if integrator.quadrature:  # (a right-hand side and events of the variable alone: a quadrature by panels)
+    primitive = integrator.primitive() if grading is None else None
+    if primitive is not None:  # (no front through the anchors: the force in closed form, :mod:`.closed_form`)
+        solution = closed_span(primitive, problem.start, problem.stop, force, integrator.G2, integrator.scale,
+                               problem.knots, problem.events)
+    elif integrator.quadrature:  # (a right-hand side and events of the variable alone: a quadrature by panels)
         pieces = list(zip([problem.start, *problem.knots], [*problem.knots, problem.stop]))
         # (between knots, pieces of ~1/120 of a span on a 41-point table: a rule of fewer points is exact enough)
         solution = panels(problem.rhs, pieces, force, problem.events, tolerances.rtol, tolerances.atol,

@@ -42,7 +42,9 @@ import numpy as np
 from scipy.optimize import brentq
 
 from .anchors import AnchorMap
+from .closed_form import Primitive
 from .graded import Grading
+from .media import HalfSpaceMedium
 from .model import ContinuumModel, Segment
 from .state import Cap, Regime, Slip
 from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE
@@ -178,6 +180,9 @@ class SpanIntegrator:
     #: A at 20° on a 41-point table, whose knots start a piece each: 1.1e-8 -> 3.5e-9). ``False`` marches DOP853's
     #: steps (:func:`~.integrate.solve_between_knots`, the route before, kept for the tests that compare both)
     quadrature = True
+    #: a moving span without a front on the half-space is integrated in closed form (:meth:`primitive`,
+    #: :mod:`.closed_form`); ``False`` integrates it as any other (the tests compare both)
+    closed_form = True
 
     def __init__(self, model: ContinuumModel, anchors: AnchorMap, span: Span, sliding: dict[Cap, bool]):
         self.model, self.anchors, self.span = model, anchors, span
@@ -401,6 +406,40 @@ class SpanIntegrator:
                         found.append(brentq(lambda var: self.level(cap, var) - value, readings[k], readings[k + 1],
                                             xtol=EPS * max(abs(readings[k]), abs(readings[k + 1])), rtol=4 * EPS))
         return sorted(found)
+
+    def primitive(self) -> Primitive | None:
+        """The span's force in closed form (:mod:`.closed_form`): a moving span without a front on the half-space,
+        whose zones' sizes are linear in the radius.
+
+        Returns
+        -------
+        Primitive or None
+            ``P``, with ``dF_x/da = 2G* dP/da`` (:meth:`rhs`); ``None`` where the span has no closed form here (or
+            :attr:`closed_form` is off).
+        """
+        if not (self.closed_form and self.moving) or self.has_fronts() or type(self.medium) is not HalfSpaceMedium:
+            return None
+        K, kappa, segment = self.K, self.kappa, self.segment
+        constant, linear = {}, {}
+        for cap in Cap:  # n = inner + (a − ξ_e) where the edge piece is at the cap: constant + linear · a
+            zone = self.zones[cap]
+            linear[cap] = 1.0 if zone.edge_in else 0.0
+            constant[cap] = zone.inner_length - linear[cap] * zone.pieces[zone.edge].start
+        D0, D1 = constant[Cap.POSITIVE] - constant[Cap.NEGATIVE], linear[Cap.POSITIVE] - linear[Cap.NEGATIVE]
+        S0 = -constant[Cap.POSITIVE] - constant[Cap.NEGATIVE]
+        S1 = 1.0 - linear[Cap.POSITIVE] - linear[Cap.NEGATIVE]
+        ratio = segment.vx / segment.vd
+        # (n₊ − n₋)(K + κ d') + (a − n₊ − n₋)(v_x/v_d) d'
+        A0, A1, B0, B1, C, C0 = D0 * K, D1 * K, D0 * kappa + S0 * ratio, D1 * kappa + S1 * ratio, 0.0, 0.0
+        if self.shrinking:  # + the edge's shift u(a): ±K a at a cap, else x − Y(a)
+            at_cap = [cap for cap in Cap if self.zones[cap].edge_in_zone]
+            edge = self.anchors.pieces[-1]
+            if at_cap:
+                A1 += float(at_cap[0]) * K
+            else:  # x = X₀ + (v_x/v_d) d on the segment; Y = x₀ + r (d₀(a) − d_ref) on the edge's piece
+                A0 += segment.xs - ratio * segment.ds - edge.x0 + edge.ratio * edge.d_ref
+                C, C0 = ratio, -edge.ratio
+        return Primitive(self.branch, self.anchors.attach, A0, A1, B0, B1, C, C0)
 
     # --- the right-hand side ---------------------------------------------------------------
     def rhs(self, var: float, y) -> list[float]:

@@ -69,6 +69,9 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
     #: the force is a quadrature (:func:`~.span_panels.panels`): the right-hand side and the events read the span's
     #: variable alone
     quadrature = True
+    #: no closed form (:mod:`.closed_form` reads one region's zones, linear in the radius; a split span's regions move
+    #: with ``x_c``)
+    closed_form = False
 
     def __init__(self, model: ContinuumModel, anchors: SplitAnchorMap, span: Span, sliding: dict):
         #: ``(var, instant)`` of the last :meth:`instant` asked (``None``: none yet)
