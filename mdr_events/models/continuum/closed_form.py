@@ -29,8 +29,9 @@ import numpy as np
 
 from .rate_march import _crossed
 from .span_march import Marched, _first_root
+from .state import Cap
 
-__all__ = ["Primitive", "ClosedForce", "EVENT_READINGS", "closed_span"]
+__all__ = ["Primitive", "ClosedForce", "EVENT_READINGS", "span_primitive", "closed_span"]
 
 #: Equal parts of a span at whose ends a closed-form span reads its events (besides its knots): as many as the
 #: quadrature's panels on the fronts' spans (``MIN_STEPS_PER_SPAN`` of them at least) twice over
@@ -121,6 +122,43 @@ class ClosedForce:
         var = np.asarray(var, dtype=float)
         values = self.force + self.G2 * (self.primitive(np.reshape(var, -1) * self.scale) - self.origin)
         return np.reshape(values, (1, *var.shape))
+
+
+def span_primitive(integrator) -> Primitive:
+    """``P`` of a moving span without a front on the half-space (:meth:`~.span.SpanIntegrator.primitive` checks it
+    is one): its right-hand side's terms, each cap's zone ``inner + (a − ξ_e)`` where the edge piece is at the cap.
+
+    Parameters
+    ----------
+    integrator : SpanIntegrator
+        The span's zones, anchors, segment, branch and caps.
+
+    Returns
+    -------
+    Primitive
+        ``P``, with ``dF_x/da = 2G* dP/da``.
+    """
+    K, kappa, segment, zones = integrator.K, integrator.kappa, integrator.segment, integrator.zones
+    constant, linear = {}, {}
+    for cap in Cap:
+        zone = zones[cap]
+        linear[cap] = 1.0 if zone.edge_in else 0.0
+        constant[cap] = zone.inner_length - linear[cap] * zone.pieces[zone.edge].start
+    D0, D1 = constant[Cap.POSITIVE] - constant[Cap.NEGATIVE], linear[Cap.POSITIVE] - linear[Cap.NEGATIVE]
+    S0 = -constant[Cap.POSITIVE] - constant[Cap.NEGATIVE]
+    S1 = 1.0 - linear[Cap.POSITIVE] - linear[Cap.NEGATIVE]
+    ratio = segment.vx / segment.vd
+    # (n₊ − n₋)(K + κ d') + (a − n₊ − n₋)(v_x/v_d) d'
+    A0, A1, B0, B1, C, C0 = D0 * K, D1 * K, D0 * kappa + S0 * ratio, D1 * kappa + S1 * ratio, 0.0, 0.0
+    if integrator.shrinking:  # + the edge's shift u(a): ±K a at a cap, else x − Y(a)
+        at_cap = [cap for cap in Cap if zones[cap].edge_in_zone]
+        edge = integrator.anchors.pieces[-1]
+        if at_cap:
+            A1 += float(at_cap[0]) * K
+        else:  # x = X₀ + (v_x/v_d) d on the segment; Y = x₀ + r (d₀(a) − d_ref) on the edge's piece
+            A0 += segment.xs - ratio * segment.ds - edge.x0 + edge.ratio * edge.d_ref
+            C, C0 = ratio, -edge.ratio
+    return Primitive(integrator.branch, integrator.anchors.attach, A0, A1, B0, B1, C, C0)
 
 
 def closed_span(primitive: Primitive, start: float, stop: float, force: float, G2: float, scale: float,

@@ -42,7 +42,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from .anchors import AnchorMap
-from .closed_form import Primitive
+from .closed_form import Primitive, span_primitive
 from .graded import Grading
 from .media import HalfSpaceMedium
 from .model import ContinuumModel, Segment
@@ -419,27 +419,7 @@ class SpanIntegrator:
         """
         if not (self.closed_form and self.moving) or self.has_fronts() or type(self.medium) is not HalfSpaceMedium:
             return None
-        K, kappa, segment = self.K, self.kappa, self.segment
-        constant, linear = {}, {}
-        for cap in Cap:  # n = inner + (a − ξ_e) where the edge piece is at the cap: constant + linear · a
-            zone = self.zones[cap]
-            linear[cap] = 1.0 if zone.edge_in else 0.0
-            constant[cap] = zone.inner_length - linear[cap] * zone.pieces[zone.edge].start
-        D0, D1 = constant[Cap.POSITIVE] - constant[Cap.NEGATIVE], linear[Cap.POSITIVE] - linear[Cap.NEGATIVE]
-        S0 = -constant[Cap.POSITIVE] - constant[Cap.NEGATIVE]
-        S1 = 1.0 - linear[Cap.POSITIVE] - linear[Cap.NEGATIVE]
-        ratio = segment.vx / segment.vd
-        # (n₊ − n₋)(K + κ d') + (a − n₊ − n₋)(v_x/v_d) d'
-        A0, A1, B0, B1, C, C0 = D0 * K, D1 * K, D0 * kappa + S0 * ratio, D1 * kappa + S1 * ratio, 0.0, 0.0
-        if self.shrinking:  # + the edge's shift u(a): ±K a at a cap, else x − Y(a)
-            at_cap = [cap for cap in Cap if self.zones[cap].edge_in_zone]
-            edge = self.anchors.pieces[-1]
-            if at_cap:
-                A1 += float(at_cap[0]) * K
-            else:  # x = X₀ + (v_x/v_d) d on the segment; Y = x₀ + r (d₀(a) − d_ref) on the edge's piece
-                A0 += segment.xs - ratio * segment.ds - edge.x0 + edge.ratio * edge.d_ref
-                C, C0 = ratio, -edge.ratio
-        return Primitive(self.branch, self.anchors.attach, A0, A1, B0, B1, C, C0)
+        return span_primitive(self)
 
     # --- the right-hand side ---------------------------------------------------------------
     def rhs(self, var: float, y) -> list[float]:
