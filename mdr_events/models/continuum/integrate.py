@@ -1,7 +1,8 @@
-"""Integrate one span: an event met at its start, a force constant or linear in time, or ``solve_ivp``'s loop (DOP853,
-dense output; :mod:`.span_march`) or a quadrature by panels where the right-hand side and the events read the variable
-alone (:mod:`.span_panels`), with the span's events, restarted at the knots of its right-hand side, in the
-variable graded towards a singular end where the integrator gives one (:mod:`.graded`); which events fired, and where.
+"""Integrate one span: an event met at its start, a force constant or linear in time, a moving span without a front
+in closed form (:mod:`.closed_form`), or else a quadrature by panels (:mod:`.span_panels`: the right-hand side and the
+events read the span's variable alone), with the span's events, a piece started at each knot of its right-hand side,
+in the variable graded towards a singular end where the integrator gives one (:mod:`.graded`); which events fired,
+and where. With the integrator's ``quadrature`` off, ``solve_ivp``'s loop (DOP853, dense output; :mod:`.span_march`).
 
 The span's right-hand side and events are its integrator's (:class:`~.span.SpanIntegrator`, or
 :class:`~.split_span.SplitSpanIntegrator` for both parts of the cap with adhesion on a curved indenter).
