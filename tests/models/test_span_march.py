@@ -15,6 +15,7 @@ from scipy.integrate import OdeSolution, solve_ivp
 import mdr_events as me
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.models.continuum import evaluate, integrate, solve_path
+from mdr_events.models.continuum.span import SpanIntegrator
 from mdr_events.models.continuum.split_span import SplitSpanIntegrator
 from mdr_events.models.paths import Path
 
@@ -78,8 +79,10 @@ CASES = {
 def _solved(case, monkeypatch, route):
     params, path, options = CASES[case]()
     with monkeypatch.context() as patch:
-        # (both parts with adhesion march too where their spans are not a quadrature: test_span_panels compares those)
+        # (every span marches DOP853's steps where it is not a quadrature: test_span_panels compares both routes)
         patch.setattr(SplitSpanIntegrator, "quadrature", False)
+        patch.setattr(SpanIntegrator, "quadrature", False)
+        patch.setattr(SpanIntegrator, "closed_form", False)  # (test_closed_form compares the closed forms)
         if route is not None:
             patch.setattr(integrate, "solve_between_knots", route)
         return solve_path(params, path, **options)

@@ -14,8 +14,8 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import Tolerances, evaluate, integrate, solve_path
 from mdr_events.models.continuum.dense import force_values
-from mdr_events.models.continuum.span import EventFunction, Trigger
-from mdr_events.models.continuum.span_panels import NODES, panels
+from mdr_events.models.continuum.span import EventFunction, SpanIntegrator, Trigger
+from mdr_events.models.continuum.span_panels import NODES, PIECE_NODES, panels, rule
 from mdr_events.models.continuum.split_span import SplitSpanIntegrator
 
 RTOL, ATOL = 1e-10, 1e-14
@@ -41,18 +41,34 @@ def _event(function, direction=1.0):
     return EventFunction(Trigger.ZONE_REACHES, None, function, direction)
 
 
-def test_a_polynomial_rate_of_the_panels_degree_is_integrated_exactly_in_one_panel():
-    """A rate of degree NODES − 1 is its own interpolant: one panel (the error check is rounding), the dense output
-    the integral at every point, read the same by ``force_values`` (DOP853's nested products)."""
-    coefficients = np.array([0.3, -1.2, 0.7, 2.0, -0.5, 0.25, 1.5])[:NODES]
+@pytest.mark.parametrize("count", [NODES, PIECE_NODES, 1], ids=lambda count: f"{count} points")
+def test_a_polynomial_rate_of_the_panels_degree_is_integrated_exactly_in_one_panel(count):
+    """A rate of degree count − 1 is its own interpolant: one panel of the count-point rule (the error check is
+    rounding), the dense output the integral at every point, read the same by ``force_values`` (DOP853's nested
+    products, which hold a force of lower degree in the same rows)."""
+    coefficients = np.array([0.3, -1.2, 0.7, 2.0, -0.5, 0.25, 1.5])[:count]
     rate = np.polynomial.Polynomial(coefficients)
     force = rate.integ()
-    solved = panels(_rate(rate), [(0.0, 1.0)], 0.0, [], RTOL, ATOL, math.inf)
+    solved = panels(_rate(rate), [(0.0, 1.0)], 0.0, [], RTOL, ATOL, math.inf, rule(count))
     assert solved.status == 0 and list(solved.sol.ts) == [0.0, 1.0]
     points = np.linspace(0.0, 1.0, 101)
     np.testing.assert_allclose(solved.sol(points)[0], force(points), rtol=0, atol=16 * EPS)
     np.testing.assert_array_equal(force_values(solved.sol, points), solved.sol(points)[0])
     assert solved.y == pytest.approx(force(1.0), rel=4 * EPS)
+
+
+def test_a_rule_of_more_points_than_the_dense_rows_is_refused_by_name():
+    with pytest.raises(ValueError, match=rf"count={NODES + 1}.*\[1, {NODES}\]"):
+        rule(NODES + 1)
+
+
+@pytest.mark.parametrize("count", [NODES, PIECE_NODES])
+def test_a_smooth_rate_is_integrated_to_the_tolerance_by_either_rule(count):
+    """``F = sin`` from ``cos`` over a few periods by the count-point rule: the dense output within DENSE_SHARE of
+    the closed form (the error check holds the rule's own interpolant, whatever its degree)."""
+    solved = panels(_rate(math.cos), [(0.0, 10.0)], 0.0, [], RTOL, ATOL, math.inf, rule(count))
+    points = np.linspace(0.0, 10.0, 1001)
+    np.testing.assert_allclose(force_values(solved.sol, points), np.sin(points), rtol=0, atol=DENSE_SHARE)
 
 
 @pytest.mark.parametrize("start, stop", [(0.0, 10.0), (10.0, 0.0)], ids=["rising", "falling"])
@@ -139,26 +155,44 @@ def _drop():
     return params, me.Path(np.array(points), params.v), None
 
 
-CASES = {"A 20°": lambda: (me.Parameters.paper(), me.Path.scenario_A(20.0, me.Parameters.paper()), None),
+TAU0 = FrictionLaw("tau0")
+
+
+def _zigzag(params):
+    """In with tangential reversals, a pinned zigzag, out (benchmarks/bench_simulate.py's)."""
+    return me.Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)], params.v)
+
+
+#: label -> (params, path, profile, friction): both parts with adhesion (the split spans), and ``τ0`` alone (the
+#: spans of :class:`~mdr_events.models.continuum.span.SpanIntegrator`: growing with a front, all stick, shrinking, a
+#: pinned span with a front)
+CASES = {"A 20°": lambda: (me.Parameters.paper(), me.Path.scenario_A(20.0, me.Parameters.paper()), None, COMBINED),
          "cone, A 20°": lambda: (me.Parameters.paper(), me.Path.scenario_A(20.0, me.Parameters.paper()),
-                                 PowerLaw.cone(0.05)),
+                                 PowerLaw.cone(0.05), COMBINED),
          "n = 3, B 30°": lambda: (me.Parameters.paper(), me.Path.scenario_B(30.0, me.Parameters.paper()),
-                                  PowerLaw(2e5, 3.0)),
-         "drop onto the Δγ1 branch": _drop}
+                                  PowerLaw(2e5, 3.0), COMBINED),
+         "drop onto the Δγ1 branch": lambda: (*_drop(), COMBINED),
+         "τ0, A 20°": lambda: (me.Parameters.paper(), me.Path.scenario_A(20.0, me.Parameters.paper()), None, TAU0),
+         "τ0, B 60°": lambda: (me.Parameters.paper(), me.Path.scenario_B(60.0, me.Parameters.paper()), None, TAU0),
+         "τ0, zigzag": lambda: (me.Parameters.paper(), _zigzag(me.Parameters.paper()), None, TAU0),
+         "τ0, cone, A 30°": lambda: (me.Parameters.paper(), me.Path.scenario_A(30.0, me.Parameters.paper()),
+                                     PowerLaw.cone(0.05), TAU0)}
 
 
 def _run(case, monkeypatch, quadrature, tolerances=Tolerances(), calls=None):
     """The case's run by the route asked; ``calls`` (a list) gets one entry per quadrature by panels."""
-    params, path, profile = CASES[case]()
+    params, path, profile, friction = CASES[case]()
     with monkeypatch.context() as patch:
         patch.setattr(SplitSpanIntegrator, "quadrature", quadrature)
+        patch.setattr(SpanIntegrator, "quadrature", quadrature)
+        patch.setattr(SpanIntegrator, "closed_form", False)  # (test_closed_form compares the closed forms)
         if calls is not None:
             def counted(*args, **kwargs):
                 calls.append(args[1])
                 return panels(*args, **kwargs)
 
             patch.setattr(integrate, "panels", counted)
-        solution = solve_path(params, path, tolerances, profile=profile, friction=COMBINED)
+        solution = solve_path(params, path, tolerances, profile=profile, friction=friction)
     return solution, evaluate(solution, np.linspace(0.0, solution.end_time, 2001))["tangential_force"]
 
 

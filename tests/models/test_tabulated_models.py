@@ -162,7 +162,7 @@ def test_the_dense_output_of_many_points_is_the_interpolants_bit_for_bit(paper):
     assert checked[True] and checked[False]  # steps taken forwards and backwards
 
 
-def test_the_stationary_points_of_a_dense_output_are_those_of_each_step_s_own_polynomial(paper):
+def test_the_stationary_points_of_a_dense_output_are_those_of_each_step_s_own_polynomial(paper, monkeypatch):
     """stationary._dense_output_roots picks the steps that meet a bracket at once and reads several steps' polynomials
     off in one evaluation (issue 28): the roots are bit for bit those of each step's own interpolant read off at its
     Chebyshev nodes, step by step, on brackets over one step, several and a whole span, of a table's spans (a step per
@@ -185,6 +185,9 @@ def test_the_stationary_points_of_a_dense_output_are_those_of_each_step_s_own_po
                         roots.append(var)
         return roots
 
+    from mdr_events.models.continuum.span import SpanIntegrator
+
+    monkeypatch.setattr(SpanIntegrator, "closed_form", False)  # (every moving span a dense output of panels)
     r = np.linspace(0.0, 4e-3, 41)
     table = me.TabulatedProfile(r, r**2 / (2 * paper.R))
     solutions = [solve_path(paper, me.Path.scenario_A(20.0, paper, profile=table), profile=table),
@@ -206,15 +209,17 @@ def test_the_stationary_points_of_a_dense_output_are_those_of_each_step_s_own_po
 
 
 #: The table's force against the tight run, over its largest value: each panel is held to ``rtol`` = 1e-10 of the
-#: force, and the run crosses some 290 of the table's knots (a piece of its own each), whose errors partly cancel; 50
-#: ``rtol`` holds the quadrature's measured 3.5e-9 with room, while DOP853 restarted at each knot (one step of 15
-#: readings per piece) was 1.1e-8 off.
-TABLE_PIECES_FORCE = 5e-9
+#: force, a check that a piece where the right-hand side is smooth passes far below it; what is left is the rounding
+#: of some 300 pieces (the table's knots, and where a front crosses one: ``SpanIntegrator.front_knots``). Measured
+#: 3.7e-12; without the fronts' knots 3.5e-10 (their kinks inside the panels, cut until each passed its check), and
+#: with DOP853 restarted at each knot 1.1e-8.
+TABLE_PIECES_FORCE = 1e-10
 
 
 def test_a_tables_moving_spans_are_a_quadrature_between_its_knots(paper):
-    """A table's knots make a moving span a quadrature by panels (a restart of DOP853 at each knot cost 15 readings
-    where a panel takes 8). Scenario A at 20° on a 41-point table of the paraboloid: F_x within TABLE_PIECES_FORCE of the run at rtol = 1e-13."""
+    """A table's knots start a piece of the quadrature each (a restart of DOP853 at each knot cost 15 readings where a
+    panel takes 5), and so do the radii where a front crosses one. Scenario A at 20° on a 41-point table of the
+    paraboloid: F_x within TABLE_PIECES_FORCE of the run at rtol = 1e-13."""
     from mdr_events.models.continuum.solution import evaluate
     from mdr_events.models.continuum.tolerances import Tolerances
     from mdr_events.models.paths import Path
@@ -226,3 +231,36 @@ def test_a_tables_moving_spans_are_a_quadrature_between_its_knots(paper):
     times = np.linspace(0.0, min(solution.end_time, tight.end_time), 801)
     force, reference = (evaluate(run, times)["tangential_force"] for run in (solution, tight))
     assert np.max(np.abs(force - reference)) <= TABLE_PIECES_FORCE * np.max(np.abs(reference))
+
+
+def test_a_front_crossing_a_knot_of_the_table_starts_a_piece_there(paper, monkeypatch):
+    """``SpanIntegrator.front_knots``: scenario A at 20° on a 41-point table of the paraboloid, the spans with a front
+    (growing, shrinking): at each knot found the front's ``ξ`` (the inverse of its piece at the level) is a knot of
+    ``g`` to the root's rounding, and every knot of ``g`` the front sweeps over the span is found (a single front,
+    monotone there)."""
+    from mdr_events.models.continuum import integrate
+    from mdr_events.models.paths import Path
+
+    spans = []
+    original = integrate._integrate
+
+    def spy(model, span, integrator, force):
+        spans.append(integrator)
+        return original(model, span, integrator, force)
+
+    monkeypatch.setattr(integrate, "_integrate", spy)
+    table = _paraboloid_table(paper, 41)
+    solve_path(paper, Path.scenario_A(20.0, paper, profile=table), profile=table)
+    fronted = [integrator for integrator in spans if integrator.has_fronts()]
+    swept = []
+    for integrator in fronted:
+        ((cap, piece),) = [(cap, p) for cap in integrator.zones for p, _, _ in integrator.zones[cap].fronts]
+        seen, knots = integrator.zones[cap].anchors, np.array(integrator.anchors.attach.knots)
+        found = integrator.front_knots()
+        xi = [seen.inverse(piece, integrator.level(cap, var)) for var in found]
+        assert np.all(np.min(np.abs(np.subtract.outer(xi, knots)), axis=1) <= 1e-9 * knots[-1])
+        ends = sorted(seen.inverse(piece, integrator.level(cap, var)) for var in (integrator.start, integrator.stop))
+        swept.append(np.count_nonzero((knots > ends[0]) & (knots < ends[1])))
+        assert len(found) == swept[-1]
+        assert set(found) <= set(integrator.knots())
+    assert sum(count > 0 for count in swept) >= 2  # (the growing span with a front and the shrinking one)

@@ -21,7 +21,9 @@ module                     one idea
 :mod:`.model`              the two branches and the cap ``ū = K a``; the path as linear segments
 :mod:`.plan`               :func:`plan_span`: the span's regime and end in closed form
 :mod:`.span`               :class:`SpanIntegrator` (right-hand side, event functions)
-:mod:`.integrate`          ``integrate_span``: a span's force up to its end or first event (``solve_ivp``, knots)
+:mod:`.integrate`          ``integrate_span``: a span's force up to its end or first event (quadrature, knots)
+:mod:`.span_panels`        a span's force as a quadrature by Gauss–Legendre panels, stored as DOP853 dense output
+:mod:`.closed_form`        a moving span without a front in closed form (the branch's depth and integral)
 :mod:`.span_march`         ``solve_ivp``'s loop for a span's DOP853 between knots without its bookkeeping (same steps)
 :mod:`.solve`              :func:`solve_path`: plan → integrate → transition → log
 :mod:`.compressed`         Coulomb's law alone with adhesion: the compressed zone's run beside the contact, and the

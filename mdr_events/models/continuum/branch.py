@@ -49,6 +49,8 @@ class Branch:
     tip_power: float | None = 2.0
     #: the NumPy form of ``dd/da`` (:meth:`slopes`; ``None``: a branch without one, read point by point)
     _slopes = None
+    #: the NumPy form of ``∫_0^a d dξ`` (:meth:`integrals`; ``None``: a branch without one, read point by point)
+    _integrals = None
 
     def __init__(self, params: Parameters, work: float):
         self.params = params
@@ -58,6 +60,7 @@ class Branch:
         self._slope = symbolic.relation("jkr_depth_slope").scalar
         self._slopes = symbolic.relation("jkr_depth_slope").numeric
         self._integral = symbolic.relation("jkr_depth_integral").scalar
+        self._integrals = symbolic.relation("jkr_depth_integral").numeric
         self._coefficients = symbolic.relation("jkr_radius_quartic").scalar_coefficients
         self._array_coefficients = symbolic.relation("jkr_radius_quartic").coefficients
         if work > 0:
@@ -151,6 +154,26 @@ class Branch:
             The integral (m²; 0 at ``a <= 0``).
         """
         return self._integral(a, *self._arguments) if a > 0 else 0.0
+
+    def integrals(self, a: np.ndarray) -> np.ndarray:
+        """:meth:`integral` of an array of radii: the relation's NumPy form at once where the branch has one (eq.
+        (9)'s, a power law's, a table's), any other branch point by point.
+
+        Parameters
+        ----------
+        a : numpy.ndarray
+            The contact radii (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``∫_0^a d(ξ) dξ`` at each (m²; 0 at ``a <= 0``), the shape of ``a``.
+        """
+        a = np.asarray(a, dtype=float)
+        if self._integrals is None:
+            return np.reshape([self.integral(float(v)) for v in a.ravel()], a.shape)
+        value = np.asarray(self._integrals(np.where(a > 0, a, 1.0), *self._arguments), dtype=float)
+        return np.where(a > 0, value, 0.0)
 
     def depth_term(self, a: float) -> float:
         """The size of the terms of (9) at radius ``a``: the profile's ``g(a) = a²/R`` (the depth they cancel to
@@ -260,6 +283,7 @@ class PowerLawBranch(Branch):
         self._slope = symbolic.relation("power_law_depth_slope").scalar
         self._slopes = symbolic.relation("power_law_depth_slope").numeric
         self._integral = symbolic.relation("power_law_depth_integral").scalar
+        self._integrals = symbolic.relation("power_law_depth_integral").numeric
         point = power_law.jump_off(profile, params, work)
         self.jump_off_radius, self.jump_off_depth = point["contact_radius"], point["depth"]
         self._floor = math.sqrt(self.jump_off_radius)
@@ -332,6 +356,10 @@ class FlatPunchBranch(Branch):
         """``∫_0^a g dξ``: the springs under the punch rest on a flat face (``g = 0``)."""
         return 0.0
 
+    def integrals(self, a: np.ndarray) -> np.ndarray:
+        """:meth:`integral` of each radius: 0."""
+        return np.zeros(np.shape(a))
+
     def depth_term(self, a: float) -> float:
         return 0.0
 
@@ -370,6 +398,12 @@ class TabulatedBranch(Branch):
 
     def integral(self, a: float) -> float:
         return self.line.integral(a)
+
+    def integrals(self, a: np.ndarray) -> np.ndarray:
+        a = np.asarray(a, dtype=float)
+        inside = np.clip(a, 0.0, self.line.shape.x_max)
+        value = self.line.shape.g_integral(inside) - 2.0 / 3.0 * self.line.k * inside**1.5
+        return np.where(a > 0, value, 0.0)
 
     def depth_term(self, a: float) -> float:
         return float(self._g(min(a, self.line.shape.x_max))) if a > 0 else 0.0

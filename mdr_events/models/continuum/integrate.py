@@ -1,7 +1,8 @@
-"""Integrate one span: an event met at its start, a force constant or linear in time, or ``solve_ivp``'s loop (DOP853,
-dense output; :mod:`.span_march`) or a quadrature by panels where the right-hand side and the events read the variable
-alone (:mod:`.span_panels`), with the span's events, restarted at the knots of its right-hand side, in the
-variable graded towards a singular end where the integrator gives one (:mod:`.graded`); which events fired, and where.
+"""Integrate one span: an event met at its start, a force constant or linear in time, a moving span without a front
+in closed form (:mod:`.closed_form`), or else a quadrature by panels (:mod:`.span_panels`: the right-hand side and the
+events read the span's variable alone), with the span's events, a piece started at each knot of its right-hand side,
+in the variable graded towards a singular end where the integrator gives one (:mod:`.graded`); which events fired,
+and where. With the integrator's ``quadrature`` off, ``solve_ivp``'s loop (DOP853, dense output; :mod:`.span_march`).
 
 The span's right-hand side and events are its integrator's (:class:`~.span.SpanIntegrator`, or
 :class:`~.split_span.SplitSpanIntegrator` for both parts of the cap with adhesion on a curved indenter).
@@ -14,11 +15,12 @@ from typing import Callable
 
 
 from .anchors import AnchorMap
+from .closed_form import closed_span
 from .graded import SpanProblem, graded_problem
 from .model import ContinuumModel
 from .span import EventFunction, Span, SpanIntegrator, SpanOutcome, Variable
 from .span_march import Marched, march
-from .span_panels import panels
+from .span_panels import NODES, PIECE_NODES, panels, rule
 from .state import Cap, Regime
 from .tolerances import MIN_STEPS_PER_SPAN, SIMULTANEOUS_SHARE, Tolerances
 
@@ -132,10 +134,15 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
     else:  # (the variable u of :mod:`.graded`, from 1 to 0)
         problem = graded_problem(integrator, grading, events, MIN_STEPS_PER_SPAN)
     tolerances = model.tolerances
-    if integrator.quadrature:  # (a right-hand side and events of the variable alone: a quadrature by panels)
+    primitive = integrator.primitive() if grading is None else None
+    if primitive is not None:  # (no front through the anchors: the force in closed form, :mod:`.closed_form`)
+        solution = closed_span(primitive, problem.start, problem.stop, force, integrator.G2, integrator.scale,
+                               problem.knots, problem.events)
+    elif integrator.quadrature:  # (a right-hand side and events of the variable alone: a quadrature by panels)
         pieces = list(zip([problem.start, *problem.knots], [*problem.knots, problem.stop]))
+        # (between knots, pieces of ~1/120 of a span on a 41-point table: a rule of fewer points is exact enough)
         solution = panels(problem.rhs, pieces, force, problem.events, tolerances.rtol, tolerances.atol,
-                          problem.max_step)
+                          problem.max_step, rule(PIECE_NODES if problem.knots else NODES))
     else:
         solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, problem.events,
                                        tolerances, problem.max_step)

@@ -32,15 +32,19 @@ integration: its force is linear in time and its events are closed forms (:class
 
 from __future__ import annotations
 
+import bisect
 import enum
 import math
 from dataclasses import dataclass
 from typing import Callable, NamedTuple
 
 import numpy as np
+from scipy.optimize import brentq
 
 from .anchors import AnchorMap
+from .closed_form import Primitive, span_primitive
 from .graded import Grading
+from .media import HalfSpaceMedium
 from .model import ContinuumModel, Segment
 from .state import Cap, Regime, Slip
 from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE
@@ -167,23 +171,18 @@ class SpanIntegrator:
         Whether springs slide at each cap at the start.
     """
 
-    @property
-    def quadrature(self) -> bool:
-        """Whether the span's force is integrated as a quadrature (:func:`~.span_panels.panels`) rather than by DOP853's
-        steps: where its right-hand side has knots inside the span (a table's ``g``, :meth:`knots`).
-
-        The right-hand side and the events read the variable alone, never the force (:meth:`rhs`), so the quadrature
-        is exact to its tolerances; between a table's knots a DOP853 restart takes a step of 12 readings and 3 more
-        for its dense output, a panel 8 (A at 20° on a 41-point table: 4063 readings -> 3208, and the force nearer
-        the tight run, 3.5e-9 of its largest value against DOP853's 1.1e-8). A smooth span keeps DOP853, bit for bit
-        as before.
-
-        Returns
-        -------
-        bool
-            ``True`` where :meth:`knots` holds any.
-        """
-        return bool(self.knots())
+    #: the force is a quadrature (:func:`~.span_panels.panels`), not DOP853's steps: the right-hand side and the events
+    #: read the span's variable alone, never the force (:meth:`rhs`), so ``F_x = F_0 + ∫ rhs`` is exact to the panels'
+    #: tolerances. A panel reads the right-hand side 8 times where a DOP853 step read it 12 times and 3 more for its
+    #: dense output, and its error is the interpolant's own against one more reading, not an estimate of the solver's
+    #: local error: scenario A at 20° took 442 readings, now 280, and B at 20° 213, now 56, while ``F_x`` moved nearer
+    #: the run at ``rtol = 1e-13`` (A at 20°: 6.8e-11 of its largest value -> 1.6e-12; the zigzag 1.4e-11 -> 2.7e-13;
+    #: A at 20° on a 41-point table, whose knots start a piece each: 1.1e-8 -> 3.5e-9). ``False`` marches DOP853's
+    #: steps (:func:`~.integrate.solve_between_knots`, the route before, kept for the tests that compare both)
+    quadrature = True
+    #: a moving span without a front on the half-space is integrated in closed form (:meth:`primitive`,
+    #: :mod:`.closed_form`); ``False`` integrates it as any other (the tests compare both)
+    closed_form = True
 
     def __init__(self, model: ContinuumModel, anchors: AnchorMap, span: Span, sliding: dict[Cap, bool]):
         self.model, self.anchors, self.span = model, anchors, span
@@ -352,19 +351,75 @@ class SpanIntegrator:
         return self.rate(cap, self.start) > 0.0 or self.rate(cap, self.stop) > 0.0
 
     def knots(self) -> list[float]:
-        """The branch's knots inside the span, where the solver restarts.
+        """Where the right-hand side is not smooth inside the span, in its integration variable: the branch's knots
+        (:attr:`~.branch.Branch.knots`, a moving span) and where a front crosses one (:meth:`front_knots`); the
+        quadrature starts a piece at each.
 
         Returns
         -------
         list of float
-            :attr:`~.branch.Branch.knots` strictly inside a moving span, in its integration variable, ordered from
-            its start to its stop (a pinned span: none).
+            The knots strictly inside the span, ordered from its start to its stop (none: a smooth span).
         """
+        knots = sorted(set(self._radius_knots() + self.front_knots()))
+        return knots if self.start < self.stop else knots[::-1]
+
+    def _radius_knots(self) -> list[float]:
+        """:attr:`~.branch.Branch.knots` strictly inside a moving span, in its integration variable (a pinned span:
+        none), increasing."""
         if not self.moving or not self.branch.knots:
             return []
         low, high = min(self.start, self.stop), max(self.start, self.stop)
-        inside = [knot / self.scale for knot in self.branch.knots if low < knot / self.scale < high]
-        return inside if self.start < self.stop else inside[::-1]
+        return [knot / self.scale for knot in self.branch.knots if low < knot / self.scale < high]
+
+    def front_knots(self) -> list[float]:
+        """Where a slip front crosses a knot of the anchors' branch inside the span (in its integration variable,
+        increasing): the front ``ξ(level)`` is the inverse of its piece, ``Y = x0 + r (d0(ξ) − d_ref)``, whose
+        ``d0`` is a table's PCHIP, so the zone's size, and the right-hand side with it, has a kink of its second
+        derivative where ``ξ`` passes a knot. A panel across it is cut again and again (A at 20° on a 41-point
+        table: 935 readings on the growing span with a front, 225 with these knots).
+
+        The front is read at the span's ends and its radius knots (the level may turn between them: a knot it
+        crosses twice between two readings is missed, which costs panels, not accuracy); a knot between two
+        readings is where the level reaches the piece's value there (Brent's method on the level, to
+        :data:`~.tolerances.EPS` of the variable).
+
+        Returns
+        -------
+        list of float
+            The variables (none: no branch knots, or no front).
+        """
+        knots = self.anchors.attach.knots
+        fronts = [(cap, p) for cap in Cap for p, _, _ in self.zones[cap].fronts if not p.constant]
+        if not knots or not fronts:
+            return []
+        readings = sorted({self.start, self.stop, *self._radius_knots()})
+        found = []
+        for cap, p in fronts:
+            seen = self.zones[cap].anchors
+            levels = [self.level(cap, var) for var in readings]
+            xis = [seen.inverse(p, level) for level in levels]
+            for k in range(len(readings) - 1):
+                low, high = sorted(xis[k:k + 2])
+                for knot in knots[bisect.bisect_right(knots, low):bisect.bisect_left(knots, high)]:
+                    value = seen.piece_value(p, knot)
+                    if (levels[k] - value) * (levels[k + 1] - value) < 0.0:
+                        found.append(brentq(lambda var: self.level(cap, var) - value, readings[k], readings[k + 1],
+                                            xtol=EPS * max(abs(readings[k]), abs(readings[k + 1])), rtol=4 * EPS))
+        return sorted(found)
+
+    def primitive(self) -> Primitive | None:
+        """The span's force in closed form (:mod:`.closed_form`): a moving span without a front on the half-space,
+        whose zones' sizes are linear in the radius.
+
+        Returns
+        -------
+        Primitive or None
+            ``P``, with ``dF_x/da = 2G* dP/da`` (:meth:`rhs`); ``None`` where the span has no closed form here (or
+            :attr:`closed_form` is off).
+        """
+        if not (self.closed_form and self.moving) or self.has_fronts() or type(self.medium) is not HalfSpaceMedium:
+            return None
+        return span_primitive(self)
 
     # --- the right-hand side ---------------------------------------------------------------
     def rhs(self, var: float, y) -> list[float]:

@@ -69,6 +69,9 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
     #: the force is a quadrature (:func:`~.span_panels.panels`): the right-hand side and the events read the span's
     #: variable alone
     quadrature = True
+    #: no closed form (:mod:`.closed_form` reads one region's zones, linear in the radius; a split span's regions move
+    #: with ``x_c``)
+    closed_form = False
 
     def __init__(self, model: ContinuumModel, anchors: SplitAnchorMap, span: Span, sliding: dict):
         #: ``(var, instant)`` of the last :meth:`instant` asked (``None``: none yet)
@@ -76,6 +79,17 @@ class SplitSpanIntegrator(SplitEvents, SpanIntegrator):
         #: the edge's region and the cap the spring there is at (:meth:`edge_shift`; ``None``: not yet asked)
         self._edge = None
         super().__init__(model, anchors, span, sliding)
+
+    def front_knots(self) -> list[float]:
+        """None: a split span's fronts are the parts of its regions' formulas (:mod:`.split_layouts`), read by its own
+        events; only the branch's knots start its pieces.
+
+        Returns
+        -------
+        list of float
+            ``[]``.
+        """
+        return []
 
     def lay_out(self, anchors: SplitAnchorMap, sliding: dict) -> None:
         """The layouts of every cap in every region at the span's start, the crossing's anchors, the tolerances.

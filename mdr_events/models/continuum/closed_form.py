@@ -1,0 +1,214 @@
+"""A moving span's force in closed form where no front moves through its anchors (issue 28): the springs at each cap
+are whole pieces, so every size in the right-hand side of :mod:`.span` is linear in the radius and the force is an
+integral of the branch itself.
+
+On the half-space (``M(a) = a``, ``w = 1``, ``ū = K a``) and without a front, each cap's slip zone is the pieces
+wholly at it and, where the edge piece is at it, ``[ξ_e, a]``: ``n₊ − n₋ = D₀ + D₁ a`` and the sticking length
+``a − n₊ − n₋ = S₀ + S₁ a``. The rate (:meth:`~.span.SpanIntegrator.rhs`)
+
+    dF_x/da = 2G* [(n₊ − n₋)(K + κ d') + (a − n₊ − n₋)(v_x/v_d) d' + (shrinking) u(a)],
+
+with the edge's shift ``u(a) = ±K a`` at a cap, else ``x − Y(a)`` (``x = X₀ + (v_x/v_d) d`` on the segment,
+``Y = x₀ + r (d₀(a) − d_ref)`` on the edge's piece, ``d₀`` the branch it attached on), is a sum of ``1``, ``a``,
+``d'``, ``a d'``, ``d`` and ``d₀``, whose integrals are ``a``, ``a²/2``, ``d``, ``a d − ∫d`` (by parts), ``∫d`` and
+``∫d₀``: the branch's depth and its integral (:meth:`~.branch.Branch.integrals`, closed forms of (9), of a power law
+and of a table's PCHIP). So ``F_x(a) = F_x(a₀) + 2G* (P(a) − P(a₀))`` (:class:`Primitive`) with no step at all: a
+growing span that sticks (scenario A's first), a shrinking one in full slip (``F_x = ±τ0 π a²``, the last), a growing
+one whose inner pieces slide.
+
+The span's events are read at :data:`EVENT_READINGS` equal parts of the span and at its knots (where a table's
+``d`` has a kink; a panel's end is where :mod:`.span_panels` reads them) and solved as :func:`~.span_march.march`
+solves them. ``tests/models/test_closed_form.py`` compares the closed form with the quadrature.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from .rate_march import _crossed
+from .span_march import Marched, _first_root
+from .state import Cap
+
+__all__ = ["Primitive", "ClosedForce", "EVENT_READINGS", "span_primitive", "closed_span"]
+
+#: Equal parts of a span at whose ends a closed-form span reads its events (besides its knots): as many as the
+#: quadrature's panels on the fronts' spans (``MIN_STEPS_PER_SPAN`` of them at least) twice over
+EVENT_READINGS = 16
+
+
+class Primitive(NamedTuple):
+    """``P(a) = A₀ a + A₁ a²/2 + B₀ d(a) + B₁ (a d(a) − ∫d) + C ∫d + C₀ ∫d₀`` (module docstring), whose derivative is
+    ``A₀ + A₁ a + (B₀ + B₁ a) d'(a) + C d(a) + C₀ d₀(a)``.
+
+    Parameters
+    ----------
+    branch : Branch
+        The span's branch ``d(a)``.
+    attach : Branch
+        The branch ``d₀`` the edge's springs attached on.
+    A0, A1, B0, B1, C, C0 : float
+        The coefficients.
+    """
+
+    branch: object
+    attach: object
+    A0: float
+    A1: float
+    B0: float
+    B1: float
+    C: float
+    C0: float
+
+    def __call__(self, a: np.ndarray) -> np.ndarray:
+        """``P`` at the radii ``a`` (m), vectorised."""
+        a = np.asarray(a, dtype=float)
+        depth, integral = self.branch.depths(a), self.branch.integrals(a)
+        value = a * (self.A0 + 0.5 * self.A1 * a) + self.B0 * depth + self.B1 * (a * depth - integral)
+        value = value + self.C * integral
+        if self.C0:
+            value = value + self.C0 * self.attach.integrals(a)
+        return value
+
+    def at(self, a: float) -> float:
+        """``P`` at one radius ``a`` (m), in Python floats (the branch's scalar forms: the events' roots read it)."""
+        depth, integral = self.branch.depth(a), self.branch.integral(a)
+        value = a * (self.A0 + 0.5 * self.A1 * a) + self.B0 * depth + self.B1 * (a * depth - integral)
+        value += self.C * integral
+        return value + self.C0 * self.attach.integral(a) if self.C0 else value
+
+    def rate(self, a: float) -> float:
+        """``dP/da`` at the radius ``a`` (m): what the span's right-hand side reads, over ``2G*``."""
+        slope = self.branch.slope(a)
+        value = self.A0 + self.A1 * a + (self.B0 + self.B1 * a) * slope + self.C * self.branch.depth(a)
+        return value + self.C0 * self.attach.depth(a) if self.C0 else value
+
+
+class ClosedForce:
+    """A span's force in closed form, called like ``solve_ivp``'s dense output in the span's variable
+    (``interpolant(var)[0]``; ``var`` the radius over ``scale``), with its breakpoints ``ts`` (the span's ends and
+    knots: the readers integrate between them, where the force is smooth).
+
+    Parameters
+    ----------
+    primitive : Primitive
+        ``P``.
+    start : float
+        The span's start (its variable).
+    force : float
+        ``F_x`` there (N).
+    G2 : float
+        ``2G*`` (Pa).
+    scale : float
+        The span's radius per unit of its variable (m).
+    ts : list of float
+        The breakpoints, from the start to the end.
+    """
+
+    def __init__(self, primitive: Primitive, start: float, force: float, G2: float, scale: float, ts: list[float]):
+        self.primitive, self.force, self.G2, self.scale = primitive, force, G2, scale
+        self.origin = primitive.at(start * scale)
+        self.ts = list(ts)
+
+    def at(self, var: float) -> float:
+        """``F_x`` at one value of the span's variable (N), in Python floats."""
+        return self.force + self.G2 * (self.primitive.at(var * self.scale) - self.origin)
+
+    def __call__(self, var) -> np.ndarray:
+        """Shape ``(1,)`` for a scalar ``var``, ``(1, n)`` for ``n`` of them, as ``OdeSolution``: NumPy's forms of the
+        branch for both, so that a value is the same whether it was asked alone or among others (:meth:`at`, in
+        Python floats, can differ from it by rounding)."""
+        var = np.asarray(var, dtype=float)
+        values = self.force + self.G2 * (self.primitive(np.reshape(var, -1) * self.scale) - self.origin)
+        return np.reshape(values, (1, *var.shape))
+
+
+def span_primitive(integrator) -> Primitive:
+    """``P`` of a moving span without a front on the half-space (:meth:`~.span.SpanIntegrator.primitive` checks it
+    is one): its right-hand side's terms, each cap's zone ``inner + (a − ξ_e)`` where the edge piece is at the cap.
+
+    Parameters
+    ----------
+    integrator : SpanIntegrator
+        The span's zones, anchors, segment, branch and caps.
+
+    Returns
+    -------
+    Primitive
+        ``P``, with ``dF_x/da = 2G* dP/da``.
+    """
+    K, kappa, segment, zones = integrator.K, integrator.kappa, integrator.segment, integrator.zones
+    constant, linear = {}, {}
+    for cap in Cap:
+        zone = zones[cap]
+        linear[cap] = 1.0 if zone.edge_in else 0.0
+        constant[cap] = zone.inner_length - linear[cap] * zone.pieces[zone.edge].start
+    D0, D1 = constant[Cap.POSITIVE] - constant[Cap.NEGATIVE], linear[Cap.POSITIVE] - linear[Cap.NEGATIVE]
+    S0 = -constant[Cap.POSITIVE] - constant[Cap.NEGATIVE]
+    S1 = 1.0 - linear[Cap.POSITIVE] - linear[Cap.NEGATIVE]
+    ratio = segment.vx / segment.vd
+    # (n₊ − n₋)(K + κ d') + (a − n₊ − n₋)(v_x/v_d) d'
+    A0, A1, B0, B1, C, C0 = D0 * K, D1 * K, D0 * kappa + S0 * ratio, D1 * kappa + S1 * ratio, 0.0, 0.0
+    if integrator.shrinking:  # + the edge's shift u(a): ±K a at a cap, else x − Y(a)
+        at_cap = [cap for cap in Cap if zones[cap].edge_in_zone]
+        edge = integrator.anchors.pieces[-1]
+        if at_cap:
+            A1 += float(at_cap[0]) * K
+        else:  # x = X₀ + (v_x/v_d) d on the segment; Y = x₀ + r (d₀(a) − d_ref) on the edge's piece
+            A0 += segment.xs - ratio * segment.ds - edge.x0 + edge.ratio * edge.d_ref
+            C, C0 = ratio, -edge.ratio
+    return Primitive(integrator.branch, integrator.anchors.attach, A0, A1, B0, B1, C, C0)
+
+
+def closed_span(primitive: Primitive, start: float, stop: float, force: float, G2: float, scale: float,
+                knots: list[float], events: list) -> Marched:
+    """The span's force in closed form from ``start`` to ``stop`` (its variable) or to the first terminal event, as
+    the quadrature's :class:`~.span_march.Marched`.
+
+    Parameters
+    ----------
+    primitive : Primitive
+        ``P`` of the span.
+    start, stop : float
+        The span's ends (its variable, the radius over ``scale``).
+    force : float
+        ``F_x`` (N) at the start.
+    G2 : float
+        ``2G*`` (Pa).
+    scale : float
+        The span's radius per unit of its variable (m).
+    knots : list of float
+        The knots inside the span, ordered from its start (readings of the events, breakpoints of the force).
+    events : list
+        The terminal event functions ``event(var, y)``, each with its ``direction``.
+
+    Returns
+    -------
+    Marched
+        The status (0 the end, 1 an event), the force as a :class:`ClosedForce`, each event's root (the first
+        terminal one) and the force where it ended.
+    """
+    parts = np.linspace(start, stop, EVENT_READINGS + 1)[1:-1].tolist()
+    ascending = stop > start
+    readings = sorted({*parts, *knots, stop}, reverse=not ascending)
+    whole = ClosedForce(primitive, start, force, G2, scale, [start, *knots, stop])
+    t_events: list[list[float]] = [[] for _ in events]
+    directions = [float(getattr(event, "direction", 0.0)) for event in events]
+    g, low = [event(start, None) for event in events], start
+    for var in readings:
+        g_new = [event(var, None) for event in events]
+        active = [index for index in range(len(events)) if _crossed(g[index], g_new[index], directions[index])]
+        if active:
+            index, root = _first_root(events, active, _UNREAD, low, var)  # (the events read the variable alone)
+            t_events[index].append(root)
+            inside = [knot for knot in knots if (start < knot < root if ascending else root < knot < start)]
+            ended = ClosedForce(primitive, start, force, G2, scale, [start, *inside, root])
+            return Marched(1, "", ended, t_events, ended.at(root))
+        g, low = g_new, var
+    return Marched(0, "", whole, t_events, whole.at(stop))
+
+
+def _UNREAD(var: float) -> None:
+    """The state an event is handed while its root is sought: none (it reads the span's variable alone)."""
+    return None

@@ -1,0 +1,111 @@
+"""The closed form of a moving span without a front (:mod:`mdr_events.models.continuum.closed_form`) against the
+quadrature of the same span's right-hand side (:mod:`~mdr_events.models.continuum.span_panels`): the primitive's
+derivative is the right-hand side, and whole runs by both routes log the same events and the same force."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.indenters import PowerLaw
+from mdr_events.models.continuum import evaluate, integrate, solve_path
+from mdr_events.models.continuum.closed_form import ClosedForce
+from mdr_events.models.continuum.span import SpanIntegrator
+
+PAPER = me.Parameters.paper()
+HERTZ = PAPER.replace(dgamma0=0.0, dgamma1=0.0)
+#: Both routes' F_x over its largest value: the quadrature holds each panel to rtol = 1e-10 of the force (measured
+#: 1e-16 to 6e-13 between the routes on these cases, the closed form exact to rounding): the solver's rtol.
+ROUTE_SHARE = 1e-10
+#: The events' times, relative: each root found to 4 eps of its variable (the radius), mapped onto the time through
+#: the branch (a slope up to ~1e3 near a contact's end), on functions that differ between the routes by rounding.
+EVENT_RTOL = 1e-10
+#: ``dP/da`` in closed form against the right-hand side, over the largest rate: the same terms summed in another
+#: order (``S₀ + S₁ a`` for ``a − n₊ − n₋``), a few ulp of the largest.
+RATE_SHARE = 1e-13
+#: The primitive's derivative (a central difference of step h = 1e-4 of the radius) against the right-hand side, over
+#: the largest rate: the difference's truncation, ``h² P'''/6``, some 1e-8 of it, and its rounding ``eps P/h``.
+DERIVATIVE_SHARE = 1e-6
+
+
+def _table():
+    radii = np.linspace(0.0, 4e-3, 41)
+    return me.TabulatedProfile(radii, radii**2 / (2 * PAPER.R))
+
+
+#: label -> (params, path, solve_path's keywords): growing spans that stick and shrinking ones in full slip (A, B),
+#: a table (its knots), power laws, a contact without adhesion under Coulomb's law (κ > 0), fretting
+CASES = {
+    "A 20°": lambda: (PAPER, me.Path.scenario_A(20.0, PAPER), {}),
+    "B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER), {}),
+    "table, A 20°": lambda: (PAPER, me.Path.scenario_A(20.0, PAPER, profile=_table()), {"profile": _table()}),
+    "cone, B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER, profile=PowerLaw.cone(0.05)),
+                            {"profile": PowerLaw.cone(0.05)}),
+    "n = 3, A 30°": lambda: (PAPER, me.Path.scenario_A(30.0, PAPER, profile=PowerLaw(2e5, 3.0)),
+                             {"profile": PowerLaw(2e5, 3.0)}),
+    "Hertz, Coulomb, A 20°": lambda: (HERTZ, me.Path.scenario_A(20.0, HERTZ),
+                                      {"friction": FrictionLaw("coulomb", mu=0.3)}),
+    "zigzag": lambda: (PAPER, me.Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4),
+                                       (2e-4, -1e-4)], PAPER.v), {}),
+}
+
+
+def _run(case, monkeypatch, closed_form, readings=None):
+    """The case's run with or without closed forms; ``readings`` (a list) gets, for each closed-form span as it ends
+    (before the transition changes the anchors it read), ``(rhs, rate, difference, force, one by one)`` at seven
+    points inside it: the right-hand side, ``2G* dP/da`` scaled to the variable, the central difference of the force
+    and the force read at once and point by point."""
+    params, path, options = CASES[case]()
+    with monkeypatch.context() as patch:
+        patch.setattr(SpanIntegrator, "closed_form", closed_form)
+        if readings is not None:
+            original = integrate._integrate
+
+            def spy(model, span, integrator, force):
+                outcome = original(model, span, integrator, force)
+                if isinstance(span.interpolant, ClosedForce):
+                    readings.append(_read(integrator, span.interpolant))
+                return outcome
+
+            patch.setattr(integrate, "_integrate", spy)
+        return solve_path(params, path, **options)
+
+
+def _read(integrator, interpolant):
+    """What :func:`_run` records of a closed-form span."""
+    primitive = integrator.primitive()
+    low, high = sorted((interpolant.ts[0], interpolant.ts[-1]))
+    var = np.linspace(low, high, 9)[1:-1]
+    rhs = np.array([integrator.rhs(v, None)[0] for v in var])
+    rate = np.array([integrator.G2 * integrator.scale * primitive.rate(v * integrator.scale) for v in var])
+    h = 1e-4 * (high - low)
+    difference = (interpolant(var + h)[0] - interpolant(var - h)[0]) / (2 * h)
+    return rhs, rate, difference, interpolant(var)[0], np.array([interpolant(v)[0] for v in var])
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_the_closed_form_and_the_quadrature_give_the_same_run(case, monkeypatch):
+    closed, quadrature = _run(case, monkeypatch, True), _run(case, monkeypatch, False)
+    assert [event.kind for event in closed.events] == [event.kind for event in quadrature.events]
+    np.testing.assert_allclose([event.time for event in closed.events], [event.time for event in quadrature.events],
+                               rtol=EVENT_RTOL, atol=0)
+    times = np.linspace(0.0, min(closed.end_time, quadrature.end_time), 2001)
+    force, reference = (evaluate(run, times)["tangential_force"] for run in (closed, quadrature))
+    np.testing.assert_allclose(force, reference, rtol=0, atol=ROUTE_SHARE * np.max(np.abs(reference)))
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_the_primitives_derivative_is_the_right_hand_side(case, monkeypatch):
+    """Every closed-form span of the run (at least one a case): ``2G* dP/da`` and the central difference of the force
+    are the integrator's right-hand side inside the span, and the force read at once is the force read point by
+    point, bit for bit."""
+    readings = []
+    _run(case, monkeypatch, True, readings)
+    assert readings
+    for rhs, rate, difference, together, alone in readings:
+        scale = max(np.max(np.abs(rhs)), 1e-300)
+        np.testing.assert_allclose(rate, rhs, rtol=0, atol=RATE_SHARE * scale)
+        np.testing.assert_allclose(difference, rhs, rtol=0, atol=DERIVATIVE_SHARE * scale)
+        np.testing.assert_array_equal(together, alone)
