@@ -204,15 +204,37 @@ def _probed(play: PlaySprings, time: float, a: float, state) -> float:
 
 
 def _bisect(play: PlaySprings, low: float, high: float, reached) -> float:
+    """The first time in ``(low, high]`` the share at a cap (:func:`_share`) is ``reached``, to
+    :data:`EVENT_HALVINGS` halvings: bisected on the share without the kink search (:func:`_guess`), then the
+    bracket found checked on the share itself; where it is not the share's own (a zone at a cap that only the
+    kinks' nodes see) bisected on the share. Where the share turns once in the bracket, and so the guess, the checked
+    bracket is the one bisection on the share visits (every time either visits lies outside it)."""
+    guess_low, guess_high = _halve(low, high, lambda time: reached(_guess(play, time)))
+    if reached(_share(play, guess_high)) and not reached(_share(play, guess_low)):
+        return guess_high
+    return _halve(low, high, lambda time: reached(_share(play, time)))[1]
+
+
+def _halve(low: float, high: float, reached) -> tuple[float, float]:
+    """The bracket of :data:`EVENT_HALVINGS` halvings of ``[low, high]`` (``reached`` false at its low end, true at
+    its high end)."""
     for _ in range(EVENT_HALVINGS):
         middle = 0.5 * (low + high)
         if middle in (low, high):
             break
-        if reached(_share(play, middle)):
+        if reached(middle):
             high = middle
         else:
             low = middle
-    return high
+    return low, high
+
+
+def _guess(play: PlaySprings, time: float) -> float:
+    """:func:`_share` on the quadrature's nodes without the kink search (:meth:`PlaySprings.state`)."""
+    a = play.radius(time)
+    if not a > 0:
+        return 0.0
+    return _probed(play, time, a, play.state(time, kinks=False))
 
 
 def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Event:

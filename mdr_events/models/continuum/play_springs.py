@@ -224,6 +224,9 @@ class PlaySprings:
         self._corner_t = np.asarray(self.path.corner_times, dtype=float)
         self._corner_x, self._corner_d = (np.asarray(self.path.waypoints[:, i], dtype=float) for i in (0, 1))
         self._shifts: dict[tuple, float] = {}
+        #: ``a(t)`` and ``x_c`` of the times and depths asked before (every evaluation asks them again)
+        self._radii: dict[float, float] = {}
+        self._compressed: dict[float, float] = {}
         #: a spring counts as compressed (its cap's Coulomb part on) beyond this ``d − g`` (m): at a crossing of
         #: ``d = g(ξ)`` the rounding of ``d − g`` would flip it from spring to spring
         self._pressed_round_off = PRESSED_ROUND_OFF * float(np.max(np.abs(self._corner_d)))
@@ -268,7 +271,7 @@ class PlaySprings:
         key = (time, radius)
         cached = self._shifts.get(key)
         if cached is None:
-            a = self.history.radii(np.array([time])) if radius is None else np.array([radius])
+            a = np.array([self.radius(time) if radius is None else radius])
             cached = self._shifts[key] = float(self.line.shift(a)[0])
         return cached
 
@@ -387,7 +390,10 @@ class PlaySprings:
         float
             ``a(t)`` (0 out of contact).
         """
-        return float(self.history.radii(np.array([t]))[0])
+        cached = self._radii.get(t)
+        if cached is None:
+            cached = self._radii[t] = float(self.history.radii(np.array([t]))[0])
+        return cached
 
     def compressed_radius(self, t: float) -> float:
         """``x_c`` at ``t``: the radius of the compressed springs, ``g(x_c) = d`` (m; 0 at ``d <= 0``).
@@ -402,15 +408,22 @@ class PlaySprings:
         float
             ``x_c``.
         """
-        return float(self.line.radius(np.array([self._d(t)]))[0])
+        depth = float(self._d(t))
+        cached = self._compressed.get(depth)
+        if cached is None:
+            cached = self._compressed[depth] = float(self.line.radius(np.array([depth]))[0])
+        return cached
 
-    def state(self, t: float) -> "SpringState":
+    def state(self, t: float, kinks: bool = True) -> "SpringState":
         """``F_x`` and the springs at a cap at ``t`` (:class:`SpringState`).
 
         Parameters
         ----------
         t : float
             The time (s, path clock).
+        kinks : bool, default True
+            Whether the quadrature's panels are split at the anchors' kinks (without: the panels of the history's
+            breaks alone, a cheap guess of which springs are at a cap, which the events' bisection verifies).
 
         Returns
         -------
@@ -420,7 +433,7 @@ class PlaySprings:
         a = self.radius(t)
         if not a > 0.0:
             return SpringState(0.0, 0.0, 0.0, 0.0, 0.0)
-        nodes, weights = self._nodes(t, a)
+        nodes, weights = self._nodes(t, a, kinks)
         anchor, label = self.anchors(nodes, t)
         w = self.line.weight(nodes) * weights
         at_cap = label < 0
@@ -429,10 +442,12 @@ class PlaySprings:
         return SpringState(force, float(np.sum(w[at_cap])), float(np.sum(weights[at_cap])),
                            float(np.sum(weights[at_cap & pressed])), float(np.sum(weights[pressed])))
 
-    def _nodes(self, t: float, a: float) -> tuple[np.ndarray, np.ndarray]:
+    def _nodes(self, t: float, a: float, kinks: bool = True) -> tuple[np.ndarray, np.ndarray]:
         """The quadrature's nodes and weights on ``[0, a]`` at ``t``: Gauss–Legendre on the panels split at the
-        history's breaks and the kinks."""
-        breaks = self._kinks(t, np.union1d(np.linspace(0.0, a, PANELS + 1), self.history.breaks(t)))
+        history's breaks and (``kinks``) the kinks."""
+        breaks = np.union1d(np.linspace(0.0, a, PANELS + 1), self.history.breaks(t))
+        if kinks:
+            breaks = self._kinks(t, breaks)
         lows, highs = breaks[:-1], breaks[1:]
         nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
         return nodes, (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
