@@ -188,7 +188,7 @@ def _share(play: PlaySprings, time: float) -> float:
 
 def _probed(play: PlaySprings, time: float, a: float, state) -> float:
     """The share at a cap of ``state`` with the centre and the edge probed (:func:`_share`)."""
-    coulomb_alone = not play.line.shift(np.array([a]))[0] > 0.0
+    coulomb_alone = not play.shift(time) > 0.0
     if coulomb_alone:
         edge = min(a, float(play.compressed_radius(time)))
         if not edge > 0.0:
@@ -243,7 +243,7 @@ def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Eve
     springs under Coulomb's law alone), or where no probe is at a cap on the quadrature's nodes
     (:meth:`~.play_springs.PlaySprings.cap_sides`: a zone narrower than the probes' spacing)."""
     a = play.radius(time)
-    coulomb_alone = not play.line.shift(np.array([a]))[0] > 0.0
+    coulomb_alone = not play.shift(time) > 0.0
     edge = min(a, float(play.compressed_radius(time))) if coulomb_alone else a
     points = edge * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)
     labels = play.anchors(points, time)[1]

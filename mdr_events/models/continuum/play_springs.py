@@ -28,8 +28,9 @@ split where the anchor's provenance (which clamp of its chain last moved it, and
 anchor has a kink (a slip front, an old front kept in memory; the provenance also tells whether the spring was
 compressed at that clamp: with adhesion its cap has a kink at ``x_c`` of that time); in between it is smooth. A kink
 is located by bisection on the provenance (:data:`KINK_HALVINGS`), looked for between neighbouring nodes and between
-the centre or the edge (:data:`EDGE_SHARE` inside) and the nearest node. The springs at a cap at ``t`` are those whose last clamp is ``t``'s
-own.
+the centre or the edge (:data:`EDGE_SHARE` inside) and the nearest node; not between two springs that lie on the
+same smooth edge of their windows at ``t`` to round-off (:data:`EDGE_ROUND_OFF`: their anchors are that edge whatever
+their provenance). The springs at a cap at ``t`` are those whose last clamp is ``t``'s own.
 """
 
 from __future__ import annotations
@@ -48,7 +49,7 @@ from .play_history import DepthHistory, SpanHistory
 
 __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
            "UPPER_CAP", "PANELS", "NODES", "EDGE_SHARE", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
-           "CONCAVITY_SAMPLES"]
+           "CONCAVITY_SAMPLES", "EDGE_ROUND_OFF"]
 
 #: Panels of ``[0, a]`` before the kinks are added.
 PANELS = 8
@@ -75,6 +76,12 @@ CONCAVITY_ROUND_OFF = 1e-12
 _GAUSS = np.polynomial.legendre.leggauss(NODES)
 #: ``d − g`` within this share of the path's largest depth counts as not compressed (:meth:`PlaySprings.anchors`).
 PRESSED_ROUND_OFF = 1e-12
+#: A spring's anchor within this share of the path's largest ``|x|`` and its cap of its window's edge at ``t`` lies on
+#: it to round-off: where neighbouring springs do, their provenances (set at ``t`` or before, resting on the edge)
+#: can differ by round-off with no kink between (a thick layer whose compressed zone reaches its cap at once, its
+#: ``ρ(ξ)`` constant to 7e-13: thousands of such pairs, 1e-16 m off the edge, along the re-contact path of
+#: tests/models/test_layer_coulomb.py).
+EDGE_ROUND_OFF = 1e-12
 #: Provenance codes: attached and never moved (plus the segment), a clamp's lower edge, its upper edge
 _ATTACHED, _LOWER, _UPPER = 0, 1, 2
 #: The provenance of a spring at the lower cap at the time asked (in tension, compressed), and at the upper one
@@ -143,9 +150,26 @@ def spring_line(params: Parameters, profile, friction: FrictionLaw, layer: Layer
         return out
 
     if layer.is_half_space:  # (the half-space's springs weigh 1 each)
-        return SpringLine(springs.profile, _unit_weights, lambda xi: springs.coulomb_ratios(xi, friction), shift,
-                          radius, params.G_star)
+        return SpringLine(_remembered(springs.profile), _unit_weights,
+                          _remembered(lambda xi: springs.coulomb_ratios(xi, friction)), shift, radius, params.G_star)
     return SpringLine(*_layer_springs(params, springs.indenter, friction, layer), shift, radius, params.G_star)
+
+
+def _remembered(function: Callable[[np.ndarray], np.ndarray]) -> Callable[[np.ndarray], np.ndarray]:
+    """``function`` of the springs' coordinates remembering its last argument and value (read-only): one evaluation
+    of the route asks the same springs' ``g``, ``k_t`` and ratios several times (the anchors, their attachment, the
+    force's weights)."""
+    last: list = [None, None]
+
+    def remembered(xi):
+        xi = np.asarray(xi, dtype=float)
+        if last[0] is None or last[0].shape != xi.shape or not np.array_equal(last[0], xi):
+            value = np.asarray(function(xi))
+            value.flags.writeable = False
+            last[0], last[1] = xi.copy(), value
+        return last[1]
+
+    return remembered
 
 
 def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: Layer):
@@ -158,17 +182,17 @@ def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: L
 
     E_star, G_star, nu, mu = params.E_star, params.G_star, params.nu, friction.coulomb_mu
     profile, normal = power_law_profile.__wrapped__, spring_stiffness_density.__wrapped__
-    tangential = tangential_spring_stiffness_density.__wrapped__
+    tangential = _remembered(lambda xi: tangential_spring_stiffness_density.__wrapped__(xi, G_star, nu, layer))
 
     def weight(xi):
-        return tangential(xi, G_star, nu, layer) / G_star
+        return tangential(xi) / G_star
 
     def ratio(xi):  # (coulomb_cap(x, 1, 0, μ, ...): μ (k/k_t)(1 − 0))
         if not mu > 0.0:
             return np.zeros(np.shape(xi))
-        return mu * (normal(xi, E_star, nu, layer) / tangential(xi, G_star, nu, layer)) * (1.0 - 0.0)
+        return mu * (normal(xi, E_star, nu, layer) / tangential(xi)) * (1.0 - 0.0)
 
-    return (lambda xi: profile(xi, indenter, nu, layer)), weight, ratio
+    return _remembered(lambda xi: profile(xi, indenter, nu, layer)), _remembered(weight), _remembered(ratio)
 
 
 def _unit_weights(xi: np.ndarray) -> np.ndarray:
@@ -231,6 +255,8 @@ class PlaySprings:
         #: ``d = g(ξ)`` the rounding of ``d − g`` would flip it from spring to spring
         self._pressed_round_off = PRESSED_ROUND_OFF * float(np.max(np.abs(self._corner_d)))
         self.chain = self._chain()
+        #: the path's largest ``|x|`` (m): the scale of the anchors' round-off
+        self._x_scale = float(np.max(np.abs(self._corner_x)))
 
     # -- kinematics ---------------------------------------------------------------------------------------------
     def _x(self, t):
@@ -350,6 +376,10 @@ class PlaySprings:
             A spring that matches no attachment of the radius's history up to ``t`` (a spring out of contact, or a
             bug: its anchor would be clamped from the path's start).
         """
+        return self._anchors(xi, t)[:2]
+
+    def _anchors(self, xi, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`anchors` and which edge of its window at ``t`` each spring lay on before it (:func:`_on_edge`)."""
         xi = np.asarray(xi, dtype=float)
         g, ratio = self.line.profile(xi), self.line.ratio(xi)
         start, code = self.history.attach(xi, t)
@@ -373,9 +403,11 @@ class PlaySprings:
                 anchor, label = _clamp(anchor, label, x[:, k] - cap[:, k], x[:, k] + cap[:, k], live[:, k],
                                        codes[:, k])
         x_t, cap = self._x(float(t)), self._shift_at(float(t)) + ratio * np.maximum(self._d(float(t)) - g, 0.0)
-        anchor, label = _clamp(anchor, label, x_t - cap, x_t + cap, np.ones(xi.shape, bool),
-                               np.where(self._d(t) - g > self._pressed_round_off, -6, -3))
-        return anchor, label
+        pressed = self._d(t) - g > self._pressed_round_off
+        before = anchor
+        anchor, label = _clamp(anchor, label, x_t - cap, x_t + cap, np.ones(xi.shape, bool), np.where(pressed, -6, -3))
+        return anchor, label, _on_edge(before, x_t - cap, x_t + cap, EDGE_ROUND_OFF * (self._x_scale + np.max(cap, initial=0.0)),
+                                       pressed)
 
     def radius(self, t: float) -> float:
         """The contact radius at ``t`` (m).
@@ -395,6 +427,21 @@ class PlaySprings:
             cached = self._radii[t] = float(self.history.radii(np.array([t]))[0])
         return cached
 
+    def shift(self, t: float) -> float:
+        """``ū(a(t))``: the cap of ``τ0``'s part at ``t`` (m; 0 without it or out of contact).
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock).
+
+        Returns
+        -------
+        float
+            The cap's part shared by every spring.
+        """
+        return self._shift_at(float(t))
+
     def compressed_radius(self, t: float) -> float:
         """``x_c`` at ``t``: the radius of the compressed springs, ``g(x_c) = d`` (m; 0 at ``d <= 0``).
 
@@ -408,6 +455,8 @@ class PlaySprings:
         float
             ``x_c``.
         """
+        if not self.history.adhesive:  # (every spring in contact compressed: x_c = a = g⁻¹(d), the same call)
+            return self.radius(t)
         depth = float(self._d(t))
         cached = self._compressed.get(depth)
         if cached is None:
@@ -433,8 +482,7 @@ class PlaySprings:
         a = self.radius(t)
         if not a > 0.0:
             return SpringState(0.0, 0.0, 0.0, 0.0, 0.0)
-        nodes, weights = self._nodes(t, a, kinks)
-        anchor, label = self.anchors(nodes, t)
+        nodes, weights, anchor, label = self._quadrature(t, a, kinks)
         w = self.line.weight(nodes) * weights
         at_cap = label < 0
         pressed = self._d(t) - self.line.profile(nodes) > self._pressed_round_off
@@ -442,15 +490,17 @@ class PlaySprings:
         return SpringState(force, float(np.sum(w[at_cap])), float(np.sum(weights[at_cap])),
                            float(np.sum(weights[at_cap & pressed])), float(np.sum(weights[pressed])))
 
-    def _nodes(self, t: float, a: float, kinks: bool = True) -> tuple[np.ndarray, np.ndarray]:
-        """The quadrature's nodes and weights on ``[0, a]`` at ``t``: Gauss–Legendre on the panels split at the
-        history's breaks and (``kinks``) the kinks."""
+    def _quadrature(self, t: float, a: float, kinks: bool = True) -> tuple[np.ndarray, ...]:
+        """The quadrature's nodes and weights on ``[0, a]`` at ``t`` (Gauss–Legendre on the panels split at the
+        history's breaks and, with ``kinks``, the kinks: :meth:`_kinks`), and the anchors and their provenance
+        there."""
         breaks = np.union1d(np.linspace(0.0, a, PANELS + 1), self.history.breaks(t))
         if kinks:
-            breaks = self._kinks(t, breaks)
-        lows, highs = breaks[:-1], breaks[1:]
-        nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
-        return nodes, (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
+            breaks, anchor, label = self._kinks(t, breaks)
+        nodes, weights = _gauss(breaks)
+        if not kinks:
+            anchor, label = self.anchors(nodes, t)
+        return nodes, weights, anchor, label
 
     def cap_sides(self, t: float, edge: float) -> tuple[float, float]:
         """The lengths (m) of the springs within ``edge`` at the lower and the upper cap at ``t``, on the quadrature's
@@ -471,29 +521,30 @@ class PlaySprings:
         a = self.radius(t)
         if not a > 0.0:
             return 0.0, 0.0
-        nodes, weights = self._nodes(t, a)
-        labels = self.anchors(nodes, t)[1]
+        nodes, weights, _, labels = self._quadrature(t, a)
         inside = nodes < edge
         return (float(np.sum(weights[inside & np.isin(labels, LOWER_CAP)])),
                 float(np.sum(weights[inside & np.isin(labels, UPPER_CAP)])))
 
-    def _kinks(self, t: float, breaks: np.ndarray) -> np.ndarray:
+    def _kinks(self, t: float, breaks: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances differ (within a
         panel, across a panel's end, or in the first round between the centre or the edge, :data:`EDGE_SHARE` inside it,
         and the nearest node) and no kink found before lies between them, the change located by bisection;
-        repeated until every such pair holds a kink."""
+        repeated until every such pair holds a kink. Also the anchors and provenance at the nodes of the last
+        breaks (:func:`_gauss`)."""
         kinks = np.empty(0)
         ends = breaks[-1] * np.array([EDGE_SHARE, 1.0 - EDGE_SHARE])
         for round_ in range(KINK_ROUNDS + 1):
-            lows, highs = breaks[:-1], breaks[1:]
-            inner = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+            inner = _gauss(breaks)[0]
             if round_ == 0:  # (a zone between the centre or the edge and the nearest node: the stick zone left at the
                 inner = np.concatenate([ends[:1], inner, ends[1:]])  # edge before full slip; once: its kink is a break)
-            label = self.anchors(inner, t)[1]
-            change = np.flatnonzero(label[1:] != label[:-1])
+            anchor, label, edges = self._anchors(inner, t)  # (two springs on the same smooth edge of their windows at t to round-off hold the
+            change = np.flatnonzero((label[1:] != label[:-1])  # same anchor whatever their provenance: no kink between)
+                                    & ((edges[1:] == 0) | (edges[1:] != edges[:-1])))
             fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]
             if not fresh.size:
-                return breaks
+                nodes = slice(1, -1) if round_ == 0 else slice(None)
+                return breaks, anchor[nodes], label[nodes]
             found = self._bisect(t, inner[fresh], inner[fresh + 1], label[fresh])
             kinks = np.unique(np.concatenate([kinks, found]))
             breaks = np.unique(np.concatenate([breaks, found]))
@@ -505,6 +556,8 @@ class PlaySprings:
         until :data:`KINK_HALVINGS` halvings' worth."""
         share = np.arange(1, KINK_CUTS) / KINK_CUTS
         for _ in range(-(-KINK_HALVINGS // int(np.log2(KINK_CUTS)))):
+            if np.all(np.nextafter(low, high) >= high):  # (no double between the ends: every cut is one of them, and
+                break  # the bracket, its provenances read again, stays)
             points = low[:, None] + (high - low)[:, None] * share[None, :]
             same = (self.anchors(points.ravel(), t)[1].reshape(points.shape) == low_label[:, None])
             first = np.argmin(np.concatenate([same, np.zeros((len(low), 1), bool)], axis=1), axis=1)
@@ -527,6 +580,21 @@ class PlaySprings:
             The forces.
         """
         return np.array([self.state(float(t))[0] for t in np.atleast_1d(times)])
+
+
+def _on_edge(anchor, lower, upper, round_off: float, pressed) -> np.ndarray:
+    """Which edge of its window at ``t`` each spring's anchor before the clamp at ``t`` lies on to ``round_off``: 0
+    none, 1 or 2 the lower or upper with the spring in tension, 3 or 4 compressed (the cap's formula has a kink in
+    ``ξ`` at ``x_c``; along either edge on either side of it the anchor is smooth)."""
+    side = np.where(np.abs(anchor - lower) <= round_off, 1, np.where(np.abs(upper - anchor) <= round_off, 2, 0))
+    return np.where(side > 0, side + 2 * pressed, 0)
+
+
+def _gauss(breaks: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The nodes and weights of Gauss–Legendre's rule on each panel between ``breaks``."""
+    lows, highs = breaks[:-1], breaks[1:]
+    nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+    return nodes, (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
 
 
 def _clamp(anchor, label, lower, upper, live, code):
