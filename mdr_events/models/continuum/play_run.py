@@ -26,7 +26,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.kernel_model import KernelModel
 
 from .extrema import extremum_names, solution_extrema
-from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, spring_line
+from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, SpringState, spring_line
 from .solve import run_continuum
 from .state import Event, EventKind
 from .tolerances import Tolerances
@@ -124,13 +124,13 @@ def _samples(play: PlaySprings, times: np.ndarray, radius: np.ndarray) -> tuple[
     """``F_x``, the sliding fraction (length at a cap over ``a``) and the share of :func:`_share` at each time in
     contact (0, nan and 0 elsewhere)."""
     force, sliding, shares = np.zeros(times.shape), np.full(times.shape, np.nan), np.zeros(times.shape)
+    play.remember_radii(times[radius > 0])
     for k, time in enumerate(times):
         if radius[k] > 0:
             a = play.radius(float(time))
             if a > 0:
-                state = play.state(float(time))
+                state, shares[k] = _probed(play, float(time), a)
                 force[k], sliding[k] = state.force, min(state.length / a, 1.0)
-                shares[k] = _probed(play, float(time), a, state)
     return force, sliding, shares
 
 
@@ -175,32 +175,38 @@ def _pieces(events) -> list[tuple[float, float, bool]]:
     return out
 
 
-def _share(play: PlaySprings, time: float) -> float:
+def _share(play: PlaySprings, time: float, kinks: bool = True) -> float:
     """The share of the contact's length at a cap, or the least positive float where only the centre spring or the
     edge is (a zone opening at ``ξ = 0`` between the quadrature's nodes: the slip onset of scenario A). Under
     Coulomb's law alone the compressed zone's (its springs in tension hold no shift: they slide from the start, and
-    the slip events are the compressed zone's, as the spans log them)."""
+    the slip events are the compressed zone's, as the spans log them). Without ``kinks`` the quadrature's panels are
+    not split at the anchors' kinks (:meth:`~.play_springs.PlaySprings.state`)."""
     a = play.radius(time)
     if not a > 0:
         return 0.0
-    return _probed(play, time, a, play.state(time))
+    return _probed(play, time, a, kinks)[1]
 
 
-def _probed(play: PlaySprings, time: float, a: float, state) -> float:
-    """The share at a cap of ``state`` with the centre and the edge probed (:func:`_share`)."""
+def _probed(play: PlaySprings, time: float, a: float, kinks: bool = True) -> tuple[SpringState, float]:
+    """The springs' state at ``time`` and their share at a cap with the centre and the edge probed (:func:`_share`):
+    the centre and the edge read with the quadrature's nodes, the other probes where none is at a cap."""
     coulomb_alone = not play.shift(time) > 0.0
+    edge = min(a, float(play.compressed_radius(time))) if coulomb_alone else a
+    ends = edge * np.array([0.0, 1.0 - PROBE_SHARE]) if edge > 0.0 else np.empty(0)
+    state, at_ends = play.probed_state(time, ends, kinks)
     if coulomb_alone:
-        edge = min(a, float(play.compressed_radius(time)))
         if not edge > 0.0:
-            return 0.0
+            return state, 0.0
         share = state.compressed_at_cap / state.compressed if state.compressed > 0.0 else 0.0
     else:
-        edge, share = a, state.length / a
-    points = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS) if share == 0.0 else np.array([0.0, 1.0 - PROBE_SHARE])
-    at_cap = play.anchors(edge * points, time)[1] < 0
+        share = state.length / a
+    if share == 0.0:
+        at_cap = play.anchors(edge * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS), time)[1] < 0
+    else:
+        at_cap = at_ends < 0
     if share == 0.0 and np.any(at_cap):
-        return SMALLEST
-    return share if np.all(at_cap[[0, -1]]) else min(share, 1.0 - 2.0 * FULL_SHARE)
+        return state, SMALLEST
+    return state, share if np.all(at_cap[[0, -1]]) else min(share, 1.0 - 2.0 * FULL_SHARE)
 
 
 def _bisect(play: PlaySprings, low: float, high: float, reached) -> float:
@@ -231,10 +237,7 @@ def _halve(low: float, high: float, reached) -> tuple[float, float]:
 
 def _guess(play: PlaySprings, time: float) -> float:
     """:func:`_share` on the quadrature's nodes without the kink search (:meth:`PlaySprings.state`)."""
-    a = play.radius(time)
-    if not a > 0:
-        return 0.0
-    return _probed(play, time, a, play.state(time, kinks=False))
+    return _share(play, time, kinks=False)
 
 
 def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Event:

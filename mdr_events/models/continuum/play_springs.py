@@ -427,6 +427,19 @@ class PlaySprings:
             cached = self._radii[t] = float(self.history.radii(np.array([t]))[0])
         return cached
 
+    def remember_radii(self, times) -> None:
+        """Read ``a(t)`` at many times in one call of the history (the layer's branch inverted for all of them at
+        once, to its ``RADII_RTOL``) and remember them for :meth:`radius`.
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s, path clock): the run's output times.
+        """
+        times = np.asarray([time for time in np.ravel(times) if float(time) not in self._radii], dtype=float)
+        if times.size:
+            self._radii.update(zip(times.tolist(), self.history.radii(times).tolist()))
+
     def shift(self, t: float) -> float:
         """``ū(a(t))``: the cap of ``τ0``'s part at ``t`` (m; 0 without it or out of contact).
 
@@ -479,28 +492,48 @@ class PlaySprings:
         SpringState
             The force, the sliding springs' measure and length, the compressed springs' length at a cap and in all.
         """
+        return self.probed_state(t, np.empty(0), kinks)[0]
+
+    def probed_state(self, t: float, probes: np.ndarray, kinks: bool = True) -> tuple["SpringState", np.ndarray]:
+        """:meth:`state` and the provenance of the springs at ``probes`` (:meth:`anchors`), read with the quadrature's
+        first nodes (one evaluation of the anchors).
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock).
+        probes : numpy.ndarray
+            The probed springs' coordinates (m), within the contact at ``t``.
+        kinks : bool, default True
+            As :meth:`state`.
+
+        Returns
+        -------
+        tuple
+            The :class:`SpringState` and the probes' provenance codes (negative at a cap).
+        """
         a = self.radius(t)
         if not a > 0.0:
-            return SpringState(0.0, 0.0, 0.0, 0.0, 0.0)
-        nodes, weights, anchor, label = self._quadrature(t, a, kinks)
+            return SpringState(0.0, 0.0, 0.0, 0.0, 0.0), np.zeros(np.shape(probes), dtype=np.int64)  # (none at a cap)
+        nodes, weights, anchor, label, probed = self._quadrature(t, a, kinks, probes)
         w = self.line.weight(nodes) * weights
         at_cap = label < 0
         pressed = self._d(t) - self.line.profile(nodes) > self._pressed_round_off
         force = 2.0 * self.line.G_star * float(np.sum(w * (self._x(t) - anchor)))
         return SpringState(force, float(np.sum(w[at_cap])), float(np.sum(weights[at_cap])),
-                           float(np.sum(weights[at_cap & pressed])), float(np.sum(weights[pressed])))
+                           float(np.sum(weights[at_cap & pressed])), float(np.sum(weights[pressed]))), probed
 
-    def _quadrature(self, t: float, a: float, kinks: bool = True) -> tuple[np.ndarray, ...]:
+    def _quadrature(self, t: float, a: float, kinks: bool = True, probes=np.empty(0)) -> tuple[np.ndarray, ...]:
         """The quadrature's nodes and weights on ``[0, a]`` at ``t`` (Gauss–Legendre on the panels split at the
-        history's breaks and, with ``kinks``, the kinks: :meth:`_kinks`), and the anchors and their provenance
-        there."""
+        history's breaks and, with ``kinks``, the kinks: :meth:`_kinks`), the anchors and their provenance there, and
+        the provenance at ``probes``."""
         breaks = np.union1d(np.linspace(0.0, a, PANELS + 1), self.history.breaks(t))
         if kinks:
-            breaks, anchor, label = self._kinks(t, breaks)
+            breaks, anchor, label, probed = self._kinks(t, breaks, probes)
+            return *_gauss(breaks), anchor, label, probed
         nodes, weights = _gauss(breaks)
-        if not kinks:
-            anchor, label = self.anchors(nodes, t)
-        return nodes, weights, anchor, label
+        anchor, label = self.anchors(np.concatenate([nodes, probes]), t)
+        return nodes, weights, anchor[:nodes.size], label[:nodes.size], label[nodes.size:]
 
     def cap_sides(self, t: float, edge: float) -> tuple[float, float]:
         """The lengths (m) of the springs within ``edge`` at the lower and the upper cap at ``t``, on the quadrature's
@@ -521,30 +554,34 @@ class PlaySprings:
         a = self.radius(t)
         if not a > 0.0:
             return 0.0, 0.0
-        nodes, weights, _, labels = self._quadrature(t, a)
+        nodes, weights, _, labels, _ = self._quadrature(t, a)
         inside = nodes < edge
         return (float(np.sum(weights[inside & np.isin(labels, LOWER_CAP)])),
                 float(np.sum(weights[inside & np.isin(labels, UPPER_CAP)])))
 
-    def _kinks(self, t: float, breaks: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def _kinks(self, t: float, breaks: np.ndarray, probes: np.ndarray) -> tuple[np.ndarray, ...]:
         """``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances differ (within a
         panel, across a panel's end, or in the first round between the centre or the edge, :data:`EDGE_SHARE` inside it,
         and the nearest node) and no kink found before lies between them, the change located by bisection;
         repeated until every such pair holds a kink. Also the anchors and provenance at the nodes of the last
-        breaks (:func:`_gauss`)."""
+        breaks (:func:`_gauss`), and the provenance at ``probes`` (read in the first round)."""
         kinks = np.empty(0)
         ends = breaks[-1] * np.array([EDGE_SHARE, 1.0 - EDGE_SHARE])
         for round_ in range(KINK_ROUNDS + 1):
             inner = _gauss(breaks)[0]
             if round_ == 0:  # (a zone between the centre or the edge and the nearest node: the stick zone left at the
                 inner = np.concatenate([ends[:1], inner, ends[1:]])  # edge before full slip; once: its kink is a break)
-            anchor, label, edges = self._anchors(inner, t)  # (two springs on the same smooth edge of their windows at t to round-off hold the
+                anchor, label, edges = self._anchors(np.concatenate([inner, probes]), t)
+                probed, anchor, label, edges = label[inner.size:], anchor[:inner.size], label[:inner.size], \
+                    edges[:inner.size]
+            else:
+                anchor, label, edges = self._anchors(inner, t)  # (two springs on the same smooth edge of their windows at t to round-off hold the
             change = np.flatnonzero((label[1:] != label[:-1])  # same anchor whatever their provenance: no kink between)
                                     & ((edges[1:] == 0) | (edges[1:] != edges[:-1])))
             fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]
             if not fresh.size:
                 nodes = slice(1, -1) if round_ == 0 else slice(None)
-                return breaks, anchor[nodes], label[nodes]
+                return breaks, anchor[nodes], label[nodes], probed
             found = self._bisect(t, inner[fresh], inner[fresh + 1], label[fresh])
             kinks = np.unique(np.concatenate([kinks, found]))
             breaks = np.unique(np.concatenate([breaks, found]))
