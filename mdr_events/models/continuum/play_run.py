@@ -18,7 +18,7 @@ from __future__ import annotations
 
 
 import numpy as np
-from scipy.optimize import minimize_scalar
+from scipy.optimize import brentq, minimize_scalar
 
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.layer import LayerBase
@@ -46,6 +46,9 @@ END_PROBE = 1e-9
 PROBE_POINTS = 1025
 #: The share of a contact whose centre alone is at a cap (:func:`_share`).
 SMALLEST = 5e-324
+#: The events' bisection evaluates its guess only within this many units in the last place of the root of the springs'
+#: distance from their caps (:func:`_root`): Brent's method finds the root to about five of them.
+ROOT_ULPS = 64
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
 EXTREMUM_XTOL = 1e-12
 #: The springs' events the spans' frictionless run logs and this route replaces.
@@ -152,7 +155,8 @@ def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, st
                 continue
             k = int(hit[0])
             low = probes[k - 1] if k > 0 else begin
-            out.append(_event(play, _bisect(play, low + start, probes[k] + start, reached), start, kind))
+            bracket = (low + start, probes[k] + start)
+            out.append(_event(play, _bisect(play, *bracket, reached, kind is EventKind.SLIP_ONSET), start, kind))
     return out
 
 
@@ -209,16 +213,60 @@ def _probed(play: PlaySprings, time: float, a: float, kinks: bool = True) -> tup
     return state, share if np.all(at_cap[[0, -1]]) else min(share, 1.0 - 2.0 * FULL_SHARE)
 
 
-def _bisect(play: PlaySprings, low: float, high: float, reached) -> float:
-    """The first time in ``(low, high]`` the share at a cap (:func:`_share`) is ``reached``, to
-    :data:`EVENT_HALVINGS` halvings: bisected on the share without the kink search (:func:`_guess`), then the
-    bracket found checked on the share itself; where it is not the share's own (a zone at a cap that only the
-    kinks' nodes see) bisected on the share. Where the share turns once in the bracket, and so the guess, the checked
-    bracket is the one bisection on the share visits (every time either visits lies outside it)."""
-    guess_low, guess_high = _halve(low, high, lambda time: reached(_guess(play, time)))
-    if reached(_share(play, guess_high)) and not reached(_share(play, guess_low)):
-        return guess_high
+def _bisect(play: PlaySprings, low: float, high: float, reached, onset: bool) -> float:
+    """The first time in ``(low, high]`` the share at a cap (:func:`_share`) is ``reached`` (``onset``: the slip onset's
+    test, else full slip's), to :data:`EVENT_HALVINGS` halvings. Bisected on the share without the kink search
+    (:func:`_guess`), which is evaluated only within :data:`ROOT_ULPS` of the root of the springs' distance from their
+    caps (:func:`_root`; the other halvings decided by it), then the bracket found checked on the share itself; where
+    it is not the share's own, bisected on the guess at every halving and checked again, else on the share. Where the
+    share turns once in the bracket, the checked bracket is the one bisection on the share visits (every time either
+    visits lies outside it)."""
+    root = _root(play, low, high, onset)
+    if root is not None:
+        width = ROOT_ULPS * np.spacing(root)
+        bracket = _halve(low, high, lambda time: time > root + width
+                         or (time >= root - width and reached(_guess(play, time))))
+        if _checked(play, bracket, reached):
+            return bracket[1]
+    bracket = _halve(low, high, lambda time: reached(_guess(play, time)))
+    if _checked(play, bracket, reached):
+        return bracket[1]
     return _halve(low, high, lambda time: reached(_share(play, time)))[1]
+
+
+def _checked(play: PlaySprings, bracket: tuple[float, float], reached) -> bool:
+    """Whether the share is ``reached`` at the bracket's high end and not at its low end."""
+    return reached(_share(play, bracket[1])) and not reached(_share(play, bracket[0]))
+
+
+def _root(play: PlaySprings, low: float, high: float, onset: bool) -> float | None:
+    """Where, between ``low`` and ``high``, the first spring :func:`_guess` reads reaches its cap (``onset``) or the
+    last one does, by Brent's method on the largest or least distance outside the windows
+    (:meth:`~.play_springs.PlaySprings.outside`): ``None`` where it is not positive at ``high``; where it is not
+    negative at ``low``, from :data:`ROOT_ULPS` after it on, and where it is not negative there either, the slip onset
+    at ``low``."""
+    def distance(time: float) -> float:
+        a = play.radius(time)
+        coulomb_alone = not play.shift(time) > 0.0
+        edge = min(a, float(play.compressed_radius(time))) if coulomb_alone else a
+        if not edge > 0.0:
+            return np.nan
+        probes = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS) if onset else np.array([0.0, 1.0 - PROBE_SHARE])
+        nodes, pressed, at_probes = play.outside(time, edge * probes)
+        values = np.concatenate([nodes[pressed] if coulomb_alone else nodes, at_probes])
+        return float(np.max(values) if onset else np.min(values))
+
+    if not distance(high) > 0.0:
+        return None
+    if not distance(low) < 0.0:  # (out of contact at ``low``, or springs at their caps at a reversal's instant, before
+        start = low + ROOT_ULPS * np.spacing(low)  # the re-stick: looked for from just after it)
+        if not distance(start) < 0.0:  # (the slip onset as the piece starts, Coulomb's springs at the edge sliding at
+            return low if onset else None  # once; checked after)
+        low = start
+    try:
+        return float(brentq(distance, low, high, xtol=np.spacing(high), rtol=4.0 * np.finfo(float).eps))
+    except (ValueError, RuntimeError):  # (nan inside: out of contact, or no convergence; the halvings alone then)
+        return None
 
 
 def _halve(low: float, high: float, reached) -> tuple[float, float]:

@@ -378,8 +378,9 @@ class PlaySprings:
         """
         return self._anchors(xi, t)[:2]
 
-    def _anchors(self, xi, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """:meth:`anchors` and which edge of its window at ``t`` each spring lay on before it (:func:`_on_edge`)."""
+    def _anchors(self, xi, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`anchors`, which edge of its window at ``t`` each spring lay on before it (:func:`_on_edge`) and how
+        far outside the window it lay (m; :meth:`outside`)."""
         xi = np.asarray(xi, dtype=float)
         g, ratio = self.line.profile(xi), self.line.ratio(xi)
         start, code = self.history.attach(xi, t)
@@ -406,8 +407,9 @@ class PlaySprings:
         pressed = self._d(t) - g > self._pressed_round_off
         before = anchor
         anchor, label = _clamp(anchor, label, x_t - cap, x_t + cap, np.ones(xi.shape, bool), np.where(pressed, -6, -3))
-        return anchor, label, _on_edge(before, x_t - cap, x_t + cap, EDGE_ROUND_OFF * (self._x_scale + np.max(cap, initial=0.0)),
-                                       pressed)
+        lower, upper = x_t - cap, x_t + cap
+        edges = _on_edge(before, lower, upper, EDGE_ROUND_OFF * (self._x_scale + np.max(cap, initial=0.0)), pressed)
+        return anchor, label, edges, np.maximum(lower - before, before - upper)
 
     def radius(self, t: float) -> float:
         """The contact radius at ``t`` (m).
@@ -523,6 +525,28 @@ class PlaySprings:
         return SpringState(force, float(np.sum(w[at_cap])), float(np.sum(weights[at_cap])),
                            float(np.sum(weights[at_cap & pressed])), float(np.sum(weights[pressed]))), probed
 
+    def outside(self, t: float, probes: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """How far each spring's anchor lies outside its window at ``t`` before the clamp at ``t`` (m: positive where it
+        is at a cap, :meth:`anchors`), on the quadrature's nodes without the kink search and at ``probes``: continuous
+        in time, where the springs reach their caps it crosses 0 (the events' bisection looks for that root first).
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock), in contact.
+        probes : numpy.ndarray
+            More springs' coordinates (m), within the contact at ``t``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            The distances at the nodes, whether the nodes' springs are compressed, the distances at the probes.
+        """
+        nodes = _gauss(np.union1d(np.linspace(0.0, self.radius(t), PANELS + 1), self.history.breaks(t)))[0]
+        distance = self._anchors(np.concatenate([nodes, probes]), t)[3]
+        pressed = self._d(t) - self.line.profile(nodes) > self._pressed_round_off
+        return distance[:nodes.size], pressed, distance[nodes.size:]
+
     def _quadrature(self, t: float, a: float, kinks: bool = True, probes=np.empty(0)) -> tuple[np.ndarray, ...]:
         """The quadrature's nodes and weights on ``[0, a]`` at ``t`` (Gauss–Legendre on the panels split at the
         history's breaks and, with ``kinks``, the kinks: :meth:`_kinks`), the anchors and their provenance there, and
@@ -571,11 +595,11 @@ class PlaySprings:
             inner = _gauss(breaks)[0]
             if round_ == 0:  # (a zone between the centre or the edge and the nearest node: the stick zone left at the
                 inner = np.concatenate([ends[:1], inner, ends[1:]])  # edge before full slip; once: its kink is a break)
-                anchor, label, edges = self._anchors(np.concatenate([inner, probes]), t)
+                anchor, label, edges, _ = self._anchors(np.concatenate([inner, probes]), t)
                 probed, anchor, label, edges = label[inner.size:], anchor[:inner.size], label[:inner.size], \
                     edges[:inner.size]
             else:
-                anchor, label, edges = self._anchors(inner, t)  # (two springs on the same smooth edge of their windows at t to round-off hold the
+                anchor, label, edges, _ = self._anchors(inner, t)  # (two springs on the same smooth edge of their windows at t to round-off hold the
             change = np.flatnonzero((label[1:] != label[:-1])  # same anchor whatever their provenance: no kink between)
                                     & ((edges[1:] == 0) | (edges[1:] != edges[:-1])))
             fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]
