@@ -218,25 +218,22 @@ def _bisect(play: PlaySprings, low: float, high: float, reached, onset: bool) ->
     test, else full slip's), to :data:`EVENT_HALVINGS` halvings. Bisected on the share without the kink search
     (:func:`_guess`), which is evaluated only within :data:`ROOT_ULPS` of the root of the springs' distance from their
     caps (:func:`_root`; the other halvings decided by it), then the bracket found checked on the share itself; where
-    it is not the share's own, bisected on the guess at every halving and checked again, else on the share. Where the
-    share turns once in the bracket, the checked bracket is the one bisection on the share visits (every time either
-    visits lies outside it)."""
+    it is not the share's own, bisected on the guess at every halving and checked again, else on the share (the
+    halvings on the far side of a bracket's end it was not reached at, or was, decided by it). Where the share turns
+    once in the bracket, the checked bracket is the one bisection on the share visits (every time either visits lies
+    outside it)."""
+    known = [-np.inf, np.inf]  # (the share not reached up to the first, reached from the second on)
     root = _root(play, low, high, onset)
-    if root is not None:
-        width = ROOT_ULPS * np.spacing(root)
-        bracket = _halve(low, high, lambda time: time > root + width
-                         or (time >= root - width and reached(_guess(play, time))))
-        if _checked(play, bracket, reached):
+    guesses = [] if root is None else [lambda time: time > root + ROOT_ULPS * np.spacing(root)
+                                       or (time >= root - ROOT_ULPS * np.spacing(root) and reached(_guess(play, time)))]
+    for guess in guesses + [lambda time: reached(_guess(play, time))]:
+        bracket = _halve(low, high, guess)
+        below, above = (reached(_share(play, end)) for end in bracket)
+        if above and not below:
             return bracket[1]
-    bracket = _halve(low, high, lambda time: reached(_guess(play, time)))
-    if _checked(play, bracket, reached):
-        return bracket[1]
-    return _halve(low, high, lambda time: reached(_share(play, time)))[1]
-
-
-def _checked(play: PlaySprings, bracket: tuple[float, float], reached) -> bool:
-    """Whether the share is ``reached`` at the bracket's high end and not at its low end."""
-    return reached(_share(play, bracket[1])) and not reached(_share(play, bracket[0]))
+        known[0] = known[0] if above else max(known[0], bracket[1])
+        known[1] = min(known[1], bracket[0]) if below else known[1]
+    return _halve(low, high, lambda time: time >= known[1] or (time > known[0] and reached(_share(play, time))))[1]
 
 
 def _root(play: PlaySprings, low: float, high: float, onset: bool) -> float | None:

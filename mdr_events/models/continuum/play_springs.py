@@ -105,6 +105,8 @@ class SpringLine(NamedTuple):
     radius: Callable[[np.ndarray], np.ndarray]
     #: ``G*`` (Pa)
     G_star: float
+    #: whether ``shift`` is not 0 (a law with ``τ0``'s part): without it no clamp reads the radius
+    shifts: bool = True
 
 
 def spring_line(params: Parameters, profile, friction: FrictionLaw, layer: Layer = HALF_SPACE) -> SpringLine:
@@ -151,8 +153,10 @@ def spring_line(params: Parameters, profile, friction: FrictionLaw, layer: Layer
 
     if layer.is_half_space:  # (the half-space's springs weigh 1 each)
         return SpringLine(_remembered(springs.profile), _unit_weights,
-                          _remembered(lambda xi: springs.coulomb_ratios(xi, friction)), shift, radius, params.G_star)
-    return SpringLine(*_layer_springs(params, springs.indenter, friction, layer), shift, radius, params.G_star)
+                          _remembered(lambda xi: springs.coulomb_ratios(xi, friction)), shift, radius, params.G_star,
+                          K > 0.0)
+    return SpringLine(*_layer_springs(params, springs.indenter, friction, layer), shift, radius, params.G_star,
+                      K > 0.0)
 
 
 def _remembered(function: Callable[[np.ndarray], np.ndarray]) -> Callable[[np.ndarray], np.ndarray]:
@@ -331,16 +335,26 @@ class PlaySprings:
             crossings = self._crossings(g, t)
             own += crossings
             crossing += [True] * len(crossings)
-        for column in own:
-            times.append(np.where(column < t, column, np.nan))
-            live = np.isfinite(times[-1])
-            shift = np.zeros(n)
-            if np.any(live):
-                shift[live] = self.line.shift(self.history.radii(times[-1][live]))
-            shifts.append(shift)
+        own = [np.where(column < t, column, np.nan) for column in own]
+        times += own
+        shifts += self._own_shifts(own, n)
         if not times:
             return np.empty((n, 0)), np.empty((n, 0)), np.empty(0, bool)
         return np.stack(times, axis=1), np.stack(shifts, axis=1), np.array(crossing)
+
+    def _own_shifts(self, columns: list[np.ndarray], n: int) -> list[np.ndarray]:
+        """``ū`` at each spring's own clamp times (0 where ``nan``), the radii of all read in one call of the
+        history."""
+        out = [np.zeros(n) for _ in columns]
+        if not columns or not self.line.shifts:
+            return out
+        stacked = np.stack(columns)
+        live = np.isfinite(stacked)
+        if np.any(live):
+            shift = np.zeros(stacked.shape)
+            shift[live] = self.line.shift(self.history.radii(stacked[live]))
+            out = list(shift)
+        return out
 
     def _crossings(self, g: np.ndarray, t: float) -> list[np.ndarray]:
         """The times each spring's depth ``d − g(ξ)`` changes sign on each segment before ``t`` (``nan``: none)."""
