@@ -31,7 +31,8 @@ from .solve import run_continuum
 from .state import Event, EventKind
 from .tolerances import Tolerances
 
-__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "PROBE_POINTS"]
+__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "PROBE_POINTS",
+           "ROOT_ULPS"]
 
 #: Halvings of an event's bracket between two samples (2^-48 of it: 1e-14 of the spacing).
 EVENT_HALVINGS = 48
