@@ -18,7 +18,7 @@ from __future__ import annotations
 
 
 import numpy as np
-from scipy.optimize import minimize_scalar
+from scipy.optimize import brentq, minimize_scalar
 
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.layer import LayerBase
@@ -26,12 +26,13 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.kernel_model import KernelModel
 
 from .extrema import extremum_names, solution_extrema
-from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, spring_line
+from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, SpringState, spring_line
 from .solve import run_continuum
 from .state import Event, EventKind
 from .tolerances import Tolerances
 
-__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "PROBE_POINTS"]
+__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "PROBE_POINTS",
+           "ROOT_ULPS"]
 
 #: Halvings of an event's bracket between two samples (2^-48 of it: 1e-14 of the spacing).
 EVENT_HALVINGS = 48
@@ -46,6 +47,9 @@ END_PROBE = 1e-9
 PROBE_POINTS = 1025
 #: The share of a contact whose centre alone is at a cap (:func:`_share`).
 SMALLEST = 5e-324
+#: The events' bisection evaluates its guess only within this many units in the last place of the root of the springs'
+#: distance from their caps (:func:`_root`): Brent's method finds the root to about five of them.
+ROOT_ULPS = 64
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
 EXTREMUM_XTOL = 1e-12
 #: The springs' events the spans' frictionless run logs and this route replaces.
@@ -124,13 +128,13 @@ def _samples(play: PlaySprings, times: np.ndarray, radius: np.ndarray) -> tuple[
     """``F_x``, the sliding fraction (length at a cap over ``a``) and the share of :func:`_share` at each time in
     contact (0, nan and 0 elsewhere)."""
     force, sliding, shares = np.zeros(times.shape), np.full(times.shape, np.nan), np.zeros(times.shape)
+    play.remember_radii(times[radius > 0])
     for k, time in enumerate(times):
         if radius[k] > 0:
             a = play.radius(float(time))
             if a > 0:
-                state = play.state(float(time))
+                state, shares[k] = _probed(play, float(time), a)
                 force[k], sliding[k] = state.force, min(state.length / a, 1.0)
-                shares[k] = _probed(play, float(time), a, state)
     return force, sliding, shares
 
 
@@ -152,7 +156,8 @@ def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, st
                 continue
             k = int(hit[0])
             low = probes[k - 1] if k > 0 else begin
-            out.append(_event(play, _bisect(play, low + start, probes[k] + start, reached), start, kind))
+            bracket = (low + start, probes[k] + start)
+            out.append(_event(play, _bisect(play, *bracket, reached, kind is EventKind.SLIP_ONSET), start, kind))
     return out
 
 
@@ -175,44 +180,110 @@ def _pieces(events) -> list[tuple[float, float, bool]]:
     return out
 
 
-def _share(play: PlaySprings, time: float) -> float:
+def _share(play: PlaySprings, time: float, kinks: bool = True) -> float:
     """The share of the contact's length at a cap, or the least positive float where only the centre spring or the
     edge is (a zone opening at ``ξ = 0`` between the quadrature's nodes: the slip onset of scenario A). Under
     Coulomb's law alone the compressed zone's (its springs in tension hold no shift: they slide from the start, and
-    the slip events are the compressed zone's, as the spans log them)."""
+    the slip events are the compressed zone's, as the spans log them). Without ``kinks`` the quadrature's panels are
+    not split at the anchors' kinks (:meth:`~.play_springs.PlaySprings.state`)."""
     a = play.radius(time)
     if not a > 0:
         return 0.0
-    return _probed(play, time, a, play.state(time))
+    return _probed(play, time, a, kinks)[1]
 
 
-def _probed(play: PlaySprings, time: float, a: float, state) -> float:
-    """The share at a cap of ``state`` with the centre and the edge probed (:func:`_share`)."""
-    coulomb_alone = not play.line.shift(np.array([a]))[0] > 0.0
+def _probed(play: PlaySprings, time: float, a: float, kinks: bool = True) -> tuple[SpringState, float]:
+    """The springs' state at ``time`` and their share at a cap with the centre and the edge probed (:func:`_share`):
+    the centre and the edge read with the quadrature's nodes, the other probes where none is at a cap."""
+    coulomb_alone = not play.shift(time) > 0.0
+    edge = min(a, float(play.compressed_radius(time))) if coulomb_alone else a
+    ends = edge * np.array([0.0, 1.0 - PROBE_SHARE]) if edge > 0.0 else np.empty(0)
+    state, at_ends = play.probed_state(time, ends, kinks)
     if coulomb_alone:
-        edge = min(a, float(play.compressed_radius(time)))
         if not edge > 0.0:
-            return 0.0
+            return state, 0.0
         share = state.compressed_at_cap / state.compressed if state.compressed > 0.0 else 0.0
     else:
-        edge, share = a, state.length / a
-    points = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS) if share == 0.0 else np.array([0.0, 1.0 - PROBE_SHARE])
-    at_cap = play.anchors(edge * points, time)[1] < 0
+        share = state.length / a
+    if share == 0.0:
+        at_cap = play.anchors(edge * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS), time)[1] < 0
+    else:
+        at_cap = at_ends < 0
     if share == 0.0 and np.any(at_cap):
-        return SMALLEST
-    return share if np.all(at_cap[[0, -1]]) else min(share, 1.0 - 2.0 * FULL_SHARE)
+        return state, SMALLEST
+    return state, share if np.all(at_cap[[0, -1]]) else min(share, 1.0 - 2.0 * FULL_SHARE)
 
 
-def _bisect(play: PlaySprings, low: float, high: float, reached) -> float:
+def _bisect(play: PlaySprings, low: float, high: float, reached, onset: bool) -> float:
+    """The first time in ``(low, high]`` the share at a cap (:func:`_share`) is ``reached`` (``onset``: the slip onset's
+    test, else full slip's), to :data:`EVENT_HALVINGS` halvings. Bisected on the share without the kink search
+    (:func:`_guess`), which is evaluated only within :data:`ROOT_ULPS` of the root of the springs' distance from their
+    caps (:func:`_root`; the other halvings decided by it), then the bracket found checked on the share itself; where
+    it is not the share's own, bisected on the guess at every halving and checked again, else on the share (the
+    halvings on the far side of a bracket's end it was not reached at, or was, decided by it). Where the share turns
+    once in the bracket, the checked bracket is the one bisection on the share visits (every time either visits lies
+    outside it)."""
+    known = [-np.inf, np.inf]  # (the share not reached up to the first, reached from the second on)
+    root = _root(play, low, high, onset)
+    guesses = [] if root is None else [lambda time: time > root + ROOT_ULPS * np.spacing(root)
+                                       or (time >= root - ROOT_ULPS * np.spacing(root) and reached(_guess(play, time)))]
+    for guess in guesses + [lambda time: reached(_guess(play, time))]:
+        bracket = _halve(low, high, guess)
+        below, above = (reached(_share(play, end)) for end in bracket)
+        if above and not below:
+            return bracket[1]
+        known[0] = known[0] if above else max(known[0], bracket[1])
+        known[1] = min(known[1], bracket[0]) if below else known[1]
+    return _halve(low, high, lambda time: time >= known[1] or (time > known[0] and reached(_share(play, time))))[1]
+
+
+def _root(play: PlaySprings, low: float, high: float, onset: bool) -> float | None:
+    """Where, between ``low`` and ``high``, the first spring :func:`_guess` reads reaches its cap (``onset``) or the
+    last one does, by Brent's method on the largest or least distance outside the windows
+    (:meth:`~.play_springs.PlaySprings.outside`): ``None`` where it is not positive at ``high``; where it is not
+    negative at ``low``, from :data:`ROOT_ULPS` after it on, and where it is not negative there either, the slip onset
+    at ``low``."""
+    def distance(time: float) -> float:
+        a = play.radius(time)
+        coulomb_alone = not play.shift(time) > 0.0
+        edge = min(a, float(play.compressed_radius(time))) if coulomb_alone else a
+        if not edge > 0.0:
+            return np.nan
+        probes = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS) if onset else np.array([0.0, 1.0 - PROBE_SHARE])
+        nodes, pressed, at_probes = play.outside(time, edge * probes)
+        values = np.concatenate([nodes[pressed] if coulomb_alone else nodes, at_probes])
+        return float(np.max(values) if onset else np.min(values))
+
+    if not distance(high) > 0.0:
+        return None
+    if not distance(low) < 0.0:  # (out of contact at ``low``, or springs at their caps at a reversal's instant, before
+        start = low + ROOT_ULPS * np.spacing(low)  # the re-stick: looked for from just after it)
+        if not distance(start) < 0.0:  # (the slip onset as the piece starts, Coulomb's springs at the edge sliding at
+            return low if onset else None  # once; checked after)
+        low = start
+    try:
+        return float(brentq(distance, low, high, xtol=np.spacing(high), rtol=4.0 * np.finfo(float).eps))
+    except (ValueError, RuntimeError):  # (nan inside: out of contact, or no convergence; the halvings alone then)
+        return None
+
+
+def _halve(low: float, high: float, reached) -> tuple[float, float]:
+    """The bracket of :data:`EVENT_HALVINGS` halvings of ``[low, high]`` (``reached`` false at its low end, true at
+    its high end)."""
     for _ in range(EVENT_HALVINGS):
         middle = 0.5 * (low + high)
         if middle in (low, high):
             break
-        if reached(_share(play, middle)):
+        if reached(middle):
             high = middle
         else:
             low = middle
-    return high
+    return low, high
+
+
+def _guess(play: PlaySprings, time: float) -> float:
+    """:func:`_share` on the quadrature's nodes without the kink search (:meth:`PlaySprings.state`)."""
+    return _share(play, time, kinks=False)
 
 
 def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Event:
@@ -221,7 +292,7 @@ def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Eve
     springs under Coulomb's law alone), or where no probe is at a cap on the quadrature's nodes
     (:meth:`~.play_springs.PlaySprings.cap_sides`: a zone narrower than the probes' spacing)."""
     a = play.radius(time)
-    coulomb_alone = not play.line.shift(np.array([a]))[0] > 0.0
+    coulomb_alone = not play.shift(time) > 0.0
     edge = min(a, float(play.compressed_radius(time))) if coulomb_alone else a
     points = edge * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)
     labels = play.anchors(points, time)[1]

@@ -28,8 +28,9 @@ split where the anchor's provenance (which clamp of its chain last moved it, and
 anchor has a kink (a slip front, an old front kept in memory; the provenance also tells whether the spring was
 compressed at that clamp: with adhesion its cap has a kink at ``x_c`` of that time); in between it is smooth. A kink
 is located by bisection on the provenance (:data:`KINK_HALVINGS`), looked for between neighbouring nodes and between
-the centre or the edge (:data:`EDGE_SHARE` inside) and the nearest node. The springs at a cap at ``t`` are those whose last clamp is ``t``'s
-own.
+the centre or the edge (:data:`EDGE_SHARE` inside) and the nearest node; not between two springs that lie on the
+same smooth edge of their windows at ``t`` to round-off (:data:`EDGE_ROUND_OFF`: their anchors are that edge whatever
+their provenance). The springs at a cap at ``t`` are those whose last clamp is ``t``'s own.
 """
 
 from __future__ import annotations
@@ -48,7 +49,7 @@ from .play_history import DepthHistory, SpanHistory
 
 __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
            "UPPER_CAP", "PANELS", "NODES", "EDGE_SHARE", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
-           "CONCAVITY_SAMPLES"]
+           "CONCAVITY_SAMPLES", "EDGE_ROUND_OFF"]
 
 #: Panels of ``[0, a]`` before the kinks are added.
 PANELS = 8
@@ -75,6 +76,12 @@ CONCAVITY_ROUND_OFF = 1e-12
 _GAUSS = np.polynomial.legendre.leggauss(NODES)
 #: ``d − g`` within this share of the path's largest depth counts as not compressed (:meth:`PlaySprings.anchors`).
 PRESSED_ROUND_OFF = 1e-12
+#: A spring's anchor within this share of the path's largest ``|x|`` and its cap of its window's edge at ``t`` lies on
+#: it to round-off: where neighbouring springs do, their provenances (set at ``t`` or before, resting on the edge)
+#: can differ by round-off with no kink between (a thick layer whose compressed zone reaches its cap at once, its
+#: ``ρ(ξ)`` constant to 7e-13: thousands of such pairs, 1e-16 m off the edge, along the re-contact path of
+#: tests/models/test_layer_coulomb.py).
+EDGE_ROUND_OFF = 1e-12
 #: Provenance codes: attached and never moved (plus the segment), a clamp's lower edge, its upper edge
 _ATTACHED, _LOWER, _UPPER = 0, 1, 2
 #: The provenance of a spring at the lower cap at the time asked (in tension, compressed), and at the upper one
@@ -98,6 +105,8 @@ class SpringLine(NamedTuple):
     radius: Callable[[np.ndarray], np.ndarray]
     #: ``G*`` (Pa)
     G_star: float
+    #: whether ``shift`` is not 0 (a law with ``τ0``'s part): without it no clamp reads the radius
+    shifts: bool = True
 
 
 def spring_line(params: Parameters, profile, friction: FrictionLaw, layer: Layer = HALF_SPACE) -> SpringLine:
@@ -143,9 +152,28 @@ def spring_line(params: Parameters, profile, friction: FrictionLaw, layer: Layer
         return out
 
     if layer.is_half_space:  # (the half-space's springs weigh 1 each)
-        return SpringLine(springs.profile, _unit_weights, lambda xi: springs.coulomb_ratios(xi, friction), shift,
-                          radius, params.G_star)
-    return SpringLine(*_layer_springs(params, springs.indenter, friction, layer), shift, radius, params.G_star)
+        return SpringLine(_remembered(springs.profile), _unit_weights,
+                          _remembered(lambda xi: springs.coulomb_ratios(xi, friction)), shift, radius, params.G_star,
+                          K > 0.0)
+    return SpringLine(*_layer_springs(params, springs.indenter, friction, layer), shift, radius, params.G_star,
+                      K > 0.0)
+
+
+def _remembered(function: Callable[[np.ndarray], np.ndarray]) -> Callable[[np.ndarray], np.ndarray]:
+    """``function`` of the springs' coordinates remembering its last argument and value (read-only): one evaluation
+    of the route asks the same springs' ``g``, ``k_t`` and ratios several times (the anchors, their attachment, the
+    force's weights)."""
+    last: list = [None, None]
+
+    def remembered(xi):
+        xi = np.asarray(xi, dtype=float)
+        if last[0] is None or last[0].shape != xi.shape or not np.array_equal(last[0], xi):
+            value = np.asarray(function(xi))
+            value.flags.writeable = False
+            last[0], last[1] = xi.copy(), value
+        return last[1]
+
+    return remembered
 
 
 def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: Layer):
@@ -158,17 +186,17 @@ def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: L
 
     E_star, G_star, nu, mu = params.E_star, params.G_star, params.nu, friction.coulomb_mu
     profile, normal = power_law_profile.__wrapped__, spring_stiffness_density.__wrapped__
-    tangential = tangential_spring_stiffness_density.__wrapped__
+    tangential = _remembered(lambda xi: tangential_spring_stiffness_density.__wrapped__(xi, G_star, nu, layer))
 
     def weight(xi):
-        return tangential(xi, G_star, nu, layer) / G_star
+        return tangential(xi) / G_star
 
     def ratio(xi):  # (coulomb_cap(x, 1, 0, μ, ...): μ (k/k_t)(1 − 0))
         if not mu > 0.0:
             return np.zeros(np.shape(xi))
-        return mu * (normal(xi, E_star, nu, layer) / tangential(xi, G_star, nu, layer)) * (1.0 - 0.0)
+        return mu * (normal(xi, E_star, nu, layer) / tangential(xi)) * (1.0 - 0.0)
 
-    return (lambda xi: profile(xi, indenter, nu, layer)), weight, ratio
+    return _remembered(lambda xi: profile(xi, indenter, nu, layer)), _remembered(weight), _remembered(ratio)
 
 
 def _unit_weights(xi: np.ndarray) -> np.ndarray:
@@ -224,10 +252,15 @@ class PlaySprings:
         self._corner_t = np.asarray(self.path.corner_times, dtype=float)
         self._corner_x, self._corner_d = (np.asarray(self.path.waypoints[:, i], dtype=float) for i in (0, 1))
         self._shifts: dict[tuple, float] = {}
+        #: ``a(t)`` and ``x_c`` of the times and depths asked before (every evaluation asks them again)
+        self._radii: dict[float, float] = {}
+        self._compressed: dict[float, float] = {}
         #: a spring counts as compressed (its cap's Coulomb part on) beyond this ``d − g`` (m): at a crossing of
         #: ``d = g(ξ)`` the rounding of ``d − g`` would flip it from spring to spring
         self._pressed_round_off = PRESSED_ROUND_OFF * float(np.max(np.abs(self._corner_d)))
         self.chain = self._chain()
+        #: the path's largest ``|x|`` (m): the scale of the anchors' round-off
+        self._x_scale = float(np.max(np.abs(self._corner_x)))
 
     # -- kinematics ---------------------------------------------------------------------------------------------
     def _x(self, t):
@@ -268,7 +301,7 @@ class PlaySprings:
         key = (time, radius)
         cached = self._shifts.get(key)
         if cached is None:
-            a = self.history.radii(np.array([time])) if radius is None else np.array([radius])
+            a = np.array([self.radius(time) if radius is None else radius])
             cached = self._shifts[key] = float(self.line.shift(a)[0])
         return cached
 
@@ -302,16 +335,26 @@ class PlaySprings:
             crossings = self._crossings(g, t)
             own += crossings
             crossing += [True] * len(crossings)
-        for column in own:
-            times.append(np.where(column < t, column, np.nan))
-            live = np.isfinite(times[-1])
-            shift = np.zeros(n)
-            if np.any(live):
-                shift[live] = self.line.shift(self.history.radii(times[-1][live]))
-            shifts.append(shift)
+        own = [np.where(column < t, column, np.nan) for column in own]
+        times += own
+        shifts += self._own_shifts(own, n)
         if not times:
             return np.empty((n, 0)), np.empty((n, 0)), np.empty(0, bool)
         return np.stack(times, axis=1), np.stack(shifts, axis=1), np.array(crossing)
+
+    def _own_shifts(self, columns: list[np.ndarray], n: int) -> list[np.ndarray]:
+        """``ū`` at each spring's own clamp times (0 where ``nan``), the radii of all read in one call of the
+        history."""
+        out = [np.zeros(n) for _ in columns]
+        if not columns or not self.line.shifts:
+            return out
+        stacked = np.stack(columns)
+        live = np.isfinite(stacked)
+        if np.any(live):
+            shift = np.zeros(stacked.shape)
+            shift[live] = self.line.shift(self.history.radii(stacked[live]))
+            out = list(shift)
+        return out
 
     def _crossings(self, g: np.ndarray, t: float) -> list[np.ndarray]:
         """The times each spring's depth ``d − g(ξ)`` changes sign on each segment before ``t`` (``nan``: none)."""
@@ -347,6 +390,11 @@ class PlaySprings:
             A spring that matches no attachment of the radius's history up to ``t`` (a spring out of contact, or a
             bug: its anchor would be clamped from the path's start).
         """
+        return self._anchors(xi, t)[:2]
+
+    def _anchors(self, xi, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`anchors`, which edge of its window at ``t`` each spring lay on before it (:func:`_on_edge`) and how
+        far outside the window it lay (m; :meth:`outside`)."""
         xi = np.asarray(xi, dtype=float)
         g, ratio = self.line.profile(xi), self.line.ratio(xi)
         start, code = self.history.attach(xi, t)
@@ -370,9 +418,12 @@ class PlaySprings:
                 anchor, label = _clamp(anchor, label, x[:, k] - cap[:, k], x[:, k] + cap[:, k], live[:, k],
                                        codes[:, k])
         x_t, cap = self._x(float(t)), self._shift_at(float(t)) + ratio * np.maximum(self._d(float(t)) - g, 0.0)
-        anchor, label = _clamp(anchor, label, x_t - cap, x_t + cap, np.ones(xi.shape, bool),
-                               np.where(self._d(t) - g > self._pressed_round_off, -6, -3))
-        return anchor, label
+        pressed = self._d(t) - g > self._pressed_round_off
+        before = anchor
+        anchor, label = _clamp(anchor, label, x_t - cap, x_t + cap, np.ones(xi.shape, bool), np.where(pressed, -6, -3))
+        lower, upper = x_t - cap, x_t + cap
+        edges = _on_edge(before, lower, upper, EDGE_ROUND_OFF * (self._x_scale + np.max(cap, initial=0.0)), pressed)
+        return anchor, label, edges, np.maximum(lower - before, before - upper)
 
     def radius(self, t: float) -> float:
         """The contact radius at ``t`` (m).
@@ -387,7 +438,38 @@ class PlaySprings:
         float
             ``a(t)`` (0 out of contact).
         """
-        return float(self.history.radii(np.array([t]))[0])
+        cached = self._radii.get(t)
+        if cached is None:
+            cached = self._radii[t] = float(self.history.radii(np.array([t]))[0])
+        return cached
+
+    def remember_radii(self, times) -> None:
+        """Read ``a(t)`` at many times in one call of the history (the layer's branch inverted for all of them at
+        once, to its ``RADII_RTOL``) and remember them for :meth:`radius`.
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s, path clock): the run's output times.
+        """
+        times = np.asarray([time for time in np.ravel(times) if float(time) not in self._radii], dtype=float)
+        if times.size:
+            self._radii.update(zip(times.tolist(), self.history.radii(times).tolist()))
+
+    def shift(self, t: float) -> float:
+        """``ū(a(t))``: the cap of ``τ0``'s part at ``t`` (m; 0 without it or out of contact).
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock).
+
+        Returns
+        -------
+        float
+            The cap's part shared by every spring.
+        """
+        return self._shift_at(float(t))
 
     def compressed_radius(self, t: float) -> float:
         """``x_c`` at ``t``: the radius of the compressed springs, ``g(x_c) = d`` (m; 0 at ``d <= 0``).
@@ -402,40 +484,94 @@ class PlaySprings:
         float
             ``x_c``.
         """
-        return float(self.line.radius(np.array([self._d(t)]))[0])
+        if not self.history.adhesive:  # (every spring in contact compressed: x_c = a = g⁻¹(d), the same call)
+            return self.radius(t)
+        depth = float(self._d(t))
+        cached = self._compressed.get(depth)
+        if cached is None:
+            cached = self._compressed[depth] = float(self.line.radius(np.array([depth]))[0])
+        return cached
 
-    def state(self, t: float) -> "SpringState":
+    def state(self, t: float, kinks: bool = True) -> "SpringState":
         """``F_x`` and the springs at a cap at ``t`` (:class:`SpringState`).
 
         Parameters
         ----------
         t : float
             The time (s, path clock).
+        kinks : bool, default True
+            Whether the quadrature's panels are split at the anchors' kinks (without: the panels of the history's
+            breaks alone, a cheap guess of which springs are at a cap, which the events' bisection verifies).
 
         Returns
         -------
         SpringState
             The force, the sliding springs' measure and length, the compressed springs' length at a cap and in all.
         """
+        return self.probed_state(t, np.empty(0), kinks)[0]
+
+    def probed_state(self, t: float, probes: np.ndarray, kinks: bool = True) -> tuple["SpringState", np.ndarray]:
+        """:meth:`state` and the provenance of the springs at ``probes`` (:meth:`anchors`), read with the quadrature's
+        first nodes (one evaluation of the anchors).
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock).
+        probes : numpy.ndarray
+            The probed springs' coordinates (m), within the contact at ``t``.
+        kinks : bool, default True
+            As :meth:`state`.
+
+        Returns
+        -------
+        tuple
+            The :class:`SpringState` and the probes' provenance codes (negative at a cap).
+        """
         a = self.radius(t)
         if not a > 0.0:
-            return SpringState(0.0, 0.0, 0.0, 0.0, 0.0)
-        nodes, weights = self._nodes(t, a)
-        anchor, label = self.anchors(nodes, t)
+            return SpringState(0.0, 0.0, 0.0, 0.0, 0.0), np.zeros(np.shape(probes), dtype=np.int64)  # (none at a cap)
+        nodes, weights, anchor, label, probed = self._quadrature(t, a, kinks, probes)
         w = self.line.weight(nodes) * weights
         at_cap = label < 0
         pressed = self._d(t) - self.line.profile(nodes) > self._pressed_round_off
         force = 2.0 * self.line.G_star * float(np.sum(w * (self._x(t) - anchor)))
         return SpringState(force, float(np.sum(w[at_cap])), float(np.sum(weights[at_cap])),
-                           float(np.sum(weights[at_cap & pressed])), float(np.sum(weights[pressed])))
+                           float(np.sum(weights[at_cap & pressed])), float(np.sum(weights[pressed]))), probed
 
-    def _nodes(self, t: float, a: float) -> tuple[np.ndarray, np.ndarray]:
-        """The quadrature's nodes and weights on ``[0, a]`` at ``t``: Gauss–Legendre on the panels split at the
-        history's breaks and the kinks."""
-        breaks = self._kinks(t, np.union1d(np.linspace(0.0, a, PANELS + 1), self.history.breaks(t)))
-        lows, highs = breaks[:-1], breaks[1:]
-        nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
-        return nodes, (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
+    def outside(self, t: float, probes: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """How far each spring's anchor lies outside its window at ``t`` before the clamp at ``t`` (m: positive where it
+        is at a cap, :meth:`anchors`), on the quadrature's nodes without the kink search and at ``probes``: continuous
+        in time, where the springs reach their caps it crosses 0 (the events' bisection looks for that root first).
+
+        Parameters
+        ----------
+        t : float
+            The time (s, path clock), in contact.
+        probes : numpy.ndarray
+            More springs' coordinates (m), within the contact at ``t``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            The distances at the nodes, whether the nodes' springs are compressed, the distances at the probes.
+        """
+        nodes = _gauss(np.union1d(np.linspace(0.0, self.radius(t), PANELS + 1), self.history.breaks(t)))[0]
+        distance = self._anchors(np.concatenate([nodes, probes]), t)[3]
+        pressed = self._d(t) - self.line.profile(nodes) > self._pressed_round_off
+        return distance[:nodes.size], pressed, distance[nodes.size:]
+
+    def _quadrature(self, t: float, a: float, kinks: bool = True, probes=np.empty(0)) -> tuple[np.ndarray, ...]:
+        """The quadrature's nodes and weights on ``[0, a]`` at ``t`` (Gauss–Legendre on the panels split at the
+        history's breaks and, with ``kinks``, the kinks: :meth:`_kinks`), the anchors and their provenance there, and
+        the provenance at ``probes``."""
+        breaks = np.union1d(np.linspace(0.0, a, PANELS + 1), self.history.breaks(t))
+        if kinks:
+            breaks, anchor, label, probed = self._kinks(t, breaks, probes)
+            return *_gauss(breaks), anchor, label, probed
+        nodes, weights = _gauss(breaks)
+        anchor, label = self.anchors(np.concatenate([nodes, probes]), t)
+        return nodes, weights, anchor[:nodes.size], label[:nodes.size], label[nodes.size:]
 
     def cap_sides(self, t: float, edge: float) -> tuple[float, float]:
         """The lengths (m) of the springs within ``edge`` at the lower and the upper cap at ``t``, on the quadrature's
@@ -456,29 +592,34 @@ class PlaySprings:
         a = self.radius(t)
         if not a > 0.0:
             return 0.0, 0.0
-        nodes, weights = self._nodes(t, a)
-        labels = self.anchors(nodes, t)[1]
+        nodes, weights, _, labels, _ = self._quadrature(t, a)
         inside = nodes < edge
         return (float(np.sum(weights[inside & np.isin(labels, LOWER_CAP)])),
                 float(np.sum(weights[inside & np.isin(labels, UPPER_CAP)])))
 
-    def _kinks(self, t: float, breaks: np.ndarray) -> np.ndarray:
+    def _kinks(self, t: float, breaks: np.ndarray, probes: np.ndarray) -> tuple[np.ndarray, ...]:
         """``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances differ (within a
         panel, across a panel's end, or in the first round between the centre or the edge, :data:`EDGE_SHARE` inside it,
         and the nearest node) and no kink found before lies between them, the change located by bisection;
-        repeated until every such pair holds a kink."""
+        repeated until every such pair holds a kink. Also the anchors and provenance at the nodes of the last
+        breaks (:func:`_gauss`), and the provenance at ``probes`` (read in the first round)."""
         kinks = np.empty(0)
         ends = breaks[-1] * np.array([EDGE_SHARE, 1.0 - EDGE_SHARE])
         for round_ in range(KINK_ROUNDS + 1):
-            lows, highs = breaks[:-1], breaks[1:]
-            inner = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+            inner = _gauss(breaks)[0]
             if round_ == 0:  # (a zone between the centre or the edge and the nearest node: the stick zone left at the
                 inner = np.concatenate([ends[:1], inner, ends[1:]])  # edge before full slip; once: its kink is a break)
-            label = self.anchors(inner, t)[1]
-            change = np.flatnonzero(label[1:] != label[:-1])
+                anchor, label, edges, _ = self._anchors(np.concatenate([inner, probes]), t)
+                probed, anchor, label, edges = label[inner.size:], anchor[:inner.size], label[:inner.size], \
+                    edges[:inner.size]
+            else:
+                anchor, label, edges, _ = self._anchors(inner, t)  # (two springs on the same smooth edge of their windows at t to round-off hold the
+            change = np.flatnonzero((label[1:] != label[:-1])  # same anchor whatever their provenance: no kink between)
+                                    & ((edges[1:] == 0) | (edges[1:] != edges[:-1])))
             fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]
             if not fresh.size:
-                return breaks
+                nodes = slice(1, -1) if round_ == 0 else slice(None)
+                return breaks, anchor[nodes], label[nodes], probed
             found = self._bisect(t, inner[fresh], inner[fresh + 1], label[fresh])
             kinks = np.unique(np.concatenate([kinks, found]))
             breaks = np.unique(np.concatenate([breaks, found]))
@@ -490,6 +631,8 @@ class PlaySprings:
         until :data:`KINK_HALVINGS` halvings' worth."""
         share = np.arange(1, KINK_CUTS) / KINK_CUTS
         for _ in range(-(-KINK_HALVINGS // int(np.log2(KINK_CUTS)))):
+            if np.all(np.nextafter(low, high) >= high):  # (no double between the ends: every cut is one of them, and
+                break  # the bracket, its provenances read again, stays)
             points = low[:, None] + (high - low)[:, None] * share[None, :]
             same = (self.anchors(points.ravel(), t)[1].reshape(points.shape) == low_label[:, None])
             first = np.argmin(np.concatenate([same, np.zeros((len(low), 1), bool)], axis=1), axis=1)
@@ -512,6 +655,21 @@ class PlaySprings:
             The forces.
         """
         return np.array([self.state(float(t))[0] for t in np.atleast_1d(times)])
+
+
+def _on_edge(anchor, lower, upper, round_off: float, pressed) -> np.ndarray:
+    """Which edge of its window at ``t`` each spring's anchor before the clamp at ``t`` lies on to ``round_off``: 0
+    none, 1 or 2 the lower or upper with the spring in tension, 3 or 4 compressed (the cap's formula has a kink in
+    ``ξ`` at ``x_c``; along either edge on either side of it the anchor is smooth)."""
+    side = np.where(np.abs(anchor - lower) <= round_off, 1, np.where(np.abs(upper - anchor) <= round_off, 2, 0))
+    return np.where(side > 0, side + 2 * pressed, 0)
+
+
+def _gauss(breaks: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The nodes and weights of Gauss–Legendre's rule on each panel between ``breaks``."""
+    lows, highs = breaks[:-1], breaks[1:]
+    nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
+    return nodes, (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
 
 
 def _clamp(anchor, label, lower, upper, live, code):
