@@ -15,6 +15,7 @@ from quick_round import grid
 # --- R1: Ctrl-C (or SIGTERM) that lands while the garbage collector runs Python code ------------------------------
 SWALLOWED = textwrap.dedent("""
     import os, signal, sys
+    signal.signal(signal.SIGINT, signal.default_int_handler)  # as in a foreground process (a background job ignores it)
     import mdr_events.app.cli.simulate as verb
     real, when, signum = verb.run, sys.argv.pop(1), getattr(signal, sys.argv.pop(1))
 
