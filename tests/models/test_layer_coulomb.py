@@ -124,10 +124,10 @@ def spring_log(run, case: int = 0) -> list[tuple[str, float, int]]:
             if kind in SPRING_EVENTS]
 
 
-@pytest.mark.parametrize("law", LAWS)
-@pytest.mark.parametrize("motion", [MOTIONS["A 20°"], MOTIONS["B 20°"],
-                                    pytest.param(MOTIONS["fretting"], marks=pytest.mark.slow)],  # (about 6 s)
-                         ids=["A 20°", "B 20°", "fretting"])
+@pytest.mark.parametrize("motion, law", [  # (A and B 0.6 s of CPU each, each law once quick; fretting about 6 s)
+    *grid({"motion": {name: MOTIONS[name] for name in ("A 20°", "B 20°")}, "law": {law: law for law in LAWS}},
+          {("A 20°", "coulomb"), ("B 20°", "tau0+coulomb")}),
+    *(pytest.param(MOTIONS["fretting"], law, id=f"fretting-{law}", marks=pytest.mark.slow) for law in LAWS)])
 def test_a_thick_layer_is_the_half_space(law, motion):
     """``simulate`` on a layer of ``h = 1e9 m`` (the per-spring route with the tables' springs) is the half-space's
     spans: ``F_x`` at every sample, and the springs' event log (slip onset, full slip, re-stick at each reversal:
