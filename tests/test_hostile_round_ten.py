@@ -12,6 +12,8 @@ import pytest
 
 import mdr_events as me
 
+from quick_round import grid
+
 
 # --- R1: the exact continuum's own samples failed validate under Coulomb's law with adhesion ----------------------
 # An adhesive contact made under Coulomb's law has every spring in tension (no cap: all sliding) for that instant:
@@ -162,11 +164,13 @@ CAUGHT = textwrap.dedent("""
 """)
 
 
-@pytest.mark.parametrize("name, status, line", [
-    ("SIGINT", 130, "mdr-events: interrupted (Ctrl-C); no file was left half-written\n"),
-    ("SIGTERM", 143, "mdr-events: terminated (SIGTERM); no file was left half-written\n")])
-@pytest.mark.parametrize("how", ["converted", "swallowed"])
-def test_an_interrupt_that_code_caught_ends_the_command_as_an_interrupt(tmp_path, how, name, status, line):
+@pytest.mark.parametrize("how, interrupt", grid(  # (a fresh interpreter and a run each, 2-3 s of CPU)
+    {"how": {"converted": "converted", "swallowed": "swallowed"},
+     "interrupt": {"SIGINT": ("SIGINT", 130, "mdr-events: interrupted (Ctrl-C); no file was left half-written\n"),
+                   "SIGTERM": ("SIGTERM", 143, "mdr-events: terminated (SIGTERM); no file was left half-written\n")}},
+    {("converted", "SIGINT"), ("swallowed", "SIGTERM")}))
+def test_an_interrupt_that_code_caught_ends_the_command_as_an_interrupt(tmp_path, how, interrupt):
+    name, status, line = interrupt
     done = subprocess.run([sys.executable, "-c", CAUGHT, how, name, "simulate", "--scenario", "A", "--alpha", "20",
                            "--method", "continuum", "--out", "out"], capture_output=True, text=True, timeout=300,
                           cwd=tmp_path, env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))

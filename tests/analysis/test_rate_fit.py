@@ -4,6 +4,8 @@ bad input is named."""
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 import pytest
 
@@ -20,15 +22,20 @@ NOISE = 0.01 * 1.5 * np.pi * PAPER.dgamma1 * PAPER.R
 ZEROS = (2e-4, -1e-4, 0.0)
 
 
+@functools.cache
 def _measurements(seed=7):
+    """The three synthetic curves (made once per seed in this module, about 1 s of CPU: their arrays read-only, so
+    that a fit cannot change what the next test reads)."""
     rng = np.random.default_rng(seed)
     out = []
     for speed, zero in zip((1e-7, 1e-6, 1e-5), ZEROS):
         path = me.Path(np.array([(0.0, 0.0), (0.0, PAPER.d_max), (0.0, -200e-6)]), speed=speed)
         times = np.linspace(path.first_contact_time(), path.duration, 400)
         force = solve_edge(PAPER, path, TRUE).normal_force(times, path) + zero
-        out.append(RateMeasurement(path, times, force + rng.normal(0.0, NOISE, times.size), NOISE))
-    return out
+        noisy = force + rng.normal(0.0, NOISE, times.size)
+        times.flags.writeable = noisy.flags.writeable = False
+        out.append(RateMeasurement(path, times, noisy, NOISE))
+    return tuple(out)
 
 
 def test_three_speeds_give_v_ref_and_n_within_their_intervals():

@@ -4,6 +4,7 @@ The simulator under test is the package's own spring model (scenario A at 20°, 
 every quantity's range), written as a CSV as any program would; a wrong one has F_x × 1.1.
 """
 
+import functools
 import shutil
 import subprocess
 import sys
@@ -36,7 +37,14 @@ def spring_tolerance(params, dx=DX):
 
 
 def discrete_run(params, dx=DX):
-    """The spring model's run of scenario A at 20° (one case), sampled every half spring spacing of travel."""
+    """The spring model's run of scenario A at 20° (one case), sampled every half spring spacing of travel: run once
+    per parameters and spacing in this module (six tests read the one at :data:`DX`), a deep copy for each caller so
+    that none sees what another changed."""
+    return _discrete_run(params, dx).copy(deep=True)
+
+
+@functools.cache
+def _discrete_run(params, dx):
     return me.simulate(params, "A", alpha=[ALPHA], dx=dx, dt=0.5 * dx / params.v).isel(alpha=0)
 
 

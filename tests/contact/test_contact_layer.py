@@ -88,7 +88,9 @@ def test_every_entry_point_takes_coulombs_part_with_adhesion_on_a_layer_in_the_c
 
 def test_a_continuum_sweep_over_the_thickness_runs_each_thickness():
     """The continuum's quantities over ``h``: each run on its own layer (``inf`` the half-space's own run)."""
-    swept = me.sweep({"h": [np.inf, 5e-3]}, PAPER, alpha=20.0, quantities=("contact_area_max",))
+    swept = me.sweep({"h": [np.inf, 5e-3]}, PAPER, alpha=20.0, quantities=("contact_area_max",),
+                     scheduler="serial")  # (the engines are tests/analysis/test_sweep.py's: a local cluster's worker
+    # processes cost more than these two runs, ~3.5 s of CPU)
     area = swept["contact_area_max"].values.ravel()
     half = me.simulate(PAPER, me.Scenario("A", alpha=20), "continuum")
     layer = me.simulate(LAYERED, me.Scenario("A", alpha=20), "continuum")

@@ -5,6 +5,8 @@ force on the stored anchors (2G* ∫ clip(x − Y, −ū, ū) dξ) and the event
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -32,13 +34,21 @@ def _self_similar_force(K, kappa, slope, ratio, a):
     K a + κ slope (a − ξ) (d − g(ξ) = slope (a − ξ)); the ratio of the two is largest at the centre, so the springs of
     [0, ξ*] slide (the front where they are equal: ξ* = a (1 − K/((ratio − κ) slope)), a fixed share of the contact)
     and F_x / 2G* = ∫ min(shift, cap) dξ. Returns (F_x / 2G*, the sliding share ξ*/a)."""
+    A, integral, share = _self_similar_expressions(K, kappa, slope, ratio)
+    return float(integral.subs(A, a)), float(share)
+
+
+@functools.cache
+def _self_similar_expressions(K, kappa, slope, ratio):
+    """:func:`_self_similar_force`'s integral and share as expressions of the radius symbol (derived once per case,
+    evaluated at each sample's radius: the same numbers as deriving them at each)."""
     xi, A = sp.symbols("xi a", positive=True)
     shift = ratio * slope * (A - xi)
     cap = K * A + kappa * slope * (A - xi)
     front = sp.solve(sp.Eq(shift, cap), xi)[0]
     integral = sp.integrate(cap, (xi, 0, front)) + sp.integrate(shift, (xi, front, A))
     share = sp.simplify(front / A)
-    return float(integral.subs(A, a)), float(share)
+    return A, integral, share
 
 
 @pytest.mark.parametrize("friction", ["tau0", COMBINED], ids=["tau0", "tau0+coulomb"])

@@ -30,6 +30,8 @@ from mdr_events.analysis.convergence import observed_orders
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum.play_springs import PlaySprings, SpanHistory, spring_line
 
+from quick_round import grid
+
 RTOL = me.Tolerances().rtol
 #: The per-spring route against the spans' continuum on the half-space, relative to the largest force.
 ROUTE_SHARE = 20.0 * RTOL
@@ -122,10 +124,10 @@ def spring_log(run, case: int = 0) -> list[tuple[str, float, int]]:
             if kind in SPRING_EVENTS]
 
 
-@pytest.mark.parametrize("law", LAWS)
-@pytest.mark.parametrize("motion", [MOTIONS["A 20°"], MOTIONS["B 20°"],
-                                    pytest.param(MOTIONS["fretting"], marks=pytest.mark.slow)],  # (about 6 s)
-                         ids=["A 20°", "B 20°", "fretting"])
+@pytest.mark.parametrize("motion, law", [  # (A and B 0.6 s of CPU each, each law once quick; fretting about 6 s)
+    *grid({"motion": {name: MOTIONS[name] for name in ("A 20°", "B 20°")}, "law": {law: law for law in LAWS}},
+          {("A 20°", "coulomb"), ("B 20°", "tau0+coulomb")}),
+    *(pytest.param(MOTIONS["fretting"], law, id=f"fretting-{law}", marks=pytest.mark.slow) for law in LAWS)])
 def test_a_thick_layer_is_the_half_space(law, motion):
     """``simulate`` on a layer of ``h = 1e9 m`` (the per-spring route with the tables' springs) is the half-space's
     spans: ``F_x`` at every sample, and the springs' event log (slip onset, full slip, re-stick at each reversal:
@@ -344,9 +346,16 @@ ADHESIVE = {"A 20°": me.Scenario("A", alpha=[20.0]), "A 70°": me.Scenario("A",
             "B 20°": me.Scenario("B", alpha=[20.0]), "fretting": fretting(), "re-growing": regrowing()}
 
 
-@pytest.mark.parametrize("works", [(0.01, 0.15), (0.05, 0.05)], ids=["Dg0 < Dg1", "Dg0 = Dg1"])
-@pytest.mark.parametrize("law", LAWS)
-@pytest.mark.parametrize("motion", ADHESIVE.values(), ids=ADHESIVE.keys())
+#: The quick round's cases of the adhesive route (0.3-0.5 s of CPU each): every motion, law and pair of works, the
+#: re-growing path under both laws; the other 14 run in make test-all and CI (tests/quick_round.py).
+ADHESIVE_QUICK = {("A 20°", "coulomb", "Dg0 < Dg1"), ("A 70°", "tau0+coulomb", "Dg0 = Dg1"),
+                  ("B 20°", "coulomb", "Dg0 = Dg1"), ("fretting", "tau0+coulomb", "Dg0 < Dg1"),
+                  ("re-growing", "coulomb", "Dg0 < Dg1"), ("re-growing", "tau0+coulomb", "Dg0 = Dg1")}
+
+
+@pytest.mark.parametrize("motion, law, works", grid(
+    {"motion": ADHESIVE, "law": {law: law for law in LAWS}, "works": {"Dg0 < Dg1": (0.01, 0.15),
+                                                                       "Dg0 = Dg1": (0.05, 0.05)}}, ADHESIVE_QUICK))
 def test_with_adhesion_every_spring_on_its_own_is_the_spans_on_the_half_space(law, motion, works):
     """With adhesion the springs beyond ``x_c`` are in tension (Coulomb's part off) and the radius follows the
     hysteresis: the per-spring route on the spans' frictionless radius (``SpanHistory``) gives the spans' ``F_x``
@@ -364,8 +373,9 @@ def test_with_adhesion_every_spring_on_its_own_is_the_spans_on_the_half_space(la
         assert np.max(np.abs(got - expected[inside])) <= ADHESIVE_ROUTE_SHARE * scale
 
 
-@pytest.mark.parametrize("law", LAWS)
-@pytest.mark.parametrize("indenter", [me.PowerLaw(0.5, 1.5), me.PowerLaw(2e4, 3.0)], ids=["n = 1.5", "n = 3"])
+@pytest.mark.parametrize("indenter, law", grid(  # (0.6 s of CPU each: each exponent and law once in the quick round)
+    {"indenter": {"n = 1.5": me.PowerLaw(0.5, 1.5), "n = 3": me.PowerLaw(2e4, 3.0)}, "law": {law: law for law in LAWS}},
+    {("n = 1.5", "coulomb"), ("n = 3", "tau0+coulomb")}))
 def test_a_power_law_on_a_thick_layer_is_the_half_space(law, indenter):
     """A power law's springs on a thick layer against the half-space's spans (both without adhesion), scenario A."""
     contact = dataclasses.replace(with_law(HERTZ, law), indenter=indenter)

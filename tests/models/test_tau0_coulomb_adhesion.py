@@ -19,6 +19,7 @@ from mdr_events.models.continuum.solution import algebraic_tangential_force
 from mdr_events.models.continuum.split_map import SpanMaps
 from mdr_events.theory import mindlin, symbolic
 
+from quick_round import grid
 from test_coulomb_adhesion import _convergence as coulomb_adhesion_convergence, each_path_solved_once
 
 DEPTH = 1e-4
@@ -50,8 +51,10 @@ def _fretting_path(speed=1e-6):
     return me.Path(np.array(points), speed=speed)
 
 
-@pytest.mark.parametrize("profile", [None, PowerLaw.cone(0.05), PowerLaw(2e5, 3.0)], ids=["paraboloid", "cone", "n3"])
-@pytest.mark.parametrize("adhesion", ADHESIONS, ids=IDS)
+@pytest.mark.parametrize("adhesion, profile", grid(  # (each 0.2-0.3 s of CPU: each adhesion and indenter once quick)
+    {"adhesion": dict(zip(IDS, ADHESIONS)), "profile": {"paraboloid": None, "cone": PowerLaw.cone(0.05),
+                                                         "n3": PowerLaw(2e5, 3.0)}},
+    {("equal", "paraboloid"), ("paper", "cone"), ("reversed", "n3")}))
 def test_the_continuum_gives_masings_loops_on_the_pinned_radius(adhesion, profile):
     """At the depth DEPTH after a deeper stroke: F_x is Masing's rules on the virgin curve of the pinned radius (the
     τ0 part over the whole contact, Coulomb's over the compressed zone), full slip τ0 π a² + μ F_N^H(d) exactly (the

@@ -17,6 +17,8 @@ from mdr_events.contact.indenters import FlatPunch, PowerLaw
 from mdr_events.models.continuum import EventKind, solve_path
 from mdr_events.theory import mindlin, symbolic
 
+from quick_round import grid
+
 ANGLES = [10.0, 40.0, 70.0]
 #: The continuum's onset event against the closed form, as a share of d_max: the event is the root of a linear level
 #: (the flat punch's pinned span) or logged at first contact (0): rounding of the level's root, SIMULTANEOUS_SHARE
@@ -70,7 +72,14 @@ COMBINED_CASES = [pytest.param(adhesion, profile, id=f"{name}-{label}")
                                          (PowerLaw(2e5, 3.0), "n3"))]
 
 
-@pytest.mark.parametrize("adhesion, profile", COMBINED_CASES)
+#: The quick round's cases of scenario A (seven continuum solves each, 0.6-2.4 s of CPU): each adhesion and each
+#: indenter once; the other six run in make test-all and CI (tests/quick_round.py)
+COMBINED_QUICK = {("paper", "paraboloid"), ("reversed", "cone"), ("grows-without", "n3")}
+
+
+@pytest.mark.parametrize("adhesion, profile", grid(
+    {"adhesion": dict(zip(("paper", "reversed", "grows-without"), ADHESIONS + [(0.0, 0.1)])),
+     "profile": {"paraboloid": None, "cone": PowerLaw.cone(0.05), "n3": PowerLaw(2e5, 3.0)}}, COMBINED_QUICK))
 def test_the_combined_laws_adhesive_onset_is_the_continuums(adhesion, profile):
     """Both parts of the cap on a curved indenter with adhesion: the onset of theory.combined_onset (the first depth
     where the jump-in ring's edge, x_c or the grown springs' turn reaches its cap) is the continuum's first slip onset
