@@ -136,6 +136,12 @@ class LayerTable:
         lam = self._lam(lam)
         small = lam < LAMBDA_MIN
         s = np.log(np.where(small, LAMBDA_MIN, lam))
+        return self._column(name, lam, small, s, derivative)
+
+    def _column(self, name: str, lam: np.ndarray, small: np.ndarray, s: np.ndarray,
+                derivative: bool = False) -> np.ndarray:
+        """Column ``name`` (or its derivative) at the checked ``λ``, ``small = λ < LAMBDA_MIN``, ``s = ln λ`` (clamped
+        to the table's first node): :meth:`_value`'s, and :meth:`force_factors`' three at one logarithm."""
         value = np.exp(self._splines[name](s))
         if derivative:  # d/dλ = (d ln y/ds) y / λ
             value = self._splines[name](s, 1) * value / np.where(small, LAMBDA_MIN, lam)
@@ -209,6 +215,30 @@ class LayerTable:
             ``λ`` outside the table.
         """
         return self._value("profile", lam, derivative)
+
+    def force_factors(self, lam) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`stiffness_factor`, :meth:`profile_factor` and :meth:`force_factor` at once (one check of ``λ``, one
+        logarithm: the same values).
+
+        Parameters
+        ----------
+        lam : float or array_like
+            ``a/h`` in ``[0, LAMBDA_MAX]``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``Φ``, ``γₙ``, ``χₙ``.
+
+        Raises
+        ------
+        ValueError
+            ``λ`` outside the table.
+        """
+        lam = self._lam(lam)
+        small = lam < LAMBDA_MIN
+        s = np.log(np.where(small, LAMBDA_MIN, lam))
+        return tuple(self._column(name, lam, small, s) for name in ("stiffness", "profile", "force"))
 
     def force_factor(self, lam) -> np.ndarray:
         """``χₙ(λ) = F₀(a)/(2E* a g∞(a))``: the non-adhesive force of the power law.

@@ -98,14 +98,15 @@ class TangentialTable:
 
         return {name: make_interp_spline(self.columns["s"], self.columns[name], k=5) for name in _COLUMNS}
 
-    def _values(self, lam) -> tuple[np.ndarray, ...]:
+    def _values(self, lam, names: tuple[str, ...] = _COLUMNS) -> tuple[np.ndarray, ...]:
+        """The columns ``names`` (default all four) at ``λ``: the series below :data:`LAMBDA_MIN`."""
         lam = table_argument(lam, LAMBDA_MAX, "solve_tangential_punch solves up to LAMBDA_SOLVE_MAX")
         small = lam < LAMBDA_MIN
         s = np.log(np.where(small, LAMBDA_MIN, lam))
         k_l, k_t = (float(value) for value in self.columns["k0"])
         series = {"phi_l": 1.0 / (1.0 - 2.0 * k_l * lam / np.pi), "phi_t": 1.0 / (1.0 - 2.0 * k_t * lam / np.pi)}
         series.update(edge_l=series["phi_l"], edge_t=series["phi_t"])
-        return tuple(np.where(small, series[name], np.exp(self._splines[name](s))) for name in _COLUMNS)
+        return tuple(np.where(small, series[name], np.exp(self._splines[name](s))) for name in names)
 
     def stiffness_factor(self, lam) -> np.ndarray:
         """``Φ_t(λ) = K_t(a)/(2G* a)`` (T3).
@@ -125,7 +126,7 @@ class TangentialTable:
         ValueError
             ``λ`` outside the table.
         """
-        phi_l, phi_t, _, _ = self._values(lam)
+        phi_l, phi_t = self._values(lam, ("phi_l", "phi_t"))  # (the edges' columns are not read)
         return _combine(self.nu, phi_l, phi_t)
 
     def slope_factor(self, lam) -> np.ndarray:
