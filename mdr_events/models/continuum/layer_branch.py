@@ -95,8 +95,7 @@ class LayerBranch(Branch):
         self.jump_off_radius = _jump_off_radius(self) if work > 0.0 else 0.0
         self.jump_off_depth = self.depth(self.jump_off_radius)
         self._floor = self.jump_off_radius
-        self._start_scan: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None  # (radii, depths, slopes: made when
-        self._start_lists: tuple[list[float], list[float], list[float]] | None = None  # first asked)
+        self._start_scan: tuple | None = None  # (the scan of radii, depths, slopes, as arrays and as lists: when asked)
 
     # --- the branch at one radius ----------------------------------------------------------------------------
     def _evaluate(self, a: float) -> tuple[float, float]:
@@ -194,13 +193,27 @@ class LayerBranch(Branch):
     # --- radius of a depth -----------------------------------------------------------------------------------
     def _scan(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The scan that starts Newton's iteration: :data:`START_SCAN_PER_DECADE` radii a decade from the jump-off (or
-        :data:`START_SCAN_FLOOR` ``h`` without adhesion) to the tables' ceiling, their depths and slopes (made when
-        first asked, from the tables' vectorised splines)."""
+        :data:`START_SCAN_FLOOR` ``h`` without adhesion) to the tables' ceiling, their depths and slopes (from the
+        tables' vectorised splines; made when first asked and kept per branch's values, :data:`_SCANS`: the runs of
+        one contact's angles share it)."""
+        return self._scans()[0]
+
+    def _scan_lists(self) -> tuple[list[float], list[float], list[float]]:
+        """:meth:`_scan` as lists of floats (the scalar start's: NumPy's scalars cost microseconds)."""
+        return self._scans()[1]
+
+    def _scans(self) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], tuple[list[float], ...]]:
         if self._start_scan is None:
-            lowest = self.jump_off_radius if self.jump_off_radius > 0.0 else START_SCAN_FLOOR * self.h
-            points = max(int(math.ceil(START_SCAN_PER_DECADE * math.log10(self.ceiling / lowest))), 1) + 1
-            radii = np.geomspace(lowest, self.ceiling, points)
-            self._start_scan = (radii, *self._arrays(radii))
+            key = (*_branch_key(self), self.jump_off_radius)
+            if key not in _SCANS:
+                lowest = self.jump_off_radius if self.jump_off_radius > 0.0 else START_SCAN_FLOOR * self.h
+                points = max(int(math.ceil(START_SCAN_PER_DECADE * math.log10(self.ceiling / lowest))), 1) + 1
+                radii = np.geomspace(lowest, self.ceiling, points)
+                scan = (radii, *self._arrays(radii))
+                if len(_SCANS) >= _JUMP_OFFS_KEPT:
+                    _SCANS.clear()
+                _SCANS[key] = (scan, tuple(column.tolist() for column in scan))
+            self._start_scan = _SCANS[key]
         return self._start_scan
 
     def _start(self, depth: float) -> float:
@@ -211,12 +224,6 @@ class LayerBranch(Branch):
         if index == 0 or index == len(radii):
             return radii[min(index, len(radii) - 1)]
         return _hermite_start(depth, radii[index - 1:index + 1], depths[index - 1:index + 1], slopes[index - 1:index + 1])
-
-    def _scan_lists(self) -> tuple[list[float], list[float], list[float]]:
-        """:meth:`_scan` as lists of floats (the scalar start's: NumPy's scalars cost microseconds)."""
-        if self._start_lists is None:
-            self._start_lists = tuple(column.tolist() for column in self._scan())
-        return self._start_lists
 
     def radius(self, depth: float, rtol: float) -> float:
         """Stable-branch radius at ``depth``, converged to ``rtol`` (``nan`` below the jump-off depth; within
@@ -381,7 +388,7 @@ def _jump_off_radius(branch: LayerBranch) -> float:
     kept per branch's values (:data:`_JUMP_OFFS`: the runs of one contact's angles share it)."""
     from scipy.optimize import brentq
 
-    key = (branch.params.E_star, branch.params.nu, branch.work, branch.kc, branch.n, branch.layer)
+    key = _branch_key(branch)
     if key in _JUMP_OFFS:
         return _JUMP_OFFS[key]
     scale = (2.0 * math.pi * branch.work / (branch.params.E_star * branch.kc**2)) ** (1.0 / (2.0 * branch.n - 1.0))
@@ -398,9 +405,16 @@ def _jump_off_radius(branch: LayerBranch) -> float:
     return found
 
 
+def _branch_key(branch: LayerBranch) -> tuple:
+    """What a branch's values depend on: ``(E*, ν, Δγ, κₙc, n, layer)``."""
+    return branch.params.E_star, branch.params.nu, branch.work, branch.kc, branch.n, branch.layer
+
+
 #: The jump-off radii found, by the branch's values ``(E*, ν, Δγ, κₙc, n, layer)`` (at most :data:`_JUMP_OFFS_KEPT`).
 _JUMP_OFFS: dict[tuple, float] = {}
 _JUMP_OFFS_KEPT = 64
+#: The start scans made (:meth:`LayerBranch._scan`), by the branch's values and its jump-off radius (as many).
+_SCANS: dict[tuple, tuple] = {}
 
 
 #: The accuracy of :meth:`LayerBranch.radii` (the default ``radius_rtol`` of the continuum's tolerances).
