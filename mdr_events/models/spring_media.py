@@ -42,7 +42,7 @@ import numpy as np
 from mdr_events.contact.adhesion import Adhesion, AdhesionLaw
 from mdr_events.contact.elastomer import Elastomer
 from mdr_events.contact.friction import FrictionLaw
-from mdr_events.contact.indenters import Paraboloid, PowerLaw
+from mdr_events.contact.indenters import FlatPunch, Paraboloid, PowerLaw
 from mdr_events.contact.layer import HALF_SPACE, Layer, LayerBase
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
@@ -322,6 +322,8 @@ class LayerSprings:
         numpy.ndarray
             ``g`` (m).
         """
+        if isinstance(self.indenter, FlatPunch):  # (f = 0 under the face: g = 0 there on any layer, (L4))
+            return indenters.spring_profile(self.params, self.indenter)(positions)
         from mdr_events.theory.layer import power_law_profile
 
         return power_law_profile(positions, self.indenter, self.params.nu, self.layer)
@@ -360,6 +362,8 @@ class LayerSprings:
         float
             The radius (m; ``nan`` below the branch's jump-off).
         """
+        if isinstance(self.indenter, FlatPunch):  # (the face's radius from the first touch on)
+            return float(indenters.branch_radius(depth, self.params, self.params.dgamma0, self.indenter))
         return _layer_branch_radius(self.params, self.indenter, self.layer, float(depth))
 
     def normal_weights(self, positions: np.ndarray) -> np.ndarray:
@@ -660,10 +664,11 @@ def springs_of(params: Parameters, indenter: SimulatedProfile, profile: Callable
         raise TypeError(f"layer={shown(layer)} ({type(layer).__name__}) is not allowed; allowed: a mdr_events.Layer")
     if layer.is_half_space:
         return HalfSpaceSprings(params, indenter, profile)
-    if profile is not None or not isinstance(indenter, (type(None), PowerLaw)):
+    if profile is not None or not isinstance(indenter, (type(None), PowerLaw, FlatPunch)):
         given = "a profile g(x) given as a function" if profile is not None else f"profile={indenter!r}"
         raise ValueError(f"{given} is not allowed on {layer.describe()} (either method); allowed: the "
-                         "paraboloid (profile=None) or a PowerLaw (the layer's profile is tabulated for these)")
+                         "paraboloid (profile=None), a PowerLaw (the layer's profile is tabulated for these) or a "
+                         "FlatPunch (g = 0 under its face)")
     body = Paraboloid(params.R) if indenter is None else indenter
     return _LAYER_KINDS[layer.base](params, body, layer)
 

@@ -302,10 +302,16 @@ def layer_medium(params: Parameters, profile, layer: Layer) -> HalfSpaceMedium:
 
 @functools.lru_cache(maxsize=16)
 def _layer_medium(params: Parameters, indenter, layer: Layer) -> HalfSpaceMedium:
-    from mdr_events.contact.indenters import PowerLaw
+    from mdr_events.contact.indenters import FlatPunch, PowerLaw
 
     from .layer_media import LAYER_MEDIA
 
+    if isinstance(indenter, FlatPunch):
+        raise ValueError(f"profile={indenter!r} is not allowed on {layer.describe()} in the continuum method: its "
+                         "flat punch keeps the face's radius until Kendall's pull-off, while on a layer whose a/K'(a) "
+                         "falls (thin layers) the contact recedes under the face along d = -sqrt(4 pi a dgamma1/K'(a)) "
+                         "(layer_flat_punch_hess); allowed: method='discrete' (each spring at its own Heß limit), or "
+                         "the paraboloid or a PowerLaw")
     if not isinstance(indenter, (Paraboloid, PowerLaw)):
         raise ValueError(f"profile={indenter!r} is not allowed on {layer.describe()} in the continuum method; allowed: "
                          "the paraboloid or a PowerLaw (the layer's profile is tabulated for these)")
