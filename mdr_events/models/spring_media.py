@@ -49,6 +49,7 @@ from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic, mindlin, symbolic
+from mdr_events.theory.kinds import theory_of
 from mdr_events.validation import shown
 
 __all__ = ["HalfSpaceSprings", "LayerSprings", "FrictionlessLayerSprings", "Springs", "springs_of"]
@@ -269,14 +270,14 @@ class LayerSprings:
     ----------
     params : Parameters
         The material (``E*``, ``G*``, ``ν``), the works of adhesion and ``τ0``.
-    indenter : Paraboloid or PowerLaw
-        The indenter (the layer's profile is tabulated for these).
+    indenter : Paraboloid, PowerLaw or FlatPunch
+        The indenter (the layer's profile is tabulated for the first two; the flat punch's is ``0`` under its face).
     layer : Layer
         The layer (finite thickness).
     """
 
     params: Parameters
-    indenter: Paraboloid | PowerLaw
+    indenter: Paraboloid | PowerLaw | FlatPunch
     layer: Layer
 
     grouped = True
@@ -322,7 +323,7 @@ class LayerSprings:
         numpy.ndarray
             ``g`` (m).
         """
-        if isinstance(self.indenter, FlatPunch):  # (f = 0 under the face: g = 0 there on any layer, (L4))
+        if theory_of(self.indenter).flat_face:  # (f = 0 under the face: g = 0 there on any layer, (L4))
             return indenters.spring_profile(self.params, self.indenter)(positions)
         from mdr_events.theory.layer import power_law_profile
 
@@ -362,7 +363,7 @@ class LayerSprings:
         float
             The radius (m; ``nan`` below the branch's jump-off).
         """
-        if isinstance(self.indenter, FlatPunch):  # (the face's radius from the first touch on)
+        if theory_of(self.indenter).flat_face:  # (the face's radius from the first touch on)
             return float(indenters.branch_radius(depth, self.params, self.params.dgamma0, self.indenter))
         return _layer_branch_radius(self.params, self.indenter, self.layer, float(depth))
 
