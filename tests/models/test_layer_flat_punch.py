@@ -140,8 +140,25 @@ def test_a_thick_layers_punch_tends_to_the_half_spaces():
         assert abs(pull) <= SERIES_SLOPE * lam
 
 
-def test_the_continuum_refuses_the_flat_punch_on_a_layer_naming_why_and_what_runs_it():
+SERIAL = me.Engine(scheduler="serial")
+
+
+@pytest.mark.parametrize("call", [
+    lambda: me.simulate(PUNCH.replace(h=5e-3), VERTICAL, "continuum"),
+    lambda: me.sweep({"h": [5e-3, math.inf]}, PUNCH, "A", 90.0, engine=SERIAL, quantities=("normal_force_min",)),
+])
+def test_the_continuum_refuses_the_flat_punch_on_a_layer_before_it_runs_naming_why_and_what_runs_it(call):
     with pytest.raises(ValueError) as caught:
-        me.simulate(PUNCH.replace(h=5e-3), VERTICAL, "continuum")
+        call()
     message = str(caught.value)
     assert "recedes under the face" in message and "method='discrete'" in message and "\n" not in message
+
+
+def test_a_discrete_sweep_runs_the_flat_punch_over_the_thickness_as_simulate_does():
+    springs = me.Discrete(dx=5e-5, n_steps=1000)
+    swept = me.sweep({"h": [5e-3, math.inf]}, PUNCH, "A", 90.0, springs, engine=SERIAL,
+                     quantities=("normal_force_min",))
+    assert int(swept["failed"].sum()) == 0
+    for h in (5e-3, math.inf):
+        run = me.simulate(PUNCH.replace(h=h), me.Scenario("A", 90.0), springs).isel(alpha=0)
+        assert float(swept["normal_force_min"].sel(h=h)) == float(np.nanmin(run["normal_force"].values))
