@@ -42,13 +42,14 @@ import numpy as np
 from mdr_events.contact.adhesion import Adhesion, AdhesionLaw
 from mdr_events.contact.elastomer import Elastomer
 from mdr_events.contact.friction import FrictionLaw
-from mdr_events.contact.indenters import Paraboloid, PowerLaw
+from mdr_events.contact.indenters import FlatPunch, Paraboloid, PowerLaw
 from mdr_events.contact.layer import HALF_SPACE, Layer, LayerBase
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic, mindlin, symbolic
+from mdr_events.theory.kinds import theory_of
 from mdr_events.validation import shown
 
 __all__ = ["HalfSpaceSprings", "LayerSprings", "FrictionlessLayerSprings", "Springs", "springs_of"]
@@ -269,14 +270,14 @@ class LayerSprings:
     ----------
     params : Parameters
         The material (``E*``, ``G*``, ``ν``), the works of adhesion and ``τ0``.
-    indenter : Paraboloid or PowerLaw
-        The indenter (the layer's profile is tabulated for these).
+    indenter : Paraboloid, PowerLaw or FlatPunch
+        The indenter (the layer's profile is tabulated for the first two; the flat punch's is ``0`` under its face).
     layer : Layer
         The layer (finite thickness).
     """
 
     params: Parameters
-    indenter: Paraboloid | PowerLaw
+    indenter: Paraboloid | PowerLaw | FlatPunch
     layer: Layer
 
     grouped = True
@@ -322,6 +323,8 @@ class LayerSprings:
         numpy.ndarray
             ``g`` (m).
         """
+        if theory_of(self.indenter).flat_face:  # (f = 0 under the face: g = 0 there on any layer, (L4))
+            return indenters.spring_profile(self.params, self.indenter)(positions)
         from mdr_events.theory.layer import power_law_profile
 
         return power_law_profile(positions, self.indenter, self.params.nu, self.layer)
@@ -360,6 +363,8 @@ class LayerSprings:
         float
             The radius (m; ``nan`` below the branch's jump-off).
         """
+        if theory_of(self.indenter).flat_face:  # (the face's radius from the first touch on)
+            return float(indenters.branch_radius(depth, self.params, self.params.dgamma0, self.indenter))
         return _layer_branch_radius(self.params, self.indenter, self.layer, float(depth))
 
     def normal_weights(self, positions: np.ndarray) -> np.ndarray:
@@ -660,10 +665,11 @@ def springs_of(params: Parameters, indenter: SimulatedProfile, profile: Callable
         raise TypeError(f"layer={shown(layer)} ({type(layer).__name__}) is not allowed; allowed: a mdr_events.Layer")
     if layer.is_half_space:
         return HalfSpaceSprings(params, indenter, profile)
-    if profile is not None or not isinstance(indenter, (type(None), PowerLaw)):
+    if profile is not None or not isinstance(indenter, (type(None), PowerLaw, FlatPunch)):
         given = "a profile g(x) given as a function" if profile is not None else f"profile={indenter!r}"
         raise ValueError(f"{given} is not allowed on {layer.describe()} (either method); allowed: the "
-                         "paraboloid (profile=None) or a PowerLaw (the layer's profile is tabulated for these)")
+                         "paraboloid (profile=None), a PowerLaw (the layer's profile is tabulated for these) or a "
+                         "FlatPunch (g = 0 under its face)")
     body = Paraboloid(params.R) if indenter is None else indenter
     return _LAYER_KINDS[layer.base](params, body, layer)
 

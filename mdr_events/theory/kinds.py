@@ -50,6 +50,9 @@ class IndenterTheory:
         ``(profile, params, scenario)``: scenario A's or B's adhesive critical angle under ``τ0`` (degrees).
     friction_closed_forms : bool
         Whether :mod:`mdr_events.theory.mindlin`'s closed forms of the other friction laws take the kind.
+    flat_face : bool, default False
+        Whether the indenter's face is flat (``f = 0`` under it): its springs' profile ``0`` there and its branch's
+        radius the face's on a layer of any thickness too (the generalized MDR's ``g`` of ``f = 0``).
     """
 
     branch_radius: Callable[..., object]
@@ -58,6 +61,7 @@ class IndenterTheory:
     spring_profile: Callable[[Profile | None, Parameters], SpringProfile]
     critical_angle: Callable[[Profile | None, Parameters, str], float]
     friction_closed_forms: bool
+    flat_face: bool = False
 
 
 def _any_depth(profile: Profile | None, params: Parameters) -> float:
@@ -113,7 +117,8 @@ _FLAT_PUNCH = IndenterTheory(
     deepest=_any_depth,
     spring_profile=_flat_punch_springs,
     critical_angle=_power_law_critical_angle,
-    friction_closed_forms=True)
+    friction_closed_forms=True,
+    flat_face=True)
 _TABLE = IndenterTheory(
     branch_radius=tabulated.contact_radius,
     jump_off=tabulated.jump_off,

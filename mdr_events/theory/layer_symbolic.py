@@ -21,6 +21,13 @@ Sections (:func:`layer_model_afresh`):
    dx`` on Heß's branch ``d = g(a) − Δl``, minimised over ``a``): ``−2πRΔγ`` on Winkler's foundation (any ``κ``:
    the compressible bonded layer, any layer on a frictionless base) and ``−3πRΔγ`` on the thin incompressible bonded
    film, against ``−(3/2)πRΔγ`` on the half-space (``Δγ`` the work of adhesion of Heß's rule (8)).
+7. the flat punch of radius ``a`` on a layer: ``f = 0`` under the face makes ``g = 0`` and ``F₀ = 0``, so
+   ``F_N = K(a) d`` (``π κ a² d`` on Winkler's foundation); the face's edge lets go at ``d = −Δl(a)`` of section 5,
+   the half-space's flat punch (Kendall) at ``K' = 2E*``. Where ``a/K'(a)`` falls (``a K'' > K'``: the thin
+   incompressible film, ``Δl ∝ 1/a``) a contact smaller than the face holds further out: under depth control the
+   contact recedes under the face along ``d = −Δl(a)``; where it rises (the half-space) or stays (Winkler, every
+   spring at one limit) the whole face comes off at once. Under force control the pull-off is ``−K Δl`` at the face's
+   radius wherever ``a K²/K'`` rises (on all three).
 
 The relations are cached beside the paper's (:func:`layer_cache_path`), keyed by this module's source.
 """
@@ -58,7 +65,8 @@ LAYER_KEYS = ("layer_compliance_bonded", "layer_compliance_frictionless", "layer
               "layer_thin_film_edge_displacement", "layer_thin_film_profile", "layer_thin_film_depth",
               "layer_thin_film_force", "layer_energy_slope", "layer_hess_elongation", "layer_normal_force",
               "layer_winkler_pull_off_radius", "layer_winkler_pull_off", "layer_thin_film_pull_off_radius",
-              "layer_thin_film_pull_off")
+              "layer_thin_film_pull_off", "layer_flat_punch_force", "layer_flat_punch_winkler_force",
+              "layer_flat_punch_hess", "layer_flat_punch_recedes", "layer_flat_punch_pull_off")
 
 #: Hash of this module's source and SymPy's version: the key of :func:`layer_cache_path`.
 _SOURCE_DIGEST = symbolic.source_digest(__file__)
@@ -116,6 +124,7 @@ def layer_model_afresh() -> dict[str, Relation]:
     _derive_thin_film(add, bonded)
     _derive_griffith(add)
     _derive_thin_pull_off(add, out)
+    _derive_flat_punch(add, out)
     return out
 
 
@@ -303,3 +312,46 @@ def _derive_thin_pull_off(add, out: dict) -> None:
                  "a⁶ = 96R²Δγh³/G", a, radius, (R, dgamma, G, h)))
     add(Relation("layer_thin_film_pull_off", "(10)", "thin incompressible film: pull-off force −3πRΔγ", F_N, force,
                  (R, dgamma)))
+
+
+def _derive_flat_punch(add, out: dict) -> None:
+    """Section 7: the flat punch of radius ``a`` on a layer, from sections 3–5 (``g = 0``, ``F₀ = 0`` under the
+    face), each checked against the half-space's flat punch (:func:`mdr_events.theory.symbolic.relation`)."""
+    K_prime = sp.Symbol("K_prime", positive=True)
+    K_second = sp.Symbol("K_second")
+    stiffness = sp.Symbol("K", positive=True)
+    force = out["layer_normal_force"].rhs.subs({F0_fn(a): 0, g_fn(a): 0}).subs(K_fn(a), stiffness)
+    _check(sp.simplify(force - stiffness * d) == 0, f"the flat punch's force on a layer is {force}, not K d")
+    add(Relation("layer_flat_punch_force", "(10)", "flat punch of radius a on a layer: F_N = K(a) d (g = 0, F₀ = 0)",
+                 F_N, force, (stiffness, d)))
+    half = symbolic.relation("flat_punch_normal_force").rhs
+    _check(sp.simplify(force.subs(stiffness, 2 * E_star * a) - half) == 0, "K d is not the half-space's 2E* a d")
+    winkler = sp.simplify(force.subs(stiffness, out["layer_winkler_stiffness"].rhs))
+    add(Relation("layer_flat_punch_winkler_force", "(10)", "flat punch on Winkler's foundation: F_N = π κ a² d", F_N,
+                 winkler, (d, a, K_W)))
+    hess = out["layer_hess_elongation"].rhs
+    depth = -hess  # (the face's edge at Heß's limit: g(a) = 0)
+    add(Relation("layer_flat_punch_hess", "(8)", "flat punch on a layer: its edge lets go at d = −sqrt(4π a Δγ/K'(a))",
+                 d, depth, (a, dgamma, K_prime)))
+    _check(sp.simplify(depth.subs(K_prime, 2 * E_star) - symbolic.relation("flat_punch_pull_off_depth").rhs) == 0,
+           "the layer's flat punch does not come off at the half-space's depth at K' = 2E*")
+    # d(a/K'(a))/da = (K' − a K'')/K'²: Δl falls with the radius where a K'' > K' (a smaller contact holds further out)
+    elongation_slope = sp.diff(a / K_fn(a).diff(a), a)
+    recedes = sp.simplify(-elongation_slope * K_fn(a).diff(a) ** 2).subs(
+        {sp.Derivative(K_fn(a), (a, 2)): K_second, sp.Derivative(K_fn(a), a): K_prime})
+    add(Relation("layer_flat_punch_recedes", "", "flat punch on a layer: a K'' − K' > 0 where the contact recedes under "
+                 "the face (Δl falls with a)", sp.Symbol("recedes"), recedes, (a, K_prime, K_second)))
+    for name, K_of, sign in (("half-space", 2 * E_star * a, -1), ("Winkler", out["layer_winkler_stiffness"].rhs, 0),
+                             ("thin film", out["layer_thin_film_stiffness"].rhs, 1)):
+        value = sp.simplify(recedes.subs({K_second: sp.diff(K_of, a, 2), K_prime: sp.diff(K_of, a)}))
+        _check(sp.sign(value) == sign, f"the flat punch on the {name} has a K'' − K' = {value}")
+    pull_off = -stiffness * hess
+    add(Relation("layer_flat_punch_pull_off", "", "flat punch on a layer: pull-off force −K(a) Δl(a) under force control",
+                 F_N, pull_off, (stiffness, a, dgamma, K_prime)))
+    _check(sp.simplify(pull_off.subs({stiffness: 2 * E_star * a, K_prime: 2 * E_star})
+                       - symbolic.relation("flat_punch_pull_off_force").rhs) == 0,
+           "the layer's flat punch does not come off with Kendall's force on the half-space")
+    for name, K_of in (("half-space", 2 * E_star * a), ("Winkler", out["layer_winkler_stiffness"].rhs),
+                       ("thin film", out["layer_thin_film_stiffness"].rhs)):  # |F| rises with a: force control at a
+        held = sp.simplify(sp.diff((pull_off ** 2).subs({stiffness: K_of, K_prime: sp.diff(K_of, a)}), a))
+        _check(held.is_positive, f"the flat punch's pull-off force on the {name} does not rise with its radius")

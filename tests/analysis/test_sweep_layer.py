@@ -117,6 +117,23 @@ SPANS_REFUSE = ("friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bo
                 "spring in simulate(..., method='continuum'), and sweeps in method='discrete')")
 
 
+def test_what_the_continuum_sweeps_refusal_names_runs_coulombs_part_on_a_layer():
+    """The continuum sweep refuses Coulomb's part on a layer (its per-spring route costs 5–7 ms of CPU an output time,
+    0.1 s with adhesion: minutes a cell) naming the discrete sweep and simulate's continuum: both run it, the sweep's
+    cell simulate's discrete run bit for bit."""
+    assert "sweeps in method='discrete'" in SPANS_REFUSE and "simulate(..., method='continuum')" in SPANS_REFUSE
+    swept = me.sweep({"h": [5e-3, math.inf]}, COULOMB, "A", 20.0, SPRINGS, engine=SERIAL,
+                     quantities=("tangential_force_max", "normal_force_min"))
+    assert int(swept["failed"].sum()) == 0
+    for h in (5e-3, math.inf):
+        run = me.simulate(COULOMB.replace(h=h), me.Scenario("A", 20.0), SPRINGS).isel(alpha=0)
+        cell = swept.sel(h=h)
+        assert float(cell["tangential_force_max"]) == float(np.nanmax(np.abs(run["tangential_force"].values)))
+        assert float(cell["normal_force_min"]) == float(np.nanmin(run["normal_force"].values))
+    continuum = me.simulate(COULOMB.replace(h=5e-3), me.Scenario("A", 20.0), "continuum", samples=5)
+    assert np.all(np.isfinite(continuum["tangential_force"].values))
+
+
 @pytest.mark.parametrize("call, fragment", [
     (lambda: me.sweep({"h": [5e-3, 1e-3]}, COULOMB, "A", 20.0, engine=SERIAL), f"grid: {SPANS_REFUSE}"),
     (lambda: me.sweep({"alpha": [20.0]}, COULOMB.replace(h=5e-3), "A", engine=SERIAL,

@@ -54,13 +54,26 @@ def test_simulate_writes_a_run_on_the_layer_that_names_it(capsys, tmp_path):
     np.testing.assert_array_equal(ds["normal_force"].values, direct["normal_force"].values)
 
 
+def test_simulate_runs_the_flat_punch_on_a_layer_in_the_discrete_method(capsys, tmp_path):
+    """The command line's flat punch on a layer: the discrete run of simulate, bit for bit, stamped with both."""
+    status, _, err = run(capsys, "simulate", "--scenario", "A", "--alpha", "90", "--d_max", "1e-5", "--dx", "5e-5",
+                         "--n-steps", "1000", "--h", "5e-3", "--flat-punch", "1e-3", "--out", str(tmp_path))
+    assert status == 0, err
+    ds = me.open_result(tmp_path / "simulation_A_discrete.nc")
+    assert ds.attrs["param_layer_thickness"] == 5e-3 and ds.attrs["profile_radius"] == 1e-3
+    contact = dataclasses.replace(me.Contact.paper(), indenter=me.FlatPunch(1e-3)).replace(h=5e-3)
+    direct = me.simulate(contact, me.Scenario("A", alpha=[90.0], d_max=1e-5), "discrete", dx=5e-5, n_steps=1000)
+    np.testing.assert_array_equal(ds["normal_force"].values, direct["normal_force"].values)
+
+
 @pytest.mark.parametrize("options, fragment", [
     (["--h", "0"], "--h 0: Layer.thickness=0.0 is not allowed; allowed: a number > 0 (m)"),
     (["--h", "-1e-3"], "--h -0.001: Layer.thickness=-0.001 is not allowed"),
     (["--h", "nan"], "--h nan: Layer.thickness=nan is not allowed"),
     (["--layer-base", "glued"], "argument --layer-base: invalid choice: 'glued'; allowed: bonded, frictionless"),
     (["--h", "5e-3", "--layer-base", "frictionless"], "path 0 moves the indenter tangentially"),
-    (["--h", "5e-3", "--flat-punch", "1e-3"], "profile=FlatPunch(radius=0.001) is not allowed on layer h = 0.005 m"),
+    (["--h", "5e-3", "--flat-punch", "1e-3", "--method", "continuum"],
+     "profile=FlatPunch(radius=0.001) is not allowed on layer h = 0.005 m, bonded base in the continuum method"),
 ])
 def test_a_bad_layer_is_one_line_exit_2_and_nothing_written(capsys, tmp_path, options, fragment):
     status, _, err = run(capsys, "simulate", "--scenario", "A", "--alpha", "30", *options, "--out",

@@ -10,6 +10,7 @@ leaves it), started from the last root found: the continuum asks for nearby dept
 
 from __future__ import annotations
 
+import bisect
 import functools
 import math
 
@@ -34,11 +35,13 @@ __all__ = ["LayerBranch", "ROOT_ITERATIONS", "RADII_RTOL"]
 ROOT_ITERATIONS = 200
 #: How many radii's depth and slope a branch remembers (:attr:`LayerBranch._values`).
 VALUE_CACHE = 64
-#: Points per decade of the scan whose chord starts Newton's iteration for a radius (:meth:`LayerBranch.radius`):
-#: neighbours 10^(1/16) apart put the start within ~1e-4 of the root, three of Newton's steps from 1e-14. The start is a
-#: function of the depth alone, so that a radius never depends on the roots asked before it (a start from the last
-#: roots found made the same solution evaluated twice differ by an ulp, on some CPUs).
-START_SCAN_PER_DECADE = 16
+#: Points per decade of the scan whose inverse's cubic Hermite interpolant starts Newton's iteration for a radius
+#: (:meth:`LayerBranch.radius`, :meth:`LayerBranch.radii`): neighbours 10^(1/64) apart (3.7%) put the start within
+#: ~1e-9 of the root (the cubic's error ~ (Δa/a)⁴/384), one of Newton's steps from 1e-14 (the chord of 10^(1/16) was
+#: ~1e-3 off, three steps). The start is a function of the depth alone, so that a radius never depends on the roots
+#: asked before it (a start from the last roots found made the same solution evaluated twice differ by an ulp, on
+#: some CPUs).
+START_SCAN_PER_DECADE = 64
 #: The start scan's lowest radius without adhesion, in layer thicknesses (the branch starts at ``a = 0`` there).
 START_SCAN_FLOOR = 1e-6
 #: Points per decade of the scan that brackets the jump-off (where ``∂d/∂a`` turns positive; Brent's method refines).
@@ -92,7 +95,7 @@ class LayerBranch(Branch):
         self.jump_off_radius = _jump_off_radius(self) if work > 0.0 else 0.0
         self.jump_off_depth = self.depth(self.jump_off_radius)
         self._floor = self.jump_off_radius
-        self._start_scan: tuple[np.ndarray, np.ndarray] | None = None  # (radii, depths: made when first asked)
+        self._start_scan: tuple | None = None  # (the scan of radii, depths, slopes, as arrays and as lists: when asked)
 
     # --- the branch at one radius ----------------------------------------------------------------------------
     def _evaluate(self, a: float) -> tuple[float, float]:
@@ -188,21 +191,39 @@ class LayerBranch(Branch):
                                  slope)
 
     # --- radius of a depth -----------------------------------------------------------------------------------
-    def _start(self, depth: float) -> float:
-        """Newton's start for ``depth``: the chord of the two scanned radii about it (:data:`START_SCAN_PER_DECADE`,
-        from the jump-off, or :data:`START_SCAN_FLOOR` ``h`` without adhesion, to the tables' ceiling), the scan's
-        first or last radius outside it. A function of ``depth`` alone."""
+    def _scan(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The scan that starts Newton's iteration: :data:`START_SCAN_PER_DECADE` radii a decade from the jump-off (or
+        :data:`START_SCAN_FLOOR` ``h`` without adhesion) to the tables' ceiling, their depths and slopes (from the
+        tables' vectorised splines; made when first asked and kept per branch's values, :data:`_SCANS`: the runs of
+        one contact's angles share it)."""
+        return self._scans()[0]
+
+    def _scan_lists(self) -> tuple[list[float], list[float], list[float]]:
+        """:meth:`_scan` as lists of floats (the scalar start's: NumPy's scalars cost microseconds)."""
+        return self._scans()[1]
+
+    def _scans(self) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], tuple[list[float], ...]]:
         if self._start_scan is None:
-            lowest = self.jump_off_radius if self.jump_off_radius > 0.0 else START_SCAN_FLOOR * self.h
-            points = max(int(math.ceil(START_SCAN_PER_DECADE * math.log10(self.ceiling / lowest))), 1) + 1
-            radii = np.geomspace(lowest, self.ceiling, points)
-            self._start_scan = (radii, self._arrays(radii)[0])
-        radii, depths = self._start_scan
-        index = int(np.searchsorted(depths, depth))
-        if index == 0 or index == radii.size:
-            return float(radii[min(index, radii.size - 1)])
-        share = (depth - depths[index - 1]) / (depths[index] - depths[index - 1])
-        return float(radii[index - 1] + share * (radii[index] - radii[index - 1]))
+            key = (*_branch_key(self), self.jump_off_radius)
+            if key not in _SCANS:
+                lowest = self.jump_off_radius if self.jump_off_radius > 0.0 else START_SCAN_FLOOR * self.h
+                points = max(int(math.ceil(START_SCAN_PER_DECADE * math.log10(self.ceiling / lowest))), 1) + 1
+                radii = np.geomspace(lowest, self.ceiling, points)
+                scan = (radii, *self._arrays(radii))
+                if len(_SCANS) >= _JUMP_OFFS_KEPT:
+                    _SCANS.clear()
+                _SCANS[key] = (scan, tuple(column.tolist() for column in scan))
+            self._start_scan = _SCANS[key]
+        return self._start_scan
+
+    def _start(self, depth: float) -> float:
+        """Newton's start for ``depth``: the inverse's cubic Hermite interpolant on the scan (:meth:`_scan`) about it
+        (:func:`_hermite_start`), the scan's first or last radius outside it. A function of ``depth`` alone."""
+        radii, depths, slopes = self._scan_lists()
+        index = bisect.bisect_left(depths, depth)
+        if index == 0 or index == len(radii):
+            return radii[min(index, len(radii) - 1)]
+        return _hermite_start(depth, radii[index - 1:index + 1], depths[index - 1:index + 1], slopes[index - 1:index + 1])
 
     def radius(self, depth: float, rtol: float) -> float:
         """Stable-branch radius at ``depth``, converged to ``rtol`` (``nan`` below the jump-off depth; within
@@ -232,7 +253,8 @@ class LayerBranch(Branch):
                 return math.nan
             return self.jump_off_radius
         lower, upper = self._floor, math.inf
-        a, depth = self._start(depth), float(depth)
+        depth = float(depth)
+        a = self._start(depth)
         for _ in range(ROOT_ITERATIONS):
             value, slope = self._evaluate(a)  # (not remembered: the iterates would push out the span's radii)
             if value >= depth:
@@ -258,7 +280,8 @@ class LayerBranch(Branch):
         raise RuntimeError(f"the radius of depth={depth!r} m on {self.layer.describe()} did not converge")
 
     def depths(self, a: np.ndarray) -> np.ndarray:
-        """:meth:`depth` for an array of radii.
+        """:meth:`depth` for an array of radii (to an ulp or two: NumPy's logarithm and exponential, not the math
+        module's).
 
         Parameters
         ----------
@@ -271,7 +294,11 @@ class LayerBranch(Branch):
             The depths (m), the shape of ``a`` (0 at ``a <= 0``).
         """
         a = np.asarray(a, dtype=float)
-        return np.fromiter((self.depth(float(value)) for value in a.ravel()), float, a.size).reshape(a.shape)
+        positive = a > 0
+        if not np.any(positive):
+            return np.zeros(a.shape)
+        # (the tables' vectorised splines: the scalar depth's value to an ulp or two, at a fraction of a loop's cost)
+        return np.where(positive, self._arrays(np.where(positive, a, self.ceiling))[0], 0.0)
 
     def _arrays(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``d(a)`` and ``∂d/∂a`` for an array of radii (> 0), from the tables' vectorised splines."""
@@ -304,17 +331,20 @@ class LayerBranch(Branch):
         return out
 
     def _roots(self, depth: np.ndarray) -> np.ndarray:
-        """The radii of depths above the jump-off (:meth:`radii`)."""
-        highest = self.radius(float(np.max(depth)), RADII_RTOL)
-        lowest = self.jump_off_radius if self.jump_off_radius > 0.0 else highest * _SCAN_FLOOR
-        grid = np.geomspace(lowest, highest, _SCAN_POINTS)
-        scanned = self._arrays(grid)[0]
-        index = np.clip(np.searchsorted(scanned, depth), 1, grid.size - 1)
-        lower, upper = grid[index - 1], grid[index]
-        share = np.clip((depth - scanned[index - 1]) / (scanned[index] - scanned[index - 1]), 0.0, 1.0)
-        a = lower + share * (upper - lower)  # (the scan's chord: Newton starts close)
-        upper = np.where(depth >= scanned[-1], 2.0 * highest, upper)  # (the deepest's root, to rounding beyond it)
-        lower = np.where(depth <= scanned[0], 0.0, lower)
+        """The radii of depths above the jump-off (:meth:`radii`), started as :meth:`_start` starts one."""
+        radii, depths, slopes = self._scan()
+        if float(np.max(depth)) > depths[-1]:
+            self.radius(float(np.max(depth)), RADII_RTOL)  # (beyond the tables: its error, naming the layer)
+        index = np.clip(np.searchsorted(depths, depth), 1, radii.size - 1)
+        lower, upper = radii[index - 1], radii[index]
+        pairs = (np.stack([radii[index - 1], radii[index]]), np.stack([depths[index - 1], depths[index]]),
+                 np.stack([slopes[index - 1], slopes[index]]))
+        a = _hermite_start(depth, *pairs)
+        upper = np.where(depth >= depths[-1], 2.0 * radii[-1], upper)  # (the ceiling's root, to rounding beyond it)
+        below = depth <= depths[0]  # (no adhesion, below the scan: d ∝ aⁿ towards a = 0)
+        if np.any(below):
+            lower = np.where(below, 0.0, lower)
+            a = np.where(below, radii[0] * np.clip(depth / depths[0], 0.0, 1.0) ** (1.0 / self.n), a)
         out = np.empty(depth.shape)
         active = np.arange(depth.size)  # (the depths whose roots are still moving: the others are left alone)
         for _ in range(ROOT_ITERATIONS):
@@ -336,12 +366,34 @@ class LayerBranch(Branch):
         raise RuntimeError(f"the radii of {depth.size} depths on {self.layer.describe()} did not converge")
 
 
+def _hermite_start(depth, radii: np.ndarray, depths: np.ndarray, slopes: np.ndarray):
+    """The radius of ``depth`` on the cubic Hermite interpolant of the inverse ``a(d)`` between two scanned points
+    (``radii``, ``depths``, ``slopes`` ``∂d/∂a``: each of two rows, the lower point first), within about 1e-8 of the
+    root at :data:`START_SCAN_PER_DECADE`: one or two of Newton's steps from :data:`RADII_RTOL`. Where a slope is not
+    positive (the jump-off's, where the inverse has a square root) or the cubic leaves the interval, the chord."""
+    (r0, r1), (d0, d1), (s0, s1) = radii, depths, slopes
+    width, rise = d1 - d0, r1 - r0
+    t = (depth - d0) / width
+    chord = r0 + t * rise
+    if type(depth) is float:  # (one depth, in floats: the scalar start's)
+        if not (s0 > 0.0 and s1 > 0.0):
+            return chord
+        m0, m1 = width / s0, width / s1
+        cubic = r0 + t * (m0 + t * (3.0 * rise - 2.0 * m0 - m1 + t * (m0 + m1 - 2.0 * rise)))
+        return cubic if r0 <= cubic <= r1 else chord
+    with np.errstate(divide="ignore", invalid="ignore"):
+        m0, m1 = width / s0, width / s1
+        cubic = r0 + t * (m0 + t * (3.0 * rise - 2.0 * m0 - m1 + t * (m0 + m1 - 2.0 * rise)))
+    good = (s0 > 0.0) & (s1 > 0.0) & (cubic >= r0) & (cubic <= r1)
+    return np.where(good, cubic, chord)
+
+
 def _jump_off_radius(branch: LayerBranch) -> float:
     """Where the branch's ``∂d/∂a`` turns positive, its least depth: a scan brackets it, Brent's method refines it;
     kept per branch's values (:data:`_JUMP_OFFS`: the runs of one contact's angles share it)."""
     from scipy.optimize import brentq
 
-    key = (branch.params.E_star, branch.params.nu, branch.work, branch.kc, branch.n, branch.layer)
+    key = _branch_key(branch)
     if key in _JUMP_OFFS:
         return _JUMP_OFFS[key]
     scale = (2.0 * math.pi * branch.work / (branch.params.E_star * branch.kc**2)) ** (1.0 / (2.0 * branch.n - 1.0))
@@ -358,13 +410,17 @@ def _jump_off_radius(branch: LayerBranch) -> float:
     return found
 
 
+def _branch_key(branch: LayerBranch) -> tuple:
+    """What a branch's values depend on: ``(E*, ν, Δγ, κₙc, n, layer)``."""
+    return branch.params.E_star, branch.params.nu, branch.work, branch.kc, branch.n, branch.layer
+
+
 #: The jump-off radii found, by the branch's values ``(E*, ν, Δγ, κₙc, n, layer)`` (at most :data:`_JUMP_OFFS_KEPT`).
 _JUMP_OFFS: dict[tuple, float] = {}
 _JUMP_OFFS_KEPT = 64
+#: The start scans made (:meth:`LayerBranch._scan`), by the branch's values and its jump-off radius (as many).
+_SCANS: dict[tuple, tuple] = {}
 
 
 #: The accuracy of :meth:`LayerBranch.radii` (the default ``radius_rtol`` of the continuum's tolerances).
 RADII_RTOL = 1e-14
-#: Points of the scan that starts :meth:`LayerBranch.radii`'s iteration, and the scan's lowest radius over the highest
-#: without adhesion (the branch starts at ``a = 0`` there).
-_SCAN_POINTS, _SCAN_FLOOR = 64, 1e-9

@@ -217,7 +217,10 @@ class LayerMedium(HalfSpaceMedium):
         """
         from mdr_events.theory.layer import normal_force
 
-        return normal_force(depth, radius, self.indenter, params.E_star, params.nu, self.layer)
+        # (the relation unchecked: the continuum hands it valid radii and depths, and its arguments' checks cost a
+        # third of the call)
+        with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):  # (as the checked one)
+            return normal_force.__wrapped__(depth, radius, self.indenter, params.E_star, params.nu, self.layer)
 
 
 class FrictionlessLayerMedium(LayerMedium):

@@ -37,7 +37,8 @@ from mdr_events.theory import power_law, symbolic, tabulated
 if TYPE_CHECKING:
     from .anchors import AnchorMap, Piece
 
-__all__ = ["HalfSpaceMedium", "HALF_SPACE_MEDIUM", "medium_of", "check_law", "layer_medium", "FACTOR_CACHE"]
+__all__ = ["HalfSpaceMedium", "HALF_SPACE_MEDIUM", "medium_of", "check_law", "check_face", "layer_medium",
+           "FACTOR_CACHE"]
 
 
 #: How many radii's tangential factors a layer's medium remembers (``LayerMedium._factor``, :mod:`.layer_media`).
@@ -245,6 +246,33 @@ def check_law(friction: FrictionLaw, layer: Layer) -> None:
                          "spring by spring in simulate(..., method='continuum'), and sweeps in method='discrete')")
 
 
+def check_face(indenter, layer: Layer) -> None:
+    """Refuse a flat face on a finite layer: the continuum's flat punch keeps the face's radius until Kendall's
+    pull-off, while on a layer whose ``a/K'(a)`` falls the contact recedes under the face
+    (:mod:`mdr_events.theory.layer_symbolic`, section 7); the discrete method runs it, each spring at its own Heß limit.
+
+    Parameters
+    ----------
+    indenter : PowerLaw, FlatPunch, TabulatedProfile or None
+        The indenter.
+    layer : Layer
+        The body.
+
+    Raises
+    ------
+    ValueError
+        A flat face on a layer of finite thickness.
+    """
+    from mdr_events.theory.kinds import theory_of
+
+    if not layer.is_half_space and theory_of(indenter).flat_face:
+        raise ValueError(f"profile={indenter!r} is not allowed on {layer.describe()} in the continuum method: its "
+                         "flat punch keeps the face's radius until Kendall's pull-off, while on a layer whose a/K'(a) "
+                         "falls (thin layers) the contact recedes under the face along d = -sqrt(4 pi a dgamma1/K'(a)) "
+                         "(layer_flat_punch_hess); allowed: method='discrete' (each spring at its own Heß limit), or "
+                         "the paraboloid or a PowerLaw")
+
+
 def medium_of(params: Parameters, friction: FrictionLaw, profile, layer: Layer = HALF_SPACE) -> HalfSpaceMedium:
     """The continuum's medium of a run on ``layer`` (the one place the body's kind is looked up).
 
@@ -306,6 +334,7 @@ def _layer_medium(params: Parameters, indenter, layer: Layer) -> HalfSpaceMedium
 
     from .layer_media import LAYER_MEDIA
 
+    check_face(indenter, layer)
     if not isinstance(indenter, (Paraboloid, PowerLaw)):
         raise ValueError(f"profile={indenter!r} is not allowed on {layer.describe()} in the continuum method; allowed: "
                          "the paraboloid or a PowerLaw (the layer's profile is tabulated for these)")

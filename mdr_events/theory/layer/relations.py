@@ -39,6 +39,9 @@ class _HalfSpaceFactors:
     def force_factor(self, lam) -> np.ndarray:
         return np.full(np.shape(lam), self.exponent / (self.exponent + 1.0))
 
+    def force_factors(self, lam) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        return self.stiffness_factor(lam), self.profile_factor(lam), self.force_factor(lam)
+
 
 def _factors(nu: float, layer: Layer, exponent: float = 2.0):
     if not isinstance(layer, Layer):
@@ -420,8 +423,9 @@ def normal_force(d, a, profile, E_star: float, nu: float, layer: Layer) -> np.nd
     factors = _factors(nu, layer, n)
     lam = _relative(a, layer)
     g_half = _abel_factor(n) * c * a**n
-    at_edge = g_half * factors.profile_factor(lam)
-    return 2.0 * E_star * a * (g_half * factors.force_factor(lam) + factors.stiffness_factor(lam) * (d - at_edge))
+    stiffness, profile_factor, force_factor = factors.force_factors(lam)
+    at_edge = g_half * profile_factor
+    return 2.0 * E_star * a * (g_half * force_factor + stiffness * (d - at_edge))
 
 
 @checked_relation

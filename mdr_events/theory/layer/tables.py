@@ -58,6 +58,8 @@ def table_cache_path(nu: float, base: LayerBase | str, exponent: float) -> Path 
 
 #: The tabulated columns, as logarithms: ``Φ``, ``Θ(1)``, ``γₙ``, ``χₙ``.
 _COLUMNS = ("stiffness", "edge", "profile", "force")
+#: The columns of the normal force (10), :meth:`LayerTable.force_factors`.
+_FORCE_COLUMNS = ("stiffness", "profile", "force")
 
 
 def _table_grid() -> np.ndarray:
@@ -136,7 +138,26 @@ class LayerTable:
         lam = self._lam(lam)
         small = lam < LAMBDA_MIN
         s = np.log(np.where(small, LAMBDA_MIN, lam))
-        value = np.exp(self._splines[name](s))
+        return self._column(name, lam, small, s, derivative)
+
+    @functools.cached_property
+    def _force_splines(self):
+        """The splines of ``Φ``, ``γₙ``, ``χₙ`` as one spline of three columns (one knot vector: the same values, each
+        column's sum taken as its own spline's, at a third of the calls)."""
+        from scipy.interpolate import BSpline
+
+        first = self._splines["stiffness"]
+        columns = [self._splines[name] for name in _FORCE_COLUMNS]
+        if not all(np.array_equal(first.t, column.t) for column in columns):
+            raise ValueError("columns of different knots are not allowed; allowed: the columns of one table")
+        return BSpline(first.t, np.stack([column.c for column in columns], axis=-1), first.k)
+
+    def _column(self, name: str, lam: np.ndarray, small: np.ndarray, s: np.ndarray,
+                derivative: bool = False, logarithm: np.ndarray | None = None) -> np.ndarray:
+        """Column ``name`` (or its derivative) at the checked ``λ``, ``small = λ < LAMBDA_MIN``, ``s = ln λ`` (clamped
+        to the table's first node): :meth:`_value`'s, and :meth:`force_factors`' three at one logarithm
+        (``logarithm``: the spline's value at ``s``, where already evaluated)."""
+        value = np.exp(self._splines[name](s) if logarithm is None else logarithm)
         if derivative:  # d/dλ = (d ln y/ds) y / λ
             value = self._splines[name](s, 1) * value / np.where(small, LAMBDA_MIN, lam)
         if np.any(small):
@@ -209,6 +230,32 @@ class LayerTable:
             ``λ`` outside the table.
         """
         return self._value("profile", lam, derivative)
+
+    def force_factors(self, lam) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`stiffness_factor`, :meth:`profile_factor` and :meth:`force_factor` at once (one check of ``λ``, one
+        logarithm: the same values).
+
+        Parameters
+        ----------
+        lam : float or array_like
+            ``a/h`` in ``[0, LAMBDA_MAX]``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``Φ``, ``γₙ``, ``χₙ``.
+
+        Raises
+        ------
+        ValueError
+            ``λ`` outside the table.
+        """
+        lam = self._lam(lam)
+        small = lam < LAMBDA_MIN
+        s = np.log(np.where(small, LAMBDA_MIN, lam))
+        logarithms = np.moveaxis(self._force_splines(s), -1, 0).copy()  # (each column contiguous, as one spline's)
+        return tuple(self._column(name, lam, small, s, logarithm=logarithm)
+                     for name, logarithm in zip(_FORCE_COLUMNS, logarithms))
 
     def force_factor(self, lam) -> np.ndarray:
         """``χₙ(λ) = F₀(a)/(2E* a g∞(a))``: the non-adhesive force of the power law.

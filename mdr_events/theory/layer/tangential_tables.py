@@ -52,6 +52,8 @@ def tangential_table_cache_path(nu: float) -> Path | None:
 
 #: The tabulated columns (logarithms): ``Φ_L``, ``Φ_T``, ``Ψ_L(1)``, ``Ψ_T(1)``.
 _COLUMNS = ("phi_l", "phi_t", "edge_l", "edge_t")
+#: The columns of ``Φ_t`` (T3), :meth:`TangentialTable.stiffness_factor`.
+_STIFFNESS_COLUMNS = ("phi_l", "phi_t")
 
 
 def _table_grid() -> np.ndarray:
@@ -98,14 +100,29 @@ class TangentialTable:
 
         return {name: make_interp_spline(self.columns["s"], self.columns[name], k=5) for name in _COLUMNS}
 
-    def _values(self, lam) -> tuple[np.ndarray, ...]:
+    def _values(self, lam, names: tuple[str, ...] = _COLUMNS) -> tuple[np.ndarray, ...]:
+        """The columns ``names`` (default all four) at ``λ``: the series below :data:`LAMBDA_MIN`."""
         lam = table_argument(lam, LAMBDA_MAX, "solve_tangential_punch solves up to LAMBDA_SOLVE_MAX")
         small = lam < LAMBDA_MIN
         s = np.log(np.where(small, LAMBDA_MIN, lam))
         k_l, k_t = (float(value) for value in self.columns["k0"])
         series = {"phi_l": 1.0 / (1.0 - 2.0 * k_l * lam / np.pi), "phi_t": 1.0 / (1.0 - 2.0 * k_t * lam / np.pi)}
         series.update(edge_l=series["phi_l"], edge_t=series["phi_t"])
-        return tuple(np.where(small, series[name], np.exp(self._splines[name](s))) for name in _COLUMNS)
+        if names == _STIFFNESS_COLUMNS:  # (one spline of both columns: the same values, each column contiguous)
+            logarithms = np.moveaxis(self._stiffness_splines(s), -1, 0).copy()
+            return tuple(np.where(small, series[name], np.exp(logarithm)) for name, logarithm in zip(names, logarithms))
+        return tuple(np.where(small, series[name], np.exp(self._splines[name](s))) for name in names)
+
+    @functools.cached_property
+    def _stiffness_splines(self):
+        """The splines of ``Φ_L``, ``Φ_T`` as one spline of two columns (one knot vector: each column's sum taken as
+        its own spline's, at half the calls)."""
+        from scipy.interpolate import BSpline
+
+        first, second = (self._splines[name] for name in _STIFFNESS_COLUMNS)
+        if not np.array_equal(first.t, second.t):
+            raise ValueError("columns of different knots are not allowed; allowed: the columns of one table")
+        return BSpline(first.t, np.stack([first.c, second.c], axis=-1), first.k)
 
     def stiffness_factor(self, lam) -> np.ndarray:
         """``Φ_t(λ) = K_t(a)/(2G* a)`` (T3).
@@ -125,7 +142,7 @@ class TangentialTable:
         ValueError
             ``λ`` outside the table.
         """
-        phi_l, phi_t, _, _ = self._values(lam)
+        phi_l, phi_t = self._values(lam, _STIFFNESS_COLUMNS)  # (the edges' columns are not read)
         return _combine(self.nu, phi_l, phi_t)
 
     def slope_factor(self, lam) -> np.ndarray:
