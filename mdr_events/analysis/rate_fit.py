@@ -35,7 +35,7 @@ from mdr_events.models.continuum.rate_edge import EdgeUnresolved, solve_edge
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters, check_parameters
-from mdr_events.validation import SCALE_MAX, check_flag, check_real, real_array, shown
+from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_flag, check_real, real_array, shown
 
 __all__ = ["RateMeasurement", "fit_rate_adhesion", "RATE_FREE_NAMES", "RATE_FIT_RTOL", "RATE_FIT_METHOD",
            "RATE_FIT_CONTENT"]
@@ -143,9 +143,10 @@ def _check_curve(name: str, m: RateMeasurement) -> None:
     if np.max(np.abs(force)) > SCALE_MAX:
         raise ValueError(f"{name}.normal_force={float(force[np.argmax(np.abs(force))])!r} N is not allowed; allowed: "
                          f"magnitudes at most {SCALE_MAX:.2g} N (the double range's square root)")
-    if m.noise is not None:
-        check_real(f"{name}.noise", m.noise, f"None or a finite number > 0 and at most {SCALE_MAX:.2g} (N)",
-                   lambda value: 0.0 < value <= SCALE_MAX)
+    if m.noise is not None:  # (from SCALE_MIN: its weight 1/noise finite; round nineteen: 1e-320 gave inf weights,
+        # whose nan residuals blamed the start's edge)
+        check_real(f"{name}.noise", m.noise, f"None or a finite number from {SCALE_MIN:.2g} to {SCALE_MAX:.2g} (N)",
+                   lambda value: SCALE_MIN <= value <= SCALE_MAX)
 
 
 def _law(values: dict[str, float]) -> RateDependentAdhesion:
@@ -213,7 +214,7 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
     count = len(measurements)
     names = list(free) + ([f"offset_{index}" for index in range(count)] if offsets else [])
     forces = [np.asarray(m.normal_force, dtype=float) for m in measurements]
-    weights = [1.0 / m.noise if m.noise is not None else 1.0 for m in measurements]
+    weights, scale = _weights(measurements)
     curves: dict[tuple[float, ...], list[np.ndarray] | None] = {}  # the model's curves by the law's values, the
     # latest few (None: the law's edge is not followed on a path, a rejected trial)
     solves, rejected = [0], [0]
@@ -253,9 +254,14 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
         for index, (model, force, weight) in enumerate(zip(models, forces, weights)):
             if offsets:
                 model = model + theta[len(free) + index]
-            parts.append(weight * (model - force))
+            with np.errstate(over="ignore"):
+                parts.append(weight * (model - force))
+            _check_residuals(index, parts[-1], model, measurements[index], bound)
         return np.concatenate(parts)
 
+    from mdr_events.analysis.fit_problem import largest_residual  # (here: the module registers a schema on every write)
+
+    bound = largest_residual(sum(force.size for force in forces))
     theta0 = np.array([math.log(base[name]) if name in _LOG_SCALED else base[name] for name in free]
                       + [0.0] * (count if offsets else 0))
     lower = np.array([N_BOUNDS[0] if name == "n" else -np.inf for name in free] + [-np.inf] * (len(names) - len(free)))
@@ -266,7 +272,33 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
                                                                                      (lower, upper), blocks),
                                       bounds=(lower, upper), x_scale="jac", xtol=FIT_TOLERANCE, ftol=FIT_TOLERANCE,
                                       gtol=FIT_TOLERANCE)
-    return _result(solution, names, free, values_of, measurements, forces, weights, (solves[0], rejected[0]))
+    return _result(solution, names, free, values_of, measurements, forces, scale, (solves[0], rejected[0]))
+
+
+def _weights(measurements: Sequence[RateMeasurement]) -> tuple[list[float], float]:
+    """Each curve's weight ``1/σ`` (1 where no noise is given) over the largest, and that largest weight ``c``.
+
+    ``least_squares`` minimises the residuals weighted by the ratios alone, each curve's ``(model − measured) σ_min/σ``
+    in newtons, whatever the noises' scale: the optimum of ``Σ r²`` does not change with a common factor of the
+    weights, while their own scale ran the trust region's products out of the double range (round nineteen: a
+    noise of 1e-100 N gave SciPy's overflow warnings and a fit stopped where it started, exit 0; 1e-300 N "array
+    must not contain infs or NaNs"). The covariance and the RMS are scaled back by ``c`` (:func:`_result`)."""
+    weights = [1.0 / m.noise if m.noise is not None else 1.0 for m in measurements]
+    scale = max(weights)
+    return [weight / scale for weight in weights], scale
+
+
+def _check_residuals(index: int, residual: np.ndarray, model: np.ndarray, m: RateMeasurement, bound: float) -> None:
+    """Refuse curve ``index``'s residuals (weighted as :func:`_weights` weighs them) beyond ``bound``
+    (:func:`~mdr_events.analysis.fit_problem.largest_residual`, the paper law's fit's: their squares and the
+    Jacobian's would overflow), naming both curves' magnitudes."""
+    if np.all(np.abs(residual) <= bound):
+        return
+    largest = float(np.max(np.abs(residual)))  # (inf where it overflowed)
+    raise ValueError(f"measurements[{index}]: the residual model − measured reaches {largest:.3g} N with the model's "
+                     f"largest |F_N| {float(np.max(np.abs(model))):.3g} N and the measured "
+                     f"{float(np.max(np.abs(m.normal_force))):.3g} N; allowed: residuals up to {bound:.3g} N, whose "
+                     "squares stay finite (check the data's unit, or the start)")
 
 
 def _check_start(residual: np.ndarray, start: RateDependentAdhesion) -> None:
@@ -331,14 +363,18 @@ def _jacobian(residuals, theta: np.ndarray, laws: int, bounds: tuple[np.ndarray,
     return np.column_stack(columns + ([blocks] if blocks is not None else []))
 
 
-def _result(solution, names, free, values_of, measurements, forces, weights, solves) -> xr.Dataset:
-    """The dataset of the fit at ``solution.x``: estimates, intervals, correlations, each curve's RMS."""
+def _result(solution, names, free, values_of, measurements, forces, scale, solves) -> xr.Dataset:
+    """The dataset of the fit at ``solution.x``: estimates, intervals, correlations, each curve's RMS (the residuals
+    and Jacobian weighted over the largest weight ``scale``, :func:`_weights`)."""
     residual, jacobian = solution.fun, solution.jac
     dof = max(residual.size - len(names), 1)
     known = all(m.noise is not None for m in measurements)
-    s2 = 1.0 if known else float(residual @ residual) / dof
+    # cov = s² (JᵀJ)⁻¹ with J = scale J': s² / scale² (JᵀJ')⁻¹; s² = 1 with every noise given, else Σr²/dof
+    variance = (1.0 / scale) ** 2 if known else float(residual @ residual) / dof
+    with np.errstate(over="ignore"):
+        s2 = 1.0 if known else float(np.float64(variance) * scale * scale)
     bounds = np.full(jacobian.shape[1], -np.inf), np.full(jacobian.shape[1], np.inf)  # (verdicts not read)
-    covariance, error, _, _, correlation = identifiability_of(jacobian, solution.x, *bounds, s2)
+    covariance, error, _, _, correlation = identifiability_of(jacobian, solution.x, *bounds, variance)
     from scipy import stats  # (here: the module registers its schema on every result's write, stats costs ~0.1 s)
 
     quantile = float(stats.norm.ppf(0.5 + CONFIDENCE / 2.0))
@@ -359,7 +395,7 @@ def _result(solution, names, free, values_of, measurements, forces, weights, sol
         units.append(RATE_FREE_NAMES.get(name, "N"))
     rms, start = [], 0
     for force in forces:
-        rms.append(float(np.sqrt(np.mean(residual[start:start + force.size] ** 2))))
+        rms.append(scaled_or_inf(float(np.sqrt(np.mean(residual[start:start + force.size] ** 2))), scale))
         start += force.size
     dataset = xr.Dataset(
         {"estimate": ("parameter", np.array(estimate)), "standard_error": ("parameter", error),
