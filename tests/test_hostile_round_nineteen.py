@@ -59,3 +59,48 @@ def test_a_noise_whose_weight_overflows_is_named(noise):
     """Its weight 1/σ is beyond the double range: refused naming the noise (1e-320 blamed the start's edge)."""
     message = one_line_naming(lambda: fit_rate_adhesion([_curve(1e-6, noise)], PAPER, START), "measurements[0].noise")
     assert "1.5e-154" in message, message
+
+
+# --- N2: the joint fit exited 0 where fit exits 1: a curve of zeros beside a measured one (the law fitted to both,
+# every value "determined"), curves in the wrong unit (--units normal_force=mN on newtons: v_ref's 95 % interval
+# eleven decades wide). Its verdict now is fit's: each value's identifiability (a scaled standard error above
+# POOR_STANDARD_ERROR is poorly determined) and each curve's misfit (the residuals' RMS over its noise, given or
+# estimated as fit estimates it, above MISFIT_RMS: the law does not describe it) ------------------------------------
+
+
+def test_a_curve_the_law_does_not_describe_is_named_and_the_fit_is_not_determined():
+    from mdr_events.analysis.fit_diagnostics import MISFIT_RMS
+    from mdr_events.app.jobs import RateFitJob
+
+    measured = [_curve(1e-6, None), _curve(4e-6, None)]
+    measured[0] = measured[0]._replace(normal_force=np.zeros_like(measured[0].normal_force))
+    result = fit_rate_adhesion(measured, PAPER, START)
+    assert result["misfit"].values[0] > MISFIT_RMS, result["misfit"].values
+    assert RateFitJob.misfits(result) and not RateFitJob.determined(result)
+
+
+def test_the_law_fitted_to_its_own_curves_describes_them():
+    """The counterpart: the noise-free curves of the law are described (misfit far below MISFIT_RMS: the noise is
+    estimated at its floor, a share of the curve's magnitude) and every value determined."""
+    from mdr_events.app.jobs import RateFitJob
+
+    result = fit_rate_adhesion([_curve(speed, None) for speed in (1e-6, 4e-6)], PAPER, START)
+    assert list(result["identifiability"].values) == ["determined", "determined"]
+    assert RateFitJob.determined(result), result["misfit"].values
+
+
+def test_a_poorly_determined_value_is_not_determined():
+    """fit's rule on the joint fit's result: a value poorly determined (here v_ref, as the wrong unit's fit found it:
+    interval [9.2e-18, 8.9e-7] m/s) exits 1, whatever its interval's finiteness and the solver's status."""
+    import xarray as xr
+
+    from mdr_events.app.jobs import RateFitJob
+
+    result = xr.Dataset({"estimate": ("parameter", [2.9e-12, 0.04]), "standard_error": ("parameter", [1.9e-11, 1e-5]),
+                         "interval_lower": ("parameter", [9.2e-18, 0.0399]),
+                         "interval_upper": ("parameter", [8.9e-7, 0.0401]),
+                         "identifiability": ("parameter", ["poorly determined", "determined"]),
+                         "misfit": ("measurement", [1.0, 1.0])},
+                        coords={"parameter": ["v_ref", "n"]}, attrs={"status": 2})
+    assert not RateFitJob.determined(result)
+    assert RateFitJob.determined(result.assign(identifiability=("parameter", ["determined", "determined"])))

@@ -26,7 +26,9 @@ import numpy as np
 import xarray as xr
 from scipy import optimize
 
-from mdr_events.analysis.fit_diagnostics import exp_or_inf, identifiability_of, scaled_or_inf
+from mdr_events.analysis.fit_data import estimate_noise
+from mdr_events.analysis.fit_diagnostics import (MISFIT_RMS, Identifiability, exp_or_inf, identifiability_of,
+                                                 scaled_or_inf)
 from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS, check_rate_factor
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.io.datasets import register_schema
@@ -195,7 +197,10 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
     -------
     xarray.Dataset
         ``estimate``, ``standard_error``, ``interval_lower`` and ``interval_upper`` per parameter (the law's free
-        values, then the offsets), ``correlation`` between them, and per curve the RMS of its weighted residuals;
+        values, then the offsets) with its ``identifiability`` (as :func:`~mdr_events.fit`'s verdicts, the law's values
+        on its scale: :func:`_verdict`), ``correlation`` between them, and per curve the RMS of its weighted residuals
+        and ``misfit``, the RMS of its residuals over its noise (given, or estimated from the curve as fit estimates
+        it: above :data:`~mdr_events.analysis.fit_diagnostics.MISFIT_RMS` the law does not describe it);
         attributes: the residuals' variance ``s2``, the solves, the rejected trials (``rejected_trials``: laws
         whose edge a path did not follow, module docstring), ``least_squares``' status and message.
 
@@ -264,8 +269,7 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
     bound = largest_residual(sum(force.size for force in forces))
     theta0 = np.array([math.log(base[name]) if name in _LOG_SCALED else base[name] for name in free]
                       + [0.0] * (count if offsets else 0))
-    lower = np.array([N_BOUNDS[0] if name == "n" else -np.inf for name in free] + [-np.inf] * (len(names) - len(free)))
-    upper = np.array([N_BOUNDS[1] if name == "n" else np.inf for name in free] + [np.inf] * (len(names) - len(free)))
+    lower, upper = _scaled_bounds(names)
     _check_start(residuals(theta0), start)
     blocks = _offset_blocks(forces, weights) if offsets else None
     solution = optimize.least_squares(residuals, theta0, jac=lambda theta: _jacobian(residuals, theta, len(free),
@@ -299,6 +303,28 @@ def _check_residuals(index: int, residual: np.ndarray, model: np.ndarray, m: Rat
                      f"largest |F_N| {float(np.max(np.abs(model))):.3g} N and the measured "
                      f"{float(np.max(np.abs(m.normal_force))):.3g} N; allowed: residuals up to {bound:.3g} N, whose "
                      "squares stay finite (check the data's unit, or the start)")
+
+
+#: The dataset's variables in each parameter's unit (the others are numbers).
+_PARAMETER_UNITS = ("estimate", "standard_error", "interval_lower", "interval_upper")
+
+
+def _scaled_bounds(names: Sequence[str]) -> tuple[np.ndarray, np.ndarray]:
+    """The bounds of the scaled parameters ``names`` as the fit takes them: :data:`N_BOUNDS` for ``n``, none else."""
+    lower = np.array([N_BOUNDS[0] if name == "n" else -np.inf for name in names])
+    upper = np.array([N_BOUNDS[1] if name == "n" else np.inf for name in names])
+    return lower, upper
+
+
+def _verdict(name: str, verdict: Identifiability) -> Identifiability:
+    """What the data say of ``name``: :func:`~mdr_events.analysis.fit_diagnostics.identifiability_of`'s verdict, the
+    law's values on fit's scale (``v_ref`` and the works log-scaled, ``n`` as it is: poorly determined beyond a scaled
+    standard error of :data:`~mdr_events.analysis.fit_diagnostics.POOR_STANDARD_ERROR`); a force offset (N) has no
+    such scale, and is poorly determined never (round nineteen: the law's values of a fit to curves in the wrong unit,
+    v_ref's interval eleven decades wide, were exit 0)."""
+    if name not in RATE_FREE_NAMES and verdict is Identifiability.POORLY_DETERMINED:
+        return Identifiability.DETERMINED
+    return verdict
 
 
 def _check_start(residual: np.ndarray, start: RateDependentAdhesion) -> None:
@@ -373,8 +399,8 @@ def _result(solution, names, free, values_of, measurements, forces, scale, solve
     variance = (1.0 / scale) ** 2 if known else float(residual @ residual) / dof
     with np.errstate(over="ignore"):
         s2 = 1.0 if known else float(np.float64(variance) * scale * scale)
-    bounds = np.full(jacobian.shape[1], -np.inf), np.full(jacobian.shape[1], np.inf)  # (verdicts not read)
-    covariance, error, _, _, correlation = identifiability_of(jacobian, solution.x, *bounds, variance)
+    covariance, error, _, verdicts, correlation = identifiability_of(jacobian, solution.x, *_scaled_bounds(names),
+                                                                      variance)
     from scipy import stats  # (here: the module registers its schema on every result's write, stats costs ~0.1 s)
 
     quantile = float(stats.norm.ppf(0.5 + CONFIDENCE / 2.0))
@@ -397,19 +423,27 @@ def _result(solution, names, free, values_of, measurements, forces, scale, solve
     for force in forces:
         rms.append(scaled_or_inf(float(np.sqrt(np.mean(residual[start:start + force.size] ** 2))), scale))
         start += force.size
+    misfit = [value if m.noise is not None else value / estimate_noise(force)
+              for value, m, force in zip(rms, measurements, forces)]
     dataset = xr.Dataset(
         {"estimate": ("parameter", np.array(estimate)), "standard_error": ("parameter", error),
          "interval_lower": ("parameter", np.array(low)), "interval_upper": ("parameter", np.array(high)),
          "correlation": (("parameter", "parameter_2"), correlation),
-         "residual_rms": ("measurement", np.array(rms))},
+         "residual_rms": ("measurement", np.array(rms)), "misfit": ("measurement", np.array(misfit)),
+         "identifiability": ("parameter", np.array([_verdict(name, verdict).value
+                                                    for name, verdict in zip(names, verdicts)]))},
         coords={"parameter": names, "parameter_2": names, "measurement": np.arange(len(forces))})
     long_names = {"estimate": "the fitted value", "standard_error": "its standard error (linearised)",
                   "interval_lower": f"lower end of its {CONFIDENCE:.0%} interval",
                   "interval_upper": f"upper end of its {CONFIDENCE:.0%} interval",
                   "correlation": "correlation of the estimates (linearised)",
-                  "residual_rms": "RMS of the curve's weighted residuals (1: as noisy as its noise)"}
+                  "residual_rms": "RMS of the curve's weighted residuals (1: as noisy as its noise)",
+                  "misfit": "RMS of the curve's residuals over its noise, given or estimated from its second "
+                            f"differences (as fit's: above {MISFIT_RMS:g} the law does not describe the curve)",
+                  "identifiability": "what the data say of the value (as fit's: determined, poorly determined, not "
+                                     "identifiable, at a bound)"}
     for name, text in long_names.items():
-        dataset[name].attrs.update(long_name=text, units="1" if name in ("correlation", "residual_rms") else "varies")
+        dataset[name].attrs.update(long_name=text, units="varies" if name in _PARAMETER_UNITS else "1")
     dataset["parameter"].attrs.update(units="1", long_name="the fitted value's name",
                                       units_of_each=", ".join(f"{n}: {u}" for n, u in zip(names, units)))
     dataset["parameter_2"].attrs.update(units="1", long_name="the fitted value's name (the correlation's columns)")

@@ -436,8 +436,11 @@ class RateFitJob:
     @staticmethod
     def determined(result: xr.Dataset) -> bool:
         """Whether every value of the fit ``result`` is determined: the solver converged (``status > 0``: not stopped at
-        its evaluation limit), every standard error and interval finite, and ``n`` (if free) inside its bounds
-        (:data:`~mdr_events.analysis.rate_fit.N_BOUNDS`: at a bound the linearised interval ignores it)."""
+        its evaluation limit), every standard error and interval finite, ``n`` (if free) inside its bounds
+        (:data:`~mdr_events.analysis.rate_fit.N_BOUNDS`: at a bound the linearised interval ignores it) and every
+        value's ``identifiability`` "determined" (fit's rule: a law's value whose scaled standard error exceeds
+        :data:`~mdr_events.analysis.fit_diagnostics.POOR_STANDARD_ERROR` is poorly determined; a result written
+        before it was recorded is judged without it), and the law describes every curve (:meth:`misfits`)."""
         import numpy as np
 
         from mdr_events.analysis.rate_fit import N_BOUNDS
@@ -446,7 +449,20 @@ class RateFitJob:
                      for name in ("standard_error", "interval_lower", "interval_upper"))
         names = [str(name) for name in result["parameter"].values]
         inside = "n" not in names or N_BOUNDS[0] < float(result["estimate"].values[names.index("n")]) < N_BOUNDS[1]
-        return bool(finite and int(result.attrs["status"]) > 0 and inside)
+        verdicts = result["identifiability"].values if "identifiability" in result else ()
+        judged = all(str(verdict) == "determined" for verdict in verdicts)
+        return bool(finite and int(result.attrs["status"]) > 0 and inside and judged and not RateFitJob.misfits(result))
+
+    @staticmethod
+    def misfits(result: xr.Dataset) -> list[int]:
+        """The measurements the fit ``result`` does not describe: their ``misfit`` (the residuals' RMS over the noise)
+        above :data:`~mdr_events.analysis.fit_diagnostics.MISFIT_RMS`, as fit warns (none in a result written
+        before it was recorded)."""
+        from mdr_events.analysis.fit_diagnostics import MISFIT_RMS
+
+        if "misfit" not in result:
+            return []
+        return [index for index, value in enumerate(result["misfit"].values) if not value <= MISFIT_RMS]
 
     def write(self, result: xr.Dataset, out: FilePath) -> list[FileOutcome]:
         """Write ``<stem>.nc`` into ``out``."""

@@ -209,7 +209,8 @@ def rate_summary(result) -> list[str]:
     for name in result["parameter"].values:
         row = result.sel(parameter=name)
         lines.append(f"  {name} = {float(row['estimate']):.6g} ({result.attrs['confidence']:.0%} interval "
-                     f"[{float(row['interval_lower']):.6g}, {float(row['interval_upper']):.6g}])")
+                     f"[{float(row['interval_lower']):.6g}, {float(row['interval_upper']):.6g}])"
+                     + (f" ({row['identifiability'].values})" if "identifiability" in row else ""))
     return lines
 
 
@@ -223,5 +224,8 @@ def run_rate(args: argparse.Namespace, spec) -> int:
     print(f"joint fit of the rate law to {len(spec.data)} measurement(s) ({spec.description}): "
           f"{result.attrs['message']}")
     print("\n".join(rate_summary(result)))
+    for index in spec.misfits(result):
+        print(f"  warning: the residuals of {args.data[index]} are {float(result['misfit'].values[index]):.3g} times "
+              "its noise: the law does not describe it (check its unit, --time-origin, --speeds and the path)")
     print(f"  written: {', '.join(str(outcome.path) for outcome in written)}")
     return 0 if spec.determined(result) else 1
