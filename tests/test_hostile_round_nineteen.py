@@ -104,3 +104,16 @@ def test_a_poorly_determined_value_is_not_determined():
                         coords={"parameter": ["v_ref", "n"]}, attrs={"status": 2})
     assert not RateFitJob.determined(result)
     assert RateFitJob.determined(result.assign(identifiability=("parameter", ["determined", "determined"])))
+
+
+# --- N3: the joint fit read each measurement's speed without the scales' check the angles at speeds make: --speeds
+# 1e308 was refused by the times ("measurements[0].times=0.61 s is not allowed; allowed: ... in [0, 1.2e-311] s"),
+# the speed unnamed -------------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("speed", [1e300, 1e308])
+def test_a_speed_beyond_the_double_range_is_named(speed):
+    path = me.Path(WAYPOINTS, speed=speed)
+    curve = RateMeasurement(path, np.array([0.0, path.duration]), np.zeros(2))
+    message = one_line_naming(lambda: fit_rate_adhesion([curve], PAPER, START), "measurements[0].path.speed")
+    assert "d_max / v" in message, message

@@ -34,9 +34,10 @@ from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.io.datasets import register_schema
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models.continuum.rate_edge import EdgeUnresolved, solve_edge
-from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters, check_parameters
+from mdr_events.theory.scales import check_representable
 from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_flag, check_real, real_array, shown
 
 __all__ = ["RateMeasurement", "fit_rate_adhesion", "RATE_FREE_NAMES", "RATE_FIT_RTOL", "RATE_FIT_METHOD",
@@ -89,7 +90,7 @@ class RateMeasurement(NamedTuple):
     noise: float | None = None
 
 
-def _check(measurements, params, start, free, offsets, limits) -> Limits:
+def _check(measurements, params, start, free, offsets, profile, limits) -> Limits:
     """Refuse what the fit cannot take, before anything is solved: each argument's type and range, each curve's
     samples (real, finite, 1-D, within the path's clock and the double range), their count and the solves of the
     edge the first step takes (the start and a Jacobian's column per free value of the law, each curve once:
@@ -112,8 +113,9 @@ def _check(measurements, params, start, free, offsets, limits) -> Limits:
             isinstance(m, RateMeasurement) for m in measurements):
         raise TypeError(f"measurements={shown(measurements)} is not allowed; allowed: a non-empty list or tuple of "
                         "RateMeasurement(path, times, normal_force[, noise])")
+    profile = check_simulated_profile(profile)
     for index, m in enumerate(measurements):
-        _check_curve(f"measurements[{index}]", m)
+        _check_curve(f"measurements[{index}]", m, params, profile)
         check_rate_factor(start, m.path.speed, "start")  # (the start at its limit ended in the edge solver's words)
     total = sum(np.size(m.times) for m in measurements)
     first_step = len(measurements) * (1 + len(free))
@@ -122,10 +124,16 @@ def _check(measurements, params, start, free, offsets, limits) -> Limits:
     return limits
 
 
-def _check_curve(name: str, m: RateMeasurement) -> None:
-    """One curve's path, samples and noise (:func:`_check`)."""
+def _check_curve(name: str, m: RateMeasurement, params: Parameters, profile: SimulatedProfile) -> None:
+    """One curve's path (its speed's scales with ``params`` and ``profile`` within the double range), samples and
+    noise (:func:`_check`)."""
     if not isinstance(m.path, Path):
         raise TypeError(f"{name}.path={shown(m.path)} ({type(m.path).__name__}) is not allowed; allowed: a Path")
+    try:  # (as the angles at speeds check theirs; round nineteen: a speed of 1e308 m/s was named by the times, on a
+        # path of 1.2e-311 s)
+        check_representable(params.replace(v=m.path.speed), profile)
+    except ValueError as error:
+        raise ValueError(f"{name}.path.speed={m.path.speed!r} m/s: {error}") from None
     allowed = "a 1-D array of finite real numbers"
     times = real_array(f"{name}.times", m.times, allowed + " (s on the path's clock)")
     force = real_array(f"{name}.normal_force", m.normal_force, allowed + " (N)")
@@ -214,7 +222,7 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
         not follow, a Jacobian at a law neither of whose neighbours' edges are followed, samples or solves beyond
         ``limits`` (``ResourceLimitError``).
     """
-    limits = _check(measurements, params, start, free, offsets, limits)
+    limits = _check(measurements, params, start, free, offsets, profile, limits)
     base = {"v_ref": start.v_ref, "n": start.n, "dgamma0": start.dgamma0, "dgamma1": start.dgamma1}
     count = len(measurements)
     names = list(free) + ([f"offset_{index}" for index in range(count)] if offsets else [])
