@@ -117,3 +117,23 @@ def test_a_speed_beyond_the_double_range_is_named(speed):
     curve = RateMeasurement(path, np.array([0.0, path.duration]), np.zeros(2))
     message = one_line_naming(lambda: fit_rate_adhesion([curve], PAPER, START), "measurements[0].path.speed")
     assert "d_max / v" in message, message
+
+
+# --- N4: a fit's continuum solves were bounded (least_squares' max_nfev, MAX_EVALUATIONS_PER_PARAMETER per free
+# value, each evaluation's Jacobian one solve per free value more) but that bound was named nowhere, and nothing was
+# heard while it ran: eight free values on hostile data run up to 3601 solves, about 0.06 s each here (minutes) ---------
+
+
+def test_a_fit_names_its_bound_on_the_solves_and_reports_them_as_it_goes(monkeypatch):
+    from mdr_events.analysis import fit_problem
+
+    every = 3  # (a line every 3 solves: the fit below takes a few tens)
+    monkeypatch.setattr(fit_problem, "PROGRESS_SOLVES", every)
+    measured = me.simulate(PAPER, "A", [20.0], method="continuum").isel(alpha=0)
+    lines: list[str] = []
+    result = me.fit(measured, PAPER.replace(dgamma1=0.2), "A", 20.0, free=["dgamma1"], progress=lines.append)
+    bound = fit_problem.MAX_EVALUATIONS_PER_PARAMETER * 1 * (1 + 1) + 1
+    assert lines[0].startswith(f"fit: 1 free value(s), at most {bound} continuum solves"), lines
+    counted = [int(line.split()[1]) for line in lines[1:]]
+    solves = result.optimizer.continuum_solves
+    assert counted == list(range(every, solves + 1, every)) and solves <= bound, (counted, solves)
