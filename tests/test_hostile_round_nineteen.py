@@ -137,3 +137,29 @@ def test_a_fit_names_its_bound_on_the_solves_and_reports_them_as_it_goes(monkeyp
     counted = [int(line.split()[1]) for line in lines[1:]]
     solves = result.optimizer.continuum_solves
     assert counted == list(range(every, solves + 1, every)) and solves <= bound, (counted, solves)
+
+
+# --- N5: the command line echoed an option's value with ``:g`` (six digits): ``--rate-exponent 1.0000001`` was named
+# "--adhesion-law rate --v-ref 1e-06 --rate-exponent 1: RateDependentAdhesion.n=1.0000001 is not allowed; allowed:
+# 0 < n <= 1", its prefix a value the bound allows; every echo of an option's number now reads back as the float given
+
+
+@pytest.mark.parametrize("argv, echoed", [
+    (["simulate", "--scenario", "A", "--alpha", "20", "--adhesion-law", "rate", "--v-ref", "1e-6", "--rate-exponent",
+      "1.0000001"], "--rate-exponent 1.0000001:"),
+    (["simulate", "--scenario", "A", "--alpha", "20", "--v-ref", "1.0000000001e-6"], "--v-ref 1.0000000001e-06 is"),
+    (["simulate", "--scenario", "A", "--alpha", "20", "--mu", "0.30000001"], "--mu 0.30000001 with"),
+    (["phase-diagram", "--scenario", "A", "--speeds", "1.0000001e-6"], "--speeds 1.0000001e-06:"),
+    (["simulate", "--scenario", "A", "--alpha", "20", "--h", "-1.0000001e-3"], "--h -0.0010000001:"),
+])
+def test_an_options_number_is_echoed_as_given(capsys, tmp_path, argv, echoed):
+    from hostile_checks import cli_one_line
+
+    assert echoed in cli_one_line(capsys, argv + ["--out", str(tmp_path / "o")])
+
+
+def test_a_short_number_keeps_its_short_form():
+    from mdr_events.app.cli._options import shown_number
+
+    assert [shown_number(value) for value in (20.0, 1e-6, 0.005, float("nan"), float("inf"))] == [
+        "20", "1e-06", "0.005", "nan", "inf"]

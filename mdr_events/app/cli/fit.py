@@ -116,7 +116,8 @@ def rate_job(args: argparse.Namespace, contact, params, motion, description: str
     try:
         check_half_space(contact, "the joint fit of the rate law (its forward model solve_edge)")
     except ValueError as error:
-        raise UsageError(f"--h {contact.layer.thickness:g} with --adhesion-law rate: {error}") from None
+        raise UsageError(f"--h {_options.shown_number(contact.layer.thickness)} with --adhesion-law rate: "
+                         f"{error}") from None
     unknown = [name for name in args.free if name not in RATE_FREE_NAMES]
     if unknown or len(set(args.free)) != len(args.free):
         raise UsageError(f"--free {' '.join(args.free)} is not allowed with --adhesion-law rate; allowed: distinct "
@@ -125,8 +126,8 @@ def rate_job(args: argparse.Namespace, contact, params, motion, description: str
         motion.cases(params, contact.profile).paths[0]
     speeds = args.speeds if args.speeds is not None else [path.speed] * len(args.data)
     if len(speeds) != len(args.data):
-        raise UsageError(f"--speeds {' '.join(f'{s:g}' for s in speeds)} is not allowed with {len(args.data)} "
-                         "measurement(s); allowed: one speed per DATA, in their order")
+        raise UsageError(f"--speeds {' '.join(map(_options.shown_number, speeds))} is not allowed with "
+                         f"{len(args.data)} measurement(s); allowed: one speed per DATA, in their order")
     try:
         paths = tuple(MotionPath(path.waypoints, speed) for speed in speeds)
     except (TypeError, ValueError) as error:
@@ -141,7 +142,7 @@ def rate_job(args: argparse.Namespace, contact, params, motion, description: str
     try:
         check_output_stem("stem", stem)
         return RateFitJob(tuple(args.data), tuple(Path(data) for data in args.data), stem, contact, paths,
-                          f"{description} at {', '.join(f'{s:g}' for s in speeds)} m/s", tuple(args.free),
+                          f"{description} at {', '.join(map(_options.shown_number, speeds))} m/s", tuple(args.free),
                           args.offsets, noise.get("normal_force"), _options.pairs("--names", args.names, quantities),
                           units, _options.time_origin(args.time_origin), params.d_max, _options.limits(args),
                           provenance)
