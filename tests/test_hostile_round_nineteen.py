@@ -163,3 +163,26 @@ def test_a_short_number_keeps_its_short_form():
 
     assert [shown_number(value) for value in (20.0, 1e-6, 0.005, float("nan"), float("inf"))] == [
         "20", "1e-06", "0.005", "nan", "inf"]
+
+
+# --- N6: the joint fit on the command line and in a study named a measurement by the API's argument: "measurements[1]
+# .times=307.9 s is not allowed" (the second DATA), "measurements[0].noise=1e-300" (--noise), "measurements[0].path
+# .speed=1e+308" (--speeds); each is named by its file, the noise and the speed by their options ----------------------
+
+
+@pytest.mark.parametrize("extra, named", [
+    (["--speeds", "1e-6", "1e308"], "{b}: its speed (--speeds, [fit] speeds) 1e+308 m/s"),
+    (["--speeds", "1e-6", "1e-6", "--noise", "normal_force=1e-300"], "the noise of normal_force (--noise, [fit] noise) "
+                                                                     "1e-300 is not allowed"),
+    (["--speeds", "1e-6", "1e-6"], "{b}: times=1000000000.0 s is not allowed"),
+])
+def test_the_joint_fit_names_a_measurement_by_its_file(capsys, tmp_path, extra, named):
+    from hostile_checks import cli_one_line
+
+    a, b = tmp_path / "a.csv", tmp_path / "b.csv"
+    a.write_text("time,normal_force\n0,0\n10,1e-3\n20,0\n")
+    b.write_text("time,normal_force\n0,0\n10,1e-3\n1e9,0\n" if "1e308" not in extra else a.read_text())
+    err = cli_one_line(capsys, ["fit", str(a), str(b), "--scenario", "A", "--alpha", "20", "--adhesion-law", "rate",
+                                "--v-ref", "1e-6", "--rate-exponent", "0.6", "--free", "v_ref", "n", *extra,
+                                "--out", str(tmp_path / "o")])
+    assert named.format(b=b) in err and "measurements[" not in err, err

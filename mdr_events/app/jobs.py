@@ -424,14 +424,27 @@ class RateFitJob:
 
         measurements = self.measurements()
         params = self.contact.parameters(self.d_max, self.paths[0].speed)
-        result = fit_rate_adhesion(measurements, params, self.contact.adhesion, list(self.free), self.offsets,
-                                   self.contact.profile, limits=self.limits)
+        try:
+            result = fit_rate_adhesion(measurements, params, self.contact.adhesion, list(self.free), self.offsets,
+                                       self.contact.profile, limits=self.limits)
+        except (TypeError, ValueError) as error:
+            raise type(error)(self.named(str(error))) from None
         from mdr_events.io.datasets import stamp
 
         # the start's contact stamped (Contact.from_attrs reads it back), the fitted values in the variables
         return stamp(result, params, **self.contact.to_attrs(), **self.provenance, path_description=self.description,
                      measurements=", ".join(self.data), speeds=", ".join(f"{path.speed!r}" for path in self.paths),
                      speeds_units="m s-1")
+
+    def named(self, message: str) -> str:
+        """``message`` of :func:`~mdr_events.analysis.rate_fit.fit_rate_adhesion` with each ``measurements[i]`` named
+        by its file (round nineteen: "measurements[1].times=307.9 s is not allowed" named the second DATA by the API's
+        argument; the noise, one for all, is ``--noise``'s)."""
+        import re
+
+        message = re.sub(r"measurements\[\d+\]\.noise=", "the noise of normal_force (--noise, [fit] noise) ", message)
+        message = re.sub(r"(measurements\[\d+\])\.path\.speed=", r"\1its speed (--speeds, [fit] speeds) ", message)
+        return re.sub(r"measurements\[(\d+)\]\.?", lambda found: f"{self.data[int(found.group(1))]}: ", message)
 
     @staticmethod
     def determined(result: xr.Dataset) -> bool:
