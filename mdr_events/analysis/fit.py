@@ -309,7 +309,10 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
         What each continuum run may use. Another indenter than the paraboloid has no ``R`` to free; with Coulomb's
         part in the friction law, ``"mu"`` may be free (its ``μ`` the start).
     progress : callable, optional
-        Hears how far reading a long CSV file is (:func:`~mdr_events.io.candidates.read_candidate`).
+        Hears how far reading a long CSV file is (:func:`~mdr_events.io.candidates.read_candidate`), the fit's bound
+        on its continuum solves before it starts, and every
+        :data:`~mdr_events.analysis.fit_problem.PROGRESS_SOLVES` solves how many it took
+        (:meth:`~mdr_events.analysis.fit_problem.Problem.report_to`).
     **options
         Beside a Parameters also ``profile`` and ``friction``; and:
 
@@ -344,6 +347,7 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
     read = read_candidate(measured, job.names, job.units, limits, select=job.select, progress=progress)
     nominal = job.path_of(job.model.params)
     problem = _problem(job, read, nominal, free, limits)
+    problem.report_to(progress)
     solution = solve(problem)
     optimum = _optimum(problem, solution)
     params, time_offset, depth_offset = problem.free.model(optimum.theta)

@@ -32,7 +32,8 @@ from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 
-__all__ = ["Problem", "solve", "largest_residual", "FD_STEP", "FIT_TOLERANCE", "MAX_EVALUATIONS_PER_PARAMETER"]
+__all__ = ["Problem", "solve", "largest_residual", "FD_STEP", "FIT_TOLERANCE", "MAX_EVALUATIONS_PER_PARAMETER",
+           "PROGRESS_SOLVES"]
 
 #: Forward-difference step of the Jacobian in the scaled parameters. The continuum's curves are exact to
 #: about 1e-10 relative (``Tolerances.rtol``): the rounding part of a column's error is then ~1e-4, the
@@ -50,6 +51,8 @@ def largest_residual(samples: int) -> float:
 
 #: Function evaluations (continuum solves besides the Jacobian's) per free parameter at most.
 MAX_EVALUATIONS_PER_PARAMETER = 50
+#: A progress line every this many continuum solves (:meth:`Problem.report_to`): about every 10 s on the paper's path.
+PROGRESS_SOLVES = 100
 
 
 class Problem:
@@ -64,13 +67,34 @@ class Problem:
         #: :meth:`~mdr_events.analysis.fit_parameters.FreeParameters.layer_at`)
         self.layer = layer
         self.solves = 0
+        #: hears a line every :data:`PROGRESS_SOLVES` solves (:meth:`report_to`; ``None``: silent)
+        self.progress: Callable[[str], None] | None = None
         self.quantities = tuple(measurement.values)
         #: least_squares asks for the Jacobian where it just evaluated the residuals: the last (θ, curves, r)
         self._last: tuple[np.ndarray, ModelCurves, np.ndarray] | None = None
 
+    def most_solves(self) -> int:
+        """The continuum solves :func:`solve` may take at most: ``least_squares``' evaluations
+        (:data:`MAX_EVALUATIONS_PER_PARAMETER` per free parameter), each with at most one Jacobian of a solve per free
+        parameter, and the optimum's curves once more."""
+        count = len(self.free.names)
+        return MAX_EVALUATIONS_PER_PARAMETER * count * (1 + count) + 1
+
+    def report_to(self, progress: Callable[[str], None] | None) -> None:
+        """Say how far the fit is to ``progress``: its bound on the solves now (:meth:`most_solves`), then the solves
+        so far every :data:`PROGRESS_SOLVES` (round nineteen: a fit of many free values on hostile data ran minutes
+        without a line; its bound, ``max_nfev``, was named nowhere)."""
+        self.progress = progress
+        if progress is not None:
+            progress(f"fit: {len(self.free.names)} free value(s), at most {self.most_solves()} continuum solves "
+                     f"({MAX_EVALUATIONS_PER_PARAMETER} evaluations per free value, each with a Jacobian of one solve "
+                     "per free value)")
+
     def curves(self, theta: np.ndarray) -> ModelCurves:
         """The model's curves at ``θ`` (one continuum solve); a trial the model refuses is named in the error."""
         self.solves += 1
+        if self.progress is not None and self.solves % PROGRESS_SOLVES == 0:
+            self.progress(f"fit: {self.solves} continuum solves of at most {self.most_solves()}")
         try:  # (a trial far out is refused in Parameters, or by the model: named below with its values)
             params, time_offset, depth_offset = self.free.model(theta)
             friction = self.free.friction_at(theta)

@@ -26,16 +26,19 @@ import numpy as np
 import xarray as xr
 from scipy import optimize
 
-from mdr_events.analysis.fit_diagnostics import exp_or_inf, identifiability_of, scaled_or_inf
+from mdr_events.analysis.fit_data import estimate_noise
+from mdr_events.analysis.fit_diagnostics import (MISFIT_RMS, Identifiability, exp_or_inf, identifiability_of,
+                                                 scaled_or_inf)
 from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS, check_rate_factor
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.io.datasets import register_schema
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models.continuum.rate_edge import EdgeUnresolved, solve_edge
-from mdr_events.models.indenters import SimulatedProfile
+from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters, check_parameters
-from mdr_events.validation import SCALE_MAX, check_flag, check_real, real_array, shown
+from mdr_events.theory.scales import check_representable
+from mdr_events.validation import SCALE_MAX, SCALE_MIN, check_flag, check_real, real_array, shown
 
 __all__ = ["RateMeasurement", "fit_rate_adhesion", "RATE_FREE_NAMES", "RATE_FIT_RTOL", "RATE_FIT_METHOD",
            "RATE_FIT_CONTENT"]
@@ -87,7 +90,7 @@ class RateMeasurement(NamedTuple):
     noise: float | None = None
 
 
-def _check(measurements, params, start, free, offsets, limits) -> Limits:
+def _check(measurements, params, start, free, offsets, profile, limits) -> Limits:
     """Refuse what the fit cannot take, before anything is solved: each argument's type and range, each curve's
     samples (real, finite, 1-D, within the path's clock and the double range), their count and the solves of the
     edge the first step takes (the start and a Jacobian's column per free value of the law, each curve once:
@@ -110,8 +113,9 @@ def _check(measurements, params, start, free, offsets, limits) -> Limits:
             isinstance(m, RateMeasurement) for m in measurements):
         raise TypeError(f"measurements={shown(measurements)} is not allowed; allowed: a non-empty list or tuple of "
                         "RateMeasurement(path, times, normal_force[, noise])")
+    profile = check_simulated_profile(profile)
     for index, m in enumerate(measurements):
-        _check_curve(f"measurements[{index}]", m)
+        _check_curve(f"measurements[{index}]", m, params, profile)
         check_rate_factor(start, m.path.speed, "start")  # (the start at its limit ended in the edge solver's words)
     total = sum(np.size(m.times) for m in measurements)
     first_step = len(measurements) * (1 + len(free))
@@ -120,10 +124,16 @@ def _check(measurements, params, start, free, offsets, limits) -> Limits:
     return limits
 
 
-def _check_curve(name: str, m: RateMeasurement) -> None:
-    """One curve's path, samples and noise (:func:`_check`)."""
+def _check_curve(name: str, m: RateMeasurement, params: Parameters, profile: SimulatedProfile) -> None:
+    """One curve's path (its speed's scales with ``params`` and ``profile`` within the double range), samples and
+    noise (:func:`_check`)."""
     if not isinstance(m.path, Path):
         raise TypeError(f"{name}.path={shown(m.path)} ({type(m.path).__name__}) is not allowed; allowed: a Path")
+    try:  # (as the angles at speeds check theirs; round nineteen: a speed of 1e308 m/s was named by the times, on a
+        # path of 1.2e-311 s)
+        check_representable(params.replace(v=m.path.speed), profile)
+    except ValueError as error:
+        raise ValueError(f"{name}.path.speed={m.path.speed!r} m/s: {error}") from None
     allowed = "a 1-D array of finite real numbers"
     times = real_array(f"{name}.times", m.times, allowed + " (s on the path's clock)")
     force = real_array(f"{name}.normal_force", m.normal_force, allowed + " (N)")
@@ -143,9 +153,10 @@ def _check_curve(name: str, m: RateMeasurement) -> None:
     if np.max(np.abs(force)) > SCALE_MAX:
         raise ValueError(f"{name}.normal_force={float(force[np.argmax(np.abs(force))])!r} N is not allowed; allowed: "
                          f"magnitudes at most {SCALE_MAX:.2g} N (the double range's square root)")
-    if m.noise is not None:
-        check_real(f"{name}.noise", m.noise, f"None or a finite number > 0 and at most {SCALE_MAX:.2g} (N)",
-                   lambda value: 0.0 < value <= SCALE_MAX)
+    if m.noise is not None:  # (from SCALE_MIN: its weight 1/noise finite; round nineteen: 1e-320 gave inf weights,
+        # whose nan residuals blamed the start's edge)
+        check_real(f"{name}.noise", m.noise, f"None or a finite number from {SCALE_MIN:.2g} to {SCALE_MAX:.2g} (N)",
+                   lambda value: SCALE_MIN <= value <= SCALE_MAX)
 
 
 def _law(values: dict[str, float]) -> RateDependentAdhesion:
@@ -194,7 +205,10 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
     -------
     xarray.Dataset
         ``estimate``, ``standard_error``, ``interval_lower`` and ``interval_upper`` per parameter (the law's free
-        values, then the offsets), ``correlation`` between them, and per curve the RMS of its weighted residuals;
+        values, then the offsets) with its ``identifiability`` (as :func:`~mdr_events.fit`'s verdicts, the law's values
+        on its scale: :func:`_verdict`), ``correlation`` between them, and per curve the RMS of its weighted residuals
+        and ``misfit``, the RMS of its residuals over its noise (given, or estimated from the curve as fit estimates
+        it: above :data:`~mdr_events.analysis.fit_diagnostics.MISFIT_RMS` the law does not describe it);
         attributes: the residuals' variance ``s2``, the solves, the rejected trials (``rejected_trials``: laws
         whose edge a path did not follow, module docstring), ``least_squares``' status and message.
 
@@ -208,12 +222,12 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
         not follow, a Jacobian at a law neither of whose neighbours' edges are followed, samples or solves beyond
         ``limits`` (``ResourceLimitError``).
     """
-    limits = _check(measurements, params, start, free, offsets, limits)
+    limits = _check(measurements, params, start, free, offsets, profile, limits)
     base = {"v_ref": start.v_ref, "n": start.n, "dgamma0": start.dgamma0, "dgamma1": start.dgamma1}
     count = len(measurements)
     names = list(free) + ([f"offset_{index}" for index in range(count)] if offsets else [])
     forces = [np.asarray(m.normal_force, dtype=float) for m in measurements]
-    weights = [1.0 / m.noise if m.noise is not None else 1.0 for m in measurements]
+    weights, scale = _weights(measurements)
     curves: dict[tuple[float, ...], list[np.ndarray] | None] = {}  # the model's curves by the law's values, the
     # latest few (None: the law's edge is not followed on a path, a rejected trial)
     solves, rejected = [0], [0]
@@ -253,20 +267,72 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
         for index, (model, force, weight) in enumerate(zip(models, forces, weights)):
             if offsets:
                 model = model + theta[len(free) + index]
-            parts.append(weight * (model - force))
+            with np.errstate(over="ignore"):
+                parts.append(weight * (model - force))
+            _check_residuals(index, parts[-1], model, measurements[index], bound)
         return np.concatenate(parts)
 
+    from mdr_events.analysis.fit_problem import largest_residual  # (here: the module registers a schema on every write)
+
+    bound = largest_residual(sum(force.size for force in forces))
     theta0 = np.array([math.log(base[name]) if name in _LOG_SCALED else base[name] for name in free]
                       + [0.0] * (count if offsets else 0))
-    lower = np.array([N_BOUNDS[0] if name == "n" else -np.inf for name in free] + [-np.inf] * (len(names) - len(free)))
-    upper = np.array([N_BOUNDS[1] if name == "n" else np.inf for name in free] + [np.inf] * (len(names) - len(free)))
+    lower, upper = _scaled_bounds(names)
     _check_start(residuals(theta0), start)
     blocks = _offset_blocks(forces, weights) if offsets else None
     solution = optimize.least_squares(residuals, theta0, jac=lambda theta: _jacobian(residuals, theta, len(free),
                                                                                      (lower, upper), blocks),
                                       bounds=(lower, upper), x_scale="jac", xtol=FIT_TOLERANCE, ftol=FIT_TOLERANCE,
                                       gtol=FIT_TOLERANCE)
-    return _result(solution, names, free, values_of, measurements, forces, weights, (solves[0], rejected[0]))
+    return _result(solution, names, free, values_of, measurements, forces, scale, (solves[0], rejected[0]))
+
+
+def _weights(measurements: Sequence[RateMeasurement]) -> tuple[list[float], float]:
+    """Each curve's weight ``1/σ`` (1 where no noise is given) over the largest, and that largest weight ``c``.
+
+    ``least_squares`` minimises the residuals weighted by the ratios alone, each curve's ``(model − measured) σ_min/σ``
+    in newtons, whatever the noises' scale: the optimum of ``Σ r²`` does not change with a common factor of the
+    weights, while their own scale ran the trust region's products out of the double range (round nineteen: a
+    noise of 1e-100 N gave SciPy's overflow warnings and a fit stopped where it started, exit 0; 1e-300 N "array
+    must not contain infs or NaNs"). The covariance and the RMS are scaled back by ``c`` (:func:`_result`)."""
+    weights = [1.0 / m.noise if m.noise is not None else 1.0 for m in measurements]
+    scale = max(weights)
+    return [weight / scale for weight in weights], scale
+
+
+def _check_residuals(index: int, residual: np.ndarray, model: np.ndarray, m: RateMeasurement, bound: float) -> None:
+    """Refuse curve ``index``'s residuals (weighted as :func:`_weights` weighs them) beyond ``bound``
+    (:func:`~mdr_events.analysis.fit_problem.largest_residual`, the paper law's fit's: their squares and the
+    Jacobian's would overflow), naming both curves' magnitudes."""
+    if np.all(np.abs(residual) <= bound):
+        return
+    largest = float(np.max(np.abs(residual)))  # (inf where it overflowed)
+    raise ValueError(f"measurements[{index}]: the residual model − measured reaches {largest:.3g} N with the model's "
+                     f"largest |F_N| {float(np.max(np.abs(model))):.3g} N and the measured "
+                     f"{float(np.max(np.abs(m.normal_force))):.3g} N; allowed: residuals up to {bound:.3g} N, whose "
+                     "squares stay finite (check the data's unit, or the start)")
+
+
+#: The dataset's variables in each parameter's unit (the others are numbers).
+_PARAMETER_UNITS = ("estimate", "standard_error", "interval_lower", "interval_upper")
+
+
+def _scaled_bounds(names: Sequence[str]) -> tuple[np.ndarray, np.ndarray]:
+    """The bounds of the scaled parameters ``names`` as the fit takes them: :data:`N_BOUNDS` for ``n``, none else."""
+    lower = np.array([N_BOUNDS[0] if name == "n" else -np.inf for name in names])
+    upper = np.array([N_BOUNDS[1] if name == "n" else np.inf for name in names])
+    return lower, upper
+
+
+def _verdict(name: str, verdict: Identifiability) -> Identifiability:
+    """What the data say of ``name``: :func:`~mdr_events.analysis.fit_diagnostics.identifiability_of`'s verdict, the
+    law's values on fit's scale (``v_ref`` and the works log-scaled, ``n`` as it is: poorly determined beyond a scaled
+    standard error of :data:`~mdr_events.analysis.fit_diagnostics.POOR_STANDARD_ERROR`); a force offset (N) has no
+    such scale, and is poorly determined never (round nineteen: the law's values of a fit to curves in the wrong unit,
+    v_ref's interval eleven decades wide, were exit 0)."""
+    if name not in RATE_FREE_NAMES and verdict is Identifiability.POORLY_DETERMINED:
+        return Identifiability.DETERMINED
+    return verdict
 
 
 def _check_start(residual: np.ndarray, start: RateDependentAdhesion) -> None:
@@ -331,14 +397,18 @@ def _jacobian(residuals, theta: np.ndarray, laws: int, bounds: tuple[np.ndarray,
     return np.column_stack(columns + ([blocks] if blocks is not None else []))
 
 
-def _result(solution, names, free, values_of, measurements, forces, weights, solves) -> xr.Dataset:
-    """The dataset of the fit at ``solution.x``: estimates, intervals, correlations, each curve's RMS."""
+def _result(solution, names, free, values_of, measurements, forces, scale, solves) -> xr.Dataset:
+    """The dataset of the fit at ``solution.x``: estimates, intervals, correlations, each curve's RMS (the residuals
+    and Jacobian weighted over the largest weight ``scale``, :func:`_weights`)."""
     residual, jacobian = solution.fun, solution.jac
     dof = max(residual.size - len(names), 1)
     known = all(m.noise is not None for m in measurements)
-    s2 = 1.0 if known else float(residual @ residual) / dof
-    bounds = np.full(jacobian.shape[1], -np.inf), np.full(jacobian.shape[1], np.inf)  # (verdicts not read)
-    covariance, error, _, _, correlation = identifiability_of(jacobian, solution.x, *bounds, s2)
+    # cov = s² (JᵀJ)⁻¹ with J = scale J': s² / scale² (JᵀJ')⁻¹; s² = 1 with every noise given, else Σr²/dof
+    variance = (1.0 / scale) ** 2 if known else float(residual @ residual) / dof
+    with np.errstate(over="ignore"):
+        s2 = 1.0 if known else float(np.float64(variance) * scale * scale)
+    covariance, error, _, verdicts, correlation = identifiability_of(jacobian, solution.x, *_scaled_bounds(names),
+                                                                      variance)
     from scipy import stats  # (here: the module registers its schema on every result's write, stats costs ~0.1 s)
 
     quantile = float(stats.norm.ppf(0.5 + CONFIDENCE / 2.0))
@@ -359,21 +429,29 @@ def _result(solution, names, free, values_of, measurements, forces, weights, sol
         units.append(RATE_FREE_NAMES.get(name, "N"))
     rms, start = [], 0
     for force in forces:
-        rms.append(float(np.sqrt(np.mean(residual[start:start + force.size] ** 2))))
+        rms.append(scaled_or_inf(float(np.sqrt(np.mean(residual[start:start + force.size] ** 2))), scale))
         start += force.size
+    misfit = [value if m.noise is not None else value / estimate_noise(force)
+              for value, m, force in zip(rms, measurements, forces)]
     dataset = xr.Dataset(
         {"estimate": ("parameter", np.array(estimate)), "standard_error": ("parameter", error),
          "interval_lower": ("parameter", np.array(low)), "interval_upper": ("parameter", np.array(high)),
          "correlation": (("parameter", "parameter_2"), correlation),
-         "residual_rms": ("measurement", np.array(rms))},
+         "residual_rms": ("measurement", np.array(rms)), "misfit": ("measurement", np.array(misfit)),
+         "identifiability": ("parameter", np.array([_verdict(name, verdict).value
+                                                    for name, verdict in zip(names, verdicts)]))},
         coords={"parameter": names, "parameter_2": names, "measurement": np.arange(len(forces))})
     long_names = {"estimate": "the fitted value", "standard_error": "its standard error (linearised)",
                   "interval_lower": f"lower end of its {CONFIDENCE:.0%} interval",
                   "interval_upper": f"upper end of its {CONFIDENCE:.0%} interval",
                   "correlation": "correlation of the estimates (linearised)",
-                  "residual_rms": "RMS of the curve's weighted residuals (1: as noisy as its noise)"}
+                  "residual_rms": "RMS of the curve's weighted residuals (1: as noisy as its noise)",
+                  "misfit": "RMS of the curve's residuals over its noise, given or estimated from its second "
+                            f"differences (as fit's: above {MISFIT_RMS:g} the law does not describe the curve)",
+                  "identifiability": "what the data say of the value (as fit's: determined, poorly determined, not "
+                                     "identifiable, at a bound)"}
     for name, text in long_names.items():
-        dataset[name].attrs.update(long_name=text, units="1" if name in ("correlation", "residual_rms") else "varies")
+        dataset[name].attrs.update(long_name=text, units="varies" if name in _PARAMETER_UNITS else "1")
     dataset["parameter"].attrs.update(units="1", long_name="the fitted value's name",
                                       units_of_each=", ".join(f"{n}: {u}" for n, u in zip(names, units)))
     dataset["parameter_2"].attrs.update(units="1", long_name="the fitted value's name (the correlation's columns)")

@@ -424,8 +424,11 @@ class RateFitJob:
 
         measurements = self.measurements()
         params = self.contact.parameters(self.d_max, self.paths[0].speed)
-        result = fit_rate_adhesion(measurements, params, self.contact.adhesion, list(self.free), self.offsets,
-                                   self.contact.profile, limits=self.limits)
+        try:
+            result = fit_rate_adhesion(measurements, params, self.contact.adhesion, list(self.free), self.offsets,
+                                       self.contact.profile, limits=self.limits)
+        except (TypeError, ValueError) as error:
+            raise type(error)(self.named(str(error))) from None
         from mdr_events.io.datasets import stamp
 
         # the start's contact stamped (Contact.from_attrs reads it back), the fitted values in the variables
@@ -433,11 +436,24 @@ class RateFitJob:
                      measurements=", ".join(self.data), speeds=", ".join(f"{path.speed!r}" for path in self.paths),
                      speeds_units="m s-1")
 
+    def named(self, message: str) -> str:
+        """``message`` of :func:`~mdr_events.analysis.rate_fit.fit_rate_adhesion` with each ``measurements[i]`` named
+        by its file (round nineteen: "measurements[1].times=307.9 s is not allowed" named the second DATA by the API's
+        argument; the noise, one for all, is ``--noise``'s)."""
+        import re
+
+        message = re.sub(r"measurements\[\d+\]\.noise=", "the noise of normal_force (--noise, [fit] noise) ", message)
+        message = re.sub(r"(measurements\[\d+\])\.path\.speed=", r"\1its speed (--speeds, [fit] speeds) ", message)
+        return re.sub(r"measurements\[(\d+)\]\.?", lambda found: f"{self.data[int(found.group(1))]}: ", message)
+
     @staticmethod
     def determined(result: xr.Dataset) -> bool:
         """Whether every value of the fit ``result`` is determined: the solver converged (``status > 0``: not stopped at
-        its evaluation limit), every standard error and interval finite, and ``n`` (if free) inside its bounds
-        (:data:`~mdr_events.analysis.rate_fit.N_BOUNDS`: at a bound the linearised interval ignores it)."""
+        its evaluation limit), every standard error and interval finite, ``n`` (if free) inside its bounds
+        (:data:`~mdr_events.analysis.rate_fit.N_BOUNDS`: at a bound the linearised interval ignores it) and every
+        value's ``identifiability`` "determined" (fit's rule: a law's value whose scaled standard error exceeds
+        :data:`~mdr_events.analysis.fit_diagnostics.POOR_STANDARD_ERROR` is poorly determined; a result written
+        before it was recorded is judged without it), and the law describes every curve (:meth:`misfits`)."""
         import numpy as np
 
         from mdr_events.analysis.rate_fit import N_BOUNDS
@@ -446,7 +462,20 @@ class RateFitJob:
                      for name in ("standard_error", "interval_lower", "interval_upper"))
         names = [str(name) for name in result["parameter"].values]
         inside = "n" not in names or N_BOUNDS[0] < float(result["estimate"].values[names.index("n")]) < N_BOUNDS[1]
-        return bool(finite and int(result.attrs["status"]) > 0 and inside)
+        verdicts = result["identifiability"].values if "identifiability" in result else ()
+        judged = all(str(verdict) == "determined" for verdict in verdicts)
+        return bool(finite and int(result.attrs["status"]) > 0 and inside and judged and not RateFitJob.misfits(result))
+
+    @staticmethod
+    def misfits(result: xr.Dataset) -> list[int]:
+        """The measurements the fit ``result`` does not describe: their ``misfit`` (the residuals' RMS over the noise)
+        above :data:`~mdr_events.analysis.fit_diagnostics.MISFIT_RMS`, as fit warns (none in a result written
+        before it was recorded)."""
+        from mdr_events.analysis.fit_diagnostics import MISFIT_RMS
+
+        if "misfit" not in result:
+            return []
+        return [index for index, value in enumerate(result["misfit"].values) if not value <= MISFIT_RMS]
 
     def write(self, result: xr.Dataset, out: FilePath) -> list[FileOutcome]:
         """Write ``<stem>.nc`` into ``out``."""

@@ -697,7 +697,7 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
     validated = None if study.validation is None else _computed(study, "validate", study.validation.compute)
     for run, _ in validated.reports if validated else ():  # said once every run was read: no line before an error
         progress(f"validate: {run}")
-    fitted = None if study.fit is None else _computed(study, "fit", study.fit.compute)
+    fitted = None if study.fit is None else _computed(study, "fit", lambda: study.fit.compute(progress))
     checked = None if study.lammps is None else _computed(study, "lammps_check", study.lammps.compute)
     if fitted is not None:
         progress(f"fit: {', '.join(study.fit.data) if isinstance(study.fit, RateFitJob) else study.fit.data} (free: "

@@ -144,6 +144,14 @@ class Parser(argparse.ArgumentParser):
         return parsed
 
 
+def shown_number(value: float) -> str:
+    """A number as a message echoes the option's value: ``:g``'s short form where it reads back as the same float,
+    else ``repr``'s every digit (round nineteen: ``--rate-exponent 1.0000001`` was echoed ``--rate-exponent 1``, a
+    value the message's own "0 < N <= 1" allows)."""
+    short = f"{value:g}"
+    return short if value != value or float(short) == value else repr(float(value))
+
+
 def output_directory(args: argparse.Namespace):
     """``--out``, prepared (a directory that exists or can be created, writable), before anything is computed."""
     from mdr_events.io.files import prepare_output_directory
@@ -220,9 +228,9 @@ def profile(args: argparse.Namespace, simulated: bool = True) -> SimulatedProfil
     if args.table is not None:
         given = f"--table {args.table}"
     elif args.flat_punch is not None:
-        given = f"--flat-punch {args.flat_punch:g}"
+        given = f"--flat-punch {shown_number(args.flat_punch)}"
     elif args.power_law is not None:
-        given = f"--power-law {' '.join(f'{value:g}' for value in args.power_law)}"
+        given = f"--power-law {' '.join(f'{shown_number(value)}' for value in args.power_law)}"
     else:
         return None
     try:
@@ -250,8 +258,8 @@ def friction(args: argparse.Namespace) -> FrictionLaw:
         return inputs.friction(args.friction, args.mu)
     except (TypeError, ValueError) as error:
         law = f"--friction {args.friction}" if args.friction else "the default --friction tau0"
-        given = law if args.mu is None else (f"--mu {args.mu:g} with {law}" if not args.friction
-                                             else f"{law} --mu {args.mu:g}")
+        given = law if args.mu is None else (f"--mu {shown_number(args.mu)} with {law}" if not args.friction
+                                             else f"{law} --mu {shown_number(args.mu)}")
         raise UsageError(f"{given}: {error}") from None
 
 
@@ -279,7 +287,8 @@ def adhesion(args: argparse.Namespace, params: Parameters):
     if law != "rate":  # (the options' names in the one line; the values' own checks are the law's)
         for option, value in given.items():
             if value is not None:
-                raise UsageError(f"{option} {value:g} is not allowed with the adhesion law {law or 'paper'!r}; allowed: "
+                raise UsageError(f"{option} {shown_number(value)} is not allowed with the adhesion law "
+                                 f"{law or 'paper'!r}; allowed: "
                                  "--v-ref and --rate-exponent with --adhesion-law rate")
     else:
         missing = [option for option, value in given.items() if value is None]
@@ -289,7 +298,7 @@ def adhesion(args: argparse.Namespace, params: Parameters):
     try:
         return inputs.adhesion(law, params, v_ref, n)
     except (TypeError, ValueError) as error:
-        shown_ = " ".join(f"{option} {value:g}" for option, value in given.items() if value is not None)
+        shown_ = " ".join(f"{option} {shown_number(value)}" for option, value in given.items() if value is not None)
         raise UsageError(f"--adhesion-law rate {shown_}: {error}") from None
 
 
@@ -329,7 +338,7 @@ def layer(args: argparse.Namespace):
     try:
         return inputs.layer(h, base)
     except (TypeError, ValueError) as error:
-        given = " ".join(part for part in (f"--h {h:g}" if h is not None else "",
+        given = " ".join(part for part in (f"--h {shown_number(h)}" if h is not None else "",
                                            f"--layer-base {base}" if base is not None else "") if part)
         raise UsageError(f"{given}: {error}") from None
 
@@ -358,7 +367,7 @@ def check_reference_layer(contact: Contact, motion, verb: str) -> None:
     try:
         check_layer_taken(contact, motion, Continuum(), where=verb)
     except (TypeError, ValueError) as error:
-        raise UsageError(f"--h {contact.layer.thickness:g}: {error}") from None
+        raise UsageError(f"--h {shown_number(contact.layer.thickness)}: {error}") from None
 
 
 def contact(args: argparse.Namespace, params: Parameters, simulated: bool = True) -> Contact:
@@ -415,7 +424,8 @@ def measured_motion(args: argparse.Namespace, params: Parameters, contact: Conta
 
     if args.path is not None:
         if args.alpha is not None:
-            raise UsageError(f"--alpha {args.alpha:g} is not allowed with --path (its waypoints fix the motion)")
+            raise UsageError(f"--alpha {shown_number(args.alpha)} is not allowed with --path (its waypoints fix the "
+                             "motion)")
         try:
             return inputs.paths(load_path_file(args.path, params), params), f"from the path file {args.path}"
         except ValueError as error:
@@ -426,8 +436,8 @@ def measured_motion(args: argparse.Namespace, params: Parameters, contact: Conta
         motion = inputs.scenario(args.scenario, [args.alpha], params)
         motion.cases(params, contact.profile)  # (an angle whose path cannot be run is named with --alpha)
     except (ValueError, TypeError) as error:
-        raise UsageError(f"--alpha {args.alpha:g}: {error}") from None
-    return motion, f"scenario {args.scenario}, α = {args.alpha:g}°"
+        raise UsageError(f"--alpha {shown_number(args.alpha)}: {error}") from None
+    return motion, f"scenario {args.scenario}, α = {shown_number(args.alpha)}°"
 
 
 def column_options(parser: argparse.ArgumentParser, whose: str) -> None:

@@ -116,7 +116,8 @@ def rate_job(args: argparse.Namespace, contact, params, motion, description: str
     try:
         check_half_space(contact, "the joint fit of the rate law (its forward model solve_edge)")
     except ValueError as error:
-        raise UsageError(f"--h {contact.layer.thickness:g} with --adhesion-law rate: {error}") from None
+        raise UsageError(f"--h {_options.shown_number(contact.layer.thickness)} with --adhesion-law rate: "
+                         f"{error}") from None
     unknown = [name for name in args.free if name not in RATE_FREE_NAMES]
     if unknown or len(set(args.free)) != len(args.free):
         raise UsageError(f"--free {' '.join(args.free)} is not allowed with --adhesion-law rate; allowed: distinct "
@@ -125,8 +126,8 @@ def rate_job(args: argparse.Namespace, contact, params, motion, description: str
         motion.cases(params, contact.profile).paths[0]
     speeds = args.speeds if args.speeds is not None else [path.speed] * len(args.data)
     if len(speeds) != len(args.data):
-        raise UsageError(f"--speeds {' '.join(f'{s:g}' for s in speeds)} is not allowed with {len(args.data)} "
-                         "measurement(s); allowed: one speed per DATA, in their order")
+        raise UsageError(f"--speeds {' '.join(map(_options.shown_number, speeds))} is not allowed with "
+                         f"{len(args.data)} measurement(s); allowed: one speed per DATA, in their order")
     try:
         paths = tuple(MotionPath(path.waypoints, speed) for speed in speeds)
     except (TypeError, ValueError) as error:
@@ -141,7 +142,7 @@ def rate_job(args: argparse.Namespace, contact, params, motion, description: str
     try:
         check_output_stem("stem", stem)
         return RateFitJob(tuple(args.data), tuple(Path(data) for data in args.data), stem, contact, paths,
-                          f"{description} at {', '.join(f'{s:g}' for s in speeds)} m/s", tuple(args.free),
+                          f"{description} at {', '.join(map(_options.shown_number, speeds))} m/s", tuple(args.free),
                           args.offsets, noise.get("normal_force"), _options.pairs("--names", args.names, quantities),
                           units, _options.time_origin(args.time_origin), params.d_max, _options.limits(args),
                           provenance)
@@ -209,7 +210,8 @@ def rate_summary(result) -> list[str]:
     for name in result["parameter"].values:
         row = result.sel(parameter=name)
         lines.append(f"  {name} = {float(row['estimate']):.6g} ({result.attrs['confidence']:.0%} interval "
-                     f"[{float(row['interval_lower']):.6g}, {float(row['interval_upper']):.6g}])")
+                     f"[{float(row['interval_lower']):.6g}, {float(row['interval_upper']):.6g}])"
+                     + (f" ({row['identifiability'].values})" if "identifiability" in row else ""))
     return lines
 
 
@@ -223,5 +225,8 @@ def run_rate(args: argparse.Namespace, spec) -> int:
     print(f"joint fit of the rate law to {len(spec.data)} measurement(s) ({spec.description}): "
           f"{result.attrs['message']}")
     print("\n".join(rate_summary(result)))
+    for index in spec.misfits(result):
+        print(f"  warning: the residuals of {args.data[index]} are {float(result['misfit'].values[index]):.3g} times "
+              "its noise: the law does not describe it (check its unit, --time-origin, --speeds and the path)")
     print(f"  written: {', '.join(str(outcome.path) for outcome in written)}")
     return 0 if spec.determined(result) else 1

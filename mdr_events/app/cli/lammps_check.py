@@ -57,7 +57,8 @@ def _friction(args: argparse.Namespace) -> FrictionLaw:
 
     if args.tangential == "none":
         if args.mu is not None:
-            raise UsageError(f"--mu {args.mu:g} is not allowed with --tangential none; allowed: a tangential model "
+            raise UsageError(f"--mu {_options.shown_number(args.mu)} is not allowed with --tangential none; allowed: "
+                             "a tangential model "
                              f"({', '.join(name for name in TANGENTIAL_MODELS if name != 'none')}) with --mu")
         return FrictionLaw("tau0", tau0=0.0)
     if args.mu is None or not (math.isfinite(args.mu) and args.mu >= 0):

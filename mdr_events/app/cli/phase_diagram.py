@@ -43,7 +43,8 @@ def job(args: argparse.Namespace) -> PhaseJob:
     try:
         speeds = inputs.angle_speeds(contact, args.speeds, params)
     except (TypeError, ValueError) as error:
-        given = "--adhesion-law rate" if args.speeds is None else f"--speeds {' '.join(f'{v:g}' for v in args.speeds)}"
+        given = "--adhesion-law rate" if args.speeds is None else \
+            f"--speeds {' '.join(map(_options.shown_number, args.speeds))}"
         raise _options.UsageError(f"{given}: {error}") from None
     stem = f"phase_diagram_{args.scenario}" if speeds is None else f"critical_angle_{args.scenario}_at_speeds"
     return PhaseJob(contact, args.scenario, params.d_max, params.v, provenance, stem, speeds)

@@ -57,7 +57,7 @@ def job(args: argparse.Namespace) -> SimulateJob:
     try:
         check_layer_taken(contact, motion, method)
     except (ValueError, TypeError) as error:
-        raise _options.UsageError(f"--h {args.h:g}: {error}") from None
+        raise _options.UsageError(f"--h {_options.shown_number(args.h)}: {error}") from None
     _options.check_rate_run(contact, motion, method, "simulate")
     return SimulateJob(contact, motion, method, _options.limits(args), provenance,
                        f"simulation_{args.scenario.replace('+', 'plus')}_{args.method}")

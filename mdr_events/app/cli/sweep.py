@@ -59,7 +59,7 @@ def _layer_over(args: argparse.Namespace, study: Study) -> Layer | None:
         check_layer_run(dataclasses.replace(job.contact, layer=layer), job.motion, job.method, job.output.quantities,
                         job.output.history_samples)
     except (ValueError, TypeError) as error:
-        given = " ".join(part for part in (f"--h {args.h:g}" if args.h is not None else "",
+        given = " ".join(part for part in (f"--h {_options.shown_number(args.h)}" if args.h is not None else "",
                                            f"--layer-base {args.layer_base}" if args.layer_base else "") if part)
         raise UsageError(f"{given}: {error}") from None
     return layer

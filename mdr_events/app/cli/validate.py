@@ -64,7 +64,7 @@ def spacings(args: argparse.Namespace) -> tuple[list[float] | None, str | None]:
             raise UsageError(f"--dx {bad[0]!r} is not allowed; allowed: spacings (m) from {SCALE_MIN:.2g} to "
                              f"{SCALE_MAX:.2g}")
         if len(set(args.dx)) != len(args.dx):
-            raise UsageError(f"--dx {' '.join(f'{value:g}' for value in args.dx)} repeats a spacing; allowed: "
+            raise UsageError(f"--dx {' '.join(map(_options.shown_number, args.dx))} repeats a spacing; allowed: "
                              "one different spacing (m) per run")
         found = list(args.dx)
     else:
