@@ -56,6 +56,20 @@ def test_an_interrupt_swallowed_by_garbage_collection_ends_the_command(tmp_path,
     assert written == ([] if when == "before" else ["simulation_A_discrete.nc", "simulation_A_discrete.png"])
 
 
+def test_a_swallowed_sigterm_ends_a_background_job_s_command_before_it_writes(tmp_path):
+    """A background job starts with SIGINT ignored, and ``_thread.interrupt_main`` (how a swallowed interrupt is
+    raised again in the main thread) does nothing then: a SIGTERM swallowed by the garbage collector before the run
+    let the command run on, write its files and only then exit 143. Now it ends where it was, nothing written."""
+    script = SWALLOWED.replace("signal.signal(signal.SIGINT, signal.default_int_handler)",
+                               "signal.signal(signal.SIGINT, signal.SIG_IGN)")
+    assert "signal.SIG_IGN)" in script
+    done = subprocess.run([sys.executable, "-c", script, "before", "SIGTERM", "simulate", "--scenario", "A", "--alpha",
+                           "20", "--out", "out"], capture_output=True, text=True, timeout=300, cwd=tmp_path,
+                          env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))
+    assert (done.returncode, done.stderr) == (143, "mdr-events: terminated (SIGTERM); no file was left half-written\n")
+    assert not (tmp_path / "out").exists() or os.listdir(tmp_path / "out") == []
+
+
 # --- R2: the rate-dependent law's functions took anything: AttributeError, OverflowError, ZeroDivisionError ----------
 import math  # noqa: E402
 

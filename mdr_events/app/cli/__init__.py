@@ -92,6 +92,7 @@ class _SwallowedInterrupts:
         self.interrupts: list[BaseException] = []
         self.pending: list[list[bool]] = []  # one per interrupt raised again: [True] once it has been
         self.previous = sys.unraisablehook
+        self.ignored_sigint: object = None  # SIGINT's handler of before, where a Python one was put in its place
 
     def __enter__(self) -> _SwallowedInterrupts:
         self.previous = sys.unraisablehook
@@ -100,6 +101,18 @@ class _SwallowedInterrupts:
 
     def __exit__(self, *exc_info) -> None:
         sys.unraisablehook = self.previous
+        if self.ignored_sigint is not None:
+            signal.signal(signal.SIGINT, self.ignored_sigint)
+            self.ignored_sigint = None
+
+    def _let_sigint_through(self) -> None:
+        """A simulated Ctrl-C reaches the main thread through a Python handler of SIGINT alone
+        (``_thread.interrupt_main`` does nothing where SIGINT is ignored, as in a background job, which would let a
+        swallowed SIGTERM's command run on and write its files): where SIGINT has none, Python's own is put in place
+        until :meth:`__exit__` (the command is ending: a real Ctrl-C now ends it as the noted interrupt does)."""
+        if self.ignored_sigint is None and not callable(signal.getsignal(signal.SIGINT)):
+            previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+            self.ignored_sigint = signal.SIG_DFL if previous is None else previous  # (None: not set from Python)
 
     def hook(self, unraisable) -> None:
         """``sys.unraisablehook``: an interrupt is noted and raised again; anything else goes to the previous hook."""
@@ -109,6 +122,7 @@ class _SwallowedInterrupts:
             self.previous(unraisable)
             return
         self.interrupts.append(unraisable.exc_value if unraisable.exc_value is not None else kind())
+        self._let_sigint_through()
         while True:
             try:
                 done: list[bool] = []
