@@ -613,9 +613,10 @@ class PlaySprings:
                 probed, anchor, label, edges = label[inner.size:], anchor[:inner.size], label[:inner.size], \
                     edges[:inner.size]
             else:
-                anchor, label, edges, _ = self._anchors(inner, t)  # (two springs on the same smooth edge of their windows at t to round-off hold the
-            change = np.flatnonzero((label[1:] != label[:-1])  # same anchor whatever their provenance: no kink between)
-                                    & ((edges[1:] == 0) | (edges[1:] != edges[:-1])))
+                anchor, label, edges, _ = self._anchors(inner, t)
+            # (two springs on the same smooth edge of their windows at t to round-off hold the same anchor whatever
+            # their provenance: no kink between them)
+            change = np.flatnonzero((label[1:] != label[:-1]) & ((edges[1:] == 0) | (edges[1:] != edges[:-1])))
             fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]
             if not fresh.size:
                 nodes = slice(1, -1) if round_ == 0 else slice(None)
