@@ -12,6 +12,7 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import evaluate, integrate, solve_path
 from mdr_events.models.continuum.closed_form import ClosedForce
+from mdr_events.models.continuum.extrema import solution_extrema
 from mdr_events.models.continuum.span import SpanIntegrator
 
 PAPER = me.Parameters.paper()
@@ -82,7 +83,13 @@ def _read(integrator, interpolant):
     rate = np.array([integrator.G2 * integrator.scale * primitive.rate(v * integrator.scale) for v in var])
     h = 1e-4 * (high - low)
     difference = (interpolant(var + h)[0] - interpolant(var - h)[0]) / (2 * h)
-    return rhs, rate, difference, interpolant(var)[0], np.array([interpolant(v)[0] for v in var])
+    fine = np.linspace(low, high, 2001)
+    rates = np.array([primitive.rate(v * integrator.scale) for v in fine])
+    changes = int(np.count_nonzero(np.sign(rates[1:]) * np.sign(rates[:-1]) < 0))
+    stationary = interpolant.stationary(low, high)
+    residual = [abs(primitive.rate(v * integrator.scale)) for v in stationary]
+    return (rhs, rate, difference, interpolant(var)[0], np.array([interpolant(v)[0] for v in var]),
+            (changes, len(stationary), residual, float(np.max(np.abs(rates[np.isfinite(rates)])))))
 
 
 @pytest.mark.parametrize("case", list(CASES))
@@ -94,17 +101,23 @@ def test_the_closed_form_and_the_quadrature_give_the_same_run(case, monkeypatch)
     times = np.linspace(0.0, min(closed.end_time, quadrature.end_time), 2001)
     force, reference = (evaluate(run, times)["tangential_force"] for run in (closed, quadrature))
     np.testing.assert_allclose(force, reference, rtol=0, atol=ROUTE_SHARE * np.max(np.abs(reference)))
+    extremes = [solution_extrema(run) for run in (closed, quadrature)]  # (read off the closed form's stationary points)
+    for name in ("tangential_force_max", "tangential_force_min"):
+        assert extremes[0][name] == pytest.approx(extremes[1][name], abs=ROUTE_SHARE * np.max(np.abs(reference)))
 
 
 @pytest.mark.parametrize("case", list(CASES))
 def test_the_primitives_derivative_is_the_right_hand_side(case, monkeypatch):
     """Every closed-form span of the run (at least one a case): ``2G* dP/da`` and the central difference of the force
-    are the integrator's right-hand side inside the span, and the force read at once is the force read point by
-    point, bit for bit."""
+    are the integrator's right-hand side inside the span, the force read at once is the force read point by point,
+    bit for bit, and ``ClosedForce.stationary`` finds every change of sign of its rate (on a scan of 2001 points) at a
+    root of it."""
     readings = []
     _run(case, monkeypatch, True, readings)
     assert readings
-    for rhs, rate, difference, together, alone in readings:
+    for rhs, rate, difference, together, alone, (changes, found, residual, largest) in readings:
+        assert found == changes  # (each change of sign of the rate on a fine scan is a stationary point found)
+        assert all(value <= RATE_SHARE * largest for value in residual)
         scale = max(np.max(np.abs(rhs)), 1e-300)
         np.testing.assert_allclose(rate, rhs, rtol=0, atol=RATE_SHARE * scale)
         np.testing.assert_allclose(difference, rhs, rtol=0, atol=DERIVATIVE_SHARE * scale)

@@ -26,13 +26,18 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
+from scipy.optimize import brentq
 
 from .rate_march import _crossed
 from .span_march import Marched, _first_root
 from .state import Cap
+from .tolerances import EPS
 
-__all__ = ["Primitive", "ClosedForce", "EVENT_READINGS", "span_primitive", "closed_span"]
+__all__ = ["Primitive", "ClosedForce", "EVENT_READINGS", "STATIONARY_READINGS", "span_primitive", "closed_span"]
 
+#: Equal parts of a bracket at whose ends :meth:`ClosedForce.stationary` reads the force's rate for a change of sign
+#: (a stationary point inside a part is bracketed by it; a double root, touching zero, is not a sign change)
+STATIONARY_READINGS = 16
 #: Equal parts of a span at whose ends a closed-form span reads its events (besides its knots): as many as the
 #: quadrature's panels on the fronts' spans (``MIN_STEPS_PER_SPAN`` of them at least) twice over
 EVENT_READINGS = 16
@@ -110,6 +115,33 @@ class ClosedForce:
         self.primitive, self.force, self.G2, self.scale = primitive, force, G2, scale
         self.origin = primitive.at(start * scale)
         self.ts = list(ts)
+
+    def stationary(self, low: float, high: float) -> list[float]:
+        """The roots of ``dF_x/dvar`` (the primitive's rate) in ``[low, high]``: where it changes sign between
+        :data:`STATIONARY_READINGS` equal parts of the interval and the breakpoints, by Brent's method (what
+        :mod:`.stationary` reads off a dense output's polynomials, here of the closed form).
+
+        Parameters
+        ----------
+        low, high : float
+            The interval (the span's variable), ``low <= high``.
+
+        Returns
+        -------
+        list of float
+            The roots, increasing (none: the force is monotone there).
+        """
+        grid = sorted({*np.linspace(low, high, STATIONARY_READINGS + 1).tolist(),
+                       *(t for t in self.ts if low < t < high)})
+        rate = lambda var: self.primitive.rate(var * self.scale)  # noqa: E731
+        rates = [rate(var) for var in grid]
+        # (a rate zero at a reading counts where it changes sign there; one zero throughout, a constant force, has none)
+        roots = [grid[k] for k in range(1, len(grid) - 1) if rates[k] == 0.0 and rates[k - 1] * rates[k + 1] < 0.0]
+        for k in range(len(grid) - 1):
+            if rates[k] * rates[k + 1] < 0.0:
+                roots.append(brentq(rate, grid[k], grid[k + 1], xtol=4 * EPS * max(abs(grid[k]), abs(grid[k + 1])),
+                                    rtol=4 * EPS))
+        return sorted(roots)
 
     def at(self, var: float) -> float:
         """``F_x`` at one value of the span's variable (N), in Python floats."""

@@ -6,7 +6,9 @@ no radius root per evaluation).
   :data:`DENSE_DEGREE`; the time, or the radius over the span's scale, which is monotone in time on a moving span).
   Each step's polynomial is read off at ``DENSE_DEGREE + 1`` Chebyshev points (exactly: the interpolant *is* that
   polynomial), differentiated, and the real roots of the derivative in the bracket are the stationary points. A
-  force linear in time (:class:`~.span.LinearForce`) or constant has none inside a span.
+  force in closed form (:class:`~.closed_form.ClosedForce`) gives the roots of its primitive's rate
+  (:meth:`~.closed_form.ClosedForce.stationary`). A force linear in time (:class:`~.span.LinearForce`) or constant
+  has none inside a span.
 - ``F_N`` on a moving radius: along the branch ``F_N(a) = 2E* (a d(a) − ∫_0^a g)`` (10), so
   ``dF_N/da = 2E* (d(a) + a d'(a) − g(a))`` (the branch's depth, slope and profile term,
   :meth:`~.branch.Branch.depth_term`); its root in the bracket is found by ``brentq`` in the radius, and the time is that of the depth
@@ -129,7 +131,11 @@ def stationary_points(solution, index: int, quantity: str, times: tuple[float, f
         return None
     if span.interpolant is None:  # a constant force
         return []
-    if not hasattr(span.interpolant, "interpolants"):  # a force linear in time
+    if hasattr(span.interpolant, "interpolants"):  # (DOP853's steps, or the panels stored as such)
+        roots = lambda low, high: _dense_output_roots(span.interpolant, low, high)  # noqa: E731
+    elif hasattr(span.interpolant, "stationary"):  # a force in closed form (:mod:`.closed_form`)
+        roots = span.interpolant.stationary
+    else:  # a force linear in time
         return [] if span.variable is Variable.TIME else None
     if span.variable is Variable.TIME:
         bracket = (solution.t_contact + times[0], solution.t_contact + times[1])
@@ -137,7 +143,7 @@ def stationary_points(solution, index: int, quantity: str, times: tuple[float, f
         bracket = (radii[0] / span.scale, radii[1] / span.scale)
     bracket = tuple(span_variable(span, end) for end in bracket)  # (u on a graded span: dv/du > 0 inside)
     points = []
-    for var in _dense_output_roots(span.interpolant, min(bracket), max(bracket)):
+    for var in roots(min(bracket), max(bracket)):
         value = float(span.interpolant(var)[0])
         natural = natural_variable(span, var)
         if span.variable is Variable.TIME:
