@@ -95,6 +95,8 @@ def derivative_roots(values: np.ndarray, degree: int = DENSE_DEGREE) -> list[flo
     """
     return [float(root.real) for root in chebyshev.chebroots(_chebyshev_reading(degree)[1] @ values)
             if abs(root.imag) <= IMAGINARY_SHARE]
+
+
 #: ``brentq``'s relative tolerance on the stationary radius of ``F_N`` (a few ulp).
 RADIUS_RTOL = 4 * EPS
 
