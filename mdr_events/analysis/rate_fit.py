@@ -264,17 +264,13 @@ def fit_rate_adhesion(measurements: Sequence[RateMeasurement], params: Parameter
         if models is None:  # (a rejected trial: least_squares shrinks its step)
             return np.full(sum(force.size for force in forces), np.nan)
         parts = []
-        for index, (model, force, weight) in enumerate(zip(models, forces, weights)):
+        for index, (model, weight) in enumerate(zip(models, weights)):
             if offsets:
                 model = model + theta[len(free) + index]
-            with np.errstate(over="ignore"):
-                parts.append(weight * (model - force))
-            _check_residuals(index, parts[-1], model, measurements[index], bound)
+            parts.append(_weighted(index, model, weight, measurements[index], bound))
         return np.concatenate(parts)
 
-    from mdr_events.analysis.fit_problem import largest_residual  # (here: the module registers a schema on every write)
-
-    bound = largest_residual(sum(force.size for force in forces))
+    bound = _residual_bound(sum(force.size for force in forces))
     theta0 = np.array([math.log(base[name]) if name in _LOG_SCALED else base[name] for name in free]
                       + [0.0] * (count if offsets else 0))
     lower, upper = _scaled_bounds(names)
@@ -300,12 +296,22 @@ def _weights(measurements: Sequence[RateMeasurement]) -> tuple[list[float], floa
     return [weight / scale for weight in weights], scale
 
 
-def _check_residuals(index: int, residual: np.ndarray, model: np.ndarray, m: RateMeasurement, bound: float) -> None:
-    """Refuse curve ``index``'s residuals (weighted as :func:`_weights` weighs them) beyond ``bound``
-    (:func:`~mdr_events.analysis.fit_problem.largest_residual`, the paper law's fit's: their squares and the
-    Jacobian's would overflow), naming both curves' magnitudes."""
+def _residual_bound(samples: int) -> float:
+    """:func:`~mdr_events.analysis.fit_problem.largest_residual` of ``samples`` residuals (imported here: this module
+    registers a schema on every result's write)."""
+    from mdr_events.analysis.fit_problem import largest_residual
+
+    return largest_residual(samples)
+
+
+def _weighted(index: int, model: np.ndarray, weight: float, m: RateMeasurement, bound: float) -> np.ndarray:
+    """Curve ``index``'s residuals ``weight (model − measured)`` (``weight`` as :func:`_weights` weighs it); refused
+    beyond ``bound`` (:func:`_residual_bound`, the paper law's fit's: their squares and the Jacobian's would overflow),
+    naming both curves' magnitudes."""
+    with np.errstate(over="ignore"):
+        residual = weight * (model - np.asarray(m.normal_force, dtype=float))
     if np.all(np.abs(residual) <= bound):
-        return
+        return residual
     largest = float(np.max(np.abs(residual)))  # (inf where it overflowed)
     raise ValueError(f"measurements[{index}]: the residual model − measured reaches {largest:.3g} N with the model's "
                      f"largest |F_N| {float(np.max(np.abs(model))):.3g} N and the measured "
