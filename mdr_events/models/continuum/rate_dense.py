@@ -16,6 +16,8 @@ from scipy.integrate._ivp.common import OdeSolution
 from scipy.integrate._ivp.lsoda import LsodaDenseOutput
 from scipy.integrate._ivp.radau import RadauDenseOutput
 
+from .rate_lsoda import LsodaSteps
+
 __all__ = ["StepPolynomials", "step_polynomials", "REACH_STEPS", "REACH_NUDGES"]
 
 #: The most safeguarded Newton steps :meth:`StepPolynomials.reach` takes in a step (each one a bisection where Newton's
@@ -152,22 +154,33 @@ def step_polynomials(solution):
     Parameters
     ----------
     solution : callable
-        A piece's dense output.
+        A piece's dense output (LSODA's steps as :class:`~.rate_lsoda.LsodaSteps`: their rows as they are).
 
     Returns
     -------
     StepPolynomials or callable
         The same values, evaluated in one pass.
     """
+    if isinstance(solution, LsodaSteps):
+        laid_out = solution.polynomial_rows()
+        if laid_out is None:
+            return solution.solution
+        origins, scales, rows = laid_out
+        return StepPolynomials(solution.ts, origins, scales, _padded(rows), solution.side)
     if not isinstance(solution, OdeSolution) or not solution.ascending or not solution.interpolants:
         return solution
     rows = [_row(interpolant) for interpolant in solution.interpolants]
     if any(row is None for row in rows) or rows[0][2].ndim != 1:
         return solution
-    width = max(len(row[2]) for row in rows)
-    coefficients = np.zeros((len(rows), width))
-    for index, (_, _, row) in enumerate(rows):
-        coefficients[index, :len(row)] = row
     origins = np.array([row[0] for row in rows], dtype=float)
     scales = np.array([row[1] for row in rows], dtype=float)
-    return StepPolynomials(np.asarray(solution.ts, dtype=float), origins, scales, coefficients, solution.side)
+    return StepPolynomials(np.asarray(solution.ts, dtype=float), origins, scales, _padded([row[2] for row in rows]),
+                           solution.side)
+
+
+def _padded(rows: list) -> np.ndarray:
+    """The rows of coefficients as one array, each padded with zeros to the longest."""
+    coefficients = np.zeros((len(rows), max(len(row) for row in rows)))
+    for index, row in enumerate(rows):
+        coefficients[index, :len(row)] = row
+    return coefficients
