@@ -45,6 +45,7 @@ class StepPolynomials:
 
     def __init__(self, ts: np.ndarray, origins: np.ndarray, scales: np.ndarray, coefficients: np.ndarray, side: str):
         self.ts, self.origins, self.scales, self.coefficients, self.side = ts, origins, scales, coefficients, side
+        self._columns = np.ascontiguousarray(coefficients.T)  # (one row per power: each gathered at once by take)
         self._at_ends = None  # (the state at the steps' ends, the first time reach asks)
 
     def __call__(self, t) -> np.ndarray:
@@ -62,24 +63,29 @@ class StepPolynomials:
         """
         times = np.asarray(t, dtype=float)
         flat = np.atleast_1d(times).ravel()
-        step = np.minimum(np.maximum(np.searchsorted(self.ts, flat, side=self.side) - 1, 0), len(self.origins) - 1)
-        x = (flat - self.origins[step]) / self.scales[step]
-        rows = self.coefficients[step]
-        value = rows[:, -1].copy()
-        for column in range(rows.shape[1] - 2, -1, -1):
-            value = value * x + rows[:, column]
+        step = np.searchsorted(self.ts, flat, side=self.side) - 1
+        np.clip(step, 0, len(self.origins) - 1, out=step)
+        x = (flat - self.origins.take(step)) / self.scales.take(step)
+        columns = self._columns
+        value = columns[-1].take(step)
+        for column in columns[-2::-1]:  # (Horner's rule in place: the same products and sums)
+            value *= x
+            value += column.take(step)
         return value.reshape((1,) + times.shape) if times.ndim else value[:1].reshape(1)
 
 
     def _value_and_slope(self, t: np.ndarray, step: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The polynomial of ``step`` and its slope in ``t`` at ``t`` (Horner's rule)."""
-        x = (t - self.origins[step]) / self.scales[step]
-        rows = self.coefficients[step]
-        value, slope = rows[:, -1].copy(), np.zeros(t.shape)
-        for column in range(rows.shape[1] - 2, -1, -1):
-            slope = slope * x + value
-            value = value * x + rows[:, column]
-        return value, slope / self.scales[step]
+        scale = self.scales.take(step)
+        x = (t - self.origins.take(step)) / scale
+        columns = self._columns
+        value, slope = columns[-1].take(step), np.zeros(t.shape)
+        for column in columns[-2::-1]:
+            slope *= x
+            slope += value
+            value *= x
+            value += column.take(step)
+        return value, slope / scale
 
     def reach(self, target: np.ndarray, lo: float, hi: np.ndarray) -> np.ndarray:
         """The first time in ``[lo, hi]`` (elementwise) at which the state, non-decreasing there, reaches ``target``:
