@@ -64,7 +64,7 @@ class StepPolynomials:
         times = np.asarray(t, dtype=float)
         flat = np.atleast_1d(times).ravel()
         step = np.searchsorted(self.ts, flat, side=self.side) - 1
-        np.clip(step, 0, len(self.origins) - 1, out=step)
+        np.minimum(np.maximum(step, 0, out=step), len(self.origins) - 1, out=step)
         x = (flat - self.origins.take(step)) / self.scales.take(step)
         columns = self._columns
         value = columns[-1].take(step)
