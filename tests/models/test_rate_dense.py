@@ -64,6 +64,45 @@ def test_reach_finds_the_first_time_the_radius_reaches_a_value_as_the_bisection_
     np.testing.assert_array_equal(alone, found[:100])
 
 
+#: Where StepPolynomials.reach's Newton steps (a secant's start, a probe below an iterate that converged from above)
+#: meet the 64 halvings of the bisection: both are the least double at which the step's polynomial reaches the value;
+#: they can differ only where that double is a step's end, at which the bisection reads the next step's polynomial
+#: (equal to this one's to rounding), by a double (measured: 0 on 18 000 targets).
+REACH_EXACT_ULPS = 1
+#: The samples of an advancing piece on which the part where its radius does not fall is found.
+MONOTONE_GRID = 400_001
+
+
+@pytest.mark.parametrize("v_ref, n, alpha", [(1e-6, 0.6, 20.0), (1e-5, 0.9, 60.0), (3e-7, 0.4, 5.0)])
+def test_reach_is_the_least_double_the_bisection_finds_also_where_the_radius_is_flat(v_ref, n, alpha):
+    """Every advancing piece, 3000 targets between doubles of the radius: among them values where the edge has almost
+    stopped, the radius flat to its last digit over thousands of doubles of the clock, where a Newton iterate that
+    converged from above is not the first time (the probe below it finds the flat stretch, the bracket is halved)."""
+    from mdr_events.models.continuum.rate_shifts import _bisect
+
+    law = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, v_ref, n)
+    run = solve_edge(PAPER, me.Path.scenario_A(alpha, PAPER), law, method="LSODA")
+    rng = np.random.default_rng(11)
+    checked = 0
+    for piece in run.pieces:
+        fast = step_polynomials(piece[3])
+        if not isinstance(fast, StepPolynomials) or not fast(fast.ts[-1])[0] > fast(fast.ts[0])[0]:
+            continue
+        lo, end = float(fast.ts[0]), float(fast.ts[-1])
+        # (where the edge comes to rest the dense output overshoots by a few ulp of the radius before the stop event:
+        # the targets lie where it does not yet fall, reach's precondition)
+        grid = np.linspace(lo, end, MONOTONE_GRID)
+        falls = np.flatnonzero(np.diff(fast(grid)[0]) < 0.0)
+        end = float(grid[falls[0]]) if falls.size else end
+        target = fast(rng.uniform(lo, end, 3000))[0] * (1.0 + rng.uniform(-1e-12, 1e-12, 3000))
+        hi = rng.uniform(lo, end, 3000)
+        found = fast.reach(target, lo, hi)
+        expected = _bisect(lambda t: fast(t)[0], np.full(hi.shape, lo), hi, target)
+        np.testing.assert_allclose(found, expected, rtol=0.0, atol=REACH_EXACT_ULPS * np.spacing(end))
+        checked += 1
+    assert checked
+
+
 def test_the_first_time_x_reaches_a_level_is_the_bisection_s():
     from mdr_events.models.continuum.rate_shifts import _bisect, _reach
 

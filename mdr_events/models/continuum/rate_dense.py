@@ -18,11 +18,14 @@ from scipy.integrate._ivp.radau import RadauDenseOutput
 
 from .rate_lsoda import LsodaSteps
 
-__all__ = ["StepPolynomials", "step_polynomials", "REACH_STEPS", "REACH_NUDGES"]
+__all__ = ["StepPolynomials", "step_polynomials", "REACH_STEPS", "REACH_NUDGES", "PROBE_ULPS"]
 
 #: The most safeguarded Newton steps :meth:`StepPolynomials.reach` takes in a step (each one a bisection where Newton's
 #: would leave the bracket: 64 halvings reach a double's spacing from any step's width).
 REACH_STEPS = 64
+#: The doubles below an iterate that converged from above at which :meth:`StepPolynomials.reach` probes for the value:
+#: a Newton step below the clock's spacing leaves the first time within a double or two of the iterate.
+PROBE_ULPS = 4
 #: The doubles :meth:`StepPolynomials.reach` steps up from a Newton iterate that converged just below the value (its
 #: last step below the clock's spacing leaves it within a few ulp of the first time the value is reached).
 REACH_NUDGES = 8
@@ -121,27 +124,68 @@ class StepPolynomials:
         low, high, goal = low[reached], high[reached], target[reached]
         step = np.minimum(np.maximum(np.searchsorted(self.ts, 0.5 * (low + high), side=self.side) - 1, 0),
                           len(self.origins) - 1)
-        t = 0.5 * (low + high)
-        settled = np.zeros(t.shape, dtype=bool)  # (each target stops where its own step is below the clock's spacing:
-        for _ in range(REACH_STEPS):            # the same time asked alone or among others)
-            value, slope = self._value_and_slope(t, step)
-            above = value >= goal
-            high, low = np.where(above, t, high), np.where(above, low, t)
-            with np.errstate(divide="ignore", invalid="ignore"):
-                newton = t - (value - goal) / slope
-            inside = (newton > low) & (newton < high)
-            moved = np.where(inside, newton, 0.5 * (low + high))
-            settled |= np.abs(moved - t) <= np.spacing(np.abs(t))
-            if np.all(settled):
+        t = self._start(low, high, goal, step)
+        bracket, probed = np.stack([low, high]), np.zeros(t.shape, dtype=bool)
+        active = np.arange(t.size)  # (each target stops at its own convergence, the others iterate on: the same
+        for _ in range(REACH_STEPS):  # time asked alone or among others)
+            active = self._newton(t, bracket, probed, goal, step, active)
+            if not active.size:
                 break
-            t = np.where(settled, t, moved)
-        for _ in range(REACH_NUDGES):  # (converged from below: the next doubles up reach the value)
+        out[reached] = self._first_double(t, bracket[0], bracket[1], goal, step)
+        return out
+
+    def _newton(self, t: np.ndarray, bracket: np.ndarray, probed: np.ndarray, goal: np.ndarray, step: np.ndarray,
+                active: np.ndarray) -> np.ndarray:
+        """One safeguarded Newton step of :meth:`reach` on the targets ``active`` (``t``, the ``bracket``'s rows
+        ``low`` and ``high`` and ``probed`` updated in place); the targets still to converge."""
+        at, goal, step = t[active], goal[active], step[active]
+        value, slope = self._value_and_slope(at, step)
+        above = value >= goal
+        low, high = np.where(above, bracket[0, active], at), np.where(above, at, bracket[1, active])
+        bracket[0, active], bracket[1, active] = low, high
+        with np.errstate(divide="ignore", invalid="ignore"):
+            newton = at - (value - goal) / slope
+        spacing = np.spacing(np.abs(at))
+        tiny = np.abs(newton - at) <= spacing
+        # (converged from below: the next doubles up reach the value; or the bracket is a double wide)
+        done = (tiny & ~above) | (high - low <= spacing)
+        middle = 0.5 * (low + high)
+        # (converged from above: a probe a few doubles below brackets the first time; where the probe is above too,
+        # the value is flat there to its last digit, and the bracket is halved)
+        probe = tiny & above & ~probed[active]
+        inside = (newton > low) & (newton < high) & ~tiny
+        moved = np.where(probe, np.maximum(at - PROBE_ULPS * spacing, middle), np.where(inside, newton, middle))
+        probed[active] = probe
+        t[active] = np.where(done, at, moved)
+        return active[~done]
+
+    def _start(self, low: np.ndarray, high: np.ndarray, goal: np.ndarray, step: np.ndarray) -> np.ndarray:
+        """The secant's time between the bracket's ends on the step's polynomial (its middle where that is not
+        strictly inside): Newton's start, a few ulp of the clock from the time sought on a smooth step."""
+        ends = np.concatenate([low, high])
+        values = self._value_and_slope(ends, np.concatenate([step, step]))[0]
+        v_low, v_high = values[:low.size], values[low.size:]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            secant = low + (goal - v_low) / (v_high - v_low) * (high - low)
+        return np.where((secant > low) & (secant < high), secant, 0.5 * (low + high))
+
+    def _first_double(self, t: np.ndarray, low: np.ndarray, high: np.ndarray, goal: np.ndarray,
+                      step: np.ndarray) -> np.ndarray:
+        """The least double about ``t`` at which the step's polynomial reaches ``goal``: up from an iterate that
+        converged just below it (not beyond the bracket's ``high``), down from one just above (not to its ``low``,
+        below the value), at most :data:`REACH_NUDGES` doubles either way."""
+        for _ in range(REACH_NUDGES):
             short = self._value_and_slope(t, step)[0] < goal
             if not np.any(short):
                 break
             t = np.where(short, np.minimum(np.nextafter(t, np.inf), high), t)
-        out[reached] = t
-        return out
+        for _ in range(REACH_NUDGES):
+            before = np.nextafter(t, -np.inf)
+            down = (before > low) & (self._value_and_slope(before, step)[0] >= goal)
+            if not np.any(down):
+                break
+            t = np.where(down, before, t)
+        return t
 
 
 def _row(interpolant) -> tuple[float, float, np.ndarray] | None:

@@ -387,9 +387,15 @@ def _swept(shifts: RateShifts, solution, start: float, lo: np.ndarray, hi: np.nd
 
 
 def _partial(solution, knots: np.ndarray, slope: np.ndarray, ends: np.ndarray, index: np.ndarray) -> np.ndarray:
-    """``∫ σẋ a dτ`` from ``knots[index]`` to ``ends`` (each within its knot interval), Gauss–Legendre."""
-    half, weighted = gauss_radius(lambda t: solution(t)[0], knots[index], ends)
-    return slope[index] * half * weighted
+    """``∫ σẋ a dτ`` from ``knots[index]`` to ``ends`` (each within its knot interval), Gauss–Legendre; 0 where an end
+    is its knot (the rule's half-width 0: no nodes evaluated there)."""
+    start = knots[index]
+    out = np.zeros(ends.shape)
+    moved = np.flatnonzero(ends != start)
+    if moved.size:
+        half, weighted = gauss_radius(lambda t: solution(t)[0], start[moved], ends[moved])
+        out[moved] = slope[index[moved]] * half * weighted
+    return out
 
 
 def gauss_radius(radius, start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
