@@ -43,6 +43,7 @@ module                     one idea
                            ``tangential_work``
 :mod:`.rate_edge`          a rate-dependent adhesion law's edge: the radius as the state of an ODE (the normal problem)
 :mod:`.rate_march`         ``solve_ivp``'s loop for the edge's scalar ODE without its per-step bookkeeping (same steps)
+:mod:`.rate_lsoda`         LSODA's steps of the edge by its integrator's runner, dense output as rows (same steps)
 :mod:`.rate_run`           ``simulate``'s continuum under the rate-dependent law: quantities, event log, extrema
 :mod:`.edge_let_go`        where a receding rate-dependent edge lets go (its release rate rising as it shrinks)
 :mod:`.rate_shifts`        the springs' shifts on top of it (``τ0``'s cap, ``x`` not turning back): ``F_x`` as a closed

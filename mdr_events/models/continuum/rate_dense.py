@@ -119,7 +119,7 @@ class StepPolynomials:
         low, high = ends[np.maximum(after - 1, 0)], np.minimum(ends[after], hi)
         reached = (self(high)[0] >= target) & (high > low)
         out = high.copy()
-        if not np.any(reached):
+        if not reached.any():
             return out
         low, high, goal = low[reached], high[reached], target[reached]
         step = np.minimum(np.maximum(np.searchsorted(self.ts, 0.5 * (low + high), side=self.side) - 1, 0),
@@ -176,13 +176,13 @@ class StepPolynomials:
         below the value), at most :data:`REACH_NUDGES` doubles either way."""
         for _ in range(REACH_NUDGES):
             short = self._value_and_slope(t, step)[0] < goal
-            if not np.any(short):
+            if not short.any():
                 break
             t = np.where(short, np.minimum(np.nextafter(t, np.inf), high), t)
         for _ in range(REACH_NUDGES):
             before = np.nextafter(t, -np.inf)
             down = (before > low) & (self._value_and_slope(before, step)[0] >= goal)
-            if not np.any(down):
+            if not down.any():
                 break
             t = np.where(down, before, t)
         return t

@@ -23,7 +23,7 @@ from scipy.integrate._ivp.base import ConstantDenseOutput
 from scipy.integrate._ivp.common import OdeSolution
 from scipy.integrate._ivp.lsoda import LsodaDenseOutput
 
-__all__ = ["LsodaStepper", "LsodaSteps"]
+__all__ = ["LsodaStepper", "LsodaSteps", "interpolant"]
 
 #: ``LSODA._step_impl``'s ``itask``: one step, not beyond ``rwork[0]`` (the bound).
 ONE_STEP = 5
@@ -53,6 +53,7 @@ class LsodaStepper:
         self.integrator, self.fun, self.t_bound = integrator, fun, t_bound
         self.jac, self.f_params, self.jac_params = ode.jac or (lambda: None), ode.f_params, ode.jac_params
         self.t, self.y, self.t_old = ode.t, ode._y, None
+        self.iwork, self.rwork = integrator.iwork, integrator.rwork  # (the work arrays every call is given)
 
     def step(self) -> bool:
         """One step (``LSODA._step_impl``): ``False`` where it failed.
@@ -86,7 +87,7 @@ class LsodaStepper:
         """
         if self.t == self.t_old:
             return (self.t_old, self.t, None, None, self.y.copy())
-        iwork, rwork = self.integrator.iwork, self.integrator.rwork
+        iwork, rwork = self.iwork, self.rwork
         order, h = iwork[13], rwork[11]
         yh = rwork[20:21 + order].copy()
         if iwork[14] < order:

@@ -136,7 +136,7 @@ class RateShifts:
         out = np.zeros(times.shape)
         for view in self.views:
             inside = (times >= view.t0) & (times <= view.t1)
-            if np.any(inside):
+            if inside.any():
                 out[inside] = view.solution(times[inside])[0]
         return out
 
@@ -329,7 +329,7 @@ def _reach(shifts: RateShifts, top: np.ndarray, level: np.ndarray) -> np.ndarray
     before = np.maximum(after - 1, 0)
     rise = along[after] - along[before]
     share = np.where(rise > 0.0, (level - along[before]) / np.where(rise > 0.0, rise, 1.0), 1.0)
-    when = corners[before] + np.clip(share, 0.0, 1.0) * (corners[after] - corners[before])
+    when = corners[before] + np.minimum(np.maximum(share, 0.0), 1.0) * (corners[after] - corners[before])
     return np.minimum(when, top)
 
 
@@ -381,7 +381,7 @@ def _swept(shifts: RateShifts, solution, start: float, lo: np.ndarray, hi: np.nd
     knots, slope, cumulative = shifts._sweeps[key]
 
     def primitive(ends: np.ndarray) -> np.ndarray:
-        index = np.clip(np.searchsorted(knots, ends, side="right") - 1, 0, len(knots) - 2)
+        index = np.minimum(np.maximum(np.searchsorted(knots, ends, side="right") - 1, 0), len(knots) - 2)
         return cumulative[index] + _partial(solution, knots, slope, ends, index)
     return primitive(hi) - primitive(lo)
 
@@ -438,13 +438,13 @@ def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.n
     for lo, hi, solution in records:
         a_lo = float(solution(lo)[0])
         present = a_lo < radius
-        if not np.any(present):
+        if not present.any():
             continue
         rows = np.flatnonzero(present)
         top, level = hi[rows], levels[rows]
         if view.way < 0 and forces:  # (the receding edge has taken the springs beyond the radius now)
             beyond = solution(top)[0] > radius[rows]
-            if np.any(beyond):
+            if beyond.any():
                 top[beyond] = _first_radius(solution, lo, top[beyond], radius[rows][beyond])
         star = np.where(shifts._x(np.full(rows.size, lo)) >= level, lo, _reach(shifts, top, level))
         a_star = solution(star)[0]
