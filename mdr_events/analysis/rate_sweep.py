@@ -22,7 +22,8 @@ import numpy as np
 from mdr_events.analysis.sweep_events import event_quantities, first_events
 from mdr_events.limits import Limits
 from mdr_events.models.continuum.rate_coulomb import takes_rate_coulomb
-from mdr_events.models.continuum.rate_run import RUN_METHOD, rate_events, rate_extrema, rate_quantities, scan_run
+from mdr_events.models.continuum.rate_run import (RUN_METHOD, evaluate_run, rate_events, rate_extrema, rate_quantities,
+                                                  scan_run)
 from mdr_events.models.continuum.rate_shifts import RateShifts, solve_rate_shifts
 from mdr_events.models.continuum.solution import WORK_NODES
 from mdr_events.models.job import ModelJob
@@ -120,9 +121,13 @@ def rate_continuum_quantities(model: ModelJob, path: Path, method: Continuum, li
         limits.check(f"the run's history of {np.size(times)} samples", samples=np.size(times))
     shifts = solve_rate_shifts(model.params, path, model.adhesion, profile=model.profile, friction=model.friction,
                                rtol=method.tolerances.rtol, method=RUN_METHOD)
-    scan = scan_run(shifts)
-    events, extrema = rate_events(shifts, scan), rate_extrema(shifts, scan)
     start = path.first_contact_time()
+    curves = None
+    if times is None:
+        scan = scan_run(shifts)
+    else:  # (the history's F_x and the scan's in one pass over the run's pieces)
+        curves, scan = evaluate_run(shifts, np.asarray(times, dtype=float) - start)
+    events, extrema = rate_events(shifts, scan), rate_extrema(shifts, scan)
     out = {"normal_force_min": extrema["normal_force_min"],
            "tangential_force_max": max(abs(extrema["tangential_force_max"]), abs(extrema["tangential_force_min"])),
            "contact_area_max": extrema["contact_area_max"],
@@ -132,9 +137,8 @@ def rate_continuum_quantities(model: ModelJob, path: Path, method: Continuum, li
     out.update(event_quantities(first, start))
     pull = first.get("pull_off")
     out["pull_off_force"] = float(shifts.normal_force(np.array([pull.time + start]))[0]) if pull else math.nan
-    if times is None:
+    if curves is None:
         return out, None
-    curves = rate_quantities(shifts, np.asarray(times, dtype=float) - start)
     curves["contact_area"] = math.pi * curves["contact_radius"] ** 2
     before = np.asarray(times, dtype=float) < start  # (before the first contact: nothing touches)
     history = np.array([np.where(before, 0.0, curves[name]) for name in HISTORY_NAMES])
