@@ -74,3 +74,24 @@ def test_a_step_whose_order_falls_is_read_as_the_solver_reads_it():
         np.testing.assert_array_equal(yh, dense.yh[0])
         np.testing.assert_array_equal(ours.y, theirs.y)
     assert falls > 0
+
+
+def test_the_runner_is_checked_against_scipy_s_own_steps_once(monkeypatch):
+    """This SciPy steps LSODA as the runner assumes (else a newer SciPy's private layout has moved: the edge then runs
+    on ``OdeSolver.step``, and this test says so); a runner whose dense output is off is refused, a name gone too."""
+    from mdr_events.models.continuum import rate_lsoda
+
+    rate_lsoda.runner_steps_as_scipy.cache_clear()
+    assert rate_lsoda.runner_steps_as_scipy()
+    true_row = rate_lsoda.LsodaStepper.row
+
+    def off_row(self):
+        t_old, t, h, order, yh = true_row(self)
+        return (t_old, t, h, order, None if yh is None else yh * (1.0 + 1e-15))
+
+    for broken in (off_row, property(lambda self: (_ for _ in ()).throw(AttributeError("gone")))):
+        monkeypatch.setattr(rate_lsoda.LsodaStepper, "row", broken)
+        rate_lsoda.runner_steps_as_scipy.cache_clear()
+        assert not rate_lsoda.runner_steps_as_scipy()
+    monkeypatch.undo()
+    rate_lsoda.runner_steps_as_scipy.cache_clear()

@@ -15,6 +15,7 @@ Nordsieck array of the last successful order, its last column rescaled where the
 
 from __future__ import annotations
 
+import functools
 from typing import Callable
 
 import numpy as np
@@ -23,12 +24,14 @@ from scipy.integrate._ivp.base import ConstantDenseOutput
 from scipy.integrate._ivp.common import OdeSolution
 from scipy.integrate._ivp.lsoda import LsodaDenseOutput
 
-__all__ = ["LsodaStepper", "LsodaSteps", "interpolant"]
+__all__ = ["LsodaStepper", "LsodaSteps", "interpolant", "runner_steps_as_scipy"]
 
 #: ``LSODA._step_impl``'s ``itask``: one step, not beyond ``rwork[0]`` (the bound).
 ONE_STEP = 5
 #: ``LSODA._step_impl``'s message where the step failed.
 FAILED = "Unexpected istate in LSODA."
+#: The steps :func:`runner_steps_as_scipy` compares (enough for LSODA to change its order and switch methods).
+CHECKED_STEPS = 60
 
 
 class LsodaStepper:
@@ -172,3 +175,36 @@ class LsodaSteps:
             return None
         return (np.array([row[1] for row in self.rows], dtype=float),
                 np.array([row[2] for row in self.rows], dtype=float), [row[4] for row in self.rows])
+
+
+def _stiff_check(t: float, y: np.ndarray) -> list[float]:
+    """``ẏ = −50 (y − cos t)``: stiff enough for LSODA to switch methods and change its order within a few steps."""
+    return [-50.0 * (y[0] - np.cos(t))]
+
+
+@functools.cache
+def runner_steps_as_scipy() -> bool:
+    """Whether this SciPy's ``LSODA`` is stepped by its runner as :class:`LsodaStepper` assumes (its private layout:
+    the integrator's ``runner``, ``call_args``, the work arrays' places): an ODE stepped both ways, every step's end,
+    state and dense output at its middle compared bit for bit, once per process. Where they differ, or a name has
+    gone, the edge is stepped by ``OdeSolver.step`` (:mod:`.rate_march`): slower, the same numbers.
+
+    Returns
+    -------
+    bool
+        Whether :class:`LsodaStepper` may run.
+    """
+    try:
+        stepper = LsodaStepper(_stiff_check, 0.0, 1.0, 0.0, 1e-8, 1e-12)
+        solver = LSODA(_stiff_check, 0.0, np.array([0.0]), 1.0, rtol=1e-8, atol=1e-12)
+        for _ in range(CHECKED_STEPS):
+            if solver.status != "running":
+                return True
+            moved, _ = stepper.step(), solver.step()
+            middle = 0.5 * (solver.t_old + solver.t)
+            if not (moved and stepper.t == solver.t and stepper.y[0] == solver.y[0]
+                    and interpolant(stepper.row())(middle)[0] == solver.dense_output()(middle)[0]):
+                return False
+        return True
+    except Exception:  # (SciPy's private names moved: the public route)
+        return False

@@ -17,7 +17,7 @@ from scipy.integrate import BDF, LSODA, Radau
 from scipy.integrate._ivp.common import OdeSolution
 from scipy.optimize import brentq
 
-from .rate_lsoda import FAILED, LsodaStepper, LsodaSteps, interpolant
+from .rate_lsoda import FAILED, LsodaStepper, LsodaSteps, interpolant, runner_steps_as_scipy
 
 __all__ = ["Marched", "march", "SOLVERS"]
 
@@ -122,9 +122,10 @@ class _Lsoda:
 
 
 def _solver(fun: Callable, t0: float, t1: float, y0: float, method: str, rtol: float, atol: float):
-    """The stepper of ``method``: LSODA by its runner where the interval is not empty, else the ``OdeSolver``
+    """The stepper of ``method``: LSODA by its runner where the interval is not empty and this SciPy steps it as
+    :mod:`.rate_lsoda` assumes (:func:`~.rate_lsoda.runner_steps_as_scipy`), else the ``OdeSolver``
     (``tests/models/test_rate_lsoda.py`` compares the two on LSODA)."""
-    if method == "LSODA" and t1 > t0:
+    if method == "LSODA" and t1 > t0 and runner_steps_as_scipy():
         return _Lsoda(LsodaStepper(fun, t0, t1, y0, rtol, atol))
     return _Solver(SOLVERS[method](fun, t0, np.array([y0], dtype=float), t1, rtol=rtol, atol=atol), method)
 
