@@ -178,25 +178,24 @@ def _remembered(function: Callable[[np.ndarray], np.ndarray]) -> Callable[[np.nd
 
 def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: Layer):
     """``g``, ``k_t/G*`` and ``μ k/k_t`` of the discrete model's :class:`~mdr_events.models.spring_media.LayerSprings`
-    with the same arithmetic, the relations called past their argument checks (a run evaluates them some thousand
+    with the same arithmetic, their bit for bit, the three read in one evaluation of the tables' splines
+    (:class:`~mdr_events.theory.layer.spring_factors.SpringFactors`, unchecked: a run evaluates them some thousand
     times on arrays of radii within its contact, which the layer's reach check has bounded before,
-    :mod:`.layer_reach`)."""
-    from mdr_events.theory.layer import power_law_profile, spring_stiffness_density
-    from mdr_events.theory.layer_tangential import tangential_spring_stiffness_density
+    :mod:`.layer_reach`) and remembered for the last coordinates asked (one evaluation of the route asks the same
+    springs' ``g``, ``k_t`` and ratios several times)."""
+    from mdr_events.theory.layer.spring_factors import SpringFactors
 
-    E_star, G_star, nu, mu = params.E_star, params.G_star, params.nu, friction.coulomb_mu
-    profile, normal = power_law_profile.__wrapped__, spring_stiffness_density.__wrapped__
-    tangential = _remembered(lambda xi: tangential_spring_stiffness_density.__wrapped__(xi, G_star, nu, layer))
+    factors = SpringFactors(indenter, params.E_star, params.G_star, params.nu, layer)
+    G_star, mu = params.G_star, friction.coulomb_mu
 
-    def weight(xi):
-        return tangential(xi) / G_star
+    def springs(xi):
+        profile, normal, tangential = factors.values(xi)
+        # (coulomb_cap(x, 1, 0, μ, ...): μ (k/k_t)(1 − 0))
+        ratio = mu * (normal / tangential) * (1.0 - 0.0) if mu > 0.0 else np.zeros(np.shape(xi))
+        return profile, tangential / G_star, ratio
 
-    def ratio(xi):  # (coulomb_cap(x, 1, 0, μ, ...): μ (k/k_t)(1 − 0))
-        if not mu > 0.0:
-            return np.zeros(np.shape(xi))
-        return mu * (normal(xi, E_star, nu, layer) / tangential(xi)) * (1.0 - 0.0)
-
-    return _remembered(lambda xi: profile(xi, indenter, nu, layer)), _remembered(weight), _remembered(ratio)
+    springs = _remembered(springs)  # (the three as the rows of one array)
+    return (lambda xi: springs(xi)[0]), (lambda xi: springs(xi)[1]), (lambda xi: springs(xi)[2])
 
 
 def _unit_weights(xi: np.ndarray) -> np.ndarray:
