@@ -63,8 +63,10 @@ KINK_HALVINGS = 60
 #: 1e-12 at this share); nearer the edge the springs' provenance flips by round-off where a shrinking contact's edge
 #: springs lie on their window's edge (one no kink search resolves), and the spring at ``a`` itself attaches at ``t``.
 EDGE_SHARE = 1e-6
-#: Points a kink's bracket is cut into at once (a power of two).
-KINK_CUTS = 16
+#: Points a kink's bracket is cut into at once (a power of two): 6 halvings a round, about 8 rounds from a node's
+#: spacing to two neighbouring doubles (16 cuts took 12), each evaluation's fixed cost (0.2-0.7 ms on a layer: the
+#: chain's columns, the attachments, the radii at the own clamp times) above its 63 points a bracket (0.4-0.8 us each).
+KINK_CUTS = 64
 #: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
 KINK_ROUNDS = 6
 #: Steps of a golden section (0.618^80 ≈ 2e-17 of the interval).
