@@ -14,7 +14,7 @@ run, its tables precomputed and cached):
   (:mod:`mdr_events.models.continuum.play_run`), on the half-space the spans; :data:`COULOMB_SAMPLES` samples (the
   route's cost grows with them, one to a few milliseconds of CPU a sample);
 - the same with the paper's adhesion along scenario A at 20°, :data:`ADHESIVE_SAMPLES` samples (the route's radius
-  the spans' frictionless run: about 20–25 ms of CPU a sample).
+  the spans' frictionless run: about 10–15 ms of CPU a sample).
 
 The layer's first run of a process (the relations of ``theory/layer_continuum_symbolic.py`` lambdified, the tables
 read) is made before the timing, as the half-space's own derivations are. Beside the wall times the process's CPU

@@ -63,8 +63,10 @@ KINK_HALVINGS = 60
 #: 1e-12 at this share); nearer the edge the springs' provenance flips by round-off where a shrinking contact's edge
 #: springs lie on their window's edge (one no kink search resolves), and the spring at ``a`` itself attaches at ``t``.
 EDGE_SHARE = 1e-6
-#: Points a kink's bracket is cut into at once (a power of two).
-KINK_CUTS = 16
+#: Points a kink's bracket is cut into at once (a power of two): 6 halvings a round, about 8 rounds from a node's
+#: spacing to two neighbouring doubles (16 cuts took 12), each evaluation's fixed cost (0.2-0.7 ms on a layer: the
+#: chain's columns, the attachments, the radii at the own clamp times) above its 63 points a bracket (0.4-0.8 us each).
+KINK_CUTS = 64
 #: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
 KINK_ROUNDS = 6
 #: Steps of a golden section (0.618^80 ≈ 2e-17 of the interval).
@@ -178,25 +180,24 @@ def _remembered(function: Callable[[np.ndarray], np.ndarray]) -> Callable[[np.nd
 
 def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: Layer):
     """``g``, ``k_t/G*`` and ``μ k/k_t`` of the discrete model's :class:`~mdr_events.models.spring_media.LayerSprings`
-    with the same arithmetic, the relations called past their argument checks (a run evaluates them some thousand
+    with the same arithmetic, their bit for bit, the three read in one evaluation of the tables' splines
+    (:class:`~mdr_events.theory.layer.spring_factors.SpringFactors`, unchecked: a run evaluates them some thousand
     times on arrays of radii within its contact, which the layer's reach check has bounded before,
-    :mod:`.layer_reach`)."""
-    from mdr_events.theory.layer import power_law_profile, spring_stiffness_density
-    from mdr_events.theory.layer_tangential import tangential_spring_stiffness_density
+    :mod:`.layer_reach`) and remembered for the last coordinates asked (one evaluation of the route asks the same
+    springs' ``g``, ``k_t`` and ratios several times)."""
+    from mdr_events.theory.layer.spring_factors import SpringFactors
 
-    E_star, G_star, nu, mu = params.E_star, params.G_star, params.nu, friction.coulomb_mu
-    profile, normal = power_law_profile.__wrapped__, spring_stiffness_density.__wrapped__
-    tangential = _remembered(lambda xi: tangential_spring_stiffness_density.__wrapped__(xi, G_star, nu, layer))
+    factors = SpringFactors(indenter, params.E_star, params.G_star, params.nu, layer)
+    G_star, mu = params.G_star, friction.coulomb_mu
 
-    def weight(xi):
-        return tangential(xi) / G_star
+    def springs(xi):
+        profile, normal, tangential = factors.values(xi)
+        # (coulomb_cap(x, 1, 0, μ, ...): μ (k/k_t)(1 − 0))
+        ratio = mu * (normal / tangential) * (1.0 - 0.0) if mu > 0.0 else np.zeros(np.shape(xi))
+        return profile, tangential / G_star, ratio
 
-    def ratio(xi):  # (coulomb_cap(x, 1, 0, μ, ...): μ (k/k_t)(1 − 0))
-        if not mu > 0.0:
-            return np.zeros(np.shape(xi))
-        return mu * (normal(xi, E_star, nu, layer) / tangential(xi)) * (1.0 - 0.0)
-
-    return _remembered(lambda xi: profile(xi, indenter, nu, layer)), _remembered(weight), _remembered(ratio)
+    springs = _remembered(springs)  # (the three as the rows of one array)
+    return (lambda xi: springs(xi)[0]), (lambda xi: springs(xi)[1]), (lambda xi: springs(xi)[2])
 
 
 def _unit_weights(xi: np.ndarray) -> np.ndarray:

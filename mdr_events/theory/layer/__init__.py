@@ -78,6 +78,7 @@ module                            one idea
 :mod:`.tangential_tables`         the tangential punch's factors against ``a/h``, cached on disk
 :mod:`.tangential_displacement`   the surface displacement under the tangential punch by direct Hankel quadrature
 :mod:`.tangential_relations`      the tangential springs ``k_t = K_t'/2`` and the caps
+:mod:`.spring_factors`            a bonded layer's springs ``g``, ``k``, ``k_t`` at many ``x`` in one spline call
 :mod:`.slip_onset`                the slip-onset depths (17)–(21) and the critical angles with the layer's cap and
                                   branches (what :func:`mdr_events.d_crit` and ``critical_angle`` run on a layer)
 ================================  ======================================================================================

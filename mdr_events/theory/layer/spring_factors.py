@@ -1,0 +1,126 @@
+r"""The springs of a bonded layer at many coordinates in one evaluation of the tables: ``g``, ``k`` and ``k_t``.
+
+The per-spring route of the continuum (:mod:`mdr_events.models.continuum.play_springs`) reads the springs' profile
+``g(x) = κₙ c |x|ⁿ γₙ(λ)`` (L4), normal stiffness ``k(x) = E* Θ(1; λ)²`` (L3) and tangential stiffness
+``k_t(x) = G* Σ_t(λ)`` (T4), ``λ = |x|/h``, at the quadrature's nodes and the kinks' bisection points: some thousand
+times a run, each on a few hundred coordinates. Through the relations (:func:`~.relations.power_law_profile`,
+:func:`~.relations.spring_stiffness_density`, :func:`~.tangential_relations.tangential_spring_stiffness_density`)
+that is nine spline calls, three argument checks and three table look-ups an evaluation. The six columns they read
+(``γₙ`` and ``Θ(1)`` of the normal tables, ``Φ_L``, ``Φ_T``, ``Ψ_L(1)``, ``Ψ_T(1)`` of the tangential one) are
+quintic splines on the same nodes in ``s = ln λ`` (both tables' grids are ``table_grid(1e-4, 64, 0.1)``), so here
+they are one spline of six columns: one logarithm, one spline call, one exponential. A multi-column spline sums each
+column as its own spline does and each column's exponential is taken on a contiguous array, so the values are the
+relations' bit for bit (``tests/theory/test_layer_spring_factors.py`` checks it); below ``LAMBDA_MIN`` the tables'
+own series. The coordinates are not checked: the caller's contact lies within the tables (the continuum's reach check,
+:mod:`mdr_events.models.continuum.layer_reach`).
+
+Part of :mod:`mdr_events.theory.layer`.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from mdr_events.contact.layer import Layer, LayerBase
+from mdr_events.theory.layer.relations import _abel_factor, _power_law
+from mdr_events.theory.layer.tables import LAMBDA_MIN, layer_table
+from mdr_events.theory.layer.tangential_punch import _slope
+from mdr_events.theory.layer.tangential_tables import LAMBDA_MIN as TANGENTIAL_LAMBDA_MIN, tangential_table
+
+__all__ = ["SpringValues", "SpringFactors"]
+
+#: The columns of the one spline: the normal tables' ``γₙ`` (of the profile's ``n``) and ``Θ(1)`` (of ``n = 2``, as
+#: :func:`~.relations.spring_stiffness_density` reads it), then the tangential table's four.
+_NORMAL_COLUMNS = ("profile", "edge")
+_TANGENTIAL_COLUMNS = ("phi_l", "phi_t", "edge_l", "edge_t")
+
+
+class SpringValues(NamedTuple):
+    """The springs' values at the coordinates asked (:meth:`SpringFactors.values`)."""
+
+    #: ``g(x)`` (m)
+    profile: np.ndarray
+    #: ``k(x)`` (Pa)
+    normal: np.ndarray
+    #: ``k_t(x)`` (Pa)
+    tangential: np.ndarray
+
+
+class SpringFactors:
+    """``g``, ``k`` and ``k_t`` of a power law's springs on a bonded layer, vectorised over the coordinates (module
+    docstring).
+
+    Parameters
+    ----------
+    profile : Paraboloid or PowerLaw
+        The indenter.
+    E_star, G_star : float
+        ``E*`` and ``G*`` (Pa).
+    nu : float
+        Poisson's ratio.
+    layer : Layer
+        The layer: finite thickness, bonded base.
+
+    Raises
+    ------
+    ValueError
+        A half-space or a frictionless base (no tangential table), or tables whose nodes differ.
+    """
+
+    def __init__(self, profile, E_star: float, G_star: float, nu: float, layer: Layer):
+        from scipy.interpolate import BSpline
+
+        if layer.is_half_space or layer.base is not LayerBase.BONDED:
+            raise ValueError(f"layer={layer!r} is not allowed; allowed: a layer of finite thickness on a bonded base "
+                             "(the half-space's springs need no table, a frictionless base has no tangential ones)")
+        c, n = _power_law(profile)
+        normal, edge, tangential = layer_table(nu, layer.base, n), layer_table(nu, layer.base), tangential_table(nu)
+        splines = [normal._splines["profile"], edge._splines["edge"],
+                   *(tangential._splines[name] for name in _TANGENTIAL_COLUMNS)]
+        if LAMBDA_MIN != TANGENTIAL_LAMBDA_MIN or not all(np.array_equal(splines[0].t, spline.t)
+                                                          and spline.k == splines[0].k for spline in splines):
+            raise ValueError("tables of different nodes are not allowed; allowed: the normal and tangential tables of "
+                             "one grid")
+        self._spline = BSpline(splines[0].t, np.stack([spline.c for spline in splines], axis=-1), splines[0].k)
+        self.h, self.n, self.nu = layer.thickness, n, tangential.nu
+        self.E_star, self.G_star = E_star, G_star
+        #: ``κₙ c`` of ``g∞ = κₙ c xⁿ`` (3)
+        self.scale = _abel_factor(n) * c
+        self._k0 = (float(normal.columns["k0"]), float(edge.columns["k0"]),
+                    *(float(value) for value in tangential.columns["k0"]))
+
+    def _factors(self, lam: np.ndarray) -> tuple[np.ndarray, ...]:
+        """``γₙ``, ``Θ(1)``, ``Φ_L``, ``Φ_T``, ``Ψ_L(1)``, ``Ψ_T(1)`` at ``λ`` as the tables give them."""
+        small = lam < LAMBDA_MIN
+        s = np.log(np.where(small, LAMBDA_MIN, lam))
+        # (the columns as contiguous rows, as each spline's own value: NumPy's exponential on contiguous doubles)
+        factors = list(np.exp(np.ascontiguousarray(self._spline(s).T)))
+        if np.any(small):
+            k_profile, k_edge, k_l, k_t = self._k0
+            phi = 1.0 / (1.0 - 2.0 * k_profile * lam / np.pi)
+            phi_l, phi_t = (1.0 / (1.0 - 2.0 * k * lam / np.pi) for k in (k_l, k_t))
+            series = ((1.0 + (phi - 1.0) / (self.n + 1.0)) / phi, 1.0 / (1.0 - 2.0 * k_edge * lam / np.pi),
+                      phi_l, phi_t, phi_l, phi_t)
+            factors = [np.where(small, exact, value) for exact, value in zip(series, factors)]
+        return tuple(factors)
+
+    def values(self, x) -> SpringValues:
+        """``g``, ``k`` and ``k_t`` at ``x`` (the relations' arithmetic on the same factors: their values bit for bit).
+
+        Parameters
+        ----------
+        x : array_like
+            The springs' coordinates (m), ``|x|/h <= LAMBDA_MAX`` (not checked).
+
+        Returns
+        -------
+        SpringValues
+            The profile, the normal and the tangential stiffness densities.
+        """
+        x = np.abs(np.asarray(x, dtype=float))
+        gamma, theta, phi_l, phi_t, edge_l, edge_t = self._factors(x / self.h)
+        return SpringValues(self.scale * x**self.n * gamma, self.E_star * theta * theta,
+                            self.G_star * _slope(self.nu, phi_l, phi_t, edge_l, edge_t))
+

@@ -1,0 +1,41 @@
+"""The springs of a bonded layer read in one evaluation of the tables (:mod:`mdr_events.theory.layer.spring_factors`):
+the relations' values bit for bit, on the tables and on their series below ``LAMBDA_MIN``."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.contact.indenters import Paraboloid, PowerLaw
+from mdr_events.contact.layer import Layer
+from mdr_events.theory.layer import LAMBDA_MAX, LAMBDA_MIN, power_law_profile, spring_stiffness_density
+from mdr_events.theory.layer.spring_factors import SpringFactors
+from mdr_events.theory.layer_tangential import tangential_spring_stiffness_density
+
+PAPER = me.Parameters.paper()
+#: Coordinates as shares of the thickness: log-uniform from far below the tables' LAMBDA_MIN (their series) to
+#: LAMBDA_MAX, both ends, the centre, and negative ones (the relations are even in x).
+SHARES = np.concatenate([np.exp(np.random.default_rng(34).uniform(np.log(1e-9), np.log(LAMBDA_MAX), 400)),
+                         [0.0, LAMBDA_MIN, np.nextafter(LAMBDA_MIN, 0.0), LAMBDA_MAX], [-0.3, -2e-6]])
+
+
+@pytest.mark.parametrize("profile", [Paraboloid(PAPER.R), PowerLaw(2e3, 3.0)], ids=["paraboloid", "cubic"])
+@pytest.mark.parametrize("nu", [PAPER.nu, 0.3])
+def test_the_springs_are_the_relations_bit_for_bit(profile, nu):
+    """``g``, ``k`` and ``k_t`` of one evaluation are :func:`power_law_profile`, :func:`spring_stiffness_density` and
+    :func:`tangential_spring_stiffness_density` exactly, at every coordinate (the per-spring route's results do not
+    move with the faster reading)."""
+    layer = Layer(5e-3)
+    x = SHARES * layer.thickness
+    springs = SpringFactors(profile, PAPER.E_star, PAPER.G_star, nu, layer).values(x)
+    assert np.count_nonzero(np.abs(x) < LAMBDA_MIN * layer.thickness) >= 50  # (the series are tested)
+    assert np.array_equal(springs.profile, power_law_profile(x, profile, nu, layer))
+    assert np.array_equal(springs.normal, spring_stiffness_density(x, PAPER.E_star, nu, layer))
+    assert np.array_equal(springs.tangential, tangential_spring_stiffness_density(x, PAPER.G_star, nu, layer))
+
+
+@pytest.mark.parametrize("layer", [Layer(), Layer(5e-3, "frictionless")], ids=["half-space", "frictionless"])
+def test_a_body_without_tables_or_tangential_springs_is_refused(layer):
+    with pytest.raises(ValueError, match=r"layer=.* is not allowed; allowed: a layer of finite thickness on a bonded"):
+        SpringFactors(Paraboloid(PAPER.R), PAPER.E_star, PAPER.G_star, PAPER.nu, layer)
