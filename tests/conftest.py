@@ -9,10 +9,18 @@ from mdr_events import Parameters
 
 # CI runs the property tests on a fixed set of examples (derandomized: the same run every time, no
 # example database written into the clone); HYPOTHESIS_PROFILE=explore draws fresh examples, five
-# times as many (tests/models/test_properties.py scales its counts), to hunt for new counterexamples.
+# times as many (tests/quick_round.py's examples scales the counts), to hunt for new counterexamples.
 settings.register_profile("ci", derandomize=True, database=None, print_blob=True)
 settings.register_profile("explore", print_blob=True)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci"))
+
+
+def pytest_configure(config):
+    """The quick round (``make test``: ``-m "not slow"``) draws fewer examples of each property test
+    (``quick_round.examples``); ``make test-all`` and CI all of them."""
+    import quick_round
+
+    quick_round.QUICK[0] = config.getoption("markexpr", "") == "not slow"
 
 
 @pytest.fixture(scope="session")

@@ -11,8 +11,25 @@ so a gross fault in any one of them fails ``make test``.
 from __future__ import annotations
 
 import itertools
+import math
+import os
 
 import pytest
+
+#: The share of a property test's examples (hypothesis, derandomized) that the quick round draws; ``make test-all`` and
+#: CI draw them all, ``HYPOTHESIS_PROFILE=explore`` (conftest.py) five times as many, fresh.
+QUICK_EXAMPLES_SHARE = 0.5
+#: Whether this run is the quick round (``-m "not slow"``, ``make test``): set by conftest.py's ``pytest_configure``
+#: before the test modules are collected.
+QUICK = [False]
+
+
+def examples(count: int) -> int:
+    """A property test's ``max_examples``: ``count`` as CI draws them, :data:`QUICK_EXAMPLES_SHARE` of them (at least
+    one) in the quick round, five times as many under ``HYPOTHESIS_PROFILE=explore``."""
+    if os.environ.get("HYPOTHESIS_PROFILE") == "explore":
+        return 5 * count
+    return max(1, math.ceil(QUICK_EXAMPLES_SHARE * count)) if QUICK[0] else count
 
 
 def grid(axes: dict[str, dict[str, object]], quick: set[tuple[str, ...]]) -> list:

@@ -87,8 +87,8 @@ def test_an_unknown_verb_is_named_with_the_verbs(verb):
     assert "invalid choice" not in done.stderr and "choose from" not in done.stderr
 
 
-def test_a_value_not_among_the_choices_lists_them_in_the_packages_words(tmp_path):
-    done = _cli("simulate", "--scenario", "C", "--out", str(tmp_path / "o"))
+def test_a_value_not_among_the_choices_lists_them_in_the_packages_words(tmp_path, command):
+    done = command("simulate", "--scenario", "C", "--out", str(tmp_path / "o"))
     assert (done.returncode, done.stderr) == (
         2, "mdr-events: error: argument --scenario: invalid choice: 'C'; allowed: A, B, B+\n")
 
@@ -212,13 +212,14 @@ def test_phase_diagram_names_the_angles_it_takes(alpha):
 
 # --- R5: fit with six free values stepped far out: exp() of the log-scaled trial overflowed before the model was asked
 # (exit 3, "internal error (OverflowError: math range error)"); a trial out of range is refused, named with its values
-def test_a_fit_that_steps_out_of_the_double_range_is_refused_in_one_line(tmp_path):
+def test_a_fit_that_steps_out_of_the_double_range_is_refused_in_one_line(tmp_path, command):
     contact = me.Contact.paper().replace(tau0=30e3)
     run = me.simulate(contact, me.Scenario("A", 20), "continuum").isel(alpha=0)
     table = run[["normal_force", "tangential_force"]].to_dataframe().reset_index()
     table[["time", "normal_force", "tangential_force"]].to_csv(tmp_path / "measured.csv", index=False)
-    done = _cli("fit", str(tmp_path / "measured.csv"), "--scenario", "A", "--alpha", "20", "--out", str(tmp_path / "o"),
-                "--free", "E", "nu", "R", "tau0", "dgamma0", "dgamma1")
+    done = command("fit", str(tmp_path / "measured.csv"), "--scenario", "A", "--alpha", "20", "--out",
+                   str(tmp_path / "o"), "--free", "E", "nu", "R", "tau0", "dgamma0", "dgamma1")  # (in-process: the
+    # console script's own one line is test_an_unknown_verb_is_named_with_the_verbs's)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert "the fit tried E=inf" in done.stderr and "allowed: " in done.stderr and "np.float64" not in done.stderr
 

@@ -1,11 +1,12 @@
 """Hostile use of ``mdr-events`` and of the file-writing API: every bad argument gives one line on stderr and
 exit status 2 (a failed computation 3), before anything is computed where it can be, and nothing is written half.
 
-Each row runs the installed console script in a subprocess at least once. Those subprocesses start at once
-(each pays ~2 s of imports, not a computation) in the module's fixture ``console``; each test then checks its
-row. Further cases of a row call :func:`mdr_events.app.cli.main` in-process (the same code, without the
-imports). A failure inside the program (a solver that gives up, a slow disk) is injected by a
-``sitecustomize.py`` on ``PYTHONPATH`` that patches the package before the console script runs.
+The cases call :func:`mdr_events.app.cli.main` in-process (the code the console script runs, without paying the
+package's imports again: some 1–1.5 s of CPU a fresh interpreter). What only a real process shows runs the installed
+console script in a subprocess: its one-line usage error (``--bogus``) and an uncaught exception's traceback and
+status under ``--debug`` (:data:`CASES`, started at once in the module's fixture ``console``), and the signals while
+writing. A failure inside the program (a solver that gives up, a slow disk) is injected by a ``sitecustomize.py`` on
+``PYTHONPATH`` that patches the package before the console script runs (in-process: ``monkeypatch``).
 """
 
 from __future__ import annotations
@@ -98,24 +99,15 @@ def files(directory: Path) -> list[str]:
     return sorted(os.listdir(directory)) if directory.exists() else []
 
 
-#: name -> the command through the console script; the files it needs are made by the fixture ``console``.
+#: name -> the command through the console script (what only a real process shows); the files the cases need are
+#: made by the fixture ``console``.
 CASES = {
-    # row 1: an output directory that cannot take the files, found before anything is computed
-    "out_is_file": Case(("phase-diagram", "--scenario", "A", "--out", "a_file")),
-    # row 2: output names that would leave the output directory
-    "study_name_escapes": Case(("run", "study_escape.toml")),
-    # row 3: the solver gives up (exit 3); --debug shows the traceback
-    "solver_gives_up": Case(("simulate", "--scenario", "A", "--method", "continuum", "--alpha", "20", "--out",
-                             "solver_out"), SOLVER_GIVES_UP),
+    # row 3: the solver gives up: with --debug, the interpreter's traceback and status
     "solver_gives_up_debug": Case(("--debug", "simulate", "--scenario", "A", "--method", "continuum", "--alpha",
                                    "20", "--out", "solver_out_debug"), SOLVER_GIVES_UP),
-    # row 4: an unknown option
+    # row 4: an unknown option: the console script's one-line usage error
     "bogus_option": Case(("--bogus",)),
-    # row 5: a study file that is not text
-    "binary_study": Case(("run", "binary.toml")),
 }
-if not AS_ROOT:
-    CASES["out_read_only"] = Case(("phase-diagram", "--scenario", "A", "--out", "read_only"))
 
 
 @pytest.fixture(scope="module")
@@ -124,7 +116,6 @@ def console(tmp_path_factory) -> tuple[Path, dict[str, Result]]:
     tmp = tmp_path_factory.mktemp("hostile")
     (tmp / "a_file").write_text("precious")
     (tmp / "a_directory").mkdir()
-    (tmp / "read_only").mkdir(mode=0o555)
     (tmp / "study_into_file.toml").write_text(
         STUDY.format(directory="a_file") + "\n[simulation]\nscenario = 'A'\nalpha = [20]\n")
     (tmp / "study_escape.toml").write_text(STUDY_NAMED.format(directory="out", name="../escape/x"))
@@ -139,7 +130,6 @@ def console(tmp_path_factory) -> tuple[Path, dict[str, Result]]:
         for process in processes.values():
             if process.poll() is None:
                 process.kill()
-        (tmp / "read_only").chmod(0o755)
     return tmp, results
 
 
@@ -162,9 +152,10 @@ def assert_one_line(result: Result, status: int, *fragments: str) -> str:
 # --- row 1: output directories ---------------------------------------------------------------------------
 
 def test_an_output_that_is_a_file_or_below_one_is_one_line_exit_2(console, monkeypatch, capsys):
-    tmp, results = console
-    assert_one_line(results["out_is_file"], 2, "--out='a_file'", "it is a file", "allowed: a directory")
-    monkeypatch.chdir(tmp)  # (the row's further cases in-process)
+    tmp, _ = console
+    monkeypatch.chdir(tmp)
+    assert_one_line(run(capsys, "phase-diagram", "--scenario", "A", "--out", "a_file"), 2, "--out='a_file'",
+                    "it is a file", "allowed: a directory")
     assert_one_line(run(capsys, "simulate", "--scenario", "A", "--alpha", "20", "--out", "a_file/sub"), 2,
                     "--out='a_file/sub'", "it lies below", "a_file, a file")
     assert (tmp / "a_file").read_text() == "precious"
@@ -188,16 +179,19 @@ def test_every_command_checks_its_output_directory_first(tmp_path, monkeypatch, 
 
 
 @pytest.mark.skipif(AS_ROOT, reason="root writes into read-only directories")
-def test_a_read_only_output_directory_is_one_line_exit_2(console, tmp_path, capsys):
-    tmp, results = console
-    assert_one_line(results["out_read_only"], 2, "--out='read_only'", "it is not writable", "allowed: a directory")
-    assert files(tmp / "read_only") == []
+def test_a_read_only_output_directory_is_one_line_exit_2(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "read_only").mkdir(mode=0o555)
     (tmp_path / "locked").mkdir(mode=0o555)
     try:
+        assert_one_line(run(capsys, "phase-diagram", "--scenario", "A", "--out", "read_only"), 2,
+                        "--out='read_only'", "it is not writable", "allowed: a directory")
+        assert files(tmp_path / "read_only") == []
         assert_one_line(run(capsys, "phase-diagram", "--scenario", "A", "--out", str(tmp_path / "locked" / "sub")),
                         2, "cannot be created", "locked is not writable")
     finally:
         (tmp_path / "locked").chmod(0o755)
+        (tmp_path / "read_only").chmod(0o755)
 
 
 def test_a_study_checks_its_output_directory_before_computing(console, monkeypatch, capsys):
@@ -226,9 +220,10 @@ def test_run_study_checks_the_output_directory_before_computing(tmp_path, monkey
 
 # --- row 2: output names ---------------------------------------------------------------------------------
 
-def test_a_study_name_that_leaves_the_output_directory_is_refused(console):
-    tmp, results = console
-    assert_one_line(results["study_name_escapes"], 2, "study_escape.toml", "[output] name='../escape/x'",
+def test_a_study_name_that_leaves_the_output_directory_is_refused(console, monkeypatch, capsys):
+    tmp, _ = console
+    monkeypatch.chdir(tmp)
+    assert_one_line(run(capsys, "run", "study_escape.toml"), 2, "study_escape.toml", "[output] name='../escape/x'",
                     "allowed: a plain file-name stem")
     assert not (tmp / "escape").exists() and not (tmp / "out").exists()
 
@@ -260,9 +255,14 @@ def test_result_writers_refuse_stems_that_leave_the_directory(tmp_path, paper, s
 
 # --- row 3: failures of the computation and of files -----------------------------------------------------
 
-def test_a_solver_that_gives_up_is_one_line_exit_3(console):
-    tmp, results = console
-    line = assert_one_line(results["solver_gives_up"], 3, "the computation failed", "RuntimeError",
+def test_a_solver_that_gives_up_is_one_line_exit_3(console, monkeypatch, capsys):
+    tmp, _ = console
+    monkeypatch.chdir(tmp)
+    injected = {}
+    exec(SOLVER_GIVES_UP.replace("methods.run_continuum = run_continuum", ""), injected)  # (sitecustomize.py's)
+    monkeypatch.setattr("mdr_events.models.methods.run_continuum", injected["run_continuum"])
+    line = assert_one_line(run(capsys, "simulate", "--scenario", "A", "--method", "continuum", "--alpha", "20", "--out",
+                               "solver_out"), 3, "the computation failed", "RuntimeError",
                            "made no progress at t = 1.5 s", "last event: slip_onset", "--debug")
     assert "Traceback" not in line
     assert files(tmp / "solver_out") == []
@@ -334,9 +334,10 @@ def test_unknown_options_and_a_missing_command_name_what_is_allowed(tmp_path, mo
 
 # --- row 5: study files that are not TOML text --------------------------------------------------------------
 
-def test_a_binary_study_file_is_named(console):
-    _, results = console
-    assert_one_line(results["binary_study"], 2, "binary.toml: not UTF-8 text", "allowed: a study file")
+def test_a_binary_study_file_is_named(console, monkeypatch, capsys):
+    tmp, _ = console
+    monkeypatch.chdir(tmp)
+    assert_one_line(run(capsys, "run", "binary.toml"), 2, "binary.toml: not UTF-8 text", "allowed: a study file")
 
 
 @pytest.mark.parametrize("path", [None, 3, b"study.toml", ["study.toml"]])

@@ -13,7 +13,6 @@ pull-off and a new contact).
 """
 
 import math
-import os
 
 import numpy as np
 from hypothesis import HealthCheck, assume, event, example, given, settings
@@ -27,8 +26,8 @@ from mdr_events.theory import mindlin
 from test_properties import (ALGEBRAIC_ROUNDING, label_parameters, label_path, log_uniform, parameters, path_points,
                              work_of_adhesion)
 from mdr_events.theory import power_law
+from quick_round import examples
 
-SCALE = 5 if os.environ.get("HYPOTHESIS_PROFILE") == "explore" else 1
 #: The integrated force against the algebraic form and the closed forms, as a share of the run's largest force: the
 #: integration's rtol (1e-10) accumulated over the spans, with room for the positions' rounding (the τ0 law's
 #: property test takes 1e-7 of its largest value as well)
@@ -56,7 +55,7 @@ STUCK_AT_A_CORNERS_PIECES = (me.Parameters(E=1e5, nu=0.0, R=0.1, tau0=0.0, dgamm
                                      1e-6))
 
 
-@settings(max_examples=20 * SCALE, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(20), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(adhesive_coulomb_paths())
 @example(STUCK_AT_A_CORNERS_PIECES)
 def test_coulomb_with_adhesion_is_its_algebraic_form_within_full_slip(case):
@@ -105,7 +104,7 @@ def _samples(path, n=2001):
     return times[times >= 0.0]
 
 
-@settings(max_examples=30 * SCALE, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(30), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(punch_paths())
 def test_the_flat_punch_is_one_play_operator(case):
     params, friction, punch, path = case
@@ -149,7 +148,7 @@ def _compressed_push(depth, params, profile):
     return np.where(pressed > 0.0, np.asarray(power_law.normal_force(pressed, radius, indenter, params)), 0.0)
 
 
-@settings(max_examples=30 * SCALE, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(30), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(adhesive_combined_paths())
 def test_both_parts_with_adhesion_are_the_algebraic_form_within_full_slip(case):
     params, friction, profile, path = case

@@ -32,7 +32,7 @@ from mdr_events.theory.layer import (hess_elongation, normal_force, power_law_pr
 from mdr_events.theory.layer_tangential import (coulomb_cap, sliding_cap, tangential_punch_stiffness,
                                                 tangential_spring_stiffness_density)
 
-from quick_round import grid
+from quick_round import examples, grid
 
 PAPER = me.Contact.paper()
 PARAMS = me.Parameters.paper()
@@ -324,7 +324,7 @@ def layer_cases(draw):
     return contact, alpha, d_max
 
 
-@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(12), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(layer_cases())
 def test_properties_of_a_run_on_any_layer(case):
     """On any layer and path: going in, the radius is within Δx/2 of the layer's Δγ0 branch at each sample's depth;

@@ -13,7 +13,6 @@ labels its examples with ``hypothesis.event``; ``pytest
 """
 
 import math
-import os
 
 import numpy as np
 import pytest
@@ -28,10 +27,9 @@ from mdr_events.theory import symbolic
 from mdr_events.analysis.convergence import HISTORY_QUANTITIES, compared_samples, first_order_error_bound
 from mdr_events.models.methods import MIN_STEPS_PER_SEGMENT
 from mdr_events.models.motion import scenario_paths
+from quick_round import examples
 
 
-#: HYPOTHESIS_PROFILE=explore (see conftest.py) draws five times as many fresh examples.
-SCALE = 5 if os.environ.get("HYPOTHESIS_PROFILE") == "explore" else 1
 #: Discrete runs are drawn to need at most this many time steps: the spring model takes about 50 µs a
 #: step at Δx = a_max/200, so a run stays within about a second (the spacing test runs it twice).
 MAX_STEPS = 20_000
@@ -91,7 +89,7 @@ def in_contact(dataset):
     return np.isfinite(radius) & (radius > 0)
 
 
-@settings(max_examples=40 * SCALE, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(40), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(cases())
 def test_continuum_invariants(case):
     """No NaN in contact; |F_x| <= τ0 A; d lies on or between the adhesive branches (9) of the radius and
@@ -297,7 +295,7 @@ def assert_within_first_order_bound(discrete, continuum, params, dx):
         assert error <= bound, (name, error, bound, error / bound if bound else math.inf)
 
 
-@settings(max_examples=8 * SCALE, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(8), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(resolvable_cases())
 # found by the explore profile: F_x of B peaks after Δγ1 = 0 dropped the radius to a quarter of a_max
 @example((me.Parameters(E=1e5, nu=0.0, R=10**-0.75, tau0=1e3, dgamma0=10**-0.375, dgamma1=0.0, d_max=10**-4.5,
@@ -345,7 +343,7 @@ def slip_during_indentation(draw):
     return params, "A", alpha
 
 
-@settings(max_examples=60 * SCALE, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(slip_during_indentation())
 def test_closed_form_18_agrees_with_the_continuum_slip_onset(case):
     """Scenario A: where (18) puts slip onset inside the indentation, the continuum logs it there (1e-9)."""
@@ -443,7 +441,7 @@ SHRINK_THEN_SLIDE = (me.Parameters(E=3.5e5, nu=0.0, R=0.13, tau0=1e4, dgamma0=0.
                               (5.1e-4, -1e-5)], 1e-6))
 
 
-@settings(max_examples=25 * SCALE, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(25), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(any_paths())
 @example(HERTZ_TWO_SLOPES)
 @example(SHRINK_THEN_SLIDE)
@@ -463,7 +461,7 @@ def test_general_paths_integrated_force_is_the_algebraic_form(case):
         assert np.all(np.isfinite(values[touching])), name
 
 
-@settings(max_examples=4 * SCALE, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=examples(4), deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(resolvable_paths())
 def test_general_paths_discrete_agrees_with_the_continuum(case):
     """The discrete model follows the continuum along random paths (reversals, re-contact) as along the

@@ -14,6 +14,7 @@ from mdr_events.limits import ResourceLimitError
 from mdr_events.models import indenters
 from mdr_events.theory import tabulated
 from mdr_events.theory.scales import SCALE_MAX, SCALE_MIN, check_representable, run_scales
+from quick_round import examples
 
 PAPER = me.Parameters.paper()
 
@@ -108,7 +109,7 @@ def _run(method, params, law, profile):
                        **extra)
 
 
-@settings(max_examples=120, deadline=None)
+@settings(max_examples=examples(120), deadline=None)
 @given(run=edge_runs())
 def test_every_accepted_run_at_the_edges_is_finite(run):
     """Either refused before running (a ValueError naming what is allowed, or a resource limit), or every output
