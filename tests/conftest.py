@@ -1,4 +1,5 @@
 import os
+import signal
 import subprocess
 import sys
 
@@ -21,6 +22,12 @@ def pytest_configure(config):
     import quick_round
 
     quick_round.QUICK[0] = config.getoption("markexpr", "") == "not slow"
+    # A suite started as a background job (``cmd &`` without job control) inherits Ctrl-C ignored, and so would every
+    # command the tests start and interrupt: their children get Ctrl-C's default back (a handler of this process is
+    # reset at their exec; SIG_IGN would be inherited). The background case itself is tested where it matters
+    # (test_hostile_round_nine: a swallowed SIGTERM with SIGINT ignored).
+    if signal.getsignal(signal.SIGINT) == signal.SIG_IGN:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 @pytest.fixture(scope="session")
