@@ -439,10 +439,13 @@ class RateFitJob:
     def named(self, message: str) -> str:
         """``message`` of :func:`~mdr_events.analysis.rate_fit.fit_rate_adhesion` with each ``measurements[i]`` named
         by its file (round nineteen: "measurements[1].times=307.9 s is not allowed" named the second DATA by the API's
-        argument; the noise, one for all, is ``--noise``'s)."""
+        argument; the noise, one for all, is ``--noise``'s, and what it allows without the API's ``None``: round twenty,
+        "allowed: None or a finite number ..." where the command line has no ``None``, only the option left out)."""
         import re
 
-        message = re.sub(r"measurements\[\d+\]\.noise=", "the noise of normal_force (--noise, [fit] noise) ", message)
+        if re.search(r"measurements\[\d+\]\.noise=", message):
+            message = re.sub(r"measurements\[\d+\]\.noise=", "the noise of normal_force (--noise, [fit] noise) ", message)
+            message = message.replace("allowed: None or ", "allowed: ")
         message = re.sub(r"(measurements\[\d+\])\.path\.speed=", r"\1its speed (--speeds, [fit] speeds) ", message)
         return re.sub(r"measurements\[(\d+)\]\.?", lambda found: f"{self.data[int(found.group(1))]}: ", message)
 
