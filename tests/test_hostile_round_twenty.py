@@ -90,3 +90,17 @@ def test_the_standard_errors_do_not_overflow_with_the_noise():
     np.testing.assert_array_equal(correlation, unit_correlation)
     np.testing.assert_array_equal(correlation, np.eye(2))
     assert verdicts == [Identifiability.POORLY_DETERMINED] * 2  # (standard errors of 1e157 in scaled units)
+
+
+# --- T4: a path with a zero-length segment: "waypoints 0 and 1 coincide; consecutive waypoints must differ" named
+# neither the value nor what is allowed in the package's form (near-coincident ones were: "... are 1e-18 m apart;
+# allowed: ...") --------------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("waypoints, named", [
+    ([(0.0, 0.0), (0.0, 0.0)], "waypoints[1]=(0.0, 0.0)"),
+    ([(0.0, 0.0), (0.0, 3e-4), (0.0, 3e-4), (1e-4, 0.0)], "waypoints[2]=(0.0, 0.0003)"),
+])
+def test_a_zero_length_segment_is_named_with_its_value(waypoints, named):
+    message = one_line_naming(lambda: me.Path(waypoints, 1e-6), named)
+    assert "coincides with waypoints[" in message, message
