@@ -104,3 +104,42 @@ def test_the_standard_errors_do_not_overflow_with_the_noise():
 def test_a_zero_length_segment_is_named_with_its_value(waypoints, named):
     message = one_line_naming(lambda: me.Path(waypoints, 1e-6), named)
     assert "coincides with waypoints[" in message, message
+
+
+# --- T5: long runs said nothing until their files were written (round nineteen's leftovers, measured again here:
+# Coulomb's law under the rate law in the continuum 12.6 s CPU / 58 s on the shared machine, Coulomb's law with
+# adhesion on a layer 14.8 s / 63 s, the rate law's phase diagram of B at two speeds over a minute): a line on stderr
+# after FIRST_AFTER seconds of silence and every EVERY seconds after -------------------------------------------------
+
+
+@pytest.mark.parametrize("verb", [
+    ["simulate", "--scenario", "A", "--alpha", "20", "--method", "continuum"],
+    ["phase-diagram", "--scenario", "A"],
+])
+def test_a_long_run_says_it_still_runs(capsys, tmp_path, monkeypatch, verb):
+    """With the first line due at once, the run's stderr has it and its stdout the files, exit 0 (a run of ~0.5 s
+    here: what the line is for, a run past FIRST_AFTER, would cost the suite a minute)."""
+    from mdr_events.app import heartbeat
+    from mdr_events.app.cli import main
+
+    monkeypatch.setattr(heartbeat, "FIRST_AFTER", 0.0)
+    assert main([*verb, "--out", str(tmp_path / "o")]) == 0
+    captured = capsys.readouterr()
+    assert f"{verb[0]} (" in captured.err and ": still running after 0 s" in captured.err, captured.err
+    assert str(tmp_path / "o") in captured.out
+
+
+def test_a_short_run_says_nothing_more():
+    """The line is due after FIRST_AFTER seconds: a block that ends before says nothing, and the thread ends with
+    it (no line after the block)."""
+    import threading
+    import time
+
+    from mdr_events.app.heartbeat import EVERY, FIRST_AFTER, heartbeat
+
+    assert FIRST_AFTER >= 5.0 and EVERY >= FIRST_AFTER  # (quick runs, about a second, stay silent)
+    lines = []
+    with heartbeat(lines.append, "x"):
+        pass
+    time.sleep(0.05)
+    assert lines == [] and not any(t.name == "mdr-events heartbeat" for t in threading.enumerate())
