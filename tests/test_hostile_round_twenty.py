@@ -143,3 +143,25 @@ def test_a_short_run_says_nothing_more():
         pass
     time.sleep(0.05)
     assert lines == [] and not any(t.name == "mdr-events heartbeat" for t in threading.enumerate())
+
+
+# --- T6: a power law near the cone (n = 1.0000001, 1.001): its slip onset lies beyond or near the double range's top
+# ((3 slope/κc)^(1/(2n − 2))), and the phase diagram's root search, depth and plot overflowed with RuntimeWarnings
+# (an internal error with warnings as errors); the onset is +inf there ("never slides"), as where no root exists ---
+
+
+@pytest.mark.parametrize("scenario", ["A", "B"])
+@pytest.mark.parametrize("n", [1.0000001, 1.001])
+def test_a_power_law_near_the_cone_has_a_phase_diagram_without_warnings(capsys, tmp_path, scenario, n):
+    from mdr_events.app.cli import main
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert main(["phase-diagram", "--scenario", scenario, "--power-law", "1e-3", repr(n),
+                     "--out", str(tmp_path)]) == 0, capsys.readouterr().err
+        diagram = me.phase_diagram(PAPER, scenario=scenario, profile=me.PowerLaw(1e-3, n))
+    for name in ("d_crit_hertz", "d_crit_jkr"):  # (an onset depth or +inf; B's "+" branch may be -inf below)
+        depths = diagram[name].values
+        assert not np.any(np.isnan(depths)), name
+        assert scenario == "B" or np.all(depths >= 0.0), name
+    assert (tmp_path / f"phase_diagram_{scenario}.png").is_file()

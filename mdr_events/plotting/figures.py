@@ -162,7 +162,8 @@ def _draw_phase_diagram_A(ax, dataset: xr.Dataset, d_max: float) -> None:
         depths = dataset[f"d_crit_{key}"].values
         if np.all(np.isnan(depths)):  # no closed form (a friction law with Coulomb's part, adhesive)
             continue
-        ax.plot(alpha, depths * _MM, **{**_PHASE_STYLE[key], "label": f"{_PHASE_STYLE[key]['label']} {eq}".strip()})
+        ax.plot(alpha, _depths_in_mm(depths), **{**_PHASE_STYLE[key],
+                                                  "label": f"{_PHASE_STYLE[key]['label']} {eq}".strip()})
     top = 2.0 * d_max
     shown = [key for key in ("hertz", "jkr") if np.isfinite(float(dataset[f"critical_angle_{key}"]))]
     for key in shown:  # (an adhesive angle without closed form, nan, is not drawn)
@@ -181,6 +182,13 @@ def _draw_phase_diagram_A(ax, dataset: xr.Dataset, d_max: float) -> None:
     ax.set_ylim(0, top)
 
 
+def _depths_in_mm(depths: np.ndarray) -> np.ndarray:
+    """Onset depths in mm; ``inf`` (off the plot, as "never slides") where a depth near the double range's top
+    overflows in mm (round twenty: a power law near the cone, ``n = 1.0000001``, whose onset lies at ~1e306 m)."""
+    with np.errstate(over="ignore"):
+        return depths * _MM
+
+
 def _draw_phase_diagram_B(ax, dataset: xr.Dataset, d_max: float) -> None:
     """Scenario B's curves (20), (21) on both branches, the jump-off depth, its regions and the critical angle
     standing on the jump-off depth (``d_max`` in mm)."""
@@ -191,7 +199,7 @@ def _draw_phase_diagram_B(ax, dataset: xr.Dataset, d_max: float) -> None:
         if np.all(np.isnan(dataset[f"d_crit_{key}"].values)):  # no closed form (another law, adhesive)
             continue
         for i, branch in enumerate(branches):
-            values = dataset[f"d_crit_{key}"].sel(branch=branch).values * _MM
+            values = _depths_in_mm(dataset[f"d_crit_{key}"].sel(branch=branch).values)
             ax.plot(alpha, values, **{**_PHASE_STYLE[key],
                                       "label": f"{_PHASE_STYLE[key]['label']} {eq}".strip() if i == 0 else None})
     jump_off = float(dataset["jump_off_depth"]) * _MM
