@@ -165,3 +165,25 @@ def test_a_power_law_near_the_cone_has_a_phase_diagram_without_warnings(capsys, 
         assert not np.any(np.isnan(depths)), name
         assert scenario == "B" or np.all(depths >= 0.0), name
     assert (tmp_path / f"phase_diagram_{scenario}.png").is_file()
+
+
+# --- T7: a simulation of 3000 angles (within the limits) drew a legend of 600 rows that collapsed its panels:
+# matplotlib's "constrained_layout not applied" UserWarnings on stderr; the legend names LEGEND_CASES of them -------
+
+
+def test_a_simulation_of_many_cases_draws_its_figure_without_warnings():
+    """300 cases (one run's copies, 3 s of plotting): no warning, and the legend names LEGEND_CASES cases, the
+    first and the last among them."""
+    import xarray as xr
+
+    from mdr_events.plotting.figures import LEGEND_CASES, plot_simulation
+
+    run = me.simulate(PAPER, "A", [20.0], method="continuum")
+    cases = 300
+    many = xr.concat([run.assign_coords(alpha=[20.0 + 1e-3 * i]) for i in range(cases)], dim="alpha")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        figure = plot_simulation(many)
+        figure.canvas.draw()  # (the layout runs when drawn)
+    labels = [text.get_text() for legend in figure.legends for text in legend.get_texts()]
+    assert len(labels) == LEGEND_CASES and labels[0].startswith("α = 20") and labels[-1].startswith("α = 20.299")

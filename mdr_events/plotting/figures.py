@@ -46,6 +46,10 @@ POINTS_PER_INCH = 72.0
 #: The simulation legend below the panels: font size (points) and gap to the figure's edge (in font sizes).
 LEGEND_FONTSIZE = 8
 LEGEND_BORDER_PAD = 0.5
+#: The most cases the simulation legend names (six rows of five): beyond, it names that many spread evenly, the
+#: first and the last among them (round twenty: 3000 angles' legend of 600 rows collapsed the panels to nothing,
+#: matplotlib's "constrained_layout not applied" warnings on stderr).
+LEGEND_CASES = 30
 
 #: The overlay (e.g. the discrete model) in a colour that stands out against viridis, with
 #: open markers thinned to about this many per curve.
@@ -298,10 +302,13 @@ def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, titl
     dimension = case_dimension(dataset)
     colours = plt.cm.viridis(np.linspace(0.0, 0.9, dataset.sizes[dimension]))
     time = dataset["time"].values
+    cases = dataset.sizes[dimension]
+    named = set(np.linspace(0, cases - 1, min(cases, LEGEND_CASES)).round().astype(int).tolist())
     for letter, ax, (name, scale, label) in zip("abcde", axes, SIMULATION_PANELS):
-        for colour, case in zip(colours, dataset[dimension].values):
+        for index, (colour, case) in enumerate(zip(colours, dataset[dimension].values)):
             values = dataset[name].sel({dimension: case}).values * scale
-            ax.plot(time, values, color=colour, lw=1.4, label=case_text(dimension, case))
+            ax.plot(time, values, color=colour, lw=1.4,
+                    label=case_text(dimension, case) if index in named else "_nolegend_")
         if overlay is not None:
             overlay_dimension = case_dimension(overlay)
             for case in overlay[overlay_dimension].values:
