@@ -89,7 +89,7 @@ def test_no_module_imports_from_a_higher_layer(path):
 #: Inside ``app``, from the bottom: the shared parsers and the files of results; the typed jobs; study files; the
 #: command line (a package of one module per verb). A module imports from its own level and those below.
 APP_LEVELS = {
-    "inputs": 0, "result_files": 0, "validation_files": 0, "fit_files": 0,
+    "inputs": 0, "result_files": 0, "validation_files": 0, "fit_files": 0, "heartbeat": 0,
     "jobs": 1,
     "study_format": 2, "study": 2,
     "cli": 3,

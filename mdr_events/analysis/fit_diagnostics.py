@@ -114,13 +114,20 @@ def identifiability_of(jacobian: np.ndarray, theta: np.ndarray, lower: np.ndarra
     seen = singular > RCOND * largest
     condition = float(singular[0] / singular[-1]) if singular[-1] > 0 else math.inf
     inverse = np.where(seen, 1.0 / np.where(seen, singular, 1.0) ** 2, 0.0)
-    covariance = (vt.T * inverse) @ vt * variance_scale
+    unscaled = (vt.T * inverse) @ vt
+    with np.errstate(over="ignore"):  # (s² (JᵀJ)⁻¹ beyond the doubles: the noise's square over a small Jacobian)
+        covariance = unscaled * variance_scale
     unseen = np.any(np.abs(vt[~seen]) > math.sqrt(RCOND), axis=0) if np.any(~seen) else np.zeros(theta.size, bool)
     # fewer residuals than parameters: the directions beyond vt's rows are not seen either (each parameter's share of
     # them, 1 - its squared norm over vt's rows; rounding, ~1e-16, where vt is square); round eighteen: two samples
     # and four free values gave the fourth a standard error of 0
     unseen |= 1.0 - np.sum(vt**2, axis=0) > RCOND
     standard_error = np.sqrt(np.maximum(np.diag(covariance), 0.0))
+    overflowed = not np.all(np.isfinite(covariance))
+    if overflowed:  # each a square root, s (JᵀJ)⁻¹ᐟ², finite where s² (JᵀJ)⁻¹ is not (round twenty: a rate fit's
+        # noise of 1e154 N, inside its range, ran the covariance out of the doubles with a RuntimeWarning)
+        root = np.sqrt(np.maximum(np.diag(unscaled), 0.0))
+        standard_error = math.sqrt(variance_scale) * root
     standard_error[unseen] = math.inf
     verdicts = []
     for j in range(theta.size):
@@ -134,7 +141,8 @@ def identifiability_of(jacobian: np.ndarray, theta: np.ndarray, lower: np.ndarra
         else:
             verdicts.append(Identifiability.DETERMINED)
     with np.errstate(invalid="ignore", divide="ignore"):
-        correlation = covariance / np.outer(standard_error, standard_error)
+        correlation = unscaled / np.outer(root, root) if overflowed else \
+            covariance / np.outer(standard_error, standard_error)
     correlation[unseen, :] = math.nan
     correlation[:, unseen] = math.nan
     np.fill_diagonal(correlation, 1.0)

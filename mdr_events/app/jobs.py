@@ -132,18 +132,20 @@ class PhaseJob:
         does); the half-space's of the flat record with the study's ``v`` (a study's ``[layer]`` had been dropped
         here, and the half-space's diagram written)."""
         from mdr_events.app.result_files import FileOutcome, FileStatus, write_phase_diagram
+        from mdr_events.app.heartbeat import heartbeat
         from mdr_events.io.files import write_netcdf
         from mdr_events.theory.job import on_layer
 
-        if self.speeds is not None:  # (the rate law: its angles against the speed, as a labelled result)
-            return [FileOutcome(write_netcdf(self.compute_at_speeds(), FilePath(out) / f"{self.stem}.nc"),
-                                FileStatus.WRITTEN)]
-        if on_layer(self.contact):
-            return write_phase_diagram(self.contact, self.scenario, out, self.stem, attrs=dict(self.provenance),
-                                       d_max=self.d_max)
-        return write_phase_diagram(self.contact.parameters(self.d_max, self.v), self.scenario, out, self.stem,
-                                   attrs=dict(self.provenance), profile=self.contact.profile,
-                                   friction=dataclasses.replace(self.contact.friction, tau0=None))
+        with heartbeat(progress, f"phase-diagram (scenario {self.scenario})"):
+            if self.speeds is not None:  # (the rate law: its angles against the speed, as a labelled result)
+                return [FileOutcome(write_netcdf(self.compute_at_speeds(), FilePath(out) / f"{self.stem}.nc"),
+                                    FileStatus.WRITTEN)]
+            if on_layer(self.contact):
+                return write_phase_diagram(self.contact, self.scenario, out, self.stem, attrs=dict(self.provenance),
+                                           d_max=self.d_max)
+            return write_phase_diagram(self.contact.parameters(self.d_max, self.v), self.scenario, out, self.stem,
+                                       attrs=dict(self.provenance), profile=self.contact.profile,
+                                       friction=dataclasses.replace(self.contact.friction, tau0=None))
 
 
 @dataclass(frozen=True)
@@ -184,8 +186,12 @@ class SimulateJob:
         return write_simulation(dataset, out, self.stem)
 
     def run(self, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
-        """Simulate and write."""
-        return self.write(self.compute(), out)
+        """Simulate and write (``progress`` told that it still runs, :func:`~mdr_events.app.heartbeat.heartbeat`)."""
+        from mdr_events.app.heartbeat import heartbeat
+
+        with heartbeat(progress, f"simulate ({self.stem})"):
+            dataset = self.compute()
+        return self.write(dataset, out)
 
 
 class Convergence(NamedTuple):
@@ -439,10 +445,13 @@ class RateFitJob:
     def named(self, message: str) -> str:
         """``message`` of :func:`~mdr_events.analysis.rate_fit.fit_rate_adhesion` with each ``measurements[i]`` named
         by its file (round nineteen: "measurements[1].times=307.9 s is not allowed" named the second DATA by the API's
-        argument; the noise, one for all, is ``--noise``'s)."""
+        argument; the noise, one for all, is ``--noise``'s, and what it allows without the API's ``None``: round twenty,
+        "allowed: None or a finite number ..." where the command line has no ``None``, only the option left out)."""
         import re
 
-        message = re.sub(r"measurements\[\d+\]\.noise=", "the noise of normal_force (--noise, [fit] noise) ", message)
+        if re.search(r"measurements\[\d+\]\.noise=", message):
+            message = re.sub(r"measurements\[\d+\]\.noise=", "the noise of normal_force (--noise, [fit] noise) ", message)
+            message = message.replace("allowed: None or ", "allowed: ")
         message = re.sub(r"(measurements\[\d+\])\.path\.speed=", r"\1its speed (--speeds, [fit] speeds) ", message)
         return re.sub(r"measurements\[(\d+)\]\.?", lambda found: f"{self.data[int(found.group(1))]}: ", message)
 

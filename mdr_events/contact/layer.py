@@ -16,7 +16,11 @@ from typing import Any, Mapping
 
 from mdr_events.validation import check_real, reads_attrs, shown
 
-__all__ = ["Layer", "LayerBase", "HALF_SPACE"]
+__all__ = ["Layer", "LayerBase", "HALF_SPACE", "NU_RANGE"]
+
+#: The Poisson's ratios a layer of finite thickness takes, ``[0, 0.5]``: the range of its compliance and tables
+#: (:mod:`mdr_events.theory.layer`); the half-space takes ``(-1, 0.5]``.
+NU_RANGE = (0.0, 0.5)
 
 
 class LayerBase(enum.Enum):
@@ -120,6 +124,30 @@ class Layer:
             raise ValueError(f"radius={radius!r} is not allowed on {self.describe()}: a/h overflows; allowed: a radius "
                              f"whose a/h is a finite double (at most {self.thickness * sys.float_info.max:.3g} m)")
         return relative
+
+    def check_poisson_ratio(self, nu: float) -> None:
+        """Refuse a Poisson's ratio ``nu`` this layer has no compliance for, in one line naming the layer.
+
+        The half-space takes any ``nu`` in ``(-1, 0.5]`` (``Elastomer``'s range); a layer of finite thickness takes
+        ``[0, 0.5]``, the range of its compliance and tables (:data:`NU_RANGE`; Lebedev & Ufliand's kernel, the
+        tangential ones). Checked when a ``Contact`` is made (round twenty: ``--nu -0.99 --h 5e-3`` ran until the
+        layer's tables refused ``nu=-0.99`` with the range ``[0, 0.5]``, not saying it is the layer's).
+
+        Parameters
+        ----------
+        nu : float
+            The elastomer's Poisson's ratio.
+
+        Raises
+        ------
+        ValueError
+            A layer of finite thickness and ``nu`` outside :data:`NU_RANGE`.
+        """
+        low, high = NU_RANGE
+        if not self.is_half_space and not low <= nu <= high:
+            raise ValueError(f"nu={nu!r} is not allowed on {self.describe()}; allowed: a Poisson's ratio in [{low:g}, "
+                             f"{high:g}] on a layer of finite thickness (its compliance's range; the half-space, "
+                             "h = inf, takes (-1, 0.5])")
 
     def describe(self) -> str:
         """The layer in words.

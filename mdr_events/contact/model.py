@@ -102,6 +102,7 @@ class Contact:
         if not self.friction.is_complete:
             raise ValueError(f"Contact.friction={self.friction!r} is not allowed: the law {self.friction.law!r} uses "
                              "tau0; allowed: a law with its values, e.g. FrictionLaw('tau0', tau0=42e3)")
+        self.layer.check_poisson_ratio(self.elastomer.nu)
 
     def __repr__(self) -> str:
         layer = "" if self.layer.is_half_space else f", {self.layer!r}"  # (the half-space: the paper's, unnamed)

@@ -98,9 +98,12 @@ class Path:
         if not np.all(np.isfinite(points)):
             raise ValueError(f"waypoints={shown(self.waypoints)} is not allowed; allowed: {allowed}")
         lengths = np.hypot(*np.diff(points, axis=0).T)
-        if np.any(lengths == 0.0):
+        if np.any(lengths == 0.0):  # (round twenty: "waypoints 0 and 1 coincide; consecutive waypoints must differ"
+            # named neither the value nor, in the package's words, what is allowed)
             index = int(np.argmin(lengths))
-            raise ValueError(f"waypoints {index} and {index + 1} coincide; consecutive waypoints must differ")
+            raise ValueError(f"waypoints[{index + 1}]={shown(tuple(float(v) for v in points[index + 1]))} is not "
+                             f"allowed: it coincides with waypoints[{index}], a segment of length 0 (no direction); "
+                             "allowed: consecutive waypoints that differ")
         if np.any(lengths < MIN_SEGMENT_SHARE * lengths.max()):
             index = int(np.argmin(lengths))
             raise ValueError(f"waypoints {index} and {index + 1} are {lengths[index]:.3g} m apart; allowed: at least "

@@ -46,6 +46,10 @@ POINTS_PER_INCH = 72.0
 #: The simulation legend below the panels: font size (points) and gap to the figure's edge (in font sizes).
 LEGEND_FONTSIZE = 8
 LEGEND_BORDER_PAD = 0.5
+#: The most cases the simulation legend names (six rows of five): beyond, it names that many spread evenly, the
+#: first and the last among them (round twenty: 3000 angles' legend of 600 rows collapsed the panels to nothing,
+#: matplotlib's "constrained_layout not applied" warnings on stderr).
+LEGEND_CASES = 30
 
 #: The overlay (e.g. the discrete model) in a colour that stands out against viridis, with
 #: open markers thinned to about this many per curve.
@@ -162,7 +166,8 @@ def _draw_phase_diagram_A(ax, dataset: xr.Dataset, d_max: float) -> None:
         depths = dataset[f"d_crit_{key}"].values
         if np.all(np.isnan(depths)):  # no closed form (a friction law with Coulomb's part, adhesive)
             continue
-        ax.plot(alpha, depths * _MM, **{**_PHASE_STYLE[key], "label": f"{_PHASE_STYLE[key]['label']} {eq}".strip()})
+        ax.plot(alpha, _depths_in_mm(depths), **{**_PHASE_STYLE[key],
+                                                  "label": f"{_PHASE_STYLE[key]['label']} {eq}".strip()})
     top = 2.0 * d_max
     shown = [key for key in ("hertz", "jkr") if np.isfinite(float(dataset[f"critical_angle_{key}"]))]
     for key in shown:  # (an adhesive angle without closed form, nan, is not drawn)
@@ -181,6 +186,13 @@ def _draw_phase_diagram_A(ax, dataset: xr.Dataset, d_max: float) -> None:
     ax.set_ylim(0, top)
 
 
+def _depths_in_mm(depths: np.ndarray) -> np.ndarray:
+    """Onset depths in mm; ``inf`` (off the plot, as "never slides") where a depth near the double range's top
+    overflows in mm (round twenty: a power law near the cone, ``n = 1.0000001``, whose onset lies at ~1e306 m)."""
+    with np.errstate(over="ignore"):
+        return depths * _MM
+
+
 def _draw_phase_diagram_B(ax, dataset: xr.Dataset, d_max: float) -> None:
     """Scenario B's curves (20), (21) on both branches, the jump-off depth, its regions and the critical angle
     standing on the jump-off depth (``d_max`` in mm)."""
@@ -191,7 +203,7 @@ def _draw_phase_diagram_B(ax, dataset: xr.Dataset, d_max: float) -> None:
         if np.all(np.isnan(dataset[f"d_crit_{key}"].values)):  # no closed form (another law, adhesive)
             continue
         for i, branch in enumerate(branches):
-            values = dataset[f"d_crit_{key}"].sel(branch=branch).values * _MM
+            values = _depths_in_mm(dataset[f"d_crit_{key}"].sel(branch=branch).values)
             ax.plot(alpha, values, **{**_PHASE_STYLE[key],
                                       "label": f"{_PHASE_STYLE[key]['label']} {eq}".strip() if i == 0 else None})
     jump_off = float(dataset["jump_off_depth"]) * _MM
@@ -290,10 +302,13 @@ def plot_simulation(dataset: xr.Dataset, overlay: xr.Dataset | None = None, titl
     dimension = case_dimension(dataset)
     colours = plt.cm.viridis(np.linspace(0.0, 0.9, dataset.sizes[dimension]))
     time = dataset["time"].values
+    cases = dataset.sizes[dimension]
+    named = set(np.linspace(0, cases - 1, min(cases, LEGEND_CASES)).round().astype(int).tolist())
     for letter, ax, (name, scale, label) in zip("abcde", axes, SIMULATION_PANELS):
-        for colour, case in zip(colours, dataset[dimension].values):
+        for index, (colour, case) in enumerate(zip(colours, dataset[dimension].values)):
             values = dataset[name].sel({dimension: case}).values * scale
-            ax.plot(time, values, color=colour, lw=1.4, label=case_text(dimension, case))
+            ax.plot(time, values, color=colour, lw=1.4,
+                    label=case_text(dimension, case) if index in named else "_nolegend_")
         if overlay is not None:
             overlay_dimension = case_dimension(overlay)
             for case in overlay[overlay_dimension].values:

@@ -121,18 +121,23 @@ def convex_root(function, derivative, upper, lower, rtol: float = ROOT_RTOL):
     Returns
     -------
     numpy.ndarray
-        The roots, the shape of ``upper``.
+        The roots, the shape of ``upper``; ``nan`` where the function overflows before its root (a root beyond the
+        double range).
     """
     s = np.array(upper, dtype=float, copy=True)
     lower = np.broadcast_to(np.asarray(lower, dtype=float), s.shape)
     s = np.maximum(np.where(np.isfinite(s), s, 1.0), lower)
-    for _ in range(ROOT_MAX_DOUBLINGS):
-        short = function(s) < 0.0
-        if not np.any(short):
-            break
-        s = np.where(short, 2.0 * np.where(s > 0.0, s, 1.0), s)
+    # a root beyond the double range (near the cone, n -> 1, the phase diagram's (3 slope/κc)^(1/(2n-2)): round
+    # twenty, RuntimeWarnings of phase-diagram --power-law 1e-3 1.0000001): the doublings overflow the guess or the
+    # function to inf, Newton's step is inf/inf and the root nan, which the callers read as "no root" (d_crit = +inf)
+    with np.errstate(over="ignore", invalid="ignore"):
+        for _ in range(ROOT_MAX_DOUBLINGS):
+            short = function(s) < 0.0
+            if not np.any(short):
+                break
+            s = np.where(short, 2.0 * np.where(s > 0.0, s, 1.0), s)
     for _ in range(ROOT_MAX_ITERATIONS):
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             step = np.where(derivative(s) > 0, function(s) / derivative(s), 0.0)
         s_next = np.maximum(s - np.maximum(step, 0.0), lower)
         done = np.all(np.abs(s_next - s) <= rtol * np.abs(s_next))
@@ -597,7 +602,8 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
     if not adhesion or params.dgamma0 == 0.0:
         if profile.n == 1.0:
             return _as_output(np.where(vertical, np.inf, np.where(tan_alpha * K < kc, 0.0, np.nan)), alpha_arr)
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # (its power 1/(n − 1) near the cone
+            # overflows to +inf, "never slides", as the adhesive root beyond the doubles: round twenty)
             depth = _rel("power_law_d_crit_A_hertz").numeric(tan_alpha, profile.c, profile.n, params.tau0,
                                                              params.G_star)
         return _as_output(np.where(vertical, np.inf, np.asarray(depth, dtype=float)), alpha_arr)
@@ -616,8 +622,9 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
             upper = np.maximum((2.0 * slope / kc) ** (1.0 / (power - 1.0)), (2.0 * k / kc) ** (1.0 / power))
         s = convex_root(lambda s: kc * s**power - slope * s - k, lambda s: power * kc * s ** (power - 1.0) - slope,
                         upper, 0.0)
-    radius = s * s
-    return _as_output(np.where(vertical, np.inf, np.asarray(tan_alpha * K * radius, dtype=float)), alpha_arr)
+    with np.errstate(over="ignore"):  # (a root near the double range's top: its depth +inf)
+        depth = np.asarray(tan_alpha * K * (s * s), dtype=float)
+    return _as_output(np.where(vertical, np.inf, depth), alpha_arr)
 
 
 def critical_angle_A(profile: Profile, params: Parameters, adhesion: bool = True) -> float:
@@ -820,7 +827,8 @@ def d_crit_B_indentation(alpha, profile: Profile, params: Parameters, adhesion: 
                                        np.full(alpha_arr.shape, (3.0 * params.d_max / kc) ** (1.0 / two_n))])
         s = convex_root(lambda s: kc * s**two_n - k * s - slope * s * s - params.d_max,
                         lambda s: two_n * kc * s ** (two_n - 1.0) - k - 2.0 * slope * s, upper, 0.0)
-    depth = params.d_max + slope * s * s
+    with np.errstate(over="ignore"):  # (a root near the double range's top, n -> 1: its depth +inf, as no root's)
+        depth = params.d_max + slope * s * s
     return _as_output(np.where(vertical | np.isnan(s), np.inf, depth), alpha_arr)
 
 

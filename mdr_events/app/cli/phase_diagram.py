@@ -51,7 +51,9 @@ def job(args: argparse.Namespace) -> PhaseJob:
 
 
 def run(args: argparse.Namespace) -> None:
-    """Compute and write the diagram; print the files written."""
+    """Compute and write the diagram; print the files written (on stderr, a line now and then while it runs long)."""
+    from mdr_events.app.cli import progress
+
     spec = job(args)
-    for outcome in spec.run(_options.output_directory(args)):
+    for outcome in spec.run(_options.output_directory(args), progress):
         print(outcome.path)

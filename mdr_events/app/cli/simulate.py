@@ -64,8 +64,10 @@ def job(args: argparse.Namespace) -> SimulateJob:
 
 
 def run(args: argparse.Namespace) -> None:
-    """Simulate and write; print the files written."""
+    """Simulate and write; print the files written (on stderr, a line now and then while a long run runs)."""
+    from mdr_events.app.cli import progress
+
     spec = job(args)  # every value checked (the method's options too) before the output directory is made
     out = _options.output_directory(args)  # before the simulation, which may take minutes
-    for outcome in spec.run(out):
+    for outcome in spec.run(out, progress):
         print(outcome.path)

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mdr_events.contact.layer import Layer, LayerBase
+from mdr_events.contact.layer import NU_RANGE, Layer, LayerBase
 from mdr_events.validation import check_real
 
 __all__ = ["LAMBDA_MAX", "KERNEL_V_MAX", "compliance_function", "kernel"]
@@ -48,7 +48,10 @@ def _base(base: LayerBase | str) -> LayerBase:
 
 
 def _nu(nu: float) -> float:
-    return check_real("nu", nu, "a finite number in [0, 0.5]", lambda value: 0.0 <= value <= 0.5)
+    """``nu`` checked against a layer's range, :data:`~mdr_events.contact.layer.NU_RANGE` (the normal and tangential
+    compliances')."""
+    low, high = NU_RANGE
+    return check_real("nu", nu, f"a finite number in [{low:g}, {high:g}]", lambda value: low <= value <= high)
 
 
 def _one_minus_compliance(u: np.ndarray, nu: float, base: LayerBase) -> np.ndarray:

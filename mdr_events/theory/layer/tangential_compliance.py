@@ -10,8 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from mdr_events.contact.layer import Layer, LayerBase
-from mdr_events.theory.layer.compliance import _ChebyshevKernel, _cosine_transform, _finite_reals, _kernel_argument
-from mdr_events.validation import check_real
+from mdr_events.theory.layer.compliance import _ChebyshevKernel, _cosine_transform, _finite_reals, _kernel_argument, _nu
 
 __all__ = ["MODES", "LAMBDA_MAX", "check_bonded", "tangential_compliance", "tangential_kernel"]
 
@@ -26,10 +25,6 @@ LAMBDA_MAX = 64.0
 
 #: What ``t`` may be on a frictionless base.
 _FRICTIONLESS_T = "finite numbers > 0 (ξh) on a frictionless base"
-
-
-def _nu(nu: float) -> float:
-    return check_real("nu", nu, "a finite number in [0, 0.5]", lambda value: 0.0 <= value <= 0.5)
 
 
 def _mode(mode: str) -> str:
