@@ -187,3 +187,22 @@ def test_a_simulation_of_many_cases_draws_its_figure_without_warnings():
         figure.canvas.draw()  # (the layout runs when drawn)
     labels = [text.get_text() for legend in figure.legends for text in legend.get_texts()]
     assert len(labels) == LEGEND_CASES and labels[0].startswith("α = 20") and labels[-1].startswith("α = 20.299")
+
+
+def test_the_line_counts_computing_not_waiting(monkeypatch):
+    """A block that waits (a process starved of a core on a loaded machine: wall time passing, no CPU time) says
+    nothing, so that a quick run's output does not depend on the machine's load; one that computes does."""
+    import time
+
+    from mdr_events.app import heartbeat
+
+    monkeypatch.setattr(heartbeat, "FIRST_AFTER", 0.3)
+    monkeypatch.setattr(heartbeat, "POLL", 0.05)
+    waited, computed = [], []
+    with heartbeat.heartbeat(waited.append, "x"):
+        time.sleep(0.8)
+    with heartbeat.heartbeat(computed.append, "x"):
+        end = time.process_time() + 0.6
+        while time.process_time() < end:
+            pass
+    assert waited == [] and len(computed) >= 1, (waited, computed)
