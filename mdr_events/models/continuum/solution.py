@@ -143,6 +143,11 @@ EVALUATED_QUANTITIES = ("indentation_depth", "tangential_displacement", "normal_
                         "contact_radius", "sliding_fraction")
 
 
+#: A sample whose depth is within this many ulp of its span's end depth is read as that end (:func:`_span_radius`): a
+#: time from first contact and back rounds the depth by an ulp or two.
+END_ULPS = 4
+
+
 def _span_radius(model, span: Span, d: np.ndarray, sampled: bool = False) -> np.ndarray:
     """The contact radius of a span in contact at the depths ``d``: on its branch of (9), or pinned; ``sampled``: by
     the branch's :meth:`~.branch.Branch.sample_radii` (a run's samples: the closed form where there is one)."""
@@ -152,7 +157,17 @@ def _span_radius(model, span: Span, d: np.ndarray, sampled: bool = False) -> np.
     # may sit on the fold to rounding)
     branch = model.grow if span.regime is Regime.GROWING else model.shrink
     depth = np.maximum(d, branch.jump_off_depth)
-    return branch.sample_radii(depth) if sampled else branch.radii(depth)
+    if not sampled:
+        return branch.radii(depth)
+    radii = branch.sample_radii(depth)
+    # a sample at a span's end (to END_ULPS of its depth) takes the iteration's radius: that of the span's event,
+    # which the pinned span after it holds bit for bit
+    ends = np.zeros(depth.shape, dtype=bool)
+    for end in (span.segment.d(span.t_start), span.segment.d(span.t_end)):
+        ends |= np.abs(depth - end) <= END_ULPS * np.spacing(abs(end))
+    if ends.any():
+        radii[ends] = branch.radii(depth[ends])
+    return radii
 
 
 def contact_radii(solution: PathSolution, times: np.ndarray) -> np.ndarray:
