@@ -39,7 +39,7 @@ def depressed_quartic_root(linear: float, constant) -> np.ndarray:
 
     and the largest root is ``t = (√(2m) + √(2/√(2m) − 2m)) / 2``. One Newton step on the quartic itself polishes
     ``s`` (a step above :data:`POLISH_SHARE` of ``s``, the fold's, is not taken), never below the fold's root
-``σ 4^{-1/3}``. Below the fold the arcosh's argument is taken as 1 (the fold's double root): the caller says where a
+    ``σ 4^{-1/3}``. Below the fold the arcosh's argument is taken as 1 (the fold's double root): the caller says where a
     depth has no root.
 
     Parameters
