@@ -19,6 +19,7 @@ from typing import Any, Collection, Mapping, Sequence
 
 import numpy as np
 import xarray as xr
+from xarray.indexes import PandasIndex
 
 from mdr_events._version import __version__
 from mdr_events.io.registrars import load_registrars
@@ -106,19 +107,35 @@ def assembled(data_vars: Mapping[str, tuple], coords: Mapping[str, tuple]) -> xr
     ValueError
         A dimension of two sizes, or a data variable named after a dimension or a coordinate.
     """
-    coordinates = xr.Coordinates(dict(coords))
-    variables = {}
-    for name, (dims, values, attrs) in data_vars.items():
-        # (a NumPy array of numbers or text is taken as it is: what xarray's conversion would leave it)
-        variables[name] = xr.Variable(dims, values, attrs, fastpath=type(values) is np.ndarray
-                                      and values.dtype.kind not in "OMm")
-    clash = sorted(set(variables) & (set(coordinates.variables) | {dim for var in variables.values() for dim in
-                                                                      var.dims}))
+    coordinates, indexes = _coordinates(coords)
+    variables = {name: _variable(dims, values, attrs) for name, (dims, values, attrs) in data_vars.items()}
+    clash = sorted(set(variables) & (set(coordinates) | {dim for var in variables.values() for dim in var.dims}))
     if clash:
         raise ValueError(f"data variables {clash} are not allowed: named after a coordinate or a dimension; allowed: "
                          "the coordinates in coords")
-    variables.update(coordinates.variables)
-    return xr.Dataset._construct_direct(variables, set(coordinates.variables), indexes=dict(coordinates.xindexes))
+    variables.update(coordinates)
+    return xr.Dataset._construct_direct(variables, set(coordinates), indexes=indexes)
+
+
+def _variable(dims, values, attrs: dict) -> xr.Variable:
+    """``xarray.Variable(dims, values, attrs)``; a NumPy array of numbers or text taken as it is (what xarray's
+    conversion would leave it), without the conversion's checks."""
+    return xr.Variable(dims, values, attrs, fastpath=type(values) is np.ndarray and values.dtype.kind not in "OMm")
+
+
+def _coordinates(coords: Mapping[str, tuple]) -> tuple[dict[str, xr.Variable], dict[str, Any]]:
+    """The coordinates' variables and indexes as ``xarray.Coordinates(coords)`` makes them, without its merge: a
+    coordinate of one dimension named after it gets the default index (``PandasIndex.from_variables``) and the
+    index's variable; any other is a plain variable."""
+    variables, indexes = {}, {}
+    for name, (dims, values, attrs) in coords.items():
+        variable = _variable(dims, values, attrs)
+        if variable.dims == (name,):
+            index = PandasIndex.from_variables({name: variable}, options={})
+            variable = index.create_variables({name: variable})[name]
+            indexes[name] = index
+        variables[name] = variable
+    return variables, indexes
 
 
 def parameters_of(dataset: xr.Dataset) -> Parameters:

@@ -453,3 +453,16 @@ def test_blockwise_into_a_row_is_blockwise(paper):
     np.testing.assert_array_equal(blockwise(np.sin, values[:5], out=small), np.sin(values[:5]))
     with pytest.raises(ValueError, match="C-contiguous"):
         blockwise(np.sin, values, out=np.empty((values.size, 2))[:, 0])
+
+
+def test_the_kept_jump_off_is_the_computed_one_and_a_fresh_dict():
+    """jump_off keeps the paraboloid's points (issue 28: a run asks them at every step of its set-up): the kept point
+    is the computation's bit for bit, each call gets a dict of its own, and an int R is kept apart from a float one."""
+    from mdr_events.theory.analytic import _paraboloid_jump_off
+
+    p = me.Parameters.paper()
+    first = analytic.jump_off(p, p.dgamma1)
+    first["depth"] = 0.0  # a caller's change stays its own
+    again = analytic.jump_off(p, p.dgamma1)
+    assert again == dict(_paraboloid_jump_off.__wrapped__(p.R, p.E_star, p.dgamma1, 1.0)) and again["depth"] < 0.0
+    assert _paraboloid_jump_off(1, p.E_star, p.dgamma1, 1.0) is not _paraboloid_jump_off(1.0, p.E_star, p.dgamma1, 1.0)

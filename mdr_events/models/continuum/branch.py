@@ -9,9 +9,15 @@ import math
 import numpy as np
 
 from mdr_events.theory import analytic, power_law, symbolic, tabulated
+from mdr_events.theory.quartic import depressed_quartic_root
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, TabulatedProfile
 
+#: :meth:`Branch.sample_radii` keeps the iteration of :meth:`Branch.radii` where the quartic's slope in ``s`` is below
+#: this share of its leading term's, ``p'(s) < NEAR_FOLD · 4 s³``: near the jump-off fold, where the root's
+#: conditioning amplifies rounding over a thousandfold, the two routes agree only to it (``√ε`` on the fold), and a
+#: run that ends at pull-off ends there: its last radius is then the one its events and extrema read (both iterate).
+NEAR_FOLD = 1e-3
 #: A depth this share below the jump-off depth still gives the jump-off radius: a radius pinned just
 #: outside the fold is released at a depth that rounds below it.
 FOLD_SHARE = 1e-9
@@ -242,6 +248,34 @@ class Branch:
         # (jkr_contact_radius's own steps, its checks and the jump-off point taken once, in __init__)
         root = analytic.positive_polynomial_root(self._array_coefficients(depth, *self._arguments), lower=self._floor)
         return np.where(depth >= self.jump_off_depth, root**2, np.nan)
+
+    def sample_radii(self, depth: np.ndarray) -> np.ndarray:
+        """:meth:`radii` at a run's samples: on the paraboloid with adhesion, the quartic's root in closed form
+        (:func:`mdr_events.theory.quartic.depressed_quartic_root`, a few ulp from :meth:`radii`'s iteration, within
+        the root's conditioning at the fold); any other branch, :meth:`radii` itself.
+
+        Parameters
+        ----------
+        depth : array_like
+            The depths (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The radii (m), the shape of ``depth`` (``nan`` below the jump-off depth).
+        """
+        if type(self).radii is not Branch.radii or self.work == 0.0:  # (a power law, a table, Hertz: its own)
+            return self.radii(depth)
+        depth = np.asarray(depth, dtype=float)
+        linear, constant = self._array_coefficients(depth, *self._arguments)[3:]
+        linear, constant = float(linear), np.broadcast_to(constant, depth.shape)
+        root = np.atleast_1d(np.maximum(depressed_quartic_root(linear, constant), self._floor))
+        cube = root**3
+        near = (4.0 * cube + linear < NEAR_FOLD * 4.0 * cube).reshape(root.shape)
+        if near.any():  # (the iteration's own radius at the fold: that of the events and of the extrema there)
+            root[near] = analytic.positive_polynomial_root([1.0, 0.0, 0.0, linear, np.atleast_1d(constant)[near]],
+                                                           lower=self._floor)
+        return np.where(depth >= self.jump_off_depth, root.reshape(depth.shape)**2, np.nan)
 
     def radius(self, depth: float, rtol: float) -> float:
         """Stable-branch radius at ``depth``, converged to ``rtol``.

@@ -143,13 +143,31 @@ EVALUATED_QUANTITIES = ("indentation_depth", "tangential_displacement", "normal_
                         "contact_radius", "sliding_fraction")
 
 
-def _span_radius(model, span: Span, d: np.ndarray) -> np.ndarray:
-    """The contact radius of a span in contact at the depths ``d``: on its branch of (9), or pinned."""
-    if span.regime is Regime.GROWING:  # on the Δγ0 branch, above its fold; a sample may sit below it to rounding
-        return model.grow.radii(np.maximum(d, model.grow.jump_off_depth))
-    if span.regime is Regime.SHRINKING:  # the last sample may sit on the fold to rounding
-        return model.shrink.radii(np.maximum(d, model.shrink.jump_off_depth))
-    return np.full(np.shape(d), span.pinned_radius)
+#: A sample whose depth is within this many ulp of its span's end depth is read as that end (:func:`_span_radius`): a
+#: time from first contact and back rounds the depth by an ulp or two.
+END_ULPS = 4
+
+
+def _span_radius(model, span: Span, d: np.ndarray, sampled: bool = False) -> np.ndarray:
+    """The contact radius of a span in contact at the depths ``d``: on its branch of (9), or pinned; ``sampled``: by
+    the branch's :meth:`~.branch.Branch.sample_radii` (a run's samples: the closed form where there is one)."""
+    if span.regime is not Regime.GROWING and span.regime is not Regime.SHRINKING:
+        return np.full(np.shape(d), span.pinned_radius)
+    # (growing: on the Δγ0 branch, above its fold, a sample may sit below it to rounding; shrinking: the last sample
+    # may sit on the fold to rounding)
+    branch = model.grow if span.regime is Regime.GROWING else model.shrink
+    depth = np.maximum(d, branch.jump_off_depth)
+    if not sampled:
+        return branch.radii(depth)
+    radii = branch.sample_radii(depth)
+    # a sample at a span's end (to END_ULPS of its depth) takes the iteration's radius: that of the span's event,
+    # which the pinned span after it holds bit for bit
+    ends = np.zeros(depth.shape, dtype=bool)
+    for end in (span.segment.d(span.t_start), span.segment.d(span.t_end)):
+        ends |= np.abs(depth - end) <= END_ULPS * np.spacing(abs(end))
+    if ends.any():
+        radii[ends] = branch.radii(depth[ends])
+    return radii
 
 
 def contact_radii(solution: PathSolution, times: np.ndarray) -> np.ndarray:
@@ -160,7 +178,8 @@ def contact_radii(solution: PathSolution, times: np.ndarray) -> np.ndarray:
     for index in np.unique(owner):
         span, rows = solution.spans[index], owner == index
         if span.regime is not Regime.NONE:
-            out[rows] = _span_radius(solution.model, span, span.segment.d(solution.t_contact + times[rows]))
+            out[rows] = _span_radius(solution.model, span, span.segment.d(solution.t_contact + times[rows]),
+                                     sampled=True)
     return out
 
 
@@ -203,7 +222,7 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
         out.update(normal_force=zero, tangential_force=zero, contact_radius=zero,
                    sliding_fraction=np.full(t.shape, np.nan))
         return out
-    a = np.asarray(radii, dtype=float) if radii is not None else _span_radius(model, span, d)
+    a = np.asarray(radii, dtype=float) if radii is not None else _span_radius(model, span, d, sampled=True)
     out["contact_radius"] = a
     out["normal_force"] = np.asarray(model.normal_force(d, a), dtype=float)  # (10)
     if span.interpolant is None:
