@@ -77,7 +77,7 @@ class SpringFactors:
                              "(the half-space's springs need no table, a frictionless base has no tangential ones)")
         c, n = _power_law(profile)
         normal, edge, tangential = layer_table(nu, layer.base, n), layer_table(nu, layer.base), tangential_table(nu)
-        splines = [normal._splines["profile"], edge._splines["edge"],
+        splines = [*(table._splines[name] for table, name in zip((normal, edge), _NORMAL_COLUMNS)),
                    *(tangential._splines[name] for name in _TANGENTIAL_COLUMNS)]
         if LAMBDA_MIN != TANGENTIAL_LAMBDA_MIN or not all(np.array_equal(splines[0].t, spline.t)
                                                           and spline.k == splines[0].k for spline in splines):
@@ -88,8 +88,7 @@ class SpringFactors:
         self.E_star, self.G_star = E_star, G_star
         #: ``κₙ c`` of ``g∞ = κₙ c xⁿ`` (3)
         self.scale = _abel_factor(n) * c
-        self._k0 = (float(normal.columns["k0"]), float(edge.columns["k0"]),
-                    *(float(value) for value in tangential.columns["k0"]))
+        self._tables = (normal, edge, tangential)
 
     def _factors(self, lam: np.ndarray) -> tuple[np.ndarray, ...]:
         """``γₙ``, ``Θ(1)``, ``Φ_L``, ``Φ_T``, ``Ψ_L(1)``, ``Ψ_T(1)`` at ``λ`` as the tables give them."""
@@ -97,12 +96,11 @@ class SpringFactors:
         s = np.log(np.where(small, LAMBDA_MIN, lam))
         # (the columns as contiguous rows, as each spline's own value: NumPy's exponential on contiguous doubles)
         factors = list(np.exp(np.ascontiguousarray(self._spline(s).T)))
-        if np.any(small):
-            k_profile, k_edge, k_l, k_t = self._k0
-            phi = 1.0 / (1.0 - 2.0 * k_profile * lam / np.pi)
-            phi_l, phi_t = (1.0 / (1.0 - 2.0 * k * lam / np.pi) for k in (k_l, k_t))
-            series = ((1.0 + (phi - 1.0) / (self.n + 1.0)) / phi, 1.0 / (1.0 - 2.0 * k_edge * lam / np.pi),
-                      phi_l, phi_t, phi_l, phi_t)
+        if np.any(small):  # (the tables' own series)
+            normal, edge, tangential = self._tables
+            tangential_series = tangential._series(lam)
+            series = (*(table._series(lam)[name] for table, name in zip((normal, edge), _NORMAL_COLUMNS)),
+                      *(tangential_series[name] for name in _TANGENTIAL_COLUMNS))
             factors = [np.where(small, exact, value) for exact, value in zip(series, factors)]
         return tuple(factors)
 

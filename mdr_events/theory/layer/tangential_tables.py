@@ -100,14 +100,19 @@ class TangentialTable:
 
         return {name: make_interp_spline(self.columns["s"], self.columns[name], k=5) for name in _COLUMNS}
 
+    def _series(self, lam: np.ndarray) -> dict[str, np.ndarray]:
+        """The four columns below :data:`LAMBDA_MIN`: ``Φ_m = Ψ_m(1) = 1/(1 − 2k_m(0)λ/π)``."""
+        k_l, k_t = (float(value) for value in self.columns["k0"])
+        series = {"phi_l": 1.0 / (1.0 - 2.0 * k_l * lam / np.pi), "phi_t": 1.0 / (1.0 - 2.0 * k_t * lam / np.pi)}
+        series.update(edge_l=series["phi_l"], edge_t=series["phi_t"])
+        return series
+
     def _values(self, lam, names: tuple[str, ...] = _COLUMNS) -> tuple[np.ndarray, ...]:
         """The columns ``names`` (default all four) at ``λ``: the series below :data:`LAMBDA_MIN`."""
         lam = table_argument(lam, LAMBDA_MAX, "solve_tangential_punch solves up to LAMBDA_SOLVE_MAX")
         small = lam < LAMBDA_MIN
         s = np.log(np.where(small, LAMBDA_MIN, lam))
-        k_l, k_t = (float(value) for value in self.columns["k0"])
-        series = {"phi_l": 1.0 / (1.0 - 2.0 * k_l * lam / np.pi), "phi_t": 1.0 / (1.0 - 2.0 * k_t * lam / np.pi)}
-        series.update(edge_l=series["phi_l"], edge_t=series["phi_t"])
+        series = self._series(lam)
         if names == _STIFFNESS_COLUMNS:  # (one spline of both columns: the same values, each column contiguous)
             logarithms = np.moveaxis(self._stiffness_splines(s), -1, 0).copy()
             return tuple(np.where(small, series[name], np.exp(logarithm)) for name, logarithm in zip(names, logarithms))
