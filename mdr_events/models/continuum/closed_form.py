@@ -92,8 +92,8 @@ class Primitive(NamedTuple):
 
 class ClosedForce:
     """A span's force in closed form, called like ``solve_ivp``'s dense output in the span's variable
-    (``interpolant(var)[0]``; ``var`` the radius over ``scale``), with its breakpoints ``ts`` (the span's ends and
-    knots: the readers integrate between them, where the force is smooth).
+    (``interpolant(var)[0]``; ``var`` the radius over ``scale``), with its breakpoints ``ts`` (the span's ends, its
+    events' readings and its knots: the readers integrate between them, where the force is smooth).
 
     Parameters
     ----------
@@ -224,7 +224,8 @@ def closed_span(primitive: Primitive, start: float, stop: float, force: float, G
     parts = np.linspace(start, stop, EVENT_READINGS + 1)[1:-1].tolist()
     ascending = stop > start
     readings = sorted({*parts, *knots, stop}, reverse=not ascending)
-    whole = ClosedForce(primitive, start, force, G2, scale, [start, *knots, stop])
+    # (the readings are the force's breakpoints too: a quadrature over the span, tangential_work's, rules between them)
+    whole = ClosedForce(primitive, start, force, G2, scale, [start, *readings])
     t_events: list[list[float]] = [[] for _ in events]
     directions = [float(getattr(event, "direction", 0.0)) for event in events]
     g, low = [event(start, None) for event in events], start
@@ -234,7 +235,7 @@ def closed_span(primitive: Primitive, start: float, stop: float, force: float, G
         if active:
             index, root = _first_root(events, active, _UNREAD, low, var)  # (the events read the variable alone)
             t_events[index].append(root)
-            inside = [knot for knot in knots if (start < knot < root if ascending else root < knot < start)]
+            inside = [read for read in readings if (start < read < root if ascending else root < read < start)]
             ended = ClosedForce(primitive, start, force, G2, scale, [start, *inside, root])
             return Marched(1, "", ended, t_events, ended.at(root))
         g, low = g_new, var
