@@ -50,9 +50,9 @@ class DepthHistory:
             out.append((max(t0, surface), t1) if d1 > d0 else (t0, min(t1, surface)))
         return out
 
-    def attach(self, xi: np.ndarray, t: float) -> tuple[np.ndarray, np.ndarray]:
-        """The last time up to ``t`` at which each spring attached (``d`` rising through ``g(ξ)``) and the segment it
-        attached on (−1: the path started with it in contact)."""
+    def attach(self, xi: np.ndarray, t) -> tuple[np.ndarray, np.ndarray]:
+        """The last time up to ``t`` (one time, or one per spring) at which each spring attached (``d`` rising through
+        ``g(ξ)``) and the segment it attached on (−1: the path started with it in contact)."""
         g = self.line.profile(xi)
         when, segment = np.full(xi.shape, -np.inf), np.full(xi.shape, -2)
         if self.corner_d[0] > 0.0:
@@ -60,7 +60,7 @@ class DepthHistory:
             when[inside], segment[inside] = self.corner_t[0], -1
         for k in range(len(self.corner_t) - 1):
             (t0, t1), (d0, d1) = self.corner_t[k:k + 2], self.corner_d[k:k + 2]
-            if not d1 > d0 or t0 > t:
+            if not d1 > d0 or t0 > np.max(t):
                 continue
             at = t0 + (t1 - t0) * (g - d0) / (d1 - d0)
             take = (g >= d0) & (g < d1) & (at <= t)
@@ -124,15 +124,18 @@ class SpanHistory:
         moving = (self._regime.GROWING, self._regime.SHRINKING)
         return [(low, high) for low, high, span in self._spans if span.regime in moving and high > low]
 
-    def attach(self, xi: np.ndarray, t: float) -> tuple[np.ndarray, np.ndarray]:
-        """The last time up to ``t`` at which each spring attached, and the span it attached in (as a code)."""
+    def attach(self, xi: np.ndarray, t) -> tuple[np.ndarray, np.ndarray]:
+        """The last time up to ``t`` (one time, or one per spring) at which each spring attached, and the span it
+        attached in (as a code)."""
+        t = np.broadcast_to(np.asarray(t, dtype=float), np.shape(xi))
+        latest = float(np.max(t, initial=-np.inf))
         when, code = np.full(xi.shape, -np.inf), np.full(xi.shape, -2)
         for index, (time, before, after) in enumerate(self.jumps):
             take = _beyond(xi, before) & (xi <= after) & (time <= t)
             when[take], code[take] = time, 2 * index
         grow = self.solution.model.grow
         for index, (low, high, span) in enumerate(self._spans):
-            if span.regime is not self._regime.GROWING or low > t:
+            if span.regime is not self._regime.GROWING or low > latest:
                 continue
             first, last = self._span_ends[index]
             if index and self._spans[index - 1][2].regime is self._regime.GROWING:  # (no ulp between two growing spans:
@@ -143,7 +146,7 @@ class SpanHistory:
             depth = np.asarray(grow.depths(xi[take]), dtype=float)
             d0, d1 = span.segment.d(np.array([low, high]))
             at = low + (high - low) * (depth - d0) / (d1 - d0)
-            late = at <= t
+            late = at <= t[take]
             rows = np.flatnonzero(take)[late]
             later = at[late] >= when[rows]
             when[rows[later]], code[rows[later]] = at[late][later], 2 * index + 1

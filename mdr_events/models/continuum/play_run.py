@@ -45,6 +45,8 @@ END_PROBE = 1e-9
 #: Springs probed where the quadrature's nodes hold none at a cap (a zone opening between them is found once it
 #: reaches one of these: its onset within its growth to ``a/(PROBE_POINTS − 1)``).
 PROBE_POINTS = 1025
+#: The times whose probes (:data:`PROBE_POINTS` each) :func:`_probed_all` reads in one evaluation of the anchors.
+PROBE_CHUNK = 32
 #: The share of a contact whose centre alone is at a cap (:func:`_share`).
 SMALLEST = 5e-324
 #: The events' bisection evaluates its guess only within this many units in the last place of the root of the springs'
@@ -126,15 +128,13 @@ def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = 
 
 def _samples(play: PlaySprings, times: np.ndarray, radius: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``F_x``, the sliding fraction (length at a cap over ``a``) and the share of :func:`_share` at each time in
-    contact (0, nan and 0 elsewhere)."""
+    contact (0, nan and 0 elsewhere), all the times at once (:func:`_probed_all`)."""
     force, sliding, shares = np.zeros(times.shape), np.full(times.shape, np.nan), np.zeros(times.shape)
     play.remember_radii(times[radius > 0])
-    for k, time in enumerate(times):
-        if radius[k] > 0:
-            a = play.radius(float(time))
-            if a > 0:
-                state, shares[k] = _probed(play, float(time), a)
-                force[k], sliding[k] = state.force, min(state.length / a, 1.0)
+    rows = np.array([k for k in np.flatnonzero(radius > 0) if play.radius(float(times[k])) > 0], dtype=np.intp)
+    states, shares[rows] = _probed_all(play, times[rows])
+    for k, state in zip(rows.tolist(), states):
+        force[k], sliding[k] = state.force, min(state.length / play.radius(float(times[k])), 1.0)
     return force, sliding, shares
 
 
@@ -193,25 +193,43 @@ def _share(play: PlaySprings, time: float, kinks: bool = True) -> float:
 
 
 def _probed(play: PlaySprings, time: float, a: float, kinks: bool = True) -> tuple[SpringState, float]:
-    """The springs' state at ``time`` and their share at a cap with the centre and the edge probed (:func:`_share`):
-    the centre and the edge read with the quadrature's nodes, the other probes where none is at a cap."""
-    coulomb_alone = not play.shift(time) > 0.0
-    edge = min(a, float(play.compressed_radius(time))) if coulomb_alone else a
-    ends = edge * np.array([0.0, 1.0 - PROBE_SHARE]) if edge > 0.0 else np.empty(0)
-    state, at_ends = play.probed_state(time, ends, kinks)
-    if coulomb_alone:
-        if not edge > 0.0:
-            return state, 0.0
-        share = state.compressed_at_cap / state.compressed if state.compressed > 0.0 else 0.0
-    else:
-        share = state.length / a
-    if share == 0.0:
-        at_cap = play.anchors(edge * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS), time)[1] < 0
-    else:
-        at_cap = at_ends < 0
-    if share == 0.0 and np.any(at_cap):
-        return state, SMALLEST
-    return state, share if np.all(at_cap[[0, -1]]) else min(share, 1.0 - 2.0 * FULL_SHARE)
+    """The springs' state at ``time`` (its radius ``a > 0``) and their share at a cap with the centre and the edge
+    probed (:func:`_share`, :func:`_probed_all`)."""
+    states, shares = _probed_all(play, np.array([time]), kinks)
+    return states[0], float(shares[0])
+
+
+def _probed_all(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> tuple[list[SpringState], np.ndarray]:
+    """The springs' state at each of ``times`` (all in contact) and their share at a cap with the centre and the edge
+    probed (:func:`_share`): the centre and the edge read with the quadrature's nodes, the other probes where none is
+    at a cap; the states of all the times in one call (:meth:`~.play_springs.PlaySprings.probed_states`), the other
+    probes of all the times where they are read in a few (:data:`PROBE_CHUNK`)."""
+    times = [float(time) for time in times]
+    alone = np.array([not play.shift(time) > 0.0 for time in times], dtype=bool)
+    a = np.array([play.radius(time) for time in times])
+    edge = np.array([min(radius, float(play.compressed_radius(time))) if coulomb_alone else radius
+                     for time, radius, coulomb_alone in zip(times, a, alone)])
+    ends = np.array([0.0, 1.0 - PROBE_SHARE])
+    ended = np.flatnonzero(edge > 0.0)
+    states, at_ends = play.probed_states(np.array(times), (edge[ended][:, None] * ends).ravel(),
+                                         np.repeat(ended, ends.size), kinks)
+    at_cap = np.zeros((len(times), ends.size), bool)
+    at_cap[ended] = at_ends.reshape(-1, ends.size) < 0
+    share = np.array([(state.compressed_at_cap / state.compressed if state.compressed > 0.0 else 0.0)
+                      if coulomb_alone else state.length / radius for state, coulomb_alone, radius in zip(states, alone, a)])
+    share[alone & ~(edge > 0.0)] = 0.0  # (no compressed springs: none at a cap)
+    probed = np.flatnonzero((share == 0.0) & (edge > 0.0))
+    spread = np.zeros(probed.size, bool)  # (a probe at a cap where the share is 0)
+    grid = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)
+    for first in range(0, probed.size, PROBE_CHUNK):
+        chunk = slice(first, first + PROBE_CHUNK)
+        rows = probed[chunk]
+        labels = play.anchors((edge[rows][:, None] * grid).ravel(), np.repeat(np.array(times)[rows], grid.size))[1]
+        at = labels.reshape(rows.size, grid.size) < 0
+        spread[chunk], at_cap[rows] = np.any(at, axis=1), at[:, [0, -1]]
+    share[probed[spread]] = SMALLEST
+    whole = np.all(at_cap, axis=1) | ~(edge > 0.0) | (share == SMALLEST)
+    return states, np.where(whole, share, np.minimum(share, 1.0 - 2.0 * FULL_SHARE))
 
 
 def _bisect(play: PlaySprings, low: float, high: float, reached, onset: bool) -> float:

@@ -228,6 +228,53 @@ class _Chain(NamedTuple):
 
 
 
+class _Breaks(NamedTuple):
+    """The panels' ends of the quadratures at many times, flat: sorted by their time's index, then by radius."""
+
+    #: the radii (m)
+    values: np.ndarray
+    #: the index of each one's time
+    group: np.ndarray
+    #: whether each one is a kink found (:meth:`PlaySprings._kinks`)
+    kink: np.ndarray
+
+    def of(self, groups: np.ndarray) -> "_Breaks":
+        """The breaks of the times where ``groups`` (a mask over the times) holds."""
+        keep = groups[self.group]
+        return _Breaks(self.values[keep], self.group[keep], self.kink[keep])
+
+    def gauss(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """:func:`_gauss` on every time's panels: the nodes, the weights, each node's time's index and its panel (the
+        index of the break at its lower end)."""
+        panel = np.flatnonzero(self.group[:-1] == self.group[1:])
+        nodes, weights = _gauss_panels(self.values[panel], self.values[panel + 1])
+        return nodes, weights, np.repeat(self.group[panel], NODES), np.repeat(panel, NODES)
+
+    def with_ends(self, nodes: np.ndarray, group: np.ndarray, panel: np.ndarray) -> tuple[np.ndarray, ...]:
+        """The nodes of :meth:`gauss` with each time's centre and edge probes (:data:`EDGE_SHARE` inside them) first
+        and last: the points, their times' indices, their panels and which of them are nodes."""
+        first = np.flatnonzero(np.concatenate([[True], self.group[1:] != self.group[:-1]]))
+        last = np.concatenate([first[1:], [self.values.size]]) - 1
+        radius = self.values[last]
+        ends = (radius * EDGE_SHARE, radius * (1.0 - EDGE_SHARE))
+        points = np.concatenate([ends[0], nodes, ends[1]])
+        groups = np.concatenate([self.group[first], group, self.group[first]])
+        place = np.concatenate([np.full(first.size, -1), np.arange(nodes.size), np.full(first.size, nodes.size)])
+        order = np.lexsort((place, groups))
+        panels = np.concatenate([first, panel, last - 1])
+        is_node = np.concatenate([np.zeros(first.size, bool), np.ones(nodes.size, bool), np.zeros(first.size, bool)])
+        return points[order], groups[order], panels[order], is_node[order]
+
+    def with_kinks(self, found: np.ndarray, group: np.ndarray) -> "_Breaks":
+        """The breaks with the kinks ``found`` at the times of indices ``group`` added (once each)."""
+        values, groups = np.concatenate([self.values, found]), np.concatenate([self.group, group])
+        kink = np.concatenate([self.kink, np.ones(found.size, bool)])
+        order = np.lexsort((values, groups))
+        values, groups, kink = values[order], groups[order], kink[order]
+        starts = np.flatnonzero(np.concatenate([[True], (groups[1:] != groups[:-1]) | (values[1:] != values[:-1])]))
+        return _Breaks(values[starts], groups[starts], np.logical_or.reduceat(kink, starts))
+
+
 @dataclass
 class PlaySprings:
     """``F_x`` and the springs at a cap along ``path`` (path clock), every anchor its own play operator (module
@@ -306,34 +353,42 @@ class PlaySprings:
             cached = self._shifts[key] = float(self.line.shift(a)[0])
         return cached
 
+    def _shifts_at(self, t):
+        """:meth:`_shift_at` at one time, or at each of an array of times."""
+        if np.ndim(t) == 0:
+            return self._shift_at(float(t))
+        unique, inverse = np.unique(t, return_inverse=True)
+        return np.array([self._shift_at(time) for time in unique.tolist()])[inverse.reshape(np.shape(t))]
+
     def _own_times(self, xi, g, ratio, start, t):
         """Each spring's times of its ``L``'s maximum and ``U``'s minimum on every interval of ``chain.convex``
         within ``[start, t]`` (``nan`` where none), by golden sections."""
         columns = []
         for lo, hi in self.chain.convex:
-            a, b = np.maximum(lo, start), np.full(xi.shape, min(hi, t))
+            a, b = np.maximum(lo, start), np.minimum(hi, np.broadcast_to(t, xi.shape))
             for sign in (1.0, -1.0):
                 columns.append(_golden(lambda s: sign * self._window(xi, g, ratio, s)[0 if sign > 0 else 1],
                                        a, b))
         return columns
 
     def _columns(self, xi, g, ratio, start, t) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """The clamp times of each spring before ``t`` (a column each, ``nan`` where none), ``ū`` there and which
-        columns are crossings: the shared times (at a jump both sides, the earlier first), each spring's own extremes,
-        and with adhesion the times its compression changes sign (``d = g(ξ)``: its cap's kink, where its Coulomb part
-        is 0 exactly)."""
+        """The clamp times of each spring before ``t`` (one time, or one per spring; a column each, ``nan`` where
+        none), ``ū`` there and which columns are crossings: the shared times (at a jump both sides, the earlier first),
+        each spring's own extremes, and with adhesion the times its compression changes sign (``d = g(ξ)``: its cap's
+        kink, where its Coulomb part is 0 exactly). The columns are the same whatever ``t`` (those at or after it
+        ``nan``): a clamp's provenance code, its column's index, is the same at every time."""
         n = xi.size
         times, shifts = [], []
         jumps = {time: (before, after) for time, before, after in self.history.jumps}
-        for time in self.chain.times[self.chain.times < t]:
+        for time in self.chain.times:
             sides = jumps.get(time, (None,))
             for radius in sides:
-                times.append(np.full(n, time))
+                times.append(np.where(time < t, time, np.nan) * np.ones(n))
                 shifts.append(np.full(n, self._shift_at(float(time), radius)))
         own = self._own_times(xi, g, ratio, start, t)
         crossing = [False] * len(times) + [False] * len(own)
         if self.history.adhesive:
-            crossings = self._crossings(g, t)
+            crossings = self._crossings(g)
             own += crossings
             crossing += [True] * len(crossings)
         own = [np.where(column < t, column, np.nan) for column in own]
@@ -357,12 +412,12 @@ class PlaySprings:
             out = list(shift)
         return out
 
-    def _crossings(self, g: np.ndarray, t: float) -> list[np.ndarray]:
-        """The times each spring's depth ``d − g(ξ)`` changes sign on each segment before ``t`` (``nan``: none)."""
+    def _crossings(self, g: np.ndarray) -> list[np.ndarray]:
+        """The times each spring's depth ``d − g(ξ)`` changes sign on each segment (``nan``: none)."""
         out = []
         for k in range(len(self._corner_t) - 1):
             (t0, t1), (d0, d1) = self._corner_t[k:k + 2], self._corner_d[k:k + 2]
-            if d0 == d1 or t0 >= t:
+            if d0 == d1:  # (one column per segment whatever ``t``: those from ``t`` on are dropped by the caller)
                 continue
             share = (g - d0) / (d1 - d0)
             out.append(np.where((share > 0.0) & (share < 1.0), t0 + (t1 - t0) * share, np.nan))
@@ -393,13 +448,16 @@ class PlaySprings:
         """
         return self._anchors(xi, t)[:2]
 
-    def _anchors(self, xi, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    def _anchors(self, xi, t, group=None) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """:meth:`anchors`, which edge of its window at ``t`` each spring lay on before it (:func:`_on_edge`) and how
-        far outside the window it lay (m; :meth:`outside`)."""
+        far outside the window it lay (m; :meth:`outside`). ``t`` is one time or one per spring; with ``group`` (an
+        index per spring, its time's) the edges' round-off reads the largest cap of each group's springs, as a call
+        with that group's springs alone does."""
         xi = np.asarray(xi, dtype=float)
         g, ratio = self.line.profile(xi), self.line.ratio(xi)
         start, code = self.history.attach(xi, t)
         if np.any(start == -np.inf):  # (review S6: its anchor would be clamped from the path's start on)
+            t = float(np.broadcast_to(t, xi.shape)[start == -np.inf][0])
             raise RuntimeError(f"springs at xi = {xi[start == -np.inf][:3].tolist()} m match no attachment of the "
                                f"radius's history up to t={t!r} s (in contact at t: within [0, {self.radius(t)!r}) "
                                "m?): a bug to report")
@@ -418,12 +476,18 @@ class PlaySprings:
             for k in range(when.shape[1]):
                 anchor, label = _clamp(anchor, label, x[:, k] - cap[:, k], x[:, k] + cap[:, k], live[:, k],
                                        codes[:, k])
-        x_t, cap = self._x(float(t)), self._shift_at(float(t)) + ratio * np.maximum(self._d(float(t)) - g, 0.0)
+        x_t, cap = self._x(t), self._shifts_at(t) + ratio * np.maximum(self._d(t) - g, 0.0)
         pressed = self._d(t) - g > self._pressed_round_off
         before = anchor
         anchor, label = _clamp(anchor, label, x_t - cap, x_t + cap, np.ones(xi.shape, bool), np.where(pressed, -6, -3))
         lower, upper = x_t - cap, x_t + cap
-        edges = _on_edge(before, lower, upper, EDGE_ROUND_OFF * (self._x_scale + np.max(cap, initial=0.0)), pressed)
+        if group is None:
+            largest = np.max(cap, initial=0.0)
+        else:
+            largest = np.zeros(int(np.max(group, initial=-1)) + 1)
+            np.maximum.at(largest, group, cap)
+            largest = largest[group]
+        edges = _on_edge(before, lower, upper, EDGE_ROUND_OFF * (self._x_scale + largest), pressed)
         return anchor, label, edges, np.maximum(lower - before, before - upper)
 
     def radius(self, t: float) -> float:
@@ -529,16 +593,56 @@ class PlaySprings:
         tuple
             The :class:`SpringState` and the probes' provenance codes (negative at a cap).
         """
-        a = self.radius(t)
-        if not a > 0.0:
-            return SpringState(0.0, 0.0, 0.0, 0.0, 0.0), np.zeros(np.shape(probes), dtype=np.int64)  # (none at a cap)
-        nodes, weights, anchor, label, probed = self._quadrature(t, a, kinks, probes)
+        probes = np.asarray(probes, dtype=float)
+        states, probed = self.probed_states(np.array([float(t)]), probes, np.zeros(probes.size, dtype=np.intp), kinks)
+        return states[0], probed
+
+    def probed_states(self, times, probes: np.ndarray, probe_time: np.ndarray,
+                      kinks: bool = True) -> tuple[list["SpringState"], np.ndarray]:
+        """:meth:`probed_state` at many times at once: every round of the kink search and every cut of its bisection
+        one evaluation of the anchors for the springs of all the times, each time's springs as a call at that time
+        alone gives them (bit for bit: the anchors are spring by spring, the edges' round-off read per time).
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s, path clock).
+        probes : numpy.ndarray
+            The probed springs' coordinates (m), each within the contact at its time.
+        probe_time : numpy.ndarray
+            The index in ``times`` of each probe's time.
+        kinks : bool, default True
+            As :meth:`state`.
+
+        Returns
+        -------
+        tuple
+            The :class:`SpringState` at each time and the probes' provenance codes (negative at a cap).
+        """
+        times = np.asarray(times, dtype=float)
+        probes, probe_time = np.asarray(probes, dtype=float), np.asarray(probe_time, dtype=np.intp)
+        radii = np.array([self.radius(float(t)) for t in times])
+        states = [SpringState(0.0, 0.0, 0.0, 0.0, 0.0)] * times.size  # (out of contact: none at a cap)
+        probed = np.zeros(probes.shape, dtype=np.int64)
+        inside = np.flatnonzero(radii > 0.0)
+        if not inside.size:
+            return states, probed
+        index = np.full(times.size, -1)
+        index[inside] = np.arange(inside.size)
+        kept = index[probe_time] >= 0
+        nodes, weights, anchor, label, group, probed[kept] = self._quadratures(
+            times[inside], radii[inside], probes[kept], index[probe_time[kept]], kinks)
         w = self.line.weight(nodes) * weights
-        at_cap = label < 0
-        pressed = self._d(t) - self.line.profile(nodes) > self._pressed_round_off
-        force = 2.0 * self.line.G_star * float(np.sum(w * (self._x(t) - anchor)))
-        return SpringState(force, float(np.sum(w[at_cap])), float(np.sum(weights[at_cap])),
-                           float(np.sum(weights[at_cap & pressed])), float(np.sum(weights[pressed]))), probed
+        at_cap, at = label < 0, times[inside][group]
+        pressed = self._d(at) - self.line.profile(nodes) > self._pressed_round_off
+        moved = w * (self._x(at) - anchor)
+        bounds = np.searchsorted(group, np.arange(inside.size + 1))
+        for k, (low, high) in enumerate(zip(bounds[:-1].tolist(), bounds[1:].tolist())):
+            cap, press, each = at_cap[low:high], pressed[low:high], weights[low:high]
+            states[inside[k]] = SpringState(2.0 * self.line.G_star * float(np.sum(moved[low:high])),
+                                            float(np.sum(w[low:high][cap])), float(np.sum(each[cap])),
+                                            float(np.sum(each[cap & press])), float(np.sum(each[press])))
+        return states, probed
 
     def outside(self, t: float, probes: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """How far each spring's anchor lies outside its window at ``t`` before the clamp at ``t`` (m: positive where it
@@ -562,17 +666,22 @@ class PlaySprings:
         pressed = self._d(t) - self.line.profile(nodes) > self._pressed_round_off
         return distance[:nodes.size], pressed, distance[nodes.size:]
 
-    def _quadrature(self, t: float, a: float, kinks: bool = True, probes=np.empty(0)) -> tuple[np.ndarray, ...]:
-        """The quadrature's nodes and weights on ``[0, a]`` at ``t`` (Gauss–Legendre on the panels split at the
-        history's breaks and, with ``kinks``, the kinks: :meth:`_kinks`), the anchors and their provenance there, and
-        the provenance at ``probes``."""
-        breaks = np.union1d(np.linspace(0.0, a, PANELS + 1), self.history.breaks(t))
+    def _quadratures(self, times: np.ndarray, radii: np.ndarray, probes: np.ndarray, probe_time: np.ndarray,
+                     kinks: bool = True) -> tuple[np.ndarray, ...]:
+        """The quadrature's nodes and weights on ``[0, a]`` at each of ``times`` (Gauss–Legendre on the panels split
+        at the history's breaks and, with ``kinks``, the kinks: :meth:`_kinks`), the anchors and their provenance
+        there, the index of each node's time (the nodes in the order of their times), and the provenance at
+        ``probes``."""
+        grid = np.linspace(0.0, radii, PANELS + 1, axis=1)
+        extra = [self.history.breaks(float(t)) for t in times]
+        rows = [np.union1d(row, more) if more.size else row for row, more in zip(grid, extra)]
+        group = np.repeat(np.arange(times.size), [row.size for row in rows])
+        breaks = _Breaks(np.concatenate(rows), group, np.zeros(group.size, bool))
         if kinks:
-            breaks, anchor, label, probed = self._kinks(t, breaks, probes)
-            return *_gauss(breaks), anchor, label, probed
-        nodes, weights = _gauss(breaks)
-        anchor, label = self.anchors(np.concatenate([nodes, probes]), t)
-        return nodes, weights, anchor[:nodes.size], label[:nodes.size], label[nodes.size:]
+            return self._kinks(times, breaks, probes, probe_time)
+        nodes, weights, group, _ = breaks.gauss()
+        anchor, label = self.anchors(np.concatenate([nodes, probes]), times[np.concatenate([group, probe_time])])
+        return nodes, weights, anchor[:nodes.size], label[:nodes.size], group, label[nodes.size:]
 
     def cap_sides(self, t: float, edge: float) -> tuple[float, float]:
         """The lengths (m) of the springs within ``edge`` at the lower and the upper cap at ``t``, on the quadrature's
@@ -593,50 +702,67 @@ class PlaySprings:
         a = self.radius(t)
         if not a > 0.0:
             return 0.0, 0.0
-        nodes, weights, _, labels, _ = self._quadrature(t, a)
+        nodes, weights, _, labels, _, _ = self._quadratures(np.array([float(t)]), np.array([a]), np.empty(0),
+                                                            np.empty(0, dtype=np.intp))
         inside = nodes < edge
         return (float(np.sum(weights[inside & np.isin(labels, LOWER_CAP)])),
                 float(np.sum(weights[inside & np.isin(labels, UPPER_CAP)])))
 
-    def _kinks(self, t: float, breaks: np.ndarray, probes: np.ndarray) -> tuple[np.ndarray, ...]:
-        """``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances differ (within a
-        panel, across a panel's end, or in the first round between the centre or the edge, :data:`EDGE_SHARE` inside it,
-        and the nearest node) and no kink found before lies between them, the change located by bisection;
-        repeated until every such pair holds a kink. Also the anchors and provenance at the nodes of the last
-        breaks (:func:`_gauss`), and the provenance at ``probes`` (read in the first round)."""
-        kinks = np.empty(0)
-        ends = breaks[-1] * np.array([EDGE_SHARE, 1.0 - EDGE_SHARE])
+    def _kinks(self, times: np.ndarray, breaks: "_Breaks", probes: np.ndarray,
+               probe_time: np.ndarray) -> tuple[np.ndarray, ...]:
+        """Each time's ``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances
+        differ (within a panel, across a panel's end, or in the first round between the centre or the edge,
+        :data:`EDGE_SHARE` inside it, and the nearest node) and no kink found before lies between them, the change
+        located by bisection; repeated until every such pair holds a kink, every round one evaluation of the anchors
+        for the times still searched. Returns :meth:`_quadratures`' nodes, weights, anchors, provenance and times of
+        the last breaks (:func:`_gauss`), and the provenance at ``probes`` (read in the first round)."""
+        done, probed, active = [], None, np.ones(times.size, bool)
         for round_ in range(KINK_ROUNDS + 1):
-            inner = _gauss(breaks)[0]
+            current = breaks.of(active)
+            nodes, weights, group, panel = current.gauss()
+            inner, inner_group, inner_panel, is_node = nodes, group, panel, slice(None)
             if round_ == 0:  # (a zone between the centre or the edge and the nearest node: the stick zone left at the
-                inner = np.concatenate([ends[:1], inner, ends[1:]])  # edge before full slip; once: its kink is a break)
-                anchor, label, edges, _ = self._anchors(np.concatenate([inner, probes]), t)
+                inner, inner_group, inner_panel, is_node = current.with_ends(nodes, group, panel)  # edge before full
+                points, at = np.concatenate([inner, probes]), np.concatenate([inner_group, probe_time])  # slip; once:
+                anchor, label, edges, _ = self._anchors(points, times[at], at)  # its kink is a break)
                 probed, anchor, label, edges = label[inner.size:], anchor[:inner.size], label[:inner.size], \
                     edges[:inner.size]
             else:
-                anchor, label, edges, _ = self._anchors(inner, t)
+                anchor, label, edges, _ = self._anchors(inner, times[inner_group], inner_group)
             # (two springs on the same smooth edge of their windows at t to round-off hold the same anchor whatever
             # their provenance: no kink between them)
-            change = np.flatnonzero((label[1:] != label[:-1]) & ((edges[1:] == 0) | (edges[1:] != edges[:-1])))
-            fresh = change[np.searchsorted(kinks, inner[change]) == np.searchsorted(kinks, inner[change + 1])]
+            change = np.flatnonzero((inner_group[1:] == inner_group[:-1]) & (label[1:] != label[:-1])
+                                    & ((edges[1:] == 0) | (edges[1:] != edges[:-1])))
+            found_before = np.cumsum(current.kink)  # (the kinks among the breaks up to each: none between two nodes
+            fresh = change[found_before[inner_panel[change + 1]] == found_before[inner_panel[change]]]  # if equal)
+            searched = np.zeros(times.size, bool)
+            searched[inner_group[fresh]] = True
+            finished = (active & ~searched)[group]
+            done.append((nodes[finished], weights[finished], group[finished], anchor[is_node][finished],
+                         label[is_node][finished]))
             if not fresh.size:
-                nodes = slice(1, -1) if round_ == 0 else slice(None)
-                return breaks, anchor[nodes], label[nodes], probed
-            found = self._bisect(t, inner[fresh], inner[fresh + 1], label[fresh])
-            kinks = np.unique(np.concatenate([kinks, found]))
-            breaks = np.unique(np.concatenate([breaks, found]))
-        raise RuntimeError(f"the springs' kinks at t={t!r} s were still being found after {KINK_ROUNDS} rounds "
-                           f"({fresh.size} more): a bug to report (the force would be summed across a kink)")
+                break
+            at = inner_group[fresh]
+            breaks = breaks.with_kinks(self._bisect(times[at], inner[fresh], inner[fresh + 1], label[fresh]), at)
+            active = searched
+        else:
+            raise RuntimeError(f"the springs' kinks at t={float(times[np.flatnonzero(active)[0]])!r} s were still "
+                               f"being found after {KINK_ROUNDS} rounds ({fresh.size} more): a bug to report (the "
+                               "force would be summed across a kink)")
+        nodes, weights, group, anchor, label = (np.concatenate(column) for column in zip(*done))
+        order = np.argsort(group, kind="stable")
+        return nodes[order], weights[order], anchor[order], label[order], group[order], probed
 
-    def _bisect(self, t: float, low: np.ndarray, high: np.ndarray, low_label: np.ndarray) -> np.ndarray:
-        """Each bracket cut into :data:`KINK_CUTS` at once, kept where the provenance first differs from ``low``'s,
+    def _bisect(self, t, low: np.ndarray, high: np.ndarray, low_label: np.ndarray) -> np.ndarray:
+        """Each bracket (at ``t``, or at its own time of an array of them) cut into :data:`KINK_CUTS` at once, kept where the provenance first differs from ``low``'s,
         until :data:`KINK_HALVINGS` halvings' worth."""
         share = np.arange(1, KINK_CUTS) / KINK_CUTS
         for _ in range(-(-KINK_HALVINGS // int(np.log2(KINK_CUTS)))):
             if np.all(np.nextafter(low, high) >= high):  # (no double between the ends: every cut is one of them, and
                 break  # the bracket, its provenances read again, stays)
             points = low[:, None] + (high - low)[:, None] * share[None, :]
-            same = (self.anchors(points.ravel(), t)[1].reshape(points.shape) == low_label[:, None])
+            at = np.repeat(t, KINK_CUTS - 1) if np.ndim(t) else t
+            same = (self.anchors(points.ravel(), at)[1].reshape(points.shape) == low_label[:, None])
             first = np.argmin(np.concatenate([same, np.zeros((len(low), 1), bool)], axis=1), axis=1)
             edges = np.concatenate([low[:, None], points, high[:, None]], axis=1)
             rows = np.arange(len(low))
@@ -669,7 +795,11 @@ def _on_edge(anchor, lower, upper, round_off: float, pressed) -> np.ndarray:
 
 def _gauss(breaks: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The nodes and weights of Gauss–Legendre's rule on each panel between ``breaks``."""
-    lows, highs = breaks[:-1], breaks[1:]
+    return _gauss_panels(breaks[:-1], breaks[1:])
+
+
+def _gauss_panels(lows: np.ndarray, highs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The nodes and weights of Gauss–Legendre's rule on each panel ``[lows, highs]``."""
     nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
     return nodes, (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
 
