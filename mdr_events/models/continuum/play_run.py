@@ -16,9 +16,11 @@ extrema of ``F_x`` are the largest and least sample refined by bounded minimisat
 
 from __future__ import annotations
 
+import math
+from enum import Enum
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
+from scipy.optimize import minimize_scalar
 
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.layer import LayerBase
@@ -52,6 +54,8 @@ SMALLEST = 5e-324
 #: The events' bisection evaluates its guess only within this many units in the last place of the root of the springs'
 #: distance from their caps (:func:`_root`): Brent's method finds the root to about five of them.
 ROOT_ULPS = 64
+#: Brent's iterations before the halvings go on alone (scipy's ``brentq``'s default).
+BRENT_ITERATIONS = 100
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
 EXTREMUM_XTOL = 1e-12
 #: The springs' events the spans' frictionless run logs and this route replaces.
@@ -141,24 +145,28 @@ def _samples(play: PlaySprings, times: np.ndarray, radius: np.ndarray) -> tuple[
 def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, start: float, events) -> list[Event]:
     """The springs' events (module docstring) on the clock from first contact: in each piece of a contact between
     tangential reversals, a re-stick at its start where springs were at a cap before the reversal, then the first
-    slip onset and full slip."""
-    out = []
-    for begin, end, reversal in _pieces(events):
-        if reversal and _share(play, begin + start) > 0.0:
-            out.append(_event(play, begin + start, start, EventKind.RE_STICK))
+    slip onset and full slip (every piece's searched side by side: :func:`_searched`)."""
+    pieces = _pieces(events)
+    lasts = [end if reversal_end(events, end) else end - END_PROBE * (end - begin) for begin, end, _ in pieces]
+    asked = [begin + start for begin, _, reversal in pieces if reversal] + [last + start for last in lasts]
+    shares = dict(zip(asked, _shares(play, np.array(asked, dtype=float)).tolist()))
+    found, searches = [], []  # (the events in their order: a time, or the index of its search)
+    for (begin, end, reversal), last in zip(pieces, lasts):
+        if reversal and shares[begin + start] > 0.0:
+            found.append((begin + start, EventKind.RE_STICK))
         inside = (times > begin) & (times < end)
-        last = end if reversal_end(events, end) else end - END_PROBE * (end - begin)
-        probes, shares = np.append(times[inside], last), np.append(sampled[inside], _share(play, last + start))
+        probes, values = np.append(times[inside], last), np.append(sampled[inside], shares[last + start])
         for kind, reached in ((EventKind.SLIP_ONSET, lambda share: share > 0.0),
                               (EventKind.FULL_SLIP, lambda share: share >= 1.0 - FULL_SHARE)):
-            hit = np.flatnonzero(reached(shares))
+            hit = np.flatnonzero(reached(values))
             if not hit.size:
                 continue
             k = int(hit[0])
             low = probes[k - 1] if k > 0 else begin
-            bracket = (low + start, probes[k] + start)
-            out.append(_event(play, _bisect(play, *bracket, reached, kind is EventKind.SLIP_ONSET), start, kind))
-    return out
+            found.append((len(searches), kind))
+            searches.append(_bisect(low + start, probes[k] + start, reached, kind is EventKind.SLIP_ONSET))
+    results = _searched(play, searches)
+    return [_event(play, time if kind is EventKind.RE_STICK else results[time], start, kind) for time, kind in found]
 
 
 def reversal_end(events, time: float) -> bool:
@@ -232,67 +240,204 @@ def _probed_all(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> tup
     return states, np.where(whole, share, np.minimum(share, 1.0 - 2.0 * FULL_SHARE))
 
 
-def _bisect(play: PlaySprings, low: float, high: float, reached, onset: bool) -> float:
+class _Reading(Enum):
+    """What an event's search asks at a time (:func:`_readings`)."""
+
+    #: the share at a cap (:func:`_share`)
+    SHARE = "share"
+    #: the share without the kink search (:func:`_guess`)
+    GUESS = "guess"
+    #: the largest distance outside the windows, at the nodes and :data:`PROBE_POINTS` probes (:func:`_root`)
+    ONSET = "onset"
+    #: the least one, at the nodes and the centre and edge probes
+    LAST = "last"
+
+
+def _searched(play: PlaySprings, searches: list) -> list:
+    """Run the events' searches (generators yielding a tuple of ``(reading, time)`` asks and sent the values) side by
+    side: each step's asks of all of them read at once (:func:`_readings`); their results in their order. Each search
+    reads what it would read alone, bit for bit (the batched readings are their times' own)."""
+    results, asks = [None] * len(searches), {}
+
+    def advance(index: int, values) -> None:
+        try:
+            asks[index] = searches[index].send(values)
+        except StopIteration as stop:
+            results[index] = stop.value
+            asks.pop(index, None)
+
+    for index in range(len(searches)):
+        advance(index, None)
+    while asks:
+        flat = [(index, reading, time) for index, pending in asks.items() for reading, time in pending]
+        values = _readings(play, [(reading, time) for _, reading, time in flat])
+        given: dict[int, list] = {}
+        for (index, _, _), value in zip(flat, values):
+            given.setdefault(index, []).append(value)
+        for index, value in given.items():
+            advance(index, tuple(value))
+    return results
+
+
+def _readings(play: PlaySprings, asks: list) -> list[float]:
+    """The value of each ``(reading, time)`` ask, those of one reading read at once."""
+    out = [0.0] * len(asks)
+    for reading in _Reading:
+        rows = [k for k, (kind, _) in enumerate(asks) if kind is reading]
+        if not rows:
+            continue
+        times = np.array([asks[k][1] for k in rows])
+        if reading in (_Reading.SHARE, _Reading.GUESS):
+            values = _shares(play, times, reading is _Reading.SHARE)
+        else:
+            values = _distances(play, times, reading is _Reading.ONSET)
+        for k, value in zip(rows, values.tolist()):
+            out[k] = value
+    return out
+
+
+def _shares(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> np.ndarray:
+    """:func:`_share` at each of ``times``, at once (:func:`_probed_all`)."""
+    out = np.zeros(times.shape)
+    inside = np.array([play.radius(float(time)) > 0 for time in times], dtype=bool)
+    if np.any(inside):
+        out[inside] = _probed_all(play, times[inside], kinks)[1]
+    return out
+
+
+def _distances(play: PlaySprings, times: np.ndarray, onset: bool) -> np.ndarray:
+    """:func:`_root`'s distance at each of ``times``: the largest (``onset``) or least distance outside the windows
+    (:meth:`~.play_springs.PlaySprings.outsides`) of the compressed springs at the nodes under Coulomb's law alone,
+    else of all, and of the probes; ``nan`` where no spring is probed."""
+    out = np.full(times.shape, np.nan)
+    alone = [not play.shift(float(time)) > 0.0 for time in times]
+    edge = np.array([min(play.radius(float(time)), float(play.compressed_radius(float(time)))) if coulomb_alone
+                     else play.radius(float(time)) for time, coulomb_alone in zip(times, alone)])
+    rows = np.flatnonzero(edge > 0.0)
+    if not rows.size:
+        return out
+    share = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS) if onset else np.array([0.0, 1.0 - PROBE_SHARE])
+    nodes, pressed, group, at_probes = play.outsides(times[rows], (edge[rows][:, None] * share).ravel(),
+                                                     np.repeat(np.arange(rows.size), share.size))
+    at_probes = at_probes.reshape(rows.size, share.size)
+    bounds = np.searchsorted(group, np.arange(rows.size + 1))
+    for k, row in enumerate(rows.tolist()):
+        at_nodes, press = nodes[bounds[k]:bounds[k + 1]], pressed[bounds[k]:bounds[k + 1]]
+        values = np.concatenate([at_nodes[press] if alone[row] else at_nodes, at_probes[k]])
+        out[row] = float(np.max(values) if onset else np.min(values))
+    return out
+
+
+def _bisect(low: float, high: float, reached, onset: bool):
     """The first time in ``(low, high]`` the share at a cap (:func:`_share`) is ``reached`` (``onset``: the slip onset's
-    test, else full slip's), to :data:`EVENT_HALVINGS` halvings. Bisected on the share without the kink search
-    (:func:`_guess`), which is evaluated only within :data:`ROOT_ULPS` of the root of the springs' distance from their
-    caps (:func:`_root`; the other halvings decided by it), then the bracket found checked on the share itself; where
-    it is not the share's own, bisected on the guess at every halving and checked again, else on the share (the
-    halvings on the far side of a bracket's end it was not reached at, or was, decided by it). Where the share turns
-    once in the bracket, the checked bracket is the one bisection on the share visits (every time either visits lies
-    outside it)."""
+    test, else full slip's), to :data:`EVENT_HALVINGS` halvings (a search of :func:`_searched`). Bisected on the share
+    without the kink search (:func:`_guess`), which is evaluated only within :data:`ROOT_ULPS` of the root of the
+    springs' distance from their caps (:func:`_root`; the other halvings decided by it), then the bracket found checked
+    on the share itself; where it is not the share's own, bisected on the guess at every halving and checked again,
+    else on the share (the halvings on the far side of a bracket's end it was not reached at, or was, decided by it).
+    Where the share turns once in the bracket, the checked bracket is the one bisection on the share visits (every time
+    either visits lies outside it)."""
     known = [-np.inf, np.inf]  # (the share not reached up to the first, reached from the second on)
-    root = _root(play, low, high, onset)
-    guesses = [] if root is None else [lambda time: time > root + ROOT_ULPS * np.spacing(root)
-                                       or (time >= root - ROOT_ULPS * np.spacing(root) and reached(_guess(play, time)))]
-    for guess in guesses + [lambda time: reached(_guess(play, time))]:
-        bracket = _halve(low, high, guess)
-        below, above = (reached(_share(play, end)) for end in bracket)
+    root = yield from _root(low, high, onset)
+
+    def near_root(time: float):
+        if time > root + ROOT_ULPS * np.spacing(root):
+            return True
+        return time >= root - ROOT_ULPS * np.spacing(root) and reached((yield ((_Reading.GUESS, time),))[0])
+
+    def by_guess(time: float):
+        return reached((yield ((_Reading.GUESS, time),))[0])
+
+    def by_share(time: float):
+        return time >= known[1] or (time > known[0] and reached((yield ((_Reading.SHARE, time),))[0]))
+
+    for guess in ([] if root is None else [near_root]) + [by_guess]:
+        bracket = yield from _halve(low, high, guess)
+        below, above = (reached(value) for value in (yield tuple((_Reading.SHARE, end) for end in bracket)))
         if above and not below:
             return bracket[1]
         known[0] = known[0] if above else max(known[0], bracket[1])
         known[1] = min(known[1], bracket[0]) if below else known[1]
-    return _halve(low, high, lambda time: time >= known[1] or (time > known[0] and reached(_share(play, time))))[1]
+    return (yield from _halve(low, high, by_share))[1]
 
 
-def _root(play: PlaySprings, low: float, high: float, onset: bool) -> float | None:
+def _root(low: float, high: float, onset: bool):
     """Where, between ``low`` and ``high``, the first spring :func:`_guess` reads reaches its cap (``onset``) or the
-    last one does, by Brent's method on the largest or least distance outside the windows
-    (:meth:`~.play_springs.PlaySprings.outside`): ``None`` where it is not positive at ``high``; where it is not
-    negative at ``low``, from :data:`ROOT_ULPS` after it on, and where it is not negative there either, the slip onset
-    at ``low``."""
-    def distance(time: float) -> float:
-        a = play.radius(time)
-        coulomb_alone = not play.shift(time) > 0.0
-        edge = min(a, float(play.compressed_radius(time))) if coulomb_alone else a
-        if not edge > 0.0:
-            return np.nan
-        probes = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS) if onset else np.array([0.0, 1.0 - PROBE_SHARE])
-        nodes, pressed, at_probes = play.outside(time, edge * probes)
-        values = np.concatenate([nodes[pressed] if coulomb_alone else nodes, at_probes])
-        return float(np.max(values) if onset else np.min(values))
-
-    if not distance(high) > 0.0:
+    last one does, by Brent's method (:func:`_brent`) on the largest or least distance outside the windows
+    (:func:`_distances`): ``None`` where it is not positive at ``high``; where it is not negative at ``low``, from
+    :data:`ROOT_ULPS` after it on, and where it is not negative there either, the slip onset at ``low``."""
+    reading = _Reading.ONSET if onset else _Reading.LAST
+    at_high = (yield ((reading, high),))[0]
+    if not at_high > 0.0:
         return None
-    if not distance(low) < 0.0:  # (out of contact at ``low``, or springs at their caps at a reversal's instant, before
-        start = low + ROOT_ULPS * np.spacing(low)  # the re-stick: looked for from just after it)
-        if not distance(start) < 0.0:  # (the slip onset as the piece starts, Coulomb's springs at the edge sliding at
-            return low if onset else None  # once; checked after)
+    at_low = (yield ((reading, low),))[0]
+    if not at_low < 0.0:  # (out of contact at ``low``, or springs at their caps at a reversal's instant, before the
+        start = low + ROOT_ULPS * np.spacing(low)  # re-stick: looked for from just after it)
+        at_low = (yield ((reading, start),))[0]
+        if not at_low < 0.0:  # (the slip onset as the piece starts, Coulomb's springs at the edge sliding at once;
+            return low if onset else None  # checked after)
         low = start
-    try:
-        return float(brentq(distance, low, high, xtol=np.spacing(high), rtol=4.0 * np.finfo(float).eps))
-    except (ValueError, RuntimeError):  # (nan inside: out of contact, or no convergence; the halvings alone then)
+    return (yield from _brent(reading, low, high, at_low, at_high))
+
+
+def _brent(reading: _Reading, xa: float, xb: float, fa: float, fb: float):
+    """The root of the ``reading`` between ``xa`` and ``xb`` (its values there ``fa`` and ``fb``) by Brent's method,
+    step for step scipy's ``brentq`` (its C code) at ``xtol`` an ulp of ``xb`` and ``rtol`` four epsilons, as a
+    search of :func:`_searched`; ``None`` where a value is ``nan`` (out of contact), the signs do not differ, or it
+    does not converge in :data:`BRENT_ITERATIONS` (the halvings alone then)."""
+    xtol, rtol = float(np.spacing(xb)), 4.0 * float(np.finfo(float).eps)
+    xpre, xcur, fpre, fcur = xa, xb, fa, fb
+    xblk = fblk = spre = scur = 0.0
+    if np.isnan(fpre) or np.isnan(fcur):
         return None
+    if fpre == 0.0:
+        return xpre
+    if fcur == 0.0:
+        return xcur
+    if math.copysign(1.0, fpre) == math.copysign(1.0, fcur):
+        return None
+    for _ in range(BRENT_ITERATIONS):
+        if fpre != 0.0 and fcur != 0.0 and math.copysign(1.0, fpre) != math.copysign(1.0, fcur):
+            xblk, fblk = xpre, fpre
+            spre = scur = xcur - xpre
+        if abs(fblk) < abs(fcur):
+            xpre, xcur, xblk = xcur, xblk, xcur
+            fpre, fcur, fblk = fcur, fblk, fcur
+        delta = (xtol + rtol * abs(xcur)) / 2.0
+        sbis = (xblk - xcur) / 2.0
+        if fcur == 0.0 or abs(sbis) < delta:
+            return xcur
+        spre, scur = _brent_step(xpre, xcur, xblk, fpre, fcur, fblk, spre, scur, sbis, delta)
+        xpre, fpre = xcur, fcur
+        xcur += scur if abs(scur) > delta else (delta if sbis > 0.0 else -delta)
+        fcur = (yield ((reading, xcur),))[0]
+        if np.isnan(fcur):
+            return None
+    return None
 
 
-def _halve(low: float, high: float, reached) -> tuple[float, float]:
-    """The bracket of :data:`EVENT_HALVINGS` halvings of ``[low, high]`` (``reached`` false at its low end, true at
-    its high end)."""
+def _brent_step(xpre, xcur, xblk, fpre, fcur, fblk, spre, scur, sbis, delta) -> tuple[float, float]:
+    """Brent's next step: the interpolation's or extrapolation's where it is short and good, else the bisection's
+    (scipy's ``brentq``)."""
+    if abs(spre) > delta and abs(fcur) < abs(fpre):
+        if xpre == xblk:  # (interpolate)
+            stry = -fcur * (xcur - xpre) / (fcur - fpre)
+        else:  # (extrapolate)
+            dpre, dblk = (fpre - fcur) / (xpre - xcur), (fblk - fcur) / (xblk - xcur)
+            stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre))
+        if 2.0 * abs(stry) < min(abs(spre), 3.0 * abs(sbis) - delta):
+            return scur, stry
+    return sbis, sbis
+
+
+def _halve(low: float, high: float, reached):
+    """The bracket of :data:`EVENT_HALVINGS` halvings of ``[low, high]`` (``reached``, a search of
+    :func:`_searched` for a time, false at its low end, true at its high end)."""
     for _ in range(EVENT_HALVINGS):
         middle = 0.5 * (low + high)
         if middle in (low, high):
             break
-        if reached(middle):
+        if (yield from reached(middle)):
             high = middle
         else:
             low = middle

@@ -661,10 +661,46 @@ class PlaySprings:
         tuple of numpy.ndarray
             The distances at the nodes, whether the nodes' springs are compressed, the distances at the probes.
         """
-        nodes = _gauss(np.union1d(np.linspace(0.0, self.radius(t), PANELS + 1), self.history.breaks(t)))[0]
-        distance = self._anchors(np.concatenate([nodes, probes]), t)[3]
-        pressed = self._d(t) - self.line.profile(nodes) > self._pressed_round_off
-        return distance[:nodes.size], pressed, distance[nodes.size:]
+        probes = np.asarray(probes, dtype=float)
+        distance, pressed, _, at_probes = self.outsides(np.array([float(t)]), probes,
+                                                        np.zeros(probes.size, dtype=np.intp))
+        return distance, pressed, at_probes
+
+    def outsides(self, times, probes: np.ndarray, probe_time: np.ndarray) -> tuple[np.ndarray, ...]:
+        """:meth:`outside` at many times at once (one evaluation of the anchors for the springs of all of them, each
+        time's as a call at that time alone gives them).
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s, path clock), each in contact.
+        probes : numpy.ndarray
+            More springs' coordinates (m), each within the contact at its time.
+        probe_time : numpy.ndarray
+            The index in ``times`` of each probe's time.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            The distances at the nodes, whether the nodes' springs are compressed, the index of each node's time (the
+            nodes in the order of their times), the distances at the probes.
+        """
+        times = np.asarray(times, dtype=float)
+        probes, probe_time = np.asarray(probes, dtype=float), np.asarray(probe_time, dtype=np.intp)
+        nodes, _, group, _ = self._grid(times, np.array([self.radius(float(t)) for t in times])).gauss()
+        at = times[np.concatenate([group, probe_time])]
+        distance = self._anchors(np.concatenate([nodes, probes]), at)[3]
+        pressed = self._d(times[group]) - self.line.profile(nodes) > self._pressed_round_off
+        return distance[:nodes.size], pressed, group, distance[nodes.size:]
+
+    def _grid(self, times: np.ndarray, radii: np.ndarray) -> "_Breaks":
+        """The panels' ends at each of ``times`` before the kinks: :data:`PANELS` equal ones on ``[0, a]`` and the
+        history's breaks."""
+        grid = np.linspace(0.0, radii, PANELS + 1, axis=1)
+        extra = [self.history.breaks(float(t)) for t in times]
+        rows = [np.union1d(row, more) if more.size else row for row, more in zip(grid, extra)]
+        group = np.repeat(np.arange(times.size), [row.size for row in rows])
+        return _Breaks(np.concatenate(rows), group, np.zeros(group.size, bool))
 
     def _quadratures(self, times: np.ndarray, radii: np.ndarray, probes: np.ndarray, probe_time: np.ndarray,
                      kinks: bool = True) -> tuple[np.ndarray, ...]:
@@ -672,11 +708,7 @@ class PlaySprings:
         at the history's breaks and, with ``kinks``, the kinks: :meth:`_kinks`), the anchors and their provenance
         there, the index of each node's time (the nodes in the order of their times), and the provenance at
         ``probes``."""
-        grid = np.linspace(0.0, radii, PANELS + 1, axis=1)
-        extra = [self.history.breaks(float(t)) for t in times]
-        rows = [np.union1d(row, more) if more.size else row for row, more in zip(grid, extra)]
-        group = np.repeat(np.arange(times.size), [row.size for row in rows])
-        breaks = _Breaks(np.concatenate(rows), group, np.zeros(group.size, bool))
+        breaks = self._grid(times, radii)
         if kinks:
             return self._kinks(times, breaks, probes, probe_time)
         nodes, weights, group, _ = breaks.gauss()

@@ -172,16 +172,16 @@ class RateHistory:
         """
         return [(piece.t0, piece.t1) for piece in self._pieces if piece.moving]
 
-    def attach(self, xi: np.ndarray, t: float) -> tuple[np.ndarray, np.ndarray]:
-        """The last time up to ``t`` at which each spring attached, and where (a code: ``2 k`` the ``k``-th jump-in,
+    def attach(self, xi: np.ndarray, t) -> tuple[np.ndarray, np.ndarray]:
+        """The last time up to ``t`` (one time, or one per spring) at which each spring attached, and where (a code: ``2 k`` the ``k``-th jump-in,
         ``2 k + 1`` the ``k``-th piece; −2 never).
 
         Parameters
         ----------
         xi : numpy.ndarray
             The springs' coordinates (m).
-        t : float
-            The time (s, path clock).
+        t : float or numpy.ndarray
+            The time (s, path clock), or one per spring.
 
         Returns
         -------
@@ -189,12 +189,14 @@ class RateHistory:
             The times (``-inf`` never) and the codes.
         """
         xi = np.asarray(xi, dtype=float)
+        t = np.broadcast_to(np.asarray(t, dtype=float), xi.shape)
+        latest = float(np.max(t, initial=-np.inf))
         when, code = np.full(xi.shape, -np.inf), np.full(xi.shape, -2)
         for index, (time, before, after) in enumerate(self.jumps):
             take = ((xi > before) | ((before == 0.0) & (xi == 0.0))) & (xi <= after) & (time <= t)  # (0: the centre too)
             when[take], code[take] = time, 2 * index
         for index, piece in enumerate(self._pieces):
-            if not piece.advancing or piece.t0 > t:
+            if not piece.advancing or piece.t0 > latest:
                 continue
             # (from the previous piece's end where the next starts an ulp above it: its own polynomial's start)
             below = min(piece.a0, self._pieces[index - 1].a1) if index else piece.a0
@@ -202,7 +204,7 @@ class RateHistory:
             if not rows.size:
                 continue
             at = piece.attach_times(xi[rows])
-            late = (at <= t) & (at >= when[rows])
+            late = (at <= t[rows]) & (at >= when[rows])
             when[rows[late]], code[rows[late]] = at[late], 2 * index + 1
         return when, code
 
