@@ -54,6 +54,10 @@ SMALLEST = 5e-324
 #: The events' bisection evaluates its guess only within this many units in the last place of the root of the springs'
 #: distance from their caps (:func:`_root`): Brent's method finds the root to about five of them.
 ROOT_ULPS = 64
+#: The halvings of an event's bracket taken a step (:func:`_halve`): the ``2^TREE_LEVELS − 1`` midpoints they can
+#: visit read at once (a reading's fixed cost, about 0.6 ms on a layer, over three times' 0.1-0.3 ms each; of one to
+#: four levels two measured fastest on the benchmark's Coulomb rows).
+TREE_LEVELS = 2
 #: Brent's iterations before the halvings go on alone (scipy's ``brentq``'s default).
 BRENT_ITERATIONS = 100
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
@@ -280,8 +284,9 @@ def _searched(play: PlaySprings, searches: list) -> list:
 
 
 def _readings(play: PlaySprings, asks: list) -> list[float]:
-    """The value of each ``(reading, time)`` ask, those of one reading read at once."""
+    """The value of each ``(reading, time)`` ask, those of one reading read at once (the radii of all the times too)."""
     out = [0.0] * len(asks)
+    play.remember_radii([time for _, time in asks])
     for reading in _Reading:
         rows = [k for k, (kind, _) in enumerate(asks) if kind is reading]
         if not rows:
@@ -431,17 +436,60 @@ def _brent_step(xpre, xcur, xblk, fpre, fcur, fblk, spre, scur, sbis, delta) -> 
 
 
 def _halve(low: float, high: float, reached):
-    """The bracket of :data:`EVENT_HALVINGS` halvings of ``[low, high]`` (``reached``, a search of
-    :func:`_searched` for a time, false at its low end, true at its high end)."""
-    for _ in range(EVENT_HALVINGS):
-        middle = 0.5 * (low + high)
-        if middle in (low, high):
-            break
-        if (yield from reached(middle)):
-            high = middle
-        else:
-            low = middle
+    """The bracket of :data:`EVENT_HALVINGS` halvings of ``[low, high]`` (``reached``, a search of :func:`_searched`
+    for a time, false at its low end, true at its high end), :data:`TREE_LEVELS` halvings a step: every midpoint the
+    next ones can visit asked at once (:func:`_answers`), then the halvings walked through their answers (the bracket
+    of halving one at a time, bit for bit)."""
+    done = 0
+    while done < EVENT_HALVINGS:
+        levels = min(TREE_LEVELS, EVENT_HALVINGS - done)
+        answers = yield from _answers(reached, _tree(low, high, levels))
+        for _ in range(levels):
+            middle = 0.5 * (low + high)
+            if middle in (low, high):
+                return low, high
+            if answers[middle]:
+                high = middle
+            else:
+                low = middle
+        done += levels
     return low, high
+
+
+def _tree(low: float, high: float, levels: int) -> list[float]:
+    """The midpoints ``levels`` halvings of ``[low, high]`` can visit (none of a bracket with no double inside)."""
+    out, brackets = [], [(low, high)]
+    for _ in range(levels):
+        following = []
+        for below, above in brackets:
+            middle = 0.5 * (below + above)
+            if middle not in (below, above):
+                out.append(middle)
+                following += [(below, middle), (middle, above)]
+        brackets = following
+    return out
+
+
+def _answers(reached, times: list[float]):
+    """``reached`` at each of ``times`` (a search of :func:`_searched`): every time's asks of a step asked together."""
+    answers, pending = {}, []
+
+    def advance(time: float, search, values) -> None:
+        try:
+            pending.append((time, search, search.send(values)))
+        except StopIteration as stop:
+            answers[time] = stop.value
+
+    for time in times:
+        advance(time, reached(time), None)
+    while pending:
+        asked, pending = pending, []
+        values = yield tuple(ask for _, _, asks in asked for ask in asks)
+        first = 0
+        for time, search, asks in asked:
+            advance(time, search, tuple(values[first:first + len(asks)]))
+            first += len(asks)
+    return answers
 
 
 def _guess(play: PlaySprings, time: float) -> float:

@@ -307,6 +307,8 @@ class PlaySprings:
         #: ``d = g(ξ)`` the rounding of ``d − g`` would flip it from spring to spring
         self._pressed_round_off = PRESSED_ROUND_OFF * float(np.max(np.abs(self._corner_d)))
         self.chain = self._chain()
+        #: whether springs have clamp times of their own (:meth:`_columns`; else :meth:`_shared_clamps`)
+        self._own_columns = bool(self.history.adhesive or self.chain.convex.size)
         #: the path's largest ``|x|`` (m): the scale of the anchors' round-off
         self._x_scale = float(np.max(np.abs(self._corner_x)))
 
@@ -398,6 +400,24 @@ class PlaySprings:
             return np.empty((n, 0)), np.empty((n, 0)), np.empty(0, bool)
         return np.stack(times, axis=1), np.stack(shifts, axis=1), np.array(crossing)
 
+    def _shared_clamps(self, anchor, label, g, ratio, start, t):
+        """The clamps of :meth:`_columns` where no spring has times of its own (without adhesion, ``ū(a(t))`` concave
+        on every piece): the shared times, in order for every spring, a column at a time (their codes and arithmetic
+        those of the columns' sorted clamps)."""
+        jumps = {time: (before, after) for time, before, after in self.history.jumps}
+        column = 0
+        for time in self.chain.times.tolist():
+            for radius in jumps.get(time, (None,)):
+                live = (time < t) & (time > start)
+                if np.any(live):
+                    pressed = self._d(time) - g
+                    cap = self._shift_at(time, radius) + ratio * np.maximum(pressed, 0.0)
+                    x = self._x(time)
+                    codes = _COLUMN_CODES + 6 * column + 3 * (pressed > self._pressed_round_off)
+                    anchor, label = _clamp(anchor, label, x - cap, x + cap, live, codes)
+                column += 1
+        return anchor, label
+
     def _own_shifts(self, columns: list[np.ndarray], n: int) -> list[np.ndarray]:
         """``ū`` at each spring's own clamp times (0 where ``nan``), the radii of all read in one call of the
         history."""
@@ -462,8 +482,10 @@ class PlaySprings:
                                f"radius's history up to t={t!r} s (in contact at t: within [0, {self.radius(t)!r}) "
                                "m?): a bug to report")
         anchor, label = self._x(start), _ATTACHED + 3 * (code + 2)
-        times, shifts, crossing = self._columns(xi, g, ratio, start, t)
-        if times.shape[1]:
+        times, shifts, crossing = self._columns(xi, g, ratio, start, t) if self._own_columns else (np.empty((0, 0)),) * 3
+        if not self._own_columns:
+            anchor, label = self._shared_clamps(anchor, label, g, ratio, start, t)
+        elif times.shape[1]:
             order = np.argsort(times, axis=1, kind="stable")
             rows = np.arange(xi.size)[:, None]
             when, shift = times[rows, order], shifts[rows, order]
