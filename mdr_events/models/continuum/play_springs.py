@@ -307,8 +307,9 @@ class PlaySprings:
         #: ``d = g(ξ)`` the rounding of ``d − g`` would flip it from spring to spring
         self._pressed_round_off = PRESSED_ROUND_OFF * float(np.max(np.abs(self._corner_d)))
         self.chain = self._chain()
-        #: whether springs have clamp times of their own (:meth:`_columns`; else :meth:`_shared_clamps`)
-        self._own_columns = bool(self.history.adhesive or self.chain.convex.size)
+        #: whether springs have extremes of their own among their clamp times (:meth:`_columns`; else
+        #: :meth:`_shared_clamps`)
+        self._own_columns = bool(self.chain.convex.size)
         #: the path's largest ``|x|`` (m): the scale of the anchors' round-off
         self._x_scale = float(np.max(np.abs(self._corner_x)))
 
@@ -401,12 +402,30 @@ class PlaySprings:
         return np.stack(times, axis=1), np.stack(shifts, axis=1), np.array(crossing)
 
     def _shared_clamps(self, anchor, label, g, ratio, start, t):
-        """The clamps of :meth:`_columns` where no spring has times of its own (without adhesion, ``ū(a(t))`` concave
-        on every piece): the shared times, in order for every spring, a column at a time (their codes and arithmetic
-        those of the columns' sorted clamps)."""
+        """The clamps of :meth:`_columns` where no spring has extremes of its own (``ū(a(t))`` concave on every piece):
+        the shared times a column at a time, in order for every spring, and with adhesion each spring's crossings of
+        ``d = g(ξ)`` (one per segment, inside it) before the first shared time after them (ties: the shared first);
+        the order, codes and arithmetic of the columns' sorted clamps."""
         jumps = {time: (before, after) for time, before, after in self.history.jumps}
+        crossings = [np.where(column < t, column, np.nan) for column in self._crossings(g)] \
+            if self.history.adhesive else []
+        shifts = self._own_shifts(crossings, g.size)
+        first = sum(len(jumps.get(time, (None,))) for time in self.chain.times.tolist())
+        pending = [np.isfinite(column) & (column > start) for column in crossings]
+
+        def cross(anchor, label, before: float):
+            for j, column in enumerate(crossings):
+                due = pending[j] & (column < before)
+                if np.any(due):
+                    x, cap = self._x(column), shifts[j] + ratio * np.maximum(0.0, 0.0)
+                    anchor, label = _clamp(anchor, label, x - cap, x + cap, due, np.full(g.shape, _COLUMN_CODES
+                                                                                       + 6 * (first + j)))
+                    pending[j] = pending[j] & ~due
+            return anchor, label
+
         column = 0
         for time in self.chain.times.tolist():
+            anchor, label = cross(anchor, label, time)
             for radius in jumps.get(time, (None,)):
                 live = (time < t) & (time > start)
                 if np.any(live):
@@ -416,7 +435,7 @@ class PlaySprings:
                     codes = _COLUMN_CODES + 6 * column + 3 * (pressed > self._pressed_round_off)
                     anchor, label = _clamp(anchor, label, x - cap, x + cap, live, codes)
                 column += 1
-        return anchor, label
+        return cross(anchor, label, np.inf)
 
     def _own_shifts(self, columns: list[np.ndarray], n: int) -> list[np.ndarray]:
         """``ū`` at each spring's own clamp times (0 where ``nan``), the radii of all read in one call of the
