@@ -249,7 +249,7 @@ class _Reading(Enum):
 
     #: the share at a cap (:func:`_share`)
     SHARE = "share"
-    #: the share without the kink search (:func:`_guess`)
+    #: the share without the kink search (:func:`_share` without ``kinks``)
     GUESS = "guess"
     #: the largest distance outside the windows, at the nodes and :data:`PROBE_POINTS` probes (:func:`_root`)
     ONSET = "onset"
@@ -336,7 +336,7 @@ def _distances(play: PlaySprings, times: np.ndarray, onset: bool) -> np.ndarray:
 def _bisect(low: float, high: float, reached, onset: bool):
     """The first time in ``(low, high]`` the share at a cap (:func:`_share`) is ``reached`` (``onset``: the slip onset's
     test, else full slip's), to :data:`EVENT_HALVINGS` halvings (a search of :func:`_searched`). Bisected on the share
-    without the kink search (:func:`_guess`), which is evaluated only within :data:`ROOT_ULPS` of the root of the
+    without the kink search (:func:`_share` without ``kinks``), which is evaluated only within :data:`ROOT_ULPS` of the root of the
     springs' distance from their caps (:func:`_root`; the other halvings decided by it), then the bracket found checked
     on the share itself; where it is not the share's own, bisected on the guess at every halving and checked again,
     else on the share (the halvings on the far side of a bracket's end it was not reached at, or was, decided by it).
@@ -367,7 +367,7 @@ def _bisect(low: float, high: float, reached, onset: bool):
 
 
 def _root(low: float, high: float, onset: bool):
-    """Where, between ``low`` and ``high``, the first spring :func:`_guess` reads reaches its cap (``onset``) or the
+    """Where, between ``low`` and ``high``, the first spring the share without the kink search reads reaches its cap (``onset``) or the
     last one does, by Brent's method (:func:`_brent`) on the largest or least distance outside the windows
     (:func:`_distances`): ``None`` where it is not positive at ``high``; where it is not negative at ``low``, from
     :data:`ROOT_ULPS` after it on, and where it is not negative there either, the slip onset at ``low``."""
@@ -492,11 +492,6 @@ def _answers(reached, times: list[float]):
     return answers
 
 
-def _guess(play: PlaySprings, time: float) -> float:
-    """:func:`_share` on the quadrature's nodes without the kink search (:meth:`PlaySprings.state`)."""
-    return _share(play, time, kinks=False)
-
-
 def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Event:
     """The event at ``time`` (path clock); direction: the cap its springs are at (+1 the lower, ``x − c``: pushed
     towards ``+x``; −1 the upper), the more covered of the two at the probes of :func:`_share` (the compressed
@@ -520,7 +515,8 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
     out, duration = {}, path.duration
     corners = path.corner_times - start
     corners = corners[(corners > times[0]) & (corners < times[-1])]
-    at_corners = np.array([play.state(float(time) + start)[0] for time in corners])
+    at_corners = np.array([state.force for state in play.probed_states(corners + start, np.empty(0),
+                                                                          np.empty(0, dtype=np.intp))[0]])
     order = np.argsort(np.concatenate([times, corners]), kind="stable")
     times, force = np.concatenate([times, corners])[order], np.concatenate([force, at_corners])[order]
     for kind, sign in (("max", 1.0), ("min", -1.0)):
