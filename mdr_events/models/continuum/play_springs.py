@@ -843,7 +843,7 @@ class PlaySprings:
         return 0.5 * (low + high)
 
     def tangential_force(self, times) -> np.ndarray:
-        """``F_x`` (N) at ``times`` (s, path clock).
+        """``F_x`` (N) at ``times`` (s, path clock), all of them at once (:meth:`probed_states`).
 
         Parameters
         ----------
@@ -855,7 +855,10 @@ class PlaySprings:
         numpy.ndarray
             The forces.
         """
-        return np.array([self.state(float(t))[0] for t in np.atleast_1d(times)])
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        self.remember_radii(times)
+        states = self.probed_states(times, np.empty(0), np.empty(0, dtype=np.intp))[0]
+        return np.array([state.force for state in states])
 
 
 def _on_edge(anchor, lower, upper, round_off: float, pressed) -> np.ndarray:
