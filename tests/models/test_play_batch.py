@@ -126,13 +126,13 @@ ROOTS = [(lambda t: t ** 3 - 2.0 * t - 5.0, 2.0, 3.0), (lambda t: math.exp(40.0 
 @pytest.mark.parametrize("function,low,high", ROOTS)
 def test_brent_is_scipy_s_brentq(function, low, high):
     """The generator's root is scipy's ``brentq``'s at the route's tolerances, bit for bit (the events' guess is read
-    within ``ROOT_ULPS`` of it), and none where ``brentq`` does not converge (the flat fifth power at an ulp of 0.9)."""
-    try:
-        expected = brentq(function, low, high, xtol=np.spacing(high), rtol=4.0 * np.finfo(float).eps)
-    except RuntimeError:  # (the route's old call caught it: the halvings alone then)
-        expected = None
-    got, _ = answered(play_run._brent(play_run._Reading.LAST, low, high, function(low), function(high)), function)
-    assert got == expected
+    within ``ROOT_ULPS`` of it), after as many readings (step for step), and none where ``brentq`` does not converge
+    (the flat fifth power at an ulp of 0.9: the route's old call caught its error, the halvings alone then)."""
+    root, result = brentq(function, low, high, xtol=np.spacing(high), rtol=4.0 * np.finfo(float).eps,
+                          full_output=True, disp=False)
+    got, asked = answered(play_run._brent(play_run._Reading.LAST, low, high, function(low), function(high)), function)
+    assert got == (root if result.converged else None)
+    assert asked + 2 == result.function_calls  # (the two ends' values given)
 
 
 def test_brent_gives_up_where_brentq_raises():
