@@ -1,7 +1,7 @@
 """The per-spring route read at many times at once (issue 34's performance): Coulomb's part on a layer reads its
 output times, the probes of its events' searches and the corners of its ``F_x`` extrema in batches
-(``PlaySprings.probed_states``, ``PlaySprings.outsides``), searches its events side by side (``play_run._searched``),
-two halvings a step (``play_run._halve``) and Brent's method as a generator (``play_run._brent``), and clamps the
+(``PlaySprings.probed_states``, ``PlaySprings.outsides``), searches its events side by side (``play_search.searched``),
+two halvings a step (``play_search.halve``) and Brent's method as a generator (``play_search.brent``), and clamps the
 shared times a column at a time (``PlaySprings._shared_clamps``). Each must give what the route read one time, one
 search, one halving and one sorted column at a time gave, bit for bit: no tolerance is derived because none is
 spent (the readings are spring by spring, the edges' round-off read per time, Brent's steps scipy's own).
@@ -17,7 +17,7 @@ import pytest
 from scipy.optimize import brentq
 
 import mdr_events as me
-from mdr_events.models.continuum import play_run
+from mdr_events.models.continuum import play_run, play_search
 from mdr_events.models.continuum.play_springs import PlaySprings
 
 #: The paper's 5 mm layer on a bonded base.
@@ -106,7 +106,7 @@ def test_the_shared_clamps_are_the_sorted_columns_clamps(case, monkeypatch):
 
 
 def answered(search, reading):
-    """Run one search of ``play_run._searched`` answering each ask ``(kind, time)`` with ``reading(time)``; its
+    """Run one search of ``play_search.searched`` alone, answering each ask ``(kind, time)`` with ``reading(time)``; its
     result and the number of readings."""
     values, asked = None, 0
     while True:
@@ -130,20 +130,32 @@ def test_brent_is_scipy_s_brentq(function, low, high):
     (the flat fifth power at an ulp of 0.9: the route's old call caught its error, the halvings alone then)."""
     root, result = brentq(function, low, high, xtol=np.spacing(high), rtol=4.0 * np.finfo(float).eps,
                           full_output=True, disp=False)
-    got, asked = answered(play_run._brent(play_run._Reading.LAST, low, high, function(low), function(high)), function)
+    got, asked = answered(play_search.brent("f", low, high, function(low), function(high)), function)
     assert got == (root if result.converged else None)
     assert asked + 2 == result.function_calls  # (the two ends' values given)
 
 
 def test_brent_gives_up_where_brentq_raises():
     """A value ``nan`` (out of contact) or no change of sign: no root (the halvings alone then)."""
-    assert answered(play_run._brent(play_run._Reading.LAST, 0.0, 1.0, -1.0, 1.0), lambda t: np.nan)[0] is None
-    assert answered(play_run._brent(play_run._Reading.LAST, 0.0, 1.0, 1.0, 2.0), lambda t: 1.0)[0] is None
+    assert answered(play_search.brent("f", 0.0, 1.0, -1.0, 1.0), lambda t: np.nan)[0] is None
+    assert answered(play_search.brent("f", 0.0, 1.0, 1.0, 2.0), lambda t: 1.0)[0] is None
+
+
+def test_searches_side_by_side_are_each_one_s_own():
+    """Every function's Brent search run side by side with the others (each step's asks read together, the readings
+    told apart by their kind) finds the root it finds alone."""
+    functions = {str(k): function for k, (function, _, _) in enumerate(ROOTS)}
+    searches = [play_search.brent(str(k), low, high, function(low), function(high))
+                for k, (function, low, high) in enumerate(ROOTS)]
+    together = play_search.searched(lambda asks: [functions[kind](time) for kind, time in asks], searches)
+    alone = [answered(play_search.brent("f", low, high, function(low), function(high)), function)[0]
+             for function, low, high in ROOTS]
+    assert together == alone
 
 
 def halved(low: float, high: float, reached) -> tuple[float, float]:
     """Halving one at a time (the route's bisection before it took two a step)."""
-    for _ in range(play_run.EVENT_HALVINGS):
+    for _ in range(play_search.EVENT_HALVINGS):
         middle = 0.5 * (low + high)
         if middle in (low, high):
             break
@@ -164,17 +176,17 @@ PREDICATES = [lambda t: t > 0.123456789, lambda t: math.sin(40.0 / (t + 0.01)) >
 def test_the_tree_of_halvings_is_one_halving_at_a_time(reached, levels, monkeypatch):
     """The halvings taken ``levels`` a step, every midpoint they can visit asked at once, walk to the bracket of
     halving one at a time, also where the predicate changes more than once; with fewer steps than halvings."""
-    monkeypatch.setattr(play_run, "TREE_LEVELS", levels)
+    monkeypatch.setattr(play_search, "TREE_LEVELS", levels)
 
     def search(time):
-        return reached((yield ((play_run._Reading.GUESS, time),))[0])
+        return reached((yield (("f", time),))[0])
 
     steps = []
 
     def reading(time):
         return time
 
-    halving = play_run._halve(0.0, 1.0, search)
+    halving = play_search.halve(0.0, 1.0, search)
     values = None
     while True:
         try:
@@ -185,4 +197,4 @@ def test_the_tree_of_halvings_is_one_halving_at_a_time(reached, levels, monkeypa
         steps.append(len(asks))
         values = tuple(reading(time) for _, time in asks)
     assert got == halved(0.0, 1.0, reached)
-    assert len(steps) <= -(-play_run.EVENT_HALVINGS // levels)
+    assert len(steps) <= -(-play_search.EVENT_HALVINGS // levels)

@@ -12,11 +12,17 @@ piece and its end, the centre and the edge probed beside the quadrature's nodes,
 :data:`EVENT_HALVINGS`) and full slip (every spring at a cap, found the same way). A re-stick where a level turns
 back without a reversal of ``x``, and a zone that opens and closes between two output times, are not logged. The
 extrema of ``F_x`` are the largest and least sample refined by bounded minimisation between its neighbours.
+
+The output times are read at once (:func:`_probed_all`, :meth:`~.play_springs.PlaySprings.probed_states`), and the
+events of all the pieces are searched side by side (:func:`~.play_search.searched`): each search a generator that yields the
+readings it needs (the share, the share without the kink search, the springs' distance outside their windows) and is
+sent their values, every step's readings of all the searches read in one batch (:mod:`.play_search`: Brent's method
+scipy's ``brentq`` step for step, the halvings taken a few a step). Each event is the one the searches found one at
+a time, reading one time at a time, bit for bit.
 """
 
 from __future__ import annotations
 
-import math
 from enum import Enum
 
 import numpy as np
@@ -28,16 +34,15 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.kernel_model import KernelModel
 
 from .extrema import extremum_names, solution_extrema
+from .play_search import EVENT_HALVINGS, brent, halve, searched
 from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, SpringState, spring_line
 from .solve import run_continuum
 from .state import Event, EventKind
 from .tolerances import Tolerances
 
 __all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "PROBE_POINTS",
-           "ROOT_ULPS"]
+           "PROBE_CHUNK", "ROOT_ULPS"]
 
-#: Halvings of an event's bracket between two samples (2^-48 of it: 1e-14 of the spacing).
-EVENT_HALVINGS = 48
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
 #: Where the edge is probed: this share of the radius inside it.
@@ -54,12 +59,6 @@ SMALLEST = 5e-324
 #: The events' bisection evaluates its guess only within this many units in the last place of the root of the springs'
 #: distance from their caps (:func:`_root`): Brent's method finds the root to about five of them.
 ROOT_ULPS = 64
-#: The halvings of an event's bracket taken a step (:func:`_halve`): the ``2^TREE_LEVELS − 1`` midpoints they can
-#: visit read at once (a reading's fixed cost, about 0.6 ms on a layer, over three times' 0.1-0.3 ms each; of one to
-#: four levels two measured fastest on the benchmark's Coulomb rows).
-TREE_LEVELS = 2
-#: Brent's iterations before the halvings go on alone (scipy's ``brentq``'s default).
-BRENT_ITERATIONS = 100
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
 EXTREMUM_XTOL = 1e-12
 #: The springs' events the spans' frictionless run logs and this route replaces.
@@ -149,7 +148,7 @@ def _samples(play: PlaySprings, times: np.ndarray, radius: np.ndarray) -> tuple[
 def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, start: float, events) -> list[Event]:
     """The springs' events (module docstring) on the clock from first contact: in each piece of a contact between
     tangential reversals, a re-stick at its start where springs were at a cap before the reversal, then the first
-    slip onset and full slip (every piece's searched side by side: :func:`_searched`)."""
+    slip onset and full slip (every piece's searched side by side: :func:`~.play_search.searched`)."""
     pieces = _pieces(events)
     lasts = [end if reversal_end(events, end) else end - END_PROBE * (end - begin) for begin, end, _ in pieces]
     asked = [begin + start for begin, _, reversal in pieces if reversal] + [last + start for last in lasts]
@@ -169,7 +168,7 @@ def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, st
             low = probes[k - 1] if k > 0 else begin
             found.append((len(searches), kind))
             searches.append(_bisect(low + start, probes[k] + start, reached, kind is EventKind.SLIP_ONSET))
-    results = _searched(play, searches)
+    results = searched(lambda asks: _readings(play, asks), searches)
     return [_event(play, time if kind is EventKind.RE_STICK else results[time], start, kind) for time, kind in found]
 
 
@@ -257,32 +256,6 @@ class _Reading(Enum):
     LAST = "last"
 
 
-def _searched(play: PlaySprings, searches: list) -> list:
-    """Run the events' searches (generators yielding a tuple of ``(reading, time)`` asks and sent the values) side by
-    side: each step's asks of all of them read at once (:func:`_readings`); their results in their order. Each search
-    reads what it would read alone, bit for bit (the batched readings are their times' own)."""
-    results, asks = [None] * len(searches), {}
-
-    def advance(index: int, values) -> None:
-        try:
-            asks[index] = searches[index].send(values)
-        except StopIteration as stop:
-            results[index] = stop.value
-            asks.pop(index, None)
-
-    for index in range(len(searches)):
-        advance(index, None)
-    while asks:
-        flat = [(index, reading, time) for index, pending in asks.items() for reading, time in pending]
-        values = _readings(play, [(reading, time) for _, reading, time in flat])
-        given: dict[int, list] = {}
-        for (index, _, _), value in zip(flat, values):
-            given.setdefault(index, []).append(value)
-        for index, value in given.items():
-            advance(index, tuple(value))
-    return results
-
-
 def _readings(play: PlaySprings, asks: list) -> list[float]:
     """The value of each ``(reading, time)`` ask, those of one reading read at once (the radii of all the times too)."""
     out = [0.0] * len(asks)
@@ -335,13 +308,13 @@ def _distances(play: PlaySprings, times: np.ndarray, onset: bool) -> np.ndarray:
 
 def _bisect(low: float, high: float, reached, onset: bool):
     """The first time in ``(low, high]`` the share at a cap (:func:`_share`) is ``reached`` (``onset``: the slip onset's
-    test, else full slip's), to :data:`EVENT_HALVINGS` halvings (a search of :func:`_searched`). Bisected on the share
-    without the kink search (:func:`_share` without ``kinks``), which is evaluated only within :data:`ROOT_ULPS` of the root of the
-    springs' distance from their caps (:func:`_root`; the other halvings decided by it), then the bracket found checked
-    on the share itself; where it is not the share's own, bisected on the guess at every halving and checked again,
-    else on the share (the halvings on the far side of a bracket's end it was not reached at, or was, decided by it).
-    Where the share turns once in the bracket, the checked bracket is the one bisection on the share visits (every time
-    either visits lies outside it)."""
+    test, else full slip's), to :data:`EVENT_HALVINGS` halvings (a search of :func:`~.play_search.searched`). Bisected
+    on the share without the kink search (:func:`_share` without ``kinks``), which is evaluated only within
+    :data:`ROOT_ULPS` of the root of the springs' distance from their caps (:func:`_root`; the other halvings decided
+    by it), then the bracket found checked on the share itself; where it is not the share's own, bisected on the guess
+    at every halving and checked again, else on the share (the halvings on the far side of a bracket's end it was not
+    reached at, or was, decided by it). Where the share turns once in the bracket, the checked bracket is the one
+    bisection on the share visits (every time either visits lies outside it)."""
     known = [-np.inf, np.inf]  # (the share not reached up to the first, reached from the second on)
     root = yield from _root(low, high, onset)
 
@@ -357,18 +330,18 @@ def _bisect(low: float, high: float, reached, onset: bool):
         return time >= known[1] or (time > known[0] and reached((yield ((_Reading.SHARE, time),))[0]))
 
     for guess in ([] if root is None else [near_root]) + [by_guess]:
-        bracket = yield from _halve(low, high, guess)
+        bracket = yield from halve(low, high, guess)
         below, above = (reached(value) for value in (yield tuple((_Reading.SHARE, end) for end in bracket)))
         if above and not below:
             return bracket[1]
         known[0] = known[0] if above else max(known[0], bracket[1])
         known[1] = min(known[1], bracket[0]) if below else known[1]
-    return (yield from _halve(low, high, by_share))[1]
+    return (yield from halve(low, high, by_share))[1]
 
 
 def _root(low: float, high: float, onset: bool):
     """Where, between ``low`` and ``high``, the first spring the share without the kink search reads reaches its cap (``onset``) or the
-    last one does, by Brent's method (:func:`_brent`) on the largest or least distance outside the windows
+    last one does, by Brent's method (:func:`~.play_search.brent`) on the largest or least distance outside the windows
     (:func:`_distances`): ``None`` where it is not positive at ``high``; where it is not negative at ``low``, from
     :data:`ROOT_ULPS` after it on, and where it is not negative there either, the slip onset at ``low``."""
     reading = _Reading.ONSET if onset else _Reading.LAST
@@ -382,114 +355,7 @@ def _root(low: float, high: float, onset: bool):
         if not at_low < 0.0:  # (the slip onset as the piece starts, Coulomb's springs at the edge sliding at once;
             return low if onset else None  # checked after)
         low = start
-    return (yield from _brent(reading, low, high, at_low, at_high))
-
-
-def _brent(reading: _Reading, xa: float, xb: float, fa: float, fb: float):
-    """The root of the ``reading`` between ``xa`` and ``xb`` (its values there ``fa`` and ``fb``) by Brent's method,
-    step for step scipy's ``brentq`` (its C code) at ``xtol`` an ulp of ``xb`` and ``rtol`` four epsilons, as a
-    search of :func:`_searched`; ``None`` where a value is ``nan`` (out of contact), the signs do not differ, or it
-    does not converge in :data:`BRENT_ITERATIONS` (the halvings alone then)."""
-    xtol, rtol = float(np.spacing(xb)), 4.0 * float(np.finfo(float).eps)
-    xpre, xcur, fpre, fcur = xa, xb, fa, fb
-    xblk = fblk = spre = scur = 0.0
-    if np.isnan(fpre) or np.isnan(fcur):
-        return None
-    if fpre == 0.0:
-        return xpre
-    if fcur == 0.0:
-        return xcur
-    if math.copysign(1.0, fpre) == math.copysign(1.0, fcur):
-        return None
-    for _ in range(BRENT_ITERATIONS):
-        if fpre != 0.0 and fcur != 0.0 and math.copysign(1.0, fpre) != math.copysign(1.0, fcur):
-            xblk, fblk = xpre, fpre
-            spre = scur = xcur - xpre
-        if abs(fblk) < abs(fcur):
-            xpre, xcur, xblk = xcur, xblk, xcur
-            fpre, fcur, fblk = fcur, fblk, fcur
-        delta = (xtol + rtol * abs(xcur)) / 2.0
-        sbis = (xblk - xcur) / 2.0
-        if fcur == 0.0 or abs(sbis) < delta:
-            return xcur
-        spre, scur = _brent_step(xpre, xcur, xblk, fpre, fcur, fblk, spre, scur, sbis, delta)
-        xpre, fpre = xcur, fcur
-        xcur += scur if abs(scur) > delta else (delta if sbis > 0.0 else -delta)
-        fcur = (yield ((reading, xcur),))[0]
-        if np.isnan(fcur):
-            return None
-    return None
-
-
-def _brent_step(xpre, xcur, xblk, fpre, fcur, fblk, spre, scur, sbis, delta) -> tuple[float, float]:
-    """Brent's next step: the interpolation's or extrapolation's where it is short and good, else the bisection's
-    (scipy's ``brentq``)."""
-    if abs(spre) > delta and abs(fcur) < abs(fpre):
-        if xpre == xblk:  # (interpolate)
-            stry = -fcur * (xcur - xpre) / (fcur - fpre)
-        else:  # (extrapolate)
-            dpre, dblk = (fpre - fcur) / (xpre - xcur), (fblk - fcur) / (xblk - xcur)
-            stry = -fcur * (fblk * dblk - fpre * dpre) / (dblk * dpre * (fblk - fpre))
-        if 2.0 * abs(stry) < min(abs(spre), 3.0 * abs(sbis) - delta):
-            return scur, stry
-    return sbis, sbis
-
-
-def _halve(low: float, high: float, reached):
-    """The bracket of :data:`EVENT_HALVINGS` halvings of ``[low, high]`` (``reached``, a search of :func:`_searched`
-    for a time, false at its low end, true at its high end), :data:`TREE_LEVELS` halvings a step: every midpoint the
-    next ones can visit asked at once (:func:`_answers`), then the halvings walked through their answers (the bracket
-    of halving one at a time, bit for bit)."""
-    done = 0
-    while done < EVENT_HALVINGS:
-        levels = min(TREE_LEVELS, EVENT_HALVINGS - done)
-        answers = yield from _answers(reached, _tree(low, high, levels))
-        for _ in range(levels):
-            middle = 0.5 * (low + high)
-            if middle in (low, high):
-                return low, high
-            if answers[middle]:
-                high = middle
-            else:
-                low = middle
-        done += levels
-    return low, high
-
-
-def _tree(low: float, high: float, levels: int) -> list[float]:
-    """The midpoints ``levels`` halvings of ``[low, high]`` can visit (none of a bracket with no double inside)."""
-    out, brackets = [], [(low, high)]
-    for _ in range(levels):
-        following = []
-        for below, above in brackets:
-            middle = 0.5 * (below + above)
-            if middle not in (below, above):
-                out.append(middle)
-                following += [(below, middle), (middle, above)]
-        brackets = following
-    return out
-
-
-def _answers(reached, times: list[float]):
-    """``reached`` at each of ``times`` (a search of :func:`_searched`): every time's asks of a step asked together."""
-    answers, pending = {}, []
-
-    def advance(time: float, search, values) -> None:
-        try:
-            pending.append((time, search, search.send(values)))
-        except StopIteration as stop:
-            answers[time] = stop.value
-
-    for time in times:
-        advance(time, reached(time), None)
-    while pending:
-        asked, pending = pending, []
-        values = yield tuple(ask for _, _, asks in asked for ask in asks)
-        first = 0
-        for time, search, asks in asked:
-            advance(time, search, tuple(values[first:first + len(asks)]))
-            first += len(asks)
-    return answers
+    return (yield from brent(reading, low, high, at_low, at_high))
 
 
 def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Event:

@@ -31,6 +31,15 @@ is located by bisection on the provenance (:data:`KINK_HALVINGS`), looked for be
 the centre or the edge (:data:`EDGE_SHARE` inside) and the nearest node; not between two springs that lie on the
 same smooth edge of their windows at ``t`` to round-off (:data:`EDGE_ROUND_OFF`: their anchors are that edge whatever
 their provenance). The springs at a cap at ``t`` are those whose last clamp is ``t``'s own.
+
+Many times are read at once (:meth:`PlaySprings.probed_states`, :meth:`PlaySprings.outsides`): every spring carries
+its own time, the panels' ends of all the times lie in one flat array (:class:`_Breaks`, sorted by time, then radius),
+every round of the kink search and every cut of its bisection is one evaluation of the anchors for the springs of all
+the times still searched, and the edges' round-off reads each time's own largest cap; each time's values are those of
+a call at that time alone, bit for bit (a single time is the batch of one). The clamp times are the same columns at
+every time (those at or after it dropped), so a clamp's provenance code does not depend on the times read together;
+where no spring has extremes of its own they are clamped a shared time at a time (:meth:`PlaySprings._shared_clamps`,
+each spring's crossings of ``d = g`` between them), without sorting the columns spring by spring.
 """
 
 from __future__ import annotations
@@ -64,8 +73,8 @@ KINK_HALVINGS = 60
 #: springs lie on their window's edge (one no kink search resolves), and the spring at ``a`` itself attaches at ``t``.
 EDGE_SHARE = 1e-6
 #: Points a kink's bracket is cut into at once (a power of two): 6 halvings a round, about 8 rounds from a node's
-#: spacing to two neighbouring doubles (16 cuts took 12), each evaluation's fixed cost (0.2-0.7 ms on a layer: the
-#: chain's columns, the attachments, the radii at the own clamp times) above its 63 points a bracket (0.4-0.8 us each).
+#: spacing to two neighbouring doubles (16 cuts took 12), each evaluation's fixed cost (0.05-0.2 ms on a layer: the
+#: chain's clamps, the attachments, the springs' values) above its 63 points a bracket (0.3-1.5 us each).
 KINK_CUTS = 64
 #: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
 KINK_ROUNDS = 6
