@@ -319,6 +319,7 @@ class PlaySprings:
         #: whether springs have extremes of their own among their clamp times (:meth:`_columns`; else
         #: :meth:`_shared_clamps`)
         self._own_columns = bool(self.chain.convex.size)
+        self._shared_columns: list | None = None
         #: the path's largest ``|x|`` (m): the scale of the anchors' round-off
         self._x_scale = float(np.max(np.abs(self._corner_x)))
 
@@ -415,11 +416,11 @@ class PlaySprings:
         the shared times a column at a time, in order for every spring, and with adhesion each spring's crossings of
         ``d = g(ξ)`` (one per segment, inside it) before the first shared time after them (ties: the shared first);
         the order, codes and arithmetic of the columns' sorted clamps."""
-        jumps = {time: (before, after) for time, before, after in self.history.jumps}
         crossings = [np.where(column < t, column, np.nan) for column in self._crossings(g)] \
             if self.history.adhesive else []
         shifts = self._own_shifts(crossings, g.size)
-        first = sum(len(jumps.get(time, (None,))) for time in self.chain.times.tolist())
+        shared = self._shared()
+        first = len(shared)
         pending = [np.isfinite(column) & (column > start) for column in crossings]
 
         def cross(anchor, label, before: float):
@@ -432,19 +433,29 @@ class PlaySprings:
                     pending[j] = pending[j] & ~due
             return anchor, label
 
-        column = 0
-        for time in self.chain.times.tolist():
+        latest, earliest = float(np.max(t)), float(np.min(start, initial=np.inf))
+        for column, (time, x, d, shift) in enumerate(shared):
+            if time >= latest:  # (this column and the later ones after every spring's time)
+                break
+            if time <= earliest:  # (before every spring's attachment, and so before its crossings)
+                continue
             anchor, label = cross(anchor, label, time)
-            for radius in jumps.get(time, (None,)):
-                live = (time < t) & (time > start)
-                if np.any(live):
-                    pressed = self._d(time) - g
-                    cap = self._shift_at(time, radius) + ratio * np.maximum(pressed, 0.0)
-                    x = self._x(time)
-                    codes = _COLUMN_CODES + 6 * column + 3 * (pressed > self._pressed_round_off)
-                    anchor, label = _clamp(anchor, label, x - cap, x + cap, live, codes)
-                column += 1
+            live = (time < t) & (time > start)
+            if np.any(live):
+                pressed = d - g
+                cap = shift + ratio * np.maximum(pressed, 0.0)
+                codes = _COLUMN_CODES + 6 * column + 3 * (pressed > self._pressed_round_off)
+                anchor, label = _clamp(anchor, label, x - cap, x + cap, live, codes)
         return cross(anchor, label, np.inf)
+
+    def _shared(self) -> list[tuple[float, float, float, float]]:
+        """The shared clamp columns of :meth:`_columns` in order (a jump's both sides, the earlier first): ``(time, x,
+        d, ū)`` each, read once."""
+        if self._shared_columns is None:
+            jumps = {time: (before, after) for time, before, after in self.history.jumps}
+            self._shared_columns = [(time, self._x(time), self._d(time), self._shift_at(time, radius))
+                                    for time in self.chain.times.tolist() for radius in jumps.get(time, (None,))]
+        return self._shared_columns
 
     def _own_shifts(self, columns: list[np.ndarray], n: int) -> list[np.ndarray]:
         """``ū`` at each spring's own clamp times (0 where ``nan``), the radii of all read in one call of the
