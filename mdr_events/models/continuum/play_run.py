@@ -54,7 +54,7 @@ END_PROBE = 1e-9
 PROBE_POINTS = 1025
 #: The times whose probes (:data:`PROBE_POINTS` each) :func:`_probed_all` reads in one evaluation of the anchors.
 PROBE_CHUNK = 32
-#: The share of a contact whose centre alone is at a cap (:func:`_share`).
+#: The share of a contact whose centre alone is at a cap (:func:`_shares`).
 SMALLEST = 5e-324
 #: The events' bisection evaluates its guess only within this many units in the last place of the root of the springs'
 #: distance from their caps (:func:`_root`): Brent's method finds the root to about five of them.
@@ -134,7 +134,7 @@ def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = 
 
 
 def _samples(play: PlaySprings, times: np.ndarray, radius: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``F_x``, the sliding fraction (length at a cap over ``a``) and the share of :func:`_share` at each time in
+    """``F_x``, the sliding fraction (length at a cap over ``a``) and the share of :func:`_shares` at each time in
     contact (0, nan and 0 elsewhere), all the times at once (:func:`_probed_all`)."""
     force, sliding, shares = np.zeros(times.shape), np.full(times.shape, np.nan), np.zeros(times.shape)
     play.remember_radii(times[radius > 0])
@@ -191,28 +191,9 @@ def _pieces(events) -> list[tuple[float, float, bool]]:
     return out
 
 
-def _share(play: PlaySprings, time: float, kinks: bool = True) -> float:
-    """The share of the contact's length at a cap, or the least positive float where only the centre spring or the
-    edge is (a zone opening at ``ξ = 0`` between the quadrature's nodes: the slip onset of scenario A). Under
-    Coulomb's law alone the compressed zone's (its springs in tension hold no shift: they slide from the start, and
-    the slip events are the compressed zone's, as the spans log them). Without ``kinks`` the quadrature's panels are
-    not split at the anchors' kinks (:meth:`~.play_springs.PlaySprings.state`)."""
-    a = play.radius(time)
-    if not a > 0:
-        return 0.0
-    return _probed(play, time, a, kinks)[1]
-
-
-def _probed(play: PlaySprings, time: float, a: float, kinks: bool = True) -> tuple[SpringState, float]:
-    """The springs' state at ``time`` (its radius ``a > 0``) and their share at a cap with the centre and the edge
-    probed (:func:`_share`, :func:`_probed_all`)."""
-    states, shares = _probed_all(play, np.array([time]), kinks)
-    return states[0], float(shares[0])
-
-
 def _probed_all(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> tuple[list[SpringState], np.ndarray]:
     """The springs' state at each of ``times`` (all in contact) and their share at a cap with the centre and the edge
-    probed (:func:`_share`): the centre and the edge read with the quadrature's nodes, the other probes where none is
+    probed (:func:`_shares`): the centre and the edge read with the quadrature's nodes, the other probes where none is
     at a cap; the states of all the times in one call (:meth:`~.play_springs.PlaySprings.probed_states`), the other
     probes of all the times where they are read in a few (:data:`PROBE_CHUNK`)."""
     times = [float(time) for time in times]
@@ -246,9 +227,9 @@ def _probed_all(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> tup
 class _Reading(Enum):
     """What an event's search asks at a time (:func:`_readings`)."""
 
-    #: the share at a cap (:func:`_share`)
+    #: the share at a cap (:func:`_shares`)
     SHARE = "share"
-    #: the share without the kink search (:func:`_share` without ``kinks``)
+    #: the share without the kink search (:func:`_shares` without ``kinks``)
     GUESS = "guess"
     #: the largest distance outside the windows, at the nodes and :data:`PROBE_POINTS` probes (:func:`_root`)
     ONSET = "onset"
@@ -275,7 +256,12 @@ def _readings(play: PlaySprings, asks: list) -> list[float]:
 
 
 def _shares(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> np.ndarray:
-    """:func:`_share` at each of ``times``, at once (:func:`_probed_all`)."""
+    """The share of the contact's length at a cap at each of ``times``, or the least positive float where only the
+    centre spring or the edge is (a zone opening at ``ξ = 0`` between the quadrature's nodes: the slip onset of
+    scenario A); 0 out of contact. Under Coulomb's law alone the compressed zone's (its springs in tension hold no
+    shift: they slide from the start, and the slip events are the compressed zone's, as the spans log them). Without
+    ``kinks`` the quadrature's panels are not split at the anchors' kinks (:meth:`~.play_springs.PlaySprings.state`).
+    All the times at once (:func:`_probed_all`)."""
     out = np.zeros(times.shape)
     inside = np.array([play.radius(float(time)) > 0 for time in times], dtype=bool)
     if np.any(inside):
@@ -307,9 +293,9 @@ def _distances(play: PlaySprings, times: np.ndarray, onset: bool) -> np.ndarray:
 
 
 def _bisect(low: float, high: float, reached, onset: bool):
-    """The first time in ``(low, high]`` the share at a cap (:func:`_share`) is ``reached`` (``onset``: the slip onset's
+    """The first time in ``(low, high]`` the share at a cap (:func:`_shares`) is ``reached`` (``onset``: the slip onset's
     test, else full slip's), to :data:`EVENT_HALVINGS` halvings (a search of :func:`~.play_search.searched`). Bisected
-    on the share without the kink search (:func:`_share` without ``kinks``), which is evaluated only within
+    on the share without the kink search (:func:`_shares` without ``kinks``), which is evaluated only within
     :data:`ROOT_ULPS` of the root of the springs' distance from their caps (:func:`_root`; the other halvings decided
     by it), then the bracket found checked on the share itself; where it is not the share's own, bisected on the guess
     at every halving and checked again, else on the share (the halvings on the far side of a bracket's end it was not
@@ -360,7 +346,7 @@ def _root(low: float, high: float, onset: bool):
 
 def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Event:
     """The event at ``time`` (path clock); direction: the cap its springs are at (+1 the lower, ``x − c``: pushed
-    towards ``+x``; −1 the upper), the more covered of the two at the probes of :func:`_share` (the compressed
+    towards ``+x``; −1 the upper), the more covered of the two at the probes of :func:`_shares` (the compressed
     springs under Coulomb's law alone), or where no probe is at a cap on the quadrature's nodes
     (:meth:`~.play_springs.PlaySprings.cap_sides`: a zone narrower than the probes' spacing)."""
     a = play.radius(time)
