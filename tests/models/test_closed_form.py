@@ -139,3 +139,19 @@ def test_the_work_over_closed_spans_is_the_tight_quadrature_s(case, monkeypatch)
         patch.setattr(SpanIntegrator, "closed_form", False)
         tight = tangential_work(solve_path(params, path, tolerances=me.Tolerances(rtol=1e-13, atol=1e-22), **options))
     assert abs(closed - tight) <= WORK_RTOL * abs(tight), (closed, tight)
+
+
+@pytest.mark.parametrize("coefficient", ["A0", "C"])
+def test_a_force_in_closed_form_that_is_not_finite_fails_as_the_quadrature_does(coefficient, monkeypatch):
+    """A primitive whose value is not finite (a coefficient NaN: what a branch's closed form that overflows gives)
+    ends the run with the quadrature's error (a ``RuntimeError`` naming the span), not with a NaN force passed on."""
+    params, path, options = CASES["A 20°"]()
+    original = SpanIntegrator.primitive
+
+    def broken(integrator):
+        primitive = original(integrator)
+        return None if primitive is None else primitive._replace(**{coefficient: float("nan")})
+
+    monkeypatch.setattr(SpanIntegrator, "primitive", broken)
+    with pytest.raises(RuntimeError, match="not finite"):
+        solve_path(params, path, **options)

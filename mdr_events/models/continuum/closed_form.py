@@ -23,6 +23,7 @@ solves them. ``tests/models/test_closed_form.py`` compares the closed form with 
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -237,9 +238,21 @@ def closed_span(primitive: Primitive, start: float, stop: float, force: float, G
             t_events[index].append(root)
             inside = [read for read in readings if (start < read < root if ascending else root < read < start)]
             ended = ClosedForce(primitive, start, force, G2, scale, [start, *inside, root])
-            return Marched(1, "", ended, t_events, ended.at(root))
+            return _checked(Marched(1, "", ended, t_events, ended.at(root)))
         g, low = g_new, var
-    return Marched(0, "", whole, t_events, whole.at(stop))
+    return _checked(Marched(0, "", whole, t_events, whole.at(stop)))
+
+
+def _checked(marched: Marched) -> Marched:
+    """``marched``, or the quadrature's failure (status -1, no dense output: :func:`~.integrate.integrate_span` raises
+    it) where the force is not finite at a breakpoint of the span (a NaN or an infinity of the branch's closed forms
+    would be passed on as the span's force, where the quadrature's panels shrink and fail)."""
+    finite = np.isfinite(marched.sol(marched.sol.ts)[0])
+    if math.isfinite(marched.y) and bool(finite.all()):
+        return marched
+    where = marched.sol.ts[int(np.argmin(finite))] if not finite.all() else marched.sol.ts[-1]
+    return Marched(-1, f"the force in closed form is not finite at {where!r} (F_x = {marched.y!r} at the end)", None,
+                   marched.t_events, marched.y)
 
 
 def _UNREAD(var: float) -> None:
