@@ -223,14 +223,17 @@ class TabulatedBranch:
         Parameters
         ----------
         a : float
-            The radius (m), within the table.
+            The radius (m); one past the table is clipped to its end, as :meth:`depths` clips it.
 
         Returns
         -------
         float
             The depth (m); 0 at ``a <= 0``.
         """
-        return self.shape.scalar_g(a) - self.k * math.sqrt(a) if a > 0 else 0.0
+        if not a > 0:
+            return 0.0
+        a = min(a, self.shape.x_max)
+        return self.shape.scalar_g(a) - self.k * math.sqrt(a)
 
     def depths(self, a: np.ndarray) -> np.ndarray:
         """The branch's depths at the radii ``a``, vectorised.
@@ -272,14 +275,18 @@ class TabulatedBranch:
         Parameters
         ----------
         a : float
-            The radius (m).
+            The radius (m); one past the table is clipped to its end, as :meth:`depths` and
+            :meth:`~mdr_events.models.continuum.branch.TabulatedBranch.integrals` clip it.
 
         Returns
         -------
         float
             The integral (m²; 0 at ``a <= 0``).
         """
-        return self.shape.scalar_integral(a) - 2.0 / 3.0 * self.k * a**1.5 if a > 0 else 0.0
+        if not a > 0:
+            return 0.0
+        a = min(a, self.shape.x_max)
+        return self.shape.scalar_integral(a) - 2.0 / 3.0 * self.k * a**1.5
 
     def radius(self, depth: float, rtol: float = RADIUS_RTOL) -> float:
         """The radius above the jump-off at ``depth``; ``nan`` below the jump-off or beyond the table's end.
