@@ -155,3 +155,31 @@ def test_a_force_in_closed_form_that_is_not_finite_fails_as_the_quadrature_does(
     monkeypatch.setattr(SpanIntegrator, "primitive", broken)
     with pytest.raises(RuntimeError, match="not finite"):
         solve_path(params, path, **options)
+
+
+def test_each_interpolant_type_gives_its_stationary_points():
+    """``interpolant_roots`` by the interpolant's type: a force linear in time has none, a closed form's are its
+    ``stationary`` ones (a quadratic force ``P = a²/2 − a/2``: its rate ``a − 1/2`` vanishes at the radius 1/2),
+    a DOP853 step's the roots of its polynomial's derivative; anything else is refused by name."""
+    from scipy.integrate import solve_ivp
+
+    from mdr_events.models.continuum.closed_form import Primitive
+    from mdr_events.models.continuum.span import LinearForce
+    from mdr_events.models.continuum.stationary import interpolant_roots
+
+    assert interpolant_roots(LinearForce(0.0, 1.0, 2.0, 3.0), 0.0, 1.0) == []
+
+    class Flat:  # (a branch whose depth and integral vanish: P is the primitive's polynomial part alone)
+        knots = ()
+
+        def depth(self, a):
+            return 0.0
+
+        integral = slope = depth
+
+    closed = ClosedForce(Primitive(Flat(), Flat(), -0.5, 1.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 1.0, 1.0, [0.0, 1.0])
+    assert interpolant_roots(closed, 0.0, 1.0) == [0.5]
+    dense = solve_ivp(lambda t, y: [t - 0.5], (0.0, 1.0), [0.0], method="DOP853", dense_output=True).sol
+    np.testing.assert_allclose(interpolant_roots(dense, 0.0, 1.0), [0.5], rtol=0, atol=RATE_SHARE)
+    with pytest.raises(TypeError, match="interpolant="):
+        interpolant_roots(object(), 0.0, 1.0)
