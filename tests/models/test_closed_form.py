@@ -183,3 +183,35 @@ def test_each_interpolant_type_gives_its_stationary_points():
     np.testing.assert_allclose(interpolant_roots(dense, 0.0, 1.0), [0.5], rtol=0, atol=RATE_SHARE)
     with pytest.raises(TypeError, match="interpolant="):
         interpolant_roots(object(), 0.0, 1.0)
+
+
+def test_an_event_that_turns_back_between_two_readings_is_found():
+    """The edge's target on a shrinking span of the paper's adhesion (Δγ1 > Δγ0), unloaded back along the loading
+    line: ``cap·level − cap·Y(a) = c − K a + |β| √a`` (``β = cap r0 (k1 − k0)``, ``d0 = d + (k1 − k0) √a``; the
+    ``d`` terms cancel) is concave in the radius. Placed so that it rises through 0 and falls back inside one of the
+    16 parts, between two readings (both negative), the closed form must still find its first root."""
+    from mdr_events.models.continuum.branch import Branch
+    from mdr_events.models.continuum.closed_form import EVENT_READINGS, Primitive, closed_span
+
+    k0, k1 = (np.sqrt(2 * np.pi * work / PAPER.E_star) for work in (PAPER.dgamma0, PAPER.dgamma1))
+    beta = np.tan(np.radians(20.0)) * (k1 - k0)
+    scale, start, stop = 1e-3, 1.0, 0.5
+    step = (start - stop) / EVENT_READINGS
+    peak = start - 7.5 * step  # (the middle of the eighth part)
+    K = beta / (2 * np.sqrt(peak * scale))  # (the turn √a* = |β|/(2K) there)
+    curvature = beta / (4 * (peak * scale) ** 1.5)  # (|d²/da²| at the turn)
+    height = 0.25 * curvature / 2 * (0.5 * step * scale) ** 2  # (positive over a quarter of the part)
+    c = K * peak * scale - beta * np.sqrt(peak * scale) + height
+
+    def event(var, y=None):
+        a = var * scale
+        return c - K * a + beta * np.sqrt(a)
+    event.direction = 1.0
+    readings = np.linspace(start, stop, EVENT_READINGS + 1)
+    assert max(event(var) for var in readings) < 0.0 < event(peak)  # (hidden between two readings)
+    s = (beta + np.sqrt(beta**2 + 4 * K * c)) / (2 * K)  # (the larger root of K s² − |β| s − c: the first met)
+    branch = Branch(PAPER, PAPER.dgamma1)
+    marched = closed_span(Primitive(branch, branch, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), start, stop, 0.0, 1.0, scale, [],
+                          [event])
+    assert marched.status == 1
+    assert marched.t_events[0] == [pytest.approx(s * s / scale, rel=EVENT_RTOL)]
