@@ -317,12 +317,12 @@ class IteratedSamples:
         Parameters
         ----------
         depth : array_like
-            The depths (m).
+            The samples' depths (m).
 
         Returns
         -------
         numpy.ndarray
-            The radii (m), the shape of ``depth``.
+            ``radii(depth)`` (m): no closed form of this branch's own at the samples.
         """
         return self.radii(depth)
 
