@@ -185,11 +185,13 @@ def test_each_interpolant_type_gives_its_stationary_points():
         interpolant_roots(object(), 0.0, 1.0)
 
 
-def test_an_event_that_turns_back_between_two_readings_is_found():
+@pytest.mark.parametrize("part", [0, 1, 7, 15])
+def test_an_event_that_turns_back_between_two_readings_is_found(part):
     """The edge's target on a shrinking span of the paper's adhesion (Δγ1 > Δγ0), unloaded back along the loading
     line: ``cap·level − cap·Y(a) = c − K a + |β| √a`` (``β = cap r0 (k1 − k0)``, ``d0 = d + (k1 − k0) √a``; the
     ``d`` terms cancel) is concave in the radius. Placed so that it rises through 0 and falls back inside one of the
-    16 parts, between two readings (both negative), the closed form must still find its first root."""
+    16 parts, between two readings (both negative), the closed form must still find its first root: in the first part
+    (read with the third reading), the second, the middle and the last."""
     from mdr_events.models.continuum.branch import Branch
     from mdr_events.models.continuum.closed_form import EVENT_READINGS, Primitive, closed_span
 
@@ -197,7 +199,7 @@ def test_an_event_that_turns_back_between_two_readings_is_found():
     beta = np.tan(np.radians(20.0)) * (k1 - k0)
     scale, start, stop = 1e-3, 1.0, 0.5
     step = (start - stop) / EVENT_READINGS
-    peak = start - 7.5 * step  # (the middle of the eighth part)
+    peak = start - (part + 0.5) * step  # (the middle of the part)
     K = beta / (2 * np.sqrt(peak * scale))  # (the turn √a* = |β|/(2K) there)
     curvature = beta / (4 * (peak * scale) ** 1.5)  # (|d²/da²| at the turn)
     height = 0.25 * curvature / 2 * (0.5 * step * scale) ** 2  # (positive over a quarter of the part)

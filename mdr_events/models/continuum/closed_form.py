@@ -244,14 +244,18 @@ def closed_span(primitive: Primitive, start: float, stop: float, force: float, G
     t_events: list[list[float]] = [[] for _ in events]
     directions = [float(getattr(event, "direction", 0.0)) for event in events]
     g, low = [event(start, None) for event in events], start
-    g_old, older = g, None  # (the reading before low, for the curvature over the part)
+    g_old, older = g, None  # (the reading before low: the curvature of the three)
     for var in readings:
         g_new = [event(var, None) for event in events]
         active = [index for index in range(len(events)) if _crossed(g[index], g_new[index], directions[index])]
-        # (an event whose readings show no crossing may turn back between them: read between where it can)
-        hidden = [(index, bracket) for index in range(len(events)) if index not in active
-                  and not (older is not None and _passed(older, low, var, g_old[index], g[index], g_new[index]))
-                  and (bracket := _turn_between(events[index], directions[index], low, var, g[index], g_new[index]))]
+        # (an event whose readings show no crossing may turn back between them: read between where the curvature of
+        # three readings could turn it; the first part's is known at the third reading, or read where one fires)
+        triple = None if older is None else ((older, low, var), (g_old, g, g_new))
+        early = older == start and _hidden(events, directions, (older, low, g_old, g), triple, [])
+        if early:  # (before anything in this part)
+            active, hidden = [], early
+        else:
+            hidden = _hidden(events, directions, (low, var, g, g_new), triple, active) if triple or active else []
         if active or hidden:
             # (the events read the variable alone; the first root in the span's direction, as _first_root orders them)
             found = [_first_root(events, active, _UNREAD, low, var)] if active else []
@@ -265,13 +269,32 @@ def closed_span(primitive: Primitive, start: float, stop: float, force: float, G
     return _checked(Marched(0, "", whole, t_events, whole.at(stop)))
 
 
-def _passed(older: float, low: float, high: float, g_older: float, g_low: float, g_high: float) -> bool:
-    """Whether an event's function cannot turn back between ``low`` and ``high`` by the curvature of its three readings
-    ``older``, ``low``, ``high`` (twice their second divided difference, times :data:`CURVATURE_SAFETY`): it is
-    monotone there or keeps its readings' sign (:func:`_turn_between` without reading the middle)."""
-    left, right = low - older, high - low
-    curvature = 2.0 * abs((g_high - g_low) / right - (g_low - g_older) / left) / abs(high - older)
-    return _clear(g_low, g_high, abs(right), CURVATURE_SAFETY * curvature)
+def _hidden(events: list, directions: list[float], part: tuple, triple: tuple | None,
+            skip: list[int]) -> list[tuple[int, tuple[float, float]]]:
+    """The events but ``skip`` that cross in their direction inside ``part`` (its ends and the events' values there,
+    which show no crossing), each with a bracket of it (:func:`_turn_between`): those that :func:`_clear` does not
+    clear by the curvature of ``triple`` (three readings and the events' values there: :data:`CURVATURE_SAFETY` times
+    twice their second divided difference; ``None``: each read at the middle)."""
+    low, high, g_low, g_high = part
+    found = []
+    if triple is not None:
+        (x0, x1, x2), (g0s, g1s, g2s) = triple
+        inverse0, inverse1 = 1.0 / (x1 - x0), 1.0 / (x2 - x1)
+        # (the curvature's bulge over the part per unit of the second difference, for _clear's bound times width²)
+        reach = 2.0 * CURVATURE_SAFETY * (high - low) ** 2 / abs(x2 - x0)
+    for index in range(len(events)):
+        if index in skip:
+            continue
+        before, after = g_low[index], g_high[index]
+        if triple is not None:
+            bulge = reach * abs((g2s[index] - g1s[index]) * inverse1 - (g1s[index] - g0s[index]) * inverse0)
+            if abs(after - before) > bulge or ((before > 0.0) == (after > 0.0)
+                                               and min(abs(before), abs(after)) > 0.125 * bulge):
+                continue  # (monotone there, or kept to its readings' side: _clear)
+        bracket = _turn_between(events[index], directions[index], low, high, before, after)
+        if bracket:
+            found.append((index, bracket))
+    return found
 
 
 def _clear(g_left: float, g_right: float, width: float, bound: float) -> bool:
@@ -313,13 +336,12 @@ def _turn_between(event, direction: float, low: float, high: float, before: floa
 
 def _checked(marched: Marched) -> Marched:
     """``marched``, or the quadrature's failure (status -1, no dense output: :func:`~.integrate.integrate_span` raises
-    it) where the force is not finite at a breakpoint of the span (a NaN or an infinity of the branch's closed forms
-    would be passed on as the span's force, where the quadrature's panels shrink and fail)."""
-    finite = np.isfinite(marched.sol(marched.sol.ts)[0])
-    if math.isfinite(marched.y) and bool(finite.all()):
+    it) where the force where it ended is not finite (the primitive's value there or at the start: a NaN or an
+    infinity of the branch's closed forms would be passed on as the span's force, where the quadrature's panels
+    shrink and fail)."""
+    if math.isfinite(marched.y):
         return marched
-    where = marched.sol.ts[int(np.argmin(finite))] if not finite.all() else marched.sol.ts[-1]
-    return Marched(-1, f"the force in closed form is not finite at {where!r} (F_x = {marched.y!r} at the end)", None,
+    return Marched(-1, f"the force in closed form is not finite at {marched.sol.ts[-1]!r} (F_x = {marched.y!r})", None,
                    marched.t_events, marched.y)
 
 
