@@ -25,6 +25,7 @@ from __future__ import annotations
 import bisect
 import functools
 import math
+from typing import NamedTuple
 
 import numpy as np
 from scipy import interpolate, optimize
@@ -223,14 +224,17 @@ class TabulatedBranch:
         Parameters
         ----------
         a : float
-            The radius (m), within the table.
+            The radius (m); one past the table is clipped to its end, as :meth:`depths` clips it.
 
         Returns
         -------
         float
             The depth (m); 0 at ``a <= 0``.
         """
-        return self.shape.scalar_g(a) - self.k * math.sqrt(a) if a > 0 else 0.0
+        if not a > 0:
+            return 0.0
+        a = min(a, self.shape.x_max)
+        return self.shape.scalar_g(a) - self.k * math.sqrt(a)
 
     def depths(self, a: np.ndarray) -> np.ndarray:
         """The branch's depths at the radii ``a``, vectorised.
@@ -272,14 +276,18 @@ class TabulatedBranch:
         Parameters
         ----------
         a : float
-            The radius (m).
+            The radius (m); one past the table is clipped to its end, as :meth:`depths` and
+            :meth:`~mdr_events.models.continuum.branch.TabulatedBranch.integrals` clip it.
 
         Returns
         -------
         float
             The integral (m²; 0 at ``a <= 0``).
         """
-        return self.shape.scalar_integral(a) - 2.0 / 3.0 * self.k * a**1.5 if a > 0 else 0.0
+        if not a > 0:
+            return 0.0
+        a = min(a, self.shape.x_max)
+        return self.shape.scalar_integral(a) - 2.0 / 3.0 * self.k * a**1.5
 
     def radius(self, depth: float, rtol: float = RADIUS_RTOL) -> float:
         """The radius above the jump-off at ``depth``; ``nan`` below the jump-off or beyond the table's end.
@@ -384,12 +392,13 @@ class TabulatedBranch:
         start = np.asarray(g.breaks)[index]
         values, rates = np.asarray(g.pieces)[index].T, np.asarray(slope.pieces)[index].T
         out = np.empty(depth.shape)
-        left = np.arange(depth.size)  # the elements still iterating
+        iterating = _Iterating(np.arange(depth.size), a, low, high, start, depth, values, rates)
         with np.errstate(divide="ignore", invalid="ignore"):  # (a step by a zero rate is not taken: np.where)
-            return self._iterate(out, left, a, low, high, start, depth, values, rates, rtol)
+            return self._iterate(out, iterating, rtol)
 
-    def _iterate(self, out, left, a, low, high, start, depth, values, rates, rtol) -> np.ndarray:
-        """The steps of :meth:`_invert_all` (the elements ``left`` still iterating), into ``out``."""
+    def _iterate(self, out: np.ndarray, iterating: _Iterating, rtol: float) -> np.ndarray:
+        """The steps of :meth:`_invert_all` (the elements ``iterating``), into ``out``."""
+        left, a, low, high, start, depth, values, rates = iterating
         for _ in range(MAX_INVERSION_STEPS):
             offset, root = a - start, np.sqrt(a)
             value, rate = np.zeros(a.shape), np.zeros(a.shape)
@@ -412,12 +421,31 @@ class TabulatedBranch:
             a = np.where((low < step) & (step < high), step, 0.5 * (low + high))
             going = ~(exact | converged)
             if not going.all():
-                left, a, low, high, start, depth = (array[going] for array in (left, a, low, high, start, depth))
-                values, rates = values[:, going], rates[:, going]
+                left, a, low, high, start, depth, values, rates = _Iterating(left, a, low, high, start, depth, values,
+                                                                             rates).kept(going)
             if not left.size:
                 return out
         out[left] = a
         return out
+
+
+class _Iterating(NamedTuple):
+    """The elements of :meth:`TabulatedBranch._invert_all` still iterating: their indices in the output, radius,
+    bracket, piece's start and depth (one value each), and their pieces' coefficients of ``g`` and ``g'`` (a column
+    each)."""
+
+    left: np.ndarray
+    a: np.ndarray
+    low: np.ndarray
+    high: np.ndarray
+    start: np.ndarray
+    depth: np.ndarray
+    values: np.ndarray
+    rates: np.ndarray
+
+    def kept(self, going: np.ndarray) -> _Iterating:
+        """The elements where ``going`` is true."""
+        return _Iterating(*(array[going] for array in self[:6]), self.values[:, going], self.rates[:, going])
 
 
 @functools.lru_cache(maxsize=64)

@@ -139,3 +139,81 @@ def test_the_work_over_closed_spans_is_the_tight_quadrature_s(case, monkeypatch)
         patch.setattr(SpanIntegrator, "closed_form", False)
         tight = tangential_work(solve_path(params, path, tolerances=me.Tolerances(rtol=1e-13, atol=1e-22), **options))
     assert abs(closed - tight) <= WORK_RTOL * abs(tight), (closed, tight)
+
+
+@pytest.mark.parametrize("coefficient", ["A0", "C"])
+def test_a_force_in_closed_form_that_is_not_finite_fails_as_the_quadrature_does(coefficient, monkeypatch):
+    """A primitive whose value is not finite (a coefficient NaN: what a branch's closed form that overflows gives)
+    ends the run with the quadrature's error (a ``RuntimeError`` naming the span), not with a NaN force passed on."""
+    params, path, options = CASES["A 20°"]()
+    original = SpanIntegrator.primitive
+
+    def broken(integrator):
+        primitive = original(integrator)
+        return None if primitive is None else primitive._replace(**{coefficient: float("nan")})
+
+    monkeypatch.setattr(SpanIntegrator, "primitive", broken)
+    with pytest.raises(RuntimeError, match="not finite"):
+        solve_path(params, path, **options)
+
+
+def test_each_interpolant_type_gives_its_stationary_points():
+    """``interpolant_roots`` by the interpolant's type: a force linear in time has none, a closed form's are its
+    ``stationary`` ones (a quadratic force ``P = a²/2 − a/2``: its rate ``a − 1/2`` vanishes at the radius 1/2),
+    a DOP853 step's the roots of its polynomial's derivative; anything else is refused by name."""
+    from scipy.integrate import solve_ivp
+
+    from mdr_events.models.continuum.closed_form import Primitive
+    from mdr_events.models.continuum.span import LinearForce
+    from mdr_events.models.continuum.stationary import interpolant_roots
+
+    assert interpolant_roots(LinearForce(0.0, 1.0, 2.0, 3.0), 0.0, 1.0) == []
+
+    class Flat:  # (a branch whose depth and integral vanish: P is the primitive's polynomial part alone)
+        knots = ()
+
+        def depth(self, a):
+            return 0.0
+
+        integral = slope = depth
+
+    closed = ClosedForce(Primitive(Flat(), Flat(), -0.5, 1.0, 0.0, 0.0, 0.0, 0.0), 0.0, 0.0, 1.0, 1.0, [0.0, 1.0])
+    assert interpolant_roots(closed, 0.0, 1.0) == [0.5]
+    dense = solve_ivp(lambda t, y: [t - 0.5], (0.0, 1.0), [0.0], method="DOP853", dense_output=True).sol
+    np.testing.assert_allclose(interpolant_roots(dense, 0.0, 1.0), [0.5], rtol=0, atol=RATE_SHARE)
+    with pytest.raises(TypeError, match="interpolant="):
+        interpolant_roots(object(), 0.0, 1.0)
+
+
+@pytest.mark.parametrize("part", [0, 1, 7, 15])
+def test_an_event_that_turns_back_between_two_readings_is_found(part):
+    """The edge's target on a shrinking span of the paper's adhesion (Δγ1 > Δγ0), unloaded back along the loading
+    line: ``cap·level − cap·Y(a) = c − K a + |β| √a`` (``β = cap r0 (k1 − k0)``, ``d0 = d + (k1 − k0) √a``; the
+    ``d`` terms cancel) is concave in the radius. Placed so that it rises through 0 and falls back inside one of the
+    16 parts, between two readings (both negative), the closed form must still find its first root: in the first part
+    (read with the third reading), the second, the middle and the last."""
+    from mdr_events.models.continuum.branch import Branch
+    from mdr_events.models.continuum.closed_form import EVENT_READINGS, Primitive, closed_span
+
+    k0, k1 = (np.sqrt(2 * np.pi * work / PAPER.E_star) for work in (PAPER.dgamma0, PAPER.dgamma1))
+    beta = np.tan(np.radians(20.0)) * (k1 - k0)
+    scale, start, stop = 1e-3, 1.0, 0.5
+    step = (start - stop) / EVENT_READINGS
+    peak = start - (part + 0.5) * step  # (the middle of the part)
+    K = beta / (2 * np.sqrt(peak * scale))  # (the turn √a* = |β|/(2K) there)
+    curvature = beta / (4 * (peak * scale) ** 1.5)  # (|d²/da²| at the turn)
+    height = 0.25 * curvature / 2 * (0.5 * step * scale) ** 2  # (positive over a quarter of the part)
+    c = K * peak * scale - beta * np.sqrt(peak * scale) + height
+
+    def event(var, y=None):
+        a = var * scale
+        return c - K * a + beta * np.sqrt(a)
+    event.direction = 1.0
+    readings = np.linspace(start, stop, EVENT_READINGS + 1)
+    assert max(event(var) for var in readings) < 0.0 < event(peak)  # (hidden between two readings)
+    s = (beta + np.sqrt(beta**2 + 4 * K * c)) / (2 * K)  # (the larger root of K s² − |β| s − c: the first met)
+    branch = Branch(PAPER, PAPER.dgamma1)
+    marched = closed_span(Primitive(branch, branch, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), start, stop, 0.0, 1.0, scale, [],
+                          [event])
+    assert marched.status == 1
+    assert marched.t_events[0] == [pytest.approx(s * s / scale, rel=EVENT_RTOL)]

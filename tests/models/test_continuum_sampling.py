@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events.models.continuum import AnchorMap, Cap, ContinuumModel, Piece, Tolerances, solve_path
+from continuum_maps import reversing_anchors
+from mdr_events.models.continuum import AnchorMap, Cap, ContinuumModel, Tolerances, solve_path
 from mdr_events.models.continuum.caps import Caps
 from mdr_events.models.continuum.solution import sample_times
 from mdr_events.models.continuum.state import Regime
@@ -56,13 +57,8 @@ def model(paper):
 
 @pytest.fixture(scope="module")
 def anchors(model):
-    """A jump-in plateau, growth at dx/dd = 2, then growth back at dx/dd = −3: constant, rising and falling pieces."""
-    branch = model.grow
-    jump_in = me.analytic.jump_in_radius(model.params, model.params.dgamma0)
-    rising = Piece(jump_in, 3e-3, 0.0, 2.0, branch.depth(jump_in))
-    top = 2.0 * (branch.depth(3e-3) - branch.depth(jump_in))
-    falling = Piece(3e-3, 4e-3, top, -3.0, branch.depth(3e-3))
-    return AnchorMap(branch, RTOL, [Piece(0.0, jump_in, 0.0), rising, falling])
+    """:func:`continuum_maps.reversing_anchors`: constant, rising and falling pieces."""
+    return reversing_anchors(model, RTOL)
 
 
 def instants(anchors: AnchorMap, radii: int = 7, positions: int = 61):

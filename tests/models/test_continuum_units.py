@@ -8,6 +8,7 @@ import pytest
 from scipy import integrate
 
 import mdr_events as me
+from continuum_maps import reversing_anchors
 from mdr_events.models.continuum import (NO_ZONE, ZONE_EVENTS, AnchorMap, Branch, Cap, ContactState, ContinuumModel,
                                          EventKind, Piece, Regime, Segment, Slip, Tolerances, ZoneSummary, kinematics,
                                          lay_out_zones, plan_span, zone_events)
@@ -67,14 +68,8 @@ def test_hertz_branch_is_sqrt_R_d(paper):
 # --- the anchor map ----------------------------------------------------------------------------------
 @pytest.fixture
 def anchors(model):
-    """A jump-in plateau at x = 0, growth at dx/dd = 2 from the jump-in depth, then growth back at
-    dx/dd = −3 (a reversal while growing): a map that is not monotone."""
-    branch = model.grow
-    jump_in = me.analytic.jump_in_radius(model.params, model.params.dgamma0)
-    rising = Piece(jump_in, 3e-3, 0.0, 2.0, branch.depth(jump_in))
-    top = 2.0 * (branch.depth(3e-3) - branch.depth(jump_in))
-    falling = Piece(3e-3, 4e-3, top, -3.0, branch.depth(3e-3))
-    return AnchorMap(branch, RTOL, [Piece(0.0, jump_in, 0.0), rising, falling])
+    """:func:`continuum_maps.reversing_anchors`: constant, rising and falling pieces."""
+    return reversing_anchors(model, RTOL)
 
 
 def fine_grid(anchors, radius, n=400_001):

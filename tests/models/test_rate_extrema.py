@@ -174,3 +174,25 @@ def test_the_samples_and_the_scan_evaluated_together_are_each_alone(runs, name):
         np.testing.assert_array_equal(together[quantity], alone[quantity])
     for part, value in zip(scan, scan_run(shifts)):
         np.testing.assert_array_equal(part, value)
+
+
+@pytest.mark.parametrize("beyond, taken", [(0.5, False), (2.0, True)])
+def test_a_tie_near_zero_is_held_to_the_run_s_rounding_as_the_paper_s(runs, monkeypatch, beyond, taken):
+    """The scan's best near 0 (F_x of scenario A at 20° shifted so that its largest is 1e-30 N): a stationary point
+    better by less than EXTREMUM_TIE of the quantity's largest magnitude along the run is a tie, as
+    ``solution.extremum`` ties its spans' values (``within_tie``); held to ``EXTREMUM_TIE · |value|`` (1e-42 N), as
+    the rate run held it, rounding alone would have moved the extremum."""
+    shifts, scan, _ = runs["A 20°"]
+    at = int(np.argmax(scan.force))
+    force = scan.force - float(scan.force[at]) + 1e-30
+    best, elsewhere = float(force[at]), float(scan.times[at + 1])
+    better = best + beyond * EXTREMUM_TIE * float(np.max(np.abs(force)))
+
+    def stationary(shifts, name, sign, ends):
+        return (elsewhere, better) if name == "tangential_force" and sign < 0 else (np.nan, np.nan)
+    monkeypatch.setattr(rate_run, "_stationary", stationary)
+    found = rate_extrema(shifts, scan._replace(force=force))
+    start = shifts.path.first_contact_time()
+    expected = (better, elsewhere) if taken else (best, float(scan.times[at]))
+    assert (found["tangential_force_max"], found["tangential_force_max_time"] + start) == pytest.approx(expected,
+                                                                                                       rel=1e-15)

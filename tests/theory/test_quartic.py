@@ -79,3 +79,21 @@ def test_below_the_fold_there_is_no_root_and_other_branches_iterate():
     cone = PowerLawBranch(params, params.dgamma0, PowerLaw.cone(0.05))
     depth = np.linspace(cone.jump_off_depth, params.d_max, 11)
     np.testing.assert_array_equal(cone.sample_radii(depth), cone.radii(depth))
+
+
+def test_every_other_indenter_s_samples_are_its_radii():
+    """A table, the flat punch and a layer sample their branch by their own ``radii``, bit for bit (only the
+    paraboloid's closed form differs from its iteration)."""
+    from mdr_events.contact.indenters import FlatPunch, TabulatedProfile
+    from mdr_events.models.continuum.branch import make_branch
+    from mdr_events.models.continuum.media import medium_of
+    params = me.Parameters.paper()
+    r = np.linspace(0.0, 4e-3, 41)
+    contact = me.Contact.paper().replace(h=5e-3)
+    layered = contact.parameters(params.d_max, params.v)
+    branches = [make_branch(params, params.dgamma0, TabulatedProfile(r, r**2 / (2 * params.R))),
+                make_branch(params, params.dgamma0, FlatPunch(1e-3)),
+                medium_of(layered, contact.friction, None, contact.layer).edge(contact.adhesion, layered, None).grow]
+    for branch in branches:
+        depth = np.linspace(branch.jump_off_depth, params.d_max, 11)
+        np.testing.assert_array_equal(branch.sample_radii(depth), branch.radii(depth))

@@ -143,3 +143,25 @@ def test_the_radii_of_an_array_are_the_scalar_radius_bit_for_bit(paper, make, wo
     np.testing.assert_array_equal(radii, expected)
     assert np.isnan(radii[-4:-1]).all() and np.isfinite(radii[:-4]).all()
     assert line.radii(np.float64(depths[7])).shape == () and line.radii(depths[:6].reshape(2, 3)).shape == (2, 3)
+
+
+#: The scalar forms (Horner in Python on the piece) against the array forms (SciPy's PPoly) at one radius: the same
+#: polynomial summed in another order, a few ulp of the value.
+SCALAR_ULPS = 8
+
+
+@pytest.mark.parametrize("work", [0.0, 0.15])
+def test_the_scalar_depth_and_integral_clip_at_the_table_s_end_as_the_array_ones(paper, work):
+    """A radius at and past the table's end: the scalar ``depth`` and ``integral`` are those at the end, as the array
+    forms (``depths``, ``TabulatedBranch.integrals``) clip them (the scalar ones extrapolated the last piece's cubic)."""
+    from mdr_events.models.continuum.branch import make_branch
+    r = np.linspace(0.0, 3e-3, 31)
+    table = TabulatedProfile(r, r**2 / (2 * paper.R))
+    line, branch = tb.branch(table, paper, work), make_branch(paper, work, table)
+    end = line.shape.x_max
+    radii = np.array([end, end * (1 + 1e-9), 1.01 * end, 2 * end])
+    depths, integrals = line.depths(radii), branch.integrals(radii)
+    for a, depth, integral in zip(radii.tolist(), depths, integrals):
+        assert line.depth(a) == line.depth(end) and line.integral(a) == line.integral(end)
+        assert line.depth(a) == pytest.approx(depth, rel=SCALAR_ULPS * np.finfo(float).eps, abs=0)
+        assert line.integral(a) == pytest.approx(integral, rel=SCALAR_ULPS * np.finfo(float).eps, abs=0)

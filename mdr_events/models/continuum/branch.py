@@ -252,7 +252,8 @@ class Branch:
     def sample_radii(self, depth: np.ndarray) -> np.ndarray:
         """:meth:`radii` at a run's samples: on the paraboloid with adhesion, the quartic's root in closed form
         (:func:`mdr_events.theory.quartic.depressed_quartic_root`, a few ulp from :meth:`radii`'s iteration, within
-        the root's conditioning at the fold); any other branch, :meth:`radii` itself.
+        the root's conditioning at the fold); Hertz's, :meth:`radii` itself (a branch of another indenter has its
+        own: :class:`IteratedSamples`).
 
         Parameters
         ----------
@@ -264,7 +265,7 @@ class Branch:
         numpy.ndarray
             The radii (m), the shape of ``depth`` (``nan`` below the jump-off depth).
         """
-        if type(self).radii is not Branch.radii or self.work == 0.0:  # (a power law, a table, Hertz: its own)
+        if self.work == 0.0:  # (Hertz: its own)
             return self.radii(depth)
         depth = np.asarray(depth, dtype=float)
         linear, constant = self._array_coefficients(depth, *self._arguments)[3:]
@@ -305,7 +306,28 @@ class Branch:
         return root * root
 
 
-class PowerLawBranch(Branch):
+class IteratedSamples:
+    """A branch whose radii at a run's samples are its ``radii`` (a mixin before :class:`Branch`, whose
+    :meth:`~Branch.sample_radii` is the paraboloid's quartic in closed form): a power law, the flat punch, a table,
+    a layer."""
+
+    def sample_radii(self, depth: np.ndarray) -> np.ndarray:
+        """``radii`` at a run's samples: the branch's own.
+
+        Parameters
+        ----------
+        depth : array_like
+            The samples' depths (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``radii(depth)`` (m): no closed form of this branch's own at the samples.
+        """
+        return self.radii(depth)
+
+
+class PowerLawBranch(IteratedSamples, Branch):
     """The branch of the power law ``f = c rⁿ`` (:class:`~mdr_events.contact.indenters.PowerLaw`):
     ``d = κ c aⁿ − sqrt(2π a Δγ / E*)`` (:mod:`mdr_events.theory.power_law`); the radius of a depth is the root of
     a convex function of ``s = √a`` above the jump-off (:func:`~mdr_events.theory.power_law.branch_root`)."""
@@ -357,7 +379,7 @@ class PowerLawBranch(Branch):
         return root * root
 
 
-class FlatPunchBranch(Branch):
+class FlatPunchBranch(IteratedSamples, Branch):
     """The flat punch of radius ``R_p`` (:class:`~mdr_events.contact.indenters.FlatPunch`): every spring under it has
     ``g = 0``, so the contact is the punch's whole face from the first touch (``d >= 0``) on and never grows
     beyond it (:meth:`growth_depth` is ``+inf``); its edge springs reach Heß's limit (8) at
@@ -408,7 +430,7 @@ class FlatPunchBranch(Branch):
         return float(power_law.flat_punch_radius(depth, self.profile, self.params, self.work, FOLD_SHARE))
 
 
-class TabulatedBranch(Branch):
+class TabulatedBranch(IteratedSamples, Branch):
     """The branch of a tabulated profile (:class:`~mdr_events.contact.indenters.TabulatedProfile`): ``d = g(a) − sqrt(2π a
     Δγ / E*)`` with ``g`` the table's numerical Abel transform (:mod:`mdr_events.theory.tabulated`); the radius of a
     depth a bracketed root above the jump-off."""

@@ -18,11 +18,20 @@ one whose inner pieces slide.
 
 The span's events are read at :data:`EVENT_READINGS` equal parts of the span and at its knots (where a table's
 ``d`` has a kink; a panel's end is where :mod:`.span_panels` reads them) and solved as :func:`~.span_march.march`
-solves them. ``tests/models/test_closed_form.py`` compares the closed form with the quadrature.
+solves them. Between two readings an event's function may rise through zero and fall back. On a convex branch
+(``d = g − k√a`` with ``g`` convex: the paraboloid, a power law ``n ≥ 1``) the radius is concave in the depth, hence in
+time on a segment, so that a level against a fixed target, ``L(t) − K a(t)`` (``L`` linear), is convex in time; the
+level's rate and the edge's radius are monotone: none of these turns back unseen. The edge's own target is not: its
+springs attached on ``d₀ = d + (k₁ − k₀)√a``, and ``cap·level − cap·Y = L(t) − K a − β √a`` (``β = cap r₀ (k₁ − k₀)``,
+negative where the edge is a target and ``Δγ1 > Δγ0``, the paper's) can be concave (unloading back along the loading
+line: ``c − K a + |β| √a``); nor is a table's ``g`` convex in general. So a part whose readings show no crossing is
+read again in between where the curvature read off its readings could turn the function back (:func:`_turn_between`).
+``tests/models/test_closed_form.py`` compares the closed form with the quadrature, and finds such a turn.
 """
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -41,6 +50,12 @@ STATIONARY_READINGS = 16
 #: Equal parts of a span at whose ends a closed-form span reads its events (besides its knots): as many as the
 #: quadrature's panels on the fronts' spans (``MIN_STEPS_PER_SPAN`` of them at least) twice over
 EVENT_READINGS = 16
+#: The safety factor on the curvature :func:`_turn_between` reads off three points of an event's function (a second
+#: difference: the curvature somewhere between them, not its largest)
+CURVATURE_SAFETY = 4.0
+#: Readings at most between two of a span's readings in :func:`_turn_between` (a turn that hides from 64 halvings is
+#: narrower than a 1e-12 share of the part there, or rounding)
+TURN_READS = 64
 
 
 class Primitive(NamedTuple):
@@ -229,17 +244,105 @@ def closed_span(primitive: Primitive, start: float, stop: float, force: float, G
     t_events: list[list[float]] = [[] for _ in events]
     directions = [float(getattr(event, "direction", 0.0)) for event in events]
     g, low = [event(start, None) for event in events], start
+    g_old, older = g, None  # (the reading before low: the curvature of the three)
     for var in readings:
         g_new = [event(var, None) for event in events]
         active = [index for index in range(len(events)) if _crossed(g[index], g_new[index], directions[index])]
-        if active:
-            index, root = _first_root(events, active, _UNREAD, low, var)  # (the events read the variable alone)
+        # (an event whose readings show no crossing may turn back between them: read between where the curvature of
+        # three readings could turn it; the first part's is known at the third reading, or read where one fires)
+        triple = None if older is None else ((older, low, var), (g_old, g, g_new))
+        early = older == start and _hidden(events, directions, (older, low, g_old, g), triple, [])
+        if early:  # (before anything in this part)
+            active, hidden = [], early
+        else:
+            hidden = _hidden(events, directions, (low, var, g, g_new), triple, active) if triple or active else []
+        if active or hidden:
+            # (the events read the variable alone; the first root in the span's direction, as _first_root orders them)
+            found = [_first_root(events, active, _UNREAD, low, var)] if active else []
+            found += [_first_root(events, [index], _UNREAD, *bracket) for index, bracket in hidden]
+            index, root = min(found, key=lambda pair: pair[1] if ascending else -pair[1])
             t_events[index].append(root)
             inside = [read for read in readings if (start < read < root if ascending else root < read < start)]
             ended = ClosedForce(primitive, start, force, G2, scale, [start, *inside, root])
-            return Marched(1, "", ended, t_events, ended.at(root))
-        g, low = g_new, var
-    return Marched(0, "", whole, t_events, whole.at(stop))
+            return _checked(Marched(1, "", ended, t_events, ended.at(root)))
+        g_old, older, g, low = g, low, g_new, var
+    return _checked(Marched(0, "", whole, t_events, whole.at(stop)))
+
+
+def _hidden(events: list, directions: list[float], part: tuple, triple: tuple | None,
+            skip: list[int]) -> list[tuple[int, tuple[float, float]]]:
+    """The events but ``skip`` that cross in their direction inside ``part`` (its ends and the events' values there,
+    which show no crossing), each with a bracket of it (:func:`_turn_between`): those that :func:`_clear` does not
+    clear by the curvature of ``triple`` (three readings and the events' values there: :data:`CURVATURE_SAFETY` times
+    twice their second divided difference; ``None``: each read at the middle)."""
+    low, high, g_low, g_high = part
+    found = []
+    if triple is not None:
+        (x0, x1, x2), (g0s, g1s, g2s) = triple
+        inverse0, inverse1 = 1.0 / (x1 - x0), 1.0 / (x2 - x1)
+        # (the curvature's bulge over the part per unit of the second difference, for _clear's bound times width²)
+        reach = 2.0 * CURVATURE_SAFETY * (high - low) ** 2 / abs(x2 - x0)
+    for index in range(len(events)):
+        if index in skip:
+            continue
+        before, after = g_low[index], g_high[index]
+        if triple is not None:
+            bulge = reach * abs((g2s[index] - g1s[index]) * inverse1 - (g1s[index] - g0s[index]) * inverse0)
+            if abs(after - before) > bulge or ((before > 0.0) == (after > 0.0)
+                                               and min(abs(before), abs(after)) > 0.125 * bulge):
+                continue  # (monotone there, or kept to its readings' side: _clear)
+        bracket = _turn_between(events[index], directions[index], low, high, before, after)
+        if bracket:
+            found.append((index, bracket))
+    return found
+
+
+def _clear(g_left: float, g_right: float, width: float, bound: float) -> bool:
+    """Whether a function with these values at the ends of an interval ``width`` long, its curvature within ``bound``,
+    neither turns inside (its chord's slope beyond what the curvature can turn, ``bound · width``) nor leaves its
+    ends' sign (their values beyond the curvature's bulge over the chord, ``bound · width²/8``)."""
+    monotone = abs(g_right - g_left) > bound * width * width
+    aside = (g_left > 0.0) == (g_right > 0.0) and min(abs(g_left), abs(g_right)) > bound * width * width / 8.0
+    return monotone or aside
+
+
+def _turn_between(event, direction: float, low: float, high: float, before: float, after: float) -> tuple[float, float] | None:
+    """A bracket inside ``[low, high]`` (two readings whose values ``before`` and ``after`` show no crossing) across
+    which ``event`` crosses zero in its ``direction`` (none: it cannot, by its curvature).
+
+    The event is read at the middle of the interval; each half is passed over where :func:`_clear` clears it by
+    :data:`CURVATURE_SAFETY` times the curvature read off the three points, else read at its own middle, the earlier
+    half first, at most :data:`TURN_READS` readings in all (beyond them the turn is taken to be rounding).
+    """
+    pending = [(low, high, before, after)]
+    for _ in range(TURN_READS):
+        if not pending:
+            return None
+        low, high, before, after = pending.pop()
+        middle = 0.5 * (low + high)
+        value = event(middle, None)
+        if _crossed(before, value, direction):
+            return low, middle
+        if _crossed(value, after, direction):
+            return middle, high
+        half = abs(middle - low)
+        bound = CURVATURE_SAFETY * abs(before - 2.0 * value + after) / (half * half)
+        if not bound < math.inf:  # (a half of no length, to rounding)
+            continue
+        halves = [(low, middle, before, value), (middle, high, value, after)]
+        pending += [piece for piece in reversed(halves) if not _clear(piece[2], piece[3], half, bound)]
+    return None
+
+
+def _checked(marched: Marched) -> Marched:
+    """``marched``, or the quadrature's failure (status -1, no dense output: :func:`~.integrate.integrate_span` raises
+    it) where the force where it ended is not finite (the primitive's value there or at the start: a NaN or an
+    infinity of the branch's closed forms would be passed on as the span's force, where the quadrature's panels
+    shrink and fail)."""
+    if math.isfinite(marched.y):
+        return marched
+    return Marched(-1, f"the force in closed form is not finite at {marched.sol.ts[-1]!r} (F_x = {marched.y!r})", None,
+                   marched.t_events, marched.y)
 
 
 def _UNREAD(var: float) -> None:

@@ -18,9 +18,10 @@ end. The extrema are found on the edge's solver steps (every step's ends and :da
 and refined between the neighbours of the largest or least by the stationary points of each interval's Chebyshev
 interpolant of degree :data:`EXTREMUM_DEGREE` (:func:`~mdr_events.models.continuum.stationary.derivative_roots`, as
 the paper's spans refine theirs): the quantities are smooth within a step. A stationary point better than the scan's
-point by no more than rounding (:data:`~mdr_events.models.continuum.solution.EXTREMUM_TIE` of the value) leaves the
-scan's point, as the paper's extremum keeps the earliest of its ties (a plateau such as ``F_x`` while the springs
-stick).
+point by no more than rounding (:func:`~mdr_events.models.continuum.solution.within_tie`:
+:data:`~mdr_events.models.continuum.solution.EXTREMUM_TIE` of the quantity's largest magnitude along the run) leaves
+the scan's point, as the paper's extremum keeps the earliest of its ties by the same rule (a plateau such as ``F_x``
+while the springs stick).
 """
 
 from __future__ import annotations
@@ -43,7 +44,7 @@ from .extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, VALUE_AFTER_CONTACT, ext
 from .rate_edge import EdgeEventKind
 from .rate_play import RatePlay
 from .rate_shifts import RateShifts, solve_rate_shifts
-from .solution import EXTREMUM_TIE, sample_times
+from .solution import sample_times, within_tie
 from .solve import BYTES_PER_SAMPLE
 from .state import Event, EventKind
 from .stationary import chebyshev_nodes, derivative_roots
@@ -405,6 +406,7 @@ def rate_extrema(shifts: RateShifts, scan: Scan) -> dict[str, float]:
     out = {}
     for name in EXTREMA_QUANTITIES:
         values = scanned[name]
+        size = float(np.fmax.reduce(np.abs(values), initial=0.0))  # (the quantity's largest magnitude: its rounding)
         for kind, largest in EXTREMA_KINDS.items():
             sign = -1.0 if largest else 1.0
             at = int(np.argmin(sign * values))
@@ -412,8 +414,8 @@ def rate_extrema(shifts: RateShifts, scan: Scan) -> dict[str, float]:
             if 0 < at < len(grid) - 1:
                 found_time, found = _stationary(shifts, name, sign, grid[at - 1:at + 2])
                 # (better beyond rounding alone: on a plateau the scan's point stays, as the paper's extremum keeps
-                # the earliest of its ties)
-                if sign * found < sign * value - EXTREMUM_TIE * abs(value):
+                # the earliest of its ties, by the same rule)
+                if sign * found < sign * value and not within_tie(-sign * value, -sign * found, size):
                     time, value = found_time, found
             if ended and sign * VALUE_AFTER_CONTACT < sign * value:
                 time, value = end, VALUE_AFTER_CONTACT

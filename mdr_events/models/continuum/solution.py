@@ -372,6 +372,28 @@ EXTREMUM_QUANTITIES = ("normal_force", "tangential_force", "contact_radius", "co
 EXTREMUM_GRID = 65
 #: Values within this share of the extremum are ties (rounding), of which :func:`extremum` reports the earliest.
 EXTREMUM_TIE = 1e-12
+
+
+def within_tie(value: float, best: float, size: float) -> bool:
+    """Whether ``value`` ties ``best`` to rounding: within :data:`EXTREMUM_TIE` of the quantity's ``size`` along the
+    run (or of ``|best|``, the larger), so that a value near 0 is held to its run's rounding, not to its own. The one
+    rule of :func:`extremum` (the earliest of the spans' ties) and of the rate run's refinement
+    (:func:`~mdr_events.models.continuum.rate_run.rate_extrema`: a stationary point that the scan's point ties leaves
+    the scan's point).
+
+    Parameters
+    ----------
+    value, best : float
+        The value and the best one, signed so that larger is better.
+    size : float
+        The quantity's largest magnitude along the run.
+
+    Returns
+    -------
+    bool
+        ``True`` if ``value >= best − EXTREMUM_TIE · max(size, |best|)``.
+    """
+    return value >= best - EXTREMUM_TIE * max(size, abs(best))
 #: Span-relative time accuracy of the refined extremum; the value is then exact to rounding
 #: (it is flat there: its error is second order in the time error).
 EXTREMUM_XTOL = 1e-12
@@ -509,7 +531,7 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
     # the earliest time at which the extremum is reached, to rounding of the quantity's size along the run (a
     # plateau such as F_x in full slip, or a quantity that stays at zero, has ties that rounding would pick)
     best_time, best_value = min((time, value) for time, value in results
-                                if value >= best_value - EXTREMUM_TIE * max(size, abs(best_value)))
+                                if within_tie(value, best_value, size))
     return best_time, sign * best_value
 
 

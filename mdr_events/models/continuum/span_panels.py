@@ -159,11 +159,22 @@ class _Panel(NamedTuple):
     next_length: float
 
 
-def _accepted(rhs: Callable, low: float, high: float, length: float, force: float, rtol: float,
-              atol: float, panel_rule: Rule) -> _Panel | None:
+class _Quadrature(NamedTuple):
+    """What every panel of one :func:`panels` call is read and held to: the right-hand side, the tolerances, the
+    longest panel and the rule."""
+
+    rhs: Callable
+    rtol: float
+    atol: float
+    max_step: float
+    rule: Rule
+
+
+def _accepted(quadrature: _Quadrature, low: float, high: float, length: float, force: float) -> _Panel | None:
     """The next panel from ``low`` towards ``high`` (first tried ``length`` long, cut until its error is within the
     tolerances; the last one ends on ``high`` exactly), or ``None`` where it would be shorter than
     :data:`LEAST_PANEL_ULPS` ulp."""
+    rhs, rtol, atol, _, panel_rule = quadrature
     while True:
         h = math.copysign(length, high - low)
         last = abs(high - low) - length <= LEAST_PANEL_ULPS * EPS * max(abs(low), abs(high))
@@ -184,12 +195,12 @@ def _accepted(rhs: Callable, low: float, high: float, length: float, force: floa
             return None
 
 
-def _fill(rhs: Callable, low: float, high: float, force: float, length: float, rtol: float, atol: float,
-          max_step: float, ts: list, interpolants: list, panel_rule: Rule) -> float | None:
+def _fill(quadrature: _Quadrature, low: float, high: float, force: float, length: float, ts: list,
+          interpolants: list) -> float | None:
     """Panels from ``low`` to ``high`` appended to ``ts`` and ``interpolants`` (no event watched); the force at
     ``high``, or ``None`` where a panel failed."""
     while low != high:
-        panel = _accepted(rhs, low, high, min(length, abs(high - low), max_step), force, rtol, atol, panel_rule)
+        panel = _accepted(quadrature, low, high, min(length, abs(high - low), quadrature.max_step), force)
         if panel is None:
             return None
         ts.append(panel.end)
@@ -231,7 +242,7 @@ def panels(rhs: Callable, pieces: list[tuple[float, float]], force: float, event
         As :func:`~.span_march.march` returns it: the status (0 the end, 1 an event, -1 a panel too short), the
         joined dense output, each event's root (the first terminal one) and the force where it ended.
     """
-    panel_rule = panel_rule or rule()
+    quadrature = _Quadrature(rhs, rtol, atol, max_step, panel_rule or rule())
     ts, interpolants = [pieces[0][0]], []
     t_events: list[list[float]] = [[] for _ in events]
     directions = [float(getattr(event, "direction", 0.0)) for event in events]
@@ -239,7 +250,7 @@ def panels(rhs: Callable, pieces: list[tuple[float, float]], force: float, event
     for low, high in pieces:
         length = min(abs(high - low), max_step)
         while low != high:
-            panel = _accepted(rhs, low, high, length, force, rtol, atol, panel_rule)
+            panel = _accepted(quadrature, low, high, length, force)
             if panel is None:
                 return Marched(-1, f"a panel too short at {low!r}", None, t_events, force)
             g_new = [event(panel.end, None) for event in events]
@@ -249,8 +260,7 @@ def panels(rhs: Callable, pieces: list[tuple[float, float]], force: float, event
                 t_events[index].append(root)
                 if root == low and len(ts) == 1:  # (solve_ivp keeps a first step of zero length)
                     return Marched(1, "", OdeSolution([low, low], [panel.dense]), t_events, force)
-                force = _fill(rhs, low, root, force, abs(root - low), rtol, atol, max_step, ts, interpolants,
-                              panel_rule)
+                force = _fill(quadrature, low, root, force, abs(root - low), ts, interpolants)
                 if force is None:
                     return Marched(-1, f"a panel too short before {root!r}", None, t_events, force)
                 return Marched(1, "", OdeSolution(ts, interpolants), t_events, force)

@@ -29,14 +29,16 @@ import math
 import numpy as np
 from numpy.polynomial import chebyshev
 from scipy import optimize
+from scipy.integrate import OdeSolution
 
+from .closed_form import ClosedForce
 from .dense import force_values
 from .graded import natural_variable, span_variable
-from .span import Variable
+from .span import LinearForce, Variable
 from .state import Regime
 from .tolerances import EPS
 
-__all__ = ["DENSE_DEGREE", "stationary_points", "chebyshev_nodes", "derivative_roots"]
+__all__ = ["DENSE_DEGREE", "stationary_points", "interpolant_roots", "chebyshev_nodes", "derivative_roots"]
 
 #: Degree of the polynomial of one step of DOP853's dense output (``solve_ivp``'s interpolant of ``F_x``).
 DENSE_DEGREE = 7
@@ -133,19 +135,13 @@ def stationary_points(solution, index: int, quantity: str, times: tuple[float, f
         return None
     if span.interpolant is None:  # a constant force
         return []
-    if hasattr(span.interpolant, "interpolants"):  # (DOP853's steps, or the panels stored as such)
-        roots = lambda low, high: _dense_output_roots(span.interpolant, low, high)  # noqa: E731
-    elif hasattr(span.interpolant, "stationary"):  # a force in closed form (:mod:`.closed_form`)
-        roots = span.interpolant.stationary
-    else:  # a force linear in time
-        return [] if span.variable is Variable.TIME else None
     if span.variable is Variable.TIME:
         bracket = (solution.t_contact + times[0], solution.t_contact + times[1])
     else:
         bracket = (radii[0] / span.scale, radii[1] / span.scale)
     bracket = tuple(span_variable(span, end) for end in bracket)  # (u on a graded span: dv/du > 0 inside)
     points = []
-    for var in roots(min(bracket), max(bracket)):
+    for var in interpolant_roots(span.interpolant, min(bracket), max(bracket)):
         value = float(span.interpolant(var)[0])
         natural = natural_variable(span, var)
         if span.variable is Variable.TIME:
@@ -154,6 +150,48 @@ def stationary_points(solution, index: int, quantity: str, times: tuple[float, f
             time = _time_of_radius(solution, span, natural * span.scale)
         points.append((min(max(time, times[0]), times[1]), value))
     return points
+
+
+@functools.singledispatch
+def interpolant_roots(interpolant, low: float, high: float) -> list[float]:
+    """The roots in ``[low, high]`` of the derivative of a span's interpolant of ``F_x``, by its type: ``solve_ivp``'s
+    dense output (DOP853's steps, or the panels stored as such), a force in closed form
+    (:meth:`~.closed_form.ClosedForce.stationary`) or one linear in time (none).
+
+    Parameters
+    ----------
+    interpolant : OdeSolution, ClosedForce or LinearForce
+        The span's interpolant.
+    low, high : float
+        The interval (the span's variable), ``low <= high``.
+
+    Returns
+    -------
+    list of float
+        The roots (none: the force is monotone there).
+
+    Raises
+    ------
+    TypeError
+        An interpolant of another type (none is made).
+    """
+    raise TypeError(f"interpolant={interpolant!r} is not allowed; allowed: an OdeSolution, a ClosedForce or a "
+                    "LinearForce")
+
+
+@interpolant_roots.register
+def _(interpolant: OdeSolution, low: float, high: float) -> list[float]:
+    return _dense_output_roots(interpolant, low, high)
+
+
+@interpolant_roots.register
+def _(interpolant: ClosedForce, low: float, high: float) -> list[float]:
+    return interpolant.stationary(low, high)
+
+
+@interpolant_roots.register
+def _(interpolant: LinearForce, low: float, high: float) -> list[float]:
+    return []
 
 
 def _dense_output_roots(interpolant, low: float, high: float) -> list[float]:
