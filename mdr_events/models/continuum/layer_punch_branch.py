@@ -19,20 +19,17 @@ import numpy as np
 from mdr_events.contact.indenters import FlatPunch
 from mdr_events.contact.layer import Layer
 from mdr_events.parameters import Parameters
+from mdr_events.theory.layer.punch_recession import receding_radius
 from mdr_events.theory.layer.scalar_factors import NormalFactors
 
 from .branch import FOLD_SHARE
 from .layer_branch import LayerBranch, _branch_key
 
-__all__ = ["LayerPunchBranch", "FACE_SHARE", "JUMP_OFF_SCAN"]
+__all__ = ["LayerPunchBranch", "FACE_SHARE"]
 
 #: A radius this share below the face's still counts as the face's: the held contact's radius, and a growth that reaches
 #: the face (where it stops) to its root's accuracy.
 FACE_SHARE = 1e-12
-#: Points of the scan from the face inwards that brackets where the receding branch's slope turns (``dΔl/da = 0``),
-#: geometric down to ``1e-6 a₀`` (Brent's method refines): the slope ``−∞`` at ``a → 0`` always turns in it.
-JUMP_OFF_SCAN = 97
-
 
 class LayerPunchBranch(LayerBranch):
     r"""The branch of work ``work`` of a flat punch of radius ``a₀`` on ``layer``: ``d(a) = −Δl(a)`` for ``a <= a₀``.
@@ -76,19 +73,10 @@ class LayerPunchBranch(LayerBranch):
         return float(indenter.radius)
 
     def _jump_off_radius(self) -> float:
-        """The largest radius ``<= a₀`` where ``dd/da`` turns positive going out (the face itself where it is not
-        positive there): a geometric scan inwards brackets it, Brent's method refines it."""
-        from scipy.optimize import brentq
-
-        if not self.slope(self.face) > 0.0:
-            return self.face
-        radii = self.face * np.geomspace(1.0, 1e-6, JUMP_OFF_SCAN)
-        for outer, inner in zip(radii, radii[1:]):
-            if not self.slope(float(inner)) > 0.0:
-                return float(brentq(self.slope, float(inner), float(outer), xtol=1e-15 * float(inner),
-                                    rtol=4.0 * np.finfo(float).eps))
-        raise ValueError(f"the flat punch {self.face!r} m on {self.layer.describe()} recedes below 1e-6 of its face; "
-                         "allowed: a layer whose Heß limit turns within the tables")
+        """The largest radius ``<= a₀`` where the recession stops, ``dΔl/da = 0``
+        (:func:`~mdr_events.theory.layer.punch_recession.receding_radius`; the face itself where ``Δl`` does not fall
+        there)."""
+        return receding_radius(self.factors, self.face)
 
     def _key(self) -> tuple:
         return (*_branch_key(self), self.face)
