@@ -74,3 +74,29 @@ def receding_radius(factors: NormalFactors, face: float) -> float:
         if not slope(inner) < 0.0:
             return float(brentq(slope, inner, outer, xtol=1e-15 * inner, rtol=4.0 * np.finfo(float).eps))
     return math.nan  # (unreachable: the half-space's 1/(2a) wins below 1e-6 of any face within the tables)
+
+
+def punch_jump_off(contact, dgamma: float) -> tuple[float, float]:
+    """The flat punch's jump-off on the contact's layer under depth control: ``(−Δl(a_j), a_j)`` with ``a_j`` from
+    :func:`receding_radius` (``(0, a₀)`` without adhesion: the face comes off at the surface).
+
+    Parameters
+    ----------
+    contact : Contact
+        A flat punch on a layer of finite thickness (its radius within the tables).
+    dgamma : float
+        The work of adhesion of the way out (J/m², ≥ 0).
+
+    Returns
+    -------
+    tuple of (float, float)
+        The depth (m, ≤ 0) and the radius (m).
+    """
+    from mdr_events.theory.layer.relations import hess_elongation
+
+    face = float(contact.indenter.radius)
+    if dgamma == 0.0:
+        return 0.0, face
+    elastomer, layer = contact.elastomer, contact.layer
+    radius = receding_radius(NormalFactors(elastomer.nu, layer, 2.0), face)
+    return -float(hess_elongation(radius, dgamma, elastomer.E_star, elastomer.nu, layer)), radius
