@@ -269,7 +269,7 @@ def check_face(indenter, layer: Layer, friction: FrictionLaw) -> None:
     from mdr_events.theory.kinds import theory_of
 
     if not layer.is_half_space and theory_of(indenter).flat_face and friction.coulomb_mu > 0.0:
-        raise ValueError(f"friction={friction.law!r} is not allowed with profile={indenter!r} on {layer.describe()} "
+        raise ValueError(f"friction={friction.law!r} with profile={indenter!r} is not allowed on {layer.describe()} "
                          "in the continuum method: Coulomb's part runs there spring by spring on the layer's profile "
                          "tabulated for a paraboloid or power law; allowed: friction 'tau0' (the spans: the face "
                          "held, then receding under it), or method='discrete'")
