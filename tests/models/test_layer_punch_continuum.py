@@ -233,3 +233,22 @@ def test_the_derived_receding_slope_turns_where_the_continuum_pulls_off():
         return float(slope_of(a, params.dgamma1, float(punch_stiffness_slope(a, *material)), second))
 
     assert slope(1.05 * pull_radius) > 0.0 and slope(0.5 * A0) > 0.0 and slope(0.95 * pull_radius) < 0.0
+
+
+#: Degrees either side of scenario B's critical angle at which the continuum's run is read (the angle itself is
+#: computed on a scan of the recession refined to round-off: well inside half a degree).
+ANGLE_SIDE = 0.5
+
+
+def test_scenario_bs_critical_angle_parts_the_continuums_runs_that_slide_from_those_that_come_off_first():
+    """Below the critical angle (``critical_angle``, the phase diagram's) the springs slide before the pull-off, above
+    it the contact comes apart first; the phase diagram's jump-off depth is the continuum's pull-off."""
+    contact = PUNCH.replace(h=THIN_LAYER)
+    critical = me.critical_angle(contact, "B", d_max=D_MAX)
+    diagram = me.phase_diagram(contact, np.array([10.0]), scenario="B", d_max=D_MAX)
+    assert float(diagram["critical_angle_jkr"]) == critical
+    for angle, slides in ((critical - ANGLE_SIDE, True), (critical + ANGLE_SIDE, False)):
+        run = me.simulate(contact, me.Scenario("B", alpha=[angle], d_max=D_MAX), "continuum").isel(alpha=0)
+        events = _events(run)
+        assert ("slip_onset" in events) == slides, (angle, events)
+        assert float(diagram["jump_off_depth"]) == pytest.approx(events["pull_off"][0], rel=1e-9)
