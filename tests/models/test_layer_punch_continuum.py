@@ -37,6 +37,9 @@ SAMPLES = 400_000
 #: The observed order in Δx (first: a spring lets go one spacing late, the edge spring's limit is that of
 #: ``a₀ − Δx/2``) and its slack (measured 1.00–1.08 on both layers).
 ORDER, ORDER_SLACK = 1.0, 0.2
+#: The share of the time to the pull-off before it at which a comparison with the discrete samples stops (they straddle
+#: the jump there: one sample of 1e5 over 58 s is 6e-4 s, 1e-5 of the time).
+PULL_OFF_WINDOW = 1e-3
 #: The order in λ = a₀/h at which a thick layer's pull-off force tends to the half-space's (third: see the test).
 THICK_ORDER = 3.0
 
@@ -252,3 +255,32 @@ def test_scenario_bs_critical_angle_parts_the_continuums_runs_that_slide_from_th
         events = _events(run)
         assert ("slip_onset" in events) == slides, (angle, events)
         assert float(diagram["jump_off_depth"]) == pytest.approx(events["pull_off"][0], rel=1e-9)
+
+
+def test_a_receded_contact_pressed_back_in_grows_to_the_face_and_sticks_there_as_the_springs_do():
+    """In, out onto the recession, back in past the face while moving sideways, out to the pull-off: the radius grows
+    back along the Δγ0 branch to the face and stops there (a span ending at the face's edge, ``Branch.edge_depth``;
+    before it the growing span ran on with the radius stuck and F_x frozen at 2.3 mN where the springs reach 7.7 mN),
+    and the continuum's F_x is the springs' limit at first order in Δx (read until just before the pull-off, where the
+    discrete samples straddle the jump)."""
+    from mdr_events.models.paths import Path
+
+    contact = PUNCH.replace(h=THIN_LAYER)
+    motion = me.Paths([Path(np.array([[0.0, 0.0], [0.0, 1e-5], [2e-6, -5e-6], [3e-6, 1e-5], [3e-6, -1e-5]]), 1e-6)])
+
+    def run_of(method, **options):
+        run = me.simulate(contact, motion, method, **options)
+        return run.isel({name: 0 for name in run["tangential_force"].dims if name != "time"})
+
+    exact = run_of("continuum")
+    kinds = list(exact["event_kind"].values)
+    assert "growth_resumes" in kinds and float(exact["event_radius"].values[kinds.index("corner", kinds.index("growth_resumes"))]) == A0
+    times = exact["time"].values
+    pulled = float(exact["event_time"].values[kinds.index("pull_off")])
+    before = times < pulled * (1.0 - PULL_OFF_WINDOW)
+    errors = []
+    for dx in SPACINGS[1:]:
+        run = run_of("discrete", dx=dx, n_steps=SAMPLES // 4)
+        sampled = np.interp(times, run["time"].values, run["tangential_force"].values)
+        errors.append(float(np.max(np.abs(sampled - exact["tangential_force"].values)[before])))
+    assert all(abs(order - ORDER) <= ORDER_SLACK for order in _order(errors)), errors

@@ -65,6 +65,8 @@ class LayerPunchBranch(LayerBranch):
         if work == 0.0:
             self.jump_off_radius, self.jump_off_depth = self.face, 0.0
         self.held_depth = self.depth(self.face) if work > 0.0 else 0.0
+        #: a receded contact pressed back in grows along ``d = −Δl(a)`` until the face's edge: there it stops
+        self.edge_depth = self.held_depth
 
     def _power(self, indenter) -> tuple[float, float]:
         return 0.0, 2.0  # (g = 0 under the face: the profile's term vanishes, its table's exponent unread)
@@ -165,7 +167,8 @@ class LayerPunchBranch(LayerBranch):
             return self.face
         if self.work == 0.0:  # (no contact above the surface: come off, as the half-space's face)
             return math.nan
-        return super().radius(depth, rtol)
+        radius = super().radius(depth, rtol)
+        return self.face if radius >= self.face * (1.0 - FACE_SHARE) else radius  # (the face's, not a root an ulp off)
 
     def radii(self, depth: np.ndarray) -> np.ndarray:
         depth = np.asarray(depth, dtype=float)
@@ -175,4 +178,4 @@ class LayerPunchBranch(LayerBranch):
         out = np.full(depth.shape, self.face)
         if not np.all(held):
             out[~held] = super().radii(depth[~held])
-        return out
+        return np.where(out >= self.face * (1.0 - FACE_SHARE), self.face, out)
