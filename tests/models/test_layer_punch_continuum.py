@@ -284,3 +284,22 @@ def test_a_receded_contact_pressed_back_in_grows_to_the_face_and_sticks_there_as
         sampled = np.interp(times, run["time"].values, run["tangential_force"].values)
         errors.append(float(np.max(np.abs(sampled - exact["tangential_force"].values)[before])))
     assert all(abs(order - ORDER) <= ORDER_SLACK for order in _order(errors)), errors
+
+
+def test_validate_and_fit_take_the_punch_on_a_thin_layer_with_the_continuum_as_reference():
+    """The continuum's run validated against its own reference differs by its evaluation alone (1e-9 of the ranges);
+    noise-free synthetic data of the receding punch (it slides on the recession at 20°) give back τ0 to the optimizer's
+    tolerance (1e-6)."""
+    from mdr_events.analysis.fit import synthetic_measurement
+
+    contact = PUNCH.replace(h=THIN_LAYER)
+    motion = me.Scenario("B", alpha=[20.0], d_max=D_MAX)
+    own = me.simulate(contact, motion, "continuum").isel(alpha=0)
+    report = me.validate(own, contact, motion)
+    assert report.attrs["verdict"] == "pass" and float(np.max(report["max_error"].values)) <= 1e-9
+    params = _material(contact)
+    path = motion.cases(params, contact.indenter, contact.friction).paths[0]
+    measured = synthetic_measurement(contact, motion, times=np.linspace(0.0, path.duration, 200))
+    start = contact.replace(tau0=1.3 * contact.friction.tau0)
+    result = me.fit(measured, start, motion, free=["tau0"], time_origin="path_start")
+    assert result.parameters.tau0 == pytest.approx(contact.friction.tau0, rel=1e-6)
