@@ -78,7 +78,7 @@ def phase_diagram(
         The physical model: a :class:`~mdr_events.Contact` (elastomer, indenter, adhesion, friction law), with the
         depth ``d_max``; or the keywords of before, a :class:`~mdr_events.Parameters` (material, the paraboloid of
         its ``R``, adhesion, ``τ0`` and its own ``d_max``) with ``profile`` and ``friction``. A contact on a layer
-        of finite thickness bonded to its base (``Contact.layer``; a paraboloid or power law under the law (13)):
+        of finite thickness bonded to its base (``Contact.layer``; a paraboloid, power law or flat punch under the law (13)):
         the same curves with the layer's cap and branches (:func:`mdr_events.d_crit`), ``nan`` where an onset lies
         beyond the layer's tables (``a/h > 64``).
     alpha : array_like, optional
