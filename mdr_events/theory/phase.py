@@ -78,8 +78,8 @@ def phase_diagram(
         The physical model: a :class:`~mdr_events.Contact` (elastomer, indenter, adhesion, friction law), with the
         depth ``d_max``; or the keywords of before, a :class:`~mdr_events.Parameters` (material, the paraboloid of
         its ``R``, adhesion, ``τ0`` and its own ``d_max``) with ``profile`` and ``friction``. A contact on a layer
-        of finite thickness bonded to its base (``Contact.layer``; a paraboloid, power law or flat punch under the law (13)):
-        the same curves with the layer's cap and branches (:func:`mdr_events.d_crit`), ``nan`` where an onset lies
+        of finite thickness bonded to its base (``Contact.layer``; a paraboloid, power law or flat punch under the law
+        (13)): the same curves with the layer's cap and branches (:func:`mdr_events.d_crit`), ``nan`` where an onset lies
         beyond the layer's tables (``a/h > 64``).
     alpha : array_like, optional
         Angles in degrees, in [0, 90]; default 0°, 0.1°, …, 90°.
