@@ -15,7 +15,7 @@ recession whose travel per cap ``r(a) = (d_max + Δl₁(a))/ū(a)`` reaches ``ta
 of ``r`` on a scan, inverted by bisection, :func:`~mdr_events.theory.layer.slip_onset.first_onsets`); past the
 jump-off ``a_j`` the contact comes apart first (``−inf``). The critical angle is ``atan`` of the travel per cap where
 the motion ends: ``d_max/ū(a₀)`` in A, ``(d_max − d_j)/ū(a_j)``'s running maximum in B (``d_j = 0`` without adhesion,
-the half-space's flat punch's, :func:`mdr_events.power_law.critical_angle_B`).
+the half-space's flat punch's, ``mdr_events.power_law.critical_angle_B``).
 """
 
 from __future__ import annotations

@@ -332,7 +332,7 @@ def onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesio
 
 def pull_off_depth(contact: Contact) -> float:
     """Scenario B's jump-off depth on the ``Δγ1`` branch of the contact's layer (the flat punch's: where its recession
-    stops, :func:`~mdr_events.theory.layer.punch_recession.punch_jump_off`); 0 without adhesion.
+    stops, ``theory.layer.punch_recession.punch_jump_off``); 0 without adhesion.
 
     Parameters
     ----------
