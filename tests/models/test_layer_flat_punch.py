@@ -176,3 +176,13 @@ def test_a_discrete_sweep_runs_the_flat_punch_over_the_thickness_as_simulate_doe
     for h in (5e-3, math.inf):
         run = me.simulate(PUNCH.replace(h=h), me.Scenario("A", 90.0), springs).isel(alpha=0)
         assert float(swept["normal_force_min"].sel(h=h)) == float(np.nanmin(run["normal_force"].values))
+
+
+def test_a_sweeps_critical_angles_of_the_punch_on_a_layer_are_critical_angles():
+    """The sweep's closed-form angles of the flat punch on a layer (``has_closed_forms``) are ``critical_angle``'s."""
+    swept = me.sweep({"h": [2e-4, 5e-3]}, PUNCH, "B", 20.0, engine=SERIAL,
+                     quantities=("critical_angle_A", "critical_angle_B"))
+    for h in (2e-4, 5e-3):
+        for scenario in ("A", "B"):
+            expected = me.critical_angle(PUNCH.replace(h=h), scenario)
+            assert float(swept[f"critical_angle_{scenario}"].sel(h=h)) == pytest.approx(expected, rel=1e-12)
