@@ -22,7 +22,6 @@ from mdr_events.parameters import Parameters
 from mdr_events.theory.layer.punch_recession import receding_radius
 from mdr_events.theory.layer.scalar_factors import NormalFactors
 
-from .branch import FOLD_SHARE
 from .layer_branch import LayerBranch, _branch_key
 
 __all__ = ["LayerPunchBranch", "FACE_SHARE"]

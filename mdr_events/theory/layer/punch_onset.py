@@ -130,10 +130,10 @@ def punch_onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, a
         start = 0.0 if scenario == "A" else depth
         return np.where(vertical, math.inf, start + cap * tangent)
     work = contact.adhesion.dgamma1 if adhesion else 0.0
-    held_depth, _ = (-float(_elongation(contact, face, work)), face) if work > 0.0 else (0.0, face)
+    held_depth = -float(_elongation(contact, face, work)) if work > 0.0 else 0.0
     held = depth - cap * tangent
     out = np.where(held >= held_depth, held, -math.inf)
-    pull_depth, pull_radius = punch_jump_off(contact, work)
+    pull_radius = punch_jump_off(contact, work)[1]
     receding = (held < held_depth) & ~vertical
     if pull_radius < face and np.any(receding):
         logs = np.linspace(math.log(face), math.log(pull_radius), RECESSION_POINTS)
@@ -181,7 +181,7 @@ def punch_critical_angle(contact: Contact, scenario: str, adhesion: bool, final_
             "final_depth", final_depth, f"a finite depth > d_max = {depth!r} m", lambda value: value > depth)
         return float(np.degrees(np.arctan((end - depth) / float(_cap(contact, face)))))
     work = contact.adhesion.dgamma1 if adhesion else 0.0
-    pull_depth, pull_radius = punch_jump_off(contact, work)
+    pull_radius = punch_jump_off(contact, work)[1]
     radii = np.geomspace(face, pull_radius, RECESSION_POINTS) if pull_radius < face else np.array([face])
     depths = -_elongation(contact, radii, work) if work > 0.0 else np.zeros(radii.shape)
     return float(np.degrees(np.arctan(np.max((depth - depths) / _cap(contact, radii)))))
