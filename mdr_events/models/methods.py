@@ -292,9 +292,9 @@ class Continuum:
 
     def check_layer(self, contact: Contact) -> None:
         """Every friction law runs on a layer, with or without adhesion: ``"tau0"`` on the spans, Coulomb's part
-        spring by spring (:mod:`~mdr_events.models.continuum.play_run`); the flat punch does not
-        (:func:`~mdr_events.models.continuum.media.check_face`); what the layer's springs take (the paraboloid or a
-        power law) is checked where they are made.
+        spring by spring (:mod:`~mdr_events.models.continuum.play_run`); the flat punch with ``"tau0"`` alone
+        (:func:`~mdr_events.models.continuum.media.check_face`); what the layer's springs take (the paraboloid, a
+        power law or the flat punch) is checked where they are made.
 
         Parameters
         ----------
@@ -304,9 +304,9 @@ class Continuum:
         Raises
         ------
         ValueError
-            A flat punch on a layer of finite thickness.
+            A flat punch on a layer of finite thickness with Coulomb's part.
         """
-        check_face(contact.profile, contact.layer)
+        check_face(contact.profile, contact.layer, contact.friction)
 
     def check_case_count(self, count: int, limits: Limits) -> None:
         """The output a run of ``count`` cases takes, checked before they are built, as

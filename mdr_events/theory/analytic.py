@@ -466,7 +466,9 @@ def d_crit(
         :class:`~mdr_events.Parameters` (the keywords of before, with its own ``d_max``). A contact on a layer of
         finite thickness bonded to its base (``Contact.layer``; a paraboloid or power law): the same equations with
         the layer's cap ``π a² τ0/K_t(a)`` and branches, solved in ``a``
-        (:mod:`mdr_events.theory.layer.slip_onset`; an onset beyond the tables, ``a/h > 64``, is refused).
+        (:mod:`mdr_events.theory.layer.slip_onset`; an onset beyond the tables, ``a/h > 64``, is refused); the flat
+        punch there: closed forms while its face is held, the root on its receding contact
+        (:mod:`mdr_events.theory.layer.punch_onset`).
     scenario : {"A", "B"}
         ``"A"``: indentation at angle α from first contact, eqs. (14), (17),
         (18). ``"B"``: vertical indentation to ``d_max`` then motion at angle α,

@@ -28,6 +28,13 @@ Sections (:func:`layer_model_afresh`):
    contact recedes under the face along ``d = −Δl(a)``; where it rises (the half-space) or stays (Winkler, every
    spring at one limit) the whole face comes off at once. Under force control the pull-off is ``−K Δl`` at the face's
    radius wherever ``a K²/K'`` rises (on all three).
+8. the flat punch's receding branch under depth control: once ``d`` reaches ``−Δl(a₀)`` the edge follows
+   ``d = −Δl(a)`` while ``dΔl/da < 0`` (``dd/da > 0``: stable recession, ``a K'' > K'``) and pulls off where
+   ``dΔl/da = 0`` (``a K'' = K'``) or at ``a → 0``; its force is the springs' ``∫₀ᵃ K'(x)(d − 0) dx = K(a) d``, the
+   springs let go beyond ``a`` storing none (``F₀ = ∫₀ᵃ K g' = 0``: the face is flat), so ``F_N = −K(a) Δl(a)``,
+   continuous at the switch. On the half-space (``Δl ∝ √a``, ``dΔl/da > 0``) no radius below ``a₀`` holds: today's
+   jump at Kendall's depth; on Winkler's foundation ``Δl`` is constant (neutral: every spring at one limit, the whole
+   face at once); on the thin film ``Δl ∝ 1/a`` recedes to ``a → 0`` with ``F ∝ a³ → 0``.
 
 The relations are cached beside the paper's (:func:`layer_cache_path`), keyed by this module's source.
 """
@@ -66,7 +73,8 @@ LAYER_KEYS = ("layer_compliance_bonded", "layer_compliance_frictionless", "layer
               "layer_thin_film_force", "layer_energy_slope", "layer_hess_elongation", "layer_normal_force",
               "layer_winkler_pull_off_radius", "layer_winkler_pull_off", "layer_thin_film_pull_off_radius",
               "layer_thin_film_pull_off", "layer_flat_punch_force", "layer_flat_punch_winkler_force",
-              "layer_flat_punch_hess", "layer_flat_punch_recedes", "layer_flat_punch_pull_off")
+              "layer_flat_punch_hess", "layer_flat_punch_recedes", "layer_flat_punch_pull_off",
+              "layer_flat_punch_receding_slope", "layer_flat_punch_receding_force")
 
 #: Hash of this module's source and SymPy's version: the key of :func:`layer_cache_path`.
 _SOURCE_DIGEST = symbolic.source_digest(__file__)
@@ -125,6 +133,7 @@ def layer_model_afresh() -> dict[str, Relation]:
     _derive_griffith(add)
     _derive_thin_pull_off(add, out)
     _derive_flat_punch(add, out)
+    _derive_receding_punch(add, out)
     return out
 
 
@@ -355,3 +364,48 @@ def _derive_flat_punch(add, out: dict) -> None:
                        ("thin film", out["layer_thin_film_stiffness"].rhs)):  # |F| rises with a: force control at a
         held = sp.simplify(sp.diff((pull_off ** 2).subs({stiffness: K_of, K_prime: sp.diff(K_of, a)}), a))
         _check(held.is_positive, f"the flat punch's pull-off force on the {name} does not rise with its radius")
+
+
+def _derive_receding_punch(add, out: dict) -> None:
+    """Section 8: the flat punch's receding branch under depth control, from sections 5 and 7.
+
+    The springs under the face all rest on ``g = 0``; once the edge's spring at ``a`` reaches Heß's limit
+    (``d = −Δl(a)``) it lets go, and the next spring inside holds if its own limit is larger (``dΔl/da < 0``). The force
+    is the springs' sum, those let go storing none: ``∫₀ᵃ K'(x)(d − 0) dx``, derived here, not assumed."""
+    K_prime = sp.Symbol("K_prime", positive=True)
+    K_second = sp.Symbol("K_second")
+    stiffness = sp.Symbol("K", positive=True)
+    hess = out["layer_hess_elongation"].rhs
+    elongation = hess.subs(K_prime, K_fn(a).diff(a))  # Δl(a) of any K
+    slope = sp.diff(-elongation, a)  # dd/da on the receding branch d = −Δl(a)
+    # dd/da = Δl (a K'' − K')/(2 a K'): its sign is that of a K'' − K' (section 7's ``recedes``)
+    ratio = sp.simplify(slope * 2 * a * K_fn(a).diff(a) / elongation
+                        - (a * K_fn(a).diff(a, 2) - K_fn(a).diff(a)))
+    _check(ratio == 0, f"dd/da on the receding branch is not Δl (a K'' − K')/(2 a K'): {ratio}")
+    slope_symbols = {sp.Derivative(K_fn(a), (a, 2)): K_second, sp.Derivative(K_fn(a), a): K_prime}
+    add(Relation("layer_flat_punch_receding_slope", "(8)", "flat punch on a layer: dd/da = Δl (a K'' − K')/(2 a K') on "
+                 "the receding branch d = −Δl(a) (stable where > 0, pull-off where 0)", sp.Symbol("slope"),
+                 sp.simplify(slope.subs(slope_symbols)), (a, dgamma, K_prime, K_second)))
+    # the springs' force: those in |x| < a at elongation d (g = 0 under the face), those let go bear nothing
+    force = sp.integrate(K_fn(x).diff(x) * (d - 0), (x, 0, a)).subs(K_fn(0), 0)  # (K(0) = 0: no contact)
+    stored = sp.integrate(K_fn(x) * sp.diff(sp.Integer(0), x), (x, 0, a))  # F₀ = ∫ K g' of a flat face
+    _check(stored == 0, f"the flat face stores F₀ = {stored}")
+    _check(sp.simplify(force - out["layer_normal_force"].rhs.subs({F0_fn(a): stored, g_fn(a): 0})) == 0,
+           f"the receding punch's springs give {force}, not F₀ + K (d − g) with g = 0")
+    on_branch = force.subs(d, -hess).subs(K_fn(a), stiffness)
+    add(Relation("layer_flat_punch_receding_force", "(10)", "flat punch on a layer, receding: F_N = K(a) d = −K(a) Δl(a) "
+                 "at d = −Δl(a) (the springs let go store no force)", F_N, on_branch, (stiffness, a, dgamma, K_prime)))
+    _check(sp.simplify(on_branch - out["layer_flat_punch_pull_off"].rhs) == 0,
+           "the receding branch's force does not meet the held face's K(a₀) d at the switch")
+    for name, K_of, sign in (("half-space", 2 * E_star * a, -1), ("Winkler", out["layer_winkler_stiffness"].rhs, 0),
+                             ("thin film", out["layer_thin_film_stiffness"].rhs, 1)):
+        value = sp.simplify(slope.subs(K_fn(a), K_of).doit())
+        _check(sp.sign(sp.simplify(value)) == sign, f"the receding slope on the {name} is {value}")
+    # the half-space: dd/da < 0 at every radius, so no contact smaller than the face holds: the face comes off at
+    # Kendall's depth, today's jump (section 7); Winkler: Δl constant, every spring at one limit: the whole face at once
+    winkler_dl = sp.simplify(elongation.subs(K_fn(a), out["layer_winkler_stiffness"].rhs).doit())
+    _check(sp.diff(winkler_dl, a) == 0, f"Heß's limit on Winkler's foundation is {winkler_dl}, not a constant")
+    film = out["layer_thin_film_stiffness"].rhs
+    film_force = sp.simplify(on_branch.subs({stiffness: film, K_prime: sp.diff(film, a)}))
+    _check(sp.limit(film_force, a, 0) == 0 and sp.limit(elongation.subs(K_fn(a), film).doit(), a, 0) == sp.oo,
+           "the thin film's receding punch does not leave with F -> 0 as d -> -oo")

@@ -78,8 +78,8 @@ def phase_diagram(
         The physical model: a :class:`~mdr_events.Contact` (elastomer, indenter, adhesion, friction law), with the
         depth ``d_max``; or the keywords of before, a :class:`~mdr_events.Parameters` (material, the paraboloid of
         its ``R``, adhesion, ``τ0`` and its own ``d_max``) with ``profile`` and ``friction``. A contact on a layer
-        of finite thickness bonded to its base (``Contact.layer``; a paraboloid or power law under the law (13)):
-        the same curves with the layer's cap and branches (:func:`mdr_events.d_crit`), ``nan`` where an onset lies
+        of finite thickness bonded to its base (``Contact.layer``; a paraboloid, power law or flat punch under the law
+        (13)): the same curves with the layer's cap and branches (:func:`mdr_events.d_crit`), ``nan`` where an onset lies
         beyond the layer's tables (``a/h > 64``).
     alpha : array_like, optional
         Angles in degrees, in [0, 90]; default 0°, 0.1°, …, 90°.
@@ -169,8 +169,7 @@ def _layer_phase_diagram(contact: Contact, angles: np.ndarray, scenario: str, d_
     """:func:`phase_diagram` of a contact on a layer of finite thickness: eqs. (17)–(21) with the layer's cap
     ``π a² τ0/K_t`` and branches (:mod:`~mdr_events.theory.layer.slip_onset`), ``nan`` where the onset lies beyond
     the layer's tables (``a/h > 64``), the layer's attributes stamped."""
-    from mdr_events.theory.layer.branch_scan import branch_jump_off
-    from mdr_events.theory.layer.slip_onset import critical_angle_on_layer, onset_depths
+    from mdr_events.theory.layer.slip_onset import critical_angle_on_layer, onset_depths, pull_off_depth
 
     branches = (None,) if scenario == "A" else analytic.BRANCHES
     found = {(adhesive, branch): onset_depths(angles, contact, scenario, adhesive, branch or "pull-off", d_max,
@@ -180,7 +179,7 @@ def _layer_phase_diagram(contact: Contact, angles: np.ndarray, scenario: str, d_
     depth = PAPER_D_MAX if d_max is None else d_max
     jump_off = None
     if scenario == "B":
-        jump_off = branch_jump_off(contact, contact.adhesion.dgamma1)[0] if contact.adhesion.dgamma1 > 0.0 else 0.0
+        jump_off = pull_off_depth(contact)
     variables = _onset_variables(curves, scenario, coords, jump_off, depth,
                                  lambda adhesive: critical_angle_on_layer(contact, scenario, adhesive, None, d_max))
     dataset = stamp(xr.Dataset(variables, coords=coords), contact.parameters(depth, PAPER_V), scenario=scenario,

@@ -66,14 +66,27 @@ def test_simulate_runs_the_flat_punch_on_a_layer_in_the_discrete_method(capsys, 
     np.testing.assert_array_equal(ds["normal_force"].values, direct["normal_force"].values)
 
 
+def test_simulate_runs_the_flat_punch_on_a_layer_in_the_continuum(capsys, tmp_path):
+    """The command line's flat punch on a thin layer in the continuum (the face held, then receding): simulate's run,
+    bit for bit."""
+    status, _, err = run(capsys, "simulate", "--scenario", "A", "--alpha", "90", "--d_max", "1e-5", "--h", "2e-4",
+                         "--flat-punch", "2e-3", "--method", "continuum", "--out", str(tmp_path))
+    assert status == 0, err
+    ds = me.open_result(tmp_path / "simulation_A_continuum.nc")
+    contact = dataclasses.replace(me.Contact.paper(), indenter=me.FlatPunch(2e-3)).replace(h=2e-4)
+    direct = me.simulate(contact, me.Scenario("A", alpha=[90.0], d_max=1e-5), "continuum")
+    np.testing.assert_array_equal(ds["normal_force"].values, direct["normal_force"].values)
+    assert float(np.nanmin(ds["contact_radius"].values[ds["contact_radius"].values > 0])) < 2e-3  # (it receded)
+
+
 @pytest.mark.parametrize("options, fragment", [
     (["--h", "0"], "--h 0: Layer.thickness=0.0 is not allowed; allowed: a number > 0 (m)"),
     (["--h", "-1e-3"], "--h -0.001: Layer.thickness=-0.001 is not allowed"),
     (["--h", "nan"], "--h nan: Layer.thickness=nan is not allowed"),
     (["--layer-base", "glued"], "argument --layer-base: invalid choice: 'glued'; allowed: bonded, frictionless"),
     (["--h", "5e-3", "--layer-base", "frictionless"], "path 0 moves the indenter tangentially"),
-    (["--h", "5e-3", "--flat-punch", "1e-3", "--method", "continuum"],
-     "profile=FlatPunch(radius=0.001) is not allowed on layer h = 0.005 m, bonded base in the continuum method"),
+    (["--h", "5e-3", "--flat-punch", "1e-3", "--method", "continuum", "--friction", "coulomb", "--mu", "0.3"],
+     "with profile=FlatPunch(radius=0.001) is not allowed on layer h = 0.005 m, bonded base in the continuum method"),
 ])
 def test_a_bad_layer_is_one_line_exit_2_and_nothing_written(capsys, tmp_path, options, fragment):
     status, _, err = run(capsys, "simulate", "--scenario", "A", "--alpha", "30", *options, "--out",

@@ -202,7 +202,8 @@ def test_a_power_law_runs_on_a_layer_and_its_thick_layer_is_the_half_space():
 
 
 @pytest.mark.parametrize("contact, words", [
-    (dataclasses.replace(PAPER.replace(h=5e-3), indenter=me.FlatPunch(1e-3)), "profile=FlatPunch(radius=0.001)"),
+    (dataclasses.replace(PAPER.replace(h=5e-3), indenter=me.FlatPunch(1e-3),
+                         friction=me.FrictionLaw("coulomb", mu=0.3)), "profile=FlatPunch(radius=0.001)"),
 ])
 def test_what_the_continuum_does_not_take_on_a_layer_is_one_line(contact, words):
     with pytest.raises(ValueError) as caught:

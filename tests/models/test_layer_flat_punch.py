@@ -4,7 +4,8 @@ Under the face ``f = 0``, so ``g = 0`` and ``F₀ = 0`` on any layer: ``F_N = K(
 (``layer_flat_punch_force``), ``π κ a₀² d`` on Winkler's foundation; the face's edge lets go at
 ``d = −sqrt(4π a Δγ1/K'(a))`` (``layer_flat_punch_hess``), the half-space's Kendall pull-off at ``K' = 2E*``; where
 ``a/K'(a)`` falls (thin layers) the contact recedes under the face along that depth (``layer_flat_punch_recedes``).
-The continuum refuses it on a layer, naming why and what runs it.
+The continuum runs it with ``τ0`` (:mod:`tests.models.test_layer_punch_continuum`) and refuses Coulomb's part there,
+naming why and what runs it.
 """
 
 from __future__ import annotations
@@ -143,15 +144,28 @@ def test_a_thick_layers_punch_tends_to_the_half_spaces():
 SERIAL = me.Engine(scheduler="serial")
 
 
+COULOMB = dataclasses.replace(PUNCH.replace(h=5e-3), friction=me.FrictionLaw("tau0+coulomb", tau0=42e3, mu=0.3))
+
+
 @pytest.mark.parametrize("call", [
-    lambda: me.simulate(PUNCH.replace(h=5e-3), VERTICAL, "continuum"),
-    lambda: me.sweep({"h": [5e-3, math.inf]}, PUNCH, "A", 90.0, engine=SERIAL, quantities=("normal_force_min",)),
+    lambda: me.simulate(COULOMB, VERTICAL, "continuum"),
+    lambda: me.sweep({"h": [5e-3, math.inf]}, COULOMB, "A", 90.0, engine=SERIAL, quantities=("normal_force_min",)),
 ])
-def test_the_continuum_refuses_the_flat_punch_on_a_layer_before_it_runs_naming_why_and_what_runs_it(call):
+def test_the_continuum_refuses_coulombs_part_with_the_flat_punch_on_a_layer_before_it_runs_naming_why(call):
+    """The continuum runs Coulomb's part on a layer spring by spring on the profile tabulated for a paraboloid or power
+    law; with ``τ0`` alone the spans run the flat punch (:mod:`tests.models.test_layer_punch_continuum`)."""
     with pytest.raises(ValueError) as caught:
         call()
     message = str(caught.value)
-    assert "recedes under the face" in message and "method='discrete'" in message and "\n" not in message
+    assert "spring by spring" in message and "method='discrete'" in message and "\n" not in message
+
+
+def test_a_continuum_sweep_runs_the_flat_punch_over_the_thickness_as_simulate_does():
+    swept = me.sweep({"h": [5e-3, math.inf]}, PUNCH, "A", 90.0, engine=SERIAL, quantities=("normal_force_min",))
+    assert int(swept["failed"].sum()) == 0
+    for h in (5e-3, math.inf):
+        run = me.simulate(PUNCH.replace(h=h), me.Scenario("A", 90.0), "continuum").isel(alpha=0)
+        assert float(swept["normal_force_min"].sel(h=h)) == float(run["normal_force_min"])
 
 
 def test_a_discrete_sweep_runs_the_flat_punch_over_the_thickness_as_simulate_does():
@@ -162,3 +176,13 @@ def test_a_discrete_sweep_runs_the_flat_punch_over_the_thickness_as_simulate_doe
     for h in (5e-3, math.inf):
         run = me.simulate(PUNCH.replace(h=h), me.Scenario("A", 90.0), springs).isel(alpha=0)
         assert float(swept["normal_force_min"].sel(h=h)) == float(np.nanmin(run["normal_force"].values))
+
+
+def test_a_sweeps_critical_angles_of_the_punch_on_a_layer_are_critical_angles():
+    """The sweep's closed-form angles of the flat punch on a layer (``has_closed_forms``) are ``critical_angle``'s."""
+    swept = me.sweep({"h": [2e-4, 5e-3]}, PUNCH, "B", 20.0, engine=SERIAL,
+                     quantities=("critical_angle_A", "critical_angle_B"))
+    for h in (2e-4, 5e-3):
+        for scenario in ("A", "B"):
+            expected = me.critical_angle(PUNCH.replace(h=h), scenario)
+            assert float(swept[f"critical_angle_{scenario}"].sel(h=h)) == pytest.approx(expected, rel=1e-12)

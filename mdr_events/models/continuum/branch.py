@@ -53,6 +53,9 @@ class Branch:
     #: the power ``n`` of the profile at its tip, ``g ∝ ξⁿ`` (the paraboloid's 2; ``None``: not a power there):
     #: ``g⁻¹(d) ∝ d^(1/n)`` near the surface (:mod:`.graded`)
     tip_power: float | None = 2.0
+    #: the depth at which a growing radius reaches the indenter's edge and stops there (a flat face's on a layer,
+    #: :class:`~.layer_punch_branch.LayerPunchBranch`; ``+inf``: it grows on): the planner ends a growing span there
+    edge_depth = math.inf
     #: the NumPy form of ``dd/da`` (:meth:`slopes`; ``None``: a branch without one, read point by point)
     _slopes = None
     #: the NumPy form of ``∫_0^a d dξ`` (:meth:`integrals`; ``None``: a branch without one, read point by point)

@@ -77,7 +77,7 @@ class LayerBranch(IteratedSamples, Branch):
     def __init__(self, params: Parameters, work: float, indenter: Paraboloid | PowerLaw, layer: Layer,
                  factors: NormalFactors):
         self.params, self.work, self.layer, self.factors = params, work, layer, factors
-        c, self.n = _power_law(indenter)
+        c, self.n = self._power(indenter)
         self.kc = _abel_factor(self.n) * c
         relations = derive_continuum_model()
         self._pair = relations["layer_continuum_branch_pair"].scalar
@@ -87,15 +87,32 @@ class LayerBranch(IteratedSamples, Branch):
         self._profile = relations["layer_continuum_profile"].scalar
         self._force_slope = relations["layer_continuum_normal_force_slope"].scalar
         self._pair_array = relations["layer_continuum_branch_pair"].numeric
-        self.ceiling = LAMBDA_MAX * layer.thickness
+        self.ceiling = self._ceiling(indenter)
         #: the tables' series meets their splines at ``a/h = LAMBDA_MIN``: the slope's derivative jumps there
-        self.knots = (LAMBDA_MIN * layer.thickness,)
+        self.knots = tuple(knot for knot in (LAMBDA_MIN * layer.thickness,) if knot < self.ceiling)
         #: the depth and slope of a radius, remembered: a right-hand side asks for both at one radius
         self._values = functools.lru_cache(maxsize=VALUE_CACHE)(self._evaluate)
-        self.jump_off_radius = _jump_off_radius(self) if work > 0.0 else 0.0
+        self.jump_off_radius = self._jump_off_radius() if work > 0.0 else 0.0
         self.jump_off_depth = self.depth(self.jump_off_radius)
         self._floor = self.jump_off_radius
         self._start_scan: tuple | None = None  # (the scan of radii, depths, slopes, as arrays and as lists: when asked)
+
+    # --- what a kind of indenter sets (:class:`~.layer_punch_branch.LayerPunchBranch` the flat face's) --------------
+    def _power(self, indenter) -> tuple[float, float]:
+        """The profile's ``c`` and ``n`` (``f = c rⁿ``)."""
+        return _power_law(indenter)
+
+    def _ceiling(self, indenter) -> float:
+        """The largest radius of the branch: the tables' ``LAMBDA_MAX h``."""
+        return LAMBDA_MAX * self.layer.thickness
+
+    def _jump_off_radius(self) -> float:
+        """The jump-off's radius (:func:`_jump_off_radius`)."""
+        return _jump_off_radius(self)
+
+    def _key(self) -> tuple:
+        """What the branch's values depend on (the key of the scans kept, :data:`_SCANS`)."""
+        return _branch_key(self)
 
     # --- the branch at one radius ----------------------------------------------------------------------------
     def _evaluate(self, a: float) -> tuple[float, float]:
@@ -204,7 +221,7 @@ class LayerBranch(IteratedSamples, Branch):
 
     def _scans(self) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], tuple[list[float], ...]]:
         if self._start_scan is None:
-            key = (*_branch_key(self), self.jump_off_radius)
+            key = (*self._key(), self.jump_off_radius)
             if key not in _SCANS:
                 lowest = self.jump_off_radius if self.jump_off_radius > 0.0 else START_SCAN_FLOOR * self.h
                 points = max(int(math.ceil(START_SCAN_PER_DECADE * math.log10(self.ceiling / lowest))), 1) + 1

@@ -36,7 +36,7 @@ class LayerMedium(HalfSpaceMedium):
     ----------
     params : Parameters
         The material (``E*``, ``G*``, ``ν``).
-    indenter : Paraboloid or PowerLaw
+    indenter : Paraboloid, PowerLaw or FlatPunch
         The indenter.
     layer : Layer
         The layer (finite thickness).
@@ -44,11 +44,14 @@ class LayerMedium(HalfSpaceMedium):
 
     def __init__(self, params: Parameters, indenter, layer: Layer):
         from mdr_events.theory.layer.scalar_factors import NormalFactors
-        from mdr_events.theory.layer.relations import _power_law
         from mdr_events.theory.layer_continuum_symbolic import derive_continuum_model
 
+        from .layer_normals import LAYER_NORMALS
+
         self.params, self.indenter, self.layer = params, indenter, layer
-        self.normal = NormalFactors(params.nu, layer, _power_law(indenter)[1])
+        #: what the indenter's kind makes of the normal springs (:mod:`.layer_normals`)
+        self.springs = LAYER_NORMALS[type(indenter)]
+        self.normal = NormalFactors(params.nu, layer, self.springs.exponent(indenter))
         relations = derive_continuum_model()
         self._cap = relations["layer_continuum_cap"].scalar
         self._cap_array = relations["layer_continuum_cap"].numeric
@@ -182,7 +185,7 @@ class LayerMedium(HalfSpaceMedium):
             The paper's adhesion law.
         params : Parameters
             The material and the works.
-        profile : PowerLaw or None
+        profile : PowerLaw, FlatPunch or None
             The indenter (``None``: the paraboloid of ``params.R``).
 
         Returns
@@ -191,21 +194,20 @@ class LayerMedium(HalfSpaceMedium):
             The growing and shrinking branches.
         """
         from .edges import Edge, check_edge_known
-        from .layer_branch import LayerBranch
 
         check_edge_known(adhesion)
-        return Edge(*(LayerBranch(params, work, self.indenter, self.layer, self.normal)
+        return Edge(*(self.springs.branch(params, work, self.indenter, self.layer, self.normal)
                       for work in (adhesion.dgamma0, adhesion.dgamma1)))
 
     def normal_force(self, params: Parameters, profile, depth, radius):
         r"""``F_N = F₀(a) + K(a)(d − g(a))`` on the layer (generalised (10),
-        :func:`~mdr_events.theory.layer.normal_force`).
+        :func:`~mdr_events.theory.layer.normal_force`; the flat punch's ``K(a) d``, :mod:`.layer_normals`).
 
         Parameters
         ----------
         params : Parameters
             The material.
-        profile : PowerLaw or None
+        profile : PowerLaw, FlatPunch or None
             The indenter.
         depth, radius : float or array_like
             ``d`` and ``a`` (m).
@@ -215,12 +217,7 @@ class LayerMedium(HalfSpaceMedium):
         numpy.ndarray
             ``F_N`` (N).
         """
-        from mdr_events.theory.layer import normal_force
-
-        # (the relation unchecked: the continuum hands it valid radii and depths, and its arguments' checks cost a
-        # third of the call)
-        with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):  # (as the checked one)
-            return normal_force.__wrapped__(depth, radius, self.indenter, params.E_star, params.nu, self.layer)
+        return self.springs.force(params, self.indenter, self.layer, depth, radius)
 
 
 class FrictionlessLayerMedium(LayerMedium):

@@ -246,10 +246,11 @@ def check_law(friction: FrictionLaw, layer: Layer) -> None:
                          "spring by spring in simulate(..., method='continuum'), and sweeps in method='discrete')")
 
 
-def check_face(indenter, layer: Layer) -> None:
-    """Refuse a flat face on a finite layer: the continuum's flat punch keeps the face's radius until Kendall's
-    pull-off, while on a layer whose ``a/K'(a)`` falls the contact recedes under the face
-    (:mod:`mdr_events.theory.layer_symbolic`, section 7); the discrete method runs it, each spring at its own Heß limit.
+def check_face(indenter, layer: Layer, friction: FrictionLaw) -> None:
+    """Refuse a flat face on a finite layer with Coulomb's part: the continuum runs Coulomb's part on a layer spring by
+    spring (:mod:`.play_springs`), reading the layer's profile tabulated for a paraboloid or power law; with ``τ0``
+    alone the spans run it (:class:`~.layer_punch_branch.LayerPunchBranch`: the face held, then receding under it
+    along ``d = −Δl(a)``), and the discrete method runs every law (each spring at its own Heß limit).
 
     Parameters
     ----------
@@ -257,20 +258,21 @@ def check_face(indenter, layer: Layer) -> None:
         The indenter.
     layer : Layer
         The body.
+    friction : FrictionLaw
+        The friction law.
 
     Raises
     ------
     ValueError
-        A flat face on a layer of finite thickness.
+        A flat face on a layer of finite thickness with a law with Coulomb's part.
     """
     from mdr_events.theory.kinds import theory_of
 
-    if not layer.is_half_space and theory_of(indenter).flat_face:
-        raise ValueError(f"profile={indenter!r} is not allowed on {layer.describe()} in the continuum method: its "
-                         "flat punch keeps the face's radius until Kendall's pull-off, while on a layer whose a/K'(a) "
-                         "falls (thin layers) the contact recedes under the face along d = -sqrt(4 pi a dgamma1/K'(a)) "
-                         "(layer_flat_punch_hess); allowed: method='discrete' (each spring at its own Heß limit), or "
-                         "the paraboloid or a PowerLaw")
+    if not layer.is_half_space and theory_of(indenter).flat_face and friction.coulomb_mu > 0.0:
+        raise ValueError(f"friction={friction.law!r} with profile={indenter!r} is not allowed on {layer.describe()} "
+                         "in the continuum method: Coulomb's part runs there spring by spring on the layer's profile "
+                         "tabulated for a paraboloid or power law; allowed: friction 'tau0' (the spans: the face "
+                         "held, then receding under it), or method='discrete'")
 
 
 def medium_of(params: Parameters, friction: FrictionLaw, profile, layer: Layer = HALF_SPACE) -> HalfSpaceMedium:
@@ -283,7 +285,7 @@ def medium_of(params: Parameters, friction: FrictionLaw, profile, layer: Layer =
     friction : FrictionLaw
         The friction law (on a finite layer ``"tau0"`` alone, :func:`check_law`).
     profile : PowerLaw, FlatPunch, TabulatedProfile or None
-        The indenter (on a finite layer the paraboloid, ``None``, or a power law).
+        The indenter (on a finite layer the paraboloid, ``None``, a power law or the flat punch).
     layer : Layer, default the half-space
         The body.
 
@@ -310,7 +312,7 @@ def layer_medium(params: Parameters, profile, layer: Layer) -> HalfSpaceMedium:
     ----------
     params : Parameters
         The material.
-    profile : PowerLaw or None
+    profile : PowerLaw, FlatPunch or None
         The indenter (``None``: the paraboloid of ``params.R``).
     layer : Layer
         The layer (finite thickness).
@@ -330,12 +332,11 @@ def layer_medium(params: Parameters, profile, layer: Layer) -> HalfSpaceMedium:
 
 @functools.lru_cache(maxsize=16)
 def _layer_medium(params: Parameters, indenter, layer: Layer) -> HalfSpaceMedium:
-    from mdr_events.contact.indenters import PowerLaw
-
     from .layer_media import LAYER_MEDIA
+    from .layer_normals import LAYER_NORMALS
 
-    check_face(indenter, layer)
-    if not isinstance(indenter, (Paraboloid, PowerLaw)):
+    if type(indenter) not in LAYER_NORMALS:
         raise ValueError(f"profile={indenter!r} is not allowed on {layer.describe()} in the continuum method; allowed: "
-                         "the paraboloid or a PowerLaw (the layer's profile is tabulated for these)")
+                         "the paraboloid, a PowerLaw or the FlatPunch (the layer's profile is tabulated for the first "
+                         "two, the punch's is 0 under its face)")
     return LAYER_MEDIA[layer.base](params, indenter, layer)

@@ -163,6 +163,8 @@ def _plan_inward(model: ContinuumModel, state: ContactState, segment: Segment) -
         jumped_from, a = a, on_branch
     growth += (Piece(a, math.inf, segment.xs, segment.vx / segment.vd, segment.ds),)
     t_end = _at_surface(model, segment, t, segment.t1, None)[0] if model.split else segment.t1
+    if segment.d(t_end) > model.grow.edge_depth:  # (a flat face's edge reached: the radius stops, the next plan pins it)
+        t_end = max(segment.time_at_depth(model.grow.edge_depth), t)
     return SpanPlan(Action.CONTACT, Regime.GROWING, t, t_end, None, a, state.force, (), growth, jumped_from)
 
 

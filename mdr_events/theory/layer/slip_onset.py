@@ -41,13 +41,14 @@ from mdr_events.theory.layer.compliance import LAMBDA_MAX
 from mdr_events.theory.layer.branch_scan import (beyond_tables, branch_jump_off, half_space_radii, layer_material,
                                                 scan_ceiling, stable_radius)
 from mdr_events.theory.job import rate_independent
+from mdr_events.theory.kinds import theory_of
 from mdr_events.theory.layer.relations import branch_depth
 from mdr_events.theory.layer.tangential_compliance import check_bonded
 from mdr_events.theory.layer.tangential_relations import sliding_cap
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_real, shown, validate_alpha
 
-__all__ = ["onset_depths", "critical_angle_on_layer", "thin_layer_onset_depth", "check_onset_contact",
+__all__ = ["onset_depths", "critical_angle_on_layer", "pull_off_depth", "first_onsets", "thin_layer_onset_depth", "check_onset_contact",
            "has_closed_forms", "SCAN_POINTS", "SCAN_SPAN", "ONSET_STEPS_PER_ANGLE", "ONSET_BYTES_PER_ANGLE",
            "CRITICAL_ANGLE_STEPS"]
 
@@ -125,6 +126,10 @@ def check_onset_contact(contact: Contact, what: str, d_max: float | None = None)
     TypeError, ValueError
         In one line, naming what is not allowed.
     """
+    if _is_punch(contact):  # (the face held, then receding: its own closed forms and root)
+        from mdr_events.theory.layer.punch_onset import check_punch_contact
+
+        return contact, check_punch_contact(contact, what, d_max)
     E_star, nu, layer = _kind_checked(contact, what)
     depth = check_real("d_max", PAPER_D_MAX if d_max is None else d_max, "a finite number > 0 (m)",
                        lambda value: value > 0.0)
@@ -134,6 +139,11 @@ def check_onset_contact(contact: Contact, what: str, d_max: float | None = None)
     if float(branch_depth(top, contact.indenter, E_star, nu, contact.adhesion.dgamma0, layer)) < depth:
         raise beyond_tables(depth, layer, top)
     return contact, depth
+
+
+def _is_punch(contact) -> bool:
+    """Whether ``contact`` is a flat punch's (:mod:`~mdr_events.theory.layer.punch_onset` computes its onsets)."""
+    return isinstance(contact, Contact) and theory_of(contact.indenter).flat_face
 
 
 def _kind_checked(contact: Contact, what: str) -> tuple[float, float, Layer]:
@@ -162,7 +172,8 @@ def has_closed_forms(contact: Contact) -> bool:
     bool
         ``True`` where :func:`critical_angle_on_layer` computes them.
     """
-    return (isinstance(contact.indenter, (Paraboloid, PowerLaw)) and type(contact.adhesion) is Adhesion
+    return ((isinstance(contact.indenter, (Paraboloid, PowerLaw)) or _is_punch(contact))
+            and type(contact.adhesion) is Adhesion
             and contact.friction.law == "tau0" and contact.layer.base is LayerBase.BONDED)
 
 
@@ -208,11 +219,50 @@ def _motion(contact: Contact, scenario: str, branch: str, adhesion: bool, d_max:
     return _Motion(logs, ratio_of(logs), ratio_of, depth_of, never, 0.0 if scenario == "A" else d_max)
 
 
+def _first_reaching(logs: np.ndarray, ratio: np.ndarray, ratio_of, tangent: np.ndarray):
+    """The first node at which the running maximum of ``ratio`` (``r`` at ``logs``) reaches each ``tangent``, the
+    running maximum, and the ``ln a`` where ``r`` reaches it, bisected between that node and the one before."""
+    reached = np.maximum.accumulate(ratio)
+    first = np.searchsorted(reached, tangent, side="left")
+    index = np.clip(first, 1, reached.size - 1)
+    lower, upper = logs[index - 1], logs[index]
+    for _ in range(_BISECTIONS):  # r(lower) < tan α ≤ r(upper) (the first node reaching it)
+        middle = 0.5 * (lower + upper)
+        above = ratio_of(middle) >= tangent
+        lower, upper = np.where(above, lower, middle), np.where(above, middle, upper)
+    return first, reached, upper
+
+
+def first_onsets(logs: np.ndarray, ratio_of, depth_of, tangent: np.ndarray, never: float) -> np.ndarray:
+    """The depth at which the travel per cap ``r`` first reaches each ``tangent`` along a motion scanned at ``logs``
+    (``ln a`` in the motion's order; ``never`` where it does not): the running maximum of ``r`` inverted by bisection.
+
+    Parameters
+    ----------
+    logs : numpy.ndarray
+        ``ln a`` of the scan, in the motion's order.
+    ratio_of : callable
+        ``r`` at any ``ln a`` (arrays).
+    depth_of : callable
+        The depth of the motion's branch at any ``a`` (arrays).
+    tangent : numpy.ndarray
+        ``tan α`` of each angle, each above ``r`` at the motion's start.
+    never : float
+        The depth of an angle the motion does not reach.
+
+    Returns
+    -------
+    numpy.ndarray
+        The depths (m), the shape of ``tangent``.
+    """
+    first, reached, upper = _first_reaching(logs, ratio_of(logs), ratio_of, tangent)
+    return np.where(first >= reached.size, never, depth_of(np.exp(upper)))
+
+
 def _onset_depths(motion: _Motion, tangent: np.ndarray, what: str, past_tables: bool) -> np.ndarray:
     """The depth at which ``r`` first reaches each ``tangent`` along the motion (``motion.never`` where it does not;
     ``+inf`` at 90°); an onset beyond the tables is refused, or ``nan`` with ``past_tables``."""
-    reached = np.maximum.accumulate(motion.ratio)
-    first = np.searchsorted(reached, tangent, side="left")
+    first, reached, upper = _first_reaching(motion.logs, motion.ratio, motion.ratio_of, tangent)
     missed = first >= reached.size
     beyond = missed & np.isfinite(tangent) if motion.never == math.inf else np.zeros(missed.shape, bool)
     if np.any(beyond) and not past_tables:
@@ -221,12 +271,6 @@ def _onset_depths(motion: _Motion, tangent: np.ndarray, what: str, past_tables: 
                          f"{LAMBDA_MAX:g} (the tables' reach) or {SCAN_SPAN:g} times the radius at d_max (the scan's); "
                          "allowed: angles below "
                          f"{float(np.degrees(np.arctan(reached[-1]))):.6g} degrees")
-    index = np.clip(first, 1, reached.size - 1)
-    lower, upper = motion.logs[index - 1], motion.logs[index]
-    for _ in range(_BISECTIONS):  # r(lower) < tan α ≤ r(upper) (the first node reaching it)
-        middle = 0.5 * (lower + upper)
-        above = motion.ratio_of(middle) >= tangent
-        lower, upper = np.where(above, lower, middle), np.where(above, middle, upper)
     depth = motion.depth_of(np.exp(upper))
     depth = np.where((first == 0) | (tangent == 0.0), motion.start_depth, depth)  # (α = 0: where the motion starts)
     return np.where(beyond, math.nan, np.where(missed, motion.never, depth))
@@ -274,12 +318,38 @@ def onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesio
     check_limits(limits).check(f"the slip onset at {alpha_deg.size} angles on {contact.layer.describe()}",
                                steps=ONSET_STEPS_PER_ANGLE * alpha_deg.size,
                                memory=ONSET_BYTES_PER_ANGLE * alpha_deg.size)
+    if _is_punch(contact):
+        from mdr_events.theory.layer.punch_onset import punch_onset_depths
+
+        return punch_onset_depths(alpha_deg, contact, scenario, adhesion, branch, depth)
     vertical = alpha_deg >= 90.0
     tangent = np.where(vertical, np.inf, np.tan(np.radians(np.where(vertical, 0.0, alpha_deg))))
     pulling = scenario == "B" and branch == "pull-off"
     motion = _motion(contact, scenario, branch, adhesion, depth)
     result = _onset_depths(motion, tangent.ravel(), "d_crit", past_tables).reshape(alpha_deg.shape)
     return np.where(vertical, -math.inf if pulling else math.inf, result)
+
+
+def pull_off_depth(contact: Contact) -> float:
+    """Scenario B's jump-off depth on the ``Δγ1`` branch of the contact's layer (the flat punch's: where its recession
+    stops, ``theory.layer.punch_recession.punch_jump_off``); 0 without adhesion.
+
+    Parameters
+    ----------
+    contact : Contact
+        A contact whose onsets :func:`onset_depths` computes.
+
+    Returns
+    -------
+    float
+        The depth (m, ≤ 0).
+    """
+    dgamma = contact.adhesion.dgamma1
+    if _is_punch(contact):
+        from mdr_events.theory.layer.punch_recession import punch_jump_off
+
+        return punch_jump_off(contact, dgamma)[0]
+    return branch_jump_off(contact, dgamma)[0] if dgamma > 0.0 else 0.0
 
 
 def critical_angle_on_layer(contact: Contact, scenario: str, adhesion: bool, final_depth: float | None,
@@ -315,6 +385,10 @@ def critical_angle_on_layer(contact: Contact, scenario: str, adhesion: bool, fin
         As :func:`onset_depths`; ``final_depth`` not above ``d_max``.
     """
     contact, depth = check_onset_contact(contact, "critical_angle", d_max)
+    if _is_punch(contact):
+        from mdr_events.theory.layer.punch_onset import punch_critical_angle
+
+        return punch_critical_angle(contact, scenario, adhesion, final_depth, depth)
     if scenario == "B":
         if not adhesion or contact.adhesion.dgamma1 == 0.0:
             return 90.0

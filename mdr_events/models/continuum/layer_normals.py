@@ -1,0 +1,181 @@
+"""What a kind of indenter makes of a layer's normal springs in the continuum (:class:`~.layer_media.LayerMedium`):
+the exponent of the profile's table, the branch its radius follows and the normal force, looked up by the indenter's
+type (:data:`LAYER_NORMALS`).
+
+==========================  ===========================================================================================
+kind                        the normal springs
+==========================  ===========================================================================================
+:class:`ProfileNormal`      a paraboloid or power law: the layer's profile ``g = κₙ c aⁿ γₙ(a/h)``, the branch
+                            :class:`~.layer_branch.LayerBranch`, ``F_N = F₀(a) + K(a)(d − g(a))``
+:class:`PunchNormal`        the flat punch: ``g = 0`` under the face, the branch
+                            :class:`~.layer_punch_branch.LayerPunchBranch` (the face held, then receding), ``F_N =
+                            K(a) d`` (``layer_flat_punch_force``)
+==========================  ===========================================================================================
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from mdr_events.contact.indenters import FlatPunch, Paraboloid, PowerLaw
+from mdr_events.contact.layer import Layer
+from mdr_events.parameters import Parameters
+
+__all__ = ["ProfileNormal", "PunchNormal", "LAYER_NORMALS"]
+
+
+class ProfileNormal:
+    """A paraboloid or power law on a layer: its profile's table, :class:`~.layer_branch.LayerBranch`, (10)."""
+
+    @staticmethod
+    def exponent(indenter) -> float:
+        """The power ``n`` of the profile (its table's).
+
+        Parameters
+        ----------
+        indenter : Paraboloid or PowerLaw
+            The indenter.
+
+        Returns
+        -------
+        float
+            ``n``.
+        """
+        from mdr_events.theory.layer.relations import _power_law
+
+        return _power_law(indenter)[1]
+
+    @staticmethod
+    def branch(params: Parameters, work: float, indenter, layer: Layer, factors):
+        """The branch of ``work``.
+
+        Parameters
+        ----------
+        params : Parameters
+            The material.
+        work : float
+            The work of adhesion (J/m²).
+        indenter : Paraboloid or PowerLaw
+            The indenter.
+        layer : Layer
+            The layer.
+        factors : NormalFactors
+            The layer's normal factors.
+
+        Returns
+        -------
+        LayerBranch
+            The branch.
+        """
+        from .layer_branch import LayerBranch
+
+        return LayerBranch(params, work, indenter, layer, factors)
+
+    @staticmethod
+    def force(params: Parameters, indenter, layer: Layer, depth, radius):
+        """``F_N = F₀(a) + K(a)(d − g(a))`` (generalised (10), :func:`~mdr_events.theory.layer.normal_force`).
+
+        Parameters
+        ----------
+        params : Parameters
+            The material.
+        indenter : Paraboloid or PowerLaw
+            The indenter.
+        layer : Layer
+            The layer.
+        depth, radius : float or array_like
+            ``d`` and ``a`` (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``F_N`` (N).
+        """
+        from mdr_events.theory.layer import normal_force
+
+        # (the relation unchecked: the continuum hands it valid radii and depths, and its arguments' checks cost a
+        # third of the call)
+        with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):  # (as the checked one)
+            return normal_force.__wrapped__(depth, radius, indenter, params.E_star, params.nu, layer)
+
+
+class PunchNormal(ProfileNormal):
+    """The flat punch on a layer: ``g = 0`` under the face, :class:`~.layer_punch_branch.LayerPunchBranch`,
+    ``F_N = K(a) d``."""
+
+    @staticmethod
+    def exponent(indenter) -> float:
+        """2: the normal table of the paraboloid's exponent, whose ``Θ`` and ``Φ`` the punch reads (its profile
+        factor unread, ``g = 0``).
+
+        Parameters
+        ----------
+        indenter : FlatPunch
+            The punch.
+
+        Returns
+        -------
+        float
+            2.
+        """
+        return 2.0
+
+    @staticmethod
+    def branch(params: Parameters, work: float, indenter, layer: Layer, factors):
+        """The face held, then receding (:class:`~.layer_punch_branch.LayerPunchBranch`).
+
+        Parameters
+        ----------
+        params : Parameters
+            The material.
+        work : float
+            The work of adhesion (J/m²).
+        indenter : FlatPunch
+            The punch.
+        layer : Layer
+            The layer.
+        factors : NormalFactors
+            The layer's normal factors.
+
+        Returns
+        -------
+        LayerPunchBranch
+            The branch.
+        """
+        from .layer_punch_branch import LayerPunchBranch
+
+        return LayerPunchBranch(params, work, indenter, layer, factors)
+
+    @staticmethod
+    def force(params: Parameters, indenter, layer: Layer, depth, radius):
+        """``F_N = K(a) d`` (``layer_flat_punch_force``; the springs let go store nothing,
+        ``layer_flat_punch_receding_force``), ``K`` the layer's punch stiffness at the contact's radius.
+
+        Parameters
+        ----------
+        params : Parameters
+            The material.
+        indenter : FlatPunch
+            The punch.
+        layer : Layer
+            The layer.
+        depth, radius : float or array_like
+            ``d`` and ``a`` (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``F_N`` (N; 0 where ``a = 0``).
+        """
+        from mdr_events.theory.layer import punch_stiffness
+        from mdr_events.theory.layer_symbolic import derive_layer_model
+
+        radius = np.asarray(radius, dtype=float)
+        with np.errstate(invalid="ignore"):
+            stiffness = punch_stiffness.__wrapped__(np.where(radius > 0, radius, 0.0), params.E_star, params.nu, layer)
+        return np.asarray(derive_layer_model()["layer_flat_punch_force"].numeric(stiffness, depth), dtype=float)
+
+
+#: The normal springs of each kind of indenter on a layer, by its type.
+LAYER_NORMALS: dict[type, type[ProfileNormal]] = {Paraboloid: ProfileNormal, PowerLaw: ProfileNormal,
+                                                  FlatPunch: PunchNormal}

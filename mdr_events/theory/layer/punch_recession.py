@@ -1,0 +1,102 @@
+r"""The flat punch's receding branch on a layer: where its contact stops receding under the face.
+
+Part of :mod:`mdr_events.theory.layer`. Under the face every spring rests on ``g = 0``; once the edge's spring reaches
+Heß's limit, ``d = −Δl(a₀)``, the contact recedes along ``d = −Δl(a)`` while ``Δl`` falls with the radius
+(:mod:`mdr_events.theory.layer_symbolic`, section 8). With ``Δl = sqrt(2π a Δγ/E*)/Θ(1; a/h)``,
+
+.. math:: \frac{\mathrm{d}\ln\Delta l}{\mathrm{d}a} = \frac{1}{2a} - \frac{\Theta'(\lambda)}{h\,\Theta(\lambda)},
+
+whose sign is that of ``K' − a K''`` (``layer_flat_punch_receding_slope``): the recession stops, and the rest of the
+contact comes off at once, at the largest radius below the face where it turns non-negative (:func:`receding_radius`;
+the face itself where it is not negative there: the half-space's jump, Kendall's depth on the layer). On the half-space
+(``Θ = 1``) it is ``1/(2a) > 0`` at every radius.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from mdr_events.theory.layer.scalar_factors import NormalFactors
+
+__all__ = ["receding_radius", "hess_log_slope", "RECEDING_SCAN"]
+
+#: Points of the scan from the face inwards, geometric down to ``1e-6`` of it, that brackets where the recession stops
+#: (Brent's method refines): ``d ln Δl/da → +∞`` as ``a → 0`` (the half-space's ``1/(2a)``), so it always turns there.
+RECEDING_SCAN = 97
+
+
+def hess_log_slope(factors: NormalFactors, a: float) -> float:
+    """``d ln Δl/da = 1/(2a) − Θ'/(hΘ)`` at the radius ``a`` (1/m): negative where the punch's contact recedes.
+
+    Parameters
+    ----------
+    factors : NormalFactors
+        The layer's normal factors for one float.
+    a : float
+        The radius (m, > 0).
+
+    Returns
+    -------
+    float
+        The slope (1/m).
+    """
+    theta, theta_slope = factors.edge_factor(a)
+    return 0.5 / a - theta_slope / (factors.h * theta)
+
+
+def receding_radius(factors: NormalFactors, face: float) -> float:
+    """The radius where the flat punch's receding contact comes off: the largest radius ``<= face`` at which
+    ``d ln Δl/da`` turns non-negative going inwards (the face where it is not negative there).
+
+    Parameters
+    ----------
+    factors : NormalFactors
+        The layer's normal factors for one float.
+    face : float
+        The punch's radius ``a₀`` (m), within the tables.
+
+    Returns
+    -------
+    float
+        The jump-off radius (m).
+    """
+    from scipy.optimize import brentq
+
+    def slope(a: float) -> float:
+        return hess_log_slope(factors, a)
+
+    if not slope(face) < 0.0:
+        return face
+    radii = face * np.geomspace(1.0, 1e-6, RECEDING_SCAN)
+    for outer, inner in zip(radii.tolist(), radii[1:].tolist()):
+        if not slope(inner) < 0.0:
+            return float(brentq(slope, inner, outer, xtol=1e-15 * inner, rtol=4.0 * np.finfo(float).eps))
+    return math.nan  # (unreachable: the half-space's 1/(2a) wins below 1e-6 of any face within the tables)
+
+
+def punch_jump_off(contact, dgamma: float) -> tuple[float, float]:
+    """The flat punch's jump-off on the contact's layer under depth control: ``(−Δl(a_j), a_j)`` with ``a_j`` from
+    :func:`receding_radius` (``(0, a₀)`` without adhesion: the face comes off at the surface).
+
+    Parameters
+    ----------
+    contact : Contact
+        A flat punch on a layer of finite thickness (its radius within the tables).
+    dgamma : float
+        The work of adhesion of the way out (J/m², ≥ 0).
+
+    Returns
+    -------
+    tuple of (float, float)
+        The depth (m, ≤ 0) and the radius (m).
+    """
+    from mdr_events.theory.layer.relations import hess_elongation
+
+    face = float(contact.indenter.radius)
+    if dgamma == 0.0:
+        return 0.0, face
+    elastomer, layer = contact.elastomer, contact.layer
+    radius = receding_radius(NormalFactors(elastomer.nu, layer, 2.0), face)
+    return -float(hess_elongation(radius, dgamma, elastomer.E_star, elastomer.nu, layer)), radius
