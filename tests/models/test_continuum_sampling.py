@@ -176,3 +176,28 @@ def test_inverses_at_samples_are_the_iterations_fronts_to_the_roots_conditioning
         assert np.max(excess) <= 1.0, np.max(excess)
         checked += np.count_nonzero(found[reached] != iterated[reached])
     assert checked > 0  # (the closed form is not the iteration: the comparison compares)
+
+
+@pytest.mark.parametrize("label", ["A 20°", "B 30°", "zigzag", "reciprocating"])
+def test_evaluate_at_once_is_evaluate_span_by_span(paper, label):
+    """``evaluate`` takes each branch's radii of all its spans in one call (``_sampled_radii``) and ``F_N`` of every
+    span in one (``_fill_normal_force``): the values of each span evaluated alone (``evaluate_span`` with its own radii
+    and force) bit for bit, on runs of a few spans and of many (a zigzag, ten fretting cycles)."""
+    from mdr_events.models.continuum.solution import _span_rows, evaluate_span
+
+    if label == "zigzag":
+        path = me.Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)], paper.v)
+    elif label == "reciprocating":
+        x_c, amplitude = paper.d_max / np.tan(np.radians(20.0)), 2e-5
+        turns = [(x_c + amplitude * (1 if i % 2 == 0 else -1), paper.d_max) for i in range(20)]
+        path = me.Path([(0.0, 0.0), (x_c, paper.d_max), *turns, (x_c, paper.d_max), (x_c, -1e-4)], paper.v)
+    else:
+        path = getattr(me.Path, f"scenario_{label[0]}")(float(label.split()[1].rstrip("°")), paper)
+    solution = solve_path(paper, path)
+    times = sample_times([solution.end_time], [path.duration - path.first_contact_time()], 2001)
+    at_once = solution.evaluate_at(times)
+    spans = _span_rows(solution.span_index(times), times <= solution.end_time, len(solution.spans))
+    assert sum(solution.spans[index].regime is not Regime.PINNED for index, _ in spans) >= 3
+    for index, rows in spans:
+        for name, values in evaluate_span(solution, index, times[rows]).items():
+            np.testing.assert_array_equal(at_once[name][rows], values, err_msg=f"{name}, span {index}")
