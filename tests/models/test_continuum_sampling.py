@@ -133,3 +133,67 @@ def test_evaluate_in_any_order_is_evaluate_in_order(paper, scenario, angle):
     in_order, any_order = solution.evaluate_at(times), solution.evaluate_at(times[shuffled])
     for name, values in in_order.items():
         np.testing.assert_array_equal(any_order[name], values[shuffled], err_msg=name)
+
+
+
+#: Horner's rounding of the branch's quartic in ``s = √ξ``, relative to the sum of its terms' magnitudes: ``2n u = 4 ε``
+#: (``n = 4`` multiply-adds; Higham, Accuracy and Stability, 5.1). A root moves by that change over ``|p'(s)|``.
+HORNER_ROUNDING = 4 * EPS
+#: What each route adds to the conditioning: the iteration stops on a step of 4 ε of ``s`` (``positive_polynomial_root``'s
+#: default, ``Branch.radii``), the closed form's Newton polish leaves a few ulp, and ``ξ = s²`` rounds by half an ulp.
+ROUTE_SHARE = 8 * EPS
+
+
+def test_inverses_at_samples_are_the_iterations_fronts_to_the_roots_conditioning(anchors):
+    """``AnchorMap.inverses`` (a run's samples: the branch's closed-form quartic root, ``sample_radii``) against the
+    route it replaced, the iteration over the whole array (``Branch.radii``, a level with no radius the piece's start),
+    level by level on a rising and a falling piece, the levels from beyond the fold to deep: the same levels unreached,
+    the others within twice each route's distance from the true root, the polynomial's rounding over its slope plus
+    :data:`ROUTE_SHARE` (the fold itself: both iterate there)."""
+    branch = anchors.attach
+    checked = 0
+    for piece in anchors.pieces[1:]:
+        fold, deepest = branch.jump_off_depth, branch.depth(1.2 * piece.end)
+        depths = np.concatenate([fold * (1.0 - np.logspace(-16.0, -1.0, 40)), [fold, 1.5 * fold],
+                                 np.linspace(fold, deepest, 400)])
+        levels = piece.x0 + piece.ratio * (depths - piece.d_ref)
+        found = anchors.inverses(piece, levels)
+        depths = piece.d_ref + (levels - piece.x0) / piece.ratio  # (as inverses reads them back)
+        iterated = branch.radii(depths)
+        reached = ~np.isnan(iterated)
+        assert np.count_nonzero(~reached) > 0 and np.all(found[~reached] == piece.start)
+        s = np.sqrt(iterated[reached])
+        linear, constant = (np.broadcast_to(c, depths.shape)[reached] for c in
+                            branch._array_coefficients(depths, *branch._arguments)[3:])
+        with np.errstate(divide="ignore"):
+            shift = HORNER_ROUNDING * (s**4 + np.abs(linear) * s + np.abs(constant)) / np.abs(4.0 * s**3 + linear)
+        allowed = 2.0 * 2.0 * (np.minimum(shift, s) + ROUTE_SHARE * s) * s  # (dξ = 2 s ds)
+        excess = np.abs(found[reached] - iterated[reached]) / allowed
+        assert np.max(excess) <= 1.0, np.max(excess)
+        checked += np.count_nonzero(found[reached] != iterated[reached])
+    assert checked > 0  # (the closed form is not the iteration: the comparison compares)
+
+
+@pytest.mark.parametrize("label", ["A 20°", "B 30°", "zigzag", "reciprocating"])
+def test_evaluate_at_once_is_evaluate_span_by_span(paper, label):
+    """``evaluate`` takes each branch's radii of all its spans in one call (``_sampled_radii``) and ``F_N`` of every
+    span in one (``_fill_normal_force``): the values of each span evaluated alone (``evaluate_span`` with its own radii
+    and force) bit for bit, on runs of a few spans and of many (a zigzag, ten fretting cycles)."""
+    from mdr_events.models.continuum.solution import _span_rows, evaluate_span
+
+    if label == "zigzag":
+        path = me.Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)], paper.v)
+    elif label == "reciprocating":
+        x_c, amplitude = paper.d_max / np.tan(np.radians(20.0)), 2e-5
+        turns = [(x_c + amplitude * (1 if i % 2 == 0 else -1), paper.d_max) for i in range(20)]
+        path = me.Path([(0.0, 0.0), (x_c, paper.d_max), *turns, (x_c, paper.d_max), (x_c, -1e-4)], paper.v)
+    else:
+        path = getattr(me.Path, f"scenario_{label[0]}")(float(label.split()[1].rstrip("°")), paper)
+    solution = solve_path(paper, path)
+    times = sample_times([solution.end_time], [path.duration - path.first_contact_time()], 2001)
+    at_once = solution.evaluate_at(times)
+    spans = _span_rows(solution.span_index(times), times <= solution.end_time, len(solution.spans))
+    assert sum(solution.spans[index].regime is not Regime.PINNED for index, _ in spans) >= 3
+    for index, rows in spans:
+        for name, values in evaluate_span(solution, index, times[rows]).items():
+            np.testing.assert_array_equal(at_once[name][rows], values, err_msg=f"{name}, span {index}")

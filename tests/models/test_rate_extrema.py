@@ -196,3 +196,26 @@ def test_a_tie_near_zero_is_held_to_the_run_s_rounding_as_the_paper_s(runs, monk
     expected = (better, elsewhere) if taken else (best, float(scan.times[at]))
     assert (found["tangential_force_max"], found["tangential_force_max_time"] + start) == pytest.approx(expected,
                                                                                                        rel=1e-15)
+
+
+def test_a_step_whose_constant_term_outweighs_the_rest_has_no_stationary_point():
+    """``stationary.ROOT_FREE_MARGIN``: a step of a dense output whose derivative's Chebyshev coefficients have
+    ``|c₀|`` just above the margin times the others' sum is left unsought; its derivative then has no root that the
+    search keeps (real to ``IMAGINARY_SHARE``, within ``[-1, 1]``), on derivatives built to sit at the boundary with
+    every sign and weight of the others (one coefficient alone puts a root at ``∓c₀/c₁``, inside [-1, 1] for a margin
+    below 1)."""
+    from numpy.polynomial import chebyshev
+
+    from mdr_events.models.continuum.stationary import DENSE_DEGREE, IMAGINARY_SHARE, ROOT_FREE_MARGIN
+
+    rng = np.random.default_rng(28)
+    for trial in range(400):
+        others = rng.standard_normal(DENSE_DEGREE - 1) * (rng.uniform(size=DENSE_DEGREE - 1) < 0.5 + trial / 800)
+        others[trial % (DENSE_DEGREE - 1)] = rng.choice([-1.0, 1.0])  # (at least one)
+        derivative = np.concatenate([[rng.choice([-1.0, 1.0]) * ROOT_FREE_MARGIN * (1 + 1e-9)
+                                      * np.sum(np.abs(others))], others])
+        values = chebyshev.chebval(chebyshev_nodes(), chebyshev.chebint(derivative))
+        kept = [root for root in chebyshev.chebroots(derivative)
+                if abs(root.imag) <= IMAGINARY_SHARE and abs(root.real) <= 1.0]
+        assert not kept, (derivative, kept)
+        assert not [root for root in derivative_roots(values) if abs(root) <= 1.0], derivative

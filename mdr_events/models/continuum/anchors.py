@@ -468,7 +468,10 @@ class AnchorMap:
             (p.start if depth <= self.attach.jump_off_depth else beyond)
 
     def inverses(self, p: Piece, levels: np.ndarray) -> np.ndarray:
-        """:meth:`inverse` for an array of levels.
+        """:meth:`inverse` for an array of levels (a run's samples: the sliding length :func:`~.solution.evaluate`
+        gives), by the branch's :meth:`~.branch.Branch.sample_radii`: on the paraboloid with adhesion the quartic's
+        root in closed form, a few ulp from :meth:`inverse`'s iteration (which the events read), without its steps
+        over the whole array; any other branch, its ``radii``.
 
         Parameters
         ----------
@@ -483,7 +486,7 @@ class AnchorMap:
             The coordinates ``ξ`` (m), the shape of ``levels``.
         """
         depth = p.d_ref + (np.asarray(levels, dtype=float) - p.x0) / p.ratio
-        xi = self.attach.radii(depth)
+        xi = self.attach.sample_radii(depth)
         return np.where(np.isnan(xi), self._unreached(p, depth), xi)
 
     def integral(self, p: Piece, lower: float, upper: float) -> float:

@@ -153,21 +153,39 @@ def _span_radius(model, span: Span, d: np.ndarray, sampled: bool = False) -> np.
     the branch's :meth:`~.branch.Branch.sample_radii` (a run's samples: the closed form where there is one)."""
     if span.regime is not Regime.GROWING and span.regime is not Regime.SHRINKING:
         return np.full(np.shape(d), span.pinned_radius)
+    if not sampled:
+        branch = model.grow if span.regime is Regime.GROWING else model.shrink
+        return branch.radii(np.maximum(d, branch.jump_off_depth))
+    return _sampled_radii(model, [span], [d])[0]
+
+
+def _sampled_radii(model, spans: list[Span], depths: list[np.ndarray]) -> list[np.ndarray]:
+    """The sampled radii (:func:`_span_radius`) of several moving spans of one branch at their depths, in one call of
+    the branch's :meth:`~.branch.Branch.sample_radii` and at most one of its iteration (each element alone: the same
+    values as span by span, but where the iteration runs for several elements at once, at a span's end or near the
+    fold, to its stopping step)."""
     # (growing: on the Δγ0 branch, above its fold, a sample may sit below it to rounding; shrinking: the last sample
     # may sit on the fold to rounding)
-    branch = model.grow if span.regime is Regime.GROWING else model.shrink
-    depth = np.maximum(d, branch.jump_off_depth)
-    if not sampled:
-        return branch.radii(depth)
-    radii = branch.sample_radii(depth)
+    branch = model.grow if spans[0].regime is Regime.GROWING else model.shrink
+    depth = [np.maximum(d, branch.jump_off_depth) for d in depths]
     # a sample at a span's end (to END_ULPS of its depth) takes the iteration's radius: that of the span's event,
-    # which the pinned span after it holds bit for bit
-    ends = np.zeros(depth.shape, dtype=bool)
-    for end in (span.segment.d(span.t_start), span.segment.d(span.t_end)):
-        ends |= np.abs(depth - end) <= END_ULPS * np.spacing(abs(end))
+    # which the pinned span after it holds
+    ends = []
+    for span, each in zip(spans, depth):
+        at_end = np.zeros(each.shape, dtype=bool)
+        for end in (span.segment.d(span.t_start), span.segment.d(span.t_end)):
+            at_end |= np.abs(each - end) <= END_ULPS * np.spacing(abs(end))
+        ends.append(at_end)
+    depth, ends = (np.concatenate(parts) if len(parts) > 1 else parts[0] for parts in (depth, ends))
+    radii = branch.sample_radii(depth)
     if ends.any():
         radii[ends] = branch.radii(depth[ends])
-    return radii
+    return _split(radii, [len(d) for d in depths])
+
+
+def _split(values: np.ndarray, lengths: list[int]) -> list[np.ndarray]:
+    """``values`` cut into consecutive parts of ``lengths`` (views)."""
+    return np.split(values, np.cumsum(lengths)[:-1]) if len(lengths) > 1 else [values]
 
 
 def contact_radii(solution: PathSolution, times: np.ndarray) -> np.ndarray:
@@ -184,7 +202,8 @@ def contact_radii(solution: PathSolution, times: np.ndarray) -> np.ndarray:
 
 
 def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding: bool = True,
-                  zone: dict[str, np.ndarray] | None = None, radii: np.ndarray | None = None) -> dict[str, np.ndarray]:
+                  zone: dict[str, np.ndarray] | None = None, radii: np.ndarray | None = None,
+                  normal: bool = True) -> dict[str, np.ndarray]:
     """Every quantity of :data:`EVALUATED_QUANTITIES` at ``times`` (s from first contact) within span
     ``index``, as a vectorised function of time: the kinematics are linear, the radius follows its
     branch of (9) (or is pinned; ``radii``, where given, are the radii at ``times``), ``F_N`` is (10), ``F_x`` is
@@ -206,11 +225,15 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
         The compressed zone's run evaluated at ``times`` (Coulomb's law alone with adhesion).
     radii : numpy.ndarray, optional
         The contact radii at ``times`` (m), where already known.
+    normal : bool, default True
+        Whether to evaluate ``F_N``; without it a span in contact leaves ``normal_force`` out (:func:`evaluate` and
+        :func:`scan_spans` fill it for every span at once, :func:`_fill_normal_force`).
 
     Returns
     -------
     dict of str to numpy.ndarray
-        The quantities of :data:`EVALUATED_QUANTITIES` at ``times`` (SI units; ``sliding_fraction`` as above).
+        The quantities of :data:`EVALUATED_QUANTITIES` at ``times`` (SI units; ``sliding_fraction`` and
+        ``normal_force`` as above).
     """
     model = solution.model
     span = solution.spans[index]
@@ -224,7 +247,8 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
         return out
     a = np.asarray(radii, dtype=float) if radii is not None else _span_radius(model, span, d, sampled=True)
     out["contact_radius"] = a
-    out["normal_force"] = np.asarray(model.normal_force(d, a), dtype=float)  # (10)
+    if normal:
+        out["normal_force"] = np.asarray(model.normal_force(d, a), dtype=float)  # (10)
     if span.interpolant is None:
         force = np.full(t.shape, span.force)
     else:
@@ -342,11 +366,47 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
             out[name][first] = 0.0
     # the compressed zone's run (Coulomb's law alone with adhesion) evaluated once, not span by span
     zone = evaluate(solution.compressed, times) if solution.compressed is not None else None
-    for index, rows in _span_rows(owner, inside, len(solution.spans)):
+    spans_rows = _span_rows(owner, inside, len(solution.spans))
+    radii = _moving_radii(solution, times, spans_rows)
+    filled = []
+    for index, rows in spans_rows:
         part = {name: values[rows] for name, values in zone.items()} if zone is not None else None
-        for name, values in evaluate_span(solution, index, times[rows], zone=part).items():
+        span = evaluate_span(solution, index, times[rows], zone=part, radii=radii.get(index), normal=False)
+        for name, values in span.items():
             out[name][rows] = values
+        filled.append(span)
+    for (_, rows), force in zip(spans_rows, _fill_normal_force(solution.model, filled)):
+        out["normal_force"][rows] = force
     return out
+
+
+def _fill_normal_force(model: ContinuumModel, filled: list[dict[str, np.ndarray]]) -> list[np.ndarray]:
+    """``F_N`` (10) of spans evaluated without it (:func:`evaluate_span`'s ``normal=False``), in one call of the model's
+    normal force over all their samples in contact (element by element: the same values as span by span); each span's
+    dict gains it, and the list of each span's is returned."""
+    contact = [span for span in filled if "normal_force" not in span]
+    if contact:
+        depth, radius = (np.concatenate([span[name] for span in contact])
+                         for name in ("indentation_depth", "contact_radius"))
+        force = np.asarray(model.normal_force(depth, radius), dtype=float)  # (10)
+        for span, part in zip(contact, _split(force, [len(span["contact_radius"]) for span in contact])):
+            span["normal_force"] = part
+    return [span["normal_force"] for span in filled]
+
+
+def _moving_radii(solution: PathSolution, times: np.ndarray,
+                  spans_rows: list[tuple[int, slice | np.ndarray]]) -> dict[int, np.ndarray]:
+    """The radii at ``times`` of each moving span of ``spans_rows`` (:func:`_span_rows`) by its index, each branch's
+    spans at once (:func:`_sampled_radii`: its closed form called once, not once per span)."""
+    found = {}
+    for regime in (Regime.GROWING, Regime.SHRINKING):
+        members = [(index, rows) for index, rows in spans_rows if solution.spans[index].regime is regime]
+        if not members:
+            continue
+        spans = [solution.spans[index] for index, _ in members]
+        depths = [span.segment.d(solution.t_contact + times[rows]) for span, (_, rows) in zip(spans, members)]
+        found.update(zip([index for index, _ in members], _sampled_radii(solution.model, spans, depths)))
+    return found
 
 
 def _span_rows(owner: np.ndarray, inside: np.ndarray, count: int) -> list[tuple[int, slice | np.ndarray]]:
@@ -443,7 +503,8 @@ def scan_spans(solution: PathSolution) -> ExtremumScan:
         else:
             grid, radii = np.linspace(lower, upper, count), None
         times.append(grid)
-        values.append(evaluate_span(solution, index, grid, sliding=False, radii=radii))
+        values.append(evaluate_span(solution, index, grid, sliding=False, radii=radii, normal=False))
+    _fill_normal_force(solution.model, values)
     return ExtremumScan(times, values, {})
 
 

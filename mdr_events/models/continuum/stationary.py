@@ -99,6 +99,14 @@ def derivative_roots(values: np.ndarray, degree: int = DENSE_DEGREE) -> list[flo
             if abs(root.imag) <= IMAGINARY_SHARE]
 
 
+#: A step's derivative ``Σ c_k T_k`` (degree ``n = DENSE_DEGREE − 1``) has no root that :func:`_dense_output_roots`
+#: keeps where ``|c₀| > ROOT_FREE_MARGIN Σ_{k≥1} |c_k|``: on the Bernstein ellipse of ``ρ = 1.01`` every
+#: ``|T_k| ≤ ρ^k ≤ ρⁿ = 1.0615``, so the sum cannot vanish inside it, and the ellipse (half-axes 1.00005 and 0.00995)
+#: holds every root kept (imaginary part within :data:`IMAGINARY_SHARE`, real part within the step, ``[-1, 1]`` to
+#: rounding); the 3.5 % left covers the eigenvalue solver's backward error (some ulp of the coefficients). Such a step's
+#: roots are not sought (an eigenvalue problem each).
+ROOT_FREE_MARGIN = 1.1
+
 #: ``brentq``'s relative tolerance on the stationary radius of ``F_N`` (a few ulp).
 RADIUS_RTOL = 4 * EPS
 
@@ -210,9 +218,13 @@ def _dense_output_roots(interpolant, low: float, high: float) -> list[float]:
         values = interpolant.interpolants[int(steps[0])](nodes[0])
     else:
         values = force_values(interpolant, nodes.reshape(-1)).reshape(nodes.shape)
+    coefficients = values @ _DERIVATIVE.T  # (each step's derivative, for the test of ROOT_FREE_MARGIN)
+    # (a step whose derivative is not finite is sought, as before: its eigenvalue problem refuses it)
+    sought = ~(np.abs(coefficients[:, 0]) > ROOT_FREE_MARGIN * np.sum(np.abs(coefficients[:, 1:]), axis=1))
     roots = []
-    for centre, half, lower, upper, row in zip(centres.tolist(), halves.tolist(), lowers[steps].tolist(),
-                                               uppers[steps].tolist(), values):
+    for centre, half, lower, upper, row in zip(centres[sought].tolist(), halves[sought].tolist(),
+                                               lowers[steps][sought].tolist(), uppers[steps][sought].tolist(),
+                                               values[sought]):
         for root in derivative_roots(row):
             var = centre + half * root
             if lower <= var <= upper:
