@@ -33,9 +33,11 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def _environment(prefix: str) -> dict[str, str]:
-    """``make test``'s environment with this folder on ``PYTHONPATH`` (the plugin) and the records' prefix."""
+    """``make test``'s environment (one OpenBLAS thread, bytecode written) with this folder on ``PYTHONPATH`` (the
+    plugin) and the records' prefix."""
     path = os.pathsep.join(filter(None, [str(ROOT), str(Path(__file__).parent), os.environ.get("PYTHONPATH")]))
-    return {**os.environ, "PYTHONPATH": path, "OPENBLAS_NUM_THREADS": "1", "MDR_TEST_CLOCK_OUT": prefix}
+    return {**os.environ, "PYTHONPATH": path, "OPENBLAS_NUM_THREADS": "1", "PYTHONDONTWRITEBYTECODE": "",
+            "MDR_TEST_CLOCK_OUT": prefix}
 
 
 def _collection_cpu(selection: list[str]) -> float:
