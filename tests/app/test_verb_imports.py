@@ -2,8 +2,8 @@
 most of a small run's time.
 
 Each check runs the verb in a fresh interpreter (this one has imported everything) and reads ``sys.modules`` after
-it (the two runs one after the other in one interpreter, the second checked for what both loaded). What may not be
-loaded, and why it is not needed:
+it (the helps one after the other in one interpreter, and the two runs in another, each checked for what it and those
+before it loaded). What may not be loaded, and why it is not needed:
 
 - ``scipy.stats``: the fit's Student t quantile alone uses it, not the fit's schema every result file is checked
   against (:mod:`mdr_events.analysis.fit_diagnostics`);
@@ -78,7 +78,19 @@ def test_a_run_loads_neither_scipy_stats_nor_dask_distributed(runs_loaded, verb)
     assert not loaded & set(NOT_USED_BY_A_RUN), sorted(loaded & set(NOT_USED_BY_A_RUN))
 
 
-@pytest.mark.parametrize("verb", ["phase-diagram", "sweep", "run", "reproduce", "derive"])
-def test_a_verbs_help_loads_no_heavy_library(tmp_path, verb):
-    (loaded,) = loaded_after([[verb, "--help"]], tmp_path)
+#: The verbs whose ``--help`` is checked.
+HELPED = ("phase-diagram", "sweep", "run", "reproduce", "derive")
+
+
+@pytest.fixture(scope="module")
+def helps_loaded(tmp_path_factory):
+    """What each verb's ``--help`` had loaded, itself and the helps before it, in one fresh interpreter (a start-up
+    each paid once; each help checked for what it and those before it loaded: stricter than its own)."""
+    folder = tmp_path_factory.mktemp("helps")
+    return dict(zip(HELPED, loaded_after([[verb, "--help"] for verb in HELPED], folder)))
+
+
+@pytest.mark.parametrize("verb", HELPED)
+def test_a_verbs_help_loads_no_heavy_library(helps_loaded, verb):
+    loaded = helps_loaded[verb]
     assert not loaded & set(NOT_USED_BY_HELP), sorted(loaded & set(NOT_USED_BY_HELP))
