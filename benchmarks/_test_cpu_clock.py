@@ -2,7 +2,9 @@
 console-script tests run subprocesses) and wall time, one JSON line per test, in a file per pytest-xdist worker.
 
 Loaded with ``-p _test_cpu_clock`` (this folder on ``PYTHONPATH``); the files are ``$MDR_TEST_CLOCK_OUT_<worker>.jsonl``.
-Each worker's first line, ``"<start>"``, holds the CPU its start-up and collection took.
+Each worker's first line, ``"<start>"``, holds the CPU its start-up and collection took; pytest-xdist's controller
+(which runs no test: it hands them out and reports them) writes its own CPU in one line, ``"<controller>"``, to
+``$MDR_TEST_CLOCK_OUT_controller.jsonl``.
 """
 
 from __future__ import annotations
@@ -40,3 +42,12 @@ def pytest_runtest_protocol(item, nextitem):
     cpu, wall = _cpu(), time.perf_counter()
     yield
     _write({"id": item.nodeid, "cpu": _cpu() - cpu, "wall": time.perf_counter() - wall})
+
+
+def pytest_unconfigure(config) -> None:
+    """pytest-xdist's controller: its own CPU over the session (its start-up, the workers' reports taken in), without
+    its children's (the workers, whose records are their own)."""
+    if getattr(config.option, "numprocesses", None) and not hasattr(config, "workerinput"):
+        used = os.times()
+        with open(f"{os.environ[OUT_VARIABLE]}_controller.jsonl", "a", encoding="utf-8") as stream:
+            stream.write(json.dumps({"id": "<controller>", "cpu": used.user + used.system, "wall": 0.0}) + "\n")

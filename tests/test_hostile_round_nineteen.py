@@ -7,6 +7,7 @@ indenter and the readers) are listed with their outcomes in the issue's closing 
 
 from __future__ import annotations
 
+import functools
 import warnings
 
 import numpy as np
@@ -25,9 +26,18 @@ WAYPOINTS = np.array([(0.0, 0.0), (0.0, PAPER.d_max), (0.0, -200e-6)])
 
 def _curve(speed: float, noise: float | None, samples: int = 25) -> RateMeasurement:
     """The law's normal force along the vertical path at ``speed`` (no noise added), with ``noise`` declared."""
+    return RateMeasurement(*_solved_curve(speed, samples), noise)
+
+
+@functools.cache
+def _solved_curve(speed: float, samples: int) -> tuple[me.Path, np.ndarray, np.ndarray]:
+    """The path, times and normal force of :func:`_curve`, solved once per speed in this module (ten curves of two
+    speeds, ~0.4 s of CPU each); the arrays read-only, so that no test changes another's."""
     path = me.Path(WAYPOINTS, speed=speed)
     times = np.linspace(path.first_contact_time(), path.duration, samples)
-    return RateMeasurement(path, times, solve_edge(PAPER, path, LAW).normal_force(times, path), noise)
+    force = solve_edge(PAPER, path, LAW).normal_force(times, path)
+    times.flags.writeable = force.flags.writeable = False
+    return path, times, force
 
 
 # --- N1: the joint fit's weights 1/σ entered least_squares at their own scale: a noise of 1e-100 N ran SciPy's trust
