@@ -24,7 +24,8 @@ through the shared parsers (:mod:`mdr_events.app.inputs`), are in :mod:`mdr_even
 Importing this module imports the standard library only: ``mdr-events --help`` lists the verbs without loading the
 package, a verb's options are added (and what they need imported) when the verb is used
 (:meth:`~mdr_events.app.cli._options.Parser.filled`), and everything else is imported inside :func:`main`, where a
-Ctrl-C (even during the imports) prints one line and exits with 130.
+Ctrl-C (even during the imports) prints one line and exits with 130. The console script's entry point,
+:func:`mdr_events.app.console.console_main`, does the same while this module is imported.
 """
 
 from __future__ import annotations
@@ -42,6 +43,7 @@ from typing import Sequence
 from mdr_events._version import __version__
 from mdr_events.app.cli import derive, fit, lammps_check, phase_diagram, reproduce, run, simulate, sweep, validate
 from mdr_events.app.cli._options import Parser, UsageError
+from mdr_events.app.console import INTERRUPTED_LINES
 
 __all__ = ["main", "console_main", "build_parser", "UsageError", "EXIT_STATUSES", "VERBS"]
 
@@ -220,9 +222,9 @@ def _outcome(error: BaseException) -> tuple[str, int]:
     if isinstance(error, UsageError):
         return f"error: {error}", EXIT_BAD_INPUT
     if isinstance(error, _Terminated):
-        return "terminated (SIGTERM); no file was left half-written", 128 + signal.SIGTERM
+        return INTERRUPTED_LINES[signal.SIGTERM], 128 + signal.SIGTERM
     if isinstance(error, KeyboardInterrupt):
-        return "interrupted (Ctrl-C); no file was left half-written", 128 + signal.SIGINT
+        return INTERRUPTED_LINES[signal.SIGINT], 128 + signal.SIGINT
     if isinstance(error, INPUT_ERRORS):
         return f"error: {_message(error)}", EXIT_BAD_INPUT
     what = "the computation failed" if isinstance(error, COMPUTATION_ERRORS) else "internal error"
