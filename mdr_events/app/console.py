@@ -9,6 +9,10 @@ handlers that end the process as :func:`~mdr_events.app.cli.main` ends an interr
 :data:`INTERRUPTED_LINES`, and the status ``128 + signal``: 130 or 143) — nothing is written yet, so there is nothing
 to clean up. A Ctrl-C ignored (a background job) stays ignored. ``mdr_events.app.cli:console_main``, which installed
 environments' scripts still name, works as before.
+
+What runs before the handlers is the interpreter's own start-up, the package's ``__init__`` (kept to the standard
+library's small modules: no ``typing``, no ``re``) and this module: about 9 ms of imports unloaded, where the CLI's
+import took 50 ms more (``tests/app/test_console_start_up.py``).
 """
 
 from __future__ import annotations
