@@ -1,0 +1,45 @@
+"""The twenty-first hostile round (issue 32): each class of what failed, with the cases that showed it.
+
+The round's cases (the continuum's closed-form and quadrature spans at extreme ``R``, ``E``, angles, ``d_max``,
+speeds, ``τ0`` and adhesion; Ferrari's radii at extreme scales and paths to the pull-off fold; the flat punch on a
+layer in both methods; Coulomb's law spring by spring on a layer; the rate law's extrema and its LSODA runner's
+fallback; the heartbeat; readers with non-finite, Unicode and BOM/CRLF cells; study files; resource guards;
+interrupts at start-up and later, with Ctrl-C ignored too) are listed with their outcomes in the issue's closing note;
+what failed is below. The console script's start-up (a Ctrl-C while the command line is imported) is tested in
+``tests/app/test_console_start_up.py``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from hostile_checks import cli_one_line, one_line_naming
+from mdr_events.validation import MAX_COUNT
+
+PAPER = me.Parameters.paper()
+#: No resource limit: the time step's own bound is what refuses it.
+UNLIMITED = me.Limits(steps=np.inf, samples=np.inf, memory=np.inf)
+
+
+# --- U1: a time step whose count of steps is beyond the doubles' integers: `simulate --method discrete --dt 5e-324`
+# exited 3, "internal error (OverflowError: cannot convert float infinity to integer)" (int(inf) in the time grid's
+# size, before the limits were checked); with the limits off, `--dt 1e-18` reached NumPy's arange of 1e21 samples ---
+
+
+@pytest.mark.parametrize("dt, limits", [("5e-324", []), ("1e-18", ["--limit", "steps=inf", "--limit", "samples=inf",
+                                                                     "--limit", "memory=inf"])])
+def test_a_time_step_too_small_to_count_is_refused_naming_it(capsys, tmp_path, dt, limits):
+    err = cli_one_line(capsys, ["simulate", "--scenario", "A", "--alpha", "20", "--method", "discrete", "--dx", "2e-6",
+                                "--dt", dt, *limits, "--out", str(tmp_path / "o")])
+    assert f"dt={float(dt)!r} is not allowed" in err and "allowed: a time step in s >=" in err, err
+
+
+@pytest.mark.parametrize("dt", [1e-300, 1e-18])
+def test_without_limits_the_steps_count_bounds_the_time_step(dt):
+    message = one_line_naming(lambda: me.simulate(me.Contact.from_parameters(PAPER), me.Scenario("A", (20.0,)), method=me.Discrete(dx=2e-6, dt=dt),
+                                                  limits=UNLIMITED), f"dt={dt!r}")
+    longest = float(message.split("case's ")[1].split(" s")[0])
+    least = float(message.split("allowed: a time step in s >= ")[1].split(" ")[0])
+    assert least == pytest.approx(longest / MAX_COUNT, rel=1e-2), message  # (the least dt, printed to 3 digits)
