@@ -43,3 +43,31 @@ def test_without_limits_the_steps_count_bounds_the_time_step(dt):
     longest = float(message.split("case's ")[1].split(" s")[0])
     least = float(message.split("allowed: a time step in s >= ")[1].split(" ")[0])
     assert least == pytest.approx(longest / MAX_COUNT, rel=1e-2), message  # (the least dt, printed to 3 digits)
+
+
+# --- U2: an option after `--`: `fit --free tau0 -- run.csv --out o` (the usual way to end a multi-value option) said
+# "the following arguments are required: --out" although --out was given: every word after `--` is a file to
+# argparse. The message says so, and how to write it --------------------------------------------------------------
+
+
+@pytest.mark.parametrize("argv, option", [
+    (["fit", "--scenario", "A", "--alpha", "20", "--free", "tau0", "--", "{run}", "--out", "{out}"], "--out"),
+    (["validate", "--scenario", "A", "--alpha", "20", "--dx", "1e-6", "2e-6", "--", "{run}", "--out={out}"], "--out"),
+    (["fit", "{run}", "--scenario", "A", "--alpha", "20", "--out", "{out}", "--free", "tau0", "--", "--E", "1e6"],
+     "--E"),
+])
+def test_an_option_after_the_separator_is_named(capsys, tmp_path, argv, option):
+    run = tmp_path / "run.csv"
+    run.write_text("time,normal_force\n0,0\n1,1e-3\n2,0\n")
+    err = cli_one_line(capsys, [word.format(run=run, out=tmp_path / "o") for word in argv])
+    assert f"({option} comes after `--`, which ends the options" in err and "before `--`" in err, err
+
+
+def test_a_file_taken_by_a_multi_value_option_is_still_named(capsys, tmp_path):
+    """The hint of round twenty (a file among ``--free``'s values) stays, with or without a separator after it."""
+    run = tmp_path / "run.csv"
+    run.write_text("time,normal_force\n0,0\n1,1e-3\n2,0\n")
+    for tail in ([], ["--"]):
+        err = cli_one_line(capsys, ["fit", "--free", "tau0", str(run), "--scenario", "A", "--alpha", "20", "--out",
+                                    str(tmp_path / "o"), *tail])
+        assert f"--free took {str(run)!r}, a file" in err, err

@@ -236,27 +236,36 @@ def _outcome(error: BaseException) -> tuple[str, int]:
 FILE_SUFFIXES = (".csv", ".nc", ".toml")
 
 
-def _multi_value_options(parser: argparse.ArgumentParser, words: Sequence[str] | None = None) -> set[str]:
+def _options_taken(parser: argparse.ArgumentParser, words: Sequence[str] | None = None, *,
+                   multi_value: bool = True) -> set[str]:
     """The options, of every command (of those among ``words``, if given: the command line's, so that only the verb
-    used has its options added), that take several values (``--free E tau0``, ``--dx 1e-6 2e-6``)."""
+    used has its options added), that take several values (``--free E tau0``, ``--dx 1e-6 2e-6``); with
+    ``multi_value=False`` every option."""
     found = set()
     for action in parser.filled()._actions:  # noqa: SLF001 - argparse keeps its actions there
-        if action.nargs in ("+", "*") and action.option_strings:
+        if action.option_strings and (action.nargs in ("+", "*") or not multi_value):
             found.update(action.option_strings)
         for name, sub in action.choices.items() if isinstance(action, argparse._SubParsersAction) else ():
             if words is None or name in words:
-                found |= _multi_value_options(sub)
+                found |= _options_taken(sub, multi_value=multi_value)
     return found
 
 
 def _file_taken_as_value(argv: Sequence[str]) -> str:
     """A hint for a usage error: which multi-value option took a file as one of its values (``--free tau0 run.csv``:
-    argparse gives every word up to the next option to ``--free``), and how to write it; "" if none did."""
-    multi = _multi_value_options(build_parser(), argv)
+    argparse gives every word up to the next option to ``--free``), and how to write it; or which option came after
+    ``--`` (``--free tau0 -- run.csv --out o``: every word after ``--`` is a file, and ``--out`` was "required");
+    "" if neither."""
+    argv, parser = list(argv), build_parser()
+    separator = argv.index("--") if "--" in argv else len(argv)
+    options = _options_taken(parser, argv[:separator], multi_value=False)
+    after = [token.split("=", 1)[0] for token in argv[separator + 1:] if token.split("=", 1)[0] in options]
+    if after:
+        return (f" ({after[0]} comes after `--`, which ends the options: every word after it is taken as a file; write "
+                f"the options before `--`)")
+    multi = _options_taken(parser, argv[:separator])
     option = None
-    for token in argv:
-        if token == "--":
-            return ""
+    for token in argv[:separator]:
         if token.startswith("--"):
             option = token.split("=", 1)[0] if token.split("=", 1)[0] in multi else None
         elif option is not None and (os.path.isfile(token) or token.lower().endswith(FILE_SUFFIXES)):
