@@ -71,3 +71,58 @@ def test_a_file_taken_by_a_multi_value_option_is_still_named(capsys, tmp_path):
         err = cli_one_line(capsys, ["fit", "--free", "tau0", str(run), "--scenario", "A", "--alpha", "20", "--out",
                                     str(tmp_path / "o"), *tail])
         assert f"--free took {str(run)!r}, a file" in err, err
+
+
+# --- U3: a grid counted against the limits after it was read: `phase_diagram(params, 1e8 angles)` copied and sorted
+# the angles (validate_alpha, check_distinct) before its limits refused them: 4.9 GB peak and a minute against the
+# 2 GiB limit; the layer's curves and the critical angles against thickness read their depths or thicknesses first
+# too. Now each counts its grid (limits.values_in) before reading it ------------------------------------------------
+
+#: Values in the grid: far beyond the limits below, and a copy of them (8 bytes each, 8 MB) well above what the
+#: refusal itself allocates (a message and the limits: kilobytes).
+GRID = 10**6
+#: The least a reading of the grid allocates: one float per value (the conversion's copy; the sort needs more).
+ONE_COPY = 8 * GRID
+LOW = me.Limits(samples=10, steps=10, memory=2**20)
+
+
+def _layered():
+    return me.Contact(me.Elastomer(PAPER.E, PAPER.nu), me.Paraboloid(PAPER.R), me.Adhesion(PAPER.dgamma0, PAPER.dgamma1),
+                      me.FrictionLaw("tau0", tau0=PAPER.tau0), me.Layer(5e-3))
+
+
+#: Each entry point, given the contact on a layer and its grid (angles in degrees, depths or thicknesses in m).
+CALLS = {
+    "phase_diagram": lambda contact, grid: me.phase_diagram(PAPER, grid, limits=LOW),
+    "phase_diagram on a layer": lambda contact, grid: me.phase_diagram(contact, grid, limits=LOW),
+    "layer_normal_curve": lambda contact, grid: me.layer_normal_curve(contact, grid, limits=LOW),
+    "layer_pull_off_curve": lambda contact, grid: me.layer_pull_off_curve(contact, grid, limits=LOW),
+    "critical_angles_against_thickness": lambda contact, grid: me.critical_angles_against_thickness(contact, grid,
+                                                                                                    limits=LOW),
+}
+#: Each entry point's grid of ``n`` distinct values within its range.
+GRIDS = {"phase_diagram": lambda n: np.linspace(1.0, 80.0, n),
+         "phase_diagram on a layer": lambda n: np.linspace(1.0, 80.0, n),
+         "layer_normal_curve": lambda n: np.linspace(0.0, 1e-4, n)}
+THICKNESSES = lambda n: np.linspace(1e-3, 1e-2, n)  # noqa: E731
+
+
+@pytest.mark.parametrize("entry", list(CALLS))
+def test_a_grid_is_counted_before_it_is_read(entry):
+    """Each refuses a grid of distinct values beyond its limits before it allocates a copy of it (before: the copy
+    and the sort of check_distinct, 8 bytes and more per value)."""
+    import tracemalloc
+
+    contact, grid = _layered(), GRIDS.get(entry, THICKNESSES)  # (made before the measurement)
+    with pytest.raises(me.ResourceLimitError):  # (a grid just beyond the limits first: the modules it imports)
+        CALLS[entry](contact, grid(11))
+    values = grid(GRID)
+    tracemalloc.start()
+    try:
+        with pytest.raises(me.ResourceLimitError) as caught:
+            CALLS[entry](contact, values)
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert f"{GRID}" in str(caught.value), str(caught.value)
+    assert peak < ONE_COPY, f"{entry}: {peak / 2**20:.1f} MiB allocated before the refusal"
