@@ -38,8 +38,10 @@ def test_a_time_step_too_small_to_count_is_refused_naming_it(capsys, tmp_path, d
 
 @pytest.mark.parametrize("dt", [1e-300, 1e-18])
 def test_without_limits_the_steps_count_bounds_the_time_step(dt):
-    message = one_line_naming(lambda: me.simulate(me.Contact.from_parameters(PAPER), me.Scenario("A", (20.0,)), method=me.Discrete(dx=2e-6, dt=dt),
-                                                  limits=UNLIMITED), f"dt={dt!r}")
+    contact = me.Contact.from_parameters(PAPER)
+    method = me.Discrete(dx=2e-6, dt=dt)
+    message = one_line_naming(lambda: me.simulate(contact, me.Scenario("A", (20.0,)), method=method, limits=UNLIMITED),
+                              f"dt={dt!r}")
     longest = float(message.split("case's ")[1].split(" s")[0])
     least = float(message.split("allowed: a time step in s >= ")[1].split(" ")[0])
     assert least == pytest.approx(longest / MAX_COUNT, rel=1e-2), message  # (the least dt, printed to 3 digits)
@@ -76,7 +78,7 @@ def test_a_file_taken_by_a_multi_value_option_is_still_named(capsys, tmp_path):
 # --- U3: a grid counted against the limits after it was read: `phase_diagram(params, 1e8 angles)` copied and sorted
 # the angles (validate_alpha, check_distinct) before its limits refused them: 4.9 GB peak and a minute against the
 # 2 GiB limit; the layer's curves and the critical angles against thickness read their depths or thicknesses first
-# too. Now each counts its grid (limits.values_in) before reading it ------------------------------------------------
+# too, and cross_check its angles (1e7: 1.4 GB). Now each counts its grid (limits.values_in) before reading it -----
 
 #: Values in the grid: far beyond the limits below, and a copy of them (8 bytes each, 8 MB) well above what the
 #: refusal itself allocates (a message and the limits: kilobytes).
@@ -87,7 +89,8 @@ LOW = me.Limits(samples=10, steps=10, memory=2**20)
 
 
 def _layered():
-    return me.Contact(me.Elastomer(PAPER.E, PAPER.nu), me.Paraboloid(PAPER.R), me.Adhesion(PAPER.dgamma0, PAPER.dgamma1),
+    return me.Contact(me.Elastomer(PAPER.E, PAPER.nu), me.Paraboloid(PAPER.R),
+                      me.Adhesion(PAPER.dgamma0, PAPER.dgamma1),
                       me.FrictionLaw("tau0", tau0=PAPER.tau0), me.Layer(5e-3))
 
 
@@ -99,9 +102,13 @@ CALLS = {
     "layer_pull_off_curve": lambda contact, grid: me.layer_pull_off_curve(contact, grid, limits=LOW),
     "critical_angles_against_thickness": lambda contact, grid: me.critical_angles_against_thickness(contact, grid,
                                                                                                     limits=LOW),
+    # (no limits of its own: its runs' defaults, 2001 samples a case, refuse 5000 angles)
+    "cross_check": lambda contact, grid: me.cross_check(me.Contact.from_parameters(PAPER), "A", alpha=grid),
 }
+#: The least grid each refuses (a first call imports what the entry point needs before the measurement).
+BEYOND = {"cross_check": 10**4}
 #: Each entry point's grid of ``n`` distinct values within its range.
-GRIDS = {"phase_diagram": lambda n: np.linspace(1.0, 80.0, n),
+GRIDS = {"phase_diagram": lambda n: np.linspace(1.0, 80.0, n), "cross_check": lambda n: np.linspace(1.0, 80.0, n),
          "phase_diagram on a layer": lambda n: np.linspace(1.0, 80.0, n),
          "layer_normal_curve": lambda n: np.linspace(0.0, 1e-4, n)}
 THICKNESSES = lambda n: np.linspace(1e-3, 1e-2, n)  # noqa: E731
@@ -115,7 +122,7 @@ def test_a_grid_is_counted_before_it_is_read(entry):
 
     contact, grid = _layered(), GRIDS.get(entry, THICKNESSES)  # (made before the measurement)
     with pytest.raises(me.ResourceLimitError):  # (a grid just beyond the limits first: the modules it imports)
-        CALLS[entry](contact, grid(11))
+        CALLS[entry](contact, grid(BEYOND.get(entry, 11)))
     values = grid(GRID)
     tracemalloc.start()
     try:
