@@ -11,6 +11,11 @@ what failed is below. The console script's start-up (a Ctrl-C while the command 
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
+import textwrap
+
 import numpy as np
 import pytest
 
@@ -133,3 +138,33 @@ def test_a_grid_is_counted_before_it_is_read(entry):
         tracemalloc.stop()
     assert f"{GRID}" in str(caught.value), str(caught.value)
     assert peak < ONE_COPY, f"{entry}: {peak / 2**20:.1f} MiB allocated before the refusal"
+
+
+# --- U4: a command started with stderr closed (`mdr-events ... 2>&-`): Python's sys.stderr is None, and print(...,
+# file=None) writes to stdout, which holds the files written: the error line, the heartbeat's and the interrupt's went
+# there, and after SIGTERM console_main's sys.stderr.flush() raised AttributeError: exit 1, not 143 --------------
+
+TERMINATED_IN_RUN = textwrap.dedent("""
+    import os, signal, sys
+    import mdr_events.app.cli.simulate as verb
+
+    def run(args):  # SIGTERM while the command runs, before it writes anything
+        os.kill(os.getpid(), signal.SIGTERM)
+        for _ in range(10**6):
+            pass
+
+    verb.run = run
+    from mdr_events.app.console import console_main
+    sys.exit(console_main())
+""")
+
+
+@pytest.mark.parametrize("case", ["bad input", "terminated"])
+def test_without_stderr_nothing_of_its_goes_to_stdout(tmp_path, case):
+    argv = {"bad input": ["-c", "import sys; from mdr_events.app.console import console_main; sys.exit(console_main())",
+                          "simulate", "--scenario", "A", "--alpha", "20", "--E", "-1", "--out", "out"],
+            "terminated": ["-c", TERMINATED_IN_RUN, "simulate", "--scenario", "A", "--alpha", "20", "--out", "out"]}
+    done = subprocess.run([sys.executable, *argv[case]], stdout=subprocess.PIPE, cwd=tmp_path, timeout=300,
+                          env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)),
+                          preexec_fn=lambda: os.close(2))  # (as `2>&-`)
+    assert (done.returncode, done.stdout) == ({"bad input": 2, "terminated": 143}[case], b""), done.stdout

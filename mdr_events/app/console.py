@@ -33,10 +33,11 @@ INTERRUPTED_LINES = {
 def _end_during_start_up(signum: int, frame) -> None:
     """A signal before the command runs: its line on stderr (written directly, unbuffered) and the status
     ``128 + signum``, at once (no ``KeyboardInterrupt`` that an importing module could catch or print)."""
-    try:
-        os.write(2, f"mdr-events: {INTERRUPTED_LINES[signum]}\n".encode())
-    except OSError:  # (no stderr: the status says it)
-        pass
+    if sys.stderr is not None:  # (started with stderr closed, 2>&-: descriptor 2 may be another file's by now)
+        try:
+            os.write(2, f"mdr-events: {INTERRUPTED_LINES[signum]}\n".encode())
+        except OSError:  # (the status says it)
+            pass
     os._exit(128 + signum)  # noqa: SLF001 - nothing to flush or clean up before the command has run
 
 

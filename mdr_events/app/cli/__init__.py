@@ -159,8 +159,10 @@ def _checkpoint() -> None:
 
 
 def progress(message: str) -> None:
-    """A progress line, on stderr (stdout holds the files written and the summaries)."""
-    print(message, file=sys.stderr, flush=True)
+    """A progress line, on stderr (stdout holds the files written and the summaries); nowhere if there is no stderr
+    (``2>&-``: ``print`` would write it to stdout, among the files written)."""
+    if sys.stderr is not None:
+        print(message, file=sys.stderr, flush=True)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -332,7 +334,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         text, code = _outcome(error)
         if isinstance(error, UsageError):
             text += _file_taken_as_value(sys.argv[1:] if argv is None else list(argv))
-        print(f"mdr-events: {_one_line(text)}", file=sys.stderr)
+        progress(f"mdr-events: {_one_line(text)}")
         return code
     finally:
         if handles_sigterm:
@@ -363,7 +365,7 @@ def console_main() -> int:
     for signum in (signal.SIGINT, signal.SIGTERM):  # (the work is done: a signal now would end it silently with 130)
         signal.signal(signum, signal.SIG_IGN)
     _forget_handled_interrupt()
-    if status in (128 + signal.SIGINT, 128 + signal.SIGTERM):
+    if status in (128 + signal.SIGINT, 128 + signal.SIGTERM) and sys.stderr is not None:  # (2>&-: none to silence)
         sys.stderr.flush()
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stderr.fileno())
