@@ -20,8 +20,12 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-#: Seconds the held import sleeps: the signal arrives well within it (it is sent once the finder has said so).
+#: Seconds the held import sleeps: the signal arrives well within it (it is sent once the finder has said so), and
+#: ends the process at once; where it is ignored the process waits this long.
 HELD = 20.0
+#: The hold where the signal is ignored: the signal is sent as soon as the finder has said so, and its (ignored)
+#: delivery is immediate; the command then runs.
+HELD_IGNORED = 2.0
 
 SCRIPT = textwrap.dedent("""
     import os, signal, sys, time
@@ -50,10 +54,11 @@ def _entry_point() -> tuple[str, str]:
     return module, function
 
 
-def _signalled_at_start_up(signum: int, tmp_path: Path, *, sigint: str = "foreground") -> subprocess.CompletedProcess:
+def _signalled_at_start_up(signum: int, tmp_path: Path, *, sigint: str = "foreground",
+                           held: float = HELD) -> subprocess.CompletedProcess:
     """Start the entry point on ``--version``, wait for the held import, send ``signum``; the process's outcome."""
     module, function = _entry_point()
-    process = subprocess.Popen([sys.executable, "-c", SCRIPT, sigint, module, function, str(HELD), "--version"],
+    process = subprocess.Popen([sys.executable, "-c", SCRIPT, sigint, module, function, str(held), "--version"],
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=tmp_path,
                                env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)),
                                preexec_fn=(lambda: signal.signal(signal.SIGINT, signal.SIG_IGN))
@@ -80,17 +85,20 @@ def test_a_signal_while_the_command_line_is_imported_ends_it_in_one_line(tmp_pat
 
 def test_a_background_job_ignores_ctrl_c_at_start_up(tmp_path):
     """SIGINT ignored (a background job) stays ignored: the command runs (here ``--version``) once the import ends."""
-    done = _signalled_at_start_up(signal.SIGINT, tmp_path, sigint="background")
+    done = _signalled_at_start_up(signal.SIGINT, tmp_path, sigint="background", held=HELD_IGNORED)
     assert (done.returncode, done.stderr) == (0, ""), done.stderr[-2000:]
     assert done.stdout.startswith("mdr_events "), done.stdout
 
 
 def test_the_entry_point_of_before_still_runs(tmp_path):
-    """``mdr_events.app.cli:console_main``, which installed environments' scripts name, runs a command as before."""
+    """``mdr_events.app.cli:console_main``, which installed environments' scripts name, runs a command as before (here
+    to its one line of bad input)."""
     done = subprocess.run([sys.executable, "-c", "import sys; from mdr_events.app.cli import console_main; "
-                           "sys.exit(console_main())", "derive", "--key", "hertz_radius"], capture_output=True, text=True,
-                          cwd=tmp_path, env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)), timeout=300)
-    assert done.returncode == 0 and done.stderr == "" and done.stdout.strip(), done.stderr[-2000:]
+                           "sys.exit(console_main())", "simulate", "--scenario", "A", "--alpha", "20", "--E", "-1",
+                           "--out", "o"], capture_output=True, text=True, cwd=tmp_path,
+                          env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)), timeout=300)
+    assert (done.returncode, done.stdout) == (2, ""), done.stderr[-2000:]
+    assert done.stderr == "mdr-events: error: Parameters.E=-1.0 is not allowed; allowed: a finite number > 0 (Pa)\n"
 
 
 #: What may be imported before the handlers are installed, besides the package's ``__init__`` and the entry point's
