@@ -23,7 +23,8 @@ import sys
 
 __all__ = ["console_main", "INTERRUPTED_LINES"]
 
-#: The line (after ``mdr-events: ``) an interrupted command ends with, by signal: the command line's, from start-up on.
+#: The line an interrupted command ends with (after ``mdr-events:`` and a space), by signal: the command line's, from
+#: start-up on.
 INTERRUPTED_LINES = {
     signal.SIGINT: "interrupted (Ctrl-C); no file was left half-written",
     signal.SIGTERM: "terminated (SIGTERM); no file was left half-written",
