@@ -18,7 +18,11 @@ diagrams) → ``models`` (``paths``, ``discrete`` springs,
 """
 
 import importlib
-from typing import TYPE_CHECKING
+
+#: ``typing.TYPE_CHECKING`` without importing ``typing`` (and ``re``, a third of the package's import): the console
+#: script's handlers of Ctrl-C are installed after this module has run (:mod:`mdr_events.app.console`), so it is kept
+#: short; static tools read a module-level ``TYPE_CHECKING = False`` as they read ``typing``'s.
+TYPE_CHECKING = False
 
 from mdr_events._version import __version__
 from mdr_events.io.registrars import declare_registrars as _declare_registrars

@@ -92,7 +92,7 @@ APP_LEVELS = {
     "inputs": 0, "result_files": 0, "validation_files": 0, "fit_files": 0, "heartbeat": 0,
     "jobs": 1,
     "study_format": 2, "study": 2,
-    "cli": 3,
+    "cli": 3, "console": 3,  # (the console script's entry point: the CLI's interrupt lines, the CLI imported late)
 }
 
 

@@ -14,7 +14,7 @@ def test_pyproject_uses_current_metadata():
     assert project["project"]["license"] == "MIT"
     assert "setuptools>=77" in project["build-system"]["requires"]
     assert project["tool"]["setuptools"]["package-dir"] == {"": "."}
-    assert project["project"]["scripts"]["mdr-events"] == "mdr_events.app.cli:console_main"
+    assert project["project"]["scripts"]["mdr-events"] == "mdr_events.app.console:console_main"
 
 
 def test_the_lock_pins_every_requirement_and_make_installs_with_it():

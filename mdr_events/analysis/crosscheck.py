@@ -28,6 +28,7 @@ import xarray as xr
 
 from mdr_events.contact import Contact
 from mdr_events.io.datasets import register_schema, stamp
+from mdr_events.limits import DEFAULT_LIMITS, values_in
 from mdr_events.models.methods import Continuum, Discrete
 from mdr_events.models.motion import Scenario, case_dimension
 from mdr_events.models.simulate import simulate
@@ -148,10 +149,12 @@ def cross_check(contact: ContactLike, scenario: str = "A", alpha=(10.0, 15.0, 20
     """
     params = paper_parameters(contact, "cross_check", d_max)
     check_choice("scenario", scenario, analytic.SCENARIOS)
+    methods = Continuum(), Discrete(dx=dx, n_steps=n_steps)
+    for method in methods:  # (the angles counted as the runs count their cases, before they are read: 1e7 took 1.4 GB)
+        method.check_case_count(values_in(alpha), DEFAULT_LIMITS)
     angles = np.atleast_1d(validate_alpha(alpha))
     model, motion = Contact.from_parameters(params), Scenario(scenario, tuple(angles), params.d_max, params.v)
-    continuum_ds = simulate(model, motion, method=Continuum())
-    discrete_ds = simulate(model, motion, method=Discrete(dx=dx, n_steps=n_steps))
+    continuum_ds, discrete_ds = (simulate(model, motion, method=method) for method in methods)
     closed = np.atleast_1d(analytic.d_crit(angles, params, scenario, adhesion=True))
     continuum = _continuum_slip_onset(continuum_ds, scenario)
     discrete = _first_slip(discrete_ds, scenario, params)

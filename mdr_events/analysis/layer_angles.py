@@ -86,10 +86,10 @@ def critical_angles_against_thickness(contact: Contact, thicknesses, *, d_max: f
     if not isinstance(contact, Contact):
         raise TypeError(f"contact={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a "
                         "mdr_events.Contact, e.g. Contact.paper()")
-    h = thickness_axis(thicknesses)
+    h = thickness_axis(thicknesses, lambda count: check_limits(limits).check(  # (before they are read)
+        f"the critical angles at {count} thicknesses", steps=count * STEPS_PER_THICKNESS))
     depth = PAPER_D_MAX if d_max is None else check_real("d_max", d_max, "a finite number > 0 (m)",
                                                          lambda value: value > 0.0)
-    check_limits(limits).check(f"the critical angles at {h.size} thicknesses", steps=h.size * STEPS_PER_THICKNESS)
     angles = {kind: np.empty((len(LAYER_ANGLE_SCENARIOS), h.size)) for kind in ("jkr", "hertz")}
     thin = np.zeros(h.size)
     for column, thickness in enumerate(h):

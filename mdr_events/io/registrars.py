@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import importlib
 import threading
-from typing import Sequence
+from collections.abc import Sequence
 
 __all__ = ["declare_registrars", "load_registrars"]
 

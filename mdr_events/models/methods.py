@@ -44,7 +44,7 @@ from mdr_events.models.job import ModelJob
 from mdr_events.models.motion import Cases
 from mdr_events.models.paths import Path
 from mdr_events.models.simulation_schema import SIMULATION_CONTENT, continuum_dataset, simulation_dataset
-from mdr_events.validation import check_count, check_output_times, check_real, shown
+from mdr_events.validation import MAX_COUNT, check_count, check_output_times, check_real, shown
 
 __all__ = ["Discrete", "Continuum", "Method", "METHODS", "as_method", "check_time_step", "DEFAULT_DX",
            "DEFAULT_STEPS", "DEFAULT_SAMPLES", "MIN_STEPS_PER_SEGMENT", "exact_solution",
@@ -199,8 +199,15 @@ def check_time_step(paths: list[Path], step: float, dt: float | None, n_steps: i
     Every segment (from first contact on) must get :data:`MIN_STEPS_PER_SEGMENT`
     steps; otherwise, e.g. for a tiny ``d_max``, the discrete model would jump
     over the whole indentation. The error names the largest ``dt`` (or the
-    smallest ``n_steps``) that would do.
+    smallest ``n_steps``) that would do. A ``dt`` so small that the longest case's steps are more than
+    :data:`~mdr_events.validation.MAX_COUNT` (``inf`` beyond the doubles) is refused naming the least ``dt``.
     """
+    longest = max(path.duration - path.first_contact_time() for path in paths)
+    count = longest / step
+    if dt is not None and not count <= MAX_COUNT:  # (round twenty-one: dt=5e-324 gave int(inf), an internal error)
+        raise ValueError(f"dt={dt!r} is not allowed: the longest case's {longest:.6g} s from first contact would "
+                         f"take {count:.3g} steps; allowed: a time step in s >= {longest / MAX_COUNT:.3g} (at most "
+                         f"{MAX_COUNT:.0e} steps, which the limits refuse long before: --limit steps)")
     shortest = math.inf
     for path in paths:
         start = path.first_contact_time()
@@ -214,7 +221,6 @@ def check_time_step(paths: list[Path], step: float, dt: float | None, n_steps: i
     if dt is not None:
         raise ValueError(f"dt={dt!r} is too coarse: the shortest path segment in contact lasts {shortest:.6g} s; "
                          f"allowed: dt <= {largest:.6g} s ({MIN_STEPS_PER_SEGMENT} steps per segment)")
-    longest = max(path.duration - path.first_contact_time() for path in paths)
     needed = math.ceil(longest / largest)
     given = DEFAULT_STEPS if n_steps is None else n_steps
     raise ValueError(f"n_steps={given!r} is too few: the shortest path segment in contact lasts {shortest:.6g} s of "

@@ -15,7 +15,7 @@ import xarray as xr
 
 from mdr_events.io.agreement import RoundOff, register_accuracy
 from mdr_events.io.datasets import assembled, register_schema, stamp
-from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits, values_in
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V, Parameters
 from mdr_events.contact.friction import FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.contact.indenters import Profile, TabulatedProfile, profile_attrs
@@ -127,22 +127,24 @@ def phase_diagram(
     if isinstance(alpha, str) and alpha in ("A", "B"):  # phase_diagram(contact, "B"): the scenario given as alpha
         raise TypeError(f"alpha={alpha!r} is not allowed: a scenario's name where the angles go; allowed: angles in "
                         f"degrees, and the scenario by name: phase_diagram(contact, scenario={alpha!r})")
-    angles = validate_alpha(default_angles() if alpha is None else alpha)
-    if angles.ndim != 1 or angles.size == 0:
-        raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: a non-empty 1-D array of angles in "
-                         "degrees (None: the default grid)")
-    check_distinct("alpha", angles, alpha)
-    limits = check_limits(limits)
-    coords = {"alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})}
+    alpha = default_angles() if alpha is None else alpha
+    limits, count = check_limits(limits), values_in(alpha)  # (counted before the angles are read: copies and a sort)
     if layered:  # (the layer's onsets are bisections on its tables: their work and memory per angle are their own)
         from mdr_events.theory.layer.slip_onset import ONSET_BYTES_PER_ANGLE, ONSET_STEPS_PER_ANGLE
 
         curves = 2 * (1 if scenario == "A" else len(analytic.BRANCHES))  # (with and without adhesion, each branch)
-        limits.check(f"the phase diagram of {angles.size} angles on {contact.layer.describe()}", samples=angles.size,
-                     steps=curves * ONSET_STEPS_PER_ANGLE * angles.size, memory=ONSET_BYTES_PER_ANGLE * angles.size)
+        limits.check(f"the phase diagram of {count} angles on {contact.layer.describe()}", samples=count,
+                     steps=curves * ONSET_STEPS_PER_ANGLE * count, memory=ONSET_BYTES_PER_ANGLE * count)
+    else:
+        limits.check(f"the phase diagram of {count} angles", samples=count, memory=BYTES_PER_ANGLE * count)
+    angles = validate_alpha(alpha)
+    if angles.ndim != 1 or angles.size == 0:
+        raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: a non-empty 1-D array of angles in "
+                         "degrees (None: the default grid)")
+    check_distinct("alpha", angles, alpha)
+    coords = {"alpha": ("alpha", angles, {"units": "degree", "long_name": "path angle to the surface"})}
+    if layered:
         return _layer_phase_diagram(contact, angles, scenario, d_max, coords, limits)
-    limits.check(f"the phase diagram of {angles.size} angles", samples=angles.size,
-                 memory=BYTES_PER_ANGLE * angles.size)
     # (the closed forms overflow as the runs would: E = 1e-150 Pa gave d_crit = +inf at 438 angles with warnings)
     check_representable(params, profile, friction)
     if not friction.is_default:

@@ -24,7 +24,8 @@ through the shared parsers (:mod:`mdr_events.app.inputs`), are in :mod:`mdr_even
 Importing this module imports the standard library only: ``mdr-events --help`` lists the verbs without loading the
 package, a verb's options are added (and what they need imported) when the verb is used
 (:meth:`~mdr_events.app.cli._options.Parser.filled`), and everything else is imported inside :func:`main`, where a
-Ctrl-C (even during the imports) prints one line and exits with 130.
+Ctrl-C (even during the imports) prints one line and exits with 130. The console script's entry point,
+:func:`mdr_events.app.console.console_main`, does the same while this module is imported.
 """
 
 from __future__ import annotations
@@ -42,6 +43,7 @@ from typing import Sequence
 from mdr_events._version import __version__
 from mdr_events.app.cli import derive, fit, lammps_check, phase_diagram, reproduce, run, simulate, sweep, validate
 from mdr_events.app.cli._options import Parser, UsageError
+from mdr_events.app.console import INTERRUPTED_LINES
 
 __all__ = ["main", "console_main", "build_parser", "UsageError", "EXIT_STATUSES", "VERBS"]
 
@@ -157,8 +159,10 @@ def _checkpoint() -> None:
 
 
 def progress(message: str) -> None:
-    """A progress line, on stderr (stdout holds the files written and the summaries)."""
-    print(message, file=sys.stderr, flush=True)
+    """A progress line, on stderr (stdout holds the files written and the summaries); nowhere if there is no stderr
+    (``2>&-``: ``print`` would write it to stdout, among the files written)."""
+    if sys.stderr is not None:
+        print(message, file=sys.stderr, flush=True)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -220,9 +224,9 @@ def _outcome(error: BaseException) -> tuple[str, int]:
     if isinstance(error, UsageError):
         return f"error: {error}", EXIT_BAD_INPUT
     if isinstance(error, _Terminated):
-        return "terminated (SIGTERM); no file was left half-written", 128 + signal.SIGTERM
+        return INTERRUPTED_LINES[signal.SIGTERM], 128 + signal.SIGTERM
     if isinstance(error, KeyboardInterrupt):
-        return "interrupted (Ctrl-C); no file was left half-written", 128 + signal.SIGINT
+        return INTERRUPTED_LINES[signal.SIGINT], 128 + signal.SIGINT
     if isinstance(error, INPUT_ERRORS):
         return f"error: {_message(error)}", EXIT_BAD_INPUT
     what = "the computation failed" if isinstance(error, COMPUTATION_ERRORS) else "internal error"
@@ -234,27 +238,36 @@ def _outcome(error: BaseException) -> tuple[str, int]:
 FILE_SUFFIXES = (".csv", ".nc", ".toml")
 
 
-def _multi_value_options(parser: argparse.ArgumentParser, words: Sequence[str] | None = None) -> set[str]:
+def _options_taken(parser: argparse.ArgumentParser, words: Sequence[str] | None = None, *,
+                   multi_value: bool = True) -> set[str]:
     """The options, of every command (of those among ``words``, if given: the command line's, so that only the verb
-    used has its options added), that take several values (``--free E tau0``, ``--dx 1e-6 2e-6``)."""
+    used has its options added), that take several values (``--free E tau0``, ``--dx 1e-6 2e-6``); with
+    ``multi_value=False`` every option."""
     found = set()
     for action in parser.filled()._actions:  # noqa: SLF001 - argparse keeps its actions there
-        if action.nargs in ("+", "*") and action.option_strings:
+        if action.option_strings and (action.nargs in ("+", "*") or not multi_value):
             found.update(action.option_strings)
         for name, sub in action.choices.items() if isinstance(action, argparse._SubParsersAction) else ():
             if words is None or name in words:
-                found |= _multi_value_options(sub)
+                found |= _options_taken(sub, multi_value=multi_value)
     return found
 
 
 def _file_taken_as_value(argv: Sequence[str]) -> str:
     """A hint for a usage error: which multi-value option took a file as one of its values (``--free tau0 run.csv``:
-    argparse gives every word up to the next option to ``--free``), and how to write it; "" if none did."""
-    multi = _multi_value_options(build_parser(), argv)
+    argparse gives every word up to the next option to ``--free``), and how to write it; or which option came after
+    ``--`` (``--free tau0 -- run.csv --out o``: every word after ``--`` is a file, and ``--out`` was "required");
+    "" if neither."""
+    argv, parser = list(argv), build_parser()
+    separator = argv.index("--") if "--" in argv else len(argv)
+    options = _options_taken(parser, argv[:separator], multi_value=False)
+    after = [token.split("=", 1)[0] for token in argv[separator + 1:] if token.split("=", 1)[0] in options]
+    if after:
+        return (f" ({after[0]} comes after `--`, which ends the options: every word after it is taken as a file; write "
+                f"the options before `--`)")
+    multi = _options_taken(parser, argv[:separator])
     option = None
-    for token in argv:
-        if token == "--":
-            return ""
+    for token in argv[:separator]:
         if token.startswith("--"):
             option = token.split("=", 1)[0] if token.split("=", 1)[0] in multi else None
         elif option is not None and (os.path.isfile(token) or token.lower().endswith(FILE_SUFFIXES)):
@@ -321,7 +334,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         text, code = _outcome(error)
         if isinstance(error, UsageError):
             text += _file_taken_as_value(sys.argv[1:] if argv is None else list(argv))
-        print(f"mdr-events: {_one_line(text)}", file=sys.stderr)
+        progress(f"mdr-events: {_one_line(text)}")
         return code
     finally:
         if handles_sigterm:
@@ -352,7 +365,7 @@ def console_main() -> int:
     for signum in (signal.SIGINT, signal.SIGTERM):  # (the work is done: a signal now would end it silently with 130)
         signal.signal(signum, signal.SIG_IGN)
     _forget_handled_interrupt()
-    if status in (128 + signal.SIGINT, 128 + signal.SIGTERM):
+    if status in (128 + signal.SIGINT, 128 + signal.SIGTERM) and sys.stderr is not None:  # (2>&-: none to silence)
         sys.stderr.flush()
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stderr.fileno())

@@ -10,6 +10,7 @@ inside the bracket of a logarithmic scan, for all depths at once (:mod:`~mdr_eve
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -18,7 +19,7 @@ import xarray as xr
 from mdr_events.contact.layer import Layer
 from mdr_events.contact.model import Contact
 from mdr_events.io.datasets import register_schema, stamp
-from mdr_events.limits import Limits, check_limits
+from mdr_events.limits import Limits, check_limits, values_in
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.job import rate_independent
 from mdr_events.theory.layer.branch_scan import branch_jump_off, check_scales, layer_material, stable_radius
@@ -71,12 +72,21 @@ def _checked(contact: Any, depth: float, what: str, points: int, steps_each: flo
     layer_material(contact)
     rate_independent(contact, what)
     check_scales(contact, depth, what)
+    _counted(what, points, steps_each, limits)
+
+
+def _counted(what: str, points: float, steps_each: float, limits: Limits | None) -> None:
+    """A curve's ``points`` (each ``steps_each`` steps) within ``limits``."""
     check_limits(limits).check(f"{what} ({points} points)", samples=float(points), steps=steps_each * points,
                                memory=CURVE_BYTES_PER_POINT * points)
 
 
-def _grid(name: str, values, allowed: str, valid) -> np.ndarray:
-    """A curve's depths or thicknesses: real numbers on one non-empty axis for which ``valid`` holds (one line)."""
+def _grid(name: str, values, allowed: str, valid, counted: Callable[[int], None] | None = None) -> np.ndarray:
+    """A curve's depths or thicknesses: real numbers on one non-empty axis for which ``valid`` holds (one line);
+    ``counted`` is given their count before they are read (:func:`~mdr_events.limits.values_in`: 1e8 depths were
+    copied and sorted before the limits refused them)."""
+    if counted is not None:
+        counted(values_in(values))
     array = np.atleast_1d(real_array(name, values, allowed)).astype(float)
     if array.ndim != 1 or array.size == 0 or not np.all(valid(array)):
         raise ValueError(f"{name}={shown(values)} is not allowed; allowed: {allowed}, one non-empty axis")
@@ -84,7 +94,7 @@ def _grid(name: str, values, allowed: str, valid) -> np.ndarray:
     return array
 
 
-def thickness_axis(thicknesses) -> np.ndarray:
+def thickness_axis(thicknesses, counted: Callable[[int], None] | None = None) -> np.ndarray:
     """Thicknesses of a curve against ``h``: numbers > 0 (m, ``inf`` the half-space) on one non-empty axis, as
     floats; else the one-line error naming ``thicknesses``.
 
@@ -92,6 +102,8 @@ def thickness_axis(thicknesses) -> np.ndarray:
     ----------
     thicknesses : float or array_like
         The thicknesses in m.
+    counted : callable, optional
+        Given the thicknesses' count before they are read (a check against the limits, which raises).
 
     Returns
     -------
@@ -103,7 +115,8 @@ def thickness_axis(thicknesses) -> np.ndarray:
     ValueError
         Not real numbers > 0, or not one non-empty axis.
     """
-    return _grid("thicknesses", thicknesses, "numbers > 0 (m), inf the half-space", lambda values: values > 0.0)
+    return _grid("thicknesses", thicknesses, "numbers > 0 (m), inf the half-space", lambda values: values > 0.0,
+                 counted)
 
 
 def _variables(contact: Contact, depth, radius, dims: tuple[str, ...]) -> dict[str, xr.Variable]:
@@ -165,7 +178,8 @@ def layer_normal_curve(contact: Contact, depths, limits: Limits | None = None) -
         Another indenter, a non-finite depth, no depth, the contact's scales beyond the double range, a radius beyond
         the tables (``a/h > 64``), or the points beyond ``limits`` (``ResourceLimitError``).
     """
-    depth = _grid("depths", depths, "finite numbers (m)", np.isfinite)
+    depth = _grid("depths", depths, "finite numbers (m)", np.isfinite,
+                  lambda count: _counted(f"layer_normal_curve of {count} depths", 2 * count, CURVE_POINT_STEPS, limits))
     deepest = float(np.max(depth))
     _checked(contact, deepest if deepest > 0.0 else PAPER_D_MAX, f"layer_normal_curve to the depth {deepest!r} m",
              2 * depth.size, CURVE_POINT_STEPS, limits)
@@ -273,7 +287,7 @@ def layer_pull_off_curve(contact: Contact, thicknesses, limits: Limits | None = 
         beyond ``limits`` (``ResourceLimitError``).
     """
     E_star, nu, _ = layer_material(contact)
-    h = thickness_axis(thicknesses)
+    h = thickness_axis(thicknesses, lambda count: _counted("layer_pull_off_curve", count, PULL_OFF_STEPS, limits))
     _checked(contact, PAPER_D_MAX, "layer_pull_off_curve", h.size, PULL_OFF_STEPS, limits)
     if not contact.adhesion.dgamma1 > 0.0:  # (pull_off named its own argument, dgamma=0.0, which the user never gave)
         raise ValueError(f"contact.adhesion.dgamma1={contact.adhesion.dgamma1!r} is not allowed in "
