@@ -28,7 +28,7 @@ from mdr_events.theory.layer_continuum_symbolic import derive_continuum_model
 
 from .branch import FOLD_SHARE, Branch
 
-__all__ = ["LayerBranch", "ROOT_ITERATIONS", "RADII_RTOL"]
+__all__ = ["LayerBranch", "ROOT_ITERATIONS", "RADII_RTOL", "NEWTON_SHARE"]
 
 #: The most steps of the radius's root (Newton's, or bisections where a step leaves the bracket): each bisection
 #: halves the bracket's logarithm, which starts below 60 (doublings from the jump-off to ``a/h = 64``).
@@ -36,12 +36,13 @@ ROOT_ITERATIONS = 200
 #: How many radii's depth and slope a branch remembers (:attr:`LayerBranch._values`).
 VALUE_CACHE = 64
 #: Points per decade of the scan whose inverse's cubic Hermite interpolant starts Newton's iteration for a radius
-#: (:meth:`LayerBranch.radius`, :meth:`LayerBranch.radii`): neighbours 10^(1/64) apart (3.7%) put the start within
-#: ~1e-9 of the root (the cubic's error ~ (Δa/a)⁴/384), one of Newton's steps from 1e-14 (the chord of 10^(1/16) was
-#: ~1e-3 off, three steps). The start is a function of the depth alone, so that a radius never depends on the roots
-#: asked before it (a start from the last roots found made the same solution evaluated twice differ by an ulp, on
-#: some CPUs).
-START_SCAN_PER_DECADE = 64
+#: (:meth:`LayerBranch.radius`, :meth:`LayerBranch.radii`): neighbours 10^(1/128) apart (1.8%) put the start within
+#: ~2e-9 of the root (measured on the paper's 5 mm layer, median; 3e-8 at 64 a decade: the cubic's error falls as
+#: (Δa/a)⁴), one of Newton's steps from 1e-14, which :data:`NEWTON_SHARE` takes as the root without reading the branch
+#: again (at 64 a decade a quarter of the radii needed a second reading; the chord of 10^(1/16) was ~1e-3 off, three
+#: steps). The start is a function of the depth alone, so that a radius never depends on the roots asked before it (a
+#: start from the last roots found made the same solution evaluated twice differ by an ulp, on some CPUs).
+START_SCAN_PER_DECADE = 128
 #: The start scan's lowest radius without adhesion, in layer thicknesses (the branch starts at ``a = 0`` there).
 START_SCAN_FLOOR = 1e-6
 #: Points per decade of the scan that brackets the jump-off (where ``∂d/∂a`` turns positive; Brent's method refines).
@@ -342,9 +343,15 @@ class LayerBranch(Branch):
         a = _hermite_start(depth, *pairs)
         upper = np.where(depth >= depths[-1], 2.0 * radii[-1], upper)  # (the ceiling's root, to rounding beyond it)
         below = depth <= depths[0]  # (no adhesion, below the scan: d ∝ aⁿ towards a = 0)
+        # Newton's constant |d''|/(2 d') on the scan's interval (the chord of the slopes over the least slope; inf
+        # where a slope is not positive): a step ``δ`` leaves the root within ``q δ²`` (:data:`NEWTON_SHARE`)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            least = np.minimum(*pairs[2])
+            q = np.where(least > 0.0, np.abs(np.diff(pairs[2], axis=0)[0]) / (upper - lower) / (2.0 * least), np.inf)
         if np.any(below):
             lower = np.where(below, 0.0, lower)
             a = np.where(below, radii[0] * np.clip(depth / depths[0], 0.0, 1.0) ** (1.0 / self.n), a)
+            q = np.where(below, np.inf, q)
         out = np.empty(depth.shape)
         active = np.arange(depth.size)  # (the depths whose roots are still moving: the others are left alone)
         for _ in range(ROOT_ITERATIONS):
@@ -357,19 +364,21 @@ class LayerBranch(Branch):
             guess = a - step
             inside = (guess > lower) & (guess < upper)
             done = (np.abs(step) <= RADII_RTOL * a) | (upper - lower <= RADII_RTOL * upper)
+            with np.errstate(invalid="ignore"):  # (inf · 0: no bound, the test above decides)
+                done |= inside & (q * step * step <= NEWTON_SHARE * RADII_RTOL * a)  # (the step's own bound)
             guess = np.where(inside | (np.abs(step) <= RADII_RTOL * a), guess, 0.5 * (lower + upper))
             out[active[done]] = guess[done]
             moving = ~done
             if not np.any(moving):
                 return out
-            active, a, lower, upper = active[moving], guess[moving], lower[moving], upper[moving]
+            active, a, lower, upper, q = active[moving], guess[moving], lower[moving], upper[moving], q[moving]
         raise RuntimeError(f"the radii of {depth.size} depths on {self.layer.describe()} did not converge")
 
 
 def _hermite_start(depth, radii: np.ndarray, depths: np.ndarray, slopes: np.ndarray):
     """The radius of ``depth`` on the cubic Hermite interpolant of the inverse ``a(d)`` between two scanned points
-    (``radii``, ``depths``, ``slopes`` ``∂d/∂a``: each of two rows, the lower point first), within about 1e-8 of the
-    root at :data:`START_SCAN_PER_DECADE`: one or two of Newton's steps from :data:`RADII_RTOL`. Where a slope is not
+    (``radii``, ``depths``, ``slopes`` ``∂d/∂a``: each of two rows, the lower point first), within about 1e-9 of the
+    root at :data:`START_SCAN_PER_DECADE`: one of Newton's steps from :data:`RADII_RTOL`. Where a slope is not
     positive (the jump-off's, where the inverse has a square root) or the cubic leaves the interval, the chord."""
     (r0, r1), (d0, d1), (s0, s1) = radii, depths, slopes
     width, rise = d1 - d0, r1 - r0
@@ -424,3 +433,11 @@ _SCANS: dict[tuple, tuple] = {}
 
 #: The accuracy of :meth:`LayerBranch.radii` (the default ``radius_rtol`` of the continuum's tolerances).
 RADII_RTOL = 1e-14
+#: :meth:`LayerBranch.radii` takes Newton's step ``δ`` as the root, without reading the branch again, where
+#: ``q δ² <= NEWTON_SHARE · RADII_RTOL · a`` (``q = |d''|/(2d')``, Newton's constant, estimated by the chord of the
+#: start scan's slopes over its least one): the step's error, ``q δ²`` to leading order, then lies a hundred times
+#: below the tolerance, a margin for ``d''`` varying across the scan's interval (3.7% of the radius; ``d''`` is
+#: smooth there and its chord within a few per cent of it away from the jump-off, where ``q`` is infinite and the
+#: iteration reads the branch again). From the Hermite start (~1e-9 of the radius) the first step is taken: one
+#: reading of the branch in place of two.
+NEWTON_SHARE = 1e-2

@@ -50,6 +50,9 @@ class LayerMedium(HalfSpaceMedium):
         self.params, self.indenter, self.layer = params, indenter, layer
         self.normal = NormalFactors(params.nu, layer, _power_law(indenter)[1])
         relations = derive_continuum_model()
+        self._pair_array = relations["layer_continuum_tangential_factor_pair"].numeric
+        self._weight_array = relations["layer_continuum_weight"].numeric
+        self._measure_array = relations["layer_continuum_measure"].numeric
         self._cap = relations["layer_continuum_cap"].scalar
         self._cap_array = relations["layer_continuum_cap"].numeric
         self._cap_slope = relations["layer_continuum_cap_slope"].scalar
@@ -94,6 +97,60 @@ class LayerMedium(HalfSpaceMedium):
         radii = np.asarray(a, dtype=float)
         factor = tangential_table(self.params.nu).stiffness_factor(np.maximum(radii, 0.0) / self.layer.thickness)
         return np.where(radii > 0, self._cap_array(radii, K, factor), 0.0)
+
+    def measures_and_shifts(self, K: float, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``M(a)`` (:meth:`measure` from 0) and ``ū(a)`` (:meth:`shift`) at an array of radii ``> 0``, from one
+        vectorised factor (the closed form's, :mod:`.layer_closed_form`).
+
+        Parameters
+        ----------
+        K : float
+            The half-space's cap per radius.
+        a : numpy.ndarray
+            The contact radii (m), ``> 0``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``M`` (m) and ``ū`` (m).
+        """
+        factor = self._pair_array(self.params.nu, *self.tangential.parts_array(a / self.layer.thickness))[0]
+        return self._measure_array(a, factor), self._cap_array(a, K, factor)
+
+    def weights_and_caps(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``w(a)`` (:meth:`density`: the same splines' slopes) and ``ū(a)/K = a/Φ_t`` at an array of radii ``> 0``
+        (the integrands of :class:`~.layer_closed_form.BranchIntegrals`).
+
+        Parameters
+        ----------
+        a : numpy.ndarray
+            The radii (m), ``> 0``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``w`` (1) and ``ū/K`` (m).
+        """
+        h = self.layer.thickness
+        factor, slope = self._pair_array(self.params.nu, *self.tangential.parts_array(a / h))
+        return self._weight_array(a, h, factor, slope), self._cap_array(a, 1.0, factor)
+
+    def span_primitive(self, integrator):
+        """A moving span's force in closed form on the bonded layer (:func:`~.layer_closed_form.layer_span_primitive`).
+
+        Parameters
+        ----------
+        integrator : SpanIntegrator
+            A moving span without a front.
+
+        Returns
+        -------
+        LayerPrimitive or None
+            ``P``, or ``None`` where the span has no closed form here.
+        """
+        from .layer_closed_form import layer_span_primitive
+
+        return layer_span_primitive(integrator)
 
     def shift_slope(self, K: float, a: float) -> float:
         """``dū/da`` (``layer_continuum_cap_slope``; ``K`` at ``a = 0``).
@@ -266,6 +323,21 @@ class FrictionlessLayerMedium(LayerMedium):
             ``K``.
         """
         return K
+
+    def span_primitive(self, integrator):
+        """No tangential springs, no closed form (the force stays 0).
+
+        Parameters
+        ----------
+        integrator : SpanIntegrator
+            A moving span without a front.
+
+        Returns
+        -------
+        None
+            None.
+        """
+        return None
 
     def measure(self, lower: float, upper: float) -> float:
         """No tangential springs: 0.

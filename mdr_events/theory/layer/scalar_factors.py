@@ -302,6 +302,33 @@ class TangentialFactors:
                                               for k in self.k0)
         return phi_l, phi_t, slope_l, slope_t
 
+    def parts_array(self, lam: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`_parts` for an array of ``λ`` (the same splines by Horner's rule on the arrays, the same series below
+        ``LAMBDA_MIN``): what ``combine``'s array form takes.
+
+        Parameters
+        ----------
+        lam : numpy.ndarray
+            ``a/h`` (``0 <= λ <= LAMBDA_MAX``).
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``Φ_L``, ``Φ_T`` and their slopes in ``λ``.
+        """
+        lam = np.asarray(lam, dtype=float)
+        small = lam < TANGENTIAL_LAMBDA_MIN
+        phi_l, slope_l, phi_t, slope_t = self.columns.values_and_slopes_array(np.where(small, TANGENTIAL_LAMBDA_MIN,
+                                                                                         lam))
+        if np.any(small):
+            series = []
+            for k in self.k0:
+                factor = 1.0 / (1.0 - 2.0 * k * lam / math.pi)
+                series += (factor, 2.0 * k / math.pi * factor * factor)
+            phi_l, slope_l, phi_t, slope_t = (np.where(small, exact, value) for exact, value
+                                              in zip(series, (phi_l, slope_l, phi_t, slope_t)))
+        return phi_l, phi_t, slope_l, slope_t
+
     def stiffness_factor(self, a: float) -> tuple[float, float]:
         """``Φ_t(λ) = K_t/(2G* a)`` and ``dΦ_t/dλ`` at ``λ = a/h``.
 
