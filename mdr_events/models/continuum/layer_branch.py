@@ -96,7 +96,7 @@ class LayerBranch(Branch):
         self.jump_off_radius = _jump_off_radius(self) if work > 0.0 else 0.0
         self.jump_off_depth = self.depth(self.jump_off_radius)
         self._floor = self.jump_off_radius
-        self._start_scan: tuple | None = None  # (the scan of radii, depths, slopes, as arrays and as lists: when asked)
+        self._start_scan: tuple | None = None  # (:meth:`_scans`: when asked)
 
     # --- the branch at one radius ----------------------------------------------------------------------------
     def _evaluate(self, a: float) -> tuple[float, float]:
@@ -203,7 +203,9 @@ class LayerBranch(Branch):
         """:meth:`_scan` as lists of floats (the scalar start's: NumPy's scalars cost microseconds)."""
         return self._scans()[1]
 
-    def _scans(self) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], tuple[list[float], ...]]:
+    def _scans(self) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], tuple[list[float], ...], np.ndarray]:
+        """The start scan as arrays and as lists, and Newton's constant ``|d''|/(2 d')`` on each of its intervals: the
+        chord of its slopes over its length and twice its least slope (``inf`` where a slope is not positive)."""
         if self._start_scan is None:
             key = (*_branch_key(self), self.jump_off_radius)
             if key not in _SCANS:
@@ -211,11 +213,19 @@ class LayerBranch(Branch):
                 points = max(int(math.ceil(START_SCAN_PER_DECADE * math.log10(self.ceiling / lowest))), 1) + 1
                 radii = np.geomspace(lowest, self.ceiling, points)
                 scan = (radii, *self._arrays(radii))
+                slopes = scan[2]
+                least = np.minimum(slopes[:-1], slopes[1:])
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    constants = np.where(least > 0.0, np.abs(np.diff(slopes)) / np.diff(radii) / (2.0 * least), np.inf)
                 if len(_SCANS) >= _JUMP_OFFS_KEPT:
                     _SCANS.clear()
-                _SCANS[key] = (scan, tuple(column.tolist() for column in scan))
+                _SCANS[key] = (scan, tuple(column.tolist() for column in scan), constants)
             self._start_scan = _SCANS[key]
         return self._start_scan
+
+    def _newton_constants(self) -> np.ndarray:
+        """Newton's constant ``|d''|/(2 d')`` on each interval of the start scan (kept with it, :meth:`_scans`)."""
+        return self._scans()[2]
 
     def _start(self, depth: float) -> float:
         """Newton's start for ``depth``: the inverse's cubic Hermite interpolant on the scan (:meth:`_scan`) about it
@@ -336,18 +346,16 @@ class LayerBranch(Branch):
         radii, depths, slopes = self._scan()
         if float(np.max(depth)) > depths[-1]:
             self.radius(float(np.max(depth)), RADII_RTOL)  # (beyond the tables: its error, naming the layer)
-        index = np.clip(np.searchsorted(depths, depth), 1, radii.size - 1)
-        lower, upper = radii[index - 1], radii[index]
-        pairs = (np.stack([radii[index - 1], radii[index]]), np.stack([depths[index - 1], depths[index]]),
-                 np.stack([slopes[index - 1], slopes[index]]))
-        a = _hermite_start(depth, *pairs)
-        upper = np.where(depth >= depths[-1], 2.0 * radii[-1], upper)  # (the ceiling's root, to rounding beyond it)
+        index = np.searchsorted(depths, depth)
+        np.clip(index, 1, radii.size - 1, out=index)
+        below_index = index - 1
+        lower, upper = radii[below_index], radii[index]
+        a = _hermite_start(depth, (lower, upper), (depths[below_index], depths[index]),
+                           (slopes[below_index], slopes[index]))
+        if depth.size and float(np.max(depth)) >= depths[-1]:
+            upper = np.where(depth >= depths[-1], 2.0 * radii[-1], upper)  # (the ceiling's root, to rounding beyond)
         below = depth <= depths[0]  # (no adhesion, below the scan: d ∝ aⁿ towards a = 0)
-        # Newton's constant |d''|/(2 d') on the scan's interval (the chord of the slopes over the least slope; inf
-        # where a slope is not positive): a step ``δ`` leaves the root within ``q δ²`` (:data:`NEWTON_SHARE`)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            least = np.minimum(*pairs[2])
-            q = np.where(least > 0.0, np.abs(np.diff(pairs[2], axis=0)[0]) / (upper - lower) / (2.0 * least), np.inf)
+        q = self._newton_constants()[below_index]  # (a step δ leaves the root within q δ²: NEWTON_SHARE)
         if np.any(below):
             lower = np.where(below, 0.0, lower)
             a = np.where(below, radii[0] * np.clip(depth / depths[0], 0.0, 1.0) ** (1.0 / self.n), a)

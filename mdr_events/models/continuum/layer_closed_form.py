@@ -103,7 +103,8 @@ class BranchIntegrals:
         #: the series, ``(function, degree + 1, cell)``, and per cell as lists (the scalar route's)
         self.series = np.array(series)
         self.lists = self.series.transpose(2, 0, 1).tolist()
-        self.width = width
+        self.width, self._ends = width, ends
+        self._by_degree = np.ascontiguousarray(self.series.transpose(1, 0, 2))  # (degree + 1, function, cell)
 
     def covers(self, low: float, high: float) -> bool:
         """Whether ``[low, high]`` lies within the cells.
@@ -136,10 +137,13 @@ class BranchIntegrals:
             ``(function, radius)``.
         """
         a = np.asarray(a, dtype=float)
-        cell = np.clip(np.searchsorted(self.ends, a, side="right") - 1, 0, len(self.ends) - 2)
-        t = 2.0 * (a - np.asarray(self.ends)[cell]) / self.width[cell] - 1.0
-        coefficients = self.series[rows][:, :, cell].transpose(1, 0, 2)  # (degree + 1, function, radius)
-        return legendre.legval(np.broadcast_to(t, coefficients.shape[1:]), coefficients, tensor=False)
+        cell = np.clip(np.searchsorted(self._ends, a, side="right") - 1, 0, len(self.ends) - 2)
+        t = 2.0 * (a - self._ends[cell]) / self.width[cell] - 1.0
+        coefficients = self._by_degree[:, rows, cell]  # (degree + 1, function, radius)
+        b1 = b2 = 0.0  # (Clenshaw's recurrence, as :meth:`value`: P_{k+1} = ((2k+1) t P_k − k P_{k−1})/(k+1))
+        for k in range(CELL_NODES, 0, -1):
+            b1, b2 = coefficients[k] + _ALPHA[k] * t * b1 - _BETA[k] * b2, b1
+        return coefficients[0] + t * b1 - 0.5 * b2
 
     def value(self, a: float) -> list[float]:
         """:meth:`values` at one radius, every function, in Python floats (Clenshaw's recurrence).
@@ -160,10 +164,15 @@ class BranchIntegrals:
         out = []
         for coefficients in self.lists[cell]:
             b1 = b2 = 0.0
-            for k in range(len(coefficients) - 1, 0, -1):  # (P_{k+1} = ((2k+1) t P_k − k P_{k−1})/(k+1))
-                b1, b2 = coefficients[k] + (2.0 * k + 1.0) / (k + 1.0) * t * b1 - (k + 1.0) / (k + 2.0) * b2, b1
+            for k in range(CELL_NODES, 0, -1):  # (P_{k+1} = ((2k+1) t P_k − k P_{k−1})/(k+1))
+                b1, b2 = coefficients[k] + _ALPHA[k] * t * b1 - _BETA[k] * b2, b1
             out.append(coefficients[0] + t * b1 - 0.5 * b2)
         return out
+
+
+#: Clenshaw's coefficients of Legendre's recurrence, ``(2k+1)/(k+1)`` and ``(k+1)/(k+2)`` at ``k``
+_ALPHA = [(2.0 * k + 1.0) / (k + 1.0) for k in range(CELL_NODES + 1)]
+_BETA = [(k + 1.0) / (k + 2.0) for k in range(CELL_NODES + 1)]
 
 
 def _cells(ends: list[float]) -> list[float]:

@@ -91,11 +91,11 @@ class LayerMedium(HalfSpaceMedium):
         return self._cap(a, K, self._factor(a)[0]) if a > 0 else 0.0
 
     def _shifts(self, K: float, a: np.ndarray) -> np.ndarray:
-        """:meth:`shift` of an array of radii (the table's vectorised factor)."""
-        from mdr_events.theory.layer.tangential_tables import tangential_table
-
+        """:meth:`shift` of an array of radii (the factor's splines by Horner's rule on the arrays,
+        :meth:`~mdr_events.theory.layer.scalar_factors.TangentialFactors.parts_array`)."""
         radii = np.asarray(a, dtype=float)
-        factor = tangential_table(self.params.nu).stiffness_factor(np.maximum(radii, 0.0) / self.layer.thickness)
+        lam = np.maximum(radii, 0.0) / self.layer.thickness
+        factor = self._pair_array(self.params.nu, *self.tangential.parts_array(lam))[0]
         return np.where(radii > 0, self._cap_array(radii, K, factor), 0.0)
 
     def measures_and_shifts(self, K: float, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
