@@ -48,7 +48,13 @@ class LayerMedium(HalfSpaceMedium):
         from mdr_events.theory.layer_continuum_symbolic import derive_continuum_model
 
         self.params, self.indenter, self.layer = params, indenter, layer
-        self.normal = NormalFactors(params.nu, layer, _power_law(indenter)[1])
+        from mdr_events.theory.layer.relations import _abel_factor
+        from mdr_events.theory.layer.tables import layer_table
+
+        c, self._exponent = _power_law(indenter)
+        self.normal = NormalFactors(params.nu, layer, self._exponent)
+        #: what the normal force reads: the table and ``κₙ c`` (:meth:`normal_force`)
+        self._table, self._kc = layer_table(params.nu, layer.base, self._exponent), _abel_factor(self._exponent) * c
         relations = derive_continuum_model()
         self._pair_array = relations["layer_continuum_tangential_factor_pair"].numeric
         self._weight_array = relations["layer_continuum_weight"].numeric
@@ -272,12 +278,14 @@ class LayerMedium(HalfSpaceMedium):
         numpy.ndarray
             ``F_N`` (N).
         """
-        from mdr_events.theory.layer import normal_force
+        from mdr_events.theory.layer.relations import _force_of_factors
 
-        # (the relation unchecked: the continuum hands it valid radii and depths, and its arguments' checks cost a
-        # third of the call)
+        # (the relation unchecked, its table and κₙc kept: the continuum hands it valid radii and depths, and the
+        # arguments' checks and look-ups cost half the call)
+        a = np.asarray(radius, dtype=float)
         with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):  # (as the checked one)
-            return normal_force.__wrapped__(depth, radius, self.indenter, params.E_star, params.nu, self.layer)
+            return _force_of_factors(depth, a, self._kc, self._exponent, params.E_star, self._table,
+                                    np.abs(a) / self.layer.thickness)
 
 
 class FrictionlessLayerMedium(LayerMedium):
