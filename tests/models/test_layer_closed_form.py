@@ -65,17 +65,20 @@ def test_one_radius_and_many_read_the_series_alike():
 
 @pytest.mark.parametrize("h", LAYERS[:2])
 def test_the_radii_of_newtons_first_step_are_the_iterated_ones(h, monkeypatch):
-    """Newton's step taken as the root where its own bound allows (``NEWTON_SHARE``) against the iteration to a step
-    within ``RADII_RTOL``: within the tolerance, or the root's conditioning at the fold (``∂d/∂a → 0``: a depth
+    """Newton's step taken as the root where its own bound allows (``NEWTON_SHARE``), for many depths and for one,
+    against the iteration to a step within ``RADII_RTOL``: within the tolerance, or the root's conditioning at the fold (``∂d/∂a → 0``: a depth
     rounded by a few ulp moves the root by that over the slope)."""
     _, branches = _branches(h)
     for branch in branches:
         radii = np.geomspace(branch.jump_off_radius * (1 + 1e-6), 0.3 * branch.ceiling, 2000)
         depths = branch.depths(radii)
         first = branch.radii(depths)
+        alone = np.array([branch.radius(float(depth), RADII_RTOL) for depth in depths[::20]])
         with monkeypatch.context() as patch:
             patch.setattr(layer_branch, "NEWTON_SHARE", 0.0)
             iterated = branch.radii(depths)
+            iterated_alone = np.array([branch.radius(float(depth), RADII_RTOL) for depth in depths[::20]])
         slopes = branch._arrays(iterated)[1]
         conditioning = 8 * EPS * np.abs(depths) / slopes
         assert np.all(np.abs(first - iterated) <= RADII_RTOL * iterated + conditioning)
+        assert np.all(np.abs(alone - iterated_alone) <= RADII_RTOL * iterated_alone + conditioning[::20])

@@ -203,9 +203,11 @@ class LayerBranch(Branch):
         """:meth:`_scan` as lists of floats (the scalar start's: NumPy's scalars cost microseconds)."""
         return self._scans()[1]
 
-    def _scans(self) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], tuple[list[float], ...], np.ndarray]:
-        """The start scan as arrays and as lists, and Newton's constant ``|d''|/(2 d')`` on each of its intervals: the
-        chord of its slopes over its length and twice its least slope (``inf`` where a slope is not positive)."""
+    def _scans(self) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], tuple[list[float], ...], np.ndarray,
+                              list[float]]:
+        """The start scan as arrays and as lists, and Newton's constant ``|d''|/(2 d')`` on each of its intervals (the
+        chord of its slopes over its length and twice its least slope; ``inf`` where a slope is not positive), as an
+        array and as a list."""
         if self._start_scan is None:
             key = (*_branch_key(self), self.jump_off_radius)
             if key not in _SCANS:
@@ -219,7 +221,7 @@ class LayerBranch(Branch):
                     constants = np.where(least > 0.0, np.abs(np.diff(slopes)) / np.diff(radii) / (2.0 * least), np.inf)
                 if len(_SCANS) >= _JUMP_OFFS_KEPT:
                     _SCANS.clear()
-                _SCANS[key] = (scan, tuple(column.tolist() for column in scan), constants)
+                _SCANS[key] = (scan, tuple(column.tolist() for column in scan), constants, constants.tolist())
             self._start_scan = _SCANS[key]
         return self._start_scan
 
@@ -227,14 +229,16 @@ class LayerBranch(Branch):
         """Newton's constant ``|d''|/(2 d')`` on each interval of the start scan (kept with it, :meth:`_scans`)."""
         return self._scans()[2]
 
-    def _start(self, depth: float) -> float:
+    def _start(self, depth: float) -> tuple[float, float]:
         """Newton's start for ``depth``: the inverse's cubic Hermite interpolant on the scan (:meth:`_scan`) about it
-        (:func:`_hermite_start`), the scan's first or last radius outside it. A function of ``depth`` alone."""
+        (:func:`_hermite_start`), the scan's first or last radius outside it; and Newton's constant of its interval
+        (``inf`` outside the scan). A function of ``depth`` alone."""
         radii, depths, slopes = self._scan_lists()
         index = bisect.bisect_left(depths, depth)
         if index == 0 or index == len(radii):
-            return radii[min(index, len(radii) - 1)]
-        return _hermite_start(depth, radii[index - 1:index + 1], depths[index - 1:index + 1], slopes[index - 1:index + 1])
+            return radii[min(index, len(radii) - 1)], math.inf
+        return (_hermite_start(depth, radii[index - 1:index + 1], depths[index - 1:index + 1],
+                               slopes[index - 1:index + 1]), self._scans()[3][index - 1])
 
     def radius(self, depth: float, rtol: float) -> float:
         """Stable-branch radius at ``depth``, converged to ``rtol`` (``nan`` below the jump-off depth; within
@@ -265,7 +269,7 @@ class LayerBranch(Branch):
             return self.jump_off_radius
         lower, upper = self._floor, math.inf
         depth = float(depth)
-        a = self._start(depth)
+        a, constant = self._start(depth)
         for _ in range(ROOT_ITERATIONS):
             value, slope = self._evaluate(a)  # (not remembered: the iterates would push out the span's radii)
             if value >= depth:
@@ -276,6 +280,9 @@ class LayerBranch(Branch):
             guess = a - step
             if abs(step) <= rtol * a:  # (Newton's step within the tolerance: converged, wherever the bracket is)
                 return guess
+            if constant * step * step <= NEWTON_SHARE * rtol * a and lower < guess < min(upper, self.ceiling):
+                return guess  # (the step's own bound, as radii's: the first step from the start's interval)
+            constant = math.inf
             if not lower < guess < min(upper, self.ceiling):  # (outside the bracket: bisect it, or double it)
                 if upper == math.inf and a >= self.ceiling:
                     raise ValueError(f"depth={depth!r} m is not allowed on {self.layer.describe()} in the continuum "
@@ -441,10 +448,11 @@ _SCANS: dict[tuple, tuple] = {}
 
 #: The accuracy of :meth:`LayerBranch.radii` (the default ``radius_rtol`` of the continuum's tolerances).
 RADII_RTOL = 1e-14
-#: :meth:`LayerBranch.radii` takes Newton's step ``δ`` as the root, without reading the branch again, where
+#: :meth:`LayerBranch.radii` (and :meth:`LayerBranch.radius`, at its ``rtol``) takes Newton's first step ``δ`` as the
+#: root, without reading the branch again, where
 #: ``q δ² <= NEWTON_SHARE · RADII_RTOL · a`` (``q = |d''|/(2d')``, Newton's constant, estimated by the chord of the
 #: start scan's slopes over its least one): the step's error, ``q δ²`` to leading order, then lies a hundred times
-#: below the tolerance, a margin for ``d''`` varying across the scan's interval (3.7% of the radius; ``d''`` is
+#: below the tolerance, a margin for ``d''`` varying across the scan's interval (1.8% of the radius; ``d''`` is
 #: smooth there and its chord within a few per cent of it away from the jump-off, where ``q`` is infinite and the
 #: iteration reads the branch again). From the Hermite start (~1e-9 of the radius) the first step is taken: one
 #: reading of the branch in place of two.
