@@ -82,3 +82,5 @@ def test_the_radii_of_newtons_first_step_are_the_iterated_ones(h, monkeypatch):
         conditioning = 8 * EPS * np.abs(depths) / slopes
         assert np.all(np.abs(first - iterated) <= RADII_RTOL * iterated + conditioning)
         assert np.all(np.abs(alone - iterated_alone) <= RADII_RTOL * iterated_alone + conditioning[::20])
+        few = branch.radii(depths[:3])  # (a few depths: the scalar iteration's, layer_branch.SCALAR_RADII)
+        assert np.all(np.abs(few - iterated[:3]) <= RADII_RTOL * iterated[:3] + conditioning[:3])

@@ -344,8 +344,11 @@ class LayerBranch(Branch):
         if self.work == 0.0:
             out[depth <= 0.0] = 0.0
         inside = depth > (0.0 if self.work == 0.0 else self.jump_off_depth)
-        if np.any(inside):
+        count = int(np.count_nonzero(inside))
+        if count > SCALAR_RADII:
             out[inside] = self._roots(depth[inside])
+        elif count:  # (a few: the scalar iteration, without the arrays' fixed cost; the same root to RADII_RTOL)
+            out[inside] = [self.radius(depth, RADII_RTOL) for depth in depth[inside].tolist()]
         return out
 
     def _roots(self, depth: np.ndarray) -> np.ndarray:
@@ -446,6 +449,10 @@ _JUMP_OFFS_KEPT = 64
 _SCANS: dict[tuple, tuple] = {}
 
 
+#: At most this many depths, :meth:`LayerBranch.radii` takes each one's :meth:`~LayerBranch.radius` (a run's sample at
+#: a span's end, read again: the arrays' route costs some hundred microseconds however few its depths, the scalar one a
+#: few each).
+SCALAR_RADII = 4
 #: The accuracy of :meth:`LayerBranch.radii` (the default ``radius_rtol`` of the continuum's tolerances).
 RADII_RTOL = 1e-14
 #: :meth:`LayerBranch.radii` (and :meth:`LayerBranch.radius`, at its ``rtol``) takes Newton's first step ``δ`` as the

@@ -57,6 +57,7 @@ class LayerMedium(HalfSpaceMedium):
         self._table, self._kc = layer_table(params.nu, layer.base, self._exponent), _abel_factor(self._exponent) * c
         relations = derive_continuum_model()
         self._pair_array = relations["layer_continuum_tangential_factor_pair"].numeric
+        self._factor_array = relations["layer_continuum_tangential_factor"].numeric
         self._weight_array = relations["layer_continuum_weight"].numeric
         self._measure_array = relations["layer_continuum_measure"].numeric
         self._cap = relations["layer_continuum_cap"].scalar
@@ -101,7 +102,7 @@ class LayerMedium(HalfSpaceMedium):
         :meth:`~mdr_events.theory.layer.scalar_factors.TangentialFactors.parts_array`)."""
         radii = np.asarray(a, dtype=float)
         lam = np.maximum(radii, 0.0) / self.layer.thickness
-        factor = self._pair_array(self.params.nu, *self.tangential.parts_array(lam))[0]
+        factor = self._factor_array(self.params.nu, *self.tangential.factors_array(lam))
         return np.where(radii > 0, self._cap_array(radii, K, factor), 0.0)
 
     def measures_and_shifts(self, K: float, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -120,7 +121,7 @@ class LayerMedium(HalfSpaceMedium):
         tuple of numpy.ndarray
             ``M`` (m) and ``ū`` (m).
         """
-        factor = self._pair_array(self.params.nu, *self.tangential.parts_array(a / self.layer.thickness))[0]
+        factor = self._factor_array(self.params.nu, *self.tangential.factors_array(a / self.layer.thickness))
         return self._measure_array(a, factor), self._cap_array(a, K, factor)
 
     def weights_and_caps(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
