@@ -17,6 +17,8 @@ import numpy as np
 
 from mdr_events.contact.layer import Layer, LayerBase
 from mdr_events.parameters import Parameters
+from mdr_events.theory.layer.compliance import LAMBDA_MAX
+from mdr_events.theory.layer.tables import LAMBDA_MIN
 
 from .media import FACTOR_CACHE, HalfSpaceMedium
 
@@ -282,11 +284,13 @@ class LayerMedium(HalfSpaceMedium):
         from mdr_events.theory.layer.relations import _force_of_factors
 
         # (the relation unchecked, its table and κₙc kept: the continuum hands it valid radii and depths, and the
-        # arguments' checks and look-ups cost half the call)
+        # arguments' checks and look-ups cost half the call; within the splines their values alone)
         a = np.asarray(radius, dtype=float)
+        lam = np.abs(a) / self.layer.thickness
+        inside = lam.size > 0 and LAMBDA_MIN <= float(np.min(lam)) and float(np.max(lam)) <= LAMBDA_MAX
         with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):  # (as the checked one)
-            return _force_of_factors(depth, a, self._kc, self._exponent, params.E_star, self._table,
-                                    np.abs(a) / self.layer.thickness)
+            factors = self._table.spline_force_factors(lam) if inside else self._table.force_factors(lam)
+            return _force_of_factors(depth, a, self._kc, self._exponent, params.E_star, factors)
 
 
 class FrictionlessLayerMedium(LayerMedium):
