@@ -17,8 +17,6 @@ import numpy as np
 
 from mdr_events.contact.layer import Layer, LayerBase
 from mdr_events.parameters import Parameters
-from mdr_events.theory.layer.compliance import LAMBDA_MAX
-from mdr_events.theory.layer.tables import LAMBDA_MIN
 
 from .media import FACTOR_CACHE, HalfSpaceMedium
 
@@ -281,7 +279,9 @@ class LayerMedium(HalfSpaceMedium):
         numpy.ndarray
             ``F_N`` (N).
         """
+        from mdr_events.theory.layer.compliance import LAMBDA_MAX
         from mdr_events.theory.layer.relations import _force_of_factors
+        from mdr_events.theory.layer.tables import LAMBDA_MIN
 
         # (the relation unchecked, its table and κₙc kept: the continuum hands it valid radii and depths, and the
         # arguments' checks and look-ups cost half the call; within the splines their values alone)
