@@ -261,14 +261,14 @@ class LayerPrimitive(NamedTuple):
 
     def rate(self, a: float) -> float:
         """``dP/da`` at the radius ``a`` (m): the span's right-hand side over ``2G*``, term by term."""
-        M = self.medium.measure(0.0, a)
-        value = (self.D0 + self.D1 * M) * self.medium.shift_slope(self.K, a)
+        M, cap, cap_slope, weight = self.medium.rate_parts(self.K, a)
+        value = (self.D0 + self.D1 * M) * cap_slope
         value += (self.E0 + self.E1 * M) * self.branch.slope(a)
         if self.U or self.A or self.C or self.C0:
-            edge = self.U * self.medium.shift(self.K, a) + self.A + self.C * self.branch.depth(a)
+            edge = self.U * cap + self.A + self.C * self.branch.depth(a)
             if self.C0:
                 edge += self.C0 * self.attach.depth(a)
-            value += edge * self.medium.density(a)
+            value += edge * weight
         return value
 
 

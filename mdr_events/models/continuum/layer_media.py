@@ -142,6 +142,28 @@ class LayerMedium(HalfSpaceMedium):
         factor, slope = self._pair_array(self.params.nu, *self.tangential.parts_array(a / h))
         return self._weight_array(a, h, factor, slope), self._cap_array(a, 1.0, factor)
 
+    def rate_parts(self, K: float, a: float) -> tuple[float, float, float, float]:
+        """``M(a)``, ``ū(a)``, ``dū/da`` and ``w(a)`` at one radius ``a > 0`` from one look-up of ``Φ_t`` (the values
+        of :meth:`measure` from 0, :meth:`shift`, :meth:`shift_slope` and :meth:`density`, bit for bit: what the
+        closed form's rate reads, :meth:`~.layer_closed_form.LayerPrimitive.rate`).
+
+        Parameters
+        ----------
+        K : float
+            The half-space's cap per radius.
+        a : float
+            The contact radius (m), ``> 0``.
+
+        Returns
+        -------
+        tuple of float
+            ``M`` (m), ``ū`` (m), ``dū/da`` (1), ``w`` (1).
+        """
+        a, h = float(a), self.layer.thickness
+        factor, slope = self._factor(a)
+        return (self._measure(a, factor) - 0.0, self._cap(a, K, factor), self._cap_slope(a, h, K, factor, slope),
+                self._weight(a, h, factor, slope))
+
     def span_primitive(self, integrator):
         """A moving span's force in closed form on the bonded layer (:func:`~.layer_closed_form.layer_span_primitive`).
 
