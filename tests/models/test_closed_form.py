@@ -16,6 +16,8 @@ from mdr_events.models.continuum.extrema import solution_extrema
 from mdr_events.models.continuum.span import SpanIntegrator
 
 PAPER = me.Parameters.paper()
+#: The paper's layer (m), bonded to its base.
+LAYER = me.Layer(5e-3)
 HERTZ = PAPER.replace(dgamma0=0.0, dgamma1=0.0)
 #: Both routes' F_x over its largest value: the quadrature holds each panel to rtol = 1e-10 of the force (measured
 #: 1e-16 to 6e-13 between the routes on these cases, the closed form exact to rounding): the solver's rtol.
@@ -55,6 +57,12 @@ CASES = {
                                       {"friction": FrictionLaw("coulomb", mu=0.3)}),
     "zigzag": lambda: (PAPER, me.Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4),
                                        (2e-4, -1e-4)], PAPER.v), {}),
+    # on the paper's 5 mm layer bonded to its base (:mod:`~mdr_events.models.continuum.layer_closed_form`)
+    "layer, A 20°": lambda: (PAPER, me.Path.scenario_A(20.0, PAPER), {"layer": LAYER}),
+    "layer, B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER), {"layer": LAYER}),
+    "layer, B 70°": lambda: (PAPER, me.Path.scenario_B(70.0, PAPER), {"layer": LAYER}),
+    "thin layer, zigzag": lambda: (PAPER, me.Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4),
+                                                   (-1e-4, 3e-4), (2e-4, -1e-4)], PAPER.v), {"layer": me.Layer(1e-3)}),
 }
 
 
@@ -217,3 +225,23 @@ def test_an_event_that_turns_back_between_two_readings_is_found(part):
                           [event])
     assert marched.status == 1
     assert marched.t_events[0] == [pytest.approx(s * s / scale, rel=EVENT_RTOL)]
+
+
+#: Equal parts of a run in time over which the reference's work is summed (:func:`tangential_work` rules between a
+#: span's breakpoints alone: a span the quadrature took in one panel, full slip as the layer's contact shrinks, has one
+#: 8-point rule over a non-polynomial integrand, 4.4e-11 off on "layer, B 30°"; in parts of 1/256 of the run the rule's
+#: error, ~(1/256)^16 of the span's, is gone).
+WORK_PARTS = 256
+
+
+@pytest.mark.parametrize("case", ["layer, A 20°", "layer, B 30°"])
+def test_the_work_over_closed_spans_on_a_layer_is_the_tight_quadrature_s(case, monkeypatch):
+    """As on the half-space (above), the tight quadrature's work summed over :data:`WORK_PARTS` parts of the run."""
+    params, path, options = CASES[case]()
+    closed = tangential_work(_run(case, monkeypatch, True))
+    with monkeypatch.context() as patch:
+        patch.setattr(SpanIntegrator, "closed_form", False)
+        run = solve_path(params, path, tolerances=me.Tolerances(rtol=1e-13, atol=1e-22), **options)
+    edges = np.linspace(0.0, run.end_time, WORK_PARTS + 1)
+    tight = sum(tangential_work(run, float(low), float(high)) for low, high in zip(edges[:-1], edges[1:]))
+    assert abs(closed - tight) <= WORK_RTOL * abs(tight), (closed, tight)

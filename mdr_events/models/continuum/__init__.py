@@ -24,6 +24,7 @@ module                     one idea
 :mod:`.integrate`          ``integrate_span``: a span's force up to its end or first event (quadrature, knots)
 :mod:`.span_panels`        a span's force as a quadrature by Gauss–Legendre panels, stored as DOP853 dense output
 :mod:`.closed_form`        a moving span without a front in closed form (the branch's depth and integral)
+:mod:`.layer_closed_form`  the same on a bonded layer (the cells' series of ``M``, ``ū``, ``d`` and their integrals)
 :mod:`.span_march`         ``solve_ivp``'s loop for a span's DOP853 between knots without its bookkeeping (same steps)
 :mod:`.solve`              :func:`solve_path`: plan → integrate → transition → log
 :mod:`.compressed`         Coulomb's law alone with adhesion: the compressed zone's run beside the contact, and the

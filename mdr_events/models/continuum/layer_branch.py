@@ -28,7 +28,7 @@ from mdr_events.theory.layer_continuum_symbolic import derive_continuum_model
 
 from .branch import FOLD_SHARE, Branch, IteratedSamples
 
-__all__ = ["LayerBranch", "ROOT_ITERATIONS", "RADII_RTOL"]
+__all__ = ["LayerBranch", "ROOT_ITERATIONS", "RADII_RTOL", "NEWTON_SHARE"]
 
 #: The most steps of the radius's root (Newton's, or bisections where a step leaves the bracket): each bisection
 #: halves the bracket's logarithm, which starts below 60 (doublings from the jump-off to ``a/h = 64``).
@@ -36,12 +36,13 @@ ROOT_ITERATIONS = 200
 #: How many radii's depth and slope a branch remembers (:attr:`LayerBranch._values`).
 VALUE_CACHE = 64
 #: Points per decade of the scan whose inverse's cubic Hermite interpolant starts Newton's iteration for a radius
-#: (:meth:`LayerBranch.radius`, :meth:`LayerBranch.radii`): neighbours 10^(1/64) apart (3.7%) put the start within
-#: ~1e-9 of the root (the cubic's error ~ (Δa/a)⁴/384), one of Newton's steps from 1e-14 (the chord of 10^(1/16) was
-#: ~1e-3 off, three steps). The start is a function of the depth alone, so that a radius never depends on the roots
-#: asked before it (a start from the last roots found made the same solution evaluated twice differ by an ulp, on
-#: some CPUs).
-START_SCAN_PER_DECADE = 64
+#: (:meth:`LayerBranch.radius`, :meth:`LayerBranch.radii`): neighbours 10^(1/128) apart (1.8%) put the start within
+#: ~2e-9 of the root (measured on the paper's 5 mm layer, median; 3e-8 at 64 a decade: the cubic's error falls as
+#: (Δa/a)⁴), one of Newton's steps from 1e-14, which :data:`NEWTON_SHARE` takes as the root without reading the branch
+#: again (at 64 a decade a quarter of the radii needed a second reading; the chord of 10^(1/16) was ~1e-3 off, three
+#: steps). The start is a function of the depth alone, so that a radius never depends on the roots asked before it (a
+#: start from the last roots found made the same solution evaluated twice differ by an ulp, on some CPUs).
+START_SCAN_PER_DECADE = 128
 #: The start scan's lowest radius without adhesion, in layer thicknesses (the branch starts at ``a = 0`` there).
 START_SCAN_FLOOR = 1e-6
 #: Points per decade of the scan that brackets the jump-off (where ``∂d/∂a`` turns positive; Brent's method refines).
@@ -95,7 +96,7 @@ class LayerBranch(IteratedSamples, Branch):
         self.jump_off_radius = self._jump_off_radius() if work > 0.0 else 0.0
         self.jump_off_depth = self.depth(self.jump_off_radius)
         self._floor = self.jump_off_radius
-        self._start_scan: tuple | None = None  # (the scan of radii, depths, slopes, as arrays and as lists: when asked)
+        self._start_scan: tuple | None = None  # (:meth:`_scans`: when asked)
 
     # --- what a kind of indenter sets (:class:`~.layer_punch_branch.LayerPunchBranch` the flat face's) --------------
     def _power(self, indenter) -> tuple[float, float]:
@@ -219,7 +220,11 @@ class LayerBranch(IteratedSamples, Branch):
         """:meth:`_scan` as lists of floats (the scalar start's: NumPy's scalars cost microseconds)."""
         return self._scans()[1]
 
-    def _scans(self) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], tuple[list[float], ...]]:
+    def _scans(self) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], tuple[list[float], ...], np.ndarray,
+                              list[float]]:
+        """The start scan as arrays and as lists, and Newton's constant ``|d''|/(2 d')`` on each of its intervals (the
+        chord of its slopes over its length and twice its least slope; ``inf`` where a slope is not positive), as an
+        array and as a list."""
         if self._start_scan is None:
             key = (*self._key(), self.jump_off_radius)
             if key not in _SCANS:
@@ -227,20 +232,30 @@ class LayerBranch(IteratedSamples, Branch):
                 points = max(int(math.ceil(START_SCAN_PER_DECADE * math.log10(self.ceiling / lowest))), 1) + 1
                 radii = np.geomspace(lowest, self.ceiling, points)
                 scan = (radii, *self._arrays(radii))
+                slopes = scan[2]
+                least = np.minimum(slopes[:-1], slopes[1:])
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    constants = np.where(least > 0.0, np.abs(np.diff(slopes)) / np.diff(radii) / (2.0 * least), np.inf)
                 if len(_SCANS) >= _JUMP_OFFS_KEPT:
                     _SCANS.clear()
-                _SCANS[key] = (scan, tuple(column.tolist() for column in scan))
+                _SCANS[key] = (scan, tuple(column.tolist() for column in scan), constants, constants.tolist())
             self._start_scan = _SCANS[key]
         return self._start_scan
 
-    def _start(self, depth: float) -> float:
+    def _newton_constants(self) -> np.ndarray:
+        """Newton's constant ``|d''|/(2 d')`` on each interval of the start scan (kept with it, :meth:`_scans`)."""
+        return self._scans()[2]
+
+    def _start(self, depth: float) -> tuple[float, float]:
         """Newton's start for ``depth``: the inverse's cubic Hermite interpolant on the scan (:meth:`_scan`) about it
-        (:func:`_hermite_start`), the scan's first or last radius outside it. A function of ``depth`` alone."""
+        (:func:`_hermite_start`), the scan's first or last radius outside it; and Newton's constant of its interval
+        (``inf`` outside the scan). A function of ``depth`` alone."""
         radii, depths, slopes = self._scan_lists()
         index = bisect.bisect_left(depths, depth)
         if index == 0 or index == len(radii):
-            return radii[min(index, len(radii) - 1)]
-        return _hermite_start(depth, radii[index - 1:index + 1], depths[index - 1:index + 1], slopes[index - 1:index + 1])
+            return radii[min(index, len(radii) - 1)], math.inf
+        return (_hermite_start(depth, radii[index - 1:index + 1], depths[index - 1:index + 1],
+                               slopes[index - 1:index + 1]), self._scans()[3][index - 1])
 
     def radius(self, depth: float, rtol: float) -> float:
         """Stable-branch radius at ``depth``, converged to ``rtol`` (``nan`` below the jump-off depth; within
@@ -271,7 +286,7 @@ class LayerBranch(IteratedSamples, Branch):
             return self.jump_off_radius
         lower, upper = self._floor, math.inf
         depth = float(depth)
-        a = self._start(depth)
+        a, constant = self._start(depth)
         for _ in range(ROOT_ITERATIONS):
             value, slope = self._evaluate(a)  # (not remembered: the iterates would push out the span's radii)
             if value >= depth:
@@ -282,6 +297,9 @@ class LayerBranch(IteratedSamples, Branch):
             guess = a - step
             if abs(step) <= rtol * a:  # (Newton's step within the tolerance: converged, wherever the bracket is)
                 return guess
+            if constant * step * step <= NEWTON_SHARE * rtol * a and lower < guess < min(upper, self.ceiling):
+                return guess  # (the step's own bound, as radii's: the first step from the start's interval)
+            constant = math.inf
             if not lower < guess < min(upper, self.ceiling):  # (outside the bracket: bisect it, or double it)
                 if upper == math.inf and a >= self.ceiling:
                     raise ValueError(f"depth={depth!r} m is not allowed on {self.layer.describe()} in the continuum "
@@ -343,8 +361,11 @@ class LayerBranch(IteratedSamples, Branch):
         if self.work == 0.0:
             out[depth <= 0.0] = 0.0
         inside = depth > (0.0 if self.work == 0.0 else self.jump_off_depth)
-        if np.any(inside):
+        count = int(np.count_nonzero(inside))
+        if count > SCALAR_RADII:
             out[inside] = self._roots(depth[inside])
+        elif count:  # (a few: the scalar iteration, without the arrays' fixed cost; the same root to RADII_RTOL)
+            out[inside] = [self.radius(depth, RADII_RTOL) for depth in depth[inside].tolist()]
         return out
 
     def _roots(self, depth: np.ndarray) -> np.ndarray:
@@ -352,16 +373,20 @@ class LayerBranch(IteratedSamples, Branch):
         radii, depths, slopes = self._scan()
         if float(np.max(depth)) > depths[-1]:
             self.radius(float(np.max(depth)), RADII_RTOL)  # (beyond the tables: its error, naming the layer)
-        index = np.clip(np.searchsorted(depths, depth), 1, radii.size - 1)
-        lower, upper = radii[index - 1], radii[index]
-        pairs = (np.stack([radii[index - 1], radii[index]]), np.stack([depths[index - 1], depths[index]]),
-                 np.stack([slopes[index - 1], slopes[index]]))
-        a = _hermite_start(depth, *pairs)
-        upper = np.where(depth >= depths[-1], 2.0 * radii[-1], upper)  # (the ceiling's root, to rounding beyond it)
+        index = np.searchsorted(depths, depth)
+        np.clip(index, 1, radii.size - 1, out=index)
+        below_index = index - 1
+        lower, upper = radii[below_index], radii[index]
+        a = _hermite_start(depth, (lower, upper), (depths[below_index], depths[index]),
+                           (slopes[below_index], slopes[index]))
+        if depth.size and float(np.max(depth)) >= depths[-1]:
+            upper = np.where(depth >= depths[-1], 2.0 * radii[-1], upper)  # (the ceiling's root, to rounding beyond)
         below = depth <= depths[0]  # (no adhesion, below the scan: d ∝ aⁿ towards a = 0)
+        q = self._newton_constants()[below_index]  # (a step δ leaves the root within q δ²: NEWTON_SHARE)
         if np.any(below):
             lower = np.where(below, 0.0, lower)
             a = np.where(below, radii[0] * np.clip(depth / depths[0], 0.0, 1.0) ** (1.0 / self.n), a)
+            q = np.where(below, np.inf, q)
         out = np.empty(depth.shape)
         active = np.arange(depth.size)  # (the depths whose roots are still moving: the others are left alone)
         for _ in range(ROOT_ITERATIONS):
@@ -374,19 +399,21 @@ class LayerBranch(IteratedSamples, Branch):
             guess = a - step
             inside = (guess > lower) & (guess < upper)
             done = (np.abs(step) <= RADII_RTOL * a) | (upper - lower <= RADII_RTOL * upper)
+            with np.errstate(invalid="ignore"):  # (inf · 0: no bound, the test above decides)
+                done |= inside & (q * step * step <= NEWTON_SHARE * RADII_RTOL * a)  # (the step's own bound)
             guess = np.where(inside | (np.abs(step) <= RADII_RTOL * a), guess, 0.5 * (lower + upper))
             out[active[done]] = guess[done]
             moving = ~done
             if not np.any(moving):
                 return out
-            active, a, lower, upper = active[moving], guess[moving], lower[moving], upper[moving]
+            active, a, lower, upper, q = active[moving], guess[moving], lower[moving], upper[moving], q[moving]
         raise RuntimeError(f"the radii of {depth.size} depths on {self.layer.describe()} did not converge")
 
 
 def _hermite_start(depth, radii: np.ndarray, depths: np.ndarray, slopes: np.ndarray):
     """The radius of ``depth`` on the cubic Hermite interpolant of the inverse ``a(d)`` between two scanned points
-    (``radii``, ``depths``, ``slopes`` ``∂d/∂a``: each of two rows, the lower point first), within about 1e-8 of the
-    root at :data:`START_SCAN_PER_DECADE`: one or two of Newton's steps from :data:`RADII_RTOL`. Where a slope is not
+    (``radii``, ``depths``, ``slopes`` ``∂d/∂a``: each of two rows, the lower point first), within about 1e-9 of the
+    root at :data:`START_SCAN_PER_DECADE`: one of Newton's steps from :data:`RADII_RTOL`. Where a slope is not
     positive (the jump-off's, where the inverse has a square root) or the cubic leaves the interval, the chord."""
     (r0, r1), (d0, d1), (s0, s1) = radii, depths, slopes
     width, rise = d1 - d0, r1 - r0
@@ -439,5 +466,18 @@ _JUMP_OFFS_KEPT = 64
 _SCANS: dict[tuple, tuple] = {}
 
 
+#: At most this many depths, :meth:`LayerBranch.radii` takes each one's :meth:`~LayerBranch.radius` (a run's sample at
+#: a span's end, read again: the arrays' route costs some hundred microseconds however few its depths, the scalar one a
+#: few each).
+SCALAR_RADII = 4
 #: The accuracy of :meth:`LayerBranch.radii` (the default ``radius_rtol`` of the continuum's tolerances).
 RADII_RTOL = 1e-14
+#: :meth:`LayerBranch.radii` (and :meth:`LayerBranch.radius`, at its ``rtol``) takes Newton's first step ``δ`` as the
+#: root, without reading the branch again, where
+#: ``q δ² <= NEWTON_SHARE · RADII_RTOL · a`` (``q = |d''|/(2d')``, Newton's constant, estimated by the chord of the
+#: start scan's slopes over its least one): the step's error, ``q δ²`` to leading order, then lies a hundred times
+#: below the tolerance, a margin for ``d''`` varying across the scan's interval (1.8% of the radius; ``d''`` is
+#: smooth there and its chord within a few per cent of it away from the jump-off, where ``q`` is infinite and the
+#: iteration reads the branch again). From the Hermite start (~1e-9 of the radius) the first step is taken: one
+#: reading of the branch in place of two.
+NEWTON_SHARE = 1e-2

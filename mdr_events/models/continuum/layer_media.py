@@ -52,7 +52,13 @@ class LayerMedium(HalfSpaceMedium):
         #: what the indenter's kind makes of the normal springs (:mod:`.layer_normals`)
         self.springs = LAYER_NORMALS[type(indenter)]
         self.normal = NormalFactors(params.nu, layer, self.springs.exponent(indenter))
+        #: the normal force ``F_N(d, a)`` of this medium's springs (:meth:`normal_force`)
+        self._force = self.springs.force_reader(params, indenter, layer)
         relations = derive_continuum_model()
+        self._pair_array = relations["layer_continuum_tangential_factor_pair"].numeric
+        self._factor_array = relations["layer_continuum_tangential_factor"].numeric
+        self._weight_array = relations["layer_continuum_weight"].numeric
+        self._measure_array = relations["layer_continuum_measure"].numeric
         self._cap = relations["layer_continuum_cap"].scalar
         self._cap_array = relations["layer_continuum_cap"].numeric
         self._cap_slope = relations["layer_continuum_cap_slope"].scalar
@@ -91,12 +97,88 @@ class LayerMedium(HalfSpaceMedium):
         return self._cap(a, K, self._factor(a)[0]) if a > 0 else 0.0
 
     def _shifts(self, K: float, a: np.ndarray) -> np.ndarray:
-        """:meth:`shift` of an array of radii (the table's vectorised factor)."""
-        from mdr_events.theory.layer.tangential_tables import tangential_table
-
+        """:meth:`shift` of an array of radii (the factor's splines by Horner's rule on the arrays,
+        :meth:`~mdr_events.theory.layer.scalar_factors.TangentialFactors.parts_array`)."""
         radii = np.asarray(a, dtype=float)
-        factor = tangential_table(self.params.nu).stiffness_factor(np.maximum(radii, 0.0) / self.layer.thickness)
+        lam = np.maximum(radii, 0.0) / self.layer.thickness
+        factor = self._factor_array(self.params.nu, *self.tangential.factors_array(lam))
         return np.where(radii > 0, self._cap_array(radii, K, factor), 0.0)
+
+    def measures_and_shifts(self, K: float, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``M(a)`` (:meth:`measure` from 0) and ``ū(a)`` (:meth:`shift`) at an array of radii ``> 0``, from one
+        vectorised factor (the closed form's, :mod:`.layer_closed_form`).
+
+        Parameters
+        ----------
+        K : float
+            The half-space's cap per radius.
+        a : numpy.ndarray
+            The contact radii (m), ``> 0``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``M`` (m) and ``ū`` (m).
+        """
+        factor = self._factor_array(self.params.nu, *self.tangential.factors_array(a / self.layer.thickness))
+        return self._measure_array(a, factor), self._cap_array(a, K, factor)
+
+    def weights_and_caps(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``w(a)`` (:meth:`density`: the same splines' slopes) and ``ū(a)/K = a/Φ_t`` at an array of radii ``> 0``
+        (the integrands of :class:`~.layer_closed_form.BranchIntegrals`).
+
+        Parameters
+        ----------
+        a : numpy.ndarray
+            The radii (m), ``> 0``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``w`` (1) and ``ū/K`` (m).
+        """
+        h = self.layer.thickness
+        factor, slope = self._pair_array(self.params.nu, *self.tangential.parts_array(a / h))
+        return self._weight_array(a, h, factor, slope), self._cap_array(a, 1.0, factor)
+
+    def rate_parts(self, K: float, a: float) -> tuple[float, float, float, float]:
+        """``M(a)``, ``ū(a)``, ``dū/da`` and ``w(a)`` at one radius ``a > 0`` from one look-up of ``Φ_t`` (the values
+        of :meth:`measure` from 0, :meth:`shift`, :meth:`shift_slope` and :meth:`density`, bit for bit: what the
+        closed form's rate reads, :meth:`~.layer_closed_form.LayerPrimitive.rate`).
+
+        Parameters
+        ----------
+        K : float
+            The half-space's cap per radius.
+        a : float
+            The contact radius (m), ``> 0``.
+
+        Returns
+        -------
+        tuple of float
+            ``M`` (m), ``ū`` (m), ``dū/da`` (1), ``w`` (1).
+        """
+        a, h = float(a), self.layer.thickness
+        factor, slope = self._factor(a)
+        return (self._measure(a, factor) - 0.0, self._cap(a, K, factor), self._cap_slope(a, h, K, factor, slope),
+                self._weight(a, h, factor, slope))
+
+    def span_primitive(self, integrator):
+        """A moving span's force in closed form on the bonded layer (:func:`~.layer_closed_form.layer_span_primitive`).
+
+        Parameters
+        ----------
+        integrator : SpanIntegrator
+            A moving span without a front.
+
+        Returns
+        -------
+        LayerPrimitive or None
+            ``P``, or ``None`` where the span has no closed form here.
+        """
+        from .layer_closed_form import layer_span_primitive
+
+        return layer_span_primitive(integrator)
 
     def shift_slope(self, K: float, a: float) -> float:
         """``dū/da`` (``layer_continuum_cap_slope``; ``K`` at ``a = 0``).
@@ -217,7 +299,7 @@ class LayerMedium(HalfSpaceMedium):
         numpy.ndarray
             ``F_N`` (N).
         """
-        return self.springs.force(params, self.indenter, self.layer, depth, radius)
+        return self._force(depth, radius)
 
 
 class FrictionlessLayerMedium(LayerMedium):
@@ -263,6 +345,21 @@ class FrictionlessLayerMedium(LayerMedium):
             ``K``.
         """
         return K
+
+    def span_primitive(self, integrator):
+        """No tangential springs, no closed form (the force stays 0).
+
+        Parameters
+        ----------
+        integrator : SpanIntegrator
+            A moving span without a front.
+
+        Returns
+        -------
+        None
+            None.
+        """
+        return None
 
     def measure(self, lower: float, upper: float) -> float:
         """No tangential springs: 0.

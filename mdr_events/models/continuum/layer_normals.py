@@ -15,6 +15,8 @@ kind                        the normal springs
 
 from __future__ import annotations
 
+from typing import Any, Callable
+
 import numpy as np
 
 from mdr_events.contact.indenters import FlatPunch, Paraboloid, PowerLaw
@@ -72,8 +74,9 @@ class ProfileNormal:
         return LayerBranch(params, work, indenter, layer, factors)
 
     @staticmethod
-    def force(params: Parameters, indenter, layer: Layer, depth, radius):
-        """``F_N = F₀(a) + K(a)(d − g(a))`` (generalised (10), :func:`~mdr_events.theory.layer.normal_force`).
+    def force_reader(params: Parameters, indenter, layer: Layer) -> Callable[[Any, Any], np.ndarray]:
+        """``F_N(d, a) = F₀(a) + K(a)(d − g(a))`` (generalised (10), :func:`~mdr_events.theory.layer.normal_force`),
+        its table and ``κₙ c`` read once.
 
         Parameters
         ----------
@@ -83,20 +86,30 @@ class ProfileNormal:
             The indenter.
         layer : Layer
             The layer.
-        depth, radius : float or array_like
-            ``d`` and ``a`` (m).
 
         Returns
         -------
-        numpy.ndarray
-            ``F_N`` (N).
+        callable
+            ``F_N`` (N) of the depth and radius ``d``, ``a`` (float or array_like, m).
         """
-        from mdr_events.theory.layer import normal_force
+        from mdr_events.theory.layer.compliance import LAMBDA_MAX
+        from mdr_events.theory.layer.relations import _abel_factor, _force_of_factors, _power_law
+        from mdr_events.theory.layer.tables import LAMBDA_MIN, layer_table
 
-        # (the relation unchecked: the continuum hands it valid radii and depths, and its arguments' checks cost a
-        # third of the call)
-        with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):  # (as the checked one)
-            return normal_force.__wrapped__(depth, radius, indenter, params.E_star, params.nu, layer)
+        c, exponent = _power_law(indenter)
+        table, kc = layer_table(params.nu, layer.base, exponent), _abel_factor(exponent) * c
+
+        def force(depth, radius) -> np.ndarray:
+            # (the relation unchecked, its table and κₙc kept: the continuum hands it valid radii and depths, and the
+            # arguments' checks and look-ups cost half the call; within the splines their values alone)
+            a = np.asarray(radius, dtype=float)
+            lam = np.abs(a) / layer.thickness
+            inside = lam.size > 0 and LAMBDA_MIN <= float(np.min(lam)) and float(np.max(lam)) <= LAMBDA_MAX
+            with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):  # (as the checked one)
+                factors = table.spline_force_factors(lam) if inside else table.force_factors(lam)
+                return _force_of_factors(depth, a, kc, exponent, params.E_star, factors)
+
+        return force
 
 
 class PunchNormal(ProfileNormal):
@@ -147,8 +160,8 @@ class PunchNormal(ProfileNormal):
         return LayerPunchBranch(params, work, indenter, layer, factors)
 
     @staticmethod
-    def force(params: Parameters, indenter, layer: Layer, depth, radius):
-        """``F_N = K(a) d`` (``layer_flat_punch_force``; the springs let go store nothing,
+    def force_reader(params: Parameters, indenter, layer: Layer) -> Callable[[Any, Any], np.ndarray]:
+        """``F_N(d, a) = K(a) d`` (``layer_flat_punch_force``; the springs let go store nothing,
         ``layer_flat_punch_receding_force``), ``K`` the layer's punch stiffness at the contact's radius.
 
         Parameters
@@ -159,21 +172,25 @@ class PunchNormal(ProfileNormal):
             The punch.
         layer : Layer
             The layer.
-        depth, radius : float or array_like
-            ``d`` and ``a`` (m).
 
         Returns
         -------
-        numpy.ndarray
-            ``F_N`` (N; 0 where ``a = 0``).
+        callable
+            ``F_N`` (N; 0 where ``a = 0``) of the depth and radius ``d``, ``a`` (float or array_like, m).
         """
         from mdr_events.theory.layer import punch_stiffness
         from mdr_events.theory.layer_symbolic import derive_layer_model
 
-        radius = np.asarray(radius, dtype=float)
-        with np.errstate(invalid="ignore"):
-            stiffness = punch_stiffness.__wrapped__(np.where(radius > 0, radius, 0.0), params.E_star, params.nu, layer)
-        return np.asarray(derive_layer_model()["layer_flat_punch_force"].numeric(stiffness, depth), dtype=float)
+        relation = derive_layer_model()["layer_flat_punch_force"].numeric
+
+        def force(depth, radius) -> np.ndarray:
+            radius = np.asarray(radius, dtype=float)
+            with np.errstate(invalid="ignore"):
+                stiffness = punch_stiffness.__wrapped__(np.where(radius > 0, radius, 0.0), params.E_star, params.nu,
+                                                        layer)
+            return np.asarray(relation(stiffness, depth), dtype=float)
+
+        return force
 
 
 #: The normal springs of each kind of indenter on a layer, by its type.

@@ -65,6 +65,23 @@ class HalfSpaceMedium:
         """
         return K * a
 
+    def span_primitive(self, integrator):
+        """A moving span's force in closed form (:func:`~.closed_form.span_primitive`).
+
+        Parameters
+        ----------
+        integrator : SpanIntegrator
+            A moving span without a front.
+
+        Returns
+        -------
+        Primitive
+            ``P``.
+        """
+        from .closed_form import span_primitive
+
+        return span_primitive(integrator)
+
     def shift_slope(self, K: float, a: float) -> float:
         """``dū/da``: ``K``.
 

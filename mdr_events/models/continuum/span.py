@@ -42,7 +42,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from .anchors import AnchorMap
-from .closed_form import Primitive, span_primitive
+from .closed_form import Primitive
 from .graded import Grading
 from .media import HalfSpaceMedium
 from .model import ContinuumModel, Segment
@@ -409,17 +409,18 @@ class SpanIntegrator:
 
     def primitive(self) -> Primitive | None:
         """The span's force in closed form (:mod:`.closed_form`): a moving span without a front on the half-space,
-        whose zones' sizes are linear in the radius.
+        whose zones' sizes are linear in the radius, or on a bonded layer under ``τ0``'s law, whose zones' measures are
+        linear in ``M(a)`` (:mod:`.layer_closed_form`); the medium's :meth:`~.media.HalfSpaceMedium.span_primitive`.
 
         Returns
         -------
-        Primitive or None
+        Primitive or LayerPrimitive or None
             ``P``, with ``dF_x/da = 2G* dP/da`` (:meth:`rhs`); ``None`` where the span has no closed form here (or
             :attr:`closed_form` is off).
         """
-        if not (self.closed_form and self.moving) or self.has_fronts() or type(self.medium) is not HalfSpaceMedium:
+        if not (self.closed_form and self.moving) or self.has_fronts():
             return None
-        return span_primitive(self)
+        return self.medium.span_primitive(self)
 
     # --- the right-hand side ---------------------------------------------------------------
     def rhs(self, var: float, y) -> list[float]:

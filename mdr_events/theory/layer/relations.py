@@ -420,10 +420,38 @@ def normal_force(d, a, profile, E_star: float, nu: float, layer: Layer) -> np.nd
     """
     c, n = _power_law(profile)
     a = np.asarray(a, dtype=float)
-    factors = _factors(nu, layer, n)
-    lam = _relative(a, layer)
-    g_half = _abel_factor(n) * c * a**n
-    stiffness, profile_factor, force_factor = factors.force_factors(lam)
+    factors = _factors(nu, layer, n).force_factors(_relative(a, layer))
+    return _force_of_factors(d, a, _abel_factor(n) * c, n, E_star, factors)
+
+
+def _force_of_factors(d, a: np.ndarray, kc: float, n: float, E_star: float, factors: tuple) -> np.ndarray:
+    r""":func:`normal_force` of its table's factors, unchecked (the continuum's samples: valid radii and depths).
+
+    .. math:: F_N = 2E^* a \left(g_\infty \chi_n + \Phi\,(d - g_\infty \gamma_n)
+ight), \qquad g_\infty = \kappa_n c a^n
+
+    Parameters
+    ----------
+    d : float or numpy.ndarray
+        The depth (m).
+    a : numpy.ndarray
+        The contact radius (m).
+    kc : float
+        ``κₙ c`` (the half-space's profile ``g∞ = κₙ c aⁿ``).
+    n : float
+        The power.
+    E_star : float
+        ``E*`` (Pa).
+    factors : tuple of numpy.ndarray
+        ``Φ``, ``γₙ``, ``χₙ`` at ``λ = a/h`` (the table's ``force_factors``).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``F_N`` (N).
+    """
+    g_half = kc * a**n
+    stiffness, profile_factor, force_factor = factors
     at_edge = g_half * profile_factor
     return 2.0 * E_star * a * (g_half * force_factor + stiffness * (d - at_edge))
 

@@ -123,6 +123,26 @@ class LogPair:
         return tuple(out)
 
 
+    def values_array(self, lam: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Both columns' ``y(λ)`` for an array of ``λ ≥ LAMBDA_MIN`` (:meth:`values_and_slopes_array`'s values, the
+        same operations: the same values bit for bit).
+
+        Parameters
+        ----------
+        lam : numpy.ndarray
+            ``a/h``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            The first factor, then the second.
+        """
+        s = np.log(lam)
+        index = np.clip(np.searchsorted(self._breaks, s, side="right") - 1, 0, self.last)
+        x = s - self._breaks[index]
+        return tuple(np.exp(((((c5 * x + c4) * x + c3) * x + c2) * x + c1) * x + c0)
+                     for c5, c4, c3, c2, c1, c0 in self._coefficients[:, :, index])
+
     def values_and_slopes_array(self, lam: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """:meth:`values_and_slopes` for an array of ``λ ≥ LAMBDA_MIN`` (Horner's rule on the arrays).
 
@@ -301,6 +321,54 @@ class TangentialFactors:
                                                2.0 * k / math.pi / (1.0 - 2.0 * k * lam / math.pi) ** 2)
                                               for k in self.k0)
         return phi_l, phi_t, slope_l, slope_t
+
+    def parts_array(self, lam: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`_parts` for an array of ``λ`` (the same splines by Horner's rule on the arrays, the same series below
+        ``LAMBDA_MIN``): what ``combine``'s array form takes.
+
+        Parameters
+        ----------
+        lam : numpy.ndarray
+            ``a/h`` (``0 <= λ <= LAMBDA_MAX``).
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``Φ_L``, ``Φ_T`` and their slopes in ``λ``.
+        """
+        lam = np.asarray(lam, dtype=float)
+        small = lam < TANGENTIAL_LAMBDA_MIN
+        phi_l, slope_l, phi_t, slope_t = self.columns.values_and_slopes_array(np.where(small, TANGENTIAL_LAMBDA_MIN,
+                                                                                         lam))
+        if np.any(small):
+            series = []
+            for k in self.k0:
+                factor = 1.0 / (1.0 - 2.0 * k * lam / math.pi)
+                series += (factor, 2.0 * k / math.pi * factor * factor)
+            phi_l, slope_l, phi_t, slope_t = (np.where(small, exact, value) for exact, value
+                                              in zip(series, (phi_l, slope_l, phi_t, slope_t)))
+        return phi_l, phi_t, slope_l, slope_t
+
+    def factors_array(self, lam: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`parts_array`'s ``Φ_L`` and ``Φ_T`` alone, without their slopes (the same values bit for bit).
+
+        Parameters
+        ----------
+        lam : numpy.ndarray
+            ``a/h`` (``0 <= λ <= LAMBDA_MAX``).
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``Φ_L`` and ``Φ_T``.
+        """
+        lam = np.asarray(lam, dtype=float)
+        small = lam < TANGENTIAL_LAMBDA_MIN
+        values = self.columns.values_array(np.where(small, TANGENTIAL_LAMBDA_MIN, lam))
+        if np.any(small):
+            values = tuple(np.where(small, 1.0 / (1.0 - 2.0 * k * lam / math.pi), value)
+                           for k, value in zip(self.k0, values))
+        return values
 
     def stiffness_factor(self, a: float) -> tuple[float, float]:
         """``Φ_t(λ) = K_t/(2G* a)`` and ``dΦ_t/dλ`` at ``λ = a/h``.

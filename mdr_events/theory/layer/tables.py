@@ -257,6 +257,22 @@ class LayerTable:
         return tuple(self._column(name, lam, small, s, logarithm=logarithm)
                      for name, logarithm in zip(_FORCE_COLUMNS, logarithms))
 
+    def spline_force_factors(self, lam: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """:meth:`force_factors` of ``λ`` within the splines, ``LAMBDA_MIN <= λ <= LAMBDA_MAX``, unchecked (the
+        continuum's samples; the same values bit for bit).
+
+        Parameters
+        ----------
+        lam : numpy.ndarray
+            ``a/h`` in ``[LAMBDA_MIN, LAMBDA_MAX]``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``Φ``, ``γₙ``, ``χₙ``.
+        """
+        return tuple(np.exp(np.moveaxis(self._force_splines(np.log(lam)), -1, 0)))
+
     def force_factor(self, lam) -> np.ndarray:
         """``χₙ(λ) = F₀(a)/(2E* a g∞(a))``: the non-adhesive force of the power law.
 

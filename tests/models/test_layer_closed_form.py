@@ -1,0 +1,86 @@
+"""The layer's closed form of a span (:mod:`mdr_events.models.continuum.layer_closed_form`): the cells' series are the
+functions the right-hand side reads and their integrals, and the radii Newton's first step gives are the iterated ones.
+(Whole runs against the quadrature: ``tests/models/test_closed_form.py``.)"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.integrate import quad
+
+import mdr_events as me
+from mdr_events.models.continuum import layer_branch, layer_closed_form
+from mdr_events.models.continuum.layer_branch import RADII_RTOL, LayerBranch
+from mdr_events.models.continuum.layer_media import LayerMedium
+
+PAPER = me.Parameters.paper()
+EPS = np.finfo(float).eps
+#: The series against the functions, over each function's largest value on the sample: the interpolant through
+#: CELL_NODES = 8 Gauss points of a cell 0.1 wide in ln a, whose functions' nearest singularity (a = 0) lies 20
+#: half-widths away, is within ρ^-8 ≈ 1.5e-13 of it (ρ ≈ 40, Bernstein's ellipse); measured 5e-14.
+SERIES_SHARE = 1.5e-13
+#: The integrals' differences against SciPy's quad at epsrel = QUAD_RTOL, over the largest: quad's own tolerance (its
+#: estimate, not a bound: ten times it), the series' error integrated being far below (measured 2e-13 against quad at
+#: 1e-13, which warns of its own rounding on the 1 mm layer).
+QUAD_RTOL = 1e-12
+INTEGRAL_SHARE = 10 * QUAD_RTOL
+#: Layers (m): the paper's, a thin one (a/h up to ~3) and one so thick that the contact lies below the tables' least
+#: λ (the series' range, cut into cells of its own).
+LAYERS = (5e-3, 1e-3, 1e9)
+
+
+def _branches(h: float):
+    medium = LayerMedium(PAPER, me.Paraboloid(PAPER.R), me.Layer(h))
+    return medium, [LayerBranch(PAPER, work, me.Paraboloid(PAPER.R), me.Layer(h), medium.normal)
+                    for work in (PAPER.dgamma0, PAPER.dgamma1)]
+
+
+@pytest.mark.parametrize("h", LAYERS)
+def test_the_cells_series_are_the_functions_and_their_integrals(h):
+    medium, branches = _branches(h)
+    for branch in branches:
+        series = layer_closed_form.branch_integrals(medium, branch)
+        radii = np.sort(np.random.default_rng(7).uniform(series.floor, 12 * series.floor, 60))
+        M, u, d, J_u, J_d = series.values(radii)
+        exact = np.array([[medium.measure(0.0, a), medium.shift(1.0, a), branch.depth(a)] for a in radii]).T
+        for values, functions in zip((M, u, d), exact):
+            assert np.max(np.abs(values - functions)) <= SERIES_SHARE * np.max(np.abs(functions))
+        ends = radii[::10]
+        for integrals, integrand in ((J_u[::10], lambda a: medium.density(a) * medium.shift(1.0, a)),
+                                     (J_d[::10], lambda a: medium.density(a) * branch.depth(a))):
+            # (split at the splines' breaks, where the integrands' fifth derivative jumps)
+            reference = np.array([quad(integrand, ends[0], end, epsabs=0.0, epsrel=QUAD_RTOL, limit=200,
+                                       points=[b for b in series.ends if ends[0] < b < end] or None)[0]
+                                  for end in ends])
+            difference = integrals - integrals[0]
+            assert np.max(np.abs(difference - reference)) <= INTEGRAL_SHARE * np.max(np.abs(reference))
+
+
+def test_one_radius_and_many_read_the_series_alike():
+    medium, (branch, _) = _branches(5e-3)
+    series = layer_closed_form.branch_integrals(medium, branch)
+    radii = np.linspace(series.floor, 20 * series.floor, 101)
+    np.testing.assert_array_equal(np.array([series.value(float(a)) for a in radii]).T, series.values(radii))
+
+
+@pytest.mark.parametrize("h", LAYERS[:2])
+def test_the_radii_of_newtons_first_step_are_the_iterated_ones(h, monkeypatch):
+    """Newton's step taken as the root where its own bound allows (``NEWTON_SHARE``), for many depths and for one,
+    against the iteration to a step within ``RADII_RTOL``: within the tolerance, or the root's conditioning at the fold (``∂d/∂a → 0``: a depth
+    rounded by a few ulp moves the root by that over the slope)."""
+    _, branches = _branches(h)
+    for branch in branches:
+        radii = np.geomspace(branch.jump_off_radius * (1 + 1e-6), 0.3 * branch.ceiling, 2000)
+        depths = branch.depths(radii)
+        first = branch.radii(depths)
+        alone = np.array([branch.radius(float(depth), RADII_RTOL) for depth in depths[::20]])
+        with monkeypatch.context() as patch:
+            patch.setattr(layer_branch, "NEWTON_SHARE", 0.0)
+            iterated = branch.radii(depths)
+            iterated_alone = np.array([branch.radius(float(depth), RADII_RTOL) for depth in depths[::20]])
+        slopes = branch._arrays(iterated)[1]
+        conditioning = 8 * EPS * np.abs(depths) / slopes
+        assert np.all(np.abs(first - iterated) <= RADII_RTOL * iterated + conditioning)
+        assert np.all(np.abs(alone - iterated_alone) <= RADII_RTOL * iterated_alone + conditioning[::20])
+        few = branch.radii(depths[:3])  # (a few depths: the scalar iteration's, layer_branch.SCALAR_RADII)
+        assert np.all(np.abs(few - iterated[:3]) <= RADII_RTOL * iterated[:3] + conditioning[:3])
