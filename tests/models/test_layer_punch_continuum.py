@@ -303,3 +303,13 @@ def test_validate_and_fit_take_the_punch_on_a_thin_layer_with_the_continuum_as_r
     start = contact.replace(tau0=1.3 * contact.friction.tau0)
     result = me.fit(measured, start, motion, free=["tau0"], time_origin="path_start")
     assert result.parameters.tau0 == pytest.approx(contact.friction.tau0, rel=1e-6)
+
+
+def test_a_face_beyond_the_layers_tables_is_refused_before_the_run_naming_the_punch_the_layer_and_the_method():
+    """a₀/h = 100 > LAMBDA_MAX = 64: refused by the check ``d_crit`` makes (``check_punch_face``) before any branch is
+    built, not by the tables' lookup after the whole run."""
+    contact = PUNCH.replace(h=A0 / 100.0)
+    with pytest.raises(ValueError, match=r"^contact\.indenter=FlatPunch\(radius=0\.002\) is not allowed in the "
+                                         r"continuum method on layer h = 2e-05 m, bonded base: its face exceeds "
+                                         r"a/h = 64; allowed: a radius up to 0\.00128 m$"):
+        _continuum(contact)

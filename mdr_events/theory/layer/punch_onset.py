@@ -25,6 +25,8 @@ import math
 
 import numpy as np
 
+from mdr_events.contact.indenters import FlatPunch
+from mdr_events.contact.layer import Layer
 from mdr_events.contact.model import Contact
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.job import rate_independent
@@ -36,7 +38,7 @@ from mdr_events.theory.layer.tangential_relations import sliding_cap
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_real
 
-__all__ = ["check_punch_contact", "punch_onset_depths", "punch_critical_angle", "RECESSION_POINTS"]
+__all__ = ["check_punch_contact", "check_punch_face", "punch_onset_depths", "punch_critical_angle", "RECESSION_POINTS"]
 
 #: Radii of the logarithmic scan of the travel per cap along the recession, from the face to the jump-off (a span of
 #: at most ``ln(a₀/a_j)``, below ln 100 on the layers of the tables: nodes 1.2% apart, refined by bisection).
@@ -75,12 +77,31 @@ def check_punch_contact(contact: Contact, what: str, d_max: float | None) -> flo
                        lambda value: value > 0.0)
     check_representable(contact.parameters(depth, PAPER_V), contact.profile,
                         dataclasses.replace(contact.friction, tau0=None))
-    face, layer = float(contact.indenter.radius), contact.layer
-    if face > LAMBDA_MAX * layer.thickness:
-        raise ValueError(f"contact.indenter={contact.indenter!r} is not allowed in {what} on {layer.describe()}: its "
+    check_punch_face(contact.indenter, contact.layer, what)
+    return depth
+
+
+def check_punch_face(indenter: FlatPunch, layer: Layer, what: str) -> None:
+    """Refuse a punch whose face lies beyond the layer's tables, ``a₀/h > LAMBDA_MAX``, before anything runs.
+
+    Parameters
+    ----------
+    indenter : FlatPunch
+        The punch.
+    layer : Layer
+        The layer (the half-space passes).
+    what : str
+        What is asked (a function, a method), named in the error.
+
+    Raises
+    ------
+    ValueError
+        In one line, naming the punch, the layer, ``what`` and the largest radius allowed.
+    """
+    if float(indenter.radius) > LAMBDA_MAX * layer.thickness:
+        raise ValueError(f"contact.indenter={indenter!r} is not allowed in {what} on {layer.describe()}: its "
                          f"face exceeds a/h = {LAMBDA_MAX:g}; allowed: a radius up to "
                          f"{LAMBDA_MAX * layer.thickness:.6g} m")
-    return depth
 
 
 def _cap(contact: Contact, a):
