@@ -313,3 +313,25 @@ def test_a_face_beyond_the_layers_tables_is_refused_before_the_run_naming_the_pu
                                          r"continuum method on layer h = 2e-05 m, bonded base: its face exceeds "
                                          r"a/h = 64; allowed: a radius up to 0\.00128 m$"):
         _continuum(contact)
+
+
+def _events_in_order(run) -> list[tuple[str, float]]:
+    return [(str(kind), float(depth)) for kind, depth in zip(run["event_kind"].values, run["event_depth"].values)]
+
+
+@pytest.mark.parametrize("side", [-1.0, 1.0])
+def test_scenario_b_plus_critical_angle_and_indentation_onset_are_the_continuums(side):
+    """Scenario B+ on the thin layer (in to ``d_max``, further in at α to ``2 d_max``): half a degree below its critical
+    angle (``critical_angle(…, "B+")``, ``atan(d_max/ū(a₀))``) the springs slide on the way in, at ``d_crit``'s
+    "indentation" depth ``d_max + ū(a₀) tan α`` (to the root's 1e-12 of ``d_max``); half a degree above they slide
+    first on the way out (after the second corner)."""
+    contact = PUNCH.replace(h=THIN_LAYER)
+    angle = me.critical_angle(contact, "B+", d_max=D_MAX) + side * ANGLE_SIDE
+    run = me.simulate(contact, me.Scenario("B+", alpha=[angle], d_max=D_MAX), "continuum").isel(alpha=0)
+    kinds = [kind for kind, _ in _events_in_order(run)]
+    corners = [index for index, kind in enumerate(kinds) if kind == "corner"]
+    onset = kinds.index("slip_onset")
+    assert (onset < corners[1]) == (side < 0.0), kinds
+    if side < 0.0:
+        expected = float(me.d_crit(angle, contact, "B", True, "indentation", d_max=D_MAX))
+        assert _events_in_order(run)[onset][1] == pytest.approx(expected, abs=1e-12 * D_MAX)
