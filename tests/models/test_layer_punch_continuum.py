@@ -335,3 +335,30 @@ def test_scenario_b_plus_critical_angle_and_indentation_onset_are_the_continuums
     if side < 0.0:
         expected = float(me.d_crit(angle, contact, "B", True, "indentation", d_max=D_MAX))
         assert _events_in_order(run)[onset][1] == pytest.approx(expected, abs=1e-12 * D_MAX)
+
+
+#: The absolute tolerance on ``a · d ln Δl/da`` (1) of the retyped slope against the derived relation evaluated with
+#: ``K''`` by central differences of the tables' ``K'`` (step ``1e-4 a``: truncation ``O(1e-8)`` relative; measured
+#: below 5e-9 from ``a/h = 1e-3`` to 50).
+LOG_SLOPE_ATOL = 1e-7
+
+
+@pytest.mark.parametrize("h", [PAPER_LAYER, THIN_LAYER, A0 / 50.0])
+def test_the_recessions_log_slope_is_the_derived_receding_slope(h):
+    """``hess_log_slope`` (``1/(2a) − Θ'/(hΘ)``, which :func:`receding_radius` roots) is ``layer_flat_punch_receding_slope``
+    (SymPy, section 8) over ``−Δl``: ``d ln Δl/da = −(dd/da)/Δl`` on ``d = −Δl(a)``, from ``a/h = 1e-3`` to the face."""
+    from mdr_events.theory.layer.punch_recession import hess_log_slope
+    from mdr_events.theory.layer.scalar_factors import NormalFactors
+
+    contact = PUNCH.replace(h=h)
+    params = _material(contact)
+    material = (params.E_star, params.nu, contact.layer)
+    slope_of = derive_layer_model()["layer_flat_punch_receding_slope"].numeric
+    factors = NormalFactors(params.nu, contact.layer, 2.0)
+    for a in np.geomspace(1e-3 * h, A0, 9):
+        step = 1e-4 * a
+        second = (float(punch_stiffness_slope(a + step, *material))
+                  - float(punch_stiffness_slope(a - step, *material))) / (2.0 * step)
+        derived = float(slope_of(a, params.dgamma1, float(punch_stiffness_slope(a, *material)), second))
+        elongation = float(hess_elongation(a, params.dgamma1, *material))
+        assert abs(a * (-derived / elongation - hess_log_slope(factors, a))) <= LOG_SLOPE_ATOL, a

@@ -30,6 +30,9 @@ RECEDING_SCAN = 97
 def hess_log_slope(factors: NormalFactors, a: float) -> float:
     """``d ln Δl/da = 1/(2a) − Θ'/(hΘ)`` at the radius ``a`` (1/m): negative where the punch's contact recedes.
 
+    It is ``layer_flat_punch_receding_slope`` over ``−Δl`` with ``K' = 2E*Θ²``, ``K'' = 4E*ΘΘ'/h`` (the tables' ``Θ``,
+    ``Θ'`` without a difference quotient for ``K''``); a test evaluates the derived relation against it.
+
     Parameters
     ----------
     factors : NormalFactors
