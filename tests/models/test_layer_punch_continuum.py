@@ -362,3 +362,32 @@ def test_the_recessions_log_slope_is_the_derived_receding_slope(h):
         derived = float(slope_of(a, params.dgamma1, float(punch_stiffness_slope(a, *material)), second))
         elongation = float(hess_elongation(a, params.dgamma1, *material))
         assert abs(a * (-derived / elongation - hess_log_slope(factors, a))) <= LOG_SLOPE_ATOL, a
+
+
+@pytest.mark.parametrize("nu", [0.0, 0.3, 0.45, 0.5])
+def test_the_sliding_cap_rises_with_the_radius_across_the_tables(nu):
+    """The lemma behind scenario B's closed-form critical angle: ``ū(a) = π a τ0/(2G* Φ_t(a/h))`` rises strictly with
+    ``a`` from ``a/h = 1e-7`` to ``LAMBDA_MAX`` on a bonded layer (from ``∝ a`` on the half-space to the thin film's
+    constant ``τ0 h/G``)."""
+    from mdr_events.theory.layer import LAMBDA_MAX
+    from mdr_events.theory.layer.tangential_relations import sliding_cap
+
+    lam = np.geomspace(1e-7, LAMBDA_MAX, 20_001)
+    assert np.all(np.diff(sliding_cap(lam, 1.0, 1.0, nu, me.Layer(1.0))) > 0.0)
+
+
+@pytest.mark.parametrize("h", [PAPER_LAYER, THIN_LAYER, A0 / 50.0])
+def test_scenario_bs_critical_angle_is_the_largest_travel_per_cap_along_the_recession(h):
+    """``critical_angle(…, "B")`` (the travel per cap at the jump-off) is ``atan`` of the largest
+    ``(d_max + Δl(a))/ū(a)`` on a dense scan of ``[a_j, a₀]`` (the jump-off's radius from the continuum's run, a root
+    to ~1e-12: 1e-9 relative covers it; an interior maximum would be missed by the closed form)."""
+    from mdr_events.theory.layer.tangential_relations import sliding_cap
+
+    contact = PUNCH.replace(h=h)
+    params = _material(contact)
+    pull_radius = _events(_continuum(contact))["pull_off"][1]
+    radii = np.geomspace(pull_radius, A0, 10_001)
+    elongation = hess_elongation(radii, params.dgamma1, params.E_star, params.nu, contact.layer)
+    cap = sliding_cap(radii, contact.friction.tau0, contact.elastomer.G_star, params.nu, contact.layer)
+    largest = float(np.degrees(np.arctan(np.max((D_MAX + elongation) / cap))))
+    assert me.critical_angle(contact, "B", d_max=D_MAX) == pytest.approx(largest, rel=1e-9)
