@@ -391,3 +391,22 @@ def test_scenario_bs_critical_angle_is_the_largest_travel_per_cap_along_the_rece
     cap = sliding_cap(radii, contact.friction.tau0, contact.elastomer.G_star, params.nu, contact.layer)
     largest = float(np.degrees(np.arctan(np.max((D_MAX + elongation) / cap))))
     assert me.critical_angle(contact, "B", d_max=D_MAX) == pytest.approx(largest, rel=1e-9)
+
+
+class _NeverTurning:
+    """Normal factors whose ``Θ'/(hΘ)`` outgrows ``1/(2a)`` at every radius: ``d ln Δl/da < 0`` all the way in."""
+
+    h = 1.0
+
+    def edge_factor(self, a: float) -> tuple[float, float]:
+        return 1.0, 1.0 / a
+
+
+def test_a_recession_that_never_turns_is_an_error_not_a_nan():
+    """``receding_radius`` raises, naming the face and the thickness, where the slope never turns non-negative (no
+    layer of the tables does: the half-space's ``1/(2a)`` wins inwards), instead of handing the branch a ``nan``."""
+    from mdr_events.theory.layer.punch_recession import receding_radius
+
+    with pytest.raises(RuntimeError, match=r"^receding_radius: d ln Δl/da stays negative from the face 0\.002 m down "
+                                           r"to .* m on h = 1\.0 m"):
+        receding_radius(_NeverTurning(), A0)

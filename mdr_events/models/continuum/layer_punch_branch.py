@@ -61,8 +61,9 @@ class LayerPunchBranch(LayerBranch):
         #: the face's radius ``a₀``
         self.face = float(indenter.radius)
         super().__init__(params, work, indenter, layer, factors)
-        if work == 0.0:
+        if work == 0.0:  # (the face comes off at the surface: no root below it, the floor is the face too)
             self.jump_off_radius, self.jump_off_depth = self.face, 0.0
+            self._floor = self.face
         self.held_depth = self.depth(self.face) if work > 0.0 else 0.0
         #: a receded contact pressed back in grows along ``d = −Δl(a)`` until the face's edge: there it stops
         self.edge_depth = self.held_depth

@@ -14,8 +14,6 @@ the face itself where it is not negative there: the half-space's jump, Kendall's
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from mdr_events.theory.layer.scalar_factors import NormalFactors
@@ -64,6 +62,12 @@ def receding_radius(factors: NormalFactors, face: float) -> float:
     -------
     float
         The jump-off radius (m).
+
+    Raises
+    ------
+    RuntimeError
+        The slope negative down to ``1e-6`` of the face (not on a layer of the tables: the half-space's ``1/(2a)``
+        wins there).
     """
     from scipy.optimize import brentq
 
@@ -76,7 +80,8 @@ def receding_radius(factors: NormalFactors, face: float) -> float:
     for outer, inner in zip(radii.tolist(), radii[1:].tolist()):
         if not slope(inner) < 0.0:
             return float(brentq(slope, inner, outer, xtol=1e-15 * inner, rtol=4.0 * np.finfo(float).eps))
-    return math.nan  # (unreachable: the half-space's 1/(2a) wins below 1e-6 of any face within the tables)
+    raise RuntimeError(f"receding_radius: d ln Δl/da stays negative from the face {face!r} m down to "
+                       f"{radii[-1]!r} m on h = {factors.h!r} m; the half-space's 1/(2a) should win there")
 
 
 def punch_jump_off(contact, dgamma: float) -> tuple[float, float]:
