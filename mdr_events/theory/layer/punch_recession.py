@@ -18,11 +18,16 @@ import numpy as np
 
 from mdr_events.theory.layer.scalar_factors import NormalFactors
 
-__all__ = ["receding_radius", "hess_log_slope", "RECEDING_SCAN"]
+__all__ = ["receding_radius", "hess_log_slope", "RECEDING_SCAN", "RECEDING_FLOOR"]
 
-#: Points of the scan from the face inwards, geometric down to ``1e-6`` of it, that brackets where the recession stops
-#: (Brent's method refines): ``d ln Δl/da → +∞`` as ``a → 0`` (the half-space's ``1/(2a)``), so it always turns there.
+#: Points of the scan from the face inwards, geometric down to :data:`RECEDING_FLOOR` of it (16 a decade), that brackets
+#: where the recession stops (Brent's method refines). The slope turns once at most on the tables (``Δl`` has a single
+#: hump, every ``ν``), so any spacing brackets it; the nodes inside the bracket check that it does not turn back.
 RECEDING_SCAN = 97
+#: The scan's innermost radius, a share of the face: ``d ln Δl/da = 1/(2a) − Θ'/(hΘ) > 0`` wherever ``a < 0.4 h``
+#: (the tables' largest ``Θ'/Θ`` is 1.24, at ``ν = 0.5``, ``λ ≈ 0.18``), and a face within the tables (``a₀ <= 64 h``)
+#: puts ``0.4 h`` at ``1/160`` of it or beyond; ``1e-6`` is far inside that.
+RECEDING_FLOOR = 1e-6
 
 
 def hess_log_slope(factors: NormalFactors, a: float) -> float:
@@ -66,7 +71,7 @@ def receding_radius(factors: NormalFactors, face: float) -> float:
     Raises
     ------
     RuntimeError
-        The slope negative down to ``1e-6`` of the face (not on a layer of the tables: the half-space's ``1/(2a)``
+        The slope negative down to :data:`RECEDING_FLOOR` of the face (not on a layer of the tables: the half-space's ``1/(2a)``
         wins there).
     """
     from scipy.optimize import brentq
@@ -76,7 +81,7 @@ def receding_radius(factors: NormalFactors, face: float) -> float:
 
     if not slope(face) < 0.0:
         return face
-    radii = face * np.geomspace(1.0, 1e-6, RECEDING_SCAN)
+    radii = face * np.geomspace(1.0, RECEDING_FLOOR, RECEDING_SCAN)
     for outer, inner in zip(radii.tolist(), radii[1:].tolist()):
         if not slope(inner) < 0.0:
             return float(brentq(slope, inner, outer, xtol=1e-15 * inner, rtol=4.0 * np.finfo(float).eps))
