@@ -410,3 +410,36 @@ def test_a_recession_that_never_turns_is_an_error_not_a_nan():
     with pytest.raises(RuntimeError, match=r"^receding_radius: d ln Δl/da stays negative from the face 0\.002 m down "
                                            r"to .* m on h = 1\.0 m"):
         receding_radius(_NeverTurning(), A0)
+
+
+class _TwoHumps:
+    """Normal factors whose ``d ln Δl/da = 1/(2a) − Θ'/(hΘ)`` is negative near the face and again between 1% and 10%
+    of it (``h = 1``): ``Δl`` has two humps."""
+
+    h = 1.0
+
+    def edge_factor(self, a: float) -> tuple[float, float]:
+        falls = a > 0.5 * A0 or 0.01 * A0 < a < 0.1 * A0
+        return 1.0, (1.0 / a if falls else 0.0)
+
+
+def test_a_second_hump_of_hess_limit_inside_the_jump_off_is_an_error():
+    """The recession's jump-off assumes the rest comes off at once: a ``Δl`` that falls again inside it is refused."""
+    from mdr_events.theory.layer.punch_recession import receding_radius
+
+    with pytest.raises(RuntimeError, match=r"^receding_radius: Heß's limit falls again at .* m, inside the jump-off, "
+                                           r"under the face 0\.002 m on h = 1\.0 m"):
+        receding_radius(_TwoHumps(), A0)
+
+
+@pytest.mark.parametrize("nu", [0.0, 0.45, 0.49, 0.5])
+def test_hess_limit_has_a_single_hump_across_the_tables(nu):
+    """The assumption itself: on a bonded layer ``d ln Δl/da`` changes sign once at most from ``a/h = 1e-8`` to
+    ``LAMBDA_MAX`` (positive inwards; negative beyond ``a/h ≈ 0.46`` for nearly incompressible layers)."""
+    from mdr_events.theory.layer import LAMBDA_MAX
+    from mdr_events.theory.layer.punch_recession import hess_log_slope
+    from mdr_events.theory.layer.scalar_factors import NormalFactors
+
+    factors = NormalFactors(nu, me.Layer(1.0), 2.0)
+    signs = np.sign([hess_log_slope(factors, lam) for lam in np.geomspace(1e-8, LAMBDA_MAX, 2001)])
+    assert signs[0] > 0.0 and np.count_nonzero(np.diff(signs)) <= 1

@@ -82,11 +82,23 @@ def receding_radius(factors: NormalFactors, face: float) -> float:
     if not slope(face) < 0.0:
         return face
     radii = face * np.geomspace(1.0, RECEDING_FLOOR, RECEDING_SCAN)
-    for outer, inner in zip(radii.tolist(), radii[1:].tolist()):
+    for index, (outer, inner) in enumerate(zip(radii.tolist(), radii[1:].tolist())):
         if not slope(inner) < 0.0:
+            _check_single_hump(slope, radii[index + 2:], face, factors.h)
             return float(brentq(slope, inner, outer, xtol=1e-15 * inner, rtol=4.0 * np.finfo(float).eps))
     raise RuntimeError(f"receding_radius: d ln Δl/da stays negative from the face {face!r} m down to "
                        f"{radii[-1]!r} m on h = {factors.h!r} m; the half-space's 1/(2a) should win there")
+
+
+def _check_single_hump(slope, inner: np.ndarray, face: float, h: float) -> None:
+    """Refuse a ``Δl`` that falls again inside the jump-off (a second hump on the scan's nodes ``inner``): there a
+    smaller contact would hold after the jump instead of the rest coming off at once, which the branch does not take.
+    The tables' ``Δl`` has a single hump at every ``ν`` (tested), so this holds on every layer they cover."""
+    for radius in inner.tolist():
+        if slope(radius) < 0.0:
+            raise RuntimeError(f"receding_radius: Heß's limit falls again at {radius!r} m, inside the jump-off, under the "
+                               f"face {face!r} m on h = {h!r} m; allowed: a single hump of Δl (the rest comes off at "
+                               "once)")
 
 
 def punch_jump_off(contact, dgamma: float) -> tuple[float, float]:
