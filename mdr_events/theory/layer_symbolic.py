@@ -366,6 +366,21 @@ def _derive_flat_punch(add, out: dict) -> None:
         _check(held.is_positive, f"the flat punch's pull-off force on the {name} does not rise with its radius")
 
 
+def _check_receding_energy(force, elongation) -> None:
+    """Section 8's stability from the energy, not asserted: under depth control the contact of radius ``a`` at depth
+    ``d`` has ``Π(a) = ½ K(a) d² − π a² Δγ`` (the springs' elastic energy less the adhesion's). Its ``∂Π/∂d`` is the
+    springs' force ``K(a) d``; ``Π′(a) = 0`` at ``|d| = Δl(a)`` (Heß's limit, (8)); there
+    ``Π″(a) = 2π Δγ (a K″ − K′)/K′``, so the receding radius is a minimum of ``Π`` (stable) where ``a K″ > K′`` and the
+    recession ends where ``a K″ = K′`` (``layer_flat_punch_receding_slope`` = 0)."""
+    energy = K_fn(a) * d ** 2 / 2 - sp.pi * a ** 2 * dgamma
+    _check(sp.simplify(sp.diff(energy, d) - force) == 0, f"∂Π/∂d = {sp.diff(energy, d)} is not the springs' {force}")
+    for depth in (elongation, -elongation):
+        _check(sp.simplify(sp.diff(energy, a).subs(d, depth)) == 0, f"Π'(a) is not 0 at d = {depth}")
+        curvature = sp.diff(energy, a, 2).subs(d, depth)
+        expected = 2 * sp.pi * dgamma * (a * K_fn(a).diff(a, 2) - K_fn(a).diff(a)) / K_fn(a).diff(a)
+        _check(sp.simplify(curvature - expected) == 0, f"Π''(a) at |d| = Δl is {curvature}, not {expected}")
+
+
 def _derive_receding_punch(add, out: dict) -> None:
     """Section 8: the flat punch's receding branch under depth control, from sections 5 and 7.
 
@@ -388,10 +403,9 @@ def _derive_receding_punch(add, out: dict) -> None:
                  sp.simplify(slope.subs(slope_symbols)), (a, dgamma, K_prime, K_second)))
     # the springs' force: those in |x| < a at elongation d (g = 0 under the face), those let go bear nothing
     force = sp.integrate(K_fn(x).diff(x) * (d - 0), (x, 0, a)).subs(K_fn(0), 0)  # (K(0) = 0: no contact)
-    stored = sp.integrate(K_fn(x) * sp.diff(sp.Integer(0), x), (x, 0, a))  # F₀ = ∫ K g' of a flat face
-    _check(stored == 0, f"the flat face stores F₀ = {stored}")
-    _check(sp.simplify(force - out["layer_normal_force"].rhs.subs({F0_fn(a): stored, g_fn(a): 0})) == 0,
-           f"the receding punch's springs give {force}, not F₀ + K (d − g) with g = 0")
+    _check(sp.simplify(force - out["layer_normal_force"].rhs.subs({F0_fn(a): 0, g_fn(a): 0})) == 0,
+           f"the receding punch's springs give {force}, not F₀ + K (d − g) with g = 0 (F₀ = ∫ K g' = 0)")
+    _check_receding_energy(force, elongation)
     on_branch = force.subs(d, -hess).subs(K_fn(a), stiffness)
     add(Relation("layer_flat_punch_receding_force", "(10)", "flat punch on a layer, receding: F_N = K(a) d = −K(a) Δl(a) "
                  "at d = −Δl(a) (the springs let go store no force)", F_N, on_branch, (stiffness, a, dgamma, K_prime)))

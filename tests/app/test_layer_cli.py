@@ -87,6 +87,9 @@ def test_simulate_runs_the_flat_punch_on_a_layer_in_the_continuum(capsys, tmp_pa
     (["--h", "5e-3", "--layer-base", "frictionless"], "path 0 moves the indenter tangentially"),
     (["--h", "5e-3", "--flat-punch", "1e-3", "--method", "continuum", "--friction", "coulomb", "--mu", "0.3"],
      "with profile=FlatPunch(radius=0.001) is not allowed on layer h = 0.005 m, bonded base in the continuum method"),
+    (["--h", "2e-5", "--flat-punch", "2e-3", "--method", "continuum"],
+     "contact.indenter=FlatPunch(radius=0.002) is not allowed in the continuum method on layer h = 2e-05 m, bonded "
+     "base: its face exceeds a/h = 64; allowed: a radius up to 0.00128 m"),
 ])
 def test_a_bad_layer_is_one_line_exit_2_and_nothing_written(capsys, tmp_path, options, fragment):
     status, _, err = run(capsys, "simulate", "--scenario", "A", "--alpha", "30", *options, "--out",

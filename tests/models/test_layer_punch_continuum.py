@@ -303,3 +303,143 @@ def test_validate_and_fit_take_the_punch_on_a_thin_layer_with_the_continuum_as_r
     start = contact.replace(tau0=1.3 * contact.friction.tau0)
     result = me.fit(measured, start, motion, free=["tau0"], time_origin="path_start")
     assert result.parameters.tau0 == pytest.approx(contact.friction.tau0, rel=1e-6)
+
+
+def test_a_face_beyond_the_layers_tables_is_refused_before_the_run_naming_the_punch_the_layer_and_the_method():
+    """a₀/h = 100 > LAMBDA_MAX = 64: refused by the check ``d_crit`` makes (``check_punch_face``) before any branch is
+    built, not by the tables' lookup after the whole run."""
+    contact = PUNCH.replace(h=A0 / 100.0)
+    with pytest.raises(ValueError, match=r"^contact\.indenter=FlatPunch\(radius=0\.002\) is not allowed in the "
+                                         r"continuum method on layer h = 2e-05 m, bonded base: its face exceeds "
+                                         r"a/h = 64; allowed: a radius up to 0\.00128 m$"):
+        _continuum(contact)
+
+
+def _events_in_order(run) -> list[tuple[str, float]]:
+    return [(str(kind), float(depth)) for kind, depth in zip(run["event_kind"].values, run["event_depth"].values)]
+
+
+@pytest.mark.parametrize("side", [-1.0, 1.0])
+def test_scenario_b_plus_critical_angle_and_indentation_onset_are_the_continuums(side):
+    """Scenario B+ on the thin layer (in to ``d_max``, further in at α to ``2 d_max``): half a degree below its critical
+    angle (``critical_angle(…, "B+")``, ``atan(d_max/ū(a₀))``) the springs slide on the way in, at ``d_crit``'s
+    "indentation" depth ``d_max + ū(a₀) tan α`` (to the root's 1e-12 of ``d_max``); half a degree above they slide
+    first on the way out (after the second corner)."""
+    contact = PUNCH.replace(h=THIN_LAYER)
+    angle = me.critical_angle(contact, "B+", d_max=D_MAX) + side * ANGLE_SIDE
+    run = me.simulate(contact, me.Scenario("B+", alpha=[angle], d_max=D_MAX), "continuum").isel(alpha=0)
+    kinds = [kind for kind, _ in _events_in_order(run)]
+    corners = [index for index, kind in enumerate(kinds) if kind == "corner"]
+    onset = kinds.index("slip_onset")
+    assert (onset < corners[1]) == (side < 0.0), kinds
+    if side < 0.0:
+        expected = float(me.d_crit(angle, contact, "B", True, "indentation", d_max=D_MAX))
+        assert _events_in_order(run)[onset][1] == pytest.approx(expected, abs=1e-12 * D_MAX)
+
+
+#: The absolute tolerance on ``a · d ln Δl/da`` (1) of the retyped slope against the derived relation evaluated with
+#: ``K''`` by central differences of the tables' ``K'`` (step ``1e-4 a``: truncation ``O(1e-8)`` relative; measured
+#: below 5e-9 from ``a/h = 1e-3`` to 50).
+LOG_SLOPE_ATOL = 1e-7
+
+
+@pytest.mark.parametrize("h", [PAPER_LAYER, THIN_LAYER, A0 / 50.0])
+def test_the_recessions_log_slope_is_the_derived_receding_slope(h):
+    """``hess_log_slope`` (``1/(2a) − Θ'/(hΘ)``, which :func:`receding_radius` roots) is ``layer_flat_punch_receding_slope``
+    (SymPy, section 8) over ``−Δl``: ``d ln Δl/da = −(dd/da)/Δl`` on ``d = −Δl(a)``, from ``a/h = 1e-3`` to the face."""
+    from mdr_events.theory.layer.punch_recession import hess_log_slope
+    from mdr_events.theory.layer.scalar_factors import NormalFactors
+
+    contact = PUNCH.replace(h=h)
+    params = _material(contact)
+    material = (params.E_star, params.nu, contact.layer)
+    slope_of = derive_layer_model()["layer_flat_punch_receding_slope"].numeric
+    factors = NormalFactors(params.nu, contact.layer, 2.0)
+    for a in np.geomspace(1e-3 * h, A0, 9):
+        step = 1e-4 * a
+        second = (float(punch_stiffness_slope(a + step, *material))
+                  - float(punch_stiffness_slope(a - step, *material))) / (2.0 * step)
+        derived = float(slope_of(a, params.dgamma1, float(punch_stiffness_slope(a, *material)), second))
+        elongation = float(hess_elongation(a, params.dgamma1, *material))
+        assert abs(a * (-derived / elongation - hess_log_slope(factors, a))) <= LOG_SLOPE_ATOL, a
+
+
+@pytest.mark.parametrize("nu", [0.0, 0.3, 0.45, 0.5])
+def test_the_sliding_cap_rises_with_the_radius_across_the_tables(nu):
+    """The lemma behind scenario B's closed-form critical angle: ``ū(a) = π a τ0/(2G* Φ_t(a/h))`` rises strictly with
+    ``a`` from ``a/h = 1e-7`` to ``LAMBDA_MAX`` on a bonded layer (from ``∝ a`` on the half-space to the thin film's
+    constant ``τ0 h/G``)."""
+    from mdr_events.theory.layer import LAMBDA_MAX
+    from mdr_events.theory.layer.tangential_relations import sliding_cap
+
+    lam = np.geomspace(1e-7, LAMBDA_MAX, 20_001)
+    assert np.all(np.diff(sliding_cap(lam, 1.0, 1.0, nu, me.Layer(1.0))) > 0.0)
+
+
+@pytest.mark.parametrize("h", [PAPER_LAYER, THIN_LAYER, A0 / 50.0])
+def test_scenario_bs_critical_angle_is_the_largest_travel_per_cap_along_the_recession(h):
+    """``critical_angle(…, "B")`` (the travel per cap at the jump-off) is ``atan`` of the largest
+    ``(d_max + Δl(a))/ū(a)`` on a dense scan of ``[a_j, a₀]`` (the jump-off's radius from the continuum's run, a root
+    to ~1e-12: 1e-9 relative covers it; an interior maximum would be missed by the closed form)."""
+    from mdr_events.theory.layer.tangential_relations import sliding_cap
+
+    contact = PUNCH.replace(h=h)
+    params = _material(contact)
+    pull_radius = _events(_continuum(contact))["pull_off"][1]
+    radii = np.geomspace(pull_radius, A0, 10_001)
+    elongation = hess_elongation(radii, params.dgamma1, params.E_star, params.nu, contact.layer)
+    cap = sliding_cap(radii, contact.friction.tau0, contact.elastomer.G_star, params.nu, contact.layer)
+    largest = float(np.degrees(np.arctan(np.max((D_MAX + elongation) / cap))))
+    assert me.critical_angle(contact, "B", d_max=D_MAX) == pytest.approx(largest, rel=1e-9)
+
+
+class _NeverTurning:
+    """Normal factors whose ``Θ'/(hΘ)`` outgrows ``1/(2a)`` at every radius: ``d ln Δl/da < 0`` all the way in."""
+
+    h = 1.0
+
+    def edge_factor(self, a: float) -> tuple[float, float]:
+        return 1.0, 1.0 / a
+
+
+def test_a_recession_that_never_turns_is_an_error_not_a_nan():
+    """``receding_radius`` raises, naming the face and the thickness, where the slope never turns non-negative (no
+    layer of the tables does: the half-space's ``1/(2a)`` wins inwards), instead of handing the branch a ``nan``."""
+    from mdr_events.theory.layer.punch_recession import receding_radius
+
+    with pytest.raises(RuntimeError, match=r"^receding_radius: d ln Δl/da stays negative from the face 0\.002 m down "
+                                           r"to .* m on h = 1\.0 m"):
+        receding_radius(_NeverTurning(), A0)
+
+
+class _TwoHumps:
+    """Normal factors whose ``d ln Δl/da = 1/(2a) − Θ'/(hΘ)`` is negative near the face and again between 1% and 10%
+    of it (``h = 1``): ``Δl`` has two humps."""
+
+    h = 1.0
+
+    def edge_factor(self, a: float) -> tuple[float, float]:
+        falls = a > 0.5 * A0 or 0.01 * A0 < a < 0.1 * A0
+        return 1.0, (1.0 / a if falls else 0.0)
+
+
+def test_a_second_hump_of_hess_limit_inside_the_jump_off_is_an_error():
+    """The recession's jump-off assumes the rest comes off at once: a ``Δl`` that falls again inside it is refused."""
+    from mdr_events.theory.layer.punch_recession import receding_radius
+
+    with pytest.raises(RuntimeError, match=r"^receding_radius: Heß's limit falls again at .* m, inside the jump-off, "
+                                           r"under the face 0\.002 m on h = 1\.0 m"):
+        receding_radius(_TwoHumps(), A0)
+
+
+@pytest.mark.parametrize("nu", [0.0, 0.45, 0.49, 0.5])
+def test_hess_limit_has_a_single_hump_across_the_tables(nu):
+    """The assumption itself: on a bonded layer ``d ln Δl/da`` changes sign once at most from ``a/h = 1e-8`` to
+    ``LAMBDA_MAX`` (positive inwards; negative beyond ``a/h ≈ 0.46`` for nearly incompressible layers)."""
+    from mdr_events.theory.layer import LAMBDA_MAX
+    from mdr_events.theory.layer.punch_recession import hess_log_slope
+    from mdr_events.theory.layer.scalar_factors import NormalFactors
+
+    factors = NormalFactors(nu, me.Layer(1.0), 2.0)
+    signs = np.sign([hess_log_slope(factors, lam) for lam in np.geomspace(1e-8, LAMBDA_MAX, 2001)])
+    assert signs[0] > 0.0 and np.count_nonzero(np.diff(signs)) <= 1

@@ -23,12 +23,15 @@ from mdr_events.theory.layer.punch_recession import receding_radius
 from mdr_events.theory.layer.scalar_factors import NormalFactors
 
 from .layer_branch import LayerBranch, _branch_key
+from .tolerances import MAX_RADIUS_RTOL
 
 __all__ = ["LayerPunchBranch", "FACE_SHARE"]
 
 #: A radius this share below the face's still counts as the face's: the held contact's radius, and a growth that reaches
-#: the face (where it stops) to its root's accuracy.
-FACE_SHARE = 1e-12
+#: the face (where it stops) to its root's accuracy. Ten times the loosest root (``Tolerances.radius_rtol <=``
+#: ``MAX_RADIUS_RTOL``), as ``PIECE_SHARE``: a root of the face's radius lands within
+#: it at any allowed tolerance, and no root a whole share below it is taken for the face.
+FACE_SHARE = 10.0 * MAX_RADIUS_RTOL
 
 class LayerPunchBranch(LayerBranch):
     r"""The branch of work ``work`` of a flat punch of radius ``a₀`` on ``layer``: ``d(a) = −Δl(a)`` for ``a <= a₀``.
@@ -60,9 +63,12 @@ class LayerPunchBranch(LayerBranch):
     def __init__(self, params: Parameters, work: float, indenter: FlatPunch, layer: Layer, factors: NormalFactors):
         #: the face's radius ``a₀``
         self.face = float(indenter.radius)
+        #: the least radius that counts as the face's (:data:`FACE_SHARE` below it)
+        self.face_floor = self.face * (1.0 - FACE_SHARE)
         super().__init__(params, work, indenter, layer, factors)
-        if work == 0.0:
+        if work == 0.0:  # (the face comes off at the surface: no root below it, the floor is the face too)
             self.jump_off_radius, self.jump_off_depth = self.face, 0.0
+            self._floor = self.face
         self.held_depth = self.depth(self.face) if work > 0.0 else 0.0
         #: a receded contact pressed back in grows along ``d = −Δl(a)`` until the face's edge: there it stops
         self.edge_depth = self.held_depth
@@ -111,7 +117,7 @@ class LayerPunchBranch(LayerBranch):
         float
             The depth (m).
         """
-        return math.inf if a >= self.face * (1.0 - FACE_SHARE) else self.depth(a)
+        return math.inf if a >= self.face_floor else self.depth(a)
 
     def slope(self, a: float) -> float:
         """``dd/da`` below the face (``layer_flat_punch_receding_slope``), ``+inf`` beyond it (the radius stops there).
@@ -167,7 +173,7 @@ class LayerPunchBranch(LayerBranch):
         if self.work == 0.0:  # (no contact above the surface: come off, as the half-space's face)
             return math.nan
         radius = super().radius(depth, rtol)
-        return self.face if radius >= self.face * (1.0 - FACE_SHARE) else radius  # (the face's, not a root an ulp off)
+        return self.face if radius >= self.face_floor else radius  # (the face's, not a root an ulp off)
 
     def radii(self, depth: np.ndarray) -> np.ndarray:
         depth = np.asarray(depth, dtype=float)
@@ -177,4 +183,4 @@ class LayerPunchBranch(LayerBranch):
         out = np.full(depth.shape, self.face)
         if not np.all(held):
             out[~held] = super().radii(depth[~held])
-        return np.where(out >= self.face * (1.0 - FACE_SHARE), self.face, out)
+        return np.where(out >= self.face_floor, self.face, out)

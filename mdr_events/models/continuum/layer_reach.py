@@ -8,6 +8,8 @@ import numpy as np
 from mdr_events.contact.layer import Layer
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.parameters import Parameters
+from mdr_events.theory.kinds import theory_of
+from mdr_events.theory.layer.punch_onset import check_punch_face
 
 __all__ = ["THINNEST_LAYER_SHARE", "check_layer_reach"]
 
@@ -20,7 +22,8 @@ THINNEST_LAYER_SHARE = float(np.finfo(float).eps)
 
 def check_layer_reach(params: Parameters, depth: float, profile: SimulatedProfile, layer: Layer) -> None:
     """Refuse, before the continuum builds its branches, a layer whose contact radius at ``depth`` lies beyond the
-    layer's tables (``a/h > 64``: ``h = 1e-20`` divided by zero) or below :data:`THINNEST_LAYER_SHARE` of its
+    layer's tables (``a/h > 64``: ``h = 1e-20`` divided by zero; a flat punch's face,
+    :func:`~mdr_events.theory.layer.punch_onset.check_punch_face`) or below :data:`THINNEST_LAYER_SHARE` of its
     thickness (the half-space to the doubles' rounding); the half-space passes.
 
     Parameters
@@ -37,11 +40,14 @@ def check_layer_reach(params: Parameters, depth: float, profile: SimulatedProfil
     Raises
     ------
     ValueError
-        Naming the depth or the layer, the radius and what is allowed.
+        Naming the depth, the punch or the layer, the radius and what is allowed.
     """
     if layer.is_half_space or depth <= 0.0:
         return
     from mdr_events.models.spring_media import springs_of  # (the discrete's springs: the layer's branch, checked)
+
+    if theory_of(profile).flat_face:  # (its radius is the face's from the first touch on: within the tables, or no run)
+        check_punch_face(profile, layer, "the continuum method")
 
     radius = springs_of(params, profile, None, layer).branch_radius(depth)  # (beyond the tables: refused there)
     if radius < THINNEST_LAYER_SHARE * layer.thickness:

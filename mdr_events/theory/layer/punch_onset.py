@@ -14,8 +14,10 @@ where the contact recedes (:mod:`~mdr_events.theory.layer.punch_recession`) the 
 recession whose travel per cap ``r(a) = (d_max + Δl₁(a))/ū(a)`` reaches ``tan α`` (root-finding: the running maximum
 of ``r`` on a scan, inverted by bisection, :func:`~mdr_events.theory.layer.slip_onset.first_onsets`); past the
 jump-off ``a_j`` the contact comes apart first (``−inf``). The critical angle is ``atan`` of the travel per cap where
-the motion ends: ``d_max/ū(a₀)`` in A, ``(d_max − d_j)/ū(a_j)``'s running maximum in B (``d_j = 0`` without adhesion,
-the half-space's flat punch's, ``mdr_events.power_law.critical_angle_B``).
+the motion ends: ``d_max/ū(a₀)`` in A, ``(d_max − d_j)/ū(a_j)`` at the jump-off ``(d_j, a_j)`` in B (``d_j = 0``
+without adhesion, the half-space's flat punch's, ``mdr_events.power_law.critical_angle_B``): along the recession
+``d_max + Δl(a)`` grows as ``a`` falls while ``ū(a)`` shrinks (``ū`` rises with ``a`` on every bonded layer of the
+tables, ``d ln Φ_t/d ln λ < 1``), so the travel per cap is largest at ``a_j``.
 """
 
 from __future__ import annotations
@@ -25,6 +27,8 @@ import math
 
 import numpy as np
 
+from mdr_events.contact.indenters import FlatPunch
+from mdr_events.contact.layer import Layer
 from mdr_events.contact.model import Contact
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
 from mdr_events.theory.job import rate_independent
@@ -36,7 +40,7 @@ from mdr_events.theory.layer.tangential_relations import sliding_cap
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_real
 
-__all__ = ["check_punch_contact", "punch_onset_depths", "punch_critical_angle", "RECESSION_POINTS"]
+__all__ = ["check_punch_contact", "check_punch_face", "punch_onset_depths", "punch_critical_angle", "RECESSION_POINTS"]
 
 #: Radii of the logarithmic scan of the travel per cap along the recession, from the face to the jump-off (a span of
 #: at most ``ln(a₀/a_j)``, below ln 100 on the layers of the tables: nodes 1.2% apart, refined by bisection).
@@ -75,12 +79,31 @@ def check_punch_contact(contact: Contact, what: str, d_max: float | None) -> flo
                        lambda value: value > 0.0)
     check_representable(contact.parameters(depth, PAPER_V), contact.profile,
                         dataclasses.replace(contact.friction, tau0=None))
-    face, layer = float(contact.indenter.radius), contact.layer
-    if face > LAMBDA_MAX * layer.thickness:
-        raise ValueError(f"contact.indenter={contact.indenter!r} is not allowed in {what} on {layer.describe()}: its "
+    check_punch_face(contact.indenter, contact.layer, what)
+    return depth
+
+
+def check_punch_face(indenter: FlatPunch, layer: Layer, what: str) -> None:
+    """Refuse a punch whose face lies beyond the layer's tables, ``a₀/h > LAMBDA_MAX``, before anything runs.
+
+    Parameters
+    ----------
+    indenter : FlatPunch
+        The punch.
+    layer : Layer
+        The layer (the half-space passes).
+    what : str
+        What is asked (a function, a method), named in the error.
+
+    Raises
+    ------
+    ValueError
+        In one line, naming the punch, the layer, ``what`` and the largest radius allowed.
+    """
+    if float(indenter.radius) > LAMBDA_MAX * layer.thickness:
+        raise ValueError(f"contact.indenter={indenter!r} is not allowed in {what} on {layer.describe()}: its "
                          f"face exceeds a/h = {LAMBDA_MAX:g}; allowed: a radius up to "
                          f"{LAMBDA_MAX * layer.thickness:.6g} m")
-    return depth
 
 
 def _cap(contact: Contact, a):
@@ -180,8 +203,7 @@ def punch_critical_angle(contact: Contact, scenario: str, adhesion: bool, final_
         end = 2.0 * depth if final_depth is None else check_real(
             "final_depth", final_depth, f"a finite depth > d_max = {depth!r} m", lambda value: value > depth)
         return float(np.degrees(np.arctan((end - depth) / float(_cap(contact, face)))))
-    work = contact.adhesion.dgamma1 if adhesion else 0.0
-    pull_radius = punch_jump_off(contact, work)[1]
-    radii = np.geomspace(face, pull_radius, RECESSION_POINTS) if pull_radius < face else np.array([face])
-    depths = -_elongation(contact, radii, work) if work > 0.0 else np.zeros(radii.shape)
-    return float(np.degrees(np.arctan(np.max((depth - depths) / _cap(contact, radii)))))
+    # (the travel per cap r(a) = (d_max + Δl(a))/ū(a) falls with a on [a_j, a₀]: Δl falls there (the recession) and
+    # ū = π a τ0/(2G* Φ_t(a/h)) rises with a on every bonded layer of the tables; its maximum is r(a_j))
+    jump_depth, jump_radius = punch_jump_off(contact, contact.adhesion.dgamma1 if adhesion else 0.0)
+    return float(np.degrees(np.arctan((depth - jump_depth) / float(_cap(contact, jump_radius)))))

@@ -14,21 +14,27 @@ the face itself where it is not negative there: the half-space's jump, Kendall's
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from mdr_events.theory.layer.scalar_factors import NormalFactors
 
-__all__ = ["receding_radius", "hess_log_slope", "RECEDING_SCAN"]
+__all__ = ["receding_radius", "hess_log_slope", "RECEDING_SCAN", "RECEDING_FLOOR"]
 
-#: Points of the scan from the face inwards, geometric down to ``1e-6`` of it, that brackets where the recession stops
-#: (Brent's method refines): ``d ln Δl/da → +∞`` as ``a → 0`` (the half-space's ``1/(2a)``), so it always turns there.
+#: Points of the scan from the face inwards, geometric down to :data:`RECEDING_FLOOR` of it (16 a decade), that brackets
+#: where the recession stops (Brent's method refines). The slope turns once at most on the tables (``Δl`` has a single
+#: hump, every ``ν``), so any spacing brackets it; the nodes inside the bracket check that it does not turn back.
 RECEDING_SCAN = 97
+#: The scan's innermost radius, a share of the face: ``d ln Δl/da = 1/(2a) − Θ'/(hΘ) > 0`` wherever ``a < 0.4 h``
+#: (the tables' largest ``Θ'/Θ`` is 1.24, at ``ν = 0.5``, ``λ ≈ 0.18``), and a face within the tables (``a₀ <= 64 h``)
+#: puts ``0.4 h`` at ``1/160`` of it or beyond; ``1e-6`` is far inside that.
+RECEDING_FLOOR = 1e-6
 
 
 def hess_log_slope(factors: NormalFactors, a: float) -> float:
     """``d ln Δl/da = 1/(2a) − Θ'/(hΘ)`` at the radius ``a`` (1/m): negative where the punch's contact recedes.
+
+    It is ``layer_flat_punch_receding_slope`` over ``−Δl`` with ``K' = 2E*Θ²``, ``K'' = 4E*ΘΘ'/h`` (the tables' ``Θ``,
+    ``Θ'`` without a difference quotient for ``K''``); a test evaluates the derived relation against it.
 
     Parameters
     ----------
@@ -61,6 +67,12 @@ def receding_radius(factors: NormalFactors, face: float) -> float:
     -------
     float
         The jump-off radius (m).
+
+    Raises
+    ------
+    RuntimeError
+        The slope negative down to :data:`RECEDING_FLOOR` of the face (not on a layer of the tables: the half-space's ``1/(2a)``
+        wins there).
     """
     from scipy.optimize import brentq
 
@@ -69,11 +81,24 @@ def receding_radius(factors: NormalFactors, face: float) -> float:
 
     if not slope(face) < 0.0:
         return face
-    radii = face * np.geomspace(1.0, 1e-6, RECEDING_SCAN)
-    for outer, inner in zip(radii.tolist(), radii[1:].tolist()):
+    radii = face * np.geomspace(1.0, RECEDING_FLOOR, RECEDING_SCAN)
+    for index, (outer, inner) in enumerate(zip(radii.tolist(), radii[1:].tolist())):
         if not slope(inner) < 0.0:
+            _check_single_hump(slope, radii[index + 2:], face, factors.h)
             return float(brentq(slope, inner, outer, xtol=1e-15 * inner, rtol=4.0 * np.finfo(float).eps))
-    return math.nan  # (unreachable: the half-space's 1/(2a) wins below 1e-6 of any face within the tables)
+    raise RuntimeError(f"receding_radius: d ln Δl/da stays negative from the face {face!r} m down to "
+                       f"{radii[-1]!r} m on h = {factors.h!r} m; the half-space's 1/(2a) should win there")
+
+
+def _check_single_hump(slope, inner: np.ndarray, face: float, h: float) -> None:
+    """Refuse a ``Δl`` that falls again inside the jump-off (a second hump on the scan's nodes ``inner``): there a
+    smaller contact would hold after the jump instead of the rest coming off at once, which the branch does not take.
+    The tables' ``Δl`` has a single hump at every ``ν`` (tested), so this holds on every layer they cover."""
+    for radius in inner.tolist():
+        if slope(radius) < 0.0:
+            raise RuntimeError(f"receding_radius: Heß's limit falls again at {radius!r} m, inside the jump-off, under the "
+                               f"face {face!r} m on h = {h!r} m; allowed: a single hump of Δl (the rest comes off at "
+                               "once)")
 
 
 def punch_jump_off(contact, dgamma: float) -> tuple[float, float]:

@@ -32,7 +32,7 @@ from typing import Callable, NamedTuple
 import numpy as np
 
 from mdr_events.contact.adhesion import Adhesion
-from mdr_events.contact.indenters import Paraboloid, PowerLaw
+from mdr_events.contact.indenters import FlatPunch, Paraboloid, PowerLaw
 from mdr_events.contact.layer import Layer, LayerBase
 from mdr_events.contact.model import Contact
 from mdr_events.limits import Limits, check_limits
@@ -41,7 +41,8 @@ from mdr_events.theory.layer.compliance import LAMBDA_MAX
 from mdr_events.theory.layer.branch_scan import (beyond_tables, branch_jump_off, half_space_radii, layer_material,
                                                 scan_ceiling, stable_radius)
 from mdr_events.theory.job import rate_independent
-from mdr_events.theory.kinds import theory_of
+from mdr_events.theory.layer.punch_onset import check_punch_contact, punch_critical_angle, punch_onset_depths
+from mdr_events.theory.layer.punch_recession import punch_jump_off
 from mdr_events.theory.layer.relations import branch_depth
 from mdr_events.theory.layer.tangential_compliance import check_bonded
 from mdr_events.theory.layer.tangential_relations import sliding_cap
@@ -50,7 +51,7 @@ from mdr_events.validation import check_real, shown, validate_alpha
 
 __all__ = ["onset_depths", "critical_angle_on_layer", "pull_off_depth", "first_onsets", "thin_layer_onset_depth", "check_onset_contact",
            "has_closed_forms", "SCAN_POINTS", "SCAN_SPAN", "ONSET_STEPS_PER_ANGLE", "ONSET_BYTES_PER_ANGLE",
-           "CRITICAL_ANGLE_STEPS"]
+           "CRITICAL_ANGLE_STEPS", "LayerOnsets", "LAYER_ONSETS"]
 
 #: Radii of the logarithmic scan of ``r(a)`` along one motion (the running maximum is inverted on it).
 SCAN_POINTS = 400
@@ -126,10 +127,11 @@ def check_onset_contact(contact: Contact, what: str, d_max: float | None = None)
     TypeError, ValueError
         In one line, naming what is not allowed.
     """
-    if _is_punch(contact):  # (the face held, then receding: its own closed forms and root)
-        from mdr_events.theory.layer.punch_onset import check_punch_contact
+    return contact, _onsets_of(contact).check(contact, what, d_max)
 
-        return contact, check_punch_contact(contact, what, d_max)
+
+def _curved_check(contact: Contact, what: str, d_max: float | None) -> float:
+    """:func:`check_onset_contact` of a paraboloid or power law: ``d_max`` checked."""
     E_star, nu, layer = _kind_checked(contact, what)
     depth = check_real("d_max", PAPER_D_MAX if d_max is None else d_max, "a finite number > 0 (m)",
                        lambda value: value > 0.0)
@@ -138,12 +140,7 @@ def check_onset_contact(contact: Contact, what: str, d_max: float | None = None)
     top = _scan_top(contact, depth)
     if float(branch_depth(top, contact.indenter, E_star, nu, contact.adhesion.dgamma0, layer)) < depth:
         raise beyond_tables(depth, layer, top)
-    return contact, depth
-
-
-def _is_punch(contact) -> bool:
-    """Whether ``contact`` is a flat punch's (:mod:`~mdr_events.theory.layer.punch_onset` computes its onsets)."""
-    return isinstance(contact, Contact) and theory_of(contact.indenter).flat_face
+    return depth
 
 
 def _kind_checked(contact: Contact, what: str) -> tuple[float, float, Layer]:
@@ -172,8 +169,7 @@ def has_closed_forms(contact: Contact) -> bool:
     bool
         ``True`` where :func:`critical_angle_on_layer` computes them.
     """
-    return ((isinstance(contact.indenter, (Paraboloid, PowerLaw)) or _is_punch(contact))
-            and type(contact.adhesion) is Adhesion
+    return (type(contact.indenter) in LAYER_ONSETS and type(contact.adhesion) is Adhesion
             and contact.friction.law == "tau0" and contact.layer.base is LayerBase.BONDED)
 
 
@@ -318,10 +314,12 @@ def onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesio
     check_limits(limits).check(f"the slip onset at {alpha_deg.size} angles on {contact.layer.describe()}",
                                steps=ONSET_STEPS_PER_ANGLE * alpha_deg.size,
                                memory=ONSET_BYTES_PER_ANGLE * alpha_deg.size)
-    if _is_punch(contact):
-        from mdr_events.theory.layer.punch_onset import punch_onset_depths
+    return _onsets_of(contact).onset_depths(alpha_deg, contact, scenario, adhesion, branch, depth, past_tables)
 
-        return punch_onset_depths(alpha_deg, contact, scenario, adhesion, branch, depth)
+
+def _curved_onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesion: bool, branch: str,
+                         depth: float, past_tables: bool) -> np.ndarray:
+    """:func:`onset_depths` of a paraboloid or power law, its arguments checked."""
     vertical = alpha_deg >= 90.0
     tangent = np.where(vertical, np.inf, np.tan(np.radians(np.where(vertical, 0.0, alpha_deg))))
     pulling = scenario == "B" and branch == "pull-off"
@@ -344,11 +342,12 @@ def pull_off_depth(contact: Contact) -> float:
     float
         The depth (m, ≤ 0).
     """
-    dgamma = contact.adhesion.dgamma1
-    if _is_punch(contact):
-        from mdr_events.theory.layer.punch_recession import punch_jump_off
+    return _onsets_of(contact).pull_off_depth(contact)
 
-        return punch_jump_off(contact, dgamma)[0]
+
+def _curved_pull_off_depth(contact: Contact) -> float:
+    """:func:`pull_off_depth` of a paraboloid or power law."""
+    dgamma = contact.adhesion.dgamma1
     return branch_jump_off(contact, dgamma)[0] if dgamma > 0.0 else 0.0
 
 
@@ -385,10 +384,12 @@ def critical_angle_on_layer(contact: Contact, scenario: str, adhesion: bool, fin
         As :func:`onset_depths`; ``final_depth`` not above ``d_max``.
     """
     contact, depth = check_onset_contact(contact, "critical_angle", d_max)
-    if _is_punch(contact):
-        from mdr_events.theory.layer.punch_onset import punch_critical_angle
+    return _onsets_of(contact).critical_angle(contact, scenario, adhesion, final_depth, depth)
 
-        return punch_critical_angle(contact, scenario, adhesion, final_depth, depth)
+
+def _curved_critical_angle(contact: Contact, scenario: str, adhesion: bool, final_depth: float | None,
+                           depth: float) -> float:
+    """:func:`critical_angle_on_layer` of a paraboloid or power law, ``d_max`` (``depth``) checked."""
     if scenario == "B":
         if not adhesion or contact.adhesion.dgamma1 == 0.0:
             return 90.0
@@ -404,6 +405,41 @@ def critical_angle_on_layer(contact: Contact, scenario: str, adhesion: bool, fin
     last = float(motion.ratio_of(np.array([math.log(radius)]))[0])
     before = motion.ratio[motion.logs < math.log(radius)]
     return float(np.degrees(np.arctan(max(last, float(before.max(initial=last))))))
+
+
+class LayerOnsets(NamedTuple):
+    """One indenter kind's slip onset on a layer (:data:`LAYER_ONSETS`): what :func:`check_onset_contact`,
+    :func:`onset_depths`, :func:`pull_off_depth` and :func:`critical_angle_on_layer` hand it, ``d_max`` checked."""
+
+    #: ``(contact, what, d_max) -> d_max`` checked, before anything runs
+    check: Callable[[Contact, str, float | None], float]
+    #: ``(alpha_deg, contact, scenario, adhesion, branch, d_max, past_tables) -> d_crit``
+    onset_depths: Callable[..., np.ndarray]
+    #: ``contact -> d_j``, scenario B's jump-off depth on ``Δγ1``
+    pull_off_depth: Callable[[Contact], float]
+    #: ``(contact, scenario, adhesion, final_depth, d_max) -> alpha_c``, the critical angle (degrees)
+    critical_angle: Callable[..., float]
+
+
+def _punch_onset_depths(alpha_deg, contact, scenario, adhesion, branch, depth, past_tables):
+    """The flat punch's onsets: closed forms while the face is held, its face within the tables (``past_tables``
+    unread)."""
+    return punch_onset_depths(alpha_deg, contact, scenario, adhesion, branch, depth)
+
+
+_CURVED = LayerOnsets(_curved_check, _curved_onset_depths, _curved_pull_off_depth, _curved_critical_angle)
+#: Each kind's slip onset on a layer by the indenter's type (the paraboloid and the power law share the scan of the
+#: layer's branches; the flat punch's face is held, then recedes: :mod:`~mdr_events.theory.layer.punch_onset`).
+#: Another type takes the curved kinds' checks, which name what they do not take.
+LAYER_ONSETS: dict[type, LayerOnsets] = {
+    Paraboloid: _CURVED, PowerLaw: _CURVED,
+    FlatPunch: LayerOnsets(check_punch_contact, _punch_onset_depths,
+                           lambda contact: punch_jump_off(contact, contact.adhesion.dgamma1)[0], punch_critical_angle)}
+
+
+def _onsets_of(contact) -> LayerOnsets:
+    """The slip onset of ``contact``'s kind (the curved kinds' for anything else, whose checks name it)."""
+    return LAYER_ONSETS.get(type(getattr(contact, "indenter", None)), _CURVED)
 
 
 def thin_layer_onset_depth(alpha, contact: Contact):
