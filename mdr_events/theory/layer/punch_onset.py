@@ -94,6 +94,12 @@ def _elongation(contact: Contact, a, dgamma: float):
     return hess_elongation(a, dgamma, contact.elastomer.E_star, contact.elastomer.nu, contact.layer)
 
 
+def _scanned_radius(log_radius, face: float):
+    """The radius at ``ln a`` on the recession's scan, at most the face's: ``exp(ln a₀)`` rounds up to an ulp beyond
+    ``a₀``, off the tables' range when the face is at ``a/h = 64`` (round twenty-two)."""
+    return np.minimum(np.exp(log_radius), face)
+
+
 def punch_onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesion: bool, branch: str,
                        d_max: float | None) -> np.ndarray:
     """The depths at which the punch's springs start to slide (module docstring): ``+inf`` at 90° going in, ``-inf``
@@ -139,11 +145,11 @@ def punch_onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, a
         logs = np.linspace(math.log(face), math.log(pull_radius), RECESSION_POINTS)
 
         def ratio_of(log_radius):
-            a = np.exp(log_radius)
+            a = _scanned_radius(log_radius, face)
             return (depth + _elongation(contact, a, work)) / _cap(contact, a)
 
         def depth_of(a):
-            return -_elongation(contact, a, work)
+            return -_elongation(contact, np.minimum(a, face), work)
 
         out[receding] = first_onsets(logs, ratio_of, depth_of, tangent[receding], -math.inf)
     return np.where(vertical, -math.inf, out)
