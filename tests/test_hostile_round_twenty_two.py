@@ -9,10 +9,13 @@ their outcomes in the issue's closing note; what failed is below.
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
 import mdr_events as me
+from hostile_checks import cli_one_line, one_line_naming
 
 PAPER = me.Parameters.paper()
 #: The face's radius (m): a/h = 64 exactly on h = a/64 (a power of two apart), while exp(ln a) is one ulp above a.
@@ -53,3 +56,24 @@ def test_the_phase_diagram_at_the_tables_edge_is_the_onsets():
     onsets = diagram["d_crit_jkr"].sel(branch="pull-off").values
     np.testing.assert_array_equal(onsets, me.d_crit(RECEDING_ANGLES, contact, "B", adhesion=True))
     assert np.all((float(diagram["jump_off_depth"]) < onsets) & (onsets < 0.0)), onsets
+
+
+# --- V2: a flat punch's face far beyond a/h = 64 in the continuum: `simulate --method continuum --flat-punch 1e-3
+# --h 1e-300` exited 3, "internal error (ZeroDivisionError)" (ν = 0.45: OverflowError), from h = 1e-20 on; the
+# continuum's reach check took the face (the punch's radius at any depth) unchecked against the tables, and the
+# recession's scalar factors extrapolated. The reach check refuses it naming the layer and the least thickness -----
+
+
+@pytest.mark.parametrize("thickness", [1e-300, 1e-20, np.nextafter(FACE / 64.0, 0.0)])
+@pytest.mark.parametrize("nu", [0.5, 0.45])
+def test_a_face_beyond_the_tables_is_refused_in_the_continuum_naming_the_layer(thickness, nu):
+    contact = dataclasses.replace(_punch_on(thickness), elastomer=me.Elastomer(PAPER.E, nu))
+    message = one_line_naming(lambda: me.simulate(contact, "A", 20.0, method="continuum"), "contact.layer=")
+    least = float(message.split("allowed: h >= ")[1].split(" m")[0])
+    assert least == pytest.approx(FACE / 64.0, rel=1e-5) and "exceeds a/h = 64" in message, message  # (6 digits)
+
+
+def test_the_cli_refuses_a_face_beyond_the_tables_in_one_line(capsys, tmp_path):
+    err = cli_one_line(capsys, ["simulate", "--scenario", "B", "--alpha", "20", "--method", "continuum",
+                                "--flat-punch", "1e-3", "--h", "1e-300", "--out", str(tmp_path / "o")])
+    assert "contact.layer=" in err and "exceeds a/h = 64" in err, err

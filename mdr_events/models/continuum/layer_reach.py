@@ -8,6 +8,7 @@ import numpy as np
 from mdr_events.contact.layer import Layer
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.parameters import Parameters
+from mdr_events.theory.layer.compliance import LAMBDA_MAX
 
 __all__ = ["THINNEST_LAYER_SHARE", "check_layer_reach"]
 
@@ -44,6 +45,10 @@ def check_layer_reach(params: Parameters, depth: float, profile: SimulatedProfil
     from mdr_events.models.spring_media import springs_of  # (the discrete's springs: the layer's branch, checked)
 
     radius = springs_of(params, profile, None, layer).branch_radius(depth)  # (beyond the tables: refused there)
+    if radius > LAMBDA_MAX * layer.thickness:  # (a flat punch's face is its radius at every depth, unchecked there)
+        raise ValueError(f"contact.layer={layer!r} is not allowed in the continuum method: the contact radius "
+                         f"{radius:.6g} m at the depth {depth!r} m exceeds a/h = {LAMBDA_MAX:g} (the layer's "
+                         f"tables); allowed: h >= {radius / LAMBDA_MAX:.6g} m, or h = inf (the half-space)")
     if radius < THINNEST_LAYER_SHARE * layer.thickness:
         raise ValueError(f"contact.layer={layer!r} is not allowed in the continuum method: the contact radius "
                          f"{radius:.6g} m at the depth {depth!r} m is below {THINNEST_LAYER_SHARE:.3g} of the "
