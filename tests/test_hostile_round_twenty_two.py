@@ -128,3 +128,20 @@ def test_simulate_counts_its_grids_before_reading_them(grid):
         peak = _peak_before_refusal(lambda t: me.simulate(HALF_SPACE, "A", 20.0, method="continuum", t=t, limits=LOW),
                                     np.linspace(0.0, 1e-3, GRID))
     assert peak < ONE_COPY, f"{peak / 2**20:.1f} MiB before the refusal"
+
+
+# --- V4: simulate on a layer built every case before counting them: simulate(layered, "A", 1e6 angles,
+# limits=...) ran check_layer_taken (each case's path, its JKR radius and extent: ~0.1 ms an angle, minutes and
+# 0.65 GB) before the run's case count refused it (the half-space counted first). simulation_job counts them first --
+
+
+@pytest.mark.parametrize("method", ["continuum", "discrete"])
+def test_simulate_on_a_layer_counts_its_cases_before_building_them(monkeypatch, method):
+    from mdr_events.models import motion
+
+    def built(*args, **kwargs):
+        raise AssertionError("the cases were built before the limits refused their count")
+
+    monkeypatch.setattr(motion, "_scenario_cases", built)
+    with pytest.raises(me.ResourceLimitError, match="1000 case"):
+        me.simulate(_layered(), "A", np.linspace(1.0, 80.0, 1000), method=method, limits=LOW)
