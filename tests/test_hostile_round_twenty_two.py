@@ -145,3 +145,21 @@ def test_simulate_on_a_layer_counts_its_cases_before_building_them(monkeypatch, 
     monkeypatch.setattr(motion, "_scenario_cases", built)
     with pytest.raises(me.ResourceLimitError, match="1000 case"):
         me.simulate(_layered(), "A", np.linspace(1.0, 80.0, 1000), method=method, limits=LOW)
+
+
+# --- V5 (open): a path pressed in at 20°, unloaded back along its loading line, pressed in again and pulled through
+# the surface, with Δγ1 >= 5 J/m² (33 Δγ0): the continuum raises "made no progress at t = 3388.2 s after 50 event
+# restarts (radius 3.1 mm, positive cap stick, negative cap stick; last event: zone_reaches (negative cap))". On
+# main too (not this session's work); Δγ1 = 1.5 J/m² and the same path without the second pressing run --------
+
+
+@pytest.mark.xfail(strict=True, raises=RuntimeError, reason="round twenty-two V5 (open): the continuum's event loop "
+                   "stalls on a re-pressed path pulled through the surface under a large Δγ1")
+def test_a_re_pressed_path_pulled_through_under_a_large_dgamma1_runs():
+    contact = me.Contact(me.Elastomer(PAPER.E, PAPER.nu), me.Paraboloid(PAPER.R), me.Adhesion(PAPER.dgamma0, 15.0),
+                         me.FrictionLaw("tau0", tau0=PAPER.tau0))
+    depth = PAPER.d_max
+    x = depth / np.tan(np.radians(20.0))
+    path = me.Path(np.array([[0.0, 0.0], [x, depth], [0.0, 0.0], [x, depth], [-x, -depth]]), PAPER.v)
+    run = me.simulate(contact, path, method="continuum")
+    assert "pull_off" in list(run.event_kind.values[0])
