@@ -64,9 +64,11 @@ def model_job(contact, motion, alpha, options: dict[str, Any]) -> ModelJob:
                     indenters.check_simulated_profile(contact.profile), dataclasses.replace(contact.friction, tau0=None))
 
 
-def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any]) -> SimulationJob:
+def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any], limits: Limits) -> SimulationJob:
     """The job of ``simulate(contact, motion, alpha, method, **options)``: :func:`model_job`, and the method by name
-    with the remaining options (:func:`~mdr_events.models.methods.as_method`)."""
+    with the remaining options (:func:`~mdr_events.models.methods.as_method`), its cases counted against ``limits``
+    before the layer's check builds them (round twenty-two: 1e6 angles on a layer were built, minutes and a GiB,
+    before the count refused them)."""
     options = dict(options)
     if isinstance(alpha, (Discrete, Continuum)) or (isinstance(alpha, str) and alpha in METHODS):
         if method is not None:  # simulate(contact, motion, method): the third argument is the method
@@ -75,6 +77,7 @@ def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any]) -
         alpha, method = None, alpha
     model = model_job(contact, motion, alpha, options)
     the_method = as_method(DEFAULT_METHOD if method is None else method, options)
+    the_method.check_case_count(model.motion.case_count, limits)  # (before the cases are built: each takes its theory)
     check_layer_taken(model.contact, model.motion, the_method)
     return SimulationJob(model, the_method)
 
@@ -189,9 +192,8 @@ def simulate(
         label that is not a non-empty string or is repeated, ``alpha`` with
         custom paths.
     """
-    model, method = simulation_job(contact, motion, alpha, method, options)
     limits = check_limits(limits)
+    model, method = simulation_job(contact, motion, alpha, method, options, limits)
     check_representable(model.params, model.profile, model.friction)
-    method.check_case_count(model.motion.case_count, limits)  # (before the cases are built: each takes its theory)
     cases = model.motion.cases(model.params, model.profile, model.friction)
     return method.simulate(model, cases, limits)

@@ -25,7 +25,7 @@ from typing import Literal, NamedTuple
 
 import numpy as np
 
-from mdr_events.limits import Limits, check_limits
+from mdr_events.limits import Limits, check_limits, values_in
 from mdr_events.theory import symbolic
 from mdr_events.theory.blocks import blockwise
 from mdr_events.theory.roots import positive_polynomial_root
@@ -520,13 +520,15 @@ def d_crit(
     branch = "pull-off" if branch is None else branch
     check_choice("branch", branch, BRANCHES)
     check_flag("adhesion", adhesion)
-    alpha_deg = validate_alpha(alpha)
     if params is None:
-        from mdr_events.theory.layer.slip_onset import onset_depths
+        from mdr_events.theory.layer.slip_onset import check_onset_count, onset_depths
 
+        check_onset_count(values_in(alpha), contact.layer, limits)  # (before the angles are read: a copy each)
+        alpha_deg = validate_alpha(alpha)
         return _as_output(onset_depths(alpha_deg, contact, scenario, adhesion, branch, d_max, limits=limits),
                           alpha_deg)
     check_limits(limits)  # (named if it is not one, though the closed forms take no steps)
+    alpha_deg = validate_alpha(alpha)
     return _as_output(_slip_onset(_Tangent.of(alpha_deg), params, scenario, adhesion, branch), alpha_deg)
 
 

@@ -89,7 +89,8 @@ def test_simulate_runs_the_flat_punch_on_a_layer_in_the_continuum(capsys, tmp_pa
      "with profile=FlatPunch(radius=0.001) is not allowed on layer h = 0.005 m, bonded base in the continuum method"),
     (["--h", "2e-5", "--flat-punch", "2e-3", "--method", "continuum"],
      "contact.indenter=FlatPunch(radius=0.002) is not allowed in the continuum method on layer h = 2e-05 m, bonded "
-     "base: its face exceeds a/h = 64; allowed: a radius up to 0.00128 m"),
+     "base: its face exceeds a/h = 64 (the layer's tables); allowed: a radius up to 0.00128 m, or a layer h >= "
+     "3.125e-05 m, or h = inf (the half-space)"),
 ])
 def test_a_bad_layer_is_one_line_exit_2_and_nothing_written(capsys, tmp_path, options, fragment):
     status, _, err = run(capsys, "simulate", "--scenario", "A", "--alpha", "30", *options, "--out",

@@ -311,7 +311,8 @@ def test_a_face_beyond_the_layers_tables_is_refused_before_the_run_naming_the_pu
     contact = PUNCH.replace(h=A0 / 100.0)
     with pytest.raises(ValueError, match=r"^contact\.indenter=FlatPunch\(radius=0\.002\) is not allowed in the "
                                          r"continuum method on layer h = 2e-05 m, bonded base: its face exceeds "
-                                         r"a/h = 64; allowed: a radius up to 0\.00128 m$"):
+                                         r"a/h = 64 \(the layer's tables\); allowed: a radius up to 0\.00128 m, or "
+                                         r"a layer h >= 3\.125e-05 m, or h = inf \(the half-space\)$"):
         _continuum(contact)
 
 

@@ -98,12 +98,13 @@ def check_punch_face(indenter: FlatPunch, layer: Layer, what: str) -> None:
     Raises
     ------
     ValueError
-        In one line, naming the punch, the layer, ``what`` and the largest radius allowed.
+        In one line, naming the punch, the layer, ``what``, the largest radius and the least thickness allowed.
     """
     if float(indenter.radius) > LAMBDA_MAX * layer.thickness:
         raise ValueError(f"contact.indenter={indenter!r} is not allowed in {what} on {layer.describe()}: its "
-                         f"face exceeds a/h = {LAMBDA_MAX:g}; allowed: a radius up to "
-                         f"{LAMBDA_MAX * layer.thickness:.6g} m")
+                         f"face exceeds a/h = {LAMBDA_MAX:g} (the layer's tables); allowed: a radius up to "
+                         f"{LAMBDA_MAX * layer.thickness:.6g} m, or a layer h >= {indenter.radius / LAMBDA_MAX:.6g} "
+                         f"m, or h = inf (the half-space)")
 
 
 def _cap(contact: Contact, a):
@@ -115,6 +116,12 @@ def _cap(contact: Contact, a):
 def _elongation(contact: Contact, a, dgamma: float):
     """Heß's limit ``Δl(a)`` of ``dgamma`` on the contact's layer (m)."""
     return hess_elongation(a, dgamma, contact.elastomer.E_star, contact.elastomer.nu, contact.layer)
+
+
+def _scanned_radius(log_radius, face: float):
+    """The radius at ``ln a`` on the recession's scan, at most the face's: ``exp(ln a₀)`` rounds up to an ulp beyond
+    ``a₀``, off the tables' range when the face is at ``a/h = 64`` (round twenty-two)."""
+    return np.minimum(np.exp(log_radius), face)
 
 
 def punch_onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesion: bool, branch: str,
@@ -162,11 +169,11 @@ def punch_onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, a
         logs = np.linspace(math.log(face), math.log(pull_radius), RECESSION_POINTS)
 
         def ratio_of(log_radius):
-            a = np.exp(log_radius)
+            a = _scanned_radius(log_radius, face)
             return (depth + _elongation(contact, a, work)) / _cap(contact, a)
 
         def depth_of(a):
-            return -_elongation(contact, a, work)
+            return -_elongation(contact, np.minimum(a, face), work)
 
         out[receding] = first_onsets(logs, ratio_of, depth_of, tangent[receding], -math.inf)
     return np.where(vertical, -math.inf, out)

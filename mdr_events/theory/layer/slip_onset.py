@@ -51,7 +51,7 @@ from mdr_events.validation import check_real, shown, validate_alpha
 
 __all__ = ["onset_depths", "critical_angle_on_layer", "pull_off_depth", "first_onsets", "thin_layer_onset_depth", "check_onset_contact",
            "has_closed_forms", "SCAN_POINTS", "SCAN_SPAN", "ONSET_STEPS_PER_ANGLE", "ONSET_BYTES_PER_ANGLE",
-           "CRITICAL_ANGLE_STEPS", "LayerOnsets", "LAYER_ONSETS"]
+           "check_onset_count", "CRITICAL_ANGLE_STEPS", "LayerOnsets", "LAYER_ONSETS"]
 
 #: Radii of the logarithmic scan of ``r(a)`` along one motion (the running maximum is inverted on it).
 SCAN_POINTS = 400
@@ -272,6 +272,29 @@ def _onset_depths(motion: _Motion, tangent: np.ndarray, what: str, past_tables: 
     return np.where(beyond, math.nan, np.where(missed, motion.never, depth))
 
 
+def check_onset_count(count: int, layer: Layer, limits: Limits | None) -> None:
+    """What the slip onsets at ``count`` angles take on ``layer`` (:data:`ONSET_STEPS_PER_ANGLE` steps and
+    :data:`ONSET_BYTES_PER_ANGLE` bytes each), checked against ``limits`` (``None``: the defaults); the angles may be
+    counted before they are read (:func:`~mdr_events.limits.values_in`).
+
+    Parameters
+    ----------
+    count : int
+        The angles.
+    layer : Layer
+        The layer, named in the refusal.
+    limits : Limits or None
+        What the onsets may take.
+
+    Raises
+    ------
+    ResourceLimitError
+        More than ``limits`` allows.
+    """
+    check_limits(limits).check(f"the slip onset at {count} angles on {layer.describe()}",
+                               steps=ONSET_STEPS_PER_ANGLE * count, memory=ONSET_BYTES_PER_ANGLE * count)
+
+
 def onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesion: bool, branch: str,
                  d_max: float | None, *, past_tables: bool = False, limits: Limits | None = None) -> np.ndarray:
     r"""The depths at which the springs start to slide on the contact's layer: eqs. (17)–(21) with ``K_t`` and the
@@ -311,9 +334,7 @@ def onset_depths(alpha_deg: np.ndarray, contact: Contact, scenario: str, adhesio
         the tables (``a/h > 64``) without ``past_tables``, more angles than ``limits`` allows (``ResourceLimitError``).
     """
     contact, depth = check_onset_contact(contact, "d_crit", d_max)
-    check_limits(limits).check(f"the slip onset at {alpha_deg.size} angles on {contact.layer.describe()}",
-                               steps=ONSET_STEPS_PER_ANGLE * alpha_deg.size,
-                               memory=ONSET_BYTES_PER_ANGLE * alpha_deg.size)
+    check_onset_count(alpha_deg.size, contact.layer, limits)
     return _onsets_of(contact).onset_depths(alpha_deg, contact, scenario, adhesion, branch, depth, past_tables)
 
 
