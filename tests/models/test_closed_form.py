@@ -265,3 +265,33 @@ def test_an_event_the_search_cannot_settle_leaves_the_span_to_the_quadrature(mon
     times = np.linspace(0.0, quadrature.end_time, 201)
     np.testing.assert_array_equal(evaluate(fallen, times)["tangential_force"],
                                   evaluate(quadrature, times)["tangential_force"])
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_no_closed_form_span_watches_the_zone_leaving_the_edge(case, monkeypatch):
+    """``ZONE_LEAVES_EDGE`` (direction +1, with a concave ``K a(t)`` term: not covered by convexity) is watched only
+    where the edge's piece holds a front, and such a span has no closed form: none of the cases' closed-form spans
+    watches it, and ``span_primitive`` refuses a span whose edge's piece holds a front."""
+    from types import SimpleNamespace
+
+    from mdr_events.models.continuum.closed_form import span_primitive
+    from mdr_events.models.continuum.span import Trigger
+    from mdr_events.models.continuum.state import Cap
+
+    watched = []
+    original = integrate._integrate
+
+    def spy(model, span, integrator, force):
+        closed = integrator.primitive() is not None and integrator.grading() is None
+        outcome = original(model, span, integrator, force)
+        if closed:
+            watched.append({event.trigger for event in integrator.event_functions()})
+        return outcome
+
+    params, path, options = CASES[case]()
+    monkeypatch.setattr(integrate, "_integrate", spy)
+    solve_path(params, path, **options)
+    assert watched and not any(Trigger.ZONE_LEAVES_EDGE in triggers for triggers in watched)
+    zone = SimpleNamespace(edge_front_outward=True)
+    with pytest.raises(RuntimeError, match="holds a front"):
+        span_primitive(SimpleNamespace(K=1.0, kappa=0.0, segment=None, zones={Cap.POSITIVE: zone, Cap.NEGATIVE: zone}))

@@ -18,15 +18,31 @@ one whose inner pieces slide.
 
 The span's events are read at :data:`EVENT_READINGS` equal parts of the span and at its knots (where a table's
 ``d`` has a kink; a panel's end is where :mod:`.span_panels` reads them) and solved as :func:`~.span_march.march`
-solves them. Between two readings an event's function may rise through zero and fall back. On a convex branch
-(``d = g − k√a`` with ``g`` convex: the paraboloid, a power law ``n ≥ 1``) the radius is concave in the depth, hence in
-time on a segment, so that a level against a fixed target, ``L(t) − K a(t)`` (``L`` linear), is convex in time; the
-level's rate and the edge's radius are monotone: none of these turns back unseen. The edge's own target is not: its
-springs attached on ``d₀ = d + (k₁ − k₀)√a``, and ``cap·level − cap·Y = L(t) − K a − β √a`` (``β = cap r₀ (k₁ − k₀)``,
-negative where the edge is a target and ``Δγ1 > Δγ0``, the paper's) can be concave (unloading back along the loading
-line: ``c − K a + |β| √a``); nor is a table's ``g`` convex in general. So a part whose readings show no crossing is
-read again in between where the curvature read off its readings could turn the function back (:func:`_turn_between`).
-``tests/models/test_closed_form.py`` compares the closed form with the quadrature, and finds such a turn.
+solves them. Between two readings an event's function may cross zero and cross back unseen. Readings rule that out
+for a function that is monotone between them, or convex in time with direction +1 (it starts below zero: else it
+fired at once, :meth:`~.span.SpanIntegrator.met_at_start`; below zero at two readings, it is below its chord, below
+zero, between them), or concave with direction −1 (it starts above zero); convexity says nothing of the other
+pairings. On a convex branch (``d = g − k√a`` with ``g`` convex: the paraboloid, a power law ``n ≥ 1``) the radius is
+concave in the depth, hence in time on a segment (``d`` linear in ``t``), and the events of a closed-form span are:
+
+- ``ZONE_REACHES`` (+1) against a target fixed or linear in ``d`` (a piece's anchors, Coulomb's ``κ d``):
+  ``L(t) − K a(t)`` with ``L`` linear, convex: proven;
+- ``LEVEL_TURNS`` (−1), the level's rate ``L' − K ȧ``, ``ȧ`` monotone where ``a`` is concave: proven;
+- ``EDGE_PASSES_PIECE`` (−1), the radius against a fixed one, monotone on a moving span: proven;
+- ``ZONE_LEAVES_EDGE`` (+1) never: it is watched only where the edge's piece holds a front
+  (``edge_front_outward``), and a span with a front has no closed form (:meth:`~.span.SpanIntegrator.primitive`;
+  :func:`span_primitive` raises if it meets one);
+- ``ZONE_REACHES`` against the edge's own target: unproven. Its springs attached on ``d₀ = d + (k₁ − k₀)√a``, and
+  ``cap·level − cap·Y = L(t) − K a − β √a`` (``β = cap r₀ (k₁ − k₀)``, negative where the edge is a target and
+  ``Δγ1 > Δγ0``, the paper's) can be concave with direction +1 (unloading back along the loading line:
+  ``c − K a + |β| √a``);
+- every event on a branch that is not convex (a table's ``g``, a power law ``n < 1``): unproven.
+
+For the unproven ones the guard is a curvature heuristic, not a bound: a part whose readings show no crossing is read
+again in between where the curvature read off three readings (times :data:`CURVATURE_SAFETY`) could turn the
+function back (:func:`_turn_between`, at most :data:`TURN_READS` readings; spent, the span is the quadrature's). A
+function whose curvature inside a part exceeds four times the one read there can still hide a turn. ``tests/models/test_closed_form.py`` compares the
+closed form with the quadrature, and finds such a turn of the edge's target.
 """
 
 from __future__ import annotations
@@ -196,6 +212,9 @@ def span_primitive(integrator) -> Primitive:
         ``P``, with ``dF_x/da = 2G* dP/da``.
     """
     K, kappa, segment, zones = integrator.K, integrator.kappa, integrator.segment, integrator.zones
+    if any(zones[cap].edge_front_outward for cap in Cap):  # (a front at the edge: ZONE_LEAVES_EDGE, module docstring)
+        raise RuntimeError("span_primitive: a span whose edge piece holds a front has no closed form (primitive() "
+                           "refuses a span with fronts); please report the parameters and path")
     constant, linear = {}, {}
     for cap in Cap:
         zone = zones[cap]
