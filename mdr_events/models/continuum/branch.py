@@ -445,7 +445,7 @@ class TabulatedBranch(Branch):
 
     def integrals(self, a: np.ndarray) -> np.ndarray:
         a = np.asarray(a, dtype=float)
-        inside = np.clip(a, 0.0, self.line.shape.x_max)
+        inside = self.line.shape.inside_all(a)  # (the table's end within END_SHARE, nan beyond: as integral)
         value = self.line.shape.g_integral(inside) - 2.0 / 3.0 * self.line.k * inside**1.5
         return np.where(a > 0, value, 0.0)
 
