@@ -35,7 +35,7 @@ from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.theory import power_law, symbolic
 from mdr_events.validation import validate_alpha
 
-__all__ = ["SUBDIVISIONS", "GRID_POINTS", "EquivalentProfile", "TabulatedBranch", "equivalent", "branch",
+__all__ = ["SUBDIVISIONS", "GRID_POINTS", "END_SHARE", "EquivalentProfile", "TabulatedBranch", "equivalent", "branch",
            "equivalent_profile", "normal_force", "contact_radius", "jump_off", "pull_off_force", "d_crit_A",
            "critical_angle_A"]
 
@@ -44,6 +44,11 @@ __all__ = ["SUBDIVISIONS", "GRID_POINTS", "EquivalentProfile", "TabulatedBranch"
 #: grows as the square of the points).
 SUBDIVISIONS = 4
 GRID_POINTS = 4000
+#: How far past a table's end (a share of its last radius ``x_max``) a radius is its end: a radius of the continuum
+#: reaches the end as ``var · scale`` of ``var = a / scale`` (two roundings, an ulp each) or a root within
+#: :data:`RADIUS_RTOL`; four ulp hold both. Beyond it the branch's depth, slope and integral are ``nan``, scalar and
+#: array alike (no caller reads past the end: the radius of a depth is ``nan`` there; the springs' ``g`` is ``inf``).
+END_SHARE = 4 * float(np.finfo(float).eps)
 #: The relative accuracy of a radius root (a few ulp).
 RADIUS_RTOL = 4 * float(np.finfo(float).eps)
 #: Steps allowed to invert a depth on one piece of ``g``: Newton's converge in a few, the bisections that keep them
@@ -107,6 +112,38 @@ class EquivalentProfile:
         #: the same three for one Python float (:class:`ScalarPiecewise`)
         self.scalar_g, self.scalar_slope, self.scalar_integral = (ScalarPiecewise(poly) for poly in
                                                                   (self.g, self.g_slope, self.g_integral))
+
+    def inside(self, a: float) -> float:
+        """The radius ``a`` as the table reads it (one float; :meth:`inside_all` for an array).
+
+        Parameters
+        ----------
+        a : float
+            The radius (m).
+
+        Returns
+        -------
+        float
+            ``a`` up to ``x_max``, ``x_max`` within :data:`END_SHARE` past it, ``nan`` beyond.
+        """
+        if a <= self.x_max:
+            return a
+        return self.x_max if a <= self.x_max * (1.0 + END_SHARE) else math.nan
+
+    def inside_all(self, a: np.ndarray) -> np.ndarray:
+        """:meth:`inside` of each radius.
+
+        Parameters
+        ----------
+        a : numpy.ndarray
+            The radii (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            :meth:`inside` of each, and 0 for one below 0.
+        """
+        return np.where(a <= self.x_max * (1.0 + END_SHARE), np.clip(a, 0.0, self.x_max), np.nan)
 
     def __call__(self, x):
         """``g(|x|)``; ``+inf`` beyond the table (no spring there is ever touched)."""
@@ -224,16 +261,16 @@ class TabulatedBranch:
         Parameters
         ----------
         a : float
-            The radius (m); one past the table is clipped to its end, as :meth:`depths` clips it.
+            The radius (m); one within :data:`END_SHARE` past the table is its end, as in :meth:`depths`.
 
         Returns
         -------
         float
-            The depth (m); 0 at ``a <= 0``.
+            The depth (m); 0 at ``a <= 0``, ``nan`` further past the table.
         """
         if not a > 0:
             return 0.0
-        a = min(a, self.shape.x_max)
+        a = self.shape.inside(a)
         return self.shape.scalar_g(a) - self.k * math.sqrt(a)
 
     def depths(self, a: np.ndarray) -> np.ndarray:
@@ -242,15 +279,15 @@ class TabulatedBranch:
         Parameters
         ----------
         a : array_like
-            The radii (m); those past the table are clipped to its end.
+            The radii (m); those within :data:`END_SHARE` past the table are its end.
 
         Returns
         -------
         numpy.ndarray
-            The depths (m), the shape of ``a``; 0 at ``a <= 0``.
+            The depths (m), the shape of ``a``; 0 at ``a <= 0``, ``nan`` further past the table.
         """
         a = np.asarray(a, dtype=float)
-        inside = np.clip(a, 0.0, self.shape.x_max)
+        inside = self.shape.inside_all(a)
         return np.where(a > 0, self.shape.g(inside) - self.k * np.sqrt(inside), 0.0)
 
     def slope(self, a: float) -> float:
@@ -259,14 +296,15 @@ class TabulatedBranch:
         Parameters
         ----------
         a : float
-            The radius (m).
+            The radius (m); one within :data:`END_SHARE` past the table is its end.
 
         Returns
         -------
         float
-            The slope (1); at ``a <= 0``: ``-inf`` with adhesion, ``g'(0)`` without.
+            The slope (1); at ``a <= 0``: ``-inf`` with adhesion, ``g'(0)`` without; ``nan`` further past the table.
         """
         if a > 0:
+            a = self.shape.inside(a)
             return self.shape.scalar_slope(a) - 0.5 * self.k / math.sqrt(a)
         return -math.inf if self.k > 0 else self.shape.scalar_slope(0.0)
 
@@ -276,17 +314,17 @@ class TabulatedBranch:
         Parameters
         ----------
         a : float
-            The radius (m); one past the table is clipped to its end, as :meth:`depths` and
-            :meth:`~mdr_events.models.continuum.branch.TabulatedBranch.integrals` clip it.
+            The radius (m); one within :data:`END_SHARE` past the table is its end, as in :meth:`depths` and
+            :meth:`~mdr_events.models.continuum.branch.TabulatedBranch.integrals`.
 
         Returns
         -------
         float
-            The integral (m²; 0 at ``a <= 0``).
+            The integral (m²; 0 at ``a <= 0``, ``nan`` further past the table).
         """
         if not a > 0:
             return 0.0
-        a = min(a, self.shape.x_max)
+        a = self.shape.inside(a)
         return self.shape.scalar_integral(a) - 2.0 / 3.0 * self.k * a**1.5
 
     def radius(self, depth: float, rtol: float = RADIUS_RTOL) -> float:

@@ -245,3 +245,81 @@ def test_the_work_over_closed_spans_on_a_layer_is_the_tight_quadrature_s(case, m
     edges = np.linspace(0.0, run.end_time, WORK_PARTS + 1)
     tight = sum(tangential_work(run, float(low), float(high)) for low, high in zip(edges[:-1], edges[1:]))
     assert abs(closed - tight) <= WORK_RTOL * abs(tight), (closed, tight)
+
+
+def _ragged(var, y=None):
+    """An event below zero everywhere whose every halving looks curved: ``−1`` at the odd dyadic depths of ``var``
+    in ``[0, 1]`` (``1/2``, ``1/8``, ``3/8``, ...), ``−1e-9`` at the even ones (``0``, ``1``, ``1/4``, ...), so that
+    the middle of two readings differs from them by their own size and no half is ever cleared nor crosses."""
+    numerator = round(var * 2**60)
+    depth = 60 - ((numerator & -numerator).bit_length() - 1 if numerator else 60)
+    return -1.0 if depth % 2 else -1e-9
+
+
+_ragged.direction = 1.0
+
+
+def test_an_event_the_search_cannot_settle_leaves_the_span_to_the_quadrature(monkeypatch):
+    """:func:`_turn_between` spends :data:`TURN_READS` on an event it can neither clear nor see cross: it raises
+    (it returned ``None``, no crossing, silently), :func:`closed_span` gives ``None`` (no closed form for the span),
+    and ``integrate_span`` integrates such a span by the quadrature: a run whose every closed-form span is unsettled
+    is the quadrature's run bit for bit."""
+    from mdr_events.models.continuum import closed_form
+    from mdr_events.models.continuum.branch import Branch
+    from mdr_events.models.continuum.closed_form import TURN_READS, Primitive, _turn_between, _Unsettled, closed_span
+
+    reads = []
+
+    def counted(var, y=None):
+        reads.append(var)
+        return _ragged(var)
+
+    counted.direction = 1.0
+    low, high = 0.0, 1.0
+    with pytest.raises(_Unsettled):
+        _turn_between(counted, 1.0, low, high, _ragged(low), _ragged(high))
+    assert len(reads) == TURN_READS
+    branch = Branch(PAPER, PAPER.dgamma1)
+    primitive = Primitive(branch, branch, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    assert closed_span(primitive, 1.0, 0.5, 0.0, 1.0, 1e-3, [], [_ragged]) is None  # (its readings k/32: no clearing)
+
+    def unsettled(*args):
+        raise _Unsettled("every part")
+
+    monkeypatch.setattr(closed_form, "_hidden", unsettled)
+    fallen, quadrature = _run("A 20°", monkeypatch, True), _run("A 20°", monkeypatch, False)
+    assert [(event.kind, event.time) for event in fallen.events] == [(event.kind, event.time)
+                                                                     for event in quadrature.events]
+    times = np.linspace(0.0, quadrature.end_time, 201)
+    np.testing.assert_array_equal(evaluate(fallen, times)["tangential_force"],
+                                  evaluate(quadrature, times)["tangential_force"])
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_no_closed_form_span_watches_the_zone_leaving_the_edge(case, monkeypatch):
+    """``ZONE_LEAVES_EDGE`` (direction +1, with a concave ``K a(t)`` term: not covered by convexity) is watched only
+    where the edge's piece holds a front, and such a span has no closed form: none of the cases' closed-form spans
+    watches it, and ``span_primitive`` refuses a span whose edge's piece holds a front."""
+    from types import SimpleNamespace
+
+    from mdr_events.models.continuum.closed_form import span_primitive
+    from mdr_events.models.continuum.span import Trigger
+    from mdr_events.models.continuum.state import Cap
+
+    watched = []
+    original = integrate._integrate
+
+    def spy(model, span, integrator, force):
+        closed = integrator.primitive() is not None and integrator.grading() is None
+        outcome = original(model, span, integrator, force)
+        if closed:
+            watched.append({event.trigger for event in integrator.event_functions()})
+        return outcome
+
+    params, path, options = CASES[case]()
+    monkeypatch.setattr(integrate, "_integrate", spy)
+    solve_path(params, path, **options)
+    assert watched and not any(Trigger.ZONE_LEAVES_EDGE in triggers for triggers in watched)
+    zone = SimpleNamespace(edge_front_outward=True)
+    with pytest.raises(RuntimeError, match="holds a front"):
+        span_primitive(SimpleNamespace(K=1.0, kappa=0.0, segment=None, zones={Cap.POSITIVE: zone, Cap.NEGATIVE: zone}))

@@ -97,3 +97,23 @@ def test_every_other_indenter_s_samples_are_its_radii():
     for branch in branches:
         depth = np.linspace(branch.jump_off_depth, params.d_max, 11)
         np.testing.assert_array_equal(branch.sample_radii(depth), branch.radii(depth))
+
+
+def test_a_new_branch_type_samples_by_its_own_radii_unless_it_declares_the_quartic():
+    """``Branch.sample_radii`` fails closed: a subclass that does not declare :attr:`Branch.quartic_samples` (a new
+    indenter's branch, here the paraboloid's equations under another name) samples by its own ``radii``, bit for bit;
+    one that declares it gets the quartic, which differs from the iteration by rounding somewhere on the branch."""
+
+    class Undeclared(Branch):
+        pass
+
+    class Declared(Branch):
+        quartic_samples = True
+
+    params = me.Parameters.paper()
+    depth = np.linspace(Branch(params, params.dgamma0).jump_off_depth, params.d_max, 201)
+    undeclared, declared = Undeclared(params, params.dgamma0), Declared(params, params.dgamma0)
+    assert not Undeclared.quartic_samples and Declared.quartic_samples and Branch.quartic_samples
+    np.testing.assert_array_equal(undeclared.sample_radii(depth), undeclared.radii(depth))
+    np.testing.assert_array_equal(declared.sample_radii(depth), Branch(params, params.dgamma0).sample_radii(depth))
+    assert np.any(declared.sample_radii(depth) != declared.radii(depth))

@@ -151,17 +151,26 @@ SCALAR_ULPS = 8
 
 
 @pytest.mark.parametrize("work", [0.0, 0.15])
-def test_the_scalar_depth_and_integral_clip_at_the_table_s_end_as_the_array_ones(paper, work):
-    """A radius at and past the table's end: the scalar ``depth`` and ``integral`` are those at the end, as the array
-    forms (``depths``, ``TabulatedBranch.integrals``) clip them (the scalar ones extrapolated the last piece's cubic)."""
+def test_past_the_table_s_end_scalar_and_array_read_its_end_to_rounding_and_nan_beyond(paper, work):
+    """A radius at the table's end or within ``END_SHARE`` past it (the rounding of the continuum's ``var · scale``):
+    the scalar ``depth``, ``integral`` and ``slope`` are those at the end, as the array forms (``depths``,
+    ``TabulatedBranch.integrals``, ``slopes``) read them; further past (an ulp beyond the share, 1e-9, 1 %, twice
+    the end) all of them are ``nan`` (the scalar ones extrapolated the last piece's cubic, then clipped silently)."""
     from mdr_events.models.continuum.branch import make_branch
     r = np.linspace(0.0, 3e-3, 31)
     table = TabulatedProfile(r, r**2 / (2 * paper.R))
     line, branch = tb.branch(table, paper, work), make_branch(paper, work, table)
     end = line.shape.x_max
-    radii = np.array([end, end * (1 + 1e-9), 1.01 * end, 2 * end])
-    depths, integrals = line.depths(radii), branch.integrals(radii)
-    for a, depth, integral in zip(radii.tolist(), depths, integrals):
-        assert line.depth(a) == line.depth(end) and line.integral(a) == line.integral(end)
+    last = end * (1 + tb.END_SHARE)  # (the last radius read as the end)
+    near = np.array([end, np.nextafter(end, np.inf), last])
+    far = np.array([np.nextafter(last, np.inf), end * (1 + 1e-9), 1.01 * end, 2 * end])
+    depths, integrals, slopes = line.depths(near), branch.integrals(near), branch.slopes(near)
+    for a, depth, integral, slope in zip(near.tolist(), depths, integrals, slopes):
+        assert (line.depth(a), line.integral(a), line.slope(a)) == (line.depth(end), line.integral(end),
+                                                                     line.slope(end))
         assert line.depth(a) == pytest.approx(depth, rel=SCALAR_ULPS * np.finfo(float).eps, abs=0)
         assert line.integral(a) == pytest.approx(integral, rel=SCALAR_ULPS * np.finfo(float).eps, abs=0)
+        assert line.slope(a) == slope
+    assert np.isnan(line.depths(far)).all() and np.isnan(branch.integrals(far)).all()
+    assert np.isnan(branch.slopes(far)).all()
+    assert all(np.isnan([line.depth(a), line.integral(a), line.slope(a)]).all() for a in far.tolist())

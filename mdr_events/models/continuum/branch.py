@@ -56,8 +56,18 @@ class Branch:
     #: the depth at which a growing radius reaches the indenter's edge and stops there (a flat face's on a layer,
     #: :class:`~.layer_punch_branch.LayerPunchBranch`; ``+inf``: it grows on): the planner ends a growing span there
     edge_depth = math.inf
+    #: whether :meth:`sample_radii` is the paraboloid's quartic in closed form: this class's own (the paraboloid's
+    #: branch); every subclass is ``False`` unless it sets it in its own body (:meth:`__init_subclass__`), so that
+    #: a branch of another indenter samples by its own :meth:`radii`
+    quartic_samples = True
     #: the NumPy form of ``dd/da`` (:meth:`slopes`; ``None``: a branch without one, read point by point)
     _slopes = None
+
+    def __init_subclass__(cls, **kwargs):
+        """A subclass's :attr:`quartic_samples` is ``False`` unless its own body declares it (fails closed: a new
+        branch type never inherits the paraboloid's closed form)."""
+        super().__init_subclass__(**kwargs)
+        cls.quartic_samples = bool(cls.__dict__.get("quartic_samples", False))
     #: the NumPy form of ``∫_0^a d dξ`` (:meth:`integrals`; ``None``: a branch without one, read point by point)
     _integrals = None
 
@@ -253,10 +263,9 @@ class Branch:
         return np.where(depth >= self.jump_off_depth, root**2, np.nan)
 
     def sample_radii(self, depth: np.ndarray) -> np.ndarray:
-        """:meth:`radii` at a run's samples: on the paraboloid with adhesion, the quartic's root in closed form
-        (:func:`mdr_events.theory.quartic.depressed_quartic_root`, a few ulp from :meth:`radii`'s iteration, within
-        the root's conditioning at the fold); Hertz's, :meth:`radii` itself (a branch of another indenter has its
-        own: :class:`IteratedSamples`).
+        """:meth:`radii` at a run's samples: on the paraboloid with adhesion (:attr:`quartic_samples`), the quartic's
+        root in closed form (:func:`mdr_events.theory.quartic.depressed_quartic_root`, a few ulp from :meth:`radii`'s
+        iteration, within the root's conditioning at the fold); Hertz's and any other branch's, :meth:`radii` itself.
 
         Parameters
         ----------
@@ -268,7 +277,7 @@ class Branch:
         numpy.ndarray
             The radii (m), the shape of ``depth`` (``nan`` below the jump-off depth).
         """
-        if self.work == 0.0:  # (Hertz: its own)
+        if self.work == 0.0 or not self.quartic_samples:  # (Hertz, or another indenter: its own)
             return self.radii(depth)
         depth = np.asarray(depth, dtype=float)
         linear, constant = self._array_coefficients(depth, *self._arguments)[3:]
@@ -309,28 +318,7 @@ class Branch:
         return root * root
 
 
-class IteratedSamples:
-    """A branch whose radii at a run's samples are its ``radii`` (a mixin before :class:`Branch`, whose
-    :meth:`~Branch.sample_radii` is the paraboloid's quartic in closed form): a power law, the flat punch, a table,
-    a layer."""
-
-    def sample_radii(self, depth: np.ndarray) -> np.ndarray:
-        """``radii`` at a run's samples: the branch's own.
-
-        Parameters
-        ----------
-        depth : array_like
-            The samples' depths (m).
-
-        Returns
-        -------
-        numpy.ndarray
-            ``radii(depth)`` (m): no closed form of this branch's own at the samples.
-        """
-        return self.radii(depth)
-
-
-class PowerLawBranch(IteratedSamples, Branch):
+class PowerLawBranch(Branch):
     """The branch of the power law ``f = c rⁿ`` (:class:`~mdr_events.contact.indenters.PowerLaw`):
     ``d = κ c aⁿ − sqrt(2π a Δγ / E*)`` (:mod:`mdr_events.theory.power_law`); the radius of a depth is the root of
     a convex function of ``s = √a`` above the jump-off (:func:`~mdr_events.theory.power_law.branch_root`)."""
@@ -382,7 +370,7 @@ class PowerLawBranch(IteratedSamples, Branch):
         return root * root
 
 
-class FlatPunchBranch(IteratedSamples, Branch):
+class FlatPunchBranch(Branch):
     """The flat punch of radius ``R_p`` (:class:`~mdr_events.contact.indenters.FlatPunch`): every spring under it has
     ``g = 0``, so the contact is the punch's whole face from the first touch (``d >= 0``) on and never grows
     beyond it (:meth:`growth_depth` is ``+inf``); its edge springs reach Heß's limit (8) at
@@ -433,7 +421,7 @@ class FlatPunchBranch(IteratedSamples, Branch):
         return float(power_law.flat_punch_radius(depth, self.profile, self.params, self.work, FOLD_SHARE))
 
 
-class TabulatedBranch(IteratedSamples, Branch):
+class TabulatedBranch(Branch):
     """The branch of a tabulated profile (:class:`~mdr_events.contact.indenters.TabulatedProfile`): ``d = g(a) − sqrt(2π a
     Δγ / E*)`` with ``g`` the table's numerical Abel transform (:mod:`mdr_events.theory.tabulated`); the radius of a
     depth a bracketed root above the jump-off."""
@@ -460,7 +448,7 @@ class TabulatedBranch(IteratedSamples, Branch):
 
     def integrals(self, a: np.ndarray) -> np.ndarray:
         a = np.asarray(a, dtype=float)
-        inside = np.clip(a, 0.0, self.line.shape.x_max)
+        inside = self.line.shape.inside_all(a)  # (the table's end within END_SHARE, nan beyond: as integral)
         value = self.line.shape.g_integral(inside) - 2.0 / 3.0 * self.line.k * inside**1.5
         return np.where(a > 0, value, 0.0)
 

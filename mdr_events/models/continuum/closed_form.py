@@ -18,15 +18,31 @@ one whose inner pieces slide.
 
 The span's events are read at :data:`EVENT_READINGS` equal parts of the span and at its knots (where a table's
 ``d`` has a kink; a panel's end is where :mod:`.span_panels` reads them) and solved as :func:`~.span_march.march`
-solves them. Between two readings an event's function may rise through zero and fall back. On a convex branch
-(``d = g − k√a`` with ``g`` convex: the paraboloid, a power law ``n ≥ 1``) the radius is concave in the depth, hence in
-time on a segment, so that a level against a fixed target, ``L(t) − K a(t)`` (``L`` linear), is convex in time; the
-level's rate and the edge's radius are monotone: none of these turns back unseen. The edge's own target is not: its
-springs attached on ``d₀ = d + (k₁ − k₀)√a``, and ``cap·level − cap·Y = L(t) − K a − β √a`` (``β = cap r₀ (k₁ − k₀)``,
-negative where the edge is a target and ``Δγ1 > Δγ0``, the paper's) can be concave (unloading back along the loading
-line: ``c − K a + |β| √a``); nor is a table's ``g`` convex in general. So a part whose readings show no crossing is
-read again in between where the curvature read off its readings could turn the function back (:func:`_turn_between`).
-``tests/models/test_closed_form.py`` compares the closed form with the quadrature, and finds such a turn.
+solves them. Between two readings an event's function may cross zero and cross back unseen. Readings rule that out
+for a function that is monotone between them, or convex in time with direction +1 (it starts below zero: else it
+fired at once, :meth:`~.span.SpanIntegrator.met_at_start`; below zero at two readings, it is below its chord, below
+zero, between them), or concave with direction −1 (it starts above zero); convexity says nothing of the other
+pairings. On a convex branch (``d = g − k√a`` with ``g`` convex: the paraboloid, a power law ``n ≥ 1``) the radius is
+concave in the depth, hence in time on a segment (``d`` linear in ``t``), and the events of a closed-form span are:
+
+- ``ZONE_REACHES`` (+1) against a target fixed or linear in ``d`` (a piece's anchors, Coulomb's ``κ d``):
+  ``L(t) − K a(t)`` with ``L`` linear, convex: proven;
+- ``LEVEL_TURNS`` (−1), the level's rate ``L' − K ȧ``, ``ȧ`` monotone where ``a`` is concave: proven;
+- ``EDGE_PASSES_PIECE`` (−1), the radius against a fixed one, monotone on a moving span: proven;
+- ``ZONE_LEAVES_EDGE`` (+1) never: it is watched only where the edge's piece holds a front
+  (``edge_front_outward``), and a span with a front has no closed form (:meth:`~.span.SpanIntegrator.primitive`;
+  :func:`span_primitive` raises if it meets one);
+- ``ZONE_REACHES`` against the edge's own target: unproven. Its springs attached on ``d₀ = d + (k₁ − k₀)√a``, and
+  ``cap·level − cap·Y = L(t) − K a − β √a`` (``β = cap r₀ (k₁ − k₀)``, negative where the edge is a target and
+  ``Δγ1 > Δγ0``, the paper's) can be concave with direction +1 (unloading back along the loading line:
+  ``c − K a + |β| √a``);
+- every event on a branch that is not convex (a table's ``g``, a power law ``n < 1``): unproven.
+
+For the unproven ones the guard is a curvature heuristic, not a bound: a part whose readings show no crossing is read
+again in between where the curvature read off three readings (times :data:`CURVATURE_SAFETY`) could turn the
+function back (:func:`_turn_between`, at most :data:`TURN_READS` readings; spent, the span is the quadrature's). A
+function whose curvature inside a part exceeds four times the one read there can still hide a turn. ``tests/models/test_closed_form.py`` compares the
+closed form with the quadrature, and finds such a turn of the edge's target.
 """
 
 from __future__ import annotations
@@ -50,12 +66,22 @@ STATIONARY_READINGS = 16
 #: Equal parts of a span at whose ends a closed-form span reads its events (besides its knots): as many as the
 #: quadrature's panels on the fronts' spans (``MIN_STEPS_PER_SPAN`` of them at least) twice over
 EVENT_READINGS = 16
-#: The safety factor on the curvature :func:`_turn_between` reads off three points of an event's function (a second
-#: difference: the curvature somewhere between them, not its largest)
+#: The safety factor on the curvature :func:`_hidden` and :func:`_turn_between` read off three points of an event's
+#: function. A heuristic, not a bound: a second difference is the curvature at some point between the three (the mean
+#: value theorem), not its largest, and 4 admits a curvature four times that one anywhere in the part; e.g. the edge's
+#: concave ``|β| √a``, whose curvature ``∝ a^(-3/2)`` grows fourfold where the radius shrinks by ``4^(2/3) ≈ 2.5``
+#: between the readings' middle and the part's far end (the sixteen parts of a span are far narrower). A function whose
+#: curvature grows faster (a kink between knots, a table's ``g`` not convex) can still hide a turn
 CURVATURE_SAFETY = 4.0
-#: Readings at most between two of a span's readings in :func:`_turn_between` (a turn that hides from 64 halvings is
-#: narrower than a 1e-12 share of the part there, or rounding)
+#: The budget of :func:`_turn_between`: its readings in all between two of a span's readings, not a depth (a
+#: depth-first search of halves, the earlier first: one path may go down to rounding while later halves stay unread;
+#: all halves to 64 levels would be ``2⁶⁴`` readings). Spent with halves still uncleared, the span has no closed form
+#: (:class:`_Unsettled`: :func:`closed_span` gives ``None``, and the quadrature reads it)
 TURN_READS = 64
+
+
+class _Unsettled(Exception):
+    """:func:`_turn_between` spent :data:`TURN_READS` without clearing or finding a crossing."""
 
 
 class Primitive(NamedTuple):
@@ -186,6 +212,9 @@ def span_primitive(integrator) -> Primitive:
         ``P``, with ``dF_x/da = 2G* dP/da``.
     """
     K, kappa, segment, zones = integrator.K, integrator.kappa, integrator.segment, integrator.zones
+    if any(zones[cap].edge_front_outward for cap in Cap):  # (a front at the edge: ZONE_LEAVES_EDGE, module docstring)
+        raise RuntimeError("span_primitive: a span whose edge piece holds a front has no closed form (primitive() "
+                           "refuses a span with fronts); please report the parameters and path")
     constant, linear = {}, {}
     for cap in Cap:
         zone = zones[cap]
@@ -209,7 +238,7 @@ def span_primitive(integrator) -> Primitive:
 
 
 def closed_span(primitive: Primitive, start: float, stop: float, force: float, G2: float, scale: float,
-                knots: list[float], events: list) -> Marched:
+                knots: list[float], events: list) -> Marched | None:
     """The span's force in closed form from ``start`` to ``stop`` (its variable) or to the first terminal event, as
     the quadrature's :class:`~.span_march.Marched`.
 
@@ -232,9 +261,10 @@ def closed_span(primitive: Primitive, start: float, stop: float, force: float, G
 
     Returns
     -------
-    Marched
+    Marched or None
         The status (0 the end, 1 an event), the force as a :class:`ClosedForce`, each event's root (the first
-        terminal one) and the force where it ended.
+        terminal one) and the force where it ended; ``None`` where an event's function could cross between two
+        readings unread (:data:`TURN_READS` spent): the span has no closed form then.
     """
     parts = np.linspace(start, stop, EVENT_READINGS + 1)[1:-1].tolist()
     ascending = stop > start
@@ -245,27 +275,31 @@ def closed_span(primitive: Primitive, start: float, stop: float, force: float, G
     directions = [float(getattr(event, "direction", 0.0)) for event in events]
     g, low = [event(start, None) for event in events], start
     g_old, older = g, None  # (the reading before low: the curvature of the three)
-    for var in readings:
-        g_new = [event(var, None) for event in events]
-        active = [index for index in range(len(events)) if _crossed(g[index], g_new[index], directions[index])]
-        # (an event whose readings show no crossing may turn back between them: read between where the curvature of
-        # three readings could turn it; the first part's is known at the third reading, or read where one fires)
-        triple = None if older is None else ((older, low, var), (g_old, g, g_new))
-        early = older == start and _hidden(events, directions, (older, low, g_old, g), triple, [])
-        if early:  # (before anything in this part)
-            active, hidden = [], early
-        else:
-            hidden = _hidden(events, directions, (low, var, g, g_new), triple, active) if triple or active else []
-        if active or hidden:
-            # (the events read the variable alone; the first root in the span's direction, as _first_root orders them)
-            found = [_first_root(events, active, _UNREAD, low, var)] if active else []
-            found += [_first_root(events, [index], _UNREAD, *bracket) for index, bracket in hidden]
-            index, root = min(found, key=lambda pair: pair[1] if ascending else -pair[1])
-            t_events[index].append(root)
-            inside = [read for read in readings if (start < read < root if ascending else root < read < start)]
-            ended = ClosedForce(primitive, start, force, G2, scale, [start, *inside, root])
-            return _checked(Marched(1, "", ended, t_events, ended.at(root)))
-        g_old, older, g, low = g, low, g_new, var
+    try:
+        for var in readings:
+            g_new = [event(var, None) for event in events]
+            active = [index for index in range(len(events)) if _crossed(g[index], g_new[index], directions[index])]
+            # (an event whose readings show no crossing may turn back between them: read between where the curvature of
+            # three readings could turn it; the first part's is known at the third reading, or read where one fires)
+            triple = None if older is None else ((older, low, var), (g_old, g, g_new))
+            early = older == start and _hidden(events, directions, (older, low, g_old, g), triple, [])
+            if early:  # (before anything in this part)
+                active, hidden = [], early
+            else:
+                hidden = _hidden(events, directions, (low, var, g, g_new), triple, active) if triple or active else []
+            if active or hidden:
+                # (the events read the variable alone; the first root in the span's direction, as _first_root
+                # orders them)
+                found = [_first_root(events, active, _UNREAD, low, var)] if active else []
+                found += [_first_root(events, [index], _UNREAD, *bracket) for index, bracket in hidden]
+                index, root = min(found, key=lambda pair: pair[1] if ascending else -pair[1])
+                t_events[index].append(root)
+                inside = [read for read in readings if (start < read < root if ascending else root < read < start)]
+                ended = ClosedForce(primitive, start, force, G2, scale, [start, *inside, root])
+                return _checked(Marched(1, "", ended, t_events, ended.at(root)))
+            g_old, older, g, low = g, low, g_new, var
+    except _Unsettled:  # (an event's turn its readings could not rule out: the quadrature's, integrate_span)
+        return None
     return _checked(Marched(0, "", whole, t_events, whole.at(stop)))
 
 
@@ -280,17 +314,16 @@ def _hidden(events: list, directions: list[float], part: tuple, triple: tuple | 
     if triple is not None:
         (x0, x1, x2), (g0s, g1s, g2s) = triple
         inverse0, inverse1 = 1.0 / (x1 - x0), 1.0 / (x2 - x1)
-        # (the curvature's bulge over the part per unit of the second difference, for _clear's bound times width²)
-        reach = 2.0 * CURVATURE_SAFETY * (high - low) ** 2 / abs(x2 - x0)
+        # (the curvature per unit of the slopes' difference: twice the second divided difference, times the safety)
+        reach = 2.0 * CURVATURE_SAFETY / abs(x2 - x0)
     for index in range(len(events)):
         if index in skip:
             continue
         before, after = g_low[index], g_high[index]
         if triple is not None:
-            bulge = reach * abs((g2s[index] - g1s[index]) * inverse1 - (g1s[index] - g0s[index]) * inverse0)
-            if abs(after - before) > bulge or ((before > 0.0) == (after > 0.0)
-                                               and min(abs(before), abs(after)) > 0.125 * bulge):
-                continue  # (monotone there, or kept to its readings' side: _clear)
+            bound = reach * abs((g2s[index] - g1s[index]) * inverse1 - (g1s[index] - g0s[index]) * inverse0)
+            if _clear(before, after, high - low, bound):
+                continue  # (monotone there, or kept to its readings' side)
         bracket = _turn_between(events[index], directions[index], low, high, before, after)
         if bracket:
             found.append((index, bracket))
@@ -312,7 +345,12 @@ def _turn_between(event, direction: float, low: float, high: float, before: floa
 
     The event is read at the middle of the interval; each half is passed over where :func:`_clear` clears it by
     :data:`CURVATURE_SAFETY` times the curvature read off the three points, else read at its own middle, the earlier
-    half first, at most :data:`TURN_READS` readings in all (beyond them the turn is taken to be rounding).
+    half first, at most :data:`TURN_READS` readings in all.
+
+    Raises
+    ------
+    _Unsettled
+        The readings spent with a half still neither cleared nor crossed (a possible crossing left unread).
     """
     pending = [(low, high, before, after)]
     for _ in range(TURN_READS):
@@ -326,12 +364,16 @@ def _turn_between(event, direction: float, low: float, high: float, before: floa
         if _crossed(value, after, direction):
             return middle, high
         half = abs(middle - low)
+        if not half * half > 0.0:  # (a half of no length, to rounding: nothing between its readings)
+            continue
         bound = CURVATURE_SAFETY * abs(before - 2.0 * value + after) / (half * half)
-        if not bound < math.inf:  # (a half of no length, to rounding)
+        if not bound < math.inf:  # (an overflow: the curvature read off rounding)
             continue
         halves = [(low, middle, before, value), (middle, high, value, after)]
         pending += [piece for piece in reversed(halves) if not _clear(piece[2], piece[3], half, bound)]
-    return None
+    if not pending:
+        return None
+    raise _Unsettled(f"{len(pending)} half(s) uncleared after {TURN_READS} readings")
 
 
 def _checked(marched: Marched) -> Marched:

@@ -135,15 +135,15 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
         problem = graded_problem(integrator, grading, events, MIN_STEPS_PER_SPAN)
     tolerances = model.tolerances
     primitive = integrator.primitive() if grading is None else None
-    if primitive is not None:  # (no front through the anchors: the force in closed form, :mod:`.closed_form`)
-        solution = closed_span(primitive, problem.start, problem.stop, force, integrator.G2, integrator.scale,
-                               problem.knots, problem.events)
-    elif integrator.quadrature:  # (a right-hand side and events of the variable alone: a quadrature by panels)
+    # (no front through the anchors: the force in closed form, :mod:`.closed_form`; None: an event it left unsettled)
+    solution = None if primitive is None else closed_span(primitive, problem.start, problem.stop, force, integrator.G2,
+                                                          integrator.scale, problem.knots, problem.events)
+    if solution is None and integrator.quadrature:  # (a right-hand side and events of the variable alone: panels)
         pieces = list(zip([problem.start, *problem.knots], [*problem.knots, problem.stop]))
         # (between knots, pieces of ~1/120 of a span on a 41-point table: a rule of fewer points is exact enough)
         solution = panels(problem.rhs, pieces, force, problem.events, tolerances.rtol, tolerances.atol,
                           problem.max_step, rule(PIECE_NODES if problem.knots else NODES))
-    else:
+    elif solution is None:
         solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, problem.events,
                                        tolerances, problem.max_step)
     if solution.status < 0:

@@ -26,7 +26,7 @@ from mdr_events.theory.layer.tables import LAMBDA_MIN
 from mdr_events.theory import symbolic
 from mdr_events.theory.layer_continuum_symbolic import derive_continuum_model
 
-from .branch import FOLD_SHARE, Branch, IteratedSamples
+from .branch import FOLD_SHARE, Branch
 
 __all__ = ["LayerBranch", "ROOT_ITERATIONS", "RADII_RTOL", "NEWTON_SHARE"]
 
@@ -49,7 +49,7 @@ START_SCAN_FLOOR = 1e-6
 _SCAN_PER_DECADE = 5
 
 
-class LayerBranch(IteratedSamples, Branch):
+class LayerBranch(Branch):
     r"""The branch of work ``work`` of a paraboloid or power law on ``layer``: depth, slope, integral of a radius,
     radius of a depth.
 

@@ -432,6 +432,9 @@ EXTREMUM_QUANTITIES = ("normal_force", "tangential_force", "contact_radius", "co
 EXTREMUM_GRID = 65
 #: Values within this share of the extremum are ties (rounding), of which :func:`extremum` reports the earliest.
 EXTREMUM_TIE = 1e-12
+#: Span-relative time accuracy of the refined extremum; the value is then exact to rounding
+#: (it is flat there: its error is second order in the time error).
+EXTREMUM_XTOL = 1e-12
 
 
 def within_tie(value: float, best: float, size: float) -> bool:
@@ -454,9 +457,6 @@ def within_tie(value: float, best: float, size: float) -> bool:
         ``True`` if ``value >= best − EXTREMUM_TIE · max(size, |best|)``.
     """
     return value >= best - EXTREMUM_TIE * max(size, abs(best))
-#: Span-relative time accuracy of the refined extremum; the value is then exact to rounding
-#: (it is flat there: its error is second order in the time error).
-EXTREMUM_XTOL = 1e-12
 
 
 def _quantity(filled: dict[str, np.ndarray], quantity: str) -> np.ndarray:

@@ -181,7 +181,11 @@ def interpolant_roots(interpolant, low: float, high: float) -> list[float]:
     Raises
     ------
     TypeError
-        An interpolant of another type (none is made).
+        An interpolant of another type: none is made, since every source of ``span.interpolant``
+        (:func:`~.integrate.integrate_span`) gives one of the three (the panels of :mod:`.span_panels` and the steps of
+        :mod:`.span_march` an ``OdeSolution``, :func:`~.closed_form.closed_span` a ``ClosedForce``, a linear span a
+        ``LinearForce``; a constant force none, which :func:`stationary_points` skips); the error is a bug, raised
+        through :func:`~.solution.extremum`.
     """
     raise TypeError(f"interpolant={interpolant!r} is not allowed; allowed: an OdeSolution, a ClosedForce or a "
                     "LinearForce")
