@@ -83,7 +83,7 @@ def test_the_cli_refuses_a_face_beyond_the_tables_in_one_line(capsys, tmp_path):
 # --- V3: grids read before they are counted, where round twenty-one's limits.values_in did not reach. d_crit on a
 # layer validated (copied) its angles before the onsets' limits refused them; simulate's angles (~7 copies: 54 MiB
 # for 1e6 angles, 5 GB for 1e8 against the 2 GiB limit) and its continuum output times t (~3 copies) are read by the
-# motion and the method before the run's case count is checked: xfail below until they are counted first ---------
+# motion and the method before the run's case count was checked. simulation_job counts them first ---------
 
 #: Values in the grid, and the least a reading of it allocates (one float per value: the conversion's copy).
 GRID = 10**6
@@ -118,8 +118,6 @@ def test_d_crit_on_a_layer_counts_its_angles_before_reading_them():
     assert peak < ONE_COPY, f"{peak / 2**20:.1f} MiB before the refusal"
 
 
-@pytest.mark.xfail(strict=True, reason="round twenty-two V3 (open): simulate reads its angles (Scenario) and its "
-                                       "output times (Continuum(t=...)) before the run's case count is checked")
 @pytest.mark.parametrize("grid", ["alpha", "t"])
 def test_simulate_counts_its_grids_before_reading_them(grid):
     if grid == "alpha":
