@@ -25,7 +25,7 @@ import xarray as xr
 from mdr_events.contact.adhesion import RateDependentAdhesion, adhesion_attrs
 from mdr_events.contact.friction import FrictionLaw, friction_attrs
 from mdr_events.contact.model import Contact
-from mdr_events.limits import Limits
+from mdr_events.limits import Limits, values_in
 from mdr_events.models import indenters
 from mdr_events.models.continuum import PathSolution, Tolerances, run_continuum, solve_path
 from mdr_events.models.continuum.rate_reference import RateSolution, solve_rate_reference
@@ -46,8 +46,8 @@ from mdr_events.models.paths import Path
 from mdr_events.models.simulation_schema import SIMULATION_CONTENT, continuum_dataset, simulation_dataset
 from mdr_events.validation import MAX_COUNT, check_count, check_output_times, check_real, shown
 
-__all__ = ["Discrete", "Continuum", "Method", "METHODS", "as_method", "check_time_step", "DEFAULT_DX",
-           "DEFAULT_STEPS", "DEFAULT_SAMPLES", "MIN_STEPS_PER_SEGMENT", "exact_solution",
+__all__ = ["Discrete", "Continuum", "Method", "METHODS", "as_method", "check_counted_first", "check_time_step",
+           "DEFAULT_DX", "DEFAULT_STEPS", "DEFAULT_SAMPLES", "MIN_STEPS_PER_SEGMENT", "exact_solution",
            "check_exact_solution"]
 
 DEFAULT_DX = 1e-6
@@ -541,3 +541,35 @@ def as_method(method, options: Mapping[str, Any] | None = None) -> Method:
         if name not in own:
             raise ValueError(f"{name} is not allowed with method={method!r}; allowed: {', '.join(own)}")
     return kind(**given)
+
+
+def check_counted_first(method, options: Mapping[str, Any], count: int, limits: Limits) -> None:
+    """The run of ``count`` cases by ``method`` (a name with ``options``, or a method) checked against ``limits``
+    before its grids are read: the continuum's output times ``t`` counted (:func:`~mdr_events.limits.values_in`),
+    not converted (round twenty-two: 1e8 times were copied ~3 times, 2.4 GB, before the count refused them). The
+    caller counts the cases likewise, before the angles are read; ``count`` may be a lower bound (the limits grow
+    with it), the exact count checked again once the motion is built (``check_case_count``).
+
+    Parameters
+    ----------
+    method : str, Discrete or Continuum
+        The method, by name or as a value.
+    options : mapping of str to object
+        The method's options beside its name.
+    count : int
+        The cases of the run, or fewer.
+    limits : Limits
+        What the run may use.
+
+    Raises
+    ------
+    ResourceLimitError
+        The output times or the memory of the run beyond ``limits``.
+    ValueError
+        What :func:`as_method` refuses.
+    """
+    times = options.get("t")
+    if isinstance(method, str) and method == Continuum.name and times is not None:
+        check_output(limits, count, values_in(times), CONTINUUM_BYTES_PER_SAMPLE)
+    else:
+        as_method(method, options).check_case_count(count, limits)

@@ -17,10 +17,10 @@ import xarray as xr
 from mdr_events.contact import Contact
 from mdr_events.contact.model import check_half_space
 from mdr_events.contact.friction import as_friction_law
-from mdr_events.limits import Limits, check_limits
+from mdr_events.limits import Limits, check_limits, values_in
 from mdr_events.models import indenters
 from mdr_events.models.job import ModelJob
-from mdr_events.models.methods import METHODS, Continuum, Discrete, Method, as_method
+from mdr_events.models.methods import METHODS, Continuum, Discrete, Method, as_method, check_counted_first
 from mdr_events.models.motion import Motion, Paths, Scenario, as_motion
 from mdr_events.models.paths import Path
 from mdr_events.models.spring_media import springs_of
@@ -29,6 +29,8 @@ from mdr_events.theory.job import contact_alone
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import shown
 
+#: The keywords of before that ``model_job`` takes out of the options beside a :class:`~mdr_events.Parameters`.
+MODEL_OPTIONS = ("profile", "friction")
 #: The method of simulate unless given: the paper's springs.
 DEFAULT_METHOD = "discrete"
 
@@ -47,7 +49,7 @@ def model_job(contact, motion, alpha, options: dict[str, Any]) -> ModelJob:
     :class:`~mdr_events.Contact` with a motion; or the keywords of before, a :class:`~mdr_events.Parameters` (its
     ``d_max`` and ``v`` the motion's) with ``profile`` and ``friction`` taken out of ``options``, whose results keep
     its attributes as they were (``param_R`` beside a profile). The one place the keywords are converted."""
-    indenter, law = options.pop("profile", None), options.pop("friction", None)
+    indenter, law = (options.pop(name, None) for name in MODEL_OPTIONS)
     if isinstance(contact, Parameters):
         if isinstance(motion, (Scenario, Paths)):  # (the Parameters' d_max and v were named as if given beside it)
             raise ValueError(f"motion={motion!r} is not allowed beside a Parameters, whose d_max and v are a motion of "
@@ -68,13 +70,18 @@ def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any], l
     """The job of ``simulate(contact, motion, alpha, method, **options)``: :func:`model_job`, and the method by name
     with the remaining options (:func:`~mdr_events.models.methods.as_method`), its cases counted against ``limits``
     before the layer's check builds them (round twenty-two: 1e6 angles on a layer were built, minutes and a GiB,
-    before the count refused them)."""
+    before the count refused them), and before the angles ``alpha`` and the continuum's times ``t`` are read: counted
+    (:func:`~mdr_events.limits.values_in`) first (round twenty-two: 1e8 angles were copied ~7 times, 5 GB, before the
+    count refused them)."""
     options = dict(options)
     if isinstance(alpha, (Discrete, Continuum)) or (isinstance(alpha, str) and alpha in METHODS):
         if method is not None:  # simulate(contact, motion, method): the third argument is the method
             raise ValueError(f"method={shown(method)} is not allowed beside the method {shown(alpha)} given third; "
                              "allowed: one method")
         alpha, method = None, alpha
+    unread = values_in(alpha) if alpha is not None else getattr(motion, "case_count", 1)  # (a lower bound, unread)
+    own = {name: value for name, value in options.items() if name not in MODEL_OPTIONS}
+    check_counted_first(DEFAULT_METHOD if method is None else method, own, unread, limits)
     model = model_job(contact, motion, alpha, options)
     the_method = as_method(DEFAULT_METHOD if method is None else method, options)
     the_method.check_case_count(model.motion.case_count, limits)  # (before the cases are built: each takes its theory)

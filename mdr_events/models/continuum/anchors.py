@@ -204,16 +204,22 @@ class AnchorMap:
             self._set_last(dataclasses.replace(self.pieces[-1], end=end))
 
     def truncate(self, radius: float) -> None:
-        """Forget the springs beyond ``radius`` (they have detached).
+        """Forget the springs beyond ``radius`` (they have detached), and a piece that starts at ``radius``: it holds
+        none (as ``SplitAnchorMap.truncate`` does). Such a piece is left by a
+        growth that stopped where it started (a growing span of an ulp, up to a corner's time, before a pinned one);
+        kept, its value at the edge was the layout's target on a pinned span, whose edge never reaches into it: the
+        level met that target, the layout saw no spring there, and the event fired again at every restart ("made no
+        progress", round twenty-two V5).
 
         Parameters
         ----------
         radius : float
             The contact radius (m).
         """
-        if self.pieces and self.pieces[-1].end > radius:
+        pieces = self.pieces
+        if pieces and (pieces[-1].end > radius or (len(pieces) > 1 and pieces[-1].start >= radius)):
             self.pieces = [p if p.end <= radius else dataclasses.replace(p, end=radius)
-                           for p in self.pieces if p.start < radius]
+                           for p in pieces if p.start < radius]
             self._shared = 0
 
     def drop_edge_piece(self, radius: float) -> None:
