@@ -160,8 +160,24 @@ class ScalarPiecewise:
         self.breaks = [float(value) for value in poly.x]
         self.pieces = [tuple(float(c) for c in column) for column in poly.c.T]
 
+    def index(self, a: float) -> int:
+        """The piece of ``a``.
+
+        Parameters
+        ----------
+        a : float
+            The abscissa.
+
+        Returns
+        -------
+        int
+            The index of its piece: the first below the breaks' start, the last beyond their end (and at ``nan``).
+        """
+        # (bisection between the second break and the last piece's start: the clamped index without min/max)
+        return bisect.bisect_right(self.breaks, a, 1, len(self.pieces)) - 1
+
     def __call__(self, a: float) -> float:
-        index = min(max(bisect.bisect_right(self.breaks, a) - 1, 0), len(self.pieces) - 1)
+        index = bisect.bisect_right(self.breaks, a, 1, len(self.pieces)) - 1
         offset = a - self.breaks[index]
         value = 0.0
         for coefficient in self.pieces[index]:
@@ -233,6 +249,7 @@ class TabulatedBranch:
         self.shape = equivalent(profile)
         self.k = power_law.hess_prefactor(params, work_of_adhesion)
         self.E_star = params.E_star
+        self._x_max = self.shape.x_max
         grid = self.shape.grid
         depths = self.shape.values - self.k * np.sqrt(grid)
         lowest = int(np.argmin(depths))
@@ -270,7 +287,8 @@ class TabulatedBranch:
         """
         if not a > 0:
             return 0.0
-        a = self.shape.inside(a)
+        if a > self._x_max:  # (the end check only past the table: most radii are inside)
+            a = self.shape.inside(a)
         return self.shape.scalar_g(a) - self.k * math.sqrt(a)
 
     def depths(self, a: np.ndarray) -> np.ndarray:
@@ -304,7 +322,8 @@ class TabulatedBranch:
             The slope (1); at ``a <= 0``: ``-inf`` with adhesion, ``g'(0)`` without; ``nan`` further past the table.
         """
         if a > 0:
-            a = self.shape.inside(a)
+            if a > self._x_max:
+                a = self.shape.inside(a)
             return self.shape.scalar_slope(a) - 0.5 * self.k / math.sqrt(a)
         return -math.inf if self.k > 0 else self.shape.scalar_slope(0.0)
 
@@ -324,7 +343,8 @@ class TabulatedBranch:
         """
         if not a > 0:
             return 0.0
-        a = self.shape.inside(a)
+        if a > self._x_max:
+            a = self.shape.inside(a)
         return self.shape.scalar_integral(a) - 2.0 / 3.0 * self.k * a**1.5
 
     def radius(self, depth: float, rtol: float = RADIUS_RTOL) -> float:
@@ -362,7 +382,7 @@ class TabulatedBranch:
         share = (depth - d_low) / (d_high - d_low)
         a = low + (math.sqrt(share) if above == 1 and self.k > 0.0 else share) * (high - low)
         g, slope = self.shape.scalar_g, self.shape.scalar_slope
-        index = min(max(bisect.bisect_right(g.breaks, low) - 1, 0), len(g.pieces) - 1)
+        index = g.index(low)
         start, values, rates = g.breaks[index], g.pieces[index], slope.pieces[index]
         for _ in range(MAX_INVERSION_STEPS):
             offset, root = a - start, math.sqrt(a)
