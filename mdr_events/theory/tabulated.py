@@ -383,14 +383,14 @@ class TabulatedBranch:
         a = low + (math.sqrt(share) if above == 1 and self.k > 0.0 else share) * (high - low)
         g, slope = self.shape.scalar_g, self.shape.scalar_slope
         index = g.index(low)
-        start, values, rates = g.breaks[index], g.pieces[index], slope.pieces[index]
+        start = g.breaks[index]
+        # a PCHIP's piece is a cubic, its slope's a quadratic: Horner's steps written out, as ScalarPiecewise's loop
+        # takes them from 0.0 (the same operations, bit for bit)
+        (c0, c1, c2, c3), (s0, s1, s2) = g.pieces[index], slope.pieces[index]
         for _ in range(MAX_INVERSION_STEPS):
             offset, root = a - start, math.sqrt(a)
-            value = rate = 0.0
-            for coefficient in values:
-                value = value * offset + coefficient
-            for coefficient in rates:
-                rate = rate * offset + coefficient
+            value = (((0.0 * offset + c0) * offset + c1) * offset + c2) * offset + c3
+            rate = ((0.0 * offset + s0) * offset + s1) * offset + s2
             excess = value - self.k * root - depth
             if excess == 0.0:
                 return a

@@ -431,6 +431,9 @@ class TabulatedBranch(Branch):
     def __init__(self, params: Parameters, work: float, profile: TabulatedProfile):
         self.params, self.work, self.profile = params, work, profile
         self.line = tabulated.branch(profile, params, work)
+        # the scalar three straight from the table's branch, bound once (the methods below say the same; the
+        # continuum reads them some 5000 times a run, where each call through this class cost a frame)
+        self.depth, self.slope, self.integral = self.line.depth, self.line.slope, self.line.integral
         self.jump_off_radius, self.jump_off_depth = self.line.jump_off_radius, self.line.jump_off_depth
         self._floor = math.sqrt(self.jump_off_radius)
         self._g = self.line.shape.g
