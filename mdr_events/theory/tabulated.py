@@ -159,6 +159,7 @@ class ScalarPiecewise:
     def __init__(self, poly: interpolate.PPoly):
         self.breaks = [float(value) for value in poly.x]
         self.pieces = [tuple(float(c) for c in column) for column in poly.c.T]
+        self._count = len(self.pieces)
 
     def index(self, a: float) -> int:
         """The piece of ``a``.
@@ -174,11 +175,12 @@ class ScalarPiecewise:
             The index of its piece: the first below the breaks' start, the last beyond their end (and at ``nan``).
         """
         # (bisection between the second break and the last piece's start: the clamped index without min/max)
-        return bisect.bisect_right(self.breaks, a, 1, len(self.pieces)) - 1
+        return bisect.bisect_right(self.breaks, a, 1, self._count) - 1
 
     def __call__(self, a: float) -> float:
-        index = bisect.bisect_right(self.breaks, a, 1, len(self.pieces)) - 1
-        offset = a - self.breaks[index]
+        breaks = self.breaks
+        index = bisect.bisect_right(breaks, a, 1, self._count) - 1
+        offset = a - breaks[index]
         value = 0.0
         for coefficient in self.pieces[index]:
             value = value * offset + coefficient
