@@ -273,6 +273,7 @@ class TabulatedBranch:
         # the branch's depths at the grid radii above the jump-off, increasing: a depth's bracket by bisection
         self._radii = [self.jump_off_radius] + [float(a) for a in grid[grid > self.jump_off_radius]]
         self._depths = [self.depth(a) for a in self._radii]
+        self._last = len(self._depths) - 1
 
     def depth(self, a: float) -> float:
         """The branch's depth ``d(a) = g(a) − k √a`` at the radius ``a``, one Python float.
@@ -368,7 +369,7 @@ class TabulatedBranch:
             return math.nan
         if depth == self.jump_off_depth:
             return self.jump_off_radius
-        above = min(bisect.bisect_left(self._depths, depth), len(self._depths) - 1)
+        above = bisect.bisect_left(self._depths, depth, 0, self._last)  # (at most the last: no min)
         if self._depths[above] == depth:
             return self._radii[above]
         return self._invert(depth, max(above, 1), max(rtol, RADIUS_RTOL))
