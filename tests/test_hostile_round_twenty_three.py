@@ -11,11 +11,17 @@ closing note; what failed is below.
 
 from __future__ import annotations
 
+import errno
+import io
+import os
+import sys
+
 import numpy as np
 import pytest
 
 import mdr_events as me
 from hostile_checks import cli_one_line, one_line_naming
+from mdr_events.app.cli import EXIT_BROKEN_PIPE, main
 
 PAPER = me.Parameters.paper()
 #: The face's radius (m); the layers below put it beyond a/h = 64 (the tables' last ratio) by a few percent and by
@@ -51,3 +57,40 @@ def test_cli_discrete_punch_on_a_thin_layer_is_one_line(capsys, tmp_path):
     err = cli_one_line(capsys, ["simulate", "--scenario", "B", "--alpha", "20", "--flat-punch", str(FACE),
                                 "--h", "1e-9", "--out", str(tmp_path)])
     assert "discrete method" in err and "a/h = 64" in err, err
+
+
+# --- V2: the standard output's write errors: `mdr-events derive > /dev/full` (and `simulate ... > /dev/full`, after
+# its files were written) printed "mdr-events: error: [Errno 28] No space left on device", not naming what could not
+# be written. The command's stdout names itself in its errors, flushed before the command ends ----------------------
+
+class _FullDevice(io.StringIO):
+    """A standard output on a full device: every write fails as /dev/full's (ENOSPC)."""
+
+    def write(self, text: str) -> int:
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+
+class _FullOnFlush(io.StringIO):
+    """A buffered standard output whose writes succeed and whose flush fails (the text met the device there)."""
+
+    def flush(self) -> None:
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+
+@pytest.mark.parametrize("stream", [_FullDevice, _FullOnFlush])
+def test_cli_standard_output_full_is_named(capsys, monkeypatch, stream):
+    monkeypatch.setattr(sys, "stdout", stream())
+    err = cli_one_line(capsys, ["derive", "--key", "hertz_normal_force"])
+    assert "<standard output>" in err and "No space left on device" in err and "allowed" in err, err
+
+
+def test_cli_broken_pipe_still_silent(capsys, monkeypatch):
+    """The closed pipe (`| head`) stays silent with 141 (the write errors' naming leaves BrokenPipeError alone)."""
+
+    class _Gone(io.StringIO):
+        def write(self, text: str) -> int:
+            raise BrokenPipeError(errno.EPIPE, os.strerror(errno.EPIPE))
+
+    monkeypatch.setattr(sys, "stdout", _Gone())
+    assert main(["derive", "--key", "hertz_normal_force"]) == EXIT_BROKEN_PIPE
+    assert capsys.readouterr().err == ""
