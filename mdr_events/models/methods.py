@@ -44,6 +44,8 @@ from mdr_events.models.job import ModelJob
 from mdr_events.models.motion import Cases
 from mdr_events.models.paths import Path
 from mdr_events.models.simulation_schema import SIMULATION_CONTENT, continuum_dataset, simulation_dataset
+from mdr_events.theory.kinds import theory_of
+from mdr_events.theory.layer.punch_onset import check_punch_face
 from mdr_events.validation import MAX_COUNT, check_count, check_output_times, check_real, shown
 
 __all__ = ["Discrete", "Continuum", "Method", "METHODS", "as_method", "check_counted_first", "check_time_step",
@@ -111,14 +113,25 @@ class Discrete:
         check_thresholds_known(model.adhesion)
 
     def check_layer(self, contact: Contact) -> None:
-        """Nothing beyond what the springs take (:meth:`~mdr_events.models.spring_media.LayerSprings.check`): every
-        friction law runs on a layer.
+        """Every friction law runs on a layer (what the springs take:
+        :meth:`~mdr_events.models.spring_media.LayerSprings.check`); a flat punch's face within the layer's tables,
+        refused beyond them in the continuum's words
+        (:func:`~mdr_events.theory.layer.punch_onset.check_punch_face`; round twenty-three: ``--h 1e-9`` under a
+        1 mm punch raised numpy's "attempt to get argmin of an empty sequence" from the springs' count, a face just
+        beyond the tables was told "a smaller dx", which cannot help).
 
         Parameters
         ----------
         contact : Contact
             The physical model, on a layer of finite thickness.
+
+        Raises
+        ------
+        ValueError
+            A flat punch whose face exceeds ``a/h = 64``.
         """
+        if theory_of(contact.profile).flat_face:  # (its contact radius is the face's from the first touch on)
+            check_punch_face(contact.profile, contact.layer, "the discrete method")
 
     def check_case_count(self, count: int, limits: Limits) -> None:
         """The least a run of ``count`` cases takes, checked before they are built (a million angles were built, for

@@ -43,6 +43,7 @@ from typing import Sequence
 from mdr_events._version import __version__
 from mdr_events.app.cli import derive, fit, lammps_check, phase_diagram, reproduce, run, simulate, sweep, validate
 from mdr_events.app.cli._options import Parser, UsageError
+from mdr_events.app.cli._stdout import stdout_named
 from mdr_events.app.console import INTERRUPTED_LINES
 
 __all__ = ["main", "console_main", "build_parser", "UsageError", "EXIT_STATUSES", "VERBS"]
@@ -314,7 +315,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             import matplotlib
 
             matplotlib.use("Agg")  # the CLI writes figures to files only: no window, whatever the user's default
-        status = args.run(args)
+        with stdout_named():  # (its write errors name it; flushed here, not at the interpreter's exit)
+            status = args.run(args)
         swallowed.settle()
         if swallowed.interrupts:  # the interpreter swallowed it (garbage collection): the command was interrupted
             raise swallowed.interrupts[0]
