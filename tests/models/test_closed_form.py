@@ -323,3 +323,102 @@ def test_no_closed_form_span_watches_the_zone_leaving_the_edge(case, monkeypatch
     zone = SimpleNamespace(edge_front_outward=True)
     with pytest.raises(RuntimeError, match="holds a front"):
         span_primitive(SimpleNamespace(K=1.0, kappa=0.0, segment=None, zones={Cap.POSITIVE: zone, Cap.NEGATIVE: zone}))
+
+
+#: The shape of an event its readings settle, sampled at SHAPE_SAMPLES points of its span: each sample within this
+#: share of the function's range (plus its largest magnitude) of what the proof gives (a chord's side, a monotone
+#: step). The functions' rounding is some ulp of the lengths they subtract (x, K a, the offset: mm), far below; a turn
+#: the proof missed would show as the curvature times the samples' spacing squared, ~1/SHAPE_SAMPLES² of the range.
+SHAPE_SHARE = 1e-9
+SHAPE_SAMPLES = 65
+#: The paper's adhesion (Δγ1 > Δγ0), in at 20° to d_max and back out along the same line: the shrinking span's edge is
+#: its own target there (``c − K a + |β|√a``, which can be concave: the kind of event the guard was added for,
+#: ``test_an_event_that_turns_back_between_two_readings_is_found``)
+BACK_ALONG_THE_LINE = (PAPER, me.Path([(0.0, 0.0), (PAPER.d_max / np.tan(np.radians(20.0)), PAPER.d_max), (0.0, 0.0)],
+                                      PAPER.v), {})
+
+
+def _settled_shapes(params, path, options, monkeypatch):
+    """Each closed-form span's events as ``(trigger, direction, settled, edge is the target, times, values)`` at
+    :data:`SHAPE_SAMPLES` points of the span's variable, read before the transition changes the anchors."""
+    found = []
+    original = integrate._integrate
+
+    def spy(model, span, integrator, force):
+        if integrator.primitive() is not None and integrator.grading() is None and not integrator.met_at_start():
+            var = np.linspace(integrator.start, integrator.stop, SHAPE_SAMPLES)
+            times = np.array([integrator.time_of(v) for v in var])
+            for event in integrator.event_functions():
+                edge = event.cap is not None and integrator.zones[event.cap].edge_is_target
+                found.append((event.trigger, event.direction, event.settled, edge, times,
+                              np.array([event(v) for v in var])))
+        return original(model, span, integrator, force)
+
+    monkeypatch.setattr(integrate, "_integrate", spy)
+    solve_path(params, path, **options)
+    return found
+
+
+def _shape_holds(direction, times, values, monotone):
+    """Whether ``values`` at ``times`` are monotone (``monotone``), else convex in time (direction +1) or concave
+    (−1), within :data:`SHAPE_SHARE`."""
+    tolerance = SHAPE_SHARE * (np.ptp(values) + np.max(np.abs(values)))
+    if monotone:
+        steps = np.diff(values)
+        return bool(np.all(steps >= -tolerance) or np.all(steps <= tolerance))
+    left, middle, right = times[:-2], times[1:-1], times[2:]
+    chord = values[:-2] + (values[2:] - values[:-2]) * (middle - left) / (right - left)
+    return bool(np.all(direction * (chord - values[1:-1]) >= -tolerance))
+
+
+@pytest.mark.parametrize("case", [*CASES, "back along the line"])
+def test_each_settled_event_has_the_shape_its_proof_gives(case, monkeypatch):
+    """The events a closed-form span does not read between its readings (``settled``,
+    :meth:`~mdr_events.models.continuum.span.SpanIntegrator.levels_convex`) have the shape that rules out a hidden
+    crossing, sampled along each span: the level's turn and the edge passing a piece monotone, a level against a fixed
+    target convex in time (direction +1). The edge's own target is never settled (the back-and-forth path holds one,
+    concave: the guard's case), nor any event on a table's branch or a layer (no proof there)."""
+    from mdr_events.models.continuum.span import Trigger
+
+    params, path, options = BACK_ALONG_THE_LINE if case == "back along the line" else CASES[case]()
+    found = _settled_shapes(params, path, options, monkeypatch)
+    assert found
+    monotone = {Trigger.LEVEL_TURNS, Trigger.EDGE_PASSES_PIECE}
+    for trigger, direction, settled, edge, times, values in found:
+        if settled:
+            assert _shape_holds(direction, times, values, trigger in monotone), (trigger, values)
+        assert not (settled and edge), trigger
+        if "table" in case or "layer" in case:
+            assert settled == (trigger is Trigger.EDGE_PASSES_PIECE), trigger
+    if case == "back along the line":  # (the guard's kind of event met in a run: the edge's own target, guarded)
+        assert any(edge and not settled for _, _, settled, edge, _, _ in found)
+
+
+@pytest.mark.parametrize("settled", [False, True])
+def test_the_guard_reads_between_the_readings_only_the_events_not_settled(settled):
+    """The edge's target turning back inside the middle part (as in
+    ``test_an_event_that_turns_back_between_two_readings_is_found``), as the span's ``EventFunction``: not settled
+    (what :meth:`~mdr_events.models.continuum.span.SpanIntegrator.event_functions` makes of the edge's own target)
+    the guard finds its root; marked settled, the closed form reads it at its readings alone and runs to the span's
+    end (which is why only a proof may settle an event)."""
+    from mdr_events.models.continuum.branch import Branch
+    from mdr_events.models.continuum.closed_form import EVENT_READINGS, Primitive, closed_span
+    from mdr_events.models.continuum.span import EventFunction, Trigger
+    from mdr_events.models.continuum.state import Cap
+
+    k0, k1 = (np.sqrt(2 * np.pi * work / PAPER.E_star) for work in (PAPER.dgamma0, PAPER.dgamma1))
+    beta, scale, start, stop = np.tan(np.radians(20.0)) * (k1 - k0), 1e-3, 1.0, 0.5
+    peak = start - 7.5 * (start - stop) / EVENT_READINGS  # (the middle of the eighth part)
+    K = beta / (2 * np.sqrt(peak * scale))  # (the turn there, positive over a quarter of the part)
+    height = 0.25 * beta / (8 * (peak * scale) ** 1.5) * (0.5 * (start - stop) / EVENT_READINGS * scale) ** 2
+    c = K * peak * scale - beta * np.sqrt(peak * scale) + height
+    event = EventFunction(Trigger.ZONE_REACHES, Cap.POSITIVE, lambda var: c - K * var * scale + beta * np.sqrt(
+        var * scale), 1.0, settled)
+    s = (beta + np.sqrt(beta**2 + 4 * K * c)) / (2 * K)
+    branch = Branch(PAPER, PAPER.dgamma1)
+    marched = closed_span(Primitive(branch, branch, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), start, stop, 0.0, 1.0, scale, [],
+                          [event])
+    if settled:
+        assert marched.status == 0 and marched.t_events == [[]]
+    else:
+        assert marched.status == 1 and marched.t_events[0] == [pytest.approx(s * s / scale, rel=EVENT_RTOL)]

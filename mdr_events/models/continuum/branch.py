@@ -60,14 +60,20 @@ class Branch:
     #: branch); every subclass is ``False`` unless it sets it in its own body (:meth:`__init_subclass__`), so that
     #: a branch of another indenter samples by its own :meth:`radii`
     quartic_samples = True
+    #: whether ``d(a)`` is convex above the jump-off (the paraboloid's ``a²/R − k√a``: both terms convex), so that the
+    #: radius is concave in the depth and a closed-form span's readings of its events settle them
+    #: (:mod:`.closed_form`); ``False`` for every subclass unless it sets it (:meth:`__init_subclass__`; a power law
+    #: sets ``n >= 1`` for its instance)
+    convex = True
     #: the NumPy form of ``dd/da`` (:meth:`slopes`; ``None``: a branch without one, read point by point)
     _slopes = None
 
     def __init_subclass__(cls, **kwargs):
-        """A subclass's :attr:`quartic_samples` is ``False`` unless its own body declares it (fails closed: a new
-        branch type never inherits the paraboloid's closed form)."""
+        """A subclass's :attr:`quartic_samples` and :attr:`convex` are ``False`` unless its own body declares them
+        (fails closed: a new branch type never inherits the paraboloid's closed form, nor its convexity)."""
         super().__init_subclass__(**kwargs)
         cls.quartic_samples = bool(cls.__dict__.get("quartic_samples", False))
+        cls.convex = bool(cls.__dict__.get("convex", False))
     #: the NumPy form of ``∫_0^a d dξ`` (:meth:`integrals`; ``None``: a branch without one, read point by point)
     _integrals = None
 
@@ -338,6 +344,8 @@ class PowerLawBranch(Branch):
         self._hess = power_law.hess_prefactor(params, work)
         self._exponent = 2.0 * profile.n
         self.tip_power = float(profile.n)
+        # (κ c aⁿ is convex for n >= 1, and −k√a always: d convex; below 1 the tip's aⁿ is concave)
+        self.convex = profile.n >= 1.0
 
     def slope(self, a: float) -> float:
         if a > 0:

@@ -42,6 +42,9 @@ class LayerMedium(HalfSpaceMedium):
         The layer (finite thickness).
     """
 
+    #: ``ū = K a/Φ_t(a/h)`` is not linear in the radius (:attr:`~.media.HalfSpaceMedium.linear_cap`)
+    linear_cap = False
+
     def __init__(self, params: Parameters, indenter, layer: Layer):
         from mdr_events.theory.layer.scalar_factors import NormalFactors
         from mdr_events.theory.layer_continuum_symbolic import derive_continuum_model

@@ -48,6 +48,10 @@ FACTOR_CACHE = 256
 class HalfSpaceMedium:
     """The half-space: every spring alike (``G*`` per length), the cap ``K a`` (13), the paper's branches (9)."""
 
+    #: whether the cap ``ū(a)`` is linear in the radius (``K a``): with a convex branch, the closed-form span's
+    #: levels against a fixed target are convex in time and their rates monotone (:mod:`.closed_form`)
+    linear_cap = True
+
     def shift(self, K: float, a: float) -> float:
         """The cap of ``τ0``'s part at radius ``a``: ``K a`` (13).
 

@@ -140,14 +140,21 @@ class SpanOutcome(NamedTuple):
 
 
 class EventFunction:
-    """A terminal event function for ``solve_ivp``: ``function(var, y)`` crossing zero in ``direction``."""
+    """A terminal event function for ``solve_ivp``: ``function(var, y)`` crossing zero in ``direction``.
+
+    ``settled``: its readings settle it, no crossing hides between two of them (it is monotone there, or convex with
+    direction +1, concave with −1: :mod:`.closed_form`, which reads between the readings only the events not
+    settled; default ``False``).
+    """
 
     terminal = True
 
-    def __init__(self, trigger: Trigger, cap: Cap | None, function: Callable[[float], float], direction: float):
+    def __init__(self, trigger: Trigger, cap: Cap | None, function: Callable[[float], float], direction: float,
+                 settled: bool = False):
         self.trigger, self.cap = trigger, cap
         self.function = function
         self.direction = direction
+        self.settled = settled
 
     @property
     def key(self) -> Fired:
@@ -554,18 +561,38 @@ class SpanIntegrator:
         list of EventFunction
             Terminal event functions for ``solve_ivp``, each with its trigger and cap.
         """
-        events = []
+        events, convex = [], self.levels_convex()
         for cap in Cap:
             zone = self.zones[cap]
             if zone.target(self.a0) < float("inf") and (self.sliding[cap] or self.may_push(cap)):
-                events.append(EventFunction(Trigger.ZONE_REACHES, cap, self.reaches(cap), 1.0))
+                # (a fixed target: the level's convex L(t) − ū(a(t)) against a constant; the edge's own is not)
+                settled = convex and not zone.edge_is_target
+                events.append(EventFunction(Trigger.ZONE_REACHES, cap, self.reaches(cap), 1.0, settled))
             if self.sliding[cap] and self.shrinking and zone.edge_front_outward:
                 events.append(EventFunction(Trigger.ZONE_LEAVES_EDGE, cap, self.leaves_edge(cap), 1.0))
-            if self.sliding[cap] and self.moving:
-                events.append(EventFunction(Trigger.LEVEL_TURNS, cap, self.turns(cap), -1.0))
-        if self.shrinking and self.edge_start > 0.0:
-            events.append(EventFunction(Trigger.EDGE_PASSES_PIECE, None, self.passes_piece, -1.0))
+            if self.sliding[cap] and self.moving:  # (∂d/∂a monotone in the radius on a convex branch, ū' = K)
+                events.append(EventFunction(Trigger.LEVEL_TURNS, cap, self.turns(cap), -1.0, convex))
+        if self.shrinking and self.edge_start > 0.0:  # (the radius against a constant: linear in the variable)
+            events.append(EventFunction(Trigger.EDGE_PASSES_PIECE, None, self.passes_piece, -1.0, True))
         return events
+
+    def levels_convex(self) -> bool:
+        """Whether the caps' levels ``cap·level = cap·x − ū(a) − κ max(d, 0)`` are convex in time and their rates
+        monotone in the radius on this span, so that their events' readings settle them (:mod:`.closed_form`): a
+        moving radius on a convex branch (:attr:`~.branch.Branch.convex`: the radius concave in the depth, the depth
+        linear in time, so ``−K a(t)`` convex, and ``∂d/∂a`` increasing), a cap linear in the radius
+        (:attr:`~.media.HalfSpaceMedium.linear_cap`: ``ū = K a``, ``ū' = K``) and Coulomb's ``κ max(d, 0)`` linear
+        on the span (the depth keeps its sign; ``x`` is linear on a segment).
+
+        Returns
+        -------
+        bool
+            ``True`` where the proof holds; ``False`` leaves the events to the closed form's curvature guard.
+        """
+        if not (self.moving and self.branch.convex and self.medium.linear_cap):
+            return False
+        depths = self.segment.d(self.span.t_start), self.segment.d(self.span.t_end)
+        return not self.kappa or min(depths) >= 0.0 or max(depths) <= 0.0
 
     def met_at_start(self) -> frozenset[Fired]:
         """Events that have already happened at the span's start (they fire at once): a level already
