@@ -15,7 +15,7 @@ from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import Tolerances, evaluate, integrate, solve_path
 from mdr_events.models.continuum.dense import force_values
 from mdr_events.models.continuum.span import EventFunction, SpanIntegrator, Trigger
-from mdr_events.models.continuum.span_panels import NODES, PIECE_NODES, panels, rule
+from mdr_events.models.continuum.span_panels import NODES, PIECE_NODES, panels, radau_rule, rule
 from mdr_events.models.continuum.split_span import SplitSpanIntegrator
 
 RTOL, ATOL = 1e-10, 1e-14
@@ -68,6 +68,48 @@ def test_a_smooth_rate_is_integrated_to_the_tolerance_by_either_rule(count):
     the closed form (the error check holds the rule's own interpolant, whatever its degree)."""
     solved = panels(_rate(math.cos), [(0.0, 10.0)], 0.0, [], RTOL, ATOL, math.inf, rule(count))
     points = np.linspace(0.0, 10.0, 1001)
+    np.testing.assert_allclose(force_values(solved.sol, points), np.sin(points), rtol=0, atol=DENSE_SHARE)
+
+
+@pytest.mark.parametrize("count", range(2, NODES + 1))
+def test_a_radau_rule_starts_at_the_panel_s_start_and_is_exact_to_degree_2n_minus_2(count):
+    """Gauss–Radau's rule of ``count`` points (the panels between a table's knots): its first point is the panel's
+    start, its weights integrate every power up to ``2 count − 2`` over ``[0, 1]`` to rounding and not the next (one
+    degree below Gauss–Legendre's: the point it fixes), and a rate of degree ``count − 1`` is integrated in one panel
+    as by Gauss–Legendre's rule."""
+    radau = radau_rule(count)
+    assert radau.shared and radau.nodes[0] == 0.0 and np.all(np.diff(radau.nodes) > 0) and radau.nodes[-1] < 1.0
+    moments = np.array([radau.weights @ radau.nodes**k for k in range(2 * count)])
+    exact = 1.0 / np.arange(1, 2 * count + 1)
+    np.testing.assert_allclose(moments[:-1], exact[:-1], rtol=8 * EPS, atol=0)
+    assert abs(moments[-1] - exact[-1]) > 1e-9  # (2.4e-8 at 7 points: a million times the rounding)
+    rate = np.polynomial.Polynomial(np.array([0.3, -1.2, 0.7, 2.0, -0.5, 0.25, 1.5])[:count])
+    solved = panels(_rate(rate), [(0.0, 1.0)], 0.0, [], RTOL, ATOL, math.inf, radau)
+    points = np.linspace(0.0, 1.0, 101)
+    assert list(solved.sol.ts) == [0.0, 1.0]
+    np.testing.assert_allclose(solved.sol(points)[0], rate.integ()(points), rtol=0, atol=16 * EPS)
+
+
+def test_a_radau_panel_s_start_is_the_panel_before_s_check_read_once():
+    """Four pieces of a rate of the rule's degree, one panel each: the right-hand side read once at the start and
+    then ``PIECE_NODES`` times a panel (its inner points and the check at its end, which the next panel starts
+    from): 1 + 4 PIECE_NODES readings, where reading each start again took 4 more."""
+    rate = _rate(np.polynomial.Polynomial([0.3, -1.2, 0.7, 2.0, -0.5][:PIECE_NODES]))
+    solved = panels(rate, [(0.0, 0.5), (0.5, 1.0), (1.0, 1.5), (1.5, 2.0)], 0.0, [], RTOL, ATOL, math.inf,
+                    radau_rule(PIECE_NODES))
+    assert list(solved.sol.ts) == [0.0, 0.5, 1.0, 1.5, 2.0] and rate.readings == 1 + 4 * PIECE_NODES
+
+
+def test_a_piece_is_first_tried_at_the_length_the_last_panel_allows():
+    """``cos`` on a short piece, then a long one: the long piece is first tried at the length the short piece's panel
+    allows (its error scaled as a step size is), not whole (rejected, then cut), so no panel is rejected:
+    ``PIECE_NODES`` readings a panel and one at the start (the whole piece tried first took 15 more). The force
+    within DENSE_SHARE of ``sin``."""
+    rate = _rate(math.cos)
+    solved = panels(rate, [(0.0, 0.05), (0.05, 3.0)], 0.0, [], RTOL, ATOL, math.inf, radau_rule(PIECE_NODES))
+    panels_taken = len(solved.sol.ts) - 1
+    assert panels_taken > 2 and rate.readings == 1 + PIECE_NODES * panels_taken
+    points = np.linspace(0.0, 3.0, 1001)
     np.testing.assert_allclose(force_values(solved.sol, points), np.sin(points), rtol=0, atol=DENSE_SHARE)
 
 

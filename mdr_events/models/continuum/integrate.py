@@ -20,7 +20,7 @@ from .graded import SpanProblem, graded_problem
 from .model import ContinuumModel
 from .span import EventFunction, Span, SpanIntegrator, SpanOutcome, Variable
 from .span_march import Marched, march
-from .span_panels import NODES, PIECE_NODES, panels, rule
+from .span_panels import NODES, PIECE_NODES, panels, radau_rule, rule
 from .state import Cap, Regime
 from .tolerances import MIN_STEPS_PER_SPAN, SIMULTANEOUS_SHARE, Tolerances
 
@@ -142,7 +142,7 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
         pieces = list(zip([problem.start, *problem.knots], [*problem.knots, problem.stop]))
         # (between knots, pieces of ~1/120 of a span on a 41-point table: a rule of fewer points is exact enough)
         solution = panels(problem.rhs, pieces, force, problem.events, tolerances.rtol, tolerances.atol,
-                          problem.max_step, rule(PIECE_NODES if problem.knots else NODES))
+                          problem.max_step, radau_rule(PIECE_NODES) if problem.knots else rule(NODES))
     elif solution is None:
         solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, problem.events,
                                        tolerances, problem.max_step)
