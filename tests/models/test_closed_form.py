@@ -336,6 +336,9 @@ SHAPE_SAMPLES = 65
 #: ``test_an_event_that_turns_back_between_two_readings_is_found``)
 BACK_ALONG_THE_LINE = (PAPER, me.Path([(0.0, 0.0), (PAPER.d_max / np.tan(np.radians(20.0)), PAPER.d_max), (0.0, 0.0)],
                                       PAPER.v), {})
+#: The cases on a convex branch of the half-space (the paraboloid, power laws ``n >= 1``, with Coulomb's part): the
+#: proof holds on their moving spans, so each settles some ``ZONE_REACHES`` and some ``LEVEL_TURNS`` (the fast path)
+PROVEN_CASES = ("A 20°", "B 30°", "cone, B 30°", "n = 3, A 30°", "Hertz, Coulomb, A 20°", "zigzag")
 
 
 def _settled_shapes(params, path, options, monkeypatch):
@@ -377,7 +380,8 @@ def test_each_settled_event_has_the_shape_its_proof_gives(case, monkeypatch):
     :meth:`~mdr_events.models.continuum.span.SpanIntegrator.levels_convex`) have the shape that rules out a hidden
     crossing, sampled along each span: the level's turn and the edge passing a piece monotone, a level against a fixed
     target convex in time (direction +1). The edge's own target is never settled (the back-and-forth path holds one,
-    concave: the guard's case), nor any event on a table's branch or a layer (no proof there)."""
+    concave: the guard's case), nor any event on a table's branch or a layer (no proof there); on a convex branch of the
+    half-space (:data:`PROVEN_CASES`) some of each kind the proof covers are settled."""
     from mdr_events.models.continuum.span import Trigger
 
     params, path, options = BACK_ALONG_THE_LINE if case == "back along the line" else CASES[case]()
@@ -392,6 +396,35 @@ def test_each_settled_event_has_the_shape_its_proof_gives(case, monkeypatch):
             assert settled == (trigger is Trigger.EDGE_PASSES_PIECE), trigger
     if case == "back along the line":  # (the guard's kind of event met in a run: the edge's own target, guarded)
         assert any(edge and not settled for _, _, settled, edge, _, _ in found)
+    if case in PROVEN_CASES:  # (the fast path kept: a proof that settled nothing would pass the loop above)
+        for kind in (Trigger.ZONE_REACHES, Trigger.LEVEL_TURNS):
+            assert any(settled for trigger, _, settled, _, _, _ in found if trigger is kind), kind
+
+
+@pytest.mark.parametrize("declared", [False, True])
+def test_a_new_medium_keeps_the_guard_unless_it_declares_a_linear_cap(declared, monkeypatch):
+    """:attr:`~mdr_events.models.continuum.media.HalfSpaceMedium.linear_cap` fails closed: a subclass of the
+    half-space's medium that does not declare it (a new medium, here the half-space under another name) settles none
+    of the events the proof would settle, so all of them stay under the guard; one that declares it settles them as
+    the half-space does (A 20°: some ``ZONE_REACHES`` and ``LEVEL_TURNS``). The layers' media are not linear."""
+    from mdr_events.models.continuum import model
+    from mdr_events.models.continuum.layer_media import FrictionlessLayerMedium, LayerMedium
+    from mdr_events.models.continuum.media import HALF_SPACE_MEDIUM, HalfSpaceMedium
+    from mdr_events.models.continuum.span import Trigger
+
+    class Undeclared(HalfSpaceMedium):
+        pass
+
+    class Declared(HalfSpaceMedium):
+        linear_cap = True
+
+    medium = (Declared if declared else Undeclared)()
+    assert medium.linear_cap is declared and HALF_SPACE_MEDIUM.linear_cap
+    assert not (LayerMedium.linear_cap or FrictionlessLayerMedium.linear_cap)
+    monkeypatch.setattr(model, "medium_of", lambda *args: medium)
+    found = _settled_shapes(*CASES["A 20°"](), monkeypatch)
+    for kind in (Trigger.ZONE_REACHES, Trigger.LEVEL_TURNS):
+        assert any(settled for trigger, _, settled, _, _, _ in found if trigger is kind) is declared, kind
 
 
 @pytest.mark.parametrize("settled", [False, True])

@@ -49,8 +49,15 @@ class HalfSpaceMedium:
     """The half-space: every spring alike (``G*`` per length), the cap ``K a`` (13), the paper's branches (9)."""
 
     #: whether the cap ``ū(a)`` is linear in the radius (``K a``): with a convex branch, the closed-form span's
-    #: levels against a fixed target are convex in time and their rates monotone (:mod:`.closed_form`)
+    #: levels against a fixed target are convex in time and their rates monotone (:mod:`.closed_form`); ``False``
+    #: for every subclass unless its own body sets it (:meth:`__init_subclass__`)
     linear_cap = True
+
+    def __init_subclass__(cls, **kwargs):
+        """A subclass's :attr:`linear_cap` is ``False`` unless its own body declares it (fails closed: a new medium
+        never inherits the half-space's proof, so its events stay under the closed form's hidden-turn guard)."""
+        super().__init_subclass__(**kwargs)
+        cls.linear_cap = bool(cls.__dict__.get("linear_cap", False))
 
     def shift(self, K: float, a: float) -> float:
         """The cap of ``τ0``'s part at radius ``a``: ``K a`` (13).
