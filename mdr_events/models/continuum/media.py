@@ -241,9 +241,9 @@ HALF_SPACE_MEDIUM = HalfSpaceMedium()
 
 def check_law(friction: FrictionLaw, layer: Layer) -> None:
     """Refuse on a finite layer a friction law the continuum's spans do not run there: Coulomb's part (each spring's
-    cap ``μ k/k_t (d − g)`` has a ratio of its own, no level is shared). ``simulate(..., method="continuum")`` runs it
-    spring by spring, with or without adhesion (:mod:`.play_run`); what reads the spans' solution itself (a continuum
-    sweep's quantities, ``solve_path``) refuses it.
+    cap ``μ k/k_t (d − g)`` has a ratio of its own, no level is shared). ``simulate(..., method="continuum")`` and a
+    continuum sweep run it spring by spring, with or without adhesion (:mod:`.play_run`,
+    :mod:`mdr_events.analysis.play_sweep`); what reads the spans' solution itself (``solve_path``) refuses it.
 
     Parameters
     ----------
@@ -259,8 +259,8 @@ def check_law(friction: FrictionLaw, layer: Layer) -> None:
     """
     if not layer.is_half_space and friction.coulomb_mu > 0.0:
         raise ValueError(f"friction={friction.law!r} is not allowed on {layer.describe()} in the continuum's spans (what "
-                         "a continuum sweep and solve_path read); allowed: 'tau0' (Coulomb's part runs on a layer "
-                         "spring by spring in simulate(..., method='continuum'), and sweeps in method='discrete')")
+                         "solve_path reads); allowed: 'tau0' (Coulomb's part runs on a layer spring by spring in "
+                         "simulate(..., method='continuum') and a continuum sweep, and in method='discrete')")
 
 
 def medium_of(params: Parameters, friction: FrictionLaw, profile, layer: Layer = HALF_SPACE) -> HalfSpaceMedium:
