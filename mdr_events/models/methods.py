@@ -311,9 +311,9 @@ class Continuum:
     def check_layer(self, contact: Contact) -> None:
         """Every friction law runs on a layer, with or without adhesion: ``"tau0"`` on the spans, Coulomb's part
         spring by spring (:mod:`~mdr_events.models.continuum.play_run`; the flat punch's springs ``g = 0`` under its
-        face, :meth:`~mdr_events.models.continuum.layer_normals.PunchNormal.spring_factors`); what the layer's springs
-        take (the paraboloid, a power law or the flat punch, its face within the tables) is checked where they are
-        made (:mod:`~mdr_events.models.continuum.layer_reach`), so nothing is refused here.
+        face, ``spring_factors`` of :class:`~mdr_events.models.continuum.layer_normals.PunchNormal`); what the layer's
+        springs take (the paraboloid, a power law or the flat punch, its face within the tables) is checked where they
+        are made (:mod:`~mdr_events.models.continuum.layer_reach`), so nothing is refused here.
 
         Parameters
         ----------

@@ -13,7 +13,7 @@ import pytest
 import mdr_events as me
 from mdr_events.analysis.sweep import CLOSED_FORM_QUANTITIES
 from mdr_events.app.cli import main
-from mdr_events.app.study import StudyError, load_study
+from mdr_events.app.study import load_study
 
 from test_validate_cli import assert_one_error_line
 

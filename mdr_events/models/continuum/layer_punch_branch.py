@@ -33,8 +33,10 @@ __all__ = ["LayerPunchBranch", "FACE_SHARE"]
 #: ``MAX_RADIUS_RTOL``), as ``PIECE_SHARE``: a root of the face's radius lands within
 #: it at any allowed tolerance, and no root a whole share below it is taken for the face.
 FACE_SHARE = 10.0 * MAX_RADIUS_RTOL
-#: The receding radii kept (:func:`_receding_radius`): one per medium and face, as the media kept (``media.FACTOR_CACHE``).
+#: The receding radii kept (:func:`_receding_radius`): one per medium and face, as many as the media's factors
+#: (``media.FACTOR_CACHE``).
 RECEDING_CACHE = 256
+
 
 @functools.lru_cache(maxsize=RECEDING_CACHE)
 def _receding_radius(factors: NormalFactors, face: float) -> float:
