@@ -288,6 +288,92 @@ for nu_value, base, key, thicknesses in ((0.5, "bonded", "layer_thin_film_pull_o
     assert abs(order - 1) < 0.05 and abs(extrapolated / limit - 1) < 1e-5
 
 # %% [markdown]
+# ## Step 6 — the flat punch on a layer: its contact recedes under the face where `a K″ > K′`
+# Under the face `g = 0` and `F₀ = 0`, so the force is `K(a) d` (`layer_flat_punch_force`). Under depth control the
+# contact of radius `a ≤ a₀` at depth `d` has the energy `Π(a; d) = ½K(a)d² − πa²Δγ` (`LS.receding_energy()`: the
+# springs' energy less the adhesion's). SymPy differentiates it: `∂Π/∂d` is the springs' force, `∂Π/∂a = 0` exactly at
+# Heß's limit `|d| = Δl(a)` (8), and there `∂²Π/∂a² = 2πΔγ(aK″ − K′)/K′`: the radius is a minimum of `Π` (a stable
+# contact smaller than the face) where `aK″ > K′` (`layer_flat_punch_recedes`), i.e. where `Δl` falls with `a`.
+
+# %%
+Pi = LS.receding_energy()
+a_s, d_s, K_a = symbolic.a, symbolic.d, sp.Function("K")(symbolic.a)
+K1, K2 = sp.Symbol("K_prime", positive=True), sp.Symbol("K_second")
+print("Pi =", Pi)
+assert sp.simplify(sp.diff(Pi, d_s) - rels["layer_flat_punch_force"].rhs.subs(sp.Symbol("K", positive=True), K_a)) == 0
+stationary = sp.solve(sp.diff(Pi, a_s), d_s)  # Π'(a) = 0: the depths at which the radius a is in equilibrium
+hess_of_K = rels["layer_hess_elongation"].rhs.subs(K1, sp.diff(K_a, a_s))
+assert len(stationary) == 2 and all(sp.simplify(root**2 - hess_of_K**2) == 0 for root in stationary)  # |d| = Δl(a)
+curvature = sp.simplify(sp.diff(Pi, a_s, 2).subs(d_s, -hess_of_K))
+print("Pi''(a) at d = -Dl(a):", curvature)
+recedes = rels["layer_flat_punch_recedes"].rhs  # a K'' − K'
+assert sp.simplify(curvature - (2 * sp.pi * symbolic.dgamma * recedes / K1).subs(
+    {K2: sp.diff(K_a, a_s, 2), K1: sp.diff(K_a, a_s)})) == 0
+# its sign on the three closed-form layers: the half-space never recedes, Winkler's foundation is neutral (Δl is one
+# constant: every spring at its limit at once), the thin incompressible film recedes at every radius
+for name, K_closed, sign in (("half-space", 2 * symbolic.E_star * a_s, -1),
+                             ("Winkler", rels["layer_winkler_stiffness"].rhs, 0),
+                             ("thin film", rels["layer_thin_film_stiffness"].rhs, 1)):
+    value = sp.simplify(curvature.subs(K_a, K_closed).doit())
+    print(f"{name:10s}: Pi'' = {value}")
+    assert sp.sign(value) == sign
+assert sp.diff(sp.simplify(hess_of_K.subs(K_a, rels["layer_winkler_stiffness"].rhs).doit()), a_s) == 0
+
+# %% [markdown]
+# On the tabulated layers `aK″ − K′` changes sign once at most: `Δl(a)` rises from the half-space's `√a` to one hump
+# at `a_j/h` and falls beyond it. A face `a₀ > a_j` recedes from `d = −Δl(a₀)` along `d = −Δl(a)` to `a_j`, where the
+# rest comes off at once (`punch_recession.receding_radius`, Brent's method on the tables' `Θ′/Θ`). Checked
+# independently: `Δl` sampled densely from the stiffness's slope has its largest value at `a_j` (within one sample),
+# and `Π″` by central differences of `Π` of the tables' `K(a)` has the sign and the value of `2πΔγ(aK″ − K′)/K′`
+# (`K″` by a central difference of `K′`). Bonded at `ν = 0.5` and `0.45` the punch recedes; on a frictionless base
+# and bonded at `ν = 0.3`, `Δl` rises at every radius of the tables: the whole face comes off at Kendall's depth on
+# the layer, as on the half-space.
+
+# %%
+from mdr_events.theory.layer.punch_recession import receding_radius  # noqa: E402
+from mdr_events.theory.layer.scalar_factors import NormalFactors  # noqa: E402
+
+samples = np.geomspace(1e-2, L.LAMBDA_MAX, 4001)  # a/h, ratio 1.0021 between samples (lengths in h: h = 1)
+jump_offs = {}
+for nu_value, base in ((0.5, "bonded"), (0.45, "bonded"), (0.3, "bonded"), (0.5, "frictionless")):
+    layer_nu = Layer(1.0, base=base)
+    elongation_curve = L.hess_elongation(samples, DGAMMA, E_STAR, nu_value, layer_nu)
+    jump = receding_radius(NormalFactors(nu_value, layer_nu, 2.0), L.LAMBDA_MAX)
+    jump_offs[(nu_value, base)] = jump
+    peak = samples[np.argmax(elongation_curve)]
+    print(f"nu = {nu_value}, {base:12s}: a_j/h = {jump:.6f} (sampled peak of Dl at {peak:.6f})")
+    if jump < L.LAMBDA_MAX:  # recedes: the hump of Δl within one sample of a_j, and no sample above Δl(a_j)
+        assert abs(math.log(peak / jump)) <= math.log(samples[1] / samples[0])
+        top = float(L.hess_elongation(jump, DGAMMA, E_STAR, nu_value, layer_nu))
+        assert np.max(elongation_curve) <= top * (1 + 1e-12)
+    else:  # never recedes on the tables: Δl rises at every sample
+        assert np.all(np.diff(elongation_curve) > 0)
+assert jump_offs[(0.5, "bonded")] < jump_offs[(0.45, "bonded")] < L.LAMBDA_MAX
+assert jump_offs[(0.3, "bonded")] == jump_offs[(0.5, "frictionless")] == L.LAMBDA_MAX
+
+
+def energy_curvature(a_value, depth, nu_value, layer_nu, step):
+    """∂²Π/∂a² at fixed depth by a central difference of Π = ½K(a)d² − πa²Δγ (the tables' K)."""
+    radii = a_value + step * np.array([-1.0, 0.0, 1.0])
+    energy = 0.5 * L.punch_stiffness(radii, E_STAR, nu_value, layer_nu) * depth**2 - np.pi * radii**2 * DGAMMA
+    return (energy[0] - 2 * energy[1] + energy[2]) / step**2
+
+
+# central differences of step s = 1e-3 a: truncation ~ s² |fourth derivative|/12, ~1e-6 relative (Π smooth on the
+# scale a); rounding ~ 4 eps |Π|/(s² |Π''|), ~1e-9 here; 1e-5 bounds both with room
+FD_STEP, FD_RTOL = 1e-3, 1e-5
+layer_incompressible = Layer(1.0)
+jump = jump_offs[(0.5, "bonded")]
+for a_value, sign in ((2.0 * jump, 1), (0.5 * jump, -1)):  # inside the recession: stable; inside a_j: unstable
+    depth = -float(L.hess_elongation(a_value, DGAMMA, E_STAR, 0.5, layer_incompressible))
+    step = FD_STEP * a_value
+    numeric = energy_curvature(a_value, depth, 0.5, layer_incompressible, step)
+    slopes = L.punch_stiffness_slope(a_value + step * np.array([-1.0, 0.0, 1.0]), E_STAR, 0.5, layer_incompressible)
+    formula = 2 * np.pi * DGAMMA * (a_value * (slopes[2] - slopes[0]) / (2 * step) - slopes[1]) / slopes[1]
+    print(f"a/h = {a_value:.4f}: Pi'' = {numeric:.6e} (finite differences), {formula:.6e} (2 pi Dg (aK'' - K')/K')")
+    assert np.sign(numeric) == sign and abs(numeric / formula - 1) < FD_RTOL
+
+# %% [markdown]
 # ## The figure: pull-off against `a/h`, and the paper's 5 mm layer
 # Left: `|F_po|/((3/2)πΔγR)` from the half-space (1) to the thin limits (4/3 on Winkler's foundation, 2 on the thin
 # film), bonded and frictionless at `ν = 0.5`. Right: `F_N(d)` in and out to `d = 0.3 mm` (the paper's contact,

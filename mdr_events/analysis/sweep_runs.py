@@ -26,6 +26,7 @@ from typing import Callable, NamedTuple, Sequence
 import numpy as np
 
 from mdr_events.analysis.fit import curves_of
+from mdr_events.analysis.play_sweep import play_continuum_quantities
 from mdr_events.analysis.rate_sweep import check_rate_sweep_run, rate_continuum_quantities
 from mdr_events.analysis.samples import candidate_events, sliding as sliding_samples
 from mdr_events.analysis.sweep_events import deepest_time, event_quantities, first_events
@@ -35,7 +36,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models import indenters
 from mdr_events.models.continuum import extremum, solve_path, tangential_work
 from mdr_events.models.continuum.edges import check_edge_known
-from mdr_events.models.continuum.media import check_law
+from mdr_events.models.continuum.play_run import takes_play_springs
 from mdr_events.models.continuum.solution import scan_spans
 from mdr_events.models.methods import Continuum, Discrete, Method
 from mdr_events.models.motion import Motion, Paths
@@ -190,10 +191,9 @@ def check_layer_run(contact: Contact, motion: Motion, method: Method, quantities
                     history_samples: int | None) -> None:
     """Refuse a sweep's run of a contact on a layer of finite thickness that runs the model (:func:`runs_model`)
     with a method that does not take the layer, or where the layer's springs do not take the contact or the motion
-    (:func:`~mdr_events.models.simulate.check_layer_taken`, naming ``sweep(method=...)``), or, in the continuum,
-    Coulomb's part, which the spans its quantities read do not run on a layer
-    (:func:`~mdr_events.models.continuum.media.check_law`). The half-space and the closed-form quantities alone pass
-    (those check themselves: :func:`closed_form_angle`).
+    (:func:`~mdr_events.models.simulate.check_layer_taken`, naming ``sweep(method=...)``); in the continuum
+    Coulomb's part on a layer runs spring by spring (:mod:`~mdr_events.analysis.play_sweep`, ``simulate``'s run). The
+    half-space and the closed-form quantities alone pass (those check themselves: :func:`closed_form_angle`).
 
     Parameters
     ----------
@@ -215,8 +215,6 @@ def check_layer_run(contact: Contact, motion: Motion, method: Method, quantities
     """
     if runs_model(quantities, history_samples):
         check_layer_taken(contact, motion, method, where=f"sweep(method={method.name!r}) of the model's quantities")
-        if method.name == Continuum.name:  # (its quantities read the spans' solution: Coulomb's part refused there)
-            check_law(contact.friction, contact.layer)
 
 
 def closed_form_angle(model: ModelJob, scenario: str) -> float:
@@ -278,10 +276,13 @@ CONTINUUM_QUANTITIES: dict[type, Callable[..., tuple[dict[str, float], np.ndarra
 def continuum_quantities(model: ModelJob, path: Path, method: Continuum, limits: Limits,
                          times: np.ndarray | None) -> tuple[dict[str, float], np.ndarray | None]:
     """A run's quantities from the exact solution (its extrema and event log), and its history at ``times``; a law
-    of :data:`CONTINUUM_QUANTITIES` by its own run."""
+    of :data:`CONTINUUM_QUANTITIES` by its own run, Coulomb's part on a layer by the per-spring run
+    (:mod:`~mdr_events.analysis.play_sweep`)."""
     own = CONTINUUM_QUANTITIES.get(type(model.adhesion))
     if own is not None:
         return own(model, path, method, limits, times)
+    if takes_play_springs(model.kernel):  # (Coulomb's part on a layer: simulate's per-spring run, not the spans)
+        return play_continuum_quantities(model, path, method, limits, times)
     solution = solve_path(model.params, path, method.tolerances, limits, model.profile, model.friction,
                           layer=model.contact.layer)
     scan = scan_spans(solution)  # one scan serves every extremum

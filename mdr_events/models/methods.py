@@ -31,7 +31,6 @@ from mdr_events.models.continuum import PathSolution, Tolerances, run_continuum,
 from mdr_events.models.continuum.rate_reference import RateSolution, solve_rate_reference
 from mdr_events.models.continuum.tolerances import check_output, check_tolerances
 from mdr_events.models.continuum.edges import check_edge_known
-from mdr_events.models.continuum.media import check_face
 from mdr_events.models.continuum.play_run import run_play_springs, takes_play_springs
 from mdr_events.models.continuum.rate_run import check_rate_layer, run_rate_continuum
 from mdr_events.models.continuum.rate_coulomb import check_rate_friction_law, run_rate_coulomb, takes_rate_coulomb
@@ -311,21 +310,16 @@ class Continuum:
 
     def check_layer(self, contact: Contact) -> None:
         """Every friction law runs on a layer, with or without adhesion: ``"tau0"`` on the spans, Coulomb's part
-        spring by spring (:mod:`~mdr_events.models.continuum.play_run`); the flat punch with ``"tau0"`` alone
-        (:func:`~mdr_events.models.continuum.media.check_face`); what the layer's springs take (the paraboloid, a
-        power law or the flat punch) is checked where they are made.
+        spring by spring (:mod:`~mdr_events.models.continuum.play_run`; the flat punch's springs ``g = 0`` under its
+        face, ``spring_factors`` of :class:`~mdr_events.models.continuum.layer_normals.PunchNormal`); what the layer's
+        springs take (the paraboloid, a power law or the flat punch, its face within the tables) is checked where they
+        are made (:mod:`~mdr_events.models.continuum.layer_reach`), so nothing is refused here.
 
         Parameters
         ----------
         contact : Contact
             The physical model.
-
-        Raises
-        ------
-        ValueError
-            A flat punch on a layer of finite thickness with Coulomb's part.
         """
-        check_face(contact.profile, contact.layer, contact.friction)
 
     def check_case_count(self, count: int, limits: Limits) -> None:
         """The output a run of ``count`` cases takes, checked before they are built, as

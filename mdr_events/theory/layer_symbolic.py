@@ -49,7 +49,8 @@ import sympy as sp
 from mdr_events.theory import symbolic
 from mdr_events.theory.symbolic import Relation
 
-__all__ = ["derive_layer_model", "layer_model_afresh", "layer_cache_path", "LAYER_KEYS", "love_compliance"]
+__all__ = ["derive_layer_model", "layer_model_afresh", "layer_cache_path", "LAYER_KEYS", "love_compliance",
+           "receding_energy"]
 
 t = sp.Symbol("t", positive=True)              # ξ h
 z = sp.Symbol("z", positive=True)
@@ -366,13 +367,30 @@ def _derive_flat_punch(add, out: dict) -> None:
         _check(held.is_positive, f"the flat punch's pull-off force on the {name} does not rise with its radius")
 
 
+def receding_energy() -> sp.Expr:
+    r"""The energy of the flat punch's contact of radius ``a`` under the face at depth ``d`` (section 8).
+
+    .. math:: \Pi(a; d) = \tfrac12 K(a)\, d^2 - \pi a^2 \Delta\gamma
+
+    the springs' elastic energy (``g = 0`` under the face, ``F₀ = 0``: section 5's ``U`` with ``δ = d``) less the
+    adhesion's; ``K`` is SymPy's undefined ``K(a)``. Section 8 checks from it, not asserting them, that
+    ``∂Π/∂d = K(a) d``, ``∂Π/∂a = 0`` at ``|d| = Δl(a)`` (8) and ``∂²Π/∂a² = 2πΔγ (a K″ − K′)/K′`` there.
+
+    Returns
+    -------
+    sympy.Expr
+        ``Π`` in the symbols ``a``, ``d``, ``dgamma`` and ``K(a)``.
+    """
+    return K_fn(a) * d ** 2 / 2 - sp.pi * a ** 2 * dgamma
+
+
 def _check_receding_energy(force, elongation) -> None:
     """Section 8's stability from the energy, not asserted: under depth control the contact of radius ``a`` at depth
-    ``d`` has ``Π(a) = ½ K(a) d² − π a² Δγ`` (the springs' elastic energy less the adhesion's). Its ``∂Π/∂d`` is the
+    ``d`` has ``Π(a) = ½ K(a) d² − π a² Δγ`` (:func:`receding_energy`). Its ``∂Π/∂d`` is the
     springs' force ``K(a) d``; ``Π′(a) = 0`` at ``|d| = Δl(a)`` (Heß's limit, (8)); there
     ``Π″(a) = 2π Δγ (a K″ − K′)/K′``, so the receding radius is a minimum of ``Π`` (stable) where ``a K″ > K′`` and the
     recession ends where ``a K″ = K′`` (``layer_flat_punch_receding_slope`` = 0)."""
-    energy = K_fn(a) * d ** 2 / 2 - sp.pi * a ** 2 * dgamma
+    energy = receding_energy()
     _check(sp.simplify(sp.diff(energy, d) - force) == 0, f"∂Π/∂d = {sp.diff(energy, d)} is not the springs' {force}")
     for depth in (elongation, -elongation):
         _check(sp.simplify(sp.diff(energy, a).subs(d, depth)) == 0, f"Π'(a) is not 0 at d = {depth}")

@@ -21,8 +21,8 @@ from mdr_events.theory.analytic import dimensionless_groups
 
 PAPER = me.Contact.paper()
 LAYERED = PAPER.replace(h=5e-3)
-#: Coulomb's part with the paper's adhesion (simulate's continuum runs it on a layer spring by spring; a continuum
-#: sweep, which reads the spans' solution, refuses it there naming what runs it).
+#: Coulomb's part with the paper's adhesion (simulate's continuum and a continuum sweep run it on a layer spring by
+#: spring).
 COULOMB = dataclasses.replace(PAPER, friction=me.FrictionLaw("tau0+coulomb", tau0=PAPER.friction.tau0, mu=0.3))
 SERIAL = me.Engine(scheduler="serial")
 #: The discrete springs, coarse enough for seconds per run (the sweep and simulate take the same method).
@@ -111,17 +111,9 @@ def test_the_closed_form_quantities_over_the_thickness_are_critical_angle_of_eac
                                                             for tau0 in grid["tau0"]]
 
 
-#: A continuum sweep of Coulomb's part on a layer.
-SPANS_REFUSE = ("friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded base in the continuum's spans (what "
-                "a continuum sweep and solve_path read); allowed: 'tau0' (Coulomb's part runs on a layer spring by "
-                "spring in simulate(..., method='continuum'), and sweeps in method='discrete')")
-
-
-def test_what_the_continuum_sweeps_refusal_names_runs_coulombs_part_on_a_layer():
-    """The continuum sweep refuses Coulomb's part on a layer (its per-spring route costs 5–7 ms of CPU an output time,
-    0.1 s with adhesion: minutes a cell) naming the discrete sweep and simulate's continuum: both run it, the sweep's
-    cell simulate's discrete run bit for bit."""
-    assert "sweeps in method='discrete'" in SPANS_REFUSE and "simulate(..., method='continuum')" in SPANS_REFUSE
+def test_a_discrete_sweep_of_coulombs_part_on_a_layer_is_the_simulate_runs():
+    """The discrete sweep's cell is simulate's discrete run bit for bit (the continuum sweep's:
+    tests/analysis/test_play_sweep.py)."""
     swept = me.sweep({"h": [5e-3, math.inf]}, COULOMB, "A", 20.0, SPRINGS, engine=SERIAL,
                      quantities=("tangential_force_max", "normal_force_min"))
     assert int(swept["failed"].sum()) == 0
@@ -130,14 +122,9 @@ def test_what_the_continuum_sweeps_refusal_names_runs_coulombs_part_on_a_layer()
         cell = swept.sel(h=h)
         assert float(cell["tangential_force_max"]) == float(np.nanmax(np.abs(run["tangential_force"].values)))
         assert float(cell["normal_force_min"]) == float(np.nanmin(run["normal_force"].values))
-    continuum = me.simulate(COULOMB.replace(h=5e-3), me.Scenario("A", 20.0), "continuum", samples=5)
-    assert np.all(np.isfinite(continuum["tangential_force"].values))
 
 
 @pytest.mark.parametrize("call, fragment", [
-    (lambda: me.sweep({"h": [5e-3, 1e-3]}, COULOMB, "A", 20.0, engine=SERIAL), f"grid: {SPANS_REFUSE}"),
-    (lambda: me.sweep({"alpha": [20.0]}, COULOMB.replace(h=5e-3), "A", engine=SERIAL,
-                      quantities=CLOSED_FORM_QUANTITIES, history_samples=3), SPANS_REFUSE),
     (lambda: me.sweep({"alpha": [90.0, 30.0]}, LAYERED.replace(**{"layer.base": "frictionless"}), "A", None,
                       SPRINGS, engine=SERIAL),
      "path 0 moves the indenter tangentially (x from 0 m to 0.000519615 m), which is not allowed on layer h = "

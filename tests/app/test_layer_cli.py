@@ -85,8 +85,6 @@ def test_simulate_runs_the_flat_punch_on_a_layer_in_the_continuum(capsys, tmp_pa
     (["--h", "nan"], "--h nan: Layer.thickness=nan is not allowed"),
     (["--layer-base", "glued"], "argument --layer-base: invalid choice: 'glued'; allowed: bonded, frictionless"),
     (["--h", "5e-3", "--layer-base", "frictionless"], "path 0 moves the indenter tangentially"),
-    (["--h", "5e-3", "--flat-punch", "1e-3", "--method", "continuum", "--friction", "coulomb", "--mu", "0.3"],
-     "with profile=FlatPunch(radius=0.001) is not allowed on layer h = 0.005 m, bonded base in the continuum method"),
     (["--h", "2e-5", "--flat-punch", "2e-3", "--method", "continuum"],
      "contact.indenter=FlatPunch(radius=0.002) is not allowed in the continuum method on layer h = 2e-05 m, bonded "
      "base: its face exceeds a/h = 64 (the layer's tables); allowed: a radius up to 0.00128 m, or a layer h >= "

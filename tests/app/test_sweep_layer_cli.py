@@ -13,7 +13,7 @@ import pytest
 import mdr_events as me
 from mdr_events.analysis.sweep import CLOSED_FORM_QUANTITIES
 from mdr_events.app.cli import main
-from mdr_events.app.study import StudyError, load_study
+from mdr_events.app.study import load_study
 
 from test_validate_cli import assert_one_error_line
 
@@ -74,16 +74,12 @@ def test_h_on_the_command_line_puts_the_studys_sweep_on_a_layer(capsys, tmp_path
     assert_one_error_line(capsys.readouterr().err, "holds another sweep")
 
 
-#: Coulomb's part on a layer, which a continuum sweep does not run (the study's [friction] table).
+#: Coulomb's part on a layer, which a continuum sweep runs spring by spring (the study's [friction] table).
 COULOMB = '[friction]\nlaw = "tau0+coulomb"\nmu = 0.3'
 
 
 @pytest.mark.parametrize("sweep, extra, argv, fragment", [
     ("grid = { alpha = [30] }", "", ["--h", "0"], "--h 0: Layer.thickness=0.0 is not allowed"),
-    ("grid = { alpha = [30] }", COULOMB, ["--h", "5e-3"],
-     "--h 0.005: friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded base in the continuum's spans"),
-    ("grid = { h = [5e-3] }\nalpha = 30", COULOMB, [],
-     "[sweep] grid: friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded base in the continuum's spans"),
     (f"grid = {{ alpha = [30] }}\n{DISCRETE}", "", ["--h", "5e-3", "--layer-base", "frictionless"],
      "--h 0.005 --layer-base frictionless: path 0 moves the indenter tangentially"),
     (f"grid = {{ alpha = [30] }}\n{DISCRETE}", "[layer]\nh = 5e-3", ["--layer-base", "glued"],
@@ -98,14 +94,11 @@ def test_a_layer_the_sweep_cannot_run_is_one_line_exit_2_and_nothing_run(capsys,
     assert not (tmp_path / "out" / "study_sweep.zarr").exists()
 
 
-def test_a_continuum_sweep_study_of_coulombs_law_on_a_layer_is_refused_when_read(tmp_path):
-    """A continuum sweep reads the spans' solution, which does not run Coulomb's part on a layer (simulate's continuum
-    runs it spring by spring): refused when the study is read, naming both."""
-    with pytest.raises(StudyError) as caught:
-        load_study(write_study(tmp_path, "grid = { alpha = [30] }", f"[layer]\nh = 5e-3\n{COULOMB}"))
-    text = str(caught.value)
-    assert "[sweep] friction='tau0+coulomb' is not allowed on layer h = 0.005 m, bonded base in the continuum's spans" \
-        in text and "simulate(..., method='continuum')" in text and "method='discrete'" in text and "\n" not in text
+def test_a_continuum_sweep_study_of_coulombs_law_on_a_layer_is_read(tmp_path):
+    """A continuum sweep runs Coulomb's part on a layer spring by spring, as simulate's continuum does (refused when
+    read before: its quantities read the spans' solution; tests/analysis/test_play_sweep.py checks the values)."""
+    study = load_study(write_study(tmp_path, "grid = { alpha = [30] }", f"[layer]\nh = 5e-3\n{COULOMB}"))
+    assert study.sweep.contact.layer == me.Layer(5e-3) and study.sweep.contact.friction.law == "tau0+coulomb"
     assert load_study(write_study(tmp_path, "grid = { alpha = [30] }", "[layer]\nh = 5e-3")).sweep.contact.layer \
         == me.Layer(5e-3)
     closed = load_study(write_study(tmp_path, 'grid = { tau0 = [3e4] }\nalpha = 30\n'

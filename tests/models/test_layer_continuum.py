@@ -201,9 +201,14 @@ def test_a_power_law_runs_on_a_layer_and_its_thick_layer_is_the_half_space():
             np.abs(half[name].values))
 
 
+#: A tabulated profile (the layer's profile is tabulated for a paraboloid or power law; the flat punch under Coulomb's
+#: part, refused here before, runs spring by spring: tests/models/test_layer_punch_coulomb.py).
+_TABLE_RADII = np.linspace(0.0, 4e-3, 41)
+
+
 @pytest.mark.parametrize("contact, words", [
-    (dataclasses.replace(PAPER.replace(h=5e-3), indenter=me.FlatPunch(1e-3),
-                         friction=me.FrictionLaw("coulomb", mu=0.3)), "profile=FlatPunch(radius=0.001)"),
+    (dataclasses.replace(PAPER.replace(h=5e-3), indenter=me.TabulatedProfile(_TABLE_RADII, _TABLE_RADII**2 / 0.06)),
+     "profile=TabulatedProfile(<41 points"),
 ])
 def test_what_the_continuum_does_not_take_on_a_layer_is_one_line(contact, words):
     with pytest.raises(ValueError) as caught:

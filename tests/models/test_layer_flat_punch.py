@@ -147,17 +147,14 @@ SERIAL = me.Engine(scheduler="serial")
 COULOMB = dataclasses.replace(PUNCH.replace(h=5e-3), friction=me.FrictionLaw("tau0+coulomb", tau0=42e3, mu=0.3))
 
 
-@pytest.mark.parametrize("call", [
-    lambda: me.simulate(COULOMB, VERTICAL, "continuum"),
-    lambda: me.sweep({"h": [5e-3, math.inf]}, COULOMB, "A", 90.0, engine=SERIAL, quantities=("normal_force_min",)),
-])
-def test_the_continuum_refuses_coulombs_part_with_the_flat_punch_on_a_layer_before_it_runs_naming_why(call):
-    """The continuum runs Coulomb's part on a layer spring by spring on the profile tabulated for a paraboloid or power
-    law; with ``τ0`` alone the spans run the flat punch (:mod:`tests.models.test_layer_punch_continuum`)."""
-    with pytest.raises(ValueError) as caught:
-        call()
-    message = str(caught.value)
-    assert "spring by spring" in message and "method='discrete'" in message and "\n" not in message
+def test_the_continuum_runs_coulombs_part_with_the_flat_punch_on_a_layer_spring_by_spring():
+    """Refused before (the per-spring route read the layer's profile tabulated for a paraboloid or power law): it reads
+    the punch's springs now (``g = 0`` under the face; :mod:`tests.models.test_layer_punch_coulomb` checks the
+    values), and with ``μ = 0`` it is the spans' ``τ0`` run."""
+    run = me.simulate(COULOMB, VERTICAL, "continuum").isel(alpha=0)
+    spans = me.simulate(dataclasses.replace(COULOMB, friction=me.FrictionLaw("tau0", tau0=42e3)), VERTICAL,
+                        "continuum", t=run["time"].values).isel(alpha=0)
+    np.testing.assert_array_equal(run["normal_force"].values, spans["normal_force"].values)
 
 
 def test_a_continuum_sweep_runs_the_flat_punch_over_the_thickness_as_simulate_does():

@@ -73,6 +73,34 @@ class ProfileNormal:
 
         return LayerBranch(params, work, indenter, layer, factors)
 
+    @classmethod
+    def spring_factors(cls, params: Parameters, indenter, layer: Layer):
+        """``g``, ``k`` and ``k_t`` of the springs as the per-spring route reads them (:mod:`.play_springs`): the
+        layer's profile ``g = κₙ c xⁿ γₙ(x/h)`` (L4) of a paraboloid or power law, the flat punch's ``0`` under its
+        face (``+inf`` beyond), and the tables' stiffnesses.
+
+        Parameters
+        ----------
+        params : Parameters
+            The material.
+        indenter : Paraboloid, PowerLaw or FlatPunch
+            The indenter.
+        layer : Layer
+            The layer (bonded base).
+
+        Returns
+        -------
+        SpringFactors or PunchSpringFactors
+            The springs' factors (:mod:`mdr_events.theory.layer.spring_factors`).
+        """
+        return cls._spring_type()(indenter, params.E_star, params.G_star, params.nu, layer)
+
+    @staticmethod
+    def _spring_type() -> type:
+        from mdr_events.theory.layer.spring_factors import SpringFactors
+
+        return SpringFactors
+
     @staticmethod
     def force_reader(params: Parameters, indenter, layer: Layer) -> Callable[[Any, Any], np.ndarray]:
         """``F_N(d, a) = F₀(a) + K(a)(d − g(a))`` (generalised (10), :func:`~mdr_events.theory.layer.normal_force`),
@@ -158,6 +186,12 @@ class PunchNormal(ProfileNormal):
         from .layer_punch_branch import LayerPunchBranch
 
         return LayerPunchBranch(params, work, indenter, layer, factors)
+
+    @staticmethod
+    def _spring_type() -> type:
+        from mdr_events.theory.layer.spring_factors import PunchSpringFactors
+
+        return PunchSpringFactors
 
     @staticmethod
     def force_reader(params: Parameters, indenter, layer: Layer) -> Callable[[Any, Any], np.ndarray]:

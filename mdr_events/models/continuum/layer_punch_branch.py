@@ -12,6 +12,7 @@ half-space's :class:`~.branch.FlatPunchBranch`'s jump, Kendall's depth on the la
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -32,6 +33,19 @@ __all__ = ["LayerPunchBranch", "FACE_SHARE"]
 #: ``MAX_RADIUS_RTOL``), as ``PIECE_SHARE``: a root of the face's radius lands within
 #: it at any allowed tolerance, and no root a whole share below it is taken for the face.
 FACE_SHARE = 10.0 * MAX_RADIUS_RTOL
+#: The receding radii kept (:func:`_receding_radius`): one per medium and face, as many as the media's factors
+#: (``media.FACTOR_CACHE``).
+RECEDING_CACHE = 256
+
+
+@functools.lru_cache(maxsize=RECEDING_CACHE)
+def _receding_radius(factors: NormalFactors, face: float) -> float:
+    """:func:`~mdr_events.theory.layer.punch_recession.receding_radius`, kept: it depends on the layer's factors (one
+    object per medium, :func:`~.media.layer_medium` keeps them) and the face alone, not on the work, and a run's two
+    branches (``Δγ0``, ``Δγ1``) and every run of the same contact ask it again (a scan of 97 radii and Brent's method,
+    0.1 ms each)."""
+    return receding_radius(factors, face)
+
 
 class LayerPunchBranch(LayerBranch):
     r"""The branch of work ``work`` of a flat punch of radius ``a₀`` on ``layer``: ``d(a) = −Δl(a)`` for ``a <= a₀``.
@@ -82,8 +96,8 @@ class LayerPunchBranch(LayerBranch):
     def _jump_off_radius(self) -> float:
         """The largest radius ``<= a₀`` where the recession stops, ``dΔl/da = 0``
         (:func:`~mdr_events.theory.layer.punch_recession.receding_radius`; the face itself where ``Δl`` does not fall
-        there)."""
-        return receding_radius(self.factors, self.face)
+        there), kept per factors and face (:func:`_receding_radius`)."""
+        return _receding_radius(self.factors, self.face)
 
     def _key(self) -> tuple:
         return (*_branch_key(self), self.face)

@@ -37,7 +37,7 @@ from mdr_events.theory import power_law, symbolic, tabulated
 if TYPE_CHECKING:
     from .anchors import AnchorMap, Piece
 
-__all__ = ["HalfSpaceMedium", "HALF_SPACE_MEDIUM", "medium_of", "check_law", "check_face", "layer_medium",
+__all__ = ["HalfSpaceMedium", "HALF_SPACE_MEDIUM", "medium_of", "check_law", "layer_medium",
            "FACTOR_CACHE"]
 
 
@@ -252,9 +252,9 @@ HALF_SPACE_MEDIUM = HalfSpaceMedium()
 
 def check_law(friction: FrictionLaw, layer: Layer) -> None:
     """Refuse on a finite layer a friction law the continuum's spans do not run there: Coulomb's part (each spring's
-    cap ``μ k/k_t (d − g)`` has a ratio of its own, no level is shared). ``simulate(..., method="continuum")`` runs it
-    spring by spring, with or without adhesion (:mod:`.play_run`); what reads the spans' solution itself (a continuum
-    sweep's quantities, ``solve_path``) refuses it.
+    cap ``μ k/k_t (d − g)`` has a ratio of its own, no level is shared). ``simulate(..., method="continuum")`` and a
+    continuum sweep run it spring by spring, with or without adhesion (:mod:`.play_run`,
+    :mod:`mdr_events.analysis.play_sweep`); what reads the spans' solution itself (``solve_path``) refuses it.
 
     Parameters
     ----------
@@ -270,37 +270,8 @@ def check_law(friction: FrictionLaw, layer: Layer) -> None:
     """
     if not layer.is_half_space and friction.coulomb_mu > 0.0:
         raise ValueError(f"friction={friction.law!r} is not allowed on {layer.describe()} in the continuum's spans (what "
-                         "a continuum sweep and solve_path read); allowed: 'tau0' (Coulomb's part runs on a layer "
-                         "spring by spring in simulate(..., method='continuum'), and sweeps in method='discrete')")
-
-
-def check_face(indenter, layer: Layer, friction: FrictionLaw) -> None:
-    """Refuse a flat face on a finite layer with Coulomb's part: the continuum runs Coulomb's part on a layer spring by
-    spring (:mod:`.play_springs`), reading the layer's profile tabulated for a paraboloid or power law; with ``τ0``
-    alone the spans run it (:class:`~.layer_punch_branch.LayerPunchBranch`: the face held, then receding under it
-    along ``d = −Δl(a)``), and the discrete method runs every law (each spring at its own Heß limit).
-
-    Parameters
-    ----------
-    indenter : PowerLaw, FlatPunch, TabulatedProfile or None
-        The indenter.
-    layer : Layer
-        The body.
-    friction : FrictionLaw
-        The friction law.
-
-    Raises
-    ------
-    ValueError
-        A flat face on a layer of finite thickness with a law with Coulomb's part.
-    """
-    from mdr_events.theory.kinds import theory_of
-
-    if not layer.is_half_space and theory_of(indenter).flat_face and friction.coulomb_mu > 0.0:
-        raise ValueError(f"friction={friction.law!r} with profile={indenter!r} is not allowed on {layer.describe()} "
-                         "in the continuum method: Coulomb's part runs there spring by spring on the layer's profile "
-                         "tabulated for a paraboloid or power law; allowed: friction 'tau0' (the spans: the face "
-                         "held, then receding under it), or method='discrete'")
+                         "solve_path reads); allowed: 'tau0' (Coulomb's part runs on a layer spring by spring in "
+                         "simulate(..., method='continuum') and a continuum sweep, and in method='discrete')")
 
 
 def medium_of(params: Parameters, friction: FrictionLaw, profile, layer: Layer = HALF_SPACE) -> HalfSpaceMedium:

@@ -190,13 +190,14 @@ def _remembered(function: Callable[[np.ndarray], np.ndarray]) -> Callable[[np.nd
 def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: Layer):
     """``g``, ``k_t/G*`` and ``μ k/k_t`` of the discrete model's :class:`~mdr_events.models.spring_media.LayerSprings`
     with the same arithmetic, their bit for bit, the three read in one evaluation of the tables' splines
-    (:class:`~mdr_events.theory.layer.spring_factors.SpringFactors`, unchecked: a run evaluates them some thousand
+    (:class:`~mdr_events.theory.layer.spring_factors.SpringFactors`, the flat punch's ``PunchSpringFactors``: by the
+    indenter's kind, :data:`~.layer_normals.LAYER_NORMALS`; unchecked: a run evaluates them some thousand
     times on arrays of radii within its contact, which the layer's reach check has bounded before,
     :mod:`.layer_reach`) and remembered for the last coordinates asked (one evaluation of the route asks the same
     springs' ``g``, ``k_t`` and ratios several times)."""
-    from mdr_events.theory.layer.spring_factors import SpringFactors
+    from .layer_normals import LAYER_NORMALS
 
-    factors = SpringFactors(indenter, params.E_star, params.G_star, params.nu, layer)
+    factors = LAYER_NORMALS[type(indenter)].spring_factors(params, indenter, layer)
     G_star, mu = params.G_star, friction.coulomb_mu
 
     def springs(xi):

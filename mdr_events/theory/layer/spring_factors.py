@@ -29,7 +29,7 @@ from mdr_events.theory.layer.tables import LAMBDA_MIN, layer_table
 from mdr_events.theory.layer.tangential_punch import _slope
 from mdr_events.theory.layer.tangential_tables import LAMBDA_MIN as TANGENTIAL_LAMBDA_MIN, tangential_table
 
-__all__ = ["SpringValues", "SpringFactors"]
+__all__ = ["SpringValues", "SpringFactors", "PunchSpringFactors"]
 
 #: The columns of the one spline: the normal tables' ``γₙ`` (of the profile's ``n``) and ``Θ(1)`` (of ``n = 2``, as
 #: :func:`~.relations.spring_stiffness_density` reads it), then the tangential table's four.
@@ -75,7 +75,7 @@ class SpringFactors:
         if layer.is_half_space or layer.base is not LayerBase.BONDED:
             raise ValueError(f"layer={layer!r} is not allowed; allowed: a layer of finite thickness on a bonded base "
                              "(the half-space's springs need no table, a frictionless base has no tangential ones)")
-        c, n = _power_law(profile)
+        c, n = self._power(profile)
         normal, edge, tangential = layer_table(nu, layer.base, n), layer_table(nu, layer.base), tangential_table(nu)
         splines = [*(table._splines[name] for table, name in zip((normal, edge), _NORMAL_COLUMNS)),
                    *(tangential._splines[name] for name in _TANGENTIAL_COLUMNS)]
@@ -89,6 +89,15 @@ class SpringFactors:
         #: ``κₙ c`` of ``g∞ = κₙ c xⁿ`` (3)
         self.scale = _abel_factor(n) * c
         self._tables = (normal, edge, tangential)
+
+    @staticmethod
+    def _power(profile) -> tuple[float, float]:
+        """``c`` and ``n`` of the profile ``f = c rⁿ`` whose layer's table ``γₙ`` gives ``g``."""
+        return _power_law(profile)
+
+    def _profile(self, x: np.ndarray, gamma: np.ndarray) -> np.ndarray:
+        """``g(x) = κₙ c xⁿ γₙ(x/h)`` (L4) at ``|x|``."""
+        return self.scale * x**self.n * gamma
 
     def _factors(self, lam: np.ndarray) -> tuple[np.ndarray, ...]:
         """``γₙ``, ``Θ(1)``, ``Φ_L``, ``Φ_T``, ``Ψ_L(1)``, ``Ψ_T(1)`` at ``λ`` as the tables give them."""
@@ -119,6 +128,39 @@ class SpringFactors:
         """
         x = np.abs(np.asarray(x, dtype=float))
         gamma, theta, phi_l, phi_t, edge_l, edge_t = self._factors(x / self.h)
-        return SpringValues(self.scale * x**self.n * gamma, self.E_star * theta * theta,
+        return SpringValues(self._profile(x, gamma), self.E_star * theta * theta,
                             self.G_star * _slope(self.nu, phi_l, phi_t, edge_l, edge_t))
 
+
+class PunchSpringFactors(SpringFactors):
+    """``g``, ``k`` and ``k_t`` of the flat punch's springs on a bonded layer: ``g = 0`` under the face and ``+inf``
+    beyond it (no spring there is ever touched), the discrete model's
+    (:meth:`~mdr_events.models.spring_media.LayerSprings.profile`), ``k`` and ``k_t`` as :class:`SpringFactors`
+    (``f = 0`` under the face makes ``g = 0`` on any layer, (L4); the normal table of ``n = 2`` gives ``Θ(1)``, its
+    ``γ₂`` unread).
+
+    Parameters
+    ----------
+    profile : FlatPunch
+        The punch.
+    E_star, G_star, nu, layer
+        As :class:`SpringFactors`.
+
+    Raises
+    ------
+    ValueError
+        As :class:`SpringFactors`.
+    """
+
+    def __init__(self, profile, E_star: float, G_star: float, nu: float, layer: Layer):
+        #: the face's radius ``a₀`` (m)
+        self.face = float(profile.radius)
+        super().__init__(profile, E_star, G_star, nu, layer)
+
+    @staticmethod
+    def _power(profile) -> tuple[float, float]:
+        return 0.0, 2.0  # (the normal table of n = 2 for Θ(1); its γ₂ unread: g is the face's, :meth:`_profile`)
+
+    def _profile(self, x: np.ndarray, gamma: np.ndarray) -> np.ndarray:
+        """``0`` under the face, ``+inf`` beyond it (``|x|``)."""
+        return np.where(x <= self.face, 0.0, np.inf)
