@@ -173,17 +173,9 @@ def test_a_path_file_and_a_parameters_file(capsys, paper, runs, tmp_path):
     assert other.attrs["param_tau0"] == 60e3 and other.attrs["parameters_from_preset"].count("tau0") == 0
 
 
-def without_run_figures(monkeypatch) -> None:
-    """Each run's report rendered with its Markdown but an empty figure (no drawing, some 0.5 s of CPU a run), for a
-    test that checks something else than the runs' figures (drawn and checked by the tests above; make test's time,
-    issue 28 item 4)."""
-    monkeypatch.setattr(validation_files, "render_validation", lambda report, stem: validation_files.RenderedReport(
-        stem, report, validation_markdown(report, stem), b""))
-
-
-def test_three_spacings_give_a_convergence_study(capsys, paper, tmp_path, monkeypatch):
+def test_three_spacings_give_a_convergence_study(capsys, paper, tmp_path, without_run_figures):
     pytest.importorskip("mdr_events.analysis.convergence_study")
-    without_run_figures(monkeypatch)  # (the study's figure is drawn)
+    without_run_figures()  # (the study's figure is drawn)
     names = []
     for dx in (8e-6, 4e-6, 2e-6):
         run = discrete_run(paper, dx)
@@ -303,7 +295,7 @@ def copy_runs(runs: Path, folder: Path) -> None:
         shutil.copy(runs / name, folder / "runs" / name)
 
 
-def test_a_study_validates_its_runs(capsys, runs, tmp_path, monkeypatch):
+def test_a_study_validates_its_runs(capsys, runs, tmp_path, without_run_figures):
     copy_runs(runs, tmp_path)
     (tmp_path / "study.toml").write_text(STUDY)
     assert main(["run", str(tmp_path / "study.toml")]) == 1  # wrong.csv fails
@@ -313,7 +305,7 @@ def test_a_study_validates_its_runs(capsys, runs, tmp_path, monkeypatch):
         f"demo_validation_{run}.{suffix}" for run in ("run", "wrong") for suffix in ("md", "nc", "png")]
     right = me.open_result(tmp_path / "out" / "demo_validation_run.nc")
     assert right.attrs["verdict"] == "pass" and right.attrs["path_description"] == "scenario A, α = 20°"
-    without_run_figures(monkeypatch)  # (the same study again, for its verdicts)
+    without_run_figures()  # (the same study again, for its verdicts)
     outcomes = me.run_study(load_study(tmp_path / "study.toml"), progress=lambda message: None)
     assert outcomes.verdicts == {"runs/run.csv": "pass", "runs/wrong.csv": "fail"}
 
