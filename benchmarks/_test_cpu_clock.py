@@ -25,6 +25,12 @@ def _cpu() -> float:
     return used.user + used.system + used.children_user + used.children_system
 
 
+def _children_cpu() -> float:
+    """The CPU time of the process's children waited for (s): the subprocesses a test ran."""
+    used = os.times()
+    return used.children_user + used.children_system
+
+
 def _write(record: dict) -> None:
     worker = os.environ.get("PYTEST_XDIST_WORKER", "main")
     with open(f"{os.environ[OUT_VARIABLE]}_{worker}.jsonl", "a", encoding="utf-8") as stream:
@@ -39,9 +45,10 @@ def pytest_collection_finish(session) -> None:
 @pytest.hookimpl(hookwrapper=True)
 def pytest_runtest_protocol(item, nextitem):
     """One test's setup, call and teardown."""
-    cpu, wall = _cpu(), time.perf_counter()
+    cpu, children, wall = _cpu(), _children_cpu(), time.perf_counter()
     yield
-    _write({"id": item.nodeid, "cpu": _cpu() - cpu, "wall": time.perf_counter() - wall})
+    _write({"id": item.nodeid, "cpu": _cpu() - cpu, "children": _children_cpu() - children,
+            "wall": time.perf_counter() - wall, "end": time.time()})
 
 
 def pytest_unconfigure(config) -> None:

@@ -12,7 +12,7 @@ subprocesses' (``_test_cpu_clock.py``), and prints:
 - the CPU of ``pytest --collect-only -q`` alone, which every worker pays before its first test;
 - the slowest modules and tests (the candidates for a cheaper test or the ``slow`` mark).
 
-Run: ``python benchmarks/bench_tests.py [--workers N] [--top N] [-- PYTEST_ARGS...]`` from the clone's root (the
+Run: ``python benchmarks/bench_tests.py [--workers N] [--dist MODE] [--top N] [--keep FILE] [-- PYTEST_ARGS...]`` from the clone's root (the
 arguments after ``--`` replace the test selection, e.g. ``-- tests/theory``).
 """
 
@@ -78,6 +78,14 @@ def report(records: list[dict], wall: float, collection: float, top: int) -> Non
         print(f"  worker {worker}: CPU {share:.1f} s (start-up and collection included), target <= "
               f"{WORKER_TARGET:.0f} s: {'met' if share <= WORKER_TARGET else 'NOT met'}")
     print(f"  pytest --collect-only -q alone: CPU {collection:.1f} s (paid by every worker)")
+    children = sum(record.get("children", 0.0) for record in tests)
+    print(f"  the tests' subprocesses: CPU {children:.1f} s of the total")
+    ends = collections.defaultdict(float)
+    for record in tests:
+        ends[record["worker"]] = max(ends[record["worker"]], record.get("end", 0.0))
+    if len(ends) > 1:
+        print(f"  tail: the last worker ended {max(ends.values()) - min(ends.values()):.1f} s of wall after the first "
+              "(the wall time one worker idled)")
     print("  slowest modules (CPU s):")
     for module, cpu in modules.most_common(top):
         print(f"    {cpu:7.1f}  {module}")
@@ -90,6 +98,8 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--workers", type=int, default=2, help="pytest-xdist workers (default 2, the machine's cores)")
     parser.add_argument("--top", type=int, default=20, help="modules and tests listed (default 20)")
+    parser.add_argument("--dist", default="loadscope", help="pytest-xdist's distribution (default loadscope, make test's)")
+    parser.add_argument("--keep", type=Path, help="a file to write every test's record to (JSON lines)")
     parser.add_argument("selection", nargs="*", help="pytest's arguments instead of the quick round's (after --)")
     options = parser.parse_args()
     selection = options.selection or ["-m", "not slow"]
@@ -98,9 +108,12 @@ def main() -> None:
         prefix = str(Path(scratch) / "clock")
         start = time.perf_counter()
         subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-p", "_test_cpu_clock",
-                        "-n", str(options.workers), "--dist", "loadscope", *selection], cwd=ROOT,
+                        "-n", str(options.workers), "--dist", options.dist, *selection], cwd=ROOT,
                        env=_environment(prefix), check=False)
-        report(_records(prefix), time.perf_counter() - start, collection, options.top)
+        records = _records(prefix)
+        report(records, time.perf_counter() - start, collection, options.top)
+        if options.keep:
+            options.keep.write_text("".join(json.dumps(record) + "\n" for record in records), encoding="utf-8")
 
 
 if __name__ == "__main__":

@@ -74,3 +74,18 @@ def command(capsys, monkeypatch):
         return subprocess.CompletedProcess(list(args), status, out, err)
 
     return run
+
+
+@pytest.fixture
+def without_run_figures(monkeypatch):
+    """``without_run_figures()``: from then on in the test, each validated run's report is rendered with its Markdown
+    but an empty figure (no drawing: some 0.5 s of CPU a run), for a test that checks something else than the runs'
+    figures (drawn and checked by tests/app/test_validate_cli.py's other tests; make test's time, issue 28 item 4)."""
+    from mdr_events.app import validation_files
+
+    def patch() -> None:
+        monkeypatch.setattr(validation_files, "render_validation", lambda report, stem: validation_files.RenderedReport(
+            stem, report, validation_markdown(report, stem), b""))
+
+    validation_markdown = validation_files.validation_markdown
+    return patch

@@ -244,7 +244,8 @@ def test_a_run_that_ends_at_its_last_sample_in_contact_is_validated(tmp_path, sp
         me.validate(early, PAPER, "A", 20.0)
 
 
-def test_the_cli_validates_one_angle_of_the_package_s_multi_angle_output(capsys, tmp_path):
+def test_the_cli_validates_one_angle_of_the_package_s_multi_angle_output(capsys, tmp_path, without_run_figures):
+    without_run_figures()  # (the angle's report is what is checked; a report's figure is checked in test_validate_cli)
     several = me.simulate(PAPER, "A", alpha=[10.0, 20.0], dx=4e-6, dt=0.5 * 4e-6 / PAPER.v)
     write_netcdf(several, tmp_path / "both.nc")
     status = main(["validate", str(tmp_path / "both.nc"), "--scenario", "A", "--alpha", "20", "--tolerance", "1e-2",

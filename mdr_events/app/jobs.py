@@ -253,17 +253,19 @@ class ValidateJob:
         return dict(names=dict(self.names), units=dict(self.units), time_origin=self.time_origin, limits=self.limits)
 
     def compute(self, progress: Progress | None = None) -> Validated:
-        """Validate every run (and the convergence study) and render the files; nothing is written."""
+        """Validate every run, then render the files (no figure is drawn before every run is judged, so that a bad run
+        is refused without the others' figures), and the convergence study; nothing is written."""
         from mdr_events.analysis.validate import validate
         from mdr_events.app.validation_files import render_validation
 
         reports = []
-        for run, file, stem in zip(self.runs, self.files, self.stems):
+        for file in self.files:
             report = validate(file, self.contact, self.motion, tolerance=self.tolerance, progress=progress,
                               **self._options())
             report.attrs.update(self.provenance, path_description=self.description)
-            reports.append((run, render_validation(report, stem)))
-        return Validated(reports, None if self.spacings is None else self._convergence())
+            reports.append(report)
+        rendered = [(run, render_validation(report, stem)) for run, report, stem in zip(self.runs, reports, self.stems)]
+        return Validated(rendered, None if self.spacings is None else self._convergence())
 
     def _convergence(self) -> Convergence:
         """The convergence study of the runs by spacing, computed and drawn."""

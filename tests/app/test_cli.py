@@ -139,7 +139,7 @@ def test_cli_results_say_which_parameters_came_from_the_preset(capsys, tmp_path)
     assert ds.attrs["parameters_from_preset"] == "E, nu, R, dgamma0, dgamma1, d_max, v"
 
 
-def test_simulate_and_validate_take_a_power_law(capsys, tmp_path):
+def test_simulate_and_validate_take_a_power_law(capsys, tmp_path, without_run_figures):
     """--power-law C N: the simulation names its profile (attribute and figure title, not the paper's figure
     number); the discrete run passes validate against the same indenter and fails against the paraboloid."""
     status, out, _ = run(capsys, "simulate", "--scenario", "A", "--alpha", "20", "--dx", "2e-6", "--power-law", "2000",
@@ -155,6 +155,7 @@ def test_simulate_and_validate_take_a_power_law(capsys, tmp_path):
     common = ["validate", str(candidate), "--scenario", "A", "--alpha", "20", "--preset", "paper-R30"]
     status, out, _ = run(capsys, *common, "--power-law", "2000", "3", "--out", str(tmp_path / "right"))
     assert status == 0 and "1 pass, 0 fail" in out
+    without_run_figures()  # (a failing report's figure is drawn in tests/app/test_validate_cli.py)
     status, out, _ = run(capsys, *common, "--out", str(tmp_path / "wrong"))
     assert status == 1 and "0 pass, 1 fail" in out
 

@@ -236,7 +236,8 @@ def test_validate_of_the_rate_law_on_the_command_line_is_the_apis_bit_for_bit(ca
     assert direct.attrs["adhesion_law"] == "rate_dependent"
 
 
-def test_a_study_s_validate_of_the_rate_law_is_the_apis_bit_for_bit(tmp_path):
+def test_a_study_s_validate_of_the_rate_law_is_the_apis_bit_for_bit(tmp_path, without_run_figures):
+    without_run_figures()  # (the report's figure of the rate law is drawn on the command line above)
     run = _rate_run_file(tmp_path)
     study = load_study(study_file(tmp_path, f'[validate]\nruns = ["{run}"]\nscenario = "A"\nalpha = 20\n'
                                   + RATE_TABLE))

@@ -18,6 +18,7 @@ import mdr_events as me
 from mdr_events.analysis.convergence import slip_onset_delay_bound
 from mdr_events.app.cli import main
 from mdr_events.models.continuum import solve_path
+from mdr_events.app import validation_files
 from mdr_events.app.study import load_study
 from mdr_events.app.validation_files import validation_markdown, write_validation
 from mdr_events.plotting.validation import plot_validation
@@ -172,8 +173,9 @@ def test_a_path_file_and_a_parameters_file(capsys, paper, runs, tmp_path):
     assert other.attrs["param_tau0"] == 60e3 and other.attrs["parameters_from_preset"].count("tau0") == 0
 
 
-def test_three_spacings_give_a_convergence_study(capsys, paper, tmp_path):
+def test_three_spacings_give_a_convergence_study(capsys, paper, tmp_path, without_run_figures):
     pytest.importorskip("mdr_events.analysis.convergence_study")
+    without_run_figures()  # (the study's figure is drawn)
     names = []
     for dx in (8e-6, 4e-6, 2e-6):
         run = discrete_run(paper, dx)
@@ -235,7 +237,10 @@ A20 = ["--scenario", "A", "--alpha", "20"]
     (["run.csv", *A20, "--dx", "1e-6", "2e-6"], "--dx has 2 values and there are 1 runs"),
 ])
 def test_bad_input_is_one_line_exit_2_and_writes_nothing(capsys, runs, tmp_path, monkeypatch, argv, fragment):
+    """Refused before anything is written, and before any run's figure is drawn (every run is judged first)."""
     monkeypatch.chdir(tmp_path)
+    drawn = []
+    monkeypatch.setattr(validation_files, "render_validation", lambda report, stem: drawn.append(stem))
     for name in ("run.csv", "wrong.csv"):
         shutil.copy(runs / name, tmp_path / name)
     (tmp_path / "sub").mkdir()
@@ -250,6 +255,7 @@ def test_bad_input_is_one_line_exit_2_and_writes_nothing(capsys, runs, tmp_path,
     assert_one_error_line(err, fragment)
     assert out == ""
     assert not (tmp_path / "out").exists()
+    assert drawn == []
 
 
 def test_a_netcdf_run_is_read_and_never_overwritten(capsys, paper, tmp_path):
@@ -289,7 +295,7 @@ def copy_runs(runs: Path, folder: Path) -> None:
         shutil.copy(runs / name, folder / "runs" / name)
 
 
-def test_a_study_validates_its_runs(capsys, runs, tmp_path):
+def test_a_study_validates_its_runs(capsys, runs, tmp_path, without_run_figures):
     copy_runs(runs, tmp_path)
     (tmp_path / "study.toml").write_text(STUDY)
     assert main(["run", str(tmp_path / "study.toml")]) == 1  # wrong.csv fails
@@ -299,6 +305,7 @@ def test_a_study_validates_its_runs(capsys, runs, tmp_path):
         f"demo_validation_{run}.{suffix}" for run in ("run", "wrong") for suffix in ("md", "nc", "png")]
     right = me.open_result(tmp_path / "out" / "demo_validation_run.nc")
     assert right.attrs["verdict"] == "pass" and right.attrs["path_description"] == "scenario A, α = 20°"
+    without_run_figures()  # (the same study again, for its verdicts)
     outcomes = me.run_study(load_study(tmp_path / "study.toml"), progress=lambda message: None)
     assert outcomes.verdicts == {"runs/run.csv": "pass", "runs/wrong.csv": "fail"}
 
@@ -335,8 +342,11 @@ directory = "out"
     ("units = { time = 'fortnight' }", "run.csv: units['time']='fortnight' is not allowed"),
     ("alpha = 95", "[validate] alpha=95.0 (degrees) is not allowed"),
 ])
-def test_a_bad_run_in_a_study_writes_nothing(capsys, runs, tmp_path, change, fragment):
-    """The runs are validated before anything of the study is written, also its simulation."""
+def test_a_bad_run_in_a_study_writes_nothing(capsys, runs, tmp_path, monkeypatch, change, fragment):
+    """The runs are validated before anything of the study is written, also its simulation, and before any run's
+    figure is drawn."""
+    drawn = []
+    monkeypatch.setattr(validation_files, "render_validation", lambda report, stem: drawn.append(stem))
     copy_runs(runs, tmp_path)
     key = change.split(" = ")[0]
     lines = [line for line in STUDY.splitlines() if not line.startswith(f"{key} = ")]
@@ -347,7 +357,7 @@ def test_a_bad_run_in_a_study_writes_nothing(capsys, runs, tmp_path, change, fra
     err = capsys.readouterr().err
     last = err.splitlines()[-1]
     assert fragment in last and f"{tmp_path / 'study.toml'}: [validate] " in last
-    assert not (tmp_path / "out").exists()
+    assert not (tmp_path / "out").exists() and drawn == []
 
 
 def test_the_figure_and_summary_are_drawn_from_the_report_only(paper, runs, tmp_path):
