@@ -493,26 +493,99 @@ class ScanMatrix(NamedTuple):
 def scan_spans(solution: PathSolution) -> ExtremumScan:
     """Sample every span for :func:`extremum` (one scan serves every quantity and both extremes): evenly in
     time on a pinned radius, evenly in the radius on a moving one (the variable of its interpolant; the time
-    of each radius that of its depth on the branch, which needs no root)."""
-    times, values = [], []
-    for index, span in enumerate(solution.spans):
-        lower, upper = span.t_start - solution.t_contact, span.t_end - solution.t_contact
-        count = EXTREMUM_GRID if upper > lower else 1
-        if span.regime in (Regime.GROWING, Regime.SHRINKING):
-            grid, radii = _radius_grid(solution, span, lower, upper, count)
-        else:
-            grid, radii = np.linspace(lower, upper, count), None
-        times.append(grid)
-        values.append(evaluate_span(solution, index, grid, sliding=False, radii=radii, normal=False))
+    of each radius that of its depth on the branch, which needs no root).
+
+    The grids of all spans are built at once (:func:`_scan_grids`: each branch's depths in one call, the grids as the
+    rows of one matrix), then each span is evaluated on its own (:func:`evaluate_span`, its own interpolant) and
+    ``F_N`` of all of them in one call (:func:`_fill_normal_force`); every value is the one a span alone would give."""
+    grids, radii = _scan_grids(solution)
+    values = [evaluate_span(solution, index, grid, sliding=False, radii=radius, normal=False)
+              for index, (grid, radius) in enumerate(zip(grids, radii))]
     _fill_normal_force(solution.model, values)
-    return ExtremumScan(times, values, {})
+    return ExtremumScan(grids, values, {})
+
+
+def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarray | None]]:
+    """Each span's scan times (s from first contact) and, on a moving span, the radii there (``None`` elsewhere):
+    :data:`EXTREMUM_GRID` points on a span of positive length, its start alone on one of none. A pinned span's times
+    evenly spaced (``np.linspace``); a moving span's radii evenly spaced from the radius at its start to that at its
+    end (roots of their depths: :meth:`~.branch.Branch.radius`, each depth once, a span's end being the next span's
+    start) and the time of each radius that of its depth on the branch, made non-decreasing, as
+    :func:`_radius_grid` gives them span by span (``tests/models/test_extremum_scan.py`` compares the two)."""
+    spans, t_contact = solution.spans, solution.t_contact
+    bounds = [(span.t_start - t_contact, span.t_end - t_contact) for span in spans]
+    grids: list = [None] * len(spans)
+    radii: list = [None] * len(spans)
+    roots: dict = {}  # (the branch, the depth) -> the radius
+    for regime in (Regime.GROWING, Regime.SHRINKING):
+        members = [index for index, span in enumerate(spans) if span.regime is regime]
+        if not members:
+            continue
+        branch, rtol = solution.model.branch(regime), solution.model.tolerances.radius_rtol
+
+        def root(index: int, t: float) -> float:
+            depth = max(float(spans[index].segment.d(t_contact + t)), branch.jump_off_depth)
+            if depth not in roots:
+                roots[depth] = branch.radius(depth, rtol)
+            return roots[depth]
+
+        whole = [index for index in members if bounds[index][1] > bounds[index][0]]
+        for index in members:
+            if index not in whole:  # (a span of no length: its start alone)
+                grids[index], radii[index] = np.array([bounds[index][0]]), np.array([root(index, bounds[index][0])])
+        if whole:
+            _moving_grids(solution, branch, whole, [[root(index, t) for t in bounds[index]] for index in whole],
+                          grids, radii)
+        roots.clear()  # (the other branch's radii are other roots)
+    for index, span in enumerate(spans):
+        if grids[index] is None:
+            lower, upper = bounds[index]
+            grids[index] = np.linspace(lower, upper, EXTREMUM_GRID if upper > lower else 1)
+    return grids, radii
+
+
+def _moving_grids(solution: PathSolution, branch, members: list[int], ends: list[list[float]], grids: list,
+                  radii: list) -> None:
+    """:func:`_scan_grids` of the moving spans ``members`` of one branch with the radii at their ``ends``: their radii
+    and times as the rows of two matrices, the depths of all their inner radii in one call of the branch's
+    :meth:`~.branch.Branch.depths` (element by element: the values of a call per span); each row stored in ``grids``
+    and ``radii`` at its span's index."""
+    spans, t_contact = solution.spans, solution.t_contact
+    start, stop = (np.array([end[k] for end in ends]) for k in (0, 1))
+    matrix = _linspace_rows(start, stop, EXTREMUM_GRID)
+    depths = branch.depths(np.ascontiguousarray(matrix[:, 1:-1]).reshape(-1)).reshape(len(members), -1)
+    segments = [spans[index].segment for index in members]
+    t0, ds, vd = (np.array([getattr(segment, name) for segment in segments])[:, None] for name in ("t0", "ds", "vd"))
+    lower = np.array([spans[index].t_start - t_contact for index in members])[:, None]
+    upper = np.array([spans[index].t_end - t_contact for index in members])[:, None]
+    inner = (t0 + (depths - ds) / vd) - t_contact  # (Segment.time_at_depth, row by row)
+    times = np.concatenate([lower, np.clip(inner, lower, upper), upper], axis=1)
+    np.maximum.accumulate(times, axis=1, out=times)
+    for row, index in enumerate(members):
+        grids[index], radii[index] = times[row], matrix[row]
+
+
+def _linspace_rows(start: np.ndarray, stop: np.ndarray, count: int) -> np.ndarray:
+    """``np.linspace(start[i], stop[i], count)`` as the rows of one matrix, each row the values ``np.linspace`` gives
+    it alone (its own step: ``np.linspace`` of arrays takes the denormal route for every row if any row's step is 0)."""
+    delta = stop - start
+    positions = np.arange(count, dtype=float)
+    step = delta / (count - 1)
+    rows = positions[None, :] * step[:, None]
+    zero = step == 0
+    if zero.any():  # (np.linspace's route for a step of 0: the positions over the divisions, times the difference)
+        rows[zero] = (positions / (count - 1))[None, :] * delta[zero][:, None]
+    rows += start[:, None]
+    rows[:, -1] = stop
+    return rows
 
 
 def _radius_grid(solution: PathSolution, span: Span, lower: float, upper: float,
                  count: int) -> tuple[np.ndarray, np.ndarray]:
     """``count`` radii evenly from the radius at ``lower`` to that at ``upper`` (s from first contact; the
     span's ends, whose radii are roots of their depths) along the span's branch, and their times (in
-    ``[lower, upper]``, non-decreasing)."""
+    ``[lower, upper]``, non-decreasing): a moving span's scan alone (:func:`_scan_grids` builds every span's at once;
+    this one its reference in the tests)."""
     branch, rtol = solution.model.branch(span.regime), solution.model.tolerances.radius_rtol
     ends = [branch.radius(max(float(span.segment.d(solution.t_contact + t)), branch.jump_off_depth), rtol)
             for t in (lower, upper)]

@@ -1,0 +1,91 @@
+"""The extrema's scan and the fill of a run's samples built for all spans at once (issue 28: one pass over the spans)
+against the routes span by span they replace, kept here as references: the same values bit for bit, since every
+value is computed by the same operations element by element (a call over several spans' points gives each point the
+value a call over its span's alone gives)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.indenters import PowerLaw
+from mdr_events.models.continuum import solve_path
+from mdr_events.models.continuum import solution as S
+from mdr_events.models.continuum.state import Regime
+
+PAPER = me.Parameters.paper()
+HERTZ = PAPER.replace(dgamma0=0.0, dgamma1=0.0)
+ZIGZAG = [(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)]
+
+
+def _table():
+    radii = np.linspace(0.0, 4e-3, 41)
+    return me.TabulatedProfile(radii, radii**2 / (2 * PAPER.R))
+
+
+#: label -> (params, path, solve_path's keywords): the spans of every kind the scan meets (closed forms, DOP853's
+#: steps, a table's panels, linear forces, constants), both branches with several spans each, Coulomb's compressed
+#: zone, a layer.
+CASES = {
+    "A 20°": lambda: (PAPER, me.Path.scenario_A(20.0, PAPER), {}),
+    "B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER), {}),
+    "zigzag": lambda: (PAPER, me.Path(ZIGZAG, PAPER.v), {}),
+    "table, A 20°": lambda: (PAPER, me.Path.scenario_A(20.0, PAPER, profile=_table()), {"profile": _table()}),
+    "cone, B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER, profile=PowerLaw.cone(0.05)),
+                            {"profile": PowerLaw.cone(0.05)}),
+    "Hertz, Coulomb, A 20°": lambda: (HERTZ, me.Path.scenario_A(20.0, HERTZ),
+                                      {"friction": FrictionLaw("coulomb", mu=0.3)}),
+    "Coulomb with adhesion, B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER),
+                                             {"friction": FrictionLaw("coulomb", mu=0.3)}),
+    "thin layer, zigzag": lambda: (PAPER, me.Path(ZIGZAG, PAPER.v), {"layer": me.Layer(1e-3)}),
+}
+
+
+def _reference_scan(solution):
+    """``scan_spans`` as it was, span by span: each moving span's grid by ``_radius_grid``, a pinned one's by
+    ``np.linspace``, each span evaluated alone, then ``F_N`` of all of them."""
+    times, values = [], []
+    for index, span in enumerate(solution.spans):
+        lower, upper = span.t_start - solution.t_contact, span.t_end - solution.t_contact
+        count = S.EXTREMUM_GRID if upper > lower else 1
+        if span.regime in (Regime.GROWING, Regime.SHRINKING):
+            grid, radii = S._radius_grid(solution, span, lower, upper, count)
+        else:
+            grid, radii = np.linspace(lower, upper, count), None
+        times.append(grid)
+        values.append(S.evaluate_span(solution, index, grid, sliding=False, radii=radii, normal=False))
+    S._fill_normal_force(solution.model, values)
+    return times, values
+
+
+def _runs(case):
+    params, path, options = CASES[case]()
+    solution = solve_path(params, path, **options)
+    return [solution] + ([solution.compressed] if solution.compressed is not None else [])
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_the_scan_of_all_spans_at_once_is_the_scan_span_by_span(case):
+    for run in _runs(case):
+        times, values = _reference_scan(run)
+        scan = S.scan_spans(run)
+        assert len(scan.times) == len(times) == len(run.spans)
+        for found, reference in zip(scan.times, times):
+            np.testing.assert_array_equal(found, reference)
+        for found, reference in zip(scan.values, values):
+            assert found.keys() == reference.keys()
+            for name in reference:
+                np.testing.assert_array_equal(found[name], reference[name], err_msg=name)
+
+
+def test_the_rows_of_linspace_are_linspace_row_by_row():
+    """``_linspace_rows``: each row ``np.linspace``'s own, a row of no step (equal ends) and one whose step underflows
+    to 0 (a denormal difference) among others; ``np.linspace`` of the arrays would take the zero step's route for every
+    row."""
+    start = np.array([0.0, 1.0, 2.5e-4, 5e-324, -3.0, 7.0])
+    stop = np.array([1.0, 1.0, 1.7e-3, 1e-323, 2.0, -7.0])
+    rows = S._linspace_rows(start, stop, S.EXTREMUM_GRID)
+    for row, lower, upper in zip(rows, start, stop):
+        np.testing.assert_array_equal(row, np.linspace(lower, upper, S.EXTREMUM_GRID))
