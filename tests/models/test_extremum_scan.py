@@ -13,6 +13,7 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum import solution as S
+from mdr_events.models.continuum.dense import force_values
 from mdr_events.models.continuum.state import Regime
 
 PAPER = me.Parameters.paper()
@@ -89,3 +90,27 @@ def test_the_rows_of_linspace_are_linspace_row_by_row():
     rows = S._linspace_rows(start, stop, S.EXTREMUM_GRID)
     for row, lower, upper in zip(rows, start, stop):
         np.testing.assert_array_equal(row, np.linspace(lower, upper, S.EXTREMUM_GRID))
+
+
+def _span_by_span(interpolants, points):
+    """``span_forces`` as it was: each span's interpolant called on its own points (``force_values``)."""
+    return [force_values(interpolant, where) for interpolant, where in zip(interpolants, points)]
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_the_fill_of_all_spans_at_once_is_the_fill_span_by_span(case, monkeypatch):
+    """``evaluate`` at a run's 2001 samples and at times out of order (each span's rows gathered by index), with
+    ``F_x`` of all spans by the kinds of their interpolants and with each span's own call: the same, bit for bit; so
+    is the scan."""
+    for run in _runs(case):
+        samples = np.linspace(0.0, run.end_time * (1.0 + 1.0 / 2001), 2001)
+        shuffled = np.random.default_rng(7).permutation(samples[::3])
+        found = [S.evaluate(run, times) for times in (samples, shuffled)] + [S.scan_spans(run).values]
+        with monkeypatch.context() as patch:
+            patch.setattr(S, "span_forces", _span_by_span)
+            reference = [S.evaluate(run, times) for times in (samples, shuffled)] + [S.scan_spans(run).values]
+        for got, expected in zip(found[:2], reference[:2]):
+            for name in S.EVALUATED_QUANTITIES:
+                np.testing.assert_array_equal(got[name], expected[name], err_msg=name)
+        for got, expected in zip(found[2], reference[2]):
+            np.testing.assert_array_equal(got["tangential_force"], expected["tangential_force"])

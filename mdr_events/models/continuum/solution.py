@@ -14,6 +14,7 @@ from mdr_events.contact.adhesion import Adhesion
 from mdr_events.parameters import Parameters
 from mdr_events.validation import check_real, real_array, shown
 from .dense import force_values
+from .span_forces import span_forces
 from .graded import natural_variable, span_variable
 from .model import ContinuumModel
 from .span import Span, Variable
@@ -203,7 +204,7 @@ def contact_radii(solution: PathSolution, times: np.ndarray) -> np.ndarray:
 
 def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding: bool = True,
                   zone: dict[str, np.ndarray] | None = None, radii: np.ndarray | None = None,
-                  normal: bool = True) -> dict[str, np.ndarray]:
+                  normal: bool = True, tangential: bool = True) -> dict[str, np.ndarray]:
     """Every quantity of :data:`EVALUATED_QUANTITIES` at ``times`` (s from first contact) within span
     ``index``, as a vectorised function of time: the kinematics are linear, the radius follows its
     branch of (9) (or is pinned; ``radii``, where given, are the radii at ``times``), ``F_N`` is (10), ``F_x`` is
@@ -228,6 +229,10 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     normal : bool, default True
         Whether to evaluate ``F_N``; without it a span in contact leaves ``normal_force`` out (:func:`evaluate` and
         :func:`scan_spans` fill it for every span at once, :func:`_fill_normal_force`).
+    tangential : bool, default True
+        Whether to read ``F_x`` off the span's interpolant; without it a span in contact whose force is not constant
+        (and not the compressed zone's) leaves ``tangential_force`` out (:func:`evaluate` and :func:`scan_spans` read
+        every span's at once, :func:`_fill_tangential_force`).
 
     Returns
     -------
@@ -250,11 +255,9 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     if normal:
         out["normal_force"] = np.asarray(model.normal_force(d, a), dtype=float)  # (10)
     if span.interpolant is None:
-        force = np.full(t.shape, span.force)
-    else:
-        force = force_values(span.interpolant, span_variable(span, a / span.scale if span.variable is Variable.RADIUS
-                                                            else t))
-    out["tangential_force"] = force
+        out["tangential_force"] = np.full(t.shape, span.force)
+    elif tangential or solution.compressed is not None:  # (the compressed zone's replaces it below)
+        out["tangential_force"] = force_values(span.interpolant, _force_variable(span, t, a))
     if solution.compressed is not None:
         out["tangential_force"], zone_sliding = _compressed_zone(solution.compressed, times, a, zone)
         if sliding:
@@ -267,6 +270,27 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
         np.divide(zones, a, out=fraction, where=positive)
         out["sliding_fraction"] = np.minimum(fraction, 1.0, out=fraction, where=positive)
     return out
+
+
+def _force_variable(span: Span, t: np.ndarray, radius: np.ndarray) -> np.ndarray:
+    """The variable a span's interpolant of ``F_x`` is read at, at the path's times ``t`` and the radii there: the
+    time, or the radius over the span's scale (on a graded span its ``u``)."""
+    return span_variable(span, radius / span.scale if span.variable is Variable.RADIUS else t)
+
+
+def _fill_tangential_force(solution: PathSolution, indices: list[int], times: list[np.ndarray],
+                           filled: list[dict[str, np.ndarray]]) -> None:
+    """``F_x`` of the spans ``indices`` evaluated without it (:func:`evaluate_span`'s ``tangential=False``) at their
+    ``times`` (s from first contact), all at once by the kinds of their interpolants (:func:`~.span_forces.span_forces`:
+    the values of a call per span, bit for bit); each span's dict of ``filled`` gains it."""
+    missing = [k for k, values in enumerate(filled) if "tangential_force" not in values]
+    if not missing:
+        return
+    spans = [solution.spans[indices[k]] for k in missing]
+    points = [_force_variable(span, solution.t_contact + np.asarray(times[k], dtype=float),
+                              filled[k]["contact_radius"]) for span, k in zip(spans, missing)]
+    for k, force in zip(missing, span_forces([span.interpolant for span in spans], points)):
+        filled[k]["tangential_force"] = force
 
 
 def _compressed_zone(zone: PathSolution, times: np.ndarray, radius: np.ndarray,
@@ -371,12 +395,14 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
     filled = []
     for index, rows in spans_rows:
         part = {name: values[rows] for name, values in zone.items()} if zone is not None else None
-        span = evaluate_span(solution, index, times[rows], zone=part, radii=radii.get(index), normal=False)
+        filled.append(evaluate_span(solution, index, times[rows], zone=part, radii=radii.get(index), normal=False,
+                                    tangential=False))
+    _fill_tangential_force(solution, [index for index, _ in spans_rows], [times[rows] for _, rows in spans_rows],
+                           filled)
+    _fill_normal_force(solution.model, filled)
+    for (_, rows), span in zip(spans_rows, filled):
         for name, values in span.items():
             out[name][rows] = values
-        filled.append(span)
-    for (_, rows), force in zip(spans_rows, _fill_normal_force(solution.model, filled)):
-        out["normal_force"][rows] = force
     return out
 
 
@@ -496,11 +522,13 @@ def scan_spans(solution: PathSolution) -> ExtremumScan:
     of each radius that of its depth on the branch, which needs no root).
 
     The grids of all spans are built at once (:func:`_scan_grids`: each branch's depths in one call, the grids as the
-    rows of one matrix), then each span is evaluated on its own (:func:`evaluate_span`, its own interpolant) and
-    ``F_N`` of all of them in one call (:func:`_fill_normal_force`); every value is the one a span alone would give."""
+    rows of one matrix), then each span's kinematics (:func:`evaluate_span`), ``F_x`` of all of them by the kinds of
+    their interpolants (:func:`_fill_tangential_force`) and ``F_N`` in one call (:func:`_fill_normal_force`); every
+    value is the one a span alone would give."""
     grids, radii = _scan_grids(solution)
-    values = [evaluate_span(solution, index, grid, sliding=False, radii=radius, normal=False)
+    values = [evaluate_span(solution, index, grid, sliding=False, radii=radius, normal=False, tangential=False)
               for index, (grid, radius) in enumerate(zip(grids, radii))]
+    _fill_tangential_force(solution, list(range(len(grids))), grids, values)
     _fill_normal_force(solution.model, values)
     return ExtremumScan(grids, values, {})
 
