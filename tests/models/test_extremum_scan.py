@@ -114,3 +114,25 @@ def test_the_fill_of_all_spans_at_once_is_the_fill_span_by_span(case, monkeypatc
                 np.testing.assert_array_equal(got[name], expected[name], err_msg=name)
         for got, expected in zip(found[2], reference[2]):
             np.testing.assert_array_equal(got["tangential_force"], expected["tangential_force"])
+
+
+@pytest.mark.parametrize("share, refined", [(0.5, False), (4.0, True)])
+def test_a_refined_point_replaces_the_scans_beyond_the_tie_alone(share, refined, monkeypatch):
+    """``extremum``'s refinement and its ties are one rule (``within_tie``, the rate run's too): a stationary point
+    better than the scan's best point by ``share`` times ``EXTREMUM_TIE`` of the quantity's size along the run replaces
+    it only beyond the tie (``share > 1``). ``F_N``'s minimum of scenario A (the pull-off, -0.02 N against 0.52 N at
+    the top: the old rule, a tie of ``2 EXTREMUM_TIE`` of the value itself, took a point better by half the run's tie)."""
+    run = solve_path(PAPER, me.Path.scenario_A(20.0, PAPER))
+    scan = S.scan_spans(run)
+    best, _, first, size = S._scanned_extremes(scan, "normal_force", -1.0)
+    holder = int(np.nanargmax(best))
+    scanned_time = float(scan.times[holder][first[holder]])
+    scanned = float(scan.values[holder]["normal_force"][first[holder]])
+    found_time, found = scanned_time + 1.0, scanned - share * S.EXTREMUM_TIE * size  # (lower: better for a minimum)
+
+    def stationary(solution, index, quantity, times, radii):
+        return [(found_time, found)] if index == holder and quantity == "normal_force" else []
+
+    monkeypatch.setattr(S, "stationary_points", stationary)
+    assert S.extremum(run, "normal_force", largest=False, scan=scan) == \
+        ((found_time, found) if refined else (scanned_time, scanned))

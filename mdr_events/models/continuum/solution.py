@@ -466,7 +466,8 @@ EXTREMUM_XTOL = 1e-12
 def within_tie(value: float, best: float, size: float) -> bool:
     """Whether ``value`` ties ``best`` to rounding: within :data:`EXTREMUM_TIE` of the quantity's ``size`` along the
     run (or of ``|best|``, the larger), so that a value near 0 is held to its run's rounding, not to its own. The one
-    rule of :func:`extremum` (the earliest of the spans' ties) and of the rate run's refinement
+    rule of :func:`extremum` (the earliest of the spans' ties; a stationary point replaces a span's best scanned point
+    only where that point does not tie it) and of the rate run's refinement
     (:func:`~mdr_events.models.continuum.rate_run.rate_extrema`: a stationary point that the scan's point ties leaves
     the scan's point).
 
@@ -635,7 +636,8 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
     points, reaches the best scanned value of the run) are refined within one grid interval of the
     best point by the roots of the quantity's derivative (:func:`~.stationary.stationary_points`: the
     span's dense output and the branch's closed forms), the means by a bounded Brent search to
-    :data:`EXTREMUM_XTOL` of the span's length. Of values equal to :data:`EXTREMUM_TIE` (a plateau) the
+    :data:`EXTREMUM_XTOL` of the span's length; a refined point replaces the scanned one where it is better beyond
+    the tie (:func:`within_tie`). Of values equal to :data:`EXTREMUM_TIE` (a plateau) the
     earliest time is reported, so that the time does not hang on rounding. The means (``mean_pressure``, ``mean_shear_stress``)
     are taken over the spans in contact.
 
@@ -686,7 +688,8 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
             if points is None:
                 points = [_bounded_search(solution, index, quantity, sign, times, i)]
             for found_time, found in points:
-                if sign * found > value * (1.0 + EXTREMUM_TIE) + EXTREMUM_TIE * abs(value):
+                # (better beyond rounding alone, by the rule of ties: a point the scan's ties stays)
+                if not within_tie(value, sign * found, size):
                     time, value = found_time, sign * found
         results.append((time, value))
     best_value = max(value for _, value in results)
