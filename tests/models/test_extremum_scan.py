@@ -5,6 +5,8 @@ value a call over its span's alone gives)."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
@@ -15,6 +17,8 @@ from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum import solution as S
 from mdr_events.models.continuum.dense import force_values
 from mdr_events.models.continuum.state import Regime
+from mdr_events.models.paths import exit_depth
+from mdr_events.theory import analytic
 
 PAPER = me.Parameters.paper()
 HERTZ = PAPER.replace(dgamma0=0.0, dgamma1=0.0)
@@ -28,7 +32,7 @@ def _table():
 
 #: label -> (params, path, solve_path's keywords): the spans of every kind the scan meets (closed forms, DOP853's
 #: steps, a table's panels, linear forces, constants), both branches with several spans each, Coulomb's compressed
-#: zone, a layer.
+#: zone, a layer, many pinned spans (the reciprocating path).
 CASES = {
     "A 20°": lambda: (PAPER, me.Path.scenario_A(20.0, PAPER), {}),
     "B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER), {}),
@@ -41,7 +45,18 @@ CASES = {
     "Coulomb with adhesion, B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER),
                                              {"friction": FrictionLaw("coulomb", mu=0.3)}),
     "thin layer, zigzag": lambda: (PAPER, me.Path(ZIGZAG, PAPER.v), {"layer": me.Layer(1e-3)}),
+    "reciprocating": lambda: (PAPER, _reciprocating(), {}),
 }
+
+
+def _reciprocating():
+    """In at 20° to ``(x_c, d_max)``, ten cycles ``x_c ± 3 ū(a_max)``, out vertically (``bench_simulate.py``'s): some
+    sixty pinned spans, their forces constant or linear in time."""
+    amplitude = 3.0 * float(analytic.critical_shift(float(analytic.jkr_contact_radius(PAPER.d_max, PAPER,
+                                                                                     PAPER.dgamma0)), PAPER))
+    x_c = PAPER.d_max / math.tan(math.radians(20.0))
+    turns = [(x_c + amplitude * (1 if i % 2 == 0 else -1), PAPER.d_max) for i in range(20)]
+    return me.Path([(0.0, 0.0), (x_c, PAPER.d_max), *turns, (x_c, PAPER.d_max), (x_c, exit_depth(PAPER))], PAPER.v)
 
 
 def _reference_scan(solution):

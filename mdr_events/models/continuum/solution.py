@@ -13,7 +13,7 @@ from scipy import optimize
 from mdr_events.contact.adhesion import Adhesion
 from mdr_events.parameters import Parameters
 from mdr_events.validation import check_real, real_array, shown
-from .dense import force_values
+from .dense import cut, force_values
 from .span_forces import span_forces
 from .graded import natural_variable, span_variable
 from .model import ContinuumModel
@@ -186,7 +186,7 @@ def _sampled_radii(model, spans: list[Span], depths: list[np.ndarray]) -> list[n
 
 def _split(values: np.ndarray, lengths: list[int]) -> list[np.ndarray]:
     """``values`` cut into consecutive parts of ``lengths`` (views)."""
-    return np.split(values, np.cumsum(lengths)[:-1]) if len(lengths) > 1 else [values]
+    return cut(values, lengths) if len(lengths) > 1 else [values]
 
 
 def contact_radii(solution: PathSolution, times: np.ndarray) -> np.ndarray:
@@ -527,7 +527,9 @@ def scan_spans(solution: PathSolution) -> ExtremumScan:
     their interpolants (:func:`_fill_tangential_force`) and ``F_N`` in one call (:func:`_fill_normal_force`); every
     value is the one a span alone would give."""
     grids, radii = _scan_grids(solution)
-    values = [evaluate_span(solution, index, grid, sliding=False, radii=radius, normal=False, tangential=False)
+    pinned = _pinned_kinematics(solution, grids) if solution.compressed is None else {}
+    values = [pinned[index] if index in pinned else
+              evaluate_span(solution, index, grid, sliding=False, radii=radius, normal=False, tangential=False)
               for index, (grid, radius) in enumerate(zip(grids, radii))]
     _fill_tangential_force(solution, list(range(len(grids))), grids, values)
     _fill_normal_force(solution.model, values)
@@ -566,10 +568,14 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
             _moving_grids(solution, branch, whole, [[root(index, t) for t in bounds[index]] for index in whole],
                           grids, radii)
         roots.clear()  # (the other branch's radii are other roots)
-    for index, span in enumerate(spans):
-        if grids[index] is None:
-            lower, upper = bounds[index]
-            grids[index] = np.linspace(lower, upper, EXTREMUM_GRID if upper > lower else 1)
+    rest = [index for index in range(len(spans)) if grids[index] is None and bounds[index][1] > bounds[index][0]]
+    if rest:  # (the pinned spans and the approach: their times evenly spaced, as the rows of one matrix)
+        lower, upper = (np.array([bounds[index][k] for index in rest]) for k in (0, 1))
+        for index, row in zip(rest, _linspace_rows(lower, upper, EXTREMUM_GRID)):
+            grids[index] = row
+    for index in range(len(spans)):
+        if grids[index] is None:  # (a span of no length: its start alone)
+            grids[index] = np.array([bounds[index][0]])
     return grids, radii
 
 
@@ -592,6 +598,37 @@ def _moving_grids(solution: PathSolution, branch, members: list[int], ends: list
     np.maximum.accumulate(times, axis=1, out=times)
     for row, index in enumerate(members):
         grids[index], radii[index] = times[row], matrix[row]
+
+
+def _pinned_kinematics(solution: PathSolution, grids: list[np.ndarray]) -> dict[int, dict[str, np.ndarray]]:
+    """:func:`evaluate_span` (``sliding``, ``normal`` and ``tangential`` off) of every pinned span at its scan times
+    ``grids`` (s from first contact), all at once: the depth ``ds + vd (t − t0)``, the position ``xs + vx (t − t0)``
+    with each span's segment's numbers over its row, the pinned radius, and a constant force; each value the one of a
+    call per span (the same operations, element by element). By the span's index."""
+    spans = solution.spans
+    members = [index for index, span in enumerate(spans) if span.regime is Regime.PINNED]
+    if not members:
+        return {}
+    lengths = [len(grids[index]) for index in members]
+
+    def each(values: list[float]) -> np.ndarray:  # (a span's number over its times)
+        return np.repeat(np.array(values, dtype=float), lengths)
+
+    segments = [spans[index].segment for index in members]
+    t = solution.t_contact + np.concatenate([grids[index] for index in members])
+    elapsed = t - each([segment.t0 for segment in segments])
+    columns = {"indentation_depth": each([segment.ds for segment in segments]) + each([segment.vd for segment in
+                                                                                       segments]) * elapsed,
+               "tangential_displacement": each([segment.xs for segment in segments]) + each([segment.vx for segment
+                                                                                             in segments]) * elapsed,
+               "contact_radius": each([spans[index].pinned_radius for index in members])}
+    parts = {name: _split(values, lengths) for name, values in columns.items()}
+    out = {}
+    for k, index in enumerate(members):
+        out[index] = {name: parts[name][k] for name in columns}
+        if spans[index].interpolant is None:
+            out[index]["tangential_force"] = np.full(lengths[k], spans[index].force)
+    return out
 
 
 def _linspace_rows(start: np.ndarray, stop: np.ndarray, count: int) -> np.ndarray:
