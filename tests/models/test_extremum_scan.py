@@ -15,6 +15,7 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum import solution as S
+from mdr_events.models.continuum import stationary
 from mdr_events.models.continuum.dense import force_values
 from mdr_events.models.continuum.state import Regime
 from mdr_events.models.paths import exit_depth
@@ -151,3 +152,26 @@ def test_a_refined_point_replaces_the_scans_beyond_the_tie_alone(share, refined,
     monkeypatch.setattr(S, "stationary_points", stationary)
     assert S.extremum(run, "normal_force", largest=False, scan=scan) == \
         ((found_time, found) if refined else (scanned_time, scanned))
+
+
+def _stationary_before(solution, index, quantity):
+    """``stationary_points``' early answers as they were (no point out of contact, of the radius and the area, nor of
+    ``F_N`` on a pinned radius; every other span searched): the reference of ``never_stationary``."""
+    span = solution.spans[index]
+    if span.regime is Regime.NONE or quantity in ("contact_radius", "contact_area"):
+        return True
+    return quantity == "normal_force" and span.regime is Regime.PINNED
+
+
+@pytest.mark.parametrize("case", ["A 20°", "B 30°", "zigzag", "reciprocating", "table, A 20°"])
+def test_the_spans_passed_over_change_no_extremum(case, monkeypatch):
+    """``extremum`` does not refine the spans ``never_stationary`` names (also a constant force or one linear in time):
+    every extremum of every quantity is the one found with every span refined as before, bit for bit."""
+    for run in _runs(case):
+        found = [S.extremum(run, quantity, largest) for quantity in S.EXTREMUM_QUANTITIES for largest in (True, False)]
+        with monkeypatch.context() as patch:
+            patch.setattr(S, "never_stationary", lambda solution, index, quantity: False)
+            patch.setattr(stationary, "never_stationary", _stationary_before)
+            reference = [S.extremum(run, quantity, largest) for quantity in S.EXTREMUM_QUANTITIES
+                         for largest in (True, False)]
+        assert found == reference

@@ -19,7 +19,7 @@ from .graded import natural_variable, span_variable
 from .model import ContinuumModel
 from .span import Span, Variable
 from .state import CONTACT_ENDING, Event, Regime
-from .stationary import stationary_points
+from .stationary import never_stationary, stationary_points
 
 
 @dataclass
@@ -711,30 +711,46 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
     if not spans.size:
         return math.nan, math.nan
     best_scanned = float(np.max(best[spans]))
+    # the scan's best point of every span at once (a span's refined below where it can hold the extremum)
+    counts = np.array([len(scan.times[index]) for index in spans.tolist()])
+    starts = np.concatenate([[0], np.cumsum([len(times) for times in scan.times])[:-1]])
+    times = np.concatenate(scan.times)[starts[spans] + first[spans]]
+    values = best[spans]
     # the radius is monotone on a span: the area's extremes are at the span's ends, which the scan holds
-    monotone = quantity in ("contact_radius", "contact_area")
-    results = []
-    for index in spans.tolist():
-        times, i, value = scan.times[index], int(first[index]), float(best[index])
-        time = float(times[i])
-        if len(times) > 1 and value + reach[index] >= best_scanned and not monotone:
-            ends = (max(i - 1, 0), min(i + 1, len(times) - 1))
-            radii = scan.values[index]["contact_radius"]
-            points = stationary_points(solution, index, quantity, (float(times[ends[0]]), float(times[ends[1]])),
-                                       (float(radii[ends[0]]), float(radii[ends[1]])))
-            if points is None:
-                points = [_bounded_search(solution, index, quantity, sign, times, i)]
-            for found_time, found in points:
-                # (better beyond rounding alone, by the rule of ties: a point the scan's ties stays)
-                if not within_tie(value, sign * found, size):
-                    time, value = found_time, sign * found
-        results.append((time, value))
-    best_value = max(value for _, value in results)
+    if quantity not in ("contact_radius", "contact_area"):
+        for k in np.flatnonzero((counts > 1) & (values + reach[spans] >= best_scanned)).tolist():
+            if never_stationary(solution, int(spans[k]), quantity):  # (the scan's point stays)
+                continue
+            times[k], values[k] = _refined(solution, scan, int(spans[k]), quantity, sign,
+                                           (int(first[spans[k]]), float(values[k])), size)
+    best_value = float(np.max(values))
     # the earliest time at which the extremum is reached, to rounding of the quantity's size along the run (a
-    # plateau such as F_x in full slip, or a quantity that stays at zero, has ties that rounding would pick)
-    best_time, best_value = min((time, value) for time, value in results
-                                if within_tie(value, best_value, size))
-    return best_time, sign * best_value
+    # plateau such as F_x in full slip, or a quantity that stays at zero, has ties that rounding would pick;
+    # within_tie's rule over all spans at once): the earliest time, of equal times the least value
+    ties = np.flatnonzero(values >= best_value - EXTREMUM_TIE * max(size, abs(best_value)))
+    earliest = ties[times[ties] == np.min(times[ties])]
+    best_value = float(np.min(values[earliest]))
+    return float(times[earliest[0]]), sign * best_value
+
+
+def _refined(solution: PathSolution, scan: ExtremumScan, index: int, quantity: str, sign: float,
+             scanned: tuple[int, float], size: float) -> tuple[float, float]:
+    """:func:`extremum`'s refinement of span ``index`` about its best scan point (``scanned``: its index and signed
+    value): ``(time, signed value)`` of the stationary point (:func:`~.stationary.stationary_points`, or a bounded
+    search for the means) better than it beyond the tie (:func:`within_tie`), else of the scan's point."""
+    times, (i, value) = scan.times[index], scanned
+    time = float(times[i])
+    ends = (max(i - 1, 0), min(i + 1, len(times) - 1))
+    radii = scan.values[index]["contact_radius"]
+    points = stationary_points(solution, index, quantity, (float(times[ends[0]]), float(times[ends[1]])),
+                               (float(radii[ends[0]]), float(radii[ends[1]])))
+    if points is None:
+        points = [_bounded_search(solution, index, quantity, sign, times, i)]
+    for found_time, found in points:
+        # (better beyond rounding alone, by the rule of ties: a point the scan's ties stays)
+        if sign * found > value and not within_tie(value, sign * found, size):
+            time, value = found_time, sign * found
+    return time, value
 
 
 def _scanned_extremes(scan: ExtremumScan, quantity: str,
