@@ -264,12 +264,18 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
             out["sliding_fraction"] = zone_sliding
         return out
     if sliding:
-        zones = (span.zones if span.zones is not None else span.anchors).sliding_length(model.caps, x, d, a)
-        # min(zones / a, 1) where a > 0, nan elsewhere (computed only where a > 0: no warning to silence)
-        fraction, positive = np.full(t.shape, np.nan), a > 0
-        np.divide(zones, a, out=fraction, where=positive)
-        out["sliding_fraction"] = np.minimum(fraction, 1.0, out=fraction, where=positive)
+        out["sliding_fraction"] = _sliding_fraction(model, span, x, d, a)
     return out
+
+
+def _sliding_fraction(model: ContinuumModel, span: Span, x: np.ndarray, d: np.ndarray, a: np.ndarray) -> np.ndarray:
+    """The share of a span's contact whose springs slide at the positions ``x``, depths ``d`` and radii ``a``: the slip
+    fronts of its anchor map (or its layouts), ``min(length / a, 1)`` where ``a > 0``, ``nan`` elsewhere."""
+    zones = (span.zones if span.zones is not None else span.anchors).sliding_length(model.caps, x, d, a)
+    # min(zones / a, 1) where a > 0, nan elsewhere (computed only where a > 0: no warning to silence)
+    fraction, positive = np.full(np.shape(a), np.nan), a > 0
+    np.divide(zones, a, out=fraction, where=positive)
+    return np.minimum(fraction, 1.0, out=fraction, where=positive)
 
 
 def _force_variable(span: Span, t: np.ndarray, radius: np.ndarray) -> np.ndarray:
@@ -392,10 +398,15 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
     zone = evaluate(solution.compressed, times) if solution.compressed is not None else None
     spans_rows = _span_rows(owner, inside, len(solution.spans))
     radii = _moving_radii(solution, times, spans_rows)
+    pinned = _pinned_kinematics(solution, {index: times[rows] for index, rows in spans_rows}) if zone is None else {}
+    for index, values in pinned.items():  # (their kinematics at once; each its slip fronts)
+        values["sliding_fraction"] = _sliding_fraction(solution.model, solution.spans[index], *(
+            values[name] for name in ("tangential_displacement", "indentation_depth", "contact_radius")))
     filled = []
     for index, rows in spans_rows:
         part = {name: values[rows] for name, values in zone.items()} if zone is not None else None
-        filled.append(evaluate_span(solution, index, times[rows], zone=part, radii=radii.get(index), normal=False,
+        filled.append(pinned[index] if index in pinned else
+                      evaluate_span(solution, index, times[rows], zone=part, radii=radii.get(index), normal=False,
                                     tangential=False))
     _fill_tangential_force(solution, [index for index, _ in spans_rows], [times[rows] for _, rows in spans_rows],
                            filled)
@@ -527,7 +538,7 @@ def scan_spans(solution: PathSolution) -> ExtremumScan:
     their interpolants (:func:`_fill_tangential_force`) and ``F_N`` in one call (:func:`_fill_normal_force`); every
     value is the one a span alone would give."""
     grids, radii = _scan_grids(solution)
-    pinned = _pinned_kinematics(solution, grids) if solution.compressed is None else {}
+    pinned = _pinned_kinematics(solution, dict(enumerate(grids))) if solution.compressed is None else {}
     values = [pinned[index] if index in pinned else
               evaluate_span(solution, index, grid, sliding=False, radii=radius, normal=False, tangential=False)
               for index, (grid, radius) in enumerate(zip(grids, radii))]
@@ -600,13 +611,13 @@ def _moving_grids(solution: PathSolution, branch, members: list[int], ends: list
         grids[index], radii[index] = times[row], matrix[row]
 
 
-def _pinned_kinematics(solution: PathSolution, grids: list[np.ndarray]) -> dict[int, dict[str, np.ndarray]]:
-    """:func:`evaluate_span` (``sliding``, ``normal`` and ``tangential`` off) of every pinned span at its scan times
-    ``grids`` (s from first contact), all at once: the depth ``ds + vd (t − t0)``, the position ``xs + vx (t − t0)``
-    with each span's segment's numbers over its row, the pinned radius, and a constant force; each value the one of a
-    call per span (the same operations, element by element). By the span's index."""
+def _pinned_kinematics(solution: PathSolution, grids: dict[int, np.ndarray]) -> dict[int, dict[str, np.ndarray]]:
+    """:func:`evaluate_span` (``sliding``, ``normal`` and ``tangential`` off) of the pinned spans among ``grids`` (a
+    span's index -> its times, s from first contact), all at once: the depth ``ds + vd (t − t0)``, the position
+    ``xs + vx (t − t0)`` with each span's segment's numbers over its times, the pinned radius, and a constant force;
+    each value the one of a call per span (the same operations, element by element). By the span's index."""
     spans = solution.spans
-    members = [index for index, span in enumerate(spans) if span.regime is Regime.PINNED]
+    members = [index for index in grids if spans[index].regime is Regime.PINNED]
     if not members:
         return {}
     lengths = [len(grids[index]) for index in members]
