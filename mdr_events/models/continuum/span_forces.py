@@ -6,7 +6,7 @@ the spans): the values each span's own call gives, bit for bit, in a call per gr
   interpolant's sequence of products and sums over all points at once (``dense._step_values``);
 - closed forms on one branch (:class:`~.closed_form.ClosedForce` of a :class:`~.closed_form.Primitive`): the branch's
   depths and integrals of all their radii in one call each, the primitive's terms with each span's coefficients
-  repeated over its points, in the order :meth:`~.closed_form.Primitive.__call__` sums them;
+  repeated over its points, in the order ``Primitive.__call__`` sums them;
 - forces linear in time (:class:`~.span.LinearForce`, a pinned span's): ``F0 + rate (t − t0)`` with each span's
   numbers repeated over its points;
 - anything else (a layer's closed form, another dense output), and a group of one span: its own call,
@@ -76,7 +76,7 @@ def span_forces(interpolants: list, points: list[np.ndarray]) -> list[np.ndarray
 
 
 def _linear_values(forces: list[LinearForce], points: list[np.ndarray]) -> list[np.ndarray]:
-    """:meth:`~.span.LinearForce.__call__` of several forces linear in time at their times: ``F0 + rate (t − t0)``
+    """``LinearForce.__call__`` of several forces linear in time at their times: ``F0 + rate (t − t0)``
     with each span's numbers over its times, element by element."""
     lengths = [len(where) for where in points]
 
@@ -94,9 +94,9 @@ def _fill(out: list, members: list[int], values: list[np.ndarray]) -> None:
 
 
 def _closed_values(forces: list[ClosedForce], points: list[np.ndarray]) -> list[np.ndarray]:
-    """:meth:`ClosedForce.__call__` of closed forms on one branch (and one branch of attachment) at their points: the
+    """``ClosedForce.__call__`` of closed forms on one branch (and one branch of attachment) at their points: the
     depths and integrals of all radii in one call each (the branch's NumPy forms, element by element), then each
-    span's terms with its own coefficients, in the order :meth:`~.closed_form.Primitive.__call__` sums them."""
+    span's terms with its own coefficients, in the order ``Primitive.__call__`` sums them."""
     radii = [np.reshape(np.asarray(where, dtype=float), -1) * force.scale for force, where in zip(forces, points)]
     lengths = [len(each) for each in radii]
     branch, attach = forces[0].primitive.branch, forces[0].primitive.attach
