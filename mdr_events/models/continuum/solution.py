@@ -615,10 +615,11 @@ def _pinned_kinematics(solution: PathSolution, grids: dict[int, np.ndarray]) -> 
     """:func:`evaluate_span` (``sliding``, ``normal`` and ``tangential`` off) of the pinned spans among ``grids`` (a
     span's index -> its times, s from first contact), all at once: the depth ``ds + vd (t − t0)``, the position
     ``xs + vx (t − t0)`` with each span's segment's numbers over its times, the pinned radius, and a constant force;
-    each value the one of a call per span (the same operations, element by element). By the span's index."""
+    each value the one of a call per span (the same operations, element by element). By the span's index; none where
+    there is one pinned span alone (its own call costs less)."""
     spans = solution.spans
     members = [index for index in grids if spans[index].regime is Regime.PINNED]
-    if not members:
+    if len(members) < 2:  # (one span alone: evaluate_span's own call)
         return {}
     lengths = [len(grids[index]) for index in members]
 
@@ -722,26 +723,22 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
     if not spans.size:
         return math.nan, math.nan
     best_scanned = float(np.max(best[spans]))
-    # the scan's best point of every span at once (a span's refined below where it can hold the extremum)
-    counts = np.array([len(scan.times[index]) for index in spans.tolist()])
-    starts = np.concatenate([[0], np.cumsum([len(times) for times in scan.times])[:-1]])
-    times = np.concatenate(scan.times)[starts[spans] + first[spans]]
-    values = best[spans]
     # the radius is monotone on a span: the area's extremes are at the span's ends, which the scan holds
-    if quantity not in ("contact_radius", "contact_area"):
-        for k in np.flatnonzero((counts > 1) & (values + reach[spans] >= best_scanned)).tolist():
-            if never_stationary(solution, int(spans[k]), quantity):  # (the scan's point stays)
-                continue
-            times[k], values[k] = _refined(solution, scan, int(spans[k]), quantity, sign,
-                                           (int(first[spans[k]]), float(values[k])), size)
-    best_value = float(np.max(values))
+    monotone = quantity in ("contact_radius", "contact_area")
+    results = []
+    for index in spans.tolist():
+        times, i, value = scan.times[index], int(first[index]), float(best[index])
+        time = float(times[i])
+        if len(times) > 1 and value + reach[index] >= best_scanned and not monotone \
+                and not never_stationary(solution, index, quantity):  # (else the scan's point stays)
+            time, value = _refined(solution, scan, index, quantity, sign, (i, value), size)
+        results.append((time, value))
+    best_value = max(value for _, value in results)
     # the earliest time at which the extremum is reached, to rounding of the quantity's size along the run (a
-    # plateau such as F_x in full slip, or a quantity that stays at zero, has ties that rounding would pick;
-    # within_tie's rule over all spans at once): the earliest time, of equal times the least value
-    ties = np.flatnonzero(values >= best_value - EXTREMUM_TIE * max(size, abs(best_value)))
-    earliest = ties[times[ties] == np.min(times[ties])]
-    best_value = float(np.min(values[earliest]))
-    return float(times[earliest[0]]), sign * best_value
+    # plateau such as F_x in full slip, or a quantity that stays at zero, has ties that rounding would pick)
+    best_time, best_value = min((time, value) for time, value in results
+                                if within_tie(value, best_value, size))
+    return best_time, sign * best_value
 
 
 def _refined(solution: PathSolution, scan: ExtremumScan, index: int, quantity: str, sign: float,
