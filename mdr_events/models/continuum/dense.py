@@ -22,7 +22,7 @@ try:  # (SciPy's class of DOP853's step interpolant; without it every dense outp
 except ImportError:  # pragma: no cover
     Dop853DenseOutput = None
 
-__all__ = ["force_values"]
+__all__ = ["cut", "force_values"]
 
 
 class _Steps(NamedTuple):
@@ -78,11 +78,73 @@ def force_values(interpolant: Callable, points: np.ndarray) -> np.ndarray:
     if steps is None or np.ndim(points) != 1:
         return interpolant(points)[0]
     t = np.asarray(points, dtype=float)
+    return _polynomials(t, _picked(steps, t), steps)
+
+
+def _step_values(steps: list[_Steps], points: list[np.ndarray]) -> list[np.ndarray]:
+    """:func:`force_values` of several spans' DOP853 steps (:func:`_gathered`) at their points (1-D) in one
+    evaluation: each point with the step its own span's ``OdeSolution`` picks, the steps of all spans in one table.
+
+    Parameters
+    ----------
+    steps : list of _Steps
+        Each span's steps.
+    points : list of numpy.ndarray
+        Each span's points (its variable), 1-D.
+
+    Returns
+    -------
+    list of numpy.ndarray
+        ``F_x`` at each span's points (N), each value its interpolant's bit for bit.
+    """
+    if len(steps) == 1:
+        t = np.asarray(points[0], dtype=float)
+        return [_polynomials(t, _picked(steps[0], t), steps[0])]
+    times = [np.asarray(where, dtype=float) for where in points]
+    offsets = np.cumsum([0] + [len(found.t_old) for found in steps[:-1]])
+    picked = np.concatenate([_picked(found, t) + offset for found, t, offset in zip(steps, times, offsets.tolist())])
+    table = _Steps(None, "", True, *(np.concatenate([getattr(found, name) for found in steps], axis=-1)
+                                     for name in ("t_old", "h", "y_old", "reversed_F")))
+    values = _polynomials(np.concatenate(times), picked, table)
+    return cut(values, [len(t) for t in times])
+
+
+def cut(values: np.ndarray, lengths: list[int]) -> list[np.ndarray]:
+    """``values`` cut into consecutive parts of ``lengths`` (views): ``np.split``'s parts, without its cost per part
+    (a transposition and a slice each, some 5 µs; a run's spans are tens).
+
+    Parameters
+    ----------
+    values : numpy.ndarray
+        A 1-D array.
+    lengths : list of int
+        The parts' lengths, summing to ``len(values)``.
+
+    Returns
+    -------
+    list of numpy.ndarray
+        The parts, in order.
+    """
+    parts, start = [], 0
+    for length in lengths:
+        parts.append(values[start:start + length])
+        start += length
+    return parts
+
+
+def _picked(steps: _Steps, t: np.ndarray) -> np.ndarray:
+    """The index of the step ``OdeSolution`` picks for each of the points ``t``."""
     count = len(steps.t_old)
     segment = np.searchsorted(steps.ts_sorted, t, side=steps.side) - 1  # (as OdeSolution picks a step)
     np.clip(segment, 0, count - 1, out=segment)
     if not steps.ascending:
         segment = count - 1 - segment
+    return segment
+
+
+def _polynomials(t: np.ndarray, segment: np.ndarray, steps: _Steps) -> np.ndarray:
+    """Each point's step interpolant (step ``segment`` of ``steps``) at ``t``: ``Dop853DenseOutput``'s products and
+    sums, every point at once."""
     x = (t - steps.t_old[segment]) / steps.h[segment]
     rest = 1 - x
     y = np.zeros(t.shape)

@@ -13,12 +13,13 @@ from scipy import optimize
 from mdr_events.contact.adhesion import Adhesion
 from mdr_events.parameters import Parameters
 from mdr_events.validation import check_real, real_array, shown
-from .dense import force_values
+from .dense import cut, force_values
+from .span_forces import span_forces
 from .graded import natural_variable, span_variable
 from .model import ContinuumModel
 from .span import Span, Variable
 from .state import CONTACT_ENDING, Event, Regime
-from .stationary import stationary_points
+from .stationary import never_stationary, stationary_points
 
 
 @dataclass
@@ -185,7 +186,7 @@ def _sampled_radii(model, spans: list[Span], depths: list[np.ndarray]) -> list[n
 
 def _split(values: np.ndarray, lengths: list[int]) -> list[np.ndarray]:
     """``values`` cut into consecutive parts of ``lengths`` (views)."""
-    return np.split(values, np.cumsum(lengths)[:-1]) if len(lengths) > 1 else [values]
+    return cut(values, lengths) if len(lengths) > 1 else [values]
 
 
 def contact_radii(solution: PathSolution, times: np.ndarray) -> np.ndarray:
@@ -203,7 +204,7 @@ def contact_radii(solution: PathSolution, times: np.ndarray) -> np.ndarray:
 
 def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding: bool = True,
                   zone: dict[str, np.ndarray] | None = None, radii: np.ndarray | None = None,
-                  normal: bool = True) -> dict[str, np.ndarray]:
+                  normal: bool = True, tangential: bool = True) -> dict[str, np.ndarray]:
     """Every quantity of :data:`EVALUATED_QUANTITIES` at ``times`` (s from first contact) within span
     ``index``, as a vectorised function of time: the kinematics are linear, the radius follows its
     branch of (9) (or is pinned; ``radii``, where given, are the radii at ``times``), ``F_N`` is (10), ``F_x`` is
@@ -228,6 +229,10 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     normal : bool, default True
         Whether to evaluate ``F_N``; without it a span in contact leaves ``normal_force`` out (:func:`evaluate` and
         :func:`scan_spans` fill it for every span at once, :func:`_fill_normal_force`).
+    tangential : bool, default True
+        Whether to read ``F_x`` off the span's interpolant; without it a span in contact whose force is not constant
+        (and not the compressed zone's) leaves ``tangential_force`` out (:func:`evaluate` and :func:`scan_spans` read
+        every span's at once, :func:`_fill_tangential_force`).
 
     Returns
     -------
@@ -250,23 +255,48 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
     if normal:
         out["normal_force"] = np.asarray(model.normal_force(d, a), dtype=float)  # (10)
     if span.interpolant is None:
-        force = np.full(t.shape, span.force)
-    else:
-        force = force_values(span.interpolant, span_variable(span, a / span.scale if span.variable is Variable.RADIUS
-                                                            else t))
-    out["tangential_force"] = force
+        out["tangential_force"] = np.full(t.shape, span.force)
+    elif tangential or solution.compressed is not None:  # (the compressed zone's replaces it below)
+        out["tangential_force"] = force_values(span.interpolant, _force_variable(span, t, a))
     if solution.compressed is not None:
         out["tangential_force"], zone_sliding = _compressed_zone(solution.compressed, times, a, zone)
         if sliding:
             out["sliding_fraction"] = zone_sliding
         return out
     if sliding:
-        zones = (span.zones if span.zones is not None else span.anchors).sliding_length(model.caps, x, d, a)
-        # min(zones / a, 1) where a > 0, nan elsewhere (computed only where a > 0: no warning to silence)
-        fraction, positive = np.full(t.shape, np.nan), a > 0
-        np.divide(zones, a, out=fraction, where=positive)
-        out["sliding_fraction"] = np.minimum(fraction, 1.0, out=fraction, where=positive)
+        out["sliding_fraction"] = _sliding_fraction(model, span, x, d, a)
     return out
+
+
+def _sliding_fraction(model: ContinuumModel, span: Span, x: np.ndarray, d: np.ndarray, a: np.ndarray) -> np.ndarray:
+    """The share of a span's contact whose springs slide at the positions ``x``, depths ``d`` and radii ``a``: the slip
+    fronts of its anchor map (or its layouts), ``min(length / a, 1)`` where ``a > 0``, ``nan`` elsewhere."""
+    zones = (span.zones if span.zones is not None else span.anchors).sliding_length(model.caps, x, d, a)
+    # min(zones / a, 1) where a > 0, nan elsewhere (computed only where a > 0: no warning to silence)
+    fraction, positive = np.full(np.shape(a), np.nan), a > 0
+    np.divide(zones, a, out=fraction, where=positive)
+    return np.minimum(fraction, 1.0, out=fraction, where=positive)
+
+
+def _force_variable(span: Span, t: np.ndarray, radius: np.ndarray) -> np.ndarray:
+    """The variable a span's interpolant of ``F_x`` is read at, at the path's times ``t`` and the radii there: the
+    time, or the radius over the span's scale (on a graded span its ``u``)."""
+    return span_variable(span, radius / span.scale if span.variable is Variable.RADIUS else t)
+
+
+def _fill_tangential_force(solution: PathSolution, indices: list[int], times: list[np.ndarray],
+                           filled: list[dict[str, np.ndarray]]) -> None:
+    """``F_x`` of the spans ``indices`` evaluated without it (:func:`evaluate_span`'s ``tangential=False``) at their
+    ``times`` (s from first contact), all at once by the kinds of their interpolants (:func:`~.span_forces.span_forces`:
+    the values of a call per span, bit for bit); each span's dict of ``filled`` gains it."""
+    missing = [k for k, values in enumerate(filled) if "tangential_force" not in values]
+    if not missing:
+        return
+    spans = [solution.spans[indices[k]] for k in missing]
+    points = [_force_variable(span, solution.t_contact + np.asarray(times[k], dtype=float),
+                              filled[k]["contact_radius"]) for span, k in zip(spans, missing)]
+    for k, force in zip(missing, span_forces([span.interpolant for span in spans], points)):
+        filled[k]["tangential_force"] = force
 
 
 def _compressed_zone(zone: PathSolution, times: np.ndarray, radius: np.ndarray,
@@ -368,15 +398,22 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
     zone = evaluate(solution.compressed, times) if solution.compressed is not None else None
     spans_rows = _span_rows(owner, inside, len(solution.spans))
     radii = _moving_radii(solution, times, spans_rows)
+    pinned = _pinned_kinematics(solution, {index: times[rows] for index, rows in spans_rows}) if zone is None else {}
+    for index, values in pinned.items():  # (their kinematics at once; each its slip fronts)
+        values["sliding_fraction"] = _sliding_fraction(solution.model, solution.spans[index], *(
+            values[name] for name in ("tangential_displacement", "indentation_depth", "contact_radius")))
     filled = []
     for index, rows in spans_rows:
         part = {name: values[rows] for name, values in zone.items()} if zone is not None else None
-        span = evaluate_span(solution, index, times[rows], zone=part, radii=radii.get(index), normal=False)
+        filled.append(pinned[index] if index in pinned else
+                      evaluate_span(solution, index, times[rows], zone=part, radii=radii.get(index), normal=False,
+                                    tangential=False))
+    _fill_tangential_force(solution, [index for index, _ in spans_rows], [times[rows] for _, rows in spans_rows],
+                           filled)
+    _fill_normal_force(solution.model, filled)
+    for (_, rows), span in zip(spans_rows, filled):
         for name, values in span.items():
             out[name][rows] = values
-        filled.append(span)
-    for (_, rows), force in zip(spans_rows, _fill_normal_force(solution.model, filled)):
-        out["normal_force"][rows] = force
     return out
 
 
@@ -440,7 +477,8 @@ EXTREMUM_XTOL = 1e-12
 def within_tie(value: float, best: float, size: float) -> bool:
     """Whether ``value`` ties ``best`` to rounding: within :data:`EXTREMUM_TIE` of the quantity's ``size`` along the
     run (or of ``|best|``, the larger), so that a value near 0 is held to its run's rounding, not to its own. The one
-    rule of :func:`extremum` (the earliest of the spans' ties) and of the rate run's refinement
+    rule of :func:`extremum` (the earliest of the spans' ties; a stationary point replaces a span's best scanned point
+    only where that point does not tie it) and of the rate run's refinement
     (:func:`~mdr_events.models.continuum.rate_run.rate_extrema`: a stationary point that the scan's point ties leaves
     the scan's point).
 
@@ -493,26 +531,139 @@ class ScanMatrix(NamedTuple):
 def scan_spans(solution: PathSolution) -> ExtremumScan:
     """Sample every span for :func:`extremum` (one scan serves every quantity and both extremes): evenly in
     time on a pinned radius, evenly in the radius on a moving one (the variable of its interpolant; the time
-    of each radius that of its depth on the branch, which needs no root)."""
-    times, values = [], []
-    for index, span in enumerate(solution.spans):
-        lower, upper = span.t_start - solution.t_contact, span.t_end - solution.t_contact
-        count = EXTREMUM_GRID if upper > lower else 1
-        if span.regime in (Regime.GROWING, Regime.SHRINKING):
-            grid, radii = _radius_grid(solution, span, lower, upper, count)
-        else:
-            grid, radii = np.linspace(lower, upper, count), None
-        times.append(grid)
-        values.append(evaluate_span(solution, index, grid, sliding=False, radii=radii, normal=False))
+    of each radius that of its depth on the branch, which needs no root).
+
+    The grids of all spans are built at once (:func:`_scan_grids`: each branch's depths in one call, the grids as the
+    rows of one matrix), then each span's kinematics (:func:`evaluate_span`), ``F_x`` of all of them by the kinds of
+    their interpolants (:func:`_fill_tangential_force`) and ``F_N`` in one call (:func:`_fill_normal_force`); every
+    value is the one a span alone would give."""
+    grids, radii = _scan_grids(solution)
+    pinned = _pinned_kinematics(solution, dict(enumerate(grids))) if solution.compressed is None else {}
+    values = [pinned[index] if index in pinned else
+              evaluate_span(solution, index, grid, sliding=False, radii=radius, normal=False, tangential=False)
+              for index, (grid, radius) in enumerate(zip(grids, radii))]
+    _fill_tangential_force(solution, list(range(len(grids))), grids, values)
     _fill_normal_force(solution.model, values)
-    return ExtremumScan(times, values, {})
+    return ExtremumScan(grids, values, {})
+
+
+def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarray | None]]:
+    """Each span's scan times (s from first contact) and, on a moving span, the radii there (``None`` elsewhere):
+    :data:`EXTREMUM_GRID` points on a span of positive length, its start alone on one of none. A pinned span's times
+    evenly spaced (``np.linspace``); a moving span's radii evenly spaced from the radius at its start to that at its
+    end (roots of their depths: :meth:`~.branch.Branch.radius`, each depth once, a span's end being the next span's
+    start) and the time of each radius that of its depth on the branch, made non-decreasing, as
+    :func:`_radius_grid` gives them span by span (``tests/models/test_extremum_scan.py`` compares the two)."""
+    spans, t_contact = solution.spans, solution.t_contact
+    bounds = [(span.t_start - t_contact, span.t_end - t_contact) for span in spans]
+    grids: list = [None] * len(spans)
+    radii: list = [None] * len(spans)
+    roots: dict = {}  # (the branch, the depth) -> the radius
+    for regime in (Regime.GROWING, Regime.SHRINKING):
+        members = [index for index, span in enumerate(spans) if span.regime is regime]
+        if not members:
+            continue
+        branch, rtol = solution.model.branch(regime), solution.model.tolerances.radius_rtol
+
+        def root(index: int, t: float) -> float:
+            depth = max(float(spans[index].segment.d(t_contact + t)), branch.jump_off_depth)
+            if depth not in roots:
+                roots[depth] = branch.radius(depth, rtol)
+            return roots[depth]
+
+        whole = [index for index in members if bounds[index][1] > bounds[index][0]]
+        for index in members:
+            if index not in whole:  # (a span of no length: its start alone)
+                grids[index], radii[index] = np.array([bounds[index][0]]), np.array([root(index, bounds[index][0])])
+        if whole:
+            _moving_grids(solution, branch, whole, [[root(index, t) for t in bounds[index]] for index in whole],
+                          grids, radii)
+        roots.clear()  # (the other branch's radii are other roots)
+    rest = [index for index in range(len(spans)) if grids[index] is None and bounds[index][1] > bounds[index][0]]
+    if rest:  # (the pinned spans and the approach: their times evenly spaced, as the rows of one matrix)
+        lower, upper = (np.array([bounds[index][k] for index in rest]) for k in (0, 1))
+        for index, row in zip(rest, _linspace_rows(lower, upper, EXTREMUM_GRID)):
+            grids[index] = row
+    for index in range(len(spans)):
+        if grids[index] is None:  # (a span of no length: its start alone)
+            grids[index] = np.array([bounds[index][0]])
+    return grids, radii
+
+
+def _moving_grids(solution: PathSolution, branch, members: list[int], ends: list[list[float]], grids: list,
+                  radii: list) -> None:
+    """:func:`_scan_grids` of the moving spans ``members`` of one branch with the radii at their ``ends``: their radii
+    and times as the rows of two matrices, the depths of all their inner radii in one call of the branch's
+    :meth:`~.branch.Branch.depths` (element by element: the values of a call per span); each row stored in ``grids``
+    and ``radii`` at its span's index."""
+    spans, t_contact = solution.spans, solution.t_contact
+    start, stop = (np.array([end[k] for end in ends]) for k in (0, 1))
+    matrix = _linspace_rows(start, stop, EXTREMUM_GRID)
+    depths = branch.depths(np.ascontiguousarray(matrix[:, 1:-1]).reshape(-1)).reshape(len(members), -1)
+    segments = [spans[index].segment for index in members]
+    t0, ds, vd = (np.array([getattr(segment, name) for segment in segments])[:, None] for name in ("t0", "ds", "vd"))
+    lower = np.array([spans[index].t_start - t_contact for index in members])[:, None]
+    upper = np.array([spans[index].t_end - t_contact for index in members])[:, None]
+    inner = (t0 + (depths - ds) / vd) - t_contact  # (Segment.time_at_depth, row by row)
+    times = np.concatenate([lower, np.clip(inner, lower, upper), upper], axis=1)
+    np.maximum.accumulate(times, axis=1, out=times)
+    for row, index in enumerate(members):
+        grids[index], radii[index] = times[row], matrix[row]
+
+
+def _pinned_kinematics(solution: PathSolution, grids: dict[int, np.ndarray]) -> dict[int, dict[str, np.ndarray]]:
+    """:func:`evaluate_span` (``sliding``, ``normal`` and ``tangential`` off) of the pinned spans among ``grids`` (a
+    span's index -> its times, s from first contact), all at once: the depth ``ds + vd (t − t0)``, the position
+    ``xs + vx (t − t0)`` with each span's segment's numbers over its times, the pinned radius, and a constant force;
+    each value the one of a call per span (the same operations, element by element). By the span's index; none where
+    there is one pinned span alone (its own call costs less)."""
+    spans = solution.spans
+    members = [index for index in grids if spans[index].regime is Regime.PINNED]
+    if len(members) < 2:  # (one span alone: evaluate_span's own call)
+        return {}
+    lengths = [len(grids[index]) for index in members]
+
+    def each(values: list[float]) -> np.ndarray:  # (a span's number over its times)
+        return np.repeat(np.array(values, dtype=float), lengths)
+
+    segments = [spans[index].segment for index in members]
+    t = solution.t_contact + np.concatenate([grids[index] for index in members])
+    elapsed = t - each([segment.t0 for segment in segments])
+    columns = {"indentation_depth": each([segment.ds for segment in segments]) + each([segment.vd for segment in
+                                                                                       segments]) * elapsed,
+               "tangential_displacement": each([segment.xs for segment in segments]) + each([segment.vx for segment
+                                                                                             in segments]) * elapsed,
+               "contact_radius": each([spans[index].pinned_radius for index in members])}
+    parts = {name: _split(values, lengths) for name, values in columns.items()}
+    out = {}
+    for k, index in enumerate(members):
+        out[index] = {name: parts[name][k] for name in columns}
+        if spans[index].interpolant is None:
+            out[index]["tangential_force"] = np.full(lengths[k], spans[index].force)
+    return out
+
+
+def _linspace_rows(start: np.ndarray, stop: np.ndarray, count: int) -> np.ndarray:
+    """``np.linspace(start[i], stop[i], count)`` as the rows of one matrix, each row the values ``np.linspace`` gives
+    it alone (its own step: ``np.linspace`` of arrays takes the denormal route for every row if any row's step is 0)."""
+    delta = stop - start
+    positions = np.arange(count, dtype=float)
+    step = delta / (count - 1)
+    rows = positions[None, :] * step[:, None]
+    zero = step == 0
+    if zero.any():  # (np.linspace's route for a step of 0: the positions over the divisions, times the difference)
+        rows[zero] = (positions / (count - 1))[None, :] * delta[zero][:, None]
+    rows += start[:, None]
+    rows[:, -1] = stop
+    return rows
 
 
 def _radius_grid(solution: PathSolution, span: Span, lower: float, upper: float,
                  count: int) -> tuple[np.ndarray, np.ndarray]:
     """``count`` radii evenly from the radius at ``lower`` to that at ``upper`` (s from first contact; the
     span's ends, whose radii are roots of their depths) along the span's branch, and their times (in
-    ``[lower, upper]``, non-decreasing)."""
+    ``[lower, upper]``, non-decreasing): a moving span's scan alone (:func:`_scan_grids` builds every span's at once;
+    this one its reference in the tests)."""
     branch, rtol = solution.model.branch(span.regime), solution.model.tolerances.radius_rtol
     ends = [branch.radius(max(float(span.segment.d(solution.t_contact + t)), branch.jump_off_depth), rtol)
             for t in (lower, upper)]
@@ -534,7 +685,8 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
     points, reaches the best scanned value of the run) are refined within one grid interval of the
     best point by the roots of the quantity's derivative (:func:`~.stationary.stationary_points`: the
     span's dense output and the branch's closed forms), the means by a bounded Brent search to
-    :data:`EXTREMUM_XTOL` of the span's length. Of values equal to :data:`EXTREMUM_TIE` (a plateau) the
+    :data:`EXTREMUM_XTOL` of the span's length; a refined point replaces the scanned one where it is better beyond
+    the tie (:func:`within_tie`). Of values equal to :data:`EXTREMUM_TIE` (a plateau) the
     earliest time is reported, so that the time does not hang on rounding. The means (``mean_pressure``, ``mean_shear_stress``)
     are taken over the spans in contact.
 
@@ -577,16 +729,9 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
     for index in spans.tolist():
         times, i, value = scan.times[index], int(first[index]), float(best[index])
         time = float(times[i])
-        if len(times) > 1 and value + reach[index] >= best_scanned and not monotone:
-            ends = (max(i - 1, 0), min(i + 1, len(times) - 1))
-            radii = scan.values[index]["contact_radius"]
-            points = stationary_points(solution, index, quantity, (float(times[ends[0]]), float(times[ends[1]])),
-                                       (float(radii[ends[0]]), float(radii[ends[1]])))
-            if points is None:
-                points = [_bounded_search(solution, index, quantity, sign, times, i)]
-            for found_time, found in points:
-                if sign * found > value * (1.0 + EXTREMUM_TIE) + EXTREMUM_TIE * abs(value):
-                    time, value = found_time, sign * found
+        if len(times) > 1 and value + reach[index] >= best_scanned and not monotone \
+                and not never_stationary(solution, index, quantity):  # (else the scan's point stays)
+            time, value = _refined(solution, scan, index, quantity, sign, (i, value), size)
         results.append((time, value))
     best_value = max(value for _, value in results)
     # the earliest time at which the extremum is reached, to rounding of the quantity's size along the run (a
@@ -594,6 +739,26 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
     best_time, best_value = min((time, value) for time, value in results
                                 if within_tie(value, best_value, size))
     return best_time, sign * best_value
+
+
+def _refined(solution: PathSolution, scan: ExtremumScan, index: int, quantity: str, sign: float,
+             scanned: tuple[int, float], size: float) -> tuple[float, float]:
+    """:func:`extremum`'s refinement of span ``index`` about its best scan point (``scanned``: its index and signed
+    value): ``(time, signed value)`` of the stationary point (:func:`~.stationary.stationary_points`, or a bounded
+    search for the means) better than it beyond the tie (:func:`within_tie`), else of the scan's point."""
+    times, (i, value) = scan.times[index], scanned
+    time = float(times[i])
+    ends = (max(i - 1, 0), min(i + 1, len(times) - 1))
+    radii = scan.values[index]["contact_radius"]
+    points = stationary_points(solution, index, quantity, (float(times[ends[0]]), float(times[ends[1]])),
+                               (float(radii[ends[0]]), float(radii[ends[1]])))
+    if points is None:
+        points = [_bounded_search(solution, index, quantity, sign, times, i)]
+    for found_time, found in points:
+        # (better beyond rounding alone, by the rule of ties: a point the scan's ties stays)
+        if sign * found > value and not within_tie(value, sign * found, size):
+            time, value = found_time, sign * found
+    return time, value
 
 
 def _scanned_extremes(scan: ExtremumScan, quantity: str,

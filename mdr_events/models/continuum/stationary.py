@@ -38,7 +38,8 @@ from .span import LinearForce, Variable
 from .state import Regime
 from .tolerances import EPS
 
-__all__ = ["DENSE_DEGREE", "stationary_points", "interpolant_roots", "chebyshev_nodes", "derivative_roots"]
+__all__ = ["DENSE_DEGREE", "stationary_points", "never_stationary", "interpolant_roots", "chebyshev_nodes",
+           "derivative_roots"]
 
 #: Degree of the polynomial of one step of DOP853's dense output (``solve_ivp``'s interpolant of ``F_x``).
 DENSE_DEGREE = 7
@@ -135,10 +136,10 @@ def stationary_points(solution, index: int, quantity: str, times: tuple[float, f
         refines otherwise).
     """
     span = solution.spans[index]
-    if span.regime is Regime.NONE or quantity in ("contact_radius", "contact_area"):
+    if never_stationary(solution, index, quantity):
         return []
     if quantity == "normal_force":
-        return _normal_force_points(solution, span, times, radii) if span.regime is not Regime.PINNED else []
+        return _normal_force_points(solution, span, times, radii)
     if quantity != "tangential_force" or solution.compressed is not None:
         return None
     if span.interpolant is None:  # a constant force
@@ -158,6 +159,34 @@ def stationary_points(solution, index: int, quantity: str, times: tuple[float, f
             time = _time_of_radius(solution, span, natural * span.scale)
         points.append((min(max(time, times[0]), times[1]), value))
     return points
+
+
+def never_stationary(solution, index: int, quantity: str) -> bool:
+    """Whether :func:`stationary_points` finds no point of span ``index`` in any bracket: out of contact, the radius
+    and the area (monotone on a span), ``F_N`` on a pinned radius (linear in the depth), ``F_x`` constant or linear in
+    time (the compressed zone's aside, whose spans are another run's).
+
+    Parameters
+    ----------
+    solution : PathSolution
+    index : int
+        The span.
+    quantity : str
+        A quantity of :data:`~.solution.EXTREMUM_QUANTITIES`.
+
+    Returns
+    -------
+    bool
+        ``True`` where none can be found (:func:`~.solution.extremum` keeps the scan's point without asking).
+    """
+    span = solution.spans[index]
+    if span.regime is Regime.NONE or quantity in ("contact_radius", "contact_area"):
+        return True
+    if quantity == "normal_force":
+        return span.regime is Regime.PINNED
+    if quantity != "tangential_force" or solution.compressed is not None:
+        return False  # (no derivative route: the caller searches)
+    return span.interpolant is None or type(span.interpolant) is LinearForce
 
 
 @functools.singledispatch

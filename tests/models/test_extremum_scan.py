@@ -1,0 +1,177 @@
+"""The extrema's scan and the fill of a run's samples built for all spans at once (issue 28: one pass over the spans)
+against the routes span by span they replace, kept here as references: the same values bit for bit, since every
+value is computed by the same operations element by element (a call over several spans' points gives each point the
+value a call over its span's alone gives)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.indenters import PowerLaw
+from mdr_events.models.continuum import solve_path
+from mdr_events.models.continuum import solution as S
+from mdr_events.models.continuum import stationary
+from mdr_events.models.continuum.dense import force_values
+from mdr_events.models.continuum.state import Regime
+from mdr_events.models.paths import exit_depth
+from mdr_events.theory import analytic
+
+PAPER = me.Parameters.paper()
+HERTZ = PAPER.replace(dgamma0=0.0, dgamma1=0.0)
+ZIGZAG = [(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)]
+
+
+def _table():
+    radii = np.linspace(0.0, 4e-3, 41)
+    return me.TabulatedProfile(radii, radii**2 / (2 * PAPER.R))
+
+
+#: label -> (params, path, solve_path's keywords): the spans of every kind the scan meets (closed forms, DOP853's
+#: steps, a table's panels, linear forces, constants), both branches with several spans each, Coulomb's compressed
+#: zone, a layer, many pinned spans (the reciprocating path).
+CASES = {
+    "A 20°": lambda: (PAPER, me.Path.scenario_A(20.0, PAPER), {}),
+    "B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER), {}),
+    "zigzag": lambda: (PAPER, me.Path(ZIGZAG, PAPER.v), {}),
+    "table, A 20°": lambda: (PAPER, me.Path.scenario_A(20.0, PAPER, profile=_table()), {"profile": _table()}),
+    "cone, B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER, profile=PowerLaw.cone(0.05)),
+                            {"profile": PowerLaw.cone(0.05)}),
+    "Hertz, Coulomb, A 20°": lambda: (HERTZ, me.Path.scenario_A(20.0, HERTZ),
+                                      {"friction": FrictionLaw("coulomb", mu=0.3)}),
+    "Coulomb with adhesion, B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER),
+                                             {"friction": FrictionLaw("coulomb", mu=0.3)}),
+    "thin layer, zigzag": lambda: (PAPER, me.Path(ZIGZAG, PAPER.v), {"layer": me.Layer(1e-3)}),
+    "reciprocating": lambda: (PAPER, _reciprocating(), {}),
+}
+
+
+def _reciprocating():
+    """In at 20° to ``(x_c, d_max)``, ten cycles ``x_c ± 3 ū(a_max)``, out vertically (``bench_simulate.py``'s): some
+    sixty pinned spans, their forces constant or linear in time."""
+    amplitude = 3.0 * float(analytic.critical_shift(float(analytic.jkr_contact_radius(PAPER.d_max, PAPER,
+                                                                                     PAPER.dgamma0)), PAPER))
+    x_c = PAPER.d_max / math.tan(math.radians(20.0))
+    turns = [(x_c + amplitude * (1 if i % 2 == 0 else -1), PAPER.d_max) for i in range(20)]
+    return me.Path([(0.0, 0.0), (x_c, PAPER.d_max), *turns, (x_c, PAPER.d_max), (x_c, exit_depth(PAPER))], PAPER.v)
+
+
+def _reference_scan(solution):
+    """``scan_spans`` as it was, span by span: each moving span's grid by ``_radius_grid``, a pinned one's by
+    ``np.linspace``, each span evaluated alone, then ``F_N`` of all of them."""
+    times, values = [], []
+    for index, span in enumerate(solution.spans):
+        lower, upper = span.t_start - solution.t_contact, span.t_end - solution.t_contact
+        count = S.EXTREMUM_GRID if upper > lower else 1
+        if span.regime in (Regime.GROWING, Regime.SHRINKING):
+            grid, radii = S._radius_grid(solution, span, lower, upper, count)
+        else:
+            grid, radii = np.linspace(lower, upper, count), None
+        times.append(grid)
+        values.append(S.evaluate_span(solution, index, grid, sliding=False, radii=radii, normal=False))
+    S._fill_normal_force(solution.model, values)
+    return times, values
+
+
+def _runs(case):
+    params, path, options = CASES[case]()
+    solution = solve_path(params, path, **options)
+    return [solution] + ([solution.compressed] if solution.compressed is not None else [])
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_the_scan_of_all_spans_at_once_is_the_scan_span_by_span(case):
+    for run in _runs(case):
+        times, values = _reference_scan(run)
+        scan = S.scan_spans(run)
+        assert len(scan.times) == len(times) == len(run.spans)
+        for found, reference in zip(scan.times, times):
+            np.testing.assert_array_equal(found, reference)
+        for found, reference in zip(scan.values, values):
+            assert found.keys() == reference.keys()
+            for name in reference:
+                np.testing.assert_array_equal(found[name], reference[name], err_msg=name)
+
+
+def test_the_rows_of_linspace_are_linspace_row_by_row():
+    """``_linspace_rows``: each row ``np.linspace``'s own, a row of no step (equal ends) and one whose step underflows
+    to 0 (a denormal difference) among others; ``np.linspace`` of the arrays would take the zero step's route for every
+    row."""
+    start = np.array([0.0, 1.0, 2.5e-4, 5e-324, -3.0, 7.0])
+    stop = np.array([1.0, 1.0, 1.7e-3, 1e-323, 2.0, -7.0])
+    rows = S._linspace_rows(start, stop, S.EXTREMUM_GRID)
+    for row, lower, upper in zip(rows, start, stop):
+        np.testing.assert_array_equal(row, np.linspace(lower, upper, S.EXTREMUM_GRID))
+
+
+def _span_by_span(interpolants, points):
+    """``span_forces`` as it was: each span's interpolant called on its own points (``force_values``)."""
+    return [force_values(interpolant, where) for interpolant, where in zip(interpolants, points)]
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_the_fill_of_all_spans_at_once_is_the_fill_span_by_span(case, monkeypatch):
+    """``evaluate`` at a run's 2001 samples and at times out of order (each span's rows gathered by index), with
+    ``F_x`` of all spans by the kinds of their interpolants and with each span's own call: the same, bit for bit; so
+    is the scan."""
+    for run in _runs(case):
+        samples = np.linspace(0.0, run.end_time * (1.0 + 1.0 / 2001), 2001)
+        shuffled = np.random.default_rng(7).permutation(samples[::3])
+        found = [S.evaluate(run, times) for times in (samples, shuffled)] + [S.scan_spans(run).values]
+        with monkeypatch.context() as patch:
+            patch.setattr(S, "span_forces", _span_by_span)
+            reference = [S.evaluate(run, times) for times in (samples, shuffled)] + [S.scan_spans(run).values]
+        for got, expected in zip(found[:2], reference[:2]):
+            for name in S.EVALUATED_QUANTITIES:
+                np.testing.assert_array_equal(got[name], expected[name], err_msg=name)
+        for got, expected in zip(found[2], reference[2]):
+            np.testing.assert_array_equal(got["tangential_force"], expected["tangential_force"])
+
+
+@pytest.mark.parametrize("share, refined", [(0.5, False), (4.0, True)])
+def test_a_refined_point_replaces_the_scans_beyond_the_tie_alone(share, refined, monkeypatch):
+    """``extremum``'s refinement and its ties are one rule (``within_tie``, the rate run's too): a stationary point
+    better than the scan's best point by ``share`` times ``EXTREMUM_TIE`` of the quantity's size along the run replaces
+    it only beyond the tie (``share > 1``). ``F_N``'s minimum of scenario A (the pull-off, -0.02 N against 0.52 N at
+    the top: the old rule, a tie of ``2 EXTREMUM_TIE`` of the value itself, took a point better by half the run's tie)."""
+    run = solve_path(PAPER, me.Path.scenario_A(20.0, PAPER))
+    scan = S.scan_spans(run)
+    best, _, first, size = S._scanned_extremes(scan, "normal_force", -1.0)
+    holder = int(np.nanargmax(best))
+    scanned_time = float(scan.times[holder][first[holder]])
+    scanned = float(scan.values[holder]["normal_force"][first[holder]])
+    found_time, found = scanned_time + 1.0, scanned - share * S.EXTREMUM_TIE * size  # (lower: better for a minimum)
+
+    def stationary(solution, index, quantity, times, radii):
+        return [(found_time, found)] if index == holder and quantity == "normal_force" else []
+
+    monkeypatch.setattr(S, "stationary_points", stationary)
+    assert S.extremum(run, "normal_force", largest=False, scan=scan) == \
+        ((found_time, found) if refined else (scanned_time, scanned))
+
+
+def _stationary_before(solution, index, quantity):
+    """``stationary_points``' early answers as they were (no point out of contact, of the radius and the area, nor of
+    ``F_N`` on a pinned radius; every other span searched): the reference of ``never_stationary``."""
+    span = solution.spans[index]
+    if span.regime is Regime.NONE or quantity in ("contact_radius", "contact_area"):
+        return True
+    return quantity == "normal_force" and span.regime is Regime.PINNED
+
+
+@pytest.mark.parametrize("case", ["A 20°", "B 30°", "zigzag", "reciprocating", "table, A 20°"])
+def test_the_spans_passed_over_change_no_extremum(case, monkeypatch):
+    """``extremum`` does not refine the spans ``never_stationary`` names (also a constant force or one linear in time):
+    every extremum of every quantity is the one found with every span refined as before, bit for bit."""
+    for run in _runs(case):
+        found = [S.extremum(run, quantity, largest) for quantity in S.EXTREMUM_QUANTITIES for largest in (True, False)]
+        with monkeypatch.context() as patch:
+            patch.setattr(S, "never_stationary", lambda solution, index, quantity: False)
+            patch.setattr(stationary, "never_stationary", _stationary_before)
+            reference = [S.extremum(run, quantity, largest) for quantity in S.EXTREMUM_QUANTITIES
+                         for largest in (True, False)]
+        assert found == reference
