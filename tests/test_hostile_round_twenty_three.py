@@ -110,8 +110,6 @@ VIEW_TIMES = 10**6
 COUNTED_PEAK_BYTES = 2**20
 
 
-@pytest.mark.xfail(strict=True, reason="round twenty-three V3: Continuum(t=...) reads its times when made, before "
-                                       "the run's limits (16 GB for 1e9 broadcast times); open")
 def test_a_continuum_method_value_counts_its_times_before_reading_them():
     import tracemalloc
 

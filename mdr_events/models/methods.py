@@ -252,14 +252,17 @@ class Continuum:
     samples : int, optional
         Without ``t``: the number of output times to the end of the longest run (default 2001, at least 2).
     t : sequence of float, optional
-        The output times in s from first contact (increasing, >= 0).
+        The output times in s from first contact (increasing, >= 0), kept as given and read when a run starts,
+        after their count is checked against the run's :class:`~mdr_events.Limits` (:meth:`output_times`; round
+        twenty-three: ``Continuum(t=np.broadcast_to(0.1, (10**9,)))`` was read here, 16 GB before any limit).
 
     Raises
     ------
     TypeError
         ``tolerances`` that are not a :class:`~mdr_events.Tolerances`.
     ValueError
-        ``t`` and ``samples`` both given, fewer than 2 samples, or times not finite, >= 0 and strictly increasing.
+        ``t`` and ``samples`` both given, fewer than 2 samples; times not finite, >= 0 and strictly increasing are
+        refused when a run reads them (:meth:`output_times`).
     """
 
     name: ClassVar[str] = "continuum"
@@ -277,8 +280,10 @@ class Continuum:
                              "one of them (give t or samples, not both)")
         object.__setattr__(self, "samples", DEFAULT_SAMPLES if self.samples is None else
                            check_count("samples", self.samples, 2))
-        if self.t is not None:
-            object.__setattr__(self, "t", check_output_times("t", self.t))
+
+    def __repr__(self) -> str:  # (its times as a message shows them: a long list is not written out)
+        times = "" if self.t is None else f", t={shown(self.t)}"
+        return f"Continuum(tolerances={self.tolerances!r}, samples={self.samples!r}{times})"
 
     def __eq__(self, other) -> bool:  # (its output times are an array: compared by value)
         if not isinstance(other, Continuum):
@@ -343,8 +348,34 @@ class Continuum:
         ResourceLimitError
             The output times or the memory of ``count`` cases beyond ``limits``.
         """
-        n_time = self.samples if self.t is None else len(self.t)
+        n_time = self.samples if self.t is None else values_in(self.t)  # (counted, not read)
         check_output(limits, count, n_time, CONTINUUM_BYTES_PER_SAMPLE)
+
+    def output_times(self, count: int, limits: Limits) -> np.ndarray | int:
+        """The run's output times: ``samples``, or the times ``t`` read (checked: finite, >= 0, strictly increasing)
+        once the run of ``count`` cases with as many times is within ``limits`` (:meth:`check_case_count`).
+
+        Parameters
+        ----------
+        count : int
+            The cases of the run.
+        limits : Limits
+            What the run may use.
+
+        Returns
+        -------
+        numpy.ndarray or int
+            The times (read-only), or the number of samples to the end of the longest run.
+
+        Raises
+        ------
+        ResourceLimitError
+            The output beyond ``limits``.
+        ValueError, TypeError
+            Times that are not a strictly increasing 1-D grid of finite times >= 0, naming ``t``.
+        """
+        self.check_case_count(count, limits)
+        return self.samples if self.t is None else check_output_times("t", self.t)
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Solve the cases exactly; the dataset of :mod:`~mdr_events.models.simulation_schema` with the event log,
@@ -369,7 +400,7 @@ class Continuum:
         tolerances = self.tolerances
         layer = model.contact.layer
         run = continuum_kernel(model.adhesion).run
-        raw = run(model.kernel, cases.paths, self.samples if self.t is None else self.t, tolerances, limits)
+        raw = run(model.kernel, cases.paths, self.output_times(len(cases.paths), limits), tolerances, limits)
         # (the half-space stamps no layer, as Contact.to_attrs: its results are those of before)
         layer_attrs = {} if layer.is_half_space else layer.to_attrs()
         attrs = dict(method=self.name, scenario=model.scenario,
