@@ -1,0 +1,182 @@
+"""The twenty-fourth hostile round (issue 32): each class of what failed, with the cases that showed it.
+
+The round's cases (round twenty-three's open class: the objects a user builds whose constructors read a user-sized
+array before any limit: the continuum's times, a scenario's angles, a tabulated profile's columns, a path's
+waypoints, the sweep's grids, ``Limits``, ``SweepOutput``, ``Engine``; the discrete model at the layer tables' edge;
+fresh variants of every class of the issue) are listed with their outcomes in the issue's closing note; what failed
+is below.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import time
+import tracemalloc
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from hostile_checks import one_line_naming
+from mdr_events.models.continuum import run_continuum
+from mdr_events.validation import SHOWN_CHARACTERS, shown
+
+PAPER = me.Parameters.paper()
+#: Limits far below what the cases below ask: any of them refuses the run.
+SMALL = me.Limits(samples=1000, steps=10**6, memory=2**20)
+#: The values of the user's arrays below: a view of one value (``np.broadcast_to``) takes no memory of its own, its
+#: copy 8 MB; 1e9 of them took 16 GB in round twenty-three.
+VIEW_VALUES = 10**6
+#: What counting them may take (tracemalloc's peak): far below one copy (8 MB); the message and the limits' check
+#: take a few kB.
+COUNTED_PEAK_BYTES = 2**20
+
+
+def _peak_of(call) -> int:
+    """The peak of what ``call`` allocates (bytes, tracemalloc), whatever it raises (checked by the caller)."""
+    tracemalloc.start()
+    try:
+        call()
+    finally:
+        _, peak = tracemalloc.get_traced_memory()
+        tracemalloc.stop()
+    return peak
+
+
+def _refused_for_resources(call) -> int:
+    """The peak of ``call`` refused for its resources, traced the second time (the first imports what it uses)."""
+    def refused():
+        with pytest.raises(me.ResourceLimitError):
+            call()
+    refused()
+    return _peak_of(refused)
+
+
+def _finite_in_contact(values: np.ndarray) -> bool:
+    """Every sample finite up to the loss of contact, nan after it (the results' convention), for each case."""
+    for row in np.atleast_2d(values):
+        lost = np.isnan(row)
+        first = int(np.argmax(lost)) if lost.any() else row.size
+        if first == 0 or not lost[first:].all() or not np.all(np.isfinite(row[:first])):
+            return False
+    return True
+
+
+# --- W1 (round twenty-three V3, closed): a Continuum built by the user read its output times when made, before
+# any limit (Continuum(t=np.broadcast_to(0.1, (10**9,))): 16 GB and 84 s, then refused as not increasing); the same
+# times by name were counted first. The method keeps its times as given and reads them when a run starts, counted
+# against the run's limits first (Continuum.output_times); run_continuum counts its times before it reads them ------
+
+def _view_times():
+    return np.broadcast_to(0.1, (VIEW_VALUES,))
+
+
+def test_a_continuum_is_made_without_reading_its_times():
+    me.Continuum()  # (its modules imported before the trace)
+    assert _peak_of(lambda: me.Continuum(t=_view_times())) < COUNTED_PEAK_BYTES
+
+
+@pytest.mark.parametrize("call", [
+    lambda: me.simulate(PAPER, "A", 20.0, me.Continuum(t=_view_times()), limits=SMALL),
+    lambda: me.simulate(me.Contact.paper(), "B", [20.0, 30.0], method=me.Continuum(t=_view_times()), limits=SMALL),
+    lambda: me.simulate(me.Contact.paper(), "A", me.Continuum(t=_view_times()), limits=SMALL),
+    lambda: run_continuum(PAPER, me.Scenario("A", 20.0).cases(PAPER).paths, _view_times(), limits=SMALL),
+], ids=["third argument", "method=", "in alpha's place", "run_continuum"])
+def test_a_run_counts_the_continuum_s_times_before_reading_them(call):
+    assert _refused_for_resources(call) < COUNTED_PEAK_BYTES
+
+
+@pytest.mark.parametrize("times, error", [
+    ([0.0, 2.0, 1.0], ValueError), ([0.0, math.nan], ValueError), ([0.0, math.inf], ValueError),
+    ([-1.0, 1.0], ValueError), (np.ones((2, 2)), ValueError), (["0", "1"], TypeError), ([0, True, 2], TypeError),
+    ([], ValueError),
+])
+def test_a_continuum_s_bad_times_are_refused_by_the_run_naming_t(times, error):
+    message = one_line_naming(lambda: me.simulate(PAPER, "A", 20.0, me.Continuum(t=times)), "t=", errors=error)
+    assert message.startswith("t="), message
+
+
+def test_a_continuum_s_times_are_those_given_by_name():
+    """The same times, read when the run starts, give the same result as by name (the run reads them once)."""
+    times = np.linspace(0.0, 300.0, 7)
+    by_value = me.simulate(PAPER, "A", 20.0, me.Continuum(t=times))
+    by_name = me.simulate(PAPER, "A", 20.0, "continuum", t=times)
+    assert np.array_equal(by_value.normal_force.values, by_name.normal_force.values)
+    assert np.array_equal(by_value.time.values, times)
+
+
+def test_a_long_list_is_shown_by_its_first_items():
+    """A message (and the method's repr) shows a long list cut as before, without writing it out whole: the cut text
+    is the same, the time that of a short list (a million times' repr took a second and 20 MB)."""
+    values = [0.1 * index for index in range(VIEW_VALUES)]
+    start = time.process_time()
+    text = shown(values)
+    assert time.process_time() - start < 0.05  # (the first items' repr: microseconds; the whole list's: a second)
+    assert text == " ".join(repr(values[:1000]).split())[: SHOWN_CHARACTERS - 3] + "..."
+    assert len(repr(me.Continuum(t=values))) < 3 * SHOWN_CHARACTERS
+    assert me.Continuum(t=[0.0, 1.0]) == me.Continuum(t=np.array([0.0, 1.0]))
+
+
+# --- W2: a tabulated profile read its columns before their count refused them (a million points: 70 MB, 1.5 s,
+# then "lengths 1000000 ... allowed: 3 to 10000"); counted first ---------------------------------------------------
+
+def test_a_tabulated_profile_counts_its_columns_before_reading_them():
+    column = np.broadcast_to(1.0, (VIEW_VALUES,))
+
+    def refused():
+        one_line_naming(lambda: me.TabulatedProfile(column, column), "lengths 1000000 and 1000000")
+    assert _peak_of(refused) < COUNTED_PEAK_BYTES
+
+
+# --- W3: the discrete model at the layer tables' edge (a flat punch's face at a/h = 64 exactly) was told "a smaller
+# dx", which cannot help there; the refusal names what applies: the spacing that fits where there is room (applied
+# back: it runs), no spacing at the edge, a smaller face or a shallower depth, a thicker layer -----------------------
+
+FACE = 1e-3
+
+
+def _punch_on(thickness: float) -> me.Contact:
+    return me.Contact(me.Elastomer(PAPER.E, PAPER.nu), me.FlatPunch(FACE), me.Adhesion(PAPER.dgamma0, PAPER.dgamma1),
+                      me.FrictionLaw("tau0", tau0=PAPER.tau0), me.Layer(thickness))
+
+
+def _spacing_named(message: str) -> float:
+    found = re.search(r"allowed: dx <= ([0-9.e+-]+) m", message)
+    assert found, message
+    return float(found.group(1))
+
+
+def test_a_face_at_the_tables_edge_is_told_no_spacing_helps():
+    thickness = FACE / 64  # (exact: a power of two apart)
+    message = one_line_naming(lambda: me.simulate(_punch_on(thickness), "B", 20.0, "discrete"), "dx=")
+    assert "smaller dx" not in message and "no dx" in message, message
+    assert f"a layer thicker than h = {thickness!r} m" in message and "a face's radius below" in message, message
+
+
+def test_a_face_within_the_tables_is_told_the_spacing_that_runs():
+    contact = _punch_on(1.001 * FACE / 64)
+    message = one_line_naming(lambda: me.simulate(contact, "B", 20.0, "discrete", n_steps=100), "dx=")
+    ds = me.simulate(contact, "B", 20.0, "discrete", dx=_spacing_named(message), n_steps=100)
+    assert _finite_in_contact(ds.normal_force.values)
+
+
+def test_a_paraboloid_near_the_tables_edge_is_told_the_spacing_that_runs():
+    """Round fourteen's case (a contact radius 0.1 % inside the tables' last, 100 springs to it): the named spacing
+    runs, and the depth's bound is named."""
+    contact, thickness = me.Contact.paper().replace(h=1e-4), 1e-4
+    target = 0.999 * 64 * thickness
+    low, high = 3e-4, 4e-4
+    for _ in range(40):  # the depth of that radius on the Δγ0 branch, by bisection
+        middle = 0.5 * (low + high)
+        try:
+            radius = float(me.layer_normal_curve(contact, [middle])["contact_radius"].sel(branch="dgamma0")[0])
+        except ValueError:  # (beyond the tables)
+            radius = math.inf
+        low, high = (middle, high) if radius < target else (low, middle)
+    scenario = me.Scenario("A", alpha=[20.0], d_max=low)
+    message = one_line_naming(lambda: me.simulate(contact, scenario, "discrete", dx=64 * thickness / 100,
+                                                  n_steps=100), "dx=")
+    assert "a depth whose contact radius stays below" in message, message
+    ds = me.simulate(contact, scenario, "discrete", dx=_spacing_named(message), n_steps=100)
+    assert _finite_in_contact(ds.normal_force.values)
