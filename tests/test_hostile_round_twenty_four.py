@@ -9,8 +9,12 @@ is below.
 
 from __future__ import annotations
 
+import errno
+import io
 import math
+import os
 import re
+import sys
 import time
 import tracemalloc
 
@@ -18,7 +22,8 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from hostile_checks import one_line_naming
+from hostile_checks import cli_one_line, one_line_naming
+from mdr_events.app.cli import main
 from mdr_events.models.continuum import run_continuum
 from mdr_events.validation import SHOWN_CHARACTERS, shown
 
@@ -180,3 +185,50 @@ def test_a_paraboloid_near_the_tables_edge_is_told_the_spacing_that_runs():
     assert "a depth whose contact radius stays below" in message, message
     ds = me.simulate(contact, scenario, "discrete", dx=_spacing_named(message), n_steps=100)
     assert _finite_in_contact(ds.normal_force.values)
+
+
+# --- W4 (open): a Scenario built by the user reads its angles when it is made (converted, checked for repeats and
+# kept as a tuple of floats: a million angles 54 MB and 0.8 s, a view of 1e9 one value ~100 GB), before any limit;
+# by name (simulate(contact, "A", alpha=...)) the same angles are counted first. Its angles would be kept as given and
+# read when its cases are built, counted against the run's limits first (Scenario.alpha is read as a tuple in ~50
+# places: more than this round's time) -----------------------------------------------------------------------------
+
+@pytest.mark.xfail(strict=True, reason="round twenty-four W4: Scenario(alpha=...) reads its angles when made, before "
+                                       "the run's limits (54 MB for a million angles); open")
+def test_a_scenario_counts_its_angles_before_reading_them():
+    angles = np.linspace(1.0, 89.0, VIEW_VALUES)
+    assert _refused_for_resources(lambda: me.simulate(me.Contact.paper(), me.Scenario("A", angles),
+                                                      limits=SMALL)) < COUNTED_PEAK_BYTES
+
+
+# --- W5: the standard output's help, version and encoding: `mdr-events --help > /dev/full` (and --version, a
+# verb's --help) ended 0 with nothing written (argparse ignores its write errors, the text was printed before the
+# command's stdout was named); PYTHONIOENCODING=ascii `mdr-events derive` printed "'ascii' codec can't encode
+# character '\u2320' in position 38" without naming what or what is allowed. The parsing runs with the stdout named,
+# its first write error raised again when flushed; text its encoding cannot write is refused naming the encoding --
+
+class _FullDevice(io.StringIO):
+    """A standard output on a full device: every write fails as /dev/full's (ENOSPC)."""
+
+    def write(self, text: str) -> int:
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+
+@pytest.mark.parametrize("argv", [["--help"], ["--version"], ["derive", "--help"], ["simulate", "--help"]])
+def test_cli_help_on_a_full_device_is_named(capsys, monkeypatch, argv):
+    monkeypatch.setattr(sys, "stdout", _FullDevice())
+    err = cli_one_line(capsys, argv)
+    assert "<standard output>" in err and "No space left on device" in err and "allowed" in err, err
+
+
+def test_cli_help_is_printed_with_exit_0(capsys):
+    with pytest.raises(SystemExit) as stopped:
+        main(["--help"])
+    assert stopped.value.code == 0 and capsys.readouterr().out.startswith("usage: mdr-events")
+
+
+@pytest.mark.parametrize("encoding", ["ascii", "latin-1"])
+def test_cli_standard_output_of_a_narrow_encoding_is_named(capsys, monkeypatch, encoding):
+    monkeypatch.setattr(sys, "stdout", io.TextIOWrapper(io.BytesIO(), encoding=encoding))
+    err = cli_one_line(capsys, ["derive", "--key", "hertz_normal_force"])
+    assert f"<standard output> of encoding '{encoding}' cannot write" in err and "PYTHONIOENCODING=utf-8" in err, err
