@@ -232,3 +232,41 @@ def test_cli_standard_output_of_a_narrow_encoding_is_named(capsys, monkeypatch, 
     monkeypatch.setattr(sys, "stdout", io.TextIOWrapper(io.BytesIO(), encoding=encoding))
     err = cli_one_line(capsys, ["derive", "--key", "hertz_normal_force"])
     assert f"<standard output> of encoding '{encoding}' cannot write" in err and "PYTHONIOENCODING=utf-8" in err, err
+
+
+# --- W6: a file's write error named no file: under `ulimit -f` (or on a full disk) `mdr-events simulate` and
+# `validate` printed "mdr-events: error: [Errno 27] File too large" and write_netcdf raised it bare (the writer's
+# OSError carries no file name; only the temporary's were renamed). The file being written is named, with what a
+# write needs -----------------------------------------------------------------------------------------------------
+
+#: A file size limit (bytes) below a one-angle simulation's figure (~60 kB) and above nothing else the test writes.
+FILE_SIZE_LIMIT = 20_000
+
+
+def test_a_writer_s_error_names_the_file(tmp_path):
+    from mdr_events.io.files import atomic_write
+
+    def writer(temporary: str) -> None:
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))  # (as a full disk's write: no file name)
+
+    target = tmp_path / "run.nc"
+    with pytest.raises(OSError) as raised:
+        atomic_write(target, writer)
+    assert raised.value.filename == os.fspath(target) and "allowed" in str(raised.value), raised.value
+    assert list(tmp_path.iterdir()) == []  # (the temporary removed, nothing placed)
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="RLIMIT_FSIZE is POSIX")
+def test_cli_file_too_large_names_the_file(capsys, tmp_path):
+    import resource
+
+    soft, hard = resource.getrlimit(resource.RLIMIT_FSIZE)
+    resource.setrlimit(resource.RLIMIT_FSIZE, (FILE_SIZE_LIMIT, hard))  # (Python ignores SIGXFSZ: writes fail EFBIG)
+    try:
+        err = cli_one_line(capsys, ["simulate", "--scenario", "A", "--alpha", "20", "--n-steps", "200", "--out",
+                                    str(tmp_path)])
+    finally:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (soft, hard))
+    assert re.search(re.escape(str(tmp_path / "simulation_A_discrete.")) + r"(nc|png): File too large", err), err
+    assert "ulimit -f" in err, err
+    assert list(tmp_path.iterdir()) == []
