@@ -270,3 +270,14 @@ def test_cli_file_too_large_names_the_file(capsys, tmp_path):
     assert re.search(re.escape(str(tmp_path / "simulation_A_discrete.")) + r"(nc|png): File too large", err), err
     assert "ulimit -f" in err, err
     assert list(tmp_path.iterdir()) == []
+
+
+# --- W7: fit_rate_adhesion read each measurement's samples (converted three times: 24 MB for a million) before
+# their count was checked against its limits; counted first -------------------------------------------------------
+
+def test_a_rate_fit_counts_its_samples_before_reading_them():
+    law = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-6, 0.5)
+    samples = np.broadcast_to(1.0, (VIEW_VALUES,))
+    measured = me.RateMeasurement(me.Path([(0.0, -1e-5), (0.0, 1e-4), (1e-4, -1e-5)], 1e-6), samples, samples, 0.01)
+    assert _refused_for_resources(lambda: me.fit_rate_adhesion([measured], PAPER, law,
+                                                               limits=SMALL)) < COUNTED_PEAK_BYTES
