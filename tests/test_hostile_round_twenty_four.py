@@ -281,3 +281,40 @@ def test_a_rate_fit_counts_its_samples_before_reading_them():
     measured = me.RateMeasurement(me.Path([(0.0, -1e-5), (0.0, 1e-4), (1e-4, -1e-5)], 1e-6), samples, samples, 0.01)
     assert _refused_for_resources(lambda: me.fit_rate_adhesion([measured], PAPER, law,
                                                                limits=SMALL)) < COUNTED_PEAK_BYTES
+
+
+# --- W8 (open): a cone on a layer under tau0+coulomb in the continuum does not finish: PowerLaw(0.2, 1) on h = 2 mm,
+# mu = 0.5, scenario A at 45° or 89.5° (300 samples) ran over 5 min of CPU in the play springs' golden-section search
+# (play_springs._golden, each spring's own times: ~15 s a spring), where the paraboloid, a power law of n = 3, the
+# cone under Coulomb's law alone or the cone on a thick layer take ~2 s. The run would finish in the paraboloid's
+# time within a factor (the area of the helper of Coulomb on a layer; more than this round's time) ---------------
+
+#: The CPU time (s) the cone's run may take: 15 times the paraboloid's ~2 s on the same layer and law.
+CONE_RUN_CPU_SECONDS = 30.0
+
+
+class _OverBudget(Exception):
+    """The run took more CPU time than allowed."""
+
+
+@pytest.mark.slow  # (it spends CONE_RUN_CPU_SECONDS of CPU while open)
+@pytest.mark.xfail(strict=True, raises=_OverBudget, reason="round twenty-four W8: a cone on a layer under "
+                   "tau0+coulomb in the continuum runs for minutes (play springs' golden-section search); open")
+def test_a_cone_on_a_layer_under_both_laws_finishes():
+    import dataclasses
+    import signal
+
+    contact = dataclasses.replace(me.Contact.paper(), friction=me.FrictionLaw("tau0+coulomb", tau0=PAPER.tau0, mu=0.5),
+                                  indenter=me.PowerLaw(0.2, 1.0), layer=me.Layer(2e-3))
+
+    def over(signum, frame):
+        raise _OverBudget(f"over {CONE_RUN_CPU_SECONDS} s of CPU")
+
+    previous = signal.signal(signal.SIGPROF, over)
+    signal.setitimer(signal.ITIMER_PROF, CONE_RUN_CPU_SECONDS)
+    try:
+        ds = me.simulate(contact, "A", [45.0], "continuum", samples=300)
+    finally:
+        signal.setitimer(signal.ITIMER_PROF, 0.0)
+        signal.signal(signal.SIGPROF, previous)
+    assert _finite_in_contact(ds.normal_force.values)
