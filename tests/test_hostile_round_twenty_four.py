@@ -286,7 +286,7 @@ def test_a_rate_fit_counts_its_samples_before_reading_them():
 # --- W8 (open): a cone on a layer under tau0+coulomb in the continuum does not finish: PowerLaw(0.2, 1) on h = 2 mm,
 # mu = 0.5, scenario A at 45° or 89.5° (300 samples) ran over 5 min of CPU in the play springs' golden-section search
 # (play_springs._golden, each spring's own times: ~15 s a spring), where the paraboloid, a power law of n = 3, the
-# cone under Coulomb's law alone or the cone on a thick layer take ~2 s. The run would finish in the paraboloid's
+# cone under Coulomb's law alone or the cone on a thick layer take ~2 s; PowerLaw(0.5, 1.01) likewise, in A, B and B+. The run would finish in the paraboloid's
 # time within a factor (the area of the helper of Coulomb on a layer; more than this round's time) ---------------
 
 #: The CPU time (s) the cone's run may take: 15 times the paraboloid's ~2 s on the same layer and law.
