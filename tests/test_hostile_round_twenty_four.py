@@ -73,13 +73,31 @@ def _finite_in_contact(values: np.ndarray) -> bool:
 # times by name were counted first. The method keeps its times as given and reads them when a run starts, counted
 # against the run's limits first (Continuum.output_times); run_continuum counts its times before it reads them ------
 
+#: Output times beyond what one case may have within the default limits (``Limits.samples`` 1e7): counted, these
+#: are kept as given, read only by a run whose limits take them. A view of one value: no memory of its own.
+BEYOND_DEFAULT_TIMES = 10**8
+
+
 def _view_times():
-    return np.broadcast_to(0.1, (VIEW_VALUES,))
+    return np.broadcast_to(0.1, (BEYOND_DEFAULT_TIMES,))
 
 
 def test_a_continuum_is_made_without_reading_its_times():
     me.Continuum()  # (its modules imported before the trace)
     assert _peak_of(lambda: me.Continuum(t=_view_times())) < COUNTED_PEAK_BYTES
+
+
+def test_a_continuum_keeps_a_checked_copy_of_times_within_the_default_limits():
+    """Times that one case may have within the default limits are read when the method is made: a read-only copy,
+    unchanged when the caller's array changes after (a reviewer's finding: the method aliased the array), and bad
+    times refused at once, naming ``t``."""
+    times = np.linspace(0.0, 1.0, 5)
+    method = me.Continuum(t=times)
+    times[1] = -5.0
+    assert np.array_equal(method.t, np.linspace(0.0, 1.0, 5))
+    assert not method.t.flags.writeable
+    with pytest.raises(ValueError, match=r"^t=\[3\.0, 2\.0\] is not allowed"):
+        me.Continuum(t=[3.0, 2.0])
 
 
 @pytest.mark.parametrize("call", [

@@ -25,7 +25,7 @@ import xarray as xr
 from mdr_events.contact.adhesion import RateDependentAdhesion, adhesion_attrs
 from mdr_events.contact.friction import FrictionLaw, friction_attrs
 from mdr_events.contact.model import Contact
-from mdr_events.limits import Limits, values_in
+from mdr_events.limits import DEFAULT_LIMITS, Limits, ResourceLimitError, values_in
 from mdr_events.models import indenters
 from mdr_events.models.continuum import PathSolution, Tolerances, run_continuum, solve_path
 from mdr_events.models.continuum.rate_reference import RateSolution, solve_rate_reference
@@ -252,17 +252,19 @@ class Continuum:
     samples : int, optional
         Without ``t``: the number of output times to the end of the longest run (default 2001, at least 2).
     t : sequence of float, optional
-        The output times in s from first contact (increasing, >= 0), kept as given and read when a run starts,
-        after their count is checked against the run's :class:`~mdr_events.Limits` (:meth:`output_times`; round
-        twenty-three: ``Continuum(t=np.broadcast_to(0.1, (10**9,)))`` was read here, 16 GB before any limit).
+        The output times in s from first contact (increasing, >= 0), counted first: as many as one case may have
+        within the default :class:`~mdr_events.Limits` are read, checked and kept as a read-only copy here (the
+        caller's array may change after); more are kept as given and read when a run starts, after their count is
+        checked against the run's limits (:meth:`output_times`; round twenty-three:
+        ``Continuum(t=np.broadcast_to(0.1, (10**9,)))`` was read here, 16 GB before any limit).
 
     Raises
     ------
     TypeError
         ``tolerances`` that are not a :class:`~mdr_events.Tolerances`.
     ValueError
-        ``t`` and ``samples`` both given, fewer than 2 samples; times not finite, >= 0 and strictly increasing are
-        refused when a run reads them (:meth:`output_times`).
+        ``t`` and ``samples`` both given, fewer than 2 samples, or times not finite, >= 0 and strictly increasing
+        (times beyond the default limits: when a run reads them, :meth:`output_times`).
     """
 
     name: ClassVar[str] = "continuum"
@@ -280,6 +282,16 @@ class Continuum:
                              "one of them (give t or samples, not both)")
         object.__setattr__(self, "samples", DEFAULT_SAMPLES if self.samples is None else
                            check_count("samples", self.samples, 2))
+        if self.t is not None and self._within_default_limits():  # (a copy: the caller's array may change)
+            object.__setattr__(self, "t", check_output_times("t", self.t))
+
+    def _within_default_limits(self) -> bool:
+        """Whether one case of the times ``t``, counted (not read), is within :data:`DEFAULT_LIMITS`."""
+        try:
+            self.check_case_count(1, DEFAULT_LIMITS)
+        except ResourceLimitError:
+            return False
+        return True
 
     def __repr__(self) -> str:  # (its times as a message shows them: a long list is not written out)
         times = "" if self.t is None else f", t={shown(self.t)}"
