@@ -24,6 +24,7 @@ import pytest
 import mdr_events as me
 from hostile_checks import cli_one_line, one_line_naming
 from mdr_events.app.cli import main
+from mdr_events.app.cli._stdout import NamedOutput
 from mdr_events.models.continuum import run_continuum
 from mdr_events.validation import SHOWN_CHARACTERS, shown
 
@@ -243,6 +244,18 @@ def test_cli_help_is_printed_with_exit_0(capsys):
     with pytest.raises(SystemExit) as stopped:
         main(["--help"])
     assert stopped.value.code == 0 and capsys.readouterr().out.startswith("usage: mdr-events")
+
+
+def test_standard_output_s_write_error_is_raised_by_one_flush():
+    """The first write error is raised by the next flush, then cleared: raised again by every later flush, the same
+    exception object's traceback grew with each (a reviewer's finding)."""
+    output = NamedOutput(_FullDevice())
+    with pytest.raises(OSError, match="<standard output>"):
+        output.write("text")
+    with pytest.raises(OSError, match="<standard output>"):
+        output.flush()
+    output.flush()
+    assert output.failed is None
 
 
 @pytest.mark.parametrize("encoding", ["ascii", "latin-1"])

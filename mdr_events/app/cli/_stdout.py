@@ -75,13 +75,14 @@ class NamedOutput:
         Raises
         ------
         OSError
-            The stream's error, or the first of its writes (:attr:`failed`), naming the standard output and what is
-            allowed (``BrokenPipeError`` as it is).
+            The stream's error, or the first of its writes (:attr:`failed`, cleared once raised), naming the
+            standard output and what is allowed (``BrokenPipeError`` as it is).
         """
         with _named():
             self.stream.flush()
-        if self.failed is not None:
-            raise self.failed
+        failed, self.failed = self.failed, None  # (raised once: raised again, its traceback would grow each time)
+        if failed is not None:
+            raise failed
 
     def __getattr__(self, name: str):
         return getattr(self.stream, name)
