@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from hostile_checks import cli_one_line, one_line_naming
+from hostile_checks import cli_one_line, depth_reaching, one_line_naming
 from mdr_events.app.cli import main
 from mdr_events.app.cli._stdout import NamedOutput
 from mdr_events.models.continuum import run_continuum
@@ -190,14 +190,7 @@ def test_a_paraboloid_near_the_tables_edge_is_told_the_spacing_that_runs():
     runs, and the depth's bound is named."""
     contact, thickness = me.Contact.paper().replace(h=1e-4), 1e-4
     target = 0.999 * 64 * thickness
-    low, high = 3e-4, 4e-4
-    for _ in range(40):  # the depth of that radius on the Δγ0 branch, by bisection
-        middle = 0.5 * (low + high)
-        try:
-            radius = float(me.layer_normal_curve(contact, [middle])["contact_radius"].sel(branch="dgamma0")[0])
-        except ValueError:  # (beyond the tables)
-            radius = math.inf
-        low, high = (middle, high) if radius < target else (low, middle)
+    low = depth_reaching(contact, target, 3e-4, 4e-4)  # (the depth of that radius on the Δγ0 branch)
     scenario = me.Scenario("A", alpha=[20.0], d_max=low)
     message = one_line_naming(lambda: me.simulate(contact, scenario, "discrete", dx=64 * thickness / 100,
                                                   n_steps=100), "dx=")
