@@ -9,6 +9,7 @@ is below.
 
 from __future__ import annotations
 
+import contextvars
 import errno
 import io
 import math
@@ -25,6 +26,8 @@ import mdr_events as me
 from hostile_checks import cli_one_line, depth_reaching, one_line_naming
 from mdr_events.app.cli import main
 from mdr_events.app.cli._stdout import NamedOutput
+from mdr_events.models import motion
+from mdr_events.models.simulate import simulation_job
 from mdr_events.models.continuum import run_continuum
 from mdr_events.validation import SHOWN_CHARACTERS, shown
 
@@ -199,18 +202,34 @@ def test_a_paraboloid_near_the_tables_edge_is_told_the_spacing_that_runs():
     assert _finite_in_contact(ds.normal_force.values)
 
 
-# --- W4 (open): a Scenario built by the user reads its angles when it is made (converted, checked for repeats and
-# kept as a tuple of floats: a million angles 54 MB and 0.8 s, a view of 1e9 one value ~100 GB), before any limit;
-# by name (simulate(contact, "A", alpha=...)) the same angles are counted first. Its angles would be kept as given and
-# read when its cases are built, counted against the run's limits first (Scenario.alpha is read as a tuple in ~50
-# places: more than this round's time) -----------------------------------------------------------------------------
+# --- W4: a Scenario built by the user read its angles when it was made (converted, checked for repeats and kept as
+# a tuple of floats: a million angles 54 MB and 0.8 s, a view of 1e9 one value ~100 GB), before any limit; by name
+# (simulate(contact, "A", alpha=...)) the same angles are counted first. A Scenario counts its angles first and
+# refuses more than any run within the default limits takes (Limits.samples / 2: every run makes 2 output times a
+# case at least), naming alpha, the count and the bound; by name, the run's limits bound them (angles_within) ------
 
-@pytest.mark.xfail(strict=True, reason="round twenty-four W4: Scenario(alpha=...) reads its angles when made, before "
-                                       "the run's limits (54 MB for a million angles); open")
+#: Angles beyond what any run within the default limits takes (Limits.samples / 2 = 5e6 cases): a view of one value,
+#: no memory of its own, refused by its count before it is read (or found repeated).
+BEYOND_DEFAULT_ANGLES = 10**7
+
+
 def test_a_scenario_counts_its_angles_before_reading_them():
-    angles = np.linspace(1.0, 89.0, VIEW_VALUES)
-    assert _refused_for_resources(lambda: me.simulate(me.Contact.paper(), me.Scenario("A", angles),
-                                                      limits=SMALL)) < COUNTED_PEAK_BYTES
+    angles = np.broadcast_to(20.0, (BEYOND_DEFAULT_ANGLES,))
+    assert _refused_for_resources(lambda: me.Scenario("A", angles)) < COUNTED_PEAK_BYTES
+    message = one_line_naming(lambda: me.Scenario("A", angles), "alpha of 10000000 angles", errors=me.ResourceLimitError)
+    assert "at most 5e+06" in message and "limits=Limits(samples=...)" in message, message
+
+
+def test_a_scenario_by_name_takes_the_angles_its_run_s_limits_take(monkeypatch):
+    """By name, the run's limits (its count checked first) bound the angles, not the default limits': with the
+    bound of a Scenario made alone lowered to 10 angles, 11 are refused alone and taken by name."""
+    monkeypatch.setattr(motion, "_ANGLES_MAX", contextvars.ContextVar("angles_max", default=10.0))
+    angles = np.linspace(10.0, 80.0, 11)
+    one_line_naming(lambda: me.Scenario("A", angles), "alpha of 11 angles", errors=me.ResourceLimitError)
+    job = simulation_job(PAPER, "A", angles, "continuum", {}, me.Limits())
+    assert job.model.motion.alpha == tuple(angles)
+    with motion.angles_within(me.Limits(samples=20)):
+        one_line_naming(lambda: me.Scenario("A", angles), "at most 10", errors=me.ResourceLimitError)
 
 
 # --- W5: the standard output's help, version and encoding: `mdr-events --help > /dev/full` (and --version, a
