@@ -23,7 +23,11 @@ SHOWN_CHARACTERS = 80
 
 def shown(value: Any) -> str:
     """``repr(value)`` on one line (an array's rows joined by single spaces), cut to :data:`SHOWN_CHARACTERS`
-    characters, for a message."""
+    characters, for a message. A list or tuple longer than that is shown by its first items (each item's ``repr``
+    takes a character at least, so the cut text is the same), not written out whole (a million times' ``repr``:
+    20 MB and a second, for 80 characters)."""
+    if isinstance(value, (list, tuple)) and len(value) > SHOWN_CHARACTERS:
+        value = type(value)(value[:SHOWN_CHARACTERS]) if type(value) in (list, tuple) else value[:SHOWN_CHARACTERS]
     text = " ".join(repr(value).split())
     return text if len(text) <= SHOWN_CHARACTERS else text[: SHOWN_CHARACTERS - 3] + "..."
 

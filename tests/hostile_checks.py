@@ -1,14 +1,19 @@
 """What every hostile round asserts of a refusal, written once (imported by the rounds' modules in tests/): the API's
 one line naming the argument and what is allowed, with no warning before it, and the CLI's one line on stderr with
-exit status 2."""
+exit status 2; and the cases more than one round builds (a depth that reaches a contact radius on a layer)."""
 
 from __future__ import annotations
 
+import math
 import warnings
 
 import pytest
 
+import mdr_events as me
 from mdr_events.app.cli import main
+
+#: Halvings of the depth's bracket: 40 take a bracket of 1e-4 m to 1e-16 m, below a float's spacing near 3e-4 m.
+DEPTH_HALVINGS = 40
 
 
 def one_line_naming(call, named: str, errors=(ValueError, TypeError)) -> str:
@@ -29,3 +34,16 @@ def cli_one_line(capsys, argv: list[str]) -> str:
     err = capsys.readouterr().err
     assert status == 2 and err.count("\n") == 1 and err.startswith("mdr-events: error:"), (status, err)
     return err
+
+
+def depth_reaching(contact, target: float, low: float, high: float) -> float:
+    """The depth (m, the bracket's low end) whose contact radius on the layer's Δγ0 branch reaches ``target`` from
+    below, by bisection of ``[low, high]`` (a depth beyond the layer's tables counts as an infinite radius)."""
+    for _ in range(DEPTH_HALVINGS):
+        middle = 0.5 * (low + high)
+        try:
+            radius = float(me.layer_normal_curve(contact, [middle])["contact_radius"].sel(branch="dgamma0")[0])
+        except ValueError:  # (beyond the tables)
+            radius = math.inf
+        low, high = (middle, high) if radius < target else (low, middle)
+    return low

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from hostile_checks import one_line_naming
+from hostile_checks import depth_reaching, one_line_naming
 from mdr_events.analysis.layer_angles import ANGLE_RTOL
 from mdr_events.app.cli import main
 from mdr_events.theory.layer import LAMBDA_MAX
@@ -90,17 +90,10 @@ def test_the_thickest_layers_springs_are_the_half_spaces():
 def test_a_contact_within_a_spring_of_the_tables_end_is_refused_naming_dx():
     contact = PAPER.replace(h=1e-4)
     target = 0.999 * LAMBDA_MAX * 1e-4  # (a radius 0.1 % inside the tables' last)
-    low, high = 3e-4, 4e-4
-    for _ in range(40):  # the depth of that radius on the Δγ0 branch, by bisection
-        middle = 0.5 * (low + high)
-        try:
-            radius = float(me.layer_normal_curve(contact, [middle])["contact_radius"].sel(branch="dgamma0")[0])
-        except ValueError:  # (beyond the tables)
-            radius = math.inf
-        low, high = (middle, high) if radius < target else (low, middle)
+    low = depth_reaching(contact, target, 3e-4, 4e-4)  # (the depth of that radius on the Δγ0 branch)
     dx = LAMBDA_MAX * 1e-4 / 100  # (100 springs reach the tables' end: the edge's 100th has none beyond)
     one_line_naming(lambda: me.simulate(contact, me.Scenario("A", alpha=[20.0], d_max=low), "discrete", dx=dx,
-                                        n_steps=100), "allowed: a smaller dx")
+                                        n_steps=100), "allowed: dx <= ")  # (the spacing that fits: round twenty-four)
 
 
 # --- N4: the slip onset's closed forms did not check the scales they compute with, as the phase diagram of the

@@ -32,7 +32,7 @@ from mdr_events.analysis.fit_diagnostics import (MISFIT_RMS, Identifiability, ex
 from mdr_events.analysis.rate_angles import EDGE_SOLVE_STEPS, check_rate_factor
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
 from mdr_events.io.datasets import register_schema
-from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits, values_in
 from mdr_events.models.continuum.rate_edge import EdgeUnresolved, solve_edge
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.models.paths import Path
@@ -114,13 +114,15 @@ def _check(measurements, params, start, free, offsets, profile, limits) -> Limit
         raise TypeError(f"measurements={shown(measurements)} is not allowed; allowed: a non-empty list or tuple of "
                         "RateMeasurement(path, times, normal_force[, noise])")
     profile = check_simulated_profile(profile)
-    for index, m in enumerate(measurements):
-        _check_curve(f"measurements[{index}]", m, params, profile)
-        check_rate_factor(start, m.path.speed, "start")  # (the start at its limit ended in the edge solver's words)
-    total = sum(np.size(m.times) for m in measurements)
+    # (the samples counted before they are read: round twenty-four, a million were converted three times, 24 MB, to
+    # be refused for their count)
+    total = sum(values_in(m.times) for m in measurements)
     first_step = len(measurements) * (1 + len(free))
     limits.check(f"the fit's {len(measurements)} curve(s) of {total} samples ({first_step} solves of the edge in its "
                  "first step)", samples=total, memory=BYTES_PER_SAMPLE * total, steps=first_step * EDGE_SOLVE_STEPS)
+    for index, m in enumerate(measurements):
+        _check_curve(f"measurements[{index}]", m, params, profile)
+        check_rate_factor(start, m.path.speed, "start")  # (the start at its limit ended in the edge solver's words)
     return limits
 
 

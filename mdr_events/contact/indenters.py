@@ -21,6 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mdr_events.limits import values_in
 from mdr_events.validation import PLAIN_NUMBER, SCALE_MAX, SCALE_MIN, check_real, plain_number, reads_attrs, real_array, shown
 
 __all__ = ["Paraboloid", "PowerLaw", "FlatPunch", "TabulatedProfile", "Profile", "Indenter", "profile_attrs",
@@ -238,12 +239,15 @@ class TabulatedProfile:
     f: tuple
 
     def __post_init__(self) -> None:
+        # (counted before they are read: round twenty-four, a million points were converted, 70 MB and 1.5 s, to be
+        # refused for their count; what cannot be counted is read and named below)
+        counted = values_in(self.r), values_in(self.f)
+        if max(counted) > MAX_TABLE_POINTS:
+            _refuse_table_lengths(*counted)
         r = _table_column("TabulatedProfile.r", self.r)
         f = _table_column("TabulatedProfile.f", self.f)
         if len(r) != len(f) or not 3 <= len(r) <= MAX_TABLE_POINTS:
-            raise ValueError(f"TabulatedProfile.r and .f of lengths {len(r)} and {len(f)} are not allowed; allowed: "
-                             f"equal lengths, 3 to {MAX_TABLE_POINTS} (the Abel transform's quadrature costs the square "
-                             "of the points; resample a denser measurement)")
+            _refuse_table_lengths(len(r), len(f))
         if r[0] != 0.0 or any(b <= a for a, b in zip(r, r[1:])):
             raise ValueError(f"TabulatedProfile.r={shown(self.r)} is not allowed; allowed: strictly increasing radii "
                              "from 0 (m)")
@@ -283,6 +287,12 @@ class TabulatedProfile:
         """
         return {"profile": self.describe(), "profile_table_r": ", ".join(map(repr, self.r)),
                 "profile_table_f": ", ".join(map(repr, self.f))}
+
+
+def _refuse_table_lengths(r_count: int, f_count: int) -> None:
+    raise ValueError(f"TabulatedProfile.r and .f of lengths {r_count} and {f_count} are not allowed; allowed: equal "
+                     f"lengths, 3 to {MAX_TABLE_POINTS} (the Abel transform's quadrature costs the square of the points; "
+                     "resample a denser measurement)")
 
 
 def _check_table_scales(r: tuple[float, ...], f: tuple[float, ...]) -> None:

@@ -152,6 +152,9 @@ def atomic_write(path: str | os.PathLike, write: Callable[[str], Any], suffix: s
     return atomic_write_all([PendingFile(path, write, suffix)])[0]
 
 
+#: What a file's write needs, named where the writer's error names no file (a full disk, ``ulimit -f``).
+ROOM_TO_WRITE = "a file system with room for the file, within the process's file size limit (ulimit -f)"
+
 #: The signals :func:`atomic_write_all` holds while it renames a run's files into place.
 HELD_SIGNALS = (signal.SIGINT, signal.SIGTERM)
 
@@ -231,8 +234,10 @@ def atomic_write_all(files: Sequence[PendingFile]) -> list[Path]:
     temporaries: list[str] = []
     names = {}
     placed = 0
+    writing = None  # (the file being written: its writer's errors name no file, round twenty-four)
     try:
         for file, target in zip(files, targets):
+            writing = file.path
             try:
                 handle, temporary = tempfile.mkstemp(prefix=f".{target.name}{TEMPORARY_MARKER}", suffix=file.suffix,
                                                      dir=target.parent)
@@ -248,6 +253,7 @@ def atomic_write_all(files: Sequence[PendingFile]) -> list[Path]:
             mask = os.umask(0)  # mkstemp makes the file owner-only; give it the usual permissions
             os.umask(mask)
             os.chmod(temporary, 0o666 & ~mask)
+        writing = None
         with _directories_locked([target.parent for target in targets]), _signals_held():
             for temporary, target in zip(temporaries, targets):
                 os.replace(temporary, target)
@@ -255,6 +261,10 @@ def atomic_write_all(files: Sequence[PendingFile]) -> list[Path]:
     except OSError as error:
         if error.filename in names:  # name the file the user asked for, not a temporary one now gone
             error.filename = names[error.filename]
+        elif error.filename is None and writing is not None and not isinstance(error, BrokenPipeError):
+            # (a write's error names no file: "[Errno 27] File too large" under `ulimit -f`, ENOSPC on a full disk)
+            raise OSError(error.errno, f"{error.strerror or error} (while writing it); allowed: {ROOM_TO_WRITE}",
+                          os.fspath(writing)) from error
         raise
     finally:
         for temporary in temporaries[placed:]:

@@ -78,6 +78,7 @@ from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.models.rate_springs import rate_edge_counts
 from mdr_events.models.spring_media import HalfSpaceSprings, Springs, springs_of
 from mdr_events.contact.layer import HALF_SPACE, Layer
+from mdr_events.theory.kinds import theory_of
 from mdr_events.models.kernel_model import KernelModel, as_kernel_model, check_kernel_run
 
 __all__ = ["run_discrete", "paraboloid_profile", "MIN_SPRINGS_IN_CONTACT", "Thresholds", "THRESHOLD_RULES",
@@ -226,11 +227,34 @@ def _spring_count(springs: Springs, dx: float, max_depth: float, adhesion: Adhes
         if needed < probed - 1:
             return needed + 2
         if probed == most:
-            raise ValueError(f"dx={dx!r} m: the contact at the depth {max_depth!r} m takes {needed} springs per side "
-                             f"and the layer's tables reach {most} (a/h = 64), too few for one spring beyond its edge; "
-                             f"allowed: a smaller dx, or a depth whose contact radius stays below "
-                             f"{(most - 1) * dx:.6g} m")
+            raise _beyond_the_tables(springs, dx, max_depth, needed, most)
         count *= 2
+
+
+#: The springs a finer spacing keeps between the contact's edge and the tables' last radius: the count rounds up by
+#: one at the edge, the tables' reach down by one, one spring beyond the edge is needed (3), with one of margin.
+SPRINGS_TO_THE_TABLES_EDGE = 4
+
+
+def _beyond_the_tables(springs: Springs, dx: float, max_depth: float, needed: int, most: int) -> ValueError:
+    """The refusal of a contact whose springs, one beyond its edge, pass the layer's tables (``a/h = 64``) at ``dx``,
+    naming what applies: a spacing that fits ``SPRINGS_TO_THE_TABLES_EDGE`` springs between the contact's radius and
+    ``64 h`` where there is room (none at ``a/h = 64``, round twenty-four: "a smaller dx" was suggested there, which
+    cannot help), a shallower depth (a flat punch: a smaller face, whose radius no depth changes), a thicker layer."""
+    from mdr_events.theory.layer.compliance import LAMBDA_MAX
+
+    thickness = springs.layer.thickness  # (only a layer's springs are bounded: the half-space's most is sys.maxsize)
+    reach, radius = LAMBDA_MAX * thickness, springs.branch_radius(max_depth)
+    finer = (reach - radius) / SPRINGS_TO_THE_TABLES_EDGE
+    spacing = (f"dx <= {finer:.3g} m (the contact radius {radius:.6g} m is {reach - radius:.3g} m within the tables' "
+               f"64 h = {reach:.6g} m), " if finer > 0 else
+               f"no dx (the contact radius {radius:.6g} m reaches the tables' 64 h = {reach:.6g} m), but ")
+    smaller = (f"a face's radius below {reach:.6g} m (with a dx that fits {SPRINGS_TO_THE_TABLES_EDGE} springs "
+               "between them)" if theory_of(springs.indenter).flat_face else  # (no depth changes a face's radius)
+               f"a depth whose contact radius stays below {(most - 1) * dx:.6g} m")
+    return ValueError(f"dx={dx!r} m: the contact at the depth {max_depth!r} m takes {needed} springs per side and the "
+                      f"layer's tables reach {most} (a/h = 64), too few for one spring beyond its edge; allowed: "
+                      f"{spacing}{smaller}, or a layer thicker than h = {thickness!r} m")
 
 
 def check_spacing(params: Parameters, dx: float, depth: float | None = None, profile: SimulatedProfile = None,

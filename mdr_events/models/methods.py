@@ -25,7 +25,7 @@ import xarray as xr
 from mdr_events.contact.adhesion import RateDependentAdhesion, adhesion_attrs
 from mdr_events.contact.friction import FrictionLaw, friction_attrs
 from mdr_events.contact.model import Contact
-from mdr_events.limits import Limits, values_in
+from mdr_events.limits import DEFAULT_LIMITS, Limits, ResourceLimitError, values_in
 from mdr_events.models import indenters
 from mdr_events.models.continuum import PathSolution, Tolerances, run_continuum, solve_path
 from mdr_events.models.continuum.rate_reference import RateSolution, solve_rate_reference
@@ -251,14 +251,19 @@ class Continuum:
     samples : int, optional
         Without ``t``: the number of output times to the end of the longest run (default 2001, at least 2).
     t : sequence of float, optional
-        The output times in s from first contact (increasing, >= 0).
+        The output times in s from first contact (increasing, >= 0), counted first: as many as one case may have
+        within the default :class:`~mdr_events.Limits` are read, checked and kept as a read-only copy here (the
+        caller's array may change after); more are kept as given and read when a run starts, after their count is
+        checked against the run's limits (:meth:`output_times`; round twenty-three:
+        ``Continuum(t=np.broadcast_to(0.1, (10**9,)))`` was read here, 16 GB before any limit).
 
     Raises
     ------
     TypeError
         ``tolerances`` that are not a :class:`~mdr_events.Tolerances`.
     ValueError
-        ``t`` and ``samples`` both given, fewer than 2 samples, or times not finite, >= 0 and strictly increasing.
+        ``t`` and ``samples`` both given, fewer than 2 samples, or times not finite, >= 0 and strictly increasing
+        (times beyond the default limits: when a run reads them, :meth:`output_times`).
     """
 
     name: ClassVar[str] = "continuum"
@@ -276,8 +281,20 @@ class Continuum:
                              "one of them (give t or samples, not both)")
         object.__setattr__(self, "samples", DEFAULT_SAMPLES if self.samples is None else
                            check_count("samples", self.samples, 2))
-        if self.t is not None:
+        if self.t is not None and self._within_default_limits():  # (a copy: the caller's array may change)
             object.__setattr__(self, "t", check_output_times("t", self.t))
+
+    def _within_default_limits(self) -> bool:
+        """Whether one case of the times ``t``, counted (not read), is within :data:`DEFAULT_LIMITS`."""
+        try:
+            self.check_case_count(1, DEFAULT_LIMITS)
+        except ResourceLimitError:
+            return False
+        return True
+
+    def __repr__(self) -> str:  # (its times as a message shows them: a long list is not written out)
+        times = "" if self.t is None else f", t={shown(self.t)}"
+        return f"Continuum(tolerances={self.tolerances!r}, samples={self.samples!r}{times})"
 
     def __eq__(self, other) -> bool:  # (its output times are an array: compared by value)
         if not isinstance(other, Continuum):
@@ -337,8 +354,34 @@ class Continuum:
         ResourceLimitError
             The output times or the memory of ``count`` cases beyond ``limits``.
         """
-        n_time = self.samples if self.t is None else len(self.t)
+        n_time = self.samples if self.t is None else values_in(self.t)  # (counted, not read)
         check_output(limits, count, n_time, CONTINUUM_BYTES_PER_SAMPLE)
+
+    def output_times(self, count: int, limits: Limits) -> np.ndarray | int:
+        """The run's output times: ``samples``, or the times ``t`` read (checked: finite, >= 0, strictly increasing)
+        once the run of ``count`` cases with as many times is within ``limits`` (:meth:`check_case_count`).
+
+        Parameters
+        ----------
+        count : int
+            The cases of the run.
+        limits : Limits
+            What the run may use.
+
+        Returns
+        -------
+        numpy.ndarray or int
+            The times (read-only), or the number of samples to the end of the longest run.
+
+        Raises
+        ------
+        ResourceLimitError
+            The output beyond ``limits``.
+        ValueError, TypeError
+            Times that are not a strictly increasing 1-D grid of finite times >= 0, naming ``t``.
+        """
+        self.check_case_count(count, limits)
+        return self.samples if self.t is None else check_output_times("t", self.t)
 
     def simulate(self, model: ModelJob, cases: Cases, limits: Limits) -> xr.Dataset:
         """Solve the cases exactly; the dataset of :mod:`~mdr_events.models.simulation_schema` with the event log,
@@ -363,7 +406,7 @@ class Continuum:
         tolerances = self.tolerances
         layer = model.contact.layer
         run = continuum_kernel(model.adhesion).run
-        raw = run(model.kernel, cases.paths, self.samples if self.t is None else self.t, tolerances, limits)
+        raw = run(model.kernel, cases.paths, self.output_times(len(cases.paths), limits), tolerances, limits)
         # (the half-space stamps no layer, as Contact.to_attrs: its results are those of before)
         layer_attrs = {} if layer.is_half_space else layer.to_attrs()
         attrs = dict(method=self.name, scenario=model.scenario,

@@ -9,13 +9,16 @@ reads what ``simulate`` and the other entry points are given: a motion, a scenar
 
 from __future__ import annotations
 
+import contextlib
+from contextvars import ContextVar
 from dataclasses import dataclass, field
-from typing import Mapping, NamedTuple, Sequence
+from typing import Iterator, Mapping, NamedTuple, Sequence
 
 import numpy as np
 import xarray as xr
 
 from mdr_events.contact.friction import TAU0, FrictionLaw
+from mdr_events.limits import DEFAULT_LIMITS, Limits, ResourceLimitError, values_in
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
@@ -26,7 +29,8 @@ from mdr_events.validation import SCALE_MAX, check_real, shown, validate_alpha
 
 __all__ = ["Scenario", "Paths", "Motion", "as_motion", "Cases", "simulation_cases", "scenario_paths",
            "case_dimension", "case_text", "check_path_extent", "check_path_representable", "FIGURE_ANGLES", "SCENARIO_NAMES",
-           "ANGLE_DIMENSION", "CUSTOM_DIMENSION", "CASE_DIMENSIONS", "CUSTOM_SCENARIO", "SLIP_DIGITS"]
+           "ANGLE_DIMENSION", "CUSTOM_DIMENSION", "CASE_DIMENSIONS", "CUSTOM_SCENARIO", "SLIP_DIGITS",
+           "TIMES_PER_CASE_MIN", "angles_within"]
 
 
 #: The angles of Fig. 8 and Fig. 10.
@@ -182,8 +186,45 @@ def case_text(dimension: str, label) -> str:
 
 
 
+#: The fewest output times any run makes per case (its start and end: the discrete's steps + 1, the continuum's
+#: samples, counted as 2001 at least): a run within ``Limits.samples`` takes at most ``samples / 2`` cases.
+TIMES_PER_CASE_MIN = 2
+#: The most angles a Scenario made now reads: what a run within the default limits, or those of the run that makes
+#: it (:func:`angles_within`), could take.
+_ANGLES_MAX: ContextVar[float] = ContextVar("angles_max", default=DEFAULT_LIMITS.samples / TIMES_PER_CASE_MIN)
+
+
+@contextlib.contextmanager
+def angles_within(limits: Limits) -> Iterator[None]:
+    """Scenarios made in this block read as many angles as a run within ``limits`` could take (``simulate`` by name
+    with its ``limits``: its count checked against them first), not only the default limits' number.
+
+    Parameters
+    ----------
+    limits : Limits
+        The run's limits.
+
+    Yields
+    ------
+    None
+        The block, with the bound raised or lowered to ``limits``.
+    """
+    token = _ANGLES_MAX.set(limits.samples / TIMES_PER_CASE_MIN)
+    try:
+        yield
+    finally:
+        _ANGLES_MAX.reset(token)
+
+
 def _angles(alpha) -> tuple[float, ...]:
-    """The angles of a scenario: one or a 1-D list, distinct, each in [0, 90] degrees."""
+    """The angles of a scenario: one or a 1-D list, distinct, each in [0, 90] degrees; counted before they are read
+    (round twenty-four: a million angles took 54 MB and 0.8 s when the Scenario was made, before any limit)."""
+    count, most = values_in(alpha), _ANGLES_MAX.get()
+    if not count <= most:
+        raise ResourceLimitError(
+            f"alpha of {count} angles is not allowed in a Scenario; allowed: at most {most:.3g} (a run within "
+            f"Limits.samples = {most * TIMES_PER_CASE_MIN:.3g} output times, {TIMES_PER_CASE_MIN} at least per "
+            "case); more by name with larger limits: simulate(contact, 'A', alpha=..., limits=Limits(samples=...))")
     angles = np.atleast_1d(validate_alpha(alpha))
     if angles.ndim != 1 or angles.size == 0:
         raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: one angle or a 1-D list")
@@ -219,6 +260,10 @@ class Scenario:
     ValueError
         An unknown name, an angle out of range or repeated, a depth or speed not > 0, a ``final_depth`` not
         beyond ``d_max`` or with another scenario than ``"B+"``.
+    ResourceLimitError
+        More angles than a run within the default :class:`~mdr_events.Limits` could take (``Limits.samples / 2``),
+        counted before they are read; more are taken by name with larger limits (``simulate(contact, "A",
+        alpha=..., limits=...)``).
     """
 
     name: str = "A"

@@ -21,7 +21,7 @@ from mdr_events.limits import Limits, check_limits, values_in
 from mdr_events.models import indenters
 from mdr_events.models.job import ModelJob
 from mdr_events.models.methods import METHODS, Continuum, Discrete, Method, as_method, check_counted_first
-from mdr_events.models.motion import Motion, Paths, Scenario, as_motion
+from mdr_events.models.motion import Motion, Paths, Scenario, angles_within, as_motion
 from mdr_events.models.paths import Path
 from mdr_events.models.spring_media import springs_of
 from mdr_events.parameters import Parameters
@@ -82,7 +82,8 @@ def simulation_job(contact, motion, alpha, method, options: Mapping[str, Any], l
     unread = values_in(alpha) if alpha is not None else getattr(motion, "case_count", 1)  # (a lower bound, unread)
     own = {name: value for name, value in options.items() if name not in MODEL_OPTIONS}
     check_counted_first(DEFAULT_METHOD if method is None else method, own, unread, limits)
-    model = model_job(contact, motion, alpha, options)
+    with angles_within(limits):  # (the angles counted against the run's limits above)
+        model = model_job(contact, motion, alpha, options)
     the_method = as_method(DEFAULT_METHOD if method is None else method, options)
     the_method.check_case_count(model.motion.case_count, limits)  # (before the cases are built: each takes its theory)
     check_layer_taken(model.contact, model.motion, the_method)

@@ -91,7 +91,6 @@ def test_the_scenario_s_final_depth_reaches_the_path():
     ("discrete", {"dt": 1.0, "n_steps": 100}, "give dt or n_steps, not both"),
     ("discrete", {"n_steps": 5}, "n_steps=5"),
     ("continuum", {"samples": 1}, "samples=1"),
-    ("continuum", {"t": [1.0, 0.5]}, "t=[1.0, 0.5] is not allowed"),
     ("continuum", {"tolerances": "x"}, "tolerances='x' is not allowed"),
     ("springs", {}, "method='springs' is not allowed; allowed: 'discrete', 'continuum'"),
     (me.Continuum(), {"samples": 10}, "samples is not allowed beside method=Continuum("),
@@ -99,6 +98,14 @@ def test_the_scenario_s_final_depth_reaches_the_path():
 def test_a_method_takes_only_its_own_options(method, options, words):
     with pytest.raises((TypeError, ValueError), match=re.escape(words)):
         as_method(method, options)
+
+
+def test_a_method_s_times_are_checked_when_a_run_reads_them():
+    """The continuum's ``t`` is kept as given and read by the run, after its count is within the run's limits
+    (round twenty-three V3): the method is made, its times refused naming ``t`` when read."""
+    method = as_method("continuum", {"t": [1.0, 0.5]})
+    with pytest.raises(ValueError, match=re.escape("t=[1.0, 0.5] is not allowed")):
+        method.output_times(1, me.Limits())
 
 
 def test_options_left_none_are_the_method_s_defaults():

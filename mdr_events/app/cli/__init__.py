@@ -305,17 +305,17 @@ def main(argv: Sequence[str] | None = None) -> int:
         swallowed.__enter__()
     debug = False
     try:
-        args = build_parser().parse_args(argv)
-        debug = args.debug
-        if getattr(args, "key", None) is not None:
-            from mdr_events.theory import symbolic
+        with stdout_named():  # (its write errors name it, --help's too; flushed here, not at the interpreter's exit)
+            args = build_parser().parse_args(argv)
+            debug = args.debug
+            if getattr(args, "key", None) is not None:
+                from mdr_events.theory import symbolic
 
-            symbolic.relation(args.key)  # an unknown (or empty) key is bad input before anything is printed
-        if args.command is not None and getattr(args, "figures", True):  # (derive draws none: no matplotlib)
-            import matplotlib
+                symbolic.relation(args.key)  # an unknown (or empty) key is bad input before anything is printed
+            if args.command is not None and getattr(args, "figures", True):  # (derive draws none: no matplotlib)
+                import matplotlib
 
-            matplotlib.use("Agg")  # the CLI writes figures to files only: no window, whatever the user's default
-        with stdout_named():  # (its write errors name it; flushed here, not at the interpreter's exit)
+                matplotlib.use("Agg")  # the CLI writes figures to files only: no window, whatever the user's default
             status = args.run(args)
         swallowed.settle()
         if swallowed.interrupts:  # the interpreter swallowed it (garbage collection): the command was interrupted

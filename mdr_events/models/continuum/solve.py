@@ -13,7 +13,7 @@ import numbers
 
 import numpy as np
 
-from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
+from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits, values_in
 from mdr_events.parameters import Parameters
 from mdr_events.validation import check_count, check_output_times
 from mdr_events.models.paths import Path
@@ -410,7 +410,8 @@ def run_continuum(model: KernelModel | Parameters, paths: list[Path], times: np.
     check_tolerances(tolerances)
     if isinstance(times, numbers.Integral) and not isinstance(times, (bool, np.bool_)):
         samples, times = check_count("times", times, 2), None
-    else:
+    else:  # (counted before they are read, as simulate counts its t: round twenty-three)
+        check_output(limits, len(paths), values_in(times), BYTES_PER_SAMPLE)
         samples, times = None, check_output_times("times", times)
     n_time = samples if samples is not None else len(times)
     check_output(limits, len(paths), n_time, BYTES_PER_SAMPLE)
