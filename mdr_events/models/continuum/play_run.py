@@ -34,6 +34,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.kernel_model import KernelModel
 
 from .extrema import extremum_names, solution_extrema
+from .play_reach import constant_part, reach_times
 from .play_search import EVENT_HALVINGS, brent, halve, searched
 from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, SpringState, spring_line
 from .solve import run_continuum
@@ -41,7 +42,7 @@ from .state import Event, EventKind
 from .tolerances import Tolerances
 
 __all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "PROBE_POINTS",
-           "PROBE_CHUNK", "ROOT_ULPS"]
+           "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH"]
 
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
@@ -59,6 +60,10 @@ SMALLEST = 5e-324
 #: The events' bisection evaluates its guess only within this many units in the last place of the root of the springs'
 #: distance from their caps (:func:`_root`): Brent's method finds the root to about five of them.
 ROOT_ULPS = 64
+#: Whether the events' search takes the springs' times to reach their caps in closed form where the windows are fixed
+#: but for ``x`` (:mod:`.play_reach`; ``False``: Brent's root everywhere, the route of before, which the tests compare
+#: it with).
+CLOSED_REACH = True
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
 EXTREMUM_XTOL = 1e-12
 #: The springs' events the spans' frictionless run logs and this route replaces.
@@ -167,7 +172,7 @@ def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, st
             k = int(hit[0])
             low = probes[k - 1] if k > 0 else begin
             found.append((len(searches), kind))
-            searches.append(_bisect(low + start, probes[k] + start, reached, kind is EventKind.SLIP_ONSET))
+            searches.append(_bisect(low + start, probes[k] + start, reached, kind is EventKind.SLIP_ONSET, play))
     results = searched(lambda asks: _readings(play, asks), searches)
     return [_event(play, time if kind is EventKind.RE_STICK else results[time], start, kind) for time, kind in found]
 
@@ -292,7 +297,7 @@ def _distances(play: PlaySprings, times: np.ndarray, onset: bool) -> np.ndarray:
     return out
 
 
-def _bisect(low: float, high: float, reached, onset: bool):
+def _bisect(low: float, high: float, reached, onset: bool, play: PlaySprings | None = None):
     """The first time in ``(low, high]`` the share at a cap (:func:`_shares`) is ``reached`` (``onset``: the slip onset's
     test, else full slip's), to :data:`EVENT_HALVINGS` halvings (a search of :func:`~.play_search.searched`). Bisected
     on the share without the kink search (:func:`_shares` without ``kinks``), which is evaluated only within
@@ -302,7 +307,7 @@ def _bisect(low: float, high: float, reached, onset: bool):
     reached at, or was, decided by it). Where the share turns once in the bracket, the checked bracket is the one
     bisection on the share visits (every time either visits lies outside it)."""
     known = [-np.inf, np.inf]  # (the share not reached up to the first, reached from the second on)
-    root = yield from _root(low, high, onset)
+    root = yield from _root(low, high, onset, play)
 
     def near_root(time: float):
         if time > root + ROOT_ULPS * np.spacing(root):
@@ -325,7 +330,7 @@ def _bisect(low: float, high: float, reached, onset: bool):
     return (yield from halve(low, high, by_share))[1]
 
 
-def _root(low: float, high: float, onset: bool):
+def _root(low: float, high: float, onset: bool, play: PlaySprings | None = None):
     """Where, between ``low`` and ``high``, the first spring the share without the kink search reads reaches its cap (``onset``) or the
     last one does, by Brent's method (:func:`~.play_search.brent`) on the largest or least distance outside the windows
     (:func:`_distances`): ``None`` where it is not positive at ``high``; where it is not negative at ``low``, from
@@ -341,7 +346,35 @@ def _root(low: float, high: float, onset: bool):
         if not at_low < 0.0:  # (the slip onset as the piece starts, Coulomb's springs at the edge sliding at once;
             return low if onset else None  # checked after)
         low = start
-    return (yield from brent(reading, low, high, at_low, at_high))
+    part = constant_part(play, low, high) if play is not None and CLOSED_REACH else None
+    if part is not None and part > low:  # (the windows fixed from the part's start: the root before it by Brent's)
+        at_part = (yield ((reading, part),))[0]
+        if at_part > 0.0:
+            return (yield from brent(reading, low, part, at_low, at_part))
+        if not at_part < 0.0:  # (0: the root itself; nan: Brent's on the whole)
+            return part if at_part == 0.0 else (yield from brent(reading, low, high, at_low, at_high))
+    root = None if part is None else _reach_root(play, part, high, onset)
+    return root if root is not None else (yield from brent(reading, low, high, at_low, at_high))
+
+
+def _reach_root(play: PlaySprings, part: float, high: float, onset: bool) -> float | None:
+    """:func:`_root` on a part of :func:`~.play_reach.constant_part` (the windows fixed but for ``x`` on ``(part,
+    high]``): the first time a spring :func:`_distances` reads at ``high`` reaches its cap (``onset``) or the last
+    one's, each in closed form (:func:`~.play_reach.reach_times`); ``None`` where none reaches it by ``high``."""
+    alone = not play.shift(high) > 0.0
+    share = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS) if onset else np.array([0.0, 1.0 - PROBE_SHARE])
+    nodes, pressed, _ = play.nodes_at(np.array([high]))
+    points = np.concatenate([nodes[pressed] if alone else nodes, _edge(play, high, alone) * share])
+    first, last = reach_times(play, points, part, high)
+    root = float(np.min(first) if onset else np.max(last))
+    return min(root, high) if np.isfinite(root) else None
+
+
+def _edge(play: PlaySprings, time: float, coulomb_alone: bool) -> float:
+    """The extent of the springs whose share at a cap is read at ``time``: under Coulomb's law alone the compressed
+    ones' (:func:`_shares`), else the contact's."""
+    radius = play.radius(time)
+    return min(radius, float(play.compressed_radius(time))) if coulomb_alone else radius
 
 
 def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Event:

@@ -1,0 +1,94 @@
+r"""Each spring's time to reach its cap in closed form, all springs at once, where every window is fixed but for ``x``.
+
+Along a segment of the path at a constant depth (``d`` constant, the radius at rest: no piece of the radius's history
+:mod:`.play_history` moves in it) every spring's cap ``c = ū(a) + μ ρ(ξ) max(d − g(ξ), 0)`` is constant in time, and
+its window ``[x − c, x + c]`` moves with ``x``, which is linear in time. No clamp of a spring's chain lies inside such a
+part (no corner, jump or extreme of its own), so a spring's anchor before the clamp at ``t`` is one value ``Y`` over
+the whole part, and its distance outside its window
+
+``D(t) = max(x(t) − c − Y, Y − x(t) − c)``
+
+is the larger of two lines in ``t``: where ``x`` grows it reaches its cap where ``x(t) = Y + c``, where ``x`` falls
+where ``x(t) = Y − c``, one division per spring (:func:`reach_times`). The events' search of :mod:`.play_run` reads
+the first spring's time (the slip onset: the least of them) or the last one's (full slip: the greatest) in place of
+Brent's root of the springs' largest or least distance (:func:`~.play_search.brent`, 10–50 sequential readings where
+the distance is flat to round-off before the front starts), and checks the bracket it gives on the share at a cap as
+before. Anywhere else (the depth or the radius moving, with ``τ0``'s part its cap ``ū(a(t))`` moving) the closed form
+does not apply and :func:`constant_part` says so.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["constant_part", "reach_times"]
+
+
+def constant_part(play, low: float, high: float) -> float | None:
+    """The start of the part of ``(low, high]`` along which every spring's window is fixed but for ``x`` (module
+    docstring): the last clamp time of the springs' chain inside it (or ``low``), ``None`` where that part is not one.
+
+    Parameters
+    ----------
+    play : PlaySprings
+        The springs.
+    low, high : float
+        The interval (s, path clock), ``low < high``.
+
+    Returns
+    -------
+    float or None
+        The part's start ``s`` (the windows are fixed on ``(s, high]``).
+    """
+    chain = play.chain
+    inside = chain.times[(chain.times > low) & (chain.times < high)]
+    start = float(inside[-1]) if inside.size else float(low)
+    if np.any((chain.convex[:, 0] < high) & (chain.convex[:, 1] > start)):  # (springs' own extremes: never at rest,
+        return None  # but the chain's own bookkeeping says so)
+    corner_t, corner_d = play.path_corners()[::2]
+    k = int(np.searchsorted(corner_t, start, side="right")) - 1
+    if not 0 <= k < corner_t.size - 1 or corner_d[k] != corner_d[k + 1] or corner_t[k + 1] < high:
+        return None
+    if any(begin < high and end > start for begin, end in play.history.pieces()):
+        return None
+    radii = play.history.radii(np.array([0.5 * (start + high), high]))
+    return start if radii[0] == radii[1] and radii[1] > 0.0 else None
+
+
+def reach_times(play, xi: np.ndarray, start: float, high: float) -> tuple[np.ndarray, np.ndarray]:
+    """Where each spring's distance outside its window (:meth:`~.play_springs.PlaySprings.outside`) first and last
+    turns non-negative on ``(start, high]``, a part of :func:`constant_part`: ``start`` where it is at its cap from the
+    part's start, ``inf`` where it stays inside up to ``high``.
+
+    Parameters
+    ----------
+    play : PlaySprings
+        The springs.
+    xi : numpy.ndarray
+        The springs' coordinates (m), within the contact on the part.
+    start, high : float
+        The part (s, path clock).
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        The first and the last time of each spring (s, path clock).
+    """
+    before, lower, upper = play.windows_before(xi, high)
+    corner_t, corner_x, _ = play.path_corners()
+    k = int(np.searchsorted(corner_t, start, side="right")) - 1
+    speed = (corner_x[k + 1] - corner_x[k]) / (corner_t[k + 1] - corner_t[k])
+    below, above = lower - before, before - upper  # (at ``high``; ``D = max(below, above)``)
+    if speed == 0.0:
+        outside = np.maximum(below, above) >= 0.0
+        first = np.where(outside, start, np.inf)
+        return first, first
+    # (the side the motion pushes towards: its distance grows by ``|speed|`` a second; the other side's falls)
+    rising, falling = (below, above) if speed > 0.0 else (above, below)
+    rate = abs(speed)
+    crossing = high - rising / rate  # (the rising side's zero)
+    at_start = (rising - rate * (high - start) >= 0.0) | (falling + rate * (high - start) >= 0.0)
+    reached = rising >= 0.0
+    first = np.where(at_start, start, np.where(reached, np.maximum(crossing, start), np.inf))
+    last = np.where(reached, np.maximum(crossing, start), np.where(falling >= 0.0, start, np.inf))
+    return first, last
