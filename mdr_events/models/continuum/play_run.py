@@ -394,6 +394,17 @@ def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Eve
     return Event(time - start, kind, float(play._d(time)), a, float(play._x(time)), direction)
 
 
+def _monotone(play: PlaySprings, times: np.ndarray) -> bool:
+    """Whether ``F_x`` is monotone between each two neighbours of ``times`` (path clock, increasing): each interval a
+    part of :func:`~.play_reach.constant_part` (every window fixed but for ``x``, linear in time there). A spring's
+    ``x − Y`` then follows ``x`` while it sticks and stays at ``±c`` once at its cap, which only the side ``x`` moves
+    towards can reach: every spring's, and so ``F_x = 2G* ∫ w (x − Y) dξ``, moves with ``x`` or rests, so its extremes
+    on the interval lie at its ends (where it rests, full slip, the refinement of :func:`_force_extrema` would only
+    read the plateau's round-off)."""
+    return CLOSED_REACH and all(high == low or constant_part(play, low, high) == low
+                                for low, high in zip(times[:-1].tolist(), times[1:].tolist()))
+
+
 def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path) -> dict:
     """The largest and least ``F_x`` (N) and their times (s from first contact): among the samples and the path's
     corners (where ``F_x`` has kinks), the best refined between its neighbours."""
@@ -408,7 +419,8 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
         k = int(np.argmax(sign * force))
         value, time = float(force[k]), float(times[k])
         low, high = times[max(k - 1, 0)], times[min(k + 1, times.size - 1)]
-        if high > low and value != 0.0 and time not in corners:  # (at a corner: a kink, the extremum itself)
+        if high > low and value != 0.0 and time not in corners \
+                and not _monotone(play, np.array([low, time, high]) + start):  # (at a corner: a kink, the extremum)
             found = minimize_scalar(lambda t: -sign * play.state(float(t) + start)[0], bounds=(low, high),
                                     method="bounded", options={"xatol": EXTREMUM_XTOL * duration})
             refined = -sign * float(found.fun)
