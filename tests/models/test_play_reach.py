@@ -57,10 +57,11 @@ def fretting() -> me.Paths:
     return me.Paths({"fretting": me.Path(np.column_stack([x, d]), me.Parameters.paper().v)})
 
 
-def contact_of(law: str, h: float | None = LAYER) -> me.Contact:
+def contact_of(law: str, adhesive: bool = False) -> me.Contact:
+    """The paper's contact on the layer under ``law``, with the paper's adhesion or without."""
     friction = me.FrictionLaw(law, mu=0.3, tau0=None if law == "coulomb" else me.Parameters.paper().tau0)
-    contact = dataclasses.replace(me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0), friction=friction)
-    return contact if h is None else contact.replace(h=h)
+    paper = me.Contact.paper() if adhesive else me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0)
+    return dataclasses.replace(paper, friction=friction).replace(h=LAYER)
 
 
 def recorded(law: str, monkeypatch) -> tuple[PlaySprings, list]:
@@ -142,14 +143,15 @@ def test_the_closed_form_root_is_brent_s(law, monkeypatch):
     assert compared
 
 
-@pytest.mark.parametrize("law", LAWS)
-def test_the_run_is_the_route_of_brent_s_root_at_every_output(law, monkeypatch):
+@pytest.mark.parametrize("law, adhesive", [(law, False) for law in LAWS] + [("coulomb", True)])
+def test_the_run_is_the_route_of_brent_s_root_at_every_output(law, adhesive, monkeypatch):
     """The whole run with the closed forms against the route of before (Brent's root everywhere, every extremum
-    refined): every output the same, the events' times to :data:`EVENT_BRACKETS` brackets."""
+    refined): every output the same, the events' times to :data:`EVENT_BRACKETS` brackets (with adhesion the radius
+    the spans' run's, at rest at ``d_max``)."""
     runs = {}
     for closed in (False, True):
         monkeypatch.setattr(play_run, "CLOSED_REACH", closed)
-        runs[closed] = me.simulate(contact_of(law), fretting(), "continuum", samples=SAMPLES)
+        runs[closed] = me.simulate(contact_of(law, adhesive), fretting(), "continuum", samples=SAMPLES)
     before, now = runs[False], runs[True]
     spacing = float(np.max(np.diff(before["time"].values)))
     bracket = spacing * 2.0 ** -EVENT_HALVINGS
