@@ -10,9 +10,9 @@ Tolerances, each from how the compared values are computed:
 - a spring's distance is linear at the speed ``|ẋ|`` on either side of its reach: read :data:`STEP_SHARE` of the
   part's duration before and after, it lies ``|ẋ| δ`` (some 1e-9 m) inside and outside its window, far above the
   anchors' round-off (``eps`` of ``|x| ≤ 1 mm``): its sign decides, no tolerance is spent;
-- Brent's root converges to ``xtol`` an ulp plus four epsilons of the time and the closed form rounds a division:
-  the route's own window about the root, :data:`~mdr_events.models.continuum.play_run.ROOT_ULPS` units in the last
-  place, bounds both;
+- Brent's root converges to ``xtol`` an ulp plus four epsilons of the time (:data:`BRENT_ULPS`), the closed form's
+  to the window it reads the share in (``play_reach.reach_ulps``: the distances' round-off over the speed): their
+  sum bounds the two apart;
 - the events of both routes end brackets of ``EVENT_HALVINGS`` halvings of the same output spacing; the share at
   their ends reads radii inverted in other batches (to ``RADII_RTOL``, flipping a spring at the edge by round-off):
   :data:`EVENT_BRACKETS` brackets apart at most; their radius one ``RADII_RTOL`` apart and their ``x`` moved by
@@ -42,6 +42,9 @@ D_MAX = me.Parameters.paper().d_max
 SAMPLES = 41
 #: A spring's distance read this share of its part's duration before and after its closed-form reach.
 STEP_SHARE = 1e-7
+#: Brent's root from the distance's own, in units in the last place: half its last bracket, ``xtol`` an ulp and
+#: ``rtol`` four epsilons of the time (scipy's ``brentq``, ``play_search.brent``).
+BRENT_ULPS = 5
 #: Two routes' events apart, in brackets of ``EVENT_HALVINGS`` halvings of the output spacing.
 EVENT_BRACKETS = 2.0
 #: ``F_x``'s round-off relative to its largest value (a few hundred nodes' sums: some ``100 eps``).
@@ -133,12 +136,12 @@ def test_the_closed_form_root_is_brent_s(law, monkeypatch):
         if constant_part(play, low, high) is None:
             continue
         monkeypatch.setattr(play_run, "CLOSED_REACH", True)
-        closed = searched(lambda asks: play_run._readings(play, asks), [play_run._root(low, high, onset, play)])[0]
+        closed, ulps = searched(lambda asks: play_run._readings(play, asks), [play_run._root(low, high, onset, play)])[0]
         monkeypatch.setattr(play_run, "CLOSED_REACH", False)
-        brent = searched(lambda asks: play_run._readings(play, asks), [play_run._root(low, high, onset, play)])[0]
+        brent = searched(lambda asks: play_run._readings(play, asks), [play_run._root(low, high, onset, play)])[0][0]
         assert (closed is None) == (brent is None)
         if brent is not None:
-            assert abs(closed - brent) <= play_run.ROOT_ULPS * np.spacing(brent), (low, high, onset, closed, brent)
+            assert abs(closed - brent) <= (ulps + BRENT_ULPS) * np.spacing(brent), (low, high, onset, closed, brent)
             compared += 1
     assert compared
 

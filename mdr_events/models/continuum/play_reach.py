@@ -21,7 +21,11 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["constant_part", "reach_times"]
+__all__ = ["constant_part", "reach_times", "reach_ulps", "REACH_ULPS"]
+
+#: The units in the last place of a time a closed-form reach and the route's own reading of a spring's cap can differ
+#: by besides the anchors' round-off over the speed (:func:`reach_ulps`): each rounds a time once or twice.
+REACH_ULPS = 4
 
 
 def constant_part(play, low: float, high: float) -> float | None:
@@ -92,3 +96,33 @@ def reach_times(play, xi: np.ndarray, start: float, high: float) -> tuple[np.nda
     first = np.where(at_start, start, np.where(reached, np.maximum(crossing, start), np.inf))
     last = np.where(reached, np.maximum(crossing, start), np.where(falling >= 0.0, start, np.inf))
     return first, last
+
+
+def reach_ulps(play, start: float, time: float) -> int:
+    """How many units in the last place of ``time`` a closed-form reach on the part from ``start``
+    (:func:`reach_times`) and the route's own reading of the distances (:meth:`~.play_springs.PlaySprings.outside`)
+    can put a spring's reach apart: each distance is a difference of anchors and edges of the path's size ``|x|``,
+    rounded to ``eps |x|`` (a few roundings each way), which ``x``'s speed turns into ``eps |x| / |ẋ|`` of time, and
+    each time is rounded: :data:`REACH_ULPS` plus four times the former in ulps of ``time``.
+
+    Parameters
+    ----------
+    play : PlaySprings
+        The springs.
+    start : float
+        The part's start (s, path clock).
+    time : float
+        The reach (s, path clock).
+
+    Returns
+    -------
+    int
+        The window (ulps).
+    """
+    corner_t, corner_x, _ = play.path_corners()
+    k = int(np.searchsorted(corner_t, start, side="right")) - 1
+    speed = abs(corner_x[k + 1] - corner_x[k]) / (corner_t[k + 1] - corner_t[k])
+    if not speed > 0.0:
+        return REACH_ULPS
+    scale = float(np.max(np.abs(corner_x)))
+    return REACH_ULPS + int(np.ceil(4.0 * np.finfo(float).eps * scale / speed / np.spacing(abs(time))))

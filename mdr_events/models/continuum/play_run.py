@@ -34,7 +34,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.kernel_model import KernelModel
 
 from .extrema import extremum_names, solution_extrema
-from .play_reach import constant_part, reach_times
+from .play_reach import constant_part, reach_times, reach_ulps
 from .play_search import EVENT_HALVINGS, brent, halve, searched
 from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, SpringState, spring_line
 from .solve import run_continuum
@@ -307,12 +307,12 @@ def _bisect(low: float, high: float, reached, onset: bool, play: PlaySprings | N
     reached at, or was, decided by it). Where the share turns once in the bracket, the checked bracket is the one
     bisection on the share visits (every time either visits lies outside it)."""
     known = [-np.inf, np.inf]  # (the share not reached up to the first, reached from the second on)
-    root = yield from _root(low, high, onset, play)
+    root, ulps = yield from _root(low, high, onset, play)
 
     def near_root(time: float):
-        if time > root + ROOT_ULPS * np.spacing(root):
+        if time > root + ulps * np.spacing(root):
             return True
-        return time >= root - ROOT_ULPS * np.spacing(root) and reached((yield ((_Reading.GUESS, time),))[0])
+        return time >= root - ulps * np.spacing(root) and reached((yield ((_Reading.GUESS, time),))[0])
 
     def by_guess(time: float):
         return reached((yield ((_Reading.GUESS, time),))[0])
@@ -334,40 +334,47 @@ def _root(low: float, high: float, onset: bool, play: PlaySprings | None = None)
     """Where, between ``low`` and ``high``, the first spring the share without the kink search reads reaches its cap (``onset``) or the
     last one does, by Brent's method (:func:`~.play_search.brent`) on the largest or least distance outside the windows
     (:func:`_distances`): ``None`` where it is not positive at ``high``; where it is not negative at ``low``, from
-    :data:`ROOT_ULPS` after it on, and where it is not negative there either, the slip onset at ``low``."""
+    :data:`ROOT_ULPS` after it on, and where it is not negative there either, the slip onset at ``low``. On a part of
+    :func:`~.play_reach.constant_part` the root in closed form (:func:`_reach_root`) with its own, narrower window.
+    Returns the root (or ``None``) and the window about it (units in the last place)."""
     reading = _Reading.ONSET if onset else _Reading.LAST
     at_high = (yield ((reading, high),))[0]
     if not at_high > 0.0:
-        return None
+        return None, ROOT_ULPS
     at_low = (yield ((reading, low),))[0]
     if not at_low < 0.0:  # (out of contact at ``low``, or springs at their caps at a reversal's instant, before the
         start = low + ROOT_ULPS * np.spacing(low)  # re-stick: looked for from just after it)
         at_low = (yield ((reading, start),))[0]
         if not at_low < 0.0:  # (the slip onset as the piece starts, Coulomb's springs at the edge sliding at once;
-            return low if onset else None  # checked after)
+            return (low if onset else None), ROOT_ULPS  # checked after)
         low = start
     part = constant_part(play, low, high) if play is not None and CLOSED_REACH else None
     if part is not None and part > low:  # (the windows fixed from the part's start: the root before it by Brent's)
         at_part = (yield ((reading, part),))[0]
         if at_part > 0.0:
-            return (yield from brent(reading, low, part, at_low, at_part))
+            return (yield from brent(reading, low, part, at_low, at_part)), ROOT_ULPS
         if not at_part < 0.0:  # (0: the root itself; nan: Brent's on the whole)
-            return part if at_part == 0.0 else (yield from brent(reading, low, high, at_low, at_high))
-    root = None if part is None else _reach_root(play, part, high, onset)
-    return root if root is not None else (yield from brent(reading, low, high, at_low, at_high))
+            return (part if at_part == 0.0 else (yield from brent(reading, low, high, at_low, at_high))), ROOT_ULPS
+    closed = None if part is None else _reach_root(play, part, high, onset)
+    return closed if closed is not None else ((yield from brent(reading, low, high, at_low, at_high)), ROOT_ULPS)
 
 
-def _reach_root(play: PlaySprings, part: float, high: float, onset: bool) -> float | None:
+def _reach_root(play: PlaySprings, part: float, high: float, onset: bool) -> tuple[float, int] | None:
     """:func:`_root` on a part of :func:`~.play_reach.constant_part` (the windows fixed but for ``x`` on ``(part,
     high]``): the first time a spring :func:`_distances` reads at ``high`` reaches its cap (``onset``) or the last
-    one's, each in closed form (:func:`~.play_reach.reach_times`); ``None`` where none reaches it by ``high``."""
+    one's, each in closed form (:func:`~.play_reach.reach_times`), and the window about it where the share is read
+    (:func:`~.play_reach.reach_ulps`: the distances' round-off over the speed, both ways); ``None`` where none
+    reaches its cap by ``high``."""
     alone = not play.shift(high) > 0.0
     share = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS) if onset else np.array([0.0, 1.0 - PROBE_SHARE])
     nodes, pressed, _ = play.nodes_at(np.array([high]))
     points = np.concatenate([nodes[pressed] if alone else nodes, _edge(play, high, alone) * share])
     first, last = reach_times(play, points, part, high)
     root = float(np.min(first) if onset else np.max(last))
-    return min(root, high) if np.isfinite(root) else None
+    if not np.isfinite(root):
+        return None
+    root = min(root, high)
+    return root, min(ROOT_ULPS, reach_ulps(play, part, root))
 
 
 def _edge(play: PlaySprings, time: float, coulomb_alone: bool) -> float:
