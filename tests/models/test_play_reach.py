@@ -60,6 +60,9 @@ def fretting() -> me.Paths:
     return me.Paths({"fretting": me.Path(np.column_stack([x, d]), me.Parameters.paper().v)})
 
 
+MOTIONS = {"fretting": fretting(), "A 20°": me.Scenario("A", alpha=[20.0])}
+
+
 def contact_of(law: str, adhesive: bool = False) -> me.Contact:
     """The paper's contact on the layer under ``law``, with the paper's adhesion or without."""
     friction = me.FrictionLaw(law, mu=0.3, tau0=None if law == "coulomb" else me.Parameters.paper().tau0)
@@ -146,19 +149,21 @@ def test_the_closed_form_root_is_brent_s(law, monkeypatch):
     assert compared
 
 
-@pytest.mark.parametrize("law, adhesive", [(law, False) for law in LAWS] + [("coulomb", True)])
-def test_the_run_is_the_route_of_brent_s_root_at_every_output(law, adhesive, monkeypatch):
+@pytest.mark.parametrize("law, adhesive, motion", [(law, False, "fretting") for law in LAWS]
+                         + [("coulomb", True, "fretting"), ("coulomb", False, "A 20°")])
+def test_the_run_is_the_route_of_brent_s_root_at_every_output(law, adhesive, motion, monkeypatch):
     """The whole run with the closed forms against the route of before (Brent's root everywhere, every extremum
-    refined): every output the same, the events' times to :data:`EVENT_BRACKETS` brackets (with adhesion the radius
-    the spans' run's, at rest at ``d_max``)."""
+    refined, a full slip from the first contact bisected on the guess): every output the same, the events' times to
+    :data:`EVENT_BRACKETS` brackets (with adhesion the radius the spans' run's, at rest at ``d_max``)."""
     runs = {}
     for closed in (False, True):
         monkeypatch.setattr(play_run, "CLOSED_REACH", closed)
-        runs[closed] = me.simulate(contact_of(law, adhesive), fretting(), "continuum", samples=SAMPLES)
+        runs[closed] = me.simulate(contact_of(law, adhesive), MOTIONS[motion], "continuum", samples=SAMPLES)
     before, now = runs[False], runs[True]
     spacing = float(np.max(np.diff(before["time"].values)))
     bracket = spacing * 2.0 ** -EVENT_HALVINGS
-    path = fretting().paths["fretting"]
+    params = contact_of(law, adhesive).parameters(D_MAX, me.Parameters.paper().v)
+    path = MOTIONS[motion].cases(params, None, contact_of(law, adhesive).friction).paths[0]
     speed = float(np.max(np.abs(np.diff(path.waypoints[:, 0])) / np.maximum(np.diff(path.corner_times), 1e-300)))
     for name in before.data_vars:
         if name == "event_time":
@@ -186,3 +191,21 @@ def test_the_force_is_monotone_where_the_windows_are_fixed(law, monkeypatch):
         direction = np.sign(play._x(high) - play._x(low))
         assert np.all(direction * np.diff(force) >= -FORCE_ROUND_OFF * np.max(np.abs(force))), (low, high)
         assert np.ptp(force) > 0.0  # (the part is not all plateau: the check can fail)
+
+
+def test_a_full_slip_from_the_first_contact_is_found_on_the_compressed_nodes(monkeypatch):
+    """Along scenario A at 20° under Coulomb's law alone every compressed spring slides from its attachment
+    (``ẋ > μρ ḋ``): full slip holds from the first node counted as compressed on, which the nodes' depths alone locate
+    (``play_run._compressed``); the share checks that bracket and takes it, no guess of the anchors read (the route of
+    before bisected the guess 48 times)."""
+    asked = []
+    readings = play_run._readings
+
+    def recorded(play, asks):
+        asked.extend(reading for reading, _ in asks)
+        return readings(play, asks)
+
+    monkeypatch.setattr(play_run, "_readings", recorded)
+    run = me.simulate(contact_of("coulomb"), MOTIONS["A 20°"], "continuum", samples=SAMPLES)
+    assert "full_slip" in run["event_kind"].values[0].tolist()
+    assert play_run._Reading.COMPRESSED in asked and play_run._Reading.GUESS not in asked

@@ -240,6 +240,8 @@ class _Reading(Enum):
     ONSET = "onset"
     #: the least one, at the nodes and the centre and edge probes
     LAST = "last"
+    #: whether a node counts as compressed (:func:`_compressed`: 1 or 0)
+    COMPRESSED = "compressed"
 
 
 def _readings(play: PlaySprings, asks: list) -> list[float]:
@@ -253,6 +255,8 @@ def _readings(play: PlaySprings, asks: list) -> list[float]:
         times = np.array([asks[k][1] for k in rows])
         if reading in (_Reading.SHARE, _Reading.GUESS):
             values = _shares(play, times, reading is _Reading.SHARE)
+        elif reading is _Reading.COMPRESSED:
+            values = _compressed(play, times)
         else:
             values = _distances(play, times, reading is _Reading.ONSET)
         for k, value in zip(rows, values.tolist()):
@@ -320,7 +324,11 @@ def _bisect(low: float, high: float, reached, onset: bool, play: PlaySprings | N
     def by_share(time: float):
         return time >= known[1] or (time > known[0] and reached((yield ((_Reading.SHARE, time),))[0]))
 
-    for guess in ([] if root is None else [near_root]) + [by_guess]:
+    def by_compressed(time: float):
+        return bool((yield ((_Reading.COMPRESSED, time),))[0])
+
+    first = [near_root] if root is not None else [by_compressed] if _from_contact(play, low, onset) else []
+    for guess in first + [by_guess]:
         bracket = yield from halve(low, high, guess)
         below, above = (reached(value) for value in (yield tuple((_Reading.SHARE, end) for end in bracket)))
         if above and not below:
@@ -328,6 +336,28 @@ def _bisect(low: float, high: float, reached, onset: bool, play: PlaySprings | N
         known[0] = known[0] if above else max(known[0], bracket[1])
         known[1] = min(known[1], bracket[0]) if below else known[1]
     return (yield from halve(low, high, by_share))[1]
+
+
+def _from_contact(play: PlaySprings | None, low: float, onset: bool) -> bool:
+    """Whether a full slip's search with no root of the distance (:func:`_root`: the distance not negative from the
+    piece's start) starts where the contact does, under Coulomb's law alone: the share at a cap is then 0 until a node
+    of the quadrature counts as compressed (:func:`_compressed`) and, where every compressed spring slides from its
+    attachment (scenario A with ``ẋ > μρ ḋ``: each spring's ``x − Y − c = (ẋ − μρ ḋ)(t − τ)`` from its attachment at
+    ``τ``), 1 from then on: that time, found on the nodes' depths alone, seeds the bracket the share checks (a wrong
+    seed fails the check and the guess is bisected as before)."""
+    return play is not None and CLOSED_REACH and not onset and play.radius(low) == 0.0 and not play.shift(low) > 0.0
+
+
+def _compressed(play: PlaySprings, times: np.ndarray) -> np.ndarray:
+    """1 where a node of the quadrature at each of ``times`` counts as compressed, else 0
+    (:meth:`~.play_springs.PlaySprings.nodes_at`, all the times at once; the share at a cap under Coulomb's law alone
+    is 0 without one)."""
+    out = np.zeros(times.shape)
+    inside = np.flatnonzero([play.radius(float(time)) > 0.0 for time in times])
+    if inside.size:
+        _, pressed, group = play.nodes_at(times[inside])
+        out[inside[np.unique(group[pressed])]] = 1.0
+    return out
 
 
 def _root(low: float, high: float, onset: bool, play: PlaySprings | None = None):
