@@ -19,6 +19,12 @@ readings it needs (the share, the share without the kink search, the springs' di
 sent their values, every step's readings of all the searches read in one batch (:mod:`.play_search`: Brent's method
 scipy's ``brentq`` step for step, the halvings taken a few a step). Each event is the one the searches found one at
 a time, reading one time at a time, bit for bit.
+
+Where the windows are fixed but for ``x`` (a segment at a constant depth, :func:`~.play_reach.constant_part`) the root
+that seeds an event's halvings is each spring's time to reach its cap in closed form (:mod:`.play_reach`) instead of
+Brent's, and ``F_x`` there is monotone, its extrema not refined; a full slip from the first contact under Coulomb's
+law alone is seeded by the nodes counted as compressed. Every seed's bracket is checked on the share as before
+(:data:`CLOSED_REACH` ``False``: the route of before).
 """
 
 from __future__ import annotations
