@@ -31,7 +31,8 @@ import pytest
 import mdr_events as me
 from mdr_events.models.continuum import play_run
 from mdr_events.models.continuum.layer_branch import RADII_RTOL
-from mdr_events.models.continuum.play_reach import constant_part, reach_times
+from mdr_events.models.continuum.play_reach import (REACH_ULPS, REACH_ULPS_CAP, constant_part, reach_times,
+                                                   reach_ulps)
 from mdr_events.models.continuum.play_search import EVENT_HALVINGS, searched
 from mdr_events.models.continuum.play_springs import PlaySprings
 
@@ -209,3 +210,13 @@ def test_a_full_slip_from_the_first_contact_is_found_on_the_compressed_nodes(mon
     run = me.simulate(contact_of("coulomb"), MOTIONS["A 20°"], "continuum", samples=SAMPLES)
     assert "full_slip" in run["event_kind"].values[0].tolist()
     assert play_run._Reading.COMPRESSED in asked and play_run._Reading.GUESS not in asked
+
+
+def test_the_reach_window_is_finite_at_time_zero(monkeypatch):
+    """``reach_ulps`` at ``time = 0`` (whose ulp is the least subnormal, 5e-324) and just above it: a finite window, at
+    most ``REACH_ULPS_CAP``, never narrower than at a later time (the same round-off over a smaller ulp)."""
+    play, _ = recorded("coulomb", monkeypatch)
+    low, high = parts(play)[0]
+    windows = [reach_ulps(play, low, time) for time in (0.0, 5e-324, np.finfo(float).tiny, high)]
+    assert all(REACH_ULPS <= window <= REACH_ULPS + REACH_ULPS_CAP for window in windows), windows
+    assert windows == sorted(windows, reverse=True) and windows[0] == REACH_ULPS + REACH_ULPS_CAP

@@ -21,11 +21,15 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["constant_part", "reach_times", "reach_ulps", "REACH_ULPS"]
+__all__ = ["constant_part", "reach_times", "reach_ulps", "REACH_ULPS", "REACH_ULPS_CAP"]
 
 #: The units in the last place of a time a closed-form reach and the route's own reading of a spring's cap can differ
 #: by besides the anchors' round-off over the speed (:func:`reach_ulps`): each rounds a time once or twice.
 REACH_ULPS = 4
+#: The widest window :func:`reach_ulps` gives (ulps): ``2**53`` units in the last place of a time span about twice the
+#: time itself, so a wider one tells no more (at ``time = 0``, whose ulp is the least subnormal, the count would not be
+#: finite).
+REACH_ULPS_CAP = 2**53
 
 
 def constant_part(play, low: float, high: float) -> float | None:
@@ -103,7 +107,8 @@ def reach_ulps(play, start: float, time: float) -> int:
     (:func:`reach_times`) and the route's own reading of the distances (:meth:`~.play_springs.PlaySprings.outside`)
     can put a spring's reach apart: each distance is a difference of anchors and edges of the path's size ``|x|``,
     rounded to ``eps |x|`` (a few roundings each way), which ``x``'s speed turns into ``eps |x| / |ẋ|`` of time, and
-    each time is rounded: :data:`REACH_ULPS` plus four times the former in ulps of ``time``.
+    each time is rounded: :data:`REACH_ULPS` plus four times the former in ulps of ``time``, at most
+    :data:`REACH_ULPS_CAP` of them (a ``time`` near 0).
 
     Parameters
     ----------
@@ -125,4 +130,6 @@ def reach_ulps(play, start: float, time: float) -> int:
     if not speed > 0.0:
         return REACH_ULPS
     scale = float(np.max(np.abs(corner_x)))
-    return REACH_ULPS + int(np.ceil(4.0 * np.finfo(float).eps * scale / speed / np.spacing(abs(time))))
+    with np.errstate(over="ignore"):  # (an ulp of a time near 0 is subnormal: the count overflows, capped)
+        ulps = np.float64(4.0 * np.finfo(float).eps * scale / speed) / np.spacing(np.float64(abs(time)))
+    return REACH_ULPS + int(min(np.ceil(ulps), REACH_ULPS_CAP))
