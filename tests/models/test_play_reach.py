@@ -220,3 +220,16 @@ def test_the_reach_window_is_finite_at_time_zero(monkeypatch):
     windows = [reach_ulps(play, low, time) for time in (0.0, 5e-324, np.finfo(float).tiny, high)]
     assert all(REACH_ULPS <= window <= REACH_ULPS + REACH_ULPS_CAP for window in windows), windows
     assert windows == sorted(windows, reverse=True) and windows[0] == REACH_ULPS + REACH_ULPS_CAP
+
+
+def test_a_jump_inside_rules_the_force_s_monotony_out(monkeypatch):
+    """``play_run._monotone`` on a part of fixed windows is true, and false once the radius's history reports a jump
+    inside the part or at its end (checked on its own, not on ``constant_part``'s word: here the springs' chain, made
+    before the jump was added, does not know it)."""
+    play, _ = recorded("coulomb", monkeypatch)
+    low, high = parts(play)[0]
+    assert play_run._monotone(play, np.array([low, high]))
+    for time in (0.5 * (low + high), high):
+        monkeypatch.setattr(play.history, "jumps", [(time, play.radius(time), 1.5 * play.radius(time))])
+        assert constant_part(play, low, high) == low  # (the part's word unchanged: the jump is what decides)
+        assert not play_run._monotone(play, np.array([low, high])), time

@@ -443,8 +443,12 @@ def _monotone(play: PlaySprings, times: np.ndarray) -> bool:
     ``x − Y`` then follows ``x`` while it sticks and stays at ``±c`` once at its cap, which only the side ``x`` moves
     towards can reach: every spring's, and so ``F_x = 2G* ∫ w (x − Y) dξ``, moves with ``x`` or rests, so its extremes
     on the interval lie at its ends (where it rests, full slip, the refinement of :func:`_force_extrema` would only
-    read the plateau's round-off)."""
-    return CLOSED_REACH and all(high == low or constant_part(play, low, high) == low
+    read the plateau's round-off). A jump of the radius in ``(low, high]`` rules an interval out on its own (not on
+    :func:`~.play_reach.constant_part`'s word alone: a jump changes the windows, a wrong part would leave an extremum
+    unrefined)."""
+    jumps = np.array([jump[0] for jump in play.history.jumps])
+    return CLOSED_REACH and all(high == low or (not np.any((jumps > low) & (jumps <= high))
+                                                and constant_part(play, low, high) == low)
                                 for low, high in zip(times[:-1].tolist(), times[1:].tolist()))
 
 
