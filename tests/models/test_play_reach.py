@@ -151,7 +151,8 @@ def test_the_closed_form_root_is_brent_s(law, monkeypatch):
 
 
 @pytest.mark.parametrize("law, adhesive, motion", [(law, False, "fretting") for law in LAWS]
-                         + [("coulomb", True, "fretting"), ("coulomb", False, "A 20°")])
+                         + [("coulomb", True, "fretting"), ("tau0+coulomb", True, "fretting"),
+                            ("coulomb", False, "A 20°")])
 def test_the_run_is_the_route_of_brent_s_root_at_every_output(law, adhesive, motion, monkeypatch):
     """The whole run with the closed forms against the route of before (Brent's root everywhere, every extremum
     refined, a full slip from the first contact bisected on the guess): every output the same, the events' times to
