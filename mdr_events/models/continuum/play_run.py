@@ -19,6 +19,12 @@ readings it needs (the share, the share without the kink search, the springs' di
 sent their values, every step's readings of all the searches read in one batch (:mod:`.play_search`: Brent's method
 scipy's ``brentq`` step for step, the halvings taken a few a step). Each event is the one the searches found one at
 a time, reading one time at a time, bit for bit.
+
+Where the windows are fixed but for ``x`` (a segment at a constant depth, :func:`~.play_reach.constant_part`) the root
+that seeds an event's halvings is each spring's time to reach its cap in closed form (:mod:`.play_reach`) instead of
+Brent's, and ``F_x`` there is monotone, its extrema not refined; a full slip from the first contact under Coulomb's
+law alone is seeded by the nodes counted as compressed. Every seed's bracket is checked on the share as before
+(:data:`CLOSED_REACH` ``False``: the route of before).
 """
 
 from __future__ import annotations
@@ -34,6 +40,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.kernel_model import KernelModel
 
 from .extrema import extremum_names, solution_extrema
+from .play_reach import constant_part, reach_times, reach_ulps
 from .play_search import EVENT_HALVINGS, brent, halve, searched
 from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, SpringState, spring_line
 from .solve import run_continuum
@@ -41,7 +48,7 @@ from .state import Event, EventKind
 from .tolerances import Tolerances
 
 __all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "PROBE_POINTS",
-           "PROBE_CHUNK", "ROOT_ULPS"]
+           "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH"]
 
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
@@ -59,6 +66,10 @@ SMALLEST = 5e-324
 #: The events' bisection evaluates its guess only within this many units in the last place of the root of the springs'
 #: distance from their caps (:func:`_root`): Brent's method finds the root to about five of them.
 ROOT_ULPS = 64
+#: Whether the events' search takes the springs' times to reach their caps in closed form where the windows are fixed
+#: but for ``x`` (:mod:`.play_reach`; ``False``: Brent's root everywhere, the route of before, which the tests compare
+#: it with).
+CLOSED_REACH = True
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
 EXTREMUM_XTOL = 1e-12
 #: The springs' events the spans' frictionless run logs and this route replaces.
@@ -167,7 +178,7 @@ def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, st
             k = int(hit[0])
             low = probes[k - 1] if k > 0 else begin
             found.append((len(searches), kind))
-            searches.append(_bisect(low + start, probes[k] + start, reached, kind is EventKind.SLIP_ONSET))
+            searches.append(_bisect(low + start, probes[k] + start, reached, kind is EventKind.SLIP_ONSET, play))
     results = searched(lambda asks: _readings(play, asks), searches)
     return [_event(play, time if kind is EventKind.RE_STICK else results[time], start, kind) for time, kind in found]
 
@@ -235,6 +246,8 @@ class _Reading(Enum):
     ONSET = "onset"
     #: the least one, at the nodes and the centre and edge probes
     LAST = "last"
+    #: whether a node counts as compressed (:func:`_compressed`: 1 or 0)
+    COMPRESSED = "compressed"
 
 
 def _readings(play: PlaySprings, asks: list) -> list[float]:
@@ -248,6 +261,8 @@ def _readings(play: PlaySprings, asks: list) -> list[float]:
         times = np.array([asks[k][1] for k in rows])
         if reading in (_Reading.SHARE, _Reading.GUESS):
             values = _shares(play, times, reading is _Reading.SHARE)
+        elif reading is _Reading.COMPRESSED:
+            values = _compressed(play, times)
         else:
             values = _distances(play, times, reading is _Reading.ONSET)
         for k, value in zip(rows, values.tolist()):
@@ -292,7 +307,7 @@ def _distances(play: PlaySprings, times: np.ndarray, onset: bool) -> np.ndarray:
     return out
 
 
-def _bisect(low: float, high: float, reached, onset: bool):
+def _bisect(low: float, high: float, reached, onset: bool, play: PlaySprings | None = None):
     """The first time in ``(low, high]`` the share at a cap (:func:`_shares`) is ``reached`` (``onset``: the slip onset's
     test, else full slip's), to :data:`EVENT_HALVINGS` halvings (a search of :func:`~.play_search.searched`). Bisected
     on the share without the kink search (:func:`_shares` without ``kinks``), which is evaluated only within
@@ -302,12 +317,12 @@ def _bisect(low: float, high: float, reached, onset: bool):
     reached at, or was, decided by it). Where the share turns once in the bracket, the checked bracket is the one
     bisection on the share visits (every time either visits lies outside it)."""
     known = [-np.inf, np.inf]  # (the share not reached up to the first, reached from the second on)
-    root = yield from _root(low, high, onset)
+    root, ulps = yield from _root(low, high, onset, play)
 
     def near_root(time: float):
-        if time > root + ROOT_ULPS * np.spacing(root):
+        if time > root + ulps * np.spacing(root):
             return True
-        return time >= root - ROOT_ULPS * np.spacing(root) and reached((yield ((_Reading.GUESS, time),))[0])
+        return time >= root - ulps * np.spacing(root) and reached((yield ((_Reading.GUESS, time),))[0])
 
     def by_guess(time: float):
         return reached((yield ((_Reading.GUESS, time),))[0])
@@ -315,7 +330,11 @@ def _bisect(low: float, high: float, reached, onset: bool):
     def by_share(time: float):
         return time >= known[1] or (time > known[0] and reached((yield ((_Reading.SHARE, time),))[0]))
 
-    for guess in ([] if root is None else [near_root]) + [by_guess]:
+    def by_compressed(time: float):
+        return bool((yield ((_Reading.COMPRESSED, time),))[0])
+
+    first = [near_root] if root is not None else [by_compressed] if _from_contact(play, low, onset) else []
+    for guess in first + [by_guess]:
         bracket = yield from halve(low, high, guess)
         below, above = (reached(value) for value in (yield tuple((_Reading.SHARE, end) for end in bracket)))
         if above and not below:
@@ -325,23 +344,80 @@ def _bisect(low: float, high: float, reached, onset: bool):
     return (yield from halve(low, high, by_share))[1]
 
 
-def _root(low: float, high: float, onset: bool):
+def _from_contact(play: PlaySprings | None, low: float, onset: bool) -> bool:
+    """Whether a full slip's search with no root of the distance (:func:`_root`: the distance not negative from the
+    piece's start) starts where the contact does, under Coulomb's law alone: the share at a cap is then 0 until a node
+    of the quadrature counts as compressed (:func:`_compressed`) and, where every compressed spring slides from its
+    attachment (scenario A with ``ẋ > μρ ḋ``: each spring's ``x − Y − c = (ẋ − μρ ḋ)(t − τ)`` from its attachment at
+    ``τ``), 1 from then on: that time, found on the nodes' depths alone, seeds the bracket the share checks (a wrong
+    seed fails the check and the guess is bisected as before)."""
+    return play is not None and CLOSED_REACH and not onset and play.radius(low) == 0.0 and not play.shift(low) > 0.0
+
+
+def _compressed(play: PlaySprings, times: np.ndarray) -> np.ndarray:
+    """1 where a node of the quadrature at each of ``times`` counts as compressed, else 0
+    (:meth:`~.play_springs.PlaySprings.nodes_at`, all the times at once; the share at a cap under Coulomb's law alone
+    is 0 without one)."""
+    out = np.zeros(times.shape)
+    inside = np.flatnonzero([play.radius(float(time)) > 0.0 for time in times])
+    if inside.size:
+        _, pressed, group = play.nodes_at(times[inside])
+        out[inside[np.unique(group[pressed])]] = 1.0
+    return out
+
+
+def _root(low: float, high: float, onset: bool, play: PlaySprings | None = None):
     """Where, between ``low`` and ``high``, the first spring the share without the kink search reads reaches its cap (``onset``) or the
     last one does, by Brent's method (:func:`~.play_search.brent`) on the largest or least distance outside the windows
     (:func:`_distances`): ``None`` where it is not positive at ``high``; where it is not negative at ``low``, from
-    :data:`ROOT_ULPS` after it on, and where it is not negative there either, the slip onset at ``low``."""
+    :data:`ROOT_ULPS` after it on, and where it is not negative there either, the slip onset at ``low``. On a part of
+    :func:`~.play_reach.constant_part` the root in closed form (:func:`_reach_root`) with its own, narrower window.
+    Returns the root (or ``None``) and the window about it (units in the last place)."""
     reading = _Reading.ONSET if onset else _Reading.LAST
     at_high = (yield ((reading, high),))[0]
     if not at_high > 0.0:
-        return None
+        return None, ROOT_ULPS
     at_low = (yield ((reading, low),))[0]
     if not at_low < 0.0:  # (out of contact at ``low``, or springs at their caps at a reversal's instant, before the
         start = low + ROOT_ULPS * np.spacing(low)  # re-stick: looked for from just after it)
         at_low = (yield ((reading, start),))[0]
         if not at_low < 0.0:  # (the slip onset as the piece starts, Coulomb's springs at the edge sliding at once;
-            return low if onset else None  # checked after)
+            return (low if onset else None), ROOT_ULPS  # checked after)
         low = start
-    return (yield from brent(reading, low, high, at_low, at_high))
+    part = constant_part(play, low, high) if play is not None and CLOSED_REACH else None
+    if part is not None and part > low:  # (the windows fixed from the part's start: the root before it by Brent's)
+        at_part = (yield ((reading, part),))[0]
+        if at_part > 0.0:
+            return (yield from brent(reading, low, part, at_low, at_part)), ROOT_ULPS
+        if not at_part < 0.0:  # (0: the root itself; nan: Brent's on the whole)
+            return (part if at_part == 0.0 else (yield from brent(reading, low, high, at_low, at_high))), ROOT_ULPS
+    closed = None if part is None else _reach_root(play, part, high, onset)
+    return closed if closed is not None else ((yield from brent(reading, low, high, at_low, at_high)), ROOT_ULPS)
+
+
+def _reach_root(play: PlaySprings, part: float, high: float, onset: bool) -> tuple[float, int] | None:
+    """:func:`_root` on a part of :func:`~.play_reach.constant_part` (the windows fixed but for ``x`` on ``(part,
+    high]``): the first time a spring :func:`_distances` reads at ``high`` reaches its cap (``onset``) or the last
+    one's, each in closed form (:func:`~.play_reach.reach_times`), and the window about it where the share is read
+    (:func:`~.play_reach.reach_ulps`: the distances' round-off over the speed, both ways); ``None`` where none
+    reaches its cap by ``high``."""
+    alone = not play.shift(high) > 0.0
+    share = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS) if onset else np.array([0.0, 1.0 - PROBE_SHARE])
+    nodes, pressed, _ = play.nodes_at(np.array([high]))
+    points = np.concatenate([nodes[pressed] if alone else nodes, _edge(play, high, alone) * share])
+    first, last = reach_times(play, points, part, high)
+    root = float(np.min(first) if onset else np.max(last))
+    if not np.isfinite(root):
+        return None
+    root = min(root, high)
+    return root, min(ROOT_ULPS, reach_ulps(play, part, root))
+
+
+def _edge(play: PlaySprings, time: float, coulomb_alone: bool) -> float:
+    """The extent of the springs whose share at a cap is read at ``time``: under Coulomb's law alone the compressed
+    ones' (:func:`_shares`), else the contact's."""
+    radius = play.radius(time)
+    return min(radius, float(play.compressed_radius(time))) if coulomb_alone else radius
 
 
 def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Event:
@@ -361,6 +437,21 @@ def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Eve
     return Event(time - start, kind, float(play._d(time)), a, float(play._x(time)), direction)
 
 
+def _monotone(play: PlaySprings, times: np.ndarray) -> bool:
+    """Whether ``F_x`` is monotone between each two neighbours of ``times`` (path clock, increasing): each interval a
+    part of :func:`~.play_reach.constant_part` (every window fixed but for ``x``, linear in time there). A spring's
+    ``x − Y`` then follows ``x`` while it sticks and stays at ``±c`` once at its cap, which only the side ``x`` moves
+    towards can reach: every spring's, and so ``F_x = 2G* ∫ w (x − Y) dξ``, moves with ``x`` or rests, so its extremes
+    on the interval lie at its ends (where it rests, full slip, the refinement of :func:`_force_extrema` would only
+    read the plateau's round-off). A jump of the radius in ``(low, high]`` rules an interval out on its own (not on
+    :func:`~.play_reach.constant_part`'s word alone: a jump changes the windows, a wrong part would leave an extremum
+    unrefined)."""
+    jumps = np.array([jump[0] for jump in play.history.jumps])
+    return CLOSED_REACH and all(high == low or (not np.any((jumps > low) & (jumps <= high))
+                                                and constant_part(play, low, high) == low)
+                                for low, high in zip(times[:-1].tolist(), times[1:].tolist()))
+
+
 def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path) -> dict:
     """The largest and least ``F_x`` (N) and their times (s from first contact): among the samples and the path's
     corners (where ``F_x`` has kinks), the best refined between its neighbours."""
@@ -375,7 +466,8 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
         k = int(np.argmax(sign * force))
         value, time = float(force[k]), float(times[k])
         low, high = times[max(k - 1, 0)], times[min(k + 1, times.size - 1)]
-        if high > low and value != 0.0 and time not in corners:  # (at a corner: a kink, the extremum itself)
+        if high > low and value != 0.0 and time not in corners \
+                and not _monotone(play, np.array([low, time, high]) + start):  # (at a corner: a kink, the extremum)
             found = minimize_scalar(lambda t: -sign * play.state(float(t) + start)[0], bounds=(low, high),
                                     method="bounded", options={"xatol": EXTREMUM_XTOL * duration})
             refined = -sign * float(found.fun)

@@ -513,6 +513,39 @@ class PlaySprings:
         far outside the window it lay (m; :meth:`outside`). ``t`` is one time or one per spring; with ``group`` (an
         index per spring, its time's) the edges' round-off reads the largest cap of each group's springs, as a call
         with that group's springs alone does."""
+        before, label, lower, upper, cap, pressed = self._before_clamp(xi, t)
+        anchor, label = _clamp(before, label, lower, upper, np.ones(before.shape, bool), np.where(pressed, -6, -3))
+        if group is None:
+            largest = np.max(cap, initial=0.0)
+        else:
+            largest = np.zeros(int(np.max(group, initial=-1)) + 1)
+            np.maximum.at(largest, group, cap)
+            largest = largest[group]
+        edges = _on_edge(before, lower, upper, EDGE_ROUND_OFF * (self._x_scale + largest), pressed)
+        return anchor, label, edges, np.maximum(lower - before, before - upper)
+
+    def windows_before(self, xi, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Each spring's anchor before the clamp at ``t`` (every clamp of its chain before ``t`` applied) and its window
+        ``[L, U] = [x − c, x + c]`` at ``t`` (:mod:`.play_reach` reads a spring's time to reach its cap off them).
+
+        Parameters
+        ----------
+        xi : numpy.ndarray
+            The springs' coordinates (m), within the contact at ``t``.
+        t : float
+            The time (s, path clock).
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            The anchors before the clamp (m), ``L`` and ``U`` (m).
+        """
+        before, _, lower, upper, _, _ = self._before_clamp(np.asarray(xi, dtype=float), t)
+        return before, lower, upper
+
+    def _before_clamp(self, xi, t) -> tuple[np.ndarray, ...]:
+        """The anchors before the clamp at ``t`` (one time or one per spring) and their provenance, the window
+        ``(L, U)`` at ``t``, the cap and whether each spring is compressed (:meth:`_anchors`)."""
         xi = np.asarray(xi, dtype=float)
         g, ratio = self.line.profile(xi), self.line.ratio(xi)
         start, code = self.history.attach(xi, t)
@@ -540,17 +573,7 @@ class PlaySprings:
                                        codes[:, k])
         x_t, cap = self._x(t), self._shifts_at(t) + ratio * np.maximum(self._d(t) - g, 0.0)
         pressed = self._d(t) - g > self._pressed_round_off
-        before = anchor
-        anchor, label = _clamp(anchor, label, x_t - cap, x_t + cap, np.ones(xi.shape, bool), np.where(pressed, -6, -3))
-        lower, upper = x_t - cap, x_t + cap
-        if group is None:
-            largest = np.max(cap, initial=0.0)
-        else:
-            largest = np.zeros(int(np.max(group, initial=-1)) + 1)
-            np.maximum.at(largest, group, cap)
-            largest = largest[group]
-        edges = _on_edge(before, lower, upper, EDGE_ROUND_OFF * (self._x_scale + largest), pressed)
-        return anchor, label, edges, np.maximum(lower - before, before - upper)
+        return anchor, label, x_t - cap, x_t + cap, cap, pressed
 
     def radius(self, t: float) -> float:
         """The contact radius at ``t`` (m).
@@ -582,6 +605,16 @@ class PlaySprings:
         times = np.asarray([time for time in np.ravel(times) if float(time) not in self._radii], dtype=float)
         if times.size:
             self._radii.update(zip(times.tolist(), self.history.radii(times).tolist()))
+
+    def path_corners(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The path's corners: their times (s, path clock), ``x`` and ``d`` (m).
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            The times, ``x`` and ``d``.
+        """
+        return self._corner_t, self._corner_x, self._corner_d
 
     def shift(self, t: float) -> float:
         """``ū(a(t))``: the cap of ``τ0``'s part at ``t`` (m; 0 without it or out of contact).
@@ -749,11 +782,28 @@ class PlaySprings:
         """
         times = np.asarray(times, dtype=float)
         probes, probe_time = np.asarray(probes, dtype=float), np.asarray(probe_time, dtype=np.intp)
-        nodes, _, group, _ = self._grid(times, np.array([self.radius(float(t)) for t in times])).gauss()
+        nodes, pressed, group = self.nodes_at(times)
         at = times[np.concatenate([group, probe_time])]
         distance = self._anchors(np.concatenate([nodes, probes]), at)[3]
-        pressed = self._d(times[group]) - self.line.profile(nodes) > self._pressed_round_off
         return distance[:nodes.size], pressed, group, distance[nodes.size:]
+
+    def nodes_at(self, times) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The quadrature's nodes before the kink search at each of ``times`` (:meth:`outsides` reads the springs
+        there), whether each node's spring is compressed, and the index of each node's time.
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s, path clock), each in contact.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            The nodes (m, in the order of their times), whether compressed, their times' indices.
+        """
+        times = np.asarray(times, dtype=float)
+        nodes, _, group, _ = self._grid(times, np.array([self.radius(float(t)) for t in times])).gauss()
+        return nodes, self._d(times[group]) - self.line.profile(nodes) > self._pressed_round_off, group
 
     def _grid(self, times: np.ndarray, radii: np.ndarray) -> "_Breaks":
         """The panels' ends at each of ``times`` before the kinks: :data:`PANELS` equal ones on ``[0, a]`` and the
