@@ -382,13 +382,23 @@ class PlaySprings:
     def _own_times(self, xi, g, ratio, start, t):
         """Each spring's times of its ``L``'s maximum and ``U``'s minimum on every interval of ``chain.convex``
         within ``[start, t]`` (``nan`` where none), by golden sections."""
-        columns = []
+        if not self.chain.convex.size:
+            return []
+        # (every interval's and both edges' sections in one: each step one inversion of the radius for them all)
+        lows, highs = [], []
         for lo, hi in self.chain.convex:
             a, b = np.maximum(lo, start), np.minimum(hi, np.broadcast_to(t, xi.shape))
-            for sign in (1.0, -1.0):
-                columns.append(_golden(lambda s: sign * self._window(xi, g, ratio, s)[0 if sign > 0 else 1],
-                                       a, b))
-        return columns
+            lows += [a, a]
+            highs += [b, b]
+        count = len(lows)
+        sign = np.repeat(np.tile([1.0, -1.0], count // 2), xi.size)
+        xi_all, g_all, ratio_all = (np.tile(v, count) for v in (xi, g, ratio))
+
+        def edge(s):
+            lower, upper = self._window(xi_all, g_all, ratio_all, s)
+            return np.where(sign > 0, lower, -upper)
+
+        return np.split(_golden(edge, np.concatenate(lows), np.concatenate(highs)), count)
 
     def _columns(self, xi, g, ratio, start, t) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The clamp times of each spring before ``t`` (one time, or one per spring; a column each, ``nan`` where
