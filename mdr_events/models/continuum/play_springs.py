@@ -78,8 +78,11 @@ EDGE_SHARE = 1e-6
 KINK_CUTS = 64
 #: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
 KINK_ROUNDS = 6
-#: Steps of a golden section (0.618^80 ≈ 2e-17 of the interval).
-GOLDEN_STEPS = 80
+#: Steps of a golden section (0.618^45 ≈ 4e-10 of the interval): below where a smooth maximum is located at all (its
+#: values within round-off ``ε`` over ``√ε ≈ 1.5e-8`` of the interval, where the steps' comparisons are round-off's),
+#: the clamp's value off by ``L''δt²/2``, about ``ε`` of it (80 steps, to 2e-17, took twice the evaluations for no
+#: change; each an inversion of the radius on a layer).
+GOLDEN_STEPS = 45
 #: Depths at which a segment's ``ū(a(d))`` is sampled for its concavity.
 CONCAVITY_SAMPLES = 65
 #: A second difference of ``ū(a(d))`` counts as convex above this share of its largest value (round-off).
@@ -345,9 +348,12 @@ class PlaySprings:
             shift = self.line.shift(self.history.radii(inner))
             second = shift[:-2] - 2.0 * shift[1:-1] + shift[2:]
             flagged = np.flatnonzero(second > CONCAVITY_ROUND_OFF * max(np.max(np.abs(shift)), 1e-300))
-            for j in flagged:
-                convex.append((grid[j], grid[j + 2]))
-                times.append(grid[[j, j + 2]])
+            # (neighbouring flags' intervals [j, j + 2] overlap: one stretch each run of them, on which L is concave
+            # and U convex, one golden section each; a stretch per flag took 13 of them on a cone on a layer)
+            runs = np.split(flagged, np.flatnonzero(np.diff(flagged) > 1) + 1) if flagged.size else []
+            for run in runs:
+                convex.append((grid[run[0]], grid[run[-1] + 2]))
+                times.append(grid[[run[0], run[-1] + 2]])
         shared = np.unique(np.concatenate(times))
         return _Chain(shared, np.array(convex, dtype=float).reshape(-1, 2))
 
@@ -377,13 +383,23 @@ class PlaySprings:
     def _own_times(self, xi, g, ratio, start, t):
         """Each spring's times of its ``L``'s maximum and ``U``'s minimum on every interval of ``chain.convex``
         within ``[start, t]`` (``nan`` where none), by golden sections."""
-        columns = []
+        if not self.chain.convex.size:
+            return []
+        # (every interval's and both edges' sections in one: each step one inversion of the radius for them all)
+        lows, highs = [], []
         for lo, hi in self.chain.convex:
             a, b = np.maximum(lo, start), np.minimum(hi, np.broadcast_to(t, xi.shape))
-            for sign in (1.0, -1.0):
-                columns.append(_golden(lambda s: sign * self._window(xi, g, ratio, s)[0 if sign > 0 else 1],
-                                       a, b))
-        return columns
+            lows += [a, a]
+            highs += [b, b]
+        count = len(lows)
+        sign = np.repeat(np.tile([1.0, -1.0], count // 2), xi.size)
+        xi_all, g_all, ratio_all = (np.tile(v, count) for v in (xi, g, ratio))
+
+        def edge(s):
+            lower, upper = self._window(xi_all, g_all, ratio_all, s)
+            return np.where(sign > 0, lower, -upper)
+
+        return np.split(_golden(edge, np.concatenate(lows), np.concatenate(highs)), count)
 
     def _columns(self, xi, g, ratio, start, t) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The clamp times of each spring before ``t`` (one time, or one per spring; a column each, ``nan`` where
