@@ -20,6 +20,7 @@ import pytest
 
 import mdr_events as me
 from mdr_events.models.continuum.layer_media import LayerMedium
+from mdr_events.models.continuum.layer_branch import LayerBranch
 from mdr_events.models.continuum.layer_punch_branch import LayerPunchBranch
 from mdr_events.theory.layer import hess_elongation, punch_stiffness, punch_stiffness_slope
 from mdr_events.theory.layer.punch_recession import receding_radius
@@ -464,3 +465,16 @@ def test_the_receding_radius_kept_is_the_layers_and_does_not_hold_its_factors_al
     del branch, factors
     gc.collect()
     assert kept() is None
+
+
+def test_the_punch_branchs_arrays_read_theta_alone_and_are_the_layer_branchs_bit_for_bit():
+    """``LayerPunchBranch._arrays`` skips the profile factor's column (``κₙc = 0``: its terms are ``0·γₙ``): ``d`` and
+    ``∂d/∂a`` equal :class:`LayerBranch`'s, which reads both columns, bit for bit, from the tables' series below
+    ``LAMBDA_MIN`` to the face (``a/h = 10``)."""
+    contact = PUNCH.replace(h=THIN_LAYER)
+    params = _material(contact)
+    factors = NormalFactors(params.nu, contact.layer, 2.0)
+    branch = LayerPunchBranch(params, params.dgamma1, contact.indenter, contact.layer, factors)
+    radii = np.geomspace(1e-7 * THIN_LAYER, A0, 2001)
+    for mine, theirs in zip(branch._arrays(radii), LayerBranch._arrays(branch, radii)):
+        assert np.array_equal(mine, theirs)

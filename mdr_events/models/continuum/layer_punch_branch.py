@@ -164,6 +164,13 @@ class LayerPunchBranch(LayerBranch):
         """
         return 0.0
 
+    def _arrays(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``d(a)`` and ``∂d/∂a`` for an array of radii (> 0) from ``Θ`` alone (``NormalFactors.edge_arrays``): with
+        ``κₙc = 0`` the profile factor's terms are ``0·γₙ``, so ``γₙ = 0`` leaves both bit for bit as
+        :class:`~.layer_branch.LayerBranch`'s, without its column's half of the splines' cost."""
+        theta, theta_slope = self.factors.edge_arrays(a)
+        return self._pair_array(a, self.h, self.kc, self.n, 0.0, 0.0, self.hess, theta, theta_slope)
+
     def depths(self, a: np.ndarray) -> np.ndarray:
         return super().depths(np.minimum(np.asarray(a, dtype=float), self.face))
 
