@@ -11,14 +11,20 @@ the continuum at first order in ``Δx``.
 from __future__ import annotations
 
 import dataclasses
+import gc
 import math
+import weakref
 
 import numpy as np
 import pytest
 
 import mdr_events as me
 from mdr_events.models.continuum.layer_media import LayerMedium
+from mdr_events.models.continuum.layer_branch import LayerBranch
+from mdr_events.models.continuum.layer_punch_branch import LayerPunchBranch
 from mdr_events.theory.layer import hess_elongation, punch_stiffness, punch_stiffness_slope
+from mdr_events.theory.layer.punch_recession import receding_radius
+from mdr_events.theory.layer.scalar_factors import NormalFactors
 from mdr_events.theory.layer_symbolic import derive_layer_model
 
 #: The face's radius (m) and the depth pressed (m).
@@ -444,3 +450,31 @@ def test_hess_limit_has_a_single_hump_across_the_tables(nu):
     factors = NormalFactors(nu, me.Layer(1.0), 2.0)
     signs = np.sign([hess_log_slope(factors, lam) for lam in np.geomspace(1e-8, LAMBDA_MAX, 2001)])
     assert signs[0] > 0.0 and np.count_nonzero(np.diff(signs)) <= 1
+
+
+def test_the_receding_radius_kept_is_the_layers_and_does_not_hold_its_factors_alive():
+    """The branch's jump-off radius is kept per material, layer and face (``layer_punch_branch._receding_radius``):
+    a branch on factors built afresh gets :func:`receding_radius` of those values, and once the branch is dropped its
+    factors are collected (a cache keyed by the factors object would pin them after the media's caches let them go)."""
+    contact = PUNCH.replace(h=THIN_LAYER)
+    params = _material(contact)
+    factors = NormalFactors(params.nu, contact.layer, 2.0)
+    branch = LayerPunchBranch(params, params.dgamma1, contact.indenter, contact.layer, factors)
+    assert branch.jump_off_radius == receding_radius(NormalFactors(params.nu, contact.layer, 2.0), A0) < A0
+    kept = weakref.ref(factors)
+    del branch, factors
+    gc.collect()
+    assert kept() is None
+
+
+def test_the_punch_branchs_arrays_read_theta_alone_and_are_the_layer_branchs_bit_for_bit():
+    """``LayerPunchBranch._arrays`` skips the profile factor's column (``κₙc = 0``: its terms are ``0·γₙ``): ``d`` and
+    ``∂d/∂a`` equal :class:`LayerBranch`'s, which reads both columns, bit for bit, from the tables' series below
+    ``LAMBDA_MIN`` to the face (``a/h = 10``)."""
+    contact = PUNCH.replace(h=THIN_LAYER)
+    params = _material(contact)
+    factors = NormalFactors(params.nu, contact.layer, 2.0)
+    branch = LayerPunchBranch(params, params.dgamma1, contact.indenter, contact.layer, factors)
+    radii = np.geomspace(1e-7 * THIN_LAYER, A0, 2001)
+    for mine, theirs in zip(branch._arrays(radii), LayerBranch._arrays(branch, radii)):
+        assert np.array_equal(mine, theirs)

@@ -132,18 +132,21 @@ def receded_depth() -> float:
 @pytest.mark.parametrize("law", LAWS)
 def test_full_slip_is_the_springs_caps_held_and_receding(law):
     """On the thin layer along :func:`receding_path`: where every spring slides, ``F_x`` is ``τ0 π a₀² + μ F_N``
-    with the face compressed, and ``τ0 π a²`` at the receding radius (in tension Coulomb's part is off)."""
+    with the face compressed (``F_N >= 0``), and ``τ0 π a²`` at the receding radius: there ``d = −Δl(a) < 0``, the
+    springs under the face in tension (``F_N < 0``) and Coulomb's part ``μ k max(d, 0)`` off, so under Coulomb's law
+    alone ``F_x = 0``."""
     contact = punch(law, THIN, WORK)
     run = me.simulate(contact, receding_path(receded_depth()), "continuum", samples=81).isel(case=0)
     full = run["sliding_fraction"].values == 1.0
     radius, normal = run["contact_radius"].values, run["normal_force"].values
-    tau0 = TAU0 if contact.friction.uses_tau0 else 0.0
-    expected = tau0 * np.pi * radius**2 + MU * np.maximum(normal, 0.0)
-    held, receding = full & (radius == A0), full & (radius < A0)
-    assert np.count_nonzero(held) >= 3
-    assert np.count_nonzero(receding) >= (3 if tau0 > 0 else 0)
     force = np.abs(run["tangential_force"].values)
-    assert np.allclose(force[full], expected[full], rtol=FULL_SLIP_SHARE, atol=0.0)
+    tau0 = TAU0 if contact.friction.uses_tau0 else 0.0
+    held, receding = full & (radius == A0), full & (radius < A0)
+    assert np.count_nonzero(held) >= 3 and np.count_nonzero(receding) >= 3
+    assert np.all(normal[held] >= 0.0) and np.all(normal[receding] < 0.0)
+    assert np.allclose(force[held], tau0 * np.pi * A0**2 + MU * normal[held], rtol=FULL_SLIP_SHARE, atol=0.0)
+    # Coulomb's law alone: exactly no force (every spring's cap is 0); with τ0: τ0 π a² to the quadrature's share.
+    assert np.allclose(force[receding], tau0 * np.pi * radius[receding]**2, rtol=FULL_SLIP_SHARE, atol=0.0)
 
 
 def test_the_discrete_model_converges_to_it_at_first_order_where_the_contact_recedes():

@@ -33,18 +33,19 @@ __all__ = ["LayerPunchBranch", "FACE_SHARE"]
 #: ``MAX_RADIUS_RTOL``), as ``PIECE_SHARE``: a root of the face's radius lands within
 #: it at any allowed tolerance, and no root a whole share below it is taken for the face.
 FACE_SHARE = 10.0 * MAX_RADIUS_RTOL
-#: The receding radii kept (:func:`_receding_radius`): one per medium and face, as many as the media's factors
-#: (``media.FACTOR_CACHE``).
+#: The receding radii kept (:func:`_receding_radius`): one per material, layer and face, as many as the media's factors
+#: (``media.FACTOR_CACHE``). Keyed by those values (floats and the frozen ``Layer``), not by the factors object, so an
+#: evicted medium's factors are not held alive here.
 RECEDING_CACHE = 256
 
 
 @functools.lru_cache(maxsize=RECEDING_CACHE)
-def _receding_radius(factors: NormalFactors, face: float) -> float:
-    """:func:`~mdr_events.theory.layer.punch_recession.receding_radius`, kept: it depends on the layer's factors (one
-    object per medium, :func:`~.media.layer_medium` keeps them) and the face alone, not on the work, and a run's two
-    branches (``Δγ0``, ``Δγ1``) and every run of the same contact ask it again (a scan of 97 radii and Brent's method,
-    0.1 ms each)."""
-    return receding_radius(factors, face)
+def _receding_radius(nu: float, layer: Layer, exponent: float, face: float) -> float:
+    """:func:`~mdr_events.theory.layer.punch_recession.receding_radius` of the factors ``NormalFactors(nu, layer,
+    exponent)`` (what :class:`~.layer_media.LayerMedium` builds, its table cached per ``(ν, base, n)``), kept: it
+    depends on the layer and the face alone, not on the work, and a run's two branches (``Δγ0``, ``Δγ1``) and every
+    run of the same contact ask it again (a scan of 97 radii and Brent's method, 0.1 ms each)."""
+    return receding_radius(NormalFactors(nu, layer, exponent), face)
 
 
 class LayerPunchBranch(LayerBranch):
@@ -96,8 +97,8 @@ class LayerPunchBranch(LayerBranch):
     def _jump_off_radius(self) -> float:
         """The largest radius ``<= a₀`` where the recession stops, ``dΔl/da = 0``
         (:func:`~mdr_events.theory.layer.punch_recession.receding_radius`; the face itself where ``Δl`` does not fall
-        there), kept per factors and face (:func:`_receding_radius`)."""
-        return _receding_radius(self.factors, self.face)
+        there), kept per material, layer and face (:func:`_receding_radius`)."""
+        return _receding_radius(self.params.nu, self.layer, self.factors.n, self.face)
 
     def _key(self) -> tuple:
         return (*_branch_key(self), self.face)
@@ -162,6 +163,13 @@ class LayerPunchBranch(LayerBranch):
             0.
         """
         return 0.0
+
+    def _arrays(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``d(a)`` and ``∂d/∂a`` for an array of radii (> 0) from ``Θ`` alone (``NormalFactors.edge_arrays``): with
+        ``κₙc = 0`` the profile factor's terms are ``0·γₙ``, so ``γₙ = 0`` leaves both bit for bit as
+        :class:`~.layer_branch.LayerBranch`'s, without its column's half of the splines' cost."""
+        theta, theta_slope = self.factors.edge_arrays(a)
+        return self._pair_array(a, self.h, self.kc, self.n, 0.0, 0.0, self.hess, theta, theta_slope)
 
     def depths(self, a: np.ndarray) -> np.ndarray:
         return super().depths(np.minimum(np.asarray(a, dtype=float), self.face))

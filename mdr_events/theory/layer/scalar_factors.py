@@ -143,24 +143,26 @@ class LogPair:
         return tuple(np.exp(((((c5 * x + c4) * x + c3) * x + c2) * x + c1) * x + c0)
                      for c5, c4, c3, c2, c1, c0 in self._coefficients[:, :, index])
 
-    def values_and_slopes_array(self, lam: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    def values_and_slopes_array(self, lam: np.ndarray, columns: int = 2) -> tuple[np.ndarray, ...]:
         """:meth:`values_and_slopes` for an array of ``λ ≥ LAMBDA_MIN`` (Horner's rule on the arrays).
 
         Parameters
         ----------
         lam : numpy.ndarray
             ``a/h``.
+        columns : int, default 2
+            How many columns, the first first (1: the first alone, its values bit for bit those of both).
 
         Returns
         -------
         tuple of numpy.ndarray
-            The first factor and its derivative in ``λ``, then the second's.
+            The first factor and its derivative in ``λ``, then the second's (with ``columns=2``).
         """
         s = np.log(lam)
         index = np.clip(np.searchsorted(self._breaks, s, side="right") - 1, 0, self.last)
         x = s - self._breaks[index]
         out = []
-        for c5, c4, c3, c2, c1, c0 in self._coefficients[:, :, index]:
+        for c5, c4, c3, c2, c1, c0 in self._coefficients[:columns, :, index]:
             value = ((((c5 * x + c4) * x + c3) * x + c2) * x + c1) * x + c0
             slope = (((5.0 * c5 * x + 4.0 * c4) * x + 3.0 * c3) * x + 2.0 * c2) * x + c1
             y = np.exp(value)
@@ -233,6 +235,29 @@ class NormalFactors:
             series = (theta, theta_slope, share / theta + 1.0 / (self.n + 1.0), -share * theta_slope / (theta * theta))
             values = [np.where(small, exact, value) for exact, value in zip(series, values)]
         return tuple(values)
+
+    def edge_arrays(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``Θ(1)`` and ``dΘ/dλ`` at the radii ``a``: :meth:`arrays`' first two bit for bit, without the profile
+        factor's column (a flat punch's springs rest on ``g = 0`` and read none).
+
+        Parameters
+        ----------
+        a : numpy.ndarray
+            The radii (m), ``0 <= a/h <= LAMBDA_MAX``.
+
+        Returns
+        -------
+        tuple of numpy.ndarray
+            ``Θ`` and ``dΘ/dλ``.
+        """
+        lam = np.asarray(a, dtype=float) / self.h
+        small = lam < LAMBDA_MIN
+        theta, theta_slope = self.both.values_and_slopes_array(np.where(small, LAMBDA_MIN, lam), columns=1)
+        if np.any(small):
+            exact = 1.0 / (1.0 - 2.0 * self.k0 * lam / math.pi)
+            theta, theta_slope = np.where(small, exact, theta), np.where(small, 2.0 * self.k0 / math.pi * exact * exact,
+                                                                         theta_slope)
+        return theta, theta_slope
 
     def stiffness_factor(self, a: float) -> float:
         """``Φ(λ) = K(a)/(2E* a)`` at ``λ = a/h`` (the series ``1/(1 − 2k(0)λ/π)`` below ``LAMBDA_MIN``).
