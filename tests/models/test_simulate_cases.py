@@ -415,6 +415,12 @@ def test_the_assembled_dataset_is_the_one_xarray_merges(params, paths, method, m
     assert list(fast.variables) == list(merged.variables) and list(fast.dims) == list(merged.dims)
     assert set(fast.coords) == set(merged.coords) and list(fast.xindexes) == list(merged.xindexes)
     assert all(fast.xindexes[name].equals(merged.xindexes[name]) for name in merged.xindexes)
+    for name, index in merged.xindexes.items():  # (the index made at once is from_variables': its pandas.Index too)
+        made = fast.xindexes[name]
+        assert (type(made), made.dim, made.coord_dtype) == (type(index), index.dim, index.coord_dtype)
+        assert (type(made.index), made.index.dtype, made.index.name) == \
+            (type(index.index), index.index.dtype, index.index.name)
+    assert all(fast[name].encoding == merged[name].encoding for name in merged.variables)
     assert [type(variable) for variable in fast.variables.values()] == \
         [type(variable) for variable in merged.variables.values()]
     assert fast.attrs == merged.attrs and list(fast.attrs) == list(merged.attrs)
