@@ -16,6 +16,7 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.contact.friction import TAU0, FrictionLaw
+from mdr_events.memo import kept
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
@@ -38,6 +39,9 @@ ANGLE_DIMENSION, CUSTOM_DIMENSION = "alpha", "case"
 CASE_DIMENSIONS = (ANGLE_DIMENSION, CUSTOM_DIMENSION)
 #: The ``scenario`` attribute of a simulation of custom paths.
 CUSTOM_SCENARIO = "custom"
+
+#: How many of the scenarios' paths are kept (:func:`_scenario_path`): a figure's angles for a few contacts.
+PATHS_KEPT = 256
 
 #: Relative accuracy the slip criterion needs: x − X(ξ) against ū(a) must keep this many digits.
 SLIP_DIGITS = 1e-9
@@ -135,25 +139,31 @@ def _custom_paths(scenario: Path | Sequence[Path] | Mapping[str, Path]) -> dict[
 
 def _scenario_cases(params: Parameters, name: str, angles: np.ndarray, profile: SimulatedProfile = None,
                     final_depth: float | None = None) -> Cases:
-    """One path of scenario ``name`` per angle, each checked by :func:`check_path_extent` (the paths end below the
-    jump-off of ``profile``'s ``Δγ1`` branch)."""
-    paths = []
-    for angle in angles:
-        label = f"alpha={float(angle)!r} (degrees) in scenario {name}"
-        try:  # (an angle of 1e-300° makes waypoints 1e298 m apart: the path refuses them, the angle is named)
-            if name == "A":
-                path = Path.scenario_A(float(angle), params, profile=profile)
-            elif name == "B":
-                path = Path.scenario_B(float(angle), params, profile=profile)
-            else:
-                path = Path.scenario_B_indentation(float(angle), params, final_depth, profile=profile)
-        except ValueError as error:
-            if str(error).startswith("alpha="):  # (the path names the angle itself)
-                raise
-            raise ValueError(f"{label}: {error}") from None
-        check_path_extent(params, path, label, profile)
-        paths.append(path)
+    """One path of scenario ``name`` per angle (:func:`_scenario_path`), labelled by the angles."""
+    paths = [_scenario_path(name, float(angle), params, profile, final_depth) for angle in angles]
     return Cases(paths, ANGLE_DIMENSION, np.asarray(angles, dtype=float))
+
+
+@kept(PATHS_KEPT)
+def _scenario_path(name: str, angle: float, params: Parameters, profile: SimulatedProfile,
+                   final_depth: float | None) -> Path:
+    """The path of scenario ``name`` at ``angle``, checked by :func:`check_path_extent` (it ends below the jump-off
+    of ``profile``'s ``Δγ1`` branch); kept for the last :data:`PATHS_KEPT` (:func:`~mdr_events.memo.kept`: a path
+    is immutable, and a run's set-up builds the same ones again, some 60 µs each)."""
+    label = f"alpha={angle!r} (degrees) in scenario {name}"
+    try:  # (an angle of 1e-300° makes waypoints 1e298 m apart: the path refuses them, the angle is named)
+        if name == "A":
+            path = Path.scenario_A(angle, params, profile=profile)
+        elif name == "B":
+            path = Path.scenario_B(angle, params, profile=profile)
+        else:
+            path = Path.scenario_B_indentation(angle, params, final_depth, profile=profile)
+    except ValueError as error:
+        if str(error).startswith("alpha="):  # (the path names the angle itself)
+            raise
+        raise ValueError(f"{label}: {error}") from None
+    check_path_extent(params, path, label, profile)
+    return path
 
 
 def simulation_cases(params: Parameters, scenario, alpha, profile: SimulatedProfile = None) -> Cases:
@@ -183,7 +193,11 @@ def case_text(dimension: str, label) -> str:
 
 
 def _angles(alpha) -> tuple[float, ...]:
-    """The angles of a scenario: one or a 1-D list, distinct, each in [0, 90] degrees."""
+    """The angles of a scenario: one or a 1-D list, distinct, each in [0, 90] degrees (:func:`_plain_angles` as they
+    are; anything else, or what that refuses, read and named by :func:`~mdr_events.validation.validate_alpha`)."""
+    plain = _plain_angles(alpha)
+    if plain is not None:
+        return plain
     angles = np.atleast_1d(validate_alpha(alpha))
     if angles.ndim != 1 or angles.size == 0:
         raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: one angle or a 1-D list")
@@ -192,6 +206,17 @@ def _angles(alpha) -> tuple[float, ...]:
         raise ValueError(f"alpha={shown(alpha)} repeats {float(values[counts > 1][0])!r}; allowed: distinct "
                          "angles (each labels one case)")
     return tuple(float(angle) for angle in angles)
+
+
+def _plain_angles(alpha) -> tuple[float, ...] | None:
+    """The angles of a Python float or a non-empty list or tuple of them, distinct and each in [0, 90], as they are
+    (what :func:`_angles` reads of them through NumPy, without its arrays: some 15 µs a run); ``None`` for anything
+    else, which :func:`_angles` reads and, if it must, refuses by name."""
+    values = (alpha,) if type(alpha) is float else tuple(alpha) if type(alpha) in (list, tuple) else ()
+    if values and all(type(value) is float and 0.0 <= value <= 90.0 for value in values) and \
+            len(set(values)) == len(values):
+        return values
+    return None
 
 
 @dataclass(frozen=True)

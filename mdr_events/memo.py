@@ -1,0 +1,113 @@
+"""What a run's set-up computes of frozen, validated values, kept for the next run of the same values.
+
+A run checks and builds from values that cannot change once made: :class:`~mdr_events.Parameters`, the indenters and
+the friction law are frozen dataclasses validated when made. A fit, a sweep or a benchmark runs the same contact again
+and again, and ``simulate``'s set-up (the check of the scales, the scenarios' paths) cost as much as a third of a
+paraboloid's solve each time (issue 28). :func:`kept` keeps a function's last results by the exact values of its
+arguments (:func:`exact_key`): equal values of another type (``1`` and ``1.0``) or another zero (``-0.0`` and ``0.0``)
+are kept apart, so that a kept result is, bit for bit, the one the function computes; arguments with a value that is
+not hashable (a table's arrays) are computed each time. An error is never kept: a value refused is refused again, with
+the same message.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+from typing import Any, Callable, TypeVar
+
+__all__ = ["exact_key", "kept"]
+
+Result = TypeVar("Result")
+
+#: The types a key holds as they are: their equal values are the same value.
+_AS_THEY_ARE = (str, bool, type(None))
+
+
+class _Unkeyed(Exception):
+    """A value :func:`exact_key` has no key for."""
+
+
+@functools.cache
+def _field_names(kind: type) -> tuple[str, ...]:
+    """The fields of a frozen dataclass, looked up once per type."""
+    return tuple(field.name for field in dataclasses.fields(kind))
+
+
+def _exact(value: Any) -> Any:
+    """The key of one value (raises :class:`_Unkeyed` for one without)."""
+    kind = type(value)
+    if kind is float:
+        return value if value else repr(value)  # (0.0 and -0.0 apart; a float key is never a str)
+    if kind in _AS_THEY_ARE:
+        return value
+    if kind is int:
+        return kind, value
+    if kind is tuple:
+        return tuple(map(_exact, value))
+    params = getattr(kind, "__dataclass_params__", None)
+    if params is not None and params.frozen:
+        return (kind, *(_exact(getattr(value, name)) for name in _field_names(kind)))
+    raise _Unkeyed
+
+
+def exact_key(values: tuple) -> tuple | None:
+    """A key of ``values`` that tells apart what ``==`` does not.
+
+    Parameters
+    ----------
+    values : tuple
+        Floats, ints, strings, bools, ``None``, tuples of them and frozen dataclasses of them.
+
+    Returns
+    -------
+    tuple or None
+        Each value with its type (a frozen dataclass by its type and its fields' keys; a float zero by its sign), or
+        ``None`` if a value is of another kind (an array, a list, a mutable object): no key.
+    """
+    try:
+        return tuple(map(_exact, values))
+    except _Unkeyed:
+        return None
+
+
+class _Call:
+    """The arguments of one call, compared and hashed by their exact key."""
+
+    __slots__ = ("key", "args", "hash")
+
+    def __init__(self, key: tuple, args: tuple) -> None:
+        self.key, self.args, self.hash = key, args, hash(key)
+
+    def __hash__(self) -> int:
+        return self.hash
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, _Call) and self.key == other.key
+
+
+def kept(size: int) -> Callable[[Callable[..., Result]], Callable[..., Result]]:
+    """A decorator keeping the last ``size`` results of a function of positional arguments by their exact values
+    (:func:`exact_key`); a call whose arguments have no key is computed each time, a call that raises is not kept.
+
+    Parameters
+    ----------
+    size : int
+        How many results are kept (the least recently used is dropped).
+
+    Returns
+    -------
+    callable
+        The decorator; the function it gives has ``cache_clear()`` and ``cache_info()`` (``functools.lru_cache``'s).
+    """
+    def decorate(function: Callable[..., Result]) -> Callable[..., Result]:
+        by_call = functools.lru_cache(maxsize=size)(lambda call: function(*call.args))
+
+        @functools.wraps(function)
+        def run(*args: Any) -> Result:
+            key = exact_key(args)
+            return function(*args) if key is None else by_call(_Call(key, args))
+
+        run.cache_clear, run.cache_info = by_call.cache_clear, by_call.cache_info
+        return run
+    return decorate
