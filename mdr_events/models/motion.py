@@ -58,13 +58,27 @@ def check_path_extent(params: Parameters, path: Path, label: str, profile: Simul
     silently wrong result.
     """
     indenters.check_reach(params, path.max_depth, profile, label)
-    radius = float(indenters.branch_radius(params.d_max, params, params.dgamma0, profile))
-    reference = max(float(analytic.critical_shift(radius, params)), params.d_max)
-    limit = SLIP_DIGITS * reference / np.finfo(float).eps
+    reference, limit = _slip_reference(params, profile)
     extent = float(np.max(np.abs(path.waypoints[:, 0])))
     if extent > limit:
         raise ValueError(f"{label}: the path reaches x = {extent:.3g} m; allowed: |x| <= {limit:.3g} m, beyond "
                          f"which double precision cannot resolve the slip criterion (shift vs {reference:.3g} m)")
+
+
+@kept(PATHS_KEPT)
+def _path_parameters(params: Parameters, depth: float, speed: float) -> Parameters:
+    """``params`` with a path's deepest point as ``d_max`` (if it goes in) and its speed as ``v``, kept
+    (:func:`~mdr_events.memo.kept`: each run of the same paths makes the same)."""
+    return params.replace(d_max=depth, v=speed) if depth > 0.0 else params.replace(v=speed)
+
+
+@kept(PATHS_KEPT)
+def _slip_reference(params: Parameters, profile: SimulatedProfile) -> tuple[float, float]:
+    """The shift the slip criterion resolves, ``max(ū(a(d_max)), d_max)``, and the largest tangential extent that
+    keeps it resolved (:func:`check_path_extent`), kept per contact (:func:`~mdr_events.memo.kept`)."""
+    radius = float(indenters.branch_radius(params.d_max, params, params.dgamma0, profile))
+    reference = max(float(analytic.critical_shift(radius, params)), params.d_max)
+    return reference, SLIP_DIGITS * reference / np.finfo(float).eps
 
 
 def check_path_representable(params: Parameters, path: Path, label: str, profile: SimulatedProfile = None,
@@ -78,8 +92,7 @@ def check_path_representable(params: Parameters, path: Path, label: str, profile
             raise ValueError(f"{label}: {what} is {value:.3g} {unit}; allowed: at most {SCALE_MAX:.2g} {unit}, so that "
                              "products stay finite in double precision")
     try:
-        check_representable(params.replace(d_max=path.max_depth, v=path.speed) if path.max_depth > 0.0 else
-                             params.replace(v=path.speed), profile, friction)
+        check_representable(_path_parameters(params, path.max_depth, path.speed), profile, friction)
     except ValueError as error:
         raise ValueError(f"{label} (its deepest point as d_max, its speed as v): {error}") from None
 
