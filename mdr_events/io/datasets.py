@@ -15,6 +15,7 @@ elsewhere agrees with it. Reading and writing files is :mod:`mdr_events.io.files
 
 from __future__ import annotations
 
+import functools
 from typing import Any, Collection, Mapping, Sequence
 
 import numpy as np
@@ -39,9 +40,20 @@ REFERENCE = (
 PROGRAM = "mdr_events"
 #: The kinds of NumPy array (``dtype.kind``) whose default index :func:`_default_index` makes at once: real numbers.
 NUMERIC_KINDS = "fiu"
+#: The most values of a coordinate whose index results share (:func:`_shared_index`), and how many are kept.
+SHARED_INDEX_SIZE, SHARED_INDEXES = 256, 64
+
+
+#: The attributes :func:`stamp` puts on every result first: the program and the paper.
+PROVENANCE = {"program": PROGRAM, "program_version": __version__, "doi": DOI, "reference": REFERENCE,
+              "Conventions": "CF-1.8"}
+#: The types of attribute values that are netCDF-safe as they are.
+_SAFE_AS_THEY_ARE = (str, float, int)
 
 
 def _netcdf_safe(value: Any) -> Any:
+    if type(value) in _SAFE_AS_THEY_ARE:  # (what the conversions below would return unchanged)
+        return value
     if isinstance(value, (bool, np.bool_)):
         return int(value)
     if isinstance(value, (int, np.integer)):
@@ -59,15 +71,7 @@ def stamp(dataset: xr.Dataset, params: Parameters, **attrs: Any) -> xr.Dataset:
     ``attrs`` are extra netCDF-safe attributes (str, int, float; bools are
     stored as 0/1).
     """
-    dataset.attrs.update(
-        {
-            "program": PROGRAM,
-            "program_version": __version__,
-            "doi": DOI,
-            "reference": REFERENCE,
-            "Conventions": "CF-1.8",
-        }
-    )
+    dataset.attrs.update(PROVENANCE)
     dataset.attrs.update(params.to_attrs())
     preset = params.preset_name()
     if preset is not None:
@@ -77,8 +81,9 @@ def stamp(dataset: xr.Dataset, params: Parameters, **attrs: Any) -> xr.Dataset:
             "(see mdr_events.Parameters.paper)")
     dataset.attrs.update({key: _netcdf_safe(value) for key, value in attrs.items()})
     for name, variable in dataset.variables.items():
-        missing = [key for key in ("units", "long_name") if key not in variable.attrs]
-        if missing:
+        held = variable.attrs
+        if "units" not in held or "long_name" not in held:
+            missing = [key for key in ("units", "long_name") if key not in held]
             raise ValueError(f"variable {name!r} lacks attribute(s) {missing}")
     return dataset
 
@@ -144,12 +149,28 @@ def _coordinates(coords: Mapping[str, tuple]) -> tuple[dict[str, xr.Variable], d
 def _default_index(name: str, variable: xr.Variable) -> PandasIndex:
     """The index ``PandasIndex.from_variables`` makes of the coordinate ``name``: of a NumPy array of numbers, the
     ``pandas.Index`` of its values named ``name`` wrapped at once (``fastpath``: what ``from_variables`` reaches
-    through two shallow copies to rename it, some 15 µs a coordinate); of anything else, by ``from_variables``
-    (text, whose conversion it decides)."""
+    through two shallow copies to rename it, some 15 µs a coordinate), one of at most :data:`SHARED_INDEX_SIZE`
+    values shared by the results with the same values (:func:`_shared_index`); of anything else, by
+    ``from_variables`` (text, whose conversion it decides)."""
     values = variable.data
-    if type(values) is np.ndarray and values.dtype.kind in NUMERIC_KINDS:
-        return PandasIndex(pd.Index(values, name=name), name, coord_dtype=values.dtype, fastpath=True)
+    if type(values) is np.ndarray and values.dtype.kind in NUMERIC_KINDS and values.ndim == 1:
+        if values.size <= SHARED_INDEX_SIZE:
+            return _shared_index(name, values.dtype.str, values.tobytes())
+        return _numeric_index(name, values)
     return PandasIndex.from_variables({name: variable}, options={})
+
+
+def _numeric_index(name: str, values: np.ndarray) -> PandasIndex:
+    """The default index of the coordinate ``name`` of the numbers ``values``, as ``from_variables`` makes it."""
+    return PandasIndex(pd.Index(values, name=name), name, coord_dtype=values.dtype, fastpath=True)
+
+
+@functools.lru_cache(maxsize=SHARED_INDEXES)
+def _shared_index(name: str, dtype: str, data: bytes) -> PandasIndex:
+    """:func:`_numeric_index` of the values ``data`` (their bytes, of type ``dtype``), made once for the last
+    :data:`SHARED_INDEXES` coordinates (an event log's numbers, a run's angles): an index is immutable, and xarray
+    shares one between the results of a dataset as a shallow copy does."""
+    return _numeric_index(name, np.frombuffer(data, dtype=np.dtype(dtype)))
 
 
 def parameters_of(dataset: xr.Dataset) -> Parameters:
