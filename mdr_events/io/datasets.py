@@ -25,6 +25,7 @@ from xarray.indexes import PandasIndex
 
 from mdr_events._version import __version__
 from mdr_events.io.registrars import load_registrars
+from mdr_events.memo import kept
 from mdr_events.parameters import Parameters
 
 __all__ = ["DOI", "REFERENCE", "PROGRAM", "STAMP_ATTRIBUTES", "stamp", "assembled", "parameters_of", "text_list_attrs",
@@ -42,6 +43,8 @@ PROGRAM = "mdr_events"
 NUMERIC_KINDS = "fiu"
 #: The most values of a coordinate whose index results share (:func:`_shared_index`), and how many are kept.
 SHARED_INDEX_SIZE, SHARED_INDEXES = 256, 64
+#: How many parameter sets' attributes :func:`stamp` keeps.
+PARAMETER_ATTRS_KEPT = 64
 
 
 #: The attributes :func:`stamp` puts on every result first: the program and the paper.
@@ -72,13 +75,7 @@ def stamp(dataset: xr.Dataset, params: Parameters, **attrs: Any) -> xr.Dataset:
     stored as 0/1).
     """
     dataset.attrs.update(PROVENANCE)
-    dataset.attrs.update(params.to_attrs())
-    preset = params.preset_name()
-    if preset is not None:
-        dataset.attrs["inferred_parameters"] = ", ".join(Parameters.INFERRED_FIELDS)
-        dataset.attrs["inferred_parameters_note"] = (
-            f"{preset}: these fields are inferred, not stated in section 4 of the paper "
-            "(see mdr_events.Parameters.paper)")
+    dataset.attrs.update(_parameter_attrs(params))
     dataset.attrs.update({key: _netcdf_safe(value) for key, value in attrs.items()})
     for name, variable in dataset.variables.items():
         held = variable.attrs
@@ -86,6 +83,20 @@ def stamp(dataset: xr.Dataset, params: Parameters, **attrs: Any) -> xr.Dataset:
             missing = [key for key in ("units", "long_name") if key not in held]
             raise ValueError(f"variable {name!r} lacks attribute(s) {missing}")
     return dataset
+
+
+@kept(PARAMETER_ATTRS_KEPT)
+def _parameter_attrs(params: Parameters) -> dict[str, Any]:
+    """What :func:`stamp` says of ``params``: :meth:`~mdr_events.Parameters.to_attrs` and, for a preset of the paper,
+    which fields are inferred; kept per value (:func:`~mdr_events.memo.kept`; read, never changed)."""
+    attrs = params.to_attrs()
+    preset = params.preset_name()
+    if preset is not None:
+        attrs["inferred_parameters"] = ", ".join(Parameters.INFERRED_FIELDS)
+        attrs["inferred_parameters_note"] = (
+            f"{preset}: these fields are inferred, not stated in section 4 of the paper "
+            "(see mdr_events.Parameters.paper)")
+    return attrs
 
 
 def assembled(data_vars: Mapping[str, tuple], coords: Mapping[str, tuple]) -> xr.Dataset:
