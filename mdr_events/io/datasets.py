@@ -145,43 +145,50 @@ def _variable(dims, values, attrs: dict) -> xr.Variable:
 def _coordinates(coords: Mapping[str, tuple]) -> tuple[dict[str, xr.Variable], dict[str, Any]]:
     """The coordinates' variables and indexes as ``xarray.Coordinates(coords)`` makes them, without its merge: a
     coordinate of one dimension named after it gets the default index (:func:`_default_index`) and the index's
-    variable; any other is a plain variable."""
+    variable, one of at most :data:`SHARED_INDEX_SIZE` numbers a shallow copy of those of the last results with the
+    same values (:func:`_shared_coordinate`); any other is a plain variable."""
     variables, indexes = {}, {}
     for name, (dims, values, attrs) in coords.items():
-        variable = _variable(dims, values, attrs)
-        if variable.dims == (name,):
-            index = _default_index(name, variable)
-            variable = index.create_variables({name: variable})[name]
+        if type(dims) in (str, tuple) and dims in (name, (name,)) and _numbers(values) and values.ndim == 1 and \
+                values.size <= SHARED_INDEX_SIZE:
+            index, shared = _shared_coordinate(name, values.dtype.str, values.tobytes())
+            variable = shared.copy(deep=False)  # (its own attributes; the immutable index's values shared)
+            variable.attrs = attrs
             indexes[name] = index
+        else:
+            variable = _variable(dims, values, attrs)
+            if variable.dims == (name,):
+                index = _default_index(name, variable)
+                variable = index.create_variables({name: variable})[name]
+                indexes[name] = index
         variables[name] = variable
     return variables, indexes
+
+
+def _numbers(values: Any) -> bool:
+    """Whether ``values`` is a NumPy array of real numbers."""
+    return type(values) is np.ndarray and values.dtype.kind in NUMERIC_KINDS
 
 
 def _default_index(name: str, variable: xr.Variable) -> PandasIndex:
     """The index ``PandasIndex.from_variables`` makes of the coordinate ``name``: of a NumPy array of numbers, the
     ``pandas.Index`` of its values named ``name`` wrapped at once (``fastpath``: what ``from_variables`` reaches
-    through two shallow copies to rename it, some 15 µs a coordinate), one of at most :data:`SHARED_INDEX_SIZE`
-    values shared by the results with the same values (:func:`_shared_index`); of anything else, by
-    ``from_variables`` (text, whose conversion it decides)."""
+    through two shallow copies to rename it, some 15 µs a coordinate); of anything else, by ``from_variables``
+    (text, whose conversion it decides)."""
     values = variable.data
-    if type(values) is np.ndarray and values.dtype.kind in NUMERIC_KINDS and values.ndim == 1:
-        if values.size <= SHARED_INDEX_SIZE:
-            return _shared_index(name, values.dtype.str, values.tobytes())
-        return _numeric_index(name, values)
+    if _numbers(values) and values.ndim == 1:
+        return PandasIndex(pd.Index(values, name=name), name, coord_dtype=values.dtype, fastpath=True)
     return PandasIndex.from_variables({name: variable}, options={})
 
 
-def _numeric_index(name: str, values: np.ndarray) -> PandasIndex:
-    """The default index of the coordinate ``name`` of the numbers ``values``, as ``from_variables`` makes it."""
-    return PandasIndex(pd.Index(values, name=name), name, coord_dtype=values.dtype, fastpath=True)
-
-
 @functools.lru_cache(maxsize=SHARED_INDEXES)
-def _shared_index(name: str, dtype: str, data: bytes) -> PandasIndex:
-    """:func:`_numeric_index` of the values ``data`` (their bytes, of type ``dtype``), made once for the last
-    :data:`SHARED_INDEXES` coordinates (an event log's numbers, a run's angles): an index is immutable, and xarray
-    shares one between the results of a dataset as a shallow copy does."""
-    return _numeric_index(name, np.frombuffer(data, dtype=np.dtype(dtype)))
+def _shared_coordinate(name: str, dtype: str, data: bytes) -> tuple[PandasIndex, xr.Variable]:
+    """The default index of the coordinate ``name`` of the numbers ``data`` (their bytes, of type ``dtype``) and its
+    variable without attributes, made once for the last :data:`SHARED_INDEXES` coordinates (an event log's numbers,
+    a run's angles): an index is immutable, and xarray shares one between datasets as a shallow copy does."""
+    variable = xr.Variable((name,), np.frombuffer(data, dtype=np.dtype(dtype)))
+    index = _default_index(name, variable)
+    return index, index.create_variables({name: variable})[name]
 
 
 def parameters_of(dataset: xr.Dataset) -> Parameters:

@@ -429,6 +429,20 @@ def test_the_assembled_dataset_is_the_one_xarray_merges(params, paths, method, m
     assert (tmp_path / "fast.nc").read_bytes() == (tmp_path / "merged.nc").read_bytes()
 
 
+def test_results_sharing_a_coordinate_index_keep_their_own_coordinates(params):
+    """Two runs of the same angles share the angles' and the events' index (made once, immutable) and nothing
+    else: each result's coordinate its own variable, whose attributes and values a change of the other leaves."""
+    first, second = (run(params, "B", "continuum", alpha=[20.0, 30.0]) for _ in range(2))
+    assert first.xindexes["alpha"] is second.xindexes["alpha"] and first.xindexes["event"] is second.xindexes["event"]
+    first["alpha"].attrs["units"] = "rad"
+    first.coords["event"].attrs.clear()
+    assert second["alpha"].attrs == {"units": "degree", "long_name": "path angle to the surface"}
+    assert second["event"].attrs == {"units": "1", "long_name": "event number"}
+    renamed = first.assign_coords(alpha=[0.1, 0.2])
+    assert list(second["alpha"].values) == [20.0, 30.0] and list(renamed["alpha"].values) == [0.1, 0.2]
+    assert second.sel(alpha=30.0)["event_kind"].equals(second.isel(alpha=1)["event_kind"])
+
+
 def test_an_assembled_dataset_refuses_what_a_merge_would():
     """Sizes that disagree, and a data variable named after a dimension, are refused as xarray's merge refuses them."""
     from mdr_events.io.datasets import assembled
