@@ -41,8 +41,11 @@ REFERENCE = (
 PROGRAM = "mdr_events"
 #: The kinds of NumPy array (``dtype.kind``) whose default index :func:`_default_index` makes at once: real numbers.
 NUMERIC_KINDS = "fiu"
-#: The most values of a coordinate whose index results share (:func:`_shared_index`), and how many are kept.
-SHARED_INDEX_SIZE, SHARED_INDEXES = 256, 64
+#: The most numbers a coordinate may hold for results of the same values to share its index
+#: (:func:`_shared_coordinate`: an event log's numbers, a run's angles).
+SHARED_INDEX_SIZE = 256
+#: How many such coordinates are kept.
+SHARED_INDEXES = 64
 #: How many parameter sets' attributes :func:`stamp` keeps.
 PARAMETER_ATTRS_KEPT = 64
 

@@ -117,8 +117,8 @@ def check_representable(params: Parameters, profile: Profile | None = None, fric
 @kept(SCALES_KEPT)
 def _check_representable(params: Parameters, profile: Profile | None, friction: FrictionLaw) -> None:
     """:func:`check_representable`, kept for the last :data:`SCALES_KEPT` contacts it passed
-    (:func:`~mdr_events.memo.kept`: a run's set-up checks its contact twice or more, a fit's every solve the same
-    elastomer; some 30 µs a time)."""
+    (:func:`~mdr_events.memo.kept`: a run's set-up checks its contact once or twice, a benchmark's or a study's
+    runs the same contact again; some 30 µs a time). A refusal is never kept: it is raised again, by name."""
     for scale in run_scales(params, profile, friction):
         magnitude = abs(scale.value)
         if scale.failure or not math.isfinite(magnitude) or (magnitude != 0.0 and
