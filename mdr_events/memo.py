@@ -18,7 +18,7 @@ from typing import Any, Callable, TypeVar
 
 __all__ = ["exact_key", "kept"]
 
-Result = TypeVar("Result")
+_Result = TypeVar("_Result")
 
 #: The types a key holds as they are: their equal values are the same value.
 _AS_THEY_ARE = (str, bool, type(None))
@@ -86,7 +86,7 @@ class _Call:
         return isinstance(other, _Call) and self.key == other.key
 
 
-def kept(size: int) -> Callable[[Callable[..., Result]], Callable[..., Result]]:
+def kept(size: int) -> Callable[[Callable[..., _Result]], Callable[..., _Result]]:
     """A decorator keeping the last ``size`` results of a function of positional arguments by their exact values
     (:func:`exact_key`); a call whose arguments have no key is computed each time, a call that raises is not kept.
 
@@ -100,11 +100,11 @@ def kept(size: int) -> Callable[[Callable[..., Result]], Callable[..., Result]]:
     callable
         The decorator; the function it gives has ``cache_clear()`` and ``cache_info()`` (``functools.lru_cache``'s).
     """
-    def decorate(function: Callable[..., Result]) -> Callable[..., Result]:
+    def decorate(function: Callable[..., _Result]) -> Callable[..., _Result]:
         by_call = functools.lru_cache(maxsize=size)(lambda call: function(*call.args))
 
         @functools.wraps(function)
-        def run(*args: Any) -> Result:
+        def run(*args: Any) -> _Result:
             key = exact_key(args)
             return function(*args) if key is None else by_call(_Call(key, args))
 
