@@ -148,16 +148,17 @@ def _variable(dims, values, attrs: dict) -> xr.Variable:
 def _coordinates(coords: Mapping[str, tuple]) -> tuple[dict[str, xr.Variable], dict[str, Any]]:
     """The coordinates' variables and indexes as ``xarray.Coordinates(coords)`` makes them, without its merge: a
     coordinate of one dimension named after it gets the default index (:func:`_default_index`) and the index's
-    variable, one of at most :data:`SHARED_INDEX_SIZE` numbers a shallow copy of those of the last results with the
-    same values (:func:`_shared_coordinate`); any other is a plain variable."""
+    variable; one of at most :data:`SHARED_INDEX_SIZE` numbers a ``pandas.Index.view`` of the last results' of the
+    same values (:func:`_shared_coordinate`): its own index and variable (a name or attribute set on one is the
+    other's no more), the read-only values shared; any other is a plain variable."""
     variables, indexes = {}, {}
     for name, (dims, values, attrs) in coords.items():
         if type(dims) in (str, tuple) and dims in (name, (name,)) and _numbers(values) and values.ndim == 1 and \
                 values.size <= SHARED_INDEX_SIZE:
-            index, shared = _shared_coordinate(name, values.dtype.str, values.tobytes())
-            variable = shared.copy(deep=False)  # (its own attributes; the immutable index's values shared)
-            variable.attrs = attrs
-            indexes[name] = index
+            shared = _shared_coordinate(name, values.dtype.str, values.tobytes()).index
+            view = shared.view()  # (its own pandas.Index, named apart; the values and their lookup table shared)
+            indexes[name] = PandasIndex(view, name, coord_dtype=shared.dtype, fastpath=True)
+            variable = xr.IndexVariable((name,), view, attrs, fastpath=True)
         else:
             variable = _variable(dims, values, attrs)
             if variable.dims == (name,):
@@ -185,13 +186,11 @@ def _default_index(name: str, variable: xr.Variable) -> PandasIndex:
 
 
 @functools.lru_cache(maxsize=SHARED_INDEXES)
-def _shared_coordinate(name: str, dtype: str, data: bytes) -> tuple[PandasIndex, xr.Variable]:
-    """The default index of the coordinate ``name`` of the numbers ``data`` (their bytes, of type ``dtype``) and its
-    variable without attributes, made once for the last :data:`SHARED_INDEXES` coordinates (an event log's numbers,
-    a run's angles): an index is immutable, and xarray shares one between datasets as a shallow copy does."""
-    variable = xr.Variable((name,), np.frombuffer(data, dtype=np.dtype(dtype)))
-    index = _default_index(name, variable)
-    return index, index.create_variables({name: variable})[name]
+def _shared_coordinate(name: str, dtype: str, data: bytes) -> PandasIndex:
+    """The default index of the coordinate ``name`` of the numbers ``data`` (their bytes, of type ``dtype``, read-only),
+    made once for the last :data:`SHARED_INDEXES` coordinates (an event log's numbers, a run's angles). Never handed
+    out: a ``pandas.Index`` takes a new name in place, so that each result gets a view of it (:func:`_coordinates`)."""
+    return _default_index(name, xr.Variable((name,), np.frombuffer(data, dtype=np.dtype(dtype))))
 
 
 def parameters_of(dataset: xr.Dataset) -> Parameters:

@@ -430,10 +430,20 @@ def test_the_assembled_dataset_is_the_one_xarray_merges(params, paths, method, m
 
 
 def test_results_sharing_a_coordinate_index_keep_their_own_coordinates(params):
-    """Two runs of the same angles share the angles' and the events' index (made once, immutable) and nothing
-    else: each result's coordinate its own variable, whose attributes and values a change of the other leaves."""
+    """Two runs of the same angles share the angles' and the events' values (made once, read-only) and nothing
+    else: each result's index and coordinate its own, whose name, attributes and values a change of the other
+    leaves, nor does a later run of the same angles see it."""
     first, second = (run(params, "B", "continuum", alpha=[20.0, 30.0]) for _ in range(2))
-    assert first.xindexes["alpha"] is second.xindexes["alpha"] and first.xindexes["event"] is second.xindexes["event"]
+    for dim in ("alpha", "event"):
+        assert first.indexes[dim] is not second.indexes[dim] and first[dim].variable is not second[dim].variable
+        assert np.shares_memory(first.indexes[dim].values, second.indexes[dim].values)
+    names = list(second["event_kind"].to_dataframe().index.names)
+    first.indexes["alpha"].name = "renamed"
+    first.indexes["event"].rename("q", inplace=True)
+    assert first.indexes["alpha"].name == "renamed"  # (the rename took, on the first result alone)
+    for other in (second, run(params, "B", "continuum", alpha=[20.0, 30.0])):
+        assert [other.indexes[dim].name for dim in ("alpha", "event")] == ["alpha", "event"]
+        assert list(other["event_kind"].to_dataframe().index.names) == names
     first["alpha"].attrs["units"] = "rad"
     first.coords["event"].attrs.clear()
     assert second["alpha"].attrs == {"units": "degree", "long_name": "path angle to the surface"}
