@@ -20,8 +20,9 @@ __all__ = ["exact_key", "kept"]
 
 _Result = TypeVar("_Result")
 
-#: The types a key holds as they are: their equal values are the same value.
-_AS_THEY_ARE = (str, bool, type(None))
+#: The types a key holds with their type, ``(type, value)``: their equal values are the same value, and the tag
+#: keeps them apart from the equal values of another type (``True == 1 == 1.0``).
+_TAGGED = (str, bool, int)
 
 
 class _Unkeyed(Exception):
@@ -29,25 +30,31 @@ class _Unkeyed(Exception):
 
 
 @functools.cache
-def _field_names(kind: type) -> tuple[str, ...]:
-    """The fields of a frozen dataclass, looked up once per type."""
+def _field_names(kind: type) -> tuple[str, ...] | None:
+    """The fields of a frozen dataclass, looked up once per type; ``None`` for one that gives its own key
+    (``_memo_key``: a table's digest, made once, instead of a walk over thousands of points)."""
+    if hasattr(kind, "_memo_key"):
+        return None
     return tuple(field.name for field in dataclasses.fields(kind))
 
 
 def _exact(value: Any) -> Any:
     """The key of one value (raises :class:`_Unkeyed` for one without)."""
     kind = type(value)
-    if kind is float:
-        return value if value else repr(value)  # (0.0 and -0.0 apart; a float key is never a str)
-    if kind in _AS_THEY_ARE:
-        return value
-    if kind is int:
+    if kind is float:  # (as it is: every other kind's key is a tuple or None; a zero by its sign)
+        return value if value else (kind, repr(value))
+    if kind in _TAGGED:
         return kind, value
+    if value is None:
+        return None
     if kind is tuple:
         return tuple(map(_exact, value))
     params = getattr(kind, "__dataclass_params__", None)
     if params is not None and params.frozen:
-        return (kind, *(_exact(getattr(value, name)) for name in _field_names(kind)))
+        names = _field_names(kind)
+        if names is None:
+            return kind, value._memo_key
+        return (kind, *(_exact(getattr(value, name)) for name in names))
     raise _Unkeyed
 
 
@@ -62,8 +69,9 @@ def exact_key(values: tuple) -> tuple | None:
     Returns
     -------
     tuple or None
-        Each value with its type (a frozen dataclass by its type and its fields' keys; a float zero by its sign), or
-        ``None`` if a value is of another kind (an array, a list, a mutable object): no key.
+        Each value with its type (``True``, ``1``, ``1.0`` and ``"1.0"`` apart; a float zero by its sign; a frozen
+        dataclass by its type and its fields' keys, or by the key it keeps, ``_memo_key``, if it has one: a table's
+        digest), or ``None`` if a value is of another kind (an array, a list, a mutable object): no key.
     """
     try:
         return tuple(map(_exact, values))

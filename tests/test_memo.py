@@ -4,6 +4,7 @@ them (the check of the scales, the scenarios' paths; issue 28)."""
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 
 import numpy as np
 import pytest
@@ -21,6 +22,9 @@ def test_an_exact_key_tells_apart_what_equality_does_not():
     equal values of the same kinds one key."""
     assert exact_key((0.0,)) != exact_key((-0.0,))
     assert exact_key((1,)) != exact_key((1.0,))
+    assert exact_key((True,)) != exact_key((1.0,)) and exact_key((True,)) != exact_key((1,))
+    assert exact_key(("0.0",)) != exact_key((0.0,)) and exact_key(("-0.0",)) != exact_key((-0.0,))
+    assert exact_key(("1.0",)) != exact_key((1.0,)) and exact_key((None,)) != exact_key(("None",))
     assert exact_key((PAPER.replace(tau0=0.0),)) != exact_key((PAPER.replace(tau0=-0.0),))
     assert exact_key((PAPER, None, "B", (20.0, 30.0))) == exact_key((me.Parameters.paper(), None, "B", (20.0, 30.0)))
     assert exact_key((me.PowerLaw(1e3, 2.0),)) != exact_key((me.FlatPunch(1e3),))
@@ -39,6 +43,28 @@ def test_an_exact_key_has_no_key_for_what_may_change():
     r = np.linspace(0.0, 4e-3, 41)
     table, other = me.TabulatedProfile(r, r**2 / 0.06), me.TabulatedProfile(r, r**2 / 0.0600000001)
     assert exact_key((table,)) == exact_key((me.TabulatedProfile(r, r**2 / 0.06),)) != exact_key((other,))
+
+
+def test_a_tables_key_is_made_once_whatever_its_points(monkeypatch):
+    """A table's key is a digest of its columns made once: a key of 10 000 points reads as few values as one of 3
+    (counted: the keys of its parts), the second key digests nothing, and a change of one bit of one point (a zero's
+    sign) is another key."""
+    from mdr_events import memo
+
+    parts, digests = [], []
+    exact, blake2b = memo._exact, hashlib.blake2b
+    monkeypatch.setattr(memo, "_exact", lambda value: parts.append(value) or exact(value))
+    monkeypatch.setattr(hashlib, "blake2b", lambda *args, **kw: digests.append(args) or blake2b(*args, **kw))
+    counts = []
+    for points in (3, 10_000):
+        r = np.linspace(0.0, 4e-3, points)
+        table = me.TabulatedProfile(r, r**2 / 0.06)
+        parts.clear()
+        assert exact_key((table,)) == exact_key((table,)) == exact_key((me.TabulatedProfile(r, r**2 / 0.06),))
+        counts.append(len(parts))
+    assert counts[0] == counts[1] and len(digests) == 4  # (two tables of each size, each digested once)
+    flipped = me.TabulatedProfile((0.0, 1e-3, 2e-3), (0.0, 1e-6, 4e-6))
+    assert exact_key((flipped,)) != exact_key((me.TabulatedProfile((-0.0, 1e-3, 2e-3), (0.0, 1e-6, 4e-6)),))
 
 
 def test_kept_results_are_computed_once_and_errors_never():
