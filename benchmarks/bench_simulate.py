@@ -106,10 +106,12 @@ def _part_tasks(label: str, p, path, options: dict) -> dict[str, callable]:
 
     motion, alpha = (label[0], [float(label.split()[1].rstrip("°"))]) if label[0] in "AB" else (path, None)
 
+    # (a checkout before round twenty-two's counting first, measured with --against, takes no limits here; looked up
+    # once, not timed: the front end's own work is)
+    counted_first = "limits" in inspect.signature(simulation_job).parameters
+
     def front_end():
         limits = check_limits(None)
-        # (a checkout before round twenty-two's counting first, measured with --against, takes no limits here)
-        counted_first = "limits" in inspect.signature(simulation_job).parameters
         model, method = simulation_job(p, motion, alpha, "continuum", dict(options),
                                        *([limits] if counted_first else []))
         check_representable(model.params, model.profile, model.friction)

@@ -1,6 +1,6 @@
 """Imports point down only: no module of mdr_events imports from a layer above its own.
 
-Layers, bottom to top: the foundation (``parameters``, ``validation``, ``limits``, ``_version``), ``contact`` (the
+Layers, bottom to top: the foundation (``parameters``, ``validation``, ``limits``, ``memo``, ``_version``), ``contact`` (the
 physical model as data), ``io``,
 ``theory``, ``models`` (with ``models/continuum``), ``analysis``, ``plotting``, ``app`` (with ``reproduction``, the
 paper's reproduction, a folder of its own at the same level). A module may
@@ -23,7 +23,7 @@ PACKAGE = Path(mdr_events.__file__).resolve().parent
 
 #: Layers from the bottom: the first component(s) of a module's name under mdr_events -> its layer.
 LAYERS = ("foundation", "contact", "io", "theory", "models", "analysis", "plotting", "app", "package")
-FOUNDATION_MODULES = ("parameters", "validation", "limits", "_version")
+FOUNDATION_MODULES = ("parameters", "validation", "limits", "memo", "_version")
 #: Folders that sit at the level of a layer without being named after it: folder -> its layer.
 FOLDER_LAYERS = {"reproduction": "app", "dem": "analysis"}
 EXEMPT_IMPORTERS = ("mdr_events", "mdr_events._version")

@@ -15,6 +15,8 @@ and a table beside the paraboloid.
 
 from __future__ import annotations
 
+import functools
+import hashlib
 import math
 import warnings
 from dataclasses import dataclass
@@ -257,6 +259,14 @@ class TabulatedProfile:
         _check_table_scales(r, f)
         object.__setattr__(self, "r", r)
         object.__setattr__(self, "f", f)
+
+    @functools.cached_property
+    def _memo_key(self) -> tuple[int, bytes]:
+        """The table's exact key for :func:`mdr_events.memo.exact_key`: its length and a digest of its columns' bytes
+        (every bit of every value: ``-0.0`` is not ``0.0``), made once, so that a run's set-up keyed on the table
+        does not walk its thousands of points each time (issue 28)."""
+        digest = hashlib.blake2b(np.array((self.r, self.f), dtype=np.float64).tobytes(), digest_size=32)
+        return len(self.r), digest.digest()
 
     def __repr__(self) -> str:  # (a measured table has thousands of points: errors name it in one short line)
         return f"TabulatedProfile(<{len(self.r)} points, r to {self.r[-1]!r} m, f to {self.f[-1]!r} m>)"

@@ -15,14 +15,17 @@ elsewhere agrees with it. Reading and writing files is :mod:`mdr_events.io.files
 
 from __future__ import annotations
 
+import functools
 from typing import Any, Collection, Mapping, Sequence
 
 import numpy as np
+import pandas as pd
 import xarray as xr
 from xarray.indexes import PandasIndex
 
 from mdr_events._version import __version__
 from mdr_events.io.registrars import load_registrars
+from mdr_events.memo import kept
 from mdr_events.parameters import Parameters
 
 __all__ = ["DOI", "REFERENCE", "PROGRAM", "STAMP_ATTRIBUTES", "stamp", "assembled", "parameters_of", "text_list_attrs",
@@ -36,9 +39,27 @@ REFERENCE = (
     "and Tangential Direction: Experiments and Simulations, Biomimetics 8(6), 477 (2023), section 4"
 )
 PROGRAM = "mdr_events"
+#: The kinds of NumPy array (``dtype.kind``) whose default index :func:`_default_index` makes at once: real numbers.
+NUMERIC_KINDS = "fiu"
+#: The most numbers a coordinate may hold for results of the same values to share its index
+#: (:func:`_shared_coordinate`: an event log's numbers, a run's angles).
+SHARED_INDEX_SIZE = 256
+#: How many such coordinates are kept.
+SHARED_INDEXES = 64
+#: How many parameter sets' attributes :func:`stamp` keeps.
+PARAMETER_ATTRS_KEPT = 64
+
+
+#: The attributes :func:`stamp` puts on every result first: the program and the paper.
+PROVENANCE = {"program": PROGRAM, "program_version": __version__, "doi": DOI, "reference": REFERENCE,
+              "Conventions": "CF-1.8"}
+#: The types of attribute values that are netCDF-safe as they are.
+_SAFE_AS_THEY_ARE = (str, float, int)
 
 
 def _netcdf_safe(value: Any) -> Any:
+    if type(value) in _SAFE_AS_THEY_ARE:  # (what the conversions below would return unchanged)
+        return value
     if isinstance(value, (bool, np.bool_)):
         return int(value)
     if isinstance(value, (int, np.integer)):
@@ -56,28 +77,29 @@ def stamp(dataset: xr.Dataset, params: Parameters, **attrs: Any) -> xr.Dataset:
     ``attrs`` are extra netCDF-safe attributes (str, int, float; bools are
     stored as 0/1).
     """
-    dataset.attrs.update(
-        {
-            "program": PROGRAM,
-            "program_version": __version__,
-            "doi": DOI,
-            "reference": REFERENCE,
-            "Conventions": "CF-1.8",
-        }
-    )
-    dataset.attrs.update(params.to_attrs())
-    preset = params.preset_name()
-    if preset is not None:
-        dataset.attrs["inferred_parameters"] = ", ".join(Parameters.INFERRED_FIELDS)
-        dataset.attrs["inferred_parameters_note"] = (
-            f"{preset}: these fields are inferred, not stated in section 4 of the paper "
-            "(see mdr_events.Parameters.paper)")
+    dataset.attrs.update(PROVENANCE)
+    dataset.attrs.update(_parameter_attrs(params))
     dataset.attrs.update({key: _netcdf_safe(value) for key, value in attrs.items()})
     for name, variable in dataset.variables.items():
-        missing = [key for key in ("units", "long_name") if key not in variable.attrs]
-        if missing:
+        held = variable.attrs
+        if "units" not in held or "long_name" not in held:
+            missing = [key for key in ("units", "long_name") if key not in held]
             raise ValueError(f"variable {name!r} lacks attribute(s) {missing}")
     return dataset
+
+
+@kept(PARAMETER_ATTRS_KEPT)
+def _parameter_attrs(params: Parameters) -> dict[str, Any]:
+    """What :func:`stamp` says of ``params``: :meth:`~mdr_events.Parameters.to_attrs` and, for a preset of the paper,
+    which fields are inferred; kept per value (:func:`~mdr_events.memo.kept`; read, never changed)."""
+    attrs = params.to_attrs()
+    preset = params.preset_name()
+    if preset is not None:
+        attrs["inferred_parameters"] = ", ".join(Parameters.INFERRED_FIELDS)
+        attrs["inferred_parameters_note"] = (
+            f"{preset}: these fields are inferred, not stated in section 4 of the paper "
+            "(see mdr_events.Parameters.paper)")
+    return attrs
 
 
 def assembled(data_vars: Mapping[str, tuple], coords: Mapping[str, tuple]) -> xr.Dataset:
@@ -125,17 +147,50 @@ def _variable(dims, values, attrs: dict) -> xr.Variable:
 
 def _coordinates(coords: Mapping[str, tuple]) -> tuple[dict[str, xr.Variable], dict[str, Any]]:
     """The coordinates' variables and indexes as ``xarray.Coordinates(coords)`` makes them, without its merge: a
-    coordinate of one dimension named after it gets the default index (``PandasIndex.from_variables``) and the
-    index's variable; any other is a plain variable."""
+    coordinate of one dimension named after it gets the default index (:func:`_default_index`) and the index's
+    variable; one of at most :data:`SHARED_INDEX_SIZE` numbers a ``pandas.Index.view`` of the last results' of the
+    same values (:func:`_shared_coordinate`): its own index and variable (a name or attribute set on one is the
+    other's no more), the read-only values shared; any other is a plain variable."""
     variables, indexes = {}, {}
     for name, (dims, values, attrs) in coords.items():
-        variable = _variable(dims, values, attrs)
-        if variable.dims == (name,):
-            index = PandasIndex.from_variables({name: variable}, options={})
-            variable = index.create_variables({name: variable})[name]
-            indexes[name] = index
+        if type(dims) in (str, tuple) and dims in (name, (name,)) and _numbers(values) and values.ndim == 1 and \
+                values.size <= SHARED_INDEX_SIZE:
+            shared = _shared_coordinate(name, values.dtype.str, values.tobytes()).index
+            view = shared.view()  # (its own pandas.Index, named apart; the values and their lookup table shared)
+            indexes[name] = PandasIndex(view, name, coord_dtype=shared.dtype, fastpath=True)
+            variable = xr.IndexVariable((name,), view, attrs, fastpath=True)
+        else:
+            variable = _variable(dims, values, attrs)
+            if variable.dims == (name,):
+                index = _default_index(name, variable)
+                variable = index.create_variables({name: variable})[name]
+                indexes[name] = index
         variables[name] = variable
     return variables, indexes
+
+
+def _numbers(values: Any) -> bool:
+    """Whether ``values`` is a NumPy array of real numbers."""
+    return type(values) is np.ndarray and values.dtype.kind in NUMERIC_KINDS
+
+
+def _default_index(name: str, variable: xr.Variable) -> PandasIndex:
+    """The index ``PandasIndex.from_variables`` makes of the coordinate ``name``: of a NumPy array of numbers, the
+    ``pandas.Index`` of its values named ``name`` wrapped at once (``fastpath``: what ``from_variables`` reaches
+    through two shallow copies to rename it, some 15 µs a coordinate); of anything else, by ``from_variables``
+    (text, whose conversion it decides)."""
+    values = variable.data
+    if _numbers(values) and values.ndim == 1:
+        return PandasIndex(pd.Index(values, name=name), name, coord_dtype=values.dtype, fastpath=True)
+    return PandasIndex.from_variables({name: variable}, options={})
+
+
+@functools.lru_cache(maxsize=SHARED_INDEXES)
+def _shared_coordinate(name: str, dtype: str, data: bytes) -> PandasIndex:
+    """The default index of the coordinate ``name`` of the numbers ``data`` (their bytes, of type ``dtype``, read-only),
+    made once for the last :data:`SHARED_INDEXES` coordinates (an event log's numbers, a run's angles). Never handed
+    out: a ``pandas.Index`` takes a new name in place, so that each result gets a view of it (:func:`_coordinates`)."""
+    return _default_index(name, xr.Variable((name,), np.frombuffer(data, dtype=np.dtype(dtype))))
 
 
 def parameters_of(dataset: xr.Dataset) -> Parameters:

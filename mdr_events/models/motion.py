@@ -19,6 +19,7 @@ import xarray as xr
 
 from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.limits import DEFAULT_LIMITS, Limits, ResourceLimitError, values_in
+from mdr_events.memo import kept
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
@@ -43,6 +44,9 @@ CASE_DIMENSIONS = (ANGLE_DIMENSION, CUSTOM_DIMENSION)
 #: The ``scenario`` attribute of a simulation of custom paths.
 CUSTOM_SCENARIO = "custom"
 
+#: How many of the scenarios' paths are kept (:func:`_scenario_path`): a figure's angles for a few contacts.
+PATHS_KEPT = 256
+
 #: Relative accuracy the slip criterion needs: x − X(ξ) against ū(a) must keep this many digits.
 SLIP_DIGITS = 1e-9
 
@@ -58,13 +62,27 @@ def check_path_extent(params: Parameters, path: Path, label: str, profile: Simul
     silently wrong result.
     """
     indenters.check_reach(params, path.max_depth, profile, label)
-    radius = float(indenters.branch_radius(params.d_max, params, params.dgamma0, profile))
-    reference = max(float(analytic.critical_shift(radius, params)), params.d_max)
-    limit = SLIP_DIGITS * reference / np.finfo(float).eps
+    reference, limit = _slip_reference(params, profile)
     extent = float(np.max(np.abs(path.waypoints[:, 0])))
     if extent > limit:
         raise ValueError(f"{label}: the path reaches x = {extent:.3g} m; allowed: |x| <= {limit:.3g} m, beyond "
                          f"which double precision cannot resolve the slip criterion (shift vs {reference:.3g} m)")
+
+
+@kept(PATHS_KEPT)
+def _path_parameters(params: Parameters, depth: float, speed: float) -> Parameters:
+    """``params`` with a path's deepest point as ``d_max`` (if it goes in) and its speed as ``v``, kept
+    (:func:`~mdr_events.memo.kept`: each run of the same paths makes the same)."""
+    return params.replace(d_max=depth, v=speed) if depth > 0.0 else params.replace(v=speed)
+
+
+@kept(PATHS_KEPT)
+def _slip_reference(params: Parameters, profile: SimulatedProfile) -> tuple[float, float]:
+    """The shift the slip criterion resolves, ``max(ū(a(d_max)), d_max)``, and the largest tangential extent that
+    keeps it resolved (:func:`check_path_extent`), kept per contact (:func:`~mdr_events.memo.kept`)."""
+    radius = float(indenters.branch_radius(params.d_max, params, params.dgamma0, profile))
+    reference = max(float(analytic.critical_shift(radius, params)), params.d_max)
+    return reference, SLIP_DIGITS * reference / np.finfo(float).eps
 
 
 def check_path_representable(params: Parameters, path: Path, label: str, profile: SimulatedProfile = None,
@@ -78,8 +96,7 @@ def check_path_representable(params: Parameters, path: Path, label: str, profile
             raise ValueError(f"{label}: {what} is {value:.3g} {unit}; allowed: at most {SCALE_MAX:.2g} {unit}, so that "
                              "products stay finite in double precision")
     try:
-        check_representable(params.replace(d_max=path.max_depth, v=path.speed) if path.max_depth > 0.0 else
-                             params.replace(v=path.speed), profile, friction)
+        check_representable(_path_parameters(params, path.max_depth, path.speed), profile, friction)
     except ValueError as error:
         raise ValueError(f"{label} (its deepest point as d_max, its speed as v): {error}") from None
 
@@ -139,25 +156,31 @@ def _custom_paths(scenario: Path | Sequence[Path] | Mapping[str, Path]) -> dict[
 
 def _scenario_cases(params: Parameters, name: str, angles: np.ndarray, profile: SimulatedProfile = None,
                     final_depth: float | None = None) -> Cases:
-    """One path of scenario ``name`` per angle, each checked by :func:`check_path_extent` (the paths end below the
-    jump-off of ``profile``'s ``Δγ1`` branch)."""
-    paths = []
-    for angle in angles:
-        label = f"alpha={float(angle)!r} (degrees) in scenario {name}"
-        try:  # (an angle of 1e-300° makes waypoints 1e298 m apart: the path refuses them, the angle is named)
-            if name == "A":
-                path = Path.scenario_A(float(angle), params, profile=profile)
-            elif name == "B":
-                path = Path.scenario_B(float(angle), params, profile=profile)
-            else:
-                path = Path.scenario_B_indentation(float(angle), params, final_depth, profile=profile)
-        except ValueError as error:
-            if str(error).startswith("alpha="):  # (the path names the angle itself)
-                raise
-            raise ValueError(f"{label}: {error}") from None
-        check_path_extent(params, path, label, profile)
-        paths.append(path)
+    """One path of scenario ``name`` per angle (:func:`_scenario_path`), labelled by the angles."""
+    paths = [_scenario_path(name, float(angle), params, profile, final_depth) for angle in angles]
     return Cases(paths, ANGLE_DIMENSION, np.asarray(angles, dtype=float))
+
+
+@kept(PATHS_KEPT)
+def _scenario_path(name: str, angle: float, params: Parameters, profile: SimulatedProfile,
+                   final_depth: float | None) -> Path:
+    """The path of scenario ``name`` at ``angle``, checked by :func:`check_path_extent` (it ends below the jump-off
+    of ``profile``'s ``Δγ1`` branch); kept for the last :data:`PATHS_KEPT` (:func:`~mdr_events.memo.kept`: a path
+    is immutable, and a run's set-up builds the same ones again, some 60 µs each)."""
+    label = f"alpha={angle!r} (degrees) in scenario {name}"
+    try:  # (an angle of 1e-300° makes waypoints 1e298 m apart: the path refuses them, the angle is named)
+        if name == "A":
+            path = Path.scenario_A(angle, params, profile=profile)
+        elif name == "B":
+            path = Path.scenario_B(angle, params, profile=profile)
+        else:
+            path = Path.scenario_B_indentation(angle, params, final_depth, profile=profile)
+    except ValueError as error:
+        if str(error).startswith("alpha="):  # (the path names the angle itself)
+            raise
+        raise ValueError(f"{label}: {error}") from None
+    check_path_extent(params, path, label, profile)
+    return path
 
 
 def simulation_cases(params: Parameters, scenario, alpha, profile: SimulatedProfile = None) -> Cases:
@@ -218,13 +241,18 @@ def angles_within(limits: Limits) -> Iterator[None]:
 
 def _angles(alpha) -> tuple[float, ...]:
     """The angles of a scenario: one or a 1-D list, distinct, each in [0, 90] degrees; counted before they are read
-    (round twenty-four: a million angles took 54 MB and 0.8 s when the Scenario was made, before any limit)."""
+    (round twenty-four: a million angles took 54 MB and 0.8 s when the Scenario was made, before any limit), then
+    :func:`_plain_angles` as they are; anything else, or what that refuses, read and named by
+    :func:`~mdr_events.validation.validate_alpha`."""
     count, most = values_in(alpha), _ANGLES_MAX.get()
     if not count <= most:
         raise ResourceLimitError(
             f"alpha of {count} angles is not allowed in a Scenario; allowed: at most {most:.3g} (a run within "
             f"Limits.samples = {most * TIMES_PER_CASE_MIN:.3g} output times, {TIMES_PER_CASE_MIN} at least per "
             "case); more by name with larger limits: simulate(contact, 'A', alpha=..., limits=Limits(samples=...))")
+    plain = _plain_angles(alpha)
+    if plain is not None:
+        return plain
     angles = np.atleast_1d(validate_alpha(alpha))
     if angles.ndim != 1 or angles.size == 0:
         raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: one angle or a 1-D list")
@@ -233,6 +261,17 @@ def _angles(alpha) -> tuple[float, ...]:
         raise ValueError(f"alpha={shown(alpha)} repeats {float(values[counts > 1][0])!r}; allowed: distinct "
                          "angles (each labels one case)")
     return tuple(float(angle) for angle in angles)
+
+
+def _plain_angles(alpha) -> tuple[float, ...] | None:
+    """The angles of a Python float or a non-empty list or tuple of them, distinct and each in [0, 90], as they are
+    (what :func:`_angles` reads of them through NumPy, without its arrays: some 15 µs a run); ``None`` for anything
+    else, which :func:`_angles` reads and, if it must, refuses by name."""
+    values = (alpha,) if type(alpha) is float else tuple(alpha) if type(alpha) in (list, tuple) else ()
+    if values and all(type(value) is float and 0.0 <= value <= 90.0 for value in values) and \
+            len(set(values)) == len(values):
+        return values
+    return None
 
 
 @dataclass(frozen=True)

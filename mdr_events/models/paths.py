@@ -17,6 +17,7 @@ branch, so that the contact certainly comes apart before the path ends.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -64,6 +65,12 @@ def _check_angle(alpha: float) -> float:
         raise ValueError(f"alpha={alpha!r} (degrees) is not allowed: its tangent underflows to 0 in double precision; "
                          "allowed: 0, or an angle whose path stays finite (see the path's extent limit)")
     return angle
+
+
+def _read_only(array: np.ndarray) -> np.ndarray:
+    """``array``, made read-only (what a path keeps and hands out)."""
+    array.setflags(write=False)
+    return array
 
 
 #: The shortest segment a path may have, as a share of its longest.
@@ -276,17 +283,19 @@ class Path:
                    angle)
 
     # ------------------------------------------------------------------
-    @property
+    # (a path is immutable: what it is asked again and again, by a run's set-up, its solve and its sampling, is
+    # computed once and kept on it, its arrays read-only)
+    @functools.cached_property
     def segment_lengths(self) -> np.ndarray:
-        """The length of each segment (m), one fewer than the waypoints."""
-        return np.hypot(*np.diff(self.waypoints, axis=0).T)
+        """The length of each segment (m), one fewer than the waypoints (read-only)."""
+        return _read_only(np.hypot(*np.diff(self.waypoints, axis=0).T))
 
-    @property
+    @functools.cached_property
     def corner_times(self) -> np.ndarray:
-        """Times at the waypoints (s), starting at 0."""
-        return np.concatenate([[0.0], np.cumsum(self.segment_lengths) / self.speed])
+        """Times at the waypoints (s), starting at 0 (read-only)."""
+        return _read_only(np.concatenate([[0.0], np.cumsum(self.segment_lengths) / self.speed]))
 
-    @property
+    @functools.cached_property
     def duration(self) -> float:
         """The time from the first waypoint to the last at :attr:`speed` (s)."""
         return float(self.corner_times[-1])
@@ -333,8 +342,13 @@ class Path:
         numpy.ndarray
             Entry times in s from the path's start, increasing; empty if the
             path never enters the elastomer. The first is
-            :meth:`first_contact_time`.
+            :meth:`first_contact_time`. Read-only (kept on the path).
         """
+        return self._entries
+
+    @functools.cached_property
+    def _entries(self) -> np.ndarray:
+        """:meth:`entry_times`, computed once."""
         depths = self.waypoints[:, 1]
         corners = self.corner_times
         entries: list[float] = []
@@ -354,7 +368,7 @@ class Path:
                     continue  # ends inside, or at the surface with the next segment going in
             if inside and end <= 0.0:  # leaves the elastomer on this segment
                 inside = False
-        return np.array(entries, dtype=float)
+        return _read_only(np.array(entries, dtype=float))
 
     def first_contact_time(self) -> float:
         """The first time at which the indenter is in the elastomer or enters it (``d >= 0``, moving in).

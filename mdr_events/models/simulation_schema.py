@@ -75,6 +75,15 @@ def _extrema_variables() -> dict[str, tuple[str, str]]:
 #: value 0 after a pull-off counts, at the end of the run): name -> (units, long_name).
 EXTREMA_VARIABLES: dict[str, tuple[str, str]] = _extrema_variables()
 
+#: Each variable's attributes, built once (a variable copies what it is given): name -> {"units", "long_name"}.
+VARIABLE_ATTRS = {name: {"units": units, "long_name": long_name} for name, (units, long_name) in
+                  {**SIMULATION_VARIABLES, **EVENT_VARIABLES, **PATH_VARIABLES, **EXTREMA_VARIABLES}.items()}
+#: The attributes of the coordinates: the angles, a custom path's label, the time and the event's number.
+ANGLE_ATTRS = {"units": "degree", "long_name": "path angle to the surface"}
+LABEL_ATTRS = {"units": "1", "long_name": "label of the custom path"}
+TIME_ATTRS = {"units": "s", "long_name": "time from first contact"}
+EVENT_NUMBER_ATTRS = {"units": "1", "long_name": "event number"}
+
 register_schema(SIMULATION_CONTENT, {name: (CASE_DIMENSIONS, "time") for name in SIMULATION_VARIABLES})
 register_schema(SIMULATION_CONTENT, {**{name: (CASE_DIMENSIONS, "event") for name in EVENT_VARIABLES},
                                      **{name: (CASE_DIMENSIONS,) for name in EXTREMA_VARIABLES}},
@@ -143,9 +152,8 @@ def _event_parts(events: list[list[tuple]], dimension: str) -> tuple[dict, dict]
             kinds[i, j], directions[i, j] = kind, direction
     values = {"event_time": table["time"], "event_kind": kinds.astype(str), "event_depth": table["depth"],
               "event_radius": table["radius"], "event_x": table["x"], "event_direction": directions}
-    return ({name: ((dimension, "event"), values[name], {"units": units, "long_name": long_name})
-             for name, (units, long_name) in EVENT_VARIABLES.items()},
-            {"event": ("event", np.arange(rows), {"units": "1", "long_name": "event number"})})
+    return ({name: ((dimension, "event"), values[name], VARIABLE_ATTRS[name]) for name in EVENT_VARIABLES},
+            {"event": ("event", np.arange(rows), EVENT_NUMBER_ATTRS)})
 
 
 def extrema_dataset(extrema: list[dict[str, float]], dimension: str = ANGLE_DIMENSION) -> xr.Dataset:
@@ -156,9 +164,8 @@ def extrema_dataset(extrema: list[dict[str, float]], dimension: str = ANGLE_DIME
 
 def _extrema_parts(extrema: list[dict[str, float]], dimension: str) -> dict:
     """The variables of :func:`extrema_dataset`, as ``xarray.Dataset`` takes them."""
-    return {name: ((dimension,), np.array([case[name] for case in extrema], dtype=float),
-                   {"units": units, "long_name": long_name})
-            for name, (units, long_name) in EXTREMA_VARIABLES.items()}
+    return {name: ((dimension,), np.array([case[name] for case in extrema], dtype=float), VARIABLE_ATTRS[name])
+            for name in EXTREMA_VARIABLES}
 
 
 def simulation_dataset(
@@ -221,29 +228,27 @@ def _simulation_parts(cases: Cases, time: np.ndarray, values: dict[str, np.ndarr
     dimension = cases.dimension
     radius = values["contact_radius"]
     area = np.pi * radius**2
-    with np.errstate(invalid="ignore", divide="ignore"):
-        derived = {
-            "contact_area": area,
-            "mean_pressure": np.where(area > 0, values["normal_force"] / area, np.nan),
-            "mean_shear_stress": np.where(area > 0, values["tangential_force"] / area, np.nan),
-        }
+    in_contact = area > 0  # (the means where there is an area; nan elsewhere, without dividing there)
+    derived = {
+        "contact_area": area,
+        "mean_pressure": np.divide(values["normal_force"], area, out=np.full_like(area, np.nan), where=in_contact),
+        "mean_shear_stress": np.divide(values["tangential_force"], area, out=np.full_like(area, np.nan),
+                                       where=in_contact),
+    }
     data = {}
-    for name, (units, long_name) in SIMULATION_VARIABLES.items():
+    for name in SIMULATION_VARIABLES:
         array = derived[name] if name in derived else values[name]
-        data[name] = ((dimension, "time"), np.asarray(array, dtype=float), {"units": units, "long_name": long_name})
+        data[name] = ((dimension, "time"), np.asarray(array, dtype=float), VARIABLE_ATTRS[name])
     if cases.custom:
         described = {"path_waypoints": np.array([path.describe() for path in cases.paths], dtype=str),
                      "path_speed": np.array([path.speed for path in cases.paths], dtype=float)}
-        for name, (units, long_name) in PATH_VARIABLES.items():
-            data[name] = ((dimension,), described[name], {"units": units, "long_name": long_name})
+        for name in PATH_VARIABLES:
+            data[name] = ((dimension,), described[name], VARIABLE_ATTRS[name])
         attrs["note"] = "custom paths: each case's speed path_speed replaces param_v"
-        label = {"units": "1", "long_name": "label of the custom path"}
+        label = LABEL_ATTRS
         case_coordinate = np.asarray(cases.labels, dtype=str)
     else:
-        label = {"units": "degree", "long_name": "path angle to the surface"}
+        label = ANGLE_ATTRS
         case_coordinate = np.asarray(cases.labels, dtype=float)
-    coords = {
-        dimension: (dimension, case_coordinate, label),
-        "time": ("time", np.asarray(time, dtype=float), {"units": "s", "long_name": "time from first contact"}),
-    }
+    coords = {dimension: (dimension, case_coordinate, label), "time": ("time", np.asarray(time, dtype=float), TIME_ATTRS)}
     return data, coords

@@ -15,6 +15,7 @@ import warnings
 from typing import Callable, NamedTuple
 
 from mdr_events.contact.friction import TAU0, FrictionLaw
+from mdr_events.memo import kept
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import Profile
 from mdr_events.theory import analytic, mindlin
@@ -22,8 +23,10 @@ from mdr_events.theory.branches import branch_radius, jump_off
 from mdr_events.theory.kinds import theory_of
 from mdr_events.validation import SCALE_MAX, SCALE_MIN
 
-__all__ = ["SCALE_MAX", "SCALE_MIN", "Scale", "run_scales", "check_representable"]
+__all__ = ["SCALE_MAX", "SCALE_MIN", "Scale", "run_scales", "check_representable", "SCALES_KEPT"]
 
+#: How many contacts :func:`check_representable` keeps as passed (those of a sweep's chunk, of a fit's last steps).
+SCALES_KEPT = 64
 
 
 class Scale(NamedTuple):
@@ -108,6 +111,14 @@ def check_representable(params: Parameters, profile: Profile | None = None, fric
         Naming the first scale that overflows or lies outside ``[SCALE_MIN, SCALE_MAX]`` (0 is fine), its value,
         the parameters and indenter it follows from, and the bound.
     """
+    _check_representable(params, profile, friction)
+
+
+@kept(SCALES_KEPT)
+def _check_representable(params: Parameters, profile: Profile | None, friction: FrictionLaw) -> None:
+    """:func:`check_representable`, kept for the last :data:`SCALES_KEPT` contacts it passed
+    (:func:`~mdr_events.memo.kept`: a run's set-up checks its contact once or twice, a benchmark's or a study's
+    runs the same contact again; some 30 µs a time). A refusal is never kept: it is raised again, by name."""
     for scale in run_scales(params, profile, friction):
         magnitude = abs(scale.value)
         if scale.failure or not math.isfinite(magnitude) or (magnitude != 0.0 and

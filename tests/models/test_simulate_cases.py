@@ -415,12 +415,42 @@ def test_the_assembled_dataset_is_the_one_xarray_merges(params, paths, method, m
     assert list(fast.variables) == list(merged.variables) and list(fast.dims) == list(merged.dims)
     assert set(fast.coords) == set(merged.coords) and list(fast.xindexes) == list(merged.xindexes)
     assert all(fast.xindexes[name].equals(merged.xindexes[name]) for name in merged.xindexes)
+    for name, index in merged.xindexes.items():  # (the index made at once is from_variables': its pandas.Index too)
+        made = fast.xindexes[name]
+        assert (type(made), made.dim, made.coord_dtype) == (type(index), index.dim, index.coord_dtype)
+        assert (type(made.index), made.index.dtype, made.index.name) == \
+            (type(index.index), index.index.dtype, index.index.name)
+    assert all(fast[name].encoding == merged[name].encoding for name in merged.variables)
     assert [type(variable) for variable in fast.variables.values()] == \
         [type(variable) for variable in merged.variables.values()]
     assert fast.attrs == merged.attrs and list(fast.attrs) == list(merged.attrs)
     write_netcdf(fast, tmp_path / "fast.nc")
     write_netcdf(merged, tmp_path / "merged.nc")
     assert (tmp_path / "fast.nc").read_bytes() == (tmp_path / "merged.nc").read_bytes()
+
+
+def test_results_sharing_a_coordinate_index_keep_their_own_coordinates(params):
+    """Two runs of the same angles share the angles' and the events' values (made once, read-only) and nothing
+    else: each result's index and coordinate its own, whose name, attributes and values a change of the other
+    leaves, nor does a later run of the same angles see it."""
+    first, second = (run(params, "B", "continuum", alpha=[20.0, 30.0]) for _ in range(2))
+    for dim in ("alpha", "event"):
+        assert first.indexes[dim] is not second.indexes[dim] and first[dim].variable is not second[dim].variable
+        assert np.shares_memory(first.indexes[dim].values, second.indexes[dim].values)
+    names = list(second["event_kind"].to_dataframe().index.names)
+    first.indexes["alpha"].name = "renamed"
+    first.indexes["event"].rename("q", inplace=True)
+    assert first.indexes["alpha"].name == "renamed"  # (the rename took, on the first result alone)
+    for other in (second, run(params, "B", "continuum", alpha=[20.0, 30.0])):
+        assert [other.indexes[dim].name for dim in ("alpha", "event")] == ["alpha", "event"]
+        assert list(other["event_kind"].to_dataframe().index.names) == names
+    first["alpha"].attrs["units"] = "rad"
+    first.coords["event"].attrs.clear()
+    assert second["alpha"].attrs == {"units": "degree", "long_name": "path angle to the surface"}
+    assert second["event"].attrs == {"units": "1", "long_name": "event number"}
+    renamed = first.assign_coords(alpha=[0.1, 0.2])
+    assert list(second["alpha"].values) == [20.0, 30.0] and list(renamed["alpha"].values) == [0.1, 0.2]
+    assert second.sel(alpha=30.0)["event_kind"].equals(second.isel(alpha=1)["event_kind"])
 
 
 def test_an_assembled_dataset_refuses_what_a_merge_would():

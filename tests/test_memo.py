@@ -1,0 +1,113 @@
+"""``mdr_events.memo``: results kept by the exact values of frozen arguments, and where ``simulate``'s set-up keeps
+them (the check of the scales, the scenarios' paths; issue 28)."""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.memo import exact_key, kept
+from mdr_events.models import motion
+from mdr_events.theory import scales
+
+PAPER = me.Parameters.paper()
+
+
+def test_an_exact_key_tells_apart_what_equality_does_not():
+    """-0.0 and 0.0, 1 and 1.0, a frozen dataclass and another of equal fields but another type: each its own key;
+    equal values of the same kinds one key."""
+    assert exact_key((0.0,)) != exact_key((-0.0,))
+    assert exact_key((1,)) != exact_key((1.0,))
+    assert exact_key((True,)) != exact_key((1.0,)) and exact_key((True,)) != exact_key((1,))
+    assert exact_key(("0.0",)) != exact_key((0.0,)) and exact_key(("-0.0",)) != exact_key((-0.0,))
+    assert exact_key(("1.0",)) != exact_key((1.0,)) and exact_key((None,)) != exact_key(("None",))
+    assert exact_key((PAPER.replace(tau0=0.0),)) != exact_key((PAPER.replace(tau0=-0.0),))
+    assert exact_key((PAPER, None, "B", (20.0, 30.0))) == exact_key((me.Parameters.paper(), None, "B", (20.0, 30.0)))
+    assert exact_key((me.PowerLaw(1e3, 2.0),)) != exact_key((me.FlatPunch(1e3),))
+
+
+def test_an_exact_key_has_no_key_for_what_may_change():
+    """An array, a list or a frozen dataclass holding an array has no key: computed each time. A table holds its
+    points as tuples: keyed by every value."""
+
+    @dataclasses.dataclass(frozen=True)
+    class Holder:
+        values: np.ndarray
+
+    for values in [(np.zeros(3),), ([1.0],), (PAPER, Holder(np.zeros(3)))]:
+        assert exact_key(values) is None
+    r = np.linspace(0.0, 4e-3, 41)
+    table, other = me.TabulatedProfile(r, r**2 / 0.06), me.TabulatedProfile(r, r**2 / 0.0600000001)
+    assert exact_key((table,)) == exact_key((me.TabulatedProfile(r, r**2 / 0.06),)) != exact_key((other,))
+
+
+def test_a_tables_key_is_made_once_whatever_its_points(monkeypatch):
+    """A table's key is a digest of its columns made once: a key of 10 000 points reads as few values as one of 3
+    (counted: the keys of its parts), the second key digests nothing, and a change of one bit of one point (a zero's
+    sign) is another key."""
+    from mdr_events import memo
+
+    parts, digests = [], []
+    exact, blake2b = memo._exact, hashlib.blake2b
+    monkeypatch.setattr(memo, "_exact", lambda value: parts.append(value) or exact(value))
+    monkeypatch.setattr(hashlib, "blake2b", lambda *args, **kw: digests.append(args) or blake2b(*args, **kw))
+    counts = []
+    for points in (3, 10_000):
+        r = np.linspace(0.0, 4e-3, points)
+        table = me.TabulatedProfile(r, r**2 / 0.06)
+        parts.clear()
+        assert exact_key((table,)) == exact_key((table,)) == exact_key((me.TabulatedProfile(r, r**2 / 0.06),))
+        counts.append(len(parts))
+    assert counts[0] == counts[1] and len(digests) == 4  # (two tables of each size, each digested once)
+    flipped = me.TabulatedProfile((0.0, 1e-3, 2e-3), (0.0, 1e-6, 4e-6))
+    assert exact_key((flipped,)) != exact_key((me.TabulatedProfile((-0.0, 1e-3, 2e-3), (0.0, 1e-6, 4e-6)),))
+
+
+def test_kept_results_are_computed_once_and_errors_never():
+    """A call of the same exact values computes once; a refusal is computed, and raised, every time; a call without
+    a key every time."""
+    calls = []
+
+    @kept(2)
+    def square(value):
+        calls.append(value)
+        if value < 0:
+            raise ValueError(f"value={value!r} is not allowed")
+        return value * value
+
+    assert square(3.0) == square(3.0) == 9.0 and calls == [3.0]
+    assert square(3) == 9 and type(square(3)) is int and calls == [3.0, 3]  # (an int is not the float)
+    for _ in range(2):
+        with pytest.raises(ValueError, match=r"value=-1\.0 is not allowed"):
+            square(-1.0)
+    assert calls == [3.0, 3, -1.0, -1.0]
+    assert square(np.float64(2.0)) == 4.0 and square(np.float64(2.0)) == 4.0 and calls[-2:] == [2.0, 2.0]
+
+
+def test_a_kept_scenario_path_is_the_one_built(monkeypatch):
+    """The paths ``simulate`` keeps are those it builds: the same waypoints, speed and angle bit for bit as the
+    function unkept, for each scenario; a refused angle is named every time."""
+    for name in ("A", "B", "B+"):
+        kept_path = motion._scenario_path(name, 20.0, PAPER, None, None)
+        built = motion._scenario_path.__wrapped__(name, 20.0, PAPER, None, None)
+        assert kept_path is motion._scenario_path(name, 20.0, PAPER, None, None)
+        assert kept_path.waypoints.tobytes() == built.waypoints.tobytes()
+        assert (kept_path.speed, kept_path.alpha) == (built.speed, built.alpha)
+    for _ in range(2):
+        with pytest.raises(ValueError, match="alpha=0.0 in scenario A"):
+            me.simulate(PAPER, "A", alpha=[0.0], method="continuum")
+
+
+def test_a_refused_scale_is_refused_every_time():
+    """check_representable keeps what it passed, never what it refused: the same message twice."""
+    huge = PAPER.replace(E=1e308)
+    messages = []
+    for _ in range(2):
+        with pytest.raises(ValueError, match="E\\* is 1.33e\\+308 Pa") as error:
+            scales.check_representable(huge)
+        messages.append(str(error.value))
+    assert messages[0] == messages[1]
