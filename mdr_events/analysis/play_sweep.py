@@ -130,8 +130,7 @@ def play_continuum_quantities(model: ModelJob, path: Path, method: Continuum, li
     """
     if times is not None:
         limits.check(f"the run's history of {np.size(times)} samples", samples=np.size(times))
-    raw = run_play_springs(model.kernel, [path], method.samples if method.t is None else method.t, method.tolerances,
-                           limits)
+    raw = run_play_springs(model.kernel, [path], method.output_times(1, limits), method.tolerances, limits)
     solution, events, extrema = raw["solutions"][0], raw["events"][0], raw["extrema"][0]
     play = _springs(model, path, solution)
     start = path.first_contact_time()
