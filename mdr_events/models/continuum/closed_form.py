@@ -120,11 +120,19 @@ class Primitive(NamedTuple):
     def __call__(self, a: np.ndarray) -> np.ndarray:
         """``P`` at the radii ``a`` (m), vectorised."""
         a = np.asarray(a, dtype=float)
-        depth, integral = self.branch.depths(a), self.branch.integrals(a)
+        return self.combine(a, self.branch.depths(a), self.branch.integrals(a),
+                            self.attach.integrals(a) if self.C0 else None)
+
+    def combine(self, a: np.ndarray, depth: np.ndarray, integral: np.ndarray,
+                attached: np.ndarray | None) -> np.ndarray:
+        """``P`` at the radii ``a`` (m) from the branch's depths ``d(a)`` and integrals ``∫d`` read there, and the
+        integrals ``∫d₀`` on the branch of attachment (read only where ``C0`` is not 0, else ``None``): the terms
+        summed in one order, whoever read the branches (:meth:`__call__`, or all spans at once in
+        :mod:`~mdr_events.models.continuum.span_forces`)."""
         value = a * (self.A0 + 0.5 * self.A1 * a) + self.B0 * depth + self.B1 * (a * depth - integral)
         value = value + self.C * integral
         if self.C0:
-            value = value + self.C0 * self.attach.integrals(a)
+            value = value + self.C0 * attached
         return value
 
     def at(self, a: float) -> float:

@@ -107,10 +107,6 @@ def _closed_values(forces: list[ClosedForce], points: list[np.ndarray]) -> list[
         found = iter(cut(attach.integrals(np.concatenate(attached)), [len(a) for a in attached]))
     out = []
     for force, a, depth, integral in zip(forces, radii, depths, integrals):
-        p = force.primitive
-        value = a * (p.A0 + 0.5 * p.A1 * a) + p.B0 * depth + p.B1 * (a * depth - integral)
-        value = value + p.C * integral
-        if p.C0:
-            value = value + p.C0 * next(found)
+        value = force.primitive.combine(a, depth, integral, next(found) if force.primitive.C0 else None)
         out.append(force.force + force.G2 * (value - force.origin))
     return out
