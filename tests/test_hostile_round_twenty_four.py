@@ -326,38 +326,52 @@ def test_a_rate_fit_counts_its_samples_before_reading_them():
                                                                limits=SMALL)) < COUNTED_PEAK_BYTES
 
 
-# --- W8 (open): a cone on a layer under tau0+coulomb in the continuum does not finish: PowerLaw(0.2, 1) on h = 2 mm,
-# mu = 0.5, scenario A at 45° or 89.5° (300 samples) ran over 5 min of CPU in the play springs' golden-section search
-# (play_springs._golden, each spring's own times: ~15 s a spring), where the paraboloid, a power law of n = 3, the
-# cone under Coulomb's law alone or the cone on a thick layer take ~2 s; PowerLaw(0.5, 1.01) likewise, in A, B and B+. The run would finish in the paraboloid's
-# time within a factor (the area of the helper of Coulomb on a layer; more than this round's time) ---------------
+# --- W8 (open in part): a cone on a layer under tau0+coulomb in the continuum ran for minutes: PowerLaw(0.2, 1) on
+# h = 2 mm, mu = 0.5, scenario A at 45° or 89.5° (300 samples) spent over 5 min of CPU in the play springs' golden-section
+# search (play_springs._golden, one section per flagged sample, 80 steps each), where the paraboloid, a power law of
+# n = 3, the cone under Coulomb's law alone or the cone on a thick layer take ~2 s; PowerLaw(0.5, 1.01) likewise, in A,
+# B and B+. Now one batched section per convex stretch (tests/models/test_play_cone_on_layer.py: 30 samples within 10×
+# the paraboloid); at 300 samples the cone still takes ~18× the paraboloid (each golden step inverts the layer's
+# radius at every point), so this stays a strict xfail until it runs within CONE_RUN_CPU_RATIO ----------------------
 
-#: The CPU time (s) the cone's run may take: 15 times the paraboloid's ~2 s on the same layer and law.
-CONE_RUN_CPU_SECONDS = 30.0
+#: The cone's run may take this many times the paraboloid's CPU time on the same layer, law and samples (a ratio, so
+#: the machine's speed and load cancel; measured 18× after the first fix, over 100× before).
+CONE_RUN_CPU_RATIO = 10.0
+#: The runs' output samples (the cost grows with them: the sections are per sample).
+CONE_RUN_SAMPLES = 300
 
 
 class _OverBudget(Exception):
     """The run took more CPU time than allowed."""
 
 
-@pytest.mark.slow  # (it spends CONE_RUN_CPU_SECONDS of CPU while open)
-@pytest.mark.xfail(strict=True, raises=_OverBudget, reason="round twenty-four W8: a cone on a layer under "
-                   "tau0+coulomb in the continuum runs for minutes (play springs' golden-section search); open")
-def test_a_cone_on_a_layer_under_both_laws_finishes():
+def _cpu_limited_run(indenter, budget: float | None):
     import dataclasses
     import signal
+    import time
 
+    kw = {} if indenter is None else {"indenter": indenter}
     contact = dataclasses.replace(me.Contact.paper(), friction=me.FrictionLaw("tau0+coulomb", tau0=PAPER.tau0, mu=0.5),
-                                  indenter=me.PowerLaw(0.2, 1.0), layer=me.Layer(2e-3))
+                                  layer=me.Layer(2e-3), **kw)
 
     def over(signum, frame):
-        raise _OverBudget(f"over {CONE_RUN_CPU_SECONDS} s of CPU")
+        raise _OverBudget(f"over {budget} s of CPU")
 
     previous = signal.signal(signal.SIGPROF, over)
-    signal.setitimer(signal.ITIMER_PROF, CONE_RUN_CPU_SECONDS)
+    signal.setitimer(signal.ITIMER_PROF, budget or 0.0)
+    start = time.process_time()
     try:
-        ds = me.simulate(contact, "A", [45.0], "continuum", samples=300)
+        ds = me.simulate(contact, "A", [45.0], "continuum", samples=CONE_RUN_SAMPLES)
     finally:
         signal.setitimer(signal.ITIMER_PROF, 0.0)
         signal.signal(signal.SIGPROF, previous)
+    return ds, time.process_time() - start
+
+
+@pytest.mark.slow  # (the paraboloid's ~2 s, then up to CONE_RUN_CPU_RATIO times that while open)
+@pytest.mark.xfail(strict=True, raises=_OverBudget, reason="round twenty-four W8: a cone on a layer under "
+                   "tau0+coulomb in the continuum at 300 samples takes ~18x the paraboloid (golden sections); open")
+def test_a_cone_on_a_layer_under_both_laws_finishes():
+    _, paraboloid = _cpu_limited_run(None, None)
+    ds, _ = _cpu_limited_run(me.PowerLaw(0.2, 1.0), CONE_RUN_CPU_RATIO * paraboloid)
     assert _finite_in_contact(ds.normal_force.values)
