@@ -93,6 +93,21 @@ def recorded(law: str, monkeypatch) -> tuple[PlaySprings, list]:
     return made[0], brackets
 
 
+@pytest.fixture(scope="module")
+def route():
+    """``route(law)``: :func:`recorded` of ``law``, run once for the module (the tests read the route and its brackets,
+    a patch of theirs undone at their end; six runs of ~0.05 s of CPU each no longer repeated)."""
+    kept = {}
+
+    def of(law: str) -> tuple[PlaySprings, list]:
+        if law not in kept:
+            with pytest.MonkeyPatch.context() as patch:
+                kept[law] = recorded(law, patch)
+        return kept[law]
+
+    return of
+
+
 def parts(play: PlaySprings) -> list[tuple[float, float]]:
     """The path's segments along which every window is fixed but for ``x``: those at a constant depth in contact (the
     others, where the radius moves, none)."""
@@ -109,10 +124,10 @@ def parts(play: PlaySprings) -> list[tuple[float, float]]:
 
 
 @pytest.mark.parametrize("law", LAWS)
-def test_each_spring_reaches_its_cap_at_its_closed_form_time(law, monkeypatch):
+def test_each_spring_reaches_its_cap_at_its_closed_form_time(law, route):
     """Every spring whose closed-form reach lies inside a part is inside its window just before it and outside just
     after, on the route's own distances (``PlaySprings.outside``); those past ``high`` stay inside up to it."""
-    play, _ = recorded(law, monkeypatch)
+    play, _ = route(law)
     checked = 0
     for low, high in parts(play):
         xi = SPRINGS * play.radius(high)
@@ -131,10 +146,10 @@ def test_each_spring_reaches_its_cap_at_its_closed_form_time(law, monkeypatch):
 
 
 @pytest.mark.parametrize("law", LAWS)
-def test_the_closed_form_root_is_brent_s(law, monkeypatch):
+def test_the_closed_form_root_is_brent_s(law, route, monkeypatch):
     """Each event's search of the run whose bracket ends in a part: the closed form's root of the springs' largest or
     least distance is Brent's root of it, to the route's window about the root (``ROOT_ULPS``)."""
-    play, brackets = recorded(law, monkeypatch)
+    play, brackets = route(law)
     compared = 0
     for low, high, onset in brackets:
         if constant_part(play, low, high) is None:
@@ -183,10 +198,10 @@ def test_the_run_is_the_route_of_brent_s_root_at_every_output(law, adhesive, mot
 
 
 @pytest.mark.parametrize("law", LAWS)
-def test_the_force_is_monotone_where_the_windows_are_fixed(law, monkeypatch):
+def test_the_force_is_monotone_where_the_windows_are_fixed(law, route):
     """Along a part of fixed windows ``F_x`` moves with ``x`` or rests (what lets the extrema skip their refinement
     there): read densely, it never moves against ``x`` by more than its round-off."""
-    play, _ = recorded(law, monkeypatch)
+    play, _ = route(law)
     for low, high in parts(play):
         times = np.linspace(low, high, 65)[1:]
         force = play.tangential_force(times)
@@ -213,21 +228,21 @@ def test_a_full_slip_from_the_first_contact_is_found_on_the_compressed_nodes(mon
     assert play_run._Reading.COMPRESSED in asked and play_run._Reading.GUESS not in asked
 
 
-def test_the_reach_window_is_finite_at_time_zero(monkeypatch):
+def test_the_reach_window_is_finite_at_time_zero(route):
     """``reach_ulps`` at ``time = 0`` (whose ulp is the least subnormal, 5e-324) and just above it: a finite window, at
     most ``REACH_ULPS_CAP``, never narrower than at a later time (the same round-off over a smaller ulp)."""
-    play, _ = recorded("coulomb", monkeypatch)
+    play, _ = route("coulomb")
     low, high = parts(play)[0]
     windows = [reach_ulps(play, low, time) for time in (0.0, 5e-324, np.finfo(float).tiny, high)]
     assert all(REACH_ULPS <= window <= REACH_ULPS + REACH_ULPS_CAP for window in windows), windows
     assert windows == sorted(windows, reverse=True) and windows[0] == REACH_ULPS + REACH_ULPS_CAP
 
 
-def test_a_jump_inside_rules_the_force_s_monotony_out(monkeypatch):
+def test_a_jump_inside_rules_the_force_s_monotony_out(route, monkeypatch):
     """``play_run._monotone`` on a part of fixed windows is true, and false once the radius's history reports a jump
     inside the part or at its end (checked on its own, not on ``constant_part``'s word: here the springs' chain, made
     before the jump was added, does not know it)."""
-    play, _ = recorded("coulomb", monkeypatch)
+    play, _ = route("coulomb")
     low, high = parts(play)[0]
     assert play_run._monotone(play, np.array([low, high]))
     for time in (0.5 * (low + high), high):
