@@ -17,6 +17,9 @@ from mdr_events.app.cli import main
 #: the tables' last and their spacing of 1 % of it are untouched (measured: 2e-9 of the target below it). Each
 #: halving is one curve of the layer (~30 ms); 40, to a float's spacing, cost 0.5 s more a caller for nothing.
 DEPTH_HALVINGS = 24
+#: How far below its target the radius found may lie, relative: far inside the callers' 0.1 % margin and 1 % spacing,
+#: far above the 2e-8 the halvings reach (checked on each depth found: one curve more).
+RADIUS_SHARE = 1e-6
 
 
 def one_line_naming(call, named: str, errors=(ValueError, TypeError)) -> str:
@@ -49,4 +52,6 @@ def depth_reaching(contact, target: float, low: float, high: float) -> float:
         except ValueError:  # (beyond the tables)
             radius = math.inf
         low, high = (middle, high) if radius < target else (low, middle)
+    found = float(me.layer_normal_curve(contact, [low])["contact_radius"].sel(branch="dgamma0")[0])
+    assert (1.0 - RADIUS_SHARE) * target <= found < target, (low, found, target)
     return low
