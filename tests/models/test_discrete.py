@@ -463,42 +463,53 @@ def prepare(p, paths, dx, steps):
     return discrete._prepare(p, paths, dx, longest / steps, discrete.paraboloid_profile(p), TAU0, law_of(p))
 
 
-def test_running_sums_equal_a_full_re_sum_after_a_million_steps(paper):
+def test_running_sums_equal_a_full_re_sum_after_a_million_steps(paper, monkeypatch):
     """10⁶ steps of reciprocating sliding (200 strokes through full slip at both caps, springs detaching
     and attaching again): at the end F_N and F_x of the run equal the sums over the springs in contact
     (every spring's shift from the final state) to 1e-12, the shifts lie within ±ū, the springs at
-    a cap are the sliding ones, and the kernel's state is bounded by the springs, not the steps."""
+    a cap are the sliding ones, and the kernel's state is bounded by the springs, not the steps.
+
+    The run's own kernel call is watched (its arguments, its springs' final state): the million steps run once."""
+    stepped = {}
+
+    def watched(grid, x, d, time, last, last_entry, counts, sums, sliding, **options):
+        stepped.update(grid=grid, x=x, d=d, counts=counts, sums=sums, sliding=sliding)
+        options["springs"] = stepped["springs"] = spring_groups.SpringGroups(grid.weight_prefix)
+        stepped["last"] = run_case(grid, x, d, time, last, last_entry, counts, sums, sliding, **options)
+        return stepped["last"]
+
+    run_case = discrete._run_case
+    monkeypatch.setattr(discrete, "_run_case", watched)
     path = reciprocating_path(paper, 200)
     dt = (path.duration - path.first_contact_time()) / 1_000_000
     raw = run_discrete(paper, [path], LONG_DX, dt)
-    run = discrete._prepare(paper, [path], LONG_DX, dt, discrete.paraboloid_profile(paper), TAU0, law_of(paper))
-    springs = spring_groups.SpringGroups()
-    last, counts, sums, sliding = step_case(discrete._run_case, run, springs=springs)
+    run, springs, last = stepped["grid"], stepped["springs"], stepped["last"]
+    counts, sums, sliding = (stepped[key][:last + 1] for key in ("counts", "sums", "sliding"))
     assert last == 1_000_000 == raw["time"].size - 1
     m = int(counts[-1])
     assert m == raw["springs_in_contact"][0, -1] and 0 < sliding[-1] < m  # partial slip at the end
 
     p, dx = paper, LONG_DX
-    depth = float(run.d[-1, 0])
+    depth = float(stepped["d"][-1])
     g = discrete.paraboloid_profile(p)((np.arange(m) + 0.5) * dx)
     normal = raw["normal_force"][0]
     resummed = 2.0 * p.E_star * dx * math.fsum(depth - g)
     assert abs(normal[-1] - resummed) <= SUM_RTOL * np.abs(normal).max()
 
-    position = spring_groups.scaled(run.x[-1:, 0], run.grid.bits)[0]
+    position = spring_groups.scaled(stepped["x"][-1:], run.bits)[0]
     shifts = springs.shifts(position, m)
     assert len(shifts) == m
     tangential = raw["tangential_force"][0]
-    resummed = 2.0 * p.G_star * dx * math.fsum(run.grid.to_float(u) for u in shifts)
+    resummed = 2.0 * p.G_star * dx * math.fsum(run.to_float(u) for u in shifts)
     assert abs(tangential[-1] - resummed) <= SUM_RTOL * np.abs(tangential).max()
     assert 2.0 * p.G_star * dx * sums[-1] == tangential[-1]
 
-    cap = run.grid.caps_scaled[m]
+    cap = run.caps_scaled[m]
     assert all(-cap <= u <= cap for u in shifts)
     assert sum(abs(u) == cap for u in shifts) == sliding[-1] == round(raw["sliding_fraction"][0, -1] * m)
     assert len(set(shifts)) > 10  # springs that attached along the last stroke: many shifts
     entries = len(springs.parent) + len(springs.lows) + len(springs.highs)
-    assert entries <= 8 * run.grid.n_springs + spring_groups.SpringGroups.SLACK
+    assert entries <= 8 * run.n_springs + spring_groups.SpringGroups.SLACK
 
 
 REFERENCE_PATHS = {
