@@ -326,19 +326,19 @@ def test_a_rate_fit_counts_its_samples_before_reading_them():
                                                                limits=SMALL)) < COUNTED_PEAK_BYTES
 
 
-# --- W8 (open in part): a cone on a layer under tau0+coulomb in the continuum ran for minutes: PowerLaw(0.2, 1) on
+# --- W8: a cone on a layer under tau0+coulomb in the continuum ran for minutes: PowerLaw(0.2, 1) on
 # h = 2 mm, mu = 0.5, scenario A at 45° or 89.5° (300 samples) spent over 5 min of CPU in the play springs' golden-section
 # search (play_springs._golden, one section per flagged sample, 80 steps each), where the paraboloid, a power law of
 # n = 3, the cone under Coulomb's law alone or the cone on a thick layer take ~2 s; PowerLaw(0.5, 1.01) likewise, in A,
-# B and B+. Now one batched section per convex stretch, 45 steps (over 150 s -> ~5 s at 30 samples); still ~37x the
-# paraboloid's run with its tables already made (each golden step inverts the layer's radius at every point), so this
-# stays a strict xfail until the cone runs within CONE_RUN_CPU_RATIO of the paraboloid -------------------------------
+# B and B+. Now one batched section per convex stretch, 45 steps (over 150 s -> ~5 s at 30 samples, ~37x the
+# paraboloid's run with its tables already made: each golden step inverted the layer's radius at every point), and the
+# sections read ``ū(a(t))`` from a cubic spline of each stretch (play_springs.GOLDEN_TABLE_RTOL; ~0.7 s, ~5x) -----
 
 #: The cone's run may take this many times the paraboloid's CPU time on the same layer, law and samples, both with the
-#: layer's tables made (a ratio, so the machine's speed and load cancel; measured ~37x after the first fix, over 100x
-#: before).
+#: layer's tables made (a ratio, so the machine's speed and load cancel; measured ~5x with the stretches' splines,
+#: ~37x with an inversion each golden step, over 100x before).
 CONE_RUN_CPU_RATIO = 10.0
-#: The runs' output samples (the cost grows with them: the sections are per sample; 30 keep the open test near 6 s).
+#: The runs' output samples (the cost grows with them: the sections are per sample; 30 keep the test near 3 s).
 CONE_RUN_SAMPLES = 30
 
 
@@ -369,9 +369,7 @@ def _cpu_limited_run(indenter, budget: float | None):
     return ds, time.process_time() - start
 
 
-@pytest.mark.slow  # (the paraboloid's ~1.5 s twice, then up to CONE_RUN_CPU_RATIO times its second run while open)
-@pytest.mark.xfail(strict=True, raises=_OverBudget, reason="round twenty-four W8: a cone on a layer under "
-                   "tau0+coulomb in the continuum takes ~37x the paraboloid (golden sections); open")
+@pytest.mark.slow  # (the paraboloid's ~1.5 s twice, then up to CONE_RUN_CPU_RATIO times its second run)
 def test_a_cone_on_a_layer_under_both_laws_finishes():
     _cpu_limited_run(None, None)  # (the layer's tables and the relations made: the first run's cost, not the run's)
     _, paraboloid = _cpu_limited_run(None, None)

@@ -14,10 +14,12 @@ import dataclasses
 
 import numpy as np
 import pytest
+from scipy.interpolate import CubicSpline
 
 import mdr_events as me
-from mdr_events.models.continuum import solve_path
-from mdr_events.models.continuum.play_springs import PlaySprings, SpanHistory, spring_line
+from mdr_events.models.continuum import play_run, solve_path
+from mdr_events.models.continuum.play_springs import (GOLDEN_TABLE_POINTS, GOLDEN_TABLE_RTOL, PlaySprings,
+                                                       SpanHistory, spring_line)
 
 #: A power law with ``n < 1`` (``g = c x^0.5``): ``a ∝ d²``, so the cap ``ū = K a`` is convex along a straight segment
 #: and the lower window ``x − c`` of a spring can have its maximum inside a segment (the route's golden sections).
@@ -112,3 +114,60 @@ def test_a_spring_matching_no_attachment_is_an_internal_error():
     with pytest.raises(RuntimeError) as caught:
         play.anchors(np.array([0.1 * outside, outside]), t)
     assert "match no attachment" in str(caught.value) and repr(outside) in str(caught.value)
+
+
+@pytest.fixture(scope="module")
+def cone_on_a_layer_play() -> tuple[PlaySprings, me.Path]:
+    """The springs of issue 32's W8 run, as the run makes them: a cone on a 2 mm layer under ``τ0`` + Coulomb with
+    the paper's adhesion, scenario A at 45° (its ``ū(a(t))`` is convex on a stretch: the golden sections read it from
+    a spline)."""
+    made = []
+
+    class Kept(PlaySprings):
+        def __post_init__(self) -> None:
+            super().__post_init__()
+            made.append(self)
+
+    law = me.FrictionLaw("tau0+coulomb", tau0=me.Parameters.paper().tau0, mu=0.5)
+    contact = dataclasses.replace(me.Contact.paper(), friction=law, layer=me.Layer(2e-3), indenter=me.PowerLaw(0.2, 1.0))
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(play_run, "PlaySprings", Kept)
+        me.simulate(contact, "A", [45.0], "continuum", samples=5)
+    (play,) = made
+    return play, play.path
+
+
+def test_the_golden_sections_spline_is_the_cap_within_its_tolerance_between_its_nodes(cone_on_a_layer_play):
+    """W8: the spline each convex stretch's golden sections read ``ū(a(t))`` from is checked at its grid's midpoints
+    only; at points anywhere on the stretch it lies within ``GOLDEN_TABLE_RTOL`` of the largest ``ū`` too (the
+    midpoints are where a cubic spline's error peaks; a coarser grid, which fails the check, is off by more)."""
+    play, _ = cone_on_a_layer_play
+    assert play.chain.convex.size, "no convex stretch: the test does not reach the splines"
+    tables = play._convex_tables()
+    assert all(table is not play._exact_shift for table in tables), "no grid reached the tolerance"
+    for (lo, hi), table in zip(play.chain.convex, tables[::2]):
+        times = np.random.default_rng(7).uniform(lo, hi, 2000)
+        exact = play._exact_shift(times)
+        scale = np.max(np.abs(play._exact_shift(np.linspace(lo, hi, 65))))
+        assert np.max(np.abs(table(times) - exact)) <= GOLDEN_TABLE_RTOL * scale
+        coarse = CubicSpline(np.linspace(lo, hi, GOLDEN_TABLE_POINTS[0]),
+                             play._exact_shift(np.linspace(lo, hi, GOLDEN_TABLE_POINTS[0])))
+        assert np.max(np.abs(coarse(times) - exact)) > GOLDEN_TABLE_RTOL * scale
+
+
+@pytest.mark.parametrize("share", [0.999, 1.5], ids=["end of loading", "coming back"])
+def test_the_golden_sections_on_the_spline_give_the_anchors_of_the_exact_cap(share):
+    """W8: with each golden step reading the stretch's spline (within ``ε = GOLDEN_TABLE_RTOL`` of the largest ``ū``)
+    the anchors are those of the sections reading ``ū(a(t))`` exactly, within ``2ε`` of it: a section's maximum of an
+    edge read within ``ε`` lies within ``2ε`` of the true one, and the clamp's value is read exactly at the time
+    found (on :func:`convex_play`, whose anchors the sections' extremes set: see the test above)."""
+    play, path = convex_play()
+    t = float(path.corner_times[1] * share if share < 1.0 else path.corner_times[1] + (share - 1.0) * (
+        path.corner_times[2] - path.corner_times[1]))
+    xi = play.radius(t) * np.linspace(0.01, 0.99, 50)
+    splined = play.anchors(xi, t)[0]
+    assert all(table is not play._exact_shift for table in play._tables), "no grid reached the tolerance"
+    scale = max(np.max(np.abs(play._exact_shift(np.linspace(lo, hi, 65)))) for lo, hi in play.chain.convex)
+    play._tables = [play._exact_shift] * len(play._tables)
+    exact = play.anchors(xi, t)[0]
+    assert np.max(np.abs(splined - exact)) <= 2.0 * GOLDEN_TABLE_RTOL * scale

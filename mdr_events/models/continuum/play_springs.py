@@ -48,6 +48,7 @@ from dataclasses import dataclass
 from typing import Callable, NamedTuple
 
 import numpy as np
+from scipy.interpolate import CubicSpline
 
 from mdr_events.contact.adhesion import Adhesion
 from mdr_events.contact.friction import FrictionLaw
@@ -58,6 +59,7 @@ from .play_history import DepthHistory, SpanHistory
 
 __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
            "UPPER_CAP", "PANELS", "NODES", "EDGE_SHARE", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
+           "GOLDEN_TABLE_RTOL", "GOLDEN_TABLE_POINTS",
            "CONCAVITY_SAMPLES", "EDGE_ROUND_OFF"]
 
 #: Panels of ``[0, a]`` before the kinks are added.
@@ -83,6 +85,15 @@ KINK_ROUNDS = 6
 #: the clamp's value off by ``L''δt²/2``, about ``ε`` of it (80 steps, to 2e-17, took twice the evaluations for no
 #: change; each an inversion of the radius on a layer).
 GOLDEN_STEPS = 45
+#: ``ū(a(t))`` on a convex stretch is read in the golden sections from a cubic spline of it (one inversion of the
+#: radius on a grid, not one each step): its error, measured at the grid's midpoints, is kept below this share of
+#: the stretch's largest ``ū``. A section's maximum of an edge read within ``ε`` of it lies within ``2ε`` of the true
+#: one, and the clamp's value is read exactly at the time found (:meth:`PlaySprings._own_shifts`): the clamp is off by
+#: at most ``2ε`` (2e-13 of ``ū``, beside the golden section's own ``ε`` of round-off).
+GOLDEN_TABLE_RTOL = 1e-13
+#: Grid sizes tried for a stretch's spline, doubling (the error falls as the spacing's fourth power, 16× a doubling:
+#: a cone on a layer's stretch needed 513 points, 2e-14); beyond the last the stretch is read exactly each step.
+GOLDEN_TABLE_POINTS = (65, 129, 257, 513, 1025, 2049, 4097)
 #: Depths at which a segment's ``ū(a(d))`` is sampled for its concavity.
 CONCAVITY_SAMPLES = 65
 #: A second difference of ``ū(a(d))`` counts as convex above this share of its largest value (round-off).
@@ -323,6 +334,8 @@ class PlaySprings:
         #: whether springs have extremes of their own among their clamp times (:meth:`_columns`; else
         #: :meth:`_shared_clamps`)
         self._own_columns = bool(self.chain.convex.size)
+        #: :meth:`_convex_tables`, made at the first golden section
+        self._tables: list | None = None
         self._shared_columns: list | None = None
         #: the path's largest ``|x|`` (m): the scale of the anchors' round-off
         self._x_scale = float(np.max(np.abs(self._corner_x)))
@@ -357,11 +370,35 @@ class PlaySprings:
         shared = np.unique(np.concatenate(times))
         return _Chain(shared, np.array(convex, dtype=float).reshape(-1, 2))
 
-    def _window(self, xi: np.ndarray, g: np.ndarray, ratio: np.ndarray, times):
-        """``(L, U)`` of each spring at ``times`` (one per spring)."""
+    def _window(self, xi: np.ndarray, g: np.ndarray, ratio: np.ndarray, times, shift=None):
+        """``(L, U)`` of each spring at ``times`` (one per spring; ``ū(a(t))`` by ``shift`` if given)."""
         x, d = self._x(times), self._d(times)
-        cap = self.line.shift(self.history.radii(times)) + ratio * np.maximum(d - g, 0.0)
+        shifts = self.line.shift(self.history.radii(times)) if shift is None else shift(times)
+        cap = shifts + ratio * np.maximum(d - g, 0.0)
         return x - cap, x + cap
+
+    def _exact_shift(self, times):
+        return self.line.shift(self.history.radii(times))
+
+    def _convex_tables(self) -> list:
+        """``ū(a(t))`` on each of ``chain.convex`` (twice: both edges' sections), a cubic spline of it within
+        :data:`GOLDEN_TABLE_RTOL`, or the exact reading where no grid of :data:`GOLDEN_TABLE_POINTS` reaches it."""
+        if self._tables is None:
+            tables = []
+            for lo, hi in self.chain.convex:
+                table = self._exact_shift
+                for points in GOLDEN_TABLE_POINTS:
+                    grid = np.linspace(lo, hi, points)
+                    values = self._exact_shift(grid)
+                    spline = CubicSpline(grid, values)
+                    middle = 0.5 * (grid[1:] + grid[:-1])
+                    error = np.max(np.abs(spline(middle) - self._exact_shift(middle)))
+                    if error <= GOLDEN_TABLE_RTOL * max(float(np.max(np.abs(values))), 1e-300):
+                        table = spline
+                        break
+                tables += [table, table]
+            self._tables = tables
+        return self._tables
 
     def _shift_at(self, time: float, radius: float | None = None) -> float:
         """``ū(a)`` at one time (``a(t)``, or the ``radius`` given: a jump's side), remembered (the chain's times recur
@@ -395,8 +432,14 @@ class PlaySprings:
         sign = np.repeat(np.tile([1.0, -1.0], count // 2), xi.size)
         xi_all, g_all, ratio_all = (np.tile(v, count) for v in (xi, g, ratio))
 
+        tables = self._convex_tables()
+        block = xi.size  # (a table per interval and edge, in the order of ``lows``)
+
+        def shift(s):
+            return np.concatenate([table(s[k * block:(k + 1) * block]) for k, table in enumerate(tables)])
+
         def edge(s):
-            lower, upper = self._window(xi_all, g_all, ratio_all, s)
+            lower, upper = self._window(xi_all, g_all, ratio_all, s, shift)
             return np.where(sign > 0, lower, -upper)
 
         return np.split(_golden(edge, np.concatenate(lows), np.concatenate(highs)), count)
