@@ -229,9 +229,8 @@ class NormalFactors:
         small = lam < LAMBDA_MIN
         values = list(self.both.values_and_slopes_array(np.where(small, LAMBDA_MIN, lam)))
         if np.any(small):
-            theta = 1.0 / (1.0 - 2.0 * self.k0 * lam / math.pi)
+            theta, theta_slope = self._edge_series(lam)
             share = self.n / (self.n + 1.0)
-            theta_slope = 2.0 * self.k0 / math.pi * theta * theta
             series = (theta, theta_slope, share / theta + 1.0 / (self.n + 1.0), -share * theta_slope / (theta * theta))
             values = [np.where(small, exact, value) for exact, value in zip(series, values)]
         return tuple(values)
@@ -254,10 +253,15 @@ class NormalFactors:
         small = lam < LAMBDA_MIN
         theta, theta_slope = self.both.values_and_slopes_array(np.where(small, LAMBDA_MIN, lam), columns=1)
         if np.any(small):
-            exact = 1.0 / (1.0 - 2.0 * self.k0 * lam / math.pi)
-            theta, theta_slope = np.where(small, exact, theta), np.where(small, 2.0 * self.k0 / math.pi * exact * exact,
-                                                                         theta_slope)
+            exact, exact_slope = self._edge_series(lam)
+            theta, theta_slope = np.where(small, exact, theta), np.where(small, exact_slope, theta_slope)
         return theta, theta_slope
+
+    def _edge_series(self, lam: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``Θ = 1/(1 − 2k(0)λ/π)`` and ``dΘ/dλ = 2k(0)Θ²/π`` at ``λ``: the series below ``LAMBDA_MIN`` that
+        :meth:`arrays` and :meth:`edge_arrays` read there."""
+        theta = 1.0 / (1.0 - 2.0 * self.k0 * lam / math.pi)
+        return theta, 2.0 * self.k0 / math.pi * theta * theta
 
     def stiffness_factor(self, a: float) -> float:
         """``Φ(λ) = K(a)/(2E* a)`` at ``λ = a/h`` (the series ``1/(1 − 2k(0)λ/π)`` below ``LAMBDA_MIN``).
