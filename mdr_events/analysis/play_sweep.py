@@ -9,7 +9,7 @@ route gives the same quantities. Its run at the method's output times is ``simul
 between them, the event log (the normal run's and the springs' slip onsets and full slips, bisected), so a sweep's
 ``normal_force_min``, ``tangential_force_max``, ``contact_area_max``, the first slip onsets in and out, the first full
 slip, the pull-off and the events logged are those of ``simulate``'s dataset. The tangential work ``∫ F_x dx`` is
-Gauss–Legendre's rule of :data:`~mdr_events.models.continuum.solution.WORK_NODES` nodes between the path's corners,
+Gauss–Legendre's rule of :data:`~mdr_events.models.continuum.work.WORK_NODES` nodes between the path's corners,
 the run's events and the path's crossings of the surface (``F_x`` is smooth between them: its kinks are the springs'
 slip fronts reaching a cap, the reversals, the radius's jumps, each an event, and Coulomb's part turning off in
 tension; ``x`` is linear in time within a segment), on :data:`WORK_PIECES` even pieces at least, each mapped by
@@ -29,7 +29,7 @@ from mdr_events.contact.layer import LayerBase
 from mdr_events.limits import Limits
 from mdr_events.models.continuum.play_run import run_play_springs
 from mdr_events.models.continuum.play_springs import PlaySprings, SpanHistory, spring_line
-from mdr_events.models.continuum.solution import WORK_NODES
+from mdr_events.models.continuum.work import WORK_NODES
 from mdr_events.models.job import ModelJob
 from mdr_events.models.paths import Path
 

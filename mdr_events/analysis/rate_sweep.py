@@ -8,7 +8,7 @@ a sweep's run is the single run's, bit for bit. The quantities read off them as 
 solution (``sweep_runs.continuum_quantities``): the extrema, the first slip onset on the way in
 and out, the first full slip, the contact's end (the law's pull-off: its depth and ``F_N`` there) and the events
 logged, times from the path's start. The tangential work ``∫ F_x dx`` is Gauss–Legendre's rule of
-:data:`~mdr_events.models.continuum.solution.WORK_NODES` nodes on every step of the edge's solver, cut at the path's
+:data:`~mdr_events.models.continuum.work.WORK_NODES` nodes on every step of the edge's solver, cut at the path's
 corners and at the run's events (``F_x`` is smooth between them and ``x`` linear in time within a segment).
 """
 
@@ -25,7 +25,7 @@ from mdr_events.models.continuum.rate_coulomb import takes_rate_coulomb
 from mdr_events.models.continuum.rate_run import (RUN_METHOD, evaluate_run, rate_events, rate_extrema, rate_quantities,
                                                   scan_run)
 from mdr_events.models.continuum.rate_shifts import RateShifts, solve_rate_shifts
-from mdr_events.models.continuum.solution import WORK_NODES
+from mdr_events.models.continuum.work import WORK_NODES
 from mdr_events.models.job import ModelJob
 from mdr_events.models.paths import Path
 

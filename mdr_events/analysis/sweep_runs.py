@@ -37,7 +37,7 @@ from mdr_events.models import indenters
 from mdr_events.models.continuum import extremum, solve_path, tangential_work
 from mdr_events.models.continuum.edges import check_edge_known
 from mdr_events.models.continuum.play_run import takes_play_springs
-from mdr_events.models.continuum.solution import scan_spans
+from mdr_events.models.continuum.span_extrema import scan_spans
 from mdr_events.models.methods import Continuum, Discrete, Method
 from mdr_events.models.motion import Motion, Paths
 from mdr_events.models.paths import Path

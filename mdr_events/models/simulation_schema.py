@@ -14,7 +14,7 @@ from mdr_events.io.agreement import (ExtremumTime, Integrated, Quotient, RootFou
                                      register_accuracy)
 from mdr_events.io.datasets import assembled, register_schema, stamp
 from mdr_events.models.continuum.extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, extremum_names
-from mdr_events.models.continuum.solution import EXTREMUM_XTOL
+from mdr_events.models.continuum.span_extrema import EXTREMUM_XTOL
 from mdr_events.models.motion import ANGLE_DIMENSION, CASE_DIMENSIONS, CUSTOM_DIMENSION, CUSTOM_SCENARIO, Cases
 from mdr_events.parameters import Parameters
 

@@ -14,7 +14,7 @@ import mdr_events as me
 from mdr_events.analysis.convergence import HISTORY_QUANTITIES, history_differences, observed_orders
 from mdr_events.models.continuum import Regime, algebraic_tangential_force, evaluate, solve_path
 from mdr_events.models.continuum.span import LinearForce
-from mdr_events.models.continuum.solution import tangential_work
+from mdr_events.models.continuum.work import tangential_work
 from mdr_events.models.paths import Path, exit_depth
 from mdr_events.theory import analytic
 

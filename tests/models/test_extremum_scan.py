@@ -15,6 +15,7 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum import solution as S
+from mdr_events.models.continuum import span_extrema as X
 from mdr_events.models.continuum import stationary
 from mdr_events.models.continuum.dense import force_values
 from mdr_events.models.continuum.state import Regime
@@ -66,9 +67,9 @@ def _reference_scan(solution):
     times, values = [], []
     for index, span in enumerate(solution.spans):
         lower, upper = span.t_start - solution.t_contact, span.t_end - solution.t_contact
-        count = S.EXTREMUM_GRID if upper > lower else 1
+        count = X.EXTREMUM_GRID if upper > lower else 1
         if span.regime in (Regime.GROWING, Regime.SHRINKING):
-            grid, radii = S._radius_grid(solution, span, lower, upper, count)
+            grid, radii = X._radius_grid(solution, span, lower, upper, count)
         else:
             grid, radii = np.linspace(lower, upper, count), None
         times.append(grid)
@@ -87,7 +88,7 @@ def _runs(case):
 def test_the_scan_of_all_spans_at_once_is_the_scan_span_by_span(case):
     for run in _runs(case):
         times, values = _reference_scan(run)
-        scan = S.scan_spans(run)
+        scan = X.scan_spans(run)
         assert len(scan.times) == len(times) == len(run.spans)
         for found, reference in zip(scan.times, times):
             np.testing.assert_array_equal(found, reference)
@@ -103,9 +104,9 @@ def test_the_rows_of_linspace_are_linspace_row_by_row():
     row."""
     start = np.array([0.0, 1.0, 2.5e-4, 5e-324, -3.0, 7.0])
     stop = np.array([1.0, 1.0, 1.7e-3, 1e-323, 2.0, -7.0])
-    rows = S._linspace_rows(start, stop, S.EXTREMUM_GRID)
+    rows = X._linspace_rows(start, stop, X.EXTREMUM_GRID)
     for row, lower, upper in zip(rows, start, stop):
-        np.testing.assert_array_equal(row, np.linspace(lower, upper, S.EXTREMUM_GRID))
+        np.testing.assert_array_equal(row, np.linspace(lower, upper, X.EXTREMUM_GRID))
 
 
 def _span_by_span(interpolants, points):
@@ -121,10 +122,10 @@ def test_the_fill_of_all_spans_at_once_is_the_fill_span_by_span(case, monkeypatc
     for run in _runs(case):
         samples = np.linspace(0.0, run.end_time * (1.0 + 1.0 / 2001), 2001)
         shuffled = np.random.default_rng(7).permutation(samples[::3])
-        found = [S.evaluate(run, times) for times in (samples, shuffled)] + [S.scan_spans(run).values]
+        found = [S.evaluate(run, times) for times in (samples, shuffled)] + [X.scan_spans(run).values]
         with monkeypatch.context() as patch:
             patch.setattr(S, "span_forces", _span_by_span)
-            reference = [S.evaluate(run, times) for times in (samples, shuffled)] + [S.scan_spans(run).values]
+            reference = [S.evaluate(run, times) for times in (samples, shuffled)] + [X.scan_spans(run).values]
         for got, expected in zip(found[:2], reference[:2]):
             for name in S.EVALUATED_QUANTITIES:
                 np.testing.assert_array_equal(got[name], expected[name], err_msg=name)
@@ -139,18 +140,18 @@ def test_a_refined_point_replaces_the_scans_beyond_the_tie_alone(share, refined,
     it only beyond the tie (``share > 1``). ``F_N``'s minimum of scenario A (the pull-off, -0.02 N against 0.52 N at
     the top: the old rule, a tie of ``2 EXTREMUM_TIE`` of the value itself, took a point better by half the run's tie)."""
     run = solve_path(PAPER, me.Path.scenario_A(20.0, PAPER))
-    scan = S.scan_spans(run)
-    best, _, first, size = S._scanned_extremes(scan, "normal_force", -1.0)
+    scan = X.scan_spans(run)
+    best, _, first, size = X._scanned_extremes(scan, "normal_force", -1.0)
     holder = int(np.nanargmax(best))
     scanned_time = float(scan.times[holder][first[holder]])
     scanned = float(scan.values[holder]["normal_force"][first[holder]])
-    found_time, found = scanned_time + 1.0, scanned - share * S.EXTREMUM_TIE * size  # (lower: better for a minimum)
+    found_time, found = scanned_time + 1.0, scanned - share * X.EXTREMUM_TIE * size  # (lower: better for a minimum)
 
     def stationary(solution, index, quantity, times, radii):
         return [(found_time, found)] if index == holder and quantity == "normal_force" else []
 
-    monkeypatch.setattr(S, "stationary_points", stationary)
-    assert S.extremum(run, "normal_force", largest=False, scan=scan) == \
+    monkeypatch.setattr(X, "stationary_points", stationary)
+    assert X.extremum(run, "normal_force", largest=False, scan=scan) == \
         ((found_time, found) if refined else (scanned_time, scanned))
 
 
@@ -168,10 +169,10 @@ def test_the_spans_passed_over_change_no_extremum(case, monkeypatch):
     """``extremum`` does not refine the spans ``never_stationary`` names (also a constant force or one linear in time):
     every extremum of every quantity is the one found with every span refined as before, bit for bit."""
     for run in _runs(case):
-        found = [S.extremum(run, quantity, largest) for quantity in S.EXTREMUM_QUANTITIES for largest in (True, False)]
+        found = [X.extremum(run, quantity, largest) for quantity in X.EXTREMUM_QUANTITIES for largest in (True, False)]
         with monkeypatch.context() as patch:
-            patch.setattr(S, "never_stationary", lambda solution, index, quantity: False)
+            patch.setattr(X, "never_stationary", lambda solution, index, quantity: False)
             patch.setattr(stationary, "never_stationary", _stationary_before)
-            reference = [S.extremum(run, quantity, largest) for quantity in S.EXTREMUM_QUANTITIES
+            reference = [X.extremum(run, quantity, largest) for quantity in X.EXTREMUM_QUANTITIES
                          for largest in (True, False)]
         assert found == reference

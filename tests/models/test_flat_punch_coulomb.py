@@ -15,7 +15,7 @@ from mdr_events.analysis.convergence import history_differences
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import FlatPunch
 from mdr_events.models.continuum import EventKind, evaluate, solve_path, tangential_work
-from mdr_events.models.continuum.solution import algebraic_tangential_force
+from mdr_events.models.continuum.work import algebraic_tangential_force
 from mdr_events.theory import mindlin
 from mdr_events.theory import power_law as pl
 from mdr_events.theory import symbolic as S

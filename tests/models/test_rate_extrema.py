@@ -15,7 +15,7 @@ from mdr_events.models.continuum import rate_run
 from mdr_events.models.continuum.extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, extremum_names
 from mdr_events.models.continuum.rate_run import (RUN_METHOD, _quantity, evaluate_run, rate_extrema, rate_quantities,
                                                   run_end, scan_run)
-from mdr_events.models.continuum.solution import EXTREMUM_TIE
+from mdr_events.models.continuum.span_extrema import EXTREMUM_TIE
 from mdr_events.models.continuum.stationary import chebyshev_nodes, derivative_roots
 
 PAPER = me.Parameters.paper()

@@ -16,7 +16,7 @@ from mdr_events.models.continuum.graded import Grading, grading_power
 from mdr_events.models.continuum.integrate import fired_events
 from mdr_events.models.continuum.span import EventFunction, Trigger
 from mdr_events.models.continuum.state import Cap
-from mdr_events.models.continuum.solution import extremum
+from mdr_events.models.continuum.span_extrema import extremum
 from mdr_events.models.continuum.formulas import ROOT_XTOL, Formula
 from mdr_events.models.continuum.model import ContinuumModel
 from mdr_events.models.continuum.split_solve import new_anchors

@@ -40,8 +40,10 @@ module                     one idea
 :mod:`.split_span`         :class:`~.split_span.SplitSpanIntegrator`: the right-hand side of two regions
 :mod:`.split_events`       its events, keyed by cap and region
 :mod:`.split_solve`        the maps joined after a span, the slip transition of two regions
-:mod:`.solution`           :class:`PathSolution` (spans and interpolants), ``evaluate``, ``extremum``,
-                           ``tangential_work``
+:mod:`.solution`           :class:`PathSolution` (spans and interpolants), ``evaluate``
+:mod:`.span_extrema`       ``extremum``: one quantity's exact extreme over the spans (a scan of all spans at once,
+                           the best points refined), the rule of ties
+:mod:`.work`               ``tangential_work`` and ``algebraic_tangential_force`` (the anchors' check of ``F_x``)
 :mod:`.rate_edge`          a rate-dependent adhesion law's edge: the radius as the state of an ODE (the normal problem)
 :mod:`.rate_march`         ``solve_ivp``'s loop for the edge's scalar ODE without its per-step bookkeeping (same steps)
 :mod:`.rate_lsoda`         LSODA's steps of the edge by its integrator's runner, dense output as rows (same steps)
@@ -77,8 +79,9 @@ from .plan import Action, SpanPlan, plan_span
 from .rate_edge import EdgeEvent, EdgeEventKind, EdgeMode, EdgeRun, solve_edge
 from .rate_shifts import RateShifts, solve_rate_shifts
 from .edge_let_go import LetGo, let_go
-from .solution import (EVALUATED_QUANTITIES, EXTREMUM_QUANTITIES, PathSolution, algebraic_tangential_force, evaluate,
-                       evaluate_span, extremum, tangential_work)
+from .solution import EVALUATED_QUANTITIES, PathSolution, evaluate, evaluate_span
+from .span_extrema import EXTREMUM_QUANTITIES, extremum
+from .work import algebraic_tangential_force, tangential_work
 from .solve import run_continuum, solve_path
 from .integrate import integrate_span
 from .span import Span, SpanIntegrator, Trigger

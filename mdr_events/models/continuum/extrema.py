@@ -1,6 +1,6 @@
 """Exact extrema of a continuum run: the largest and smallest ``F_N``, ``F_x`` and contact area ``A``.
 
-Each comes from the solution's spans (:func:`mdr_events.models.continuum.solution.extremum`: a scan
+Each comes from the solution's spans (:func:`mdr_events.models.continuum.span_extrema.extremum`: a scan
 of every span brackets the extremum, the roots of its derivative refine it, from the span's dense output
 and the branch's closed forms, :mod:`~mdr_events.models.continuum.stationary`), not from output samples,
 so that it does not depend on the output grid. A run that ends because the contact comes apart (pull-off, or the contact ending
@@ -10,7 +10,8 @@ at zero radius) has ``F_N = F_x = A = 0`` just after its end, as the output samp
 
 from __future__ import annotations
 
-from .solution import EXTREMUM_TIE, PathSolution, extremum, scan_spans
+from .solution import PathSolution
+from .span_extrema import EXTREMUM_TIE, extremum, scan_spans
 
 __all__ = ["EXTREMA_QUANTITIES", "EXTREMA_KINDS", "extremum_names", "solution_extrema"]
 
@@ -41,7 +42,7 @@ def solution_extrema(solution: PathSolution) -> dict[str, float]:
     dict of str to float
         For each quantity ``q`` of :data:`EXTREMA_QUANTITIES` (N, N, m²): ``q_max``, ``q_max_time``,
         ``q_min``, ``q_min_time``; times in s from first contact, like a simulation's ``time``. The
-        extremum is the one of :func:`~mdr_events.models.continuum.solution.extremum` over the
+        extremum is the one of :func:`~mdr_events.models.continuum.span_extrema.extremum` over the
         spans; if the run ends with the contact coming apart, the value 0 just after its end
         (at ``solution.end_time``) is taken instead where it is larger (max) or smaller (min) by
         more than rounding (``EXTREMUM_TIE`` of the quantity's size); a value within that rounding of

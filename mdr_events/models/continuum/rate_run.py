@@ -18,8 +18,8 @@ end. The extrema are found on the edge's solver steps (every step's ends and :da
 and refined between the neighbours of the largest or least by the stationary points of each interval's Chebyshev
 interpolant of degree :data:`EXTREMUM_DEGREE` (:func:`~mdr_events.models.continuum.stationary.derivative_roots`, as
 the paper's spans refine theirs): the quantities are smooth within a step. A stationary point better than the scan's
-point by no more than rounding (:func:`~mdr_events.models.continuum.solution.within_tie`:
-:data:`~mdr_events.models.continuum.solution.EXTREMUM_TIE` of the quantity's largest magnitude along the run) leaves
+point by no more than rounding (:func:`~mdr_events.models.continuum.span_extrema.within_tie`:
+:data:`~mdr_events.models.continuum.span_extrema.EXTREMUM_TIE` of the quantity's largest magnitude along the run) leaves
 the scan's point, as the paper's extremum keeps the earliest of its ties by the same rule (a plateau such as ``F_x``
 while the springs stick).
 """
@@ -44,7 +44,8 @@ from .extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, VALUE_AFTER_CONTACT, ext
 from .rate_edge import EdgeEventKind
 from .rate_play import RatePlay
 from .rate_shifts import RateShifts, solve_rate_shifts
-from .solution import sample_times, within_tie
+from .solution import sample_times
+from .span_extrema import within_tie
 from .solve import BYTES_PER_SAMPLE
 from .state import Event, EventKind
 from .stationary import chebyshev_nodes, derivative_roots

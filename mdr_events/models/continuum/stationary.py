@@ -1,4 +1,4 @@
-"""Where a quantity of one span is stationary: :func:`~.solution.extremum`'s refinement of a bracketed extremum by
+"""Where a quantity of one span is stationary: :func:`~.span_extrema.extremum`'s refinement of a bracketed extremum by
 the roots of the quantity's derivative, from the span's own closed forms and dense output (no generic minimisation,
 no radius root per evaluation).
 
@@ -172,12 +172,12 @@ def never_stationary(solution, index: int, quantity: str) -> bool:
     index : int
         The span.
     quantity : str
-        A quantity of :data:`~.solution.EXTREMUM_QUANTITIES`.
+        A quantity of :data:`~.span_extrema.EXTREMUM_QUANTITIES`.
 
     Returns
     -------
     bool
-        ``True`` where none can be found (:func:`~.solution.extremum` keeps the scan's point without asking).
+        ``True`` where none can be found (:func:`~.span_extrema.extremum` keeps the scan's point without asking).
     """
     span = solution.spans[index]
     if span.regime is Regime.NONE or quantity in ("contact_radius", "contact_area"):
@@ -214,7 +214,7 @@ def interpolant_roots(interpolant, low: float, high: float) -> list[float]:
         (:func:`~.integrate.integrate_span`) gives one of the three (the panels of :mod:`.span_panels` and the steps of
         :mod:`.span_march` an ``OdeSolution``, :func:`~.closed_form.closed_span` a ``ClosedForce``, a linear span a
         ``LinearForce``; a constant force none, which :func:`stationary_points` skips); the error is a bug, raised
-        through :func:`~.solution.extremum`.
+        through :func:`~.span_extrema.extremum`.
     """
     raise TypeError(f"interpolant={interpolant!r} is not allowed; allowed: an OdeSolution, a ClosedForce or a "
                     "LinearForce")

@@ -1,0 +1,369 @@
+"""The exact extremes of one quantity over a continuum run, span by span: every span scanned at once
+(:func:`scan_spans`), the best scanned point of each span that can reach the run's best refined by the roots of the
+quantity's derivative (:func:`~.stationary.stationary_points`) or a bounded search (:func:`extremum`), and the rule of
+ties (:func:`within_tie`) the rate run's extrema share."""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from scipy import optimize
+
+from .graded import span_variable
+from .solution import (PathSolution, _compressed_zone, _fill_normal_force, _fill_tangential_force, _pinned_kinematics,
+                       evaluate_span)
+from .span import Span, Variable
+from .state import Regime
+from .stationary import never_stationary, stationary_points
+
+__all__ = ["EXTREMUM_QUANTITIES", "EXTREMUM_GRID", "EXTREMUM_TIE", "EXTREMUM_XTOL", "ExtremumScan", "ScanMatrix",
+           "extremum", "scan_spans", "within_tie"]
+
+#: Quantities :func:`extremum` finds the extremes of; the means are per contact area ``π a²``.
+EXTREMUM_QUANTITIES = ("normal_force", "tangential_force", "contact_radius", "contact_area",
+                       "mean_pressure", "mean_shear_stress")
+#: Points per span at which :func:`extremum` brackets an extremum before refining it.
+EXTREMUM_GRID = 65
+#: Values within this share of the extremum are ties (rounding), of which :func:`extremum` reports the earliest.
+EXTREMUM_TIE = 1e-12
+#: Span-relative time accuracy of the refined extremum; the value is then exact to rounding
+#: (it is flat there: its error is second order in the time error).
+EXTREMUM_XTOL = 1e-12
+
+
+def within_tie(value: float, best: float, size: float) -> bool:
+    """Whether ``value`` ties ``best`` to rounding: within :data:`EXTREMUM_TIE` of the quantity's ``size`` along the
+    run (or of ``|best|``, the larger), so that a value near 0 is held to its run's rounding, not to its own. The one
+    rule of :func:`extremum` (the earliest of the spans' ties; a stationary point replaces a span's best scanned point
+    only where that point does not tie it) and of the rate run's refinement
+    (:func:`~mdr_events.models.continuum.rate_run.rate_extrema`: a stationary point that the scan's point ties leaves
+    the scan's point).
+
+    Parameters
+    ----------
+    value, best : float
+        The value and the best one, signed so that larger is better.
+    size : float
+        The quantity's largest magnitude along the run.
+
+    Returns
+    -------
+    bool
+        ``True`` if ``value >= best − EXTREMUM_TIE · max(size, |best|)``.
+    """
+    return value >= best - EXTREMUM_TIE * max(size, abs(best))
+
+
+def _quantity(filled: dict[str, np.ndarray], quantity: str) -> np.ndarray:
+    if quantity in filled:
+        return filled[quantity]
+    area = np.pi * filled["contact_radius"] ** 2
+    if quantity == "contact_area":
+        return area
+    force = filled["normal_force" if quantity == "mean_pressure" else "tangential_force"]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(area > 0, force / area, np.nan)
+
+
+class ExtremumScan(NamedTuple):
+    """Every span sampled at :data:`EXTREMUM_GRID` times (s from first contact), with the quantities
+    :func:`extremum` reads (the sliding fraction left out); ``matrices``: each quantity's scan as one matrix with what
+    both extremes read of it (:class:`ScanMatrix`), filled as :func:`extremum` asks (``None``: none kept)."""
+
+    times: list[np.ndarray]
+    values: list[dict[str, np.ndarray]]
+    matrices: dict[str, "ScanMatrix"] | None = None
+
+
+class ScanMatrix(NamedTuple):
+    """One quantity of an :class:`ExtremumScan`, every span a row padded with ``nan``: what the maximum and the minimum
+    both read (the sign applied to ``matrix`` alone, each change and magnitude the same for either)."""
+
+    matrix: np.ndarray
+    largest: np.ndarray
+    reach: np.ndarray
+    size: float
+
+
+def scan_spans(solution: PathSolution) -> ExtremumScan:
+    """Sample every span for :func:`extremum` (one scan serves every quantity and both extremes): evenly in
+    time on a pinned radius, evenly in the radius on a moving one (the variable of its interpolant; the time
+    of each radius that of its depth on the branch, which needs no root).
+
+    The grids of all spans are built at once (:func:`_scan_grids`: each branch's depths in one call, the grids as the
+    rows of one matrix), then each span's kinematics (:func:`~.solution.evaluate_span`), ``F_x`` of all of them by the kinds of
+    their interpolants (:func:`_fill_tangential_force`) and ``F_N`` in one call (:func:`_fill_normal_force`); every
+    value is the one a span alone would give."""
+    grids, radii = _scan_grids(solution)
+    pinned = _pinned_kinematics(solution, dict(enumerate(grids))) if solution.compressed is None else {}
+    values = [pinned[index] if index in pinned else
+              evaluate_span(solution, index, grid, sliding=False, radii=radius, normal=False, tangential=False)
+              for index, (grid, radius) in enumerate(zip(grids, radii))]
+    _fill_tangential_force(solution, list(range(len(grids))), grids, values)
+    _fill_normal_force(solution.model, values)
+    return ExtremumScan(grids, values, {})
+
+
+def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarray | None]]:
+    """Each span's scan times (s from first contact) and, on a moving span, the radii there (``None`` elsewhere):
+    :data:`EXTREMUM_GRID` points on a span of positive length, its start alone on one of none. A pinned span's times
+    evenly spaced (``np.linspace``); a moving span's radii evenly spaced from the radius at its start to that at its
+    end (roots of their depths: :meth:`~.branch.Branch.radius`, each depth once, a span's end being the next span's
+    start) and the time of each radius that of its depth on the branch, made non-decreasing, as
+    :func:`_radius_grid` gives them span by span (``tests/models/test_extremum_scan.py`` compares the two)."""
+    spans, t_contact = solution.spans, solution.t_contact
+    bounds = [(span.t_start - t_contact, span.t_end - t_contact) for span in spans]
+    grids: list = [None] * len(spans)
+    radii: list = [None] * len(spans)
+    roots: dict = {}  # (the branch, the depth) -> the radius
+    for regime in (Regime.GROWING, Regime.SHRINKING):
+        members = [index for index, span in enumerate(spans) if span.regime is regime]
+        if not members:
+            continue
+        branch, rtol = solution.model.branch(regime), solution.model.tolerances.radius_rtol
+
+        def root(index: int, t: float) -> float:
+            depth = max(float(spans[index].segment.d(t_contact + t)), branch.jump_off_depth)
+            if depth not in roots:
+                roots[depth] = branch.radius(depth, rtol)
+            return roots[depth]
+
+        whole = [index for index in members if bounds[index][1] > bounds[index][0]]
+        for index in members:
+            if index not in whole:  # (a span of no length: its start alone)
+                grids[index], radii[index] = np.array([bounds[index][0]]), np.array([root(index, bounds[index][0])])
+        if whole:
+            _moving_grids(solution, branch, whole, [[root(index, t) for t in bounds[index]] for index in whole],
+                          grids, radii)
+        roots.clear()  # (the other branch's radii are other roots)
+    rest = [index for index in range(len(spans)) if grids[index] is None and bounds[index][1] > bounds[index][0]]
+    if rest:  # (the pinned spans and the approach: their times evenly spaced, as the rows of one matrix)
+        lower, upper = (np.array([bounds[index][k] for index in rest]) for k in (0, 1))
+        for index, row in zip(rest, _linspace_rows(lower, upper, EXTREMUM_GRID)):
+            grids[index] = row
+    for index in range(len(spans)):
+        if grids[index] is None:  # (a span of no length: its start alone)
+            grids[index] = np.array([bounds[index][0]])
+    return grids, radii
+
+
+def _moving_grids(solution: PathSolution, branch, members: list[int], ends: list[list[float]], grids: list,
+                  radii: list) -> None:
+    """:func:`_scan_grids` of the moving spans ``members`` of one branch with the radii at their ``ends``: their radii
+    and times as the rows of two matrices, the depths of all their inner radii in one call of the branch's
+    :meth:`~.branch.Branch.depths` (element by element: the values of a call per span); each row stored in ``grids``
+    and ``radii`` at its span's index."""
+    spans, t_contact = solution.spans, solution.t_contact
+    start, stop = (np.array([end[k] for end in ends]) for k in (0, 1))
+    matrix = _linspace_rows(start, stop, EXTREMUM_GRID)
+    depths = branch.depths(np.ascontiguousarray(matrix[:, 1:-1]).reshape(-1)).reshape(len(members), -1)
+    segments = [spans[index].segment for index in members]
+    t0, ds, vd = (np.array([getattr(segment, name) for segment in segments])[:, None] for name in ("t0", "ds", "vd"))
+    lower = np.array([spans[index].t_start - t_contact for index in members])[:, None]
+    upper = np.array([spans[index].t_end - t_contact for index in members])[:, None]
+    inner = (t0 + (depths - ds) / vd) - t_contact  # (Segment.time_at_depth, row by row)
+    times = np.concatenate([lower, np.clip(inner, lower, upper), upper], axis=1)
+    np.maximum.accumulate(times, axis=1, out=times)
+    for row, index in enumerate(members):
+        grids[index], radii[index] = times[row], matrix[row]
+
+
+def _linspace_rows(start: np.ndarray, stop: np.ndarray, count: int) -> np.ndarray:
+    """``np.linspace(start[i], stop[i], count)`` as the rows of one matrix, each row the values ``np.linspace`` gives
+    it alone (its own step: ``np.linspace`` of arrays takes the denormal route for every row if any row's step is 0)."""
+    delta = stop - start
+    positions = np.arange(count, dtype=float)
+    step = delta / (count - 1)
+    rows = positions[None, :] * step[:, None]
+    zero = step == 0
+    if zero.any():  # (np.linspace's route for a step of 0: the positions over the divisions, times the difference)
+        rows[zero] = (positions / (count - 1))[None, :] * delta[zero][:, None]
+    rows += start[:, None]
+    rows[:, -1] = stop
+    return rows
+
+
+def _radius_grid(solution: PathSolution, span: Span, lower: float, upper: float,
+                 count: int) -> tuple[np.ndarray, np.ndarray]:
+    """``count`` radii evenly from the radius at ``lower`` to that at ``upper`` (s from first contact; the
+    span's ends, whose radii are roots of their depths) along the span's branch, and their times (in
+    ``[lower, upper]``, non-decreasing): a moving span's scan alone (:func:`_scan_grids` builds every span's at once;
+    this one its reference in the tests)."""
+    branch, rtol = solution.model.branch(span.regime), solution.model.tolerances.radius_rtol
+    ends = [branch.radius(max(float(span.segment.d(solution.t_contact + t)), branch.jump_off_depth), rtol)
+            for t in (lower, upper)]
+    radii = np.linspace(ends[0], ends[1], count)
+    inner = span.segment.time_at_depth(branch.depths(radii[1:-1])) - solution.t_contact
+    grid = np.concatenate([[lower], np.clip(inner, lower, upper), [upper]]) if count > 1 else np.array([lower])
+    return np.maximum.accumulate(grid), radii
+
+
+def extremum(solution: PathSolution, quantity: str, largest: bool = True,
+             scan: ExtremumScan | None = None) -> tuple[float, float]:
+    """The largest (or smallest) value of ``quantity`` along the run and the time it is reached
+    (s from first contact), from the solution itself, not from samples.
+
+    Each span's quantities are smooth in time; the extremum of a span is at one of its ends or
+    inside it. A scan of :data:`EXTREMUM_GRID` points per span (:func:`scan_spans`) brackets it
+    (within one grid interval of the best point, at an end too); the spans that can hold the
+    extremum (their best scanned value, raised by their largest change between neighbouring scan
+    points, reaches the best scanned value of the run) are refined within one grid interval of the
+    best point by the roots of the quantity's derivative (:func:`~.stationary.stationary_points`: the
+    span's dense output and the branch's closed forms), the means by a bounded Brent search to
+    :data:`EXTREMUM_XTOL` of the span's length; a refined point replaces the scanned one where it is better beyond
+    the tie (:func:`within_tie`). Of values equal to :data:`EXTREMUM_TIE` (a plateau) the
+    earliest time is reported, so that the time does not hang on rounding. The means (``mean_pressure``, ``mean_shear_stress``)
+    are taken over the spans in contact.
+
+    Parameters
+    ----------
+    solution : PathSolution
+    quantity : str
+        One of :data:`EXTREMUM_QUANTITIES`.
+    largest : bool
+        ``True`` for the maximum, ``False`` for the minimum.
+    scan : ExtremumScan, optional
+        :func:`scan_spans` of ``solution``, to share between several calls.
+
+    Returns
+    -------
+    value : float
+        The extremum (in the quantity's SI unit).
+    time : float
+        The earliest time it is reached (s from first contact).
+
+    Raises
+    ------
+    ValueError
+        A quantity not in :data:`EXTREMUM_QUANTITIES`.
+    """
+    if quantity not in EXTREMUM_QUANTITIES:
+        raise ValueError(f"quantity={quantity!r} is not allowed; allowed: {', '.join(EXTREMUM_QUANTITIES)}")
+    if quantity == "tangential_force" and solution.compressed is not None:  # the compressed zone's spans hold F_x
+        return extremum(solution.compressed, quantity, largest)
+    scan = scan_spans(solution) if scan is None else scan
+    sign = 1.0 if largest else -1.0
+    best, reach, first, size = _scanned_extremes(scan, quantity, sign)
+    spans = np.flatnonzero(np.isfinite(best))
+    if not spans.size:
+        return math.nan, math.nan
+    best_scanned = float(np.max(best[spans]))
+    # the radius is monotone on a span: the area's extremes are at the span's ends, which the scan holds
+    monotone = quantity in ("contact_radius", "contact_area")
+    results = []
+    for index in spans.tolist():
+        times, i, value = scan.times[index], int(first[index]), float(best[index])
+        time = float(times[i])
+        if len(times) > 1 and value + reach[index] >= best_scanned and not monotone \
+                and not never_stationary(solution, index, quantity):  # (else the scan's point stays)
+            time, value = _refined(solution, scan, index, quantity, sign, (i, value), size)
+        results.append((time, value))
+    best_value = max(value for _, value in results)
+    # the earliest time at which the extremum is reached, to rounding of the quantity's size along the run (a
+    # plateau such as F_x in full slip, or a quantity that stays at zero, has ties that rounding would pick)
+    best_time, best_value = min((time, value) for time, value in results
+                                if within_tie(value, best_value, size))
+    return best_time, sign * best_value
+
+
+def _refined(solution: PathSolution, scan: ExtremumScan, index: int, quantity: str, sign: float,
+             scanned: tuple[int, float], size: float) -> tuple[float, float]:
+    """:func:`extremum`'s refinement of span ``index`` about its best scan point (``scanned``: its index and signed
+    value): ``(time, signed value)`` of the stationary point (:func:`~.stationary.stationary_points`, or a bounded
+    search for the means) better than it beyond the tie (:func:`within_tie`), else of the scan's point."""
+    times, (i, value) = scan.times[index], scanned
+    time = float(times[i])
+    ends = (max(i - 1, 0), min(i + 1, len(times) - 1))
+    radii = scan.values[index]["contact_radius"]
+    points = stationary_points(solution, index, quantity, (float(times[ends[0]]), float(times[ends[1]])),
+                               (float(radii[ends[0]]), float(radii[ends[1]])))
+    if points is None:
+        points = [_bounded_search(solution, index, quantity, sign, times, i)]
+    for found_time, found in points:
+        # (better beyond rounding alone, by the rule of ties: a point the scan's ties stays)
+        if sign * found > value and not within_tie(value, sign * found, size):
+            time, value = found_time, sign * found
+    return time, value
+
+
+def _scanned_extremes(scan: ExtremumScan, quantity: str,
+                      sign: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+    """Per span of ``scan``, of ``sign`` times ``quantity``: the best scanned value (``nan`` where none is finite), its
+    largest change between neighbouring scan points (0 for one point), the index of the earliest scan point within
+    :data:`EXTREMUM_TIE` of it; and the quantity's largest magnitude over the run. All spans at once, from the
+    quantity's :func:`_scan_matrix` (kept in ``scan`` for the other extreme)."""
+    kept = scan.matrices.get(quantity) if scan.matrices is not None else None
+    if kept is None:
+        kept = _scan_matrix(scan, quantity)
+        if scan.matrices is not None:
+            scan.matrices[quantity] = kept
+    matrix = kept.matrix * sign  # (exact: a change of sign)
+    with np.errstate(invalid="ignore"):
+        best = np.fmax.reduce(matrix, axis=1)
+        first = np.argmax(matrix >= (best - EXTREMUM_TIE * kept.largest)[:, None], axis=1)  # earliest tie
+    return best, kept.reach, first, kept.size
+
+
+def _scan_matrix(scan: ExtremumScan, quantity: str) -> ScanMatrix:
+    """``quantity``'s scan as a matrix (a row per span, padded with ``nan``), each row's largest magnitude and largest
+    change between neighbouring points (0 for one point; ``|Δ(−q)| = |Δq|`` exactly, so both extremes share it) and
+    the largest magnitude over the run."""
+    width = max(len(times) for times in scan.times)
+    matrix = np.full((len(scan.times), width), np.nan)
+    for row, filled in enumerate(scan.values):
+        values = _quantity(filled, quantity)
+        matrix[row, :len(values)] = values
+    with np.errstate(invalid="ignore"):
+        largest = np.fmax.reduce(np.abs(matrix), axis=1)
+        reach = np.fmax(np.fmax.reduce(np.abs(np.diff(matrix, axis=1)), axis=1), 0.0) if width > 1 \
+            else np.zeros(len(largest))
+    size = float(np.fmax.reduce(largest[np.isfinite(largest)], initial=0.0))
+    return ScanMatrix(matrix, largest, reach, size)
+
+
+def _bounded_search(solution: PathSolution, index: int, quantity: str, sign: float, times: np.ndarray,
+                    i: int) -> tuple[float, float]:
+    """:func:`extremum`'s refinement of a quantity without a derivative route (:func:`~.stationary.stationary_points`:
+    the means): a bounded Brent search of the time around scan point ``i``, to :data:`EXTREMUM_XTOL` of the span.
+    Searched in the time from the bracket's start: the bounded search adds sqrt(eps) of the variable's size to its
+    tolerance, 0.26 s at t = 1.7e7 s (a path at 1e-3°), where a force minimum lasts 0.03 s."""
+    origin = float(times[max(i - 1, 0)])
+
+    def objective(s: float) -> float:
+        return -sign * _scalar_quantity(solution, index, origin + s, quantity)
+
+    bracket = (0.0, float(times[min(i + 1, len(times) - 1)]) - origin)
+    refined = optimize.minimize_scalar(objective, bounds=bracket, method="bounded",
+                                       options={"xatol": EXTREMUM_XTOL * (times[-1] - times[0])})
+    return origin + float(refined.x), -sign * float(refined.fun)
+
+
+def _scalar_quantity(solution: PathSolution, index: int, time: float, quantity: str) -> float:
+    """One quantity of span ``index`` at one time (s from first contact), with the scalar radius roots:
+    :func:`extremum`'s objective (the same values as :func:`~.solution.evaluate_span`, to the root's accuracy)."""
+    span, model = solution.spans[index], solution.model
+    if span.regime is Regime.NONE:
+        return 0.0 if quantity in ("normal_force", "tangential_force") else math.nan
+    d = span.segment.d(solution.t_contact + time)
+    rtol = model.tolerances.radius_rtol
+    if span.regime is Regime.GROWING:
+        a = model.grow.radius(max(d, model.grow.jump_off_depth), rtol)
+    elif span.regime is Regime.SHRINKING:
+        a = model.shrink.radius(max(d, model.shrink.jump_off_depth), rtol)
+    else:
+        a = span.pinned_radius
+    if solution.compressed is not None:
+        force = float(_compressed_zone(solution.compressed, np.array([time]), np.array([a]))[0][0])
+    elif span.interpolant is None:
+        force = span.force
+    else:
+        force = float(span.interpolant(span_variable(span, a / span.scale if span.variable is Variable.RADIUS
+                                                     else solution.t_contact + time))[0])
+    normal = float(model.normal_force(d, a))
+    area = math.pi * a * a
+    values = {"normal_force": normal, "tangential_force": force, "contact_radius": a, "contact_area": area,
+              "mean_pressure": normal / area if area > 0 else math.nan,
+              "mean_shear_stress": force / area if area > 0 else math.nan}
+    return values[quantity]
