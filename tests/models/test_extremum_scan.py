@@ -16,7 +16,7 @@ from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum import solution as S
 from mdr_events.models.continuum import span_extrema as X
-from mdr_events.models.continuum import stationary
+from mdr_events.models.continuum import extrema, stationary
 from mdr_events.models.continuum.dense import force_values
 from mdr_events.models.continuum.state import Regime
 from mdr_events.models.paths import exit_depth
@@ -176,3 +176,56 @@ def test_the_spans_passed_over_change_no_extremum(case, monkeypatch):
             reference = [X.extremum(run, quantity, largest) for quantity in X.EXTREMUM_QUANTITIES
                          for largest in (True, False)]
         assert found == reference
+
+
+def _extremum_before(solution, quantity, largest, scan):
+    """``extremum`` as it was (issue 28, before the six extrema's scan was reduced at once): each quantity's matrix
+    and each sign's reduction on its own, the loop over the spans on NumPy's arrays."""
+    if quantity == "tangential_force" and solution.compressed is not None:
+        return _extremum_before(solution.compressed, quantity, largest, X.scan_spans(solution.compressed))
+    sign = 1.0 if largest else -1.0
+    width = max(len(times) for times in scan.times)
+    matrix = np.full((len(scan.times), width), np.nan)
+    for row, filled in enumerate(scan.values):
+        values = X._quantity(filled, quantity)
+        matrix[row, :len(values)] = values
+    with np.errstate(invalid="ignore"):
+        largest_row = np.fmax.reduce(np.abs(matrix), axis=1)
+        reach = np.fmax(np.fmax.reduce(np.abs(np.diff(matrix, axis=1)), axis=1), 0.0) if width > 1 \
+            else np.zeros(len(largest_row))
+        size = float(np.fmax.reduce(largest_row[np.isfinite(largest_row)], initial=0.0))
+        signed = matrix * sign
+        best = np.fmax.reduce(signed, axis=1)
+        first = np.argmax(signed >= (best - X.EXTREMUM_TIE * largest_row)[:, None], axis=1)
+    spans = np.flatnonzero(np.isfinite(best))
+    if not spans.size:
+        return math.nan, math.nan
+    best_scanned = float(np.max(best[spans]))
+    results = []
+    for index in spans.tolist():
+        times, i, value = scan.times[index], int(first[index]), float(best[index])
+        time = float(times[i])
+        if len(times) > 1 and value + reach[index] >= best_scanned \
+                and quantity not in ("contact_radius", "contact_area") \
+                and not stationary.never_stationary(solution, index, quantity):
+            time, value = X._refined(solution, scan, index, quantity, sign, (i, value), size)
+        results.append((time, value))
+    best_value = max(value for _, value in results)
+    best_time, best_value = min((time, value) for time, value in results if X.within_tie(value, best_value, size))
+    return best_time, sign * best_value
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_the_extrema_reduced_at_once_are_the_extrema_one_by_one(case, monkeypatch):
+    """Every quantity's maximum and minimum, each alone and the six of ``solution_extrema`` reduced in one array
+    (``ExtremumScan.prepare``), are what the route of one matrix and one sign at a time gives
+    (``_extremum_before``), bit for bit."""
+    for run in _runs(case):
+        reference = {(quantity, largest): _extremum_before(run, quantity, largest, X.scan_spans(run))
+                     for quantity in X.EXTREMUM_QUANTITIES for largest in (True, False)}
+        assert {key: X.extremum(run, *key) for key in reference} == reference
+        found = extrema.solution_extrema(run)
+        with monkeypatch.context() as patch:
+            patch.setattr(extrema, "extremum", lambda solution, quantity, largest, scan=None: _extremum_before(
+                solution, quantity, largest, X.scan_spans(solution) if scan is None else scan))
+            assert extrema.solution_extrema(run) == found

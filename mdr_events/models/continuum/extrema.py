@@ -51,6 +51,8 @@ def solution_extrema(solution: PathSolution) -> dict[str, float]:
     """
     out: dict[str, float] = {}
     scan = scan_spans(solution)
+    scan.prepare(tuple(quantity for quantity in EXTREMA_QUANTITIES  # (all at once)
+                       if not (quantity == "tangential_force" and solution.compressed)))
     for quantity in EXTREMA_QUANTITIES:
         # (Coulomb's law alone with adhesion: F_x and its end are the compressed zone's run)
         source = solution.compressed if quantity == "tangential_force" and solution.compressed else solution

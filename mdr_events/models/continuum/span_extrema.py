@@ -69,21 +69,57 @@ def _quantity(filled: dict[str, np.ndarray], quantity: str) -> np.ndarray:
 
 class ExtremumScan(NamedTuple):
     """Every span sampled at :data:`EXTREMUM_GRID` times (s from first contact), with the quantities
-    :func:`extremum` reads (the sliding fraction left out); ``matrices``: each quantity's scan as one matrix with what
-    both extremes read of it (:class:`ScanMatrix`), filled as :func:`extremum` asks (``None``: none kept)."""
+    :func:`extremum` reads (the sliding fraction left out); ``matrices``: each quantity's scan reduced to what both
+    extremes read of it (:class:`ScanMatrix`), filled as :func:`extremum` asks or at once by :meth:`prepare`
+    (``None``: none kept)."""
 
     times: list[np.ndarray]
     values: list[dict[str, np.ndarray]]
     matrices: dict[str, "ScanMatrix"] | None = None
 
+    def prepare(self, quantities: tuple[str, ...]) -> None:
+        """Reduce the scan of several quantities at once (:func:`_scan_matrices`: one array for all of them and both
+        signs), kept for :func:`extremum`; each value the one a quantity alone gives.
+
+        Parameters
+        ----------
+        quantities : tuple of str
+            Quantities of :data:`EXTREMUM_QUANTITIES`.
+        """
+        missing = tuple(quantity for quantity in quantities if quantity not in (self.matrices or {}))
+        if missing and self.matrices is not None:
+            self.matrices.update(_scan_matrices(self, missing))
+
+    def matrix(self, quantity: str) -> "ScanMatrix":
+        """``quantity``'s :class:`ScanMatrix`: the one kept, else reduced now (and kept where ``matrices`` is a dict).
+
+        Parameters
+        ----------
+        quantity : str
+            A quantity of :data:`EXTREMUM_QUANTITIES`.
+
+        Returns
+        -------
+        ScanMatrix
+        """
+        kept = self.matrices.get(quantity) if self.matrices is not None else None
+        if kept is None:
+            kept = _scan_matrices(self, (quantity,))[quantity]
+            if self.matrices is not None:
+                self.matrices[quantity] = kept
+        return kept
+
 
 class ScanMatrix(NamedTuple):
-    """One quantity of an :class:`ExtremumScan`, every span a row padded with ``nan``: what the maximum and the minimum
-    both read (the sign applied to ``matrix`` alone, each change and magnitude the same for either)."""
+    """One quantity of an :class:`ExtremumScan`, reduced span by span to what :func:`extremum` reads: for the maximum
+    (``[0]``: of ``q``) and the minimum (``[1]``: of ``−q``, larger is better) the best scanned value of each span
+    (``nan`` where none is finite) and the index of its earliest scan point within :data:`EXTREMUM_TIE` of it; each
+    span's largest change between neighbouring points (0 for one point; the same for either sign); the quantity's
+    largest magnitude over the run. Python lists: what the loop over the spans reads."""
 
-    matrix: np.ndarray
-    largest: np.ndarray
-    reach: np.ndarray
+    best: tuple[list[float], list[float]]
+    first: tuple[list[int], list[int]]
+    reach: list[float]
     size: float
 
 
@@ -244,17 +280,23 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
     if quantity == "tangential_force" and solution.compressed is not None:  # the compressed zone's spans hold F_x
         return extremum(solution.compressed, quantity, largest)
     scan = scan_spans(solution) if scan is None else scan
-    sign = 1.0 if largest else -1.0
-    best, reach, first, size = _scanned_extremes(scan, quantity, sign)
-    spans = np.flatnonzero(np.isfinite(best))
-    if not spans.size:
+    kept, side = scan.matrix(quantity), 0 if largest else 1
+    return _extreme(solution, scan, quantity, 1.0 if largest else -1.0, kept.best[side], kept.first[side], kept)
+
+
+def _extreme(solution: PathSolution, scan: ExtremumScan, quantity: str, sign: float, best: list[float],
+             first: list[int], kept: ScanMatrix) -> tuple[float, float]:
+    """:func:`extremum` of ``quantity`` from its reduced scan (each span's ``best`` signed value and ``first`` index of
+    ``sign``; ``kept``: its :class:`ScanMatrix`): the spans that can hold it refined, the earliest of the ties."""
+    spans = [index for index, value in enumerate(best) if math.isfinite(value)]
+    if not spans:
         return math.nan, math.nan
-    best_scanned = float(np.max(best[spans]))
+    best_scanned, reach, size = max(best[index] for index in spans), kept.reach, kept.size
     # the radius is monotone on a span: the area's extremes are at the span's ends, which the scan holds
     monotone = quantity in ("contact_radius", "contact_area")
     results = []
-    for index in spans.tolist():
-        times, i, value = scan.times[index], int(first[index]), float(best[index])
+    for index in spans:
+        times, i, value = scan.times[index], first[index], best[index]
         time = float(times[i])
         if len(times) > 1 and value + reach[index] >= best_scanned and not monotone \
                 and not never_stationary(solution, index, quantity):  # (else the scan's point stays)
@@ -292,35 +334,34 @@ def _scanned_extremes(scan: ExtremumScan, quantity: str,
                       sign: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
     """Per span of ``scan``, of ``sign`` times ``quantity``: the best scanned value (``nan`` where none is finite), its
     largest change between neighbouring scan points (0 for one point), the index of the earliest scan point within
-    :data:`EXTREMUM_TIE` of it; and the quantity's largest magnitude over the run. All spans at once, from the
-    quantity's :func:`_scan_matrix` (kept in ``scan`` for the other extreme)."""
-    kept = scan.matrices.get(quantity) if scan.matrices is not None else None
-    if kept is None:
-        kept = _scan_matrix(scan, quantity)
-        if scan.matrices is not None:
-            scan.matrices[quantity] = kept
-    matrix = kept.matrix * sign  # (exact: a change of sign)
-    with np.errstate(invalid="ignore"):
-        best = np.fmax.reduce(matrix, axis=1)
-        first = np.argmax(matrix >= (best - EXTREMUM_TIE * kept.largest)[:, None], axis=1)  # earliest tie
-    return best, kept.reach, first, kept.size
+    :data:`EXTREMUM_TIE` of it; and the quantity's largest magnitude over the run (its :class:`ScanMatrix` as arrays)."""
+    kept, side = scan.matrix(quantity), 0 if sign > 0 else 1
+    return np.array(kept.best[side]), np.array(kept.reach), np.array(kept.first[side]), kept.size
 
 
-def _scan_matrix(scan: ExtremumScan, quantity: str) -> ScanMatrix:
-    """``quantity``'s scan as a matrix (a row per span, padded with ``nan``), each row's largest magnitude and largest
-    change between neighbouring points (0 for one point; ``|Δ(−q)| = |Δq|`` exactly, so both extremes share it) and
-    the largest magnitude over the run."""
+def _scan_matrices(scan: ExtremumScan, quantities: tuple[str, ...]) -> dict[str, ScanMatrix]:
+    """The :class:`ScanMatrix` of each of ``quantities``, from their scans as one array (quantity, span, point; each
+    span's row padded with ``nan``) and its negative (the minimum's, exact): each row's largest magnitude and largest
+    change between neighbouring points (0 for one point; ``|Δ(−q)| = |Δq|`` exactly, so both extremes share it), its
+    best value of either sign and that value's earliest tie, and the largest magnitude over the run; every reduction
+    element by element, so each value is the one a matrix per quantity and sign gives."""
     width = max(len(times) for times in scan.times)
-    matrix = np.full((len(scan.times), width), np.nan)
+    table = np.full((len(quantities), len(scan.times), width), np.nan)
     for row, filled in enumerate(scan.values):
-        values = _quantity(filled, quantity)
-        matrix[row, :len(values)] = values
+        for k, quantity in enumerate(quantities):
+            values = _quantity(filled, quantity)
+            table[k, row, :len(values)] = values
     with np.errstate(invalid="ignore"):
-        largest = np.fmax.reduce(np.abs(matrix), axis=1)
-        reach = np.fmax(np.fmax.reduce(np.abs(np.diff(matrix, axis=1)), axis=1), 0.0) if width > 1 \
-            else np.zeros(len(largest))
-    size = float(np.fmax.reduce(largest[np.isfinite(largest)], initial=0.0))
-    return ScanMatrix(matrix, largest, reach, size)
+        largest = np.fmax.reduce(np.abs(table), axis=2)
+        reach = np.fmax(np.fmax.reduce(np.abs(np.diff(table, axis=2)), axis=2), 0.0) if width > 1 \
+            else np.zeros(largest.shape)
+        signed = np.stack([table, -table])  # (the maximum's, the minimum's)
+        best = np.fmax.reduce(signed, axis=3)
+        first = np.argmax(signed >= (best - EXTREMUM_TIE * largest)[..., None], axis=3)  # earliest tie
+    sizes = np.fmax.reduce(np.where(np.isfinite(largest), largest, 0.0), axis=1, initial=0.0)  # (largest >= 0)
+    best, first, reach = best.tolist(), first.tolist(), reach.tolist()
+    return {quantity: ScanMatrix((best[0][k], best[1][k]), (first[0][k], first[1][k]), reach[k], float(sizes[k]))
+            for k, quantity in enumerate(quantities)}
 
 
 def _bounded_search(solution: PathSolution, index: int, quantity: str, sign: float, times: np.ndarray,
