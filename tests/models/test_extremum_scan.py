@@ -16,7 +16,7 @@ from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum import solution as S
 from mdr_events.models.continuum import span_extrema as X
-from mdr_events.models.continuum import extrema, stationary
+from mdr_events.models.continuum import closed_form, extrema, stationary
 from mdr_events.models.continuum.dense import force_values
 from mdr_events.models.continuum.state import Regime
 from mdr_events.models.paths import exit_depth
@@ -229,3 +229,19 @@ def test_the_extrema_reduced_at_once_are_the_extrema_one_by_one(case, monkeypatc
             patch.setattr(extrema, "extremum", lambda solution, quantity, largest, scan=None: _extremum_before(
                 solution, quantity, largest, X.scan_spans(solution) if scan is None else scan))
             assert extrema.solution_extrema(run) == found
+
+
+def test_equal_parts_are_numpys_linspace():
+    """``closed_form.equal_parts`` (``ClosedForce.stationary``'s readings in Python floats) gives ``np.linspace``'s
+    numbers bit for bit: intervals of every scale, reversed, of no length, of one ulp and of denormal steps (NumPy's
+    other route)."""
+    rng = np.random.default_rng(28)
+    ends = [(0.0, 0.0), (1.0, 1.0), (0.0, 5e-324), (5e-324, 1e-323), (-1.0, 1.0), (0.7, 0.3), (-0.0, 0.0),
+            (1e300, 1.5e300)]
+    ends += [tuple(rng.normal(size=2) * 10.0 ** float(rng.integers(-300, 300))) for _ in range(500)]
+    ends += [(float(a), float(np.nextafter(a, np.inf))) for a in rng.normal(size=100)]
+    for low, high in ends:
+        for parts in (1, 2, closed_form.STATIONARY_READINGS, X.EXTREMUM_GRID - 1):
+            found = closed_form.equal_parts(low, high, parts)
+            expected = np.linspace(low, high, parts + 1).tolist()
+            assert [value.hex() for value in found] == [value.hex() for value in expected]

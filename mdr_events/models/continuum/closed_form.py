@@ -68,7 +68,8 @@ from .span_march import Marched, _first_root
 from .state import Cap
 from .tolerances import EPS
 
-__all__ = ["Primitive", "ClosedForce", "EVENT_READINGS", "STATIONARY_READINGS", "span_primitive", "closed_span"]
+__all__ = ["Primitive", "ClosedForce", "EVENT_READINGS", "STATIONARY_READINGS", "equal_parts", "span_primitive",
+           "closed_span"]
 
 #: Equal parts of a bracket at whose ends :meth:`ClosedForce.stationary` reads the force's rate for a change of sign
 #: (a stationary point inside a part is bracketed by it; a double root, touching zero, is not a sign change)
@@ -149,6 +150,28 @@ class Primitive(NamedTuple):
         return value + self.C0 * self.attach.depth(a) if self.C0 else value
 
 
+def equal_parts(low: float, high: float, parts: int) -> list[float]:
+    """``np.linspace(low, high, parts + 1).tolist()`` in Python floats, the same numbers (each ``k · step + low``, or
+    ``k / parts · (high − low) + low`` where the step is 0, and ``high`` last), without NumPy's cost for one interval.
+
+    Parameters
+    ----------
+    low, high : float
+        The interval's ends.
+    parts : int
+        The number of equal parts, at least 1.
+
+    Returns
+    -------
+    list of float
+        The ``parts + 1`` readings from ``low`` to ``high``.
+    """
+    delta = high - low
+    step = delta / parts
+    inner = [k * step + low for k in range(parts)] if step != 0 else [k / parts * delta + low for k in range(parts)]
+    return inner + [high]
+
+
 class ClosedForce:
     """A span's force in closed form, called like ``solve_ivp``'s dense output in the span's variable
     (``interpolant(var)[0]``; ``var`` the radius over ``scale``), with its breakpoints ``ts`` (the span's ends, its
@@ -190,7 +213,7 @@ class ClosedForce:
         list of float
             The roots, increasing (none: the force is monotone there).
         """
-        grid = sorted({*np.linspace(low, high, STATIONARY_READINGS + 1).tolist(),
+        grid = sorted({*equal_parts(float(low), float(high), STATIONARY_READINGS),
                        *(t for t in self.ts if low < t < high)})
         rate = lambda var: self.primitive.rate(var * self.scale)  # noqa: E731
         rates = [rate(var) for var in grid]

@@ -35,7 +35,7 @@ from __future__ import annotations
 import bisect
 import enum
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable, NamedTuple
 
 import numpy as np
@@ -90,6 +90,9 @@ class Span:
     zones : SpanZones, optional
         The layouts of a span of ``"tau0+coulomb"`` with adhesion (:mod:`.split_zones`): its sliding length is read
         off them (``None``: off :attr:`anchors`).
+    roots : dict, optional
+        The radius roots the solve took on a moving span's branch, ``(depth, rtol) -> Branch.radius(depth, rtol)``
+        (its ends': the extrema's scan reads them instead of finding them again, the same numbers; default none).
     """
 
     t_start: float
@@ -108,6 +111,8 @@ class Span:
     grading: Grading | None = None
     # (the layouts of a split span, :mod:`.split_zones`; ``None``: none. Documented in the class's docstring alone)
     zones: object = None
+    # (the solve's radius roots by depth. Documented in the class's docstring alone)
+    roots: dict[tuple[float, float], float] = field(default_factory=dict)
 
 
 class Trigger(enum.Enum):
@@ -211,9 +216,9 @@ class SpanIntegrator:
             # t0 differs from it by the depth's rounding over the branch's slope, which near the end of a
             # contact (a depth of 1e-12 m, computed from 1e-4 m) is 1e-11 of it, beyond the slip criterion's
             # resolution of the level
-            a_start = span.pinned_radius if span.pinned_radius > 0 else self.branch.radius(self.segment.d(t0), rtol)
+            a_start = span.pinned_radius if span.pinned_radius > 0 else self._root(self.segment.d(t0), rtol)
             at_fold = self.shrinking and t1 == self.segment.time_at_depth(self.branch.jump_off_depth)
-            a_stop = self.branch.jump_off_radius if at_fold else self.branch.radius(self.segment.d(t1), rtol)
+            a_stop = self.branch.jump_off_radius if at_fold else self._root(self.segment.d(t1), rtol)
             # the radius is integrated in units of its largest value on the span: solve_ivp finds an event's
             # root to an absolute 4 eps of the variable, which is then 4 eps relative (not 4e-16 m)
             self.scale = max(a_start, a_stop) if max(a_start, a_stop) > 0 else 1.0
@@ -227,6 +232,14 @@ class SpanIntegrator:
         self.depth_rate = self.segment.vd if self.segment.d(0.5 * (t0 + t1)) > 0.0 else 0.0
         self.x0 = self.segment.x(t0)
         self.lay_out(anchors, sliding)
+
+    def _root(self, depth: float, rtol: float) -> float:
+        """The branch's radius at ``depth`` (``Branch.radius``), kept in the span's :attr:`~Span.roots` (a depth of
+        0 left out: its sign, which a dict's key forgets, may matter)."""
+        radius = self.branch.radius(depth, rtol)
+        if depth != 0.0:
+            self.span.roots[depth, rtol] = radius
+        return radius
 
     def lay_out(self, anchors: AnchorMap, sliding: dict[Cap, bool]) -> None:
         """Each cap's slip zone at the span's start (:func:`~.zones.lay_out_zones`), and the tolerances of the levels.

@@ -162,8 +162,9 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
 
         def root(index: int, t: float) -> float:
             depth = max(float(spans[index].segment.d(t_contact + t)), branch.jump_off_depth)
-            if depth not in roots:
-                roots[depth] = branch.radius(depth, rtol)
+            if depth not in roots:  # (the solve's root of this depth where it took one: the same number)
+                found = spans[index].roots.get((depth, rtol)) if depth != 0.0 else None
+                roots[depth] = branch.radius(depth, rtol) if found is None else found
             return roots[depth]
 
         whole = [index for index in members if bounds[index][1] > bounds[index][0]]
