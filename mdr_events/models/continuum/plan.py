@@ -52,6 +52,9 @@ class SpanPlan(NamedTuple):
         The springs attaching during a growing span.
     jumped_from : float or None, default None
         The radius before springs jumped in at the start (``None``: no jump).
+    roots : tuple of (float, float, float), default ()
+        The radius roots the plan took on the span's branch, each ``(depth, rtol, Branch.radius(depth, rtol))``
+        (the span keeps them: :attr:`~.span.Span.roots`).
     """
 
     action: Action
@@ -69,6 +72,8 @@ class SpanPlan(NamedTuple):
     growth: tuple[Piece, ...] = ()
     #: the radius before springs jumped in at the start (``None``: no jump)
     jumped_from: float | None = None
+    #: the radius roots the plan took on the span's branch, ``(depth, rtol, radius)``
+    roots: tuple[tuple[float, float, float], ...] = ()
 
 
 def plan_span(model: ContinuumModel, state: ContactState, segment: Segment) -> SpanPlan:
@@ -154,7 +159,8 @@ def _plan_inward(model: ContinuumModel, state: ContactState, segment: Segment) -
     growth: tuple[Piece, ...] = ()
     jumped_from = None
     # an adhesive contact held above the surface (d < 0) presses in along the Δγ0 branch there, down to its fold
-    on_branch = model.grow.radius(max(d, model.grow.jump_off_depth), model.tolerances.radius_rtol)
+    rtol = model.tolerances.radius_rtol
+    on_branch = model.grow.radius(max(d, model.grow.jump_off_depth), rtol)
     if on_branch > a * (1.0 + RADIUS_DROP_SHARE) and d > threshold + _depth_scale(model, segment, t):
         # the held radius is inside the Δγ0 branch (after a drop onto the Δγ1 branch): the springs up to
         # the branch jump in at once, at the indenter's position, as at first contact (not a radius off by the
@@ -165,7 +171,8 @@ def _plan_inward(model: ContinuumModel, state: ContactState, segment: Segment) -
     t_end = _at_surface(model, segment, t, segment.t1, None)[0] if model.split else segment.t1
     if segment.d(t_end) > model.grow.edge_depth:  # (a flat face's edge reached: the radius stops, the next plan pins it)
         t_end = max(segment.time_at_depth(model.grow.edge_depth), t)
-    return SpanPlan(Action.CONTACT, Regime.GROWING, t, t_end, None, a, state.force, (), growth, jumped_from)
+    return SpanPlan(Action.CONTACT, Regime.GROWING, t, t_end, None, a, state.force, (), growth, jumped_from,
+                    ((max(d, model.grow.jump_off_depth), rtol, on_branch),))
 
 
 def _plan_outward(model: ContinuumModel, state: ContactState, segment: Segment) -> SpanPlan:
@@ -189,11 +196,12 @@ def _plan_outward(model: ContinuumModel, state: ContactState, segment: Segment) 
         t_end, kind = _at_surface(model, segment, t, t_end, kind)
     # the radius leaves the pinned or growing state at once (Δγ1 <= Δγ0)
     entry = () if state.detaching else (EventKind.DETACHMENT_STARTS,)
-    on_branch = model.shrink.radius(d, model.tolerances.radius_rtol)
+    rtol = model.tolerances.radius_rtol
+    on_branch = model.shrink.radius(d, rtol)
     if on_branch < a * (1.0 - RADIUS_DROP_SHARE):
         # Δγ1 < Δγ0: the boundary springs are stretched beyond the Δγ1 limit and the radius drops onto the
         # Δγ1 branch at once; the springs it loses take their force with them and the smaller cap ū(a)
         # clips the rest (anchor map form)
         a = on_branch
         force = state.anchors.tangential_force(model.caps, model.params.G_star, segment.x(t), a, d)
-    return SpanPlan(Action.CONTACT, Regime.SHRINKING, t, t_end, kind, a, force, entry)
+    return SpanPlan(Action.CONTACT, Regime.SHRINKING, t, t_end, kind, a, force, entry, roots=((d, rtol, on_branch),))

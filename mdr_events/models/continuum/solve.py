@@ -30,7 +30,7 @@ from .regions import Region
 from .solution import PathSolution, evaluate, sample_times
 from .integrate import integrate_span
 from .layer_reach import check_layer_reach
-from .span import Span, SpanIntegrator, SpanOutcome, Trigger
+from .span import Span, SpanIntegrator, SpanOutcome, Trigger, root_key
 from .split_map import SplitAnchorMap
 from .split_solve import commit, new_anchors, split_slip_transition
 from .split_span import SplitSpanIntegrator
@@ -187,7 +187,8 @@ def advance(model: ContinuumModel, state: ContactState, plan: SpanPlan, segment:
         end_contact(state)
         return [(EventKind.PULL_OFF, plan.t_start, plan.radius, 0)]
     logged = enter(model, state, plan, segment)
-    span = Span(plan.t_start, plan.t_end, segment, plan.regime, pinned_radius=plan.radius)
+    span = Span(plan.t_start, plan.t_end, segment, plan.regime, pinned_radius=plan.radius,
+                roots={root_key(depth, rtol): radius for depth, rtol, radius in plan.roots})
     if model.split:  # two regions: each cap of each, and the maps the span reads them from
         outcome = integrate_span(model, state.anchors, span, state.regions, plan.force, SplitSpanIntegrator)
         record = commit(state, outcome, span)

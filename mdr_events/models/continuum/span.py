@@ -91,8 +91,9 @@ class Span:
         The layouts of a span of ``"tau0+coulomb"`` with adhesion (:mod:`.split_zones`): its sliding length is read
         off them (``None``: off :attr:`anchors`).
     roots : dict, optional
-        The radius roots the solve took on a moving span's branch, ``(depth, rtol) -> Branch.radius(depth, rtol)``
-        (its ends': the extrema's scan reads them instead of finding them again, the same numbers; default none).
+        The radius roots the solve took on a moving span's branch, :func:`root_key` of ``(depth, rtol)`` ->
+        ``Branch.radius(depth, rtol)`` (its ends': the extrema's scan reads them instead of finding them again, the
+        same numbers; default none).
     """
 
     t_start: float
@@ -112,7 +113,26 @@ class Span:
     # (the layouts of a split span, :mod:`.split_zones`; ``None``: none. Documented in the class's docstring alone)
     zones: object = None
     # (the solve's radius roots by depth. Documented in the class's docstring alone)
-    roots: dict[tuple[float, float], float] = field(default_factory=dict)
+    roots: dict[tuple[float, float, float], float] = field(default_factory=dict)
+
+
+def root_key(depth: float, rtol: float) -> tuple[float, float, float]:
+    """The key of ``Branch.radius(depth, rtol)`` in :attr:`Span.roots`: the depth, the tolerance and the depth's sign
+    (``0.0`` and ``-0.0`` are one key of a dict alone, and a branch's root may tell them apart).
+
+    Parameters
+    ----------
+    depth : float
+        The depth (m).
+    rtol : float
+        The root's relative accuracy.
+
+    Returns
+    -------
+    tuple of float
+        ``(depth, rtol, ±1.0)``.
+    """
+    return depth, rtol, math.copysign(1.0, depth)
 
 
 class Trigger(enum.Enum):
@@ -234,11 +254,9 @@ class SpanIntegrator:
         self.lay_out(anchors, sliding)
 
     def _root(self, depth: float, rtol: float) -> float:
-        """The branch's radius at ``depth`` (``Branch.radius``), kept in the span's :attr:`~Span.roots` (a depth of
-        0 left out: its sign, which a dict's key forgets, may matter)."""
+        """The branch's radius at ``depth`` (``Branch.radius``), kept in the span's :attr:`~Span.roots`."""
         radius = self.branch.radius(depth, rtol)
-        if depth != 0.0:
-            self.span.roots[depth, rtol] = radius
+        self.span.roots[root_key(depth, rtol)] = radius
         return radius
 
     def lay_out(self, anchors: AnchorMap, sliding: dict[Cap, bool]) -> None:

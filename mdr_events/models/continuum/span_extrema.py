@@ -14,7 +14,7 @@ from scipy import optimize
 from .graded import span_variable
 from .solution import (PathSolution, _compressed_zone, _fill_normal_force, _fill_tangential_force, _pinned_kinematics,
                        evaluate_span)
-from .span import Span, Variable
+from .span import Span, Variable, root_key
 from .state import Regime
 from .stationary import never_stationary, stationary_points
 
@@ -147,25 +147,28 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
     :data:`EXTREMUM_GRID` points on a span of positive length, its start alone on one of none. A pinned span's times
     evenly spaced (``np.linspace``); a moving span's radii evenly spaced from the radius at its start to that at its
     end (roots of their depths: :meth:`~.branch.Branch.radius`, each depth once, a span's end being the next span's
-    start) and the time of each radius that of its depth on the branch, made non-decreasing, as
-    :func:`_radius_grid` gives them span by span (``tests/models/test_extremum_scan.py`` compares the two)."""
+    start; the roots the solve took, kept in the spans' :attr:`~.span.Span.roots`, read there: the same numbers) and
+    the time of each radius that of its depth on the branch, made non-decreasing, as :func:`_radius_grid` gives them
+    span by span (``tests/models/test_extremum_scan.py`` compares the two)."""
     spans, t_contact = solution.spans, solution.t_contact
     bounds = [(span.t_start - t_contact, span.t_end - t_contact) for span in spans]
     grids: list = [None] * len(spans)
     radii: list = [None] * len(spans)
-    roots: dict = {}  # (the branch, the depth) -> the radius
+    roots: dict = {}  # (one branch's root_key of a depth) -> the radius
     for regime in (Regime.GROWING, Regime.SHRINKING):
         members = [index for index, span in enumerate(spans) if span.regime is regime]
         if not members:
             continue
         branch, rtol = solution.model.branch(regime), solution.model.tolerances.radius_rtol
+        for index in members:  # (the roots the solve took on this branch, at any of its spans)
+            roots.update(spans[index].roots)
 
         def root(index: int, t: float) -> float:
             depth = max(float(spans[index].segment.d(t_contact + t)), branch.jump_off_depth)
-            if depth not in roots:  # (the solve's root of this depth where it took one: the same number)
-                found = spans[index].roots.get((depth, rtol)) if depth != 0.0 else None
-                roots[depth] = branch.radius(depth, rtol) if found is None else found
-            return roots[depth]
+            key = root_key(depth, rtol)
+            if key not in roots:  # (the solve's root of this depth where it took one: the same number)
+                roots[key] = branch.radius(depth, rtol)
+            return roots[key]
 
         whole = [index for index in members if bounds[index][1] > bounds[index][0]]
         for index in members:
