@@ -154,13 +154,14 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
     bounds = [(span.t_start - t_contact, span.t_end - t_contact) for span in spans]
     grids: list = [None] * len(spans)
     radii: list = [None] * len(spans)
-    roots: dict = {}  # (one branch's root_key of a depth) -> the radius
+    moving, ends = [], []  # (the moving spans of positive length, the radii at their ends)
     for regime in (Regime.GROWING, Regime.SHRINKING):
         members = [index for index, span in enumerate(spans) if span.regime is regime]
         if not members:
             continue
         branch, rtol = solution.model.branch(regime), solution.model.tolerances.radius_rtol
-        for index in members:  # (the roots the solve took on this branch, at any of its spans)
+        roots: dict = {}  # (this branch's root_key of a depth) -> the radius: the solve's roots, at any of its spans
+        for index in members:
             roots.update(spans[index].roots)
 
         def root(index: int, t: float) -> float:
@@ -170,18 +171,21 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
                 roots[key] = branch.radius(depth, rtol)
             return roots[key]
 
-        whole = [index for index in members if bounds[index][1] > bounds[index][0]]
         for index in members:
-            if index not in whole:  # (a span of no length: its start alone)
+            if bounds[index][1] > bounds[index][0]:
+                moving.append(index)
+                ends.append([root(index, t) for t in bounds[index]])
+            else:  # (a span of no length: its start alone)
                 grids[index], radii[index] = np.array([bounds[index][0]]), np.array([root(index, bounds[index][0])])
-        if whole:
-            _moving_grids(solution, branch, whole, [[root(index, t) for t in bounds[index]] for index in whole],
-                          grids, radii)
-        roots.clear()  # (the other branch's radii are other roots)
-    rest = [index for index in range(len(spans)) if grids[index] is None and bounds[index][1] > bounds[index][0]]
-    if rest:  # (the pinned spans and the approach: their times evenly spaced, as the rows of one matrix)
-        lower, upper = (np.array([bounds[index][k] for index in rest]) for k in (0, 1))
-        for index, row in zip(rest, _linspace_rows(lower, upper, EXTREMUM_GRID)):
+    taken = set(moving)
+    rest = [index for index in range(len(spans)) if grids[index] is None and index not in taken
+            and bounds[index][1] > bounds[index][0]]  # (the pinned spans and the approach: their times evenly spaced)
+    if moving or rest:  # (the moving spans' radii and the others' times as the rows of one matrix)
+        rows = _linspace_rows(np.array([end[0] for end in ends] + [bounds[index][0] for index in rest]),
+                              np.array([end[1] for end in ends] + [bounds[index][1] for index in rest]), EXTREMUM_GRID)
+        if moving:
+            _moving_grids(solution, moving, rows[:len(moving)], grids, radii)
+        for index, row in zip(rest, rows[len(moving):]):
             grids[index] = row
     for index in range(len(spans)):
         if grids[index] is None:  # (a span of no length: its start alone)
@@ -189,16 +193,21 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
     return grids, radii
 
 
-def _moving_grids(solution: PathSolution, branch, members: list[int], ends: list[list[float]], grids: list,
-                  radii: list) -> None:
-    """:func:`_scan_grids` of the moving spans ``members`` of one branch with the radii at their ``ends``: their radii
-    and times as the rows of two matrices, the depths of all their inner radii in one call of the branch's
-    :meth:`~.branch.Branch.depths` (element by element: the values of a call per span); each row stored in ``grids``
+def _moving_grids(solution: PathSolution, members: list[int], matrix: np.ndarray, grids: list, radii: list) -> None:
+    """:func:`_scan_grids` of the moving spans ``members`` (of either branch) with their radii as the rows of
+    ``matrix``: the depths of each branch's inner radii in one call of its :meth:`~.branch.Branch.depths` (element by
+    element: the values of a call per span), the times of all as the rows of one matrix; each row stored in ``grids``
     and ``radii`` at its span's index."""
     spans, t_contact = solution.spans, solution.t_contact
-    start, stop = (np.array([end[k] for end in ends]) for k in (0, 1))
-    matrix = _linspace_rows(start, stop, EXTREMUM_GRID)
-    depths = branch.depths(np.ascontiguousarray(matrix[:, 1:-1]).reshape(-1)).reshape(len(members), -1)
+    regimes = [spans[index].regime for index in members]
+    depths = np.empty((len(members), matrix.shape[1] - 2))
+    for regime in (Regime.GROWING, Regime.SHRINKING):
+        rows = [row for row, each in enumerate(regimes) if each is regime]
+        if len(rows) == len(members):  # (one branch: every row)
+            depths = solution.model.branch(regime).depths(np.ascontiguousarray(matrix[:, 1:-1]).reshape(-1)) \
+                .reshape(len(members), -1)
+        elif rows:
+            depths[rows] = solution.model.branch(regime).depths(matrix[rows, 1:-1].reshape(-1)).reshape(len(rows), -1)
     segments = [spans[index].segment for index in members]
     t0, ds, vd = (np.array([getattr(segment, name) for segment in segments])[:, None] for name in ("t0", "ds", "vd"))
     lower = np.array([spans[index].t_start - t_contact for index in members])[:, None]
