@@ -101,6 +101,7 @@ class ExtremumScan(NamedTuple):
         Returns
         -------
         ScanMatrix
+            What both extremes of ``quantity`` read of the scan.
         """
         kept = self.matrices.get(quantity) if self.matrices is not None else None
         if kept is None:
