@@ -285,7 +285,8 @@ def continuum_quantities(model: ModelJob, path: Path, method: Continuum, limits:
         return play_continuum_quantities(model, path, method, limits, times)
     solution = solve_path(model.params, path, method.tolerances, limits, model.profile, model.friction,
                           layer=model.contact.layer)
-    scan = scan_spans(solution)  # one scan serves every extremum
+    scan = scan_spans(solution)  # one scan serves every extremum, its quantities reduced at once
+    scan.prepare(("normal_force", "contact_area") + (() if solution.compressed else ("tangential_force",)))
     out = {"normal_force_min": extremum(solution, "normal_force", largest=False, scan=scan)[1],
            "tangential_force_max": max(abs(extremum(solution, "tangential_force", largest=True, scan=scan)[1]),
                                        abs(extremum(solution, "tangential_force", largest=False, scan=scan)[1])),
