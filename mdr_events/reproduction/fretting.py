@@ -65,7 +65,7 @@ FRETTING_VARIABLES: dict[str, tuple[tuple[str, ...], str, str]] = {
                                                     "same direction, ending the last closed loop"),
     "dissipated_energy": ((CUSTOM_DIMENSION,), "J",
                           "energy dissipated over the last closed loop, integral of F_x dx from the continuum "
-                          "solution (mdr_events.models.continuum.work.tangential_work)"),
+                          "solution (mdr_events.models.continuum.tangential_work)"),
     "dissipated_energy_closed_form": ((CUSTOM_DIMENSION,), "J",
                                       "energy dissipated per cycle by the fixed contact, 4 pi a_max^2 tau0 (X - u_bar)"),
     "parallelogram_x": ((CUSTOM_DIMENSION, "corner"), "m",
@@ -303,7 +303,7 @@ def fretting_lines(study: FrettingStudy) -> list[str]:
         f"is the parallelogram of the fixed contact: plateaus ±π a² τ0, slopes 2G* a (`{FRETTING_STEM}.png`, dashed).",
         "Energy dissipated per cycle, over the last closed loop of each case (between its last two tangential",
         f"reversals of the same direction, from the event log `{FRETTING_STEM}_events.csv`). Continuum: ∫F_x dx of the",
-        "solution, `mdr_events.models.continuum.work.tangential_work`. Discrete: the paper's spring model,",
+        "solution, `mdr_events.models.continuum.tangential_work`. Discrete: the paper's spring model,",
         f"Δx = {discrete['dx'] * 1e6:g} µm, {study.discrete.sizes['time'] - 1} time steps (the indenter moves v dt = "
         f"{discrete['dt'] * speed * 1e6:.2f} µm per step), the trapezoid",
         "rule on its samples between the same two times (its ends up to one step inside the loop).",
