@@ -286,15 +286,53 @@ class Branch:
         if self.work == 0.0 or not self.quartic_samples:  # (Hertz, or another indenter: its own)
             return self.radii(depth)
         depth = np.asarray(depth, dtype=float)
+        root, linear, constant = self._closed_roots(depth)
+        self._iterate_near_fold(root, linear, constant)
+        return np.where(depth >= self.jump_off_depth, root.reshape(depth.shape)**2, np.nan)
+
+    def grouped_sample_radii(self, depths: list[np.ndarray]) -> list[np.ndarray]:
+        """:meth:`sample_radii` of each group of depths (1-D arrays), bit for bit: the quartic's closed form, element by
+        element, in one call over all of them; the iteration near the fold (:data:`NEAR_FOLD`) group by group, as each
+        group's own call runs it (an iteration's last step depends on the elements it runs for). Any branch without
+        the closed form: its call per group.
+
+        Parameters
+        ----------
+        depths : list of numpy.ndarray
+            The groups of depths (m), each 1-D.
+
+        Returns
+        -------
+        list of numpy.ndarray
+            The radii (m) of each group (``nan`` below the jump-off depth).
+        """
+        if self.work == 0.0 or not self.quartic_samples or len(depths) < 2:
+            return [self.sample_radii(depth) for depth in depths]
+        depth = np.concatenate(depths)
+        root, linear, constant = self._closed_roots(depth)
+        radii, begin = [], 0
+        for group in depths:
+            part = slice(begin, begin + len(group))
+            self._iterate_near_fold(root[part], linear, constant[part])
+            radii.append(np.where(group >= self.jump_off_depth, root[part]**2, np.nan))
+            begin = part.stop
+        return radii
+
+    def _closed_roots(self, depth: np.ndarray) -> tuple[np.ndarray, float, np.ndarray]:
+        """The quartic's root ``s = √a`` of each depth in closed form (not below the jump-off's), flat, with the
+        quartic's linear and constant coefficients (:meth:`sample_radii`)."""
         linear, constant = self._array_coefficients(depth, *self._arguments)[3:]
         linear, constant = float(linear), np.broadcast_to(constant, depth.shape)
         root = np.atleast_1d(np.maximum(depressed_quartic_root(linear, constant), self._floor))
+        return root, linear, np.atleast_1d(constant)
+
+    def _iterate_near_fold(self, root: np.ndarray, linear: float, constant: np.ndarray) -> None:
+        """The roots ``root`` (flat, changed in place) near the fold taken from the iteration instead: where the
+        quartic's slope is below :data:`NEAR_FOLD` of its leading term's."""
         cube = root**3
         near = (4.0 * cube + linear < NEAR_FOLD * 4.0 * cube).reshape(root.shape)
         if near.any():  # (the iteration's own radius at the fold: that of the events and of the extrema there)
-            root[near] = analytic.positive_polynomial_root([1.0, 0.0, 0.0, linear, np.atleast_1d(constant)[near]],
-                                                           lower=self._floor)
-        return np.where(depth >= self.jump_off_depth, root.reshape(depth.shape)**2, np.nan)
+            root[near] = analytic.positive_polynomial_root([1.0, 0.0, 0.0, linear, constant[near]], lower=self._floor)
 
     def radius(self, depth: float, rtol: float) -> float:
         """Stable-branch radius at ``depth``, converged to ``rtol``.
