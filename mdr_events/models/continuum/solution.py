@@ -172,17 +172,29 @@ def _sampled_radii(model, spans: list[Span], depths: list[np.ndarray]) -> list[n
     depth = [np.maximum(d, branch.jump_off_depth) for d in depths]
     # a sample at a span's end (to END_ULPS of its depth) takes the iteration's radius: that of the span's event,
     # which the pinned span after it holds
-    ends = []
-    for span, each in zip(spans, depth):
-        at_end = np.zeros(each.shape, dtype=bool)
-        for end in (span.segment.d(span.t_start), span.segment.d(span.t_end)):
-            at_end |= np.abs(each - end) <= END_ULPS * np.spacing(abs(end))
-        ends.append(at_end)
-    depth, ends = (np.concatenate(parts) if len(parts) > 1 else parts[0] for parts in (depth, ends))
+    lengths = [len(d) for d in depths] if all(np.ndim(d) == 1 for d in depths) else None
+    ends = _at_ends(spans, depth, lengths)
+    depth = np.concatenate(depth) if len(depth) > 1 else depth[0]
     radii = branch.sample_radii(depth)
     if ends.any():
         radii[ends] = branch.radii(depth[ends])
     return _split(radii, [len(d) for d in depths])
+
+
+def _at_ends(spans: list[Span], depths: list[np.ndarray], lengths: list[int] | None) -> np.ndarray:
+    """Whether each depth (of each span, concatenated) lies within :data:`END_ULPS` of its span's depth at its start or
+    at its end; spans of 1-D depths (``lengths``) all at once, each with its span's ends repeated over its depths."""
+    ends = np.array([[span.segment.d(span.t_start), span.segment.d(span.t_end)] for span in spans], dtype=float)
+    if lengths is None:  # (a span's depths of another shape: span by span)
+        found = []
+        for (start, end), each in zip(ends, depths):
+            found.append((np.abs(each - start) <= END_ULPS * np.spacing(abs(start))) |
+                         (np.abs(each - end) <= END_ULPS * np.spacing(abs(end))))
+        return np.concatenate(found) if len(found) > 1 else found[0]
+    rows = np.repeat(ends, lengths, axis=0)
+    tolerance = END_ULPS * np.spacing(np.abs(rows))
+    depth = np.concatenate(depths) if len(depths) > 1 else depths[0]
+    return (np.abs(depth - rows[:, 0]) <= tolerance[:, 0]) | (np.abs(depth - rows[:, 1]) <= tolerance[:, 1])
 
 
 def _split(values: np.ndarray, lengths: list[int]) -> list[np.ndarray]:
