@@ -88,6 +88,10 @@ class Branch:
         self._integrals = symbolic.relation("jkr_depth_integral").numeric
         self._coefficients = symbolic.relation("jkr_radius_quartic").scalar_coefficients
         self._array_coefficients = symbolic.relation("jkr_radius_quartic").coefficients
+        # (the NumPy forms with the branch's constants bound once: a run reads them at every fill and scan)
+        self._quartic_of = symbolic.relation("jkr_radius_quartic").bound_coefficients(*self._arguments)
+        self._depths_of = symbolic.relation("jkr_depth").bound_numeric(*self._arguments)
+        self._integrals_of = symbolic.relation("jkr_depth_integral").bound_numeric(*self._arguments)
         if work > 0:
             point = analytic.jump_off(params, work)
             self.jump_off_radius, self.jump_off_depth = point["contact_radius"], point["depth"]
@@ -197,7 +201,7 @@ class Branch:
         a = np.asarray(a, dtype=float)
         if self._integrals is None:
             return np.reshape([self.integral(float(v)) for v in a.ravel()], a.shape)
-        value = np.asarray(self._integrals(np.where(a > 0, a, 1.0), *self._arguments), dtype=float)
+        value = np.asarray(self._integrals_of(np.where(a > 0, a, 1.0)), dtype=float)
         return np.where(a > 0, value, 0.0)
 
     def depth_term(self, a: float) -> float:
@@ -245,7 +249,7 @@ class Branch:
             The depths (m), the shape of ``a`` (0 at ``a <= 0``).
         """
         a = np.asarray(a, dtype=float)
-        value = symbolic.relation("jkr_depth").numeric(np.where(a > 0, a, 1.0), *self._arguments)
+        value = self._depths_of(np.where(a > 0, a, 1.0))
         return np.where(a > 0, value, 0.0)
 
     def radii(self, depth: np.ndarray) -> np.ndarray:
@@ -265,7 +269,7 @@ class Branch:
         if self.work == 0.0:
             return np.asarray(analytic.jkr_contact_radius(depth, self.params, self.work))
         # (jkr_contact_radius's own steps, its checks and the jump-off point taken once, in __init__)
-        root = analytic.positive_polynomial_root(self._array_coefficients(depth, *self._arguments), lower=self._floor)
+        root = analytic.positive_polynomial_root(self._quartic_of(depth), lower=self._floor)
         return np.where(depth >= self.jump_off_depth, root**2, np.nan)
 
     def sample_radii(self, depth: np.ndarray) -> np.ndarray:
@@ -321,7 +325,7 @@ class Branch:
     def _closed_roots(self, depth: np.ndarray) -> tuple[np.ndarray, float, np.ndarray]:
         """The quartic's root ``s = √a`` of each depth in closed form (not below the jump-off's), flat, with the
         quartic's linear and constant coefficients (:meth:`sample_radii`)."""
-        linear, constant = self._array_coefficients(depth, *self._arguments)[3:]
+        linear, constant = self._quartic_of(depth)[3:]
         linear, constant = float(linear), np.broadcast_to(constant, depth.shape)
         root = np.atleast_1d(np.maximum(depressed_quartic_root(linear, constant), self._floor))
         return root, linear, np.atleast_1d(constant)
@@ -375,6 +379,7 @@ class PowerLawBranch(Branch):
         self._slopes = symbolic.relation("power_law_depth_slope").numeric
         self._integral = symbolic.relation("power_law_depth_integral").scalar
         self._integrals = symbolic.relation("power_law_depth_integral").numeric
+        self._integrals_of = symbolic.relation("power_law_depth_integral").bound_numeric(*self._arguments)
         point = power_law.jump_off(profile, params, work)
         self.jump_off_radius, self.jump_off_depth = point["contact_radius"], point["depth"]
         self._floor = math.sqrt(self.jump_off_radius)

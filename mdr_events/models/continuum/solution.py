@@ -191,10 +191,11 @@ def _at_ends(spans: list[Span], depths: list[np.ndarray], lengths: list[int] | N
             found.append((np.abs(each - start) <= END_ULPS * np.spacing(abs(start))) |
                          (np.abs(each - end) <= END_ULPS * np.spacing(abs(end))))
         return np.concatenate(found) if len(found) > 1 else found[0]
-    rows = np.repeat(ends, lengths, axis=0)
-    tolerance = END_ULPS * np.spacing(np.abs(rows))
+    tolerance = END_ULPS * np.spacing(np.abs(ends))
     depth = np.concatenate(depths) if len(depths) > 1 else depths[0]
-    return (np.abs(depth - rows[:, 0]) <= tolerance[:, 0]) | (np.abs(depth - rows[:, 1]) <= tolerance[:, 1])
+    at_start, at_end = (np.abs(depth - np.repeat(ends[:, k], lengths)) <= np.repeat(tolerance[:, k], lengths)
+                        for k in (0, 1))
+    return at_start | at_end
 
 
 def _split(values: np.ndarray, lengths: list[int]) -> list[np.ndarray]:
