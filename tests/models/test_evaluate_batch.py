@@ -17,7 +17,7 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum import solution as S
-from mdr_events.models.continuum.branch import NEAR_FOLD, Branch
+from mdr_events.models.continuum.branch import NEAR_FOLD, Branch, TabulatedBranch
 from mdr_events.models.paths import exit_depth
 from mdr_events.theory import analytic, quartic
 
@@ -121,6 +121,21 @@ def test_the_grouped_sample_radii_are_each_groups_own():
     root = np.sqrt(branch.sample_radii(groups[1]))
     linear = float(branch._array_coefficients(groups[1], *branch._arguments)[3])
     assert np.any(4.0 * root**3 + linear < NEAR_FOLD * 4.0 * root**3)
+
+
+@pytest.mark.parametrize("branch", [TabulatedBranch(PAPER, PAPER.dgamma0, _table()),
+                                    TabulatedBranch(PAPER, PAPER.dgamma1, _table()),
+                                    TabulatedBranch(HERTZ, 0.0, _table())], ids=["table", "table, Δγ1", "table, Hertz"])
+def test_a_tables_grouped_sample_radii_are_each_groups_own(branch):
+    """A table's radii are element by element (``elementwise_radii``): one call for all groups gives each group's own,
+    on the grid's depths, between them, at and below the jump-off and beyond the table's deepest depth."""
+    assert branch.elementwise_radii
+    fold, deepest = branch.jump_off_depth, branch.line.deepest
+    groups = [np.array([fold]), np.linspace(fold, deepest, 301), np.array(branch.line._depths[:7]),
+              np.array([fold - abs(fold) - 1e-9, deepest * (1 + 1e-6), 0.5 * deepest]), np.linspace(0.0, 1e-6, 5)]
+    found = branch.grouped_sample_radii(groups)
+    for got, depth in zip(found, groups):
+        np.testing.assert_array_equal(got, branch.sample_radii(depth))
 
 
 @pytest.mark.parametrize("delta", [np.linspace(-0.47, 3.0, 1001), np.geomspace(1e-40, 1e3, 64),

@@ -67,6 +67,11 @@ class Branch:
     convex = True
     #: the NumPy form of ``dd/da`` (:meth:`slopes`; ``None``: a branch without one, read point by point)
     _slopes = None
+    #: whether :meth:`radii` is element by element (each radius the one of a call on its depth alone, whatever else is
+    #: in the array: a table's, :meth:`~mdr_events.theory.tabulated.TabulatedBranch.radii`), so that
+    #: :meth:`grouped_sample_radii` calls it once for all groups; ``False`` where an iteration's last step depends on
+    #: the elements it runs for
+    elementwise_radii = False
 
     def __init_subclass__(cls, **kwargs):
         """A subclass's :attr:`quartic_samples` and :attr:`convex` are ``False`` unless its own body declares them
@@ -297,8 +302,9 @@ class Branch:
     def grouped_sample_radii(self, depths: list[np.ndarray]) -> list[np.ndarray]:
         """:meth:`sample_radii` of each group of depths (1-D arrays), bit for bit: the quartic's closed form, element by
         element, in one call over all of them; the iteration near the fold (:data:`NEAR_FOLD`) group by group, as each
-        group's own call runs it (an iteration's last step depends on the elements it runs for). Any branch without
-        the closed form: its call per group.
+        group's own call runs it (an iteration's last step depends on the elements it runs for). A branch whose
+        :meth:`radii` is element by element (:attr:`elementwise_radii`): one call for all; any other: its call per
+        group.
 
         Parameters
         ----------
@@ -310,6 +316,13 @@ class Branch:
         list of numpy.ndarray
             The radii (m) of each group (``nan`` below the jump-off depth).
         """
+        if len(depths) > 1 and self.elementwise_radii and (self.work == 0.0 or not self.quartic_samples):
+            radii, begin = self.sample_radii(np.concatenate(depths)), 0
+            parts = []
+            for depth in depths:
+                parts.append(radii[begin:begin + len(depth)])
+                begin += len(depth)
+            return parts
         if self.work == 0.0 or not self.quartic_samples or len(depths) < 2:
             return [self.sample_radii(depth) for depth in depths]
         depth = np.concatenate(depths)
@@ -478,6 +491,7 @@ class TabulatedBranch(Branch):
     depth a bracketed root above the jump-off."""
 
     tip_power = None  # (a table's g need not be a power at its first point)
+    elementwise_radii = True
 
     def __init__(self, params: Parameters, work: float, profile: TabulatedProfile):
         self.params, self.work, self.profile = params, work, profile
