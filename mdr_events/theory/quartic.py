@@ -65,9 +65,7 @@ def depressed_quartic_root(linear: float, constant) -> np.ndarray:
     delta = np.where(np.abs(delta) < TINY_SHIFT, TINY_SHIFT, delta)
     size = np.abs(delta)
     argument = 3.0 / (16.0 * size) * np.sqrt(3.0 / size)
-    with np.errstate(invalid="ignore"):
-        m = 2.0 * np.sqrt(size / 3.0) * np.where(delta > 0, np.sinh(np.arcsinh(argument) / 3.0),
-                                                  np.cosh(np.arccosh(np.maximum(argument, 1.0)) / 3.0))
+    m = 2.0 * np.sqrt(size / 3.0) * _hyperbolic(delta > 0, argument)
     root = np.sqrt(2.0 * m)
     s = scale * 0.5 * (root + np.sqrt(np.maximum(2.0 / root - 2.0 * m, 0.0)))
     cube = s * s * s
@@ -76,3 +74,19 @@ def depressed_quartic_root(linear: float, constant) -> np.ndarray:
     step = np.divide(value, slope, out=np.zeros(s.shape), where=slope != 0.0)
     step = np.where(np.abs(step) <= POLISH_SHARE * s, step, 0.0)  # (at the fold: the start as it is)
     return np.maximum(s - step, scale * FOLD_ROOT)
+
+
+def _hyperbolic(positive: np.ndarray, argument: np.ndarray) -> np.ndarray:
+    """The resolvent's hyperbolic factor: ``sinh(arsinh(arg)/3)`` where ``positive`` (``δ > 0``), ``cosh(arcosh(max(arg,
+    1))/3)`` elsewhere, each form computed only where it is taken (element by element the values of both computed
+    everywhere and chosen, at half the cost)."""
+    if positive.all():
+        return np.sinh(np.arcsinh(argument) / 3.0)
+    with np.errstate(invalid="ignore"):
+        if not positive.any():
+            return np.cosh(np.arccosh(np.maximum(argument, 1.0)) / 3.0)
+        factor = np.empty(argument.shape)
+        factor[positive] = np.sinh(np.arcsinh(argument[positive]) / 3.0)
+        negative = ~positive
+        factor[negative] = np.cosh(np.arccosh(np.maximum(argument[negative], 1.0)) / 3.0)
+    return factor

@@ -263,6 +263,38 @@ class Relation:
         args, fn = self._coefficients
         return fn(*self._ordered(values, named, args))
 
+    def bound_numeric(self, *trailing) -> Callable[..., object]:
+        """:meth:`numeric` with its last arguments fixed, converted once (a model's constants: a run calls it many
+        times); the function of the first arguments gives :meth:`numeric`'s values, bit for bit.
+
+        Parameters
+        ----------
+        *trailing : float or array_like
+            The last arguments of :attr:`args`, in order.
+
+        Returns
+        -------
+        callable
+            ``f(*leading)``: :meth:`numeric` of ``(*leading, *trailing)``; wrong counts raise ``TypeError``.
+        """
+        return _bound(self.key, self._numeric, self.args, trailing)
+
+    def bound_coefficients(self, *trailing) -> Callable[..., list]:
+        """:meth:`coefficients` with its last arguments fixed, converted once (:meth:`bound_numeric`'s way).
+
+        Parameters
+        ----------
+        *trailing : float or array_like
+            The last arguments of :meth:`coefficients`, in order.
+
+        Returns
+        -------
+        callable
+            ``f(*leading)``: :meth:`coefficients` of ``(*leading, *trailing)``; wrong counts raise ``TypeError``.
+        """
+        args, function = self._coefficients
+        return _bound(self.key, function, args, trailing)
+
     def _ordered(self, values, named, args=None):
         args = self.args if args is None else args
         if values and named:
@@ -283,6 +315,22 @@ class Relation:
                 f"got {len(values)}"
             )
         return [_as_numpy_scalar(value) for value in values]
+
+
+def _bound(key: str, function: Callable, args: tuple, trailing: tuple) -> Callable:
+    """``function`` of ``args`` with its last ones ``trailing`` fixed, each argument converted as
+    :func:`_as_numpy_scalar` converts it (:meth:`Relation.bound_numeric`)."""
+    fixed = tuple(_as_numpy_scalar(value) for value in trailing)
+    count = len(args) - len(fixed)
+    if count < 0:
+        raise TypeError(f"{key}: expected at most {len(args)} arguments {[a_.name for a_ in args]}, got {len(fixed)}")
+
+    def bound(*values):
+        if len(values) != count:
+            raise TypeError(f"{key}: expected {count} arguments {[a_.name for a_ in args[:count]]}, got {len(values)}")
+        return function(*[_as_numpy_scalar(value) for value in values], *fixed)
+
+    return bound
 
 
 def _as_numpy_scalar(value):

@@ -67,6 +67,11 @@ class Branch:
     convex = True
     #: the NumPy form of ``dd/da`` (:meth:`slopes`; ``None``: a branch without one, read point by point)
     _slopes = None
+    #: whether :meth:`radii` is element by element (each radius the one of a call on its depth alone, whatever else is
+    #: in the array: a table's, :meth:`~mdr_events.theory.tabulated.TabulatedBranch.radii`), so that
+    #: :meth:`grouped_sample_radii` calls it once for all groups; ``False`` where an iteration's last step depends on
+    #: the elements it runs for
+    elementwise_radii = False
 
     def __init_subclass__(cls, **kwargs):
         """A subclass's :attr:`quartic_samples` and :attr:`convex` are ``False`` unless its own body declares them
@@ -88,6 +93,10 @@ class Branch:
         self._integrals = symbolic.relation("jkr_depth_integral").numeric
         self._coefficients = symbolic.relation("jkr_radius_quartic").scalar_coefficients
         self._array_coefficients = symbolic.relation("jkr_radius_quartic").coefficients
+        # (the NumPy forms with the branch's constants bound once: a run reads them at every fill and scan)
+        self._quartic_of = symbolic.relation("jkr_radius_quartic").bound_coefficients(*self._arguments)
+        self._depths_of = symbolic.relation("jkr_depth").bound_numeric(*self._arguments)
+        self._integrals_of = symbolic.relation("jkr_depth_integral").bound_numeric(*self._arguments)
         if work > 0:
             point = analytic.jump_off(params, work)
             self.jump_off_radius, self.jump_off_depth = point["contact_radius"], point["depth"]
@@ -197,7 +206,7 @@ class Branch:
         a = np.asarray(a, dtype=float)
         if self._integrals is None:
             return np.reshape([self.integral(float(v)) for v in a.ravel()], a.shape)
-        value = np.asarray(self._integrals(np.where(a > 0, a, 1.0), *self._arguments), dtype=float)
+        value = np.asarray(self._integrals_of(np.where(a > 0, a, 1.0)), dtype=float)
         return np.where(a > 0, value, 0.0)
 
     def depth_term(self, a: float) -> float:
@@ -245,7 +254,7 @@ class Branch:
             The depths (m), the shape of ``a`` (0 at ``a <= 0``).
         """
         a = np.asarray(a, dtype=float)
-        value = symbolic.relation("jkr_depth").numeric(np.where(a > 0, a, 1.0), *self._arguments)
+        value = self._depths_of(np.where(a > 0, a, 1.0))
         return np.where(a > 0, value, 0.0)
 
     def radii(self, depth: np.ndarray) -> np.ndarray:
@@ -265,7 +274,7 @@ class Branch:
         if self.work == 0.0:
             return np.asarray(analytic.jkr_contact_radius(depth, self.params, self.work))
         # (jkr_contact_radius's own steps, its checks and the jump-off point taken once, in __init__)
-        root = analytic.positive_polynomial_root(self._array_coefficients(depth, *self._arguments), lower=self._floor)
+        root = analytic.positive_polynomial_root(self._quartic_of(depth), lower=self._floor)
         return np.where(depth >= self.jump_off_depth, root**2, np.nan)
 
     def sample_radii(self, depth: np.ndarray) -> np.ndarray:
@@ -286,15 +295,61 @@ class Branch:
         if self.work == 0.0 or not self.quartic_samples:  # (Hertz, or another indenter: its own)
             return self.radii(depth)
         depth = np.asarray(depth, dtype=float)
-        linear, constant = self._array_coefficients(depth, *self._arguments)[3:]
+        root, linear, constant = self._closed_roots(depth)
+        self._iterate_near_fold(root, linear, constant)
+        return np.where(depth >= self.jump_off_depth, root.reshape(depth.shape)**2, np.nan)
+
+    def grouped_sample_radii(self, depths: list[np.ndarray]) -> list[np.ndarray]:
+        """:meth:`sample_radii` of each group of depths (1-D arrays), bit for bit: the quartic's closed form, element by
+        element, in one call over all of them; the iteration near the fold (:data:`NEAR_FOLD`) group by group, as each
+        group's own call runs it (an iteration's last step depends on the elements it runs for). A branch whose
+        :meth:`radii` is element by element (:attr:`elementwise_radii`): one call for all; any other: its call per
+        group.
+
+        Parameters
+        ----------
+        depths : list of numpy.ndarray
+            The groups of depths (m), each 1-D.
+
+        Returns
+        -------
+        list of numpy.ndarray
+            The radii (m) of each group (``nan`` below the jump-off depth).
+        """
+        if len(depths) > 1 and self.elementwise_radii and (self.work == 0.0 or not self.quartic_samples):
+            radii, begin = self.sample_radii(np.concatenate(depths)), 0
+            parts = []
+            for depth in depths:
+                parts.append(radii[begin:begin + len(depth)])
+                begin += len(depth)
+            return parts
+        if self.work == 0.0 or not self.quartic_samples or len(depths) < 2:
+            return [self.sample_radii(depth) for depth in depths]
+        depth = np.concatenate(depths)
+        root, linear, constant = self._closed_roots(depth)
+        radii, begin = [], 0
+        for group in depths:
+            part = slice(begin, begin + len(group))
+            self._iterate_near_fold(root[part], linear, constant[part])
+            radii.append(np.where(group >= self.jump_off_depth, root[part]**2, np.nan))
+            begin = part.stop
+        return radii
+
+    def _closed_roots(self, depth: np.ndarray) -> tuple[np.ndarray, float, np.ndarray]:
+        """The quartic's root ``s = √a`` of each depth in closed form (not below the jump-off's), flat, with the
+        quartic's linear and constant coefficients (:meth:`sample_radii`)."""
+        linear, constant = self._quartic_of(depth)[3:]
         linear, constant = float(linear), np.broadcast_to(constant, depth.shape)
         root = np.atleast_1d(np.maximum(depressed_quartic_root(linear, constant), self._floor))
+        return root, linear, np.atleast_1d(constant)
+
+    def _iterate_near_fold(self, root: np.ndarray, linear: float, constant: np.ndarray) -> None:
+        """The roots ``root`` (flat, changed in place) near the fold taken from the iteration instead: where the
+        quartic's slope is below :data:`NEAR_FOLD` of its leading term's."""
         cube = root**3
         near = (4.0 * cube + linear < NEAR_FOLD * 4.0 * cube).reshape(root.shape)
         if near.any():  # (the iteration's own radius at the fold: that of the events and of the extrema there)
-            root[near] = analytic.positive_polynomial_root([1.0, 0.0, 0.0, linear, np.atleast_1d(constant)[near]],
-                                                           lower=self._floor)
-        return np.where(depth >= self.jump_off_depth, root.reshape(depth.shape)**2, np.nan)
+            root[near] = analytic.positive_polynomial_root([1.0, 0.0, 0.0, linear, constant[near]], lower=self._floor)
 
     def radius(self, depth: float, rtol: float) -> float:
         """Stable-branch radius at ``depth``, converged to ``rtol``.
@@ -337,6 +392,7 @@ class PowerLawBranch(Branch):
         self._slopes = symbolic.relation("power_law_depth_slope").numeric
         self._integral = symbolic.relation("power_law_depth_integral").scalar
         self._integrals = symbolic.relation("power_law_depth_integral").numeric
+        self._integrals_of = symbolic.relation("power_law_depth_integral").bound_numeric(*self._arguments)
         point = power_law.jump_off(profile, params, work)
         self.jump_off_radius, self.jump_off_depth = point["contact_radius"], point["depth"]
         self._floor = math.sqrt(self.jump_off_radius)
@@ -435,6 +491,7 @@ class TabulatedBranch(Branch):
     depth a bracketed root above the jump-off."""
 
     tip_power = None  # (a table's g need not be a power at its first point)
+    elementwise_radii = True
 
     def __init__(self, params: Parameters, work: float, profile: TabulatedProfile):
         self.params, self.work, self.profile = params, work, profile

@@ -12,6 +12,7 @@ from mdr_events.parameters import Parameters
 from mdr_events.validation import real_array, shown
 from .dense import cut, force_values
 from .span_forces import span_forces
+from .span_sliding import span_sliding_lengths, takes_batch
 from .graded import span_variable
 from .model import ContinuumModel
 from .span import Span, Variable
@@ -167,17 +168,30 @@ def _sampled_radii(model, spans: list[Span], depths: list[np.ndarray]) -> list[n
     depth = [np.maximum(d, branch.jump_off_depth) for d in depths]
     # a sample at a span's end (to END_ULPS of its depth) takes the iteration's radius: that of the span's event,
     # which the pinned span after it holds
-    ends = []
-    for span, each in zip(spans, depth):
-        at_end = np.zeros(each.shape, dtype=bool)
-        for end in (span.segment.d(span.t_start), span.segment.d(span.t_end)):
-            at_end |= np.abs(each - end) <= END_ULPS * np.spacing(abs(end))
-        ends.append(at_end)
-    depth, ends = (np.concatenate(parts) if len(parts) > 1 else parts[0] for parts in (depth, ends))
+    lengths = [len(d) for d in depths] if all(np.ndim(d) == 1 for d in depths) else None
+    ends = _at_ends(spans, depth, lengths)
+    depth = np.concatenate(depth) if len(depth) > 1 else depth[0]
     radii = branch.sample_radii(depth)
     if ends.any():
         radii[ends] = branch.radii(depth[ends])
     return _split(radii, [len(d) for d in depths])
+
+
+def _at_ends(spans: list[Span], depths: list[np.ndarray], lengths: list[int] | None) -> np.ndarray:
+    """Whether each depth (of each span, concatenated) lies within :data:`END_ULPS` of its span's depth at its start or
+    at its end; spans of 1-D depths (``lengths``) all at once, each with its span's ends repeated over its depths."""
+    ends = np.array([[span.segment.d(span.t_start), span.segment.d(span.t_end)] for span in spans], dtype=float)
+    if lengths is None:  # (a span's depths of another shape: span by span)
+        found = []
+        for (start, end), each in zip(ends, depths):
+            found.append((np.abs(each - start) <= END_ULPS * np.spacing(abs(start))) |
+                         (np.abs(each - end) <= END_ULPS * np.spacing(abs(end))))
+        return np.concatenate(found) if len(found) > 1 else found[0]
+    tolerance = END_ULPS * np.spacing(np.abs(ends))
+    depth = np.concatenate(depths) if len(depths) > 1 else depths[0]
+    at_start, at_end = (np.abs(depth - np.repeat(ends[:, k], lengths)) <= np.repeat(tolerance[:, k], lengths)
+                        for k in (0, 1))
+    return at_start | at_end
 
 
 def _split(values: np.ndarray, lengths: list[int]) -> list[np.ndarray]:
@@ -267,8 +281,17 @@ def evaluate_span(solution: PathSolution, index: int, times: np.ndarray, sliding
 def _sliding_fraction(model: ContinuumModel, span: Span, x: np.ndarray, d: np.ndarray, a: np.ndarray) -> np.ndarray:
     """The share of a span's contact whose springs slide at the positions ``x``, depths ``d`` and radii ``a``: the slip
     fronts of its anchor map (or its layouts), ``min(length / a, 1)`` where ``a > 0``, ``nan`` elsewhere."""
-    zones = (span.zones if span.zones is not None else span.anchors).sliding_length(model.caps, x, d, a)
-    # min(zones / a, 1) where a > 0, nan elsewhere (computed only where a > 0: no warning to silence)
+    return _fraction(_sliding_length(model, span, x, d, a), a)
+
+
+def _sliding_length(model: ContinuumModel, span: Span, x: np.ndarray, d: np.ndarray, a: np.ndarray) -> np.ndarray:
+    """The length (m) of a span's springs at either cap (its zones' or its anchor map's ``sliding_length``)."""
+    return (span.zones if span.zones is not None else span.anchors).sliding_length(model.caps, x, d, a)
+
+
+def _fraction(zones: np.ndarray, a: np.ndarray) -> np.ndarray:
+    """``min(zones / a, 1)`` where ``a > 0``, ``nan`` elsewhere."""
+    # (computed only where a > 0: no warning to silence)
     fraction, positive = np.full(np.shape(a), np.nan), a > 0
     np.divide(zones, a, out=fraction, where=positive)
     return np.minimum(fraction, 1.0, out=fraction, where=positive)
@@ -390,20 +413,15 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
         out["tangential_displacement"][first] = last.x(t)
         for name in ("normal_force", "tangential_force", "contact_radius"):
             out[name][first] = 0.0
-    # the compressed zone's run (Coulomb's law alone with adhesion) evaluated once, not span by span
-    zone = evaluate(solution.compressed, times) if solution.compressed is not None else None
     spans_rows = _span_rows(owner, inside, len(solution.spans))
+    if solution.compressed is None:
+        _fill_spans(solution, times, spans_rows, out)
+        return out
+    # the compressed zone's run (Coulomb's law alone with adhesion) evaluated once, not span by span
+    zone = evaluate(solution.compressed, times)
     radii = _moving_radii(solution, times, spans_rows)
-    pinned = _pinned_kinematics(solution, {index: times[rows] for index, rows in spans_rows}) if zone is None else {}
-    for index, values in pinned.items():  # (their kinematics at once; each its slip fronts)
-        values["sliding_fraction"] = _sliding_fraction(solution.model, solution.spans[index], *(
-            values[name] for name in ("tangential_displacement", "indentation_depth", "contact_radius")))
-    filled = []
-    for index, rows in spans_rows:
-        part = {name: values[rows] for name, values in zone.items()} if zone is not None else None
-        filled.append(pinned[index] if index in pinned else
-                      evaluate_span(solution, index, times[rows], zone=part, radii=radii.get(index), normal=False,
-                                    tangential=False))
+    filled = [evaluate_span(solution, index, times[rows], zone={name: values[rows] for name, values in zone.items()},
+                            radii=radii.get(index), normal=False, tangential=False) for index, rows in spans_rows]
     _fill_tangential_force(solution, [index for index, _ in spans_rows], [times[rows] for _, rows in spans_rows],
                            filled)
     _fill_normal_force(solution.model, filled)
@@ -411,6 +429,93 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
         for name, values in span.items():
             out[name][rows] = values
     return out
+
+
+def _fill_spans(solution: PathSolution, times: np.ndarray, spans_rows: list[tuple[int, slice | np.ndarray]],
+                out: dict[str, np.ndarray]) -> None:
+    """:func:`evaluate`'s quantities of the spans ``spans_rows`` (:func:`_span_rows`) written into ``out``, the spans in
+    contact all at once: their kinematics with each span's segment's numbers over its samples, the radii of each
+    branch in one call (:func:`_sampled_radii`), ``F_N`` in one call, ``F_x`` by the kinds of the interpolants
+    (:func:`~.span_forces.span_forces`) and the sliding fraction of the spans' anchor maps together
+    (:func:`~.span_sliding.span_sliding_lengths`); each value the one :func:`evaluate_span` gives the span alone (the
+    same operations, element by element). An approach (no contact) is its own call."""
+    spans, model = solution.spans, solution.model
+    contact = []
+    for index, rows in spans_rows:
+        if spans[index].regime is Regime.NONE:
+            for name, values in evaluate_span(solution, index, times[rows]).items():
+                out[name][rows] = values
+        else:
+            contact.append((index, rows))
+    if not contact:
+        return
+    members = [spans[index] for index, _ in contact]
+    parts = [times[rows] for _, rows in contact]
+    lengths = [len(part) for part in parts]
+    t = solution.t_contact + (np.concatenate(parts) if len(parts) > 1 else parts[0])
+    segments = [span.segment for span in members]
+
+    def each(values: list[float]) -> np.ndarray:  # (a span's number over its samples)
+        return np.repeat(np.array(values, dtype=float), lengths)
+
+    elapsed = t - each([segment.t0 for segment in segments])
+    d = each([segment.ds for segment in segments]) + each([segment.vd for segment in segments]) * elapsed  # Segment.d
+    x = each([segment.xs for segment in segments]) + each([segment.vx for segment in segments]) * elapsed  # Segment.x
+    a = each([span.pinned_radius for span in members])
+    bounds = np.cumsum([0] + lengths)
+    where = [slice(int(lower), int(upper)) for lower, upper in zip(bounds[:-1], bounds[1:])]
+    for regime in (Regime.GROWING, Regime.SHRINKING):
+        moving = [k for k, span in enumerate(members) if span.regime is regime]
+        if moving:
+            for k, radii in zip(moving, _sampled_radii(model, [members[k] for k in moving],
+                                                       [d[where[k]] for k in moving])):
+                a[where[k]] = radii
+    filled = {"indentation_depth": d, "tangential_displacement": x, "contact_radius": a,
+              "normal_force": np.asarray(model.normal_force(d, a), dtype=float),  # (10)
+              "tangential_force": _tangential_forces(members, t, a, where),
+              "sliding_fraction": _sliding_fractions(model, members, x, d, a, where)}
+    target = _rows_of(contact)
+    for name, values in filled.items():
+        out[name][target] = values
+
+
+def _tangential_forces(spans: list[Span], t: np.ndarray, a: np.ndarray, where: list[slice]) -> np.ndarray:
+    """``F_x`` of spans in contact at their samples (each span's ``where`` in ``t`` and ``a``): a constant force where
+    a span has no interpolant, the others' interpolants by their kinds (:func:`~.span_forces.span_forces`)."""
+    force = np.repeat(np.array([span.force for span in spans], dtype=float), [part.stop - part.start
+                                                                               for part in where])
+    read = [k for k, span in enumerate(spans) if span.interpolant is not None]
+    values = span_forces([spans[k].interpolant for k in read],
+                         [_force_variable(spans[k], t[where[k]], a[where[k]]) for k in read])
+    for k, value in zip(read, values):
+        force[where[k]] = value
+    return force
+
+
+def _sliding_fractions(model: ContinuumModel, spans: list[Span], x: np.ndarray, d: np.ndarray, a: np.ndarray,
+                       where: list[slice]) -> np.ndarray:
+    """:func:`_sliding_fraction` of spans in contact at their samples (each span's ``where``): the spans whose anchor
+    maps share one attachment branch together (:func:`~.span_sliding.span_sliding_lengths`), any other alone."""
+    together = [k for k, span in enumerate(spans) if takes_batch(span) and span.anchors.attach is
+                spans[0].anchors.attach]
+    zones = np.empty(a.shape)
+    for k in sorted(set(range(len(spans))) - set(together)):
+        zones[where[k]] = _sliding_length(model, spans[k], x[where[k]], d[where[k]], a[where[k]])
+    if together:
+        rows = _rows_of([(k, where[k]) for k in together])
+        zones[rows] = span_sliding_lengths(model.caps, [spans[k].anchors for k in together], x[rows], d[rows], a[rows],
+                                           [where[k].stop - where[k].start for k in together])
+    return _fraction(zones, a)
+
+
+def _rows_of(spans_rows: list[tuple[int, slice | np.ndarray]]) -> slice | np.ndarray:
+    """The rows of several spans (:func:`_span_rows`) together, in order: one slice where they are consecutive
+    slices, else their indices."""
+    parts = [rows for _, rows in spans_rows]
+    if all(type(rows) is slice for rows in parts) and all(lower.stop == upper.start for lower, upper in
+                                                          zip(parts[:-1], parts[1:])):
+        return slice(parts[0].start, parts[-1].stop)
+    return np.concatenate([np.arange(rows.start, rows.stop) if type(rows) is slice else rows for rows in parts])
 
 
 def _fill_normal_force(model: ContinuumModel, filled: list[dict[str, np.ndarray]]) -> list[np.ndarray]:
