@@ -864,6 +864,30 @@ class PlaySprings:
         nodes, _, group, _ = self._grid(times, np.array([self.radius(float(t)) for t in times])).gauss()
         return nodes, self._d(times[group]) - self.line.profile(nodes) > self._pressed_round_off, group
 
+    def centre_pressed(self, times) -> np.ndarray:
+        """Whether the centre probe of the kink search (:data:`EDGE_SHARE` of the radius inside the centre, the
+        innermost spring the share reads) counts as compressed at each of ``times``: ``d − g`` above
+        :attr:`pressed_round_off`.
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s, path clock).
+
+        Returns
+        -------
+        numpy.ndarray
+            A boolean per time (``False`` out of contact).
+        """
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        radii = np.array([self.radius(float(t)) for t in times])
+        return (radii > 0.0) & (self._d(times) - self.line.profile(EDGE_SHARE * radii) > self._pressed_round_off)
+
+    @property
+    def pressed_round_off(self) -> float:
+        """A spring counts as compressed (its cap's Coulomb part on) beyond this ``d − g`` (m)."""
+        return self._pressed_round_off
+
     def _grid(self, times: np.ndarray, radii: np.ndarray) -> "_Breaks":
         """The panels' ends at each of ``times`` before the kinks: :data:`PANELS` equal ones on ``[0, a]`` and the
         history's breaks."""
