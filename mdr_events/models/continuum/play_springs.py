@@ -99,6 +99,7 @@ CONCAVITY_SAMPLES = 65
 #: A second difference of ``ū(a(d))`` counts as convex above this share of its largest value (round-off).
 CONCAVITY_ROUND_OFF = 1e-12
 _GAUSS = np.polynomial.legendre.leggauss(NODES)
+_sum = np.add.reduce
 #: ``d − g`` within this share of the path's largest depth counts as not compressed (:meth:`PlaySprings.anchors`).
 PRESSED_ROUND_OFF = 1e-12
 #: A spring's anchor within this share of the path's largest ``|x|`` and its cap of its window's edge at ``t`` lies on
@@ -250,6 +251,21 @@ class _Chain(NamedTuple):
     #: ``(start, end)`` of the intervals where ``ū(a(d))`` is not concave (each between two of ``times``)
     convex: np.ndarray
 
+
+
+class _Quadrature(NamedTuple):
+    """The quadrature at many times (:meth:`PlaySprings._quadratures`): the nodes in the order of their times, their
+    weights, anchors, provenance and times' indices, the provenance at the probes asked, and the springs' ``g`` and
+    ``k_t/G*`` at the nodes (read with the anchors: not read again)."""
+
+    nodes: np.ndarray
+    weights: np.ndarray
+    anchor: np.ndarray
+    label: np.ndarray
+    group: np.ndarray
+    probed: np.ndarray
+    profile: np.ndarray
+    weight: np.ndarray
 
 
 class _Breaks(NamedTuple):
@@ -414,8 +430,14 @@ class PlaySprings:
         """:meth:`_shift_at` at one time, or at each of an array of times."""
         if np.ndim(t) == 0:
             return self._shift_at(float(t))
-        unique, inverse = np.unique(t, return_inverse=True)
-        return np.array([self._shift_at(time) for time in unique.tolist()])[inverse.reshape(np.shape(t))]
+        t = np.asarray(t, dtype=float)
+        flat = t.ravel()
+        if flat.size and np.all(flat[1:] >= flat[:-1]):  # (the times of springs grouped by time, in order: their runs
+            starts = np.concatenate([[True], flat[1:] != flat[:-1]])  # are the unique times, no sort)
+            unique, inverse = flat[starts], np.cumsum(starts) - 1
+        else:
+            unique, inverse = np.unique(flat, return_inverse=True)
+        return np.array([self._shift_at(time) for time in unique.tolist()])[inverse.reshape(t.shape)]
 
     def _own_times(self, xi, g, ratio, start, t):
         """Each spring's times of its ``L``'s maximum and ``U``'s minimum on every interval of ``chain.convex``
@@ -784,18 +806,19 @@ class PlaySprings:
         index = np.full(times.size, -1)
         index[inside] = np.arange(inside.size)
         kept = index[probe_time] >= 0
-        nodes, weights, anchor, label, group, probed[kept] = self._quadratures(
+        nodes, weights, anchor, label, group, probed[kept], profile, weight = self._quadratures(
             times[inside], radii[inside], probes[kept], index[probe_time[kept]], kinks)
-        w = self.line.weight(nodes) * weights
+        w = weight * weights
         at_cap, at = label < 0, times[inside][group]
-        pressed = self._d(at) - self.line.profile(nodes) > self._pressed_round_off
+        pressed = self._d(at) - profile > self._pressed_round_off
         moved = w * (self._x(at) - anchor)
         bounds = np.searchsorted(group, np.arange(inside.size + 1))
         for k, (low, high) in enumerate(zip(bounds[:-1].tolist(), bounds[1:].tolist())):
             cap, press, each = at_cap[low:high], pressed[low:high], weights[low:high]
-            states[inside[k]] = SpringState(2.0 * self.line.G_star * float(np.sum(moved[low:high])),
-                                            float(np.sum(w[low:high][cap])), float(np.sum(each[cap])),
-                                            float(np.sum(each[cap & press])), float(np.sum(each[press])))
+            # (``np.add.reduce``: ``np.sum``'s own reduction, without its wrapper's cost at each of some hundred times)
+            states[inside[k]] = SpringState(2.0 * self.line.G_star * float(_sum(moved[low:high])),
+                                            float(_sum(w[low:high][cap])), float(_sum(each[cap])),
+                                            float(_sum(each[cap & press])), float(_sum(each[press])))
         return states, probed
 
     def outside(self, t: float, probes: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -898,17 +921,19 @@ class PlaySprings:
         return _Breaks(np.concatenate(rows), group, np.zeros(group.size, bool))
 
     def _quadratures(self, times: np.ndarray, radii: np.ndarray, probes: np.ndarray, probe_time: np.ndarray,
-                     kinks: bool = True) -> tuple[np.ndarray, ...]:
+                     kinks: bool = True) -> "_Quadrature":
         """The quadrature's nodes and weights on ``[0, a]`` at each of ``times`` (Gauss–Legendre on the panels split
         at the history's breaks and, with ``kinks``, the kinks: :meth:`_kinks`), the anchors and their provenance
-        there, the index of each node's time (the nodes in the order of their times), and the provenance at
-        ``probes``."""
+        there, the index of each node's time (the nodes in the order of their times), the provenance at ``probes``,
+        and the springs' ``g`` and ``k_t/G*`` at the nodes (:class:`_Quadrature`)."""
         breaks = self._grid(times, radii)
         if kinks:
             return self._kinks(times, breaks, probes, probe_time)
         nodes, weights, group, _ = breaks.gauss()
-        anchor, label = self.anchors(np.concatenate([nodes, probes]), times[np.concatenate([group, probe_time])])
-        return nodes, weights, anchor[:nodes.size], label[:nodes.size], group, label[nodes.size:]
+        points = np.concatenate([nodes, probes])
+        anchor, label = self.anchors(points, times[np.concatenate([group, probe_time])])
+        return _Quadrature(nodes, weights, anchor[:nodes.size], label[:nodes.size], group, label[nodes.size:],
+                           *(read(points)[:nodes.size] for read in (self.line.profile, self.line.weight)))
 
     def cap_sides(self, t: float, edge: float) -> tuple[float, float]:
         """The lengths (m) of the springs within ``edge`` at the lower and the upper cap at ``t``, on the quadrature's
@@ -929,20 +954,21 @@ class PlaySprings:
         a = self.radius(t)
         if not a > 0.0:
             return 0.0, 0.0
-        nodes, weights, _, labels, _, _ = self._quadratures(np.array([float(t)]), np.array([a]), np.empty(0),
+        nodes, weights, _, labels, *_ = self._quadratures(np.array([float(t)]), np.array([a]), np.empty(0),
                                                             np.empty(0, dtype=np.intp))
         inside = nodes < edge
         return (float(np.sum(weights[inside & np.isin(labels, LOWER_CAP)])),
                 float(np.sum(weights[inside & np.isin(labels, UPPER_CAP)])))
 
     def _kinks(self, times: np.ndarray, breaks: "_Breaks", probes: np.ndarray,
-               probe_time: np.ndarray) -> tuple[np.ndarray, ...]:
+               probe_time: np.ndarray) -> "_Quadrature":
         """Each time's ``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances
         differ (within a panel, across a panel's end, or in the first round between the centre or the edge,
         :data:`EDGE_SHARE` inside it, and the nearest node) and no kink found before lies between them, the change
         located by bisection; repeated until every such pair holds a kink, every round one evaluation of the anchors
         for the times still searched. Returns :meth:`_quadratures`' nodes, weights, anchors, provenance and times of
-        the last breaks (:func:`_gauss`), and the provenance at ``probes`` (read in the first round)."""
+        the last breaks (:func:`_gauss`), the provenance at ``probes`` (read in the first round) and the springs'
+        values at the nodes (read with their anchors)."""
         done, probed, active = [], None, np.ones(times.size, bool)
         for round_ in range(KINK_ROUNDS + 1):
             current = breaks.of(active)
@@ -955,7 +981,9 @@ class PlaySprings:
                 probed, anchor, label, edges = label[inner.size:], anchor[:inner.size], label[:inner.size], \
                     edges[:inner.size]
             else:
+                points = inner
                 anchor, label, edges, _ = self._anchors(inner, times[inner_group], inner_group)
+            values = [read(points)[:inner.size][is_node] for read in (self.line.profile, self.line.weight)]
             # (two springs on the same smooth edge of their windows at t to round-off hold the same anchor whatever
             # their provenance: no kink between them)
             change = np.flatnonzero((inner_group[1:] == inner_group[:-1]) & (label[1:] != label[:-1])
@@ -966,7 +994,7 @@ class PlaySprings:
             searched[inner_group[fresh]] = True
             finished = (active & ~searched)[group]
             done.append((nodes[finished], weights[finished], group[finished], anchor[is_node][finished],
-                         label[is_node][finished]))
+                         label[is_node][finished], values[0][finished], values[1][finished]))
             if not fresh.size:
                 break
             at = inner_group[fresh]
@@ -976,9 +1004,10 @@ class PlaySprings:
             raise RuntimeError(f"the springs' kinks at t={float(times[np.flatnonzero(active)[0]])!r} s were still "
                                f"being found after {KINK_ROUNDS} rounds ({fresh.size} more): a bug to report (the "
                                "force would be summed across a kink)")
-        nodes, weights, group, anchor, label = (np.concatenate(column) for column in zip(*done))
+        nodes, weights, group, anchor, label, profile, weight = (np.concatenate(column) for column in zip(*done))
         order = np.argsort(group, kind="stable")
-        return nodes[order], weights[order], anchor[order], label[order], group[order], probed
+        return _Quadrature(nodes[order], weights[order], anchor[order], label[order], group[order], probed,
+                           profile[order], weight[order])
 
     def _bisect(self, t, low: np.ndarray, high: np.ndarray, low_label: np.ndarray) -> np.ndarray:
         """Each bracket (at ``t``, or at its own time of an array of them) cut into :data:`KINK_CUTS` at once, kept where the provenance first differs from ``low``'s,

@@ -105,12 +105,14 @@ class SpringFactors:
         s = np.log(np.where(small, LAMBDA_MIN, lam))
         # (the columns as contiguous rows, as each spline's own value: NumPy's exponential on contiguous doubles)
         factors = list(np.exp(np.ascontiguousarray(self._spline(s).T)))
-        if np.any(small):  # (the tables' own series)
+        if np.any(small):  # (the tables' own series, elementwise: read at the small λ alone)
             normal, edge, tangential = self._tables
-            tangential_series = tangential._series(lam)
-            series = (*(table._series(lam)[name] for table, name in zip((normal, edge), _NORMAL_COLUMNS)),
+            few = lam[small]
+            tangential_series = tangential._series(few)
+            series = (*(table._series(few)[name] for table, name in zip((normal, edge), _NORMAL_COLUMNS)),
                       *(tangential_series[name] for name in _TANGENTIAL_COLUMNS))
-            factors = [np.where(small, exact, value) for exact, value in zip(series, factors)]
+            for value, exact in zip(factors, series):
+                value[small] = exact
         return tuple(factors)
 
     def values(self, x) -> SpringValues:
