@@ -12,9 +12,11 @@ run, its tables precomputed and cached):
 - Coulomb's part without adhesion (``"coulomb"``, ``"tau0+coulomb"``, μ = 0.3, ``Δγ0 = Δγ1 = 0``) along scenario A at
   20° and a fretting path of ±1 mm: on the layer every spring's play operator on its own
   (:mod:`mdr_events.models.continuum.play_run`), on the half-space the spans; :data:`COULOMB_SAMPLES` samples (the
-  route reads them in batches: its cost is mostly its events' sequential searches, 0.05-0.2 s of CPU a run);
+  route reads them in batches: 0.03-0.11 s of CPU a run, the output times' evaluations and the events' sequential
+  searches);
 - the same with the paper's adhesion along scenario A at 20°, :data:`ADHESIVE_SAMPLES` samples (the route's radius
-  the spans' frictionless run: about 0.15 s of CPU a run, most of it the events' searches).
+  the spans' frictionless run: 0.03-0.1 s of CPU a run; with ``τ0`` a third of it the radius at each spring's own
+  crossings of ``d = g``).
 
 The layer's first run of a process (the relations of ``theory/layer_continuum_symbolic.py`` lambdified, the tables
 read) is made before the timing, as the half-space's own derivations are. Beside the wall times the process's CPU

@@ -121,10 +121,32 @@ def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: L
         profile, normal, tangential = factors.values(xi)
         # (coulomb_cap(x, 1, 0, μ, ...): μ (k/k_t)(1 − 0))
         ratio = mu * (normal / tangential) * (1.0 - 0.0) if mu > 0.0 else np.zeros(np.shape(xi))
-        return profile, tangential / G_star, ratio
+        return np.stack([profile, tangential / G_star, ratio])
 
-    springs = _remembered(springs)  # (the three as the rows of one array)
+    springs = _remembered(_once_a_block(springs))  # (the three as the rows of one array)
     return (lambda xi: springs(xi)[0]), (lambda xi: springs(xi)[1]), (lambda xi: springs(xi)[2])
+
+
+def _once_a_block(function: Callable[[np.ndarray], np.ndarray]) -> Callable[[np.ndarray], np.ndarray]:
+    """``function`` (elementwise, its values stacked in rows) read once per block where ``xi`` is blocks of one length
+    each equal to the one before it (the probes of many times at one radius: the same springs, each time's own), the
+    others' values copied: the same values (each element's its own), the tables' spline read for the distinct blocks
+    alone. A block starts wherever ``xi[0]`` recurs; where no block repeats its predecessor, one call on the whole."""
+
+    def once(xi):
+        xi = np.asarray(xi, dtype=float)
+        starts = np.flatnonzero(xi == xi[0]) if xi.ndim == 1 and xi.size > 1 else np.empty(0, dtype=np.intp)
+        length = int(starts[1]) if starts.size > 1 else 0
+        if not length or xi.size % length:
+            return function(xi)
+        blocks = xi.reshape(-1, length)
+        heads = np.concatenate([[True], ~np.all(blocks[1:] == blocks[:-1], axis=1)])
+        if np.all(heads):
+            return function(xi)
+        values = function(blocks[heads].ravel())
+        return values.reshape(values.shape[0], -1, length)[:, np.cumsum(heads) - 1].reshape(values.shape[0], -1)
+
+    return once
 
 
 def _unit_weights(xi: np.ndarray) -> np.ndarray:
