@@ -22,9 +22,10 @@ a time, reading one time at a time, bit for bit.
 
 Where the windows are fixed but for ``x`` (a segment at a constant depth, :func:`~.play_reach.constant_part`) the root
 that seeds an event's halvings is each spring's time to reach its cap in closed form (:mod:`.play_reach`) instead of
-Brent's, and ``F_x`` there is monotone, its extrema not refined; a full slip from the first contact under Coulomb's
-law alone is seeded by the nodes counted as compressed. Every seed's bracket is checked on the share as before
-(:data:`CLOSED_REACH` ``False``: the route of before).
+Brent's, and ``F_x`` there is monotone, its extrema not refined; a full slip from no spring compressed (the first
+contact, or with adhesion the jump-in) under Coulomb's law alone is seeded by the time the centre probe counts as
+compressed, in closed form on the depth (:func:`~.play_reach.pressed_time`). Every seed's bracket is checked on the
+share as before (:data:`CLOSED_REACH` ``False``: the route of before).
 """
 
 from __future__ import annotations
