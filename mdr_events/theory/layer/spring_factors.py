@@ -100,7 +100,9 @@ class SpringFactors:
         return self.scale * x**self.n * gamma
 
     def _factors(self, lam: np.ndarray) -> tuple[np.ndarray, ...]:
-        """``γₙ``, ``Θ(1)``, ``Φ_L``, ``Φ_T``, ``Ψ_L(1)``, ``Ψ_T(1)`` at ``λ`` as the tables give them."""
+        """``γₙ``, ``Θ(1)``, ``Φ_L``, ``Φ_T``, ``Ψ_L(1)``, ``Ψ_T(1)`` at ``λ`` as the tables give them, each of
+        ``λ``'s shape (a 0-d ``λ`` read as one element: the series are written into the rows)."""
+        shape, lam = np.shape(lam), np.atleast_1d(lam)
         small = lam < LAMBDA_MIN
         s = np.log(np.where(small, LAMBDA_MIN, lam))
         # (the columns as contiguous rows, as each spline's own value: NumPy's exponential on contiguous doubles)
@@ -113,7 +115,7 @@ class SpringFactors:
                       *(tangential_series[name] for name in _TANGENTIAL_COLUMNS))
             for value, exact in zip(factors, series):
                 value[small] = exact
-        return tuple(factors)
+        return tuple(value.reshape(shape) for value in factors)
 
     def values(self, x) -> SpringValues:
         """``g``, ``k`` and ``k_t`` at ``x`` (the relations' arithmetic on the same factors: their values bit for bit).
