@@ -131,7 +131,11 @@ def _once_a_block(function: Callable[[np.ndarray], np.ndarray]) -> Callable[[np.
     """``function`` (elementwise, its values stacked in rows) read once per block where ``xi`` is blocks of one length
     each equal to the one before it (the probes of many times at one radius: the same springs, each time's own), the
     others' values copied: the same values (each element's its own), the tables' spline read for the distinct blocks
-    alone. A block starts wherever ``xi[0]`` recurs; where no block repeats its predecessor, one call on the whole."""
+    alone. A block starts wherever ``xi[0]`` recurs; where no block repeats its predecessor, one call on the whole.
+    Blocks are compared by ``==``, so a ``-0.0`` reads ``+0.0``'s values: the same bit for bit while ``function`` is
+    even in ``xi`` (here ``g``, ``k_t/G*`` and ``μ k/k_t``, each read at ``|xi|``,
+    :meth:`~mdr_events.theory.layer.spring_factors.SpringFactors.values`); an odd ``function`` would need the signs
+    compared too."""
 
     def once(xi):
         xi = np.asarray(xi, dtype=float)

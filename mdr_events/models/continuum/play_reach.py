@@ -165,6 +165,11 @@ def pressed_time(play, low: float, high: float) -> float | None:
     """
     from .play_springs import EDGE_SHARE
 
+    # (no convergence test but equality, at most PRESSED_STEPS: the time is a seed, not the answer. What makes the
+    # answer right is not this iteration but the checks of it: play_run._pressed_root's two readings of the compressed
+    # test either side of the time (a time off the fixed point fails them and the compressed test is bisected
+    # instead), and play_run._bisect's check of the bracket found on the share itself (a wrong one fails it and the
+    # guess is bisected as before))
     time = None
     for _ in range(PRESSED_STEPS):
         radius = play.radius(low if time is None else time)
