@@ -41,6 +41,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.kernel_model import KernelModel
 
 from .extrema import extremum_names, solution_extrema
+from .play_pieces import log_pieces, reversal_end
 from .play_reach import constant_part, pressed_time, reach_times, reach_ulps
 from .play_search import EVENT_HALVINGS, brent, halve, searched
 from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, SpringState, spring_line
@@ -161,7 +162,7 @@ def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, st
     """The springs' events (module docstring) on the clock from first contact: in each piece of a contact between
     tangential reversals, a re-stick at its start where springs were at a cap before the reversal, then the first
     slip onset and full slip (every piece's searched side by side: :func:`~.play_search.searched`)."""
-    pieces = _pieces(events)
+    pieces = log_pieces(events)
     lasts = [end if reversal_end(events, end) else end - END_PROBE * (end - begin) for begin, end, _ in pieces]
     asked = [begin + start for begin, _, reversal in pieces if reversal] + [last + start for last in lasts]
     shares = dict(zip(asked, _shares(play, np.array(asked, dtype=float)).tolist()))
@@ -182,25 +183,6 @@ def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, st
             searches.append(_bisect(low + start, probes[k] + start, reached, kind is EventKind.SLIP_ONSET, play))
     results = searched(lambda asks: _readings(play, asks), searches)
     return [_event(play, time if kind is EventKind.RE_STICK else results[time], start, kind) for time, kind in found]
-
-
-def reversal_end(events, time: float) -> bool:
-    """Whether ``time`` is a tangential reversal of the log (else a contact's end)."""
-    return any(event.kind is EventKind.TANGENTIAL_REVERSAL and event.time == time for event in events)
-
-
-def _pieces(events) -> list[tuple[float, float, bool]]:
-    """Each contact of the log cut at its tangential reversals: ``(begin, end, whether it begins at a reversal)``."""
-    contacts = [event.time for event in events if event.kind in (EventKind.FIRST_CONTACT, EventKind.RE_CONTACT)]
-    ends = [event.time for event in events if event.kind in (EventKind.PULL_OFF, EventKind.CONTACT_ENDS)]
-    reversals = [event.time for event in events if event.kind is EventKind.TANGENTIAL_REVERSAL]
-    last = max([event.time for event in events], default=0.0)
-    out = []
-    for begin in contacts:
-        end = min([time for time in ends if time > begin], default=last)
-        cuts = [begin] + [time for time in reversals if begin < time < end] + [end]
-        out += [(low, high, low != begin) for low, high in zip(cuts[:-1], cuts[1:]) if high > low]
-    return out
 
 
 def _probed_all(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> tuple[list[SpringState], np.ndarray]:
