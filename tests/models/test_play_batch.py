@@ -17,11 +17,12 @@ import pytest
 from scipy.optimize import brentq
 
 import mdr_events as me
-from mdr_events.models.continuum import play_run, play_search
+from mdr_events.models.continuum import play_search
 from mdr_events.models.continuum.play_line import _once_a_block
 from mdr_events.models.continuum.play_springs import PlaySprings
 from mdr_events.models.spring_media import springs_of
 from mdr_events.theory.layer.spring_factors import SpringFactors
+from play_recorders import made_plays
 
 #: The paper's 5 mm layer on a bonded base.
 LAYER = 5e-3
@@ -45,14 +46,7 @@ CASES = {"coulomb fretting": ("coulomb", False, fretting()),
 def route(case: str, monkeypatch) -> PlaySprings:
     """The route ``simulate`` ran for ``case`` on the layer (recorded as it was made)."""
     law, adhesive, motion = CASES[case]
-    made = []
-
-    class Recorded(PlaySprings):
-        def __post_init__(self) -> None:
-            super().__post_init__()
-            made.append(self)
-
-    monkeypatch.setattr(play_run, "PlaySprings", Recorded)
+    made = made_plays(monkeypatch)
     paper = me.Contact.paper() if adhesive else me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0)
     friction = me.FrictionLaw(law, mu=0.3, tau0=None if law == "coulomb" else me.Parameters.paper().tau0)
     contact = dataclasses.replace(paper, friction=friction).replace(h=LAYER)

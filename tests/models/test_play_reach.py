@@ -35,6 +35,7 @@ from mdr_events.models.continuum.play_reach import (REACH_ULPS, REACH_ULPS_CAP, 
                                                    reach_times, reach_ulps)
 from mdr_events.models.continuum.play_search import EVENT_HALVINGS, searched
 from mdr_events.models.continuum.play_springs import PlaySprings
+from play_recorders import asked_readings, made_plays
 
 #: The paper's 5 mm layer on a bonded base.
 LAYER = 5e-3
@@ -74,19 +75,13 @@ def contact_of(law: str, adhesive: bool = False) -> me.Contact:
 def recorded(law: str, monkeypatch) -> tuple[PlaySprings, list]:
     """The route ``simulate`` ran on the layer along :func:`fretting` and the brackets its events were searched in
     (``(low, high, onset)``, path clock)."""
-    made, brackets = [], []
-
-    class Recorded(PlaySprings):
-        def __post_init__(self) -> None:
-            super().__post_init__()
-            made.append(self)
+    made, brackets = made_plays(monkeypatch), []
 
     def bisect(low, high, reached, onset, play=None):
         brackets.append((low, high, onset))
         return (yield from bisected(low, high, reached, onset, play))
 
     bisected = play_run._bisect
-    monkeypatch.setattr(play_run, "PlaySprings", Recorded)
     monkeypatch.setattr(play_run, "_bisect", bisect)
     me.simulate(contact_of(law), fretting(), "continuum", samples=SAMPLES)
     assert len(made) == 1
@@ -210,21 +205,21 @@ def test_the_force_is_monotone_where_the_windows_are_fixed(law, route):
         assert np.ptp(force) > 0.0  # (the part is not all plateau: the check can fail)
 
 
+def full_slip_asks(contact: me.Contact, monkeypatch) -> list:
+    """The kinds of the readings the events' searches asked along scenario A at 20° on ``contact``
+    (:func:`~play_recorders.asked_readings`), the run's log holding a full slip."""
+    asked = asked_readings(monkeypatch)
+    run = me.simulate(contact, MOTIONS["A 20°"], "continuum", samples=SAMPLES)
+    assert "full_slip" in run["event_kind"].values[0].tolist()
+    return asked
+
+
 def test_a_full_slip_from_the_first_contact_is_found_on_the_compressed_nodes(monkeypatch):
     """Along scenario A at 20° under Coulomb's law alone every compressed spring slides from its attachment
     (``ẋ > μρ ḋ``): full slip holds from the first node counted as compressed on, which the nodes' depths alone locate
     (``play_run._compressed``); the share checks that bracket and takes it, no guess of the anchors read (the route of
     before bisected the guess 48 times)."""
-    asked = []
-    readings = play_run._readings
-
-    def recorded(play, asks):
-        asked.extend(reading for reading, _ in asks)
-        return readings(play, asks)
-
-    monkeypatch.setattr(play_run, "_readings", recorded)
-    run = me.simulate(contact_of("coulomb"), MOTIONS["A 20°"], "continuum", samples=SAMPLES)
-    assert "full_slip" in run["event_kind"].values[0].tolist()
+    asked = full_slip_asks(contact_of("coulomb"), monkeypatch)
     assert play_run._Reading.COMPRESSED in asked and play_run._Reading.GUESS not in asked
 
 
@@ -235,16 +230,7 @@ def test_a_full_slip_from_an_adhesive_jump_in_is_found_on_the_centre_probe(monke
     time in closed form on the depth (``play_reach.pressed_time``) the two readings about it check; the share takes
     that bracket, no guess of the anchors read (the route of before bisected the guess 48 times and, the guess turning
     back and forth at round-off near 3e-5 s, the share 48 times more)."""
-    asked = []
-    readings = play_run._readings
-
-    def recorded(play, asks):
-        asked.extend(reading for reading, _ in asks)
-        return readings(play, asks)
-
-    monkeypatch.setattr(play_run, "_readings", recorded)
-    run = me.simulate(contact_of("coulomb", adhesive=True), MOTIONS["A 20°"], "continuum", samples=SAMPLES)
-    assert "full_slip" in run["event_kind"].values[0].tolist()
+    asked = full_slip_asks(contact_of("coulomb", adhesive=True), monkeypatch)
     assert play_run._Reading.COMPRESSED in asked and play_run._Reading.GUESS not in asked
 
 
@@ -255,14 +241,7 @@ def test_the_centre_probe_counts_as_compressed_from_its_closed_form_time(adhesiv
     the window the events' search checks it in (``ROOT_ULPS``: the depth is rounded once by ``np.interp`` and once by
     the division, each an ulp or two of the time): bisected on that test to neighbouring doubles, the flip lies
     within it."""
-    made = []
-
-    class Recorded(PlaySprings):
-        def __post_init__(self) -> None:
-            super().__post_init__()
-            made.append(self)
-
-    monkeypatch.setattr(play_run, "PlaySprings", Recorded)
+    made = made_plays(monkeypatch)
     me.simulate(contact_of("coulomb", adhesive), MOTIONS["A 20°"], "continuum", samples=SAMPLES)
     play = made[0]
     low = float(play.path.first_contact_time())
