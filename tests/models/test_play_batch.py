@@ -17,8 +17,12 @@ import pytest
 from scipy.optimize import brentq
 
 import mdr_events as me
-from mdr_events.models.continuum import play_run, play_search
+from mdr_events.models.continuum import play_search
+from mdr_events.models.continuum.play_line import _once_a_block
 from mdr_events.models.continuum.play_springs import PlaySprings
+from mdr_events.models.spring_media import springs_of
+from mdr_events.theory.layer.spring_factors import SpringFactors
+from play_recorders import made_plays
 
 #: The paper's 5 mm layer on a bonded base.
 LAYER = 5e-3
@@ -42,14 +46,7 @@ CASES = {"coulomb fretting": ("coulomb", False, fretting()),
 def route(case: str, monkeypatch) -> PlaySprings:
     """The route ``simulate`` ran for ``case`` on the layer (recorded as it was made)."""
     law, adhesive, motion = CASES[case]
-    made = []
-
-    class Recorded(PlaySprings):
-        def __post_init__(self) -> None:
-            super().__post_init__()
-            made.append(self)
-
-    monkeypatch.setattr(play_run, "PlaySprings", Recorded)
+    made = made_plays(monkeypatch)
     paper = me.Contact.paper() if adhesive else me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0)
     friction = me.FrictionLaw(law, mu=0.3, tau0=None if law == "coulomb" else me.Parameters.paper().tau0)
     contact = dataclasses.replace(paper, friction=friction).replace(h=LAYER)
@@ -198,3 +195,29 @@ def test_the_tree_of_halvings_is_one_halving_at_a_time(reached, levels, monkeypa
         values = tuple(reading(time) for _, time in asks)
     assert got == halved(0.0, 1.0, reached)
     assert len(steps) <= -(-play_search.EVENT_HALVINGS // levels)
+
+
+def test_the_springs_of_repeated_blocks_are_read_once_each_their_own_values():
+    """The springs' ``g``, ``k_t/G*`` and ratios on a layer asked at the probes of many times, some at one radius
+    (blocks equal to the one before: a fretting loop's times at rest in depth): each block's values those of the
+    whole array read at once (bit for bit, every element its own), the tables' spline read for the distinct blocks
+    alone; an array with no repeated block (scenario A's growing radius) read whole."""
+    params = me.Parameters.paper()
+    layer = me.Contact.paper().replace(h=LAYER).layer
+    factors = SpringFactors(springs_of(params, None, None, layer).indenter, params.E_star, params.G_star, params.nu,
+                            layer)
+    asked = []
+
+    def values(xi):
+        asked.append(xi.size)
+        return np.stack(factors.values(xi))
+
+    grid = np.linspace(0.0, 1.0 - 1e-12, 1025)
+    edges = np.array([1e-3, 1e-3, 1e-3, 1.2e-3, 1.2e-3, 1e-3, 0.5e-3])  # (runs of equal radii, one recurring later)
+    points = (edges[:, None] * grid).ravel()
+    once = _once_a_block(values)(points)
+    assert np.array_equal(once, values(points))  # (bit for bit)
+    assert asked[0] == 4 * grid.size  # (the blocks that differ from the one before: 1e-3, 1.2e-3, 1e-3, 0.5e-3)
+    asked.clear()
+    growing = (np.array([1e-3, 1.1e-3, 1.2e-3])[:, None] * grid).ravel()
+    assert np.array_equal(_once_a_block(values)(growing), values(growing)) and asked[0] == growing.size

@@ -31,10 +31,11 @@ import pytest
 import mdr_events as me
 from mdr_events.models.continuum import play_run
 from mdr_events.models.continuum.layer_branch import RADII_RTOL
-from mdr_events.models.continuum.play_reach import (REACH_ULPS, REACH_ULPS_CAP, constant_part, reach_times,
-                                                   reach_ulps)
+from mdr_events.models.continuum.play_reach import (REACH_ULPS, REACH_ULPS_CAP, constant_part, pressed_time,
+                                                   reach_times, reach_ulps)
 from mdr_events.models.continuum.play_search import EVENT_HALVINGS, searched
 from mdr_events.models.continuum.play_springs import PlaySprings
+from play_recorders import asked_readings, made_plays
 
 #: The paper's 5 mm layer on a bonded base.
 LAYER = 5e-3
@@ -74,19 +75,13 @@ def contact_of(law: str, adhesive: bool = False) -> me.Contact:
 def recorded(law: str, monkeypatch) -> tuple[PlaySprings, list]:
     """The route ``simulate`` ran on the layer along :func:`fretting` and the brackets its events were searched in
     (``(low, high, onset)``, path clock)."""
-    made, brackets = [], []
-
-    class Recorded(PlaySprings):
-        def __post_init__(self) -> None:
-            super().__post_init__()
-            made.append(self)
+    made, brackets = made_plays(monkeypatch), []
 
     def bisect(low, high, reached, onset, play=None):
         brackets.append((low, high, onset))
         return (yield from bisected(low, high, reached, onset, play))
 
     bisected = play_run._bisect
-    monkeypatch.setattr(play_run, "PlaySprings", Recorded)
     monkeypatch.setattr(play_run, "_bisect", bisect)
     me.simulate(contact_of(law), fretting(), "continuum", samples=SAMPLES)
     assert len(made) == 1
@@ -167,7 +162,7 @@ def test_the_closed_form_root_is_brent_s(law, route, monkeypatch):
 
 @pytest.mark.parametrize("law, adhesive, motion", [(law, False, "fretting") for law in LAWS]
                          + [("coulomb", True, "fretting"), ("tau0+coulomb", True, "fretting"),
-                            ("coulomb", False, "A 20°")])
+                            ("coulomb", False, "A 20°"), ("coulomb", True, "A 20°")])
 def test_the_run_is_the_route_of_brent_s_root_at_every_output(law, adhesive, motion, monkeypatch):
     """The whole run with the closed forms against the route of before (Brent's root everywhere, every extremum
     refined, a full slip from the first contact bisected on the guess): every output the same, the events' times to
@@ -210,22 +205,55 @@ def test_the_force_is_monotone_where_the_windows_are_fixed(law, route):
         assert np.ptp(force) > 0.0  # (the part is not all plateau: the check can fail)
 
 
+def full_slip_asks(contact: me.Contact, monkeypatch) -> list:
+    """The kinds of the readings the events' searches asked along scenario A at 20° on ``contact``
+    (:func:`~play_recorders.asked_readings`), the run's log holding a full slip."""
+    asked = asked_readings(monkeypatch)
+    run = me.simulate(contact, MOTIONS["A 20°"], "continuum", samples=SAMPLES)
+    assert "full_slip" in run["event_kind"].values[0].tolist()
+    return asked
+
+
 def test_a_full_slip_from_the_first_contact_is_found_on_the_compressed_nodes(monkeypatch):
     """Along scenario A at 20° under Coulomb's law alone every compressed spring slides from its attachment
     (``ẋ > μρ ḋ``): full slip holds from the first node counted as compressed on, which the nodes' depths alone locate
     (``play_run._compressed``); the share checks that bracket and takes it, no guess of the anchors read (the route of
     before bisected the guess 48 times)."""
-    asked = []
-    readings = play_run._readings
-
-    def recorded(play, asks):
-        asked.extend(reading for reading, _ in asks)
-        return readings(play, asks)
-
-    monkeypatch.setattr(play_run, "_readings", recorded)
-    run = me.simulate(contact_of("coulomb"), MOTIONS["A 20°"], "continuum", samples=SAMPLES)
-    assert "full_slip" in run["event_kind"].values[0].tolist()
+    asked = full_slip_asks(contact_of("coulomb"), monkeypatch)
     assert play_run._Reading.COMPRESSED in asked and play_run._Reading.GUESS not in asked
+
+
+def test_a_full_slip_from_an_adhesive_jump_in_is_found_on_the_centre_probe(monkeypatch):
+    """With the paper's adhesion the contact jumps in to a radius with no spring compressed (``x_c = 0`` at ``d = 0``):
+    along scenario A at 20° under Coulomb's law alone full slip holds from the first time the centre probe counts as
+    compressed (the quadrature's nodes span the jump-in's radius and count later, which the share does not follow), a
+    time in closed form on the depth (``play_reach.pressed_time``) the two readings about it check; the share takes
+    that bracket, no guess of the anchors read (the route of before bisected the guess 48 times and, the guess turning
+    back and forth at round-off near 3e-5 s, the share 48 times more)."""
+    asked = full_slip_asks(contact_of("coulomb", adhesive=True), monkeypatch)
+    assert play_run._Reading.COMPRESSED in asked and play_run._Reading.GUESS not in asked
+
+
+@pytest.mark.parametrize("adhesive", [False, True])
+def test_the_centre_probe_counts_as_compressed_from_its_closed_form_time(adhesive, monkeypatch):
+    """``pressed_time`` along scenario A at 20° from the first contact (without adhesion at ``a = 0``, with it at the
+    jump-in's radius) is where the route's own test of the centre probe (``PlaySprings.centre_pressed``) flips, to
+    the window the events' search checks it in (``ROOT_ULPS``: the depth is rounded once by ``np.interp`` and once by
+    the division, each an ulp or two of the time): bisected on that test to neighbouring doubles, the flip lies
+    within it."""
+    made = made_plays(monkeypatch)
+    me.simulate(contact_of("coulomb", adhesive), MOTIONS["A 20°"], "continuum", samples=SAMPLES)
+    play = made[0]
+    low = float(play.path.first_contact_time())
+    high = float(play.path.corner_times[play.path.corner_times > low][0])
+    root = pressed_time(play, low, high)
+    below, above = low, high
+    assert not play.centre_pressed(below)[0] and play.centre_pressed(above)[0]
+    while np.nextafter(below, above) < above:  # (the flip of the route's own test, to neighbouring doubles)
+        middle = 0.5 * (below + above)
+        below, above = (middle, above) if not play.centre_pressed(middle)[0] else (below, middle)
+    assert abs(root - above) <= play_run.ROOT_ULPS * np.spacing(above), (root, above)
+    assert above > low  # (not at the contact's start: the check can fail)
 
 
 def test_the_reach_window_is_finite_at_time_zero(route):

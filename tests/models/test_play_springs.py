@@ -17,9 +17,10 @@ import pytest
 from scipy.interpolate import CubicSpline
 
 import mdr_events as me
-from mdr_events.models.continuum import play_run, solve_path
+from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum.play_springs import (GOLDEN_TABLE_POINTS, GOLDEN_TABLE_RTOL, PlaySprings,
                                                        SpanHistory, spring_line)
+from play_recorders import made_plays
 
 #: A power law with ``n < 1`` (``g = c x^0.5``): ``a ∝ d²``, so the cap ``ū = K a`` is convex along a straight segment
 #: and the lower window ``x − c`` of a spring can have its maximum inside a segment (the route's golden sections).
@@ -121,17 +122,10 @@ def cone_on_a_layer_play() -> tuple[PlaySprings, me.Path]:
     """The springs of issue 32's W8 run, as the run makes them: a cone on a 2 mm layer under ``τ0`` + Coulomb with
     the paper's adhesion, scenario A at 45° (its ``ū(a(t))`` is convex on a stretch: the golden sections read it from
     a spline)."""
-    made = []
-
-    class Kept(PlaySprings):
-        def __post_init__(self) -> None:
-            super().__post_init__()
-            made.append(self)
-
     law = me.FrictionLaw("tau0+coulomb", tau0=me.Parameters.paper().tau0, mu=0.5)
     contact = dataclasses.replace(me.Contact.paper(), friction=law, layer=me.Layer(2e-3), indenter=me.PowerLaw(0.2, 1.0))
     with pytest.MonkeyPatch.context() as patch:
-        patch.setattr(play_run, "PlaySprings", Kept)
+        made = made_plays(patch)
         me.simulate(contact, "A", [45.0], "continuum", samples=5)
     (play,) = made
     return play, play.path

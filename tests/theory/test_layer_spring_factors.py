@@ -44,3 +44,23 @@ def test_the_springs_are_the_relations_to_round_off(profile, nu):
 def test_a_body_without_tables_or_tangential_springs_is_refused(layer):
     with pytest.raises(ValueError, match=r"layer=.* is not allowed; allowed: a layer of finite thickness on a bonded"):
         SpringFactors(Paraboloid(PAPER.R), PAPER.E_star, PAPER.G_star, PAPER.nu, layer)
+
+
+@pytest.mark.parametrize("share", [1e-9, 0.5 * LAMBDA_MIN, 0.3], ids=["far-below", "below", "tables"])
+@pytest.mark.parametrize("kind", [float, np.float64, np.asarray], ids=["float", "float64", "0-d"])
+def test_a_scalar_coordinate_is_a_one_element_array(share, kind):
+    """A float, an ``np.float64`` or a 0-d array, below :data:`LAMBDA_MIN` (the tables' series) or on the tables,
+    gives a 0-d ``g``, ``k`` and ``k_t`` equal bit for bit to a one-element array's, which are the relations' to
+    round-off (:data:`ROUTE_RTOL`): a scalar below ``LAMBDA_MIN`` once raised a ``TypeError`` (the series written
+    into a NumPy scalar)."""
+    layer = Layer(5e-3)
+    x = share * layer.thickness
+    factors = SpringFactors(Paraboloid(PAPER.R), PAPER.E_star, PAPER.G_star, PAPER.nu, layer)
+    springs, row = factors.values(kind(x)), factors.values(np.array([x]))
+    relations = (power_law_profile(x, Paraboloid(PAPER.R), PAPER.nu, layer),
+                 spring_stiffness_density(x, PAPER.E_star, PAPER.nu, layer),
+                 tangential_spring_stiffness_density(x, PAPER.G_star, PAPER.nu, layer))
+    for value, one, relation in zip(springs, row, relations):
+        assert np.shape(value) == () and np.shape(one) == (1,)
+        assert value == one[0]
+        np.testing.assert_allclose(value, relation, rtol=ROUTE_RTOL, atol=0.0)

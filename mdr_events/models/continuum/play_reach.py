@@ -21,7 +21,8 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["constant_part", "reach_times", "reach_ulps", "REACH_ULPS", "REACH_ULPS_CAP"]
+__all__ = ["constant_part", "reach_times", "reach_ulps", "pressed_time", "REACH_ULPS", "REACH_ULPS_CAP",
+           "PRESSED_STEPS"]
 
 #: The units in the last place of a time a closed-form reach and the route's own reading of a spring's cap can differ
 #: by besides the anchors' round-off over the speed (:func:`reach_ulps`): each rounds a time once or twice.
@@ -30,6 +31,12 @@ REACH_ULPS = 4
 #: time itself, so a wider one tells no more (at ``time = 0``, whose ulp is the least subnormal, the count would not be
 #: finite).
 REACH_ULPS_CAP = 2**53
+
+
+#: The fixed-point steps of :func:`pressed_time` at most (each moves the time by the profile's value at the centre
+#: probe, ``EDGE_SHARE²`` of the depth on a paraboloid, ``EDGE_SHARE`` on a cone: two or three steps reach the fixed
+#: point).
+PRESSED_STEPS = 8
 
 
 def constant_part(play, low: float, high: float) -> float | None:
@@ -133,3 +140,58 @@ def reach_ulps(play, start: float, time: float) -> int:
     with np.errstate(over="ignore"):  # (an ulp of a time near 0 is subnormal: the count overflows, capped)
         ulps = np.float64(4.0 * np.finfo(float).eps * scale / speed) / np.spacing(np.float64(abs(time)))
     return REACH_ULPS + int(min(np.ceil(ulps), REACH_ULPS_CAP))
+
+
+def pressed_time(play, low: float, high: float) -> float | None:
+    """Where, in ``[low, high]``, the centre probe of the kink search first counts as compressed
+    (:meth:`~.play_springs.PlaySprings.centre_pressed`: ``d(t) − g(EDGE_SHARE a(t))`` above the pressed round-off), in
+    closed form on the depth alone: ``d`` is linear between the path's corners, so the time it reaches a depth is one
+    division; the depth to reach, the round-off plus the profile at the probe at the time found last, taken to its
+    fixed point (:data:`PRESSED_STEPS`; the probe's ``g`` is ``EDGE_SHARE²`` of the depth on a paraboloid). Along
+    scenario A under Coulomb's law alone every compressed spring slides from its attachment, so from that time on
+    the share at a cap is 1 (:func:`~.play_run._bisect` checks it).
+
+    Parameters
+    ----------
+    play : PlaySprings
+        The springs.
+    low, high : float
+        The interval (s, path clock).
+
+    Returns
+    -------
+    float or None
+        The time (s, path clock) to the depth's rounding; ``None`` where the depth does not reach it by ``high``.
+    """
+    from .play_springs import EDGE_SHARE
+
+    # (no convergence test but equality, at most PRESSED_STEPS: the time is a seed, not the answer. What makes the
+    # answer right is not this iteration but the checks of it: play_run._pressed_root's two readings of the compressed
+    # test either side of the time (a time off the fixed point fails them and the compressed test is bisected
+    # instead), and play_run._bisect's check of the bracket found on the share itself (a wrong one fails it and the
+    # guess is bisected as before))
+    time = None
+    for _ in range(PRESSED_STEPS):
+        radius = play.radius(low if time is None else time)
+        found = _depth_time(play, low, high, play.pressed_round_off
+                            + float(play.line.profile(np.array([EDGE_SHARE * radius]))[0]))
+        if found is None or found == time:
+            return found
+        time = found
+    return time
+
+
+def _depth_time(play, low: float, high: float, depth: float) -> float | None:
+    """The first time in ``[low, high]`` the path's depth (linear between its corners) reaches ``depth``; ``None``
+    where it does not."""
+    corner_t, _, corner_d = play.path_corners()
+    times = np.concatenate([[low], corner_t[(corner_t > low) & (corner_t < high)], [high]])
+    depths = np.interp(times, corner_t, corner_d)
+    reached = np.flatnonzero(depths >= depth)
+    if not reached.size:
+        return None
+    k = int(reached[0])
+    if k == 0:
+        return float(low)
+    t0, t1, d0, d1 = (float(value) for value in (times[k - 1], times[k], depths[k - 1], depths[k]))
+    return min(max(t0 + (depth - d0) / (d1 - d0) * (t1 - t0), t0), t1)

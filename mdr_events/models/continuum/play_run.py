@@ -22,9 +22,10 @@ a time, reading one time at a time, bit for bit.
 
 Where the windows are fixed but for ``x`` (a segment at a constant depth, :func:`~.play_reach.constant_part`) the root
 that seeds an event's halvings is each spring's time to reach its cap in closed form (:mod:`.play_reach`) instead of
-Brent's, and ``F_x`` there is monotone, its extrema not refined; a full slip from the first contact under Coulomb's
-law alone is seeded by the nodes counted as compressed. Every seed's bracket is checked on the share as before
-(:data:`CLOSED_REACH` ``False``: the route of before).
+Brent's, and ``F_x`` there is monotone, its extrema not refined; a full slip from no spring compressed (the first
+contact, or with adhesion the jump-in) under Coulomb's law alone is seeded by the time the centre probe counts as
+compressed, in closed form on the depth (:func:`~.play_reach.pressed_time`). Every seed's bracket is checked on the
+share as before (:data:`CLOSED_REACH` ``False``: the route of before).
 """
 
 from __future__ import annotations
@@ -40,7 +41,8 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.kernel_model import KernelModel
 
 from .extrema import extremum_names, solution_extrema
-from .play_reach import constant_part, reach_times, reach_ulps
+from .play_pieces import log_pieces, reversal_end
+from .play_reach import constant_part, pressed_time, reach_times, reach_ulps
 from .play_search import EVENT_HALVINGS, brent, halve, searched
 from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, SpringState, spring_line
 from .solve import run_continuum
@@ -160,7 +162,7 @@ def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, st
     """The springs' events (module docstring) on the clock from first contact: in each piece of a contact between
     tangential reversals, a re-stick at its start where springs were at a cap before the reversal, then the first
     slip onset and full slip (every piece's searched side by side: :func:`~.play_search.searched`)."""
-    pieces = _pieces(events)
+    pieces = log_pieces(events)
     lasts = [end if reversal_end(events, end) else end - END_PROBE * (end - begin) for begin, end, _ in pieces]
     asked = [begin + start for begin, _, reversal in pieces if reversal] + [last + start for last in lasts]
     shares = dict(zip(asked, _shares(play, np.array(asked, dtype=float)).tolist()))
@@ -181,25 +183,6 @@ def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, st
             searches.append(_bisect(low + start, probes[k] + start, reached, kind is EventKind.SLIP_ONSET, play))
     results = searched(lambda asks: _readings(play, asks), searches)
     return [_event(play, time if kind is EventKind.RE_STICK else results[time], start, kind) for time, kind in found]
-
-
-def reversal_end(events, time: float) -> bool:
-    """Whether ``time`` is a tangential reversal of the log (else a contact's end)."""
-    return any(event.kind is EventKind.TANGENTIAL_REVERSAL and event.time == time for event in events)
-
-
-def _pieces(events) -> list[tuple[float, float, bool]]:
-    """Each contact of the log cut at its tangential reversals: ``(begin, end, whether it begins at a reversal)``."""
-    contacts = [event.time for event in events if event.kind in (EventKind.FIRST_CONTACT, EventKind.RE_CONTACT)]
-    ends = [event.time for event in events if event.kind in (EventKind.PULL_OFF, EventKind.CONTACT_ENDS)]
-    reversals = [event.time for event in events if event.kind is EventKind.TANGENTIAL_REVERSAL]
-    last = max([event.time for event in events], default=0.0)
-    out = []
-    for begin in contacts:
-        end = min([time for time in ends if time > begin], default=last)
-        cuts = [begin] + [time for time in reversals if begin < time < end] + [end]
-        out += [(low, high, low != begin) for low, high in zip(cuts[:-1], cuts[1:]) if high > low]
-    return out
 
 
 def _probed_all(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> tuple[list[SpringState], np.ndarray]:
@@ -246,7 +229,7 @@ class _Reading(Enum):
     ONSET = "onset"
     #: the least one, at the nodes and the centre and edge probes
     LAST = "last"
-    #: whether a node counts as compressed (:func:`_compressed`: 1 or 0)
+    #: whether the centre probe or a node counts as compressed (:func:`_compressed`: 1 or 0)
     COMPRESSED = "compressed"
 
 
@@ -333,7 +316,10 @@ def _bisect(low: float, high: float, reached, onset: bool, play: PlaySprings | N
     def by_compressed(time: float):
         return bool((yield ((_Reading.COMPRESSED, time),))[0])
 
-    first = [near_root] if root is not None else [by_compressed] if _from_contact(play, low, onset) else []
+    first = [near_root] if root is not None else []
+    if root is None and _from_contact(play, low, onset):
+        pressed = yield from _pressed_root(play, low, high)
+        first = [by_compressed] if pressed is None else [lambda time: _near_pressed(pressed, time)]
     for guess in first + [by_guess]:
         bracket = yield from halve(low, high, guess)
         below, above = (reached(value) for value in (yield tuple((_Reading.SHARE, end) for end in bracket)))
@@ -346,23 +332,49 @@ def _bisect(low: float, high: float, reached, onset: bool, play: PlaySprings | N
 
 def _from_contact(play: PlaySprings | None, low: float, onset: bool) -> bool:
     """Whether a full slip's search with no root of the distance (:func:`_root`: the distance not negative from the
-    piece's start) starts where the contact does, under Coulomb's law alone: the share at a cap is then 0 until a node
-    of the quadrature counts as compressed (:func:`_compressed`) and, where every compressed spring slides from its
+    piece's start) starts with no spring compressed (``x_c = 0``: where the contact starts, or with adhesion at its
+    jump-in), under Coulomb's law alone: the share at a cap is then 0 until the centre probe or a node of the
+    quadrature counts as compressed (:func:`_compressed`) and, where every compressed spring slides from its
     attachment (scenario A with ``ẋ > μρ ḋ``: each spring's ``x − Y − c = (ẋ − μρ ḋ)(t − τ)`` from its attachment at
-    ``τ``), 1 from then on: that time, found on the nodes' depths alone, seeds the bracket the share checks (a wrong
-    seed fails the check and the guess is bisected as before)."""
-    return play is not None and CLOSED_REACH and not onset and play.radius(low) == 0.0 and not play.shift(low) > 0.0
+    ``τ``), 1 from then on: that time, found on the depth alone (:func:`_pressed_root`), seeds the bracket the share
+    checks (a wrong seed fails the check and the guess is bisected as before)."""
+    return (play is not None and CLOSED_REACH and not onset and play.compressed_radius(low) == 0.0
+            and not play.shift(low) > 0.0)
+
+
+def _pressed_root(play: PlaySprings, low: float, high: float):
+    """The time the centre probe first counts as compressed in ``[low, high]`` in closed form
+    (:func:`~.play_reach.pressed_time`), checked by two readings of :func:`_compressed` :data:`ROOT_ULPS` either side
+    of it (a search of :func:`~.play_search.searched`). Returns the window's ends ``(below, above)`` (the reading 0 at
+    the first, 1 at the second), ``None`` where there is no time or the check fails."""
+    root = pressed_time(play, low, high)
+    if root is None:
+        return None
+    window = ROOT_ULPS * np.spacing(root)
+    ends = (max(root - window, low), min(root + window, high))
+    below, above = (yield tuple((_Reading.COMPRESSED, end) for end in ends))
+    return ends if below == 0.0 and above == 1.0 else None
+
+
+def _near_pressed(ends: tuple[float, float], time: float):
+    """Whether the centre probe or a node counts as compressed at ``time`` (a search of
+    :func:`~.play_search.searched`): decided by :func:`_pressed_root`'s window ``ends`` outside it, read inside."""
+    if time >= ends[1]:
+        return True
+    return time > ends[0] and bool((yield ((_Reading.COMPRESSED, time),))[0])
 
 
 def _compressed(play: PlaySprings, times: np.ndarray) -> np.ndarray:
-    """1 where a node of the quadrature at each of ``times`` counts as compressed, else 0
-    (:meth:`~.play_springs.PlaySprings.nodes_at`, all the times at once; the share at a cap under Coulomb's law alone
-    is 0 without one)."""
+    """1 where the centre probe of the kink search (:meth:`~.play_springs.PlaySprings.centre_pressed`) or a node of
+    the quadrature (:meth:`~.play_springs.PlaySprings.nodes_at`) at each of ``times`` counts as compressed, else 0,
+    all the times at once (the share at a cap under Coulomb's law alone is 0 without one; with adhesion the nodes
+    span the jump-in's radius, whose compressed zone the centre probe's panel holds first)."""
     out = np.zeros(times.shape)
     inside = np.flatnonzero([play.radius(float(time)) > 0.0 for time in times])
     if inside.size:
         _, pressed, group = play.nodes_at(times[inside])
         out[inside[np.unique(group[pressed])]] = 1.0
+        out[inside[play.centre_pressed(times[inside])]] = 1.0
     return out
 
 

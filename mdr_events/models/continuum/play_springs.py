@@ -40,22 +40,22 @@ a call at that time alone, bit for bit (a single time is the batch of one). The 
 every time (those at or after it dropped), so a clamp's provenance code does not depend on the times read together;
 where no spring has extremes of its own they are clamped a shared time at a time (:meth:`PlaySprings._shared_clamps`,
 each spring's crossings of ``d = g`` between them), without sorting the columns spring by spring.
+
+The springs' values (:mod:`.play_line`), the quadrature's panels and rule (:mod:`.play_quadrature`) and the golden
+sections of the springs' own extremes (:mod:`.play_golden`) are modules of their own.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Callable, NamedTuple
+from typing import NamedTuple
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
-from mdr_events.contact.adhesion import Adhesion
-from mdr_events.contact.friction import FrictionLaw
-from mdr_events.contact.layer import HALF_SPACE, Layer
-from mdr_events.parameters import Parameters
-
+from .play_golden import GOLDEN_STEPS, GOLDEN_TABLE_POINTS, GOLDEN_TABLE_RTOL, _golden, convex_tables
 from .play_history import DepthHistory, SpanHistory
+from .play_line import SpringLine, spring_line
+from .play_quadrature import EDGE_SHARE, NODES, _Breaks, _Quadrature
 
 __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
            "UPPER_CAP", "PANELS", "NODES", "EDGE_SHARE", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
@@ -64,41 +64,19 @@ __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHist
 
 #: Panels of ``[0, a]`` before the kinks are added.
 PANELS = 8
-#: Gauss–Legendre nodes per panel (between kinks the anchor is smooth: the rule's error falls as ``(width)^(2n)``).
-NODES = 12
 #: Halvings of the bracket of a kink in ``ξ``: below the doubles' resolution of the radius.
 KINK_HALVINGS = 60
-#: The centre's and the edge's provenance are read this share of the radius inside them, once per evaluation (a stick
-#: zone left between the edge and the last node, 3e-4 of the radius before full slip along A 20°, was 5e-8 of the
-#: force off): a zone narrower than this share is missed, by about the square of its width (5e-8 at 3.3e-4, below
-#: 1e-12 at this share); nearer the edge the springs' provenance flips by round-off where a shrinking contact's edge
-#: springs lie on their window's edge (one no kink search resolves), and the spring at ``a`` itself attaches at ``t``.
-EDGE_SHARE = 1e-6
 #: Points a kink's bracket is cut into at once (a power of two): 6 halvings a round, about 8 rounds from a node's
 #: spacing to two neighbouring doubles (16 cuts took 12), each evaluation's fixed cost (0.05-0.2 ms on a layer: the
 #: chain's clamps, the attachments, the springs' values) above its 63 points a bracket (0.3-1.5 us each).
 KINK_CUTS = 64
 #: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
 KINK_ROUNDS = 6
-#: Steps of a golden section (0.618^45 ≈ 4e-10 of the interval): below where a smooth maximum is located at all (its
-#: values within round-off ``ε`` over ``√ε ≈ 1.5e-8`` of the interval, where the steps' comparisons are round-off's),
-#: the clamp's value off by ``L''δt²/2``, about ``ε`` of it (80 steps, to 2e-17, took twice the evaluations for no
-#: change; each an inversion of the radius on a layer).
-GOLDEN_STEPS = 45
-#: ``ū(a(t))`` on a convex stretch is read in the golden sections from a cubic spline of it (one inversion of the
-#: radius on a grid, not one each step): its error, measured at the grid's midpoints, is kept below this share of
-#: the stretch's largest ``ū``. A section's maximum of an edge read within ``ε`` of it lies within ``2ε`` of the true
-#: one, and the clamp's value is read exactly at the time found (:meth:`PlaySprings._own_shifts`): the clamp is off by
-#: at most ``2ε`` (2e-13 of ``ū``, beside the golden section's own ``ε`` of round-off).
-GOLDEN_TABLE_RTOL = 1e-13
-#: Grid sizes tried for a stretch's spline, doubling (the error falls as the spacing's fourth power, 16× a doubling:
-#: a cone on a layer's stretch needed 513 points, 2e-14); beyond the last the stretch is read exactly each step.
-GOLDEN_TABLE_POINTS = (65, 129, 257, 513, 1025, 2049, 4097)
 #: Depths at which a segment's ``ū(a(d))`` is sampled for its concavity.
 CONCAVITY_SAMPLES = 65
 #: A second difference of ``ū(a(d))`` counts as convex above this share of its largest value (round-off).
 CONCAVITY_ROUND_OFF = 1e-12
-_GAUSS = np.polynomial.legendre.leggauss(NODES)
+_sum = np.add.reduce
 #: ``d − g`` within this share of the path's largest depth counts as not compressed (:meth:`PlaySprings.anchors`).
 PRESSED_ROUND_OFF = 1e-12
 #: A spring's anchor within this share of the path's largest ``|x|`` and its cap of its window's edge at ``t`` lies on
@@ -113,119 +91,6 @@ _ATTACHED, _LOWER, _UPPER = 0, 1, 2
 LOWER_CAP, UPPER_CAP = (-1, -4), (-2, -5)
 #: The provenance codes of the clamps start here, above every attachment's
 _COLUMN_CODES = 1 << 40
-
-
-class SpringLine(NamedTuple):
-    """What the per-spring route reads of the springs, vectorised in ``ξ`` or the depth."""
-
-    #: ``g(ξ)`` (m)
-    profile: Callable[[np.ndarray], np.ndarray]
-    #: ``w(ξ) = k_t(ξ)/G*``
-    weight: Callable[[np.ndarray], np.ndarray]
-    #: Coulomb's cap per compression ``μ k(ξ)/k_t(ξ)`` (0 without Coulomb's part)
-    ratio: Callable[[np.ndarray], np.ndarray]
-    #: the cap of ``τ0``'s part ``ū(a)`` (m; 0 without it)
-    shift: Callable[[np.ndarray], np.ndarray]
-    #: the contact radius of a depth without adhesion, ``g⁻¹(d)`` (0 at ``d <= 0``)
-    radius: Callable[[np.ndarray], np.ndarray]
-    #: ``G*`` (Pa)
-    G_star: float
-    #: whether ``shift`` is not 0 (a law with ``τ0``'s part): without it no clamp reads the radius
-    shifts: bool = True
-
-
-def spring_line(params: Parameters, profile, friction: FrictionLaw, layer: Layer = HALF_SPACE) -> SpringLine:
-    """The springs of a run without adhesion as the per-spring route reads them: the discrete model's own ``g``,
-    ``k_t/G*`` and Coulomb's ratios (:mod:`~mdr_events.models.spring_media`), the continuum's cap of ``τ0``
-    (:mod:`.media`) and its branch of ``Δγ = 0``.
-
-    Parameters
-    ----------
-    params : Parameters
-        The material and ``τ0``.
-    profile : PowerLaw or None
-        The indenter (``None``: the paraboloid of ``params.R``).
-    friction : FrictionLaw
-        The friction law.
-    layer : Layer, default the half-space
-        The body.
-
-    Returns
-    -------
-    SpringLine
-        The springs.
-    """
-    from mdr_events.models.spring_media import springs_of
-
-    from .caps import caps_of
-    from .media import HALF_SPACE_MEDIUM, layer_medium
-
-    springs = springs_of(params, profile, None, layer)
-    medium = HALF_SPACE_MEDIUM if layer.is_half_space else layer_medium(params, profile, layer)
-    K = caps_of(friction, params, medium).K
-    branch = medium.edge(Adhesion(), params, profile).grow
-
-    def shift(a):
-        return medium.shift(K, np.asarray(a, dtype=float)) if K > 0.0 else np.zeros(np.shape(a))
-
-    def radius(d):
-        d = np.asarray(d, dtype=float)
-        out = np.zeros(d.shape)
-        inside = d > 0.0
-        if np.any(inside):
-            out[inside] = branch.radii(d[inside])
-        return out
-
-    if layer.is_half_space:  # (the half-space's springs weigh 1 each)
-        return SpringLine(_remembered(springs.profile), _unit_weights,
-                          _remembered(lambda xi: springs.coulomb_ratios(xi, friction)), shift, radius, params.G_star,
-                          K > 0.0)
-    return SpringLine(*_layer_springs(params, springs.indenter, friction, layer), shift, radius, params.G_star,
-                      K > 0.0)
-
-
-def _remembered(function: Callable[[np.ndarray], np.ndarray]) -> Callable[[np.ndarray], np.ndarray]:
-    """``function`` of the springs' coordinates remembering its last argument and value (read-only): one evaluation
-    of the route asks the same springs' ``g``, ``k_t`` and ratios several times (the anchors, their attachment, the
-    force's weights)."""
-    last: list = [None, None]
-
-    def remembered(xi):
-        xi = np.asarray(xi, dtype=float)
-        if last[0] is None or last[0].shape != xi.shape or not np.array_equal(last[0], xi):
-            value = np.asarray(function(xi))
-            value.flags.writeable = False
-            last[0], last[1] = xi.copy(), value
-        return last[1]
-
-    return remembered
-
-
-def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: Layer):
-    """``g``, ``k_t/G*`` and ``μ k/k_t`` of the discrete model's :class:`~mdr_events.models.spring_media.LayerSprings`
-    with the same arithmetic, their bit for bit, the three read in one evaluation of the tables' splines
-    (:class:`~mdr_events.theory.layer.spring_factors.SpringFactors`, the flat punch's ``PunchSpringFactors``: by the
-    indenter's kind, :data:`~.layer_normals.LAYER_NORMALS`; unchecked: a run evaluates them some thousand
-    times on arrays of radii within its contact, which the layer's reach check has bounded before,
-    :mod:`.layer_reach`) and remembered for the last coordinates asked (one evaluation of the route asks the same
-    springs' ``g``, ``k_t`` and ratios several times)."""
-    from .layer_normals import LAYER_NORMALS
-
-    factors = LAYER_NORMALS[type(indenter)].spring_factors(params, indenter, layer)
-    G_star, mu = params.G_star, friction.coulomb_mu
-
-    def springs(xi):
-        profile, normal, tangential = factors.values(xi)
-        # (coulomb_cap(x, 1, 0, μ, ...): μ (k/k_t)(1 − 0))
-        ratio = mu * (normal / tangential) * (1.0 - 0.0) if mu > 0.0 else np.zeros(np.shape(xi))
-        return profile, tangential / G_star, ratio
-
-    springs = _remembered(springs)  # (the three as the rows of one array)
-    return (lambda xi: springs(xi)[0]), (lambda xi: springs(xi)[1]), (lambda xi: springs(xi)[2])
-
-
-def _unit_weights(xi: np.ndarray) -> np.ndarray:
-    return np.ones(np.shape(xi))
 
 
 class SpringState(NamedTuple):
@@ -250,53 +115,6 @@ class _Chain(NamedTuple):
     #: ``(start, end)`` of the intervals where ``ū(a(d))`` is not concave (each between two of ``times``)
     convex: np.ndarray
 
-
-
-class _Breaks(NamedTuple):
-    """The panels' ends of the quadratures at many times, flat: sorted by their time's index, then by radius."""
-
-    #: the radii (m)
-    values: np.ndarray
-    #: the index of each one's time
-    group: np.ndarray
-    #: whether each one is a kink found (:meth:`PlaySprings._kinks`)
-    kink: np.ndarray
-
-    def of(self, groups: np.ndarray) -> "_Breaks":
-        """The breaks of the times where ``groups`` (a mask over the times) holds."""
-        keep = groups[self.group]
-        return _Breaks(self.values[keep], self.group[keep], self.kink[keep])
-
-    def gauss(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """:func:`_gauss` on every time's panels: the nodes, the weights, each node's time's index and its panel (the
-        index of the break at its lower end)."""
-        panel = np.flatnonzero(self.group[:-1] == self.group[1:])
-        nodes, weights = _gauss_panels(self.values[panel], self.values[panel + 1])
-        return nodes, weights, np.repeat(self.group[panel], NODES), np.repeat(panel, NODES)
-
-    def with_ends(self, nodes: np.ndarray, group: np.ndarray, panel: np.ndarray) -> tuple[np.ndarray, ...]:
-        """The nodes of :meth:`gauss` with each time's centre and edge probes (:data:`EDGE_SHARE` inside them) first
-        and last: the points, their times' indices, their panels and which of them are nodes."""
-        first = np.flatnonzero(np.concatenate([[True], self.group[1:] != self.group[:-1]]))
-        last = np.concatenate([first[1:], [self.values.size]]) - 1
-        radius = self.values[last]
-        ends = (radius * EDGE_SHARE, radius * (1.0 - EDGE_SHARE))
-        points = np.concatenate([ends[0], nodes, ends[1]])
-        groups = np.concatenate([self.group[first], group, self.group[first]])
-        place = np.concatenate([np.full(first.size, -1), np.arange(nodes.size), np.full(first.size, nodes.size)])
-        order = np.lexsort((place, groups))
-        panels = np.concatenate([first, panel, last - 1])
-        is_node = np.concatenate([np.zeros(first.size, bool), np.ones(nodes.size, bool), np.zeros(first.size, bool)])
-        return points[order], groups[order], panels[order], is_node[order]
-
-    def with_kinks(self, found: np.ndarray, group: np.ndarray) -> "_Breaks":
-        """The breaks with the kinks ``found`` at the times of indices ``group`` added (once each)."""
-        values, groups = np.concatenate([self.values, found]), np.concatenate([self.group, group])
-        kink = np.concatenate([self.kink, np.ones(found.size, bool)])
-        order = np.lexsort((values, groups))
-        values, groups, kink = values[order], groups[order], kink[order]
-        starts = np.flatnonzero(np.concatenate([[True], (groups[1:] != groups[:-1]) | (values[1:] != values[:-1])]))
-        return _Breaks(values[starts], groups[starts], np.logical_or.reduceat(kink, starts))
 
 
 @dataclass
@@ -381,23 +199,9 @@ class PlaySprings:
         return self.line.shift(self.history.radii(times))
 
     def _convex_tables(self) -> list:
-        """``ū(a(t))`` on each of ``chain.convex`` (twice: both edges' sections), a cubic spline of it within
-        :data:`GOLDEN_TABLE_RTOL`, or the exact reading where no grid of :data:`GOLDEN_TABLE_POINTS` reaches it."""
+        """:func:`~.play_golden.convex_tables` of ``chain.convex``, made at the first golden section."""
         if self._tables is None:
-            tables = []
-            for lo, hi in self.chain.convex:
-                table = self._exact_shift
-                for points in GOLDEN_TABLE_POINTS:
-                    grid = np.linspace(lo, hi, points)
-                    values = self._exact_shift(grid)
-                    spline = CubicSpline(grid, values)
-                    middle = 0.5 * (grid[1:] + grid[:-1])
-                    error = np.max(np.abs(spline(middle) - self._exact_shift(middle)))
-                    if error <= GOLDEN_TABLE_RTOL * max(float(np.max(np.abs(values))), 1e-300):
-                        table = spline
-                        break
-                tables += [table, table]
-            self._tables = tables
+            self._tables = convex_tables(self._exact_shift, self.chain.convex)
         return self._tables
 
     def _shift_at(self, time: float, radius: float | None = None) -> float:
@@ -414,8 +218,14 @@ class PlaySprings:
         """:meth:`_shift_at` at one time, or at each of an array of times."""
         if np.ndim(t) == 0:
             return self._shift_at(float(t))
-        unique, inverse = np.unique(t, return_inverse=True)
-        return np.array([self._shift_at(time) for time in unique.tolist()])[inverse.reshape(np.shape(t))]
+        t = np.asarray(t, dtype=float)
+        flat = t.ravel()
+        if flat.size and np.all(flat[1:] >= flat[:-1]):  # (the times of springs grouped by time, in order: their runs
+            starts = np.concatenate([[True], flat[1:] != flat[:-1]])  # are the unique times, no sort)
+            unique, inverse = flat[starts], np.cumsum(starts) - 1
+        else:
+            unique, inverse = np.unique(flat, return_inverse=True)
+        return np.array([self._shift_at(time) for time in unique.tolist()])[inverse.reshape(t.shape)]
 
     def _own_times(self, xi, g, ratio, start, t):
         """Each spring's times of its ``L``'s maximum and ``U``'s minimum on every interval of ``chain.convex``
@@ -784,18 +594,19 @@ class PlaySprings:
         index = np.full(times.size, -1)
         index[inside] = np.arange(inside.size)
         kept = index[probe_time] >= 0
-        nodes, weights, anchor, label, group, probed[kept] = self._quadratures(
+        nodes, weights, anchor, label, group, probed[kept], profile, weight = self._quadratures(
             times[inside], radii[inside], probes[kept], index[probe_time[kept]], kinks)
-        w = self.line.weight(nodes) * weights
+        w = weight * weights
         at_cap, at = label < 0, times[inside][group]
-        pressed = self._d(at) - self.line.profile(nodes) > self._pressed_round_off
+        pressed = self._d(at) - profile > self._pressed_round_off
         moved = w * (self._x(at) - anchor)
         bounds = np.searchsorted(group, np.arange(inside.size + 1))
         for k, (low, high) in enumerate(zip(bounds[:-1].tolist(), bounds[1:].tolist())):
             cap, press, each = at_cap[low:high], pressed[low:high], weights[low:high]
-            states[inside[k]] = SpringState(2.0 * self.line.G_star * float(np.sum(moved[low:high])),
-                                            float(np.sum(w[low:high][cap])), float(np.sum(each[cap])),
-                                            float(np.sum(each[cap & press])), float(np.sum(each[press])))
+            # (``np.add.reduce``: ``np.sum``'s own reduction, without its wrapper's cost at each of some hundred times)
+            states[inside[k]] = SpringState(2.0 * self.line.G_star * float(_sum(moved[low:high])),
+                                            float(_sum(w[low:high][cap])), float(_sum(each[cap])),
+                                            float(_sum(each[cap & press])), float(_sum(each[press])))
         return states, probed
 
     def outside(self, t: float, probes: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -864,6 +675,30 @@ class PlaySprings:
         nodes, _, group, _ = self._grid(times, np.array([self.radius(float(t)) for t in times])).gauss()
         return nodes, self._d(times[group]) - self.line.profile(nodes) > self._pressed_round_off, group
 
+    def centre_pressed(self, times) -> np.ndarray:
+        """Whether the centre probe of the kink search (:data:`EDGE_SHARE` of the radius inside the centre, the
+        innermost spring the share reads) counts as compressed at each of ``times``: ``d − g`` above
+        :attr:`pressed_round_off`.
+
+        Parameters
+        ----------
+        times : array_like
+            The times (s, path clock).
+
+        Returns
+        -------
+        numpy.ndarray
+            A boolean per time (``False`` out of contact).
+        """
+        times = np.atleast_1d(np.asarray(times, dtype=float))
+        radii = np.array([self.radius(float(t)) for t in times])
+        return (radii > 0.0) & (self._d(times) - self.line.profile(EDGE_SHARE * radii) > self._pressed_round_off)
+
+    @property
+    def pressed_round_off(self) -> float:
+        """A spring counts as compressed (its cap's Coulomb part on) beyond this ``d − g`` (m)."""
+        return self._pressed_round_off
+
     def _grid(self, times: np.ndarray, radii: np.ndarray) -> "_Breaks":
         """The panels' ends at each of ``times`` before the kinks: :data:`PANELS` equal ones on ``[0, a]`` and the
         history's breaks."""
@@ -874,17 +709,19 @@ class PlaySprings:
         return _Breaks(np.concatenate(rows), group, np.zeros(group.size, bool))
 
     def _quadratures(self, times: np.ndarray, radii: np.ndarray, probes: np.ndarray, probe_time: np.ndarray,
-                     kinks: bool = True) -> tuple[np.ndarray, ...]:
+                     kinks: bool = True) -> "_Quadrature":
         """The quadrature's nodes and weights on ``[0, a]`` at each of ``times`` (Gauss–Legendre on the panels split
         at the history's breaks and, with ``kinks``, the kinks: :meth:`_kinks`), the anchors and their provenance
-        there, the index of each node's time (the nodes in the order of their times), and the provenance at
-        ``probes``."""
+        there, the index of each node's time (the nodes in the order of their times), the provenance at ``probes``,
+        and the springs' ``g`` and ``k_t/G*`` at the nodes (:class:`_Quadrature`)."""
         breaks = self._grid(times, radii)
         if kinks:
             return self._kinks(times, breaks, probes, probe_time)
         nodes, weights, group, _ = breaks.gauss()
-        anchor, label = self.anchors(np.concatenate([nodes, probes]), times[np.concatenate([group, probe_time])])
-        return nodes, weights, anchor[:nodes.size], label[:nodes.size], group, label[nodes.size:]
+        points = np.concatenate([nodes, probes])
+        anchor, label = self.anchors(points, times[np.concatenate([group, probe_time])])
+        return _Quadrature(nodes, weights, anchor[:nodes.size], label[:nodes.size], group, label[nodes.size:],
+                           *(read(points)[:nodes.size] for read in (self.line.profile, self.line.weight)))
 
     def cap_sides(self, t: float, edge: float) -> tuple[float, float]:
         """The lengths (m) of the springs within ``edge`` at the lower and the upper cap at ``t``, on the quadrature's
@@ -905,20 +742,21 @@ class PlaySprings:
         a = self.radius(t)
         if not a > 0.0:
             return 0.0, 0.0
-        nodes, weights, _, labels, _, _ = self._quadratures(np.array([float(t)]), np.array([a]), np.empty(0),
+        nodes, weights, _, labels, *_ = self._quadratures(np.array([float(t)]), np.array([a]), np.empty(0),
                                                             np.empty(0, dtype=np.intp))
         inside = nodes < edge
         return (float(np.sum(weights[inside & np.isin(labels, LOWER_CAP)])),
                 float(np.sum(weights[inside & np.isin(labels, UPPER_CAP)])))
 
     def _kinks(self, times: np.ndarray, breaks: "_Breaks", probes: np.ndarray,
-               probe_time: np.ndarray) -> tuple[np.ndarray, ...]:
+               probe_time: np.ndarray) -> "_Quadrature":
         """Each time's ``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances
         differ (within a panel, across a panel's end, or in the first round between the centre or the edge,
         :data:`EDGE_SHARE` inside it, and the nearest node) and no kink found before lies between them, the change
         located by bisection; repeated until every such pair holds a kink, every round one evaluation of the anchors
         for the times still searched. Returns :meth:`_quadratures`' nodes, weights, anchors, provenance and times of
-        the last breaks (:func:`_gauss`), and the provenance at ``probes`` (read in the first round)."""
+        the last breaks (:func:`~.play_quadrature._gauss`), the provenance at ``probes`` (read in the first round) and the springs'
+        values at the nodes (read with their anchors)."""
         done, probed, active = [], None, np.ones(times.size, bool)
         for round_ in range(KINK_ROUNDS + 1):
             current = breaks.of(active)
@@ -931,7 +769,9 @@ class PlaySprings:
                 probed, anchor, label, edges = label[inner.size:], anchor[:inner.size], label[:inner.size], \
                     edges[:inner.size]
             else:
+                points = inner
                 anchor, label, edges, _ = self._anchors(inner, times[inner_group], inner_group)
+            values = [read(points)[:inner.size][is_node] for read in (self.line.profile, self.line.weight)]
             # (two springs on the same smooth edge of their windows at t to round-off hold the same anchor whatever
             # their provenance: no kink between them)
             change = np.flatnonzero((inner_group[1:] == inner_group[:-1]) & (label[1:] != label[:-1])
@@ -942,7 +782,7 @@ class PlaySprings:
             searched[inner_group[fresh]] = True
             finished = (active & ~searched)[group]
             done.append((nodes[finished], weights[finished], group[finished], anchor[is_node][finished],
-                         label[is_node][finished]))
+                         label[is_node][finished], values[0][finished], values[1][finished]))
             if not fresh.size:
                 break
             at = inner_group[fresh]
@@ -952,9 +792,10 @@ class PlaySprings:
             raise RuntimeError(f"the springs' kinks at t={float(times[np.flatnonzero(active)[0]])!r} s were still "
                                f"being found after {KINK_ROUNDS} rounds ({fresh.size} more): a bug to report (the "
                                "force would be summed across a kink)")
-        nodes, weights, group, anchor, label = (np.concatenate(column) for column in zip(*done))
+        nodes, weights, group, anchor, label, profile, weight = (np.concatenate(column) for column in zip(*done))
         order = np.argsort(group, kind="stable")
-        return nodes[order], weights[order], anchor[order], label[order], group[order], probed
+        return _Quadrature(nodes[order], weights[order], anchor[order], label[order], group[order], probed,
+                           profile[order], weight[order])
 
     def _bisect(self, t, low: np.ndarray, high: np.ndarray, low_label: np.ndarray) -> np.ndarray:
         """Each bracket (at ``t``, or at its own time of an array of them) cut into :data:`KINK_CUTS` at once, kept where the provenance first differs from ``low``'s,
@@ -999,17 +840,6 @@ def _on_edge(anchor, lower, upper, round_off: float, pressed) -> np.ndarray:
     return np.where(side > 0, side + 2 * pressed, 0)
 
 
-def _gauss(breaks: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The nodes and weights of Gauss–Legendre's rule on each panel between ``breaks``."""
-    return _gauss_panels(breaks[:-1], breaks[1:])
-
-
-def _gauss_panels(lows: np.ndarray, highs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The nodes and weights of Gauss–Legendre's rule on each panel ``[lows, highs]``."""
-    nodes = (0.5 * (highs - lows)[:, None] * (_GAUSS[0][None, :] + 1.0) + lows[:, None]).ravel()
-    return nodes, (0.5 * (highs - lows)[:, None] * _GAUSS[1][None, :]).ravel()
-
-
 def _clamp(anchor, label, lower, upper, live, code):
     """Clamp ``anchor`` to ``[lower, upper]`` where ``live``; where it moved, ``label`` takes ``code`` (+1 lower,
     +2 upper; a negative code −3 or −6: −1 or −4 lower, −2 or −5 upper)."""
@@ -1021,20 +851,3 @@ def _clamp(anchor, label, lower, upper, live, code):
     else:
         label = np.where(raised, code + _LOWER, np.where(lowered, code + _UPPER, label))
     return anchor, label
-
-
-def _golden(function, low: np.ndarray, high: np.ndarray) -> np.ndarray:
-    """The argmax of ``function`` (vectorised, one variable per row) on each ``[low, high]`` by golden sections
-    (``nan`` where the interval is empty)."""
-    ratio = 0.5 * (np.sqrt(5.0) - 1.0)
-    empty = ~(high > low)
-    a, b = np.where(empty, 0.0, low), np.where(empty, 1.0, high)
-    c, e = b - ratio * (b - a), a + ratio * (b - a)
-    fc, fe = function(c), function(e)
-    for _ in range(GOLDEN_STEPS):
-        left = fc > fe
-        b = np.where(left, e, b)
-        a = np.where(left, a, c)
-        c, e = b - ratio * (b - a), a + ratio * (b - a)
-        fc, fe = function(c), function(e)
-    return np.where(empty, np.nan, 0.5 * (a + b))

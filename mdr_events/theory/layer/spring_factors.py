@@ -100,18 +100,22 @@ class SpringFactors:
         return self.scale * x**self.n * gamma
 
     def _factors(self, lam: np.ndarray) -> tuple[np.ndarray, ...]:
-        """``γₙ``, ``Θ(1)``, ``Φ_L``, ``Φ_T``, ``Ψ_L(1)``, ``Ψ_T(1)`` at ``λ`` as the tables give them."""
+        """``γₙ``, ``Θ(1)``, ``Φ_L``, ``Φ_T``, ``Ψ_L(1)``, ``Ψ_T(1)`` at ``λ`` as the tables give them, each of
+        ``λ``'s shape (a 0-d ``λ`` read as one element: the series are written into the rows)."""
+        shape, lam = np.shape(lam), np.atleast_1d(lam)
         small = lam < LAMBDA_MIN
         s = np.log(np.where(small, LAMBDA_MIN, lam))
         # (the columns as contiguous rows, as each spline's own value: NumPy's exponential on contiguous doubles)
         factors = list(np.exp(np.ascontiguousarray(self._spline(s).T)))
-        if np.any(small):  # (the tables' own series)
+        if np.any(small):  # (the tables' own series, elementwise: read at the small λ alone)
             normal, edge, tangential = self._tables
-            tangential_series = tangential._series(lam)
-            series = (*(table._series(lam)[name] for table, name in zip((normal, edge), _NORMAL_COLUMNS)),
+            few = lam[small]
+            tangential_series = tangential._series(few)
+            series = (*(table._series(few)[name] for table, name in zip((normal, edge), _NORMAL_COLUMNS)),
                       *(tangential_series[name] for name in _TANGENTIAL_COLUMNS))
-            factors = [np.where(small, exact, value) for exact, value in zip(series, factors)]
-        return tuple(factors)
+            for value, exact in zip(factors, series):
+                value[small] = exact
+        return tuple(value.reshape(shape) for value in factors)
 
     def values(self, x) -> SpringValues:
         """``g``, ``k`` and ``k_t`` at ``x`` (the relations' arithmetic on the same factors: their values bit for bit).
