@@ -1,0 +1,94 @@
+"""The twenty-fifth hostile round (issue 32): each class of what failed, with the cases that showed it.
+
+The round's cases (round twenty-four's harness again; fresh variants of every class of the issue, weighted on the
+caches of ``memo.kept`` and their keys, ``Continuum(t=...)``, ``Scenario(alpha=...)``, the play route's closed-form
+reach, Coulomb on a layer's sweep, the punch's springs under Coulomb on a layer, the golden sections' spline, a
+table's columns, the standard output's help and encoding, ``ulimit -f``; every law x indenter x layer at the
+methods' defaults for time) are listed with their outcomes in the issue's closing note; what failed is below.
+"""
+
+from __future__ import annotations
+
+import tracemalloc
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from hostile_checks import one_line_naming
+from mdr_events.theory import analytic
+
+#: Angles beyond what the half-space's slip onsets may take within the default limits' memory (2 GiB at 48 bytes an
+#: angle: 4.5e7), a view of one value: no memory of its own.
+BEYOND_DEFAULT_ANGLES = 10**8
+#: What counting them may take (tracemalloc's peak): far below one copy of the angles (800 MB); the message and the
+#: limits' check take a few kB.
+COUNTED_PEAK_BYTES = 2**20
+
+
+def _peak_of(call) -> int:
+    """The peak of what ``call`` allocates (bytes, tracemalloc), whatever it raises (checked by the caller)."""
+    tracemalloc.start()
+    try:
+        call()
+    finally:
+        _, peak = tracemalloc.get_traced_memory()
+        tracemalloc.stop()
+    return peak
+
+
+def _refused_for_resources(call) -> int:
+    """The peak of ``call`` refused for its resources, traced the second time (the first imports what it uses)."""
+    def refused():
+        with pytest.raises(me.ResourceLimitError):
+            call()
+    refused()
+    return _peak_of(refused)
+
+
+# --- X1: the half-space's slip onsets counted nothing: d_crit of 1e8 angles (a view of one value) took 2.4 GB
+# without adhesion, 4.2 GB with, against the default limits' 2 GiB, and returned (the layer's onsets and the phase
+# diagram count theirs). Their memory per angle (D_CRIT_BYTES_PER_ANGLE, the rows' D_CRIT_ROWS_BYTES_PER_ANGLE) is
+# counted against the limits before the angles are read ------------------------------------------------------------
+
+def _angles_view():
+    return np.broadcast_to(20.0, (BEYOND_DEFAULT_ANGLES,))
+
+
+@pytest.mark.parametrize("call", [
+    lambda: me.d_crit(_angles_view(), me.Contact.paper()),
+    lambda: me.d_crit(_angles_view(), me.Contact.paper(), "B", adhesion=True),
+    lambda: analytic.d_crit_rows(_angles_view(), me.Contact.paper(), "B"),
+    lambda: analytic.d_crit_curves(_angles_view(), me.Contact.paper(), "A"),
+], ids=["d_crit A", "d_crit B adhesive", "d_crit_rows", "d_crit_curves"])
+def test_the_half_space_s_slip_onsets_count_their_angles_first(call):
+    assert _refused_for_resources(call) < COUNTED_PEAK_BYTES
+    message = one_line_naming(call, "the slip onset at 100000000 angles", errors=me.ResourceLimitError)
+    assert "limits=Limits(memory=...)" in message, message
+
+
+def test_the_slip_onset_s_memory_per_angle_bounds_what_it_takes():
+    """The bytes counted per angle are at least what the closed forms take at their peak (tracemalloc, 1e5 angles
+    spread over [0, 90]: every branch of both scenarios, with and without adhesion), so a run within the limits'
+    memory stays within it."""
+    angles = np.linspace(0.0, 90.0, 10**5)
+    contact = me.Contact.paper()
+    for scenario, branches in (("A", (None,)), ("B", analytic.BRANCHES)):
+        for branch in branches:
+            for adhesion in (False, True):
+                me.d_crit(angles[:10], contact, scenario, adhesion, branch)
+                peak = _peak_of(lambda: me.d_crit(angles, contact, scenario, adhesion, branch))
+                assert peak <= analytic.D_CRIT_BYTES_PER_ANGLE * angles.size, (scenario, branch, adhesion, peak)
+        peak = _peak_of(lambda: analytic.d_crit_rows(angles, contact, scenario))
+        assert peak <= analytic.D_CRIT_ROWS_BYTES_PER_ANGLE * angles.size, (scenario, peak)
+
+
+def test_the_slip_onset_s_angles_within_raised_limits_run():
+    """Raised limits take the angles (as the layer's onsets): the same depths as the default limits give a few."""
+    angles = np.array([0.0, 10.0, 45.0, 89.0, 90.0])
+    raised = me.Limits(memory=2**40)
+    for scenario in ("A", "B"):
+        assert np.array_equal(me.d_crit(angles, me.Contact.paper(), scenario, True, limits=raised),
+                              me.d_crit(angles, me.Contact.paper(), scenario, True))
+    with pytest.raises(TypeError, match=r"^limits=5 \(int\) is not allowed"):
+        me.d_crit(angles, me.Contact.paper(), limits=5)
