@@ -92,3 +92,29 @@ def test_the_slip_onset_s_angles_within_raised_limits_run():
                               me.d_crit(angles, me.Contact.paper(), scenario, True))
     with pytest.raises(TypeError, match=r"^limits=5 \(int\) is not allowed"):
         me.d_crit(angles, me.Contact.paper(), limits=5)
+
+
+# --- X2: fit with Coulomb's part on a layer (which the fit's model, the continuum's spans, does not run) was refused
+# by its first trial, the refusal blaming the trial's values: "the fit tried mu=0.5, and the model refused: ...;
+# narrow the fit with bounds= or a better start" (no bound or start helps). Refused before the data are read, naming
+# the law, mu and what runs it; a law whose mu is 0 and free likewise (its trials would be refused) ------------------
+
+def _coulomb_on_layer(mu: float):
+    import dataclasses
+
+    return dataclasses.replace(me.Contact.paper(), friction=me.FrictionLaw("coulomb", mu=mu), layer=me.Layer(2e-3))
+
+
+@pytest.mark.parametrize("mu, free", [(0.5, ["mu"]), (0.5, ["tau0"]), (0.0, ["mu"])])
+def test_fit_refuses_coulomb_on_a_layer_before_reading_the_data(mu, free):
+    unread = np.broadcast_to(np.nan, (3,))  # (a measurement the fit would refuse: the law is refused before it)
+    message = one_line_naming(lambda: me.fit(unread, _coulomb_on_layer(mu), "A", 20.0, free=free),
+                              f"friction='coulomb' with mu={mu!r}")
+    assert "the fit tried" not in message and "bounds=" not in message and "in fit on layer h = 0.002 m" in message
+
+
+def test_fit_takes_a_coulomb_law_of_no_mu_on_a_layer_when_mu_is_given():
+    """μ = 0 given (not free) is the law ``"tau0"`` of τ0 = 0 on the spans: past the check, to the data's reading."""
+    unread = np.broadcast_to(np.nan, (3,))
+    message = one_line_naming(lambda: me.fit(unread, _coulomb_on_layer(0.0), "A", 20.0, free=["dgamma1"]), "candidate")
+    assert "friction=" not in message, message
