@@ -118,3 +118,47 @@ def test_fit_takes_a_coulomb_law_of_no_mu_on_a_layer_when_mu_is_given():
     unread = np.broadcast_to(np.nan, (3,))
     message = one_line_naming(lambda: me.fit(unread, _coulomb_on_layer(0.0), "A", 20.0, free=["dgamma1"]), "candidate")
     assert "friction=" not in message, message
+
+
+# --- X3: what the help and the README said of a layer under Coulomb's part was that of two sessions before:
+# `simulate --help` said of --h "the continuum takes the friction law tau0 there", the README and the guide that "the
+# continuum refuses Coulomb's part" with the flat punch on a layer, the study format that a continuum sweep of h takes
+# "tau0" alone; all four run (simulate and a continuum sweep, the punch's springs too). What they say now is checked
+# against what runs: simulate's continuum takes Coulomb's part on a layer, validate refuses it in one line -----------
+
+def _help_of(capsys, verb: str) -> str:
+    from mdr_events.app.cli import main
+
+    with pytest.raises(SystemExit):
+        main([verb, "--help"])
+    return " ".join(capsys.readouterr().out.split())
+
+
+@pytest.mark.parametrize("verb", ["simulate", "validate", "fit", "sweep"])
+def test_the_layer_s_help_says_which_verbs_take_coulomb_s_part(capsys, verb):
+    text = _help_of(capsys, verb)
+    assert "the continuum takes the friction law tau0 there" not in text, text
+    if "--h H" in text:
+        assert "simulate and sweep run every friction law there, validate and fit the friction law tau0" in text, text
+
+
+def test_what_the_help_says_of_a_layer_runs(tmp_path):
+    import dataclasses
+
+    contact = dataclasses.replace(me.Contact.paper(), indenter=me.FlatPunch(1e-3), layer=me.Layer(1e-3),
+                                  friction=me.FrictionLaw("coulomb", mu=0.5))
+    ds = me.simulate(contact, "B", 20.0, "continuum", samples=40)
+    assert np.isfinite(np.nanmax(ds.tangential_force.values))
+    one_line_naming(lambda: me.validate(ds, contact, "B", 20.0), "friction='coulomb' is not allowed on layer")
+
+
+@pytest.mark.parametrize("page, stale", [
+    ("README.md", "the continuum refuses Coulomb's part with it there"),
+    ("docs/guide.md", "refused in the continuum, naming why"),
+    ("mdr_events/app/study.py", 'continuum with the friction law "tau0") or the closed-form'),
+])
+def test_the_pages_do_not_say_the_continuum_refuses_coulomb_on_a_layer(page, stale):
+    from pathlib import Path
+
+    text = " ".join((Path(__file__).resolve().parents[1] / page).read_text(encoding="utf-8").split())
+    assert " ".join(stale.split()) not in text
