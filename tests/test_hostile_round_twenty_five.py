@@ -162,3 +162,42 @@ def test_the_pages_do_not_say_the_continuum_refuses_coulomb_on_a_layer(page, sta
 
     text = " ".join((Path(__file__).resolve().parents[1] / page).read_text(encoding="utf-8").split())
     assert " ".join(stale.split()) not in text
+
+
+# --- X4: a simulator's value beyond the doubles once scaled to SI: `validate --units normal_force=kN` of a file
+# holding 1e306 printed NumPy's "overflow encountered in multiply" (two lines) before "column 'normal_force' holds
+# inf" (the file holds 1e306); `--units time=h` likewise, "not allowed as the time"; `--units time=min` (6e307 s, a
+# finite time) ran, the figure's transforms overflowing with warnings, to exit 1. Each magnitude is compared with
+# SCALE_MAX before it is scaled, the time's too, and named in its unit and in SI ------------------------------------
+
+def _run_with(path, column: str, value: str) -> str:
+    """A run of scenario A at 20° (the continuum's 40 samples) as CSV, ``value`` written at row 10 of ``column``."""
+    ds = me.simulate(me.Contact.paper(), "A", 20.0, "continuum", samples=40)
+    columns = {"time": ds.time.values, "normal_force": ds.normal_force.values[0]}
+    rows = [[repr(float(columns["time"][row])), repr(float(columns["normal_force"][row]))] for row in range(40)]
+    rows = [row for row in rows if row[1] != "nan"]
+    rows[10][list(columns).index(column)] = value
+    path.write_text("time,normal_force\n" + "\n".join(",".join(row) for row in rows) + "\n", encoding="utf-8")
+    return str(path)
+
+
+@pytest.mark.parametrize("column, value, unit, shown_value", [
+    ("normal_force", "1e306", "kN", "holds 1e+306 kN (inf in SI units) at data row 11"),
+    ("normal_force", "1e306", "mN", "holds 1e+306 mN (1e+303 in SI units) at data row 11"),
+    ("time", "1e306", "h", "holds 1e+306 h (inf in SI units) at data row 11"),
+    ("time", "1e306", "min", "holds 1e+306 min (6e+307 in SI units) at data row 11"),
+])
+def test_a_value_beyond_the_doubles_in_si_is_named_in_its_unit(tmp_path, column, value, unit, shown_value):
+    path = _run_with(tmp_path / "run.csv", column, value)
+    message = one_line_naming(lambda: me.validate(path, me.Contact.paper(), "A", 20.0, units={column: unit}),
+                              f"column '{column}' {shown_value}")
+    assert "magnitudes up to 1.3e+154 in SI units" in message, message
+
+
+def test_cli_a_value_beyond_the_doubles_in_si_is_one_line(capsys, tmp_path):
+    from hostile_checks import cli_one_line
+
+    path = _run_with(tmp_path / "run.csv", "normal_force", "1e306")
+    err = cli_one_line(capsys, ["validate", "--scenario", "A", "--alpha", "20", "--units", "normal_force=kN", "--out",
+                                str(tmp_path / "out"), path])
+    assert "holds 1e+306 kN (inf in SI units)" in err, err
