@@ -350,7 +350,8 @@ def _refuse_magnitudes(source: str, column: str, values: np.ndarray, unit: str, 
     with np.errstate(over="ignore"):
         _refuse_rows(source, column, values, np.isfinite(values) & (np.abs(values) > SCALE_MAX / factor), time,
                      f"magnitudes up to {SCALE_MAX:.2g} in SI units, so that their squares stay finite (check the "
-                     "unit)", written=lambda value: f"{float(value):.3g} {unit} ({float(value) * factor:.3g} in SI units)")
+                     "unit)", written=lambda value: f"{float(value):.3g} {unit} ({float(value) * factor:.3g} in SI "
+                                                    "units)")
 
 
 def _refuse_rows(source: str, column: str, values: np.ndarray, bad: np.ndarray, time: np.ndarray, allowed: str,

@@ -558,8 +558,8 @@ def _onset_parameters(contact: ContactLike, what: str, d_max: float | None) -> "
     return params
 
 
-def d_crit_curves(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A", *,
-                  d_max: float | None = None, limits: Limits | None = None) -> dict[tuple[bool, str | None], np.ndarray]:
+def d_crit_curves(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A", *, d_max: float | None = None,
+                  limits: Limits | None = None) -> dict[tuple[bool, str | None], np.ndarray]:
     """Every curve of :func:`d_crit` of a scenario at the same angles, their tangent computed once.
 
     Parameters

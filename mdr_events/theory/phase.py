@@ -161,7 +161,8 @@ def _paper_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, 
                          coords: dict) -> xr.Dataset:
     """:func:`phase_diagram` of the paper's paraboloid and friction law: eqs. (17), (18) or (20), (21)
     (:mod:`~mdr_events.theory.analytic`), Fig. 9a or 9b for a paper preset."""
-    curves = analytic.d_crit_rows(angles, params, scenario, limits=_COUNTED)  # (the rows of B's two branches: no stacking)
+    # (the rows of B's two branches: no stacking; the angles counted by phase_diagram)
+    curves = analytic.d_crit_rows(angles, params, scenario, limits=_COUNTED)
     jump_off = analytic.jump_off(params, params.dgamma1)["depth"] if scenario == "B" else None
     variables = _onset_variables(curves, scenario, coords, jump_off, params.d_max,
                                  lambda adhesive: analytic.critical_angle(params, scenario, adhesion=adhesive))
