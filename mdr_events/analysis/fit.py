@@ -360,7 +360,7 @@ def fit(measured, contact: Contact | Parameters | None = None, motion=None, alph
 
 def _check_fit(job: FitJob, free: Sequence[str], progress: Callable[[str], None] | None) -> None:
     """The checks of :func:`fit` before the data are read: ``progress``, the start's scales, ``R`` free only with
-    the paraboloid."""
+    the paraboloid, Coulomb's part (its ``μ`` or ``μ`` free) and ``ν`` free only on the half-space."""
     start, profile, friction = job.model.params, job.model.profile, job.model.friction
     check_callback("progress", progress, "a line of text")
     check_representable(start, profile, friction)
@@ -368,6 +368,13 @@ def _check_fit(job: FitJob, free: Sequence[str], progress: Callable[[str], None]
         raise ValueError(f"free={list(free)!r} frees R with profile={profile!r}; allowed: the names of "
                          f"{list(FREE_NAMES)} but R (the power law's shape is c and n, R belongs to the paraboloid)")
     layer = job.model.contact.layer
+    if not layer.is_half_space and friction.uses_mu and (friction.coulomb_mu > 0.0 or "mu" in free):
+        # (the fit's model reads the continuum's spans; round twenty-five: the first trial's refusal blamed its values,
+        # "the fit tried mu=0.5, and the model refused: ...; narrow the fit with bounds= or a better start")
+        raise ValueError(f"friction={friction.law!r} with mu={friction.mu!r}{' free' if 'mu' in free else ''} is not "
+                         f"allowed in fit on {layer.describe()}; allowed: 'tau0' there (the fit's model reads the "
+                         "continuum's spans, which take Coulomb's part on the half-space only; on a layer it runs in "
+                         "simulate(..., method='continuum'), a continuum sweep and method='discrete')")
     if not layer.is_half_space and "nu" in free:
         raise ValueError(f"free={list(free)!r} frees nu on {layer.describe()}; allowed: the names of "
                          f"{list(FREE_NAMES)} but nu (each ν needs the layer's tables of its own, about 4 s to build "

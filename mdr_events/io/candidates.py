@@ -295,6 +295,7 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
                              f"{', '.join(CANDIDATE_QUANTITIES)}")
     _check_units_have_columns(source, units, names, columns)
     found: dict[str, np.ndarray] = {}
+    given: dict[str, tuple[np.ndarray, str, float]] = {}  # (each quantity's column as read, its unit and factor)
     used: set[str] = set()
     for quantity in CANDIDATE_QUANTITIES:
         column = names.get(quantity, quantity)
@@ -308,7 +309,9 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
             raise ValueError(f"{source}: names[{quantity!r}]={column!r} is the column of {other!r} too; allowed: one "
                              "column per quantity")
         unit = units.get(quantity, declared.get(column, CANDIDATE_QUANTITIES[quantity]))
-        found[quantity] = columns[column] * unit_factor(quantity, unit, source)
+        given[quantity] = columns[column], unit, unit_factor(quantity, unit, source)
+        with np.errstate(over="ignore"):  # (a value beyond the doubles in SI: refused by _refuse_magnitudes, named)
+            found[quantity] = given[quantity][0] * given[quantity][2]
         used.add(column)
     if "time" not in found:
         raise ValueError(f"{source}: no time column; columns found: {', '.join(columns) or 'none'}; allowed: a column "
@@ -322,6 +325,8 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         if values.shape != time.shape:
             raise ValueError(f"{source}: column {names.get(quantity, quantity)!r} has {values.size} values and the "
                              f"time {time.size}; allowed: the same length")
+    for quantity in ("time", *found):
+        _refuse_magnitudes(source, names.get(quantity, quantity), *given[quantity], time)
     if time.size < 2 or not np.all(np.isfinite(time)) or np.any(np.diff(time) <= 0):
         raise ValueError(f"{source}: column {names.get('time', 'time')!r} is not allowed as the time; allowed: at "
                          "least two finite, strictly increasing values")
@@ -331,13 +336,22 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
                  "shares from 0 to 1 (nan where no spring is in contact); a percentage needs "
                  "units={'sliding_fraction': '%'}", written=lambda value: repr(float(value)))
     for quantity, values in found.items():
-        column = names.get(quantity, quantity)
-        _refuse_rows(source, column, values, np.isfinite(values) & (np.abs(values) > SCALE_MAX), time,
-                     f"magnitudes up to {SCALE_MAX:.2g} in SI units, so that their squares stay finite (check the "
-                     "unit)", written=lambda value: f"{float(value):.3g} (SI)")
-        _refuse_rows(source, column, values, np.isinf(values), time,
+        _refuse_rows(source, names.get(quantity, quantity), values, np.isinf(values), time,
                      "finite values (nan or an empty field for a missing sample)")
     return Candidate(time, found, source, tuple(name for name in columns if name not in used))
+
+
+def _refuse_magnitudes(source: str, column: str, values: np.ndarray, unit: str, factor: float,
+                       time: np.ndarray) -> None:
+    """Refuse a finite value of ``column`` (as read, in ``unit``) whose magnitude in SI units exceeds
+    :data:`~mdr_events.validation.SCALE_MAX`, compared before it is scaled (round twenty-five: 1e306 kN overflowed
+    to inf in the scaling, with NumPy's warning, and was named as a value of ``inf``; 1e306 min as the time ran
+    to the figure's overflow), naming the row, the value in its unit and in SI."""
+    with np.errstate(over="ignore"):
+        _refuse_rows(source, column, values, np.isfinite(values) & (np.abs(values) > SCALE_MAX / factor), time,
+                     f"magnitudes up to {SCALE_MAX:.2g} in SI units, so that their squares stay finite (check the "
+                     "unit)", written=lambda value: f"{float(value):.3g} {unit} ({float(value) * factor:.3g} in SI "
+                                                    "units)")
 
 
 def _refuse_rows(source: str, column: str, values: np.ndarray, bad: np.ndarray, time: np.ndarray, allowed: str,

@@ -38,6 +38,8 @@ __all__ = [
     "d_crit",
     "d_crit_curves",
     "d_crit_rows",
+    "D_CRIT_BYTES_PER_ANGLE",
+    "D_CRIT_ROWS_BYTES_PER_ANGLE",
     "critical_angle",
     "critical_shift",
     "jkr_depth",
@@ -56,6 +58,12 @@ __all__ = [
 
 SCENARIOS = ("A", "B")
 BRANCHES = ("pull-off", "indentation")
+#: Bytes the half-space's slip onsets allocate per angle at their peak, counted against ``Limits.memory`` before the
+#: angles are read (tracemalloc at 1e6 angles: :func:`d_crit` 26 without adhesion, 42 with; :func:`d_crit_rows` 43 in
+#: scenario A, 59 in B's two rows), rounded up. Round twenty-five: ``d_crit`` of 1e8 angles (a view of one value, no
+#: memory of its own) took 2.4 to 4.2 GB against the default 2 GiB, accepted.
+D_CRIT_BYTES_PER_ANGLE = 48
+D_CRIT_ROWS_BYTES_PER_ANGLE = 64
 
 def _rel(key: str):
     return symbolic.relation(key)
@@ -485,9 +493,9 @@ def d_crit(
         With a Contact: the depth of the motion (m; default the paper's 0.3 mm), which scenario B's (20), (21)
         start from.
     limits : Limits, optional
-        On a layer: what the onsets may take, checked before they run (each angle a bisection on the layer's tables,
-        :data:`~mdr_events.theory.layer.slip_onset.ONSET_STEPS_PER_ANGLE` steps; ``None``: the defaults). The
-        half-space's closed forms take no steps.
+        What the onsets may take, checked before the angles are read (``None``: the defaults). On a layer each angle
+        is a bisection on the layer's tables, :data:`~mdr_events.theory.layer.slip_onset.ONSET_STEPS_PER_ANGLE`
+        steps; the half-space's closed forms take no steps, :data:`D_CRIT_BYTES_PER_ANGLE` of memory each.
 
     Returns
     -------
@@ -527,9 +535,15 @@ def d_crit(
         alpha_deg = validate_alpha(alpha)
         return _as_output(onset_depths(alpha_deg, contact, scenario, adhesion, branch, d_max, limits=limits),
                           alpha_deg)
-    check_limits(limits)  # (named if it is not one, though the closed forms take no steps)
+    _check_onset_memory(values_in(alpha), limits, D_CRIT_BYTES_PER_ANGLE)  # (counted before they are read)
     alpha_deg = validate_alpha(alpha)
     return _as_output(_slip_onset(_Tangent.of(alpha_deg), params, scenario, adhesion, branch), alpha_deg)
+
+
+def _check_onset_memory(count: int, limits: Limits | None, bytes_per_angle: int) -> None:
+    """The memory of the half-space's slip onsets at ``count`` angles (``bytes_per_angle`` each: their closed forms
+    take no steps) checked against ``limits`` (``None``: the defaults; anything else not a Limits named)."""
+    check_limits(limits).check(f"the slip onset at {count} angles", memory=bytes_per_angle * count)
 
 
 def _onset_parameters(contact: ContactLike, what: str, d_max: float | None) -> "Parameters":
@@ -544,8 +558,8 @@ def _onset_parameters(contact: ContactLike, what: str, d_max: float | None) -> "
     return params
 
 
-def d_crit_curves(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A", *,
-                  d_max: float | None = None) -> dict[tuple[bool, str | None], np.ndarray]:
+def d_crit_curves(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A", *, d_max: float | None = None,
+                  limits: Limits | None = None) -> dict[tuple[bool, str | None], np.ndarray]:
     """Every curve of :func:`d_crit` of a scenario at the same angles, their tangent computed once.
 
     Parameters
@@ -558,6 +572,8 @@ def d_crit_curves(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A"
         As for :func:`d_crit`.
     d_max : float, optional
         As for :func:`d_crit`.
+    limits : Limits, optional
+        As for :func:`d_crit_rows`.
 
     Returns
     -------
@@ -566,14 +582,14 @@ def d_crit_curves(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A"
         :func:`d_crit` of those arguments: ``adhesion`` ``False`` and ``True``, ``branch`` ``None`` in scenario A,
         each of :data:`BRANCHES` in B (the rows of :func:`d_crit_rows`).
     """
-    rows = d_crit_rows(alpha, contact, scenario, d_max=d_max)
+    rows = d_crit_rows(alpha, contact, scenario, d_max=d_max, limits=limits)
     branches = (None,) if scenario == "A" else BRANCHES
     return {(adhesion, branch): rows[adhesion][row, ...] for row, branch in enumerate(branches)
             for adhesion in (False, True)}
 
 
 def d_crit_rows(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A", *,
-                d_max: float | None = None) -> dict[bool, np.ndarray]:
+                d_max: float | None = None, limits: Limits | None = None) -> dict[bool, np.ndarray]:
     """The curves of :func:`d_crit_curves` as one array per adhesion, a row per branch, each computed into its row.
 
     Parameters
@@ -586,6 +602,9 @@ def d_crit_rows(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A", 
         Fig. 9a (one row, (17) and (18)) or 9b (two rows, (20) and (21)).
     d_max : float, optional
         With a Contact: the motion's depth (m).
+    limits : Limits, optional
+        What the rows may take (``None``: the defaults): :data:`D_CRIT_ROWS_BYTES_PER_ANGLE` of memory per angle,
+        counted before the angles are read.
 
     Returns
     -------
@@ -596,6 +615,7 @@ def d_crit_rows(alpha, contact: ContactLike, scenario: Literal["A", "B"] = "A", 
     """
     params = _onset_parameters(contact, "d_crit", d_max)
     check_choice("scenario", scenario, SCENARIOS)
+    _check_onset_memory(values_in(alpha), limits, D_CRIT_ROWS_BYTES_PER_ANGLE)  # (counted before they are read)
     alpha_deg = validate_alpha(alpha)
     tangent = _Tangent.of(alpha_deg)
     branches = (None,) if scenario == "A" else BRANCHES

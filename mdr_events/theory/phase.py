@@ -8,6 +8,7 @@ stamp, which no closed form uses).
 
 from __future__ import annotations
 
+import math
 from typing import Literal
 
 import numpy as np
@@ -38,6 +39,9 @@ register_schema(PHASE_DIAGRAM_CONTENT, PHASE_DIAGRAM_VARIABLES)
 #: Bytes a phase diagram allocates per angle at its peak (measured with tracemalloc: 107 for scenario A, 123 for B,
 #: 50 for Coulomb's law), rounded up.
 BYTES_PER_ANGLE = 160
+#: The limits the rows of :func:`~mdr_events.theory.analytic.d_crit_rows` are handed: none of memory, the phase
+#: diagram's angles counted against its own limits first (:data:`BYTES_PER_ANGLE` each, the rows' share included).
+_COUNTED = Limits(memory=math.inf)
 #: Every value of a phase diagram is a closed form or a root converged to round-off (the polynomial root finder,
 #: a safeguarded Newton iteration on a table's convex relations), the angles inputs.
 register_accuracy(PHASE_DIAGRAM_CONTENT, {name: RoundOff() for name in (*PHASE_DIAGRAM_VARIABLES, "jump_off_depth",
@@ -157,7 +161,8 @@ def _paper_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, 
                          coords: dict) -> xr.Dataset:
     """:func:`phase_diagram` of the paper's paraboloid and friction law: eqs. (17), (18) or (20), (21)
     (:mod:`~mdr_events.theory.analytic`), Fig. 9a or 9b for a paper preset."""
-    curves = analytic.d_crit_rows(angles, params, scenario)  # (the rows of B's two branches: no stacking)
+    # (the rows of B's two branches: no stacking; the angles counted by phase_diagram)
+    curves = analytic.d_crit_rows(angles, params, scenario, limits=_COUNTED)
     jump_off = analytic.jump_off(params, params.dgamma1)["depth"] if scenario == "B" else None
     variables = _onset_variables(curves, scenario, coords, jump_off, params.d_max,
                                  lambda adhesive: analytic.critical_angle(params, scenario, adhesion=adhesive))

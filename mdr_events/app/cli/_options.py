@@ -324,7 +324,8 @@ def layer_options(parser: argparse.ArgumentParser) -> None:
 
     parser.add_argument("--h", type=float, default=None, metavar="H",
                         help="the elastomer's thickness in m, a layer on a rigid base (default inf: the half-space; "
-                             "the continuum takes the friction law tau0 there)")
+                             "simulate and sweep run every friction law there, validate and fit the friction "
+                             "law tau0)")
     parser.add_argument("--layer-base", choices=[base.value for base in LayerBase], default=None,
                         help="how the layer rests on its base (default bonded; frictionless: no tangential motion)")
 
