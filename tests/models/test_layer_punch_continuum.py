@@ -478,3 +478,74 @@ def test_the_punch_branchs_arrays_read_theta_alone_and_are_the_layer_branchs_bit
     radii = np.geomspace(1e-7 * THIN_LAYER, A0, 2001)
     for mine, theirs in zip(branch._arrays(radii), LayerBranch._arrays(branch, radii)):
         assert np.array_equal(mine, theirs)
+
+
+#: The punch's ``F_N = K(a) d`` from the stiffness spline's piecewise polynomial (``PunchNormal.force_reader``) against
+#: the checked relation's B-spline (``checked_force_reader``): the same quintic in ``s = ln λ``, its coefficients
+#: converted by ``PPoly.from_spline`` and summed in another order, so ``ln Φ`` agrees to a few ulps of its largest
+#: terms (``|ln Φ|`` reaches 10.7 at ``a/h = 64``, ν = 0.5) and ``Φ = exp(ln Φ)`` to as many ulps of ``1 + |ln Φ|``
+#: relative; measured at most 25 ulps (ν = 0.5) against this bound's 8 (1 + 10.7) = 94.
+SPLINE_FORM_ULPS = 8.0
+
+
+@pytest.mark.parametrize("nu", [0.0, 0.3, 0.5])
+def test_the_punchs_normal_force_from_the_pieces_is_the_checked_relations_to_round_off(nu):
+    """``F_N`` of the punch on a layer read off the stiffness factor's pieces on the arrays agrees with
+    :func:`~mdr_events.theory.layer.punch_stiffness` (the B-spline and its checks) to :data:`SPLINE_FORM_ULPS`
+    across the whole spline, ``LAMBDA_MIN`` to ``LAMBDA_MAX``; radii outside it (``a = 0``, the series) take the
+    checked route bit for bit."""
+    from mdr_events.models.continuum.layer_normals import PunchNormal
+    from mdr_events.theory.layer.compliance import LAMBDA_MAX
+    from mdr_events.theory.layer.tables import LAMBDA_MIN
+
+    contact = PUNCH.replace(h=THIN_LAYER)
+    params = dataclasses.replace(_material(contact), nu=nu)
+    fast, checked = (reader(params, contact.indenter, contact.layer)
+                     for reader in (PunchNormal.force_reader, PunchNormal.checked_force_reader))
+    lam = np.geomspace(LAMBDA_MIN * (1.0 + 1e-12), LAMBDA_MAX * (1.0 - 1e-12), 20001)
+    radius, depth = lam * THIN_LAYER, np.full(lam.shape, -3e-6)
+    expected = checked(depth, radius)
+    bound = SPLINE_FORM_ULPS * np.finfo(float).eps * (1.0 + np.abs(np.log(expected / (depth * 2.0 * params.E_star
+                                                                                       * radius))))
+    assert np.all(np.abs(fast(depth, radius) / expected - 1.0) <= bound)
+    outside = np.array([0.0, 0.5 * LAMBDA_MIN * THIN_LAYER, A0])
+    assert np.array_equal(fast(np.full(3, -3e-6), outside), checked(np.full(3, -3e-6), outside))
+
+
+#: The rounding of the branch's depth between its scalar and array forms, in ulps of ``|d|`` (an ulp or two each:
+#: the math module's logarithm and exponential against NumPy's, ``LayerBranch.depths``), with a margin.
+DEPTH_FORM_ULPS = 8.0
+
+
+def test_the_radii_finished_in_floats_are_the_arrays_roots_within_their_tolerance_and_rounding(monkeypatch):
+    """``LayerBranch._roots`` finishes the last few depths (``SCALAR_FINISH``) by ``_finish``, the same steps in
+    floats: the radii agree with the arrays' iteration run to the end (``SCALAR_FINISH = 0``) within both stopping
+    tolerances ``2 RADII_RTOL a`` plus the depths' rounding between the two forms carried through the slope
+    (``DEPTH_FORM_ULPS`` ulps of ``|d|`` over ``∂d/∂a``: unbounded at the fold, where the roots are ill-conditioned),
+    over the whole recession of a thin layer, from within 1e-9 of its fold's depth to the face's."""
+    import mdr_events.models.continuum.layer_branch as layer_branch
+
+    contact = PUNCH.replace(h=THIN_LAYER)
+    params = _material(contact)
+    factors = NormalFactors(params.nu, contact.layer, 2.0)
+    branch = LayerPunchBranch(params, params.dgamma1, contact.indenter, contact.layer, factors)
+    span = branch.held_depth - branch.jump_off_depth
+    depths = branch.jump_off_depth + span * np.concatenate([np.geomspace(1e-9, 1e-3, 40), np.linspace(2e-3, 1.0,
+                                                                                                        400)])
+    finished = []
+    original = LayerBranch._finish
+
+    def spy(self, *args):
+        finished.append(args[0])
+        return original(self, *args)
+
+    monkeypatch.setattr(LayerBranch, "_finish", spy)
+    mine = branch.radii(depths)
+    assert finished  # (the route under test ran)
+    monkeypatch.setattr(layer_branch, "SCALAR_FINISH", 0)
+    theirs = branch.radii(depths)
+    slope = np.abs(branch._arrays(theirs)[1])
+    eps = np.finfo(float).eps
+    with np.errstate(divide="ignore"):
+        bound = 2.0 * layer_branch.RADII_RTOL * theirs + DEPTH_FORM_ULPS * eps * np.abs(depths) / slope
+    assert np.all(np.abs(mine - theirs) <= bound)
