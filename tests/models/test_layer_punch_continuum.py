@@ -549,3 +549,40 @@ def test_the_radii_finished_in_floats_are_the_arrays_roots_within_their_toleranc
     with np.errstate(divide="ignore"):
         bound = 2.0 * layer_branch.RADII_RTOL * theirs + DEPTH_FORM_ULPS * eps * np.abs(depths) / slope
     assert np.all(np.abs(mine - theirs) <= bound)
+
+
+def _thin_run_solution(motion: me.Scenario):
+    """The continuum's solution of the punch on the thin layer along ``motion`` (its model, spans and samples)."""
+    from mdr_events.limits import check_limits
+    from mdr_events.models.continuum.solve import run_continuum
+    from mdr_events.models.simulate import simulation_job
+
+    model, _ = simulation_job(PUNCH.replace(h=THIN_LAYER), motion, None, "continuum", {}, check_limits(None))
+    cases = model.motion.cases(model.params, model.profile, model.friction)
+    return run_continuum(model.kernel, cases.paths, 2001)["solutions"][0]
+
+
+def test_a_still_primitive_is_its_series_zeros_and_a_constant_radius_shift_each_elements():
+    """Two shortcuts of a vertical run's receding punch, bit for bit what they skip: the layer's primitive of zero
+    coefficients (``LayerPrimitive.still``: no spring holds a shift) gives the zeros its cells' series give (values,
+    one value and the rate, signs of zero included), and the cap ``ū`` of an array of one radius throughout (a pinned
+    span's, ``LayerMedium._shifts``) is that radius's element of an array of distinct radii."""
+    from mdr_events.models.continuum.layer_closed_form import LayerPrimitive
+
+    solution = _thin_run_solution(VERTICAL)
+    primitives = [span.interpolant.primitive for span in solution.spans
+                  if isinstance(getattr(span.interpolant, "primitive", None), LayerPrimitive)]
+    assert primitives and all(primitive.still for primitive in primitives)
+    for primitive in primitives:
+        radii = np.geomspace(primitive.branch.jump_off_radius * 1.001, A0, 101)
+        series = primitive._combine(*primitive.own.values(radii), 0.0)
+        assert np.array_equal(primitive(radii), series) and not np.any(np.signbit(series))
+        assert primitive.at(float(radii[50])) == 0.0 == primitive._combine(*primitive.own.value(float(radii[50])), 0.0)
+    sliding = _thin_run_solution(me.Scenario("B", alpha=[20.0], d_max=D_MAX))  # (its recession drives shifts)
+    assert not any(span.interpolant.primitive.still for span in sliding.spans
+                   if isinstance(getattr(span.interpolant, "primitive", None), LayerPrimitive))
+    medium, K = solution.model.caps.medium, solution.model.caps.K
+    distinct = np.geomspace(1e-3 * THIN_LAYER, A0, 257)
+    each = medium._shifts(K, distinct)
+    for k in (0, 128, 256):
+        assert np.array_equal(medium._shifts(K, np.full(1500, distinct[k])), np.full(1500, each[k]))

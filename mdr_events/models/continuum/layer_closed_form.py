@@ -242,15 +242,26 @@ class LayerPrimitive(NamedTuple):
     C: float
     C0: float
 
+    @property
+    def still(self) -> bool:
+        """Every coefficient zero: ``P ≡ 0`` (no spring holds a shift and nothing drives one: a vertical path's
+        receding punch), read without the cells' series."""
+        return not (self.D0 or self.D1 or self.E0 or self.E1 or self.U or self.A or self.C or self.C0)
+
     def __call__(self, a: np.ndarray) -> np.ndarray:
-        """``P`` at the radii ``a`` (m), vectorised (the cells' series)."""
+        """``P`` at the radii ``a`` (m), vectorised (the cells' series; zeros where :attr:`still`)."""
         a = np.asarray(a, dtype=float)
+        if self.still:
+            return np.zeros(a.shape)
         M, u, depth, J_u, J_d = self.own.values(np.reshape(a, -1))
         return np.reshape(self._combine(M, u, depth, J_u, J_d, self.anchors.values(np.reshape(a, -1), slice(4, 5))[0]
                                         if self.C0 else 0.0), a.shape)
 
     def at(self, a: float) -> float:
-        """``P`` at one radius ``a`` (m), in Python floats (the same series, Clenshaw's recurrence)."""
+        """``P`` at one radius ``a`` (m), in Python floats (the same series, Clenshaw's recurrence; 0 where
+        :attr:`still`)."""
+        if self.still:
+            return 0.0
         return self._combine(*self.own.value(a), self.anchors.value(a)[4] if self.C0 else 0.0)
 
     def _combine(self, M, u, depth, J_u, J_d, J_0):
@@ -260,7 +271,10 @@ class LayerPrimitive(NamedTuple):
         return value + self.U * J_u + self.A * M + self.C * J_d + self.C0 * J_0
 
     def rate(self, a: float) -> float:
-        """``dP/da`` at the radius ``a`` (m): the span's right-hand side over ``2G*``, term by term."""
+        """``dP/da`` at the radius ``a`` (m): the span's right-hand side over ``2G*``, term by term (0 where
+        :attr:`still`)."""
+        if self.still:
+            return 0.0
         M, cap, cap_slope, weight = self.medium.rate_parts(self.K, a)
         value = (self.D0 + self.D1 * M) * cap_slope
         value += (self.E0 + self.E1 * M) * self.branch.slope(a)

@@ -103,6 +103,10 @@ class LayerMedium(HalfSpaceMedium):
         """:meth:`shift` of an array of radii (the factor's splines by Horner's rule on the arrays,
         :meth:`~mdr_events.theory.layer.scalar_factors.TangentialFactors.parts_array`)."""
         radii = np.asarray(a, dtype=float)
+        if radii.size > 1 and radii.flat[0] == radii.flat[-1] and np.all(radii == radii.flat[0]):
+            # (one radius throughout, a pinned span's: its shift read once and repeated, the same value as each of
+            # the array's elementwise operations gives every element; a held punch's face, two thousand samples)
+            return np.full(radii.shape, self._shifts(K, radii.reshape(-1)[:1])[0])
         lam = np.maximum(radii, 0.0) / self.layer.thickness
         factor = self._factor_array(self.params.nu, *self.tangential.factors_array(lam))
         return np.where(radii > 0, self._cap_array(radii, K, factor), 0.0)
