@@ -586,3 +586,27 @@ def test_a_still_primitive_is_its_series_zeros_and_a_constant_radius_shift_each_
     each = medium._shifts(K, distinct)
     for k in (0, 128, 256):
         assert np.array_equal(medium._shifts(K, np.full(1500, distinct[k])), np.full(1500, each[k]))
+
+
+@pytest.mark.parametrize("h", [THIN_LAYER, 0.02 * A0])
+def test_the_samples_radii_off_the_recessions_table_are_the_iterations_within_what_its_roots_hold_to(h):
+    """``LayerPunchBranch.sample_radii`` reads the recession's radii off a cubic Hermite table in ``u = sqrt(d −
+    d_j)`` made once per branch (``punch_inverse``): at 4000 depths from the fold to the face every one is covered by
+    the table and agrees with ``radii`` (Newton's iteration, the route it replaced, kept for the events) within both
+    roots' accuracy, ``punch_inverse.accuracy`` twice (``RADII_RTOL · a`` plus the depth's rounding through
+    ``∂d/∂a``); the face's depths and those below the jump-off are ``radii``' own, bit for bit."""
+    from mdr_events.models.continuum.punch_inverse import accuracy, recession_inverse
+
+    contact = PUNCH.replace(h=h)
+    params = _material(contact)
+    branch = LayerPunchBranch(params, params.dgamma1, contact.indenter, contact.layer,
+                              NormalFactors(params.nu, contact.layer, 2.0))
+    assert branch.jump_off_radius < branch.face_floor  # (it recedes)
+    table = recession_inverse(branch)
+    depths = np.linspace(table.low, branch.held_depth, 4002)[1:-1]
+    assert np.all(table.radii(depths)[1])  # (every one covered: the table kept every interval)
+    mine, theirs = branch.sample_radii(depths), branch.radii(depths)
+    assert np.all(np.abs(mine - theirs) <= 2.0 * accuracy(theirs, depths, branch._arrays(theirs)[1]))
+    outside = np.array([branch.held_depth, 0.5 * branch.held_depth, branch.jump_off_depth,
+                        1.5 * branch.jump_off_depth, 0.5 * (branch.jump_off_depth + table.low)])
+    assert np.array_equal(branch.sample_radii(outside), branch.radii(outside), equal_nan=True)

@@ -206,3 +206,32 @@ class LayerPunchBranch(LayerBranch):
         if not np.all(held):
             out[~held] = super().radii(depth[~held])
         return np.where(out >= self.face_floor, self.face, out)
+
+    def sample_radii(self, depth: np.ndarray) -> np.ndarray:
+        """:meth:`radii` at a run's samples: on the recession the inverse tabulated once per branch
+        (:func:`~.punch_inverse.recession_inverse`, within what :meth:`radii`' roots hold to,
+        ``punch_inverse.accuracy``, where it covers them), :meth:`radii` elsewhere (the face held, below the jump-off, an interval the table did
+        not keep).
+
+        Parameters
+        ----------
+        depth : array_like
+            The depths (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The radii (m), the shape of ``depth``.
+        """
+        depth = np.asarray(depth, dtype=float)
+        receding = depth < self.held_depth
+        if self.work == 0.0 or self.jump_off_radius >= self.face_floor or not np.any(receding):
+            return self.radii(depth)
+        from .punch_inverse import recession_inverse
+
+        found, covered = recession_inverse(self).radii(depth[receding])
+        if not np.all(covered):
+            found[~covered] = self.radii(depth[receding][~covered])
+        out = np.full(depth.shape, self.face)
+        out[receding] = found
+        return np.where(out >= self.face_floor, self.face, out)
