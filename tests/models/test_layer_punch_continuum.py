@@ -468,9 +468,9 @@ def test_the_receding_radius_kept_is_the_layers_and_does_not_hold_its_factors_al
 
 
 def test_the_punch_branchs_arrays_read_theta_alone_and_are_the_layer_branchs_bit_for_bit():
-    """``LayerPunchBranch._arrays`` skips the profile factor's column (``κₙc = 0``: its terms are ``0·γₙ``): ``d`` and
-    ``∂d/∂a`` equal :class:`LayerBranch`'s, which reads both columns, bit for bit, from the tables' series below
-    ``LAMBDA_MIN`` to the face (``a/h = 10``)."""
+    """``LayerPunchBranch._arrays`` (and ``_evaluate``, one radius) skips the profile factor's column (``κₙc = 0``:
+    its terms are ``0·γₙ``): ``d`` and ``∂d/∂a`` equal :class:`LayerBranch`'s, which reads both columns, bit for bit,
+    from the tables' series below ``LAMBDA_MIN`` to the face (``a/h = 10``)."""
     contact = PUNCH.replace(h=THIN_LAYER)
     params = _material(contact)
     factors = NormalFactors(params.nu, contact.layer, 2.0)
@@ -478,6 +478,8 @@ def test_the_punch_branchs_arrays_read_theta_alone_and_are_the_layer_branchs_bit
     radii = np.geomspace(1e-7 * THIN_LAYER, A0, 2001)
     for mine, theirs in zip(branch._arrays(radii), LayerBranch._arrays(branch, radii)):
         assert np.array_equal(mine, theirs)
+    for radius in radii[::10].tolist():  # (the scalar reading alike, Θ alone: LayerPunchBranch._evaluate)
+        assert branch._evaluate(radius) == LayerBranch._evaluate(branch, radius)
 
 
 #: The punch's ``F_N = K(a) d`` from the stiffness spline's piecewise polynomial (``PunchNormal.force_reader``) against
@@ -610,3 +612,27 @@ def test_the_samples_radii_off_the_recessions_table_are_the_iterations_within_wh
     outside = np.array([branch.held_depth, 0.5 * branch.held_depth, branch.jump_off_depth,
                         1.5 * branch.jump_off_depth, 0.5 * (branch.jump_off_depth + table.low)])
     assert np.array_equal(branch.sample_radii(outside), branch.radii(outside), equal_nan=True)
+
+
+def test_a_medium_keeps_its_branches_by_material_and_work_and_a_kept_one_runs_as_a_new_one():
+    """``LayerMedium.edge`` makes each branch once per material and work and hands it out again (its scan, jump-off
+    and remembered radii with it): the same objects twice, another for another work or material; and a run on kept
+    branches is the run on new ones, bit for bit (the medium's cache cleared before the first)."""
+    from mdr_events.contact.adhesion import Adhesion
+    from mdr_events.models.continuum.media import _layer_medium
+
+    contact = PUNCH.replace(h=THIN_LAYER)
+    sliding = me.Scenario("B", alpha=[20.0], d_max=D_MAX)
+    _layer_medium.cache_clear()
+    new = me.simulate(contact, sliding, "continuum")
+    kept = me.simulate(contact, sliding, "continuum")
+    for name in ("contact_radius", "normal_force", "tangential_force", "sliding_fraction"):
+        assert np.array_equal(new[name].values, kept[name].values, equal_nan=True), name
+    params = _material(contact)
+    medium = LayerMedium(params, contact.indenter, contact.layer)
+    law = Adhesion(params.dgamma0, params.dgamma1)
+    first, again = medium.edge(law, params, None), medium.edge(law, params, None)
+    assert first.grow is again.grow and first.shrink is again.shrink and first.grow is not first.shrink
+    softer = dataclasses.replace(params, E=0.5 * params.E)
+    assert medium.edge(law, softer, None).shrink is not first.shrink
+    assert medium.edge(Adhesion(params.dgamma0, 0.5 * params.dgamma1), params, None).shrink is not first.shrink

@@ -164,6 +164,14 @@ class LayerPunchBranch(LayerBranch):
         """
         return 0.0
 
+    def _evaluate(self, a: float) -> tuple[float, float]:
+        """``d(a)`` and ``∂d/∂a`` at one radius from ``Θ`` alone (``NormalFactors.edge_factor``), as :meth:`_arrays`:
+        with ``κₙc = 0`` the profile factor's terms are ``0·γₙ``, so ``γₙ = 0`` leaves both
+        :class:`~.layer_branch.LayerBranch`'s bit for bit, without its column's Horner sum and exponential a
+        reading (the receding span's events and its radius read the branch some hundred times a run)."""
+        theta, theta_slope = self.factors.edge_factor(a)
+        return self._pair(a, self.h, self.kc, self.n, 0.0, 0.0, self.hess, theta, theta_slope)
+
     def _arrays(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``d(a)`` and ``∂d/∂a`` for an array of radii (> 0) from ``Θ`` alone (``NormalFactors.edge_arrays``): with
         ``κₙc = 0`` the profile factor's terms are ``0·γₙ``, so ``γₙ = 0`` leaves both bit for bit as
