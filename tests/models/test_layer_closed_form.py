@@ -5,6 +5,7 @@ functions the right-hand side reads and their integrals, and the radii Newton's 
 from __future__ import annotations
 
 import dataclasses
+import math
 
 import numpy as np
 import pytest
@@ -97,7 +98,8 @@ def test_a_primitive_read_off_its_needed_rows_is_every_rows_bit_for_bit(contact,
     """``LayerPrimitive.__call__`` reads the series of the functions whose terms have a coefficient other than zero
     (``LayerPrimitive.rows``) and puts ``0`` for the others: on every closed span of a run (the paper's paraboloid
     on its 5 mm layer, a punch receding on a thin one) ``P`` is the value of every row (``all_rows``, the route before)
-    bit for bit, signs of zero included, at 2001 radii across the span's cells; and some span reads fewer rows."""
+    bit for bit, signs of zero included, at 2001 radii across the span's cells (and ``at``, one radius in floats, at
+    every fortieth); and some span reads fewer rows."""
     from mdr_events.limits import check_limits
     from mdr_events.models.continuum.solve import run_continuum
     from mdr_events.models.simulate import simulation_job
@@ -115,3 +117,8 @@ def test_a_primitive_read_off_its_needed_rows_is_every_rows_bit_for_bit(contact,
         radii = np.linspace(primitive.own.floor, high, 2001)
         mine, theirs = primitive(radii), primitive.all_rows(radii)
         assert np.array_equal(mine, theirs) and np.array_equal(np.signbit(mine), np.signbit(theirs))
+        for radius in radii[::40].tolist():  # (one radius in floats: every function's value before)
+            every = primitive._combine(*primitive.own.value(radius),
+                                       primitive.anchors.value(radius)[4] if primitive.C0 else 0.0)
+            assert primitive.at(radius) == every and math.copysign(1.0, primitive.at(radius)) == math.copysign(1.0,
+                                                                                                             every)

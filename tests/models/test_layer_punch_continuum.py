@@ -636,3 +636,24 @@ def test_a_medium_keeps_its_branches_by_material_and_work_and_a_kept_one_runs_as
     softer = dataclasses.replace(params, E=0.5 * params.E)
     assert medium.edge(law, softer, None).shrink is not first.shrink
     assert medium.edge(Adhesion(params.dgamma0, 0.5 * params.dgamma1), params, None).shrink is not first.shrink
+
+
+def test_the_punchs_normal_force_reads_the_faces_factor_once_as_each_element_would():
+    """``PunchNormal.force_reader`` reads ``Φ(a₀/h)`` once for the samples at the face's radius (most of a run's) and
+    the pieces' arrays for the others: the forces equal those of the arrays over every sample (the route before),
+    bit for bit, with the face's radius among radii receding below it."""
+    from mdr_events.models.continuum.layer_normals import PunchNormal
+    from mdr_events.theory.layer.scalar_factors import LogColumn
+    from mdr_events.theory.layer.tables import layer_table
+    from mdr_events.theory.layer_symbolic import derive_layer_model
+
+    contact = PUNCH.replace(h=THIN_LAYER)
+    params = _material(contact)
+    force = PunchNormal.force_reader(params, contact.indenter, contact.layer)
+    radius = np.concatenate([np.full(700, A0), np.geomspace(0.4 * THIN_LAYER, A0, 300, endpoint=False),
+                             np.full(500, A0)])
+    depth = np.linspace(-8e-6, 1e-5, radius.size)
+    column = LogColumn(layer_table(params.nu, contact.layer.base, 2.0)._splines["stiffness"])
+    expected = derive_layer_model()["layer_flat_punch_force"].numeric(
+        2.0 * params.E_star * radius * column.values_array(radius / THIN_LAYER), depth)
+    assert np.array_equal(force(depth, radius), expected)

@@ -159,13 +159,15 @@ class BranchIntegrals:
             b1, b2 = coefficients[k] + _ALPHA[k] * t * b1 - _BETA[k] * b2, b1
         return coefficients[0] + t * b1 - 0.5 * b2
 
-    def value(self, a: float) -> list[float]:
+    def value(self, a: float, rows: tuple[int, ...] | None = None) -> list[float]:
         """:meth:`values` at one radius, every function, in Python floats (Clenshaw's recurrence).
 
         Parameters
         ----------
         a : float
             The radius (m).
+        rows : tuple of int, optional
+            Only these functions (indices in :data:`NAMES`' order); the others ``0.0``. Default all.
 
         Returns
         -------
@@ -176,7 +178,10 @@ class BranchIntegrals:
         low, high = self.ends[cell], self.ends[cell + 1]
         t = 2.0 * (a - low) / (high - low) - 1.0
         out = []
-        for coefficients in self.lists[cell]:
+        for index, coefficients in enumerate(self.lists[cell]):
+            if rows is not None and index not in rows:
+                out.append(0.0)
+                continue
             b1 = b2 = 0.0
             for k in range(CELL_NODES, 0, -1):  # (P_{k+1} = ((2k+1) t P_k − k P_{k−1})/(k+1))
                 b1, b2 = coefficients[k] + _ALPHA[k] * t * b1 - _BETA[k] * b2, b1
@@ -301,7 +306,7 @@ class LayerPrimitive(NamedTuple):
         :attr:`still`)."""
         if self.still:
             return 0.0
-        return self._combine(*self.own.value(a), self.anchors.value(a)[4] if self.C0 else 0.0)
+        return self._combine(*self.own.value(a, self.rows), self.anchors.value(a, (4,))[4] if self.C0 else 0.0)
 
     def _combine(self, M, u, depth, J_u, J_d, J_0):
         """``P`` of the functions' values (module docstring)."""

@@ -225,12 +225,23 @@ class PunchNormal(ProfileNormal):
         column = LogColumn(layer_table(params.nu, layer.base, 2.0)._splines["stiffness"])
         checked = PunchNormal.checked_force_reader(params, indenter, layer)
 
+        face = np.array([float(indenter.radius)])
+        held = column.values_array(face / layer.thickness)[0] if LAMBDA_MIN <= face[0] / layer.thickness <= LAMBDA_MAX \
+            else None
+
         def force(depth, radius) -> np.ndarray:
             a = np.asarray(radius, dtype=float)
             lam = a / layer.thickness
             if not (lam.size > 0 and LAMBDA_MIN <= float(np.min(lam)) and float(np.max(lam)) <= LAMBDA_MAX):
                 return checked(depth, radius)  # (a = 0, below the series' bound or beyond the table: checked)
-            return np.asarray(relation(2.0 * params.E_star * a * column.values_array(lam), depth), dtype=float)
+            # (the face's radius, most of a run's samples: its Φ read once, the same value elementwise)
+            at_face = a == face[0]
+            if held is None or not np.any(at_face):
+                factor = column.values_array(lam)
+            else:
+                factor = np.full(a.shape, held)
+                factor[~at_face] = column.values_array(lam[~at_face])
+            return np.asarray(relation(2.0 * params.E_star * a * factor, depth), dtype=float)
 
         return force
 
