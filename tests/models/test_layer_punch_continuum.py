@@ -519,21 +519,39 @@ def test_the_punchs_normal_force_from_the_pieces_is_the_checked_relations_to_rou
 DEPTH_FORM_ULPS = 8.0
 
 
-def test_the_radii_finished_in_floats_are_the_arrays_roots_within_their_tolerance_and_rounding(monkeypatch):
+#: The paraboloid's layers (m) of the finishing test: the paper's 5 mm and a thin 1 mm one; and the radius (m) whose
+#: depth tops their depths (the paper's contacts reach a few millimetres).
+PARABOLOID_LAYERS, PARABOLOID_TOP_RADIUS = (5e-3, 1e-3), 5e-3
+
+
+def _finishing_branch(kind: str, h: float, adhesive: bool):
+    """A branch of the finishing test and the top of its depths: the punch's receding branch on the thin layer (up to
+    the face's depth) or the paraboloid's branch of either work on a layer of :data:`PARABOLOID_LAYERS` (up to the
+    depth of :data:`PARABOLOID_TOP_RADIUS`): ``SCALAR_FINISH`` acts in every ``LayerBranch``, not the punch's alone."""
+    contact = (PUNCH if kind == "punch" else me.Contact.paper()).replace(h=h)
+    params = _material(contact)
+    work = params.dgamma1 if adhesive else params.dgamma0
+    cls = LayerPunchBranch if kind == "punch" else LayerBranch
+    branch = cls(params, work, contact.indenter, contact.layer, NormalFactors(params.nu, contact.layer, 2.0))
+    return branch, (branch.held_depth if kind == "punch" else branch.depth(PARABOLOID_TOP_RADIUS))
+
+
+@pytest.mark.parametrize("kind, h, adhesive", [("punch", THIN_LAYER, True)]
+                         + [("paraboloid", h, adhesive) for h in PARABOLOID_LAYERS for adhesive in (False, True)])
+def test_the_radii_finished_in_floats_are_the_arrays_roots_within_their_tolerance_and_rounding(kind, h, adhesive,
+                                                                                                monkeypatch):
     """``LayerBranch._roots`` finishes the last few depths (``SCALAR_FINISH``) by ``_finish``, the same steps in
     floats: the radii agree with the arrays' iteration run to the end (``SCALAR_FINISH = 0``) within both stopping
     tolerances ``2 RADII_RTOL a`` plus the depths' rounding between the two forms carried through the slope
     (``DEPTH_FORM_ULPS`` ulps of ``|d|`` over ``∂d/∂a``: unbounded at the fold, where the roots are ill-conditioned),
-    over the whole recession of a thin layer, from within 1e-9 of its fold's depth to the face's."""
+    from within 1e-9 of the fold's depth (or of zero, without adhesion) to ``top``: on the thin layer's punch and on
+    the paraboloid's layers (every layer run's radii near the fold move at round-off by the finish)."""
     import mdr_events.models.continuum.layer_branch as layer_branch
 
-    contact = PUNCH.replace(h=THIN_LAYER)
-    params = _material(contact)
-    factors = NormalFactors(params.nu, contact.layer, 2.0)
-    branch = LayerPunchBranch(params, params.dgamma1, contact.indenter, contact.layer, factors)
-    span = branch.held_depth - branch.jump_off_depth
-    depths = branch.jump_off_depth + span * np.concatenate([np.geomspace(1e-9, 1e-3, 40), np.linspace(2e-3, 1.0,
-                                                                                                        400)])
+    branch, top = _finishing_branch(kind, h, adhesive)
+    bottom = branch.jump_off_depth
+    span = top - bottom
+    depths = bottom + span * np.concatenate([np.geomspace(1e-9, 1e-3, 40), np.linspace(2e-3, 1.0, 400)])
     finished = []
     original = LayerBranch._finish
 
