@@ -632,6 +632,33 @@ def test_the_samples_radii_off_the_recessions_table_are_the_iterations_within_wh
     assert np.array_equal(branch.sample_radii(outside), branch.radii(outside), equal_nan=True)
 
 
+#: ``t(1 − t)(1 − 2t)`` at ``t = ¼``: a change ``δ`` of both ends' ``da/du`` moves the cubic Hermite interpolant by
+#: ``δ Δu t(1 − t)(1 − 2t)``, zero at the middle, ``3δΔu/32`` at the quarters.
+QUARTER_SHAPE = 3.0 / 32.0
+
+
+def test_the_recessions_table_refuses_an_interval_right_at_its_middle_and_wrong_at_its_quarters(monkeypatch):
+    """The table's check (``punch_inverse``) compares each interval at ``t = ¼, ½, ¾``, not at its middle alone: an
+    interval whose ends' slopes ``da/du`` are both moved so that the interpolant is unchanged at the middle and off by
+    twice the roots' accuracy at the quarters is refused (kept before, and kept by the middle alone, which missed it)."""
+    import mdr_events.models.continuum.punch_inverse as punch_inverse
+
+    contact = PUNCH.replace(h=THIN_LAYER)
+    params = _material(contact)
+    branch = LayerPunchBranch(params, params.dgamma1, contact.indenter, contact.layer,
+                              NormalFactors(params.nu, contact.layer, 2.0))
+    table = punch_inverse.RecessionInverse(branch)  # (its own: the kept one is not to be changed)
+    i = table.u.size // 2
+    k = np.array([i])
+    assert table._check(branch, k)[0][0]
+    width, middle = table.u[i + 1] - table.u[i], 0.5 * (table.u[i] + table.u[i + 1])
+    accuracy = punch_inverse.accuracy(table.a[i], table.fold + middle * middle, table._slopes[i])
+    table.rates[i:i + 2] += 2.0 * accuracy / (QUARTER_SHAPE * width)
+    assert not table._check(branch, k)[0][0]
+    monkeypatch.setattr(punch_inverse, "CHECK_POINTS", (0.5,))
+    assert table._check(branch, k)[0][0]  # (the middle alone keeps it)
+
+
 def test_a_medium_keeps_its_branches_by_material_and_work_and_a_kept_one_runs_as_a_new_one():
     """``LayerMedium.edge`` makes each branch once per material and work and hands it out again (its scan, jump-off
     and remembered radii with it): the same objects twice, another for another work or material; and a run on kept

@@ -10,13 +10,19 @@ The variable is ``u = sqrt(d − d_j)`` (``d_j`` the jump-off's depth), not ``d`
 has a square root, while ``a(u)`` is smooth through it (``d − d_j ≈ ½ d''(a_j)(a − a_j)²``), its slope
 ``da/du = 2u/(∂d/∂a)``. The nodes are :data:`NODES_PER_DECADE` radii a decade from the jump-off to the face, each
 with its depth and slope from one reading of the tables. The cubic Hermite interpolant's error on an interval of width
-``Δu`` is ``a''''(ξ) (u − u_i)²(u − u_{i+1})²/24``, at most ``Δu⁴ max|a''''|/384``, largest in the middle where
-``a''''`` is about constant across the interval (``a''''`` varies on the scale of ``a``, an interval is ``10^(1/N)``
-of it). So the table checks each interval at its middle against :meth:`~.layer_branch.LayerBranch.radii`' root there
-(Newton's, stopped where its step's own bound is ``1e-2 RADII_RTOL``) and keeps the intervals where the interpolant
-lies within what that root itself holds to (:func:`accuracy`: ``RADII_RTOL · a`` plus the depth's rounding through
-``∂d/∂a``, which near the fold exceeds ``RADII_RTOL`` for the iteration's roots alike). A depth in an interval that
-fails, or beyond the nodes (between the fold and the first node), takes :meth:`~.layer_branch.LayerBranch.radii`.
+``Δu`` is ``a''''(ξ) t²(1 − t)² Δu⁴/24`` (``t`` the position in the interval, ``ξ`` somewhere in it), at most
+``Δu⁴ max|a''''|/384``. Its largest value is in the middle only where ``a''''`` is constant across the interval; where
+``a''''`` changes its sign inside, the middle's error can be near zero while the quarters' is not. So the table's
+check is an estimate checked at points, not a bound: each interval's interpolant is compared at
+:data:`CHECK_POINTS` (``t = ¼, ½, ¾``) with :meth:`~.layer_branch.LayerBranch.radii`' root there (Newton's, stopped
+where its step's own bound is ``1e-2 RADII_RTOL``) and the interval kept where every one lies within
+:data:`CHECK_SHARE` (half) of what that root itself holds to (:func:`accuracy`: ``RADII_RTOL · a`` plus the depth's
+rounding through ``∂d/∂a``, which near the fold exceeds ``RADII_RTOL`` for the iteration's roots alike). The margin
+of two covers ``a''''`` varying by up to a factor two across an interval ``10^(1/N)`` of the radius wide, where it
+varies on the scale of ``a`` itself (by ~1e-3 of itself away from the fold); three points catch a sign change that
+the middle alone misses. An interval that fails is split at its middle's root (a node of the branch's own depth and
+slope) and its halves checked again, :data:`REFINEMENTS` times at most. A depth in an interval still failing, or
+beyond the nodes (between the fold and the first node), takes :meth:`~.layer_branch.LayerBranch.radii`.
 """
 
 from __future__ import annotations
@@ -27,17 +33,26 @@ import numpy as np
 
 from .layer_branch import RADII_RTOL
 
-__all__ = ["RecessionInverse", "recession_inverse", "accuracy", "NODES_PER_DECADE", "DEPTH_ULPS"]
+__all__ = ["RecessionInverse", "recession_inverse", "accuracy", "NODES_PER_DECADE", "DEPTH_ULPS", "CHECK_POINTS",
+           "CHECK_SHARE", "REFINEMENTS"]
 
 #: Nodes a decade of radius: the interpolant's truncation error falls as ``Δu⁴``. Measured at ``h/a₀ = 0.1``, 0.075
 #: and 0.02 (ν = 0.5, the paper's works): at 2048 a decade the intervals away from the fold fail the check (their
 #: truncation above ``RADII_RTOL``), at 4096 every interval passes (truncation 16 times lower, ``<~ 1e-15``); 6144 puts
 #: it another ``1.5⁴ = 5`` times below that, ``<~ 3e-16`` of the radius, under the roots' rounding. A table of ~8000
-#: nodes costs ~3 ms once per branch (one reading of the tables and one iteration at the middles).
+#: nodes costs ~10 ms CPU once per branch (one reading of the tables and Newton's iteration at three points an
+#: interval; ~4 ms with the middle alone), 8000-14000 nodes 10-18 ms at ``h/a₀ = 0.1`` to 0.01.
 NODES_PER_DECADE = 6144
 #: The rounding of a depth as the branch computes it, in ulps of ``|d|`` (Heß's limit over ``Θ`` of the tables: a
 #: few operations of an ulp each), with a margin: the roots' error through ``∂d/∂a`` (:func:`accuracy`).
 DEPTH_ULPS = 8.0
+#: Where in each interval (its share ``t`` of ``Δu``) the table compares its interpolant with Newton's root.
+CHECK_POINTS = (0.25, 0.5, 0.75)
+#: The share of the roots' accuracy (:func:`accuracy`) an interval's interpolant must lie within at every point of
+#: :data:`CHECK_POINTS` to be kept: a margin of two for the truncation error between the points (module docstring).
+CHECK_SHARE = 0.5
+#: How many times an interval that fails the check is split (each split cuts its truncation error sixteenfold).
+REFINEMENTS = 2
 #: How many branches' tables are kept (:data:`_TABLES`).
 _KEPT = 64
 
@@ -66,17 +81,54 @@ class RecessionInverse:
         self.u, self.a, self.rates = u, radii, rates
         #: the depths the nodes cover, ``[d(a_1), d(a₀)]``
         self.low, self.high = float(depths[0]), float(depths[-1])
-        # (the intervals' middles in u, against Newton's roots there)
-        middle = 0.5 * (u[:-1] + u[1:])
-        found = branch.radii(self.fold + middle * middle)
-        valid = (slopes[:-1] > 0.0) & (slopes[1:] > 0.0) & (np.diff(u) > 0.0)
+        self._slopes = slopes
+        every = np.arange(u.size - 1)
+        #: whether each interval's interpolant is kept (:meth:`_check`)
+        self.kept, errors = self._check(branch, every)
+        for _ in range(REFINEMENTS):  # (an interval that fails split at its middle's root, the halves checked again)
+            failed = np.flatnonzero(~self.kept & self._valid(every))
+            if not failed.size:
+                break
+            left = self._split(branch, failed)
+            every = np.arange(self.u.size - 1)
+            halves = np.concatenate([left, left + 1])
+            self.kept, errors = np.insert(self.kept, failed + 1, False), np.insert(errors, failed + 1, math.nan)
+            self.kept[halves], errors[halves] = self._check(branch, halves)
+        #: the largest error estimate kept, relative to the radius: the interpolant against Newton's root at the
+        #: checked points (``t = ¼, ½, ¾``) of the kept intervals, not a bound over the intervals (module docstring)
+        self.largest_error = float(np.max(errors[self.kept])) if self.kept.any() else math.nan
+
+    def _valid(self, index: np.ndarray) -> np.ndarray:
+        """Whether the intervals ``index`` can be interpolated: both ends' slopes positive, ``u`` increasing."""
+        return (self._slopes[index] > 0.0) & (self._slopes[index + 1] > 0.0) & (self.u[index + 1] > self.u[index])
+
+    def _check(self, branch, index: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Whether each interval of ``index`` is kept: its interpolant within :data:`CHECK_SHARE` of the roots'
+        accuracy (:func:`accuracy`) of Newton's root (:meth:`~.layer_branch.LayerBranch.radii`) at each of
+        :data:`CHECK_POINTS`; and each one's largest error there relative to the radius."""
+        u0, width = self.u[index], self.u[index + 1] - self.u[index]
+        points = u0[:, None] + width[:, None] * np.asarray(CHECK_POINTS)[None, :]
+        depth = self.fold + points * points
+        found = branch.radii(depth.ravel()).reshape(points.shape)
+        least = np.minimum(self._slopes[index], self._slopes[index + 1])[:, None]
         with np.errstate(invalid="ignore", divide="ignore"):
-            error = np.abs(self._interpolate(middle, np.arange(middle.size)) - found)
-            #: whether each interval's interpolant is kept: within the roots' own accuracy (:func:`accuracy`)
-            self.kept = valid & (error <= accuracy(found, self.fold + middle * middle,
-                                                   np.minimum(slopes[:-1], slopes[1:])))
-        #: the largest error at an interval's middle kept, relative to its radius (what the table's check saw)
-        self.largest_error = float(np.max(error[self.kept] / found[self.kept])) if self.kept.any() else math.nan
+            error = np.abs(self._interpolate(points, index[:, None]) - found)
+            kept = self._valid(index) & np.all(error <= CHECK_SHARE * accuracy(found, depth, least), axis=1)
+            relative = np.max(error / found, axis=1)
+        return kept, relative
+
+    def _split(self, branch, failed: np.ndarray) -> np.ndarray:
+        """Split the intervals ``failed`` at a node of Newton's root at their middles' ``u`` (its depth and slope read
+        again, so a node is the branch's own point); the left halves' indices after the split."""
+        middle = 0.5 * (self.u[failed] + self.u[failed + 1])
+        radii = branch.radii(self.fold + middle * middle)
+        depths, slopes = branch._arrays(radii)
+        u = np.sqrt(np.maximum(depths - self.fold, 0.0))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            rates = 2.0 * u / slopes
+        self.u, self.a = np.insert(self.u, failed + 1, u), np.insert(self.a, failed + 1, radii)
+        self.rates, self._slopes = np.insert(self.rates, failed + 1, rates), np.insert(self._slopes, failed + 1, slopes)
+        return failed + np.arange(failed.size)
 
     def _interpolate(self, u: np.ndarray, index: np.ndarray) -> np.ndarray:
         """The cubic Hermite interpolant on the intervals ``index`` at ``u`` (within them)."""
