@@ -606,6 +606,9 @@ def test_a_still_primitive_is_its_series_zeros_and_a_constant_radius_shift_each_
     each = medium._shifts(K, distinct)
     for k in (0, 128, 256):
         assert np.array_equal(medium._shifts(K, np.full(1500, distinct[k])), np.full(1500, each[k]))
+    caps = K * np.linspace(0.5, 1.5, 1500)  # (a K for each element: no shortcut, each its own shift)
+    assert np.array_equal(medium._shifts(caps, np.full(1500, distinct[128])),
+                          [medium._shifts(cap, distinct[128:129])[0] for cap in caps.tolist()])
 
 
 @pytest.mark.parametrize("h", [THIN_LAYER, 0.02 * A0])
@@ -681,6 +684,43 @@ def test_a_medium_keeps_its_branches_by_material_and_work_and_a_kept_one_runs_as
     softer = dataclasses.replace(params, E=0.5 * params.E)
     assert medium.edge(law, softer, None).shrink is not first.shrink
     assert medium.edge(Adhesion(params.dgamma0, 0.5 * params.dgamma1), params, None).shrink is not first.shrink
+
+
+def _branch_state(branch) -> dict:
+    """A branch's attributes as comparable values (arrays as bytes, tuples of arrays likewise; its remembered depths'
+    cache and its relations' functions by identity: what a run could have replaced)."""
+    def value(item):
+        if isinstance(item, np.ndarray):
+            return item.dtype.str, item.shape, item.tobytes()
+        if isinstance(item, (tuple, list)):
+            return tuple(value(part) for part in item)
+        if isinstance(item, (float, int, str, type(None), me.Layer, me.Elastomer)) or dataclasses.is_dataclass(item):
+            return item
+        return id(item)
+
+    return {name: value(item) for name, item in vars(branch).items()}
+
+
+def test_two_runs_leave_the_kept_branches_as_they_were():
+    """The branches a layer's medium keeps (``LayerMedium._branch``) are shared by every run of the contact: a second
+    run, the sliding B 20° on the thin layer's punch and the paraboloid on the paper's layer, leaves each kept branch's
+    attributes as the first left them (values bit for bit, the objects they hold the same ones)."""
+    from mdr_events.limits import check_limits
+    from mdr_events.models.continuum.media import _layer_medium, medium_of
+    from mdr_events.models.simulate import simulation_job
+
+    sliding = me.Scenario("B", alpha=[20.0], d_max=D_MAX)
+    for contact in (PUNCH.replace(h=THIN_LAYER), me.Contact.paper().replace(h=PAPER_LAYER)):
+        _layer_medium.cache_clear()
+        me.simulate(contact, sliding, "continuum")
+        hits = _layer_medium.cache_info().hits
+        model, _ = simulation_job(contact, sliding, None, "continuum", {}, check_limits(None))
+        medium = medium_of(model.params, model.friction, model.profile, contact.layer)
+        assert _layer_medium.cache_info().hits == hits + 1  # (the run's own medium)
+        before = {key: _branch_state(branch) for key, branch in medium._branches.items()}
+        assert before  # (the runs took kept branches)
+        me.simulate(contact, sliding, "continuum")
+        assert {key: _branch_state(branch) for key, branch in medium._branches.items()} == before
 
 
 def test_the_punchs_normal_force_reads_the_faces_factor_once_as_each_element_would():

@@ -110,9 +110,10 @@ class LayerMedium(HalfSpaceMedium):
         """:meth:`shift` of an array of radii (the factor's splines by Horner's rule on the arrays,
         :meth:`~mdr_events.theory.layer.scalar_factors.TangentialFactors.parts_array`)."""
         radii = np.asarray(a, dtype=float)
-        if radii.size > 1 and radii.flat[0] == radii.flat[-1] and np.all(radii == radii.flat[0]):
+        if radii.size > 1 and np.ndim(K) == 0 and radii.flat[0] == radii.flat[-1] and np.all(radii == radii.flat[0]):
             # (one radius throughout, a pinned span's: its shift read once and repeated, the same value as each of
-            # the array's elementwise operations gives every element; a held punch's face, two thousand samples)
+            # the array's elementwise operations gives every element; a held punch's face, two thousand samples.
+            # Only for one K: an array of K would give each element its own shift)
             return np.full(radii.shape, self._shifts(K, radii.reshape(-1)[:1])[0])
         lam = np.maximum(radii, 0.0) / self.layer.thickness
         factor = self._factor_array(self.params.nu, *self.tangential.factors_array(lam))
@@ -297,7 +298,9 @@ class LayerMedium(HalfSpaceMedium):
     def _branch(self, params: Parameters, work: float):
         """The branch of ``work`` for the material ``params`` on this medium, made once and kept (its scan, jump-off
         and remembered radii with it: 0.2 ms a run's two on a thin layer's punch, against 0.03 ms the half-space's);
-        a branch's values depend on these alone, so a kept one gives every run the same numbers as a new one."""
+        a branch's values depend on these alone, so a kept one gives every run the same numbers as a new one. The
+        branch handed out is shared by every run of the contact: read-only to them (nothing outside its class sets its
+        attributes; what it fills itself, its scan and remembered depths, is a function of its values alone)."""
         key = (params, work)
         branch = self._branches.get(key)
         if branch is None:
