@@ -249,21 +249,8 @@ class PunchNormal(ProfileNormal):
     def checked_force_reader(params: Parameters, indenter, layer: Layer) -> Callable[[Any, Any], np.ndarray]:
         """:meth:`force_reader`'s ``F_N = K(a) d`` by the checked relation
         :func:`~mdr_events.theory.layer.punch_stiffness` (the B-spline, the series below ``LAMBDA_MIN``): what it
-        reads outside the spline, and what its piecewise polynomial is tested against.
-
-        Parameters
-        ----------
-        params : Parameters
-            The material.
-        indenter : FlatPunch
-            The punch.
-        layer : Layer
-            The layer.
-
-        Returns
-        -------
-        callable
-            ``F_N`` (N; 0 where ``a = 0``) of the depth and radius ``d``, ``a`` (float or array_like, m).
+        reads outside the spline, and what its piecewise polynomial is tested against. Its parameters and what it
+        returns are :meth:`force_reader`'s.
         """
         from mdr_events.theory.layer import punch_stiffness
         from mdr_events.theory.layer_symbolic import derive_layer_model
