@@ -4,6 +4,9 @@ functions the right-hand side reads and their integrals, and the radii Newton's 
 
 from __future__ import annotations
 
+import dataclasses
+import math
+
 import numpy as np
 import pytest
 from scipy.integrate import quad
@@ -84,3 +87,38 @@ def test_the_radii_of_newtons_first_step_are_the_iterated_ones(h, monkeypatch):
         assert np.all(np.abs(alone - iterated_alone) <= RADII_RTOL * iterated_alone + conditioning[::20])
         few = branch.radii(depths[:3])  # (a few depths: the scalar iteration's, layer_branch.SCALAR_RADII)
         assert np.all(np.abs(few - iterated[:3]) <= RADII_RTOL * iterated[:3] + conditioning[:3])
+
+
+@pytest.mark.parametrize("contact, motion", [
+    (me.Contact.paper().replace(h=5e-3), me.Scenario("B", alpha=[30.0])),
+    (me.Contact.paper().replace(h=5e-3), me.Scenario("A", alpha=[20.0])),
+    (dataclasses.replace(me.Contact.paper(), indenter=me.FlatPunch(2e-3)).replace(h=2e-4),
+     me.Scenario("B", alpha=[20.0], d_max=1e-5))])
+def test_a_primitive_read_off_its_needed_rows_is_every_rows_bit_for_bit(contact, motion):
+    """``LayerPrimitive.__call__`` reads the series of the functions whose terms have a coefficient other than zero
+    (``LayerPrimitive.rows``) and puts ``0`` for the others: on every closed span of a run (the paper's paraboloid
+    on its 5 mm layer, a punch receding on a thin one) ``P`` is the value of every row (``all_rows``, the route before)
+    bit for bit, signs of zero included, at 2001 radii across the span's cells (and ``at``, one radius in floats, at
+    every fortieth); and some span reads fewer rows."""
+    from mdr_events.limits import check_limits
+    from mdr_events.models.continuum.solve import run_continuum
+    from mdr_events.models.simulate import simulation_job
+
+    model, _ = simulation_job(contact, motion, None, "continuum", {}, check_limits(None))
+    cases = model.motion.cases(model.params, model.profile, model.friction)
+    solution = run_continuum(model.kernel, cases.paths, 11)["solutions"][0]
+    primitives = [span.interpolant.primitive for span in solution.spans if isinstance(
+        getattr(span.interpolant, "primitive", None), layer_closed_form.LayerPrimitive) and not
+        span.interpolant.primitive.still]
+    assert primitives and any(len(primitive.rows) < len(layer_closed_form.BranchIntegrals.NAMES)
+                              for primitive in primitives)
+    for primitive in primitives:
+        high = min(primitive.own.ceiling, getattr(primitive.branch, "face", primitive.own.ceiling))
+        radii = np.linspace(primitive.own.floor, high, 2001)
+        mine, theirs = primitive(radii), primitive.all_rows(radii)
+        assert np.array_equal(mine, theirs) and np.array_equal(np.signbit(mine), np.signbit(theirs))
+        for radius in radii[::40].tolist():  # (one radius in floats: every function's value before)
+            every = primitive._combine(*primitive.own.value(radius),
+                                       primitive.anchors.value(radius)[4] if primitive.C0 else 0.0)
+            assert primitive.at(radius) == every and math.copysign(1.0, primitive.at(radius)) == math.copysign(1.0,
+                                                                                                             every)

@@ -468,9 +468,9 @@ def test_the_receding_radius_kept_is_the_layers_and_does_not_hold_its_factors_al
 
 
 def test_the_punch_branchs_arrays_read_theta_alone_and_are_the_layer_branchs_bit_for_bit():
-    """``LayerPunchBranch._arrays`` skips the profile factor's column (``κₙc = 0``: its terms are ``0·γₙ``): ``d`` and
-    ``∂d/∂a`` equal :class:`LayerBranch`'s, which reads both columns, bit for bit, from the tables' series below
-    ``LAMBDA_MIN`` to the face (``a/h = 10``)."""
+    """``LayerPunchBranch._arrays`` (and ``_evaluate``, one radius) skips the profile factor's column (``κₙc = 0``:
+    its terms are ``0·γₙ``): ``d`` and ``∂d/∂a`` equal :class:`LayerBranch`'s, which reads both columns, bit for bit,
+    from the tables' series below ``LAMBDA_MIN`` to the face (``a/h = 10``)."""
     contact = PUNCH.replace(h=THIN_LAYER)
     params = _material(contact)
     factors = NormalFactors(params.nu, contact.layer, 2.0)
@@ -478,3 +478,267 @@ def test_the_punch_branchs_arrays_read_theta_alone_and_are_the_layer_branchs_bit
     radii = np.geomspace(1e-7 * THIN_LAYER, A0, 2001)
     for mine, theirs in zip(branch._arrays(radii), LayerBranch._arrays(branch, radii)):
         assert np.array_equal(mine, theirs)
+    for radius in radii[::10].tolist():  # (the scalar reading alike, Θ alone: LayerPunchBranch._evaluate)
+        assert branch._evaluate(radius) == LayerBranch._evaluate(branch, radius)
+
+
+#: The punch's ``F_N = K(a) d`` from the stiffness spline's piecewise polynomial (``PunchNormal.force_reader``) against
+#: the checked relation's B-spline (``checked_force_reader``): the same quintic in ``s = ln λ``, its coefficients
+#: converted by ``PPoly.from_spline`` and summed in another order, so ``ln Φ`` agrees to a few ulps of its largest
+#: terms (``|ln Φ|`` reaches 10.7 at ``a/h = 64``, ν = 0.5) and ``Φ = exp(ln Φ)`` to as many ulps of ``1 + |ln Φ|``
+#: relative; measured at most 25 ulps (ν = 0.5) against this bound's 8 (1 + 10.7) = 94.
+SPLINE_FORM_ULPS = 8.0
+
+
+@pytest.mark.parametrize("nu", [0.0, 0.3, 0.5])
+def test_the_punchs_normal_force_from_the_pieces_is_the_checked_relations_to_round_off(nu):
+    """``F_N`` of the punch on a layer read off the stiffness factor's pieces on the arrays agrees with
+    :func:`~mdr_events.theory.layer.punch_stiffness` (the B-spline and its checks) to :data:`SPLINE_FORM_ULPS`
+    across the whole spline, ``LAMBDA_MIN`` to ``LAMBDA_MAX``; radii outside it (``a = 0``, the series) take the
+    checked route bit for bit."""
+    from mdr_events.models.continuum.layer_normals import PunchNormal
+    from mdr_events.theory.layer.compliance import LAMBDA_MAX
+    from mdr_events.theory.layer.tables import LAMBDA_MIN
+
+    contact = PUNCH.replace(h=THIN_LAYER)
+    params = dataclasses.replace(_material(contact), nu=nu)
+    fast, checked = (reader(params, contact.indenter, contact.layer)
+                     for reader in (PunchNormal.force_reader, PunchNormal.checked_force_reader))
+    lam = np.geomspace(LAMBDA_MIN * (1.0 + 1e-12), LAMBDA_MAX * (1.0 - 1e-12), 20001)
+    radius, depth = lam * THIN_LAYER, np.full(lam.shape, -3e-6)
+    expected = checked(depth, radius)
+    bound = SPLINE_FORM_ULPS * np.finfo(float).eps * (1.0 + np.abs(np.log(expected / (depth * 2.0 * params.E_star
+                                                                                       * radius))))
+    assert np.all(np.abs(fast(depth, radius) / expected - 1.0) <= bound)
+    outside = np.array([0.0, 0.5 * LAMBDA_MIN * THIN_LAYER, A0])
+    assert np.array_equal(fast(np.full(3, -3e-6), outside), checked(np.full(3, -3e-6), outside))
+
+
+#: The rounding of the branch's depth between its scalar and array forms, in ulps of ``|d|`` (an ulp or two each:
+#: the math module's logarithm and exponential against NumPy's, ``LayerBranch.depths``), with a margin.
+DEPTH_FORM_ULPS = 8.0
+
+
+#: The paraboloid's layers (m) of the finishing test: the paper's 5 mm and a thin 1 mm one; and the radius (m) whose
+#: depth tops their depths (the paper's contacts reach a few millimetres).
+PARABOLOID_LAYERS, PARABOLOID_TOP_RADIUS = (5e-3, 1e-3), 5e-3
+
+
+def _finishing_branch(kind: str, h: float, adhesive: bool):
+    """A branch of the finishing test and the top of its depths: the punch's receding branch on the thin layer (up to
+    the face's depth) or the paraboloid's branch of either work on a layer of :data:`PARABOLOID_LAYERS` (up to the
+    depth of :data:`PARABOLOID_TOP_RADIUS`): ``SCALAR_FINISH`` acts in every ``LayerBranch``, not the punch's alone."""
+    contact = (PUNCH if kind == "punch" else me.Contact.paper()).replace(h=h)
+    params = _material(contact)
+    work = params.dgamma1 if adhesive else params.dgamma0
+    cls = LayerPunchBranch if kind == "punch" else LayerBranch
+    branch = cls(params, work, contact.indenter, contact.layer, NormalFactors(params.nu, contact.layer, 2.0))
+    return branch, (branch.held_depth if kind == "punch" else branch.depth(PARABOLOID_TOP_RADIUS))
+
+
+@pytest.mark.parametrize("kind, h, adhesive", [("punch", THIN_LAYER, True)]
+                         + [("paraboloid", h, adhesive) for h in PARABOLOID_LAYERS for adhesive in (False, True)])
+def test_the_radii_finished_in_floats_are_the_arrays_roots_within_their_tolerance_and_rounding(kind, h, adhesive,
+                                                                                                monkeypatch):
+    """``LayerBranch._roots`` finishes the last few depths (``SCALAR_FINISH``) by ``_finish``, the same steps in
+    floats: the radii agree with the arrays' iteration run to the end (``SCALAR_FINISH = 0``) within both stopping
+    tolerances ``2 RADII_RTOL a`` plus the depths' rounding between the two forms carried through the slope
+    (``DEPTH_FORM_ULPS`` ulps of ``|d|`` over ``∂d/∂a``: unbounded at the fold, where the roots are ill-conditioned),
+    from within 1e-9 of the fold's depth (or of zero, without adhesion) to ``top``: on the thin layer's punch and on
+    the paraboloid's layers (every layer run's radii near the fold move at round-off by the finish)."""
+    import mdr_events.models.continuum.layer_branch as layer_branch
+
+    branch, top = _finishing_branch(kind, h, adhesive)
+    bottom = branch.jump_off_depth
+    span = top - bottom
+    depths = bottom + span * np.concatenate([np.geomspace(1e-9, 1e-3, 40), np.linspace(2e-3, 1.0, 400)])
+    finished = []
+    original = LayerBranch._finish
+
+    def spy(self, *args):
+        finished.append(args[0])
+        return original(self, *args)
+
+    monkeypatch.setattr(LayerBranch, "_finish", spy)
+    mine = branch.radii(depths)
+    assert finished  # (the route under test ran)
+    monkeypatch.setattr(layer_branch, "SCALAR_FINISH", 0)
+    theirs = branch.radii(depths)
+    slope = np.abs(branch._arrays(theirs)[1])
+    eps = np.finfo(float).eps
+    with np.errstate(divide="ignore"):
+        bound = 2.0 * layer_branch.RADII_RTOL * theirs + DEPTH_FORM_ULPS * eps * np.abs(depths) / slope
+    assert np.all(np.abs(mine - theirs) <= bound)
+
+
+def _thin_run_solution(motion: me.Scenario):
+    """The continuum's solution of the punch on the thin layer along ``motion`` (its model, spans and samples)."""
+    from mdr_events.limits import check_limits
+    from mdr_events.models.continuum.solve import run_continuum
+    from mdr_events.models.simulate import simulation_job
+
+    model, _ = simulation_job(PUNCH.replace(h=THIN_LAYER), motion, None, "continuum", {}, check_limits(None))
+    cases = model.motion.cases(model.params, model.profile, model.friction)
+    return run_continuum(model.kernel, cases.paths, 2001)["solutions"][0]
+
+
+def test_a_still_primitive_is_its_series_zeros_and_a_constant_radius_shift_each_elements():
+    """Two shortcuts of a vertical run's receding punch, bit for bit what they skip: the layer's primitive of zero
+    coefficients (``LayerPrimitive.still``: no spring holds a shift) gives the zeros its cells' series give (values,
+    one value and the rate, signs of zero included), and the cap ``ū`` of an array of one radius throughout (a pinned
+    span's, ``LayerMedium._shifts``) is that radius's element of an array of distinct radii."""
+    from mdr_events.models.continuum.layer_closed_form import LayerPrimitive
+
+    solution = _thin_run_solution(VERTICAL)
+    primitives = [span.interpolant.primitive for span in solution.spans
+                  if isinstance(getattr(span.interpolant, "primitive", None), LayerPrimitive)]
+    assert primitives and all(primitive.still for primitive in primitives)
+    for primitive in primitives:
+        radii = np.geomspace(primitive.branch.jump_off_radius * 1.001, A0, 101)
+        series = primitive._combine(*primitive.own.values(radii), 0.0)
+        assert np.array_equal(primitive(radii), series) and not np.any(np.signbit(series))
+        assert primitive.at(float(radii[50])) == 0.0 == primitive._combine(*primitive.own.value(float(radii[50])), 0.0)
+    sliding = _thin_run_solution(me.Scenario("B", alpha=[20.0], d_max=D_MAX))  # (its recession drives shifts)
+    assert not any(span.interpolant.primitive.still for span in sliding.spans
+                   if isinstance(getattr(span.interpolant, "primitive", None), LayerPrimitive))
+    medium, K = solution.model.caps.medium, solution.model.caps.K
+    distinct = np.geomspace(1e-3 * THIN_LAYER, A0, 257)
+    each = medium._shifts(K, distinct)
+    for k in (0, 128, 256):
+        assert np.array_equal(medium._shifts(K, np.full(1500, distinct[k])), np.full(1500, each[k]))
+    caps = K * np.linspace(0.5, 1.5, 1500)  # (a K for each element: no shortcut, each its own shift)
+    assert np.array_equal(medium._shifts(caps, np.full(1500, distinct[128])),
+                          [medium._shifts(cap, distinct[128:129])[0] for cap in caps.tolist()])
+
+
+@pytest.mark.parametrize("h", [THIN_LAYER, 0.02 * A0])
+def test_the_samples_radii_off_the_recessions_table_are_the_iterations_within_what_its_roots_hold_to(h):
+    """``LayerPunchBranch.sample_radii`` reads the recession's radii off a cubic Hermite table in ``u = sqrt(d −
+    d_j)`` made once per branch (``punch_inverse``): at 4000 depths from the fold to the face every one is covered by
+    the table and agrees with ``radii`` (Newton's iteration, the route it replaced, kept for the events) within both
+    roots' accuracy, ``punch_inverse.accuracy`` twice (``RADII_RTOL · a`` plus the depth's rounding through
+    ``∂d/∂a``); the face's depths and those below the jump-off are ``radii``' own, bit for bit."""
+    from mdr_events.models.continuum.punch_inverse import accuracy, recession_inverse
+
+    contact = PUNCH.replace(h=h)
+    params = _material(contact)
+    branch = LayerPunchBranch(params, params.dgamma1, contact.indenter, contact.layer,
+                              NormalFactors(params.nu, contact.layer, 2.0))
+    assert branch.jump_off_radius < branch.face_floor  # (it recedes)
+    table = recession_inverse(branch)
+    depths = np.linspace(table.low, branch.held_depth, 4002)[1:-1]
+    assert np.all(table.radii(depths)[1])  # (every one covered: the table kept every interval)
+    mine, theirs = branch.sample_radii(depths), branch.radii(depths)
+    assert np.all(np.abs(mine - theirs) <= 2.0 * accuracy(theirs, depths, branch._arrays(theirs)[1]))
+    outside = np.array([branch.held_depth, 0.5 * branch.held_depth, branch.jump_off_depth,
+                        1.5 * branch.jump_off_depth, 0.5 * (branch.jump_off_depth + table.low)])
+    assert np.array_equal(branch.sample_radii(outside), branch.radii(outside), equal_nan=True)
+
+
+#: ``t(1 − t)(1 − 2t)`` at ``t = ¼``: a change ``δ`` of both ends' ``da/du`` moves the cubic Hermite interpolant by
+#: ``δ Δu t(1 − t)(1 − 2t)``, zero at the middle, ``3δΔu/32`` at the quarters.
+QUARTER_SHAPE = 3.0 / 32.0
+
+
+def test_the_recessions_table_refuses_an_interval_right_at_its_middle_and_wrong_at_its_quarters(monkeypatch):
+    """The table's check (``punch_inverse``) compares each interval at ``t = ¼, ½, ¾``, not at its middle alone: an
+    interval whose ends' slopes ``da/du`` are both moved so that the interpolant is unchanged at the middle and off by
+    twice the roots' accuracy at the quarters is refused (kept before, and kept by the middle alone, which missed it)."""
+    import mdr_events.models.continuum.punch_inverse as punch_inverse
+
+    contact = PUNCH.replace(h=THIN_LAYER)
+    params = _material(contact)
+    branch = LayerPunchBranch(params, params.dgamma1, contact.indenter, contact.layer,
+                              NormalFactors(params.nu, contact.layer, 2.0))
+    table = punch_inverse.RecessionInverse(branch)  # (its own: the kept one is not to be changed)
+    i = table.u.size // 2
+    k = np.array([i])
+    assert table._check(branch, k)[0][0]
+    width, middle = table.u[i + 1] - table.u[i], 0.5 * (table.u[i] + table.u[i + 1])
+    accuracy = punch_inverse.accuracy(table.a[i], table.fold + middle * middle, table._slopes[i])
+    table.rates[i:i + 2] += 2.0 * accuracy / (QUARTER_SHAPE * width)
+    assert not table._check(branch, k)[0][0]
+    monkeypatch.setattr(punch_inverse, "CHECK_POINTS", (0.5,))
+    assert table._check(branch, k)[0][0]  # (the middle alone keeps it)
+
+
+def test_a_medium_keeps_its_branches_by_material_and_work_and_a_kept_one_runs_as_a_new_one():
+    """``LayerMedium.edge`` makes each branch once per material and work and hands it out again (its scan, jump-off
+    and remembered radii with it): the same objects twice, another for another work or material; and a run on kept
+    branches is the run on new ones, bit for bit (the medium's cache cleared before the first)."""
+    from mdr_events.contact.adhesion import Adhesion
+    from mdr_events.models.continuum.media import _layer_medium
+
+    contact = PUNCH.replace(h=THIN_LAYER)
+    sliding = me.Scenario("B", alpha=[20.0], d_max=D_MAX)
+    _layer_medium.cache_clear()
+    new = me.simulate(contact, sliding, "continuum")
+    kept = me.simulate(contact, sliding, "continuum")
+    for name in ("contact_radius", "normal_force", "tangential_force", "sliding_fraction"):
+        assert np.array_equal(new[name].values, kept[name].values, equal_nan=True), name
+    params = _material(contact)
+    medium = LayerMedium(params, contact.indenter, contact.layer)
+    law = Adhesion(params.dgamma0, params.dgamma1)
+    first, again = medium.edge(law, params, None), medium.edge(law, params, None)
+    assert first.grow is again.grow and first.shrink is again.shrink and first.grow is not first.shrink
+    softer = dataclasses.replace(params, E=0.5 * params.E)
+    assert medium.edge(law, softer, None).shrink is not first.shrink
+    assert medium.edge(Adhesion(params.dgamma0, 0.5 * params.dgamma1), params, None).shrink is not first.shrink
+
+
+def _branch_state(branch) -> dict:
+    """A branch's attributes as comparable values (arrays as bytes, tuples of arrays likewise; its remembered depths'
+    cache and its relations' functions by identity: what a run could have replaced)."""
+    def value(item):
+        if isinstance(item, np.ndarray):
+            return item.dtype.str, item.shape, item.tobytes()
+        if isinstance(item, (tuple, list)):
+            return tuple(value(part) for part in item)
+        if isinstance(item, (float, int, str, type(None), me.Layer, me.Elastomer)) or dataclasses.is_dataclass(item):
+            return item
+        return id(item)
+
+    return {name: value(item) for name, item in vars(branch).items()}
+
+
+def test_two_runs_leave_the_kept_branches_as_they_were():
+    """The branches a layer's medium keeps (``LayerMedium._branch``) are shared by every run of the contact: a second
+    run, the sliding B 20° on the thin layer's punch and the paraboloid on the paper's layer, leaves each kept branch's
+    attributes as the first left them (values bit for bit, the objects they hold the same ones)."""
+    from mdr_events.limits import check_limits
+    from mdr_events.models.continuum.media import _layer_medium, medium_of
+    from mdr_events.models.simulate import simulation_job
+
+    sliding = me.Scenario("B", alpha=[20.0], d_max=D_MAX)
+    for contact in (PUNCH.replace(h=THIN_LAYER), me.Contact.paper().replace(h=PAPER_LAYER)):
+        _layer_medium.cache_clear()
+        me.simulate(contact, sliding, "continuum")
+        hits = _layer_medium.cache_info().hits
+        model, _ = simulation_job(contact, sliding, None, "continuum", {}, check_limits(None))
+        medium = medium_of(model.params, model.friction, model.profile, contact.layer)
+        assert _layer_medium.cache_info().hits == hits + 1  # (the run's own medium)
+        before = {key: _branch_state(branch) for key, branch in medium._branches.items()}
+        assert before  # (the runs took kept branches)
+        me.simulate(contact, sliding, "continuum")
+        assert {key: _branch_state(branch) for key, branch in medium._branches.items()} == before
+
+
+def test_the_punchs_normal_force_reads_the_faces_factor_once_as_each_element_would():
+    """``PunchNormal.force_reader`` reads ``Φ(a₀/h)`` once for the samples at the face's radius (most of a run's) and
+    the pieces' arrays for the others: the forces equal those of the arrays over every sample (the route before),
+    bit for bit, with the face's radius among radii receding below it."""
+    from mdr_events.models.continuum.layer_normals import PunchNormal
+    from mdr_events.theory.layer.scalar_factors import LogColumn
+    from mdr_events.theory.layer.tables import layer_table
+    from mdr_events.theory.layer_symbolic import derive_layer_model
+
+    contact = PUNCH.replace(h=THIN_LAYER)
+    params = _material(contact)
+    force = PunchNormal.force_reader(params, contact.indenter, contact.layer)
+    radius = np.concatenate([np.full(700, A0), np.geomspace(0.4 * THIN_LAYER, A0, 300, endpoint=False),
+                             np.full(500, A0)])
+    depth = np.linspace(-8e-6, 1e-5, radius.size)
+    column = LogColumn(layer_table(params.nu, contact.layer.base, 2.0)._splines["stiffness"])
+    expected = derive_layer_model()["layer_flat_punch_force"].numeric(
+        2.0 * params.E_star * radius * column.values_array(radius / THIN_LAYER), depth)
+    assert np.array_equal(force(depth, radius), expected)

@@ -27,6 +27,7 @@ from mdr_events.theory import symbolic
 from mdr_events.theory.layer_continuum_symbolic import derive_continuum_model
 
 from .branch import FOLD_SHARE, Branch
+from .hermite_start import hermite_start
 
 __all__ = ["LayerBranch", "ROOT_ITERATIONS", "RADII_RTOL", "NEWTON_SHARE"]
 
@@ -248,14 +249,14 @@ class LayerBranch(Branch):
 
     def _start(self, depth: float) -> tuple[float, float]:
         """Newton's start for ``depth``: the inverse's cubic Hermite interpolant on the scan (:meth:`_scan`) about it
-        (:func:`_hermite_start`), the scan's first or last radius outside it; and Newton's constant of its interval
-        (``inf`` outside the scan). A function of ``depth`` alone."""
+        (:func:`~.hermite_start.hermite_start`), the scan's first or last radius outside it; and Newton's constant of
+        its interval (``inf`` outside the scan). A function of ``depth`` alone."""
         radii, depths, slopes = self._scan_lists()
         index = bisect.bisect_left(depths, depth)
         if index == 0 or index == len(radii):
             return radii[min(index, len(radii) - 1)], math.inf
-        return (_hermite_start(depth, radii[index - 1:index + 1], depths[index - 1:index + 1],
-                               slopes[index - 1:index + 1]), self._scans()[3][index - 1])
+        return (hermite_start(depth, radii[index - 1:index + 1], depths[index - 1:index + 1],
+                              slopes[index - 1:index + 1]), self._scans()[3][index - 1])
 
     def radius(self, depth: float, rtol: float) -> float:
         """Stable-branch radius at ``depth``, converged to ``rtol`` (``nan`` below the jump-off depth; within
@@ -288,13 +289,7 @@ class LayerBranch(Branch):
         depth = float(depth)
         a, constant = self._start(depth)
         for _ in range(ROOT_ITERATIONS):
-            value, slope = self._evaluate(a)  # (not remembered: the iterates would push out the span's radii)
-            if value >= depth:
-                upper = min(upper, a)
-            else:
-                lower = max(lower, a)
-            step = (value - depth) / slope if slope > 0.0 else math.inf
-            guess = a - step
+            guess, step, lower, upper = self._newton_step(depth, a, lower, upper)
             if abs(step) <= rtol * a:  # (Newton's step within the tolerance: converged, wherever the bracket is)
                 return guess
             if constant * step * step <= NEWTON_SHARE * rtol * a and lower < guess < min(upper, self.ceiling):
@@ -377,8 +372,8 @@ class LayerBranch(Branch):
         np.clip(index, 1, radii.size - 1, out=index)
         below_index = index - 1
         lower, upper = radii[below_index], radii[index]
-        a = _hermite_start(depth, (lower, upper), (depths[below_index], depths[index]),
-                           (slopes[below_index], slopes[index]))
+        a = hermite_start(depth, (lower, upper), (depths[below_index], depths[index]),
+                          (slopes[below_index], slopes[index]))
         if depth.size and float(np.max(depth)) >= depths[-1]:
             upper = np.where(depth >= depths[-1], 2.0 * radii[-1], upper)  # (the ceiling's root, to rounding beyond)
         below = depth <= depths[0]  # (no adhesion, below the scan: d ∝ aⁿ towards a = 0)
@@ -407,29 +402,42 @@ class LayerBranch(Branch):
             if not np.any(moving):
                 return out
             active, a, lower, upper, q = active[moving], guess[moving], lower[moving], upper[moving], q[moving]
+            if active.size <= SCALAR_FINISH:  # (a few left, near the fold: the same steps in floats, as _finish)
+                for k, start, low, high, bound in zip(active.tolist(), a.tolist(), lower.tolist(), upper.tolist(),
+                                                      q.tolist()):
+                    out[k] = self._finish(float(depth[k]), start, low, high, bound)
+                return out
         raise RuntimeError(f"the radii of {depth.size} depths on {self.layer.describe()} did not converge")
 
+    def _finish(self, depth: float, a: float, lower: float, upper: float, q: float) -> float:
+        """The root of one of :meth:`_roots`' depths from its iterate ``a``, bracket ``[lower, upper]`` and Newton's
+        constant ``q``: :meth:`_roots`' steps and stopping rules in Python floats, the branch read by :meth:`_evaluate`
+        (its values to an ulp or two of the arrays'), at a few microseconds a reading where an array's costs some
+        fifty however few its depths (:data:`SCALAR_FINISH`)."""
+        for _ in range(ROOT_ITERATIONS):
+            guess, step, lower, upper = self._newton_step(depth, a, lower, upper)
+            inside, small = lower < guess < upper, abs(step) <= RADII_RTOL * a
+            # (q = inf and a zero step: no bound, nan as the arrays' inf · 0, the other tests decide)
+            bound = q * step * step if step != 0.0 or q != math.inf else math.nan
+            done = small or upper - lower <= RADII_RTOL * upper or (inside and bound <= NEWTON_SHARE * RADII_RTOL * a)
+            guess = guess if inside or small else 0.5 * (lower + upper)
+            if done:
+                return guess
+            a = guess
+        raise RuntimeError(f"the radius of depth={depth!r} m on {self.layer.describe()} did not converge")
 
-def _hermite_start(depth, radii: np.ndarray, depths: np.ndarray, slopes: np.ndarray):
-    """The radius of ``depth`` on the cubic Hermite interpolant of the inverse ``a(d)`` between two scanned points
-    (``radii``, ``depths``, ``slopes`` ``∂d/∂a``: each of two rows, the lower point first), within about 1e-9 of the
-    root at :data:`START_SCAN_PER_DECADE`: one of Newton's steps from :data:`RADII_RTOL`. Where a slope is not
-    positive (the jump-off's, where the inverse has a square root) or the cubic leaves the interval, the chord."""
-    (r0, r1), (d0, d1), (s0, s1) = radii, depths, slopes
-    width, rise = d1 - d0, r1 - r0
-    t = (depth - d0) / width
-    chord = r0 + t * rise
-    if type(depth) is float:  # (one depth, in floats: the scalar start's)
-        if not (s0 > 0.0 and s1 > 0.0):
-            return chord
-        m0, m1 = width / s0, width / s1
-        cubic = r0 + t * (m0 + t * (3.0 * rise - 2.0 * m0 - m1 + t * (m0 + m1 - 2.0 * rise)))
-        return cubic if r0 <= cubic <= r1 else chord
-    with np.errstate(divide="ignore", invalid="ignore"):
-        m0, m1 = width / s0, width / s1
-        cubic = r0 + t * (m0 + t * (3.0 * rise - 2.0 * m0 - m1 + t * (m0 + m1 - 2.0 * rise)))
-    good = (s0 > 0.0) & (s1 > 0.0) & (cubic >= r0) & (cubic <= r1)
-    return np.where(good, cubic, chord)
+    def _newton_step(self, depth: float, a: float, lower: float, upper: float) -> tuple[float, float, float, float]:
+        """One of Newton's steps towards the radius of ``depth`` from ``a`` in floats, shared by :meth:`radius` and
+        :meth:`_finish`: the bracket ``[lower, upper]`` narrowed by ``a``'s side of the root, and the guess ``a − δ``
+        with the step ``δ = (d(a) − depth)/∂d/∂a`` (``inf`` where the slope is not positive). The branch is read by
+        :meth:`_evaluate`, not remembered: the iterates would push out the span's radii."""
+        value, slope = self._evaluate(a)
+        if value >= depth:
+            upper = min(upper, a)
+        else:
+            lower = max(lower, a)
+        step = (value - depth) / slope if slope > 0.0 else math.inf
+        return a - step, step, lower, upper
 
 
 def _jump_off_radius(branch: LayerBranch) -> float:
@@ -470,6 +478,11 @@ _SCANS: dict[tuple, tuple] = {}
 #: a span's end, read again: the arrays' route costs some hundred microseconds however few its depths, the scalar one a
 #: few each).
 SCALAR_RADII = 4
+#: At most this many depths still moving, :meth:`LayerBranch._roots` finishes each by :meth:`LayerBranch._finish` (the
+#: same steps on one float, the branch read by ``_evaluate``, ~4 µs a reading) instead of another reading of the arrays
+#: (~50 µs however few their depths): the depths near the fold, where Newton's constant is unbounded, took five more
+#: readings of one or two depths each on a thin layer's receding punch (issue 34).
+SCALAR_FINISH = 16
 #: The accuracy of :meth:`LayerBranch.radii` (the default ``radius_rtol`` of the continuum's tolerances).
 RADII_RTOL = 1e-14
 #: :meth:`LayerBranch.radii` (and :meth:`LayerBranch.radius`, at its ``rtol``) takes Newton's first step ``δ`` as the

@@ -112,6 +112,8 @@ class BranchIntegrals:
         self.lists = self.series.transpose(2, 0, 1).tolist()
         self.width, self._ends = width, ends
         self._by_degree = np.ascontiguousarray(self.series.transpose(1, 0, 2))  # (degree + 1, function, cell)
+        #: :attr:`_by_degree`'s rows of a few functions (:meth:`values` of a tuple of rows), made when first asked
+        self._rows: dict[tuple[int, ...], np.ndarray] = {}
 
     def covers(self, low: float, high: float) -> bool:
         """Whether ``[low, high]`` lies within the cells.
@@ -135,8 +137,8 @@ class BranchIntegrals:
         ----------
         a : numpy.ndarray
             The radii (m), one-dimensional.
-        rows : slice, optional
-            Which of the functions (default all).
+        rows : slice or tuple of int, optional
+            Which of the functions (default all): a slice, or their indices in :data:`NAMES`' order.
 
         Returns
         -------
@@ -146,19 +148,26 @@ class BranchIntegrals:
         a = np.asarray(a, dtype=float)
         cell = np.clip(np.searchsorted(self._ends, a, side="right") - 1, 0, len(self.ends) - 2)
         t = 2.0 * (a - self._ends[cell]) / self.width[cell] - 1.0
-        coefficients = self._by_degree[:, rows, cell]  # (degree + 1, function, radius)
+        if isinstance(rows, tuple):  # (a few rows: their coefficients kept apart, the same numbers)
+            if rows not in self._rows:
+                self._rows[rows] = np.ascontiguousarray(self._by_degree[:, list(rows)])
+            coefficients = self._rows[rows][:, :, cell]
+        else:
+            coefficients = self._by_degree[:, rows, cell]  # (degree + 1, function, radius)
         b1 = b2 = 0.0  # (Clenshaw's recurrence, as :meth:`value`: P_{k+1} = ((2k+1) t P_k − k P_{k−1})/(k+1))
         for k in range(CELL_NODES, 0, -1):
             b1, b2 = coefficients[k] + _ALPHA[k] * t * b1 - _BETA[k] * b2, b1
         return coefficients[0] + t * b1 - 0.5 * b2
 
-    def value(self, a: float) -> list[float]:
+    def value(self, a: float, rows: tuple[int, ...] | None = None) -> list[float]:
         """:meth:`values` at one radius, every function, in Python floats (Clenshaw's recurrence).
 
         Parameters
         ----------
         a : float
             The radius (m).
+        rows : tuple of int, optional
+            Only these functions (indices in :data:`NAMES`' order); the others ``0.0``. Default all.
 
         Returns
         -------
@@ -169,7 +178,10 @@ class BranchIntegrals:
         low, high = self.ends[cell], self.ends[cell + 1]
         t = 2.0 * (a - low) / (high - low) - 1.0
         out = []
-        for coefficients in self.lists[cell]:
+        for index, coefficients in enumerate(self.lists[cell]):
+            if rows is not None and index not in rows:
+                out.append(0.0)
+                continue
             b1 = b2 = 0.0
             for k in range(CELL_NODES, 0, -1):  # (P_{k+1} = ((2k+1) t P_k − k P_{k−1})/(k+1))
                 b1, b2 = coefficients[k] + _ALPHA[k] * t * b1 - _BETA[k] * b2, b1
@@ -242,16 +254,59 @@ class LayerPrimitive(NamedTuple):
     C: float
     C0: float
 
+    @property
+    def still(self) -> bool:
+        """Every coefficient zero: ``P ≡ 0`` (no spring holds a shift and nothing drives one: a vertical path's
+        receding punch), read without the cells' series."""
+        return not (self.D0 or self.D1 or self.E0 or self.E1 or self.U or self.A or self.C or self.C0)
+
+    @property
+    def rows(self) -> tuple[int, ...]:
+        """The functions of :data:`BranchIntegrals.NAMES` whose terms in ``P`` have a coefficient other than zero
+        (``M`` for ``D₁``, ``E₁``, ``A``; ``ū`` for ``D₀``, ``D₁``; ``d`` for ``E₀``, ``E₁``; ``J_u`` for ``D₁``,
+        ``U``; ``J_d`` for ``E₁``, ``C``)."""
+        needed = (self.D1 or self.E1 or self.A, self.D0 or self.D1, self.E0 or self.E1, self.D1 or self.U,
+                  self.E1 or self.C)
+        return tuple(index for index, need in enumerate(needed) if need)
+
     def __call__(self, a: np.ndarray) -> np.ndarray:
-        """``P`` at the radii ``a`` (m), vectorised (the cells' series)."""
+        """``P`` at the radii ``a`` (m), vectorised: the cells' series of :attr:`rows` alone, the others' terms
+        ``0 · 0`` (:meth:`all_rows`' values bit for bit where ``P`` is not zero); zeros where :attr:`still`."""
+        a = np.asarray(a, dtype=float)
+        if self.still:
+            return np.zeros(a.shape)
+        rows = self.rows
+        values = [0.0] * len(BranchIntegrals.NAMES)
+        for index, row in zip(rows, self.own.values(np.reshape(a, -1), rows)):
+            values[index] = row
+        return np.reshape(self._combine(*values, self.anchors.values(np.reshape(a, -1), slice(4, 5))[0]
+                                        if self.C0 else 0.0), a.shape)
+
+    def all_rows(self, a: np.ndarray) -> np.ndarray:
+        """``P`` at the radii ``a`` (m) from every function's series (the route before :meth:`__call__` read
+        :attr:`rows` alone; kept for the test that compares both).
+
+        Parameters
+        ----------
+        a : numpy.ndarray
+            The radii (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            ``P``, the shape of ``a``.
+        """
         a = np.asarray(a, dtype=float)
         M, u, depth, J_u, J_d = self.own.values(np.reshape(a, -1))
         return np.reshape(self._combine(M, u, depth, J_u, J_d, self.anchors.values(np.reshape(a, -1), slice(4, 5))[0]
                                         if self.C0 else 0.0), a.shape)
 
     def at(self, a: float) -> float:
-        """``P`` at one radius ``a`` (m), in Python floats (the same series, Clenshaw's recurrence)."""
-        return self._combine(*self.own.value(a), self.anchors.value(a)[4] if self.C0 else 0.0)
+        """``P`` at one radius ``a`` (m), in Python floats (the same series, Clenshaw's recurrence; 0 where
+        :attr:`still`)."""
+        if self.still:
+            return 0.0
+        return self._combine(*self.own.value(a, self.rows), self.anchors.value(a, (4,))[4] if self.C0 else 0.0)
 
     def _combine(self, M, u, depth, J_u, J_d, J_0):
         """``P`` of the functions' values (module docstring)."""
@@ -260,7 +315,10 @@ class LayerPrimitive(NamedTuple):
         return value + self.U * J_u + self.A * M + self.C * J_d + self.C0 * J_0
 
     def rate(self, a: float) -> float:
-        """``dP/da`` at the radius ``a`` (m): the span's right-hand side over ``2G*``, term by term."""
+        """``dP/da`` at the radius ``a`` (m): the span's right-hand side over ``2G*``, term by term (0 where
+        :attr:`still`)."""
+        if self.still:
+            return 0.0
         M, cap, cap_slope, weight = self.medium.rate_parts(self.K, a)
         value = (self.D0 + self.D1 * M) * cap_slope
         value += (self.E0 + self.E1 * M) * self.branch.slope(a)

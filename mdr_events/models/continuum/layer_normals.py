@@ -196,7 +196,11 @@ class PunchNormal(ProfileNormal):
     @staticmethod
     def force_reader(params: Parameters, indenter, layer: Layer) -> Callable[[Any, Any], np.ndarray]:
         """``F_N(d, a) = K(a) d`` (``layer_flat_punch_force``; the springs let go store nothing,
-        ``layer_flat_punch_receding_force``), ``K`` the layer's punch stiffness at the contact's radius.
+        ``layer_flat_punch_receding_force``), ``K = 2E* a Φ(a/h)`` the layer's punch stiffness at the contact's
+        radius: ``Φ`` read off the table's spline as a piecewise polynomial on the arrays
+        (:meth:`~mdr_events.theory.layer.scalar_factors.LogColumn.values_array`, the spline's values to round-off) where
+        every radius lies within the spline's ``[LAMBDA_MIN, LAMBDA_MAX] h``, else the checked relation
+        (:meth:`checked_force_reader`).
 
         Parameters
         ----------
@@ -211,6 +215,42 @@ class PunchNormal(ProfileNormal):
         -------
         callable
             ``F_N`` (N; 0 where ``a = 0``) of the depth and radius ``d``, ``a`` (float or array_like, m).
+        """
+        from mdr_events.theory.layer.compliance import LAMBDA_MAX
+        from mdr_events.theory.layer.scalar_factors import LogColumn
+        from mdr_events.theory.layer.tables import LAMBDA_MIN, layer_table
+        from mdr_events.theory.layer_symbolic import derive_layer_model
+
+        relation = derive_layer_model()["layer_flat_punch_force"].numeric
+        column = LogColumn(layer_table(params.nu, layer.base, 2.0)._splines["stiffness"])
+        checked = PunchNormal.checked_force_reader(params, indenter, layer)
+
+        face = np.array([float(indenter.radius)])
+        held = column.values_array(face / layer.thickness)[0] if LAMBDA_MIN <= face[0] / layer.thickness <= LAMBDA_MAX \
+            else None
+
+        def force(depth, radius) -> np.ndarray:
+            a = np.asarray(radius, dtype=float)
+            lam = a / layer.thickness
+            if not (lam.size > 0 and LAMBDA_MIN <= float(np.min(lam)) and float(np.max(lam)) <= LAMBDA_MAX):
+                return checked(depth, radius)  # (a = 0, below the series' bound or beyond the table: checked)
+            # (the face's radius, most of a run's samples: its Φ read once, the same value elementwise)
+            at_face = a == face[0]
+            if held is None or not np.any(at_face):
+                factor = column.values_array(lam)
+            else:
+                factor = np.full(a.shape, held)
+                factor[~at_face] = column.values_array(lam[~at_face])
+            return np.asarray(relation(2.0 * params.E_star * a * factor, depth), dtype=float)
+
+        return force
+
+    @staticmethod
+    def checked_force_reader(params: Parameters, indenter, layer: Layer) -> Callable[[Any, Any], np.ndarray]:
+        """:meth:`force_reader`'s ``F_N = K(a) d`` by the checked relation
+        :func:`~mdr_events.theory.layer.punch_stiffness` (the B-spline, the series below ``LAMBDA_MIN``): what it
+        reads outside the spline, and what its piecewise polynomial is tested against. Its parameters and what it
+        returns are :meth:`force_reader`'s.
         """
         from mdr_events.theory.layer import punch_stiffness
         from mdr_events.theory.layer_symbolic import derive_layer_model

@@ -164,6 +164,14 @@ class LayerPunchBranch(LayerBranch):
         """
         return 0.0
 
+    def _evaluate(self, a: float) -> tuple[float, float]:
+        """``d(a)`` and ``∂d/∂a`` at one radius from ``Θ`` alone (``NormalFactors.edge_factor``), as :meth:`_arrays`:
+        with ``κₙc = 0`` the profile factor's terms are ``0·γₙ``, so ``γₙ = 0`` leaves both
+        :class:`~.layer_branch.LayerBranch`'s bit for bit, without its column's Horner sum and exponential a
+        reading (the receding span's events and its radius read the branch some hundred times a run)."""
+        theta, theta_slope = self.factors.edge_factor(a)
+        return self._pair(a, self.h, self.kc, self.n, 0.0, 0.0, self.hess, theta, theta_slope)
+
     def _arrays(self, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``d(a)`` and ``∂d/∂a`` for an array of radii (> 0) from ``Θ`` alone (``NormalFactors.edge_arrays``): with
         ``κₙc = 0`` the profile factor's terms are ``0·γₙ``, so ``γₙ = 0`` leaves both bit for bit as
@@ -205,4 +213,33 @@ class LayerPunchBranch(LayerBranch):
         out = np.full(depth.shape, self.face)
         if not np.all(held):
             out[~held] = super().radii(depth[~held])
+        return np.where(out >= self.face_floor, self.face, out)
+
+    def sample_radii(self, depth: np.ndarray) -> np.ndarray:
+        """:meth:`radii` at a run's samples: on the recession the inverse tabulated once per branch
+        (:func:`~.punch_inverse.recession_inverse`, within what :meth:`radii`' roots hold to,
+        ``punch_inverse.accuracy``, where it covers them), :meth:`radii` elsewhere (the face held, below the jump-off, an interval the table did
+        not keep).
+
+        Parameters
+        ----------
+        depth : array_like
+            The depths (m).
+
+        Returns
+        -------
+        numpy.ndarray
+            The radii (m), the shape of ``depth``.
+        """
+        depth = np.asarray(depth, dtype=float)
+        receding = depth < self.held_depth
+        if self.work == 0.0 or self.jump_off_radius >= self.face_floor or not np.any(receding):
+            return self.radii(depth)
+        from .punch_inverse import recession_inverse
+
+        found, covered = recession_inverse(self).radii(depth[receding])
+        if not np.all(covered):
+            found[~covered] = self.radii(depth[receding][~covered])
+        out = np.full(depth.shape, self.face)
+        out[receding] = found
         return np.where(out >= self.face_floor, self.face, out)
