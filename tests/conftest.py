@@ -94,8 +94,9 @@ def without_drawing(monkeypatch):
     """Every figure a command or a writer makes is built (its ``plot_*`` function runs) and its texts are laid out (a
     title, label or legend entry that cannot be typeset still fails), but it is not drawn: ``figure_png`` closes it
     and gives a 1×1 PNG. For a test that checks something else than the figure's pixels (the layout and drawing of a
-    figure are 0.2-0.6 s of CPU, most of a small command's; make test's time, issue 28 item 4); each kind of figure is
-    still drawn by the tests of tests/plotting, the console-script tests and those that read a figure's PNG."""
+    figure are 0.2-0.6 s of CPU, most of a small command's; make test's time, issue 28 item 4). The figure of each kind
+    of output (simulation, phase diagram, validation, fit, convergence study, LAMMPS check) is still drawn by other
+    tests: tests/plotting, the console-script tests, and those that read a figure's PNG or name it."""
     from matplotlib.text import Text
 
     from mdr_events.app import fit_files, result_files, validation_files
