@@ -61,7 +61,7 @@ def test_the_command_fits_and_writes_its_files(paper, measured, tmp_path, comman
     assert (out / "measured_fit.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
-def test_tau0_from_the_normal_force_alone_exits_1(capsys, measured, tmp_path):
+def test_tau0_from_the_normal_force_alone_exits_1(capsys, measured, tmp_path, without_drawing):
     status, out, err = fit_cli(capsys, measured / "normal_only.csv", "--scenario", "A", "--alpha", ALPHA,
                                "--free", "tau0", "dgamma1", "--time-origin", "path_start", "--out", tmp_path / "out")
     assert status == 1, err
@@ -88,7 +88,7 @@ def test_bad_input_is_one_line_exit_2_and_writes_nothing(capsys, measured, tmp_p
     assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
 
 
-def test_a_study_fits_its_measurement(capsys, paper, measured, tmp_path):
+def test_a_study_fits_its_measurement(capsys, paper, measured, tmp_path, without_drawing):
     study = tmp_path / "study.toml"
     study.write_text(f"""
 [parameters]
