@@ -1,3 +1,5 @@
+import functools
+import io
 import os
 import signal
 import subprocess
@@ -74,6 +76,44 @@ def command(capsys, monkeypatch):
         return subprocess.CompletedProcess(list(args), status, out, err)
 
     return run
+
+
+@functools.cache
+def _placeholder_png() -> bytes:
+    """A 1×1 PNG (what :func:`without_drawing`'s figures are written as): read back by matplotlib as any PNG is."""
+    import numpy as np
+    from matplotlib import image
+
+    buffer = io.BytesIO()
+    image.imsave(buffer, np.zeros((1, 1, 4)), format="png")
+    return buffer.getvalue()
+
+
+@pytest.fixture
+def without_drawing(monkeypatch):
+    """Every figure a command or a writer makes is built (its ``plot_*`` function runs) and its texts are laid out (a
+    title, label or legend entry that cannot be typeset still fails), but it is not drawn: ``figure_png`` closes it
+    and gives a 1×1 PNG. For a test that checks something else than the figure's pixels (the layout and drawing of a
+    figure are 0.2-0.6 s of CPU, most of a small command's; make test's time, issue 28 item 4). The figure of each kind
+    of output (simulation, phase diagram, validation, fit, convergence study, LAMMPS check) is still drawn by other
+    tests: tests/plotting, the console-script tests, and those that read a figure's PNG or name it."""
+    from matplotlib.text import Text
+
+    from mdr_events.app import fit_files, result_files, validation_files
+    from mdr_events.plotting import figures
+
+    def placeholder(figure) -> bytes:
+        try:
+            renderer = figure.canvas.get_renderer()
+            for text in figure.findobj(Text):
+                if text.get_visible() and text.get_text():
+                    text.get_window_extent(renderer)
+        finally:
+            figures.plt.close(figure)
+        return _placeholder_png()
+
+    for module in (figures, fit_files, result_files, validation_files):
+        monkeypatch.setattr(module, "figure_png", placeholder)
 
 
 @pytest.fixture

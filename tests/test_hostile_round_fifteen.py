@@ -247,7 +247,7 @@ def test_fit_selects_the_scenarios_angle_in_a_result_of_several(two_angles):
     one_line_naming(lambda: me.fit(two_angles, PAPER, "A", 25.0, free=("tau0",)), "not at alpha=25.0")
 
 
-def test_the_command_line_fits_one_angle_of_a_simulation_of_several(two_angles, tmp_path, capsys):
+def test_the_command_line_fits_one_angle_of_a_simulation_of_several(two_angles, tmp_path, capsys, without_drawing):
     from mdr_events.app.cli import main
 
     me.write_netcdf(two_angles, tmp_path / "two.nc")

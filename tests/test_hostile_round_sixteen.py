@@ -213,7 +213,7 @@ def test_a_study_missing_a_required_key_says_what_is_allowed(tmp_path, text, nam
 @pytest.mark.parametrize("indenter, options", [(me.PowerLaw(20.0, 2.0), ["--power-law", "20", "2"]),
                                                (me.FlatPunch(1e-3), ["--flat-punch", "1e-3"])],
                          ids=["power-law", "flat-punch"])
-def test_a_fit_with_another_indenter_writes_its_report(capsys, tmp_path, indenter, options):
+def test_a_fit_with_another_indenter_writes_its_report(capsys, tmp_path, indenter, options, without_drawing):
     contact = dataclasses.replace(CONTACT, indenter=indenter)
     run = me.simulate(contact, me.Scenario("A", [20.0]), "continuum", samples=201).isel(alpha=0)
     data = tmp_path / "measured.csv"

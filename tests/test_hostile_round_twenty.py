@@ -116,7 +116,7 @@ def test_a_zero_length_segment_is_named_with_its_value(waypoints, named):
     ["simulate", "--scenario", "A", "--alpha", "20", "--method", "continuum"],
     ["phase-diagram", "--scenario", "A"],
 ])
-def test_a_long_run_says_it_still_runs(capsys, tmp_path, monkeypatch, verb):
+def test_a_long_run_says_it_still_runs(capsys, tmp_path, monkeypatch, verb, without_drawing):
     """With the first line due at once, the run's stderr has it and its stdout the files, exit 0 (a run of ~0.5 s
     here: what the line is for, a run past FIRST_AFTER, would cost the suite a minute)."""
     from mdr_events.app import heartbeat

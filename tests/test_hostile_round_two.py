@@ -150,7 +150,7 @@ def test_an_unseen_log_scaled_parameter_s_interval_is_0_to_inf():
 
 # --- class 6: the files of one run are replaced together or not at all -----------------------------------------
 
-def test_an_interrupt_while_a_run_s_files_are_written_leaves_the_previous_run_s(tmp_path, monkeypatch):
+def test_an_interrupt_while_a_run_s_files_are_written_leaves_the_previous_run_s(tmp_path, monkeypatch, without_drawing):
     """Ctrl-C between the .nc and the .png left the new .nc beside the previous run's .png."""
     from mdr_events.app import result_files
     first = me.simulate(PAPER, "A", alpha=[20.0], method="continuum", samples=101)

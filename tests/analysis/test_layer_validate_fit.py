@@ -65,7 +65,7 @@ def test_fit_refuses_nu_free_on_a_layer_in_one_line():
     assert "frees nu on layer h = 0.005 m, bonded base" in text and "allowed:" in text and "\n" not in text
 
 
-def test_the_command_line_validates_on_the_layer_of_h(capsys, tmp_path):
+def test_the_command_line_validates_on_the_layer_of_h(capsys, tmp_path, without_drawing):
     run = me.simulate(LAYERED, me.Scenario("A", alpha=[20.0]), "continuum").isel(alpha=0)
     candidate = tmp_path / "candidate.nc"
     me.write_netcdf(run, candidate)

@@ -84,7 +84,7 @@ def test_the_issues_case_a_vertical_run_letting_go_2_percent_early_fails():
     assert event_error(report, "pull_off") == pytest.approx(0.02 - step / VERTICAL.duration, rel=1e-2)
 
 
-def test_a_pull_off_1_percent_early_fails_exit_1_and_is_named(path_a, exact_a, tmp_path, capsys):
+def test_a_pull_off_1_percent_early_fails_exit_1_and_is_named(path_a, exact_a, tmp_path, capsys, without_drawing):
     """The exact run of scenario A with its pull-off moved 1 % of the path earlier: exit 1, the pull-off named
     first in the console and in the Markdown."""
     solution = solve_path(PAPER, path_a)

@@ -92,7 +92,7 @@ def test_simulate_bad_arguments(capsys, tmp_path, argv, fragment):
     assert status == 2 and err.count("\n") == 1 and fragment in err
 
 
-def test_simulate_continuum_writes_the_event_log_csv(capsys, tmp_path):
+def test_simulate_continuum_writes_the_event_log_csv(capsys, tmp_path, without_drawing):
     status, out, err = run(capsys, "simulate", "--scenario", "A", "--method", "continuum", "--alpha", "15", "60",
                            "--out", str(tmp_path))
     assert status == 0, err
@@ -130,7 +130,7 @@ def test_top_level_help_is_plain_text(capsys):
     assert "``" not in text and "Method of Dimensionality Reduction" in text
 
 
-def test_cli_results_say_which_parameters_came_from_the_preset(capsys, tmp_path):
+def test_cli_results_say_which_parameters_came_from_the_preset(capsys, tmp_path, without_drawing):
     status, _, err = run(capsys, "phase-diagram", "--scenario", "A", "--preset", "paper-R100", "--tau0", "30000",
                          "--out", str(tmp_path))
     assert status == 0, err
@@ -139,7 +139,7 @@ def test_cli_results_say_which_parameters_came_from_the_preset(capsys, tmp_path)
     assert ds.attrs["parameters_from_preset"] == "E, nu, R, dgamma0, dgamma1, d_max, v"
 
 
-def test_simulate_and_validate_take_a_power_law(capsys, tmp_path, without_run_figures):
+def test_simulate_and_validate_take_a_power_law(capsys, tmp_path, without_drawing, without_run_figures):
     """--power-law C N: the simulation names its profile (attribute and figure title, not the paper's figure
     number); the discrete run passes validate against the same indenter and fails against the paraboloid."""
     status, out, _ = run(capsys, "simulate", "--scenario", "A", "--alpha", "20", "--dx", "2e-6", "--power-law", "2000",
@@ -170,7 +170,7 @@ def test_a_bad_power_law_is_one_line_exit_2(capsys, tmp_path, values, fragment):
     assert not (tmp_path / "new").exists()  # nothing written, not even the output directory
 
 
-def test_cli_validate_builds_the_path_of_the_power_law(capsys, tmp_path):
+def test_cli_validate_builds_the_path_of_the_power_law(capsys, tmp_path, without_drawing):
     """A profile whose jump-off lies below the paraboloid's way out: the reference the CLI builds for
     --scenario/--alpha ends below that profile's jump-off, so it pulls off (as validate() in Python)."""
     from mdr_events.theory import power_law
@@ -188,7 +188,7 @@ def test_cli_validate_builds_the_path_of_the_power_law(capsys, tmp_path):
     assert float(report["pull_off_force_exact"]) == float(direct["pull_off_force_exact"])
 
 
-def test_phase_diagram_takes_a_power_law(capsys, tmp_path):
+def test_phase_diagram_takes_a_power_law(capsys, tmp_path, without_drawing):
     """--power-law: the diagram is the power law's (its critical angle), names it, says that R is unused, and its
     figure does not cite the paraboloid's equation numbers."""
     status, out, _ = run(capsys, "phase-diagram", "--scenario", "A", "--power-law", "0.1", "1", "--out", str(tmp_path))
@@ -204,7 +204,7 @@ def test_phase_diagram_takes_a_power_law(capsys, tmp_path):
     assert "param_R" in simulation.attrs and "not used" in simulation.attrs["profile_note"]
 
 
-def test_simulate_takes_a_flat_punch(capsys, tmp_path):
+def test_simulate_takes_a_flat_punch(capsys, tmp_path, without_drawing):
     """--flat-punch RADIUS: the simulation is the punch's (attributes), its least F_N Kendall's pull-off force."""
     status, _, _ = run(capsys, "simulate", "--scenario", "A", "--alpha", "20", "--method", "continuum", "--flat-punch",
                        "1.5e-3", "--out", str(tmp_path))
@@ -232,7 +232,7 @@ def _write_table(path, points=41):
     return me.TabulatedProfile(r, r * r / 0.06)
 
 
-def test_simulate_takes_a_table(capsys, tmp_path):
+def test_simulate_takes_a_table(capsys, tmp_path, without_drawing):
     """--table FILE: a CSV of r and f (m) is the indenter; the result carries the table exactly."""
     table = _write_table(tmp_path / "tip.csv")
     status, _, _ = run(capsys, "simulate", "--scenario", "A", "--alpha", "20", "--method", "continuum", "--table",

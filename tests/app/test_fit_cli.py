@@ -4,8 +4,6 @@ The measurement is synthetic: the continuum of scenario A at 20° with 1 % noise
 under a tribometer's column names, as an instrument would.
 """
 
-import subprocess
-
 import numpy as np
 import pytest
 
@@ -16,7 +14,7 @@ from mdr_events.app.cli import main
 from mdr_events.app.fit_files import fit_markdown
 from mdr_events.app.study import StudyError, load_study, run_study
 
-from test_validate_cli import assert_one_error_line, console_script, write_csv
+from test_validate_cli import assert_one_error_line, write_csv
 
 ALPHA = 20.0
 NAMES = "time=t_ms,normal_force=Fn_mN,tangential_force=Fx_mN,contact_area=A_mm2"
@@ -42,12 +40,13 @@ def fit_cli(capsys, *argv):
     return status, out, err
 
 
-def test_console_script_fits_and_writes_its_files(paper, measured, tmp_path):
+def test_the_command_fits_and_writes_its_files(paper, measured, tmp_path, command):
+    """The fit on the command line, in-process (:func:`mdr_events.app.cli.main`, the code the console script runs:
+    the console script itself is run by tests/app/test_validate_cli.py and tests/app/test_console_start_up.py)."""
     out = tmp_path / "out"
-    result = subprocess.run([*console_script(), "fit", str(measured / "measured.csv"), "--scenario", "A", "--alpha",
-                             "20", "--free", "tau0", "dgamma1", "--tau0", "30e3", "--dgamma1", "0.2", "--names", NAMES,
-                             "--units", UNITS, "--time-origin", "path_start", "--out", str(out)],
-                            capture_output=True, text=True)
+    result = command("fit", str(measured / "measured.csv"), "--scenario", "A", "--alpha", "20", "--free", "tau0",
+                     "dgamma1", "--tau0", "30e3", "--dgamma1", "0.2", "--names", NAMES, "--units", UNITS,
+                     "--time-origin", "path_start", "--out", str(out))
     assert result.returncode == 0, result.stderr
     assert "every free parameter is determined" in result.stdout
     assert sorted(p.name for p in out.iterdir()) == ["measured_fit.md", "measured_fit.nc", "measured_fit.png"]
@@ -62,7 +61,7 @@ def test_console_script_fits_and_writes_its_files(paper, measured, tmp_path):
     assert (out / "measured_fit.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
-def test_tau0_from_the_normal_force_alone_exits_1(capsys, measured, tmp_path):
+def test_tau0_from_the_normal_force_alone_exits_1(capsys, measured, tmp_path, without_drawing):
     status, out, err = fit_cli(capsys, measured / "normal_only.csv", "--scenario", "A", "--alpha", ALPHA,
                                "--free", "tau0", "dgamma1", "--time-origin", "path_start", "--out", tmp_path / "out")
     assert status == 1, err
@@ -89,7 +88,7 @@ def test_bad_input_is_one_line_exit_2_and_writes_nothing(capsys, measured, tmp_p
     assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
 
 
-def test_a_study_fits_its_measurement(capsys, paper, measured, tmp_path):
+def test_a_study_fits_its_measurement(capsys, paper, measured, tmp_path, without_drawing):
     study = tmp_path / "study.toml"
     study.write_text(f"""
 [parameters]

@@ -17,7 +17,7 @@ def run(capsys, *argv):
     return status, captured.out, captured.err
 
 
-def test_simulate_and_validate_take_a_friction_law(capsys, tmp_path):
+def test_simulate_and_validate_take_a_friction_law(capsys, tmp_path, without_drawing):
     """A discrete run with Coulomb's law passes validate against the continuum of the same law and fails against
     the paper's law."""
     status, _, _ = run(capsys, "simulate", "--scenario", "A", "--alpha", "70", "--dx", "2e-6", "--friction", "coulomb",

@@ -54,7 +54,7 @@ def test_simulate_writes_a_run_on_the_layer_that_names_it(capsys, tmp_path):
     np.testing.assert_array_equal(ds["normal_force"].values, direct["normal_force"].values)
 
 
-def test_simulate_runs_the_flat_punch_on_a_layer_in_the_discrete_method(capsys, tmp_path):
+def test_simulate_runs_the_flat_punch_on_a_layer_in_the_discrete_method(capsys, tmp_path, without_drawing):
     """The command line's flat punch on a layer: the discrete run of simulate, bit for bit, stamped with both."""
     status, _, err = run(capsys, "simulate", "--scenario", "A", "--alpha", "90", "--d_max", "1e-5", "--dx", "5e-5",
                          "--n-steps", "1000", "--h", "5e-3", "--flat-punch", "1e-3", "--out", str(tmp_path))
@@ -66,7 +66,7 @@ def test_simulate_runs_the_flat_punch_on_a_layer_in_the_discrete_method(capsys, 
     np.testing.assert_array_equal(ds["normal_force"].values, direct["normal_force"].values)
 
 
-def test_simulate_runs_the_flat_punch_on_a_layer_in_the_continuum(capsys, tmp_path):
+def test_simulate_runs_the_flat_punch_on_a_layer_in_the_continuum(capsys, tmp_path, without_drawing):
     """The command line's flat punch on a thin layer in the continuum (the face held, then receding): simulate's run,
     bit for bit."""
     status, _, err = run(capsys, "simulate", "--scenario", "A", "--alpha", "90", "--d_max", "1e-5", "--h", "2e-4",

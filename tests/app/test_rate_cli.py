@@ -60,7 +60,7 @@ def test_simulate_of_the_rate_law_is_the_apis_run_bit_for_bit(capsys, tmp_path, 
     assert me.Contact.from_attrs(written.attrs) == rate_contact()
 
 
-def test_a_study_of_the_rate_law_writes_the_apis_run(tmp_path):
+def test_a_study_of_the_rate_law_writes_the_apis_run(tmp_path, without_drawing):
     study = load_study(study_file(tmp_path, '[simulation]\nscenario = "A"\nalpha = [20]\nmethod = "continuum"\n'
                                   + RATE_TABLE))
     run_study(study, progress=lambda line: None)

@@ -59,7 +59,7 @@ def test_run_writes_what_the_study_asks_for(tmp_path, capsys):
     np.testing.assert_array_equal(ds["tangential_force"].values, direct["tangential_force"].values)
 
 
-def test_custom_path_and_discrete_options(tmp_path):
+def test_custom_path_and_discrete_options(tmp_path, without_drawing):
     path = write(tmp_path, """
 [simulation]
 method = "discrete"
@@ -171,7 +171,7 @@ def test_without_a_preset_all_eight_parameters_are_required(tmp_path):
     assert study.provenance == {}
 
 
-def test_results_say_which_parameters_came_from_the_preset(tmp_path, capsys):
+def test_results_say_which_parameters_came_from_the_preset(tmp_path, capsys, without_drawing):
     assert main(["run", str(write(tmp_path, STUDY))]) == 0
     for name in ("demo_simulation.nc", "demo_phase_diagram_A.nc"):
         ds = me.open_result(tmp_path / "out" / name)
@@ -228,7 +228,7 @@ def test_bad_validate_fit_sweep_and_limits_tables_are_named(capsys, tmp_path, te
     assert fragment in capsys.readouterr().err
 
 
-def test_a_profile_table_gives_every_table_its_indenter(tmp_path):
+def test_a_profile_table_gives_every_table_its_indenter(tmp_path, without_drawing):
     """[profile] c, n: the simulation and the phase diagram are the power law's, as through the Python API."""
     path = write(tmp_path, STUDY.replace("[output]", "[profile]\nc = 2000.0\nn = 3.0\n\n[output]"))
     assert main(["run", str(path)]) == 0
@@ -244,7 +244,7 @@ def test_a_profile_table_gives_every_table_its_indenter(tmp_path):
     assert float(diagram["critical_angle_jkr"]) == me.power_law.critical_angle_A(profile, params)
 
 
-def test_a_friction_table_gives_every_table_its_law(tmp_path):
+def test_a_friction_table_gives_every_table_its_law(tmp_path, without_drawing):
     """[friction] law, mu: the simulation and both phase diagrams are the law's, as through the Python API (the
     study's parameters without adhesion, which Coulomb's part needs in the continuum)."""
     text = STUDY.replace("tau0 = 30e3\n", "tau0 = 30e3\ndgamma0 = 0.0\ndgamma1 = 0.0\n").replace(
@@ -262,7 +262,7 @@ def test_a_friction_table_gives_every_table_its_law(tmp_path):
     assert float(diagram["critical_angle_hertz"]) == me.mindlin.critical_angle_A(friction, params)
 
 
-def test_a_profile_table_may_name_a_tabulated_tip(tmp_path):
+def test_a_profile_table_may_name_a_tabulated_tip(tmp_path, without_drawing):
     """[profile] table = "tip.csv" (relative to the study file): the simulation is the table's."""
     r = np.linspace(0.0, 1e-2, 41)  # (the study's R = 100 mm: g reaches 1 mm of depth at 10 mm)
     (tmp_path / "tip.csv").write_text("r,f\n" + "".join(f"{float(a)!r},{float(a * a / 0.2)!r}\n" for a in r))

@@ -109,7 +109,7 @@ def test_console_script_passes_a_right_run_and_writes_its_files(runs, tmp_path):
     assert (out / "run.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
-def test_a_wrong_run_exits_1_and_says_which_quantity(capsys, runs, tmp_path):
+def test_a_wrong_run_exits_1_and_says_which_quantity(capsys, runs, tmp_path, without_drawing):
     status, out, err = validate_cli(capsys, runs / "run.csv", runs / "wrong.csv", "--scenario", "A", "--alpha", "20",
                                     "--out", tmp_path)
     assert status == 1, err
@@ -124,7 +124,7 @@ def test_a_wrong_run_exits_1_and_says_which_quantity(capsys, runs, tmp_path):
     assert me.open_result(tmp_path / "run.nc").attrs["verdict"] == "pass"
 
 
-def test_a_tolerance_of_your_own_decides(capsys, runs, tmp_path):
+def test_a_tolerance_of_your_own_decides(capsys, runs, tmp_path, without_drawing):
     """F_x × 1.1 is about 0.1 of the range off: it passes a tolerance of 0.2."""
     status, out, _ = validate_cli(capsys, runs / "wrong.csv", "--scenario", "A", "--alpha", "20", "--out", tmp_path,
                                   "--tolerance", "0.2")
@@ -132,7 +132,7 @@ def test_a_tolerance_of_your_own_decides(capsys, runs, tmp_path):
     assert me.open_result(tmp_path / "wrong.nc").attrs["tolerance"] == 0.2
 
 
-def test_your_names_units_and_time_origin(capsys, paper, runs, tmp_path):
+def test_your_names_units_and_time_origin(capsys, paper, runs, tmp_path, without_drawing):
     """The same run in ms, mN, mm² under other names, its time from the path's start: the same errors."""
     run = discrete_run(paper)
     start = me.Path.scenario_A(ALPHA, paper).first_contact_time()
@@ -151,7 +151,7 @@ def test_your_names_units_and_time_origin(capsys, paper, runs, tmp_path):
     assert mine.attrs["time_origin"] == "path_start"
 
 
-def test_a_path_file_and_a_parameters_file(capsys, paper, runs, tmp_path):
+def test_a_path_file_and_a_parameters_file(capsys, paper, runs, tmp_path, without_drawing):
     """--path: a TOML [path] table (here scenario A's waypoints) gives the scenario's report; --params: a TOML
     [parameters] table (a study file's) gives its parameters, here another τ0 that the run does not follow."""
     path = me.Path.scenario_A(ALPHA, paper)
@@ -258,7 +258,7 @@ def test_bad_input_is_one_line_exit_2_and_writes_nothing(capsys, runs, tmp_path,
     assert drawn == []
 
 
-def test_a_netcdf_run_is_read_and_never_overwritten(capsys, paper, tmp_path):
+def test_a_netcdf_run_is_read_and_never_overwritten(capsys, paper, tmp_path, without_drawing):
     """A netCDF run (the package's own, with its units and its sliding fraction: judged at its slip onset's tolerance,
     spring_tolerance) validates; --out beside it would overwrite it: refused."""
     me.write_netcdf(discrete_run(paper), tmp_path / "run.nc")
@@ -295,7 +295,7 @@ def copy_runs(runs: Path, folder: Path) -> None:
         shutil.copy(runs / name, folder / "runs" / name)
 
 
-def test_a_study_validates_its_runs(capsys, runs, tmp_path, without_run_figures):
+def test_a_study_validates_its_runs(capsys, runs, tmp_path, without_drawing, without_run_figures):
     copy_runs(runs, tmp_path)
     (tmp_path / "study.toml").write_text(STUDY)
     assert main(["run", str(tmp_path / "study.toml")]) == 1  # wrong.csv fails
@@ -310,7 +310,7 @@ def test_a_study_validates_its_runs(capsys, runs, tmp_path, without_run_figures)
     assert outcomes.verdicts == {"runs/run.csv": "pass", "runs/wrong.csv": "fail"}
 
 
-def test_a_study_takes_the_angle_and_options_from_its_tables(capsys, paper, runs, tmp_path):
+def test_a_study_takes_the_angle_and_options_from_its_tables(capsys, paper, runs, tmp_path, without_drawing):
     """Scenario and angle from [simulation] (simulated too), your names and units in [validate]."""
     run = discrete_run(paper)
     (tmp_path / "runs").mkdir()

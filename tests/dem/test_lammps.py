@@ -217,7 +217,7 @@ def test_the_cli_refuses_a_tangential_model_without_mu(tmp_path, capsys):
 
 
 @needs_lammps
-def test_a_study_table_runs_the_same_check(tmp_path):
+def test_a_study_table_runs_the_same_check(tmp_path, without_drawing):
     study = tmp_path / "study.toml"
     study.write_text('[parameters]\npreset = "paper-R30"\ndgamma0 = 0.15\ndgamma1 = 0.15\n[lammps_check]\n'
                      'normal = "jkr"\ntangential = "mindlin"\nmu = 0.5\nscenario = "A"\nalpha = 20\nsteps = 2000\n'
