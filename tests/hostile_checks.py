@@ -5,6 +5,7 @@ exit status 2; and the cases more than one round builds (a depth that reaches a 
 from __future__ import annotations
 
 import math
+import tracemalloc
 import warnings
 
 import pytest
@@ -55,3 +56,24 @@ def depth_reaching(contact, target: float, low: float, high: float) -> float:
     found = float(me.layer_normal_curve(contact, [low])["contact_radius"].sel(branch="dgamma0")[0])
     assert (1.0 - RADIUS_SHARE) * target <= found < target, (low, found, target)
     return low
+
+
+def peak_of(call) -> int:
+    """The peak of what ``call`` allocates (bytes, tracemalloc), whatever it raises (checked by the caller)."""
+    tracemalloc.start()
+    try:
+        call()
+    finally:
+        _, peak = tracemalloc.get_traced_memory()
+        tracemalloc.stop()
+    return peak
+
+
+def refused_for_resources(call) -> int:
+    """The peak of ``call`` refused for its resources (``ResourceLimitError``), traced the second time (the first
+    imports what it uses)."""
+    def refused():
+        with pytest.raises(me.ResourceLimitError):
+            call()
+    refused()
+    return peak_of(refused)

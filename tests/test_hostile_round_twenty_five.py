@@ -9,13 +9,12 @@ methods' defaults for time) are listed with their outcomes in the issue's closin
 
 from __future__ import annotations
 
-import tracemalloc
 
 import numpy as np
 import pytest
 
 import mdr_events as me
-from hostile_checks import one_line_naming
+from hostile_checks import one_line_naming, peak_of, refused_for_resources
 from mdr_events.theory import analytic
 
 #: Angles beyond what the half-space's slip onsets may take within the default limits' memory (2 GiB at 48 bytes an
@@ -24,26 +23,6 @@ BEYOND_DEFAULT_ANGLES = 10**8
 #: What counting them may take (tracemalloc's peak): far below one copy of the angles (800 MB); the message and the
 #: limits' check take a few kB.
 COUNTED_PEAK_BYTES = 2**20
-
-
-def _peak_of(call) -> int:
-    """The peak of what ``call`` allocates (bytes, tracemalloc), whatever it raises (checked by the caller)."""
-    tracemalloc.start()
-    try:
-        call()
-    finally:
-        _, peak = tracemalloc.get_traced_memory()
-        tracemalloc.stop()
-    return peak
-
-
-def _refused_for_resources(call) -> int:
-    """The peak of ``call`` refused for its resources, traced the second time (the first imports what it uses)."""
-    def refused():
-        with pytest.raises(me.ResourceLimitError):
-            call()
-    refused()
-    return _peak_of(refused)
 
 
 # --- X1: the half-space's slip onsets counted nothing: d_crit of 1e8 angles (a view of one value) took 2.4 GB
@@ -62,7 +41,7 @@ def _angles_view():
     lambda: analytic.d_crit_curves(_angles_view(), me.Contact.paper(), "A"),
 ], ids=["d_crit A", "d_crit B adhesive", "d_crit_rows", "d_crit_curves"])
 def test_the_half_space_s_slip_onsets_count_their_angles_first(call):
-    assert _refused_for_resources(call) < COUNTED_PEAK_BYTES
+    assert refused_for_resources(call) < COUNTED_PEAK_BYTES
     message = one_line_naming(call, "the slip onset at 100000000 angles", errors=me.ResourceLimitError)
     assert "limits=Limits(memory=...)" in message, message
 
@@ -77,9 +56,9 @@ def test_the_slip_onset_s_memory_per_angle_bounds_what_it_takes():
         for branch in branches:
             for adhesion in (False, True):
                 me.d_crit(angles[:10], contact, scenario, adhesion, branch)
-                peak = _peak_of(lambda: me.d_crit(angles, contact, scenario, adhesion, branch))
+                peak = peak_of(lambda: me.d_crit(angles, contact, scenario, adhesion, branch))
                 assert peak <= analytic.D_CRIT_BYTES_PER_ANGLE * angles.size, (scenario, branch, adhesion, peak)
-        peak = _peak_of(lambda: analytic.d_crit_rows(angles, contact, scenario))
+        peak = peak_of(lambda: analytic.d_crit_rows(angles, contact, scenario))
         assert peak <= analytic.D_CRIT_ROWS_BYTES_PER_ANGLE * angles.size, (scenario, peak)
 
 

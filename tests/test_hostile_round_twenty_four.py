@@ -17,13 +17,12 @@ import os
 import re
 import sys
 import time
-import tracemalloc
 
 import numpy as np
 import pytest
 
 import mdr_events as me
-from hostile_checks import cli_one_line, depth_reaching, one_line_naming
+from hostile_checks import cli_one_line, depth_reaching, one_line_naming, peak_of, refused_for_resources
 from mdr_events.app.cli import main
 from mdr_events.app.cli._stdout import NamedOutput
 from mdr_events.models import motion
@@ -40,26 +39,6 @@ VIEW_VALUES = 10**6
 #: What counting them may take (tracemalloc's peak): far below one copy (8 MB); the message and the limits' check
 #: take a few kB.
 COUNTED_PEAK_BYTES = 2**20
-
-
-def _peak_of(call) -> int:
-    """The peak of what ``call`` allocates (bytes, tracemalloc), whatever it raises (checked by the caller)."""
-    tracemalloc.start()
-    try:
-        call()
-    finally:
-        _, peak = tracemalloc.get_traced_memory()
-        tracemalloc.stop()
-    return peak
-
-
-def _refused_for_resources(call) -> int:
-    """The peak of ``call`` refused for its resources, traced the second time (the first imports what it uses)."""
-    def refused():
-        with pytest.raises(me.ResourceLimitError):
-            call()
-    refused()
-    return _peak_of(refused)
 
 
 def _finite_in_contact(values: np.ndarray) -> bool:
@@ -88,7 +67,7 @@ def _view_times():
 
 def test_a_continuum_is_made_without_reading_its_times():
     me.Continuum()  # (its modules imported before the trace)
-    assert _peak_of(lambda: me.Continuum(t=_view_times())) < COUNTED_PEAK_BYTES
+    assert peak_of(lambda: me.Continuum(t=_view_times())) < COUNTED_PEAK_BYTES
 
 
 def test_a_continuum_keeps_a_checked_copy_of_times_within_the_default_limits():
@@ -111,7 +90,7 @@ def test_a_continuum_keeps_a_checked_copy_of_times_within_the_default_limits():
     lambda: run_continuum(PAPER, me.Scenario("A", 20.0).cases(PAPER).paths, _view_times(), limits=SMALL),
 ], ids=["third argument", "method=", "in alpha's place", "run_continuum"])
 def test_a_run_counts_the_continuum_s_times_before_reading_them(call):
-    assert _refused_for_resources(call) < COUNTED_PEAK_BYTES
+    assert refused_for_resources(call) < COUNTED_PEAK_BYTES
 
 
 @pytest.mark.parametrize("times, error", [
@@ -153,7 +132,7 @@ def test_a_tabulated_profile_counts_its_columns_before_reading_them():
 
     def refused():
         one_line_naming(lambda: me.TabulatedProfile(column, column), "lengths 1000000 and 1000000")
-    assert _peak_of(refused) < COUNTED_PEAK_BYTES
+    assert peak_of(refused) < COUNTED_PEAK_BYTES
 
 
 # --- W3: the discrete model at the layer tables' edge (a flat punch's face at a/h = 64 exactly) was told "a smaller
@@ -215,7 +194,7 @@ BEYOND_DEFAULT_ANGLES = 10**7
 
 def test_a_scenario_counts_its_angles_before_reading_them():
     angles = np.broadcast_to(20.0, (BEYOND_DEFAULT_ANGLES,))
-    assert _refused_for_resources(lambda: me.Scenario("A", angles)) < COUNTED_PEAK_BYTES
+    assert refused_for_resources(lambda: me.Scenario("A", angles)) < COUNTED_PEAK_BYTES
     message = one_line_naming(lambda: me.Scenario("A", angles), "alpha of 10000000 angles", errors=me.ResourceLimitError)
     assert "at most 5e+06" in message and "limits=Limits(samples=...)" in message, message
 
@@ -322,7 +301,7 @@ def test_a_rate_fit_counts_its_samples_before_reading_them():
     law = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-6, 0.5)
     samples = np.broadcast_to(1.0, (VIEW_VALUES,))
     measured = me.RateMeasurement(me.Path([(0.0, -1e-5), (0.0, 1e-4), (1e-4, -1e-5)], 1e-6), samples, samples, 0.01)
-    assert _refused_for_resources(lambda: me.fit_rate_adhesion([measured], PAPER, law,
+    assert refused_for_resources(lambda: me.fit_rate_adhesion([measured], PAPER, law,
                                                                limits=SMALL)) < COUNTED_PEAK_BYTES
 
 

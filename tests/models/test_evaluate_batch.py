@@ -138,6 +138,19 @@ def test_a_tables_grouped_sample_radii_are_each_groups_own(branch):
         np.testing.assert_array_equal(got, branch.sample_radii(depth))
 
 
+def test_a_subclass_of_a_tables_branch_does_not_inherit_element_by_element_radii():
+    """``elementwise_radii`` fails closed as ``quartic_samples`` and ``convex`` do: a branch type that does not declare
+    it in its own body (here a subclass of the table's) takes its radii group by group, never one call for all."""
+
+    class Derived(TabulatedBranch):
+        pass
+
+    class Declared(TabulatedBranch):
+        elementwise_radii = True
+
+    assert TabulatedBranch.elementwise_radii and not Derived.elementwise_radii and Declared.elementwise_radii
+
+
 @pytest.mark.parametrize("delta", [np.linspace(-0.47, 3.0, 1001), np.geomspace(1e-40, 1e3, 64),
                                    -np.geomspace(1e-40, 0.47, 64), np.array(0.2), np.array(-0.2), np.array([])])
 def test_the_quartics_hyperbolic_factor_is_each_forms_own(delta):

@@ -48,7 +48,14 @@ CASES = {
                                              {"friction": FrictionLaw("coulomb", mu=0.3)}),
     "thin layer, zigzag": lambda: (PAPER, me.Path(ZIGZAG, PAPER.v), {"layer": me.Layer(1e-3)}),
     "reciprocating": lambda: (PAPER, _reciprocating(), {}),
+    "flat punch, B 20°": lambda: (PAPER, me.Path.scenario_B(20.0, PAPER, profile=me.FlatPunch(2e-3)),
+                                  {"profile": me.FlatPunch(2e-3)}),
+    "n = 1.05, A 20°": lambda: (PAPER, me.Path.scenario_A(20.0, PAPER, profile=PowerLaw(0.5, 1.05)),
+                                {"profile": PowerLaw(0.5, 1.05)}),
+    "tau0+coulomb with adhesion, B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER),
+                                                  {"friction": FrictionLaw("tau0+coulomb", mu=0.3)}),
 }
+#: (The rate-dependent law's extrema are its own, ``rate_run``'s, not this scan's: it has no case here.)
 
 
 def _reciprocating():

@@ -70,15 +70,17 @@ class Branch:
     #: whether :meth:`radii` is element by element (each radius the one of a call on its depth alone, whatever else is
     #: in the array: a table's, :meth:`~mdr_events.theory.tabulated.TabulatedBranch.radii`), so that
     #: :meth:`grouped_sample_radii` calls it once for all groups; ``False`` where an iteration's last step depends on
-    #: the elements it runs for
+    #: the elements it runs for; ``False`` for every subclass unless its own body sets it (:meth:`__init_subclass__`)
     elementwise_radii = False
 
     def __init_subclass__(cls, **kwargs):
-        """A subclass's :attr:`quartic_samples` and :attr:`convex` are ``False`` unless its own body declares them
-        (fails closed: a new branch type never inherits the paraboloid's closed form, nor its convexity)."""
+        """A subclass's :attr:`quartic_samples`, :attr:`convex` and :attr:`elementwise_radii` are ``False`` unless its
+        own body declares them (fails closed: a new branch type never inherits the paraboloid's closed form, nor its
+        convexity, nor a table's element-by-element radii)."""
         super().__init_subclass__(**kwargs)
         cls.quartic_samples = bool(cls.__dict__.get("quartic_samples", False))
         cls.convex = bool(cls.__dict__.get("convex", False))
+        cls.elementwise_radii = bool(cls.__dict__.get("elementwise_radii", False))
     #: the NumPy form of ``∫_0^a d dξ`` (:meth:`integrals`; ``None``: a branch without one, read point by point)
     _integrals = None
 

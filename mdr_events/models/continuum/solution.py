@@ -496,8 +496,9 @@ def _sliding_fractions(model: ContinuumModel, spans: list[Span], x: np.ndarray, 
                        where: list[slice]) -> np.ndarray:
     """:func:`_sliding_fraction` of spans in contact at their samples (each span's ``where``): the spans whose anchor
     maps share one attachment branch together (:func:`~.span_sliding.span_sliding_lengths`), any other alone."""
-    together = [k for k, span in enumerate(spans) if takes_batch(span) and span.anchors.attach is
-                spans[0].anchors.attach]
+    batched = [k for k, span in enumerate(spans) if takes_batch(span)]
+    # (the attachment branch of the first span that takes the batch: a span before it may have no anchor map at all)
+    together = [k for k in batched if spans[k].anchors.attach is spans[batched[0]].anchors.attach]
     zones = np.empty(a.shape)
     for k in sorted(set(range(len(spans))) - set(together)):
         zones[where[k]] = _sliding_length(model, spans[k], x[where[k]], d[where[k]], a[where[k]])

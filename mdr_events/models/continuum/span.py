@@ -112,8 +112,10 @@ class Span:
     grading: Grading | None = None
     # (the layouts of a split span, :mod:`.split_zones`; ``None``: none. Documented in the class's docstring alone)
     zones: object = None
-    # (the solve's radius roots by depth. Documented in the class's docstring alone)
-    roots: dict[tuple[float, float, float], float] = field(default_factory=dict)
+    # (the solve's radius roots by depth, a memo of the span's own branch — ``model.branch(regime)``, the one its
+    # integrator and the extrema's scan both read — so not part of what the span is: not compared. Documented in the
+    # class's docstring alone)
+    roots: dict[tuple[float, float, float], float] = field(default_factory=dict, compare=False)
 
 
 def root_key(depth: float, rtol: float) -> tuple[float, float, float]:
