@@ -240,17 +240,17 @@ class PlaySprings:
             highs += [b, b]
         count = len(lows)
         sign = np.repeat(np.tile([1.0, -1.0], count // 2), xi.size)
-        xi_all, g_all, ratio_all = (np.tile(v, count) for v in (xi, g, ratio))
+        g_all, ratio_all = (np.tile(v, count) for v in (g, ratio))
 
-        tables = self._convex_tables()
-        block = xi.size  # (a table per interval and edge, in the order of ``lows``)
+        tables = self._convex_tables()[::2]
+        block = 2 * xi.size  # (a table per interval, both edges' rows in one call, in the order of ``lows``)
 
         def shift(s):
             return np.concatenate([table(s[k * block:(k + 1) * block]) for k, table in enumerate(tables)])
 
-        def edge(s):
-            lower, upper = self._window(xi_all, g_all, ratio_all, s, shift)
-            return np.where(sign > 0, lower, -upper)
+        def edge(s):  # (``L``, or ``−U = −x − c``: the cap once, not both edges then one dropped)
+            cap = shift(s) + ratio_all * np.maximum(self._d(s) - g_all, 0.0)
+            return sign * self._x(s) - cap
 
         return np.split(_golden(edge, np.concatenate(lows), np.concatenate(highs)), count)
 
