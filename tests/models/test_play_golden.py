@@ -53,3 +53,39 @@ def test_empty_intervals_give_nan_on_both_routes():
     for route in (_golden, _golden_both):
         found = route(lambda t: -(t - 0.25) ** 2, low, high)
         assert abs(found[0] - 0.25) < 1e-8 and np.all(np.isnan(found[1:]))
+
+
+@pytest.mark.parametrize("share", [0.5, 0.999, 1.5], ids=["loading", "end of loading", "coming back"])
+def test_the_edges_extremes_taken_at_the_stretch_start_are_where_the_golden_sections_end(share, monkeypatch):
+    """X5: the rows whose edge (concave on the stretch) does not rise at its start skip their golden sections and take
+    the start itself; a section would end within its final bracket of it (``BRACKET_SHARE`` of the interval). Every
+    row's time is the sections' within that bracket (nan where theirs is), on :func:`convex_play`, whose edges rise,
+    then fall inside the loading segment: both kinds of row."""
+    from test_play_springs import convex_play
+
+    from mdr_events.models.continuum.play_springs import PlaySprings
+
+    play, path = convex_play()
+    t = float(path.corner_times[1] * share if share < 1.0 else path.corner_times[1] + (share - 1.0) * (
+        path.corner_times[2] - path.corner_times[1]))
+    xi = play.radius(t) * np.linspace(0.01, 0.99, 50)
+    g, ratio = play.line.profile(xi), play.line.ratio(xi)
+    start, _ = play.history.attach(xi, t)
+    taken = []
+    shortcut = PlaySprings._extreme_at_low
+
+    def recorded(self, *args):
+        taken.append(shortcut(self, *args))
+        return taken[-1]
+
+    monkeypatch.setattr(PlaySprings, "_extreme_at_low", recorded)
+    skipped = np.concatenate(play._own_times(xi, g, ratio, start, t))
+    monkeypatch.setattr(PlaySprings, "_extreme_at_low", lambda self, low, *args: np.zeros(low.shape, bool))
+    sections = np.concatenate(play._own_times(xi, g, ratio, start, t))
+    assert np.count_nonzero(taken[0]) > 0, "no row skipped its section: the test does not reach the shortcut"
+    assert np.count_nonzero(~taken[0] & np.isfinite(sections)) > 0, "no row kept its section"
+    np.testing.assert_array_equal(np.isnan(skipped), np.isnan(sections))
+    width = float(np.max(np.diff(play.chain.convex, axis=1)))
+    tolerance = (BRACKET_SHARE + ROUND_OFF_SHARE) * width + ROUND_OFF_SHARE * t
+    live = np.isfinite(sections)
+    assert np.max(np.abs(skipped[live] - sections[live])) <= tolerance
