@@ -306,7 +306,7 @@ class PlaySprings:
             crossing += [True] * len(crossings)
         own = [np.where(column < t, column, np.nan) for column in own]
         times += own
-        shifts += self._own_shifts(own, n)
+        shifts += self._own_shifts(own, n, start)
         if not times:
             return np.empty((n, 0)), np.empty((n, 0)), np.empty(0, bool)
         return np.stack(times, axis=1), np.stack(shifts, axis=1), np.array(crossing)
@@ -357,17 +357,19 @@ class PlaySprings:
                                     for time in self.chain.times.tolist() for radius in jumps.get(time, (None,))]
         return self._shared_columns
 
-    def _own_shifts(self, columns: list[np.ndarray], n: int) -> list[np.ndarray]:
-        """``ū`` at each spring's own clamp times (0 where ``nan``), the radii of all read in one call of the
-        history."""
+    def _own_shifts(self, columns: list[np.ndarray], n: int, start=None) -> list[np.ndarray]:
+        """``ū`` at each spring's own clamp times (0 where ``nan``, or at or before its attachment ``start`` if given:
+        no clamp there), the radii of the distinct times read in one call of the history (the sections' times ended at
+        a stretch's start recur across springs)."""
         out = [np.zeros(n) for _ in columns]
         if not columns or not self.line.shifts:
             return out
         stacked = np.stack(columns)
-        live = np.isfinite(stacked)
+        live = np.isfinite(stacked) if start is None else np.isfinite(stacked) & (stacked > start)
         if np.any(live):
             shift = np.zeros(stacked.shape)
-            shift[live] = self.line.shift(self.history.radii(stacked[live]))
+            unique, inverse = np.unique(stacked[live], return_inverse=True)
+            shift[live] = self.line.shift(self.history.radii(unique))[inverse]
             out = list(shift)
         return out
 
