@@ -154,6 +154,8 @@ class PlaySprings:
         self._own_columns = bool(self.chain.convex.size)
         #: :meth:`_convex_tables`, made at the first golden section
         self._tables: list | None = None
+        #: the derivatives of the tables' splines (``None`` where read exactly), made at the first golden section
+        self._slopes: list | None = None
         self._shared_columns: list | None = None
         #: the path's largest ``|x|`` (m): the scale of the anchors' round-off
         self._x_scale = float(np.max(np.abs(self._corner_x)))
@@ -239,20 +241,48 @@ class PlaySprings:
             lows += [a, a]
             highs += [b, b]
         count = len(lows)
+        low, high = np.concatenate(lows), np.concatenate(highs)
         sign = np.repeat(np.tile([1.0, -1.0], count // 2), xi.size)
-        xi_all, g_all, ratio_all = (np.tile(v, count) for v in (xi, g, ratio))
+        g_all, ratio_all = (np.tile(v, count) for v in (g, ratio))
+        table_of = np.repeat(np.arange(count // 2), 2 * xi.size)  # (a table per interval, both edges' rows)
+        found = np.full(low.shape, np.nan)
+        at_low = self._extreme_at_low(low, high, sign, g_all, ratio_all, table_of)
+        found[at_low] = low[at_low]
+        rows = np.flatnonzero((high > low) & ~at_low)  # (the others' sections: empty, or ended at ``low``)
+        if rows.size:
+            tables, table_of = self._convex_tables()[::2], table_of[rows]
+            cuts = np.searchsorted(table_of, np.arange(1, len(tables)))
+            sign, g_all, ratio_all = sign[rows], g_all[rows], ratio_all[rows]
 
-        tables = self._convex_tables()
-        block = xi.size  # (a table per interval and edge, in the order of ``lows``)
+            def edge(s):  # (``L``, or ``−U = −x − c``: the cap once, not both edges then one dropped)
+                shift = np.concatenate([table(part) for table, part in zip(tables, np.split(s, cuts)) if part.size])
+                cap = shift + ratio_all * np.maximum(self._d(s) - g_all, 0.0)
+                return sign * self._x(s) - cap
 
-        def shift(s):
-            return np.concatenate([table(s[k * block:(k + 1) * block]) for k, table in enumerate(tables)])
+            found[rows] = _golden(edge, low[rows], high[rows])
+        return np.split(found, count)
 
-        def edge(s):
-            lower, upper = self._window(xi_all, g_all, ratio_all, s, shift)
-            return np.where(sign > 0, lower, -upper)
-
-        return np.split(_golden(edge, np.concatenate(lows), np.concatenate(highs)), count)
+    def _extreme_at_low(self, low, high, sign, g, ratio, table_of) -> np.ndarray:
+        """Which rows of :meth:`_own_times` have their edge's extreme at ``low`` (no golden section needed): the edge
+        (``L``, or ``−U``) concave on the stretch (``ū(a(t))`` convex, ``x`` and ``d`` linear: no corner inside
+        ``(low, high)``) and not rising at ``low`` (its right derivative ``±x' − ū' − ratio d' [d > g]`` at most 0;
+        ``ū'`` the spline's, rows read exactly never)."""
+        if self._slopes is None:
+            self._slopes = [getattr(table, "derivative", lambda: None)() for table in self._convex_tables()[::2]]
+        slope = np.full(low.shape, np.nan)
+        for k, derivative in enumerate(self._slopes):
+            if derivative is not None:
+                mine = table_of == k
+                slope[mine] = derivative(low[mine])
+        last = self._corner_t.size - 2
+        segment = np.clip(np.searchsorted(self._corner_t, low, side="right") - 1, 0, last)
+        straight = np.clip(np.searchsorted(self._corner_t, high, side="left") - 1, 0, last) == segment
+        span = self._corner_t[segment + 1] - self._corner_t[segment]
+        with np.errstate(divide="ignore", invalid="ignore"):  # (a segment of no duration: nan, its rows' sections)
+            vx, vd = ((c[segment + 1] - c[segment]) / span for c in (self._corner_x, self._corner_d))
+        pressed = self._d(low) - g
+        slope = sign * vx - slope - ratio * vd * ((pressed > 0.0) | ((pressed == 0.0) & (vd > 0.0)))
+        return (high > low) & straight & (slope <= 0.0)
 
     def _columns(self, xi, g, ratio, start, t) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The clamp times of each spring before ``t`` (one time, or one per spring; a column each, ``nan`` where
@@ -276,7 +306,7 @@ class PlaySprings:
             crossing += [True] * len(crossings)
         own = [np.where(column < t, column, np.nan) for column in own]
         times += own
-        shifts += self._own_shifts(own, n)
+        shifts += self._own_shifts(own, n, start)
         if not times:
             return np.empty((n, 0)), np.empty((n, 0)), np.empty(0, bool)
         return np.stack(times, axis=1), np.stack(shifts, axis=1), np.array(crossing)
@@ -327,17 +357,19 @@ class PlaySprings:
                                     for time in self.chain.times.tolist() for radius in jumps.get(time, (None,))]
         return self._shared_columns
 
-    def _own_shifts(self, columns: list[np.ndarray], n: int) -> list[np.ndarray]:
-        """``ū`` at each spring's own clamp times (0 where ``nan``), the radii of all read in one call of the
-        history."""
+    def _own_shifts(self, columns: list[np.ndarray], n: int, start=None) -> list[np.ndarray]:
+        """``ū`` at each spring's own clamp times (0 where ``nan``, or at or before its attachment ``start`` if given:
+        no clamp there), the radii of the distinct times read in one call of the history (the sections' times ended at
+        a stretch's start recur across springs)."""
         out = [np.zeros(n) for _ in columns]
         if not columns or not self.line.shifts:
             return out
         stacked = np.stack(columns)
-        live = np.isfinite(stacked)
+        live = np.isfinite(stacked) if start is None else np.isfinite(stacked) & (stacked > start)
         if np.any(live):
             shift = np.zeros(stacked.shape)
-            shift[live] = self.line.shift(self.history.radii(stacked[live]))
+            unique, inverse = np.unique(stacked[live], return_inverse=True)
+            shift[live] = self.line.shift(self.history.radii(unique))[inverse]
             out = list(shift)
         return out
 
