@@ -5,6 +5,8 @@ exit status 2; and the cases more than one round builds (a depth that reaches a 
 from __future__ import annotations
 
 import math
+import signal
+import time
 import tracemalloc
 import warnings
 
@@ -77,3 +79,24 @@ def refused_for_resources(call) -> int:
             call()
     refused()
     return peak_of(refused)
+
+
+class OverBudget(Exception):
+    """A call took more CPU time than its budget (:func:`cpu_limited`)."""
+
+
+def cpu_limited(call, budget: float | None):
+    """``call()``'s result and the CPU time it took (s), stopped with :class:`OverBudget` past ``budget`` s of CPU
+    (``None``: no budget): a run that takes minutes fails in its budget's time, not the suite's."""
+    def over(signum, frame):
+        raise OverBudget(f"over {budget} s of CPU")
+
+    previous = signal.signal(signal.SIGPROF, over)
+    signal.setitimer(signal.ITIMER_PROF, budget or 0.0)
+    start = time.process_time()
+    try:
+        result = call()
+    finally:
+        signal.setitimer(signal.ITIMER_PROF, 0.0)
+        signal.signal(signal.SIGPROF, previous)
+    return result, time.process_time() - start

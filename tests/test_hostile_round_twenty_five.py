@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from hostile_checks import one_line_naming, peak_of, refused_for_resources
+from hostile_checks import cpu_limited, one_line_naming, peak_of, refused_for_resources
 from mdr_events.theory import analytic
 
 #: Angles beyond what the half-space's slip onsets may take within the default limits' memory (2 GiB at 48 bytes an
@@ -195,27 +195,9 @@ def test_cli_a_value_beyond_the_doubles_in_si_is_one_line(capsys, tmp_path):
 DEFAULT_RUN_CPU_RATIO = 10.0
 
 
-class _OverBudget(Exception):
-    """The run took more CPU time than allowed."""
-
-
 def _run_within(contact, budget: float | None) -> float:
     """The CPU time of scenario A at 45° in the continuum at its defaults, stopped past ``budget`` s of CPU."""
-    import signal
-    import time
-
-    def over(signum, frame):
-        raise _OverBudget(f"over {budget} s of CPU")
-
-    previous = signal.signal(signal.SIGPROF, over)
-    signal.setitimer(signal.ITIMER_PROF, budget or 0.0)
-    start = time.process_time()
-    try:
-        me.simulate(contact, "A", [45.0], "continuum")
-    finally:
-        signal.setitimer(signal.ITIMER_PROF, 0.0)
-        signal.signal(signal.SIGPROF, previous)
-    return time.process_time() - start
+    return cpu_limited(lambda: me.simulate(contact, "A", [45.0], "continuum"), budget)[1]
 
 
 @pytest.mark.slow  # (the paraboloid's ~3 s twice, then up to DEFAULT_RUN_CPU_RATIO times its second run)

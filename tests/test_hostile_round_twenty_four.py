@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from hostile_checks import cli_one_line, depth_reaching, one_line_naming, peak_of, refused_for_resources
+from hostile_checks import cli_one_line, cpu_limited, depth_reaching, one_line_naming, peak_of, refused_for_resources
 from mdr_events.app.cli import main
 from mdr_events.app.cli._stdout import NamedOutput
 from mdr_events.models import motion
@@ -321,31 +321,15 @@ CONE_RUN_CPU_RATIO = 10.0
 CONE_RUN_SAMPLES = 30
 
 
-class _OverBudget(Exception):
-    """The run took more CPU time than allowed."""
-
-
 def _cpu_limited_run(indenter, budget: float | None):
+    """Scenario A at 45° on the 2 mm layer under tau0+coulomb (:data:`CONE_RUN_SAMPLES`), stopped past ``budget`` s
+    of CPU: its dataset and the CPU time it took."""
     import dataclasses
-    import signal
-    import time
 
     kw = {} if indenter is None else {"indenter": indenter}
     contact = dataclasses.replace(me.Contact.paper(), friction=me.FrictionLaw("tau0+coulomb", tau0=PAPER.tau0, mu=0.5),
                                   layer=me.Layer(2e-3), **kw)
-
-    def over(signum, frame):
-        raise _OverBudget(f"over {budget} s of CPU")
-
-    previous = signal.signal(signal.SIGPROF, over)
-    signal.setitimer(signal.ITIMER_PROF, budget or 0.0)
-    start = time.process_time()
-    try:
-        ds = me.simulate(contact, "A", [45.0], "continuum", samples=CONE_RUN_SAMPLES)
-    finally:
-        signal.setitimer(signal.ITIMER_PROF, 0.0)
-        signal.signal(signal.SIGPROF, previous)
-    return ds, time.process_time() - start
+    return cpu_limited(lambda: me.simulate(contact, "A", [45.0], "continuum", samples=CONE_RUN_SAMPLES), budget)
 
 
 @pytest.mark.slow  # (the paraboloid's ~1.5 s twice, then up to CONE_RUN_CPU_RATIO times its second run)

@@ -148,7 +148,8 @@ def test_a_refined_point_replaces_the_scans_beyond_the_tie_alone(share, refined,
     the top: the old rule, a tie of ``2 EXTREMUM_TIE`` of the value itself, took a point better by half the run's tie)."""
     run = solve_path(PAPER, me.Path.scenario_A(20.0, PAPER))
     scan = X.scan_spans(run)
-    best, _, first, size = X._scanned_extremes(scan, "normal_force", -1.0)
+    kept = scan.matrix("normal_force")  # (side 1: the minimum's, of -F_N)
+    best, first, size = np.array(kept.best[1]), np.array(kept.first[1]), kept.size
     holder = int(np.nanargmax(best))
     scanned_time = float(scan.times[holder][first[holder]])
     scanned = float(scan.values[holder]["normal_force"][first[holder]])

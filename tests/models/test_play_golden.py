@@ -6,13 +6,30 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from mdr_events.models.continuum.play_golden import GOLDEN_STEPS, _golden, _golden_both
+from mdr_events.models.continuum.play_golden import GOLDEN_STEPS, _golden
 
 #: The bracket left after the steps, as a share of the interval: 0.618^GOLDEN_STEPS (the final midpoint lies within
 #: half of it from the maximum, whichever route); twice it allows for either route's bracket about the true one, and
 #: 64 ulps of the interval's ends for the round-off of the bracket's ends (the points' recurrences differ).
 BRACKET_SHARE = (0.5 * (np.sqrt(5.0) - 1.0)) ** GOLDEN_STEPS
 ROUND_OFF_SHARE = 64 * np.finfo(float).eps
+
+
+def _golden_both(function, low: np.ndarray, high: np.ndarray) -> np.ndarray:
+    """``play_golden._golden`` with both inner points evaluated anew each step: the route before it, kept here to
+    compare the two."""
+    ratio = 0.5 * (np.sqrt(5.0) - 1.0)
+    empty = ~(high > low)
+    a, b = np.where(empty, 0.0, low), np.where(empty, 1.0, high)
+    c, e = b - ratio * (b - a), a + ratio * (b - a)
+    fc, fe = function(c), function(e)
+    for _ in range(GOLDEN_STEPS):
+        left = fc > fe
+        b = np.where(left, e, b)
+        a = np.where(left, a, c)
+        c, e = b - ratio * (b - a), a + ratio * (b - a)
+        fc, fe = function(c), function(e)
+    return np.where(empty, np.nan, 0.5 * (a + b))
 
 
 def _quartic_rows(seed: int, rows: int):

@@ -62,7 +62,8 @@ def _golden(function, low: np.ndarray, high: np.ndarray) -> np.ndarray:
     """The argmax of ``function`` (vectorised, one variable per row) on each ``[low, high]`` by golden sections
     (``nan`` where the interval is empty): :data:`GOLDEN_STEPS` steps, each one evaluation of ``function`` for every
     row (the inner point kept is the one evaluated before, its value reused: the interval's golden ratio makes it the
-    next step's other inner point; :func:`_golden_both` evaluates both anew each step, twice the evaluations)."""
+    next step's other inner point; the route before it evaluated both anew each step, twice the evaluations: kept
+    in tests/models/test_play_golden.py)."""
     ratio = 0.5 * (np.sqrt(5.0) - 1.0)
     empty = ~(high > low)
     a, b = np.where(empty, 0.0, low), np.where(empty, 1.0, high)
@@ -76,21 +77,4 @@ def _golden(function, low: np.ndarray, high: np.ndarray) -> np.ndarray:
         value = function(new)
         c, fc = np.where(left, new, kept), np.where(left, value, kept_value)
         e, fe = np.where(left, kept, new), np.where(left, kept_value, value)
-    return np.where(empty, np.nan, 0.5 * (a + b))
-
-
-def _golden_both(function, low: np.ndarray, high: np.ndarray) -> np.ndarray:
-    """:func:`_golden` with both inner points evaluated anew each step (the route before it, kept for a test
-    comparing the two)."""
-    ratio = 0.5 * (np.sqrt(5.0) - 1.0)
-    empty = ~(high > low)
-    a, b = np.where(empty, 0.0, low), np.where(empty, 1.0, high)
-    c, e = b - ratio * (b - a), a + ratio * (b - a)
-    fc, fe = function(c), function(e)
-    for _ in range(GOLDEN_STEPS):
-        left = fc > fe
-        b = np.where(left, e, b)
-        a = np.where(left, a, c)
-        c, e = b - ratio * (b - a), a + ratio * (b - a)
-        fc, fe = function(c), function(e)
     return np.where(empty, np.nan, 0.5 * (a + b))

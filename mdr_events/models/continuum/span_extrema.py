@@ -344,15 +344,6 @@ def _refined(solution: PathSolution, scan: ExtremumScan, index: int, quantity: s
     return time, value
 
 
-def _scanned_extremes(scan: ExtremumScan, quantity: str,
-                      sign: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
-    """Per span of ``scan``, of ``sign`` times ``quantity``: the best scanned value (``nan`` where none is finite), its
-    largest change between neighbouring scan points (0 for one point), the index of the earliest scan point within
-    :data:`EXTREMUM_TIE` of it; and the quantity's largest magnitude over the run (its :class:`ScanMatrix` as arrays)."""
-    kept, side = scan.matrix(quantity), 0 if sign > 0 else 1
-    return np.array(kept.best[side]), np.array(kept.reach), np.array(kept.first[side]), kept.size
-
-
 def _scan_matrices(scan: ExtremumScan, quantities: tuple[str, ...]) -> dict[str, ScanMatrix]:
     """The :class:`ScanMatrix` of each of ``quantities``, from their scans as one array (quantity, span, point; each
     span's row padded with ``nan``) and its negative (the minimum's, exact): each row's largest magnitude and largest
