@@ -450,18 +450,7 @@ def _fill_spans(solution: PathSolution, times: np.ndarray, spans_rows: list[tupl
     if not contact:
         return
     members = [spans[index] for index, _ in contact]
-    parts = [times[rows] for _, rows in contact]
-    lengths = [len(part) for part in parts]
-    t = solution.t_contact + (np.concatenate(parts) if len(parts) > 1 else parts[0])
-    segments = [span.segment for span in members]
-
-    def each(values: list[float]) -> np.ndarray:  # (a span's number over its samples)
-        return np.repeat(np.array(values, dtype=float), lengths)
-
-    elapsed = t - each([segment.t0 for segment in segments])
-    d = each([segment.ds for segment in segments]) + each([segment.vd for segment in segments]) * elapsed  # Segment.d
-    x = each([segment.xs for segment in segments]) + each([segment.vx for segment in segments]) * elapsed  # Segment.x
-    a = each([span.pinned_radius for span in members])
+    t, d, x, a, lengths = _kinematics(solution, members, [times[rows] for _, rows in contact])
     bounds = np.cumsum([0] + lengths)
     where = [slice(int(lower), int(upper)) for lower, upper in zip(bounds[:-1], bounds[1:])]
     for regime in (Regime.GROWING, Regime.SHRINKING):
@@ -477,6 +466,24 @@ def _fill_spans(solution: PathSolution, times: np.ndarray, spans_rows: list[tupl
     target = _rows_of(contact)
     for name, values in filled.items():
         out[name][target] = values
+
+
+def _kinematics(solution: PathSolution, members: list[Span],
+                parts: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, list[int]]:
+    """The times (s, from the path's start), depths, positions and pinned radii of the spans ``members`` at their
+    times ``parts`` (s from first contact), one array each: each span's segment's numbers repeated over its times,
+    ``Segment.d`` and ``Segment.x`` element by element; and the number of each span's times."""
+    lengths = [len(part) for part in parts]
+    t = solution.t_contact + (np.concatenate(parts) if len(parts) > 1 else parts[0])
+    segments = [span.segment for span in members]
+
+    def each(values: list[float]) -> np.ndarray:  # (a span's number over its times)
+        return np.repeat(np.array(values, dtype=float), lengths)
+
+    elapsed = t - each([segment.t0 for segment in segments])
+    d = each([segment.ds for segment in segments]) + each([segment.vd for segment in segments]) * elapsed
+    x = each([segment.xs for segment in segments]) + each([segment.vx for segment in segments]) * elapsed
+    return t, d, x, each([span.pinned_radius for span in members]), lengths
 
 
 def _tangential_forces(spans: list[Span], t: np.ndarray, a: np.ndarray, where: list[slice]) -> np.ndarray:
@@ -575,19 +582,9 @@ def _pinned_kinematics(solution: PathSolution, grids: dict[int, np.ndarray]) -> 
     members = [index for index in grids if spans[index].regime is Regime.PINNED]
     if len(members) < 2:  # (one span alone: evaluate_span's own call)
         return {}
-    lengths = [len(grids[index]) for index in members]
-
-    def each(values: list[float]) -> np.ndarray:  # (a span's number over its times)
-        return np.repeat(np.array(values, dtype=float), lengths)
-
-    segments = [spans[index].segment for index in members]
-    t = solution.t_contact + np.concatenate([grids[index] for index in members])
-    elapsed = t - each([segment.t0 for segment in segments])
-    columns = {"indentation_depth": each([segment.ds for segment in segments]) + each([segment.vd for segment in
-                                                                                       segments]) * elapsed,
-               "tangential_displacement": each([segment.xs for segment in segments]) + each([segment.vx for segment
-                                                                                             in segments]) * elapsed,
-               "contact_radius": each([spans[index].pinned_radius for index in members])}
+    _, d, x, a, lengths = _kinematics(solution, [spans[index] for index in members],
+                                      [grids[index] for index in members])
+    columns = {"indentation_depth": d, "tangential_displacement": x, "contact_radius": a}
     parts = {name: _split(values, lengths) for name, values in columns.items()}
     out = {}
     for k, index in enumerate(members):
