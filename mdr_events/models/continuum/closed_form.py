@@ -143,6 +143,15 @@ class Primitive(NamedTuple):
         value += self.C * integral
         return value + self.C0 * self.attach.integral(a) if self.C0 else value
 
+    @property
+    def linear(self) -> bool:
+        """Whether the rate is ``A₀ + A₁ a`` alone (``B₀ = B₁ = C = C₀ = 0``: a shrinking span in full slip without
+        Coulomb's part, a span that does not move sideways). :meth:`rate` then reads ``A₀ + A₁ a`` plus terms that are
+        exactly zero (``0 · d'``, ``0 · d``, finite at a positive radius), each operation rounded monotonically, so its
+        readings at increasing radii are monotone in floats as well: of the same sign (or zero) at both ends of an
+        interval, none inside is of the other sign (:meth:`ClosedForce.stationary` asks no more of them)."""
+        return not (self.B0 or self.B1 or self.C or self.C0)
+
     def rate(self, a: float) -> float:
         """``dP/da`` at the radius ``a`` (m): what the span's right-hand side reads, over ``2G*``."""
         slope = self.branch.slope(a)
@@ -201,7 +210,28 @@ class ClosedForce:
     def stationary(self, low: float, high: float) -> list[float]:
         """The roots of ``dF_x/dvar`` (the primitive's rate) in ``[low, high]``: where it changes sign between
         :data:`STATIONARY_READINGS` equal parts of the interval and the breakpoints, by Brent's method (what
-        :mod:`.stationary` reads off a dense output's polynomials, here of the closed form).
+        :mod:`.stationary` reads off a dense output's polynomials, here of the closed form; :meth:`read_stationary`).
+        A rate linear in the radius (:attr:`Primitive.linear`) of one sign at both ends has none, and its readings
+        would find none: it is read at the ends alone (``tests/models/test_closed_form.py`` compares the two routes).
+
+        Parameters
+        ----------
+        low, high : float
+            The interval (the span's variable), ``low <= high``.
+
+        Returns
+        -------
+        list of float
+            The roots, increasing (none: the force is monotone there).
+        """
+        rate = lambda var: self.primitive.rate(var * self.scale)  # noqa: E731
+        if self.primitive.linear and rate(float(low)) * rate(float(high)) >= 0.0:
+            return []  # (the readings' rates are monotone, none of opposite signs: :attr:`Primitive.linear`)
+        return self.read_stationary(low, high)
+
+    def read_stationary(self, low: float, high: float) -> list[float]:
+        """:meth:`stationary` by the readings alone (no proof asked first: the route the proof of a linear rate
+        skips, whose answer it gives).
 
         Parameters
         ----------

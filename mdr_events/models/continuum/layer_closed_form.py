@@ -261,6 +261,12 @@ class LayerPrimitive(NamedTuple):
         return not (self.D0 or self.D1 or self.E0 or self.E1 or self.U or self.A or self.C or self.C0)
 
     @property
+    def linear(self) -> bool:
+        """Whether :meth:`rate` is monotone in floats for :meth:`~.closed_form.ClosedForce.stationary`'s proof
+        (:attr:`~.closed_form.Primitive.linear`): where :attr:`still` alone (the rate 0 throughout)."""
+        return self.still
+
+    @property
     def rows(self) -> tuple[int, ...]:
         """The functions of :data:`BranchIntegrals.NAMES` whose terms in ``P`` have a coefficient other than zero
         (``M`` for ``D₁``, ``E₁``, ``A``; ``ū`` for ``D₀``, ``D₁``; ``d`` for ``E₀``, ``E₁``; ``J_u`` for ``D₁``,

@@ -1,0 +1,142 @@
+"""The proofs by which :func:`~mdr_events.models.continuum.span_extrema.extremum` skips work against the routes they
+skip, which must give the same answer bit for bit: a closed-form force whose rate is linear in the radius
+(:attr:`~mdr_events.models.continuum.closed_form.Primitive.linear`) and of one sign at both ends of a bracket has no
+stationary point there (:meth:`~mdr_events.models.continuum.closed_form.ClosedForce.stationary` against its readings,
+:meth:`~mdr_events.models.continuum.closed_form.ClosedForce.read_stationary`), on every closed-form span of runs of
+both scenarios, a zigzag, a reciprocating path, a table, power laws, Coulomb's law, without and with adhesion and on
+a layer, and on brackets built to defeat the proof."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.indenters import PowerLaw
+from mdr_events.models.continuum import solve_path
+from mdr_events.models.continuum.closed_form import ClosedForce, Primitive
+from mdr_events.models.paths import exit_depth
+from mdr_events.theory import analytic
+
+PAPER = me.Parameters.paper()
+HERTZ = PAPER.replace(dgamma0=0.0, dgamma1=0.0)
+ZIGZAG = [(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)]
+#: Brackets read on each closed-form span: the scan's intervals (``EXTREMUM_GRID - 1`` of them, where the refinement
+#: reads) and this many random ones.
+RANDOM_BRACKETS = 40
+
+
+def _table():
+    radii = np.linspace(0.0, 4e-3, 41)
+    return me.TabulatedProfile(radii, radii**2 / (2 * PAPER.R))
+
+
+def _reciprocating():
+    """``bench_simulate.py``'s path: in at 20°, ten cycles of ``±3 ū(a_max)``, out vertically."""
+    amplitude = 3.0 * float(analytic.critical_shift(float(analytic.jkr_contact_radius(PAPER.d_max, PAPER,
+                                                                                       PAPER.dgamma0)), PAPER))
+    x_c = PAPER.d_max / math.tan(math.radians(20.0))
+    turns = [(x_c + amplitude * (1 if i % 2 == 0 else -1), PAPER.d_max) for i in range(20)]
+    return me.Path([(0.0, 0.0), (x_c, PAPER.d_max), *turns, (x_c, PAPER.d_max), (x_c, exit_depth(PAPER))], PAPER.v)
+
+
+#: label -> (params, path, solve_path's keywords)
+CASES = {
+    "A 20°": lambda: (PAPER, me.Path.scenario_A(20.0, PAPER), {}),
+    "B 20°": lambda: (PAPER, me.Path.scenario_B(20.0, PAPER), {}),
+    "B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER), {}),
+    "zigzag": lambda: (PAPER, me.Path(ZIGZAG, PAPER.v), {}),
+    "reciprocating": lambda: (PAPER, _reciprocating(), {}),
+    "table, A 20°": lambda: (PAPER, me.Path.scenario_A(20.0, PAPER, profile=_table()), {"profile": _table()}),
+    "cone, B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER, profile=PowerLaw.cone(0.05)),
+                            {"profile": PowerLaw.cone(0.05)}),
+    "Hertz, Coulomb, A 20°": lambda: (HERTZ, me.Path.scenario_A(20.0, HERTZ),
+                                      {"friction": FrictionLaw("coulomb", mu=0.3)}),
+    "Hertz, B 30°": lambda: (HERTZ, me.Path.scenario_B(30.0, HERTZ), {}),
+    "τ0 + Coulomb, B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER),
+                                    {"friction": FrictionLaw("tau0+coulomb", mu=0.3)}),
+    "layer, B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER), {"layer": me.Layer(5e-3)}),
+    "layer, B 90°": lambda: (PAPER, me.Path.scenario_B(90.0, PAPER), {"layer": me.Layer(5e-3)}),
+}
+
+
+def _brackets(low: float, high: float, rng: np.random.Generator) -> list[tuple[float, float]]:
+    """The scan's intervals of ``[low, high]``, the whole of it and random sub-intervals (some of no length)."""
+    from mdr_events.models.continuum.span_extrema import EXTREMUM_GRID
+
+    grid = np.linspace(low, high, EXTREMUM_GRID).tolist()
+    random = np.sort(rng.uniform(low, high, (RANDOM_BRACKETS, 2)), axis=1).tolist()
+    return [*zip(grid[:-1], grid[1:]), (low, high), (low, low), (high, high), *map(tuple, random)]
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_a_linear_rates_proof_gives_the_readings_answer(case):
+    """On every closed-form span of the run, ``stationary`` (the proof first) and ``read_stationary`` (the readings)
+    give the same roots, bit for bit, on the scan's intervals and random brackets; a run of scenario B holds a linear
+    rate, so that the proof is exercised (the last span's full slip ``A₁ a``)."""
+    params, path, options = CASES[case]()
+    solution = solve_path(params, path, **options)
+    closed = [span.interpolant for span in solution.spans if type(span.interpolant) is ClosedForce]
+    rng = np.random.default_rng(0)
+    for force in closed:
+        low, high = sorted((force.ts[0], force.ts[-1]))
+        for bracket in _brackets(low, high, rng):
+            assert force.stationary(*bracket) == force.read_stationary(*bracket), (case, bracket)
+    if case.startswith("B") and "layer" not in case:
+        assert any(force.primitive.linear for force in closed)
+
+
+class _Convex:
+    """A branch ``d(a) = (a − 1)²`` (its slope ``2 (a − 1)``): convex, least at ``a = 1``."""
+
+    knots = ()
+
+    def depth(self, a):
+        return (a - 1.0) ** 2
+
+    def slope(self, a):
+        return 2.0 * (a - 1.0)
+
+    def integral(self, a):
+        return ((a - 1.0) ** 3 + 1.0) / 3.0
+
+
+def _closed(A0: float, A1: float, C: float = 0.0) -> ClosedForce:
+    """A closed form of rate ``A₀ + A₁ a + C d(a)`` on :class:`_Convex`, over the radii 0 to 2."""
+    return ClosedForce(Primitive(_Convex(), _Convex(), A0, A1, 0.0, 0.0, C, 0.0), 0.0, 0.0, 1.0, 1.0, [0.0, 2.0])
+
+
+@pytest.mark.parametrize("hair", [-1, 0, 1])
+def test_a_linear_rates_root_a_hair_from_the_brackets_end_is_found_as_the_readings_find_it(hair):
+    """Adversarial: the rate ``a − r`` with its root ``r`` one ulp inside the bracket's end, at it, or one ulp
+    beyond. Inside, the ends' rates are of opposite signs (the proof does not hold: the readings find the root); at or
+    beyond, one end's rate is 0 or both of one sign (no root, by either route)."""
+    end = 1.5
+    root = end + hair * math.ulp(end)
+    force = _closed(-root, 1.0)
+    found, read = force.stationary(0.5, end), force.read_stationary(0.5, end)
+    assert found == read
+    assert (len(found) == 1) is (hair < 0)
+
+
+def test_a_rate_of_one_sign_at_both_ends_that_dips_between_is_not_skipped():
+    """Adversarial: ``C d(a) − A`` on the convex branch, positive at both ends of ``[0, 2]`` and negative about its
+    least at ``a = 1`` (the force has a maximum and a minimum inside, each beyond the ends' values): not linear, so the
+    readings find both roots ``1 ± 10⁻³``."""
+    dip = 1e-6
+    force = _closed(-dip, 0.0, 1.0)
+    assert not force.primitive.linear
+    roots = force.stationary(0.0, 2.0)
+    assert roots == force.read_stationary(0.0, 2.0)
+    np.testing.assert_allclose(roots, [1.0 - math.sqrt(dip), 1.0 + math.sqrt(dip)], rtol=1e-12)
+
+
+@pytest.mark.parametrize("coefficient", ["B0", "B1", "C", "C0"])
+def test_a_rate_with_a_branch_term_is_not_linear(coefficient):
+    """Any coefficient of ``d'``, ``a d'``, ``d`` or ``d₀`` other than 0 makes the rate not linear in the radius."""
+    primitive = Primitive(_Convex(), _Convex(), 1.0, 1.0, 0.0, 0.0, 0.0, 0.0)
+    assert primitive.linear
+    assert not primitive._replace(**{coefficient: 1e-300}).linear
