@@ -2,7 +2,9 @@
 skip, which must give the same answer bit for bit: a closed-form force whose rate is linear in the radius
 (:attr:`~mdr_events.models.continuum.closed_form.Primitive.linear`) and of one sign at both ends of a bracket has no
 stationary point there (:meth:`~mdr_events.models.continuum.closed_form.ClosedForce.stationary` against its readings,
-:meth:`~mdr_events.models.continuum.closed_form.ClosedForce.read_stationary`), on every closed-form span of runs of
+:meth:`~mdr_events.models.continuum.closed_form.ClosedForce.read_stationary`), and a still primitive
+(:attr:`~mdr_events.models.continuum.closed_form.Primitive.still`) is ``+0`` without its branch's values, on every
+closed-form span of runs of
 both scenarios, a zigzag, a reciprocating path, a table, power laws, Coulomb's law, without and with adhesion and on
 a layer, and on brackets built to defeat the proof."""
 
@@ -140,3 +142,66 @@ def test_a_rate_with_a_branch_term_is_not_linear(coefficient):
     primitive = Primitive(_Convex(), _Convex(), 1.0, 1.0, 0.0, 0.0, 0.0, 0.0)
     assert primitive.linear
     assert not primitive._replace(**{coefficient: 1e-300}).linear
+
+
+def _skipped_call(force: ClosedForce, var: np.ndarray) -> np.ndarray:
+    """``ClosedForce.__call__``'s route that reads the branch (the one a still primitive skips)."""
+    return force.force + force.G2 * (force.primitive(np.reshape(var, -1) * force.scale) - force.origin)
+
+
+def _same_bits(found: np.ndarray, expected: np.ndarray) -> bool:
+    return np.reshape(found, -1).tobytes() == np.reshape(expected, -1).tobytes()
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_a_still_primitives_force_is_the_branchs_route_bit_for_bit(case):
+    """On every closed-form span of the run, the force read at the scan's points and at random ones is the route that
+    reads the branch, bit for bit (the sign of a zero too); scenario B's first span (vertical) is still, so that the
+    route is exercised."""
+    from mdr_events.models.continuum.span_extrema import EXTREMUM_GRID
+
+    params, path, options = CASES[case]()
+    closed = [span.interpolant for span in solve_path(params, path, **options).spans
+              if type(span.interpolant) is ClosedForce]
+    rng = np.random.default_rng(1)
+    for force in closed:
+        low, high = sorted((force.ts[0], force.ts[-1]))
+        for var in (np.linspace(low, high, EXTREMUM_GRID), rng.uniform(low, high, RANDOM_BRACKETS)):
+            assert _same_bits(force(var)[0], _skipped_call(force, var)), case
+    if case.startswith("B") and "layer" not in case:
+        assert any(force.primitive.still for force in closed)
+
+
+class _Crossing(_Convex):
+    """A branch whose depth ``a − 1`` changes sign at ``a = 1`` (a zero coefficient times it is ``+0`` on one side,
+    ``−0`` on the other) and whose integral is ``a²``."""
+
+    def depth(self, a):
+        return a - 1.0
+
+    def integral(self, a):
+        return a * a
+
+    def depths(self, a):
+        return np.asarray(a, dtype=float) - 1.0
+
+    def integrals(self, a):
+        a = np.asarray(a, dtype=float)
+        return a * a
+
+
+@pytest.mark.parametrize("start_force", [0.0, -0.0, 1.5])
+@pytest.mark.parametrize("signs", [(0.0, 0.0), (-0.0, 0.0), (0.0, -0.0), (-0.0, -0.0)])
+def test_a_still_primitives_zeros_keep_their_signs(start_force, signs):
+    """Adversarial: all coefficients zero, ``A₀`` and ``A₁`` of either sign, on a branch whose depth changes sign
+    (``P`` is ``−0`` below ``a = 1`` where ``A₀ = A₁ = −0``, ``+0`` at the start 1.5), a force of ``±0`` or not at the
+    start, and radii ``+0``, ``−0``, ``nan``, ``inf`` and negative among positive ones: the force is the branch's route
+    bit for bit; ``still`` only where ``A₀`` and ``A₁`` are ``+0``."""
+    A0, A1 = signs
+    primitive = Primitive(_Crossing(), _Crossing(), A0, A1, 0.0, 0.0, -0.0, 0.0)
+    assert primitive.still is (math.copysign(1.0, A0) > 0 and math.copysign(1.0, A1) > 0)
+    force = ClosedForce(primitive, 1.5, start_force, 2.0, 1.0, [1.5, 2.0])
+    with np.errstate(invalid="ignore"):
+        for var in ([0.5, 1.0, 2.0], [0.0, 0.5], [-0.0, 0.5], [0.5, math.nan], [0.5, math.inf], [-1.0, 0.5]):
+            var = np.array(var)
+            assert _same_bits(force(var)[0], _skipped_call(force, var)), (var, signs, start_force)

@@ -144,6 +144,15 @@ class Primitive(NamedTuple):
         return value + self.C0 * self.attach.integral(a) if self.C0 else value
 
     @property
+    def still(self) -> bool:
+        """Whether ``P`` is ``+0`` at every finite radius ``a >= +0``: every coefficient zero, ``A₀`` and ``A₁`` of
+        positive sign. :meth:`combine` then sums ``a (A₀ + A₁ a/2) = +0`` and terms ``0 · (finite)`` of either sign,
+        and ``+0`` plus a zero of either sign is ``+0`` (round to nearest): a span that does not move sideways (a
+        vertical path's). :meth:`ClosedForce.__call__` reads no branch there."""
+        return (not (self.A0 or self.A1 or self.B0 or self.B1 or self.C or self.C0)
+                and math.copysign(1.0, self.A0) > 0 and math.copysign(1.0, self.A1) > 0)
+
+    @property
     def linear(self) -> bool:
         """Whether the rate is ``A₀ + A₁ a`` alone (``B₀ = B₁ = C = C₀ = 0``: a shrinking span in full slip without
         Coulomb's part, a span that does not move sideways). :meth:`rate` then reads ``A₀ + A₁ a`` plus terms that are
@@ -262,9 +271,15 @@ class ClosedForce:
     def __call__(self, var) -> np.ndarray:
         """Shape ``(1,)`` for a scalar ``var``, ``(1, n)`` for ``n`` of them, as ``OdeSolution``: NumPy's forms of the
         branch for both, so that a value is the same whether it was asked alone or among others (:meth:`at`, in
-        Python floats, can differ from it by rounding)."""
+        Python floats, can differ from it by rounding). A still primitive (:attr:`Primitive.still`) at finite radii of
+        positive sign is ``+0`` without reading its branch."""
         var = np.asarray(var, dtype=float)
-        values = self.force + self.G2 * (self.primitive(np.reshape(var, -1) * self.scale) - self.origin)
+        radii = np.reshape(var, -1) * self.scale
+        if self.primitive.still and np.all(np.isfinite(radii)) and not np.any(np.signbit(radii)):
+            primitive = np.zeros(radii.shape)  # (P's values, bit for bit: Primitive.still)
+        else:
+            primitive = self.primitive(radii)
+        values = self.force + self.G2 * (primitive - self.origin)
         return np.reshape(values, (1, *var.shape))
 
 

@@ -350,12 +350,12 @@ def _scan_matrices(scan: ExtremumScan, quantities: tuple[str, ...]) -> dict[str,
     change between neighbouring points (0 for one point; ``|Δ(−q)| = |Δq|`` exactly, so both extremes share it), its
     best value of either sign and that value's earliest tie, and the largest magnitude over the run; every reduction
     element by element, so each value is the one a matrix per quantity and sign gives."""
-    width = max(len(times) for times in scan.times)
-    table = np.full((len(quantities), len(scan.times), width), np.nan)
-    for row, filled in enumerate(scan.values):
-        for k, quantity in enumerate(quantities):
-            values = _quantity(filled, quantity)
-            table[k, row, :len(values)] = values
+    lengths = [len(times) for times in scan.times]
+    width = max(lengths)
+    tables = _ScanTables(scan.values, lengths, width)
+    table = np.empty((len(quantities), len(scan.times), width))
+    for k, quantity in enumerate(quantities):
+        table[k] = _quantity(tables, quantity)
     with np.errstate(invalid="ignore"):
         largest = np.fmax.reduce(np.abs(table), axis=2)
         reach = np.fmax(np.fmax.reduce(np.abs(np.diff(table, axis=2)), axis=2), 0.0) if width > 1 \
@@ -367,6 +367,30 @@ def _scan_matrices(scan: ExtremumScan, quantities: tuple[str, ...]) -> dict[str,
     best, first, reach = best.tolist(), first.tolist(), reach.tolist()
     return {quantity: ScanMatrix((best[0][k], best[1][k]), (first[0][k], first[1][k]), reach[k], float(sizes[k]))
             for k, quantity in enumerate(quantities)}
+
+
+class _ScanTables(dict):
+    """The quantities every span's scan holds (``F_N``, ``F_x``, the radius, ...), each as a table (span, point) of
+    ``width`` points, each row padded with ``nan``, made when first asked: what :func:`_quantity` reads of one span's
+    scan, for all spans at once (its operations element by element, so each value is the one a span alone gives, and
+    ``nan`` where padded)."""
+
+    def __init__(self, values: list[dict[str, np.ndarray]], lengths: list[int], width: int):
+        super().__init__()
+        self.values, self.lengths, self.width = values, lengths, width
+
+    def __contains__(self, name: object) -> bool:
+        return all(name in filled for filled in self.values)
+
+    def __missing__(self, name: str) -> np.ndarray:
+        if all(length == self.width for length in self.lengths):  # (every span scanned at the grid: no padding)
+            table = np.array([filled[name] for filled in self.values], dtype=float)
+        else:
+            table = np.full((len(self.values), self.width), np.nan)
+            for row, filled in enumerate(self.values):
+                table[row, :self.lengths[row]] = filled[name]
+        self[name] = table
+        return table
 
 
 def _bounded_search(solution: PathSolution, index: int, quantity: str, sign: float, times: np.ndarray,
