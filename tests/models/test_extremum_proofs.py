@@ -87,6 +87,8 @@ def test_a_linear_rates_proof_gives_the_readings_answer(case):
         low, high = sorted((force.ts[0], force.ts[-1]))
         for bracket in _brackets(low, high, rng):
             assert force.stationary(*bracket) == force.read_stationary(*bracket), (case, bracket)
+            if force.primitive.still:  # (never_stationary's claim: extremum does not ask)
+                assert force.read_stationary(*bracket) == [], (case, bracket)
     if case.startswith("B") and "layer" not in case:
         assert any(force.primitive.linear for force in closed)
 
@@ -205,3 +207,16 @@ def test_a_still_primitives_zeros_keep_their_signs(start_force, signs):
         for var in ([0.5, 1.0, 2.0], [0.0, 0.5], [-0.0, 0.5], [0.5, math.nan], [0.5, math.inf], [-1.0, 0.5]):
             var = np.array(var)
             assert _same_bits(force(var)[0], _skipped_call(force, var)), (var, signs, start_force)
+
+
+def test_a_still_span_is_never_stationary_and_others_are_asked():
+    """``never_stationary`` of ``F_x``: true on scenario B's still first span (its readings find nothing, above),
+    false on its shrinking spans (closed forms that are not still) and on scenario A's growing one."""
+    from mdr_events.models.continuum.stationary import never_stationary
+
+    for params, path, still in ((PAPER, me.Path.scenario_B(20.0, PAPER), {0}), (PAPER, me.Path.scenario_A(20.0, PAPER),
+                                                                            set())):
+        solution = solve_path(params, path)
+        for index, span in enumerate(solution.spans):
+            if type(span.interpolant) is ClosedForce:
+                assert never_stationary(solution, index, "tangential_force") is (index in still), index

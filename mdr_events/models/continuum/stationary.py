@@ -163,8 +163,10 @@ def stationary_points(solution, index: int, quantity: str, times: tuple[float, f
 
 def never_stationary(solution, index: int, quantity: str) -> bool:
     """Whether :func:`stationary_points` finds no point of span ``index`` in any bracket: out of contact, the radius
-    and the area (monotone on a span), ``F_N`` on a pinned radius (linear in the depth), ``F_x`` constant or linear in
-    time (the compressed zone's aside, whose spans are another run's).
+    and the area (monotone on a span), ``F_N`` on a pinned radius (linear in the depth), ``F_x`` constant, linear in
+    time or a still closed form (:attr:`~.closed_form.Primitive.still`: its rate is zero at every reading, so
+    :meth:`~.closed_form.ClosedForce.stationary` finds no change of sign) (the compressed zone's aside, whose spans
+    are another run's).
 
     Parameters
     ----------
@@ -186,7 +188,10 @@ def never_stationary(solution, index: int, quantity: str) -> bool:
         return span.regime is Regime.PINNED
     if quantity != "tangential_force" or solution.compressed is not None:
         return False  # (no derivative route: the caller searches)
-    return span.interpolant is None or type(span.interpolant) is LinearForce
+    interpolant = span.interpolant
+    # (a still closed form's rate is 0, or nan where the slope is infinite, at every reading: no change of sign)
+    return interpolant is None or type(interpolant) is LinearForce \
+        or (type(interpolant) is ClosedForce and interpolant.primitive.still)
 
 
 @functools.singledispatch
