@@ -210,9 +210,11 @@ def _moving_grids(solution: PathSolution, members: list[int], matrix: np.ndarray
         elif rows:
             depths[rows] = solution.model.branch(regime).depths(matrix[rows, 1:-1].reshape(-1)).reshape(len(rows), -1)
     segments = [spans[index].segment for index in members]
-    t0, ds, vd = (np.array([getattr(segment, name) for segment in segments])[:, None] for name in ("t0", "ds", "vd"))
-    lower = np.array([spans[index].t_start - t_contact for index in members])[:, None]
-    upper = np.array([spans[index].t_end - t_contact for index in members])[:, None]
+    # (each span's segment's numbers and its ends, s from first contact, as the columns of one array)
+    t0, ds, vd, lower, upper = np.array(
+        [[segment.t0 for segment in segments], [segment.ds for segment in segments], [segment.vd for segment in segments],
+         [spans[index].t_start - t_contact for index in members],
+         [spans[index].t_end - t_contact for index in members]], dtype=float)[:, :, None]
     inner = (t0 + (depths - ds) / vd) - t_contact  # (Segment.time_at_depth, row by row)
     times = np.concatenate([lower, np.clip(inner, lower, upper), upper], axis=1)
     np.maximum.accumulate(times, axis=1, out=times)
@@ -358,9 +360,12 @@ def _scan_matrices(scan: ExtremumScan, quantities: tuple[str, ...]) -> dict[str,
         table[k] = _quantity(tables, quantity)
     with np.errstate(invalid="ignore"):
         largest = np.fmax.reduce(np.abs(table), axis=2)
-        reach = np.fmax(np.fmax.reduce(np.abs(np.diff(table, axis=2)), axis=2), 0.0) if width > 1 \
+        # (np.diff's subtraction of neighbours, and np.stack's copies of q and −q, written out: the same values)
+        reach = np.fmax(np.fmax.reduce(np.abs(table[..., 1:] - table[..., :-1]), axis=2), 0.0) if width > 1 \
             else np.zeros(largest.shape)
-        signed = np.stack([table, -table])  # (the maximum's, the minimum's)
+        signed = np.empty((2, *table.shape))  # (the maximum's, the minimum's)
+        signed[0] = table
+        np.negative(table, out=signed[1])
         best = np.fmax.reduce(signed, axis=3)
         first = np.argmax(signed >= (best - EXTREMUM_TIE * largest)[..., None], axis=3)  # earliest tie
     sizes = np.fmax.reduce(np.where(np.isfinite(largest), largest, 0.0), axis=1, initial=0.0)  # (largest >= 0)
