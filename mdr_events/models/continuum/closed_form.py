@@ -148,7 +148,7 @@ class Primitive(NamedTuple):
         """Whether ``P`` is ``+0`` at every finite radius ``a >= +0``: every coefficient zero, ``A₀`` and ``A₁`` of
         positive sign. :meth:`combine` then sums ``a (A₀ + A₁ a/2) = +0`` and terms ``0 · (finite)`` of either sign,
         and ``+0`` plus a zero of either sign is ``+0`` (round to nearest): a span that does not move sideways (a
-        vertical path's). :meth:`ClosedForce.__call__` reads no branch there."""
+        vertical path's). ``ClosedForce.__call__`` reads no branch there."""
         return (not (self.A0 or self.A1 or self.B0 or self.B1 or self.C or self.C0)
                 and math.copysign(1.0, self.A0) > 0 and math.copysign(1.0, self.A1) > 0)
 
