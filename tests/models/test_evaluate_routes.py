@@ -1,0 +1,129 @@
+"""``simulate``'s evaluate, dataset and front end (issue 28: ``simulate`` of A or B under 2 ms): each shortcut against
+the route it replaced, kept here as the reference, bit for bit on every kind of continuum run (scenarios A and B, a
+zigzag, fretting cycles, a table, a layer, a power law, the rate law, Coulomb's law with and without adhesion), on a
+run of one sample and before the first contact.
+
+- ``solution._iterated_radii``: the paraboloid's iterated radius at one depth (a run's first sample, at first contact)
+  kept by value; the reference is ``Branch.radii`` called each time.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.models.continuum import solution as solution_module
+from mdr_events.models.continuum import solve_path
+from mdr_events.models.continuum.branch import Branch
+
+PAPER = me.Parameters.paper()
+#: Samples of the runs compared (the shortcuts do not depend on the count; a few hundred keep the file cheap).
+SAMPLES = 301
+
+
+def _contact(**changes) -> me.Contact:
+    """The paper's contact with its parts ``changes`` (``indenter=``, ``layer=``, ...)."""
+    return dataclasses.replace(me.Contact.paper(), **changes)
+
+
+def _reciprocating() -> me.Path:
+    """In at 20° to ``(x_c, d_max)``, ten fretting cycles of ``±20 µm``, out vertically."""
+    x_c = PAPER.d_max / math.tan(math.radians(20.0))
+    turns = [(x_c + 2e-5 * (1 if i % 2 == 0 else -1), PAPER.d_max) for i in range(20)]
+    return me.Path([(0.0, 0.0), (x_c, PAPER.d_max), *turns, (x_c, PAPER.d_max), (x_c, -1e-4)], PAPER.v)
+
+
+def _table() -> me.TabulatedProfile:
+    """A 41-point table of the paper's paraboloid."""
+    r = np.linspace(0.0, 4e-3, 41)
+    return me.TabulatedProfile(r, r**2 / (2 * PAPER.R))
+
+
+ZIGZAG = me.Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)], PAPER.v)
+#: Every kind of continuum run: label -> (contact, motion).
+RUNS = {
+    "A 20°": lambda: (_contact(), me.Scenario("A", 20.0)),
+    "B 30°": lambda: (_contact(), me.Scenario("B", 30.0)),
+    "zigzag": lambda: (_contact(), me.Paths([ZIGZAG])),
+    "reciprocating": lambda: (_contact(), me.Paths([_reciprocating()])),
+    "table": lambda: (_contact(indenter=_table()), me.Scenario("A", 20.0)),
+    "layer": lambda: (_contact(layer=me.Layer(5e-3)), me.Scenario("B", 30.0)),
+    "power law": lambda: (_contact(indenter=me.PowerLaw(2.0e3, 3.0)), me.Scenario("A", 30.0)),
+    "rate law": lambda: (_contact(adhesion=me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-6, 0.6)),
+                         me.Scenario("B", 30.0)),
+    "Coulomb": lambda: (_contact(friction=me.FrictionLaw("tau0+coulomb", tau0=PAPER.tau0, mu=0.3)),
+                        me.Scenario("A", 20.0)),
+    "Coulomb with adhesion": lambda: (_contact(friction=me.FrictionLaw("coulomb", mu=0.3)), me.Scenario("B", 20.0)),
+    "from above the surface": lambda: (_contact(), me.Paths([me.Path([(0.0, -1e-4), (1e-4, 2e-4), (2e-4, -1e-4)],
+                                                                      PAPER.v)])),
+}
+
+
+def _reference_iterated_radii(branch, depth: np.ndarray) -> np.ndarray:
+    """The route ``_iterated_radii`` replaced: the branch's iteration, called each time."""
+    return branch.radii(depth)
+
+
+def assert_same_bits(left, right) -> None:
+    """Two datasets with the same variables, attributes and values, bit for bit (``nan`` where the other has it)."""
+    assert list(left.variables) == list(right.variables) and left.attrs == right.attrs
+    for name, variable in left.variables.items():
+        assert variable.dims == right[name].dims and variable.attrs == right[name].attrs, name
+        mine, theirs = np.asarray(variable.values), np.asarray(right[name].values)
+        if mine.dtype.kind == "f":
+            assert mine.tobytes() == theirs.tobytes(), name
+        else:
+            np.testing.assert_array_equal(mine, theirs, err_msg=name)
+
+
+@pytest.mark.parametrize("label", list(RUNS))
+def test_kept_iterated_radius_is_the_branchs_iteration_bit_for_bit(label, monkeypatch):
+    """A run whose first sample's radius is kept (warm: the second run of the same values) is the run of the branch's
+    iteration called each time, bit for bit."""
+    contact, motion = RUNS[label]()
+    solution_module._paraboloid_radius.cache_clear()
+    cold = me.simulate(contact, motion, "continuum", samples=SAMPLES)
+    warm = me.simulate(contact, motion, "continuum", samples=SAMPLES)
+    with monkeypatch.context() as patched:
+        patched.setattr(solution_module, "_iterated_radii", _reference_iterated_radii)
+        reference = me.simulate(contact, motion, "continuum", samples=SAMPLES)
+    assert_same_bits(cold, reference)
+    assert_same_bits(warm, reference)
+
+
+def test_kept_iterated_radius_is_kept_and_taken_at_first_contact():
+    """The paraboloid's first sample (at first contact, depth 0) is read from what is kept: the kept value is the
+    iteration's, by depth (``0.0`` and ``-0.0`` apart, each the iteration's own), and other depths are not taken for
+    it."""
+    solution_module._paraboloid_radius.cache_clear()
+    path = me.Path.scenario_B(30.0, PAPER)
+    solution = solve_path(PAPER, path)
+    times = np.linspace(0.0, solution.end_time, 11)
+    first = solution.evaluate_at(times)
+    misses = solution_module._paraboloid_radius.cache_info().misses
+    assert misses >= 1  # (the first sample's; the last one, at the pull-off on the fold, is also a span's end)
+    again = solution.evaluate_at(times)
+    assert solution_module._paraboloid_radius.cache_info().hits == misses
+    np.testing.assert_array_equal(first["contact_radius"], again["contact_radius"])
+    branch = Branch(PAPER, PAPER.dgamma0)
+    for depth in (0.0, -0.0, 1e-6, 2e-4, branch.jump_off_depth):
+        kept = solution_module._iterated_radii(branch, np.array([depth]))
+        assert kept.tobytes() == branch.radii(np.array([depth])).tobytes(), depth
+    assert first["contact_radius"][0] == branch.radii(np.array([0.0]))[0]
+
+
+def test_one_sample_evaluated_is_the_reference_bit_for_bit(monkeypatch):
+    """``evaluate`` at one time (before the first contact, at it, inside a span, at the pull-off) as its reference."""
+    path = me.Path([(0.0, -1e-4), (1e-4, 2e-4), (2e-4, -1e-4)], PAPER.v)
+    solution = solve_path(PAPER, path)
+    for time in (-solution.t_contact / 2.0, 0.0, solution.end_time / 3.0, solution.end_time):
+        found = solution.evaluate_at(np.array([time]))
+        with monkeypatch.context() as patched:
+            patched.setattr(solution_module, "_iterated_radii", _reference_iterated_radii)
+            reference = solution.evaluate_at(np.array([time]))
+        for name, values in found.items():
+            assert values.tobytes() == reference[name].tobytes(), (time, name)
