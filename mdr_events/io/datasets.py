@@ -21,6 +21,7 @@ from typing import Any, Collection, Mapping, Sequence
 import numpy as np
 import pandas as pd
 import xarray as xr
+from xarray.core.variable import calculate_dimensions
 from xarray.indexes import PandasIndex
 
 from mdr_events._version import __version__
@@ -135,8 +136,26 @@ def assembled(data_vars: Mapping[str, tuple], coords: Mapping[str, tuple]) -> xr
     if clash:
         raise ValueError(f"data variables {clash} are not allowed: named after a coordinate or a dimension; allowed: "
                          "the coordinates in coords")
+    shapes = [values.shape if type(values) is np.ndarray else None for _, values, _ in data_vars.values()]
     variables.update(coordinates)
-    return xr.Dataset._construct_direct(variables, set(coordinates), indexes=indexes)
+    return xr.Dataset._construct_direct(variables, set(coordinates), dims=_dimensions(variables, shapes),
+                                        indexes=indexes)
+
+
+def _dimensions(variables: dict[str, xr.Variable], shapes: list) -> dict:
+    """The dataset's dimensions and sizes, as ``xarray``'s ``calculate_dimensions`` gives them (in the order the
+    variables name them), read off each variable's dimensions and the shape of the array it was given (``shapes``,
+    the first variables', ``None`` where not an array: the variable's own); a dimension of two sizes, or one named
+    after a variable of no dimensions, is left to ``calculate_dimensions``, which names it (``ValueError``)."""
+    dims: dict = {}
+    for (name, variable), shape in zip(variables.items(), [*shapes, *[None] * (len(variables) - len(shapes))]):
+        names = variable.dims
+        if not names or len(names) != len(shape := variable.shape if shape is None else shape):
+            return calculate_dimensions(variables)
+        for dim, size in zip(names, shape):
+            if dims.setdefault(dim, size) != size:
+                return calculate_dimensions(variables)
+    return dims
 
 
 def _variable(dims, values, attrs: dict) -> xr.Variable:

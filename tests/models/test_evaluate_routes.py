@@ -127,3 +127,24 @@ def test_one_sample_evaluated_is_the_reference_bit_for_bit(monkeypatch):
             reference = solution.evaluate_at(np.array([time]))
         for name, values in found.items():
             assert values.tobytes() == reference[name].tobytes(), (time, name)
+
+
+@pytest.mark.parametrize("label", ["A 20°", "zigzag", "Coulomb with adhesion"])
+def test_assembled_dimensions_are_xarrays_calculated_ones(label):
+    """``io.datasets._dimensions`` (the sizes read off the arrays given) is ``calculate_dimensions`` of the variables,
+    its order too, on a run's dataset; and where a size disagrees or a variable has no dimensions, its own."""
+    from xarray.core.variable import calculate_dimensions
+
+    from mdr_events.io.datasets import _dimensions, assembled
+
+    contact, motion = RUNS[label]()
+    variables = dict(me.simulate(contact, motion, "continuum", samples=SAMPLES).variables)
+    shapes = [variable.shape for variable in variables.values()]
+    assert list(_dimensions(variables, shapes).items()) == list(calculate_dimensions(variables).items())
+    assert list(_dimensions(variables, []).items()) == list(calculate_dimensions(variables).items())
+    scalar = assembled({"x": ((), 1.0, {}), "y": (("time",), [1.0, 2.0], {})}, {"time": ("time", np.arange(2.0), {})})
+    assert dict(scalar.sizes) == {"time": 2} and scalar["y"].shape == (2,)
+    with pytest.raises(ValueError, match="conflicting sizes"):
+        assembled({"x": (("time",), np.zeros(2), {}), "y": (("time",), np.zeros(3), {})}, {})
+    with pytest.raises(ValueError, match="already exists as a scalar"):
+        assembled({"x": (("s",), np.zeros(2), {})}, {"s": ((), 0.0, {})})
