@@ -4,7 +4,11 @@ zigzag, fretting cycles, a table, a layer, a power law, the rate law, Coulomb's 
 run of one sample and before the first contact.
 
 - ``solution._iterated_radii``: the paraboloid's iterated radius at one depth (a run's first sample, at first contact)
-  kept by value; the reference is ``Branch.radii`` called each time.
+  kept by value; the reference is ``Branch.radii`` called each time;
+- ``solution._kinematics``: the spans' numbers repeated over their times in one call; the reference repeats each
+  number alone;
+- ``io.datasets._dimensions``: the dataset's sizes read off the arrays given; the reference is xarray's
+  ``calculate_dimensions``.
 """
 
 from __future__ import annotations
@@ -68,6 +72,25 @@ def _reference_iterated_radii(branch, depth: np.ndarray) -> np.ndarray:
     return branch.radii(depth)
 
 
+def _reference_kinematics(solution, members, parts):
+    """The route ``_kinematics`` replaced: each span's number repeated over its times by a call of its own."""
+    lengths = [len(part) for part in parts]
+    t = solution.t_contact + (np.concatenate(parts) if len(parts) > 1 else parts[0])
+    segments = [span.segment for span in members]
+
+    def each(values: list[float]) -> np.ndarray:
+        return np.repeat(np.array(values, dtype=float), lengths)
+
+    elapsed = t - each([segment.t0 for segment in segments])
+    d = each([segment.ds for segment in segments]) + each([segment.vd for segment in segments]) * elapsed
+    x = each([segment.xs for segment in segments]) + each([segment.vx for segment in segments]) * elapsed
+    return t, d, x, each([span.pinned_radius for span in members]), lengths
+
+
+#: Each replaced route of :mod:`~mdr_events.models.continuum.solution` by its name, with its reference.
+REFERENCES = {"_iterated_radii": _reference_iterated_radii, "_kinematics": _reference_kinematics}
+
+
 def assert_same_bits(left, right) -> None:
     """Two datasets with the same variables, attributes and values, bit for bit (``nan`` where the other has it)."""
     assert list(left.variables) == list(right.variables) and left.attrs == right.attrs
@@ -80,16 +103,19 @@ def assert_same_bits(left, right) -> None:
             np.testing.assert_array_equal(mine, theirs, err_msg=name)
 
 
+@pytest.mark.parametrize("replaced", [*REFERENCES, "all"])
 @pytest.mark.parametrize("label", list(RUNS))
-def test_kept_iterated_radius_is_the_branchs_iteration_bit_for_bit(label, monkeypatch):
-    """A run whose first sample's radius is kept (warm: the second run of the same values) is the run of the branch's
-    iteration called each time, bit for bit."""
+def test_each_route_is_its_reference_bit_for_bit(label, replaced, monkeypatch):
+    """A run (cold, and warm: the second run of the same values, its first radius kept) is the run with the replaced
+    route's reference (or every reference at once), bit for bit."""
     contact, motion = RUNS[label]()
     solution_module._paraboloid_radius.cache_clear()
     cold = me.simulate(contact, motion, "continuum", samples=SAMPLES)
     warm = me.simulate(contact, motion, "continuum", samples=SAMPLES)
     with monkeypatch.context() as patched:
-        patched.setattr(solution_module, "_iterated_radii", _reference_iterated_radii)
+        for name, reference in REFERENCES.items():
+            if replaced in (name, "all"):
+                patched.setattr(solution_module, name, reference)
         reference = me.simulate(contact, motion, "continuum", samples=SAMPLES)
     assert_same_bits(cold, reference)
     assert_same_bits(warm, reference)
@@ -123,7 +149,8 @@ def test_one_sample_evaluated_is_the_reference_bit_for_bit(monkeypatch):
     for time in (-solution.t_contact / 2.0, 0.0, solution.end_time / 3.0, solution.end_time):
         found = solution.evaluate_at(np.array([time]))
         with monkeypatch.context() as patched:
-            patched.setattr(solution_module, "_iterated_radii", _reference_iterated_radii)
+            for name, route in REFERENCES.items():
+                patched.setattr(solution_module, name, route)
             reference = solution.evaluate_at(np.array([time]))
         for name, values in found.items():
             assert values.tobytes() == reference[name].tobytes(), (time, name)

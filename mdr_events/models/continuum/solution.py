@@ -498,15 +498,14 @@ def _kinematics(solution: PathSolution, members: list[Span],
     ``Segment.d`` and ``Segment.x`` element by element; and the number of each span's times."""
     lengths = [len(part) for part in parts]
     t = solution.t_contact + (np.concatenate(parts) if len(parts) > 1 else parts[0])
-    segments = [span.segment for span in members]
-
-    def each(values: list[float]) -> np.ndarray:  # (a span's number over its times)
-        return np.repeat(np.array(values, dtype=float), lengths)
-
-    elapsed = t - each([segment.t0 for segment in segments])
-    d = each([segment.ds for segment in segments]) + each([segment.vd for segment in segments]) * elapsed
-    x = each([segment.xs for segment in segments]) + each([segment.vx for segment in segments]) * elapsed
-    return t, d, x, each([span.pinned_radius for span in members]), lengths
+    # (each span's numbers, a row each, repeated over its times in one call: row by row the values of a call each)
+    numbers = np.array([(span.segment.t0, span.segment.ds, span.segment.vd, span.segment.xs, span.segment.vx,
+                         span.pinned_radius) for span in members], dtype=float).T
+    t0, ds, vd, xs, vx, pinned = np.repeat(numbers, lengths, axis=1)
+    elapsed = t - t0
+    d = ds + vd * elapsed
+    x = xs + vx * elapsed
+    return t, d, x, pinned, lengths
 
 
 def _tangential_forces(spans: list[Span], t: np.ndarray, a: np.ndarray, where: list[slice]) -> np.ndarray:
