@@ -169,13 +169,17 @@ def _coordinates(coords: Mapping[str, tuple]) -> tuple[dict[str, xr.Variable], d
     coordinate of one dimension named after it gets the default index (:func:`_default_index`) and the index's
     variable; one of at most :data:`SHARED_INDEX_SIZE` numbers a ``pandas.Index.view`` of the last results' of the
     same values (:func:`_shared_coordinate`): its own index and variable (a name or attribute set on one is the
-    other's no more), the read-only values shared; any other is a plain variable."""
+    other's no more), the read-only values shared; one of more numbers (a run's times) the ``pandas.Index`` of its
+    values, wrapped at once in its index and variable (what ``PandasIndex.create_variables`` makes of it); any other
+    is a plain variable."""
     variables, indexes = {}, {}
     for name, (dims, values, attrs) in coords.items():
-        if type(dims) in (str, tuple) and dims in (name, (name,)) and _numbers(values) and values.ndim == 1 and \
-                values.size <= SHARED_INDEX_SIZE:
-            shared = _shared_coordinate(name, values.dtype.str, values.tobytes()).index
-            view = shared.view()  # (its own pandas.Index, named apart; the values and their lookup table shared)
+        if type(dims) in (str, tuple) and dims in (name, (name,)) and _numbers(values) and values.ndim == 1:
+            if values.size <= SHARED_INDEX_SIZE:
+                shared = _shared_coordinate(name, values.dtype.str, values.tobytes()).index
+                view = shared.view()  # (its own pandas.Index, named apart; the values and their lookup table shared)
+            else:  # (a run's times: the index of its values, made at once as _default_index makes it)
+                view = shared = pd.Index(values, name=name)
             indexes[name] = PandasIndex(view, name, coord_dtype=shared.dtype, fastpath=True)
             variable = xr.IndexVariable((name,), view, attrs, fastpath=True)
         else:

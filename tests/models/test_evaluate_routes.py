@@ -175,3 +175,26 @@ def test_assembled_dimensions_are_xarrays_calculated_ones(label):
         assembled({"x": (("time",), np.zeros(2), {}), "y": (("time",), np.zeros(3), {})}, {})
     with pytest.raises(ValueError, match="already exists as a scalar"):
         assembled({"x": (("s",), np.zeros(2), {})}, {"s": ((), 0.0, {})})
+
+
+@pytest.mark.parametrize("dtype", ["float64", "float32", "int64", "int32", "uint8"])
+def test_a_long_numeric_coordinate_is_the_one_xarray_makes(dtype):
+    """A numeric coordinate longer than the shared ones (a run's times) is wrapped at once in its ``pandas.Index``:
+    the dataset, its index (type, dtype, name, values) and the coordinate's variable (type, dtype, attributes,
+    encoding) are those of ``xarray.Dataset``, the reference."""
+    import xarray as xr
+
+    from mdr_events.io.datasets import SHARED_INDEX_SIZE, assembled
+
+    values = (np.arange(SHARED_INDEX_SIZE + 45) % 250).astype(dtype)
+    data = {"y": (("time",), np.linspace(0.0, 1.0, values.size), {"units": "1"})}
+    coords = {"time": ("time", values, {"units": "s", "long_name": "time"})}
+    made, reference = assembled(data, coords), xr.Dataset(data, coords=coords)
+    xr.testing.assert_identical(made, reference)
+    index, expected = made.xindexes["time"], reference.xindexes["time"]
+    assert (type(index), index.coord_dtype, type(index.index), index.index.dtype, index.index.name) == \
+        (type(expected), expected.coord_dtype, type(expected.index), expected.index.dtype, expected.index.name)
+    assert index.index.equals(expected.index)
+    variable, wanted = made["time"].variable, reference["time"].variable
+    assert (type(variable), variable.dtype, variable.attrs, variable.encoding) == \
+        (type(wanted), wanted.dtype, wanted.attrs, wanted.encoding)
