@@ -198,3 +198,23 @@ def test_a_long_numeric_coordinate_is_the_one_xarray_makes(dtype):
     variable, wanted = made["time"].variable, reference["time"].variable
     assert (type(variable), variable.dtype, variable.attrs, variable.encoding) == \
         (type(wanted), wanted.dtype, wanted.attrs, wanted.encoding)
+
+
+@pytest.mark.parametrize("profile, friction", [
+    (None, None), (_table(), None), (me.PowerLaw(2.0e3, 3.0), me.FrictionLaw("tau0+coulomb", tau0=PAPER.tau0, mu=0.3)),
+    (None, "tau0"), (me.FlatPunch(1e-3), None)])
+def test_the_kept_contact_of_parameters_is_contact_from_parameters(profile, friction):
+    """``simulate``'s front end keeps the contact of the keywords of before by value (``_contact_of``): the contact
+    ``Contact.from_parameters`` makes, equal in every part, for equal values of another identity; a bad part refused
+    with the same message each time (never kept)."""
+    from mdr_events.models.simulate import _contact_of
+
+    reference = me.Contact.from_parameters(PAPER, profile, friction)
+    kept_contact = _contact_of(PAPER, profile, friction)
+    again = _contact_of(dataclasses.replace(PAPER), profile, friction)
+    assert kept_contact == reference and again is kept_contact and repr(kept_contact) == repr(reference)
+    assert kept_contact.to_attrs() == reference.to_attrs()
+    assert _contact_of(PAPER.replace(E=4e5), profile, friction).parameters(PAPER.d_max, PAPER.v).E == 4e5
+    for _ in range(2):
+        with pytest.raises(TypeError, match="profile=.* is not allowed"):
+            _contact_of(PAPER, "cone", friction)
