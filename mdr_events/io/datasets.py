@@ -21,6 +21,7 @@ from typing import Any, Collection, Mapping, Sequence
 import numpy as np
 import pandas as pd
 import xarray as xr
+from xarray.core.variable import calculate_dimensions
 from xarray.indexes import PandasIndex
 
 from mdr_events._version import __version__
@@ -135,8 +136,26 @@ def assembled(data_vars: Mapping[str, tuple], coords: Mapping[str, tuple]) -> xr
     if clash:
         raise ValueError(f"data variables {clash} are not allowed: named after a coordinate or a dimension; allowed: "
                          "the coordinates in coords")
+    shapes = [values.shape if type(values) is np.ndarray else None for _, values, _ in data_vars.values()]
     variables.update(coordinates)
-    return xr.Dataset._construct_direct(variables, set(coordinates), indexes=indexes)
+    return xr.Dataset._construct_direct(variables, set(coordinates), dims=_dimensions(variables, shapes),
+                                        indexes=indexes)
+
+
+def _dimensions(variables: dict[str, xr.Variable], shapes: list) -> dict:
+    """The dataset's dimensions and sizes, as ``xarray``'s ``calculate_dimensions`` gives them (in the order the
+    variables name them), read off each variable's dimensions and the shape of the array it was given (``shapes``,
+    the first variables', ``None`` where not an array: the variable's own); a dimension of two sizes, or one named
+    after a variable of no dimensions, is left to ``calculate_dimensions``, which names it (``ValueError``)."""
+    dims: dict = {}
+    for (name, variable), shape in zip(variables.items(), [*shapes, *[None] * (len(variables) - len(shapes))]):
+        names = variable.dims
+        if not names or len(names) != len(shape := variable.shape if shape is None else shape):
+            return calculate_dimensions(variables)
+        for dim, size in zip(names, shape):
+            if dims.setdefault(dim, size) != size:
+                return calculate_dimensions(variables)
+    return dims
 
 
 def _variable(dims, values, attrs: dict) -> xr.Variable:
@@ -150,13 +169,17 @@ def _coordinates(coords: Mapping[str, tuple]) -> tuple[dict[str, xr.Variable], d
     coordinate of one dimension named after it gets the default index (:func:`_default_index`) and the index's
     variable; one of at most :data:`SHARED_INDEX_SIZE` numbers a ``pandas.Index.view`` of the last results' of the
     same values (:func:`_shared_coordinate`): its own index and variable (a name or attribute set on one is the
-    other's no more), the read-only values shared; any other is a plain variable."""
+    other's no more), the read-only values shared; one of more numbers (a run's times) the ``pandas.Index`` of its
+    values, wrapped at once in its index and variable (what ``PandasIndex.create_variables`` makes of it); any other
+    is a plain variable."""
     variables, indexes = {}, {}
     for name, (dims, values, attrs) in coords.items():
-        if type(dims) in (str, tuple) and dims in (name, (name,)) and _numbers(values) and values.ndim == 1 and \
-                values.size <= SHARED_INDEX_SIZE:
-            shared = _shared_coordinate(name, values.dtype.str, values.tobytes()).index
-            view = shared.view()  # (its own pandas.Index, named apart; the values and their lookup table shared)
+        if type(dims) in (str, tuple) and dims in (name, (name,)) and _numbers(values) and values.ndim == 1:
+            if values.size <= SHARED_INDEX_SIZE:
+                shared = _shared_coordinate(name, values.dtype.str, values.tobytes()).index
+                view = shared.view()  # (its own pandas.Index, named apart; the values and their lookup table shared)
+            else:  # (a run's times: the index of its values, made at once as _default_index makes it)
+                view = shared = pd.Index(values, name=name)
             indexes[name] = PandasIndex(view, name, coord_dtype=shared.dtype, fastpath=True)
             variable = xr.IndexVariable((name,), view, attrs, fastpath=True)
         else:

@@ -18,6 +18,7 @@ from mdr_events.contact import Contact
 from mdr_events.contact.model import check_half_space
 from mdr_events.contact.friction import as_friction_law
 from mdr_events.limits import Limits, check_limits, values_in
+from mdr_events.memo import kept
 from mdr_events.models import indenters
 from mdr_events.models.job import ModelJob
 from mdr_events.models.methods import METHODS, Continuum, Discrete, Method, as_method, check_counted_first
@@ -35,6 +36,16 @@ MODEL_OPTIONS = ("profile", "friction")
 DEFAULT_METHOD = "discrete"
 
 __all__ = ["simulate", "simulation_job", "SimulationJob", "model_job", "METHODS", "check_layer_taken"]
+
+#: How many contacts of the keywords of before :func:`model_job` keeps (:func:`_contact_of`).
+CONTACTS_KEPT = 16
+
+
+@kept(CONTACTS_KEPT)
+def _contact_of(params: Parameters, profile, friction) -> Contact:
+    """:meth:`Contact.from_parameters <mdr_events.Contact.from_parameters>`, kept by the exact values of its frozen
+    arguments (:func:`~mdr_events.memo.kept`; a ``Contact`` is frozen: the same value, made and validated once)."""
+    return Contact.from_parameters(params, profile, friction)
 
 
 class SimulationJob(NamedTuple):
@@ -57,9 +68,8 @@ def model_job(contact, motion, alpha, options: dict[str, Any]) -> ModelJob:
                              "with alpha beside the Parameters")
         params, profile = contact, indenters.check_simulated_profile(indenter)
         friction = as_friction_law(law)
-        return ModelJob(Contact.from_parameters(params, profile, friction), as_motion(motion, alpha, params.d_max,
-                                                                                        params.v), params, profile,
-                        friction)
+        return ModelJob(_contact_of(params, profile, friction), as_motion(motion, alpha, params.d_max, params.v),
+                        params, profile, friction)
     contact = contact_alone(contact, indenter, law)
     motion = as_motion(motion, alpha)
     return ModelJob(contact, motion, contact.parameters(motion.d_max, motion.v),

@@ -8,8 +8,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from mdr_events.contact.adhesion import Adhesion
+from mdr_events.memo import kept
 from mdr_events.parameters import Parameters
 from mdr_events.validation import real_array, shown
+from .branch import Branch
 from .dense import cut, force_values
 from .span_forces import span_forces
 from .span_sliding import span_sliding_lengths, takes_batch
@@ -173,8 +175,29 @@ def _sampled_radii(model, spans: list[Span], depths: list[np.ndarray]) -> list[n
     depth = np.concatenate(depth) if len(depth) > 1 else depth[0]
     radii = branch.sample_radii(depth)
     if ends.any():
-        radii[ends] = branch.radii(depth[ends])
+        radii[ends] = _iterated_radii(branch, depth[ends])
     return _split(radii, [len(d) for d in depths])
+
+
+#: How many of the paraboloid's iterated radii at one depth :func:`_iterated_radii` keeps.
+ITERATED_RADII_KEPT = 64
+
+
+def _iterated_radii(branch, depth: np.ndarray) -> np.ndarray:
+    """``branch.radii(depth)``, the iteration's radii at a run's samples on its spans' ends; one depth alone on the
+    paraboloid's branch with adhesion (a run's first sample, at first contact: the same depth at every angle and
+    every run of the same material) kept by value (:func:`_paraboloid_radius`), the same number bit for bit."""
+    if type(branch) is Branch and branch.work != 0.0 and depth.size == 1:
+        return np.full(depth.shape, _paraboloid_radius(branch.params, branch.work, float(depth.flat[0])))
+    return branch.radii(depth)
+
+
+@kept(ITERATED_RADII_KEPT)
+def _paraboloid_radius(params: Parameters, work: float, depth: float) -> float:
+    """:meth:`~.branch.Branch.radii` of the paraboloid's branch of ``params`` and ``work`` at one ``depth`` (an array
+    of one element: the array route's iteration, not the scalar's), kept by the exact values
+    (:func:`~mdr_events.memo.kept`: a zero's sign and the type apart)."""
+    return float(Branch(params, work).radii(np.array([depth]))[0])
 
 
 def _at_ends(spans: list[Span], depths: list[np.ndarray], lengths: list[int] | None) -> np.ndarray:
@@ -475,15 +498,14 @@ def _kinematics(solution: PathSolution, members: list[Span],
     ``Segment.d`` and ``Segment.x`` element by element; and the number of each span's times."""
     lengths = [len(part) for part in parts]
     t = solution.t_contact + (np.concatenate(parts) if len(parts) > 1 else parts[0])
-    segments = [span.segment for span in members]
-
-    def each(values: list[float]) -> np.ndarray:  # (a span's number over its times)
-        return np.repeat(np.array(values, dtype=float), lengths)
-
-    elapsed = t - each([segment.t0 for segment in segments])
-    d = each([segment.ds for segment in segments]) + each([segment.vd for segment in segments]) * elapsed
-    x = each([segment.xs for segment in segments]) + each([segment.vx for segment in segments]) * elapsed
-    return t, d, x, each([span.pinned_radius for span in members]), lengths
+    # (each span's numbers, a row each, repeated over its times in one call: row by row the values of a call each)
+    numbers = np.array([(span.segment.t0, span.segment.ds, span.segment.vd, span.segment.xs, span.segment.vx,
+                         span.pinned_radius) for span in members], dtype=float).T
+    t0, ds, vd, xs, vx, pinned = np.repeat(numbers, lengths, axis=1)
+    elapsed = t - t0
+    d = ds + vd * elapsed
+    x = xs + vx * elapsed
+    return t, d, x, pinned, lengths
 
 
 def _tangential_forces(spans: list[Span], t: np.ndarray, a: np.ndarray, where: list[slice]) -> np.ndarray:
