@@ -66,6 +66,27 @@ def test_one_radius_and_many_read_the_series_alike():
     np.testing.assert_array_equal(np.array([series.value(float(a)) for a in radii]).T, series.values(radii))
 
 
+@pytest.mark.parametrize("h", LAYERS)
+def test_a_few_radii_and_the_buffered_recurrence_read_the_series_alike(h):
+    """``values`` of a few rows at up to ``SCALAR_RADII`` radii (read one by one as ``value``) and its recurrence into
+    kept buffers (``_clenshaw``) give the numbers of the route before (``_clenshaw_allocating``, an array per
+    operation) bit for bit, signs of zero included, on every row set a primitive asks."""
+    medium, branches = _branches(h)
+    for branch in branches:
+        series = layer_closed_form.branch_integrals(medium, branch)
+        radii = np.sort(np.random.default_rng(11).uniform(series.floor, min(series.ceiling, 40 * series.floor), 257))
+        cell = np.clip(np.searchsorted(series._ends, radii, side="right") - 1, 0, len(series.ends) - 2)
+        t = 2.0 * (radii - series._ends[cell]) / series.width[cell] - 1.0
+        for rows in ((0, 2, 4), (0, 1, 3), (1,), (0, 1, 2, 3, 4)):
+            before = layer_closed_form._clenshaw_allocating(series._by_degree[:, list(rows)][:, :, cell], t)
+            many = series.values(radii, rows)
+            assert np.array_equal(many, before) and np.array_equal(np.signbit(many), np.signbit(before))
+            for start in range(0, 40, layer_closed_form.SCALAR_RADII):
+                few = series.values(radii[start:start + layer_closed_form.SCALAR_RADII], rows)
+                assert np.array_equal(few, before[:, start:start + layer_closed_form.SCALAR_RADII])
+                assert np.array_equal(np.signbit(few), np.signbit(before[:, start:start + 4]))
+
+
 @pytest.mark.parametrize("h", LAYERS[:2])
 def test_the_radii_of_newtons_first_step_are_the_iterated_ones(h, monkeypatch):
     """Newton's step taken as the root where its own bound allows (``NEWTON_SHARE``), for many depths and for one,

@@ -214,6 +214,10 @@ class SpanIntegrator:
     #: A at 20° on a 41-point table, whose knots start a piece each: 1.1e-8 -> 3.5e-9). ``False`` marches DOP853's
     #: steps (:func:`~.integrate.solve_between_knots`, the route before, kept for the tests that compare both)
     quadrature = True
+    #: the last variable :meth:`level` read at, with its ``x`` and the caps' centre shift there: both caps' events read
+    #: the same variable one after the other (the closed form's readings, ``solve_ivp``'s), and the second reads the
+    #: first's numbers (the same operations, bit for bit); a variable that is not a Python float is not kept
+    _last_level: tuple[float, float, float] = (math.nan, math.nan, math.nan)
     #: a moving span without a front on the half-space is integrated in closed form (:meth:`primitive`,
     #: :mod:`.closed_form`); ``False`` integrates it as any other (the tests compare both)
     closed_form = True
@@ -342,8 +346,13 @@ class SpanIntegrator:
         float
             The level (m).
         """
-        t = self.time_of(var)
-        return self.segment.x(t) - cap * self.caps.centre_shift(self.radius_of(var), self.segment.d(t))
+        last, x, shift = self._last_level
+        if not (var == last and type(var) is float):
+            t = self.time_of(var)
+            x, shift = self.segment.x(t), self.caps.centre_shift(self.radius_of(var), self.segment.d(t))
+            if type(var) is float:
+                self._last_level = (var, x, shift)
+        return x - cap * shift
 
     def rate(self, cap: Cap | float, var: float) -> float:
         """A quantity with the sign of ``cap · d(level)/dt``: positive while the level pushes the springs
