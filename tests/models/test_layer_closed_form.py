@@ -143,3 +143,34 @@ def test_a_primitive_read_off_its_needed_rows_is_every_rows_bit_for_bit(contact,
                                        primitive.anchors.value(radius)[4] if primitive.C0 else 0.0)
             assert primitive.at(radius) == every and math.copysign(1.0, primitive.at(radius)) == math.copysign(1.0,
                                                                                                              every)
+
+
+def test_the_levels_and_rates_kept_per_variable_are_those_read_afresh(monkeypatch):
+    """``SpanIntegrator.level`` keeps its last variable's ``x`` and centre shift, ``rate`` its variables' slopes
+    (``_rate_parts``): on every moving span of the thin punch's run (B at 20°, the recession) both caps read in turn
+    at 33 variables, then the ends again, give the numbers of a reading with nothing kept, bit for bit."""
+    from mdr_events.limits import check_limits
+    from mdr_events.models.continuum import span as span_module
+    from mdr_events.models.continuum.solve import run_continuum
+    from mdr_events.models.simulate import simulation_job
+
+    contact = dataclasses.replace(me.Contact.paper(), indenter=me.FlatPunch(2e-3)).replace(h=2e-4)
+    model, _ = simulation_job(contact, me.Scenario("B", alpha=[20.0], d_max=1e-5), None, "continuum", {},
+                              check_limits(None))
+    cases = model.motion.cases(model.params, model.profile, model.friction)
+    integrators = []
+    met_at_start = span_module.SpanIntegrator.met_at_start
+    monkeypatch.setattr(span_module.SpanIntegrator, "met_at_start",
+                        lambda self: integrators.append(self) or met_at_start(self))
+    run_continuum(model.kernel, cases.paths, 11)
+    moving = [integrator for integrator in integrators if integrator.moving]
+    assert moving
+    for integrator in moving:
+        variables = np.linspace(integrator.start, integrator.stop, 33).tolist()
+        for var in variables + [integrator.start, integrator.stop, integrator.start]:
+            for cap in (1.0, -1.0, 1.0):
+                kept = integrator.level(cap, var), integrator.rate(cap, var)
+                integrator._last_level, integrator._rates = (math.nan,) * 3, None
+                fresh = integrator.level(cap, var), integrator.rate(cap, var)
+                assert kept == fresh and [math.copysign(1.0, v) for v in kept] == \
+                    [math.copysign(1.0, v) for v in fresh]
