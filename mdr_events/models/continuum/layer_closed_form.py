@@ -39,6 +39,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.polynomial import legendre
 
+from mdr_events.theory.layer.scalar_factors import piece_index
 from mdr_events.theory.layer.tables import LAMBDA_MIN
 from mdr_events.theory.layer.tangential_tables import LAMBDA_MIN as TANGENTIAL_LAMBDA_MIN
 
@@ -149,7 +150,7 @@ class BranchIntegrals:
         if a.size <= SCALAR_RADII and isinstance(rows, tuple):  # (a few radii: :meth:`value`'s, the same numbers)
             return np.array([self.value(radius, rows) for radius in a.tolist()], dtype=float).reshape(
                 a.size, len(self.NAMES))[:, list(rows)].T
-        cell = np.clip(np.searchsorted(self._ends, a, side="right") - 1, 0, len(self.ends) - 2)
+        cell = piece_index(self._ends, a, len(self.ends) - 2)
         t = 2.0 * (a - self._ends[cell]) / self.width[cell] - 1.0
         if isinstance(rows, tuple):  # (a few rows: their coefficients kept apart, the same numbers)
             if rows not in self._rows:
