@@ -66,6 +66,27 @@ def test_one_radius_and_many_read_the_series_alike():
     np.testing.assert_array_equal(np.array([series.value(float(a)) for a in radii]).T, series.values(radii))
 
 
+@pytest.mark.parametrize("h", LAYERS)
+def test_a_few_radii_and_the_buffered_recurrence_read_the_series_alike(h):
+    """``values`` of a few rows at up to ``SCALAR_RADII`` radii (read one by one as ``value``) and its recurrence into
+    kept buffers (``_clenshaw``) give the numbers of the route before (``_clenshaw_allocating``, an array per
+    operation) bit for bit, signs of zero included, on every row set a primitive asks."""
+    medium, branches = _branches(h)
+    for branch in branches:
+        series = layer_closed_form.branch_integrals(medium, branch)
+        radii = np.sort(np.random.default_rng(11).uniform(series.floor, min(series.ceiling, 40 * series.floor), 257))
+        cell = np.clip(np.searchsorted(series._ends, radii, side="right") - 1, 0, len(series.ends) - 2)
+        t = 2.0 * (radii - series._ends[cell]) / series.width[cell] - 1.0
+        for rows in ((0, 2, 4), (0, 1, 3), (1,), (0, 1, 2, 3, 4)):
+            before = layer_closed_form._clenshaw_allocating(series._by_degree[:, list(rows)][:, :, cell], t)
+            many = series.values(radii, rows)
+            assert np.array_equal(many, before) and np.array_equal(np.signbit(many), np.signbit(before))
+            for start in range(0, 40, layer_closed_form.SCALAR_RADII):
+                few = series.values(radii[start:start + layer_closed_form.SCALAR_RADII], rows)
+                assert np.array_equal(few, before[:, start:start + layer_closed_form.SCALAR_RADII])
+                assert np.array_equal(np.signbit(few), np.signbit(before[:, start:start + 4]))
+
+
 @pytest.mark.parametrize("h", LAYERS[:2])
 def test_the_radii_of_newtons_first_step_are_the_iterated_ones(h, monkeypatch):
     """Newton's step taken as the root where its own bound allows (``NEWTON_SHARE``), for many depths and for one,
@@ -122,3 +143,34 @@ def test_a_primitive_read_off_its_needed_rows_is_every_rows_bit_for_bit(contact,
                                        primitive.anchors.value(radius)[4] if primitive.C0 else 0.0)
             assert primitive.at(radius) == every and math.copysign(1.0, primitive.at(radius)) == math.copysign(1.0,
                                                                                                              every)
+
+
+def test_the_levels_and_rates_kept_per_variable_are_those_read_afresh(monkeypatch):
+    """``SpanIntegrator.level`` keeps its last variable's ``x`` and centre shift, ``rate`` its variables' slopes
+    (``_rate_parts``): on every moving span of the thin punch's run (B at 20°, the recession) both caps read in turn
+    at 33 variables, then the ends again, give the numbers of a reading with nothing kept, bit for bit."""
+    from mdr_events.limits import check_limits
+    from mdr_events.models.continuum import span as span_module
+    from mdr_events.models.continuum.solve import run_continuum
+    from mdr_events.models.simulate import simulation_job
+
+    contact = dataclasses.replace(me.Contact.paper(), indenter=me.FlatPunch(2e-3)).replace(h=2e-4)
+    model, _ = simulation_job(contact, me.Scenario("B", alpha=[20.0], d_max=1e-5), None, "continuum", {},
+                              check_limits(None))
+    cases = model.motion.cases(model.params, model.profile, model.friction)
+    integrators = []
+    met_at_start = span_module.SpanIntegrator.met_at_start
+    monkeypatch.setattr(span_module.SpanIntegrator, "met_at_start",
+                        lambda self: integrators.append(self) or met_at_start(self))
+    run_continuum(model.kernel, cases.paths, 11)
+    moving = [integrator for integrator in integrators if integrator.moving]
+    assert moving
+    for integrator in moving:
+        variables = np.linspace(integrator.start, integrator.stop, 33).tolist()
+        for var in variables + [integrator.start, integrator.stop, integrator.start]:
+            for cap in (1.0, -1.0, 1.0):
+                kept = integrator.level(cap, var), integrator.rate(cap, var)
+                integrator._last_level, integrator._rates = (math.nan,) * 3, None
+                fresh = integrator.level(cap, var), integrator.rate(cap, var)
+                assert kept == fresh and [math.copysign(1.0, v) for v in kept] == \
+                    [math.copysign(1.0, v) for v in fresh]

@@ -742,3 +742,25 @@ def test_the_punchs_normal_force_reads_the_faces_factor_once_as_each_element_wou
     expected = derive_layer_model()["layer_flat_punch_force"].numeric(
         2.0 * params.E_star * radius * column.values_array(radius / THIN_LAYER), depth)
     assert np.array_equal(force(depth, radius), expected)
+
+
+@pytest.mark.parametrize("works", [(0.0, 0.0), (0.0, 0.064), (0.05, 0.2)])
+def test_the_reach_check_reads_the_face_as_the_punchs_branch_radius_at_every_depth_pressed(works):
+    """``check_layer_reach`` takes a punch's radius at a depth ``> 0`` as its face's, without the branch's relations:
+    it is what ``springs_of(...).branch_radius`` gives there (the face's jump-off, Kendall's depth, lies at or below
+    the surface), with and without adhesion; and a layer so thick that the face is below the
+    doubles' epsilon of it is refused with that radius named, as before."""
+    from mdr_events.models.continuum.layer_reach import THINNEST_LAYER_SHARE, check_layer_reach
+    from mdr_events.models.spring_media import springs_of
+
+    face = 2e-3
+    params = dataclasses.replace(me.Parameters.paper(), dgamma0=works[0], dgamma1=works[1])
+    punch = me.FlatPunch(face)
+    for h in (5e-3, 2e-4):
+        springs = springs_of(params, punch, None, me.Layer(h))
+        for depth in (1e-15, 1e-9, 1e-5, 1e-3):
+            assert springs.branch_radius(depth) == face
+            check_layer_reach(params, depth, punch, me.Layer(h))
+    thick = me.Layer(4.0 * face / THINNEST_LAYER_SHARE)
+    with pytest.raises(ValueError, match=f"contact radius {face:.6g} m at the depth 1e-05 m is below"):
+        check_layer_reach(params, 1e-5, punch, thick)

@@ -20,7 +20,7 @@ import pytest
 import mdr_events as me
 from mdr_events.models.continuum.media import medium_of
 from mdr_events.theory.layer import layer_table
-from mdr_events.theory.layer.scalar_factors import NormalFactors, TangentialFactors
+from mdr_events.theory.layer.scalar_factors import NormalFactors, TangentialFactors, piece_index
 from mdr_events.theory.layer.tangential_tables import tangential_table
 from mdr_events.theory.layer_continuum_symbolic import CONTINUUM_KEYS, continuum_model_afresh, derive_continuum_model
 from mdr_events.theory.layer_tangential import sliding_cap, tangential_punch_stiffness, tangential_spring_stiffness_density
@@ -98,3 +98,21 @@ def test_the_layers_springs_are_the_theorys_k_t_and_their_cap_the_theorys(nu):
     np.testing.assert_allclose(slope[inside], difference[inside], rtol=DIFFERENCE_ACCURACY)
     # full slip: every spring at the cap carries K_t(a) ū(a) = π a² τ0 on any layer
     np.testing.assert_allclose(2.0 * params.G_star * measure * cap, math.pi * RADII**2 * params.tau0, rtol=ROUNDING)
+
+
+def test_piece_index_is_the_clipped_search_and_a_float_reading_s_piece():
+    """``piece_index`` (the tables' pieces located without ``np.clip``'s checks) gives ``np.clip``'s integers, shape
+    and all, for points before the first break, on breaks, inside and beyond the last piece, arrays of any shape and
+    one point; and each is the piece ``bisect`` gives one float (``LogColumn.value_and_slope``'s)."""
+    import bisect
+
+    rng = np.random.default_rng(3)
+    breaks = np.sort(rng.uniform(-2.0, 2.0, 41))
+    last = breaks.size - 2
+    for points in (rng.uniform(-3.0, 3.0, 2000), breaks.copy(), rng.uniform(-3.0, 3.0, (4, 7)), np.array(0.25),
+                   float(breaks[5]), -5.0, 5.0):
+        found = piece_index(breaks, points, last)
+        clipped = np.clip(np.searchsorted(breaks, points, side="right") - 1, 0, last)
+        assert np.array_equal(found, clipped) and np.shape(found) == np.shape(clipped)
+        scalar = [min(max(bisect.bisect_right(breaks.tolist(), s) - 1, 0), last) for s in np.ravel(points).tolist()]
+        assert np.ravel(found).tolist() == scalar

@@ -369,7 +369,8 @@ class LayerBranch(Branch):
         if float(np.max(depth)) > depths[-1]:
             self.radius(float(np.max(depth)), RADII_RTOL)  # (beyond the tables: its error, naming the layer)
         index = np.searchsorted(depths, depth)
-        np.clip(index, 1, radii.size - 1, out=index)
+        np.maximum(index, 1, out=index)  # (np.clip's integers, without its checks' ~10 µs)
+        np.minimum(index, radii.size - 1, out=index)
         below_index = index - 1
         lower, upper = radii[below_index], radii[index]
         a = hermite_start(depth, (lower, upper), (depths[below_index], depths[index]),

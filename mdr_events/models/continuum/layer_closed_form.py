@@ -39,6 +39,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.polynomial import legendre
 
+from mdr_events.theory.layer.scalar_factors import piece_index
 from mdr_events.theory.layer.tables import LAMBDA_MIN
 from mdr_events.theory.layer.tangential_tables import LAMBDA_MIN as TANGENTIAL_LAMBDA_MIN
 
@@ -146,7 +147,10 @@ class BranchIntegrals:
             ``(function, radius)``.
         """
         a = np.asarray(a, dtype=float)
-        cell = np.clip(np.searchsorted(self._ends, a, side="right") - 1, 0, len(self.ends) - 2)
+        if a.size <= SCALAR_RADII and isinstance(rows, tuple):  # (a few radii: :meth:`value`'s, the same numbers)
+            return np.array([self.value(radius, rows) for radius in a.tolist()], dtype=float).reshape(
+                a.size, len(self.NAMES))[:, list(rows)].T
+        cell = piece_index(self._ends, a, len(self.ends) - 2)
         t = 2.0 * (a - self._ends[cell]) / self.width[cell] - 1.0
         if isinstance(rows, tuple):  # (a few rows: their coefficients kept apart, the same numbers)
             if rows not in self._rows:
@@ -154,10 +158,7 @@ class BranchIntegrals:
             coefficients = self._rows[rows][:, :, cell]
         else:
             coefficients = self._by_degree[:, rows, cell]  # (degree + 1, function, radius)
-        b1 = b2 = 0.0  # (Clenshaw's recurrence, as :meth:`value`: P_{k+1} = ((2k+1) t P_k − k P_{k−1})/(k+1))
-        for k in range(CELL_NODES, 0, -1):
-            b1, b2 = coefficients[k] + _ALPHA[k] * t * b1 - _BETA[k] * b2, b1
-        return coefficients[0] + t * b1 - 0.5 * b2
+        return _clenshaw(coefficients, t)
 
     def value(self, a: float, rows: tuple[int, ...] | None = None) -> list[float]:
         """:meth:`values` at one radius, every function, in Python floats (Clenshaw's recurrence).
@@ -192,6 +193,38 @@ class BranchIntegrals:
 #: Clenshaw's coefficients of Legendre's recurrence, ``(2k+1)/(k+1)`` and ``(k+1)/(k+2)`` at ``k``
 _ALPHA = [(2.0 * k + 1.0) / (k + 1.0) for k in range(CELL_NODES + 1)]
 _BETA = [(k + 1.0) / (k + 2.0) for k in range(CELL_NODES + 1)]
+_ALPHA_ARRAY = np.array(_ALPHA)
+#: At most this many radii, :meth:`BranchIntegrals.values` of a few rows reads each radius as :meth:`~BranchIntegrals.value`
+#: does (the same numbers bit for bit, ``tests/models/test_layer_closed_form.py``): an array's recurrence costs some
+#: forty NumPy calls whatever its length (~50 µs), one radius in Python floats ~6 µs.
+SCALAR_RADII = 4
+
+
+def _clenshaw(coefficients: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Legendre's series of ``coefficients`` ``(degree + 1, function, radius)`` at ``t`` ``(radius,)`` by Clenshaw's
+    recurrence (``P_{k+1} = ((2k+1) t P_k − k P_{k−1})/(k+1)``), each step's operations those of :meth:`~BranchIntegrals.value`
+    in its order (``c_k + (α_k t) b₁ − β_k b₂``: the same numbers bit for bit), into two buffers kept over the steps:
+    the ``α_k t`` of every step at once, no array made per operation (a run's few hundred radii cost the operations'
+    calls, not their length)."""
+    scaled = np.multiply.outer(_ALPHA_ARRAY, t)  # (each α_k t: the products α_k · t of the steps' own)
+    b1, b2 = np.zeros(coefficients.shape[1:]), np.zeros(coefficients.shape[1:])
+    term = np.empty(coefficients.shape[1:])
+    for k in range(CELL_NODES, 0, -1):
+        np.multiply(scaled[k], b1, out=term)
+        np.add(coefficients[k], term, out=term)
+        np.multiply(_BETA[k], b2, out=b2)
+        np.subtract(term, b2, out=b2)  # (the new b₁, in the old b₂'s buffer)
+        b1, b2 = b2, b1
+    return coefficients[0] + t * b1 - 0.5 * b2
+
+
+def _clenshaw_allocating(coefficients: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """:func:`_clenshaw` as :meth:`BranchIntegrals.values` read it before, a new array per operation (kept for the
+    test that compares both bit for bit)."""
+    b1 = b2 = 0.0
+    for k in range(CELL_NODES, 0, -1):
+        b1, b2 = coefficients[k] + _ALPHA[k] * t * b1 - _BETA[k] * b2, b1
+    return coefficients[0] + t * b1 - 0.5 * b2
 
 
 def _cells(ends: list[float]) -> list[float]:

@@ -48,8 +48,11 @@ def check_layer_reach(params: Parameters, depth: float, profile: SimulatedProfil
 
     if theory_of(profile).flat_face:  # (its radius is the face's from the first touch on: within the tables, or no run)
         check_punch_face(profile, layer, "the continuum method")
-
-    radius = springs_of(params, profile, None, layer).branch_radius(depth)  # (beyond the tables: refused there)
+        # (at a depth > 0, above the face's jump-off (Kendall's depth, <= 0), the branch's radius is the face's: what
+        # ``branch_radius`` gives, without its jump-off's relations read again every run)
+        radius = float(profile.radius)
+    else:
+        radius = springs_of(params, profile, None, layer).branch_radius(depth)  # (beyond the tables: refused there)
     if radius < THINNEST_LAYER_SHARE * layer.thickness:
         raise ValueError(f"contact.layer={layer!r} is not allowed in the continuum method: the contact radius "
                          f"{radius:.6g} m at the depth {depth!r} m is below {THINNEST_LAYER_SHARE:.3g} of the "

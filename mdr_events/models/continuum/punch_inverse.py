@@ -31,6 +31,8 @@ import math
 
 import numpy as np
 
+from mdr_events.theory.layer.scalar_factors import piece_index
+
 from .layer_branch import RADII_RTOL
 
 __all__ = ["RecessionInverse", "recession_inverse", "accuracy", "NODES_PER_DECADE", "DEPTH_ULPS", "CHECK_POINTS",
@@ -154,7 +156,7 @@ class RecessionInverse:
         """
         depth = np.asarray(depth, dtype=float)
         u = np.sqrt(np.maximum(depth - self.fold, 0.0))
-        index = np.clip(np.searchsorted(self.u, u, side="right") - 1, 0, self.u.size - 2)
+        index = piece_index(self.u, u, self.u.size - 2)
         covered = (depth >= self.low) & (depth <= self.high) & self.kept[index]
         return np.where(covered, self._interpolate(u, index), np.nan), covered
 

@@ -214,6 +214,12 @@ class SpanIntegrator:
     #: A at 20° on a 41-point table, whose knots start a piece each: 1.1e-8 -> 3.5e-9). ``False`` marches DOP853's
     #: steps (:func:`~.integrate.solve_between_knots`, the route before, kept for the tests that compare both)
     quadrature = True
+    #: the last variable :meth:`level` read at, with its ``x`` and the caps' centre shift there: both caps' events read
+    #: the same variable one after the other (the closed form's readings, ``solve_ivp``'s), and the second reads the
+    #: first's numbers (the same operations, bit for bit); a variable that is not a Python float is not kept
+    _last_level: tuple[float, float, float] = (math.nan, math.nan, math.nan)
+    #: :meth:`_rate_parts` by variable (made at the first reading: a dict of the integrator's own)
+    _rates: dict[float, tuple[float, float]] | None = None
     #: a moving span without a front on the half-space is integrated in closed form (:meth:`primitive`,
     #: :mod:`.closed_form`); ``False`` integrates it as any other (the tests compare both)
     closed_form = True
@@ -342,8 +348,13 @@ class SpanIntegrator:
         float
             The level (m).
         """
-        t = self.time_of(var)
-        return self.segment.x(t) - cap * self.caps.centre_shift(self.radius_of(var), self.segment.d(t))
+        last, x, shift = self._last_level
+        if not (var == last and type(var) is float):
+            t = self.time_of(var)
+            x, shift = self.segment.x(t), self.caps.centre_shift(self.radius_of(var), self.segment.d(t))
+            if type(var) is float:
+                self._last_level = (var, x, shift)
+        return x - cap * shift
 
     def rate(self, cap: Cap | float, var: float) -> float:
         """A quantity with the sign of ``cap · d(level)/dt``: positive while the level pushes the springs
@@ -367,12 +378,25 @@ class SpanIntegrator:
             # Coulomb's caps alone: the rate's sign is that of cap · v_x − κ v_d, constant on the segment (times
             # ∂d/∂a it would vanish at a = 0, where a contact without adhesion ends: no turn there)
             return cap * self.segment.vx - self.kappa * self.segment.vd
-        a = var * self.scale
-        slope = self.branch.slope(a)
+        slope, shift_slope = self._rate_parts(var)
         if self.kappa:
             return (cap * self.segment.vx - self.kappa * self.segment.vd) * slope - self.K * self.segment.vd
         # (layer_continuum_level_rate: σ v_x ∂d/∂a − ū'(a) v_d; ū' = K on the half-space)
-        return cap * self.segment.vx * slope - self.medium.shift_slope(self.K, a) * self.segment.vd
+        return cap * self.segment.vx * slope - shift_slope * self.segment.vd
+
+    def _rate_parts(self, var: float) -> tuple[float, float]:
+        """``∂d/∂a`` and ``dū/da`` (``nan`` under Coulomb's caps, which do not read it) at a moving span's variable,
+        kept per variable (a Python float): both caps' :meth:`rate` read them, at the span's ends twice over
+        (:meth:`met_at_start`, :meth:`event_functions`), the same numbers."""
+        if self._rates is None:
+            self._rates = {}
+        found = self._rates.get(var) if type(var) is float else None
+        if found is None:
+            a = var * self.scale
+            found = (self.branch.slope(a), math.nan if self.kappa else self.medium.shift_slope(self.K, a))
+            if type(var) is float:
+                self._rates[var] = found
+        return found
 
     def may_push(self, cap: Cap) -> bool:
         """Whether the cap's level can move towards its springs during the span: its rate is positive at
