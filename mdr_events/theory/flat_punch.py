@@ -3,28 +3,36 @@
 Every spring under the punch's face has ``g = 0``: the contact is the whole face from the first touch (``d >= 0``)
 on, and the springs reach Heß's limit (8) together, at Kendall's depth ``−sqrt(2π a Δγ/E*)``, where the punch comes
 off whole with Kendall's force ``−sqrt(8π a³ E* Δγ)`` (Kendall, J. Phys. D 4 (1971) 1186). Under the paper's friction
-law ``τ0`` every spring anchored at one ``x`` reaches its cap ``ū = K a`` (13) together: the slip onset is full slip.
-The relations are derived in :mod:`mdr_events.theory.symbolic` (``flat_punch_*``).
+law ``τ0`` every spring anchored at one ``x`` reaches its cap ``ū = K a`` (13) together: the slip onset is full slip;
+under a cap ``K a + κ d`` with Coulomb's part (:mod:`mdr_events.theory.mindlin`) every spring is compressed by ``d``
+alike, so the springs are one play operator (:func:`tangential_force`) and the onsets closed forms in ``d``. The
+relations are derived in :mod:`mdr_events.theory.symbolic` (``flat_punch_*``).
 
-:mod:`mdr_events.theory.power_law`'s functions of either indenter hand a flat punch to these
-(:data:`CLOSED_FORMS`, filed by :func:`mdr_events.theory.kinds.theory_of`); the material, the friction and the
-works of adhesion come from :class:`~mdr_events.Parameters` (its ``R`` is the paraboloid's and is not used).
+:mod:`mdr_events.theory.power_law`'s functions of either indenter hand a flat punch to these (:data:`CLOSED_FORMS`),
+:mod:`mdr_events.theory.mindlin`'s friction laws to its :data:`FRICTION_FORMS`, both filed by
+:func:`mdr_events.theory.kinds.theory_of`; the material, the friction and the works of adhesion come from
+:class:`~mdr_events.Parameters` (its ``R`` is the paraboloid's and is not used).
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 
+from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.contact.indenters import FlatPunch
 from mdr_events.parameters import Parameters
 from mdr_events.theory import symbolic
 from mdr_events.theory.power_law import ClosedForms, as_output, cap_per_radius, check_work, path_angles
-from mdr_events.validation import check_flag
+from mdr_events.validation import check_flag, real_array
 
 __all__ = ["normal_force", "jump_off", "radius", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
-           "critical_angle_B", "d_crit_B_indentation", "critical_angle_B_indentation", "CLOSED_FORMS"]
+           "critical_angle_B", "d_crit_B_indentation", "critical_angle_B_indentation", "tangential_force",
+           "coulomb_force", "capped_d_crit_B", "capped_d_crit_B_indentation", "capped_critical_angle_B_indentation",
+           "FrictionForms", "CLOSED_FORMS", "FRICTION_FORMS"]
 
 
 def _rel(key: str):
@@ -34,8 +42,7 @@ def _rel(key: str):
 def _punch(profile, what: str) -> FlatPunch:
     """``profile`` if it is a :class:`FlatPunch`; else ``TypeError`` naming it and ``what`` took it."""
     if not isinstance(profile, FlatPunch):
-        raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed for {what}; allowed: a "
-                        "FlatPunch (mdr_events.contact.indenters)")
+        raise TypeError(f"profile={profile!r} is not allowed for {what}; allowed: a FlatPunch")
     return profile
 
 
@@ -330,8 +337,201 @@ def critical_angle_B_indentation(profile: FlatPunch, params: Parameters, adhesio
     return float(np.rad2deg(angle))
 
 
+def tangential_force(x, depth, friction: FrictionLaw | str | None, params: Parameters, profile: FlatPunch):
+    """The tangential force (N) of a flat punch in contact along the samples ``(x, depth)`` of a path, the springs at
+    rest at the first sample (``flat_punch_friction_cap``, ``flat_punch_full_slip_force``).
+
+    Every spring under the face has the cap ``ū = K a + κ max(d, 0)`` (``a`` the punch's radius; ``K a`` alone in
+    tension, an adhesive punch held above the surface) and one anchor history: the springs are one play operator,
+    ``F_x = 2G* a u`` with ``u_k = clip(u_{k−1} + x_k − x_{k−1}, −ū_k, ū_k)``. Between samples on a straight piece of
+    the path, ``x`` and ``ū`` linear (``d`` not crossing 0), ``min_s (ū(s) − x(s))`` lies at an end, so each step is
+    exact: the force is exact at samples that hold the path's corners and its crossings of ``d = 0``.
+
+    Parameters
+    ----------
+    x, depth : array_like
+        The indenter's tangential position and depth at successive instants (1-D, equal lengths, finite, m), the
+        contact held throughout (no pull-off between them).
+    friction : FrictionLaw or str or None
+        The friction law (``None``: the paper's ``"tau0"``).
+    params : Parameters
+        The material and ``τ0``.
+    profile : FlatPunch
+        The punch (its radius is the contact's).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``F_x`` (N) at each sample, the shape of ``x``.
+    """
+    profile = _punch(profile, "flat_punch_force")
+    friction = as_friction_law(friction)
+    positions = real_array("x", x, "a 1-D array of finite tangential positions (m)")
+    depths = real_array("depth", depth, "a 1-D array of finite depths (m), one per x")
+    finite = np.all(np.isfinite(positions)) and np.all(np.isfinite(depths))
+    if positions.ndim != 1 or depths.shape != positions.shape or not finite:
+        raise ValueError(f"x of shape {positions.shape} and depth of shape {depths.shape} are not allowed; allowed: "
+                         "1-D arrays of finite numbers of one length (m)")
+    cap = symbolic.relation("flat_punch_friction_cap").numeric(depths, profile.radius, params.tau0 if friction.uses_tau0
+                                                               else 0.0, friction.coulomb_mu, params.E_star,
+                                                               params.G_star)
+    caps = np.broadcast_to(np.asarray(cap, dtype=float), positions.shape)
+    shift = np.empty_like(positions)
+    u = 0.0
+    for k in range(positions.size):
+        step = positions[k] - positions[k - 1] if k else 0.0
+        u = min(max(u + step, -caps[k]), caps[k])
+        shift[k] = u
+    return 2.0 * params.G_star * profile.radius * shift
+
+
+def coulomb_force(sliding, params: Parameters, contact_radius: float):
+    """Coulomb's part of the virgin curve at a constant depth (N): every spring is compressed by ``d`` alike, so those
+    beyond ``K a`` all slide by ``sliding`` at once, ``2 G* a sliding`` (``F_N`` is linear in the depth).
+
+    Parameters
+    ----------
+    sliding : float or numpy.ndarray
+        The shift beyond ``K a``, at most ``κ d`` (m).
+    params : Parameters
+        The material (``G*``).
+    contact_radius : float
+        The punch's radius ``a`` (m).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The force (N), the shape of ``sliding``.
+    """
+    return 2.0 * params.G_star * contact_radius * sliding
+
+
+def capped_d_crit_B(alpha_arr: np.ndarray, cot: np.ndarray, cap: float, kappa: float, params: Parameters,
+                    profile: FlatPunch, held: bool) -> np.ndarray:
+    r"""Scenario B's pull-off onset under every spring's cap ``K a + κ d`` against the shift ``(d_max − d) cot α``:
+    ``d = (d_max cot α − K a)/(cot α + κ)``, ``-inf`` below the surface (it comes off first) or at 90°.
+
+    .. math:: \frac{d_\mathrm{max} - d}{\tan\alpha} = K a + \kappa d \qquad (20)
+
+    Parameters
+    ----------
+    alpha_arr : numpy.ndarray
+        The path angles (degrees, checked).
+    cot : numpy.ndarray
+        Their cotangents (``+inf`` at 0°).
+    cap : float
+        ``K`` of the law's ``τ0`` part (0 without it).
+    kappa : float
+        ``κ = μ E*/G*`` of its Coulomb part (0 without it).
+    params : Parameters
+        The material, ``τ0``, ``Δγ1`` and ``d_max``.
+    profile : FlatPunch
+        The punch.
+    held : bool
+        Whether an adhesive punch is held above the surface under ``τ0``'s part: the caps are ``K a`` alone there,
+        (21) down to Kendall's depth (:func:`d_crit_B`).
+
+    Returns
+    -------
+    numpy.ndarray
+        The onset depths (m), the shape of ``alpha_arr``.
+    """
+    vertical = alpha_arr >= 90.0
+    with np.errstate(invalid="ignore"):  # α = 0: cot α = +inf, the onset at d_max
+        depth = np.where(np.isinf(cot), params.d_max, (params.d_max * cot - cap * profile.radius) / (cot + kappa))
+    if held:  # held above the surface the caps are K a alone: (21) to the pull-off
+        below = np.asarray(d_crit_B(alpha_arr, profile, params, adhesion=True), dtype=float)
+        return np.where(vertical, -np.inf, np.where(depth < 0.0, below, depth))
+    return np.where(vertical | (depth < 0.0), -np.inf, depth)
+
+
+def capped_d_crit_B_indentation(alpha_arr: np.ndarray, cot: np.ndarray, cap: float, kappa: float,
+                                params: Parameters, profile: FlatPunch) -> np.ndarray:
+    r"""The onset on scenario B's indentation branch under every spring's cap ``K a + κ d`` against the shift
+    ``(d − d_max) cot α``: ``d = (K a + d_max cot α)/(cot α − κ)`` where ``cot α > κ``, else ``+inf`` (never), with
+    adhesion or without.
+
+    .. math:: \frac{d - d_\mathrm{max}}{\tan\alpha} = K a + \kappa d \qquad (20)
+
+    Parameters
+    ----------
+    alpha_arr : numpy.ndarray
+        The path angles (degrees, checked).
+    cot : numpy.ndarray
+        Their cotangents (``+inf`` at 0°).
+    cap : float
+        ``K`` of the law's ``τ0`` part (0 without it).
+    kappa : float
+        ``κ = μ E*/G*`` of its Coulomb part (0 without it).
+    params : Parameters
+        The material, ``τ0`` and ``d_max``.
+    profile : FlatPunch
+        The punch.
+
+    Returns
+    -------
+    numpy.ndarray
+        The onset depths (m), the shape of ``alpha_arr``.
+    """
+    slides = (cot > kappa) & ~(alpha_arr >= 90.0)
+    with np.errstate(divide="ignore", invalid="ignore"):  # (α = 0: the limit d_max)
+        depth = np.where(np.isinf(cot), params.d_max, (cap * profile.radius + params.d_max * cot) / (cot - kappa))
+    return np.where(slides, depth, np.inf)
+
+
+def capped_critical_angle_B_indentation(cap: float, kappa: float, params: Parameters, profile: FlatPunch,
+                                        final_depth: float | None = None) -> float:
+    """The "+" branch's critical angle (degrees) under every spring's cap ``K a + κ d``: slip exactly at the final
+    depth ``F``, ``cot α_c = (K a + κ F)/(F − d_max)``.
+
+    Parameters
+    ----------
+    cap : float
+        ``K`` of the law's ``τ0`` part (0 without it).
+    kappa : float
+        ``κ = μ E*/G*`` of its Coulomb part (0 without it).
+    params : Parameters
+        The material, ``τ0`` and ``d_max``.
+    profile : FlatPunch
+        The punch.
+    final_depth : float, optional
+        The deepest point ``F`` (m); default ``2 d_max``.
+
+    Returns
+    -------
+    float
+        ``α_c`` in degrees.
+    """
+    final = 2.0 * params.d_max if final_depth is None else final_depth
+    return float(math.degrees(math.atan2(final - params.d_max, cap * profile.radius + kappa * final)))
+
+
+@dataclass(frozen=True)
+class FrictionForms:
+    """A kind's own closed forms under the friction laws' caps ``K a + κ (d − g)``, where those of a curved indenter
+    (:mod:`mdr_events.theory.mindlin`) do not serve it: the flat punch's :data:`FRICTION_FORMS`.
+
+    Parameters
+    ----------
+    coulomb_force : callable
+        ``(sliding, params, contact_radius)``: Coulomb's part of the virgin curve (:func:`coulomb_force`).
+    d_crit_B, d_crit_B_indentation, critical_angle_B_indentation : callable
+        Scenario B's onsets and the "+" branch's critical angle (:func:`capped_d_crit_B`,
+        :func:`capped_d_crit_B_indentation`, :func:`capped_critical_angle_B_indentation`).
+    """
+
+    coulomb_force: Callable[..., object]
+    d_crit_B: Callable[..., np.ndarray]
+    d_crit_B_indentation: Callable[..., np.ndarray]
+    critical_angle_B_indentation: Callable[..., float]
+
+
 #: The flat punch's closed forms behind :mod:`mdr_events.theory.power_law`'s functions of either indenter.
 CLOSED_FORMS = ClosedForms(normal_force=normal_force, jump_off=jump_off, pull_off_force=pull_off_force,
                            d_crit_A=d_crit_A, critical_angle_A=critical_angle_A, d_crit_B=d_crit_B,
                            critical_angle_B=critical_angle_B, d_crit_B_indentation=d_crit_B_indentation,
                            critical_angle_B_indentation=critical_angle_B_indentation)
+#: The flat punch's closed forms under :mod:`mdr_events.theory.mindlin`'s friction laws (:class:`FrictionForms`).
+FRICTION_FORMS = FrictionForms(coulomb_force=coulomb_force, d_crit_B=capped_d_crit_B,
+                               d_crit_B_indentation=capped_d_crit_B_indentation,
+                               critical_angle_B_indentation=capped_critical_angle_B_indentation)

@@ -24,6 +24,7 @@ import numpy as np
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile, TabulatedProfile
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic, flat_punch, power_law, symbolic, tabulated
+from mdr_events.theory.flat_punch import FrictionForms
 from mdr_events.theory.power_law import ClosedForms
 
 __all__ = ["IndenterTheory", "theory_of"]
@@ -59,6 +60,9 @@ class IndenterTheory:
     closed_forms : ClosedForms or None, default None
         The kind's closed forms behind :mod:`~mdr_events.theory.power_law`'s functions of either indenter (``None``:
         they do not take the kind).
+    friction_forms : FrictionForms or None, default None
+        The kind's own closed forms under :mod:`~mdr_events.theory.mindlin`'s friction laws (``None``: a curved
+        indenter's serve it).
     """
 
     branch_radius: Callable[..., object]
@@ -69,6 +73,7 @@ class IndenterTheory:
     friction_closed_forms: bool
     flat_face: bool = False
     closed_forms: ClosedForms | None = None
+    friction_forms: FrictionForms | None = None
 
 
 def _any_depth(profile: Profile | None, params: Parameters) -> float:
@@ -127,7 +132,8 @@ _FLAT_PUNCH = IndenterTheory(
     critical_angle=_power_law_critical_angle,
     friction_closed_forms=True,
     flat_face=True,
-    closed_forms=flat_punch.CLOSED_FORMS)
+    closed_forms=flat_punch.CLOSED_FORMS,
+    friction_forms=flat_punch.FRICTION_FORMS)
 _TABLE = IndenterTheory(
     branch_radius=tabulated.contact_radius,
     jump_off=tabulated.jump_off,

@@ -66,7 +66,7 @@ def check_profile(profile) -> Profile:
     TypeError
         Any other type (the paraboloid and a table have their own modules).
     """
-    if not isinstance(profile, (PowerLaw, FlatPunch)):
+    if not isinstance(profile, (PowerLaw, FlatPunch)):  # (what this module takes; each kind's forms: _forms)
         raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: a PowerLaw or "
                         "a FlatPunch (mdr_events.contact.indenters)")
     return profile
@@ -117,7 +117,7 @@ class ClosedForms:
     Each entry takes the arguments of the function of its name (:func:`normal_force`, :func:`jump_off`, ...), the
     profile one of its kind, and checks the others itself.
 
-    Attributes
+    Parameters
     ----------
     normal_force, jump_off, pull_off_force : callable
         The normal force (10) at a depth and radius, the jump-off and the pull-off force.
@@ -131,10 +131,10 @@ class ClosedForms:
     jump_off: Callable[..., dict[str, float]]
     pull_off_force: Callable[..., float]
     d_crit_A: Callable[..., object]
-    critical_angle_A: Callable[..., float]
     d_crit_B: Callable[..., object]
-    critical_angle_B: Callable[..., float]
     d_crit_B_indentation: Callable[..., object]
+    critical_angle_A: Callable[..., float]
+    critical_angle_B: Callable[..., float]
     critical_angle_B_indentation: Callable[..., float]
 
 
