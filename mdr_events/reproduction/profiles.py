@@ -18,6 +18,7 @@ from mdr_events.reproduction.common import FIGURE_DX, FIGURE_STEPS, event_times,
 from mdr_events.reproduction.markdown import INTEGRATED_ACCURACY, markdown_table
 from mdr_events.reproduction.section import Section, Step
 from mdr_events.theory import power_law
+from mdr_events.theory.kinds import theory_of
 
 __all__ = ["PROFILES", "PROFILE_STEM", "PROFILE_ANGLE", "ProfileComparison", "ProfileRow", "matching_power_law",
            "profile_comparison", "profile_rows", "profile_lines"]
@@ -106,7 +107,7 @@ def _gap_text(value: float) -> str:
 def _profile_cells(row: ProfileRow) -> list[str]:
     onset = "none before d_max" if math.isnan(row.onset_closed_form) else f"{row.onset_closed_form * 1e3:.6f} mm"
     found = "none" if math.isnan(row.onset_continuum) else f"{row.onset_continuum * 1e3:.6f} mm"
-    if isinstance(row.profile, FlatPunch):
+    if theory_of(row.profile).flat_face:
         shape = [f"radius {row.profile.radius * 1e3:g} mm", "—"]
     else:
         shape = [f"{row.profile.c:#.6g}", f"{row.profile.n:g}"]

@@ -3,7 +3,9 @@
 The indenter types (:mod:`mdr_events.contact.indenters`) are data and sit below the theory, so what the theory
 computes for each kind is filed here by type: the contact radius of a depth on an adhesive branch, the branch's
 jump-off, how deep the indenter reaches, the springs' profile ``g(x)``, the critical angles of the paper's friction
-law ``τ0``, and whether the closed forms of the other friction laws (:mod:`mdr_events.theory.mindlin`) serve it.
+law ``τ0``, whether the closed forms of the other friction laws (:mod:`mdr_events.theory.mindlin`) serve it, and the
+closed forms :mod:`mdr_events.theory.power_law`'s functions of either indenter hand it to (the power law's own, the
+flat punch's in :mod:`mdr_events.theory.flat_punch`).
 The layers above ask for these by name instead of testing the type. ``None`` is the paper's paraboloid of
 ``Parameters.R``, served by the paper's own functions (:mod:`mdr_events.theory.analytic`) bit for bit.
 
@@ -21,7 +23,9 @@ import numpy as np
 
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile, TabulatedProfile
 from mdr_events.parameters import Parameters
-from mdr_events.theory import analytic, power_law, symbolic, tabulated
+from mdr_events.theory import analytic, flat_punch, power_law, symbolic, tabulated
+from mdr_events.theory.flat_punch import FrictionForms
+from mdr_events.theory.power_law import ClosedForms
 
 __all__ = ["IndenterTheory", "theory_of"]
 
@@ -53,6 +57,12 @@ class IndenterTheory:
     flat_face : bool, default False
         Whether the indenter's face is flat (``f = 0`` under it): its springs' profile ``0`` there and its branch's
         radius the face's on a layer of any thickness too (the generalized MDR's ``g`` of ``f = 0``).
+    closed_forms : ClosedForms or None, default None
+        The kind's closed forms behind :mod:`~mdr_events.theory.power_law`'s functions of either indenter (``None``:
+        they do not take the kind).
+    friction_forms : FrictionForms or None, default None
+        The kind's own closed forms under :mod:`~mdr_events.theory.mindlin`'s friction laws (``None``: a curved
+        indenter's serve it).
     """
 
     branch_radius: Callable[..., object]
@@ -62,6 +72,8 @@ class IndenterTheory:
     critical_angle: Callable[[Profile | None, Parameters, str], float]
     friction_closed_forms: bool
     flat_face: bool = False
+    closed_forms: ClosedForms | None = None
+    friction_forms: FrictionForms | None = None
 
 
 def _any_depth(profile: Profile | None, params: Parameters) -> float:
@@ -110,15 +122,18 @@ _POWER_LAW = IndenterTheory(
     deepest=_any_depth,
     spring_profile=_power_law_springs,
     critical_angle=_power_law_critical_angle,
-    friction_closed_forms=True)
+    friction_closed_forms=True,
+    closed_forms=power_law.CLOSED_FORMS)
 _FLAT_PUNCH = IndenterTheory(
-    branch_radius=power_law.flat_punch_radius,
-    jump_off=power_law.jump_off,
+    branch_radius=flat_punch.radius,
+    jump_off=flat_punch.jump_off,
     deepest=_any_depth,
     spring_profile=_flat_punch_springs,
     critical_angle=_power_law_critical_angle,
     friction_closed_forms=True,
-    flat_face=True)
+    flat_face=True,
+    closed_forms=flat_punch.CLOSED_FORMS,
+    friction_forms=flat_punch.FRICTION_FORMS)
 _TABLE = IndenterTheory(
     branch_radius=tabulated.contact_radius,
     jump_off=tabulated.jump_off,

@@ -37,8 +37,10 @@ zero): the onset is the paper's (20) for any ``τ0`` part, at once (``d_max``) f
 (:func:`d_crit_B`). Further in at ``α`` the old edge's cap is ``K a + κ (d − d_max)`` against the shift
 ``(d − d_max)/tan α``: (20)'s "+" branch at ``α'`` (:func:`d_crit_B_indentation`).
 
-The module is a little over 500 lines: one closed form per function for each friction law (virgin curves, Masing's
-loops, full slip, the onsets of scenarios A and B, the flat punch), each with its numpydoc sections.
+One closed form per function for each friction law (virgin curves, Masing's loops, full slip, the onsets of scenarios
+A and B), each with its numpydoc sections; the flat punch's own (every spring compressed by ``d`` alike: one play
+operator, :func:`flat_punch_force`) are :mod:`mdr_events.theory.flat_punch`'s, filed by
+:func:`mdr_events.theory.kinds.theory_of` (``friction_forms``).
 """
 
 from __future__ import annotations
@@ -50,8 +52,9 @@ from scipy import integrate
 
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.parameters import Parameters
-from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
+from mdr_events.contact.indenters import PowerLaw, Profile
 from mdr_events.theory import combined_onset, power_law, symbolic
+from mdr_events.theory.flat_punch import tangential_force as flat_punch_force
 from mdr_events.theory.kinds import theory_of
 from mdr_events.validation import check_real, real_array, validate_alpha
 
@@ -191,24 +194,34 @@ def _virgin_curve(depth: float, friction: FrictionLaw, params: Parameters, profi
     contact = _contact_radius(depth, params, profile, contact)
     cap = _tau0_per_radius(friction, params) * contact
     kappa = coulomb_cap_ratio(friction, params)
-    full = friction.coulomb_mu * float(power_law.normal_force(depth, radius, profile, params))
+    coulomb = _coulomb_part(depth, friction, params, profile, radius)
 
     def curve(values: np.ndarray) -> np.ndarray:
         magnitude = np.abs(values)
         force = 2.0 * params.G_star * contact * np.minimum(magnitude, cap)
         if kappa > 0.0:
             sliding = np.minimum(np.maximum(magnitude - cap, 0.0), kappa * depth)  # the centre's cap: full slip
-            if isinstance(profile, FlatPunch):  # every spring compressed by d: F_N is linear in the depth
-                coulomb = 2.0 * params.G_star * radius * sliding
-            else:
-                with np.errstate(invalid="ignore"):
-                    coulomb = symbolic.relation("cattaneo_mindlin_force").numeric(
-                        sliding, depth, friction.coulomb_mu, profile.c, profile.n, params.E_star, params.G_star)
-                coulomb = np.where(sliding >= kappa * depth, full, coulomb)
-            force = force + coulomb
+            force = force + coulomb(sliding, kappa)
         return np.sign(values) * force
 
     return curve
+
+
+def _coulomb_part(depth: float, friction: FrictionLaw, params: Parameters, profile: Profile, radius: float):
+    """Coulomb's part of the virgin curve as a function of the shift beyond ``K a`` and ``κ``: Cattaneo–Mindlin's over
+    the compressed zone ``x_c = radius``, ``μ F_N`` from full slip on, or the kind's own (the flat punch's)."""
+    own = theory_of(profile).friction_forms
+    if own is not None:
+        return lambda sliding, kappa: own.coulomb_force(sliding, params, radius)
+    full = friction.coulomb_mu * float(power_law.normal_force(depth, radius, profile, params))
+
+    def cattaneo_mindlin(sliding: np.ndarray, kappa: float) -> np.ndarray:
+        with np.errstate(invalid="ignore"):
+            coulomb = symbolic.relation("cattaneo_mindlin_force").numeric(
+                sliding, depth, friction.coulomb_mu, profile.c, profile.n, params.E_star, params.G_star)
+        return np.where(sliding >= kappa * depth, full, coulomb)
+
+    return cattaneo_mindlin
 
 
 def virgin_force(shift, depth: float, friction: FrictionLaw | str | None, params: Parameters,
@@ -380,55 +393,6 @@ def loop_energy(amplitude, depth: float, friction: FrictionLaw | str | None, par
 
 
 
-def flat_punch_force(x, depth, friction: FrictionLaw | str | None, params: Parameters, profile: FlatPunch):
-    """The tangential force (N) of a flat punch in contact along the samples ``(x, depth)`` of a path, the springs at
-    rest at the first sample (``flat_punch_friction_cap``, ``flat_punch_full_slip_force``).
-
-    Every spring under the face has the cap ``ū = K a + κ max(d, 0)`` (``a`` the punch's radius; ``K a`` alone in
-    tension, an adhesive punch held above the surface) and one anchor history: the springs are one play operator,
-    ``F_x = 2G* a u`` with ``u_k = clip(u_{k−1} + x_k − x_{k−1}, −ū_k, ū_k)``. Between samples on a straight piece of
-    the path, ``x`` and ``ū`` linear (``d`` not crossing 0), ``min_s (ū(s) − x(s))`` lies at an end, so each step is
-    exact: the force is exact at samples that hold the path's corners and its crossings of ``d = 0``.
-
-    Parameters
-    ----------
-    x, depth : array_like
-        The indenter's tangential position and depth at successive instants (1-D, equal lengths, finite, m), the
-        contact held throughout (no pull-off between them).
-    friction : FrictionLaw or str or None
-        The friction law (``None``: the paper's ``"tau0"``).
-    params : Parameters
-        The material and ``τ0``.
-    profile : FlatPunch
-        The punch (its radius is the contact's).
-
-    Returns
-    -------
-    numpy.ndarray
-        ``F_x`` (N) at each sample, the shape of ``x``.
-    """
-    if not isinstance(profile, FlatPunch):
-        raise TypeError(f"profile={profile!r} is not allowed for flat_punch_force; allowed: a FlatPunch")
-    friction = as_friction_law(friction)
-    positions = real_array("x", x, "a 1-D array of finite tangential positions (m)")
-    depths = real_array("depth", depth, "a 1-D array of finite depths (m), one per x")
-    finite = np.all(np.isfinite(positions)) and np.all(np.isfinite(depths))
-    if positions.ndim != 1 or depths.shape != positions.shape or not finite:
-        raise ValueError(f"x of shape {positions.shape} and depth of shape {depths.shape} are not allowed; allowed: "
-                         "1-D arrays of finite numbers of one length (m)")
-    cap = symbolic.relation("flat_punch_friction_cap").numeric(depths, profile.radius, params.tau0 if friction.uses_tau0
-                                                               else 0.0, friction.coulomb_mu, params.E_star,
-                                                               params.G_star)
-    caps = np.broadcast_to(np.asarray(cap, dtype=float), positions.shape)
-    shift = np.empty_like(positions)
-    u = 0.0
-    for k in range(positions.size):
-        step = positions[k] - positions[k - 1] if k else 0.0
-        u = min(max(u + step, -caps[k]), caps[k])
-        shift[k] = u
-    return 2.0 * params.G_star * profile.radius * shift
-
-
 def adhesive_onset_A_is_non_adhesive(friction: FrictionLaw | str | None, profile: Profile | None) -> bool:
     """Whether scenario A's onset with adhesion (Heß's rule, any ``Δγ0``, ``Δγ1``) is the one without: Coulomb's law
     alone, whose tangential force is the compressed zone's, the contact without adhesion of the same path
@@ -448,7 +412,7 @@ def adhesive_onset_A_is_non_adhesive(friction: FrictionLaw | str | None, profile
         ``True`` where the adhesive onset equals the non-adhesive one.
     """
     friction = as_friction_law(friction)
-    return isinstance(profile, FlatPunch) or (friction.uses_mu and not friction.uses_tau0)
+    return theory_of(profile).flat_face or (friction.uses_mu and not friction.uses_tau0)
 
 
 def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, profile: Profile | None = None,
@@ -623,16 +587,11 @@ def d_crit_B(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
     indenter = _indenter(profile, params)
-    if isinstance(indenter, FlatPunch):
-        cot, vertical = _cotangent(alpha_arr)
-        K = _tau0_per_radius(friction, params)
-        with np.errstate(invalid="ignore"):  # α = 0: cot α = +inf, the onset at d_max
-            depth = np.where(np.isinf(cot), params.d_max,
-                             (params.d_max * cot - K * indenter.radius) / (cot + coulomb_cap_ratio(friction, params)))
-        if adhesion and friction.uses_tau0:  # held above the surface the caps are K a alone: (21) to the pull-off
-            held = np.asarray(power_law.d_crit_B(alpha_arr, indenter, params, adhesion=True), dtype=float)
-            return _onset_output(np.where(vertical, -np.inf, np.where(depth < 0.0, held, depth)), alpha_arr)
-        return _onset_output(np.where(vertical | (depth < 0.0), -np.inf, depth), alpha_arr)
+    own = theory_of(indenter).friction_forms
+    if own is not None:
+        depth = own.d_crit_B(alpha_arr, _cotangent(alpha_arr)[0], _tau0_per_radius(friction, params),
+                             coulomb_cap_ratio(friction, params), params, indenter, bool(adhesion and friction.uses_tau0))
+        return _onset_output(depth, alpha_arr)
     if friction.uses_tau0:
         return power_law.d_crit_B(alpha, indenter, params, adhesion=adhesion)
     return _onset_output(np.where(alpha_arr >= 90.0, -np.inf, params.d_max), alpha_arr)
@@ -671,7 +630,7 @@ def critical_angle_B(friction: FrictionLaw | str | None, params: Parameters, pro
     """
     friction = as_friction_law(friction)
     indenter = _indenter(profile, params)
-    if friction.uses_tau0 and (adhesion or isinstance(indenter, FlatPunch)):
+    if friction.uses_tau0 and (adhesion or theory_of(indenter).flat_face):
         return power_law.critical_angle_B(indenter, params, adhesion=adhesion)
     return 90.0
 
@@ -711,17 +670,15 @@ def d_crit_B_indentation(alpha, friction: FrictionLaw | str | None, params: Para
     alpha_arr = validate_alpha(alpha)
     indenter = _indenter(profile, params)
     kappa = coulomb_cap_ratio(friction, params)
-    if adhesion and not isinstance(indenter, FlatPunch) and friction.uses_tau0:
+    own = theory_of(indenter).friction_forms
+    if own is not None:  # (with adhesion or without)
+        depth = own.d_crit_B_indentation(alpha_arr, _cotangent(alpha_arr)[0], _tau0_per_radius(friction, params),
+                                         kappa, params, indenter)
+        return _onset_output(depth, alpha_arr)
+    if adhesion and friction.uses_tau0:
         if kappa == 0.0:
             return power_law.d_crit_B_indentation(alpha, indenter, params, adhesion=True)
         return _onset_output(_combined_onset_B(alpha_arr, friction, params, indenter), alpha_arr)
-    if isinstance(indenter, FlatPunch):
-        cot, vertical = _cotangent(alpha_arr)
-        K = _tau0_per_radius(friction, params)
-        slides = (cot > kappa) & ~vertical
-        with np.errstate(divide="ignore", invalid="ignore"):  # (α = 0: the limit d_max)
-            depth = np.where(np.isinf(cot), params.d_max, (K * indenter.radius + params.d_max * cot) / (cot - kappa))
-        return _onset_output(np.where(slides, depth, np.inf), alpha_arr)
     if kappa == 0.0 and friction.uses_tau0:
         return power_law.d_crit_B_indentation(alpha, indenter, params, adhesion=False)
     effective, exists = _effective_angle(alpha_arr, kappa)
@@ -757,10 +714,10 @@ def critical_angle_B_indentation(friction: FrictionLaw | str | None, params: Par
     friction = as_friction_law(friction)
     indenter = _indenter(profile, params)
     kappa = coulomb_cap_ratio(friction, params)
-    if isinstance(indenter, FlatPunch):
-        final = 2.0 * params.d_max if final_depth is None else final_depth
-        K = _tau0_per_radius(friction, params)
-        return float(math.degrees(math.atan2(final - params.d_max, K * indenter.radius + kappa * final)))
+    own = theory_of(indenter).friction_forms
+    if own is not None:
+        return own.critical_angle_B_indentation(_tau0_per_radius(friction, params), kappa, params, indenter,
+                                                final_depth)
     tau0_angle = power_law.critical_angle_B_indentation(indenter, params, adhesion=False, final_depth=final_depth) \
         if friction.uses_tau0 else 90.0
     return _with_coulomb(tau0_angle, kappa)

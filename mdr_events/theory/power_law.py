@@ -1,4 +1,4 @@
-"""Closed forms of the power-law indenter ``f = c rⁿ`` and of the flat punch, vectorised.
+"""Closed forms of the power-law indenter ``f = c rⁿ``, vectorised.
 
 Every formula is the derived relation of :func:`mdr_events.theory.symbolic.derive_power_law_model`
 (Heß's rule (8) for the profile's Abel transform (3)); the paraboloid ``n = 2, c = 1/(2R)`` gives the
@@ -7,12 +7,17 @@ closed form (the radius at a given depth with adhesion, the slip onset (18)) the
 with a safeguarded, vectorised Newton iteration on a convex function (:func:`convex_root`).
 
 The material, the friction and the works of adhesion come from :class:`~mdr_events.Parameters` (its ``R``
-is the paraboloid's and is not used here); the indenter from the profile.
+is the paraboloid's and is not used here); the indenter from the profile. The functions that take either indenter (a
+power law or the flat punch: :func:`normal_force`, :func:`jump_off`, :func:`pull_off_force`, the slip onsets and
+critical angles) hand it to its kind's :class:`ClosedForms`, filed by :func:`mdr_events.theory.kinds.theory_of`: the
+power law's here (:data:`CLOSED_FORMS`), the flat punch's in :mod:`mdr_events.theory.flat_punch`.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -25,7 +30,7 @@ __all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_
            "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
            "critical_angle_B", "d_crit_B_indentation", "critical_angle_B_indentation", "convex_root", "branch_root", "with_radius_at",
            "flat_punch_radius",
-           "prefactor", "hess_prefactor", "check_profile",
+           "prefactor", "hess_prefactor", "check_profile", "ClosedForms", "CLOSED_FORMS",
            "ADHESIVE_MIN_EXPONENT", "ROOT_RTOL"]
 
 #: With adhesion a power law needs ``n`` above this: below it ``√a`` outgrows ``aⁿ`` and no contact is stable.
@@ -61,7 +66,7 @@ def check_profile(profile) -> Profile:
     TypeError
         Any other type (the paraboloid and a table have their own modules).
     """
-    if not isinstance(profile, (PowerLaw, FlatPunch)):
+    if not isinstance(profile, (PowerLaw, FlatPunch)):  # (what this module takes; each kind's forms: _forms)
         raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: a PowerLaw or "
                         "a FlatPunch (mdr_events.contact.indenters)")
     return profile
@@ -91,8 +96,57 @@ def _power_law_only(profile, what: str) -> PowerLaw:
     return profile
 
 
-def _as_output(values: np.ndarray, like) -> np.ndarray | float:
+def as_output(values: np.ndarray, like) -> np.ndarray | float:
+    """``values`` as a float where ``like`` is a scalar, else as they are."""
     return float(values) if np.ndim(like) == 0 else values
+
+
+def path_angles(alpha, adhesion) -> tuple[np.ndarray, np.ndarray]:
+    """``adhesion`` checked as a flag, ``alpha`` as path angles (degrees, :func:`validate_alpha`), and where they are
+    vertical (``>= 90°``: no tangential shift, never slides)."""
+    check_flag("adhesion", adhesion)
+    alpha_arr = validate_alpha(alpha)
+    return alpha_arr, alpha_arr >= 90.0
+
+
+@dataclass(frozen=True)
+class ClosedForms:
+    """One kind's closed forms behind this module's functions of either indenter (the power law's
+    :data:`CLOSED_FORMS`, the flat punch's :data:`mdr_events.theory.flat_punch.CLOSED_FORMS`).
+
+    Each entry takes the arguments of the function of its name (:func:`normal_force`, :func:`jump_off`, ...), the
+    profile one of its kind, and checks the others itself.
+
+    Parameters
+    ----------
+    normal_force, jump_off, pull_off_force : callable
+        The normal force (10) at a depth and radius, the jump-off and the pull-off force.
+    d_crit_A, d_crit_B, d_crit_B_indentation : callable
+        The slip-onset depths of scenario A (17), (18), B's pull-off and B's indentation branch (20), (21).
+    critical_angle_A, critical_angle_B, critical_angle_B_indentation : callable
+        Their critical angles (degrees).
+    """
+
+    normal_force: Callable[..., object]
+    jump_off: Callable[..., dict[str, float]]
+    pull_off_force: Callable[..., float]
+    d_crit_A: Callable[..., object]
+    d_crit_B: Callable[..., object]
+    d_crit_B_indentation: Callable[..., object]
+    critical_angle_A: Callable[..., float]
+    critical_angle_B: Callable[..., float]
+    critical_angle_B_indentation: Callable[..., float]
+
+
+def _forms(profile) -> ClosedForms:
+    """The closed forms of ``profile``'s kind, ``profile`` checked (a power law or the flat punch).
+
+    Looked up by :func:`mdr_events.theory.kinds.theory_of`, imported when called: kinds files this module's functions
+    (and :mod:`mdr_events.theory.flat_punch` imports this module), so it cannot be imported on this module's import.
+    """
+    from mdr_events.theory.kinds import theory_of
+
+    return theory_of(check_profile(profile)).closed_forms
 
 
 def convex_root(function, derivative, upper, lower, rtol: float = ROOT_RTOL):
@@ -326,12 +380,11 @@ def normal_force(depth, contact_radius, profile: Profile, params: Parameters):
     ValueError
         A ``contact_radius`` other than the flat punch's own.
     """
-    profile = check_profile(profile)
-    if isinstance(profile, FlatPunch):
-        if contact_radius is not None and not np.all(np.asarray(contact_radius) == profile.radius):
-            raise ValueError(f"contact_radius={contact_radius!r} is not allowed for {profile!r}; allowed: None or "
-                             f"the punch's radius {profile.radius!r} m")
-        return _rel("flat_punch_normal_force").numeric(depth, profile.radius, params.E_star)
+    return _forms(profile).normal_force(depth, contact_radius, profile, params)
+
+
+def _normal_force(depth, contact_radius, profile: PowerLaw, params: Parameters):
+    """The power law's :func:`normal_force` (10)."""
     return _rel("power_law_normal_force").numeric(depth, contact_radius, profile.c, profile.n, params.E_star)
 
 
@@ -422,12 +475,12 @@ def jump_off(profile: Profile, params: Parameters, work_of_adhesion: float) -> d
         ``n <= 1/2`` with adhesion.
     """
     work_of_adhesion = _check_work(work_of_adhesion)
-    profile = check_profile(profile)
-    if isinstance(profile, FlatPunch):
-        args = (profile.radius, params.E_star, work_of_adhesion)
-        return {"contact_radius": profile.radius,
-                "depth": float(_rel("flat_punch_pull_off_depth").numeric(*args)),
-                "normal_force": float(_rel("flat_punch_pull_off_force").numeric(*args))}
+    return _forms(profile).jump_off(profile, params, work_of_adhesion)
+
+
+def _jump_off(profile: PowerLaw, params: Parameters, work_of_adhesion: float) -> dict[str, float]:
+    """The power law's :func:`jump_off`: where ``∂d/∂a = 0`` on the branch."""
+    work_of_adhesion = _check_work(work_of_adhesion)
     if work_of_adhesion == 0.0:
         return {"contact_radius": 0.0, "depth": 0.0, "normal_force": 0.0}
     _check_adhesive(profile, work_of_adhesion)
@@ -438,8 +491,8 @@ def jump_off(profile: Profile, params: Parameters, work_of_adhesion: float) -> d
 
 
 def flat_punch_radius(depth, profile: FlatPunch, params: Parameters, work_of_adhesion: float, fold_share: float = 0.0):
-    """The flat punch's contact radius at ``depth``: its own radius down to the jump-off depth (``fold_share`` of it
-    below still holds), ``nan`` below.
+    """The flat punch's contact radius at ``depth`` (:func:`mdr_events.theory.flat_punch.radius`): its own radius down
+    to the jump-off depth (``fold_share`` of it below still holds), ``nan`` below.
 
     Parameters
     ----------
@@ -459,9 +512,9 @@ def flat_punch_radius(depth, profile: FlatPunch, params: Parameters, work_of_adh
     float or numpy.ndarray
         The punch's radius (m), or ``nan`` where the contact has come apart; the shape of ``depth``.
     """
-    bottom = jump_off(profile, params, work_of_adhesion)["depth"] * (1.0 + fold_share)
-    depth = np.asarray(depth, dtype=float)
-    return _as_output(np.where(depth >= bottom, profile.radius, np.nan), depth)
+    from mdr_events.theory.flat_punch import radius  # (it imports this module)
+
+    return radius(depth, profile, params, work_of_adhesion, fold_share)
 
 
 def pull_off_force(profile: Profile, params: Parameters, work_of_adhesion: float) -> float:
@@ -488,9 +541,12 @@ def pull_off_force(profile: Profile, params: Parameters, work_of_adhesion: float
         ``n <= 1/2`` with adhesion.
     """
     work_of_adhesion = _check_work(work_of_adhesion)
-    profile = check_profile(profile)
-    if isinstance(profile, FlatPunch):
-        return jump_off(profile, params, work_of_adhesion)["normal_force"]
+    return _forms(profile).pull_off_force(profile, params, work_of_adhesion)
+
+
+def _pull_off_force(profile: PowerLaw, params: Parameters, work_of_adhesion: float) -> float:
+    """The power law's :func:`pull_off_force`: the minimum of (10) along the branch."""
+    work_of_adhesion = _check_work(work_of_adhesion)
     if work_of_adhesion == 0.0:
         return 0.0
     _check_adhesive(profile, work_of_adhesion)
@@ -532,11 +588,11 @@ def contact_radius(depth, profile: PowerLaw, params: Parameters, work_of_adhesio
     if work_of_adhesion == 0.0:
         with np.errstate(invalid="ignore"):
             radius = _rel("power_law_hertz_radius").numeric(np.maximum(depth_arr, 0.0), profile.c, profile.n)
-        return _as_output(np.where(depth_arr >= 0.0, radius, np.nan), depth_arr)
+        return as_output(np.where(depth_arr >= 0.0, radius, np.nan), depth_arr)
     _check_adhesive(profile, work_of_adhesion)
     kc, k = prefactor(profile), hess_prefactor(params, work_of_adhesion)
     two_n = 2.0 * profile.n
-    point = jump_off(profile, params, work_of_adhesion)
+    point = _jump_off(profile, params, work_of_adhesion)
     s_fold = math.sqrt(point["contact_radius"])
     # κc s^(2n) >= k s + |d| once κc s^(2n) >= 2|d| and κc s^(2n−1) >= 2k (each half covers one term)
     with np.errstate(over="ignore", divide="ignore"):
@@ -545,7 +601,7 @@ def contact_radius(depth, profile: PowerLaw, params: Parameters, work_of_adhesio
                                    np.full(depth_arr.shape, (2.0 * k / kc) ** (1.0 / (two_n - 1.0)))])
     s = convex_root(lambda s: kc * s**two_n - k * s - depth_arr, lambda s: two_n * kc * s ** (two_n - 1.0) - k,
                     upper, s_fold)
-    return _as_output(np.where(depth_arr >= point["depth"], s * s, np.nan), depth_arr)
+    return as_output(np.where(depth_arr >= point["depth"], s * s, np.nan), depth_arr)
 
 
 def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False):
@@ -588,25 +644,23 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
     ValueError
         An angle out of range, or a power law with ``n < 1`` with adhesion.
     """
-    profile = check_profile(profile)
-    check_flag("adhesion", adhesion)
-    alpha_arr = validate_alpha(alpha)
-    vertical = alpha_arr >= 90.0  # straight down: no tangential shift, never slides (+inf, as (17), (18))
+    return _forms(profile).d_crit_A(alpha, profile, params, adhesion)
+
+
+def _d_crit_A(alpha, profile: PowerLaw, params: Parameters, adhesion: bool = False):
+    """The power law's :func:`d_crit_A`."""
+    alpha_arr, vertical = path_angles(alpha, adhesion)  # straight down: never slides (+inf, as (17), (18))
     tan_alpha = np.tan(np.deg2rad(np.where(vertical, 45.0, alpha_arr)))
-    if isinstance(profile, FlatPunch):
-        depth = np.asarray(_rel("flat_punch_d_crit_A").numeric(profile.radius, tan_alpha, params.tau0, params.G_star),
-                           dtype=float)
-        return _as_output(np.where(vertical, np.inf, depth), alpha_arr)
     K = cap_per_radius(params)
     kc = prefactor(profile)
     if not adhesion or params.dgamma0 == 0.0:
         if profile.n == 1.0:
-            return _as_output(np.where(vertical, np.inf, np.where(tan_alpha * K < kc, 0.0, np.nan)), alpha_arr)
+            return as_output(np.where(vertical, np.inf, np.where(tan_alpha * K < kc, 0.0, np.nan)), alpha_arr)
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # (its power 1/(n − 1) near the cone
             # overflows to +inf, "never slides", as the adhesive root beyond the doubles: round twenty)
             depth = _rel("power_law_d_crit_A_hertz").numeric(tan_alpha, profile.c, profile.n, params.tau0,
                                                              params.G_star)
-        return _as_output(np.where(vertical, np.inf, np.asarray(depth, dtype=float)), alpha_arr)
+        return as_output(np.where(vertical, np.inf, np.asarray(depth, dtype=float)), alpha_arr)
     if profile.n < 1.0:
         raise ValueError(f"PowerLaw.n={profile.n!r} is not allowed for the adhesive slip onset; allowed: n >= 1 "
                          "(below it the onset condition may have several roots)")
@@ -624,7 +678,7 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
                         upper, 0.0)
     with np.errstate(over="ignore"):  # (a root near the double range's top: its depth +inf)
         depth = np.asarray(tan_alpha * K * (s * s), dtype=float)
-    return _as_output(np.where(vertical, np.inf, depth), alpha_arr)
+    return as_output(np.where(vertical, np.inf, depth), alpha_arr)
 
 
 def critical_angle_A(profile: Profile, params: Parameters, adhesion: bool = True) -> float:
@@ -650,12 +704,13 @@ def critical_angle_A(profile: Profile, params: Parameters, adhesion: bool = True
     float
         ``α_c`` in degrees.
     """
-    profile = check_profile(profile)
+    return _forms(profile).critical_angle_A(profile, params, adhesion)
+
+
+def _critical_angle_A(profile: PowerLaw, params: Parameters, adhesion: bool = True) -> float:
+    """The power law's :func:`critical_angle_A`."""
     check_flag("adhesion", adhesion)
-    if isinstance(profile, FlatPunch):
-        radius = profile.radius
-    else:
-        radius = contact_radius(params.d_max, profile, params, params.dgamma0 if adhesion else 0.0)
+    radius = contact_radius(params.d_max, profile, params, params.dgamma0 if adhesion else 0.0)
     with np.errstate(divide="ignore"):
         angle = _rel("critical_angle_A").numeric(radius, params.d_max, params.tau0, params.G_star)
     return float(np.rad2deg(angle))
@@ -699,23 +754,21 @@ def d_crit_B(alpha, profile: Profile, params: Parameters, adhesion: bool = False
     ValueError
         An angle out of range, or ``n <= 1/2`` with adhesion.
     """
-    profile = check_profile(profile)
-    check_flag("adhesion", adhesion)
-    alpha_arr = validate_alpha(alpha)
+    return _forms(profile).d_crit_B(alpha, profile, params, adhesion)
+
+
+def _d_crit_B(alpha, profile: PowerLaw, params: Parameters, adhesion: bool = False):
+    """The power law's :func:`d_crit_B`."""
+    alpha_arr, vertical = path_angles(alpha, adhesion)
     tan_alpha = np.tan(np.deg2rad(alpha_arr))
-    vertical = alpha_arr >= 90.0
     K = cap_per_radius(params)
     work = params.dgamma1 if adhesion else 0.0
-    if isinstance(profile, FlatPunch):  # it keeps its radius and comes off whole at Kendall's depth (0 without adhesion)
-        depth = params.d_max - tan_alpha * K * profile.radius
-        apart = depth < jump_off(profile, params, work)["depth"]
-        return _as_output(np.where(vertical | apart, -np.inf, depth), alpha_arr)
     if work > 0.0:
         _check_adhesive(profile, work)
     kc, k = prefactor(profile), hess_prefactor(params, work)
     two_n = 2.0 * profile.n
     slope = np.where(vertical, 0.0, tan_alpha * K)
-    fold = jump_off(profile, params, work)
+    fold = _jump_off(profile, params, work)
     s_fold = math.sqrt(fold["contact_radius"])
     upper = math.sqrt(float(contact_radius(params.d_max, profile, params, work)))
     if not two_n >= 1.0:
@@ -727,7 +780,7 @@ def d_crit_B(alpha, profile: Profile, params: Parameters, adhesion: bool = False
     depth = params.d_max - slope * radius
     # the root lies below the fold where the function is still negative at it: the contact comes apart first
     apart = (kc * s_fold**two_n - k * s_fold + slope * s_fold**2 - params.d_max > 0.0) if work > 0.0 else False
-    return _as_output(np.where(vertical | apart, -np.inf, depth), alpha_arr)
+    return as_output(np.where(vertical | apart, -np.inf, depth), alpha_arr)
 
 
 def critical_angle_B(profile: Profile, params: Parameters, adhesion: bool = True) -> float:
@@ -753,14 +806,15 @@ def critical_angle_B(profile: Profile, params: Parameters, adhesion: bool = True
     float
         ``α_c`` in degrees.
     """
-    profile = check_profile(profile)
+    return _forms(profile).critical_angle_B(profile, params, adhesion)
+
+
+def _critical_angle_B(profile: PowerLaw, params: Parameters, adhesion: bool = True) -> float:
+    """The power law's :func:`critical_angle_B`."""
     check_flag("adhesion", adhesion)
-    if isinstance(profile, FlatPunch):  # comes off whole, at Kendall's depth (at the surface without adhesion)
-        point = jump_off(profile, params, params.dgamma1 if adhesion else 0.0)
-    elif not adhesion or params.dgamma1 == 0.0:
+    if not adhesion or params.dgamma1 == 0.0:
         return 90.0
-    else:
-        point = jump_off(profile, params, params.dgamma1)
+    point = _jump_off(profile, params, params.dgamma1)
     with np.errstate(divide="ignore"):
         angle = _rel("critical_angle_B").numeric(point["contact_radius"], point["depth"], params.d_max, params.tau0,
                                                  params.G_star)
@@ -803,13 +857,13 @@ def d_crit_B_indentation(alpha, profile: Profile, params: Parameters, adhesion: 
     ValueError
         An angle out of range, or a power law with ``n < 1``.
     """
-    profile = check_profile(profile)
-    check_flag("adhesion", adhesion)
-    alpha_arr = validate_alpha(alpha)
-    vertical = alpha_arr >= 90.0
+    return _forms(profile).d_crit_B_indentation(alpha, profile, params, adhesion)
+
+
+def _d_crit_B_indentation(alpha, profile: PowerLaw, params: Parameters, adhesion: bool = False):
+    """The power law's :func:`d_crit_B_indentation`."""
+    alpha_arr, vertical = path_angles(alpha, adhesion)
     slope = np.where(vertical, 0.0, np.tan(np.deg2rad(alpha_arr))) * cap_per_radius(params)
-    if isinstance(profile, FlatPunch):
-        return _as_output(np.where(vertical, np.inf, params.d_max + slope * profile.radius), alpha_arr)
     if profile.n < 1.0:
         raise ValueError(f"PowerLaw.n={profile.n!r} is not allowed for the indentation branch's slip onset; allowed: "
                          "n >= 1")
@@ -829,7 +883,7 @@ def d_crit_B_indentation(alpha, profile: Profile, params: Parameters, adhesion: 
                         lambda s: two_n * kc * s ** (two_n - 1.0) - k - 2.0 * slope * s, upper, 0.0)
     with np.errstate(over="ignore"):  # (a root near the double range's top, n -> 1: its depth +inf, as no root's)
         depth = params.d_max + slope * s * s
-    return _as_output(np.where(vertical | np.isnan(s), np.inf, depth), alpha_arr)
+    return as_output(np.where(vertical | np.isnan(s), np.inf, depth), alpha_arr)
 
 
 def critical_angle_B_indentation(profile: Profile, params: Parameters, adhesion: bool = True,
@@ -862,13 +916,24 @@ def critical_angle_B_indentation(profile: Profile, params: Parameters, adhesion:
     ValueError
         A ``final_depth`` not beyond ``d_max``.
     """
-    profile = check_profile(profile)
+    return _forms(profile).critical_angle_B_indentation(profile, params, adhesion, final_depth)
+
+
+def _critical_angle_B_indentation(profile: PowerLaw, params: Parameters, adhesion: bool = True,
+                                  final_depth: float | None = None) -> float:
+    """The power law's :func:`critical_angle_B_indentation`."""
     check_flag("adhesion", adhesion)
     final = 2.0 * params.d_max if final_depth is None else final_depth
     if not (isinstance(final, (int, float)) and math.isfinite(final) and final > params.d_max):
         raise ValueError(f"final_depth={final!r} is not allowed; allowed: a finite depth > d_max = {params.d_max!r} m")
-    radius = profile.radius if isinstance(profile, FlatPunch) else float(
-        contact_radius(final, profile, params, params.dgamma0 if adhesion else 0.0))
+    radius = float(contact_radius(final, profile, params, params.dgamma0 if adhesion else 0.0))
     with np.errstate(divide="ignore"):
         angle = _rel("critical_angle_B_indentation").numeric(radius, final, params.d_max, params.tau0, params.G_star)
     return float(np.rad2deg(angle))
+
+
+#: The power law's closed forms behind this module's functions of either indenter (:class:`ClosedForms`).
+CLOSED_FORMS = ClosedForms(normal_force=_normal_force, jump_off=_jump_off, pull_off_force=_pull_off_force,
+                           d_crit_A=_d_crit_A, critical_angle_A=_critical_angle_A, d_crit_B=_d_crit_B,
+                           critical_angle_B=_critical_angle_B, d_crit_B_indentation=_d_crit_B_indentation,
+                           critical_angle_B_indentation=_critical_angle_B_indentation)

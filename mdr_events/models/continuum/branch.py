@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 
-from mdr_events.theory import analytic, power_law, symbolic, tabulated
+from mdr_events.theory import analytic, flat_punch, power_law, symbolic, tabulated
 from mdr_events.theory.quartic import depressed_quartic_root
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, TabulatedProfile
@@ -452,7 +452,7 @@ class FlatPunchBranch(Branch):
 
     def __init__(self, params: Parameters, work: float, profile: FlatPunch):
         self.params, self.work, self.profile = params, work, profile
-        point = power_law.jump_off(profile, params, work)
+        point = flat_punch.jump_off(profile, params, work)
         self.jump_off_radius, self.jump_off_depth = point["contact_radius"], point["depth"]
         self._floor = math.sqrt(self.jump_off_radius)
 
@@ -481,10 +481,10 @@ class FlatPunchBranch(Branch):
         return np.where(a > 0, self.jump_off_depth, 0.0)
 
     def radii(self, depth: np.ndarray) -> np.ndarray:
-        return np.asarray(power_law.flat_punch_radius(depth, self.profile, self.params, self.work, FOLD_SHARE))
+        return np.asarray(flat_punch.radius(depth, self.profile, self.params, self.work, FOLD_SHARE))
 
     def radius(self, depth: float, rtol: float) -> float:
-        return float(power_law.flat_punch_radius(depth, self.profile, self.params, self.work, FOLD_SHARE))
+        return float(flat_punch.radius(depth, self.profile, self.params, self.work, FOLD_SHARE))
 
 
 class TabulatedBranch(Branch):

@@ -26,8 +26,8 @@ import numpy as np
 
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.parameters import Parameters
-from mdr_events.contact.indenters import FlatPunch
 from mdr_events.theory import mindlin, power_law
+from mdr_events.theory.kinds import theory_of
 
 from .media import HALF_SPACE_MEDIUM, HalfSpaceMedium
 
@@ -74,4 +74,4 @@ def split_regions(caps: Caps, dgamma0: float, dgamma1: float, profile=None) -> b
     compressed ones add Coulomb's: the compressed zone and the tensile annulus are laid out apart, split at the moving
     ``x_c`` (:mod:`.split_span`). On the flat punch every spring shares one cap (module docstring)."""
     adhesive = dgamma0 != 0.0 or dgamma1 != 0.0
-    return caps.K > 0.0 and caps.kappa > 0.0 and adhesive and not isinstance(profile, FlatPunch)
+    return caps.K > 0.0 and caps.kappa > 0.0 and adhesive and not theory_of(profile).flat_face

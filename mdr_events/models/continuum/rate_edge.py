@@ -28,10 +28,10 @@ import numpy as np
 from scipy.optimize import minimize_scalar
 
 from mdr_events.contact.adhesion import RateDependentAdhesion, check_rate_law
-from mdr_events.contact.indenters import FlatPunch
 from mdr_events.models.indenters import SimulatedProfile, check_simulated_profile
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
+from mdr_events.theory.kinds import theory_of
 from mdr_events.theory.rate_adhesion import edge_speed_scalar
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.validation import check_count, check_real, real_array, shown
@@ -269,7 +269,7 @@ class _EdgeODE:
     def __init__(self, law: RateDependentAdhesion, params: Parameters, profile: SimulatedProfile, segment: Segment):
         self.law, self.segment = law, segment
         self.profile_depth = make_branch(params, 0.0, profile).depth  # g(a): the branch without adhesion
-        self.limit = profile.radius if isinstance(profile, FlatPunch) else math.inf
+        self.limit = profile.radius if theory_of(profile).flat_face else math.inf  # (the face's edge)
         self.E_star = params.E_star
         self.evaluations = 0
         self.compressed_at: float | None = None
@@ -417,7 +417,7 @@ def solve_edge(params: Parameters, path: Path, law: RateDependentAdhesion, profi
     if law.works_at_rest != (params.dgamma0, params.dgamma1):
         raise ValueError(f"law={law!r} is not allowed with dgamma0={params.dgamma0!r}, dgamma1={params.dgamma1!r} "
                          "J/m²; allowed: a law whose works at rest are the parameters'")
-    jump_in = model.grow.radius(0.0, 1e-14) if not isinstance(profile, FlatPunch) else profile.radius
+    jump_in = profile.radius if theory_of(profile).flat_face else model.grow.radius(0.0, 1e-14)
     run = EdgeRun(model)
     entries = list(path.entry_times())
     state = None  # (t, a) in contact, or None
@@ -471,7 +471,7 @@ def _touch(run: EdgeRun, law: RateDependentAdhesion, profile, segment: Segment, 
     """A contact made at ``when`` (``d = 0``): the radius just after the jump-in's start (module docstring)."""
     kind = EdgeEventKind.RE_CONTACT if run.events else EdgeEventKind.FIRST_CONTACT
     run.events.append(EdgeEvent(when, kind, float(segment.d(when)), 0.0))
-    if isinstance(profile, FlatPunch):
+    if theory_of(profile).flat_face:  # the whole face at once
         return (when, jump_in)
     start = START_SPEED ** (-law.n / 3.0) * jump_in
     power = 1.0 + 3.0 / law.n
