@@ -41,6 +41,7 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.kernel_model import KernelModel
 
 from .extrema import extremum_names, solution_extrema
+from .play_bound import sticking
 from .play_pieces import log_pieces, reversal_end
 from .play_reach import constant_part, pressed_time, reach_times, reach_ulps
 from .play_search import EVENT_HALVINGS, brent, halve, searched
@@ -50,7 +51,7 @@ from .state import Event, EventKind
 from .tolerances import Tolerances
 
 __all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "PROBE_POINTS",
-           "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH"]
+           "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH", "PROBE_BOUND"]
 
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
@@ -72,6 +73,9 @@ ROOT_ULPS = 64
 #: but for ``x`` (:mod:`.play_reach`; ``False``: Brent's root everywhere, the route of before, which the tests compare
 #: it with).
 CLOSED_REACH = True
+#: Whether the probes of a time are skipped where :func:`~.play_bound.sticking` proves no spring is at a cap
+#: (``False``: read at every time where no node is, the route of before, which the tests compare it with).
+PROBE_BOUND = True
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
 EXTREMUM_XTOL = 1e-12
 #: The springs' events the spans' frictionless run logs and this route replaces.
@@ -205,6 +209,9 @@ def _probed_all(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> tup
                       if coulomb_alone else state.length / radius for state, coulomb_alone, radius in zip(states, alone, a)])
     share[alone & ~(edge > 0.0)] = 0.0  # (no compressed springs: none at a cap)
     probed = np.flatnonzero((share == 0.0) & (edge > 0.0))
+    if PROBE_BOUND and probed.size:  # (where no spring can be at a cap the probes would find none: play_bound)
+        stuck = sticking(play, np.array(times)[probed])
+        probed = probed[~stuck]
     spread = np.zeros(probed.size, bool)  # (a probe at a cap where the share is 0)
     grid = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)
     for first in range(0, probed.size, PROBE_CHUNK):
