@@ -5,6 +5,10 @@ find no spring at a cap and are not read. Checked against the probes themselves 
 built to defeat the bound: their least ``μρ`` inside the contact, not at the centre), for its reach (it passes up to
 the onset's output spacing), where it must not pass, and the run against the route of before
 (``play_run.PROBE_BOUND = False``) at every output, bit for bit (the bound only skips readings whose answer it knows).
+Beside it, the probes of the times on one part where every window is fixed but for ``x`` (a fretting stroke before its
+slip onset) read in one evaluation of the anchors (``PlaySprings.caps_over``, ``play_run.SHARED_PROBES``): their
+labels against each time's own, the times that must not be read together (a clamp between them, a moving radius, a
+pinned radius on a moving depth), and the fretting run against the route of before.
 
 No tolerance is spent: the probes' labels are the route's own, and the runs are compared exactly.
 """
@@ -150,3 +154,86 @@ def test_the_run_is_the_route_of_before_at_every_output(adhesive, motion, monkey
         probed[bound] = sum(counted)
     assert runs[True].identical(runs[False])
     assert probed[True] < probed[False]
+
+
+# -- the probes of a part where every window is fixed but for x, read in one evaluation (play_run.SHARED_PROBES) --
+
+def fretting() -> me.Paths:
+    """In to ``d_max``, one tangential cycle of ±1 mm there, and out (the strokes' times before their slip onset have
+    no node at a cap: their probes are read)."""
+    d_max = me.Parameters.paper().d_max
+    x, d = [0.0, 0.0, 1e-3, -1e-3, 0.0, 0.0], [0.0, d_max, d_max, d_max, d_max, -1e-5]
+    return me.Paths({"fretting": me.Path(np.column_stack([x, d]), me.Parameters.paper().v)})
+
+
+@pytest.fixture(scope="module")
+def fretting_play():
+    with pytest.MonkeyPatch.context() as monkeypatch:
+        return play_of("tau0+coulomb", monkeypatch, motion=fretting())
+
+
+def stroke_times(play: PlaySprings, corner: int) -> np.ndarray:
+    """Times inside the stroke that starts at the path's ``corner`` (a constant depth, ``x`` linear)."""
+    corner_t = play.path_corners()[0]
+    return np.linspace(corner_t[corner], corner_t[corner + 1], TIMES + 2)[1:-1]
+
+
+@pytest.mark.parametrize("corner", [1, 2])
+def test_the_caps_over_a_part_are_each_time_s_own(corner, fretting_play):
+    """On a stroke (a part of ``constant_part``) the probes' labels read once for all its times are those each time's
+    own evaluation gives, bit for bit, and the onset lies inside (both labels occur)."""
+    play = fretting_play
+    times = stroke_times(play, corner)
+    assert play_run.constant_part(play, float(times[0]), float(times[-1])) == times[0]
+    xi = play.radius(float(times[0])) * PROBES
+    together = play.caps_over(xi, times)
+    alone = np.array([play.anchors(xi, float(t))[1] < 0 for t in times])
+    assert np.array_equal(together, alone)
+    assert np.any(together) and not np.all(together)
+
+
+def test_times_across_a_clamp_or_a_moving_radius_are_not_shared(fretting_play):
+    """Times on both sides of a corner (a clamp of the chain between them), or where the radius moves (the way in),
+    are each read on their own."""
+    play = fretting_play
+    corner_t = play.path_corners()[0]
+    across = np.concatenate([stroke_times(play, 1)[-3:], stroke_times(play, 2)[:3]])
+    edge = np.full(across.size, play.radius(float(across[0])))
+    groups = play_run._shared_parts(play, across, edge, np.arange(across.size))
+    assert sorted(len(group) for group in groups) == [3, 3]
+    moving = np.linspace(corner_t[0], corner_t[1], 8)[1:-1]
+    edge = np.array([play.radius(float(t)) for t in moving])
+    assert all(len(group) == 1 for group in play_run._shared_parts(play, moving, edge, np.arange(moving.size)))
+
+
+def test_the_fretting_run_with_shared_probes_is_the_route_of_before(monkeypatch):
+    """The whole fretting run with the strokes' probes read together against each time's own: the same at every
+    output, bit for bit, in fewer evaluations of the anchors."""
+    runs, calls = {}, {}
+    anchors = PlaySprings.anchors
+    for shared in (False, True):
+        monkeypatch.setattr(play_run, "SHARED_PROBES", shared)
+        counted = []
+
+        def counting(self, xi, t, counted=counted):
+            counted.append(np.size(xi))
+            return anchors(self, xi, t)
+
+        monkeypatch.setattr(PlaySprings, "anchors", counting)
+        runs[shared] = me.simulate(contact_of("tau0+coulomb"), fretting(), "continuum", samples=SAMPLES)
+        calls[shared] = len(counted)
+    assert runs[True].identical(runs[False])
+    assert calls[True] < calls[False]
+
+
+def test_times_of_a_pinned_radius_on_a_moving_depth_are_not_shared(monkeypatch):
+    """With adhesion the radius rests (pinned) while the indenter starts out: the same probes at times with the same
+    clamps of the chain before them, but the windows move with ``d`` (each spring's Coulomb part, its crossings of
+    ``d = g``): each time is read on its own."""
+    play = play_of("tau0+coulomb", monkeypatch, adhesive=True, motion=fretting())
+    corner_t = play.path_corners()[0]
+    times = np.linspace(corner_t[-2], corner_t[-1], 41)[1:4]
+    edge = np.array([play.radius(float(t)) for t in times])
+    keys = np.searchsorted(play.chain.times, times, side="left")
+    assert np.all(edge == edge[0]) and np.all(keys == keys[0])  # (what the grouping reads first agrees)
+    assert all(len(group) == 1 for group in play_run._shared_parts(play, times, edge, np.arange(times.size)))

@@ -425,6 +425,32 @@ class PlaySprings:
         edges = _on_edge(before, lower, upper, EDGE_ROUND_OFF * (self._x_scale + largest), pressed)
         return anchor, label, edges, np.maximum(lower - before, before - upper)
 
+    def caps_over(self, xi, times) -> np.ndarray:
+        """Whether each spring is at a cap at each of ``times``, where the same clamps precede them all (no clamp time
+        of the chain in ``[times[0], times[-1])``, every window fixed but for ``x``: a part of
+        :func:`~.play_reach.constant_part`): the anchors before the clamp read once, at the first time, each time's
+        window its own, the labels :meth:`anchors` gives at each time (negative: at a cap), bit for bit.
+
+        Parameters
+        ----------
+        xi : numpy.ndarray
+            The springs' coordinates (m), within the contact at every time.
+        times : numpy.ndarray
+            The times (s, path clock), increasing, on one such part.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``(times.size, xi.size)``: whether each spring is at a cap at each time.
+        """
+        xi, times = np.asarray(xi, dtype=float), np.asarray(times, dtype=float)
+        before = self._before_clamp(xi, float(times[0]))[0]
+        g, ratio = self.line.profile(xi), self.line.ratio(xi)
+        x_t = self._x(times)[:, None]
+        cap = self._shifts_at(times)[:, None] + ratio * np.maximum(self._d(times)[:, None] - g, 0.0)
+        lower, upper = x_t - cap, x_t + cap  # (the clamp at t of _anchors: raised below L or on a window of no
+        return (before < lower) | (lower == upper) | (before > upper)  # width, lowered above U)
+
     def windows_before(self, xi, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Each spring's anchor before the clamp at ``t`` (every clamp of its chain before ``t`` applied) and its window
         ``[L, U] = [x − c, x + c]`` at ``t`` (:mod:`.play_reach` reads a spring's time to reach its cap off them).
