@@ -60,7 +60,7 @@ from .play_quadrature import EDGE_SHARE, NODES, _Breaks, _Quadrature
 __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
            "UPPER_CAP", "PANELS", "NODES", "EDGE_SHARE", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
            "GOLDEN_TABLE_RTOL", "GOLDEN_TABLE_POINTS",
-           "CONCAVITY_SAMPLES", "EDGE_ROUND_OFF"]
+           "CONCAVITY_SAMPLES", "EDGE_ROUND_OFF", "REMEMBER_SHIFTS"]
 
 #: Panels of ``[0, a]`` before the kinks are added.
 PANELS = 8
@@ -85,6 +85,9 @@ PRESSED_ROUND_OFF = 1e-12
 #: ``ρ(ξ)`` constant to 7e-13: thousands of such pairs, 1e-16 m off the edge, along the re-contact path of
 #: tests/models/test_layer_coulomb.py).
 EDGE_ROUND_OFF = 1e-12
+#: Whether :meth:`PlaySprings.remember_radii` reads ``ū(a)`` of its times in one call (``False``: one call a time, as
+#: before; the same values bit for bit, elementwise operations of the cap's table).
+REMEMBER_SHIFTS = True
 #: Provenance codes: attached and never moved (plus the segment), a clamp's lower edge, its upper edge
 _ATTACHED, _LOWER, _UPPER = 0, 1, 2
 #: The provenance of a spring at the lower cap at the time asked (in tension, compressed), and at the upper one
@@ -522,16 +525,23 @@ class PlaySprings:
 
     def remember_radii(self, times) -> None:
         """Read ``a(t)`` at many times in one call of the history (the layer's branch inverted for all of them at
-        once, to its ``RADII_RTOL``) and remember them for :meth:`radius`.
+        once, to its ``RADII_RTOL``) and remember them for :meth:`radius`, and ``ū(a(t))`` in one call of the cap's
+        table for :meth:`shift` (:data:`REMEMBER_SHIFTS`; each element's value as a call on it alone gives it).
 
         Parameters
         ----------
         times : array_like
             The times (s, path clock): the run's output times.
         """
-        times = np.asarray([time for time in np.ravel(times) if float(time) not in self._radii], dtype=float)
-        if times.size:
-            self._radii.update(zip(times.tolist(), self.history.radii(times).tolist()))
+        asked = [float(time) for time in np.ravel(times)]
+        fresh = np.asarray([time for time in asked if time not in self._radii], dtype=float)
+        if fresh.size:
+            self._radii.update(zip(fresh.tolist(), self.history.radii(fresh).tolist()))
+        if REMEMBER_SHIFTS:  # (``ū(a)`` of the times in one call of the cap's table, each as :meth:`_shift_at` reads it)
+            unread = list(dict.fromkeys(time for time in asked if (time, None) not in self._shifts))
+            if unread:
+                radii = np.array([self._radii[time] for time in unread])
+                self._shifts.update(zip(((time, None) for time in unread), self.line.shift(radii).tolist()))
 
     def path_corners(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The path's corners: their times (s, path clock), ``x`` and ``d`` (m).
