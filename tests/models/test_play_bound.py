@@ -6,7 +6,7 @@ built to defeat the bound: their least ``μρ`` inside the contact, not at the c
 the onset's output spacing), where it must not pass, and the run against the route of before
 (``play_run.PROBE_BOUND = False``) at every output, bit for bit (the bound only skips readings whose answer it knows).
 Beside it, the probes of the times on one part where every window is fixed but for ``x`` (a fretting stroke before its
-slip onset) read in one evaluation of the anchors (``PlaySprings.caps_over``, ``play_run.SHARED_PROBES``): their
+slip onset) read in one evaluation of the anchors (``PlaySprings.caps_over``, ``play_probes.SHARED_PROBES``): their
 labels against each time's own, the times that must not be read together (a clamp between them, a moving radius, a
 pinned radius on a moving depth), and the fretting run against the route of before.
 
@@ -21,8 +21,9 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events.models.continuum import play_run
+from mdr_events.models.continuum import play_probes, play_run
 from mdr_events.models.continuum.play_bound import _first_segment, sticking
+from mdr_events.models.continuum.play_reach import constant_part
 from mdr_events.models.continuum.play_springs import PlaySprings
 from play_recorders import made_plays
 
@@ -156,7 +157,7 @@ def test_the_run_is_the_route_of_before_at_every_output(adhesive, motion, monkey
     assert probed[True] < probed[False]
 
 
-# -- the probes of a part where every window is fixed but for x, read in one evaluation (play_run.SHARED_PROBES) --
+# -- the probes of a part where every window is fixed but for x, read in one evaluation (play_probes.SHARED_PROBES) --
 
 def fretting() -> me.Paths:
     """In to ``d_max``, one tangential cycle of ±1 mm there, and out (the strokes' times before their slip onset have
@@ -184,7 +185,7 @@ def test_the_caps_over_a_part_are_each_time_s_own(corner, fretting_play):
     own evaluation gives, bit for bit, and the onset lies inside (both labels occur)."""
     play = fretting_play
     times = stroke_times(play, corner)
-    assert play_run.constant_part(play, float(times[0]), float(times[-1])) == times[0]
+    assert constant_part(play, float(times[0]), float(times[-1])) == times[0]
     xi = play.radius(float(times[0])) * PROBES
     together = play.caps_over(xi, times)
     alone = np.array([play.anchors(xi, float(t))[1] < 0 for t in times])
@@ -199,11 +200,11 @@ def test_times_across_a_clamp_or_a_moving_radius_are_not_shared(fretting_play):
     corner_t = play.path_corners()[0]
     across = np.concatenate([stroke_times(play, 1)[-3:], stroke_times(play, 2)[:3]])
     edge = np.full(across.size, play.radius(float(across[0])))
-    groups = play_run._shared_parts(play, across, edge, np.arange(across.size))
+    groups = play_probes.shared_parts(play, across, edge, np.arange(across.size))
     assert sorted(len(group) for group in groups) == [3, 3]
     moving = np.linspace(corner_t[0], corner_t[1], 8)[1:-1]
     edge = np.array([play.radius(float(t)) for t in moving])
-    assert all(len(group) == 1 for group in play_run._shared_parts(play, moving, edge, np.arange(moving.size)))
+    assert all(len(group) == 1 for group in play_probes.shared_parts(play, moving, edge, np.arange(moving.size)))
 
 
 def test_the_fretting_run_with_shared_probes_is_the_route_of_before(monkeypatch):
@@ -212,7 +213,7 @@ def test_the_fretting_run_with_shared_probes_is_the_route_of_before(monkeypatch)
     runs, calls = {}, {}
     anchors = PlaySprings.anchors
     for shared in (False, True):
-        monkeypatch.setattr(play_run, "SHARED_PROBES", shared)
+        monkeypatch.setattr(play_probes, "SHARED_PROBES", shared)
         counted = []
 
         def counting(self, xi, t, counted=counted):
@@ -236,4 +237,4 @@ def test_times_of_a_pinned_radius_on_a_moving_depth_are_not_shared(monkeypatch):
     edge = np.array([play.radius(float(t)) for t in times])
     keys = np.searchsorted(play.chain.times, times, side="left")
     assert np.all(edge == edge[0]) and np.all(keys == keys[0])  # (what the grouping reads first agrees)
-    assert all(len(group) == 1 for group in play_run._shared_parts(play, times, edge, np.arange(times.size)))
+    assert all(len(group) == 1 for group in play_probes.shared_parts(play, times, edge, np.arange(times.size)))

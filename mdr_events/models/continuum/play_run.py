@@ -30,7 +30,7 @@ share as before (:data:`CLOSED_REACH` ``False``: the route of before).
 The probes are not read where a bound proves no spring is at a cap (:func:`~.play_bound.sticking`: along the first
 segment in contact, before the slip onset; :data:`PROBE_BOUND`), and the probes of the times on one part of
 :func:`~.play_reach.constant_part` (a fretting stroke before its slip onset) are read in one evaluation of the
-anchors (:meth:`~.play_springs.PlaySprings.caps_over`, :data:`SHARED_PROBES`); each ``False`` is the route of before,
+anchors (:meth:`~.play_springs.PlaySprings.caps_over`, :data:`~.play_probes.SHARED_PROBES`); each ``False`` is the route of before,
 the same answers bit for bit.
 """
 
@@ -49,6 +49,7 @@ from mdr_events.models.kernel_model import KernelModel
 from .extrema import extremum_names, solution_extrema
 from .play_bound import sticking
 from .play_pieces import log_pieces, reversal_end
+from .play_probes import probes_at_cap
 from .play_reach import constant_part, pressed_time, reach_times, reach_ulps
 from .play_search import EVENT_HALVINGS, brent, halve, searched
 from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, SpringState, spring_line
@@ -57,7 +58,7 @@ from .state import Event, EventKind
 from .tolerances import Tolerances
 
 __all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "PROBE_POINTS",
-           "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH", "PROBE_BOUND", "SHARED_PROBES"]
+           "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH", "PROBE_BOUND"]
 
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
@@ -82,9 +83,6 @@ CLOSED_REACH = True
 #: Whether the probes of a time are skipped where :func:`~.play_bound.sticking` proves no spring is at a cap
 #: (``False``: read at every time where no node is, the route of before, which the tests compare it with).
 PROBE_BOUND = True
-#: Whether the probes of the times on one part where every window is fixed but for ``x`` are read in one evaluation
-#: of the anchors (:func:`_probes_at_cap`; ``False``: each time's own, the route of before, which the tests compare).
-SHARED_PROBES = True
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
 EXTREMUM_XTOL = 1e-12
 #: The springs' events the spans' frictionless run logs and this route replaces.
@@ -221,59 +219,13 @@ def _probed_all(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> tup
     if PROBE_BOUND and probed.size:  # (where no spring can be at a cap the probes would find none: play_bound)
         stuck = sticking(play, np.array(times)[probed])
         probed = probed[~stuck]
-    at = _probes_at_cap(play, np.array(times), edge, probed)
+    at = probes_at_cap(play, np.array(times), edge, probed, np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS),
+                       PROBE_CHUNK)
     spread = np.any(at, axis=1)  # (a probe at a cap where the share is 0)
     at_cap[probed] = at[:, [0, -1]]
     share[probed[spread]] = SMALLEST
     whole = np.all(at_cap, axis=1) | ~(edge > 0.0) | (share == SMALLEST)
     return states, np.where(whole, share, np.minimum(share, 1.0 - 2.0 * FULL_SHARE))
-
-
-def _probes_at_cap(play: PlaySprings, times: np.ndarray, edge: np.ndarray, rows: np.ndarray) -> np.ndarray:
-    """Whether each of the :data:`PROBE_POINTS` probes (``edge`` of each time's ``[0, 1 − PROBE_SHARE]``) is at a
-    cap at each time of ``rows``: the times of one part of :func:`~.play_reach.constant_part` with the same clamps
-    before them and the same probes read together (:meth:`~.play_springs.PlaySprings.caps_over`: one evaluation of
-    the anchors for all of them, a fretting stroke's times before its slip onset), the others in chunks of
-    :data:`PROBE_CHUNK` times (one evaluation each)."""
-    grid = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)
-    out = np.zeros((rows.size, grid.size), bool)
-    alone = []
-    for group in _shared_parts(play, times, edge, rows):
-        if len(group) == 1:
-            alone += group
-        else:
-            out[group] = play.caps_over(edge[rows[group[0]]] * grid, times[rows[group]])
-    for first in range(0, len(alone), PROBE_CHUNK):
-        chunk = alone[first:first + PROBE_CHUNK]
-        chosen = rows[chunk]
-        labels = play.anchors((edge[chosen][:, None] * grid).ravel(), np.repeat(times[chosen], grid.size))[1]
-        out[chunk] = labels.reshape(len(chunk), grid.size) < 0
-    return out
-
-
-def _shared_parts(play: PlaySprings, times: np.ndarray, edge: np.ndarray, rows: np.ndarray) -> list[list[int]]:
-    """The indices into ``rows`` grouped by time (increasing) where :meth:`~.play_springs.PlaySprings.caps_over` may
-    read them together (:data:`SHARED_PROBES`): the same clamp times of the chain before each (none in
-    ``[first, last)``), the same ``edge``, and a part of :func:`~.play_reach.constant_part` from the first to the last;
-    every other index a group of its own."""
-    order = sorted(range(rows.size), key=lambda k: float(times[rows[k]]))
-    if not SHARED_PROBES or rows.size < 2:
-        return [[k] for k in order]
-    keys = np.searchsorted(play.chain.times, times[rows], side="left")
-    groups: list[list[int]] = []
-    for k in order:
-        last = groups[-1][-1] if groups else None
-        if last is not None and keys[k] == keys[last] and edge[rows[k]] == edge[rows[last]] \
-                and times[rows[k]] > times[rows[last]]:
-            groups[-1].append(k)
-        else:
-            groups.append([k])
-    out = []
-    for group in groups:
-        low, high = float(times[rows[group[0]]]), float(times[rows[group[-1]]])
-        shared = len(group) > 1 and constant_part(play, low, high) == low
-        out += [group] if shared else [[k] for k in group]
-    return out
 
 
 class _Reading(Enum):
