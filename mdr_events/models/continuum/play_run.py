@@ -26,6 +26,12 @@ Brent's, and ``F_x`` there is monotone, its extrema not refined; a full slip fro
 contact, or with adhesion the jump-in) under Coulomb's law alone is seeded by the time the centre probe counts as
 compressed, in closed form on the depth (:func:`~.play_reach.pressed_time`). Every seed's bracket is checked on the
 share as before (:data:`CLOSED_REACH` ``False``: the route of before).
+
+The probes are not read where a bound proves no spring is at a cap (:func:`~.play_bound.sticking`: along the first
+segment in contact, before the slip onset; :data:`PROBE_BOUND`), and the probes of the times on one part of
+:func:`~.play_reach.constant_part` (a fretting stroke before its slip onset) are read in one evaluation of the
+anchors (:meth:`~.play_springs.PlaySprings.caps_over`, :data:`~.play_probes.SHARED_PROBES`); each ``False`` is the route of before,
+the same answers bit for bit.
 """
 
 from __future__ import annotations
@@ -41,7 +47,9 @@ from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.models.kernel_model import KernelModel
 
 from .extrema import extremum_names, solution_extrema
+from .play_bound import sticking
 from .play_pieces import log_pieces, reversal_end
+from .play_probes import probes_at_cap
 from .play_reach import constant_part, pressed_time, reach_times, reach_ulps
 from .play_search import EVENT_HALVINGS, brent, halve, searched
 from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, SpringState, spring_line
@@ -50,7 +58,7 @@ from .state import Event, EventKind
 from .tolerances import Tolerances
 
 __all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "PROBE_POINTS",
-           "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH"]
+           "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH", "PROBE_BOUND"]
 
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
@@ -72,6 +80,9 @@ ROOT_ULPS = 64
 #: but for ``x`` (:mod:`.play_reach`; ``False``: Brent's root everywhere, the route of before, which the tests compare
 #: it with).
 CLOSED_REACH = True
+#: Whether the probes of a time are skipped where :func:`~.play_bound.sticking` proves no spring is at a cap
+#: (``False``: read at every time where no node is, the route of before, which the tests compare it with).
+PROBE_BOUND = True
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
 EXTREMUM_XTOL = 1e-12
 #: The springs' events the spans' frictionless run logs and this route replaces.
@@ -205,14 +216,13 @@ def _probed_all(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> tup
                       if coulomb_alone else state.length / radius for state, coulomb_alone, radius in zip(states, alone, a)])
     share[alone & ~(edge > 0.0)] = 0.0  # (no compressed springs: none at a cap)
     probed = np.flatnonzero((share == 0.0) & (edge > 0.0))
-    spread = np.zeros(probed.size, bool)  # (a probe at a cap where the share is 0)
-    grid = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)
-    for first in range(0, probed.size, PROBE_CHUNK):
-        chunk = slice(first, first + PROBE_CHUNK)
-        rows = probed[chunk]
-        labels = play.anchors((edge[rows][:, None] * grid).ravel(), np.repeat(np.array(times)[rows], grid.size))[1]
-        at = labels.reshape(rows.size, grid.size) < 0
-        spread[chunk], at_cap[rows] = np.any(at, axis=1), at[:, [0, -1]]
+    if PROBE_BOUND and probed.size:  # (where no spring can be at a cap the probes would find none: play_bound)
+        stuck = sticking(play, np.array(times)[probed])
+        probed = probed[~stuck]
+    at = probes_at_cap(play, np.array(times), edge, probed, np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS),
+                       PROBE_CHUNK)
+    spread = np.any(at, axis=1)  # (a probe at a cap where the share is 0)
+    at_cap[probed] = at[:, [0, -1]]
     share[probed[spread]] = SMALLEST
     whole = np.all(at_cap, axis=1) | ~(edge > 0.0) | (share == SMALLEST)
     return states, np.where(whole, share, np.minimum(share, 1.0 - 2.0 * FULL_SHARE))

@@ -60,7 +60,7 @@ from .play_quadrature import EDGE_SHARE, NODES, _Breaks, _Quadrature
 __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
            "UPPER_CAP", "PANELS", "NODES", "EDGE_SHARE", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
            "GOLDEN_TABLE_RTOL", "GOLDEN_TABLE_POINTS",
-           "CONCAVITY_SAMPLES", "EDGE_ROUND_OFF"]
+           "CONCAVITY_SAMPLES", "EDGE_ROUND_OFF", "REMEMBER_SHIFTS"]
 
 #: Panels of ``[0, a]`` before the kinks are added.
 PANELS = 8
@@ -85,6 +85,9 @@ PRESSED_ROUND_OFF = 1e-12
 #: ``ρ(ξ)`` constant to 7e-13: thousands of such pairs, 1e-16 m off the edge, along the re-contact path of
 #: tests/models/test_layer_coulomb.py).
 EDGE_ROUND_OFF = 1e-12
+#: Whether :meth:`PlaySprings.remember_radii` reads ``ū(a)`` of its times in one call (``False``: one call a time, as
+#: before; the same values bit for bit, elementwise operations of the cap's table).
+REMEMBER_SHIFTS = True
 #: Provenance codes: attached and never moved (plus the segment), a clamp's lower edge, its upper edge
 _ATTACHED, _LOWER, _UPPER = 0, 1, 2
 #: The provenance of a spring at the lower cap at the time asked (in tension, compressed), and at the upper one
@@ -425,6 +428,32 @@ class PlaySprings:
         edges = _on_edge(before, lower, upper, EDGE_ROUND_OFF * (self._x_scale + largest), pressed)
         return anchor, label, edges, np.maximum(lower - before, before - upper)
 
+    def caps_over(self, xi, times) -> np.ndarray:
+        """Whether each spring is at a cap at each of ``times``, where the same clamps precede them all (no clamp time
+        of the chain in ``[times[0], times[-1])``, every window fixed but for ``x``: a part of
+        :func:`~.play_reach.constant_part`): the anchors before the clamp read once, at the first time, each time's
+        window its own, the labels :meth:`anchors` gives at each time (negative: at a cap), bit for bit.
+
+        Parameters
+        ----------
+        xi : numpy.ndarray
+            The springs' coordinates (m), within the contact at every time.
+        times : numpy.ndarray
+            The times (s, path clock), increasing, on one such part.
+
+        Returns
+        -------
+        numpy.ndarray
+            ``(times.size, xi.size)``: whether each spring is at a cap at each time.
+        """
+        xi, times = np.asarray(xi, dtype=float), np.asarray(times, dtype=float)
+        before = self._before_clamp(xi, float(times[0]))[0]
+        g, ratio = self.line.profile(xi), self.line.ratio(xi)
+        x_t = self._x(times)[:, None]
+        cap = self._shifts_at(times)[:, None] + ratio * np.maximum(self._d(times)[:, None] - g, 0.0)
+        lower, upper = x_t - cap, x_t + cap  # (the clamp at t of _anchors: raised below L or on a window of no
+        return (before < lower) | (lower == upper) | (before > upper)  # width, lowered above U)
+
     def windows_before(self, xi, t: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Each spring's anchor before the clamp at ``t`` (every clamp of its chain before ``t`` applied) and its window
         ``[L, U] = [x − c, x + c]`` at ``t`` (:mod:`.play_reach` reads a spring's time to reach its cap off them).
@@ -496,16 +525,23 @@ class PlaySprings:
 
     def remember_radii(self, times) -> None:
         """Read ``a(t)`` at many times in one call of the history (the layer's branch inverted for all of them at
-        once, to its ``RADII_RTOL``) and remember them for :meth:`radius`.
+        once, to its ``RADII_RTOL``) and remember them for :meth:`radius`, and ``ū(a(t))`` in one call of the cap's
+        table for :meth:`shift` (:data:`REMEMBER_SHIFTS`; each element's value as a call on it alone gives it).
 
         Parameters
         ----------
         times : array_like
             The times (s, path clock): the run's output times.
         """
-        times = np.asarray([time for time in np.ravel(times) if float(time) not in self._radii], dtype=float)
-        if times.size:
-            self._radii.update(zip(times.tolist(), self.history.radii(times).tolist()))
+        asked = [float(time) for time in np.ravel(times)]
+        fresh = np.asarray([time for time in asked if time not in self._radii], dtype=float)
+        if fresh.size:
+            self._radii.update(zip(fresh.tolist(), self.history.radii(fresh).tolist()))
+        if REMEMBER_SHIFTS:  # (``ū(a)`` of the times in one call of the cap's table, each as :meth:`_shift_at` reads it)
+            unread = list(dict.fromkeys(time for time in asked if (time, None) not in self._shifts))
+            if unread:
+                radii = np.array([self._radii[time] for time in unread])
+                self._shifts.update(zip(((time, None) for time in unread), self.line.shift(radii).tolist()))
 
     def path_corners(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The path's corners: their times (s, path clock), ``x`` and ``d`` (m).

@@ -1,0 +1,240 @@
+"""The bound that replaces the probes before the slip onset (issue 34's performance, ``continuum/play_bound.py``):
+along the first segment in contact no spring's distance outside its window exceeds ``β (t − t_c) − ū(a(t))``, so
+where that is negative the per-spring route's :data:`~mdr_events.models.continuum.play_run.PROBE_POINTS` probes
+find no spring at a cap and are not read. Checked against the probes themselves (on the paper's layer and on springs
+built to defeat the bound: their least ``μρ`` inside the contact, not at the centre), for its reach (it passes up to
+the onset's output spacing), where it must not pass, and the run against the route of before
+(``play_run.PROBE_BOUND = False``) at every output, bit for bit (the bound only skips readings whose answer it knows).
+Beside it, the probes of the times on one part where every window is fixed but for ``x`` (a fretting stroke before its
+slip onset) read in one evaluation of the anchors (``PlaySprings.caps_over``, ``play_probes.SHARED_PROBES``): their
+labels against each time's own, the times that must not be read together (a clamp between them, a moving radius, a
+pinned radius on a moving depth), and the fretting run against the route of before.
+
+No tolerance is spent: the probes' labels are the route's own, and the runs are compared exactly.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.models.continuum import play_probes, play_run
+from mdr_events.models.continuum.play_bound import _first_segment, sticking
+from mdr_events.models.continuum.play_reach import constant_part
+from mdr_events.models.continuum.play_springs import PlaySprings
+from play_recorders import made_plays
+
+#: The paper's 5 mm layer on a bonded base.
+LAYER = 5e-3
+#: Output samples of the runs.
+SAMPLES = 41
+#: Times read along the first segment.
+TIMES = 200
+#: The probes, as :func:`~mdr_events.models.continuum.play_run._probed_all` reads them (shares of the radius).
+PROBES = np.linspace(0.0, 1.0 - play_run.PROBE_SHARE, play_run.PROBE_POINTS)
+#: The dip built into the adversarial springs' ``μρ``: its depth (share), centre and width (shares of the radius).
+DIP = (0.95, 0.15, 0.04)
+
+
+def contact_of(law: str, adhesive: bool = False) -> me.Contact:
+    """The paper's contact on the layer under ``law`` (μ = 0.3), with the paper's adhesion or without."""
+    friction = me.FrictionLaw(law, mu=0.3, tau0=None if law == "coulomb" else me.Parameters.paper().tau0)
+    paper = me.Contact.paper() if adhesive else me.Contact.paper().replace(dgamma0=0.0, dgamma1=0.0)
+    return dataclasses.replace(paper, friction=friction).replace(h=LAYER)
+
+
+def play_of(law: str, monkeypatch, adhesive: bool = False, motion=None) -> PlaySprings:
+    """The springs ``simulate`` makes on the layer along ``motion`` (scenario A at 20°)."""
+    made = made_plays(monkeypatch)
+    me.simulate(contact_of(law, adhesive), motion or me.Scenario("A", alpha=[20.0]), "continuum", samples=SAMPLES)
+    return made[0]
+
+
+def at_cap(play: PlaySprings, times: np.ndarray) -> np.ndarray:
+    """Whether any probe is at a cap at each of ``times`` (the route's own labels)."""
+    return np.array([np.any(play.anchors(play.radius(float(t)) * PROBES, float(t))[1] < 0) for t in times])
+
+
+def first_segment_times(play: PlaySprings) -> np.ndarray:
+    t_c, t_end, _, _ = _first_segment(play)
+    return np.linspace(t_c, t_end, TIMES + 1)[1:]
+
+
+@pytest.fixture(scope="module")
+def layer_play():
+    with pytest.MonkeyPatch.context() as monkeypatch:
+        return play_of("tau0+coulomb", monkeypatch)
+
+
+def dipped(play: PlaySprings) -> PlaySprings:
+    """The same springs with ``μρ`` dipped by :data:`DIP` inside the contact (nearly 0 at 0.15 of the segment's last
+    radius, where a bound read at the centre alone would miss it): the first spring to slide lies inside."""
+    depth, centre, width = DIP
+    a_end = play.radius(_first_segment(play)[1])
+    ratio = play.line.ratio
+
+    def dipped_ratio(xi):
+        xi = np.asarray(xi, dtype=float)
+        return ratio(xi) * (1.0 - depth * np.exp(-(((xi / a_end) - centre) / width) ** 2))
+
+    return PlaySprings(play.line._replace(ratio=dipped_ratio), play.path)
+
+
+@pytest.mark.parametrize("springs", ["layer", "dipped"])
+def test_no_probe_is_at_a_cap_where_the_bound_passes(springs, layer_play):
+    """Wherever the bound passes, none of the probes is at a cap. On the layer it passes up to the slip onset: every
+    time before the first with a probe at a cap but the last (the bound reads ``μρ``'s least value, the centre's, the
+    first spring's own, less a share of 1e-6); on the dipped springs, whose least ``μρ`` is not the first spring's,
+    earlier."""
+    play = layer_play if springs == "layer" else dipped(layer_play)
+    times = first_segment_times(play)
+    passed, capped = sticking(play, times), at_cap(play, times)
+    assert np.any(capped), "the onset lies in the first segment"
+    assert not np.any(passed & capped)
+    onset = int(np.argmax(capped))
+    reach = onset - 1 if springs == "layer" else onset // 2
+    assert np.all(passed[:reach]) and not np.any(passed[onset:])
+
+
+def test_the_dipped_springs_slide_first_inside(layer_play):
+    """The adversarial springs defeat a bound read at the centre: their first spring at a cap lies inside the contact,
+    and the centre's ``μρ`` alone would pass times at which probes are at a cap."""
+    play = dipped(layer_play)
+    times = first_segment_times(play)
+    capped = at_cap(play, times)
+    t = float(times[int(np.argmax(capped))])
+    labels = play.anchors(play.radius(t) * PROBES, t)[1]
+    first = PROBES[np.flatnonzero(labels < 0)]
+    assert first.size and np.min(first) > 0.1
+    central = PlaySprings(play.line._replace(ratio=lambda xi: np.full(np.shape(xi), float(play.line.ratio(0.0)))),
+                          play.path)  # (the bound's springs: μρ the centre's everywhere, the probes the dipped ones')
+    assert np.any(sticking(central, times) & capped)
+
+
+def test_the_bound_passes_no_time_where_it_does_not_hold(layer_play, monkeypatch):
+    """Under Coulomb's law alone (``ū = 0``), after the first segment and on a path that starts in contact the bound
+    passes no time."""
+    times = first_segment_times(layer_play)
+    alone = PlaySprings(layer_play.line._replace(shift=lambda a: np.zeros(np.shape(a)), shifts=False), layer_play.path)
+    assert not np.any(sticking(alone, times))
+    corner_t = layer_play.path_corners()[0]
+    later = np.linspace(corner_t[-2], corner_t[-1], TIMES)
+    assert not np.any(sticking(layer_play, later))
+    inside = me.Path(np.array([[0.0, 1e-5], [1e-4, 2e-4]]), me.Parameters.paper().v)
+    assert not np.any(sticking(PlaySprings(layer_play.line, inside), np.linspace(0.0, inside.duration, TIMES)))
+
+
+def fretting_in() -> me.Paths:
+    """In to ``d_max`` with ``x`` at rest (``β = 0``), one tangential stroke and out."""
+    d_max = me.Parameters.paper().d_max
+    x, d = [0.0, 0.0, 1e-3, 1e-3], [0.0, d_max, d_max, -1e-5]
+    return me.Paths({"in": me.Path(np.column_stack([x, d]), me.Parameters.paper().v)})
+
+
+@pytest.mark.parametrize("adhesive, motion", [(False, "A 20°"), (False, "in"), (True, "A 20°")])
+def test_the_run_is_the_route_of_before_at_every_output(adhesive, motion, monkeypatch):
+    """The whole run with the bound against the route of before (the probes read at every time where no node is at a
+    cap): the same at every output, bit for bit, and fewer probes read."""
+    motions = {"A 20°": me.Scenario("A", alpha=[20.0]), "in": fretting_in()}
+    runs, probed = {}, {}
+    anchors = PlaySprings.anchors
+    for bound in (False, True):
+        monkeypatch.setattr(play_run, "PROBE_BOUND", bound)
+        counted = []
+
+        def counting(self, xi, t, counted=counted):
+            counted.append(np.size(xi))
+            return anchors(self, xi, t)
+
+        monkeypatch.setattr(PlaySprings, "anchors", counting)
+        runs[bound] = me.simulate(contact_of("tau0+coulomb", adhesive), motions[motion], "continuum",
+                                  samples=SAMPLES)
+        probed[bound] = sum(counted)
+    assert runs[True].identical(runs[False])
+    assert probed[True] < probed[False]
+
+
+# -- the probes of a part where every window is fixed but for x, read in one evaluation (play_probes.SHARED_PROBES) --
+
+def fretting() -> me.Paths:
+    """In to ``d_max``, one tangential cycle of ±1 mm there, and out (the strokes' times before their slip onset have
+    no node at a cap: their probes are read)."""
+    d_max = me.Parameters.paper().d_max
+    x, d = [0.0, 0.0, 1e-3, -1e-3, 0.0, 0.0], [0.0, d_max, d_max, d_max, d_max, -1e-5]
+    return me.Paths({"fretting": me.Path(np.column_stack([x, d]), me.Parameters.paper().v)})
+
+
+@pytest.fixture(scope="module")
+def fretting_play():
+    with pytest.MonkeyPatch.context() as monkeypatch:
+        return play_of("tau0+coulomb", monkeypatch, motion=fretting())
+
+
+def stroke_times(play: PlaySprings, corner: int) -> np.ndarray:
+    """Times inside the stroke that starts at the path's ``corner`` (a constant depth, ``x`` linear)."""
+    corner_t = play.path_corners()[0]
+    return np.linspace(corner_t[corner], corner_t[corner + 1], TIMES + 2)[1:-1]
+
+
+@pytest.mark.parametrize("corner", [1, 2])
+def test_the_caps_over_a_part_are_each_time_s_own(corner, fretting_play):
+    """On a stroke (a part of ``constant_part``) the probes' labels read once for all its times are those each time's
+    own evaluation gives, bit for bit, and the onset lies inside (both labels occur)."""
+    play = fretting_play
+    times = stroke_times(play, corner)
+    assert constant_part(play, float(times[0]), float(times[-1])) == times[0]
+    xi = play.radius(float(times[0])) * PROBES
+    together = play.caps_over(xi, times)
+    alone = np.array([play.anchors(xi, float(t))[1] < 0 for t in times])
+    assert np.array_equal(together, alone)
+    assert np.any(together) and not np.all(together)
+
+
+def test_times_across_a_clamp_or_a_moving_radius_are_not_shared(fretting_play):
+    """Times on both sides of a corner (a clamp of the chain between them), or where the radius moves (the way in),
+    are each read on their own."""
+    play = fretting_play
+    corner_t = play.path_corners()[0]
+    across = np.concatenate([stroke_times(play, 1)[-3:], stroke_times(play, 2)[:3]])
+    edge = np.full(across.size, play.radius(float(across[0])))
+    groups = play_probes.shared_parts(play, across, edge, np.arange(across.size))
+    assert sorted(len(group) for group in groups) == [3, 3]
+    moving = np.linspace(corner_t[0], corner_t[1], 8)[1:-1]
+    edge = np.array([play.radius(float(t)) for t in moving])
+    assert all(len(group) == 1 for group in play_probes.shared_parts(play, moving, edge, np.arange(moving.size)))
+
+
+def test_the_fretting_run_with_shared_probes_is_the_route_of_before(monkeypatch):
+    """The whole fretting run with the strokes' probes read together against each time's own: the same at every
+    output, bit for bit, in fewer evaluations of the anchors."""
+    runs, calls = {}, {}
+    anchors = PlaySprings.anchors
+    for shared in (False, True):
+        monkeypatch.setattr(play_probes, "SHARED_PROBES", shared)
+        counted = []
+
+        def counting(self, xi, t, counted=counted):
+            counted.append(np.size(xi))
+            return anchors(self, xi, t)
+
+        monkeypatch.setattr(PlaySprings, "anchors", counting)
+        runs[shared] = me.simulate(contact_of("tau0+coulomb"), fretting(), "continuum", samples=SAMPLES)
+        calls[shared] = len(counted)
+    assert runs[True].identical(runs[False])
+    assert calls[True] < calls[False]
+
+
+def test_times_of_a_pinned_radius_on_a_moving_depth_are_not_shared(monkeypatch):
+    """With adhesion the radius rests (pinned) while the indenter starts out: the same probes at times with the same
+    clamps of the chain before them, but the windows move with ``d`` (each spring's Coulomb part, its crossings of
+    ``d = g``): each time is read on its own."""
+    play = play_of("tau0+coulomb", monkeypatch, adhesive=True, motion=fretting())
+    corner_t = play.path_corners()[0]
+    times = np.linspace(corner_t[-2], corner_t[-1], 41)[1:4]
+    edge = np.array([play.radius(float(t)) for t in times])
+    keys = np.searchsorted(play.chain.times, times, side="left")
+    assert np.all(edge == edge[0]) and np.all(keys == keys[0])  # (what the grouping reads first agrees)
+    assert all(len(group) == 1 for group in play_probes.shared_parts(play, times, edge, np.arange(times.size)))
