@@ -252,6 +252,10 @@ class TabulatedBranch:
         self.k = power_law.hess_prefactor(params, work_of_adhesion)
         self.E_star = params.E_star
         self._x_max = self.shape.x_max
+        # g's pieces as ScalarPiecewise holds them, read by depth and slope in place of its call (the same steps: the
+        # continuum reads a table's depth some 3000 times a run, where the call cost a frame each)
+        g, slope = self.shape.scalar_g, self.shape.scalar_slope
+        self._breaks, self._count, self._g_pieces, self._slope_pieces = g.breaks, g._count, g.pieces, slope.pieces
         grid = self.shape.grid
         depths = self.shape.values - self.k * np.sqrt(grid)
         lowest = int(np.argmin(depths))
@@ -274,6 +278,15 @@ class TabulatedBranch:
         self._radii = [self.jump_off_radius] + [float(a) for a in grid[grid > self.jump_off_radius]]
         self._depths = [self.depth(a) for a in self._radii]
         self._last = len(self._depths) - 1
+        # each bracket's numbers for _invert, by the index ``above`` of its upper end (None at 0): its radii and
+        # depths, the start of the piece of g it lies on and that piece's coefficients of g and g', looked up once
+        # here instead of at every inversion (the same numbers: a table's run inverts some thousand depths)
+        g, slope = self.shape.scalar_g, self.shape.scalar_slope
+        self._cells = [None]
+        for above in range(1, len(self._radii)):
+            index = g.index(self._radii[above - 1])
+            self._cells.append((self._radii[above - 1], self._radii[above], self._depths[above - 1],
+                                self._depths[above], g.breaks[index], g.pieces[index], slope.pieces[index]))
 
     def depth(self, a: float) -> float:
         """The branch's depth ``d(a) = g(a) − k √a`` at the radius ``a``, one Python float.
@@ -292,7 +305,12 @@ class TabulatedBranch:
             return 0.0
         if a > self._x_max:  # (the end check only past the table: most radii are inside)
             a = self.shape.inside(a)
-        return self.shape.scalar_g(a) - self.k * math.sqrt(a)
+        # ScalarPiecewise's call on g written out: its piece (a cubic) by bisection, Horner's steps from 0.0
+        breaks = self._breaks
+        index = bisect.bisect_right(breaks, a, 1, self._count) - 1
+        offset = a - breaks[index]
+        c0, c1, c2, c3 = self._g_pieces[index]
+        return (((0.0 * offset + c0) * offset + c1) * offset + c2) * offset + c3 - self.k * math.sqrt(a)
 
     def depths(self, a: np.ndarray) -> np.ndarray:
         """The branch's depths at the radii ``a``, vectorised.
@@ -327,7 +345,12 @@ class TabulatedBranch:
         if a > 0:
             if a > self._x_max:
                 a = self.shape.inside(a)
-            return self.shape.scalar_slope(a) - 0.5 * self.k / math.sqrt(a)
+            # ScalarPiecewise's call on g' written out (a quadratic; g's breaks), as in depth
+            breaks = self._breaks
+            index = bisect.bisect_right(breaks, a, 1, self._count) - 1
+            offset = a - breaks[index]
+            s0, s1, s2 = self._slope_pieces[index]
+            return ((0.0 * offset + s0) * offset + s1) * offset + s2 - 0.5 * self.k / math.sqrt(a)
         return -math.inf if self.k > 0 else self.shape.scalar_slope(0.0)
 
     def integral(self, a: float) -> float:
@@ -380,28 +403,26 @@ class TabulatedBranch:
         there), until a step is below ``rtol`` of the radius. They start from the chord's root, or next to the
         jump-off, where ``d`` rises from a minimum as the square of the distance, from the chord's in that square.
         Pure Python: the continuum inverts thousands of depths per run."""
-        low, high = self._radii[above - 1], self._radii[above]
-        d_low, d_high = self._depths[above - 1], self._depths[above]
+        low, high, d_low, d_high, start, (c0, c1, c2, c3), (s0, s1, s2) = self._cells[above]
+        k = self.k
         share = (depth - d_low) / (d_high - d_low)
-        a = low + (math.sqrt(share) if above == 1 and self.k > 0.0 else share) * (high - low)
-        g, slope = self.shape.scalar_g, self.shape.scalar_slope
-        index = g.index(low)
-        start = g.breaks[index]
+        a = low + (math.sqrt(share) if above == 1 and k > 0.0 else share) * (high - low)
         # a PCHIP's piece is a cubic, its slope's a quadratic: Horner's steps written out, as ScalarPiecewise's loop
         # takes them from 0.0 (the same operations, bit for bit)
-        (c0, c1, c2, c3), (s0, s1, s2) = g.pieces[index], slope.pieces[index]
+        half_k = 0.5 * k
         for _ in range(MAX_INVERSION_STEPS):
             offset, root = a - start, math.sqrt(a)
             value = (((0.0 * offset + c0) * offset + c1) * offset + c2) * offset + c3
             rate = ((0.0 * offset + s0) * offset + s1) * offset + s2
-            excess = value - self.k * root - depth
+            excess = value - k * root - depth
             if excess == 0.0:
                 return a
             if excess > 0.0:
                 high = a
             else:
                 low = a
-            rate -= 0.5 * self.k / root if self.k else 0.0
+            if k:
+                rate -= half_k / root
             step = a - excess / rate if rate > 0.0 else low
             if abs(step - a) <= rtol * a:  # (a converged step may round onto the bracket's end)
                 return step if low <= step <= high else a
