@@ -282,11 +282,17 @@ class TabulatedBranch:
         # depths, the start of the piece of g it lies on and that piece's coefficients of g and g', looked up once
         # here instead of at every inversion (the same numbers: a table's run inverts some thousand depths)
         g, slope = self.shape.scalar_g, self.shape.scalar_slope
-        self._cells = [None]
+        self._cells, pieces = [None], [0]
         for above in range(1, len(self._radii)):
             index = g.index(self._radii[above - 1])
+            pieces.append(index)
             self._cells.append((self._radii[above - 1], self._radii[above], self._depths[above - 1],
                                 self._depths[above], g.breaks[index], g.pieces[index], slope.pieces[index]))
+        # the same as arrays for radii and _invert_all (made once: converting the lists cost more than a run's
+        # iteration; read-only), each bracket's piece's start and coefficients by its ``above``
+        self._arrays = _BracketArrays(*(_read_only(np.asarray(values, dtype=float)) for values in (
+            self._radii, self._depths, [g.breaks[index] for index in pieces], [g.pieces[index] for index in pieces],
+            [slope.pieces[index] for index in pieces])))
 
     def depth(self, a: float) -> float:
         """The branch's depth ``d(a) = g(a) − k √a`` at the radius ``a``, one Python float.
@@ -449,10 +455,10 @@ class TabulatedBranch:
         flat, values = out.reshape(-1), depth.reshape(-1)
         inside = np.flatnonzero((self.jump_off_depth <= values) & (values <= self.deepest))
         wanted = values[inside]
-        depths = np.asarray(self._depths)
+        depths = self._arrays.depths
         above = np.minimum(np.searchsorted(depths, wanted, side="left"), len(depths) - 1)
         on_grid = depths[above] == wanted
-        flat[inside[on_grid]] = np.asarray(self._radii)[above[on_grid]]
+        flat[inside[on_grid]] = self._arrays.radii[above[on_grid]]
         rest = ~on_grid
         flat[inside[rest]] = self._invert_all(wanted[rest], np.maximum(above[rest], 1), RADIUS_RTOL)
         flat[inside[wanted == self.jump_off_depth]] = self.jump_off_radius
@@ -462,17 +468,15 @@ class TabulatedBranch:
         """:meth:`_invert` of every depth of an array (with its ``above``): each element takes the scalar iteration's
         steps, the same operations in the same order (NumPy's IEEE arithmetic and square root are Python's), and
         leaves the iteration where the scalar one returns."""
-        radii, depths = np.asarray(self._radii), np.asarray(self._depths)
+        radii, depths, starts, g_pieces, slope_pieces = self._arrays
         low, high = radii[above - 1], radii[above]
         d_low, d_high = depths[above - 1], depths[above]
         share = (depth - d_low) / (d_high - d_low)
         if self.k > 0.0:
             share = np.where(above == 1, np.sqrt(share), share)
         a = low + share * (high - low)
-        g, slope = self.shape.scalar_g, self.shape.scalar_slope
-        index = np.clip(np.searchsorted(g.breaks, low, side="right") - 1, 0, len(g.pieces) - 1)
-        start = np.asarray(g.breaks)[index]
-        values, rates = np.asarray(g.pieces)[index].T, np.asarray(slope.pieces)[index].T
+        # (the bracket's piece of g, as _invert reads it from its cell)
+        start, values, rates = starts[above], g_pieces[above].T, slope_pieces[above].T
         out = np.empty(depth.shape)
         iterating = _Iterating(np.arange(depth.size), a, low, high, start, depth, values, rates)
         with np.errstate(divide="ignore", invalid="ignore"):  # (a step by a zero rate is not taken: np.where)
@@ -509,6 +513,24 @@ class TabulatedBranch:
                 return out
         out[left] = a
         return out
+
+
+class _BracketArrays(NamedTuple):
+    """A :class:`TabulatedBranch`'s brackets as arrays for its array inversion: the grid's radii and depths above the
+    jump-off (increasing), and by each bracket's upper index ``above`` the start of its piece of ``g`` and that piece's
+    coefficients of ``g`` and ``g'`` (a row each; index 0 unused)."""
+
+    radii: np.ndarray
+    depths: np.ndarray
+    starts: np.ndarray
+    g_pieces: np.ndarray
+    slope_pieces: np.ndarray
+
+
+def _read_only(array: np.ndarray) -> np.ndarray:
+    """``array``, marked read-only (shared by every call that reads it)."""
+    array.setflags(write=False)
+    return array
 
 
 class _Iterating(NamedTuple):
