@@ -280,8 +280,8 @@ class TabulatedBranch:
         self._last = len(self._depths) - 1
         # each bracket's numbers for _invert, by the index ``above`` of its upper end (None at 0): its radii and
         # depths, the start of the piece of g it lies on and that piece's coefficients of g and g', looked up once
-        # here instead of at every inversion (the same numbers: a table's run inverts some thousand depths)
-        g, slope = self.shape.scalar_g, self.shape.scalar_slope
+        # here instead of at every inversion (the same numbers: a table's run inverts some thousand depths), and the
+        # tangents of its Hermite start (_tangents)
         self._cells, pieces, tangents = [None], [0], [(math.nan, math.nan)]
         for above in range(1, len(self._radii)):
             index = g.index(self._radii[above - 1])
