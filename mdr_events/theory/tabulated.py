@@ -252,6 +252,10 @@ class TabulatedBranch:
         self.k = power_law.hess_prefactor(params, work_of_adhesion)
         self.E_star = params.E_star
         self._x_max = self.shape.x_max
+        # g's pieces as ScalarPiecewise holds them, read by depth and slope in place of its call (the same steps: the
+        # continuum reads a table's depth some 3000 times a run, where the call cost a frame each)
+        g, slope = self.shape.scalar_g, self.shape.scalar_slope
+        self._breaks, self._count, self._g_pieces, self._slope_pieces = g.breaks, g._count, g.pieces, slope.pieces
         grid = self.shape.grid
         depths = self.shape.values - self.k * np.sqrt(grid)
         lowest = int(np.argmin(depths))
@@ -274,6 +278,34 @@ class TabulatedBranch:
         self._radii = [self.jump_off_radius] + [float(a) for a in grid[grid > self.jump_off_radius]]
         self._depths = [self.depth(a) for a in self._radii]
         self._last = len(self._depths) - 1
+        # each bracket's numbers for _invert, by the index ``above`` of its upper end (None at 0): its radii and
+        # depths, the start of the piece of g it lies on and that piece's coefficients of g and g', looked up once
+        # here instead of at every inversion (the same numbers: a table's run inverts some thousand depths), and the
+        # tangents of its Hermite start (_tangents)
+        self._cells, pieces, tangents = [None], [0], [(math.nan, math.nan)]
+        for above in range(1, len(self._radii)):
+            index = g.index(self._radii[above - 1])
+            pieces.append(index)
+            tangents.append(self._tangents(above))
+            self._cells.append((self._radii[above - 1], self._radii[above], self._depths[above - 1],
+                                self._depths[above], g.breaks[index], g.pieces[index], slope.pieces[index],
+                                *tangents[-1]))
+        # the same as arrays for radii and _invert_all (made once: converting the lists cost more than a run's
+        # iteration; read-only), each bracket's piece's start and coefficients by its ``above``
+        self._arrays = _BracketArrays(*(_read_only(np.asarray(values, dtype=float)) for values in (
+            self._radii, self._depths, [g.breaks[index] for index in pieces], [g.pieces[index] for index in pieces],
+            [slope.pieces[index] for index in pieces], tangents)))
+
+    def _tangents(self, above: int) -> tuple[float, float]:
+        """The tangents ``Δd / d'(a)`` at the ends of the bracket ``above`` (the inverse ``a(d)``'s slopes times the
+        bracket's rise in depth) of :meth:`_invert`'s Hermite start; ``nan`` where the branch's slope at an end is not
+        positive and finite (at the jump-off, where ``d`` rises from its minimum: the start in the chord's square)."""
+        low, high = self._radii[above - 1], self._radii[above]
+        rise = self._depths[above] - self._depths[above - 1]
+        at_low, at_high = self.slope(low), self.slope(high)
+        if (above == 1 and self.k > 0.0) or not (0.0 < at_low < math.inf and 0.0 < at_high < math.inf):
+            return math.nan, math.nan
+        return rise / at_low, rise / at_high
 
     def depth(self, a: float) -> float:
         """The branch's depth ``d(a) = g(a) − k √a`` at the radius ``a``, one Python float.
@@ -292,7 +324,12 @@ class TabulatedBranch:
             return 0.0
         if a > self._x_max:  # (the end check only past the table: most radii are inside)
             a = self.shape.inside(a)
-        return self.shape.scalar_g(a) - self.k * math.sqrt(a)
+        # ScalarPiecewise's call on g written out: its piece (a cubic) by bisection, Horner's steps from 0.0
+        breaks = self._breaks
+        index = bisect.bisect_right(breaks, a, 1, self._count) - 1
+        offset = a - breaks[index]
+        c0, c1, c2, c3 = self._g_pieces[index]
+        return (((0.0 * offset + c0) * offset + c1) * offset + c2) * offset + c3 - self.k * math.sqrt(a)
 
     def depths(self, a: np.ndarray) -> np.ndarray:
         """The branch's depths at the radii ``a``, vectorised.
@@ -327,7 +364,12 @@ class TabulatedBranch:
         if a > 0:
             if a > self._x_max:
                 a = self.shape.inside(a)
-            return self.shape.scalar_slope(a) - 0.5 * self.k / math.sqrt(a)
+            # ScalarPiecewise's call on g' written out (a quadratic; g's breaks), as in depth
+            breaks = self._breaks
+            index = bisect.bisect_right(breaks, a, 1, self._count) - 1
+            offset = a - breaks[index]
+            s0, s1, s2 = self._slope_pieces[index]
+            return ((0.0 * offset + s0) * offset + s1) * offset + s2 - 0.5 * self.k / math.sqrt(a)
         return -math.inf if self.k > 0 else self.shape.scalar_slope(0.0)
 
     def integral(self, a: float) -> float:
@@ -377,31 +419,38 @@ class TabulatedBranch:
     def _invert(self, depth: float, above: int, rtol: float) -> float:
         """The root of ``d(a) = depth`` between the radii ``above − 1`` and ``above`` of the bracket's grid (one
         piece of ``g``): Newton's steps on the piece's cubic, kept in the bracket by bisection (``d`` increases
-        there), until a step is below ``rtol`` of the radius. They start from the chord's root, or next to the
-        jump-off, where ``d`` rises from a minimum as the square of the distance, from the chord's in that square.
-        Pure Python: the continuum inverts thousands of depths per run."""
-        low, high = self._radii[above - 1], self._radii[above]
-        d_low, d_high = self._depths[above - 1], self._depths[above]
+        there), until a step is below ``rtol`` of the radius. They start from the cubic Hermite interpolant of the
+        inverse ``a(d)`` through the bracket's ends (their radii, depths and slopes ``d'``: its error falls as the fourth
+        power of the bracket, ~1e-9 of the radius on a 41-point table, where the chord's falls as the square, ~1e-4;
+        two steps, not three), else (it would leave the bracket, or a slope is not positive) from the chord's root,
+        or next to the jump-off, where ``d`` rises from a minimum as the square of the distance, from the chord's in
+        that square. Pure Python: the continuum inverts thousands of depths per run."""
+        low, high, d_low, d_high, start, (c0, c1, c2, c3), (s0, s1, s2), m0, m1 = self._cells[above]
+        k = self.k
         share = (depth - d_low) / (d_high - d_low)
-        a = low + (math.sqrt(share) if above == 1 and self.k > 0.0 else share) * (high - low)
-        g, slope = self.shape.scalar_g, self.shape.scalar_slope
-        index = g.index(low)
-        start = g.breaks[index]
+        a = low + (math.sqrt(share) if above == 1 and k > 0.0 else share) * (high - low)
+        if m0 == m0:  # (the Hermite start, where it lies inside the bracket; the chord's root else)
+            rest = 1.0 - share
+            hermite = (((1.0 + 2.0 * share) * rest * rest) * low + (share * rest * rest) * m0
+                       + (share * share * (3.0 - 2.0 * share)) * high + (share * share * (share - 1.0)) * m1)
+            if low < hermite < high:
+                a = hermite
         # a PCHIP's piece is a cubic, its slope's a quadratic: Horner's steps written out, as ScalarPiecewise's loop
         # takes them from 0.0 (the same operations, bit for bit)
-        (c0, c1, c2, c3), (s0, s1, s2) = g.pieces[index], slope.pieces[index]
+        half_k = 0.5 * k
         for _ in range(MAX_INVERSION_STEPS):
             offset, root = a - start, math.sqrt(a)
             value = (((0.0 * offset + c0) * offset + c1) * offset + c2) * offset + c3
             rate = ((0.0 * offset + s0) * offset + s1) * offset + s2
-            excess = value - self.k * root - depth
+            excess = value - k * root - depth
             if excess == 0.0:
                 return a
             if excess > 0.0:
                 high = a
             else:
                 low = a
-            rate -= 0.5 * self.k / root if self.k else 0.0
+            if k:
+                rate -= half_k / root
             step = a - excess / rate if rate > 0.0 else low
             if abs(step - a) <= rtol * a:  # (a converged step may round onto the bracket's end)
                 return step if low <= step <= high else a
@@ -428,10 +477,10 @@ class TabulatedBranch:
         flat, values = out.reshape(-1), depth.reshape(-1)
         inside = np.flatnonzero((self.jump_off_depth <= values) & (values <= self.deepest))
         wanted = values[inside]
-        depths = np.asarray(self._depths)
+        depths = self._arrays.depths
         above = np.minimum(np.searchsorted(depths, wanted, side="left"), len(depths) - 1)
         on_grid = depths[above] == wanted
-        flat[inside[on_grid]] = np.asarray(self._radii)[above[on_grid]]
+        flat[inside[on_grid]] = self._arrays.radii[above[on_grid]]
         rest = ~on_grid
         flat[inside[rest]] = self._invert_all(wanted[rest], np.maximum(above[rest], 1), RADIUS_RTOL)
         flat[inside[wanted == self.jump_off_depth]] = self.jump_off_radius
@@ -441,17 +490,19 @@ class TabulatedBranch:
         """:meth:`_invert` of every depth of an array (with its ``above``): each element takes the scalar iteration's
         steps, the same operations in the same order (NumPy's IEEE arithmetic and square root are Python's), and
         leaves the iteration where the scalar one returns."""
-        radii, depths = np.asarray(self._radii), np.asarray(self._depths)
+        radii, depths, starts, g_pieces, slope_pieces, tangents = self._arrays
         low, high = radii[above - 1], radii[above]
         d_low, d_high = depths[above - 1], depths[above]
         share = (depth - d_low) / (d_high - d_low)
-        if self.k > 0.0:
-            share = np.where(above == 1, np.sqrt(share), share)
-        a = low + share * (high - low)
-        g, slope = self.shape.scalar_g, self.shape.scalar_slope
-        index = np.clip(np.searchsorted(g.breaks, low, side="right") - 1, 0, len(g.pieces) - 1)
-        start = np.asarray(g.breaks)[index]
-        values, rates = np.asarray(g.pieces)[index].T, np.asarray(slope.pieces)[index].T
+        chord = np.where(above == 1, np.sqrt(share), share) if self.k > 0.0 else share
+        a = low + chord * (high - low)
+        m0, m1 = tangents[above].T
+        rest = 1.0 - share
+        hermite = (((1.0 + 2.0 * share) * rest * rest) * low + (share * rest * rest) * m0
+                   + (share * share * (3.0 - 2.0 * share)) * high + (share * share * (share - 1.0)) * m1)
+        a = np.where((m0 == m0) & (low < hermite) & (hermite < high), hermite, a)
+        # (the bracket's piece of g, as _invert reads it from its cell)
+        start, values, rates = starts[above], g_pieces[above].T, slope_pieces[above].T
         out = np.empty(depth.shape)
         iterating = _Iterating(np.arange(depth.size), a, low, high, start, depth, values, rates)
         with np.errstate(divide="ignore", invalid="ignore"):  # (a step by a zero rate is not taken: np.where)
@@ -488,6 +539,25 @@ class TabulatedBranch:
                 return out
         out[left] = a
         return out
+
+
+class _BracketArrays(NamedTuple):
+    """A :class:`TabulatedBranch`'s brackets as arrays for its array inversion: the grid's radii and depths above the
+    jump-off (increasing), and by each bracket's upper index ``above`` the start of its piece of ``g``, that piece's
+    coefficients of ``g`` and ``g'`` and the Hermite start's two tangents (a row each; index 0 unused)."""
+
+    radii: np.ndarray
+    depths: np.ndarray
+    starts: np.ndarray
+    g_pieces: np.ndarray
+    slope_pieces: np.ndarray
+    tangents: np.ndarray
+
+
+def _read_only(array: np.ndarray) -> np.ndarray:
+    """``array``, marked read-only (shared by every call that reads it)."""
+    array.setflags(write=False)
+    return array
 
 
 class _Iterating(NamedTuple):

@@ -145,6 +145,41 @@ def test_the_radii_of_an_array_are_the_scalar_radius_bit_for_bit(paper, make, wo
     assert line.radii(np.float64(depths[7])).shape == () and line.radii(depths[:6].reshape(2, 3)).shape == (2, 3)
 
 
+#: Newton's steps per inversion at the continuum's ``radius_rtol`` (1e-14) from the Hermite start, averaged over the
+#: branch's depths: its error falls as the fourth power of the bracket (~1e-9 of the radius on a 41-point table), so a
+#: step brings it to ~1e-18 and the next confirms it (two steps; a few brackets' where the inverse bends most, three);
+#: from the chord's root (error ~1e-4) they took three (measured 2.08 and 3.0).
+MEAN_INVERSION_STEPS = 2.3
+
+
+@pytest.mark.parametrize("work", [0.0, 0.01])
+def test_a_radius_is_two_newton_steps_from_its_hermite_start(paper, work, monkeypatch):
+    """TabulatedBranch._invert starts from the cubic Hermite interpolant of the inverse a(d) through its bracket's
+    ends: at the continuum's rtol its Newton steps (one square root each) average MEAN_INVERSION_STEPS, and each radius
+    is a root of d(a) = depth to that rtol."""
+    r = np.linspace(0.0, REACH, 41)
+    line = tb.branch(TabulatedProfile(r, r**2 / (2 * paper.R)), paper, work)
+    depths = np.linspace(line.jump_off_depth, line.deepest, 2003)[1:-1]
+    roots = []
+
+    class Counting:  # (the module's math, its square roots counted)
+        def __getattr__(self, name):
+            return getattr(math, name)
+
+        def sqrt(self, value):
+            roots.append(value)
+            return math.sqrt(value)
+
+    monkeypatch.setattr(tb, "math", Counting())
+    radii = [line.radius(float(depth), 1e-14) for depth in depths]
+    monkeypatch.undo()
+    first = np.count_nonzero(depths < line._depths[1]) if work else 0  # (the chord's square's root: no step)
+    assert (len(roots) - first) / len(depths) <= MEAN_INVERSION_STEPS
+    slopes = np.array([line.slope(a) for a in radii])
+    residual = np.array([line.depth(a) for a in radii]) - depths
+    assert np.all(np.abs(residual) <= 4e-14 * np.array(radii) * slopes + 4 * np.spacing(depths))
+
+
 #: The scalar forms (Horner in Python on the piece) against the array forms (SciPy's PPoly) at one radius: the same
 #: polynomial summed in another order, a few ulp of the value.
 SCALAR_ULPS = 8
