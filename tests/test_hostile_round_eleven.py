@@ -6,6 +6,7 @@ import os
 import subprocess
 import sys
 import textwrap
+from typing import NamedTuple
 
 import numpy as np
 import pytest
@@ -19,7 +20,7 @@ import mdr_events as me
 EXECUTED = textwrap.dedent("""
     import signal, sys
     signal.signal(signal.SIGINT, signal.default_int_handler)  # as in a foreground process (a background job ignores it)
-    import mdr_events.app.cli.simulate as verb
+    import mdr_events.app.cli.phase_diagram as verb
 
     def run(args):  # Ctrl-C lands in code that exec() runs from a string, as in a dataclass's generated methods
         exec("import os, signal\\nos.kill(os.getpid(), signal.SIGINT)\\nfor _ in range(10**7):\\n    pass\\n", {})
@@ -31,8 +32,10 @@ EXECUTED = textwrap.dedent("""
 
 
 def test_an_interrupt_that_left_exec_ends_the_module_run_with_130(tmp_path):
+    # (phase-diagram: it checks its parameters before it loads its solvers, ~0.3 s of CPU a start, simulate's ~1.7 s;
+    # what is checked is console_main's, every verb's)
     (tmp_path / "interrupted_in_exec.py").write_text(EXECUTED, encoding="utf-8")
-    done = subprocess.run([sys.executable, "-m", "interrupted_in_exec", "simulate", "--scenario", "A", "--alpha", "20",
+    done = subprocess.run([sys.executable, "-m", "interrupted_in_exec", "phase-diagram", "--scenario", "A",
                            "--out", "out"], capture_output=True, text=True, timeout=300, cwd=tmp_path,
                           env=dict(os.environ, PYTHONPATH=os.pathsep.join([str(tmp_path), *sys.path])))
     assert (done.returncode, done.stderr) == (130, "mdr-events: interrupted (Ctrl-C); no file was left half-written\n")
@@ -105,38 +108,62 @@ PAPER = me.Parameters.paper()
 LAW = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 1e-6, 0.6)
 VERTICAL = me.Path(np.array([(0.0, 0.0), (0.0, PAPER.d_max), (0.0, -200e-6)]), speed=1e-6)
 TIMES = np.linspace(VERTICAL.first_contact_time(), VERTICAL.duration, 60)
-FORCE = solve_edge(PAPER, VERTICAL, LAW).normal_force(TIMES, VERTICAL)
-CURVE = RateMeasurement(VERTICAL, TIMES, FORCE)
 START = me.RateDependentAdhesion(PAPER.dgamma0, PAPER.dgamma1, 3e-6, 0.8)
 
 
-@pytest.mark.parametrize("arguments, keywords, named", [
-    (([CURVE], None, START), {}, "params=None"),
-    (([CURVE], PAPER, None), {}, "start=None"),
-    (([CURVE], PAPER, me.Adhesion(0.01, 0.15)), {}, "start=Adhesion"),
-    (([CURVE], PAPER, me.RateDependentAdhesion(0.01, 0.15, 1e-6, 1e-4)), {"free": ("n",)}, "start.n=0.0001"),
-    (([CURVE], PAPER, START), {"free": "n"}, "free='n'"),
-    (([CURVE], PAPER, START), {"free": None}, "free=None"),
-    (([CURVE], PAPER, START), {"offsets": "yes"}, "offsets='yes'"),
-    ((CURVE, PAPER, START), {}, "measurements="),
-    (((m for m in [CURVE]), PAPER, START), {}, "measurements="),
-    (([RateMeasurement(VERTICAL, ["a", "b"], [1.0, 2.0])], PAPER, START), {}, "measurements[0].times"),
-    (([RateMeasurement(VERTICAL, TIMES + 0j, FORCE)], PAPER, START), {}, "measurements[0].times"),
-    (([RateMeasurement(VERTICAL, TIMES, FORCE > 0)], PAPER, START), {}, "measurements[0].normal_force"),
-    (([RateMeasurement(VERTICAL, np.ma.array(TIMES, mask=TIMES > TIMES[30]), FORCE)], PAPER, START), {},
+@pytest.fixture(scope="module")
+def edge_run():
+    """The law's edge on the vertical path, solved once for the module when its first test runs (not at collection,
+    where every worker would pay it: ~0.5 s of CPU)."""
+    return solve_edge(PAPER, VERTICAL, LAW)
+
+
+class Measured(NamedTuple):
+    """The curve measured on the vertical path: its forces at :data:`TIMES` and the measurement of them."""
+
+    force: np.ndarray
+    curve: RateMeasurement
+
+
+@pytest.fixture(scope="module")
+def measured(edge_run) -> Measured:
+    force = edge_run.normal_force(TIMES, VERTICAL)
+    return Measured(force, RateMeasurement(VERTICAL, TIMES, force))
+
+
+@pytest.mark.parametrize("arguments, named", [  # arguments(measured) -> (positional, keywords)
+    (lambda m: (([m.curve], None, START), {}), "params=None"),
+    (lambda m: (([m.curve], PAPER, None), {}), "start=None"),
+    (lambda m: (([m.curve], PAPER, me.Adhesion(0.01, 0.15)), {}), "start=Adhesion"),
+    (lambda m: (([m.curve], PAPER, me.RateDependentAdhesion(0.01, 0.15, 1e-6, 1e-4)), {"free": ("n",)}),
+     "start.n=0.0001"),
+    (lambda m: (([m.curve], PAPER, START), {"free": "n"}), "free='n'"),
+    (lambda m: (([m.curve], PAPER, START), {"free": None}), "free=None"),
+    (lambda m: (([m.curve], PAPER, START), {"offsets": "yes"}), "offsets='yes'"),
+    (lambda m: ((m.curve, PAPER, START), {}), "measurements="),
+    (lambda m: (((c for c in [m.curve]), PAPER, START), {}), "measurements="),
+    (lambda m: (([RateMeasurement(VERTICAL, ["a", "b"], [1.0, 2.0])], PAPER, START), {}), "measurements[0].times"),
+    (lambda m: (([RateMeasurement(VERTICAL, TIMES + 0j, m.force)], PAPER, START), {}), "measurements[0].times"),
+    (lambda m: (([RateMeasurement(VERTICAL, TIMES, m.force > 0)], PAPER, START), {}),
+     "measurements[0].normal_force"),
+    (lambda m: (([RateMeasurement(VERTICAL, np.ma.array(TIMES, mask=TIMES > TIMES[30]), m.force)], PAPER, START), {}),
      "measurements[0].times is a masked array"),
-    (([RateMeasurement(VERTICAL, TIMES - 1e6, FORCE)], PAPER, START), {}, "measurements[0].times=-"),
-    (([RateMeasurement(VERTICAL, TIMES + 1e9, FORCE)], PAPER, START), {}, "measurements[0].times="),
-    (([RateMeasurement(VERTICAL, TIMES, FORCE * 1e300)], PAPER, START), {}, "measurements[0].normal_force="),
-    (([RateMeasurement(VERTICAL, TIMES, FORCE, True)], PAPER, START), {}, "measurements[0].noise=True"),
-    (([RateMeasurement(VERTICAL, TIMES, FORCE, "0.1")], PAPER, START), {}, "measurements[0].noise='0.1'"),
-    (([RateMeasurement(VERTICAL, TIMES, FORCE, np.ones(3))], PAPER, START), {}, "measurements[0].noise="),
-    (([RateMeasurement("path", TIMES, FORCE)], PAPER, START), {}, "measurements[0].path='path'"),
-    (([CURVE], PAPER, START), {"limits": me.Limits(samples=59)}, "samples"),
-], ids=lambda value: str(value)[:30] if isinstance(value, str) else None)
-def test_fit_rate_adhesion_names_what_it_cannot_take(arguments, keywords, named):
+    (lambda m: (([RateMeasurement(VERTICAL, TIMES - 1e6, m.force)], PAPER, START), {}), "measurements[0].times=-"),
+    (lambda m: (([RateMeasurement(VERTICAL, TIMES + 1e9, m.force)], PAPER, START), {}), "measurements[0].times="),
+    (lambda m: (([RateMeasurement(VERTICAL, TIMES, m.force * 1e300)], PAPER, START), {}),
+     "measurements[0].normal_force="),
+    (lambda m: (([RateMeasurement(VERTICAL, TIMES, m.force, True)], PAPER, START), {}), "measurements[0].noise=True"),
+    (lambda m: (([RateMeasurement(VERTICAL, TIMES, m.force, "0.1")], PAPER, START), {}),
+     "measurements[0].noise='0.1'"),
+    (lambda m: (([RateMeasurement(VERTICAL, TIMES, m.force, np.ones(3))], PAPER, START), {}),
+     "measurements[0].noise="),
+    (lambda m: (([RateMeasurement("path", TIMES, m.force)], PAPER, START), {}), "measurements[0].path='path'"),
+    (lambda m: (([m.curve], PAPER, START), {"limits": me.Limits(samples=59)}), "samples"),
+], ids=lambda value: str(value)[:30] if isinstance(value, str) else "case")
+def test_fit_rate_adhesion_names_what_it_cannot_take(measured, arguments, named):
+    positional, keywords = arguments(measured)
     with pytest.raises((TypeError, ValueError)) as refused:
-        fit_rate_adhesion(*arguments, **keywords)
+        fit_rate_adhesion(*positional, **keywords)
     message = str(refused.value)
     assert "\n" not in message and named in message and "allowed" in message, message
 
@@ -152,11 +179,6 @@ def test_fit_rate_adhesion_checks_the_samples_before_it_runs(monkeypatch):
 
 # --- R2: EdgeRun's methods took anything: radius(nan) was 0, normal_force('abc') numpy's words, pull_off_force with
 # samples=1 returned 0.0 and with samples=10**12 ran out of memory (MemoryError, 7.3 TiB) ----------------------------
-@pytest.fixture(scope="module")
-def edge_run():
-    return solve_edge(PAPER, VERTICAL, LAW)
-
-
 @pytest.mark.parametrize("call, named", [
     (lambda run: run.radius(np.array([np.nan])), "times=nan"),
     (lambda run: run.radius([1.0, np.inf]), "times=inf"),
