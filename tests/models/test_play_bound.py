@@ -1,9 +1,10 @@
 """The bound that replaces the probes before the slip onset (issue 34's performance, ``continuum/play_bound.py``):
-along the first segment in contact no spring's distance outside its window exceeds ``β (t − t_c) − ū(a(t))``, so
+along the first segment in contact no probe's distance outside its window exceeds ``β (t − t_c) − ū(a(t))``, so
 where that is negative the per-spring route's :data:`~mdr_events.models.continuum.play_run.PROBE_POINTS` probes
 find no spring at a cap and are not read. Checked against the probes themselves (on the paper's layer and on springs
-built to defeat the bound: their least ``μρ`` inside the contact, not at the centre), for its reach (it passes up to
-the onset's output spacing), where it must not pass, and the run against the route of before
+built to defeat the bound: their least ``μρ`` inside the contact, not at the centre, and a dip narrower than the
+bound's grid spacing centred on a probe, which only ``μρ`` read at the probes themselves sees), for its reach (it
+passes up to the onset's output spacing), where it must not pass, and the run against the route of before
 (``play_run.PROBE_BOUND = False``) at every output, bit for bit (the bound only skips readings whose answer it knows).
 Beside it, the probes of the times on one part where every window is fixed but for ``x`` (a fretting stroke before its
 slip onset) read in one evaluation of the anchors (``PlaySprings.caps_over``, ``play_probes.SHARED_PROBES``): their
@@ -21,8 +22,8 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events.models.continuum import play_probes, play_run
-from mdr_events.models.continuum.play_bound import _first_segment, sticking
+from mdr_events.models.continuum import play_bound, play_probes, play_run
+from mdr_events.models.continuum.play_bound import BOUND_GRID, _first_segment, sticking
 from mdr_events.models.continuum.play_reach import constant_part
 from mdr_events.models.continuum.play_springs import PlaySprings
 from play_recorders import made_plays
@@ -37,6 +38,13 @@ TIMES = 200
 PROBES = np.linspace(0.0, 1.0 - play_run.PROBE_SHARE, play_run.PROBE_POINTS)
 #: The dip built into the adversarial springs' ``μρ``: its depth (share), centre and width (shares of the radius).
 DIP = (0.95, 0.15, 0.04)
+#: The narrow dip's time (a share of :data:`TIMES`: after ``|ẋ|(t − t_c)`` outgrows ``ū(a)``, before the layer's onset
+#: at some 0.85) and its width (a share of the bound's grid spacing: at a quarter spacing or more from its centre its
+#: ``exp(−(δ/w)²)`` is below 1e-270, so the grid reads the layer's ratios bit for bit).
+NARROW = (0.7, 0.01)
+#: The probes among which the narrow dip's centre is chosen (within 4 % of the radius of the centre: attached near the
+#: first contact, so that with ``μρ = 0`` it slides before the layer's onset).
+NEAR_CENTRE = 40
 
 
 def contact_of(law: str, adhesive: bool = False) -> me.Contact:
@@ -91,7 +99,7 @@ def test_no_probe_is_at_a_cap_where_the_bound_passes(springs, layer_play):
     earlier."""
     play = layer_play if springs == "layer" else dipped(layer_play)
     times = first_segment_times(play)
-    passed, capped = sticking(play, times), at_cap(play, times)
+    passed, capped = sticking(play, times, PROBES), at_cap(play, times)
     assert np.any(capped), "the onset lies in the first segment"
     assert not np.any(passed & capped)
     onset = int(np.argmax(capped))
@@ -111,7 +119,42 @@ def test_the_dipped_springs_slide_first_inside(layer_play):
     assert first.size and np.min(first) > 0.1
     central = PlaySprings(play.line._replace(ratio=lambda xi: np.full(np.shape(xi), float(play.line.ratio(0.0)))),
                           play.path)  # (the bound's springs: μρ the centre's everywhere, the probes the dipped ones')
-    assert np.any(sticking(central, times) & capped)
+    assert np.any(sticking(central, times, PROBES) & capped)
+
+
+def narrowly_dipped(play: PlaySprings, times: np.ndarray) -> tuple[PlaySprings, int]:
+    """The same springs with ``μρ`` dropped to 0 in a dip :data:`NARROW` narrower than the bound's grid spacing,
+    centred on a probe near the centre at one of ``times`` (the probe farthest from the grid's points), and that
+    time's index."""
+    share, width = NARROW
+    row = int(share * times.size)
+    radius = play.radius(float(times[row]))
+    spacing = play.radius(float(times[-1])) / (BOUND_GRID - 1)
+    offsets = (radius * PROBES[:NEAR_CENTRE] / spacing) % 1.0
+    centre = radius * PROBES[int(np.argmin(np.abs(offsets - 0.5)))]  # (the product the route reads)
+    ratio = play.line.ratio
+
+    def dipped_ratio(xi):
+        xi = np.asarray(xi, dtype=float)
+        return ratio(xi) * (1.0 - np.exp(-(((xi - centre) / (width * spacing)) ** 2)))
+
+    return PlaySprings(play.line._replace(ratio=dipped_ratio), play.path), row
+
+
+def test_a_dip_between_the_grid_s_points_is_read_at_the_probes(layer_play, monkeypatch):
+    """A dip of ``μρ`` narrower than the bound's grid spacing, centred on a probe: the grid reads the layer's ratios,
+    the probe is at a cap at its time, and the bound (``μρ`` read at the probes themselves) passes no time with a
+    probe at a cap; the grid's estimate alone would pass that time. Before the dip the bound passes as on the layer."""
+    times = first_segment_times(layer_play)
+    play, row = narrowly_dipped(layer_play, times)
+    grid = np.linspace(0.0, play.radius(float(times[-1])), BOUND_GRID)
+    assert np.array_equal(play.line.ratio(grid), layer_play.line.ratio(grid))
+    passed, capped = sticking(play, times, PROBES), at_cap(play, times)
+    assert capped[row] and not np.any(capped[:row])
+    assert not np.any(passed & capped)
+    assert np.all(passed[:row // 2])
+    monkeypatch.setattr(play_bound, "_probes_least", lambda play, radii, shares: np.full(np.shape(radii), np.inf))
+    assert sticking(play, times, PROBES)[row]
 
 
 def test_the_bound_passes_no_time_where_it_does_not_hold(layer_play, monkeypatch):
@@ -119,12 +162,13 @@ def test_the_bound_passes_no_time_where_it_does_not_hold(layer_play, monkeypatch
     passes no time."""
     times = first_segment_times(layer_play)
     alone = PlaySprings(layer_play.line._replace(shift=lambda a: np.zeros(np.shape(a)), shifts=False), layer_play.path)
-    assert not np.any(sticking(alone, times))
+    assert not np.any(sticking(alone, times, PROBES))
     corner_t = layer_play.path_corners()[0]
     later = np.linspace(corner_t[-2], corner_t[-1], TIMES)
-    assert not np.any(sticking(layer_play, later))
+    assert not np.any(sticking(layer_play, later, PROBES))
     inside = me.Path(np.array([[0.0, 1e-5], [1e-4, 2e-4]]), me.Parameters.paper().v)
-    assert not np.any(sticking(PlaySprings(layer_play.line, inside), np.linspace(0.0, inside.duration, TIMES)))
+    inside_times = np.linspace(0.0, inside.duration, TIMES)
+    assert not np.any(sticking(PlaySprings(layer_play.line, inside), inside_times, PROBES))
 
 
 def fretting_in() -> me.Paths:
@@ -134,15 +178,13 @@ def fretting_in() -> me.Paths:
     return me.Paths({"in": me.Path(np.column_stack([x, d]), me.Parameters.paper().v)})
 
 
-@pytest.mark.parametrize("adhesive, motion", [(False, "A 20°"), (False, "in"), (True, "A 20°")])
-def test_the_run_is_the_route_of_before_at_every_output(adhesive, motion, monkeypatch):
-    """The whole run with the bound against the route of before (the probes read at every time where no node is at a
-    cap): the same at every output, bit for bit, and fewer probes read."""
-    motions = {"A 20°": me.Scenario("A", alpha=[20.0]), "in": fretting_in()}
-    runs, probed = {}, {}
+def read_with_and_without(monkeypatch, module, switch: str, contact: me.Contact, motion) -> dict[bool, list[int]]:
+    """The run of ``contact`` along ``motion`` with ``module.switch`` off and on, asserted the same at every output,
+    bit for bit; for each, the springs of each evaluation of the anchors (one entry a call)."""
+    runs, read = {}, {}
     anchors = PlaySprings.anchors
-    for bound in (False, True):
-        monkeypatch.setattr(play_run, "PROBE_BOUND", bound)
+    for on in (False, True):
+        monkeypatch.setattr(module, switch, on)
         counted = []
 
         def counting(self, xi, t, counted=counted):
@@ -150,11 +192,20 @@ def test_the_run_is_the_route_of_before_at_every_output(adhesive, motion, monkey
             return anchors(self, xi, t)
 
         monkeypatch.setattr(PlaySprings, "anchors", counting)
-        runs[bound] = me.simulate(contact_of("tau0+coulomb", adhesive), motions[motion], "continuum",
-                                  samples=SAMPLES)
-        probed[bound] = sum(counted)
+        runs[on] = me.simulate(contact, motion, "continuum", samples=SAMPLES)
+        read[on] = counted
     assert runs[True].identical(runs[False])
-    assert probed[True] < probed[False]
+    return read
+
+
+@pytest.mark.parametrize("adhesive, motion", [(False, "A 20°"), (False, "in"), (True, "A 20°")])
+def test_the_run_is_the_route_of_before_at_every_output(adhesive, motion, monkeypatch):
+    """The whole run with the bound against the route of before (the probes read at every time where no node is at a
+    cap): the same at every output, bit for bit, and fewer probes read."""
+    motions = {"A 20°": me.Scenario("A", alpha=[20.0]), "in": fretting_in()}
+    read = read_with_and_without(monkeypatch, play_run, "PROBE_BOUND", contact_of("tau0+coulomb", adhesive),
+                                 motions[motion])
+    assert sum(read[True]) < sum(read[False])
 
 
 # -- the probes of a part where every window is fixed but for x, read in one evaluation (play_probes.SHARED_PROBES) --
@@ -210,21 +261,8 @@ def test_times_across_a_clamp_or_a_moving_radius_are_not_shared(fretting_play):
 def test_the_fretting_run_with_shared_probes_is_the_route_of_before(monkeypatch):
     """The whole fretting run with the strokes' probes read together against each time's own: the same at every
     output, bit for bit, in fewer evaluations of the anchors."""
-    runs, calls = {}, {}
-    anchors = PlaySprings.anchors
-    for shared in (False, True):
-        monkeypatch.setattr(play_probes, "SHARED_PROBES", shared)
-        counted = []
-
-        def counting(self, xi, t, counted=counted):
-            counted.append(np.size(xi))
-            return anchors(self, xi, t)
-
-        monkeypatch.setattr(PlaySprings, "anchors", counting)
-        runs[shared] = me.simulate(contact_of("tau0+coulomb"), fretting(), "continuum", samples=SAMPLES)
-        calls[shared] = len(counted)
-    assert runs[True].identical(runs[False])
-    assert calls[True] < calls[False]
+    read = read_with_and_without(monkeypatch, play_probes, "SHARED_PROBES", contact_of("tau0+coulomb"), fretting())
+    assert len(read[True]) < len(read[False])
 
 
 def test_times_of_a_pinned_radius_on_a_moving_depth_are_not_shared(monkeypatch):

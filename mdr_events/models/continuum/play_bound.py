@@ -1,9 +1,9 @@
-r"""Where no spring can be at a cap before the slip onset, bounded in closed form: the probes need not be read there.
+r"""Where no probe can be at a cap before the slip onset, bounded in closed form: the probes need not be read there.
 
 The per-spring route (:mod:`.play_run`) reads, at every time where no node of the quadrature is at a cap,
 :data:`~.play_run.PROBE_POINTS` probes to find a zone opening between the nodes. Under ``τ0``'s part that is every
 output time before the slip onset (along scenario A at 20° on the paper's layer some 170 times of 1025 probes: half of
-the run). This module proves, where it can, that no spring is at a cap, so that those probes read nothing.
+the run). This module proves, where it can, that none of those probes is at a cap, so that they need not be read.
 
 Along the path's first segment in contact ``x`` and ``d`` are linear in time from the first contact ``t_c`` and every
 spring in contact at ``t`` attached at some ``τ`` in ``[t_c, t]`` with its anchor at ``x(τ)``. Along a monotone ``x`` a
@@ -15,18 +15,23 @@ where ``d`` rose through ``g(ξ)``, so its compression is ``d(t) − g(ξ) = ḋ
 
 ``|ẋ|(t − τ) − μρ(ξ) ḋ (t − τ) − ū(a(t)) ≤ β (t − t_c) − ū(a(t))``, ``β = max(|ẋ| − r ḋ, 0)``,
 
-``r`` a lower bound of ``μρ`` on ``[0, a(t)]`` (the springs' ratios on a grid of :data:`BOUND_GRID` radii, their
-running minimum, and at ``a(t)`` itself, less :data:`BOUND_MARGIN`). With adhesion (:class:`~.play_history.SpanHistory`:
+``r`` at most ``μρ`` at every probe (``a(t)`` times the route's shares, the same products the route reads, and,
+at or below them, the springs' ratios on a grid of :data:`BOUND_GRID` radii, their running minimum, and at ``a(t)``
+itself; less :data:`BOUND_MARGIN`), so the inequality holds for each probe exactly; ``μρ ≥ 0`` (``μ ≥ 0``), so where
+``|ẋ| (t − t_c)`` alone passes ``μρ`` is not read. Between the probes the grid is an estimate, not a bound: a dip of
+``μρ`` narrower than its spacing may let a spring there slide unseen, as the probes themselves would miss it; the
+skip is the probes' route, not more. With adhesion (:class:`~.play_history.SpanHistory`:
 springs jump in, some in tension, Coulomb's part off) ``c ≥ ū(a)`` alone and ``β = |ẋ|``. A time passes where
 ``β (t − t_c)`` plus the anchors' round-off (:data:`BOUND_ROUND_OFF` of the path's largest ``|x|`` and ``d``) lies
-below ``ū(a(t))`` less :data:`BOUND_MARGIN`: then no spring is at a cap, and the probes would find none. Under
+below ``ū(a(t))`` less :data:`BOUND_MARGIN`: then no probe is at a cap, and reading them would find none. Under
 Coulomb's law alone (``ū = 0``), after the first segment, or where the path starts in contact no time passes: the
 probes are read as before. Along scenario A at 20° on the paper's layer ``μρ`` is least at the centre, the first
 spring to slide, so the bound passes up to the output time before the slip onset.
 
 The bound decides only whether the probes are read: where it passes, they would have found no spring at a cap
 (``tests/models/test_play_bound.py``: the probes at every time it passes, on the layer and on springs built to
-defeat it; the runs with and without it the same at every output).
+defeat it, among them a dip of ``μρ`` narrower than the grid's spacing centred on a probe; the runs with and without
+it the same at every output).
 """
 
 from __future__ import annotations
@@ -37,19 +42,19 @@ from .play_history import DepthHistory, SpanHistory
 
 __all__ = ["sticking", "BOUND_MARGIN", "BOUND_ROUND_OFF", "BOUND_GRID"]
 
-#: The share by which the bound's lower bounds (``ū`` and ``μρ``) are lowered: ``μρ`` is read on a grid of a smooth
-#: function (a dip between two of :data:`BOUND_GRID` points is some ``(1/1024)²/8`` of its relative curvature, below
-#: 1e-8 on a layer's tables), and a spring within this share of its cap is probed as before.
+#: The share by which the bound's lower bounds (``ū`` and ``μρ``) are lowered: a probe within this share of its cap
+#: is read as before (the anchors' and the cap's table's round-off, some ulps, far below it).
 BOUND_MARGIN = 1e-6
 #: The anchors' round-off the bound leaves room for, as a share of the path's largest ``|x|`` and ``d``: the route
 #: reads ``x(t) − x(τ)`` and ``d − g`` from interpolated times, some ulps of those scales (1e-16), this far above them.
 BOUND_ROUND_OFF = 1e-9
-#: Points of the grid of radii on which ``μρ``'s least value is read.
+#: Points of the grid of radii on which ``μρ``'s least value is estimated first (the probes are read where it passes).
 BOUND_GRID = 1025
 
 
-def sticking(play, times: np.ndarray) -> np.ndarray:
-    """Whether, at each of ``times``, no spring in contact can be at a cap (module docstring).
+def sticking(play, times: np.ndarray, shares: np.ndarray) -> np.ndarray:
+    """Whether, at each of ``times``, none of the probes (``shares`` of the radius) can be at a cap (module
+    docstring).
 
     Parameters
     ----------
@@ -57,11 +62,13 @@ def sticking(play, times: np.ndarray) -> np.ndarray:
         The springs.
     times : numpy.ndarray
         The times (s, path clock), each in contact.
+    shares : numpy.ndarray
+        The probes as shares of the radius, as the route reads them (:func:`~.play_run._probed_all`).
 
     Returns
     -------
     numpy.ndarray
-        ``True`` where the bound proves every spring sticks (its probes need not be read), else ``False``.
+        ``True`` where the bound proves every probe sticks (they need not be read), else ``False``.
     """
     times = np.asarray(times, dtype=float)
     out = np.zeros(times.shape, bool)
@@ -75,13 +82,22 @@ def sticking(play, times: np.ndarray) -> np.ndarray:
         return out
     t = times[inside]
     shifts = np.array([play.shift(float(time)) for time in t])
-    beta = np.full(t.shape, abs(x_speed))
-    if not play.history.adhesive:  # (every spring compressed by ḋ (t − τ): Coulomb's part helps)
-        radii = np.array([play.radius(float(time)) for time in t])
-        beta = np.maximum(beta - _ratio_floor(play, radii) * d_speed, 0.0)
     _, corner_x, corner_d = play.path_corners()
     round_off = BOUND_ROUND_OFF * (float(np.max(np.abs(corner_x))) + float(np.max(np.abs(corner_d))))
-    out[inside] = beta * (t - t_c) + round_off < (1.0 - BOUND_MARGIN) * shifts
+
+    def passes(beta: np.ndarray, rows: np.ndarray) -> np.ndarray:
+        return beta * (t[rows] - t_c) + round_off < (1.0 - BOUND_MARGIN) * shifts[rows]
+
+    passed = passes(np.full(t.shape, abs(x_speed)), np.arange(t.size))  # (μρ ≥ 0: Coulomb's part only helps)
+    rows = np.flatnonzero(~passed)
+    if not play.history.adhesive and rows.size:  # (every spring compressed by ḋ (t − τ): μρ read where needed)
+        radii = np.array([play.radius(float(time)) for time in t[rows]])
+        floor = _ratio_floor(play, radii)
+        kept = passes(np.maximum(abs(x_speed) - floor * d_speed, 0.0), rows)  # (the probes read where this passes)
+        rows, radii, floor = rows[kept], radii[kept], floor[kept]
+        floor = np.minimum(floor, (1.0 - BOUND_MARGIN) * _probes_least(play, radii, shares))
+        passed[rows] = passes(np.maximum(abs(x_speed) - floor * d_speed, 0.0), rows)
+    out[inside] = passed
     return out
 
 
@@ -98,10 +114,17 @@ def _first_segment(play) -> tuple[float, float, float, float] | None:
 
 
 def _ratio_floor(play, radii: np.ndarray) -> np.ndarray:
-    """A lower bound of ``μρ(ξ)`` on ``[0, a]`` at each of ``radii``: the running minimum of the springs' ratios on a
-    grid up to the largest radius, read at the last grid point not beyond each radius and at the radius itself, less
-    :data:`BOUND_MARGIN`."""
+    """An estimate of ``μρ(ξ)``'s least value on ``[0, a]`` at each of ``radii``: the running minimum of the springs'
+    ratios on a grid up to the largest radius, read at the last grid point not beyond each radius and at the radius
+    itself, less :data:`BOUND_MARGIN` (a dip between two grid points is missed: :func:`_probes_least` reads the
+    probes themselves)."""
     grid = np.linspace(0.0, float(np.max(radii)), BOUND_GRID)
     floor = np.minimum.accumulate(play.line.ratio(grid))
     below = floor[np.searchsorted(grid, radii, side="right") - 1]
     return (1.0 - BOUND_MARGIN) * np.minimum(below, play.line.ratio(radii))
+
+
+def _probes_least(play, radii: np.ndarray, shares: np.ndarray) -> np.ndarray:
+    """``μρ``'s least value on the probes at each of ``radii``: the springs ``radius · shares``, the same products the
+    route reads (:func:`~.play_probes.probes_at_cap`), so the bound holds for each probe exactly."""
+    return np.array([np.min(play.line.ratio(radius * shares)) for radius in radii])

@@ -216,11 +216,11 @@ def _probed_all(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> tup
                       if coulomb_alone else state.length / radius for state, coulomb_alone, radius in zip(states, alone, a)])
     share[alone & ~(edge > 0.0)] = 0.0  # (no compressed springs: none at a cap)
     probed = np.flatnonzero((share == 0.0) & (edge > 0.0))
-    if PROBE_BOUND and probed.size:  # (where no spring can be at a cap the probes would find none: play_bound)
-        stuck = sticking(play, np.array(times)[probed])
+    grid = np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)
+    if PROBE_BOUND and probed.size:  # (where no probe can be at a cap the probes would find none: play_bound)
+        stuck = sticking(play, np.array(times)[probed], grid)
         probed = probed[~stuck]
-    at = probes_at_cap(play, np.array(times), edge, probed, np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS),
-                       PROBE_CHUNK)
+    at = probes_at_cap(play, np.array(times), edge, probed, grid, PROBE_CHUNK)
     spread = np.any(at, axis=1)  # (a probe at a cap where the share is 0)
     at_cap[probed] = at[:, [0, -1]]
     share[probed[spread]] = SMALLEST

@@ -41,8 +41,9 @@ every time (those at or after it dropped), so a clamp's provenance code does not
 where no spring has extremes of its own they are clamped a shared time at a time (:meth:`PlaySprings._shared_clamps`,
 each spring's crossings of ``d = g`` between them), without sorting the columns spring by spring.
 
-The springs' values (:mod:`.play_line`), the quadrature's panels and rule (:mod:`.play_quadrature`) and the golden
-sections of the springs' own extremes (:mod:`.play_golden`) are modules of their own.
+The springs' values (:mod:`.play_line`), the clamp times every spring shares (:mod:`.play_chain`), the quadrature's
+panels and rule (:mod:`.play_quadrature`) and the golden sections of the springs' own extremes (:mod:`.play_golden`)
+are modules of their own.
 """
 
 from __future__ import annotations
@@ -52,6 +53,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .play_chain import CONCAVITY_SAMPLES, shared_chain
 from .play_golden import GOLDEN_STEPS, GOLDEN_TABLE_POINTS, GOLDEN_TABLE_RTOL, _golden, convex_tables
 from .play_history import DepthHistory, SpanHistory
 from .play_line import SpringLine, spring_line
@@ -72,10 +74,6 @@ KINK_HALVINGS = 60
 KINK_CUTS = 64
 #: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
 KINK_ROUNDS = 6
-#: Depths at which a segment's ``ū(a(d))`` is sampled for its concavity.
-CONCAVITY_SAMPLES = 65
-#: A second difference of ``ū(a(d))`` counts as convex above this share of its largest value (round-off).
-CONCAVITY_ROUND_OFF = 1e-12
 _sum = np.add.reduce
 #: ``d − g`` within this share of the path's largest depth counts as not compressed (:meth:`PlaySprings.anchors`).
 PRESSED_ROUND_OFF = 1e-12
@@ -111,15 +109,6 @@ class SpringState(NamedTuple):
     compressed: float
 
 
-class _Chain(NamedTuple):
-    """The clamp times shared by every spring (increasing) and the intervals where each spring gains its own."""
-
-    times: np.ndarray
-    #: ``(start, end)`` of the intervals where ``ū(a(d))`` is not concave (each between two of ``times``)
-    convex: np.ndarray
-
-
-
 @dataclass
 class PlaySprings:
     """``F_x`` and the springs at a cap along ``path`` (path clock), every anchor its own play operator (module
@@ -151,7 +140,7 @@ class PlaySprings:
         #: a spring counts as compressed (its cap's Coulomb part on) beyond this ``d − g`` (m): at a crossing of
         #: ``d = g(ξ)`` the rounding of ``d − g`` would flip it from spring to spring
         self._pressed_round_off = PRESSED_ROUND_OFF * float(np.max(np.abs(self._corner_d)))
-        self.chain = self._chain()
+        self.chain = shared_chain(self.history, self.line, self._corner_t)
         #: whether springs have extremes of their own among their clamp times (:meth:`_columns`; else
         #: :meth:`_shared_clamps`)
         self._own_columns = bool(self.chain.convex.size)
@@ -169,29 +158,6 @@ class PlaySprings:
 
     def _d(self, t):
         return np.interp(t, self._corner_t, self._corner_d)
-
-    def _chain(self) -> _Chain:
-        """The corners, the radius's jumps, the ends of each piece where the radius moves smoothly (where it starts or
-        stops moving ``ū(a(t))`` has a kink, at which a window's extremum can lie) and, on each piece, the subintervals
-        where ``ū(a(t))`` is not concave (their ends join the shared times)."""
-        pieces = self.history.pieces()
-        times, convex = [self._corner_t, np.array([jump[0] for jump in self.history.jumps]),
-                         np.array(pieces, dtype=float).ravel()], []
-        for start, end in pieces:
-            grid = np.linspace(start, end, CONCAVITY_SAMPLES)
-            inner = grid.copy()
-            inner[[0, -1]] = grid[[0, -1]] + np.array([1.0, -1.0]) * 1e-12 * (end - start)  # (inside the piece)
-            shift = self.line.shift(self.history.radii(inner))
-            second = shift[:-2] - 2.0 * shift[1:-1] + shift[2:]
-            flagged = np.flatnonzero(second > CONCAVITY_ROUND_OFF * max(np.max(np.abs(shift)), 1e-300))
-            # (neighbouring flags' intervals [j, j + 2] overlap: one stretch each run of them, on which L is concave
-            # and U convex, one golden section each; a stretch per flag took 13 of them on a cone on a layer)
-            runs = np.split(flagged, np.flatnonzero(np.diff(flagged) > 1) + 1) if flagged.size else []
-            for run in runs:
-                convex.append((grid[run[0]], grid[run[-1] + 2]))
-                times.append(grid[[run[0], run[-1] + 2]])
-        shared = np.unique(np.concatenate(times))
-        return _Chain(shared, np.array(convex, dtype=float).reshape(-1, 2))
 
     def _window(self, xi: np.ndarray, g: np.ndarray, ratio: np.ndarray, times, shift=None):
         """``(L, U)`` of each spring at ``times`` (one per spring; ``ū(a(t))`` by ``shift`` if given)."""
