@@ -194,18 +194,18 @@ class BranchIntegrals:
 _ALPHA = [(2.0 * k + 1.0) / (k + 1.0) for k in range(CELL_NODES + 1)]
 _BETA = [(k + 1.0) / (k + 2.0) for k in range(CELL_NODES + 1)]
 _ALPHA_ARRAY = np.array(_ALPHA)
-#: At most this many radii, :meth:`BranchIntegrals.values` of a few rows reads each radius as :meth:`~BranchIntegrals.value`
-#: does (the same numbers bit for bit, ``tests/models/test_layer_closed_form.py``): an array's recurrence costs some
-#: forty NumPy calls whatever its length (~50 µs), one radius in Python floats ~6 µs.
+#: At most this many radii, :meth:`BranchIntegrals.values` of a few rows reads each radius as
+#: :meth:`~BranchIntegrals.value` does (the same numbers bit for bit, ``tests/models/test_layer_closed_form.py``): an
+#: array's recurrence costs some forty NumPy calls whatever its length (~50 µs), one radius in Python floats ~6 µs.
 SCALAR_RADII = 4
 
 
 def _clenshaw(coefficients: np.ndarray, t: np.ndarray) -> np.ndarray:
-    """Legendre's series of ``coefficients`` ``(degree + 1, function, radius)`` at ``t`` ``(radius,)`` by Clenshaw's
-    recurrence (``P_{k+1} = ((2k+1) t P_k − k P_{k−1})/(k+1)``), each step's operations those of :meth:`~BranchIntegrals.value`
-    in its order (``c_k + (α_k t) b₁ − β_k b₂``: the same numbers bit for bit), into two buffers kept over the steps:
-    the ``α_k t`` of every step at once, no array made per operation (a run's few hundred radii cost the operations'
-    calls, not their length)."""
+    """Legendre's series of ``coefficients`` ``(degree + 1, function, radius)`` at ``t`` ``(radius,)`` by
+    Clenshaw's recurrence (``P_{k+1} = ((2k+1) t P_k − k P_{k−1})/(k+1)``), each step's operations those of
+    :meth:`~BranchIntegrals.value` in its order (``c_k + (α_k t) b₁ − β_k b₂``: the same numbers bit for bit), into
+    two buffers kept over the steps: the ``α_k t`` of every step at once, no array made per operation (a run's few
+    hundred radii cost the operations' calls, not their length)."""
     scaled = np.multiply.outer(_ALPHA_ARRAY, t)  # (each α_k t: the products α_k · t of the steps' own)
     b1, b2 = np.zeros(coefficients.shape[1:]), np.zeros(coefficients.shape[1:])
     term = np.empty(coefficients.shape[1:])

@@ -385,9 +385,9 @@ class SpanIntegrator:
         return cap * self.segment.vx * slope - shift_slope * self.segment.vd
 
     def _rate_parts(self, var: float) -> tuple[float, float]:
-        """``∂d/∂a`` and ``dū/da`` (``nan`` under Coulomb's caps, which do not read it) at a moving span's variable,
-        kept per variable (a Python float): both caps' :meth:`rate` read them, at the span's ends twice over
-        (:meth:`met_at_start`, :meth:`event_functions`), the same numbers."""
+        """``∂d/∂a`` and ``dū/da`` (``nan`` under Coulomb's caps, which do not read it) at a moving span's
+        variable, kept per variable (a Python float): both caps' :meth:`rate` read them, at the span's ends twice
+        over (:meth:`met_at_start`, :meth:`event_functions`), the same numbers."""
         if self._rates is None:
             self._rates = {}
         found = self._rates.get(var) if type(var) is float else None
