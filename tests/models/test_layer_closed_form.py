@@ -145,10 +145,8 @@ def test_a_primitive_read_off_its_needed_rows_is_every_rows_bit_for_bit(contact,
                                                                                                              every)
 
 
-def test_the_levels_and_rates_kept_per_variable_are_those_read_afresh(monkeypatch):
-    """``SpanIntegrator.level`` keeps its last variable's ``x`` and centre shift, ``rate`` its variables' slopes
-    (``_rate_parts``): on every moving span of the thin punch's run (B at 20°, the recession) both caps read in turn
-    at 33 variables, then the ends again, give the numbers of a reading with nothing kept, bit for bit."""
+def _moving_integrators(monkeypatch) -> list:
+    """The integrators of the moving spans of the thin punch's run (B at 20°, the recession), after the run."""
     from mdr_events.limits import check_limits
     from mdr_events.models.continuum import span as span_module
     from mdr_events.models.continuum.solve import run_continuum
@@ -165,12 +163,47 @@ def test_the_levels_and_rates_kept_per_variable_are_those_read_afresh(monkeypatc
     run_continuum(model.kernel, cases.paths, 11)
     moving = [integrator for integrator in integrators if integrator.moving]
     assert moving
-    for integrator in moving:
+    return moving
+
+
+def test_the_levels_and_rates_kept_per_variable_are_those_read_afresh(monkeypatch):
+    """``SpanIntegrator.level`` keeps its last variable's ``x`` and centre shift, ``rate`` its variables' slopes
+    (``_rate_parts``): on every moving span of the thin punch's run (B at 20°, the recession) both caps read in turn
+    at 33 variables, then the ends again, give the numbers of a reading with nothing kept, bit for bit."""
+    for integrator in _moving_integrators(monkeypatch):
         variables = np.linspace(integrator.start, integrator.stop, 33).tolist()
         for var in variables + [integrator.start, integrator.stop, integrator.start]:
             for cap in (1.0, -1.0, 1.0):
                 kept = integrator.level(cap, var), integrator.rate(cap, var)
-                integrator._last_level, integrator._rates = (math.nan,) * 3, None
+                integrator._last_level, integrator._rates = (None, math.nan, math.nan), None
                 fresh = integrator.level(cap, var), integrator.rate(cap, var)
                 assert kept == fresh and [math.copysign(1.0, v) for v in kept] == \
                     [math.copysign(1.0, v) for v in fresh]
+
+
+def test_the_levels_and_rates_kept_tell_the_zeros_apart_and_are_bounded(monkeypatch):
+    """The memos of ``SpanIntegrator.level`` and ``_rate_parts`` key a variable by its sign too (``-0.0`` then ``0.0``
+    are two readings, as ``memo.exact_key`` keeps them apart), and the rates kept are the last ``RATES_KEPT``
+    variables' alone: after 50 variables read, the last is read from the memo, the first afresh."""
+    from mdr_events.models.continuum.span import RATES_KEPT, variable_key
+
+    integrator = _moving_integrators(monkeypatch)[0]
+    times, slopes = [], []
+    time_of, branch = integrator.time_of, integrator.branch
+    integrator.time_of = lambda var: times.append(math.copysign(1.0, var)) or time_of(var)
+    integrator.branch = type("Counted", (), {"slope": lambda self, a: slopes.append(math.copysign(1.0, a)) or
+                                             branch.slope(a), "__getattr__": lambda self, name: getattr(branch, name)})()
+    for var in (-0.0, -0.0, 0.0, 0.0):
+        for cap in (1.0, -1.0):
+            integrator.level(cap, var), integrator._rate_parts(var)
+    assert times == slopes == [-1.0, 1.0]
+    variables = np.linspace(integrator.start, integrator.stop, 50).tolist()
+    for var in variables:
+        integrator._rate_parts(var)
+    assert len(integrator._rates) == RATES_KEPT
+    slopes.clear()
+    integrator._rate_parts(variables[-1])
+    assert slopes == []
+    integrator._rate_parts(variables[0])
+    assert slopes == [1.0]
+    assert variable_key(-0.0) != variable_key(0.0) and variable_key(np.float64(0.5)) is None

@@ -191,6 +191,29 @@ class EventFunction:
         return self.function(var)
 
 
+#: how many variables' rates a :class:`SpanIntegrator` keeps (:meth:`SpanIntegrator._rate_parts`): the span's two
+#: ends, read again by each event, and the variable both caps' events read in turn, with one to spare
+RATES_KEPT = 4
+
+
+def variable_key(var: float) -> tuple[float, float] | None:
+    """The key of an integration variable in :class:`SpanIntegrator`'s memos.
+
+    Parameters
+    ----------
+    var : float
+        The variable.
+
+    Returns
+    -------
+    tuple of float or None
+        ``var`` with its sign, so that ``-0.0`` and ``0.0`` are kept apart (as ``mdr_events.memo.exact_key`` keeps
+        them: their readings may differ in their zeros' signs); ``None`` for a variable that is not a Python float
+        (a NumPy scalar, an array: not kept).
+    """
+    return (var, math.copysign(1.0, var)) if type(var) is float else None
+
+
 class SpanIntegrator:
     """The right-hand side and the event functions of one span (see the module docstring).
 
@@ -214,12 +237,13 @@ class SpanIntegrator:
     #: A at 20° on a 41-point table, whose knots start a piece each: 1.1e-8 -> 3.5e-9). ``False`` marches DOP853's
     #: steps (:func:`~.integrate.solve_between_knots`, the route before, kept for the tests that compare both)
     quadrature = True
-    #: the last variable :meth:`level` read at, with its ``x`` and the caps' centre shift there: both caps' events read
-    #: the same variable one after the other (the closed form's readings, ``solve_ivp``'s), and the second reads the
-    #: first's numbers (the same operations, bit for bit); a variable that is not a Python float is not kept
-    _last_level: tuple[float, float, float] = (math.nan, math.nan, math.nan)
-    #: :meth:`_rate_parts` by variable (made at the first reading: a dict of the integrator's own)
-    _rates: dict[float, tuple[float, float]] | None = None
+    #: the last variable :meth:`level` read at (its :func:`variable_key`), with its ``x`` and the caps' centre shift
+    #: there: both caps' events read the same variable one after the other (the closed form's readings,
+    #: ``solve_ivp``'s), and the second reads the first's numbers (the same operations, bit for bit)
+    _last_level: tuple[object, float, float] = (None, math.nan, math.nan)
+    #: :meth:`_rate_parts` of the last :data:`RATES_KEPT` variables by :func:`variable_key`, oldest first (made at the
+    #: first reading: a dict of the integrator's own)
+    _rates: dict[tuple[float, float], tuple[float, float]] | None = None
     #: a moving span without a front on the half-space is integrated in closed form (:meth:`primitive`,
     #: :mod:`.closed_form`); ``False`` integrates it as any other (the tests compare both)
     closed_form = True
@@ -348,12 +372,13 @@ class SpanIntegrator:
         float
             The level (m).
         """
+        key = variable_key(var)
         last, x, shift = self._last_level
-        if not (var == last and type(var) is float):
+        if key is None or key != last:
             t = self.time_of(var)
             x, shift = self.segment.x(t), self.caps.centre_shift(self.radius_of(var), self.segment.d(t))
-            if type(var) is float:
-                self._last_level = (var, x, shift)
+            if key is not None:
+                self._last_level = (key, x, shift)
         return x - cap * shift
 
     def rate(self, cap: Cap | float, var: float) -> float:
@@ -386,16 +411,19 @@ class SpanIntegrator:
 
     def _rate_parts(self, var: float) -> tuple[float, float]:
         """``∂d/∂a`` and ``dū/da`` (``nan`` under Coulomb's caps, which do not read it) at a moving span's
-        variable, kept per variable (a Python float): both caps' :meth:`rate` read them, at the span's ends twice
-        over (:meth:`met_at_start`, :meth:`event_functions`), the same numbers."""
+        variable, kept for the last :data:`RATES_KEPT` variables (:func:`variable_key`): both caps' :meth:`rate` read
+        them, at the span's ends twice over (:meth:`met_at_start`, :meth:`event_functions`), the same numbers."""
         if self._rates is None:
             self._rates = {}
-        found = self._rates.get(var) if type(var) is float else None
+        key = variable_key(var)
+        found = None if key is None else self._rates.get(key)
         if found is None:
             a = var * self.scale
             found = (self.branch.slope(a), math.nan if self.kappa else self.medium.shift_slope(self.K, a))
-            if type(var) is float:
-                self._rates[var] = found
+            if key is not None:
+                if len(self._rates) >= RATES_KEPT:
+                    del self._rates[next(iter(self._rates))]
+                self._rates[key] = found
         return found
 
     def may_push(self, cap: Cap) -> bool:
