@@ -66,6 +66,14 @@ def test_one_radius_and_many_read_the_series_alike():
     np.testing.assert_array_equal(np.array([series.value(float(a)) for a in radii]).T, series.values(radii))
 
 
+def _clenshaw_allocating(coefficients: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """``layer_closed_form._clenshaw`` as ``BranchIntegrals.values`` read it before, a new array per operation."""
+    b1 = b2 = 0.0
+    for k in range(layer_closed_form.CELL_NODES, 0, -1):
+        b1, b2 = coefficients[k] + layer_closed_form._ALPHA[k] * t * b1 - layer_closed_form._BETA[k] * b2, b1
+    return coefficients[0] + t * b1 - 0.5 * b2
+
+
 @pytest.mark.parametrize("h", LAYERS)
 def test_a_few_radii_and_the_buffered_recurrence_read_the_series_alike(h):
     """``values`` of a few rows at up to ``SCALAR_RADII`` radii (read one by one as ``value``) and its recurrence into
@@ -78,13 +86,29 @@ def test_a_few_radii_and_the_buffered_recurrence_read_the_series_alike(h):
         cell = np.clip(np.searchsorted(series._ends, radii, side="right") - 1, 0, len(series.ends) - 2)
         t = 2.0 * (radii - series._ends[cell]) / series.width[cell] - 1.0
         for rows in ((0, 2, 4), (0, 1, 3), (1,), (0, 1, 2, 3, 4)):
-            before = layer_closed_form._clenshaw_allocating(series._by_degree[:, list(rows)][:, :, cell], t)
+            before = _clenshaw_allocating(series._by_degree[:, list(rows)][:, :, cell], t)
             many = series.values(radii, rows)
             assert np.array_equal(many, before) and np.array_equal(np.signbit(many), np.signbit(before))
             for start in range(0, 40, layer_closed_form.SCALAR_RADII):
                 few = series.values(radii[start:start + layer_closed_form.SCALAR_RADII], rows)
                 assert np.array_equal(few, before[:, start:start + layer_closed_form.SCALAR_RADII])
                 assert np.array_equal(np.signbit(few), np.signbit(before[:, start:start + 4]))
+
+
+def test_a_few_radii_and_the_arrays_route_give_one_shape(monkeypatch):
+    """``values`` of a few rows read one radius at a time (up to ``SCALAR_RADII``) and the arrays' route (the shortcut
+    off) give the same shape and numbers, bit for bit: ``(rows,)`` for a 0-d radius, ``(rows, n)`` for n radii."""
+    medium, (branch, _) = _branches(5e-3)
+    series = layer_closed_form.branch_integrals(medium, branch)
+    radii = np.linspace(2 * series.floor, 3 * series.floor, layer_closed_form.SCALAR_RADII + 1)
+    for a in (np.array(radii[0]), np.float64(radii[1]), radii[:1], radii[:2], radii[:-1], radii):
+        for rows in ((0, 2, 4), (1,)):
+            few = series.values(a, rows)
+            with monkeypatch.context() as patch:
+                patch.setattr(layer_closed_form, "SCALAR_RADII", -1)
+                arrays = series.values(a, rows)
+            assert few.shape == arrays.shape == (len(rows),) + np.shape(a)
+            assert np.array_equal(few, arrays)
 
 
 @pytest.mark.parametrize("h", LAYERS[:2])
