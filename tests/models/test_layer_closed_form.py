@@ -66,6 +66,14 @@ def test_one_radius_and_many_read_the_series_alike():
     np.testing.assert_array_equal(np.array([series.value(float(a)) for a in radii]).T, series.values(radii))
 
 
+def _clenshaw_allocating(coefficients: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """``layer_closed_form._clenshaw`` as ``BranchIntegrals.values`` read it before, a new array per operation."""
+    b1 = b2 = 0.0
+    for k in range(layer_closed_form.CELL_NODES, 0, -1):
+        b1, b2 = coefficients[k] + layer_closed_form._ALPHA[k] * t * b1 - layer_closed_form._BETA[k] * b2, b1
+    return coefficients[0] + t * b1 - 0.5 * b2
+
+
 @pytest.mark.parametrize("h", LAYERS)
 def test_a_few_radii_and_the_buffered_recurrence_read_the_series_alike(h):
     """``values`` of a few rows at up to ``SCALAR_RADII`` radii (read one by one as ``value``) and its recurrence into
@@ -78,13 +86,29 @@ def test_a_few_radii_and_the_buffered_recurrence_read_the_series_alike(h):
         cell = np.clip(np.searchsorted(series._ends, radii, side="right") - 1, 0, len(series.ends) - 2)
         t = 2.0 * (radii - series._ends[cell]) / series.width[cell] - 1.0
         for rows in ((0, 2, 4), (0, 1, 3), (1,), (0, 1, 2, 3, 4)):
-            before = layer_closed_form._clenshaw_allocating(series._by_degree[:, list(rows)][:, :, cell], t)
+            before = _clenshaw_allocating(series._by_degree[:, list(rows)][:, :, cell], t)
             many = series.values(radii, rows)
             assert np.array_equal(many, before) and np.array_equal(np.signbit(many), np.signbit(before))
             for start in range(0, 40, layer_closed_form.SCALAR_RADII):
                 few = series.values(radii[start:start + layer_closed_form.SCALAR_RADII], rows)
                 assert np.array_equal(few, before[:, start:start + layer_closed_form.SCALAR_RADII])
                 assert np.array_equal(np.signbit(few), np.signbit(before[:, start:start + 4]))
+
+
+def test_a_few_radii_and_the_arrays_route_give_one_shape(monkeypatch):
+    """``values`` of a few rows read one radius at a time (up to ``SCALAR_RADII``) and the arrays' route (the shortcut
+    off) give the same shape and numbers, bit for bit: ``(rows,)`` for a 0-d radius, ``(rows, n)`` for n radii."""
+    medium, (branch, _) = _branches(5e-3)
+    series = layer_closed_form.branch_integrals(medium, branch)
+    radii = np.linspace(2 * series.floor, 3 * series.floor, layer_closed_form.SCALAR_RADII + 1)
+    for a in (np.array(radii[0]), np.float64(radii[1]), radii[:1], radii[:2], radii[:-1], radii):
+        for rows in ((0, 2, 4), (1,)):
+            few = series.values(a, rows)
+            with monkeypatch.context() as patch:
+                patch.setattr(layer_closed_form, "SCALAR_RADII", -1)
+                arrays = series.values(a, rows)
+            assert few.shape == arrays.shape == (len(rows),) + np.shape(a)
+            assert np.array_equal(few, arrays)
 
 
 @pytest.mark.parametrize("h", LAYERS[:2])
@@ -145,10 +169,8 @@ def test_a_primitive_read_off_its_needed_rows_is_every_rows_bit_for_bit(contact,
                                                                                                              every)
 
 
-def test_the_levels_and_rates_kept_per_variable_are_those_read_afresh(monkeypatch):
-    """``SpanIntegrator.level`` keeps its last variable's ``x`` and centre shift, ``rate`` its variables' slopes
-    (``_rate_parts``): on every moving span of the thin punch's run (B at 20°, the recession) both caps read in turn
-    at 33 variables, then the ends again, give the numbers of a reading with nothing kept, bit for bit."""
+def _moving_integrators(monkeypatch) -> list:
+    """The integrators of the moving spans of the thin punch's run (B at 20°, the recession), after the run."""
     from mdr_events.limits import check_limits
     from mdr_events.models.continuum import span as span_module
     from mdr_events.models.continuum.solve import run_continuum
@@ -165,12 +187,47 @@ def test_the_levels_and_rates_kept_per_variable_are_those_read_afresh(monkeypatc
     run_continuum(model.kernel, cases.paths, 11)
     moving = [integrator for integrator in integrators if integrator.moving]
     assert moving
-    for integrator in moving:
+    return moving
+
+
+def test_the_levels_and_rates_kept_per_variable_are_those_read_afresh(monkeypatch):
+    """``SpanIntegrator.level`` keeps its last variable's ``x`` and centre shift, ``rate`` its variables' slopes
+    (``_rate_parts``): on every moving span of the thin punch's run (B at 20°, the recession) both caps read in turn
+    at 33 variables, then the ends again, give the numbers of a reading with nothing kept, bit for bit."""
+    for integrator in _moving_integrators(monkeypatch):
         variables = np.linspace(integrator.start, integrator.stop, 33).tolist()
         for var in variables + [integrator.start, integrator.stop, integrator.start]:
             for cap in (1.0, -1.0, 1.0):
                 kept = integrator.level(cap, var), integrator.rate(cap, var)
-                integrator._last_level, integrator._rates = (math.nan,) * 3, None
+                integrator._last_level, integrator._rates = (None, math.nan, math.nan), None
                 fresh = integrator.level(cap, var), integrator.rate(cap, var)
                 assert kept == fresh and [math.copysign(1.0, v) for v in kept] == \
                     [math.copysign(1.0, v) for v in fresh]
+
+
+def test_the_levels_and_rates_kept_tell_the_zeros_apart_and_are_bounded(monkeypatch):
+    """The memos of ``SpanIntegrator.level`` and ``_rate_parts`` key a variable by its sign too (``-0.0`` then ``0.0``
+    are two readings, as ``memo.exact_key`` keeps them apart), and the rates kept are the last ``RATES_KEPT``
+    variables' alone: after 50 variables read, the last is read from the memo, the first afresh."""
+    from mdr_events.models.continuum.span import RATES_KEPT, variable_key
+
+    integrator = _moving_integrators(monkeypatch)[0]
+    times, slopes = [], []
+    time_of, branch = integrator.time_of, integrator.branch
+    integrator.time_of = lambda var: times.append(math.copysign(1.0, var)) or time_of(var)
+    integrator.branch = type("Counted", (), {"slope": lambda self, a: slopes.append(math.copysign(1.0, a)) or
+                                             branch.slope(a), "__getattr__": lambda self, name: getattr(branch, name)})()
+    for var in (-0.0, -0.0, 0.0, 0.0):
+        for cap in (1.0, -1.0):
+            integrator.level(cap, var), integrator._rate_parts(var)
+    assert times == slopes == [-1.0, 1.0]
+    variables = np.linspace(integrator.start, integrator.stop, 50).tolist()
+    for var in variables:
+        integrator._rate_parts(var)
+    assert len(integrator._rates) == RATES_KEPT
+    slopes.clear()
+    integrator._rate_parts(variables[-1])
+    assert slopes == []
+    integrator._rate_parts(variables[0])
+    assert slopes == [1.0]
+    assert variable_key(-0.0) != variable_key(0.0) and variable_key(np.float64(0.5)) is None

@@ -84,7 +84,8 @@ from .span_extrema import EXTREMUM_QUANTITIES, extremum
 from .work import algebraic_tangential_force, tangential_work
 from .solve import run_continuum, solve_path
 from .integrate import integrate_span
-from .span import Span, SpanIntegrator, Trigger
+from .span import SpanIntegrator, Trigger
+from .span_record import Span
 from .state import (EVENT_KINDS, NO_ZONE, ZONE_EVENTS, Cap, ContactState, Event, EventKind, Regime, Slip, ZoneSummary,
                     zone_events)
 from .tolerances import NEGLIGIBLE_SHARE, Tolerances

@@ -5,7 +5,7 @@ With ``v = origin + reach u^p`` (``u`` from 1 at the start to 0 at the stop: :cl
 multiple of ``n``, :func:`grading_power`) ``x_c ∝ u^(p/n)`` is smooth at ``u = 0``: the span takes a few steps
 (:func:`graded_problem`; 300 → 47 evaluations on that span). A front reaching the centre of a part in
 ``ξⁿ`` moves as ``(t_e − t)^(1/n)``: on a pinned span whose level is linear in time, ``t_e`` is a closed form and the
-span is graded towards it, ending there with its event (:attr:`Grading.event`). The span keeps its grading (:attr:`~.span.Span.grading`): its dense output is in ``u``, and
+span is graded towards it, ending there with its event (:attr:`Grading.event`). The span keeps its grading (:attr:`~.span_record.Span.grading`): its dense output is in ``u``, and
 whatever reads it at a time or a radius goes through :meth:`Grading.graded` (:func:`span_variable`).
 """
 

@@ -18,9 +18,10 @@ from .anchors import AnchorMap
 from .closed_form import closed_span
 from .graded import SpanProblem, graded_problem
 from .model import ContinuumModel
-from .span import EventFunction, Span, SpanIntegrator, SpanOutcome, Variable
+from .span import EventFunction, SpanIntegrator, SpanOutcome
 from .span_march import Marched, march
 from .span_panels import NODES, PIECE_NODES, panels, radau_rule, rule
+from .span_record import Span, Variable
 from .state import Cap, Regime
 from .tolerances import MIN_STEPS_PER_SPAN, SIMULTANEOUS_SHARE, Tolerances
 

@@ -137,19 +137,20 @@ class BranchIntegrals:
         Parameters
         ----------
         a : numpy.ndarray
-            The radii (m), one-dimensional.
+            The radii (m), one-dimensional, or one radius (0-d).
         rows : slice or tuple of int, optional
             Which of the functions (default all): a slice, or their indices in :data:`NAMES`' order.
 
         Returns
         -------
         numpy.ndarray
-            ``(function, radius)``.
+            ``(function, radius)``; ``(function,)`` at one radius given 0-d.
         """
         a = np.asarray(a, dtype=float)
         if a.size <= SCALAR_RADII and isinstance(rows, tuple):  # (a few radii: :meth:`value`'s, the same numbers)
-            return np.array([self.value(radius, rows) for radius in a.tolist()], dtype=float).reshape(
-                a.size, len(self.NAMES))[:, list(rows)].T
+            read = [self.value(radius, rows) for radius in a.reshape(-1).tolist()]
+            return np.array(read, dtype=float).reshape(a.size, len(self.NAMES))[:, list(rows)].T.reshape(
+                (len(rows),) + a.shape)
         cell = piece_index(self._ends, a, len(self.ends) - 2)
         t = 2.0 * (a - self._ends[cell]) / self.width[cell] - 1.0
         if isinstance(rows, tuple):  # (a few rows: their coefficients kept apart, the same numbers)
@@ -194,18 +195,18 @@ class BranchIntegrals:
 _ALPHA = [(2.0 * k + 1.0) / (k + 1.0) for k in range(CELL_NODES + 1)]
 _BETA = [(k + 1.0) / (k + 2.0) for k in range(CELL_NODES + 1)]
 _ALPHA_ARRAY = np.array(_ALPHA)
-#: At most this many radii, :meth:`BranchIntegrals.values` of a few rows reads each radius as :meth:`~BranchIntegrals.value`
-#: does (the same numbers bit for bit, ``tests/models/test_layer_closed_form.py``): an array's recurrence costs some
-#: forty NumPy calls whatever its length (~50 µs), one radius in Python floats ~6 µs.
+#: At most this many radii, :meth:`BranchIntegrals.values` of a few rows reads each radius as
+#: :meth:`~BranchIntegrals.value` does (the same numbers bit for bit, ``tests/models/test_layer_closed_form.py``): an
+#: array's recurrence costs some forty NumPy calls whatever its length (~50 µs), one radius in Python floats ~6 µs.
 SCALAR_RADII = 4
 
 
 def _clenshaw(coefficients: np.ndarray, t: np.ndarray) -> np.ndarray:
-    """Legendre's series of ``coefficients`` ``(degree + 1, function, radius)`` at ``t`` ``(radius,)`` by Clenshaw's
-    recurrence (``P_{k+1} = ((2k+1) t P_k − k P_{k−1})/(k+1)``), each step's operations those of :meth:`~BranchIntegrals.value`
-    in its order (``c_k + (α_k t) b₁ − β_k b₂``: the same numbers bit for bit), into two buffers kept over the steps:
-    the ``α_k t`` of every step at once, no array made per operation (a run's few hundred radii cost the operations'
-    calls, not their length)."""
+    """Legendre's series of ``coefficients`` ``(degree + 1, function, radius)`` at ``t`` ``(radius,)`` by
+    Clenshaw's recurrence (``P_{k+1} = ((2k+1) t P_k − k P_{k−1})/(k+1)``), each step's operations those of
+    :meth:`~BranchIntegrals.value` in its order (``c_k + (α_k t) b₁ − β_k b₂``: the same numbers bit for bit), into
+    two buffers kept over the steps: the ``α_k t`` of every step at once, no array made per operation (a run's few
+    hundred radii cost the operations' calls, not their length)."""
     scaled = np.multiply.outer(_ALPHA_ARRAY, t)  # (each α_k t: the products α_k · t of the steps' own)
     b1, b2 = np.zeros(coefficients.shape[1:]), np.zeros(coefficients.shape[1:])
     term = np.empty(coefficients.shape[1:])
@@ -215,15 +216,6 @@ def _clenshaw(coefficients: np.ndarray, t: np.ndarray) -> np.ndarray:
         np.multiply(_BETA[k], b2, out=b2)
         np.subtract(term, b2, out=b2)  # (the new b₁, in the old b₂'s buffer)
         b1, b2 = b2, b1
-    return coefficients[0] + t * b1 - 0.5 * b2
-
-
-def _clenshaw_allocating(coefficients: np.ndarray, t: np.ndarray) -> np.ndarray:
-    """:func:`_clenshaw` as :meth:`BranchIntegrals.values` read it before, a new array per operation (kept for the
-    test that compares both bit for bit)."""
-    b1 = b2 = 0.0
-    for k in range(CELL_NODES, 0, -1):
-        b1, b2 = coefficients[k] + _ALPHA[k] * t * b1 - _BETA[k] * b2, b1
     return coefficients[0] + t * b1 - 0.5 * b2
 
 

@@ -54,7 +54,7 @@ class SpanPlan(NamedTuple):
         The radius before springs jumped in at the start (``None``: no jump).
     roots : tuple of (float, float, float), default ()
         The radius roots the plan took on the span's branch, each ``(depth, rtol, Branch.radius(depth, rtol))``
-        (the span keeps them: :attr:`~.span.Span.roots`).
+        (the span keeps them: :attr:`~.span_record.Span.roots`).
     """
 
     action: Action

@@ -17,7 +17,7 @@ from .span_forces import span_forces
 from .span_sliding import span_sliding_lengths, takes_batch
 from .graded import span_variable
 from .model import ContinuumModel
-from .span import Span, Variable
+from .span_record import Span, Variable
 from .state import CONTACT_ENDING, Event, Regime
 
 

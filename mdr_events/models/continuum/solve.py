@@ -30,7 +30,8 @@ from .regions import Region
 from .solution import PathSolution, evaluate, sample_times
 from .integrate import integrate_span
 from .layer_reach import check_layer_reach
-from .span import Span, SpanIntegrator, SpanOutcome, Trigger, root_key
+from .span import SpanIntegrator, SpanOutcome, Trigger
+from .span_record import Span, root_key
 from .split_map import SplitAnchorMap
 from .split_solve import commit, new_anchors, split_slip_transition
 from .split_span import SplitSpanIntegrator

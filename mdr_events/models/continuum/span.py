@@ -35,7 +35,6 @@ from __future__ import annotations
 import bisect
 import enum
 import math
-from dataclasses import dataclass, field
 from typing import Callable, NamedTuple
 
 import numpy as np
@@ -45,96 +44,11 @@ from .anchors import AnchorMap
 from .closed_form import Primitive
 from .graded import Grading
 from .media import HalfSpaceMedium
-from .model import ContinuumModel, Segment
+from .model import ContinuumModel
+from .span_record import Span, root_key
 from .state import Cap, Regime, Slip
 from .tolerances import EPS, LEVEL_ULPS, MIN_STEPS_PER_SPAN, PIECE_SHARE
 from .zones import EDGE_LEAVING_TOLERANCES, cap_travel, indenter_travel, lay_out_zones, length_scale
-
-
-class Variable(enum.Enum):
-    """The integration variable of a span."""
-
-    TIME = "time"
-    RADIUS = "radius"
-
-
-@dataclass
-class Span:
-    """An interval with one radius regime, as the solution keeps it.
-
-    Parameters
-    ----------
-    t_start : float
-        The span's start (s on the path's clock).
-    t_end : float
-        Its end (s).
-    segment : Segment
-        The path segment it lies on.
-    regime : Regime
-        How the radius moves: growing, shrinking or pinned.
-    pinned_radius : float, default 0.0
-        The radius (m) of a pinned span.
-    interpolant : callable, optional
-        ``solve_ivp``'s dense output of ``F_x`` in :attr:`variable` (the time, or the radius over :attr:`scale`);
-        ``None`` where the force is the constant :attr:`force`.
-    force : float, default 0.0
-        ``F_x`` (N) at the start (the span's force where it is constant).
-    anchors : AnchorMap, optional
-        The anchor map during the span.
-    variable : Variable, default Variable.TIME
-        The integration variable.
-    scale : float, default 1.0
-        The length (m) the radius is measured in as the integration variable (the time: 1).
-    grading : Grading, optional
-        The integration variable graded towards the span's stop (:mod:`.graded`): the interpolant is in ``u``.
-    zones : SpanZones, optional
-        The layouts of a span of ``"tau0+coulomb"`` with adhesion (:mod:`.split_zones`): its sliding length is read
-        off them (``None``: off :attr:`anchors`).
-    roots : dict, optional
-        The radius roots the solve took on a moving span's branch, :func:`root_key` of ``(depth, rtol)`` ->
-        ``Branch.radius(depth, rtol)`` (its ends': the extrema's scan reads them instead of finding them again, the
-        same numbers; default none).
-    """
-
-    t_start: float
-    t_end: float
-    segment: Segment
-    regime: Regime
-    pinned_radius: float = 0.0
-    interpolant: Callable | None = None
-    force: float = 0.0
-    anchors: AnchorMap | None = None
-    variable: Variable = Variable.TIME
-    #: the integration variable is the radius over this length (the time: 1)
-    scale: float = 1.0
-    # (the variable graded towards the span's stop, :mod:`.graded`; ``None``: not. Documented in the class's
-    # docstring alone: numpydoc reads a documented attribute's value, and ``None`` has no docstring)
-    grading: Grading | None = None
-    # (the layouts of a split span, :mod:`.split_zones`; ``None``: none. Documented in the class's docstring alone)
-    zones: object = None
-    # (the solve's radius roots by depth, a memo of the span's own branch — ``model.branch(regime)``, the one its
-    # integrator and the extrema's scan both read — so not part of what the span is: not compared. Documented in the
-    # class's docstring alone)
-    roots: dict[tuple[float, float, float], float] = field(default_factory=dict, compare=False)
-
-
-def root_key(depth: float, rtol: float) -> tuple[float, float, float]:
-    """The key of ``Branch.radius(depth, rtol)`` in :attr:`Span.roots`: the depth, the tolerance and the depth's sign
-    (``0.0`` and ``-0.0`` are one key of a dict alone, and a branch's root may tell them apart).
-
-    Parameters
-    ----------
-    depth : float
-        The depth (m).
-    rtol : float
-        The root's relative accuracy.
-
-    Returns
-    -------
-    tuple of float
-        ``(depth, rtol, ±1.0)``.
-    """
-    return depth, rtol, math.copysign(1.0, depth)
 
 
 class Trigger(enum.Enum):
@@ -191,6 +105,29 @@ class EventFunction:
         return self.function(var)
 
 
+#: how many variables' rates a :class:`SpanIntegrator` keeps (:meth:`SpanIntegrator._rate_parts`): the span's two
+#: ends, read again by each event, and the variable both caps' events read in turn, with one to spare
+RATES_KEPT = 4
+
+
+def variable_key(var: float) -> tuple[float, float] | None:
+    """The key of an integration variable in :class:`SpanIntegrator`'s memos.
+
+    Parameters
+    ----------
+    var : float
+        The variable.
+
+    Returns
+    -------
+    tuple of float or None
+        ``var`` with its sign, so that ``-0.0`` and ``0.0`` are kept apart (as ``mdr_events.memo.exact_key`` keeps
+        them: their readings may differ in their zeros' signs); ``None`` for a variable that is not a Python float
+        (a NumPy scalar, an array: not kept).
+    """
+    return (var, math.copysign(1.0, var)) if type(var) is float else None
+
+
 class SpanIntegrator:
     """The right-hand side and the event functions of one span (see the module docstring).
 
@@ -214,12 +151,13 @@ class SpanIntegrator:
     #: A at 20° on a 41-point table, whose knots start a piece each: 1.1e-8 -> 3.5e-9). ``False`` marches DOP853's
     #: steps (:func:`~.integrate.solve_between_knots`, the route before, kept for the tests that compare both)
     quadrature = True
-    #: the last variable :meth:`level` read at, with its ``x`` and the caps' centre shift there: both caps' events read
-    #: the same variable one after the other (the closed form's readings, ``solve_ivp``'s), and the second reads the
-    #: first's numbers (the same operations, bit for bit); a variable that is not a Python float is not kept
-    _last_level: tuple[float, float, float] = (math.nan, math.nan, math.nan)
-    #: :meth:`_rate_parts` by variable (made at the first reading: a dict of the integrator's own)
-    _rates: dict[float, tuple[float, float]] | None = None
+    #: the last variable :meth:`level` read at (its :func:`variable_key`), with its ``x`` and the caps' centre shift
+    #: there: both caps' events read the same variable one after the other (the closed form's readings,
+    #: ``solve_ivp``'s), and the second reads the first's numbers (the same operations, bit for bit)
+    _last_level: tuple[object, float, float] = (None, math.nan, math.nan)
+    #: :meth:`_rate_parts` of the last :data:`RATES_KEPT` variables by :func:`variable_key`, oldest first (made at the
+    #: first reading: a dict of the integrator's own)
+    _rates: dict[tuple[float, float], tuple[float, float]] | None = None
     #: a moving span without a front on the half-space is integrated in closed form (:meth:`primitive`,
     #: :mod:`.closed_form`); ``False`` integrates it as any other (the tests compare both)
     closed_form = True
@@ -348,12 +286,13 @@ class SpanIntegrator:
         float
             The level (m).
         """
+        key = variable_key(var)
         last, x, shift = self._last_level
-        if not (var == last and type(var) is float):
+        if key is None or key != last:
             t = self.time_of(var)
             x, shift = self.segment.x(t), self.caps.centre_shift(self.radius_of(var), self.segment.d(t))
-            if type(var) is float:
-                self._last_level = (var, x, shift)
+            if key is not None:
+                self._last_level = (key, x, shift)
         return x - cap * shift
 
     def rate(self, cap: Cap | float, var: float) -> float:
@@ -385,17 +324,20 @@ class SpanIntegrator:
         return cap * self.segment.vx * slope - shift_slope * self.segment.vd
 
     def _rate_parts(self, var: float) -> tuple[float, float]:
-        """``∂d/∂a`` and ``dū/da`` (``nan`` under Coulomb's caps, which do not read it) at a moving span's variable,
-        kept per variable (a Python float): both caps' :meth:`rate` read them, at the span's ends twice over
-        (:meth:`met_at_start`, :meth:`event_functions`), the same numbers."""
+        """``∂d/∂a`` and ``dū/da`` (``nan`` under Coulomb's caps, which do not read it) at a moving span's
+        variable, kept for the last :data:`RATES_KEPT` variables (:func:`variable_key`): both caps' :meth:`rate` read
+        them, at the span's ends twice over (:meth:`met_at_start`, :meth:`event_functions`), the same numbers."""
         if self._rates is None:
             self._rates = {}
-        found = self._rates.get(var) if type(var) is float else None
+        key = variable_key(var)
+        found = None if key is None else self._rates.get(key)
         if found is None:
             a = var * self.scale
             found = (self.branch.slope(a), math.nan if self.kappa else self.medium.shift_slope(self.K, a))
-            if type(var) is float:
-                self._rates[var] = found
+            if key is not None:
+                if len(self._rates) >= RATES_KEPT:
+                    del self._rates[next(iter(self._rates))]
+                self._rates[key] = found
         return found
 
     def may_push(self, cap: Cap) -> bool:

@@ -14,7 +14,7 @@ from scipy import optimize
 from .graded import span_variable
 from .solution import (PathSolution, _compressed_zone, _fill_normal_force, _fill_tangential_force, _pinned_kinematics,
                        evaluate_span)
-from .span import Span, Variable, root_key
+from .span_record import Span, Variable, root_key
 from .state import Regime
 from .stationary import never_stationary, stationary_points
 
@@ -148,7 +148,7 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
     :data:`EXTREMUM_GRID` points on a span of positive length, its start alone on one of none. A pinned span's times
     evenly spaced (``np.linspace``); a moving span's radii evenly spaced from the radius at its start to that at its
     end (roots of their depths: :meth:`~.branch.Branch.radius`, each depth once, a span's end being the next span's
-    start; the roots the solve took, kept in the spans' :attr:`~.span.Span.roots`, read there: the same numbers) and
+    start; the roots the solve took, kept in the spans' :attr:`~.span_record.Span.roots`, read there: the same numbers) and
     the time of each radius that of its depth on the branch, made non-decreasing, as :func:`_radius_grid` gives them
     span by span (``tests/models/test_extremum_scan.py`` compares the two)."""
     spans, t_contact = solution.spans, solution.t_contact

@@ -14,7 +14,8 @@ from mdr_events.models.paths import Path
 from .formulas import Shape
 from .model import ContinuumModel, Segment
 from .regions import Region, combined_summary
-from .span import Span, SpanOutcome, Trigger
+from .span import SpanOutcome, Trigger
+from .span_record import Span
 from .split_map import SpanMaps, SplitAnchorMap
 from .split_layouts import Instant, lay_out_regions, split_lengths
 from .state import NO_ZONE, Cap, ContactState, EventKind, Slip, zone_events

@@ -25,7 +25,8 @@ import math
 from .graded import Grading, grading_power
 from .model import ContinuumModel
 from .regions import Region, combined_summary
-from .span import Span, SpanIntegrator, SpanOutcome, Trigger
+from .span import SpanIntegrator, SpanOutcome, Trigger
+from .span_record import Span
 from .split_events import SplitEvents
 from .split_layouts import KEYS, Ends, Instant, Key, STILL, crossing_formula, lay_out_regions, split_lengths
 from .split_map import SpanMaps, SplitAnchorMap

@@ -34,7 +34,8 @@ from scipy.integrate import OdeSolution
 from .closed_form import ClosedForce
 from .dense import force_values
 from .graded import natural_variable, span_variable
-from .span import LinearForce, Variable
+from .span import LinearForce
+from .span_record import Variable
 from .state import Regime
 from .tolerances import EPS
 

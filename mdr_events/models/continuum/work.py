@@ -9,7 +9,7 @@ from mdr_events.validation import check_real, shown
 from .graded import natural_variable, span_variable
 from .model import ContinuumModel
 from .solution import PathSolution, evaluate
-from .span import Span, Variable
+from .span_record import Span, Variable
 from .state import Regime
 
 __all__ = ["WORK_NODES", "algebraic_tangential_force", "tangential_work"]

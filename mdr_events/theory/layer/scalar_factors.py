@@ -32,9 +32,9 @@ DEGREE = 5
 def piece_index(breaks: np.ndarray, s: np.ndarray, last: int) -> np.ndarray:
     """The piece of each ``s`` among the pieces that start at ``breaks``: ``searchsorted(breaks, s, "right") − 1``
     kept within ``[0, last]`` (below the first break the first piece, beyond the last the last, as
-    :func:`bisect.bisect_right` with the scalar routes' bounds).
+    ``bisect.bisect_right`` with the scalar routes' bounds).
 
-    ``np.clip`` of the indices, the same integers: NumPy's ``clip`` costs ~10 µs a call in its checks, this two
+    ``np.clip`` of the indices, the same integers: NumPy's ``clip`` costs ~10 µs a call in its checks, these two
     in-place bounds ~1 µs each, and a run reads a table's pieces this way some ten times.
 
     Parameters
