@@ -209,6 +209,28 @@ def test_a_still_primitives_zeros_keep_their_signs(start_force, signs):
             assert _same_bits(force(var)[0], _skipped_call(force, var)), (var, signs, start_force)
 
 
+def test_a_still_primitive_past_a_tables_end_is_zero_where_its_branch_is_nan():
+    """The behaviour chosen past a table's end (``END_SHARE`` beyond its last radius), where the branch's depth and
+    integral are ``nan``: the route that reads the branch sums ``0 · nan = nan``, a still primitive's force is the
+    start's force (``P = +0``: every coefficient is zero) without reading it; within the table both are the same bit
+    for bit. (No run reads there: a depth beyond the table is refused.)"""
+    from mdr_events.models.continuum.branch import TabulatedBranch
+    from mdr_events.theory.tabulated import END_SHARE
+
+    branch = TabulatedBranch(PAPER, PAPER.dgamma0, _table())
+    end = branch.line.shape.x_max  # (the table's last radius)
+    start_force = 1.5
+    force = ClosedForce(Primitive(branch, branch, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), 1e-3, start_force, 2.0, 1.0,
+                        [1e-3, end])
+    assert force.primitive.still
+    inside = np.array([0.0, 1e-3, end, end * (1.0 + END_SHARE)])
+    assert _same_bits(force(inside)[0], _skipped_call(force, inside))
+    past = np.array([end * (1.0 + 4.0 * END_SHARE), 5e-3, 1.0])
+    with np.errstate(invalid="ignore"):
+        assert np.all(np.isnan(_skipped_call(force, past)))
+    assert _same_bits(force(past)[0], np.full(past.shape, start_force))
+
+
 def test_a_still_span_is_never_stationary_and_others_are_asked():
     """``never_stationary`` of ``F_x``: true on scenario B's still first span (its readings find nothing, above),
     false on its shrinking spans (closed forms that are not still) and on scenario A's growing one."""

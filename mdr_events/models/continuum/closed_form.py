@@ -145,10 +145,13 @@ class Primitive(NamedTuple):
 
     @property
     def still(self) -> bool:
-        """Whether ``P`` is ``+0`` at every finite radius ``a >= +0``: every coefficient zero, ``A₀`` and ``A₁`` of
-        positive sign. :meth:`combine` then sums ``a (A₀ + A₁ a/2) = +0`` and terms ``0 · (finite)`` of either sign,
-        and ``+0`` plus a zero of either sign is ``+0`` (round to nearest): a span that does not move sideways (a
-        vertical path's). ``ClosedForce.__call__`` reads no branch there."""
+        """Whether ``P`` is ``+0`` at every finite radius ``a >= +0`` where the branches' depth and integral are
+        finite: every coefficient zero, ``A₀`` and ``A₁`` of positive sign. :meth:`combine` then sums
+        ``a (A₀ + A₁ a/2) = +0`` and terms ``0 · (finite)`` of either sign, and ``+0`` plus a zero of either sign is
+        ``+0`` (round to nearest): a span that does not move sideways (a vertical path's). ``ClosedForce.__call__``
+        reads no branch there, and gives ``+0`` also where a branch is not finite (past a table's end, where
+        :meth:`combine` sums ``0 · nan``): every coefficient is zero; no run reads there (a depth beyond the table
+        is refused)."""
         return (not (self.A0 or self.A1 or self.B0 or self.B1 or self.C or self.C0)
                 and math.copysign(1.0, self.A0) > 0 and math.copysign(1.0, self.A1) > 0)
 
@@ -221,7 +224,7 @@ class ClosedForce:
         :data:`STATIONARY_READINGS` equal parts of the interval and the breakpoints, by Brent's method (what
         :mod:`.stationary` reads off a dense output's polynomials, here of the closed form; :meth:`read_stationary`).
         A rate linear in the radius (:attr:`Primitive.linear`) of one sign at both ends has none, and its readings
-        would find none: it is read at the ends alone (``tests/models/test_closed_form.py`` compares the two routes).
+        would find none: it is read at the ends alone (``tests/models/test_extremum_proofs.py`` compares the two routes).
 
         Parameters
         ----------
@@ -240,18 +243,7 @@ class ClosedForce:
 
     def read_stationary(self, low: float, high: float) -> list[float]:
         """:meth:`stationary` by the readings alone (no proof asked first: the route the proof of a linear rate
-        skips, whose answer it gives).
-
-        Parameters
-        ----------
-        low, high : float
-            The interval (the span's variable), ``low <= high``.
-
-        Returns
-        -------
-        list of float
-            The roots, increasing (none: the force is monotone there).
-        """
+        skips, whose answer it gives); its parameters and returns are :meth:`stationary`'s."""
         grid = sorted({*equal_parts(float(low), float(high), STATIONARY_READINGS),
                        *(t for t in self.ts if low < t < high)})
         rate = lambda var: self.primitive.rate(var * self.scale)  # noqa: E731
@@ -272,7 +264,7 @@ class ClosedForce:
         """Shape ``(1,)`` for a scalar ``var``, ``(1, n)`` for ``n`` of them, as ``OdeSolution``: NumPy's forms of the
         branch for both, so that a value is the same whether it was asked alone or among others (:meth:`at`, in
         Python floats, can differ from it by rounding). A still primitive (:attr:`Primitive.still`) at finite radii of
-        positive sign is ``+0`` without reading its branch."""
+        positive sign is ``+0`` without reading its branch (past a table's end too, where the branch is ``nan``)."""
         var = np.asarray(var, dtype=float)
         radii = np.reshape(var, -1) * self.scale
         if self.primitive.still and np.all(np.isfinite(radii)) and not np.any(np.signbit(radii)):

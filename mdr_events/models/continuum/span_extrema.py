@@ -56,7 +56,10 @@ def within_tie(value: float, best: float, size: float) -> bool:
     return value >= best - EXTREMUM_TIE * max(size, abs(best))
 
 
-def _quantity(filled: dict[str, np.ndarray], quantity: str) -> np.ndarray:
+def _quantity(filled: dict[str, np.ndarray] | _ScanTables, quantity: str) -> np.ndarray:
+    """``quantity`` of one span's scan (its dict) or of all spans' at once (:class:`_ScanTables`): one ``filled``
+    holds (``in``; read by ``[]``), else the contact area ``π a²`` or a mean pressure or shear (the force over the
+    area where it is positive, ``nan`` elsewhere), element by element."""
     if quantity in filled:
         return filled[quantity]
     area = np.pi * filled["contact_radius"] ** 2
@@ -374,28 +377,40 @@ def _scan_matrices(scan: ExtremumScan, quantities: tuple[str, ...]) -> dict[str,
             for k, quantity in enumerate(quantities)}
 
 
-class _ScanTables(dict):
+class _ScanTables:
     """The quantities every span's scan holds (``F_N``, ``F_x``, the radius, ...), each as a table (span, point) of
-    ``width`` points, each row padded with ``nan``, made when first asked: what :func:`_quantity` reads of one span's
-    scan, for all spans at once (its operations element by element, so each value is the one a span alone gives, and
-    ``nan`` where padded)."""
+    ``width`` points, each row padded with ``nan``, made when first asked: read by :func:`_quantity` as it reads one
+    span's scan (``in``: every span's scan holds it; ``[]``: its table), for all spans at once (its operations
+    element by element, so each value is the one a span alone gives, and ``nan`` where padded). Not a dict: the
+    tables made so far are not what it holds.
+
+    Parameters
+    ----------
+    values : list of dict
+        Each span's scan: its quantities by name.
+    lengths : list of int
+        Each span's points.
+    width : int
+        The longest span's points (the tables' width).
+    """
 
     def __init__(self, values: list[dict[str, np.ndarray]], lengths: list[int], width: int):
-        super().__init__()
         self.values, self.lengths, self.width = values, lengths, width
+        self._made: dict[str, np.ndarray] = {}
 
-    def __contains__(self, name: object) -> bool:
+    def __contains__(self, name: str) -> bool:
         return all(name in filled for filled in self.values)
 
-    def __missing__(self, name: str) -> np.ndarray:
-        if all(length == self.width for length in self.lengths):  # (every span scanned at the grid: no padding)
-            table = np.array([filled[name] for filled in self.values], dtype=float)
-        else:
-            table = np.full((len(self.values), self.width), np.nan)
-            for row, filled in enumerate(self.values):
-                table[row, :self.lengths[row]] = filled[name]
-        self[name] = table
-        return table
+    def __getitem__(self, name: str) -> np.ndarray:
+        if name not in self._made:
+            if all(length == self.width for length in self.lengths):  # (every span scanned at the grid: no padding)
+                table = np.array([filled[name] for filled in self.values], dtype=float)
+            else:
+                table = np.full((len(self.values), self.width), np.nan)
+                for row, filled in enumerate(self.values):
+                    table[row, :self.lengths[row]] = filled[name]
+            self._made[name] = table
+        return self._made[name]
 
 
 def _bounded_search(solution: PathSolution, index: int, quantity: str, sign: float, times: np.ndarray,
