@@ -186,9 +186,10 @@ ITERATED_RADII_KEPT = 64
 def _iterated_radii(branch, depth: np.ndarray) -> np.ndarray:
     """``branch.radii(depth)``, the iteration's radii at a run's samples on its spans' ends; one depth alone on the
     paraboloid's branch with adhesion (a run's first sample, at first contact: the same depth at every angle and
-    every run of the same material) kept by value (:func:`_paraboloid_radius`), the same number bit for bit."""
+    every run of the same material) kept by value (:func:`_paraboloid_radius`, the work a ``float``: a NumPy number has
+    no key), the same number bit for bit."""
     if type(branch) is Branch and branch.work != 0.0 and depth.size == 1:
-        return np.full(depth.shape, _paraboloid_radius(branch.params, branch.work, float(depth.flat[0])))
+        return np.full(depth.shape, _paraboloid_radius(branch.params, float(branch.work), float(depth.flat[0])))
     return branch.radii(depth)
 
 
