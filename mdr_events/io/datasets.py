@@ -21,7 +21,6 @@ from typing import Any, Collection, Mapping, Sequence
 import numpy as np
 import pandas as pd
 import xarray as xr
-from xarray.core.variable import calculate_dimensions
 from xarray.indexes import PandasIndex
 
 from mdr_events._version import __version__
@@ -136,25 +135,25 @@ def assembled(data_vars: Mapping[str, tuple], coords: Mapping[str, tuple]) -> xr
     if clash:
         raise ValueError(f"data variables {clash} are not allowed: named after a coordinate or a dimension; allowed: "
                          "the coordinates in coords")
-    shapes = [values.shape if type(values) is np.ndarray else None for _, values, _ in data_vars.values()]
     variables.update(coordinates)
-    return xr.Dataset._construct_direct(variables, set(coordinates), dims=_dimensions(variables, shapes),
-                                        indexes=indexes)
+    return xr.Dataset._construct_direct(variables, set(coordinates), dims=_dimensions(variables), indexes=indexes)
 
 
-def _dimensions(variables: dict[str, xr.Variable], shapes: list) -> dict:
-    """The dataset's dimensions and sizes, as ``xarray``'s ``calculate_dimensions`` gives them (in the order the
-    variables name them), read off each variable's dimensions and the shape of the array it was given (``shapes``,
-    the first variables', ``None`` where not an array: the variable's own); a dimension of two sizes, or one named
-    after a variable of no dimensions, is left to ``calculate_dimensions``, which names it (``ValueError``)."""
+def _dimensions(variables: dict[str, xr.Variable]) -> dict:
+    """The dataset's dimensions and sizes, as ``xarray.Dataset`` gives them (in the order the variables name them),
+    read off each variable's dimensions and shape; a dimension of two sizes, or one named after a variable of no
+    dimensions, refused as ``xarray.Dataset`` refuses it (``ValueError``, xarray's words)."""
     dims: dict = {}
-    for (name, variable), shape in zip(variables.items(), [*shapes, *[None] * (len(variables) - len(shapes))]):
-        names = variable.dims
-        if not names or len(names) != len(shape := variable.shape if shape is None else shape):
-            return calculate_dimensions(variables)
-        for dim, size in zip(names, shape):
+    for name, variable in variables.items():
+        for dim, size in zip(variable.dims, variable.shape):
             if dims.setdefault(dim, size) != size:
-                return calculate_dimensions(variables)
+                first = next(other for other, held in variables.items() if dim in held.dims)
+                raise ValueError(f"conflicting sizes for dimension {dim!r}: length {size} on {name!r} and length "
+                                 f"{dims[dim]} on {first!r}; allowed: one size for each dimension")
+    scalars = [dim for dim in dims if dim in variables and not variables[dim].dims]
+    if scalars:
+        raise ValueError(f"dimension {scalars[0]!r} already exists as a scalar variable; allowed: a dimension named "
+                         "after no variable, or after a variable of that dimension")
     return dims
 
 

@@ -10,7 +10,7 @@ import mdr_events as me
 from continuum_maps import reversing_anchors
 from mdr_events.models.continuum import AnchorMap, Cap, ContinuumModel, Tolerances, solve_path
 from mdr_events.models.continuum.caps import Caps
-from mdr_events.models.continuum.solution import sample_times
+from mdr_events.models.continuum.time_grid import sample_times
 from mdr_events.models.continuum.state import Regime
 
 RTOL = 1e-14

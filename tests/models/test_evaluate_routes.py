@@ -7,8 +7,8 @@ run of one sample and before the first contact.
   kept by value; the reference is ``Branch.radii`` called each time;
 - ``solution._kinematics``: the spans' numbers repeated over their times in one call; the reference repeats each
   number alone;
-- ``io.datasets._dimensions``: the dataset's sizes read off the arrays given; the reference is xarray's
-  ``calculate_dimensions``.
+- ``io.datasets._dimensions``: the dataset's sizes read off its variables; the reference is ``xarray.Dataset``'s
+  (its refusals too).
 """
 
 from __future__ import annotations
@@ -157,24 +157,57 @@ def test_one_sample_evaluated_is_the_reference_bit_for_bit(monkeypatch):
 
 
 @pytest.mark.parametrize("label", ["A 20°", "zigzag", "Coulomb with adhesion"])
-def test_assembled_dimensions_are_xarrays_calculated_ones(label):
-    """``io.datasets._dimensions`` (the sizes read off the arrays given) is ``calculate_dimensions`` of the variables,
-    its order too, on a run's dataset; and where a size disagrees or a variable has no dimensions, its own."""
-    from xarray.core.variable import calculate_dimensions
+def test_assembled_dimensions_are_xarrays(label):
+    """``io.datasets._dimensions`` (the sizes read off the variables) is the sizes ``xarray.Dataset`` gives the same
+    variables, its order too, on a run's dataset; and where a size disagrees or a variable has no dimensions, both
+    refuse it in the same words."""
+    import xarray as xr
 
     from mdr_events.io.datasets import _dimensions, assembled
 
     contact, motion = RUNS[label]()
-    variables = dict(me.simulate(contact, motion, "continuum", samples=SAMPLES).variables)
-    shapes = [variable.shape for variable in variables.values()]
-    assert list(_dimensions(variables, shapes).items()) == list(calculate_dimensions(variables).items())
-    assert list(_dimensions(variables, []).items()) == list(calculate_dimensions(variables).items())
+    run = me.simulate(contact, motion, "continuum", samples=SAMPLES)
+    reference = xr.Dataset({name: run[name].variable for name in run.data_vars},
+                           coords={name: run[name].variable for name in run.coords})
+    assert list(_dimensions(dict(run.variables)).items()) == list(reference.sizes.items())
     scalar = assembled({"x": ((), 1.0, {}), "y": (("time",), [1.0, 2.0], {})}, {"time": ("time", np.arange(2.0), {})})
     assert dict(scalar.sizes) == {"time": 2} and scalar["y"].shape == (2,)
-    with pytest.raises(ValueError, match="conflicting sizes"):
-        assembled({"x": (("time",), np.zeros(2), {}), "y": (("time",), np.zeros(3), {})}, {})
-    with pytest.raises(ValueError, match="already exists as a scalar"):
-        assembled({"x": (("s",), np.zeros(2), {})}, {"s": ((), 0.0, {})})
+    refused = {"conflicting sizes for dimension 'time'": ({"x": (("time",), np.zeros(2), {}),
+                                                           "y": (("time",), np.zeros(3), {})}, {}),
+               "dimension 's' already exists as a scalar variable": ({"x": (("s",), np.zeros(2), {})},
+                                                                     {"s": ((), 0.0, {})})}
+    for words, (data, coords) in refused.items():
+        for route in (assembled, xr.Dataset):
+            with pytest.raises(ValueError, match=words):
+                route(data, coords)
+
+
+def test_assembled_sizes_are_the_variables_not_the_arrays_given(monkeypatch):
+    """The sizes are read off each variable, not off the array the caller gave: a variable made transposed (its
+    dimensions and values both) is sized as it is, as ``xarray.Dataset`` sizes it."""
+    import xarray as xr
+
+    from mdr_events.io import datasets
+
+    def transposed(dims, values, attrs):
+        return xr.Variable(tuple(reversed(dims)), np.asarray(values).T, attrs)
+
+    monkeypatch.setattr(datasets, "_variable", transposed)
+    made = datasets.assembled({"x": (("a", "b"), np.zeros((2, 3)), {})}, {})
+    assert dict(made.sizes) == {"b": 3, "a": 2} == dict(xr.Dataset({"x": made["x"].variable}).sizes)
+
+
+def test_a_numpy_work_finds_the_kept_radius():
+    """A branch whose work of adhesion is a NumPy number (no key of its own, :func:`~mdr_events.memo.exact_key`) finds
+    the radius kept for the same work as a float, and is its iteration's bit for bit."""
+    solution_module._paraboloid_radius.cache_clear()
+    depth = np.array([0.0])
+    kept = solution_module._iterated_radii(Branch(PAPER, float(PAPER.dgamma0)), depth)
+    numpy_branch = Branch(PAPER, np.float64(PAPER.dgamma0))
+    found = solution_module._iterated_radii(numpy_branch, depth)
+    info = solution_module._paraboloid_radius.cache_info()
+    assert (info.misses, info.hits) == (1, 1)
+    assert found.tobytes() == kept.tobytes() == numpy_branch.radii(depth).tobytes()
 
 
 @pytest.mark.parametrize("dtype", ["float64", "float32", "int64", "int32", "uint8"])

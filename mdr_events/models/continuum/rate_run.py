@@ -44,7 +44,7 @@ from .extrema import EXTREMA_KINDS, EXTREMA_QUANTITIES, VALUE_AFTER_CONTACT, ext
 from .rate_edge import EdgeEventKind
 from .rate_play import RatePlay
 from .rate_shifts import RateShifts, solve_rate_shifts
-from .solution import sample_times
+from .time_grid import sample_times
 from .span_extrema import within_tie
 from .solve import BYTES_PER_SAMPLE
 from .state import Event, EventKind

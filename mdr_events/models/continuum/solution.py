@@ -10,7 +10,6 @@ import numpy as np
 from mdr_events.contact.adhesion import Adhesion
 from mdr_events.memo import kept
 from mdr_events.parameters import Parameters
-from mdr_events.validation import real_array, shown
 from .branch import Branch
 from .dense import cut, force_values
 from .span_forces import span_forces
@@ -19,6 +18,7 @@ from .graded import span_variable
 from .model import ContinuumModel
 from .span_record import Span, Variable
 from .state import CONTACT_ENDING, Event, Regime
+from .time_grid import check_times
 
 
 @dataclass
@@ -186,9 +186,10 @@ ITERATED_RADII_KEPT = 64
 def _iterated_radii(branch, depth: np.ndarray) -> np.ndarray:
     """``branch.radii(depth)``, the iteration's radii at a run's samples on its spans' ends; one depth alone on the
     paraboloid's branch with adhesion (a run's first sample, at first contact: the same depth at every angle and
-    every run of the same material) kept by value (:func:`_paraboloid_radius`), the same number bit for bit."""
+    every run of the same material) kept by value (:func:`_paraboloid_radius`, the work a ``float``: a NumPy number has
+    no key), the same number bit for bit."""
     if type(branch) is Branch and branch.work != 0.0 and depth.size == 1:
-        return np.full(depth.shape, _paraboloid_radius(branch.params, branch.work, float(depth.flat[0])))
+        return np.full(depth.shape, _paraboloid_radius(branch.params, float(branch.work), float(depth.flat[0])))
     return branch.radii(depth)
 
 
@@ -355,41 +356,6 @@ def _compressed_zone(zone: PathSolution, times: np.ndarray, radius: np.ndarray,
         return force, np.where(radius > 0, np.clip(sliding_springs / radius, 0.0, 1.0), np.nan)
 
 
-def sample_times(ends: list[float], path_ends: list[float], samples: int) -> np.ndarray:
-    """The output times of a run of ``samples`` (s from first contact): to the longest run's end and one spacing
-    beyond (a sample after the contact has ended), but not beyond its path's end (a run that ended in contact wrote
-    every quantity, the depth too, as ``nan`` there).
-
-    Parameters
-    ----------
-    ends : list of float
-        Each case's end (s from its first contact).
-    path_ends : list of float
-        Each case's path's end (s from its first contact).
-    samples : int
-        The number of times.
-
-    Returns
-    -------
-    numpy.ndarray
-        The times.
-    """
-    last = max(min(end * (1.0 + 1.0 / samples), path_end) for end, path_end in zip(ends, path_ends))
-    return np.linspace(0.0, last, samples)
-
-
-def check_times(name: str, times, earliest: float = 0.0) -> np.ndarray:
-    """``times`` (s from first contact) as a float array of one dimension at most, every entry finite and from
-    ``earliest`` on; else ``TypeError`` or ``ValueError`` naming the argument (a time before the path's start was
-    extrapolated to, a string or a 2-D grid was a raw error of NumPy's)."""
-    values = real_array(name, times, "times in s from first contact (real numbers)")
-    if values.ndim > 1 or not np.all(np.isfinite(values)) or np.any(values < earliest):
-        raise ValueError(f"{name}={shown(times)} is not allowed; allowed: one time or a 1-D array of finite times "
-                         f">= {earliest:.9g} (s from first contact: the path's start; the solution says nothing "
-                         "before it)")
-    return values
-
-
 def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]:
     """Fill a time grid (s from first contact) span by span (:func:`evaluate_span`).
 
@@ -397,7 +363,7 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
     sliding fraction ``nan``); samples after the end of the run are ``nan``, except the first sample after a pull-off
     if it lies on the pull-off's path segment, which shows the contact gone (forces and radius 0). Times before the
     path's start (that of ``solution.path``, else the first contact), or that are no finite numbers, are refused
-    (:func:`check_times`).
+    (:func:`~.time_grid.check_times`).
 
     Parameters
     ----------

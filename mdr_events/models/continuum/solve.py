@@ -27,7 +27,7 @@ from .compressed import attach_compressed_zone
 from .model import ContinuumModel, Segment, check_resolvable, kinematics
 from .plan import Action, SpanPlan, plan_span
 from .regions import Region
-from .solution import PathSolution, evaluate, sample_times
+from .solution import PathSolution, evaluate
 from .integrate import integrate_span
 from .layer_reach import check_layer_reach
 from .span import SpanIntegrator, SpanOutcome, Trigger
@@ -36,6 +36,7 @@ from .split_map import SplitAnchorMap
 from .split_solve import commit, new_anchors, split_slip_transition
 from .split_span import SplitSpanIntegrator
 from .state import CONTACT_ENDING, NO_ZONE, Cap, ContactState, Event, EventKind, Regime, Slip, ZoneSummary, zone_events
+from .time_grid import sample_times
 from .tolerances import MAX_CHATTER_SPANS, MAX_RESTARTS, SEGMENT_RESOLUTION, Tolerances, check_output, check_tolerances
 from .zones import lay_out_zones
 
