@@ -6,7 +6,6 @@ route, ``xarray.testing.assert_identical``, on every kind of run."""
 from __future__ import annotations
 
 import dataclasses
-import math
 
 import numpy as np
 import pytest
@@ -18,27 +17,9 @@ from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum import solution as S
 from mdr_events.models.continuum.branch import NEAR_FOLD, Branch, TabulatedBranch
-from mdr_events.models.paths import exit_depth
-from mdr_events.theory import analytic, quartic
+from mdr_events.theory import quartic
 
-PAPER = me.Parameters.paper()
-#: In with tangential reversals, a pinned zigzag, out (``bench_discrete.py``'s).
-ZIGZAG = ((0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4))
-HERTZ = PAPER.replace(dgamma0=0.0, dgamma1=0.0)
-
-
-def _table():
-    """A 41-point table of the paper's paraboloid (``bench_simulate.py``'s)."""
-    return me.TabulatedProfile(np.linspace(0.0, 4e-3, 41), np.linspace(0.0, 4e-3, 41)**2 / (2 * PAPER.R))
-
-
-def _reciprocating():
-    """In at 20° to ``(x_c, d_max)``, ten cycles ``x_c ± 3 ū(a_max)``, out vertically (``bench_simulate.py``'s)."""
-    amplitude = 3.0 * float(analytic.critical_shift(float(analytic.jkr_contact_radius(PAPER.d_max, PAPER,
-                                                                                     PAPER.dgamma0)), PAPER))
-    x_c = PAPER.d_max / math.tan(math.radians(20.0))
-    turns = [(x_c + amplitude * (1 if i % 2 == 0 else -1), PAPER.d_max) for i in range(20)]
-    return me.Path([(0.0, 0.0), (x_c, PAPER.d_max), *turns, (x_c, PAPER.d_max), (x_c, exit_depth(PAPER))], PAPER.v)
+from bench_paths import HERTZ, PAPER, ZIGZAG, paper_table as _table, reciprocating as _reciprocating
 
 
 #: label -> (params, path, solve_path's keywords): anchor maps of one to four pieces, constant and growing, both caps

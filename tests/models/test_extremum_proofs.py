@@ -20,29 +20,12 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum.closed_form import ClosedForce, Primitive
-from mdr_events.models.paths import exit_depth
-from mdr_events.theory import analytic
 
-PAPER = me.Parameters.paper()
-HERTZ = PAPER.replace(dgamma0=0.0, dgamma1=0.0)
-ZIGZAG = [(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)]
+from bench_paths import HERTZ, PAPER, ZIGZAG, paper_table as _table, reciprocating as _reciprocating
+
 #: Brackets read on each closed-form span: the scan's intervals (``EXTREMUM_GRID - 1`` of them, where the refinement
 #: reads) and this many random ones.
 RANDOM_BRACKETS = 40
-
-
-def _table():
-    radii = np.linspace(0.0, 4e-3, 41)
-    return me.TabulatedProfile(radii, radii**2 / (2 * PAPER.R))
-
-
-def _reciprocating():
-    """``bench_simulate.py``'s path: in at 20°, ten cycles of ``±3 ū(a_max)``, out vertically."""
-    amplitude = 3.0 * float(analytic.critical_shift(float(analytic.jkr_contact_radius(PAPER.d_max, PAPER,
-                                                                                       PAPER.dgamma0)), PAPER))
-    x_c = PAPER.d_max / math.tan(math.radians(20.0))
-    turns = [(x_c + amplitude * (1 if i % 2 == 0 else -1), PAPER.d_max) for i in range(20)]
-    return me.Path([(0.0, 0.0), (x_c, PAPER.d_max), *turns, (x_c, PAPER.d_max), (x_c, exit_depth(PAPER))], PAPER.v)
 
 
 #: label -> (params, path, solve_path's keywords)
