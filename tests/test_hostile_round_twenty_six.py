@@ -51,3 +51,50 @@ def test_a_cpu_budget_passes_a_call_within_it():
     """The check does not refuse what runs within the budget (nor anything without one)."""
     assert cpu_limited(lambda: "done", 10.0)[0] == "done"
     assert cpu_limited(lambda: _spin(BUDGET), None)[1] >= BUDGET
+
+
+# --- Y2: simulate's extrema of F_x where the continuum runs Coulomb's part spring by spring (a bonded layer) were the
+# output samples' best, refined between its neighbours: they hung on the output times. One sample at the first contact
+# (t=[0]) reported F_x's maximum 0 where the run reaches 0.96 N (one at t = 1 s: 2.2e-4 N, its minimum the same; a
+# sample past the run's end: 0), against the "exact extrema" of the docstring and the spans' extrema, which scan the
+# solution itself. The route's own scan of each path segment in contact (the spans' EXTREMUM_GRID a segment, its
+# corners) joins the samples before the best is refined --------------------------------------------------------------
+
+#: The extrema are refined to EXTREMUM_XTOL of the path's duration at a smooth extremum (flat there: the value's error
+#: second order in the time's) or taken at a corner exactly: runs on other output times agree to rounding.
+EXTREMA_RTOL = 1e-9
+#: (~1 s of CPU each beside the first's: the quick suite keeps the first contact's grid)
+SLOW = pytest.mark.slow
+
+
+def _coulomb_on_a_bonded_layer():
+    import dataclasses
+
+    import mdr_events as me
+
+    return dataclasses.replace(me.Contact.paper(), layer=me.Layer(2e-3),
+                               friction=me.FrictionLaw("tau0+coulomb", tau0=me.Parameters.paper().tau0, mu=0.5))
+
+
+@pytest.fixture(scope="module")
+def dense_run():
+    """Scenario A at 45° on the layer under both laws, 201 samples: the reference of every sparse grid."""
+    import mdr_events as me
+
+    return me.simulate(_coulomb_on_a_bonded_layer(), "A", [45.0], "continuum", samples=201)
+
+
+@pytest.mark.parametrize("times", [[0.0], pytest.param([1.0], marks=SLOW), pytest.param([0.0, 1e-9], marks=SLOW),
+                                   pytest.param([1e9], marks=SLOW)],
+                         ids=["first contact", "one second", "two at the start", "past the end"])
+def test_f_x_extrema_on_a_layer_under_coulomb_do_not_hang_on_the_output_times(times, dense_run):
+    import numpy as np
+
+    import mdr_events as me
+
+    sparse = me.simulate(_coulomb_on_a_bonded_layer(), "A", [45.0], me.Continuum(t=np.array(times)))
+    dense = dense_run
+    for name in ("tangential_force_max", "tangential_force_min"):
+        found, reference = float(sparse[name].values[0]), float(dense[name].values[0])
+        assert abs(found - reference) <= EXTREMA_RTOL * abs(float(dense["tangential_force_max"].values[0])), \
+            (name, found, reference)

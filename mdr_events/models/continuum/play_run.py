@@ -11,7 +11,9 @@ the slip onset (the first time a spring is at a cap: the share at a cap first po
 piece and its end, the centre and the edge probed beside the quadrature's nodes, then bisected to
 :data:`EVENT_HALVINGS`) and full slip (every spring at a cap, found the same way). A re-stick where a level turns
 back without a reversal of ``x``, and a zone that opens and closes between two output times, are not logged. The
-extrema of ``F_x`` are the largest and least sample refined by bounded minimisation between its neighbours.
+extrema of ``F_x`` are the largest and least of the samples and the route's own scan of the run
+(:func:`_extrema_samples`: ``EXTREMUM_GRID`` times a path segment in contact, so that they do not hang on the
+output times) refined by bounded minimisation between its neighbours.
 
 The output times are read at once (:func:`_probed_all`, :meth:`~.play_springs.PlaySprings.probed_states`), and the
 events of all the pieces are searched side by side (:func:`~.play_search.searched`): each search a generator that yields the
@@ -45,7 +47,9 @@ from .play_pieces import log_pieces, reversal_end
 from .play_reach import constant_part, pressed_time, reach_times, reach_ulps
 from .play_search import EVENT_HALVINGS, brent, halve, searched
 from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, SpringState, spring_line
+from .solution import contact_radii
 from .solve import run_continuum
+from .span_extrema import EXTREMUM_GRID
 from .state import Event, EventKind
 from .tolerances import Tolerances
 
@@ -141,7 +145,8 @@ def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = 
         raw["events"][case] = sorted(kept + _spring_events(play, raw["time"], shares, start, solution.events),
                                      key=lambda event: event.time)
         extrema = solution_extrema(solution)
-        extrema.update(_force_extrema(play, raw["time"], force, start, path))
+        extrema.update(_force_extrema(play, *_extrema_samples(play, raw["time"], force, solution, start, path), start,
+                                      path))
         raw["extrema"].append(extrema)
     return raw
 
@@ -462,6 +467,21 @@ def _monotone(play: PlaySprings, times: np.ndarray) -> bool:
     return CLOSED_REACH and all(high == low or (not np.any((jumps > low) & (jumps <= high))
                                                 and constant_part(play, low, high) == low)
                                 for low, high in zip(times[:-1].tolist(), times[1:].tolist()))
+
+
+def _extrema_samples(play: PlaySprings, times: np.ndarray, force: np.ndarray, solution, start: float,
+                     path) -> tuple[np.ndarray, np.ndarray]:
+    """The times and ``F_x`` :func:`_force_extrema` reads: the output samples and the route's own scan of the run,
+    :data:`~.span_extrema.EXTREMUM_GRID` times on each path segment in contact (from first contact to the run's end),
+    so that the extrema do not hang on the output times (issue 32 Y2: one sample at the first contact gave a maximum
+    of 0); sorted, the samples first among equal times."""
+    corners = path.corner_times - start
+    bounds = np.unique(np.clip(np.concatenate([[0.0], corners, [solution.end_time]]), 0.0, solution.end_time))
+    grid = np.concatenate([np.linspace(low, high, EXTREMUM_GRID) for low, high in zip(bounds[:-1], bounds[1:])]
+                          + [bounds[:1]])
+    scanned, _, _ = _samples(play, grid + start, contact_radii(solution, grid))
+    order = np.argsort(np.concatenate([times, grid]), kind="stable")
+    return np.concatenate([times, grid])[order], np.concatenate([force, scanned])[order]
 
 
 def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path) -> dict:
