@@ -52,8 +52,8 @@ from .solve import run_continuum
 from .state import Event, EventKind
 from .tolerances import Tolerances
 
-__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "EXTREMA_SCAN", "PROBE_POINTS",
-           "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH"]
+__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "EXTREMA_SCAN",
+           "PROBE_POINTS", "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH"]
 
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
