@@ -60,8 +60,8 @@ def test_a_cpu_budget_passes_a_call_within_it():
 # output samples' best, refined between its neighbours: they hung on the output times. One sample at the first contact
 # (t=[0]) reported F_x's maximum 0 where the run reaches 0.96 N (one at t = 1 s: 2.2e-4 N, its minimum the same; a
 # sample past the run's end: 0), against the "exact extrema" of the docstring and the spans' extrema, which scan the
-# solution itself. The route's own scan of each path segment in contact (the spans' EXTREMUM_GRID a segment, its
-# corners) joins the samples before the best is refined --------------------------------------------------------------
+# solution itself. The route's own scan of the run (EXTREMA_SCAN times evenly over the contact, and SEGMENT_SCAN inside
+# each path segment in contact, beside the path's corners) joins the samples before the best is refined -------------
 
 #: The extrema are refined to EXTREMUM_XTOL of the path's duration at a smooth extremum (flat there: the value's error
 #: second order in the time's) or taken at a corner exactly: runs on other output times agree to rounding.
@@ -103,3 +103,57 @@ def test_f_x_extrema_on_a_layer_under_coulomb_do_not_hang_on_the_output_times(ti
         found, reference = float(sparse[name].values[0]), float(dense[name].values[0])
         assert abs(found - reference) <= EXTREMA_RTOL * abs(float(dense["tangential_force_max"].values[0])), \
             (name, found, reference)
+
+
+# --- Y2 again (the review of round twenty-six): the even scan alone (EXTREMA_SCAN over the contact) is sparser than the
+# segments of a long path, so a maximum inside a short segment was found only when a scanned time fell beside it. A
+# fretting of 20 long strokes, then a way out with a stroke: F_x's maximum (0.78 N, the springs' force rising then
+# falling as μ F_N on the way out, 0.2 % of the run) was 0.11 N (the fretting's corners). Each segment in contact now
+# holds SEGMENT_SCAN scanned times -----------------------------------------------------------------------------------
+
+#: The dense reference's samples over the whole contact and over the way out, where the maximum lies.
+DENSE_SAMPLES = 2001
+#: The refined extremum is at least the dense samples' best (it is the run's own value, refined upward) to rounding.
+ROUNDING = 1e-12
+
+
+def _fretting_then_pull_out():
+    """In to a quarter of ``d_max``, 20 strokes of ±8 mm in full slip there (0.32 m of the run), in to ``d_max``
+    and out with a stroke of 2 ``d_max``: more segments in contact than the even scan's spacing resolves."""
+    import numpy as np
+
+    import mdr_events as me
+
+    params = me.Parameters.paper()
+    shallow, stroke = params.d_max / 4, 8e-3
+    x = np.concatenate([[0.0, 0.0], np.tile([stroke, -stroke], 10), [0.0, 0.0, 2 * params.d_max]])
+    d = np.concatenate([[-1e-6, shallow], np.full(20, shallow), [shallow, params.d_max, -1e-5]])
+    return me.Path(np.column_stack([x, d]), params.v)
+
+
+@SLOW  # (~6 s of CPU: the path's 24 segments and the dense reference's 4002 samples)
+def test_f_x_extrema_inside_a_short_segment_of_a_long_path_are_found():
+    """Y2 again: on a fretting then a way out, the extrema of a run sampled at its first contact alone are the dense
+    samples' best, above it within twice the larger step from that sample to its neighbours (the extremum lies
+    between them, and ``F_x``, smooth there but for the path's corners, which the route reads, rises from the
+    sample by less than its steps' larger twice); before, the maximum was the fretting's 0.11 N for 0.78 N."""
+    import dataclasses
+
+    import numpy as np
+
+    import mdr_events as me
+
+    contact = dataclasses.replace(me.Contact.paper(), layer=me.Layer(2e-3), friction=me.FrictionLaw("coulomb", mu=0.5))
+    path = _fretting_then_pull_out()
+    paths = me.Paths({"fretting then out": path})
+    corners = path.corner_times - path.first_contact_time()
+    sparse = me.simulate(contact, paths, me.Continuum(t=np.array([0.0])))
+    times = np.unique(np.concatenate([np.linspace(0.0, corners[-1], DENSE_SAMPLES),
+                                      np.linspace(corners[-2], corners[-1], DENSE_SAMPLES)]))
+    force = me.simulate(contact, paths, me.Continuum(t=times))["tangential_force"].values[0]
+    force = force[np.isfinite(force)]
+    for name, sign in (("tangential_force_max", 1.0), ("tangential_force_min", -1.0)):
+        k = int(np.argmax(sign * force))
+        found, best = sign * float(sparse[name].values[0]), sign * float(force[k])
+        step = 2.0 * float(np.max(np.abs(np.diff(force[max(k - 1, 0):k + 2]))))
+        assert best - ROUNDING * abs(best) <= found <= best + step, (name, found, best, step)
