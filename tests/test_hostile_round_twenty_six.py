@@ -60,13 +60,13 @@ def test_a_cpu_budget_passes_a_call_within_it():
 # output samples' best, refined between its neighbours: they hung on the output times. One sample at the first contact
 # (t=[0]) reported F_x's maximum 0 where the run reaches 0.96 N (one at t = 1 s: 2.2e-4 N, its minimum the same; a
 # sample past the run's end: 0), against the "exact extrema" of the docstring and the spans' extrema, which scan the
-# solution itself. The route's own scan of the run (EXTREMA_SCAN times evenly over the contact, and SEGMENT_SCAN inside
-# each path segment in contact, beside the path's corners) joins the samples before the best is refined -------------
+# solution itself. The route's own scan of the run (SEGMENT_SCAN times inside each path segment in contact, beside
+# the contact's ends and the path's corners) joins the samples before the best is refined ---------------------------
 
 #: The extrema are refined to EXTREMUM_XTOL of the path's duration at a smooth extremum (flat there: the value's error
 #: second order in the time's) or taken at a corner exactly: runs on other output times agree to rounding.
 EXTREMA_RTOL = 1e-9
-#: (~1 s of CPU each beside the first's: the quick suite keeps the first contact's grid)
+#: (~2 s of CPU each and the 201-sample reference's ~4 s: the quick suite checks the scan itself, below)
 SLOW = pytest.mark.slow
 
 
@@ -87,8 +87,8 @@ def dense_run():
     return me.simulate(_coulomb_on_a_bonded_layer(), "A", [45.0], "continuum", samples=201)
 
 
-@pytest.mark.parametrize("times", [[0.0], pytest.param([1.0], marks=SLOW), pytest.param([0.0, 1e-9], marks=SLOW),
-                                   pytest.param([1e9], marks=SLOW)],
+@SLOW
+@pytest.mark.parametrize("times", [[0.0], [1.0], [0.0, 1e-9], [1e9]],
                          ids=["first contact", "one second", "two at the start", "past the end"])
 def test_f_x_extrema_on_a_layer_under_coulomb_do_not_hang_on_the_output_times(times, dense_run):
     """Y2 (simulate's extrema, the per-spring route): F_x's maximum and minimum of a run on sparse output times are
@@ -105,11 +105,34 @@ def test_f_x_extrema_on_a_layer_under_coulomb_do_not_hang_on_the_output_times(ti
             (name, found, reference)
 
 
-# --- Y2 again (the review of round twenty-six): the even scan alone (EXTREMA_SCAN over the contact) is sparser than the
-# segments of a long path, so a maximum inside a short segment was found only when a scanned time fell beside it. A
-# fretting of 20 long strokes, then a way out with a stroke: F_x's maximum (0.78 N, the springs' force rising then
-# falling as μ F_N on the way out, 0.2 % of the run) was 0.11 N (the fretting's corners). Each segment in contact now
-# holds SEGMENT_SCAN scanned times -----------------------------------------------------------------------------------
+# --- Y2 again (the review of round twenty-six): the even scan of the first fix (257 times over the contact) is
+# sparser than the segments of a long path, so a maximum inside a short segment was found only when a scanned time
+# fell beside it. A fretting of 20 long strokes, then a way out with a stroke: F_x's maximum (0.78 N, the springs'
+# force rising then falling as μ F_N on the way out, 0.2 % of the run) was 0.11 N (the fretting's corners). Each
+# segment in contact now holds SEGMENT_SCAN scanned times (and the even scan is gone: it cost 1.4-3.8 times a run) --
+
+def test_the_f_x_extrema_scan_holds_times_in_every_segment_in_contact():
+    """Y2's quick sibling (the route's scan, no run): the scan spans the contact, each path segment in contact holds
+    SEGMENT_SCAN times inside it whatever the segments' number, those outside it none, and the scan's size is checked
+    against ``Limits.samples``; the first fix's 257 times over the contact left 165 of these 401 segments empty."""
+    import numpy as np
+
+    import mdr_events as me
+    from mdr_events.models.continuum.play_run import SEGMENT_SCAN, _extrema_scan
+
+    corners = np.concatenate([[-1.0], np.linspace(0.0, 3.0, 401), [3.5, 4.0]])  # (400 segments in, one half, one out)
+    end = 3.25
+    scan = _extrema_scan(end, corners, me.Limits())
+    assert scan[0] == 0.0 and scan[-1] == end and np.all(np.diff(scan) > 0.0)
+    for low, high in zip(corners[:-1], corners[1:]):
+        held = int(np.count_nonzero((scan > low) & (scan < high)))
+        if low >= end or high <= 0.0:
+            assert held == 0, (low, high, held)
+        else:
+            assert held >= max(SEGMENT_SCAN, 1), (low, high, held)  # (one at least: the bracket's)
+    with pytest.raises(me.ResourceLimitError, match="F_x extrema scan"):
+        _extrema_scan(end, corners, me.Limits(samples=SEGMENT_SCAN * 401 - 1))
+
 
 #: The dense reference's samples over the whole contact and over the way out, where the maximum lies.
 DENSE_SAMPLES = 2001

@@ -12,8 +12,8 @@ piece and its end, the centre and the edge probed beside the quadrature's nodes,
 :data:`EVENT_HALVINGS`) and full slip (every spring at a cap, found the same way). A re-stick where a level turns
 back without a reversal of ``x``, and a zone that opens and closes between two output times, are not logged. The
 extrema of ``F_x`` are the largest and least of the samples and the route's own scan of the run
-(:func:`_extrema_scan`: :data:`EXTREMA_SCAN` times over the contact and :data:`SEGMENT_SCAN` inside each path
-segment in contact, so that they do not hang on the output times) refined by bounded minimisation between its
+(:func:`_extrema_scan`: :data:`SEGMENT_SCAN` times inside each path segment in contact, so that they do not hang on
+the output times) refined by bounded minimisation between its
 neighbours.
 
 The output times are read at once (:func:`_probed_all`, :meth:`~.play_springs.PlaySprings.probed_states`), and the
@@ -53,8 +53,8 @@ from .solve import run_continuum
 from .state import Event, EventKind
 from .tolerances import Tolerances
 
-__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "EXTREMA_SCAN",
-           "SEGMENT_SCAN", "PROBE_POINTS", "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH"]
+__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "SEGMENT_SCAN",
+           "PROBE_POINTS", "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH"]
 
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
@@ -78,15 +78,13 @@ ROOT_ULPS = 64
 CLOSED_REACH = True
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
 EXTREMUM_XTOL = 1e-12
-#: The route's own scan of a run for ``F_x``'s extrema (:func:`_extrema_scan`): times evenly over the contact, beside
-#: the output samples and the path's corners, whatever the output times. 257 cost ~10 % of a run of the default 2001
-#: samples; a scan per path segment (the spans' 65) cost 7.4 times the run on a path of 200 segments.
-EXTREMA_SCAN = 257
-#: Times the scan holds inside each path segment in contact at least (evenly, beside :data:`EXTREMA_SCAN`): on a path
-#: of more segments than that the even scan leaves segments empty, and a maximum inside one (``F_x`` falling as
-#: ``μ F_N`` after the onset on a way out) is bracketed by its neighbours only with a scanned time inside its segment
-#: (three: the segment's quarters; at most :data:`EXTREMA_SCAN` + 3 × the segments, counted against
-#: ``Limits.samples``).
+#: The route's own scan of a run for ``F_x``'s extrema (:func:`_extrema_scan`): this many times evenly inside each path
+#: segment in contact (its quarters), beside the contact's ends, the output samples and the path's corners, whatever
+#: the output times. Within a segment ``F_x`` rises or falls, or rises then falls (as ``μ F_N`` after the onset on a
+#: way out): one time inside brackets its extremum between the best time's neighbours, three keep a margin. Its size
+#: (3 × the segments in contact) counts against ``Limits.samples``. (257 times evenly over the contact instead cost
+#: 1.4-3.8 times a run of 21-201 samples and left segments empty on a path of more; 65 a segment, 7.4 times a run of 200
+#: segments.)
 SEGMENT_SCAN = 3
 #: The springs' events the spans' frictionless run logs and this route replaces.
 _SPRING_EVENTS = frozenset({EventKind.SLIP_ONSET, EventKind.FULL_SLIP, EventKind.RE_STICK, EventKind.FRONT_AT_CENTRE,
@@ -481,16 +479,16 @@ def _monotone(play: PlaySprings, times: np.ndarray) -> bool:
 
 
 def _extrema_scan(end: float, corners: np.ndarray, limits: Limits) -> np.ndarray:
-    """The route's own scan of a run for ``F_x``'s extrema (s from first contact, sorted): :data:`EXTREMA_SCAN` times
-    evenly from first contact to ``end`` and :data:`SEGMENT_SCAN` evenly inside each path segment in contact
-    (``corners``: the path's corner times from first contact), checked against ``limits.samples``."""
+    """The route's own scan of a run for ``F_x``'s extrema (s from first contact, sorted): first contact, ``end`` and
+    :data:`SEGMENT_SCAN` times evenly inside each path segment in contact (``corners``: the path's corner times from
+    first contact), checked against ``limits.samples``."""
     low, high = np.clip(corners[:-1], 0.0, end), np.clip(corners[1:], 0.0, end)
     inside = high > low
     shares = np.arange(1, SEGMENT_SCAN + 1) / (SEGMENT_SCAN + 1)
     within = (low[inside, None] + shares * (high - low)[inside, None]).ravel()
     limits.check(f"the F_x extrema scan of the continuum run ({int(inside.sum())} path segments in contact)",
-                 samples=float(EXTREMA_SCAN + within.size))
-    return np.unique(np.concatenate([np.linspace(0.0, end, EXTREMA_SCAN), within]))
+                 samples=float(within.size))
+    return np.unique(np.concatenate([[0.0, end], within]))
 
 
 def _extrema_samples(play: PlaySprings, times: np.ndarray, force: np.ndarray, solution, grid: np.ndarray,
