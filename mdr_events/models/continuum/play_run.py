@@ -11,7 +11,10 @@ the slip onset (the first time a spring is at a cap: the share at a cap first po
 piece and its end, the centre and the edge probed beside the quadrature's nodes, then bisected to
 :data:`EVENT_HALVINGS`) and full slip (every spring at a cap, found the same way). A re-stick where a level turns
 back without a reversal of ``x``, and a zone that opens and closes between two output times, are not logged. The
-extrema of ``F_x`` are the largest and least sample refined by bounded minimisation between its neighbours.
+extrema of ``F_x`` are the largest and least of the samples and the route's own scan of the run
+(:func:`_extrema_scan`: :data:`SEGMENT_SCAN` times inside each path segment in contact, so that they do not hang on
+the output times) refined by bounded minimisation between its
+neighbours.
 
 The output times are read at once (:func:`_probed_all`, :meth:`~.play_springs.PlaySprings.probed_states`), and the
 events of all the pieces are searched side by side (:func:`~.play_search.searched`): each search a generator that yields the
@@ -53,12 +56,13 @@ from .play_probes import probes_at_cap
 from .play_reach import constant_part, pressed_time, reach_times, reach_ulps
 from .play_search import EVENT_HALVINGS, brent, halve, searched
 from .play_springs import LOWER_CAP, UPPER_CAP, PlaySprings, SpanHistory, SpringState, spring_line
+from .solution import contact_radii
 from .solve import run_continuum
 from .state import Event, EventKind
 from .tolerances import Tolerances
 
-__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "PROBE_POINTS",
-           "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH", "PROBE_BOUND"]
+__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "SEGMENT_SCAN",
+           "PROBE_POINTS", "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH", "PROBE_BOUND"]
 
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
@@ -85,6 +89,14 @@ CLOSED_REACH = True
 PROBE_BOUND = True
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
 EXTREMUM_XTOL = 1e-12
+#: The route's own scan of a run for ``F_x``'s extrema (:func:`_extrema_scan`): this many times evenly inside each path
+#: segment in contact (its quarters), beside the contact's ends, the output samples and the path's corners, whatever
+#: the output times. Within a segment ``F_x`` rises or falls, or rises then falls (as ``μ F_N`` after the onset on a
+#: way out): one time inside brackets its extremum between the best time's neighbours, three keep a margin. Its size
+#: (3 × the segments in contact) counts against ``Limits.samples``. (257 times evenly over the contact instead cost
+#: 1.4-3.8 times a run of 21-201 samples and left segments empty on a path of more; 65 a segment, 7.4 times a run of 200
+#: segments.)
+SEGMENT_SCAN = 3
 #: The springs' events the spans' frictionless run logs and this route replaces.
 _SPRING_EVENTS = frozenset({EventKind.SLIP_ONSET, EventKind.FULL_SLIP, EventKind.RE_STICK, EventKind.FRONT_AT_CENTRE,
                             EventKind.FRONT_AT_EDGE})
@@ -152,7 +164,9 @@ def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = 
         raw["events"][case] = sorted(kept + _spring_events(play, raw["time"], shares, start, solution.events),
                                      key=lambda event: event.time)
         extrema = solution_extrema(solution)
-        extrema.update(_force_extrema(play, raw["time"], force, start, path))
+        scan = _extrema_scan(solution.end_time, path.corner_times - start, limits)
+        extrema.update(_force_extrema(play, *_extrema_samples(play, raw["time"], force, solution, scan, start), start,
+                                      path))
         raw["extrema"].append(extrema)
     return raw
 
@@ -472,6 +486,30 @@ def _monotone(play: PlaySprings, times: np.ndarray) -> bool:
     return CLOSED_REACH and all(high == low or (not np.any((jumps > low) & (jumps <= high))
                                                 and constant_part(play, low, high) == low)
                                 for low, high in zip(times[:-1].tolist(), times[1:].tolist()))
+
+
+def _extrema_scan(end: float, corners: np.ndarray, limits: Limits) -> np.ndarray:
+    """The route's own scan of a run for ``F_x``'s extrema (s from first contact, sorted): first contact, ``end`` and
+    :data:`SEGMENT_SCAN` times evenly inside each path segment in contact (``corners``: the path's corner times from
+    first contact), checked against ``limits.samples``."""
+    low, high = np.clip(corners[:-1], 0.0, end), np.clip(corners[1:], 0.0, end)
+    inside = high > low
+    shares = np.arange(1, SEGMENT_SCAN + 1) / (SEGMENT_SCAN + 1)
+    within = (low[inside, None] + shares * (high - low)[inside, None]).ravel()
+    limits.check(f"the F_x extrema scan of the continuum run ({int(inside.sum())} path segments in contact)",
+                 samples=float(within.size))
+    return np.unique(np.concatenate([[0.0, end], within]))
+
+
+def _extrema_samples(play: PlaySprings, times: np.ndarray, force: np.ndarray, solution, grid: np.ndarray,
+                     start: float) -> tuple[np.ndarray, np.ndarray]:
+    """The times and ``F_x`` :func:`_force_extrema` reads: the output samples and the route's own scan of the run
+    (``grid``: :func:`_extrema_scan`; :func:`_force_extrema` adds the path's corners), so that the extrema do not hang
+    on the output times (issue 32 Y2: one sample at the first contact gave a maximum of 0); sorted, the samples first
+    among equal times."""
+    scanned, _, _ = _samples(play, grid + start, contact_radii(solution, grid))
+    order = np.argsort(np.concatenate([times, grid]), kind="stable")
+    return np.concatenate([times, grid])[order], np.concatenate([force, scanned])[order]
 
 
 def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path) -> dict:
