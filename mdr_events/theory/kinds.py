@@ -24,8 +24,7 @@ import numpy as np
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile, TabulatedProfile
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic, flat_punch, power_law, symbolic, tabulated
-from mdr_events.theory.flat_punch import FrictionForms
-from mdr_events.theory.power_law import ClosedForms
+from mdr_events.theory.forms import ClosedForms, FrictionForms
 
 __all__ = ["IndenterTheory", "theory_of"]
 

@@ -9,28 +9,26 @@ with a safeguarded, vectorised Newton iteration on a convex function (:func:`con
 The material, the friction and the works of adhesion come from :class:`~mdr_events.Parameters` (its ``R``
 is the paraboloid's and is not used here); the indenter from the profile. The functions that take either indenter (a
 power law or the flat punch: :func:`normal_force`, :func:`jump_off`, :func:`pull_off_force`, the slip onsets and
-critical angles) hand it to its kind's :class:`ClosedForms`, filed by :func:`mdr_events.theory.kinds.theory_of`: the
-power law's here (:data:`CLOSED_FORMS`), the flat punch's in :mod:`mdr_events.theory.flat_punch`.
+critical angles) hand it to its kind's :class:`~mdr_events.theory.forms.ClosedForms`, filed by
+:func:`mdr_events.theory.kinds.theory_of`: the power law's here (:data:`CLOSED_FORMS`), the flat punch's in :mod:`mdr_events.theory.flat_punch`.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
-from dataclasses import dataclass
 
 import numpy as np
 
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
 from mdr_events.theory import symbolic
+from mdr_events.theory.forms import ClosedForms
 from mdr_events.validation import SCALE_MAX, check_flag, check_real, validate_alpha
 
 __all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_force", "contact_radius",
            "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
            "critical_angle_B", "d_crit_B_indentation", "critical_angle_B_indentation", "convex_root", "branch_root", "with_radius_at",
-           "flat_punch_radius",
-           "prefactor", "hess_prefactor", "check_profile", "ClosedForms", "CLOSED_FORMS",
+           "prefactor", "hess_prefactor", "check_profile", "CLOSED_FORMS",
            "ADHESIVE_MIN_EXPONENT", "ROOT_RTOL"]
 
 #: With adhesion a power law needs ``n`` above this: below it ``√a`` outgrows ``aⁿ`` and no contact is stable.
@@ -107,35 +105,6 @@ def path_angles(alpha, adhesion) -> tuple[np.ndarray, np.ndarray]:
     check_flag("adhesion", adhesion)
     alpha_arr = validate_alpha(alpha)
     return alpha_arr, alpha_arr >= 90.0
-
-
-@dataclass(frozen=True)
-class ClosedForms:
-    """One kind's closed forms behind this module's functions of either indenter (the power law's
-    :data:`CLOSED_FORMS`, the flat punch's :data:`mdr_events.theory.flat_punch.CLOSED_FORMS`).
-
-    Each entry takes the arguments of the function of its name (:func:`normal_force`, :func:`jump_off`, ...), the
-    profile one of its kind, and checks the others itself.
-
-    Parameters
-    ----------
-    normal_force, jump_off, pull_off_force : callable
-        The normal force (10) at a depth and radius, the jump-off and the pull-off force.
-    d_crit_A, d_crit_B, d_crit_B_indentation : callable
-        The slip-onset depths of scenario A (17), (18), B's pull-off and B's indentation branch (20), (21).
-    critical_angle_A, critical_angle_B, critical_angle_B_indentation : callable
-        Their critical angles (degrees).
-    """
-
-    normal_force: Callable[..., object]
-    jump_off: Callable[..., dict[str, float]]
-    pull_off_force: Callable[..., float]
-    d_crit_A: Callable[..., object]
-    d_crit_B: Callable[..., object]
-    d_crit_B_indentation: Callable[..., object]
-    critical_angle_A: Callable[..., float]
-    critical_angle_B: Callable[..., float]
-    critical_angle_B_indentation: Callable[..., float]
 
 
 def _forms(profile) -> ClosedForms:
@@ -488,33 +457,6 @@ def _jump_off(profile: PowerLaw, params: Parameters, work_of_adhesion: float) ->
     return {"contact_radius": float(_rel("power_law_jump_off_radius").numeric(*args)),
             "depth": float(_rel("power_law_jump_off_depth").numeric(*args)),
             "normal_force": float(_rel("power_law_jump_off_force").numeric(*args))}
-
-
-def flat_punch_radius(depth, profile: FlatPunch, params: Parameters, work_of_adhesion: float, fold_share: float = 0.0):
-    """The flat punch's contact radius at ``depth`` (:func:`mdr_events.theory.flat_punch.radius`): its own radius down
-    to the jump-off depth (``fold_share`` of it below still holds), ``nan`` below.
-
-    Parameters
-    ----------
-    depth : float or array_like
-        The depth ``d`` (m).
-    profile : FlatPunch
-        The punch.
-    params : Parameters
-        The material (``E*``); its ``R`` is the paraboloid's and not used.
-    work_of_adhesion : float
-        ``Δγ1`` (J/m², >= 0), the work of adhesion of the way out.
-    fold_share : float, default 0.0
-        The share of the jump-off depth below it at which the contact still holds (a tolerance of rounding).
-
-    Returns
-    -------
-    float or numpy.ndarray
-        The punch's radius (m), or ``nan`` where the contact has come apart; the shape of ``depth``.
-    """
-    from mdr_events.theory.flat_punch import radius  # (it imports this module)
-
-    return radius(depth, profile, params, work_of_adhesion, fold_share)
 
 
 def pull_off_force(profile: Profile, params: Parameters, work_of_adhesion: float) -> float:
@@ -932,7 +874,7 @@ def _critical_angle_B_indentation(profile: PowerLaw, params: Parameters, adhesio
     return float(np.rad2deg(angle))
 
 
-#: The power law's closed forms behind this module's functions of either indenter (:class:`ClosedForms`).
+#: The power law's closed forms behind this module's functions of either indenter.
 CLOSED_FORMS = ClosedForms(normal_force=_normal_force, jump_off=_jump_off, pull_off_force=_pull_off_force,
                            d_crit_A=_d_crit_A, critical_angle_A=_critical_angle_A, d_crit_B=_d_crit_B,
                            critical_angle_B=_critical_angle_B, d_crit_B_indentation=_d_crit_B_indentation,
