@@ -25,7 +25,7 @@ from mdr_events.contact.indenters import FlatPunch
 from mdr_events.parameters import Parameters
 from mdr_events.theory import symbolic
 from mdr_events.theory.forms import ClosedForms, FrictionForms
-from mdr_events.theory.power_law import as_output, cap_per_radius, check_work, path_angles
+from mdr_events.theory.power_law import as_output, cap_per_radius, check_work, final_depth_of, path_angles
 from mdr_events.validation import check_flag, real_array
 
 __all__ = ["normal_force", "jump_off", "radius", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
@@ -327,9 +327,7 @@ def critical_angle_B_indentation(profile: FlatPunch, params: Parameters, adhesio
     """
     profile = _punch(profile, "critical_angle_B_indentation")
     check_flag("adhesion", adhesion)
-    final = 2.0 * params.d_max if final_depth is None else final_depth
-    if not (isinstance(final, (int, float)) and math.isfinite(final) and final > params.d_max):
-        raise ValueError(f"final_depth={final!r} is not allowed; allowed: a finite depth > d_max = {params.d_max!r} m")
+    final = final_depth_of(params, final_depth)
     with np.errstate(divide="ignore"):
         angle = _rel("critical_angle_B_indentation").numeric(profile.radius, final, params.d_max, params.tau0,
                                                              params.G_star)

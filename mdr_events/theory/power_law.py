@@ -107,6 +107,15 @@ def path_angles(alpha, adhesion) -> tuple[np.ndarray, np.ndarray]:
     return alpha_arr, alpha_arr >= 90.0
 
 
+def final_depth_of(params: Parameters, final_depth) -> float:
+    """The "+" branch's deepest point: ``final_depth``, default ``2 d_max``; else ``ValueError`` naming it unless a
+    finite depth beyond ``d_max``."""
+    final = 2.0 * params.d_max if final_depth is None else final_depth
+    if not (isinstance(final, (int, float)) and math.isfinite(final) and final > params.d_max):
+        raise ValueError(f"final_depth={final!r} is not allowed; allowed: a finite depth > d_max = {params.d_max!r} m")
+    return final
+
+
 def _forms(profile) -> ClosedForms:
     """The closed forms of ``profile``'s kind, ``profile`` checked (a power law or the flat punch).
 
@@ -322,8 +331,8 @@ def branch_depth(contact_radius, profile: PowerLaw, params: Parameters, work_of_
 
 
 def normal_force(depth, contact_radius, profile: Profile, params: Parameters):
-    r"""Normal force (N) of the springs in ``|x| < a`` at depth ``d`` (10); the flat punch: ``2 E* a d`` with its
-    own radius (``contact_radius`` must be it, or ``None``).
+    r"""Normal force (N) of the springs in ``|x| < a`` at depth ``d`` (10); the flat punch's:
+    :func:`mdr_events.theory.flat_punch.normal_force`.
 
     .. math:: F_N = 2 E^* \int_0^a \left(d - g(x)\right) \mathrm{d}x
               = 2 E^* \left(a d - \frac{\kappa_n c\, a^{n+1}}{n + 1}\right) \qquad (10)
@@ -419,9 +428,8 @@ def jump_in_radius(profile: PowerLaw, params: Parameters, work_of_adhesion: floa
 def jump_off(profile: Profile, params: Parameters, work_of_adhesion: float) -> dict[str, float]:
     """The end of contact under displacement control: ``contact_radius``, ``depth`` and ``normal_force``.
 
-    Power law: where ``∂d/∂a = 0`` on the branch. Flat punch: the punch's radius at the depth where every
-    spring reaches Heß's limit (8) at once, with Kendall's force ``−sqrt(8π a³ E* Δγ)`` (Kendall, J. Phys. D 4
-    (1971) 1186), the same under force control.
+    Power law: where ``∂d/∂a = 0`` on the branch; the flat punch: Kendall's
+    (:func:`mdr_events.theory.flat_punch.jump_off`).
 
     Parameters
     ----------
@@ -461,7 +469,7 @@ def _jump_off(profile: PowerLaw, params: Parameters, work_of_adhesion: float) ->
 
 def pull_off_force(profile: Profile, params: Parameters, work_of_adhesion: float) -> float:
     """The pull-off force under force control (N, <= 0): the minimum of (10) along the branch (the paraboloid:
-    JKR's ``−(3/2) π Δγ R``); the flat punch: Kendall's ``−sqrt(8π a³ E* Δγ)``.
+    JKR's ``−(3/2) π Δγ R``); the flat punch: :func:`mdr_events.theory.flat_punch.pull_off_force`.
 
     Parameters
     ----------
@@ -556,8 +564,7 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
     - Power law with adhesion (``Δγ0`` branch), ``n >= 1``: ``d(a) = tan α K a`` has no closed form; in ``s = √a``
       ``κ c s^(2n−1) − tan α K s − sqrt(2πΔγ0/E*)`` is increasing and convex past its minimum and has one
       positive root (:func:`convex_root`); ``nan`` where it has none.
-    - Flat punch: every spring attaches at first contact at one ``x`` and all reach ``ū = K a`` together:
-      ``d = tan α K a`` (onset is full slip), with or without adhesion.
+    - Flat punch: :func:`mdr_events.theory.flat_punch.d_crit_A` (``d = tan α K a``, onset is full slip).
 
     Depths beyond ``d_max`` are returned as they are (the path turns back before them); ``α = 90°`` never
     slides (``+inf``). Without adhesion the onset (17), with it (18):
@@ -626,8 +633,8 @@ def _d_crit_A(alpha, profile: PowerLaw, params: Parameters, adhesion: bool = Fal
 def critical_angle_A(profile: Profile, params: Parameters, adhesion: bool = True) -> float:
     r"""Scenario A's critical angle (degrees): slip begins exactly at ``d_max``, ``tan α_c = d_max / ū(a(d_max))``;
     below it the springs slide while indenting. The radius at ``d_max`` is the branch's (``Δγ0``) with adhesion,
-    the non-adhesive one without, the punch's radius for the flat punch. The cone without adhesion gives
-    ``tan α_c = κ c / K`` at any depth.
+    the non-adhesive one without (the flat punch: :func:`mdr_events.theory.flat_punch.critical_angle_A`). The cone
+    without adhesion gives ``tan α_c = κ c / K`` at any depth.
 
     .. math:: \tan\alpha_c = \frac{d_\mathrm{max}}{\bar u(a(d_\mathrm{max}))}
               = \frac{2 G^* d_\mathrm{max}}{\pi a \tau_0} \qquad (17), (18)
@@ -667,8 +674,7 @@ def d_crit_B(alpha, profile: Profile, params: Parameters, adhesion: bool = False
       ``κ c s^(2n) − sqrt(2πΔγ1/E*) s + tan α K s² − d_max`` increases and is convex above the jump-off
       (:func:`convex_root` from the radius at ``d_max``). A root below the jump-off radius means the contact
       comes apart before any spring slides: ``-inf`` (as :func:`mdr_events.theory.analytic.d_crit`).
-    - Flat punch: every spring was anchored at ``x = 0``; all slide when ``x = K a``, ``d = d_max − tan α K a``,
-      unless that lies below Kendall's pull-off depth (``-inf``).
+    - Flat punch: :func:`mdr_events.theory.flat_punch.d_crit_B` (``d = d_max − tan α K a``).
 
     ``d < d_crit`` is the sliding region; ``α = 90°`` never slides (``-inf``).
 
@@ -727,9 +733,8 @@ def _d_crit_B(alpha, profile: PowerLaw, params: Parameters, adhesion: bool = Fal
 
 def critical_angle_B(profile: Profile, params: Parameters, adhesion: bool = True) -> float:
     r"""Scenario B's critical angle (degrees): above it the contact comes apart (the jump-off of the ``Δγ1``
-    branch, or Kendall's depth for the flat punch) before any spring slides, ``tan α_c = (d_max − d_j) / ū(a_j)``
-    at the jump-off ``(a_j, d_j)`` ((21) there). Without adhesion the contact shrinks to nothing and slip always
-    comes first: 90°.
+    branch; the flat punch: :func:`mdr_events.theory.flat_punch.critical_angle_B`) before any spring slides,
+    ``tan α_c = (d_max − d_j) / ū(a_j)`` at the jump-off ``(a_j, d_j)`` ((21) there). Without adhesion: 90°.
 
     .. math:: \tan\alpha_c = \frac{d_\mathrm{max} - d_j}{\bar u(a_j)} = \frac{2 G^* (d_\mathrm{max} - d_j)}{\pi a_j \tau_0}
               \qquad (21)
@@ -771,7 +776,7 @@ def d_crit_B_indentation(alpha, profile: Profile, params: Parameters, adhesion: 
     - Power law, ``n >= 1``: in ``s = √a``, ``κ c s^(2n) − sqrt(2πΔγ0/E*) s − tan α K s² − d_max`` falls, then
       rises convexly through its one positive root (:func:`convex_root` from above); the cone (``n = 1``) is a
       quadratic with a root only where ``tan α K < κ c`` (else ``+inf``: it never slides).
-    - Flat punch: every spring anchored at ``x = 0``, all slide at ``d = d_max + tan α K a``.
+    - Flat punch: :func:`mdr_events.theory.flat_punch.d_crit_B_indentation` (``d = d_max + tan α K a``).
 
     ``d > d_crit`` is the sliding region; ``α = 90°`` never slides (``+inf``).
 
@@ -832,8 +837,8 @@ def critical_angle_B_indentation(profile: Profile, params: Parameters, adhesion:
                                  final_depth: float | None = None) -> float:
     r"""The "+" branch's critical angle (degrees): slip begins exactly at ``final_depth`` (default ``2 d_max``, as
     :meth:`~mdr_events.Path.scenario_B_indentation`), ``tan α_c = (final − d_max) / ū(a(final))`` with the ``Δγ0``
-    branch's radius there (the punch's radius for the flat punch); below it the springs slide before the path
-    turns back.
+    branch's radius there (the flat punch: :func:`mdr_events.theory.flat_punch.critical_angle_B_indentation`);
+    below it the springs slide before the path turns back.
 
     .. math:: \tan\alpha_c = \frac{d_\mathrm{final} - d_\mathrm{max}}{\bar u(a(d_\mathrm{final}))} \qquad (21)
 
@@ -865,9 +870,7 @@ def _critical_angle_B_indentation(profile: PowerLaw, params: Parameters, adhesio
                                   final_depth: float | None = None) -> float:
     """The power law's :func:`critical_angle_B_indentation`."""
     check_flag("adhesion", adhesion)
-    final = 2.0 * params.d_max if final_depth is None else final_depth
-    if not (isinstance(final, (int, float)) and math.isfinite(final) and final > params.d_max):
-        raise ValueError(f"final_depth={final!r} is not allowed; allowed: a finite depth > d_max = {params.d_max!r} m")
+    final = final_depth_of(params, final_depth)
     radius = float(contact_radius(final, profile, params, params.dgamma0 if adhesion else 0.0))
     with np.errstate(divide="ignore"):
         angle = _rel("critical_angle_B_indentation").numeric(radius, final, params.d_max, params.tau0, params.G_star)
