@@ -10,7 +10,8 @@ The material, the friction and the works of adhesion come from :class:`~mdr_even
 is the paraboloid's and is not used here); the indenter from the profile. The functions that take either indenter (a
 power law or the flat punch: :func:`normal_force`, :func:`jump_off`, :func:`pull_off_force`, the slip onsets and
 critical angles) hand it to its kind's :class:`~mdr_events.theory.forms.ClosedForms`, filed by
-:func:`mdr_events.theory.kinds.theory_of`: the power law's here (:data:`CLOSED_FORMS`), the flat punch's in :mod:`mdr_events.theory.flat_punch`.
+:func:`mdr_events.theory.kinds.theory_of`: the power law's here (:data:`CLOSED_FORMS`), the flat punch's in
+:mod:`mdr_events.theory.flat_punch`.
 """
 
 from __future__ import annotations
@@ -27,8 +28,8 @@ from mdr_events.validation import SCALE_MAX, check_flag, check_real, validate_al
 
 __all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_force", "contact_radius",
            "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
-           "critical_angle_B", "d_crit_B_indentation", "critical_angle_B_indentation", "convex_root", "branch_root", "with_radius_at",
-           "prefactor", "hess_prefactor", "check_profile", "CLOSED_FORMS",
+           "critical_angle_B", "d_crit_B_indentation", "critical_angle_B_indentation", "convex_root", "branch_root",
+           "with_radius_at", "prefactor", "hess_prefactor", "check_profile", "CLOSED_FORMS",
            "ADHESIVE_MIN_EXPONENT", "ROOT_RTOL"]
 
 #: With adhesion a power law needs ``n`` above this: below it ``√a`` outgrows ``aⁿ`` and no contact is stable.
