@@ -17,8 +17,6 @@ relations are derived in :mod:`mdr_events.theory.symbolic` (``flat_punch_*``).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
-from dataclasses import dataclass
 
 import numpy as np
 
@@ -26,13 +24,14 @@ from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.contact.indenters import FlatPunch
 from mdr_events.parameters import Parameters
 from mdr_events.theory import symbolic
-from mdr_events.theory.power_law import ClosedForms, as_output, cap_per_radius, check_work, path_angles
+from mdr_events.theory.forms import ClosedForms, FrictionForms
+from mdr_events.theory.power_law import as_output, cap_per_radius, check_work, final_depth_of, path_angles
 from mdr_events.validation import check_flag, real_array
 
 __all__ = ["normal_force", "jump_off", "radius", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
            "critical_angle_B", "d_crit_B_indentation", "critical_angle_B_indentation", "tangential_force",
            "coulomb_force", "capped_d_crit_B", "capped_d_crit_B_indentation", "capped_critical_angle_B_indentation",
-           "FrictionForms", "CLOSED_FORMS", "FRICTION_FORMS"]
+           "CLOSED_FORMS", "FRICTION_FORMS"]
 
 
 def _rel(key: str):
@@ -328,9 +327,7 @@ def critical_angle_B_indentation(profile: FlatPunch, params: Parameters, adhesio
     """
     profile = _punch(profile, "critical_angle_B_indentation")
     check_flag("adhesion", adhesion)
-    final = 2.0 * params.d_max if final_depth is None else final_depth
-    if not (isinstance(final, (int, float)) and math.isfinite(final) and final > params.d_max):
-        raise ValueError(f"final_depth={final!r} is not allowed; allowed: a finite depth > d_max = {params.d_max!r} m")
+    final = final_depth_of(params, final_depth)
     with np.errstate(divide="ignore"):
         angle = _rel("critical_angle_B_indentation").numeric(profile.radius, final, params.d_max, params.tau0,
                                                              params.G_star)
@@ -506,32 +503,12 @@ def capped_critical_angle_B_indentation(cap: float, kappa: float, params: Parame
     return float(math.degrees(math.atan2(final - params.d_max, cap * profile.radius + kappa * final)))
 
 
-@dataclass(frozen=True)
-class FrictionForms:
-    """A kind's own closed forms under the friction laws' caps ``K a + κ (d − g)``, where those of a curved indenter
-    (:mod:`mdr_events.theory.mindlin`) do not serve it: the flat punch's :data:`FRICTION_FORMS`.
-
-    Parameters
-    ----------
-    coulomb_force : callable
-        ``(sliding, params, contact_radius)``: Coulomb's part of the virgin curve (:func:`coulomb_force`).
-    d_crit_B, d_crit_B_indentation, critical_angle_B_indentation : callable
-        Scenario B's onsets and the "+" branch's critical angle (:func:`capped_d_crit_B`,
-        :func:`capped_d_crit_B_indentation`, :func:`capped_critical_angle_B_indentation`).
-    """
-
-    coulomb_force: Callable[..., object]
-    d_crit_B: Callable[..., np.ndarray]
-    d_crit_B_indentation: Callable[..., np.ndarray]
-    critical_angle_B_indentation: Callable[..., float]
-
-
 #: The flat punch's closed forms behind :mod:`mdr_events.theory.power_law`'s functions of either indenter.
 CLOSED_FORMS = ClosedForms(normal_force=normal_force, jump_off=jump_off, pull_off_force=pull_off_force,
                            d_crit_A=d_crit_A, critical_angle_A=critical_angle_A, d_crit_B=d_crit_B,
                            critical_angle_B=critical_angle_B, d_crit_B_indentation=d_crit_B_indentation,
                            critical_angle_B_indentation=critical_angle_B_indentation)
-#: The flat punch's closed forms under :mod:`mdr_events.theory.mindlin`'s friction laws (:class:`FrictionForms`).
+#: The flat punch's closed forms under :mod:`mdr_events.theory.mindlin`'s friction laws.
 FRICTION_FORMS = FrictionForms(coulomb_force=coulomb_force, d_crit_B=capped_d_crit_B,
                                d_crit_B_indentation=capped_d_crit_B_indentation,
                                critical_angle_B_indentation=capped_critical_angle_B_indentation)

@@ -24,8 +24,7 @@ import numpy as np
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile, TabulatedProfile
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic, flat_punch, power_law, symbolic, tabulated
-from mdr_events.theory.flat_punch import FrictionForms
-from mdr_events.theory.power_law import ClosedForms
+from mdr_events.theory.forms import ClosedForms, FrictionForms
 
 __all__ = ["IndenterTheory", "theory_of"]
 
@@ -150,6 +149,20 @@ _THEORIES: dict[type, IndenterTheory] = {type(None): _PARABOLOID, PowerLaw: _POW
 def theory_of(profile: Profile | None) -> IndenterTheory:
     """The theory of ``profile``'s kind (``None``: the paraboloid of ``Parameters.R``).
 
-    Anything else is handed to the power law's functions, which name what they take (``TypeError``).
+    A subclass of an indenter type is of its base's kind (the first filed type along its MRO). Anything else is
+    handed to the power law's functions, which name what they take (``TypeError``).
+
+    Parameters
+    ----------
+    profile : PowerLaw, FlatPunch, TabulatedProfile or None
+        The indenter.
+
+    Returns
+    -------
+    IndenterTheory
+        What the theory computes for its kind.
     """
-    return _THEORIES.get(type(profile), _POWER_LAW)
+    for kind in type(profile).__mro__:
+        if kind in _THEORIES:
+            return _THEORIES[kind]
+    return _POWER_LAW

@@ -9,28 +9,27 @@ with a safeguarded, vectorised Newton iteration on a convex function (:func:`con
 The material, the friction and the works of adhesion come from :class:`~mdr_events.Parameters` (its ``R``
 is the paraboloid's and is not used here); the indenter from the profile. The functions that take either indenter (a
 power law or the flat punch: :func:`normal_force`, :func:`jump_off`, :func:`pull_off_force`, the slip onsets and
-critical angles) hand it to its kind's :class:`ClosedForms`, filed by :func:`mdr_events.theory.kinds.theory_of`: the
-power law's here (:data:`CLOSED_FORMS`), the flat punch's in :mod:`mdr_events.theory.flat_punch`.
+critical angles) hand it to its kind's :class:`~mdr_events.theory.forms.ClosedForms`, filed by
+:func:`mdr_events.theory.kinds.theory_of`: the power law's here (:data:`CLOSED_FORMS`), the flat punch's in
+:mod:`mdr_events.theory.flat_punch`.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
-from dataclasses import dataclass
 
 import numpy as np
 
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
 from mdr_events.theory import symbolic
+from mdr_events.theory.forms import ClosedForms
 from mdr_events.validation import SCALE_MAX, check_flag, check_real, validate_alpha
 
 __all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_force", "contact_radius",
            "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
-           "critical_angle_B", "d_crit_B_indentation", "critical_angle_B_indentation", "convex_root", "branch_root", "with_radius_at",
-           "flat_punch_radius",
-           "prefactor", "hess_prefactor", "check_profile", "ClosedForms", "CLOSED_FORMS",
+           "critical_angle_B", "d_crit_B_indentation", "critical_angle_B_indentation", "convex_root", "branch_root",
+           "with_radius_at", "prefactor", "hess_prefactor", "check_profile", "CLOSED_FORMS",
            "ADHESIVE_MIN_EXPONENT", "ROOT_RTOL"]
 
 #: With adhesion a power law needs ``n`` above this: below it ``√a`` outgrows ``aⁿ`` and no contact is stable.
@@ -109,33 +108,13 @@ def path_angles(alpha, adhesion) -> tuple[np.ndarray, np.ndarray]:
     return alpha_arr, alpha_arr >= 90.0
 
 
-@dataclass(frozen=True)
-class ClosedForms:
-    """One kind's closed forms behind this module's functions of either indenter (the power law's
-    :data:`CLOSED_FORMS`, the flat punch's :data:`mdr_events.theory.flat_punch.CLOSED_FORMS`).
-
-    Each entry takes the arguments of the function of its name (:func:`normal_force`, :func:`jump_off`, ...), the
-    profile one of its kind, and checks the others itself.
-
-    Parameters
-    ----------
-    normal_force, jump_off, pull_off_force : callable
-        The normal force (10) at a depth and radius, the jump-off and the pull-off force.
-    d_crit_A, d_crit_B, d_crit_B_indentation : callable
-        The slip-onset depths of scenario A (17), (18), B's pull-off and B's indentation branch (20), (21).
-    critical_angle_A, critical_angle_B, critical_angle_B_indentation : callable
-        Their critical angles (degrees).
-    """
-
-    normal_force: Callable[..., object]
-    jump_off: Callable[..., dict[str, float]]
-    pull_off_force: Callable[..., float]
-    d_crit_A: Callable[..., object]
-    d_crit_B: Callable[..., object]
-    d_crit_B_indentation: Callable[..., object]
-    critical_angle_A: Callable[..., float]
-    critical_angle_B: Callable[..., float]
-    critical_angle_B_indentation: Callable[..., float]
+def final_depth_of(params: Parameters, final_depth) -> float:
+    """The "+" branch's deepest point: ``final_depth``, default ``2 d_max``; else ``ValueError`` naming it unless a
+    finite depth beyond ``d_max``."""
+    final = 2.0 * params.d_max if final_depth is None else final_depth
+    if not (isinstance(final, (int, float)) and math.isfinite(final) and final > params.d_max):
+        raise ValueError(f"final_depth={final!r} is not allowed; allowed: a finite depth > d_max = {params.d_max!r} m")
+    return final
 
 
 def _forms(profile) -> ClosedForms:
@@ -353,8 +332,8 @@ def branch_depth(contact_radius, profile: PowerLaw, params: Parameters, work_of_
 
 
 def normal_force(depth, contact_radius, profile: Profile, params: Parameters):
-    r"""Normal force (N) of the springs in ``|x| < a`` at depth ``d`` (10); the flat punch: ``2 E* a d`` with its
-    own radius (``contact_radius`` must be it, or ``None``).
+    r"""Normal force (N) of the springs in ``|x| < a`` at depth ``d`` (10); the flat punch's:
+    :func:`mdr_events.theory.flat_punch.normal_force`.
 
     .. math:: F_N = 2 E^* \int_0^a \left(d - g(x)\right) \mathrm{d}x
               = 2 E^* \left(a d - \frac{\kappa_n c\, a^{n+1}}{n + 1}\right) \qquad (10)
@@ -450,9 +429,8 @@ def jump_in_radius(profile: PowerLaw, params: Parameters, work_of_adhesion: floa
 def jump_off(profile: Profile, params: Parameters, work_of_adhesion: float) -> dict[str, float]:
     """The end of contact under displacement control: ``contact_radius``, ``depth`` and ``normal_force``.
 
-    Power law: where ``∂d/∂a = 0`` on the branch. Flat punch: the punch's radius at the depth where every
-    spring reaches Heß's limit (8) at once, with Kendall's force ``−sqrt(8π a³ E* Δγ)`` (Kendall, J. Phys. D 4
-    (1971) 1186), the same under force control.
+    Power law: where ``∂d/∂a = 0`` on the branch; the flat punch: Kendall's
+    (:func:`mdr_events.theory.flat_punch.jump_off`).
 
     Parameters
     ----------
@@ -490,36 +468,9 @@ def _jump_off(profile: PowerLaw, params: Parameters, work_of_adhesion: float) ->
             "normal_force": float(_rel("power_law_jump_off_force").numeric(*args))}
 
 
-def flat_punch_radius(depth, profile: FlatPunch, params: Parameters, work_of_adhesion: float, fold_share: float = 0.0):
-    """The flat punch's contact radius at ``depth`` (:func:`mdr_events.theory.flat_punch.radius`): its own radius down
-    to the jump-off depth (``fold_share`` of it below still holds), ``nan`` below.
-
-    Parameters
-    ----------
-    depth : float or array_like
-        The depth ``d`` (m).
-    profile : FlatPunch
-        The punch.
-    params : Parameters
-        The material (``E*``); its ``R`` is the paraboloid's and not used.
-    work_of_adhesion : float
-        ``Δγ1`` (J/m², >= 0), the work of adhesion of the way out.
-    fold_share : float, default 0.0
-        The share of the jump-off depth below it at which the contact still holds (a tolerance of rounding).
-
-    Returns
-    -------
-    float or numpy.ndarray
-        The punch's radius (m), or ``nan`` where the contact has come apart; the shape of ``depth``.
-    """
-    from mdr_events.theory.flat_punch import radius  # (it imports this module)
-
-    return radius(depth, profile, params, work_of_adhesion, fold_share)
-
-
 def pull_off_force(profile: Profile, params: Parameters, work_of_adhesion: float) -> float:
     """The pull-off force under force control (N, <= 0): the minimum of (10) along the branch (the paraboloid:
-    JKR's ``−(3/2) π Δγ R``); the flat punch: Kendall's ``−sqrt(8π a³ E* Δγ)``.
+    JKR's ``−(3/2) π Δγ R``); the flat punch: :func:`mdr_events.theory.flat_punch.pull_off_force`.
 
     Parameters
     ----------
@@ -614,8 +565,7 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
     - Power law with adhesion (``Δγ0`` branch), ``n >= 1``: ``d(a) = tan α K a`` has no closed form; in ``s = √a``
       ``κ c s^(2n−1) − tan α K s − sqrt(2πΔγ0/E*)`` is increasing and convex past its minimum and has one
       positive root (:func:`convex_root`); ``nan`` where it has none.
-    - Flat punch: every spring attaches at first contact at one ``x`` and all reach ``ū = K a`` together:
-      ``d = tan α K a`` (onset is full slip), with or without adhesion.
+    - Flat punch: :func:`mdr_events.theory.flat_punch.d_crit_A` (``d = tan α K a``, onset is full slip).
 
     Depths beyond ``d_max`` are returned as they are (the path turns back before them); ``α = 90°`` never
     slides (``+inf``). Without adhesion the onset (17), with it (18):
@@ -684,8 +634,8 @@ def _d_crit_A(alpha, profile: PowerLaw, params: Parameters, adhesion: bool = Fal
 def critical_angle_A(profile: Profile, params: Parameters, adhesion: bool = True) -> float:
     r"""Scenario A's critical angle (degrees): slip begins exactly at ``d_max``, ``tan α_c = d_max / ū(a(d_max))``;
     below it the springs slide while indenting. The radius at ``d_max`` is the branch's (``Δγ0``) with adhesion,
-    the non-adhesive one without, the punch's radius for the flat punch. The cone without adhesion gives
-    ``tan α_c = κ c / K`` at any depth.
+    the non-adhesive one without (the flat punch: :func:`mdr_events.theory.flat_punch.critical_angle_A`). The cone
+    without adhesion gives ``tan α_c = κ c / K`` at any depth.
 
     .. math:: \tan\alpha_c = \frac{d_\mathrm{max}}{\bar u(a(d_\mathrm{max}))}
               = \frac{2 G^* d_\mathrm{max}}{\pi a \tau_0} \qquad (17), (18)
@@ -725,8 +675,7 @@ def d_crit_B(alpha, profile: Profile, params: Parameters, adhesion: bool = False
       ``κ c s^(2n) − sqrt(2πΔγ1/E*) s + tan α K s² − d_max`` increases and is convex above the jump-off
       (:func:`convex_root` from the radius at ``d_max``). A root below the jump-off radius means the contact
       comes apart before any spring slides: ``-inf`` (as :func:`mdr_events.theory.analytic.d_crit`).
-    - Flat punch: every spring was anchored at ``x = 0``; all slide when ``x = K a``, ``d = d_max − tan α K a``,
-      unless that lies below Kendall's pull-off depth (``-inf``).
+    - Flat punch: :func:`mdr_events.theory.flat_punch.d_crit_B` (``d = d_max − tan α K a``).
 
     ``d < d_crit`` is the sliding region; ``α = 90°`` never slides (``-inf``).
 
@@ -785,9 +734,8 @@ def _d_crit_B(alpha, profile: PowerLaw, params: Parameters, adhesion: bool = Fal
 
 def critical_angle_B(profile: Profile, params: Parameters, adhesion: bool = True) -> float:
     r"""Scenario B's critical angle (degrees): above it the contact comes apart (the jump-off of the ``Δγ1``
-    branch, or Kendall's depth for the flat punch) before any spring slides, ``tan α_c = (d_max − d_j) / ū(a_j)``
-    at the jump-off ``(a_j, d_j)`` ((21) there). Without adhesion the contact shrinks to nothing and slip always
-    comes first: 90°.
+    branch; the flat punch: :func:`mdr_events.theory.flat_punch.critical_angle_B`) before any spring slides,
+    ``tan α_c = (d_max − d_j) / ū(a_j)`` at the jump-off ``(a_j, d_j)`` ((21) there). Without adhesion: 90°.
 
     .. math:: \tan\alpha_c = \frac{d_\mathrm{max} - d_j}{\bar u(a_j)} = \frac{2 G^* (d_\mathrm{max} - d_j)}{\pi a_j \tau_0}
               \qquad (21)
@@ -829,7 +777,7 @@ def d_crit_B_indentation(alpha, profile: Profile, params: Parameters, adhesion: 
     - Power law, ``n >= 1``: in ``s = √a``, ``κ c s^(2n) − sqrt(2πΔγ0/E*) s − tan α K s² − d_max`` falls, then
       rises convexly through its one positive root (:func:`convex_root` from above); the cone (``n = 1``) is a
       quadratic with a root only where ``tan α K < κ c`` (else ``+inf``: it never slides).
-    - Flat punch: every spring anchored at ``x = 0``, all slide at ``d = d_max + tan α K a``.
+    - Flat punch: :func:`mdr_events.theory.flat_punch.d_crit_B_indentation` (``d = d_max + tan α K a``).
 
     ``d > d_crit`` is the sliding region; ``α = 90°`` never slides (``+inf``).
 
@@ -890,8 +838,8 @@ def critical_angle_B_indentation(profile: Profile, params: Parameters, adhesion:
                                  final_depth: float | None = None) -> float:
     r"""The "+" branch's critical angle (degrees): slip begins exactly at ``final_depth`` (default ``2 d_max``, as
     :meth:`~mdr_events.Path.scenario_B_indentation`), ``tan α_c = (final − d_max) / ū(a(final))`` with the ``Δγ0``
-    branch's radius there (the punch's radius for the flat punch); below it the springs slide before the path
-    turns back.
+    branch's radius there (the flat punch: :func:`mdr_events.theory.flat_punch.critical_angle_B_indentation`);
+    below it the springs slide before the path turns back.
 
     .. math:: \tan\alpha_c = \frac{d_\mathrm{final} - d_\mathrm{max}}{\bar u(a(d_\mathrm{final}))} \qquad (21)
 
@@ -923,16 +871,14 @@ def _critical_angle_B_indentation(profile: PowerLaw, params: Parameters, adhesio
                                   final_depth: float | None = None) -> float:
     """The power law's :func:`critical_angle_B_indentation`."""
     check_flag("adhesion", adhesion)
-    final = 2.0 * params.d_max if final_depth is None else final_depth
-    if not (isinstance(final, (int, float)) and math.isfinite(final) and final > params.d_max):
-        raise ValueError(f"final_depth={final!r} is not allowed; allowed: a finite depth > d_max = {params.d_max!r} m")
+    final = final_depth_of(params, final_depth)
     radius = float(contact_radius(final, profile, params, params.dgamma0 if adhesion else 0.0))
     with np.errstate(divide="ignore"):
         angle = _rel("critical_angle_B_indentation").numeric(radius, final, params.d_max, params.tau0, params.G_star)
     return float(np.rad2deg(angle))
 
 
-#: The power law's closed forms behind this module's functions of either indenter (:class:`ClosedForms`).
+#: The power law's closed forms behind this module's functions of either indenter.
 CLOSED_FORMS = ClosedForms(normal_force=_normal_force, jump_off=_jump_off, pull_off_force=_pull_off_force,
                            d_crit_A=_d_crit_A, critical_angle_A=_critical_angle_A, d_crit_B=_d_crit_B,
                            critical_angle_B=_critical_angle_B, d_crit_B_indentation=_d_crit_B_indentation,

@@ -23,15 +23,15 @@ CLOSED_FORM_RTOL = 8 * float(np.finfo(float).eps)
 
 #: Each power_law function of either indenter with the flat punch's arguments (after the profile's).
 CALLS = [
-    ("normal_force", lambda f, adhesion: f(np.array([-1e-6, 0.0, 2e-5]), None, PUNCH, PAPER)),
-    ("jump_off", lambda f, adhesion: f(PUNCH, PAPER, PAPER.dgamma1 if adhesion else 0.0)),
-    ("pull_off_force", lambda f, adhesion: f(PUNCH, PAPER, PAPER.dgamma1 if adhesion else 0.0)),
-    ("d_crit_A", lambda f, adhesion: f(ANGLES, PUNCH, PAPER, adhesion)),
-    ("d_crit_B", lambda f, adhesion: f(ANGLES, PUNCH, PAPER, adhesion)),
-    ("d_crit_B_indentation", lambda f, adhesion: f(ANGLES, PUNCH, PAPER, adhesion)),
-    ("critical_angle_A", lambda f, adhesion: f(PUNCH, PAPER, adhesion)),
-    ("critical_angle_B", lambda f, adhesion: f(PUNCH, PAPER, adhesion)),
-    ("critical_angle_B_indentation", lambda f, adhesion: f(PUNCH, PAPER, adhesion, 3.0 * PAPER.d_max)),
+    ("normal_force", lambda f, adhesion, profile=PUNCH: f(np.array([-1e-6, 0.0, 2e-5]), None, profile, PAPER)),
+    ("jump_off", lambda f, adhesion, profile=PUNCH: f(profile, PAPER, PAPER.dgamma1 if adhesion else 0.0)),
+    ("pull_off_force", lambda f, adhesion, profile=PUNCH: f(profile, PAPER, PAPER.dgamma1 if adhesion else 0.0)),
+    ("d_crit_A", lambda f, adhesion, profile=PUNCH: f(ANGLES, profile, PAPER, adhesion)),
+    ("d_crit_B", lambda f, adhesion, profile=PUNCH: f(ANGLES, profile, PAPER, adhesion)),
+    ("d_crit_B_indentation", lambda f, adhesion, profile=PUNCH: f(ANGLES, profile, PAPER, adhesion)),
+    ("critical_angle_A", lambda f, adhesion, profile=PUNCH: f(profile, PAPER, adhesion)),
+    ("critical_angle_B", lambda f, adhesion, profile=PUNCH: f(profile, PAPER, adhesion)),
+    ("critical_angle_B_indentation", lambda f, adhesion, profile=PUNCH: f(profile, PAPER, adhesion, 3.0 * PAPER.d_max)),
 ]
 
 
@@ -82,3 +82,40 @@ def test_mindlin_b_onsets_of_the_punch_are_its_caps_closed_forms(mu):
     np.testing.assert_allclose(mindlin.d_crit_B_indentation(angles, law, PAPER, PUNCH), further_in,
                                rtol=CLOSED_FORM_RTOL, atol=0.0)
     assert np.any(np.isfinite(further_in)) and np.any(out > 0.0)  # (both closed forms are exercised)
+
+
+class _MyPunch(FlatPunch):
+    """A user's subclass of the flat punch: of the flat punch's kind."""
+
+
+class _MyPowerLaw(PowerLaw):
+    """A user's subclass of the power law: of the power law's kind."""
+
+
+#: Each base indenter and a subclass of it with the same fields.
+SUBCLASSES = [(PUNCH, _MyPunch(PUNCH.radius)), (PowerLaw(2e3, 1.5), _MyPowerLaw(2e3, 1.5))]
+#: mindlin's functions of an indenter, called with the subclass in the base's place.
+MINDLIN_CALLS = [
+    ("d_crit_A", lambda f, law, profile: f(ANGLES, law, PAPER, profile, True)),
+    ("d_crit_B", lambda f, law, profile: f(ANGLES, law, PAPER, profile, True)),
+    ("d_crit_B_indentation", lambda f, law, profile: f(ANGLES, law, PAPER, profile, True)),
+    ("critical_angle_A", lambda f, law, profile: f(law, PAPER, profile, True)),
+    ("critical_angle_B", lambda f, law, profile: f(law, PAPER, profile, True)),
+    ("virgin_force", lambda f, law, profile: f(np.linspace(-1e-5, 1e-5, 5), 2e-5, law, PAPER, profile)),
+    ("tangential_force", lambda f, law, profile: f(np.array([0.0, 1e-6, -2e-6]), 2e-5, law, PAPER, profile)),
+]
+
+
+@pytest.mark.parametrize("base, subclass", SUBCLASSES, ids=["FlatPunch", "PowerLaw"])
+def test_a_subclass_is_of_its_bases_kind(base, subclass):
+    """kinds files a subclass as its base, so power_law's and mindlin's functions give the base's numbers bit for bit
+    (an exact type lookup sent a FlatPunch subclass to the power law's forms: AttributeError 'n')."""
+    assert theory_of(subclass) is theory_of(base)
+    for name, call in CALLS[1:]:  # (normal_force's radius differs by kind: the first row's None is the punch's)
+        for adhesion in (False, True):
+            assert _same(call(getattr(power_law, name), adhesion, subclass),
+                         call(getattr(power_law, name), adhesion, base)), name
+    for law in (FrictionLaw("tau0"), FrictionLaw("coulomb", mu=0.3), FrictionLaw("tau0+coulomb", mu=0.3)):
+        for name, call in MINDLIN_CALLS:
+            assert _same(call(getattr(mindlin, name), law, subclass),
+                         call(getattr(mindlin, name), law, base)), (name, law)
