@@ -180,3 +180,35 @@ def test_f_x_extrema_inside_a_short_segment_of_a_long_path_are_found():
         found, best = sign * float(sparse[name].values[0]), sign * float(force[k])
         step = 2.0 * float(np.max(np.abs(np.diff(force[max(k - 1, 0):k + 2]))))
         assert best - ROUNDING * abs(best) <= found <= best + step, (name, found, best, step)
+
+
+# --- Y2's twin (found reading the change once more): the rate law's route with Coulomb's part (rate_coulomb) runs the
+# same springs one by one and took F_x's extrema from the output samples alone: one sample at the first contact
+# reported a maximum of 0 where the run reaches 0.357 N. Both routes now read the route's own scan
+# (play_run._scanned_force_extrema) -----------------------------------------------------------------------------------
+
+def _rate_law_under_coulomb():
+    import dataclasses
+
+    import mdr_events as me
+
+    paper = me.Parameters.paper()
+    return dataclasses.replace(me.Contact.paper(), adhesion=me.RateDependentAdhesion(paper.dgamma0, paper.dgamma1,
+                                                                                     1e-6, 0.6),
+                               friction=me.FrictionLaw("tau0+coulomb", tau0=paper.tau0, mu=0.5))
+
+
+@SLOW
+def test_f_x_extrema_of_the_rate_law_under_coulomb_do_not_hang_on_the_output_times():
+    """Y2's twin (the rate law's per-spring route): F_x's extrema of a run sampled once, at the first contact, are
+    those of 201 samples to rounding; before, its maximum was 0 for 0.357 N."""
+    import numpy as np
+
+    import mdr_events as me
+
+    sparse = me.simulate(_rate_law_under_coulomb(), "A", [45.0], me.Continuum(t=np.array([0.0])))
+    dense = me.simulate(_rate_law_under_coulomb(), "A", [45.0], "continuum", samples=201)
+    for name in ("tangential_force_max", "tangential_force_min"):
+        found, reference = float(sparse[name].values[0]), float(dense[name].values[0])
+        assert abs(found - reference) <= EXTREMA_RTOL * abs(float(dense["tangential_force_max"].values[0])), \
+            (name, found, reference)

@@ -12,9 +12,8 @@ piece and its end, the centre and the edge probed beside the quadrature's nodes,
 :data:`EVENT_HALVINGS`) and full slip (every spring at a cap, found the same way). A re-stick where a level turns
 back without a reversal of ``x``, and a zone that opens and closes between two output times, are not logged. The
 extrema of ``F_x`` are the largest and least of the samples and the route's own scan of the run
-(:func:`_extrema_scan`: :data:`SEGMENT_SCAN` times inside each path segment in contact, so that they do not hang on
-the output times) refined by bounded minimisation between its
-neighbours.
+(:func:`_scanned_force_extrema`, :func:`_extrema_scan`: :data:`SEGMENT_SCAN` times inside each path segment in
+contact, so that they do not hang on the output times) refined by bounded minimisation between its neighbours.
 
 The output times are read at once (:func:`_probed_all`, :meth:`~.play_springs.PlaySprings.probed_states`), and the
 events of all the pieces are searched side by side (:func:`~.play_search.searched`): each search a generator that yields the
@@ -30,7 +29,7 @@ contact, or with adhesion the jump-in) under Coulomb's law alone is seeded by th
 compressed, in closed form on the depth (:func:`~.play_reach.pressed_time`). Every seed's bracket is checked on the
 share as before (:data:`CLOSED_REACH` ``False``: the route of before).
 
-The probes are not read where a bound proves no spring is at a cap (:func:`~.play_bound.sticking`: along the first
+The probes are not read where a bound proves none of them is at a cap (:func:`~.play_bound.sticking`: along the first
 segment in contact, before the slip onset; :data:`PROBE_BOUND`), and the probes of the times on one part of
 :func:`~.play_reach.constant_part` (a fretting stroke before its slip onset) are read in one evaluation of the
 anchors (:meth:`~.play_springs.PlaySprings.caps_over`, :data:`~.play_probes.SHARED_PROBES`); each ``False`` is the route of before,
@@ -84,7 +83,7 @@ ROOT_ULPS = 64
 #: but for ``x`` (:mod:`.play_reach`; ``False``: Brent's root everywhere, the route of before, which the tests compare
 #: it with).
 CLOSED_REACH = True
-#: Whether the probes of a time are skipped where :func:`~.play_bound.sticking` proves no spring is at a cap
+#: Whether the probes of a time are skipped where :func:`~.play_bound.sticking` proves none of them is at a cap
 #: (``False``: read at every time where no node is, the route of before, which the tests compare it with).
 PROBE_BOUND = True
 #: The bounded refinement of an extremum of ``F_x``, as a share of the path's duration.
@@ -164,9 +163,8 @@ def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = 
         raw["events"][case] = sorted(kept + _spring_events(play, raw["time"], shares, start, solution.events),
                                      key=lambda event: event.time)
         extrema = solution_extrema(solution)
-        scan = _extrema_scan(solution.end_time, path.corner_times - start, limits)
-        extrema.update(_force_extrema(play, *_extrema_samples(play, raw["time"], force, solution, scan, start), start,
-                                      path))
+        extrema.update(_scanned_force_extrema(play, raw["time"], force, start, path, solution.end_time,
+                                             lambda scan: contact_radii(solution, scan), limits))
         raw["extrema"].append(extrema)
     return raw
 
@@ -501,15 +499,40 @@ def _extrema_scan(end: float, corners: np.ndarray, limits: Limits) -> np.ndarray
     return np.unique(np.concatenate([[0.0, end], within]))
 
 
-def _extrema_samples(play: PlaySprings, times: np.ndarray, force: np.ndarray, solution, grid: np.ndarray,
-                     start: float) -> tuple[np.ndarray, np.ndarray]:
-    """The times and ``F_x`` :func:`_force_extrema` reads: the output samples and the route's own scan of the run
-    (``grid``: :func:`_extrema_scan`; :func:`_force_extrema` adds the path's corners), so that the extrema do not hang
-    on the output times (issue 32 Y2: one sample at the first contact gave a maximum of 0); sorted, the samples first
-    among equal times."""
-    scanned, _, _ = _samples(play, grid + start, contact_radii(solution, grid))
-    order = np.argsort(np.concatenate([times, grid]), kind="stable")
-    return np.concatenate([times, grid])[order], np.concatenate([force, scanned])[order]
+def _scanned_force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path, end: float,
+                          radii, limits: Limits) -> dict:
+    """:func:`_force_extrema` of the output samples and the route's own scan of the run (:func:`_extrema_scan`), so
+    that the extrema do not hang on the output times (issue 32 Y2: one sample at the first contact gave a maximum of
+    0), for every route that runs the springs one by one (the spans' run here, the rate law's edge in
+    :mod:`.rate_coulomb`).
+
+    Parameters
+    ----------
+    play : PlaySprings
+        The springs.
+    times, force : numpy.ndarray
+        The output samples' times (s from first contact) and ``F_x`` (N).
+    start : float
+        The first contact (s, path clock).
+    path : Path
+        The path.
+    end : float
+        The contact's end (s from first contact).
+    radii : callable
+        The contact radius (m) at an array of times (s from first contact), as the route computes it.
+    limits : Limits
+        The resource limits the scan counts against.
+
+    Returns
+    -------
+    dict
+        As :func:`_force_extrema`.
+    """
+    scan = _extrema_scan(end, path.corner_times - start, limits)
+    scanned, _, _ = _samples(play, scan + start, radii(scan))
+    order = np.argsort(np.concatenate([times, scan]), kind="stable")  # (the samples first among equal times)
+    return _force_extrema(play, np.concatenate([times, scan])[order], np.concatenate([force, scanned])[order], start,
+                          path)
 
 
 def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path) -> dict:
