@@ -11,10 +11,16 @@ import numpy as np
 
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
+from mdr_events.theory import symbolic
 from mdr_events.theory.forms import ClosedForms
 from mdr_events.validation import SCALE_MAX, check_flag, check_real, validate_alpha
 
 __all__ = ["check_profile", "check_work", "as_output", "path_angles", "final_depth_of", "ADHESIVE_MIN_EXPONENT"]
+
+
+def _rel(key: str):
+    return symbolic.relation(key)
+
 
 #: With adhesion a power law needs ``n`` above this: below it ``√a`` outgrows ``aⁿ`` and no contact is stable.
 ADHESIVE_MIN_EXPONENT = 0.5

@@ -6,14 +6,9 @@ from __future__ import annotations
 
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import PowerLaw, Profile
-from mdr_events.theory import symbolic
-from mdr_events.theory.power_law.arguments import _check_adhesive, _check_work, _forms
+from mdr_events.theory.power_law.arguments import _check_adhesive, _check_work, _forms, _rel
 
 __all__ = ["jump_off", "pull_off_force"]
-
-
-def _rel(key: str):
-    return symbolic.relation(key)
 
 
 def jump_off(profile: Profile, params: Parameters, work_of_adhesion: float) -> dict[str, float]:

@@ -11,18 +11,14 @@ import numpy as np
 
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import PowerLaw, Profile
-from mdr_events.theory import symbolic
-from mdr_events.theory.power_law.arguments import _check_adhesive, _check_work, _forms, _power_law_only, as_output
+from mdr_events.theory.power_law.arguments import (_check_adhesive, _check_work, _forms, _power_law_only, _rel,
+                                                   as_output)
 from mdr_events.theory.power_law.convex_roots import convex_root
 from mdr_events.theory.power_law.detachment import _jump_off
 from mdr_events.theory.power_law.prefactors import hess_prefactor, prefactor
 
 __all__ = ["with_radius_at", "equivalent_profile", "branch_depth", "normal_force", "branch_normal_force",
            "jump_in_radius", "contact_radius"]
-
-
-def _rel(key: str):
-    return symbolic.relation(key)
 
 
 def with_radius_at(n: float, radius: float, depth: float) -> PowerLaw:

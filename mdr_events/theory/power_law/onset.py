@@ -10,8 +10,7 @@ import numpy as np
 
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import PowerLaw, Profile
-from mdr_events.theory import symbolic
-from mdr_events.theory.power_law.arguments import _check_adhesive, _forms, as_output, final_depth_of, path_angles
+from mdr_events.theory.power_law.arguments import _check_adhesive, _forms, _rel, as_output, final_depth_of, path_angles
 from mdr_events.theory.power_law.convex_roots import convex_root
 from mdr_events.theory.power_law.detachment import _jump_off
 from mdr_events.theory.power_law.normal import contact_radius
@@ -20,10 +19,6 @@ from mdr_events.validation import check_flag
 
 __all__ = ["d_crit_A", "critical_angle_A", "d_crit_B", "critical_angle_B", "d_crit_B_indentation",
            "critical_angle_B_indentation"]
-
-
-def _rel(key: str):
-    return symbolic.relation(key)
 
 
 def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False):

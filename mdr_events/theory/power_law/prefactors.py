@@ -6,13 +6,9 @@ from __future__ import annotations
 
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import PowerLaw
-from mdr_events.theory import symbolic
+from mdr_events.theory.power_law.arguments import _rel
 
 __all__ = ["prefactor", "cap_per_radius", "hess_prefactor"]
-
-
-def _rel(key: str):
-    return symbolic.relation(key)
 
 
 def prefactor(profile: PowerLaw) -> float:
