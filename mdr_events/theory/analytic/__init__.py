@@ -22,16 +22,26 @@ derived in ``symbolic``.
 
 from __future__ import annotations
 
-from mdr_events.theory.analytic.angles import CRITICAL_ANGLE_SCENARIOS, critical_angle
+from mdr_events.theory.analytic import angles as _angles, onset as _onset
+from mdr_events.theory.analytic.angles import critical_angle
 from mdr_events.theory.analytic.arguments import NONNEGATIVE, ResultOverflowError
 from mdr_events.theory.analytic.groups import DimensionlessGroups, dimensionless_groups
 from mdr_events.theory.analytic.normal import (JUMP_OFF_CACHE, _paraboloid_jump_off, hertz_contact_radius,
                                                jkr_contact_radius, jkr_depth, jkr_normal_force, jump_in_radius,
                                                jump_off, normal_force, pull_off_force)
-from mdr_events.theory.analytic.onset import (BRANCHES, D_CRIT_BYTES_PER_ANGLE, D_CRIT_ROWS_BYTES_PER_ANGLE,
-                                              SCENARIOS, d_crit, d_crit_curves, d_crit_rows)
+from mdr_events.theory.analytic.onset import (BRANCHES, D_CRIT_ROWS_BYTES_PER_ANGLE, SCENARIOS, d_crit,
+                                              d_crit_curves, d_crit_rows)
 from mdr_events.theory.analytic.tangential import critical_shift, fretting_dissipated_energy
 from mdr_events.theory.roots import positive_polynomial_root
+
+# (the constants documented where the documentation reads them, their doc comments as in their modules)
+#: Bytes the half-space's slip onsets allocate per angle at their peak, counted against ``Limits.memory`` before the
+#: angles are read (tracemalloc at 1e6 angles: :func:`d_crit` 26 without adhesion, 42 with; :func:`d_crit_rows` 43 in
+#: scenario A, 59 in B's two rows), rounded up. Round twenty-five: ``d_crit`` of 1e8 angles (a view of one value, no
+#: memory of its own) took 2.4 to 4.2 GB against the default 2 GiB, accepted.
+D_CRIT_BYTES_PER_ANGLE = _onset.D_CRIT_BYTES_PER_ANGLE
+#: Scenarios that have a critical angle (:func:`critical_angle`).
+CRITICAL_ANGLE_SCENARIOS = _angles.CRITICAL_ANGLE_SCENARIOS
 
 __all__ = [
     "DimensionlessGroups",

@@ -22,10 +22,9 @@ pull-off (``detachment``), the slip onsets and critical angles (``onset``).
 from __future__ import annotations
 
 from mdr_events.theory.forms import ClosedForms
-from mdr_events.theory.power_law.arguments import (ADHESIVE_MIN_EXPONENT, as_output, check_profile, check_work,
-                                                   final_depth_of, path_angles)
-from mdr_events.theory.power_law.convex_roots import (ROOT_MAX_DOUBLINGS, ROOT_MAX_ITERATIONS, ROOT_RTOL,
-                                                      branch_root, convex_root)
+from mdr_events.theory.power_law import arguments as _arguments, convex_roots as _convex_roots
+from mdr_events.theory.power_law.arguments import as_output, check_profile, check_work, final_depth_of, path_angles
+from mdr_events.theory.power_law.convex_roots import ROOT_MAX_DOUBLINGS, ROOT_MAX_ITERATIONS, branch_root, convex_root
 from mdr_events.theory.power_law.detachment import _jump_off, _pull_off_force, jump_off, pull_off_force
 from mdr_events.theory.power_law.normal import (_normal_force, branch_depth, branch_normal_force, contact_radius,
                                                 equivalent_profile, jump_in_radius, normal_force, with_radius_at)
@@ -34,6 +33,12 @@ from mdr_events.theory.power_law.onset import (_critical_angle_A, _critical_angl
                                                critical_angle_B, critical_angle_B_indentation, d_crit_A, d_crit_B,
                                                d_crit_B_indentation)
 from mdr_events.theory.power_law.prefactors import cap_per_radius, hess_prefactor, prefactor
+
+# (the constants documented where the documentation reads them, their doc comments as in their modules)
+#: With adhesion a power law needs ``n`` above this: below it ``√a`` outgrows ``aⁿ`` and no contact is stable.
+ADHESIVE_MIN_EXPONENT = _arguments.ADHESIVE_MIN_EXPONENT
+#: Relative accuracy of :func:`convex_root` (a few ulp).
+ROOT_RTOL = _convex_roots.ROOT_RTOL
 
 __all__ = ["equivalent_profile", "branch_depth", "normal_force", "branch_normal_force", "contact_radius",
            "jump_in_radius", "jump_off", "pull_off_force", "d_crit_A", "critical_angle_A", "d_crit_B",
