@@ -16,7 +16,9 @@ from .solution import (PathSolution, _compressed_zone, _fill_normal_force, _fill
                        evaluate_span)
 from .span_record import Span, Variable, root_key
 from .state import Regime
-from .stationary import never_stationary, stationary_points
+from .span_polynomials import (SpanPolynomials, polynomial_stationary, polynomial_values, span_polynomials,
+                               polynomial_value)
+from .stationary import _time_of_radius, never_stationary, stationary_points
 
 __all__ = ["EXTREMUM_QUANTITIES", "EXTREMUM_GRID", "EXTREMUM_TIE", "EXTREMUM_XTOL", "ExtremumScan", "ScanMatrix",
            "extremum", "scan_spans", "within_tie"]
@@ -74,11 +76,14 @@ class ExtremumScan(NamedTuple):
     """Every span sampled at :data:`EXTREMUM_GRID` times (s from first contact), with the quantities
     :func:`extremum` reads (the sliding fraction left out); ``matrices``: each quantity's scan reduced to what both
     extremes read of it (:class:`ScanMatrix`), filled as :func:`extremum` asks or at once by :meth:`prepare`
-    (``None``: none kept)."""
+    (``None``: none kept); ``polynomials``: the spans read as polynomials in ``√a``
+    (:func:`~.span_polynomials.span_polynomials`; ``None``: none), which :func:`extremum` refines by their
+    coefficients."""
 
     times: list[np.ndarray]
     values: list[dict[str, np.ndarray]]
     matrices: dict[str, "ScanMatrix"] | None = None
+    polynomials: SpanPolynomials | None = None
 
     def prepare(self, quantities: tuple[str, ...]) -> None:
         """Reduce the scan of several quantities at once (:func:`_scan_matrices`: one array for all of them and both
@@ -133,17 +138,40 @@ def scan_spans(solution: PathSolution) -> ExtremumScan:
     of each radius that of its depth on the branch, which needs no root).
 
     The grids of all spans are built at once (:func:`_scan_grids`: each branch's depths in one call, the grids as the
-    rows of one matrix), then each span's kinematics (:func:`~.solution.evaluate_span`), ``F_x`` of all of them by the kinds of
-    their interpolants (:func:`_fill_tangential_force`) and ``F_N`` in one call (:func:`_fill_normal_force`); every
-    value is the one a span alone would give."""
+    rows of one matrix). The moving spans of the paraboloid whose force is a closed form are polynomials in ``√a``
+    (:func:`~.span_polynomials.span_polynomials`): their ``F_x`` and ``F_N`` read at once by Horner's rule over their
+    coefficients (:func:`~.span_polynomials.polynomial_values`, to rounding the values of the route of before); every
+    other span's kinematics by :func:`~.solution.evaluate_span`, ``F_x`` of all of them by the kinds of their
+    interpolants (:func:`_fill_tangential_force`) and ``F_N`` in one call (:func:`_fill_normal_force`), each value the
+    one a span alone would give."""
     grids, radii = _scan_grids(solution)
-    pinned = _pinned_kinematics(solution, dict(enumerate(grids))) if solution.compressed is None else {}
-    values = [pinned[index] if index in pinned else
-              evaluate_span(solution, index, grid, sliding=False, radii=radius, normal=False, tangential=False)
-              for index, (grid, radius) in enumerate(zip(grids, radii))]
+    polynomials = span_polynomials(solution)
+    taken = set(polynomials.indices)
+    rest = {index: grid for index, grid in enumerate(grids) if index not in taken}
+    pinned = _pinned_kinematics(solution, rest) if solution.compressed is None else {}
+    values: list = [None] * len(grids)
+    for index, grid in rest.items():
+        values[index] = pinned[index] if index in pinned else \
+            evaluate_span(solution, index, grid, sliding=False, radii=radii[index], normal=False, tangential=False)
+    _polynomial_scan(polynomials, radii, values)
     _fill_tangential_force(solution, list(range(len(grids))), grids, values)
     _fill_normal_force(solution.model, values)
-    return ExtremumScan(grids, values, {})
+    return ExtremumScan(grids, values, {}, polynomials)
+
+
+def _polynomial_scan(polynomials: SpanPolynomials, radii: list, values: list) -> None:
+    """The scan's values of the spans of ``polynomials`` (the radius, ``F_x``, ``F_N``) written into ``values`` at
+    their indices, the spans of as many points at once (:func:`~.span_polynomials.polynomial_values`)."""
+    by_length: dict[int, list[int]] = {}
+    for row, index in enumerate(polynomials.indices):
+        by_length.setdefault(len(radii[index]), []).append(row)
+    for rows in by_length.values():
+        members = [polynomials.indices[row] for row in rows]
+        part = polynomials if len(rows) == len(polynomials.indices) else \
+            SpanPolynomials(members, polynomials.force[rows], polynomials.normal[rows])
+        force, normal = polynomial_values(part, np.array([radii[index] for index in members]))
+        for k, index in enumerate(members):
+            values[index] = {"contact_radius": radii[index], "normal_force": normal[k], "tangential_force": force[k]}
 
 
 def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarray | None]]:
@@ -338,8 +366,12 @@ def _refined(solution: PathSolution, scan: ExtremumScan, index: int, quantity: s
     time = float(times[i])
     ends = (max(i - 1, 0), min(i + 1, len(times) - 1))
     radii = scan.values[index]["contact_radius"]
-    points = stationary_points(solution, index, quantity, (float(times[ends[0]]), float(times[ends[1]])),
-                               (float(radii[ends[0]]), float(radii[ends[1]])))
+    bracket, radii = (float(times[ends[0]]), float(times[ends[1]])), (float(radii[ends[0]]), float(radii[ends[1]]))
+    polynomials = scan.polynomials
+    if polynomials is not None and index in polynomials.indices and quantity in ("normal_force", "tangential_force"):
+        points = _polynomial_points(solution, index, polynomials, quantity, bracket, radii)
+    else:
+        points = stationary_points(solution, index, quantity, bracket, radii)
     if points is None:
         points = [_bounded_search(solution, index, quantity, sign, times, i)]
     for found_time, found in points:
@@ -347,6 +379,21 @@ def _refined(solution: PathSolution, scan: ExtremumScan, index: int, quantity: s
         if sign * found > value and not within_tie(value, sign * found, size):
             time, value = found_time, sign * found
     return time, value
+
+
+def _polynomial_points(solution: PathSolution, index: int, polynomials: SpanPolynomials, quantity: str,
+                       times: tuple[float, float], radii: tuple[float, float]) -> list[tuple[float, float]]:
+    """:func:`~.stationary.stationary_points` of a span read as a polynomial in ``s = √a`` (``F_x`` or ``F_N``): the
+    stationary points of its coefficients between the bracket's radii (:func:`~.span_polynomials.polynomial_stationary`),
+    each with its value and the time of its radius (that of its depth on the branch), kept within the bracket."""
+    row = polynomials.indices.index(index)
+    coefficients = (polynomials.force if quantity == "tangential_force" else polynomials.normal)[row].tolist()
+    low, high = sorted(math.sqrt(radius) for radius in radii)
+    points = []
+    for s in polynomial_stationary(coefficients, low, high):
+        time = _time_of_radius(solution, solution.spans[index], s * s)
+        points.append((min(max(time, times[0]), times[1]), polynomial_value(coefficients, s)))
+    return points
 
 
 def _scan_matrices(scan: ExtremumScan, quantities: tuple[str, ...]) -> dict[str, ScanMatrix]:

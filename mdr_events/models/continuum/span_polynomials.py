@@ -1,0 +1,250 @@
+"""A moving span of the paraboloid on the half-space as polynomials in ``s = √a`` (issue 28: the extrema's scan and
+refinement without the branch's closed forms read span by span).
+
+On the paraboloid's branch (9) ``d = s⁴/R − k s`` with ``k = √(2πΔγ/E*)``, so its integral
+``∫_0^a d = s⁶/(3R) − (2/3) k s³``, and (10) ``F_N = 2E* (a d − a³/(3R)) = 2E* (2 s⁶/(3R) − k s³)`` along it. A span's
+force in closed form (:class:`~.closed_form.Primitive`: ``a``, ``a²``, ``d``, ``a d − ∫d``, ``∫d`` and the attachment
+branch's ``∫d₀``, all polynomials in ``s``) is ``F_x = F₀ + 2G* (P(a) − P(a₀))``, a polynomial of degree 6 in ``s``.
+:func:`span_polynomials` gives each such span's coefficients of ``F_x`` and ``F_N`` (a row of a matrix each),
+:func:`polynomial_values` reads them at every span's scan at once (Horner's rule over the matrix), and
+:func:`polynomial_stationary` finds where one is stationary inside a bracket (its derivative's sign read at
+:data:`~.closed_form.STATIONARY_READINGS` equal parts, each change of sign solved by a safeguarded Newton iteration,
+in Python floats): what :mod:`.span_extrema` reads instead of :func:`~.solution.evaluate_span`, the branch's NumPy
+forms and :func:`~.stationary.stationary_points` (:data:`POLYNOMIAL_ROUTE`).
+
+The values differ from those routes by rounding alone: Horner's rule over degree ``n`` errs by at most
+``γ_2n Σ|c_k| s^k`` (``γ_m ≈ m ε``), the old route's sums of the branch's terms by a few ``ε`` of the same terms
+(``tests/models/test_span_polynomials.py`` compares both within a tolerance derived from it). Only the spans this
+holds for are read so (:func:`span_polynomials`: a moving span on the paraboloid's own :class:`~.branch.Branch` of the
+half-space, its force a closed form in the radius); the others keep the routes of before.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from .branch import Branch
+from .closed_form import STATIONARY_READINGS, ClosedForce, Primitive, equal_parts
+from .media import HalfSpaceMedium
+from .span_record import Variable
+from .state import Regime
+from .tolerances import EPS
+
+__all__ = ["POLYNOMIAL_ROUTE", "DEGREE", "ROOT_ULPS", "NEWTON_STEPS", "SpanPolynomials", "span_polynomials",
+           "polynomial_values", "polynomial_value", "polynomial_stationary", "horner"]
+
+#: Whether :mod:`.span_extrema` reads the moving spans that :func:`span_polynomials` takes as polynomials in ``s``
+#: (``False``: the route of before, every span by :func:`~.solution.evaluate_span` and
+#: :func:`~.stationary.stationary_points`; the tests compare both).
+POLYNOMIAL_ROUTE = True
+#: The degree in ``s`` of ``F_x`` and ``F_N`` on a moving span (``a d`` and ``∫d`` are of degree 6).
+DEGREE = 6
+#: :func:`polynomial_stationary`'s root in ``s`` is held to this many ulp of ``s`` (``brentq``'s ``4 ε`` of the route
+#: of before).
+ROOT_ULPS = 4
+#: At most this many steps of :func:`polynomial_stationary`'s safeguarded Newton iteration (each at least a bisection
+#: of the bracket: 64 halve any bracket of doubles to its ulp).
+NEWTON_STEPS = 64
+
+
+class SpanPolynomials(NamedTuple):
+    """The spans read as polynomials in ``s = √a`` (:func:`span_polynomials`): their indices in ``solution.spans`` and
+    each one's coefficients, lowest power first, of ``F_x`` (``force``) and ``F_N`` (``normal``), rows of matrices
+    ``(spans, DEGREE + 1)`` (N)."""
+
+    indices: list[int]
+    force: np.ndarray
+    normal: np.ndarray
+
+
+def _branch_terms(branch: Branch) -> tuple[np.ndarray, np.ndarray]:
+    """The coefficients in ``s`` (lowest first, :data:`DEGREE` + 1) of the branch's depth ``d = s⁴/R − k s`` and of
+    its integral ``∫_0^a d = s⁶/(3R) − (2/3) k s³`` (9), ``k = √2 √π √Δγ / √E*`` as the branch's relation reads it."""
+    params = branch.params
+    k = math.sqrt(2.0) * math.sqrt(math.pi) * math.sqrt(branch.work) / math.sqrt(params.E_star)
+    depth, integral = np.zeros(DEGREE + 1), np.zeros(DEGREE + 1)
+    depth[1], depth[4] = -k, 1.0 / params.R
+    integral[3], integral[6] = -2.0 / 3.0 * k, 1.0 / (3.0 * params.R)
+    return depth, integral
+
+
+def _takes(solution, span) -> bool:
+    """Whether ``span`` is read as a polynomial in ``s``: moving on the paraboloid's own branch of the half-space, its
+    force a closed form (:class:`~.closed_form.ClosedForce` of a :class:`~.closed_form.Primitive` on that branch, and
+    on the paraboloid's branch of attachment where it reads one) in the radius over its scale, not graded."""
+    if span.regime not in (Regime.GROWING, Regime.SHRINKING) or span.variable is not Variable.RADIUS \
+            or span.grading is not None or type(span.interpolant) is not ClosedForce:
+        return False
+    primitive, branch = span.interpolant.primitive, solution.model.branch(span.regime)
+    return (type(primitive) is Primitive and type(branch) is Branch and primitive.branch is branch
+            and (not primitive.C0 or type(primitive.attach) is Branch))
+
+
+def span_polynomials(solution) -> SpanPolynomials:
+    """The moving spans of ``solution`` that are polynomials in ``s = √a`` and the coefficients of their ``F_x`` and
+    ``F_N`` (module docstring); none on another indenter or medium, in Coulomb's compressed zone's run or where
+    :data:`POLYNOMIAL_ROUTE` is off.
+
+    Parameters
+    ----------
+    solution : PathSolution
+        A continuum run.
+
+    Returns
+    -------
+    SpanPolynomials
+        The spans taken (perhaps none) and their coefficients.
+    """
+    model = solution.model
+    indices = []
+    if POLYNOMIAL_ROUTE and solution.compressed is None and model.profile is None \
+            and type(model.medium) is HalfSpaceMedium:
+        indices = [index for index, span in enumerate(solution.spans) if _takes(solution, span)]
+    force, normal = np.zeros((len(indices), DEGREE + 1)), np.zeros((len(indices), DEGREE + 1))
+    E2, R = 2.0 * model.params.E_star, model.params.R
+    for row, index in enumerate(indices):
+        span = solution.spans[index]
+        closed = span.interpolant
+        primitive = closed.primitive
+        depth, integral = _branch_terms(primitive.branch)
+        area_depth = np.zeros(DEGREE + 1)  # a d = s⁶/R − k s³
+        area_depth[3], area_depth[6] = depth[1], depth[4]
+        # P = A₀ a + A₁ a²/2 + B₀ d + B₁ (a d − ∫d) + C ∫d + C₀ ∫d₀
+        terms = primitive.B0 * depth + primitive.B1 * (area_depth - integral) + primitive.C * integral
+        terms[2] += primitive.A0
+        terms[4] += 0.5 * primitive.A1
+        if primitive.C0:
+            terms = terms + primitive.C0 * _branch_terms(primitive.attach)[1]
+        force[row] = closed.G2 * terms
+        force[row, 0] += closed.force - closed.G2 * closed.origin
+        # F_N = 2E* (a d − a³/(3R)) on the branch (10)
+        normal[row, 3], normal[row, 6] = E2 * depth[1], E2 * (depth[4] - 1.0 / (3.0 * R))
+    return SpanPolynomials(indices, force, normal)
+
+
+def horner(coefficients: np.ndarray, s: np.ndarray) -> np.ndarray:
+    """``Σ c_k s^k`` by Horner's rule, row by row: ``coefficients`` ``(..., rows, DEGREE + 1)`` lowest first, ``s``
+    ``(rows, points)``; element by element, so each value is the one of its row alone.
+
+    Parameters
+    ----------
+    coefficients : numpy.ndarray
+        The coefficients, lowest power first, in the last axis.
+    s : numpy.ndarray
+        The points of each row.
+
+    Returns
+    -------
+    numpy.ndarray
+        The values, ``(..., rows, points)``.
+    """
+    value = np.broadcast_to(coefficients[..., -1:], (*coefficients.shape[:-1], s.shape[-1])).copy()
+    for k in range(coefficients.shape[-1] - 2, -1, -1):
+        value *= s
+        value += coefficients[..., k:k + 1]
+    return value
+
+
+def polynomial_values(polynomials: SpanPolynomials, radii: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``F_x`` and ``F_N`` (N) of the spans of ``polynomials`` at the radii ``radii`` (m; a row per span, in their
+    order), all at once (:func:`horner` of both matrices over ``s = √a``).
+
+    Parameters
+    ----------
+    polynomials : SpanPolynomials
+        The spans' coefficients.
+    radii : numpy.ndarray
+        ``(spans, points)`` radii.
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        ``F_x`` and ``F_N``, each ``(spans, points)``.
+    """
+    values = horner(np.stack([polynomials.force, polynomials.normal]), np.sqrt(radii))
+    return values[0], values[1]
+
+
+def _derivative(coefficients: list[float]) -> list[float]:
+    """The coefficients of the derivative, lowest first."""
+    return [k * c for k, c in enumerate(coefficients)][1:]
+
+
+def polynomial_value(coefficients: list[float], s: float) -> float:
+    """``Σ c_k s^k`` by Horner's rule in Python floats.
+
+    Parameters
+    ----------
+    coefficients : list of float
+        The coefficients, lowest power first.
+    s : float
+        The point.
+
+    Returns
+    -------
+    float
+        The value.
+    """
+    value = 0.0
+    for c in reversed(coefficients):
+        value = value * s + c
+    return value
+
+
+def polynomial_stationary(coefficients: list[float], low: float, high: float) -> list[float]:
+    """The points in ``[low, high]`` (``s``) where the polynomial ``Σ c_k s^k`` is stationary: its derivative read at
+    :data:`~.closed_form.STATIONARY_READINGS` equal parts of the interval (as :meth:`~.closed_form.ClosedForce.stationary`
+    reads a closed form's rate), each change of sign solved by Newton's steps kept inside the bracket of the change
+    (a step leaving it, or not halving it, replaced by a bisection), to :data:`ROOT_ULPS` ulp of ``s``.
+
+    Parameters
+    ----------
+    coefficients : list of float
+        The polynomial's coefficients, lowest power first.
+    low, high : float
+        The interval, ``low <= high``.
+
+    Returns
+    -------
+    list of float
+        The stationary points, increasing (none: monotone there).
+    """
+    slope = _derivative(coefficients)
+    curvature = _derivative(slope)
+    grid = equal_parts(float(low), float(high), STATIONARY_READINGS)
+    rates = [polynomial_value(slope, s) for s in grid]
+    # (a rate zero at a reading counts where it changes sign there, as closed_form's readings count it)
+    roots = [grid[k] for k in range(1, len(grid) - 1) if rates[k] == 0.0 and rates[k - 1] * rates[k + 1] < 0.0]
+    for k in range(len(grid) - 1):
+        if rates[k] * rates[k + 1] < 0.0:
+            roots.append(_newton(slope, curvature, grid[k], grid[k + 1], rates[k]))
+    return sorted(roots)
+
+
+def _newton(slope: list[float], curvature: list[float], low: float, high: float, at_low: float) -> float:
+    """The root of ``slope`` in ``[low, high]`` (of opposite signs at the ends; ``at_low`` its value at ``low``) by
+    safeguarded Newton steps (:func:`polynomial_stationary`)."""
+    s = 0.5 * (low + high)
+    for _ in range(NEWTON_STEPS):
+        value = polynomial_value(slope, s)
+        if value == 0.0:
+            return s
+        if (value > 0.0) == (at_low > 0.0):
+            low = s
+        else:
+            high = s
+        width = high - low
+        if width <= ROOT_ULPS * EPS * abs(s):
+            break
+        derivative = polynomial_value(curvature, s)
+        step = s - value / derivative if derivative != 0.0 else math.nan
+        if low < step < high and abs(step - s) < 0.5 * width:  # (Newton's step: inside, at most half the bracket)
+            if abs(step - s) <= ROOT_ULPS * EPS * abs(step):
+                return step
+            s = step
+        else:  # (else a bisection)
+            s = 0.5 * (low + high)
+    return s
