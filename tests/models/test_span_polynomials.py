@@ -67,26 +67,34 @@ CASES = {
 }
 
 
+def _row_terms(solution, polynomials, row: int, radii: np.ndarray, times: np.ndarray) -> tuple[np.ndarray, ...]:
+    """The terms of ``F_x`` and ``F_N`` of a polynomial span at its scan's radii and times (s from first contact):
+    ``Σ_k |c_k| v^k`` (``v`` its variable), with the parts the route of before sums apart: ``|F₀|`` and ``|2G* P₀|``
+    of a closed form, the depth's segment terms ``2E* a (|d_s| + |v_d| (|t| + |t₀|))`` read at a scan time, a linear
+    force's ``|r| (|t_c| + |t₀|)``: the size the rounding of either route is a share of."""
+    span = solution.spans[polynomials.indices[row]]
+    segment, E2 = span.segment, 2.0 * PAPER.E_star
+    t = solution.t_contact + times
+    variable = np.sqrt(radii) if polynomials.moving[row] else times
+    powers = np.abs(variable)[:, None] ** np.arange(SP.DEGREE + 1)
+    force = np.abs(polynomials.force[row]) @ powers.T
+    normal = np.abs(polynomials.normal[row]) @ powers.T + E2 * radii * (abs(segment.ds) + abs(segment.vd) * (
+        np.abs(t) + abs(segment.t0))) + E2 * radii**3 / (3.0 * PAPER.R)
+    if polynomials.moving[row]:
+        force = force + abs(span.interpolant.force) + abs(span.interpolant.G2 * span.interpolant.origin)
+    elif span.interpolant is not None:
+        force = force + abs(span.interpolant.force) + abs(span.interpolant.rate) * (
+            abs(solution.t_contact) + abs(span.interpolant.t0))
+    return force, normal
+
+
 def _terms(solution, polynomials, quantity: str) -> float:
-    """The largest terms (``Σ_k |c_k| s^k``, with ``|F₀|`` and ``|2G* P₀|`` apart where the route of before sums them
-    apart, and the depth's segment terms ``2E* a (|d_s| + |v_d| (|t| + |t₀|))`` for ``F_N``) of ``quantity`` over every
-    scan point of the polynomial spans: the size the rounding of either route is a share of."""
+    """The largest terms of ``quantity`` (:func:`_row_terms`) over every scan point of the polynomial spans."""
     scan = X.scan_spans(solution)
     largest = 0.0
     for row, index in enumerate(polynomials.indices):
-        span, radii = solution.spans[index], scan.values[index]["contact_radius"]
-        s = np.sqrt(radii)
-        powers = s[:, None] ** np.arange(SP.DEGREE + 1)
-        if quantity == "tangential_force":
-            closed = span.interpolant
-            terms = np.abs(polynomials.force[row, 1:]) @ powers[:, 1:].T + abs(closed.force) + \
-                abs(closed.G2 * closed.origin)
-        else:
-            segment = span.segment
-            times = solution.t_contact + scan.times[index]
-            terms = np.abs(polynomials.normal[row]) @ powers.T + 2.0 * PAPER.E_star * radii * (
-                abs(segment.ds) + abs(segment.vd) * (np.abs(times) + abs(segment.t0)))
-        largest = max(largest, float(np.max(terms)))
+        terms = _row_terms(solution, polynomials, row, scan.values[index]["contact_radius"], scan.times[index])
+        largest = max(largest, float(np.max(terms[0 if quantity == "tangential_force" else 1])))
     return largest
 
 
@@ -119,15 +127,8 @@ def test_the_polynomial_scan_is_the_scan_of_before_to_rounding(case, monkeypatch
             for name in got:
                 np.testing.assert_array_equal(got[name], expected[name], err_msg=name)
             continue
-        row, span = polynomials.indices.index(index), solution.spans[index]
-        s = np.sqrt(got["contact_radius"])
-        powers = s[:, None] ** np.arange(SP.DEGREE + 1)
-        closed = span.interpolant
-        force_terms = np.abs(polynomials.force[row, 1:]) @ powers[:, 1:].T + abs(closed.force) + \
-            abs(closed.G2 * closed.origin)
-        times = solution.t_contact + new.times[index]
-        normal_terms = np.abs(polynomials.normal[row]) @ powers.T + 2.0 * PAPER.E_star * got["contact_radius"] * (
-            abs(span.segment.ds) + abs(span.segment.vd) * (np.abs(times) + abs(span.segment.t0)))
+        force_terms, normal_terms = _row_terms(solution, polynomials, polynomials.indices.index(index),
+                                               got["contact_radius"], new.times[index])
         assert np.all(np.abs(got["tangential_force"] - expected["tangential_force"]) <= SCAN_ULPS * EPS * force_terms)
         assert np.all(np.abs(got["normal_force"] - expected["normal_force"]) <= SCAN_ULPS * EPS * normal_terms)
 
@@ -159,8 +160,8 @@ def test_the_polynomial_extrema_are_those_of_before_to_rounding(case, monkeypatc
 def _time_tolerance(solution, polynomials, quantity: str, time: float, tolerance: float) -> float:
     """What a stationary point's time may move by, at ``time`` (s from first contact) of a polynomial span."""
     t = solution.t_contact + time
-    index = next(index for index in polynomials.indices
-                 if solution.spans[index].t_start <= t <= solution.spans[index].t_end)
+    index = next(index for index, moving in zip(polynomials.indices, polynomials.moving)
+                 if moving and solution.spans[index].t_start <= t <= solution.spans[index].t_end)
     span, row = solution.spans[index], polynomials.indices.index(index)
     branch = solution.model.branch(span.regime)
     a = branch.radius(max(float(span.segment.d(t)), branch.jump_off_depth), 1e-14)
@@ -245,3 +246,32 @@ def test_horner_of_rows_is_each_rows_own():
         reference = np.polynomial.polynomial.polyval(s[row], coefficients[row])
         terms = np.abs(coefficients[row]) @ (s[row][None, :] ** np.arange(SP.DEGREE + 1)[:, None])
         assert np.all(np.abs(together[row] - reference) <= 2 * 2 * SP.DEGREE * EPS * terms)
+
+
+@pytest.mark.parametrize("case", ["A 20°", "B 20°", "B 30°", "B 60°", "zigzag", "reciprocating"])
+def test_the_proof_of_no_stationary_point_changes_no_extremum(case, monkeypatch):
+    """``polynomial_stationary`` skips its readings where the Taylor shift proves the derivative keeps its sign
+    (``_root_free``): every extremum is the one of the readings everywhere, bit for bit."""
+    solution, _ = _run(case)
+    found = solution_extrema(solution)
+    monkeypatch.setattr(SP, "_root_free", lambda slope, low, high: False)
+    assert solution_extrema(solution) == found
+
+
+def test_the_proof_of_no_root_holds_where_it_is_given():
+    """``_root_free`` on random polynomials of degree 5 and brackets about their roots and away from them: where it
+    answers ``True`` the derivative keeps its sign at 2001 points of the bracket, and it answers ``True`` on brackets
+    away from every root (it is not vacuous)."""
+    rng = np.random.default_rng(5)
+    proven = 0
+    for _ in range(400):
+        roots = rng.uniform(-1.0, 1.0, size=5)
+        slope = np.polynomial.polynomial.polyfromroots(roots) * rng.uniform(0.5, 2.0)
+        low = rng.uniform(-1.2, 1.0)
+        high = low + 10.0 ** rng.uniform(-6.0, -0.5)
+        if SP._root_free(slope.tolist(), low, high):
+            proven += 1
+            values = np.polynomial.polynomial.polyval(np.linspace(low, high, 2001), slope)
+            assert np.all(values > 0) or np.all(values < 0)
+            assert not np.any((roots >= low) & (roots <= high))
+    assert proven > 100

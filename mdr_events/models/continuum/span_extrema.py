@@ -11,6 +11,10 @@ from typing import NamedTuple
 import numpy as np
 from scipy import optimize
 
+from mdr_events.memo import kept
+from mdr_events.parameters import Parameters
+
+from .branch import Branch
 from .graded import span_variable
 from .solution import (PathSolution, _compressed_zone, _fill_normal_force, _fill_tangential_force, _pinned_kinematics,
                        evaluate_span)
@@ -20,7 +24,8 @@ from .span_polynomials import (SpanPolynomials, polynomial_stationary, polynomia
                                polynomial_value)
 from .stationary import _time_of_radius, never_stationary, stationary_points
 
-__all__ = ["EXTREMUM_QUANTITIES", "EXTREMUM_GRID", "EXTREMUM_TIE", "EXTREMUM_XTOL", "ExtremumScan", "ScanMatrix",
+__all__ = ["EXTREMUM_QUANTITIES", "EXTREMUM_GRID", "EXTREMUM_TIE", "EXTREMUM_XTOL", "FOLD_RADII_KEPT", "ExtremumScan",
+           "ScanMatrix",
            "extremum", "scan_spans", "within_tie"]
 
 #: Quantities :func:`extremum` finds the extremes of; the means are per contact area ``π a²``.
@@ -33,6 +38,9 @@ EXTREMUM_TIE = 1e-12
 #: Span-relative time accuracy of the refined extremum; the value is then exact to rounding
 #: (it is flat there: its error is second order in the time error).
 EXTREMUM_XTOL = 1e-12
+#: How many of the paraboloid's radii at its jump-off depth (:func:`_fold_radius`) the scan keeps by material, work
+#: and tolerance.
+FOLD_RADII_KEPT = 16
 
 
 def within_tie(value: float, best: float, size: float) -> bool:
@@ -138,8 +146,9 @@ def scan_spans(solution: PathSolution) -> ExtremumScan:
     of each radius that of its depth on the branch, which needs no root).
 
     The grids of all spans are built at once (:func:`_scan_grids`: each branch's depths in one call, the grids as the
-    rows of one matrix). The moving spans of the paraboloid whose force is a closed form are polynomials in ``√a``
-    (:func:`~.span_polynomials.span_polynomials`): their ``F_x`` and ``F_N`` read at once by Horner's rule over their
+    rows of one matrix). The spans of the paraboloid on the half-space that are polynomials (a moving one whose force
+    is a closed form, in ``√a``; a pinned one whose force is constant or linear, in time:
+    :func:`~.span_polynomials.span_polynomials`): their ``F_x`` and ``F_N`` read at once by Horner's rule over their
     coefficients (:func:`~.span_polynomials.polynomial_values`, to rounding the values of the route of before); every
     other span's kinematics by :func:`~.solution.evaluate_span`, ``F_x`` of all of them by the kinds of their
     interpolants (:func:`_fill_tangential_force`) and ``F_N`` in one call (:func:`_fill_normal_force`), each value the
@@ -153,25 +162,31 @@ def scan_spans(solution: PathSolution) -> ExtremumScan:
     for index, grid in rest.items():
         values[index] = pinned[index] if index in pinned else \
             evaluate_span(solution, index, grid, sliding=False, radii=radii[index], normal=False, tangential=False)
-    _polynomial_scan(polynomials, radii, values)
+    _polynomial_scan(solution, polynomials, grids, radii, values)
     _fill_tangential_force(solution, list(range(len(grids))), grids, values)
     _fill_normal_force(solution.model, values)
     return ExtremumScan(grids, values, {}, polynomials)
 
 
-def _polynomial_scan(polynomials: SpanPolynomials, radii: list, values: list) -> None:
+def _polynomial_scan(solution: PathSolution, polynomials: SpanPolynomials, grids: list, radii: list,
+                     values: list) -> None:
     """The scan's values of the spans of ``polynomials`` (the radius, ``F_x``, ``F_N``) written into ``values`` at
-    their indices, the spans of as many points at once (:func:`~.span_polynomials.polynomial_values`)."""
+    their indices, the spans of as many points at once (:func:`~.span_polynomials.polynomial_values`); a pinned
+    span's radius its own, repeated."""
+    spans = solution.spans
+    radii = [radii[index] if moving else np.full(len(grids[index]), spans[index].pinned_radius)
+             for index, moving in zip(polynomials.indices, polynomials.moving)]
     by_length: dict[int, list[int]] = {}
     for row, index in enumerate(polynomials.indices):
-        by_length.setdefault(len(radii[index]), []).append(row)
+        by_length.setdefault(len(grids[index]), []).append(row)
     for rows in by_length.values():
-        members = [polynomials.indices[row] for row in rows]
-        part = polynomials if len(rows) == len(polynomials.indices) else \
-            SpanPolynomials(members, polynomials.force[rows], polynomials.normal[rows])
-        force, normal = polynomial_values(part, np.array([radii[index] for index in members]))
-        for k, index in enumerate(members):
-            values[index] = {"contact_radius": radii[index], "normal_force": normal[k], "tangential_force": force[k]}
+        part = polynomials if len(rows) == len(polynomials.indices) else SpanPolynomials(
+            [polynomials.indices[row] for row in rows], [polynomials.moving[row] for row in rows],
+            polynomials.force[rows], polynomials.normal[rows])
+        force, normal = polynomial_values(part, np.array([radii[row] for row in rows]),
+                                          np.array([grids[index] for index in part.indices]))
+        for k, (row, index) in enumerate(zip(rows, part.indices)):
+            values[index] = {"contact_radius": radii[row], "normal_force": normal[k], "tangential_force": force[k]}
 
 
 def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarray | None]]:
@@ -200,7 +215,9 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
             depth = max(float(spans[index].segment.d(t_contact + t)), branch.jump_off_depth)
             key = root_key(depth, rtol)
             if key not in roots:  # (the solve's root of this depth where it took one: the same number)
-                roots[key] = branch.radius(depth, rtol)
+                roots[key] = _fold_radius(branch.params, float(branch.work), rtol) \
+                    if depth == branch.jump_off_depth and type(branch) is Branch and branch.work != 0.0 \
+                    else branch.radius(depth, rtol)
             return roots[key]
 
         for index in members:
@@ -225,6 +242,15 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
     return grids, radii
 
 
+@kept(FOLD_RADII_KEPT)
+def _fold_radius(params: Parameters, work: float, rtol: float) -> float:
+    """:meth:`~.branch.Branch.radius` of the paraboloid's branch of ``params`` and ``work`` at its jump-off depth (the
+    fold, where a run that ends at pull-off ends: the iteration meets a double root there and takes some thirty
+    steps), kept by the exact values (:func:`~mdr_events.memo.kept`), the same number bit for bit."""
+    branch = Branch(params, work)
+    return branch.radius(branch.jump_off_depth, rtol)
+
+
 def _moving_grids(solution: PathSolution, members: list[int], matrix: np.ndarray, grids: list, radii: list) -> None:
     """:func:`_scan_grids` of the moving spans ``members`` (of either branch) with their radii as the rows of
     ``matrix``: the depths of each branch's inner radii in one call of its :meth:`~.branch.Branch.depths` (element by
@@ -247,7 +273,7 @@ def _moving_grids(solution: PathSolution, members: list[int], matrix: np.ndarray
          [spans[index].t_start - t_contact for index in members],
          [spans[index].t_end - t_contact for index in members]], dtype=float)[:, :, None]
     inner = (t0 + (depths - ds) / vd) - t_contact  # (Segment.time_at_depth, row by row)
-    times = np.concatenate([lower, np.clip(inner, lower, upper), upper], axis=1)
+    times = np.concatenate([lower, np.minimum(np.maximum(inner, lower), upper), upper], axis=1)  # (np.clip)
     np.maximum.accumulate(times, axis=1, out=times)
     for row, index in enumerate(members):
         grids[index], radii[index] = times[row], matrix[row]
@@ -368,7 +394,8 @@ def _refined(solution: PathSolution, scan: ExtremumScan, index: int, quantity: s
     radii = scan.values[index]["contact_radius"]
     bracket, radii = (float(times[ends[0]]), float(times[ends[1]])), (float(radii[ends[0]]), float(radii[ends[1]]))
     polynomials = scan.polynomials
-    if polynomials is not None and index in polynomials.indices and quantity in ("normal_force", "tangential_force"):
+    if polynomials is not None and index in polynomials.indices and quantity in ("normal_force", "tangential_force") \
+            and polynomials.moving[polynomials.indices.index(index)]:
         points = _polynomial_points(solution, index, polynomials, quantity, bracket, radii)
     else:
         points = stationary_points(solution, index, quantity, bracket, radii)
