@@ -11,18 +11,16 @@ from typing import NamedTuple
 import numpy as np
 from scipy import optimize
 
-from mdr_events.memo import kept
 from mdr_events.parameters import Parameters
 
 from .branch import Branch
 from .graded import span_variable
 from .solution import (PathSolution, _compressed_zone, _fill_normal_force, _fill_tangential_force, _pinned_kinematics,
                        evaluate_span)
+from .span_polynomials import SpanPolynomials, polynomial_points, polynomial_scan, span_polynomials
 from .span_record import Span, Variable, root_key
 from .state import Regime
-from .span_polynomials import (SpanPolynomials, polynomial_stationary, polynomial_values, span_polynomials,
-                               polynomial_value)
-from .stationary import _time_of_radius, never_stationary, stationary_points
+from .stationary import never_stationary, stationary_points
 
 __all__ = ["EXTREMUM_QUANTITIES", "EXTREMUM_GRID", "EXTREMUM_TIE", "EXTREMUM_XTOL", "FOLD_RADII_KEPT", "ExtremumScan",
            "ScanMatrix",
@@ -162,31 +160,10 @@ def scan_spans(solution: PathSolution) -> ExtremumScan:
     for index, grid in rest.items():
         values[index] = pinned[index] if index in pinned else \
             evaluate_span(solution, index, grid, sliding=False, radii=radii[index], normal=False, tangential=False)
-    _polynomial_scan(solution, polynomials, grids, radii, values)
+    polynomial_scan(solution, polynomials, grids, radii, values)
     _fill_tangential_force(solution, list(range(len(grids))), grids, values)
     _fill_normal_force(solution.model, values)
     return ExtremumScan(grids, values, {}, polynomials)
-
-
-def _polynomial_scan(solution: PathSolution, polynomials: SpanPolynomials, grids: list, radii: list,
-                     values: list) -> None:
-    """The scan's values of the spans of ``polynomials`` (the radius, ``F_x``, ``F_N``) written into ``values`` at
-    their indices, the spans of as many points at once (:func:`~.span_polynomials.polynomial_values`); a pinned
-    span's radius its own, repeated."""
-    spans = solution.spans
-    radii = [radii[index] if moving else np.full(len(grids[index]), spans[index].pinned_radius)
-             for index, moving in zip(polynomials.indices, polynomials.moving)]
-    by_length: dict[int, list[int]] = {}
-    for row, index in enumerate(polynomials.indices):
-        by_length.setdefault(len(grids[index]), []).append(row)
-    for rows in by_length.values():
-        part = polynomials if len(rows) == len(polynomials.indices) else SpanPolynomials(
-            [polynomials.indices[row] for row in rows], [polynomials.moving[row] for row in rows],
-            polynomials.force[rows], polynomials.normal[rows])
-        force, normal = polynomial_values(part, np.array([radii[row] for row in rows]),
-                                          np.array([grids[index] for index in part.indices]))
-        for k, (row, index) in enumerate(zip(rows, part.indices)):
-            values[index] = {"contact_radius": radii[row], "normal_force": normal[k], "tangential_force": force[k]}
 
 
 def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarray | None]]:
@@ -215,7 +192,7 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
             depth = max(float(spans[index].segment.d(t_contact + t)), branch.jump_off_depth)
             key = root_key(depth, rtol)
             if key not in roots:  # (the solve's root of this depth where it took one: the same number)
-                roots[key] = _fold_radius(branch.params, float(branch.work), rtol) \
+                roots[key] = _fold_radius(branch, rtol) \
                     if depth == branch.jump_off_depth and type(branch) is Branch and branch.work != 0.0 \
                     else branch.radius(depth, rtol)
             return roots[key]
@@ -242,13 +219,24 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
     return grids, radii
 
 
-@kept(FOLD_RADII_KEPT)
-def _fold_radius(params: Parameters, work: float, rtol: float) -> float:
-    """:meth:`~.branch.Branch.radius` of the paraboloid's branch of ``params`` and ``work`` at its jump-off depth (the
-    fold, where a run that ends at pull-off ends: the iteration meets a double root there and takes some thirty
-    steps), kept by the exact values (:func:`~mdr_events.memo.kept`), the same number bit for bit."""
-    branch = Branch(params, work)
-    return branch.radius(branch.jump_off_depth, rtol)
+def _fold_radius(branch: Branch, rtol: float) -> float:
+    """:meth:`~.branch.Branch.radius` of the paraboloid's ``branch`` at its jump-off depth (the fold, where a run that
+    ends at pull-off ends: the iteration meets a double root there and takes some thirty steps), kept for the next run
+    of the same parameters (the same object: a run's job keeps it, :func:`~mdr_events.memo.kept`), the same work and
+    tolerance: the same number bit for bit (:data:`FOLD_RADII_KEPT` of them, the oldest dropped first)."""
+    key = (id(branch.params), branch.work, rtol)
+    found = _FOLDS.get(key)
+    if found is not None and found[0] is branch.params:
+        return found[1]
+    radius = branch.radius(branch.jump_off_depth, rtol)
+    if len(_FOLDS) >= FOLD_RADII_KEPT:
+        del _FOLDS[next(iter(_FOLDS))]
+    _FOLDS[key] = (branch.params, radius)
+    return radius
+
+
+#: :func:`_fold_radius`'s radii: (the parameters' ``id``, the work, the tolerance) -> (the parameters, the radius).
+_FOLDS: dict[tuple[int, float, float], tuple[Parameters, float]] = {}
 
 
 def _moving_grids(solution: PathSolution, members: list[int], matrix: np.ndarray, grids: list, radii: list) -> None:
@@ -396,7 +384,7 @@ def _refined(solution: PathSolution, scan: ExtremumScan, index: int, quantity: s
     polynomials = scan.polynomials
     if polynomials is not None and index in polynomials.indices and quantity in ("normal_force", "tangential_force") \
             and polynomials.moving[polynomials.indices.index(index)]:
-        points = _polynomial_points(solution, index, polynomials, quantity, bracket, radii)
+        points = polynomial_points(solution, index, polynomials, quantity, bracket, radii)
     else:
         points = stationary_points(solution, index, quantity, bracket, radii)
     if points is None:
@@ -406,21 +394,6 @@ def _refined(solution: PathSolution, scan: ExtremumScan, index: int, quantity: s
         if sign * found > value and not within_tie(value, sign * found, size):
             time, value = found_time, sign * found
     return time, value
-
-
-def _polynomial_points(solution: PathSolution, index: int, polynomials: SpanPolynomials, quantity: str,
-                       times: tuple[float, float], radii: tuple[float, float]) -> list[tuple[float, float]]:
-    """:func:`~.stationary.stationary_points` of a span read as a polynomial in ``s = √a`` (``F_x`` or ``F_N``): the
-    stationary points of its coefficients between the bracket's radii (:func:`~.span_polynomials.polynomial_stationary`),
-    each with its value and the time of its radius (that of its depth on the branch), kept within the bracket."""
-    row = polynomials.indices.index(index)
-    coefficients = (polynomials.force if quantity == "tangential_force" else polynomials.normal)[row].tolist()
-    low, high = sorted(math.sqrt(radius) for radius in radii)
-    points = []
-    for s in polynomial_stationary(coefficients, low, high):
-        time = _time_of_radius(solution, solution.spans[index], s * s)
-        points.append((min(max(time, times[0]), times[1]), polynomial_value(coefficients, s)))
-    return points
 
 
 def _scan_matrices(scan: ExtremumScan, quantities: tuple[str, ...]) -> dict[str, ScanMatrix]:

@@ -32,11 +32,13 @@ from .closed_form import STATIONARY_READINGS, ClosedForce, Primitive, equal_part
 from .media import HalfSpaceMedium
 from .span import LinearForce
 from .span_record import Variable
+from .stationary import _time_of_radius
 from .state import Regime
 from .tolerances import EPS
 
 __all__ = ["POLYNOMIAL_ROUTE", "DEGREE", "ROOT_ULPS", "SHIFT_ULPS", "NEWTON_STEPS", "SpanPolynomials",
-           "span_polynomials", "polynomial_values", "polynomial_value", "polynomial_stationary", "horner"]
+           "span_polynomials", "polynomial_values", "polynomial_value", "polynomial_stationary", "horner",
+           "polynomial_scan", "polynomial_points"]
 
 #: Whether :mod:`.span_extrema` reads the moving spans that :func:`span_polynomials` takes as polynomials in ``s``
 #: (``False``: the route of before, every span by :func:`~.solution.evaluate_span` and
@@ -312,3 +314,73 @@ def _newton(slope: list[float], curvature: list[float], low: float, high: float,
         else:  # (else a bisection)
             s = 0.5 * (low + high)
     return s
+
+
+def polynomial_scan(solution, polynomials: SpanPolynomials, grids: list, radii: list, values: list) -> None:
+    """The extrema's scan (:func:`~.span_extrema.scan_spans`) of the spans of ``polynomials``: the radius, ``F_x``
+    and ``F_N`` written into ``values`` at their indices, the spans of as many points at once
+    (:func:`polynomial_values`); a pinned span's radius its own, repeated.
+
+    Parameters
+    ----------
+    solution : PathSolution
+        The run.
+    polynomials : SpanPolynomials
+        Its spans read as polynomials (:func:`span_polynomials`).
+    grids : list of numpy.ndarray
+        Every span's scan times (s from first contact).
+    radii : list
+        Every moving span's scan radii (m; ``None`` elsewhere).
+    values : list
+        Every span's scan (a dict of its quantities by name), filled here at the spans of ``polynomials``.
+    """
+    spans = solution.spans
+    radii = [radii[index] if moving else np.full(len(grids[index]), spans[index].pinned_radius)
+             for index, moving in zip(polynomials.indices, polynomials.moving)]
+    by_length: dict[int, list[int]] = {}
+    for row, index in enumerate(polynomials.indices):
+        by_length.setdefault(len(grids[index]), []).append(row)
+    for rows in by_length.values():
+        part = polynomials if len(rows) == len(polynomials.indices) else SpanPolynomials(
+            [polynomials.indices[row] for row in rows], [polynomials.moving[row] for row in rows],
+            polynomials.force[rows], polynomials.normal[rows])
+        force, normal = polynomial_values(part, np.array([radii[row] for row in rows]),
+                                          np.array([grids[index] for index in part.indices]))
+        for k, (row, index) in enumerate(zip(rows, part.indices)):
+            values[index] = {"contact_radius": radii[row], "normal_force": normal[k], "tangential_force": force[k]}
+
+
+def polynomial_points(solution, index: int, polynomials: SpanPolynomials, quantity: str, times: tuple[float, float],
+                      radii: tuple[float, float]) -> list[tuple[float, float]]:
+    """:func:`~.stationary.stationary_points` of a span read as a polynomial in ``s = √a`` (``F_x`` or ``F_N``): the
+    stationary points of its coefficients between the bracket's radii (:func:`polynomial_stationary`),
+    each with its value and the time of its radius (that of its depth on the branch), kept within the bracket.
+
+    Parameters
+    ----------
+    solution : PathSolution
+        The run.
+    index : int
+        A moving span of ``polynomials``.
+    polynomials : SpanPolynomials
+        The run's spans read as polynomials.
+    quantity : str
+        ``"normal_force"`` or ``"tangential_force"``.
+    times : tuple of float
+        The bracket's ends (s from first contact), increasing, within the span.
+    radii : tuple of float
+        The contact radius at those times (m).
+
+    Returns
+    -------
+    list of (float, float)
+        ``(time, value)`` of each stationary point inside the bracket (none: monotone there).
+    """
+    row = polynomials.indices.index(index)
+    coefficients = (polynomials.force if quantity == "tangential_force" else polynomials.normal)[row].tolist()
+    low, high = sorted(math.sqrt(radius) for radius in radii)
+    points = []
+    for s in polynomial_stationary(coefficients, low, high):
+        time = _time_of_radius(solution, solution.spans[index], s * s)
+        points.append((min(max(time, times[0]), times[1]), polynomial_value(coefficients, s)))
+    return points
