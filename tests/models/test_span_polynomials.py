@@ -6,6 +6,7 @@ indenter, a layer, the rate law's own run, Coulomb's compressed zone)."""
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 
 import numpy as np
@@ -98,7 +99,9 @@ def _terms(solution, polynomials, quantity: str) -> float:
     return largest
 
 
+@functools.lru_cache(maxsize=None)
 def _run(case):
+    """A case's run (shared by the tests: neither route changes a solution) and whether it has polynomial spans."""
     params, path, options, taken = CASES[case]()
     return solve_path(params, path, **options), taken
 
