@@ -1,7 +1,9 @@
 """The extrema's scan and the fill of a run's samples built for all spans at once (issue 28: one pass over the spans)
 against the routes span by span they replace, kept here as references: the same values bit for bit, since every
 value is computed by the same operations element by element (a call over several spans' points gives each point the
-value a call over its span's alone gives)."""
+value a call over its span's alone gives). The moving spans read as polynomials in ``√a`` (``span_polynomials``) are
+another route, equal to these to rounding alone: ``test_span_polynomials.py`` compares them; here the route of
+before is taken throughout (``POLYNOMIAL_ROUTE`` off)."""
 
 from __future__ import annotations
 
@@ -16,13 +18,20 @@ from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum import solution as S
 from mdr_events.models.continuum import span_extrema as X
-from mdr_events.models.continuum import closed_form, extrema, stationary
+from mdr_events.models.continuum import closed_form, extrema, span_polynomials, stationary
 from mdr_events.models.continuum.dense import force_values
 from mdr_events.models.continuum.state import Regime
 from mdr_events.models.paths import exit_depth
 from mdr_events.theory import analytic
 
 PAPER = me.Parameters.paper()
+
+
+@pytest.fixture(autouse=True)
+def _route_of_before(monkeypatch):
+    """Every span read by the route of before (the routes compared here bit for bit are those of the other spans)."""
+    monkeypatch.setattr(span_polynomials, "POLYNOMIAL_ROUTE", False)
+
 HERTZ = PAPER.replace(dgamma0=0.0, dgamma1=0.0)
 ZIGZAG = [(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)]
 

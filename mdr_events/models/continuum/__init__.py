@@ -54,6 +54,8 @@ module                     one idea
 :mod:`.extrema`            the exact extrema of ``F_N``, ``F_x`` and ``A`` over the run, not from output samples
 :mod:`.stationary`         where one span's quantity is stationary: the roots of its derivative (dense output,
                            the branch's closed forms)
+:mod:`.span_polynomials`   the paraboloid's spans as polynomials (moving: in ``√a``; pinned: in time): the
+                           extrema's scan by Horner's rule over all of them, their stationary points
 =========================  ===================================================================
 
 On each straight path segment ``d(t)`` and ``x(t)`` are linear. The contact radius ``a(t)`` is

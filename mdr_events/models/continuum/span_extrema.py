@@ -11,14 +11,19 @@ from typing import NamedTuple
 import numpy as np
 from scipy import optimize
 
+from mdr_events.parameters import Parameters
+
+from .branch import Branch
 from .graded import span_variable
 from .solution import (PathSolution, _compressed_zone, _fill_normal_force, _fill_tangential_force, _pinned_kinematics,
                        evaluate_span)
+from .span_polynomials import SpanPolynomials, polynomial_points, polynomial_scan, span_polynomials
 from .span_record import Span, Variable, root_key
 from .state import Regime
 from .stationary import never_stationary, stationary_points
 
-__all__ = ["EXTREMUM_QUANTITIES", "EXTREMUM_GRID", "EXTREMUM_TIE", "EXTREMUM_XTOL", "ExtremumScan", "ScanMatrix",
+__all__ = ["EXTREMUM_QUANTITIES", "EXTREMUM_GRID", "EXTREMUM_TIE", "EXTREMUM_XTOL", "FOLD_RADII_KEPT", "ExtremumScan",
+           "ScanMatrix",
            "extremum", "scan_spans", "within_tie"]
 
 #: Quantities :func:`extremum` finds the extremes of; the means are per contact area ``π a²``.
@@ -31,6 +36,9 @@ EXTREMUM_TIE = 1e-12
 #: Span-relative time accuracy of the refined extremum; the value is then exact to rounding
 #: (it is flat there: its error is second order in the time error).
 EXTREMUM_XTOL = 1e-12
+#: How many of the paraboloid's radii at its jump-off depth (:func:`_fold_radius`) the scan keeps by material, work
+#: and tolerance.
+FOLD_RADII_KEPT = 16
 
 
 def within_tie(value: float, best: float, size: float) -> bool:
@@ -74,11 +82,14 @@ class ExtremumScan(NamedTuple):
     """Every span sampled at :data:`EXTREMUM_GRID` times (s from first contact), with the quantities
     :func:`extremum` reads (the sliding fraction left out); ``matrices``: each quantity's scan reduced to what both
     extremes read of it (:class:`ScanMatrix`), filled as :func:`extremum` asks or at once by :meth:`prepare`
-    (``None``: none kept)."""
+    (``None``: none kept); ``polynomials``: the spans read as polynomials in ``√a``
+    (:func:`~.span_polynomials.span_polynomials`; ``None``: none), which :func:`extremum` refines by their
+    coefficients."""
 
     times: list[np.ndarray]
     values: list[dict[str, np.ndarray]]
     matrices: dict[str, "ScanMatrix"] | None = None
+    polynomials: SpanPolynomials | None = None
 
     def prepare(self, quantities: tuple[str, ...]) -> None:
         """Reduce the scan of several quantities at once (:func:`_scan_matrices`: one array for all of them and both
@@ -133,17 +144,26 @@ def scan_spans(solution: PathSolution) -> ExtremumScan:
     of each radius that of its depth on the branch, which needs no root).
 
     The grids of all spans are built at once (:func:`_scan_grids`: each branch's depths in one call, the grids as the
-    rows of one matrix), then each span's kinematics (:func:`~.solution.evaluate_span`), ``F_x`` of all of them by the kinds of
-    their interpolants (:func:`_fill_tangential_force`) and ``F_N`` in one call (:func:`_fill_normal_force`); every
-    value is the one a span alone would give."""
+    rows of one matrix). The spans of the paraboloid on the half-space that are polynomials (a moving one whose force
+    is a closed form, in ``√a``; a pinned one whose force is constant or linear, in time:
+    :func:`~.span_polynomials.span_polynomials`): their ``F_x`` and ``F_N`` read at once by Horner's rule over their
+    coefficients (:func:`~.span_polynomials.polynomial_values`, to rounding the values of the route of before); every
+    other span's kinematics by :func:`~.solution.evaluate_span`, ``F_x`` of all of them by the kinds of their
+    interpolants (:func:`_fill_tangential_force`) and ``F_N`` in one call (:func:`_fill_normal_force`), each value the
+    one a span alone would give."""
     grids, radii = _scan_grids(solution)
-    pinned = _pinned_kinematics(solution, dict(enumerate(grids))) if solution.compressed is None else {}
-    values = [pinned[index] if index in pinned else
-              evaluate_span(solution, index, grid, sliding=False, radii=radius, normal=False, tangential=False)
-              for index, (grid, radius) in enumerate(zip(grids, radii))]
+    polynomials = span_polynomials(solution)
+    taken = set(polynomials.indices)
+    rest = {index: grid for index, grid in enumerate(grids) if index not in taken}
+    pinned = _pinned_kinematics(solution, rest) if solution.compressed is None else {}
+    values: list = [None] * len(grids)
+    for index, grid in rest.items():
+        values[index] = pinned[index] if index in pinned else \
+            evaluate_span(solution, index, grid, sliding=False, radii=radii[index], normal=False, tangential=False)
+    polynomial_scan(solution, polynomials, grids, radii, values)
     _fill_tangential_force(solution, list(range(len(grids))), grids, values)
     _fill_normal_force(solution.model, values)
-    return ExtremumScan(grids, values, {})
+    return ExtremumScan(grids, values, {}, polynomials)
 
 
 def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarray | None]]:
@@ -172,7 +192,9 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
             depth = max(float(spans[index].segment.d(t_contact + t)), branch.jump_off_depth)
             key = root_key(depth, rtol)
             if key not in roots:  # (the solve's root of this depth where it took one: the same number)
-                roots[key] = branch.radius(depth, rtol)
+                roots[key] = _fold_radius(branch, rtol) \
+                    if depth == branch.jump_off_depth and type(branch) is Branch and branch.work != 0.0 \
+                    else branch.radius(depth, rtol)
             return roots[key]
 
         for index in members:
@@ -197,6 +219,26 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
     return grids, radii
 
 
+def _fold_radius(branch: Branch, rtol: float) -> float:
+    """:meth:`~.branch.Branch.radius` of the paraboloid's ``branch`` at its jump-off depth (the fold, where a run that
+    ends at pull-off ends: the iteration meets a double root there and takes some thirty steps), kept for the next run
+    of the same parameters (the same object: a run's job keeps it, :func:`~mdr_events.memo.kept`), the same work and
+    tolerance: the same number bit for bit (:data:`FOLD_RADII_KEPT` of them, the oldest dropped first)."""
+    key = (id(branch.params), branch.work, rtol)
+    found = _FOLDS.get(key)
+    if found is not None and found[0] is branch.params:
+        return found[1]
+    radius = branch.radius(branch.jump_off_depth, rtol)
+    if len(_FOLDS) >= FOLD_RADII_KEPT:
+        del _FOLDS[next(iter(_FOLDS))]
+    _FOLDS[key] = (branch.params, radius)
+    return radius
+
+
+#: :func:`_fold_radius`'s radii: (the parameters' ``id``, the work, the tolerance) -> (the parameters, the radius).
+_FOLDS: dict[tuple[int, float, float], tuple[Parameters, float]] = {}
+
+
 def _moving_grids(solution: PathSolution, members: list[int], matrix: np.ndarray, grids: list, radii: list) -> None:
     """:func:`_scan_grids` of the moving spans ``members`` (of either branch) with their radii as the rows of
     ``matrix``: the depths of each branch's inner radii in one call of its :meth:`~.branch.Branch.depths` (element by
@@ -219,7 +261,7 @@ def _moving_grids(solution: PathSolution, members: list[int], matrix: np.ndarray
          [spans[index].t_start - t_contact for index in members],
          [spans[index].t_end - t_contact for index in members]], dtype=float)[:, :, None]
     inner = (t0 + (depths - ds) / vd) - t_contact  # (Segment.time_at_depth, row by row)
-    times = np.concatenate([lower, np.clip(inner, lower, upper), upper], axis=1)
+    times = np.concatenate([lower, np.minimum(np.maximum(inner, lower), upper), upper], axis=1)  # (np.clip)
     np.maximum.accumulate(times, axis=1, out=times)
     for row, index in enumerate(members):
         grids[index], radii[index] = times[row], matrix[row]
@@ -338,8 +380,13 @@ def _refined(solution: PathSolution, scan: ExtremumScan, index: int, quantity: s
     time = float(times[i])
     ends = (max(i - 1, 0), min(i + 1, len(times) - 1))
     radii = scan.values[index]["contact_radius"]
-    points = stationary_points(solution, index, quantity, (float(times[ends[0]]), float(times[ends[1]])),
-                               (float(radii[ends[0]]), float(radii[ends[1]])))
+    bracket, radii = (float(times[ends[0]]), float(times[ends[1]])), (float(radii[ends[0]]), float(radii[ends[1]]))
+    polynomials = scan.polynomials
+    if polynomials is not None and index in polynomials.indices and quantity in ("normal_force", "tangential_force") \
+            and polynomials.moving[polynomials.indices.index(index)]:
+        points = polynomial_points(solution, index, polynomials, quantity, bracket, radii)
+    else:
+        points = stationary_points(solution, index, quantity, bracket, radii)
     if points is None:
         points = [_bounded_search(solution, index, quantity, sign, times, i)]
     for found_time, found in points:
