@@ -227,3 +227,31 @@ def test_simulate_by_either_route_agrees(label, monkeypatch):
                 np.testing.assert_array_equal(variable.values, np.where(area > 0, force / area, np.nan))
         else:
             assert np.asarray(variable.values).tobytes() == np.asarray(reference[name].values).tobytes(), name
+
+
+def _span_rows_of_index(solution, times):
+    """The rows of each span as ``evaluate`` found them before: ``span_index`` of every time, then ``_span_rows``."""
+    before = times < 0.0
+    inside = (times <= solution.end_time) & ~before
+    return S._span_rows(solution.span_index(times), inside, len(solution.spans))
+
+
+@pytest.mark.parametrize("label", ["zigzag", "B 20°, ends at pull-off", "from above the surface"])
+def test_the_sorted_times_rows_are_the_span_index_rows(label):
+    """``_sorted_span_rows`` (one ``searchsorted`` of the spans' ends) against ``span_index`` and ``_span_rows``: the
+    same slices on a run's samples, on grids through every span's end exactly (a contact made at an approach's end
+    belongs to the span after it), with repeated times, before the first contact and past the run, and on one
+    sample; times out of order are left to ``_span_rows``."""
+    if label == "from above the surface":
+        solution = solve_path(PAPER, me.Path([(0.0, -1e-4), (1e-4, 2e-4), (2e-4, -1e-4), (3e-4, 1e-4),
+                                              (4e-4, -1e-4)], PAPER.v))
+        assert any(span.regime is Regime.NONE for span in solution.spans[1:])  # (a contact made again)
+    else:
+        solution = solve_path(*RUNS[label]()[:2], **RUNS[label]()[2])
+    ends = np.array([span.t_end for span in solution.spans]) - solution.t_contact
+    grids = [np.linspace(0.0, solution.end_time, 2001), np.sort(np.concatenate([ends, ends, np.linspace(
+        -solution.t_contact, 1.2 * solution.end_time, 97)])), np.array([solution.end_time]), np.array([0.0]),
+        np.array([-1.0]), np.array([solution.end_time * 2])]
+    for times in grids:
+        assert S._sorted_span_rows(solution, times) == _span_rows_of_index(solution, times)
+    assert S._sorted_span_rows(solution, grids[0][::-1].copy()) is None

@@ -87,21 +87,25 @@ def normal_forces(params, depth: np.ndarray, radius: np.ndarray) -> np.ndarray:
     return (2.0 * params.E_star) * radius * (depth - radius * radius * (1.0 / (3.0 * params.R)))
 
 
-def _branch_k(branch: Branch) -> float:
-    """``k = √(2πΔγ/E*)`` of the paraboloid's branch (9), ``d = a²/R − k√a``."""
-    return math.sqrt(2.0 * math.pi * branch.work / branch.params.E_star)
+def _branch_k(branch: Branch, ks: dict[int, float]) -> float:
+    """``k = √(2πΔγ/E*)`` of the paraboloid's branch (9), ``d = a²/R − k√a``; kept in ``ks`` by the branch's ``id``
+    (the spans of one run share their branches)."""
+    k = ks.get(id(branch))
+    if k is None:
+        k = ks[id(branch)] = math.sqrt(2.0 * math.pi * branch.work / branch.params.E_star)
+    return k
 
 
-def _closed_row(force: ClosedForce) -> tuple[float, float, list[float]] | None:
+def _closed_row(force: ClosedForce, ks: dict[int, float]) -> tuple[float, float, list[float]] | None:
     """``(F₀, G, q)`` of a closed-form span on the paraboloid's branches (module docstring), ``None`` for any other
-    closed form (another branch, another primitive)."""
+    closed form (another branch, another primitive); ``ks``: the branches' ``k`` found so far."""
     primitive = force.primitive
     if type(primitive) is not Primitive or type(primitive.branch) is not Branch or not primitive.branch.quartic_samples:
         return None
     if primitive.C0 and type(primitive.attach) is not Branch:
         return None
-    R, k = primitive.branch.params.R, _branch_k(primitive.branch)
-    k0 = _branch_k(primitive.attach) if primitive.C0 else 0.0
+    R, k = primitive.branch.params.R, _branch_k(primitive.branch, ks)
+    k0 = _branch_k(primitive.attach, ks) if primitive.C0 else 0.0
     A0, A1, B0, B1, C, C0 = primitive[2:]
     q = [-force.origin, -B0 * k, A0, -(B1 * k + 2.0 * C * k + 2.0 * C0 * k0) / 3.0, 0.5 * A1 + B0 / R, 0.0,
          (2.0 * B1 + C + C0) / (3.0 * R)]
@@ -123,7 +127,7 @@ def force_rows(spans: list) -> list[tuple[bool, float, float, float, list[float]
         The rows, in the order of ``spans``.
     """
     zero = [0.0] * (POLYNOMIAL_DEGREE + 1)
-    rows = []
+    rows, ks = [], {}
     for span in spans:
         interpolant = span.interpolant
         if interpolant is None:  # (F₀ + (−0)·0: F₀ bit for bit, its zero's sign too)
@@ -131,7 +135,7 @@ def force_rows(spans: list) -> list[tuple[bool, float, float, float, list[float]
         elif type(interpolant) is LinearForce and span.grading is None:
             rows.append((False, interpolant.t0, interpolant.force, interpolant.rate, [0.0, 1.0] + zero[2:]))
         elif type(interpolant) is ClosedForce and span.grading is None:
-            row = _closed_row(interpolant)
+            row = _closed_row(interpolant, ks)
             rows.append(None if row is None else (True, 0.0, *row))
         else:
             rows.append(None)

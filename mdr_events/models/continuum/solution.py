@@ -3,6 +3,7 @@ times (:func:`evaluate`); its extrema are :mod:`.span_extrema`'s, its tangential
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -400,7 +401,6 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
         for name in ("normal_force", "tangential_force", "contact_radius"):
             out[name][before] = 0.0
     inside = (times <= solution.end_time) & ~before
-    owner = solution.span_index(times)
     after_end = np.flatnonzero(~inside & ~before)
     last = solution.spans[-1].segment
     if solution.ended_by_contact and after_end.size and solution.t_contact + times[after_end[0]] <= last.t1:
@@ -410,7 +410,9 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
         out["tangential_displacement"][first] = last.x(t)
         for name in ("normal_force", "tangential_force", "contact_radius"):
             out[name][first] = 0.0
-    spans_rows = _span_rows(owner, inside, len(solution.spans))
+    spans_rows = _sorted_span_rows(solution, times) if FILL_ROUTE is FillRoute.POLYNOMIAL else None
+    if spans_rows is None:
+        spans_rows = _span_rows(solution.span_index(times), inside, len(solution.spans))
     if solution.compressed is None:
         _fill_spans(solution, times, spans_rows, out)
         return out
@@ -476,39 +478,46 @@ def _quartic_radii(model: ContinuumModel, members: list[Span], d: np.ndarray, le
     closed form over all samples at once (:func:`~mdr_events.theory.quartic.depressed_quartic_root`, element by
     element); the iteration near the fold and at the spans' ends branch by branch over its samples, as
     :func:`_sampled_radii` runs it. ``False`` (nothing written) where a moving span's branch samples otherwise."""
-    branches = {Regime.GROWING: model.grow, Regime.SHRINKING: model.shrink}
-    moving = [span.regime in branches for span in members]
-    used = {branches[span.regime] for span in members if span.regime in branches}
+    branches = ((Regime.GROWING, model.grow), (Regime.SHRINKING, model.shrink))
+    of_span = [next((branch for regime, branch in branches if span.regime is regime), None) for span in members]
+    used = [branch for regime, branch in branches if any(span.regime is regime for span in members)]
     if not used:
         return True
     if any(type(branch) is not Branch or branch.work == 0.0 for branch in used):
         return False
-    linears = {id(branch): float(branch._quartic_of(np.zeros(1))[3]) for branch in used}  # (P of s⁴ + P s + Q)
-    table = np.array([_radius_row(branches.get(span.regime, model.grow), span, is_moving, linears)
-                      for span, is_moving in zip(members, moving)], dtype=float).T
-    linear, jump_off, floor, start, end, which, is_moving = np.repeat(table, lengths, axis=1)
+    # (P of s⁴ + P s + Q: the relation's form for floats, the same expression as its NumPy form's, the same bits)
+    linears = {id(branch): float(branch._coefficients(0.0, *branch._arguments)[3]) for branch in used}
+    table = np.array([_radius_row(model.grow if branch is None else branch, span, branch is not None, linears)
+                      for span, branch in zip(members, of_span)], dtype=float).T
+    linear, jump_off, floor, start, start_tolerance, end, end_tolerance, which, is_moving = np.repeat(table, lengths,
+                                                                                                   axis=1)
     inside = is_moving != 0.0
     depth = np.maximum(d, jump_off)
     root = np.maximum(depressed_quartic_root(linear, -model.params.R * depth), floor)
     radii = np.where(depth >= jump_off, root * root, np.nan)
     # (a sample at a span's end, to END_ULPS of its depth, takes the iteration's radius: _sampled_radii's rule)
-    ends = inside & ((np.abs(depth - start) <= END_ULPS * np.spacing(np.abs(start))) |
-                     (np.abs(depth - end) <= END_ULPS * np.spacing(np.abs(end))))
+    ends = inside & ((np.abs(depth - start) <= start_tolerance) | (np.abs(depth - end) <= end_tolerance))
     cube = root**3
     near = inside & (4.0 * cube + linear < NEAR_FOLD * 4.0 * cube)
-    for regime, branch in branches.items():  # (each regime's spans together, as _sampled_radii takes them)
+    for regime, branch in branches:  # (each regime's spans together, as _sampled_radii takes them)
         mine = which == float(regime is Regime.SHRINKING)
-        _refine(branch, depth, radii, near & mine, ends & mine)
+        at_end = ends & mine
+        near_fold = near & mine
+        if not (near_fold & ~at_end).any():  # (each an end, whose iterated radius replaces it: no iteration to run)
+            near_fold = at_end & False
+        _refine(branch, depth, radii, near_fold, at_end)
     np.copyto(a, radii, where=inside)
     return True
 
 
 def _radius_row(branch: Branch, span: Span, is_moving: bool, linears: dict[int, float]) -> tuple:
     """A span's numbers for :func:`_quartic_radii`: its branch's quartic coefficient (``linears``, by the branch's
-    ``id``; a pinned span's any), jump-off depth and floor, its depths at its start and end, which branch (1: the
-    shrinking one) and whether it moves."""
-    return (linears.get(id(branch), 0.0) if is_moving else next(iter(linears.values())), branch.jump_off_depth, branch._floor, span.segment.d(span.t_start), span.segment.d(span.t_end),
-            float(span.regime is Regime.SHRINKING), float(is_moving))
+    ``id``; a pinned span's any), jump-off depth and floor, its depths at its start and end with their tolerances
+    (:data:`END_ULPS` ulp, :func:`_at_ends`'), which branch (1: the shrinking one) and whether it moves."""
+    linear = linears.get(id(branch), 0.0) if is_moving else next(iter(linears.values()))
+    start, end = span.segment.d(span.t_start), span.segment.d(span.t_end)
+    return (linear, branch.jump_off_depth, branch._floor, start, END_ULPS * math.ulp(abs(start)), end,
+            END_ULPS * math.ulp(abs(end)), float(span.regime is Regime.SHRINKING), float(is_moving))
 
 
 def _refine(branch: Branch, depth: np.ndarray, radii: np.ndarray, near: np.ndarray, ends: np.ndarray) -> None:
@@ -620,6 +629,29 @@ def _moving_radii(solution: PathSolution, times: np.ndarray,
         depths = [span.segment.d(solution.t_contact + times[rows]) for span, (_, rows) in zip(spans, members)]
         found.update(zip([index for index, _ in members], _sampled_radii(solution.model, spans, depths)))
     return found
+
+
+def _sorted_span_rows(solution: PathSolution, times: np.ndarray) -> list[tuple[int, slice]] | None:
+    """:func:`_span_rows` of :meth:`PathSolution.span_index` and the times inside the run, for times that do not
+    decrease (a run's samples): each span's block located by one ``searchsorted`` of the spans' ends among the times
+    (a time at an approach's end, a contact made, the next span's: ``span_index``'s rule); ``None`` for times out of
+    order (their rows by :func:`_span_rows`)."""
+    if times.size > 1 and not np.all(times[1:] >= times[:-1]):
+        return None
+    spans = solution.spans
+    ends = np.array([span.t_end for span in spans]) - solution.t_contact
+    approach = np.array([span.regime is Regime.NONE for span in spans[:-1]], dtype=bool)
+    uppers = np.where(approach, np.searchsorted(times, ends[:-1], side="left"),
+                      np.searchsorted(times, ends[:-1], side="right")).tolist() + [times.size]
+    low = int(np.searchsorted(times, 0.0, side="left"))
+    high = int(np.searchsorted(times, solution.end_time, side="right"))
+    rows, lower = [], 0
+    for index, upper in enumerate(uppers):
+        start, stop = max(lower, low), min(upper, high)
+        if stop > start:
+            rows.append((index, slice(start, stop)))
+        lower = upper
+    return rows
 
 
 def _span_rows(owner: np.ndarray, inside: np.ndarray, count: int) -> list[tuple[int, slice | np.ndarray]]:
