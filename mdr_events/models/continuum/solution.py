@@ -565,6 +565,8 @@ def _polynomial_forces(spans: list[Span], t: np.ndarray, a: np.ndarray, where: l
     """:func:`_tangential_forces` by :data:`FillRoute.POLYNOMIAL`: the spans whose force is a polynomial in one pass
     (:func:`~.sample_forces.polynomial_forces`), the others by their kinds (:func:`~.span_forces.span_forces`)."""
     rows = force_rows(spans)
+    if all(row is None or not row[0] for row in rows):  # (no span in √a: a table's, a layer's: their own calls)
+        return _tangential_forces(spans, t, a, where)
     force = polynomial_forces(rows, t, a, [part.stop - part.start for part in where])
     read = [k for k, row in enumerate(rows) if row is None]
     if read:
