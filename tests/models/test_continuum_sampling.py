@@ -175,11 +175,16 @@ def test_inverses_at_samples_are_the_iterations_fronts_to_the_roots_conditioning
 
 
 @pytest.mark.parametrize("label", ["A 20°", "B 30°", "zigzag", "reciprocating"])
-def test_evaluate_at_once_is_evaluate_span_by_span(paper, label):
+def test_evaluate_at_once_is_evaluate_span_by_span(paper, label, monkeypatch):
     """``evaluate`` takes each branch's radii of all its spans in one call (``_sampled_radii``) and ``F_N`` of every
     span in one (``_fill_normal_force``): the values of each span evaluated alone (``evaluate_span`` with its own radii
-    and force) bit for bit, on runs of a few spans and of many (a zigzag, ten fretting cycles)."""
+    and force) bit for bit, on runs of a few spans and of many (a zigzag, ten fretting cycles); the forces by the
+    spans' own terms (``FillRoute.TERMS``: the polynomials' route is ``test_sample_forces.py``'s, within rounding)."""
+    from mdr_events.models.continuum import solution as solution_module
+    from mdr_events.models.continuum.sample_forces import FillRoute
     from mdr_events.models.continuum.solution import _span_rows, evaluate_span
+
+    monkeypatch.setattr(solution_module, "FILL_ROUTE", FillRoute.TERMS)
 
     if label == "zigzag":
         path = me.Path([(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)], paper.v)

@@ -17,6 +17,7 @@ from mdr_events.contact.indenters import PowerLaw
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum import solution as S
 from mdr_events.models.continuum.branch import NEAR_FOLD, Branch, TabulatedBranch
+from mdr_events.models.continuum.sample_forces import FillRoute
 from mdr_events.theory import quartic
 
 from bench_paths import HERTZ, PAPER, ZIGZAG, paper_table as _table, reciprocating as _reciprocating
@@ -70,7 +71,10 @@ def _run(case):
 @pytest.mark.parametrize("case", list(CASES))
 def test_the_fill_of_all_spans_at_once_is_the_fill_span_by_span(case, monkeypatch):
     """``evaluate`` at a run's 2001 samples, at times out of order (each span's rows gathered by index) and at times
-    before the first contact and beyond the run: every quantity the same, bit for bit, as span by span."""
+    before the first contact and beyond the run: every quantity the same, bit for bit, as span by span (the forces by
+    the spans' own terms, ``FillRoute.TERMS``, on both sides; ``test_sample_forces.py`` compares the polynomials'
+    route with it)."""
+    monkeypatch.setattr(S, "FILL_ROUTE", FillRoute.TERMS)
     solution = _run(case)
     samples = np.linspace(0.0, solution.end_time * (1.0 + 1.0 / 2001), 2001)
     shuffled = np.random.default_rng(7).permutation(samples[::3])
@@ -167,6 +171,9 @@ SIMULATIONS = {
 
 @pytest.mark.parametrize("case", list(SIMULATIONS))
 def test_simulate_through_the_fill_at_once_is_simulate_span_by_span(case, monkeypatch):
+    """``simulate``'s dataset through the fill at once and span by span, identical (the forces by the spans' own
+    terms on both sides)."""
+    monkeypatch.setattr(S, "FILL_ROUTE", FillRoute.TERMS)
     found = SIMULATIONS[case]()
     with monkeypatch.context() as patch:
         patch.setattr(S, "_fill_spans", _reference_fill)

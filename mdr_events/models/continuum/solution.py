@@ -3,6 +3,7 @@ times (:func:`evaluate`); its extrema are :mod:`.span_extrema`'s, its tangential
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -10,12 +11,15 @@ import numpy as np
 from mdr_events.contact.adhesion import Adhesion
 from mdr_events.memo import kept
 from mdr_events.parameters import Parameters
-from .branch import Branch
+from mdr_events.theory import analytic
+from mdr_events.theory.quartic import depressed_quartic_root
+from .branch import NEAR_FOLD, Branch
 from .dense import cut, force_values
 from .span_forces import span_forces
 from .span_sliding import span_sliding_lengths, takes_batch
 from .graded import span_variable
 from .model import ContinuumModel
+from .sample_forces import FillRoute, force_rows, normal_forces, paraboloid_on_half_space, polynomial_forces
 from .span_record import Span, Variable
 from .state import CONTACT_ENDING, Event, Regime
 from .time_grid import check_times
@@ -142,6 +146,11 @@ class PathSolution:
 EVALUATED_QUANTITIES = ("indentation_depth", "tangential_displacement", "normal_force", "tangential_force",
                         "contact_radius", "sliding_fraction")
 
+
+#: How :func:`evaluate` computes ``F_N`` and ``F_x`` of the samples in contact (:class:`~.sample_forces.FillRoute`):
+#: the spans' polynomials in one pass; ``FillRoute.TERMS``, the spans' own terms, is the reference the tests compare
+#: it with.
+FILL_ROUTE = FillRoute.POLYNOMIAL
 
 #: A sample whose depth is within this many ulp of its span's end depth is read as that end (:func:`_span_radius`): a
 #: time from first contact and back rounds the depth by an ulp or two.
@@ -392,7 +401,6 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
         for name in ("normal_force", "tangential_force", "contact_radius"):
             out[name][before] = 0.0
     inside = (times <= solution.end_time) & ~before
-    owner = solution.span_index(times)
     after_end = np.flatnonzero(~inside & ~before)
     last = solution.spans[-1].segment
     if solution.ended_by_contact and after_end.size and solution.t_contact + times[after_end[0]] <= last.t1:
@@ -402,7 +410,9 @@ def evaluate(solution: PathSolution, times: np.ndarray) -> dict[str, np.ndarray]
         out["tangential_displacement"][first] = last.x(t)
         for name in ("normal_force", "tangential_force", "contact_radius"):
             out[name][first] = 0.0
-    spans_rows = _span_rows(owner, inside, len(solution.spans))
+    spans_rows = _sorted_span_rows(solution, times) if FILL_ROUTE is FillRoute.POLYNOMIAL else None
+    if spans_rows is None:
+        spans_rows = _span_rows(solution.span_index(times), inside, len(solution.spans))
     if solution.compressed is None:
         _fill_spans(solution, times, spans_rows, out)
         return out
@@ -442,19 +452,83 @@ def _fill_spans(solution: PathSolution, times: np.ndarray, spans_rows: list[tupl
     t, d, x, a, lengths = _kinematics(solution, members, [times[rows] for _, rows in contact])
     bounds = np.cumsum([0] + lengths)
     where = [slice(int(lower), int(upper)) for lower, upper in zip(bounds[:-1], bounds[1:])]
-    for regime in (Regime.GROWING, Regime.SHRINKING):
-        moving = [k for k, span in enumerate(members) if span.regime is regime]
-        if moving:
-            for k, radii in zip(moving, _sampled_radii(model, [members[k] for k in moving],
-                                                       [d[where[k]] for k in moving])):
-                a[where[k]] = radii
+    if not (FILL_ROUTE is FillRoute.POLYNOMIAL and _quartic_radii(model, members, d, lengths, a)):
+        for regime in (Regime.GROWING, Regime.SHRINKING):
+            moving = [k for k, span in enumerate(members) if span.regime is regime]
+            if moving:
+                for k, radii in zip(moving, _sampled_radii(model, [members[k] for k in moving],
+                                                           [d[where[k]] for k in moving])):
+                    a[where[k]] = radii
+    polynomial = FILL_ROUTE is FillRoute.POLYNOMIAL
     filled = {"indentation_depth": d, "tangential_displacement": x, "contact_radius": a,
-              "normal_force": np.asarray(model.normal_force(d, a), dtype=float),  # (10)
-              "tangential_force": _tangential_forces(members, t, a, where),
+              "normal_force": (normal_forces(model.params, d, a) if polynomial and paraboloid_on_half_space(model)
+                               else np.asarray(model.normal_force(d, a), dtype=float)),  # (10)
+              "tangential_force": (_polynomial_forces if polynomial else _tangential_forces)(members, t, a, where),
               "sliding_fraction": _sliding_fractions(model, members, x, d, a, where)}
     target = _rows_of(contact)
     for name, values in filled.items():
         out[name][target] = values
+
+
+def _quartic_radii(model: ContinuumModel, members: list[Span], d: np.ndarray, lengths: list[int],
+                   a: np.ndarray) -> bool:
+    """:func:`_sampled_radii` of every moving span of ``members`` on the paraboloid's branches with adhesion, both
+    branches in one pass, written into ``a`` (the samples' radii, pinned ones already there; ``d`` their depths, each
+    span's ``lengths`` consecutive): each sample with its branch's quartic coefficient, jump-off and floor, the
+    closed form over all samples at once (:func:`~mdr_events.theory.quartic.depressed_quartic_root`, element by
+    element); the iteration near the fold and at the spans' ends branch by branch over its samples, as
+    :func:`_sampled_radii` runs it. ``False`` (nothing written) where a moving span's branch samples otherwise."""
+    branches = ((Regime.GROWING, model.grow), (Regime.SHRINKING, model.shrink))
+    of_span = [next((branch for regime, branch in branches if span.regime is regime), None) for span in members]
+    used = [branch for regime, branch in branches if any(span.regime is regime for span in members)]
+    if not used:
+        return True
+    if any(type(branch) is not Branch or branch.work == 0.0 for branch in used):
+        return False
+    # (P of s⁴ + P s + Q: the relation's form for floats, the same expression as its NumPy form's, the same bits)
+    linears = {id(branch): float(branch._coefficients(0.0, *branch._arguments)[3]) for branch in used}
+    table = np.array([_radius_row(model.grow if branch is None else branch, span, branch is not None, linears)
+                      for span, branch in zip(members, of_span)], dtype=float).T
+    linear, jump_off, floor, start, start_tolerance, end, end_tolerance, which, is_moving = np.repeat(table, lengths,
+                                                                                                   axis=1)
+    inside = is_moving != 0.0
+    depth = np.maximum(d, jump_off)
+    root = np.maximum(depressed_quartic_root(linear, -model.params.R * depth), floor)
+    radii = np.where(depth >= jump_off, root * root, np.nan)
+    # (a sample at a span's end, to END_ULPS of its depth, takes the iteration's radius: _sampled_radii's rule)
+    ends = inside & ((np.abs(depth - start) <= start_tolerance) | (np.abs(depth - end) <= end_tolerance))
+    cube = root**3
+    near = inside & (4.0 * cube + linear < NEAR_FOLD * 4.0 * cube)
+    for regime, branch in branches:  # (each regime's spans together, as _sampled_radii takes them)
+        mine = which == float(regime is Regime.SHRINKING)
+        at_end = ends & mine
+        near_fold = near & mine
+        if not (near_fold & ~at_end).any():  # (each an end, whose iterated radius replaces it: no iteration to run)
+            near_fold = at_end & False
+        _refine(branch, depth, radii, near_fold, at_end)
+    np.copyto(a, radii, where=inside)
+    return True
+
+
+def _radius_row(branch: Branch, span: Span, is_moving: bool, linears: dict[int, float]) -> tuple:
+    """A span's numbers for :func:`_quartic_radii`: its branch's quartic coefficient (``linears``, by the branch's
+    ``id``; a pinned span's any), jump-off depth and floor, its depths at its start and end with their tolerances
+    (:data:`END_ULPS` ulp, :func:`_at_ends`'), which branch (1: the shrinking one) and whether it moves."""
+    linear = linears.get(id(branch), 0.0) if is_moving else next(iter(linears.values()))
+    start, end = span.segment.d(span.t_start), span.segment.d(span.t_end)
+    return (linear, branch.jump_off_depth, branch._floor, start, END_ULPS * math.ulp(abs(start)), end,
+            END_ULPS * math.ulp(abs(end)), float(span.regime is Regime.SHRINKING), float(is_moving))
+
+
+def _refine(branch: Branch, depth: np.ndarray, radii: np.ndarray, near: np.ndarray, ends: np.ndarray) -> None:
+    """The radii of one branch's samples near its fold and at its spans' ends taken from the iteration
+    (:meth:`~.branch.Branch._iterate_near_fold`, :func:`_iterated_radii`), in place."""
+    if near.any():
+        linear, constant = branch._quartic_of(depth[near])[3:]
+        root = analytic.positive_polynomial_root([1.0, 0.0, 0.0, float(linear), constant], lower=branch._floor)
+        radii[near] = np.where(depth[near] >= branch.jump_off_depth, root * root, np.nan)
+    if ends.any():
+        radii[ends] = _iterated_radii(branch, depth[ends])
 
 
 def _kinematics(solution: PathSolution, members: list[Span],
@@ -484,6 +558,22 @@ def _tangential_forces(spans: list[Span], t: np.ndarray, a: np.ndarray, where: l
                          [_force_variable(spans[k], t[where[k]], a[where[k]]) for k in read])
     for k, value in zip(read, values):
         force[where[k]] = value
+    return force
+
+
+def _polynomial_forces(spans: list[Span], t: np.ndarray, a: np.ndarray, where: list[slice]) -> np.ndarray:
+    """:func:`_tangential_forces` by :data:`FillRoute.POLYNOMIAL`: the spans whose force is a polynomial in one pass
+    (:func:`~.sample_forces.polynomial_forces`), the others by their kinds (:func:`~.span_forces.span_forces`)."""
+    rows = force_rows(spans)
+    if all(row is None or not row[0] for row in rows):  # (no span in √a: a table's, a layer's: their own calls)
+        return _tangential_forces(spans, t, a, where)
+    force = polynomial_forces(rows, t, a, [part.stop - part.start for part in where])
+    read = [k for k, row in enumerate(rows) if row is None]
+    if read:
+        values = span_forces([spans[k].interpolant for k in read],
+                             [_force_variable(spans[k], t[where[k]], a[where[k]]) for k in read])
+        for k, value in zip(read, values):
+            force[where[k]] = value
     return force
 
 
@@ -541,6 +631,29 @@ def _moving_radii(solution: PathSolution, times: np.ndarray,
         depths = [span.segment.d(solution.t_contact + times[rows]) for span, (_, rows) in zip(spans, members)]
         found.update(zip([index for index, _ in members], _sampled_radii(solution.model, spans, depths)))
     return found
+
+
+def _sorted_span_rows(solution: PathSolution, times: np.ndarray) -> list[tuple[int, slice]] | None:
+    """:func:`_span_rows` of :meth:`PathSolution.span_index` and the times inside the run, for times that do not
+    decrease (a run's samples): each span's block located by one ``searchsorted`` of the spans' ends among the times
+    (a time at an approach's end, a contact made, the next span's: ``span_index``'s rule); ``None`` for times out of
+    order (their rows by :func:`_span_rows`)."""
+    if times.size > 1 and not np.all(times[1:] >= times[:-1]):
+        return None
+    spans = solution.spans
+    ends = np.array([span.t_end for span in spans]) - solution.t_contact
+    approach = np.array([span.regime is Regime.NONE for span in spans[:-1]], dtype=bool)
+    uppers = np.where(approach, np.searchsorted(times, ends[:-1], side="left"),
+                      np.searchsorted(times, ends[:-1], side="right")).tolist() + [times.size]
+    low = int(np.searchsorted(times, 0.0, side="left"))
+    high = int(np.searchsorted(times, solution.end_time, side="right"))
+    rows, lower = [], 0
+    for index, upper in enumerate(uppers):
+        start, stop = max(lower, low), min(upper, high)
+        if stop > start:
+            rows.append((index, slice(start, stop)))
+        lower = upper
+    return rows
 
 
 def _span_rows(owner: np.ndarray, inside: np.ndarray, count: int) -> list[tuple[int, slice | np.ndarray]]:
