@@ -437,6 +437,9 @@ class SpanIntegrator:
         t = self.time_of(var)
         x = segment.x(t)
         shift = self.caps.centre_shift(a, segment.d(t))
+        key = variable_key(var)
+        if key is not None:  # (level's memo: the events read a panel's end right after its check reading there)
+            self._last_level = (key, x, shift)
         positive = self.positive.size(x - shift, a)
         negative = self.negative.size(x + shift, a)
         sticking = self.medium.measure(0.0, a) - positive - negative
