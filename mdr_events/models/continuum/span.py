@@ -474,9 +474,11 @@ class SpanIntegrator:
         float
             The shift (m).
         """
-        for cap in Cap:
-            if self.zones[cap].edge_in_zone:
-                return cap * self.medium.shift(self.K, a)
+        # (both caps in Cap's order, without iterating the enum: a shrinking span reads this at every reading)
+        if self.positive.edge_in_zone:
+            return Cap.POSITIVE * self.medium.shift(self.K, a)
+        if self.negative.edge_in_zone:
+            return Cap.NEGATIVE * self.medium.shift(self.K, a)
         return x - self.anchors.piece_value(self.anchors.pieces[-1], a)
 
     # --- the event functions -----------------------------------------------------------------
