@@ -106,37 +106,16 @@ MINDLIN_CALLS = [
 ]
 
 
-#: The friction laws the subclasses are checked under.
-LAWS = (FrictionLaw("tau0"), FrictionLaw("coulomb", mu=0.3), FrictionLaw("tau0+coulomb", mu=0.3))
-#: What the quick round leaves to test_a_power_laws_subclass_has_its_combined_critical_angle (make test-all, CI): the
-#: power law's critical angle A under both parts of the cap with adhesion, a root over ``d_crit_A`` of the combined law
-#: (2.2 s of CPU for the subclass and its base, 90 % of the test), whose ``d_crit_A`` the quick test compares (the same
-#: route through ``combined_onset``, where the kind is read)
-SLOW_CALL = ("critical_angle_A", "tau0+coulomb")
-
-
 @pytest.mark.parametrize("base, subclass", SUBCLASSES, ids=["FlatPunch", "PowerLaw"])
 def test_a_subclass_is_of_its_bases_kind(base, subclass):
     """kinds files a subclass as its base, so power_law's and mindlin's functions give the base's numbers bit for bit
-    (an exact type lookup sent a FlatPunch subclass to the power law's forms: AttributeError 'n'); the power law's
-    :data:`SLOW_CALL` in the slow round."""
+    (an exact type lookup sent a FlatPunch subclass to the power law's forms: AttributeError 'n')."""
     assert theory_of(subclass) is theory_of(base)
     for name, call in CALLS[1:]:  # (normal_force's radius differs by kind: the first row's None is the punch's)
         for adhesion in (False, True):
             assert _same(call(getattr(power_law, name), adhesion, subclass),
                          call(getattr(power_law, name), adhesion, base)), name
-    for law in LAWS:
+    for law in (FrictionLaw("tau0"), FrictionLaw("coulomb", mu=0.3), FrictionLaw("tau0+coulomb", mu=0.3)):
         for name, call in MINDLIN_CALLS:
-            if isinstance(base, PowerLaw) and (name, law.law) == SLOW_CALL:
-                continue
             assert _same(call(getattr(mindlin, name), law, subclass),
                          call(getattr(mindlin, name), law, base)), (name, law)
-
-
-@pytest.mark.slow  # (2.2 s of CPU: SLOW_CALL; its d_crit_A, the same route, in test_a_subclass_is_of_its_bases_kind)
-def test_a_power_laws_subclass_has_its_combined_critical_angle():
-    """:data:`SLOW_CALL` of the power law's subclass is its base's bit for bit."""
-    base, subclass = SUBCLASSES[1]
-    name, call = next((name, call) for name, call in MINDLIN_CALLS if name == SLOW_CALL[0])
-    law = next(law for law in LAWS if law.law == SLOW_CALL[1])
-    assert _same(call(getattr(mindlin, name), law, subclass), call(getattr(mindlin, name), law, base))
