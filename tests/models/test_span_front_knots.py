@@ -3,14 +3,17 @@ Illinois' regula falsi), against the scalar level and closed-form roots."""
 
 from __future__ import annotations
 
+import bisect
 import math
 
 import numpy as np
 import pytest
+from scipy.optimize import brentq
 
 import mdr_events as me
 from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.models.continuum import integrate, solve_path, span_front_knots
+from mdr_events.models.continuum.span import Cap
 from mdr_events.models.continuum.tolerances import EPS
 from mdr_events.models.paths import Path
 
@@ -85,4 +88,46 @@ def test_each_knot_found_is_where_the_level_reaches_the_knots_value(fronted_span
             below, above = (integrator.level(cap, var + sign * step) - value for sign in (-1.0, 1.0))
             assert below * above <= 0.0 or math.isclose(below, 0.0, abs_tol=0.0)
             checked += 1
-    assert checked >= 90  # (A at 20°: 95 knots crossed)
+    assert checked == 95  # (A at 20°: every knot crossed)
+
+
+#: The new route's knot against the scalar route's, in ulp of the knot: each is the level's root to its own stopping
+#: rule, regula falsi's within ROOT_ERROR_ULPS (above), Brent's (``xtol = EPS`` of the bracket's larger end, ``rtol``
+#: = 4 EPS, the ``brentq`` call the route made before) within 4 + 1 ulp of a variable of the order of the bracket's
+#: ends (the radius over its scale, or a time inside a span not starting at 0)
+KNOT_ULPS = ROOT_ERROR_ULPS + 5.0
+
+
+def _scalar_front_knots(integrator) -> list[float]:
+    """``SpanIntegrator.front_knots`` as it was before ``span_front_knots``: the front's ``ξ`` by the scalar inverse at
+    each reading, the knots between two ``ξ`` by bisection, each kept where the level minus the piece's value there
+    changes sign, and its root by Brent's method."""
+    knots = integrator.anchors.attach.knots
+    readings = sorted({integrator.start, integrator.stop, *integrator._radius_knots()})
+    found = []
+    for cap, p in [(cap, p) for cap in Cap for p, _, _ in integrator.zones[cap].fronts if not p.constant]:
+        seen = integrator.zones[cap].anchors
+        level = [integrator.level(cap, var) for var in readings]
+        xis = [seen.inverse(p, value) for value in level]
+        for k in range(len(readings) - 1):
+            low, high = sorted(xis[k:k + 2])
+            for knot in knots[bisect.bisect_right(knots, low):bisect.bisect_left(knots, high)]:
+                value = seen.piece_value(p, knot)
+                if (level[k] - value) * (level[k + 1] - value) < 0.0:
+                    found.append(brentq(lambda var, cap=cap, value=value: integrator.level(cap, var) - value,
+                                        readings[k], readings[k + 1], rtol=4 * EPS,
+                                        xtol=EPS * max(abs(readings[k]), abs(readings[k + 1]))))
+    return sorted(found)
+
+
+def test_the_knots_found_at_once_are_the_scalar_routes(fronted_spans):
+    """Every span's knots (A at 20° on a 41-point table: 95) are the scalar route's (``_scalar_front_knots``: the
+    inverse at each reading and bisection select the knots, Brent's method refines them): the same count, each within
+    KNOT_ULPS ulp of its own (a knot the sorted search misses, or a root off by a few ulp more, fails)."""
+    total = 0
+    for integrator in fronted_spans:
+        found, scalar = np.array(integrator.front_knots()), np.array(_scalar_front_knots(integrator))
+        assert found.shape == scalar.shape
+        assert np.all(np.abs(found - scalar) <= KNOT_ULPS * EPS * np.abs(scalar))
+        total += found.size
+    assert total == 95  # (every knot compared: the selection's count is the route's, not a lower bound)
