@@ -51,11 +51,17 @@ GRID_POINTS = 4000
 END_SHARE = 4 * float(np.finfo(float).eps)
 #: The relative accuracy of a radius root (a few ulp).
 RADIUS_RTOL = 4 * float(np.finfo(float).eps)
-#: A Newton step ends an inversion where its own error, by Newton's rule ``|d''/(2 d')| Δ²`` from the step ``Δ``, is at
-#: most this share of the asked accuracy: from the Hermite start (~1e-9 of the radius on a 41-point table) one step
-#: leaves ~1e-18, where the step after it only confirmed it (the rule's own error is of the order of the next term,
-#: ``Δ³``: the share leaves two decades for it)
+#: A Newton step ends an inversion where its own error, by Newton's rule ``(|d''|/2 Δ² + |d'''|/3 |Δ|³) / d'`` from the
+#: step ``Δ`` (the derivatives at the root; read at the iterate, ``d''`` is off by ``d''' Δ``: the bound taken is
+#: ``(|d''| + 2 |d'''| |Δ|) Δ² / (2 d')``), is at most this share of the asked accuracy: from the Hermite start (~1e-9
+#: of the radius on a 41-point table) one step leaves ~1e-18, where the step after it only confirmed it. The ``Δ³``
+#: term keeps the rule where ``d''`` vanishes (an inflection of the piece's cubic minus ``k √a``), where ``Δ²`` alone
+#: would let a step of 1e-4 of the radius end it with an error of ~1e-12
 NEWTON_SHARE = 0.01
+#: The largest step (a share of the radius) the rule ends on: the piece's cubic has no terms past ``d'''``, and
+#: ``k √a``'s next term is ``Δ/a`` of its ``Δ³`` one, within the rule's margin (2 for 5/3) where ``Δ <= 1 %`` of ``a``
+#: (settled steps in the tests: at most 2e-6)
+NEWTON_REACH = 0.01
 #: Steps allowed to invert a depth on one piece of ``g``: Newton's converge in a few, the bisections that keep them
 #: in the bracket halve it each (60 of them take any piece to ``RADIUS_RTOL``).
 MAX_INVERSION_STEPS = 100
@@ -461,11 +467,14 @@ class TabulatedBranch:
             if abs(step - a) <= rtol * a:  # (a converged step may round onto the bracket's end)
                 return step if low <= step <= high else a
             if rate > 0.0 and low < step < high:  # (the step's own error by Newton's rule: NEWTON_SHARE of rtol)
-                bend = 2.0 * s0 * offset + s1
+                bend, third = 2.0 * s0 * offset + s1, 2.0 * s0
                 if k:
                     bend += quarter_k / (a * root)
-                change = step - a
-                if abs(bend) * change * change <= 2.0 * NEWTON_SHARE * rtol * a * rate:
+                    third -= 1.5 * quarter_k / (a * a * root)
+                change = abs(step - a)
+                if (change <= NEWTON_REACH * a
+                        and (abs(bend) + 2.0 * abs(third) * change) * change * change
+                        <= 2.0 * NEWTON_SHARE * rtol * a * rate):
                     return step
             a = step if low < step < high else 0.5 * (low + high)
         return a
@@ -541,13 +550,15 @@ class TabulatedBranch:
                 rate = rate - 0.0
             step = np.where(rate > 0.0, a - excess / rate, low)
             converged = ~exact & (np.abs(step - a) <= rtol * a)
-            bend = 2.0 * rates[0] * offset + rates[1]
+            bend, third = 2.0 * rates[0] * offset + rates[1], 2.0 * rates[0]
             if self.k:
                 bend = bend + 0.25 * self.k / (a * root)
-            change = step - a
+                third = third - 1.5 * (0.25 * self.k) / (a * a * root)
+            change = np.abs(step - a)
             inside = (low < step) & (step < high)
-            settled = (~exact & ~converged & (rate > 0.0) & inside
-                       & (np.abs(bend) * change * change <= 2.0 * NEWTON_SHARE * rtol * a * rate))
+            settled = (~exact & ~converged & (rate > 0.0) & inside & (change <= NEWTON_REACH * a)
+                       & ((np.abs(bend) + 2.0 * np.abs(third) * change) * change * change
+                          <= 2.0 * NEWTON_SHARE * rtol * a * rate))
             out[left[exact]] = a[exact]
             out[left[converged]] = np.where((low <= step) & (step <= high), step, a)[converged]
             out[left[settled]] = step[settled]

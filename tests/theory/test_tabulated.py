@@ -181,6 +181,45 @@ def test_a_radius_is_about_one_newton_step_from_its_hermite_start(paper, work, m
     assert np.all(np.abs(residual) <= 4e-14 * np.array(radii) * slopes + 4 * np.spacing(depths))
 
 
+#: A radius against the root of its depth by ``brentq`` (``rtol`` = 4 EPS, its least): the inversion's RADIUS_RTOL
+#: (4 EPS) and Brent's own, 8 ulp (measured 0.9 ulp; Newton's rule on ``d''`` alone ended them 96 ulp to 2e7 ulp off)
+INFLECTION_ULPS = 8
+
+
+def test_newtons_rule_does_not_end_an_inversion_at_an_inflection(paper):
+    """A coarse table (6 points) of ``r² − r³/2 + 0.12 r⁴`` without adhesion: on each bracket whose piece of ``g`` (a
+    cubic) has its inflection inside, the depth whose Hermite start lands on the inflection (its error 7e-7 to 2e-3 of
+    the radius). There ``d''`` vanishes, so ``|d''| Δ²`` alone passed ``NEWTON_SHARE``'s test after one step that left
+    an error of ``|d'''| Δ³ / (3 d')``; ``radius`` and ``radii`` are the root within INFLECTION_ULPS ulp."""
+    from scipy import optimize
+
+    r = np.linspace(0.0, 1.0, 6)
+    line = tb.TabulatedBranch(TabulatedProfile(r, r**2 - 0.5 * r**3 + 0.12 * r**4), paper, 0.0)
+
+    def hermite(cell, depth):  # (_invert's start, its formula)
+        low, high, d_low, d_high, _, _, _, m0, m1 = cell
+        share = (depth - d_low) / (d_high - d_low)
+        rest = 1.0 - share
+        return (((1.0 + 2.0 * share) * rest * rest) * low + (share * rest * rest) * m0
+                + (share * share * (3.0 - 2.0 * share)) * high + (share * share * (share - 1.0)) * m1)
+
+    depths, roots = [], []
+    for cell in line._cells[1:]:
+        low, high, d_low, d_high, start, _, (s0, s1, _), m0, _ = cell
+        inflection = start - s1 / (2.0 * s0) if s0 else math.nan
+        if m0 == m0 and low < inflection < high:
+            depths.append(optimize.brentq(lambda d, cell=cell: hermite(cell, d) - inflection, d_low, d_high,
+                                          xtol=1e-300, rtol=4 * np.finfo(float).eps))
+            roots.append(optimize.brentq(lambda a: line.depth(a) - depths[-1], low, high, xtol=1e-300,
+                                         rtol=4 * np.finfo(float).eps))
+    assert len(roots) >= 10  # (the inflections inside their brackets)
+    bound = INFLECTION_ULPS * np.finfo(float).eps * np.array(roots)
+    assert np.all(np.abs(np.array([line.radius(depth) for depth in depths]) - roots) <= bound)
+    assert np.all(np.abs(line.radii(np.array(depths)) - roots) <= bound)
+
+
+
+
 #: The scalar forms (Horner in Python on the piece) against the array forms (SciPy's PPoly) at one radius: the same
 #: polynomial summed in another order, a few ulp of the value.
 SCALAR_ULPS = 8
