@@ -51,6 +51,17 @@ GRID_POINTS = 4000
 END_SHARE = 4 * float(np.finfo(float).eps)
 #: The relative accuracy of a radius root (a few ulp).
 RADIUS_RTOL = 4 * float(np.finfo(float).eps)
+#: A Newton step ends an inversion where its own error, by Newton's rule ``(|d''|/2 Δ² + |d'''|/3 |Δ|³) / d'`` from the
+#: step ``Δ`` (the derivatives at the root; read at the iterate, ``d''`` is off by ``d''' Δ``: the bound taken is
+#: ``(|d''| + 2 |d'''| |Δ|) Δ² / (2 d')``), is at most this share of the asked accuracy: from the Hermite start (~1e-9
+#: of the radius on a 41-point table) one step leaves ~1e-18, where the step after it only confirmed it. The ``Δ³``
+#: term keeps the rule where ``d''`` vanishes (an inflection of the piece's cubic minus ``k √a``), where ``Δ²`` alone
+#: would let a step of 1e-4 of the radius end it with an error of ~1e-12
+NEWTON_SHARE = 0.01
+#: The largest step (a share of the radius) the rule ends on: the piece's cubic has no terms past ``d'''``, and
+#: ``k √a``'s next term is ``Δ/a`` of its ``Δ³`` one, within the rule's margin (2 for 5/3) where ``Δ <= 1 %`` of ``a``
+#: (settled steps in the tests: at most 2e-6)
+NEWTON_REACH = 0.01
 #: Steps allowed to invert a depth on one piece of ``g``: Newton's converge in a few, the bisections that keep them
 #: in the bracket halve it each (60 of them take any piece to ``RADIUS_RTOL``).
 MAX_INVERSION_STEPS = 100
@@ -419,11 +430,12 @@ class TabulatedBranch:
     def _invert(self, depth: float, above: int, rtol: float) -> float:
         """The root of ``d(a) = depth`` between the radii ``above − 1`` and ``above`` of the bracket's grid (one
         piece of ``g``): Newton's steps on the piece's cubic, kept in the bracket by bisection (``d`` increases
-        there), until a step is below ``rtol`` of the radius. They start from the cubic Hermite interpolant of the
-        inverse ``a(d)`` through the bracket's ends (their radii, depths and slopes ``d'``: its error falls as the fourth
-        power of the bracket, ~1e-9 of the radius on a 41-point table, where the chord's falls as the square, ~1e-4;
-        two steps, not three), else (it would leave the bracket, or a slope is not positive) from the chord's root,
-        or next to the jump-off, where ``d`` rises from a minimum as the square of the distance, from the chord's in
+        there), until a step is below ``rtol`` of the radius, or its own error by Newton's rule is below
+        :data:`NEWTON_SHARE` of it (the step after it would only confirm it). They start from the cubic Hermite
+        interpolant of the inverse ``a(d)`` through the bracket's ends (their radii, depths and slopes ``d'``: its error
+        falls as the fourth power of the bracket, ~1e-9 of the radius on a 41-point table, where the chord's falls as
+        the square, ~1e-4; one step, not three), else (it would leave the bracket, or a slope is not positive) from the
+        chord's root, or next to the jump-off, where ``d`` rises from a minimum as the square of the distance, from the chord's in
         that square. Pure Python: the continuum inverts thousands of depths per run."""
         low, high, d_low, d_high, start, (c0, c1, c2, c3), (s0, s1, s2), m0, m1 = self._cells[above]
         k = self.k
@@ -437,7 +449,7 @@ class TabulatedBranch:
                 a = hermite
         # a PCHIP's piece is a cubic, its slope's a quadratic: Horner's steps written out, as ScalarPiecewise's loop
         # takes them from 0.0 (the same operations, bit for bit)
-        half_k = 0.5 * k
+        half_k, quarter_k = 0.5 * k, 0.25 * k
         for _ in range(MAX_INVERSION_STEPS):
             offset, root = a - start, math.sqrt(a)
             value = (((0.0 * offset + c0) * offset + c1) * offset + c2) * offset + c3
@@ -454,6 +466,16 @@ class TabulatedBranch:
             step = a - excess / rate if rate > 0.0 else low
             if abs(step - a) <= rtol * a:  # (a converged step may round onto the bracket's end)
                 return step if low <= step <= high else a
+            if rate > 0.0 and low < step < high:  # (the step's own error by Newton's rule: NEWTON_SHARE of rtol)
+                bend, third = 2.0 * s0 * offset + s1, 2.0 * s0
+                if k:
+                    bend += quarter_k / (a * root)
+                    third -= 1.5 * quarter_k / (a * a * root)
+                change = abs(step - a)
+                if (change <= NEWTON_REACH * a
+                        and (abs(bend) + 2.0 * abs(third) * change) * change * change
+                        <= 2.0 * NEWTON_SHARE * rtol * a * rate):
+                    return step
             a = step if low < step < high else 0.5 * (low + high)
         return a
 
@@ -528,10 +550,20 @@ class TabulatedBranch:
                 rate = rate - 0.0
             step = np.where(rate > 0.0, a - excess / rate, low)
             converged = ~exact & (np.abs(step - a) <= rtol * a)
+            bend, third = 2.0 * rates[0] * offset + rates[1], 2.0 * rates[0]
+            if self.k:
+                bend = bend + 0.25 * self.k / (a * root)
+                third = third - 1.5 * (0.25 * self.k) / (a * a * root)
+            change = np.abs(step - a)
+            inside = (low < step) & (step < high)
+            settled = (~exact & ~converged & (rate > 0.0) & inside & (change <= NEWTON_REACH * a)
+                       & ((np.abs(bend) + 2.0 * np.abs(third) * change) * change * change
+                          <= 2.0 * NEWTON_SHARE * rtol * a * rate))
             out[left[exact]] = a[exact]
             out[left[converged]] = np.where((low <= step) & (step <= high), step, a)[converged]
-            a = np.where((low < step) & (step < high), step, 0.5 * (low + high))
-            going = ~(exact | converged)
+            out[left[settled]] = step[settled]
+            a = np.where(inside, step, 0.5 * (low + high))
+            going = ~(exact | converged | settled)
             if not going.all():
                 left, a, low, high, start, depth, values, rates = _Iterating(left, a, low, high, start, depth, values,
                                                                              rates).kept(going)

@@ -10,6 +10,7 @@ import pytest
 import mdr_events as me
 from mdr_events.analysis.convergence import history_differences, observed_orders
 from mdr_events.models.continuum import EventKind, extremum, solve_path
+from mdr_events.models.continuum.tolerances import EPS
 from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.models.paths import exit_depth
 from mdr_events.theory import tabulated as tb
@@ -264,3 +265,52 @@ def test_a_front_crossing_a_knot_of_the_table_starts_a_piece_there(paper, monkey
         assert len(found) == swept[-1]
         assert set(found) <= set(integrator.knots())
     assert sum(count > 0 for count in swept) >= 2  # (the growing span with a front and the shrinking one)
+
+
+#: The radius of the table's route against the route before, over its largest value: both invert the same branch at
+#: the same depths, the route before until a step is below ``tabulated.RADIUS_RTOL`` (4 EPS) of the radius (that
+#: step's own error far below it), the route now until a step's own error by Newton's rule is below ``NEWTON_SHARE``
+#: of RADIUS_RTOL: each is the root to well within RADIUS_RTOL, plus its last step's rounding, an ulp each (2 EPS);
+#: measured 0.63 EPS, and a radius off by 1e-13 of itself is 450 EPS
+ROUTE_RADIUS = tb.RADIUS_RTOL + 2 * EPS
+#: F_N of the two routes over its largest value: at a given depth F_N = 2 E* ∫(d − g) moves with the radius by
+#: 2 E* (d − g(a)) da, the adhesive stretch's share, over the largest F_N less than the radius's relative change
+#: (measured 0.43 of it on this run), so ROUTE_RADIUS holds it (measured 1.93 EPS; radii off by 1e-13 of themselves
+#: move it 192 EPS)
+ROUTE_NORMAL = ROUTE_RADIUS
+#: F_x of the two routes over its largest value. A knot moved by δ leaves a kink of the right-hand side's second
+#: derivative δ inside a panel, an error of the order of its jump times δ³, nothing at ROOT_ULPS (δ ~ 1e-15); what
+#: moves F_x is the panels themselves: a piece's ends changed by any ulp draw other panels, each held to its check,
+#: whose errors differ by far less than the check (rtol 1e-10). That floor, measured: knots moved by 1e-14 (a few
+#: dozen ulp) 2.1e-13, by 1e-12 and 1e-10 4.2e-13, radii by at most 2 ulp 2.6e-13, the route before 2.3e-13. The
+#: bound is 4 times the floor's 2.6e-13. A knot moved by 1e-12 or 1e-10 of itself is within the floor, so F_x cannot
+#: see it (each knot is held to KNOT_ULPS ulp of the scalar route's by tests/models/test_span_front_knots.py); knots
+#: moved by 1e-8 (1.1e-12), radii off by 1e-12 (2.5e-12) and the brackets' middles as knots (1.6e-10) fail here
+ROUTE_FORCE = 1e-12
+
+
+def test_the_tables_route_is_its_route_of_before_to_its_rounding(paper, monkeypatch):
+    """The table's route (every front knot at once by regula falsi, ``span_front_knots``; an inversion ended by
+    Newton's rule on its step, ``tabulated.NEWTON_SHARE``) against the route before it (Brent's method per knot, the
+    inversion's confirming step) on scenario A at 20° with a 41-point table (95 front knots): F_x within ROUTE_FORCE,
+    F_N within ROUTE_NORMAL and a within ROUTE_RADIUS of each run's largest value (they differ in the last ulps of the
+    knots and radii), and not bit for bit (the route before was run)."""
+    from scipy.optimize import brentq
+
+    from mdr_events.models.continuum import span_front_knots
+
+    def brent(function, low, high, at_low, at_high):
+        return np.array([brentq(lambda x, i=i: float(function(np.array([x]), np.array([i]))[0]), lo, hi,
+                                xtol=EPS * max(abs(lo), abs(hi)), rtol=4 * EPS)
+                         for i, (lo, hi) in enumerate(zip(low, high))])
+
+    table = _paraboloid_table(paper, 41)
+    now = me.simulate(paper, "A", alpha=[20.0], method="continuum", profile=table)
+    monkeypatch.setattr(span_front_knots, "bracketed_roots", brent)
+    monkeypatch.setattr(tb, "NEWTON_SHARE", 0.0)
+    before = me.simulate(paper, "A", alpha=[20.0], method="continuum", profile=table)
+    for name, bound in (("tangential_force", ROUTE_FORCE), ("normal_force", ROUTE_NORMAL),
+                        ("contact_radius", ROUTE_RADIUS)):
+        reference = before[name].values
+        assert np.nanmax(np.abs(now[name].values - reference)) <= bound * np.nanmax(np.abs(reference)), name
+    assert not np.array_equal(now["tangential_force"].values, before["tangential_force"].values)

@@ -32,14 +32,13 @@ integration: its force is linear in time and its events are closed forms (:class
 
 from __future__ import annotations
 
-import bisect
 import enum
 import math
 from typing import Callable, NamedTuple
 
 import numpy as np
-from scipy.optimize import brentq
 
+from . import span_front_knots
 from .anchors import AnchorMap
 from .closed_form import Primitive
 from .graded import Grading
@@ -386,8 +385,9 @@ class SpanIntegrator:
 
         The front is read at the span's ends and its radius knots (the level may turn between them: a knot it
         crosses twice between two readings is missed, which costs panels, not accuracy); a knot between two
-        readings is where the level reaches the piece's value there (Brent's method on the level, to
-        :data:`~.tolerances.EPS` of the variable).
+        readings is where the level reaches the piece's value there, every knot's root at once
+        (:func:`~.span_front_knots.front_knots`: the levels read as arrays, the roots by regula falsi to
+        :data:`~.span_front_knots.ROOT_ULPS` ulp of the variable).
 
         Returns
         -------
@@ -398,20 +398,8 @@ class SpanIntegrator:
         fronts = [(cap, p) for cap in Cap for p, _, _ in self.zones[cap].fronts if not p.constant]
         if not knots or not fronts:
             return []
-        readings = sorted({self.start, self.stop, *self._radius_knots()})
-        found = []
-        for cap, p in fronts:
-            seen = self.zones[cap].anchors
-            levels = [self.level(cap, var) for var in readings]
-            xis = [seen.inverse(p, level) for level in levels]
-            for k in range(len(readings) - 1):
-                low, high = sorted(xis[k:k + 2])
-                for knot in knots[bisect.bisect_right(knots, low):bisect.bisect_left(knots, high)]:
-                    value = seen.piece_value(p, knot)
-                    if (levels[k] - value) * (levels[k + 1] - value) < 0.0:
-                        found.append(brentq(lambda var: self.level(cap, var) - value, readings[k], readings[k + 1],
-                                            xtol=EPS * max(abs(readings[k]), abs(readings[k + 1])), rtol=4 * EPS))
-        return sorted(found)
+        readings = np.array(sorted({self.start, self.stop, *self._radius_knots()}))
+        return span_front_knots.front_knots(self, knots, fronts, readings)
 
     def primitive(self) -> Primitive | None:
         """The span's force in closed form (:mod:`.closed_form`): a moving span without a front on the half-space,
@@ -449,6 +437,9 @@ class SpanIntegrator:
         t = self.time_of(var)
         x = segment.x(t)
         shift = self.caps.centre_shift(a, segment.d(t))
+        key = variable_key(var)
+        if key is not None:  # (level's memo: the events read a panel's end right after its check reading there)
+            self._last_level = (key, x, shift)
         positive = self.positive.size(x - shift, a)
         negative = self.negative.size(x + shift, a)
         sticking = self.medium.measure(0.0, a) - positive - negative
@@ -483,9 +474,11 @@ class SpanIntegrator:
         float
             The shift (m).
         """
-        for cap in Cap:
-            if self.zones[cap].edge_in_zone:
-                return cap * self.medium.shift(self.K, a)
+        # (both caps in Cap's order, without iterating the enum: a shrinking span reads this at every reading)
+        if self.positive.edge_in_zone:
+            return Cap.POSITIVE * self.medium.shift(self.K, a)
+        if self.negative.edge_in_zone:
+            return Cap.NEGATIVE * self.medium.shift(self.K, a)
         return x - self.anchors.piece_value(self.anchors.pieces[-1], a)
 
     # --- the event functions -----------------------------------------------------------------

@@ -204,7 +204,9 @@ def _panel(quadrature: _Quadrature, low: float, h: float, end: float) -> tuple[n
         return readings, abs(h) * abs(reading - float(panel_rule.at_end @ readings)), reading
     if shared[0] != low:  # (the first panel, or one after an event's root: read the start, kept for a retry)
         shared[:] = [low, rhs(low, None)[0]]
-    readings = np.array([shared[1], *(rhs(low + h * x, None)[0] for x in panel_rule.nodes[1:])])
+    # (the nodes as Python floats: the right-hand side's arithmetic on NumPy scalars cost a third more, and its memos
+    # key Python floats alone)
+    readings = np.array([shared[1], *(rhs(low + h * x, None)[0] for x in panel_rule.nodes[1:].tolist())])
     reading = rhs(end, None)[0]
     return readings, abs(h) * abs(reading - float(panel_rule.at_end @ readings)), reading
 
