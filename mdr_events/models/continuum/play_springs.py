@@ -60,7 +60,7 @@ from .play_line import SpringLine, spring_line
 from .play_quadrature import EDGE_SHARE, NODES, _Breaks, _Quadrature
 
 __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
-           "UPPER_CAP", "PANELS", "NODES", "EDGE_SHARE", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
+           "UPPER_CAP", "PANELS", "NODES", "EDGE_SHARE", "KINK_HALVINGS", "KINK_CUTS", "SETTLED_BRACKETS", "GOLDEN_STEPS",
            "GOLDEN_TABLE_RTOL", "GOLDEN_TABLE_POINTS",
            "CONCAVITY_SAMPLES", "EDGE_ROUND_OFF", "REMEMBER_SHIFTS"]
 
@@ -72,6 +72,11 @@ KINK_HALVINGS = 60
 #: spacing to two neighbouring doubles (16 cuts took 12), each evaluation's fixed cost (0.05-0.2 ms on a layer: the
 #: chain's clamps, the attachments, the springs' values) above its 63 points a bracket (0.3-1.5 us each).
 KINK_CUTS = 64
+#: Whether the kinks' bisection stops cutting a bracket once no double lies between its ends (the others' cuts read
+#: alone: a cut's evaluation holds only the brackets still open; ``False``: every bracket cut until all are settled,
+#: the route of before, which the tests compare it with: the same kinks bit for bit, a settled bracket's cuts being
+#: its ends).
+SETTLED_BRACKETS = True
 #: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
 KINK_ROUNDS = 6
 _sum = np.add.reduce
@@ -835,16 +840,22 @@ class PlaySprings:
         """Each bracket (at ``t``, or at its own time of an array of them) cut into :data:`KINK_CUTS` at once, kept where the provenance first differs from ``low``'s,
         until :data:`KINK_HALVINGS` halvings' worth."""
         share = np.arange(1, KINK_CUTS) / KINK_CUTS
+        low, high = np.array(low, dtype=float), np.array(high, dtype=float)
         for _ in range(-(-KINK_HALVINGS // int(np.log2(KINK_CUTS)))):
-            if np.all(np.nextafter(low, high) >= high):  # (no double between the ends: every cut is one of them, and
-                break  # the bracket, its provenances read again, stays)
-            points = low[:, None] + (high - low)[:, None] * share[None, :]
-            at = np.repeat(t, KINK_CUTS - 1) if np.ndim(t) else t
-            same = (self.anchors(points.ravel(), at)[1].reshape(points.shape) == low_label[:, None])
-            first = np.argmin(np.concatenate([same, np.zeros((len(low), 1), bool)], axis=1), axis=1)
-            edges = np.concatenate([low[:, None], points, high[:, None]], axis=1)
-            rows = np.arange(len(low))
-            low, high = edges[rows, first], edges[rows, first + 1]
+            # (no double between a bracket's ends: every cut is one of them, and the bracket, its provenances read
+            # again, stays; such brackets are not cut again, the others' cuts read alone: :data:`SETTLED_BRACKETS`)
+            live = np.nextafter(low, high) < high
+            if not np.any(live):
+                break
+            rows = np.flatnonzero(live) if SETTLED_BRACKETS else np.arange(low.size)
+            below, above = low[rows], high[rows]
+            points = below[:, None] + (above - below)[:, None] * share[None, :]
+            at = np.repeat(np.asarray(t)[rows], KINK_CUTS - 1) if np.ndim(t) else t
+            same = (self.anchors(points.ravel(), at)[1].reshape(points.shape) == low_label[rows, None])
+            first = np.argmin(np.concatenate([same, np.zeros((rows.size, 1), bool)], axis=1), axis=1)
+            edges = np.concatenate([below[:, None], points, above[:, None]], axis=1)
+            each = np.arange(rows.size)
+            low[rows], high[rows] = edges[each, first], edges[each, first + 1]
         return 0.5 * (low + high)
 
     def tangential_force(self, times) -> np.ndarray:
