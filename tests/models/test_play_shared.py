@@ -1,7 +1,8 @@
 """The per-spring route's readings shared (issue 34's performance, the events' sequential readings): the output
 samples, the contact's pieces' ends the events' searches start from and the extrema's scan read in one call
 (``play_run.spring_run``, ``play_run.SHARED_SAMPLES``), and the kinks' bisection cutting only the brackets still open
-(``PlaySprings._bisect``, ``play_springs.SETTLED_BRACKETS``). Each must give what the route of before gave, bit for bit:
+(``PlaySprings._bisect``, ``play_springs.SETTLED_BRACKETS``), and an event's step's shares with and without the kink
+search read in one call (``play_run.SHARED_READINGS``, ``PlaySprings.probed_states`` with one ``kinks`` a time). Each must give what the route of before gave, bit for bit:
 no tolerance is derived because none is spent (each time's springs are read as a call at that time alone, each
 group's radii in the call of before; a settled bracket's cuts are its two ends, so cutting it again keeps it).
 """
@@ -16,6 +17,7 @@ import pytest
 import mdr_events as me
 from mdr_events.models.continuum import play_run, play_springs
 from mdr_events.models.continuum.play_springs import KINK_CUTS, KINK_HALVINGS, PlaySprings
+from play_recorders import made_plays
 
 #: The paper's 5 mm layer on a bonded base.
 LAYER = 5e-3
@@ -63,8 +65,9 @@ CASES = {"coulomb fretting": (lambda: layer_contact("coulomb", False), fretting)
 
 
 @pytest.mark.parametrize("case", list(CASES))
-@pytest.mark.parametrize("flag", [(play_run, "SHARED_SAMPLES"), (play_springs, "SETTLED_BRACKETS")],
-                         ids=["shared samples", "settled brackets"])
+@pytest.mark.parametrize("flag", [(play_run, "SHARED_SAMPLES"), (play_springs, "SETTLED_BRACKETS"),
+                                  (play_run, "SHARED_READINGS")],
+                         ids=["shared samples", "settled brackets", "shared readings"])
 def test_the_runs_are_the_route_s_of_before_bit_for_bit(case, flag, monkeypatch):
     """Every output of ``simulate`` (the samples, the event log, the extrema) with the readings shared, or the settled
     brackets left, is the route's of before."""
@@ -73,6 +76,31 @@ def test_the_runs_are_the_route_s_of_before_bit_for_bit(case, flag, monkeypatch)
     monkeypatch.setattr(*flag, False)
     before = me.simulate(contact, motion, "continuum", samples=SAMPLES)
     assert now.identical(before), [name for name in now.data_vars if not now[name].identical(before[name])]
+
+
+@pytest.mark.parametrize("case", ["coulomb fretting", "tau0+coulomb A 20° adhesive"])
+def test_times_with_and_without_the_kink_search_read_together_are_each_time_s_own(case, monkeypatch):
+    """The states and the probes' provenance at times read together, some with the kink search and some without
+    (``PlaySprings.probed_states`` with one ``kinks`` a time: an event's step asking shares and guesses), are those
+    of each time read alone with its own."""
+    made = made_plays(monkeypatch)
+    contact, motion = (make() for make in CASES[case])
+    me.simulate(contact, motion, "continuum", samples=SAMPLES)
+    play = made[0]
+    start, end = play.path.first_contact_time(), play.path.corner_times[-1]
+    times = np.array([time for time in np.union1d(np.linspace(start, end, SAMPLES), play.path.corner_times)
+                      if play.radius(float(time)) > 0.0])
+    kinks = np.arange(times.size) % 2 == 0
+    probes = np.concatenate([play.radius(float(time)) * np.array([0.0, 0.5, 1.0 - 1e-12]) for time in times])
+    probe_time = np.repeat(np.arange(times.size), 3)
+    states, probed = play.probed_states(times, probes, probe_time, kinks)
+    searched_kinks = 0
+    for k, time in enumerate(times):
+        alone, labels = play.probed_state(float(time), probes[probe_time == k], bool(kinks[k]))
+        assert states[k] == alone, (time, kinks[k])
+        assert probed[probe_time == k].tolist() == labels.tolist(), (time, kinks[k])
+        searched_kinks += bool(kinks[k]) and alone != play.probed_state(float(time), probes[probe_time == k], False)[0]
+    assert searched_kinks  # (the kink search changes some times' states: the two kinds differ there)
 
 
 class _Steps:

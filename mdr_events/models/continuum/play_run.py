@@ -63,7 +63,8 @@ from .state import Event, EventKind
 from .tolerances import Tolerances
 
 __all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "SEGMENT_SCAN",
-           "PROBE_POINTS", "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH", "PROBE_BOUND", "SHARED_SAMPLES", "SpringRun", "spring_run"]
+           "PROBE_POINTS", "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH", "PROBE_BOUND", "SHARED_SAMPLES", "SHARED_READINGS", "SpringRun",
+           "spring_run"]
 
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
@@ -101,6 +102,11 @@ SEGMENT_SCAN = 3
 #: Whether :func:`spring_run` reads the output samples, the pieces' ends and the extrema's scan in one call
 #: (``False``: one call each, the route of before, which the tests compare it with).
 SHARED_SAMPLES = True
+#: Whether a step's shares with and without the kink search (:class:`_Reading` ``SHARE`` and ``GUESS``) are read in
+#: one call of :func:`_probed_all`, the times without it ending with the kink search's first round, and the events'
+#: directions in one evaluation of the anchors (:func:`_events`) (``False``: a call each, the route of before, which
+#: the tests compare it with).
+SHARED_READINGS = True
 #: The springs' events the spans' frictionless run logs and this route replaces.
 _SPRING_EVENTS = frozenset({EventKind.SLIP_ONSET, EventKind.FULL_SLIP, EventKind.RE_STICK, EventKind.FRONT_AT_CENTRE,
                             EventKind.FRONT_AT_EDGE})
@@ -306,10 +312,14 @@ def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, st
             found.append((len(searches), kind))
             searches.append(_bisect(low + start, probes[k] + start, reached, kind is EventKind.SLIP_ONSET, play))
     results = searched(lambda asks: _readings(play, asks), searches)
-    return [_event(play, time if kind is EventKind.RE_STICK else results[time], start, kind) for time, kind in found]
+    found = [(time if kind is EventKind.RE_STICK else results[time], kind) for time, kind in found]
+    if not SHARED_READINGS:
+        return [_event(play, time, start, kind) for time, kind in found]
+    return _events(play, found, start)
 
 
-def _probed_all(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> tuple[list[SpringState], np.ndarray]:
+def _probed_all(play: PlaySprings, times: np.ndarray,
+                kinks: bool | np.ndarray = True) -> tuple[list[SpringState], np.ndarray]:
     """The springs' state at each of ``times`` (all in contact) and their share at a cap with the centre and the edge
     probed (:func:`_shares`): the centre and the edge read with the quadrature's nodes, the other probes where none is
     at a cap; the states of all the times in one call (:meth:`~.play_springs.PlaySprings.probed_states`), the other
@@ -361,12 +371,15 @@ def _readings(play: PlaySprings, asks: list) -> list[float]:
     out = [0.0] * len(asks)
     play.remember_radii([time for _, time in asks])
     for reading in _Reading:
-        rows = [k for k, (kind, _) in enumerate(asks) if kind is reading]
+        kinds = (_Reading.SHARE, _Reading.GUESS) if SHARED_READINGS and reading is _Reading.SHARE else (reading,)
+        if SHARED_READINGS and reading is _Reading.GUESS:  # (read with the shares)
+            continue
+        rows = [k for k, (kind, _) in enumerate(asks) if kind in kinds]
         if not rows:
             continue
         times = np.array([asks[k][1] for k in rows])
         if reading in (_Reading.SHARE, _Reading.GUESS):
-            values = _shares(play, times, reading is _Reading.SHARE)
+            values = _shares(play, times, np.array([asks[k][0] is _Reading.SHARE for k in rows]))
         elif reading is _Reading.COMPRESSED:
             values = _compressed(play, times)
         else:
@@ -376,17 +389,17 @@ def _readings(play: PlaySprings, asks: list) -> list[float]:
     return out
 
 
-def _shares(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> np.ndarray:
+def _shares(play: PlaySprings, times: np.ndarray, kinks: bool | np.ndarray = True) -> np.ndarray:
     """The share of the contact's length at a cap at each of ``times``, or the least positive float where only the
     centre spring or the edge is (a zone opening at ``ξ = 0`` between the quadrature's nodes: the slip onset of
     scenario A); 0 out of contact. Under Coulomb's law alone the compressed zone's (its springs in tension hold no
     shift: they slide from the start, and the slip events are the compressed zone's, as the spans log them). Without
-    ``kinks`` the quadrature's panels are not split at the anchors' kinks (:meth:`~.play_springs.PlaySprings.state`).
-    All the times at once (:func:`_probed_all`)."""
+    ``kinks`` the quadrature's panels are not split at the anchors' kinks (:meth:`~.play_springs.PlaySprings.state`;
+    for every time or one per time). All the times at once (:func:`_probed_all`)."""
     out = np.zeros(times.shape)
     inside = np.array([play.radius(float(time)) > 0 for time in times], dtype=bool)
     if np.any(inside):
-        out[inside] = _probed_all(play, times[inside], kinks)[1]
+        out[inside] = _probed_all(play, times[inside], np.broadcast_to(kinks, times.shape)[inside])[1]
     return out
 
 
@@ -560,16 +573,29 @@ def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Eve
     towards ``+x``; −1 the upper), the more covered of the two at the probes of :func:`_shares` (the compressed
     springs under Coulomb's law alone), or where no probe is at a cap on the quadrature's nodes
     (:meth:`~.play_springs.PlaySprings.cap_sides`: a zone narrower than the probes' spacing)."""
-    a = play.radius(time)
-    coulomb_alone = not play.shift(time) > 0.0
-    edge = min(a, float(play.compressed_radius(time))) if coulomb_alone else a
-    points = edge * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)
-    labels = play.anchors(points, time)[1]
+    edge = _edge(play, time, not play.shift(time) > 0.0)
+    labels = play.anchors(edge * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS), time)[1]
+    return _directed(play, time, start, kind, edge, labels)
+
+
+def _events(play: PlaySprings, found: list, start: float) -> list[Event]:
+    """:func:`_event` at each ``(time, kind)`` of ``found``, the probes of all of them read in one evaluation of the
+    anchors (each spring at its own time: its provenance as a call at that time alone gives it)."""
+    if not found:
+        return []
+    edges = np.array([_edge(play, time, not play.shift(time) > 0.0) for time, _ in found])
+    points = (edges[:, None] * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)).ravel()
+    labels = play.anchors(points, np.repeat([time for time, _ in found], PROBE_POINTS))[1].reshape(len(found), -1)
+    return [_directed(play, time, start, kind, edge, row) for (time, kind), edge, row in zip(found, edges, labels)]
+
+
+def _directed(play: PlaySprings, time: float, start: float, kind: EventKind, edge: float, labels) -> Event:
+    """The event of :func:`_event` from the provenance ``labels`` of its probes within ``edge``."""
     lower, upper = np.count_nonzero(np.isin(labels, LOWER_CAP)), np.count_nonzero(np.isin(labels, UPPER_CAP))
     if lower == upper == 0:  # (a zone narrower than the probes' spacing, found on the quadrature's nodes)
-        lower, upper = play.cap_sides(time, edge)
+        lower, upper = play.cap_sides(time, float(edge))
     direction = 0 if lower == upper == 0 else (1 if lower >= upper else -1)
-    return Event(time - start, kind, float(play._d(time)), a, float(play._x(time)), direction)
+    return Event(time - start, kind, float(play._d(time)), play.radius(time), float(play._x(time)), direction)
 
 
 def _monotone(play: PlaySprings, times: np.ndarray) -> bool:
