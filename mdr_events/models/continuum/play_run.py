@@ -280,9 +280,15 @@ def _piece_ends(events, start: float) -> np.ndarray:
     start after a reversal (a re-stick there) and its last time (its end, or :data:`END_PROBE` before it where the
     contact ends: the radius 0 at the end itself)."""
     pieces = log_pieces(events)
-    lasts = [end if reversal_end(events, end) else end - END_PROBE * (end - begin) for begin, end, _ in pieces]
+    lasts = _lasts(events, pieces)
     return np.array([begin + start for begin, _, reversal in pieces if reversal] + [last + start for last in lasts],
                     dtype=float)
+
+
+def _lasts(events, pieces: list) -> list[float]:
+    """Each piece's last time read (s from first contact): its end where a reversal ends it, else :data:`END_PROBE`
+    of it before its end (the radius 0 at the contact's end itself)."""
+    return [end if reversal_end(events, end) else end - END_PROBE * (end - begin) for begin, end, _ in pieces]
 
 
 def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, start: float, events,
@@ -292,7 +298,7 @@ def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, st
     slip onset and full slip (every piece's searched side by side: :func:`~.play_search.searched`). ``shares``: the
     share at a cap at :func:`_piece_ends`' times where read already (:func:`spring_run`)."""
     pieces = log_pieces(events)
-    lasts = [end if reversal_end(events, end) else end - END_PROBE * (end - begin) for begin, end, _ in pieces]
+    lasts = _lasts(events, pieces)
     if shares is None:
         asked = _piece_ends(events, start)
         shares = dict(zip(asked.tolist(), _shares(play, asked).tolist()))
