@@ -15,7 +15,8 @@ extrema of ``F_x`` are the largest and least of the samples and the route's own 
 (:func:`_scanned_force_extrema`, :func:`_extrema_scan`: :data:`SEGMENT_SCAN` times inside each path segment in
 contact, so that they do not hang on the output times) refined by bounded minimisation between its neighbours.
 
-The output times are read at once (:func:`_probed_all`, :meth:`~.play_springs.PlaySprings.probed_states`), and the
+The output times are read at once (:func:`_probed_all`, :meth:`~.play_springs.PlaySprings.probed_states`), with
+the pieces' ends the events' searches start from and the extrema's scan (:func:`spring_run`, :data:`SHARED_SAMPLES`), and the
 events of all the pieces are searched side by side (:func:`~.play_search.searched`): each search a generator that yields the
 readings it needs (the share, the share without the kink search, the springs' distance outside their windows) and is
 sent their values, every step's readings of all the searches read in one batch (:mod:`.play_search`: Brent's method
@@ -39,6 +40,7 @@ the same answers bit for bit.
 from __future__ import annotations
 
 from enum import Enum
+from typing import NamedTuple
 
 import numpy as np
 from scipy.optimize import minimize_scalar
@@ -61,7 +63,8 @@ from .state import Event, EventKind
 from .tolerances import Tolerances
 
 __all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "SEGMENT_SCAN",
-           "PROBE_POINTS", "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH", "PROBE_BOUND"]
+           "PROBE_POINTS", "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH", "PROBE_BOUND", "SHARED_SAMPLES", "SHARED_READINGS", "SpringRun",
+           "spring_run"]
 
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
@@ -96,6 +99,14 @@ EXTREMUM_XTOL = 1e-12
 #: 1.4-3.8 times a run of 21-201 samples and left segments empty on a path of more; 65 a segment, 7.4 times a run of 200
 #: segments.)
 SEGMENT_SCAN = 3
+#: Whether :func:`spring_run` reads the output samples, the pieces' ends and the extrema's scan in one call
+#: (``False``: one call each, the route of before, which the tests compare it with).
+SHARED_SAMPLES = True
+#: Whether a step's shares with and without the kink search (:class:`_Reading` ``SHARE`` and ``GUESS``) are read in
+#: one call of :func:`_probed_all`, the times without it ending with the kink search's first round, and the events'
+#: directions in one evaluation of the anchors (:func:`_events`) (``False``: a call each, the route of before, which
+#: the tests compare it with).
+SHARED_READINGS = True
 #: The springs' events the spans' frictionless run logs and this route replaces.
 _SPRING_EVENTS = frozenset({EventKind.SLIP_ONSET, EventKind.FULL_SLIP, EventKind.RE_STICK, EventKind.FRONT_AT_CENTRE,
                             EventKind.FRONT_AT_EDGE})
@@ -154,41 +165,143 @@ def run_play_springs(model: KernelModel, paths, times, tolerances: Tolerances = 
     raw["extrema"] = []
     for case, (path, solution) in enumerate(zip(paths, raw["solutions"])):
         play = PlaySprings(line, path, SpanHistory(solution) if _adhesive(model) else None)
-        start = path.first_contact_time()
         radius = raw["contact_radius"][case]
-        force, sliding, shares = _samples(play, raw["time"] + start, radius)
-        raw["tangential_force"][case] = np.where(np.isnan(raw["tangential_force"][case]), np.nan, force)
-        raw["sliding_fraction"][case] = np.where(radius > 0, sliding, np.nan)
+        run = spring_run(play, raw["time"], radius, path, solution.events, solution.end_time,
+                         lambda scan: contact_radii(solution, scan), limits)
+        raw["tangential_force"][case] = np.where(np.isnan(raw["tangential_force"][case]), np.nan, run.force)
+        raw["sliding_fraction"][case] = np.where(radius > 0, run.sliding, np.nan)
         kept = [event for event in solution.events if event.kind not in _SPRING_EVENTS]
-        raw["events"][case] = sorted(kept + _spring_events(play, raw["time"], shares, start, solution.events),
-                                     key=lambda event: event.time)
+        raw["events"][case] = sorted(kept + run.events, key=lambda event: event.time)
         extrema = solution_extrema(solution)
-        extrema.update(_scanned_force_extrema(play, raw["time"], force, start, path, solution.end_time,
-                                             lambda scan: contact_radii(solution, scan), limits))
+        extrema.update(run.extrema)
         raw["extrema"].append(extrema)
     return raw
+
+
+class SpringRun(NamedTuple):
+    """What the per-spring route gives of a path's run (:func:`spring_run`)."""
+
+    #: ``F_x`` at the output samples (N; 0 out of contact)
+    force: np.ndarray
+    #: the sliding fraction there (nan out of contact)
+    sliding: np.ndarray
+    #: the springs' events (:func:`_spring_events`), on the clock from first contact
+    events: list
+    #: ``F_x``'s extrema and their times (:func:`_scanned_force_extrema`)
+    extrema: dict
+
+
+def spring_run(play: PlaySprings, times: np.ndarray, radius: np.ndarray, path, events, end: float, radii,
+               limits: Limits) -> SpringRun:
+    """``F_x`` and the sliding fraction at the output samples, the springs' events and ``F_x``'s extrema of one path,
+    for every route that runs the springs one by one (the spans' run here, the rate law's edge in
+    :mod:`.rate_coulomb`). The three sets of times whose springs are read with the kink search (the output samples, the
+    contact's pieces' ends the events' searches start from, :func:`_piece_ends`, and the extrema's scan,
+    :func:`_extrema_scan`) are read in one call of :func:`_probed_all` (:func:`_samples_together`: its kink search's
+    rounds and cuts waited on once, not three times; each time's values those of a call at that time alone, bit for
+    bit; :data:`SHARED_SAMPLES` ``False``: one call each, the route of before).
+
+    Parameters
+    ----------
+    play : PlaySprings
+        The springs.
+    times : numpy.ndarray
+        The output samples' times (s from first contact).
+    radius : numpy.ndarray
+        The contact radius there as the route computes it (m).
+    path : Path
+        The path.
+    events : list of Event
+        The edge's events and the path's corners the route logs (the contact's pieces: :func:`~.play_pieces.log_pieces`).
+    end : float
+        The contact's end (s from first contact).
+    radii : callable
+        The contact radius (m) at an array of times (s from first contact), as the route computes it.
+    limits : Limits
+        The resource limits the extrema's scan counts against.
+
+    Returns
+    -------
+    SpringRun
+        The samples, the springs' events and ``F_x``'s extrema.
+    """
+    start = path.first_contact_time()
+    scan = _extrema_scan(end, path.corner_times - start, limits)
+    if SHARED_SAMPLES:
+        asked = _piece_ends(events, start)
+        (force, sliding, shares), (_, _, at_ends), (scanned, _, _) = _samples_together(
+            play, [(times + start, radius), (asked, None), (scan + start, radii(scan))])
+        found = _spring_events(play, times, shares, start, events, dict(zip(asked.tolist(), at_ends.tolist())))
+    else:
+        force, sliding, shares = _samples(play, times + start, radius)
+        found = _spring_events(play, times, shares, start, events)
+        scanned = _samples(play, scan + start, radii(scan))[0]
+    return SpringRun(force, sliding, found, _scanned_force_extrema(play, times, force, start, path, scan, scanned))
 
 
 def _samples(play: PlaySprings, times: np.ndarray, radius: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``F_x``, the sliding fraction (length at a cap over ``a``) and the share of :func:`_shares` at each time in
     contact (0, nan and 0 elsewhere), all the times at once (:func:`_probed_all`)."""
-    force, sliding, shares = np.zeros(times.shape), np.full(times.shape, np.nan), np.zeros(times.shape)
-    play.remember_radii(times[radius > 0])
-    rows = np.array([k for k in np.flatnonzero(radius > 0) if play.radius(float(times[k])) > 0], dtype=np.intp)
-    states, shares[rows] = _probed_all(play, times[rows])
-    for k, state in zip(rows.tolist(), states):
-        force[k], sliding[k] = state.force, min(state.length / play.radius(float(times[k])), 1.0)
-    return force, sliding, shares
+    return _samples_together(play, [(times, radius)])[0]
 
 
-def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, start: float, events) -> list[Event]:
+def _samples_together(play: PlaySprings, groups: list) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    """:func:`_samples` of each ``(times, radius)`` of ``groups`` (``radius`` ``None``: the springs' own, each time's
+    read alone, as :func:`_shares` reads them), every group's distinct times in contact read in one call of
+    :func:`_probed_all` (each time's values those of a call at that time alone:
+    :meth:`~.play_springs.PlaySprings.probed_states`). The radii are read group by group in their order, each group's
+    in one call of :meth:`~.play_springs.PlaySprings.remember_radii` as :func:`_samples` reads them (the layer's branch
+    inverted for many depths at once holds each to its tolerance, not to the bit of a call on it alone: the groups'
+    radii, and so their values, those of the calls one at a time; the scan's are read before the events' searches,
+    not after them, which differs only at a time both read, an exact tie of a scan's time with a search's)."""
+    rows = []
+    for times, radius in groups:
+        if radius is not None:
+            play.remember_radii(times[radius > 0])
+        rows.append(np.array([k for k in range(times.size) if (radius is None or radius[k] > 0)
+                              and play.radius(float(times[k])) > 0], dtype=np.intp))
+    distinct, inverse = np.unique(np.concatenate([times[row] for (times, _), row in zip(groups, rows)]),
+                                  return_inverse=True)
+    states, at = _probed_all(play, distinct)
+    out, first = [], 0
+    for (times, _), row in zip(groups, rows):
+        force, sliding, shares = np.zeros(times.shape), np.full(times.shape, np.nan), np.zeros(times.shape)
+        mine = inverse[first:first + row.size]
+        first += row.size
+        shares[row] = at[mine]
+        for k, index in zip(row.tolist(), mine.tolist()):
+            force[k], sliding[k] = states[index].force, min(states[index].length / play.radius(float(times[k])), 1.0)
+        out.append((force, sliding, shares))
+    return out
+
+
+def _piece_ends(events, start: float) -> np.ndarray:
+    """The times (path clock) whose share at a cap :func:`_spring_events` reads before its searches: each piece's
+    start after a reversal (a re-stick there) and its last time (its end, or :data:`END_PROBE` before it where the
+    contact ends: the radius 0 at the end itself)."""
+    pieces = log_pieces(events)
+    lasts = _lasts(events, pieces)
+    return np.array([begin + start for begin, _, reversal in pieces if reversal] + [last + start for last in lasts],
+                    dtype=float)
+
+
+def _lasts(events, pieces: list) -> list[float]:
+    """Each piece's last time read (s from first contact): its end where a reversal ends it, else :data:`END_PROBE`
+    of it before its end (the radius 0 at the contact's end itself)."""
+    return [end if reversal_end(events, end) else end - END_PROBE * (end - begin) for begin, end, _ in pieces]
+
+
+def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, start: float, events,
+                   shares: dict | None = None) -> list[Event]:
     """The springs' events (module docstring) on the clock from first contact: in each piece of a contact between
     tangential reversals, a re-stick at its start where springs were at a cap before the reversal, then the first
-    slip onset and full slip (every piece's searched side by side: :func:`~.play_search.searched`)."""
+    slip onset and full slip (every piece's searched side by side: :func:`~.play_search.searched`). ``shares``: the
+    share at a cap at :func:`_piece_ends`' times where read already (:func:`spring_run`)."""
     pieces = log_pieces(events)
-    lasts = [end if reversal_end(events, end) else end - END_PROBE * (end - begin) for begin, end, _ in pieces]
-    asked = [begin + start for begin, _, reversal in pieces if reversal] + [last + start for last in lasts]
-    shares = dict(zip(asked, _shares(play, np.array(asked, dtype=float)).tolist()))
+    lasts = _lasts(events, pieces)
+    if shares is None:
+        asked = _piece_ends(events, start)
+        shares = dict(zip(asked.tolist(), _shares(play, asked).tolist()))
     found, searches = [], []  # (the events in their order: a time, or the index of its search)
     for (begin, end, reversal), last in zip(pieces, lasts):
         if reversal and shares[begin + start] > 0.0:
@@ -205,10 +318,14 @@ def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, st
             found.append((len(searches), kind))
             searches.append(_bisect(low + start, probes[k] + start, reached, kind is EventKind.SLIP_ONSET, play))
     results = searched(lambda asks: _readings(play, asks), searches)
-    return [_event(play, time if kind is EventKind.RE_STICK else results[time], start, kind) for time, kind in found]
+    found = [(time if kind is EventKind.RE_STICK else results[time], kind) for time, kind in found]
+    if not SHARED_READINGS:
+        return [_event(play, time, start, kind) for time, kind in found]
+    return _events(play, found, start)
 
 
-def _probed_all(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> tuple[list[SpringState], np.ndarray]:
+def _probed_all(play: PlaySprings, times: np.ndarray,
+                kinks: bool | np.ndarray = True) -> tuple[list[SpringState], np.ndarray]:
     """The springs' state at each of ``times`` (all in contact) and their share at a cap with the centre and the edge
     probed (:func:`_shares`): the centre and the edge read with the quadrature's nodes, the other probes where none is
     at a cap; the states of all the times in one call (:meth:`~.play_springs.PlaySprings.probed_states`), the other
@@ -260,12 +377,15 @@ def _readings(play: PlaySprings, asks: list) -> list[float]:
     out = [0.0] * len(asks)
     play.remember_radii([time for _, time in asks])
     for reading in _Reading:
-        rows = [k for k, (kind, _) in enumerate(asks) if kind is reading]
+        kinds = (_Reading.SHARE, _Reading.GUESS) if SHARED_READINGS and reading is _Reading.SHARE else (reading,)
+        if SHARED_READINGS and reading is _Reading.GUESS:  # (read with the shares)
+            continue
+        rows = [k for k, (kind, _) in enumerate(asks) if kind in kinds]
         if not rows:
             continue
         times = np.array([asks[k][1] for k in rows])
         if reading in (_Reading.SHARE, _Reading.GUESS):
-            values = _shares(play, times, reading is _Reading.SHARE)
+            values = _shares(play, times, np.array([asks[k][0] is _Reading.SHARE for k in rows]))
         elif reading is _Reading.COMPRESSED:
             values = _compressed(play, times)
         else:
@@ -275,17 +395,17 @@ def _readings(play: PlaySprings, asks: list) -> list[float]:
     return out
 
 
-def _shares(play: PlaySprings, times: np.ndarray, kinks: bool = True) -> np.ndarray:
+def _shares(play: PlaySprings, times: np.ndarray, kinks: bool | np.ndarray = True) -> np.ndarray:
     """The share of the contact's length at a cap at each of ``times``, or the least positive float where only the
     centre spring or the edge is (a zone opening at ``ξ = 0`` between the quadrature's nodes: the slip onset of
     scenario A); 0 out of contact. Under Coulomb's law alone the compressed zone's (its springs in tension hold no
     shift: they slide from the start, and the slip events are the compressed zone's, as the spans log them). Without
-    ``kinks`` the quadrature's panels are not split at the anchors' kinks (:meth:`~.play_springs.PlaySprings.state`).
-    All the times at once (:func:`_probed_all`)."""
+    ``kinks`` the quadrature's panels are not split at the anchors' kinks (:meth:`~.play_springs.PlaySprings.state`;
+    for every time or one per time). All the times at once (:func:`_probed_all`)."""
     out = np.zeros(times.shape)
     inside = np.array([play.radius(float(time)) > 0 for time in times], dtype=bool)
     if np.any(inside):
-        out[inside] = _probed_all(play, times[inside], kinks)[1]
+        out[inside] = _probed_all(play, times[inside], np.broadcast_to(kinks, times.shape)[inside])[1]
     return out
 
 
@@ -459,16 +579,29 @@ def _event(play: PlaySprings, time: float, start: float, kind: EventKind) -> Eve
     towards ``+x``; −1 the upper), the more covered of the two at the probes of :func:`_shares` (the compressed
     springs under Coulomb's law alone), or where no probe is at a cap on the quadrature's nodes
     (:meth:`~.play_springs.PlaySprings.cap_sides`: a zone narrower than the probes' spacing)."""
-    a = play.radius(time)
-    coulomb_alone = not play.shift(time) > 0.0
-    edge = min(a, float(play.compressed_radius(time))) if coulomb_alone else a
-    points = edge * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)
-    labels = play.anchors(points, time)[1]
+    edge = _edge(play, time, not play.shift(time) > 0.0)
+    labels = play.anchors(edge * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS), time)[1]
+    return _directed(play, time, start, kind, edge, labels)
+
+
+def _events(play: PlaySprings, found: list, start: float) -> list[Event]:
+    """:func:`_event` at each ``(time, kind)`` of ``found``, the probes of all of them read in one evaluation of the
+    anchors (each spring at its own time: its provenance as a call at that time alone gives it)."""
+    if not found:
+        return []
+    edges = np.array([_edge(play, time, not play.shift(time) > 0.0) for time, _ in found])
+    points = (edges[:, None] * np.linspace(0.0, 1.0 - PROBE_SHARE, PROBE_POINTS)).ravel()
+    labels = play.anchors(points, np.repeat([time for time, _ in found], PROBE_POINTS))[1].reshape(len(found), -1)
+    return [_directed(play, time, start, kind, edge, row) for (time, kind), edge, row in zip(found, edges, labels)]
+
+
+def _directed(play: PlaySprings, time: float, start: float, kind: EventKind, edge: float, labels) -> Event:
+    """The event of :func:`_event` from the provenance ``labels`` of its probes within ``edge``."""
     lower, upper = np.count_nonzero(np.isin(labels, LOWER_CAP)), np.count_nonzero(np.isin(labels, UPPER_CAP))
     if lower == upper == 0:  # (a zone narrower than the probes' spacing, found on the quadrature's nodes)
-        lower, upper = play.cap_sides(time, edge)
+        lower, upper = play.cap_sides(time, float(edge))
     direction = 0 if lower == upper == 0 else (1 if lower >= upper else -1)
-    return Event(time - start, kind, float(play._d(time)), a, float(play._x(time)), direction)
+    return Event(time - start, kind, float(play._d(time)), play.radius(time), float(play._x(time)), direction)
 
 
 def _monotone(play: PlaySprings, times: np.ndarray) -> bool:
@@ -499,12 +632,12 @@ def _extrema_scan(end: float, corners: np.ndarray, limits: Limits) -> np.ndarray
     return np.unique(np.concatenate([[0.0, end], within]))
 
 
-def _scanned_force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path, end: float,
-                          radii, limits: Limits) -> dict:
+def _scanned_force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path,
+                           scan: np.ndarray, scanned: np.ndarray) -> dict:
     """:func:`_force_extrema` of the output samples and the route's own scan of the run (:func:`_extrema_scan`), so
     that the extrema do not hang on the output times (issue 32 Y2: one sample at the first contact gave a maximum of
-    0), for every route that runs the springs one by one (the spans' run here, the rate law's edge in
-    :mod:`.rate_coulomb`).
+    0), for every route that runs the springs one by one (:func:`spring_run`: the spans' run here, the rate law's
+    edge in :mod:`.rate_coulomb`).
 
     Parameters
     ----------
@@ -516,20 +649,14 @@ def _scanned_force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarr
         The first contact (s, path clock).
     path : Path
         The path.
-    end : float
-        The contact's end (s from first contact).
-    radii : callable
-        The contact radius (m) at an array of times (s from first contact), as the route computes it.
-    limits : Limits
-        The resource limits the scan counts against.
+    scan, scanned : numpy.ndarray
+        The scan's times (s from first contact) and ``F_x`` there (N).
 
     Returns
     -------
     dict
         As :func:`_force_extrema`.
     """
-    scan = _extrema_scan(end, path.corner_times - start, limits)
-    scanned, _, _ = _samples(play, scan + start, radii(scan))
     order = np.argsort(np.concatenate([times, scan]), kind="stable")  # (the samples first among equal times)
     return _force_extrema(play, np.concatenate([times, scan])[order], np.concatenate([force, scanned])[order], start,
                           path)

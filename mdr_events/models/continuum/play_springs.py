@@ -60,7 +60,7 @@ from .play_line import SpringLine, spring_line
 from .play_quadrature import EDGE_SHARE, NODES, _Breaks, _Quadrature
 
 __all__ = ["SpringLine", "spring_line", "PlaySprings", "SpringState", "DepthHistory", "SpanHistory", "LOWER_CAP",
-           "UPPER_CAP", "PANELS", "NODES", "EDGE_SHARE", "KINK_HALVINGS", "KINK_CUTS", "GOLDEN_STEPS",
+           "UPPER_CAP", "PANELS", "NODES", "EDGE_SHARE", "KINK_HALVINGS", "KINK_CUTS", "SETTLED_BRACKETS", "GOLDEN_STEPS",
            "GOLDEN_TABLE_RTOL", "GOLDEN_TABLE_POINTS",
            "CONCAVITY_SAMPLES", "EDGE_ROUND_OFF", "REMEMBER_SHIFTS"]
 
@@ -72,6 +72,11 @@ KINK_HALVINGS = 60
 #: spacing to two neighbouring doubles (16 cuts took 12), each evaluation's fixed cost (0.05-0.2 ms on a layer: the
 #: chain's clamps, the attachments, the springs' values) above its 63 points a bracket (0.3-1.5 us each).
 KINK_CUTS = 64
+#: Whether the kinks' bisection stops cutting a bracket once no double lies between its ends (the others' cuts read
+#: alone: a cut's evaluation holds only the brackets still open; ``False``: every bracket cut until all are settled,
+#: the route of before, which the tests compare it with: the same kinks bit for bit, a settled bracket's cuts being
+#: its ends).
+SETTLED_BRACKETS = True
 #: Rounds of kink finding in one evaluation (a kink found can reveal another between the same two nodes).
 KINK_ROUNDS = 6
 _sum = np.add.reduce
@@ -596,7 +601,7 @@ class PlaySprings:
         return states[0], probed
 
     def probed_states(self, times, probes: np.ndarray, probe_time: np.ndarray,
-                      kinks: bool = True) -> tuple[list["SpringState"], np.ndarray]:
+                      kinks: bool | np.ndarray = True) -> tuple[list["SpringState"], np.ndarray]:
         """:meth:`probed_state` at many times at once: every round of the kink search and every cut of its bisection
         one evaluation of the anchors for the springs of all the times, each time's springs as a call at that time
         alone gives them (bit for bit: the anchors are spring by spring, the edges' round-off read per time).
@@ -609,8 +614,9 @@ class PlaySprings:
             The probed springs' coordinates (m), each within the contact at its time.
         probe_time : numpy.ndarray
             The index in ``times`` of each probe's time.
-        kinks : bool, default True
-            As :meth:`state`.
+        kinks : bool or numpy.ndarray of bool, default True
+            As :meth:`state`, for every time or one per time (the times without the kink search read in its first
+            round, their springs as a call without it gives them: :meth:`_kinks`).
 
         Returns
         -------
@@ -618,6 +624,7 @@ class PlaySprings:
             The :class:`SpringState` at each time and the probes' provenance codes (negative at a cap).
         """
         times = np.asarray(times, dtype=float)
+        kinks = np.broadcast_to(np.asarray(kinks, dtype=bool), times.shape)
         probes, probe_time = np.asarray(probes, dtype=float), np.asarray(probe_time, dtype=np.intp)
         radii = np.array([self.radius(float(t)) for t in times])
         states = [SpringState(0.0, 0.0, 0.0, 0.0, 0.0)] * times.size  # (out of contact: none at a cap)
@@ -629,7 +636,7 @@ class PlaySprings:
         index[inside] = np.arange(inside.size)
         kept = index[probe_time] >= 0
         nodes, weights, anchor, label, group, probed[kept], profile, weight = self._quadratures(
-            times[inside], radii[inside], probes[kept], index[probe_time[kept]], kinks)
+            times[inside], radii[inside], probes[kept], index[probe_time[kept]], kinks[inside])
         w = weight * weights
         at_cap, at = label < 0, times[inside][group]
         pressed = self._d(at) - profile > self._pressed_round_off
@@ -743,14 +750,15 @@ class PlaySprings:
         return _Breaks(np.concatenate(rows), group, np.zeros(group.size, bool))
 
     def _quadratures(self, times: np.ndarray, radii: np.ndarray, probes: np.ndarray, probe_time: np.ndarray,
-                     kinks: bool = True) -> "_Quadrature":
+                     kinks: bool | np.ndarray = True) -> "_Quadrature":
         """The quadrature's nodes and weights on ``[0, a]`` at each of ``times`` (Gauss–Legendre on the panels split
-        at the history's breaks and, with ``kinks``, the kinks: :meth:`_kinks`), the anchors and their provenance
-        there, the index of each node's time (the nodes in the order of their times), the provenance at ``probes``,
-        and the springs' ``g`` and ``k_t/G*`` at the nodes (:class:`_Quadrature`)."""
+        at the history's breaks and, with ``kinks`` (for every time or one per time), the kinks: :meth:`_kinks`), the
+        anchors and their provenance there, the index of each node's time (the nodes in the order of their times), the
+        provenance at ``probes``, and the springs' ``g`` and ``k_t/G*`` at the nodes (:class:`_Quadrature`)."""
         breaks = self._grid(times, radii)
-        if kinks:
-            return self._kinks(times, breaks, probes, probe_time)
+        kinks = np.broadcast_to(np.asarray(kinks, dtype=bool), times.shape)
+        if np.any(kinks):
+            return self._kinks(times, breaks, probes, probe_time, kinks)
         nodes, weights, group, _ = breaks.gauss()
         points = np.concatenate([nodes, probes])
         anchor, label = self.anchors(points, times[np.concatenate([group, probe_time])])
@@ -782,15 +790,18 @@ class PlaySprings:
         return (float(np.sum(weights[inside & np.isin(labels, LOWER_CAP)])),
                 float(np.sum(weights[inside & np.isin(labels, UPPER_CAP)])))
 
-    def _kinks(self, times: np.ndarray, breaks: "_Breaks", probes: np.ndarray,
-               probe_time: np.ndarray) -> "_Quadrature":
+    def _kinks(self, times: np.ndarray, breaks: "_Breaks", probes: np.ndarray, probe_time: np.ndarray,
+               searched_times: np.ndarray | None = None) -> "_Quadrature":
         """Each time's ``breaks`` with the kinks between them added: wherever two neighbouring nodes' provenances
         differ (within a panel, across a panel's end, or in the first round between the centre or the edge,
         :data:`EDGE_SHARE` inside it, and the nearest node) and no kink found before lies between them, the change
         located by bisection; repeated until every such pair holds a kink, every round one evaluation of the anchors
         for the times still searched. Returns :meth:`_quadratures`' nodes, weights, anchors, provenance and times of
         the last breaks (:func:`~.play_quadrature._gauss`), the provenance at ``probes`` (read in the first round) and the springs'
-        values at the nodes (read with their anchors)."""
+        values at the nodes (read with their anchors). The times not ``searched_times`` (default: every time searched)
+        end with the first round: their breaks' nodes and the anchors there, spring by spring as
+        :meth:`_quadratures` reads them without the kinks (the edges' round-off, which the first round reads with the
+        centre's and the edge's springs, decides only where kinks are looked for)."""
         done, probed, active = [], None, np.ones(times.size, bool)
         for round_ in range(KINK_ROUNDS + 1):
             current = breaks.of(active)
@@ -812,6 +823,8 @@ class PlaySprings:
                                     & ((edges[1:] == 0) | (edges[1:] != edges[:-1])))
             found_before = np.cumsum(current.kink)  # (the kinks among the breaks up to each: none between two nodes
             fresh = change[found_before[inner_panel[change + 1]] == found_before[inner_panel[change]]]  # if equal)
+            if round_ == 0 and searched_times is not None:
+                fresh = fresh[searched_times[inner_group[fresh]]]
             searched = np.zeros(times.size, bool)
             searched[inner_group[fresh]] = True
             finished = (active & ~searched)[group]
@@ -835,16 +848,22 @@ class PlaySprings:
         """Each bracket (at ``t``, or at its own time of an array of them) cut into :data:`KINK_CUTS` at once, kept where the provenance first differs from ``low``'s,
         until :data:`KINK_HALVINGS` halvings' worth."""
         share = np.arange(1, KINK_CUTS) / KINK_CUTS
+        low, high = np.array(low, dtype=float), np.array(high, dtype=float)
         for _ in range(-(-KINK_HALVINGS // int(np.log2(KINK_CUTS)))):
-            if np.all(np.nextafter(low, high) >= high):  # (no double between the ends: every cut is one of them, and
-                break  # the bracket, its provenances read again, stays)
-            points = low[:, None] + (high - low)[:, None] * share[None, :]
-            at = np.repeat(t, KINK_CUTS - 1) if np.ndim(t) else t
-            same = (self.anchors(points.ravel(), at)[1].reshape(points.shape) == low_label[:, None])
-            first = np.argmin(np.concatenate([same, np.zeros((len(low), 1), bool)], axis=1), axis=1)
-            edges = np.concatenate([low[:, None], points, high[:, None]], axis=1)
-            rows = np.arange(len(low))
-            low, high = edges[rows, first], edges[rows, first + 1]
+            # (no double between a bracket's ends: every cut is one of them, and the bracket, its provenances read
+            # again, stays; such brackets are not cut again, the others' cuts read alone: :data:`SETTLED_BRACKETS`)
+            live = np.nextafter(low, high) < high
+            if not np.any(live):
+                break
+            rows = np.flatnonzero(live) if SETTLED_BRACKETS else np.arange(low.size)
+            below, above = low[rows], high[rows]
+            points = below[:, None] + (above - below)[:, None] * share[None, :]
+            at = np.repeat(np.asarray(t)[rows], KINK_CUTS - 1) if np.ndim(t) else t
+            same = (self.anchors(points.ravel(), at)[1].reshape(points.shape) == low_label[rows, None])
+            first = np.argmin(np.concatenate([same, np.zeros((rows.size, 1), bool)], axis=1), axis=1)
+            edges = np.concatenate([below[:, None], points, above[:, None]], axis=1)
+            each = np.arange(rows.size)
+            low[rows], high[rows] = edges[each, first], edges[each, first + 1]
         return 0.5 * (low + high)
 
     def tangential_force(self, times) -> np.ndarray:

@@ -37,7 +37,7 @@ from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
 from mdr_events.validation import shown
 
-from .play_run import _samples, _scanned_force_extrema, _spring_events, _SPRING_EVENTS
+from .play_run import _SPRING_EVENTS, spring_run
 from .play_springs import PlaySprings, spring_line
 from .rate_edge import EdgeEventKind
 from .rate_history import RateHistory
@@ -137,15 +137,14 @@ def run_rate_coulomb(params: Parameters, paths: list[Path], times: np.ndarray | 
         play = PlaySprings(line, path, RateHistory(run.edge))
         start = path.first_contact_time()
         radius = raw["contact_radius"][case]
-        force, sliding, shares = _samples(play, raw["time"] + start, radius)
-        raw["tangential_force"][case] = np.where(np.isnan(raw["tangential_force"][case]), np.nan, force)
-        raw["sliding_fraction"][case] = np.where(radius > 0, sliding, np.nan)
         log = raw["events"][case]
         kept = [event for event in log if event.kind not in _SPRING_EVENTS]
         end = _run_end(run, path, start)
         searched = kept + [end]  # (a contact that lasts to the path's end is searched to it)
-        raw["events"][case] = sorted(kept + _spring_events(play, raw["time"], shares, start, searched),
-                                     key=lambda event: event.time)
-        raw["extrema"][case].update(_scanned_force_extrema(play, raw["time"], force, start, path, end.time,
-                                                          lambda scan: play.history.radii(scan + start), limits))
+        springs = spring_run(play, raw["time"], radius, path, searched, end.time,
+                             lambda scan: play.history.radii(scan + start), limits)
+        raw["tangential_force"][case] = np.where(np.isnan(raw["tangential_force"][case]), np.nan, springs.force)
+        raw["sliding_fraction"][case] = np.where(radius > 0, springs.sliding, np.nan)
+        raw["events"][case] = sorted(kept + springs.events, key=lambda event: event.time)
+        raw["extrema"][case].update(springs.extrema)
     return raw
