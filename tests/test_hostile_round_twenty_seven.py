@@ -199,3 +199,28 @@ def test_an_extremum_past_a_corner_where_only_the_depth_turns_is_found():
     dense = me.simulate(contact, path, method="continuum", samples=201).tangential_force.values
     least = float(np.nanmin(dense))
     assert float(sparse.tangential_force_min.values[0]) <= least + EXTREMUM_SHARE * abs(least)
+
+
+# --- Z5: the springs' attachment on an adhesive contact (play_history.SpanHistory.attach, the per-spring route):
+# a growing span starts from its own root of the radius, and the springs between the span before's end and it were
+# taken from the span before only where that one grew too. A pinned span between two growths (touch, out, slide at
+# a negative depth held by adhesion, press in) left the springs in the ulps between the last growth's radius and the
+# new growth's root attached nowhere: ``RuntimeError: springs at xi = [0.000464672...] m match no attachment of the
+# radius's history ... a bug to report`` on a 0.5 mm bonded layer under tau0+coulomb. Now a pinned span of the same
+# radius (within JUMP_ROUND_OFF) is gone on from as a growing one -------------------------------------------------
+
+
+def test_a_growth_after_a_pinned_radius_attaches_every_spring():
+    """Z5 (an internal error of the per-spring route): a growth after a pinned radius ended in a RuntimeError (springs
+    in the ulps between the two radii attached nowhere); now the run ends, F_x finite in contact and within its
+    extrema."""
+    params = me.Parameters.paper()
+    contact = dataclasses.replace(PAPER, friction=me.FrictionLaw("tau0+coulomb", tau0=params.tau0, mu=0.3))
+    contact = contact.replace(h=5e-4)
+    path = me.Path([(0.0, -1e-6), (0.0, 1e-6), (0.0, -1e-6), (1e-4, -1e-6), (1.5e-4, 3e-4), (0.0, -3e-3)], params.v)
+    run = me.simulate(contact, path, method="continuum", samples=41)
+    force = run.tangential_force.values
+    assert np.all(np.isfinite(force[run.contact_radius.values > 0.0]))
+    size = float(np.nanmax(np.abs(force)))
+    assert float(run.tangential_force_max.values[0]) >= float(np.nanmax(force)) - EXTREMUM_SHARE * size
+    assert float(run.tangential_force_min.values[0]) <= float(np.nanmin(force)) + EXTREMUM_SHARE * size
