@@ -152,8 +152,9 @@ def test_a_non_finite_argument_of_another_indenter_s_closed_form_is_refused(name
 # likewise, and the table's ``contact_radius`` and ``jump_off`` "unhashable type: 'numpy.ndarray'" (its cache key):
 # with ``power_law.with_radius_at``'s radius and depth and ``fretting_dissipated_energy``'s amplitude as a list: 28
 # cases of the round's two scans (``jkr_depth`` broadcasts a work array, as its depth: not counted). The fix
-# (``power_law.check_work``, a number, for the work of the scalar closed forms; a list read as an array) is in analytic.py, power_law.py and
-# tabulated.py, which this session's h89 (theory-topics) splits into packages: left to after that merge. --------
+# (``power_law.check_work``, a number, for the work of the scalar closed forms; a list read as an array) is in
+# analytic.py, power_law.py and tabulated.py, which this session's h89 (theory-topics) splits into packages: left to
+# after that merge. ------------------------------------------------------------------------------------------------
 
 _WORKS = [np.array([0.05, 0.1]), [0.05, 0.1]]
 _SCALAR_WORK_CASES = {
