@@ -114,7 +114,7 @@ def test_a_punch_subclass_critical_angle_on_a_layer_is_its_base_s():
 # ``hess_prefactor``), ``tabulated``'s (``equivalent_profile``, ``normal_force``, ``contact_radius``) and
 # ``flat_punch``'s (``normal_force``, ``radius``, ``coulomb_force``) return nan or inf for them, some with a
 # RuntimeWarning, and two return finite values (``flat_punch.radius(inf)`` the face's radius, the table's ``g(nan)``
-# inf): 78 of 230 cases of the round's scan. The fix (analytic's ``_finite`` check at each public entry) is left to
+# inf): 79 cases of the round's scans. The fix (analytic's ``_finite`` check at each public entry) is left to
 # after the split of power_law.py and the table's route this session (h89, h86): the simulators call these functions
 # internally, so the checked entries need unchecked twins for them, a change across theory and models. -----------
 
