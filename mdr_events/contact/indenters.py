@@ -27,7 +27,7 @@ from mdr_events.limits import values_in
 from mdr_events.validation import PLAIN_NUMBER, SCALE_MAX, SCALE_MIN, check_real, plain_number, reads_attrs, real_array, shown
 
 __all__ = ["Paraboloid", "PowerLaw", "FlatPunch", "TabulatedProfile", "Profile", "Indenter", "profile_attrs",
-           "indenter_from_attrs"]
+           "indenter_from_attrs", "indenter_kind", "INDENTER_KINDS"]
 
 
 #: Significant digits of a computed shape in words: a shape computed from other parameters (the cone that reaches the
@@ -348,6 +348,35 @@ Profile = PowerLaw | FlatPunch | TabulatedProfile
 Indenter = Paraboloid | PowerLaw | FlatPunch | TabulatedProfile
 #: What each kind is called in a note (the paraboloid names itself by ``param_R``).
 _KIND_NAMES = {PowerLaw: "power law", FlatPunch: "flat punch", TabulatedProfile: "tabulated profile"}
+#: The indenter types, each a kind of its own: what the theory and the simulators look their functions up by
+#: (:func:`indenter_kind`).
+INDENTER_KINDS = (Paraboloid, PowerLaw, FlatPunch, TabulatedProfile)
+
+
+def indenter_kind(indenter: object) -> type:
+    """The kind of ``indenter``, the type the theory and the simulators look what they compute up by: the first of
+    :data:`INDENTER_KINDS` along its type's MRO, so that a user's subclass of an indenter type is of its base's kind
+    (issue 32, round 27: a subclass of ``PowerLaw`` was taken by ``critical_angle`` and refused by ``simulate``, and
+    ``phase_diagram`` ended in a ``KeyError``); else its own type (``NoneType``: the paper's paraboloid of
+    ``Parameters.R``; anything else, which the lookups refuse by name).
+
+    Parameters
+    ----------
+    indenter : object
+        The indenter (``None``: the paraboloid of ``Parameters.R``).
+
+    Returns
+    -------
+    type
+        Its kind.
+    """
+    return _kind_of_type(type(indenter))
+
+
+@functools.lru_cache(maxsize=64)
+def _kind_of_type(cls: type) -> type:
+    """:func:`indenter_kind` of an instance of ``cls``."""
+    return next((kind for kind in cls.__mro__ if kind in INDENTER_KINDS), cls)
 
 
 def profile_attrs(profile: Profile | None) -> dict[str, object]:
@@ -355,8 +384,9 @@ def profile_attrs(profile: Profile | None) -> dict[str, object]:
     (``to_attrs``) and ``profile_note`` (``param_R`` is then unused); none for the paraboloid (``None``)."""
     if profile is None:
         return {}
-    return {**profile.to_attrs(), "profile_note": f"the indenter is this {_KIND_NAMES[type(profile)]}: param_R (the "
-                                                   "paraboloid's radius) is not used"}
+    kind = _KIND_NAMES[indenter_kind(profile)]
+    return {**profile.to_attrs(), "profile_note": f"the indenter is this {kind}: param_R (the paraboloid's radius) is "
+                                                   "not used"}
 
 
 @reads_attrs("an indenter")

@@ -16,7 +16,7 @@ import numpy as np
 
 from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
-from mdr_events.contact.indenters import FlatPunch, Paraboloid, PowerLaw, TabulatedProfile, profile_attrs
+from mdr_events.contact.indenters import FlatPunch, Paraboloid, PowerLaw, TabulatedProfile, indenter_kind, profile_attrs
 from mdr_events.theory import mindlin, tabulated
 from mdr_events.theory.branches import branch_radius, jump_off
 from mdr_events.theory.kinds import theory_of
@@ -36,7 +36,7 @@ SimulatedProfile = PowerLaw | FlatPunch | TabulatedProfile | None
 def check_simulated_profile(profile) -> SimulatedProfile:
     """``profile`` if the simulators take it (``None``, a :class:`PowerLaw` with ``n >= 1``, a :class:`FlatPunch` or
     a :class:`TabulatedProfile` whose ``g(x)`` increases); else an error naming it and what is allowed."""
-    check = _SIMULATOR_CHECKS.get(type(profile))
+    check = _SIMULATOR_CHECKS.get(indenter_kind(profile))
     if check is None:
         hint = (" (the paraboloid is Parameters.R's: leave profile=None, or give a Contact with it)"
                 if isinstance(profile, Paraboloid) else "")

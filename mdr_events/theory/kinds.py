@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile, TabulatedProfile
+from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile, TabulatedProfile, indenter_kind
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic, flat_punch, power_law, symbolic, tabulated
 from mdr_events.theory.forms import ClosedForms, FrictionForms
@@ -162,7 +162,4 @@ def theory_of(profile: Profile | None) -> IndenterTheory:
     IndenterTheory
         What the theory computes for its kind.
     """
-    for kind in type(profile).__mro__:
-        if kind in _THEORIES:
-            return _THEORIES[kind]
-    return _POWER_LAW
+    return _THEORIES.get(indenter_kind(profile), _POWER_LAW)

@@ -19,7 +19,7 @@ from mdr_events.io.datasets import assembled, register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits, values_in
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V, Parameters
 from mdr_events.contact.friction import FrictionLaw, as_friction_law, friction_attrs
-from mdr_events.contact.indenters import Profile, TabulatedProfile, profile_attrs
+from mdr_events.contact.indenters import Profile, TabulatedProfile, indenter_kind, profile_attrs
 from mdr_events.contact.model import Contact
 from mdr_events.theory import analytic, mindlin, power_law, tabulated
 from mdr_events.theory.job import ContactLike, contact_alone, on_layer, theory_job
@@ -153,8 +153,8 @@ def phase_diagram(
     check_representable(params, profile, friction)
     if not friction.is_default:
         return _friction_phase_diagram(params, angles, scenario, profile, friction, coords)
-    return _PAPER_LAW_PHASE_DIAGRAMS.get(type(profile), _profile_phase_diagram)(params, angles, scenario, profile,
-                                                                                coords)
+    diagram = _PAPER_LAW_PHASE_DIAGRAMS.get(indenter_kind(profile), _profile_phase_diagram)
+    return diagram(params, angles, scenario, profile, coords)
 
 
 def _paper_phase_diagram(params: Parameters, angles: np.ndarray, scenario: str, profile: None,

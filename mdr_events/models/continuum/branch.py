@@ -11,7 +11,7 @@ import numpy as np
 from mdr_events.theory import analytic, flat_punch, power_law, symbolic, tabulated
 from mdr_events.theory.quartic import depressed_quartic_root
 from mdr_events.parameters import Parameters
-from mdr_events.contact.indenters import FlatPunch, PowerLaw, TabulatedProfile
+from mdr_events.contact.indenters import FlatPunch, PowerLaw, TabulatedProfile, indenter_kind
 
 #: :meth:`Branch.sample_radii` keeps the iteration of :meth:`Branch.radii` where the quartic's slope in ``s`` is below
 #: this share of its leading term's, ``p'(s) < NEAR_FOLD · 4 s³``: near the jump-off fold, where the root's
@@ -543,7 +543,7 @@ def make_branch(params: Parameters, work: float, profile: PowerLaw | FlatPunch |
     """The branch of ``work`` for ``profile`` (``None``: the paraboloid of ``params.R``, the paper's)."""
     if profile is None:
         return Branch(params, work)
-    return _BRANCH_CLASSES.get(type(profile), PowerLawBranch)(params, work, profile)
+    return _BRANCH_CLASSES.get(indenter_kind(profile), PowerLawBranch)(params, work, profile)
 
 
 #: The branch class of each kind of indenter but the paper's paraboloid, by its type (anything else is handed to

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from mdr_events.contact.indenters import indenter_kind
 from mdr_events.contact.layer import Layer, LayerBase
 from mdr_events.parameters import Parameters
 
@@ -60,7 +61,7 @@ class LayerMedium(HalfSpaceMedium):
         #: this medium, and every run of the contact asks for the same two (at most :data:`BRANCHES_KEPT`)
         self._branches: dict[tuple, object] = {}
         #: what the indenter's kind makes of the normal springs (:mod:`.layer_normals`)
-        self.springs = LAYER_NORMALS[type(indenter)]
+        self.springs = LAYER_NORMALS[indenter_kind(indenter)]
         self.normal = NormalFactors(params.nu, layer, self.springs.exponent(indenter))
         #: the normal force ``F_N(d, a)`` of this medium's springs (:meth:`normal_force`)
         self._force = self.springs.force_reader(params, indenter, layer)

@@ -29,7 +29,7 @@ import functools
 from typing import TYPE_CHECKING
 
 from mdr_events.contact.friction import FrictionLaw
-from mdr_events.contact.indenters import FlatPunch, Paraboloid, TabulatedProfile
+from mdr_events.contact.indenters import FlatPunch, Paraboloid, TabulatedProfile, indenter_kind
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law, symbolic, tabulated
@@ -218,7 +218,7 @@ class HalfSpaceMedium:
         float or numpy.ndarray
             ``F_N`` (N).
         """
-        return _HALF_SPACE_FORCES.get(type(profile), _power_law_force)(params, profile, depth, radius)
+        return _HALF_SPACE_FORCES.get(indenter_kind(profile), _power_law_force)(params, profile, depth, radius)
 
 
 def _paraboloid_force(params: Parameters, profile, depth, radius):
@@ -334,7 +334,7 @@ def _layer_medium(params: Parameters, indenter, layer: Layer) -> HalfSpaceMedium
     from .layer_media import LAYER_MEDIA
     from .layer_normals import LAYER_NORMALS
 
-    if type(indenter) not in LAYER_NORMALS:
+    if indenter_kind(indenter) not in LAYER_NORMALS:
         raise ValueError(f"profile={indenter!r} is not allowed on {layer.describe()} in the continuum method; allowed: "
                          "the paraboloid, a PowerLaw or the FlatPunch (the layer's profile is tabulated for the first "
                          "two, the punch's is 0 under its face)")

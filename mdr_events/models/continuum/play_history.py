@@ -138,8 +138,8 @@ class SpanHistory:
             if span.regime is not self._regime.GROWING or low > latest:
                 continue
             first, last = self._span_ends[index]
-            if index and self._spans[index - 1][2].regime is self._regime.GROWING:  # (no ulp between two growing spans:
-                first = min(first, self._span_ends[index - 1][1])  # each end is its own span's root)
+            if index and self._grows_on(index, first):  # (no ulp between two growing spans, each end its own span's
+                first = min(first, self._span_ends[index - 1][1])  # root, nor across a pinned one between them)
             take = _beyond(xi, first) & (xi <= last)
             if not np.any(take):
                 continue
@@ -156,6 +156,15 @@ class SpanHistory:
         """The radii (m) inside the contact at ``t`` where the force's quadrature splits its panels besides the kinks
         it finds: none (the attachment is smooth in ``ξ`` between the jumps and pieces, which the kinks mark)."""
         return np.empty(0)
+
+    def _grows_on(self, index: int, first: float) -> bool:
+        """Whether the growing span ``index`` (its radius at its start ``first``) goes on from the span before it: a
+        growing one, or a pinned one whose radius is ``first`` within :data:`JUMP_ROUND_OFF` (issue 32 round 27 Z5:
+        the pinned radius the last growth's end, the new growth's start its own root a few ulps above, the springs
+        between them attached in neither, a RuntimeError)."""
+        regime = self._spans[index - 1][2].regime
+        return regime is self._regime.GROWING or (
+            regime is self._regime.PINNED and abs(first - self._span_ends[index - 1][1]) <= JUMP_ROUND_OFF * first)
 
 
 def _beyond(xi: np.ndarray, radius: float) -> np.ndarray:

@@ -12,6 +12,7 @@ import numpy as np
 
 from mdr_events.contact.adhesion import Adhesion
 from mdr_events.contact.friction import FrictionLaw
+from mdr_events.contact.indenters import indenter_kind
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.parameters import Parameters
 
@@ -114,7 +115,7 @@ def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: L
     springs' ``g``, ``k_t`` and ratios several times)."""
     from .layer_normals import LAYER_NORMALS
 
-    factors = LAYER_NORMALS[type(indenter)].spring_factors(params, indenter, layer)
+    factors = LAYER_NORMALS[indenter_kind(indenter)].spring_factors(params, indenter, layer)
     G_star, mu = params.G_star, friction.coulomb_mu
 
     def springs(xi):

@@ -13,7 +13,8 @@ piece and its end, the centre and the edge probed beside the quadrature's nodes,
 back without a reversal of ``x``, and a zone that opens and closes between two output times, are not logged. The
 extrema of ``F_x`` are the largest and least of the samples and the route's own scan of the run
 (:func:`_scanned_force_extrema`, :func:`_extrema_scan`: :data:`SEGMENT_SCAN` times inside each path segment in
-contact, so that they do not hang on the output times) refined by bounded minimisation between its neighbours.
+contact, so that they do not hang on the output times) refined by bounded minimisation between its neighbours
+(at a corner, where ``F_x`` kinks but may go on growing, on each side of it).
 
 The output times are read at once (:func:`_probed_all`, :meth:`~.play_springs.PlaySprings.probed_states`), with
 the pieces' ends the events' searches start from and the extrema's scan (:func:`spring_run`, :data:`SHARED_SAMPLES`), and the
@@ -664,7 +665,7 @@ def _scanned_force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarr
 
 def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path) -> dict:
     """The largest and least ``F_x`` (N) and their times (s from first contact): among the samples and the path's
-    corners (where ``F_x`` has kinks), the best refined between its neighbours."""
+    corners (where ``F_x`` has kinks), the best refined between its neighbours (at a corner, on each side of it)."""
     out, duration = {}, path.duration
     corners = path.corner_times - start
     corners = corners[(corners > times[0]) & (corners < times[-1])]
@@ -676,13 +677,15 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
         k = int(np.argmax(sign * force))
         value, time = float(force[k]), float(times[k])
         low, high = times[max(k - 1, 0)], times[min(k + 1, times.size - 1)]
-        if high > low and value != 0.0 and time not in corners \
-                and not _monotone(play, np.array([low, time, high]) + start):  # (at a corner: a kink, the extremum)
-            found = minimize_scalar(lambda t: -sign * play.state(float(t) + start)[0], bounds=(low, high),
-                                    method="bounded", options={"xatol": EXTREMUM_XTOL * duration})
-            refined = -sign * float(found.fun)
-            if sign * refined > sign * value:
-                value, time = refined, float(found.x)
+        # (at a corner F_x kinks but may go on growing past it, as where the depth turns and x does not: issue 32
+        # round 27 Z4; each side of the kink refined on its own, the corner kept where it is the extremum)
+        for a, b in ((low, time), (time, high)) if time in corners else ((low, high),):
+            if b > a and value != 0.0 and not _monotone(play, np.unique([a, time, b]) + start):
+                found = minimize_scalar(lambda t: -sign * play.state(float(t) + start)[0], bounds=(a, b),
+                                        method="bounded", options={"xatol": EXTREMUM_XTOL * duration})
+                refined = -sign * float(found.fun)
+                if sign * refined > sign * value:
+                    value, time = refined, float(found.x)
         value_name, time_name = extremum_names("tangential_force", kind)
         out[value_name], out[time_name] = value, time
     return out

@@ -32,7 +32,7 @@ from typing import Callable, NamedTuple
 import numpy as np
 
 from mdr_events.contact.adhesion import Adhesion
-from mdr_events.contact.indenters import FlatPunch, Paraboloid, PowerLaw
+from mdr_events.contact.indenters import FlatPunch, Paraboloid, PowerLaw, indenter_kind
 from mdr_events.contact.layer import Layer, LayerBase
 from mdr_events.contact.model import Contact
 from mdr_events.limits import Limits, check_limits
@@ -169,7 +169,7 @@ def has_closed_forms(contact: Contact) -> bool:
     bool
         ``True`` where :func:`critical_angle_on_layer` computes them.
     """
-    return (type(contact.indenter) in LAYER_ONSETS and type(contact.adhesion) is Adhesion
+    return (indenter_kind(contact.indenter) in LAYER_ONSETS and type(contact.adhesion) is Adhesion
             and contact.friction.law == "tau0" and contact.layer.base is LayerBase.BONDED)
 
 
@@ -460,7 +460,7 @@ LAYER_ONSETS: dict[type, LayerOnsets] = {
 
 def _onsets_of(contact) -> LayerOnsets:
     """The slip onset of ``contact``'s kind (the curved kinds' for anything else, whose checks name it)."""
-    return LAYER_ONSETS.get(type(getattr(contact, "indenter", None)), _CURVED)
+    return LAYER_ONSETS.get(indenter_kind(getattr(contact, "indenter", None)), _CURVED)
 
 
 def thin_layer_onset_depth(alpha, contact: Contact):
