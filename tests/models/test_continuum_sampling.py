@@ -182,7 +182,8 @@ def test_evaluate_at_once_is_evaluate_span_by_span(paper, label, monkeypatch):
     spans' own terms (``FillRoute.TERMS``: the polynomials' route is ``test_sample_forces.py``'s, within rounding)."""
     from mdr_events.models.continuum import solution as solution_module
     from mdr_events.models.continuum.sample_forces import FillRoute
-    from mdr_events.models.continuum.solution import _span_rows, evaluate_span
+    from mdr_events.models.continuum.solution import evaluate_span
+    from mdr_events.models.continuum.span_rows import _span_rows
 
     monkeypatch.setattr(solution_module, "FILL_ROUTE", FillRoute.TERMS)
 

@@ -3,7 +3,7 @@ the route it replaced, kept here as the reference, bit for bit on every kind of 
 zigzag, fretting cycles, a table, a layer, a power law, the rate law, Coulomb's law with and without adhesion), on a
 run of one sample and before the first contact.
 
-- ``solution._iterated_radii``: the paraboloid's iterated radius at one depth (a run's first sample, at first contact)
+- ``sample_radii._iterated_radii``: the paraboloid's iterated radius at one depth (a run's first sample, at first contact)
   kept by value; the reference is ``Branch.radii`` called each time;
 - ``solution._kinematics``: the spans' numbers repeated over their times in one call; the reference repeats each
   number alone;
@@ -20,6 +20,7 @@ import numpy as np
 import pytest
 
 import mdr_events as me
+from mdr_events.models.continuum import sample_radii
 from mdr_events.models.continuum import solution as solution_module
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum.branch import Branch
@@ -87,8 +88,10 @@ def _reference_kinematics(solution, members, parts):
     return t, d, x, each([span.pinned_radius for span in members]), lengths
 
 
-#: Each replaced route of :mod:`~mdr_events.models.continuum.solution` by its name, with its reference.
-REFERENCES = {"_iterated_radii": _reference_iterated_radii, "_kinematics": _reference_kinematics}
+#: Each replaced route by its name: the module it is looked up in when called (where a test patches it), and its
+#: reference.
+REFERENCES = {"_iterated_radii": (sample_radii, _reference_iterated_radii),
+              "_kinematics": (solution_module, _reference_kinematics)}
 
 
 def assert_same_bits(left, right) -> None:
@@ -109,35 +112,54 @@ def test_each_route_is_its_reference_bit_for_bit(label, replaced, monkeypatch):
     """A run (cold, and warm: the second run of the same values, its first radius kept) is the run with the replaced
     route's reference (or every reference at once), bit for bit."""
     contact, motion = RUNS[label]()
-    solution_module._paraboloid_radius.cache_clear()
+    sample_radii._paraboloid_radius.cache_clear()
     cold = me.simulate(contact, motion, "continuum", samples=SAMPLES)
     warm = me.simulate(contact, motion, "continuum", samples=SAMPLES)
     with monkeypatch.context() as patched:
-        for name, reference in REFERENCES.items():
+        for name, (module, reference) in REFERENCES.items():
             if replaced in (name, "all"):
-                patched.setattr(solution_module, name, reference)
+                patched.setattr(module, name, reference)
         reference = me.simulate(contact, motion, "continuum", samples=SAMPLES)
     assert_same_bits(cold, reference)
     assert_same_bits(warm, reference)
+
+
+@pytest.mark.parametrize("name", list(REFERENCES))
+def test_each_patched_route_is_the_one_called(name, monkeypatch):
+    """The module :data:`REFERENCES` patches each route in is the one its callers look it up in: a run with the route
+    patched (the route itself, counted) calls the patch, so that the comparisons above replace the route and are not
+    the run compared with itself (a route moved to another module, a stale name left where the tests patch it)."""
+    module, _ = REFERENCES[name]
+    route, calls = getattr(module, name), []
+
+    def counted(*args):
+        calls.append(args)
+        return route(*args)
+
+    sample_radii._paraboloid_radius.cache_clear()
+    with monkeypatch.context() as patched:
+        patched.setattr(module, name, counted)
+        me.simulate(*RUNS["B 30°"](), "continuum", samples=SAMPLES)
+    assert calls, name
 
 
 def test_kept_iterated_radius_is_kept_and_taken_at_first_contact():
     """The paraboloid's first sample (at first contact, depth 0) is read from what is kept: the kept value is the
     iteration's, by depth (``0.0`` and ``-0.0`` apart, each the iteration's own), and other depths are not taken for
     it."""
-    solution_module._paraboloid_radius.cache_clear()
+    sample_radii._paraboloid_radius.cache_clear()
     path = me.Path.scenario_B(30.0, PAPER)
     solution = solve_path(PAPER, path)
     times = np.linspace(0.0, solution.end_time, 11)
     first = solution.evaluate_at(times)
-    misses = solution_module._paraboloid_radius.cache_info().misses
+    misses = sample_radii._paraboloid_radius.cache_info().misses
     assert misses >= 1  # (the first sample's; the last one, at the pull-off on the fold, is also a span's end)
     again = solution.evaluate_at(times)
-    assert solution_module._paraboloid_radius.cache_info().hits == misses
+    assert sample_radii._paraboloid_radius.cache_info().hits == misses
     np.testing.assert_array_equal(first["contact_radius"], again["contact_radius"])
     branch = Branch(PAPER, PAPER.dgamma0)
     for depth in (0.0, -0.0, 1e-6, 2e-4, branch.jump_off_depth):
-        kept = solution_module._iterated_radii(branch, np.array([depth]))
+        kept = sample_radii._iterated_radii(branch, np.array([depth]))
         assert kept.tobytes() == branch.radii(np.array([depth])).tobytes(), depth
     assert first["contact_radius"][0] == branch.radii(np.array([0.0]))[0]
 
@@ -149,8 +171,8 @@ def test_one_sample_evaluated_is_the_reference_bit_for_bit(monkeypatch):
     for time in (-solution.t_contact / 2.0, 0.0, solution.end_time / 3.0, solution.end_time):
         found = solution.evaluate_at(np.array([time]))
         with monkeypatch.context() as patched:
-            for name, route in REFERENCES.items():
-                patched.setattr(solution_module, name, route)
+            for name, (module, route) in REFERENCES.items():
+                patched.setattr(module, name, route)
             reference = solution.evaluate_at(np.array([time]))
         for name, values in found.items():
             assert values.tobytes() == reference[name].tobytes(), (time, name)
@@ -200,12 +222,12 @@ def test_assembled_sizes_are_the_variables_not_the_arrays_given(monkeypatch):
 def test_a_numpy_work_finds_the_kept_radius():
     """A branch whose work of adhesion is a NumPy number (no key of its own, :func:`~mdr_events.memo.exact_key`) finds
     the radius kept for the same work as a float, and is its iteration's bit for bit."""
-    solution_module._paraboloid_radius.cache_clear()
+    sample_radii._paraboloid_radius.cache_clear()
     depth = np.array([0.0])
-    kept = solution_module._iterated_radii(Branch(PAPER, float(PAPER.dgamma0)), depth)
+    kept = sample_radii._iterated_radii(Branch(PAPER, float(PAPER.dgamma0)), depth)
     numpy_branch = Branch(PAPER, np.float64(PAPER.dgamma0))
-    found = solution_module._iterated_radii(numpy_branch, depth)
-    info = solution_module._paraboloid_radius.cache_info()
+    found = sample_radii._iterated_radii(numpy_branch, depth)
+    info = sample_radii._paraboloid_radius.cache_info()
     assert (info.misses, info.hits) == (1, 1)
     assert found.tobytes() == kept.tobytes() == numpy_branch.radii(depth).tobytes()
 

@@ -1,7 +1,7 @@
 """``evaluate``'s ``F_N`` and ``F_x`` by the spans' polynomials in one pass (``FillRoute.POLYNOMIAL``,
 :mod:`mdr_events.models.continuum.sample_forces`) against the spans' own terms (``FillRoute.TERMS``, the route before):
 within the rounding both routes' sums allow, derived below, on every kind of continuum run; the radii, kinematics and
-sliding fractions (both branches' radii in one pass, ``solution._quartic_radii``) the same bits; a linear or constant
+sliding fractions (both branches' radii in one pass, ``sample_radii._quartic_radii``) the same bits; a linear or constant
 force, and any span that is no polynomial here, the same bits too.
 
 The bounds (``ε`` the double's epsilon):
@@ -27,6 +27,7 @@ import pytest
 
 import mdr_events as me
 from mdr_events.models.continuum import solution as S
+from mdr_events.models.continuum import span_rows
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum.branch import Branch
 from mdr_events.models.continuum.closed_form import ClosedForce
@@ -233,7 +234,7 @@ def _span_rows_of_index(solution, times):
     """The rows of each span as ``evaluate`` found them before: ``span_index`` of every time, then ``_span_rows``."""
     before = times < 0.0
     inside = (times <= solution.end_time) & ~before
-    return S._span_rows(solution.span_index(times), inside, len(solution.spans))
+    return span_rows._span_rows(solution.span_index(times), inside, len(solution.spans))
 
 
 @pytest.mark.parametrize("label", ["zigzag", "B 20°, ends at pull-off", "from above the surface"])
@@ -253,5 +254,5 @@ def test_the_sorted_times_rows_are_the_span_index_rows(label):
         -solution.t_contact, 1.2 * solution.end_time, 97)])), np.array([solution.end_time]), np.array([0.0]),
         np.array([-1.0]), np.array([solution.end_time * 2])]
     for times in grids:
-        assert S._sorted_span_rows(solution, times) == _span_rows_of_index(solution, times)
-    assert S._sorted_span_rows(solution, grids[0][::-1].copy()) is None
+        assert span_rows._sorted_span_rows(solution, times) == _span_rows_of_index(solution, times)
+    assert span_rows._sorted_span_rows(solution, grids[0][::-1].copy()) is None

@@ -69,6 +69,22 @@ def test_the_samples_near_the_fold_are_the_iterations():
     np.testing.assert_array_equal(branch.sample_radii(depth), branch.radii(depth))
 
 
+@pytest.mark.parametrize("branch_work", ["dgamma0", "dgamma1"])
+def test_the_public_quartic_members_are_the_samples(branch_work):
+    """What the closed-form pass of a run's radii reads off a branch (``sample_radii._quartic_radii``): the iteration's
+    radius near the fold (:meth:`Branch.near_fold_radii`) is :meth:`Branch.sample_radii`'s there, bit for bit, each
+    depth its own call (an iteration's last step depends on the elements it runs for); the quartic's linear
+    coefficient (:attr:`Branch.quartic_linear`) is its NumPy form's; the root's floor (:attr:`Branch.root_floor`) is
+    ``√a`` at the jump-off."""
+    params = me.Parameters.paper()
+    branch = Branch(params, getattr(params, branch_work))
+    for depth in branch.jump_off_depth * (1.0 - np.logspace(-16.0, -8.0, 50)):
+        one = np.array([depth])
+        assert branch.near_fold_radii(one).tobytes() == branch.sample_radii(one).tobytes(), depth
+    assert branch.quartic_linear == float(branch._quartic_of(np.array([0.0]))[3])
+    assert branch.root_floor == np.sqrt(branch.jump_off_radius)
+
+
 def test_below_the_fold_there_is_no_root_and_other_branches_iterate():
     params = me.Parameters.paper()
     branch = Branch(params, params.dgamma0)

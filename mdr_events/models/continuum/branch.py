@@ -337,6 +337,35 @@ class Branch:
             begin = part.stop
         return radii
 
+    @property
+    def root_floor(self) -> float:
+        """The lower bound of the quartic's root ``s = √a`` (9): ``√a`` at the jump-off (0 for Hertz)."""
+        return self._floor
+
+    @property
+    def quartic_linear(self) -> float:
+        """The linear coefficient ``P`` of the paraboloid's quartic in ``s = √a``, ``s⁴ + P s − R d`` (9), by the
+        relation's form for floats (the same bits as its NumPy form's)."""
+        return float(self._coefficients(0.0, *self._arguments)[3])
+
+    def near_fold_radii(self, depth: np.ndarray) -> np.ndarray:
+        """The paraboloid's radii (9) at ``depth`` by the iteration, as :meth:`sample_radii` takes them near the fold
+        (:data:`NEAR_FOLD`): the quartic's largest root not below :attr:`root_floor`, squared.
+
+        Parameters
+        ----------
+        depth : numpy.ndarray
+            The depths (m), 1-D.
+
+        Returns
+        -------
+        numpy.ndarray
+            The radii (m) (``nan`` below the jump-off depth).
+        """
+        linear, constant = self._quartic_of(depth)[3:]
+        root = analytic.positive_polynomial_root([1.0, 0.0, 0.0, float(linear), constant], lower=self._floor)
+        return np.where(depth >= self.jump_off_depth, root * root, np.nan)
+
     def _closed_roots(self, depth: np.ndarray) -> tuple[np.ndarray, float, np.ndarray]:
         """The quartic's root ``s = √a`` of each depth in closed form (not below the jump-off's), flat, with the
         quartic's linear and constant coefficients (:meth:`sample_radii`)."""
