@@ -267,7 +267,7 @@ def test_with_adhesion_the_discrete_model_on_a_layer_converges_to_it(law, case):
 
 
 #: A slip zone opening inside the contact (with adhesion: in the tensile annulus) is found once it reaches one of the
-#: route's probes (``play_run.PROBE_POINTS``, ``a/1024`` apart): its onset late by its growth to that width, measured
+#: route's probes (``play_samples.PROBE_POINTS``, ``a/1024`` apart): its onset late by its growth to that width, measured
 #: 4e-5 of the run along scenario A at 20°; 1e-4 bounds it.
 ONSET_SHARE = 1e-4
 #: The sliding fractions of the thick layer and the half-space: the quadrature's (the route) against the zones'

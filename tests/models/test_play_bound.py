@@ -1,11 +1,11 @@
 """The bound that replaces the probes before the slip onset (issue 34's performance, ``continuum/play_bound.py``):
 along the first segment in contact no probe's distance outside its window exceeds ``β (t − t_c) − ū(a(t))``, so
-where that is negative the per-spring route's :data:`~mdr_events.models.continuum.play_run.PROBE_POINTS` probes
+where that is negative the per-spring route's :data:`~mdr_events.models.continuum.play_samples.PROBE_POINTS` probes
 find no spring at a cap and are not read. Checked against the probes themselves (on the paper's layer and on springs
 built to defeat the bound: their least ``μρ`` inside the contact, not at the centre, and a dip narrower than the
 bound's grid spacing centred on a probe, which only ``μρ`` read at the probes themselves sees), for its reach (it
 passes up to the onset's output spacing), where it must not pass, and the run against the route of before
-(``play_run.PROBE_BOUND = False``) at every output, bit for bit (the bound only skips readings whose answer it knows).
+(``play_samples.PROBE_BOUND = False``) at every output, bit for bit (the bound only skips readings whose answer it knows).
 Beside it, the probes of the times on one part where every window is fixed but for ``x`` (a fretting stroke before its
 slip onset) read in one evaluation of the anchors (``PlaySprings.caps_over``, ``play_probes.SHARED_PROBES``): their
 labels against each time's own, the times that must not be read together (a clamp between them, a moving radius, a
@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events.models.continuum import play_bound, play_probes, play_run
+from mdr_events.models.continuum import play_bound, play_probes, play_samples
 from mdr_events.models.continuum.play_bound import BOUND_GRID, _first_segment, sticking
 from mdr_events.models.continuum.play_reach import constant_part
 from mdr_events.models.continuum.play_springs import PlaySprings
@@ -34,8 +34,8 @@ LAYER = 5e-3
 SAMPLES = 41
 #: Times read along the first segment.
 TIMES = 200
-#: The probes, as :func:`~mdr_events.models.continuum.play_run._probed_all` reads them (shares of the radius).
-PROBES = np.linspace(0.0, 1.0 - play_run.PROBE_SHARE, play_run.PROBE_POINTS)
+#: The probes, as :func:`~mdr_events.models.continuum.play_samples._probed_all` reads them (shares of the radius).
+PROBES = np.linspace(0.0, 1.0 - play_samples.PROBE_SHARE, play_samples.PROBE_POINTS)
 #: The dip built into the adversarial springs' ``μρ``: its depth (share), centre and width (shares of the radius).
 DIP = (0.95, 0.15, 0.04)
 #: The narrow dip's time (a share of :data:`TIMES`: after ``|ẋ|(t − t_c)`` outgrows ``ū(a)``, before the layer's onset
@@ -203,7 +203,7 @@ def test_the_run_is_the_route_of_before_at_every_output(adhesive, motion, monkey
     """The whole run with the bound against the route of before (the probes read at every time where no node is at a
     cap): the same at every output, bit for bit, and fewer probes read."""
     motions = {"A 20°": me.Scenario("A", alpha=[20.0]), "in": fretting_in()}
-    read = read_with_and_without(monkeypatch, play_run, "PROBE_BOUND", contact_of("tau0+coulomb", adhesive),
+    read = read_with_and_without(monkeypatch, play_samples, "PROBE_BOUND", contact_of("tau0+coulomb", adhesive),
                                  motions[motion])
     assert sum(read[True]) < sum(read[False])
 

@@ -1,7 +1,7 @@
 r"""Where no probe can be at a cap before the slip onset, bounded in closed form: the probes need not be read there.
 
 The per-spring route (:mod:`.play_run`) reads, at every time where no node of the quadrature is at a cap,
-:data:`~.play_run.PROBE_POINTS` probes to find a zone opening between the nodes. Under ``τ0``'s part that is every
+:data:`~.play_samples.PROBE_POINTS` probes to find a zone opening between the nodes. Under ``τ0``'s part that is every
 output time before the slip onset (along scenario A at 20° on the paper's layer some 170 times of 1025 probes: half of
 the run). This module proves, where it can, that none of those probes is at a cap, so that they need not be read.
 
@@ -63,7 +63,7 @@ def sticking(play, times: np.ndarray, shares: np.ndarray) -> np.ndarray:
     times : numpy.ndarray
         The times (s, path clock), each in contact.
     shares : numpy.ndarray
-        The probes as shares of the radius, as the route reads them (:func:`~.play_run._probed_all`).
+        The probes as shares of the radius, as the route reads them (:func:`~.play_samples._probed_all`).
 
     Returns
     -------

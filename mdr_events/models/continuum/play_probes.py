@@ -1,7 +1,7 @@
 """The probes of the per-spring route (:mod:`.play_run`), where a zone opening between the quadrature's nodes is looked
 for: each probe's label at each time asked, read in as few evaluations of the anchors as the times allow.
 
-At a time where no node is at a cap :func:`~.play_run._probed_all` reads :data:`~.play_run.PROBE_POINTS` probes. The
+At a time where no node is at a cap :func:`~.play_samples._probed_all` reads :data:`~.play_samples.PROBE_POINTS` probes. The
 times on one part of :func:`~.play_reach.constant_part` (every window fixed but for ``x``: a fretting stroke before its
 slip onset) whose clamps before them are the same (no clamp time of the chain between the first and the last) and
 whose probes are the same springs share each spring's anchor before the clamp, so they are read in one evaluation
