@@ -33,8 +33,9 @@ PUBLIC_MODULES = ("mdr_events.theory.analytic", "mdr_events.theory.power_law", "
                   "mdr_events.theory.layer_symbolic", "mdr_events.models.continuum")
 
 #: Objects documented in the build that numpydoc skips: the internals' pages (``docs/api/internals``), whose
-#: names are ``mdr_events.<module>.<...>`` outside the public modules (and the continuum's own submodules). Every
-#: public object passes every check: there is no list of known failures, a docstring that fails breaks the build.
+#: names are ``mdr_events.<module>.<...>`` outside the public modules (and the continuum's, the layer's, analytic's,
+#: power_law's and mindlin's own submodules). Every public object passes every check: there is no list of known
+#: failures, a docstring that fails breaks the build.
 INTERNAL_PATTERNS = {r"^mdr_events\.(?!(" + "|".join(name.removeprefix("mdr_events.").replace(".", r"\.")
                                                       for name in ("mdr_events.theory.analytic",
                                                                    "mdr_events.theory.power_law",
@@ -47,6 +48,7 @@ INTERNAL_PATTERNS = {r"^mdr_events\.(?!(" + "|".join(name.removeprefix("mdr_even
                      + r")\.)[a-z_]+(\.[a-z_]+)*\.",
                      r"^mdr_events\.models\.continuum\.[a-z_]+\.",
                      r"^mdr_events\.theory\.layer\.[a-z_]+\.",
+                     r"^mdr_events\.theory\.(analytic|power_law|mindlin)\.[a-z_]+\.",
                      r"\.__init__$",
                      r"\.[A-Z][A-Z0-9_]+$"}   # constants (FRICTION_LAWS, ...): data, no signature to check
 

@@ -1,0 +1,62 @@
+"""What the paraboloid's closed forms are given and give, checked: finite real arguments (lengths and works never
+negative), results that fit in double precision (:class:`ResultOverflowError`), a scalar's result as a float.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from mdr_events.theory import symbolic
+from mdr_events.validation import SCALE_MAX, real_array, shown
+
+__all__ = ["NONNEGATIVE", "ResultOverflowError"]
+
+
+def _rel(key: str):
+    return symbolic.relation(key)
+
+
+#: Arguments of the closed forms that are lengths or works of their physics, never negative (the parameters refuse a
+#: negative work of adhesion; a negative radius gave a negative critical shift and a positive pull-off force).
+NONNEGATIVE = ("contact_radius", "work_of_adhesion", "amplitude")
+
+
+def _finite(**arguments) -> None:
+    """Refuse an argument with an entry that is no finite real number (``10**400`` read as inf), beyond
+    ``±SCALE_MAX`` (its square would overflow) or, of :data:`NONNEGATIVE`, below 0, naming it."""
+    for name, value in arguments.items():
+        low = 0.0 if name in NONNEGATIVE else -SCALE_MAX
+        if type(value) is float:
+            if low <= value <= SCALE_MAX:
+                continue
+            values = np.asarray(value)
+        elif isinstance(value, np.ndarray) and value.dtype.kind == "f":
+            values = value
+        else:
+            values = real_array(name, value, "real numbers")
+        if not (values.size == 0 or (low <= values.min() and values.max() <= SCALE_MAX)):
+            raise ValueError(f"{name}={shown(value)} is not allowed; allowed: finite real numbers "
+                             f"{'from 0' if low == 0.0 else f'from {low:.2g}'} to {SCALE_MAX:.2g} (SI units)")
+
+
+class ResultOverflowError(ValueError, OverflowError):
+    """A closed form's result overflows double precision for the arguments and parameters given: a ``ValueError``
+    (the input asks too much), and an ``OverflowError``, so that :mod:`mdr_events.theory.scales` names the parameter
+    scale behind it as it does for math's overflows."""
+
+
+def _representable(compute, function: str, **arguments):
+    """``compute()`` if every entry is finite (computed without a RuntimeWarning); else ``ValueError``: the arguments'
+    result overflows double precision."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        result = compute()
+    if np.all(np.isfinite(list(result.values()) if isinstance(result, dict) else result)):
+        return result
+    given = ", ".join(f"{name}={shown(value)}" for name, value in arguments.items())
+    raise ResultOverflowError(f"{function}({given}) is not allowed: its result overflows double precision; allowed: "
+                              "arguments and parameters whose result is a finite number")
+
+
+def _as_output(values: np.ndarray, like: np.ndarray):
+    return float(values) if np.ndim(like) == 0 else values
+

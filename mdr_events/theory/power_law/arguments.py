@@ -1,0 +1,108 @@
+"""What the power law's closed forms are given, checked: the indenter (a power law or the flat punch), the work
+of adhesion, the path angles and the "+" branch's deepest point; their output's shape; each kind's closed forms looked
+up (:func:`_forms`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from mdr_events.parameters import Parameters
+from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
+from mdr_events.theory import symbolic
+from mdr_events.theory.forms import ClosedForms
+from mdr_events.validation import SCALE_MAX, check_flag, check_real, validate_alpha
+
+__all__ = ["check_profile", "check_work", "as_output", "path_angles", "final_depth_of", "ADHESIVE_MIN_EXPONENT"]
+
+
+def _rel(key: str):
+    return symbolic.relation(key)
+
+
+#: With adhesion a power law needs ``n`` above this: below it ``√a`` outgrows ``aⁿ`` and no contact is stable.
+ADHESIVE_MIN_EXPONENT = 0.5
+
+
+def check_profile(profile) -> Profile:
+    """``profile`` if it is a :class:`PowerLaw` or a :class:`FlatPunch`; else ``TypeError`` naming it.
+
+    Parameters
+    ----------
+    profile : object
+        The indenter to check.
+
+    Returns
+    -------
+    PowerLaw or FlatPunch
+        ``profile`` itself.
+
+    Raises
+    ------
+    TypeError
+        Any other type (the paraboloid and a table have their own modules).
+    """
+    if not isinstance(profile, (PowerLaw, FlatPunch)):  # (what the package takes; each kind's forms: _forms)
+        raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: a PowerLaw or "
+                        "a FlatPunch (mdr_events.contact.indenters)")
+    return profile
+
+
+def check_work(work_of_adhesion) -> float:
+    """``work_of_adhesion`` as a float if it is a number from 0 to ``SCALE_MAX`` (J/m²: its square stays finite);
+    else ``ValueError`` naming it (a negative one gave ``nan`` and a positive pull-off force)."""
+    return check_real("work_of_adhesion", work_of_adhesion, f"a finite number >= 0 (J/m²), at most {SCALE_MAX:.2g}",
+                      lambda value: 0.0 <= value <= SCALE_MAX)
+
+
+_check_work = check_work
+
+
+def _check_adhesive(profile: PowerLaw, work_of_adhesion: float) -> None:
+    if work_of_adhesion > 0.0 and not profile.n > ADHESIVE_MIN_EXPONENT:
+        raise ValueError(f"PowerLaw.n={profile.n!r} is not allowed with adhesion (work of adhesion "
+                         f"{work_of_adhesion!r} J/m²); allowed: n > {ADHESIVE_MIN_EXPONENT:g} (below it no "
+                         "adhesive contact is stable)")
+
+
+def _power_law_only(profile, what: str) -> PowerLaw:
+    if not isinstance(check_profile(profile), PowerLaw):
+        raise TypeError(f"profile={profile!r} is not allowed for {what}; allowed: a PowerLaw (a flat punch keeps "
+                        "its radius while in contact)")
+    return profile
+
+
+def as_output(values: np.ndarray, like) -> np.ndarray | float:
+    """``values`` as a float where ``like`` is a scalar, else as they are."""
+    return float(values) if np.ndim(like) == 0 else values
+
+
+def path_angles(alpha, adhesion) -> tuple[np.ndarray, np.ndarray]:
+    """``adhesion`` checked as a flag, ``alpha`` as path angles (degrees, :func:`validate_alpha`), and where they are
+    vertical (``>= 90°``: no tangential shift, never slides)."""
+    check_flag("adhesion", adhesion)
+    alpha_arr = validate_alpha(alpha)
+    return alpha_arr, alpha_arr >= 90.0
+
+
+def final_depth_of(params: Parameters, final_depth) -> float:
+    """The "+" branch's deepest point: ``final_depth``, default ``2 d_max``; else ``ValueError`` naming it unless a
+    finite depth beyond ``d_max``."""
+    final = 2.0 * params.d_max if final_depth is None else final_depth
+    if not (isinstance(final, (int, float)) and math.isfinite(final) and final > params.d_max):
+        raise ValueError(f"final_depth={final!r} is not allowed; allowed: a finite depth > d_max = {params.d_max!r} m")
+    return final
+
+
+def _forms(profile) -> ClosedForms:
+    """The closed forms of ``profile``'s kind, ``profile`` checked (a power law or the flat punch).
+
+    Looked up by :func:`mdr_events.theory.kinds.theory_of`, imported when called: kinds files the package's functions
+    (and :mod:`mdr_events.theory.flat_punch` imports the package), so it cannot be imported on the package's import.
+    """
+    from mdr_events.theory.kinds import theory_of
+
+    return theory_of(check_profile(profile)).closed_forms
+
