@@ -144,37 +144,42 @@ def test_a_non_finite_argument_of_another_indenter_s_closed_form_is_refused(name
         _NON_FINITE_CASES[name]()
 
 
-# --- Z3 (not fixed this round: strict xfail): a work of adhesion (one number) given as an array or a list. The
-# paraboloid's ``analytic._finite`` takes arrays for every argument it checks, so ``jump_off``, ``pull_off_force``,
-# ``jkr_contact_radius`` and ``jump_in_radius`` end in NumPy's or Python's own TypeError ("only 0-dimensional arrays
-# can be converted to Python scalars", "can't multiply sequence by non-int", "The truth value of an array with more
-# than one element is ambiguous"), naming neither the argument nor what is allowed; ``power_law.hess_prefactor``
-# likewise, and the table's ``contact_radius`` and ``jump_off`` "unhashable type: 'numpy.ndarray'" (its cache key):
-# with ``power_law.with_radius_at``'s radius and depth and ``fretting_dissipated_energy``'s amplitude as a list: 28
-# cases of the round's two scans (``jkr_depth`` broadcasts a work array, as its depth: not counted). The fix
-# (``power_law.check_work``, a number, for the work of the scalar closed forms; a list read as an array) is in
-# analytic.py, power_law.py and tabulated.py, which this session's h89 (theory-topics) splits into packages: left to
-# after that merge. ------------------------------------------------------------------------------------------------
+# --- Z3: a work of adhesion (one number) given as an array or a list. The paraboloid's ``analytic._finite`` takes
+# arrays for every argument it checks, so ``jump_off``, ``pull_off_force``, ``jump_in_radius`` and
+# ``jkr_contact_radius`` ended in NumPy's or Python's own error ("only 0-dimensional arrays can be converted to Python
+# scalars", "can't multiply sequence by non-int", and ``jkr_contact_radius`` of an array ValueError "The truth value
+# of an array with more than one element is ambiguous"), naming neither the argument nor what is allowed;
+# ``power_law.hess_prefactor`` likewise, and the table's ``contact_radius`` and ``jump_off`` "unhashable type:
+# 'numpy.ndarray'" (its cache key): 28 cases of the round's two scans (``jkr_depth`` broadcasts a work array, as its
+# depth: not counted). Now each takes one number (``power_law.check_work``; a 0-d array's), else a ``TypeError``
+# naming ``work_of_adhesion`` and what is allowed. ----------------------------------------------------------------
 
 _WORKS = [np.array([0.05, 0.1]), [0.05, 0.1]]
 _SCALAR_WORK_CASES = {
     "jump_off": lambda work: me.jump_off(PAPER, work),
     "pull_off_force": lambda work: me.pull_off_force(PAPER, work),
+    "jump_in_radius": lambda work: me.analytic.jump_in_radius(PAPER, work),
     "jkr_contact_radius": lambda work: me.jkr_contact_radius(1e-4, PAPER, work),
     "tabulated.jump_off": lambda work: me.tabulated.jump_off(_table(me.TabulatedProfile), _PAPER_PARAMETERS, work),
+    "tabulated.contact_radius": lambda work: me.tabulated.contact_radius(1e-4, _table(me.TabulatedProfile),
+                                                                         _PAPER_PARAMETERS, work),
     "power_law.hess_prefactor": lambda work: me.power_law.hess_prefactor(_PAPER_PARAMETERS, work),
 }
 
 
-@pytest.mark.xfail(strict=True, reason="issue 32 round 27 Z3: a work of adhesion given as an array or list ends in "
-                                       "NumPy's or Python's own TypeError")
 @pytest.mark.parametrize("work", _WORKS, ids=["array", "list"])
 @pytest.mark.parametrize("name", sorted(_SCALAR_WORK_CASES))
 def test_a_work_of_adhesion_given_as_many_is_refused_by_name(name, work):
     """Z3 (a scalar argument given as many): refused in one line naming ``work_of_adhesion`` and what is allowed;
-    today NumPy's or Python's own TypeError, naming neither."""
-    with pytest.raises((TypeError, ValueError), match=r"work_of_adhesion=.* is not allowed; allowed"):
+    it was NumPy's or Python's own TypeError (or ValueError), naming neither."""
+    with pytest.raises(TypeError, match=r"^work_of_adhesion=.* is not allowed; allowed: a finite number >= 0"):
         _SCALAR_WORK_CASES[name](work)
+
+
+def test_a_work_of_adhesion_as_a_0d_array_is_one_number():
+    """Z3: a 0-d array of the work (one number) is the float it holds, the same jump-off exactly (it ended in
+    "unhashable type: 'numpy.ndarray'", the jump-off's cache key)."""
+    assert me.jump_off(PAPER, np.array(0.05)) == me.jump_off(PAPER, 0.05)
 
 
 # --- Z4: F_x's extrema of the per-spring route (play_run._force_extrema, the spans' route and the rate law's): the

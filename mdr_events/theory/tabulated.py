@@ -579,7 +579,6 @@ class _Iterating(NamedTuple):
         return _Iterating(*(array[going] for array in self[:6]), self.values[:, going], self.rates[:, going])
 
 
-@functools.lru_cache(maxsize=64)
 def branch(profile: TabulatedProfile, params: Parameters, work_of_adhesion: float) -> TabulatedBranch:
     """The :class:`TabulatedBranch` of ``profile`` for ``params`` and a work of adhesion, built once per process.
 
@@ -597,7 +596,13 @@ def branch(profile: TabulatedProfile, params: Parameters, work_of_adhesion: floa
     TabulatedBranch
         The branch, cached (the last 64).
     """
-    return TabulatedBranch(_check(profile), params, power_law.check_work(work_of_adhesion))
+    return _branch(profile, params, power_law.check_work(work_of_adhesion))
+
+
+@functools.lru_cache(maxsize=64)
+def _branch(profile: TabulatedProfile, params: Parameters, work_of_adhesion: float) -> TabulatedBranch:
+    """:func:`branch` of a work checked (a float: the cache's key, which an array or a list cannot be)."""
+    return TabulatedBranch(_check(profile), params, work_of_adhesion)
 
 
 def normal_force(depth, contact_radius, profile: TabulatedProfile, params: Parameters):

@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from mdr_events.theory import symbolic
+from mdr_events.theory.power_law.arguments import check_work
 from mdr_events.validation import SCALE_MAX, real_array, shown
 
 __all__ = ["NONNEGATIVE", "ResultOverflowError"]
@@ -19,6 +20,16 @@ def _rel(key: str):
 #: Arguments of the closed forms that are lengths or works of their physics, never negative (the parameters refuse a
 #: negative work of adhesion; a negative radius gave a negative critical shift and a positive pull-off force).
 NONNEGATIVE = ("contact_radius", "work_of_adhesion", "amplitude")
+
+
+def _one_work(work_of_adhesion) -> float:
+    """``work_of_adhesion`` of a scalar closed form as a float: checked by :func:`_finite` (its message for a
+    negative or non-finite work), then one number (a 0-d array's), else ``TypeError`` naming it (an array or a list
+    ended in NumPy's or Python's own error)."""
+    _finite(work_of_adhesion=work_of_adhesion)
+    if isinstance(work_of_adhesion, np.ndarray) and work_of_adhesion.ndim == 0:
+        work_of_adhesion = work_of_adhesion[()]
+    return check_work(work_of_adhesion)
 
 
 def _finite(**arguments) -> None:
