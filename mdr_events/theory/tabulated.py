@@ -33,6 +33,7 @@ from scipy import interpolate, optimize
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.theory import power_law, symbolic
+from mdr_events.theory.analytic.arguments import _finite
 from mdr_events.validation import validate_alpha
 
 __all__ = ["SUBDIVISIONS", "GRID_POINTS", "END_SHARE", "EquivalentProfile", "TabulatedBranch", "equivalent", "branch",
@@ -222,6 +223,7 @@ def equivalent_profile(x, profile: TabulatedProfile):
     float or numpy.ndarray
         ``g(x)`` (m), the shape of ``x``.
     """
+    _finite(x=x)
     values = equivalent(profile)(x)
     return float(values) if np.ndim(x) == 0 else values
 
@@ -626,6 +628,12 @@ def normal_force(depth, contact_radius, profile: TabulatedProfile, params: Param
     float or numpy.ndarray
         ``F_N`` (N; negative: tensile).
     """
+    _finite(depth=depth, contact_radius=contact_radius)
+    return _normal_force(depth, contact_radius, profile, params)
+
+
+def _normal_force(depth, contact_radius, profile: TabulatedProfile, params: Parameters):
+    """:func:`normal_force` unchecked (the simulators' depths and radii, their own)."""
     shape = equivalent(profile)
     a = np.asarray(contact_radius, dtype=float)
     force = 2.0 * params.E_star * (np.asarray(depth, dtype=float) * a - shape.g_integral(np.clip(a, 0.0, shape.x_max)))
@@ -653,6 +661,7 @@ def contact_radius(depth, profile: TabulatedProfile, params: Parameters, work_of
     float or numpy.ndarray
         The radius ``a`` (m) or ``nan``, the shape of ``depth``.
     """
+    _finite(depth=depth)
     radii = branch(profile, params, work_of_adhesion).radii(depth)
     return float(radii) if np.ndim(depth) == 0 else radii
 
