@@ -18,6 +18,7 @@ import pytest
 
 import mdr_events as me
 from mdr_events.contact.indenters import indenter_kind
+from mdr_events.theory import flat_punch
 
 PAPER = me.Contact.paper()
 #: The paper's contact on its 2 mm bonded layer (the layer's cases below).
@@ -107,74 +108,85 @@ def test_a_punch_subclass_critical_angle_on_a_layer_is_its_base_s():
     assert me.critical_angle(_on(UserPunch(1e-3), h=LAYER), "A") == expected
 
 
-# --- Z2 (not fixed this round: strict xfail): non-finite depths, radii and positions in the closed forms of the
-# indenters other than the paraboloid. ``analytic``'s closed forms refuse them in one line ("depth=array([nan]) is not
-# allowed; allowed: finite real numbers from -1.3e+154 to 1.3e+154 (SI units)"), but ``power_law``'s
-# (``equivalent_profile``, ``branch_depth``, ``normal_force``, ``branch_normal_force``, ``contact_radius``,
-# ``hess_prefactor``), ``tabulated``'s (``equivalent_profile``, ``normal_force``, ``contact_radius``) and
-# ``flat_punch``'s (``normal_force``, ``radius``, ``coulomb_force``) return nan or inf for them, some with a
-# RuntimeWarning, and two return finite values (``flat_punch.radius(inf)`` the face's radius, the table's ``g(nan)``
-# inf): 79 cases of the round's scans. The fix (analytic's ``_finite`` check at each public entry) is left to
-# after the split of power_law.py and the table's route this session (h89, h86): the simulators call these functions
-# internally, so the checked entries need unchecked twins for them, a change across theory and models. -----------
+# --- Z2: non-finite depths, radii and positions in the closed forms of the indenters other than the paraboloid.
+# ``analytic``'s closed forms refuse them in one line ("depth=array([nan]) is not allowed; allowed: finite real
+# numbers from -1.3e+154 to 1.3e+154 (SI units)"), but ``power_law``'s (``equivalent_profile``, ``branch_depth``,
+# ``normal_force``, ``branch_normal_force``, ``contact_radius``), ``tabulated``'s (``equivalent_profile``,
+# ``normal_force``, ``contact_radius``) and ``flat_punch``'s (``normal_force``, ``radius``, ``coulomb_force``)
+# returned nan or inf for them, some with a RuntimeWarning, and two a number (``flat_punch.radius(inf)`` the face's
+# radius, the table's ``g(nan)`` inf): 79 cases of the round's scans (``hess_prefactor``'s work: Z3's check). Now
+# each public entry refuses them with ``analytic``'s check (``_finite``); the simulators call the unchecked cores
+# (their depths and radii are their own).
 
 _PAPER_PARAMETERS = me.Parameters.paper()
 _NON_FINITE_CASES = {
+    "power_law.equivalent_profile x nan": lambda: me.power_law.equivalent_profile(np.nan, me.PowerLaw(1.0, 2.0)),
+    "power_law.branch_depth radius inf": lambda: me.power_law.branch_depth(np.inf, me.PowerLaw(1.0, 2.0),
+                                                                           _PAPER_PARAMETERS, 0.05),
     "power_law.normal_force depth nan": lambda: me.power_law.normal_force(np.array([1e-4, np.nan]), 1e-3,
                                                                            me.PowerLaw(1.0, 2.0), _PAPER_PARAMETERS),
+    "power_law.normal_force radius nan": lambda: me.power_law.normal_force(1e-4, np.nan, me.PowerLaw(1.0, 2.0),
+                                                                            _PAPER_PARAMETERS),
+    "power_law.branch_normal_force radius inf": lambda: me.power_law.branch_normal_force(
+        np.inf, me.PowerLaw(1.0, 2.0), _PAPER_PARAMETERS, 0.05),
     "power_law.contact_radius depth inf": lambda: me.power_law.contact_radius(np.inf, me.PowerLaw(1.0, 2.0),
                                                                                _PAPER_PARAMETERS, 0.05),
     "tabulated.equivalent_profile x nan": lambda: me.tabulated.equivalent_profile(np.nan, _table(me.TabulatedProfile)),
     "tabulated.normal_force depth inf": lambda: me.tabulated.normal_force(np.inf, 1e-3, _table(me.TabulatedProfile),
                                                                            _PAPER_PARAMETERS),
-    "flat_punch.radius depth inf": lambda: me.power_law.contact_radius(np.inf, me.FlatPunch(1e-3), _PAPER_PARAMETERS,
-                                                                        0.05),
+    "tabulated.contact_radius depth nan": lambda: me.tabulated.contact_radius(np.nan, _table(me.TabulatedProfile),
+                                                                               _PAPER_PARAMETERS, 0.05),
+    "flat_punch.radius depth inf": lambda: flat_punch.radius(np.inf, me.FlatPunch(1e-3), _PAPER_PARAMETERS, 0.05),
     "flat_punch.normal_force depth nan": lambda: me.power_law.normal_force(np.nan, None, me.FlatPunch(1e-3),
                                                                             _PAPER_PARAMETERS),
+    "flat_punch.coulomb_force sliding inf": lambda: flat_punch.coulomb_force(np.inf, _PAPER_PARAMETERS, 1e-3),
 }
 
 
-@pytest.mark.xfail(strict=True, reason="issue 32 round 27 Z2: the closed forms of power laws, tables and the flat "
-                                       "punch take non-finite depths, radii and positions (nan/inf out)")
 @pytest.mark.parametrize("name", sorted(_NON_FINITE_CASES))
 def test_a_non_finite_argument_of_another_indenter_s_closed_form_is_refused(name):
     """Z2 (non-finite inputs of the closed forms): refused in one line naming the argument, as the paraboloid's
-    ``analytic`` closed forms refuse them; today nan or inf comes out (or the punch's radius for an infinite depth)."""
-    with pytest.raises(ValueError, match=r"is not allowed; allowed: finite"):
+    ``analytic`` closed forms refuse them; nan or inf came out (or the punch's radius for an infinite depth)."""
+    with pytest.raises(ValueError, match=r"^(x|depth|contact_radius|sliding)=.* is not allowed; allowed: finite"):
         _NON_FINITE_CASES[name]()
 
 
-# --- Z3 (not fixed this round: strict xfail): a work of adhesion (one number) given as an array or a list. The
-# paraboloid's ``analytic._finite`` takes arrays for every argument it checks, so ``jump_off``, ``pull_off_force``,
-# ``jkr_contact_radius`` and ``jump_in_radius`` end in NumPy's or Python's own TypeError ("only 0-dimensional arrays
-# can be converted to Python scalars", "can't multiply sequence by non-int", "The truth value of an array with more
-# than one element is ambiguous"), naming neither the argument nor what is allowed; ``power_law.hess_prefactor``
-# likewise, and the table's ``contact_radius`` and ``jump_off`` "unhashable type: 'numpy.ndarray'" (its cache key):
-# with ``power_law.with_radius_at``'s radius and depth and ``fretting_dissipated_energy``'s amplitude as a list: 28
-# cases of the round's two scans (``jkr_depth`` broadcasts a work array, as its depth: not counted). The fix
-# (``power_law.check_work``, a number, for the work of the scalar closed forms; a list read as an array) is in
-# analytic.py, power_law.py and tabulated.py, which this session's h89 (theory-topics) splits into packages: left to
-# after that merge. ------------------------------------------------------------------------------------------------
+# --- Z3: a work of adhesion (one number) given as an array or a list. The paraboloid's ``analytic._finite`` takes
+# arrays for every argument it checks, so ``jump_off``, ``pull_off_force``, ``jump_in_radius`` and
+# ``jkr_contact_radius`` ended in NumPy's or Python's own error ("only 0-dimensional arrays can be converted to Python
+# scalars", "can't multiply sequence by non-int", and ``jkr_contact_radius`` of an array ValueError "The truth value
+# of an array with more than one element is ambiguous"), naming neither the argument nor what is allowed;
+# ``power_law.hess_prefactor`` likewise, and the table's ``contact_radius`` and ``jump_off`` "unhashable type:
+# 'numpy.ndarray'" (its cache key): 28 cases of the round's two scans (``jkr_depth`` broadcasts a work array, as its
+# depth: not counted). Now each takes one number (``power_law.check_work``; a 0-d array's), else a ``TypeError``
+# naming ``work_of_adhesion`` and what is allowed. ----------------------------------------------------------------
 
 _WORKS = [np.array([0.05, 0.1]), [0.05, 0.1]]
 _SCALAR_WORK_CASES = {
     "jump_off": lambda work: me.jump_off(PAPER, work),
     "pull_off_force": lambda work: me.pull_off_force(PAPER, work),
+    "jump_in_radius": lambda work: me.analytic.jump_in_radius(PAPER, work),
     "jkr_contact_radius": lambda work: me.jkr_contact_radius(1e-4, PAPER, work),
     "tabulated.jump_off": lambda work: me.tabulated.jump_off(_table(me.TabulatedProfile), _PAPER_PARAMETERS, work),
+    "tabulated.contact_radius": lambda work: me.tabulated.contact_radius(1e-4, _table(me.TabulatedProfile),
+                                                                         _PAPER_PARAMETERS, work),
     "power_law.hess_prefactor": lambda work: me.power_law.hess_prefactor(_PAPER_PARAMETERS, work),
 }
 
 
-@pytest.mark.xfail(strict=True, reason="issue 32 round 27 Z3: a work of adhesion given as an array or list ends in "
-                                       "NumPy's or Python's own TypeError")
 @pytest.mark.parametrize("work", _WORKS, ids=["array", "list"])
 @pytest.mark.parametrize("name", sorted(_SCALAR_WORK_CASES))
 def test_a_work_of_adhesion_given_as_many_is_refused_by_name(name, work):
     """Z3 (a scalar argument given as many): refused in one line naming ``work_of_adhesion`` and what is allowed;
-    today NumPy's or Python's own TypeError, naming neither."""
-    with pytest.raises((TypeError, ValueError), match=r"work_of_adhesion=.* is not allowed; allowed"):
+    it was NumPy's or Python's own TypeError (or ValueError), naming neither."""
+    with pytest.raises(TypeError, match=r"^work_of_adhesion=.* is not allowed; allowed: a finite number >= 0"):
         _SCALAR_WORK_CASES[name](work)
+
+
+def test_a_work_of_adhesion_as_a_0d_array_is_one_number():
+    """Z3: a 0-d array of the work (one number) is the float it holds, the same jump-off exactly (it ended in
+    "unhashable type: 'numpy.ndarray'", the jump-off's cache key)."""
+    assert me.jump_off(PAPER, np.array(0.05)) == me.jump_off(PAPER, 0.05)
 
 
 # --- Z4: F_x's extrema of the per-spring route (play_run._force_extrema, the spans' route and the rate law's): the
@@ -182,7 +194,8 @@ def test_a_work_of_adhesion_given_as_many_is_refused_by_name(name, work):
 # corner, taken as the extremum (a kink). But F_x kinks at a corner where only the depth turns and goes on growing
 # past it: on a 0.5 mm bonded layer under tau0+coulomb, a path sliding in at the surface, pressing in while x turns
 # back, then pulling out with x still going back, reported with 3 output samples F_x's minimum -0.5579 N at the
-# deepest corner where the run reaches -0.5617 N some 23 s later (0.7 %). Now a corner is refined on each side. ----
+# deepest corner where the run reaches -0.5617 N some 23 s later (0.7 %). Now a corner is refined on each side (the
+# test runs the spans' route; the rate law's calls the same ``_force_extrema``, not run here). ----------------------
 
 #: The reported extremum may pass the dense samples' best by the refinement's round-off only (its ``xatol`` is 1e-12
 #: of the path's duration; F_x's slope times that is far below 1e-9 of its size).

@@ -29,6 +29,9 @@ from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import PowerLaw
 from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law, symbolic
+# (the closed forms unchecked: their radii here are computed, an angle near 0° may take them to inf)
+from mdr_events.theory.power_law.normal import (_branch_depth as _power_law_depth,
+                                                _equivalent_profile as _power_law_profile)
 
 __all__ = ["GRID", "BISECTIONS", "INDENTATION_REACH", "onset_excess_A", "d_crit_A", "critical_angle_A",
            "d_crit_B_indentation"]
@@ -82,7 +85,7 @@ def _onset_excess(depth, cot, friction: FrictionLaw, params: Parameters, profile
     K, kappa = power_law.cap_per_radius(params), friction.coulomb_mu * params.E_star / params.G_star
     radius = np.asarray(power_law.contact_radius(depth, profile, params, params.dgamma0), dtype=float)
     jump_in = ring.radius
-    g_jump_in = float(power_law.equivalent_profile(jump_in, profile))
+    g_jump_in = float(_power_law_profile(jump_in, profile))
     best = (depth - ring.depth) * cot - K * radius - kappa * np.maximum(depth - g_jump_in, 0.0)  # the ring's edge
     boundary = np.asarray(power_law.contact_radius(depth, profile, params, 0.0), dtype=float)  # x_c
     hess = power_law.hess_prefactor(params, params.dgamma0)
@@ -186,8 +189,8 @@ def _never_beyond(cot: np.ndarray, friction: FrictionLaw, params: Parameters, pr
     Heß's prefactor); the ring's edge falls once compressed (``d > g(a(d_max))``: its slope ``cot α − κ − K ȧ < 0``)."""
     kappa = friction.coulomb_mu * params.E_star / params.G_star
     K, hess = power_law.cap_per_radius(params), power_law.hess_prefactor(params, params.dgamma0)
-    boundary = np.asarray(power_law.equivalent_profile((cot * hess / K) ** 2, profile), dtype=float)
-    compressed_ring = float(power_law.equivalent_profile(ring.radius, profile))
+    boundary = np.asarray(_power_law_profile((cot * hess / K) ** 2, profile), dtype=float)
+    compressed_ring = float(_power_law_profile(ring.radius, profile))
     bound = np.where(cot <= kappa, np.maximum(boundary, compressed_ring), np.inf)
     if profile.n == 1.0:
         bound = np.minimum(bound, _cone_never_beyond(cot, kappa, K, friction, params, profile, ring, boundary))
@@ -200,15 +203,15 @@ def _cone_never_beyond(cot: np.ndarray, kappa: float, K: float, friction: Fricti
     ``κ₁ c a = d + k √a >= d``, so the ring's compressed edge's excess is at most ``s d + κ g(a_R) − d_max cot α`` and
     the grown springs' turn's ``s d + κ Δl0(ξ*) − d0(ξ*)(cot α − κ)``: both below 0 beyond their constant over ``−s``;
     ``x_c`` as for ``cot α <= κ``."""
-    prefactor = float(power_law.equivalent_profile(1.0, profile))  # κ₁ c
+    prefactor = float(_power_law_profile(1.0, profile))  # κ₁ c
     slope = cot - kappa - K / prefactor
-    g_ring = float(power_law.equivalent_profile(ring.radius, profile))
+    g_ring = float(_power_law_profile(ring.radius, profile))
     constants = [kappa * g_ring - params.d_max * cot]
     arguments = (friction.coulomb_mu, params.dgamma0, profile.c, profile.n, params.E_star, params.G_star)
     if params.dgamma0 > 0:
         with np.errstate(divide="ignore", invalid="ignore"):
             turn = np.asarray(symbolic.relation("adhesive_onset_turn_A").numeric(cot, *arguments), dtype=float)
-            grown = np.asarray(power_law.branch_depth(turn, profile, params, params.dgamma0), dtype=float)
+            grown = np.asarray(_power_law_depth(turn, profile, params, params.dgamma0), dtype=float)
         hess = power_law.hess_prefactor(params, params.dgamma0)
         constants.append(np.where(cot > kappa, kappa * hess * np.sqrt(turn) - grown * (cot - kappa), -np.inf))
     with np.errstate(divide="ignore", invalid="ignore"):

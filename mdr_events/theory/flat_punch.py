@@ -24,6 +24,7 @@ from mdr_events.contact.friction import FrictionLaw, as_friction_law
 from mdr_events.contact.indenters import FlatPunch
 from mdr_events.parameters import Parameters
 from mdr_events.theory import symbolic
+from mdr_events.theory.analytic.arguments import _finite
 from mdr_events.theory.forms import ClosedForms, FrictionForms
 from mdr_events.theory.power_law import as_output, cap_per_radius, check_work, final_depth_of, path_angles
 from mdr_events.validation import check_flag, real_array
@@ -71,6 +72,7 @@ def normal_force(depth, contact_radius, profile: FlatPunch, params: Parameters):
     ValueError
         A ``contact_radius`` other than the punch's own.
     """
+    _finite(depth=depth)
     profile = _punch(profile, "normal_force")
     if contact_radius is not None and not np.all(np.asarray(contact_radius) == profile.radius):
         raise ValueError(f"contact_radius={contact_radius!r} is not allowed for {profile!r}; allowed: None or "
@@ -126,6 +128,12 @@ def radius(depth, profile: FlatPunch, params: Parameters, work_of_adhesion: floa
     float or numpy.ndarray
         The punch's radius (m), or ``nan`` where the contact has come apart; the shape of ``depth``.
     """
+    _finite(depth=depth)
+    return _radius(depth, profile, params, work_of_adhesion, fold_share)
+
+
+def _radius(depth, profile: FlatPunch, params: Parameters, work_of_adhesion: float, fold_share: float = 0.0):
+    """:func:`radius` unchecked (the continuum's branch: its depths its own)."""
     bottom = jump_off(profile, params, work_of_adhesion)["depth"] * (1.0 + fold_share)
     depth = np.asarray(depth, dtype=float)
     return as_output(np.where(depth >= bottom, profile.radius, np.nan), depth)
@@ -400,6 +408,7 @@ def coulomb_force(sliding, params: Parameters, contact_radius: float):
     float or numpy.ndarray
         The force (N), the shape of ``sliding``.
     """
+    _finite(sliding=sliding, contact_radius=contact_radius)
     return 2.0 * params.G_star * contact_radius * sliding
 
 

@@ -24,6 +24,7 @@ import numpy as np
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile, TabulatedProfile, indenter_kind
 from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic, flat_punch, power_law, symbolic, tabulated
+from mdr_events.theory.power_law.normal import _equivalent_profile as _power_law_profile
 from mdr_events.theory.forms import ClosedForms, FrictionForms
 
 __all__ = ["IndenterTheory", "theory_of"]
@@ -88,7 +89,7 @@ def _paraboloid_springs(profile: None, params: Parameters) -> SpringProfile:
 
 def _power_law_springs(profile: PowerLaw, params: Parameters) -> SpringProfile:
     """``g(x) = κ c |x|ⁿ`` (3)."""
-    return lambda x: power_law.equivalent_profile(x, profile)
+    return lambda x: _power_law_profile(x, profile)  # (unchecked: the springs' own coordinates)
 
 
 def _flat_punch_springs(profile: FlatPunch, params: Parameters) -> SpringProfile:

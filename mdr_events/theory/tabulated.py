@@ -33,6 +33,7 @@ from scipy import interpolate, optimize
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.theory import power_law, symbolic
+from mdr_events.theory.analytic.arguments import _finite
 from mdr_events.validation import validate_alpha
 
 __all__ = ["SUBDIVISIONS", "GRID_POINTS", "END_SHARE", "EquivalentProfile", "TabulatedBranch", "equivalent", "branch",
@@ -233,6 +234,7 @@ def equivalent_profile(x, profile: TabulatedProfile):
     float or numpy.ndarray
         ``g(x)`` (m), the shape of ``x``.
     """
+    _finite(x=x)
     values = equivalent(profile)(x)
     return float(values) if np.ndim(x) == 0 else values
 
@@ -611,7 +613,6 @@ class _Iterating(NamedTuple):
         return _Iterating(*(array[going] for array in self[:6]), self.values[:, going], self.rates[:, going])
 
 
-@functools.lru_cache(maxsize=64)
 def branch(profile: TabulatedProfile, params: Parameters, work_of_adhesion: float) -> TabulatedBranch:
     """The :class:`TabulatedBranch` of ``profile`` for ``params`` and a work of adhesion, built once per process.
 
@@ -629,7 +630,13 @@ def branch(profile: TabulatedProfile, params: Parameters, work_of_adhesion: floa
     TabulatedBranch
         The branch, cached (the last 64).
     """
-    return TabulatedBranch(_check(profile), params, power_law.check_work(work_of_adhesion))
+    return _branch(profile, params, power_law.check_work(work_of_adhesion))
+
+
+@functools.lru_cache(maxsize=64)
+def _branch(profile: TabulatedProfile, params: Parameters, work_of_adhesion: float) -> TabulatedBranch:
+    """:func:`branch` of a work checked (a float: the cache's key, which an array or a list cannot be)."""
+    return TabulatedBranch(_check(profile), params, work_of_adhesion)
 
 
 def normal_force(depth, contact_radius, profile: TabulatedProfile, params: Parameters):
@@ -653,6 +660,12 @@ def normal_force(depth, contact_radius, profile: TabulatedProfile, params: Param
     float or numpy.ndarray
         ``F_N`` (N; negative: tensile).
     """
+    _finite(depth=depth, contact_radius=contact_radius)
+    return _normal_force(depth, contact_radius, profile, params)
+
+
+def _normal_force(depth, contact_radius, profile: TabulatedProfile, params: Parameters):
+    """:func:`normal_force` unchecked (the simulators' depths and radii, their own)."""
     shape = equivalent(profile)
     a = np.asarray(contact_radius, dtype=float)
     force = 2.0 * params.E_star * (np.asarray(depth, dtype=float) * a - shape.g_integral(np.clip(a, 0.0, shape.x_max)))
@@ -680,6 +693,7 @@ def contact_radius(depth, profile: TabulatedProfile, params: Parameters, work_of
     float or numpy.ndarray
         The radius ``a`` (m) or ``nan``, the shape of ``depth``.
     """
+    _finite(depth=depth)
     radii = branch(profile, params, work_of_adhesion).radii(depth)
     return float(radii) if np.ndim(depth) == 0 else radii
 

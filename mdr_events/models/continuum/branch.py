@@ -9,6 +9,8 @@ import math
 import numpy as np
 
 from mdr_events.theory import analytic, flat_punch, power_law, symbolic, tabulated
+# (the closed forms unchecked: a branch's work is checked once when it is made, its depths and radii are the run's own)
+from mdr_events.theory.power_law.normal import _branch_depth as _power_law_depth, _contact_radius as _power_law_radius
 from mdr_events.theory.quartic import depressed_quartic_root
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, TabulatedProfile, indenter_kind
@@ -447,12 +449,11 @@ class PowerLawBranch(Branch):
 
     def depths(self, a: np.ndarray) -> np.ndarray:
         a = np.asarray(a, dtype=float)
-        value = power_law.branch_depth(np.where(a > 0, a, 1.0), self.profile, self.params, self.work)
+        value = _power_law_depth(np.where(a > 0, a, 1.0), self.profile, self.params, self.work)
         return np.where(a > 0, value, 0.0)
 
     def radii(self, depth: np.ndarray) -> np.ndarray:
-        return np.asarray(power_law.contact_radius(np.asarray(depth, dtype=float), self.profile, self.params,
-                                                   self.work))
+        return np.asarray(_power_law_radius(np.asarray(depth, dtype=float), self.profile, self.params, self.work))
 
     def radius(self, depth: float, rtol: float) -> float:
         if self.work == 0.0:  # no contact above the surface
@@ -510,10 +511,10 @@ class FlatPunchBranch(Branch):
         return np.where(a > 0, self.jump_off_depth, 0.0)
 
     def radii(self, depth: np.ndarray) -> np.ndarray:
-        return np.asarray(flat_punch.radius(depth, self.profile, self.params, self.work, FOLD_SHARE))
+        return np.asarray(flat_punch._radius(depth, self.profile, self.params, self.work, FOLD_SHARE))
 
     def radius(self, depth: float, rtol: float) -> float:
-        return float(flat_punch.radius(depth, self.profile, self.params, self.work, FOLD_SHARE))
+        return float(flat_punch._radius(depth, self.profile, self.params, self.work, FOLD_SHARE))
 
 
 class TabulatedBranch(Branch):

@@ -232,11 +232,11 @@ def _flat_punch_force(params: Parameters, profile, depth, radius):
 
 
 def _tabulated_force(params: Parameters, profile, depth, radius):
-    return tabulated.normal_force(depth, radius, profile, params)
+    return tabulated._normal_force(depth, radius, profile, params)  # (unchecked: the run's own depths and radii)
 
 
 def _power_law_force(params: Parameters, profile, depth, radius):
-    return power_law.normal_force(depth, radius, profile, params)
+    return power_law._normal_force(depth, radius, power_law.check_profile(profile), params)  # (unchecked, as above)
 
 
 #: The half-space's normal force (10) of each kind of indenter, by its type (``None``: the paper's paraboloid; any

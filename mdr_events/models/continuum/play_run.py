@@ -488,9 +488,11 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
         value, time = float(force[k]), float(times[k])
         low, high = times[max(k - 1, 0)], times[min(k + 1, times.size - 1)]
         # (at a corner F_x kinks but may go on growing past it, as where the depth turns and x does not: issue 32
-        # round 27 Z4; each side of the kink refined on its own, the corner kept where it is the extremum)
+        # round 27 Z4; each side of the kink refined on its own, the corner kept where it is the extremum; ``best``,
+        # the best sample, an end of each side, not a side's refined time)
+        best = time
         for a, b in ((low, time), (time, high)) if time in corners else ((low, high),):
-            if b > a and value != 0.0 and not _monotone(play, np.unique([a, time, b]) + start):
+            if b > a and value != 0.0 and not _monotone(play, np.unique([a, best, b]) + start):
                 found = minimize_scalar(lambda t: -sign * play.state(float(t) + start)[0], bounds=(a, b),
                                         method="bounded", options={"xatol": EXTREMUM_XTOL * duration})
                 refined = -sign * float(found.fun)

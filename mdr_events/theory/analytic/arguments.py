@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from mdr_events.theory import symbolic
-from mdr_events.validation import SCALE_MAX, real_array, shown
+from mdr_events.validation import SCALE_MAX, check_real, real_array, shown
 
 __all__ = ["NONNEGATIVE", "ResultOverflowError"]
 
@@ -19,6 +19,25 @@ def _rel(key: str):
 #: Arguments of the closed forms that are lengths or works of their physics, never negative (the parameters refuse a
 #: negative work of adhesion; a negative radius gave a negative critical shift and a positive pull-off force).
 NONNEGATIVE = ("contact_radius", "work_of_adhesion", "amplitude")
+
+
+def check_work(work_of_adhesion) -> float:
+    """``work_of_adhesion`` as a float if it is a number from 0 to ``SCALE_MAX`` (J/m²: its square stays finite);
+    else ``TypeError`` (no number: an array or a list of them) or ``ValueError`` naming it (a negative one gave
+    ``nan`` and a positive pull-off force). The scalar closed forms' work, here and in
+    :mod:`mdr_events.theory.power_law` and :mod:`mdr_events.theory.tabulated`."""
+    return check_real("work_of_adhesion", work_of_adhesion, f"a finite number >= 0 (J/m²), at most {SCALE_MAX:.2g}",
+                      lambda value: 0.0 <= value <= SCALE_MAX)
+
+
+def _one_work(work_of_adhesion) -> float:
+    """``work_of_adhesion`` of a scalar closed form as a float: checked by :func:`_finite` (its message for a
+    negative or non-finite work), then one number (a 0-d array's), else ``TypeError`` naming it (an array or a list
+    ended in NumPy's or Python's own error)."""
+    _finite(work_of_adhesion=work_of_adhesion)
+    if isinstance(work_of_adhesion, np.ndarray) and work_of_adhesion.ndim == 0:
+        work_of_adhesion = work_of_adhesion[()]
+    return check_work(work_of_adhesion)
 
 
 def _finite(**arguments) -> None:

@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from mdr_events.theory.analytic.arguments import _as_output, _finite, _rel, _representable
+from mdr_events.theory.analytic.arguments import _as_output, _finite, _one_work, _rel, _representable
 from mdr_events.theory.roots import positive_polynomial_root
 from mdr_events.theory.job import ContactLike, on_layer, paper_parameters
 
@@ -153,7 +153,7 @@ def jump_off(contact: ContactLike, work_of_adhesion: float) -> dict[str, float]:
     dict of str to float
         ``contact_radius`` (m), ``depth`` (m) and ``normal_force`` (N) at the jump-off.
     """
-    _finite(work_of_adhesion=work_of_adhesion)
+    work_of_adhesion = _one_work(work_of_adhesion)
     if on_layer(contact):
         from mdr_events.theory.layer.branch_points import layer_jump_off
 
@@ -199,7 +199,7 @@ def jump_in_radius(contact: ContactLike, work_of_adhesion: float) -> float:
     float
         The contact radius (m) at first touch.
     """
-    _finite(work_of_adhesion=work_of_adhesion)
+    work_of_adhesion = _one_work(work_of_adhesion)
     if on_layer(contact):
         from mdr_events.theory.layer.branch_points import layer_jump_in_radius
 
@@ -230,7 +230,7 @@ def pull_off_force(contact: ContactLike, work_of_adhesion: float) -> float:
     float
         The pull-off force (N, negative) under force control.
     """
-    _finite(work_of_adhesion=work_of_adhesion)
+    work_of_adhesion = _one_work(work_of_adhesion)
     if on_layer(contact):
         from mdr_events.theory.layer.branch_points import layer_pull_off_force
 
@@ -262,7 +262,8 @@ def jkr_contact_radius(depth, contact: ContactLike, work_of_adhesion: float):
         The contact radius ``a`` (m) on the stable branch of (9), ``nan`` below the jump-off depth; the shape of
         ``depth``.
     """
-    _finite(depth=depth, work_of_adhesion=work_of_adhesion)
+    _finite(depth=depth)
+    work_of_adhesion = _one_work(work_of_adhesion)
     params = paper_parameters(contact, "jkr_contact_radius")
     depth_arr = np.asarray(depth, dtype=float)
     if work_of_adhesion == 0.0:

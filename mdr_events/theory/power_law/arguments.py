@@ -12,8 +12,9 @@ import numpy as np
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
 from mdr_events.theory import symbolic
+from mdr_events.theory.analytic.arguments import check_work
 from mdr_events.theory.forms import ClosedForms
-from mdr_events.validation import SCALE_MAX, check_flag, check_real, validate_alpha
+from mdr_events.validation import check_flag, validate_alpha
 
 __all__ = ["check_profile", "check_work", "as_output", "path_angles", "final_depth_of", "ADHESIVE_MIN_EXPONENT"]
 
@@ -48,13 +49,6 @@ def check_profile(profile) -> Profile:
         raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: a PowerLaw or "
                         "a FlatPunch (mdr_events.contact.indenters)")
     return profile
-
-
-def check_work(work_of_adhesion) -> float:
-    """``work_of_adhesion`` as a float if it is a number from 0 to ``SCALE_MAX`` (J/m²: its square stays finite);
-    else ``ValueError`` naming it (a negative one gave ``nan`` and a positive pull-off force)."""
-    return check_real("work_of_adhesion", work_of_adhesion, f"a finite number >= 0 (J/m²), at most {SCALE_MAX:.2g}",
-                      lambda value: 0.0 <= value <= SCALE_MAX)
 
 
 _check_work = check_work

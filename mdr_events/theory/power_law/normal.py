@@ -13,6 +13,7 @@ from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import PowerLaw, Profile
 from mdr_events.theory.power_law.arguments import (_check_adhesive, _check_work, _forms, _power_law_only, _rel,
                                                    as_output)
+from mdr_events.theory.analytic.arguments import _finite
 from mdr_events.theory.power_law.convex_roots import convex_root
 from mdr_events.theory.power_law.detachment import _jump_off
 from mdr_events.theory.power_law.prefactors import hess_prefactor, prefactor
@@ -59,7 +60,12 @@ def equivalent_profile(x, profile: PowerLaw):
     float or numpy.ndarray
         ``g(x)`` (m), the shape of ``x``.
     """
-    profile = _power_law_only(profile, "equivalent_profile")
+    _finite(x=x)
+    return _equivalent_profile(x, _power_law_only(profile, "equivalent_profile"))
+
+
+def _equivalent_profile(x, profile: PowerLaw):
+    """:func:`equivalent_profile` unchecked (the springs' own coordinates: the simulators' profile)."""
     return _rel("profile_power_law").numeric(np.abs(np.asarray(x, dtype=float)), profile.c, profile.n)
 
 
@@ -84,8 +90,13 @@ def branch_depth(contact_radius, profile: PowerLaw, params: Parameters, work_of_
     float or numpy.ndarray
         The depth ``d`` (m), the shape of ``contact_radius``.
     """
-    work_of_adhesion = _check_work(work_of_adhesion)
-    profile = _power_law_only(profile, "branch_depth")
+    _finite(contact_radius=contact_radius)
+    return _branch_depth(contact_radius, _power_law_only(profile, "branch_depth"), params,
+                         _check_work(work_of_adhesion))
+
+
+def _branch_depth(contact_radius, profile: PowerLaw, params: Parameters, work_of_adhesion: float):
+    """:func:`branch_depth` unchecked (the continuum's branch: its work checked once, its radii its own)."""
     return _rel("power_law_depth").numeric(contact_radius, profile.c, profile.n, params.E_star, work_of_adhesion)
 
 
@@ -117,6 +128,9 @@ def normal_force(depth, contact_radius, profile: Profile, params: Parameters):
     ValueError
         A ``contact_radius`` other than the flat punch's own.
     """
+    _finite(depth=depth)
+    if contact_radius is not None:
+        _finite(contact_radius=contact_radius)
     return _forms(profile).normal_force(depth, contact_radius, profile, params)
 
 
@@ -147,6 +161,7 @@ def branch_normal_force(contact_radius, profile: PowerLaw, params: Parameters, w
     float or numpy.ndarray
         ``F_N`` (N; negative: tensile), the shape of ``contact_radius``.
     """
+    _finite(contact_radius=contact_radius)
     work_of_adhesion = _check_work(work_of_adhesion)
     profile = _power_law_only(profile, "branch_normal_force")
     return _rel("power_law_branch_normal_force").numeric(contact_radius, profile.c, profile.n, params.E_star,
@@ -213,8 +228,12 @@ def contact_radius(depth, profile: PowerLaw, params: Parameters, work_of_adhesio
     ValueError
         ``n <= 1/2`` with adhesion.
     """
-    work_of_adhesion = _check_work(work_of_adhesion)
-    profile = _power_law_only(profile, "contact_radius")
+    _finite(depth=depth)
+    return _contact_radius(depth, _power_law_only(profile, "contact_radius"), params, _check_work(work_of_adhesion))
+
+
+def _contact_radius(depth, profile: PowerLaw, params: Parameters, work_of_adhesion: float):
+    """:func:`contact_radius` unchecked (the continuum's branch: its work checked once, its depths its own)."""
     depth_arr = np.asarray(depth, dtype=float)
     if work_of_adhesion == 0.0:
         with np.errstate(invalid="ignore"):

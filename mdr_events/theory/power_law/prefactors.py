@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import PowerLaw
-from mdr_events.theory.power_law.arguments import _rel
+from mdr_events.theory.power_law.arguments import _rel, check_work
 
 __all__ = ["prefactor", "cap_per_radius", "hess_prefactor"]
 
@@ -44,12 +44,19 @@ def hess_prefactor(params: Parameters, work_of_adhesion: float) -> float:
     params : Parameters
         The material (``E*``).
     work_of_adhesion : float
-        ``Δγ`` (J/m²).
+        ``Δγ`` (J/m², >= 0): one number.
 
     Returns
     -------
     float
         ``sqrt(2π Δγ / E*)`` (m^(1/2)).
+
+    Raises
+    ------
+    TypeError
+        A ``work_of_adhesion`` that is no number (an array or a list of them).
+    ValueError
+        A negative or non-finite ``work_of_adhesion``.
     """
-    return float(_rel("hess_max_elongation").numeric(1.0, work_of_adhesion, params.E_star))
+    return float(_rel("hess_max_elongation").numeric(1.0, check_work(work_of_adhesion), params.E_star))
 
