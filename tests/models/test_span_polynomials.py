@@ -8,6 +8,9 @@ from __future__ import annotations
 import dataclasses
 import functools
 import math
+import sys
+import threading
+from fractions import Fraction
 
 import numpy as np
 import pytest
@@ -16,6 +19,7 @@ import mdr_events as me
 from mdr_events.models.continuum import solve_path
 from mdr_events.models.continuum import span_extrema as X
 from mdr_events.models.continuum import span_polynomials as SP
+from mdr_events.models.continuum.branch import Branch
 from mdr_events.models.continuum.extrema import solution_extrema
 from mdr_events.models.continuum.tolerances import EPS
 
@@ -278,3 +282,60 @@ def test_the_proof_of_no_root_holds_where_it_is_given():
             assert np.all(values > 0) or np.all(values < 0)
             assert not np.any((roots >= low) & (roots <= high))
     assert proven > 100
+
+
+def test_the_proof_s_interval_covers_its_bracket_exactly():
+    """``_root_free`` proves a sign on ``[m − h, m + h]`` about the rounded middle ``m``: that interval covers the
+    bracket ``[low, high]`` in exact arithmetic (``fractions``), on brackets from one ulp wide to wide, from 0 and away
+    from it, where ``m ± (high − low)/2`` misses an end by an ulp about half the time."""
+    rng = np.random.default_rng(274)
+    for _ in range(2000):
+        low = 0.0 if rng.uniform() < 0.2 else float(np.ldexp(rng.uniform(0.5, 1.0), int(rng.integers(-40, 10))))
+        width = rng.choice([0.0, 1.0, 2.0 ** -52, 10.0 ** rng.uniform(-12.0, 2.0)])
+        high = math.nextafter(low, math.inf) if width == 0.0 else low + width * max(low, 1.0)
+        middle, half = SP._centred(low, high)
+        assert Fraction(middle) - Fraction(half) <= Fraction(low) <= Fraction(high) <= Fraction(middle) + Fraction(half)
+        needed = max(Fraction(high) - Fraction(middle), Fraction(middle) - Fraction(low))
+        assert Fraction(half) - needed <= 2 * Fraction(math.ulp(half))  # (rounded, then raised by an ulp: no wider)
+
+
+#: Threads and runs each that :func:`fold_radius` is called from at once, each run with a parameters object of its own
+#: (so that each call drops the least recently kept radius): the dict of before dropped one key from two threads
+#: (a ``KeyError``) in each of 6 runs of this size we tried (in 1 of 6 with 100 calls).
+FOLD_THREADS, FOLD_CALLS = 8, 1000
+#: Every this many calls a thread checks its radius against the branch's own iteration (each check as dear as a call).
+FOLD_CHECKED = 8
+
+
+def test_the_fold_radius_is_kept_safely_from_threads():
+    """``fold_radius`` called from :data:`FOLD_THREADS` threads at once (dask's threaded scheduler), every call a new
+    parameters object: no error, and the radii checked (:data:`FOLD_CHECKED`) the branch's own bit for bit; the same object's radius is kept
+    (read back without a new iteration)."""
+    switch = sys.getswitchinterval()
+    sys.setswitchinterval(1e-6)  # (threads switch as often as they can: the race of before in most runs)
+    failures = []
+
+    def calls(thread):
+        try:
+            for call in range(FOLD_CALLS):
+                params = PAPER.replace(R=PAPER.R * (1.0 + 1e-3 * (thread * FOLD_CALLS + call)))
+                branch = Branch(params, params.dgamma0)
+                radius = SP.fold_radius(branch, 1e-12)
+                if call % FOLD_CHECKED == 0 and radius != branch.radius(branch.jump_off_depth, 1e-12):
+                    failures.append((params.R, radius))
+        except Exception as error:  # (collected: an error in a thread would not fail the test)
+            failures.append(repr(error))
+
+    try:
+        threads = [threading.Thread(target=calls, args=(thread,)) for thread in range(FOLD_THREADS)]
+        for thread in threads:
+            thread.start()
+        for thread in threads:
+            thread.join()
+    finally:
+        sys.setswitchinterval(switch)
+    assert failures == []
+    branch = Branch(PAPER, PAPER.dgamma0)
+    first = SP.fold_radius(branch, 1e-12)
+    branch.radius = None  # (a second call that iterated again would fail here)
+    assert SP.fold_radius(branch, 1e-12) == first

@@ -11,19 +11,16 @@ from typing import NamedTuple
 import numpy as np
 from scipy import optimize
 
-from mdr_events.parameters import Parameters
-
 from .branch import Branch
 from .graded import span_variable
 from .solution import (PathSolution, _compressed_zone, _fill_normal_force, _fill_tangential_force, _pinned_kinematics,
                        evaluate_span)
-from .span_polynomials import SpanPolynomials, polynomial_points, polynomial_scan, span_polynomials
+from .span_polynomials import SpanPolynomials, fold_radius, polynomial_points, polynomial_scan, span_polynomials
 from .span_record import Span, Variable, root_key
 from .state import Regime
 from .stationary import never_stationary, stationary_points
 
-__all__ = ["EXTREMUM_QUANTITIES", "EXTREMUM_GRID", "EXTREMUM_TIE", "EXTREMUM_XTOL", "FOLD_RADII_KEPT", "ExtremumScan",
-           "ScanMatrix",
+__all__ = ["EXTREMUM_QUANTITIES", "EXTREMUM_GRID", "EXTREMUM_TIE", "EXTREMUM_XTOL", "ExtremumScan", "ScanMatrix",
            "extremum", "scan_spans", "within_tie"]
 
 #: Quantities :func:`extremum` finds the extremes of; the means are per contact area ``π a²``.
@@ -36,9 +33,6 @@ EXTREMUM_TIE = 1e-12
 #: Span-relative time accuracy of the refined extremum; the value is then exact to rounding
 #: (it is flat there: its error is second order in the time error).
 EXTREMUM_XTOL = 1e-12
-#: How many of the paraboloid's radii at its jump-off depth (:func:`_fold_radius`) the scan keeps by material, work
-#: and tolerance.
-FOLD_RADII_KEPT = 16
 
 
 def within_tie(value: float, best: float, size: float) -> bool:
@@ -192,7 +186,7 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
             depth = max(float(spans[index].segment.d(t_contact + t)), branch.jump_off_depth)
             key = root_key(depth, rtol)
             if key not in roots:  # (the solve's root of this depth where it took one: the same number)
-                roots[key] = _fold_radius(branch, rtol) \
+                roots[key] = fold_radius(branch, rtol) \
                     if depth == branch.jump_off_depth and type(branch) is Branch and branch.work != 0.0 \
                     else branch.radius(depth, rtol)
             return roots[key]
@@ -217,26 +211,6 @@ def _scan_grids(solution: PathSolution) -> tuple[list[np.ndarray], list[np.ndarr
         if grids[index] is None:  # (a span of no length: its start alone)
             grids[index] = np.array([bounds[index][0]])
     return grids, radii
-
-
-def _fold_radius(branch: Branch, rtol: float) -> float:
-    """:meth:`~.branch.Branch.radius` of the paraboloid's ``branch`` at its jump-off depth (the fold, where a run that
-    ends at pull-off ends: the iteration meets a double root there and takes some thirty steps), kept for the next run
-    of the same parameters (the same object: a run's job keeps it, :func:`~mdr_events.memo.kept`), the same work and
-    tolerance: the same number bit for bit (:data:`FOLD_RADII_KEPT` of them, the oldest dropped first)."""
-    key = (id(branch.params), branch.work, rtol)
-    found = _FOLDS.get(key)
-    if found is not None and found[0] is branch.params:
-        return found[1]
-    radius = branch.radius(branch.jump_off_depth, rtol)
-    if len(_FOLDS) >= FOLD_RADII_KEPT:
-        del _FOLDS[next(iter(_FOLDS))]
-    _FOLDS[key] = (branch.params, radius)
-    return radius
-
-
-#: :func:`_fold_radius`'s radii: (the parameters' ``id``, the work, the tolerance) -> (the parameters, the radius).
-_FOLDS: dict[tuple[int, float, float], tuple[Parameters, float]] = {}
 
 
 def _moving_grids(solution: PathSolution, members: list[int], matrix: np.ndarray, grids: list, radii: list) -> None:

@@ -11,7 +11,8 @@ On a pinned radius ``F_N`` is linear in the depth, hence in time, and so is a fo
 :func:`polynomial_stationary` finds where one is stationary inside a bracket (its derivative's sign read at
 :data:`~.closed_form.STATIONARY_READINGS` equal parts, each change of sign solved by a safeguarded Newton iteration,
 in Python floats): what :mod:`.span_extrema` reads instead of :func:`~.solution.evaluate_span`, the branch's NumPy
-forms and :func:`~.stationary.stationary_points` (:data:`POLYNOMIAL_ROUTE`).
+forms and :func:`~.stationary.stationary_points` (:data:`POLYNOMIAL_ROUTE`). The branch's radius at its fold, which
+the scan of a run ending at pull-off reads, is kept for the next run (:func:`fold_radius`).
 
 The values differ from those routes by rounding alone: Horner's rule over degree ``n`` errs by at most
 ``γ_2n Σ|c_k| s^k`` (``γ_m ≈ m ε``), the old route's sums of the branch's terms by a few ``ε`` of the same terms
@@ -22,10 +23,13 @@ half-space, its force a closed form in the radius); the others keep the routes o
 
 from __future__ import annotations
 
+import functools
 import math
 from typing import NamedTuple
 
 import numpy as np
+
+from mdr_events.parameters import Parameters
 
 from .branch import Branch
 from .closed_form import STATIONARY_READINGS, ClosedForce, Primitive, equal_parts
@@ -38,7 +42,7 @@ from .tolerances import EPS
 
 __all__ = ["POLYNOMIAL_ROUTE", "DEGREE", "ROOT_ULPS", "SHIFT_ULPS", "NEWTON_STEPS", "SpanPolynomials",
            "span_polynomials", "polynomial_values", "polynomial_value", "polynomial_stationary", "horner",
-           "polynomial_scan", "polynomial_points"]
+           "polynomial_scan", "polynomial_points", "FOLD_RADII_KEPT", "fold_radius"]
 
 #: Whether :mod:`.span_extrema` reads the moving spans that :func:`span_polynomials` takes as polynomials in ``s``
 #: (``False``: the route of before, every span by :func:`~.solution.evaluate_span` and
@@ -56,6 +60,9 @@ SHIFT_ULPS = 32
 #: At most this many steps of :func:`polynomial_stationary`'s safeguarded Newton iteration (each at least a bisection
 #: of the bracket: 64 halve any bracket of doubles to its ulp).
 NEWTON_STEPS = 64
+#: How many of the paraboloid's radii at its jump-off depth :func:`fold_radius` keeps, by parameters object, work and
+#: tolerance (the least recently used dropped first).
+FOLD_RADII_KEPT = 16
 
 
 class SpanPolynomials(NamedTuple):
@@ -273,11 +280,11 @@ def polynomial_stationary(coefficients: list[float], low: float, high: float) ->
 
 def _root_free(slope: list[float], low: float, high: float) -> bool:
     """Whether ``slope`` provably keeps its sign on ``[low, high]``: about the middle ``m`` it is exactly
-    ``Σ q_k x^k`` (``x = s − m``, ``|x| <= h``, the half-width; the Taylor shift by synthetic division), which cannot
+    ``Σ q_k x^k`` (``x = s − m``, ``|x| <= h``, the half-width, :func:`_centred`; the Taylor shift by synthetic division), which cannot
     vanish where ``|q₀| > Σ_{k≥1} |q_k| h^k``; each ``q_k`` is rounded by at most ``γ_2n`` of
     ``Σ_j C(j, k) |c_j| |m|^(j−k)``, whose sum over ``k`` weighted by ``h^k`` is ``Σ_j |c_j| (|m| + h)^j``, so the
     test asks :data:`SHIFT_ULPS` ε of that more (:func:`polynomial_stationary` then reads nothing)."""
-    middle, half = 0.5 * (low + high), 0.5 * (high - low)
+    middle, half = _centred(low, high)
     shifted = list(slope)
     degree = len(shifted) - 1
     for start in range(degree):  # (synthetic division: the coefficients of slope(middle + x), lowest first)
@@ -288,6 +295,14 @@ def _root_free(slope: list[float], low: float, high: float) -> bool:
         rest = (rest + abs(q)) * half
     rounding = SHIFT_ULPS * EPS * polynomial_value([abs(c) for c in slope], abs(middle) + half)
     return abs(shifted[0]) > rest + rounding
+
+
+def _centred(low: float, high: float) -> tuple[float, float]:
+    """The middle ``m`` of ``[low, high]`` and a half-width ``h`` with ``[m − h, m + h]`` covering it exactly
+    (:func:`_root_free`'s interval): ``m`` is rounded, so ``h`` is the larger of ``high − m`` and ``m − low``, each
+    rounded by at most half its ulp, raised by one ulp."""
+    middle = 0.5 * (low + high)
+    return middle, math.nextafter(max(high - middle, middle - low), math.inf)
 
 
 def _newton(slope: list[float], curvature: list[float], low: float, high: float, at_low: float) -> float:
@@ -384,3 +399,50 @@ def polynomial_points(solution, index: int, polynomials: SpanPolynomials, quanti
         time = _time_of_radius(solution, solution.spans[index], s * s)
         points.append((min(max(time, times[0]), times[1]), polynomial_value(coefficients, s)))
     return points
+
+
+def fold_radius(branch: Branch, rtol: float) -> float:
+    """:meth:`~.branch.Branch.radius` of the paraboloid's ``branch`` at its jump-off depth (the fold, where a run that
+    ends at pull-off ends: the iteration meets a double root there and takes some thirty steps), kept for the next run
+    of the same parameters (the same object: a run's job keeps it, :func:`~mdr_events.memo.kept`), the same work and
+    tolerance: the same number bit for bit (:data:`FOLD_RADII_KEPT` of them, by ``functools.lru_cache``: safe under
+    dask's threaded scheduler).
+
+    Parameters
+    ----------
+    branch : Branch
+        The paraboloid's branch (9) of a positive work of adhesion.
+    rtol : float
+        The radius's relative tolerance.
+
+    Returns
+    -------
+    float
+        The contact radius at the branch's jump-off depth (m).
+    """
+    params, radius = _kept_fold(_Fold(branch, rtol))
+    # (the value keeps its parameters alive, so their id is not reused while kept; checked all the same)
+    return radius if params is branch.params else branch.radius(branch.jump_off_depth, rtol)
+
+
+class _Fold:
+    """One call of :func:`fold_radius`, compared and hashed by (the parameters' ``id``, the work, the tolerance)
+    alone: the branch rides along."""
+
+    __slots__ = ("key", "branch", "rtol")
+
+    def __init__(self, branch: Branch, rtol: float) -> None:
+        self.key, self.branch, self.rtol = (id(branch.params), branch.work, rtol), branch, rtol
+
+    def __hash__(self) -> int:
+        return hash(self.key)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, _Fold) and self.key == other.key
+
+
+@functools.lru_cache(maxsize=FOLD_RADII_KEPT)
+def _kept_fold(call: _Fold) -> tuple[Parameters, float]:
+    """:func:`fold_radius`'s parameters and radius of ``call``, kept."""
+    branch = call.branch
+    return branch.params, branch.radius(branch.jump_off_depth, call.rtol)
