@@ -62,7 +62,7 @@ from .state import Event, EventKind
 from .tolerances import Tolerances
 
 __all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "FULL_SHARE", "EXTREMUM_XTOL", "SEGMENT_SCAN",
-           "PROBE_POINTS", "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH", "PROBE_BOUND"]
+           "SLOPE_SHARE", "PROBE_POINTS", "PROBE_CHUNK", "ROOT_ULPS", "CLOSED_REACH", "PROBE_BOUND"]
 
 #: The springs at a cap cover the contact (full slip) within this share of its radius (the quadrature's rounding).
 FULL_SHARE = 1e-12
@@ -97,6 +97,10 @@ EXTREMUM_XTOL = 1e-12
 #: 1.4-3.8 times a run of 21-201 samples and left segments empty on a path of more; 65 a segment, 7.4 times a run of 200
 #: segments.)
 SEGMENT_SCAN = 3
+#: The one-sided slopes of ``F_x`` at a scanned piece's ends (:func:`_slope_brackets`): read this share of the piece
+#: inside each end (an extremum nearer an end than this differs from the end's ``F_x`` by at most the slope times the
+#: step; the quadrature's round-off of ``F_x`` is some ulps of its size, far below the difference over the step).
+SLOPE_SHARE = 1e-6
 #: The springs' events the spans' frictionless run logs and this route replaces.
 _SPRING_EVENTS = frozenset({EventKind.SLIP_ONSET, EventKind.FULL_SLIP, EventKind.RE_STICK, EventKind.FRONT_AT_CENTRE,
                             EventKind.FRONT_AT_EDGE})
@@ -491,13 +495,63 @@ def _extrema_scan(end: float, corners: np.ndarray, limits: Limits) -> np.ndarray
     """The route's own scan of a run for ``F_x``'s extrema (s from first contact, sorted): first contact, ``end`` and
     :data:`SEGMENT_SCAN` times evenly inside each path segment in contact (``corners``: the path's corner times from
     first contact), checked against ``limits.samples``."""
-    low, high = np.clip(corners[:-1], 0.0, end), np.clip(corners[1:], 0.0, end)
-    inside = high > low
-    shares = np.arange(1, SEGMENT_SCAN + 1) / (SEGMENT_SCAN + 1)
-    within = (low[inside, None] + shares * (high - low)[inside, None]).ravel()
-    limits.check(f"the F_x extrema scan of the continuum run ({int(inside.sum())} path segments in contact)",
+    low, high = _scan_pieces(end, corners)
+    within = _scan_grid(low, high)[:, 1:-1].ravel()
+    limits.check(f"the F_x extrema scan of the continuum run ({low.size} path segments in contact)",
                  samples=float(within.size))
     return np.unique(np.concatenate([[0.0, end], within]))
+
+
+def _scan_pieces(end: float, corners: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The path segments' parts between first contact and ``end`` (s from first contact): their starts and ends."""
+    low, high = np.clip(corners[:-1], 0.0, end), np.clip(corners[1:], 0.0, end)
+    inside = high > low
+    return low[inside], high[inside]
+
+
+def _scan_grid(low: np.ndarray, high: np.ndarray) -> np.ndarray:
+    """Each piece's ends and its :data:`SEGMENT_SCAN` scanned times between them, a row per piece."""
+    shares = np.arange(1, SEGMENT_SCAN + 1) / (SEGMENT_SCAN + 1)
+    return np.column_stack([low, low[:, None] + shares * (high - low)[:, None], high])
+
+
+def _slope_brackets(play: PlaySprings, scan: np.ndarray, scanned: np.ndarray, start: float, end: float,
+                    corners: np.ndarray) -> list[tuple[float, float, float]]:
+    """Where an interior extremum of ``F_x`` lies between the scan's times (issue 32 round 27 Z6): ``(low, high,
+    sign)``, ``sign`` +1 a maximum, −1 a minimum, in s from first contact.
+
+    Each piece of a path segment in contact (:func:`_scan_pieces`) is read at its ends, :data:`SLOPE_SHARE` of it
+    inside each end (the one-sided slopes' signs there) and at the scan's times inside it; in the sequence of the
+    left end's slope, the differences of neighbouring times and the right end's slope, a fall then a rise brackets a
+    minimum between the first's start and the second's end (a rise then a fall a maximum): ``F_x`` is smooth between
+    a piece's ends (its kinks are the path's corners, the contact's ends and the springs' transitions, where its
+    slope changes but keeps its sign unless an extremum lies there, one of the times read), so a slope's sign change
+    between two neighbours holds a stationary point between them. Why this is sound: each stationary point that is a
+    local extremum changes the slope's sign, so every interior extremum is bracketed unless two of them lie between
+    the same two neighbours (a quarter of a segment) or one within :data:`SLOPE_SHARE` of a piece's end, where it
+    differs from the end's ``F_x`` by at most the slope times that step. Within a segment ``x`` and ``d`` are linear
+    in time and ``F_x`` is not monotone between the springs' events (refuted: the Z6 case falls, the sticking
+    springs following ``x``, then rises to 0 as the sliding springs' caps shrink with the depth, a minimum at no
+    event), hence the slopes rather than the events. The brackets do not depend on the output times. Pieces on a
+    part where ``F_x`` is monotone (:func:`_monotone`) are not read."""
+    low, high = _scan_pieces(end, corners)
+    keep = [k for k in range(low.size) if not _monotone(play, np.array([low[k], high[k]]) + start)]
+    if not keep:
+        return []
+    grid = _scan_grid(low[keep], high[keep])
+    step = SLOPE_SHARE * (grid[:, -1] - grid[:, 0])
+    read = np.column_stack([grid[:, 0], grid[:, 0] + step, grid[:, -1] - step, grid[:, -1]])
+    values = np.array([state.force for state in play.probed_states(read.ravel() + start, np.empty(0),
+                                                                   np.empty(0, dtype=np.intp))[0]])
+    values = values.reshape(read.shape)
+    inner = scanned[np.searchsorted(scan, grid[:, 1:-1])]
+    row = np.column_stack([values[:, 0], inner, values[:, -1]])
+    rises = np.column_stack([values[:, 1] - values[:, 0], np.diff(row, axis=1), values[:, 3] - values[:, 2]])
+    brackets = []
+    for times, rise in zip(grid, np.sign(rises)):
+        for j in np.flatnonzero(rise[:-1] * rise[1:] < 0.0).tolist():
+            brackets.append((float(times[max(j - 1, 0)]), float(times[min(j + 1, times.size - 1)]), float(rise[j])))
+    return brackets
 
 
 def _scanned_force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path, end: float,
@@ -531,14 +585,18 @@ def _scanned_force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarr
     """
     scan = _extrema_scan(end, path.corner_times - start, limits)
     scanned, _, _ = _samples(play, scan + start, radii(scan))
+    brackets = _slope_brackets(play, scan, scanned, start, end, path.corner_times - start)
     order = np.argsort(np.concatenate([times, scan]), kind="stable")  # (the samples first among equal times)
     return _force_extrema(play, np.concatenate([times, scan])[order], np.concatenate([force, scanned])[order], start,
-                          path)
+                          path, brackets)
 
 
-def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path) -> dict:
+def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path,
+                   brackets=()) -> dict:
     """The largest and least ``F_x`` (N) and their times (s from first contact): among the samples and the path's
-    corners (where ``F_x`` has kinks), the best refined between its neighbours (at a corner, on each side of it)."""
+    corners (where ``F_x`` has kinks), the best refined between its neighbours (at a corner, on each side of it), and
+    each of ``brackets`` (:func:`_slope_brackets`: ``(low, high, sign)``) of its kind that does not hold that refined
+    time refined on its own, the best kept."""
     out, duration = {}, path.duration
     corners = path.corner_times - start
     corners = corners[(corners > times[0]) & (corners < times[-1])]
@@ -550,15 +608,29 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
         k = int(np.argmax(sign * force))
         value, time = float(force[k]), float(times[k])
         low, high = times[max(k - 1, 0)], times[min(k + 1, times.size - 1)]
+        refined_at = None  # (where the best's refinement found a better F_x: a local extremum of its bracket)
         # (at a corner F_x kinks but may go on growing past it, as where the depth turns and x does not: issue 32
         # round 27 Z4; each side of the kink refined on its own, the corner kept where it is the extremum)
         for a, b in ((low, time), (time, high)) if time in corners else ((low, high),):
             if b > a and value != 0.0 and not _monotone(play, np.unique([a, time, b]) + start):
-                found = minimize_scalar(lambda t: -sign * play.state(float(t) + start)[0], bounds=(a, b),
-                                        method="bounded", options={"xatol": EXTREMUM_XTOL * duration})
-                refined = -sign * float(found.fun)
+                refined, at = _refined(play, sign, a, b, start, duration)
                 if sign * refined > sign * value:
-                    value, time = refined, float(found.x)
+                    value, time, refined_at = refined, at, at
+        # (a bracket that holds the refined extremum holds no other, F_x unimodal there: _slope_brackets)
+        for a, b in [(a, b) for a, b, side in brackets if side == sign
+                     and not (refined_at is not None and a < refined_at < b)]:
+            refined, at = _refined(play, sign, a, b, start, duration)
+            if sign * refined > sign * value:
+                value, time = refined, at
         value_name, time_name = extremum_names("tangential_force", kind)
         out[value_name], out[time_name] = value, time
     return out
+
+
+def _refined(play: PlaySprings, sign: float, low: float, high: float, start: float,
+             duration: float) -> tuple[float, float]:
+    """``F_x`` (N) at its largest (``sign`` +1) or least (−1) on ``[low, high]`` (s from first contact) and its time,
+    by bounded minimisation to :data:`EXTREMUM_XTOL` of the path's ``duration``."""
+    found = minimize_scalar(lambda t: -sign * play.state(float(t) + start)[0], bounds=(low, high), method="bounded",
+                            options={"xatol": EXTREMUM_XTOL * duration})
+    return -sign * float(found.fun), float(found.x)
