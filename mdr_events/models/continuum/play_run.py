@@ -515,10 +515,19 @@ def _scan_grid(low: np.ndarray, high: np.ndarray) -> np.ndarray:
     return np.column_stack([low, low[:, None] + shares * (high - low)[:, None], high])
 
 
-def _slope_brackets(play: PlaySprings, scan: np.ndarray, scanned: np.ndarray, start: float, end: float,
-                    corners: np.ndarray) -> list[tuple[float, float, float]]:
-    """Where an interior extremum of ``F_x`` lies between the scan's times (issue 32 round 27 Z6): ``(low, high,
-    sign)``, ``sign`` +1 a maximum, −1 a minimum, in s from first contact.
+def _slope_grid(play: PlaySprings, start: float, end: float, corners: np.ndarray) -> np.ndarray:
+    """:func:`_scan_grid` of the pieces (:func:`_scan_pieces`) where ``F_x`` is not proven monotone
+    (:func:`_monotone`), s from first contact."""
+    low, high = _scan_pieces(end, corners)
+    keep = [k for k in range(low.size) if not _monotone(play, np.array([low[k], high[k]]) + start)]
+    return _scan_grid(low[keep], high[keep])
+
+
+def _slope_brackets(grid: np.ndarray, known: dict, steps: np.ndarray) -> list[tuple[float, float, float]]:
+    """Where an interior extremum of ``F_x`` lies between the scan's times ``grid`` (:func:`_slope_grid`; issue 32
+    round 27 Z6): ``(low, high, sign)``, ``sign`` +1 a maximum, −1 a minimum, in s from first contact; ``known``:
+    ``F_x`` at the grid's times, ``steps``: at :data:`SLOPE_SHARE` of each piece inside its start and its end (two
+    rows).
 
     Each piece of a path segment in contact (:func:`_scan_pieces`) is read at its ends, :data:`SLOPE_SHARE` of it
     inside each end (the one-sided slopes' signs there) and at the scan's times inside it; in the sequence of the
@@ -533,20 +542,9 @@ def _slope_brackets(play: PlaySprings, scan: np.ndarray, scanned: np.ndarray, st
     in time and ``F_x`` is not monotone between the springs' events (refuted: the Z6 case falls, the sticking
     springs following ``x``, then rises to 0 as the sliding springs' caps shrink with the depth, a minimum at no
     event), hence the slopes rather than the events. The brackets do not depend on the output times. Pieces on a
-    part where ``F_x`` is monotone (:func:`_monotone`) are not read."""
-    low, high = _scan_pieces(end, corners)
-    keep = [k for k in range(low.size) if not _monotone(play, np.array([low[k], high[k]]) + start)]
-    if not keep:
-        return []
-    grid = _scan_grid(low[keep], high[keep])
-    step = SLOPE_SHARE * (grid[:, -1] - grid[:, 0])
-    read = np.column_stack([grid[:, 0], grid[:, 0] + step, grid[:, -1] - step, grid[:, -1]])
-    values = np.array([state.force for state in play.probed_states(read.ravel() + start, np.empty(0),
-                                                                   np.empty(0, dtype=np.intp))[0]])
-    values = values.reshape(read.shape)
-    inner = scanned[np.searchsorted(scan, grid[:, 1:-1])]
-    row = np.column_stack([values[:, 0], inner, values[:, -1]])
-    rises = np.column_stack([values[:, 1] - values[:, 0], np.diff(row, axis=1), values[:, 3] - values[:, 2]])
+    part where ``F_x`` is monotone (:func:`_monotone`) are not read (:func:`_slope_grid`)."""
+    row = np.array([[known[float(time)] for time in times] for times in grid]).reshape(grid.shape)
+    rises = np.column_stack([steps[0] - row[:, 0], np.diff(row, axis=1), row[:, -1] - steps[1]])
     brackets = []
     for times, rise in zip(grid, np.sign(rises)):
         for j in np.flatnonzero(rise[:-1] * rise[1:] < 0.0).tolist():
@@ -585,23 +583,29 @@ def _scanned_force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarr
     """
     scan = _extrema_scan(end, path.corner_times - start, limits)
     scanned, _, _ = _samples(play, scan + start, radii(scan))
-    brackets = _slope_brackets(play, scan, scanned, start, end, path.corner_times - start)
     order = np.argsort(np.concatenate([times, scan]), kind="stable")  # (the samples first among equal times)
-    return _force_extrema(play, np.concatenate([times, scan])[order], np.concatenate([force, scanned])[order], start,
-                          path, brackets)
-
-
-def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path,
-                   brackets=()) -> dict:
-    """The largest and least ``F_x`` (N) and their times (s from first contact): among the samples and the path's
-    corners (where ``F_x`` has kinks), the best refined between its neighbours (at a corner, on each side of it), and
-    each of ``brackets`` (:func:`_slope_brackets`: ``(low, high, sign)``) of its kind that does not hold that refined
-    time refined on its own, the best kept."""
-    out, duration = {}, path.duration
+    times, force = np.concatenate([times, scan])[order], np.concatenate([force, scanned])[order]
     corners = path.corner_times - start
-    corners = corners[(corners > times[0]) & (corners < times[-1])]
-    at_corners = np.array([state.force for state in play.probed_states(corners + start, np.empty(0),
-                                                                          np.empty(0, dtype=np.intp))[0]])
+    inner = corners[(corners > times[0]) & (corners < times[-1])]
+    grid = _slope_grid(play, start, end, corners)
+    step = SLOPE_SHARE * (grid[:, -1] - grid[:, 0])
+    read = np.concatenate([inner, grid[:, 0] + step, grid[:, -1] - step])  # (the corners and the slopes: one batch)
+    values = np.array([state.force for state in play.probed_states(read + start, np.empty(0),
+                                                                      np.empty(0, dtype=np.intp))[0]])
+    known = dict(zip(np.concatenate([scan, inner]).tolist(), np.concatenate([scanned, values[:inner.size]]).tolist()))
+    brackets = _slope_brackets(grid, known, values[inner.size:].reshape(2, -1))
+    return _force_extrema(play, times, force, start, path, (inner, values[:inner.size]), brackets)
+
+
+def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path, at_corners,
+                   brackets) -> dict:
+    """The largest and least ``F_x`` (N) and their times (s from first contact): among the samples and the path's
+    corners (``at_corners``: the corners inside ``times``' span and ``F_x`` there, where it has kinks), the best
+    refined between its neighbours (at a corner, on each side of it), and each of ``brackets``
+    (:func:`_slope_brackets`: ``(low, high, sign)``) of its kind that does not hold that refined time refined on its
+    own, the best kept."""
+    out, duration = {}, path.duration
+    corners, at_corners = at_corners
     order = np.argsort(np.concatenate([times, corners]), kind="stable")
     times, force = np.concatenate([times, corners])[order], np.concatenate([force, at_corners])[order]
     for kind, sign in (("max", 1.0), ("min", -1.0)):
