@@ -14,7 +14,8 @@ back without a reversal of ``x``, and a zone that opens and closes between two o
 extrema of ``F_x`` are the largest and least of the samples and the route's own scan of the run
 (:func:`_scanned_force_extrema`, :func:`_extrema_scan`: :data:`SEGMENT_SCAN` times inside each path segment in
 contact, so that they do not hang on the output times) refined by bounded minimisation between its neighbours
-(at a corner, where ``F_x`` kinks but may go on growing, on each side of it).
+(at a corner, where ``F_x`` kinks but may go on growing, on each side of it), and every interior extremum the
+scan's differences and the one-sided slopes at each segment's ends bracket refined too (:func:`_slope_brackets`).
 
 The output times are read at once (:func:`_probed_all`, :meth:`~.play_springs.PlaySprings.probed_states`), and the
 events of all the pieces are searched side by side (:func:`~.play_search.searched`): each search a generator that yields the
@@ -91,8 +92,9 @@ PROBE_BOUND = True
 EXTREMUM_XTOL = 1e-12
 #: The route's own scan of a run for ``F_x``'s extrema (:func:`_extrema_scan`): this many times evenly inside each path
 #: segment in contact (its quarters), beside the contact's ends, the output samples and the path's corners, whatever
-#: the output times. Within a segment ``F_x`` rises or falls, or rises then falls (as ``μ F_N`` after the onset on a
-#: way out): one time inside brackets its extremum between the best time's neighbours, three keep a margin. Its size
+#: the output times. Within a segment ``F_x`` may rise then fall (as ``μ F_N`` after the onset on a way out) or fall
+#: then rise (issue 32 round 27 Z6: to 0 as the contact ends): the scan's differences and the one-sided slopes at each
+#: segment's ends bracket each interior extremum (:func:`_slope_brackets`), three times keep a margin. Its size
 #: (3 × the segments in contact) counts against ``Limits.samples``. (257 times evenly over the contact instead cost
 #: 1.4-3.8 times a run of 21-201 samples and left segments empty on a path of more; 65 a segment, 7.4 times a run of 200
 #: segments.)
