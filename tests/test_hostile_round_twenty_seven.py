@@ -236,13 +236,15 @@ def test_a_growth_after_a_pinned_radius_attaches_every_spring():
 # extremum, each refined (play_run._slope_brackets), whatever the output times ----------------------------------------
 
 
-@pytest.mark.parametrize("adhesive", [False, True])
-def test_a_narrow_dip_of_the_force_before_the_contact_ends_is_found(adhesive):
+@pytest.mark.parametrize("tau0_share, adhesive", [(1e-4, False), (1e-4, True), (None, True)])
+def test_a_narrow_dip_of_the_force_before_the_contact_ends_is_found(tau0_share, adhesive):
     """Z6 (F_x's extrema of the per-spring route hanging on its scan): 3 samples reported F_x's minimum 0 (with
-    adhesion -3.8e-7 N) where the run turns negative (-1.4e-4 N; -8.3e-6 N) just before the contact ends; now the 41
-    samples' refined minimum."""
+    adhesion -3.8e-7 N) where the run turns negative (-1.4e-4 N) just before the contact ends; now the 41 samples'
+    refined minimum. Under Coulomb's law alone with adhesion F_x is 0 (no spring compressed) from just after the dip
+    to the contact's end: a slope 0 there, which brackets the dip all the same."""
     params = me.Parameters.paper()
-    law = me.FrictionLaw("tau0+coulomb", tau0=params.tau0 * 1e-4, mu=0.3)
+    law = (me.FrictionLaw("coulomb", mu=0.3) if tau0_share is None
+           else me.FrictionLaw("tau0+coulomb", tau0=params.tau0 * tau0_share, mu=0.3))
     contact = dataclasses.replace(PAPER, friction=law).replace(h=5e-4)
     contact = contact if adhesive else contact.replace(dgamma0=0.0, dgamma1=0.0)
     path = me.Path([(0.0, 0.0), (3e-3, 3e-4), (0.0, -3e-3)], params.v)

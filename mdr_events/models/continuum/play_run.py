@@ -540,7 +540,10 @@ def _slope_brackets(grid: np.ndarray, known: dict, steps: np.ndarray) -> list[tu
     between two neighbours holds a stationary point between them. Why this is sound: each stationary point that is a
     local extremum changes the slope's sign, so every interior extremum is bracketed unless two of them lie between
     the same two neighbours (a quarter of a segment) or one within :data:`SLOPE_SHARE` of a piece's end, where it
-    differs from the end's ``F_x`` by at most the slope times that step. Within a segment ``x`` and ``d`` are linear
+    differs from the end's ``F_x`` by at most the slope times that step. A slope 0 at an end (``F_x`` flat there: with
+    adhesion under Coulomb's law alone no spring compressed before the contact ends) says nothing: the piece's part
+    next to it is bracketed whichever way ``F_x`` goes into it (a dip before the plateau, issue 32 round 27 Z6).
+    Within a segment ``x`` and ``d`` are linear
     in time and ``F_x`` is not monotone between the springs' events (refuted: the Z6 case falls, the sticking
     springs following ``x``, then rises to 0 as the sliding springs' caps shrink with the depth, a minimum at no
     event), hence the slopes rather than the events. The brackets do not depend on the output times. Pieces on a
@@ -549,8 +552,12 @@ def _slope_brackets(grid: np.ndarray, known: dict, steps: np.ndarray) -> list[tu
     rises = np.column_stack([steps[0] - row[:, 0], np.diff(row, axis=1), row[:, -1] - steps[1]])
     brackets = []
     for times, rise in zip(grid, np.sign(rises)):
-        for j in np.flatnonzero(rise[:-1] * rise[1:] < 0.0).tolist():
-            brackets.append((float(times[max(j - 1, 0)]), float(times[min(j + 1, times.size - 1)]), float(rise[j])))
+        turns = (rise[:-1] * rise[1:] < 0.0).tolist()
+        turns[0] = turns[0] or (rise[0] == 0.0 and rise[1] != 0.0)  # (F_x flat at an end: a plateau, as of no
+        turns[-1] = turns[-1] or (rise[-1] == 0.0 and rise[-2] != 0.0)  # spring compressed, its extremum unknown)
+        for j in np.flatnonzero(turns).tolist():
+            side = rise[j] if rise[j] != 0.0 else -rise[j + 1]
+            brackets.append((float(times[max(j - 1, 0)]), float(times[min(j + 1, times.size - 1)]), float(side)))
     return brackets
 
 
