@@ -525,6 +525,26 @@ def _slope_grid(play: PlaySprings, start: float, end: float, corners: np.ndarray
     return _scan_grid(low[keep], high[keep])
 
 
+def _unpressed_ends(play: PlaySprings, start: float, grid: np.ndarray, known: dict, steps: np.ndarray) -> None:
+    """A piece whose ``F_x`` is flat at its end because its depth fell to 0 inside it (with adhesion under Coulomb's
+    law alone no spring is compressed, ``F_x = 0``, from there to the contact's end) ends, for
+    :func:`_slope_brackets`, where the depth, linear along the segment, reaches 0, its slope read
+    :data:`SLOPE_SHARE` of the piece before (``grid``, ``known`` and ``steps`` changed in place): an extremum
+    before the plateau (issue 32 round 27 Z6) is then bracketed by the slope's sign as anywhere else, without
+    refining the plateau."""
+    rows = [k for k in range(grid.shape[0]) if steps[1, k] == known[float(grid[k, -1])] == 0.0
+            and play._d(float(grid[k, -2]) + start) > 0.0 >= play._d(float(grid[k, -1]) + start)]
+    for k in rows:
+        low, high = float(grid[k, -2]), float(grid[k, -1])
+        depth_low, depth_high = float(play._d(low + start)), float(play._d(high + start))
+        plateau = low + depth_low / (depth_low - depth_high) * (high - low)
+        if play.compressed_radius(plateau + SLOPE_SHARE * (high - low) + start) > 0.0:
+            continue  # (not the plateau's start: the flat end left to _slope_brackets' own rule)
+        grid[k, -1] = plateau
+        known[plateau] = 0.0
+        steps[1, k] = play.state(plateau - SLOPE_SHARE * (grid[k, -1] - grid[k, 0]) + start)[0]
+
+
 def _slope_brackets(grid: np.ndarray, known: dict, steps: np.ndarray) -> list[tuple[float, float, float]]:
     """Where an interior extremum of ``F_x`` lies between the scan's times ``grid`` (:func:`_slope_grid`; issue 32
     round 27 Z6): ``(low, high, sign)``, ``sign`` +1 a maximum, −1 a minimum, in s from first contact; ``known``:
@@ -602,7 +622,9 @@ def _scanned_force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarr
     values = np.array([state.force for state in play.probed_states(read + start, np.empty(0),
                                                                       np.empty(0, dtype=np.intp))[0]])
     known = dict(zip(np.concatenate([scan, inner]).tolist(), np.concatenate([scanned, values[:inner.size]]).tolist()))
-    brackets = _slope_brackets(grid, known, values[inner.size:].reshape(2, -1))
+    steps = values[inner.size:].reshape(2, -1)
+    _unpressed_ends(play, start, grid, known, steps)
+    brackets = _slope_brackets(grid, known, steps)
     return _force_extrema(play, times, force, start, path, (inner, values[:inner.size]), brackets)
 
 
