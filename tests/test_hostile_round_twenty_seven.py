@@ -240,23 +240,26 @@ def test_a_growth_after_a_pinned_radius_attaches_every_spring():
     assert float(run.tangential_force_min.values[0]) <= float(np.nanmin(force)) + EXTREMUM_SHARE * size
 
 
-# --- Z6 (not fixed this round: strict xfail): F_x's extrema of the per-spring route still hang on its scan where
-# F_x's extremum is a dip narrower than a third of a path segment in contact (Y2's class of round 26). Under a tau0
-# of 1e-4 of the paper's on a 0.5 mm bonded layer (mu = 0.3), along a steep oblique path in and out, F_x turns
-# negative only in the last moments before the contact ends: 3 output samples (plus SEGMENT_SCAN = 3 scan times a
-# segment) report F_x's minimum 0 (no sample negative, and a zero is not refined) where 41 samples find -1.4e-4 N
-# (|F_x| up to 26 N); with adhesion -3.8e-7 N for -8.3e-6 N. The fix (a scan that follows F_x's sign changes, or
-# the contact's end, at a cost the route's benchmark must bound) is larger than this round. -------------------------
+# --- Z6: F_x's extrema of the per-spring route hung on its scan where F_x's extremum is a dip narrower than a
+# third of a path segment in contact (Y2's class of round 26). Under a tau0 of 1e-4 of the paper's on a 0.5 mm bonded
+# layer (mu = 0.3), along a steep oblique path in and out, F_x turns negative only in the last moments before the
+# contact ends: 3 output samples (plus SEGMENT_SCAN = 3 scan times a segment) reported F_x's minimum 0 (no sample
+# negative, and a zero not refined) where 41 samples find -1.4e-4 N (|F_x| up to 26 N); with adhesion -3.8e-7 N for
+# -8.3e-6 N. Now each scanned piece's one-sided slopes at its ends and the scan's differences bracket every interior
+# extremum, each refined (play_run._slope_brackets), whatever the output times ----------------------------------------
 
 
-@pytest.mark.xfail(strict=True, reason="issue 32 round 27 Z6: a dip of F_x narrower than the route's scan near the "
-                                       "contact's end is missed by the per-spring route's extrema")
-def test_a_narrow_dip_of_the_force_before_the_contact_ends_is_found():
-    """Z6 (F_x's extrema of the per-spring route hanging on its scan): 3 samples report F_x's minimum 0 where the
-    run turns negative (-1.4e-4 N) just before the contact ends; it should be the 41 samples' refined minimum."""
+@pytest.mark.parametrize("tau0_share, adhesive", [(1e-4, False), (1e-4, True), (None, True)])
+def test_a_narrow_dip_of_the_force_before_the_contact_ends_is_found(tau0_share, adhesive):
+    """Z6 (F_x's extrema of the per-spring route hanging on its scan): 3 samples reported F_x's minimum 0 (with
+    adhesion -3.8e-7 N) where the run turns negative (-1.4e-4 N) just before the contact ends; now the 41 samples'
+    refined minimum. Under Coulomb's law alone with adhesion F_x is 0 (no spring compressed) from just after the dip
+    to the contact's end: a slope 0 there, which brackets the dip all the same."""
     params = me.Parameters.paper()
-    law = me.FrictionLaw("tau0+coulomb", tau0=params.tau0 * 1e-4, mu=0.3)
-    contact = dataclasses.replace(PAPER, friction=law).replace(dgamma0=0.0, dgamma1=0.0, h=5e-4)
+    law = (me.FrictionLaw("coulomb", mu=0.3) if tau0_share is None
+           else me.FrictionLaw("tau0+coulomb", tau0=params.tau0 * tau0_share, mu=0.3))
+    contact = dataclasses.replace(PAPER, friction=law).replace(h=5e-4)
+    contact = contact if adhesive else contact.replace(dgamma0=0.0, dgamma1=0.0)
     path = me.Path([(0.0, 0.0), (3e-3, 3e-4), (0.0, -3e-3)], params.v)
     sparse = me.simulate(contact, path, method="continuum", samples=3)
     reference = me.simulate(contact, path, method="continuum", samples=41)

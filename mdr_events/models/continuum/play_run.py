@@ -14,7 +14,8 @@ back without a reversal of ``x``, and a zone that opens and closes between two o
 extrema of ``F_x`` are the largest and least of the samples and the route's own scan of the run
 (:func:`_scanned_force_extrema`, :func:`_extrema_scan`: :data:`SEGMENT_SCAN` times inside each path segment in
 contact, so that they do not hang on the output times) refined by bounded minimisation between its neighbours
-(at a corner, where ``F_x`` kinks but may go on growing, on each side of it).
+(at a corner, where ``F_x`` kinks but may go on growing, on each side of it), and every interior extremum the
+scan's differences and the one-sided slopes at each segment's ends bracket refined too (:func:`_slope_brackets`).
 
 The output times are read at once (:func:`~.play_samples._probed_all`, :meth:`~.play_springs.PlaySprings.probed_states`), with
 the pieces' ends the events' searches start from and the extrema's scan (:func:`spring_run`, :data:`SHARED_SAMPLES`), and the
@@ -63,7 +64,7 @@ from .solve import run_continuum
 from .state import Event, EventKind
 from .tolerances import Tolerances
 
-__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "EXTREMUM_XTOL", "SEGMENT_SCAN", "ROOT_ULPS",
+__all__ = ["run_play_springs", "takes_play_springs", "EVENT_HALVINGS", "EXTREMUM_XTOL", "SEGMENT_SCAN", "SLOPE_SHARE", "ROOT_ULPS",
            "CLOSED_REACH", "SHARED_SAMPLES", "SHARED_READINGS", "SpringRun", "spring_run"]
 
 #: The events' bisection evaluates its guess only within this many units in the last place of the root of the springs'
@@ -77,8 +78,9 @@ CLOSED_REACH = True
 EXTREMUM_XTOL = 1e-12
 #: The route's own scan of a run for ``F_x``'s extrema (:func:`_extrema_scan`): this many times evenly inside each path
 #: segment in contact (its quarters), beside the contact's ends, the output samples and the path's corners, whatever
-#: the output times. Within a segment ``F_x`` rises or falls, or rises then falls (as ``μ F_N`` after the onset on a
-#: way out): one time inside brackets its extremum between the best time's neighbours, three keep a margin. Its size
+#: the output times. Within a segment ``F_x`` may rise then fall (as ``μ F_N`` after the onset on a way out) or fall
+#: then rise (issue 32 round 27 Z6: to 0 as the contact ends): the scan's differences and the one-sided slopes at each
+#: segment's ends bracket each interior extremum (:func:`_slope_brackets`), three times keep a margin. Its size
 #: (3 × the segments in contact) counts against ``Limits.samples``. (257 times evenly over the contact instead cost
 #: 1.4-3.8 times a run of 21-201 samples and left segments empty on a path of more; 65 a segment, 7.4 times a run of 200
 #: segments.)
@@ -91,6 +93,10 @@ SHARED_SAMPLES = True
 #: directions in one evaluation of the anchors (:func:`_events`) (``False``: a call each, the route of before, which
 #: the tests compare it with).
 SHARED_READINGS = True
+#: The one-sided slopes of ``F_x`` at a scanned piece's ends (:func:`_slope_brackets`): read this share of the piece
+#: inside each end (an extremum nearer an end than this differs from the end's ``F_x`` by at most the slope times the
+#: step; the quadrature's round-off of ``F_x`` is some ulps of its size, far below the difference over the step).
+SLOPE_SHARE = 1e-6
 #: The springs' events the spans' frictionless run logs and this route replaces.
 _SPRING_EVENTS = frozenset({EventKind.SLIP_ONSET, EventKind.FULL_SLIP, EventKind.RE_STICK, EventKind.FRONT_AT_CENTRE,
                             EventKind.FRONT_AT_EDGE})
@@ -220,7 +226,7 @@ def spring_run(play: PlaySprings, times: np.ndarray, radius: np.ndarray, path, e
         force, sliding, shares = _samples(play, times + start, radius)
         found = _spring_events(play, times, shares, start, events)
         scanned = _samples(play, scan + start, radii(scan))[0]
-    return SpringRun(force, sliding, found, _scanned_force_extrema(play, times, force, start, path, scan, scanned))
+    return SpringRun(force, sliding, found, _scanned_force_extrema(play, times, force, start, path, end, scan, scanned))
 
 
 def _spring_events(play: PlaySprings, times: np.ndarray, sampled: np.ndarray, start: float, events,
@@ -434,16 +440,91 @@ def _extrema_scan(end: float, corners: np.ndarray, limits: Limits) -> np.ndarray
     """The route's own scan of a run for ``F_x``'s extrema (s from first contact, sorted): first contact, ``end`` and
     :data:`SEGMENT_SCAN` times evenly inside each path segment in contact (``corners``: the path's corner times from
     first contact), checked against ``limits.samples``."""
-    low, high = np.clip(corners[:-1], 0.0, end), np.clip(corners[1:], 0.0, end)
-    inside = high > low
-    shares = np.arange(1, SEGMENT_SCAN + 1) / (SEGMENT_SCAN + 1)
-    within = (low[inside, None] + shares * (high - low)[inside, None]).ravel()
-    limits.check(f"the F_x extrema scan of the continuum run ({int(inside.sum())} path segments in contact)",
+    low, high = _scan_pieces(end, corners)
+    within = _scan_grid(low, high)[:, 1:-1].ravel()
+    limits.check(f"the F_x extrema scan of the continuum run ({low.size} path segments in contact)",
                  samples=float(within.size))
     return np.unique(np.concatenate([[0.0, end], within]))
 
 
-def _scanned_force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path,
+def _scan_pieces(end: float, corners: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The path segments' parts between first contact and ``end`` (s from first contact): their starts and ends."""
+    low, high = np.clip(corners[:-1], 0.0, end), np.clip(corners[1:], 0.0, end)
+    inside = high > low
+    return low[inside], high[inside]
+
+
+def _scan_grid(low: np.ndarray, high: np.ndarray) -> np.ndarray:
+    """Each piece's ends and its :data:`SEGMENT_SCAN` scanned times between them, a row per piece."""
+    shares = np.arange(1, SEGMENT_SCAN + 1) / (SEGMENT_SCAN + 1)
+    return np.column_stack([low, low[:, None] + shares * (high - low)[:, None], high])
+
+
+def _slope_grid(play: PlaySprings, start: float, end: float, corners: np.ndarray) -> np.ndarray:
+    """:func:`_scan_grid` of the pieces (:func:`_scan_pieces`) where ``F_x`` is not proven monotone
+    (:func:`_monotone`), s from first contact."""
+    low, high = _scan_pieces(end, corners)
+    keep = [k for k in range(low.size) if not _monotone(play, np.array([low[k], high[k]]) + start)]
+    return _scan_grid(low[keep], high[keep])
+
+
+def _unpressed_ends(play: PlaySprings, start: float, grid: np.ndarray, known: dict, steps: np.ndarray) -> None:
+    """A piece whose ``F_x`` is flat at its end because its depth fell to 0 inside it (with adhesion under Coulomb's
+    law alone no spring is compressed, ``F_x = 0``, from there to the contact's end) ends, for
+    :func:`_slope_brackets`, where the depth, linear along the segment, reaches 0, its slope read
+    :data:`SLOPE_SHARE` of the piece before (``grid``, ``known`` and ``steps`` changed in place): an extremum
+    before the plateau (issue 32 round 27 Z6) is then bracketed by the slope's sign as anywhere else, without
+    refining the plateau."""
+    rows = [k for k in range(grid.shape[0]) if steps[1, k] == known[float(grid[k, -1])] == 0.0
+            and play._d(float(grid[k, -2]) + start) > 0.0 >= play._d(float(grid[k, -1]) + start)]
+    for k in rows:
+        low, high = float(grid[k, -2]), float(grid[k, -1])
+        depth_low, depth_high = float(play._d(low + start)), float(play._d(high + start))
+        plateau = low + depth_low / (depth_low - depth_high) * (high - low)
+        if play.compressed_radius(plateau + SLOPE_SHARE * (high - low) + start) > 0.0:
+            continue  # (not the plateau's start: the flat end left to _slope_brackets' own rule)
+        grid[k, -1] = plateau
+        known[plateau] = 0.0
+        steps[1, k] = play.state(plateau - SLOPE_SHARE * (grid[k, -1] - grid[k, 0]) + start)[0]
+
+
+def _slope_brackets(grid: np.ndarray, known: dict, steps: np.ndarray) -> list[tuple[float, float, float]]:
+    """Where an interior extremum of ``F_x`` lies between the scan's times ``grid`` (:func:`_slope_grid`; issue 32
+    round 27 Z6): ``(low, high, sign)``, ``sign`` +1 a maximum, −1 a minimum, in s from first contact; ``known``:
+    ``F_x`` at the grid's times, ``steps``: at :data:`SLOPE_SHARE` of each piece inside its start and its end (two
+    rows).
+
+    Each piece of a path segment in contact (:func:`_scan_pieces`) is read at its ends, :data:`SLOPE_SHARE` of it
+    inside each end (the one-sided slopes' signs there) and at the scan's times inside it; in the sequence of the
+    left end's slope, the differences of neighbouring times and the right end's slope, a fall then a rise brackets a
+    minimum between the first's start and the second's end (a rise then a fall a maximum): ``F_x`` is smooth between
+    a piece's ends (its kinks are the path's corners, the contact's ends and the springs' transitions, where its
+    slope changes but keeps its sign unless an extremum lies there, one of the times read), so a slope's sign change
+    between two neighbours holds a stationary point between them. Why this is sound: each stationary point that is a
+    local extremum changes the slope's sign, so every interior extremum is bracketed unless two of them lie between
+    the same two neighbours (a quarter of a segment) or one within :data:`SLOPE_SHARE` of a piece's end, where it
+    differs from the end's ``F_x`` by at most the slope times that step. A slope 0 at an end (``F_x`` flat there: with
+    adhesion under Coulomb's law alone no spring compressed before the contact ends) says nothing: the piece's part
+    next to it is bracketed whichever way ``F_x`` goes into it (a dip before the plateau, issue 32 round 27 Z6).
+    Within a segment ``x`` and ``d`` are linear
+    in time and ``F_x`` is not monotone between the springs' events (refuted: the Z6 case falls, the sticking
+    springs following ``x``, then rises to 0 as the sliding springs' caps shrink with the depth, a minimum at no
+    event), hence the slopes rather than the events. The brackets do not depend on the output times. Pieces on a
+    part where ``F_x`` is monotone (:func:`_monotone`) are not read (:func:`_slope_grid`)."""
+    row = np.array([[known[float(time)] for time in times] for times in grid]).reshape(grid.shape)
+    rises = np.column_stack([steps[0] - row[:, 0], np.diff(row, axis=1), row[:, -1] - steps[1]])
+    brackets = []
+    for times, rise in zip(grid, np.sign(rises)):
+        turns = (rise[:-1] * rise[1:] < 0.0).tolist()
+        turns[0] = turns[0] or (rise[0] == 0.0 and rise[1] != 0.0)  # (F_x flat at an end: a plateau, as of no
+        turns[-1] = turns[-1] or (rise[-1] == 0.0 and rise[-2] != 0.0)  # spring compressed, its extremum unknown)
+        for j in np.flatnonzero(turns).tolist():
+            side = rise[j] if rise[j] != 0.0 else -rise[j + 1]
+            brackets.append((float(times[max(j - 1, 0)]), float(times[min(j + 1, times.size - 1)]), float(side)))
+    return brackets
+
+
+def _scanned_force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path, end: float,
                            scan: np.ndarray, scanned: np.ndarray) -> dict:
     """:func:`_force_extrema` of the output samples and the route's own scan of the run (:func:`_extrema_scan`), so
     that the extrema do not hang on the output times (issue 32 Y2: one sample at the first contact gave a maximum of
@@ -460,6 +541,8 @@ def _scanned_force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarr
         The first contact (s, path clock).
     path : Path
         The path.
+    end : float
+        The contact's end (s from first contact).
     scan, scanned : numpy.ndarray
         The scan's times (s from first contact) and ``F_x`` there (N).
 
@@ -469,35 +552,61 @@ def _scanned_force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarr
         As :func:`_force_extrema`.
     """
     order = np.argsort(np.concatenate([times, scan]), kind="stable")  # (the samples first among equal times)
-    return _force_extrema(play, np.concatenate([times, scan])[order], np.concatenate([force, scanned])[order], start,
-                          path)
-
-
-def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path) -> dict:
-    """The largest and least ``F_x`` (N) and their times (s from first contact): among the samples and the path's
-    corners (where ``F_x`` has kinks), the best refined between its neighbours (at a corner, on each side of it)."""
-    out, duration = {}, path.duration
+    times, force = np.concatenate([times, scan])[order], np.concatenate([force, scanned])[order]
     corners = path.corner_times - start
-    corners = corners[(corners > times[0]) & (corners < times[-1])]
-    at_corners = np.array([state.force for state in play.probed_states(corners + start, np.empty(0),
-                                                                          np.empty(0, dtype=np.intp))[0]])
+    inner = corners[(corners > times[0]) & (corners < times[-1])]
+    grid = _slope_grid(play, start, end, corners)
+    step = SLOPE_SHARE * (grid[:, -1] - grid[:, 0])
+    read = np.concatenate([inner, grid[:, 0] + step, grid[:, -1] - step])  # (the corners and the slopes: one batch)
+    values = np.array([state.force for state in play.probed_states(read + start, np.empty(0),
+                                                                      np.empty(0, dtype=np.intp))[0]])
+    known = dict(zip(np.concatenate([scan, inner]).tolist(), np.concatenate([scanned, values[:inner.size]]).tolist()))
+    steps = values[inner.size:].reshape(2, -1)
+    _unpressed_ends(play, start, grid, known, steps)
+    brackets = _slope_brackets(grid, known, steps)
+    return _force_extrema(play, times, force, start, path, (inner, values[:inner.size]), brackets)
+
+
+def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, start: float, path, at_corners,
+                   brackets) -> dict:
+    """The largest and least ``F_x`` (N) and their times (s from first contact): among the samples and the path's
+    corners (``at_corners``: the corners inside ``times``' span and ``F_x`` there, where it has kinks), the best
+    refined between its neighbours (at a corner, on each side of it), and each of ``brackets``
+    (:func:`_slope_brackets`: ``(low, high, sign)``) of its kind that does not hold that refined time refined on its
+    own, the best kept."""
+    out, duration = {}, path.duration
+    corners, at_corners = at_corners
     order = np.argsort(np.concatenate([times, corners]), kind="stable")
     times, force = np.concatenate([times, corners])[order], np.concatenate([force, at_corners])[order]
     for kind, sign in (("max", 1.0), ("min", -1.0)):
         k = int(np.argmax(sign * force))
         value, time = float(force[k]), float(times[k])
         low, high = times[max(k - 1, 0)], times[min(k + 1, times.size - 1)]
+        refined_at = None  # (where the best's refinement found a better F_x: a local extremum of its bracket)
         # (at a corner F_x kinks but may go on growing past it, as where the depth turns and x does not: issue 32
         # round 27 Z4; each side of the kink refined on its own, the corner kept where it is the extremum; ``best``,
         # the best sample, an end of each side, not a side's refined time)
         best = time
         for a, b in ((low, time), (time, high)) if time in corners else ((low, high),):
             if b > a and value != 0.0 and not _monotone(play, np.unique([a, best, b]) + start):
-                found = minimize_scalar(lambda t: -sign * play.state(float(t) + start)[0], bounds=(a, b),
-                                        method="bounded", options={"xatol": EXTREMUM_XTOL * duration})
-                refined = -sign * float(found.fun)
+                refined, at = _refined(play, sign, a, b, start, duration)
                 if sign * refined > sign * value:
-                    value, time = refined, float(found.x)
+                    value, time, refined_at = refined, at, at
+        # (a bracket that holds the refined extremum holds no other, F_x unimodal there: _slope_brackets)
+        for a, b in [(a, b) for a, b, side in brackets if side == sign
+                     and not (refined_at is not None and a < refined_at < b)]:
+            refined, at = _refined(play, sign, a, b, start, duration)
+            if sign * refined > sign * value:
+                value, time = refined, at
         value_name, time_name = extremum_names("tangential_force", kind)
         out[value_name], out[time_name] = value, time
     return out
+
+
+def _refined(play: PlaySprings, sign: float, low: float, high: float, start: float,
+             duration: float) -> tuple[float, float]:
+    """``F_x`` (N) at its largest (``sign`` +1) or least (−1) on ``[low, high]`` (s from first contact) and its time,
+    by bounded minimisation to :data:`EXTREMUM_XTOL` of the path's ``duration``."""
+    found = minimize_scalar(lambda t: -sign * play.state(float(t) + start)[0], bounds=(low, high), method="bounded",
+                            options={"xatol": EXTREMUM_XTOL * duration})
+    return -sign * float(found.fun), float(found.x)
