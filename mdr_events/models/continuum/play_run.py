@@ -14,7 +14,7 @@ back without a reversal of ``x``, and a zone that opens and closes between two o
 extrema of ``F_x`` are the largest and least of the samples and the route's own scan of the run
 (:func:`_scanned_force_extrema`, :func:`_extrema_scan`: :data:`SEGMENT_SCAN` times inside each path segment in
 contact, so that they do not hang on the output times) refined by bounded minimisation between its neighbours
-(at a corner, where ``F_x`` kinks but may go on growing, on each side of it), and every interior extremum the
+(a best sample at a corner, where ``F_x`` kinks but may go on growing, left to the brackets), and every interior extremum the
 scan's differences and the one-sided slopes at each segment's ends bracket refined too (:func:`_slope_brackets`).
 
 The output times are read at once (:func:`~.play_samples._probed_all`, :meth:`~.play_springs.PlaySprings.probed_states`), with
@@ -571,7 +571,7 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
                    brackets) -> dict:
     """The largest and least ``F_x`` (N) and their times (s from first contact): among the samples and the path's
     corners (``at_corners``: the corners inside ``times``' span and ``F_x`` there, where it has kinks), the best
-    refined between its neighbours (at a corner, on each side of it), and each of ``brackets``
+    refined between its neighbours (a corner not: its sides are pieces the brackets cover), and each of ``brackets``
     (:func:`_slope_brackets`: ``(low, high, sign)``) of its kind that does not hold that refined time refined on its
     own, the best kept."""
     out, duration = {}, path.duration
@@ -584,11 +584,12 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
         low, high = times[max(k - 1, 0)], times[min(k + 1, times.size - 1)]
         refined_at = None  # (where the best's refinement found a better F_x: a local extremum of its bracket)
         # (at a corner F_x kinks but may go on growing past it, as where the depth turns and x does not: issue 32
-        # round 27 Z4; each side of the kink refined on its own, the corner kept where it is the extremum; ``best``,
-        # the best sample, an end of each side, not a side's refined time)
-        best = time
-        for a, b in ((low, time), (time, high)) if time in corners else ((low, high),):
-            if b > a and value != 0.0 and not _monotone(play, np.unique([a, best, b]) + start):
+        # round 27 Z4; the corner is an end of the pieces on each side, whose interior extrema the one-sided slopes
+        # there and the scan's differences bracket (_slope_brackets, refined below), so a corner is not refined
+        # again on each side: two bounded minimisations of ~30 readings that found the corner itself where it is
+        # the extremum, 3-7 times the run of a layer's Coulomb rows)
+        for a, b in () if time in corners else ((low, high),):
+            if b > a and value != 0.0 and not _monotone(play, np.unique([a, time, b]) + start):
                 refined, at = _refined(play, sign, a, b, start, duration)
                 if sign * refined > sign * value:
                     value, time, refined_at = refined, at, at
