@@ -588,11 +588,11 @@ def _force_extrema(play: PlaySprings, times: np.ndarray, force: np.ndarray, star
         # there and the scan's differences bracket (_slope_brackets, refined below), so a corner is not refined
         # again on each side: two bounded minimisations of ~30 readings that found the corner itself where it is
         # the extremum, 3-7 times the run of a layer's Coulomb rows)
-        for a, b in () if time in corners else ((low, high),):
-            if b > a and value != 0.0 and not _monotone(play, np.unique([a, time, b]) + start):
-                refined, at = _refined(play, sign, a, b, start, duration)
-                if sign * refined > sign * value:
-                    value, time, refined_at = refined, at, at
+        if (time not in corners and high > low and value != 0.0
+                and not _monotone(play, np.unique([low, time, high]) + start)):
+            refined, at = _refined(play, sign, low, high, start, duration)
+            if sign * refined > sign * value:
+                value, time, refined_at = refined, at, at
         # (a bracket that holds the refined extremum holds no other, F_x unimodal there: _slope_brackets)
         for a, b in [(a, b) for a, b, side in brackets if side == sign
                      and not (refined_at is not None and a < refined_at < b)]:
