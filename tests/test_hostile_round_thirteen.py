@@ -35,10 +35,10 @@ def unreachable_cache(tmp_path, monkeypatch):
 
 
 def test_a_cache_the_system_refuses_is_only_a_missed_shortcut(unreachable_cache):
-    from mdr_events.theory import symbolic
     from mdr_events.theory.layer import table_store
+    from mdr_events.theory.symbolic.cache import _cached
 
-    built = symbolic._cached("round-thirteen-probe", lambda: [])  # (derived afresh, not an OSError)
+    built = _cached("round-thirteen-probe", lambda: [])  # (derived afresh, not an OSError)
     assert built == []
     grid = np.linspace(0.0, 1.0, 5)
     columns = table_store.stored_columns(table_store.cache_directory() / "probe.npz", ("s", "y"), grid,

@@ -12,6 +12,7 @@ from mdr_events import Parameters
 
 from mdr_events.theory import symbolic
 from mdr_events.theory.symbolic import relation
+from mdr_events.theory.symbolic.cache import _cached
 
 R, E_STAR, G_STAR, TAU0, DGAMMA, D_MAX = 0.03, 0.432e6, 0.288e6, 42e3, 0.15, 0.3e-3
 
@@ -278,16 +279,16 @@ def test_the_cache_holds_exactly_what_sympy_derives(tmp_path, monkeypatch):
     path = symbolic.cache_path()
     assert path.parent == tmp_path and not path.exists()
     fresh = symbolic.derive_afresh()
-    stored = symbolic._cached("model", lambda: list(fresh.values()))
+    stored = _cached("model", lambda: list(fresh.values()))
     assert path.exists()
-    loaded = symbolic._cached("model", lambda: pytest.fail("the cache was not used"))
+    loaded = _cached("model", lambda: pytest.fail("the cache was not used"))
     for rel, again, original in zip(stored, loaded, fresh.values()):
         assert again.key == original.key and again.equation == original.equation
         assert again.lhs == original.lhs and again.rhs == original.rhs and again.args == original.args
         assert again.variable == original.variable
     assert loaded[0] is not stored[0]  # rebuilt from the file
     path.write_bytes(b"damaged")
-    rebuilt = symbolic._cached("model", lambda: list(fresh.values()))
+    rebuilt = _cached("model", lambda: list(fresh.values()))
     assert [rel.key for rel in rebuilt] == list(fresh)
     monkeypatch.setenv("MDR_EVENTS_NO_CACHE", "1")
     assert symbolic.cache_path() is None
