@@ -260,6 +260,3 @@ def _derive_adhesive_virgin_curve(add: AddRelation, profile: sp.Expr, boundary: 
                  "tau0 pi a^2 + mu F_N^H(d)", F_x, sp.pi * tau0 * a**2 + mu * hertz_force, (d, a, tau0, mu, c, n, E_star)))
     if not _vanishes(closed.subs(u_x, tau0_cap + kappa * d) - sp.pi * tau0 * a**2 - mu * hertz_force):
         raise RuntimeError("the virgin curve at the centre's cap is not the force of full slip")
-
-
-#: Keys of the relations of the rate-dependent adhesion law (:func:`derive_rate_dependent_adhesion`).

@@ -12,6 +12,7 @@ from mdr_events.theory.symbolic.cache import cached_relations
 from mdr_events.theory.symbolic.paper import _single_positive, AddRelation, derive
 
 
+#: Keys of the relations of the rate-dependent adhesion law (:func:`derive_rate_dependent_adhesion`).
 RATE_ADHESION_KEYS = ("energy_release_rate", "receding_work_of_adhesion", "advancing_work_of_adhesion",
                       "receding_edge_speed", "advancing_edge_speed", "paraboloid_release_rate",
                       "flat_punch_detachment_time", "let_go_depth", "rate_springs_record_force")
