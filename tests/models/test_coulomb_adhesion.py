@@ -84,7 +84,9 @@ def each_path_solved_once():
     """Within the block the continuum's ``solve_path`` solves each path once: the exact references of a convergence
     study at each spacing's own output times are one solution filled at those times (``solve_path`` is deterministic
     and its solution is only read after it returns: the same values bit for bit). The solve, not the springs, was
-    most of such a study's cost (1.2 s of 1.5 s per spacing on the crossing paths of test_tau0_coulomb_adhesion)."""
+    most of such a study's cost (1.2 s of 1.5 s per spacing on the crossing paths of test_tau0_coulomb_adhesion).
+    The block's value: the solutions kept, by ``(params, the path's waypoints' bytes, its speed, the other
+    arguments)``."""
     from mdr_events.models.continuum import solve as solve_module
 
     original, solved = solve_module.solve_path, {}
@@ -97,7 +99,7 @@ def each_path_solved_once():
 
     solve_module.solve_path = once
     try:
-        yield
+        yield solved
     finally:
         solve_module.solve_path = original
 
