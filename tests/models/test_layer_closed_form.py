@@ -259,39 +259,3 @@ def test_the_shifts_of_samples_mostly_at_their_first_radius_are_each_elements(mo
     monkeypatch.setattr(LayerMedium, "_shifts", lambda self, K, a: sizes.append(np.size(a)) or shifts(self, K, a))
     medium._shifts(K, distinct[np.concatenate([np.full(400, 150), np.arange(200)])])
     assert sizes == [600, 199]  # (the array, then its 199 radii other than 150: the kept radius read no more)
-@pytest.mark.parametrize("contact, motion", [
-    (me.Contact.paper().replace(h=5e-3), me.Scenario("B", alpha=[20.0], d_max=3e-4)),
-    (dataclasses.replace(me.Contact.paper(), indenter=me.FlatPunch(2e-3)).replace(h=2e-4),
-     me.Scenario("B", alpha=[20.0], d_max=1e-5))])
-def test_the_layers_closed_forms_read_together_are_each_spans_own_call_bit_for_bit(contact, motion, monkeypatch):
-    """``span_forces`` reads the closed forms of a run's spans on one layer branch's integrals together
-    (``layer_closed_form.layer_forces``: their rows' series at all radii at once) and gives each span's own call's
-    values (``dense.force_values``, ``ClosedForce.__call__``) bit for bit, signs of zero included: the paraboloid's
-    spans on the paper's 5 mm layer and the thin punch's receding ones, at 1 to 401 points each (up to ``SCALAR_RADII``
-    read in floats), the spans in both orders; one reading of the series for all of them."""
-    from mdr_events.limits import check_limits
-    from mdr_events.models.continuum import span_forces as span_forces_module
-    from mdr_events.models.continuum.dense import force_values
-    from mdr_events.models.continuum.solve import run_continuum
-    from mdr_events.models.simulate import simulation_job
-
-    model, _ = simulation_job(contact, motion, None, "continuum", {}, check_limits(None))
-    cases = model.motion.cases(model.params, model.profile, model.friction)
-    solution = run_continuum(model.kernel, cases.paths, 11)["solutions"][0]
-    forces = [span.interpolant for span in solution.spans if isinstance(
-        getattr(span.interpolant, "primitive", None), layer_closed_form.LayerPrimitive) and not
-        span.interpolant.primitive.still]
-    assert len(forces) >= 2
-    grouped = []
-    layer_forces = span_forces_module.layer_forces
-    monkeypatch.setattr(span_forces_module, "layer_forces",
-                        lambda group, points: grouped.append(len(group)) or layer_forces(group, points))
-    for count in (1, 3, layer_closed_form.SCALAR_RADII, 5, 57, 401):
-        points = [np.linspace(force.ts[0], force.ts[-1], count + k) for k, force in enumerate(forces)]
-        for order in (slice(None), slice(None, None, -1)):
-            grouped.clear()
-            together = span_forces_module.span_forces(forces[order], points[order])
-            alone = [force_values(force, where) for force, where in zip(forces[order], points[order])]
-            assert grouped and sum(grouped) == len(forces)
-            for mine, theirs in zip(together, alone):
-                assert np.array_equal(mine, theirs) and np.array_equal(np.signbit(mine), np.signbit(theirs))

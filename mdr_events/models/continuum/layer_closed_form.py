@@ -45,7 +45,7 @@ from mdr_events.theory.layer.tangential_tables import LAMBDA_MIN as TANGENTIAL_L
 
 from .state import Cap
 
-__all__ = ["BranchIntegrals", "LayerPrimitive", "layer_span_primitive", "layer_forces", "branch_integrals", "CELL_NODES"]
+__all__ = ["BranchIntegrals", "LayerPrimitive", "layer_span_primitive", "branch_integrals", "CELL_NODES"]
 
 #: Gauss–Legendre points per cell between two breaks of the tables' splines (cells ``Δ ln a <= CELL_WIDTH``). Within a
 #: cell the functions are analytic, their nearest singularity ``a = 0`` (``√a`` of Heß's term, ``ln a`` of the
@@ -359,53 +359,6 @@ class LayerPrimitive(NamedTuple):
                 edge += self.C0 * self.attach.depth(a)
             value += edge * weight
         return value
-
-
-def layer_forces(forces: list, points: list[np.ndarray]) -> list[np.ndarray]:
-    """``ClosedForce.__call__`` (:class:`~.closed_form.ClosedForce`) of several closed forms of :class:`LayerPrimitive`
-    along one branch's integrals (``own``) and one branch of attachment's (``anchors``), at their points (1-D), bit for
-    bit, in one reading of the cells' series: the rows any of them needs at all their radii at once, then each span's
-    terms of its own rows (``0.0`` for the others, as :meth:`LayerPrimitive.__call__` puts them) with its own
-    coefficients.
-
-    The series' values are the same read among other radii and rows (Clenshaw's recurrence acts element by element,
-    :meth:`BranchIntegrals.values`; a few radii read in floats give the arrays' numbers), so each span's ``P`` is its
-    own call's; what is saved is the recurrence's fixed cost, some forty NumPy calls a reading (a receding punch's
-    run reads two spans in ``evaluate`` and again in the extrema's scan). A still primitive has no place here (its
-    zeros need no series: the caller reads it alone).
-
-    Parameters
-    ----------
-    forces : list of ClosedForce
-        The spans' forces, each of a :class:`LayerPrimitive` not :attr:`~LayerPrimitive.still`, all of the same
-        ``own`` and ``anchors``.
-    points : list of numpy.ndarray
-        Each span's points in its variable (the radius over its scale), 1-D.
-
-    Returns
-    -------
-    list of numpy.ndarray
-        ``F_x`` (N) at each span's points, in the order given.
-    """
-    from .dense import cut
-
-    radii = [np.reshape(np.asarray(where, dtype=float), -1) * force.scale for force, where in zip(forces, points)]
-    lengths = [len(each) for each in radii]
-    first = forces[0].primitive
-    rows = tuple(sorted({row for force in forces for row in force.primitive.rows}))
-    read = dict(zip(rows, (cut(values, lengths) for values in first.own.values(np.concatenate(radii), rows))))
-    attached = [radii[k] for k, force in enumerate(forces) if force.primitive.C0]
-    if attached:  # (J₀ on the anchors' integrals, of the spans whose C₀ is not 0, in their order)
-        found = iter(cut(first.anchors.values(np.concatenate(attached), slice(4, 5))[0], [len(a) for a in attached]))
-    out = []
-    for k, force in enumerate(forces):
-        primitive = force.primitive
-        values = [0.0] * len(BranchIntegrals.NAMES)
-        for index in primitive.rows:
-            values[index] = read[index][k]
-        value = primitive._combine(*values, next(found) if primitive.C0 else 0.0)
-        out.append(force.force + force.G2 * (value - force.origin))
-    return out
 
 
 def layer_span_primitive(integrator) -> LayerPrimitive | None:

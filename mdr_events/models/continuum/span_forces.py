@@ -9,10 +9,8 @@ the spans): the values each span's own call gives, bit for bit, in a call per gr
   repeated over its points, in the order ``Primitive.__call__`` sums them;
 - forces linear in time (:class:`~.span.LinearForce`, a pinned span's): ``F0 + rate (t − t0)`` with each span's
   numbers repeated over its points;
-- closed forms on a bonded layer along one branch's integrals (:class:`~.closed_form.ClosedForce` of a
-  :class:`~.layer_closed_form.LayerPrimitive` not still): the cells' series of all their radii in one reading,
-  :func:`~.layer_closed_form.layer_forces`;
-- anything else (another dense output), and a group of one span: its own call, :func:`~.dense.force_values`.
+- anything else (a layer's closed form, another dense output), and a group of one span: its own call,
+  :func:`~.dense.force_values`.
 
 Each value is the same whether it is computed among other spans' or alone: the branch's NumPy forms and the products
 and sums act element by element (``tests/models/test_extremum_scan.py`` compares both routes).
@@ -24,7 +22,6 @@ import numpy as np
 
 from .closed_form import ClosedForce, Primitive
 from .dense import _gathered, _step_values, cut, force_values
-from .layer_closed_form import LayerPrimitive, layer_forces
 from .span import LinearForce
 
 __all__ = ["span_forces"]
@@ -46,7 +43,7 @@ def span_forces(interpolants: list, points: list[np.ndarray]) -> list[np.ndarray
         ``F_x`` (N) at each span's points, in the order given.
     """
     out: list = [None] * len(interpolants)
-    steps, closed, linear, layered = [], {}, [], {}
+    steps, closed, linear = [], {}, []
     for index, (interpolant, where) in enumerate(zip(interpolants, points)):
         gathered = _gathered(interpolant) if np.ndim(where) == 1 else None
         if gathered is not None:
@@ -56,10 +53,6 @@ def span_forces(interpolants: list, points: list[np.ndarray]) -> list[np.ndarray
             closed.setdefault((id(primitive.branch), id(primitive.attach)), []).append(index)
         elif type(interpolant) is LinearForce and np.ndim(where) == 1:
             linear.append(index)
-        elif (type(interpolant) is ClosedForce and type(interpolant.primitive) is LayerPrimitive
-              and not interpolant.primitive.still and np.ndim(where) == 1):
-            primitive = interpolant.primitive
-            layered.setdefault((id(primitive.own), id(primitive.anchors)), []).append(index)
         else:
             out[index] = force_values(interpolant, where)
     alone = [index for index, _ in steps] if len(steps) == 1 else []  # (a group of one: its own call)
@@ -70,12 +63,6 @@ def span_forces(interpolants: list, points: list[np.ndarray]) -> list[np.ndarray
         if len(members) > 1:
             _fill(out, members, _closed_values([interpolants[index] for index in members],
                                                [points[index] for index in members]))
-        else:
-            alone += members
-    for members in layered.values():
-        if len(members) > 1:
-            _fill(out, members, layer_forces([interpolants[index] for index in members],
-                                             [points[index] for index in members]))
         else:
             alone += members
     if len(linear) > 1:
