@@ -231,31 +231,3 @@ def test_the_levels_and_rates_kept_tell_the_zeros_apart_and_are_bounded(monkeypa
     integrator._rate_parts(variables[0])
     assert slopes == [1.0]
     assert variable_key(-0.0) != variable_key(0.0) and variable_key(np.float64(0.5)) is None
-
-
-def test_the_shifts_of_samples_mostly_at_their_first_radius_are_each_elements(monkeypatch):
-    """``LayerMedium._shifts`` of an array most of whose radii equal its first (a punch held at its face, then
-    receding: 1447 of a run's 2000 samples) reads that radius's shift once, kept per ``(K, radius)``
-    (``_held_shift``), and the others elementwise: each element's value in an array of distinct radii, bit for bit,
-    below and above ``SHARED_SHARE``, at zero; a second array of the same first radius reads no array of one radius."""
-    from mdr_events.models.continuum import layer_media
-
-    medium = LayerMedium(PAPER, me.FlatPunch(2e-3), me.Layer(2e-4))
-    K = 1.7e-3
-    distinct = np.geomspace(1e-7, 2e-3, 301)
-    each = medium._shifts(K, distinct)
-    rng = np.random.default_rng(3)
-    for share in (0.2, layer_media.SHARED_SHARE, 0.5, 0.9):
-        for k in (0, 150, 300):
-            held = int(share * 600)
-            others = rng.choice([i for i in range(distinct.size) if i != k], 600 - held)
-            order = np.concatenate([[k], rng.permutation(np.concatenate([np.full(held - 1, k), others]))])
-            radii = distinct[order]
-            assert np.array_equal(medium._shifts(K, radii), each[order])
-    assert np.array_equal(medium._shifts(K, np.concatenate([[0.0] * 100, distinct])), np.concatenate([[0.0] * 100,
-                                                                                                      each]))
-    sizes = []
-    shifts = LayerMedium._shifts
-    monkeypatch.setattr(LayerMedium, "_shifts", lambda self, K, a: sizes.append(np.size(a)) or shifts(self, K, a))
-    medium._shifts(K, distinct[np.concatenate([np.full(400, 150), np.arange(200)])])
-    assert sizes == [600, 199]  # (the array, then its 199 radii other than 150: the kept radius read no more)

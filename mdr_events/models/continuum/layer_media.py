@@ -27,15 +27,6 @@ if TYPE_CHECKING:
 __all__ = ["LayerMedium", "FrictionlessLayerMedium", "LAYER_MEDIA"]
 
 
-#: :meth:`LayerMedium._shifts` of at least :data:`SHARED_LEAST` radii, at least this share of them equal to the first,
-#: reads that radius's shift once (kept: :meth:`LayerMedium._held_shift`) and the others elementwise, the same values
-#: (each element's own operations): the array route's cost grows with its length (a punch's run, 2000 samples of
-#: which 1447 at its face, ~140 µs of CPU; its 553 others ~80 µs; the mask, the count and the writes a few µs)
-SHARED_SHARE = 0.25
-#: The fewest radii for which :meth:`LayerMedium._shifts` looks for :data:`SHARED_SHARE` of them at the first
-SHARED_LEAST = 64
-#: How many radii's shifts a medium keeps (:meth:`LayerMedium._held_shift`): a run's held or pinned radii, a few
-HELD_KEPT = 8
 #: How many branches a medium keeps (:meth:`LayerMedium._branch`): a run asks for two, a rate law's run a few more.
 BRANCHES_KEPT = 16
 
@@ -69,8 +60,6 @@ class LayerMedium(HalfSpaceMedium):
         #: the branches made (:meth:`edge`), by the material and the work: a branch is a function of those values on
         #: this medium, and every run of the contact asks for the same two (at most :data:`BRANCHES_KEPT`)
         self._branches: dict[tuple, object] = {}
-        #: :meth:`_held_shift`'s, by ``(K, radius)``, oldest first (at most :data:`HELD_KEPT`)
-        self._held: dict[tuple[float, float], float] = {}
         #: what the indenter's kind makes of the normal springs (:mod:`.layer_normals`)
         self.springs = LAYER_NORMALS[indenter_kind(indenter)]
         self.normal = NormalFactors(params.nu, layer, self.springs.exponent(indenter))
@@ -126,31 +115,10 @@ class LayerMedium(HalfSpaceMedium):
             # (one radius throughout, a pinned span's: its shift read once and repeated, the same value as each of
             # the array's elementwise operations gives every element; a held punch's face, two thousand samples.
             # Only for one K: an array of K would give each element its own shift)
-            return np.full(radii.shape, self._held_shift(K, radii.flat[0]))
-        if radii.size >= SHARED_LEAST and np.ndim(K) == 0:
-            held = radii == radii.flat[0]
-            if np.count_nonzero(held) >= SHARED_SHARE * radii.size:
-                # (most samples at the first radius, the others elsewhere: a punch's run held at its face, then
-                # receding. The first radius's shift as above, the others elementwise: each element's own value)
-                out = np.empty(radii.shape)
-                out[held] = self._held_shift(K, radii.flat[0])
-                out[~held] = self._shifts(K, radii[~held])
-                return out
+            return np.full(radii.shape, self._shifts(K, radii.reshape(-1)[:1])[0])
         lam = np.maximum(radii, 0.0) / self.layer.thickness
         factor = self._factor_array(self.params.nu, *self.tangential.factors_array(lam))
         return np.where(radii > 0, self._cap_array(radii, K, factor), 0.0)
-
-    def _held_shift(self, K: float, radius: float) -> float:
-        """:meth:`_shifts` of one radius as an element of an array (NumPy's forms), kept per ``(K, radius)`` for the
-        last :data:`HELD_KEPT` of them: a held face's or a pinned span's radius, read by every run of the contact (the
-        array route's fixed cost, ~40 µs, for one element)."""
-        key = (float(K), float(radius))
-        found = self._held.get(key)
-        if found is None:
-            if len(self._held) >= HELD_KEPT:
-                del self._held[next(iter(self._held))]
-            found = self._held[key] = float(self._shifts(K, np.array([radius], dtype=float))[0])
-        return found
 
     def measures_and_shifts(self, K: float, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """``M(a)`` (:meth:`measure` from 0) and ``ū(a)`` (:meth:`shift`) at an array of radii ``> 0``, from one
