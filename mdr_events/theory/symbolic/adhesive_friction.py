@@ -15,6 +15,8 @@ from mdr_events.theory.symbolic.paper import _single_positive, AddRelation, deri
 from mdr_events.theory.symbolic.power_law import derive_power_law, derive_power_law_model
 from mdr_events.theory.symbolic.friction import derive_friction_model
 
+__all__ = ["derive_adhesive_friction_model", "ADHESIVE_FRICTION_KEYS"]
+
 
 #: Keys of the relations of Coulomb's law with adhesion (:func:`derive_adhesive_friction_model`).
 ADHESIVE_FRICTION_KEYS = ("compression_boundary", "compression_boundary_rate", "adhesive_friction_cap",

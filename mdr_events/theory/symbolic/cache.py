@@ -13,6 +13,8 @@ import sympy as sp
 from mdr_events.theory.cache_files import cache_directory, read_cached, store_cached
 from mdr_events.theory.symbolic.derived_relation import Relation
 
+__all__ = ["cache_path", "cached_relations", "derivation_check", "sibling_cache_path", "source_digest"]
+
 
 def source_digest(*source_files: str | Path) -> str:
     """The key of the relations a module (or a package) of derivations files: a hash of its source and of SymPy's

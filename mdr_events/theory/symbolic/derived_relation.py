@@ -11,6 +11,8 @@ import sympy as sp
 
 from mdr_events.theory.symbolic.symbols import LATEX_NAMES
 
+__all__ = ["Relation"]
+
 
 @dataclass(frozen=True)
 class Relation:

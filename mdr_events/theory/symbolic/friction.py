@@ -11,6 +11,8 @@ from mdr_events.theory.symbolic.derived_relation import Relation
 from mdr_events.theory.symbolic.cache import cached_relations
 from mdr_events.theory.symbolic.power_law import derive_power_law, derive_power_law_model
 
+__all__ = ["derive_friction_model", "FRICTION_KEYS"]
+
 
 #: Keys of the friction-law relations (:func:`derive_friction_model`).
 FRICTION_KEYS = ("coulomb_critical_shift", "cattaneo_mindlin_stick_radius", "cattaneo_mindlin_force",

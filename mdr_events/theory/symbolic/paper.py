@@ -14,6 +14,8 @@ from mdr_events.theory.symbolic.symbols import (
 from mdr_events.theory.symbolic.derived_relation import Relation
 from mdr_events.theory.symbolic.cache import cached_relations
 
+__all__ = ["abel_transform", "derive", "derive_afresh"]
+
 
 # the Abel transform (3)
 def abel_transform(profile: sp.Expr, radial: sp.Symbol = r, coordinate: sp.Symbol = x) -> sp.Expr:

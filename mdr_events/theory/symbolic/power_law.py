@@ -14,6 +14,8 @@ from mdr_events.theory.symbolic.derived_relation import Relation
 from mdr_events.theory.symbolic.cache import _cached, cached_relations
 from mdr_events.theory.symbolic.paper import _single_positive, abel_transform, AddRelation, derive
 
+__all__ = ["derive_power_law", "derive_power_law_model", "POWER_LAW_KEYS"]
+
 
 @functools.cache
 def derive_power_law() -> Relation:

@@ -11,6 +11,8 @@ from mdr_events.theory.symbolic.derived_relation import Relation
 from mdr_events.theory.symbolic.cache import cached_relations
 from mdr_events.theory.symbolic.paper import _single_positive, AddRelation, derive
 
+__all__ = ["derive_rate_dependent_adhesion", "RATE_ADHESION_KEYS"]
+
 
 #: Keys of the relations of the rate-dependent adhesion law (:func:`derive_rate_dependent_adhesion`).
 RATE_ADHESION_KEYS = ("energy_release_rate", "receding_work_of_adhesion", "advancing_work_of_adhesion",

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import sympy as sp
 
+__all__ = ["SYMBOLS", "LATEX_NAMES"]
+
 
 # symbols
 x = sp.Symbol("x", positive=True)
