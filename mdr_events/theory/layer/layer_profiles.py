@@ -1,5 +1,5 @@
-"""The layer's equivalent profile ``g(x)`` (L4): of any indenter by an Abel transform and a direct solve, and of a
-paraboloid or a power law from the tables, with its slope.
+"""The layer's equivalent profile ``g(x)`` (L4) of a paraboloid or a power law from the tables, with its slope (of any
+indenter, by an Abel transform and a direct solve: ``relations.equivalent_profile``).
 
 Part of :mod:`mdr_events.theory.layer` (the equations (L1)–(L5) are stated there; the names are also those of
 :mod:`mdr_events.theory.layer.relations`).
@@ -7,83 +7,13 @@ Part of :mod:`mdr_events.theory.layer` (the equations (L1)–(L5) are stated the
 
 from __future__ import annotations
 
-from typing import Callable
-
 import numpy as np
 
 from mdr_events.contact.layer import Layer
-from mdr_events.limits import Limits
 from mdr_events.theory.layer.checks import checked_relation
-from mdr_events.theory.layer.compliance import _nu
-from mdr_events.theory.layer.punch import _solve, check_solves
 from mdr_events.theory.layer.relation_factors import _abel_factor, _factors, _power_law, _relative
 
-__all__ = ["equivalent_profile", "power_law_profile", "power_law_profile_slope"]
-
-
-#: Gauss–Legendre nodes of the angular Abel transform ``g∞(x) = x ∫₀^{π/2} f'(x sin θ) dθ`` in
-#: :func:`equivalent_profile`.
-_ABEL_NODES = 64
-
-
-@checked_relation
-def equivalent_profile(x, profile_slope: Callable[[np.ndarray], np.ndarray], nu: float, layer: Layer,
-                       limits: Limits | None = None) -> np.ndarray:
-    r"""The generalized MDR profile ``g(x)`` of an axisymmetric profile ``f(r)`` on the layer (L4).
-
-    ``g`` is defined by ``f(r) = ∫₀ʳ [1 − φ(r; ã)] g'(ã) dã`` (the superposition of flat punches); it is the depth
-    at which the contact of radius ``|x|`` has no singular pressure at its edge, computed as
-
-    .. math:: g(x) = \frac{\Theta_g(1)}{\Theta(1)}, \qquad
-              \Theta_g - \lambda A_\lambda \Theta_g = g_\infty(|x|\tau), \qquad
-              g_\infty(x) = |x|\int_0^{|x|}\frac{f'(r)}{\sqrt{x^2 - r^2}}\,\mathrm{d}r \quad (3)
-
-    (``g = g∞``, the Abel transform (3), on the half-space). One direct solve per ``x``; a power law's is tabulated
-    (:func:`power_law_profile`).
-
-    Parameters
-    ----------
-    x : float or array_like
-        The springs' coordinates in m.
-    profile_slope : callable
-        ``f'(r)`` for an array of radii in m (vectorised), finite on ``[0, max |x|]``.
-    nu : float
-        Poisson's ratio, in ``[0, 0.5]``.
-    layer : Layer
-        The layer.
-    limits : Limits or None, default None
-        The work the solves may take (:data:`~mdr_events.theory.layer.punch.SOLVE_STEPS_PER_PAIR` steps per pair of
-        each solve's nodes; ``None``: the defaults), checked before the first.
-
-    Returns
-    -------
-    numpy.ndarray
-        ``g(x)`` in m, shaped as ``x``.
-
-    Raises
-    ------
-    ValueError
-        ``nu`` outside ``[0, 0.5]``, an ``|x|/h`` beyond :data:`~mdr_events.theory.layer.LAMBDA_SOLVE_MAX`, the
-        solves beyond ``limits`` (``ResourceLimitError``).
-    """
-    x = np.abs(np.asarray(x, dtype=float))
-    check_solves(np.zeros(x.shape) if layer.is_half_space else x / layer.thickness, limits,
-                 f"equivalent_profile at {x.size} radii")
-    nodes, weights = np.polynomial.legendre.leggauss(_ABEL_NODES)
-    angles, weights = np.pi / 4.0 * (nodes + 1.0), np.pi / 4.0 * weights
-
-    def abel(radius: np.ndarray) -> np.ndarray:
-        return radius * (np.asarray(profile_slope(np.multiply.outer(radius, np.sin(angles))), dtype=float)
-                         @ weights)
-
-    out = np.empty(x.shape)
-    for index in np.ndindex(x.shape):
-        radius = float(x[index])
-        lam = 0.0 if layer.is_half_space else radius / layer.thickness
-        edge = float(abel(np.array(radius)))
-        solution = _solve(lam, _nu(nu), layer.base, lambda s: abel(radius * s)[:, None], (edge,), (), None)
-        out[index] = solution.profile_factor() if radius > 0.0 else 0.0
-    return out
+__all__ = ["power_law_profile", "power_law_profile_slope"]
 
 
 @checked_relation
