@@ -57,35 +57,33 @@ path never enters again, the run ends at that first sample without contact
 
 from __future__ import annotations
 
-import math
 from array import array
-import sys
-from typing import Callable, NamedTuple, Sequence
+from typing import Callable, NamedTuple
 
 import numpy as np
 
-from mdr_events.io.agreement import ROUND_OFF
-from mdr_events.limits import DEFAULT_LIMITS, Limits
-from mdr_events.validation import check_real
-
-from mdr_events.parameters import Parameters
-from mdr_events.models.paths import Path
-from mdr_events.models.spring_groups import SpringGroups, scale_bits, scaled, unscaled
-from mdr_events.models import indenters
-from mdr_events.models.indenters import SimulatedProfile
-from mdr_events.contact.adhesion import Adhesion, AdhesionLaw, RateDependentAdhesion, kernel_of, law_of
+from mdr_events.contact.adhesion import AdhesionLaw, RateDependentAdhesion, law_of
 from mdr_events.contact.friction import FrictionLaw, as_friction_law
-from mdr_events.models.rate_springs import rate_edge_counts
-from mdr_events.models.spring_media import HalfSpaceSprings, Springs, springs_of
-from mdr_events.contact.layer import HALF_SPACE, Layer
-from mdr_events.theory.kinds import theory_of
+from mdr_events.limits import DEFAULT_LIMITS, Limits
+from mdr_events.models import indenters
+# (the run's parts, one idea a module; their names kept here, where the tests, benchmarks and users import them)
+from mdr_events.models.discrete_grid import _first_count, _Grid
+from mdr_events.models.discrete_per_spring import _run_case_per_spring
+from mdr_events.models.discrete_size import (BYTES_PER_SAMPLE, BYTES_PER_SPRING, MIN_SPRINGS_IN_CONTACT,  # noqa: F401
+                                             SPRINGS_TO_THE_TABLES_EDGE, _spring_count, _time_grid_size,
+                                             check_discrete_size, check_spacing)
 from mdr_events.models.kernel_model import KernelModel, as_kernel_model, check_kernel_run
+from mdr_events.models.paths import Path
+from mdr_events.models.rate_springs import rate_edge_counts
+from mdr_events.models.spring_groups import SpringGroups, scale_bits, scaled
+from mdr_events.models.spring_media import HalfSpaceSprings, Springs, springs_of
+from mdr_events.models.spring_thresholds import (THRESHOLD_RULES, Thresholds, check_thresholds_known,  # noqa: F401
+                                                 hysteresis_thresholds, rate_thresholds, spring_thresholds)
+from mdr_events.parameters import Parameters
+from mdr_events.validation import check_real
 
 __all__ = ["run_discrete", "paraboloid_profile", "MIN_SPRINGS_IN_CONTACT", "Thresholds", "THRESHOLD_RULES",
            "EDGE_RULES", "spring_thresholds", "check_thresholds_known", "threshold_counts"]
-
-#: Fewer springs than this per side at ``d_max`` is too coarse (an error).
-MIN_SPRINGS_IN_CONTACT = 10
 
 
 def paraboloid_profile(params: Parameters) -> Callable[[np.ndarray], np.ndarray]:
@@ -94,92 +92,6 @@ def paraboloid_profile(params: Parameters) -> Callable[[np.ndarray], np.ndarray]
     .. math:: f(r) = \frac{r^2}{2R} \;\Rightarrow\; g(x) = \frac{x^2}{R} \qquad (4)
     """
     return indenters.spring_profile(params, None)
-
-
-class _Threshold:
-    """Depths at which each spring can be in contact: ``g(x_j) − Δl_max(x_j; Δγ)``.
-
-    ``count(d)`` is the number of springs (from the centre) that satisfy
-    ``depth >= threshold``; the set is contiguous because the threshold
-    falls to its minimum and then rises.
-    """
-
-    def __init__(self, g: np.ndarray, elongation: np.ndarray):
-        threshold = g - elongation
-        self.threshold = np.append(threshold, np.inf)  # a spring beyond the array never qualifies
-        self.lowest = int(np.argmin(threshold))
-        self.minimum = float(threshold[self.lowest])
-        self.rising = threshold[self.lowest + 1:]
-
-    def count(self, depth: np.ndarray) -> np.ndarray:
-        above = self.lowest + 1 + np.searchsorted(self.rising, depth, side="right")
-        return np.where(depth >= self.minimum, above, 0)
-
-    def grow(self, m: np.ndarray, depth: np.ndarray) -> np.ndarray:
-        """Going in: the next spring attaches if ``depth`` reaches its threshold, then all that follow.
-
-        If the next spring is inside the minimum of the threshold, every spring up to
-        the minimum has a lower threshold and attaches with it (a jump-in).
-        """
-        return np.where(depth >= self.threshold[m], np.maximum(m, self.count(depth)), m)
-
-    def shrink(self, m: np.ndarray, depth: np.ndarray) -> np.ndarray:
-        """Going out: the boundary spring detaches if ``depth`` falls below its threshold, then
-        the next inner one, and so on. On the falling side of the threshold every inner spring
-        has a higher threshold, so the whole contact comes off (a jump-off)."""
-        boundary = np.maximum(m - 1, 0)
-        holds = (m == 0) | (depth >= self.threshold[boundary])
-        inner = np.where(boundary > self.lowest, np.minimum(m, self.count(depth)), 0)
-        return np.where(holds, m, inner)
-
-
-class Thresholds(NamedTuple):
-    """The springs' thresholds of an adhesion law: attaching on the way in, letting go on the way out."""
-
-    attach: _Threshold
-    detach: _Threshold
-
-
-def hysteresis_thresholds(adhesion: Adhesion, g: np.ndarray, positions: np.ndarray, springs: Springs) -> Thresholds:
-    r"""The paper's rate-independent law: Heß's limit (8) with ``Δγ0`` to attach and ``Δγ1`` to let go.
-
-    .. math:: \Delta l_\mathrm{max}(x) = \sqrt{\frac{2 \pi |x| \Delta\gamma}{E^*}} \qquad (8)
-
-    on the half-space; on a layer ``sqrt(4π |x| Δγ / K'(|x|))`` (``springs.elongation``,
-    :mod:`mdr_events.models.spring_media`).
-    """
-    return Thresholds(_Threshold(g, springs.elongation(positions, adhesion.dgamma0)),
-                      _Threshold(g, springs.elongation(positions, adhesion.dgamma1)))
-
-
-def rate_thresholds(adhesion: RateDependentAdhesion, g: np.ndarray, positions: np.ndarray,
-                    springs: Springs) -> Thresholds:
-    """A rate-dependent law: the thresholds of its works at rest, which size the springs (an advancing edge stays
-    inside the ``Δγ0`` branch's radius) and give the first touch; its edge moves by
-    :func:`~mdr_events.models.rate_springs.rate_edge_counts`.
-
-    Parameters
-    ----------
-    adhesion : RateDependentAdhesion
-        The law.
-    g : numpy.ndarray
-        The profile at the springs (m).
-    positions : numpy.ndarray
-        The springs' centres (m).
-    springs : HalfSpaceSprings
-        The springs' kind (their Heß elongation).
-
-    Returns
-    -------
-    Thresholds
-        Those of :func:`hysteresis_thresholds` with the works at rest.
-    """
-    return hysteresis_thresholds(Adhesion(*adhesion.works_at_rest), g, positions, springs)
-
-
-#: The springs' thresholds of each adhesion law, by its type.
-THRESHOLD_RULES: dict[type, Callable[..., Thresholds]] = {Adhesion: hysteresis_thresholds,
-                                                          RateDependentAdhesion: rate_thresholds}
 
 
 def _edge_by_thresholds(adhesion: AdhesionLaw, run: "_Setup", params: Parameters, depth: np.ndarray, time: np.ndarray,
@@ -200,116 +112,6 @@ def _edge_at_its_speed(adhesion: RateDependentAdhesion, run: "_Setup", params: P
 #: The laws whose springs in contact are counted otherwise than by their thresholds (:data:`THRESHOLD_RULES`, which
 #: the stepping reads itself), by type: the counts per sample.
 EDGE_RULES: dict[type, Callable[..., np.ndarray | None]] = {RateDependentAdhesion: _edge_at_its_speed}
-
-
-def check_thresholds_known(adhesion: AdhesionLaw) -> None:
-    """Refuse an adhesion law without thresholds in :data:`THRESHOLD_RULES`, naming those with them."""
-    kernel_of(adhesion, THRESHOLD_RULES, "discrete")
-
-
-def spring_thresholds(adhesion: AdhesionLaw, g: np.ndarray, positions: np.ndarray, springs: Springs) -> Thresholds:
-    """The thresholds of ``adhesion`` for springs at ``positions`` on the profile ``g`` of the springs' kind
-    (:mod:`~mdr_events.models.spring_media`: its Heß elongation)."""
-    return kernel_of(adhesion, THRESHOLD_RULES, "discrete")(adhesion, g, positions, springs)
-
-
-def _spring_count(springs: Springs, dx: float, max_depth: float, adhesion: AdhesionLaw) -> int:
-    """Springs per side needed to hold the largest contact of the path, with margin: the springs probed and kept
-    are those the kind's relations know (:meth:`~mdr_events.models.spring_media.LayerSprings.most_springs`: on a
-    layer within the tables, whose last radius a contact near it passed by its margin, ``a/h = 64.001`` refused
-    by the tables); a contact that needs more is refused in one line."""
-    most, count = springs.most_springs(dx), 64
-    while True:
-        probed = min(count, most)
-        positions = (np.arange(probed) + 0.5) * dx
-        attach = spring_thresholds(adhesion, springs.profile(positions), positions, springs).attach
-        needed = int(attach.count(np.array([max_depth]))[0])
-        if needed < probed - 1:
-            return needed + 2
-        if probed == most:
-            raise _beyond_the_tables(springs, dx, max_depth, needed, most)
-        count *= 2
-
-
-#: The springs a finer spacing keeps between the contact's edge and the tables' last radius: the count rounds up by
-#: one at the edge, the tables' reach down by one, one spring beyond the edge is needed (3), with one of margin.
-SPRINGS_TO_THE_TABLES_EDGE = 4
-
-
-def _beyond_the_tables(springs: Springs, dx: float, max_depth: float, needed: int, most: int) -> ValueError:
-    """The refusal of a contact whose springs, one beyond its edge, pass the layer's tables (``a/h = 64``) at ``dx``,
-    naming what applies: a spacing that fits ``SPRINGS_TO_THE_TABLES_EDGE`` springs between the contact's radius and
-    ``64 h`` where there is room (none at ``a/h = 64``, round twenty-four: "a smaller dx" was suggested there, which
-    cannot help), a shallower depth (a flat punch: a smaller face, whose radius no depth changes), a thicker layer."""
-    from mdr_events.theory.layer.compliance import LAMBDA_MAX
-
-    thickness = springs.layer.thickness  # (only a layer's springs are bounded: the half-space's most is sys.maxsize)
-    reach, radius = LAMBDA_MAX * thickness, springs.branch_radius(max_depth)
-    finer = (reach - radius) / SPRINGS_TO_THE_TABLES_EDGE
-    spacing = (f"dx <= {finer:.3g} m (the contact radius {radius:.6g} m is {reach - radius:.3g} m within the tables' "
-               f"64 h = {reach:.6g} m), " if finer > 0 else
-               f"no dx (the contact radius {radius:.6g} m reaches the tables' 64 h = {reach:.6g} m), but ")
-    smaller = (f"a face's radius below {reach:.6g} m (with a dx that fits {SPRINGS_TO_THE_TABLES_EDGE} springs "
-               "between them)" if theory_of(springs.indenter).flat_face else  # (no depth changes a face's radius)
-               f"a depth whose contact radius stays below {(most - 1) * dx:.6g} m")
-    return ValueError(f"dx={dx!r} m: the contact at the depth {max_depth!r} m takes {needed} springs per side and the "
-                      f"layer's tables reach {most} (a/h = 64), too few for one spring beyond its edge; allowed: "
-                      f"{spacing}{smaller}, or a layer thicker than h = {thickness!r} m")
-
-
-def check_spacing(params: Parameters, dx: float, depth: float | None = None, profile: SimulatedProfile = None,
-                  layer: Layer = HALF_SPACE) -> float:
-    """``dx`` as a float; reject a spring spacing that puts fewer than 10 springs per side in contact at
-    the deepest point (``d_max``, or the given ``depth`` of a custom path) of ``profile`` (``None``: the paraboloid)
-    on ``layer`` (default the half-space)."""
-    dx = check_real("dx", dx, "a finite spring spacing > 0 (m)", lambda value: value > 0)
-    depth = params.d_max if depth is None else depth
-    radius = springs_of(params, profile, None, layer).branch_radius(depth)
-    if not radius / dx >= MIN_SPRINGS_IN_CONTACT:
-        raise ValueError(
-            f"dx={dx!r} m puts {int(radius // dx) if radius == radius else 0} springs per side in contact "
-            f"at the deepest point d = {depth!r} m; "
-            f"allowed: at least {MIN_SPRINGS_IN_CONTACT}, i.e. dx <= {radius / MIN_SPRINGS_IN_CONTACT:.6g} m"
-        )
-    return dx
-
-
-class _Grid:
-    """What every case of a run shares: the springs' thresholds, the caps ``ū(m Δx)`` and the integer
-    scale of the positions (:class:`~mdr_events.models.spring_groups.SpringGroups`: units of ``2**-bits`` m; ``None``
-    where the springs are stepped one by one, :func:`_run_case_per_spring`), Coulomb's ratio per spring and how the
-    shifts add up (:mod:`~mdr_events.models.spring_media`: a plain sum on the half-space, weighted on a layer)."""
-
-    def __init__(self, attach: _Threshold, detach: _Threshold, first_touch: float, caps: np.ndarray, bits: int | None,
-                 g: np.ndarray | None = None, coulomb: float | np.ndarray = 0.0,
-                 sum_shifts: Callable[[np.ndarray], float] = np.sum, weight_prefix: Sequence[int] = range(sys.maxsize),
-                 weight_bits: int = 0):
-        self.attach, self.detach = attach, detach
-        #: Coulomb's part of the caps, ``κ_j max(d − g(x_j), 0)`` with ``κ_j = μ k(x_j)/k_t(x_j)`` (``μ E*/G*`` on the
-        #: half-space; 0: the caps are ``caps``), one per spring
-        self.g = g
-        self.coulomb = np.broadcast_to(np.asarray(coulomb, dtype=float), np.shape(caps[1:]))
-        self.has_coulomb = bool(np.any(self.coulomb > 0.0))
-        self.sum_shifts = sum_shifts
-        #: the groups' integer weights (:class:`~mdr_events.models.spring_groups.SpringGroups`: every spring weighs 1
-        #: on the half-space; ``k_t(x_j)/G*`` in units of ``2**-weight_bits`` on a layer), summed below each index
-        self.weight_prefix, self.weight_bits = weight_prefix, weight_bits
-        self.first_touch = float(first_touch)
-        self.attach_threshold = attach.threshold.tolist()
-        self.detach_threshold = detach.threshold.tolist()
-        self.detach_lowest = detach.lowest
-        self.caps = caps.tolist()
-        self.n_springs = len(self.caps) - 1
-        self.bits = bits
-        self.caps_scaled = None if bits is None else scaled(caps, bits)
-
-    def to_float(self, value: int) -> float:
-        """An integer in units of ``2**-bits`` m as the nearest float (m)."""
-        return unscaled(value, self.bits)
-
-    def sum_to_float(self, value: int) -> float:
-        """A weighted sum of shifts in units of ``2**-(bits + weight_bits)`` m as the nearest float (m)."""
-        return unscaled(value, self.bits + self.weight_bits)
 
 
 #: Samples per block of a case: the per-sample Python values live for one block only.
@@ -431,63 +233,6 @@ def _first_sample(grid: _Grid, x: np.ndarray, d: np.ndarray, springs: SpringGrou
     return m, total, at_caps
 
 
-def _first_count(grid: _Grid, d: np.ndarray, edge: np.ndarray | None) -> int:
-    """The springs the first sample touches: counted before (``edge``), or by the attach threshold."""
-    if edge is not None:
-        return int(edge[0])
-    return int(grid.attach.count(d[:1])[0]) if float(d[0]) >= grid.first_touch else 0
-
-
-def _run_case_per_spring(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.ndarray, last: int,
-                         last_entry: float, counts: np.ndarray, sums: np.ndarray, sliding: np.ndarray,
-                         edge: np.ndarray | None = None) -> int:
-    """The rules stepped spring by spring, as stated (module docstring): the reference of :func:`_run_case`.
-
-    Same arguments and outputs; every spring's shift is a float moved by each step and clipped,
-    and ``Σ u`` a plain sum: O(springs) numpy work per step, where :func:`_run_case` is O(1). It also
-    runs the friction laws with Coulomb's part (``grid.has_coulomb``), whose caps differ from spring to
-    spring: ``ū_j = ū(m Δx) + κ_j max(d − g(x_j), 0)``; a spring whose cap is 0 slides. On a layer of finite
-    thickness (:class:`~mdr_events.models.spring_media.LayerSprings`) the springs differ and ``sums`` is their
-    weighted sum ``Σ (k_t(x_j)/G*) u_j`` (``grid.sum_shifts``).
-    """
-    shift = np.zeros(grid.n_springs)
-    m = _first_count(grid, d, edge)
-    counts[0], sums[0], sliding[0] = m, 0.0, 0
-    k = 1
-    while k <= last:
-        depth = d[k:k + 1]
-        if edge is not None:  # a rate-dependent edge: counted before
-            m_new = int(edge[k])
-        elif d[k] > d[k - 1]:
-            if m:
-                m_new = int(grid.attach.grow(np.array([m]), depth)[0])
-            else:
-                m_new = int(grid.attach.count(depth)[0]) if d[k] >= grid.first_touch else 0
-        elif d[k] < d[k - 1]:
-            m_new = int(grid.detach.shrink(np.array([m]), depth)[0])
-        else:
-            m_new = m
-        kept = min(m, m_new)
-        shift[:kept] += x[k] - x[k - 1]
-        shift[kept:] = 0.0  # detached springs forget their shift, new ones attach with none
-        cap = grid.caps[m_new]
-        if grid.has_coulomb:
-            cap = cap + grid.coulomb[:m_new] * np.maximum(d[k] - grid.g[:m_new], 0.0)
-        in_contact = shift[:m_new]
-        np.minimum(in_contact, cap, out=in_contact)
-        np.maximum(in_contact, -cap, out=in_contact)
-        counts[k], sums[k] = m_new, grid.sum_shifts(in_contact)
-        if grid.has_coulomb:
-            sliding[k] = np.count_nonzero((np.abs(in_contact) >= cap) | ~(cap > 0.0))
-        else:
-            sliding[k] = np.count_nonzero(np.abs(in_contact) >= cap) if cap > 0.0 else m_new
-        if m and not m_new and last_entry <= time[k - 1]:
-            last = k
-        m = m_new
-        k += 1
-    return last
-
-
 class _Setup(NamedTuple):
     """A run laid out before stepping: the common time grid, each case's samples, the springs."""
 
@@ -531,35 +276,6 @@ def _prepare(params: Parameters, paths: list[Path], dx: float, dt: float,
     grid = _Grid(attach, detach, g[0], caps, bits, g, springs.coulomb_ratios(xi, friction), springs.shift_sum(xi),
                  *(springs.weight_prefix(xi) if springs.grouped else ()))
     return _Setup(time, x_path, d_path, last_sample, last_entries, grid, g_prefix, xi, weight_prefix)
-
-
-#: Bytes a discrete run allocates per case and time sample (the path, the kernel's output, the dataset),
-#: and per spring of the half-space (thresholds, caps, the kernel's groups): measured with tracemalloc, rounded up;
-#: each kind of springs counts its own (:attr:`~mdr_events.models.spring_media.HalfSpaceSprings.bytes_per_spring`).
-BYTES_PER_SAMPLE = 160
-BYTES_PER_SPRING = HalfSpaceSprings.bytes_per_spring
-
-
-def _time_grid_size(paths: list[Path], dt: float) -> tuple[np.ndarray, np.ndarray, int]:
-    """Each path's first contact and its duration from then on (s), and the samples ``k dt`` of the shared
-    time grid that covers the longest. A duration that is a whole number of steps to the round-off of the division
-    (``dt = duration / n_steps``) takes that number, whichever way another CPU rounds it."""
-    starts = np.array([path.first_contact_time() for path in paths])
-    durations = np.array([path.duration for path in paths]) - starts
-    return starts, durations, int(math.ceil(durations.max() / dt * (1.0 - ROUND_OFF))) + 1
-
-
-def check_discrete_size(params: Parameters, paths: list[Path], dx: float, dt: float, limits: Limits,
-                        profile: SimulatedProfile = None, layer: Layer = HALF_SPACE) -> None:
-    """Estimate a discrete run's time steps, springs and memory before anything is allocated, and refuse it
-    past ``limits`` (:class:`~mdr_events.limits.ResourceLimitError` saying the estimate and how to raise it)."""
-    _, _, n_time = _time_grid_size(paths, dt)
-    deepest = max(path.max_depth for path in paths)
-    kind = springs_of(params, profile, None, layer)
-    springs = kind.branch_radius(deepest) / dx + 2
-    limits.check(f"the discrete run (dx={dx!r} m, dt={dt:.6g} s, {len(paths)} case(s))",
-                 steps=n_time * len(paths), samples=n_time * len(paths), springs=springs,
-                 memory=len(paths) * n_time * BYTES_PER_SAMPLE + springs * kind.bytes_per_spring)
 
 
 def run_discrete(

@@ -33,16 +33,18 @@ from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
-from scipy.optimize import brentq
 
 from .rate_edge import EdgeEventKind
-from .rate_shifts import RateShifts, _first_radius, _knots, _peaks, _relation, gauss_radius
+from .rate_play_sums import _block, _intervals
+from .rate_play_windows import _closed, _Extremes, _first_window, _held, _latest, _Rows, _rows
+from .rate_shifts import RateShifts, _first_radius, _knots, _peaks, gauss_radius
 
 __all__ = ["RatePlay"]
 
 #: Halvings of the bracket of the first slip (a spring's anchor first at a cap): 2^-64 of a candidate interval, below
 #: the clock's spacing.
 ONSET_HALVINGS = 64
+
 #: The most pairs of a time and a candidate laid out at once where the force is asked at many times (rows of times by
 #: the columns of candidates they see; 2^19 doubles, 4 MB an array).
 CHUNK_PAIRS = 1 << 16
@@ -206,29 +208,6 @@ class _Grid(NamedTuple):
     primitive: np.ndarray
 
 
-class _Rows(NamedTuple):
-    """Times within one piece of the edge (increasing) and, at each, the first and the last candidate column it sees
-    (from the latest touch down to before it), the radius, ``x`` and the levels ``L``, ``U``."""
-
-    times: np.ndarray
-    first: np.ndarray
-    last: np.ndarray
-    radius: np.ndarray
-    x: np.ndarray
-    lower: np.ndarray
-    upper: np.ndarray
-
-
-def _rows(play: RatePlay, times: np.ndarray) -> _Rows:
-    grid = play._grid
-    touched = np.searchsorted(play._touches, times, side="right") - 1
-    touch = np.where(touched >= 0, play._touches[np.maximum(touched, 0)] if play._touches.size else 0.0, -np.inf)
-    radius, x = play._radius(times), play._x(times)
-    return _Rows(times, np.searchsorted(grid.times, touch, side="left"),
-                 np.searchsorted(grid.times, times, side="left") - 1, radius, x, x - play.cap * radius,
-                 x + play.cap * radius)
-
-
 def _chunks(play: RatePlay, times: np.ndarray) -> list[slice]:
     """Slices of ``times`` (increasing) whose rows by the candidate columns they see hold at most
     :data:`CHUNK_PAIRS` pairs (at least one row each)."""
@@ -287,239 +266,3 @@ def _ranges(play: RatePlay, view, rows: _Rows) -> tuple[np.ndarray, np.ndarray, 
     if not los:
         return np.full(1, np.inf), np.zeros((0, rows.times.size)), np.full(1, -np.inf)  # (no spring attached)
     return np.array(los), np.array(his), np.array(base)
-
-
-class _Extremes:
-    """The largest ``L`` and the least ``U`` over any run of candidates (sparse tables of both: exact, one look-up
-    each); ``levels[n]`` is ``floor(log2(n))``."""
-
-    def __init__(self, lower: np.ndarray, upper: np.ndarray):
-        high, low = [lower], [upper]
-        while 2 ** len(high) <= lower.size:
-            width = 2 ** (len(high) - 1)
-            high.append(np.maximum(high[-1][:-width], high[-1][width:]))
-            low.append(np.minimum(low[-1][:-width], low[-1][width:]))
-        self.high = np.full((len(high), lower.size), -np.inf)
-        self.low = np.full((len(low), lower.size), np.inf)
-        for level, (top, bottom) in enumerate(zip(high, low)):
-            self.high[level, :top.size], self.low[level, :bottom.size] = top, bottom
-        self.levels = np.frexp(np.arange(lower.size + 1, dtype=float))[1] - 1
-
-    def window(self, start, stop, lower, upper) -> tuple[np.ndarray, np.ndarray]:
-        """The largest ``L`` and the least ``U`` over the candidates ``start..stop`` (elementwise, inclusive; none
-        where ``start > stop``) and ``lower``, ``upper`` (the time's own ``L``, ``U``)."""
-        length = stop - start + 1
-        empty = length <= 0
-        level = self.levels[np.where(empty, 1, length)]
-        left = np.where(empty, 0, start)
-        right = np.where(empty, 0, stop - 2 ** level + 1)
-        high = np.maximum(np.maximum(self.high[level, left], self.high[level, right]), lower)
-        low = np.minimum(np.minimum(self.low[level, left], self.low[level, right]), upper)
-        return np.where(empty, lower, high), np.where(empty, upper, low)
-
-
-def _latest(extremes: _Extremes, rows: _Rows) -> np.ndarray:
-    """The latest candidate column at each row from which the window, going back from the row's time, has closed
-    (running maximum of ``L`` at or above the running minimum of ``U`` since): ``last + 1`` where it is closed at the
-    time itself, ``first − 1`` where it never closes (the closed columns are the first ones: found by bisection)."""
-    below, above = rows.first - 1, rows.last + 2  # (closed at below, open at above)
-    while np.any(above - below > 1):
-        middle = (below + above) // 2
-        high, low = extremes.window(np.clip(middle, rows.first, rows.last + 1), rows.last, rows.lower, rows.upper)
-        met = (high >= low) & (above - below > 1)
-        below, above = np.where(met, middle, below), np.where(met | (above - below <= 1), above, middle)
-    return below
-
-
-def _closed(play: RatePlay, rows: _Rows, latest: np.ndarray) -> np.ndarray:
-    """The one value the window holds on every interval before the candidate ``latest`` where it closed
-    (:func:`_closed_value`; 0 where it closes at the time itself or never)."""
-    grid, value = play._grid, np.zeros(rows.times.shape)
-    closing = np.flatnonzero((latest >= rows.first) & (latest <= rows.last))
-    k, last = latest[closing], rows.last[closing]
-    c_l, c_u = play._extremes.window(k + 1, last, rows.lower[closing], rows.upper[closing])
-    rises, falls = grid.lower[k] >= c_u, grid.upper[k] <= c_l
-    value[closing] = np.where(rises, c_u, c_l)
-    for index in np.flatnonzero(rises & falls):  # (both inside one interval: which came first going back)
-        end = grid.times[k[index] + 1] if k[index] < last[index] else rows.times[closing[index]]
-        value[closing[index]] = _closed_value(play, grid.times[k[index]], end, c_l[index], c_u[index],
-                                              grid.lower[k[index]], grid.upper[k[index]])
-    return value
-
-
-def _held(extremes: _Extremes, rows: _Rows, columns: np.ndarray, latest: np.ndarray,
-          closed: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The window ``(c_l, c_u)`` held on the interval from each candidate of ``columns`` (increasing) at each time: the
-    largest ``L`` and least ``U`` from the interval's end to the time, the closed value on the intervals before the
-    window closed, the time's ``L`` on every interval where it closed at the time. The candidates from one of
-    ``columns`` to the next are a run whose extremes are looked up once, the run holding a time's last candidate cut
-    there; the running extremes over the runs, from the time back, are an accumulation along each row."""
-    per_row = (slice(None), None)
-    runs_end = np.append(columns[1:], extremes.high.shape[1] - 1)
-    run_l, run_u = extremes.window(columns + 1, runs_end, -np.inf, np.inf)
-    owner = np.searchsorted(columns, rows.last, side="left") - 1  # (the run holding the time's last candidate)
-    cut_l, cut_u = extremes.window(columns[np.maximum(owner, 0)] + 1, rows.last, -np.inf, np.inf)
-    order = np.arange(columns.size)[None, :]
-    c_l = np.where(order < owner[per_row], run_l, np.where(order == owner[per_row], cut_l[per_row], -np.inf))
-    c_u = np.where(order < owner[per_row], run_u, np.where(order == owner[per_row], cut_u[per_row], np.inf))
-    c_l = np.maximum(np.maximum.accumulate(c_l[:, ::-1], axis=1)[:, ::-1], rows.lower[per_row])
-    c_u = np.minimum(np.minimum.accumulate(c_u[:, ::-1], axis=1)[:, ::-1], rows.upper[per_row])
-    return _closing(rows, columns, latest, closed, c_l, c_u)
-
-
-def _closing(rows: _Rows, columns: np.ndarray, latest: np.ndarray, closed: np.ndarray, c_l: np.ndarray,
-             c_u: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The windows ``c_l``, ``c_u`` (a row per time, a column per candidate of ``columns``) where the window closed:
-    the closed value before it closed, the time's ``L`` where it closed at the time."""
-    per_row = (slice(None), None)
-    before = columns < np.where(latest <= rows.last, latest, -1)[per_row]
-    at_time = (latest == rows.last + 1)[per_row]
-    return (np.where(at_time, rows.lower[per_row], np.where(before, closed[per_row], c_l)),
-            np.where(at_time, rows.lower[per_row], np.where(before, closed[per_row], c_u)))
-
-
-def _first_window(play: RatePlay, rows: _Rows, latest: np.ndarray, closed: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The window held on each time's first interval (from its candidate ``first``), the time's own where it sees no
-    candidate."""
-    c_l, c_u = play._extremes.window(rows.first + 1, rows.last, rows.lower, rows.upper)
-    c_l, c_u = _closing(rows, rows.first[:, None], latest, closed, c_l[:, None], c_u[:, None])
-    seen = rows.first <= rows.last
-    return np.where(seen, c_l[:, 0], rows.lower), np.where(seen, c_u[:, 0], rows.upper)
-
-
-def _closed_value(play: RatePlay, start: float, end: float, c_l: float, c_u: float, l_start: float,
-                  u_start: float) -> float:
-    """The one value of a window that closes inside ``[start, end]`` going back from ``end``: ``c_u`` where ``L``
-    rose to it, ``c_l`` where ``U`` fell to it, the later of the two where both did."""
-    rises, falls = l_start >= c_u, u_start <= c_l
-    if rises and falls:  # (both inside one interval: the one nearer the end came first going back)
-        when_l = brentq(lambda t: float(play._level(np.array([t]))[0]) - c_u, start, end)
-        when_u = brentq(lambda t: float(play._upper(np.array([t]))[0]) - c_l, start, end)
-        return c_u if when_l > when_u else c_l
-    return c_u if rises else c_l
-
-
-def _block(play: RatePlay, view, rows: _Rows, held: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
-    """The springs of the jump-in's first instant (one anchor, clamped by the window held on the first interval)."""
-    block = view.block
-    kept = np.minimum(block.radius, rows.radius)
-    anchor = np.minimum(np.maximum(block.anchor, held[0]), held[1])
-    force = _relation().numeric(rows.x, anchor, 0.0, kept, kept, 0.0, 0.0, 0.0, play.G_star)
-    at_lower = anchor == rows.lower
-    return np.stack([force + np.zeros(kept.shape), np.where(at_lower, kept, 0.0),
-                     np.where((anchor == rows.upper) & ~at_lower, kept, 0.0)])
-
-
-def _intervals(play: RatePlay, rows: _Rows, columns: np.ndarray, owner: np.ndarray, his: np.ndarray,
-               held_l: np.ndarray, held_u: np.ndarray) -> np.ndarray:
-    """The springs attached on each interval between candidates, at each row: summed whole where the interval ends at
-    the next candidate and ``X`` does not cross its window inside, else cut (:func:`_cut_parts`)."""
-    grid = play._grid
-    following = np.minimum(columns + 1, grid.times.size - 1)
-    inside = (columns <= rows.last[:, None]) & (columns >= rows.first[:, None]) & (owner >= 0)
-    start = grid.times[columns][None, :]
-    end = np.where(columns < rows.last[:, None], grid.times[following], rows.times[:, None])
-    end = np.minimum(end, his[np.maximum(owner, 0), :].T if his.size else end)
-    kept = inside & (end > start)
-    whole = kept & (columns < rows.last[:, None]) & (end == grid.times[following])
-    x0, x1 = grid.x[columns], grid.x[following]
-    rise = x1 - x0
-    span = (grid.times[following] - grid.times[columns])
-    with np.errstate(divide="ignore", invalid="ignore"):
-        crosses = [_interior(np.where(rise != 0.0, start + (level - x0) / rise * span, start), start, end)
-                   for level in (held_l, held_u)]
-    whole &= ~(crosses[0] | crosses[1])
-    total = _whole_intervals(play, rows, columns, following, whole, held_l, held_u)
-    cut = np.nonzero(kept & ~whole)
-    if cut[0].size:
-        total += _cut_parts(play, rows, cut, columns[cut[1]], end[cut], held_l[cut], held_u[cut])
-    return total
-
-
-def _interior(cross: np.ndarray, start: np.ndarray, end: np.ndarray) -> np.ndarray:
-    """Where a crossing lies strictly inside its interval once clipped to it."""
-    clipped = np.minimum(np.maximum(cross, start), end)
-    return (clipped > start) & (clipped < end)
-
-
-def _whole_intervals(play: RatePlay, rows: _Rows, columns: np.ndarray, following: np.ndarray, whole: np.ndarray,
-                     held_l: np.ndarray, held_u: np.ndarray) -> np.ndarray:
-    """The record force (``rate_springs_record_force``) of the whole intervals, summed per row as products of their
-    masks with each interval's measure and ``X a|τ_k^τ_k+1 − ∫ Ẋ a dτ`` (its sticking springs' share)."""
-    grid = play._grid
-    measure = grid.radius[following] - grid.radius[columns]
-    held = (grid.x[following] * grid.radius[following] - grid.x[columns] * grid.radius[columns]
-            - (grid.primitive[following] - grid.primitive[columns]))
-    middle = play._x(0.5 * (grid.times[columns] + grid.times[following]))
-    constant = whole & ((middle < held_l) | (middle > held_u) | (held_l == held_u))
-    anchor = np.where(middle < held_l, held_l, held_u)
-    sticking = whole & ~constant
-    level = np.where(constant, anchor, 0.0) @ measure
-    swept = whole.astype(float) @ measure
-    force = 2.0 * play.G_star * (rows.x * swept - level - sticking.astype(float) @ held)
-    at_lower = constant & (anchor == rows.lower[:, None])
-    at_upper = constant & (anchor == rows.upper[:, None]) & ~at_lower
-    return np.stack([force, at_lower.astype(float) @ measure, at_upper.astype(float) @ measure])
-
-
-def _cut_parts(play: RatePlay, rows: _Rows, cut: tuple, columns: np.ndarray, end: np.ndarray, c_l: np.ndarray,
-               c_u: np.ndarray) -> np.ndarray:
-    """The springs attached on intervals ``[τ_k, end]`` that ``X`` crosses the window inside, or that end before the
-    next candidate: each cut where the linear ``X`` meets its held window, each part a constant anchor or ``X``."""
-    grid = play._grid
-    owner, start = cut[0], grid.times[columns]
-    x0, x1 = play._x(start), play._x(end)
-    rise = x1 - x0
-    with np.errstate(divide="ignore", invalid="ignore"):
-        cross_l = np.where(rise != 0.0, start + (c_l - x0) / rise * (end - start), start)
-        cross_u = np.where(rise != 0.0, start + (c_u - x0) / rise * (end - start), start)
-    inner = np.sort(np.stack([np.clip(cross_l, start, end), np.clip(cross_u, start, end)]), axis=0)
-    cuts = np.stack([start, inner[0], inner[1], end])  # (4, n): three parts each
-    lows, highs = cuts[:-1].ravel(), cuts[1:].ravel()
-    keep = highs > lows  # (a part of no length carries no force)
-    lows, highs, owner = lows[keep], highs[keep], np.tile(owner, 3)[keep]
-    c_l3, c_u3 = np.tile(c_l, 3)[keep], np.tile(c_u, 3)[keep]
-    middle = play._x(0.5 * (lows + highs))
-    constant = (middle < c_l3) | (middle > c_u3) | (c_l3 == c_u3)
-    anchor = np.where(middle < c_l3, c_l3, c_u3)
-    a_low, a_high = _radius_at(play, lows), _radius_at(play, highs)
-    swept = _primitive_at(play, highs) - _primitive_at(play, lows)
-    force = _relation().numeric(rows.x[owner], np.where(constant, anchor, 0.0), a_low,
-                                np.where(constant, a_high, a_low), a_high, np.where(constant, 0.0, play._x(lows)),
-                                np.where(constant, 0.0, play._x(highs)), np.where(constant, 0.0, swept), play.G_star)
-    measure = a_high - a_low
-    at_lower = constant & (anchor == rows.lower[owner])
-    at_upper = constant & (anchor == rows.upper[owner]) & ~at_lower
-    count = rows.times.size
-    return np.stack([np.bincount(owner, weights=force, minlength=count),
-                     np.bincount(owner, weights=np.where(at_lower, measure, 0.0), minlength=count),
-                     np.bincount(owner, weights=np.where(at_upper, measure, 0.0), minlength=count)])
-
-
-def _radius_at(play: RatePlay, times: np.ndarray) -> np.ndarray:
-    """The radius (m) at ``times``: the candidates' own where a time is one, else the edge's polynomials."""
-    grid = play._grid
-    index = np.clip(np.searchsorted(grid.times, times), 0, len(grid.times) - 1)
-    out = grid.radius[index].copy()
-    other = grid.times[index] != times
-    if np.any(other):
-        out[other] = play._radius(times[other])
-    return out
-
-
-def _primitive_at(play: RatePlay, times: np.ndarray) -> np.ndarray:
-    """``∫ ẋ a dτ`` (m²) from the first candidate to each of ``times``: the candidates' primitive, and Gauss–Legendre
-    on the remainder of a time that is not one."""
-    grid = play._grid
-    index = np.clip(np.searchsorted(grid.times, times, side="right") - 1, 0, len(grid.times) - 1)
-    out = grid.primitive[index].copy()
-    rows = np.flatnonzero(grid.times[index] != times)
-    if rows.size:
-        index, times = index[rows], times[rows]
-        start = grid.times[index]
-        following = np.minimum(index + 1, len(grid.times) - 1)
-        width = grid.times[following] - start
-        slope = np.where(width > 0.0, (grid.x[following] - grid.x[index]) / np.where(width > 0.0, width, 1.0), 0.0)
-        half, weighted = gauss_radius(play._radius, start, times)
-        out[rows] += slope * half * weighted
-    return out

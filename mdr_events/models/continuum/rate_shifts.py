@@ -32,10 +32,9 @@ spring on the same edge (:mod:`~mdr_events.models.continuum.rate_coulomb`).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import NamedTuple
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
+from scipy.optimize import brentq
 
 from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.contact.friction import FrictionLaw
@@ -45,48 +44,14 @@ from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law, symbolic
 from mdr_events.validation import shown
 
-from .rate_dense import StepPolynomials, step_polynomials
 from .rate_edge import EDGE_RTOL, EdgeEventKind, EdgeRun, normal_force_at, solve_edge
+# (the parts, one idea a module; the names kept here, where users, rate_play and the tests import them)
+from .rate_levels import STEP_PROBES, _knots, _level_candidates, _peaks, _reach  # noqa: F401
+from .rate_quadrature import GAUSS_NODES, _swept, gauss_radius  # noqa: F401
+from .rate_records import BISECTIONS, _bisect, _first_radius, _in_contact, _timeline, _View  # noqa: F401
 
 __all__ = ["RateShifts", "solve_rate_shifts", "check_rate_friction", "path_way", "gauss_radius", "GAUSS_NODES", "BISECTIONS",
            "STEP_PROBES"]
-
-#: Gauss–Legendre nodes per solver step for ``∫ Ẋ a dτ``: exact to degree 15, beyond the dense output's polynomials
-#: (Radau's 3, BDF's 5, LSODA's up to 12).
-GAUSS_NODES = 8
-#: Halvings of a bracket where the radius reaches a value on a dense output that is not the steps' polynomials (on them
-#: :meth:`~mdr_events.models.continuum.rate_dense.StepPolynomials.reach`; where ``x`` reaches a level, the sliding
-#: springs' end, the closed form :func:`_reach`): 2^-64 of a step, below a double's spacing.
-BISECTIONS = 64
-#: Points inside each solver step at which ``L = σx − K a`` is probed for an interior maximum (then refined).
-STEP_PROBES = 5
-_NODES, _WEIGHTS = np.polynomial.legendre.leggauss(GAUSS_NODES)
-
-
-class _Record(NamedTuple):
-    """Springs attached on an advancing piece between the times ``lo`` and ``hi``, the radius ``solution(τ)[0]``."""
-
-    lo: float
-    hi: float
-    solution: object
-
-
-class _Block(NamedTuple):
-    """The springs of the jump-in's first instant: ``[0, radius]`` with one anchor (``σx`` at the contact's start)."""
-
-    radius: float
-    anchor: float
-
-
-class _View(NamedTuple):
-    """One piece of the edge and the springs attached at its start."""
-
-    t0: float
-    t1: float
-    solution: object
-    way: int  #: +1 advancing, -1 receding, 0 resting
-    records: tuple
-    block: _Block
 
 
 def _relation() -> symbolic.Relation:
@@ -256,167 +221,6 @@ class RateShifts:
                 force[rows], sliding[rows] = _view_force(self, view, times[rows], levels[rows], forces)
         at_cap = self._level(times) >= levels  # (the level at its running maximum: M is L there, bit for bit)
         return self.sign * force, np.where(at_cap, sliding, 0.0)
-
-
-def _in_contact(views: list, times: np.ndarray) -> np.ndarray:
-    inside = np.zeros(times.shape, dtype=bool)
-    for view in views:
-        inside |= (times >= view.t0) & (times <= view.t1)
-    return inside
-
-
-def _timeline(edge: EdgeRun, position) -> list[_View]:
-    """Each piece of the edge with the records of springs attached at its start (cut by receding pieces, cleared where
-    the contact ended)."""
-    ends = {event.time for event in edge.events if event.kind is EdgeEventKind.CONTACT_ENDS}
-    views, records, block, ended = [], [], None, True
-    for t0, t1, _, dense in edge.pieces:
-        solution = step_polynomials(dense)
-        a0, a1 = float(solution(t0)[0]), float(solution(t1)[0])
-        if ended:
-            records, block = [], _Block(a0, float(position(np.array([t0]))[0]))
-        way = 1 if a1 > a0 else -1 if a1 < a0 else 0
-        views.append(_View(t0, t1, solution, way, tuple(records), block))
-        if way > 0:
-            records.append(_Record(t0, t1, solution))
-        elif way < 0:
-            records = _cut(records, a1)
-            block = _Block(min(block.radius, a1), block.anchor)
-        ended = t1 in ends
-    return views
-
-
-def _cut(records: list, radius: float) -> list:
-    """The records of springs within ``radius`` (a receding edge took the rest)."""
-    kept = []
-    for record in records:
-        a_lo, a_hi = (float(record.solution(t)[0]) for t in (record.lo, record.hi))
-        if a_lo >= radius:
-            break
-        if a_hi > radius:
-            record = record._replace(hi=float(_first_radius(record.solution, record.lo, np.array([record.hi]),
-                                                            np.array([radius]))[0]))
-        kept.append(record)
-    return kept
-
-
-def _first_radius(solution, lo: float, hi: np.ndarray, radius: np.ndarray) -> np.ndarray:
-    """The first time in ``[lo, hi]`` at which an advancing piece's radius reaches ``radius`` (elementwise): on its
-    steps' polynomials (:meth:`~mdr_events.models.continuum.rate_dense.StepPolynomials.reach`), else by
-    :func:`_bisect`."""
-    if isinstance(solution, StepPolynomials):
-        return solution.reach(radius, lo, hi)
-    return _bisect(lambda t: solution(t)[0], np.full(hi.shape, lo), hi, radius)
-
-
-def _bisect(increasing, lo: np.ndarray, hi: np.ndarray, target: np.ndarray) -> np.ndarray:
-    """The least ``τ`` in ``[lo, hi]`` (elementwise) with ``increasing(τ) >= target``, to :data:`BISECTIONS` halvings
-    (``increasing`` non-decreasing in ``τ``, vectorised)."""
-    lo, hi = lo.astype(float).copy(), hi.astype(float).copy()
-    for _ in range(BISECTIONS):
-        mid = 0.5 * (lo + hi)
-        above = np.asarray(increasing(mid), dtype=float) >= target
-        hi, lo = np.where(above, mid, hi), np.where(above, lo, mid)
-    return hi
-
-
-def _reach(shifts: RateShifts, top: np.ndarray, level: np.ndarray) -> np.ndarray:
-    """The first time ``σx`` reaches ``level`` (elementwise), at most ``top``: ``σx`` is linear between the path's
-    corners and never falls, so the time is read off the corner where it first reaches the level, on the segment
-    before it (the inverse of :meth:`RateShifts._x` in closed form)."""
-    corners, along = shifts._corners
-    after = np.minimum(np.searchsorted(along, level, side="left"), len(along) - 1)
-    before = np.maximum(after - 1, 0)
-    rise = along[after] - along[before]
-    share = np.where(rise > 0.0, (level - along[before]) / np.where(rise > 0.0, rise, 1.0), 1.0)
-    when = corners[before] + np.minimum(np.maximum(share, 0.0), 1.0) * (corners[after] - corners[before])
-    return np.minimum(when, top)
-
-
-def _knots(view: _View, corners: np.ndarray) -> np.ndarray:
-    """The solver's steps of a piece and the path's corners within it."""
-    steps = getattr(view.solution, "ts", np.array([view.t0, view.t1]))
-    inner = corners[(corners > view.t0) & (corners < view.t1)]
-    return np.unique(np.concatenate([[view.t0, view.t1], np.clip(steps, view.t0, view.t1), inner]))
-
-
-def _level_candidates(shifts: RateShifts) -> tuple[np.ndarray, np.ndarray]:
-    """Times and values of ``L`` at which its running maximum can change: every knot of every piece and each step's
-    interior maximum (:func:`_peaks`)."""
-    corners = shifts._corners[0]
-    stamps = []
-    for view in shifts.views:
-        knots = _knots(view, corners)
-        stamps += [knots, _peaks(shifts._level, knots)]
-    every = np.sort(np.concatenate(stamps))
-    return every, shifts._level(every)
-
-
-def _peaks(function, knots: np.ndarray) -> np.ndarray:
-    """The interior maxima of ``function`` (vectorised) in each interval of ``knots``: probed at :data:`STEP_PROBES`
-    points, refined by bounded minimisation; each found by its refined time and its best probe."""
-    width = np.diff(knots)
-    share = np.arange(1, STEP_PROBES + 1) / (STEP_PROBES + 1)
-    probes = knots[:-1, None] + width[:, None] * share[None, :]
-    inner, ends = function(probes.ravel()).reshape(probes.shape), function(knots)
-    found = []
-    for step in np.flatnonzero(inner.max(axis=1) > np.maximum(ends[:-1], ends[1:])):
-        best = minimize_scalar(lambda t: -float(function(np.array([t]))[0]), method="bounded",
-                               bounds=(knots[step], knots[step + 1]),
-                               options={"xatol": 4.0 * np.finfo(float).eps * abs(knots[step + 1])})
-        found += [best.x, probes[step, int(np.argmax(inner[step]))]]
-    return np.array(found)
-
-
-def _swept(shifts: RateShifts, solution, start: float, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
-    """``∫_lo^hi σẋ a dτ`` (m²) within the advancing piece of ``solution`` from ``start`` (elementwise;
-    ``lo <= hi``), Gauss–Legendre on each knot interval; the knots' cumulative sums computed once per record."""
-    key = (id(solution), start)
-    if key not in shifts._sweeps:
-        end = float(np.asarray(solution.ts)[-1])
-        knots = _knots(_View(start, end, solution, 1, (), None), shifts._corners[0])
-        slope = np.diff(shifts._x(knots)) / np.where(np.diff(knots) > 0.0, np.diff(knots), 1.0)
-        whole = _partial(solution, knots, slope, knots[1:], np.arange(len(knots) - 1))
-        shifts._sweeps[key] = (knots, slope, np.concatenate([[0.0], np.cumsum(whole)]))
-    knots, slope, cumulative = shifts._sweeps[key]
-
-    def primitive(ends: np.ndarray) -> np.ndarray:
-        index = np.minimum(np.maximum(np.searchsorted(knots, ends, side="right") - 1, 0), len(knots) - 2)
-        return cumulative[index] + _partial(solution, knots, slope, ends, index)
-    return primitive(hi) - primitive(lo)
-
-
-def _partial(solution, knots: np.ndarray, slope: np.ndarray, ends: np.ndarray, index: np.ndarray) -> np.ndarray:
-    """``∫ σẋ a dτ`` from ``knots[index]`` to ``ends`` (each within its knot interval), Gauss–Legendre; 0 where an end
-    is its knot (the rule's half-width 0: no nodes evaluated there)."""
-    start = knots[index]
-    out = np.zeros(ends.shape)
-    moved = np.flatnonzero(ends != start)
-    if moved.size:
-        half, weighted = gauss_radius(lambda t: solution(t)[0], start[moved], ends[moved])
-        out[moved] = slope[index[moved]] * half * weighted
-    return out
-
-
-def gauss_radius(radius, start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The half-widths and the weighted sums of :data:`GAUSS_NODES` Gauss–Legendre nodes of ``radius`` on each
-    ``[start, end]`` (their product is ``∫ a dτ``, exact for a step's polynomial).
-
-    Parameters
-    ----------
-    radius : callable
-        The radius (m) at an array of times.
-    start, end : numpy.ndarray
-        The intervals (s).
-
-    Returns
-    -------
-    tuple of numpy.ndarray
-        The half-widths (s) and the weighted sums (m).
-    """
-    half = 0.5 * (end - start)
-    nodes = start[:, None] + half[:, None] * (1.0 + _NODES[None, :])
-    return half, radius(nodes.ravel()).reshape(nodes.shape) @ _WEIGHTS
 
 
 def _view_force(shifts: RateShifts, view: _View, times: np.ndarray, levels: np.ndarray, forces: bool = True):

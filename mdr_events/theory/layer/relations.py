@@ -6,237 +6,24 @@ Part of :mod:`mdr_events.theory.layer` (the equations (L1)–(L5) are stated the
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
 
 from mdr_events.contact.layer import Layer
+from mdr_events.limits import Limits
 from mdr_events.theory.layer.checks import checked_relation
 from mdr_events.theory.layer.compliance import _nu
-from mdr_events.limits import Limits
-from mdr_events.theory.layer.punch import _solve, check_solves, solve_punch
-from mdr_events.theory.layer.tables import layer_table
-from mdr_events.validation import check_real
+# (the relations' parts, one idea a module; their names kept here, where the package and the other modules import them)
+from mdr_events.theory.layer.layer_profiles import power_law_profile, power_law_profile_slope
+from mdr_events.theory.layer.punch import _solve, check_solves
+from mdr_events.theory.layer.relation_factors import _abel_factor, _factors, _power_law, _relative  # noqa: F401
+from mdr_events.theory.layer.stiffness_relations import (hess_elongation, punch_stiffness, punch_stiffness_slope,
+                                                         spring_stiffness_density, surface_displacement)
 
 __all__ = ["punch_stiffness", "punch_stiffness_slope", "spring_stiffness_density", "hess_elongation",
            "surface_displacement", "equivalent_profile", "power_law_profile", "power_law_profile_slope",
            "normal_force", "branch_depth", "branch_normal_force"]
-
-
-@dataclass(frozen=True)
-class _HalfSpaceFactors:
-    """The factors of the half-space (``λ = 0``), exactly: no table is built."""
-
-    exponent: float
-
-    def stiffness_factor(self, lam) -> np.ndarray:
-        return np.ones(np.shape(lam))
-
-    edge_factor = profile_factor = stiffness_factor
-
-    def force_factor(self, lam) -> np.ndarray:
-        return np.full(np.shape(lam), self.exponent / (self.exponent + 1.0))
-
-    def force_factors(self, lam) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        return self.stiffness_factor(lam), self.profile_factor(lam), self.force_factor(lam)
-
-
-def _factors(nu: float, layer: Layer, exponent: float = 2.0):
-    if not isinstance(layer, Layer):
-        raise TypeError(f"layer={layer!r} ({type(layer).__name__}) is not allowed; allowed: a Layer")
-    if layer.is_half_space:
-        _nu(nu)
-        return _HalfSpaceFactors(exponent)
-    return layer_table(nu, layer.base, exponent)
-
-
-def _relative(x, layer: Layer) -> np.ndarray:
-    """``|x|/h`` (0 for the half-space)."""
-    x = np.abs(np.asarray(x, dtype=float))
-    return np.zeros(x.shape) if layer.is_half_space else x / layer.thickness
-
-
-def _power_law(profile) -> tuple[float, float]:
-    """``(c, n)`` of a paraboloid (``1/(2R)``, 2) or a power law."""
-    from mdr_events.contact.indenters import Paraboloid, PowerLaw
-
-    if isinstance(profile, Paraboloid):
-        return 1.0 / (2.0 * profile.R), 2.0
-    if isinstance(profile, PowerLaw):
-        return profile.c, profile.n
-    raise TypeError(f"profile={profile!r} ({type(profile).__name__}) is not allowed; allowed: a Paraboloid or a "
-                    "PowerLaw (a general profile: equivalent_profile)")
-
-
-def _abel_factor(n: float) -> float:
-    """``κₙ = √π Γ(n/2 + 1)/Γ(n/2 + 1/2)``: the half-space's ``g∞ = κₙ c xⁿ`` (eq. (3))."""
-    return math.exp(0.5 * math.log(math.pi) + math.lgamma(n / 2.0 + 1.0) - math.lgamma(n / 2.0 + 0.5))
-
-
-@checked_relation
-def punch_stiffness(a, E_star: float, nu: float, layer: Layer):
-    r"""The normal stiffness ``K(a)`` of a rigid flat punch of radius ``a`` on the layer (L2).
-
-    .. math:: K(a) = 2E^* a\,\Phi(a/h), \qquad \Phi \to 1 \ (h \to \infty)
-
-    Parameters
-    ----------
-    a : float or array_like
-        The punch's radius in m.
-    E_star : float
-        ``E* = E/(1 − ν²)`` in Pa.
-    nu : float
-        Poisson's ratio, in ``[0, 0.5]``.
-    layer : Layer
-        The layer (``Layer()``: the half-space, ``K = 2E* a`` exactly).
-
-    Returns
-    -------
-    numpy.ndarray
-        ``K`` in N/m.
-
-    Raises
-    ------
-    ValueError
-        ``a/h`` beyond :data:`LAMBDA_MAX`, ``nu`` outside ``[0, 0.5]``.
-    """
-    a = np.asarray(a, dtype=float)
-    return 2.0 * E_star * a * _factors(nu, layer).stiffness_factor(_relative(a, layer))
-
-
-@checked_relation
-def punch_stiffness_slope(a, E_star: float, nu: float, layer: Layer):
-    r"""``K'(a) = 2E* Θ(1; a/h)²`` (L3): exact, from the punch's edge value and Griffith's balance.
-
-    .. math:: K'(a) = 2E^*\,\Theta(1)^2
-
-    Parameters
-    ----------
-    a : float or array_like
-        The punch's radius in m.
-    E_star : float
-        ``E*`` in Pa.
-    nu : float
-        Poisson's ratio, in ``[0, 0.5]``.
-    layer : Layer
-        The layer.
-
-    Returns
-    -------
-    numpy.ndarray
-        ``K'`` in N/m² (``2E*`` for the half-space).
-
-    Raises
-    ------
-    ValueError
-        ``a/h`` beyond :data:`LAMBDA_MAX`, ``nu`` outside ``[0, 0.5]``.
-    """
-    return 2.0 * spring_stiffness_density(a, E_star, nu, layer)
-
-
-@checked_relation
-def spring_stiffness_density(x, E_star: float, nu: float, layer: Layer):
-    r"""The MDR springs' normal stiffness per width at ``x``: ``k(x) = K'(|x|)/2`` (``E*`` on the half-space, (5)).
-
-    .. math:: k(x) = \tfrac12 K'(|x|) = E^*\,\Theta(1; |x|/h)^2
-
-    Parameters
-    ----------
-    x : float or array_like
-        The springs' coordinate in m.
-    E_star : float
-        ``E*`` in Pa.
-    nu : float
-        Poisson's ratio, in ``[0, 0.5]``.
-    layer : Layer
-        The layer.
-
-    Returns
-    -------
-    numpy.ndarray
-        ``k`` in Pa.
-
-    Raises
-    ------
-    ValueError
-        ``|x|/h`` beyond :data:`LAMBDA_MAX`, ``nu`` outside ``[0, 0.5]``.
-    """
-    edge = _factors(nu, layer).edge_factor(_relative(x, layer))
-    return E_star * edge * edge
-
-
-@checked_relation
-def hess_elongation(a, dgamma: float, E_star: float, nu: float, layer: Layer):
-    r"""Heß's rule on the layer: the boundary spring's largest elongation (generalised (8)).
-
-    .. math:: \Delta l = \sqrt{\frac{4\pi a\,\Delta\gamma}{K'(a)}}
-              = \frac{1}{\Theta(1)}\sqrt{\frac{2\pi a\,\Delta\gamma}{E^*}} \qquad (8)
-
-    (Griffith's balance ``½ K'(a) Δl² = 2π a Δγ``, :mod:`mdr_events.theory.layer_symbolic`).
-
-    Parameters
-    ----------
-    a : float or array_like
-        The contact radius in m.
-    dgamma : float
-        The work of adhesion in J/m².
-    E_star : float
-        ``E*`` in Pa.
-    nu : float
-        Poisson's ratio, in ``[0, 0.5]``.
-    layer : Layer
-        The layer.
-
-    Returns
-    -------
-    numpy.ndarray
-        ``Δl`` in m.
-
-    Raises
-    ------
-    ValueError
-        ``a/h`` beyond :data:`LAMBDA_MAX`, ``nu`` outside ``[0, 0.5]``.
-    """
-    a = np.asarray(a, dtype=float)
-    return np.sqrt(2.0 * np.pi * a * dgamma / E_star) / _factors(nu, layer).edge_factor(_relative(a, layer))
-
-
-@checked_relation
-def surface_displacement(r, a: float, nu: float, layer: Layer) -> np.ndarray:
-    r"""``φ(r; a)``: the layer's surface displacement around a flat punch of radius ``a``, over the punch's (L5).
-
-    .. math:: \varphi(r; a) = 1 \ (r \le a), \qquad
-              \varphi = \frac{2}{\pi}\Big[\arcsin\frac{a}{r} - \int_a^r \frac{G(t/a)}{\sqrt{r^2-t^2}}\,\mathrm{d}t\Big]
-              \ (r > a)
-
-    (``(2/π) arcsin(a/r)`` on the half-space). A direct solve, no table.
-
-    Parameters
-    ----------
-    r : float or array_like
-        Radii in m.
-    a : float
-        The punch's radius in m, > 0.
-    nu : float
-        Poisson's ratio, in ``[0, 0.5]``.
-    layer : Layer
-        The layer.
-
-    Returns
-    -------
-    numpy.ndarray
-        ``φ``, shaped as ``r``.
-
-    Raises
-    ------
-    ValueError
-        ``a`` not a finite number > 0, ``nu`` outside ``[0, 0.5]``.
-    """
-    a = check_real("a", a, "a finite number > 0 (m)", lambda value: value > 0.0)
-    lam = 0.0 if layer.is_half_space else a / layer.thickness
-    return solve_punch(lam, nu, layer.base, ()).surface_displacement(np.abs(np.asarray(r, dtype=float)) / a)
 
 
 #: Gauss–Legendre nodes of the angular Abel transform ``g∞(x) = x ∫₀^{π/2} f'(x sin θ) dθ`` in
@@ -302,84 +89,6 @@ def equivalent_profile(x, profile_slope: Callable[[np.ndarray], np.ndarray], nu:
         solution = _solve(lam, _nu(nu), layer.base, lambda s: abel(radius * s)[:, None], (edge,), (), None)
         out[index] = solution.profile_factor() if radius > 0.0 else 0.0
     return out
-
-
-@checked_relation
-def power_law_profile(x, profile, nu: float, layer: Layer) -> np.ndarray:
-    r"""The generalized MDR profile of a paraboloid or power law ``f = c rⁿ`` on the layer (tabulated).
-
-    .. math:: g(x) = \kappa_n c |x|^n \gamma_n(|x|/h), \qquad
-              \kappa_n = \frac{\sqrt\pi\,\Gamma(n/2 + 1)}{\Gamma(n/2 + 1/2)} \quad (3), (4)
-
-    (``γₙ = 1`` on the half-space: ``g = x²/R`` for the paraboloid, (4); ``γ₂ → 1/2`` on a thin compressible bonded
-    layer, ``g = f``; ``→ 1/4`` on a thin incompressible one).
-
-    Parameters
-    ----------
-    x : float or array_like
-        The springs' coordinates in m.
-    profile : Paraboloid or PowerLaw
-        The indenter.
-    nu : float
-        Poisson's ratio, in ``[0, 0.5]``.
-    layer : Layer
-        The layer.
-
-    Returns
-    -------
-    numpy.ndarray
-        ``g(x)`` in m.
-
-    Raises
-    ------
-    TypeError
-        ``profile`` not a paraboloid or power law.
-    ValueError
-        ``|x|/h`` beyond :data:`LAMBDA_MAX`, ``nu`` outside ``[0, 0.5]``.
-    """
-    c, n = _power_law(profile)
-    x = np.abs(np.asarray(x, dtype=float))
-    return _abel_factor(n) * c * x**n * _factors(nu, layer, n).profile_factor(_relative(x, layer))
-
-
-@checked_relation
-def power_law_profile_slope(x, profile, nu: float, layer: Layer) -> np.ndarray:
-    r"""``g'(x)`` of :func:`power_law_profile` for ``x ≥ 0`` (odd in ``x``).
-
-    .. math:: g'(x) = \kappa_n c\,[n x^{n-1}\gamma_n(\lambda) + x^n \gamma_n'(\lambda)/h]
-
-    Parameters
-    ----------
-    x : float or array_like
-        The springs' coordinates in m.
-    profile : Paraboloid or PowerLaw
-        The indenter.
-    nu : float
-        Poisson's ratio, in ``[0, 0.5]``.
-    layer : Layer
-        The layer.
-
-    Returns
-    -------
-    numpy.ndarray
-        ``g'(x)`` (``γₙ'`` from the spline's derivative: about 1e-6 relative).
-
-    Raises
-    ------
-    TypeError
-        ``profile`` not a paraboloid or power law.
-    ValueError
-        ``|x|/h`` beyond :data:`LAMBDA_MAX`, ``nu`` outside ``[0, 0.5]``.
-    """
-    c, n = _power_law(profile)
-    x = np.asarray(x, dtype=float)
-    size = np.abs(x)
-    factors = _factors(nu, layer, n)
-    lam = _relative(size, layer)
-    slope = n * size ** (n - 1.0) * factors.profile_factor(lam)
-    if not layer.is_half_space:
-        slope = slope + size**n * factors.profile_factor(lam, derivative=True) / layer.thickness
-    return np.sign(x) * _abel_factor(n) * c * slope
 
 
 @checked_relation
@@ -527,4 +236,3 @@ def branch_normal_force(a, profile, E_star: float, nu: float, dgamma: float, lay
     """
     depth = branch_depth(a, profile, E_star, nu, dgamma, layer)
     return normal_force(depth, a, profile, E_star, nu, layer)
-

@@ -37,15 +37,14 @@ from mdr_events.contact.layer import Layer, LayerBase
 from mdr_events.contact.model import Contact
 from mdr_events.limits import Limits, check_limits
 from mdr_events.parameters import PAPER_D_MAX, PAPER_V
-from mdr_events.theory.layer.compliance import LAMBDA_MAX
-from mdr_events.theory.layer.branch_scan import (beyond_tables, branch_jump_off, half_space_radii, layer_material,
-                                                scan_ceiling, stable_radius)
 from mdr_events.theory.job import rate_independent
+from mdr_events.theory.layer.branch_scan import beyond_tables, branch_jump_off, layer_material, stable_radius
+from mdr_events.theory.layer.onset_scan import (SCAN_POINTS, SCAN_SPAN, _motion, _onset_depths, _scan_top,
+                                                first_onsets)
 from mdr_events.theory.layer.punch_onset import check_punch_contact, punch_critical_angle, punch_onset_depths
 from mdr_events.theory.layer.punch_recession import punch_jump_off
 from mdr_events.theory.layer.relations import branch_depth
 from mdr_events.theory.layer.tangential_compliance import check_bonded
-from mdr_events.theory.layer.tangential_relations import sliding_cap
 from mdr_events.theory.scales import check_representable
 from mdr_events.validation import check_real, shown, validate_alpha
 
@@ -53,52 +52,20 @@ __all__ = ["onset_depths", "critical_angle_on_layer", "pull_off_depth", "first_o
            "has_closed_forms", "SCAN_POINTS", "SCAN_SPAN", "ONSET_STEPS_PER_ANGLE", "ONSET_BYTES_PER_ANGLE",
            "check_onset_count", "CRITICAL_ANGLE_STEPS", "LayerOnsets", "LAYER_ONSETS"]
 
-#: Radii of the logarithmic scan of ``r(a)`` along one motion (the running maximum is inverted on it).
-SCAN_POINTS = 400
-#: Bisection steps in ``ln a`` inside one scan interval: its width is at most ``ln(1e12)/SCAN_POINTS < 0.07``, and
-#: ``0.07 · 2⁻⁶⁰`` is far below an ulp of ``ln a``.
-_BISECTIONS = 60
-#: Without adhesion the pull-off branch shrinks to ``a → 0`` (``r → ∞``): the scan goes down to this fraction of the
-#: radius at ``d_max``; an angle whose onset lies below it (within about ``1e-10°`` of 90° at the paper's
-#: parameters) counts as sliding there.
-_SMALLEST_FRACTION = 1e-12
 #: What one angle of an onset curve on a layer counts against :attr:`~mdr_events.Limits.steps`: a bisection of
 #: :data:`_BISECTIONS` steps on the layer's tables, about 32 µs (a phase diagram's two curves in A, four in B: 65 and
 #: 130 µs per angle measured), where the discrete model's step takes about 1.5 µs; counted as the half-space's closed
 #: forms (0.2 µs an angle, no steps), 1e7 angles of a phase diagram passed the default limits and ran for 20 minutes.
 ONSET_STEPS_PER_ANGLE = 25.0
+
 #: What one critical angle on a layer counts against :attr:`~mdr_events.Limits.steps`: a scan of :data:`SCAN_POINTS`
 #: radii on the layer's tables and the radius at the motion's end, about 14 ms (84 ms measured for the six of one
 #: thickness of :func:`~mdr_events.critical_angles_against_thickness`), at the discrete step's 1.5 µs.
 CRITICAL_ANGLE_STEPS = 1e4
+
 #: The memory of one angle of the onsets on a layer at its peak (the bisections' temporaries: 181 bytes measured with
 #: tracemalloc for a phase diagram in A, 198 in B, where the half-space's 160 were counted), rounded up.
 ONSET_BYTES_PER_ANGLE = 256.0
-
-#: The scan of a motion ends at the tables' last radius (``branch_scan.scan_ceiling``) or at
-#: this many times the radius at ``d_max``, whichever comes first: on a layer so thick that its tables' last radius
-#: squared leaves the double range (``h = 1e200``: ``g(64 h)`` overflowed, and the onset was refused though the layer
-#: is the half-space there), the scan still ends where the relations are finite. An onset beyond it lies beyond any
-#: angle but those within about ``1e-10`` degrees of 90° (the travel per cap grows about as the radius).
-SCAN_SPAN = 1e12
-
-
-class _Motion(NamedTuple):
-    """A motion along one branch: radii in the order the motion visits them and ``r(a)`` (travel per cap) there."""
-
-    #: ``ln a`` of the scan, in the motion's order
-    logs: np.ndarray
-    #: ``r`` at ``logs``
-    ratio: np.ndarray
-    #: ``r`` at any ``ln a`` (for the bisection)
-    ratio_of: Callable[[np.ndarray], np.ndarray]
-    #: the depth of the branch at any ``a``
-    depth_of: Callable[[np.ndarray], np.ndarray]
-    #: where the motion does not reach the angle: ``+inf`` (A, B+: beyond the tables, refused), ``-inf`` (B: comes
-    #: apart first)
-    never: float
-    #: the depth where the motion starts (0 in A, ``d_max`` in B): the onset at α = 0
-    start_depth: float
 
 
 def check_onset_contact(contact: Contact, what: str, d_max: float | None = None) -> tuple[Contact, float]:
@@ -171,105 +138,6 @@ def has_closed_forms(contact: Contact) -> bool:
     """
     return (indenter_kind(contact.indenter) in LAYER_ONSETS and type(contact.adhesion) is Adhesion
             and contact.friction.law == "tau0" and contact.layer.base is LayerBase.BONDED)
-
-
-def _scan_top(contact: Contact, d_max: float) -> float:
-    """The last radius of a motion's scan: the tables' last, or :data:`SCAN_SPAN` times the half-space's radius
-    scale at ``d_max`` (its radius there, or its pull-off radius of the larger work), whichever is smaller (m)."""
-    pulled, hertz = half_space_radii(contact, max(contact.adhesion.dgamma0, contact.adhesion.dgamma1), d_max)
-    return min(scan_ceiling(contact.layer), SCAN_SPAN * max(pulled, hertz))
-
-
-def _motion(contact: Contact, scenario: str, branch: str, adhesion: bool, d_max: float) -> _Motion:
-    """The branch the motion follows and ``r(a)`` along it (module docstring)."""
-    E_star, nu, layer = layer_material(contact)
-    tau0, G_star = contact.friction.tau0, contact.elastomer.G_star
-    pulling = scenario == "B" and branch == "pull-off"
-    dgamma = 0.0 if not adhesion else contact.adhesion.dgamma1 if pulling else contact.adhesion.dgamma0
-
-    def depth_of(a):
-        return branch_depth(a, contact.indenter, E_star, nu, dgamma, layer)
-
-    def ratio_of(logs):
-        a = np.exp(logs)
-        # (scenario A's travel is the depth from the first touch, d >= 0: its round-off below 0 at the start made a
-        # d_max of 1e-100 m an angle of -4.5e-16 degrees)
-        travel = np.maximum(depth_of(a), 0.0) if scenario == "A" else (d_max - depth_of(a)) if pulling else \
-            (depth_of(a) - d_max)
-        cap = sliding_cap(a, tau0, G_star, nu, layer)
-        # (without τ0 the cap is 0 and any travel slides: r = inf, not NumPy's warnings at every node and bisection)
-        return np.divide(travel, cap, out=np.full(np.shape(travel), math.inf), where=cap > 0.0)
-
-    ceiling = _scan_top(contact, d_max)
-    at_d_max = float(stable_radius(contact, dgamma, np.array([d_max]))[0])
-    if scenario == "A":
-        start = float(stable_radius(contact, dgamma, np.array([0.0]))[0]) if dgamma > 0.0 else 0.0
-        start = start if start > 0.0 else _SMALLEST_FRACTION * at_d_max
-        ends, never = (start, ceiling), math.inf
-    elif pulling:
-        end = branch_jump_off(contact, dgamma)[1] if dgamma > 0.0 else _SMALLEST_FRACTION * at_d_max
-        ends, never = (at_d_max, end), -math.inf
-    else:
-        ends, never = (at_d_max, ceiling), math.inf
-    logs = np.linspace(math.log(ends[0]), math.log(ends[1]), SCAN_POINTS)
-    return _Motion(logs, ratio_of(logs), ratio_of, depth_of, never, 0.0 if scenario == "A" else d_max)
-
-
-def _first_reaching(logs: np.ndarray, ratio: np.ndarray, ratio_of, tangent: np.ndarray):
-    """The first node at which the running maximum of ``ratio`` (``r`` at ``logs``) reaches each ``tangent``, the
-    running maximum, and the ``ln a`` where ``r`` reaches it, bisected between that node and the one before."""
-    reached = np.maximum.accumulate(ratio)
-    first = np.searchsorted(reached, tangent, side="left")
-    index = np.clip(first, 1, reached.size - 1)
-    lower, upper = logs[index - 1], logs[index]
-    for _ in range(_BISECTIONS):  # r(lower) < tan α ≤ r(upper) (the first node reaching it)
-        middle = 0.5 * (lower + upper)
-        above = ratio_of(middle) >= tangent
-        lower, upper = np.where(above, lower, middle), np.where(above, middle, upper)
-    return first, reached, upper
-
-
-def first_onsets(logs: np.ndarray, ratio_of, depth_of, tangent: np.ndarray, never: float) -> np.ndarray:
-    """The depth at which the travel per cap ``r`` first reaches each ``tangent`` along a motion scanned at ``logs``
-    (``ln a`` in the motion's order; ``never`` where it does not): the running maximum of ``r`` inverted by bisection.
-
-    Parameters
-    ----------
-    logs : numpy.ndarray
-        ``ln a`` of the scan, in the motion's order.
-    ratio_of : callable
-        ``r`` at any ``ln a`` (arrays).
-    depth_of : callable
-        The depth of the motion's branch at any ``a`` (arrays).
-    tangent : numpy.ndarray
-        ``tan α`` of each angle, each above ``r`` at the motion's start.
-    never : float
-        The depth of an angle the motion does not reach.
-
-    Returns
-    -------
-    numpy.ndarray
-        The depths (m), the shape of ``tangent``.
-    """
-    first, reached, upper = _first_reaching(logs, ratio_of(logs), ratio_of, tangent)
-    return np.where(first >= reached.size, never, depth_of(np.exp(upper)))
-
-
-def _onset_depths(motion: _Motion, tangent: np.ndarray, what: str, past_tables: bool) -> np.ndarray:
-    """The depth at which ``r`` first reaches each ``tangent`` along the motion (``motion.never`` where it does not;
-    ``+inf`` at 90°); an onset beyond the tables is refused, or ``nan`` with ``past_tables``."""
-    first, reached, upper = _first_reaching(motion.logs, motion.ratio, motion.ratio_of, tangent)
-    missed = first >= reached.size
-    beyond = missed & np.isfinite(tangent) if motion.never == math.inf else np.zeros(missed.shape, bool)
-    if np.any(beyond) and not past_tables:
-        angle = float(np.degrees(np.arctan(tangent[missed & np.isfinite(tangent)].min())))
-        raise ValueError(f"alpha={angle!r} is not allowed in {what} on this layer: its onset lies beyond a/h = "
-                         f"{LAMBDA_MAX:g} (the tables' reach) or {SCAN_SPAN:g} times the radius at d_max (the scan's); "
-                         "allowed: angles below "
-                         f"{float(np.degrees(np.arctan(reached[-1]))):.6g} degrees")
-    depth = motion.depth_of(np.exp(upper))
-    depth = np.where((first == 0) | (tangent == 0.0), motion.start_depth, depth)  # (α = 0: where the motion starts)
-    return np.where(beyond, math.nan, np.where(missed, motion.never, depth))
 
 
 def check_onset_count(count: int, layer: Layer, limits: Limits | None) -> None:
@@ -449,6 +317,7 @@ def _punch_onset_depths(alpha_deg, contact, scenario, adhesion, branch, depth, p
 
 
 _CURVED = LayerOnsets(_curved_check, _curved_onset_depths, _curved_pull_off_depth, _curved_critical_angle)
+
 #: Each kind's slip onset on a layer by the indenter's type (the paraboloid and the power law share the scan of the
 #: layer's branches; the flat punch's face is held, then recedes: :mod:`~mdr_events.theory.layer.punch_onset`).
 #: Another type takes the curved kinds' checks, which name what they do not take.
