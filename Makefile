@@ -82,6 +82,7 @@ benchmark: $(STAMP)
 	$(BIN)/python benchmarks/bench_tests.py   # (the quick round of the tests, in CPU time: some minutes)
 	$(BIN)/python benchmarks/bench_small_angles.py
 	$(BIN)/python benchmarks/bench_rate_adhesion.py
+	$(BIN)/python benchmarks/bench_critical_angle.py $(AGAINST_OPTION)
 
 derive: $(STAMP)
 	$(BIN)/mdr-events derive

@@ -74,3 +74,24 @@ def measure(roots: list[str], script: str, tasks: list[str], repeat: int, cpu: b
         for checkout in checkouts:
             checkout.close()
     return [{task: statistics.median(values) for task, values in found.items()} for found in times]
+
+
+def command_line(description: str, script: str, tasks: callable, repeat: int):
+    """A benchmark's options (``--repeat``, ``--against DIR``, ``--cpu``) and the checkouts they name (label -> root,
+    this one first); ``None`` where the process is a worker (``--worker``), which has then served ``tasks()``."""
+    import argparse
+    from pathlib import Path
+
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--repeat", type=int, default=repeat, help=f"runs per figure (median; default {repeat})")
+    parser.add_argument("--against", default=None, metavar="DIR", help="a checkout to measure side by side")
+    parser.add_argument("--cpu", action="store_true", help="CPU time instead of the wall clock")
+    parser.add_argument("--worker", action="store_true", help=argparse.SUPPRESS)
+    options = parser.parse_args()
+    if options.worker:
+        serve(tasks(), options.cpu)
+        return None
+    roots = {"this checkout": str(Path(script).resolve().parent.parent)}
+    if options.against:
+        roots[f"--against {options.against}"] = str(Path(options.against).resolve())
+    return options, roots

@@ -20,7 +20,6 @@ contact of ``d_max``: its springs, all anchored at ``x = 0``, are the ring (radi
 
 from __future__ import annotations
 
-import math
 from typing import NamedTuple
 
 import numpy as np
@@ -79,15 +78,36 @@ class _Ring(NamedTuple):
     depth: float
 
 
+class _DepthParts(NamedTuple):
+    """The parts of the excess free of the angle at the depths ``depth`` (m): the contact radius ``a`` on the
+    ``Δγ0`` branch and the compression boundary ``x_c`` (``g(x_c) = d``), computed once for many angles."""
+
+    depth: np.ndarray
+    radius: np.ndarray
+    boundary: np.ndarray
+
+
+def _depth_parts(depth: np.ndarray, params: Parameters, profile: PowerLaw) -> _DepthParts:
+    """:class:`_DepthParts` at ``depth`` (array)."""
+    return _DepthParts(depth, np.asarray(power_law.contact_radius(depth, profile, params, params.dgamma0), dtype=float),
+                       np.asarray(power_law.contact_radius(depth, profile, params, 0.0), dtype=float))
+
+
 def _onset_excess(depth, cot, friction: FrictionLaw, params: Parameters, profile: PowerLaw, ring: _Ring) -> np.ndarray:
     """:func:`onset_excess_A` about the ``ring`` (its edge, ``x_c`` and the turn beyond it, where in the contact)."""
     depth, cot = np.broadcast_arrays(np.asarray(depth, dtype=float), np.asarray(cot, dtype=float))
+    return _excess_of(_depth_parts(depth, params, profile), cot, friction, params, profile, ring)
+
+
+def _excess_of(parts: _DepthParts, cot: np.ndarray, friction: FrictionLaw, params: Parameters, profile: PowerLaw,
+               ring: _Ring) -> np.ndarray:
+    """:func:`_onset_excess` from the depths' :class:`_DepthParts` and ``cot α`` (broadcast to their shape)."""
+    depth, radius, boundary = parts
+    cot = np.broadcast_to(cot, depth.shape)
     K, kappa = power_law.cap_per_radius(params), friction.coulomb_mu * params.E_star / params.G_star
-    radius = np.asarray(power_law.contact_radius(depth, profile, params, params.dgamma0), dtype=float)
     jump_in = ring.radius
     g_jump_in = float(_power_law_profile(jump_in, profile))
     best = (depth - ring.depth) * cot - K * radius - kappa * np.maximum(depth - g_jump_in, 0.0)  # the ring's edge
-    boundary = np.asarray(power_law.contact_radius(depth, profile, params, 0.0), dtype=float)  # x_c
     hess = power_law.hess_prefactor(params, params.dgamma0)
     at_boundary = cot * hess * np.sqrt(boundary) - K * radius  # (d − d0(x_c) = Δl0(x_c))
     best = np.where((boundary > jump_in) & (boundary < radius), np.maximum(best, at_boundary), best)
@@ -238,10 +258,15 @@ def critical_angle_A(friction: FrictionLaw, params: Parameters, profile: PowerLa
     float
         ``α_c`` (degrees).
     """
+    # d_crit_A is nan exactly where no grid depth reaches the excess (its refinement only places a found onset): the
+    # angle-free parts of the excess on that grid are computed once, each angle then reads the grid alone
+    jump_in = power_law.jump_in_radius(profile, params, params.dgamma0) if params.dgamma0 > 0 else 0.0
+    parts = _depth_parts((params.d_max * np.arange(1, GRID + 1) / GRID)[None, :], params, profile)
     low, high = 0.0, 90.0
     for _ in range(BISECTIONS):
         middle = 0.5 * (low + high)
-        if math.isnan(float(d_crit_A(np.array([middle]), friction, params, profile)[0])):
+        cot = 1.0 / np.tan(np.radians(np.array([middle], dtype=float)))
+        if not np.any(_excess_of(parts, cot.reshape(-1, 1), friction, params, profile, _Ring(jump_in, 0.0)) >= 0.0):
             high = middle
         else:
             low = middle
