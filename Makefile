@@ -75,6 +75,7 @@ benchmark: $(STAMP)
 	$(BIN)/python benchmarks/bench_phase_diagram.py $(AGAINST_OPTION)
 	$(BIN)/python benchmarks/bench_discrete.py
 	$(BIN)/python benchmarks/bench_simulate.py $(AGAINST_OPTION)
+	$(BIN)/python benchmarks/bench_evaluate.py $(AGAINST_OPTION)
 	$(BIN)/python benchmarks/bench_continuum.py
 	$(BIN)/python benchmarks/bench_validate.py
 	$(BIN)/python benchmarks/bench_fit.py

@@ -14,7 +14,8 @@ import pytest
 BENCHMARKS = Path(__file__).resolve().parent.parent / "benchmarks"
 
 
-@pytest.mark.parametrize("script", ["bench_simulate", "bench_phase_diagram", "bench_coulomb_adhesion"])
+@pytest.mark.parametrize("script", ["bench_simulate", "bench_evaluate", "bench_phase_diagram",
+                                    "bench_coulomb_adhesion"])
 def test_a_side_by_side_benchmark_builds_every_task(script, monkeypatch):
     monkeypatch.syspath_prepend(str(BENCHMARKS))
     module = importlib.import_module(script)

@@ -109,15 +109,16 @@ def _quartic_radii(model: ContinuumModel, members: list[Span], d: np.ndarray, le
     root = np.maximum(depressed_quartic_root(linear, -model.params.R * depth), floor)
     radii = np.where(depth >= jump_off, root * root, np.nan)
     # (a sample at a span's end, to END_ULPS of its depth, takes the iteration's radius: _sampled_radii's rule)
-    ends = inside & ((np.abs(depth - start) <= start_tolerance) | (np.abs(depth - end) <= end_tolerance))
+    ends = np.flatnonzero(inside & ((np.abs(depth - start) <= start_tolerance) |
+                                    (np.abs(depth - end) <= end_tolerance)))
     cube = root**3
-    near = inside & (4.0 * cube + linear < NEAR_FOLD * 4.0 * cube)
+    near = np.flatnonzero(inside & (4.0 * cube + linear < NEAR_FOLD * 4.0 * cube))
+    # (the few samples at an end or near the fold by their indices, in order: the elements a mask picks, in its order)
     for regime, branch in branches:  # (each regime's spans together, as _sampled_radii takes them)
-        mine = which == float(regime is Regime.SHRINKING)
-        at_end = ends & mine
-        near_fold = near & mine
-        if not (near_fold & ~at_end).any():  # (each an end, whose iterated radius replaces it: no iteration to run)
-            near_fold = at_end & False
+        mine = float(regime is Regime.SHRINKING)
+        at_end, near_fold = ends[which[ends] == mine], near[which[near] == mine]
+        if not set(near_fold.tolist()) - set(at_end.tolist()):  # (each an end, whose iterated radius replaces it:
+            near_fold = near_fold[:0]                            # no iteration to run)
         _refine(branch, depth, radii, near_fold, at_end)
     np.copyto(a, radii, where=inside)
     return True
@@ -134,9 +135,9 @@ def _radius_row(branch: Branch, span: Span, is_moving: bool, linears: dict[int, 
 
 
 def _refine(branch: Branch, depth: np.ndarray, radii: np.ndarray, near: np.ndarray, ends: np.ndarray) -> None:
-    """The radii of one branch's samples near its fold and at its spans' ends taken from the iteration
-    (:meth:`~.branch.Branch.near_fold_radii`, :func:`_iterated_radii`), in place."""
-    if near.any():
+    """The radii of one branch's samples near its fold and at its spans' ends (``near``, ``ends``: their indices, in
+    order) taken from the iteration (:meth:`~.branch.Branch.near_fold_radii`, :func:`_iterated_radii`), in place."""
+    if near.size:
         radii[near] = branch.near_fold_radii(depth[near])
-    if ends.any():
+    if ends.size:
         radii[ends] = _iterated_radii(branch, depth[ends])

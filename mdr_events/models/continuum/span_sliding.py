@@ -71,8 +71,9 @@ def span_sliding_lengths(caps, maps: list[AnchorMap], x: np.ndarray, depth: np.n
     owner = np.repeat(np.arange(len(maps)), lengths)
     offsets = np.cumsum([0] + list(lengths[:-1]))
     extents = _extents(maps, radius, owner, offsets)
+    depths: dict[float, float] = {}  # (the attachment branch's depth at each radius read, for both caps)
     totals = [_zone_sizes([m.seen_by(cap, caps.kappa) for m in maps], cap, x - int(cap) * shift, extents, owner,
-                          lengths) for cap in Cap]
+                          offsets, depths) for cap in Cap]
     return sum(totals)  # (as the per-span sum over the caps: 0 + the first + the second)
 
 
@@ -93,49 +94,65 @@ def _extents(maps: list[AnchorMap], radius: np.ndarray, owner: np.ndarray, offse
 
 
 def _zone_sizes(seen: list[AnchorMap], cap: Cap, levels: np.ndarray, extents: list, owner: np.ndarray,
-                lengths: list[int]) -> np.ndarray:
+                offsets: np.ndarray, depths: dict[float, float]) -> np.ndarray:
     """``AnchorMap._zone_sizes`` of every span's map as ``cap`` sees it, at its samples' ``levels``: piece index by
-    piece index, each sample with its own span's piece (its additions in the order of its span's call)."""
+    piece index, each sample with its own span's piece (its additions in the order of its span's call); ``depths``:
+    the attachment branch's depths at the radii read so far (:func:`_piece_value`)."""
     total = np.zeros(levels.shape)
     sign = int(cap)
     reached = sign * levels
+    top = np.maximum.reduceat(reached, offsets)  # (each span's highest level: nan where any is)
+    lists = [list(m.pieces) for m in seen]  # (each map's pieces read once: a snapshot's indexing checks its bounds)
     for k, (ends, length, largest) in enumerate(extents):
-        pieces = [m.pieces[k] if len(m.pieces) > k else None for m in seen]
-        constant = np.array([p is not None and p.constant for p in pieces])
-        if constant.any():
-            value = np.array([sign * p.x0 if p is not None and p.constant else math.nan for p in pieces])
-            np.add(total, length, out=total, where=constant[owner] & (value[owner] <= reached))
+        pieces = [found[k] if len(found) > k else None for found in lists]
+        value = [sign * p.x0 if p is not None and p.constant else math.nan for p in pieces]
+        if any(v == v for v in value):  # (a span without a constant piece k: nan, which no level passes)
+            np.add(total, length, out=total, where=np.array(value)[owner] <= reached)
         growth = [s for s, p in enumerate(pieces) if p is not None and not p.constant]
         if growth:
-            _add_growth(seen, k, growth, sign, levels, reached, (ends, length, largest), owner, lengths, total)
+            _add_growth(seen[growth[0]].attach, [pieces[s] for s in growth], growth, sign, levels, reached,
+                        (ends, length, largest), owner, top, depths, total)
     return total
 
 
-def _add_growth(seen: list[AnchorMap], k: int, growth: list[int], sign: int, levels: np.ndarray, reached: np.ndarray,
-                extent: tuple, owner: np.ndarray, lengths: list[int], total: np.ndarray) -> None:
-    """The growth pieces ``k`` of the spans ``growth`` added to ``total``: their whole length where the level has
-    passed both ends' values, the length to the front where it lies between them."""
+def _piece_value(attach, p, xi: float, depths: dict[float, float]) -> float:
+    """:meth:`~.anchors.AnchorMap.piece_value` of the growth piece ``p`` at ``xi`` (the same expression, the same
+    bits), the attachment branch's depth at ``xi`` kept in ``depths`` by the radius: a run's spans share their pieces'
+    starts and ends, and both caps read them (a zigzag's 76 readings are some 20 radii)."""
+    depth = depths.get(xi)
+    if depth is None:
+        depth = depths[xi] = attach.depth(xi)
+    return p.x0 + p.ratio * (depth - p.d_ref)
+
+
+def _add_growth(attach, grown: list, growth: list[int], sign: int, levels: np.ndarray, reached: np.ndarray,
+                extent: tuple, owner: np.ndarray, top: np.ndarray, depths: dict[float, float],
+                total: np.ndarray) -> None:
+    """The growth pieces ``grown`` (as the cap sees them, on the attachment branch ``attach``) of the spans
+    ``growth`` added to ``total``: their whole length where the level has passed both ends' values, the length to the
+    front where it lies between them; ``top``: each span's highest level (``nan`` where any is), below its piece's
+    lower value nothing is added."""
     ends, length, largest = extent
-    count = len(seen)
+    count = len(largest)
     low, high = np.full(count, math.nan), np.full(count, math.nan)
     numbers = np.full((5, count), math.nan)  # (x0, ratio, d_ref, start, rises) of each span's piece
-    for s in growth:
-        m, p = seen[s], seen[s].pieces[k]
-        first, last = sign * m.piece_value(p, p.start), sign * m.piece_value(p, float(largest[s]))
+    for s, p in zip(growth, grown):
+        first = sign * _piece_value(attach, p, p.start, depths)
+        last = sign * _piece_value(attach, p, float(largest[s]), depths)
         if first == first and last == last:  # (as NumPy's min and max of the two: nan if either is)
             low[s], high[s] = min(first, last), max(first, last)
         numbers[:, s] = (p.x0, p.ratio, p.d_ref, p.start, 1.0 if p.rises_towards(sign) else 0.0)
-    is_growth = np.zeros(count, dtype=bool)
-    is_growth[growth] = True
-    row_growth, row_low, row_high = is_growth[owner], low[owner], high[owner]
-    np.add(total, length, out=total, where=row_growth & (reached >= row_high))
-    inside = row_growth & (reached >= row_low) & (reached < row_high)
-    if not inside.any():
+    if not np.any((top >= low) | np.isnan(top)):  # (no span's level reaches its piece's lower value: nothing to add)
+        return
+    # (a span without a growth piece k has nan values, which no level passes nor lies between)
+    row_low, row_high = low[owner], high[owner]
+    np.add(total, length, out=total, where=reached >= row_high)
+    inside = np.flatnonzero((reached >= row_low) & (reached < row_high))  # (in order: the rows a mask picks)
+    if not inside.size:
         return
     who = owner[inside]
     x0, ratio, d_ref, start, rises = (row[who] for row in numbers)
     depth = d_ref + (levels[inside] - x0) / ratio  # (AnchorMap.inverses, each sample with its span's piece)
-    attach = seen[growth[0]].attach
     groups = np.bincount(who, minlength=count)
     xi = np.concatenate(attach.grouped_sample_radii(cut(depth, [int(n) for n in groups if n])))
     beyond = np.full(depth.shape, attach.knots[-1]) if attach.knots else start

@@ -1,0 +1,81 @@
+"""Benchmark: ``evaluate`` of a continuum solution at ``simulate``'s 2001 samples, alone (issue 28, item 1: what
+``simulate`` adds to its solve; target of round eight: at most 0.6 ms on scenario A at 20° and on the zigzag, 0.35 ms
+on scenario B at 20°).
+
+``bench_simulate.py --parts`` times ``evaluate`` once per repetition among the other parts, a millisecond each: on a
+shared machine one call's figure moves by some 10 %. Here each timing is :data:`CALLS` calls of the same solution's
+``evaluate`` (its steps gathered and its branch's radii kept by the first call, as in ``simulate``'s own), the medians
+of the repetitions, per call.
+
+Paths: scenarios A and B at 20°, the zigzag and the reciprocating path of ``bench_simulate.py``, scenario A at 20°
+with the table.
+
+``--against DIR`` measures a checkout of another commit side by side (``_side_by_side.py``: a worker process each,
+the repetitions alternating) and prints the ratios before / now; ``--cpu`` times in the process's CPU time.
+
+Run: ``python benchmarks/bench_evaluate.py [--repeat N] [--against DIR] [--cpu]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from _side_by_side import clock_name, measure, serve, verdict
+
+#: The paths timed, by their labels in ``bench_simulate.py``.
+PATHS = ("A 20°", "B 20°", "zigzag", "reciprocating", "A 20° table")
+#: Round eight's targets (s per call) where there is one.
+TARGETS = {"A 20°": 0.6e-3, "B 20°": 0.35e-3, "zigzag": 0.6e-3}
+#: Calls of ``evaluate`` per timing.
+CALLS = 20
+
+
+def _tasks() -> dict[str, callable]:
+    """Each path's :data:`CALLS` evaluations at ``simulate``'s samples (imports the checkout's package)."""
+    import bench_simulate
+
+    tasks = {}
+    for label in PATHS:
+        p, path, options, _ = bench_simulate._build(label)
+        evaluate = bench_simulate._part_tasks(label, p, path, options)[f"{label}|evaluate"]
+        evaluate()  # (once unmeasured)
+        tasks[label] = lambda evaluate=evaluate: [evaluate() for _ in range(CALLS)]
+    return tasks
+
+
+def report(name: str, medians: dict[str, float]) -> None:
+    """Print one checkout's figures per call, with their targets."""
+    print(f"  {name}:")
+    for label in PATHS:
+        each = medians[label] / CALLS
+        target = TARGETS.get(label)
+        aim = f" (target <= {target * 1e3:.2f} ms: {verdict(each, target)})" if target else ""
+        print(f"    {label:14s} evaluate {each * 1e3:6.3f} ms{aim}")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=9, help="timings per figure (median; default 9)")
+    parser.add_argument("--against", default=None, metavar="DIR", help="a checkout to measure side by side")
+    parser.add_argument("--cpu", action="store_true", help="CPU time instead of the wall clock")
+    parser.add_argument("--worker", action="store_true", help=argparse.SUPPRESS)
+    options = parser.parse_args()
+    if options.worker:
+        serve(_tasks(), options.cpu)
+        return
+    roots = {"this checkout": str(Path(__file__).resolve().parent.parent)}
+    if options.against:
+        roots[f"--against {options.against}"] = str(Path(options.against).resolve())
+    medians = measure(list(roots.values()), __file__, list(PATHS), options.repeat, options.cpu)
+    print(f"continuum: evaluate at 2001 samples, {CALLS} calls per timing, medians of {options.repeat} "
+          f"({clock_name(options.cpu)}), interleaved, per call")
+    for name, found in zip(roots, medians):
+        report(name, found)
+    if len(medians) == 2:
+        now, before = medians
+        print("  ratio before / now: " + ", ".join(f"{label} {before[label] / now[label]:.2f}x" for label in PATHS))
+
+
+if __name__ == "__main__":
+    main()
