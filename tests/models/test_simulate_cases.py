@@ -453,6 +453,28 @@ def test_results_sharing_a_coordinate_index_keep_their_own_coordinates(params):
     assert second.sel(alpha=30.0)["event_kind"].equals(second.isel(alpha=1)["event_kind"])
 
 
+@pytest.mark.parametrize("method", METHODS)
+def test_results_of_the_same_custom_paths_share_their_labels_index_and_keep_their_own(params, paths, method):
+    """Two runs of the same custom paths share the labels' index values (pandas' index of text, ~0.3 ms a run, made
+    once: issue 28) and nothing else: each result's index and coordinate its own (the labels' NumPy type kept), whose
+    name, attributes and labels a change of the other leaves, nor does a later run of the same paths see it; the
+    shared labels refuse a change (pandas keeps an index's values read-only)."""
+    first, second = (run(params, paths, method) for _ in range(2))
+    assert first.indexes["case"] is not second.indexes["case"] and first["case"].variable is not second["case"].variable
+    assert first.indexes["case"].array is second.indexes["case"].array  # (shared)
+    assert first["case"].dtype == np.dtype("<U9") and list(first["case"].values) == list(paths)
+    with pytest.raises(ValueError, match="read-only"):
+        first.indexes["case"].array[0] = "changed"
+    first.indexes["case"].name = "renamed"
+    first["case"].attrs["units"] = "m"
+    renamed = first.assign_coords(case=["a", "b", "c"])
+    for other in (second, run(params, paths, method)):
+        assert other.indexes["case"].name == "case" and list(other["case"].values) == list(paths)
+        assert other["case"].attrs == {"units": "1", "long_name": "label of the custom path"}
+        assert other.sel(case="fast")["normal_force"].equals(other.isel(case=1)["normal_force"])
+    assert list(renamed["case"].values) == ["a", "b", "c"]
+
+
 def test_an_assembled_dataset_refuses_what_a_merge_would():
     """Sizes that disagree, and a data variable named after a dimension, are refused as xarray's merge refuses them."""
     from mdr_events.io.datasets import assembled
