@@ -45,6 +45,37 @@ def test_an_exact_key_has_no_key_for_what_may_change():
     assert exact_key((table,)) == exact_key((me.TabulatedProfile(r, r**2 / 0.06),)) != exact_key((other,))
 
 
+@dataclasses.dataclass(frozen=True)
+class _Pair:
+    first: float
+    second: float
+
+
+def test_a_frozen_values_key_is_made_once_while_it_lives_and_never_given_to_another(monkeypatch):
+    """A frozen dataclass is keyed once while it lives (its fields walked once: a run's Parameters were walked some six
+    times a simulate, a fifth of its front end; issue 28), the same key as walking its fields; a new value of the same
+    ``id``, once the first is gone, gets its own key, never the first one's."""
+    from mdr_events import memo
+
+    walked = []
+    names = memo._field_names
+    monkeypatch.setattr(memo, "_field_names", lambda kind: walked.append(kind) or names(kind))
+    params = PAPER.replace(tau0=123.0)
+    first = exact_key((params, None))
+    assert exact_key((params, 1.0)) == (first[0], 1.0) and exact_key((params,)) == first[:1]
+    assert walked.count(type(params)) == 1  # (walked once, kept while it lives)
+    assert first == exact_key((PAPER.replace(tau0=123.0), None))  # (another value, walked: the same key)
+    reused = 0
+    for index in range(200):  # (CPython gives a value freed the id of the next one of its size: ids reused)
+        pair = _Pair(index + 1.0, -1.0)
+        identity, key = id(pair), exact_key((pair,))
+        del pair
+        other = _Pair(index + 1.0, 1.0)
+        reused += id(other) == identity
+        assert exact_key((other,)) == ((_Pair, index + 1.0, 1.0),) != key
+    assert reused > 0
+
+
 def test_a_tables_key_is_made_once_whatever_its_points(monkeypatch):
     """A table's key is a digest of its columns made once: a key of 10 000 points reads as few values as one of 3
     (counted: the keys of its parts), the second key digests nothing, and a change of one bit of one point (a zero's
