@@ -40,7 +40,13 @@ def _field_names(kind: type) -> tuple[str, ...] | None:
 
 
 def _exact(value: Any) -> Any:
-    """The key of one value (raises :class:`_Unkeyed` for one without)."""
+    """The key of one value (raises :class:`_Unkeyed` for one without).
+
+    A frozen dataclass's key is made once while it lives and kept by its ``id`` (:data:`_KEYS`, :func:`_keep_key`).
+    This assumes a frozen dataclass is never changed (``object.__setattr__``) after it is first keyed: every such
+    write in the package is made while the value is built, in its ``__post_init__`` or on a value just made by
+    ``object.__new__`` (``Paths.named_by``), before anything keys it (``tests/test_memo.py`` checks where they are).
+    A value changed so after it was keyed would keep its old key and be taken for the value it was."""
     kind = type(value)
     if kind is float:  # (as it is: every other kind's key is a tuple or None; a zero by its sign)
         return value if value else (kind, repr(value))
