@@ -181,14 +181,19 @@ def _writes_to_frozen_values() -> list[tuple[str, int, str, str]]:
     package = pathlib.Path(me.__file__).parent
     writes = []
     for path in sorted(package.rglob("*.py")):
-        for function in ast.walk(ast.parse(path.read_text())):
+        text = path.read_text()
+        if "object.__setattr__" not in text:  # (a cheap filter: the walk below reads what it finds)
+            continue
+        for function in ast.walk(ast.parse(text)):
             if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 continue
             made = {target.id for node in ast.walk(function) if isinstance(node, ast.Assign)
                     and ast.unparse(node.value).startswith("object.__new__(") for target in node.targets
                     if isinstance(target, ast.Name)}
             for call in ast.walk(function):
-                if isinstance(call, ast.Call) and ast.unparse(call.func) == "object.__setattr__" and call.args:
+                func = getattr(call, "func", None)
+                if (isinstance(call, ast.Call) and isinstance(func, ast.Attribute) and func.attr == "__setattr__"
+                        and isinstance(func.value, ast.Name) and func.value.id == "object" and call.args):
                     target = ast.unparse(call.args[0])
                     where = "new" if target in made else function.name
                     writes.append((str(path.relative_to(package)), call.lineno, where, target))
