@@ -13,16 +13,31 @@ import statistics
 import subprocess
 import sys
 import time
+from typing import Callable
+
+
+class Staged:
+    """A task timed after an untimed preparation: ``run(*prepare())``, only ``run`` timed by :func:`serve` (e.g. a
+    part of a pipeline timed on what the step before it has just made, with the caches as that step leaves them).
+    Called, it does both."""
+
+    def __init__(self, prepare: Callable[[], tuple], run: Callable[..., object]) -> None:
+        self.prepare, self.run = prepare, run
+
+    def __call__(self) -> object:
+        return self.run(*self.prepare())
 
 
 def serve(tasks: dict[str, callable], cpu: bool = False) -> None:
     """Time the tasks named on standard input, one per line, printing each time (s): wall clock, or the process's CPU
-    time with ``cpu``."""
+    time with ``cpu``; of a :class:`Staged` task its ``run`` alone, after its ``prepare``."""
     clock = time.process_time if cpu else time.perf_counter
     print("ready", flush=True)
     for line in sys.stdin:
+        task = tasks[line.strip()]
+        arguments, task = (task.prepare(), task.run) if isinstance(task, Staged) else ((), task)
         start = clock()
-        tasks[line.strip()]()
+        task(*arguments)
         print(clock() - start, flush=True)
 
 

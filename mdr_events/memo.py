@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import weakref
 from typing import Any, Callable, TypeVar
 
 __all__ = ["exact_key", "kept"]
@@ -39,7 +40,13 @@ def _field_names(kind: type) -> tuple[str, ...] | None:
 
 
 def _exact(value: Any) -> Any:
-    """The key of one value (raises :class:`_Unkeyed` for one without)."""
+    """The key of one value (raises :class:`_Unkeyed` for one without).
+
+    A frozen dataclass's key is made once while it lives and kept by its ``id`` (:data:`_KEYS`, :func:`_keep_key`).
+    This assumes a frozen dataclass is never changed (``object.__setattr__``) after it is first keyed: every such
+    write in the package is made while the value is built, in its ``__post_init__`` or on a value just made by
+    ``object.__new__`` (``Paths.named_by``), before anything keys it (``tests/test_memo.py`` checks where they are).
+    A value changed so after it was keyed would keep its old key and be taken for the value it was."""
     kind = type(value)
     if kind is float:  # (as it is: every other kind's key is a tuple or None; a zero by its sign)
         return value if value else (kind, repr(value))
@@ -51,11 +58,34 @@ def _exact(value: Any) -> Any:
         return tuple(map(_exact, value))
     params = getattr(kind, "__dataclass_params__", None)
     if params is not None and params.frozen:
+        held = _KEYS.get(id(value))
+        if held is not None and held[0]() is value:
+            return held[1]
         names = _field_names(kind)
-        if names is None:
-            return kind, value._memo_key
-        return (kind, *(_exact(getattr(value, name)) for name in names))
+        key = (kind, value._memo_key) if names is None else (kind, *(_exact(getattr(value, name)) for name in names))
+        _keep_key(value, key)
+        return key
     raise _Unkeyed
+
+
+#: The key of each frozen dataclass :func:`_exact` has met and that is alive, by its ``id`` (with a weak reference to
+#: it, which tells a live value from a new one of the same ``id``): a run's Parameters and laws are keyed some six
+#: times (a walk over a dozen fields each, a fifth of simulate's front end; issue 28), their values never change.
+_KEYS: dict[int, tuple[weakref.ref, tuple]] = {}
+
+
+def _keep_key(value: Any, key: tuple) -> None:
+    """Keep ``key`` as the key of ``value`` while it lives (a value that takes no weak reference is keyed each time)."""
+    identity = id(value)
+
+    def forget(reference: weakref.ref) -> None:
+        if _KEYS.get(identity, (None,))[0] is reference:  # (not a new value's of the same id)
+            _KEYS.pop(identity, None)
+
+    try:
+        _KEYS[identity] = (weakref.ref(value, forget), key)
+    except TypeError:  # (a dataclass of slots without a weak reference's)
+        pass
 
 
 def exact_key(values: tuple) -> tuple | None:

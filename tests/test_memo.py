@@ -4,7 +4,9 @@ them (the check of the scales, the scenarios' paths; issue 28)."""
 from __future__ import annotations
 
 import dataclasses
+import gc
 import hashlib
+import weakref
 
 import numpy as np
 import pytest
@@ -43,6 +45,64 @@ def test_an_exact_key_has_no_key_for_what_may_change():
     r = np.linspace(0.0, 4e-3, 41)
     table, other = me.TabulatedProfile(r, r**2 / 0.06), me.TabulatedProfile(r, r**2 / 0.0600000001)
     assert exact_key((table,)) == exact_key((me.TabulatedProfile(r, r**2 / 0.06),)) != exact_key((other,))
+
+
+@dataclasses.dataclass(frozen=True)
+class _Pair:
+    first: float
+    second: float
+
+
+def test_a_frozen_values_key_is_made_once_while_it_lives_and_never_given_to_another(monkeypatch):
+    """A frozen dataclass is keyed once while it lives (its fields walked once: a run's Parameters were walked some six
+    times a simulate, a fifth of its front end; issue 28), the same key as walking its fields; a key kept under the
+    ``id`` of a value that is gone (its weak reference dead, or another value's) is never given to the value that has
+    that ``id`` now, and its entry dies with its value."""
+    from mdr_events import memo
+
+    walked = []
+    names = memo._field_names
+    monkeypatch.setattr(memo, "_field_names", lambda kind: walked.append(kind) or names(kind))
+    params = PAPER.replace(tau0=123.0)
+    first = exact_key((params, None))
+    assert exact_key((params, 1.0)) == (first[0], 1.0) and exact_key((params,)) == first[:1]
+    assert walked.count(type(params)) == 1  # (walked once, kept while it lives)
+    assert first == exact_key((PAPER.replace(tau0=123.0), None))  # (another value, walked: the same key)
+    gone, kept_alive = _Pair(1.0, -1.0), _Pair(2.0, -1.0)
+    dead = weakref.ref(gone)
+    del gone
+    gc.collect()
+    assert dead() is None
+    for stale in (dead, weakref.ref(kept_alive)):  # (a key left under the id the new value has: forced, no allocator)
+        other = _Pair(1.0, 1.0)
+        monkeypatch.setitem(memo._KEYS, id(other), (stale, ((_Pair, 1.0, -1.0),)))
+        assert exact_key((other,)) == ((_Pair, 1.0, 1.0),)
+        assert memo._KEYS[id(other)][0]() is other  # (its own key kept in its place)
+        identity = id(other)
+        del other
+        gc.collect()
+        assert identity not in memo._KEYS  # (the entry dies with its value)
+
+
+#: How many values are made and freed, at most, for one to be given the ``id`` of one freed before it.
+ID_REUSE_TRIES = 1000
+
+
+def test_a_new_value_given_a_freed_values_id_gets_its_own_key():
+    """The allocator's own reuse of an ``id`` (CPython gives a freed value's memory to the next value of its size):
+    values are made and freed until one is given the ``id`` of the one freed before it (at most
+    :data:`ID_REUSE_TRIES`); it gets its own key, never the freed one's. An allocator that never reuses an ``id`` in
+    as many tries (``PYTHONMALLOC=malloc``, a debug or free-threaded build may not) leaves nothing to check: skipped."""
+    for index in range(ID_REUSE_TRIES):
+        pair = _Pair(index + 1.0, -1.0)
+        identity, key = id(pair), exact_key((pair,))
+        del pair
+        other = _Pair(index + 1.0, 1.0)
+        assert exact_key((other,)) == ((_Pair, index + 1.0, 1.0),) != key
+        if id(other) == identity:
+            break
+    else:
+        pytest.skip(f"no id of a freed value was given to a new one in {ID_REUSE_TRIES} tries: nothing to check")
 
 
 def test_a_tables_key_is_made_once_whatever_its_points(monkeypatch):
@@ -111,3 +171,41 @@ def test_a_refused_scale_is_refused_every_time():
             scales.check_representable(huge)
         messages.append(str(error.value))
     assert messages[0] == messages[1]
+
+
+def _writes_to_frozen_values() -> list[tuple[str, int, str, str]]:
+    """Each ``object.__setattr__(target, ...)`` in the package: its file, line, function and target."""
+    import ast
+    import pathlib
+
+    package = pathlib.Path(me.__file__).parent
+    writes = []
+    for path in sorted(package.rglob("*.py")):
+        text = path.read_text()
+        if "object.__setattr__" not in text:  # (a cheap filter: the walk below reads what it finds)
+            continue
+        for function in ast.walk(ast.parse(text)):
+            if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                continue
+            made = {target.id for node in ast.walk(function) if isinstance(node, ast.Assign)
+                    and ast.unparse(node.value).startswith("object.__new__(") for target in node.targets
+                    if isinstance(target, ast.Name)}
+            for call in ast.walk(function):
+                func = getattr(call, "func", None)
+                if (isinstance(call, ast.Call) and isinstance(func, ast.Attribute) and func.attr == "__setattr__"
+                        and isinstance(func.value, ast.Name) and func.value.id == "object" and call.args):
+                    target = ast.unparse(call.args[0])
+                    where = "new" if target in made else function.name
+                    writes.append((str(path.relative_to(package)), call.lineno, where, target))
+    return writes
+
+
+def test_frozen_values_are_written_only_while_they_are_made():
+    """memo keeps a frozen dataclass's key by its ``id`` while it lives (``_exact``): a value changed after it was
+    first keyed would keep its old key. Every ``object.__setattr__`` in the package writes ``self`` in a
+    ``__post_init__`` or ``__init__``, or a value its function has just made with ``object.__new__``."""
+    writes = _writes_to_frozen_values()
+    assert writes  # (the walk finds them: some thirty-nine today)
+    late = [write for write in writes if not (write[2] == "new" or (write[2] in ("__post_init__", "__init__")
+                                                                    and write[3] == "self"))]
+    assert late == []

@@ -41,8 +41,10 @@ REFERENCE = (
 PROGRAM = "mdr_events"
 #: The kinds of NumPy array (``dtype.kind``) whose default index :func:`_default_index` makes at once: real numbers.
 NUMERIC_KINDS = "fiu"
-#: The most numbers a coordinate may hold for results of the same values to share its index
-#: (:func:`_shared_coordinate`: an event log's numbers, a run's angles).
+#: The kind of NumPy array (``dtype.kind``) of text whose index results of the same texts share: custom paths' labels.
+TEXT_KIND = "U"
+#: The most numbers or texts a coordinate may hold for results of the same values to share its index
+#: (:func:`_shared_coordinate`: an event log's numbers, a run's angles, custom paths' labels).
 SHARED_INDEX_SIZE = 256
 #: How many such coordinates are kept.
 SHARED_INDEXES = 64
@@ -169,11 +171,18 @@ def _coordinates(coords: Mapping[str, tuple]) -> tuple[dict[str, xr.Variable], d
     variable; one of at most :data:`SHARED_INDEX_SIZE` numbers a ``pandas.Index.view`` of the last results' of the
     same values (:func:`_shared_coordinate`): its own index and variable (a name or attribute set on one is the
     other's no more), the read-only values shared; one of more numbers (a run's times) the ``pandas.Index`` of its
-    values, wrapped at once in its index and variable (what ``PandasIndex.create_variables`` makes of it); any other
-    is a plain variable."""
+    values, wrapped at once in its index and variable (what ``PandasIndex.create_variables`` makes of it); one of at
+    most :data:`SHARED_INDEX_SIZE` texts (custom paths' labels, ``"path 1"``, ...) a view of the last results' index of
+    the same texts too, its variable made by the index's ``create_variables`` (as of a new index: the text's NumPy
+    type kept; pandas' index of text took ~0.3 ms, as long as the rest of a dataset); any other is a plain variable."""
     variables, indexes = {}, {}
     for name, (dims, values, attrs) in coords.items():
-        if type(dims) in (str, tuple) and dims in (name, (name,)) and _numbers(values) and values.ndim == 1:
+        own = type(dims) in (str, tuple) and dims in (name, (name,)) and type(values) is np.ndarray and values.ndim == 1
+        if own and values.dtype.kind == TEXT_KIND and values.size <= SHARED_INDEX_SIZE:  # (custom paths' labels)
+            shared = _shared_coordinate(name, values.dtype.str, values.tobytes()).index
+            index = indexes[name] = PandasIndex(shared.view(), name, coord_dtype=values.dtype, fastpath=True)
+            variable = index.create_variables({name: _variable(dims, values, attrs)})[name]
+        elif own and _numbers(values):
             if values.size <= SHARED_INDEX_SIZE:
                 shared = _shared_coordinate(name, values.dtype.str, values.tobytes()).index
                 view = shared.view()  # (its own pandas.Index, named apart; the values and their lookup table shared)
@@ -209,9 +218,10 @@ def _default_index(name: str, variable: xr.Variable) -> PandasIndex:
 
 @functools.lru_cache(maxsize=SHARED_INDEXES)
 def _shared_coordinate(name: str, dtype: str, data: bytes) -> PandasIndex:
-    """The default index of the coordinate ``name`` of the numbers ``data`` (their bytes, of type ``dtype``, read-only),
-    made once for the last :data:`SHARED_INDEXES` coordinates (an event log's numbers, a run's angles). Never handed
-    out: a ``pandas.Index`` takes a new name in place, so that each result gets a view of it (:func:`_coordinates`)."""
+    """The default index of the coordinate ``name`` of the numbers or texts ``data`` (their bytes, of type ``dtype``,
+    read-only), made once for the last :data:`SHARED_INDEXES` coordinates (an event log's numbers, a run's angles,
+    custom paths' labels). Never handed out: a ``pandas.Index`` takes a new name in place, so that each result gets a
+    view of it (:func:`_coordinates`)."""
     return _default_index(name, xr.Variable((name,), np.frombuffer(data, dtype=np.dtype(dtype))))
 
 

@@ -399,4 +399,5 @@ class Path:
         str
             ``"(x0, d0); (x1, d1); ..."`` in m, to 9 significant digits.
         """
-        return "; ".join(f"({x:.9g}, {d:.9g})" for x, d in self.waypoints)
+        # (Python's floats: the same digits as NumPy's, formatted a third as long: ~20 us of a custom run's dataset)
+        return "; ".join(f"({x:.9g}, {d:.9g})" for x, d in self.waypoints.tolist())

@@ -284,3 +284,15 @@ def test_small_angles_run_and_slip_onset_is_eq_18(paper, alpha):
     integrated = evaluate(solution, times)["tangential_force"]
     np.testing.assert_allclose(integrated, algebraic_tangential_force(solution, times), rtol=0,
                                atol=EXACT * np.nanmax(np.abs(integrated)))
+
+
+def test_a_paths_description_is_its_numpy_waypoints_to_nine_digits():
+    """Path.describe formats Python floats (issue 28: a third of the time): the text NumPy's floats give, digit for
+    digit, sign and exponent, waypoints of every scale."""
+    rng = np.random.default_rng(28)
+    points = rng.uniform(-1.0, 1.0, (40, 2)) * 10.0 ** rng.integers(-12, 3, (40, 2))
+    points[0] = (0.0, 0.0)
+    points[1] = (-0.0, 1.0 / 3.0)
+    path = Path(points, 0.01)
+    assert path.describe() == "; ".join(f"({x:.9g}, {d:.9g})" for x, d in path.waypoints)
+    assert path.describe().startswith("(0, 0); (-0, 0.333333333); (")

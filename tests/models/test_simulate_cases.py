@@ -453,6 +453,93 @@ def test_results_sharing_a_coordinate_index_keep_their_own_coordinates(params):
     assert second.sel(alpha=30.0)["event_kind"].equals(second.isel(alpha=1)["event_kind"])
 
 
+@pytest.mark.parametrize("method", METHODS)
+def test_results_of_the_same_custom_paths_share_their_labels_index_and_keep_their_own(params, paths, method):
+    """Two runs of the same custom paths share the labels' index values (pandas' index of text, ~0.3 ms a run, made
+    once: issue 28) and nothing else: each result's index and coordinate its own (the labels' NumPy type kept), whose
+    name, attributes and labels a change of the other leaves, nor does a later run of the same paths see it; the
+    shared labels refuse a change (pandas keeps an index's values read-only)."""
+    first, second = (run(params, paths, method) for _ in range(2))
+    assert first.indexes["case"] is not second.indexes["case"] and first["case"].variable is not second["case"].variable
+    assert first.indexes["case"].array is second.indexes["case"].array  # (shared)
+    assert first["case"].dtype == np.dtype("<U9") and list(first["case"].values) == list(paths)
+    with pytest.raises(ValueError, match="read-only"):
+        first.indexes["case"].array[0] = "changed"
+    first.indexes["case"].name = "renamed"
+    first["case"].attrs["units"] = "m"
+    renamed = first.assign_coords(case=["a", "b", "c"])
+    for other in (second, run(params, paths, method)):
+        assert other.indexes["case"].name == "case" and list(other["case"].values) == list(paths)
+        assert other["case"].attrs == {"units": "1", "long_name": "label of the custom path"}
+        assert other.sel(case="fast")["normal_force"].equals(other.isel(case=1)["normal_force"])
+    assert list(renamed["case"].values) == ["a", "b", "c"]
+
+
+def _bytes(dataset: xr.Dataset, path) -> tuple[bytes, bytes]:
+    """The bytes of ``dataset.to_netcdf()`` and of the file :func:`write_netcdf` writes of it at ``path``."""
+    return bytes(dataset.to_netcdf()), write_netcdf(dataset, path).read_bytes()
+
+
+def _assert_bit_for_bit(result: xr.Dataset, reference: xr.Dataset) -> None:
+    """``result`` is ``reference``: identical (values, dims, attributes, types) with the same indexes (class, pandas
+    type, name, type of their values) and encodings."""
+    assert result.identical(reference)
+    xr.testing.assert_identical(result, reference)
+    assert {name: variable.dtype for name, variable in result.variables.items()} == \
+        {name: variable.dtype for name, variable in reference.variables.items()}
+    assert list(result.xindexes) == list(reference.xindexes)
+    for dim, index in reference.xindexes.items():
+        made = result.xindexes[dim]
+        assert (type(made), made.dim, made.coord_dtype, type(made.index), made.index.dtype, made.index.name) == \
+            (type(index), index.dim, index.coord_dtype, type(index.index), index.index.dtype, index.index.name)
+        assert made.index.equals(index.index) and result[dim].encoding == reference[dim].encoding
+
+
+@pytest.mark.parametrize("method", METHODS)
+@pytest.mark.parametrize("motion", ["scenario", "custom"])
+def test_a_result_on_a_shared_index_is_the_one_on_a_fresh_index_bit_for_bit(params, paths, method, motion,
+                                                                             monkeypatch, tmp_path):
+    """Results whose angles, events' numbers or custom paths' labels (text) take a view of a shared index (issue 28)
+    are, bit for bit (``identical``, their indexes, the bytes of ``to_netcdf()`` and of write_netcdf), the result made
+    on a fresh index (the shared indexes cleared) and the one xarray's merge makes (no index shared), whatever ran in
+    between: runs of other labels or angles (other shared indexes, the same names) and of the same ones. The labels
+    keep the NumPy type of their texts."""
+    from mdr_events.io import datasets
+    from mdr_events.models import simulation_schema
+
+    listed = list(paths.values())
+    if motion == "scenario":
+        inputs = {"mine": ("B", dict(alpha=[20.0, 60.0, 30.0])), "other": ("B", dict(alpha=[20.0, 60.0]))}
+    else:  # (the same paths under other labels: texts of another NumPy type, then of the same type)
+        inputs = {"mine": (paths, {}), "other": (listed[:2], {}), "relabelled": (dict(zip("xyz", listed)), {})}
+
+    def simulated(key):
+        scenario, options = inputs[key]
+        return run(params, scenario, method, **options)
+
+    fresh = {}
+    for key in inputs:  # (each on a fresh index: made by this run)
+        datasets._shared_coordinate.cache_clear()
+        fresh[key] = simulated(key)
+    with monkeypatch.context() as patched:  # (no index shared: xarray's merge)
+        patched.setattr(simulation_schema, "assembled", lambda data, coords: xr.Dataset(data, coords=coords))
+        merged = {key: simulated(key) for key in inputs}
+    written = {}
+    for key, (scenario, _) in inputs.items():
+        _assert_bit_for_bit(fresh[key], merged[key])
+        written[key] = _bytes(fresh[key], tmp_path / f"{key}_fresh.nc")
+        assert _bytes(merged[key], tmp_path / f"{key}_merged.nc") == written[key]
+        if motion == "custom":
+            labels = list(scenario) if isinstance(scenario, Mapping) else [f"path {i}" for i in (1, 2)]
+            assert fresh[key]["case"].dtype == np.asarray(labels).dtype and list(fresh[key]["case"].values) == labels
+    order = [*inputs, *inputs, *reversed(inputs)]  # (each warm, after the others and after itself)
+    for step, key in enumerate(order):
+        hits = datasets._shared_coordinate.cache_info().hits
+        warm = simulated(key)
+        assert step < len(inputs) or datasets._shared_coordinate.cache_info().hits > hits  # (on a shared index)
+        _assert_bit_for_bit(warm, fresh[key])
+        assert _bytes(warm, tmp_path / f"{key}_{step}.nc") == written[key]
+
 def test_an_assembled_dataset_refuses_what_a_merge_would():
     """Sizes that disagree, and a data variable named after a dimension, are refused as xarray's merge refuses them."""
     from mdr_events.io.datasets import assembled
