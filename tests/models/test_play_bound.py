@@ -208,6 +208,49 @@ def test_the_run_is_the_route_of_before_at_every_output(adhesive, motion, monkey
     assert sum(read[True]) < sum(read[False])
 
 
+def counted_probes(monkeypatch) -> list[int]:
+    """The springs :func:`~mdr_events.models.continuum.play_bound._probes_least` reads, one entry a call."""
+    counted, least = [], play_bound._probes_least
+
+    def counting(play, radii, shares):
+        counted.append(np.size(radii) * np.size(shares))
+        return least(play, radii, shares)
+
+    monkeypatch.setattr(play_bound, "_probes_least", counting)
+    return counted
+
+
+@pytest.mark.parametrize("springs", ["layer", "dipped"])
+def test_the_ratio_s_floor_decides_as_the_probes_do(springs, layer_play, monkeypatch):
+    """The layer's floor of ``μρ`` from its tables' coefficients (``play_bound.RATIO_FLOOR``, a bound at or below the
+    probes' own least value) passes the same times as the probes' reading along the first segment, and on the layer
+    settles every one of them: no probe's ``μρ`` is read. A line whose ratio is replaced (the dipped springs) has no
+    floor and reads the probes as before."""
+    play = layer_play if springs == "layer" else dipped(layer_play)
+    times = first_segment_times(play)
+    counted = counted_probes(monkeypatch)
+    monkeypatch.setattr(play_bound, "RATIO_FLOOR", False)
+    before, read_before = sticking(play, times, PROBES), sum(counted)
+    monkeypatch.setattr(play_bound, "RATIO_FLOOR", True)
+    counted.clear()
+    assert np.array_equal(sticking(play, times, PROBES), before)
+    assert read_before > 0
+    assert sum(counted) == (0 if springs == "layer" else read_before)
+
+
+def test_the_run_with_the_ratio_s_floor_is_the_route_of_before(monkeypatch):
+    """The whole run along A at 20° (``τ0`` and Coulomb, the bound's row) with the floor against without: the same at
+    every output, bit for bit, and no probe's ``μρ`` read with it."""
+    counted, runs = counted_probes(monkeypatch), {}
+    for on in (False, True):
+        monkeypatch.setattr(play_bound, "RATIO_FLOOR", on)
+        counted.clear()
+        runs[on] = me.simulate(contact_of("tau0+coulomb"), me.Scenario("A", alpha=[20.0]), "continuum",
+                               samples=SAMPLES)
+        assert (sum(counted) == 0) == on
+    assert runs[True].identical(runs[False])
+
+
 # -- the probes of a part where every window is fixed but for x, read in one evaluation (play_probes.SHARED_PROBES) --
 
 def fretting() -> me.Paths:

@@ -20,7 +20,11 @@ at or below them, the springs' ratios on a grid of :data:`BOUND_GRID` radii, the
 itself; less :data:`BOUND_MARGIN`), so the inequality holds for each probe exactly; ``μρ ≥ 0`` (``μ ≥ 0``), so where
 ``|ẋ| (t − t_c)`` alone passes ``μρ`` is not read. Between the probes the grid is an estimate, not a bound: a dip of
 ``μρ`` narrower than its spacing may let a spring there slide unseen, as the probes themselves would miss it; the
-skip is the probes' route, not more. With adhesion (:class:`~.play_history.SpanHistory`:
+skip is the probes' route, not more. On a layer ``μρ`` at the probes is first bounded from below without reading
+them (:data:`RATIO_FLOOR`: the floor of :class:`~.play_line.FlooredRatio` over ``[0, a(t)]``, from the tables'
+B-spline coefficients, a bound at or below every probe's value): a time that passes with it passes with the probes'
+own least value too, so the probes' ``μρ`` is read only where it does not (along scenario A at 20° on the paper's
+layer, nowhere). With adhesion (:class:`~.play_history.SpanHistory`:
 springs jump in, some in tension, Coulomb's part off) ``c ≥ ū(a)`` alone and ``β = |ẋ|``. A time passes where
 ``β (t − t_c)`` plus the anchors' round-off (:data:`BOUND_ROUND_OFF` of the path's largest ``|x|`` and ``d``) lies
 below ``ū(a(t))`` less :data:`BOUND_MARGIN`: then no probe is at a cap, and reading them would find none. Under
@@ -39,8 +43,9 @@ from __future__ import annotations
 import numpy as np
 
 from .play_history import DepthHistory, SpanHistory
+from .play_line import FlooredRatio
 
-__all__ = ["sticking", "BOUND_MARGIN", "BOUND_ROUND_OFF", "BOUND_GRID"]
+__all__ = ["sticking", "BOUND_MARGIN", "BOUND_ROUND_OFF", "BOUND_GRID", "RATIO_FLOOR"]
 
 #: The share by which the bound's lower bounds (``ū`` and ``μρ``) are lowered: a probe within this share of its cap
 #: is read as before (the anchors' and the cap's table's round-off, some ulps, far below it).
@@ -50,6 +55,11 @@ BOUND_MARGIN = 1e-6
 BOUND_ROUND_OFF = 1e-9
 #: Points of the grid of radii on which ``μρ``'s least value is estimated first (the probes are read where it passes).
 BOUND_GRID = 1025
+#: Whether a layer's floor of ``μρ`` over ``[0, a]`` from its tables' B-spline coefficients
+#: (:class:`~.play_line.FlooredRatio`, a bound, not an estimate: at or below ``μρ`` at every probe) is tried before
+#: ``μρ`` is read at the probes (``False``: read at the probes wherever the grid passes, the route of before; a time
+#: the floor passes passes with the probes' own least value too, so the decisions are the same).
+RATIO_FLOOR = True
 
 
 def sticking(play, times: np.ndarray, shares: np.ndarray) -> np.ndarray:
@@ -95,6 +105,11 @@ def sticking(play, times: np.ndarray, shares: np.ndarray) -> np.ndarray:
         floor = _ratio_floor(play, radii)
         kept = passes(np.maximum(abs(x_speed) - floor * d_speed, 0.0), rows)  # (the probes read where this passes)
         rows, radii, floor = rows[kept], radii[kept], floor[kept]
+        if RATIO_FLOOR and isinstance(play.line.ratio, FlooredRatio) and rows.size:  # (a floor over [0, a], at or
+            bounded = np.minimum(floor, (1.0 - BOUND_MARGIN) * play.line.ratio.floor(radii))  # below the probes')
+            settled = passes(np.maximum(abs(x_speed) - bounded * d_speed, 0.0), rows)
+            passed[rows[settled]] = True
+            rows, radii, floor = rows[~settled], radii[~settled], floor[~settled]
         floor = np.minimum(floor, (1.0 - BOUND_MARGIN) * _probes_least(play, radii, shares))
         passed[rows] = passes(np.maximum(abs(x_speed) - floor * d_speed, 0.0), rows)
     out[inside] = passed

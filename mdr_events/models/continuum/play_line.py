@@ -16,7 +16,7 @@ from mdr_events.contact.indenters import indenter_kind
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.parameters import Parameters
 
-__all__ = ["SpringLine", "spring_line"]
+__all__ = ["SpringLine", "spring_line", "FlooredRatio"]
 
 
 class SpringLine(NamedTuple):
@@ -125,7 +125,26 @@ def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: L
         return np.stack([profile, tangential / G_star, ratio])
 
     springs = _remembered(_once_a_block(springs))  # (the three as the rows of one array)
-    return (lambda xi: springs(xi)[0]), (lambda xi: springs(xi)[1]), (lambda xi: springs(xi)[2])
+    return ((lambda xi: springs(xi)[0]), (lambda xi: springs(xi)[1]),
+            FlooredRatio(lambda xi: springs(xi)[2], lambda extent: mu * factors.ratio_floor(extent)))
+
+
+class FlooredRatio(NamedTuple):
+    """Coulomb's cap per compression ``μ k/k_t`` of a layer's springs (called as :attr:`SpringLine.ratio` is) with a
+    lower bound of it over ``[0, X]`` that reads no spring (:meth:`floor`: ``μ`` times
+    :meth:`~mdr_events.theory.layer.spring_factors.SpringFactors.ratio_floor`, the tables' B-spline coefficients;
+    :mod:`.play_bound` tries it before reading the probes). A line whose ratio is replaced (``_replace(ratio=...)``)
+    has no floor."""
+
+    #: ``μ k(ξ)/k_t(ξ)`` at the springs' coordinates
+    ratio: Callable[[np.ndarray], np.ndarray]
+    #: a lower bound of it over ``0 <= ξ <= X`` at each extent ``X`` (m), at or below every value :attr:`ratio` gives
+    #: there
+    floor: Callable[[np.ndarray], np.ndarray]
+
+    def __call__(self, xi) -> np.ndarray:
+        """:attr:`ratio` at ``xi``."""
+        return self.ratio(xi)
 
 
 def _once_a_block(function: Callable[[np.ndarray], np.ndarray]) -> Callable[[np.ndarray], np.ndarray]:
