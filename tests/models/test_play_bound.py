@@ -24,6 +24,7 @@ import pytest
 import mdr_events as me
 from mdr_events.models.continuum import play_bound, play_probes, play_samples
 from mdr_events.models.continuum.play_bound import BOUND_GRID, _first_segment, sticking
+from mdr_events.models.continuum.play_line import FlooredRatio
 from mdr_events.models.continuum.play_reach import constant_part
 from mdr_events.models.continuum.play_springs import PlaySprings
 from play_recorders import made_plays
@@ -42,6 +43,8 @@ DIP = (0.95, 0.15, 0.04)
 #: at some 0.85) and its width (a share of the bound's grid spacing: at a quarter spacing or more from its centre its
 #: ``exp(−(δ/w)²)`` is below 1e-270, so the grid reads the layer's ratios bit for bit).
 NARROW = (0.7, 0.01)
+#: The share to which :func:`loosely_floored` lowers the layer's floor of ``μρ``.
+LOOSE = 0.9
 #: The probes among which the narrow dip's centre is chosen (within 4 % of the radius of the centre: attached near the
 #: first contact, so that with ``μρ = 0`` it slides before the layer's onset).
 NEAR_CENTRE = 40
@@ -208,40 +211,58 @@ def test_the_run_is_the_route_of_before_at_every_output(adhesive, motion, monkey
     assert sum(read[True]) < sum(read[False])
 
 
-def counted_probes(monkeypatch) -> list[int]:
-    """The springs :func:`~mdr_events.models.continuum.play_bound._probes_least` reads, one entry a call."""
-    counted, least = [], play_bound._probes_least
+def counted_ratios(monkeypatch) -> list[int]:
+    """The springs whose ``μρ`` the bound reads (:func:`~mdr_events.models.continuum.play_bound._ratio_floor`'s grid
+    and radii, :func:`~mdr_events.models.continuum.play_bound._probes_least`'s probes), one entry a call."""
+    counted, grid, least = [], play_bound._ratio_floor, play_bound._probes_least
 
-    def counting(play, radii, shares):
+    def counting_grid(play, radii, top):
+        counted.append(BOUND_GRID + np.size(radii))
+        return grid(play, radii, top)
+
+    def counting_probes(play, radii, shares):
         counted.append(np.size(radii) * np.size(shares))
         return least(play, radii, shares)
 
-    monkeypatch.setattr(play_bound, "_probes_least", counting)
+    monkeypatch.setattr(play_bound, "_ratio_floor", counting_grid)
+    monkeypatch.setattr(play_bound, "_probes_least", counting_probes)
     return counted
 
 
-@pytest.mark.parametrize("springs", ["layer", "dipped"])
+def loosely_floored(play: PlaySprings) -> PlaySprings:
+    """The same springs with their floor of ``μρ`` lowered by :data:`LOOSE` (still a floor): the times near the onset
+    it no longer settles, which the grid and the probes decide (those it fails with the centre's ``μρ`` dropped
+    unread)."""
+    ratio = play.line.ratio
+    return PlaySprings(play.line._replace(ratio=FlooredRatio(ratio.ratio, lambda extent: LOOSE * ratio.floor(extent))),
+                       play.path)
+
+
+@pytest.mark.parametrize("springs", ["layer", "dipped", "loose"])
 def test_the_ratio_s_floor_decides_as_the_probes_do(springs, layer_play, monkeypatch):
     """The layer's floor of ``μρ`` from its tables' coefficients (``play_bound.RATIO_FLOOR``, a bound at or below the
-    probes' own least value) passes the same times as the probes' reading along the first segment, and on the layer
-    settles every one of them: no probe's ``μρ`` is read. A line whose ratio is replaced (the dipped springs) has no
-    floor and reads the probes as before."""
-    play = layer_play if springs == "layer" else dipped(layer_play)
+    probes' own least value and the grid's) passes the same times as the grid's and the probes' reading along the
+    first segment, and on the layer settles every one of them: neither is read. A line whose ratio is replaced (the
+    dipped springs) has no floor and reads them as before; a looser floor settles fewer times, the grid and the probes
+    decide the others near the onset (those its centre's ``μρ`` fails dropped unread: fewer springs read than
+    before)."""
+    play = {"layer": layer_play, "dipped": dipped(layer_play), "loose": loosely_floored(layer_play)}[springs]
     times = first_segment_times(play)
-    counted = counted_probes(monkeypatch)
+    counted = counted_ratios(monkeypatch)
     monkeypatch.setattr(play_bound, "RATIO_FLOOR", False)
     before, read_before = sticking(play, times, PROBES), sum(counted)
     monkeypatch.setattr(play_bound, "RATIO_FLOOR", True)
     counted.clear()
     assert np.array_equal(sticking(play, times, PROBES), before)
     assert read_before > 0
-    assert sum(counted) == (0 if springs == "layer" else read_before)
+    assert (sum(counted) == 0) == (springs == "layer")
+    assert (sum(counted) == read_before) == (springs == "dipped")
 
 
 def test_the_run_with_the_ratio_s_floor_is_the_route_of_before(monkeypatch):
     """The whole run along A at 20° (``τ0`` and Coulomb, the bound's row) with the floor against without: the same at
-    every output, bit for bit, and no probe's ``μρ`` read with it."""
-    counted, runs = counted_probes(monkeypatch), {}
+    every output, bit for bit, and neither the grid's nor the probes' ``μρ`` read with it."""
+    counted, runs = counted_ratios(monkeypatch), {}
     for on in (False, True):
         monkeypatch.setattr(play_bound, "RATIO_FLOOR", on)
         counted.clear()
