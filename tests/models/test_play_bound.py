@@ -22,11 +22,15 @@ import numpy as np
 import pytest
 
 import mdr_events as me
+from mdr_events.contact.indenters import Paraboloid
+from mdr_events.contact.layer import Layer
 from mdr_events.models.continuum import play_bound, play_probes, play_samples
 from mdr_events.models.continuum.play_bound import BOUND_GRID, _first_segment, sticking
 from mdr_events.models.continuum.play_line import FlooredRatio
 from mdr_events.models.continuum.play_reach import constant_part
 from mdr_events.models.continuum.play_springs import PlaySprings
+from mdr_events.theory.layer import LAMBDA_MAX
+from mdr_events.theory.layer.spring_factors import SpringFactors
 from play_recorders import made_plays
 
 #: The paper's 5 mm layer on a bonded base.
@@ -45,6 +49,8 @@ DIP = (0.95, 0.15, 0.04)
 NARROW = (0.7, 0.01)
 #: The share to which :func:`loosely_floored` lowers the layer's floor of ``μρ``.
 LOOSE = 0.9
+#: The thickness of :func:`beyond_the_tables`' layer, a share of the first segment's last radius.
+THIN = 1e-8
 #: The probes among which the narrow dip's centre is chosen (within 4 % of the radius of the centre: attached near the
 #: first contact, so that with ``μρ = 0`` it slides before the layer's onset).
 NEAR_CENTRE = 40
@@ -257,6 +263,40 @@ def test_the_ratio_s_floor_decides_as_the_probes_do(springs, layer_play, monkeyp
     assert read_before > 0
     assert (sum(counted) == 0) == (springs == "layer")
     assert (sum(counted) == read_before) == (springs == "dipped")
+
+
+def beyond_the_tables(play: PlaySprings) -> PlaySprings:
+    """The same springs with ``μρ`` and its floor those of a layer :data:`THIN` of the first segment's last radius
+    thick (the paper's ``ν``), as :class:`~mdr_events.theory.layer.spring_factors.SpringFactors` reads them: past
+    ``a/h = LAMBDA_MAX`` almost at once, where the tables' spline extrapolates (``μρ`` below the centre's past ``λ``
+    some 4e6, nearly 0 from 1e7 on: the outer springs slide at once; a run's reach check refuses such a layer, the
+    bound is asked here directly)."""
+    params = me.Parameters.paper()
+    mu = contact_of("tau0+coulomb").friction.coulomb_mu
+    factors = SpringFactors(Paraboloid(params.R), params.E_star, params.G_star, params.nu,
+                            Layer(THIN * play.radius(_first_segment(play)[1])))
+
+    def ratio(xi):
+        values = factors.values(xi)
+        return mu * values.normal / values.tangential
+
+    return PlaySprings(play.line._replace(ratio=FlooredRatio(ratio, lambda extent: mu * factors.ratio_floor(extent))),
+                       play.path)
+
+
+def test_beyond_the_tables_the_old_route_decides(layer_play, monkeypatch):
+    """Where the radius lies beyond the tables the floor claims nothing (``0``): the decisions are the grid's and
+    the probes', the route of before, and no time passes with a probe at a cap (a floor of the tables' pieces there
+    passed some at which the extrapolated springs slide)."""
+    play = beyond_the_tables(layer_play)
+    times = first_segment_times(play)
+    assert min(play.radius(float(t)) for t in times) > LAMBDA_MAX * THIN * play.radius(float(times[-1]))
+    monkeypatch.setattr(play_bound, "RATIO_FLOOR", False)
+    before = sticking(play, times, PROBES)
+    monkeypatch.setattr(play_bound, "RATIO_FLOOR", True)
+    passed = sticking(play, times, PROBES)
+    assert np.array_equal(passed, before)
+    assert not np.any(passed & at_cap(play, times))
 
 
 def test_the_run_with_the_ratio_s_floor_is_the_route_of_before(monkeypatch):

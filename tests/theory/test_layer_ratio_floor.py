@@ -3,7 +3,8 @@
 :meth:`~mdr_events.theory.layer.spring_factors.SpringFactors.values` reads it at every coordinate up to ``X`` (on a
 dense log-uniform set, at every knot of the spline exactly and a double either side, at ``LAMBDA_MIN`` and either side
 of it), near enough to the least of them to settle the per-spring route's probes, and on a spline built with a flat
-piece lower than the springs before it (its coefficients all equal: the bound meets the values there to round-off)."""
+piece lower than the springs before it (its coefficients all equal: the bound meets the values there to round-off);
+beyond the tables, where the spline extrapolates, ``0``."""
 
 from __future__ import annotations
 
@@ -140,3 +141,24 @@ def test_the_slope_s_ceiling_holds_over_its_box(nu):
     for share in shares:
         point = low + (high - low) * share
         assert np.all(_slope(nu, *point.T) <= ceiling * (1.0 + 1e-14))
+
+
+#: Extents beyond the tables (shares of ``LAMBDA_MAX``): just past its knot, twice it, and ``λ`` some 1.6e7, where the
+#: spline's extrapolated ratio on the paper's ``ν`` (its last quintic piece continued) has fallen far below the
+#: tables' floor (some 7e-12 of it; it crosses it near ``λ`` 3.7e6).
+BEYOND = (1.0 + 1e-12, 2.0, 2.5e5)
+
+
+def test_beyond_the_tables_the_floor_claims_nothing():
+    """Past the tables' last knot the spline extrapolates and its coefficients bound nothing: the floor is ``0`` there
+    (the caller reads the springs), up to the knot the tables' floor; on the paper's ``ν`` the extrapolated springs
+    fall below the tables' floor, so any other value than ``0`` there would be no floor."""
+    factors = SpringFactors(Paraboloid(PAPER.R), PAPER.E_star, PAPER.G_star, PAPER.nu, LAYER)
+    end = LAMBDA_MAX * LAYER.thickness
+    beyond = end * np.array(BEYOND)
+    assert np.all(factors.ratio_floor(beyond) == 0.0)
+    assert np.all(factors.ratio_floor([np.nextafter(end, 0.0), end]) == factors.ratio_floor(0.5 * end))
+    assert factors.ratio_floor(end) > 0.0
+    x = np.concatenate([coordinates(factors), beyond])
+    assert ratios(factors, beyond[-1:])[0] < 1e-3 * factors.ratio_floor(end)
+    assert np.all(factors.ratio_floor(x) <= np.minimum.accumulate(ratios(factors, x)))

@@ -22,10 +22,11 @@ itself; less :data:`BOUND_MARGIN`), so the inequality holds for each probe exact
 ``μρ`` narrower than its spacing may let a spring there slide unseen, as the probes themselves would miss it; the
 skip is the probes' route, not more. On a layer ``μρ`` at the probes is first bounded from below without reading
 them (:data:`RATIO_FLOOR`: the floor of :class:`~.play_line.FlooredRatio` over ``[0, a(t)]``, from the tables'
-B-spline coefficients, a bound at or below every probe's value): a time that passes with it passes with the probes'
-own least value too (and with the grid's, below), so the grid and the probes' ``μρ`` are read only where it does not
-(along scenario A at 20° on the paper's layer, nowhere). With adhesion (:class:`~.play_history.SpanHistory`:
-springs jump in, some in tension, Coulomb's part off) ``c ≥ ū(a)`` alone and ``β = |ẋ|``. A time passes where
+B-spline coefficients, a bound at or below every probe's value, ``0`` where ``a(t)`` lies beyond the tables): a time
+that passes with it passes with the probes' own least value too (and with the grid's, below), so the grid and the
+probes' ``μρ`` are read only where it does not (along scenario A at 20° on the paper's layer, nowhere). With
+adhesion (:class:`~.play_history.SpanHistory`: springs jump in, some in tension, Coulomb's part off) ``c ≥ ū(a)``
+alone and ``β = |ẋ|``. A time passes where
 ``β (t − t_c)`` plus the anchors' round-off (:data:`BOUND_ROUND_OFF` of the path's largest ``|x|`` and ``d``) lies
 below ``ū(a(t))`` less :data:`BOUND_MARGIN`: then no probe is at a cap, and reading them would find none. Under
 Coulomb's law alone (``ū = 0``), after the first segment, or where the path starts in contact no time passes: the

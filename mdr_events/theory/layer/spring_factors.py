@@ -21,6 +21,8 @@ within their exponentials; below ``LAMBDA_MIN`` the series ``1/(1 − 2k(0)λ/π
 their ends. ``Σ_t`` (T4) is bounded above by interval arithmetic on its monotone parts (``Φ_t/Φ_L`` falls with
 ``Φ_L`` and rises with ``Φ_T``, ``Φ_t/Φ_T`` the other way), the ratio's bound per interval is ``E* Θ_lo²/(G* Σ_hi)``
 and its running minimum from ``λ = 0`` the floor; lowered by :data:`RATIO_FLOOR_ROUNDING` for the floats' round-off.
+Beyond the tables' last knot (``λ > LAMBDA_MAX``) the spline extrapolates its last piece, which its coefficients do
+not bound (on the paper's ``ν`` the extrapolated ratio falls to nothing near ``λ`` 1e6): the floor there is ``0``.
 
 Part of :mod:`mdr_events.theory.layer`.
 """
@@ -138,23 +140,27 @@ class SpringFactors:
         Parameters
         ----------
         x : array_like
-            The extents (m), ``|x|/h <= LAMBDA_MAX`` (not checked).
+            The extents (m). Where ``|x|/h`` lies beyond the tables' last knot (``LAMBDA_MAX``) the spline
+            extrapolates, its coefficients bound nothing there, and the floor is ``0`` (``k/k_t >= 0``: no bound
+            claimed, the caller reads the springs).
 
         Returns
         -------
         numpy.ndarray
             The floors, of ``x``'s shape.
         """
-        lefts, floors = self._floors
+        lefts, floors, end = self._floors
         s = np.log(np.maximum(np.abs(np.asarray(x, dtype=float)) / self.h, LAMBDA_MIN))
         # (``floors[i]`` ends with the interval ``i − 1``: through the one holding ``s`` and the next, so that a
         # coordinate at a knot, rounded either way, is covered)
-        return floors[np.minimum(np.searchsorted(lefts, s, side="right") + 1, floors.size - 1)]
+        floor = floors[np.minimum(np.searchsorted(lefts, s, side="right") + 1, floors.size - 1)]
+        return np.where(s > end, 0.0, floor)
 
     @functools.cached_property
-    def _floors(self) -> tuple[np.ndarray, np.ndarray]:
-        """The left knots of the spline's intervals and the running minimum of ``k/k_t``'s bound from ``λ = 0`` to
-        the end of each, the series' stretch first (:meth:`ratio_floor`)."""
+    def _floors(self) -> tuple[np.ndarray, np.ndarray, float]:
+        """The left knots of the spline's intervals, the running minimum of ``k/k_t``'s bound from ``λ = 0`` to
+        the end of each, the series' stretch first, and the last interval's right knot, ``ln LAMBDA_MAX`` (beyond it
+        the spline extrapolates: :meth:`ratio_floor`)."""
         knots, c, k = self._spline.t, self._spline.c[:, 1:], self._spline.k
         pieces = np.flatnonzero(knots[k:c.shape[0]] < knots[k + 1:c.shape[0] + 1]) + k
         active = np.stack([c[piece - k:piece + 1] for piece in pieces])  # (piece, the six coefficients, column)
@@ -166,7 +172,8 @@ class SpringFactors:
         series = np.column_stack([theta, phi_l, phi_t, phi_l, phi_t])  # (Ψ_m(1) = Φ_m below LAMBDA_MIN)
         low, high = np.vstack([series.min(axis=0), low]), np.vstack([series.max(axis=0), high])
         bound = self.E_star * low[:, 0] ** 2 / (self.G_star * self._slope_ceiling(low[:, 1:], high[:, 1:]))
-        return knots[pieces], np.minimum.accumulate(bound) * (1.0 - RATIO_FLOOR_ROUNDING)
+        return (knots[pieces], np.minimum.accumulate(bound) * (1.0 - RATIO_FLOOR_ROUNDING),
+                float(knots[pieces[-1] + 1]))
 
     def _slope_ceiling(self, low: np.ndarray, high: np.ndarray) -> np.ndarray:
         """An upper bound of ``Σ_t`` (T4) where ``Φ_L, Φ_T, Ψ_L(1), Ψ_T(1)`` lie between ``low`` and ``high`` (columns
