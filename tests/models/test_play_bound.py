@@ -240,8 +240,8 @@ def loosely_floored(play: PlaySprings) -> PlaySprings:
     it no longer settles, which the grid and the probes decide (those it fails with the centre's ``μρ`` dropped
     unread)."""
     ratio = play.line.ratio
-    return PlaySprings(play.line._replace(ratio=FlooredRatio(ratio.ratio, lambda extent: LOOSE * ratio.floor(extent))),
-                       play.path)
+    loose = FlooredRatio(ratio.ratio, lambda extent: LOOSE * ratio.floor(extent), ratio.centre)
+    return PlaySprings(play.line._replace(ratio=loose), play.path)
 
 
 @pytest.mark.parametrize("springs", ["layer", "dipped", "loose"])
@@ -265,6 +265,19 @@ def test_the_ratio_s_floor_decides_as_the_probes_do(springs, layer_play, monkeyp
     assert (sum(counted) == read_before) == (springs == "dipped")
 
 
+def test_the_bound_keeps_the_springs_last_reading(layer_play):
+    """The bound reads the centre's ``μρ`` (``FlooredRatio.centre``: the springs' own value there, bit for bit) past
+    the springs' memory of their last coordinates: after it the route's next reading of the same springs is the
+    remembered array, not an evaluation of the tables again."""
+    ratio = layer_play.line.ratio
+    centre = ratio(np.zeros(1))
+    times = first_segment_times(layer_play)
+    last = ratio(layer_play.radius(float(times[-1])) * PROBES)
+    assert np.any(sticking(layer_play, times, PROBES))
+    assert np.shares_memory(ratio(layer_play.radius(float(times[-1])) * PROBES), last)  # (a view of the same array)
+    assert np.array_equal(ratio.centre(), centre[0]) and np.signbit(ratio.centre()) == np.signbit(centre[0])
+
+
 def beyond_the_tables(play: PlaySprings) -> PlaySprings:
     """The same springs with ``μρ`` and its floor those of a layer :data:`THIN` of the first segment's last radius
     thick (the paper's ``ν``), as :class:`~mdr_events.theory.layer.spring_factors.SpringFactors` reads them: past
@@ -280,8 +293,8 @@ def beyond_the_tables(play: PlaySprings) -> PlaySprings:
         values = factors.values(xi)
         return mu * values.normal / values.tangential
 
-    return PlaySprings(play.line._replace(ratio=FlooredRatio(ratio, lambda extent: mu * factors.ratio_floor(extent))),
-                       play.path)
+    floored = FlooredRatio(ratio, lambda extent: mu * factors.ratio_floor(extent), lambda: float(ratio(np.zeros(1))[0]))
+    return PlaySprings(play.line._replace(ratio=floored), play.path)
 
 
 def test_beyond_the_tables_the_old_route_decides(layer_play, monkeypatch):

@@ -129,7 +129,7 @@ def _floored(play, passes, rows: np.ndarray, radii: np.ndarray, passed: np.ndarr
     floor = (1.0 - BOUND_MARGIN) * play.line.ratio.floor(radii)
     settled = passes(np.maximum(x_speed - floor * d_speed, 0.0), rows)
     passed[rows[settled]] = True
-    ceiling = (1.0 - BOUND_MARGIN) * (1.0 + RATIO_FLOOR_ROUNDING) * float(play.line.ratio(np.zeros(1))[0])
+    ceiling = (1.0 - BOUND_MARGIN) * (1.0 + RATIO_FLOOR_ROUNDING) * play.line.ratio.centre()
     open_ = ~settled & passes(np.full(rows.shape, max(x_speed - ceiling * d_speed, 0.0)), rows)
     return rows[open_], radii[open_]
 
