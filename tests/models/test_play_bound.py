@@ -22,10 +22,15 @@ import numpy as np
 import pytest
 
 import mdr_events as me
+from mdr_events.contact.indenters import Paraboloid
+from mdr_events.contact.layer import Layer
 from mdr_events.models.continuum import play_bound, play_probes, play_samples
 from mdr_events.models.continuum.play_bound import BOUND_GRID, _first_segment, sticking
+from mdr_events.models.continuum.play_line import FlooredRatio
 from mdr_events.models.continuum.play_reach import constant_part
 from mdr_events.models.continuum.play_springs import PlaySprings
+from mdr_events.theory.layer import LAMBDA_MAX
+from mdr_events.theory.layer.spring_factors import SpringFactors
 from play_recorders import made_plays
 
 #: The paper's 5 mm layer on a bonded base.
@@ -42,6 +47,10 @@ DIP = (0.95, 0.15, 0.04)
 #: at some 0.85) and its width (a share of the bound's grid spacing: at a quarter spacing or more from its centre its
 #: ``exp(−(δ/w)²)`` is below 1e-270, so the grid reads the layer's ratios bit for bit).
 NARROW = (0.7, 0.01)
+#: The share to which :func:`loosely_floored` lowers the layer's floor of ``μρ``.
+LOOSE = 0.9
+#: The thickness of :func:`beyond_the_tables`' layer, a share of the first segment's last radius.
+THIN = 1e-8
 #: The probes among which the narrow dip's centre is chosen (within 4 % of the radius of the centre: attached near the
 #: first contact, so that with ``μρ = 0`` it slides before the layer's onset).
 NEAR_CENTRE = 40
@@ -206,6 +215,114 @@ def test_the_run_is_the_route_of_before_at_every_output(adhesive, motion, monkey
     read = read_with_and_without(monkeypatch, play_samples, "PROBE_BOUND", contact_of("tau0+coulomb", adhesive),
                                  motions[motion])
     assert sum(read[True]) < sum(read[False])
+
+
+def counted_ratios(monkeypatch) -> list[int]:
+    """The springs whose ``μρ`` the bound reads (:func:`~mdr_events.models.continuum.play_bound._ratio_floor`'s grid
+    and radii, :func:`~mdr_events.models.continuum.play_bound._probes_least`'s probes), one entry a call."""
+    counted, grid, least = [], play_bound._ratio_floor, play_bound._probes_least
+
+    def counting_grid(play, radii, top):
+        counted.append(BOUND_GRID + np.size(radii))
+        return grid(play, radii, top)
+
+    def counting_probes(play, radii, shares):
+        counted.append(np.size(radii) * np.size(shares))
+        return least(play, radii, shares)
+
+    monkeypatch.setattr(play_bound, "_ratio_floor", counting_grid)
+    monkeypatch.setattr(play_bound, "_probes_least", counting_probes)
+    return counted
+
+
+def loosely_floored(play: PlaySprings) -> PlaySprings:
+    """The same springs with their floor of ``μρ`` lowered by :data:`LOOSE` (still a floor): the times near the onset
+    it no longer settles, which the grid and the probes decide (those it fails with the centre's ``μρ`` dropped
+    unread)."""
+    ratio = play.line.ratio
+    loose = FlooredRatio(ratio.ratio, lambda extent: LOOSE * ratio.floor(extent), ratio.centre)
+    return PlaySprings(play.line._replace(ratio=loose), play.path)
+
+
+@pytest.mark.parametrize("springs", ["layer", "dipped", "loose"])
+def test_the_ratio_s_floor_decides_as_the_probes_do(springs, layer_play, monkeypatch):
+    """The layer's floor of ``μρ`` from its tables' coefficients (``play_bound.RATIO_FLOOR``, a bound at or below the
+    probes' own least value and the grid's) passes the same times as the grid's and the probes' reading along the
+    first segment, and on the layer settles every one of them: neither is read. A line whose ratio is replaced (the
+    dipped springs) has no floor and reads them as before; a looser floor settles fewer times, the grid and the probes
+    decide the others near the onset (those its centre's ``μρ`` fails dropped unread: fewer springs read than
+    before)."""
+    play = {"layer": layer_play, "dipped": dipped(layer_play), "loose": loosely_floored(layer_play)}[springs]
+    times = first_segment_times(play)
+    counted = counted_ratios(monkeypatch)
+    monkeypatch.setattr(play_bound, "RATIO_FLOOR", False)
+    before, read_before = sticking(play, times, PROBES), sum(counted)
+    monkeypatch.setattr(play_bound, "RATIO_FLOOR", True)
+    counted.clear()
+    assert np.array_equal(sticking(play, times, PROBES), before)
+    assert read_before > 0
+    assert (sum(counted) == 0) == (springs == "layer")
+    assert (sum(counted) == read_before) == (springs == "dipped")
+
+
+def test_the_bound_keeps_the_springs_last_reading(layer_play):
+    """The bound reads the centre's ``μρ`` (``FlooredRatio.centre``: the springs' own value there, bit for bit) past
+    the springs' memory of their last coordinates: after it the route's next reading of the same springs is the
+    remembered array, not an evaluation of the tables again."""
+    ratio = layer_play.line.ratio
+    centre = ratio(np.zeros(1))
+    times = first_segment_times(layer_play)
+    last = ratio(layer_play.radius(float(times[-1])) * PROBES)
+    assert np.any(sticking(layer_play, times, PROBES))
+    assert np.shares_memory(ratio(layer_play.radius(float(times[-1])) * PROBES), last)  # (a view of the same array)
+    assert np.array_equal(ratio.centre(), centre[0]) and np.signbit(ratio.centre()) == np.signbit(centre[0])
+
+
+def beyond_the_tables(play: PlaySprings) -> PlaySprings:
+    """The same springs with ``μρ`` and its floor those of a layer :data:`THIN` of the first segment's last radius
+    thick (the paper's ``ν``), as :class:`~mdr_events.theory.layer.spring_factors.SpringFactors` reads them: past
+    ``a/h = LAMBDA_MAX`` almost at once, where the tables' spline extrapolates (``μρ`` below the centre's past ``λ``
+    some 4e6, nearly 0 from 1e7 on: the outer springs slide at once; a run's reach check refuses such a layer, the
+    bound is asked here directly)."""
+    params = me.Parameters.paper()
+    mu = contact_of("tau0+coulomb").friction.coulomb_mu
+    factors = SpringFactors(Paraboloid(params.R), params.E_star, params.G_star, params.nu,
+                            Layer(THIN * play.radius(_first_segment(play)[1])))
+
+    def ratio(xi):
+        values = factors.values(xi)
+        return mu * values.normal / values.tangential
+
+    floored = FlooredRatio(ratio, lambda extent: mu * factors.ratio_floor(extent), lambda: float(ratio(np.zeros(1))[0]))
+    return PlaySprings(play.line._replace(ratio=floored), play.path)
+
+
+def test_beyond_the_tables_the_old_route_decides(layer_play, monkeypatch):
+    """Where the radius lies beyond the tables the floor claims nothing (``0``): the decisions are the grid's and
+    the probes', the route of before, and no time passes with a probe at a cap (a floor of the tables' pieces there
+    passed some at which the extrapolated springs slide)."""
+    play = beyond_the_tables(layer_play)
+    times = first_segment_times(play)
+    assert min(play.radius(float(t)) for t in times) > LAMBDA_MAX * THIN * play.radius(float(times[-1]))
+    monkeypatch.setattr(play_bound, "RATIO_FLOOR", False)
+    before = sticking(play, times, PROBES)
+    monkeypatch.setattr(play_bound, "RATIO_FLOOR", True)
+    passed = sticking(play, times, PROBES)
+    assert np.array_equal(passed, before)
+    assert not np.any(passed & at_cap(play, times))
+
+
+def test_the_run_with_the_ratio_s_floor_is_the_route_of_before(monkeypatch):
+    """The whole run along A at 20° (``τ0`` and Coulomb, the bound's row) with the floor against without: the same at
+    every output, bit for bit, and neither the grid's nor the probes' ``μρ`` read with it."""
+    counted, runs = counted_ratios(monkeypatch), {}
+    for on in (False, True):
+        monkeypatch.setattr(play_bound, "RATIO_FLOOR", on)
+        counted.clear()
+        runs[on] = me.simulate(contact_of("tau0+coulomb"), me.Scenario("A", alpha=[20.0]), "continuum",
+                               samples=SAMPLES)
+        assert (sum(counted) == 0) == on
+    assert runs[True].identical(runs[False])
 
 
 # -- the probes of a part where every window is fixed but for x, read in one evaluation (play_probes.SHARED_PROBES) --

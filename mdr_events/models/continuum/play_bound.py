@@ -20,8 +20,13 @@ at or below them, the springs' ratios on a grid of :data:`BOUND_GRID` radii, the
 itself; less :data:`BOUND_MARGIN`), so the inequality holds for each probe exactly; ``μρ ≥ 0`` (``μ ≥ 0``), so where
 ``|ẋ| (t − t_c)`` alone passes ``μρ`` is not read. Between the probes the grid is an estimate, not a bound: a dip of
 ``μρ`` narrower than its spacing may let a spring there slide unseen, as the probes themselves would miss it; the
-skip is the probes' route, not more. With adhesion (:class:`~.play_history.SpanHistory`:
-springs jump in, some in tension, Coulomb's part off) ``c ≥ ū(a)`` alone and ``β = |ẋ|``. A time passes where
+skip is the probes' route, not more. On a layer ``μρ`` at the probes is first bounded from below without reading
+them (:data:`RATIO_FLOOR`: the floor of :class:`~.play_line.FlooredRatio` over ``[0, a(t)]``, from the tables'
+B-spline coefficients, a bound at or below every probe's value, ``0`` where ``a(t)`` lies beyond the tables): a time
+that passes with it passes with the probes' own least value too (and with the grid's, below), so the grid and the
+probes' ``μρ`` are read only where it does not (along scenario A at 20° on the paper's layer, nowhere). With
+adhesion (:class:`~.play_history.SpanHistory`: springs jump in, some in tension, Coulomb's part off) ``c ≥ ū(a)``
+alone and ``β = |ẋ|``. A time passes where
 ``β (t − t_c)`` plus the anchors' round-off (:data:`BOUND_ROUND_OFF` of the path's largest ``|x|`` and ``d``) lies
 below ``ū(a(t))`` less :data:`BOUND_MARGIN`: then no probe is at a cap, and reading them would find none. Under
 Coulomb's law alone (``ū = 0``), after the first segment, or where the path starts in contact no time passes: the
@@ -38,9 +43,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from .play_history import DepthHistory, SpanHistory
+from mdr_events.theory.layer.spring_factors import RATIO_FLOOR_ROUNDING
 
-__all__ = ["sticking", "BOUND_MARGIN", "BOUND_ROUND_OFF", "BOUND_GRID"]
+from .play_history import DepthHistory, SpanHistory
+from .play_line import FlooredRatio
+
+__all__ = ["sticking", "BOUND_MARGIN", "BOUND_ROUND_OFF", "BOUND_GRID", "RATIO_FLOOR"]
 
 #: The share by which the bound's lower bounds (``ū`` and ``μρ``) are lowered: a probe within this share of its cap
 #: is read as before (the anchors' and the cap's table's round-off, some ulps, far below it).
@@ -50,6 +58,12 @@ BOUND_MARGIN = 1e-6
 BOUND_ROUND_OFF = 1e-9
 #: Points of the grid of radii on which ``μρ``'s least value is estimated first (the probes are read where it passes).
 BOUND_GRID = 1025
+#: Whether a layer's floor of ``μρ`` over ``[0, a]`` from its tables' B-spline coefficients
+#: (:class:`~.play_line.FlooredRatio`, a bound, not an estimate: at or below ``μρ`` at every probe and at every point
+#: of the grid up to ``a``) is tried before the grid and the probes are read (``False``: the grid's estimate, then
+#: ``μρ`` at the probes where it passes, the route of before; a time the floor passes passes with the grid's and the
+#: probes' own least value too, so the decisions are the same; the grid spans the same radii either way).
+RATIO_FLOOR = True
 
 
 def sticking(play, times: np.ndarray, shares: np.ndarray) -> np.ndarray:
@@ -92,13 +106,32 @@ def sticking(play, times: np.ndarray, shares: np.ndarray) -> np.ndarray:
     rows = np.flatnonzero(~passed)
     if not play.history.adhesive and rows.size:  # (every spring compressed by ḋ (t − τ): μρ read where needed)
         radii = np.array([play.radius(float(time)) for time in t[rows]])
-        floor = _ratio_floor(play, radii)
-        kept = passes(np.maximum(abs(x_speed) - floor * d_speed, 0.0), rows)  # (the probes read where this passes)
-        rows, radii, floor = rows[kept], radii[kept], floor[kept]
-        floor = np.minimum(floor, (1.0 - BOUND_MARGIN) * _probes_least(play, radii, shares))
-        passed[rows] = passes(np.maximum(abs(x_speed) - floor * d_speed, 0.0), rows)
+        top = float(np.max(radii))  # (the grid's extent: every such row's, whichever the floor settles)
+        if RATIO_FLOOR and isinstance(play.line.ratio, FlooredRatio):
+            rows, radii = _floored(play, passes, rows, radii, passed, (abs(x_speed), d_speed))
+        if rows.size:
+            floor = _ratio_floor(play, radii, top)
+            kept = passes(np.maximum(abs(x_speed) - floor * d_speed, 0.0), rows)  # (the probes read where it passes)
+            rows, radii, floor = rows[kept], radii[kept], floor[kept]
+            floor = np.minimum(floor, (1.0 - BOUND_MARGIN) * _probes_least(play, radii, shares))
+            passed[rows] = passes(np.maximum(abs(x_speed) - floor * d_speed, 0.0), rows)
     out[inside] = passed
     return out
+
+
+def _floored(play, passes, rows: np.ndarray, radii: np.ndarray, passed: np.ndarray,
+             speeds: tuple[float, float]) -> tuple[np.ndarray, np.ndarray]:
+    """:data:`RATIO_FLOOR`: the rows ``passes`` with ``μρ``'s floor over ``[0, a]`` (at or below the grid's estimate
+    and every probe's ``μρ``) set in ``passed``; those it fails with the centre's ``μρ`` (at or above the grid's
+    estimate, whose running minimum starts there) dropped, as the grid would drop them; the rest, and their radii,
+    returned for the grid and the probes."""
+    x_speed, d_speed = speeds
+    floor = (1.0 - BOUND_MARGIN) * play.line.ratio.floor(radii)
+    settled = passes(np.maximum(x_speed - floor * d_speed, 0.0), rows)
+    passed[rows[settled]] = True
+    ceiling = (1.0 - BOUND_MARGIN) * (1.0 + RATIO_FLOOR_ROUNDING) * play.line.ratio.centre()
+    open_ = ~settled & passes(np.full(rows.shape, max(x_speed - ceiling * d_speed, 0.0)), rows)
+    return rows[open_], radii[open_]
 
 
 def _first_segment(play) -> tuple[float, float, float, float] | None:
@@ -113,12 +146,12 @@ def _first_segment(play) -> tuple[float, float, float, float] | None:
     return float(t_c), float(t1), float((x1 - x0) / (t1 - t0)), float((d1 - d0) / (t1 - t0))
 
 
-def _ratio_floor(play, radii: np.ndarray) -> np.ndarray:
+def _ratio_floor(play, radii: np.ndarray, top: float) -> np.ndarray:
     """An estimate of ``μρ(ξ)``'s least value on ``[0, a]`` at each of ``radii``: the running minimum of the springs'
-    ratios on a grid up to the largest radius, read at the last grid point not beyond each radius and at the radius
-    itself, less :data:`BOUND_MARGIN` (a dip between two grid points is missed: :func:`_probes_least` reads the
-    probes themselves)."""
-    grid = np.linspace(0.0, float(np.max(radii)), BOUND_GRID)
+    ratios on a grid up to ``top`` (the largest radius of the times asked), read at the last grid point not beyond
+    each radius and at the radius itself, less :data:`BOUND_MARGIN` (a dip between two grid points is missed:
+    :func:`_probes_least` reads the probes themselves)."""
+    grid = np.linspace(0.0, top, BOUND_GRID)
     floor = np.minimum.accumulate(play.line.ratio(grid))
     below = floor[np.searchsorted(grid, radii, side="right") - 1]
     return (1.0 - BOUND_MARGIN) * np.minimum(below, play.line.ratio(radii))

@@ -6,6 +6,7 @@ own springs, :mod:`~mdr_events.models.spring_media`; on a layer the three read i
 
 from __future__ import annotations
 
+import functools
 from typing import Callable, NamedTuple
 
 import numpy as np
@@ -16,7 +17,7 @@ from mdr_events.contact.indenters import indenter_kind
 from mdr_events.contact.layer import HALF_SPACE, Layer
 from mdr_events.parameters import Parameters
 
-__all__ = ["SpringLine", "spring_line"]
+__all__ = ["SpringLine", "spring_line", "FlooredRatio"]
 
 
 class SpringLine(NamedTuple):
@@ -124,8 +125,33 @@ def _layer_springs(params: Parameters, indenter, friction: FrictionLaw, layer: L
         ratio = mu * (normal / tangential) * (1.0 - 0.0) if mu > 0.0 else np.zeros(np.shape(xi))
         return np.stack([profile, tangential / G_star, ratio])
 
-    springs = _remembered(_once_a_block(springs))  # (the three as the rows of one array)
-    return (lambda xi: springs(xi)[0]), (lambda xi: springs(xi)[1]), (lambda xi: springs(xi)[2])
+    once = _once_a_block(springs)
+    springs = _remembered(once)  # (the three as the rows of one array)
+    # (the centre's μρ read once, past the memory: the bound's each call would evict the last coordinates asked)
+    centre = functools.cache(lambda: float(once(np.zeros(1))[2][0]))
+    return ((lambda xi: springs(xi)[0]), (lambda xi: springs(xi)[1]),
+            FlooredRatio(lambda xi: springs(xi)[2], lambda extent: mu * factors.ratio_floor(extent), centre))
+
+
+class FlooredRatio(NamedTuple):
+    """Coulomb's cap per compression ``μ k/k_t`` of a layer's springs (called as :attr:`SpringLine.ratio` is) with a
+    lower bound of it over ``[0, X]`` that reads no spring (:meth:`floor`: ``μ`` times
+    :meth:`~mdr_events.theory.layer.spring_factors.SpringFactors.ratio_floor`, the tables' B-spline coefficients;
+    :mod:`.play_bound` tries it before reading the probes, with the centre's value, :attr:`centre`). A line whose
+    ratio is replaced (``_replace(ratio=...)``) has no floor."""
+
+    #: ``μ k(ξ)/k_t(ξ)`` at the springs' coordinates
+    ratio: Callable[[np.ndarray], np.ndarray]
+    #: a lower bound of it over ``0 <= ξ <= X`` at each extent ``X`` (m), at or below every value :attr:`ratio` gives
+    #: there
+    floor: Callable[[np.ndarray], np.ndarray]
+    #: :attr:`ratio` at ``ξ = 0``, its value bit for bit, read once (not through the springs' memory of the last
+    #: coordinates asked, which it would evict)
+    centre: Callable[[], float]
+
+    def __call__(self, xi) -> np.ndarray:
+        """:attr:`ratio` at ``xi``."""
+        return self.ratio(xi)
 
 
 def _once_a_block(function: Callable[[np.ndarray], np.ndarray]) -> Callable[[np.ndarray], np.ndarray]:

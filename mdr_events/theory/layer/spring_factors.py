@@ -14,11 +14,22 @@ relations' bit for bit (``tests/theory/test_layer_spring_factors.py`` checks it)
 own series. The coordinates are not checked: the caller's contact lies within the tables (the continuum's reach check,
 :mod:`mdr_events.models.continuum.layer_reach`).
 
+:meth:`SpringFactors.ratio_floor` bounds ``k/k_t`` from below over ``0 <= |x| <= X`` without reading the springs: on
+each knot interval of the spline each column lies within the least and largest of the quintic's six B-spline
+coefficients active there (the convex-hull property: the basis is non-negative and sums to one), so each factor
+within their exponentials; below ``LAMBDA_MIN`` the series ``1/(1 − 2k(0)λ/π)`` are monotone in ``λ``, bounded by
+their ends. ``Σ_t`` (T4) is bounded above by interval arithmetic on its monotone parts (``Φ_t/Φ_L`` falls with
+``Φ_L`` and rises with ``Φ_T``, ``Φ_t/Φ_T`` the other way), the ratio's bound per interval is ``E* Θ_lo²/(G* Σ_hi)``
+and its running minimum from ``λ = 0`` the floor; lowered by :data:`RATIO_FLOOR_ROUNDING` for the floats' round-off.
+Beyond the tables' last knot (``λ > LAMBDA_MAX``) the spline extrapolates its last piece, which its coefficients do
+not bound (on the paper's ``ν`` the extrapolated ratio falls to nothing near ``λ`` 1e6): the floor there is ``0``.
+
 Part of :mod:`mdr_events.theory.layer`.
 """
 
 from __future__ import annotations
 
+import functools
 from typing import NamedTuple
 
 import numpy as np
@@ -29,7 +40,12 @@ from mdr_events.theory.layer.tables import LAMBDA_MIN, layer_table
 from mdr_events.theory.layer.tangential_punch import _slope
 from mdr_events.theory.layer.tangential_tables import LAMBDA_MIN as TANGENTIAL_LAMBDA_MIN, tangential_table
 
-__all__ = ["SpringValues", "SpringFactors", "PunchSpringFactors"]
+__all__ = ["SpringValues", "SpringFactors", "PunchSpringFactors", "RATIO_FLOOR_ROUNDING"]
+
+#: The share by which :meth:`SpringFactors.ratio_floor` is lowered below its bound in exact arithmetic: the values
+#: it bounds are some twenty floating-point operations on doubles (the spline's sum, the exponentials, ``Σ_t``'s
+#: arithmetic), each within half an ulp (1.1e-16), so within some 5e-15 of the exact ones; 1e-12 leaves room.
+RATIO_FLOOR_ROUNDING = 1e-12
 
 #: The columns of the one spline: the normal tables' ``γₙ`` (of the profile's ``n``) and ``Θ(1)`` (of ``n = 2``, as
 #: :func:`~.relations.spring_stiffness_density` reads it), then the tangential table's four.
@@ -116,6 +132,57 @@ class SpringFactors:
             for value, exact in zip(factors, series):
                 value[small] = exact
         return tuple(value.reshape(shape) for value in factors)
+
+    def ratio_floor(self, x) -> np.ndarray:
+        """A lower bound of ``k(ξ)/k_t(ξ)`` over ``0 <= |ξ| <= x`` at each ``x`` (module docstring), at or below the
+        values :meth:`values` gives at every such ``ξ``, without reading the springs.
+
+        Parameters
+        ----------
+        x : array_like
+            The extents (m). Where ``|x|/h`` lies beyond the tables' last knot (``LAMBDA_MAX``) the spline
+            extrapolates, its coefficients bound nothing there, and the floor is ``0`` (``k/k_t >= 0``: no bound
+            claimed, the caller reads the springs).
+
+        Returns
+        -------
+        numpy.ndarray
+            The floors, of ``x``'s shape.
+        """
+        lefts, floors, end = self._floors
+        s = np.log(np.maximum(np.abs(np.asarray(x, dtype=float)) / self.h, LAMBDA_MIN))
+        # (``floors[i]`` ends with the interval ``i − 1``: through the one holding ``s`` and the next, so that a
+        # coordinate at a knot, rounded either way, is covered)
+        floor = floors[np.minimum(np.searchsorted(lefts, s, side="right") + 1, floors.size - 1)]
+        return np.where(s > end, 0.0, floor)
+
+    @functools.cached_property
+    def _floors(self) -> tuple[np.ndarray, np.ndarray, float]:
+        """The left knots of the spline's intervals, the running minimum of ``k/k_t``'s bound from ``λ = 0`` to
+        the end of each, the series' stretch first, and the last interval's right knot, ``ln LAMBDA_MAX`` (beyond it
+        the spline extrapolates: :meth:`ratio_floor`)."""
+        knots, c, k = self._spline.t, self._spline.c[:, 1:], self._spline.k
+        pieces = np.flatnonzero(knots[k:c.shape[0]] < knots[k + 1:c.shape[0] + 1]) + k
+        active = np.stack([c[piece - k:piece + 1] for piece in pieces])  # (piece, the six coefficients, column)
+        low, high = np.exp(active.min(axis=1)), np.exp(active.max(axis=1))
+        _, edge, tangential = self._tables
+        ends = np.array([0.0, LAMBDA_MIN])
+        theta, phi_l, phi_t = edge._series(ends)["edge"], *(tangential._series(ends)[name] for name in ("phi_l",
+                                                                                                       "phi_t"))
+        series = np.column_stack([theta, phi_l, phi_t, phi_l, phi_t])  # (Ψ_m(1) = Φ_m below LAMBDA_MIN)
+        low, high = np.vstack([series.min(axis=0), low]), np.vstack([series.max(axis=0), high])
+        bound = self.E_star * low[:, 0] ** 2 / (self.G_star * self._slope_ceiling(low[:, 1:], high[:, 1:]))
+        return (knots[pieces], np.minimum.accumulate(bound) * (1.0 - RATIO_FLOOR_ROUNDING),
+                float(knots[pieces[-1] + 1]))
+
+    def _slope_ceiling(self, low: np.ndarray, high: np.ndarray) -> np.ndarray:
+        """An upper bound of ``Σ_t`` (T4) where ``Φ_L, Φ_T, Ψ_L(1), Ψ_T(1)`` lie between ``low`` and ``high`` (columns
+        in that order, all positive): ``Σ_t = ((1 − ν) Ψ_L² (Φ_t/Φ_L)² + Ψ_T² (Φ_t/Φ_T)²)/(2 − ν)``, ``Φ_t/Φ_L =
+        (2 − ν)Φ_T/((1 − ν)Φ_T + Φ_L)`` and ``Φ_t/Φ_T = (2 − ν)Φ_L/((1 − ν)Φ_T + Φ_L)``, each monotone in both."""
+        nu = self.nu
+        over_l = (2.0 - nu) * high[:, 1] / ((1.0 - nu) * high[:, 1] + low[:, 0])
+        over_t = (2.0 - nu) * high[:, 0] / ((1.0 - nu) * low[:, 1] + high[:, 0])
+        return ((1.0 - nu) * (high[:, 2] * over_l) ** 2 + (high[:, 3] * over_t) ** 2) / (2.0 - nu)
 
     def values(self, x) -> SpringValues:
         """``g``, ``k`` and ``k_t`` at ``x`` (the relations' arithmetic on the same factors: their values bit for bit).
