@@ -65,3 +65,24 @@ def test_a_profile_table_s_column_of_notes_is_left_unread(tmp_path):
     reference = me.TabulatedProfile(tuple(r), tuple(f))
     np.testing.assert_array_equal(table.r, reference.r)
     np.testing.assert_array_equal(table.f, reference.f)
+
+
+@pytest.mark.parametrize("table, limits", [
+    ('[simulation]\nscenario = "A"\nalpha = [45]\nmethod = "discrete"\n', "steps = 100"),
+    ('[path]\nwaypoints = [[0, 0], [1e-9, 1e-6], [2e-9, 0], [3e-9, 1e-6]]\nspeed = 1e-6\n'
+     '[simulation]\nmethod = "continuum"\n', "waypoints = 3"),
+])
+def test_a_study_s_limit_says_how_to_raise_it_in_the_study(tmp_path, table, limits):
+    """Class 7, round 28: a study over one of its limits was told "raise the limit with limits=Limits(steps=...)
+    (command line: --limit steps=...)", where ``mdr-events run`` and ``sweep`` take no ``--limit`` and the study file
+    sets no ``Limits``: the message names the study's ``[limits]`` table, with the limit's key."""
+    study = tmp_path / "study.toml"
+    study.write_text(f"[limits]\n{limits}\n{table}[output]\ndirectory = \"out\"\n", encoding="utf-8")
+    name = limits.split()[0]
+    with pytest.raises(ValueError) as refused:  # (refused before anything runs or is written)
+        me.run_study(me.load_study(study), progress=lambda message: None)
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+    message = str(refused.value)
+    assert f"raise the limit in the study's [limits] table ({name} = ...)" in message, message
+    assert "--limit" not in message and "Limits(" not in message, message
+    assert "\n" not in message
