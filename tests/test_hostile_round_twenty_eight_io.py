@@ -11,6 +11,8 @@ failed is below.
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -86,3 +88,35 @@ def test_a_study_s_limit_says_how_to_raise_it_in_the_study(tmp_path, table, limi
     assert f"raise the limit in the study's [limits] table ({name} = ...)" in message, message
     assert "--limit" not in message and "Limits(" not in message, message
     assert "\n" not in message
+
+
+#: An array where one number goes: its repr spans three lines.
+GRID = np.full((3, 3), 20.0)
+PARAMS = me.Contact.paper().parameters(3e-4, 1e-6)
+PATH_A = me.Path.scenario_A(20.0, PARAMS)
+
+
+@pytest.mark.parametrize("call", [
+    lambda: dataclasses.replace(PARAMS, tau0=GRID),
+    lambda: me.critical_angle(me.Contact.paper(), "A", final_depth=GRID, d_max=3e-4),
+    lambda: me.critical_angle(me.Contact.paper(), "B+", final_depth=GRID, d_max=3e-4),
+    lambda: me.Path.scenario_A(GRID, PARAMS),
+    lambda: me.simulate(me.Contact.paper(), [PATH_A], alpha=GRID, method="continuum"),
+    lambda: me.validate({"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}, me.Contact.paper(), "A", alpha=GRID),
+    lambda: me.validate({"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}, me.Contact.paper(), "A", alpha=20.0,
+                        time_origin=GRID),
+    lambda: me.fit({"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}, me.Contact.paper(), "A", alpha=GRID,
+                   free=["tau0"]),
+], ids=["Parameters", "critical_angle A", "critical_angle B+", "Path.scenario_A", "simulate paths", "validate alpha",
+        "validate time_origin", "fit alpha"])
+def test_an_array_where_one_number_goes_is_named_on_one_line(call):
+    """Class 5 (the API's errors are the CLI's: one line), round 28: a 2-d array where one number goes was written
+    with its repr, three lines (``Parameters.tau0=array([[20., 20., 20.],\\n [20., ...``), by the parameters' type
+    check, ``critical_angle``'s final depth, a path's angle, ``simulate``'s angle beside custom paths, ``validate``'s
+    and ``fit``'s angle and time origin (and the like in the discrete method's and the deck's step checks, the layer's
+    radius and Poisson's ratio, ``mindlin``'s shift, the rate law's speed). Each names it on one line."""
+    with pytest.raises((ValueError, TypeError)) as refused:
+        call()
+    message = str(refused.value)
+    assert "\n" not in message, message
+    assert "allowed: " in message, message

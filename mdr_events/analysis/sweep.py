@@ -140,7 +140,7 @@ def _before(contact, motion, alpha, method, options: dict[str, Any], grid) -> tu
         raise ValueError("scenario is given twice (second and by keyword); allowed: one")
     scenario = options.pop("scenario", "A" if contact is None else contact)
     if motion is not None and alpha is not None:
-        raise ValueError(f"alpha is given twice ({motion!r} third and alpha={alpha!r}); allowed: one")
+        raise ValueError(f"alpha is given twice ({motion!r} third and alpha={shown(alpha)}); allowed: one")
     simulate_steps_unless_given(method, options, grid)
     return base, scenario, alpha if motion is None else motion
 

@@ -513,6 +513,6 @@ def as_motion(motion, alpha=None, d_max: float | None = None, v: float | None = 
         raise TypeError(f"scenario={shown(motion)} ({type(motion).__name__}) is not allowed; allowed: "
                         f"{SCENARIO_ALLOWED}, a Scenario or Paths")
     if alpha is not None:
-        raise ValueError(f"alpha={alpha!r} is not allowed with custom paths (their waypoints fix the motion); "
+        raise ValueError(f"alpha={shown(alpha)} is not allowed with custom paths (their waypoints fix the motion); "
                          "allowed: alpha=None")
     return Paths(motion) if d_max is None and v is None else Paths.named_by(motion, d_max, v)
