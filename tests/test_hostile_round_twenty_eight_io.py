@@ -120,3 +120,69 @@ def test_an_array_where_one_number_goes_is_named_on_one_line(call):
     message = str(refused.value)
     assert "\n" not in message, message
     assert "allowed: " in message, message
+
+
+def _stub_runs(monkeypatch):
+    """The sweep's runs replaced by a chunk of NaN quantities (what is measured is the set-up before any run)."""
+    from mdr_events.analysis import sweep as sweep_module
+    from mdr_events.analysis.sweep_runs import ChunkResult
+    monkeypatch.setattr(sweep_module, "run_chunk", lambda spec, rows: ChunkResult(
+        np.full((len(rows), len(spec.quantities)), np.nan), [""] * len(rows), None))
+
+
+#: A grid of 100 × 100 runs and a memory limit of 800 B a run: above what a sweep without a store is counted (32 B for
+#: each of the 15 quantities, 480 B a run; tracemalloc measured 290 B), below a store's set-up (its 200-character
+#: error column alone is 800 B a run): counted 480 + 1280 B a run, 0.0164 GiB for 1e4 runs.
+SIDE, MEMORY_PER_RUN = 100, 800
+
+
+def _square_grid():
+    return {"tau0": list(3e4 + np.arange(SIDE)), "alpha": list(1.0 + 0.01 * np.arange(SIDE))}
+
+
+def test_a_sweep_s_store_is_counted_against_the_memory_limit(tmp_path, monkeypatch):
+    """Class 4 (X4), round 28: a sweep writing a store held memory ``Limits`` did not count (the store's layout, an
+    ``error`` column of 200 characters a run, and its signature, every grid value as JSON): a 4e6-run grid passed the
+    limit checks and held 4.6 GB under a 2 GiB limit before its first run. The store's set-up is counted now: the
+    sweep is refused before it is laid out, in one line naming the size, the limit and how to raise it."""
+    _stub_runs(monkeypatch)
+    limits = me.Limits(memory=MEMORY_PER_RUN * SIDE**2)
+    plain = me.sweep(_square_grid(), me.Contact.paper(), "A", method="continuum", limits=limits,
+                     engine=me.Engine(scheduler="serial"))
+    assert plain.sizes == {"tau0": SIDE, "alpha": SIDE}  # (without a store, within the limit)
+    store = tmp_path / "s.zarr"
+    with pytest.raises(me.ResourceLimitError) as refused:
+        me.sweep(_square_grid(), me.Contact.paper(), "A", method="continuum", limits=limits,
+                 output=me.SweepOutput(store=str(store)), engine=me.Engine(scheduler="serial"))
+    message = str(refused.value)
+    assert f"the sweep of {SIDE**2} runs with a store needs 0.0164 GiB of memory" in message, message
+    assert "limits=Limits(memory=...)" in message and "\n" not in message, message
+    assert not store.exists()
+
+
+@pytest.mark.slow  # (tracemalloc over two stubbed sweeps of 2e3 and 1.2e4 runs: ~10 s of CPU)
+def test_a_sweep_s_counted_memory_bounds_what_its_store_s_set_up_takes(tmp_path, monkeypatch):
+    """X4's estimate is a bound: the peak memory a sweep with a store takes per run before and while its (stubbed)
+    runs are recorded, the difference of two sizes (so the imports' and caches' own allocations cancel), is at most
+    what ``Limits.memory`` is checked against per run (the grid's values, the quantities, the store's set-up)."""
+    import tracemalloc
+
+    from mdr_events.analysis.sweep_grid import BYTES_PER_STORED_VALUE
+    from mdr_events.analysis.sweep_runs import QUANTITIES
+    from mdr_events.analysis.sweep_store import store_bytes
+    _stub_runs(monkeypatch)
+
+    def peak(side, name):
+        grid = {"tau0": list(3e4 + np.arange(side)), "alpha": list(1.0 + 0.01 * np.arange(side))}
+        tracemalloc.start()
+        try:
+            me.sweep(grid, me.Contact.paper(), "A", method="continuum", output=me.SweepOutput(
+                store=str(tmp_path / name)), engine=me.Engine(scheduler="serial", chunk_size=side**2))
+            return tracemalloc.get_traced_memory()[1]
+        finally:
+            tracemalloc.stop()
+    peak(10, "warm.zarr")  # (the first sweep's imports and caches)
+    small, large = 45, 110
+    per_run = (peak(large, "large.zarr") - peak(small, "small.zarr")) / (large**2 - small**2)
+    counted = BYTES_PER_STORED_VALUE * (2 + len(QUANTITIES)) + store_bytes(1, 2)
+    assert per_run <= counted, (per_run, counted)
