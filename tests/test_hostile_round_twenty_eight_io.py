@@ -18,6 +18,7 @@ import pytest
 
 import mdr_events as me
 from mdr_events.io.candidates import read_candidate, read_profile_table
+from mdr_events.limits import LIMIT_UNITS, in_study
 
 #: Samples of the small run the readers are given (enough for a time axis; no simulation is run).
 SAMPLES = 6
@@ -90,6 +91,22 @@ def test_a_study_s_limit_says_how_to_raise_it_in_the_study(tmp_path, table, limi
     assert "\n" not in message
 
 
+def _deck_steps(steps, dt):
+    from mdr_events.dem.deck import steps_for  # (the LAMMPS deck's steps, without LAMMPS)
+    return steps_for(PATH_A, steps, dt)
+
+
+def _virgin_force(shift):
+    from mdr_events.theory.mindlin import virgin_force
+    return virgin_force(shift, 1e-4, None, PARAMS)
+
+
+def _rate_angle(speed):
+    from mdr_events.analysis.rate_angles import critical_angle_at_speed
+    from mdr_events.contact.adhesion import RateDependentAdhesion
+    return critical_angle_at_speed(PARAMS, RateDependentAdhesion(PARAMS.dgamma0, PARAMS.dgamma1, 1e-6, 0.5), speed)
+
+
 #: An array where one number goes: its repr spans three lines.
 GRID = np.full((3, 3), 20.0)
 PARAMS = me.Contact.paper().parameters(3e-4, 1e-6)
@@ -107,8 +124,16 @@ PATH_A = me.Path.scenario_A(20.0, PARAMS)
                         time_origin=GRID),
     lambda: me.fit({"time": [0.0, 1.0], "normal_force": [0.0, 1.0]}, me.Contact.paper(), "A", alpha=GRID,
                    free=["tau0"]),
+    lambda: me.d_crit(20.0, me.Contact.paper(), "A", branch=GRID),
+    lambda: me.simulate(me.Contact.paper(), "A", alpha=20.0, method=me.Discrete(dt=GRID)),
+    lambda: me.simulate(me.Contact.paper(), "A", alpha=20.0, method=me.Discrete(n_steps=GRID)),
+    lambda: _deck_steps(None, GRID),
+    lambda: _deck_steps(GRID, GRID),
+    lambda: _virgin_force(np.full((3, 3), np.nan)),
+    lambda: _rate_angle(GRID),
 ], ids=["Parameters", "critical_angle A", "critical_angle B+", "Path.scenario_A", "simulate paths", "validate alpha",
-        "validate time_origin", "fit alpha"])
+        "validate time_origin", "fit alpha", "d_crit branch", "Discrete dt", "Discrete n_steps", "deck dt",
+        "deck steps and dt", "mindlin shift", "rate law speed"])
 def test_an_array_where_one_number_goes_is_named_on_one_line(call):
     """Class 5 (the API's errors are the CLI's: one line), round 28: a 2-d array where one number goes was written
     with its repr, three lines (``Parameters.tau0=array([[20., 20., 20.],\\n [20., ...``), by the parameters' type
@@ -120,6 +145,21 @@ def test_an_array_where_one_number_goes_is_named_on_one_line(call):
     message = str(refused.value)
     assert "\n" not in message, message
     assert "allowed: " in message, message
+    assert "=array([[" in message, message  # (the argument named, its value on the line)
+
+
+@pytest.mark.parametrize("names", [(name,) for name in LIMIT_UNITS] + [("steps", "samples")])
+def test_a_limit_s_advice_is_said_for_a_study_for_every_limit(names):
+    """Class 7, round 28 (review): :func:`~mdr_events.limits.in_study` rewrites the advice
+    :meth:`Limits.check <mdr_events.Limits.check>` writes; reworded on one side only, a study would be told
+    ``--limit`` again. Every limit's refusal (and two limits' at once), as ``check`` writes it, is said for a study."""
+    limits = me.Limits(**{name: 1 for name in names})
+    with pytest.raises(me.ResourceLimitError) as refused:
+        limits.check("the run", **{name: 10 for name in names})
+    message = in_study(str(refused.value))
+    keys = ", ".join(f"{name} = ..." for name in names)
+    assert f"raise the limit in the study's [limits] table ({keys})" in message, message
+    assert "--limit" not in message and "Limits(" not in message, message
 
 
 def _stub_runs(monkeypatch):

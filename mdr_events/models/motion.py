@@ -139,7 +139,7 @@ def _custom_paths(scenario: Path | Sequence[Path] | Mapping[str, Path]) -> dict[
         labels = [f"path {number}" for number in range(1, len(paths) + 1)]
         where = [f"scenario[{index}]" for index in range(len(paths))]
     if not paths:
-        raise ValueError(f"scenario={scenario!r} is not allowed: it holds no path; allowed: {SCENARIO_ALLOWED}")
+        raise ValueError(f"scenario={shown(scenario)} is not allowed: it holds no path; allowed: {SCENARIO_ALLOWED}")
     for label in labels:
         if not isinstance(label, str) or not label:
             raise TypeError(f"scenario has the label {label!r} ({type(label).__name__}); allowed: labels that are "
