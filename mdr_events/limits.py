@@ -9,11 +9,13 @@ on the command line. The defaults keep one run under about a minute and 2 GiB on
 from __future__ import annotations
 
 import dataclasses
+import re
 from dataclasses import dataclass
 
 from mdr_events.validation import PLAIN_NUMBER, check_real, plain_number, shown
 
-__all__ = ["Limits", "ResourceLimitError", "DEFAULT_LIMITS", "LIMIT_UNITS", "parse_limit", "check_limits", "values_in"]
+__all__ = ["Limits", "ResourceLimitError", "DEFAULT_LIMITS", "LIMIT_UNITS", "parse_limit", "check_limits", "values_in",
+           "in_study"]
 
 #: What each limit counts, for messages and the CLI help.
 LIMIT_UNITS = {
@@ -91,10 +93,29 @@ class Limits:
         if over:
             parts = " and ".join(f"{_shown(name, value)} {LIMIT_UNITS[name]} (allowed: at most "
                                  f"{_shown(name, getattr(self, name))})" for name, value in over.items())
-            raising = ", ".join(f"{name}=..." for name in over)
-            flags = " ".join(f"--limit {name}=..." for name in over)
-            raise ResourceLimitError(f"{what} needs {parts}; raise the limit with limits=Limits({raising}) "
-                                     f"(command line: {flags}) or make the run smaller")
+            raise ResourceLimitError(f"{what} needs {parts}; {_raising(over)} or make the run smaller")
+
+
+def _raising(names) -> str:
+    """How to raise the limits ``names``, in Python and on the command line (:func:`in_study` says it for a study)."""
+    return (f"raise the limit with limits=Limits({', '.join(f'{name}=...' for name in names)}) "
+            f"(command line: {' '.join(f'--limit {name}=...' for name in names)})")
+
+
+#: :func:`_raising`'s advice as it stands in a message, its limits' names the group.
+_RAISING = re.compile(r"raise the limit with limits=Limits\(([a-z]+=\.\.\.(?:, [a-z]+=\.\.\.)*)\) "
+                      r"\(command line: [^)]*\)")
+
+
+def in_study(message: str) -> str:
+    """``message`` with the advice of a :class:`ResourceLimitError` to raise a limit (``limits=Limits(steps=...)``,
+    ``--limit steps=...``) said for a study file, whose limits are its ``[limits]`` table (``mdr-events run`` and
+    ``sweep`` take no ``--limit``; round twenty-eight)."""
+    def said(match: re.Match) -> str:
+        keys = ", ".join(f"{item.partition('=')[0]} = ..." for item in match.group(1).split(", "))
+        return f"raise the limit in the study's [limits] table ({keys})"
+
+    return _RAISING.sub(said, message)
 
 
 def _shown(name: str, value: float) -> str:

@@ -140,7 +140,7 @@ class Parameters:
                 continue
             if isinstance(value, bool) or not isinstance(value, numbers.Real):
                 raise TypeError(
-                    f"Parameters.{field.name}={value!r} has type "
+                    f"Parameters.{field.name}={shown(value)} has type "
                     f"{type(value).__name__}; allowed: {_ALLOWED[field.name]}"
                 )
             given, value = value, as_float(value)

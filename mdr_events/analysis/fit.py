@@ -257,7 +257,7 @@ def _fit_job(contact, motion, alpha, reference, options: Mapping[str, Any]) -> F
     options = dict(options)
     if "start" in options:
         if motion is not None and alpha is not None:
-            raise ValueError(f"alpha={alpha!r} is not allowed twice (the third argument is the angle with start=)")
+            raise ValueError(f"alpha={shown(alpha)} is not allowed twice (the third argument is the angle with start=)")
         contact, motion, alpha = options.pop("start"), contact, (motion if motion is not None else alpha)
         if not isinstance(contact, (Parameters, Contact)):
             raise TypeError(f"start={shown(contact)} ({type(contact).__name__}) is not allowed; allowed: a "

@@ -99,7 +99,7 @@ def _checked(params: Parameters, law: RateDependentAdhesion, speed, profile: Sim
     try:
         check_representable(params.replace(v=speed), profile)
     except ValueError as error:
-        raise ValueError(f"speed={speed!r} m/s: {error}") from None
+        raise ValueError(f"speed={shown(speed)} m/s: {error}") from None
     return law, speed
 
 

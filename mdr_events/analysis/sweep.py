@@ -40,7 +40,7 @@ from mdr_events.analysis.sweep_grid import (BYTES_PER_STORED_VALUE, TABLE_DIMENS
                                             name_unit, swept_names, sweeps_thickness)
 from mdr_events.analysis.sweep_runs import (CLOSED_FORM_QUANTITIES, DISCRETE_STEP_PER_SPACING, HISTORY_QUANTITIES,
                                             QUANTITIES, ChunkResult, SweepSpec, run_chunk)
-from mdr_events.analysis.sweep_store import Store, run_variables
+from mdr_events.analysis.sweep_store import Store, run_variables, store_bytes
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models import indenters
@@ -140,7 +140,7 @@ def _before(contact, motion, alpha, method, options: dict[str, Any], grid) -> tu
         raise ValueError("scenario is given twice (second and by keyword); allowed: one")
     scenario = options.pop("scenario", "A" if contact is None else contact)
     if motion is not None and alpha is not None:
-        raise ValueError(f"alpha is given twice ({motion!r} third and alpha={alpha!r}); allowed: one")
+        raise ValueError(f"alpha is given twice ({motion!r} third and alpha={shown(alpha)}); allowed: one")
     simulate_steps_unless_given(method, options, grid)
     return base, scenario, alpha if motion is None else motion
 
@@ -259,7 +259,8 @@ def sweep(grid, contact=None, motion=None, alpha: float | None = None, method: s
         scheduler, its workers, the runs per chunk; or its fields given one by one). Every engine gives the same
         numbers.
     limits : Limits
-        What each run may use (a run past a limit is recorded as failed, with the estimate).
+        What each run may use (a run past a limit is recorded as failed, with the estimate); the sweep's own memory
+        (the grid, the quantities, histories and a store's set-up) is checked against ``memory`` before anything runs.
     **options
         The method's options; the fields of ``output`` and ``engine`` one by one; and the keywords of before
         (``sweep(grid, scenario, alpha, base=params, profile=..., friction=...)``), read by :func:`sweep_job`.
@@ -283,8 +284,11 @@ def sweep(grid, contact=None, motion=None, alpha: float | None = None, method: s
     spec, runs = job.spec, len(job.grid.rows)
     samples = spec.history_samples
     stored = runs * (len(spec.quantities) + (0 if samples is None else len(HISTORY_QUANTITIES) * samples))
-    limits.check(f"the sweep of {runs} runs" + ("" if samples is None else f" with history_samples={samples}"),
-                 memory=BYTES_PER_STORED_VALUE * stored, **({} if samples is None else {"samples": runs * samples}))
+    has_store = job.output.store is not None  # (its set-up counted too: X4, 4.6 GB held under a 2 GiB limit)
+    limits.check(f"the sweep of {runs} runs" + ("" if samples is None else f" with history_samples={samples}")
+                 + (" with a store" if has_store else ""),
+                 memory=BYTES_PER_STORED_VALUE * stored + (store_bytes(runs, len(job.grid.names)) if has_store else 0),
+                 **({} if samples is None else {"samples": runs * samples}))
     runs_done = _Runs.empty(spec, runs)
     chunk = min(job.engine.chunk_size, runs)  # (a store's chunk of chunk_size=1e11 allocated 745 GiB for 2 runs)
     store = None if job.output.store is None else Store(job.output.store, _signature(job), spec.quantities, runs,

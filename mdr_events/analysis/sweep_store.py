@@ -17,7 +17,35 @@ import xarray as xr
 from mdr_events.analysis.sweep_runs import ERROR_CHARACTERS, HISTORY_QUANTITIES, QUANTITIES, ChunkResult
 from mdr_events.io.files import check_output_file, prepare_output_directory
 
-__all__ = ["Store", "run_variables"]
+__all__ = ["Store", "run_variables", "BYTES_PER_STORE_RUN", "BYTES_PER_SIGNATURE_RUN", "BYTES_PER_SIGNATURE_VALUE",
+           "store_bytes"]
+
+#: Bytes per run a store's set-up holds at once beyond the sweep's own arrays: its layout's ``error`` column (4 B a
+#: character of :data:`~mdr_events.analysis.sweep_runs.ERROR_CHARACTERS`, 800 B) and its other columns, lists and the
+#: writer's copy (measured with tracemalloc: 882 B a run between 2e3 and 2e4 runs of 2 names; 4 B a character plus
+#: 160, rounded up; issue 32 round 28, X4: a 4e6-run sweep held 4.6 GB before its first run, under a 2 GiB limit).
+BYTES_PER_STORE_RUN = 4 * ERROR_CHARACTERS + 160
+#: Bytes per run and per swept value the store's signature peaks at (the grid's rows as JSON, through Python's
+#: lists: measured 219, 312, 443 and 636 B a run for 1, 2, 4 and 8 names; 192 + 64 per name bounds each).
+BYTES_PER_SIGNATURE_RUN, BYTES_PER_SIGNATURE_VALUE = 192, 64
+
+
+def store_bytes(runs: int, names: int) -> int:
+    """The memory a store takes before the first run (its signature and layout, or the store read back on resuming).
+
+    Parameters
+    ----------
+    runs : int
+        The sweep's runs.
+    names : int
+        The grid's swept names.
+
+    Returns
+    -------
+    int
+        Bytes, to count against ``Limits.memory`` (:data:`BYTES_PER_STORE_RUN` and the signature's per run).
+    """
+    return runs * (BYTES_PER_STORE_RUN + BYTES_PER_SIGNATURE_RUN + BYTES_PER_SIGNATURE_VALUE * names)
 
 
 def run_variables(quantities: Sequence[str], values: np.ndarray, errors: Sequence[str],

@@ -65,15 +65,15 @@ def times_from_contact(candidate: Candidate, path: Path, time_origin) -> np.ndar
     """The candidate's times as seconds from the path's first contact, by ``time_origin`` (:func:`validate`)."""
     if isinstance(time_origin, str):
         if time_origin not in TIME_ORIGINS:
-            raise ValueError(f"time_origin={time_origin!r} is not allowed; allowed: {', '.join(map(repr, TIME_ORIGINS))} "
+            raise ValueError(f"time_origin={shown(time_origin)} is not allowed; allowed: {', '.join(map(repr, TIME_ORIGINS))} "
                              "or the candidate's time of first contact (s)")
         return candidate.time - (path.first_contact_time() if time_origin == "path_start" else 0.0)
     if isinstance(time_origin, bool) or not isinstance(time_origin, (int, float)) or not math.isfinite(as_float(time_origin)):
-        raise ValueError(f"time_origin={time_origin!r} is not allowed; allowed: {', '.join(map(repr, TIME_ORIGINS))} "
+        raise ValueError(f"time_origin={shown(time_origin)} is not allowed; allowed: {', '.join(map(repr, TIME_ORIGINS))} "
                          "or the candidate's time of first contact (s), a finite number")
     times = candidate.time - float(time_origin)
     if np.any(np.diff(times) <= 0):  # (1e300 s: every time rounds to the same number)
-        raise ValueError(f"time_origin={time_origin!r} is not allowed: the times minus it are no longer distinct in "
+        raise ValueError(f"time_origin={shown(time_origin)} is not allowed: the times minus it are no longer distinct in "
                          "double precision; allowed: the candidate's time of first contact (s), of the size of its "
                          "times")
     return times
@@ -157,7 +157,7 @@ def one_path_job(contact, motion, alpha, options: dict[str, Any], caller: str = 
     layer of finite thickness with what the continuum takes there, the paper's law:
     :func:`~mdr_events.models.simulate.check_layer_taken`)."""
     if isinstance(motion, str) and (alpha is None or np.ndim(alpha) != 0):  # (a scenario of several angles)
-        raise ValueError(f"alpha={alpha!r} is not allowed with scenario {motion!r}; allowed: one angle in degrees")
+        raise ValueError(f"alpha={shown(alpha)} is not allowed with scenario {motion!r}; allowed: one angle in degrees")
     job = model_job(contact, motion, alpha, options)
     Continuum().check_model(job)
     check_exact_solution(job, caller)

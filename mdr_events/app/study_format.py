@@ -14,7 +14,7 @@ from pathlib import Path as FilePath
 from typing import Any, Callable
 
 from mdr_events.io.files import check_file_path, check_output_stem
-from mdr_events.limits import LIMIT_UNITS
+from mdr_events.limits import LIMIT_UNITS, in_study
 from mdr_events.parameters import PARAMETER_UNITS
 
 __all__ = ["StudyError", "SCHEMA", "REQUIRED_TABLES", "MAX_TOML_BYTES", "check_table", "check_tables", "check_computation",
@@ -22,7 +22,11 @@ __all__ = ["StudyError", "SCHEMA", "REQUIRED_TABLES", "MAX_TOML_BYTES", "check_t
 
 
 class StudyError(ValueError):
-    """A study file that cannot be run; the message names the file, table and key."""
+    """A study file that cannot be run; the message names the file, table and key (a limit's advice its ``[limits]``
+    table: :func:`mdr_events.limits.in_study`)."""
+
+    def __init__(self, message: str) -> None:
+        super().__init__(in_study(message))
 
 
 # kind -> (check, description of what is allowed)

@@ -121,7 +121,7 @@ class Layer:
         radius = check_real("radius", radius, "a finite number >= 0 (m)", lambda value: value >= 0.0)
         relative = radius / self.thickness
         if not math.isfinite(relative):
-            raise ValueError(f"radius={radius!r} is not allowed on {self.describe()}: a/h overflows; allowed: a radius "
+            raise ValueError(f"radius={shown(radius)} is not allowed on {self.describe()}: a/h overflows; allowed: a radius "
                              f"whose a/h is a finite double (at most {self.thickness * sys.float_info.max:.3g} m)")
         return relative
 
@@ -145,7 +145,7 @@ class Layer:
         """
         low, high = NU_RANGE
         if not self.is_half_space and not low <= nu <= high:
-            raise ValueError(f"nu={nu!r} is not allowed on {self.describe()}; allowed: a Poisson's ratio in [{low:g}, "
+            raise ValueError(f"nu={shown(nu)} is not allowed on {self.describe()}; allowed: a Poisson's ratio in [{low:g}, "
                              f"{high:g}] on a layer of finite thickness (its compliance's range; the half-space, "
                              "h = inf, takes (-1, 0.5])")
 

@@ -49,14 +49,14 @@ def steps_for(path: Path, steps: int | None, dt: float | None) -> tuple[int, flo
         step the path needs.
     """
     if steps is not None and dt is not None:
-        raise ValueError(f"steps={steps!r} and dt={dt!r} are not allowed together; allowed: one of them")
+        raise ValueError(f"steps={shown(steps)} and dt={shown(dt)} are not allowed together; allowed: one of them")
     duration = path.duration
     if dt is not None:
         if isinstance(dt, bool) or not isinstance(dt, (int, float)) or not (math.isfinite(dt) and dt > 0):
-            raise ValueError(f"dt={dt!r} is not allowed; allowed: a time step in s, finite and > 0")
+            raise ValueError(f"dt={shown(dt)} is not allowed; allowed: a time step in s, finite and > 0")
         count = duration / dt * (1.0 - 1e-12)
         if not count <= MAX_COUNT:  # (a step below 1e-300 s: more steps than any count, inf beyond the doubles)
-            raise ValueError(f"dt={dt!r} is not allowed: the path's {duration:.6g} s would take {count:.3g} steps; "
+            raise ValueError(f"dt={shown(dt)} is not allowed: the path's {duration:.6g} s would take {count:.3g} steps; "
                              f"allowed: a time step in s >= {duration / MAX_COUNT:.3g} (at most {MAX_COUNT:.0e} steps)")
         steps = max(1, math.ceil(count))
     elif steps is None:

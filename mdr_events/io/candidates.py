@@ -92,11 +92,14 @@ PROGRESS_ROWS = 1_000_000
 
 
 def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
-              progress: Callable[[str], None] | None = None) -> dict[str, np.ndarray]:
+              progress: Callable[[str], None] | None = None,
+              read: Collection[str] | None = None) -> dict[str, np.ndarray]:
     """A CSV file's columns (a header row; ``#`` lines are comments and blank lines are skipped, as spreadsheets and
     editors leave them at the end; a UTF-8 byte-order mark is read, as spreadsheets write it), each as float64; its
     rows are checked against ``limits`` before they are read, ``progress`` hears every :data:`PROGRESS_ROWS` of them,
-    and errors name the file's own line number."""
+    and errors name the file's own line number. A column not in ``read`` (default: every column is read) is named
+    with an empty array and its fields are not parsed: any text (a DEM's column of particle labels was refused whole,
+    round 28)."""
     rows = max(_line_count(path) - 1, 0)
     line = [0]  # the file's line the reader is at (comments and blank lines counted)
 
@@ -118,10 +121,11 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
             limits.check(f"reading {path} ({rows} rows of {len(header)} columns)", samples=rows,
                          memory=BYTES_PER_CSV_VALUE * rows * len(header))
             columns = {name: array("d") for name in header}
+            parsed = [index for index, name in enumerate(header) if read is None or name in read]
             for count, row in enumerate(reader, start=1):
                 if progress is not None and count % PROGRESS_ROWS == 0:
                     progress(f"reading {path}: {count} of {rows} rows")
-                _read_row(path, line[0], header, row, columns)
+                _read_row(path, line[0], header, row, columns, parsed)
     except UnicodeDecodeError as error:
         raise ValueError(f"{path}: not UTF-8 text (byte {error.start}: {error.reason}); allowed: a CSV file with a "
                          "header row (UTF-8 text)") from None
@@ -131,12 +135,15 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
     return {name: np.frombuffer(values, dtype=float).copy() for name, values in columns.items()}
 
 
-def _read_row(path: Path, number: int, header: list[str], row: list[str], columns: dict[str, array]) -> None:
-    """Append a CSV row's numbers (an empty field: ``nan``) to ``columns``; ``ValueError`` naming the file's line
-    ``number`` where the row is not as long as the header or a field is no number."""
+def _read_row(path: Path, number: int, header: list[str], row: list[str], columns: dict[str, array],
+              parsed: list[int]) -> None:
+    """Append a CSV row's numbers (an empty field: ``nan``) in the columns ``parsed`` (their indices) to ``columns``;
+    ``ValueError`` naming the file's line ``number`` where the row is not as long as the header or a field is no
+    number."""
     if len(row) != len(header):
         raise ValueError(f"{path}: line {number} has {len(row)} fields; allowed: {len(header)} as in the header")
-    for name, text in zip(header, row):
+    for index in parsed:
+        name, text = header[index], row[index]
         try:
             columns[name].append(plain_number(text) if text.strip() else math.nan)
         except ValueError:
@@ -151,7 +158,7 @@ def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
     problem = input_file_problem(path)
     if problem is not None:
         raise ValueError(f"table={str(path)!r}{problem}; allowed: a CSV file with the columns r and f (m)")
-    columns = _read_csv(path)
+    columns = _read_csv(path, read=("r", "f"))
     missing = [name for name in ("r", "f") if name not in columns]
     if missing:
         raise ValueError(f"{path}: no column {' or '.join(map(repr, missing))} (columns: {', '.join(columns)}); "
@@ -174,8 +181,8 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
         if problem is not None:
             raise ValueError(f"candidate={str(candidate)!r}{problem}; allowed: a CSV or netCDF file, a Dataset or a "
                              "mapping of arrays")
-        if path.suffix.lower() == ".csv":
-            return _read_csv(path, limits, progress), {}
+        if path.suffix.lower() == ".csv":  # (the other columns are named, not parsed: any text)
+            return _read_csv(path, limits, progress, {*CANDIDATE_QUANTITIES, *wanted}), {}
         # (loaded whole: its size counts as memory before it is read, as a CSV's rows do)
         limits.check(f"reading {path} ({path.stat().st_size} bytes)", memory=path.stat().st_size)
         candidate = load_netcdf(path, str(path), "a CSV file with a header or a netCDF-3 file")

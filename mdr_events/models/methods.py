@@ -217,7 +217,7 @@ def check_time_step(paths: list[Path], step: float, dt: float | None, n_steps: i
     longest = max(path.duration - path.first_contact_time() for path in paths)
     count = longest / step
     if dt is not None and not count <= MAX_COUNT:  # (round twenty-one: dt=5e-324 gave int(inf), an internal error)
-        raise ValueError(f"dt={dt!r} is not allowed: the longest case's {longest:.6g} s from first contact would "
+        raise ValueError(f"dt={shown(dt)} is not allowed: the longest case's {longest:.6g} s from first contact would "
                          f"take {count:.3g} steps; allowed: a time step in s >= {longest / MAX_COUNT:.3g} (at most "
                          f"{MAX_COUNT:.0e} steps, which the limits refuse long before: --limit steps)")
     shortest = math.inf
@@ -231,11 +231,11 @@ def check_time_step(paths: list[Path], step: float, dt: float | None, n_steps: i
     if step <= largest * (1 + 1e-12):
         return
     if dt is not None:
-        raise ValueError(f"dt={dt!r} is too coarse: the shortest path segment in contact lasts {shortest:.6g} s; "
+        raise ValueError(f"dt={shown(dt)} is too coarse: the shortest path segment in contact lasts {shortest:.6g} s; "
                          f"allowed: dt <= {largest:.6g} s ({MIN_STEPS_PER_SEGMENT} steps per segment)")
     needed = math.ceil(longest / largest)
     given = DEFAULT_STEPS if n_steps is None else n_steps
-    raise ValueError(f"n_steps={given!r} is too few: the shortest path segment in contact lasts {shortest:.6g} s of "
+    raise ValueError(f"n_steps={shown(given)} is too few: the shortest path segment in contact lasts {shortest:.6g} s of "
                      f"{longest:.6g} s; allowed: n_steps >= {needed} (or dt <= {largest:.6g} s)")
 
 

@@ -139,7 +139,7 @@ def _custom_paths(scenario: Path | Sequence[Path] | Mapping[str, Path]) -> dict[
         labels = [f"path {number}" for number in range(1, len(paths) + 1)]
         where = [f"scenario[{index}]" for index in range(len(paths))]
     if not paths:
-        raise ValueError(f"scenario={scenario!r} is not allowed: it holds no path; allowed: {SCENARIO_ALLOWED}")
+        raise ValueError(f"scenario={shown(scenario)} is not allowed: it holds no path; allowed: {SCENARIO_ALLOWED}")
     for label in labels:
         if not isinstance(label, str) or not label:
             raise TypeError(f"scenario has the label {label!r} ({type(label).__name__}); allowed: labels that are "
@@ -513,6 +513,6 @@ def as_motion(motion, alpha=None, d_max: float | None = None, v: float | None = 
         raise TypeError(f"scenario={shown(motion)} ({type(motion).__name__}) is not allowed; allowed: "
                         f"{SCENARIO_ALLOWED}, a Scenario or Paths")
     if alpha is not None:
-        raise ValueError(f"alpha={alpha!r} is not allowed with custom paths (their waypoints fix the motion); "
+        raise ValueError(f"alpha={shown(alpha)} is not allowed with custom paths (their waypoints fix the motion); "
                          "allowed: alpha=None")
     return Paths(motion) if d_max is None and v is None else Paths.named_by(motion, d_max, v)

@@ -59,10 +59,10 @@ def exit_depth(params: Parameters, profile: SimulatedProfile = None) -> float:
 def _check_angle(alpha: float) -> float:
     values = validate_alpha(alpha)
     if values.ndim != 0:
-        raise TypeError(f"alpha={alpha!r}: a path takes one angle (degrees)")
+        raise TypeError(f"alpha={shown(alpha)} is not allowed; allowed: one angle in degrees (a path takes one)")
     angle = float(values)
     if angle > 0.0 and math.tan(math.radians(angle)) == 0.0:  # (5e-324°: its radians underflow to 0)
-        raise ValueError(f"alpha={alpha!r} (degrees) is not allowed: its tangent underflows to 0 in double precision; "
+        raise ValueError(f"alpha={shown(alpha)} (degrees) is not allowed: its tangent underflows to 0 in double precision; "
                          "allowed: 0, or an angle whose path stays finite (see the path's extent limit)")
     return angle
 
@@ -274,7 +274,7 @@ class Path:
         angle = _check_angle(alpha)
         final = 2.0 * params.d_max if final_depth is None else float(final_depth)
         if not final > params.d_max:
-            raise ValueError(f"final_depth={final!r} is not allowed; allowed: > d_max = {params.d_max!r}")
+            raise ValueError(f"final_depth={shown(final)} is not allowed; allowed: > d_max = {params.d_max!r}")
         if angle == 0.0:
             raise ValueError("alpha=0.0: a path parallel to the surface never goes deeper than d_max; "
                              "allowed: 0 < alpha <= 90")

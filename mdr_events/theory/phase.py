@@ -25,7 +25,7 @@ from mdr_events.theory import analytic, mindlin, power_law, tabulated
 from mdr_events.theory.job import ContactLike, contact_alone, on_layer, theory_job
 from mdr_events.theory.kinds import theory_of
 from mdr_events.theory.scales import check_representable
-from mdr_events.validation import check_choice, check_distinct, validate_alpha
+from mdr_events.validation import check_choice, check_distinct, shown, validate_alpha
 
 __all__ = ["phase_diagram", "default_angles", "PHASE_DIAGRAM_CONTENT", "PHASE_DIAGRAM_VARIABLES"]
 
@@ -129,7 +129,7 @@ def phase_diagram(
         params, profile, friction = theory_job(contact, d_max, profile, friction, what="phase_diagram")
     check_choice("scenario", scenario, analytic.SCENARIOS)
     if isinstance(alpha, str) and alpha in ("A", "B"):  # phase_diagram(contact, "B"): the scenario given as alpha
-        raise TypeError(f"alpha={alpha!r} is not allowed: a scenario's name where the angles go; allowed: angles in "
+        raise TypeError(f"alpha={shown(alpha)} is not allowed: a scenario's name where the angles go; allowed: angles in "
                         f"degrees, and the scenario by name: phase_diagram(contact, scenario={alpha!r})")
     alpha = default_angles() if alpha is None else alpha
     limits, count = check_limits(limits), values_in(alpha)  # (counted before the angles are read: copies and a sort)

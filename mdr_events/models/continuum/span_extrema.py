@@ -11,6 +11,8 @@ from typing import NamedTuple
 import numpy as np
 from scipy import optimize
 
+from mdr_events.validation import shown
+
 from .branch import Branch
 from .graded import span_variable
 from .solution import (PathSolution, _compressed_zone, _fill_normal_force, _fill_tangential_force, _pinned_kinematics,
@@ -311,7 +313,7 @@ def extremum(solution: PathSolution, quantity: str, largest: bool = True,
         A quantity not in :data:`EXTREMUM_QUANTITIES`.
     """
     if quantity not in EXTREMUM_QUANTITIES:
-        raise ValueError(f"quantity={quantity!r} is not allowed; allowed: {', '.join(EXTREMUM_QUANTITIES)}")
+        raise ValueError(f"quantity={shown(quantity)} is not allowed; allowed: {', '.join(EXTREMUM_QUANTITIES)}")
     if quantity == "tangential_force" and solution.compressed is not None:  # the compressed zone's spans hold F_x
         return extremum(solution.compressed, quantity, largest)
     scan = scan_spans(solution) if scan is None else scan

@@ -31,6 +31,8 @@ import numpy as np
 from scipy.integrate import OdeSolution
 from scipy.integrate._ivp.rk import Dop853DenseOutput
 
+from mdr_events.validation import shown
+
 from .rate_march import _crossed
 from .span_march import Marched, _first_root
 from .tolerances import EPS
@@ -137,7 +139,7 @@ def radau_rule(count: int = PIECE_NODES) -> Rule:
 def _check_count(count: int, least: int) -> None:
     """Refuse a rule's ``count`` outside ``[least, NODES]`` by name."""
     if not least <= count <= NODES:
-        raise ValueError(f"count={count!r} is not allowed; allowed: a whole number of points in [{least}, {NODES}]")
+        raise ValueError(f"count={shown(count)} is not allowed; allowed: a whole number of points in [{least}, {NODES}]")
 
 
 def _matrices(nodes: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -13,7 +13,7 @@ from mdr_events.theory.analytic.arguments import _rel
 from mdr_events.theory.analytic.normal import hertz_contact_radius, jkr_contact_radius, jump_off
 from mdr_events.theory.analytic.onset import _onset_parameters
 from mdr_events.theory.job import ContactLike, on_layer
-from mdr_events.validation import check_choice, check_flag
+from mdr_events.validation import check_choice, check_flag, shown
 
 __all__ = ["critical_angle", "CRITICAL_ANGLE_SCENARIOS"]
 
@@ -87,7 +87,7 @@ def critical_angle(contact: ContactLike, scenario: Literal["A", "B", "B+"] = "A"
     check_choice("scenario", scenario, CRITICAL_ANGLE_SCENARIOS)
     check_flag("adhesion", adhesion)
     if final_depth is not None and scenario != "B+":
-        raise ValueError(f"final_depth={final_depth!r} is not allowed with scenario {scenario!r}; "
+        raise ValueError(f"final_depth={shown(final_depth)} is not allowed with scenario {scenario!r}; "
                          "allowed: None (final_depth is for scenario 'B+')")
     if p is None:
         from mdr_events.theory.layer.slip_onset import critical_angle_on_layer
@@ -96,7 +96,7 @@ def critical_angle(contact: ContactLike, scenario: Literal["A", "B", "B+"] = "A"
     if scenario == "B+":
         final = 2.0 * p.d_max if final_depth is None else final_depth
         if not (isinstance(final, (int, float)) and math.isfinite(final) and final > p.d_max):
-            raise ValueError(f"final_depth={final!r} is not allowed; allowed: a finite depth > d_max = {p.d_max!r} m")
+            raise ValueError(f"final_depth={shown(final)} is not allowed; allowed: a finite depth > d_max = {p.d_max!r} m")
         if adhesion:
             radius = jkr_contact_radius(final, p, p.dgamma0)
         else:

@@ -14,7 +14,7 @@ from mdr_events.theory.analytic.normal import jump_off
 from mdr_events.theory.blocks import blockwise
 from mdr_events.theory.roots import positive_polynomial_root
 from mdr_events.theory.job import ContactLike, on_layer, paper_parameters
-from mdr_events.validation import check_choice, check_flag, validate_alpha
+from mdr_events.validation import check_choice, check_flag, shown, validate_alpha
 
 __all__ = ["d_crit", "d_crit_curves", "d_crit_rows", "D_CRIT_BYTES_PER_ANGLE", "D_CRIT_ROWS_BYTES_PER_ANGLE",
            "SCENARIOS", "BRANCHES"]
@@ -121,7 +121,7 @@ def d_crit(
     params = None if on_layer(contact) else _onset_parameters(contact, "d_crit", d_max)
     check_choice("scenario", scenario, SCENARIOS)
     if scenario == "A" and branch is not None:
-        raise ValueError(f"branch={branch!r} is not allowed with scenario 'A'; allowed: None (branch is for scenario B)")
+        raise ValueError(f"branch={shown(branch)} is not allowed with scenario 'A'; allowed: None (branch is for scenario B)")
     branch = "pull-off" if branch is None else branch
     check_choice("branch", branch, BRANCHES)
     check_flag("adhesion", adhesion)

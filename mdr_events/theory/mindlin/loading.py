@@ -14,7 +14,7 @@ from mdr_events.contact.indenters import Profile
 from mdr_events.theory import power_law, symbolic
 from mdr_events.theory.kinds import theory_of
 from mdr_events.theory.mindlin.caps import _checked, _contact_radius, _radius, _tau0_per_radius, coulomb_cap_ratio
-from mdr_events.validation import real_array
+from mdr_events.validation import real_array, shown
 
 __all__ = ["full_slip_shift", "full_slip_force", "virgin_force", "tangential_force", "loop_energy"]
 
@@ -151,7 +151,7 @@ def virgin_force(shift, depth: float, friction: FrictionLaw | str | None, params
     depth, friction, profile = _checked(depth, friction, params, profile)
     values = real_array("shift", shift, "real numbers (m)")
     if np.any(np.isnan(values)):
-        raise ValueError(f"shift={shift!r} is not allowed; allowed: real numbers, not nan (m)")
+        raise ValueError(f"shift={shown(shift)} is not allowed; allowed: real numbers, not nan (m)")
     force = _virgin_curve(depth, friction, params, profile, radius)(values)
     return float(force) if np.ndim(shift) == 0 else force
 

@@ -14,7 +14,7 @@ from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
 from mdr_events.theory import symbolic
 from mdr_events.theory.analytic.arguments import check_work
 from mdr_events.theory.forms import ClosedForms
-from mdr_events.validation import check_flag, validate_alpha
+from mdr_events.validation import check_flag, shown, validate_alpha
 
 __all__ = ["check_profile", "check_work", "as_output", "path_angles", "final_depth_of", "ADHESIVE_MIN_EXPONENT"]
 
@@ -86,7 +86,7 @@ def final_depth_of(params: Parameters, final_depth) -> float:
     finite depth beyond ``d_max``."""
     final = 2.0 * params.d_max if final_depth is None else final_depth
     if not (isinstance(final, (int, float)) and math.isfinite(final) and final > params.d_max):
-        raise ValueError(f"final_depth={final!r} is not allowed; allowed: a finite depth > d_max = {params.d_max!r} m")
+        raise ValueError(f"final_depth={shown(final)} is not allowed; allowed: a finite depth > d_max = {params.d_max!r} m")
     return final
 
 
