@@ -234,7 +234,7 @@ def equivalent_profile(x, profile: TabulatedProfile):
     float or numpy.ndarray
         ``g(x)`` (m), the shape of ``x``.
     """
-    _finite(x=x)
+    (x,) = _finite(x=x)
     values = equivalent(profile)(x)
     return float(values) if np.ndim(x) == 0 else values
 
@@ -660,7 +660,7 @@ def normal_force(depth, contact_radius, profile: TabulatedProfile, params: Param
     float or numpy.ndarray
         ``F_N`` (N; negative: tensile).
     """
-    _finite(depth=depth, contact_radius=contact_radius)
+    depth, contact_radius = _finite(depth=depth, contact_radius=contact_radius)
     return _normal_force(depth, contact_radius, profile, params)
 
 
@@ -693,7 +693,7 @@ def contact_radius(depth, profile: TabulatedProfile, params: Parameters, work_of
     float or numpy.ndarray
         The radius ``a`` (m) or ``nan``, the shape of ``depth``.
     """
-    _finite(depth=depth)
+    (depth,) = _finite(depth=depth)
     radii = branch(profile, params, work_of_adhesion).radii(depth)
     return float(radii) if np.ndim(depth) == 0 else radii
 

@@ -27,7 +27,7 @@ def critical_shift(contact_radius, contact: ContactLike):
     float or numpy.ndarray
         The critical shift ``ū`` (m) of a spring: beyond it the spring slides.
     """
-    _finite(contact_radius=contact_radius)
+    (contact_radius,) = _finite(contact_radius=contact_radius)
     params = paper_parameters(contact, "critical_shift")
     relation = _rel("critical_shift").numeric
     return _representable(lambda: relation(contact_radius, params.tau0, params.G_star), "critical_shift",
@@ -56,7 +56,7 @@ def fretting_dissipated_energy(contact_radius, amplitude, contact: ContactLike):
     float or numpy.ndarray
         The energy dissipated per cycle ``W`` (J).
     """
-    _finite(contact_radius=contact_radius, amplitude=amplitude)
+    contact_radius, amplitude = _finite(contact_radius=contact_radius, amplitude=amplitude)
     params = paper_parameters(contact, "fretting_dissipated_energy")
     relation = _rel("fretting_dissipated_energy").numeric
     return _representable(lambda: relation(contact_radius, amplitude, params.tau0, params.G_star),
