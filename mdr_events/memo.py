@@ -16,7 +16,7 @@ import dataclasses
 import functools
 from typing import Any, Callable, TypeVar
 
-__all__ = ["exact_key", "kept"]
+__all__ = ["exact_key", "kept", "hashable"]
 
 _Result = TypeVar("_Result")
 
@@ -119,3 +119,25 @@ def kept(size: int) -> Callable[[Callable[..., _Result]], Callable[..., _Result]
         run.cache_clear, run.cache_info = by_call.cache_clear, by_call.cache_info
         return run
     return decorate
+
+
+def hashable(value: Any) -> bool:
+    """Whether ``value`` has a hash (``functools.lru_cache`` can key it): a user's subclass of a frozen dataclass that
+    defines ``__eq__`` alone has none (Python sets its ``__hash__`` to ``None``), which a cache of the indenter's
+    must compute around instead of ending in ``unhashable type`` (issue 32 round 28 A3).
+
+    Parameters
+    ----------
+    value : object
+        Any value.
+
+    Returns
+    -------
+    bool
+        ``True`` if ``hash(value)`` succeeds.
+    """
+    try:
+        hash(value)
+    except TypeError:
+        return False
+    return True

@@ -92,3 +92,64 @@ def test_with_radius_at_refuses_many_radii_or_depths_by_name(argument):
     given[argument] = [given[argument]]
     with pytest.raises(TypeError, match=rf"^{argument}=\[.*\] \(list\) is not allowed; allowed: a finite number > 0"):
         me.power_law.with_radius_at(2.0, **given)
+
+
+# --- A3: a user's subclass of an indenter type that defines ``__eq__`` alone (Python then sets its ``__hash__`` to
+# ``None``). Round 27's Z1 made a subclass run as its base, but the caches keyed by the indenter
+# (``functools.lru_cache``: the layer's medium and its branch radius, the table's equivalent profile and branch) ended
+# in ``TypeError: unhashable type`` on a layer (power law, flat punch) and everywhere for a table. Now the layer's two
+# are computed around the cache for an unhashable indenter (``memo.hashable``) and the table's are kept by exact value
+# (``memo.kept``: the table's digest). --------------------------------------------------------------------------------
+
+
+class _EqualityPowerLaw(me.PowerLaw):
+    """A user's power law comparing by its own ``__eq__`` (so unhashable)."""
+
+    def __eq__(self, other):
+        return super().__eq__(other)
+
+
+class _EqualityPunch(me.FlatPunch):
+    """A user's flat punch comparing by its own ``__eq__`` (so unhashable)."""
+
+    def __eq__(self, other):
+        return super().__eq__(other)
+
+
+class _EqualityTable(me.TabulatedProfile):
+    """A user's table comparing by its own ``__eq__`` (so unhashable)."""
+
+    def __eq__(self, other):
+        return super().__eq__(other)
+
+
+def _paraboloid_table(kind: type) -> me.TabulatedProfile:
+    r = np.linspace(0.0, 8e-3, 40)
+    return kind(r, r**2 / (2 * PAPER.R))
+
+
+_UNHASHABLE_CASES = {
+    "power law on a layer": (lambda: _EqualityPowerLaw(0.2, 1.0), lambda: me.PowerLaw(0.2, 1.0), 2e-3),
+    "flat punch on a layer": (lambda: _EqualityPunch(1e-3), lambda: me.FlatPunch(1e-3), 2e-3),
+    "table on the half-space": (lambda: _paraboloid_table(_EqualityTable), lambda: _paraboloid_table(me.TabulatedProfile),
+                                None),
+}
+
+
+@pytest.mark.parametrize("method", ["continuum", "discrete"])
+@pytest.mark.parametrize("name", sorted(_UNHASHABLE_CASES))
+def test_an_unhashable_subclass_runs_as_its_base(name, method):
+    """Class 2 (an accepted input gives its result), A3: ``simulate`` of a user's indenter subclass that defines
+    ``__eq__`` alone gives its base's results exactly (the same computation); it ended in ``TypeError: unhashable
+    type`` from a cache keyed by the indenter."""
+    make_user, make_base, thickness = _UNHASHABLE_CASES[name]
+    results = []
+    for indenter in (make_user(), make_base()):
+        contact = dataclasses.replace(me.Contact.paper(), indenter=indenter)
+        if thickness is not None:
+            contact = contact.replace(h=thickness)
+        results.append(me.simulate(contact, "A", alpha=[30.0], method=method, samples=9)
+                       if method == "continuum" else me.simulate(contact, "A", alpha=[30.0], method=method))
+    user, base = results
+    for name_ in ("normal_force", "tangential_force", "contact_radius"):
+        assert np.array_equal(user[name_].values, base[name_].values, equal_nan=True)

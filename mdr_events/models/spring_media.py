@@ -51,6 +51,7 @@ from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic, mindlin, symbolic
 from mdr_events.theory.kinds import theory_of
 from mdr_events.validation import shown
+from mdr_events.memo import hashable
 
 __all__ = ["HalfSpaceSprings", "LayerSprings", "FrictionlessLayerSprings", "Springs", "springs_of"]
 
@@ -365,7 +366,10 @@ class LayerSprings:
         """
         if theory_of(self.indenter).flat_face:  # (the face's radius from the first touch on)
             return float(indenters.branch_radius(depth, self.params, self.params.dgamma0, self.indenter))
-        return _layer_branch_radius(self.params, self.indenter, self.layer, float(depth))
+        arguments = (self.params, self.indenter, self.layer, float(depth))
+        # (kept by the indenter's hash; an unhashable user subclass computed each time: issue 32 round 28 A3)
+        return _layer_branch_radius(*arguments) if hashable(self.indenter) else \
+            _layer_branch_radius.__wrapped__(*arguments)
 
     def normal_weights(self, positions: np.ndarray) -> np.ndarray:
         r"""The springs' normal stiffness in units of ``E* Δx``: ``k(x_j)/E*``

@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import FlatPunch, Paraboloid, TabulatedProfile, indenter_kind
 from mdr_events.contact.layer import HALF_SPACE, Layer
+from mdr_events.memo import hashable
 from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law, symbolic, tabulated
 
@@ -326,7 +327,11 @@ def layer_medium(params: Parameters, profile, layer: Layer) -> HalfSpaceMedium:
     ValueError
         Another indenter.
     """
-    return _layer_medium(params, Paraboloid(params.R) if profile is None else profile, layer)
+    indenter = Paraboloid(params.R) if profile is None else profile
+    # (kept by the indenter's hash; a user's subclass that defines ``__eq__`` alone has none: made each time, as it
+    # ended in ``unhashable type``, issue 32 round 28 A3)
+    return _layer_medium(params, indenter, layer) if hashable(indenter) else \
+        _layer_medium.__wrapped__(params, indenter, layer)
 
 
 @functools.lru_cache(maxsize=16)
