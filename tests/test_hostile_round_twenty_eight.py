@@ -189,3 +189,22 @@ def test_a_pinned_span_long_after_first_contact_keeps_its_extremum():
         scale = size if kind.startswith("tangential") else max(abs(before["normal_force_max"]),
                                                                 abs(before["normal_force_min"]))
         assert abs(polynomial[kind] - before[kind]) <= ROUNDING_SHARE * scale, kind
+
+
+# --- A5: ``fretting_dissipated_energy`` below the critical shift. Its docstring says a loop of amplitude ``X <= ū``
+# sticks and dissipates nothing, but the parallelogram's area ``4πa²τ0 (X − ū)`` was returned there: a negative
+# energy (a = 1 mm, X = 1 µm: −1.2e-4 J, ū = 0.23 mm). Now 0 there, the formula above. ------------------------------
+
+
+@pytest.mark.parametrize("amplitude", [0.0, 1e-6, 0.999], ids=["0", "1 um", "0.999 u"])
+def test_a_fretting_loop_within_the_critical_shift_dissipates_nothing(amplitude):
+    """Class 2 (an accepted input gives a right result), A5: a loop within the critical shift ``ū = πaτ0/(2G*)``
+    (13) sticks, ``W = 0``, scalar and array alike; it was ``4πa²τ0 (X − ū) < 0``. ``0.999 u`` is a share of ``ū``."""
+    radius = 1e-3
+    shift = me.analytic.critical_shift(radius, _CONTACT)
+    x = amplitude * shift if amplitude == 0.999 else amplitude
+    assert me.fretting_dissipated_energy(radius, x, _CONTACT) == 0.0
+    above = 2.0 * shift  # (a loop beyond it: the parallelogram, 4πa²τ0 ū > 0, unchanged)
+    energies = me.fretting_dissipated_energy(np.array([radius, radius]), np.array([x, above]), _CONTACT)
+    assert energies[0] == 0.0
+    assert energies[1] == pytest.approx(4.0 * np.pi * radius**2 * PAPER.tau0 * shift, rel=1e-12)
