@@ -19,6 +19,7 @@ import pytest
 
 import mdr_events as me
 from mdr_events.models.continuum import solve_path
+from mdr_events.theory import flat_punch
 
 PAPER = me.Parameters.paper()
 #: How much smaller than the paper's the work of adhesion of A1's runs is: 1e-4 takes ~1 s (478 spans, under the
@@ -98,6 +99,9 @@ def test_the_span_limit_is_set_by_name_on_the_command_line():
 
 _CONTACT = me.Contact.paper()
 _CONE = me.PowerLaw(0.2, 1.0)
+_PUNCH = me.FlatPunch(1e-3)
+#: The paper's paraboloid as a table (radius 8 mm, 40 points).
+_TABLE = me.TabulatedProfile(np.linspace(0.0, 8e-3, 40), np.linspace(0.0, 8e-3, 40) ** 2 / (2 * PAPER.R))
 #: Two radii (m) or depths (m) of the paper's contact.
 _TWO = [1e-4, 2e-4]
 _ARRAY_LIKE_CASES = {
@@ -108,7 +112,19 @@ _ARRAY_LIKE_CASES = {
     "fretting_dissipated_energy": lambda x: me.fretting_dissipated_energy(x, x, _CONTACT),
     "power_law.normal_force": lambda x: me.power_law.normal_force(x, x, _CONE, PAPER),
     "power_law.branch_normal_force": lambda x: me.power_law.branch_normal_force(x, _CONE, PAPER, 0.1),
+    "power_law.equivalent_profile": lambda x: me.power_law.equivalent_profile(x, _CONE),
+    "power_law.branch_depth": lambda x: me.power_law.branch_depth(x, _CONE, PAPER, 0.1),
+    "power_law.contact_radius": lambda x: me.power_law.contact_radius(x, _CONE, PAPER, 0.1),
+    "flat_punch.normal_force": lambda x: flat_punch.normal_force(x, _PUNCH.radius, _PUNCH, PAPER),
+    "flat_punch.radius": lambda x: flat_punch.radius(x, _PUNCH, PAPER, 0.1),
+    "flat_punch.coulomb_force": lambda x: flat_punch.coulomb_force(x, PAPER, _PUNCH.radius),
+    "tabulated.equivalent_profile": lambda x: me.tabulated.equivalent_profile(x, _TABLE),
+    "tabulated.normal_force": lambda x: me.tabulated.normal_force(x, x, _TABLE, PAPER),
+    "tabulated.contact_radius": lambda x: me.tabulated.contact_radius(x, _TABLE, PAPER, 0.1),
 }
+#: One number the paper's contact takes, at which int64 arithmetic overflows (its cube is 2.7e19 > 9.2e18): the
+#: review's case of ``analytic.normal_force``, ``-8.21e25`` N computed in int64 against ``-2.59e26`` as floats.
+_BIG_INT = 3_000_000
 
 
 @pytest.mark.parametrize("kind", [list, tuple], ids=["list", "tuple"])
@@ -118,6 +134,17 @@ def test_an_array_like_given_as_a_list_is_read_as_its_array(name, kind):
     array of the same numbers gives, entry for entry (the same computation); it was Python's own TypeError."""
     expected = _ARRAY_LIKE_CASES[name](np.array(_TWO))
     assert np.array_equal(_ARRAY_LIKE_CASES[name](kind(_TWO)), expected)
+
+
+@pytest.mark.parametrize("kind", [np.int64, np.array], ids=["int64", "0-d int array"])
+def test_one_integer_number_is_computed_as_a_float(kind):
+    """A2's class (an ``array_like`` computed as its float array), one number: an ``np.int64`` or a 0-d int array
+    was handed back by ``_finite`` as given and computed in int64, which overflows silently (``d³`` here); now it is
+    computed as the float of the same value, bit for bit."""
+    given = kind(_BIG_INT)
+    assert np.asarray(given).dtype.kind == "i" and np.ndim(given) == 0
+    expected = me.analytic.normal_force(float(_BIG_INT), float(_BIG_INT), _CONTACT)
+    assert me.analytic.normal_force(given, given, _CONTACT) == expected
 
 
 @pytest.mark.parametrize("argument", ["radius", "depth"])

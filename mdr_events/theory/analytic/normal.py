@@ -117,7 +117,7 @@ def hertz_contact_radius(depth, contact: ContactLike):
     float or numpy.ndarray
         The contact radius ``a`` (m).
     """
-    _finite(depth=depth)
+    (depth,) = _finite(depth=depth)
     params = paper_parameters(contact, "hertz_contact_radius")
     return _rel("hertz_radius").numeric(np.maximum(depth, 0.0), params.R)
 
@@ -262,7 +262,7 @@ def jkr_contact_radius(depth, contact: ContactLike, work_of_adhesion: float):
         The contact radius ``a`` (m) on the stable branch of (9), ``nan`` below the jump-off depth; the shape of
         ``depth``.
     """
-    _finite(depth=depth)
+    (depth,) = _finite(depth=depth)
     work_of_adhesion = _one_work(work_of_adhesion)
     params = paper_parameters(contact, "jkr_contact_radius")
     depth_arr = np.asarray(depth, dtype=float)
