@@ -44,6 +44,7 @@ from mdr_events.contact.elastomer import Elastomer
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import FlatPunch, Paraboloid, PowerLaw
 from mdr_events.contact.layer import HALF_SPACE, Layer, LayerBase
+from mdr_events.memo import cached
 from mdr_events.models import indenters
 from mdr_events.models.indenters import SimulatedProfile
 from mdr_events.models.paths import Path
@@ -51,7 +52,6 @@ from mdr_events.parameters import Parameters
 from mdr_events.theory import analytic, mindlin, symbolic
 from mdr_events.theory.kinds import theory_of
 from mdr_events.validation import shown
-from mdr_events.memo import hashable
 
 __all__ = ["HalfSpaceSprings", "LayerSprings", "FrictionlessLayerSprings", "Springs", "springs_of"]
 
@@ -366,10 +366,7 @@ class LayerSprings:
         """
         if theory_of(self.indenter).flat_face:  # (the face's radius from the first touch on)
             return float(indenters.branch_radius(depth, self.params, self.params.dgamma0, self.indenter))
-        arguments = (self.params, self.indenter, self.layer, float(depth))
-        # (kept by the indenter's hash; an unhashable user subclass computed each time: issue 32 round 28 A3)
-        return _layer_branch_radius(*arguments) if hashable(self.indenter) else \
-            _layer_branch_radius.__wrapped__(*arguments)
+        return _layer_branch_radius(self.params, self.indenter, self.layer, float(depth))
 
     def normal_weights(self, positions: np.ndarray) -> np.ndarray:
         r"""The springs' normal stiffness in units of ``E* Δx``: ``k(x_j)/E*``
@@ -622,7 +619,7 @@ class FrictionlessLayerSprings(LayerSprings):
         return np.zeros(np.shape(positions))
 
 
-@functools.lru_cache(maxsize=64)
+@cached(64)  # (a user's unhashable indenter subclass by its exact value: issue 32 round 28 A3)
 def _layer_branch_radius(params: Parameters, indenter: Paraboloid | PowerLaw, layer: Layer, depth: float) -> float:
     """The radius at ``depth`` on the layer's ``Δγ0`` branch (:func:`~mdr_events.layer_normal_curve`), kept for the
     checks of a run that ask it twice (the spacing and the size)."""

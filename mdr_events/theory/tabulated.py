@@ -29,12 +29,12 @@ from typing import NamedTuple
 import numpy as np
 from scipy import interpolate, optimize
 
+from mdr_events.memo import cached
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.theory import power_law, symbolic
 from mdr_events.theory.analytic.arguments import _finite
 from mdr_events.validation import validate_alpha
-from mdr_events.memo import kept
 
 __all__ = ["SUBDIVISIONS", "GRID_POINTS", "END_SHARE", "EquivalentProfile", "TabulatedBranch", "equivalent", "branch",
            "equivalent_profile", "normal_force", "contact_radius", "jump_off", "pull_off_force", "d_crit_A",
@@ -199,7 +199,7 @@ class ScalarPiecewise:
         return value
 
 
-@kept(32)  # (by exact values: an unhashable user subclass of the table too, issue 32 round 28 A3)
+@cached(32)  # (an unhashable user subclass of the table by its exact value, issue 32 round 28 A3)
 def equivalent(profile: TabulatedProfile) -> EquivalentProfile:
     """The :class:`EquivalentProfile` of ``profile``, computed once per process.
 
@@ -633,7 +633,7 @@ def branch(profile: TabulatedProfile, params: Parameters, work_of_adhesion: floa
     return _branch(profile, params, power_law.check_work(work_of_adhesion))
 
 
-@kept(64)
+@cached(64)
 def _branch(profile: TabulatedProfile, params: Parameters, work_of_adhesion: float) -> TabulatedBranch:
     """:func:`branch` of a work checked (a float: the cache's key, which an array or a list cannot be)."""
     return TabulatedBranch(_check(profile), params, work_of_adhesion)

@@ -25,13 +25,12 @@ part runs there spring by spring (:mod:`.play_run`), with or without adhesion.
 
 from __future__ import annotations
 
-import functools
 from typing import TYPE_CHECKING
 
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import FlatPunch, Paraboloid, TabulatedProfile, indenter_kind
 from mdr_events.contact.layer import HALF_SPACE, Layer
-from mdr_events.memo import hashable
+from mdr_events.memo import cached
 from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law, symbolic, tabulated
 
@@ -328,13 +327,10 @@ def layer_medium(params: Parameters, profile, layer: Layer) -> HalfSpaceMedium:
         Another indenter.
     """
     indenter = Paraboloid(params.R) if profile is None else profile
-    # (kept by the indenter's hash; a user's subclass that defines ``__eq__`` alone has none: made each time, as it
-    # ended in ``unhashable type``, issue 32 round 28 A3)
-    return _layer_medium(params, indenter, layer) if hashable(indenter) else \
-        _layer_medium.__wrapped__(params, indenter, layer)
+    return _layer_medium(params, indenter, layer)
 
 
-@functools.lru_cache(maxsize=16)
+@cached(16)  # (a user's unhashable indenter subclass by its exact value: issue 32 round 28 A3)
 def _layer_medium(params: Parameters, indenter, layer: Layer) -> HalfSpaceMedium:
     from .layer_media import LAYER_MEDIA
     from .layer_normals import LAYER_NORMALS
