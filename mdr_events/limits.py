@@ -9,6 +9,7 @@ on the command line. The defaults keep one run under about a minute and 2 GiB on
 from __future__ import annotations
 
 import dataclasses
+import math
 import re
 from dataclasses import dataclass
 
@@ -24,6 +25,7 @@ LIMIT_UNITS = {
     "springs": "springs per side",
     "samples": "output times (all cases)",
     "waypoints": "waypoints in one path (continuum)",
+    "spans": "spans of one continuum run",
 }
 
 #: Suffixes ``--limit memory=8GiB`` understands.
@@ -54,6 +56,12 @@ class Limits:
         Waypoints of one path for the continuum method: default 2000. Each growth segment adds a piece
         to the anchor map that every later span's zone layout reads (at a remembered cost per piece):
         2000 waypoints of a monotone path take about 8 s here, 1000 about 3 s.
+    spans : float, default 1000
+        Spans (closed-form plans integrated between events) of one continuum run: default 1000, about 2 s here,
+        where the runs of the tests, benchmarks and ``results/`` make at most some 40. Counted as the run goes (the
+        count is not known before): ``tau0+coulomb`` with adhesion on a curved indenter ends a receding span each
+        time the edge crosses the annulus ``[x_c, a]``, whose width is ``~√Δγ``, so a small work of adhesion makes
+        ``~1/√Δγ`` spans (1e-6 of the paper's: thousands).
 
     Raises
     ------
@@ -66,6 +74,7 @@ class Limits:
     springs: float = 1e7
     samples: float = 1e7
     waypoints: float = 2000
+    spans: float = 1000
 
     def __post_init__(self) -> None:
         for field in dataclasses.fields(self):
@@ -82,7 +91,7 @@ class Limits:
             Names the run and the arguments that set its size, e.g. ``"the discrete run (dx=1e-10 m)"``.
         **needed : float
             The run's estimate of each resource by the limit's name (``memory``, ``steps``, ``springs``,
-            ``samples``, ``waypoints``).
+            ``samples``, ``waypoints``, ``spans``).
 
         Raises
         ------
@@ -121,6 +130,8 @@ def in_study(message: str) -> str:
 def _shown(name: str, value: float) -> str:
     if name == "memory":
         return f"{value / 2**30:.3g} GiB"
+    if name == "spans" and math.isfinite(value):  # (a count near its limit: 2001 against 2000, not 2e+03 twice)
+        return f"{value:.0f}"
     return f"{value:.3g}"
 
 

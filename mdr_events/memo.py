@@ -17,7 +17,7 @@ import functools
 import weakref
 from typing import Any, Callable, TypeVar
 
-__all__ = ["exact_key", "kept"]
+__all__ = ["exact_key", "kept", "hashable", "cached"]
 
 _Result = TypeVar("_Result")
 
@@ -147,5 +147,59 @@ def kept(size: int) -> Callable[[Callable[..., _Result]], Callable[..., _Result]
             return function(*args) if key is None else by_call(_Call(key, args))
 
         run.cache_clear, run.cache_info = by_call.cache_clear, by_call.cache_info
+        return run
+    return decorate
+
+
+def hashable(value: Any) -> bool:
+    """Whether ``value`` has a hash (``functools.lru_cache`` can key it): a user's subclass of a frozen dataclass that
+    defines ``__eq__`` alone has none (Python sets its ``__hash__`` to ``None``), which a cache of the indenter's
+    must compute around instead of ending in ``unhashable type`` (issue 32 round 28 A3).
+
+    Parameters
+    ----------
+    value : object
+        Any value.
+
+    Returns
+    -------
+    bool
+        ``True`` if ``hash(value)`` succeeds.
+    """
+    try:
+        hash(value)
+    except TypeError:
+        return False
+    return True
+
+
+def cached(size: int) -> Callable[[Callable[..., _Result]], Callable[..., _Result]]:
+    """A decorator keeping the last ``size`` results of a function of positional arguments, the one cache of a
+    function keyed by an indenter: by the arguments' hash (``functools.lru_cache``) when they have one, else by their
+    exact values (:func:`kept`: a user's subclass of an indenter type that defines ``__eq__`` alone has no hash, and
+    still gets the cache), else computed each time (issue 32 round 28 A3; the call sites no longer branch).
+
+    Parameters
+    ----------
+    size : int
+        How many results each of the two caches keeps (the least recently used is dropped).
+
+    Returns
+    -------
+    callable
+        The decorator; the function it gives has ``cache_clear()`` (both caches) and ``__wrapped__``.
+    """
+    def decorate(function: Callable[..., _Result]) -> Callable[..., _Result]:
+        by_hash, by_value = functools.lru_cache(maxsize=size)(function), kept(size)(function)
+
+        @functools.wraps(function)
+        def run(*args: Any) -> _Result:
+            return by_hash(*args) if all(map(hashable, args)) else by_value(*args)
+
+        def cache_clear() -> None:
+            by_hash.cache_clear()
+            by_value.cache_clear()
+
+        run.cache_clear, run.cache_info = cache_clear, by_hash.cache_info
         return run
     return decorate

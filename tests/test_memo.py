@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import mdr_events as me
-from mdr_events.memo import exact_key, kept
+from mdr_events.memo import cached, exact_key, kept
 from mdr_events.models import motion
 from mdr_events.theory import scales
 
@@ -209,3 +209,30 @@ def test_frozen_values_are_written_only_while_they_are_made():
     late = [write for write in writes if not (write[2] == "new" or (write[2] in ("__post_init__", "__init__")
                                                                     and write[3] == "self"))]
     assert late == []
+
+
+class _EqualityPowerLaw(me.PowerLaw):
+    """A user's power law comparing by its own ``__eq__`` (so Python sets its ``__hash__`` to ``None``)."""
+
+    def __eq__(self, other):
+        return super().__eq__(other)
+
+
+def test_cached_keeps_a_hashable_call_by_hash_an_unhashable_one_by_value_and_computes_the_rest():
+    """``memo.cached``, the one cache of a function keyed by an indenter (issue 32 round 28 A3): a hashable indenter
+    is computed once (``lru_cache``), a user's subclass that defines ``__eq__`` alone (no hash; it ended in
+    ``unhashable type``) once too, by its exact value, and an argument with neither (a list) each time."""
+    calls = []
+
+    @cached(4)
+    def exponent(indenter, extra):
+        calls.append(indenter)
+        return indenter.n
+
+    user = _EqualityPowerLaw(0.2, 1.5)
+    assert user.__hash__ is None
+    for indenter in (me.PowerLaw(0.2, 1.5), user):
+        calls.clear()
+        assert [exponent(indenter, 1.0) for _ in range(3)] == [1.5] * 3 and len(calls) == 1
+    calls.clear()
+    assert [exponent(me.PowerLaw(0.2, 1.5), [1.0]) for _ in range(2)] == [1.5] * 2 and len(calls) == 2

@@ -23,6 +23,7 @@ from mdr_events.contact.elastomer import Elastomer
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import FlatPunch, Paraboloid, PowerLaw
 from mdr_events.contact.layer import Layer
+from mdr_events.memo import cached
 from mdr_events.models import indenters
 from mdr_events.models.paths import Path
 from mdr_events.parameters import Parameters
@@ -389,7 +390,7 @@ class FrictionlessLayerSprings(LayerSprings):
         return np.zeros(np.shape(positions))
 
 
-@functools.lru_cache(maxsize=64)
+@cached(64)  # (a user's unhashable indenter subclass by its exact value: issue 32 round 28 A3)
 def _layer_branch_radius(params: Parameters, indenter: Paraboloid | PowerLaw, layer: Layer, depth: float) -> float:
     """The radius at ``depth`` on the layer's ``Δγ0`` branch (:func:`~mdr_events.layer_normal_curve`), kept for the
     checks of a run that ask it twice (the spacing and the size)."""

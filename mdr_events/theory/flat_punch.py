@@ -72,7 +72,7 @@ def normal_force(depth, contact_radius, profile: FlatPunch, params: Parameters):
     ValueError
         A ``contact_radius`` other than the punch's own.
     """
-    _finite(depth=depth)
+    (depth,) = _finite(depth=depth)
     profile = _punch(profile, "normal_force")
     if contact_radius is not None and not np.all(np.asarray(contact_radius) == profile.radius):
         raise ValueError(f"contact_radius={contact_radius!r} is not allowed for {profile!r}; allowed: None or "
@@ -128,7 +128,7 @@ def radius(depth, profile: FlatPunch, params: Parameters, work_of_adhesion: floa
     float or numpy.ndarray
         The punch's radius (m), or ``nan`` where the contact has come apart; the shape of ``depth``.
     """
-    _finite(depth=depth)
+    (depth,) = _finite(depth=depth)
     return _radius(depth, profile, params, work_of_adhesion, fold_share)
 
 
@@ -408,7 +408,7 @@ def coulomb_force(sliding, params: Parameters, contact_radius: float):
     float or numpy.ndarray
         The force (N), the shape of ``sliding``.
     """
-    _finite(sliding=sliding, contact_radius=contact_radius)
+    sliding, contact_radius = _finite(sliding=sliding, contact_radius=contact_radius)
     return 2.0 * params.G_star * contact_radius * sliding
 
 

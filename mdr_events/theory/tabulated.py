@@ -23,13 +23,13 @@ interpolation error: its largest value falls at second order in the table's spac
 from __future__ import annotations
 
 import bisect
-import functools
 import math
 from typing import NamedTuple
 
 import numpy as np
 from scipy import interpolate, optimize
 
+from mdr_events.memo import cached
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.theory import power_law, symbolic
@@ -199,7 +199,7 @@ class ScalarPiecewise:
         return value
 
 
-@functools.lru_cache(maxsize=32)
+@cached(32)  # (an unhashable user subclass of the table by its exact value, issue 32 round 28 A3)
 def equivalent(profile: TabulatedProfile) -> EquivalentProfile:
     """The :class:`EquivalentProfile` of ``profile``, computed once per process.
 
@@ -234,7 +234,7 @@ def equivalent_profile(x, profile: TabulatedProfile):
     float or numpy.ndarray
         ``g(x)`` (m), the shape of ``x``.
     """
-    _finite(x=x)
+    (x,) = _finite(x=x)
     values = equivalent(profile)(x)
     return float(values) if np.ndim(x) == 0 else values
 
@@ -633,7 +633,7 @@ def branch(profile: TabulatedProfile, params: Parameters, work_of_adhesion: floa
     return _branch(profile, params, power_law.check_work(work_of_adhesion))
 
 
-@functools.lru_cache(maxsize=64)
+@cached(64)
 def _branch(profile: TabulatedProfile, params: Parameters, work_of_adhesion: float) -> TabulatedBranch:
     """:func:`branch` of a work checked (a float: the cache's key, which an array or a list cannot be)."""
     return TabulatedBranch(_check(profile), params, work_of_adhesion)
@@ -660,7 +660,7 @@ def normal_force(depth, contact_radius, profile: TabulatedProfile, params: Param
     float or numpy.ndarray
         ``F_N`` (N; negative: tensile).
     """
-    _finite(depth=depth, contact_radius=contact_radius)
+    depth, contact_radius = _finite(depth=depth, contact_radius=contact_radius)
     return _normal_force(depth, contact_radius, profile, params)
 
 
@@ -693,7 +693,7 @@ def contact_radius(depth, profile: TabulatedProfile, params: Parameters, work_of
     float or numpy.ndarray
         The radius ``a`` (m) or ``nan``, the shape of ``depth``.
     """
-    _finite(depth=depth)
+    (depth,) = _finite(depth=depth)
     radii = branch(profile, params, work_of_adhesion).radii(depth)
     return float(radii) if np.ndim(depth) == 0 else radii
 

@@ -25,12 +25,12 @@ part runs there spring by spring (:mod:`.play_run`), with or without adhesion.
 
 from __future__ import annotations
 
-import functools
 from typing import TYPE_CHECKING
 
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import FlatPunch, Paraboloid, TabulatedProfile, indenter_kind
 from mdr_events.contact.layer import HALF_SPACE, Layer
+from mdr_events.memo import cached
 from mdr_events.parameters import Parameters
 from mdr_events.theory import power_law, symbolic, tabulated
 
@@ -326,10 +326,11 @@ def layer_medium(params: Parameters, profile, layer: Layer) -> HalfSpaceMedium:
     ValueError
         Another indenter.
     """
-    return _layer_medium(params, Paraboloid(params.R) if profile is None else profile, layer)
+    indenter = Paraboloid(params.R) if profile is None else profile
+    return _layer_medium(params, indenter, layer)
 
 
-@functools.lru_cache(maxsize=16)
+@cached(16)  # (a user's unhashable indenter subclass by its exact value: issue 32 round 28 A3)
 def _layer_medium(params: Parameters, indenter, layer: Layer) -> HalfSpaceMedium:
     from .layer_media import LAYER_MEDIA
     from .layer_normals import LAYER_NORMALS

@@ -49,7 +49,8 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     ``profile`` (``None``: the paper's paraboloid of ``params.R``), the friction law ``friction`` (``None``:
     the paper's ``"tau0"``; both parts with adhesion on a curved indenter: two regions, :mod:`.split_span`) and the
     adhesion law ``adhesion`` (``None``: the paper's, of ``params.dgamma0`` and ``params.dgamma1``); a path with more waypoints than
-    ``limits.waypoints`` is refused before the work starts.
+    ``limits.waypoints`` is refused before the work starts, a run that makes more spans than ``limits.spans`` as
+    soon as it does.
 
     Parameters
     ----------
@@ -80,7 +81,7 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
     ValueError
         A path the continuum cannot resolve or reach, an indenter or law it does not take.
     ResourceLimitError
-        More waypoints than ``limits.waypoints``.
+        More waypoints than ``limits.waypoints``, or more spans than ``limits.spans``.
     """
     limits = check_limits(limits)
     limits.check(f"the continuum run of a path with {len(path.waypoints)} waypoints",
@@ -110,6 +111,8 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
             plan = plan_span(model, state, segment)
             for logged in advance(model, state, plan, segment, solution):
                 log(solution, segment, logged)
+            if len(solution.spans) > limits.spans:
+                _refuse_spans(model, state, solution, limits)
             if not state.in_contact and state.running:
                 state.running = bool(np.any(entries >= state.t))  # the path enters again: the run goes on
         if state.running and index < len(segments) - 1:
@@ -121,6 +124,15 @@ def solve_path(params: Parameters, path: Path, tolerances: Tolerances = Toleranc
         attach_compressed_zone(solution, solve_path(model.zone_params, path, tolerances, limits, profile,
                                                     model.friction, layer=layer))
     return solution
+
+
+def _refuse_spans(model: ContinuumModel, state: ContactState, solution: PathSolution, limits: Limits) -> None:
+    """Raise :class:`~mdr_events.limits.ResourceLimitError`: the run has made more spans than ``limits.spans``
+    (counted as it goes; round 28 A1: ``tau0+coulomb`` with a small work of adhesion, spans ``~1/√Δγ``)."""
+    cause = (" (tau0+coulomb with adhesion on a curved indenter: a receding contact makes ~1/sqrt(work of adhesion) "
+             "spans)") if model.split else ""
+    limits.check(f"the continuum run (stopped at t = {state.t - solution.t_contact:.6g} s after first contact, "
+                 f"contact radius {state.radius:.3g} m{cause})", spans=len(solution.spans))
 
 
 def _stored_anchors(model: ContinuumModel, path: Path) -> AnchorMap | SplitAnchorMap:

@@ -40,22 +40,31 @@ def _one_work(work_of_adhesion) -> float:
     return check_work(work_of_adhesion)
 
 
-def _finite(**arguments) -> None:
+def _finite(**arguments) -> list:
     """Refuse an argument with an entry that is no finite real number (``10**400`` read as inf), beyond
-    ``±SCALE_MAX`` (its square would overflow) or, of :data:`NONNEGATIVE`, below 0, naming it."""
+    ``±SCALE_MAX`` (its square would overflow) or, of :data:`NONNEGATIVE`, below 0, naming it; the arguments checked,
+    in order: a float or a float array as given, one other number (an ``int``, ``np.int64``, a 0-d int array) as a
+    float, any other (a list, an int array) as the float array it reads (a closed form of ``array_like`` arguments
+    computes on those: a list ended in Python's own ``TypeError``, issue 32 round 28 A2; an ``np.int64`` was computed
+    in int64 and overflowed silently)."""
+    checked = []
     for name, value in arguments.items():
         low = 0.0 if name in NONNEGATIVE else -SCALE_MAX
         if type(value) is float:
+            checked.append(value)
             if low <= value <= SCALE_MAX:
                 continue
             values = np.asarray(value)
         elif isinstance(value, np.ndarray) and value.dtype.kind == "f":
             values = value
+            checked.append(value)
         else:
             values = real_array(name, value, "real numbers")
+            checked.append(values if np.ndim(value) else float(values))  # (one number: a float, an int's too)
         if not (values.size == 0 or (low <= values.min() and values.max() <= SCALE_MAX)):
             raise ValueError(f"{name}={shown(value)} is not allowed; allowed: finite real numbers "
                              f"{'from 0' if low == 0.0 else f'from {low:.2g}'} to {SCALE_MAX:.2g} (SI units)")
+    return checked
 
 
 class ResultOverflowError(ValueError, OverflowError):

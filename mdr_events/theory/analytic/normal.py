@@ -38,7 +38,7 @@ def jkr_depth(contact_radius, contact: ContactLike, work_of_adhesion: float):
     float or numpy.ndarray
         The depth ``d`` (m), the shape of ``contact_radius``.
     """
-    _finite(contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
+    contact_radius, _ = _finite(contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jkr_depth")
     relation = _rel("jkr_depth").numeric
     return _representable(lambda: relation(contact_radius, params.R, params.E_star, work_of_adhesion), "jkr_depth",
@@ -67,7 +67,7 @@ def jkr_normal_force(contact_radius, contact: ContactLike, work_of_adhesion: flo
     float or numpy.ndarray
         The normal force ``F_N`` (N; negative: tensile), the shape of ``contact_radius``.
     """
-    _finite(contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
+    contact_radius, _ = _finite(contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jkr_normal_force")
     relation = _rel("jkr_normal_force").numeric
     return _representable(lambda: relation(contact_radius, params.R, params.E_star, work_of_adhesion),
@@ -94,7 +94,7 @@ def normal_force(depth, contact_radius, contact: ContactLike):
     float or numpy.ndarray
         The normal force ``F_N`` (N).
     """
-    _finite(depth=depth, contact_radius=contact_radius)
+    depth, contact_radius = _finite(depth=depth, contact_radius=contact_radius)
     params = paper_parameters(contact, "normal_force")
     return _rel("normal_force").numeric(depth, contact_radius, params.R, params.E_star)
 
@@ -117,7 +117,7 @@ def hertz_contact_radius(depth, contact: ContactLike):
     float or numpy.ndarray
         The contact radius ``a`` (m).
     """
-    _finite(depth=depth)
+    (depth,) = _finite(depth=depth)
     params = paper_parameters(contact, "hertz_contact_radius")
     return _rel("hertz_radius").numeric(np.maximum(depth, 0.0), params.R)
 
@@ -262,7 +262,7 @@ def jkr_contact_radius(depth, contact: ContactLike, work_of_adhesion: float):
         The contact radius ``a`` (m) on the stable branch of (9), ``nan`` below the jump-off depth; the shape of
         ``depth``.
     """
-    _finite(depth=depth)
+    (depth,) = _finite(depth=depth)
     work_of_adhesion = _one_work(work_of_adhesion)
     params = paper_parameters(contact, "jkr_contact_radius")
     depth_arr = np.asarray(depth, dtype=float)

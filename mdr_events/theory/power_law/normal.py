@@ -10,6 +10,7 @@ import math
 import numpy as np
 
 from mdr_events.parameters import Parameters
+from mdr_events.validation import SCALE_MAX, check_real
 from mdr_events.contact.indenters import PowerLaw, Profile
 from mdr_events.theory.power_law.arguments import (_check_adhesive, _check_work, _forms, _power_law_only, _rel,
                                                    as_output)
@@ -40,6 +41,11 @@ def with_radius_at(n: float, radius: float, depth: float) -> PowerLaw:
     PowerLaw
         The power law of exponent ``n`` and that ``c``.
     """
+    # (one number each, > 0: an array or a list ended in NumPy's own TypeError, issue 32 round 28 A2)
+    radius = check_real("radius", radius, f"a finite number > 0 (m), at most {SCALE_MAX:.2g}",
+                        lambda value: 0.0 < value <= SCALE_MAX)
+    depth = check_real("depth", depth, f"a finite number > 0 (m), at most {SCALE_MAX:.2g}",
+                       lambda value: 0.0 < value <= SCALE_MAX)
     return PowerLaw(depth / float(equivalent_profile(radius, PowerLaw(1.0, n))), n)
 
 
@@ -60,7 +66,7 @@ def equivalent_profile(x, profile: PowerLaw):
     float or numpy.ndarray
         ``g(x)`` (m), the shape of ``x``.
     """
-    _finite(x=x)
+    (x,) = _finite(x=x)
     return _equivalent_profile(x, _power_law_only(profile, "equivalent_profile"))
 
 
@@ -90,7 +96,7 @@ def branch_depth(contact_radius, profile: PowerLaw, params: Parameters, work_of_
     float or numpy.ndarray
         The depth ``d`` (m), the shape of ``contact_radius``.
     """
-    _finite(contact_radius=contact_radius)
+    (contact_radius,) = _finite(contact_radius=contact_radius)
     return _branch_depth(contact_radius, _power_law_only(profile, "branch_depth"), params,
                          _check_work(work_of_adhesion))
 
@@ -128,9 +134,9 @@ def normal_force(depth, contact_radius, profile: Profile, params: Parameters):
     ValueError
         A ``contact_radius`` other than the flat punch's own.
     """
-    _finite(depth=depth)
+    (depth,) = _finite(depth=depth)
     if contact_radius is not None:
-        _finite(contact_radius=contact_radius)
+        (contact_radius,) = _finite(contact_radius=contact_radius)
     return _forms(profile).normal_force(depth, contact_radius, profile, params)
 
 
@@ -161,7 +167,7 @@ def branch_normal_force(contact_radius, profile: PowerLaw, params: Parameters, w
     float or numpy.ndarray
         ``F_N`` (N; negative: tensile), the shape of ``contact_radius``.
     """
-    _finite(contact_radius=contact_radius)
+    (contact_radius,) = _finite(contact_radius=contact_radius)
     work_of_adhesion = _check_work(work_of_adhesion)
     profile = _power_law_only(profile, "branch_normal_force")
     return _rel("power_law_branch_normal_force").numeric(contact_radius, profile.c, profile.n, params.E_star,
@@ -228,7 +234,7 @@ def contact_radius(depth, profile: PowerLaw, params: Parameters, work_of_adhesio
     ValueError
         ``n <= 1/2`` with adhesion.
     """
-    _finite(depth=depth)
+    (depth,) = _finite(depth=depth)
     return _contact_radius(depth, _power_law_only(profile, "contact_radius"), params, _check_work(work_of_adhesion))
 
 
