@@ -9,7 +9,6 @@ the layer's relations (:mod:`mdr_events.theory.layer`, :mod:`mdr_events.theory.l
 
 from __future__ import annotations
 
-import functools
 import itertools
 import sys
 from collections.abc import Callable, Sequence
