@@ -56,9 +56,11 @@ class Limits:
         Waypoints of one path for the continuum method: default 2000. Each growth segment adds a piece
         to the anchor map that every later span's zone layout reads (at a remembered cost per piece):
         2000 waypoints of a monotone path take about 8 s here, 1000 about 3 s.
-    spans : float, default 1000
-        Spans (closed-form plans integrated between events) of one continuum run: default 1000, about 2 s here,
-        where the runs of the tests, benchmarks and ``results/`` make at most some 40. Counted as the run goes (the
+    spans : float, default 10000
+        Spans (closed-form plans integrated between events) of one continuum run: default 10000, some 20 s here at
+        the dearest spans (``tau0+coulomb`` with adhesion, ~2 ms a span), 1 s at the paper's ``tau0`` (0.1 ms), where
+        the runs of the tests and ``results/`` make at most some 40, and a reciprocating path about three a waypoint
+        (100 cycles: 606), so that the waypoints' limit binds first on the paths it bounds. Counted as the run goes (the
         count is not known before): ``tau0+coulomb`` with adhesion on a curved indenter ends a receding span each
         time the edge crosses the annulus ``[x_c, a]``, whose width is ``~√Δγ``, so a small work of adhesion makes
         ``~1/√Δγ`` spans (1e-6 of the paper's: thousands).
@@ -74,7 +76,7 @@ class Limits:
     springs: float = 1e7
     samples: float = 1e7
     waypoints: float = 2000
-    spans: float = 1000
+    spans: float = 1e4
 
     def __post_init__(self) -> None:
         for field in dataclasses.fields(self):

@@ -24,10 +24,11 @@ from mdr_events.theory import flat_punch
 PAPER = me.Parameters.paper()
 #: How much smaller than the paper's the work of adhesion of A1's runs is: 1e-4 takes ~1 s (478 spans, under the
 #: default ``Limits.spans``), 1e-6 ran unbounded for 20-100 s (load) (the spans grow as ``1/√Δγ``), now refused at
-#: the default's count.
+#: the limit's count (the test's own: the default's 10000 spans would take some 20 s of a test's CPU).
 SMALL_WORK, SMALLER_WORK = 1e-4, 1e-6
-#: A1's refused run may take this much CPU (s): the default's 1000 spans take ~2-3 s here under load, the run
-#: unbounded 20 s or more.
+#: The span limit A1's refused run is given: 1000 spans take ~2-3 s here under load.
+SPAN_LIMIT = 1000
+#: A1's refused run may take this much CPU (s): its SPAN_LIMIT spans ~2-3 s under load, the run unbounded 20 s or more.
 REFUSED_WITHIN = 15.0
 #: A mix may cost this many times its counterpart (the task's bound on a law × indenter × medium at defaults).
 COST_RATIO = 10
@@ -55,11 +56,11 @@ def test_a_run_of_ever_more_spans_is_refused_by_the_span_limit():
     small = _smaller_work(SMALLER_WORK)
     start = time.process_time()
     with pytest.raises(me.ResourceLimitError) as refused:
-        solve_path(small, _out_after_slide(small), friction=_A1_LAW)
+        solve_path(small, _out_after_slide(small), friction=_A1_LAW, limits=me.Limits(spans=SPAN_LIMIT))
     assert time.process_time() - start < REFUSED_WITHIN
     message = str(refused.value)
     assert "\n" not in message
-    limit = me.Limits().spans
+    limit = SPAN_LIMIT
     for part in (f"needs {limit + 1:.0f} spans", f"at most {limit:.0f}", "Limits(spans=...)", "--limit spans=...",
                  "sqrt(work of adhesion)"):
         assert part in message, (part, message)
@@ -79,6 +80,28 @@ def test_a_run_under_the_span_limit_is_the_same_as_with_none():
         np.testing.assert_array_equal(limited.evaluate_at(times)[name], values, err_msg=name)
     with pytest.raises(me.ResourceLimitError, match="spans"):
         solve_path(small, path, friction=_A1_LAW, limits=me.Limits(spans=len(free.spans) - 1))
+
+
+#: Cycles of the paper's reciprocating path a default run must take: ~3 spans a waypoint, 2 waypoints a cycle, so
+#: 300 cycles make some 1800 spans (a 1000-span default refused them) and stay under the waypoints' limit (2000).
+RECIPROCATING_CYCLES = 300
+
+
+def test_the_span_limit_does_not_refuse_a_long_reciprocating_run_the_waypoints_limit_takes():
+    """The span limit's default sits above what the paths the waypoints' limit accepts make: the paper's ``tau0``
+    reciprocating path (in at 20°, cycles of ±3 ū(a_max), out), 300 cycles in 604 waypoints, some 1800 spans at
+    ~0.1 ms each, runs under the default limits (A1's guard is for runaway counts, not long paths)."""
+    from mdr_events.models.paths import exit_depth
+    from mdr_events.theory import analytic
+
+    amplitude = 3.0 * float(analytic.critical_shift(float(analytic.jkr_contact_radius(PAPER.d_max, PAPER,
+                                                                                        PAPER.dgamma0)), PAPER))
+    x_c = PAPER.d_max / math.tan(math.radians(20.0))
+    turns = [(x_c + amplitude * (1 if i % 2 == 0 else -1), PAPER.d_max) for i in range(2 * RECIPROCATING_CYCLES)]
+    path = me.Path([(0.0, 0.0), (x_c, PAPER.d_max), *turns, (x_c, PAPER.d_max), (x_c, exit_depth(PAPER))], PAPER.v)
+    assert len(path.waypoints) < me.Limits().waypoints
+    solution = solve_path(PAPER, path)
+    assert 1000 < len(solution.spans) < me.Limits().spans
 
 
 def test_the_span_limit_is_set_by_name_on_the_command_line():
