@@ -18,10 +18,7 @@ Run: ``python benchmarks/bench_evaluate.py [--repeat N] [--against DIR] [--cpu]`
 
 from __future__ import annotations
 
-import argparse
-from pathlib import Path
-
-from _side_by_side import clock_name, measure, serve, verdict
+from _side_by_side import Staged, clock_name, command_line, measure, verdict
 
 #: The paths timed, by their labels in ``bench_simulate.py``.
 PATHS = ("A 20°", "B 20°", "zigzag", "reciprocating", "A 20° table")
@@ -31,8 +28,10 @@ TARGETS = {"A 20°": 0.6e-3, "B 20°": 0.35e-3, "zigzag": 0.6e-3}
 CALLS = 20
 
 
-def _tasks() -> dict[str, callable]:
-    """Each path's :data:`CALLS` evaluations at ``simulate``'s samples (imports the checkout's package)."""
+def _tasks() -> dict[str, Staged]:
+    """Each path's :data:`CALLS` evaluations at ``simulate``'s samples of one fresh solve, the solve untimed
+    (``bench_simulate``'s ``--parts`` task is :class:`Staged`: its ``prepare`` solves, its ``run`` evaluates; imports the
+    checkout's package)."""
     import bench_simulate
 
     tasks = {}
@@ -40,7 +39,7 @@ def _tasks() -> dict[str, callable]:
         p, path, options, _ = bench_simulate._build(label)
         evaluate = bench_simulate._part_tasks(label, p, path, options)[f"{label}|evaluate"]
         evaluate()  # (once unmeasured)
-        tasks[label] = lambda evaluate=evaluate: [evaluate() for _ in range(CALLS)]
+        tasks[label] = Staged(evaluate.prepare, lambda *solved, run=evaluate.run: [run(*solved) for _ in range(CALLS)])
     return tasks
 
 
@@ -55,18 +54,10 @@ def report(name: str, medians: dict[str, float]) -> None:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--repeat", type=int, default=9, help="timings per figure (median; default 9)")
-    parser.add_argument("--against", default=None, metavar="DIR", help="a checkout to measure side by side")
-    parser.add_argument("--cpu", action="store_true", help="CPU time instead of the wall clock")
-    parser.add_argument("--worker", action="store_true", help=argparse.SUPPRESS)
-    options = parser.parse_args()
-    if options.worker:
-        serve(_tasks(), options.cpu)
+    parsed = command_line(__doc__.splitlines()[0], __file__, _tasks, repeat=9)
+    if parsed is None:
         return
-    roots = {"this checkout": str(Path(__file__).resolve().parent.parent)}
-    if options.against:
-        roots[f"--against {options.against}"] = str(Path(options.against).resolve())
+    options, roots = parsed
     medians = measure(list(roots.values()), __file__, list(PATHS), options.repeat, options.cpu)
     print(f"continuum: evaluate at 2001 samples, {CALLS} calls per timing, medians of {options.repeat} "
           f"({clock_name(options.cpu)}), interleaved, per call")
