@@ -16,14 +16,14 @@ def _run_case_per_spring(grid: _Grid, x: np.ndarray, d: np.ndarray, time: np.nda
                          last_entry: float, counts: np.ndarray, sums: np.ndarray, sliding: np.ndarray,
                          edge: np.ndarray | None = None) -> int:
     """The rules stepped spring by spring, as stated (:mod:`mdr_events.models.discrete`): the reference of
-    :func:`_run_case`.
+    :func:`~mdr_events.models.discrete._run_case`.
 
-    Same arguments and outputs; every spring's shift is a float moved by each step and clipped,
-    and ``Σ u`` a plain sum: O(springs) numpy work per step, where :func:`_run_case` is O(1). It also
-    runs the friction laws with Coulomb's part (``grid.has_coulomb``), whose caps differ from spring to
-    spring: ``ū_j = ū(m Δx) + κ_j max(d − g(x_j), 0)``; a spring whose cap is 0 slides. On a layer of finite
-    thickness (:class:`~mdr_events.models.spring_media.LayerSprings`) the springs differ and ``sums`` is their
-    weighted sum ``Σ (k_t(x_j)/G*) u_j`` (``grid.sum_shifts``).
+    Same arguments and outputs; every spring's shift is a float moved by each step and clipped, and ``Σ u`` a plain
+    sum: O(springs) numpy work per step, where :func:`~mdr_events.models.discrete._run_case` is O(1). It also runs
+    the friction laws with Coulomb's part (``grid.has_coulomb``), whose caps differ from spring to spring: ``ū_j =
+    ū(m Δx) + κ_j max(d − g(x_j), 0)``; a spring whose cap is 0 slides. On a layer of finite thickness
+    (:class:`~mdr_events.models.spring_media.LayerSprings`) the springs differ and ``sums`` is their weighted sum
+    ``Σ (k_t(x_j)/G*) u_j`` (``grid.sum_shifts``).
     """
     shift = np.zeros(grid.n_springs)
     m = _first_count(grid, d, edge)
