@@ -66,8 +66,7 @@ def onset_excess_A(depth, cot: np.ndarray, friction: FrictionLaw, params: Parame
     numpy.ndarray
         ``max_ξ [(d − d_ξ) cot α − ū(ξ)]`` (m), the broadcast shape.
     """
-    jump_in = power_law.jump_in_radius(profile, params, params.dgamma0) if params.dgamma0 > 0 else 0.0
-    return _onset_excess(depth, cot, friction, params, profile, _Ring(jump_in, 0.0))
+    return _onset_excess(depth, cot, friction, params, profile, _jump_in_ring(params, profile))
 
 
 class _Ring(NamedTuple):
@@ -76,6 +75,23 @@ class _Ring(NamedTuple):
 
     radius: float
     depth: float
+
+
+def _jump_in_ring(params: Parameters, profile: PowerLaw) -> _Ring:
+    """Scenario A's ring: the springs of the jump-in (its radius on the ``Δγ0`` branch, none without adhesion), at
+    depth 0."""
+    jump_in = power_law.jump_in_radius(profile, params, params.dgamma0) if params.dgamma0 > 0 else 0.0
+    return _Ring(jump_in, 0.0)
+
+
+def _cot(alpha) -> np.ndarray:
+    """``cot α`` of the angles ``alpha`` (degrees)."""
+    return 1.0 / np.tan(np.radians(np.asarray(alpha, dtype=float)))
+
+
+def _scenario_A_depths(params: Parameters) -> np.ndarray:
+    """Scenario A's grid: :data:`GRID` depths evenly to ``d_max``."""
+    return params.d_max * np.arange(1, GRID + 1) / GRID
 
 
 class _DepthParts(NamedTuple):
@@ -144,10 +160,8 @@ def d_crit_A(alpha: np.ndarray, friction: FrictionLaw, params: Parameters, profi
     numpy.ndarray
         The onset depths (m), the shape of ``alpha``.
     """
-    cot = 1.0 / np.tan(np.radians(np.asarray(alpha, dtype=float)))
-    depths = params.d_max * np.arange(1, GRID + 1) / GRID
-    return _first_depth(lambda depth, cot: onset_excess_A(depth, cot, friction, params, profile), cot, 0.0,
-                        depths).reshape(np.shape(alpha))
+    return _first_depth(lambda depth, cot: onset_excess_A(depth, cot, friction, params, profile), _cot(alpha),
+                        0.0, _scenario_A_depths(params)).reshape(np.shape(alpha))
 
 
 def _first_depth(excess, cot: np.ndarray, start: float, depths: np.ndarray) -> np.ndarray:
@@ -192,7 +206,7 @@ def d_crit_B_indentation(alpha: np.ndarray, friction: FrictionLaw, params: Param
     numpy.ndarray
         The onset depths (m; ``+inf`` never, ``nan`` not known), the shape of ``alpha``.
     """
-    cot = 1.0 / np.tan(np.radians(np.asarray(alpha, dtype=float))).reshape(-1)
+    cot = _cot(alpha).reshape(-1)
     ring = _Ring(float(power_law.contact_radius(params.d_max, profile, params, params.dgamma0)), params.d_max)
     depths = params.d_max * INDENTATION_REACH ** (np.arange(1, GRID + 1) / GRID)
     onset = _first_depth(lambda depth, cot: _onset_excess(depth, cot, friction, params, profile, ring), cot,
@@ -260,13 +274,11 @@ def critical_angle_A(friction: FrictionLaw, params: Parameters, profile: PowerLa
     """
     # d_crit_A is nan exactly where no grid depth reaches the excess (its refinement only places a found onset): the
     # angle-free parts of the excess on that grid are computed once, each angle then reads the grid alone
-    jump_in = power_law.jump_in_radius(profile, params, params.dgamma0) if params.dgamma0 > 0 else 0.0
-    parts = _depth_parts((params.d_max * np.arange(1, GRID + 1) / GRID)[None, :], params, profile)
+    ring, parts = _jump_in_ring(params, profile), _depth_parts(_scenario_A_depths(params)[None, :], params, profile)
     low, high = 0.0, 90.0
     for _ in range(BISECTIONS):
         middle = 0.5 * (low + high)
-        cot = 1.0 / np.tan(np.radians(np.array([middle], dtype=float)))
-        if not np.any(_excess_of(parts, cot.reshape(-1, 1), friction, params, profile, _Ring(jump_in, 0.0)) >= 0.0):
+        if not np.any(_excess_of(parts, _cot([middle]).reshape(-1, 1), friction, params, profile, ring) >= 0.0):
             high = middle
         else:
             low = middle
