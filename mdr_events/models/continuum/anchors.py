@@ -60,6 +60,22 @@ class Piece:
         """Whether the piece is constant (``ratio == 0``)."""
         return self.ratio == 0.0
 
+    def at_depth(self, depth):
+        """``Y`` where the attachment branch's depth is ``depth``: ``x0 + ratio (depth − d_ref)`` (the one place the
+        piece's expression is written; a growth piece's value, for a float or an array of depths).
+
+        Parameters
+        ----------
+        depth : float or numpy.ndarray
+            The attachment branch's depth ``d0(ξ)`` (m) at the springs read.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            The anchor (m).
+        """
+        return self.x0 + self.ratio * (depth - self.d_ref)
+
     def same_growth(self, other: "Piece") -> bool:
         """Whether ``other`` continues the growth of this piece (the same ``Y``).
 
@@ -383,7 +399,7 @@ class AnchorMap:
         float
             The anchor (m).
         """
-        return p.x0 if p.constant else p.x0 + p.ratio * (self.attach.depth(xi) - p.d_ref)
+        return p.x0 if p.constant else p.at_depth(self.attach.depth(xi))
 
     def end_values(self, p: Piece, end: float) -> tuple[float, float]:
         """``Y`` at the start of piece ``p`` and at ``end``; remembered where ``end`` is the piece's own (a
@@ -423,7 +439,7 @@ class AnchorMap:
         numpy.ndarray
             The anchors (m), the shape of ``xi``.
         """
-        return np.full(np.shape(xi), p.x0) if p.constant else p.x0 + p.ratio * (self.attach.depths(xi) - p.d_ref)
+        return np.full(np.shape(xi), p.x0) if p.constant else p.at_depth(self.attach.depths(xi))
 
     def value(self, xi: float) -> float:
         """``Y(ξ)``; where ``Y`` jumps at a piece boundary, the value of the piece that starts there.

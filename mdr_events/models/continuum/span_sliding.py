@@ -116,13 +116,14 @@ def _zone_sizes(seen: list[AnchorMap], cap: Cap, levels: np.ndarray, extents: li
 
 
 def _piece_value(attach, p, xi: float, depths: dict[float, float]) -> float:
-    """:meth:`~.anchors.AnchorMap.piece_value` of the growth piece ``p`` at ``xi`` (the same expression, the same
-    bits), the attachment branch's depth at ``xi`` kept in ``depths`` by the radius: a run's spans share their pieces'
-    starts and ends, and both caps read them (a zigzag's 76 readings are some 20 radii)."""
+    """:meth:`~.anchors.AnchorMap.piece_value` of the growth piece ``p`` at ``xi`` (both read
+    :meth:`~.anchors.Piece.at_depth`: the same bits), the attachment branch's depth at ``xi`` kept in ``depths`` by
+    the radius: a run's spans share their pieces' starts and ends, and both caps read them (a zigzag's 76 readings
+    are some 20 radii)."""
     depth = depths.get(xi)
     if depth is None:
         depth = depths[xi] = attach.depth(xi)
-    return p.x0 + p.ratio * (depth - p.d_ref)
+    return p.at_depth(depth)
 
 
 def _add_growth(attach, grown: list, growth: list[int], sign: int, levels: np.ndarray, reached: np.ndarray,
