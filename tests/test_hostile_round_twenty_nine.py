@@ -1,0 +1,64 @@
+"""The twenty-ninth hostile round (issue 32), numerical side: each class of what failed, with the cases that showed it.
+
+The round's cases (the analytic closed forms and the combined onset at the edges of their ranges: angles to the least
+double and to 1 ulp below 90°, ``μ`` and the works of adhesion from 1e-300 to 1e200, power-law exponents at 1/2 and
+large; the continuum on adversarial paths under every law, indenter and adhesion with its extrema against a dense
+output; tables, the symbolic cache, ``memo.cached``) are listed with their outcomes in the issue's closing note; what
+failed is below.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+
+PAPER = me.Parameters.paper()
+ADHESIVE = PAPER.replace(dgamma0=0.05, dgamma1=0.1)
+#: Paths near the surface: ``cot α`` of 1e-300° is ~6e301, its square overflows; 1e-50° is the base's own check that
+#: the limit below is the closed form's (it ran without a warning there).
+NEAR_SURFACE = (1e-300, 1e-200, 1e-160, 1e-100)
+LIMIT_ANGLE = 1e-50
+
+
+def _combined(mu: float) -> me.FrictionLaw:
+    return me.FrictionLaw("tau0+coulomb", mu=mu, tau0=PAPER.tau0)
+
+
+@pytest.mark.parametrize("profile", [me.PowerLaw(c=50.0, n=2.0), me.PowerLaw(c=0.3, n=1.0), me.PowerLaw(c=1.0, n=1.5)],
+                         ids=["paraboloid", "cone", "n=1.5"])
+@pytest.mark.parametrize("mu", [1e-300, 0.5, 1e100])
+def test_the_combined_onset_near_the_surface_is_its_limit_without_a_warning(profile, mu):
+    """B1: under both parts of the cap with adhesion, a path at 1e-300°..1e-100° leaked NumPy's overflow (``cot α``
+    squared in the turn ``ξ*``, and in scenario B's bound on ``x_c``): its onsets are those of a path at 1e-50°,
+    where every spring slides at once (scenario A at ``d = 0``, B's indentation branch at ``d_max``)."""
+    alpha = np.array(NEAR_SURFACE)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        onset_A = me.mindlin.d_crit_A(alpha, _combined(mu), ADHESIVE, profile, adhesion=True)
+        onset_B = me.mindlin.d_crit_B_indentation(alpha, _combined(mu), ADHESIVE, profile, adhesion=True)
+        limit_A = me.mindlin.d_crit_A(np.array([LIMIT_ANGLE]), _combined(mu), ADHESIVE, profile, adhesion=True)
+        limit_B = me.mindlin.d_crit_B_indentation(np.array([LIMIT_ANGLE]), _combined(mu), ADHESIVE, profile,
+                                                  adhesion=True)
+    assert np.array_equal(onset_A, np.full(alpha.shape, limit_A[0])) and limit_A[0] == 0.0, onset_A
+    assert np.array_equal(onset_B, np.full(alpha.shape, limit_B[0])) and limit_B[0] == ADHESIVE.d_max, onset_B
+
+
+@pytest.mark.parametrize("scenario", ["A", "B"])
+def test_the_phase_diagram_of_the_combined_law_takes_a_path_along_the_surface(scenario):
+    """B1 through the public sweep: a phase diagram of a contact under both parts of the cap with adhesion whose
+    angles start at 1e-300° gives, without a warning, the adhesive onsets of 1e-50° there, the non-adhesive ones no
+    deeper (scenario A's closed form falls as ``tan² α``) and those of 20° unchanged."""
+    contact = me.Contact(me.Elastomer(PAPER.E, PAPER.nu), me.PowerLaw(c=50.0, n=2.0), me.Adhesion(0.05, 0.1),
+                         _combined(0.5))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        near = me.phase_diagram(contact, alpha=[NEAR_SURFACE[0], 20.0], scenario=scenario, d_max=PAPER.d_max)
+        limit = me.phase_diagram(contact, alpha=[LIMIT_ANGLE, 20.0], scenario=scenario, d_max=PAPER.d_max)
+    assert np.array_equal(near["d_crit_jkr"].values, limit["d_crit_jkr"].values)
+    hertz, hertz_limit = near["d_crit_hertz"].values, limit["d_crit_hertz"].values
+    assert np.array_equal(hertz[..., 1], hertz_limit[..., 1])
+    assert np.all((0.0 <= hertz[..., 0]) & (hertz[..., 0] <= hertz_limit[..., 0])), (hertz, hertz_limit)
