@@ -135,3 +135,32 @@ def test_a_non_adhesive_onset_reads_no_work_of_adhesion(name):
     call = {"d_crit_A": lambda params: me.power_law.d_crit_A(20.0, profile, params),
             "critical_angle_A": lambda params: me.power_law.critical_angle_A(profile, params, False)}[name]
     assert call(ADHESIVE) == call(_works(0.0))
+
+
+#: A dense table of the paraboloid's ``f = r²/(2R)`` (R = 1 cm, 3000 rows to 3 mm): its PCHIP tip is flat enough that
+#: paths near the surface put the onset's root below the first cell's resolution (``RADIUS_RTOL`` of 1 µm).
+DENSE_RADII = np.linspace(0.0, 3e-3, 3000)
+#: How closely the resolved onsets follow the non-adhesive paraboloid's ``d ∝ tan² α`` (17) between 1e-12° and
+#: 1e-8° (measured: 1e-7 relative, the PCHIP's tip against the parabola).
+TAN_SQUARED_RTOL = 1e-5
+
+
+@pytest.mark.slow  # (the dense table's Abel transform: ~10 s; 300 or 1000 rows, or a geometric grid, do not show it)
+def test_a_dense_table_s_onset_near_the_surface_slides_from_first_contact():
+    """B3: ``tabulated.d_crit_A`` without adhesion of a dense table at 1e-300°..1e-20° raised SciPy's own
+    ``ValueError: f(a) and f(b) must have different signs`` (the root below ``RADIUS_RTOL`` of the first radius, the
+    bracket's low end): the springs slide from first contact there, 0, as the coarser tables' tips give; the onsets
+    that are resolved follow (17)'s ``tan² α``."""
+    table = me.TabulatedProfile(tuple(DENSE_RADII), tuple(DENSE_RADII**2 / 0.02))
+    near = np.array([1e-300, 1e-100, 1e-20])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        onsets = me.tabulated.d_crit_A(near, table, PAPER, False)
+        resolved = me.tabulated.d_crit_A(np.array([1e-12, 1e-8]), table, PAPER, False)
+        contact = me.Contact(me.Elastomer(PAPER.E, PAPER.nu), table, me.Adhesion(PAPER.dgamma0, PAPER.dgamma1),
+                             me.FrictionLaw("tau0", tau0=PAPER.tau0))
+        diagram = me.phase_diagram(contact, alpha=[1e-20, 20.0], d_max=PAPER.d_max)
+    assert np.array_equal(onsets, np.zeros(near.shape)), onsets
+    assert resolved[1] / resolved[0] == pytest.approx(1e8, rel=TAN_SQUARED_RTOL), resolved
+    hertz = diagram["d_crit_hertz"].values
+    assert hertz[..., 0] == 0.0 and np.all(np.isfinite(hertz)), hertz
