@@ -42,6 +42,11 @@ BISECTIONS = 60
 #: How deep scenario B's indentation branch is searched for its onset, in ``d_max`` (on a geometric grid: each step
 #: 0.7 % deeper); where none is found it never comes if ``cot α <= κ`` (below), else it is not known (``nan``)
 INDENTATION_REACH = 2.0**20
+#: What NumPy may meet in the excess's parts of a path near the surface (``α`` down to the least double, ``cot α`` up
+#: to ~1e308): ``cot α`` squared in the turn ``ξ*`` and in the bound on ``x_c`` overflows to ``inf``, a turn beyond
+#: every contact and a bound beyond every depth, as the comparisons read them; a ``0/0`` of a turn outside the contact
+#: is not read either (issue 32 round 29: the overflow's ``RuntimeWarning`` leaked from ``d_crit_A`` at 1e-300°)
+_UNREAD = {"over": "ignore", "divide": "ignore", "invalid": "ignore"}
 
 
 def onset_excess_A(depth, cot: np.ndarray, friction: FrictionLaw, params: Parameters, profile: PowerLaw) -> np.ndarray:
@@ -130,7 +135,7 @@ def _excess_of(parts: _DepthParts, cot: np.ndarray, friction: FrictionLaw, param
     turning = cot > kappa  # the compressed grown springs' excess has its one maximum at ξ* (free of d)
     if np.any(turning) and params.dgamma0 > 0:
         arguments = (friction.coulomb_mu, params.dgamma0, profile.c, profile.n, params.E_star, params.G_star)
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(**_UNREAD):
             turn = np.asarray(symbolic.relation("adhesive_onset_turn_A").numeric(cot, *arguments), dtype=float)
             at_turn = np.asarray(symbolic.relation("adhesive_onset_excess_A").numeric(
                 turn, depth, radius, cot, params.tau0, *arguments), dtype=float)
@@ -223,7 +228,8 @@ def _never_beyond(cot: np.ndarray, friction: FrictionLaw, params: Parameters, pr
     Heß's prefactor); the ring's edge falls once compressed (``d > g(a(d_max))``: its slope ``cot α − κ − K ȧ < 0``)."""
     kappa = friction.coulomb_mu * params.E_star / params.G_star
     K, hess = power_law.cap_per_radius(params), power_law.hess_prefactor(params, params.dgamma0)
-    boundary = np.asarray(_power_law_profile((cot * hess / K) ** 2, profile), dtype=float)
+    with np.errstate(**_UNREAD):
+        boundary = np.asarray(_power_law_profile((cot * hess / K) ** 2, profile), dtype=float)
     compressed_ring = float(_power_law_profile(ring.radius, profile))
     bound = np.where(cot <= kappa, np.maximum(boundary, compressed_ring), np.inf)
     if profile.n == 1.0:
@@ -243,12 +249,12 @@ def _cone_never_beyond(cot: np.ndarray, kappa: float, K: float, friction: Fricti
     constants = [kappa * g_ring - params.d_max * cot]
     arguments = (friction.coulomb_mu, params.dgamma0, profile.c, profile.n, params.E_star, params.G_star)
     if params.dgamma0 > 0:
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(**_UNREAD):
             turn = np.asarray(symbolic.relation("adhesive_onset_turn_A").numeric(cot, *arguments), dtype=float)
             grown = np.asarray(_power_law_depth(turn, profile, params, params.dgamma0), dtype=float)
         hess = power_law.hess_prefactor(params, params.dgamma0)
         constants.append(np.where(cot > kappa, kappa * hess * np.sqrt(turn) - grown * (cot - kappa), -np.inf))
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(**_UNREAD):
         linear = np.maximum.reduce([np.maximum(np.asarray(c, dtype=float), 0.0) for c in constants]) / -slope
     return np.where(slope < 0.0, np.maximum.reduce([linear, boundary, np.full(cot.shape, g_ring)]), np.inf)
 

@@ -808,6 +808,9 @@ def d_crit_A(alpha, profile: TabulatedProfile, params: Parameters, adhesion: boo
             continue
         else:  # (no adhesion) a tip flatter than the path: the root lies inside the first cell
             bracket = RADIUS_RTOL * grid[0], grid[0]
+            if line.depth(bracket[0]) > slope * bracket[0]:  # below even that: slides from first contact (0) within
+                out[index] = 0.0  # RADIUS_RTOL of the first radius (a dense table's flat tip at 1e-20°: brentq's
+                continue  # "f(a) and f(b) must have different signs", issue 32 round 29 B3)
         a = optimize.brentq(lambda a: line.depth(a) - slope * a, *bracket, xtol=1e-300, rtol=RADIUS_RTOL)
         out[index] = slope * a
     return float(out) if np.ndim(alpha) == 0 else out

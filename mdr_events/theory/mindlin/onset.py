@@ -14,6 +14,7 @@ from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import Profile
 from mdr_events.theory import combined_onset, power_law
 from mdr_events.theory.kinds import theory_of
+from mdr_events.theory.power_law.arguments import check_onset_scales
 from mdr_events.theory.mindlin.caps import _indenter, _tau0_per_radius, coulomb_cap_ratio
 from mdr_events.validation import validate_alpha
 
@@ -83,6 +84,7 @@ def d_crit_A(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
     indenter = _indenter(profile, params)
+    check_onset_scales(params, indenter, adhesion, friction)
     if adhesion and coulomb_cap_ratio(friction, params) == 0.0 and friction.uses_tau0:
         return power_law.d_crit_A(alpha, indenter, params, adhesion=True)
     if adhesion and not adhesive_onset_A_is_non_adhesive(friction, indenter):  # both parts on a curved indenter
@@ -158,6 +160,7 @@ def critical_angle_A(friction: FrictionLaw | str | None, params: Parameters, pro
     """
     friction = as_friction_law(friction)
     indenter = _indenter(profile, params)
+    check_onset_scales(params, indenter, adhesion, friction)
     if adhesion and coulomb_cap_ratio(friction, params) == 0.0 and friction.uses_tau0:
         return float(power_law.critical_angle_A(indenter, params, adhesion=True))
     if adhesion and not adhesive_onset_A_is_non_adhesive(friction, indenter):  # both parts on a curved indenter
@@ -215,6 +218,7 @@ def d_crit_B(alpha, friction: FrictionLaw | str | None, params: Parameters, prof
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
     indenter = _indenter(profile, params)
+    check_onset_scales(params, indenter, adhesion, friction)
     own = theory_of(indenter).friction_forms
     if own is not None:
         depth = own.d_crit_B(alpha_arr, _cotangent(alpha_arr)[0], _tau0_per_radius(friction, params),
@@ -258,6 +262,7 @@ def critical_angle_B(friction: FrictionLaw | str | None, params: Parameters, pro
     """
     friction = as_friction_law(friction)
     indenter = _indenter(profile, params)
+    check_onset_scales(params, indenter, adhesion, friction)
     if friction.uses_tau0 and (adhesion or theory_of(indenter).flat_face):
         return power_law.critical_angle_B(indenter, params, adhesion=adhesion)
     return 90.0
@@ -297,6 +302,7 @@ def d_crit_B_indentation(alpha, friction: FrictionLaw | str | None, params: Para
     friction = as_friction_law(friction)
     alpha_arr = validate_alpha(alpha)
     indenter = _indenter(profile, params)
+    check_onset_scales(params, indenter, adhesion, friction)
     kappa = coulomb_cap_ratio(friction, params)
     own = theory_of(indenter).friction_forms
     if own is not None:  # (with adhesion or without)
@@ -341,6 +347,7 @@ def critical_angle_B_indentation(friction: FrictionLaw | str | None, params: Par
     """
     friction = as_friction_law(friction)
     indenter = _indenter(profile, params)
+    check_onset_scales(params, indenter, False, friction)
     kappa = coulomb_cap_ratio(friction, params)
     own = theory_of(indenter).friction_forms
     if own is not None:

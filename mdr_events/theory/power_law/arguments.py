@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 
+from mdr_events.contact.friction import TAU0, FrictionLaw
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import FlatPunch, PowerLaw, Profile
 from mdr_events.theory import symbolic
@@ -16,7 +17,8 @@ from mdr_events.theory.analytic.arguments import check_work
 from mdr_events.theory.forms import ClosedForms
 from mdr_events.validation import check_flag, shown, validate_alpha
 
-__all__ = ["check_profile", "check_work", "as_output", "path_angles", "final_depth_of", "ADHESIVE_MIN_EXPONENT"]
+__all__ = ["check_profile", "check_work", "as_output", "path_angles", "final_depth_of", "ADHESIVE_MIN_EXPONENT",
+           "check_onset_scales"]
 
 
 def _rel(key: str):
@@ -100,3 +102,35 @@ def _forms(profile) -> ClosedForms:
 
     return theory_of(check_profile(profile)).closed_forms
 
+
+
+def check_onset_scales(params: Parameters, profile: Profile, adhesion: bool, friction: FrictionLaw = TAU0) -> None:
+    """The scales of a slip onset's closed form checked as the phase diagram's and the runs' are, before it is
+    computed (:func:`~mdr_events.theory.scales.check_representable`; the paraboloid's of ``analytic`` are already).
+
+    With ``adhesion`` the works' branches are the onset's (their jump-off among the scales), without it they are not
+    read (a non-adhesive onset takes any exponent). A power law near ``n = 1/2`` with adhesion raises its radii to
+    ``1/(2n − 1)``: ``n = 0.501`` gave ``nan`` onsets and critical angles with NumPy's overflow, ``n = 0.5 + 1e-10``
+    with ``Δγ0 = 1e4`` J/m² Python's own ``OverflowError``; now refused naming the scale that does not fit
+    (issue 32 round 29 B2).
+
+    Parameters
+    ----------
+    params : Parameters
+        The material, ``τ0``, the works and ``d_max``.
+    profile : PowerLaw or FlatPunch
+        The indenter, checked.
+    adhesion : bool
+        Whether the onset is that of the adhesive branches (checked as a flag).
+    friction : FrictionLaw, optional
+        The law, whose Coulomb part is a scale of its own (default the paper's ``"tau0"``).
+
+    Raises
+    ------
+    ValueError
+        Naming the first scale that does not fit in double precision, and the bound.
+    """
+    from mdr_events.theory.scales import check_representable  # (scales imports the closed forms)
+
+    check_flag("adhesion", adhesion)
+    check_representable(params if adhesion else params.replace(dgamma0=0.0, dgamma1=0.0), profile, friction)

@@ -10,7 +10,8 @@ import numpy as np
 
 from mdr_events.parameters import Parameters
 from mdr_events.contact.indenters import PowerLaw, Profile
-from mdr_events.theory.power_law.arguments import _check_adhesive, _forms, _rel, as_output, final_depth_of, path_angles
+from mdr_events.theory.power_law.arguments import (_check_adhesive, _forms, _rel, as_output, check_onset_scales,
+                                                   final_depth_of, path_angles)
 from mdr_events.theory.power_law.convex_roots import convex_root
 from mdr_events.theory.power_law.detachment import _jump_off
 from mdr_events.theory.power_law.normal import contact_radius
@@ -60,7 +61,9 @@ def d_crit_A(alpha, profile: Profile, params: Parameters, adhesion: bool = False
     ValueError
         An angle out of range, or a power law with ``n < 1`` with adhesion.
     """
-    return _forms(profile).d_crit_A(alpha, profile, params, adhesion)
+    forms = _forms(profile)
+    check_onset_scales(params, profile, adhesion)
+    return forms.d_crit_A(alpha, profile, params, adhesion)
 
 
 def _d_crit_A(alpha, profile: PowerLaw, params: Parameters, adhesion: bool = False):
@@ -120,7 +123,9 @@ def critical_angle_A(profile: Profile, params: Parameters, adhesion: bool = True
     float
         ``α_c`` in degrees.
     """
-    return _forms(profile).critical_angle_A(profile, params, adhesion)
+    forms = _forms(profile)
+    check_onset_scales(params, profile, adhesion)
+    return forms.critical_angle_A(profile, params, adhesion)
 
 
 def _critical_angle_A(profile: PowerLaw, params: Parameters, adhesion: bool = True) -> float:
@@ -169,7 +174,9 @@ def d_crit_B(alpha, profile: Profile, params: Parameters, adhesion: bool = False
     ValueError
         An angle out of range, or ``n <= 1/2`` with adhesion.
     """
-    return _forms(profile).d_crit_B(alpha, profile, params, adhesion)
+    forms = _forms(profile)
+    check_onset_scales(params, profile, adhesion)
+    return forms.d_crit_B(alpha, profile, params, adhesion)
 
 
 def _d_crit_B(alpha, profile: PowerLaw, params: Parameters, adhesion: bool = False):
@@ -220,7 +227,9 @@ def critical_angle_B(profile: Profile, params: Parameters, adhesion: bool = True
     float
         ``α_c`` in degrees.
     """
-    return _forms(profile).critical_angle_B(profile, params, adhesion)
+    forms = _forms(profile)
+    check_onset_scales(params, profile, adhesion)
+    return forms.critical_angle_B(profile, params, adhesion)
 
 
 def _critical_angle_B(profile: PowerLaw, params: Parameters, adhesion: bool = True) -> float:
@@ -271,7 +280,9 @@ def d_crit_B_indentation(alpha, profile: Profile, params: Parameters, adhesion: 
     ValueError
         An angle out of range, or a power law with ``n < 1``.
     """
-    return _forms(profile).d_crit_B_indentation(alpha, profile, params, adhesion)
+    forms = _forms(profile)
+    check_onset_scales(params, profile, adhesion)
+    return forms.d_crit_B_indentation(alpha, profile, params, adhesion)
 
 
 def _d_crit_B_indentation(alpha, profile: PowerLaw, params: Parameters, adhesion: bool = False):
@@ -330,7 +341,9 @@ def critical_angle_B_indentation(profile: Profile, params: Parameters, adhesion:
     ValueError
         A ``final_depth`` not beyond ``d_max``.
     """
-    return _forms(profile).critical_angle_B_indentation(profile, params, adhesion, final_depth)
+    forms = _forms(profile)
+    check_onset_scales(params, profile, adhesion)
+    return forms.critical_angle_B_indentation(profile, params, adhesion, final_depth)
 
 
 def _critical_angle_B_indentation(profile: PowerLaw, params: Parameters, adhesion: bool = True,
