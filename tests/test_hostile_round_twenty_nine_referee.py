@@ -1,0 +1,67 @@
+"""The twenty-ninth hostile round (issue 32), the referee's side: each class of what failed, with the cases that
+showed it.
+
+The round's cases (``validate`` on crafted wrong runs of scenario A 20° — forces off by a constant or a sign, time
+shifted or stretched, truncated, thinned, reordered, duplicated, units off by 1000, columns swapped, another angle,
+radius or scenario — beside the right runs, the continuum resampled and the discrete at 2 µm with noise at the stated
+level; ``fit`` on flat, zero, one- and two-point and noisy data; ``lammps-check`` at the edges of its parameters) are
+listed with their outcomes in the issue's closing note; what failed is below.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+import mdr_events as me
+from mdr_events.dem.check import lammps_check
+from mdr_events.dem.deck import check_depth_within_sphere
+from mdr_events.dem.mapping import LammpsModel
+from mdr_events.dem.runner import run_lammps
+from hostile_checks import cli_one_line, one_line_naming
+
+#: The paper's deepest depth (m): scenario A's path goes down to it.
+D_MAX = me.Parameters.paper().d_max
+#: LAMMPS's steps of the runs below: 20 a segment at least (the deck's rule) and cheap.
+STEPS = 2000
+#: Sphere radii (m) that the paper's path reaches or passes: 2/3 of the depth (LAMMPS ran, and the verdict failed
+#: naming only "a sample left out lies 1.19 ranges from the exact value"), the depth itself (the centre on the wall)
+#: and 1e-12 m (the sphere left the box: "LAMMPS: ERROR: Lost atoms").
+TOO_SMALL = (2e-4, D_MAX, 1e-12)
+
+
+def _hertz(R: float) -> me.Contact:
+    """The paper's elastomer without adhesion or friction, a sphere of radius ``R``."""
+    return me.Contact.paper().replace(R=R, dgamma0=0.0, dgamma1=0.0, tau0=0.0)
+
+
+@pytest.mark.parametrize("R", TOO_SMALL)
+def test_a_path_as_deep_as_the_lammps_sphere_is_refused_before_lammps_runs(R):
+    """Class 2 (refused before running, with the bound that applies): LAMMPS's sphere has its centre at ``z = R - d``
+    above the wall, so a path reaching ``d >= R`` pushes it onto and through the wall, where the MDR's paraboloid goes
+    on: the check ran LAMMPS and failed for no stated cause, or stopped on LAMMPS's "Lost atoms". Refused in one line
+    naming R, the path's depth and the bound, by the API's both entries and the CLI."""
+    contact = _hertz(R)
+    model = LammpsModel("hertz/material")
+    message = one_line_naming(lambda: lammps_check(contact, "A", 20.0, model=model, steps=STEPS), "R=")
+    assert f"{D_MAX:.6g}" in message
+    path = me.Scenario("A", [20.0]).cases(contact.parameters(D_MAX, me.Parameters.paper().v)).paths[0]
+    one_line_naming(lambda: run_lammps(contact, path, "hertz/material", steps=STEPS), "R=")
+
+
+def test_the_cli_refuses_a_sphere_the_path_passes_through(capsys, tmp_path):
+    err = cli_one_line(capsys, ["lammps-check", "--scenario", "A", "--alpha", "20", "--normal", "hertz/material",
+                                "--dgamma0", "0", "--dgamma1", "0", "--R", "2e-4", "--steps", str(STEPS),
+                                "--out", str(tmp_path / "out")])
+    assert "R=0.0002" in err
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+
+
+def test_the_bound_is_the_depth_itself():
+    """The bound is the deck's geometry: a sphere one ulp larger than the path's depth is taken (the overlap is the
+    depth at every ``d < R``), the depth itself refused."""
+    path = me.Scenario("A", [20.0]).cases(me.Parameters.paper()).paths[0]
+    deepest = float(path.max_depth)
+    check_depth_within_sphere(math.nextafter(deepest, math.inf), path)
+    one_line_naming(lambda: check_depth_within_sphere(deepest, path), "R=")
