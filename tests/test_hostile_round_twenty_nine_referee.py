@@ -12,9 +12,11 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 import mdr_events as me
+from mdr_events.analysis.reports import ValidationReport
 from mdr_events.dem.check import lammps_check
 from mdr_events.dem.deck import check_depth_within_sphere
 from mdr_events.dem.mapping import LammpsModel
@@ -29,6 +31,16 @@ STEPS = 2000
 #: naming only "a sample left out lies 1.19 ranges from the exact value"), the depth itself (the centre on the wall)
 #: and 1e-12 m (the sphere left the box: "LAMMPS: ERROR: Lost atoms").
 TOO_SMALL = (2e-4, D_MAX, 1e-12)
+
+
+#: The discrete spacing (m) of the candidate below: its first sample (t = 0) is out of contact where the exact
+#: contact has just jumped in (``left_out`` code 2), and the run passes :data:`SPRING_TOLERANCE`.
+SPRING_DX = 8e-6
+#: The spring model's verdict bound at :data:`SPRING_DX` (its max error there: 0.4 % of the range).
+SPRING_TOLERANCE = 2e-2
+#: Spikes at the sample where the contact differs, as shares of the quantity's largest magnitude: each one more than
+#: the tolerance beyond every exact value around it, each below the one range the verdict allowed there before.
+SPIKES = (0.05, -0.3, 0.9)
 
 
 def _hertz(R: float) -> me.Contact:
@@ -65,3 +77,45 @@ def test_the_bound_is_the_depth_itself():
     deepest = float(path.max_depth)
     check_depth_within_sphere(math.nextafter(deepest, math.inf), path)
     one_line_naming(lambda: check_depth_within_sphere(deepest, path), "R=")
+
+
+@pytest.fixture(scope="module")
+def spring_run():
+    """The spring model along A 20° at :data:`SPRING_DX`, its samples written (the rows after the run's end dropped)."""
+    run = me.simulate(me.Contact.paper(), me.Scenario("A", alpha=[20]),
+                      me.Discrete(dx=SPRING_DX, dt=SPRING_DX / 2e-6)).sel(alpha=20)
+    written = np.isfinite(run.normal_force.values)
+    return {name: run[name].values[written] for name in ("time", "normal_force", "tangential_force", "contact_area")}
+
+
+def _validated(candidate: dict) -> ValidationReport:
+    return ValidationReport.from_dataset(me.validate(candidate, me.Contact.paper(), "A", 20.0,
+                                                     tolerance=SPRING_TOLERANCE))
+
+
+def test_the_honest_spring_run_passes_with_a_sample_where_the_contact_differs(spring_run):
+    """The run the spikes below spoil: it passes, one sample's contact differs from the exact, and there it lies
+    within the exact values around it (0 beyond them)."""
+    report = _validated(spring_run)
+    assert report.passed
+    assert int(np.count_nonzero(report.dataset["left_out"].values == 2)) >= 1
+    assert np.all(report.dataset["contact_change_max_excess"].values == 0.0)
+
+
+@pytest.mark.parametrize("name", ("normal_force", "tangential_force", "contact_area"))
+@pytest.mark.parametrize("spike", SPIKES)
+def test_a_spike_where_the_contact_differs_fails(spring_run, name, spike):
+    """Class 1 (a broken run never passes): at a sample where one run is in contact and the other not, the verdict
+    bounded the candidate by one range of the exact value (``LEFT_OUT_BOUND``), so a DEM code's start-up spike of
+    0.9 times the peak force at its first sample passed. A contact made or lost at another time moves the jump between
+    the exact values on either side: beyond them and 0 the sample fails by the tolerance, named."""
+    report = _validated(spring_run)
+    where = int(np.flatnonzero(report.dataset["left_out"].values == 2)[0])
+    spoiled = {key: values.copy() for key, values in spring_run.items()}
+    if name == "contact_area":  # (a positive area would put the candidate in contact there: a sample compared)
+        spike = -abs(spike)
+    spoiled[name][where] += spike * float(np.max(np.abs(spring_run[name])))
+    failed = _validated(spoiled)
+    assert not failed.passed
+    assert any(text.startswith(f"{name}: a sample where the contact differs") for text in failed.failures), \
+        failed.failures
