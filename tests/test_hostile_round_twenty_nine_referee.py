@@ -41,6 +41,11 @@ SPRING_TOLERANCE = 2e-2
 #: Spikes at the sample where the contact differs, as shares of the quantity's largest magnitude: each one more than
 #: the tolerance beyond every exact value around it, each below the one range the verdict allowed there before.
 SPIKES = (0.05, -0.3, 0.9)
+#: The continuum resampled from this long before its first contact (s): the contact is then made between two samples,
+#: and the first sample in contact straddles the jump-in (``left_out`` code 3).
+BEFORE_CONTACT = 3.7
+#: Its samples over the whole run (the exact run's 1202 s: ~0.8 s apart).
+RESAMPLED = 1537
 
 
 def _hertz(R: float) -> me.Contact:
@@ -117,5 +122,34 @@ def test_a_spike_where_the_contact_differs_fails(spring_run, name, spike):
     spoiled[name][where] += spike * float(np.max(np.abs(spring_run[name])))
     failed = _validated(spoiled)
     assert not failed.passed
-    assert any(text.startswith(f"{name}: a sample where the contact differs") for text in failed.failures), \
+    assert any(text.startswith(f"{name}: a sample where the contact differs or is made") for text in failed.failures), \
         failed.failures
+
+
+@pytest.fixture(scope="module")
+def resampled_continuum():
+    """The exact run along A 20° sampled from :data:`BEFORE_CONTACT` before its first contact (0 out of contact)."""
+    scenario = me.Scenario("A", alpha=[20])
+    end = float(me.simulate(me.Contact.paper(), scenario, "continuum").time[-1])
+    times = np.linspace(-BEFORE_CONTACT, end, RESAMPLED)
+    touching = me.simulate(me.Contact.paper(), scenario, "continuum", t=times[times >= 0]).sel(alpha=20)
+    before = np.zeros(np.count_nonzero(times < 0))
+    return {"time": times, **{name: np.concatenate([before, touching[name].values])
+                              for name in ("normal_force", "tangential_force", "contact_area")}}
+
+
+@pytest.mark.parametrize("name", ("normal_force", "tangential_force", "contact_area"))
+@pytest.mark.parametrize("spike", SPIKES)
+def test_a_spike_at_the_first_sample_after_the_contact_is_made_fails(resampled_continuum, name, spike):
+    """The same class where both runs are in contact: the first sample after a jump-in made between samples straddles
+    it (code 3), and was bounded by one range too (the corners' rule covers corners and reversals only): a spike of
+    0.9 times the peak passed. The honest resampled run passes at the default tolerance."""
+    honest = ValidationReport.from_dataset(me.validate(resampled_continuum, me.Contact.paper(), "A", 20.0))
+    assert honest.passed
+    where = int(np.flatnonzero(resampled_continuum["time"] > 0)[0])
+    assert honest.dataset["left_out"].values[where] == 3
+    spoiled = {key: values.copy() for key, values in resampled_continuum.items()}
+    spoiled[name][where] += spike * float(np.max(np.abs(resampled_continuum[name])))
+    failed = ValidationReport.from_dataset(me.validate(spoiled, me.Contact.paper(), "A", 20.0))
+    assert not failed.passed
+    assert any(name in text for text in failed.failures), failed.failures

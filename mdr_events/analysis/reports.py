@@ -84,8 +84,8 @@ def validation_failures(quantities: Sequence[str], max_errors: Sequence[float], 
     ``tolerance`` (or not a number); the share of the exact contact's time in contact in one run only above
     ``tolerance``; a sample left out farther than :data:`LEFT_OUT_BOUND` ranges from the exact value; a sample at a
     corner or a reversal farther than ``tolerance`` beyond the exact change beside it, or one where the contact
-    differs farther than ``tolerance`` beyond the exact values around it and 0; an event's time off by more than
-    ``tolerance`` of the path's duration, or in one run only (:class:`EventTimes`)."""
+    differs or is made farther than ``tolerance`` beyond the exact values around it and 0; an event's time off by
+    more than ``tolerance`` of the path's duration, or in one run only (:class:`EventTimes`)."""
     if not len(quantities):
         return ["no quantity compared"]
     failures = [f"{name}: max error {error:.3g} of its range > tolerance {tolerance:g}"
@@ -97,9 +97,9 @@ def validation_failures(quantities: Sequence[str], max_errors: Sequence[float], 
                  for name, error in zip(quantities, left_out_errors) if error > LEFT_OUT_BOUND]
     failures += [f"{name}: a sample at a corner lies {excess:.3g} of its range beyond the exact change there > "
                  f"tolerance {tolerance:g}" for name, excess in zip(quantities, corner_excess) if excess > tolerance]
-    failures += [f"{name}: a sample where the contact differs lies {excess:.3g} of its range beyond the exact values "
-                 f"around it and 0 > tolerance {tolerance:g}" for name, excess in zip(quantities, contact_change_excess)
-                 if excess > tolerance]
+    failures += [f"{name}: a sample where the contact differs or is made lies {excess:.3g} of its range beyond the "
+                 f"exact values around it and 0 > tolerance {tolerance:g}"
+                 for name, excess in zip(quantities, contact_change_excess) if excess > tolerance]
     return failures + ([] if events is None else _event_failures(events, tolerance))
 
 

@@ -213,16 +213,24 @@ def corner_excess(times: np.ndarray, candidate: np.ndarray, exact: np.ndarray, c
     return worst / exact_range(exact, compared)
 
 
-def contact_change_excess(candidate: np.ndarray, exact: np.ndarray, codes: np.ndarray, compared: np.ndarray) -> float:
-    """The largest difference of a sample where one run is in contact and the other is not (``left_out`` code 2)
-    beyond the exact values around it, relative to the exact quantity's range over the compared samples (0 if none).
+def contact_change_excess(times: np.ndarray, candidate: np.ndarray, exact: np.ndarray, codes: np.ndarray,
+                          compared: np.ndarray, events) -> float:
+    """The largest difference of a sample where one run is in contact and the other is not (``left_out`` code 2), or
+    of one straddling a contact made or lost (code 3 after a jump: the first contact, a re-contact), beyond the exact
+    values around it, relative to the exact quantity's range over the compared samples (0 if none).
 
     A contact made or lost a little earlier or later than the exact one moves the jump between the values on either
     side of it: each stretch of such samples, ``i…j``, lies within the exact values over ``i-1…j+1`` and 0 (the
     value of every compared quantity out of contact). A spike there was bounded by one range only
     (:data:`~mdr_events.analysis.reports.LEFT_OUT_BOUND`): a first sample of 0.9 times the peak force passed.
     """
-    stretch = np.flatnonzero((codes == 2) & np.isfinite(candidate))
+    judged = codes == 2
+    for event in events:
+        if event.kind.value in STRADDLED_EVENTS and event.kind.value not in CONTINUOUS_EVENTS:
+            k = int(np.searchsorted(times, event.time, side="left"))
+            if 0 < k < len(times) and codes[k] == 3:
+                judged[k] = True
+    stretch = np.flatnonzero(judged & np.isfinite(candidate))
     if not stretch.size or not np.any(compared):
         return 0.0
     worst = 0.0

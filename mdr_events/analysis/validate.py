@@ -344,7 +344,8 @@ def _norm_variables(data: dict, samples: _Samples, present: list[str], tolerance
     for name in present:
         candidate, exact = samples.quantities[name], samples.exact[name]
         left_out_errors.append(left_out_error(candidate, exact, samples.codes, samples.compared))
-        change.append(contact_change_excess(candidate, exact, samples.codes, samples.compared))
+        change.append(contact_change_excess(samples.times, candidate, exact, samples.codes, samples.compared,
+                                            samples.solution.events))
         excess.append(corner_excess(samples.times, candidate, exact, samples.codes, samples.compared,
                                     samples.solution.events))
         difference = np.where(samples.compared, candidate - exact, np.nan)
@@ -367,9 +368,9 @@ def _norm_variables(data: dict, samples: _Samples, present: list[str], tolerance
                                    "over the intervals beside it, relative to the range (the verdict's bound: "
                                    "tolerance)"})
     data["contact_change_max_excess"] = (("quantity",), np.array(change), {
-        "units": "1", "long_name": "max error of a sample where one run is in contact and the other is not beyond the "
-                                   "exact values around it and 0, relative to the range (the verdict's bound: "
-                                   "tolerance)"})
+        "units": "1", "long_name": "max error of a sample where one run is in contact and the other is not, or of one "
+                                   "straddling a contact made, beyond the exact values around it and 0, relative to "
+                                   "the range (the verdict's bound: tolerance)"})
     return norms["max_error"], left_out_errors, excess, change
 
 
