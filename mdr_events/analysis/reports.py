@@ -78,12 +78,14 @@ def _event_failures(events: EventTimes, tolerance: float) -> list[str]:
 
 def validation_failures(quantities: Sequence[str], max_errors: Sequence[float], contact_differs: float,
                         left_out_errors: Sequence[float], tolerance: float,
-                        corner_excess: Sequence[float] = (), events: EventTimes | None = None) -> list[str]:
+                        corner_excess: Sequence[float] = (), events: EventTimes | None = None,
+                        contact_change_excess: Sequence[float] = ()) -> list[str]:
     """What fails a validation, in words (none: it passes): no quantity compared; a quantity's max error above
     ``tolerance`` (or not a number); the share of the exact contact's time in contact in one run only above
     ``tolerance``; a sample left out farther than :data:`LEFT_OUT_BOUND` ranges from the exact value; a sample at a
-    corner or a reversal farther than ``tolerance`` beyond the exact change beside it; an event's time off by more
-    than ``tolerance`` of the path's duration, or in one run only (:class:`EventTimes`)."""
+    corner or a reversal farther than ``tolerance`` beyond the exact change beside it, or one where the contact
+    differs or is made farther than ``tolerance`` beyond the exact values around it and 0; an event's time off by
+    more than ``tolerance`` of the path's duration, or in one run only (:class:`EventTimes`)."""
     if not len(quantities):
         return ["no quantity compared"]
     failures = [f"{name}: max error {error:.3g} of its range > tolerance {tolerance:g}"
@@ -95,6 +97,9 @@ def validation_failures(quantities: Sequence[str], max_errors: Sequence[float], 
                  for name, error in zip(quantities, left_out_errors) if error > LEFT_OUT_BOUND]
     failures += [f"{name}: a sample at a corner lies {excess:.3g} of its range beyond the exact change there > "
                  f"tolerance {tolerance:g}" for name, excess in zip(quantities, corner_excess) if excess > tolerance]
+    failures += [f"{name}: a sample where the contact differs or is made lies {excess:.3g} of its range beyond the "
+                 f"exact values around it and 0 > tolerance {tolerance:g}"
+                 for name, excess in zip(quantities, contact_change_excess) if excess > tolerance]
     return failures + ([] if events is None else _event_failures(events, tolerance))
 
 
@@ -168,12 +173,14 @@ class ValidationReport(_Report):
         quantities = [str(name) for name in data["quantity"].values]
         share = float(data["contact_differs_share"]) if "contact_differs_share" in data else math.nan
         left_out = data["left_out_max_error"].values if "left_out_max_error" in data else np.zeros(len(quantities))
-        corner = data["corner_max_excess"].values if "corner_max_excess" in data else ()  # (files written before)
+        corner, change = (data[key].values if key in data else () for key in ("corner_max_excess",
+                                                                              "contact_change_max_excess"))
+        # (() of files written before)
         events = EventTimes([str(name) for name in data["event"].values], data["event_time_exact"].values,
                             data["event_time_candidate"].values, data["event_time_relative_error"].values) \
             if "event_time_relative_error" in data else None  # (files written before compared no events)
         return validation_failures(quantities, data["max_error"].values, share, left_out, self.tolerance, corner,
-                                   events)
+                                   events, change)
 
 
 @dataclass(frozen=True)

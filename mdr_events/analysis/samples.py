@@ -213,6 +213,35 @@ def corner_excess(times: np.ndarray, candidate: np.ndarray, exact: np.ndarray, c
     return worst / exact_range(exact, compared)
 
 
+def contact_change_excess(times: np.ndarray, candidate: np.ndarray, exact: np.ndarray, codes: np.ndarray,
+                          compared: np.ndarray, events) -> float:
+    """The largest difference of a sample where one run is in contact and the other is not (``left_out`` code 2), or
+    of one straddling a contact made or lost (code 3 after a jump: the first contact, a re-contact), beyond the exact
+    values around it, relative to the exact quantity's range over the compared samples (0 if none).
+
+    A contact made or lost a little earlier or later than the exact one moves the jump between the values on either
+    side of it: each stretch of such samples, ``i…j``, lies within the exact values over ``i-1…j+1`` and 0 (the
+    value of every compared quantity out of contact). A spike there was bounded by one range only
+    (:data:`~mdr_events.analysis.reports.LEFT_OUT_BOUND`): a first sample of 0.9 times the peak force passed.
+    """
+    judged = codes == 2
+    for event in events:
+        if event.kind.value in STRADDLED_EVENTS and event.kind.value not in CONTINUOUS_EVENTS:
+            k = int(np.searchsorted(times, event.time, side="left"))
+            if 0 < k < len(times) and codes[k] == 3:
+                judged[k] = True
+    stretch = np.flatnonzero(judged & np.isfinite(candidate))
+    if not stretch.size or not np.any(compared):
+        return 0.0
+    worst = 0.0
+    for part in np.split(stretch, np.flatnonzero(np.diff(stretch) > 1) + 1):
+        around = exact[max(int(part[0]) - 1, 0):int(part[-1]) + 2]
+        around = np.append(around[np.isfinite(around)], 0.0)
+        values = candidate[part]
+        worst = max(worst, float(np.max(np.maximum(values - np.max(around), np.min(around) - values))))
+    return worst / exact_range(exact, compared)
+
+
 def left_out_error(candidate: np.ndarray, exact: np.ndarray, codes: np.ndarray, compared: np.ndarray) -> float:
     """The largest difference of the samples left out for a contact that differs or an event they straddle, relative
     to the exact quantity's range over the compared samples (0 if none)."""

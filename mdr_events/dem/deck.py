@@ -27,7 +27,8 @@ from mdr_events.dem.mapping import LammpsModel, WallCoefficients, wall_model_arg
 from mdr_events.models.paths import Path
 from mdr_events.validation import MAX_COUNT, shown
 
-__all__ = ["MIN_STEPS_PER_SEGMENT", "OUTPUT_COLUMNS", "DEFAULT_OUTPUT", "steps_for", "input_deck"]
+__all__ = ["MIN_STEPS_PER_SEGMENT", "OUTPUT_COLUMNS", "DEFAULT_OUTPUT", "steps_for", "check_depth_within_sphere",
+           "input_deck"]
 
 #: The least number of time steps on each segment of the path: a corner is then resolved to 1/20 of the shortest
 #: segment's duration, and a segment is no jump in LAMMPS's history (D2).
@@ -73,6 +74,25 @@ def steps_for(path: Path, steps: int | None, dt: float | None) -> tuple[int, flo
                          f"dt <= {needed:.6g} s ({MIN_STEPS_PER_SEGMENT} steps per segment), i.e. steps >= "
                          f"{math.ceil(duration / needed)}")
     return int(steps), step
+
+
+def check_depth_within_sphere(radius: float, path: Path) -> None:
+    """Refuse a path deeper than the sphere LAMMPS moves along it: its centre at ``z = R - d`` reaches the wall at
+    ``d = R`` and crosses it beyond, where the paraboloid of the MDR goes on. LAMMPS's overlap is then no longer the
+    path's depth (R = 0.2 mm along the paper's path to 0.3 mm: the normal force 1.19 of its range off, a verdict that
+    named no cause), and beyond ``d = 3R`` the sphere leaves the box (LAMMPS: "Lost atoms"). The bound is the deck's
+    geometry alone: at every ``d < R`` the overlap is the depth (R = 0.31 mm there: within 1e-14 of the range).
+
+    Raises
+    ------
+    ValueError
+        The path's deepest depth is ``R`` or more: one line naming both and the bound.
+    """
+    deepest = float(path.max_depth)
+    if not deepest < radius:
+        raise ValueError(f"R={radius!r} m is not allowed with a path whose deepest depth is {deepest:.6g} m: LAMMPS's "
+                         "sphere of radius R (its centre at z = R - d above the wall) would reach the wall there and "
+                         f"cross it; allowed: R > {deepest:.6g} m, the path's deepest depth (or a shallower path)")
 
 
 def _n(value: float) -> str:

