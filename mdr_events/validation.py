@@ -218,9 +218,9 @@ def check_choice(name: str, value: Any, allowed: Collection) -> None:
     allowed : collection
         The allowed values, listed (as their ``repr``) in the message.
     """
-    try:
-        known = value in allowed
-    except TypeError:  # (a list or a dict: unhashable, so in no set or mapping of names)
+    try:  # (an array compared with each name answers with an array, whose truth is ambiguous)
+        known = not isinstance(value, np.ndarray) and value in allowed
+    except (TypeError, ValueError):  # (a list or a dict: unhashable, in no set or mapping of names; a DataFrame)
         known = False
     if not known:
         raise ValueError(f"{name}={shown(value)} is not allowed; allowed: {', '.join(map(repr, allowed))}")
@@ -229,7 +229,7 @@ def check_choice(name: str, value: Any, allowed: Collection) -> None:
 def check_flag(name: str, value: Any) -> None:
     """Raise ``TypeError`` unless ``value`` is a bool (Python's or NumPy's)."""
     if not isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name}={value!r} is not allowed; allowed: True or False")
+        raise TypeError(f"{name}={shown(value)} is not allowed; allowed: True or False")
 
 
 def validate_alpha(alpha) -> np.ndarray:
