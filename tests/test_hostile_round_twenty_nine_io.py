@@ -15,7 +15,7 @@ import pytest
 
 import mdr_events as me
 from mdr_events.io.candidates import LISTED_CHARACTERS, read_candidate
-from hostile_checks import cpu_limited, one_line_naming
+from hostile_checks import cli_one_line, cpu_limited, one_line_naming
 
 #: The longest message a refusal may print (characters): the value shown is cut to 80 characters
 #: (``validation.shown``) and a file's columns to 200 (``io.candidates.LISTED_CHARACTERS``); the rest is the sentence.
@@ -129,3 +129,50 @@ def test_a_long_list_of_paths_is_refused_in_linear_time():
         with pytest.raises(TypeError, match=r"scenario\[0\]=0 \(int\) is not allowed; allowed"):
             me.simulate(CONTACT, [0] * 100_000)
     cpu_limited(refused, LONG_LIST_BUDGET)
+
+
+def test_a_control_character_of_a_file_s_name_is_escaped_on_the_cli_s_line(capsys, tmp_path, monkeypatch):
+    """Class 5, round 29: the CLI's line joined a message's lines but printed its other control characters raw: a CSV
+    or a study file named ``run\\x1b[31m.csv`` (a name a script may write) turned the terminal red and the line
+    after it; a bell rang. They are written as ``repr`` writes them (``\\x1b``), on the one line."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "run\x1b[31m.csv").write_text("time,normal_force\n0,0\n1,0\n", encoding="utf-8")
+    (tmp_path / "study\x07.toml").write_text("not toml\n", encoding="utf-8")
+    for argv in (["validate", "--scenario", "A", "--alpha", "20", "--out", "o", "run\x1b[31m.csv"],
+                 ["run", "study\x07.toml"]):
+        err = cli_one_line(capsys, argv)
+        assert err[:-1].isprintable() and ("run\\x1b[31m" in err or "study\\x07" in err), err
+
+
+@pytest.mark.parametrize("argv", [
+    ["simulate", "--scenario", "Z" * 100_000],  # argparse's "invalid choice: 'ZZZ...'", the value whole
+    ["derive"] + [f"study{index}.toml" for index in range(10_000)],  # a shell's glob given to a verb of no file
+    ["derive", "--key", "k" * 100_000],  # the key shown twice: 200 kB
+], ids=["invalid choice", "unrecognized words", "unknown key"])
+def test_the_cli_shows_a_long_value_cut(capsys, argv):
+    """Class 5, round 29: the CLI wrote a value it refuses whole: a choice of 100 000 characters (argparse's
+    message), ten thousand words it did not take, or a relation's key (twice): 100-200 kB on one line. Each is cut
+    to 80 characters (the words with their count); derive's list of allowed keys is the rest of its line."""
+    err = cli_one_line(capsys, argv)
+    assert "Z" * 81 not in err and "k" * 81 not in err and "study100.toml" not in err, err[:300]
+    assert len(err) <= MESSAGE_CHARACTERS or argv[0] == "derive" and len(err) < 3000, len(err)
+
+
+@pytest.mark.parametrize("options, given", [
+    (["--layer-base", "frictionless"], "--layer-base frictionless without --h"),
+    (["--h", "inf", "--layer-base", "bonded"], "--layer-base bonded with --h inf"),
+], ids=["without h", "h inf"])
+@pytest.mark.parametrize("verb", [["simulate", "--method", "continuum"], ["validate", "run.csv"],
+                                  ["fit", "--free", "tau0", "--", "run.csv"]], ids=["simulate", "validate", "fit"])
+def test_a_layer_base_on_the_half_space_is_refused(capsys, tmp_path, monkeypatch, options, given, verb):
+    """Class 7, round 29: ``simulate --layer-base frictionless`` without ``--h`` ran the half-space in silence, the
+    base ignored (the user asked for a layer free to slide on its base and got the paper's half-space), where
+    ``--mu`` without Coulomb's law and ``--v-ref`` without the rate law are refused. Refused now, in one line naming
+    the option and what is allowed, before anything runs (a sweep's ``--layer-base`` sets its study's layer's base or
+    a grid's over h, as before)."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "run.csv").write_text("time,normal_force\n0,0\n1,0\n", encoding="utf-8")
+    argv = [verb[0], "--scenario", "A", "--alpha", "20", "--out", "out", *options, *verb[1:]]
+    err = cli_one_line(capsys, argv)
+    assert given in err and "allowed: --layer-base with --h H" in err, err
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())

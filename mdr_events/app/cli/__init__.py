@@ -187,8 +187,10 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _one_line(message: str) -> str:
-    """A message on one line: its lines joined (nothing is cut)."""
-    return " ".join(line.strip() for line in message.splitlines() if line.strip())
+    """A message on one line: its lines joined (nothing is cut), and any other control character written as ``repr``
+    writes it (a file's name or a header's cell holding ``ESC[31m`` or a bell reached the terminal raw)."""
+    line = " ".join(part.strip() for part in message.splitlines() if part.strip())
+    return line if line.isprintable() else "".join(c if c.isprintable() else repr(c)[1:-1] for c in line)
 
 
 def _message(error: BaseException) -> str:
