@@ -15,7 +15,7 @@ from typing import Any, Callable, Collection
 
 import numpy as np
 
-__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "validate_alpha", "check_callback", "reads_attrs"]
+__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "shown_text", "validate_alpha", "check_callback", "reads_attrs"]
 
 #: Characters of a value's ``repr`` shown in a message (a long list or a file's content is cut).
 SHOWN_CHARACTERS = 80
@@ -30,6 +30,15 @@ def shown(value: Any) -> str:
         value = type(value)(value[:SHOWN_CHARACTERS]) if type(value) in (list, tuple) else value[:SHOWN_CHARACTERS]
     text = " ".join(repr(value).split())
     return text if len(text) <= SHOWN_CHARACTERS else text[: SHOWN_CHARACTERS - 3] + "..."
+
+
+def shown_text(text: str, characters: int = SHOWN_CHARACTERS) -> str:
+    """A name written bare in a message (a table's, a file's stem, a column's): its control characters written as
+    ``repr`` writes them, cut to ``characters`` characters (:func:`shown` quotes it: a value, not a name)."""
+    text = str(text)
+    if not text.isprintable():
+        text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
+    return text if len(text) <= characters else text[: characters - 3] + "..."
 
 
 #: What a number written as text may be (an option's value, a string of a study file, a CSV cell): :func:`plain_number`.

@@ -176,3 +176,49 @@ def test_a_layer_base_on_the_half_space_is_refused(capsys, tmp_path, monkeypatch
     err = cli_one_line(capsys, argv)
     assert given in err and "allowed: --layer-base with --h H" in err, err
     assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+
+
+OUTPUT = '[output]\ndirectory = "out"\n'
+
+
+@pytest.mark.parametrize("table", [
+    f'["{LONG}"]\na = 1\n',  # an unknown table
+    f'[simulation]\n"{LONG}" = 1\n',  # an unknown key
+    f'[limits]\n"{LONG}" = 1\n',
+    '[simulation]\nscenario = "A"\nalpha = [' + ", ".join(['"x"'] * 100_000) + ']\n',  # a value of the wrong kind
+    f'[phase_diagram]\nscenarios = ["{LONG}"]\n',
+    '[phase_diagram]\nscenarios = [' + ", ".join(['"A"'] * 100_000) + ']\n',
+    f'[validate]\nscenario = "A"\nalpha = 20\nruns = ["{LONG}"]\n',  # its stem too long, the run named twice
+], ids=["table", "key", "limit", "alpha kind", "scenario", "scenarios repeated", "validate run"])
+def test_a_study_file_s_refusal_shows_its_values_cut(tmp_path, table):
+    """Class 5, round 29: a study file's unknown table or key, a value of the wrong kind, a [phase_diagram] scenario
+    or a [validate] run were written whole into the refusal (100-500 kB on one line for a name of 100 000
+    characters or a list of 100 000 items): cut by ``validation.shown`` / ``shown_text``."""
+    study = tmp_path / "study.toml"
+    study.write_text(table + OUTPUT, encoding="utf-8")
+    with pytest.raises(ValueError) as refused:
+        me.load_study(study)
+    message = str(refused.value)
+    assert "allowed" in message and "\n" not in message and len(message) <= MESSAGE_CHARACTERS + len(str(study)), \
+        (len(message), message[:300])
+
+
+def test_a_study_s_integer_of_too_many_digits_is_refused_by_its_file(capsys, tmp_path):
+    """Class 3/5, round 29: ``E = 999...9`` (5000 digits) in a study made Python's own ValueError, "Exceeds the limit
+    (4300 digits) for integer string conversion ... use sys.set_int_max_str_digits()", naming neither the file nor
+    what is allowed (``tomllib`` converts with ``int()``): refused as the file's, in one line, exit 2."""
+    study = tmp_path / "study.toml"
+    study.write_text("[parameters]\nE = " + "9" * 5000 + "\n" + OUTPUT, encoding="utf-8")
+    with pytest.raises(ValueError, match=r"study.toml: an integer of more than \d+ digits cannot be read; allowed"):
+        me.load_study(study)
+    err = cli_one_line(capsys, ["run", str(study)])
+    assert "set_int_max_str_digits" not in err, err
+
+
+@pytest.mark.parametrize("items", [["x" * 10_000 + "=1"], ["steps=" + "x" * 10_000], ["steps=1e8", "steps=" + "0" * 10_000 + "1"]],
+                         ids=["name", "value", "twice"])
+def test_a_limit_s_text_is_shown_cut(items):
+    """Class 5, round 29: ``--limit`` wrote its text whole into the refusal (10 kB for a name of 10 000 characters);
+    cut to 80 characters."""
+    from mdr_events.app.inputs import limits
+    _short_line(lambda: limits(items), "--limit")

@@ -21,7 +21,7 @@ from mdr_events.io.files import input_file_problem, load_netcdf
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.validation import (PLAIN_NUMBER, SCALE_MAX, check_mapping, check_real, plain_number, real_array,
-                                   shown)
+                                   shown, shown_text)
 
 __all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor", "check_run_is_finite",
            "UNDEFINED_OUT_OF_CONTACT"]
@@ -34,7 +34,7 @@ LISTED_CHARACTERS = 200
 def columns_listed(columns) -> str:
     """The names of ``columns`` for a message, joined by commas on one line (control characters as in ``repr``) and cut
     to :data:`LISTED_CHARACTERS` characters with the count of them all; ``none`` if there are none."""
-    names = [str(name) if str(name).isprintable() else repr(str(name))[1:-1] for name in columns]
+    names = [shown_text(name, math.inf) for name in columns]
     text = ", ".join(names)
     if len(text) <= LISTED_CHARACTERS:
         return text or "none"
