@@ -153,6 +153,9 @@ def test_the_cli_shows_a_long_value_cut(capsys, argv):
     """Class 5, round 29: the CLI wrote a value it refuses whole: a choice of 100 000 characters (argparse's
     message), ten thousand words it did not take, or a relation's key (twice): 100-200 kB on one line. Each is cut
     to 80 characters (the words with their count); derive's list of allowed keys is the rest of its line."""
+    from mdr_events.app.cli._options import CUT_CHARACTERS
+    from mdr_events.validation import SHOWN_CHARACTERS
+    assert CUT_CHARACTERS == SHOWN_CHARACTERS  # (the parser's copy, kept free of numpy)
     err = cli_one_line(capsys, argv)
     assert "Z" * 81 not in err and "k" * 81 not in err and "study100.toml" not in err, err[:300]
     assert len(err) <= MESSAGE_CHARACTERS or argv[0] == "derive" and len(err) < 3000, len(err)

@@ -243,6 +243,8 @@ def read_toml(path: Any, what: str) -> tuple[dict[str, Any], FilePath]:
         raise StudyError(f"{where}: not UTF-8 text (byte {error.start}: {error.reason}); {allowed}") from None
     except tomllib.TOMLDecodeError as error:
         raise StudyError(f"{where}: not valid TOML ({error}); {allowed}") from None
+    except StudyError:  # (the size's, raised above: not the integer's below)
+        raise
     except ValueError:  # (int() of an integer of more digits than Python converts: its own message, no file named)
         raise StudyError(f"{where}: an integer of more than {sys.get_int_max_str_digits()} digits cannot be read; "
                          f"{allowed}, integers of fewer digits (a large number written with an exponent, e.g. "

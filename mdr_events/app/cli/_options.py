@@ -86,14 +86,17 @@ def _choice_message(argument: str, value: str, choices: str) -> str:
     return f"argument {argument}: invalid choice: {value}; allowed: {allowed}"
 
 
-def _cut(text: str, count: int = 1) -> str:
-    """``text`` (a value as argparse shows it, or the words it did not take) cut to :data:`SHOWN_CHARACTERS`, with the
-    count of the words when there are several (a shell's glob of ten thousand files: 300 kB on one line)."""
-    from mdr_events.validation import SHOWN_CHARACTERS  # (here: the parser is built before numpy is imported)
+#: Characters of a value a usage error shows: ``validation.SHOWN_CHARACTERS``, written here, not imported (a usage
+#: error loads no numpy; tests/test_hostile_round_twenty_nine_io.py checks that the two agree).
+CUT_CHARACTERS = 80
 
-    if len(text) <= SHOWN_CHARACTERS:
+
+def _cut(text: str, count: int = 1) -> str:
+    """``text`` (a value as argparse shows it, or the words it did not take) cut to :data:`CUT_CHARACTERS`, with the
+    count of the words when there are several (a shell's glob of ten thousand files: 300 kB on one line)."""
+    if len(text) <= CUT_CHARACTERS:
         return text
-    return text[:SHOWN_CHARACTERS - 3] + "..." + (f" ({count} words)" if count > 1 else "")
+    return text[:CUT_CHARACTERS - 3] + "..." + (f" ({count} words)" if count > 1 else "")
 
 
 class Parser(argparse.ArgumentParser):
