@@ -174,7 +174,7 @@ def parse_limit(text: str, limits: Limits = DEFAULT_LIMITS) -> Limits:
     name, sep, value = text.partition("=")
     name, value = name.strip(), value.strip()
     if not sep or name not in LIMIT_UNITS:
-        raise ValueError(f"--limit {text!r} is not allowed; allowed: NAME=VALUE with NAME one of "
+        raise ValueError(f"--limit {shown(text)} is not allowed; allowed: NAME=VALUE with NAME one of "
                          f"{', '.join(LIMIT_UNITS)}")
     factor = 1.0
     if name == "memory":
@@ -185,7 +185,7 @@ def parse_limit(text: str, limits: Limits = DEFAULT_LIMITS) -> Limits:
     try:
         number = plain_number(value) * factor
     except ValueError:
-        raise ValueError(f"--limit {text!r} is not allowed; allowed: a number > 0 or inf, {PLAIN_NUMBER}"
+        raise ValueError(f"--limit {shown(text)} is not allowed; allowed: a number > 0 or inf, {PLAIN_NUMBER}"
                          + (" (memory: with KiB, MiB, GiB, kB, MB, GB)" if name == "memory" else "")) from None
     return dataclasses.replace(limits, **{name: number})
 

@@ -15,7 +15,7 @@ from typing import Any, Callable, Collection
 
 import numpy as np
 
-__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "validate_alpha", "check_callback", "reads_attrs"]
+__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "shown_text", "validate_alpha", "check_callback", "reads_attrs"]
 
 #: Characters of a value's ``repr`` shown in a message (a long list or a file's content is cut).
 SHOWN_CHARACTERS = 80
@@ -30,6 +30,15 @@ def shown(value: Any) -> str:
         value = type(value)(value[:SHOWN_CHARACTERS]) if type(value) in (list, tuple) else value[:SHOWN_CHARACTERS]
     text = " ".join(repr(value).split())
     return text if len(text) <= SHOWN_CHARACTERS else text[: SHOWN_CHARACTERS - 3] + "..."
+
+
+def shown_text(text: str, characters: int = SHOWN_CHARACTERS) -> str:
+    """A name written bare in a message (a table's, a file's stem, a column's): its control characters written as
+    ``repr`` writes them, cut to ``characters`` characters (:func:`shown` quotes it: a value, not a name)."""
+    text = str(text)
+    if not text.isprintable():
+        text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
+    return text if len(text) <= characters else text[: characters - 3] + "..."
 
 
 #: What a number written as text may be (an option's value, a string of a study file, a CSV cell): :func:`plain_number`.
@@ -218,9 +227,9 @@ def check_choice(name: str, value: Any, allowed: Collection) -> None:
     allowed : collection
         The allowed values, listed (as their ``repr``) in the message.
     """
-    try:
-        known = value in allowed
-    except TypeError:  # (a list or a dict: unhashable, so in no set or mapping of names)
+    try:  # (an array compared with each name answers with an array, whose truth is ambiguous)
+        known = not isinstance(value, np.ndarray) and value in allowed
+    except (TypeError, ValueError):  # (a list or a dict: unhashable, in no set or mapping of names; a DataFrame)
         known = False
     if not known:
         raise ValueError(f"{name}={shown(value)} is not allowed; allowed: {', '.join(map(repr, allowed))}")
@@ -229,7 +238,7 @@ def check_choice(name: str, value: Any, allowed: Collection) -> None:
 def check_flag(name: str, value: Any) -> None:
     """Raise ``TypeError`` unless ``value`` is a bool (Python's or NumPy's)."""
     if not isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name}={value!r} is not allowed; allowed: True or False")
+        raise TypeError(f"{name}={shown(value)} is not allowed; allowed: True or False")
 
 
 def validate_alpha(alpha) -> np.ndarray:

@@ -92,7 +92,7 @@ def _is_client(scheduler) -> bool:
 
 def check_scheduler(scheduler, workers: int | None) -> None:
     """Refuse a ``scheduler`` that names no engine, and ``workers`` beside anything but ``"local"``."""
-    named = scheduler in ("serial", "local") or (isinstance(scheduler, str) and "://" in scheduler)
+    named = isinstance(scheduler, str) and (scheduler in ("serial", "local") or "://" in scheduler)
     if not (named or scheduler is None or _is_client(scheduler)
             or isinstance(scheduler, concurrent.futures.Executor)):
         raise ValueError(f"scheduler={shown(scheduler)} is not allowed; allowed: {SCHEDULER_ALLOWED}")

@@ -194,7 +194,7 @@ def free_parameters(free: str | Sequence[str], start: Parameters, bounds: Mappin
     for name in names:
         if name not in FREE_NAMES:
             hint = " (the path's, not the material's: give the path)" if name in ("d_max", "v") else ""
-            raise ValueError(f"free: {name!r} is not allowed{hint}; allowed: {', '.join(FREE_NAMES)}")
+            raise ValueError(f"free: {shown(name)} is not allowed{hint}; allowed: {', '.join(FREE_NAMES)}")
     if len(set(names)) != len(names):
         raise ValueError(f"free={shown(free)} names a parameter twice; allowed: each name once")
     if not isinstance(start, Parameters):

@@ -42,6 +42,7 @@ from mdr_events.analysis.sweep_runs import (CLOSED_FORM_QUANTITIES, DISCRETE_STE
                                             QUANTITIES, ChunkResult, SweepSpec, run_chunk)
 from mdr_events.analysis.sweep_store import Store, run_variables, store_bytes
 from mdr_events.io.datasets import register_schema, stamp
+from mdr_events.io.paths import ALLOWED_PATH, check_file_path
 from mdr_events.limits import DEFAULT_LIMITS, Limits, check_limits
 from mdr_events.models import indenters
 from mdr_events.contact.friction import friction_attrs
@@ -114,6 +115,8 @@ class SweepOutput:
         if self.history_samples is not None:
             object.__setattr__(self, "history_samples", check_count("history_samples", self.history_samples, 2))
         check_flag("resume", self.resume)
+        if self.store is not None:  # (an array or bytes reached os.fspath only when the sweep ran: a raw TypeError)
+            check_file_path("store", self.store, f"None or {ALLOWED_PATH} naming a Zarr directory")
 
 
 class SweepJob(NamedTuple):

@@ -70,7 +70,7 @@ def _values(name: str, values, allowed: Sequence[str], contact: Contact | None) 
         part = dotted.partition(".")[0]
         whose = f" is not a value of this contact ({part}={getattr(contact, part)!r})" \
             if contact is not None and dotted in UNITS else " is not allowed"
-        raise ValueError(f"grid: {name!r}{whose}; allowed: {', '.join(allowed)}")
+        raise ValueError(f"grid: {shown(name)}{whose}; allowed: {', '.join(allowed)}")
     try:
         array = np.atleast_1d(real_array(f"grid[{name!r}]", values, "real numbers (not bools or strings)"))
     except TypeError as error:

@@ -259,7 +259,7 @@ def limits(items: Iterable[str]) -> Limits:
         found = parse_limit(text, found)
         name = text.partition("=")[0].strip()
         if name in given:
-            raise ValueError(f"--limit {text!r}: {name} is given twice; allowed: each limit once (e.g. --limit "
+            raise ValueError(f"--limit {shown(text)}: {name} is given twice; allowed: each limit once (e.g. --limit "
                              "memory=8GiB --limit steps=1e8)")
         given.add(name)
     return found

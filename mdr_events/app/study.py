@@ -143,7 +143,7 @@ from mdr_events.models.paths import Path
 from mdr_events.models.simulate import check_layer_taken
 from mdr_events.parameters import Parameters
 from mdr_events.dem.mapping import LammpsModel
-from mdr_events.validation import as_float, check_real, shown
+from mdr_events.validation import as_float, check_real, shown, shown_text
 
 if TYPE_CHECKING:
     from mdr_events.app.result_files import FileOutcome
@@ -336,9 +336,9 @@ def _phase_diagrams(tables: _Tables) -> tuple[PhaseJob, ...]:
     scenarios = tables.document.get("phase_diagram", {}).get("scenarios", [])
     for scenario in scenarios:
         if scenario not in ("A", "B"):
-            raise StudyError(f"{tables.where}: [phase_diagram] scenarios contains {scenario!r}; allowed: 'A', 'B'")
+            raise StudyError(f"{tables.where}: [phase_diagram] scenarios contains {shown(scenario)}; allowed: 'A', 'B'")
     if len(set(scenarios)) != len(scenarios):  # (each would be computed and written again)
-        raise StudyError(f"{tables.where}: [phase_diagram] scenarios={scenarios!r} repeats a scenario; allowed: each "
+        raise StudyError(f"{tables.where}: [phase_diagram] scenarios={shown(scenarios)} repeats a scenario; allowed: each "
                          "once")
     if scenarios and not tables.contact.layer.is_half_space:  # (what the layer's slip onset refuses, named now)
         from mdr_events.theory.layer.slip_onset import check_onset_contact
@@ -384,12 +384,13 @@ def _validation(tables: _Tables) -> ValidateJob | None:
     for run in table["runs"]:
         stem = f"{tables.name}_validation_{tables.file(run).stem}"
         if stem in stems:
-            raise StudyError(f"{tables.where}: [validate] runs {stems[stem]!r} and {run!r} would both be written as "
-                             f"{stem}.*; allowed: runs with different file names")
+            raise StudyError(f"{tables.where}: [validate] runs {shown(stems[stem])} and {shown(run)} would both be written as "
+                             f"{shown_text(stem)}.*; allowed: runs with different file names")
         try:
             check_output_stem("stem", stem)
         except ValueError as error:
-            raise StudyError(f"{tables.where}: [validate] run {run!r} would be written as {stem}.*: {error}") from None
+            raise StudyError(f"{tables.where}: [validate] run {shown(run)} would be written as {shown_text(stem)}.*: "
+                             f"{error}") from None
         stems[stem] = run
     return ValidateJob(tuple(table["runs"]), tuple(tables.file(run) for run in table["runs"]), tuple(stems),
                        tables.contact, motion, description, table.get("tolerance", 1e-3), table.get("names", {}),

@@ -9,6 +9,7 @@ the shared parsers (:mod:`mdr_events.app.inputs`).
 from __future__ import annotations
 
 import os
+import sys
 import tomllib
 from pathlib import Path as FilePath
 from typing import Any, Callable
@@ -16,6 +17,7 @@ from typing import Any, Callable
 from mdr_events.io.files import check_file_path, check_output_stem
 from mdr_events.limits import LIMIT_UNITS, in_study
 from mdr_events.parameters import PARAMETER_UNITS
+from mdr_events.validation import shown, shown_text
 
 __all__ = ["StudyError", "SCHEMA", "REQUIRED_TABLES", "MAX_TOML_BYTES", "check_table", "check_tables", "check_computation",
            "measured_case", "read_toml", "one_table"]
@@ -128,14 +130,14 @@ KEY_NOTES: dict[tuple[str, str], str] = {
 def check_table(table: str, content: Any, where: str) -> None:
     """Raise :class:`StudyError` unless ``content`` is a table ``[table]`` of known keys of the right kinds."""
     if not isinstance(content, dict):
-        raise StudyError(f"{where}: {table} = {content!r} is not allowed; allowed: a table [{table}]")
+        raise StudyError(f"{where}: {table} = {shown(content)} is not allowed; allowed: a table [{table}]")
     keys = SCHEMA[table]
     for key, value in content.items():
         if key not in keys:
-            raise StudyError(f"{where}: unknown key {key!r} in [{table}]; allowed: {', '.join(keys)}")
+            raise StudyError(f"{where}: unknown key {shown(key)} in [{table}]; allowed: {', '.join(keys)}")
         check, allowed = _KINDS[keys[key][0]]
         if not check(value):
-            raise StudyError(f"{where}: [{table}] {key} = {value!r} is not allowed; allowed: {allowed}")
+            raise StudyError(f"{where}: [{table}] {key} = {shown(value)} is not allowed; allowed: {allowed}")
     missing = [key for key, (_, required) in keys.items() if required and key not in content]
     if missing:
         needed = "; ".join(f"{key}: {KEY_NOTES.get((table, key), _KINDS[keys[key][0]][1])}" for key in missing)
@@ -148,7 +150,7 @@ def check_tables(document: dict[str, Any], where: str) -> None:
     tables are there and ``[output] name`` is a plain stem (what the tables together give: :func:`check_computation`)."""
     for table, content in document.items():
         if table not in SCHEMA:
-            raise StudyError(f"{where}: unknown table [{table}]; allowed: "
+            raise StudyError(f"{where}: unknown table [{shown_text(table)}]; allowed: "
                              + ", ".join(f"[{name}]" for name in SCHEMA))
         check_table(table, content, where)
     for table in REQUIRED_TABLES:
@@ -241,6 +243,12 @@ def read_toml(path: Any, what: str) -> tuple[dict[str, Any], FilePath]:
         raise StudyError(f"{where}: not UTF-8 text (byte {error.start}: {error.reason}); {allowed}") from None
     except tomllib.TOMLDecodeError as error:
         raise StudyError(f"{where}: not valid TOML ({error}); {allowed}") from None
+    except StudyError:  # (the size's, raised above: not the integer's below)
+        raise
+    except ValueError:  # (int() of an integer of more digits than Python converts: its own message, no file named)
+        raise StudyError(f"{where}: an integer of more than {sys.get_int_max_str_digits()} digits cannot be read; "
+                         f"{allowed}, integers of fewer digits (a large number written with an exponent, e.g. "
+                         "1e300)") from None
     except RecursionError:  # (the reader descends one call per level of arrays or inline tables)
         raise StudyError(f"{where}: its arrays or inline tables nest too deeply to be read; {allowed}, nested at most "
                          f"{MAX_TOML_NESTING} levels deep") from None

@@ -21,10 +21,25 @@ from mdr_events.io.files import input_file_problem, load_netcdf
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.validation import (PLAIN_NUMBER, SCALE_MAX, check_mapping, check_real, plain_number, real_array,
-                                   shown)
+                                   shown, shown_text)
 
 __all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor", "check_run_is_finite",
            "UNDEFINED_OUT_OF_CONTACT"]
+
+#: Characters of the list of a file's columns shown in a message (a CSV of 100 000 columns, or one header cell of
+#: 100 000 characters, is listed by its first columns and their count, not written out whole).
+LISTED_CHARACTERS = 200
+
+
+def columns_listed(columns) -> str:
+    """The names of ``columns`` for a message, joined by commas on one line (control characters as in ``repr``) and cut
+    to :data:`LISTED_CHARACTERS` characters with the count of them all; ``none`` if there are none."""
+    names = [shown_text(name, math.inf) for name in columns]
+    text = ", ".join(names)
+    if len(text) <= LISTED_CHARACTERS:
+        return text or "none"
+    return f"{text[:LISTED_CHARACTERS - 3]}... ({len(names)} columns)"
+
 
 #: The kinds of NumPy arrays a column of real numbers has: integers and floats (not bools, complex numbers, times).
 REAL_KINDS = "iuf"
@@ -65,7 +80,7 @@ def unit_factor(quantity: str, unit: str, source: str) -> float:
     """The factor to SI of ``unit`` for ``quantity`` (:data:`UNITS`); ``ValueError`` naming ``source`` else."""
     allowed = UNITS[CANDIDATE_QUANTITIES[quantity]]
     if not isinstance(unit, str) or unit not in allowed:  # (a list is no unit, and unhashable)
-        raise ValueError(f"{source}: units[{quantity!r}]={unit!r} is not allowed; allowed: "
+        raise ValueError(f"{source}: units[{quantity!r}]={shown(unit)} is not allowed; allowed: "
                          f"{', '.join(repr(name) for name in allowed)}")
     return allowed[unit]
 
@@ -161,7 +176,7 @@ def read_profile_table(path: str | os.PathLike) -> TabulatedProfile:
     columns = _read_csv(path, read=("r", "f"))
     missing = [name for name in ("r", "f") if name not in columns]
     if missing:
-        raise ValueError(f"{path}: no column {' or '.join(map(repr, missing))} (columns: {', '.join(columns)}); "
+        raise ValueError(f"{path}: no column {' or '.join(map(repr, missing))} (columns: {columns_listed(columns)}); "
                          "allowed: a header naming the columns r and f (m)")
     try:
         return TabulatedProfile(columns["r"], columns["f"])
@@ -251,8 +266,8 @@ def _check_units_have_columns(source: str, units: dict, names: dict, columns) ->
     for quantity, unit in units.items():
         column = names.get(quantity, quantity)
         if quantity not in names and column not in columns:
-            raise ValueError(f"{source}: units[{quantity!r}]={unit!r} is not allowed: no column {column!r}; allowed: "
-                             f"units of the columns found: {', '.join(columns) or 'none'}")
+            raise ValueError(f"{source}: units[{shown(quantity)}]={shown(unit)} is not allowed: no column {shown(column)}; "
+                             f"allowed: units of the columns found: {columns_listed(columns)}")
 
 
 def read_candidate(candidate, names: Mapping[str, str] | None = None,
@@ -298,7 +313,7 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
     units = dict(units or {})
     for quantity in list(names) + list(units):
         if quantity not in CANDIDATE_QUANTITIES:
-            raise ValueError(f"{source}: {quantity!r} in names/units is not allowed; allowed: "
+            raise ValueError(f"{source}: {shown(quantity)} in names/units is not allowed; allowed: "
                              f"{', '.join(CANDIDATE_QUANTITIES)}")
     _check_units_have_columns(source, units, names, columns)
     found: dict[str, np.ndarray] = {}
@@ -308,12 +323,12 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         column = names.get(quantity, quantity)
         if column not in columns:
             if quantity in names:
-                raise ValueError(f"{source}: names[{quantity!r}]={column!r} is not a column; allowed: one of the "
-                                 f"columns found: {', '.join(columns) or 'none'}")
+                raise ValueError(f"{source}: names[{quantity!r}]={shown(column)} is not a column; allowed: one of the "
+                                 f"columns found: {columns_listed(columns)}")
             continue
         if column in used:  # (one column read as two quantities, e.g. names={'normal_force': 'time'})
             other = next(name for name in found if names.get(name, name) == column)
-            raise ValueError(f"{source}: names[{quantity!r}]={column!r} is the column of {other!r} too; allowed: one "
+            raise ValueError(f"{source}: names[{quantity!r}]={shown(column)} is the column of {other!r} too; allowed: one "
                              "column per quantity")
         unit = units.get(quantity, declared.get(column, CANDIDATE_QUANTITIES[quantity]))
         given[quantity] = columns[column], unit, unit_factor(quantity, unit, source)
@@ -321,13 +336,13 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
             found[quantity] = given[quantity][0] * given[quantity][2]
         used.add(column)
     if "time" not in found:
-        raise ValueError(f"{source}: no time column; columns found: {', '.join(columns) or 'none'}; allowed: a column "
+        raise ValueError(f"{source}: no time column; columns found: {columns_listed(columns)}; allowed: a column "
                          "'time' or names={'time': <your column>}")
     time = found.pop("time")
     limits.check(f"{source} ({time.size} samples)", samples=time.size)  # (an array or a Dataset as a file's rows)
     if not found:
         raise ValueError(f"{source}: none of {', '.join(q for q in CANDIDATE_QUANTITIES if q != 'time')} found; "
-                         f"columns found: {', '.join(columns)}; name yours with names={{quantity: column}}")
+                         f"columns found: {columns_listed(columns)}; name yours with names={{quantity: column}}")
     for quantity, values in found.items():
         if values.shape != time.shape:
             raise ValueError(f"{source}: column {names.get(quantity, quantity)!r} has {values.size} values and the "

@@ -9,6 +9,7 @@ reads what ``simulate`` and the other entry points are given: a motion, a scenar
 
 from __future__ import annotations
 
+import collections
 import contextlib
 from contextvars import ContextVar
 from dataclasses import dataclass, field
@@ -133,7 +134,7 @@ def _custom_paths(scenario: Path | Sequence[Path] | Mapping[str, Path]) -> dict[
                         f"{SCENARIO_ALLOWED}")
     if isinstance(scenario, Mapping):
         labels, paths = list(scenario.keys()), [scenario[label] for label in scenario.keys()]
-        where = [f"scenario[{label!r}]" for label in labels]
+        where = [f"scenario[{shown(label)}]" for label in labels]
     else:
         paths = list(scenario)
         labels = [f"path {number}" for number in range(1, len(paths) + 1)]
@@ -142,14 +143,14 @@ def _custom_paths(scenario: Path | Sequence[Path] | Mapping[str, Path]) -> dict[
         raise ValueError(f"scenario={shown(scenario)} is not allowed: it holds no path; allowed: {SCENARIO_ALLOWED}")
     for label in labels:
         if not isinstance(label, str) or not label:
-            raise TypeError(f"scenario has the label {label!r} ({type(label).__name__}); allowed: labels that are "
+            raise TypeError(f"scenario has the label {shown(label)} ({type(label).__name__}); allowed: labels that are "
                             "non-empty strings")
-    repeated = sorted({label for label in labels if labels.count(label) > 1})
+    repeated = sorted(label for label, count in collections.Counter(labels).items() if count > 1)  # (not n² counts)
     if repeated:
-        raise ValueError(f"scenario has the label(s) {repeated} more than once; allowed: distinct labels")
+        raise ValueError(f"scenario has the label(s) {shown(repeated)} more than once; allowed: distinct labels")
     for name, path in zip(where, paths):
         if not isinstance(path, Path):
-            raise TypeError(f"{name}={path!r} ({type(path).__name__}) is not allowed; allowed: a "
+            raise TypeError(f"{name}={shown(path)} ({type(path).__name__}) is not allowed; allowed: a "
                             "mdr_events.Path")
     return dict(zip(labels, paths))
 
@@ -313,7 +314,7 @@ class Scenario:
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or self.name not in SCENARIO_NAMES:
-            raise ValueError(f"scenario={self.name!r} is not allowed; allowed: {SCENARIO_ALLOWED}")
+            raise ValueError(f"scenario={shown(self.name)} is not allowed; allowed: {SCENARIO_ALLOWED}")
         object.__setattr__(self, "alpha", _angles(self.alpha))
         object.__setattr__(self, "d_max", check_real("d_max", self.d_max, "a finite number > 0 (m)",
                                                      lambda value: value > 0.0))

@@ -33,6 +33,7 @@ from __future__ import annotations
 import _thread
 import argparse
 import functools
+import math
 import os
 import signal
 import sys
@@ -187,8 +188,14 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _one_line(message: str) -> str:
-    """A message on one line: its lines joined (nothing is cut)."""
-    return " ".join(line.strip() for line in message.splitlines() if line.strip())
+    """A message on one line: its lines joined (nothing is cut), and any other control character written as ``repr``
+    writes it (a file's name or a header's cell holding ``ESC[31m`` or a bell reached the terminal raw)."""
+    line = " ".join(part.strip() for part in message.splitlines() if part.strip())
+    if line.isprintable():
+        return line
+    from mdr_events.validation import shown_text  # (here: derive's errors need no numpy)
+
+    return shown_text(line, math.inf)
 
 
 def _message(error: BaseException) -> str:

@@ -80,9 +80,23 @@ def _choice_message(argument: str, value: str, choices: str) -> str:
     """The one line of a value that is not among an argument's choices, in the package's words: the verb, or the
     option, with the value and the allowed ones (argparse's own: "argument command: invalid choice: ...")."""
     allowed = ", ".join(choice.strip().strip("'") for choice in choices.split(","))
+    value = _cut(value)  # (argparse's repr of the value, whole: 100 kB for a value of 100 000 characters)
     if argument == "command":
         return f"the verb {value} is not allowed; allowed: {allowed} (mdr-events --help says what each does)"
     return f"argument {argument}: invalid choice: {value}; allowed: {allowed}"
+
+
+#: Characters of a value a usage error shows: ``validation.SHOWN_CHARACTERS``, written here, not imported (a usage
+#: error loads no numpy; tests/test_hostile_round_twenty_nine_io.py checks that the two agree).
+CUT_CHARACTERS = 80
+
+
+def _cut(text: str, count: int = 1) -> str:
+    """``text`` (a value as argparse shows it, or the words it did not take) cut to :data:`CUT_CHARACTERS`, with the
+    count of the words when there are several (a shell's glob of ten thousand files: 300 kB on one line)."""
+    if len(text) <= CUT_CHARACTERS:
+        return text
+    return text[:CUT_CHARACTERS - 3] + "..." + (f" ({count} words)" if count > 1 else "")
 
 
 class Parser(argparse.ArgumentParser):
@@ -139,7 +153,8 @@ class Parser(argparse.ArgumentParser):
         if extras:
             command = getattr(parsed, "command", None)
             where = f"{self.prog} {command}" if command else self.prog
-            raise UsageError(f"unrecognized argument(s) {' '.join(extras)}; allowed: the options listed by "
+            raise UsageError(f"unrecognized argument(s) {_cut(' '.join(extras), len(extras))}; allowed: the options "
+                             "listed by "
                              f"{where} --help")
         return parsed
 
@@ -330,12 +345,24 @@ def layer_options(parser: argparse.ArgumentParser) -> None:
                         help="how the layer rests on its base (default bonded; frictionless: no tangential motion)")
 
 
-def layer(args: argparse.Namespace):
+def check_base_has_layer(base: str | None, thickness: float, given: str) -> None:
+    """Refuse ``--layer-base`` on the half-space (``thickness`` inf, as ``given``): it rests on no base, and the
+    option was ignored in silence (round 29), as ``--mu`` without Coulomb's law or ``--v-ref`` without the rate law
+    are refused."""
+    if base is not None and thickness == math.inf:
+        raise UsageError(f"--layer-base {base} {given} is not allowed: the half-space rests on no base; allowed: "
+                         "--layer-base with --h H, a layer's finite thickness in m")
+
+
+def layer(args: argparse.Namespace, over_study: bool = False):
     """The layer of ``--h`` and ``--layer-base`` (the half-space without them; a verb without the options: the
-    half-space)."""
+    half-space); ``--layer-base`` on the half-space is refused (:func:`check_base_has_layer`) unless ``over_study``
+    (a sweep's, whose study's [layer] or grid over h may hold the layer)."""
     from mdr_events.app import inputs
 
     h, base = getattr(args, "h", None), getattr(args, "layer_base", None)
+    if not over_study:  # (a sweep's --layer-base sets the base of its study's [layer], or of a grid over h)
+        check_base_has_layer(base, math.inf if h is None else h, "without --h" if h is None else "with --h inf")
     try:
         return inputs.layer(h, base)
     except (TypeError, ValueError) as error:

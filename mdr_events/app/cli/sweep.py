@@ -77,7 +77,7 @@ def run(args: argparse.Namespace) -> int:
     if args.workers is not None:
         check_workers(args.workers)
     check_scheduler(args.scheduler, args.workers)
-    _options.layer(args)  # (--h checked before the study is read)
+    _options.layer(args, over_study=True)  # (--h checked before the study is read)
     study = load_study(args.study)
     layer = None if study.sweep is None else _layer_over(args, study)
     store = sweep_store(study)

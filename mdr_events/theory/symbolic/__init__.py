@@ -147,5 +147,5 @@ def relation(key: str) -> Relation:
     except KeyError:
         known = sorted([*rels, "profile_power_law", *POWER_LAW_KEYS, *FRICTION_KEYS, *ADHESIVE_FRICTION_KEYS,
                         *RATE_ADHESION_KEYS])
-        raise UnknownRelationError(f"key={key!r} is not allowed (unknown relation {key!r}); allowed: "
+        raise UnknownRelationError(f"key={shown(key)} is not allowed (unknown relation {shown(key)}); allowed: "
                                    f"{', '.join(known)}") from None
