@@ -61,6 +61,11 @@ class Candidate(NamedTuple):
     unused: tuple[str, ...] = ()  #: the candidate's columns that were not read (not named as a quantity)
 
 
+#: How a message about ``names=`` says it on the command line (``validate``, ``fit``: ``--names Q=COLUMN,...``), where
+#: there is no ``names={...}`` to write (a study file's ``names = { ... }`` is Python's).
+_ON_THE_COMMAND_LINE = "on the command line --names "
+
+
 def unit_factor(quantity: str, unit: str, source: str) -> float:
     """The factor to SI of ``unit`` for ``quantity`` (:data:`UNITS`); ``ValueError`` naming ``source`` else."""
     allowed = UNITS[CANDIDATE_QUANTITIES[quantity]]
@@ -322,12 +327,13 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         used.add(column)
     if "time" not in found:
         raise ValueError(f"{source}: no time column; columns found: {', '.join(columns) or 'none'}; allowed: a column "
-                         "'time' or names={'time': <your column>}")
+                         f"'time' or names={{'time': <your column>}} ({_ON_THE_COMMAND_LINE}time=<your column>)")
     time = found.pop("time")
     limits.check(f"{source} ({time.size} samples)", samples=time.size)  # (an array or a Dataset as a file's rows)
     if not found:
         raise ValueError(f"{source}: none of {', '.join(q for q in CANDIDATE_QUANTITIES if q != 'time')} found; "
-                         f"columns found: {', '.join(columns)}; name yours with names={{quantity: column}}")
+                         f"columns found: {', '.join(columns)}; allowed: name yours with names={{quantity: column}} "
+                         f"({_ON_THE_COMMAND_LINE}normal_force=<your column>,...)")
     for quantity, values in found.items():
         if values.shape != time.shape:
             raise ValueError(f"{source}: column {names.get(quantity, quantity)!r} has {values.size} values and the "

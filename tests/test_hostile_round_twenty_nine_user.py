@@ -1,0 +1,58 @@
+"""The twenty-ninth hostile round (issue 32), a new user's first day (class 7): what tripped, with the cases that
+showed it.
+
+The round followed the README, the guide's and the tutorials' code, the worked example, every verb's ``--help`` and
+the CLI's lines of the guide from a fresh clone, then read, plotted, validated and fitted what they wrote (class 7's
+earlier trips held: a CSV with a byte-order mark, a run ending at its last sample in contact, ``--free``/``--dx``
+before the file, ``--alpha`` selecting a run of a multi-angle ``simulate``). What failed is below; the example's
+expected output against what it prints is checked in ``tests/test_example_validate.py`` (its run of the script).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from hostile_checks import cli_one_line, one_line_naming
+from mdr_events.io.candidates import read_candidate
+
+#: Samples of the small hand-written CSV files (enough for a time axis; no simulation is run).
+SAMPLES = 6
+A20 = ["--scenario", "A", "--alpha", "20"]
+
+
+def _write_csv(path, header, rows=SAMPLES):
+    """A CSV file as a user writes one: a header row, then ``rows`` rows of increasing numbers."""
+    lines = [",".join(header)] + [",".join(str(float(row + column)) for column in range(len(header)))
+                                  for row in range(rows)]
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return path
+
+
+#: (columns of the file, the option the command line's message shows how to write)
+UNNAMED = [
+    (["t", "Fn"], "--names time=<your column>"),  # a lab's names: no time column
+    (["zeit", "normal_force"], "--names time=<your column>"),
+    (["time", "Fn", "Ft"], "--names normal_force=<your column>"),  # a time, and no quantity by its name
+    (["time", "force"], "--names normal_force=<your column>"),
+]
+
+
+@pytest.mark.parametrize("verb", ["validate", "fit"])
+@pytest.mark.parametrize(("header", "how"), UNNAMED)
+def test_a_file_of_unnamed_columns_is_told_how_to_name_them_on_the_command_line(tmp_path, capsys, verb, header, how):
+    """``mdr-events validate run.csv`` with the columns ``t, Fn`` said "allowed: ... names={'time': <your column>}",
+    Python a command-line user cannot write (as the multi-angle file's ``.isel(alpha=0)`` of round 28): the line
+    shows the option too."""
+    run = _write_csv(tmp_path / "run.csv", header)
+    free = ["--free", "tau0"] if verb == "fit" else []
+    line = cli_one_line(capsys, [verb, str(run), *A20, *free, "--out", str(tmp_path / "out")])
+    assert how in line and ", ".join(header) in line, line
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+
+
+@pytest.mark.parametrize(("header", "how"), UNNAMED)
+def test_the_api_still_says_names_as_python_writes_it(tmp_path, header, how):
+    """The API's message keeps ``names={...}`` (what a Python caller writes) beside the command line's option."""
+    run = _write_csv(tmp_path / "run.csv", header)
+    message = one_line_naming(lambda: read_candidate(run), "names={")
+    assert how in message and str(run) in message
