@@ -10,9 +10,13 @@ expected output against what it prints is checked in ``tests/test_example_valida
 
 from __future__ import annotations
 
+import re
+from pathlib import Path
+
 import pytest
 
 from hostile_checks import cli_one_line, one_line_naming
+from mdr_events.app.cli import build_parser
 from mdr_events.io.candidates import read_candidate
 
 #: Samples of the small hand-written CSV files (enough for a time axis; no simulation is run).
@@ -56,3 +60,19 @@ def test_the_api_still_says_names_as_python_writes_it(tmp_path, header, how):
     run = _write_csv(tmp_path / "run.csv", header)
     message = one_line_naming(lambda: read_candidate(run), "names={")
     assert how in message and str(run) in message
+
+
+def test_the_readme_s_command_line_is_its_python_line():
+    """The README's ten lines simulate the continuum ("exact, event-driven") and call
+    ``mdr-events simulate --scenario A --alpha 10 20 30 --out out`` "the same": that ran the discrete springs (the
+    command line's default), another method, file name and numbers. Its command now parses to the Python line's
+    scenario, angles and method."""
+    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
+    python = re.search(r'me\.simulate\(contact, me\.Scenario\("(\w+)", alpha=\[([^\]]*)\]\), "(\w+)"\)', readme)
+    assert python, "the README's ten lines no longer simulate as this test reads them"
+    command = re.search(r"The same from the command line: `mdr-events ([^`]*)`", readme)
+    assert command, "the README no longer gives the ten lines' command line"
+    parsed = build_parser().parse_args(command.group(1).split())
+    assert parsed.command == "simulate" and parsed.scenario == python.group(1)
+    assert parsed.alpha == [float(angle) for angle in python.group(2).split(",")]
+    assert parsed.method == python.group(3), (parsed.method, python.group(3))
