@@ -76,3 +76,47 @@ def test_the_readme_s_command_line_is_its_python_line():
     assert parsed.command == "simulate" and parsed.scenario == python.group(1)
     assert parsed.alpha == [float(angle) for angle in python.group(2).split(",")]
     assert parsed.method == python.group(3), (parsed.method, python.group(3))
+
+
+#: The separators a spreadsheet or a script writes between the fields of a "CSV" file, beside the comma.
+SEPARATORS = [";", "\t", "; ", " ;", "\t "]
+
+
+def _twins(tmp_path, separator, rows=SAMPLES):
+    """A comma-separated file and its twin with ``separator`` between the fields (same numbers and columns)."""
+    commas = _write_csv(tmp_path / "commas.csv", ["t", "Fn", "Ft"], rows)
+    other = tmp_path / "other.csv"
+    other.write_text(commas.read_text(encoding="utf-8").replace(",", separator), encoding="utf-8")
+    return commas, other
+
+
+@pytest.mark.parametrize("separator", SEPARATORS, ids=repr)
+def test_a_csv_separated_by_semicolons_or_tabs_is_read_as_its_comma_twin(tmp_path, separator):
+    """A spreadsheet with a decimal comma saves "CSV" with semicolons (``t;Fn;Ft``), a script often with tabs: both
+    were read as one column named ``'t;Fn;Ft'`` and refused with "names['time']='t' is not a column; ... columns
+    found: t;Fn;Ft". They read as the comma-separated file of the same numbers and columns."""
+    commas, other = _twins(tmp_path, separator)
+    names = {"time": "t", "normal_force": "Fn", "tangential_force": "Ft"}
+    expected, read = read_candidate(commas, names=names), read_candidate(other, names=names)
+    assert read.quantities.keys() == expected.quantities.keys() and (read.time == expected.time).all()
+    assert all((read.quantities[q] == expected.quantities[q]).all() for q in expected.quantities)
+
+
+def test_a_decimal_comma_is_refused_naming_its_line_and_the_decimal_point(tmp_path):
+    """Semicolons read, a decimal comma is not guessed at: one line naming the file's line, the column, the field and
+    what a number is (a decimal point)."""
+    run = tmp_path / "run.csv"
+    run.write_text("t;Fn\n0;0\n1;1,5\n", encoding="utf-8")
+    message = one_line_naming(lambda: read_candidate(run, names={"time": "t", "normal_force": "Fn"}), "'1,5'")
+    assert "line 3" in message and "'Fn'" in message and "point" in message
+
+
+@pytest.mark.parametrize("separator", [";", "\t"], ids=repr)
+def test_the_cli_answers_a_semicolon_csv_as_its_comma_twin(tmp_path, capsys, separator):
+    """``mdr-events validate`` of the file a spreadsheet saved gets the comma twin's answer (here: the twin's one
+    line, too few samples in contact), not a refusal of its columns."""
+    commas, other = _twins(tmp_path, separator)
+    names = ["--names", "time=t,normal_force=Fn,tangential_force=Ft"]
+    answers = [cli_one_line(capsys, ["validate", str(run), *A20, *names, "--out", str(tmp_path / "o")])
+               for run in (commas, other)]
+    assert answers[1] == answers[0].replace(str(commas), str(other)), answers

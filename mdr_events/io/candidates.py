@@ -8,6 +8,7 @@ Errors name the source, the column and what is allowed (the columns found among 
 from __future__ import annotations
 
 import csv
+import itertools
 import math
 import os
 from array import array
@@ -99,7 +100,8 @@ PROGRESS_ROWS = 1_000_000
 def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
               progress: Callable[[str], None] | None = None,
               read: Collection[str] | None = None) -> dict[str, np.ndarray]:
-    """A CSV file's columns (a header row; ``#`` lines are comments and blank lines are skipped, as spreadsheets and
+    """A CSV file's columns (a header row, its fields separated by commas, or by semicolons or tabs where the header
+    holds no comma (:func:`_delimiter`); ``#`` lines are comments and blank lines are skipped, as spreadsheets and
     editors leave them at the end; a UTF-8 byte-order mark is read, as spreadsheets write it), each as float64; its
     rows are checked against ``limits`` before they are read, ``progress`` hears every :data:`PROGRESS_ROWS` of them,
     and errors name the file's own line number. A column not in ``read`` (default: every column is read) is named
@@ -115,7 +117,9 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
 
     try:
         with open(path, newline="", encoding="utf-8-sig") as handle:
-            reader = csv.reader(data_lines(handle))
+            lines = data_lines(handle)
+            first = next(lines, "")
+            reader = csv.reader(itertools.chain([first], lines), delimiter=_delimiter(first))
             header = [name.strip() for name in next(reader, [])]
             if not header:
                 raise ValueError(f"{path}: the file is empty; allowed: a CSV file with a header row")
@@ -138,6 +142,15 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
         raise ValueError(f"{path}: not a readable CSV file (line {line[0]}: {error}); allowed: a CSV file with a "
                          "header row") from None
     return {name: np.frombuffer(values, dtype=float).copy() for name, values in columns.items()}
+
+
+def _delimiter(header: str) -> str:
+    """What separates the fields of a CSV file whose header row is ``header``: a comma, or where the header holds
+    none, a semicolon or a tab in it (a spreadsheet's "CSV" where the decimal mark is a comma; a tab-separated file:
+    round 29 read either as one column ``'t;Fn;Ft;A'`` and refused it, not naming why)."""
+    if "," in header:
+        return ","
+    return next((mark for mark in (";", "\t") if mark in header), ",")
 
 
 def _read_row(path: Path, number: int, header: list[str], row: list[str], columns: dict[str, array],
