@@ -223,3 +223,22 @@ def test_the_script_runs_and_prints_its_findings(tmp_path, monkeypatch, capsys):
     expected = {f"right_dx{dx * 1e6:g}um.csv" for dx in example.SPACINGS} | {
         f"{variant}_dx{dx * 1e6:g}um.csv" for variant in sim.VARIANTS for dx in example.WRONG_SPACINGS}
     assert {path.name for path in tmp_path.glob("*.csv")} == expected
+    assert _missing_from(lines, _readme_expected_output()) == []
+
+
+def _readme_expected_output():
+    """The lines of the README's "Expected output", without the ``...`` of lines left out there."""
+    readme = (EXAMPLE / "README.md").read_text(encoding="utf-8")
+    block = readme.split("## Expected output", 1)[1].split("```", 2)[1]
+    return [line for line in block.strip("\n").splitlines() if line.strip() != "..."]
+
+
+def _missing_from(printed, shown):
+    """The lines of ``shown`` that ``printed`` does not hold verbatim in that order (a user compares them)."""
+    missing, position = [], 0
+    for line in shown:
+        try:
+            position = printed.index(line, position) + 1
+        except ValueError:
+            missing.append(line)
+    return missing

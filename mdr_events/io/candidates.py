@@ -8,6 +8,7 @@ Errors name the source, the column and what is allowed (the columns found among 
 from __future__ import annotations
 
 import csv
+import itertools
 import math
 import os
 from array import array
@@ -76,6 +77,11 @@ class Candidate(NamedTuple):
     unused: tuple[str, ...] = ()  #: the candidate's columns that were not read (not named as a quantity)
 
 
+#: How a message about ``names=`` says it on the command line (``validate``, ``fit``: ``--names Q=COLUMN,...``), where
+#: there is no ``names={...}`` to write (a study file's ``names = { ... }`` is Python's).
+_ON_THE_COMMAND_LINE = "on the command line --names "
+
+
 def unit_factor(quantity: str, unit: str, source: str) -> float:
     """The factor to SI of ``unit`` for ``quantity`` (:data:`UNITS`); ``ValueError`` naming ``source`` else."""
     allowed = UNITS[CANDIDATE_QUANTITIES[quantity]]
@@ -109,7 +115,8 @@ PROGRESS_ROWS = 1_000_000
 def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
               progress: Callable[[str], None] | None = None,
               read: Collection[str] | None = None) -> dict[str, np.ndarray]:
-    """A CSV file's columns (a header row; ``#`` lines are comments and blank lines are skipped, as spreadsheets and
+    """A CSV file's columns (a header row, its fields separated by commas, or by semicolons or tabs where the header
+    holds no comma (:func:`_delimiter`); ``#`` lines are comments and blank lines are skipped, as spreadsheets and
     editors leave them at the end; a UTF-8 byte-order mark is read, as spreadsheets write it), each as float64; its
     rows are checked against ``limits`` before they are read, ``progress`` hears every :data:`PROGRESS_ROWS` of them,
     and errors name the file's own line number. A column not in ``read`` (default: every column is read) is named
@@ -125,7 +132,9 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
 
     try:
         with open(path, newline="", encoding="utf-8-sig") as handle:
-            reader = csv.reader(data_lines(handle))
+            lines = data_lines(handle)
+            first = next(lines, "")
+            reader = csv.reader(itertools.chain([first], lines), delimiter=_delimiter(first))
             header = [name.strip() for name in next(reader, [])]
             if not header:
                 raise ValueError(f"{path}: the file is empty; allowed: a CSV file with a header row")
@@ -148,6 +157,15 @@ def _read_csv(path: Path, limits: Limits = DEFAULT_LIMITS,
         raise ValueError(f"{path}: not a readable CSV file (line {line[0]}: {error}); allowed: a CSV file with a "
                          "header row") from None
     return {name: np.frombuffer(values, dtype=float).copy() for name, values in columns.items()}
+
+
+def _delimiter(header: str) -> str:
+    """What separates the fields of a CSV file whose header row is ``header``: a comma, or where the header holds
+    none, a semicolon or a tab in it (a spreadsheet's "CSV" where the decimal mark is a comma; a tab-separated file:
+    round 29 read either as one column ``'t;Fn;Ft;A'`` and refused it, not naming why)."""
+    if "," in header:
+        return ","
+    return next((mark for mark in (";", "\t") if mark in header), ",")
 
 
 def _read_row(path: Path, number: int, header: list[str], row: list[str], columns: dict[str, array],
@@ -337,12 +355,13 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         used.add(column)
     if "time" not in found:
         raise ValueError(f"{source}: no time column; columns found: {columns_listed(columns)}; allowed: a column "
-                         "'time' or names={'time': <your column>}")
+                         f"'time' or names={{'time': <your column>}} ({_ON_THE_COMMAND_LINE}time=<your column>)")
     time = found.pop("time")
     limits.check(f"{source} ({time.size} samples)", samples=time.size)  # (an array or a Dataset as a file's rows)
     if not found:
         raise ValueError(f"{source}: none of {', '.join(q for q in CANDIDATE_QUANTITIES if q != 'time')} found; "
-                         f"columns found: {columns_listed(columns)}; name yours with names={{quantity: column}}")
+                         f"columns found: {columns_listed(columns)}; allowed: name yours with names={{quantity: column}} "
+                         f"({_ON_THE_COMMAND_LINE}normal_force=<your column>,...)")
     for quantity, values in found.items():
         if values.shape != time.shape:
             raise ValueError(f"{source}: column {names.get(quantity, quantity)!r} has {values.size} values and the "
