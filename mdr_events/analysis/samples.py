@@ -216,8 +216,8 @@ def corner_excess(times: np.ndarray, candidate: np.ndarray, exact: np.ndarray, c
 def contact_change_excess(times: np.ndarray, candidate: np.ndarray, exact: np.ndarray, codes: np.ndarray,
                           compared: np.ndarray, events) -> float:
     """The largest difference of a sample where one run is in contact and the other is not (``left_out`` code 2), or
-    of one straddling a contact made or lost (code 3 after a jump: the first contact, a re-contact), beyond the exact
-    values around it, relative to the exact quantity's range over the compared samples (0 if none).
+    of one straddling a contact made or lost (code 3: the first contact, a re-contact, a pull-off, a contact's end),
+    beyond the exact values around it, relative to the exact quantity's range over the compared samples (0 if none).
 
     A contact made or lost a little earlier or later than the exact one moves the jump between the values on either
     side of it: each stretch of such samples, ``i…j``, lies within the exact values over ``i-1…j+1`` and 0 (the
