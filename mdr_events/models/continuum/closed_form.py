@@ -344,7 +344,7 @@ def closed_span(primitive: Primitive, start: float, stop: float, force: float, G
         terminal one) and the force where it ended; ``None`` where an event's function could cross between two
         readings unread (:data:`TURN_READS` spent): the span has no closed form then.
     """
-    parts = np.linspace(start, stop, EVENT_READINGS + 1)[1:-1].tolist()
+    parts = equal_parts(float(start), float(stop), EVENT_READINGS)[1:-1]  # (np.linspace's numbers, in Python floats)
     ascending = stop > start
     readings = sorted({*parts, *knots, stop}, reverse=not ascending)
     # (the readings are the force's breakpoints too: a quadrature over the span, tangential_work's, rules between them)
