@@ -33,6 +33,9 @@ def _route_of_before(monkeypatch):
     monkeypatch.setattr(span_polynomials, "POLYNOMIAL_ROUTE", False)
 
 HERTZ = PAPER.replace(dgamma0=0.0, dgamma1=0.0)
+#: A flat punch pressed 10 µm into a layer a tenth of its radius thick (``bench_layer_punch.py``'s): its contact
+#: recedes under the face along two moving spans, each a layer's closed form (their series read in one call).
+FACE, PUNCH = me.FlatPunch(2e-3), PAPER.replace(d_max=1e-5)
 ZIGZAG = [(0, 0), (2e-4, 1.2e-4), (-1e-4, 2.1e-4), (1e-4, 3e-4), (-1e-4, 3e-4), (2e-4, -1e-4)]
 
 
@@ -63,6 +66,9 @@ CASES = {
                                 {"profile": PowerLaw(0.5, 1.05)}),
     "tau0+coulomb with adhesion, B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER),
                                                   {"friction": FrictionLaw("tau0+coulomb", mu=0.3)}),
+    "5 mm layer, B 30°": lambda: (PAPER, me.Path.scenario_B(30.0, PAPER), {"layer": me.Layer(5e-3)}),
+    "flat punch receding on a thin layer, B 20°": lambda: (PUNCH, me.Path.scenario_B(20.0, PUNCH, profile=FACE),
+                                                          {"profile": FACE, "layer": me.Layer(0.1 * FACE.radius)}),
 }
 #: (The rate-dependent law's extrema are its own, ``rate_run``'s, not this scan's: it has no case here.)
 

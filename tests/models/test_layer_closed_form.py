@@ -163,7 +163,7 @@ def test_a_primitive_read_off_its_needed_rows_is_every_rows_bit_for_bit(contact,
         mine, theirs = primitive(radii), primitive.all_rows(radii)
         assert np.array_equal(mine, theirs) and np.array_equal(np.signbit(mine), np.signbit(theirs))
         for radius in radii[::40].tolist():  # (one radius in floats: every function's value before)
-            every = primitive._combine(*primitive.own.value(radius),
+            every = primitive.combine(*primitive.own.value(radius),
                                        primitive.anchors.value(radius)[4] if primitive.C0 else 0.0)
             assert primitive.at(radius) == every and math.copysign(1.0, primitive.at(radius)) == math.copysign(1.0,
                                                                                                              every)

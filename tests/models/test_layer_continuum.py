@@ -241,3 +241,19 @@ def test_a_radius_on_a_layer_does_not_depend_on_the_radii_asked_before_it():
     for order in (depths, depths[::-1], np.random.default_rng(5).permutation(depths)):
         asked = {float(d): branch.radius(float(d), 1e-14) for d in order}
         assert [asked[float(d)] for d in depths] == alone
+
+
+def test_the_shifts_of_runs_of_one_radius_are_each_radius_own():
+    """``LayerMedium.shift`` of an array whose radii come in runs (a run's pinned spans: the held face over most of its
+    samples) reads each run once and repeats it: bit for bit the element-by-element route over the whole array, in
+    any shape, with zeros, a NaN and both signs of zero among them; an array of distinct radii takes that route."""
+    contact = PAPER.replace(h=2e-4)
+    params = contact.parameters(me.Parameters.paper().d_max, me.Parameters.paper().v)
+    medium = medium_of(params, contact.friction, None, contact.layer)
+    K = 0.37
+    moving = np.linspace(1e-5, 4e-4, 7)
+    radii = np.concatenate([np.full(40, 4e-4), moving, np.full(31, 2e-4), [0.0, -0.0, math.nan, math.nan],
+                            np.full(25, 4e-4), moving[::-1]])
+    for shaped in (radii, radii.reshape(3, -1), moving):
+        np.testing.assert_array_equal(medium.shift(K, shaped), medium._shift_values(K, shaped))
+        assert medium.shift(K, shaped).shape == shaped.shape

@@ -595,9 +595,9 @@ def test_a_still_primitive_is_its_series_zeros_and_a_constant_radius_shift_each_
     assert primitives and all(primitive.still for primitive in primitives)
     for primitive in primitives:
         radii = np.geomspace(primitive.branch.jump_off_radius * 1.001, A0, 101)
-        series = primitive._combine(*primitive.own.values(radii), 0.0)
+        series = primitive.combine(*primitive.own.values(radii), 0.0)
         assert np.array_equal(primitive(radii), series) and not np.any(np.signbit(series))
-        assert primitive.at(float(radii[50])) == 0.0 == primitive._combine(*primitive.own.value(float(radii[50])), 0.0)
+        assert primitive.at(float(radii[50])) == 0.0 == primitive.combine(*primitive.own.value(float(radii[50])), 0.0)
     sliding = _thin_run_solution(me.Scenario("B", alpha=[20.0], d_max=D_MAX))  # (its recession drives shifts)
     assert not any(span.interpolant.primitive.still for span in sliding.spans
                    if isinstance(getattr(span.interpolant, "primitive", None), LayerPrimitive))

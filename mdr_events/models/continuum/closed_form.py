@@ -344,21 +344,23 @@ def closed_span(primitive: Primitive, start: float, stop: float, force: float, G
         terminal one) and the force where it ended; ``None`` where an event's function could cross between two
         readings unread (:data:`TURN_READS` spent): the span has no closed form then.
     """
-    parts = np.linspace(start, stop, EVENT_READINGS + 1)[1:-1].tolist()
+    parts = equal_parts(float(start), float(stop), EVENT_READINGS)[1:-1]  # (np.linspace's numbers, in Python floats)
     ascending = stop > start
     readings = sorted({*parts, *knots, stop}, reverse=not ascending)
     # (the readings are the force's breakpoints too: a quadrature over the span, tangential_work's, rules between them)
     whole = ClosedForce(primitive, start, force, G2, scale, [start, *readings])
     t_events: list[list[float]] = [[] for _ in events]
     directions = [float(getattr(event, "direction", 0.0)) for event in events]
-    g, low = [event(start, None) for event in events], start
+    # (the readings as Python floats, the same numbers: the layer's levels are NumPy scalars, on which the crossings'
+    # tests and the guard's arithmetic cost several times more)
+    g, low = [float(event(start, None)) for event in events], start
     g_old, older = g, None  # (the reading before low: the curvature of the three)
     # (the events their readings settle, monotone or convex in their direction, are not read in between: module
     # docstring, :meth:`~.span.SpanIntegrator.levels_convex`)
     settled = [index for index, event in enumerate(events) if getattr(event, "settled", False)]
     try:
         for var in readings:
-            g_new = [event(var, None) for event in events]
+            g_new = [float(event(var, None)) for event in events]
             active = [index for index in range(len(events)) if _crossed(g[index], g_new[index], directions[index])]
             # (an event whose readings show no crossing may turn back between them: read between where the curvature of
             # three readings could turn it; the first part's is known at the third reading, or read where one fires)

@@ -310,7 +310,7 @@ class LayerPrimitive(NamedTuple):
         values = [0.0] * len(BranchIntegrals.NAMES)
         for index, row in zip(rows, self.own.values(np.reshape(a, -1), rows)):
             values[index] = row
-        return np.reshape(self._combine(*values, self.anchors.values(np.reshape(a, -1), slice(4, 5))[0]
+        return np.reshape(self.combine(*values, self.anchors.values(np.reshape(a, -1), slice(4, 5))[0]
                                         if self.C0 else 0.0), a.shape)
 
     def all_rows(self, a: np.ndarray) -> np.ndarray:
@@ -329,7 +329,7 @@ class LayerPrimitive(NamedTuple):
         """
         a = np.asarray(a, dtype=float)
         M, u, depth, J_u, J_d = self.own.values(np.reshape(a, -1))
-        return np.reshape(self._combine(M, u, depth, J_u, J_d, self.anchors.values(np.reshape(a, -1), slice(4, 5))[0]
+        return np.reshape(self.combine(M, u, depth, J_u, J_d, self.anchors.values(np.reshape(a, -1), slice(4, 5))[0]
                                         if self.C0 else 0.0), a.shape)
 
     def at(self, a: float) -> float:
@@ -337,10 +337,25 @@ class LayerPrimitive(NamedTuple):
         :attr:`still`)."""
         if self.still:
             return 0.0
-        return self._combine(*self.own.value(a, self.rows), self.anchors.value(a, (4,))[4] if self.C0 else 0.0)
+        return self.combine(*self.own.value(a, self.rows), self.anchors.value(a, (4,))[4] if self.C0 else 0.0)
 
-    def _combine(self, M, u, depth, J_u, J_d, J_0):
-        """``P`` of the functions' values (module docstring)."""
+    def combine(self, M, u, depth, J_u, J_d, J_0):
+        """``P`` of the functions' values (module docstring): what :meth:`__call__` sums, for a caller that read
+        the series itself (``span_forces``: several spans' radii in one call).
+
+        Parameters
+        ----------
+        M, u, depth, J_u, J_d : numpy.ndarray or float
+            The functions of :data:`BranchIntegrals.NAMES` along the span's branch (``0.0`` where :attr:`rows` does
+            not read them).
+        J_0 : numpy.ndarray or float
+            ``J_d`` along the anchors' branch (``0.0`` where ``C0`` is 0).
+
+        Returns
+        -------
+        numpy.ndarray or float
+            ``P``.
+        """
         cap, J_u = self.K * u, self.K * J_u
         value = self.D0 * cap + self.D1 * (M * cap - J_u) + self.E0 * depth + self.E1 * (M * depth - J_d)
         return value + self.U * J_u + self.A * M + self.C * J_d + self.C0 * J_0

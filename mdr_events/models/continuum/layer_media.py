@@ -29,6 +29,10 @@ __all__ = ["LayerMedium", "FrictionlessLayerMedium", "LAYER_MEDIA"]
 
 #: How many branches a medium keeps (:meth:`LayerMedium._branch`): a run asks for two, a rate law's run a few more.
 BRANCHES_KEPT = 16
+#: At most this share of an array's radii starting a run of equal ones (:meth:`LayerMedium._shifts`), each run's shift
+#: is read once: a run's pinned spans repeat their radius over most of its samples, and below half the table's reading
+#: of the runs alone saves more than finding them costs.
+RUNS_SHARE = 0.5
 
 
 class LayerMedium(HalfSpaceMedium):
@@ -111,11 +115,19 @@ class LayerMedium(HalfSpaceMedium):
         """:meth:`shift` of an array of radii (the factor's splines by Horner's rule on the arrays,
         :meth:`~mdr_events.theory.layer.scalar_factors.TangentialFactors.parts_array`)."""
         radii = np.asarray(a, dtype=float)
-        if radii.size > 1 and np.ndim(K) == 0 and radii.flat[0] == radii.flat[-1] and np.all(radii == radii.flat[0]):
-            # (one radius throughout, a pinned span's: its shift read once and repeated, the same value as each of
-            # the array's elementwise operations gives every element; a held punch's face, two thousand samples.
-            # Only for one K: an array of K would give each element its own shift)
-            return np.full(radii.shape, self._shifts(K, radii.reshape(-1)[:1])[0])
+        flat = radii.reshape(-1)
+        if flat.size > 1 and np.ndim(K) == 0:
+            # (runs of one radius, a pinned span's samples: each run's shift read once and repeated, the same value
+            # as each of the array's elementwise operations gives every element; a held punch's face, some thousand
+            # of a run's samples. Only for one K: an array of K would give each element its own shift)
+            starts = np.flatnonzero(np.concatenate([[True], flat[1:] != flat[:-1]]))
+            if starts.size <= RUNS_SHARE * flat.size:
+                repeats = np.diff(np.append(starts, flat.size))
+                return np.repeat(self._shift_values(K, flat[starts]), repeats).reshape(radii.shape)
+        return self._shift_values(K, radii)
+
+    def _shift_values(self, K: float, radii: np.ndarray) -> np.ndarray:
+        """:meth:`_shifts` element by element."""
         lam = np.maximum(radii, 0.0) / self.layer.thickness
         factor = self._factor_array(self.params.nu, *self.tangential.factors_array(lam))
         return np.where(radii > 0, self._cap_array(radii, K, factor), 0.0)

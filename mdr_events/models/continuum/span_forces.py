@@ -9,8 +9,11 @@ the spans): the values each span's own call gives, bit for bit, in a call per gr
   repeated over its points, in the order ``Primitive.__call__`` sums them;
 - forces linear in time (:class:`~.span.LinearForce`, a pinned span's): ``F0 + rate (t − t0)`` with each span's
   numbers repeated over its points;
-- anything else (a layer's closed form, another dense output), and a group of one span: its own call,
-  :func:`~.dense.force_values`.
+- a bonded layer's closed forms on one branch (:class:`~.layer_closed_form.LayerPrimitive`s sharing their cells'
+  series): the series of every row any of them reads at all their radii in one call (each row and radius a lane of
+  Clenshaw's recurrence of its own), each span's ``P`` of its own rows (the others ``0.0``, as its call leaves them);
+- anything else (another dense output, a layer's closed form of at most ``SCALAR_RADII`` points or ``P ≡ 0``), and a
+  group of one span: its own call, :func:`~.dense.force_values`.
 
 Each value is the same whether it is computed among other spans' or alone: the branch's NumPy forms and the products
 and sums act element by element (``tests/models/test_extremum_scan.py`` compares both routes).
@@ -21,6 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from .closed_form import ClosedForce, Primitive
+from .layer_closed_form import SCALAR_RADII, BranchIntegrals, LayerPrimitive
 from .dense import _gathered, _step_values, cut, force_values
 from .span import LinearForce
 
@@ -43,7 +47,7 @@ def span_forces(interpolants: list, points: list[np.ndarray]) -> list[np.ndarray
         ``F_x`` (N) at each span's points, in the order given.
     """
     out: list = [None] * len(interpolants)
-    steps, closed, linear = [], {}, []
+    steps, closed, layered, linear = [], {}, {}, []
     for index, (interpolant, where) in enumerate(zip(interpolants, points)):
         gathered = _gathered(interpolant) if np.ndim(where) == 1 else None
         if gathered is not None:
@@ -51,6 +55,10 @@ def span_forces(interpolants: list, points: list[np.ndarray]) -> list[np.ndarray
         elif type(interpolant) is ClosedForce and type(interpolant.primitive) is Primitive and np.ndim(where) == 1:
             primitive = interpolant.primitive
             closed.setdefault((id(primitive.branch), id(primitive.attach)), []).append(index)
+        elif type(interpolant) is ClosedForce and type(interpolant.primitive) is LayerPrimitive \
+                and np.ndim(where) == 1 and np.size(where) > SCALAR_RADII and not interpolant.primitive.still:
+            primitive = interpolant.primitive
+            layered.setdefault((id(primitive.own), id(primitive.anchors)), []).append(index)
         elif type(interpolant) is LinearForce and np.ndim(where) == 1:
             linear.append(index)
         else:
@@ -59,10 +67,10 @@ def span_forces(interpolants: list, points: list[np.ndarray]) -> list[np.ndarray
     if len(steps) > 1:
         _fill(out, [index for index, _ in steps], _step_values([found for _, found in steps],
                                                                 [points[index] for index, _ in steps]))
-    for members in closed.values():
+    for members, values in [*((members, _closed_values) for members in closed.values()),
+                            *((members, _layer_closed_values) for members in layered.values())]:
         if len(members) > 1:
-            _fill(out, members, _closed_values([interpolants[index] for index in members],
-                                               [points[index] for index in members]))
+            _fill(out, members, values([interpolants[index] for index in members], [points[index] for index in members]))
         else:
             alone += members
     if len(linear) > 1:
@@ -108,5 +116,30 @@ def _closed_values(forces: list[ClosedForce], points: list[np.ndarray]) -> list[
     out = []
     for force, a, depth, integral in zip(forces, radii, depths, integrals):
         value = force.primitive.combine(a, depth, integral, next(found) if force.primitive.C0 else None)
+        out.append(force.force + force.G2 * (value - force.origin))
+    return out
+
+
+def _layer_closed_values(forces: list[ClosedForce], points: list[np.ndarray]) -> list[np.ndarray]:
+    """``ClosedForce.__call__`` of a bonded layer's closed forms sharing their cells' series (each
+    :class:`~.layer_closed_form.LayerPrimitive`'s ``own`` and ``anchors``, every span more than ``SCALAR_RADII``
+    points, ``P`` not zero) at their points: the series of every row any of them reads at all their radii in one call
+    (each row and radius a lane of Clenshaw's recurrence: the values a call per span gives), then each span's ``P`` of
+    its own rows, the others ``0.0`` as :meth:`~.layer_closed_form.LayerPrimitive.__call__` leaves them."""
+    radii = [np.reshape(np.asarray(where, dtype=float), -1) * force.scale for force, where in zip(forces, points)]
+    lengths = [len(each) for each in radii]
+    primitives = [force.primitive for force in forces]
+    rows = tuple(sorted({row for primitive in primitives for row in primitive.rows}))
+    series = [cut(values, lengths) for values in primitives[0].own.values(np.concatenate(radii), rows)]
+    attached = [radii[k] for k, primitive in enumerate(primitives) if primitive.C0]
+    if attached:  # (the anchors' J_d of the spans whose C0 is not 0, in their order)
+        found = iter(cut(primitives[0].anchors.values(np.concatenate(attached), slice(4, 5))[0],
+                         [len(a) for a in attached]))
+    out = []
+    for k, (force, primitive) in enumerate(zip(forces, primitives)):
+        values = [0.0] * len(BranchIntegrals.NAMES)
+        for index in primitive.rows:
+            values[index] = series[rows.index(index)][k]
+        value = primitive.combine(*values, next(found) if primitive.C0 else 0.0)
         out.append(force.force + force.G2 * (value - force.origin))
     return out
