@@ -150,7 +150,6 @@ def _check_representable(params: Parameters, profile: Profile | None, friction: 
             unread = "" if adhesion else " (not read: without adhesion)"
             raise ValueError(f"E={params.E!r} Pa, nu={params.nu!r}, {indenter}, tau0={params.tau0!r} Pa, "
                              f"dgamma0={params.dgamma0!r} J/m², dgamma1={params.dgamma1!r} J/m²{unread}, "
-                             f"d_max={params.d_max!r} "
-                             f"m, v={params.v!r} m/s{law}: {scale.name} {value}; allowed: parameters whose scales lie "
-                             f"within {SCALE_MIN:.2g} to {SCALE_MAX:.2g} in SI units (or are 0), so that their products "
-                             "stay finite in double precision")
+                             f"d_max={params.d_max!r} m, v={params.v!r} m/s{law}: {scale.name} {value}; allowed: "
+                             f"parameters whose scales lie within {SCALE_MIN:.2g} to {SCALE_MAX:.2g} in SI units (or "
+                             "are 0), so that their products stay finite in double precision")
