@@ -164,3 +164,46 @@ def test_a_dense_table_s_onset_near_the_surface_slides_from_first_contact():
     assert resolved[1] / resolved[0] == pytest.approx(1e8, rel=TAN_SQUARED_RTOL), resolved
     hertz = diagram["d_crit_hertz"].values
     assert hertz[..., 0] == 0.0 and np.all(np.isfinite(hertz)), hertz
+
+
+# --- the mend of round 29's B2 (the reviewer's): the non-adhesive onset's check reads the caller's Parameters ------
+
+#: A non-adhesive onset refused by a scale of its own (``τ0 = 1e-300`` Pa: the critical shift below ``SCALE_MIN``),
+#: with the paper's works given: the refusal names them as given, not the 0 of a copy the check made.
+_TINY_TAU0 = ADHESIVE.replace(tau0=1e-300)
+_NON_ADHESIVE_ONSETS = {
+    "power_law.d_crit_A": lambda params: me.power_law.d_crit_A(20.0, me.PowerLaw(c=1.0, n=1.5), params),
+    "power_law.critical_angle_A": lambda params: me.power_law.critical_angle_A(me.PowerLaw(c=1.0, n=1.5), params,
+                                                                               False),
+    "mindlin.d_crit_B_indentation": lambda params: me.mindlin.d_crit_B_indentation(
+        20.0, me.FrictionLaw("tau0", tau0=params.tau0), params, me.PowerLaw(c=1.0, n=1.5)),
+}
+
+
+@pytest.mark.parametrize("name", sorted(_NON_ADHESIVE_ONSETS))
+def test_a_non_adhesive_onset_s_refusal_names_the_works_given(name):
+    """B2's check without adhesion made a copy of the parameters with both works 0 and refused it, naming
+    ``dgamma0=0.0 J/m²`` to a user who gave 0.05: it names the works given (and that they are not read)."""
+    from tests.hostile_checks import one_line_naming
+
+    message = one_line_naming(lambda: _NON_ADHESIVE_ONSETS[name](_TINY_TAU0), "tau0=1e-300")
+    assert f"dgamma0={ADHESIVE.dgamma0!r} J/m²" in message and f"dgamma1={ADHESIVE.dgamma1!r} J/m²" in message
+
+
+#: A depth beyond the table's reach below (its last radius 3 mm of the paraboloid R = 1 cm: 0.9 mm without adhesion,
+#: less with it), so that the radius is taken at the reach of the branch read.
+DEEP = 2e-3
+
+
+@pytest.mark.parametrize("profile", [None, me.PowerLaw(c=1.0, n=0.4), me.FlatPunch(radius=1e-3),
+                                     me.TabulatedProfile((0.0, 1e-3, 2e-3, 3e-3), (0.0, 5e-5, 2e-4, 4.5e-4))],
+                         ids=["paraboloid", "n=0.4", "flat punch", "table"])
+def test_the_scales_without_adhesion_are_those_of_no_works(profile):
+    """What ``run_scales(..., adhesion=False)`` reads in place of the copy it replaces: the scales of the same
+    parameters with both works 0, value for value (the radius at ``d_max`` of the non-adhesive branch, a table's
+    reach on it, and no jump-off)."""
+    from mdr_events.theory.scales import run_scales
+
+    params = ADHESIVE.replace(d_max=DEEP)
+    assert run_scales(params, profile, adhesion=False) == run_scales(_works(0.0).replace(d_max=DEEP), profile)
+    assert len(run_scales(params, profile)) > len(run_scales(params, profile, adhesion=False))  # (the jump-off's)

@@ -64,7 +64,7 @@ def check_reach(params: Parameters, depth: float, profile: SimulatedProfile, lab
     """Refuse a path going deeper than the indenter reaches: a tabulated profile's contact radius on the ``Δγ0``
     branch would pass the table's last radius at ``depth`` (``ValueError`` naming both). Other profiles reach any
     depth."""
-    deepest = theory_of(profile).deepest(profile, params)
+    deepest = theory_of(profile).deepest(profile, params, params.dgamma0)
     if depth > deepest:
         where = (f"at most {deepest:.6g} m, where the contact radius reaches the table's last radius" if deepest > 0 else
                  f"none: with this adhesion the contact radius reaches the table's last radius above the surface "

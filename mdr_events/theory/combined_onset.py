@@ -43,9 +43,16 @@ BISECTIONS = 60
 #: 0.7 % deeper); where none is found it never comes if ``cot α <= κ`` (below), else it is not known (``nan``)
 INDENTATION_REACH = 2.0**20
 #: What NumPy may meet in the excess's parts of a path near the surface (``α`` down to the least double, ``cot α`` up
-#: to ~1e308): ``cot α`` squared in the turn ``ξ*`` and in the bound on ``x_c`` overflows to ``inf``, a turn beyond
-#: every contact and a bound beyond every depth, as the comparisons read them; a ``0/0`` of a turn outside the contact
-#: is not read either (issue 32 round 29: the overflow's ``RuntimeWarning`` leaked from ``d_crit_A`` at 1e-300°)
+#: to ~1e308; issue 32 round 29: the overflow's ``RuntimeWarning`` leaked from ``d_crit_A`` at 1e-300°). In the bound
+#: on ``x_c`` ``cot α`` squared overflows to ``inf``, a bound beyond every depth. In the turn ``ξ*`` it overflows in
+#: ``G*² cot α²`` above and below: ``0`` (the denominator first), then ``inf/inf``, ``nan``, neither of which a
+#: comparison reads as inside the contact (the turn's own limit is finite, 3.4e-4 m on the paper's paraboloid), and
+#: needs not: where it overflows so (``α`` below ~1e-146° with the paper's moduli) the ring's edge alone, ``d cot α``,
+#: exceeds its cap at the least depth bisected (onset 0 in A, ``d_max`` in B's indentation, as at 1e-50°).
+#: Clipping ``cot α`` instead would not drop this set: ``G*² cot α²`` overflows at ordinary angles too where ``G*`` is
+#: near its representable bound (``E = 1e154``: at 20° and 60°), and a clip must stay above ``κ`` (``μ`` up to 1e100
+#: and more) not to change which branch the compressed springs take; ``tan α`` in the turn
+#: (``1/(G* − E* μ tan α)²``) is overflow-free near the surface but another rounding at every angle, not bit for bit.
 _UNREAD = {"over": "ignore", "divide": "ignore", "invalid": "ignore"}
 
 

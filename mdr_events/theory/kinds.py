@@ -46,8 +46,8 @@ class IndenterTheory:
         ``(profile, params, work_of_adhesion)``: the branch's jump-off under displacement control
         (``contact_radius``, ``depth``, ``normal_force``).
     deepest : callable
-        ``(profile, params)``: the deepest depth a path may reach (m): ``+inf`` for an indenter of any extent, a
-        table's where the contact radius on the ``Δγ0`` branch reaches its last radius.
+        ``(profile, params, work_of_adhesion)``: the deepest depth a path may reach (m): ``+inf`` for an indenter of
+        any extent, a table's where the contact radius on the branch of ``work_of_adhesion`` reaches its last radius.
     spring_profile : callable
         ``(profile, params)``: the springs' profile ``g(x)`` as derived by :mod:`~mdr_events.theory.symbolic`.
     critical_angle : callable
@@ -67,7 +67,7 @@ class IndenterTheory:
 
     branch_radius: Callable[..., object]
     jump_off: Callable[[Profile | None, Parameters, float], dict[str, float]]
-    deepest: Callable[[Profile | None, Parameters], float]
+    deepest: Callable[[Profile | None, Parameters, float], float]
     spring_profile: Callable[[Profile | None, Parameters], SpringProfile]
     critical_angle: Callable[[Profile | None, Parameters, str], float]
     friction_closed_forms: bool
@@ -76,7 +76,7 @@ class IndenterTheory:
     friction_forms: FrictionForms | None = None
 
 
-def _any_depth(profile: Profile | None, params: Parameters) -> float:
+def _any_depth(profile: Profile | None, params: Parameters, work_of_adhesion: float) -> float:
     """An indenter of any extent reaches any depth."""
     return math.inf
 
@@ -137,7 +137,7 @@ _FLAT_PUNCH = IndenterTheory(
 _TABLE = IndenterTheory(
     branch_radius=tabulated.contact_radius,
     jump_off=tabulated.jump_off,
-    deepest=lambda profile, params: tabulated.branch(profile, params, params.dgamma0).deepest,
+    deepest=lambda profile, params, work: tabulated.branch(profile, params, work).deepest,
     spring_profile=lambda profile, params: tabulated.equivalent(profile),
     critical_angle=_table_critical_angle,
     friction_closed_forms=False)

@@ -4,12 +4,16 @@ negative), results that fit in double precision (:class:`ResultOverflowError`), 
 
 from __future__ import annotations
 
+from typing import Callable, TypeVar
+
 import numpy as np
 
 from mdr_events.theory import symbolic
 from mdr_events.validation import SCALE_MAX, check_real, real_array, shown
 
-__all__ = ["NONNEGATIVE", "ResultOverflowError"]
+__all__ = ["NONNEGATIVE", "ResultOverflowError", "representable_result"]
+
+_Result = TypeVar("_Result")
 
 
 def _rel(key: str):
@@ -73,9 +77,31 @@ class ResultOverflowError(ValueError, OverflowError):
     scale behind it as it does for math's overflows."""
 
 
-def _representable(compute, function: str, **arguments):
-    """``compute()`` if every entry is finite (computed without a RuntimeWarning); else ``ValueError``: the arguments'
-    result overflows double precision."""
+def representable_result(compute: Callable[[], _Result], function: str, **arguments) -> _Result:
+    """The result of a closed form if it fits in double precision, else a refusal naming the arguments.
+
+    The paraboloid's closed forms here and the power law's jump-off (:mod:`mdr_events.theory.power_law.detachment`)
+    compute through it.
+
+    Parameters
+    ----------
+    compute : callable
+        The closed form, called once with NumPy's overflow and invalid results silenced (they are read below).
+    function : str
+        The closed form's name, for the message.
+    **arguments
+        The arguments it was given, named in the message (``shown``).
+
+    Returns
+    -------
+    float, numpy.ndarray or dict
+        ``compute()`` as it is, if every entry (a dict's values) is finite.
+
+    Raises
+    ------
+    ResultOverflowError
+        An entry is not finite: the arguments' result overflows double precision.
+    """
     with np.errstate(over="ignore", invalid="ignore"):
         result = compute()
     if np.all(np.isfinite(list(result.values()) if isinstance(result, dict) else result)):

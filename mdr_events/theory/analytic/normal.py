@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from mdr_events.theory.analytic.arguments import _as_output, _finite, _one_work, _rel, _representable
+from mdr_events.theory.analytic.arguments import _as_output, _finite, _one_work, _rel, representable_result
 from mdr_events.theory.roots import positive_polynomial_root
 from mdr_events.theory.job import ContactLike, on_layer, paper_parameters
 
@@ -41,8 +41,8 @@ def jkr_depth(contact_radius, contact: ContactLike, work_of_adhesion: float):
     contact_radius, _ = _finite(contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jkr_depth")
     relation = _rel("jkr_depth").numeric
-    return _representable(lambda: relation(contact_radius, params.R, params.E_star, work_of_adhesion), "jkr_depth",
-                          contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
+    return representable_result(lambda: relation(contact_radius, params.R, params.E_star, work_of_adhesion),
+                                "jkr_depth", contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
 
 
 def jkr_normal_force(contact_radius, contact: ContactLike, work_of_adhesion: float):
@@ -70,8 +70,8 @@ def jkr_normal_force(contact_radius, contact: ContactLike, work_of_adhesion: flo
     contact_radius, _ = _finite(contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
     params = paper_parameters(contact, "jkr_normal_force")
     relation = _rel("jkr_normal_force").numeric
-    return _representable(lambda: relation(contact_radius, params.R, params.E_star, work_of_adhesion),
-                          "jkr_normal_force", contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
+    return representable_result(lambda: relation(contact_radius, params.R, params.E_star, work_of_adhesion),
+                                "jkr_normal_force", contact_radius=contact_radius, work_of_adhesion=work_of_adhesion)
 
 
 def normal_force(depth, contact_radius, contact: ContactLike):
@@ -170,7 +170,7 @@ def _paraboloid_jump_off(R: float, E_star: float, work_of_adhesion: float, sign:
     branch), some 40 µs a time. ``sign``: that of the work, so that ``-0.0`` and ``0.0``, equal as keys, are kept
     apart; the arguments' types too (``typed``: an ``int`` ``R`` computes as it did)."""
     args = (R, E_star, work_of_adhesion)
-    point = _representable(lambda: {
+    point = representable_result(lambda: {
         "contact_radius": float(_rel("jump_off_radius").numeric(*args)),
         "depth": float(_rel("jump_off_depth").numeric(*args)),
         "normal_force": float(_rel("jump_off_force").numeric(R, work_of_adhesion)),
@@ -205,8 +205,9 @@ def jump_in_radius(contact: ContactLike, work_of_adhesion: float) -> float:
 
         return layer_jump_in_radius(contact, work_of_adhesion)
     params = paper_parameters(contact, "jump_in_radius")
-    return _representable(lambda: float(_rel("jump_in_radius").numeric(params.R, params.E_star, work_of_adhesion)),
-                          "jump_in_radius", work_of_adhesion=work_of_adhesion)
+    return representable_result(
+        lambda: float(_rel("jump_in_radius").numeric(params.R, params.E_star, work_of_adhesion)), "jump_in_radius",
+        work_of_adhesion=work_of_adhesion)
 
 
 def pull_off_force(contact: ContactLike, work_of_adhesion: float) -> float:
@@ -236,8 +237,8 @@ def pull_off_force(contact: ContactLike, work_of_adhesion: float) -> float:
 
         return layer_pull_off_force(contact, work_of_adhesion)
     params = paper_parameters(contact, "pull_off_force")
-    return _representable(lambda: float(_rel("pull_off_force").numeric(params.R, work_of_adhesion)), "pull_off_force",
-                          work_of_adhesion=work_of_adhesion)
+    return representable_result(lambda: float(_rel("pull_off_force").numeric(params.R, work_of_adhesion)),
+                                "pull_off_force", work_of_adhesion=work_of_adhesion)
 
 
 def jkr_contact_radius(depth, contact: ContactLike, work_of_adhesion: float):

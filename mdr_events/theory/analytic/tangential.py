@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from mdr_events.theory.analytic.arguments import _finite, _rel, _representable
+from mdr_events.theory.analytic.arguments import _finite, _rel, representable_result
 from mdr_events.theory.job import ContactLike, paper_parameters
 
 __all__ = ["critical_shift", "fretting_dissipated_energy"]
@@ -32,8 +32,8 @@ def critical_shift(contact_radius, contact: ContactLike):
     (contact_radius,) = _finite(contact_radius=contact_radius)
     params = paper_parameters(contact, "critical_shift")
     relation = _rel("critical_shift").numeric
-    return _representable(lambda: relation(contact_radius, params.tau0, params.G_star), "critical_shift",
-                          contact_radius=contact_radius)
+    return representable_result(lambda: relation(contact_radius, params.tau0, params.G_star), "critical_shift",
+                                contact_radius=contact_radius)
 
 
 def fretting_dissipated_energy(contact_radius, amplitude, contact: ContactLike):
@@ -61,8 +61,8 @@ def fretting_dissipated_energy(contact_radius, amplitude, contact: ContactLike):
     contact_radius, amplitude = _finite(contact_radius=contact_radius, amplitude=amplitude)
     params = paper_parameters(contact, "fretting_dissipated_energy")
     relation = _rel("fretting_dissipated_energy").numeric
-    energy = _representable(lambda: relation(contact_radius, amplitude, params.tau0, params.G_star),
-                            "fretting_dissipated_energy", contact_radius=contact_radius, amplitude=amplitude)
+    energy = representable_result(lambda: relation(contact_radius, amplitude, params.tau0, params.G_star),
+                                  "fretting_dissipated_energy", contact_radius=contact_radius, amplitude=amplitude)
     # (a loop within the critical shift, X <= ū, sticks: none dissipated; the parallelogram's formula gave a negative
     # energy there, issue 32 round 28 A5)
     if np.ndim(energy) == 0:  # (its type as the relation gave it)

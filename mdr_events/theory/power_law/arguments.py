@@ -103,16 +103,16 @@ def _forms(profile) -> ClosedForms:
     return theory_of(check_profile(profile)).closed_forms
 
 
-
 def check_onset_scales(params: Parameters, profile: Profile, adhesion: bool, friction: FrictionLaw = TAU0) -> None:
     """The scales of a slip onset's closed form checked as the phase diagram's and the runs' are, before it is
     computed (:func:`~mdr_events.theory.scales.check_representable`; the paraboloid's of ``analytic`` are already).
 
     With ``adhesion`` the works' branches are the onset's (their jump-off among the scales), without it they are not
-    read (a non-adhesive onset takes any exponent). A power law near ``n = 1/2`` with adhesion raises its radii to
-    ``1/(2n − 1)``: ``n = 0.501`` gave ``nan`` onsets and critical angles with NumPy's overflow, ``n = 0.5 + 1e-10``
-    with ``Δγ0 = 1e4`` J/m² Python's own ``OverflowError``; now refused naming the scale that does not fit
-    (issue 32 round 29 B2).
+    read (a non-adhesive onset takes any exponent): ``check_representable``'s ``adhesion=False`` on the caller's own
+    ``Parameters``, so that a sweep's repeated check is found kept and a refusal names the works given. A power law
+    near ``n = 1/2`` with adhesion raises its radii to ``1/(2n − 1)``: ``n = 0.501`` gave ``nan`` onsets and critical
+    angles with NumPy's overflow, ``n = 0.5 + 1e-10`` with ``Δγ0 = 1e4`` J/m² Python's own ``OverflowError``; now
+    refused naming the scale that does not fit (issue 32 round 29 B2).
 
     Parameters
     ----------
@@ -133,4 +133,4 @@ def check_onset_scales(params: Parameters, profile: Profile, adhesion: bool, fri
     from mdr_events.theory.scales import check_representable  # (scales imports the closed forms)
 
     check_flag("adhesion", adhesion)
-    check_representable(params if adhesion else params.replace(dgamma0=0.0, dgamma1=0.0), profile, friction)
+    check_representable(params, profile, friction, adhesion)

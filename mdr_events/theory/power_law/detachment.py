@@ -5,7 +5,7 @@ pull-off force under force control.
 from __future__ import annotations
 
 from mdr_events.parameters import Parameters
-from mdr_events.theory.analytic.arguments import _representable
+from mdr_events.theory.analytic.arguments import representable_result
 from mdr_events.contact.indenters import PowerLaw, Profile
 from mdr_events.theory.power_law.arguments import _check_adhesive, _check_work, _forms, _rel
 
@@ -51,10 +51,10 @@ def _jump_off(profile: PowerLaw, params: Parameters, work_of_adhesion: float) ->
     args = (profile.c, profile.n, params.E_star, work_of_adhesion)
     # near n = 1/2 the factors raised to 1/(2n − 1) overflow (n = 0.501: a depth of inf·0, nan, with NumPy's warning;
     # issue 32 round 29 B2): refused as the paraboloid's is, naming the indenter and the work
-    return _representable(lambda: {"contact_radius": float(_rel("power_law_jump_off_radius").numeric(*args)),
-                                   "depth": float(_rel("power_law_jump_off_depth").numeric(*args)),
-                                   "normal_force": float(_rel("power_law_jump_off_force").numeric(*args))},
-                          "power_law.jump_off", profile=profile, work_of_adhesion=work_of_adhesion)
+    return representable_result(lambda: {"contact_radius": float(_rel("power_law_jump_off_radius").numeric(*args)),
+                                         "depth": float(_rel("power_law_jump_off_depth").numeric(*args)),
+                                         "normal_force": float(_rel("power_law_jump_off_force").numeric(*args))},
+                                "power_law.jump_off", profile=profile, work_of_adhesion=work_of_adhesion)
 
 
 def pull_off_force(profile: Profile, params: Parameters, work_of_adhesion: float) -> float:
