@@ -15,10 +15,17 @@ from typing import Any, Callable, Collection
 
 import numpy as np
 
-__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "shown_text", "validate_alpha", "check_callback", "reads_attrs"]
+__all__ = ["as_float", "PLAIN_NUMBER", "PLAIN_INTEGER", "plain_number", "number_of", "MAX_COUNT", "SCALE_MAX", "SCALE_MIN", "check_choice", "check_flag", "check_real", "check_count", "real_array", "shown", "shown_text", "cut_text", "validate_alpha", "check_callback", "reads_attrs"]
 
 #: Characters of a value's ``repr`` shown in a message (a long list or a file's content is cut).
 SHOWN_CHARACTERS = 80
+
+
+def cut_text(text: str, characters: int = SHOWN_CHARACTERS) -> str:
+    """``text`` as a message shows it: whole if it has at most ``characters`` characters, else its first
+    ``characters - 3`` and ``...`` (``characters`` in all): the one cut of every long value, name or list a message
+    writes (:func:`shown`, :func:`shown_text`, a file's columns listed, the parser's words)."""
+    return text if len(text) <= characters else text[: characters - 3] + "..."
 
 
 def shown(value: Any) -> str:
@@ -28,8 +35,7 @@ def shown(value: Any) -> str:
     20 MB and a second, for 80 characters)."""
     if isinstance(value, (list, tuple)) and len(value) > SHOWN_CHARACTERS:
         value = type(value)(value[:SHOWN_CHARACTERS]) if type(value) in (list, tuple) else value[:SHOWN_CHARACTERS]
-    text = " ".join(repr(value).split())
-    return text if len(text) <= SHOWN_CHARACTERS else text[: SHOWN_CHARACTERS - 3] + "..."
+    return cut_text(" ".join(repr(value).split()))
 
 
 def shown_text(text: str, characters: int = SHOWN_CHARACTERS) -> str:
@@ -38,7 +44,7 @@ def shown_text(text: str, characters: int = SHOWN_CHARACTERS) -> str:
     text = str(text)
     if not text.isprintable():
         text = "".join(c if c.isprintable() else repr(c)[1:-1] for c in text)
-    return text if len(text) <= characters else text[: characters - 3] + "..."
+    return cut_text(text, characters)
 
 
 #: What a number written as text may be (an option's value, a string of a study file, a CSV cell): :func:`plain_number`.

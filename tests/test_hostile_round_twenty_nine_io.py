@@ -121,6 +121,34 @@ def test_the_columns_found_are_listed_short_and_printable(tmp_path, header, list
     assert (f"... ({len(header)} columns)" in message) == (len(", ".join(header)) > LISTED_CHARACTERS), message
 
 
+#: Lengths of a text about each cut: the parser's and a value's (80 characters) and the columns' list (200).
+AROUND_THE_CUTS = (0, 1, 76, 77, 78, 79, 80, 81, 82, 196, 197, 198, 199, 200, 201, 202, 100_000)
+
+
+@pytest.mark.parametrize("length", AROUND_THE_CUTS)
+def test_every_message_cuts_a_long_text_alike(length):
+    """Review of round 29: the parser's words, a file's columns listed and a name or value shown were each cut to N
+    characters by their own copy of "the first N - 3 and '...'"; now by ``validation.cut_text``, the lowest layer's,
+    one rule: a text of at most N characters whole, a longer one exactly N long, ending in "...", which the parser
+    follows with the count of its words and the list with the count of the columns."""
+    from mdr_events.app.cli._options import CUT_CHARACTERS, _cut
+    from mdr_events.io.candidates import columns_listed
+    from mdr_events.validation import SHOWN_CHARACTERS, cut_text, shown, shown_text
+
+    text = ("word " * length)[:length]
+    for characters in (CUT_CHARACTERS, SHOWN_CHARACTERS, LISTED_CHARACTERS):
+        cut = cut_text(text, characters)
+        assert cut == text if length <= characters else (len(cut) == characters and cut == text[:characters - 3]
+                                                           + "..."), (length, characters, cut)
+    words = f" ({length} words)" if length > CUT_CHARACTERS else ""
+    assert _cut(text) == cut_text(text, CUT_CHARACTERS) and _cut(text, length) == cut_text(text, CUT_CHARACTERS) + words
+    assert shown_text(text) == cut_text(text) and shown(text) == cut_text(repr(text))
+    names = [f"c{index}" for index in range(length)]
+    listed = ", ".join(names)
+    assert columns_listed(names) == (listed or "none" if len(listed) <= LISTED_CHARACTERS else
+                                     f"{cut_text(listed, LISTED_CHARACTERS)} ({length} columns)")
+
+
 def test_a_long_list_of_paths_is_refused_in_linear_time():
     """Class 4, round 29: ``simulate(contact, [0] * 100_000)`` ran for hours before the refusal of its first item (not
     a Path): the paths' labels were checked for repeats with ``list.count`` on each (n² comparisons). Counted once

@@ -17,7 +17,7 @@ import pytest
 
 from hostile_checks import cli_one_line, one_line_naming
 from mdr_events.app.cli import build_parser
-from mdr_events.io.candidates import read_candidate
+from mdr_events.io.candidates import UnnamedColumnError, read_candidate
 
 #: Samples of the small hand-written CSV files (enough for a time axis; no simulation is run).
 SAMPLES = 6
@@ -56,10 +56,15 @@ def test_a_file_of_unnamed_columns_is_told_how_to_name_them_on_the_command_line(
 
 @pytest.mark.parametrize(("header", "how"), UNNAMED)
 def test_the_api_still_says_names_as_python_writes_it(tmp_path, header, how):
-    """The API's message keeps ``names={...}`` (what a Python caller writes) beside the command line's option."""
+    """The API's message keeps ``names={...}`` (what a Python caller writes), and only that: the io layer does not
+    spell the command line's option (review of round 29: layers point down, and so does what they know); its error
+    carries the quantity to name, from which the CLI writes ``--names`` (the test above)."""
     run = _write_csv(tmp_path / "run.csv", header)
-    message = one_line_naming(lambda: read_candidate(run), "names={")
-    assert how in message and str(run) in message
+    message = one_line_naming(lambda: read_candidate(run), "names={", errors=UnnamedColumnError)
+    assert "--names" not in message and "command line" not in message and str(run) in message, message
+    with pytest.raises(UnnamedColumnError) as refused:
+        read_candidate(run)
+    assert f"--names {refused.value.quantities[0]}=" in how
 
 
 def test_the_readme_s_command_line_is_its_python_line():

@@ -22,10 +22,10 @@ from mdr_events.io.files import input_file_problem, load_netcdf
 from mdr_events.limits import DEFAULT_LIMITS, Limits
 from mdr_events.contact.indenters import TabulatedProfile
 from mdr_events.validation import (PLAIN_NUMBER, SCALE_MAX, check_mapping, check_real, plain_number, real_array,
-                                   shown, shown_text)
+                                   cut_text, shown, shown_text)
 
-__all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "read_candidate", "unit_factor", "check_run_is_finite",
-           "UNDEFINED_OUT_OF_CONTACT"]
+__all__ = ["CANDIDATE_QUANTITIES", "UNITS", "Candidate", "UnnamedColumnError", "read_candidate", "unit_factor",
+           "check_run_is_finite", "UNDEFINED_OUT_OF_CONTACT"]
 
 #: Characters of the list of a file's columns shown in a message (a CSV of 100 000 columns, or one header cell of
 #: 100 000 characters, is listed by its first columns and their count, not written out whole).
@@ -39,7 +39,7 @@ def columns_listed(columns) -> str:
     text = ", ".join(names)
     if len(text) <= LISTED_CHARACTERS:
         return text or "none"
-    return f"{text[:LISTED_CHARACTERS - 3]}... ({len(names)} columns)"
+    return f"{cut_text(text, LISTED_CHARACTERS)} ({len(names)} columns)"
 
 
 #: The kinds of NumPy arrays a column of real numbers has: integers and floats (not bools, complex numbers, times).
@@ -77,9 +77,18 @@ class Candidate(NamedTuple):
     unused: tuple[str, ...] = ()  #: the candidate's columns that were not read (not named as a quantity)
 
 
-#: How a message about ``names=`` says it on the command line (``validate``, ``fit``: ``--names Q=COLUMN,...``), where
-#: there is no ``names={...}`` to write (a study file's ``names = { ... }`` is Python's).
-_ON_THE_COMMAND_LINE = "on the command line --names "
+class UnnamedColumnError(ValueError):
+    """A candidate without a column of ``time``, or of any other quantity, by its name or by ``names``: the message
+    says ``names={...}`` as Python writes it, and ``quantities`` are those missing (``("time",)``, or every quantity
+    but the time), for a caller that says how to name them in its own words (the command line's ``--names``,
+    :mod:`mdr_events.app.cli`)."""
+
+    def __init__(self, message: str, quantities: tuple[str, ...]) -> None:
+        super().__init__(message)
+        self.quantities = tuple(quantities)
+
+    def __reduce__(self):  # (pickled across processes with its quantities)
+        return type(self), (str(self), self.quantities)
 
 
 def unit_factor(quantity: str, unit: str, source: str) -> float:
@@ -315,9 +324,9 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
     Raises
     ------
     ValueError
-        Naming the source and the column: a missing time or no quantity (listing the columns found), a
-        unit that is not allowed, columns of different lengths, times that are not finite or not increasing,
-        an infinite value (with its first row; ``nan`` is a missing sample).
+        Naming the source and the column: a missing time or no quantity (:class:`UnnamedColumnError`, listing the
+        columns found), a unit that is not allowed, columns of different lengths, times that are not finite or not
+        increasing, an infinite value (with its first row; ``nan`` is a missing sample).
     """
     source = str(candidate) if isinstance(candidate, (str, os.PathLike)) else f"candidate ({type(candidate).__name__})"
     for argument, given in (("names", names), ("units", units), ("select", select)):
@@ -334,34 +343,17 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
             raise ValueError(f"{source}: {shown(quantity)} in names/units is not allowed; allowed: "
                              f"{', '.join(CANDIDATE_QUANTITIES)}")
     _check_units_have_columns(source, units, names, columns)
-    found: dict[str, np.ndarray] = {}
-    given: dict[str, tuple[np.ndarray, str, float]] = {}  # (each quantity's column as read, its unit and factor)
-    used: set[str] = set()
-    for quantity in CANDIDATE_QUANTITIES:
-        column = names.get(quantity, quantity)
-        if column not in columns:
-            if quantity in names:
-                raise ValueError(f"{source}: names[{quantity!r}]={shown(column)} is not a column; allowed: one of the "
-                                 f"columns found: {columns_listed(columns)}")
-            continue
-        if column in used:  # (one column read as two quantities, e.g. names={'normal_force': 'time'})
-            other = next(name for name in found if names.get(name, name) == column)
-            raise ValueError(f"{source}: names[{quantity!r}]={shown(column)} is the column of {other!r} too; allowed: one "
-                             "column per quantity")
-        unit = units.get(quantity, declared.get(column, CANDIDATE_QUANTITIES[quantity]))
-        given[quantity] = columns[column], unit, unit_factor(quantity, unit, source)
-        with np.errstate(over="ignore"):  # (a value beyond the doubles in SI: refused by _refuse_magnitudes, named)
-            found[quantity] = given[quantity][0] * given[quantity][2]
-        used.add(column)
+    found, given, used = _quantities_read(source, columns, names, units, declared)
     if "time" not in found:
-        raise ValueError(f"{source}: no time column; columns found: {columns_listed(columns)}; allowed: a column "
-                         f"'time' or names={{'time': <your column>}} ({_ON_THE_COMMAND_LINE}time=<your column>)")
+        raise UnnamedColumnError(f"{source}: no time column; columns found: {columns_listed(columns)}; allowed: a "
+                                 "column 'time' or names={'time': <your column>}", ("time",))
     time = found.pop("time")
     limits.check(f"{source} ({time.size} samples)", samples=time.size)  # (an array or a Dataset as a file's rows)
     if not found:
-        raise ValueError(f"{source}: none of {', '.join(q for q in CANDIDATE_QUANTITIES if q != 'time')} found; "
-                         f"columns found: {columns_listed(columns)}; allowed: name yours with names={{quantity: column}} "
-                         f"({_ON_THE_COMMAND_LINE}normal_force=<your column>,...)")
+        others = tuple(quantity for quantity in CANDIDATE_QUANTITIES if quantity != "time")
+        raise UnnamedColumnError(f"{source}: none of {', '.join(others)} found; columns found: "
+                                 f"{columns_listed(columns)}; allowed: name yours with names={{quantity: column}}",
+                                 others)
     for quantity, values in found.items():
         if values.shape != time.shape:
             raise ValueError(f"{source}: column {names.get(quantity, quantity)!r} has {values.size} values and the "
@@ -380,6 +372,37 @@ def read_candidate(candidate, names: Mapping[str, str] | None = None,
         _refuse_rows(source, names.get(quantity, quantity), values, np.isinf(values), time,
                      "finite values (nan or an empty field for a missing sample)")
     return Candidate(time, found, source, tuple(name for name in columns if name not in used))
+
+
+#: A quantity's column as read, its unit and that unit's factor to SI.
+_Given = tuple[np.ndarray, str, float]
+
+
+def _quantities_read(source: str, columns: dict[str, np.ndarray], names: dict[str, str], units: dict[str, str],
+                     declared: dict[str, str]) -> tuple[dict[str, np.ndarray], dict[str, _Given], set[str]]:
+    """The quantities found among ``columns`` (by ``names``, else by their own name) in SI units; each one's column as
+    read, its unit (``units``, else the column's ``declared`` unit, else SI) and factor to SI; the columns used. A
+    column ``names`` gives that is not there, or one named for two quantities, is refused (``ValueError``)."""
+    found: dict[str, np.ndarray] = {}
+    given: dict[str, _Given] = {}
+    used: set[str] = set()
+    for quantity in CANDIDATE_QUANTITIES:
+        column = names.get(quantity, quantity)
+        if column not in columns:
+            if quantity in names:
+                raise ValueError(f"{source}: names[{quantity!r}]={shown(column)} is not a column; allowed: one of the "
+                                 f"columns found: {columns_listed(columns)}")
+            continue
+        if column in used:  # (one column read as two quantities, e.g. names={'normal_force': 'time'})
+            other = next(name for name in found if names.get(name, name) == column)
+            raise ValueError(f"{source}: names[{quantity!r}]={shown(column)} is the column of {other!r} too; allowed: one "
+                             "column per quantity")
+        unit = units.get(quantity, declared.get(column, CANDIDATE_QUANTITIES[quantity]))
+        given[quantity] = columns[column], unit, unit_factor(quantity, unit, source)
+        with np.errstate(over="ignore"):  # (a value beyond the doubles in SI: refused by _refuse_magnitudes, named)
+            found[quantity] = given[quantity][0] * given[quantity][2]
+        used.add(column)
+    return found, given, used
 
 
 def _refuse_magnitudes(source: str, column: str, values: np.ndarray, unit: str, factor: float,

@@ -87,16 +87,19 @@ def _choice_message(argument: str, value: str, choices: str) -> str:
 
 
 #: Characters of a value a usage error shows: ``validation.SHOWN_CHARACTERS``, written here, not imported (a usage
-#: error loads no numpy; tests/test_hostile_round_twenty_nine_io.py checks that the two agree).
+#: error of a short value loads no numpy; tests/test_hostile_round_twenty_nine_io.py checks that the two agree).
 CUT_CHARACTERS = 80
 
 
 def _cut(text: str, count: int = 1) -> str:
-    """``text`` (a value as argparse shows it, or the words it did not take) cut to :data:`CUT_CHARACTERS`, with the
-    count of the words when there are several (a shell's glob of ten thousand files: 300 kB on one line)."""
+    """``text`` (a value as argparse shows it, or the words it did not take) cut to :data:`CUT_CHARACTERS`
+    (:func:`~mdr_events.validation.cut_text`, imported only to cut), with the count of the words when there are
+    several (a shell's glob of ten thousand files: 300 kB on one line)."""
     if len(text) <= CUT_CHARACTERS:
         return text
-    return text[:CUT_CHARACTERS - 3] + "..." + (f" ({count} words)" if count > 1 else "")
+    from mdr_events.validation import cut_text
+
+    return cut_text(text, CUT_CHARACTERS) + (f" ({count} words)" if count > 1 else "")
 
 
 class Parser(argparse.ArgumentParser):
@@ -466,57 +469,6 @@ def measured_motion(args: argparse.Namespace, params: Parameters, contact: Conta
     except (ValueError, TypeError) as error:
         raise UsageError(f"--alpha {shown_number(args.alpha)}: {error}") from None
     return motion, f"scenario {args.scenario}, α = {shown_number(args.alpha)}°"
-
-
-def column_options(parser: argparse.ArgumentParser, whose: str) -> None:
-    """Your column names, units and time origin (``validate`` and ``fit``)."""
-    from mdr_events.io.candidates import CANDIDATE_QUANTITIES
-
-    parser.add_argument("--names", default=None, metavar="Q=COLUMN,...",
-                        help="your column names, e.g. time=t,normal_force=Fn (quantities: "
-                             f"{', '.join(CANDIDATE_QUANTITIES)})")
-    parser.add_argument("--units", default=None, metavar="Q=UNIT,...",
-                        help="your units, e.g. time=ms,normal_force=mN,contact_area=mm2 (default SI)")
-    parser.add_argument("--time-origin", default="first_contact", metavar="ORIGIN",
-                        help=f"what the {whose} time counts from: first_contact (default), path_start, or the "
-                             f"{whose} time of first contact in s")
-
-
-def pairs(option: str, text: str | None, allowed: Sequence[str]) -> dict[str, str]:
-    """``time=t,normal_force=Fn`` -> ``{"time": "t", "normal_force": "Fn"}``; a bad item names the option."""
-    if text is None:
-        return {}
-    found: dict[str, str] = {}
-    for item in text.split(","):
-        key, equals, value = (part.strip() for part in item.partition("="))
-        if not equals or not key or not value:
-            raise UsageError(f"{option} {text!r}: {item.strip()!r} is not allowed; allowed: QUANTITY=VALUE pairs "
-                             "separated by commas, e.g. time=t,normal_force=Fn")
-        if key not in allowed:
-            raise UsageError(f"{option} {text!r}: {key!r} is not allowed; allowed: {', '.join(allowed)}")
-        if key in found:
-            raise UsageError(f"{option} {text!r}: {key!r} is given twice; allowed: each quantity once")
-        found[key] = value
-    return found
-
-
-def time_origin(text: str) -> str | float:
-    """``--time-origin``: a name of :data:`~mdr_events.analysis.validate.TIME_ORIGINS` or a finite time in s."""
-    from mdr_events.analysis.validate import TIME_ORIGINS
-
-    if text in TIME_ORIGINS:
-        return text
-    from mdr_events.validation import plain_number
-
-    try:
-        value = plain_number(text)
-    except ValueError:
-        value = math.nan
-    if not math.isfinite(value):
-        raise UsageError(f"--time-origin {text!r} is not allowed; allowed: {', '.join(TIME_ORIGINS)} or the runs' "
-                         "time of first contact in s (a finite number, plain decimal: ASCII digits 0-9, an optional "
-                         "sign, point and exponent)")
-    return value
 
 
 def check_not_overwritten(args: argparse.Namespace, out, stem: str, suffixes: Sequence[str], inputs_: Sequence[str],

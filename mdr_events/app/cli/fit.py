@@ -6,7 +6,7 @@ import argparse
 from pathlib import Path
 from typing import TYPE_CHECKING, Sequence
 
-from mdr_events.app.cli import _options
+from mdr_events.app.cli import _columns, _options
 from mdr_events.app.cli._options import UsageError
 
 if TYPE_CHECKING:
@@ -50,7 +50,7 @@ def fill(fitting: argparse.ArgumentParser) -> None:
     _options.layer_options(fitting)
     _options.adhesion_options(fitting)
     _options.limit_options(fitting)
-    _options.column_options(fitting, "measurement's")
+    _columns.column_options(fitting, "measurement's")
     fitting.add_argument("--noise", default=None, metavar="Q=SIGMA,...",
                          help="the noise's standard deviation per quantity, in the units of --units (SI where none "
                               "is given), e.g. normal_force=2 with normal_force=mN (default: estimated from the data)")
@@ -64,7 +64,7 @@ def numbers(option: str, text: str | None, allowed: Sequence[str]) -> dict[str, 
     from mdr_events.validation import PLAIN_NUMBER, plain_number
 
     found = {}
-    for key, value in _options.pairs(option, text, allowed).items():
+    for key, value in _columns.pairs(option, text, allowed).items():
         try:
             found[key] = plain_number(value)
         except ValueError:
@@ -133,7 +133,7 @@ def rate_job(args: argparse.Namespace, contact, params, motion, description: str
     except (TypeError, ValueError) as error:
         raise UsageError(f"--speeds: {error}") from None
     quantities = list(CANDIDATE_QUANTITIES)
-    units = _options.pairs("--units", args.units, quantities)
+    units = _columns.pairs("--units", args.units, quantities)
     noise = _noise(args, units)
     if set(noise) - {"normal_force"}:
         raise UsageError(f"--noise {args.noise} is not allowed with --adhesion-law rate; allowed: normal_force=SIGMA "
@@ -143,8 +143,8 @@ def rate_job(args: argparse.Namespace, contact, params, motion, description: str
         check_output_stem("stem", stem)
         return RateFitJob(tuple(args.data), tuple(Path(data) for data in args.data), stem, contact, paths,
                           f"{description} at {', '.join(map(_options.shown_number, speeds))} m/s", tuple(args.free),
-                          args.offsets, noise.get("normal_force"), _options.pairs("--names", args.names, quantities),
-                          units, _options.time_origin(args.time_origin), params.d_max, _options.limits(args),
+                          args.offsets, noise.get("normal_force"), _columns.pairs("--names", args.names, quantities),
+                          units, _columns.time_origin(args.time_origin), params.d_max, _options.limits(args),
                           provenance)
     except ValueError as error:
         raise UsageError(f"the fit of {args.data[0]} would be written as {stem}.*: {error}") from None
@@ -177,11 +177,11 @@ def job(args: argparse.Namespace):
     except ValueError as error:
         raise UsageError(f"the fit of {args.data} would be written as {stem}.*: {error}") from None
     quantities = list(CANDIDATE_QUANTITIES)
-    units = _options.pairs("--units", args.units, quantities)
+    units = _columns.pairs("--units", args.units, quantities)
     noise = _noise(args, units)  # (in the units of --units, SI where none is given)
     return FitJob(args.data, Path(args.data), stem, contact, motion, description, tuple(args.free),
-                  bounds(args.bounds), noise, _options.pairs("--names", args.names, quantities), units,
-                  _options.time_origin(args.time_origin), _options.limits(args), provenance)
+                  bounds(args.bounds), noise, _columns.pairs("--names", args.names, quantities), units,
+                  _columns.time_origin(args.time_origin), _options.limits(args), provenance)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -197,7 +197,8 @@ def run(args: argparse.Namespace) -> int:
     out = _options.output_directory(args)
     _options.check_not_overwritten(args, out, spec.stem, FIT_SUFFIXES, [args.data],
                                    f"the fit would overwrite {args.data}")
-    result, rendered = spec.compute(progress=print)
+    with _columns.names_on_the_command_line():
+        result, rendered = spec.compute(progress=print)
     written = write_rendered(rendered, out)
     print("\n".join(fit_console_summary(result.dataset, args.data, result.optimizer)))
     print(f"  written: {', '.join(str(outcome.path) for outcome in written)}")
@@ -220,7 +221,8 @@ def run_rate(args: argparse.Namespace, spec) -> int:
     exit 0 if every free value is determined, else 1."""
     out = _options.output_directory(args)
     _options.check_not_overwritten(args, out, spec.stem, (".nc",), args.data, f"the fit would overwrite {{target}}")
-    result = spec.compute()
+    with _columns.names_on_the_command_line():
+        result = spec.compute()
     written = spec.write(result, out)
     print(f"joint fit of the rate law to {len(spec.data)} measurement(s) ({spec.description}): "
           f"{result.attrs['message']}")

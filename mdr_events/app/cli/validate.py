@@ -9,7 +9,7 @@ import re
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from mdr_events.app.cli import _options
+from mdr_events.app.cli import _columns, _options
 from mdr_events.app.cli._options import UsageError
 
 if TYPE_CHECKING:
@@ -43,7 +43,7 @@ def fill(check: argparse.ArgumentParser) -> None:
     _options.limit_options(check)
     check.add_argument("--tolerance", type=float, default=1e-3,
                        help="bound on each quantity's max error relative to its range (default 1e-3)")
-    _options.column_options(check, "runs'")
+    _columns.column_options(check, "runs'")
     check.add_argument("--dx", type=float, nargs="+", default=None, metavar="M",
                        help="the spring spacing of each run (m), in the order of the runs and after them, for a "
                             "convergence study of three or more runs (default: from names such as run_dx2um.csv)")
@@ -118,9 +118,9 @@ def job(args: argparse.Namespace) -> tuple[ValidateJob, str | None]:
     except (TypeError, ValueError) as error:
         raise UsageError(f"--adhesion-law rate: {error}") from None
     _options.check_reference_layer(contact, motion, "validate")
-    names = _options.pairs("--names", args.names, list(CANDIDATE_QUANTITIES))
-    units = _options.pairs("--units", args.units, list(CANDIDATE_QUANTITIES))
-    origin, limits = _options.time_origin(args.time_origin), _options.limits(args)
+    names = _columns.pairs("--names", args.names, list(CANDIDATE_QUANTITIES))
+    units = _columns.pairs("--units", args.units, list(CANDIDATE_QUANTITIES))
+    origin, limits = _columns.time_origin(args.time_origin), _options.limits(args)
     if not (math.isfinite(args.tolerance) and 0 < args.tolerance <= 1):
         raise UsageError(f"--tolerance {args.tolerance!r} is not allowed; allowed: a number in (0, 1] (the largest "
                          "error relative to the quantity's range)")
@@ -163,4 +163,6 @@ def run(args: argparse.Namespace) -> int:
     out = _options.output_directory(args)
     for stem in spec.stems:
         _options.check_not_overwritten(args, out, stem, VALIDATION_SUFFIXES, args.runs, "{target} would overwrite a run")
-    return _print(spec.compute(progress=print), note, out)
+    with _columns.names_on_the_command_line():
+        validated = spec.compute(progress=print)
+    return _print(validated, note, out)
