@@ -4,7 +4,8 @@ storing one file of them, so that any trouble with the disk is only a missed sho
 A cache file is read in one ``try`` from opening it on (issue 32, round thirteen: a path the system refuses to look
 at, too long or below a directory without search permission, raised ``OSError`` from a check of its existence before
 the ``try``, and every derivation failed with it); one is stored through a temporary beside it, renamed into place,
-the temporary removed when the store fails (it was left behind).
+the temporary removed when the store fails (it was left behind), or is interrupted (round twenty-nine: Ctrl-C
+while a derivation was stored left a ``.relations-<key>.pickle.<random>`` in the cache directory).
 """
 
 from __future__ import annotations
@@ -64,7 +65,8 @@ def store_cached(path: Path | None, write: Callable[[IO[bytes]], None]) -> None:
     """Store a cache file atomically: ``write(stream)`` into a temporary beside ``path``, renamed to ``path``.
 
     Any ``OSError`` (no directory can be made, the disk is full or read-only, ``path`` is a directory) stores nothing
-    and removes the temporary.
+    and removes the temporary; so does anything else that ends the write (Ctrl-C, SIGTERM, an error of ``write``),
+    which then goes on.
 
     Parameters
     ----------
@@ -82,7 +84,10 @@ def store_cached(path: Path | None, write: Callable[[IO[bytes]], None]) -> None:
         with os.fdopen(handle, "wb") as stream:
             write(stream)
         os.replace(temporary, path)
+        temporary = None
     except OSError:
+        pass
+    finally:  # (also on Ctrl-C, SIGTERM or a writer's own error: issue 32, round 29, the temporary was left behind)
         if temporary is not None:
             try:
                 os.unlink(temporary)
