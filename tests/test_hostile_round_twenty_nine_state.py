@@ -11,13 +11,23 @@ from __future__ import annotations
 
 import os
 import pickle
+import threading
 
+import numpy as np
 import pytest
 
-from mdr_events.theory.cache_files import store_cached
+from mdr_events.theory.cache_files import read_cached, store_cached
+from mdr_events.theory.layer.table_store import stored_columns
 
 #: Bytes a writer puts into the cache's temporary before it is interrupted (any non-empty part of a file).
 PART_WRITTEN = b"\x80\x04partial"
+
+
+#: Seconds a read of a cache file may take before it is taken for hanging (a read of a small file takes microseconds;
+#: the FIFO's open blocked for ever).
+READ_BUDGET = 10.0
+#: A layer's table grid in ``ln(a/h)`` (any grid: the read compares the stored one with it).
+GRID = np.linspace(-3.0, 3.0, 7)
 
 
 class _WriterError(Exception):
@@ -55,3 +65,56 @@ def test_an_interrupted_store_keeps_the_previous_cache_file(tmp_path):
         store_cached(target, write)
     assert os.listdir(tmp_path) == [target.name]
     assert target.read_bytes() == b"previous"
+
+
+def _read_within_budget(path):
+    """``read_cached(path, ...)``'s result, or ``"hung"`` if it took over :data:`READ_BUDGET` (the thread left
+    blocked is woken by opening the FIFO for writing)."""
+    outcome = ["hung"]
+    reader = threading.Thread(target=lambda: outcome.__setitem__(0, read_cached(path, lambda stream: stream.read())),
+                              daemon=True)
+    reader.start()
+    reader.join(READ_BUDGET)
+    if reader.is_alive():
+        os.close(os.open(path, os.O_WRONLY | os.O_NONBLOCK))  # (releases the blocked open)
+        reader.join(READ_BUDGET)
+    return outcome[0]
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs")
+def test_a_fifo_in_a_cache_files_place_is_a_missed_shortcut(tmp_path):
+    """A FIFO in the place of a cache file (``relations-<key>.pickle``) held every derivation at its open, for ever
+    (no writer ever came): a cache file that is not a regular file is only a missed shortcut, as a directory there."""
+    path = tmp_path / "relations-0123456789abcdef.pickle"
+    os.mkfifo(path)
+    assert _read_within_budget(path) is None
+
+
+def test_a_regular_cache_file_is_still_read(tmp_path):
+    """The shortcut itself: a regular cache file is read (the non-blocking open changes nothing for it)."""
+    path = tmp_path / "relations-0123456789abcdef.pickle"
+    path.write_bytes(PART_WRITTEN)
+    assert _read_within_budget(path) == PART_WRITTEN
+
+
+def _table():
+    return {"s": GRID, "k0": np.array([1.0, 2.0]), "force": np.exp(GRID)}
+
+
+@pytest.mark.parametrize("column", [np.arange(2.0), np.full(GRID.shape, np.nan), np.full(GRID.shape, np.inf),
+                                    np.ones((GRID.size, 2)), np.arange(GRID.size)],
+                         ids=["2 values on 7 nodes", "NaN", "inf", "2-d", "integers"])
+def test_a_foreign_layer_table_with_the_grid_is_rebuilt(tmp_path, column):
+    """A table file with the right grid ``s`` but a column not of one finite float per node (a foreign or damaged
+    file) was returned as the table: a ``force`` column of 2 values on 7 nodes, or of NaN. It is rebuilt (and
+    stored), as any other damaged file."""
+    path = tmp_path / "layer-bonded-nu0.5-n2.0-0123456789abcdef.npz"
+    with open(path, "wb") as stream:
+        np.savez(stream, s=GRID, k0=np.array([1.0, 2.0]), force=column)
+    built = []
+    columns = stored_columns(path, ("s", "k0", "force"), GRID, lambda: built.append(1) or _table(), constants=("k0",))
+    assert built == [1]
+    np.testing.assert_array_equal(columns["force"], np.exp(GRID))
+    assert stored_columns(path, ("s", "k0", "force"), GRID, lambda: built.append(1) or _table(),
+                          constants=("k0",))["force"].shape == GRID.shape
+    assert built == [1]  # (the rebuilt table is read back: the check does not refuse a good one)

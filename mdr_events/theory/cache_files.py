@@ -11,6 +11,7 @@ while a derivation was stored left a ``.relations-<key>.pickle.<random>`` in the
 from __future__ import annotations
 
 import os
+import stat
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
@@ -50,12 +51,18 @@ def read_cached(path: Path | None, read: Callable[[IO[bytes]], Any]) -> Any:
     Returns
     -------
     object or None
-        What ``read`` returned; ``None`` if the file is missing, the system refuses the path, or ``read`` raised.
+        What ``read`` returned; ``None`` if the file is missing, is not a regular file (a FIFO, a device, a
+        directory), the system refuses the path, or ``read`` raised.
     """
     if path is None:
         return None
     try:
-        with open(path, "rb") as stream:
+        # (without blocking, and only a regular file: a FIFO in the cache file's place held every derivation at its
+        # open until a writer came, for ever; a device read on without end; issue 32, round twenty-nine)
+        handle = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+        with open(handle, "rb") as stream:
+            if not stat.S_ISREG(os.fstat(handle).st_mode):
+                return None
             return read(stream)
     except Exception:  # noqa: BLE001 - a missing, unreachable, damaged or foreign file is only a missed shortcut
         return None
