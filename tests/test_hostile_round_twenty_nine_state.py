@@ -9,12 +9,20 @@ what failed is below.
 
 from __future__ import annotations
 
+import glob
 import os
 import pickle
+import shutil
 import threading
+import warnings
 
 import numpy as np
 import pytest
+import xarray as xr
+
+import mdr_events as me
+from mdr_events.analysis.sweep import sweep
+from hostile_checks import one_line_naming
 
 from mdr_events.theory.cache_files import read_cached, store_cached
 from mdr_events.theory.layer.table_store import stored_columns
@@ -28,6 +36,12 @@ PART_WRITTEN = b"\x80\x04partial"
 READ_BUDGET = 10.0
 #: A layer's table grid in ``ln(a/h)`` (any grid: the read compares the stored one with it).
 GRID = np.linspace(-3.0, 3.0, 7)
+
+
+#: A sweep small enough for a quick test: four continuum runs, one per chunk (each chunk a file of each variable).
+SWEEP_GRID = {"alpha": [10.0, 20.0, 30.0, 40.0]}
+#: The runs left undone in a store cut short (the chunks from this index on).
+FIRST_UNDONE = 2
 
 
 class _WriterError(Exception):
@@ -118,3 +132,57 @@ def test_a_foreign_layer_table_with_the_grid_is_rebuilt(tmp_path, column):
     assert stored_columns(path, ("s", "k0", "force"), GRID, lambda: built.append(1) or _table(),
                           constants=("k0",))["force"].shape == GRID.shape
     assert built == [1]  # (the rebuilt table is read back: the check does not refuse a good one)
+
+
+def _sweep(store):
+    return sweep(SWEEP_GRID, "A", base=me.Parameters.paper(), scheduler="serial", chunk_size=1, store=store)
+
+
+@pytest.fixture(scope="module")
+def whole_store(tmp_path_factory):
+    """A store of the sweep written whole, and the sweep's result."""
+    store = str(tmp_path_factory.mktemp("sweep") / "whole.zarr")
+    return store, _sweep(store)
+
+
+def _copy(whole_store, tmp_path) -> str:
+    store = str(tmp_path / "cut.zarr")
+    shutil.copytree(whole_store[0], store)
+    return store
+
+
+def test_a_store_without_its_consolidated_metadata_resumes_silently(whole_store, tmp_path):
+    """A store whose layout was cut short before its last step (the consolidated metadata, ``.zmetadata``: Ctrl-C,
+    a full disk or ``ulimit -f``) resumed with xarray's RuntimeWarning of five lines printed three times, at the check,
+    the read and each chunk's write. It resumes silently, the runs left undone run, the result the whole sweep's."""
+    import zarr
+
+    store = _copy(whole_store, tmp_path)
+    os.remove(os.path.join(store, ".zmetadata"))
+    zarr.open_array(os.path.join(store, "done"), mode="r+", zarr_format=2)[FIRST_UNDONE:] = 0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        resumed = _sweep(store)
+    xr.testing.assert_identical(resumed, whole_store[1])
+
+
+def _no_variable(store: str) -> None:
+    os.remove(os.path.join(store, ".zmetadata"))
+    shutil.rmtree(os.path.join(store, "done"))
+
+
+def _chunk_cut(store: str) -> None:
+    chunk = sorted(glob.glob(os.path.join(store, "pull_off_force", "[0-9]*")))[0]
+    with open(chunk, "r+b") as stream:
+        stream.truncate(len(PART_WRITTEN))
+
+
+@pytest.mark.parametrize("damage", [_no_variable, _chunk_cut], ids=["a variable missing", "a chunk cut short"])
+def test_a_store_cut_short_is_refused_in_one_line(whole_store, tmp_path, damage):
+    """A store of this sweep whose layout or a chunk's write was cut short (a variable missing, a chunk truncated)
+    ended in ``No variable named 'done'. Variables on the dataset include [...]`` or the codec's error: the refusal
+    names the store and what is allowed (to start it afresh)."""
+    store = _copy(whole_store, tmp_path)
+    damage(store)
+    message = one_line_naming(lambda: _sweep(store), "store=")
+    assert "resume=False" in message
