@@ -76,10 +76,42 @@ def _flat_dataset(quantities: Sequence[str], values: np.ndarray, errors: Sequenc
     return xr.Dataset(data)
 
 
+def _flat_names(quantities: Sequence[str], history_samples: int | None) -> list[str]:
+    """The variables of the store's layout (:func:`_flat_dataset`), each of which a resumed store must hold."""
+    histories = [f"history_{name}" for name in HISTORY_QUANTITIES] if history_samples else []
+    return [*quantities, *histories, "failed", "error", "done"]
+
+
+def _read_back(path: str, signature: str, names: Sequence[str], runs: int) -> xr.Dataset:
+    """The store of this sweep at ``path``, read whole to resume it; a one-line ``ValueError`` if it holds another
+    sweep, or if its layout or a chunk was cut short (a variable missing, of another length, unreadable).
+
+    Read without its consolidated metadata, which the layout writes last: a store whose layout was interrupted
+    printed xarray's warning of five lines, twice, and then ``No variable named 'done'. Variables on the dataset
+    include [...]`` (issue 32, round 29)."""
+    existing = xr.open_zarr(path, zarr_format=2, consolidated=False)
+    if existing.attrs.get("sweep_signature") != signature:
+        raise ValueError(f"store={path!r} holds another sweep (other parameters, grid or options); "
+                         "allowed: this sweep's store to resume, or resume=False to start it afresh")
+    missing = [name for name in names if name not in existing.variables]
+    loaded, damage = None, f"no variable {missing[0]!r}" if missing else None
+    if not missing:
+        try:
+            loaded = existing[list(names)].load()
+        except Exception as error:  # noqa: BLE001 - whatever the reader says of a damaged chunk, in one line
+            damage = f"a chunk that cannot be read: {type(error).__name__}"
+    if loaded is not None and loaded.sizes.get("run") != runs:
+        damage = f"{loaded.sizes.get('run')} runs where the sweep has {runs}"
+    if damage is not None:
+        raise ValueError(f"store={path!r} holds this sweep cut short ({damage}; its layout or a write was "
+                         "interrupted); allowed: resume=False (--restart) to start it afresh")
+    return loaded
+
+
 def _is_sweep_store(path: str) -> bool:
     """Whether ``path`` holds a Zarr store written by a sweep (its group has a ``sweep_signature``)."""
     try:
-        return "sweep_signature" in xr.open_zarr(path, zarr_format=2).attrs
+        return "sweep_signature" in xr.open_zarr(path, zarr_format=2, consolidated=False).attrs
     except Exception:  # noqa: BLE001 - anything that is not such a store, whatever the reader says of it
         return False
 
@@ -131,11 +163,7 @@ class Store:
                 raise ValueError(f"store={self.path!r} exists and is not a sweep's store; allowed: a new path, an empty "
                                  "directory or a sweep's store (nothing else is overwritten)")
             if resume and is_store:
-                existing = xr.open_zarr(self.path, zarr_format=2)
-                if existing.attrs.get("sweep_signature") != signature:
-                    raise ValueError(f"store={self.path!r} holds another sweep (other parameters, grid or options); "
-                                     "allowed: this sweep's store to resume, or resume=False to start it afresh")
-                self.existing = existing.load()
+                self.existing = _read_back(self.path, signature, _flat_names(self.quantities, history_samples), runs)
                 return
             self._lay_out(signature, runs, chunk, history_samples)
             self.existing = None
@@ -170,4 +198,5 @@ class Store:
         """Write a chunk's runs into their region, marked done."""
         part = _flat_dataset(self.quantities, result.values, result.errors, np.ones(len(result.errors), bool),
                              result.histories)
-        part.to_zarr(self.path, region={"run": slice(start, start + len(result.errors))}, zarr_format=2)
+        part.to_zarr(self.path, region={"run": slice(start, start + len(result.errors))}, zarr_format=2,
+                     consolidated=False)  # (the layout's metadata, consolidated or not if it was cut short: as it is)

@@ -4,12 +4,14 @@ storing one file of them, so that any trouble with the disk is only a missed sho
 A cache file is read in one ``try`` from opening it on (issue 32, round thirteen: a path the system refuses to look
 at, too long or below a directory without search permission, raised ``OSError`` from a check of its existence before
 the ``try``, and every derivation failed with it); one is stored through a temporary beside it, renamed into place,
-the temporary removed when the store fails (it was left behind).
+the temporary removed when the store fails (it was left behind), or is interrupted (round twenty-nine: Ctrl-C
+while a derivation was stored left a ``.relations-<key>.pickle.<random>`` in the cache directory).
 """
 
 from __future__ import annotations
 
 import os
+import stat
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
@@ -49,12 +51,18 @@ def read_cached(path: Path | None, read: Callable[[IO[bytes]], Any]) -> Any:
     Returns
     -------
     object or None
-        What ``read`` returned; ``None`` if the file is missing, the system refuses the path, or ``read`` raised.
+        What ``read`` returned; ``None`` if the file is missing, is not a regular file (a FIFO, a device, a
+        directory), the system refuses the path, or ``read`` raised.
     """
     if path is None:
         return None
     try:
-        with open(path, "rb") as stream:
+        # (without blocking, and only a regular file: a FIFO in the cache file's place held every derivation at its
+        # open until a writer came, for ever; a device read on without end; issue 32, round twenty-nine)
+        handle = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+        with open(handle, "rb") as stream:
+            if not stat.S_ISREG(os.fstat(handle).st_mode):
+                return None
             return read(stream)
     except Exception:  # noqa: BLE001 - a missing, unreachable, damaged or foreign file is only a missed shortcut
         return None
@@ -64,7 +72,8 @@ def store_cached(path: Path | None, write: Callable[[IO[bytes]], None]) -> None:
     """Store a cache file atomically: ``write(stream)`` into a temporary beside ``path``, renamed to ``path``.
 
     Any ``OSError`` (no directory can be made, the disk is full or read-only, ``path`` is a directory) stores nothing
-    and removes the temporary.
+    and removes the temporary; so does anything else that ends the write (Ctrl-C, SIGTERM, an error of ``write``),
+    which then goes on.
 
     Parameters
     ----------
@@ -82,7 +91,10 @@ def store_cached(path: Path | None, write: Callable[[IO[bytes]], None]) -> None:
         with os.fdopen(handle, "wb") as stream:
             write(stream)
         os.replace(temporary, path)
+        temporary = None
     except OSError:
+        pass
+    finally:  # (also on Ctrl-C, SIGTERM or a writer's own error: issue 32, round 29, the temporary was left behind)
         if temporary is not None:
             try:
                 os.unlink(temporary)

@@ -55,9 +55,11 @@ def table_grid(lowest: float, highest: float, step: float) -> np.ndarray:
 
 
 def stored_columns(path: Path | None, names: tuple[str, ...], grid: np.ndarray,
-                   build: Callable[[], dict[str, np.ndarray]]) -> dict[str, np.ndarray]:
-    """A table's columns ``names`` (``s``, the grid, among them), read from ``path`` if it holds them on ``grid``, else
-    ``build()`` and stored there atomically (any trouble on the disk is only a missed shortcut).
+                   build: Callable[[], dict[str, np.ndarray]],
+                   constants: tuple[str, ...] = ()) -> dict[str, np.ndarray]:
+    """A table's columns ``names`` (``s``, the grid, among them), read from ``path`` if it holds them on ``grid`` (each
+    column finite floats, one per node but ``constants``), else ``build()`` and stored there atomically (any trouble on
+    the disk, a damaged or foreign file, is only a missed shortcut).
 
     Parameters
     ----------
@@ -69,6 +71,8 @@ def stored_columns(path: Path | None, names: tuple[str, ...], grid: np.ndarray,
         The grid the stored table must have.
     build : callable
         Computes the columns.
+    constants : tuple of str, optional
+        The columns among ``names`` that are not one value per node (the kernel's values at ``a/h = 0``).
 
     Returns
     -------
@@ -78,7 +82,12 @@ def stored_columns(path: Path | None, names: tuple[str, ...], grid: np.ndarray,
     def read(stream) -> dict[str, np.ndarray] | None:
         with np.load(stream, allow_pickle=False) as stored:
             columns = {name: stored[name] for name in names}
-        return columns if np.array_equal(columns["s"], grid) else None
+        whole = all(is_column(column, name in constants) for name, column in columns.items())
+        return columns if whole and np.array_equal(columns["s"], grid) else None
+
+    def is_column(column: np.ndarray, constant: bool) -> bool:  # (a foreign file's 2 values on 135 nodes, NaN: read)
+        return (column.dtype == np.float64 and (constant or column.shape == grid.shape)
+                and bool(np.isfinite(column).all()))
 
     columns = read_cached(path, read)  # (a damaged or foreign file, or one the system refuses: rebuilt)
     if columns is None:

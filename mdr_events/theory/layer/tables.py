@@ -89,7 +89,8 @@ def _stored_table(nu: float, base: LayerBase, exponent: float) -> dict[str, np.n
     """The table's columns, read from the disk cache if there, else built (and stored: any trouble is only a missed
     shortcut)."""
     path = table_cache_path(nu, base, exponent)
-    return stored_columns(path, ("s", "k0", *_COLUMNS), _table_grid(), lambda: _build_table(nu, base, exponent))
+    return stored_columns(path, ("s", "k0", *_COLUMNS), _table_grid(), lambda: _build_table(nu, base, exponent),
+                          constants=("k0",))
 
 
 @dataclass(frozen=True)

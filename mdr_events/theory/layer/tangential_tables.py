@@ -75,7 +75,8 @@ def _build_table(nu: float) -> dict[str, np.ndarray]:
 def _stored_table(nu: float) -> dict[str, np.ndarray]:
     """The table's columns from the disk cache if there, else built and stored (trouble: only a missed shortcut)."""
     path = tangential_table_cache_path(nu)
-    return stored_columns(path, ("s", "k0", *_COLUMNS), _table_grid(), lambda: _build_table(nu))
+    return stored_columns(path, ("s", "k0", *_COLUMNS), _table_grid(), lambda: _build_table(nu),
+                          constants=("k0",))
 
 
 @dataclass(frozen=True)
