@@ -22,7 +22,9 @@ verb               job                              library
 
 A job that reads measured runs (:class:`ValidateJob`, :class:`FitJob`) computes first (``compute``: everything read
 and checked, the files rendered) and writes after (``write``), so that a front end can read every input before it
-writes anything; ``run`` does both.
+writes anything; ``run`` does both. A job's ``plans`` are its files planned, not written
+(:class:`~mdr_events.app.result_files.PlannedFile`): a study commits every job's at once
+(:func:`~mdr_events.app.result_files.commit_all`), so that its files are replaced together or not at all.
 """
 
 from __future__ import annotations
@@ -43,7 +45,7 @@ if TYPE_CHECKING:
     from mdr_events.analysis.executors import Engine
     from mdr_events.analysis.fit import FitResult
     from mdr_events.analysis.sweep import SweepOutput
-    from mdr_events.app.result_files import FileOutcome
+    from mdr_events.app.result_files import FileOutcome, PlannedFile
     from mdr_events.contact import Contact
     from mdr_events.limits import Limits
     from mdr_events.models.methods import Method
@@ -126,26 +128,38 @@ class PhaseJob:
         result = angles(self.contact, list(self.speeds), d_max=self.d_max)
         return stamp(result, self.contact.parameters(self.d_max, self.v), **self.contact.to_attrs(), **self.provenance)
 
-    def run(self, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
-        """Compute the diagram and write its files into ``out``: of the contact's layer where it has one (its slip
-        onset is the layer's, and the paper's speed is stamped, as :func:`~mdr_events.phase_diagram` of a contact
-        does); the half-space's of the flat record with the study's ``v`` (a study's ``[layer]`` had been dropped
-        here, and the half-space's diagram written)."""
-        from mdr_events.app.result_files import FileOutcome, FileStatus, write_phase_diagram
-        from mdr_events.app.heartbeat import heartbeat
-        from mdr_events.io.files import write_netcdf
+    def compute(self) -> xr.Dataset:
+        """The diagram: of the contact's layer where it has one (its slip onset is the layer's, and the paper's speed
+        is stamped, as :func:`~mdr_events.phase_diagram` of a contact does); the half-space's of the flat record with
+        the study's ``v`` (a study's ``[layer]`` had been dropped here, and the half-space's diagram written); under
+        the rate law its angles against the speed (:meth:`compute_at_speeds`)."""
+        from mdr_events.app.result_files import phase_diagram_with
         from mdr_events.theory.job import on_layer
 
+        if self.speeds is not None:
+            return self.compute_at_speeds()
+        if on_layer(self.contact):
+            return phase_diagram_with(self.contact, self.scenario, dict(self.provenance), d_max=self.d_max)
+        return phase_diagram_with(self.contact.parameters(self.d_max, self.v), self.scenario, dict(self.provenance),
+                                  profile=self.contact.profile,
+                                  friction=dataclasses.replace(self.contact.friction, tau0=None))
+
+    def plans(self, dataset: xr.Dataset, out: FilePath) -> list[PlannedFile]:
+        """The computed diagram's files in ``out``, planned (:func:`~mdr_events.app.result_files.commit` writes
+        them): ``<stem>.nc`` and ``<stem>.png``; under the rate law ``<stem>.nc`` alone."""
+        from mdr_events.app.result_files import netcdf_plan, phase_diagram_plans
+
+        if self.speeds is not None:
+            return [netcdf_plan(dataset, FilePath(out) / f"{self.stem}.nc")]
+        return phase_diagram_plans(dataset, out, self.stem)
+
+    def run(self, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
+        """Compute the diagram and write its files into ``out``, together."""
+        from mdr_events.app.heartbeat import heartbeat
+        from mdr_events.app.result_files import commit
+
         with heartbeat(progress, f"phase-diagram (scenario {self.scenario})"):
-            if self.speeds is not None:  # (the rate law: its angles against the speed, as a labelled result)
-                return [FileOutcome(write_netcdf(self.compute_at_speeds(), FilePath(out) / f"{self.stem}.nc"),
-                                    FileStatus.WRITTEN)]
-            if on_layer(self.contact):
-                return write_phase_diagram(self.contact, self.scenario, out, self.stem, attrs=dict(self.provenance),
-                                           d_max=self.d_max)
-            return write_phase_diagram(self.contact.parameters(self.d_max, self.v), self.scenario, out, self.stem,
-                                       attrs=dict(self.provenance), profile=self.contact.profile,
-                                       friction=dataclasses.replace(self.contact.friction, tau0=None))
+            return commit(self.plans(self.compute(), out))
 
 
 @dataclass(frozen=True)
@@ -179,11 +193,17 @@ class SimulateJob:
         dataset.attrs.update(self.provenance)
         return dataset
 
-    def write(self, dataset: xr.Dataset, out: FilePath) -> list[FileOutcome]:
-        """Write the simulation into ``out``."""
-        from mdr_events.app.result_files import write_simulation
+    def plans(self, dataset: xr.Dataset, out: FilePath) -> list[PlannedFile]:
+        """The simulation's files in ``out``, planned (:func:`~mdr_events.app.result_files.simulation_plans`)."""
+        from mdr_events.app.result_files import simulation_plans
 
-        return write_simulation(dataset, out, self.stem)
+        return simulation_plans(dataset, out, self.stem)
+
+    def write(self, dataset: xr.Dataset, out: FilePath) -> list[FileOutcome]:
+        """Write the simulation into ``out``, its files together."""
+        from mdr_events.app.result_files import commit
+
+        return commit(self.plans(dataset, out))
 
     def run(self, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
         """Simulate and write (``progress`` told that it still runs, :func:`~mdr_events.app.heartbeat.heartbeat`)."""
@@ -488,12 +508,17 @@ class RateFitJob:
             return []
         return [index for index, value in enumerate(result["misfit"].values) if not value <= MISFIT_RMS]
 
+    def plans(self, result: xr.Dataset, out: FilePath) -> list[PlannedFile]:
+        """``<stem>.nc`` in ``out``, planned."""
+        from mdr_events.app.result_files import netcdf_plan
+
+        return [netcdf_plan(result, FilePath(out) / f"{self.stem}.nc")]
+
     def write(self, result: xr.Dataset, out: FilePath) -> list[FileOutcome]:
         """Write ``<stem>.nc`` into ``out``."""
-        from mdr_events.app.result_files import FileOutcome, FileStatus
-        from mdr_events.io.files import write_netcdf
+        from mdr_events.app.result_files import commit
 
-        return [FileOutcome(write_netcdf(result, FilePath(out) / f"{self.stem}.nc"), FileStatus.WRITTEN)]
+        return commit(self.plans(result, out))
 
     def run(self, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
         """Fit and write."""
@@ -554,14 +579,19 @@ class SweepJob:
         result.attrs.update(self.provenance)
         return result
 
-    def write(self, result: xr.Dataset, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
-        """Say how many runs failed and write ``<stem>.nc`` into ``out``; the store and the file written."""
-        from mdr_events.app.result_files import FileOutcome, FileStatus
-        from mdr_events.io.files import write_netcdf
+    def plans(self, result: xr.Dataset, out: FilePath, progress: Progress = _quiet) -> list[PlannedFile | FileOutcome]:
+        """Say how many runs failed; the store (written as the sweep ran, chunk by chunk: what ``resume`` continues)
+        and ``<stem>.nc`` in ``out``, planned."""
+        from mdr_events.app.result_files import FileOutcome, FileStatus, netcdf_plan
 
         progress(f"sweep: {result.attrs['runs']} runs, {result.attrs['failed_runs']} failed")
-        return [FileOutcome(self.store, FileStatus.WRITTEN),
-                FileOutcome(write_netcdf(result, out / f"{self.stem}.nc"), FileStatus.WRITTEN)]
+        return [FileOutcome(self.store, FileStatus.WRITTEN), netcdf_plan(result, out / f"{self.stem}.nc")]
+
+    def write(self, result: xr.Dataset, out: FilePath, progress: Progress = _quiet) -> list[FileOutcome]:
+        """Say how many runs failed and write ``<stem>.nc`` into ``out``; the store and the file written."""
+        from mdr_events.app.result_files import commit_all
+
+        return commit_all(self.plans(result, out, progress))
 
     def run(self, out: FilePath, progress: Progress = _quiet, resume: bool = False) -> list[FileOutcome]:
         """Run the sweep and write its result."""
@@ -628,21 +658,21 @@ class LammpsCheckJob:
         return render_validation(report, self.stem)
 
     @staticmethod
+    def plans(rendered: RenderedReport, out: FilePath) -> list[PlannedFile]:
+        """The report's three files and the deck in ``out``, planned."""
+        from mdr_events.app.result_files import bytes_plan
+        from mdr_events.app.validation_files import rendered_plans
+
+        deck = rendered.report.attrs["lammps_input_deck"]
+        return [*rendered_plans(rendered, out),
+                bytes_plan(FilePath(out) / f"{rendered.stem}{DECK_SUFFIX}", deck.encode("utf-8"))]
+
+    @staticmethod
     def write(rendered: RenderedReport, out: FilePath) -> list[FilePath]:
         """Write the report's three files and the deck into ``out``, together or not at all."""
-        from mdr_events.io.files import PendingFile, atomic_write_all, netcdf_writer
-        from mdr_events.io.paths import check_output_stem, prepare_output_directory
+        from mdr_events.app.result_files import commit
 
-        prepare_output_directory(out, "out")
-        check_output_stem("stem", rendered.stem)
-        nc, md, png = rendered.paths(out)
-        deck = rendered.report.attrs["lammps_input_deck"]
-        return atomic_write_all([
-            PendingFile(nc, netcdf_writer(rendered.report), ".nc"),
-            PendingFile(md, lambda temporary: FilePath(temporary).write_text(rendered.markdown, encoding="utf-8"), ".md"),
-            PendingFile(png, lambda temporary: FilePath(temporary).write_bytes(rendered.png), ".png"),
-            PendingFile(FilePath(out) / f"{rendered.stem}{DECK_SUFFIX}",
-                        lambda temporary: FilePath(temporary).write_text(deck, encoding="utf-8"), DECK_SUFFIX)])
+        return [outcome.path for outcome in commit(LammpsCheckJob.plans(rendered, out))]
 
     def run(self, out: FilePath, progress: Progress = _quiet) -> list[FilePath]:
         """Compute and write."""

@@ -3,6 +3,8 @@
 Shared by the CLI, study files and ``mdr-events reproduce``; every file is written to a temporary
 name and renamed into place, the files of one run together (:func:`mdr_events.io.files.atomic_write_all`: an
 interrupt or an error leaves the previous run's files as they were, never a new ``.nc`` beside an old ``.png``).
+A study plans every job's files (:class:`PlannedFile`: ``*_plans``, :func:`netcdf_plan`, :func:`bytes_plan`) and
+writes them all in one commit (:func:`commit_all`).
 
 With ``keep_agreeing=True`` a file whose content already agrees with what would be written is left
 as it is (:attr:`FileStatus.KEPT`): a dataset each of whose quantities agrees within the accuracy of how it is
@@ -44,8 +46,10 @@ from mdr_events.plotting.figures import figure_png, plot_phase_diagram, plot_sim
 from mdr_events.theory.phase import phase_diagram
 from mdr_events.validation import shown
 
-__all__ = ["FileStatus", "FileOutcome", "write_dataset", "write_figure", "write_text", "write_phase_diagram",
-           "write_phase_diagram_dataset", "write_simulation", "event_log_csv", "event_logs_agree", "describe_outcomes"]
+__all__ = ["FileStatus", "FileOutcome", "PlannedFile", "commit", "commit_all", "netcdf_plan", "bytes_plan",
+           "write_dataset", "write_figure", "write_text", "write_phase_diagram", "phase_diagram_with",
+           "write_phase_diagram_dataset", "write_simulation", "simulation_plans", "phase_diagram_plans",
+           "event_log_csv", "event_logs_agree", "describe_outcomes"]
 
 
 class FileStatus(enum.Enum):
@@ -74,25 +78,47 @@ def _agreeing_file(dataset: xr.Dataset, target: Path, keep_agreeing: bool) -> xr
     return None
 
 
-#: A file of a run as planned: its path, and what writes it (``None``: kept as it is).
-Planned = tuple[Path, PendingFile | None]
+class PlannedFile(NamedTuple):
+    """A file of a run as planned, nothing written yet: its path, and what writes it (``None``: the file on disk
+    agrees and is kept as it is)."""
+
+    path: Path
+    pending: PendingFile | None
 
 
-def _dataset_plan(dataset: xr.Dataset, target: Path, existing: xr.Dataset | None) -> Planned:
-    return target, None if existing is not None else PendingFile(target, netcdf_writer(dataset), ".nc")
+def _dataset_plan(dataset: xr.Dataset, target: Path, existing: xr.Dataset | None) -> PlannedFile:
+    return PlannedFile(target, None if existing is not None else PendingFile(target, netcdf_writer(dataset), ".nc"))
 
 
-def _bytes_plan(path: Path, data: bytes, same: Callable[[bytes, bytes], bool], keep_agreeing: bool) -> Planned:
-    if keep_agreeing and path.exists() and same(path.read_bytes(), data):
-        return path, None
-    return path, PendingFile(path, lambda temporary: Path(temporary).write_bytes(data), path.suffix)
+def netcdf_plan(dataset: xr.Dataset, path: str | os.PathLike) -> PlannedFile:
+    """``dataset`` planned as the netCDF file ``path`` (always written), for :func:`commit`."""
+    return _dataset_plan(dataset, check_file_path("path", path), None)
 
 
-def _commit(plans: list[Planned]) -> list[FileOutcome]:
-    """Write the planned files of one run together (:func:`~mdr_events.io.files.atomic_write_all`: replaced
-    together or not at all) and say what happened to each."""
+def bytes_plan(path: Path, data: bytes, same: Callable[[bytes, bytes], bool] | None = None,
+               keep_agreeing: bool = False) -> PlannedFile:
+    """``data`` planned as the file ``path``; kept if ``keep_agreeing`` and ``same(on disk, data)``."""
+    if keep_agreeing and same is not None and path.exists() and same(path.read_bytes(), data):
+        return PlannedFile(path, None)
+    return PlannedFile(path, PendingFile(path, lambda temporary: Path(temporary).write_bytes(data), path.suffix))
+
+
+_bytes_plan = bytes_plan  # (its old name, which a test interrupts)
+
+
+def commit(plans: list[PlannedFile]) -> list[FileOutcome]:
+    """Write the planned files of one run (a command's, a whole study's) together
+    (:func:`~mdr_events.io.files.atomic_write_all`: replaced together or not at all) and say what happened to each;
+    each file kept because it agrees stays as it is."""
     atomic_write_all([pending for _, pending in plans if pending is not None])
     return [FileOutcome(path, FileStatus.KEPT if pending is None else FileStatus.WRITTEN) for path, pending in plans]
+
+
+def commit_all(entries: list[PlannedFile | FileOutcome]) -> list[FileOutcome]:
+    """:func:`commit` the planned files among ``entries`` (in one commit) and say what became of every entry, in
+    order; an entry already a :class:`FileOutcome` (a sweep's store, written as it ran) is said as it is."""
+    committed = iter(commit([entry for entry in entries if isinstance(entry, PlannedFile)]))
+    return [next(committed) if isinstance(entry, PlannedFile) else entry for entry in entries]
 
 
 def write_dataset(dataset: xr.Dataset, path: str | os.PathLike,
@@ -106,7 +132,7 @@ def write_dataset(dataset: xr.Dataset, path: str | os.PathLike,
                         "xarray.Dataset")
     target = check_file_path("path", path)
     existing = _agreeing_file(dataset, target, keep_agreeing)
-    return (dataset if existing is None else existing), _commit([_dataset_plan(dataset, target, existing)])[0]
+    return (dataset if existing is None else existing), commit([_dataset_plan(dataset, target, existing)])[0]
 
 
 def _same_pixels(old: bytes, new: bytes) -> bool:
@@ -120,7 +146,7 @@ def _same_pixels(old: bytes, new: bytes) -> bool:
 
 def write_figure(figure, path: str | os.PathLike, keep_agreeing: bool = False) -> FileOutcome:
     """Write a figure as PNG (:func:`mdr_events.plotting.figure_png`); kept if its pixels are unchanged."""
-    return _commit([_bytes_plan(Path(path), figure_png(figure), _same_pixels, keep_agreeing)])[0]
+    return commit([_bytes_plan(Path(path), figure_png(figure), _same_pixels, keep_agreeing)])[0]
 
 
 def _same_rounded_text(old: bytes, new: bytes) -> bool:
@@ -134,7 +160,7 @@ def write_text(text: str, path: str | os.PathLike, keep_agreeing: bool = False, 
     """Write a text file (UTF-8); kept if it holds the same text (``rounded``: the same words, and its numbers
     within one unit of their last digit, :func:`~mdr_events.io.agreement.rounded_text_differences`)."""
     same = _same_rounded_text if rounded else (lambda old, new: old == new)
-    return _commit([_bytes_plan(Path(path), text.encode(), same, keep_agreeing)])[0]
+    return commit([_bytes_plan(Path(path), text.encode(), same, keep_agreeing)])[0]
 
 
 def _check_distinct_cases(dataset: xr.Dataset) -> None:
@@ -160,22 +186,37 @@ def write_phase_diagram(params: Parameters | Contact, scenario: str, out: str | 
     """
     directory = prepare_output_directory(out, "out")
     check_output_stem("stem", stem)
+    return write_phase_diagram_dataset(phase_diagram_with(params, scenario, attrs, **diagram), directory, stem,
+                                       keep_agreeing)
+
+
+def phase_diagram_with(params: Parameters | Contact, scenario: str, attrs: dict[str, str] | None = None,
+                       **diagram: Profile | FrictionLaw | float | None) -> xr.Dataset:
+    """The phase diagram :func:`write_phase_diagram` writes (:func:`~mdr_events.phase_diagram` with ``diagram``),
+    with the extra ``attrs``; nothing written."""
     dataset = phase_diagram(params, scenario=scenario, **diagram)
     dataset.attrs.update(attrs or {})
-    return write_phase_diagram_dataset(dataset, directory, stem, keep_agreeing)
+    return dataset
 
 
 def write_phase_diagram_dataset(dataset: xr.Dataset, out: str | os.PathLike, stem: str,
                                 keep_agreeing: bool = False) -> list[FileOutcome]:
     """Write a computed phase diagram (:func:`mdr_events.theory.phase.phase_diagram`) as ``stem.nc`` and its figure
     as ``stem.png``, both together; the directory and the stem are checked and the figure drawn first."""
+    return commit(phase_diagram_plans(dataset, out, stem, keep_agreeing))
+
+
+def phase_diagram_plans(dataset: xr.Dataset, out: str | os.PathLike, stem: str,
+                        keep_agreeing: bool = False) -> list[PlannedFile]:
+    """The files :func:`write_phase_diagram_dataset` writes, planned (the directory and stem checked, the figure
+    drawn), for :func:`commit`."""
     directory = prepare_output_directory(out, "out")
     check_output_stem("stem", stem)
     nc = directory / f"{stem}.nc"
     existing = _agreeing_file(dataset, nc, keep_agreeing)
     png = figure_png(plot_phase_diagram(dataset if existing is None else existing).figure)
-    return _commit([_dataset_plan(dataset, nc, existing),
-                    _bytes_plan(directory / f"{stem}.png", png, _same_pixels, keep_agreeing)])
+    return [_dataset_plan(dataset, nc, existing), _bytes_plan(directory / f"{stem}.png", png, _same_pixels,
+                                                              keep_agreeing)]
 
 
 def write_simulation(dataset: xr.Dataset, out: str | os.PathLike, stem: str, overlay: xr.Dataset | None = None,
@@ -196,6 +237,12 @@ def write_simulation(dataset: xr.Dataset, out: str | os.PathLike, stem: str, ove
     ValueError
         If ``out`` cannot take the files, ``stem`` is not a plain file-name stem, or the case labels repeat.
     """
+    return commit(simulation_plans(dataset, out, stem, overlay, keep_agreeing, plot))
+
+
+def simulation_plans(dataset: xr.Dataset, out: str | os.PathLike, stem: str, overlay: xr.Dataset | None = None,
+                     keep_agreeing: bool = False, plot: Callable[..., Figure] = plot_simulation) -> list[PlannedFile]:
+    """The files :func:`write_simulation` writes, planned (everything checked and drawn), for :func:`commit`."""
     if not isinstance(dataset, xr.Dataset):
         raise TypeError(f"dataset={shown(dataset)} ({type(dataset).__name__}) is not allowed; allowed: an "
                         "xarray.Dataset (a simulation)")
@@ -212,7 +259,7 @@ def write_simulation(dataset: xr.Dataset, out: str | os.PathLike, stem: str, ove
     if events is not None:
         plans.append(_bytes_plan(directory / f"{stem}_events.csv", events.encode(), event_logs_agree(on_disk),
                                  keep_agreeing))
-    return _commit(plans)
+    return plans
 
 
 #: The first column of the event log CSV for each case dimension: its header and how a label is written.

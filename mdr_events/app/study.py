@@ -146,7 +146,7 @@ from mdr_events.dem.mapping import LammpsModel
 from mdr_events.validation import as_float, check_real, shown, shown_text
 
 if TYPE_CHECKING:
-    from mdr_events.app.result_files import FileOutcome
+    from mdr_events.app.result_files import FileOutcome, PlannedFile
 
 __all__ = ["Study", "StudyOutcomes", "load_study", "run_study", "run_sweep", "sweep_store", "StudyError",
            "load_parameters_file", "load_path_file", "SCHEMA", "REQUIRED_TABLES", "MAX_TOML_BYTES"]
@@ -668,8 +668,9 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
     reports as .nc, .md and .png); returns the files and the runs' verdicts (:class:`StudyOutcomes`).
 
     The output directory (``[output] directory``: a directory that exists or can be created, writable) and
-    the files' stem are checked before anything is computed, and the ``[validate]`` runs and the ``[fit]``
-    measurement are read before anything is written: a run that cannot be read writes nothing.
+    the files' stem are checked before anything is computed; every job's files are planned, then written in one
+    commit (:func:`~mdr_events.app.result_files.commit_all`; held in memory until then): an error or interrupt in
+    any job leaves the previous run's files as they were (but the ``[sweep]`` store, written as the sweep runs).
 
     Parameters
     ----------
@@ -691,10 +692,10 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
     StudyError
         Naming the study file, the table and the key of what cannot be run.
     """
-    from mdr_events.app.result_files import FileOutcome, FileStatus
-    from mdr_events.app.validation_files import write_rendered
+    from mdr_events.app.result_files import commit_all
+    from mdr_events.app.validation_files import rendered_plans
 
-    out, written = _prepared(study), StudyOutcomes()
+    out, verdicts = _prepared(study), {}
     validated = None if study.validation is None else _computed(study, "validate", study.validation.compute)
     for run, _ in validated.reports if validated else ():  # said once every run was read: no line before an error
         progress(f"validate: {run}")
@@ -703,35 +704,34 @@ def run_study(study: Study, progress: Callable[[str], None] = print) -> StudyOut
     if fitted is not None:
         progress(f"fit: {', '.join(study.fit.data) if isinstance(study.fit, RateFitJob) else study.fit.data} (free: "
                  f"{', '.join(study.fit.free)})")  # once it ran
+    planned: list[PlannedFile | FileOutcome] = []  # every job's files, planned: none written before the end
     if study.simulation is not None:
-        dataset = _computed(study, "simulation", study.simulation.compute)
-        motion = study.simulation.motion
+        dataset, motion = _computed(study, "simulation", study.simulation.compute), study.simulation.motion
         progress(f"simulation: scenario {motion.name if isinstance(motion, Scenario) else 'custom path'}, method "
                  f"{study.simulation.method.name}")
-        written += study.simulation.write(dataset, out)
+        planned += study.simulation.plans(dataset, out)
     for job in study.phase_diagrams:
         progress(f"phase diagram: scenario {job.scenario}")
-        written += job.run(out)
+        planned += job.plans(job.compute(), out)
     for run, rendered in validated.reports if validated else ():
-        written += write_rendered(rendered, out)
-        written.verdicts[run] = ValidationReport.from_dataset(rendered.report).verdict
-        progress(f"validate: {run}: {written.verdicts[run]}")
+        planned += rendered_plans(rendered, out)
+        verdicts[run] = ValidationReport.from_dataset(rendered.report).verdict
+        progress(f"validate: {run}: {verdicts[run]}")
     if study.sweep is not None:
-        written += run_sweep(study, progress)
+        planned += study.sweep.plans(_computed(study, "sweep", lambda: study.sweep.compute(progress)), out, progress)
     if study.lammps is not None:
-        written += [FileOutcome(path, FileStatus.WRITTEN) for path in study.lammps.write(checked, out)]
-        rendered = checked
-        written.verdicts["lammps_check"] = ValidationReport.from_dataset(rendered.report).verdict
-        progress(f"lammps_check: LAMMPS {study.lammps.normal} + {study.lammps.tangential}: "
-                 f"{written.verdicts['lammps_check']}")
+        planned += study.lammps.plans(checked, out)
+        verdicts["lammps_check"] = ValidationReport.from_dataset(checked.report).verdict
+        progress(f"lammps_check: LAMMPS {study.lammps.normal} + {study.lammps.tangential}: {verdicts['lammps_check']}")
     if fitted is not None and isinstance(study.fit, RateFitJob):
         label = f"fit {study.fit.data[0]}"
-        written += study.fit.write(fitted, out)
-        written.verdicts[label] = Verdict.PASS if RateFitJob.determined(fitted) else Verdict.FAIL
-        progress(f"{label}: {written.verdicts[label]}")
+        planned += study.fit.plans(fitted, out)
+        verdicts[label] = Verdict.PASS if RateFitJob.determined(fitted) else Verdict.FAIL
+        progress(f"{label}: {verdicts[label]}")
     elif fitted is not None:
         label, rendered = f"fit {study.fit.data}", fitted[1]
-        written += write_rendered(rendered, out)
-        written.verdicts[label] = Verdict.PASS if FitResult.from_dataset(rendered.report).identifiable else Verdict.FAIL
+        planned += rendered_plans(rendered, out)
+        verdicts[label] = Verdict.PASS if FitResult.from_dataset(rendered.report).identifiable else Verdict.FAIL
         progress(f"{label}: {rendered.report.attrs['verdict']}")
-    return written
+    return StudyOutcomes(commit_all(planned), verdicts)  # one commit: the study's files replaced together or not at all
+

@@ -6,9 +6,10 @@
 - ``<stem>.png``: :func:`mdr_events.plotting.validation.plot_validation`.
 
 Everything is computed first (:func:`render_validation`: the text and the PNG bytes), then written
-(:func:`write_rendered`), each file to a temporary name renamed into place
-(:func:`mdr_events.io.files.atomic_write`): a run that fails while being computed writes nothing, and no
-file is ever seen half-written. Used by ``mdr-events validate`` and by the ``[validate]`` table of study files.
+(:func:`write_rendered`; a study plans them, :func:`rendered_plans`, and writes them with its other files), each
+file to a temporary name renamed into place, together (:func:`mdr_events.io.files.atomic_write_all`): a run that
+fails while being computed writes nothing, and no file is ever seen half-written. Used by ``mdr-events validate``
+and by the ``[validate]`` table of study files.
 """
 
 from __future__ import annotations
@@ -23,15 +24,14 @@ import xarray as xr
 
 from mdr_events.analysis.reports import ValidationReport, Verdict
 from mdr_events.analysis.validate import LEFT_OUT_CODES
-from mdr_events.app.result_files import FileOutcome, FileStatus
-from mdr_events.io.files import (PendingFile, atomic_write_all, check_output_stem, netcdf_writer,
-                                 prepare_output_directory)
+from mdr_events.app.result_files import FileOutcome, PlannedFile, bytes_plan, commit, netcdf_plan
+from mdr_events.io.files import check_output_stem, prepare_output_directory
 from mdr_events.parameters import PARAMETER_UNITS
 from mdr_events.plotting.figures import figure_png
 from mdr_events.plotting.validation import plot_validation
 
-__all__ = ["RenderedReport", "VALIDATION_SUFFIXES", "render_validation", "write_rendered", "write_validation",
-           "validation_markdown", "console_summary"]
+__all__ = ["RenderedReport", "VALIDATION_SUFFIXES", "render_validation", "write_rendered", "rendered_plans",
+           "write_validation", "validation_markdown", "console_summary"]
 
 #: The files of one validated run, by suffix.
 VALIDATION_SUFFIXES = (".nc", ".md", ".png")
@@ -169,17 +169,20 @@ def render_validation(report: xr.Dataset, stem: str) -> RenderedReport:
 
 
 def write_rendered(rendered: RenderedReport, out: str | os.PathLike) -> list[FileOutcome]:
-    """Write ``<stem>.nc``, ``<stem>.md`` and ``<stem>.png`` into ``out`` (each atomically), after checking
-    ``out`` (:func:`~mdr_events.io.files.prepare_output_directory`) and the stem
+    """Write ``<stem>.nc``, ``<stem>.md`` and ``<stem>.png`` into ``out`` together (:func:`rendered_plans`)."""
+    return commit(rendered_plans(rendered, out))
+
+
+def rendered_plans(rendered: RenderedReport, out: str | os.PathLike) -> list[PlannedFile]:
+    """``<stem>.nc``, ``<stem>.md`` and ``<stem>.png`` planned in ``out``, for
+    :func:`~mdr_events.app.result_files.commit`, after checking ``out``
+    (:func:`~mdr_events.io.files.prepare_output_directory`) and the stem
     (:func:`~mdr_events.io.files.check_output_stem`)."""
     prepare_output_directory(out, "out")
     check_output_stem("stem", rendered.stem)
     nc, md, png = rendered.paths(out)
-    written = atomic_write_all([
-        PendingFile(nc, netcdf_writer(rendered.report), ".nc"),
-        PendingFile(md, lambda temporary: Path(temporary).write_text(rendered.markdown, encoding="utf-8"), ".md"),
-        PendingFile(png, lambda temporary: Path(temporary).write_bytes(rendered.png), ".png")])  # together
-    return [FileOutcome(path, FileStatus.WRITTEN) for path in written]
+    return [netcdf_plan(rendered.report, nc), bytes_plan(md, rendered.markdown.encode("utf-8")),
+            bytes_plan(png, rendered.png)]
 
 
 def write_validation(report: xr.Dataset, out: str | os.PathLike, stem: str) -> list[FileOutcome]:
