@@ -37,6 +37,14 @@ __all__ = ["GRID", "BISECTIONS", "INDENTATION_REACH", "onset_excess_A", "d_crit_
 
 #: Depths to ``d_max`` at which the excess is sampled for its first change of sign (its parts are smooth in the depth)
 GRID = 2048
+#: Angles whose excess is sampled on the grid at once. Sampled all at once, each angle held some 166 kB of the grid's
+#: temporaries (81 B a depth: a dozen arrays of ``GRID``), so that a phase diagram of 1e5 angles peaked at 16.6 GB
+#: where ``Limits.memory`` counted 160 B an angle (issue 32, round 29). Each row is its angle's alone: the same numbers
+#: in any grouping, and 16 rows at once (~2 of :data:`~mdr_events.theory.blocks.BLOCK`) are faster than all at once.
+GRID_ROWS = 16
+#: The grid's temporaries of :data:`GRID_ROWS` angles at its peak (96 B a depth: 81 measured, rounded up), whatever the
+#: number of angles: what a run of this module's onsets holds beside the angles' own arrays.
+GRID_WORKING_BYTES = 96 * GRID * GRID_ROWS
 #: Halvings of a bracketing grid interval: the onset to 2⁻⁶⁰ of ``d_max``, below its rounding
 BISECTIONS = 60
 #: How deep scenario B's indentation branch is searched for its onset, in ``d_max`` (on a geometric grid: each step
@@ -181,9 +189,7 @@ def _first_depth(excess, cot: np.ndarray, start: float, depths: np.ndarray) -> n
     first grid depth of ``depths`` where it is reached, refined by :data:`BISECTIONS` halvings; ``start`` where it is
     reached at the least depth bisected (at once), ``nan`` where it is not by the last depth."""
     flat = np.asarray(cot, dtype=float).reshape(-1)
-    reached = excess(depths[None, :], flat.reshape(-1, 1)) >= 0.0
-    first = np.argmax(reached, axis=1)
-    found = reached[np.arange(len(first)), first]
+    first, found = _first_reached(excess, flat, depths)
     low = np.where(first > 0, depths[np.maximum(first - 1, 0)], start)
     high = depths[first]
     for _ in range(BISECTIONS):  # the excess is < 0 at low (or at the start: −K a of the ring) and >= 0 at high
@@ -193,6 +199,18 @@ def _first_depth(excess, cot: np.ndarray, start: float, depths: np.ndarray) -> n
     # an excess already reached at the smallest depth bisected: the springs slide at once
     at_once = found & (low == start) & (excess(high, flat) >= 0.0)
     return np.where(at_once, start, np.where(found, high, np.nan))
+
+
+def _first_reached(excess, flat: np.ndarray, depths: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """For each ``cot`` of ``flat``, the index of the first of ``depths`` where ``excess`` reaches 0 (0 where none
+    does) and whether one does: the grid sampled :data:`GRID_ROWS` angles at a time."""
+    first, found = np.zeros(len(flat), dtype=np.intp), np.zeros(len(flat), dtype=bool)
+    for start in range(0, len(flat), GRID_ROWS):
+        rows = slice(start, start + GRID_ROWS)
+        reached = excess(depths[None, :], flat[rows].reshape(-1, 1)) >= 0.0
+        first[rows] = np.argmax(reached, axis=1)
+        found[rows] = reached[np.arange(len(reached)), first[rows]]
+    return first, found
 
 
 def d_crit_B_indentation(alpha: np.ndarray, friction: FrictionLaw, params: Parameters, profile: PowerLaw) -> np.ndarray:

@@ -21,7 +21,7 @@ from mdr_events.parameters import PAPER_D_MAX, PAPER_V, Parameters
 from mdr_events.contact.friction import FrictionLaw, as_friction_law, friction_attrs
 from mdr_events.contact.indenters import Profile, TabulatedProfile, indenter_kind, profile_attrs
 from mdr_events.contact.model import Contact
-from mdr_events.theory import analytic, mindlin, power_law, tabulated
+from mdr_events.theory import analytic, combined_onset, mindlin, power_law, tabulated
 from mdr_events.theory.job import ContactLike, contact_alone, on_layer, theory_job
 from mdr_events.theory.kinds import theory_of
 from mdr_events.theory.scales import check_representable
@@ -140,7 +140,8 @@ def phase_diagram(
         limits.check(f"the phase diagram of {count} angles on {contact.layer.describe()}", samples=count,
                      steps=curves * ONSET_STEPS_PER_ANGLE * count, memory=ONSET_BYTES_PER_ANGLE * count)
     else:
-        limits.check(f"the phase diagram of {count} angles", samples=count, memory=BYTES_PER_ANGLE * count)
+        working = combined_onset.GRID_WORKING_BYTES if friction.law == "tau0+coulomb" else 0.0
+        limits.check(f"the phase diagram of {count} angles", samples=count, memory=BYTES_PER_ANGLE * count + working)
     angles = validate_alpha(alpha)
     if angles.ndim != 1 or angles.size == 0:
         raise ValueError(f"alpha of shape {angles.shape} is not allowed; allowed: a non-empty 1-D array of angles in "
