@@ -4,7 +4,8 @@ Shared by the CLI, study files and ``mdr-events reproduce``; every file is writt
 name and renamed into place, the files of one run together (:func:`mdr_events.io.files.atomic_write_all`: an
 interrupt or an error leaves the previous run's files as they were, never a new ``.nc`` beside an old ``.png``).
 A study plans every job's files (:class:`PlannedFile`: ``*_plans``, :func:`netcdf_plan`, :func:`bytes_plan`) and
-writes them all in one commit (:func:`commit_all`).
+writes them all in one commit (:func:`commit_all`); so does ``mdr-events reproduce`` (:func:`dataset_plan`,
+:func:`figure_plan`, :func:`text_plan`; :func:`commit_groups`).
 
 With ``keep_agreeing=True`` a file whose content already agrees with what would be written is left
 as it is (:attr:`FileStatus.KEPT`): a dataset each of whose quantities agrees within the accuracy of how it is
@@ -46,7 +47,8 @@ from mdr_events.plotting.figures import figure_png, plot_phase_diagram, plot_sim
 from mdr_events.theory.phase import phase_diagram
 from mdr_events.validation import shown
 
-__all__ = ["FileStatus", "FileOutcome", "PlannedFile", "commit", "commit_all", "netcdf_plan", "bytes_plan",
+__all__ = ["FileStatus", "FileOutcome", "PlannedFile", "commit", "commit_all", "commit_groups", "netcdf_plan",
+           "bytes_plan", "dataset_plan", "figure_plan", "text_plan",
            "write_dataset", "write_figure", "write_text", "write_phase_diagram", "phase_diagram_with",
            "write_phase_diagram_dataset", "write_simulation", "simulation_plans", "phase_diagram_plans",
            "event_log_csv", "event_logs_agree", "describe_outcomes"]
@@ -121,18 +123,32 @@ def commit_all(entries: list[PlannedFile | FileOutcome]) -> list[FileOutcome]:
     return [next(committed) if isinstance(entry, PlannedFile) else entry for entry in entries]
 
 
+def commit_groups(groups: list[list[PlannedFile]]) -> list[list[FileOutcome]]:
+    """:func:`commit` every group's planned files in one commit and say what became of each, group by group."""
+    outcomes = iter(commit([plan for group in groups for plan in group]))
+    return [[next(outcomes) for _ in group] for group in groups]
+
+
 def write_dataset(dataset: xr.Dataset, path: str | os.PathLike,
                   keep_agreeing: bool = False) -> tuple[xr.Dataset, FileOutcome]:
     """Write ``dataset`` as netCDF, or keep the file on disk if it agrees (``keep_agreeing``).
 
     Returns the dataset now in the file (the one on disk if kept) and the outcome.
     """
+    on_disk, plan = dataset_plan(dataset, path, keep_agreeing)
+    return on_disk, commit([plan])[0]
+
+
+def dataset_plan(dataset: xr.Dataset, path: str | os.PathLike,
+                 keep_agreeing: bool = False) -> tuple[xr.Dataset, PlannedFile]:
+    """The file :func:`write_dataset` writes, planned (kept if it agrees), for :func:`commit`; with the dataset the
+    file will hold (the one on disk if kept)."""
     if not isinstance(dataset, xr.Dataset):
         raise TypeError(f"dataset={shown(dataset)} ({type(dataset).__name__}) is not allowed; allowed: an "
                         "xarray.Dataset")
     target = check_file_path("path", path)
     existing = _agreeing_file(dataset, target, keep_agreeing)
-    return (dataset if existing is None else existing), commit([_dataset_plan(dataset, target, existing)])[0]
+    return (dataset if existing is None else existing), _dataset_plan(dataset, target, existing)
 
 
 def _same_pixels(old: bytes, new: bytes) -> bool:
@@ -146,7 +162,12 @@ def _same_pixels(old: bytes, new: bytes) -> bool:
 
 def write_figure(figure, path: str | os.PathLike, keep_agreeing: bool = False) -> FileOutcome:
     """Write a figure as PNG (:func:`mdr_events.plotting.figure_png`); kept if its pixels are unchanged."""
-    return commit([_bytes_plan(Path(path), figure_png(figure), _same_pixels, keep_agreeing)])[0]
+    return commit([figure_plan(figure, path, keep_agreeing)])[0]
+
+
+def figure_plan(figure, path: str | os.PathLike, keep_agreeing: bool = False) -> PlannedFile:
+    """The file :func:`write_figure` writes, planned (drawn now; kept if its pixels are unchanged)."""
+    return _bytes_plan(Path(path), figure_png(figure), _same_pixels, keep_agreeing)
 
 
 def _same_rounded_text(old: bytes, new: bytes) -> bool:
@@ -159,8 +180,13 @@ def _same_rounded_text(old: bytes, new: bytes) -> bool:
 def write_text(text: str, path: str | os.PathLike, keep_agreeing: bool = False, rounded: bool = False) -> FileOutcome:
     """Write a text file (UTF-8); kept if it holds the same text (``rounded``: the same words, and its numbers
     within one unit of their last digit, :func:`~mdr_events.io.agreement.rounded_text_differences`)."""
+    return commit([text_plan(text, path, keep_agreeing, rounded)])[0]
+
+
+def text_plan(text: str, path: str | os.PathLike, keep_agreeing: bool = False, rounded: bool = False) -> PlannedFile:
+    """The file :func:`write_text` writes, planned (kept if it holds the same text)."""
     same = _same_rounded_text if rounded else (lambda old, new: old == new)
-    return commit([_bytes_plan(Path(path), text.encode(), same, keep_agreeing)])[0]
+    return _bytes_plan(Path(path), text.encode(), same, keep_agreeing)
 
 
 def _check_distinct_cases(dataset: xr.Dataset) -> None:

@@ -11,7 +11,7 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.app.result_files import FileOutcome, write_dataset, write_simulation
+from mdr_events.app.result_files import PlannedFile, dataset_plan, simulation_plans
 from mdr_events.models.continuum import extremum, solve_path
 from mdr_events.models.motion import scenario_paths
 from mdr_events.models.simulate import simulate
@@ -70,12 +70,12 @@ def _collect(runs: list[FigureRun]) -> FigureRuns:
                       {key: run.extremes for key, run in zip(keys, runs)})
 
 
-def _write(runs: FigureRuns, out: Path, keep_agreeing: bool) -> list[list[FileOutcome]]:
+def _plans(runs: FigureRuns, out: Path, keep_agreeing: bool) -> list[list[PlannedFile]]:
     groups = []
     for (label, scenario), dataset in runs.continuum.items():
         stem = figure_stem(label, scenario)
-        overlay, outcome = write_dataset(runs.discrete[(label, scenario)], out / f"{stem}_discrete.nc", keep_agreeing)
-        groups.append([outcome] + write_simulation(dataset, out, stem, overlay=overlay, keep_agreeing=keep_agreeing))
+        overlay, plan = dataset_plan(runs.discrete[(label, scenario)], out / f"{stem}_discrete.nc", keep_agreeing)
+        groups.append([plan] + simulation_plans(dataset, out, stem, overlay=overlay, keep_agreeing=keep_agreeing))
     return groups
 
 
@@ -86,7 +86,7 @@ FIGURES = Section(
                      partial(figure_run, radius, scenario)) for _, radius, scenario in jobs()),
     collect=_collect,
     render=lambda runs: differences_lines(runs.continuum, runs.discrete, runs.extremes),
-    write=_write,
+    plan=_plans,
     writing="writing Fig. 8 and 10 (.nc, .png, events .csv)",
     files=("- `fig8_R30.{nc,png}`, `fig8_R100.{nc,png}`: Fig. 8 (scenario A), continuum method, with its event",
            "  log in `fig8_R*_events.csv` and the discrete overlay in `fig8_R*_discrete.nc`.",

@@ -24,7 +24,7 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.app.result_files import FileOutcome, write_figure
+from mdr_events.app.result_files import PlannedFile, figure_plan
 from mdr_events.contact.indenters import Paraboloid
 from mdr_events.contact.layer import Layer, LayerBase
 from mdr_events.contact.model import Contact
@@ -195,12 +195,12 @@ def layer_lines(results: LayerResults) -> list[str]:
             f"`{LAYER_STEM}_cycles.png`.", ""] + table + [""] + _outside_lines(results.outside)
 
 
-def _write(results: LayerResults, out: FilePath, keep_agreeing: bool) -> list[list[FileOutcome]]:
+def _plans(results: LayerResults, out: FilePath, keep_agreeing: bool) -> list[list[PlannedFile]]:
     labels = {f"thin limit, {base} base": value for base, value in THIN_LIMITS.items()}
     pull = plot_pull_off_against_thickness(results.pull_off, labels)
     cycles = plot_layer_cycles(results.cycles)
-    return [[write_figure(pull, out / f"{LAYER_STEM}_pull_off.png", keep_agreeing),
-             write_figure(cycles, out / f"{LAYER_STEM}_cycles.png", keep_agreeing)]]
+    return [[figure_plan(pull, out / f"{LAYER_STEM}_pull_off.png", keep_agreeing),
+             figure_plan(cycles, out / f"{LAYER_STEM}_cycles.png", keep_agreeing)]]
 
 
 FINITE_LAYER = Section(
@@ -212,7 +212,7 @@ FINITE_LAYER = Section(
                 outside_check)),
     collect=lambda results: results[0]._replace(outside=results[1]),
     render=layer_lines,
-    write=_write,
+    plan=_plans,
     writing="writing the finite-layer figures",
     files=(f"- `{LAYER_STEM}_pull_off.png`, `{LAYER_STEM}_cycles.png`: the pull-off force against a/h from the "
            "half-space", "  to the thin limits, and F_N(d) on the paper's 5 mm layer beside the half-space."),

@@ -11,7 +11,7 @@ import xarray as xr
 
 from mdr_events.analysis.fit import FitResult, fit, synthetic_measurement
 from mdr_events.analysis.validate import resolve_path
-from mdr_events.app.result_files import FileOutcome, write_dataset, write_figure
+from mdr_events.app.result_files import PlannedFile, dataset_plan, figure_plan
 from mdr_events.parameters import Parameters
 from mdr_events.plotting.fit import plot_fit
 from mdr_events.reproduction.markdown import markdown_table
@@ -96,10 +96,10 @@ def fit_lines(demo: FitDemonstration) -> list[str]:
     return lines
 
 
-def _write(demo: FitDemonstration, out: FilePath, keep_agreeing: bool) -> list[list[FileOutcome]]:
-    measured = write_dataset(demo.measured, out / f"{FIT_STEM}_measured.nc", keep_agreeing)[1]
-    fitted, outcome = write_dataset(demo.result.dataset, out / f"{FIT_STEM}.nc", keep_agreeing)
-    return [[measured, outcome, write_figure(plot_fit(fitted), out / f"{FIT_STEM}.png", keep_agreeing)]]
+def _plans(demo: FitDemonstration, out: FilePath, keep_agreeing: bool) -> list[list[PlannedFile]]:
+    measured = dataset_plan(demo.measured, out / f"{FIT_STEM}_measured.nc", keep_agreeing)[1]
+    fitted, plan = dataset_plan(demo.result.dataset, out / f"{FIT_STEM}.nc", keep_agreeing)
+    return [[measured, plan, figure_plan(plot_fit(fitted), out / f"{FIT_STEM}.png", keep_agreeing)]]
 
 
 FIT = Section(
@@ -108,7 +108,7 @@ FIT = Section(
                 f"{FIT_DEMO_ANGLE:g}°, {FIT_DEMO_NOISE:.0%} noise)", lambda: fit_demonstration(Parameters.paper())),),
     collect=lambda results: results[0],
     render=fit_lines,
-    write=_write,
+    plan=_plans,
     writing="writing the fit (.nc, .png)",
     files=(f"- `{FIT_STEM}.{{nc,png}}`: the fit demonstration (estimates, intervals, correlations, residuals), its",
            f"  synthetic measurement in `{FIT_STEM}_measured.nc`."),

@@ -15,7 +15,7 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.app.result_files import FileOutcome, write_dataset, write_simulation
+from mdr_events.app.result_files import PlannedFile, dataset_plan, simulation_plans
 from mdr_events.io.agreement import Integrated, RoundOff, register_accuracy
 from mdr_events.io.datasets import register_schema, stamp
 from mdr_events.models.continuum import solve_path, tangential_work
@@ -314,10 +314,10 @@ def fretting_lines(study: FrettingStudy) -> list[str]:
          "relative difference"], [_fretting_cells(row) for row in rows])
 
 
-def _write(study: FrettingStudy, out: FilePath, keep_agreeing: bool) -> list[list[FileOutcome]]:
-    overlay, outcome = write_dataset(study.discrete, out / f"{FRETTING_STEM}_discrete.nc", keep_agreeing)
-    return [[outcome] + write_simulation(study.continuum, out, FRETTING_STEM, overlay=overlay,
-                                         keep_agreeing=keep_agreeing, plot=plot_fretting)]
+def _plans(study: FrettingStudy, out: FilePath, keep_agreeing: bool) -> list[list[PlannedFile]]:
+    overlay, plan = dataset_plan(study.discrete, out / f"{FRETTING_STEM}_discrete.nc", keep_agreeing)
+    return [[plan] + simulation_plans(study.continuum, out, FRETTING_STEM, overlay=overlay,
+                                      keep_agreeing=keep_agreeing, plot=plot_fretting)]
 
 
 def _compute() -> FrettingStudy:
@@ -330,7 +330,7 @@ FRETTING = Section(
                 f"cases; discrete (Δx = {FIGURE_DX * 1e6:g} µm)", _compute),),
     collect=lambda results: results[0],
     render=fretting_lines,
-    write=_write,
+    plan=_plans,
     writing="writing the fretting study (.nc, .png, events .csv)",
     files=(f"- `{FRETTING_STEM}.{{nc,png}}`: the fretting study (F_x against x), continuum method, with its event log",
            f"  in `{FRETTING_STEM}_events.csv` and the discrete model in `{FRETTING_STEM}_discrete.nc`."),

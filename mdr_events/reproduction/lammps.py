@@ -14,7 +14,7 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.app.result_files import FileOutcome, write_dataset, write_figure
+from mdr_events.app.result_files import PlannedFile, dataset_plan, figure_plan
 from mdr_events.dem.runner import EXTRA
 from mdr_events.plotting.validation import plot_validation
 from mdr_events.reproduction.lammps_cases import (CASES, LAMMPS_DGAMMA, LAMMPS_MU, LAMMPS_RADIUS, LAMMPS_STEPS,
@@ -214,12 +214,12 @@ def lammps_lines(study: LammpsStudy) -> list[str]:
     return lines + ["", "What each difference is, measured:", ""] + lammps_explanation_lines(study) + [""]
 
 
-def _write(study: LammpsStudy, out: FilePath, keep_agreeing: bool) -> list[list[FileOutcome]]:
+def _plans(study: LammpsStudy, out: FilePath, keep_agreeing: bool) -> list[list[PlannedFile]]:
     groups = []
     for case in CASES if study.unavailable is None else ():
-        report, outcome = write_dataset(study.reports[case], out / f"{case.stem}.nc", keep_agreeing)
+        report, plan = dataset_plan(study.reports[case], out / f"{case.stem}.nc", keep_agreeing)
         figure = plot_validation(report, title=f"LAMMPS {case.label} against the exact MDR: {report.attrs['verdict']}")
-        groups.append([outcome, write_figure(figure, out / f"{case.stem}.png", keep_agreeing)])
+        groups.append([plan, figure_plan(figure, out / f"{case.stem}.png", keep_agreeing)])
     return groups
 
 
@@ -233,7 +233,7 @@ LAMMPS = Section(
     steps=tuple(_step(normal) for normal in NORMAL_MODELS_RUN),
     collect=_collect,
     render=lammps_lines,
-    write=_write,
+    plan=_plans,
     writing="writing the LAMMPS checks (.nc, .png per case)",
     files=("- `lammps_<normal>_<tangential>_<path>.{nc,png}`: each LAMMPS granular model's validation report against "
            "the", "  exact MDR and its figure (where LAMMPS is installed)."),

@@ -14,7 +14,7 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.analysis.layer_angles import critical_angles_against_thickness
-from mdr_events.app.result_files import FileOutcome, write_figure
+from mdr_events.app.result_files import PlannedFile, figure_plan
 from mdr_events.contact.model import Contact
 from mdr_events.parameters import PAPER_D_MAX, Parameters
 from mdr_events.plotting.layer import plot_critical_angles_against_thickness
@@ -68,9 +68,9 @@ def layer_angle_lines(curves: dict[str, xr.Dataset]) -> list[str]:
             f"adhesion and the indenter). Figure: `{LAYER_ANGLES_STEM}.png`.", ""] + table + [""]
 
 
-def _write(curves: dict[str, xr.Dataset], out: FilePath, keep_agreeing: bool) -> list[list[FileOutcome]]:
+def _plans(curves: dict[str, xr.Dataset], out: FilePath, keep_agreeing: bool) -> list[list[PlannedFile]]:
     figure = plot_critical_angles_against_thickness(curves)
-    return [[write_figure(figure, out / f"{LAYER_ANGLES_STEM}.png", keep_agreeing)]]
+    return [[figure_plan(figure, out / f"{LAYER_ANGLES_STEM}.png", keep_agreeing)]]
 
 
 LAYER_ANGLES = Section(
@@ -78,7 +78,7 @@ LAYER_ANGLES = Section(
     steps=(Step("layers of finite thickness: the critical angles against h (R = 30, 100 mm)", layer_angle_curves),),
     collect=lambda results: results[0],
     render=layer_angle_lines,
-    write=_write,
+    plan=_plans,
     writing="writing the critical angles against the layer's thickness",
     files=(f"- `{LAYER_ANGLES_STEM}.png`: the critical angles of scenarios A, B and B+ against the layer's",
            "  thickness, with and without adhesion, and scenario A's thin-layer limit."),

@@ -18,7 +18,7 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.app.result_files import FileOutcome, write_figure
+from mdr_events.app.result_files import PlannedFile, figure_plan
 from mdr_events.contact.model import Contact
 from mdr_events.models.motion import Scenario
 from mdr_events.models.simulate import simulate
@@ -106,13 +106,13 @@ def _collect(results: list[LayerFigureRun]) -> dict[tuple[str, str], LayerFigure
     return {(label, scenario): run for (label, _, scenario), run in zip(jobs(), results)}
 
 
-def _write(runs: dict[tuple[str, str], LayerFigureRun], out: FilePath,
-           keep_agreeing: bool) -> list[list[FileOutcome]]:
-    outcomes = []
+def _plans(runs: dict[tuple[str, str], LayerFigureRun], out: FilePath,
+           keep_agreeing: bool) -> list[list[PlannedFile]]:
+    plans = []
     for (label, scenario), run in runs.items():
         figure = plot_layer_simulations({"half-space": run.half_space, "h = 5 mm, bonded": run.layer}, DRAWN_ANGLES)
-        outcomes.append(write_figure(figure, out / f"{layer_figure_stem(label, scenario)}.png", keep_agreeing))
-    return [outcomes]
+        plans.append(figure_plan(figure, out / f"{layer_figure_stem(label, scenario)}.png", keep_agreeing))
+    return [plans]
 
 
 LAYER_FIGURES = Section(
@@ -122,7 +122,7 @@ LAYER_FIGURES = Section(
                      partial(layer_figure_run, radius, scenario)) for _, radius, scenario in jobs()),
     collect=_collect,
     render=_lines,
-    write=_write,
+    plan=_plans,
     writing="writing Fig. 8 and 10 on the 5 mm layer (.png)",
     files=("- `fig8_R30_layer.png`, `fig8_R100_layer.png`, `fig10_R30_layer.png`, `fig10_R100_layer.png`: the",
            "  discrete model along Fig. 8's and 10's paths on the paper's 5 mm layer beside the half-space."),

@@ -13,7 +13,7 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.app.result_files import FileOutcome, write_dataset, write_figure
+from mdr_events.app.result_files import PlannedFile, dataset_plan, figure_plan
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.io.agreement import RoundOff, register_accuracy
 from mdr_events.io.datasets import register_schema
@@ -148,11 +148,11 @@ def mindlin_lines(check: MindlinCheck) -> list[str]:
     return lines + [""]
 
 
-def _write(check: MindlinCheck, out: FilePath, keep_agreeing: bool) -> list[list[FileOutcome]]:
-    exact, outcome = write_dataset(check.continuum, out / f"{MINDLIN_STEM}.nc", keep_agreeing)
-    springs, discrete_outcome = write_dataset(check.discrete, out / f"{MINDLIN_STEM}_discrete.nc", keep_agreeing)
+def _plans(check: MindlinCheck, out: FilePath, keep_agreeing: bool) -> list[list[PlannedFile]]:
+    exact, plan = dataset_plan(check.continuum, out / f"{MINDLIN_STEM}.nc", keep_agreeing)
+    springs, discrete_plan = dataset_plan(check.discrete, out / f"{MINDLIN_STEM}_discrete.nc", keep_agreeing)
     figure = plot_mindlin_check(exact, springs)
-    return [[outcome, discrete_outcome, write_figure(figure, out / f"{MINDLIN_STEM}.png", keep_agreeing)]]
+    return [[plan, discrete_plan, figure_plan(figure, out / f"{MINDLIN_STEM}.png", keep_agreeing)]]
 
 
 MINDLIN = Section(
@@ -162,7 +162,7 @@ MINDLIN = Section(
                 lambda: mindlin_check(Parameters.paper())),),
     collect=lambda results: results[0],
     render=mindlin_lines,
-    write=_write,
+    plan=_plans,
     writing="writing the Cattaneo–Mindlin check (.nc, .png)",
     files=(f"- `{MINDLIN_STEM}.png`, `{MINDLIN_STEM}.nc` (continuum) and `{MINDLIN_STEM}_discrete.nc`: Coulomb's law "
            "at a", "  constant depth against Cattaneo–Mindlin."),

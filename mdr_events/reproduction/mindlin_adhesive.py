@@ -15,7 +15,7 @@ from typing import NamedTuple
 import numpy as np
 import xarray as xr
 
-from mdr_events.app.result_files import FileOutcome, write_dataset, write_figure
+from mdr_events.app.result_files import PlannedFile, dataset_plan, figure_plan
 from mdr_events.models.simulate import simulate
 from mdr_events.parameters import Parameters
 from mdr_events.plotting.mindlin import plot_mindlin_check
@@ -110,12 +110,12 @@ def adhesive_lines(check: AdhesiveMindlin) -> list[str]:
     return lines + [""]
 
 
-def _write(check: AdhesiveMindlin, out: FilePath, keep_agreeing: bool) -> list[list[FileOutcome]]:
-    exact, outcome = write_dataset(check.adhesive.continuum, out / f"{MINDLIN_ADHESIVE_STEM}.nc", keep_agreeing)
-    springs, discrete_outcome = write_dataset(check.adhesive.discrete, out / f"{MINDLIN_ADHESIVE_STEM}_discrete.nc",
-                                              keep_agreeing)
+def _plans(check: AdhesiveMindlin, out: FilePath, keep_agreeing: bool) -> list[list[PlannedFile]]:
+    exact, plan = dataset_plan(check.adhesive.continuum, out / f"{MINDLIN_ADHESIVE_STEM}.nc", keep_agreeing)
+    springs, discrete_plan = dataset_plan(check.adhesive.discrete, out / f"{MINDLIN_ADHESIVE_STEM}_discrete.nc",
+                                          keep_agreeing)
     figure = plot_mindlin_check(exact, springs)
-    return [[outcome, discrete_outcome, write_figure(figure, out / f"{MINDLIN_ADHESIVE_STEM}.png", keep_agreeing)]]
+    return [[plan, discrete_plan, figure_plan(figure, out / f"{MINDLIN_ADHESIVE_STEM}.png", keep_agreeing)]]
 
 
 MINDLIN_ADHESIVE = Section(
@@ -125,7 +125,7 @@ MINDLIN_ADHESIVE = Section(
                 lambda: adhesive_mindlin(Parameters.paper())),),
     collect=lambda results: results[0],
     render=adhesive_lines,
-    write=_write,
+    plan=_plans,
     writing="writing the Cattaneo–Mindlin check with adhesion (.nc, .png)",
     files=(f"- `{MINDLIN_ADHESIVE_STEM}.{{nc,png}}` (continuum) and `{MINDLIN_ADHESIVE_STEM}_discrete.nc`: "
            "Coulomb's law with", "  adhesion at a constant depth against Cattaneo–Mindlin of the compressed zone."),

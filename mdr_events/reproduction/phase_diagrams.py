@@ -7,7 +7,7 @@ from pathlib import Path
 
 import xarray as xr
 
-from mdr_events.app.result_files import FileOutcome, write_phase_diagram_dataset
+from mdr_events.app.result_files import PlannedFile, phase_diagram_plans
 from mdr_events.parameters import Parameters
 from mdr_events.reproduction.common import jobs
 from mdr_events.reproduction.section import Section, Step
@@ -32,8 +32,8 @@ def _collect(diagrams: list[xr.Dataset]) -> dict[tuple[str, str], xr.Dataset]:
     return {(label, scenario): diagram for (label, _, scenario), diagram in zip(jobs(), diagrams)}
 
 
-def _write(diagrams: dict[tuple[str, str], xr.Dataset], out: Path, keep_agreeing: bool) -> list[list[FileOutcome]]:
-    return [write_phase_diagram_dataset(diagram, out, phase_diagram_stem(label, scenario), keep_agreeing)
+def _plans(diagrams: dict[tuple[str, str], xr.Dataset], out: Path, keep_agreeing: bool) -> list[list[PlannedFile]]:
+    return [phase_diagram_plans(diagram, out, phase_diagram_stem(label, scenario), keep_agreeing)
             for (label, scenario), diagram in diagrams.items()]
 
 
@@ -43,7 +43,7 @@ PHASE_DIAGRAMS = Section(
                      partial(_compute, radius, scenario)) for _, radius, scenario in jobs()),
     collect=_collect,
     render=lambda diagrams: [],
-    write=_write,
+    plan=_plans,
     writing="writing Fig. 9a and 9b (.nc, .png)",
     files=("- `phase_diagram_A_R30.{nc,png}`, `phase_diagram_A_R100.{nc,png}`: Fig. 9a.",
            "- `phase_diagram_B_R30.{nc,png}`, `phase_diagram_B_R100.{nc,png}`: Fig. 9b."),

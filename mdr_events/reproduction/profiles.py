@@ -9,7 +9,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from mdr_events.app.result_files import FileOutcome, write_dataset, write_figure
+from mdr_events.app.result_files import PlannedFile, dataset_plan, figure_plan
 from mdr_events.contact.indenters import FlatPunch, PowerLaw
 from mdr_events.models.simulate import simulate
 from mdr_events.parameters import Parameters
@@ -140,16 +140,16 @@ def profile_lines(comparison: ProfileComparison) -> list[str]:
     return lines + [""]
 
 
-def _write(comparison: ProfileComparison, out: Path, keep_agreeing: bool) -> list[list[FileOutcome]]:
-    written, kept, outcomes = {}, {}, []
+def _plans(comparison: ProfileComparison, out: Path, keep_agreeing: bool) -> list[list[PlannedFile]]:
+    written, kept, plans = {}, {}, []
     for name in comparison.profiles:
-        written[name], outcome = write_dataset(comparison.continuum[name], out / f"{PROFILE_STEM}_{name}.nc",
-                                               keep_agreeing)
-        kept[name], discrete_outcome = write_dataset(comparison.discrete[name],
-                                                     out / f"{PROFILE_STEM}_{name}_discrete.nc", keep_agreeing)
-        outcomes += [outcome, discrete_outcome]
+        written[name], plan = dataset_plan(comparison.continuum[name], out / f"{PROFILE_STEM}_{name}.nc",
+                                           keep_agreeing)
+        kept[name], discrete_plan = dataset_plan(comparison.discrete[name],
+                                                 out / f"{PROFILE_STEM}_{name}_discrete.nc", keep_agreeing)
+        plans += [plan, discrete_plan]
     figure = plot_profile_comparison(written, kept)
-    return [outcomes + [write_figure(figure, out / f"{PROFILE_STEM}.png", keep_agreeing)]]
+    return [plans + [figure_plan(figure, out / f"{PROFILE_STEM}.png", keep_agreeing)]]
 
 
 PROFILES = Section(
@@ -159,7 +159,7 @@ PROFILES = Section(
                 lambda: profile_comparison(Parameters.paper())),),
     collect=lambda results: results[0],
     render=profile_lines,
-    write=_write,
+    plan=_plans,
     writing="writing the other indenters (.nc, .png)",
     files=(f"- `{PROFILE_STEM}.png`, `{PROFILE_STEM}_<cone|paraboloid|quartic|flat_punch>.nc` (continuum) and "
            "`..._discrete.nc`:",

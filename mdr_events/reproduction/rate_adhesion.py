@@ -24,7 +24,7 @@ import xarray as xr
 
 from mdr_events.analysis.rate_angles import critical_angles_at_speeds, phase_diagram_at_speeds
 from mdr_events.analysis.rate_let_go import critical_angles_B_at_speeds
-from mdr_events.app.result_files import FileOutcome, write_figure
+from mdr_events.app.result_files import PlannedFile, figure_plan
 from mdr_events.contact.adhesion import RateDependentAdhesion
 from mdr_events.models.continuum.rate_edge import EdgeEventKind, solve_edge
 from mdr_events.models.paths import Path
@@ -226,7 +226,7 @@ def _angle_B_lines(angles: xr.Dataset) -> list[str]:
             f"after it above. Figure: `{RATE_ANGLE_B_STEM}.png`.", ""] + table + [""]
 
 
-def _write(data: RateSection, out: FilePath, keep_agreeing: bool) -> list[list[FileOutcome]]:
+def _plans(data: RateSection, out: FilePath, keep_agreeing: bool) -> list[list[PlannedFile]]:
     rows, angles = data.rows, data.angles
     speeds = np.array([row.speed for row in rows]) / RATE_V_REF
     figure = plot_pull_off_against_speed(speeds, np.array([row.pull_off_ratio for row in rows]), RATE_EXPONENT)
@@ -234,11 +234,11 @@ def _write(data: RateSection, out: FilePath, keep_agreeing: bool) -> list[list[F
                                                      angles["critical_angle"].values,
                                                      angles.attrs["critical_angle_adhesive"],
                                                      angles.attrs["critical_angle_hertz"])
-    return [[write_figure(figure, out / f"{RATE_STEM}.png", keep_agreeing),
-             write_figure(angle_figure, out / f"{RATE_ANGLE_STEM}.png", keep_agreeing),
-             write_figure(plot_phase_diagram_at_speeds(data.phase), out / f"{RATE_PHASE_STEM}.png", keep_agreeing),
-             write_figure(plot_scenario_at_speeds(data.runs), out / f"{RATE_SCENARIO_STEM}.png", keep_agreeing),
-             write_figure(plot_critical_angle_B_against_speed(data.angles_B["speed"].values / RATE_V_REF,
+    return [[figure_plan(figure, out / f"{RATE_STEM}.png", keep_agreeing),
+             figure_plan(angle_figure, out / f"{RATE_ANGLE_STEM}.png", keep_agreeing),
+             figure_plan(plot_phase_diagram_at_speeds(data.phase), out / f"{RATE_PHASE_STEM}.png", keep_agreeing),
+             figure_plan(plot_scenario_at_speeds(data.runs), out / f"{RATE_SCENARIO_STEM}.png", keep_agreeing),
+             figure_plan(plot_critical_angle_B_against_speed(data.angles_B["speed"].values / RATE_V_REF,
                                                               data.angles_B["critical_angle"].values,
                                                               data.angles_B.attrs["critical_angle_paper"]),
                           out / f"{RATE_ANGLE_B_STEM}.png", keep_agreeing)]]
@@ -253,7 +253,7 @@ RATE_ADHESION = Section(
            Step(f"rate-dependent adhesion: the critical angle of B at {len(RATE_SPEEDS)} speeds", rate_angles_B)),
     collect=lambda results: RateSection(*results),
     render=rate_lines,
-    write=_write,
+    plan=_plans,
     writing="writing the rate-dependent figures (pull-off, critical angles, phase diagram, scenario A)",
     files=(f"- `{RATE_STEM}.png`: the pull-off force against the unloading speed under the rate-dependent law.",
            f"- `{RATE_ANGLE_STEM}.png`: the critical angle of scenario A against the speed under the same law.",

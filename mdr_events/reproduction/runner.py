@@ -2,8 +2,10 @@
 
 Everything in ``results/`` is written deterministically (same input, same bytes), so that a test can compare the
 committed report with a fresh computation. The runner knows the sections only as :class:`Section` values, in the
-order of :data:`SECTIONS` (the report's order): it computes each (announcing every step), writes each section's
-files (one step each), then the report, and numbers the steps out of a total it counts from the sections.
+order of :data:`SECTIONS` (the report's order): it computes each (announcing every step), plans each section's
+files (one step each: drawn, checked, kept or not), then the report, writes them all in one commit (an interrupt
+or an error leaves ``results/`` as it was, never new figures beside an old report) and numbers the steps out of a
+total it counts from the sections.
 """
 
 from __future__ import annotations
@@ -11,7 +13,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Iterable
 
-from mdr_events.app.result_files import FileOutcome, FileStatus, describe_outcomes, write_text
+from mdr_events.app.result_files import FileOutcome, PlannedFile, commit_groups, describe_outcomes, text_plan
 from mdr_events.io.agreement import rounded_text_differences
 from mdr_events.io.files import prepare_output_directory
 from mdr_events.reproduction.critical_angles import CRITICAL_ANGLES
@@ -84,11 +86,11 @@ def report_text(data: Reproduction | None = None, versions: dict[str, str] | Non
 
 
 def _report_to_write(data: Reproduction, sections: tuple[Section, ...], readme: Path, keep_agreeing: bool,
-                     outcomes: list[FileOutcome]) -> str:
-    """The report's text; the one on disk if every other file was kept and only its software versions differ, so
+                     plans: list[PlannedFile]) -> str:
+    """The report's text; the one on disk if every other file is kept and only its software versions differ, so
     that ``git status`` stays clean on a machine whose rounding or versions differ."""
     text = report_text(data, sections=sections)
-    if keep_agreeing and readme.exists() and all(outcome.status is FileStatus.KEPT for outcome in outcomes):
+    if keep_agreeing and readme.exists() and all(plan.pending is None for plan in plans):
         existing = readme.read_text()
         recorded = recorded_versions(existing)
         if recorded and not rounded_text_differences(report_text(data, recorded, sections), existing):
@@ -98,33 +100,44 @@ def _report_to_write(data: Reproduction, sections: tuple[Section, ...], readme: 
 
 def reproduce(out: Path, progress: Progress = print, keep_agreeing: bool = True,
               sections: Iterable[Section] = SECTIONS) -> list[FileOutcome]:
-    """Write every section's files and the report into ``out``; ``progress`` hears each step, numbered.
+    """Write every section's files and the report into ``out``, all in one commit; ``progress`` hears each step,
+    numbered, then when the files are written and what became of each (one line per group of files).
 
-    With ``keep_agreeing`` (the default) a file that agrees with the fresh computation is not rewritten
-    (:mod:`mdr_events.app.result_files`), and the report keeps the software versions it records when every other
-    file was kept and its numbers are unchanged. ``out`` is checked before anything is computed.
+    Every section is computed and its files planned (drawn, checked, kept or not) before the first file is written,
+    and they are written together (:func:`~mdr_events.app.result_files.commit_groups`): an interrupt or an error
+    leaves ``out`` as it was. With ``keep_agreeing`` (the default) a file that agrees with the fresh computation is
+    not rewritten (:mod:`mdr_events.app.result_files`), and the report keeps the software versions it records when
+    every other file is kept and its numbers are unchanged. ``out`` is checked before anything is computed.
     """
     out = prepare_output_directory(out, "out")
     sections = tuple(sections)
     total = step_count(sections)
     count = iter(range(1, total + 1))
-    outcomes: list[FileOutcome] = []
+    groups: list[list[PlannedFile]] = []
 
     def step(message: str) -> None:
         progress(f"[{next(count)}/{total}] {message}")
 
-    def done(new: list[FileOutcome]) -> None:
-        outcomes.extend(new)
-        progress(f"    {describe_outcomes(new)}")
-
     data = compute(step, sections)
     for section in sections:
-        if section.write is not None:
+        if section.plan is not None:
             step(section.writing)
-            for group in section.write(data[section.name], out, keep_agreeing):
-                done(group)
+            groups += section.plan(data[section.name], out, keep_agreeing)
     step(README_STEP)
     readme = out / "README.md"
-    done([write_text(_report_to_write(data, sections, readme, keep_agreeing, outcomes), readme, keep_agreeing,
-                     rounded=True)])
-    return outcomes
+    others = [plan for group in groups for plan in group]
+    groups.append([text_plan(_report_to_write(data, sections, readme, keep_agreeing, others), readme,
+                             keep_agreeing, rounded=True)])
+    progress(_committing(groups, out))
+    outcomes = commit_groups(groups)
+    for group in outcomes:
+        progress(f"    {describe_outcomes(group)}")
+    return [outcome for group in outcomes for outcome in group]
+
+
+def _committing(groups: list[list[PlannedFile]], out: Path) -> str:
+    """The progress line said just before the files are written: how many, together, and how many are kept."""
+    plans = [plan for group in groups for plan in group]
+    kept = sum(plan.pending is None for plan in plans)
+    return (f"    writing {len(plans) - kept} of the {len(plans)} files into {out} together ({kept} agree and are "
+            "kept); what became of each:")

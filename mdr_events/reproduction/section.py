@@ -2,8 +2,8 @@
 into ``results/`` and its part of ``results/README.md``.
 
 A new section is one module that builds a :class:`Section` and one entry in
-:data:`mdr_events.reproduction.runner.SECTIONS`: the runner computes, writes and renders it in that order, and
-counts its steps.
+:data:`mdr_events.reproduction.runner.SECTIONS`: the runner computes it, plans its files and renders it in that
+order, writes every section's files in one commit, and counts its steps.
 """
 
 from __future__ import annotations
@@ -12,14 +12,15 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Callable
 
-from mdr_events.app.result_files import FileOutcome
+from mdr_events.app.result_files import FileOutcome, PlannedFile, commit_groups
 
-__all__ = ["Progress", "Step", "Section", "Reproduction", "FileWriter"]
+__all__ = ["Progress", "Step", "Section", "Reproduction", "FilePlanner"]
 
 #: What hears the progress messages (``print`` on the command line).
 Progress = Callable[[str], None]
-#: Writes a section's data into a directory (``keep_agreeing``): one list of outcomes per progress line.
-FileWriter = Callable[[Any, Path, bool], list[list[FileOutcome]]]
+#: Plans a section's files from its data in a directory (``keep_agreeing``: a file that agrees is planned kept),
+#: nothing written: one list of planned files per progress line.
+FilePlanner = Callable[[Any, Path, bool], list[list[PlannedFile]]]
 #: Everything the report and the files are made of: each section's name -> what it computed.
 Reproduction = dict[str, Any]
 
@@ -55,10 +56,11 @@ class Section:
         The section's data from the results of its steps, in their order.
     render : Callable[[Any], list[str]]
         Its lines of ``results/README.md`` from its data.
-    write : FileWriter, optional
-        Writes its files (default: it has none).
+    plan : FilePlanner, optional
+        Plans its files, drawn and checked but not written (default: it has none); the runner writes every
+        section's files in one commit.
     writing : str
-        The progress message of its write step (one step, only if it writes files).
+        The progress message of its write step, when its files are planned (one step, only if it has files).
     files : tuple of str
         Its lines of the report's list of files.
     """
@@ -67,14 +69,19 @@ class Section:
     steps: tuple[Step, ...]
     collect: Callable[[list[Any]], Any]
     render: Callable[[Any], list[str]]
-    write: FileWriter | None = None
+    plan: FilePlanner | None = None
     writing: str = ""
     files: tuple[str, ...] = ()
 
     @property
     def writes_files(self) -> bool:
         """Whether it writes files (then its write step is one more progress message)."""
-        return self.write is not None
+        return self.plan is not None
+
+    def write(self, data: Any, out: Path, keep_agreeing: bool) -> list[list[FileOutcome]]:
+        """Write its files (planned from ``data``) into ``out``, all in one commit; what became of each, one list
+        per progress line."""
+        return commit_groups(self.plan(data, out, keep_agreeing)) if self.plan is not None else []
 
     @property
     def step_count(self) -> int:

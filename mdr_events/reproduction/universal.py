@@ -9,7 +9,7 @@ import numpy as np
 import xarray as xr
 
 from mdr_events.analysis.universal_map import universal_map
-from mdr_events.app.result_files import FileOutcome, write_dataset, write_figure
+from mdr_events.app.result_files import PlannedFile, dataset_plan, figure_plan
 from mdr_events.parameters import Parameters
 from mdr_events.plotting.universal import plot_universal_map
 from mdr_events.reproduction.common import RADII
@@ -56,9 +56,9 @@ def _compute() -> xr.Dataset:
                          marked={label: Parameters.paper(R=radius) for label, radius in RADII.items()})
 
 
-def _write(dataset: xr.Dataset, out: Path, keep_agreeing: bool) -> list[list[FileOutcome]]:
-    mapped, outcome = write_dataset(dataset, out / f"{UNIVERSAL_STEM}.nc", keep_agreeing)
-    return [[outcome, write_figure(plot_universal_map(mapped), out / f"{UNIVERSAL_STEM}.png", keep_agreeing)]]
+def _plans(dataset: xr.Dataset, out: Path, keep_agreeing: bool) -> list[list[PlannedFile]]:
+    mapped, plan = dataset_plan(dataset, out / f"{UNIVERSAL_STEM}.nc", keep_agreeing)
+    return [[plan, figure_plan(plot_universal_map(mapped), out / f"{UNIVERSAL_STEM}.png", keep_agreeing)]]
 
 
 UNIVERSAL = Section(
@@ -67,7 +67,7 @@ UNIVERSAL = Section(
                 "dimensionless groups (the sweep on a local dask cluster)", _compute),),
     collect=lambda results: results[0],
     render=universal_lines,
-    write=_write,
+    plan=_plans,
     writing="writing the universal map (.nc, .png)",
     files=(f"- `{UNIVERSAL_STEM}.{{nc,png}}`: the critical angles over the dimensionless groups, the paper's sets "
            "marked.",),

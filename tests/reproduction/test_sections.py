@@ -5,7 +5,7 @@ import re
 
 import pytest
 
-from mdr_events.app.result_files import FileStatus, write_text
+from mdr_events.app.result_files import FileStatus, text_plan
 from mdr_events.reproduction import runner
 from mdr_events.reproduction.markdown import markdown_table, relative_difference_text
 from mdr_events.reproduction.section import Section, Step
@@ -69,11 +69,11 @@ def _toy_sections(log: list[str]) -> tuple[Section, ...]:
         log.append(f"run {number}")
         return number
 
-    def write(total: int, out, keep_agreeing: bool) -> list[list]:
-        return [[write_text(f"{total}\n", out / "total.txt", keep_agreeing)]]
+    def plan(total: int, out, keep_agreeing: bool) -> list[list]:
+        return [[text_plan(f"{total}\n", out / "total.txt", keep_agreeing)]]
 
     counting = Section(name="counting", steps=(Step("one", lambda: counted(1)), Step("two", lambda: counted(2))),
-                       collect=sum, render=lambda total: ["", f"## Total {total}"], write=write,
+                       collect=sum, render=lambda total: ["", f"## Total {total}"], plan=plan,
                        writing="writing total.txt", files=("- `total.txt`: the total.",))
     closing = Section(name="closing", steps=(), collect=lambda results: "closed form",
                       render=lambda text: ["", f"A {text}.", ""])
