@@ -20,6 +20,7 @@ contact of ``d_max``: its springs, all anchored at ``x = 0``, are the ring (radi
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -53,14 +54,11 @@ INDENTATION_REACH = 2.0**20
 #: What NumPy may meet in the excess's parts of a path near the surface (``α`` down to the least double, ``cot α`` up
 #: to ~1e308; issue 32 round 29: the overflow's ``RuntimeWarning`` leaked from ``d_crit_A`` at 1e-300°). In the bound
 #: on ``x_c`` ``cot α`` squared overflows to ``inf``, a bound beyond every depth. In the turn ``ξ*`` it overflows in
-#: ``G*² cot α²`` above and below: ``0`` (the denominator first), then ``inf/inf``, ``nan``, neither of which a
-#: comparison reads as inside the contact (the turn's own limit is finite, 3.4e-4 m on the paper's paraboloid), and
-#: needs not: where it overflows so (``α`` below ~1e-146° with the paper's moduli) the ring's edge alone, ``d cot α``,
-#: exceeds its cap at the least depth bisected (onset 0 in A, ``d_max`` in B's indentation, as at 1e-50°).
-#: Clipping ``cot α`` instead would not drop this set: ``G*² cot α²`` overflows at ordinary angles too where ``G*`` is
-#: near its representable bound (``E = 1e154``: at 20° and 60°), and a clip must stay above ``κ`` (``μ`` up to 1e100
-#: and more) not to change which branch the compressed springs take; ``tan α`` in the turn
-#: (``1/(G* − E* μ tan α)²``) is overflow-free near the surface but another rounding at every angle, not bit for bit.
+#: ``G*² cot α²`` above and below (the moduli taken to order 1 first, :func:`_unit_moduli`): ``0`` (the denominator
+#: first), then ``inf/inf``, ``nan``, neither of which a comparison reads as inside the contact (the turn's own limit
+#: is finite, 3.4e-4 m on the paper's paraboloid), and needs not: where it overflows so (``cot α`` beyond ~1e154) the
+#: ring's edge alone, ``d cot α``, exceeds its cap at the least depth bisected (onset 0 in A, ``d_max`` in B's
+#: indentation, as at 1e-50°).
 _UNREAD = {"over": "ignore", "divide": "ignore", "invalid": "ignore"}
 
 
@@ -102,6 +100,27 @@ def _jump_in_ring(params: Parameters, profile: PowerLaw) -> _Ring:
     depth 0."""
     jump_in = power_law.jump_in_radius(profile, params, params.dgamma0) if params.dgamma0 > 0 else 0.0
     return _Ring(jump_in, 0.0)
+
+
+class _UnitModuli(NamedTuple):
+    """The stresses of the turn and its excess (Pa, J/m²: ``Δγ0``, ``E*``, ``G*``, ``τ0``) times one power of four,
+    ``G*`` then in [0.5, 2)."""
+
+    dgamma0: float
+    E_star: float
+    G_star: float
+    tau0: float
+
+
+def _unit_moduli(params: Parameters) -> _UnitModuli:
+    """:class:`_UnitModuli` of ``params``. The turn ``ξ*`` and the excess (lengths) are invariant under the stress
+    scaling ``(Δγ0, E*, G*, τ0) → λ (…)``, and a power of four scales every product of the relations exactly: the
+    same doubles bit for bit wherever the moduli as given stay finite, and no ``G*² cot α²`` overflow at ordinary
+    angles where ``G*`` is near :data:`~mdr_events.validation.SCALE_MAX` (issue 32 round 29: ``E = 1e154`` at 20° and
+    60° dropped the turn, a wrong onset)."""
+    exponent = -2 * (math.frexp(params.G_star)[1] // 2)  # (even: ``√Δγ0/√E*`` of the excess exact as well)
+    return _UnitModuli(*(math.ldexp(value, exponent)
+                         for value in (params.dgamma0, params.E_star, params.G_star, params.tau0)))
 
 
 def _cot(alpha) -> np.ndarray:
@@ -149,11 +168,12 @@ def _excess_of(parts: _DepthParts, cot: np.ndarray, friction: FrictionLaw, param
     best = np.where((boundary > jump_in) & (boundary < radius), np.maximum(best, at_boundary), best)
     turning = cot > kappa  # the compressed grown springs' excess has its one maximum at ξ* (free of d)
     if np.any(turning) and params.dgamma0 > 0:
-        arguments = (friction.coulomb_mu, params.dgamma0, profile.c, profile.n, params.E_star, params.G_star)
+        unit = _unit_moduli(params)
+        arguments = (friction.coulomb_mu, unit.dgamma0, profile.c, profile.n, unit.E_star, unit.G_star)
         with np.errstate(**_UNREAD):
             turn = np.asarray(symbolic.relation("adhesive_onset_turn_A").numeric(cot, *arguments), dtype=float)
             at_turn = np.asarray(symbolic.relation("adhesive_onset_excess_A").numeric(
-                turn, depth, radius, cot, params.tau0, *arguments), dtype=float)
+                turn, depth, radius, cot, unit.tau0, *arguments), dtype=float)
         inside = turning & (turn > jump_in) & (turn < boundary)
         best = np.where(inside, np.maximum(best, at_turn), best)
     return best
@@ -272,7 +292,8 @@ def _cone_never_beyond(cot: np.ndarray, kappa: float, K: float, friction: Fricti
     slope = cot - kappa - K / prefactor
     g_ring = float(_power_law_profile(ring.radius, profile))
     constants = [kappa * g_ring - params.d_max * cot]
-    arguments = (friction.coulomb_mu, params.dgamma0, profile.c, profile.n, params.E_star, params.G_star)
+    unit = _unit_moduli(params)
+    arguments = (friction.coulomb_mu, unit.dgamma0, profile.c, profile.n, unit.E_star, unit.G_star)
     if params.dgamma0 > 0:
         with np.errstate(**_UNREAD):
             turn = np.asarray(symbolic.relation("adhesive_onset_turn_A").numeric(cot, *arguments), dtype=float)
