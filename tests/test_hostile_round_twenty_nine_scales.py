@@ -26,6 +26,7 @@ from mdr_events import Parameters
 from mdr_events.contact.friction import FrictionLaw
 from mdr_events.contact.indenters import FlatPunch, PowerLaw
 from mdr_events.theory import analytic, combined_onset, flat_punch, mindlin, power_law
+from mdr_events.theory.phase import phase_diagram
 
 #: Round-off of a closed form evaluated at scaled stresses: each of its few dozen operations rounds once, ``eps/2``
 #: relative, in either evaluation (64 ulps of 1).
@@ -139,6 +140,20 @@ def test_paper_closed_forms_are_scale_free(scale, adhesion, scenario):
             INDENTERS["paraboloid"], _scaled(PAPER, s), getattr(_scaled(PAPER, s), work)))
         _assert_invariant(lambda s: jump(s)[:2], scale, ROOT_RTOL)
         _assert_invariant(lambda s: jump(s)[2:], scale, ROOT_RTOL, 1)
+
+
+@settings(max_examples=3, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(scale=scales, scenario=st.sampled_from(["A", "B"]), law=st.sampled_from([None, "tau0+coulomb"]))
+def test_phase_diagrams_are_scale_free(scale, scenario, law):
+    """Fig. 9's phase diagrams (the paper's law on the paraboloid; both parts, ``μ = 0.3``, on the cone): every
+    variable a depth or an angle, unchanged."""
+    friction, profile = (None, None) if law is None else (FrictionLaw(law, mu=0.3), INDENTERS["cone"])
+
+    def variables(s):
+        diagram = phase_diagram(_scaled(PAPER, s), ANGLES, scenario, profile, friction)
+        return np.concatenate([np.ravel(diagram[name].values) for name in sorted(diagram.data_vars)])
+
+    _assert_invariant(variables, scale, ROOT_RTOL)
 
 
 def _jump_off_row(jump: dict[str, float]) -> list[float]:
