@@ -116,3 +116,28 @@ def test_the_papers_force_scale_keeps_the_default_tolerance():
     assert force_atol(tolerances, PAPER) == tolerances.atol
     small = _stresses_scaled(PAPER, 1e-30)
     assert force_atol(tolerances, small) == FORCE_ATOL_SHARE * small.G_star * small.d_max ** 2
+
+
+def _rate_contact(stress: float) -> me.Contact:
+    return me.Contact(me.Elastomer(PAPER.E * stress, PAPER.nu), me.Paraboloid(PAPER.R),
+                      me.RateDependentAdhesion(PAPER.dgamma0 * stress, PAPER.dgamma1 * stress, v_ref=1e-6, n=0.3),
+                      FrictionLaw("tau0", tau0=PAPER.tau0 * stress))
+
+
+@pytest.mark.parametrize(("stress", "speed"), [(1.0, 1e-3), (1.0, 1e6), (1e148, 1.0), (1e-140, 1.0)])
+def test_rate_runs_read_a_plateau_at_its_start_under_every_scaling(stress, speed):
+    """The rate law (``v_ref`` 1 µm/s, ``n = 0.3``), A 20°: ``F_x`` is held in stick after the corner, a plateau whose
+    samples differ by rounding. Its largest value's time is the plateau's start (the earliest tie, as the paper's law
+    reports it) at every scaling: the speeds ``s`` times (``v`` and ``v_ref``: times ``1/s``) or the stresses ``λ``
+    times. Before, the scan's rounding-largest sample: 4e-4 of the run later at ``s = 1e-3``."""
+    def simulate(stress: float, speed: float):
+        contact = dataclasses.replace(_rate_contact(stress), adhesion=dataclasses.replace(
+            _rate_contact(stress).adhesion, v_ref=1e-6 * speed))
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            return me.simulate(contact, me.Scenario("A", alpha=[20.0], d_max=PAPER.d_max, v=PAPER.v * speed),
+                               method="continuum")
+
+    reference, run = simulate(1.0, 1.0), simulate(stress, speed)
+    factors = {"N": stress, "Pa": stress, "m2": 1.0, "m": 1.0, "s": 1.0 / speed}
+    _assert_scaled(reference, run, lambda units: factors.get(units, 1.0), INTEGRATION_RTOL)
