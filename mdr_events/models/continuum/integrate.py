@@ -23,7 +23,7 @@ from .span_march import Marched, march
 from .span_panels import NODES, PIECE_NODES, panels, radau_rule, rule
 from .span_record import Span, Variable
 from .state import Cap, Regime
-from .tolerances import MIN_STEPS_PER_SPAN, SIMULTANEOUS_SHARE, Tolerances
+from .tolerances import MIN_STEPS_PER_SPAN, SIMULTANEOUS_SHARE, Tolerances, force_atol
 
 __all__ = ["integrate_span", "solve_between_knots", "fired_events", "radius_at"]
 
@@ -142,11 +142,12 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
     if solution is None and integrator.quadrature:  # (a right-hand side and events of the variable alone: panels)
         pieces = list(zip([problem.start, *problem.knots], [*problem.knots, problem.stop]))
         # (between knots, pieces of ~1/120 of a span on a 41-point table: a rule of fewer points is exact enough)
-        solution = panels(problem.rhs, pieces, force, problem.events, tolerances.rtol, tolerances.atol,
-                          problem.max_step, radau_rule(PIECE_NODES) if problem.knots else rule(NODES))
+        atol = force_atol(tolerances, model.params)
+        solution = panels(problem.rhs, pieces, force, problem.events, tolerances.rtol, atol, problem.max_step,
+                          radau_rule(PIECE_NODES) if problem.knots else rule(NODES))
     elif solution is None:
         solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, problem.events,
-                                       tolerances, problem.max_step)
+                                       tolerances, problem.max_step, force_atol(tolerances, model.params))
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol
@@ -166,7 +167,7 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
 
 
 def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, knots: list[float], events: list,
-                        tolerances: Tolerances, max_step: float) -> Marched:
+                        tolerances: Tolerances, max_step: float, atol: float | None = None) -> Marched:
     """``solve_ivp(rhs, (start, stop), [force], method="DOP853", dense_output=True, events=events, ...)``, restarted
     at each knot of the right-hand side, by :func:`~.span_march.march` (``solve_ivp``'s loop without its bookkeeping:
     the same steps, roots and dense output).
@@ -194,6 +195,8 @@ def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, 
         The solver's (its ``rtol`` and ``atol``).
     max_step : float
         The solver's largest step.
+    atol : float, optional
+        The absolute tolerance (N) used (default ``tolerances.atol``; a run's: :func:`~.tolerances.force_atol`).
 
     Returns
     -------
@@ -201,7 +204,8 @@ def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, 
         The status, the joined dense output from ``start``, the first event's root and the state at the end.
     """
     pieces = list(zip([start, *knots], [*knots, stop]))
-    return march(rhs, pieces, force, events, tolerances.rtol, tolerances.atol, max_step, first_steps=bool(knots))
+    atol = tolerances.atol if atol is None else atol
+    return march(rhs, pieces, force, events, tolerances.rtol, atol, max_step, first_steps=bool(knots))
 
 
 def radius_at(model: ContinuumModel, span: Span, t: float) -> float:
