@@ -58,7 +58,7 @@ def run_scales(params: Parameters, profile: Profile | None = None, friction: Fri
     ``d_max`` and, with adhesion, the jump-off of the ``Δγ1`` branch.
 
     ``adhesion=False`` reads neither work of adhesion: the radius is the non-adhesive contact's and no jump-off is
-    among the scales (a slip onset without adhesion, :func:`~mdr_events.theory.power_law.check_onset_scales`), as a
+    among the scales (a slip onset without adhesion, :func:`~mdr_events.theory.power_law.arguments.check_onset_scales`), as a
     copy of ``params`` with both works 0 would give, without making one."""
     known: dict[str, object] = {}  # (each computed once: a sweep checks every value of its grid)
     work = params.dgamma0 if adhesion else 0.0

@@ -9,8 +9,8 @@ the spans): the values each span's own call gives, bit for bit, in a call per gr
   repeated over its points, in the order ``Primitive.__call__`` sums them;
 - forces linear in time (:class:`~.span.LinearForce`, a pinned span's): ``F0 + rate (t − t0)`` with each span's
   numbers repeated over its points;
-- a bonded layer's closed forms on one branch (:class:`~.layer_closed_form.LayerPrimitive`s sharing their cells'
-  series): the series of every row any of them reads at all their radii in one call (each row and radius a lane of
+- a bonded layer's closed forms on one branch (each a :class:`~.layer_closed_form.LayerPrimitive`, sharing their
+  cells' series): the series of every row any of them reads at all their radii in one call (each row and radius a lane of
   Clenshaw's recurrence of its own), each span's ``P`` of its own rows (the others ``0.0``, as its call leaves them);
 - anything else (another dense output, a layer's closed form of at most ``SCALAR_RADII`` points or ``P ≡ 0``), and a
   group of one span: its own call, :func:`~.dense.force_values`.
