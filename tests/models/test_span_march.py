@@ -22,12 +22,10 @@ from mdr_events.models.paths import Path
 PAPER = me.Parameters.paper()
 
 
-def solve_ivp_between_knots(rhs, start, stop, force, knots, events, tolerances, max_step, atol=None):
+def solve_ivp_between_knots(rhs, start, stop, force, knots, events, tolerances, max_step):
     """The route before :mod:`~mdr_events.models.continuum.span_march`: ``solve_ivp`` per piece between the knots,
-    the pieces' dense outputs joined; ``atol`` the run's (:func:`~mdr_events.models.continuum.tolerances.force_atol`),
-    as :func:`~mdr_events.models.continuum.integrate.solve_between_knots` takes it."""
-    atol = tolerances.atol if atol is None else atol
-    options = dict(method="DOP853", rtol=tolerances.rtol, atol=atol, dense_output=True,
+    the pieces' dense outputs joined."""
+    options = dict(method="DOP853", rtol=tolerances.rtol, atol=tolerances.atol, dense_output=True,
                    events=events or None, max_step=max_step)
     if not knots:
         solution = solve_ivp(rhs, (start, stop), [force], **options)

@@ -10,6 +10,7 @@ The span's right-hand side and events are its integrator's (:class:`~.span.SpanI
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import Callable
 
@@ -146,8 +147,9 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
         solution = panels(problem.rhs, pieces, force, problem.events, tolerances.rtol, atol, problem.max_step,
                           radau_rule(PIECE_NODES) if problem.knots else rule(NODES))
     elif solution is None:
+        run_tolerances = dataclasses.replace(tolerances, atol=force_atol(tolerances, model.params))
         solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, problem.events,
-                                       tolerances, problem.max_step, force_atol(tolerances, model.params))
+                                       run_tolerances, problem.max_step)
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol
@@ -167,7 +169,7 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
 
 
 def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, knots: list[float], events: list,
-                        tolerances: Tolerances, max_step: float, atol: float | None = None) -> Marched:
+                        tolerances: Tolerances, max_step: float) -> Marched:
     """``solve_ivp(rhs, (start, stop), [force], method="DOP853", dense_output=True, events=events, ...)``, restarted
     at each knot of the right-hand side, by :func:`~.span_march.march` (``solve_ivp``'s loop without its bookkeeping:
     the same steps, roots and dense output).
@@ -192,11 +194,9 @@ def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, 
     events : list
         The terminal event functions.
     tolerances : Tolerances
-        The solver's (its ``rtol`` and ``atol``).
+        The solver's (its ``rtol`` and ``atol``; a run's ``atol`` is :func:`~.tolerances.force_atol`).
     max_step : float
         The solver's largest step.
-    atol : float, optional
-        The absolute tolerance (N) used (default ``tolerances.atol``; a run's: :func:`~.tolerances.force_atol`).
 
     Returns
     -------
@@ -204,8 +204,7 @@ def solve_between_knots(rhs: Callable, start: float, stop: float, force: float, 
         The status, the joined dense output from ``start``, the first event's root and the state at the end.
     """
     pieces = list(zip([start, *knots], [*knots, stop]))
-    atol = tolerances.atol if atol is None else atol
-    return march(rhs, pieces, force, events, tolerances.rtol, atol, max_step, first_steps=bool(knots))
+    return march(rhs, pieces, force, events, tolerances.rtol, tolerances.atol, max_step, first_steps=bool(knots))
 
 
 def radius_at(model: ContinuumModel, span: Span, t: float) -> float:
