@@ -91,6 +91,15 @@ def measure(roots: list[str], script: str, tasks: list[str], repeat: int, cpu: b
     return [{task: statistics.median(values) for task, values in found.items()} for found in times]
 
 
+def print_ratios(medians: list[dict[str, float]], names, label: str = "{}") -> None:
+    """With two checkouts measured (this one, then ``--against``'s), print each task's ratio before / now (two
+    decimals), the tasks ``names`` in order, each shown as ``label.format(name)``; with one, nothing."""
+    if len(medians) == 2:
+        now, before = medians
+        print("  ratio before / now: " + ", ".join(f"{label.format(name)} {before[name] / now[name]:.2f}x"
+                                                   for name in names))
+
+
 def command_line(description: str, script: str, tasks: callable, repeat: int):
     """A benchmark's options (``--repeat``, ``--against DIR``, ``--cpu``) and the checkouts they name (label -> root,
     this one first); ``None`` where the process is a worker (``--worker``), which has then served ``tasks()``."""

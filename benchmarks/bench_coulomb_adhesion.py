@@ -21,7 +21,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from _side_by_side import clock_name, measure, serve, verdict
+from _side_by_side import clock_name, measure, print_ratios, serve, verdict
 
 #: Issue 26's targets: a Coulomb-with-adhesion run of scenario A at 20° over the τ0 run; a 10-cycle fretting path (s).
 RATIO_TARGET, FRETTING_TARGET = 2.0, 0.1
@@ -92,9 +92,7 @@ def main() -> None:
           f"{options.repeat} ({clock_name(options.cpu)}), interleaved")
     for name, found in zip(roots, medians):
         report(name, found)
-    if len(medians) == 2:
-        now, before = medians
-        print("  ratio before / now: " + ", ".join(f"{task} {before[task] / now[task]:.2f}x" for task in tasks))
+    print_ratios(medians, tasks)
 
 
 if __name__ == "__main__":

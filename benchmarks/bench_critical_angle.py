@@ -17,7 +17,7 @@ from __future__ import annotations
 import importlib.util
 from pathlib import Path
 
-from _side_by_side import clock_name, command_line, measure
+from _side_by_side import clock_name, command_line, measure, print_ratios
 
 #: The tasks timed.
 TASKS = ("flat punch", "power law", "subclass test")
@@ -57,9 +57,7 @@ def main() -> None:
           f"({clock_name(options.cpu)}), interleaved")
     for name, found in zip(roots, medians):
         print(f"  {name}: " + ", ".join(f"{task} {found[task] * 1e3:.1f} ms" for task in TASKS))
-    if len(medians) == 2:
-        now, before = medians
-        print("  ratio before / now: " + ", ".join(f"{task} {before[task] / now[task]:.2f}x" for task in TASKS))
+    print_ratios(medians, TASKS)
 
 
 if __name__ == "__main__":

@@ -18,7 +18,7 @@ Run: ``python benchmarks/bench_evaluate.py [--repeat N] [--against DIR] [--cpu]`
 
 from __future__ import annotations
 
-from _side_by_side import Staged, clock_name, command_line, measure, verdict
+from _side_by_side import Staged, clock_name, command_line, measure, print_ratios, verdict
 
 #: The paths timed, by their labels in ``bench_simulate.py``.
 PATHS = ("A 20°", "B 20°", "zigzag", "reciprocating", "A 20° table")
@@ -63,9 +63,7 @@ def main() -> None:
           f"({clock_name(options.cpu)}), interleaved, per call")
     for name, found in zip(roots, medians):
         report(name, found)
-    if len(medians) == 2:
-        now, before = medians
-        print("  ratio before / now: " + ", ".join(f"{label} {before[label] / now[label]:.2f}x" for label in PATHS))
+    print_ratios(medians, PATHS)
 
 
 if __name__ == "__main__":

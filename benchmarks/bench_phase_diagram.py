@@ -25,7 +25,7 @@ import numpy as np
 from scipy import optimize
 
 import mdr_events as me
-from _side_by_side import clock_name, measure, serve, verdict
+from _side_by_side import clock_name, measure, print_ratios, serve, verdict
 from _timing import median_time
 
 N_ANGLES = 100_000
@@ -88,10 +88,7 @@ def main() -> None:
         print(f"  {name}: " + ", ".join(f"scenario {scenario} {found[scenario] * 1e3:.1f} ms (target < "
                                         f"{SCENARIO_TARGET * 1e3:.0f} ms: {verdict(found[scenario], SCENARIO_TARGET)})"
                                         for scenario in found))
-    if len(medians) == 2:
-        now, before = medians
-        print("  ratio before / now: " + ", ".join(f"scenario {scenario} {before[scenario] / now[scenario]:.2f}x"
-                                                   for scenario in now))
+    print_ratios(medians, medians[0], "scenario {}")
 
     p = me.Parameters.paper()
     alphas = np.linspace(0.0, 90.0, N_ANGLES)
