@@ -10,7 +10,6 @@ The span's right-hand side and events are its integrator's (:class:`~.span.SpanI
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from typing import Callable
 
@@ -24,7 +23,7 @@ from .span_march import Marched, march
 from .span_panels import NODES, PIECE_NODES, panels, radau_rule, rule
 from .span_record import Span, Variable
 from .state import Cap, Regime
-from .tolerances import MIN_STEPS_PER_SPAN, SIMULTANEOUS_SHARE, Tolerances, force_atol
+from .tolerances import MIN_STEPS_PER_SPAN, SIMULTANEOUS_SHARE, Tolerances
 
 __all__ = ["integrate_span", "solve_between_knots", "fired_events", "radius_at"]
 
@@ -135,7 +134,7 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
         problem = SpanProblem(integrator.rhs, events, start, stop, integrator.knots(), integrator.max_step())
     else:  # (the variable u of :mod:`.graded`, from 1 to 0)
         problem = graded_problem(integrator, grading, events, MIN_STEPS_PER_SPAN)
-    tolerances = model.tolerances
+    tolerances = model.solver_tolerances
     primitive = integrator.primitive() if grading is None else None
     # (no front through the anchors: the force in closed form, :mod:`.closed_form`; None: an event it left unsettled)
     solution = None if primitive is None else closed_span(primitive, problem.start, problem.stop, force, integrator.G2,
@@ -143,13 +142,11 @@ def _integrate(model: ContinuumModel, span: Span, integrator: SpanIntegrator, fo
     if solution is None and integrator.quadrature:  # (a right-hand side and events of the variable alone: panels)
         pieces = list(zip([problem.start, *problem.knots], [*problem.knots, problem.stop]))
         # (between knots, pieces of ~1/120 of a span on a 41-point table: a rule of fewer points is exact enough)
-        atol = force_atol(tolerances, model.params)
-        solution = panels(problem.rhs, pieces, force, problem.events, tolerances.rtol, atol, problem.max_step,
-                          radau_rule(PIECE_NODES) if problem.knots else rule(NODES))
+        solution = panels(problem.rhs, pieces, force, problem.events, tolerances.rtol, tolerances.atol,
+                          problem.max_step, radau_rule(PIECE_NODES) if problem.knots else rule(NODES))
     elif solution is None:
-        run_tolerances = dataclasses.replace(tolerances, atol=force_atol(tolerances, model.params))
         solution = solve_between_knots(problem.rhs, problem.start, problem.stop, force, problem.knots, problem.events,
-                                       run_tolerances, problem.max_step)
+                                       tolerances, problem.max_step)
     if solution.status < 0:
         raise RuntimeError(f"solve_ivp failed on [{start}, {stop}] ({span.regime.value}): {solution.message}")
     span.interpolant = solution.sol

@@ -3,7 +3,7 @@ segments as linear motions."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import NamedTuple
 
 import numpy as np
@@ -18,7 +18,7 @@ from .branch import Branch, make_branch
 from .caps import Caps, caps_of, compressed_zone_alone, split_regions
 from .media import medium_of
 from .state import Regime
-from .tolerances import NEGLIGIBLE_SHARE, PIECE_SHARE, SEGMENT_RESOLUTION, Tolerances
+from .tolerances import NEGLIGIBLE_SHARE, PIECE_SHARE, SEGMENT_RESOLUTION, Tolerances, force_atol
 
 
 class ContinuumModel:
@@ -41,6 +41,9 @@ class ContinuumModel:
 
     Attributes
     ----------
+    solver_tolerances : Tolerances
+        The solver's for this run: ``tolerances`` with its ``atol`` capped by the run's force scale
+        (:func:`~.tolerances.force_atol`).
     adhesion : Adhesion
         The adhesion law (:func:`~mdr_events.contact.adhesion.law_of`: the paper's law of ``params`` by default).
     grow, shrink : Branch
@@ -79,6 +82,7 @@ class ContinuumModel:
                  friction: FrictionLaw = TAU0, adhesion: AdhesionLaw | None = None, layer: Layer = HALF_SPACE):
         self.params = params
         self.tolerances = tolerances
+        self.solver_tolerances = replace(tolerances, atol=force_atol(tolerances, params))
         self.profile = profile
         self.friction = friction
         self.adhesion = law_of(params, adhesion)
