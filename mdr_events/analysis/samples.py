@@ -47,7 +47,7 @@ __all__ = ["in_contact", "exact_at", "compared_samples", "check_run_covers_the_c
            "uncovered_share", "left_out_error", "corner_excess", "CONTINUOUS_EVENTS", "exact_range", "relative_norms",
            "candidate_events", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "CONTACT_MAKING_EVENTS", "events_not_shown",
            "event_time_errors", "FULL_SLIP_SHARE", "SLIDING_SHARE", "Sliding", "sliding", "COMPARED", "UNITS",
-           "CONTACT_INDICATORS", "MIN_SAMPLES_IN_CONTACT",
+           "CONTACT_INDICATORS", "MIN_SAMPLES_IN_CONTACT", "contact_of_tangential_force",
            "GAP_FACTOR", "TIME_AXIS_SHARE", "ExactSolution"]
 
 
@@ -90,6 +90,20 @@ def in_contact(quantities: Mapping[str, np.ndarray]) -> np.ndarray:
             return np.nan_to_num(quantities[name]) > 0
     return np.nan_to_num(quantities["normal_force"]) != 0 if "normal_force" in quantities else \
         np.nan_to_num(quantities["tangential_force"]) != 0
+
+
+def contact_of_tangential_force(contact: np.ndarray, tangential_force: np.ndarray, exact: dict,
+                                tolerance: float) -> np.ndarray:
+    """Where a candidate that shows only its tangential force is in contact: where ``F_x ≠ 0``
+    (:func:`in_contact`), and also where it reads 0 while the exact run is in contact with an ``F_x`` within
+    ``tolerance`` of its range of 0 (no tangential load: scenario B's vertical stroke, a reversal). A 0 where the exact
+    ``F_x`` is beyond that is a contact the candidate lost, as for any other quantity: it counts in
+    :func:`contact_differs_share`. Before, every 0 was read as out of contact and left out (``left_out`` code 2)
+    with no share counted: a run whose ``F_x`` was 0 over a third of the path passed."""
+    exact_contact = exact["contact_radius"] > 0
+    force = exact["tangential_force"]
+    unloaded = np.abs(np.nan_to_num(force)) <= tolerance * exact_range(force, exact_contact)
+    return contact | (exact_contact & unloaded & (np.nan_to_num(tangential_force) == 0))
 
 
 def _left_out(times: np.ndarray, exact: dict, candidate: dict, contact: np.ndarray, events) -> np.ndarray:

@@ -1,0 +1,105 @@
+"""The thirtieth hostile round (issue 32), the referee's side: each class of what failed, with the cases that showed
+it.
+
+The round's cases (``validate`` on wrong runs built as a DEM user's simulator gets them wrong: right forces with the
+radius or area off, F_x of the wrong sign or 0 in one stroke, events shifted, slip events missing or extra, adhesion
+without hysteresis, another friction law, ``τ0``, ``μ``, ``R``, ``E`` or angle, irregular or duplicated samples, a
+time or a column in other units, runs that stop after an event, noise at the tolerance's edge; beside the right runs,
+the continuum resampled and the discrete springs at 8 and 2 µm, noisy within tolerance) are listed with their margins
+in the round's summary; what failed is below.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import mdr_events as me
+from mdr_events.app.cli import main
+
+#: The continuum's verdict bound (the default) and the spring model's at :data:`SPRING_DX` (its max error there:
+#: 0.34 % of the range, scenario B's F_x).
+CONTINUUM_TOLERANCE = 1e-3
+SPRING_TOLERANCE = 1e-2
+#: The spring spacing of the discrete runs (m).
+SPRING_DX = 8e-6
+#: The noise added to a right run, as a share of the tolerance times the quantity's range: inside the bound.
+NOISE_SHARE = 0.4
+#: The angle of the paths (degrees).
+ALPHA = 20.0
+
+
+def _run(scenario: str, method) -> dict[str, np.ndarray]:
+    """The paper's contact along ``scenario`` at :data:`ALPHA`: time and every quantity a referee reads."""
+    ds = me.simulate(me.Contact.paper(), me.Scenario(scenario, alpha=[ALPHA]), method).sel(alpha=ALPHA)
+    return {name: ds[name].values.copy() for name in ("time", "normal_force", "tangential_force", "contact_area",
+                                                       "contact_radius", "sliding_fraction")}
+
+
+@pytest.fixture(scope="module")
+def runs() -> dict[tuple[str, str], tuple[dict[str, np.ndarray], float]]:
+    """The right runs, each with its tolerance: the continuum and the springs along A and B."""
+    return {(scenario, kind): (_run(scenario, method), tolerance) for scenario in ("A", "B")
+            for kind, method, tolerance in (("continuum", "continuum", CONTINUUM_TOLERANCE),
+                                            ("springs", me.Discrete(dx=SPRING_DX), SPRING_TOLERANCE))}
+
+
+def _stretches(run: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+    """Stretches of a run a simulator's F_x may be lost over (written as 0): before and after its largest |F_x|, and
+    the middle third of the samples."""
+    n = run["time"].size
+    peak = int(np.nanargmax(np.abs(run["tangential_force"])))
+    index = np.arange(n)
+    return {"before the peak": index < peak, "after the peak": index > peak,
+            "middle third": (index > n // 3) & (index < 2 * n // 3)}
+
+
+CASES = [(scenario, kind, stretch) for scenario in ("A", "B") for kind in ("continuum", "springs")
+         for stretch in ("before the peak", "after the peak", "middle third")]
+
+
+@pytest.mark.parametrize("scenario, kind, stretch", CASES)
+def test_a_tangential_force_alone_lost_over_a_stretch_fails(runs, scenario, kind, stretch):
+    """Class 1 (a broken run passed): a candidate that writes its tangential force alone (a friction rig's or a DEM's
+    F_x(t)) read every 0 as out of contact, left out of the norms (``left_out`` code 2) and bounded only within the
+    exact values and 0, which every 0 is; and a tangential force alone counted no contact share. A run whose F_x was
+    0 before its peak, after it or over the middle third passed (A and B, continuum at 1e-3 and springs at 1e-2;
+    of the 12, 'after the peak' failed along A and B's springs, on one sample left out a range from the exact value).
+    Now a 0 where the exact F_x is beyond the tolerance of 0 is a contact lost, and its time counts: each fails on
+    its contact."""
+    run, tolerance = runs[scenario, kind]
+    lost = _stretches(run)[stretch]
+    candidate = {"time": run["time"], "tangential_force": np.where(lost, 0.0, run["tangential_force"])}
+    report = me.validate(candidate, me.Contact.paper(), scenario, ALPHA, tolerance=tolerance)
+    assert report.attrs["verdict"] == "fail"
+    assert float(report["contact_differs_share"]) > tolerance
+
+
+@pytest.mark.parametrize("scenario, kind", [(s, k) for s in ("A", "B") for k in ("continuum", "springs")])
+def test_a_right_tangential_force_alone_still_passes(runs, scenario, kind):
+    """The right runs' F_x alone, as written and with noise inside the bound, pass: scenario B's vertical stroke,
+    where the exact F_x is 0 in contact, reads as in contact, not as a contact lost."""
+    run, tolerance = runs[scenario, kind]
+    force = run["tangential_force"]
+    spread = np.nanmax(force) - np.nanmin(force)
+    noise = NOISE_SHARE * tolerance * spread * np.random.default_rng(0).uniform(-1.0, 1.0, force.size)
+    for values in (force, force + noise * (force != 0)):
+        report = me.validate({"time": run["time"], "tangential_force": values}, me.Contact.paper(), scenario, ALPHA,
+                             tolerance=tolerance)
+        assert report.attrs["verdict"] == "pass", report.attrs.get("failures")
+        assert float(report["contact_differs_share"]) <= tolerance
+
+
+def test_the_cli_fails_a_tangential_force_alone_lost_over_a_third(runs, tmp_path, capsys):
+    """The same on the command line: a CSV of time and F_x, 0 over the middle third, exits 1 (outside its
+    tolerance); the right one exits 0."""
+    run, tolerance = runs["A", "springs"]
+    lost = _stretches(run)["middle third"]
+    for name, force, status in (("lost.csv", np.where(lost, 0.0, run["tangential_force"]), 1),
+                                ("right.csv", run["tangential_force"], 0)):
+        path = tmp_path / name
+        np.savetxt(path, np.column_stack([run["time"], force]), delimiter=",", header="time,tangential_force",
+                   comments="")
+        argv = ["validate", str(path), "--scenario", "A", "--alpha", str(ALPHA), "--tolerance", str(tolerance),
+                "--out", str(tmp_path / f"out_{name}")]
+        assert main(argv) == status, capsys.readouterr()
