@@ -22,7 +22,8 @@ Events found in the candidate by these rules (``nan`` where the candidate lacks 
   for that instant only: every spring is in tension), or without a sliding fraction, with
   ``|F_x| >= (1 − FULL_SLIP_SHARE) τ0 A``;
 - **start of detachment**: the first sample after the largest contact area (or radius) at which it is
-  smaller than that largest value;
+  smaller than that largest value by more than :data:`DETACHMENT_SHARE` of it (a pinned radius's round-off is no
+  detachment);
 - **pull-off**: the first sample without contact after a contact (contact: ``A > 0``, or ``a > 0``, or
   ``F_N ≠ 0`` without either); its force is ``F_N`` of the last sample in contact, reported beside
   the exact force at the jump and the exact ``F_N`` at that same sample (``F_N(t)`` has an infinite
@@ -47,7 +48,7 @@ __all__ = ["in_contact", "exact_at", "compared_samples", "check_run_covers_the_c
            "uncovered_share", "left_out_error", "corner_excess", "CONTINUOUS_EVENTS", "exact_range", "relative_norms",
            "candidate_events", "LEFT_OUT_CODES", "VALIDATED_EVENTS", "CONTACT_MAKING_EVENTS", "events_not_shown",
            "event_time_errors", "FULL_SLIP_SHARE", "SLIDING_SHARE", "Sliding", "sliding", "COMPARED", "UNITS",
-           "CONTACT_INDICATORS", "MIN_SAMPLES_IN_CONTACT", "contact_of_tangential_force",
+           "CONTACT_INDICATORS", "MIN_SAMPLES_IN_CONTACT", "contact_of_tangential_force", "DETACHMENT_SHARE",
            "GAP_FACTOR", "TIME_AXIS_SHARE", "ExactSolution"]
 
 
@@ -65,6 +66,12 @@ FULL_SLIP_SHARE = 1e-3
 #: contact has a zero compression and cap, and a vertical indentation's zone is that one spring: 4e-16 of the
 #: contact, not a slip onset).
 SLIDING_SHARE = 1e-9
+#: The start of detachment is read where the contact's size falls below its largest by more than this share of it: a
+#: radius or area held on a pinned branch wobbles at its simulator's round-off (an area summed in another order, a
+#: radius solved again each step: 1e-16 to 1e-10 of it), and a wobble of one ulp after the largest sample started the
+#: detachment there, 5 % of the path early (a right run failed by 47 tolerances); a spring model's least fall is one
+#: spring's ring, 2 dx / a (1e-3 and more).
+DETACHMENT_SHARE = 1e-9
 #: Continuum events after which the first sample is left out (a corner cut, a contact made or lost).
 STRADDLED_EVENTS = ("corner", "tangential_reversal", "first_contact", "re_contact", "pull_off", "contact_ends")
 #: Of those, the events that end a contact.
@@ -353,7 +360,7 @@ def candidate_events(times, quantities, contact, params, full_slip_by_force: boo
     size = quantities.get("contact_area", quantities.get("contact_radius"))
     if size is not None and np.any(np.isfinite(size)):
         largest = int(np.nanargmax(size))
-        smaller = np.flatnonzero(np.nan_to_num(size[largest:], nan=np.inf) < size[largest])
+        smaller = np.flatnonzero(np.nan_to_num(size[largest:], nan=np.inf) < size[largest] * (1.0 - DETACHMENT_SHARE))
         out["detachment_starts"] = float(times[largest + smaller[0]]) if smaller.size else math.nan
     lost = np.flatnonzero(contact[:-1] & ~contact[1:])
     if lost.size:
