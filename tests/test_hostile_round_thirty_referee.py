@@ -17,6 +17,7 @@ import pytest
 import mdr_events as me
 from mdr_events.analysis.reports import ValidationReport
 from mdr_events.app.cli import main
+from hostile_checks import cli_one_line, one_line_naming
 
 #: The continuum's verdict bound (the default) and the spring model's at :data:`SPRING_DX` (its max error there:
 #: 0.34 % of the range, scenario B's F_x).
@@ -144,3 +145,37 @@ def test_a_pinned_radius_that_falls_early_still_starts_its_detachment_there(runs
     report = me.validate(fallen, me.Contact.paper(), "A", ALPHA, tolerance=tolerance)
     assert report.attrs["verdict"] == "fail"
     assert [text.split(":")[0] for text in ValidationReport(report).failures] == ["detachment_starts"]
+
+
+#: The angle of another run's output (degrees), judged at :data:`ALPHA`.
+OTHER_ALPHA = 21.0
+
+
+@pytest.fixture(scope="module")
+def other_angle_run():
+    """``simulate``'s springs along A at :data:`OTHER_ALPHA`: its ``alpha`` a dimension of one run."""
+    return me.simulate(me.Contact.paper(), me.Scenario("A", alpha=[OTHER_ALPHA]), me.Discrete(dx=SPRING_DX))
+
+
+def test_one_run_labelled_at_another_angle_is_refused(other_angle_run):
+    """Class 7 (what trips a user): the output of a run at 21° judged at 20° (its ``alpha`` a dimension of one, or a
+    scalar coordinate after ``.sel``) was read as the run at 20°, the label ignored (``select`` chose among several
+    runs only), and failed on its numbers with nothing saying it was another angle's run. Refused in one line naming
+    both angles, by validate and by fit."""
+    contact = me.Contact.paper()
+    for candidate in (other_angle_run, other_angle_run.sel(alpha=OTHER_ALPHA)):
+        message = one_line_naming(lambda: me.validate(candidate, contact, "A", ALPHA, tolerance=SPRING_TOLERANCE),
+                                  "alpha=21")
+        assert f"alpha={ALPHA!r}" in message
+        one_line_naming(lambda: me.fit(candidate, contact, "A", ALPHA, free=["tau0"]), "alpha=21")
+    right = me.simulate(contact, me.Scenario("A", alpha=[ALPHA]), me.Discrete(dx=SPRING_DX))
+    for candidate in (right, right.sel(alpha=ALPHA)):
+        assert me.validate(candidate, contact, "A", ALPHA, tolerance=SPRING_TOLERANCE).attrs["verdict"] == "pass"
+
+
+def test_the_cli_refuses_a_file_of_one_run_at_another_angle(other_angle_run, tmp_path, capsys):
+    path = tmp_path / "simulation_A.nc"
+    other_angle_run.to_netcdf(path)
+    err = cli_one_line(capsys, ["validate", str(path), "--scenario", "A", "--alpha", str(ALPHA), "--tolerance",
+                                str(SPRING_TOLERANCE), "--out", str(tmp_path / "out")])
+    assert "alpha=21" in err
