@@ -102,15 +102,21 @@ def in_contact(quantities: Mapping[str, np.ndarray]) -> np.ndarray:
 def contact_of_tangential_force(contact: np.ndarray, tangential_force: np.ndarray, exact: dict,
                                 tolerance: float) -> np.ndarray:
     """Where a candidate that shows only its tangential force is in contact: where ``F_x ≠ 0``
-    (:func:`in_contact`), and also where it reads 0 while the exact run is in contact with an ``F_x`` within
-    ``tolerance`` of its range of 0 (no tangential load: scenario B's vertical stroke, a reversal). A 0 where the exact
-    ``F_x`` is beyond that is a contact the candidate lost, as for any other quantity: it counts in
+    (:func:`in_contact`), and also where it reads 0 while the exact run is in contact and either the exact ``F_x`` is
+    within ``tolerance`` of its range of 0 (no tangential load: scenario B's vertical stroke, a reversal) or the
+    candidate's ``F_x`` is not 0 on both sides (a sample dropped out of its contact, not a contact made or lost at
+    another time: its pull-off would show it, and a tangential force alone shows none). A 0 at the ends of its
+    contact where the exact ``F_x`` is beyond the tolerance is a contact lost, as for any other quantity: it counts in
     :func:`contact_differs_share`. Before, every 0 was read as out of contact and left out (``left_out`` code 2)
     with no share counted: a run whose ``F_x`` was 0 over a third of the path passed."""
     exact_contact = exact["contact_radius"] > 0
     force = exact["tangential_force"]
     unloaded = np.abs(np.nan_to_num(force)) <= tolerance * exact_range(force, exact_contact)
-    return contact | (exact_contact & unloaded & (np.nan_to_num(tangential_force) == 0))
+    loaded = np.flatnonzero(contact)
+    within = np.zeros(contact.shape, dtype=bool)
+    if loaded.size:
+        within[loaded[0]:loaded[-1] + 1] = True
+    return contact | (exact_contact & (unloaded | within) & (np.nan_to_num(tangential_force) == 0))
 
 
 def _left_out(times: np.ndarray, exact: dict, candidate: dict, contact: np.ndarray, events) -> np.ndarray:
