@@ -42,6 +42,8 @@ def columns_listed(columns) -> str:
     return f"{cut_text(text, LISTED_CHARACTERS)} ({len(names)} columns)"
 
 
+#: How far a run's coordinate (an angle in degrees) may lie from the one ``select`` names and still be that run.
+SELECT_ATOL = 1e-9
 #: The kinds of NumPy arrays a column of real numbers has: integers and floats (not bools, complex numbers, times).
 REAL_KINDS = "iuf"
 #: What the mapping arguments of :func:`read_candidate` look like, for a message.
@@ -274,17 +276,33 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
 
 def _selected(dataset: xr.Dataset, source: str, select: Mapping[str, object]) -> xr.Dataset:
     """The run of a dataset of several (a simulation along ``alpha``) that ``select`` names (e.g. ``{"alpha": 20}``,
-    the angle the candidate is validated at); a dimension of one run, or absent, is left as it is."""
+    the angle the candidate is validated at); a dimension of one run, or absent, is left as it is, but one run labelled
+    at another number (a dimension of one, or a scalar coordinate: ``simulate``'s run at 21° judged at 20°) is
+    refused, as one missing from several is (:func:`_check_labelled_at`)."""
     for dimension, value in select.items():
+        if dimension in dataset.coords and dataset[dimension].size == 1 and \
+                np.issubdtype(dataset[dimension].dtype, np.number):
+            _check_labelled_at(dataset, source, dimension, value)
         if dimension in dataset.dims and dataset.sizes[dimension] > 1:
             value = check_real(f"select[{dimension!r}]", value, "one coordinate value, a number")
             values = dataset[dimension].values
-            matches = np.flatnonzero(np.isclose(values.astype(float), float(value), rtol=0.0, atol=1e-9))
+            matches = np.flatnonzero(np.isclose(values.astype(float), float(value), rtol=0.0, atol=SELECT_ATOL))
             if matches.size != 1:
                 raise ValueError(f"{source} holds runs along {dimension!r} at {', '.join(f'{v:g}' for v in values)}, "
                                  f"not at {dimension}={value!r}; allowed: one of those")
             dataset = dataset.isel({dimension: int(matches[0])})
     return dataset
+
+
+def _check_labelled_at(dataset: xr.Dataset, source: str, dimension: str, value: object) -> None:
+    """Refuse one run whose numeric coordinate ``dimension`` is not ``value`` (within the tolerance of several runs'
+    selection, :data:`SELECT_ATOL`)."""
+    value = check_real(f"select[{dimension!r}]", value, "one coordinate value, a number")
+    labelled = float(dataset[dimension].values.ravel()[0])
+    if not np.isclose(labelled, float(value), rtol=0.0, atol=SELECT_ATOL):
+        raise ValueError(f"{source} holds one run at {dimension}={labelled:g}, not at {dimension}={value!r}; allowed: "
+                         f"the run's own {dimension} (another run's output judged as this one's would pass or fail "
+                         "for the wrong reason)")
 
 
 def _check_units_have_columns(source: str, units: dict, names: dict, columns) -> None:
