@@ -4,6 +4,8 @@ version)."""
 
 from __future__ import annotations
 
+import tracemalloc
+
 import numpy as np
 import pytest
 import xarray as xr
@@ -61,3 +63,68 @@ def test_the_cli_refuses_to_resume_a_store_of_another_version(capsys, tmp_path):
     line = cli_one_line(capsys, ["sweep", str(study), "--resume"])
     assert "0.0.9" in line and __version__ in line and "--restart" in line, line
     assert main(["sweep", str(study), "--restart"]) == 0
+
+
+# --- validate and fit: memory per sample (class 4) -----------------------------------------------------------------
+# Both checked a candidate's samples against ``Limits.samples`` (1e7) alone: measured with tracemalloc after a warm-up,
+# a validation holds 364-512 B a sample and a fit 397-1786 B (more quantities, more free parameters), so that 1e7
+# samples, accepted, held 4-18 GB under the default 2 GiB.
+
+#: How far a run's measured peak may exceed the memory its guard checked (the per-sample constants are measured and
+#: rounded up; the arrays NumPy and xarray make around them are not all counted): round 29's slack.
+PEAK_SLACK = 1.5
+#: How far a guard's estimate may exceed the measured peak before it refuses legitimate work: round 29's.
+ESTIMATE_EXCESS = 10.0
+#: Samples of the candidates measured: large enough for the per-sample arrays to dominate the peak, cheap.
+SAMPLES = 20_000
+PAPER = me.Contact.paper()
+
+
+def _run_of(samples: int, scenario: str = "A"):
+    """The exact run of the paper's contact at 20 deg, ``samples`` output times: an honest candidate."""
+    return me.simulate(PAPER, me.Scenario(scenario, alpha=[20.0]), me.Continuum(samples=samples))
+
+
+def _peak(call) -> int:
+    """The bytes ``call()`` allocates at its peak beyond what was held before (after a warm-up call)."""
+    call()
+    tracemalloc.start()
+    try:
+        before = tracemalloc.get_traced_memory()[0]
+        call()
+        return tracemalloc.get_traced_memory()[1] - before
+    finally:
+        tracemalloc.stop()
+
+
+@pytest.mark.parametrize("scenario", ["A", "B"])
+def test_validate_counts_its_memory_per_sample(scenario):
+    run = _run_of(SAMPLES, scenario)
+    peak = _peak(lambda: me.validate(run, PAPER, scenario, 20.0))
+    with pytest.raises(me.ResourceLimitError, match="memory"):
+        me.validate(run, PAPER, scenario, 20.0, limits=me.Limits(memory=peak / PEAK_SLACK))
+    report = me.validate(run, PAPER, scenario, 20.0, limits=me.Limits(memory=peak * ESTIMATE_EXCESS))
+    assert report.attrs["verdict"] == "pass"
+
+
+@pytest.mark.parametrize("free", [["tau0"], ["tau0", "time_offset", "dgamma0"]])
+def test_fit_counts_its_memory_per_sample_quantity_and_free_parameter(free):
+    run = _run_of(SAMPLES)
+    peak = _peak(lambda: me.fit(run, PAPER, "A", 20.0, free=free))
+    with pytest.raises(me.ResourceLimitError, match="memory"):
+        me.fit(run, PAPER, "A", 20.0, free=free, limits=me.Limits(memory=peak / PEAK_SLACK))
+    result = me.fit(run, PAPER, "A", 20.0, free=free, limits=me.Limits(memory=peak * ESTIMATE_EXCESS))
+    assert result.parameters.tau0 == pytest.approx(PAPER.friction.tau0, rel=1e-3)
+
+
+def test_the_cli_refuses_a_validation_over_the_memory_limit_in_one_line(capsys, tmp_path):
+    path = tmp_path / "run.csv"
+    run = _run_of(SAMPLES)
+    columns = {name: run[name].values.ravel() for name in ("normal_force", "tangential_force")}
+    np.savetxt(path, np.column_stack([run["time"].values, *columns.values()]), delimiter=",",
+               header="time,normal_force,tangential_force", comments="")
+    for verb in (["validate", str(path)], ["fit", str(path), "--free", "tau0"]):
+        line = cli_one_line(capsys, [*verb, "--scenario", "A", "--alpha", "20", "--limit", "memory=5MB",
+                                     "--out", str(tmp_path / "out")])
+        assert "memory" in line and "samples" in line, line
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
