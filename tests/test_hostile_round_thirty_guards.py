@@ -193,3 +193,38 @@ def test_lammps_check_counts_the_validation_of_its_run_before_lammps_runs(over, 
                                                    limits=me.Limits(memory=over * run_bytes)), "memory",
                               (me.ResourceLimitError,))
     assert "validating" in message and str(LAMMPS_STEPS + 1) in message, message
+
+
+# --- a netCDF candidate: the values its header declares, not its bytes (class 4) ------------------------------------
+# The reader counted the file's size as memory, then loaded it and read each variable as float64: a file of int8
+# values took ~9 times its size (5.7 measured with a third of its values float64, tracemalloc), so that a file of
+# 1 GB, accepted under the default 2 GiB, would take ~9 GB.
+
+#: Values of the int8 variable in the file measured (its arrays dominate the peak; ~0.1 s).
+NETCDF_VALUES = 400_000
+
+
+def _int8_candidate(folder):
+    path = folder / "run.nc"
+    time = np.linspace(0.0, 1.0, 2000)
+    xr.Dataset({"normal_force": ("time", np.zeros_like(time)),
+                "flags": ("flag", np.ones(NETCDF_VALUES, np.int8))}, coords={"time": time}).to_netcdf(path, engine="scipy")
+    return path
+
+
+def test_a_netcdf_candidate_of_bytes_counts_its_values_as_read(tmp_path):
+    from mdr_events.io.candidates import read_candidate
+    path = _int8_candidate(tmp_path)
+    peak = _peak(lambda: read_candidate(path))
+    assert peak > 3 * path.stat().st_size  # (what the file's size alone missed)
+    message = one_line_naming(lambda: read_candidate(path, limits=me.Limits(memory=peak / PEAK_SLACK)), "memory",
+                              (me.ResourceLimitError,))
+    assert "values declared" in message, message
+    assert read_candidate(path, limits=me.Limits(memory=peak * ESTIMATE_EXCESS)).time.size == 2000
+
+
+def test_the_cli_refuses_a_netcdf_candidate_over_the_memory_limit_before_reading_it(capsys, tmp_path):
+    path = _int8_candidate(tmp_path)
+    line = cli_one_line(capsys, ["validate", str(path), "--scenario", "A", "--alpha", "20", "--limit",
+                                 f"memory={2 * path.stat().st_size}", "--out", str(tmp_path / "out")])
+    assert "values declared" in line, line
