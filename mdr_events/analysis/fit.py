@@ -72,6 +72,21 @@ from mdr_events.validation import check_callback, shown
 __all__ = ["fit", "FitResult", "OptimizerRun", "synthetic_measurement", "model_curves", "curves_of", "FreeParameters", "Identifiability", "ParameterEstimate", "estimate_noise",
            "FIT_CONTENT", "SYNTHETIC_CONTENT", "FREE_NAMES", "FITTED_QUANTITIES", "LOG_SCALED", "OFFSETS"]
 
+#: Bytes a fit holds per measured sample at its peak beyond a part per quantity fitted and free parameter: the model's
+#: curves at the samples, the residuals and the Jacobian's columns (one per free parameter, each of every quantity),
+#: the optimizer's copies (:func:`fit_bytes`). Measured with tracemalloc after a warm-up, 3e4 and 1e5 samples of the
+#: paper's A 20 deg: 397 B a sample with one quantity and tau0 free (430 B on a 5 mm layer), 788 B with four, 721 B
+#: with one and six free, 1786 B with four and six free; 384 + 72 q (f + 1) bounds each (0.74-0.82 of it). Issue 32,
+#: round 30: 1e7 samples, accepted by ``samples``, held 4-18 GB under a 2 GiB limit.
+FIT_BYTES_PER_SAMPLE, FIT_BYTES_PER_SAMPLE_VALUE = 384, 72
+
+
+def fit_bytes(samples: int, quantities: int, free: int) -> int:
+    """The memory a fit of ``samples`` measured samples of ``quantities`` quantities with ``free`` free parameters
+    holds at its peak (:data:`FIT_BYTES_PER_SAMPLE`), to count against ``Limits.memory`` before its first solve."""
+    return samples * (FIT_BYTES_PER_SAMPLE + FIT_BYTES_PER_SAMPLE_VALUE * quantities * (free + 1))
+
+
 #: The ``content`` attribute of a fit's dataset.
 FIT_CONTENT = "fit of the model to measured curves"
 
@@ -388,6 +403,9 @@ def _problem(job: FitJob, read: Candidate, nominal: Path, free: Sequence[str], l
     measurement = measurement_of(read, nominal, job.time_origin, job.noise)
     free_set = free_parameters(free, start, job.bounds, nominal.duration, max(nominal.max_depth, start.d_max), friction,
                                job.model.contact.layer)
+    limits.check(f"the fit of {read.time.size} samples of {len(measurement.values)} quantities with "
+                 f"{len(free_set.names)} free parameters",
+                 memory=fit_bytes(read.time.size, len(measurement.values), len(free_set.names)))
     # a scenario is rebuilt per trial (its way out ends below the jump-off, which depends on the parameters)
     problem = Problem(free_set, measurement, job.path_of, job.tolerances, limits, profile, friction,
                       job.model.contact.layer)

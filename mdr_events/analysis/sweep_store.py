@@ -14,8 +14,10 @@ except ImportError:  # pragma: no cover - Windows: no lock (one sweep at a time 
 import numpy as np
 import xarray as xr
 
+from mdr_events._version import __version__
 from mdr_events.analysis.sweep_runs import ERROR_CHARACTERS, HISTORY_QUANTITIES, QUANTITIES, ChunkResult
 from mdr_events.io.files import check_output_file, prepare_output_directory
+from mdr_events.validation import shown, shown_text
 
 __all__ = ["Store", "run_variables", "BYTES_PER_STORE_RUN", "BYTES_PER_SIGNATURE_RUN", "BYTES_PER_SIGNATURE_VALUE",
            "store_bytes"]
@@ -82,14 +84,33 @@ def _flat_names(quantities: Sequence[str], history_samples: int | None) -> list[
     return [*quantities, *histories, "failed", "error", "done"]
 
 
+#: The store's attribute naming the version of ``mdr_events`` that laid it out (its runs are that version's).
+VERSION_ATTRIBUTE = "sweep_package_version"
+
+
+def check_same_version(path: str, attrs: dict) -> None:
+    """Refuse, in one line, to resume a store laid out by another version of ``mdr_events`` (or by one before the
+    version was recorded): its runs were computed by that version's models, and resuming it would mix them with
+    this version's in one result (issue 32, round 30)."""
+    written = attrs.get(VERSION_ATTRIBUTE)
+    if written != __version__:
+        by = ("an earlier mdr_events that did not record its version" if written is None else
+              f"mdr_events {shown_text(written) if isinstance(written, str) else shown(written)}")
+        raise ValueError(f"store={path!r} was written by {by}, not by this mdr_events {__version__} (its runs would "
+                         "mix with this version's); allowed: resume=False (--restart) to run it afresh with this "
+                         "version, or resume it with the version that wrote it")
+
+
 def _read_back(path: str, signature: str, names: Sequence[str], runs: int) -> xr.Dataset:
-    """The store of this sweep at ``path``, read whole to resume it; a one-line ``ValueError`` if it holds another
-    sweep, or if its layout or a chunk was cut short (a variable missing, of another length, unreadable).
+    """The store of this sweep at ``path``, read whole to resume it; a one-line ``ValueError`` if it was written by
+    another version of ``mdr_events`` (:func:`check_same_version`), if it holds another sweep, or if its layout or a
+    chunk was cut short (a variable missing, of another length, unreadable).
 
     Read without its consolidated metadata, which the layout writes last: a store whose layout was interrupted
     printed xarray's warning of five lines, twice, and then ``No variable named 'done'. Variables on the dataset
     include [...]`` (issue 32, round 29)."""
     existing = xr.open_zarr(path, zarr_format=2, consolidated=False)
+    check_same_version(path, existing.attrs)
     if existing.attrs.get("sweep_signature") != signature:
         raise ValueError(f"store={path!r} holds another sweep (other parameters, grid or options); "
                          "allowed: this sweep's store to resume, or resume=False to start it afresh")
@@ -177,6 +198,7 @@ class Store:
         template = _flat_dataset(self.quantities, np.full((runs, len(self.quantities)), np.nan), [""] * runs,
                                  np.zeros(runs, bool), histories)
         template.attrs["sweep_signature"] = signature
+        template.attrs[VERSION_ATTRIBUTE] = __version__
         encoding = {name: {"chunks": (chunk,) + template[name].shape[1:]} for name in template.data_vars}
         try:
             template.to_zarr(self.path, mode="w", zarr_format=2, encoding=encoding, compute=True)

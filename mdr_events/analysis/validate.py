@@ -53,6 +53,12 @@ DEFAULT_TOLERANCE = 1e-3
 #: The exact solutions a referee reads (:func:`~mdr_events.models.methods.exact_solution`), one per kind of adhesion
 #: law's continuum.
 EXACT_SOLUTIONS = (PathSolution, RateSolution)
+#: Bytes per candidate sample a validation holds at its peak (the columns read, the exact values at the samples, the
+#: errors and masks of every quantity, the report's variables), counted against ``Limits.memory`` once the candidate is
+#: read and before the exact run (measured with tracemalloc after a warm-up, 3e4 and 1e5 samples: 364 B with one
+#: quantity, 379-396 B with three to five on the paper's A and B, 396 B under tau0+coulomb, 429 B on a 5 mm layer,
+#: 512 B under the rate law; issue 32, round 30: 1e7 samples, accepted by ``samples``, held ~4-5 GB under 2 GiB).
+BYTES_PER_VALIDATED_SAMPLE = 640
 #: The time origins :func:`validate` accepts besides a number.
 TIME_ORIGINS = ("first_contact", "path_start")
 
@@ -318,6 +324,8 @@ def _samples(job: ValidationJob, candidate, limits: Limits, progress, tolerance:
     contact where it is not 0 and where the exact one is within ``tolerance`` of 0:
     :func:`~mdr_events.analysis.samples.contact_of_tangential_force`)."""
     read = read_candidate(candidate, job.names, job.units, limits, select=job.select, progress=progress)
+    limits.check(f"validating {read.time.size} samples of {read.source}",
+                 memory=BYTES_PER_VALIDATED_SAMPLE * read.time.size)
     if not any(name in COMPARED for name in read.quantities):
         raise ValueError(f"{read.source}: none of {', '.join(COMPARED)} found (columns read: "
                          f"{', '.join(read.quantities)}); allowed: at least one of them (the sliding fraction alone "

@@ -227,9 +227,9 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
                              "mapping of arrays")
         if path.suffix.lower() == ".csv":  # (the other columns are named, not parsed: any text)
             return _read_csv(path, limits, progress, {*CANDIDATE_QUANTITIES, *wanted}), {}
-        # (loaded whole: its size counts as memory before it is read, as a CSV's rows do)
-        limits.check(f"reading {path} ({path.stat().st_size} bytes)", memory=path.stat().st_size)
-        candidate = load_netcdf(path, str(path), "a CSV file with a header or a netCDF-3 file")
+        # (loaded whole: the values its header declares count as memory before it is read, as a CSV's rows do)
+        candidate = load_netcdf(path, str(path), "a CSV file with a header or a netCDF-3 file",
+                                lambda lazy: _check_declared(path, lazy, limits))
     if isinstance(candidate, xr.Dataset):
         candidate = _selected(candidate, source, select or {})
         # a simulation of one case (dims ``alpha`` or ``case`` of size 1 beside ``time``) is that case's run
@@ -272,6 +272,20 @@ def _columns_and_units(candidate, source: str, limits: Limits = DEFAULT_LIMITS,
         return {name: column.ravel() for name, column in columns.items()}, {}
     raise TypeError(f"candidate of type {type(candidate).__name__} is not allowed; allowed: an xarray.Dataset, a "
                     "mapping of arrays, or the path of a CSV or netCDF file")
+
+
+#: Bytes a netCDF value takes once read as a candidate's column beside its value as stored (a float64).
+NETCDF_BYTES_PER_VALUE = 8
+
+
+def _check_declared(path: Path, lazy: xr.Dataset, limits: Limits) -> None:
+    """Count the values a netCDF file's header declares against ``limits.memory`` before they are loaded: each as stored
+    and as the float64 column it is read into (a file of bytes, int8, took 9 times its size: a file's size alone
+    counted 1/9 of it; a header may declare more than the file holds)."""
+    values = sum(int(variable.size) for variable in lazy.variables.values())
+    stored = sum(int(variable.size) * variable.dtype.itemsize for variable in lazy.variables.values())
+    limits.check(f"reading {path} ({path.stat().st_size} bytes; {values} values declared)",
+                 memory=stored + NETCDF_BYTES_PER_VALUE * values)
 
 
 def _selected(dataset: xr.Dataset, source: str, select: Mapping[str, object]) -> xr.Dataset:

@@ -38,6 +38,7 @@ from mdr_events.io.datasets import (PROGRAM, STAMP_ATTRIBUTES, describe_dims, di
                                    required_variables)
 from mdr_events.contact import Contact
 from mdr_events.io import netcdf3
+from mdr_events.limits import ResourceLimitError
 from mdr_events.io.paths import (ALLOWED_FILE, ALLOWED_PATH, TEMPORARY_MARKER, check_file_path,  # noqa: F401 - as before
                                  check_output_file, check_output_stem, input_file_problem, is_temporary_name,
                                  prepare_output_directory)
@@ -414,9 +415,12 @@ def _netcdf_kind_problem(path: str | os.PathLike) -> str | None:
     return None
 
 
-def load_netcdf(path: str | os.PathLike, where: str, allowed: str = f"a netCDF file written by {PROGRAM}") -> xr.Dataset:
+def load_netcdf(path: str | os.PathLike, where: str, allowed: str = f"a netCDF file written by {PROGRAM}",
+                before_load: Callable[[xr.Dataset], None] | None = None) -> xr.Dataset:
     """The netCDF-3 file at ``path``, fully loaded and closed; ``ValueError`` naming ``where`` and ``allowed`` if it is
-    missing, a directory, empty, netCDF-4 or unreadable (the reader's message on one line)."""
+    missing, a directory, empty, netCDF-4 or unreadable (the reader's message on one line). ``before_load`` is given
+    the file opened lazily (its header read: every variable's declared shape and type) before anything is loaded; what
+    it raises (a :class:`~mdr_events.limits.ResourceLimitError`) is raised as it is."""
     problem = input_file_problem(path)
     if problem is not None:
         raise ValueError(f"{where}{problem}; allowed: {allowed}")
@@ -424,7 +428,11 @@ def load_netcdf(path: str | os.PathLike, where: str, allowed: str = f"a netCDF f
         why = _netcdf_kind_problem(path)
         if why is None:
             with xr.open_dataset(path, engine="scipy") as handle:
+                if before_load is not None:
+                    before_load(handle)
                 return handle.load()
+    except ResourceLimitError:
+        raise
     except FileNotFoundError:
         raise ValueError(f"{where}: no such file; allowed: {allowed}") from None
     except Exception as error:  # noqa: BLE001 - whatever the reader raises on a file's bytes (SyntaxError too)
