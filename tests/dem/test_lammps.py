@@ -13,6 +13,7 @@ import pytest
 
 import mdr_events as me
 from mdr_events.app.cli import main
+from mdr_events.app.study import StudyError
 from mdr_events.dem import deck as deck_module
 from mdr_events.dem import runner
 from mdr_events.dem.check import lammps_check
@@ -235,5 +236,5 @@ def test_a_study_table_without_mu_for_its_tangential_model_is_named(tmp_path):
     study = tmp_path / "study.toml"
     study.write_text('[lammps_check]\nnormal = "jkr"\ntangential = "mindlin"\nscenario = "A"\nalpha = 20\n'
                      '[output]\ndirectory = "out"\n', encoding="utf-8")
-    with pytest.raises(me.app.study.StudyError, match=r"\[lammps_check\] mu is required"):
+    with pytest.raises(StudyError, match=r"\[lammps_check\] mu is required"):
         me.load_study(study)
