@@ -55,3 +55,47 @@ def test_the_rate_law_s_springs_run_where_the_edge_stops(indenter, scenario, fri
     _every_variable_finite_in_contact(ds)
     force = ds["tangential_force"].values
     assert np.all(force[np.isfinite(force)] == 0.0)
+
+
+# -- C2: the bound a refusal states, rounded to nearest, was itself refused ------------------------------------------
+
+def _stated(pattern: str, call) -> float:
+    with pytest.raises(ValueError) as error:
+        call()
+    message = str(error.value)
+    assert "\n" not in message, message
+    found = re.search(pattern, message)
+    assert found, message
+    return float(found.group(1))
+
+
+@pytest.mark.parametrize("contact, scenario", [
+    (me.Contact(me.Elastomer(1e9, 0.3), me.PowerLaw(0.3, 1.0), me.Adhesion(0.0, 0.15)), me.Scenario("B", 45.0, 1e-6)),
+    (me.Contact(SOFT, me.PowerLaw(0.3, 1.0)), me.Scenario("A", 10.0, 1e-6)),
+    (me.Contact(me.Elastomer(PAPER.E, 0.0), me.TabulatedProfile(tuple(np.linspace(0, 3e-3, 7)),
+                                                              tuple(np.linspace(0, 3e-3, 7) ** 2 / 0.06))),
+     me.Scenario("A", 45.0, 3e-4)),
+    (me.Contact(me.Elastomer(PAPER.E, 0.0), me.PowerLaw(0.3, 1.0 + 1e-9), me.Adhesion(0.2, 0.05),
+                me.FrictionLaw("coulomb", mu=1e3)), me.Scenario("B", 20.0, 3e-4)),
+], ids=["cone-stiff", "cone-soft", "table", "cone-reversed-works"])
+def test_the_stated_spacing_and_time_step_are_accepted(contact, scenario):
+    """C2: ``dx=1.0`` is refused with "allowed: at least 10, i.e. dx <= 2.12207e-07 m" (the bound 2.122066e-07 rounded
+    to nearest, up), and ``dx=2.12207e-07`` was then refused with the same message (56 of 232 stated bounds on
+    random contacts); the same for the time step's "dt <= ...". The number stated is rounded towards the allowed side."""
+    largest = _stated(r"i\.e\. dx <= ([0-9.e+-]+) m", lambda: me.simulate(contact, scenario, method=me.Discrete(dx=1.0)))
+    ds = me.simulate(contact, scenario, method=me.Discrete(dx=largest))
+    _every_variable_finite_in_contact(ds)
+    step = _stated(r"dt <= ([0-9.e+-]+) s",
+                   lambda: me.simulate(contact, scenario, method=me.Discrete(dx=largest, dt=1e3)))
+    me.simulate(contact, scenario, method=me.Discrete(dx=largest, dt=step))
+
+
+@pytest.mark.parametrize("bound", [2.1220659078919376e-07, 7.513241e-05, 1.0, 9.9999995e-3, 5e-324, 1.7976931348623157e308])
+@pytest.mark.parametrize("upper", [True, False])
+def test_a_stated_bound_is_on_its_allowed_side(bound, upper):
+    """C2's helper: the text is within one unit of its last digit of the bound, on the allowed side of it."""
+    text = me.validation.allowed_bound(bound, (lambda value: value <= bound) if upper else (lambda value: value >= bound),
+                                       upper)
+    value = float(text)
+    assert (value <= bound) if upper else (value >= bound), text
+    assert abs(value - bound) <= 1e-5 * bound or bound < 1e-300, text
